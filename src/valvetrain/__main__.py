@@ -1,0 +1,5 @@
+"""``python -m valvetrain`` is the ``valvetrain`` command."""
+
+from .cli import main
+
+main()

@@ -1,0 +1,70 @@
+"""Command line: ``valvetrain run | validate | example``.
+
+Exit status: 0 on success, 2 for a specification that cannot be used (one message per
+problem on standard error; nothing is written), 1 for any other failure.
+"""
+
+import sys
+
+import click
+
+from . import __version__
+from .spec import SpecError, example_spec, example_text, load_spec
+
+
+def _fail_spec(err):
+    for problem in err.problems:
+        click.echo(f"error: {problem}", err=True)
+    sys.exit(2)
+
+
+def _load(path):
+    try:
+        return load_spec(path) if path else example_spec()
+    except SpecError as err:
+        _fail_spec(err)
+
+
+@click.group(context_settings={"help_option_names": ["-h", "--help"]})
+@click.version_option(__version__, prog_name="valvetrain")
+def main():
+    """Design calculation of engine valve trains.
+
+    Start with `valvetrain example > my-engine.toml`, edit it, check it with
+    `valvetrain validate my-engine.toml`, and run it with
+    `valvetrain run my-engine.toml --out my-design`.
+    """
+
+
+@main.command()
+@click.argument("file", required=False, type=click.Path(dir_okay=False))
+@click.option("--out", "out", default="design", show_default=True, type=click.Path(file_okay=False),
+              help="Folder for the results (replaced atomically if it exists).")
+@click.option("--lang", type=click.Choice(["en", "ru"]), default="en", show_default=True,
+              help="Language of the report and plots.")
+def run(file, out, lang):
+    """Run the design of FILE (default: the built-in example) and write it to --out."""
+    from .design import run as run_design
+    from .export import write_outputs
+
+    spec = _load(file)
+    results = run_design(spec)
+    write_outputs(results, out, lang)
+    click.echo(f"wrote {out}/ (results.json, report.html, tables/, plots/, contour/)")
+    for w in results.warnings:
+        click.echo(f"warning: {w.quantity} = {w.value:.6g} {w.unit}, recommended {w.range} ({w.source})".replace(
+            "  ", " "))
+
+
+@main.command()
+@click.argument("file", type=click.Path(dir_okay=False))
+def validate(file):
+    """Check a specification FILE; exit status 2 and one message per problem if it is not valid."""
+    spec = _load(file)
+    click.echo(f"{file}: valid ({len(spec.valves)} valve(s): {', '.join(spec.valves)})")
+
+
+@main.command()
+def example():
+    """Print the built-in example specification (seed 000's appendix engine) as TOML."""
+    click.echo(example_text(), nl=False)

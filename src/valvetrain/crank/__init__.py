@@ -1,0 +1,1 @@
+"""Crank mechanism: piston kinematics (and, later, dynamics and multi-cylinder torque)."""

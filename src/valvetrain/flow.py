@@ -1,0 +1,290 @@
+"""Valve flow sections, conditional gas velocities, time-area and fullness.
+
+Seed 000, works 1 and 4; seed 002, section 2.1, eqs. (2.1)-(2.3).  SI units:
+lengths in m, areas in m^2, time-area in m^2*s, velocities in m/s, angles in rad.
+"""
+
+import numpy as np
+
+from .checks import check_range
+from .numerics import cumulative_integral
+
+THROAT_TO_BORE_RANGES = {
+    "side_valve": (0.38, 0.42),
+    "overhead": (0.35, 0.52),
+    "prechamber_diesel": (0.35, 0.40),
+    "direct_injection_diesel": (0.38, 0.42),
+    "wedge": (0.42, 0.46),
+    "hemispherical": (0.46, 0.52),
+}
+"""Recommended inlet throat diameter / bore by combustion-chamber layout (seed 000, work 1)."""
+
+THROAT_VELOCITY_RANGE = {"intake": (50.0, 80.0), "exhaust": (70.0, 100.0)}
+"""Recommended V' in m/s (seed 000, work 1, eq. 1.1)."""
+
+CURTAIN_VELOCITY_RANGE = {"intake": (80.0, 95.0)}
+"""Recommended V'' in m/s for the inlet valve (seed 000, work 1, eq. 1.2)."""
+
+TIME_AREA_VELOCITY_RANGE = {"si": (90.0, 150.0), "diesel": (80.0, 120.0)}
+"""Recommended V''' of the inlet valve in m/s (seed 000, work 1, eq. 1.4)."""
+
+MEAN_CHARGE_VELOCITY_RANGE = {"si": (90.0, 150.0), "diesel": (80.0, 120.0), "si_injected": (100.0, 170.0)}
+"""Recommended mean charge velocity v_vp in m/s (seed 000, work 4, eq. 4.3)."""
+
+LIFT_TO_THROAT_RANGE = (0.18, 0.30)
+"""Recommended valve lift / throat diameter (seed 000 work 2, automotive; work 1 gives 0.23-0.30, E17)."""
+
+
+def circle_area(diameter):
+    """Area of a circle of the given diameter, pi d^2 / 4 [m^2] (piston area F_p, throat area f_g)."""
+    return np.pi * np.asarray(diameter) ** 2 / 4.0
+
+
+def mean_piston_speed(stroke, speed_rpm):
+    """Mean piston speed c_p = S n / 30 [m/s], stroke in m, speed in min^-1 (seed 000, appendix)."""
+    return stroke * speed_rpm / 30.0
+
+
+def swept_volume(bore, stroke):
+    """Swept volume of one cylinder V_h = pi D^2 S / 4 [m^3]."""
+    return circle_area(bore) * stroke
+
+
+def curtain_area(lift, throat_diameter, seat_angle):
+    """Valve curtain (flow) area as the lateral area of the frustum.
+
+    Parameters
+    ----------
+    lift : array_like
+        Valve lift y [m]; negative values (valve closed) give zero area.
+    throat_diameter : float
+        Throat diameter d [m].
+    seat_angle : float
+        Seat (facet) angle measured from the valve face plane [rad] (30 or 45 deg).
+
+    Returns
+    -------
+    ndarray
+        Curtain area [m^2].
+
+    Notes
+    -----
+    .. math:: f = \\pi y\\,(d\\cos\\varphi + y\\sin\\varphi\\cos^2\\varphi)
+
+    References
+    ----------
+    seed 000, work 1, eq. (1.3); seed 002, eq. (2.1).
+
+    Examples
+    --------
+    The appendix valve of seed 000 (d = 36.8 mm, 45 deg, 10 mm lift): 928.56 mm^2
+    (spec/valvetrain-works-1-8.md, section 4.4).
+
+    >>> round(float(curtain_area(0.010, 0.0368, np.pi / 4)) * 1e6, 2)
+    928.56
+    """
+    y = np.clip(np.asarray(lift, dtype=float), 0.0, None)
+    c = np.cos(seat_angle)
+    return np.pi * y * (throat_diameter * c + y * np.sin(seat_angle) * c * c)
+
+
+def throat_velocity(piston_speed, bore, throat_diameter, count):
+    """First conditional gas velocity in the throat, V' = c_p F_p / (i f_g) [m/s].
+
+    Parameters
+    ----------
+    piston_speed : float
+        Mean piston speed c_p [m/s].
+    bore : float
+        Cylinder bore D [m].
+    throat_diameter : float
+        Throat diameter d_g [m].
+    count : int
+        Number of same-name valves per cylinder i.
+
+    References
+    ----------
+    seed 000, work 1, eq. (1.1).
+
+    Examples
+    --------
+    Seed 000 appendix: 85.07 m/s (spec, section 4.4).
+
+    >>> round(throat_velocity(18.0, 0.080, 0.0368, 1), 2)
+    85.07
+    """
+    return float(piston_speed * circle_area(bore) / (count * circle_area(throat_diameter)))
+
+
+def curtain_velocity(piston_speed, bore, max_curtain_area, count):
+    """Second conditional gas velocity at full lift, V'' = c_p F_p / (i f_max) [m/s].
+
+    References
+    ----------
+    seed 000, work 1, eq. (1.2).
+
+    Examples
+    --------
+    Seed 000 appendix with the geometric curtain area 928.56 mm^2: 97.44 m/s (spec, 4.4).
+
+    >>> round(curtain_velocity(18.0, 0.080, 928.56e-6, 1), 2)
+    97.44
+    """
+    return float(piston_speed * circle_area(bore) / (count * max_curtain_area))
+
+
+def time_area_velocity(swept, time_area, count):
+    """Third conditional gas velocity V''' = V_h / (i * integral f dt) [m/s].
+
+    Parameters
+    ----------
+    swept : float
+        Swept volume V_h [m^3].
+    time_area : float
+        Time-area of one valve over the intake stroke (TDC to BDC) [m^2*s].
+    count : int
+        Number of same-name valves per cylinder i.
+
+    References
+    ----------
+    seed 000, work 1, eq. (1.4) (t1 = TDC, t2 = BDC; the integration is over time,
+    see spec/valvetrain-works-1-8.md, work 1, on the crank/cam reading).
+
+    Examples
+    --------
+    Seed 000 appendix: 2.8564 mm^2 s gives 135.75 m/s (spec, 4.4).
+
+    >>> round(time_area_velocity(3.8776e-4, 2.8564e-6, 1), 1)
+    135.8
+    """
+    return float(swept / (count * time_area))
+
+
+def mean_charge_velocity(swept, time_area):
+    """Mean charge velocity from the time-area, v_vp = V_h / integral F dt [m/s].
+
+    Unlike V''' of work 1 this does not divide by the number of valves (E29 of the
+    spec): the manual's work 4 is written for one valve per cylinder.
+
+    References
+    ----------
+    seed 000, work 4, eq. (4.3).
+    """
+    return float(swept / time_area)
+
+
+def cumulative_time_area(area, cam_angle, cam_speed, breakpoints=()):
+    """Running time-area of a valve, integral of f dt with dt = d(cam angle) / omega_cam.
+
+    Parameters
+    ----------
+    area : callable
+        ``area(cam_angle) -> curtain area [m^2]``, vectorised.
+    cam_angle : array_like
+        Increasing camshaft angles [rad] at which the running value is wanted.
+    cam_speed : float
+        Camshaft angular velocity omega_cam [rad/s].
+    breakpoints : array_like
+        Camshaft angles [rad] where the lift law changes segment.
+
+    Returns
+    -------
+    ndarray
+        Running time-area [m^2*s], zero at ``cam_angle[0]``.
+
+    Notes
+    -----
+    .. math:: Z(\\varphi) = \\frac{1}{\\omega_{cam}}\\int_{\\varphi_0}^{\\varphi} f(\\varphi')\\,d\\varphi'
+
+    The integral is evaluated with Gauss-Legendre quadrature between the segment
+    junctions of the analytic lift law, which replaces the graphical evaluation
+    M_t M_F F_ABCD of eq. (4.2) (that linearises the curtain area, see E29).
+
+    References
+    ----------
+    seed 000, work 4, eq. (4.1); seed 002, eq. (2.2).
+    """
+    return cumulative_integral(area, cam_angle, breakpoints) / cam_speed
+
+
+def time_area(area, start, end, cam_speed, breakpoints=()):
+    """Time-area integral of f dt between two camshaft angles [m^2*s] (seed 000, eq. 4.1)."""
+    return float(cumulative_time_area(area, [start, end], cam_speed, breakpoints)[-1])
+
+
+def fullness(lift, start, end, max_lift, breakpoints=()):
+    """Fullness (filling) coefficient of a lift diagram.
+
+    Parameters
+    ----------
+    lift : callable
+        ``lift(angle) -> valve lift [m]``, vectorised.
+    start, end : float
+        Angles [rad] where the valve opens and closes.
+    max_lift : float
+        Maximum valve lift [m].
+    breakpoints : array_like
+        Angles where the law changes segment.
+
+    Returns
+    -------
+    float
+        xi, the ratio of the area under the lift curve to the circumscribed rectangle.
+
+    Notes
+    -----
+    .. math:: \\xi = \\frac{\\int_a^{\\alpha_a} y\\,d\\alpha}{y_{max}(\\alpha_a - a)}
+
+    References
+    ----------
+    seed 002, section 2.1, eq. (2.3).
+
+    Examples
+    --------
+    A half-sine lift has fullness 2/pi.
+
+    >>> round(fullness(np.sin, 0.0, np.pi, 1.0), 6)
+    0.63662
+    """
+    area = float(cumulative_integral(lift, [start, end], breakpoints)[-1])
+    return area / (max_lift * (end - start))
+
+
+def check_flow(kind, *, bore, throat_diameter, max_lift, v1, v2, v3, charge_velocity, engine_type, chamber):
+    """Compare a valve's flow figures with the recommended ranges of seed 000, works 1 and 4.
+
+    Parameters
+    ----------
+    kind : {"intake", "exhaust"}
+        Valve kind; the velocity ranges of the sources differ.
+    bore, throat_diameter, max_lift : float
+        Bore, throat diameter and valve lift [m].
+    v1, v2, v3, charge_velocity : float
+        V', V'', V''' and v_vp [m/s].
+    engine_type : {"si", "si_injected", "diesel"}
+        Selects the V''' and v_vp ranges.
+    chamber : str
+        Key of :data:`THROAT_TO_BORE_RANGES` for the throat/bore range.
+
+    Returns
+    -------
+    list of Finding
+    """
+    found = []
+    if kind == "intake":
+        found += check_range("throat diameter / bore", throat_diameter / bore,
+                             *THROAT_TO_BORE_RANGES[chamber], source=f"seed 000, work 1 ({chamber} chamber)")
+    found += check_range("valve lift / throat diameter", max_lift / throat_diameter, *LIFT_TO_THROAT_RANGE,
+                         source="seed 000, work 2 (automotive engines)")
+    found += check_range("V' (throat velocity)", v1, *THROAT_VELOCITY_RANGE[kind],
+                         source="seed 000, work 1, eq. (1.1)", unit="m/s")
+    if kind == "intake":
+        found += check_range("V'' (curtain velocity at full lift)", v2, *CURTAIN_VELOCITY_RANGE[kind],
+                             source="seed 000, work 1, eq. (1.2)", unit="m/s")
+        v3_range = TIME_AREA_VELOCITY_RANGE["diesel" if engine_type == "diesel" else "si"]
+        found += check_range("V''' (time-area velocity)", v3, *v3_range,
+                             source="seed 000, work 1, eq. (1.4)", unit="m/s")
+        found += check_range("v_vp (mean charge velocity)", charge_velocity,
+                             *MEAN_CHARGE_VELOCITY_RANGE[engine_type], source="seed 000, work 4, eq. (4.3)",
+                             unit="m/s")
+    return found

@@ -1,0 +1,202 @@
+"""The lift-law protocol shared by every cam law.
+
+Angle convention
+----------------
+A lift law is a function of the **camshaft** angle ``theta`` [rad] measured from the
+cam nose (the axis of the lobe): ``theta < 0`` on the opening flank, ``theta > 0`` on
+the closing flank.  Outside ``[start, end]`` the follower rests on the base circle and
+every quantity is zero.  The lift ``h`` is the follower (tappet) lift above the base
+circle including the ramp, as in seed 000 eqs. (2.5)-(2.8); the valve moves once the
+ramp height (the clearance) is taken up.
+
+Derivatives are analytic.  ``derivatives(theta)`` returns the geometric derivatives
+``h, dh/dtheta, d2h/dtheta2, d3h/dtheta3`` [m, m/rad, m/rad^2, m/rad^3]; the time
+derivatives at a constant camshaft speed omega [rad/s] are ``v = omega h'``,
+``a = omega^2 h''`` and ``jerk = omega^3 h'''``.
+"""
+
+from abc import ABC, abstractmethod
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..numerics import extremum
+
+
+@dataclass(frozen=True)
+class Segment:
+    """A piece of a lift law between two camshaft angles [rad from the nose]."""
+
+    name: str
+    start: float
+    end: float
+
+
+@dataclass(frozen=True)
+class Extremes:
+    """Extreme follower kinematics of a law at a camshaft speed (SI, follower side).
+
+    Attributes
+    ----------
+    max_velocity : float
+        Largest follower velocity [m/s] (opening flank).
+    max_acceleration, min_acceleration : float
+        Largest and smallest follower acceleration [m/s^2].
+    max_velocity_angle, max_acceleration_angle, min_acceleration_angle : float
+        Camshaft angles of those extremes [rad from the nose].
+    """
+
+    max_velocity: float
+    max_acceleration: float
+    min_acceleration: float
+    max_velocity_angle: float
+    max_acceleration_angle: float
+    min_acceleration_angle: float
+
+
+class LiftLaw(ABC):
+    """Base class of cam lift laws (see the module docstring for the conventions)."""
+
+    #: identifier used in specification files and results (``law = "..."``)
+    name: str = ""
+
+    @property
+    @abstractmethod
+    def segments(self):
+        """Ordered list of :class:`Segment` covering ``[start, end]``."""
+
+    @property
+    @abstractmethod
+    def lift_max(self):
+        """Follower lift above the ramp at the nose, h_T max [m]."""
+
+    @property
+    @abstractmethod
+    def ramp_height(self):
+        """Ramp height, the clearance taken up before the valve moves [m] (0: no ramp)."""
+
+    @property
+    @abstractmethod
+    def ramp_angle(self):
+        """Ramp length Phi_0 on one side [rad camshaft] (0: no ramp)."""
+
+    @abstractmethod
+    def derivatives(self, theta):
+        """Lift and its first three derivatives, shape (4, n) [m, m/rad, m/rad^2, m/rad^3]."""
+
+    @abstractmethod
+    def coefficients(self):
+        """The law's coefficients as a dict in the units of its source (for results and reports)."""
+
+    def checks(self):
+        """The law's own recommended-range checks, a list of :class:`~valvetrain.checks.Finding`."""
+        return []
+
+    @property
+    def start(self):
+        """Camshaft angle where the follower leaves the base circle [rad from the nose]."""
+        return self.segments[0].start
+
+    @property
+    def end(self):
+        """Camshaft angle where the follower returns to the base circle [rad from the nose]."""
+        return self.segments[-1].end
+
+    @property
+    def valve_opens(self):
+        """Camshaft angle where the ramp ends on the opening flank and the valve starts to move [rad]."""
+        return self.start + self.ramp_angle
+
+    @property
+    def valve_closes(self):
+        """Camshaft angle where the valve seats (start of the closing ramp) [rad]."""
+        return self.end - self.ramp_angle
+
+    @property
+    def breakpoints(self):
+        """Junction angles of the segments, ends included [rad]."""
+        return np.array([s.start for s in self.segments] + [self.end])
+
+    def segment_names(self, theta):
+        """Name of the segment of each angle (``"base circle"`` outside the event)."""
+        theta = np.asarray(theta, dtype=float)
+        names = np.array(["base circle"] + [s.name for s in self.segments], dtype=object)
+        idx = np.searchsorted(self.breakpoints, theta, side="right")
+        idx[theta == self.end] = len(self.segments)
+        idx[(theta < self.start) | (theta > self.end)] = 0
+        return names[idx]
+
+    def lift(self, theta):
+        """Follower lift h [m]."""
+        return self.derivatives(theta)[0]
+
+    def velocity(self, theta, omega):
+        """Follower velocity omega dh/dtheta [m/s] at camshaft speed omega [rad/s]."""
+        return omega * self.derivatives(theta)[1]
+
+    def acceleration(self, theta, omega):
+        """Follower acceleration omega^2 d2h/dtheta2 [m/s^2]."""
+        return omega**2 * self.derivatives(theta)[2]
+
+    def jerk(self, theta, omega):
+        """Follower jerk omega^3 d3h/dtheta3 [m/s^3]."""
+        return omega**3 * self.derivatives(theta)[3]
+
+    def valve_lift(self, theta, rocker_ratio=1.0):
+        """Valve lift i_k (h - h0) for h > h0, else 0 [m] (seed 000, work 2: valve = tappet x l_v/l_t)."""
+        return rocker_ratio * np.clip(self.lift(theta) - self.ramp_height, 0.0, None)
+
+    def extremes(self, omega):
+        """Extreme velocity and accelerations at camshaft speed omega [rad/s], found on the analytic law."""
+        edges = self.breakpoints
+        opening = edges[edges <= 0.5 * (self.start + self.end)]
+        xv, v = extremum(lambda t: self.derivatives(t)[1], opening, "max")
+        xa, amax = extremum(lambda t: self.derivatives(t)[2], edges, "max")
+        xn, amin = extremum(lambda t: self.derivatives(t)[2], edges, "min")
+        return Extremes(omega * v, omega**2 * amax, omega**2 * amin, xv, xa, xn)
+
+
+class SymmetricLaw(LiftLaw):
+    """A law symmetric about the nose, defined by its rise ``_rise(phi)`` on the opening side.
+
+    ``phi`` is the camshaft angle from the start of the event (ramp start),
+    ``0 <= phi <= half_angle``; the law mirrors it onto the closing flank with
+    ``phi = half_angle - |theta|``: ``h`` and ``h''`` are even, ``h'`` and ``h'''`` odd.
+    """
+
+    @property
+    @abstractmethod
+    def half_angle(self):
+        """Half of the whole event, ramp included [rad camshaft]."""
+
+    @abstractmethod
+    def _rise_segments(self):
+        """``[(name, phi_start, phi_end), ...]`` on the opening side, in rise coordinates."""
+
+    @abstractmethod
+    def _rise(self, phi):
+        """Rise and its derivatives with respect to phi, shape (4, n)."""
+
+    @property
+    def segments(self):
+        T = self.half_angle
+        rise = self._rise_segments()
+        opening = [Segment(f"{n} opening", a - T, b - T) for n, a, b in rise]
+        closing = [Segment(f"{n} closing", T - b, T - a) for n, a, b in reversed(rise)]
+        return opening + closing
+
+    def derivatives(self, theta):
+        theta = np.asarray(theta, dtype=float)
+        flat = theta.ravel()
+        out = np.zeros((4, flat.size))
+        inside = np.abs(flat) <= self.half_angle
+        t = flat[inside]
+        r = self._rise(self.half_angle - np.abs(t))
+        r[1::2] *= -np.sign(t)
+        out[:, inside] = r
+        return out.reshape((4,) + theta.shape)
+
+
+def segment_index(x, edges):
+    """Index of the piece of ``edges`` that holds each ``x`` (ends clipped to the first/last piece)."""
+    return np.clip(np.searchsorted(edges, x, side="right") - 1, 0, len(edges) - 2)

@@ -1,0 +1,94 @@
+"""The HTML design report (Jinja2 template ``templates/report.html``)."""
+
+from jinja2 import Environment, PackageLoader, select_autoescape
+import numpy as np
+
+from .. import __version__
+from ..export import lift_table_columns
+from .i18n import SOURCES, TEXT
+
+TABLE_COLUMNS = ["cam_deg", "crank_deg", "segment", "tappet_lift_mm", "tappet_velocity_m_s",
+                 "tappet_acceleration_m_s2", "valve_lift_mm", "curtain_area_mm2", "time_area_mm2_s", "rho_mm"]
+REPORT_STEP_DEG = 5.0
+"""Step of the abridged lift table in the report [cam deg]."""
+
+CAM_KEYS = ["phi_p0_deg", "ramp_deg", "ramp_height_mm", "tappet_lift_mm", "event_cam_deg", "nose_crank_deg",
+            "camshaft_speed_rad_s", "max_velocity_m_s", "max_acceleration_m_s2", "min_acceleration_m_s2"]
+GEOMETRY_KEYS = ["follower", "base_radius_mm", "heel_radius_mm", "rho_min_mm", "rho_min_cam_deg", "rho_max_mm",
+                 "rho_max_cam_deg", "max_contact_offset_mm", "roller_radius_mm", "max_pressure_angle_deg",
+                 "min_concave_radius_mm", "undercut"]
+FLOW_KEYS = ["throat_area_mm2", "valve_lift_mm", "max_curtain_area_mm2", "V1_m_s", "V2_m_s"]
+TIME_AREA_KEYS = ["stroke_crank_deg", "time_area_mm2_s", "time_area_open_mm2_s", "V3_m_s",
+                  "mean_charge_velocity_m_s", "fullness"]
+
+
+def fmt(x):
+    """A number for a human: 6 significant digits; lists, booleans and text as they are."""
+    if isinstance(x, bool):
+        return str(x).lower()
+    if isinstance(x, (int, float, np.floating)):
+        return f"{float(x):.6g}"
+    if isinstance(x, (list, tuple)):
+        return " ... ".join(fmt(v) for v in x)
+    return "-" if x is None else str(x)
+
+
+def _flatten(d, prefix=""):
+    rows = []
+    for k, v in d.items():
+        if isinstance(v, dict):
+            rows += _flatten(v, f"{prefix}{k}.")
+        elif v is not None:
+            rows.append((f"{prefix}{k}", v))
+    return rows
+
+
+def _abridged_table(valve):
+    cols = lift_table_columns(valve.table)
+    cam = cols["cam_deg"]
+    keep = np.isclose(np.mod(cam, REPORT_STEP_DEG), 0.0) | np.isclose(np.mod(cam, REPORT_STEP_DEG),
+                                                                        REPORT_STEP_DEG)
+    keep[[0, -1]] = True
+    return [[fmt(cols[c][i]) for c in TABLE_COLUMNS] for i in np.flatnonzero(keep)]
+
+
+def render_report(results, plots, lang="en"):
+    """The report as HTML text.
+
+    Parameters
+    ----------
+    results : valvetrain.design.DesignResults
+    plots : dict
+        ``{valve name: {figure kind: file name relative to plots/}}``.
+    lang : {"en", "ru"}
+    """
+    env = Environment(loader=PackageLoader("valvetrain", "report/templates"), autoescape=select_autoescape())
+    env.filters["fmt"] = fmt
+    spec = results.spec.model_dump()
+    valves = []
+    for name, v in results.valves.items():
+        s = v.summary
+        valves.append({
+            "name": name, "valve": v, "summary": s, "plots": plots[name],
+            "inputs": _flatten(spec["valves"][name]),
+            "flow": [(k, s["flow"][k]) for k in FLOW_KEYS],
+            "time_area": [(k, s["flow"][k]) for k in TIME_AREA_KEYS],
+            "cam": [(k, s["cam"][k]) for k in CAM_KEYS],
+            "geometry": [(k, s["cam"][k]) for k in GEOMETRY_KEYS if s["cam"].get(k) is not None],
+            "coefficients": list(s["cam"]["coefficients"].items()),
+            "seed": [(k, val, s["cam"][k]) for k, val in s["cam"].get("seed_formulas", {}).items()],
+            "residuals": list(s["cam"].get("residuals", {}).items()),
+            "clearance": list(s.get("piston_clearance", {}).items()),
+            "table": _abridged_table(v),
+            "warnings": v.warnings,
+        })
+    return env.get_template("report.html").render(
+        t=TEXT[lang], lang=lang, version=__version__, engine=results.engine, engine_inputs=_flatten(spec["engine"]),
+        valves=valves, warnings=results.warnings, sources=SOURCES, table_columns=TABLE_COLUMNS,
+        step=REPORT_STEP_DEG, output=_flatten(spec["output"]),
+    )
+
+
+def write_report(results, path, plots, lang="en"):
+    """Write ``report.html``."""
+    path.write_text(render_report(results, plots, lang), encoding="utf-8")

@@ -1,0 +1,282 @@
+"""The design specification: TOML file, pydantic models, validation messages.
+
+Units are in the key names (``_mm``, ``_deg``, ``_rpm``); they are converted to SI in
+:mod:`valvetrain.design`, never here.  Timing angles are crank degrees, cam segment
+angles camshaft degrees.
+
+Every problem in a file becomes one message naming the key, the value and what is
+allowed; :func:`load_spec` raises :class:`SpecError` carrying them all.
+"""
+
+from importlib.resources import files
+import math
+import re
+import tomllib
+from typing import Annotated, Literal, Optional, Union
+
+from pydantic import AfterValidator, BaseModel, ConfigDict, Field, ValidationError, field_validator, model_validator
+
+from .units import cam_per_crank
+
+
+class SpecError(Exception):
+    """A specification that cannot be used; ``problems`` holds one message per problem."""
+
+    def __init__(self, problems):
+        self.problems = list(problems)
+        super().__init__("\n".join(self.problems))
+
+
+def _bounded(low, high, unit="", low_open=True, high_open=False):
+    """A float constrained to a physical range, with a message that states the whole range."""
+    lo_sym, hi_sym = ("(" if low_open else "["), (")" if high_open else "]")
+    text = f"allowed {lo_sym}{low:g}, {high:g}{hi_sym}{' ' + unit if unit else ''}"
+
+    def check(v):
+        if not math.isfinite(v):
+            raise ValueError(f"must be a finite number; {text}")
+        below = v <= low if low_open else v < low
+        above = v >= high if high_open else v > high
+        if below or above:
+            raise ValueError(text)
+        return v
+
+    return Annotated[float, AfterValidator(check)]
+
+
+Length = lambda low, high, **kw: _bounded(low, high, "mm", **kw)  # noqa: E731
+
+
+class _Model(BaseModel):
+    model_config = ConfigDict(extra="forbid", strict=True)
+
+
+class Engine(_Model):
+    """[engine]: the engine the valves belong to."""
+
+    name: str = "engine"
+    bore_mm: Length(0.0, 2000.0)
+    stroke_mm: Length(0.0, 3000.0)
+    rated_speed_rpm: _bounded(0.0, 30000.0, "rpm")
+    cylinders: Annotated[int, Field(ge=1, le=64)]
+    strokes: Literal[2, 4]
+    type: Literal["si", "si_injected", "diesel"] = "si"
+    chamber: Literal["side_valve", "overhead", "prechamber_diesel", "direct_injection_diesel", "wedge",
+                     "hemispherical"] = "overhead"
+    rod_length_mm: Optional[Length(0.0, 10000.0)] = None
+
+    @model_validator(mode="after")
+    def _rod_longer_than_crank(self):
+        if self.rod_length_mm is not None and self.rod_length_mm <= self.stroke_mm / 2.0:
+            raise ValueError(f"engine.rod_length_mm = {self.rod_length_mm:g} must exceed the crank radius "
+                             f"stroke_mm/2 = {self.stroke_mm / 2.0:g} mm")
+        return self
+
+
+class _CamBase(_Model):
+    base_radius_mm: Length(0.0, 500.0)
+    follower: Literal["flat", "roller"] = "flat"
+    roller_radius_mm: Optional[Length(0.0, 200.0)] = None
+
+    @model_validator(mode="after")
+    def _roller_needs_radius(self):
+        if self.follower == "roller" and self.roller_radius_mm is None:
+            raise ValueError("roller_radius_mm is required when follower = \"roller\" (allowed (0, 200] mm)")
+        return self
+
+
+class KurzCam(_CamBase):
+    """[valves.NAME.cam] with law = "kurz" (seed 000, work 2)."""
+
+    law: Literal["kurz"]
+    ramp_end_velocity_mm_per_deg: _bounded(0.0, 1.0, "mm/deg")
+    phi1_deg: _bounded(0.0, 180.0, "deg")
+    phi2_deg: _bounded(0.0, 180.0, "deg")
+    phi3_deg: Optional[_bounded(0.0, 180.0, "deg")] = None
+    shape_factor: _bounded(0.0, 1.0, high_open=True) = 0.625
+
+
+class PolydyneCam(_CamBase):
+    """[valves.NAME.cam] with law = "polydyne" (seed 000, work 3)."""
+
+    law: Literal["polydyne"]
+    p: _bounded(2.0, 200.0)
+    q: Optional[_bounded(2.0, 400.0)] = None
+    r: Optional[_bounded(2.0, 600.0)] = None
+    s: Optional[_bounded(2.0, 800.0)] = None
+    ramp: bool = False
+    ramp_end_velocity_mm_per_deg: Optional[_bounded(0.0, 1.0, "mm/deg")] = None
+
+    @model_validator(mode="after")
+    def _exponents_and_ramp(self):
+        p = self.p
+        q = self.q if self.q is not None else 2 * p - 2
+        r = self.r if self.r is not None else 3 * p - 4
+        s = self.s if self.s is not None else 4 * p - 6
+        if not p < q < r < s:
+            raise ValueError(f"exponents p, q, r, s = {p:g}, {q:g}, {r:g}, {s:g} must increase strictly "
+                             "(2 < p < q < r < s)")
+        if self.ramp and self.ramp_end_velocity_mm_per_deg is None:
+            raise ValueError("ramp = true needs ramp_end_velocity_mm_per_deg (allowed (0, 1] mm/deg)")
+        return self
+
+
+Cam = Annotated[Union[KurzCam, PolydyneCam], Field(discriminator="law")]
+
+
+class Valve(_Model):
+    """[valves.NAME]: one valve (or a set of same-name valves) of a cylinder."""
+
+    kind: Literal["intake", "exhaust"]
+    count: Annotated[int, Field(ge=1, le=8)] = 1
+    throat_diameter_mm: Length(0.0, 1000.0)
+    seat_angle_deg: _bounded(0.0, 90.0, "deg", high_open=True)
+    max_lift_mm: Length(0.0, 500.0)
+    clearance_mm: Length(0.0, 5.0, low_open=False)
+    opens_deg: _bounded(-180.0, 180.0, "deg")
+    closes_deg: _bounded(-180.0, 180.0, "deg")
+    rocker_ratio: _bounded(0.0, 5.0) = 1.0
+    piston_gap_tdc_mm: Optional[Length(-100.0, 500.0)] = None
+    cam: Cam
+
+
+class Output(_Model):
+    """[output]: tables and exports."""
+
+    table_step_cam_deg: _bounded(0.0, 10.0, "deg") = 0.5
+    contour_points: Annotated[int, Field(ge=36, le=100000)] = 721
+
+
+_NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_-]*$")
+
+
+class Spec(_Model):
+    """A whole design specification."""
+
+    engine: Engine
+    valves: dict[str, Valve]
+    output: Output = Output()
+
+    @field_validator("valves")
+    @classmethod
+    def _valve_names(cls, valves):
+        if not valves:
+            raise ValueError("at least one [valves.NAME] section is required")
+        bad = [n for n in valves if not _NAME.match(n)]
+        if bad:
+            raise ValueError(f"valve names {bad} must start with a letter and use only letters, digits, '_' and '-'")
+        return valves
+
+
+def main_half_angle_deg(valve, strokes):
+    """phi_p0 in camshaft degrees: half the main event (ramps excluded), (opens + 180 + closes)/2 crank deg
+    converted to the camshaft (seed 000, work 2, corrected phi_p0 formula, E1)."""
+    return (valve.opens_deg + 180.0 + valve.closes_deg) / 2.0 * cam_per_crank(strokes)
+
+
+def kurz_phi3_deg(cam, valve, strokes):
+    """Phi3 in camshaft degrees: given, or the remainder phi_p0 - Phi1 - Phi2 (eq. 2.2)."""
+    if cam.phi3_deg is not None:
+        return cam.phi3_deg
+    return main_half_angle_deg(valve, strokes) - cam.phi1_deg - cam.phi2_deg
+
+
+def _valve_problems(name, v, engine):
+    at = f"valves.{name}"
+    out = []
+    if v.throat_diameter_mm >= engine.bore_mm:
+        out.append(f"{at}.throat_diameter_mm = {v.throat_diameter_mm:g} must be smaller than engine.bore_mm = "
+                   f"{engine.bore_mm:g}")
+    half = main_half_angle_deg(v, engine.strokes)
+    if not 0.0 < half < 180.0:
+        out.append(f"{at}.opens_deg + closes_deg = {v.opens_deg + v.closes_deg:g}: the valve event "
+                   f"opens_deg + 180 + closes_deg must lie in (0, 360) crank deg")
+    lift_tappet = v.max_lift_mm / v.rocker_ratio
+    cam = v.cam
+    if cam.base_radius_mm <= v.clearance_mm:
+        out.append(f"{at}.cam.base_radius_mm = {cam.base_radius_mm:g} must exceed clearance_mm = {v.clearance_mm:g}")
+    if isinstance(cam, KurzCam):
+        if v.clearance_mm <= 0.0:
+            out.append(f"{at}.clearance_mm = {v.clearance_mm:g}: the Kurz cam's ramp takes up the clearance, "
+                       "allowed (0, 5] mm")
+        phi3 = kurz_phi3_deg(cam, v, engine.strokes)
+        total = cam.phi1_deg + cam.phi2_deg + phi3
+        if cam.phi3_deg is None and phi3 <= 0.0:
+            out.append(f"{at}.cam: phi1_deg + phi2_deg = {cam.phi1_deg + cam.phi2_deg:g} leaves no room for phi3 "
+                       f"in the half-angle phi_p0 = {half:g} cam deg; allowed phi1_deg + phi2_deg < {half:g}")
+        elif abs(total - half) > 1e-6:
+            out.append(f"{at}.cam: phi1_deg + phi2_deg + phi3_deg = {total:g} cam deg must equal the half-angle "
+                       f"phi_p0 = (opens_deg + 180 + closes_deg)/2 crank deg = {half:g} cam deg (seed 000, eq. 2.2)")
+    elif cam.ramp and v.clearance_mm <= 0.0:
+        out.append(f"{at}.clearance_mm = {v.clearance_mm:g}: a polydyne ramp needs a clearance to take up, "
+                   "allowed (0, 5] mm")
+    if lift_tappet <= 0:
+        out.append(f"{at}.max_lift_mm = {v.max_lift_mm:g} must be positive")
+    if v.piston_gap_tdc_mm is not None and engine.rod_length_mm is None:
+        out.append(f"{at}.piston_gap_tdc_mm needs engine.rod_length_mm for the piston kinematics")
+    return out
+
+
+def _location(err):
+    parts = [str(p) for p in err["loc"] if not (isinstance(p, str) and p in ("kurz", "polydyne"))]
+    return ".".join(parts) if parts else "(file)"
+
+
+def _message(err):
+    loc = _location(err)
+    kind = err["type"]
+    if kind == "missing":
+        return f"{loc}: required key is missing"
+    if kind == "extra_forbidden":
+        return f"{loc}: unknown key (value {err['input']!r}); check the spelling against `valvetrain example`"
+    if kind == "union_tag_invalid":
+        return f"{loc}.law = {err['ctx']['tag']!r}: allowed {err['ctx']['expected_tags']}"
+    msg = err["msg"].removeprefix("Value error, ")
+    if isinstance(err["input"], dict):
+        return f"{loc}: {msg}"
+    return f"{loc} = {err['input']!r}: {msg}"
+
+
+def validate(data):
+    """Validate a parsed TOML document; return a :class:`Spec` or raise :class:`SpecError`.
+
+    Field problems (missing keys, wrong types, values outside physical bounds) are
+    reported first; the cross-checks between keys (angles that must add up, a throat
+    smaller than the bore, ...) run once every field is valid.
+    """
+    try:
+        spec = Spec.model_validate(data)
+    except ValidationError as exc:
+        raise SpecError([_message(err) for err in exc.errors()]) from None
+    problems = [p for name, v in spec.valves.items() for p in _valve_problems(name, v, spec.engine)]
+    if problems:
+        raise SpecError(problems)
+    return spec
+
+
+def parse_spec(text, source="<string>"):
+    """Parse and validate TOML text."""
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise SpecError([f"{source}: not valid TOML: {exc}"]) from None
+    return validate(data)
+
+
+def load_spec(path):
+    """Read and validate a specification file."""
+    try:
+        text = open(path, encoding="utf-8").read()
+    except (OSError, UnicodeDecodeError) as exc:
+        raise SpecError([f"{path}: cannot read the file: {exc}"]) from None
+    return parse_spec(text, str(path))
+
+
+def example_text():
+    """The built-in example specification (the engine of seed 000's appendix), as TOML text."""
+    return files("valvetrain").joinpath("data/example.toml").read_text(encoding="utf-8")
+
+
+def example_spec():
+    """The built-in example, validated."""
+    return parse_spec(example_text(), "built-in example")
