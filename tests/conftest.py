@@ -1,0 +1,22 @@
+"""Shared fixtures: the seed 000 appendix cam."""
+
+import numpy as np
+import pytest
+
+from valvetrain.laws import KurzLaw
+
+SEED000_OMEGA_EXACT = np.pi * 3500 / 30
+"""Camshaft speed of the seed 000 appendix, pi n_cam / 30 [rad/s]."""
+
+SEED000_OMEGA_TABLE = 366.5
+"""The rounded camshaft speed with which Table P1 of seed 000 was computed (spec, section 4)."""
+
+
+def seed000_law():
+    """The Kurz cam of the seed 000 appendix: h_T max 6.25 mm, h0 0.25 mm, w' 0.02 mm/deg, 27/6/38 deg."""
+    return KurzLaw(6.25e-3, 0.25e-3, 0.02e-3 * 180 / np.pi, *np.deg2rad([27.0, 6.0, 38.0]), 0.625)
+
+
+@pytest.fixture
+def kurz_appendix():
+    return seed000_law()

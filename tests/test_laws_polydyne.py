@@ -1,0 +1,82 @@
+"""Polydyne cam: closed forms of seed 000 work 3, end conditions, the ramp junction."""
+
+import numpy as np
+import pytest
+
+from valvetrain.laws import PolydyneLaw, default_exponents, polydyne_coefficients
+from valvetrain.laws.polydyne import _falling, polydyne_junction_coefficients
+
+from conftest import SEED000_OMEGA_EXACT
+
+
+@pytest.mark.parametrize("p", [6, 8, 10, 12, 14, 16, 7.5])
+def test_end_conditions_and_sum(p):
+    """h(1) = h'(1) = h''(1) = h'''(1) = h''''(1) = 0 and 1 + sum C = 0 (seed 000, (3.4)-(3.8))."""
+    k = np.array((2.0,) + default_exponents(p))
+    c = np.array(polydyne_coefficients(*default_exponents(p)))
+    assert 1.0 + c.sum() == pytest.approx(0.0, abs=1e-12)
+    for j in range(1, 5):
+        assert float((c * _falling(k, j)).sum()) == pytest.approx(0.0, abs=1e-9 * float(np.abs(c * _falling(k, j)).max()))
+    # alternating signs: C2 < 0, Cp > 0, Cq < 0, Cr > 0, Cs < 0 (seed 000, work 3)
+    assert list(np.sign(c)) == [-1, 1, -1, 1, -1]
+
+
+def test_law_closes_at_the_ends():
+    law = PolydyneLaw(6.25e-3, np.deg2rad(71.0), 8)
+    d = law.derivatives(np.array([law.start, law.end]))
+    assert np.abs(d).max() < 1e-12
+
+
+def test_seed000_inputs():
+    """Polydyne p = 8 on the appendix inputs (spec/valvetrain-works-1-8.md, 4.5)."""
+    law = PolydyneLaw(6.25e-3, np.deg2rad(71.0), 8)
+    c = law.coefficients()
+    expected = {"C2": -1.87243, "Cp": 1.87243, "Cq": -1.60494, "Cr": 0.74897, "Cs": -0.14403}
+    for key, val in expected.items():
+        assert c[key] == pytest.approx(val, abs=5e-6)
+    assert (c["p"], c["q"], c["r"], c["s"]) == (8, 14, 20, 26)
+    e = law.extremes(SEED000_OMEGA_EXACT)
+    assert e.max_velocity == pytest.approx(3.4385, abs=1e-4)
+    assert e.max_acceleration == pytest.approx(4585.5, abs=0.1)
+    # at x = 0.809 measured from the nose
+    assert abs(e.max_acceleration_angle) / law.main_half_angle == pytest.approx(0.809, abs=1e-3)
+    assert e.min_acceleration == pytest.approx(-2047.6, abs=0.1)
+    # closed form at the nose: j = 2 C2 h omega^2 / phi_p0^2 (seed 000, eq. 3.3 at x = 0)
+    assert e.min_acceleration == pytest.approx(2 * c["C2"] * 6.25e-3 * SEED000_OMEGA_EXACT**2 / np.deg2rad(71.0) ** 2,
+                                               rel=1e-9)
+
+
+def test_larger_p_raises_acceleration():
+    """Spec 4.5, effect of p: j_max 3786, 4585, 5447, 6333 and j_min -2691, -2048, -1770, -1617 for p = 6...12."""
+    jmax = {6: 3786, 8: 4585, 10: 5447, 12: 6333}
+    jmin = {6: -2691, 8: -2048, 10: -1770, 12: -1617}
+    for p in jmax:
+        e = PolydyneLaw(6.25e-3, np.deg2rad(71.0), p).extremes(SEED000_OMEGA_EXACT)
+        assert e.max_acceleration == pytest.approx(jmax[p], abs=1.0)
+        assert e.min_acceleration == pytest.approx(jmin[p], abs=1.0)
+
+
+def test_junction_solver_reduces_to_closed_form():
+    """With no ramp the 5x5 junction system gives h_max x (3.4)-(3.8) (spec methods, section 7: 2.2e-14)."""
+    exps = default_exponents(10)
+    a = polydyne_junction_coefficients((2.0,) + exps, 7.0, 0.0, 0.0)
+    assert np.allclose(a, 7.0 * np.array(polydyne_coefficients(*exps)), rtol=1e-10, atol=1e-12)
+
+
+def test_ramp_junction_worked_example():
+    """spec/methods-seeds-002-004.md, section 7: h_max 8, h0 0.3, v0 0.4 mm/rad, alpha_B 55 deg, exponents
+    2, 10, 18, 26, 34: junction values (0.3, -0.4, 0, 0, 0), h'' in [-26.77, 80.59] mm/rad^2."""
+    law = PolydyneLaw(7.7e-3, np.deg2rad(55.0), 10, 18, 26, 34, ramp_height=0.3e-3, ramp_velocity=0.4e-3)
+    junction = law.end - law.ramp_angle
+    h, dh, d2h, _ = law.derivatives(np.array([junction - 1e-12, junction + 1e-12])) * 1e3
+    assert h == pytest.approx([0.3, 0.3], abs=1e-9)
+    assert dh == pytest.approx([-0.4, -0.4], abs=1e-6)
+    assert d2h == pytest.approx([0.0, 0.0], abs=1e-6)
+    e = law.extremes(1.0)
+    assert e.max_acceleration * 1e3 == pytest.approx(80.59, abs=0.01)
+    assert e.min_acceleration * 1e3 == pytest.approx(-26.77, abs=0.01)
+
+
+def test_bad_exponents_refused():
+    with pytest.raises(ValueError, match="2 < p < q < r < s"):
+        PolydyneLaw(6e-3, 1.0, 8, q=7)
