@@ -84,8 +84,8 @@ def extremum(fn, edges, kind="max", samples=65):
     Examples
     --------
     >>> x, y = extremum(np.sin, [0.0, 3.0], "max")
-    >>> round(x, 9), round(y, 12)
-    (1.570796327, 1.0)
+    >>> round(x, 6), round(y, 12)  # a smooth extremum's place is fixed only to ~sqrt(eps)
+    (1.570796, 1.0)
     """
     from scipy.optimize import minimize_scalar
 

@@ -100,10 +100,9 @@ def kurz_coefficients(lift, ramp_velocity, phi1, phi2, phi3, shape_factor=0.625)
     c11 = (K1 * ramp_velocity + K2 * lift) / (2.0 * K1 + K2 * phi1)
     c12 = (c11 - ramp_velocity) * phi1 / np.pi
     c32 = -(2.0 * c11 - ramp_velocity) / K2
-    return KurzCoefficients(
-        c11=c11, c12=c12, c21=-c32 * k3, c22=-c32 * k1, c31=c32 * (Z - 1.0) / (6.0 * phi3**2), c32=c32,
-        c33=-c32 * k2, k1=k1, k2=k2, k3=k3, K1=K1, K2=K2,
-    )
+    values = dict(c11=c11, c12=c12, c21=-c32 * k3, c22=-c32 * k1, c31=c32 * (Z - 1.0) / (6.0 * phi3**2), c32=c32,
+                  c33=-c32 * k2, k1=k1, k2=k2, k3=k3, K1=K1, K2=K2)
+    return KurzCoefficients(**{k: float(v) for k, v in values.items()})
 
 
 class KurzLaw(SymmetricLaw):

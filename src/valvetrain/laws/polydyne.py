@@ -132,8 +132,8 @@ class PolydyneLaw(SymmetricLaw):
     Examples
     --------
     >>> law = PolydyneLaw(6.25e-3, np.deg2rad(71.0), 8)
-    >>> [round(float(v), 12) for v in law.derivatives(np.array([law.start]))[:, 0]]
-    [0.0, 0.0, 0.0, 0.0]
+    >>> bool(np.abs(law.derivatives(np.array([law.start]))).max() < 1e-12)  # lift and 3 derivatives vanish
+    True
     """
 
     name = "polydyne"

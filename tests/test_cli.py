@@ -1,0 +1,145 @@
+"""Command line: run, validate, example; bad files refused; atomic output."""
+
+import json
+import subprocess
+import sys
+
+from click.testing import CliRunner
+import pytest
+
+from valvetrain.cli import main
+from valvetrain.spec import example_text
+
+ARTEFACTS = ["results.json", "report.html", "tables/intake_lift.csv", "contour/intake.csv", "contour/intake.dxf",
+             "plots/intake_kinematics.png", "plots/intake_contour.png", "plots/intake_time_area.png",
+             "plots/intake_curvature.png"]
+
+
+@pytest.fixture(scope="module")
+def example_run(tmp_path_factory):
+    out = tmp_path_factory.mktemp("run") / "design"
+    result = CliRunner().invoke(main, ["run", "--out", str(out)])
+    assert result.exit_code == 0, result.output
+    return out, result
+
+
+def test_example_runs_and_writes_every_artefact(example_run):
+    out, result = example_run
+    for rel in ARTEFACTS:
+        assert (out / rel).is_file() and (out / rel).stat().st_size > 0, rel
+    assert "warning: intake: V' (throat velocity)" in result.output
+    data = json.loads((out / "results.json").read_text())
+    assert data["valves"]["intake"]["cam"]["law"] == "kurz"
+    assert not list(out.parent.glob(".design.*"))  # no temporary folder left behind
+
+
+def test_russian_report(tmp_path):
+    out = tmp_path / "ru"
+    assert CliRunner().invoke(main, ["run", "--out", str(out), "--lang", "ru"]).exit_code == 0
+    html = (out / "report.html").read_text(encoding="utf-8")
+    assert "Расчёт газораспределительного механизма" in html
+    assert 'lang="ru"' in html
+
+
+def test_example_command_prints_the_builtin_example():
+    result = CliRunner().invoke(main, ["example"])
+    assert result.exit_code == 0
+    assert result.output == example_text()
+
+
+def test_validate_accepts_the_example(tmp_path):
+    f = tmp_path / "my-engine.toml"
+    f.write_text(example_text())
+    result = CliRunner().invoke(main, ["validate", str(f)])
+    assert result.exit_code == 0
+    assert "valid" in result.output
+
+
+BAD = [
+    ("bore_mm = 80.0", "", ["engine.bore_mm: required key is missing"]),
+    ("bore_mm = 80.0", 'bore_mm = "80"', ["engine.bore_mm = '80': Input should be a valid number"]),
+    ("bore_mm = 80.0", "bore_mm = -80.0", ["engine.bore_mm = -80.0: allowed (0, 2000] mm"]),
+    ("phi2_deg = 6.0", "phi2_deg = 7.0", ["valves.intake.cam: phi1_deg + phi2_deg + phi3_deg = 72 cam deg must "
+                                          "equal the half-angle phi_p0"]),
+    ('law = "kurz"', 'law = "cosine"', ["valves.intake.cam.law = 'cosine': allowed 'kurz', 'polydyne'"]),
+    ("seat_angle_deg = 45.0", "seat_angle_deg = 45.0\nseat_angel = 30", ["valves.intake.seat_angel: unknown key"]),
+    ("[engine]", "[engine", ["not valid TOML"]),
+    ("clearance_mm = 0.25", "clearance_mm = 0.0", ["valves.intake.clearance_mm = 0: the Kurz cam's ramp"]),
+]
+
+
+@pytest.mark.parametrize("old,new,messages", BAD)
+@pytest.mark.parametrize("command", ["validate", "run"])
+def test_bad_files_are_refused(tmp_path, old, new, messages, command):
+    f = tmp_path / "bad.toml"
+    f.write_text(example_text().replace(old, new, 1))
+    out = tmp_path / "out"
+    args = [command, str(f)] + (["--out", str(out)] if command == "run" else [])
+    result = CliRunner().invoke(main, args)
+    assert result.exit_code == 2
+    for m in messages:
+        assert m in result.output
+    assert not out.exists()
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["bad.toml"]
+
+
+def test_several_problems_each_get_a_message(tmp_path):
+    f = tmp_path / "bad.toml"
+    f.write_text(example_text().replace("bore_mm = 80.0", "bore_mm = 0").replace("count = 1 ", "count = 0 ")
+                 .replace("max_lift_mm = 10.0", ""))
+    result = CliRunner().invoke(main, ["validate", str(f)])
+    assert result.exit_code == 2
+    lines = [ln for ln in result.output.splitlines() if ln.startswith("error:")]
+    assert len(lines) == 3
+    assert any("engine.bore_mm = 0" in ln for ln in lines)
+    assert any("valves.intake.count = 0" in ln for ln in lines)
+    assert any("valves.intake.max_lift_mm: required key is missing" in ln for ln in lines)
+
+
+def test_missing_file(tmp_path):
+    result = CliRunner().invoke(main, ["validate", str(tmp_path / "nope.toml")])
+    assert result.exit_code == 2
+    assert "cannot read the file" in result.output
+
+
+def test_failed_run_leaves_no_folder(tmp_path, monkeypatch):
+    """A failure while writing leaves neither the output folder nor a temporary one."""
+    import valvetrain.report.html as html
+
+    def boom(*a, **k):
+        raise RuntimeError("disk full")
+
+    monkeypatch.setattr(html, "render_report", boom)
+    out = tmp_path / "design"
+    result = CliRunner().invoke(main, ["run", "--out", str(out)])
+    assert result.exit_code == 1
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_failed_rerun_keeps_previous_results(tmp_path, monkeypatch, example_run):
+    import shutil
+
+    import valvetrain.report.html as html
+
+    out = tmp_path / "design"
+    shutil.copytree(example_run[0], out)
+    before = (out / "results.json").read_text()
+    monkeypatch.setattr(html, "render_report", lambda *a, **k: 1 / 0)
+    assert CliRunner().invoke(main, ["run", "--out", str(out)]).exit_code == 1
+    assert (out / "results.json").read_text() == before
+    assert [p.name for p in tmp_path.iterdir()] == ["design"]
+
+
+def test_rerun_replaces_the_folder(tmp_path):
+    out = tmp_path / "design"
+    out.mkdir()
+    (out / "stale.txt").write_text("old")
+    assert CliRunner().invoke(main, ["run", "--out", str(out)]).exit_code == 0
+    assert not (out / "stale.txt").exists()
+    assert (out / "results.json").is_file()
+
+
+def test_module_entry_point():
+    result = subprocess.run([sys.executable, "-m", "valvetrain", "--version"], capture_output=True, text=True)
+    assert result.returncode == 0
+    assert "valvetrain" in result.stdout

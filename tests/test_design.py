@@ -1,0 +1,154 @@
+"""The design run on the built-in example and on variants of it."""
+
+import numpy as np
+import pytest
+from hypothesis import given, settings, strategies as st
+from scipy.integrate import quad
+
+from valvetrain import flow
+from valvetrain.design import run
+from valvetrain.spec import example_spec, example_text, parse_spec
+
+
+def _variant(replacements):
+    text = example_text()
+    for old, new in replacements:
+        assert old in text, old
+        text = text.replace(old, new)
+    return parse_spec(text)
+
+
+POLYDYNE = [('law = "kurz"                 # "kurz" or "polydyne"', 'law = "polydyne"\np = 8'),
+            ("ramp_end_velocity_mm_per_deg = 0.02\n", ""), ("phi1_deg = 27.0", ""), ("phi2_deg = 6.0", ""),
+            ("phi3_deg = 38.0", ""), ("shape_factor = 0.625", "")]
+
+
+@pytest.fixture(scope="module")
+def example():
+    return run(example_spec()).to_dict()
+
+
+def test_example_reproduces_the_appendix(example):
+    cam = example["valves"]["intake"]["cam"]
+    fl = example["valves"]["intake"]["flow"]
+    assert cam["law"] == "kurz"
+    # seed 000 appendix, printed coefficients (truncated, spec E10)
+    for key, printed in {"c11": 5.040, "c12": 0.584, "c21": 8.336, "c22": 0.039, "c31": 1.020, "c32": -7.182,
+                         "c33": 2.961}.items():
+        assert np.trunc(cam["coefficients"][key] * 1000) / 1000 == pytest.approx(printed, abs=1e-12)
+    assert cam["max_acceleration_m_s2"] == pytest.approx(3487.80, abs=0.01)   # printed 3487 (truncated)
+    assert cam["min_acceleration_m_s2"] == pytest.approx(-1929.74, abs=0.01)  # printed -1930
+    assert cam["max_velocity_m_s"] == pytest.approx(3.27480, abs=1e-5)        # spec 4.1
+    assert cam["rho_min_mm"] == pytest.approx(11.885, abs=5e-4)               # eq. (2.38), E2
+    assert cam["rho_max_mm"] == pytest.approx(46.578, abs=5e-4)               # true maximum, E16
+    assert cam["seed_formulas"]["rho_max_mm"] == pytest.approx(46.5666, abs=1e-4)  # (2.39), printed 46.566
+    assert cam["phi_p0_deg"] == pytest.approx(71.0)                           # E1
+    assert cam["ramp_deg"] == pytest.approx(19.63495, abs=1e-5)               # 19 deg 38 min
+    assert cam["nose_crank_deg"] == pytest.approx(116.0)                      # Table P1
+    assert fl["V1_m_s"] == pytest.approx(85.07, abs=0.01)                     # spec 4.4
+    assert fl["V2_m_s"] == pytest.approx(97.44, abs=0.01)
+    assert fl["time_area_mm2_s"] == pytest.approx(2.8564, abs=1e-4)
+    assert fl["V3_m_s"] == pytest.approx(135.75, abs=0.01)
+    assert fl["time_area_open_mm2_s"] == pytest.approx(3.2772, abs=1e-4)
+    assert 0.0 < fl["fullness"] < 1.0
+
+
+def test_example_warnings_are_those_of_e8(example):
+    """E8: V' above 50-80, phi_zap 78 above 40-60, |j_min| above 1500, 45 deg inlet seat (usually 30);
+    and V'' = 97.4 above 80-95 (E7)."""
+    names = {w["quantity"] for w in example["warnings"]}
+    assert names == {"intake: V' (throat velocity)", "intake: V'' (curtain velocity at full lift)",
+                     "intake: min tappet acceleration", "intake: closing lag", "intake: seat angle"}
+    for w in example["warnings"]:
+        assert set(w) == {"quantity", "value", "range", "source", "unit"}
+        assert w["source"].startswith("seed")
+
+
+def test_polydyne_on_the_appendix_inputs():
+    """Spec 4.5: p = 8, no ramp: rho_min 10.262 mm, time-area 2.7657 mm2 s, V''' 140.20 m/s."""
+    res = run(_variant(POLYDYNE)).to_dict()["valves"]["intake"]
+    assert res["cam"]["law"] == "polydyne"
+    assert res["cam"]["coefficients"]["C2"] == pytest.approx(-1.87243, abs=5e-6)
+    assert res["cam"]["ramp_deg"] == 0.0
+    assert res["cam"]["rho_min_mm"] == pytest.approx(10.262, abs=5e-4)
+    assert res["flow"]["time_area_mm2_s"] == pytest.approx(2.7657, abs=1e-4)
+    assert res["flow"]["V3_m_s"] == pytest.approx(140.20, abs=0.01)
+
+
+def test_polydyne_with_ramp_runs():
+    res = run(_variant(POLYDYNE + [("p = 8", "p = 8\nramp = true\nramp_end_velocity_mm_per_deg = 0.015")]))
+    cam = res.to_dict()["valves"]["intake"]["cam"]
+    # Phi0 = pi h0 / (2 w') (2.1): 0.25 mm at 0.015 mm/deg -> 0.25 * 90 / 0.015 / 180 * pi... in deg: 26.18
+    assert cam["ramp_deg"] == pytest.approx(np.rad2deg(np.pi * 0.25 / (2 * 0.015 * 180 / np.pi)), rel=1e-12)
+    assert cam["event_cam_deg"] == pytest.approx(2 * (71.0 + cam["ramp_deg"]), rel=1e-12)
+
+
+def test_roller_follower():
+    res = run(_variant([('follower = "flat"', 'follower = "roller"\nroller_radius_mm = 12.0')]))
+    cam = res.to_dict()["valves"]["intake"]["cam"]
+    assert cam["follower"] == "roller"
+    assert 0.0 < cam["max_pressure_angle_deg"] < 45.0
+    # on the base circle the roller sees the heel radius; the profile radius is pitch radius - roller radius
+    assert cam["rho_max_mm"] >= cam["heel_radius_mm"]
+    v = res.valves["intake"]
+    assert v.table.contact_offset.max() == 0.0
+    assert v.table.pressure_angle.max() > 0.0
+
+
+def test_exhaust_valve_timing_and_stroke():
+    res = run(_variant([('kind = "intake"', 'kind = "exhaust"'), ("[valves.intake]", "[valves.exhaust]"),
+                        ("[valves.intake.cam]", "[valves.exhaust.cam]"), ("clearance_mm = 0.25", "clearance_mm = 0.40")]))
+    ex = res.to_dict()["valves"]["exhaust"]
+    # exhaust: opens 26 before BDC (-180), closes 78 after TDC: nose at (78 - 180 - 26)/2 = -64 crank deg
+    assert ex["cam"]["nose_crank_deg"] == pytest.approx(-64.0)
+    assert ex["flow"]["stroke_crank_deg"] == [-180.0, 0.0]
+    # V'' and V''' ranges are stated for inlet valves only (seed 000, work 1)
+    assert not any("V''" in w.quantity for w in res.warnings)
+
+
+def test_piston_clearance():
+    res = run(_variant([("# rod_length_mm = 135.0", "rod_length_mm = 135.0"),
+                        ("# piston_gap_tdc_mm = 1.5", "piston_gap_tdc_mm = 1.5")]))
+    pc = res.to_dict()["valves"]["intake"]["piston_clearance"]
+    # the clearance can never exceed y0 + stroke, and around TDC the valve lift reduces it below y0 + s
+    assert -20.0 < pc["min_clearance_mm"] < 1.5 + 77.2
+    tight = run(_variant([("# rod_length_mm = 135.0", "rod_length_mm = 135.0"),
+                          ("# piston_gap_tdc_mm = 1.5", "piston_gap_tdc_mm = 0.1"),
+                          ("opens_deg = 26.0", "opens_deg = 60.0"), ("phi3_deg = 38.0", "phi3_deg = 46.5")]))
+    assert any(w.quantity == "intake: valve-piston clearance" for w in tight.warnings)
+
+
+def test_undercut_is_a_warning_not_an_error():
+    """E26: a small base circle gives rho_min <= 0; the design reports it."""
+    res = run(_variant([("base_radius_mm = 20.0", "base_radius_mm = 8.0")]))
+    cam = res.to_dict()["valves"]["intake"]["cam"]
+    assert cam["undercut"] is True
+    assert cam["rho_min_mm"] <= 0.0
+    assert any("undercut" in w.quantity for w in res.warnings)
+
+
+@settings(max_examples=15, deadline=None)
+@given(st.floats(20.0, 30.0), st.floats(40.0, 78.0), st.floats(0.15, 0.3), st.floats(0.008, 0.022),
+       st.floats(1.5, 3.0))
+def test_results_agree_with_independent_computation(opens, closes, f1_share, w, r0_ratio):
+    """results.json against an independent evaluation of the same formulas on the same inputs."""
+    half = (opens + 180 + closes) / 4
+    phi1 = f1_share * half
+    phi2 = 0.15 * (half - phi1) / 1.15
+    spec = _variant([("opens_deg = 26.0", f"opens_deg = {opens!r}"), ("closes_deg = 78.0", f"closes_deg = {closes!r}"),
+                     ("phi1_deg = 27.0", f"phi1_deg = {phi1!r}"), ("phi2_deg = 6.0", f"phi2_deg = {phi2!r}"),
+                     ("phi3_deg = 38.0", "# phi3_deg omitted:"), ("ramp_end_velocity_mm_per_deg = 0.02",
+                                                    f"ramp_end_velocity_mm_per_deg = {w!r}"),
+                     ("base_radius_mm = 20.0", f"base_radius_mm = {10.0 * r0_ratio!r}")])
+    res = run(spec)
+    out = res.to_dict()["valves"]["intake"]
+    law = res.valves["intake"].law
+    omega = np.pi * 3500 / 30
+    sf = law.seed_formulas(10.0 * r0_ratio * 1e-3, omega)
+    assert out["cam"]["max_velocity_m_s"] == pytest.approx(sf["max_velocity"], rel=1e-6)
+    assert out["cam"]["min_acceleration_m_s2"] == pytest.approx(sf["min_acceleration"], rel=1e-6)
+    # time-area over the intake stroke by adaptive quadrature of the curtain area over crank angle
+    nose = np.deg2rad(out["cam"]["nose_crank_deg"])
+    f = lambda k: float(flow.curtain_area(law.valve_lift(np.array([(k - nose) / 2]), 1.6), 0.0368, np.pi / 4)[0])  # noqa: E731
+    ta = quad(f, 0.0, np.pi, points=nose + 2 * law.breakpoints, limit=400, epsabs=0, epsrel=1e-12)[0] / (2 * omega)
+    assert out["flow"]["time_area_mm2_s"] == pytest.approx(ta * 1e6, rel=1e-4)

@@ -1,0 +1,76 @@
+"""Exported files read back: lift table, contour CSV and DXF, results.json contract."""
+
+import csv
+import json
+
+import ezdxf
+import numpy as np
+import pytest
+
+from valvetrain.design import run
+from valvetrain.export import LIFT_COLUMNS, write_outputs
+from valvetrain.spec import example_spec
+
+
+@pytest.fixture(scope="module")
+def written(tmp_path_factory):
+    results = run(example_spec())
+    out = write_outputs(results, tmp_path_factory.mktemp("x") / "design")
+    return results, out
+
+
+def _read_csv(path):
+    with open(path, newline="") as fh:
+        rows = list(csv.reader(fh))
+    return rows[0], rows[1:]
+
+
+def test_lift_table(written):
+    results, out = written
+    header, rows = _read_csv(out / "tables" / "intake_lift.csv")
+    assert header == [name for name, _ in LIFT_COLUMNS]
+    cam = np.array([float(r[0]) for r in rows])
+    # default step 0.5 cam deg (issue contract), ends of the event included
+    inner = np.diff(cam)[1:-1]
+    assert np.allclose(inner, 0.5)
+    law = results.valves["intake"].law
+    lift = np.array([float(r[3]) for r in rows])
+    # read back equals the law to the 10 significant digits written
+    assert np.allclose(lift, law.lift(np.deg2rad(cam)) * 1e3, rtol=1e-9, atol=1e-12)
+    # the running time-area at the end equals the whole-opening time-area (spec 4.4: 3.2772)
+    assert float(rows[-1][9]) == pytest.approx(3.2772, abs=1e-4)
+    # crank = nose + 2 x cam (four-stroke): first row is the ramp start at 654 deg 44 min = -65.27 deg
+    assert float(rows[0][1]) == pytest.approx(116.0 - 2 * 90.634954, abs=1e-5)
+
+
+def test_contour_csv_and_dxf(written):
+    results, out = written
+    header, rows = _read_csv(out / "contour" / "intake.csv")
+    assert header == ["cam_deg", "x_mm", "y_mm", "radius_mm", "polar_angle_deg"]
+    xy = np.array([[float(r[1]), float(r[2])] for r in rows])
+    # the nose: r0 + h_T max = 26.25 mm on +y (spec E2: rho at the nose; contour radius = r_k + h)
+    assert xy[:, 1].max() == pytest.approx(26.25, abs=1e-6)
+    doc = ezdxf.readfile(out / "contour" / "intake.dxf")
+    msp = doc.modelspace()
+    layers = {e.dxf.layer for e in msp}
+    assert {"CAM_PROFILE", "BASE_CIRCLE", "SEGMENTS", "AXES"} <= layers
+    poly = msp.query("LWPOLYLINE").first
+    assert poly.closed
+    pts = np.array([p[:2] for p in poly.get_points()])
+    assert np.allclose(pts, xy, atol=1e-9)
+    circle = msp.query("CIRCLE").first
+    assert circle.dxf.radius == pytest.approx(19.75)  # heel radius r0 - h0 (seed 000)
+    assert len(msp.query("LINE[layer=='SEGMENTS']")) == len(results.valves["intake"].law.breakpoints)
+
+
+def test_results_json_contract(written):
+    _, out = written
+    data = json.loads((out / "results.json").read_text())
+    cam = data["valves"]["intake"]["cam"]
+    for key in ["law", "coefficients", "max_velocity_m_s", "max_acceleration_m_s2", "min_acceleration_m_s2",
+                "rho_min_mm", "rho_max_mm", "phi_p0_deg", "ramp_deg"]:
+        assert key in cam
+    assert set("c11 c12 c21 c22 c31 c32 c33".split()) <= set(cam["coefficients"])
+    for key in ["V1_m_s", "V2_m_s", "V3_m_s", "time_area_mm2_s", "time_area_open_mm2_s", "fullness"]:
+        assert key in data["valves"]["intake"]["flow"]
+    assert isinstance(data["warnings"], list) and data["warnings"]
