@@ -152,3 +152,14 @@ def test_results_agree_with_independent_computation(opens, closes, f1_share, w, 
     f = lambda k: float(flow.curtain_area(law.valve_lift(np.array([(k - nose) / 2]), 1.6), 0.0368, np.pi / 4)[0])  # noqa: E731
     ta = quad(f, 0.0, np.pi, points=nose + 2 * law.breakpoints, limit=400, epsabs=0, epsrel=1e-12)[0] / (2 * omega)
     assert out["flow"]["time_area_mm2_s"] == pytest.approx(ta * 1e6, rel=1e-4)
+
+
+@pytest.mark.parametrize("path", sorted((__import__("pathlib").Path(__file__).parents[1] / "examples").glob("*.toml")),
+                         ids=lambda p: p.name)
+def test_shipped_examples_run(path):
+    from valvetrain.spec import load_spec
+
+    res = run(load_spec(path))
+    assert res.valves
+    for v in res.valves.values():
+        assert np.isfinite(v.summary["flow"]["time_area_mm2_s"])

@@ -78,5 +78,7 @@ def test_ramp_junction_worked_example():
 
 
 def test_bad_exponents_refused():
-    with pytest.raises(ValueError, match="2 < p < q < r < s"):
+    with pytest.raises(ValueError, match="3 <= p < q < r < s"):
         PolydyneLaw(6e-3, 1.0, 8, q=7)
+    with pytest.raises(ValueError, match="jerk infinite"):
+        PolydyneLaw(6e-3, 1.0, 2.5)

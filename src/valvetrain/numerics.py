@@ -64,7 +64,8 @@ def extremum(fn, edges, kind="max", samples=65):
     ends included); the best sample is then refined with bounded Brent iteration
     (:func:`scipy.optimize.minimize_scalar`) between its neighbours, and the better of
     the sample and the refined point is returned.  An extremum at a junction (a kink)
-    is found exactly because the junctions are sampled.
+    is found exactly because the junctions are sampled.  Where the function is not
+    finite next to the best sample (a masked region), the sample itself is returned.
 
     Parameters
     ----------
@@ -95,9 +96,10 @@ def extremum(fn, edges, kind="max", samples=65):
     xs = np.unique((edges[:-1, None] + (edges[1:] - edges[:-1])[:, None] * t[None, :]).ravel())
     ys = sign * np.asarray(fn(xs), dtype=float)
     i = int(np.argmax(ys))
-    lo, hi = xs[max(i - 1, 0)], xs[min(i + 1, xs.size - 1)]
+    j, k = max(i - 1, 0), min(i + 1, xs.size - 1)
+    lo, hi = xs[j], xs[k]
     best_x, best_y = xs[i], ys[i]
-    if hi > lo:
+    if hi > lo and np.all(np.isfinite(ys[j:k + 1])):
         res = minimize_scalar(lambda x: -sign * float(fn(np.array([x]))[0]), bounds=(lo, hi),
                               method="bounded", options={"xatol": 1e-13 * max(1.0, abs(hi))})
         if -res.fun > best_y:

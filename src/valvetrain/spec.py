@@ -100,10 +100,10 @@ class PolydyneCam(_CamBase):
     """[valves.NAME.cam] with law = "polydyne" (seed 000, work 3)."""
 
     law: Literal["polydyne"]
-    p: _bounded(2.0, 200.0)
-    q: Optional[_bounded(2.0, 400.0)] = None
-    r: Optional[_bounded(2.0, 600.0)] = None
-    s: Optional[_bounded(2.0, 800.0)] = None
+    p: _bounded(3.0, 200.0, low_open=False)
+    q: Optional[_bounded(3.0, 400.0)] = None
+    r: Optional[_bounded(3.0, 600.0)] = None
+    s: Optional[_bounded(3.0, 800.0)] = None
     ramp: bool = False
     ramp_end_velocity_mm_per_deg: Optional[_bounded(0.0, 1.0, "mm/deg")] = None
 
@@ -115,7 +115,7 @@ class PolydyneCam(_CamBase):
         s = self.s if self.s is not None else 4 * p - 6
         if not p < q < r < s:
             raise ValueError(f"exponents p, q, r, s = {p:g}, {q:g}, {r:g}, {s:g} must increase strictly "
-                             "(2 < p < q < r < s)")
+                             "(3 <= p < q < r < s)")
         if self.ramp and self.ramp_end_velocity_mm_per_deg is None:
             raise ValueError("ramp = true needs ramp_end_velocity_mm_per_deg (allowed (0, 1] mm/deg)")
         return self

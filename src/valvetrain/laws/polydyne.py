@@ -121,7 +121,7 @@ class PolydyneLaw(SymmetricLaw):
     main_half_angle : float
         phi_p0, from the end of the ramp (or the start of lift) to the nose [rad camshaft].
     p : float
-        First exponent (> 2).
+        First exponent, >= 3 (below 3 the jerk is infinite at the nose).
     q, r, s : float, optional
         Further exponents; default the progression of :func:`default_exponents`.
     ramp_height : float
@@ -142,8 +142,9 @@ class PolydyneLaw(SymmetricLaw):
         dp, dq, dr, ds = default_exponents(p)
         self.exponents = (float(p), float(dq if q is None else q), float(dr if r is None else r),
                           float(ds if s is None else s))
-        if not 2 < self.exponents[0] < self.exponents[1] < self.exponents[2] < self.exponents[3]:
-            raise ValueError(f"polydyne exponents {self.exponents}: allowed 2 < p < q < r < s")
+        if not 3 <= self.exponents[0] < self.exponents[1] < self.exponents[2] < self.exponents[3]:
+            raise ValueError(f"polydyne exponents {self.exponents}: allowed 3 <= p < q < r < s "
+                             "(p < 3 makes the jerk infinite at the nose)")
         if not (lift > 0 and main_half_angle > 0):
             raise ValueError("polydyne law: lift and main half angle must be positive")
         if ramp_height < 0 or (ramp_height > 0 and not ramp_velocity > 0):
@@ -192,12 +193,17 @@ class PolydyneLaw(SymmetricLaw):
         if self.phi0 > 0:
             out[:, ramp] = cosine_ramp(phi[ramp], self._ramp_height, self.phi0)
         x = (self.half_angle - phi[~ramp]) / self.phi_p0
-        k = self._k[:, None]
-        terms = [self._a[:, None] * _falling(k, j) * x[None, :] ** np.maximum(k - j, 0.0) for j in range(4)]
+        # d^j/dx^j of sum a_k x^k: the x^2 term directly, the others from one power x^(k-3) per exponent
+        c2, a = self._a[0], self._a[1:, None]
+        k = self._k[1:, None]
+        base = x[None, :] ** (k - 3.0)
+        x1 = x[None, :]
+        series = [(a * base * x1**3).sum(0) + c2 * x * x, (a * k * base * x1**2).sum(0) + 2.0 * c2 * x,
+                  (a * _falling(k, 2) * base * x1).sum(0) + 2.0 * c2, (a * _falling(k, 3) * base).sum(0)]
         nose = self._lift + self._ramp_height
         # d/dphi = -d/dtheta_from_nose = -(1/phi_p0) d/dx
-        out[:, ~ramp] = [nose + terms[0].sum(0), -terms[1].sum(0) / self.phi_p0,
-                         terms[2].sum(0) / self.phi_p0**2, -terms[3].sum(0) / self.phi_p0**3]
+        out[:, ~ramp] = [nose + series[0], -series[1] / self.phi_p0, series[2] / self.phi_p0**2,
+                         -series[3] / self.phi_p0**3]
         return out
 
     def coefficients(self):
