@@ -65,7 +65,19 @@ BAD = [
     ("seat_angle_deg = 45.0", "seat_angle_deg = 45.0\nseat_angel = 30", ["valves.intake.seat_angel: unknown key"]),
     ("[engine]", "[engine", ["not valid TOML"]),
     ("clearance_mm = 0.25", "clearance_mm = 0.0", ["valves.intake.clearance_mm = 0: the Kurz cam's ramp"]),
+    ("strokes = 4", "strokes = 2", ["engine.strokes = 2: the valve timing"]),
+    ("phi3_deg = 38.0", "phi3_deg = 38.0\nphi1_deg = 2.0", ["not valid TOML"]),  # duplicate key
 ]
+
+
+def test_phi3_omitted_needs_room(tmp_path):
+    f = tmp_path / "bad.toml"
+    f.write_text(example_text().replace("phi3_deg = 38.0", "").replace("phi1_deg = 27.0", "phi1_deg = 66.0"))
+    result = CliRunner().invoke(main, ["validate", str(f)])
+    assert result.exit_code == 2
+    assert "leaves no room for phi3" in result.output
+    f.write_text(example_text().replace("phi3_deg = 38.0", ""))
+    assert CliRunner().invoke(main, ["validate", str(f)]).exit_code == 0
 
 
 @pytest.mark.parametrize("old,new,messages", BAD)

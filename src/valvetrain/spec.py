@@ -249,6 +249,10 @@ def validate(data):
     except ValidationError as exc:
         raise SpecError([_message(err) for err in exc.errors()]) from None
     problems = [p for name, v in spec.valves.items() for p in _valve_problems(name, v, spec.engine)]
+    if spec.engine.strokes != 4 and spec.valves:
+        problems.insert(0, f"engine.strokes = {spec.engine.strokes}: the valve timing (opens_deg/closes_deg before and "
+                           "after TDC/BDC of the gas-exchange strokes) is defined for four-stroke engines; allowed 4 "
+                           "with [valves.NAME] sections")
     if problems:
         raise SpecError(problems)
     return spec
