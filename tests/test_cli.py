@@ -97,7 +97,7 @@ def test_bad_files_are_refused(tmp_path, old, new, messages, command):
 
 def test_several_problems_each_get_a_message(tmp_path):
     f = tmp_path / "bad.toml"
-    f.write_text(example_text().replace("bore_mm = 80.0", "bore_mm = 0").replace("count = 1 ", "count = 0 ")
+    f.write_text(example_text().replace("bore_mm = 80.0", "bore_mm = 0").replace("count = 1                    # same", "count = 0 # same")
                  .replace("max_lift_mm = 10.0", ""))
     result = CliRunner().invoke(main, ["validate", str(f)])
     assert result.exit_code == 2

@@ -10,6 +10,7 @@ allowed; :func:`load_spec` raises :class:`SpecError` carrying them all.
 
 from importlib.resources import files
 import math
+from pathlib import Path
 import re
 import tomllib
 from typing import Annotated, Literal, Optional, Union
@@ -124,6 +125,113 @@ class PolydyneCam(_CamBase):
 Cam = Annotated[Union[KurzCam, PolydyneCam], Field(discriminator="law")]
 
 
+class Masses(_Model):
+    """[valves.NAME.drive.masses]: part masses for the reduced mass (seed 000, eq. 5.2)."""
+
+    valve_kg: _bounded(0.0, 50.0)
+    retainer_kg: _bounded(0.0, 20.0, low_open=False) = 0.0
+    cotters_kg: _bounded(0.0, 5.0, low_open=False) = 0.0
+    spring_kg: Optional[_bounded(0.0, 20.0)] = None
+    pushrod_kg: _bounded(0.0, 20.0, low_open=False) = 0.0
+    tappet_kg: _bounded(0.0, 20.0, low_open=False) = 0.0
+    rocker_inertia_kg_mm2: _bounded(0.0, 1e7, "kg mm2", low_open=False) = 0.0
+
+
+class Drive(_Model):
+    """[valves.NAME.drive]: drive layout, masses and spring reserve (seed 000, works 5 and 7)."""
+
+    layout: Optional[Literal["direct", "rocker", "pushrod"]] = None
+    spring_reserve: _bounded(1.0, 5.0) = 1.8
+    specific_mass_kg_m2: Optional[_bounded(0.0, 5000.0, "kg/m2")] = None
+    valve_arm_mm: Optional[Length(0.0, 1000.0)] = None
+    masses: Optional[Masses] = None
+
+    @model_validator(mode="after")
+    def _one_mass_model(self):
+        if self.masses is not None and self.specific_mass_kg_m2 is not None:
+            raise ValueError("give either specific_mass_kg_m2 or a [masses] table, not both")
+        if self.masses is not None and self.masses.rocker_inertia_kg_mm2 > 0 and self.valve_arm_mm is None:
+            raise ValueError("masses.rocker_inertia_kg_mm2 needs valve_arm_mm (the valve-side rocker arm)")
+        return self
+
+
+class Spring(_Model):
+    """[valves.NAME.spring]: spring count, material and design limits (seed 000, works 5-6)."""
+
+    count: Literal[1, 2] = 1
+    inner_share: _bounded(0.0, 1.0, high_open=True) = 0.4
+    material: str = "60S2A"
+    shear_modulus_MPa: _bounded(1e3, 3e5, "MPa") = 8.0e4
+    density_kg_m3: _bounded(100.0, 20000.0, "kg/m3") = 7850.0
+    allowable_stress_MPa: _bounded(0.0, 3000.0, "MPa") = 500.0
+    endurance_limit_MPa: _bounded(0.0, 3000.0, "MPa") = 370.0
+    mean_stress_factor: _bounded(0.0, 1.0, low_open=False) = 0.2
+    min_safety_factor: _bounded(0.0, 10.0) = 1.3
+    min_resonance_ratio: _bounded(0.0, 100.0, low_open=False) = 10.0
+    coil_gap_factor: _bounded(0.0, 1.0) = 0.12
+    mean_diameter_ratio: tuple[_bounded(0.0, 5.0), _bounded(0.0, 5.0)] = (0.7, 0.9)
+    deflection_ratio_range: tuple[_bounded(1.0, 20.0), _bounded(1.0, 20.0)] = (1.6, 3.2)
+    min_frequency_difference: _bounded(0.0, 1.0, low_open=False) = 0.1
+    radial_gap_mm: Length(0.0, 20.0, low_open=False) = 1.0
+
+    @model_validator(mode="after")
+    def _ordered_range(self):
+        for key, default in (("mean_diameter_ratio", "[0.7, 0.9]"), ("deflection_ratio_range", "[1.6, 3.2]")):
+            low, high = getattr(self, key)
+            if low >= high:
+                raise ValueError(f"{key} = {[low, high]} must be [low, high] with low < high (seed 000: {default})")
+        return self
+
+
+class Parts(_Model):
+    """[valves.NAME.parts]: dimensions of the loaded parts (seed 000, work 7); a check runs when its keys are given."""
+
+    contact_modulus_MPa: _bounded(1e3, 1e6, "MPa") = 2.1e5
+    head_diameter_mm: Optional[Length(0.0, 1000.0)] = None
+    cam_width_mm: Optional[Length(0.0, 200.0)] = None
+    camshaft_diameter_mm: Optional[Length(0.0, 500.0)] = None
+    camshaft_bore_mm: Length(0.0, 500.0, low_open=False) = 0.0
+    camshaft_span_mm: Optional[Length(0.0, 2000.0)] = None
+    cam_to_bearing_mm: Optional[Length(0.0, 2000.0)] = None
+    camshaft_modulus_MPa: _bounded(1e3, 1e6, "MPa") = 2.1e5
+    camshaft_deflection_coefficient: _bounded(0.0, 100.0) = 64.0 / (3.0 * math.pi)
+    tappet_diameter_mm: Optional[Length(0.0, 500.0)] = None
+    tappet_guide_length_mm: Optional[Length(0.0, 500.0)] = None
+    pushrod_length_mm: Optional[Length(0.0, 2000.0)] = None
+    pushrod_diameter_mm: Optional[Length(0.0, 100.0)] = None
+    pushrod_bore_mm: Length(0.0, 100.0, low_open=False) = 0.0
+    pushrod_modulus_MPa: _bounded(1e3, 1e6, "MPa") = 2.1e5
+    ball_radius_mm: Optional[Length(0.0, 100.0)] = None
+    socket_radius_mm: Optional[Length(0.0, 100.0)] = None
+    pushrod_head_area_mm2: Optional[_bounded(0.0, 1e5, "mm2")] = None
+    rocker_pad_width_mm: Optional[Length(0.0, 100.0)] = None
+    rocker_pad_radius_mm: Optional[Length(0.0, 1000.0)] = None
+    rocker_shaft_span_mm: Optional[Length(0.0, 1000.0)] = None
+    rocker_shaft_diameter_mm: Optional[Length(0.0, 200.0)] = None
+    rocker_shaft_bore_mm: Length(0.0, 200.0, low_open=False) = 0.0
+    rocker_width_mm: Optional[Length(0.0, 200.0)] = None
+
+    @model_validator(mode="after")
+    def _consistent(self):
+        problems = []
+        if self.camshaft_span_mm is not None and self.cam_to_bearing_mm is not None \
+                and self.cam_to_bearing_mm >= self.camshaft_span_mm:
+            problems.append(f"cam_to_bearing_mm = {self.cam_to_bearing_mm:g} must be smaller than camshaft_span_mm = "
+                            f"{self.camshaft_span_mm:g}")
+        for outer, inner in (("camshaft_diameter_mm", "camshaft_bore_mm"), ("pushrod_diameter_mm", "pushrod_bore_mm"),
+                             ("rocker_shaft_diameter_mm", "rocker_shaft_bore_mm")):
+            o, i = getattr(self, outer), getattr(self, inner)
+            if o is not None and i >= o:
+                problems.append(f"{inner} = {i:g} must be smaller than {outer} = {o:g}")
+        if self.ball_radius_mm is not None and self.socket_radius_mm is not None \
+                and self.socket_radius_mm <= self.ball_radius_mm:
+            problems.append(f"socket_radius_mm = {self.socket_radius_mm:g} must exceed ball_radius_mm = "
+                            f"{self.ball_radius_mm:g}")
+        if problems:
+            raise ValueError("; ".join(problems))
+        return self
+
+
 class Valve(_Model):
     """[valves.NAME]: one valve (or a set of same-name valves) of a cylinder."""
 
@@ -138,6 +246,26 @@ class Valve(_Model):
     rocker_ratio: _bounded(0.0, 5.0) = 1.0
     piston_gap_tdc_mm: Optional[Length(-100.0, 500.0)] = None
     cam: Cam
+    drive: Drive = Drive()
+    spring: Spring = Spring()
+    parts: Parts = Parts()
+
+    @property
+    def layout(self):
+        """Drive layout: as given, else direct for rocker ratio 1 and pushrod otherwise."""
+        if self.drive.layout is not None:
+            return self.drive.layout
+        return "direct" if self.rocker_ratio == 1.0 else "pushrod"
+
+
+class Gas(_Model):
+    """[gas]: absolute pressures for the closed-valve spring check and the cam load (seed 000, works 5, 7)."""
+
+    exhaust_back_pressure_MPa: _bounded(0.0, 10.0, "MPa") = 0.106
+    cylinder_intake_pressure_MPa: _bounded(0.0, 10.0, "MPa") = 0.085
+    intake_port_pressure_MPa: _bounded(0.0, 10.0, "MPa") = 0.1
+    cylinder_exhaust_pressure_MPa: _bounded(0.0, 10.0, "MPa") = 0.115
+    exhaust_opening_pressure_MPa: _bounded(0.0, 50.0, "MPa") = 0.5
 
 
 class Output(_Model):
@@ -155,6 +283,7 @@ class Spec(_Model):
 
     engine: Engine
     valves: dict[str, Valve]
+    gas: Gas = Gas()
     output: Output = Output()
 
     @field_validator("valves")
@@ -212,6 +341,8 @@ def _valve_problems(name, v, engine):
                    "allowed (0, 5] mm")
     if lift_tappet <= 0:
         out.append(f"{at}.max_lift_mm = {v.max_lift_mm:g} must be positive")
+    if v.drive.layout == "direct" and v.rocker_ratio != 1.0:
+        out.append(f"{at}.drive.layout = \"direct\" needs rocker_ratio = 1 (got {v.rocker_ratio:g})")
     if v.piston_gap_tdc_mm is not None and engine.rod_length_mm is None:
         out.append(f"{at}.piston_gap_tdc_mm needs engine.rod_length_mm for the piston kinematics")
     return out
@@ -270,7 +401,7 @@ def parse_spec(text, source="<string>"):
 def load_spec(path):
     """Read and validate a specification file."""
     try:
-        text = open(path, encoding="utf-8").read()
+        text = Path(path).read_text(encoding="utf-8")
     except (OSError, UnicodeDecodeError) as exc:
         raise SpecError([f"{path}: cannot read the file: {exc}"]) from None
     return parse_spec(text, str(path))

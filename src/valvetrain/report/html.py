@@ -79,6 +79,11 @@ def render_report(results, plots, lang="en"):
             "seed": [(k, val, s["cam"][k]) for k, val in s["cam"].get("seed_formulas", {}).items()],
             "residuals": list(s["cam"].get("residuals", {}).items()),
             "clearance": list(s.get("piston_clearance", {}).items()),
+            "masses": list(s["masses"].items()),
+            "spring": [(k, val) for k, val in s["spring"].items() if not isinstance(val, dict)],
+            "pair": [(t, s["spring"][k]) for k, t in (("outer", "outer_spring"), ("inner", "inner_spring"))
+                     if k in s["spring"]],
+            "strength": s["strength"],
             "table": _abridged_table(v),
             "warnings": v.warnings,
         })

@@ -105,8 +105,34 @@ def curvature_figure(valve, t):
     return fig
 
 
+def spring_figure(valve, t):
+    """Spring characteristic as Fig. 5.1 of seed 000: inertia force, required force and the chosen lines
+    against valve lift."""
+    drive = valve.drive
+    y = drive.lift / MM
+    order = np.argsort(y)
+    fig, ax = plt.subplots(figsize=(8, 5))
+    ax.plot(y[order], drive.inertia_force[order], color="0.5", ls=":", label=t["inertia_force"])
+    ax.plot(y[order], drive.required_force[order], color="C3", label=t["required_force"])
+    yy = np.array([0.0, y.max()])
+    styles = {"required": ("C3", "--"), "chosen": ("k", "-"), "outer": ("C0", "-."), "inner": ("C2", "-.")}
+    for name, line in drive.lines.items():
+        color, ls = styles[name]
+        ax.plot(yy, line.force(yy * MM), color=color, ls=ls, lw=1.5 if name == "chosen" else 1.0,
+                label=t["line_" + name])
+    ax.set_xlabel(t["valve_lift"] + ", mm")
+    ax.set_ylabel(t["force"])
+    ax.set_xlim(0.0, y.max())
+    ax.set_ylim(0.0, None)
+    ax.grid(alpha=0.3)
+    ax.legend(loc="upper left")
+    ax.set_title(f"{valve.name}: {t['spring_title']}")
+    fig.tight_layout()
+    return fig
+
+
 FIGURES = {"kinematics": kinematics_figure, "contour": contour_figure, "time_area": time_area_figure,
-           "curvature": curvature_figure}
+           "curvature": curvature_figure, "spring": spring_figure}
 
 
 def write_plots(results, folder, lang="en"):

@@ -1,0 +1,81 @@
+"""Masses of the valve train reduced to the valve axis and to the tappet (seed 000, works 5 and 7).
+
+SI units: kg, m, kg*m^2.  ``rocker_ratio`` i_k = l_v / l_t (valve arm over tappet arm).
+"""
+
+import numpy as np
+
+SPECIFIC_MASS_RANGE = {"direct": (200.0, 300.0), "pushrod": (400.0, 500.0)}
+"""Constructive mass of the valve train per inlet throat area [kg/m^2] (seed 000, work 5)."""
+
+SPECIFIC_MASS_DEFAULT = {"direct": 250.0, "rocker": 400.0, "pushrod": 450.0}
+"""Defaults [kg/m^2]: the middle of the seed 000 ranges; an overhead-cam rocker drive (no pushrod) is not
+in the source and takes the lower end of the pushrod range (an assumption, stated in the report)."""
+
+
+def reduced_mass_at_valve(valve, retainer, cotters, spring, pushrod=0.0, tappet=0.0, rocker_inertia=0.0,
+                          valve_arm=1.0, rocker_ratio=1.0):
+    """Mass of the valve train reduced to the valve axis [kg].
+
+    Parameters
+    ----------
+    valve, retainer, cotters, spring, pushrod, tappet : float
+        Part masses [kg]; one third of the spring moves with the valve.
+    rocker_inertia : float
+        Rocker moment of inertia about its shaft [kg m^2].
+    valve_arm : float
+        Valve-side rocker arm l_v [m] (only used with a rocker inertia).
+    rocker_ratio : float
+        i_k = l_v / l_t.
+
+    Notes
+    -----
+    .. math:: m_v = m_{valve} + m_{ret} + m_{cot} + \\frac{m_{spr}}{3} + \\frac{I_r}{l_v^2}
+              + (m_{pushrod} + m_{tappet})\\left(\\frac{l_t}{l_v}\\right)^2
+
+    References
+    ----------
+    seed 000, work 5, eq. (5.2).
+
+    Examples
+    --------
+    >>> round(reduced_mass_at_valve(0.05, 0.02, 0.005, 0.045, 0.06, 0.04, 4e-5, 0.04, 1.6), 5)
+    0.15406
+    """
+    rocker = rocker_inertia / valve_arm**2 if rocker_inertia else 0.0
+    return valve + retainer + cotters + spring / 3.0 + rocker + (pushrod + tappet) / rocker_ratio**2
+
+
+def reduced_mass_at_tappet(mass_at_valve, rocker_ratio=1.0):
+    """Mass reduced to the tappet, m_t = m_v i_k^2 [kg].
+
+    Equal term by term to seed 000 eq. (7.2) written from the parts, since every part of
+    (5.2) is moved to the tappet by the square of the lever ratio.
+
+    References
+    ----------
+    seed 000, work 7, eq. (7.2).
+    """
+    return mass_at_valve * rocker_ratio**2
+
+
+def mass_from_specific(specific_mass, throat_area):
+    """Reduced mass at the valve estimated from the specific (constructive) mass, m_v = m' f_g [kg].
+
+    References
+    ----------
+    seed 000, work 5 (m' = 200-300 kg/m^2 direct drive, 400-500 kg/m^2 pushrod drive).
+
+    Examples
+    --------
+    The seed 000 appendix valve (f_g = 1063.6 mm^2) with 450 kg/m^2: 0.479 kg.
+
+    >>> round(mass_from_specific(450.0, 1063.6e-6), 3)
+    0.479
+    """
+    return specific_mass * throat_area
+
+
+def spring_mass(mean_diameter, wire_diameter, total_coils, density):
+    """Mass of a helical spring, m = rho (pi d^2/4) pi D i_total [kg] (seed 003, step 3)."""
+    return density * np.pi * wire_diameter**2 / 4.0 * np.pi * mean_diameter * total_coils

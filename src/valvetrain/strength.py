@@ -1,0 +1,215 @@
+"""Strength checks of the drive parts (seed 000, work 7; seed 002, eq. 2.5).
+
+SI units: N, m, Pa.  Each check is a pure function; :class:`Verdict` carries a value
+with its allowable limit and source, and becomes a warning when it fails.
+"""
+
+from dataclasses import dataclass
+
+import numpy as np
+
+DEFLECTION_COEFFICIENT = 64.0 / (3.0 * np.pi)
+"""Camshaft deflection coefficient of (7.3): 64/(3 pi) = 6.79 from beam theory; the printed 0.8 is wrong (E20)."""
+
+STEEL_MODULUS = 2.1e11
+"""Young's modulus of steel [Pa]; the manual's 1.1e5 MPa for steel pushrods is wrong (E21)."""
+
+LIMITS = {
+    "camshaft_deflection": (0.05e-3, "max", "m", "seed 000, eq. (7.3): 0.02-0.05 mm"),
+    "cam_contact_stress": (1200e6, "max", "Pa", "seed 000, eqs. (7.4)-(7.5): 600-1200 MPa"),
+    "tappet_side_pressure": (10e6, "max", "Pa", "seed 000, eq. (7.6): < 10 MPa"),
+    "pushrod_buckling_margin": (2.0, "min", "", "seed 000, eq. (7.8): n = 2-5"),
+    "ball_socket_stress": (2000e6, "max", "Pa", "seed 000, eqs. (7.11), (7.14): <= 2000 MPa"),
+    "pushrod_head_pressure": (100e6, "max", "Pa", "seed 000, eq. (7.12): <= 80-100 MPa"),
+    "rocker_pad_stress": (2000e6, "max", "Pa", "seed 000, eq. (7.13): <= 2000 MPa"),
+    "rocker_shaft_bending": (150e6, "max", "Pa", "seed 000, eq. (7.15): <= 150 MPa"),
+    "rocker_shaft_shear": (90e6, "max", "Pa", "seed 000, eq. (7.17): <= 90 MPa"),
+    "rocker_shaft_bearing": (80e6, "max", "Pa", "seed 000, eq. (7.18): <= 80 MPa"),
+}
+"""Allowable values: the limit (the less strict end of the source's range), its kind, unit and source."""
+
+
+@dataclass(frozen=True)
+class Verdict:
+    """A checked value against its allowable limit (SI)."""
+
+    check: str
+    value: float
+    limit: float
+    kind: str        # "max": value <= limit; "min": value >= limit
+    unit: str
+    source: str
+    note: str = ""
+
+    @property
+    def passed(self):
+        return bool(self.value <= self.limit) if self.kind == "max" else bool(self.value >= self.limit)
+
+    def as_dict(self, scale=1.0, unit=None):
+        """Record for results.json: value and allowed in ``unit`` (scaled by ``scale``)."""
+        sign = "<=" if self.kind == "max" else ">="
+        out = {"value": self.value * scale, "allowed": f"{sign} {self.limit * scale:g}", "limit": self.limit * scale,
+               "unit": unit if unit is not None else self.unit, "pass": self.passed, "source": self.source}
+        if self.note:
+            out["note"] = self.note
+        return out
+
+
+def verdict(check, value, note=""):
+    """A :class:`Verdict` for one of the checks of :data:`LIMITS`."""
+    limit, kind, unit, source = LIMITS[check]
+    return Verdict(check, float(value), limit, kind, unit, source, note)
+
+
+def cam_force(spring_force, valve_inertia_force, rocker_ratio):
+    """Force between cam and follower, reduced to the tappet [N].
+
+    Parameters
+    ----------
+    spring_force : ndarray
+        Spring force at the valve at the instantaneous lift [N] (plus any gas force on the valve head).
+    valve_inertia_force : ndarray
+        m_v j_v, the inertia force of the train reduced to the valve [N].
+    rocker_ratio : float
+        i_k = l_v / l_t.
+
+    Notes
+    -----
+    .. math:: P_T = i_k\\,(P_{spr} + P_{gas}) + m_t j_T,\\quad m_t j_T = i_k\\,m_v j_v
+
+    Seed 000's (7.1) evaluates this at the opening with the inertia term of a circular-arc
+    cam; for an analytic law the inertia term is m_t j_T along the whole profile (E23).
+
+    References
+    ----------
+    seed 000, work 7, eqs. (7.1)-(7.2).
+    """
+    return rocker_ratio * (np.asarray(spring_force) + np.asarray(valve_inertia_force))
+
+
+def camshaft_deflection(force, l1, l2, diameter, bore=0.0, modulus=STEEL_MODULUS, coefficient=DEFLECTION_COEFFICIENT):
+    """Deflection of the camshaft under the cam load between two bearings [m].
+
+    Parameters
+    ----------
+    force : float
+        Cam load P_T max [N].
+    l1, l2 : float
+        Distances of the cam from the two bearings [m]; span l = l1 + l2.
+    diameter, bore : float
+        Outer and inner diameter of the shaft [m].
+    modulus : float
+        Young's modulus [Pa].
+    coefficient : float
+        64/(3 pi) = 6.79 for a simply supported beam (default); the manual prints 0.8 (E20).
+
+    Notes
+    -----
+    .. math:: f = \\frac{k\\,P\\,l_1^2 l_2^2}{E\\,l\\,(d^4 - \\delta^4)}
+
+    References
+    ----------
+    seed 000, work 7, eq. (7.3), with the coefficient corrected as in SPEC.md.
+
+    Examples
+    --------
+    Equals P l1^2 l2^2 / (3 E I l) with I = pi (d^4 - delta^4)/64:
+
+    >>> P, a, b, d = 5000.0, 0.03, 0.05, 0.025
+    >>> I = np.pi * d**4 / 64
+    >>> bool(np.isclose(camshaft_deflection(P, a, b, d), P * a**2 * b**2 / (3 * 2.1e11 * I * (a + b))))
+    True
+    """
+    return coefficient * force * l1**2 * l2**2 / (modulus * (l1 + l2) * (diameter**4 - bore**4))
+
+
+def effective_modulus(e1, e2):
+    """E_m = 2 E1 E2 / (E1 + E2) [Pa] (seed 002, eq. 2.5)."""
+    return 2.0 * e1 * e2 / (e1 + e2)
+
+
+def hertz_line_stress(force, width, curvature_sum, modulus):
+    """Hertz contact stress of two cylinders in line contact [Pa].
+
+    Parameters
+    ----------
+    force : ndarray
+        Contact force [N].
+    width : float
+        Contact (cam) width b [m].
+    curvature_sum : ndarray
+        1/rho_1 + 1/rho_2 [1/m] (1/rho_2 = 0 for a flat follower; a concave cam radius is negative).
+    modulus : float
+        Effective modulus E_m [Pa] (equal materials: E).
+
+    Notes
+    -----
+    .. math:: \\sigma = 0.418\\sqrt{\\frac{F E_m}{b}\\left(\\frac1{\\rho_1} + \\frac1{\\rho_2}\\right)}
+
+    0.418 = sqrt(1 / (2 pi (1 - mu^2))) with Poisson's ratio 0.3.
+
+    References
+    ----------
+    seed 002, eqs. (2.4)-(2.5), (2.11); seed 000, eqs. (7.4)-(7.5).
+    """
+    return 0.418 * np.sqrt(np.clip(force, 0.0, None) * modulus * np.clip(curvature_sum, 0.0, None) / width)
+
+
+def tappet_side_pressure(force, offset, tappet_diameter, guide_length):
+    """Side pressure of a flat tappet in its guide, q = 6 P b / (d l^2) [Pa] (seed 000, eqs. 7.6-7.7).
+
+    ``offset`` b is the largest distance of the contact point from the tappet axis,
+    max dh/dtheta for a flat tappet (= omega_T max / omega_cam).
+    """
+    return 6.0 * force * offset / (tappet_diameter * guide_length**2)
+
+
+def second_moment(diameter, bore=0.0):
+    """Second moment of area of a solid or tubular round section, pi (D^4 - d^4)/64 [m^4] (eqs. 7.9-7.10)."""
+    return np.pi * (diameter**4 - bore**4) / 64.0
+
+
+def euler_load(modulus, second_moment_area, length):
+    """Euler critical load of a pin-ended strut, pi^2 E J / l^2 [N] (seed 000, eq. 7.8).
+
+    >>> round(euler_load(2.1e11, second_moment(0.008), 0.25) / 1e3, 2)  # 8 mm steel rod, 250 mm
+    6.67
+    """
+    return np.pi**2 * modulus * second_moment_area / length**2
+
+
+def sphere_socket_stress(force, modulus, ball_radius, socket_radius):
+    """Contact stress of a ball in a concave socket, 0.388 (P E^2 (1/r1 - 1/r2)^2)^(1/3) [Pa] (seed 000, 7.11/7.14)."""
+    return 0.388 * np.cbrt(force * modulus**2 * (1.0 / ball_radius - 1.0 / socket_radius) ** 2)
+
+
+def rocker_pad_stress(force, modulus, width, radius):
+    """Contact stress of the rocker pad on the valve stem, 0.418 sqrt(P E / (b r)) [Pa] (seed 000, eq. 7.13)."""
+    return 0.418 * np.sqrt(force * modulus / (width * radius))
+
+
+def section_modulus(diameter, bore=0.0):
+    """Bending section modulus of a tube, W = pi (D^4 - d^4)/(32 D) [m^3] (seed 000, eq. 7.16)."""
+    return np.pi * (diameter**4 - bore**4) / (32.0 * diameter)
+
+
+def rocker_shaft_stresses(force, span, rocker_width, diameter, bore=0.0):
+    """Stresses of the rocker shaft under the rocker load [Pa].
+
+    Returns
+    -------
+    dict
+        ``bending`` P (l - b)/(8 W) (7.15, built-in beam, reading [A]); ``bending_simply_supported``
+        P (2l - b)/(8 W), the alternative reading; ``shear`` P / (2 f) (7.17) with f the
+        cross-section area; ``bearing`` P / (b D) (7.18).
+
+    Notes
+    -----
+    The manual loads the shaft with P_T max; the physical reaction is the vector sum of
+    the pushrod and valve forces (E25), which the design notes but does not change.
+    """
+    w = section_modulus(diameter, bore)
+    area = np.pi * (diameter**2 - bore**2) / 4.0
+    return {"bending": force * (span - rocker_width) / (8.0 * w),
+            "bending_simply_supported": force * (2.0 * span - rocker_width) / (8.0 * w),
+            "shear": force / (2.0 * area), "bearing": force / (rocker_width * diameter)}
