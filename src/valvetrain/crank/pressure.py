@@ -1,0 +1,238 @@
+"""Cylinder pressure over the cycle: indicator-diagram files (p-phi or p-V), a Wiebe cycle model,
+interpolation onto the calculation grid and the indicated work.
+
+Cycle angle convention (seed 001): a four-stroke cycle runs 0...720 deg crank with
+phi = 0 the TDC that starts the intake stroke and the firing TDC at 360 deg; a two-stroke
+cycle runs 0...360 deg with the firing TDC at 0 (= 360).  Pressures are absolute [Pa].
+"""
+
+import csv
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+from scipy.integrate import solve_ivp
+
+from .kinematics import brix_displacement, displacement
+
+
+class PressureFileError(ValueError):
+    """An indicator-diagram file that cannot be used; the message names the file and the line."""
+
+
+def cycle_length(strokes):
+    """Length of the cycle in crank angle [rad]: 4 pi for a four-stroke, 2 pi for a two-stroke (C = 180 tau)."""
+    return np.pi * strokes
+
+
+def cylinder_volume(phi, bore, radius, lam, compression_ratio, k=0.0, exact=True):
+    """Cylinder volume V = V_c + F_p s(phi) with V_c = V_h / (epsilon - 1) [m^3]."""
+    area = np.pi * bore**2 / 4.0
+    clearance = area * 2.0 * radius / (compression_ratio - 1.0)
+    return clearance + area * displacement(phi, radius, lam, k, exact)
+
+
+@dataclass(frozen=True)
+class IndicatorTable:
+    """A read indicator diagram: either ``angle`` [rad] or ``volume`` [m^3] against ``pressure`` [Pa]."""
+
+    kind: str                  # "angle" or "volume"
+    x: np.ndarray
+    pressure: np.ndarray
+    source: str
+
+
+_HEADERS = {("crank_deg", "pressure_MPa"): "angle", ("volume_cm3", "pressure_MPa"): "volume"}
+
+
+def read_indicator(path, strokes):
+    """Read an indicator diagram from a CSV file.
+
+    The header is ``crank_deg,pressure_MPa`` (absolute pressure against the cycle angle,
+    0...720 for a four-stroke with the firing TDC at 360; rows increasing, not
+    necessarily evenly spaced) or ``volume_cm3,pressure_MPa`` (a p-V diagram, rows in the
+    order of the cycle from its first TDC, one monotone branch of volume per stroke).
+    Lines starting with ``#`` are comments.
+
+    Raises
+    ------
+    PressureFileError
+        With the file name and line number of the first problem.
+    """
+    path = Path(path)
+    where = str(path)
+    try:
+        text = path.read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError) as exc:
+        raise PressureFileError(f"{where}: cannot read the file: {exc}") from None
+    rows = [(n, r) for n, r in enumerate(csv.reader(text.splitlines()), start=1)
+            if r and not r[0].lstrip().startswith("#")]
+    if not rows:
+        raise PressureFileError(f"{where}: the file is empty")
+    n0, header = rows[0]
+    key = tuple(h.strip() for h in header)
+    if key not in _HEADERS:
+        raise PressureFileError(f"{where}:{n0}: header {','.join(key)!r}: allowed 'crank_deg,pressure_MPa' or "
+                                "'volume_cm3,pressure_MPa'")
+    kind = _HEADERS[key]
+    xs, ps = [], []
+    for n, r in rows[1:]:
+        if len(r) != 2:
+            raise PressureFileError(f"{where}:{n}: expected 2 values, found {len(r)}")
+        try:
+            x, p = float(r[0]), float(r[1])
+        except ValueError:
+            raise PressureFileError(f"{where}:{n}: {','.join(r)!r} is not two numbers") from None
+        if not (np.isfinite(x) and np.isfinite(p)):
+            raise PressureFileError(f"{where}:{n}: values must be finite")
+        if p <= 0.0:
+            raise PressureFileError(f"{where}:{n}: pressure_MPa = {p:g}: an absolute pressure must be > 0")
+        if kind == "angle":
+            if not 0.0 <= x <= 180.0 * strokes:
+                raise PressureFileError(f"{where}:{n}: crank_deg = {x:g}: allowed [0, {180 * strokes}] for a "
+                                        f"{strokes}-stroke cycle")
+            if xs and x <= xs[-1]:
+                raise PressureFileError(f"{where}:{n}: crank_deg = {x:g} must be larger than the previous "
+                                        f"{xs[-1]:g}")
+        elif x <= 0.0:
+            raise PressureFileError(f"{where}:{n}: volume_cm3 = {x:g} must be > 0")
+        xs.append(x)
+        ps.append(p)
+    if len(xs) < 4:
+        raise PressureFileError(f"{where}: at least 4 data rows are needed, found {len(xs)}")
+    x = np.radians(xs) if kind == "angle" else np.array(xs) * 1e-6
+    return IndicatorTable(kind, np.asarray(x), np.array(ps) * 1e6, where)
+
+
+def on_grid(angle, pressure, grid, strokes):
+    """Periodic linear interpolation of p(phi) onto the calculation grid [Pa]."""
+    return np.interp(np.asarray(grid), angle, pressure, period=cycle_length(strokes))
+
+
+def pv_to_angle(volume, pressure, bore, radius, lam, compression_ratio, strokes, k=0.0, method="exact",
+                source="p-V table"):
+    """Convert a p-V diagram to p(phi) through the piston kinematics.
+
+    The rows follow the cycle from its first TDC; the volume rises and falls once per
+    stroke, so the table splits into ``strokes`` monotone branches, the n-th belonging to
+    the crank angles [n pi, (n + 1) pi].  Each volume is mapped to the crank angle of its
+    branch where the cylinder has that volume: exactly (``method="exact"``), which
+    replaces Brix's graphical construction, or with Brix's construction itself
+    (``method="brix"``, seed 001 eq. 2.1).
+
+    Returns
+    -------
+    (ndarray, ndarray)
+        Crank angles [rad] (increasing) and pressures [Pa].
+
+    Raises
+    ------
+    PressureFileError
+        When the volumes do not form one monotone branch per stroke, or leave the range of
+        the cylinder volume.
+    """
+    volume = np.asarray(volume, dtype=float)
+    dv = np.sign(np.diff(volume))
+    dv[dv == 0] = 1.0
+    turns = np.flatnonzero(dv[1:] != dv[:-1]) + 1
+    branches = np.split(np.arange(volume.size), turns)
+    if len(branches) != strokes:
+        raise PressureFileError(f"{source}: the volume changes direction {len(turns)} times; a {strokes}-stroke "
+                                f"cycle needs {strokes} monotone branches (rows in cycle order from TDC)")
+    phi_fine = np.linspace(0.0, np.pi, 4001)
+    out_phi, out_p = [], []
+    area = np.pi * bore**2 / 4.0
+    clearance = area * 2.0 * radius / (compression_ratio - 1.0)
+    for n, rows in enumerate(branches):
+        ph = n * np.pi + phi_fine
+        s = brix_displacement(ph, radius, lam) if method == "brix" else displacement(ph, radius, lam, k)
+        v = clearance + area * s
+        order = np.argsort(v)
+        lo, hi = v.min(), v.max()
+        bad = (volume[rows] < lo * (1 - 1e-3)) | (volume[rows] > hi * (1 + 1e-3))
+        if bad.any():
+            i = rows[np.flatnonzero(bad)[0]]
+            raise PressureFileError(f"{source}: row {i + 1}: volume {volume[i] * 1e6:g} cm3 is outside the cylinder "
+                                    f"volume {lo * 1e6:.4g}...{hi * 1e6:.4g} cm3 of stroke {n + 1}")
+        out_phi.append(np.interp(volume[rows], v[order], ph[order]))
+        out_p.append(pressure[rows])
+    phi, p = np.concatenate(out_phi), np.concatenate(out_p)
+    keep = np.concatenate([[True], np.diff(phi) > 0])
+    return phi[keep], p[keep]
+
+
+@dataclass(frozen=True)
+class WiebeCycle:
+    """Parameters of the single-zone Wiebe cycle model (SI; angles relative to the firing TDC, rad).
+
+    The built-in example's indicator diagram: gas exchange at constant pressures (intake
+    at ``intake_pressure``, exhaust at ``exhaust_pressure``; the valves are taken to open
+    and close at the dead centres), a closed cycle from BDC to BDC with a constant ratio of
+    specific heats, no wall heat loss and a Wiebe heat release
+    :math:`x = 1 - \\exp(-a\\,((\\varphi-\\varphi_s)/\\Delta\\varphi)^{m+1})`.
+    (I. I. Wiebe, Brennverlauf und Kreisprozess von Verbrennungsmotoren, 1970; the
+    standard single-zone model, not in the seeds.)
+    """
+
+    compression_ratio: float
+    heat_input: float            # Q per cycle [J]
+    intake_pressure: float = 0.09e6
+    exhaust_pressure: float = 0.11e6
+    start: float = np.radians(-15.0)
+    duration: float = np.radians(60.0)
+    a: float = 6.908
+    m: float = 2.0
+    gamma: float = 1.33
+
+
+def wiebe_pressure(phi, cycle, bore, radius, lam, strokes, k=0.0):
+    """Cylinder pressure of the Wiebe cycle model at cycle angles ``phi`` [Pa].
+
+    Notes
+    -----
+    Over the closed cycle (from BDC before the firing TDC to BDC after it)
+
+    .. math:: \\frac{dp}{d\\varphi} = \\frac{\\gamma - 1}{V}\\,Q\\frac{dx}{d\\varphi}
+              - \\gamma\\frac{p}{V}\\frac{dV}{d\\varphi},
+
+    integrated with :func:`scipy.integrate.solve_ivp` from the intake pressure at BDC.
+    """
+    phi = np.asarray(phi, dtype=float)
+    firing = np.pi * (strokes - 2)          # 2 pi for a four-stroke, 0 (= 2 pi) for a two-stroke
+    area = np.pi * bore**2 / 4.0
+    vc = area * 2.0 * radius / (cycle.compression_ratio - 1.0)
+
+    def volume(t):
+        return vc + area * displacement(t, radius, lam, k)
+
+    def dvolume(t, h=1e-6):
+        return (volume(t + h) - volume(t - h)) / (2 * h)
+
+    def burn_rate(t):
+        z = (t - firing - cycle.start) / cycle.duration
+        if z <= 0.0:
+            return 0.0
+        return cycle.a * (cycle.m + 1) / cycle.duration * z**cycle.m * np.exp(-cycle.a * z ** (cycle.m + 1))
+
+    def rhs(t, p):
+        v = volume(t)
+        return [(cycle.gamma - 1.0) / v * cycle.heat_input * burn_rate(t) - cycle.gamma * p[0] / v * dvolume(t)]
+
+    t0, t1 = firing - np.pi, firing + np.pi
+    sol = solve_ivp(rhs, (t0, t1), [cycle.intake_pressure], method="LSODA", dense_output=True, rtol=1e-9, atol=1.0,
+                    max_step=np.radians(0.5))
+    length = cycle_length(strokes)
+    rel = np.mod(phi - t0, length)                  # angle since the start of the closed cycle
+    p = np.where(rel <= 2 * np.pi, sol.sol(t0 + np.clip(rel, 0.0, 2 * np.pi))[0], cycle.intake_pressure)
+    if strokes == 4:
+        cyc = np.mod(phi, length)
+        p = np.where((cyc > 3 * np.pi) & (cyc < 4 * np.pi), cycle.exhaust_pressure, p)
+        p = np.where(cyc < np.pi, cycle.intake_pressure, p)
+    return p
+
+
+def indicated_work(phi, pressure, volume):
+    """Indicated work of one cycle, W_i = closed integral of p dV [J] (trapezoidal rule over the closed cycle)."""
+    v = np.append(volume, volume[0])
+    p = np.append(pressure, pressure[0])
+    return float(np.sum(0.5 * (p[1:] + p[:-1]) * np.diff(v)))

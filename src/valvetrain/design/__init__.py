@@ -1,0 +1,79 @@
+"""Orchestration: ``run(spec) -> DesignResults``, the chain of stages of a design.
+
+This package is the one place where the specification's engineering units (mm, deg,
+rpm) are converted to SI for the physics functions.  Stages:
+
+* per valve (:mod:`.valve`, :mod:`.drive`): flow sections and conditional velocities
+  (seed 000 work 1), the lift law (works 2-3), time-area and fullness (work 4, seed 002),
+  the cam contour (seed 002 section 2.1), masses and springs (works 5-6), strength (work 7);
+* the crank mechanism (:mod:`.crank`): kinematics, forces and torque, multi-cylinder torque (seed 001);
+* two-stroke ports (:mod:`.twostroke`): timing, areas, time-area (seed 000 work 8);
+* recommended-range checks of every stage (warnings, never exceptions).
+"""
+
+from dataclasses import dataclass
+
+from .. import flow
+from ..checks import check_range
+from ..units import MM
+from .valve import THROAT_AREA_SHARE_RANGE, ValveDesign, build_law, design_valve, nose_crank_angle
+
+__all__ = ["DesignResults", "ValveDesign", "build_law", "nose_crank_angle", "run"]
+
+
+@dataclass
+class DesignResults:
+    """Result of :func:`run`: the engine's derived figures, each valve's design, all warnings."""
+
+    spec: object
+    engine: dict
+    valves: dict
+    warnings: list
+
+    def to_dict(self):
+        """JSON-ready dictionary (engineering units, named in the keys)."""
+        from .. import __version__
+
+        return {
+            "valvetrain_version": __version__,
+            "engine": self.engine,
+            "valves": {name: v.summary for name, v in self.valves.items()},
+            "warnings": [w.as_dict() for w in self.warnings],
+        }
+
+
+
+
+def run(spec):
+    """Run the whole design of a validated specification.
+
+    Parameters
+    ----------
+    spec : valvetrain.spec.Spec
+
+    Returns
+    -------
+    DesignResults
+    """
+    eng = spec.engine
+    bore, stroke = eng.bore_mm * MM, eng.stroke_mm * MM
+    valves = {name: design_valve(name, v, spec) for name, v in spec.valves.items()}
+    found = [f for v in valves.values() for f in v.warnings]
+    kinds = {v.kind for v in spec.valves.values()}
+    if kinds == {"intake", "exhaust"}:
+        share = sum(v.count * float(flow.circle_area(v.throat_diameter_mm * MM)) for v in spec.valves.values())
+        found += check_range("sum of throat areas / piston area", share / float(flow.circle_area(bore)),
+                             *THROAT_AREA_SHARE_RANGE, source="seed 000, work 1")
+    engine = {
+        "name": eng.name,
+        "bore_mm": eng.bore_mm,
+        "stroke_mm": eng.stroke_mm,
+        "rated_speed_rpm": eng.rated_speed_rpm,
+        "cylinders": eng.cylinders,
+        "strokes": eng.strokes,
+        "mean_piston_speed_m_s": flow.mean_piston_speed(stroke, eng.rated_speed_rpm),
+        "swept_volume_cm3": float(flow.swept_volume(bore, stroke)) * 1e6,
+        "displacement_cm3": float(flow.swept_volume(bore, stroke)) * 1e6 * eng.cylinders,
+        "piston_area_mm2": float(flow.circle_area(bore)) / MM**2,
+    }
+    return DesignResults(spec, engine, valves, found)

@@ -1,0 +1,272 @@
+"""Drive stages of a valve design: reduced masses, spring characteristic and design, strength of the
+drive parts (seed 000, works 5-7)."""
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .. import flow, geometry, masses, springs, strength
+from ..checks import check_range
+from ..units import MM, MPA, rad_to_deg
+
+@dataclass
+class DriveResults:
+    """Springs and strength of one valve: the JSON records and the curves for the report (SI)."""
+
+    masses: dict
+    spring: dict
+    strength: dict
+    warnings: list
+    lift: np.ndarray               # valve lift along the open event [m]
+    inertia_force: np.ndarray      # m_v |j_v| where j_v < 0 [N]
+    required_force: np.ndarray     # K_z m_v |j_v| [N]
+    lines: dict                    # name -> springs.Characteristic (required, chosen, outer, inner)
+
+
+
+
+def _reduced_mass(v, throat_area, spring_mass_kg):
+    """Reduced mass at the valve [kg] and a description of how it was obtained."""
+    d = v.drive
+    if d.masses is not None:
+        m = d.masses
+        spring = m.spring_kg if m.spring_kg is not None else spring_mass_kg
+        arm = (d.valve_arm_mm or 1.0) * MM
+        value = masses.reduced_mass_at_valve(m.valve_kg, m.retainer_kg, m.cotters_kg, spring, m.pushrod_kg,
+                                             m.tappet_kg, m.rocker_inertia_kg_mm2 * MM**2, arm, v.rocker_ratio)
+        source = "part masses, seed 000 eq. (5.2)" + ("" if m.spring_kg is not None else "; spring mass of the design")
+        return value, source
+    specific = d.specific_mass_kg_m2 or masses.SPECIFIC_MASS_DEFAULT[v.layout]
+    given = "given" if d.specific_mass_kg_m2 else f"default for a {v.layout} drive"
+    return masses.mass_from_specific(specific, throat_area), f"specific mass {specific:g} kg/m2 ({given}), seed 000 work 5"
+
+
+def _material(sp):
+    return springs.SpringMaterial(
+        shear_modulus=sp.shear_modulus_MPa * MPA, density=sp.density_kg_m3, allowable_stress=sp.allowable_stress_MPa * MPA,
+        endurance_limit=sp.endurance_limit_MPa * MPA, mean_stress_factor=sp.mean_stress_factor,
+        min_safety=sp.min_safety_factor, min_resonance_ratio=sp.min_resonance_ratio, gap_factor=sp.coil_gap_factor)
+
+
+def _spring_record(s):
+    """results.json record of one designed spring (engineering units)."""
+    c = s.characteristic
+    return {
+        "preload_N": c.preload, "max_force_N": c.max_force, "rate_N_per_mm": c.rate * MM,
+        "wire_mm": s.wire_diameter / MM, "mean_diameter_mm": s.mean_diameter / MM,
+        "outer_diameter_mm": (s.mean_diameter + s.wire_diameter) / MM, "active_coils": s.coils,
+        "total_coils": s.coils + 2.0, "free_length_mm": s.lengths["free_length"] / MM,
+        "installed_length_mm": s.lengths["installed_length"] / MM, "min_length_mm": s.lengths["min_length"] / MM,
+        "min_pitch_mm": s.lengths["min_pitch"] / MM, "installed_pitch_mm": s.lengths["installed_pitch"] / MM,
+        "free_pitch_mm": s.lengths["free_pitch"] / MM, "preload_deflection_mm": c.preload_deflection / MM,
+        "max_deflection_mm": c.max_deflection / MM, "spring_index": s.mean_diameter / s.wire_diameter,
+        "shape_factor": s.shape_factor, "wahl_factor": s.wahl, "tau_max_MPa": s.tau_max / MPA,
+        "tau_min_MPa": s.tau_min / MPA, "safety_factor": s.safety, "natural_frequency_Hz": s.natural_frequency / (2 * np.pi),
+        "resonance_ratio": s.resonance_ratio, "mass_kg": s.mass,
+        "guide_sleeve_needed": bool(s.lengths["free_length"] / s.mean_diameter > 2.5),
+        "passes_all_checks": s.passes, "binding_check": s.binding_check,
+        "margins": s.margins,
+    }
+
+
+def _spring_findings(tag, s, sp):
+    c = s.checks
+    return (check_range(f"{tag} tau_max", s.tau_max / MPA, high=sp.allowable_stress_MPa,
+                        source="seed 000, eq. (6.1): [tau] = 350-600 MPa", unit="MPa")
+            + check_range(f"{tag} fatigue safety factor", s.safety, low=sp.min_safety_factor,
+                          source=f"seed 000, eq. (6.12) with psi_tau = {sp.mean_stress_factor:g}: n >= 1.2-1.4")
+            + check_range(f"{tag} resonance ratio omega_c1/omega_cam", s.resonance_ratio, low=sp.min_resonance_ratio,
+                          source="seed 000, eq. (6.14): >= 10 (hard to meet at high speed, E27)")
+            + check_range(f"{tag} working coils", c["working_coils"][0], low=2.0, source="seed 000, eq. (6.2)"))
+
+
+def drive_stage(v, spec, law, omega, heel, roller):
+    """Stages 6 and 7: reduced masses, spring characteristic and design, strength of the drive parts."""
+    i_k = v.rocker_ratio
+    d_g = v.throat_diameter_mm * MM
+    f_g = float(flow.circle_area(d_g))
+    gas = spec.gas
+    found = []
+
+    theta = np.unique(np.concatenate([np.linspace(law.valve_opens, law.valve_closes, 2001), law.breakpoints]))
+    theta = theta[(theta >= law.valve_opens) & (theta <= law.valve_closes)]
+    h, dh, d2h, _ = law.derivatives(theta)
+    y = law.valve_lift(theta, i_k)
+    a_v = i_k * omega**2 * d2h
+    lift = law.lift_max * i_k
+
+    if v.kind == "exhaust":
+        p_gas = springs.gas_opening_force(d_g, gas.exhaust_back_pressure_MPa * MPA, gas.cylinder_intake_pressure_MPa * MPA)
+        gas_source = "seed 000, eq. (5.4)"
+    else:
+        p_gas = springs.gas_opening_force(d_g, gas.intake_port_pressure_MPa * MPA, gas.cylinder_exhaust_pressure_MPa * MPA)
+        gas_source = "seed 000, eq. (5.5)"
+
+    sp = v.spring
+    material = _material(sp)
+    spring_total_mass = 0.0
+    for _ in range(20):
+        m_v, mass_source = _reduced_mass(v, f_g, spring_total_mass)
+        required = springs.required_spring_force(m_v, a_v, v.drive.spring_reserve)
+        preload, rate = springs.enveloping_line(y, required, sp.deflection_ratio_range, p_gas)
+        raised = preload <= p_gas * (1.0 + 1e-9) and p_gas > 0.0
+        line = springs.Characteristic(preload, rate, lift)
+        lines = {"required": line}
+        if sp.count == 1:
+            chosen, n_pass = springs.design_spring(line, d_g, material, omega, sp.mean_diameter_ratio)
+            designs = {"spring": chosen}
+        else:
+            outer_line, inner_line = line.split(sp.inner_share)
+            outer, n_pass = springs.design_spring(outer_line, d_g, material, omega, sp.mean_diameter_ratio)
+            room = outer.mean_diameter - outer.wire_diameter - 2.0 * sp.radial_gap_mm * MM
+
+            def differs(s, outer=outer):
+                diff = abs(s.natural_frequency - outer.natural_frequency) / outer.natural_frequency
+                return {"frequency_difference": (diff, max(sp.min_frequency_difference, 1e-12), "min")}
+
+            inner, n_in = springs.design_spring(inner_line, d_g, material, omega, (0.3, sp.mean_diameter_ratio[1]),
+                                                max_outer=room, extra_check=differs,
+                                                installed_length=outer.lengths["installed_length"])
+            n_pass = min(n_pass, n_in)
+            designs = {"outer": outer, "inner": inner}
+            lines.update(outer=outer.characteristic, inner=inner.characteristic)
+        new_mass = sum(d.mass for d in designs.values())
+        if v.drive.masses is None or v.drive.masses.spring_kg is not None or abs(new_mass - spring_total_mass) < 1e-7:
+            break
+        spring_total_mass = new_mass
+    m_t = masses.reduced_mass_at_tappet(m_v, i_k)
+
+    chosen_line = springs.Characteristic(sum(d.characteristic.preload for d in designs.values()),
+                                         sum(d.characteristic.rate for d in designs.values()), lift)
+    lines["chosen"] = chosen_line
+    ratio = chosen_line.max_deflection / chosen_line.preload_deflection
+    found += check_range("spring reserve K_z", v.drive.spring_reserve, *springs.SPRING_RESERVE_RANGE,
+                         source="seed 000, eq. (5.3)")
+    found += check_range("spring f_max/f_min", ratio, *springs.DEFLECTION_RATIO_RANGE, source="seed 000, work 5 "
+                         "(the chosen springs' rounded coils can move it off the required line's ratio)")
+    if sp.count == 2:
+        found += check_range("inner spring share", sp.inner_share, *springs.INNER_SHARE_RANGE, source="seed 000, work 5")
+    for tag, d in designs.items():
+        found += _spring_findings(tag if tag != "spring" else "spring", d, sp)
+    if sp.count == 2:
+        diff = designs["inner"].checks["frequency_difference"][0]
+        found += check_range("inner/outer spring frequency difference", diff, low=sp.min_frequency_difference,
+                             source="seed 000, eq. (6.14): the two ratios must differ (10 % assumed)")
+
+    spring_rec = {
+        "count": sp.count, "material": sp.material,
+        "preload_N": chosen_line.preload, "max_force_N": chosen_line.max_force, "rate_N_per_mm": chosen_line.rate * MM,
+        "required_preload_N": preload, "required_rate_N_per_mm": rate * MM, "required_max_force_N": line.max_force,
+        "required_deflection_ratio": line.max_deflection / line.preload_deflection,
+        "preload_set_by_gas_force": bool(raised), "gas_force_N": p_gas, "gas_force_source": gas_source,
+        "deflection_ratio": ratio, "spring_reserve": v.drive.spring_reserve, "candidates_passing": n_pass,
+    }
+    if sp.count == 1:
+        spring_rec.update(_spring_record(designs["spring"]))
+    else:
+        spring_rec.update({k: val for k, val in _spring_record(designs["outer"]).items()
+                           if k not in ("preload_N", "max_force_N", "rate_N_per_mm")})
+        spring_rec["outer"] = _spring_record(designs["outer"])
+        spring_rec["inner"] = _spring_record(designs["inner"])
+        spring_rec["inner_share"] = sp.inner_share
+
+    mass_rec = {"at_valve_kg": m_v, "at_tappet_kg": m_t, "source": mass_source, "layout": v.layout}
+
+    strength_rec, strength_found = _strength(v, law, omega, heel, roller, theta, y, dh, d2h, a_v, m_v, chosen_line,
+                                             gas)
+    found += strength_found
+    inertia = m_v * np.clip(-a_v, 0.0, None)
+    return DriveResults(mass_rec, spring_rec, strength_rec, found, y, inertia, required, lines)
+
+
+_STRESS = (1.0 / MPA, "MPa")
+_UNITS = {"camshaft_deflection": (1.0 / MM, "mm"), "cam_contact_stress": _STRESS, "tappet_side_pressure": _STRESS,
+          "pushrod_buckling_margin": (1.0, ""), "ball_socket_stress": _STRESS, "pushrod_head_pressure": _STRESS,
+          "rocker_pad_stress": _STRESS, "rocker_shaft_bending": _STRESS, "rocker_shaft_shear": _STRESS,
+          "rocker_shaft_bearing": _STRESS}
+
+
+def _strength(v, law, omega, heel, roller, theta, y, dh, d2h, a_v, m_v, line, gas):
+    """Work 7: the cam load along the open event and every check the layout and the given dimensions allow."""
+    i_k = v.rocker_ratio
+    parts = v.parts
+    spring_force = line.force(y)
+    cam = strength.cam_force(spring_force, m_v * a_v, i_k)
+    p_open = 0.0
+    if v.kind == "exhaust" and parts.head_diameter_mm is not None:
+        p_open = float(flow.circle_area(parts.head_diameter_mm * MM)) * max(
+            (gas.exhaust_opening_pressure_MPa - gas.exhaust_back_pressure_MPa) * MPA, 0.0)
+    cam[0] += i_k * p_open
+    k = int(np.argmax(cam))
+    p_max = float(cam[k])
+    rec = {"cam_force_max_N": p_max, "cam_force_max_cam_deg": rad_to_deg(theta[k]),
+           "valve_force_max_N": p_max / i_k, "gas_force_at_opening_N": p_open}
+    verdicts = []
+    notes = []
+
+    def need(keys, check):
+        missing = [key for key in keys if getattr(parts, key) is None]
+        if missing:
+            notes.append(f"{check}: not checked, parts.{', parts.'.join(missing)} not given")
+        return not missing
+
+    e_contact = parts.contact_modulus_MPa * MPA
+    if need(["camshaft_diameter_mm", "camshaft_span_mm", "cam_to_bearing_mm"], "camshaft_deflection"):
+        l1 = parts.cam_to_bearing_mm * MM
+        f = strength.camshaft_deflection(p_max, l1, parts.camshaft_span_mm * MM - l1, parts.camshaft_diameter_mm * MM,
+                                         parts.camshaft_bore_mm * MM, parts.camshaft_modulus_MPa * MPA,
+                                         parts.camshaft_deflection_coefficient)
+        verdicts.append(strength.verdict("camshaft_deflection", f,
+                                         f"coefficient {parts.camshaft_deflection_coefficient:.4g} (E20: not 0.8)"))
+    if need(["cam_width_mm"], "cam_contact_stress"):
+        if v.cam.follower == "flat":
+            rho = geometry.flat_follower_curvature(heel, law.lift(theta), d2h)
+            curv = np.where(rho > 0, 1.0 / rho, np.inf)
+        else:
+            rho = geometry.roller_follower_curvature(heel, roller, law.lift(theta), dh, d2h)
+            curv = 1.0 / rho + 1.0 / roller
+        sigma = strength.hertz_line_stress(cam, parts.cam_width_mm * MM, curv, e_contact)
+        j = int(np.argmax(sigma))
+        rec["cam_contact_stress_cam_deg"] = rad_to_deg(theta[j])
+        verdicts.append(strength.verdict("cam_contact_stress", sigma[j], "along the profile with the instantaneous "
+                                         "force and radius (seed 002, eq. 2.5)"))
+    if v.layout in ("direct", "pushrod") and v.cam.follower == "flat" and \
+            need(["tappet_diameter_mm", "tappet_guide_length_mm"], "tappet_side_pressure"):
+        b = float(np.max(np.abs(dh)))
+        q = strength.tappet_side_pressure(p_max, b, parts.tappet_diameter_mm * MM, parts.tappet_guide_length_mm * MM)
+        verdicts.append(strength.verdict("tappet_side_pressure", q, f"offset b = {b / MM:.4g} mm = max dh/dphi (7.7)"))
+    if v.layout == "pushrod":
+        if need(["pushrod_length_mm", "pushrod_diameter_mm"], "pushrod_buckling_margin"):
+            inertia = strength.second_moment(parts.pushrod_diameter_mm * MM, parts.pushrod_bore_mm * MM)
+            p_cr = strength.euler_load(parts.pushrod_modulus_MPa * MPA, inertia, parts.pushrod_length_mm * MM)
+            verdicts.append(strength.verdict("pushrod_buckling_margin", p_cr / p_max,
+                                             f"Euler load {p_cr:.5g} N; E = {parts.pushrod_modulus_MPa:g} MPa (E21)"))
+        if need(["ball_radius_mm", "socket_radius_mm"], "ball_socket_stress"):
+            verdicts.append(strength.verdict("ball_socket_stress", strength.sphere_socket_stress(
+                p_max, e_contact, parts.ball_radius_mm * MM, parts.socket_radius_mm * MM)))
+        if need(["pushrod_head_area_mm2"], "pushrod_head_pressure"):
+            verdicts.append(strength.verdict("pushrod_head_pressure", p_max / (parts.pushrod_head_area_mm2 * MM**2)))
+    if v.layout in ("rocker", "pushrod"):
+        if need(["rocker_pad_width_mm", "rocker_pad_radius_mm"], "rocker_pad_stress"):
+            verdicts.append(strength.verdict("rocker_pad_stress", strength.rocker_pad_stress(
+                p_max / i_k, e_contact, parts.rocker_pad_width_mm * MM, parts.rocker_pad_radius_mm * MM)))
+        if need(["rocker_shaft_span_mm", "rocker_shaft_diameter_mm", "rocker_width_mm"], "rocker_shaft"):
+            st = strength.rocker_shaft_stresses(p_max, parts.rocker_shaft_span_mm * MM, parts.rocker_width_mm * MM,
+                                                parts.rocker_shaft_diameter_mm * MM, parts.rocker_shaft_bore_mm * MM)
+            verdicts.append(strength.verdict("rocker_shaft_bending", st["bending"],
+                                             f"built-in beam (7.15, reading [A]); simply supported: "
+                                             f"{st['bending_simply_supported'] / MPA:.4g} MPa; load P_T max (E25)"))
+            verdicts.append(strength.verdict("rocker_shaft_shear", st["shear"]))
+            verdicts.append(strength.verdict("rocker_shaft_bearing", st["bearing"]))
+    checks = {}
+    found = []
+    for vd in verdicts:
+        scale, unit = _UNITS[vd.check]
+        checks[vd.check] = vd.as_dict(scale, unit)
+        if not vd.passed:
+            found += check_range(vd.check.replace("_", " "), vd.value * scale,
+                                 high=vd.limit * scale if vd.kind == "max" else None,
+                                 low=vd.limit * scale if vd.kind == "min" else None, source=vd.source, unit=unit)
+    rec["checks"] = checks
+    rec["not_checked"] = notes
+    return rec, found

@@ -1,0 +1,327 @@
+"""Valve stages of the design: flow sections, the lift law and its extremes, time-area and fullness,
+the cam contour and curvature, and the recommended-range checks (seed 000 works 1-4, seed 002 section 2.1).
+
+Crank angles in the results are measured from the gas-exchange TDC (the TDC that
+starts the intake stroke) in (-360, 360]; camshaft angles from the cam nose.
+"""
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from .. import flow, geometry
+from ..checks import Finding, check_range
+from ..crank.kinematics import displacement
+from ..laws import KurzLaw, PolydyneLaw
+from ..numerics import extremum
+from ..spec import KurzCam, kurz_phi3_deg, main_half_angle_deg
+from ..units import DEG, MM, rad_to_deg, rpm_to_rad_s
+from .drive import drive_stage
+
+ACCELERATION_LIMITS = (3500.0, -1500.0)
+"""Upper ends of the recommended bands of positive (1500-3500) and negative (500-1500) tappet
+acceleration [m/s^2] (seed 000, work 2)."""
+
+TIMING_RANGES = {"intake": ((20.0, 30.0), (40.0, 60.0))}
+"""Recommended inlet opening advance and closing lag [crank deg] (seed 000, work 2)."""
+
+CLEARANCE_RANGES = {"intake": (0.25, 0.35), "exhaust": (0.35, 0.50)}
+"""Recommended valve clearance h0 [mm] (seed 000, work 2)."""
+
+SEAT_ANGLE_USUAL = {"intake": (30.0, 30.0), "exhaust": (45.0, 45.0)}
+"""Usual seat angles [deg] (seed 000, work 1)."""
+
+ROCKER_RATIO_RANGE = (1.4, 1.75)
+"""Recommended rocker ratio when not 1 (direct drive) (seed 000, work 2)."""
+
+BASE_RADIUS_TO_LIFT_RANGE = (1.5, 4.0)
+"""r0 / valve lift: 1.5-2.0 naturally aspirated, up to 3.0-4.0 supercharged (seed 000, work 2)."""
+
+RHO_MIN_MM = 2.0
+"""Smallest recommended radius of curvature of the cam profile [mm] (seed 002, section 2.1)."""
+
+PRESSURE_ANGLE_MAX_DEG = 30.0
+"""Largest recommended pressure angle of a roller follower [deg] (seed 004, via spec section 2)."""
+
+THROAT_AREA_SHARE_RANGE = (0.25, 0.40)
+"""Inlet plus exhaust throat areas as a share of the piston area (seed 000, work 1)."""
+
+
+@dataclass
+class LiftTable:
+    """Sampled lift diagram of one valve; arrays share one camshaft-angle grid (SI units)."""
+
+    cam_angle: np.ndarray          # rad from the nose
+    crank_angle: np.ndarray        # rad from gas-exchange TDC
+    segment: np.ndarray            # segment names
+    lift: np.ndarray               # tappet lift incl. ramp [m]
+    velocity: np.ndarray           # [m/s]
+    acceleration: np.ndarray       # [m/s^2]
+    jerk: np.ndarray               # [m/s^3]
+    valve_lift: np.ndarray         # [m]
+    curtain_area: np.ndarray       # [m^2]
+    time_area: np.ndarray          # running, from the table start [m^2 s]
+    rho: np.ndarray                # cam profile radius of curvature [m]
+    pressure_angle: np.ndarray     # roller: pressure angle [rad]; flat: zero
+    contact_offset: np.ndarray     # flat: contact point off the follower axis [m]; roller: zero
+
+
+@dataclass
+class ValveDesign:
+    """Everything computed for one valve (SI inside, engineering units in ``summary``)."""
+
+    name: str
+    kind: str
+    law: object
+    omega_cam: float
+    rocker_ratio: float
+    heel_radius: float
+    follower: str
+    roller_radius: float
+    nose_crank: float              # crank angle of the nose [rad from gas-exchange TDC]
+    stroke_window: tuple           # (start, end) camshaft angles of the valve's own stroke [rad]
+    table: LiftTable
+    contour: np.ndarray            # (2, n) [m], cam frame, nose on +y
+    contour_angle: np.ndarray      # camshaft angle of each contour point [rad from the nose]
+    summary: dict
+    warnings: list = field(default_factory=list)
+    drive: object = None           # DriveResults: masses, spring curves, strength
+
+
+
+
+def build_law(valve, strokes=4):
+    """The lift law of a valve specification, in SI (tappet side)."""
+    cam = valve.cam
+    lift = valve.max_lift_mm / valve.rocker_ratio * MM
+    if isinstance(cam, KurzCam):
+        phi3 = kurz_phi3_deg(cam, valve, strokes)
+        return KurzLaw(lift, valve.clearance_mm * MM, cam.ramp_end_velocity_mm_per_deg * MM / DEG,
+                       cam.phi1_deg * DEG, cam.phi2_deg * DEG, phi3 * DEG, cam.shape_factor)
+    ramp_height = valve.clearance_mm * MM if cam.ramp else 0.0
+    ramp_velocity = cam.ramp_end_velocity_mm_per_deg * MM / DEG if cam.ramp else 0.0
+    return PolydyneLaw(lift, main_half_angle_deg(valve, strokes) * DEG, cam.p, cam.q, cam.r, cam.s,
+                       ramp_height=ramp_height, ramp_velocity=ramp_velocity)
+
+
+def nose_crank_angle(valve):
+    """Crank angle of the cam nose from gas-exchange TDC [rad] (four-stroke).
+
+    Intake: the main lift opens ``opens_deg`` before TDC (crank 0) and closes
+    ``closes_deg`` after BDC (crank 180).  Exhaust: opens ``opens_deg`` before BDC
+    (crank -180) and closes ``closes_deg`` after TDC (crank 0).
+    """
+    if valve.kind == "intake":
+        return (180.0 + valve.closes_deg - valve.opens_deg) / 2.0 * DEG
+    return (valve.closes_deg - 180.0 - valve.opens_deg) / 2.0 * DEG
+
+
+def _table_grid(law, step):
+    k = np.arange(np.ceil(law.start / step), np.floor(law.end / step) + 1) * step
+    return np.unique(np.concatenate([[law.start], k, [law.end]]))
+
+
+def _profile(law, theta, heel, follower, roller_radius):
+    """Contour, profile radius of curvature, pressure angle and contact offset at camshaft angles theta.
+
+    Flat follower: pressure angle zero, contact offset h'.  Roller follower: contact
+    offset zero (the contact lies on the roller), pressure angle from the pitch curve.
+    """
+    h, dh, d2h, _ = law.derivatives(theta)
+    if follower == "flat":
+        xy = geometry.flat_follower_contour(theta, heel, h, dh)
+        rho = geometry.flat_follower_curvature(heel, h, d2h)
+        return xy, rho, np.zeros_like(theta), dh
+    xy = geometry.roller_follower_contour(theta, heel, roller_radius, h, dh)
+    rho = geometry.roller_follower_curvature(heel, roller_radius, h, dh, d2h)
+    return xy, rho, geometry.roller_pressure_angle(heel, roller_radius, h, dh), np.zeros_like(theta)
+
+
+def _convex_radius(law, theta, heel, follower, roller_radius):
+    """Profile radius of curvature where the profile is convex, +inf where it is concave.
+
+    A concave stretch (possible with a roller follower) is not an undercut; its radius
+    is reported on its own.
+    """
+    rho = _profile(law, theta, heel, follower, roller_radius)[1]
+    if follower == "flat":
+        return rho
+    return np.where(rho + roller_radius > 0.0, rho, np.inf)
+
+
+def design_valve(name, v, spec):
+    """Stages 1-5 of one valve and its drive (springs, strength); returns a :class:`ValveDesign`."""
+    eng = spec.engine
+    law = build_law(v, eng.strokes)
+    omega = rpm_to_rad_s(eng.rated_speed_rpm) / 2.0
+    cam = v.cam
+    heel = cam.base_radius_mm * MM - law.ramp_height
+    roller = (cam.roller_radius_mm or 0.0) * MM
+    i_k = v.rocker_ratio
+    d_throat, seat = v.throat_diameter_mm * MM, v.seat_angle_deg * DEG
+    bore, stroke = eng.bore_mm * MM, eng.stroke_mm * MM
+    nose = nose_crank_angle(v)
+
+    def valve_lift(theta):
+        return law.valve_lift(theta, i_k)
+
+    def area(theta):
+        return flow.curtain_area(valve_lift(theta), d_throat, seat)
+
+    # 1. flow sections
+    c_p = flow.mean_piston_speed(stroke, eng.rated_speed_rpm)
+    swept = float(flow.swept_volume(bore, stroke))
+    lift_valve = law.lift_max * i_k
+    f_max = float(flow.curtain_area(lift_valve, d_throat, seat))
+    v1 = flow.throat_velocity(c_p, bore, d_throat, v.count)
+    v2 = flow.curtain_velocity(c_p, bore, f_max, v.count)
+
+    # 2. extremes of the law (follower side)
+    ext = law.extremes(omega)
+
+    # 3. time-area over the valve's own stroke and over the whole opening
+    stroke_crank = (0.0, np.pi) if v.kind == "intake" else (-np.pi, 0.0)
+    window = tuple((c - nose) / 2.0 for c in stroke_crank)
+    bp = law.breakpoints
+    ta_stroke = flow.time_area(area, window[0], window[1], omega, bp)
+    ta_open = flow.time_area(area, law.valve_opens, law.valve_closes, omega, bp)
+    v3 = flow.time_area_velocity(swept, ta_stroke, v.count)
+    v_charge = flow.mean_charge_velocity(swept, ta_stroke)
+    xi = flow.fullness(valve_lift, law.valve_opens, law.valve_closes, lift_valve, bp)
+
+    # 4. the lift table
+    theta = _table_grid(law, spec.output.table_step_cam_deg * DEG)
+    d = law.derivatives(theta)
+    xy, rho, beta, offset = _profile(law, theta, heel, cam.follower, roller)
+    table = LiftTable(
+        cam_angle=theta, crank_angle=wrap_crank(nose + 2.0 * theta), segment=law.segment_names(theta),
+        lift=d[0], velocity=omega * d[1], acceleration=omega**2 * d[2], jerk=omega**3 * d[3],
+        valve_lift=valve_lift(theta), curtain_area=area(theta),
+        time_area=flow.cumulative_time_area(area, theta, omega, bp), rho=rho, pressure_angle=beta,
+        contact_offset=offset,
+    )
+
+    # 5. contour over a whole camshaft revolution and the profile extremes
+    n = spec.output.contour_points
+    ctheta = np.unique(np.concatenate([np.linspace(-np.pi, np.pi, n, endpoint=False), bp]))
+    contour = _profile(law, ctheta, heel, cam.follower, roller)[0]
+
+    def convex(t):
+        return _convex_radius(law, t, heel, cam.follower, roller)
+
+    # the base circle (radius = heel radius for both followers) closes the profile
+    x_min, rho_min = min(extremum(convex, bp, "min"), (np.pi, heel), key=lambda p: p[1])
+    x_max, rho_max = max(extremum(lambda t: np.where(np.isinf(convex(t)), -np.inf, convex(t)), bp, "max"),
+                         (np.pi, heel), key=lambda p: p[1])
+
+    summary_cam = {
+        "law": law.name,
+        "coefficients": law.coefficients(),
+        "max_velocity_m_s": ext.max_velocity,
+        "max_acceleration_m_s2": ext.max_acceleration,
+        "min_acceleration_m_s2": ext.min_acceleration,
+        "rho_min_mm": rho_min / MM,
+        "rho_max_mm": rho_max / MM,
+        "rho_min_cam_deg": rad_to_deg(x_min),
+        "rho_max_cam_deg": rad_to_deg(x_max),
+        "phi_p0_deg": rad_to_deg(law.main_half_angle),
+        "ramp_deg": rad_to_deg(law.ramp_angle),
+        "ramp_height_mm": law.ramp_height / MM,
+        "tappet_lift_mm": law.lift_max / MM,
+        "event_cam_deg": rad_to_deg(law.end - law.start),
+        "nose_crank_deg": rad_to_deg(nose),
+        "camshaft_speed_rad_s": omega,
+        "follower": cam.follower,
+        "base_radius_mm": cam.base_radius_mm,
+        "heel_radius_mm": heel / MM,
+    }
+    if isinstance(law, KurzLaw):
+        sf = law.seed_formulas(cam.base_radius_mm * MM, omega)
+        summary_cam["seed_formulas"] = {
+            "max_velocity_m_s": sf["max_velocity"], "max_acceleration_m_s2": sf["max_acceleration"],
+            "min_acceleration_m_s2": sf["min_acceleration"], "rho_min_mm": sf["rho_min"] / MM,
+            "rho_max_mm": sf["rho_max"] / MM,
+        }
+        summary_cam["residuals"] = law.residuals()
+    if cam.follower == "flat":
+        summary_cam["max_contact_offset_mm"] = ext.max_velocity / omega / MM
+    else:
+        beta_max = extremum(lambda t: np.abs(_profile(law, t, heel, "roller", roller)[2]), bp, "max")[1]
+        concave = extremum(lambda t: _profile(law, t, heel, "roller", roller)[1], bp, "min")[1]
+        summary_cam["roller_radius_mm"] = roller / MM
+        summary_cam["max_pressure_angle_deg"] = rad_to_deg(beta_max)
+        summary_cam["min_concave_radius_mm"] = concave / MM if concave + roller < 0.0 else None
+
+    summary_flow = {
+        "throat_area_mm2": float(flow.circle_area(d_throat)) / MM**2,
+        "max_curtain_area_mm2": f_max / MM**2,
+        "V1_m_s": v1, "V2_m_s": v2, "V3_m_s": v3,
+        "time_area_mm2_s": ta_stroke / MM**2,
+        "time_area_open_mm2_s": ta_open / MM**2,
+        "mean_charge_velocity_m_s": v_charge,
+        "fullness": xi,
+        "valve_lift_mm": lift_valve / MM,
+        "stroke_crank_deg": [rad_to_deg(a) for a in stroke_crank],
+    }
+    summary = {"kind": v.kind, "count": v.count, "rocker_ratio": i_k, "cam": summary_cam, "flow": summary_flow}
+
+    found = law.checks()
+    found += flow.check_flow(v.kind, bore=bore, throat_diameter=d_throat, max_lift=lift_valve, v1=v1, v2=v2,
+                             v3=v3, charge_velocity=v_charge, engine_type=eng.type, chamber=eng.chamber)
+    found += check_range("max tappet acceleration", ext.max_acceleration, high=ACCELERATION_LIMITS[0],
+                         source="seed 000, work 2 (positive 1500...3500 m/s2)", unit="m/s2")
+    found += check_range("min tappet acceleration", ext.min_acceleration, low=ACCELERATION_LIMITS[1],
+                         source="seed 000, work 2 (negative 500...1500 m/s2)", unit="m/s2")
+    if v.kind in TIMING_RANGES:
+        (o_lo, o_hi), (c_lo, c_hi) = TIMING_RANGES[v.kind]
+        found += check_range("opening advance", v.opens_deg, o_lo, o_hi, source="seed 000, work 2", unit="crank deg")
+        found += check_range("closing lag", v.closes_deg, c_lo, c_hi, source="seed 000, work 2", unit="crank deg")
+    found += check_range("seat angle", v.seat_angle_deg, *SEAT_ANGLE_USUAL[v.kind],
+                         source="seed 000, work 1 (usually 30 deg inlet, 45 deg exhaust)", unit="deg")
+    found += check_range("clearance h0", v.clearance_mm, *CLEARANCE_RANGES[v.kind], source="seed 000, work 2",
+                         unit="mm")
+    if i_k != 1.0:
+        found += check_range("rocker ratio", i_k, *ROCKER_RATIO_RANGE, source="seed 000, work 2 (or 1, direct drive)")
+    found += check_range("base radius r0 / valve lift", cam.base_radius_mm / v.max_lift_mm,
+                         *BASE_RADIUS_TO_LIFT_RANGE, source="seed 000, work 2 (1.5-2.0; supercharged 3.0-4.0)")
+    if cam.follower == "flat":
+        undercut = rho_min <= 0.0
+        if undercut:
+            found += check_range("cam profile undercut: rho_min (flat follower)", rho_min / MM, low=0.0,
+                                 strict_low=True, source="seed 002, eq. (2.6); seed 000, E26", unit="mm")
+    else:
+        pitch = rho + roller
+        undercut = bool(np.any(geometry.undercut_roller(pitch, roller)))
+        if undercut:
+            found += check_range("cam profile undercut: pitch radius of curvature - roller radius", rho_min / MM,
+                                 low=0.0, strict_low=True, source="seed 002, eq. (2.7)", unit="mm")
+        found += check_range("max pressure angle", summary_cam["max_pressure_angle_deg"],
+                             high=PRESSURE_ANGLE_MAX_DEG, source="seed 004 (spec section 2)", unit="deg")
+    if not undercut:
+        found += check_range("rho_min (cam profile)", rho_min / MM, low=RHO_MIN_MM, source="seed 002, section 2.1",
+                             unit="mm")
+    summary_cam["undercut"] = bool(undercut)
+
+    if v.piston_gap_tdc_mm is not None:
+        crank = nose + 2.0 * np.linspace(law.valve_opens, law.valve_closes, 2001)
+        s = displacement(crank, stroke / 2.0, stroke / 2.0 / (eng.rod_length_mm * MM))
+        gap = geometry.valve_piston_clearance(s, valve_lift((crank - nose) / 2.0), v.piston_gap_tdc_mm * MM)
+        i = int(np.argmin(gap))
+        summary["piston_clearance"] = {"min_clearance_mm": gap[i] / MM, "crank_deg": rad_to_deg(wrap_crank(crank[i]))}
+        found += check_range("valve-piston clearance", gap[i] / MM, low=0.0, strict_low=True,
+                             source="seed 002, eqs. (2.13)-(2.14)", unit="mm")
+
+    drive = drive_stage(v, spec, law, omega, heel, roller)
+    summary["masses"] = drive.masses
+    summary["spring"] = drive.spring
+    summary["strength"] = {k: rec for k, rec in drive.strength.items()}
+    found += drive.warnings
+
+    found = [Finding(f"{name}: {f.quantity}", f.value, f.range, f.source, f.unit) for f in found]
+    return ValveDesign(name, v.kind, law, omega, i_k, heel, cam.follower, roller, nose, window, table, contour,
+                       ctheta, summary, found, drive)
+
+
+def wrap_crank(a):
+    """Crank angle wrapped into (-360, 360] deg (in rad)."""
+    return np.where(a > 2 * np.pi, a - 4 * np.pi, np.where(a <= -2 * np.pi, a + 4 * np.pi, a))
