@@ -155,3 +155,14 @@ def test_module_entry_point():
     result = subprocess.run([sys.executable, "-m", "valvetrain", "--version"], capture_output=True, text=True)
     assert result.returncode == 0
     assert "valvetrain" in result.stdout
+
+
+def test_array_keys_are_accepted(tmp_path):
+    f = tmp_path / "e.toml"
+    f.write_text(example_text().replace("min_resonance_ratio = 10.0", "min_resonance_ratio = 10.0\n"
+                                        "mean_diameter_ratio = [0.75, 0.85]"))
+    assert CliRunner().invoke(main, ["validate", str(f)]).exit_code == 0
+    f.write_text(example_text().replace("min_resonance_ratio = 10.0", "min_resonance_ratio = 10.0\n"
+                                        "mean_diameter_ratio = [0.85, 0.75]"))
+    result = CliRunner().invoke(main, ["validate", str(f)])
+    assert result.exit_code == 2 and "mean_diameter_ratio" in result.output

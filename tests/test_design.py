@@ -162,7 +162,7 @@ def test_shipped_examples_run(path):
     from valvetrain.spec import load_spec
 
     res = run(load_spec(path))
-    assert res.valves
+    assert res.valves or res.crank is not None or res.two_stroke is not None
     for v in res.valves.values():
         assert np.isfinite(v.summary["flow"]["time_area_mm2_s"])
 

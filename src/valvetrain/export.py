@@ -48,6 +48,55 @@ def lift_table_columns(table):
     }
 
 
+CRANK_COLUMNS = [
+    ("crank_deg", "crank angle of the cycle (0 = TDC of intake for a four-stroke, firing TDC at 360) [deg]"),
+    ("s_m", "piston displacement [m]"), ("v_m_s", "piston velocity [m/s]"), ("j_m_s2", "piston acceleration [m/s2]"),
+    ("beta_deg", "connecting-rod angle [deg]"), ("p_abs_MPa", "absolute cylinder pressure [MPa]"),
+    ("p_gas_MPa", "gauge gas pressure p_g - p_0 [MPa]"), ("p_j_MPa", "specific inertia force [MPa]"),
+    ("p_MPa", "total specific force on the pin axis [MPa]"), ("p_N_MPa", "normal (side) force [MPa]"),
+    ("p_S_MPa", "rod force [MPa]"), ("p_K_MPa", "radial force on the crank [MPa]"),
+    ("p_T_MPa", "tangential force [MPa]"), ("T_kN", "tangential force [kN]"),
+    ("M_cyl_Nm", "torque of one cylinder [N m]"), ("pin_radial_kN", "crank-pin load, radial (K + rod centrifugal) [kN]"),
+    ("pin_tangential_kN", "crank-pin load, tangential [kN]"),
+]
+"""Columns of ``tables/crank.csv`` (one cylinder over its cycle; sign conventions of seed 001)."""
+
+
+def crank_columns(crank):
+    """The crank table of one cylinder in the units of :data:`CRANK_COLUMNS`."""
+    c = crank.columns
+    mpa = 1e-6
+    return {
+        "crank_deg": rad_to_deg(crank.phi), "s_m": c["s"], "v_m_s": c["v"], "j_m_s2": c["j"],
+        "beta_deg": rad_to_deg(c["beta"]), "p_abs_MPa": c["p_abs"] * mpa, "p_gas_MPa": c["p_gas"] * mpa,
+        "p_j_MPa": c["p_j"] * mpa, "p_MPa": c["p"] * mpa, "p_N_MPa": c["p_N"] * mpa, "p_S_MPa": c["p_S"] * mpa,
+        "p_K_MPa": c["p_K"] * mpa, "p_T_MPa": c["p_T"] * mpa, "T_kN": c["T"] * 1e-3, "M_cyl_Nm": c["torque"],
+        "pin_radial_kN": c["pin_radial"] * 1e-3, "pin_tangential_kN": c["pin_tangential"] * 1e-3,
+    }
+
+
+def engine_torque_columns(crank):
+    """``crank_deg, M_total_Nm`` and one column per cylinder over one cycle."""
+    out = {"crank_deg": rad_to_deg(crank.psi), "M_total_Nm": crank.total_torque}
+    for i, m in enumerate(crank.cylinder_torques, start=1):
+        out[f"M_cyl{i}_Nm"] = m
+    return out
+
+
+def two_stroke_columns(ports):
+    """Port areas against the crank angle from TDC [deg, mm2]."""
+    out = {"crank_deg": rad_to_deg(ports.phi)}
+    out.update({f"{name}_area_mm2": a / MM**2 for name, a in ports.areas.items()})
+    return out
+
+
+def two_stroke_speed_columns(ports):
+    """Time-area of every port against the crank speed [rpm, mm2 s] (Z = K1 K2 / n, seed 000 eq. 8.6)."""
+    out = {"speed_rpm": ports.speeds}
+    out.update({f"{name}_time_area_mm2_s": z / MM**2 for name, z in ports.time_areas.items()})
+    return out
+
+
 def _cell(x):
     return x if isinstance(x, str) else f"{float(x):.10g}"
 
@@ -125,9 +174,11 @@ def write_outputs(results, out, lang="en"):
     Layout::
 
         out/results.json
-        out/tables/NAME_lift.csv
+        out/tables/NAME_lift.csv, crank.csv, engine_torque.csv, two_stroke_ports.csv, two_stroke_time_area.csv
         out/contour/NAME.csv, NAME.dxf
-        out/plots/NAME_kinematics.png, NAME_contour.png, NAME_time_area.png, NAME_curvature.png
+        out/plots/NAME_kinematics.png, NAME_contour.png, NAME_time_area.png, NAME_curvature.png,
+                  NAME_spring.png, crank_forces.png, crank_torque.png, crank_pin_polar.png,
+                  two_stroke_ports.png, two_stroke_time_area.png
         out/report.html
     """
     from .report import write_plots, write_report
@@ -145,6 +196,12 @@ def write_outputs(results, out, lang="en"):
             write_csv(tmp / "tables" / f"{name}_lift.csv", lift_table_columns(v.table))
             write_csv(tmp / "contour" / f"{name}.csv", contour_columns(v))
             write_dxf(tmp / "contour" / f"{name}.dxf", v)
+        if results.crank is not None:
+            write_csv(tmp / "tables" / "crank.csv", crank_columns(results.crank))
+            write_csv(tmp / "tables" / "engine_torque.csv", engine_torque_columns(results.crank))
+        if results.two_stroke is not None:
+            write_csv(tmp / "tables" / "two_stroke_ports.csv", two_stroke_columns(results.two_stroke))
+            write_csv(tmp / "tables" / "two_stroke_time_area.csv", two_stroke_speed_columns(results.two_stroke))
         plots = write_plots(results, tmp / "plots", lang)
         write_report(results, tmp / "report.html", plots, lang)
         _replace_dir(tmp, out)

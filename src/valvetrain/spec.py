@@ -48,6 +48,11 @@ def _bounded(low, high, unit="", low_open=True, high_open=False):
 Length = lambda low, high, **kw: _bounded(low, high, "mm", **kw)  # noqa: E731
 
 
+def Pair(low, high, unit=""):  # noqa: N802 (a type factory, like Length)
+    """Two bounded numbers, written as a TOML array ``[a, b]``."""
+    return Annotated[tuple[_bounded(low, high, unit), _bounded(low, high, unit)], Field(strict=False)]
+
+
 class _Model(BaseModel):
     model_config = ConfigDict(extra="forbid", strict=True)
 
@@ -65,12 +70,35 @@ class Engine(_Model):
     chamber: Literal["side_valve", "overhead", "prechamber_diesel", "direct_injection_diesel", "wedge",
                      "hemispherical"] = "overhead"
     rod_length_mm: Optional[Length(0.0, 10000.0)] = None
+    layout: Literal["inline", "v"] = "inline"
+    bank_angle_deg: _bounded(0.0, 180.0, "deg") = 90.0
+    firing_order: Optional[list[int]] = None
+    crank_throws_deg: Optional[list[float]] = None
+    banks: Optional[list[Literal[0, 1]]] = None
+    firing_angles_deg: Optional[list[float]] = None
 
     @model_validator(mode="after")
-    def _rod_longer_than_crank(self):
+    def _engine_consistency(self):
+        problems = []
         if self.rod_length_mm is not None and self.rod_length_mm <= self.stroke_mm / 2.0:
-            raise ValueError(f"engine.rod_length_mm = {self.rod_length_mm:g} must exceed the crank radius "
-                             f"stroke_mm/2 = {self.stroke_mm / 2.0:g} mm")
+            problems.append(f"engine.rod_length_mm = {self.rod_length_mm:g} must exceed the crank radius "
+                            f"stroke_mm/2 = {self.stroke_mm / 2.0:g} mm")
+        n = self.cylinders
+        if self.firing_order is not None and sorted(self.firing_order) != list(range(1, n + 1)):
+            problems.append(f"engine.firing_order = {self.firing_order}: must list each cylinder 1...{n} once")
+        for key in ("crank_throws_deg", "banks", "firing_angles_deg"):
+            value = getattr(self, key)
+            if value is not None and len(value) != n:
+                problems.append(f"engine.{key} has {len(value)} entries: one per cylinder ({n}) is needed")
+        if self.firing_angles_deg is not None and len(self.firing_angles_deg) == n:
+            cycle = 180.0 * self.strokes
+            if self.firing_angles_deg[0] != 0.0 or not all(0.0 <= a < cycle for a in self.firing_angles_deg):
+                problems.append(f"engine.firing_angles_deg = {self.firing_angles_deg}: cylinder 1 fires at 0 and "
+                                f"every angle lies in [0, {cycle:g}) crank deg")
+        if self.firing_angles_deg is not None and self.crank_throws_deg is not None:
+            problems.append("engine: give firing_angles_deg or crank_throws_deg, not both")
+        if problems:
+            raise ValueError("; ".join(problems))
         return self
 
 
@@ -169,8 +197,8 @@ class Spring(_Model):
     min_safety_factor: _bounded(0.0, 10.0) = 1.3
     min_resonance_ratio: _bounded(0.0, 100.0, low_open=False) = 10.0
     coil_gap_factor: _bounded(0.0, 1.0) = 0.12
-    mean_diameter_ratio: tuple[_bounded(0.0, 5.0), _bounded(0.0, 5.0)] = (0.7, 0.9)
-    deflection_ratio_range: tuple[_bounded(1.0, 20.0), _bounded(1.0, 20.0)] = (1.6, 3.2)
+    mean_diameter_ratio: Pair(0.0, 5.0) = (0.7, 0.9)
+    deflection_ratio_range: Pair(1.0, 20.0) = (1.6, 3.2)
     min_frequency_difference: _bounded(0.0, 1.0, low_open=False) = 0.1
     radial_gap_mm: Length(0.0, 20.0, low_open=False) = 1.0
 
@@ -268,6 +296,92 @@ class Gas(_Model):
     exhaust_opening_pressure_MPa: _bounded(0.0, 50.0, "MPa") = 0.5
 
 
+class Cycle(_Model):
+    """[crank.cycle]: the Wiebe cycle model used when no pressure_file is given."""
+
+    heat_input_J: _bounded(0.0, 1e8, "J")
+    intake_pressure_MPa: _bounded(0.0, 10.0, "MPa") = 0.09
+    exhaust_pressure_MPa: _bounded(0.0, 10.0, "MPa") = 0.11
+    combustion_start_deg: _bounded(-90.0, 90.0, "deg") = -15.0
+    combustion_duration_deg: _bounded(0.0, 180.0, "deg") = 60.0
+    wiebe_a: _bounded(0.0, 50.0) = 6.908
+    wiebe_m: _bounded(-1.0, 10.0) = 2.0
+    gamma: _bounded(1.0, 2.0) = 1.33
+
+
+class CrankSpec(_Model):
+    """[crank]: the crank mechanism (seed 001).  bore, stroke, rod length and speed default to [engine]."""
+
+    bore_mm: Optional[Length(0.0, 2000.0)] = None
+    stroke_mm: Optional[Length(0.0, 3000.0)] = None
+    rod_length_mm: Optional[Length(0.0, 10000.0)] = None
+    offset_mm: _bounded(-1000.0, 1000.0, "mm", low_open=False) = 0.0
+    speed_rpm: Optional[_bounded(0.0, 30000.0, "rpm")] = None
+    kinematics: Literal["exact", "approximate"] = "exact"
+    pressure_file: Optional[str] = None
+    pv_method: Literal["exact", "brix"] = "exact"
+    compression_ratio: Optional[_bounded(1.0, 60.0)] = None
+    ambient_pressure_MPa: _bounded(0.0, 10.0, "MPa") = 0.1
+    step_deg: _bounded(0.0, 10.0, "deg") = 1.0
+    piston_kg: Optional[_bounded(0.0, 1e4, "kg")] = None
+    rod_kg: Optional[_bounded(0.0, 1e4, "kg")] = None
+    crank_kg: Optional[_bounded(0.0, 1e4, "kg", low_open=False)] = None
+    specific_piston_kg_m2: Optional[_bounded(0.0, 1e4, "kg/m2")] = None
+    specific_rod_kg_m2: Optional[_bounded(0.0, 1e4, "kg/m2")] = None
+    specific_crank_kg_m2: Optional[_bounded(0.0, 1e4, "kg/m2", low_open=False)] = None
+    rod_pin_fraction: _bounded(0.0, 1.0, high_open=True) = 0.275
+    cycle: Optional[Cycle] = None
+
+    @model_validator(mode="after")
+    def _masses_and_pressure(self):
+        problems = []
+        for part in ("piston", "rod", "crank"):
+            given = getattr(self, f"{part}_kg") is not None, getattr(self, f"specific_{part}_kg_m2") is not None
+            if all(given):
+                problems.append(f"give {part}_kg or specific_{part}_kg_m2, not both")
+            elif not any(given):
+                problems.append(f"{part}_kg or specific_{part}_kg_m2 is required (seed 001, eq. 2.6 and Table 2.1)")
+        if self.pressure_file is None and self.cycle is None:
+            problems.append("the cylinder pressure is needed: give pressure_file (crank_deg,pressure_MPa or "
+                            "volume_cm3,pressure_MPa) or a [crank.cycle] table with heat_input_J")
+        if self.cycle is not None and self.compression_ratio is None:
+            problems.append("[crank.cycle] needs compression_ratio")
+        if problems:
+            raise ValueError("; ".join(problems))
+        return self
+
+
+class Port(_Model):
+    """[two_stroke.ports.NAME]: one piston-controlled port (or a group of equal ports: width is their sum)."""
+
+    kind: Literal["exhaust", "transfer", "inlet"]
+    width_mm: Length(0.0, 10000.0)
+    height_mm: Optional[Length(0.0, 3000.0)] = None
+    opens_before_bdc_deg: Optional[_bounded(0.0, 180.0, "deg", high_open=True)] = None
+    lower_edge_mm: Optional[Length(0.0, 5000.0)] = None
+
+    @model_validator(mode="after")
+    def _geometry(self):
+        if self.kind == "inlet":
+            if self.lower_edge_mm is None or self.height_mm is None:
+                raise ValueError("an inlet port needs lower_edge_mm (below the crown at TDC) and height_mm "
+                                 "(seed 000, eq. 8.4)")
+        elif (self.height_mm is None) == (self.opens_before_bdc_deg is None):
+            raise ValueError("give height_mm or opens_before_bdc_deg (one of them) for an exhaust or transfer port")
+        return self
+
+
+class TwoStroke(_Model):
+    """[two_stroke]: port timing of a piston-ported two-stroke (seed 000, work 8)."""
+
+    speed_rpm: Optional[_bounded(0.0, 30000.0, "rpm")] = None
+    speed_range_rpm: Optional[Pair(0.0, 30000.0, "rpm")] = None
+    kinematics: Literal["exact", "approximate"] = "exact"
+    piston_height_mm: Optional[Length(0.0, 3000.0)] = None
+    step_deg: _bounded(0.0, 10.0, "deg") = 0.5
+    ports: dict[str, Port]
+
+
 class Output(_Model):
     """[output]: tables and exports."""
 
@@ -282,19 +396,28 @@ class Spec(_Model):
     """A whole design specification."""
 
     engine: Engine
-    valves: dict[str, Valve]
+    valves: dict[str, Valve] = {}
     gas: Gas = Gas()
+    crank: Optional[CrankSpec] = None
+    two_stroke: Optional[TwoStroke] = None
     output: Output = Output()
+    source_dir: Optional[str] = Field(default=None, exclude=True)
+    """Folder of the specification file: relative file names (pressure_file) are read from there."""
 
     @field_validator("valves")
     @classmethod
     def _valve_names(cls, valves):
-        if not valves:
-            raise ValueError("at least one [valves.NAME] section is required")
-        bad = [n for n in valves if not _NAME.match(n)]
+        bad = [n for n in valves if not _NAME.match(n) or n in ("crank", "two_stroke")]
         if bad:
-            raise ValueError(f"valve names {bad} must start with a letter and use only letters, digits, '_' and '-'")
+            raise ValueError(f"valve names {bad} must start with a letter and use only letters, digits, '_' and '-' "
+                             "(and not be 'crank' or 'two_stroke', the names of the engine's chapters)")
         return valves
+
+    @model_validator(mode="after")
+    def _something_to_design(self):
+        if not self.valves and self.crank is None and self.two_stroke is None:
+            raise ValueError("nothing to design: give at least one [valves.NAME], [crank] or [two_stroke] section")
+        return self
 
 
 def main_half_angle_deg(valve, strokes):
@@ -348,6 +471,90 @@ def _valve_problems(name, v, engine):
     return out
 
 
+def _same(spec, key_crank, key_engine):
+    """A [crank] value that defaults to [engine]'s; a problem message when both are given and differ."""
+    a, b = getattr(spec.crank, key_crank) if spec.crank else None, getattr(spec.engine, key_engine)
+    if a is not None and b is not None and abs(a - b) > 1e-9 * max(abs(a), abs(b)):
+        return a, [f"crank.{key_crank} = {a:g} differs from engine.{key_engine} = {b:g}; give it in one place"]
+    return (a if a is not None else b), []
+
+
+def crank_geometry(spec):
+    """Effective bore, stroke, rod length [mm] and speed [rpm] of the crank mechanism."""
+    return tuple(_same(spec, kc, ke)[0] for kc, ke in (("bore_mm", "bore_mm"), ("stroke_mm", "stroke_mm"),
+                                                      ("rod_length_mm", "rod_length_mm"),
+                                                      ("speed_rpm", "rated_speed_rpm")))
+
+
+def _crank_problems(spec):
+    if spec.crank is None and spec.two_stroke is None:
+        return []
+    out = []
+    for kc, ke in (("bore_mm", "bore_mm"), ("stroke_mm", "stroke_mm"), ("rod_length_mm", "rod_length_mm"),
+                   ("speed_rpm", "rated_speed_rpm")):
+        out += _same(spec, kc, ke)[1]
+    bore, stroke, rod, _ = crank_geometry(spec)
+    if rod is None:
+        out.append("crank.rod_length_mm (or engine.rod_length_mm) is required for the crank mechanism and the "
+                   "two-stroke ports")
+    elif rod <= stroke / 2.0:
+        out.append(f"crank.rod_length_mm = {rod:g} must exceed the crank radius {stroke / 2.0:g} mm")
+    c = spec.crank
+    if c is None:
+        return out
+    if rod is not None and rod > stroke / 2.0 and abs(c.offset_mm) >= rod - stroke / 2.0:
+        out.append(f"crank.offset_mm = {c.offset_mm:g}: allowed |offset| < rod length - crank radius = "
+                   f"{rod - stroke / 2.0:g} mm")
+    cycle = 180.0 * spec.engine.strokes
+    n = cycle / c.step_deg
+    if abs(n - round(n)) > 1e-9:
+        out.append(f"crank.step_deg = {c.step_deg:g} must divide the {cycle:g} deg cycle into whole steps")
+    if c.pressure_file is not None and not out:
+        out += _pressure_file_problems(spec)
+    return out
+
+
+def _pressure_file_problems(spec):
+    from .crank.pressure import PressureFileError, read_indicator
+
+    c = spec.crank
+    try:
+        table = read_indicator(resolve_path(spec, c.pressure_file), spec.engine.strokes)
+    except PressureFileError as exc:
+        return [f"crank.pressure_file: {exc}"]
+    if table.kind == "volume" and c.compression_ratio is None:
+        return ["crank.pressure_file is a p-V diagram: crank.compression_ratio is needed to place it on the crank "
+                "angle"]
+    return []
+
+
+def resolve_path(spec, name):
+    """A file named in the specification, relative to the specification file's folder."""
+    path = Path(name)
+    return path if path.is_absolute() or spec.source_dir is None else Path(spec.source_dir) / path
+
+
+def _two_stroke_problems(spec):
+    ts = spec.two_stroke
+    if ts is None:
+        return []
+    out = []
+    if spec.engine.strokes != 2:
+        out.append(f"[two_stroke] needs engine.strokes = 2 (got {spec.engine.strokes})")
+    if not ts.ports:
+        out.append("[two_stroke] needs at least one [two_stroke.ports.NAME]")
+    stroke = crank_geometry(spec)[1]
+    for name, port in ts.ports.items():
+        if port.height_mm is not None and port.kind != "inlet" and port.height_mm >= stroke:
+            out.append(f"two_stroke.ports.{name}.height_mm = {port.height_mm:g} must be smaller than the stroke "
+                       f"{stroke:g} mm")
+        if port.kind == "inlet" and ts.piston_height_mm is None:
+            out.append(f"two_stroke.ports.{name}: an inlet port needs two_stroke.piston_height_mm")
+    if ts.speed_range_rpm is not None and ts.speed_range_rpm[0] >= ts.speed_range_rpm[1]:
+        out.append(f"two_stroke.speed_range_rpm = {list(ts.speed_range_rpm)} must be [low, high] with low < high")
+    return out
+
+
 def _location(err):
     parts = [str(p) for p in err["loc"] if not (isinstance(p, str) and p in ("kurz", "polydyne"))]
     return ".".join(parts) if parts else "(file)"
@@ -380,6 +587,7 @@ def validate(data):
     except ValidationError as exc:
         raise SpecError([_message(err) for err in exc.errors()]) from None
     problems = [p for name, v in spec.valves.items() for p in _valve_problems(name, v, spec.engine)]
+    problems += _crank_problems(spec) + _two_stroke_problems(spec)
     if spec.engine.strokes != 4 and spec.valves:
         problems.insert(0, f"engine.strokes = {spec.engine.strokes}: the valve timing (opens_deg/closes_deg before and "
                            "after TDC/BDC of the gas-exchange strokes) is defined for four-stroke engines; allowed 4 "
@@ -389,12 +597,14 @@ def validate(data):
     return spec
 
 
-def parse_spec(text, source="<string>"):
-    """Parse and validate TOML text."""
+def parse_spec(text, source="<string>", source_dir=None):
+    """Parse and validate TOML text; relative file names in it are read from ``source_dir``."""
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise SpecError([f"{source}: not valid TOML: {exc}"]) from None
+    if source_dir is not None and isinstance(data, dict):
+        data["source_dir"] = str(source_dir)
     return validate(data)
 
 
@@ -404,7 +614,7 @@ def load_spec(path):
         text = Path(path).read_text(encoding="utf-8")
     except (OSError, UnicodeDecodeError) as exc:
         raise SpecError([f"{path}: cannot read the file: {exc}"]) from None
-    return parse_spec(text, str(path))
+    return parse_spec(text, str(path), Path(path).resolve().parent)
 
 
 def example_text():

@@ -14,8 +14,10 @@ rpm) are converted to SI for the physics functions.  Stages:
 from dataclasses import dataclass
 
 from .. import flow
-from ..checks import check_range
+from ..checks import Finding, check_range
 from ..units import MM
+from .crank import CrankResults, crank_stage
+from .twostroke import TwoStrokeResults, two_stroke_stage
 from .valve import THROAT_AREA_SHARE_RANGE, ValveDesign, build_law, design_valve, nose_crank_angle
 
 __all__ = ["DesignResults", "ValveDesign", "build_law", "nose_crank_angle", "run"]
@@ -29,18 +31,24 @@ class DesignResults:
     engine: dict
     valves: dict
     warnings: list
+    crank: CrankResults = None
+    two_stroke: TwoStrokeResults = None
 
     def to_dict(self):
         """JSON-ready dictionary (engineering units, named in the keys)."""
         from .. import __version__
 
-        return {
+        out = {
             "valvetrain_version": __version__,
             "engine": self.engine,
             "valves": {name: v.summary for name, v in self.valves.items()},
-            "warnings": [w.as_dict() for w in self.warnings],
         }
-
+        if self.crank is not None:
+            out["crank"] = self.crank.summary
+        if self.two_stroke is not None:
+            out["two_stroke"] = self.two_stroke.summary
+        out["warnings"] = [w.as_dict() for w in self.warnings]
+        return out
 
 
 
@@ -76,4 +84,9 @@ def run(spec):
         "displacement_cm3": float(flow.swept_volume(bore, stroke)) * 1e6 * eng.cylinders,
         "piston_area_mm2": float(flow.circle_area(bore)) / MM**2,
     }
-    return DesignResults(spec, engine, valves, found)
+    crank = crank_stage(spec) if spec.crank is not None else None
+    ports = two_stroke_stage(spec) if spec.two_stroke is not None else None
+    for stage, tag in ((crank, "crank"), (ports, "two-stroke")):
+        if stage is not None:
+            found += [Finding(f"{tag}: {f.quantity}", f.value, f.range, f.source, f.unit) for f in stage.warnings]
+    return DesignResults(spec, engine, valves, found, crank, ports)

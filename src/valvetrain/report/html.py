@@ -87,10 +87,20 @@ def render_report(results, plots, lang="en"):
             "table": _abridged_table(v),
             "warnings": v.warnings,
         })
+    crank = None
+    if results.crank is not None:
+        summary = results.crank.summary
+        crank = {"inputs": _flatten(spec["crank"]), "plots": plots["crank"],
+                 "summary": [(k, v) for k, v in _flatten(summary) if k != "pressure_source"],
+                 "pressure_source": summary["pressure_source"]}
+    ports = None
+    if results.two_stroke is not None:
+        ports = {"inputs": [(k, v) for k, v in _flatten(spec["two_stroke"]) if not k.startswith("ports.")],
+                 "plots": plots["two_stroke"], "ports": results.two_stroke.summary["ports"]}
     return env.get_template("report.html").render(
         t=TEXT[lang], lang=lang, version=__version__, engine=results.engine, engine_inputs=_flatten(spec["engine"]),
         valves=valves, warnings=results.warnings, sources=SOURCES, table_columns=TABLE_COLUMNS,
-        step=REPORT_STEP_DEG, output=_flatten(spec["output"]),
+        step=REPORT_STEP_DEG, output=_flatten(spec["output"]), crank=crank, ports=ports,
     )
 
 

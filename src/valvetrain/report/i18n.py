@@ -41,6 +41,14 @@ TEXT = {
         "line_required": "required characteristic", "line_chosen": "chosen spring(s)", "line_outer": "outer spring",
         "line_inner": "inner spring", "force": "force at the valve, N", "spring_title": "spring characteristic",
         "no_spring_passes": "No spring of the wire series passes every check; the one shown has the best worst margin.",
+        "crank_chapter": "Crank mechanism: kinematics, forces and torque", "two_stroke_chapter": "Two-stroke ports",
+        "specific_force": "specific force, MPa", "cycle_deg": "crank angle of the cycle, deg",
+        "crank_forces": "specific forces on the piston pin (as Fig. 2.6 of seed 001)", "cylinder": "cylinder",
+        "total": "total", "mean": "mean", "engine_deg": "engine angle (cycle angle of cylinder 1), deg",
+        "torque": "torque, N m", "pin_tangential": "tangential load on the crank pin, kN",
+        "pin_radial": "radial load on the crank pin (outwards +), kN", "pin_polar": "polar diagram of the crank-pin load",
+        "crank_from_tdc": "crank angle from TDC, deg", "port_area": "port area, mm²", "speed": "crank speed, rpm",
+        "port_time_area": "time-area, mm²·s", "port": "Port", "pressure_model": "Cylinder pressure",
         "names": {
             "V1_m_s": "V' throat velocity, m/s (seed 000, eq. 1.1)",
             "V2_m_s": "V'' curtain velocity at full lift, m/s (eq. 1.2)",
@@ -111,6 +119,17 @@ TEXT = {
         "spring_title": "характеристика пружины",
         "no_spring_passes": "Ни одна пружина из сортамента проволоки не проходит все проверки; показана пружина "
                             "с наилучшим наименьшим запасом.",
+        "crank_chapter": "Кривошипно-шатунный механизм: кинематика, силы, крутящий момент",
+        "two_stroke_chapter": "Окна двухтактного двигателя",
+        "specific_force": "удельная сила, МПа", "cycle_deg": "угол поворота коленвала в цикле, °",
+        "crank_forces": "удельные силы на оси поршневого пальца (как рис. 2.6 сем. 001)", "cylinder": "цилиндр",
+        "total": "суммарный", "mean": "средний", "engine_deg": "угол поворота (цикл цилиндра 1), °",
+        "torque": "крутящий момент, Н·м", "pin_tangential": "тангенциальная нагрузка на шатунную шейку, кН",
+        "pin_radial": "радиальная нагрузка на шатунную шейку (наружу +), кН",
+        "pin_polar": "полярная диаграмма нагрузки на шатунную шейку",
+        "crank_from_tdc": "угол поворота коленвала от ВМТ, °", "port_area": "площадь окна, мм²",
+        "speed": "частота вращения, мин⁻¹", "port_time_area": "время-сечение, мм²·с", "port": "Окно",
+        "pressure_model": "Давление в цилиндре",
         "names": {
             "V1_m_s": "V′ скорость в горловине, м/с (сем. 000, ф. 1.1)",
             "V2_m_s": "V″ скорость при полном подъёме, м/с (ф. 1.2)",
@@ -147,6 +166,8 @@ SOURCES = [
                  "of a Kurz cam; formulas as reconstructed in spec/valvetrain-works-1-8.md"),
     ("seed 002", "Shang Hanji, Valve cam mechanisms of internal-combustion engines: design and calculation, "
                  "Fudan University Press, 1988, section 2.1 (spec/methods-seeds-002-004.md, section 1)"),
+    ("seed 001", "Course-work manual \"Power units\": piston kinematics and crank-mechanism dynamics "
+                 "(spec/crank-kinematics-dynamics.md)"),
     ("seed 004", "Dynamic synthesis of shock-free cams for forced transport diesels (2019): pressure-angle "
                  "limit 30 deg"),
 ]

@@ -131,20 +131,116 @@ def spring_figure(valve, t):
     return fig
 
 
+def crank_forces_figure(crank, t):
+    """Specific forces against the crank angle, as Fig. 2.6 of seed 001: gas, inertia and total; N, S, K, T."""
+    c = crank.columns
+    x = rad_to_deg(crank.phi)
+    fig, axes = plt.subplots(2, 1, figsize=(9, 8), sharex=True)
+    for key, label in (("p_gas", "Δp_g"), ("p_j", "p_j"), ("p", "p")):
+        axes[0].plot(x, c[key] * 1e-6, label=label)
+    for key, label in (("p_N", "p_N"), ("p_S", "p_S"), ("p_K", "p_K"), ("p_T", "p_T")):
+        axes[1].plot(x, c[key] * 1e-6, label=label)
+    for ax in axes:
+        ax.axhline(0, color="0.5", lw=0.5)
+        ax.grid(alpha=0.3)
+        ax.legend(loc="upper right")
+        ax.set_ylabel(t["specific_force"])
+    axes[-1].set_xlabel(t["cycle_deg"])
+    axes[-1].set_xticks(np.arange(0, x.max() + 1, 90))
+    fig.suptitle(t["crank_forces"])
+    fig.tight_layout()
+    return fig
+
+
+def crank_torque_figure(crank, t):
+    """Torque of every cylinder and the total over one cycle (Fig. 2.7 of seed 001)."""
+    x = rad_to_deg(crank.psi)
+    fig, ax = plt.subplots(figsize=(9, 5))
+    for i, m in enumerate(crank.cylinder_torques, start=1):
+        ax.plot(x, m, lw=0.8, alpha=0.7, label=f"{t['cylinder']} {i}")
+    ax.plot(x, crank.total_torque, color="k", lw=1.8, label=t["total"])
+    ax.axhline(crank.summary["mean_torque_Nm"], color="C3", ls="--", lw=1.0, label=t["mean"])
+    ax.set_xlabel(t["engine_deg"])
+    ax.set_ylabel(t["torque"])
+    ax.set_xticks(np.arange(0, x.max() + 1, 90))
+    ax.grid(alpha=0.3)
+    ax.legend(loc="upper right", fontsize=8)
+    fig.tight_layout()
+    return fig
+
+
+def crank_pin_figure(crank, t):
+    """Polar diagram of the crank-pin load in the crank's frame (tangential against radial, kN)."""
+    c = crank.columns
+    tang, rad = c["pin_tangential"] * 1e-3, -c["pin_radial"] * 1e-3
+    fig, ax = plt.subplots(figsize=(7, 7))
+    ax.plot(tang, rad, color="C0")
+    for deg in range(0, int(rad_to_deg(crank.phi[-1])) + 1, 180):
+        k = int(np.argmin(np.abs(rad_to_deg(crank.phi) - deg)))
+        ax.annotate(f"{deg}", (tang[k], rad[k]), fontsize=8)
+    ax.axhline(0, color="0.5", lw=0.5)
+    ax.axvline(0, color="0.5", lw=0.5)
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.set_xlabel(t["pin_tangential"])
+    ax.set_ylabel(t["pin_radial"])
+    ax.grid(alpha=0.3)
+    ax.set_title(t["pin_polar"])
+    fig.tight_layout()
+    return fig
+
+
+def two_stroke_ports_figure(ports, t):
+    """Port areas against the crank angle (seed 000, Fig. 8.1 b)."""
+    fig, ax = plt.subplots(figsize=(8, 4.5))
+    x = rad_to_deg(ports.phi)
+    for name, a in ports.areas.items():
+        ax.plot(x, a / MM**2, label=name)
+    ax.set_xlabel(t["crank_from_tdc"])
+    ax.set_ylabel(t["port_area"])
+    ax.set_xticks(np.arange(0, 361, 45))
+    ax.grid(alpha=0.3)
+    ax.legend()
+    fig.tight_layout()
+    return fig
+
+
+def two_stroke_speed_figure(ports, t):
+    """Time-area of each port against the crank speed, Z = f(n) (seed 000, work 8)."""
+    fig, ax = plt.subplots(figsize=(8, 4.5))
+    for name, z in ports.time_areas.items():
+        ax.plot(ports.speeds, z / MM**2, label=name)
+    ax.set_xlabel(t["speed"])
+    ax.set_ylabel(t["port_time_area"])
+    ax.grid(alpha=0.3)
+    ax.legend()
+    fig.tight_layout()
+    return fig
+
+
+ENGINE_FIGURES = {"crank": {"crank_forces": crank_forces_figure, "crank_torque": crank_torque_figure,
+                            "crank_pin_polar": crank_pin_figure},
+                  "two_stroke": {"two_stroke_ports": two_stroke_ports_figure,
+                                 "two_stroke_time_area": two_stroke_speed_figure}}
+
+
 FIGURES = {"kinematics": kinematics_figure, "contour": contour_figure, "time_area": time_area_figure,
            "curvature": curvature_figure, "spring": spring_figure}
 
 
 def write_plots(results, folder, lang="en"):
-    """Write every figure of every valve as ``folder/NAME_KIND.png``; return ``{name: {kind: filename}}``."""
+    """Write every figure as PNG; return ``{valve name or "crank"/"two_stroke": {kind: filename}}``."""
     t = TEXT[lang]
     written = {}
+
+    def save(fig, fname):
+        fig.savefig(folder / fname, dpi=110)
+        plt.close(fig)
+        return fname
+
     for name, valve in results.valves.items():
-        written[name] = {}
-        for kind, make in FIGURES.items():
-            fig = make(valve, t)
-            fname = f"{name}_{kind}.png"
-            fig.savefig(folder / fname, dpi=110)
-            plt.close(fig)
-            written[name][kind] = fname
+        written[name] = {kind: save(make(valve, t), f"{name}_{kind}.png") for kind, make in FIGURES.items()}
+    for stage, figures in ENGINE_FIGURES.items():
+        data = getattr(results, stage)
+        if data is not None:
+            written[stage] = {kind: save(make(data, t), f"{kind}.png") for kind, make in figures.items()}
     return written

@@ -1,0 +1,123 @@
+"""The crank and two-stroke chapters of a design run, and user pressure files through the CLI."""
+
+import json
+
+from click.testing import CliRunner
+import numpy as np
+import pytest
+
+from valvetrain.cli import main
+from valvetrain.crank import pressure
+from valvetrain.design import run
+from valvetrain.spec import example_spec, example_text, load_spec
+
+CRANK_KEYS = ["max_velocity_m_s", "max_acceleration_m_s2", "min_acceleration_m_s2", "mean_torque_Nm",
+              "max_torque_Nm", "min_torque_Nm", "nonuniformity"]
+
+
+@pytest.fixture(scope="module")
+def example():
+    return run(example_spec())
+
+
+def test_example_crank_chapter(example):
+    c = example.to_dict()["crank"]
+    for key in CRANK_KEYS:
+        assert np.isfinite(c[key]), key
+    # j_max = omega^2 R (1 + lambda) exactly (1.10); lambda = 38.5714 / 135
+    omega, R = np.pi * 7000 / 30, 0.077142857 / 2
+    assert c["max_acceleration_m_s2"] == pytest.approx(omega**2 * R * (1 + R / 0.135), rel=1e-9)
+    # mean torque = i W_i / (4 pi) (spec section 5), to the 1-deg grid's accuracy
+    assert abs(c["torque_work_balance"]) < 2e-4
+    assert c["firing_angles_deg"] == [0.0, 540.0, 180.0, 360.0]
+    assert c["torque_period_deg"] == pytest.approx(180.0)
+
+
+def test_crank_tables(tmp_path):
+    out = tmp_path / "d"
+    assert CliRunner().invoke(main, ["run", "--out", str(out)]).exit_code == 0
+    header = (out / "tables" / "crank.csv").read_text().splitlines()[0].split(",")
+    for col in ["crank_deg", "s_m", "v_m_s", "j_m_s2", "p_gas_MPa", "p_j_MPa", "p_MPa", "p_N_MPa", "p_S_MPa",
+                "p_K_MPa", "p_T_MPa", "T_kN", "M_cyl_Nm"]:
+        assert col in header
+    torque_header = (out / "tables" / "engine_torque.csv").read_text().splitlines()[0].split(",")
+    assert torque_header == ["crank_deg", "M_total_Nm", "M_cyl1_Nm", "M_cyl2_Nm", "M_cyl3_Nm", "M_cyl4_Nm"]
+    for plot in ("crank_forces.png", "crank_torque.png", "crank_pin_polar.png"):
+        assert (out / "plots" / plot).stat().st_size > 0
+
+
+def _spec_with_pressure_file(tmp_path, rows, header="crank_deg,pressure_MPa"):
+    (tmp_path / "ind.csv").write_text(header + "\n" + "".join(f"{a},{b}\n" for a, b in rows))
+    text = example_text().replace('# pressure_file = "indicator.csv"', 'pressure_file = "ind.csv"')
+    start, end = text.index("[crank.cycle]"), text.index("[output]")
+    (tmp_path / "engine.toml").write_text(text[:start] + text[end:])
+    return tmp_path / "engine.toml"
+
+
+def test_user_p_phi_file_is_used(tmp_path, example):
+    phi = np.arange(0.0, 720.0, 2.0)
+    p = example.crank.columns["p_abs"][::2] / 1e6
+    spec_file = _spec_with_pressure_file(tmp_path, zip(phi, p))
+    res = run(load_spec(spec_file))
+    assert "p-phi diagram" in res.crank.summary["pressure_source"]
+    # the same pressure on a coarser table: the mean torque agrees to the interpolation error
+    assert res.crank.summary["mean_torque_Nm"] == pytest.approx(example.crank.summary["mean_torque_Nm"], rel=5e-3)
+
+
+def test_user_p_v_file_is_used(tmp_path, example):
+    c = example.crank
+    v = pressure.cylinder_volume(c.phi, 0.08, 0.077142857 / 2, 0.077142857 / 2 / 0.135, 10.0)
+    spec_file = _spec_with_pressure_file(tmp_path, zip(v * 1e6, c.columns["p_abs"] / 1e6), "volume_cm3,pressure_MPa")
+    res = run(load_spec(spec_file))
+    assert "p-V diagram" in res.crank.summary["pressure_source"]
+    assert res.crank.summary["indicated_work_J"] == pytest.approx(c.summary["indicated_work_J"], rel=5e-3)
+
+
+def test_bad_pressure_file_is_refused_with_its_line(tmp_path):
+    spec_file = _spec_with_pressure_file(tmp_path, [(0, 0.1), (10, 0.2), ("x", 0.3), (30, 0.1)])
+    out = tmp_path / "out"
+    result = CliRunner().invoke(main, ["run", str(spec_file), "--out", str(out)])
+    assert result.exit_code == 2
+    assert "crank.pressure_file:" in result.output and "ind.csv:4:" in result.output
+    assert not out.exists()
+
+
+def test_missing_pressure_source_is_refused(tmp_path):
+    text = example_text()
+    start, end = text.index("[crank.cycle]"), text.index("[output]")
+    f = tmp_path / "e.toml"
+    f.write_text(text[:start] + text[end:])
+    result = CliRunner().invoke(main, ["validate", str(f)])
+    assert result.exit_code == 2
+    assert "give pressure_file" in result.output
+
+
+def test_v8_example():
+    res = run(load_spec(__import__("pathlib").Path(__file__).parents[1] / "examples" / "v8-crank.toml"))
+    c = res.crank.summary
+    assert c["even_firing"] is True
+    assert c["torque_period_deg"] == pytest.approx(90.0)
+    # V engine, two rods per pin: m_R = m_k + 2 m_sh.k (2.10)
+    m = c["masses"]
+    assert m["rotating_kg"] == pytest.approx(m["crank_kg"] + 2 * m["rod_at_crank_kg"])
+    assert abs(c["torque_work_balance"]) < 2e-4
+
+
+def test_two_stroke_example(tmp_path):
+    path = __import__("pathlib").Path(__file__).parents[1] / "examples" / "two-stroke-ports.toml"
+    out = tmp_path / "ts"
+    result = CliRunner().invoke(main, ["run", str(path), "--out", str(out)])
+    assert result.exit_code == 0, result.output
+    data = json.loads((out / "results.json").read_text())
+    ports = data["two_stroke"]["ports"]
+    ex = ports["exhaust"]
+    # height 16.2 mm = 0.27 S, lambda = 30/120 = 0.25: opens 69.60 deg before BDC exactly (spec, work 8)
+    assert ex["opens_before_bdc_deg"] == pytest.approx(69.60, abs=0.005)
+    assert ex["opens_before_bdc_series_deg"] == pytest.approx(69.49, abs=0.005)
+    # numerical time-area (exact kinematics) against K1 K2 / n (series kinematics): close, not equal
+    assert ex["time_area_mm2_s"] == pytest.approx(ex["time_area_analytic_mm2_s"], rel=0.02)
+    assert ports["transfer"]["opens_before_bdc_deg"] == pytest.approx(58.0)
+    assert ports["inlet"]["duration_deg"] > 0
+    for f in ("two_stroke_ports.csv", "two_stroke_time_area.csv"):
+        assert (out / "tables" / f).is_file()
+    assert "valves" in data and data["valves"] == {}
