@@ -125,3 +125,18 @@ def test_two_stroke_example(tmp_path):
     for f in ("two_stroke_ports.csv", "two_stroke_time_area.csv"):
         assert (out / "tables" / f).is_file()
     assert "valves" in data and data["valves"] == {}
+
+
+def test_two_stroke_crank_torque(tmp_path):
+    """A two-cylinder two-stroke: cycle 360 deg, even firing every 180 deg (theta = 180 tau / i, eq. 2.22)."""
+    text = "\n".join([
+        '[engine]', 'bore_mm = 56.0', 'stroke_mm = 60.0', 'rated_speed_rpm = 6000', 'cylinders = 2', 'strokes = 2',
+        '[crank]', 'rod_length_mm = 120.0', 'compression_ratio = 8.0', 'piston_kg = 0.2', 'rod_kg = 0.15',
+        'crank_kg = 0.1', '[crank.cycle]', 'heat_input_J = 250.0', ''])
+    f = tmp_path / "ts.toml"
+    f.write_text(text)
+    c = run(load_spec(f)).crank
+    assert c.phi[-1] == pytest.approx(np.radians(359.0))
+    assert c.summary["torque_period_deg"] == pytest.approx(180.0)
+    assert c.summary["firing_angles_deg"] == [0.0, 180.0]
+    assert abs(c.summary["torque_work_balance"]) < 2e-4
