@@ -107,7 +107,7 @@ def write_csv(path, columns):
     with open(path, "w", newline="", encoding="utf-8") as fh:
         w = csv.writer(fh)
         w.writerow(names)
-        for row in zip(*(columns[n] for n in names)):
+        for row in zip(*(columns[n] for n in names), strict=True):
             w.writerow([_cell(x) for x in row])
 
 

@@ -209,8 +209,8 @@ class PolydyneLaw(SymmetricLaw):
     def coefficients(self):
         """C2, Cp, Cq, Cr, Cs of h = h_nose (1 + sum C x^k) (dimensionless) and the exponents p, q, r, s."""
         c = self._a / (self._lift + self._ramp_height)
-        out = dict(zip(("C2", "Cp", "Cq", "Cr", "Cs"), map(float, c)))
-        out.update(zip(("p", "q", "r", "s"), self.exponents))
+        out = dict(zip(("C2", "Cp", "Cq", "Cr", "Cs"), map(float, c), strict=True))
+        out.update(zip(("p", "q", "r", "s"), self.exponents, strict=True))
         return out
 
     def checks(self):

@@ -24,7 +24,7 @@ def kinematics_figure(valve, t):
     axes[0].plot(x, tab.valve_lift / MM, label=t["valve_lift"])
     axes[0].legend(loc="upper right")
     for ax, y, label in zip(axes, (None, tab.velocity, tab.acceleration, tab.jerk),
-                            ("lift", "velocity", "acceleration", "jerk")):
+                            ("lift", "velocity", "acceleration", "jerk"), strict=True):
         if y is not None:
             ax.plot(x, y, color="C0")
         ax.set_ylabel(t[label])
