@@ -1,9 +1,10 @@
 """Hypothesis strategies: lift laws drawn from the recommended ranges of the sources."""
 
 import numpy as np
-from hypothesis import strategies as st
+from hypothesis import assume, strategies as st
 
-from valvetrain.laws import KurzLaw, PolydyneLaw
+from valvetrain.laws import (ConstantAccelerationLaw, KurzLaw, PolydyneLaw, PolynomialLaw, TangentLaw,
+                             ThreeArcLaw)
 
 DEG = np.pi / 180
 
@@ -39,5 +40,43 @@ def polydyne_params(draw):
                 ramp_velocity=draw(st.floats(0.008, 0.022)) * 1e-3 / DEG if ramp else 0.0)
 
 
+RAMP_KINDS = st.sampled_from(["cosine", "constant_velocity", "constant_acceleration"])
+
+
+@st.composite
+def constant_acceleration_laws(draw):
+    half = draw(st.floats(55.0, 75.0)) * DEG
+    f1 = draw(st.floats(0.3, 0.45)) * half
+    f3 = draw(st.floats(0.0, 0.3)) * half
+    return ConstantAccelerationLaw(draw(st.floats(4.0, 8.0)) * 1e-3, draw(st.floats(0.25, 0.5)) * 1e-3,
+                                   draw(st.floats(0.008, 0.022)) * 1e-3 / DEG, f1, half - f1 - f3, f3,
+                                   draw(st.floats(0.4, 1.0)), draw(RAMP_KINDS))
+
+
+@st.composite
+def polynomial_laws(draw):
+    p = draw(st.integers(4, 12))
+    step = draw(st.integers(2, 8))
+    n = draw(st.integers(3, 6))
+    ramp = draw(st.booleans())
+    return PolynomialLaw(draw(st.floats(4.0, 8.0)) * 1e-3, draw(st.floats(55.0, 75.0)) * DEG,
+                         [2] + [p + i * step for i in range(n - 1)],
+                         draw(st.floats(0.25, 0.5)) * 1e-3 if ramp else 0.0,
+                         draw(st.floats(0.008, 0.022)) * 1e-3 / DEG if ramp else 0.0, draw(RAMP_KINDS))
+
+
+@st.composite
+def arc_laws(draw):
+    r0, lift, half = draw(st.floats(15.0, 25.0)) * 1e-3, draw(st.floats(5.0, 9.0)) * 1e-3, draw(
+        st.floats(55.0, 75.0)) * DEG
+    try:
+        if draw(st.booleans()):
+            return ThreeArcLaw.from_flank_angle(r0, lift, half, draw(st.floats(0.25, 0.45)) * half)
+        return TangentLaw(r0, lift, half, draw(st.floats(6.0, 14.0)) * 1e-3)
+    except ValueError:  # not every draw admits an arc cam (the spec's validity conditions)
+        assume(False)
+
+
 def laws():
-    return st.one_of(kurz_params().map(lambda p: KurzLaw(**p)), polydyne_params().map(lambda p: PolydyneLaw(**p)))
+    return st.one_of(kurz_params().map(lambda p: KurzLaw(**p)), polydyne_params().map(lambda p: PolydyneLaw(**p)),
+                     constant_acceleration_laws(), polynomial_laws(), arc_laws())

@@ -64,7 +64,7 @@ BAD = [
     ('law = "kurz"', 'law = "cosine"', ["valves.intake.cam.law = 'cosine': allowed 'kurz', 'polydyne'"]),
     ("seat_angle_deg = 45.0", "seat_angle_deg = 45.0\nseat_angel = 30", ["valves.intake.seat_angel: unknown key"]),
     ("[engine]", "[engine", ["not valid TOML"]),
-    ("clearance_mm = 0.25", "clearance_mm = 0.0", ["valves.intake.clearance_mm = 0: the Kurz cam's ramp"]),
+    ("clearance_mm = 0.25", "clearance_mm = 0.0", ["valves.intake.clearance_mm = 0: the cam's ramp"]),
     ("strokes = 4", "strokes = 2", ["engine.strokes = 2: the valve timing"]),
     ("phi3_deg = 38.0", "phi3_deg = 38.0\nphi1_deg = 2.0", ["not valid TOML"]),  # duplicate key
 ]

@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from valvetrain.laws import PolydyneLaw, default_exponents, polydyne_coefficients
-from valvetrain.laws.polydyne import _falling, polydyne_junction_coefficients
+from valvetrain.laws.polydyne import _falling, polynomial_junction_coefficients
 
 from conftest import SEED000_OMEGA_EXACT
 
@@ -59,7 +59,7 @@ def test_larger_p_raises_acceleration():
 def test_junction_solver_reduces_to_closed_form():
     """With no ramp the 5x5 junction system gives h_max x (3.4)-(3.8) (spec methods, section 7: 2.2e-14)."""
     exps = default_exponents(10)
-    a = polydyne_junction_coefficients((2.0,) + exps, 7.0, 0.0, 0.0)
+    a = polynomial_junction_coefficients((2.0,) + exps, 7.0, 0.0, 0.0)
     assert np.allclose(a, 7.0 * np.array(polydyne_coefficients(*exps)), rtol=1e-10, atol=1e-12)
 
 

@@ -114,7 +114,12 @@ class _CamBase(_Model):
         return self
 
 
-class KurzCam(_CamBase):
+class _RampKeys(_Model):
+    ramp_type: Literal["cosine", "constant_velocity", "constant_acceleration"] = "cosine"
+    ramp_acceleration_fraction: _bounded(0.0, 1.0) = 0.5
+
+
+class KurzCam(_CamBase, _RampKeys):
     """[valves.NAME.cam] with law = "kurz" (seed 000, work 2)."""
 
     law: Literal["kurz"]
@@ -125,7 +130,7 @@ class KurzCam(_CamBase):
     shape_factor: _bounded(0.0, 1.0, high_open=True) = 0.625
 
 
-class PolydyneCam(_CamBase):
+class PolydyneCam(_CamBase, _RampKeys):
     """[valves.NAME.cam] with law = "polydyne" (seed 000, work 3)."""
 
     law: Literal["polydyne"]
@@ -150,7 +155,68 @@ class PolydyneCam(_CamBase):
         return self
 
 
-Cam = Annotated[Union[KurzCam, PolydyneCam], Field(discriminator="law")]
+class PolynomialCam(_CamBase, _RampKeys):
+    """[valves.NAME.cam] with law = "polynomial": any exponent set (seed 002 section 2.6; spec section 7)."""
+
+    law: Literal["polynomial"]
+    exponents: Annotated[list[_bounded(2.0, 1000.0, low_open=False)], Field(min_length=2, max_length=20)]
+    ramp: bool = False
+    ramp_end_velocity_mm_per_deg: Optional[_bounded(0.0, 1.0, "mm/deg")] = None
+
+    @model_validator(mode="after")
+    def _exponents_and_ramp(self):
+        k = self.exponents
+        if any(b <= a for a, b in zip(k, k[1:])) or any(e < 3 and e != 2 for e in k):
+            raise ValueError(f"exponents = {k}: allowed an increasing list, each 2 or >= 3 (below 3 the jerk is "
+                             "infinite at the nose)")
+        if self.ramp and self.ramp_end_velocity_mm_per_deg is None:
+            raise ValueError("ramp = true needs ramp_end_velocity_mm_per_deg (allowed (0, 1] mm/deg)")
+        return self
+
+
+class ConstantAccelerationCam(_CamBase, _RampKeys):
+    """[valves.NAME.cam] with law = "constant_acceleration" (seed 002 section 2.4; spec section 5)."""
+
+    law: Literal["constant_acceleration"]
+    ramp_end_velocity_mm_per_deg: _bounded(0.0, 1.0, "mm/deg")
+    phi1_deg: _bounded(0.0, 180.0, "deg")
+    phi2_deg: _bounded(0.0, 180.0, "deg")
+    phi3_deg: Optional[_bounded(0.0, 180.0, "deg", low_open=False)] = None
+    kappa: _bounded(0.0, 10.0) = 0.6
+
+
+class ThreeArcCam(_CamBase):
+    """[valves.NAME.cam] with law = "three_arc": convex cam of two arcs (spec section 3); no ramp."""
+
+    law: Literal["three_arc"]
+    nose_radius_mm: Optional[Length(0.0, 500.0)] = None
+    flank_radius_mm: Optional[Length(0.0, 10000.0)] = None
+    flank_angle_deg: Optional[_bounded(0.0, 90.0, "deg", high_open=True)] = None
+
+    @model_validator(mode="after")
+    def _one_parameter(self):
+        given = [k for k in ("nose_radius_mm", "flank_radius_mm", "flank_angle_deg") if getattr(self, k) is not None]
+        if len(given) != 1:
+            raise ValueError(f"give exactly one of nose_radius_mm, flank_radius_mm, flank_angle_deg (got {given or 'none'})")
+        return self
+
+
+class TangentCam(_CamBase):
+    """[valves.NAME.cam] with law = "tangent": straight flanks and a nose arc for a roller follower (spec section 4)."""
+
+    law: Literal["tangent"]
+
+    @model_validator(mode="after")
+    def _roller(self):
+        if self.follower != "roller":
+            raise ValueError("law = \"tangent\" needs follower = \"roller\" (a flat follower on straight flanks is "
+                             "degenerate) and roller_radius_mm")
+        return self
+
+
+Cam = Annotated[Union[KurzCam, PolydyneCam, PolynomialCam, ConstantAccelerationCam, ThreeArcCam, TangentCam],
+                Field(discriminator="law")]
+LAWS = ("kurz", "polydyne", "polynomial", "constant_acceleration", "three_arc", "tangent")
 
 
 class Masses(_Model):
@@ -427,7 +493,8 @@ def main_half_angle_deg(valve, strokes):
 
 
 def kurz_phi3_deg(cam, valve, strokes):
-    """Phi3 in camshaft degrees: given, or the remainder phi_p0 - Phi1 - Phi2 (eq. 2.2)."""
+    """Phi3 in camshaft degrees: given, or the remainder phi_p0 - Phi1 - Phi2 (eq. 2.2; also the
+    constant-acceleration cam's third segment)."""
     if cam.phi3_deg is not None:
         return cam.phi3_deg
     return main_half_angle_deg(valve, strokes) - cam.phi1_deg - cam.phi2_deg
@@ -447,20 +514,20 @@ def _valve_problems(name, v, engine):
     cam = v.cam
     if cam.base_radius_mm <= v.clearance_mm:
         out.append(f"{at}.cam.base_radius_mm = {cam.base_radius_mm:g} must exceed clearance_mm = {v.clearance_mm:g}")
-    if isinstance(cam, KurzCam):
+    if isinstance(cam, (KurzCam, ConstantAccelerationCam)):
         if v.clearance_mm <= 0.0:
-            out.append(f"{at}.clearance_mm = {v.clearance_mm:g}: the Kurz cam's ramp takes up the clearance, "
+            out.append(f"{at}.clearance_mm = {v.clearance_mm:g}: the cam's ramp takes up the clearance, "
                        "allowed (0, 5] mm")
         phi3 = kurz_phi3_deg(cam, v, engine.strokes)
         total = cam.phi1_deg + cam.phi2_deg + phi3
-        if cam.phi3_deg is None and phi3 <= 0.0:
+        if cam.phi3_deg is None and phi3 < 0.0 or (isinstance(cam, KurzCam) and cam.phi3_deg is None and phi3 == 0.0):
             out.append(f"{at}.cam: phi1_deg + phi2_deg = {cam.phi1_deg + cam.phi2_deg:g} leaves no room for phi3 "
                        f"in the half-angle phi_p0 = {half:g} cam deg; allowed phi1_deg + phi2_deg < {half:g}")
         elif abs(total - half) > 1e-6:
             out.append(f"{at}.cam: phi1_deg + phi2_deg + phi3_deg = {total:g} cam deg must equal the half-angle "
                        f"phi_p0 = (opens_deg + 180 + closes_deg)/2 crank deg = {half:g} cam deg (seed 000, eq. 2.2)")
-    elif cam.ramp and v.clearance_mm <= 0.0:
-        out.append(f"{at}.clearance_mm = {v.clearance_mm:g}: a polydyne ramp needs a clearance to take up, "
+    elif getattr(cam, "ramp", False) and v.clearance_mm <= 0.0:
+        out.append(f"{at}.clearance_mm = {v.clearance_mm:g}: a ramp needs a clearance to take up, "
                    "allowed (0, 5] mm")
     if lift_tappet <= 0:
         out.append(f"{at}.max_lift_mm = {v.max_lift_mm:g} must be positive")
@@ -592,9 +659,25 @@ def validate(data):
         problems.insert(0, f"engine.strokes = {spec.engine.strokes}: the valve timing (opens_deg/closes_deg before and "
                            "after TDC/BDC of the gas-exchange strokes) is defined for four-stroke engines; allowed 4 "
                            "with [valves.NAME] sections")
+    if not problems:
+        problems += _law_problems(spec)
     if problems:
         raise SpecError(problems)
     return spec
+
+
+def _law_problems(spec):
+    """Build every valve's law once: inputs that pass the field checks can still admit no cam (a nose radius
+    that does not fit, a negative acceleration level); each becomes a message naming the cam."""
+    from .design import build_law
+
+    out = []
+    for name, v in spec.valves.items():
+        try:
+            build_law(v, spec.engine.strokes)
+        except ValueError as exc:
+            out.append(f"valves.{name}.cam: {exc}")
+    return out
 
 
 def parse_spec(text, source="<string>", source_dir=None):

@@ -12,9 +12,9 @@ import numpy as np
 from .. import flow, geometry
 from ..checks import Finding, check_range
 from ..crank.kinematics import displacement
-from ..laws import KurzLaw, PolydyneLaw
+from ..laws import ConstantAccelerationLaw, KurzLaw, PolydyneLaw, PolynomialLaw, TangentLaw, ThreeArcLaw
 from ..numerics import extremum
-from ..spec import KurzCam, kurz_phi3_deg, main_half_angle_deg
+from ..spec import kurz_phi3_deg, main_half_angle_deg
 from ..units import DEG, MM, rad_to_deg, rpm_to_rad_s
 from .drive import drive_stage
 
@@ -91,17 +91,41 @@ class ValveDesign:
 
 
 def build_law(valve, strokes=4):
-    """The lift law of a valve specification, in SI (tappet side)."""
+    """The lift law of a valve specification, in SI (tappet side).
+
+    Laws with a ramp take up the clearance on it (ramp height = clearance); the arc cams
+    (three-arc, tangent) and the polynomial laws without a ramp start on the base circle.
+    """
     cam = valve.cam
     lift = valve.max_lift_mm / valve.rocker_ratio * MM
-    if isinstance(cam, KurzCam):
-        phi3 = kurz_phi3_deg(cam, valve, strokes)
-        return KurzLaw(lift, valve.clearance_mm * MM, cam.ramp_end_velocity_mm_per_deg * MM / DEG,
-                       cam.phi1_deg * DEG, cam.phi2_deg * DEG, phi3 * DEG, cam.shape_factor)
-    ramp_height = valve.clearance_mm * MM if cam.ramp else 0.0
-    ramp_velocity = cam.ramp_end_velocity_mm_per_deg * MM / DEG if cam.ramp else 0.0
-    return PolydyneLaw(lift, main_half_angle_deg(valve, strokes) * DEG, cam.p, cam.q, cam.r, cam.s,
-                       ramp_height=ramp_height, ramp_velocity=ramp_velocity)
+    half = main_half_angle_deg(valve, strokes) * DEG
+    r0 = cam.base_radius_mm * MM
+    h0 = valve.clearance_mm * MM
+    ramp = {}
+    if getattr(cam, "ramp_end_velocity_mm_per_deg", None) is not None:
+        ramp = dict(ramp_kind=cam.ramp_type, ramp_fraction=cam.ramp_acceleration_fraction)
+        velocity = cam.ramp_end_velocity_mm_per_deg * MM / DEG
+    if cam.law == "kurz":
+        return KurzLaw(lift, h0, velocity, cam.phi1_deg * DEG, cam.phi2_deg * DEG,
+                       kurz_phi3_deg(cam, valve, strokes) * DEG, cam.shape_factor, **ramp)
+    if cam.law == "constant_acceleration":
+        return ConstantAccelerationLaw(lift, h0, velocity, cam.phi1_deg * DEG, cam.phi2_deg * DEG,
+                                       kurz_phi3_deg(cam, valve, strokes) * DEG, cam.kappa, **ramp)
+    if cam.law in ("polydyne", "polynomial"):
+        if cam.ramp:
+            ramp.update(ramp_height=h0, ramp_velocity=velocity)
+        else:
+            ramp = {}
+        if cam.law == "polydyne":
+            return PolydyneLaw(lift, half, cam.p, cam.q, cam.r, cam.s, **ramp)
+        return PolynomialLaw(lift, half, cam.exponents, **ramp)
+    if cam.law == "three_arc":
+        if cam.nose_radius_mm is not None:
+            return ThreeArcLaw(r0, lift, half, cam.nose_radius_mm * MM)
+        if cam.flank_radius_mm is not None:
+            return ThreeArcLaw.from_flank_radius(r0, lift, half, cam.flank_radius_mm * MM)
+        return ThreeArcLaw.from_flank_angle(r0, lift, half, cam.flank_angle_deg * DEG)
+    return TangentLaw(r0, lift, half, cam.roller_radius_mm * MM)
 
 
 def nose_crank_angle(valve):

@@ -1,10 +1,13 @@
 """Cam lift laws.  Every law is a :class:`~valvetrain.laws.base.LiftLaw`."""
 
 from .base import Extremes, LiftLaw, Segment, SymmetricLaw
+from .constant_acceleration import ConstantAccelerationLaw
+from .convex import TangentLaw, ThreeArcLaw
 from .kurz import KurzLaw, kurz_coefficients
-from .polydyne import PolydyneLaw, default_exponents, polydyne_coefficients
+from .polydyne import PolydyneLaw, PolynomialLaw, default_exponents, polydyne_coefficients
+from .ramps import make_ramp
 
 __all__ = [
-    "Extremes", "LiftLaw", "Segment", "SymmetricLaw", "KurzLaw", "kurz_coefficients", "PolydyneLaw",
-    "default_exponents", "polydyne_coefficients",
+    "ConstantAccelerationLaw", "TangentLaw", "ThreeArcLaw", "Extremes", "LiftLaw", "Segment", "SymmetricLaw", "KurzLaw", "kurz_coefficients", "PolydyneLaw",
+    "PolynomialLaw", "default_exponents", "make_ramp", "polydyne_coefficients",
 ]

@@ -60,6 +60,9 @@ class LiftLaw(ABC):
     #: identifier used in specification files and results (``law = "..."``)
     name: str = ""
 
+    #: highest derivative of the lift that is continuous at the junctions (2: acceleration continuous)
+    continuity: int = 2
+
     @property
     @abstractmethod
     def segments(self):

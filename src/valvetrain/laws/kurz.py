@@ -12,7 +12,7 @@ import numpy as np
 
 from ..checks import check_range
 from .base import SymmetricLaw, segment_index
-from .ramps import cosine_ramp, cosine_ramp_length
+from .ramps import make_ramp
 
 RAMP_VELOCITY_RANGE_MM_PER_DEG = (0.008, 0.022)
 """Recommended tappet velocity at the end of the ramp [mm/deg cam] (seed 000, eq. 2.1)."""
@@ -120,6 +120,12 @@ class KurzLaw(SymmetricLaw):
         Segment lengths Phi1, Phi2, Phi3 [rad camshaft]; their sum is phi_p0 (eq. 2.2).
     shape_factor : float
         Z (eq. 2.22), default 5/8.
+    ramp_kind : str
+        ``cosine`` (seed 000, eq. 2.5; default), ``constant_velocity`` or ``constant_acceleration``:
+        the coefficients depend only on the ramp's end velocity, and every ramp ends at zero
+        acceleration, so the main lift joins any of them as in (2.13).
+    ramp_fraction : float
+        Acceleration share of a ``constant_acceleration`` ramp.
 
     Examples
     --------
@@ -130,7 +136,8 @@ class KurzLaw(SymmetricLaw):
 
     name = "kurz"
 
-    def __init__(self, lift, clearance, ramp_velocity, phi1, phi2, phi3, shape_factor=0.625):
+    def __init__(self, lift, clearance, ramp_velocity, phi1, phi2, phi3, shape_factor=0.625, ramp_kind="cosine",
+                 ramp_fraction=0.5):
         if not (lift > 0 and clearance > 0 and ramp_velocity > 0 and phi1 > 0 and phi2 > 0 and phi3 > 0):
             raise ValueError("Kurz law: lift, clearance, ramp velocity and Phi1..Phi3 must be positive")
         if not 0.0 < shape_factor < 1.0:
@@ -140,7 +147,8 @@ class KurzLaw(SymmetricLaw):
         self.ramp_velocity = float(ramp_velocity)
         self.phi1, self.phi2, self.phi3 = float(phi1), float(phi2), float(phi3)
         self.shape_factor = float(shape_factor)
-        self.phi0 = float(cosine_ramp_length(self.clearance, self.ramp_velocity))
+        self.ramp = make_ramp(ramp_kind, self.clearance, self.ramp_velocity, ramp_fraction)
+        self.phi0 = float(self.ramp.length)
         self.c = kurz_coefficients(self._lift, self.ramp_velocity, self.phi1, self.phi2, self.phi3, self.shape_factor)
         self._edges = np.cumsum([0.0, self.phi0, self.phi1, self.phi2, self.phi3])
 
@@ -175,7 +183,7 @@ class KurzLaw(SymmetricLaw):
         seg = segment_index(phi, self._edges)
         x = phi - self._edges[seg]
         m = seg == 0
-        out[:, m] = cosine_ramp(x[m], h0, self.phi0)
+        out[:, m] = self.ramp.evaluate(x[m])
         m = seg == 1
         k = np.pi / self.phi1
         s, co = np.sin(k * x[m]), np.cos(k * x[m])

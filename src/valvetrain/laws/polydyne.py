@@ -1,4 +1,4 @@
-"""Polydyne (high-order polynomial) cam (seed 000, work 3; seed 002, section 2.6).
+"""Polydyne and high-order polynomial cams (seed 000, work 3; seed 002, section 2.6).
 
 .. math:: h = h_{nose}\\,(1 + C_2x^2 + C_px^p + C_qx^q + C_rx^r + C_sx^s),\\quad x = \\theta/\\varphi_{p0}
 
@@ -14,7 +14,7 @@ import numpy as np
 
 from ..checks import check_range
 from .base import SymmetricLaw
-from .ramps import cosine_ramp, cosine_ramp_length
+from .ramps import make_ramp
 
 EXPONENT_P_RANGE = (6, 16)
 """Recommended first exponent p: 6-10 for fast passenger-car engines, 12-16 for trucks (seed 000, work 3)."""
@@ -81,38 +81,153 @@ def _falling(k, j):
     return out
 
 
-def polydyne_junction_coefficients(exponents, nose_lift, end_lift, end_slope):
-    """Polynomial coefficients that meet a ramp: h(1), dh/dx(1) given, h'', h''', h'''' = 0 at x = 1.
+def polynomial_junction_coefficients(exponents, nose_lift, end_lift, end_slope):
+    """Coefficients of h = nose_lift + sum a_k x^k meeting a ramp (or the base circle) at x = 1.
+
+    Conditions: h(1) = ``end_lift``, dh/dx(1) = ``end_slope`` and the 2nd to (N-1)-th
+    derivatives zero at x = 1, for N exponents.
 
     Parameters
     ----------
-    exponents : sequence of 5 floats
-        (2, p, q, r, s).
+    exponents : sequence of float
+        The N exponents (e.g. (2, p, q, r, s)).
     nose_lift : float
         h(0), lift at the nose [L].
     end_lift : float
-        h(1), lift where the polynomial meets the ramp [L].
+        h(1) [L].
     end_slope : float
         dh/dx at x = 1 [L] (negative: the lift falls away from the nose).
 
     Returns
     -------
     ndarray
-        Coefficients a_k [L] of h = nose_lift + sum a_k x^k.
+        a_k [L].
 
     Notes
     -----
-    With ``end_lift = end_slope = 0`` the solution is ``nose_lift`` times the closed form
-    of :func:`polydyne_coefficients` (spec/methods-seeds-002-004.md, section 7, [D]).
+    With five exponents and ``end_lift = end_slope = 0`` the solution is ``nose_lift``
+    times the closed form of :func:`polydyne_coefficients` (spec/methods-seeds-002-004.md,
+    section 7, [D]).
     """
     k = np.asarray(exponents, dtype=float)
-    matrix = np.array([_falling(k, j) for j in range(5)])
-    rhs = np.array([end_lift - nose_lift, end_slope, 0.0, 0.0, 0.0])
+    matrix = np.array([_falling(k, j) for j in range(k.size)])
+    rhs = np.zeros(k.size)
+    rhs[0], rhs[1] = end_lift - nose_lift, end_slope
     return np.linalg.solve(matrix, rhs)
 
 
-class PolydyneLaw(SymmetricLaw):
-    """Polydyne cam law, optionally joined to cosine ramps.
+class PolynomialLaw(SymmetricLaw):
+    """High-order polynomial cam with any exponent set, optionally joined to ramps.
+
+    .. math:: h = h_{nose} + \\sum_k a_k x^k,\\quad x = \\theta/\\varphi_{p0}
+
+    Parameters
+    ----------
+    lift : float
+        Tappet lift above the ramp, h_T max [m].
+    main_half_angle : float
+        phi_p0, from the end of the ramp (or the start of lift) to the nose [rad camshaft].
+    exponents : sequence of float
+        Increasing exponents, each 2 or >= 3 (below 3, other than 2, the jerk is infinite at the nose).
+    ramp_height, ramp_velocity : float
+        Ramp height h0 [m] and end velocity [m/rad]; 0 for no ramp.
+    ramp_kind : str
+        ``cosine``, ``constant_velocity`` or ``constant_acceleration`` (see :mod:`.ramps`).
+    ramp_fraction : float
+        Acceleration share f of a ``constant_acceleration`` ramp.
+
+    Notes
+    -----
+    The coefficients solve :func:`polynomial_junction_coefficients`: lift and slope of the
+    ramp's end, higher derivatives zero, so the law is C2 with every ramp kind (they all
+    end at zero acceleration).
+
+    References
+    ----------
+    seed 000, work 3; seed 002, section 2.6 (高次方凸轮); spec/methods-seeds-002-004.md, section 7.
+    """
+
+    name = "polynomial"
+
+    def __init__(self, lift, main_half_angle, exponents, ramp_height=0.0, ramp_velocity=0.0, ramp_kind="cosine",
+                 ramp_fraction=0.5):
+        k = tuple(float(e) for e in exponents)
+        if len(k) < 2 or any(b <= a for a, b in zip(k, k[1:])) or any(e < 3 and e != 2 for e in k):
+            raise ValueError(f"polynomial exponents {k}: allowed an increasing set of at least two, each 2 or >= 3 "
+                             "(below 3 the jerk is infinite at the nose)")
+        if not (lift > 0 and main_half_angle > 0):
+            raise ValueError("polynomial law: lift and main half angle must be positive")
+        self._lift = float(lift)
+        self.phi_p0 = float(main_half_angle)
+        self.ramp = make_ramp(ramp_kind, ramp_height, ramp_velocity, ramp_fraction) if ramp_height > 0 else None
+        self._k = np.array(k)
+        self._a = self._solve()
+
+    def _solve(self):
+        nose = self._lift + self.ramp_height
+        if self.ramp is None:
+            return polynomial_junction_coefficients(self._k, nose, 0.0, 0.0)
+        return polynomial_junction_coefficients(self._k, nose, self.ramp_height, -self.ramp.end_velocity * self.phi_p0)
+
+    @property
+    def exponents(self):
+        return tuple(float(e) for e in self._k)
+
+    @property
+    def lift_max(self):
+        return self._lift
+
+    @property
+    def ramp_height(self):
+        return self.ramp.height if self.ramp is not None else 0.0
+
+    @property
+    def ramp_angle(self):
+        return self.ramp.length if self.ramp is not None else 0.0
+
+    @property
+    def main_half_angle(self):
+        """phi_p0 [rad camshaft]."""
+        return self.phi_p0
+
+    @property
+    def half_angle(self):
+        return self.ramp_angle + self.phi_p0
+
+    def _rise_segments(self):
+        ramp = [("ramp", 0.0, self.ramp_angle)] if self.ramp is not None else []
+        return ramp + [(self.name, self.ramp_angle, self.half_angle)]
+
+    def _rise(self, phi):
+        out = np.empty((4, phi.size))
+        ramp = phi < self.ramp_angle
+        if self.ramp is not None:
+            out[:, ramp] = self.ramp.evaluate(phi[ramp])
+        x = (self.half_angle - phi[~ramp]) / self.phi_p0
+        # d^j/dx^j of sum a_k x^k: a quadratic term directly, the others from one power x^(k-3) per exponent
+        quad = self._k == 2.0
+        c2 = float(self._a[quad].sum())
+        a, k = self._a[~quad, None], self._k[~quad, None]
+        base = x[None, :] ** (k - 3.0)
+        x1 = x[None, :]
+        series = [(a * base * x1**3).sum(0) + c2 * x * x, (a * k * base * x1**2).sum(0) + 2.0 * c2 * x,
+                  (a * _falling(k, 2) * base * x1).sum(0) + 2.0 * c2, (a * _falling(k, 3) * base).sum(0)]
+        nose = self._lift + self.ramp_height
+        # d/dphi = -d/dtheta_from_nose = -(1/phi_p0) d/dx
+        out[:, ~ramp] = [nose + series[0], -series[1] / self.phi_p0, series[2] / self.phi_p0**2,
+                         -series[3] / self.phi_p0**3]
+        return out
+
+    def coefficients(self):
+        """a_k / h_nose (dimensionless, h = h_nose (1 + sum C_k x^k)) keyed ``C<k>``, and the exponents."""
+        c = self._a / (self._lift + self.ramp_height)
+        out = {f"C{e:g}": float(v) for e, v in zip(self._k, c, strict=True)}
+        out["exponents"] = list(self.exponents)
+        return out
+
+
+class PolydyneLaw(PolynomialLaw):
+    """Polydyne cam of seed 000, work 3: exponents 2, p, q, r, s (default progression), optionally joined to ramps.
 
     Parameters
     ----------
@@ -124,10 +239,12 @@ class PolydyneLaw(SymmetricLaw):
         First exponent, >= 3 (below 3 the jerk is infinite at the nose).
     q, r, s : float, optional
         Further exponents; default the progression of :func:`default_exponents`.
-    ramp_height : float
-        Cosine-ramp height h0 [m]; 0 (default) for no ramp, as in seed 000.
-    ramp_velocity : float
-        Ramp end velocity per camshaft radian [m/rad]; required with a ramp.
+    ramp_height, ramp_velocity, ramp_kind, ramp_fraction
+        As for :class:`PolynomialLaw`; no ramp by default, as in seed 000.
+
+    Notes
+    -----
+    Without a ramp the coefficients are the closed form (3.4)-(3.8) times h_T max.
 
     Examples
     --------
@@ -138,82 +255,27 @@ class PolydyneLaw(SymmetricLaw):
 
     name = "polydyne"
 
-    def __init__(self, lift, main_half_angle, p, q=None, r=None, s=None, ramp_height=0.0, ramp_velocity=0.0):
+    def __init__(self, lift, main_half_angle, p, q=None, r=None, s=None, ramp_height=0.0, ramp_velocity=0.0,
+                 ramp_kind="cosine", ramp_fraction=0.5):
         dp, dq, dr, ds = default_exponents(p)
-        self.exponents = (float(p), float(dq if q is None else q), float(dr if r is None else r),
-                          float(ds if s is None else s))
-        if not 3 <= self.exponents[0] < self.exponents[1] < self.exponents[2] < self.exponents[3]:
-            raise ValueError(f"polydyne exponents {self.exponents}: allowed 3 <= p < q < r < s "
+        exps = (float(p), float(dq if q is None else q), float(dr if r is None else r), float(ds if s is None else s))
+        if not 3 <= exps[0] < exps[1] < exps[2] < exps[3]:
+            raise ValueError(f"polydyne exponents {exps}: allowed 3 <= p < q < r < s "
                              "(p < 3 makes the jerk infinite at the nose)")
-        if not (lift > 0 and main_half_angle > 0):
-            raise ValueError("polydyne law: lift and main half angle must be positive")
-        if ramp_height < 0 or (ramp_height > 0 and not ramp_velocity > 0):
-            raise ValueError("polydyne law: a ramp needs a positive height and end velocity")
-        self._lift = float(lift)
-        self.phi_p0 = float(main_half_angle)
-        self._ramp_height = float(ramp_height)
-        self.ramp_velocity = float(ramp_velocity) if ramp_height > 0 else 0.0
-        self.phi0 = float(cosine_ramp_length(ramp_height, ramp_velocity)) if ramp_height > 0 else 0.0
-        nose = self._lift + self._ramp_height
-        if self._ramp_height > 0:
-            self._a = polydyne_junction_coefficients((2.0,) + self.exponents, nose, self._ramp_height,
-                                                     -self.ramp_velocity * self.phi_p0)
-        else:
-            self._a = nose * np.array(polydyne_coefficients(*self.exponents))
-        self._k = np.array((2.0,) + self.exponents)
+        super().__init__(lift, main_half_angle, (2.0,) + exps, ramp_height, ramp_velocity, ramp_kind, ramp_fraction)
 
-    @property
-    def lift_max(self):
-        return self._lift
-
-    @property
-    def ramp_height(self):
-        return self._ramp_height
-
-    @property
-    def ramp_angle(self):
-        return self.phi0
-
-    @property
-    def main_half_angle(self):
-        """phi_p0 [rad camshaft]."""
-        return self.phi_p0
-
-    @property
-    def half_angle(self):
-        return self.phi0 + self.phi_p0
-
-    def _rise_segments(self):
-        ramp = [("ramp", 0.0, self.phi0)] if self.phi0 > 0 else []
-        return ramp + [("polydyne", self.phi0, self.half_angle)]
-
-    def _rise(self, phi):
-        out = np.empty((4, phi.size))
-        ramp = phi < self.phi0
-        if self.phi0 > 0:
-            out[:, ramp] = cosine_ramp(phi[ramp], self._ramp_height, self.phi0)
-        x = (self.half_angle - phi[~ramp]) / self.phi_p0
-        # d^j/dx^j of sum a_k x^k: the x^2 term directly, the others from one power x^(k-3) per exponent
-        c2, a = self._a[0], self._a[1:, None]
-        k = self._k[1:, None]
-        base = x[None, :] ** (k - 3.0)
-        x1 = x[None, :]
-        series = [(a * base * x1**3).sum(0) + c2 * x * x, (a * k * base * x1**2).sum(0) + 2.0 * c2 * x,
-                  (a * _falling(k, 2) * base * x1).sum(0) + 2.0 * c2, (a * _falling(k, 3) * base).sum(0)]
-        nose = self._lift + self._ramp_height
-        # d/dphi = -d/dtheta_from_nose = -(1/phi_p0) d/dx
-        out[:, ~ramp] = [nose + series[0], -series[1] / self.phi_p0, series[2] / self.phi_p0**2,
-                         -series[3] / self.phi_p0**3]
-        return out
+    def _solve(self):
+        if self.ramp is None:
+            return self._lift * np.array(polydyne_coefficients(*self._k[1:]))
+        return super()._solve()
 
     def coefficients(self):
         """C2, Cp, Cq, Cr, Cs of h = h_nose (1 + sum C x^k) (dimensionless) and the exponents p, q, r, s."""
-        c = self._a / (self._lift + self._ramp_height)
+        c = self._a / (self._lift + self.ramp_height)
         out = dict(zip(("C2", "Cp", "Cq", "Cr", "Cs"), map(float, c), strict=True))
-        out.update(zip(("p", "q", "r", "s"), self.exponents, strict=True))
+        out.update(zip(("p", "q", "r", "s"), map(float, self._k[1:]), strict=True))
         return out
 
     def checks(self):
         """The recommended range of p (seed 000, work 3)."""
-        return check_range("polydyne exponent p", self.exponents[0], *EXPONENT_P_RANGE,
-                           source="seed 000, work 3")
+        return check_range("polydyne exponent p", self._k[1], *EXPONENT_P_RANGE, source="seed 000, work 3")

@@ -67,3 +67,120 @@ def cosine_ramp(phi, height, length):
     k = np.pi / (2.0 * length)
     s, c = np.sin(k * phi), np.cos(k * phi)
     return np.stack([height * (1.0 - c), height * k * s, height * k**2 * c, -height * k**3 * s])
+
+
+class Ramp:
+    """A ramp (clearance take-up segment): height h0 [m], end velocity w' [m/rad], zero end acceleration.
+
+    ``evaluate(phi)`` gives lift and three derivatives, shape (4, n), for 0 <= phi <= length
+    (camshaft angle from the start of the ramp).  Every ramp ends with zero acceleration,
+    so a main segment starting with zero acceleration joins it with continuous
+    acceleration.
+    """
+
+    kind = ""
+
+    #: whether the ramp starts with zero velocity (a constant-velocity ramp starts with a velocity step)
+    starts_at_rest = True
+
+    def __init__(self, height, end_velocity):
+        if not (height > 0 and end_velocity > 0):
+            raise ValueError(f"{self.kind} ramp: height and end velocity must be positive")
+        self.height = float(height)
+        self.end_velocity = float(end_velocity)
+
+    @property
+    def length(self):
+        """Ramp length [rad camshaft]."""
+        raise NotImplementedError
+
+    def evaluate(self, phi):
+        raise NotImplementedError
+
+
+class CosineRamp(Ramp):
+    """Cosine ramp of seed 000, eqs. (2.1) and (2.5); the acceleration jumps at its start (train unloaded)."""
+
+    kind = "cosine"
+
+    @property
+    def length(self):
+        return float(cosine_ramp_length(self.height, self.end_velocity))
+
+    def evaluate(self, phi):
+        return cosine_ramp(phi, self.height, self.length)
+
+
+class ConstantVelocityRamp(Ramp):
+    """Constant-velocity ramp h = w' phi, length h0 / w' (spec/methods-seeds-002-004.md, section 2).
+
+    The velocity steps from 0 to w' at the start of the ramp, while the clearance is still open.
+    """
+
+    kind = "constant_velocity"
+    starts_at_rest = False
+
+    @property
+    def length(self):
+        return self.height / self.end_velocity
+
+    def evaluate(self, phi):
+        phi = np.asarray(phi, dtype=float)
+        z = np.zeros_like(phi)
+        return np.stack([self.end_velocity * phi, z + self.end_velocity, z, z])
+
+
+class ConstantAccelerationRamp(Ramp):
+    """Constant acceleration over a fraction f of the ramp, then constant velocity (等加速-等速).
+
+    Notes
+    -----
+    On :math:`[0, f\\alpha_r]`: :math:`h = \\frac{v_0}{2f\\alpha_r}t^2`; after it :math:`h = v_0 t - v_0 f\\alpha_r/2`;
+    the height is :math:`h_0 = v_0\\alpha_r(1 - f/2)`, hence :math:`\\alpha_r = h_0 / (v_0 (1 - f/2))`.
+
+    References
+    ----------
+    spec/methods-seeds-002-004.md, section 2 (cited from CN103422923B as used for ramps).
+
+    Examples
+    --------
+    Section 5 of the same spec: h0 = 0.35 mm, alpha_r = 20 deg, f = 0.5 give v0 = 1.3369 mm/rad and a ramp
+    acceleration of 7.66 mm/rad^2.
+
+    >>> r = ConstantAccelerationRamp(0.35, 1.33690, 0.5)
+    >>> round(float(np.degrees(r.length)), 3), round(float(r.evaluate(np.array([0.01]))[2, 0]), 2)
+    (20.0, 7.66)
+    """
+
+    kind = "constant_acceleration"
+
+    def __init__(self, height, end_velocity, fraction=0.5):
+        super().__init__(height, end_velocity)
+        if not 0.0 < fraction <= 1.0:
+            raise ValueError(f"constant-acceleration ramp: fraction f = {fraction!r}: allowed (0, 1]")
+        self.fraction = float(fraction)
+
+    @property
+    def length(self):
+        return self.height / (self.end_velocity * (1.0 - self.fraction / 2.0))
+
+    def evaluate(self, phi):
+        phi = np.asarray(phi, dtype=float)
+        ta = self.fraction * self.length
+        acc = self.end_velocity / ta
+        first = phi < ta
+        z = np.zeros_like(phi)
+        h = np.where(first, 0.5 * acc * phi**2, self.end_velocity * phi - self.end_velocity * ta / 2.0)
+        v = np.where(first, acc * phi, self.end_velocity)
+        return np.stack([h, v, np.where(first, acc, 0.0), z])
+
+
+RAMPS = {"cosine": CosineRamp, "constant_velocity": ConstantVelocityRamp,
+         "constant_acceleration": ConstantAccelerationRamp}
+
+
+def make_ramp(kind, height, end_velocity, fraction=0.5):
+    """A ramp of the named kind (``cosine``, ``constant_velocity``, ``constant_acceleration``)."""
+    if kind == "constant_acceleration":
+        return ConstantAccelerationRamp(height, end_velocity, fraction)
+    return RAMPS[kind](height, end_velocity)

@@ -1,0 +1,131 @@
+"""The further laws of issue 5: ramps, polynomial, constant acceleration, three-arc and tangent cams."""
+
+import numpy as np
+import pytest
+
+from valvetrain import geometry
+from valvetrain.laws import (ConstantAccelerationLaw, KurzLaw, PolydyneLaw, PolynomialLaw, TangentLaw, ThreeArcLaw,
+                             make_ramp)
+
+DEG = np.pi / 180
+
+
+@pytest.mark.parametrize("kind", ["cosine", "constant_velocity", "constant_acceleration"])
+def test_ramps_end_on_height_velocity_and_zero_acceleration(kind):
+    r = make_ramp(kind, 0.3e-3, 0.6e-3, 0.4)
+    end = r.evaluate(np.array([r.length]))[:, 0]
+    assert end[:3] == pytest.approx([0.3e-3, 0.6e-3, 0.0], abs=1e-15)
+    start = r.evaluate(np.array([0.0]))[:, 0]
+    assert start[0] == 0.0
+    # lengths (spec section 2): cosine pi h0 / (2 v0), constant velocity h0 / v0, constant acceleration h0 / (v0 (1 - f/2))
+    expected = {"cosine": np.pi * 0.3 / 1.2, "constant_velocity": 0.5, "constant_acceleration": 0.3 / (0.6 * 0.8)}
+    assert r.length == pytest.approx(expected[kind], rel=1e-12)
+
+
+def test_kurz_with_another_ramp_keeps_its_coefficients():
+    """(2.28)-(2.34) depend on the ramp's end velocity only (seed 000): a constant-velocity ramp changes Phi0 only."""
+    args = (6.25e-3, 0.25e-3, 0.02e-3 / DEG, *np.radians([27, 6, 38]))
+    a, b = KurzLaw(*args), KurzLaw(*args, ramp_kind="constant_velocity")
+    assert a.coefficients() == b.coefficients()
+    assert b.ramp_angle == pytest.approx(0.25e-3 / (0.02e-3 / DEG))
+    j = b.start + b.ramp_angle
+    d = b.derivatives(np.array([j - 1e-12, j + 1e-12]))
+    assert np.allclose(d[:3, 0], d[:3, 1], atol=1e-9)
+
+
+def test_constant_acceleration_worked_example():
+    """spec/methods-seeds-002-004.md section 5: h_max 8, h0 0.35, alpha_r 20 deg (constant-acceleration ramp,
+    f = 0.5), 18/20/12 deg, kappa 0.6: A1 54.142, A2 38.646 mm/rad2, v0 1.3369 mm/rad (23.3 um/deg), closure exact,
+    acceleration levels {54.142, 7.66, 0, -23.187, -38.646}."""
+    v0 = 0.35 / (np.radians(20) * 0.75)
+    assert v0 == pytest.approx(1.3369, abs=1e-4)
+    law = ConstantAccelerationLaw(7.65, 0.35, v0, *np.radians([18, 20, 12]), kappa=0.6,
+                                  ramp_kind="constant_acceleration", ramp_fraction=0.5)
+    assert (law.a1, law.a2) == pytest.approx((54.142, 38.646), abs=1e-3)
+    nose = law.derivatives(np.array([0.0]))[:, 0]
+    assert nose[0] == pytest.approx(8.0, abs=1e-12)
+    assert nose[1] == pytest.approx(0.0, abs=1e-12)
+    levels = np.unique(np.round(law.derivatives(np.linspace(law.start, 0, 4001))[2], 3))
+    assert set(levels) <= {54.142, 7.66, -23.188, -23.187, -38.646, 0.0}
+    assert {54.142, 7.66, -38.646} <= set(levels)
+
+
+def _arcs(law, n=20001):
+    """Points of the three-arc contour built from its circles (independent of the lift formulas)."""
+    t = np.linspace(-np.pi, np.pi, n)
+    pts = []
+    nose = np.abs(t) <= law.phi2
+    pts.append(np.stack([law.r2 * np.sin(t[nose]), law.a + law.r2 * np.cos(t[nose])]))
+    for side in (1, -1):
+        d0 = np.array([side * np.sin(law.phi_p0), np.cos(law.phi_p0)])
+        o1 = -(law.r1 - law.r0) * d0
+        tt = t[(np.abs(t) >= law.phi2) & (np.abs(t) <= law.phi_p0) & (side * t > 0)]
+        pts.append(o1[:, None] + law.r1 * np.stack([np.sin(tt), np.cos(tt)]))
+    base = np.abs(t) >= law.phi_p0
+    pts.append(law.r0 * np.stack([np.sin(t[base]), np.cos(t[base])]))
+    return np.concatenate(pts, axis=1)
+
+
+def test_three_arc_worked_example_and_support_function():
+    """spec section 3: r0 20, h 8, phi_p0 60 deg, r2 5: a 23, r1 63.4286, phi1 19.9320 deg; the flat follower's lift is
+    the support function of the arc contour (spec: max error 6e-8 mm)."""
+    law = ThreeArcLaw(20.0, 8.0, np.radians(60), 5.0)
+    assert (law.a, law.r1) == pytest.approx((23.0, 63.4286), abs=1e-4)
+    assert np.degrees(law.phi1) == pytest.approx(19.9320, abs=1e-4)
+    pts = _arcs(law)
+    probe = np.linspace(-np.pi, np.pi, 181)
+    u = np.stack([np.sin(probe), np.cos(probe)])
+    support = (pts.T @ u).max(axis=0)
+    assert np.abs(support - (20.0 + law.lift(probe))).max() < 1e-5
+    # radius of curvature from seed 002 eq. (2.6): r1 on the flank, r2 on the nose
+    rho = geometry.flat_follower_curvature(20.0, law.lift(np.radians([-50.0, -5.0])), law.derivatives(
+        np.radians([-50.0, -5.0]))[2])
+    assert rho == pytest.approx([law.r1, law.r2], rel=1e-12)
+    # nose lift = h_max, contour radius r0 + h at the nose (spec: 28.000000)
+    assert 20.0 + law.lift(0.0) == pytest.approx(28.0, abs=1e-12)
+
+
+def test_three_arc_from_flank_angle_and_radius():
+    """spec section 3: from_phi1(25 deg) gives r2 2.02655, r1 55.2511; from the flank radius back to the same cam."""
+    law = ThreeArcLaw.from_flank_angle(20.0, 8.0, np.radians(60), np.radians(25))
+    assert (law.r2, law.r1) == pytest.approx((2.02655, 55.2511), abs=1e-4)
+    again = ThreeArcLaw.from_flank_radius(20.0, 8.0, np.radians(60), law.r1)
+    assert again.r2 == pytest.approx(law.r2, rel=1e-9)
+
+
+def test_tangent_cam_roller_centre_distance():
+    """spec section 4: r0 20, h 8, phi_p0 60 deg, r_r 10: r2 12, junction 24.7913 deg, h there 3.04542; the roller
+    centre stays one roller radius from the profile built of base circle, tangent lines and nose arc
+    (spec: max error 4.3e-7 mm)."""
+    law = TangentLaw(20.0, 8.0, np.radians(60), 10.0)
+    assert law.r2 == pytest.approx(12.0, abs=1e-12)
+    assert np.degrees(law.junction) == pytest.approx(24.7913, abs=1e-4)
+    assert law.lift(-law.half_angle + law.junction) == pytest.approx(3.04542, abs=1e-5)
+    t = np.linspace(-np.pi, np.pi, 40001)
+    profile = [law.r0 * np.stack([np.sin(t), np.cos(t)])[:, np.abs(t) >= law.phi_p0]]
+    nose = np.abs(t) <= law.phi_p0
+    profile.append(np.stack([law.r2 * np.sin(t[nose]), law.a + law.r2 * np.cos(t[nose])]))
+    for side in (1, -1):
+        d0 = np.array([side * np.sin(law.phi_p0), np.cos(law.phi_p0)])
+        a0, a2 = law.r0 * d0, np.array([0.0, law.a]) + law.r2 * d0
+        s = np.linspace(0, 1, 4001)
+        profile.append(a0[:, None] + (a2 - a0)[:, None] * s[None, :])
+    pts = np.concatenate(profile, axis=1)
+    probe = np.linspace(-law.half_angle, law.half_angle, 121)
+    centres = (law.r0 + law.rr + law.lift(probe)) * np.stack([np.sin(probe), np.cos(probe)])
+    dist = np.hypot(pts[0][None, :] - centres[0][:, None], pts[1][None, :] - centres[1][:, None]).min(axis=1)
+    assert np.abs(dist - law.rr).max() < 2e-4
+
+
+def test_polynomial_generalises_polydyne():
+    """The 5-exponent polynomial law with (2, p, q, r, s) is the polydyne law (spec section 7)."""
+    a = PolynomialLaw(6.25e-3, np.radians(71), [2, 8, 14, 20, 26])
+    b = PolydyneLaw(6.25e-3, np.radians(71), 8)
+    theta = np.linspace(-1.3, 1.3, 101)
+    assert np.allclose(a.derivatives(theta), b.derivatives(theta), rtol=1e-9, atol=1e-15)
+    # seven exponents: lift, slope and five more derivatives vanish at the start
+    c = PolynomialLaw(6e-3, np.radians(65), [2, 6, 10, 14, 18, 22, 26])
+    scale = np.abs(c.derivatives(np.linspace(c.start, c.end, 721))).max(axis=1)
+    assert np.all(np.abs(c.derivatives(np.array([c.start]))[:, 0]) < 1e-10 * scale)
+    with pytest.raises(ValueError, match="each 2 or >= 3"):
+        PolynomialLaw(6e-3, 1.0, [2, 2.5, 8])
