@@ -118,7 +118,8 @@ def roller_pitch_curvature(base_radius, roller_radius, h, dh, d2h):
     -----
     .. math:: \\rho_p = \\frac{(g^2 + g'^2)^{3/2}}{g^2 + 2g'^2 - g g''}
 
-    Positive where the pitch curve is convex, negative where concave.
+    Positive where the pitch curve is convex, negative where concave, infinite on a straight
+    stretch (the flank of a tangent cam).
 
     References
     ----------
@@ -132,7 +133,8 @@ def roller_pitch_curvature(base_radius, roller_radius, h, dh, d2h):
     30.0
     """
     g = roller_pitch_radius(base_radius, roller_radius, h)
-    return (g * g + dh * dh) ** 1.5 / (g * g + 2.0 * dh * dh - g * d2h)
+    with np.errstate(divide="ignore"):  # a straight pitch line (tangent cam flank) has an infinite radius
+        return (g * g + dh * dh) ** 1.5 / (g * g + 2.0 * dh * dh - g * d2h)
 
 
 def roller_follower_curvature(base_radius, roller_radius, h, dh, d2h):

@@ -237,6 +237,9 @@ def design_valve(name, v, spec):
     x_min, rho_min = min(extremum(convex, bp, "min"), (np.pi, heel), key=lambda p: p[1])
     x_max, rho_max = max(extremum(lambda t: np.where(np.isinf(convex(t)), -np.inf, convex(t)), bp, "max"),
                          (np.pi, heel), key=lambda p: p[1])
+    straight = bool(np.any(np.isposinf(_profile(law, theta, heel, cam.follower, roller)[1])))
+    if straight:  # straight flanks (tangent cam): the largest radius is infinite
+        x_max, rho_max = None, None
 
     summary_cam = {
         "law": law.name,
@@ -245,9 +248,10 @@ def design_valve(name, v, spec):
         "max_acceleration_m_s2": ext.max_acceleration,
         "min_acceleration_m_s2": ext.min_acceleration,
         "rho_min_mm": rho_min / MM,
-        "rho_max_mm": rho_max / MM,
+        "rho_max_mm": None if straight else rho_max / MM,
         "rho_min_cam_deg": rad_to_deg(x_min),
-        "rho_max_cam_deg": rad_to_deg(x_max),
+        "rho_max_cam_deg": None if straight else rad_to_deg(x_max),
+        "straight_flanks": straight,
         "phi_p0_deg": rad_to_deg(law.main_half_angle),
         "ramp_deg": rad_to_deg(law.ramp_angle),
         "ramp_height_mm": law.ramp_height / MM,

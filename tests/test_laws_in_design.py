@@ -1,0 +1,97 @@
+"""Every law runs through the whole design chain (flow, contour, springs, strength, report) without special cases."""
+
+import json
+
+from click.testing import CliRunner
+import numpy as np
+import pytest
+
+from valvetrain.cli import main
+from valvetrain.design import run
+from valvetrain.spec import example_text, parse_spec
+
+KURZ_KEYS = '''law = "kurz"                 # "kurz" or "polydyne"'''
+KURZ_BLOCK = ["ramp_end_velocity_mm_per_deg = 0.02\n", "phi1_deg = 27.0", "phi2_deg = 6.0", "phi3_deg = 38.0",
+              "shape_factor = 0.625"]
+
+CAMS = {
+    "polynomial": 'law = "polynomial"\nexponents = [2, 6, 10, 14, 18, 22]\nramp = true\n'
+                  'ramp_end_velocity_mm_per_deg = 0.015\nramp_type = "constant_acceleration"',
+    "constant_acceleration": 'law = "constant_acceleration"\nramp_end_velocity_mm_per_deg = 0.02\n'
+                             'phi1_deg = 22.0\nphi2_deg = 30.0\nkappa = 0.6',
+    "three_arc": 'law = "three_arc"\nflank_angle_deg = 25.0',
+    "tangent": 'law = "tangent"',
+}
+
+
+def _spec(law):
+    text = example_text()
+    for line in KURZ_BLOCK:
+        text = text.replace(line, "", 1)
+    text = text.replace(KURZ_KEYS, CAMS[law])
+    if law == "tangent":
+        text = text.replace('follower = "flat"', 'follower = "roller"\nroller_radius_mm = 11.0')
+    return parse_spec(text)
+
+
+@pytest.mark.parametrize("law", sorted(CAMS))
+def test_law_runs_through_the_design(law):
+    res = run(_spec(law))
+    v = res.to_dict()["valves"]["intake"]
+    assert v["cam"]["law"] == law
+    # the valve lift reaches the specified 10 mm (at the valve), the tappet lift 6.25 mm above the ramp
+    assert float(res.valves["intake"].table.valve_lift.max()) * 1e3 == pytest.approx(10.0, abs=1e-3)
+    assert v["cam"]["tappet_lift_mm"] == pytest.approx(6.25)
+    for key in ("time_area_mm2_s", "V3_m_s", "fullness"):
+        assert np.isfinite(v["flow"][key])
+    assert v["spring"]["max_force_N"] > v["spring"]["preload_N"] > 0
+    assert v["strength"]["checks"]
+
+
+def test_constant_acceleration_phi3_is_the_remainder():
+    cam = _spec("constant_acceleration").valves["intake"].cam
+    res = run(_spec("constant_acceleration"))
+    law = res.valves["intake"].law
+    # 71 - 22 - 30 = 19 cam deg for the third segment (the remainder of phi_p0, as for Kurz)
+    assert np.degrees(law.phi[2]) == pytest.approx(71.0 - cam.phi1_deg - cam.phi2_deg)
+
+
+def test_three_arc_construction_in_results():
+    cam = run(_spec("three_arc")).to_dict()["valves"]["intake"]["cam"]
+    assert cam["coefficients"]["phi1_deg"] == pytest.approx(25.0, abs=1e-9)
+    # flat follower on arcs: the profile radius is the nose radius at the nose, the flank radius on the flank
+    assert cam["rho_min_mm"] == pytest.approx(cam["coefficients"]["r2"], rel=1e-9)
+    assert cam["rho_max_mm"] == pytest.approx(cam["coefficients"]["r1"], rel=1e-9)
+
+
+def test_impossible_arc_cam_is_refused(tmp_path):
+    f = tmp_path / "bad.toml"
+    text = example_text()
+    for line in KURZ_BLOCK:
+        text = text.replace(line, "", 1)
+    f.write_text(text.replace(KURZ_KEYS, 'law = "three_arc"\nnose_radius_mm = 19.9'))
+    result = CliRunner().invoke(main, ["validate", str(f)])
+    assert result.exit_code == 2
+    assert "valves.intake.cam: three-arc cam" in result.output
+
+
+def test_tangent_needs_a_roller(tmp_path):
+    f = tmp_path / "bad.toml"
+    text = example_text()
+    for line in KURZ_BLOCK:
+        text = text.replace(line, "", 1)
+    f.write_text(text.replace(KURZ_KEYS, 'law = "tangent"'))
+    result = CliRunner().invoke(main, ["validate", str(f)])
+    assert result.exit_code == 2 and 'needs follower = "roller"' in result.output
+
+
+def test_report_for_an_arc_cam(tmp_path):
+    out = tmp_path / "d"
+    f = tmp_path / "e.toml"
+    text = example_text()
+    for line in KURZ_BLOCK:
+        text = text.replace(line, "", 1)
+    f.write_text(text.replace(KURZ_KEYS, CAMS["three_arc"]))
+    assert CliRunner().invoke(main, ["run", str(f), "--out", str(out)]).exit_code == 0
+    assert json.loads((out / "results.json").read_text())["valves"]["intake"]["cam"]["law"] == "three_arc"
+    assert "three_arc" in (out / "report.html").read_text()
