@@ -20,6 +20,9 @@ CAMS = {
     "constant_acceleration": 'law = "constant_acceleration"\nramp_end_velocity_mm_per_deg = 0.02\n'
                              'phi1_deg = 22.0\nphi2_deg = 30.0\nkappa = 0.6',
     "three_arc": 'law = "three_arc"\nflank_angle_deg = 25.0',
+    "combined": 'law = "combined"\nramp_end_velocity_mm_per_deg = 0.02\nsegments = [{shape = "half_sine", '
+                'length_deg = 25.0}, {shape = "quarter_sine", length_deg = 8.0}, {shape = "parabola_to_nose", '
+                'length_deg = 38.0}]\nratios = [{segment = 2, value = 0.625}]',
     "tangent": 'law = "tangent"',
 }
 

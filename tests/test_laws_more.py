@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from valvetrain import geometry
-from valvetrain.laws import (ConstantAccelerationLaw, KurzLaw, PolydyneLaw, PolynomialLaw, TangentLaw, ThreeArcLaw,
+from valvetrain.laws import (CombinedLaw, ConstantAccelerationLaw, KurzLaw, PolydyneLaw, PolynomialLaw, TangentLaw, ThreeArcLaw,
                              make_ramp)
 
 DEG = np.pi / 180
@@ -129,3 +129,22 @@ def test_polynomial_generalises_polydyne():
     assert np.all(np.abs(c.derivatives(np.array([c.start]))[:, 0]) < 1e-10 * scale)
     with pytest.raises(ValueError, match="each 2 or >= 3"):
         PolynomialLaw(6e-3, 1.0, [2, 2.5, 8])
+
+
+def test_combined_rebuilds_kurz():
+    """The combined-function mechanism with Kurz's segments (half-sine, quarter-sine, parabola to the nose,
+    Z = 5/8) is the Kurz law of seed 000 to round-off (spec section 6: Kurz is a combined-function cam)."""
+    w = 0.02e-3 / DEG
+    kurz = KurzLaw(6.25e-3, 0.25e-3, w, *np.radians([27, 6, 38]))
+    combined = CombinedLaw(6.25e-3, 0.25e-3, w, [("half_sine", np.radians(27)), ("quarter_sine", np.radians(6)),
+                                                  ("parabola_to_nose", np.radians(38))], ratios=[(1, 0.625)])
+    theta = np.linspace(-kurz.half_angle, kurz.half_angle, 2001)
+    scale = np.abs(kurz.derivatives(theta)).max(axis=1)
+    assert np.all(np.abs(kurz.derivatives(theta) - combined.derivatives(theta)).max(axis=1) < 1e-12 * scale)
+    # the first amplitude is c12 (pi/Phi1)^2 of (2.6)
+    assert combined.amplitude(0)[0] * 1e3 == pytest.approx(kurz.coefficients()["c12"] * (np.pi / np.radians(27)) ** 2)
+
+
+def test_combined_needs_a_square_system():
+    with pytest.raises(ValueError, match="unknown amplitudes"):
+        CombinedLaw(6e-3, 0.25e-3, 1e-3, [("half_sine", 0.5), ("linear", 0.4), ("parabola_to_nose", 0.3)])

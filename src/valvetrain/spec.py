@@ -185,6 +185,36 @@ class ConstantAccelerationCam(_CamBase, _RampKeys):
     kappa: _bounded(0.0, 10.0) = 0.6
 
 
+class Segment(_Model):
+    """One acceleration segment of a combined-function cam."""
+
+    shape: Literal["half_sine", "quarter_sine", "quarter_cosine", "constant", "linear", "parabola_to_nose"]
+    length_deg: _bounded(0.0, 180.0, "deg")
+
+
+class Ratio(_Model):
+    """a(end of segment) = value x a(nose), e.g. Kurz's Z."""
+
+    segment: Annotated[int, Field(ge=1, le=50)]
+    value: _bounded(-100.0, 100.0)
+
+
+class CombinedCam(_CamBase, _RampKeys):
+    """[valves.NAME.cam] with law = "combined": acceleration segments with continuous acceleration (spec section 6)."""
+
+    law: Literal["combined"]
+    ramp_end_velocity_mm_per_deg: _bounded(0.0, 1.0, "mm/deg")
+    segments: Annotated[list[Segment], Field(min_length=1, max_length=50)]
+    ratios: list[Ratio] = []
+
+    @model_validator(mode="after")
+    def _ratio_segments_exist(self):
+        bad = [r.segment for r in self.ratios if r.segment > len(self.segments)]
+        if bad:
+            raise ValueError(f"ratios name segments {bad}; allowed 1...{len(self.segments)}")
+        return self
+
+
 class ThreeArcCam(_CamBase):
     """[valves.NAME.cam] with law = "three_arc": convex cam of two arcs (spec section 3); no ramp."""
 
@@ -214,9 +244,9 @@ class TangentCam(_CamBase):
         return self
 
 
-Cam = Annotated[Union[KurzCam, PolydyneCam, PolynomialCam, ConstantAccelerationCam, ThreeArcCam, TangentCam],
-                Field(discriminator="law")]
-LAWS = ("kurz", "polydyne", "polynomial", "constant_acceleration", "three_arc", "tangent")
+Cam = Annotated[Union[KurzCam, PolydyneCam, PolynomialCam, ConstantAccelerationCam, CombinedCam, ThreeArcCam,
+                      TangentCam], Field(discriminator="law")]
+LAWS = ("kurz", "polydyne", "polynomial", "constant_acceleration", "combined", "three_arc", "tangent")
 
 
 class Masses(_Model):
@@ -526,6 +556,13 @@ def _valve_problems(name, v, engine):
         elif abs(total - half) > 1e-6:
             out.append(f"{at}.cam: phi1_deg + phi2_deg + phi3_deg = {total:g} cam deg must equal the half-angle "
                        f"phi_p0 = (opens_deg + 180 + closes_deg)/2 crank deg = {half:g} cam deg (seed 000, eq. 2.2)")
+    elif isinstance(cam, CombinedCam):
+        total = sum(seg.length_deg for seg in cam.segments)
+        if abs(total - half) > 1e-6:
+            out.append(f"{at}.cam.segments: the lengths add up to {total:g} cam deg; they must equal the half-angle "
+                       f"phi_p0 = {half:g} cam deg")
+        if v.clearance_mm <= 0.0:
+            out.append(f"{at}.clearance_mm = {v.clearance_mm:g}: the cam's ramp takes up the clearance, allowed (0, 5] mm")
     elif getattr(cam, "ramp", False) and v.clearance_mm <= 0.0:
         out.append(f"{at}.clearance_mm = {v.clearance_mm:g}: a ramp needs a clearance to take up, "
                    "allowed (0, 5] mm")

@@ -12,7 +12,7 @@ import numpy as np
 from .. import flow, geometry
 from ..checks import Finding, check_range
 from ..crank.kinematics import displacement
-from ..laws import ConstantAccelerationLaw, KurzLaw, PolydyneLaw, PolynomialLaw, TangentLaw, ThreeArcLaw
+from ..laws import CombinedLaw, ConstantAccelerationLaw, KurzLaw, PolydyneLaw, PolynomialLaw, TangentLaw, ThreeArcLaw
 from ..numerics import extremum
 from ..spec import kurz_phi3_deg, main_half_angle_deg
 from ..units import DEG, MM, rad_to_deg, rpm_to_rad_s
@@ -111,6 +111,9 @@ def build_law(valve, strokes=4):
     if cam.law == "constant_acceleration":
         return ConstantAccelerationLaw(lift, h0, velocity, cam.phi1_deg * DEG, cam.phi2_deg * DEG,
                                        kurz_phi3_deg(cam, valve, strokes) * DEG, cam.kappa, **ramp)
+    if cam.law == "combined":
+        return CombinedLaw(lift, h0, velocity, [(seg.shape, seg.length_deg * DEG) for seg in cam.segments],
+                           [(r.segment - 1, r.value) for r in cam.ratios], **ramp)
     if cam.law in ("polydyne", "polynomial"):
         if cam.ramp:
             ramp.update(ramp_height=h0, ramp_velocity=velocity)

@@ -1,6 +1,7 @@
 """Cam lift laws.  Every law is a :class:`~valvetrain.laws.base.LiftLaw`."""
 
 from .base import Extremes, LiftLaw, Segment, SymmetricLaw
+from .combined import CombinedLaw
 from .constant_acceleration import ConstantAccelerationLaw
 from .convex import TangentLaw, ThreeArcLaw
 from .kurz import KurzLaw, kurz_coefficients
@@ -8,6 +9,6 @@ from .polydyne import PolydyneLaw, PolynomialLaw, default_exponents, polydyne_co
 from .ramps import make_ramp
 
 __all__ = [
-    "ConstantAccelerationLaw", "TangentLaw", "ThreeArcLaw", "Extremes", "LiftLaw", "Segment", "SymmetricLaw", "KurzLaw", "kurz_coefficients", "PolydyneLaw",
+    "CombinedLaw", "ConstantAccelerationLaw", "TangentLaw", "ThreeArcLaw", "Extremes", "LiftLaw", "Segment", "SymmetricLaw", "KurzLaw", "kurz_coefficients", "PolydyneLaw",
     "PolynomialLaw", "default_exponents", "make_ramp", "polydyne_coefficients",
 ]
