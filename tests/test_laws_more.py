@@ -4,8 +4,8 @@ import numpy as np
 import pytest
 
 from valvetrain import geometry
-from valvetrain.laws import (CombinedLaw, ConstantAccelerationLaw, KurzLaw, PolydyneLaw, PolynomialLaw, TangentLaw, ThreeArcLaw,
-                             make_ramp)
+from valvetrain.laws import (CombinedLaw, ConstantAccelerationLaw, DynamicLaw, HarmonicLaw, KurzLaw, PolydyneLaw, PolynomialLaw, TangentLaw, ThreeArcLaw,
+                             harmonic_limit, make_ramp)
 
 DEG = np.pi / 180
 
@@ -148,3 +148,76 @@ def test_combined_rebuilds_kurz():
 def test_combined_needs_a_square_system():
     with pytest.raises(ValueError, match="unknown amplitudes"):
         CombinedLaw(6e-3, 0.25e-3, 1e-3, [("half_sine", 0.5), ("linear", 0.4), ("parabola_to_nose", 0.3)])
+
+
+def _polydyne_target():
+    """The spec's section 7 cam: h_max 8, h0 0.3, v0 0.4 mm/rad, 55 deg, exponents 2, 10, 18, 26, 34."""
+    return PolydyneLaw(7.7e-3, np.radians(55), 10, 18, 26, 34, ramp_height=0.3e-3, ramp_velocity=0.4e-3)
+
+
+@pytest.mark.parametrize("n,m", [(12, 1), (20, 2), (30, 2)])
+def test_harmonic_cam_constraints(n, m):
+    """spec section 9: h(0) = h_max and the even derivatives up to 2m vanish at +-alpha_W (odd ones by
+    construction), the fit residual small against the lift."""
+    target = _polydyne_target()
+    law = HarmonicLaw(target, n, m)
+    assert law.lift(0.0) == pytest.approx(8e-3, abs=1e-15)
+    ends = law.derivatives(np.array([law.start, law.end]))
+    assert np.abs(ends).max() < 1e-12
+    k = np.arange(n + 1)
+    for j in range(m + 1):  # h^(2j)(alpha_W) = sum a_k (-1)^j (k pi / alpha_W)^(2j) (-1)^k
+        assert abs(np.sum(law.a * (-1.0) ** k * law.w ** (2 * j))) < 1e-9 * np.abs(law.a * law.w ** (2 * j)).sum()
+    assert law.deviation < 0.05e-3
+
+
+def test_harmonic_fit_improves_with_n():
+    target = _polydyne_target()
+    devs = [HarmonicLaw(target, n, 2).deviation for n in (10, 20, 40)]
+    assert devs[0] > devs[1] > devs[2]
+
+
+def test_harmonic_limit_rule():
+    """N < alpha_W omega_n / (pi omega) (spec section 9): with epsilon = 0.00164 and alpha_W = 70 deg, N < 9.6."""
+    eps = 0.00164
+    assert harmonic_limit(np.radians(70), 1.0 / np.sqrt(eps), 1.0) == pytest.approx(9.6, abs=0.05)
+
+
+def _dynamic():
+    """spec sections 2 and 8: c = 15000 N/mm, F0 = 400 N, k = 1.5, x0 = 0.30 mm, design seating velocity 0.3 m/s at
+    3000 rpm (camshaft); K = 67.5 N/mm and a constant-acceleration ramp (f = 0.5) reproduce the spec's ramp of
+    26.03 deg at 11.16 um/deg."""
+    omega = 3000 * np.pi / 30
+    return DynamicLaw(8e-3, np.radians(55), [2, 10, 18, 26, 34], 0.3 / omega, 15e6, 0.25, 67.5e3, 400.0, omega,
+                      1.5, 0.3e-3, "constant_acceleration", 0.5), omega
+
+
+def test_dynamic_cam_ramp():
+    law, _ = _dynamic()
+    # ramp height (x0 + F0/c)/k = (0.30 + 400/15000)/1.5 = 0.21778 mm (spec section 2, worked example)
+    assert law.ramp_height * 1e3 == pytest.approx(0.21778, abs=1e-5)
+    assert law.ramp.end_velocity * 1e6 * DEG == pytest.approx(11.16, abs=0.01)
+    assert np.degrees(law.ramp_angle) == pytest.approx(26.03, abs=0.02)
+    j = law.start + law.ramp_angle
+    d = law.derivatives(np.array([j - 1e-12, j + 1e-12]))
+    assert np.allclose(d[:3, 0], d[:3, 1], rtol=1e-6, atol=1e-9)
+
+
+def test_dynamic_cam_gives_the_design_valve_motion():
+    """Simulated one-mass elastic train, M y'' = c(k h - x0 - y) - (F0 + K y), integrated with scipy's LSODA from the
+    valve's opening at the design speed: the valve follows the design polynomial (spec section 8)."""
+    from scipy.integrate import solve_ivp
+
+    law, omega = _dynamic()
+    t0 = law.start + law.ramp_angle
+
+    def rhs(t, s):
+        theta = t0 + omega * t
+        u = law.ratio * float(law.lift(np.array([theta]))[0]) - law.x0
+        return [s[1], (law.c * (u - s[0]) - (law.F0 + law.K * s[0])) / law.m]
+
+    t_end = 2 * law.main_half_angle / omega
+    sol = solve_ivp(rhs, (0, t_end), [0.0, law.v_y * omega], method="LSODA", rtol=1e-11, atol=1e-13,
+                    dense_output=True, max_step=t_end / 2000)
+    t = np.linspace(0, t_end, 201)
+    design = law.valve_motion(t0 + omega * t)[0]
+    assert np.abs(sol.sol(t)[0] - design).max() < 1e-7  # 0.1 um on 8 mm

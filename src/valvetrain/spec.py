@@ -215,6 +215,49 @@ class CombinedCam(_CamBase, _RampKeys):
         return self
 
 
+class DynamicCam(_CamBase, _RampKeys):
+    """[valves.NAME.cam] with law = "dynamic": the multi-term dynamic (Dudley-Stoddart polydyne) cam (spec section 8)."""
+
+    law: Literal["dynamic"]
+    exponents: Annotated[list[_bounded(2.0, 1000.0, low_open=False)], Field(min_length=5, max_length=5)] = \
+        [2.0, 10.0, 18.0, 26.0, 34.0]
+    valve_opening_velocity_m_s: _bounded(0.0, 10.0, "m/s")
+    drive_stiffness_N_per_mm: _bounded(0.0, 1e7, "N/mm")
+    spring_rate_N_per_mm: _bounded(0.0, 1e6, "N/mm", low_open=False)
+    spring_preload_N: _bounded(0.0, 1e6, "N", low_open=False)
+    design_speed_rpm: Optional[_bounded(0.0, 30000.0, "rpm")] = None
+
+
+class HarmonicCam(_CamBase):
+    """[valves.NAME.cam] with law = "harmonic": an N-harmonic cosine series fitted to the law of
+    [valves.NAME.cam.target] (spec section 9); the target inherits base_radius_mm, follower and roller_radius_mm."""
+
+    law: Literal["harmonic"]
+    harmonics: Annotated[int, Field(ge=2, le=400)]
+    junction_order: Annotated[int, Field(ge=0, le=10)] = 1
+    target: "Cam"
+
+    @model_validator(mode="before")
+    @classmethod
+    def _inherit(cls, data):
+        if isinstance(data, dict) and isinstance(data.get("target"), dict):
+            target = dict(data["target"])
+            for key in ("base_radius_mm", "follower", "roller_radius_mm"):
+                if key in data and key not in target:
+                    target[key] = data[key]
+            data = {**data, "target": target}
+        return data
+
+    @model_validator(mode="after")
+    def _target_law(self):
+        if self.target.law == "harmonic":
+            raise ValueError("target.law = \"harmonic\": the target must be another law")
+        if self.harmonics < self.junction_order + 2:
+            raise ValueError(f"harmonics = {self.harmonics} cannot meet junction_order + 2 = {self.junction_order + 2} "
+                             "conditions")
+        return self
+
+
 class ThreeArcCam(_CamBase):
     """[valves.NAME.cam] with law = "three_arc": convex cam of two arcs (spec section 3); no ramp."""
 
@@ -244,9 +287,11 @@ class TangentCam(_CamBase):
         return self
 
 
-Cam = Annotated[Union[KurzCam, PolydyneCam, PolynomialCam, ConstantAccelerationCam, CombinedCam, ThreeArcCam,
-                      TangentCam], Field(discriminator="law")]
-LAWS = ("kurz", "polydyne", "polynomial", "constant_acceleration", "combined", "three_arc", "tangent")
+Cam = Annotated[Union[KurzCam, PolydyneCam, PolynomialCam, ConstantAccelerationCam, CombinedCam, DynamicCam,
+                      HarmonicCam, ThreeArcCam, TangentCam], Field(discriminator="law")]
+LAWS = ("kurz", "polydyne", "polynomial", "constant_acceleration", "combined", "dynamic", "harmonic", "three_arc",
+        "tangent")
+HarmonicCam.model_rebuild()
 
 
 class Masses(_Model):
@@ -544,6 +589,8 @@ def _valve_problems(name, v, engine):
     cam = v.cam
     if cam.base_radius_mm <= v.clearance_mm:
         out.append(f"{at}.cam.base_radius_mm = {cam.base_radius_mm:g} must exceed clearance_mm = {v.clearance_mm:g}")
+    if isinstance(cam, HarmonicCam):
+        cam = cam.target
     if isinstance(cam, (KurzCam, ConstantAccelerationCam)):
         if v.clearance_mm <= 0.0:
             out.append(f"{at}.clearance_mm = {v.clearance_mm:g}: the cam's ramp takes up the clearance, "
@@ -711,7 +758,7 @@ def _law_problems(spec):
     out = []
     for name, v in spec.valves.items():
         try:
-            build_law(v, spec.engine.strokes)
+            build_law(v, spec.engine.strokes, spec.engine.rated_speed_rpm)
         except ValueError as exc:
             out.append(f"valves.{name}.cam: {exc}")
     return out

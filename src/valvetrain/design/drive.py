@@ -25,7 +25,7 @@ class DriveResults:
 
 
 
-def _reduced_mass(v, throat_area, spring_mass_kg):
+def reduced_mass(v, throat_area, spring_mass_kg):
     """Reduced mass at the valve [kg] and a description of how it was obtained."""
     d = v.drive
     if d.masses is not None:
@@ -106,7 +106,7 @@ def drive_stage(v, spec, law, omega, heel, roller):
     material = _material(sp)
     spring_total_mass = 0.0
     for _ in range(20):
-        m_v, mass_source = _reduced_mass(v, f_g, spring_total_mass)
+        m_v, mass_source = reduced_mass(v, f_g, spring_total_mass)
         required = springs.required_spring_force(m_v, a_v, v.drive.spring_reserve)
         preload, rate = springs.enveloping_line(y, required, sp.deflection_ratio_range, p_gas)
         raised = preload <= p_gas * (1.0 + 1e-9) and p_gas > 0.0

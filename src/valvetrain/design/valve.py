@@ -12,11 +12,11 @@ import numpy as np
 from .. import flow, geometry
 from ..checks import Finding, check_range
 from ..crank.kinematics import displacement
-from ..laws import CombinedLaw, ConstantAccelerationLaw, KurzLaw, PolydyneLaw, PolynomialLaw, TangentLaw, ThreeArcLaw
+from ..laws import CombinedLaw, ConstantAccelerationLaw, DynamicLaw, HarmonicLaw, KurzLaw, PolydyneLaw, PolynomialLaw, TangentLaw, ThreeArcLaw
 from ..numerics import extremum
 from ..spec import kurz_phi3_deg, main_half_angle_deg
 from ..units import DEG, MM, rad_to_deg, rpm_to_rad_s
-from .drive import drive_stage
+from .drive import drive_stage, reduced_mass
 
 ACCELERATION_LIMITS = (3500.0, -1500.0)
 """Upper ends of the recommended bands of positive (1500-3500) and negative (500-1500) tappet
@@ -90,11 +90,14 @@ class ValveDesign:
 
 
 
-def build_law(valve, strokes=4):
+def build_law(valve, strokes=4, rated_speed=None):
     """The lift law of a valve specification, in SI (tappet side).
 
     Laws with a ramp take up the clearance on it (ramp height = clearance); the arc cams
     (three-arc, tangent) and the polynomial laws without a ramp start on the base circle.
+    The dynamic cam's ramp ends where the drive force reaches the preload; its design speed
+    defaults to ``rated_speed`` [rpm] and its mass is the reduced mass at the valve without
+    the spring (unless the masses give ``spring_kg``).
     """
     cam = valve.cam
     lift = valve.max_lift_mm / valve.rocker_ratio * MM
@@ -111,6 +114,16 @@ def build_law(valve, strokes=4):
     if cam.law == "constant_acceleration":
         return ConstantAccelerationLaw(lift, h0, velocity, cam.phi1_deg * DEG, cam.phi2_deg * DEG,
                                        kurz_phi3_deg(cam, valve, strokes) * DEG, cam.kappa, **ramp)
+    if cam.law == "harmonic":
+        target = build_law(valve.model_copy(update={"cam": cam.target}), strokes, rated_speed)
+        return HarmonicLaw(target, cam.harmonics, cam.junction_order)
+    if cam.law == "dynamic":
+        omega = rpm_to_rad_s(cam.design_speed_rpm or rated_speed) / 2.0
+        mass = reduced_mass(valve, float(flow.circle_area(valve.throat_diameter_mm * MM)), 0.0)[0]
+        return DynamicLaw(valve.max_lift_mm * MM, half, cam.exponents, cam.valve_opening_velocity_m_s / omega,
+                          cam.drive_stiffness_N_per_mm / MM, mass, cam.spring_rate_N_per_mm / MM, cam.spring_preload_N,
+                          omega, valve.rocker_ratio, valve.clearance_mm * MM * valve.rocker_ratio, cam.ramp_type,
+                          cam.ramp_acceleration_fraction)
     if cam.law == "combined":
         return CombinedLaw(lift, h0, velocity, [(seg.shape, seg.length_deg * DEG) for seg in cam.segments],
                            [(r.segment - 1, r.value) for r in cam.ratios], **ramp)
@@ -179,7 +192,7 @@ def _convex_radius(law, theta, heel, follower, roller_radius):
 def design_valve(name, v, spec):
     """Stages 1-5 of one valve and its drive (springs, strength); returns a :class:`ValveDesign`."""
     eng = spec.engine
-    law = build_law(v, eng.strokes)
+    law = build_law(v, eng.strokes, eng.rated_speed_rpm)
     omega = rpm_to_rad_s(eng.rated_speed_rpm) / 2.0
     cam = v.cam
     heel = cam.base_radius_mm * MM - law.ramp_height

@@ -117,14 +117,15 @@ class LiftLaw(ABC):
 
     @property
     def breakpoints(self):
-        """Junction angles of the segments, ends included [rad]."""
+        """Angles where the law or the valve lift is not smooth: segment junctions, ends included [rad]."""
         return np.array([s.start for s in self.segments] + [self.end])
 
     def segment_names(self, theta):
         """Name of the segment of each angle (``"base circle"`` outside the event)."""
         theta = np.asarray(theta, dtype=float)
         names = np.array(["base circle"] + [s.name for s in self.segments], dtype=object)
-        idx = np.searchsorted(self.breakpoints, theta, side="right")
+        edges = np.array([s.start for s in self.segments] + [self.end])
+        idx = np.searchsorted(edges, theta, side="right")
         idx[theta == self.end] = len(self.segments)
         idx[(theta < self.start) | (theta > self.end)] = 0
         return names[idx]

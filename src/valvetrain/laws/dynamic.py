@@ -1,0 +1,133 @@
+"""Multi-term dynamic cam (seed 002 contents, section 4.1 多项动力凸轮) = the Dudley-Stoddart polydyne:
+the cam is shaped so that the valve of a one-mass elastic train follows a chosen polynomial
+motion at the design speed (Rothbart, Cam Design Handbook, 2004, section 13.7;
+spec/methods-seeds-002-004.md, section 8 [S+D]).
+"""
+
+import numpy as np
+
+from .base import SymmetricLaw
+from .polydyne import _falling, polynomial_junction_coefficients
+from .ramps import make_ramp
+
+
+class DynamicLaw(SymmetricLaw):
+    """Cam lift that makes the valve follow a polynomial motion at the design speed.
+
+    Parameters
+    ----------
+    valve_lift : float
+        Design valve lift y_max [m].
+    main_half_angle : float
+        From the valve's opening to the nose [rad camshaft].
+    exponents : sequence of float
+        Exponents of the valve motion y = y_max + sum C_k x^k (e.g. 2, 10, 18, 26, 34).
+    opening_velocity : float
+        Valve velocity per camshaft radian at opening, v_y [m/rad].
+    stiffness : float
+        Drive stiffness reduced to the valve c [N/m].
+    mass : float
+        Mass reduced to the valve M [kg].
+    spring_rate, preload : float
+        Valve spring rate K [N/m] and preload F0 [N].
+    cam_speed : float
+        Design camshaft speed omega [rad/s].
+    rocker_ratio : float
+        k = valve arm / tappet arm.
+    lash : float
+        Valve lash at the valve x0 [m].
+    ramp_kind, ramp_fraction
+        The ramp before the valve opens (see :mod:`.ramps`).
+
+    Notes
+    -----
+    With the valve open, a one-mass train satisfies :math:`M\\ddot y = c(kh - x_0 - y) - (F_0 + Ky)`;
+    with :math:`\\ddot y = \\omega^2 y''` the cam lift is
+
+    .. math:: k\\,h(\\alpha) = x_0 + y + \\frac{M\\omega^2y'' + Ky + F_0}{c}.
+
+    The valve motion meets the ramp with y = 0, y' = -v_y and y'' = y''' = y'''' = 0, so the
+    cam lift is C2 there; the ramp ends at (x0 + F0/c)/k with slope (1 + K/c) v_y / k.
+
+    References
+    ----------
+    spec/methods-seeds-002-004.md, section 8; seed 002 (multi-term dynamic cam, section 4.1).
+    """
+
+    name = "dynamic"
+
+    def __init__(self, valve_lift, main_half_angle, exponents, opening_velocity, stiffness, mass, spring_rate,
+                 preload, cam_speed, rocker_ratio=1.0, lash=0.0, ramp_kind="cosine", ramp_fraction=0.5):
+        self.y_max, self.phi_p0 = float(valve_lift), float(main_half_angle)
+        self.k = np.array([float(e) for e in exponents])
+        self.v_y, self.c, self.m = float(opening_velocity), float(stiffness), float(mass)
+        self.K, self.F0, self.omega = float(spring_rate), float(preload), float(cam_speed)
+        self.ratio, self.x0 = float(rocker_ratio), float(lash)
+        if not (self.y_max > 0 and self.phi_p0 > 0 and self.v_y > 0 and self.c > 0 and self.m > 0):
+            raise ValueError("dynamic law: lift, angle, opening velocity, stiffness and mass must be positive")
+        if len(self.k) != 5:
+            raise ValueError("dynamic law: five exponents are needed (y, y', y'', y''', y'''' fixed at the junction)")
+        self.coef = polynomial_junction_coefficients(self.k, self.y_max, 0.0, -self.v_y * self.phi_p0)
+        self.ramp = make_ramp(ramp_kind, (self.x0 + self.F0 / self.c) / self.ratio,
+                              (1.0 + self.K / self.c) * self.v_y / self.ratio, ramp_fraction)
+        self._nose = float(self._cam(np.zeros(1))[0, 0])
+
+    def valve_motion(self, u):
+        """Design valve motion y and its first five derivatives with respect to the cam angle from the nose u [rad]."""
+        x = np.abs(np.asarray(u, dtype=float)) / self.phi_p0
+        sign = np.sign(u)
+        out = []
+        for j in range(6):
+            term = (self.coef[:, None] * _falling(self.k[:, None], j) * x[None, :] ** np.maximum(self.k[:, None] - j, 0)
+                    ).sum(0) / self.phi_p0**j
+            out.append(term * (sign**j if j % 2 else 1.0) + (self.y_max if j == 0 else 0.0))
+        return np.array(out)
+
+    def _cam(self, u):
+        """Cam lift from the nose and its derivatives in u (distance from the nose), shape (4, n)."""
+        y = self.valve_motion(u)
+        w2 = self.m * self.omega**2
+        h = [(self.x0 + y[0] + (w2 * y[2] + self.K * y[0] + self.F0) / self.c) / self.ratio]
+        for j in range(1, 4):
+            h.append((y[j] + (w2 * y[j + 2] + self.K * y[j]) / self.c) / self.ratio)
+        return np.array(h)
+
+    @property
+    def lift_max(self):
+        return self._nose - self.ramp.height
+
+    @property
+    def ramp_height(self):
+        return self.ramp.height
+
+    @property
+    def ramp_angle(self):
+        return self.ramp.length
+
+    @property
+    def main_half_angle(self):
+        return self.phi_p0
+
+    @property
+    def half_angle(self):
+        return self.ramp.length + self.phi_p0
+
+    def _rise_segments(self):
+        return [("ramp", 0.0, self.ramp.length), ("dynamic", self.ramp.length, self.half_angle)]
+
+    def _rise(self, phi):
+        out = np.empty((4, phi.size))
+        ramp = phi < self.ramp.length
+        out[:, ramp] = self.ramp.evaluate(phi[ramp])
+        u = self.half_angle - phi[~ramp]                      # distance from the nose (positive)
+        d = self._cam(u)
+        out[:, ~ramp] = [d[0], -d[1], d[2], -d[3]]            # d/dphi = -d/du
+        return out
+
+    def coefficients(self):
+        """Valve-motion coefficients C_k = a_k / y_max, exponents, and the drive data used."""
+        out = {f"C{e:g}": float(a / self.y_max) for e, a in zip(self.k, self.coef, strict=True)}
+        out.update(exponents=[float(e) for e in self.k], stiffness_N_per_mm=self.c * 1e-3, mass_kg=self.m,
+                   spring_rate_N_per_mm=self.K * 1e-3, preload_N=self.F0,
+                   design_speed_rpm=self.omega * 60.0 / np.pi)
+        return out

@@ -1,0 +1,133 @@
+"""N-harmonic cam: a finite cosine series over the working angle with junction conditions
+(seed 002 contents, section 4.2; spec/methods-seeds-002-004.md, section 9 [R]).
+
+.. math:: h(\\theta) = \\sum_{k=0}^{N} a_k\\cos\\frac{k\\pi\\theta}{\\alpha_W},\\quad |\\theta| \\le \\alpha_W
+
+Odd derivatives vanish at +-alpha_W by construction; the even ones up to 2m are made zero
+there (a C^(2m+1) junction with the base circle), h(0) is the nose lift, and the remaining
+freedom is fitted to a target law by equality-constrained least squares.  Shang's exact
+rules for N and the end conditions are not in the seed (spec open question Q3).
+"""
+
+import numpy as np
+from scipy.optimize import brentq
+
+from .base import LiftLaw, Segment
+
+
+def harmonic_limit(half_angle, natural_frequency, cam_speed):
+    """Largest harmonic order whose frequency stays below the natural frequency, N < alpha_W omega_n / (pi omega).
+
+    Parameters
+    ----------
+    half_angle : float
+        alpha_W, half the working angle [rad camshaft].
+    natural_frequency : float
+        omega_n of the valve train [rad/s].
+    cam_speed : float
+        omega [rad/s].
+
+    Notes
+    -----
+    The outer solution of the 1-DOF train converges for a trigonometric polynomial when
+    epsilon (N pi / alpha_W)^2 < 1 with epsilon = (omega / omega_n)^2.
+
+    References
+    ----------
+    spec/methods-seeds-002-004.md, section 9 (tied to the perturbation method of section 12).
+
+    Examples
+    --------
+    >>> round(harmonic_limit(np.radians(70), 2000.0, 300.0), 3)
+    2.593
+    """
+    return float(half_angle * natural_frequency / (np.pi * cam_speed))
+
+
+class HarmonicLaw(LiftLaw):
+    """N-harmonic cam fitted to a target law.
+
+    Parameters
+    ----------
+    target : LiftLaw
+        The law whose lift the series approximates; its whole event (ramps included) is the
+        working angle, and its ramp height is the clearance the valve opens after.
+    harmonics : int
+        N, the highest harmonic.
+    junction_order : int
+        m: the even derivatives 0, 2, ..., 2m vanish at the ends.
+    samples : int
+        Fitting points over half the working angle.
+    """
+
+    name = "harmonic"
+
+    def __init__(self, target, harmonics, junction_order=1, samples=2001):
+        n, m = int(harmonics), int(junction_order)
+        if n < m + 2:
+            raise ValueError(f"harmonic law: N = {n} harmonics cannot meet {m + 2} conditions; allowed N >= {m + 2}")
+        self.target = target
+        self.alpha = float(target.end)
+        self.harmonics, self.junction_order = n, m
+        k = np.arange(n + 1)
+        self.w = k * np.pi / self.alpha
+        theta = np.linspace(0.0, self.alpha, samples)
+        a = np.cos(np.outer(theta, self.w))
+        b = target.lift(theta)
+        sign = (-1.0) ** k
+        c = np.array([sign * self.w ** (2 * j) for j in range(m + 1)] + [np.ones(n + 1)])
+        d = np.zeros(m + 2)
+        d[-1] = float(target.lift(0.0))
+        kkt = np.block([[a.T @ a, c.T], [c, np.zeros((m + 2, m + 2))]])
+        self.a = np.linalg.solve(kkt, np.concatenate([a.T @ b, d]))[: n + 1]
+        self.deviation = float(np.abs(a @ self.a - b).max())
+        self._ramp_height = float(target.ramp_height)
+        self._opening = self._valve_opening()
+
+    def _valve_opening(self):
+        """Angle from the start of the event where the lift reaches the target's ramp height [rad]."""
+        if self._ramp_height <= 0.0:
+            return 0.0
+        f = lambda t: float(self.lift(np.array([t]))[0]) - self._ramp_height  # noqa: E731
+        return brentq(f, -self.alpha, 0.0, xtol=1e-14) + self.alpha
+
+    @property
+    def segments(self):
+        return [Segment("harmonic opening", -self.alpha, 0.0), Segment("harmonic closing", 0.0, self.alpha)]
+
+    @property
+    def lift_max(self):
+        return float(self.lift(0.0)) - self._ramp_height
+
+    @property
+    def ramp_height(self):
+        return self._ramp_height
+
+    @property
+    def ramp_angle(self):
+        return self._opening
+
+    @property
+    def main_half_angle(self):
+        return self.alpha - self._opening
+
+    @property
+    def breakpoints(self):
+        o = self._opening
+        return np.unique(np.array([-self.alpha, -self.alpha + o, 0.0, self.alpha - o, self.alpha]))
+
+    def derivatives(self, theta):
+        theta = np.asarray(theta, dtype=float)
+        flat = theta.ravel()
+        out = np.zeros((4, flat.size))
+        inside = np.abs(flat) <= self.alpha
+        arg = np.outer(flat[inside], self.w)
+        c, s = np.cos(arg), np.sin(arg)
+        out[:, inside] = [c @ self.a, -s @ (self.a * self.w), -c @ (self.a * self.w**2), s @ (self.a * self.w**3)]
+        return out.reshape((4,) + theta.shape)
+
+    def coefficients(self):
+        """a_0 ... a_N [mm], N, m and the largest deviation from the target [mm]."""
+        return {"a": [float(x) * 1e3 for x in self.a], "harmonics": self.harmonics,
+                "junction_order": self.junction_order, "max_deviation_mm": self.deviation * 1e3,
+                "target": self.target.name}
