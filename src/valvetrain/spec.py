@@ -258,6 +258,18 @@ class HarmonicCam(_CamBase):
         return self
 
 
+class TableCam(_CamBase):
+    """[valves.NAME.cam] with law = "table": a measured lift table (seed 002 sections 5.1-5.3; spec sections 9-11)."""
+
+    law: Literal["table"]
+    table_file: str
+    table_angle: Literal["crank", "cam"]
+    table_lift_at: Literal["valve", "tappet"]
+    fit: Literal["spline", "harmonic"] = "spline"
+    accuracy_mm: _bounded(0.0, 1.0, "mm") = 0.005
+    max_harmonics: Annotated[int, Field(ge=4, le=400)] = 60
+
+
 class ThreeArcCam(_CamBase):
     """[valves.NAME.cam] with law = "three_arc": convex cam of two arcs (spec section 3); no ramp."""
 
@@ -288,9 +300,9 @@ class TangentCam(_CamBase):
 
 
 Cam = Annotated[Union[KurzCam, PolydyneCam, PolynomialCam, ConstantAccelerationCam, CombinedCam, DynamicCam,
-                      HarmonicCam, ThreeArcCam, TangentCam], Field(discriminator="law")]
+                      HarmonicCam, ThreeArcCam, TangentCam, TableCam], Field(discriminator="law")]
 LAWS = ("kurz", "polydyne", "polynomial", "constant_acceleration", "combined", "dynamic", "harmonic", "three_arc",
-        "tangent")
+        "tangent", "table")
 HarmonicCam.model_rebuild()
 
 
@@ -410,8 +422,8 @@ class Valve(_Model):
     seat_angle_deg: _bounded(0.0, 90.0, "deg", high_open=True)
     max_lift_mm: Length(0.0, 500.0)
     clearance_mm: Length(0.0, 5.0, low_open=False)
-    opens_deg: _bounded(-180.0, 180.0, "deg")
-    closes_deg: _bounded(-180.0, 180.0, "deg")
+    opens_deg: Optional[_bounded(-180.0, 180.0, "deg")] = None
+    closes_deg: Optional[_bounded(-180.0, 180.0, "deg")] = None
     rocker_ratio: _bounded(0.0, 5.0) = 1.0
     piston_gap_tdc_mm: Optional[Length(-100.0, 500.0)] = None
     cam: Cam
@@ -578,6 +590,12 @@ def kurz_phi3_deg(cam, valve, strokes):
 def _valve_problems(name, v, engine):
     at = f"valves.{name}"
     out = []
+    if v.opens_deg is None or v.closes_deg is None:
+        if v.cam.law != "table":
+            missing = [k for k in ("opens_deg", "closes_deg") if getattr(v, k) is None]
+            return [f"{at}.{k}: required key is missing (only a measured table, law = \"table\", sets its own timing)"
+                    for k in missing]
+        return _table_problems(at, v)
     if v.throat_diameter_mm >= engine.bore_mm:
         out.append(f"{at}.throat_diameter_mm = {v.throat_diameter_mm:g} must be smaller than engine.bore_mm = "
                    f"{engine.bore_mm:g}")
@@ -706,6 +724,24 @@ def _two_stroke_problems(spec):
     return out
 
 
+def _table_problems(at, v):
+    out = []
+    if v.throat_diameter_mm <= 0:
+        out.append(f"{at}.throat_diameter_mm must be positive")
+    return out
+
+
+def _resolve_tables(spec):
+    """Make every valve's table_file absolute (relative to the specification file's folder)."""
+    valves = {}
+    for name, v in spec.valves.items():
+        if v.cam.law == "table":
+            cam = v.cam.model_copy(update={"table_file": str(resolve_path(spec, v.cam.table_file))})
+            v = v.model_copy(update={"cam": cam})
+        valves[name] = v
+    return spec.model_copy(update={"valves": valves})
+
+
 def _location(err):
     parts = [str(p) for p in err["loc"] if not (isinstance(p, str) and p in ("kurz", "polydyne"))]
     return ".".join(parts) if parts else "(file)"
@@ -737,6 +773,7 @@ def validate(data):
         spec = Spec.model_validate(data)
     except ValidationError as exc:
         raise SpecError([_message(err) for err in exc.errors()]) from None
+    spec = _resolve_tables(spec)
     problems = [p for name, v in spec.valves.items() for p in _valve_problems(name, v, spec.engine)]
     problems += _crank_problems(spec) + _two_stroke_problems(spec)
     if spec.engine.strokes != 4 and spec.valves:

@@ -16,6 +16,7 @@ from ..laws import CombinedLaw, ConstantAccelerationLaw, DynamicLaw, HarmonicLaw
 from ..numerics import extremum
 from ..spec import kurz_phi3_deg, main_half_angle_deg
 from ..units import DEG, MM, rad_to_deg, rpm_to_rad_s
+from ..laws.measured import CHECKING_HEIGHTS_MM, TableLaw, read_lift_table
 from .drive import drive_stage, reduced_mass
 
 ACCELERATION_LIMITS = (3500.0, -1500.0)
@@ -101,7 +102,7 @@ def build_law(valve, strokes=4, rated_speed=None):
     """
     cam = valve.cam
     lift = valve.max_lift_mm / valve.rocker_ratio * MM
-    half = main_half_angle_deg(valve, strokes) * DEG
+    half = main_half_angle_deg(valve, strokes) * DEG if valve.opens_deg is not None else None
     r0 = cam.base_radius_mm * MM
     h0 = valve.clearance_mm * MM
     ramp = {}
@@ -114,6 +115,11 @@ def build_law(valve, strokes=4, rated_speed=None):
     if cam.law == "constant_acceleration":
         return ConstantAccelerationLaw(lift, h0, velocity, cam.phi1_deg * DEG, cam.phi2_deg * DEG,
                                        kurz_phi3_deg(cam, valve, strokes) * DEG, cam.kappa, **ramp)
+    if cam.law == "table":
+        angle, lift = read_lift_table(cam.table_file)
+        theta = angle * DEG * (0.5 if cam.table_angle == "crank" else 1.0)
+        lift = lift * MM / (valve.rocker_ratio if cam.table_lift_at == "valve" else 1.0)
+        return TableLaw(theta, lift, cam.fit, cam.accuracy_mm * MM, cam.max_harmonics)
     if cam.law == "harmonic":
         target = build_law(valve.model_copy(update={"cam": cam.target}), strokes, rated_speed)
         return HarmonicLaw(target, cam.harmonics, cam.junction_order)
@@ -142,6 +148,42 @@ def build_law(valve, strokes=4, rated_speed=None):
             return ThreeArcLaw.from_flank_radius(r0, lift, half, cam.flank_radius_mm * MM)
         return ThreeArcLaw.from_flank_angle(r0, lift, half, cam.flank_angle_deg * DEG)
     return TangentLaw(r0, lift, half, cam.roller_radius_mm * MM)
+
+
+def valve_nose(valve, law):
+    """Crank angle of the cam nose [rad]: from the measured table when the law carries its timing, else from
+    opens_deg/closes_deg."""
+    centre = getattr(law, "nose_cam_angle", None)
+    return 2.0 * centre if centre is not None else nose_crank_angle(valve)
+
+
+def measured_summary(valve, law, nose):
+    """The measured-table record of results.json and its timing findings (seed 002, sections 5.1-5.3)."""
+    cam = valve.cam
+    to_table = 2.0 if cam.table_angle == "crank" else 1.0        # table angle units per cam angle
+    at_valve = valve.rocker_ratio if cam.table_lift_at == "valve" else 1.0
+    durations = [{"height_mm": h, "duration_deg": rad_to_deg(law.duration(h * MM / at_valve)) * to_table}
+                 for h in CHECKING_HEIGHTS_MM]
+    quality = {kind: {"rms_residual_mm": q.rms_residual / MM, "max_residual_mm": q.max_residual / MM,
+                      "jerk_sign_changes": q.jerk_sign_changes}
+               for kind in ("spline", "harmonic") for q in [law.quality(kind)]}
+    rec = {"max_lift_mm": law.lift_max * at_valve / MM, "lobe_centre_deg": rad_to_deg(law.centre) * to_table,
+           "durations_deg": durations, "fit": law.fit, "harmonics": law.harmonics,
+           "asymmetry_rms_mm": law.asymmetry_rms * at_valve / MM, "fit_quality": quality,
+           "table_angle": cam.table_angle, "table_lift_at": cam.table_lift_at}
+    # the timing the table implies, at the first checking height of valve lift (0.1 mm)
+    h = CHECKING_HEIGHTS_MM[0] * MM / valve.rocker_ratio
+    half = 0.5 * law.duration(h)
+    opens = -(nose - 2.0 * half) if valve.kind == "intake" else np.pi - (nose - 2.0 * half) - 2 * np.pi
+    closes = (nose + 2.0 * half) - (np.pi if valve.kind == "intake" else 0.0)
+    rec["opens_deg_at_0.1mm"], rec["closes_deg_at_0.1mm"] = rad_to_deg(opens), rad_to_deg(closes)
+    found = []
+    for key, derived in (("opens_deg", rec["opens_deg_at_0.1mm"]), ("closes_deg", rec["closes_deg_at_0.1mm"])):
+        given = getattr(valve, key)
+        if given is not None:
+            found += check_range(f"{key} against the measured table", given, derived - 2.0, derived + 2.0,
+                                 source="the table's timing at 0.1 mm valve lift (+-2 crank deg)", unit="crank deg")
+    return rec, found
 
 
 def nose_crank_angle(valve):
@@ -200,7 +242,7 @@ def design_valve(name, v, spec):
     i_k = v.rocker_ratio
     d_throat, seat = v.throat_diameter_mm * MM, v.seat_angle_deg * DEG
     bore, stroke = eng.bore_mm * MM, eng.stroke_mm * MM
-    nose = nose_crank_angle(v)
+    nose = valve_nose(v, law)
 
     def valve_lift(theta):
         return law.valve_lift(theta, i_k)
@@ -316,10 +358,15 @@ def design_valve(name, v, spec):
                          source="seed 000, work 2 (positive 1500...3500 m/s2)", unit="m/s2")
     found += check_range("min tappet acceleration", ext.min_acceleration, low=ACCELERATION_LIMITS[1],
                          source="seed 000, work 2 (negative 500...1500 m/s2)", unit="m/s2")
+    opens, closes = v.opens_deg, v.closes_deg
+    if isinstance(law, TableLaw):
+        summary_cam["measured"], table_found = measured_summary(v, law, nose)
+        found += table_found
+        opens, closes = summary_cam["measured"]["opens_deg_at_0.1mm"], summary_cam["measured"]["closes_deg_at_0.1mm"]
     if v.kind in TIMING_RANGES:
         (o_lo, o_hi), (c_lo, c_hi) = TIMING_RANGES[v.kind]
-        found += check_range("opening advance", v.opens_deg, o_lo, o_hi, source="seed 000, work 2", unit="crank deg")
-        found += check_range("closing lag", v.closes_deg, c_lo, c_hi, source="seed 000, work 2", unit="crank deg")
+        found += check_range("opening advance", opens, o_lo, o_hi, source="seed 000, work 2", unit="crank deg")
+        found += check_range("closing lag", closes, c_lo, c_hi, source="seed 000, work 2", unit="crank deg")
     found += check_range("seat angle", v.seat_angle_deg, *SEAT_ANGLE_USUAL[v.kind],
                          source="seed 000, work 1 (usually 30 deg inlet, 45 deg exhaust)", unit="deg")
     found += check_range("clearance h0", v.clearance_mm, *CLEARANCE_RANGES[v.kind], source="seed 000, work 2",

@@ -153,7 +153,7 @@ class LiftLaw(ABC):
     def extremes(self, omega):
         """Extreme velocity and accelerations at camshaft speed omega [rad/s], found on the analytic law."""
         edges = self.breakpoints
-        opening = edges[edges <= 0.5 * (self.start + self.end)]
+        opening = edges[edges <= 0.0]          # the nose is at theta = 0 for every law
         xv, v = extremum(lambda t: self.derivatives(t)[1], opening, "max")
         xa, amax = extremum(lambda t: self.derivatives(t)[2], edges, "max")
         xn, amin = extremum(lambda t: self.derivatives(t)[2], edges, "min")

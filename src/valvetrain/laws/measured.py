@@ -1,0 +1,259 @@
+"""Measured lift tables: reading, smoothing-spline and N-harmonic fits, nose finding and false asymmetry,
+checking-height durations, and the measured cam as a lift law
+(seed 002 contents, sections 5.1-5.3; spec/methods-seeds-002-004.md, sections 9-11 [R]).
+
+Angles inside are camshaft radians; a table measured against the crank angle is halved
+when read.  Lifts are follower (tappet) lifts [m]; a table of valve lift is divided by
+the rocker ratio.
+"""
+
+import csv
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+from scipy.interpolate import make_smoothing_spline
+from scipy.optimize import brentq, minimize_scalar
+
+from .base import LiftLaw, Segment
+
+CHECKING_HEIGHTS_MM = (0.1, 0.5, 1.0, 1.27)
+"""Standard checking heights [mm]: 0.1, 0.5, 1.0 mm and 0.050 in = 1.27 mm."""
+
+
+class TableFileError(ValueError):
+    """A lift-table file that cannot be used; the message names the file and the line."""
+
+
+def read_lift_table(path):
+    """Read a CSV lift table with the header ``angle_deg,lift_mm``; ``#`` lines are comments.
+
+    Returns
+    -------
+    (ndarray, ndarray)
+        Angles [deg] (strictly increasing) and lifts [mm], as in the file.
+
+    Raises
+    ------
+    TableFileError
+        Naming the file and line of the first problem.
+    """
+    path = Path(path)
+    try:
+        text = path.read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError) as exc:
+        raise TableFileError(f"{path}: cannot read the file: {exc}") from None
+    rows = [(n, r) for n, r in enumerate(csv.reader(text.splitlines()), start=1)
+            if r and not r[0].lstrip().startswith("#")]
+    if not rows or tuple(h.strip() for h in rows[0][1]) != ("angle_deg", "lift_mm"):
+        line = rows[0][0] if rows else 1
+        raise TableFileError(f"{path}:{line}: the header must be 'angle_deg,lift_mm'")
+    angles, lifts = [], []
+    for n, r in rows[1:]:
+        if len(r) != 2:
+            raise TableFileError(f"{path}:{n}: expected 2 values, found {len(r)}")
+        try:
+            a, h = float(r[0]), float(r[1])
+        except ValueError:
+            raise TableFileError(f"{path}:{n}: {','.join(r)!r} is not two numbers") from None
+        if not (np.isfinite(a) and np.isfinite(h)):
+            raise TableFileError(f"{path}:{n}: values must be finite")
+        if angles and a <= angles[-1]:
+            raise TableFileError(f"{path}:{n}: angle_deg = {a:g} must be larger than the previous {angles[-1]:g}")
+        angles.append(a)
+        lifts.append(h)
+    if len(angles) < 10:
+        raise TableFileError(f"{path}: at least 10 rows are needed to fit a lift curve, found {len(angles)}")
+    return np.array(angles), np.array(lifts)
+
+
+def harmonic_fit(theta, lift, harmonics, period_half):
+    """Least-squares N-harmonic approximation h = a0 + sum a_k cos(k w t) + b_k sin(k w t), w = pi / L.
+
+    Parameters
+    ----------
+    theta : ndarray
+        Angles [rad] measured from a trial origin.
+    lift : ndarray
+        Lifts [m].
+    harmonics : int
+        N.
+    period_half : float
+        L, somewhat larger than half the working angle [rad].
+
+    Returns
+    -------
+    (ndarray, ndarray, float)
+        a_0..a_N, b_0..b_N (b_0 = 0) and w.
+
+    References
+    ----------
+    seed 002 contents, section 5.2; spec/methods-seeds-002-004.md, section 9 (approximation of a measured table).
+    """
+    w = np.pi / period_half
+    k = np.arange(harmonics + 1)
+    design = np.hstack([np.cos(np.outer(theta, k * w)), np.sin(np.outer(theta, k[1:] * w))])
+    coef = np.linalg.lstsq(design, lift, rcond=None)[0]
+    return coef[: harmonics + 1], np.concatenate([[0.0], coef[harmonics + 1:]]), w
+
+
+def symmetry_shift(a, b, w):
+    """Origin shift delta [rad] that best removes the odd (sine) part of a harmonic fit.
+
+    Shifting the origin by delta gives b_k(delta) = b_k cos(k w delta) - a_k sin(k w delta); the
+    symmetry axis minimises sum b_k(delta)^2 (found with bounded Brent iteration around the
+    linearised estimate delta ~ sum k a_k b_k / (w sum k^2 a_k^2)).  The remaining odd RMS is the
+    true asymmetry; the removed part was the false asymmetry of a wrong origin.
+
+    References
+    ----------
+    seed 002 contents, section 5.3; spec/methods-seeds-002-004.md, section 10 [R].
+    """
+    k = np.arange(a.size)
+
+    def odd(d):
+        return float(np.sum((b * np.cos(k * w * d) - a * np.sin(k * w * d)) ** 2))
+
+    guess = float(np.sum(k * a * b) / (w * np.sum(k**2 * a**2)))
+    span = max(abs(guess) * 3.0, 0.05)
+    res = minimize_scalar(odd, bounds=(guess - span, guess + span), method="bounded", options={"xatol": 1e-12})
+    return float(res.x), float(np.sqrt(res.fun / max(a.size - 1, 1)))
+
+
+@dataclass
+class FitQuality:
+    """How well a fit reproduces the table and how clean its derivatives are."""
+
+    rms_residual: float        # [m]
+    max_residual: float        # [m]
+    jerk_sign_changes: int     # sign changes of d3h/dtheta3 over the lift event: wiggles
+    jerk_total_variation: float  # [m/rad^3]
+
+
+class TableLaw(LiftLaw):
+    """A measured lift table as a lift law, through a smoothing spline (GCV) or an N-harmonic fit.
+
+    Parameters
+    ----------
+    angles : ndarray
+        Camshaft angles of the table [rad] in the engine's cam frame (crank angle from the
+        gas-exchange TDC / 2).
+    lift : ndarray
+        Follower lift [m].
+    fit : {"spline", "harmonic"}
+        The curve the law evaluates: Reinsch's smoothing spline with the smoothing chosen by
+        generalised cross-validation (:func:`scipy.interpolate.make_smoothing_spline`), the
+        stand-in of the spec for Shang's 回弹法 fairing, or the N-harmonic fit.
+    accuracy : float
+        Measurement accuracy [m]: the harmonic order N is the smallest whose RMS residual
+        meets it (spec section 9: choose N by the residual, not the largest N that fits).
+    max_harmonics : int
+        Upper bound of N.
+
+    Attributes
+    ----------
+    centre : float
+        The lobe centre (symmetry axis) in the table's cam frame [rad], after the false-asymmetry correction.
+    """
+
+    name = "table"
+
+    def __init__(self, angles, lift, fit="spline", accuracy=5e-6, max_harmonics=60):
+        x, y = np.asarray(angles, dtype=float), np.asarray(lift, dtype=float)
+        self.angles, self.values = x, y
+        self.fit = fit
+        top = int(np.argmax(y))
+        half = max(x[top] - x[0], x[-1] - x[top])
+        period_half = 1.15 * half
+        # N-harmonic fit about the highest point, the smallest N meeting the accuracy
+        for n in range(4, max_harmonics + 1):
+            a, b, w = harmonic_fit(x - x[top], y, n, period_half)
+            k = np.arange(n + 1)
+            resid = y - (np.cos(np.outer(x - x[top], k * w)) @ a + np.sin(np.outer(x - x[top], k * w)) @ b)
+            if np.sqrt(np.mean(resid**2)) <= accuracy:
+                break
+        shift, self.asymmetry_rms = symmetry_shift(a, b, w)
+        self.centre = float(x[top] + shift)
+        self.harmonics = int(n)
+        self._harmonic = (a * np.cos(np.arange(n + 1) * w * shift) + b * np.sin(np.arange(n + 1) * w * shift),
+                          b * np.cos(np.arange(n + 1) * w * shift) - a * np.sin(np.arange(n + 1) * w * shift), w)
+        self._spline = make_smoothing_spline(x - self.centre, y)
+        self.start_angle, self.end_angle = float(x[0] - self.centre), float(x[-1] - self.centre)
+        if fit not in ("spline", "harmonic"):
+            raise ValueError(f"fit = {fit!r}: allowed 'spline' or 'harmonic'")
+
+    def _harmonic_derivatives(self, t):
+        a, b, w = self._harmonic
+        k = np.arange(a.size) * w
+        c, s = np.cos(np.outer(t, k)), np.sin(np.outer(t, k))
+        return np.array([c @ a + s @ b, -s @ (a * k) + c @ (b * k), -c @ (a * k**2) - s @ (b * k**2),
+                         s @ (a * k**3) - c @ (b * k**3)])
+
+    def fitted(self, theta, kind=None):
+        """Lift and three derivatives of a fit at angles from the lobe centre, shape (4, n)."""
+        theta = np.asarray(theta, dtype=float)
+        if (kind or self.fit) == "harmonic":
+            return self._harmonic_derivatives(theta)
+        return np.array([self._spline(theta, nu) for nu in range(4)])
+
+    def derivatives(self, theta):
+        theta = np.asarray(theta, dtype=float)
+        flat = theta.ravel()
+        out = np.zeros((4, flat.size))
+        inside = (flat >= self.start_angle) & (flat <= self.end_angle)
+        out[:, inside] = self.fitted(flat[inside])
+        return out.reshape((4,) + theta.shape)
+
+    def quality(self, kind):
+        """:class:`FitQuality` of the ``"spline"`` or ``"harmonic"`` fit against the table."""
+        t = self.angles - self.centre
+        d = self.fitted(t, kind)
+        resid = self.values - d[0]
+        event = self.values > 0.02 * self.values.max()
+        fine = np.linspace(t[event][0], t[event][-1], 4001)
+        jerk = self.fitted(fine, kind)[3]
+        changes = int(np.sum(np.diff(np.sign(jerk[np.abs(jerk) > 1e-12 * np.abs(jerk).max()])) != 0))
+        return FitQuality(float(np.sqrt(np.mean(resid**2))), float(np.abs(resid).max()), changes,
+                          float(np.sum(np.abs(np.diff(jerk)))))
+
+    def duration(self, height):
+        """Angular duration at a checking height [rad camshaft] (nan if the lift never reaches it)."""
+        t = np.linspace(self.start_angle, self.end_angle, 4001)
+        h = self.fitted(t)[0] - height
+        above = np.flatnonzero(h > 0)
+        if above.size == 0 or above[0] == 0 or above[-1] == t.size - 1:
+            return float("nan")
+        f = lambda x: float(self.fitted(np.array([x]))[0, 0]) - height  # noqa: E731
+        rise = brentq(f, t[above[0] - 1], t[above[0]], xtol=1e-13)
+        fall = brentq(f, t[above[-1]], t[above[-1] + 1], xtol=1e-13)
+        return fall - rise
+
+    @property
+    def segments(self):
+        return [Segment("measured opening", self.start_angle, 0.0), Segment("measured closing", 0.0, self.end_angle)]
+
+    @property
+    def lift_max(self):
+        return float(self.fitted(np.zeros(1))[0, 0])
+
+    @property
+    def ramp_height(self):
+        return 0.0
+
+    @property
+    def ramp_angle(self):
+        return 0.0
+
+    @property
+    def main_half_angle(self):
+        return 0.5 * (self.end_angle - self.start_angle)
+
+    @property
+    def nose_cam_angle(self):
+        """Camshaft angle of the lobe centre in the engine's cam frame [rad]: the table sets the timing."""
+        return self.centre
+
+    def coefficients(self):
+        """The fit used, the harmonic order, the remaining (true) asymmetry and the lobe centre."""
+        return {"fit": self.fit, "harmonics": self.harmonics, "asymmetry_rms_mm": self.asymmetry_rms * 1e3,
+                "lobe_centre_cam_deg": float(np.degrees(self.centre)), "points": int(self.angles.size)}
