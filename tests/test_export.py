@@ -53,14 +53,23 @@ def test_contour_csv_and_dxf(written):
     doc = ezdxf.readfile(out / "contour" / "intake.dxf")
     msp = doc.modelspace()
     layers = {e.dxf.layer for e in msp}
-    assert {"CAM_PROFILE", "BASE_CIRCLE", "SEGMENTS", "AXES"} <= layers
+    assert {"CAM_PROFILE", "BASE_CIRCLE", "RAMP_BOUNDARIES", "SEGMENT_BOUNDARIES", "AXES"} <= layers
     poly = msp.query("LWPOLYLINE").first
     assert poly.closed
     pts = np.array([p[:2] for p in poly.get_points()])
     assert np.allclose(pts, xy, atol=1e-9)
     circle = msp.query("CIRCLE").first
     assert circle.dxf.radius == pytest.approx(19.75)  # heel radius r0 - h0 (seed 000)
-    assert len(msp.query("LINE[layer=='SEGMENTS']")) == len(results.valves["intake"].law.breakpoints)
+    law = results.valves["intake"].law
+    # the two ramp ends of the Kurz cam on their own layer, the other junctions (and the event ends) on another
+    ramps = msp.query("LINE[layer=='RAMP_BOUNDARIES']")
+    assert len(ramps) == 2
+    assert len(msp.query("LINE[layer=='SEGMENT_BOUNDARIES']")) == len(law.breakpoints) - 2
+    from valvetrain.design.valve import contour_points
+    ends = sorted((line.dxf.end.x, line.dxf.end.y) for line in ramps)
+    a = law.end - law.ramp_angle
+    expected = sorted(map(tuple, (contour_points(law, np.array([-a, a]), 19.75e-3, "flat", 0.0) * 1e3).T))
+    assert np.allclose(ends, expected, atol=0.05)  # the contour point nearest the ramp end (0.5 deg sampling)
 
 
 def test_results_json_contract(written):
@@ -74,3 +83,40 @@ def test_results_json_contract(written):
     for key in ["V1_m_s", "V2_m_s", "V3_m_s", "time_area_mm2_s", "time_area_open_mm2_s", "fullness"]:
         assert key in data["valves"]["intake"]["flow"]
     assert isinstance(data["warnings"], list) and data["warnings"]
+
+
+def test_manufacturing_tables(written):
+    results, out = written
+    v = results.valves["intake"]
+    # polar table: exact radius at each polar angle, against interpolation of a dense contour
+    header, rows = _read_csv(out / "contour" / "intake_polar.csv")
+    assert header == ["polar_angle_deg", "radius_mm"]
+    psi = np.array([float(r[0]) for r in rows])
+    radius = np.array([float(r[1]) for r in rows])
+    assert np.allclose(np.diff(psi), 1.0)  # [output] export_step_deg = 1
+    from valvetrain.design.valve import contour_points
+    theta = np.linspace(-np.pi, np.pi, 400001)
+    x, y = contour_points(v.law, theta, v.heel_radius, "flat", 0.0) * 1e3
+    ang = np.degrees(np.arctan2(x, y))
+    order = np.argsort(ang)
+    assert np.allclose(radius, np.interp(psi, ang[order], np.hypot(x, y)[order]), atol=1e-6)
+    assert radius[psi == 0.0][0] == pytest.approx(26.25, abs=1e-9)  # r0 + h_T max at the nose
+    # Cartesian table at the same step
+    header, rows = _read_csv(out / "contour" / "intake_cartesian.csv")
+    assert header == ["cam_deg", "x_mm", "y_mm"]
+    cam = np.radians([float(r[0]) for r in rows])
+    xy = np.array([[float(r[1]), float(r[2])] for r in rows]).T
+    assert np.allclose(xy, contour_points(v.law, cam, v.heel_radius, "flat", 0.0) * 1e3, atol=1e-9)
+
+
+def test_exported_lift_table_reads_back(written):
+    """The exported lift table, read back, gives the same lift to 1e-6 mm; as law = "table" it finds the nose."""
+    from valvetrain.laws.measured import TableLaw, read_lift_table
+
+    results, out = written
+    v = results.valves["intake"]
+    angle, lift = read_lift_table(out / "contour" / "intake_lift.csv")
+    theta = np.radians(angle) - v.nose_crank / 2.0
+    assert np.abs(lift - v.law.lift(theta) * 1e3).max() < 1e-6
+    law = TableLaw(np.radians(angle), lift * 1e-3)
+    assert np.degrees(law.centre) * 2 == pytest.approx(116.0, abs=0.01)  # nose at 116 crank deg (Table P1)

@@ -123,19 +123,71 @@ def contour_columns(valve):
     }
 
 
+def polar_contour_columns(valve, step_deg):
+    """The contour's polar radius at polar angles every ``step_deg`` [deg, mm], for manufacture.
+
+    The polar angle is measured from the nose direction (+y) towards +x; each radius is
+    solved on the analytic contour (root of the contour point's polar angle), not
+    interpolated, so the table is exact at any step.
+    """
+    from scipy.optimize import brentq
+
+    theta = valve.contour_angle
+    psi = np.unwrap(np.arctan2(*valve.contour))
+    targets = np.radians(np.arange(-180.0, 180.0, step_deg))
+    law, heel, follower, roller = valve.law, valve.heel_radius, valve.follower, valve.roller_radius
+    from .design.valve import contour_points
+
+    def polar(t):
+        x, y = contour_points(law, np.array([t]), heel, follower, roller)[:, 0]
+        return np.arctan2(x, y), np.hypot(x, y)
+
+    radii = []
+    for target in targets:
+        k = int(np.clip(np.searchsorted(psi, target), 1, psi.size - 1))
+        lo, hi = theta[k - 1], theta[k]
+        f = lambda t: np.angle(np.exp(1j * (polar(t)[0] - target)))  # noqa: E731
+        t = brentq(f, lo, hi, xtol=1e-14) if f(lo) * f(hi) < 0 else (lo if abs(f(lo)) < abs(f(hi)) else hi)
+        radii.append(polar(t)[1])
+    return {"polar_angle_deg": np.degrees(targets), "radius_mm": np.array(radii) / MM}
+
+
+def cartesian_contour_columns(valve, step_deg):
+    """Contour points every ``step_deg`` of camshaft angle [deg, mm] (follower angle from the nose)."""
+    from .design.valve import contour_points
+
+    theta = np.radians(np.arange(-180.0, 180.0, step_deg))
+    x, y = contour_points(valve.law, theta, valve.heel_radius, valve.follower, valve.roller_radius) / MM
+    return {"cam_deg": np.degrees(theta), "x_mm": x, "y_mm": y}
+
+
+def lift_export_columns(valve, step_deg):
+    """Tappet lift every ``step_deg`` cam degrees in the measured-table format ``angle_deg,lift_mm``.
+
+    The angles are camshaft degrees in the engine's cam frame (crank angle from the
+    gas-exchange TDC / 2), so ``law = "table"`` with ``table_angle = "cam"`` and
+    ``table_lift_at = "tappet"`` reads the file back.
+    """
+    law = valve.law
+    theta = np.radians(np.arange(np.ceil(np.degrees(law.start) / step_deg) * step_deg, np.degrees(law.end), step_deg))
+    return {"angle_deg": np.degrees(theta + valve.nose_crank / 2.0), "lift_mm": law.lift(theta) / MM}
+
+
 def write_dxf(path, valve):
     """Write the cam contour as DXF (millimetres).
 
     Layers: ``CAM_PROFILE`` (closed polyline of the contour), ``BASE_CIRCLE`` (the heel
-    circle), ``SEGMENTS`` (radial lines to the junctions of the lift-law segments),
-    ``AXES`` (centre lines; +y is the nose direction).
+    circle), ``RAMP_BOUNDARIES`` and ``SEGMENT_BOUNDARIES`` (radial lines to the ends of
+    the ramps and to the other junctions of the lift-law segments), ``AXES`` (centre lines;
+    +y is the nose direction).
     """
     import ezdxf
     from ezdxf import units
 
     doc = ezdxf.new("R2010")
     doc.units = units.MM
-    for name, color in (("CAM_PROFILE", 7), ("BASE_CIRCLE", 3), ("SEGMENTS", 1), ("AXES", 5)):
+    for name, color in (("CAM_PROFILE", 7), ("BASE_CIRCLE", 3), ("RAMP_BOUNDARIES", 6), ("SEGMENT_BOUNDARIES", 1),
+                        ("AXES", 5)):
         doc.layers.add(name, color=color)
     msp = doc.modelspace()
     pts = (valve.contour / MM).T
@@ -145,9 +197,11 @@ def write_dxf(path, valve):
     reach = 1.2 * float(np.max(np.hypot(*pts.T)))
     msp.add_line((-reach, 0.0), (reach, 0.0), dxfattribs={"layer": "AXES"})
     msp.add_line((0.0, -reach), (0.0, reach), dxfattribs={"layer": "AXES"})
+    ramps = {s.end if "opening" in s.name else s.start for s in valve.law.segments if s.name.startswith("ramp")}
     for a in valve.law.breakpoints:
         k = int(np.argmin(np.abs(valve.contour_angle - a)))
-        msp.add_line((0.0, 0.0), tuple(pts[k]), dxfattribs={"layer": "SEGMENTS"})
+        layer = "RAMP_BOUNDARIES" if any(np.isclose(a, r) for r in ramps) else "SEGMENT_BOUNDARIES"
+        msp.add_line((0.0, 0.0), tuple(pts[k]), dxfattribs={"layer": layer})
     doc.saveas(path)
 
 
@@ -175,7 +229,7 @@ def write_outputs(results, out, lang="en"):
 
         out/results.json
         out/tables/NAME_lift.csv, crank.csv, engine_torque.csv, two_stroke_ports.csv, two_stroke_time_area.csv
-        out/contour/NAME.csv, NAME.dxf
+        out/contour/NAME.csv, NAME_polar.csv, NAME_cartesian.csv, NAME_lift.csv, NAME.dxf
         out/plots/NAME_kinematics.png, NAME_contour.png, NAME_time_area.png, NAME_curvature.png,
                   NAME_spring.png, crank_forces.png, crank_torque.png, crank_pin_polar.png,
                   two_stroke_ports.png, two_stroke_time_area.png
@@ -195,6 +249,10 @@ def write_outputs(results, out, lang="en"):
         for name, v in results.valves.items():
             write_csv(tmp / "tables" / f"{name}_lift.csv", lift_table_columns(v.table))
             write_csv(tmp / "contour" / f"{name}.csv", contour_columns(v))
+            step = results.spec.output.export_step_deg
+            write_csv(tmp / "contour" / f"{name}_polar.csv", polar_contour_columns(v, step))
+            write_csv(tmp / "contour" / f"{name}_cartesian.csv", cartesian_contour_columns(v, step))
+            write_csv(tmp / "contour" / f"{name}_lift.csv", lift_export_columns(v, step))
             write_dxf(tmp / "contour" / f"{name}.dxf", v)
         if results.crank is not None:
             write_csv(tmp / "tables" / "crank.csv", crank_columns(results.crank))

@@ -540,6 +540,7 @@ class Output(_Model):
 
     table_step_cam_deg: _bounded(0.0, 10.0, "deg") = 0.5
     contour_points: Annotated[int, Field(ge=36, le=100000)] = 721
+    export_step_deg: _bounded(0.0, 10.0, "deg") = 1.0
 
 
 _NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_-]*$")

@@ -219,6 +219,11 @@ def _profile(law, theta, heel, follower, roller_radius):
     return xy, rho, geometry.roller_pressure_angle(heel, roller_radius, h, dh), np.zeros_like(theta)
 
 
+def contour_points(law, theta, heel, follower, roller_radius):
+    """Cam contour points at camshaft angles theta [m], shape (2, n) (seed 002, eqs. 2.15-2.16)."""
+    return _profile(law, theta, heel, follower, roller_radius)[0]
+
+
 def _convex_radius(law, theta, heel, follower, roller_radius):
     """Profile radius of curvature where the profile is convex, +inf where it is concave.
 
