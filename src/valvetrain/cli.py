@@ -65,6 +65,37 @@ def validate(file):
 
 
 @main.command()
+@click.argument("files", nargs=-1, required=True, type=click.Path(dir_okay=False))
+@click.option("--out", "out", default="compare", show_default=True, type=click.Path(file_okay=False),
+              help="Folder for the comparison (replaced atomically if it exists).")
+def compare(files, out):
+    """Compare the cams of every valve of FILES side by side (time-area, fullness, kinematics, curvature,
+    contact stress, required spring); writes compare.csv, compare.json and overlaid plots."""
+    from pathlib import Path
+
+    from .compare import METRICS, write_comparison
+    from .design import run as run_design
+
+    designs = {}
+    for f in files:
+        res = run_design(_load(f))
+        for name, v in res.valves.items():
+            designs[f"{Path(f).stem}:{name}" if len(files) > 1 else name] = v
+    if not designs:
+        click.echo("error: the files define no valves to compare", err=True)
+        sys.exit(2)
+    rows, notes = write_comparison(designs, out)
+    width = max(len(label) for _, label in METRICS)
+    click.echo(" " * width + "".join(f"  {lab[:18]:>18}" for lab in rows))
+    for key, label in METRICS:
+        cells = "".join(f"  {r[key]:>18}" if isinstance(r[key], str) else f"  {r[key]:>18.6g}" for r in rows.values())
+        click.echo(f"{label:<{width}}{cells}")
+    for n in notes:
+        click.echo(f"note: {n}")
+    click.echo(f"wrote {out}/ (compare.csv, compare.json, plots/)")
+
+
+@main.command()
 def example():
     """Print the built-in example specification (seed 000's appendix engine) as TOML."""
     click.echo(example_text(), nl=False)

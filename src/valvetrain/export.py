@@ -1,5 +1,6 @@
 """Writing results: JSON, CSV tables, contour CSV and DXF, and the whole output folder atomically."""
 
+from contextlib import contextmanager
 import csv
 import json
 import os
@@ -237,12 +238,7 @@ def write_outputs(results, out, lang="en"):
     """
     from .report import write_plots, write_report
 
-    out = Path(out)
-    if out.exists() and not out.is_dir():
-        raise FileExistsError(f"--out {out}: exists and is not a folder")
-    out.parent.mkdir(parents=True, exist_ok=True)
-    tmp = Path(tempfile.mkdtemp(prefix=f".{out.name}.", suffix=".tmp", dir=out.parent))
-    try:
+    with atomic_folder(out) as tmp:
         for sub in ("tables", "contour", "plots"):
             (tmp / sub).mkdir()
         (tmp / "results.json").write_text(results_json(results), encoding="utf-8")
@@ -262,11 +258,28 @@ def write_outputs(results, out, lang="en"):
             write_csv(tmp / "tables" / "two_stroke_time_area.csv", two_stroke_speed_columns(results.two_stroke))
         plots = write_plots(results, tmp / "plots", lang)
         write_report(results, tmp / "report.html", plots, lang)
+    return Path(out)
+
+
+@contextmanager
+def atomic_folder(out):
+    """Yield a temporary sibling folder of ``out`` and move it into place when the block completes.
+
+    A failure or an interruption inside the block removes the temporary folder and leaves
+    ``out`` as it was (absent, or the previous contents); an existing ``out`` is replaced
+    in one rename.
+    """
+    out = Path(out)
+    if out.exists() and not out.is_dir():
+        raise FileExistsError(f"--out {out}: exists and is not a folder")
+    out.parent.mkdir(parents=True, exist_ok=True)
+    tmp = Path(tempfile.mkdtemp(prefix=f".{out.name}.", suffix=".tmp", dir=out.parent))
+    try:
+        yield tmp
         _replace_dir(tmp, out)
     except BaseException:
         shutil.rmtree(tmp, ignore_errors=True)
         raise
-    return out
 
 
 def _replace_dir(new, out):
