@@ -119,7 +119,19 @@ class _RampKeys(_Model):
     ramp_acceleration_fraction: _bounded(0.0, 1.0) = 0.5
 
 
-class KurzCam(_CamBase, _RampKeys):
+class _ClosingSide(_Model):
+    closing: Optional[dict] = None
+    """[valves.NAME.cam.closing]: the closing flank's own keys (same law; angles and ramp may differ)."""
+
+    def closing_cam(self):
+        """The closing flank as a cam of the same law (the keys not given are the opening flank's)."""
+        if self.closing is None:
+            return None
+        data = {**self.model_dump(exclude={"closing"}), **self.closing, "law": self.law}
+        return type(self).model_validate(data)
+
+
+class KurzCam(_CamBase, _RampKeys, _ClosingSide):
     """[valves.NAME.cam] with law = "kurz" (seed 000, work 2)."""
 
     law: Literal["kurz"]
@@ -174,7 +186,7 @@ class PolynomialCam(_CamBase, _RampKeys):
         return self
 
 
-class ConstantAccelerationCam(_CamBase, _RampKeys):
+class ConstantAccelerationCam(_CamBase, _RampKeys, _ClosingSide):
     """[valves.NAME.cam] with law = "constant_acceleration" (seed 002 section 2.4; spec section 5)."""
 
     law: Literal["constant_acceleration"]
@@ -199,7 +211,7 @@ class Ratio(_Model):
     value: _bounded(-100.0, 100.0)
 
 
-class CombinedCam(_CamBase, _RampKeys):
+class CombinedCam(_CamBase, _RampKeys, _ClosingSide):
     """[valves.NAME.cam] with law = "combined": acceleration segments with continuous acceleration (spec section 6)."""
 
     law: Literal["combined"]
@@ -610,6 +622,8 @@ def _valve_problems(name, v, engine):
         out.append(f"{at}.cam.base_radius_mm = {cam.base_radius_mm:g} must exceed clearance_mm = {v.clearance_mm:g}")
     if isinstance(cam, HarmonicCam):
         cam = cam.target
+    if getattr(cam, "closing", None) is not None:
+        return out + _asymmetric_problems(at, cam, half, v)
     if isinstance(cam, (KurzCam, ConstantAccelerationCam)):
         if v.clearance_mm <= 0.0:
             out.append(f"{at}.clearance_mm = {v.clearance_mm:g}: the cam's ramp takes up the clearance, "
@@ -722,6 +736,30 @@ def _two_stroke_problems(spec):
             out.append(f"two_stroke.ports.{name}: an inlet port needs two_stroke.piston_height_mm")
     if ts.speed_range_rpm is not None and ts.speed_range_rpm[0] >= ts.speed_range_rpm[1]:
         out.append(f"two_stroke.speed_range_rpm = {list(ts.speed_range_rpm)} must be [low, high] with low < high")
+    return out
+
+
+def side_half_angle_deg(cam):
+    """Main angle of one flank [cam deg]: the sum of its segment angles (phi3 must be given on an asymmetric cam)."""
+    if isinstance(cam, CombinedCam):
+        return sum(seg.length_deg for seg in cam.segments)
+    return cam.phi1_deg + cam.phi2_deg + (cam.phi3_deg or 0.0)
+
+
+def _asymmetric_problems(at, cam, half, v):
+    out = []
+    if v.clearance_mm <= 0.0:
+        out.append(f"{at}.clearance_mm = {v.clearance_mm:g}: the cam's ramp takes up the clearance, allowed (0, 5] mm")
+    try:
+        closing = cam.closing_cam()
+    except ValidationError as exc:
+        return out + [f"{at}.cam.closing: {_message(err)}" for err in exc.errors()]
+    if isinstance(cam, KurzCam) and (cam.phi3_deg is None or closing.phi3_deg is None):
+        out.append(f"{at}.cam: an asymmetric Kurz cam needs phi3_deg on both flanks")
+    total = side_half_angle_deg(cam) + side_half_angle_deg(closing)
+    if abs(total - 2.0 * half) > 1e-6:
+        out.append(f"{at}.cam: the opening and closing flanks add up to {total:g} cam deg; they must equal the main "
+                   f"event (opens_deg + 180 + closes_deg)/2 = {2.0 * half:g} cam deg")
     return out
 
 

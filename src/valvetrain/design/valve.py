@@ -12,7 +12,7 @@ import numpy as np
 from .. import flow, geometry
 from ..checks import Finding, check_range
 from ..crank.kinematics import displacement
-from ..laws import CombinedLaw, ConstantAccelerationLaw, DynamicLaw, HarmonicLaw, KurzLaw, PolydyneLaw, PolynomialLaw, TangentLaw, ThreeArcLaw
+from ..laws import AsymmetricLaw, CombinedLaw, ConstantAccelerationLaw, DynamicLaw, HarmonicLaw, KurzLaw, PolydyneLaw, PolynomialLaw, TangentLaw, ThreeArcLaw
 from ..numerics import extremum
 from ..spec import kurz_phi3_deg, main_half_angle_deg
 from ..units import DEG, MM, rad_to_deg, rpm_to_rad_s
@@ -92,6 +92,16 @@ class ValveDesign:
 
 
 def build_law(valve, strokes=4, rated_speed=None):
+    """The lift law of a valve (see :func:`build_side`); an asymmetric cam joins two flanks at the nose."""
+    closing = valve.cam.closing_cam() if hasattr(valve.cam, "closing_cam") else None
+    if closing is None:
+        return build_side(valve, strokes, rated_speed)
+    opening = build_side(valve.model_copy(update={"cam": valve.cam.model_copy(update={"closing": None})}), strokes,
+                         rated_speed)
+    return AsymmetricLaw(opening, build_side(valve.model_copy(update={"cam": closing}), strokes, rated_speed))
+
+
+def build_side(valve, strokes=4, rated_speed=None):
     """The lift law of a valve specification, in SI (tappet side).
 
     Laws with a ramp take up the clearance on it (ramp height = clearance); the arc cams
@@ -121,7 +131,7 @@ def build_law(valve, strokes=4, rated_speed=None):
         lift = lift * MM / (valve.rocker_ratio if cam.table_lift_at == "valve" else 1.0)
         return TableLaw(theta, lift, cam.fit, cam.accuracy_mm * MM, cam.max_harmonics)
     if cam.law == "harmonic":
-        target = build_law(valve.model_copy(update={"cam": cam.target}), strokes, rated_speed)
+        target = build_side(valve.model_copy(update={"cam": cam.target}), strokes, rated_speed)
         return HarmonicLaw(target, cam.harmonics, cam.junction_order)
     if cam.law == "dynamic":
         omega = rpm_to_rad_s(cam.design_speed_rpm or rated_speed) / 2.0
@@ -154,7 +164,12 @@ def valve_nose(valve, law):
     """Crank angle of the cam nose [rad]: from the measured table when the law carries its timing, else from
     opens_deg/closes_deg."""
     centre = getattr(law, "nose_cam_angle", None)
-    return 2.0 * centre if centre is not None else nose_crank_angle(valve)
+    if centre is not None:
+        return 2.0 * centre
+    if isinstance(law, AsymmetricLaw):  # the main lift starts where the specification says, the nose follows it
+        start = -valve.opens_deg * DEG if valve.kind == "intake" else (-180.0 - valve.opens_deg) * DEG
+        return start + 2.0 * law.main_half_angle
+    return nose_crank_angle(valve)
 
 
 def measured_summary(valve, law, nose):

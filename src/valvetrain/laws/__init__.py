@@ -1,5 +1,6 @@
 """Cam lift laws.  Every law is a :class:`~valvetrain.laws.base.LiftLaw`."""
 
+from .asymmetric import AsymmetricLaw
 from .base import Extremes, LiftLaw, Segment, SymmetricLaw
 from .combined import CombinedLaw
 from .constant_acceleration import ConstantAccelerationLaw
@@ -11,6 +12,6 @@ from .polydyne import PolydyneLaw, PolynomialLaw, default_exponents, polydyne_co
 from .ramps import make_ramp
 
 __all__ = [
-    "CombinedLaw", "ConstantAccelerationLaw", "DynamicLaw", "HarmonicLaw", "harmonic_limit", "TangentLaw", "ThreeArcLaw", "Extremes", "LiftLaw", "Segment", "SymmetricLaw", "KurzLaw", "kurz_coefficients", "PolydyneLaw",
+    "AsymmetricLaw", "CombinedLaw", "ConstantAccelerationLaw", "DynamicLaw", "HarmonicLaw", "harmonic_limit", "TangentLaw", "ThreeArcLaw", "Extremes", "LiftLaw", "Segment", "SymmetricLaw", "KurzLaw", "kurz_coefficients", "PolydyneLaw",
     "PolynomialLaw", "default_exponents", "make_ramp", "polydyne_coefficients",
 ]
