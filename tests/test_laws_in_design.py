@@ -106,3 +106,22 @@ def test_report_for_an_arc_cam(tmp_path):
     assert CliRunner().invoke(main, ["run", str(f), "--out", str(out)]).exit_code == 0
     assert json.loads((out / "results.json").read_text())["valves"]["intake"]["cam"]["law"] == "three_arc"
     assert "three_arc" in (out / "report.html").read_text()
+
+
+def test_train_natural_frequency_and_harmonic_rule():
+    """omega_n = sqrt((c + K)/M), epsilon = M omega^2/(c + K) (SPEC.md: M omega^2 / c, not omega^3); an N-harmonic
+    cam above N < alpha_W omega_n / (pi omega) is flagged (spec section 9)."""
+    spec = _spec("harmonic")
+    drive = spec.valves["intake"].drive.model_copy(update={"stiffness_N_per_mm": 3000.0})
+    valve = spec.valves["intake"].model_copy(update={"drive": drive})
+    res = run(spec.model_copy(update={"valves": {"intake": valve}}))
+    m = res.to_dict()["valves"]["intake"]["masses"]
+    rate = res.to_dict()["valves"]["intake"]["spring"]["rate_N_per_mm"] * 1e3
+    omega_n = np.sqrt((3000e3 + rate) / m["at_valve_kg"])
+    assert m["natural_frequency_Hz"] == pytest.approx(omega_n / (2 * np.pi), rel=1e-12)
+    omega = np.pi * 7000 / 60
+    assert m["epsilon"] == pytest.approx(m["at_valve_kg"] * omega**2 / (3000e3 + rate), rel=1e-12)
+    law = res.valves["intake"].law
+    assert m["harmonic_limit"] == pytest.approx(law.alpha * omega_n / (np.pi * omega), rel=1e-12)
+    flagged = any(w.quantity == "intake: harmonic order N of the cam" for w in res.warnings)
+    assert flagged == (24 > m["harmonic_limit"])

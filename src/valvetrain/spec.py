@@ -335,6 +335,7 @@ class Drive(_Model):
 
     layout: Optional[Literal["direct", "rocker", "pushrod"]] = None
     spring_reserve: _bounded(1.0, 5.0) = 1.8
+    stiffness_N_per_mm: Optional[_bounded(0.0, 1e7, "N/mm")] = None
     specific_mass_kg_m2: Optional[_bounded(0.0, 5000.0, "kg/m2")] = None
     valve_arm_mm: Optional[Length(0.0, 1000.0)] = None
     masses: Optional[Masses] = None

@@ -171,6 +171,9 @@ def drive_stage(v, spec, law, omega, heel, roller):
         spring_rec["inner_share"] = sp.inner_share
 
     mass_rec = {"at_valve_kg": m_v, "at_tappet_kg": m_t, "source": mass_source, "layout": v.layout}
+    if v.drive.stiffness_N_per_mm is not None:
+        mass_rec.update(_train_dynamics(v, law, omega, m_v, chosen_line.rate))
+        found += mass_rec.pop("_findings")
 
     strength_rec, strength_found = _strength(v, law, omega, heel, roller, theta, y, dh, d2h, a_v, m_v, chosen_line,
                                              gas)
@@ -270,3 +273,24 @@ def _strength(v, law, omega, heel, roller, theta, y, dh, d2h, a_v, m_v, line, ga
     rec["checks"] = checks
     rec["not_checked"] = notes
     return rec, found
+
+
+def _train_dynamics(v, law, omega, mass, spring_rate):
+    """Natural frequency of the one-mass train and the perturbation parameter (seed 002, sections 1 and 3.3).
+
+    omega_n = sqrt((c + K) / M) with the drive stiffness c and the spring rate K at the valve;
+    epsilon = M omega^2 / (c + K) (the printed M omega^3 / c is dimensionally wrong, SPEC.md);
+    for an N-harmonic cam the design rule N < alpha_W omega_n / (pi omega) (spec section 9).
+    """
+    from ..laws import HarmonicLaw, harmonic_limit
+
+    c = v.drive.stiffness_N_per_mm / MM
+    omega_n = float(np.sqrt((c + spring_rate) / mass))
+    out = {"drive_stiffness_N_per_mm": c * MM, "natural_frequency_Hz": omega_n / (2 * np.pi),
+           "epsilon": mass * omega**2 / (c + spring_rate), "_findings": []}
+    if isinstance(law, HarmonicLaw):
+        limit = harmonic_limit(law.alpha, omega_n, omega)
+        out["harmonic_limit"] = limit
+        out["_findings"] = check_range("harmonic order N of the cam", law.harmonics, high=limit,
+                                       source="spec/methods-seeds-002-004.md section 9: N < alpha_W omega_n/(pi omega)")
+    return out
