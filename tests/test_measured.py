@@ -52,7 +52,7 @@ def test_durations_at_checking_heights():
     law = TableLaw(theta, lift)
     for h_mm in (0.1, 0.5, 1.0, 1.27):
         h = h_mm * 1e-3
-        rise = brentq(lambda t: exact.lift(t) - h, exact.start, 0.0)
+        rise = brentq(lambda t, h=h: exact.lift(t) - h, exact.start, 0.0)
         assert law.duration(h) == pytest.approx(-2 * rise, abs=np.radians(0.02))
 
 

@@ -147,7 +147,7 @@ def polar_contour_columns(valve, step_deg):
     for target in targets:
         k = int(np.clip(np.searchsorted(psi, target), 1, psi.size - 1))
         lo, hi = theta[k - 1], theta[k]
-        f = lambda t: np.angle(np.exp(1j * (polar(t)[0] - target)))  # noqa: E731
+        f = lambda t, target=target: np.angle(np.exp(1j * (polar(t)[0] - target)))  # noqa: E731
         t = brentq(f, lo, hi, xtol=1e-14) if f(lo) * f(hi) < 0 else (lo if abs(f(lo)) < abs(f(hi)) else hi)
         radii.append(polar(t)[1])
     return {"polar_angle_deg": np.degrees(targets), "radius_mm": np.array(radii) / MM}

@@ -178,7 +178,7 @@ class PolynomialCam(_CamBase, _RampKeys):
     @model_validator(mode="after")
     def _exponents_and_ramp(self):
         k = self.exponents
-        if any(b <= a for a, b in zip(k, k[1:])) or any(e < 3 and e != 2 for e in k):
+        if any(b <= a for a, b in zip(k, k[1:], strict=False)) or any(e < 3 and e != 2 for e in k):
             raise ValueError(f"exponents = {k}: allowed an increasing list, each 2 or >= 3 (below 3 the jerk is "
                              "infinite at the nose)")
         if self.ramp and self.ramp_end_velocity_mm_per_deg is None:

@@ -160,6 +160,24 @@ class LiftLaw(ABC):
         return Extremes(omega * v, omega**2 * amax, omega**2 * amin, xv, xa, xn)
 
 
+class RampedLaw(LiftLaw):
+    """Lift above the ramp ``self._lift`` and an optional ramp ``self.ramp`` (a :class:`~.ramps.Ramp` or None)."""
+
+    ramp = None
+
+    @property
+    def lift_max(self):
+        return self._lift
+
+    @property
+    def ramp_height(self):
+        return self.ramp.height if self.ramp is not None else 0.0
+
+    @property
+    def ramp_angle(self):
+        return self.ramp.length if self.ramp is not None else 0.0
+
+
 class SymmetricLaw(LiftLaw):
     """A law symmetric about the nose, defined by its rise ``_rise(phi)`` on the opening side.
 

@@ -16,7 +16,7 @@ by exact integration from the ramp's end (h0, v0, zero acceleration).  The unkno
 
 import numpy as np
 
-from .base import SymmetricLaw, segment_index
+from .base import RampedLaw, SymmetricLaw, segment_index
 from .ramps import make_ramp
 
 # shape name -> list of basis functions of the local coordinate t = x / L in [0, 1]:
@@ -52,7 +52,7 @@ def _basis(shape, x, length):
     raise ValueError(f"segment shape {shape!r}: allowed {', '.join(SHAPES)}")
 
 
-class CombinedLaw(SymmetricLaw):
+class CombinedLaw(RampedLaw, SymmetricLaw):
     """A combined-function cam built from acceleration segments.
 
     Parameters
@@ -155,18 +155,6 @@ class CombinedLaw(SymmetricLaw):
     def amplitude(self, i):
         """Amplitudes of segment i [m/rad^2]."""
         return self._amplitudes[self._offsets[i]:self._offsets[i + 1]]
-
-    @property
-    def lift_max(self):
-        return self._lift
-
-    @property
-    def ramp_height(self):
-        return self.ramp.height
-
-    @property
-    def ramp_angle(self):
-        return self.ramp.length
 
     @property
     def main_half_angle(self):

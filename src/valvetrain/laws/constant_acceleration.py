@@ -9,7 +9,7 @@ are not in the seed (open question Q1 of the spec): this is the general classica
 
 import numpy as np
 
-from .base import SymmetricLaw, segment_index
+from .base import RampedLaw, SymmetricLaw, segment_index
 from .ramps import make_ramp
 
 
@@ -47,7 +47,7 @@ def constant_acceleration_levels(nose_lift, ramp_height, ramp_velocity, phi1, ph
     return float(a1), float(a2)
 
 
-class ConstantAccelerationLaw(SymmetricLaw):
+class ConstantAccelerationLaw(RampedLaw, SymmetricLaw):
     """Constant-acceleration cam with ramps on both sides.
 
     Parameters
@@ -87,18 +87,6 @@ class ConstantAccelerationLaw(SymmetricLaw):
             h.append(h[-1] + v[-1] * L + a * L * L / 2.0)
             v.append(v[-1] + a * L)
         self._start = (np.array(h[:3]), np.array(v[:3]), np.array(acc))
-
-    @property
-    def lift_max(self):
-        return self._lift
-
-    @property
-    def ramp_height(self):
-        return self.ramp.height
-
-    @property
-    def ramp_angle(self):
-        return self.ramp.length
 
     @property
     def main_half_angle(self):

@@ -7,7 +7,7 @@ The classical arc cams have no ramp: the lift starts on the base circle of radiu
 import numpy as np
 from scipy.optimize import brentq
 
-from .base import SymmetricLaw
+from .base import RampedLaw, SymmetricLaw
 
 
 def three_arc_geometry(base_radius, lift, half_angle, nose_radius):
@@ -73,7 +73,7 @@ def _solve_nose_radius(base_radius, lift, half_angle, target):
                   xtol=1e-14)
 
 
-class ThreeArcLaw(SymmetricLaw):
+class ThreeArcLaw(RampedLaw, SymmetricLaw):
     """Three-arc convex cam (flank arc r1, nose arc r2) for a flat-faced follower.
 
     Parameters
@@ -124,18 +124,6 @@ class ThreeArcLaw(SymmetricLaw):
         return cls(base_radius, lift, half_angle, r2)
 
     @property
-    def lift_max(self):
-        return self._lift
-
-    @property
-    def ramp_height(self):
-        return 0.0
-
-    @property
-    def ramp_angle(self):
-        return 0.0
-
-    @property
     def main_half_angle(self):
         return self.phi_p0
 
@@ -161,7 +149,7 @@ class ThreeArcLaw(SymmetricLaw):
                 "phi1_deg": float(np.degrees(self.phi1)), "phi2_deg": float(np.degrees(self.phi2))}
 
 
-class TangentLaw(SymmetricLaw):
+class TangentLaw(RampedLaw, SymmetricLaw):
     """Tangent cam (straight flanks, nose arc) for a translating roller follower through the cam centre.
 
     Parameters
@@ -209,18 +197,6 @@ class TangentLaw(SymmetricLaw):
         centre = np.array([0.0, self.a]) + (self.r2 + self.rr) * np.array([np.sin(self.phi_p0), c])
         self.theta_t = float(np.arctan2(centre[0], centre[1]))
         self.junction = self.phi_p0 - self.theta_t
-
-    @property
-    def lift_max(self):
-        return self._lift
-
-    @property
-    def ramp_height(self):
-        return 0.0
-
-    @property
-    def ramp_angle(self):
-        return 0.0
 
     @property
     def main_half_angle(self):

@@ -6,12 +6,12 @@ spec/methods-seeds-002-004.md, section 8 [S+D]).
 
 import numpy as np
 
-from .base import SymmetricLaw
+from .base import RampedLaw, SymmetricLaw
 from .polydyne import _falling, polynomial_junction_coefficients
 from .ramps import make_ramp
 
 
-class DynamicLaw(SymmetricLaw):
+class DynamicLaw(RampedLaw, SymmetricLaw):
     """Cam lift that makes the valve follow a polynomial motion at the design speed.
 
     Parameters
@@ -95,14 +95,6 @@ class DynamicLaw(SymmetricLaw):
     @property
     def lift_max(self):
         return self._nose - self.ramp.height
-
-    @property
-    def ramp_height(self):
-        return self.ramp.height
-
-    @property
-    def ramp_angle(self):
-        return self.ramp.length
 
     @property
     def main_half_angle(self):

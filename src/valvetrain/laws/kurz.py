@@ -11,7 +11,7 @@ from dataclasses import asdict, dataclass
 import numpy as np
 
 from ..checks import check_range
-from .base import SymmetricLaw, segment_index
+from .base import RampedLaw, SymmetricLaw, segment_index
 from .ramps import make_ramp
 
 RAMP_VELOCITY_RANGE_MM_PER_DEG = (0.008, 0.022)
@@ -105,7 +105,7 @@ def kurz_coefficients(lift, ramp_velocity, phi1, phi2, phi3, shape_factor=0.625)
     return KurzCoefficients(**{k: float(v) for k, v in values.items()})
 
 
-class KurzLaw(SymmetricLaw):
+class KurzLaw(RampedLaw, SymmetricLaw):
     """Kurz shock-free cam law.
 
     Parameters
@@ -151,18 +151,6 @@ class KurzLaw(SymmetricLaw):
         self.phi0 = float(self.ramp.length)
         self.c = kurz_coefficients(self._lift, self.ramp_velocity, self.phi1, self.phi2, self.phi3, self.shape_factor)
         self._edges = np.cumsum([0.0, self.phi0, self.phi1, self.phi2, self.phi3])
-
-    @property
-    def lift_max(self):
-        return self._lift
-
-    @property
-    def ramp_height(self):
-        return self.clearance
-
-    @property
-    def ramp_angle(self):
-        return self.phi0
 
     @property
     def main_half_angle(self):

@@ -15,7 +15,7 @@ import numpy as np
 from scipy.interpolate import make_smoothing_spline
 from scipy.optimize import brentq, minimize_scalar
 
-from .base import LiftLaw, Segment
+from .base import RampedLaw, Segment
 
 CHECKING_HEIGHTS_MM = (0.1, 0.5, 1.0, 1.27)
 """Standard checking heights [mm]: 0.1, 0.5, 1.0 mm and 0.050 in = 1.27 mm."""
@@ -130,7 +130,7 @@ class FitQuality:
     jerk_total_variation: float  # [m/rad^3]
 
 
-class TableLaw(LiftLaw):
+class TableLaw(RampedLaw):
     """A measured lift table as a lift law, through a smoothing spline (GCV) or an N-harmonic fit.
 
     Parameters
@@ -235,14 +235,6 @@ class TableLaw(LiftLaw):
     @property
     def lift_max(self):
         return float(self.fitted(np.zeros(1))[0, 0])
-
-    @property
-    def ramp_height(self):
-        return 0.0
-
-    @property
-    def ramp_angle(self):
-        return 0.0
 
     @property
     def main_half_angle(self):

@@ -13,7 +13,7 @@ ends at zero acceleration, so the joined law is C2; its jerk jumps at the juncti
 import numpy as np
 
 from ..checks import check_range
-from .base import SymmetricLaw
+from .base import RampedLaw, SymmetricLaw
 from .ramps import make_ramp
 
 EXPONENT_P_RANGE = (6, 16)
@@ -116,7 +116,7 @@ def polynomial_junction_coefficients(exponents, nose_lift, end_lift, end_slope):
     return np.linalg.solve(matrix, rhs)
 
 
-class PolynomialLaw(SymmetricLaw):
+class PolynomialLaw(RampedLaw, SymmetricLaw):
     """High-order polynomial cam with any exponent set, optionally joined to ramps.
 
     .. math:: h = h_{nose} + \\sum_k a_k x^k,\\quad x = \\theta/\\varphi_{p0}
@@ -152,7 +152,7 @@ class PolynomialLaw(SymmetricLaw):
     def __init__(self, lift, main_half_angle, exponents, ramp_height=0.0, ramp_velocity=0.0, ramp_kind="cosine",
                  ramp_fraction=0.5):
         k = tuple(float(e) for e in exponents)
-        if len(k) < 2 or any(b <= a for a, b in zip(k, k[1:])) or any(e < 3 and e != 2 for e in k):
+        if len(k) < 2 or any(b <= a for a, b in zip(k, k[1:], strict=False)) or any(e < 3 and e != 2 for e in k):
             raise ValueError(f"polynomial exponents {k}: allowed an increasing set of at least two, each 2 or >= 3 "
                              "(below 3 the jerk is infinite at the nose)")
         if not (lift > 0 and main_half_angle > 0):
@@ -172,18 +172,6 @@ class PolynomialLaw(SymmetricLaw):
     @property
     def exponents(self):
         return tuple(float(e) for e in self._k)
-
-    @property
-    def lift_max(self):
-        return self._lift
-
-    @property
-    def ramp_height(self):
-        return self.ramp.height if self.ramp is not None else 0.0
-
-    @property
-    def ramp_angle(self):
-        return self.ramp.length if self.ramp is not None else 0.0
 
     @property
     def main_half_angle(self):
