@@ -65,7 +65,7 @@ def test_spline_and_harmonic_quality():
         assert q.jerk_sign_changes >= 2
 
 
-BAD = [("angle,lift\n", ":1: the header"), ("angle_deg,lift_mm\n0,1\n1,x\n", ":3: '1,x' is not two numbers"),
+BAD = [("angle,lift\n", ":1: header 'angle,lift': allowed 'angle_deg,lift_mm'"), ("angle_deg,lift_mm\n0,1\n1,x\n", ":3: '1,x' is not two numbers"),
        ("angle_deg,lift_mm\n" + "".join(f"{a},0\n" for a in range(12)) + "5,0\n", ":14: angle_deg = 5 must be larger"),
        ("angle_deg,lift_mm\n0,0\n1,0\n", "at least 10 rows")]
 

@@ -6,13 +6,12 @@ phi = 0 the TDC that starts the intake stroke and the firing TDC at 360 deg; a t
 cycle runs 0...360 deg with the firing TDC at 0 (= 360).  Pressures are absolute [Pa].
 """
 
-import csv
 from dataclasses import dataclass
-from pathlib import Path
 
 import numpy as np
 from scipy.integrate import solve_ivp
 
+from ..csvfiles import read_two_columns
 from .kinematics import brix_displacement, displacement
 
 
@@ -59,32 +58,11 @@ def read_indicator(path, strokes):
     PressureFileError
         With the file name and line number of the first problem.
     """
-    path = Path(path)
     where = str(path)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError) as exc:
-        raise PressureFileError(f"{where}: cannot read the file: {exc}") from None
-    rows = [(n, r) for n, r in enumerate(csv.reader(text.splitlines()), start=1)
-            if r and not r[0].lstrip().startswith("#")]
-    if not rows:
-        raise PressureFileError(f"{where}: the file is empty")
-    n0, header = rows[0]
-    key = tuple(h.strip() for h in header)
-    if key not in _HEADERS:
-        raise PressureFileError(f"{where}:{n0}: header {','.join(key)!r}: allowed 'crank_deg,pressure_MPa' or "
-                                "'volume_cm3,pressure_MPa'")
+    key, rows = read_two_columns(path, list(_HEADERS), PressureFileError)
     kind = _HEADERS[key]
     xs, ps = [], []
-    for n, r in rows[1:]:
-        if len(r) != 2:
-            raise PressureFileError(f"{where}:{n}: expected 2 values, found {len(r)}")
-        try:
-            x, p = float(r[0]), float(r[1])
-        except ValueError:
-            raise PressureFileError(f"{where}:{n}: {','.join(r)!r} is not two numbers") from None
-        if not (np.isfinite(x) and np.isfinite(p)):
-            raise PressureFileError(f"{where}:{n}: values must be finite")
+    for n, x, p in rows:
         if p <= 0.0:
             raise PressureFileError(f"{where}:{n}: pressure_MPa = {p:g}: an absolute pressure must be > 0")
         if kind == "angle":

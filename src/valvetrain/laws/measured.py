@@ -7,14 +7,13 @@ when read.  Lifts are follower (tappet) lifts [m]; a table of valve lift is divi
 the rocker ratio.
 """
 
-import csv
 from dataclasses import dataclass
-from pathlib import Path
 
 import numpy as np
 from scipy.interpolate import make_smoothing_spline
 from scipy.optimize import brentq, minimize_scalar
 
+from ..csvfiles import read_two_columns
 from .base import RampedLaw, Segment
 
 CHECKING_HEIGHTS_MM = (0.1, 0.5, 1.0, 1.27)
@@ -38,26 +37,9 @@ def read_lift_table(path):
     TableFileError
         Naming the file and line of the first problem.
     """
-    path = Path(path)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError) as exc:
-        raise TableFileError(f"{path}: cannot read the file: {exc}") from None
-    rows = [(n, r) for n, r in enumerate(csv.reader(text.splitlines()), start=1)
-            if r and not r[0].lstrip().startswith("#")]
-    if not rows or tuple(h.strip() for h in rows[0][1]) != ("angle_deg", "lift_mm"):
-        line = rows[0][0] if rows else 1
-        raise TableFileError(f"{path}:{line}: the header must be 'angle_deg,lift_mm'")
+    _, rows = read_two_columns(path, [("angle_deg", "lift_mm")], TableFileError)
     angles, lifts = [], []
-    for n, r in rows[1:]:
-        if len(r) != 2:
-            raise TableFileError(f"{path}:{n}: expected 2 values, found {len(r)}")
-        try:
-            a, h = float(r[0]), float(r[1])
-        except ValueError:
-            raise TableFileError(f"{path}:{n}: {','.join(r)!r} is not two numbers") from None
-        if not (np.isfinite(a) and np.isfinite(h)):
-            raise TableFileError(f"{path}:{n}: values must be finite")
+    for n, a, h in rows:
         if angles and a <= angles[-1]:
             raise TableFileError(f"{path}:{n}: angle_deg = {a:g} must be larger than the previous {angles[-1]:g}")
         angles.append(a)
