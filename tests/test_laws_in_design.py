@@ -31,11 +31,16 @@ CAMS = {
 }
 
 
-def _spec(law):
+def _text(cam_keys):
+    """The example with its Kurz keys replaced by ``cam_keys``."""
     text = example_text()
     for line in KURZ_BLOCK:
         text = text.replace(line, "", 1)
-    text = text.replace(KURZ_KEYS, CAMS[law])
+    return text.replace(KURZ_KEYS, cam_keys)
+
+
+def _spec(law):
+    text = _text(CAMS[law])
     if law == "tangent":
         text = text.replace('follower = "flat"', 'follower = "roller"\nroller_radius_mm = 11.0')
     return parse_spec(text)
@@ -77,10 +82,7 @@ def test_three_arc_construction_in_results():
 
 def test_impossible_arc_cam_is_refused(tmp_path):
     f = tmp_path / "bad.toml"
-    text = example_text()
-    for line in KURZ_BLOCK:
-        text = text.replace(line, "", 1)
-    f.write_text(text.replace(KURZ_KEYS, 'law = "three_arc"\nnose_radius_mm = 19.9'))
+    f.write_text(_text('law = "three_arc"\nnose_radius_mm = 19.9'))
     result = CliRunner().invoke(main, ["validate", str(f)])
     assert result.exit_code == 2
     assert "valves.intake.cam: three-arc cam" in result.output
@@ -88,10 +90,7 @@ def test_impossible_arc_cam_is_refused(tmp_path):
 
 def test_tangent_needs_a_roller(tmp_path):
     f = tmp_path / "bad.toml"
-    text = example_text()
-    for line in KURZ_BLOCK:
-        text = text.replace(line, "", 1)
-    f.write_text(text.replace(KURZ_KEYS, 'law = "tangent"'))
+    f.write_text(_text('law = "tangent"'))
     result = CliRunner().invoke(main, ["validate", str(f)])
     assert result.exit_code == 2 and 'needs follower = "roller"' in result.output
 
@@ -99,10 +98,7 @@ def test_tangent_needs_a_roller(tmp_path):
 def test_report_for_an_arc_cam(tmp_path):
     out = tmp_path / "d"
     f = tmp_path / "e.toml"
-    text = example_text()
-    for line in KURZ_BLOCK:
-        text = text.replace(line, "", 1)
-    f.write_text(text.replace(KURZ_KEYS, CAMS["three_arc"]))
+    f.write_text(_text(CAMS["three_arc"]))
     assert CliRunner().invoke(main, ["run", str(f), "--out", str(out)]).exit_code == 0
     assert json.loads((out / "results.json").read_text())["valves"]["intake"]["cam"]["law"] == "three_arc"
     assert "three_arc" in (out / "report.html").read_text()

@@ -73,7 +73,24 @@ def _solve_nose_radius(base_radius, lift, half_angle, target):
                   xtol=1e-14)
 
 
-class ThreeArcLaw(RampedLaw, SymmetricLaw):
+class _ArcCam(RampedLaw, SymmetricLaw):
+    """Common frame of the circular-arc cams: no ramp, a flank up to ``flank_end`` and a nose arc to phi_p0."""
+
+    continuity = 1
+
+    @property
+    def main_half_angle(self):
+        return self.phi_p0
+
+    @property
+    def half_angle(self):
+        return self.phi_p0
+
+    def _rise_segments(self):
+        return [("flank", 0.0, self.flank_end), ("nose", self.flank_end, self.phi_p0)]
+
+
+class ThreeArcLaw(_ArcCam):
     """Three-arc convex cam (flank arc r1, nose arc r2) for a flat-faced follower.
 
     Parameters
@@ -100,7 +117,6 @@ class ThreeArcLaw(RampedLaw, SymmetricLaw):
     """
 
     name = "three_arc"
-    continuity = 1
 
     def __init__(self, base_radius, lift, half_angle, nose_radius):
         self.r0, self._lift, self.phi_p0, self.r2 = map(float, (base_radius, lift, half_angle, nose_radius))
@@ -124,15 +140,9 @@ class ThreeArcLaw(RampedLaw, SymmetricLaw):
         return cls(base_radius, lift, half_angle, r2)
 
     @property
-    def main_half_angle(self):
-        return self.phi_p0
-
-    @property
-    def half_angle(self):
-        return self.phi_p0
-
-    def _rise_segments(self):
-        return [("flank", 0.0, self.phi1), ("nose", self.phi1, self.phi_p0)]
+    def flank_end(self):
+        """End of the flank arc, phi1 [rad]."""
+        return self.phi1
 
     def _rise(self, phi):
         flank = phi <= self.phi1
@@ -149,7 +159,7 @@ class ThreeArcLaw(RampedLaw, SymmetricLaw):
                 "phi1_deg": float(np.degrees(self.phi1)), "phi2_deg": float(np.degrees(self.phi2))}
 
 
-class TangentLaw(RampedLaw, SymmetricLaw):
+class TangentLaw(_ArcCam):
     """Tangent cam (straight flanks, nose arc) for a translating roller follower through the cam centre.
 
     Parameters
@@ -182,7 +192,6 @@ class TangentLaw(RampedLaw, SymmetricLaw):
     """
 
     name = "tangent"
-    continuity = 1
 
     def __init__(self, base_radius, lift, half_angle, roller_radius):
         self.r0, self._lift, self.phi_p0, self.rr = map(float, (base_radius, lift, half_angle, roller_radius))
@@ -199,15 +208,9 @@ class TangentLaw(RampedLaw, SymmetricLaw):
         self.junction = self.phi_p0 - self.theta_t
 
     @property
-    def main_half_angle(self):
-        return self.phi_p0
-
-    @property
-    def half_angle(self):
-        return self.phi_p0
-
-    def _rise_segments(self):
-        return [("flank", 0.0, self.junction), ("nose", self.junction, self.phi_p0)]
+    def flank_end(self):
+        """End of the straight flank [rad]."""
+        return self.junction
 
     def _rise(self, phi):
         out = np.empty((4, phi.size))
