@@ -115,3 +115,13 @@ def test_timing_keys_required_for_other_laws(tmp_path):
     f.write_text(example_text().replace("opens_deg = 26.0", ""))
     result = CliRunner().invoke(main, ["validate", str(f)])
     assert result.exit_code == 2 and "valves.intake.opens_deg: required key is missing" in result.output
+
+
+def test_table_cams_get_the_common_checks(tmp_path):
+    """A measured-table cam sets its own timing but not its geometry: a throat wider than the bore is refused."""
+    f = tmp_path / "m.toml"
+    f.write_text(EXAMPLE.read_text().replace("throat_diameter_mm = 36.8", "throat_diameter_mm = 85.0")
+                 .replace('table_file = "data/', f'table_file = "{EXAMPLE.parent}/data/'))
+    result = CliRunner().invoke(main, ["validate", str(f)])
+    assert result.exit_code == 2
+    assert "valves.intake.throat_diameter_mm = 85 must be smaller than engine.bore_mm = 80" in result.output

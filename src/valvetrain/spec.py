@@ -603,26 +603,33 @@ def kurz_phi3_deg(cam, valve, strokes):
 
 def _valve_problems(name, v, engine):
     at = f"valves.{name}"
+    missing = [k for k in ("opens_deg", "closes_deg") if getattr(v, k) is None]
+    if missing and v.cam.law != "table":
+        return [f"{at}.{k}: required key is missing (only a measured table, law = \"table\", sets its own timing)"
+                for k in missing]
     out = []
-    if v.opens_deg is None or v.closes_deg is None:
-        if v.cam.law != "table":
-            missing = [k for k in ("opens_deg", "closes_deg") if getattr(v, k) is None]
-            return [f"{at}.{k}: required key is missing (only a measured table, law = \"table\", sets its own timing)"
-                    for k in missing]
-        return _table_problems(at, v)
     if v.throat_diameter_mm >= engine.bore_mm:
         out.append(f"{at}.throat_diameter_mm = {v.throat_diameter_mm:g} must be smaller than engine.bore_mm = "
                    f"{engine.bore_mm:g}")
+    if v.cam.base_radius_mm <= v.clearance_mm:
+        out.append(f"{at}.cam.base_radius_mm = {v.cam.base_radius_mm:g} must exceed clearance_mm = {v.clearance_mm:g}")
+    if v.drive.layout == "direct" and v.rocker_ratio != 1.0:
+        out.append(f"{at}.drive.layout = \"direct\" needs rocker_ratio = 1 (got {v.rocker_ratio:g})")
+    if v.piston_gap_tdc_mm is not None and engine.rod_length_mm is None:
+        out.append(f"{at}.piston_gap_tdc_mm needs engine.rod_length_mm for the piston kinematics")
+    if not missing:
+        out += _cam_angle_problems(at, v, engine)
+    return out
+
+
+def _cam_angle_problems(at, v, engine):
+    """The cam's angles against the valve event given by opens_deg/closes_deg, and the ramps' clearance."""
+    out = []
     half = main_half_angle_deg(v, engine.strokes)
     if not 0.0 < half < 180.0:
         out.append(f"{at}.opens_deg + closes_deg = {v.opens_deg + v.closes_deg:g}: the valve event "
                    f"opens_deg + 180 + closes_deg must lie in (0, 360) crank deg")
-    lift_tappet = v.max_lift_mm / v.rocker_ratio
-    cam = v.cam
-    if cam.base_radius_mm <= v.clearance_mm:
-        out.append(f"{at}.cam.base_radius_mm = {cam.base_radius_mm:g} must exceed clearance_mm = {v.clearance_mm:g}")
-    if isinstance(cam, HarmonicCam):
-        cam = cam.target
+    cam = v.cam.target if isinstance(v.cam, HarmonicCam) else v.cam
     if getattr(cam, "closing", None) is not None:
         return out + _asymmetric_problems(at, cam, half, v)
     if isinstance(cam, (KurzCam, ConstantAccelerationCam)):
@@ -647,12 +654,6 @@ def _valve_problems(name, v, engine):
     elif getattr(cam, "ramp", False) and v.clearance_mm <= 0.0:
         out.append(f"{at}.clearance_mm = {v.clearance_mm:g}: a ramp needs a clearance to take up, "
                    "allowed (0, 5] mm")
-    if lift_tappet <= 0:
-        out.append(f"{at}.max_lift_mm = {v.max_lift_mm:g} must be positive")
-    if v.drive.layout == "direct" and v.rocker_ratio != 1.0:
-        out.append(f"{at}.drive.layout = \"direct\" needs rocker_ratio = 1 (got {v.rocker_ratio:g})")
-    if v.piston_gap_tdc_mm is not None and engine.rod_length_mm is None:
-        out.append(f"{at}.piston_gap_tdc_mm needs engine.rod_length_mm for the piston kinematics")
     return out
 
 
@@ -761,13 +762,6 @@ def _asymmetric_problems(at, cam, half, v):
     if abs(total - 2.0 * half) > 1e-6:
         out.append(f"{at}.cam: the opening and closing flanks add up to {total:g} cam deg; they must equal the main "
                    f"event (opens_deg + 180 + closes_deg)/2 = {2.0 * half:g} cam deg")
-    return out
-
-
-def _table_problems(at, v):
-    out = []
-    if v.throat_diameter_mm <= 0:
-        out.append(f"{at}.throat_diameter_mm must be positive")
     return out
 
 

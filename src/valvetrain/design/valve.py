@@ -315,7 +315,7 @@ def design_valve(name, v, spec):
     x_min, rho_min = min(extremum(convex, bp, "min"), (np.pi, heel), key=lambda p: p[1])
     x_max, rho_max = max(extremum(lambda t: np.where(np.isinf(convex(t)), -np.inf, convex(t)), bp, "max"),
                          (np.pi, heel), key=lambda p: p[1])
-    straight = bool(np.any(np.isposinf(_profile(law, theta, heel, cam.follower, roller)[1])))
+    straight = bool(np.any(np.isposinf(rho)))   # rho of the table grid above
     if straight:  # straight flanks (tangent cam): the largest radius is infinite
         x_max, rho_max = None, None
 
