@@ -12,7 +12,7 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 from ..csvfiles import read_two_columns
-from .kinematics import brix_displacement, displacement
+from .kinematics import brix_displacement, displacement, velocity
 
 
 class PressureFileError(ValueError):
@@ -178,13 +178,12 @@ def wiebe_pressure(phi, cycle, bore, radius, lam, strokes, k=0.0):
     phi = np.asarray(phi, dtype=float)
     firing = np.pi * (strokes - 2)          # 2 pi for a four-stroke, 0 (= 2 pi) for a two-stroke
     area = np.pi * bore**2 / 4.0
-    vc = area * 2.0 * radius / (cycle.compression_ratio - 1.0)
 
     def volume(t):
-        return vc + area * displacement(t, radius, lam, k)
+        return cylinder_volume(t, bore, radius, lam, cycle.compression_ratio, k)
 
-    def dvolume(t, h=1e-6):
-        return (volume(t + h) - volume(t - h)) / (2 * h)
+    def dvolume(t):  # dV/dphi = F_p ds/dphi = F_p v / omega, exact (seed 001 kinematics)
+        return area * velocity(t, radius, lam, 1.0, k)
 
     def burn_rate(t):
         z = (t - firing - cycle.start) / cycle.duration

@@ -175,7 +175,7 @@ def drive_stage(v, spec, law, omega, heel, roller):
         mass_rec.update(_train_dynamics(v, law, omega, m_v, chosen_line.rate))
         found += mass_rec.pop("_findings")
 
-    strength_rec, strength_found = _strength(v, law, omega, heel, roller, theta, y, dh, d2h, a_v, m_v, chosen_line,
+    strength_rec, strength_found = _strength(v, law, omega, heel, roller, theta, y, h, dh, d2h, a_v, m_v, chosen_line,
                                              gas)
     found += strength_found
     inertia = m_v * np.clip(-a_v, 0.0, None)
@@ -189,7 +189,7 @@ _UNITS = {"camshaft_deflection": (1.0 / MM, "mm"), "cam_contact_stress": _STRESS
           "rocker_shaft_bearing": _STRESS}
 
 
-def _strength(v, law, omega, heel, roller, theta, y, dh, d2h, a_v, m_v, line, gas):
+def _strength(v, law, omega, heel, roller, theta, y, h, dh, d2h, a_v, m_v, line, gas):
     """Work 7: the cam load along the open event and every check the layout and the given dimensions allow."""
     i_k = v.rocker_ratio
     parts = v.parts
@@ -223,10 +223,10 @@ def _strength(v, law, omega, heel, roller, theta, y, dh, d2h, a_v, m_v, line, ga
                                          f"coefficient {parts.camshaft_deflection_coefficient:.4g} (E20: not 0.8)"))
     if need(["cam_width_mm"], "cam_contact_stress"):
         if v.cam.follower == "flat":
-            rho = geometry.flat_follower_curvature(heel, law.lift(theta), d2h)
+            rho = geometry.flat_follower_curvature(heel, h, d2h)
             curv = np.where(rho > 0, 1.0 / rho, np.inf)
         else:
-            rho = geometry.roller_follower_curvature(heel, roller, law.lift(theta), dh, d2h)
+            rho = geometry.roller_follower_curvature(heel, roller, h, dh, d2h)
             curv = 1.0 / rho + 1.0 / roller
         sigma = strength.hertz_line_stress(cam, parts.cam_width_mm * MM, curv, e_contact)
         j = int(np.argmax(sigma))
