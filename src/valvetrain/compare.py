@@ -11,6 +11,7 @@ defines the same way).
 
 import numpy as np
 
+from .numerics import level_span
 from .units import MM, rad_to_deg
 
 METRICS = [
@@ -36,18 +37,8 @@ METRICS = [
 
 def duration_at(valve, height):
     """Camshaft angle [rad] over which the valve lift exceeds ``height`` [m], by root finding on the law."""
-    from scipy.optimize import brentq
-
-    law, ratio = valve.law, valve.rocker_ratio
-    theta = np.linspace(law.start, 0.0, 2001)
-    above = np.flatnonzero(law.valve_lift(theta, ratio) > height)
-    if above.size == 0 or above[0] == 0:
-        return float("nan")
-    f = lambda t: float(law.valve_lift(np.array([t]), ratio)[0]) - height  # noqa: E731
-    rise = brentq(f, theta[above[0] - 1], theta[above[0]], xtol=1e-13)
-    theta = np.linspace(0.0, law.end, 2001)
-    above = np.flatnonzero(law.valve_lift(theta, ratio) > height)
-    fall = brentq(f, theta[above[-1]], theta[min(above[-1] + 1, theta.size - 1)], xtol=1e-13)
+    law = valve.law
+    rise, fall = level_span(lambda t: law.valve_lift(t, valve.rocker_ratio), law.start, law.end, height)
     return fall - rise
 
 

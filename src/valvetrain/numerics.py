@@ -105,3 +105,44 @@ def extremum(fn, edges, kind="max", samples=65):
         if -res.fun > best_y:
             best_x, best_y = float(res.x), -float(res.fun)
     return float(best_x), float(sign * best_y)
+
+
+def level_span(fn, a, b, level, samples=4001):
+    """First upward and last downward crossing of ``level`` by a function on [a, b].
+
+    ``fn`` is sampled at ``samples`` points; each crossing is then solved with
+    :func:`scipy.optimize.brentq` between its neighbouring samples.
+
+    Parameters
+    ----------
+    fn : callable
+        Vectorised ``fn(x) -> ndarray``.
+    a, b : float
+        The interval.
+    level : float
+        The level to cross.
+
+    Returns
+    -------
+    (float, float)
+        The two crossings; ``(nan, nan)`` when ``fn`` never exceeds ``level`` or already
+        exceeds it at an end of the interval.
+
+    Examples
+    --------
+    >>> [round(x, 9) for x in level_span(np.sin, 0.0, np.pi, 0.5)]
+    [0.523598776, 2.617993878]
+    """
+    from scipy.optimize import brentq
+
+    x = np.linspace(a, b, samples)
+    above = np.flatnonzero(np.asarray(fn(x)) > level)
+    if above.size == 0 or above[0] == 0 or above[-1] == x.size - 1:
+        return float("nan"), float("nan")
+
+    def f(t):
+        return float(fn(np.array([t]))[0]) - level
+
+    rise = brentq(f, x[above[0] - 1], x[above[0]], xtol=1e-14)
+    fall = brentq(f, x[above[-1]], x[above[-1] + 1], xtol=1e-14)
+    return rise, fall

@@ -10,8 +10,8 @@ rules for N and the end conditions are not in the seed (spec open question Q3).
 """
 
 import numpy as np
-from scipy.optimize import brentq
 
+from ..numerics import level_span
 from .base import LiftLaw, Segment
 
 
@@ -88,8 +88,7 @@ class HarmonicLaw(LiftLaw):
         """Angle from the start of the event where the lift reaches the target's ramp height [rad]."""
         if self._ramp_height <= 0.0:
             return 0.0
-        f = lambda t: float(self.lift(np.array([t]))[0]) - self._ramp_height  # noqa: E731
-        return brentq(f, -self.alpha, 0.0, xtol=1e-14) + self.alpha
+        return level_span(self.lift, -self.alpha, self.alpha, self._ramp_height)[0] + self.alpha
 
     @property
     def segments(self):

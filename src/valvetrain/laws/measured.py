@@ -11,9 +11,10 @@ from dataclasses import dataclass
 
 import numpy as np
 from scipy.interpolate import make_smoothing_spline
-from scipy.optimize import brentq, minimize_scalar
+from scipy.optimize import minimize_scalar
 
 from ..csvfiles import read_two_columns
+from ..numerics import level_span
 from .base import RampedLaw, Segment
 
 CHECKING_HEIGHTS_MM = (0.1, 0.5, 1.0, 1.27)
@@ -200,14 +201,7 @@ class TableLaw(RampedLaw):
 
     def duration(self, height):
         """Angular duration at a checking height [rad camshaft] (nan if the lift never reaches it)."""
-        t = np.linspace(self.start_angle, self.end_angle, 4001)
-        h = self.fitted(t)[0] - height
-        above = np.flatnonzero(h > 0)
-        if above.size == 0 or above[0] == 0 or above[-1] == t.size - 1:
-            return float("nan")
-        f = lambda x: float(self.fitted(np.array([x]))[0, 0]) - height  # noqa: E731
-        rise = brentq(f, t[above[0] - 1], t[above[0]], xtol=1e-13)
-        fall = brentq(f, t[above[-1]], t[above[-1] + 1], xtol=1e-13)
+        rise, fall = level_span(lambda t: self.fitted(t)[0], self.start_angle, self.end_angle, height)
         return fall - rise
 
     @property
