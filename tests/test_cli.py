@@ -67,7 +67,17 @@ BAD = [
     ("clearance_mm = 0.25", "clearance_mm = 0.0", ["valves.intake.clearance_mm = 0: the cam's ramp"]),
     ("strokes = 4", "strokes = 2", ["engine.strokes = 2: the valve timing"]),
     ("phi3_deg = 38.0", "phi3_deg = 38.0\nphi1_deg = 2.0", ["not valid TOML"]),  # duplicate key
+    # the key path names the key as written, without the law tag pydantic puts after "cam"
+    ("phi1_deg = 27.0", "phi1_deg = -1.0", ["valves.intake.cam.phi1_deg = -1.0: allowed"]),
 ]
+
+
+def test_a_valve_named_like_a_law_keeps_its_name(tmp_path):
+    f = tmp_path / "bad.toml"
+    f.write_text(example_text().replace("valves.intake", "valves.kurz").replace("phi1_deg = 27.0", "phi1_deg = -1.0"))
+    result = CliRunner().invoke(main, ["validate", str(f)])
+    assert result.exit_code == 2
+    assert "valves.kurz.cam.phi1_deg = -1.0: allowed" in result.output
 
 
 def test_phi3_omitted_needs_room(tmp_path):
@@ -98,14 +108,14 @@ def test_bad_files_are_refused(tmp_path, old, new, messages, command):
 def test_several_problems_each_get_a_message(tmp_path):
     f = tmp_path / "bad.toml"
     f.write_text(example_text().replace("bore_mm = 80.0", "bore_mm = 0").replace("count = 1                    # same", "count = 0 # same")
-                 .replace("max_lift_mm = 10.0", ""))
+                 .replace("throat_diameter_mm = 36.8", ""))
     result = CliRunner().invoke(main, ["validate", str(f)])
     assert result.exit_code == 2
     lines = [ln for ln in result.output.splitlines() if ln.startswith("error:")]
     assert len(lines) == 3
     assert any("engine.bore_mm = 0" in ln for ln in lines)
     assert any("valves.intake.count = 0" in ln for ln in lines)
-    assert any("valves.intake.max_lift_mm: required key is missing" in ln for ln in lines)
+    assert any("valves.intake.throat_diameter_mm: required key is missing" in ln for ln in lines)
 
 
 def test_missing_file(tmp_path):

@@ -90,12 +90,19 @@ def test_measured_example_runs():
 
 
 def test_inconsistent_timing_is_a_warning(tmp_path):
-    text = EXAMPLE.read_text().replace("# opens_deg and closes_deg may be given", "opens_deg = 40.0\ncloses_deg = 75.0\n#")
-    f = tmp_path / "m.toml"
-    f.write_text(text.replace('table_file = "data/', f'table_file = "{EXAMPLE.parent}/data/'))
-    names = {w.quantity for w in run(load_spec(f)).warnings}
-    assert "intake: opens_deg against the measured table" in names
-    assert "intake: closes_deg against the measured table" not in names
+    """Timing and lift given beside a table: 40 deg against the table's 17.1 (the example's opening at 0.1 mm) is
+    flagged, 75 deg closing agrees; 10.5 mm lift against the table's 10.0 (5 %) is flagged, 10.05 (0.5 %) is not."""
+    def names(given):
+        text = EXAMPLE.read_text().replace("# max_lift_mm, opens_deg and closes_deg may be given", given + "\n#")
+        f = tmp_path / "m.toml"
+        f.write_text(text.replace('table_file = "data/', f'table_file = "{EXAMPLE.parent}/data/'))
+        return {w.quantity for w in run(load_spec(f)).warnings}
+
+    flagged = names("opens_deg = 40.0\ncloses_deg = 75.0\nmax_lift_mm = 10.5")
+    assert "intake: opens_deg against the measured table" in flagged
+    assert "intake: closes_deg against the measured table" not in flagged
+    assert "intake: max_lift_mm against the measured table" in flagged
+    assert "intake: max_lift_mm against the measured table" not in names("max_lift_mm = 10.05")
 
 
 def test_bad_table_file_exits_2(tmp_path):
@@ -112,9 +119,10 @@ def test_timing_keys_required_for_other_laws(tmp_path):
     from valvetrain.spec import example_text
 
     f = tmp_path / "e.toml"
-    f.write_text(example_text().replace("opens_deg = 26.0", ""))
+    f.write_text(example_text().replace("opens_deg = 26.0", "").replace("max_lift_mm = 10.0", ""))
     result = CliRunner().invoke(main, ["validate", str(f)])
     assert result.exit_code == 2 and "valves.intake.opens_deg: required key is missing" in result.output
+    assert "valves.intake.max_lift_mm: required key is missing" in result.output
 
 
 def test_table_cams_get_the_common_checks(tmp_path):

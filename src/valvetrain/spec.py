@@ -433,7 +433,7 @@ class Valve(_Model):
     count: Annotated[int, Field(ge=1, le=8)] = 1
     throat_diameter_mm: Length(0.0, 1000.0)
     seat_angle_deg: _bounded(0.0, 90.0, "deg", high_open=True)
-    max_lift_mm: Length(0.0, 500.0)
+    max_lift_mm: Optional[Length(0.0, 500.0)] = None
     clearance_mm: Length(0.0, 5.0, low_open=False)
     opens_deg: Optional[_bounded(-180.0, 180.0, "deg")] = None
     closes_deg: Optional[_bounded(-180.0, 180.0, "deg")] = None
@@ -603,10 +603,10 @@ def kurz_phi3_deg(cam, valve, strokes):
 
 def _valve_problems(name, v, engine):
     at = f"valves.{name}"
-    missing = [k for k in ("opens_deg", "closes_deg") if getattr(v, k) is None]
+    missing = [k for k in ("max_lift_mm", "opens_deg", "closes_deg") if getattr(v, k) is None]
     if missing and v.cam.law != "table":
-        return [f"{at}.{k}: required key is missing (only a measured table, law = \"table\", sets its own timing)"
-                for k in missing]
+        return [f"{at}.{k}: required key is missing (only a measured table, law = \"table\", sets its own lift "
+                "and timing)" for k in missing]
     out = []
     if v.throat_diameter_mm >= engine.bore_mm:
         out.append(f"{at}.throat_diameter_mm = {v.throat_diameter_mm:g} must be smaller than engine.bore_mm = "
@@ -617,7 +617,7 @@ def _valve_problems(name, v, engine):
         out.append(f"{at}.drive.layout = \"direct\" needs rocker_ratio = 1 (got {v.rocker_ratio:g})")
     if v.piston_gap_tdc_mm is not None and engine.rod_length_mm is None:
         out.append(f"{at}.piston_gap_tdc_mm needs engine.rod_length_mm for the piston kinematics")
-    if not missing:
+    if not {"opens_deg", "closes_deg"} & set(missing):
         out += _cam_angle_problems(at, v, engine)
     return out
 
@@ -777,7 +777,10 @@ def _resolve_tables(spec):
 
 
 def _location(err):
-    parts = [str(p) for p in err["loc"] if not (isinstance(p, str) and p in ("kurz", "polydyne"))]
+    """The key path of a pydantic error without the law tags pydantic inserts after a cam (``cam.kurz.phi1_deg``)."""
+    loc = err["loc"]
+    parts = [str(p) for i, p in enumerate(loc)
+             if not (p in LAWS and i > 0 and loc[i - 1] in ("cam", "target"))]
     return ".".join(parts) if parts else "(file)"
 
 

@@ -111,7 +111,7 @@ def build_side(valve, strokes=4, rated_speed=None):
     the spring (unless the masses give ``spring_kg``).
     """
     cam = valve.cam
-    lift = valve.max_lift_mm / valve.rocker_ratio * MM
+    lift = valve.max_lift_mm / valve.rocker_ratio * MM if valve.max_lift_mm is not None else None
     half = main_half_angle_deg(valve, strokes) * DEG if valve.opens_deg is not None else None
     r0 = cam.base_radius_mm * MM
     h0 = valve.clearance_mm * MM
@@ -193,6 +193,10 @@ def measured_summary(valve, law, nose):
     closes = (nose + 2.0 * half) - (np.pi if valve.kind == "intake" else 0.0)
     rec["opens_deg_at_0.1mm"], rec["closes_deg_at_0.1mm"] = rad_to_deg(opens), rad_to_deg(closes)
     found = []
+    if valve.max_lift_mm is not None:
+        table_lift = law.lift_max * valve.rocker_ratio / MM
+        found += check_range("max_lift_mm against the measured table", valve.max_lift_mm, 0.99 * table_lift,
+                             1.01 * table_lift, source="the table's maximum valve lift (+-1 %)", unit="mm")
     for key, derived in (("opens_deg", rec["opens_deg_at_0.1mm"]), ("closes_deg", rec["closes_deg_at_0.1mm"])):
         given = getattr(valve, key)
         if given is not None:
@@ -393,7 +397,7 @@ def design_valve(name, v, spec):
                          unit="mm")
     if i_k != 1.0:
         found += check_range("rocker ratio", i_k, *ROCKER_RATIO_RANGE, source="seed 000, work 2 (or 1, direct drive)")
-    found += check_range("base radius r0 / valve lift", cam.base_radius_mm / v.max_lift_mm,
+    found += check_range("base radius r0 / valve lift", cam.base_radius_mm * MM / lift_valve,
                          *BASE_RADIUS_TO_LIFT_RANGE, source="seed 000, work 2 (1.5-2.0; supercharged 3.0-4.0)")
     if cam.follower == "flat":
         undercut = rho_min <= 0.0
