@@ -176,3 +176,14 @@ def test_array_keys_are_accepted(tmp_path):
                                         "mean_diameter_ratio = [0.85, 0.75]"))
     result = CliRunner().invoke(main, ["validate", str(f)])
     assert result.exit_code == 2 and "mean_diameter_ratio" in result.output
+
+
+def test_a_throat_no_spring_can_serve_is_refused(tmp_path):
+    """D = 0.7...0.9 d_g must meet the wire series' 3 x 2.8 ... 12 x 6.0 = 8.4...72 mm (seed 000, work 6): a 5 mm
+    throat (D 3.5...4.5 mm) is refused at validation, not by a failure in the middle of the run."""
+    f = tmp_path / "bad.toml"
+    f.write_text(example_text().replace("throat_diameter_mm = 36.8", "throat_diameter_mm = 5.0"))
+    result = CliRunner().invoke(main, ["validate", str(f)])
+    assert result.exit_code == 2
+    assert "valves.intake.spring.mean_diameter_ratio = [0.7, 0.9] with throat_diameter_mm = 5 gives spring mean " \
+           "diameters 3.5...4.5 mm; the wire series makes 8.4...72 mm" in result.output

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from valvetrain.design import run
-from valvetrain.export import LIFT_COLUMNS, write_outputs
+from valvetrain.export import LIFT_COLUMNS, json_text, write_outputs
 from valvetrain.spec import example_spec
 
 
@@ -83,6 +83,14 @@ def test_results_json_contract(written):
     for key in ["V1_m_s", "V2_m_s", "V3_m_s", "time_area_mm2_s", "time_area_open_mm2_s", "fullness"]:
         assert key in data["valves"]["intake"]["flow"]
     assert isinstance(data["warnings"], list) and data["warnings"]
+
+
+def test_json_is_strict():
+    """RFC 8259 has no Infinity or NaN: such values are written as null; numpy scalars and arrays as numbers."""
+    text = json_text({"a": np.inf, "b": [np.float64(-np.inf), np.nan, np.arange(2)], "c": np.int64(3), "d": None})
+    assert json.loads(text) == {"a": None, "b": [None, None, [0, 1]], "c": 3, "d": None}
+    with pytest.raises(TypeError, match="cannot write object"):
+        json_text({"e": object()})
 
 
 def test_manufacturing_tables(written):

@@ -121,6 +121,14 @@ def test_design_picks_the_lightest_passing_spring():
     assert best.binding_check in best.checks
 
 
+def test_a_zero_minimum_switches_a_check_off():
+    """min_resonance_ratio = 0 is allowed (the check off): its margin is infinite, never a division by zero."""
+    line = springs.Characteristic(150.0, 25e3, 0.009)
+    s = springs.evaluate_spring(line, 0.03, 0.004, springs.SpringMaterial(min_resonance_ratio=0.0), 300.0)
+    assert s.margins["resonance_ratio"] == np.inf
+    assert s.binding_check != "resonance_ratio"
+
+
 def test_spring_mass_and_reduced_masses():
     # rho (pi d^2 / 4) pi D i: 7850 * pi/4 * 0.004^2 * pi * 0.03 * 8
     assert masses.spring_mass(0.03, 0.004, 8, 7850.0) == pytest.approx(7850 * np.pi**2 / 4 * 16e-6 * 0.03 * 8)

@@ -35,6 +35,13 @@ def test_hertz_constant():
     assert strength.hertz_line_stress(F, b, 1 / r1 + 1 / r2, E) == pytest.approx(exact, rel=2e-3)
 
 
+def test_hertz_unloaded_cusp_carries_no_stress():
+    """sigma ~ sqrt(F/rho): zero force gives zero stress even where the profile has a cusp (1/rho infinite), and a
+    loaded cusp is infinitely stressed; 0 * inf must not turn into NaN."""
+    sigma = strength.hertz_line_stress(np.array([0.0, 100.0, 0.0]), 0.015, np.array([np.inf, np.inf, 50.0]), 2.1e11)
+    assert sigma[0] == 0.0 and sigma[1] == np.inf and sigma[2] == 0.0
+
+
 def test_euler_load_and_sections():
     # pi^2 E I / l^2 with I = pi d^4 / 64; a tube loses (d_i/d)^4 of it
     d, di, l, E = 0.008, 0.005, 0.25, 2.1e11

@@ -97,14 +97,12 @@ def comparison(designs):
 
 def write_comparison(designs, out):
     """Write ``compare.csv``, ``compare.json`` and the overlaid plots into ``out`` atomically."""
-    import json
-
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    from .export import atomic_folder, write_csv
+    from .export import atomic_folder, json_text, write_csv
 
     rows, notes = comparison(designs)
     with atomic_folder(out) as tmp:
@@ -114,8 +112,7 @@ def write_comparison(designs, out):
         table.update({lab: [rows[lab][key] if isinstance(rows[lab][key], str) else float(rows[lab][key])
                             for key, _ in METRICS] for lab in labels})
         write_csv(tmp / "compare.csv", table)
-        (tmp / "compare.json").write_text(json.dumps({"entries": rows, "notes": notes}, indent=2, default=float),
-                                          encoding="utf-8")
+        (tmp / "compare.json").write_text(json_text({"entries": rows, "notes": notes}), encoding="utf-8")
         quantities = (("lift", 1.0 / MM, "tappet lift, mm"), ("velocity", 1.0, "tappet velocity, m/s"),
                       ("acceleration", 1.0, "tappet acceleration, m/s²"), ("jerk", 1.0, "tappet jerk, m/s³"))
         for i, (name, scale, ylabel) in enumerate(quantities):

@@ -208,14 +208,26 @@ def write_dxf(path, valve):
 
 def results_json(results):
     """results.json text."""
-    return json.dumps(results.to_dict(), indent=2, default=_json_default, ensure_ascii=False)
+    return json_text(results.to_dict())
 
 
-def _json_default(x):
+def json_text(data):
+    """Strict JSON (RFC 8259) of nested dicts, lists, numbers and numpy values: a quantity that is not finite
+    (an infinite margin of a check that is switched off, an undefined ratio) is written as null."""
+    return json.dumps(_plain(data), indent=2, ensure_ascii=False, allow_nan=False)
+
+
+def _plain(x):
+    if isinstance(x, dict):
+        return {k: _plain(v) for k, v in x.items()}
+    if isinstance(x, (list, tuple, np.ndarray)):
+        return [_plain(v) for v in x]
     if isinstance(x, np.generic):
-        return x.item()
-    if isinstance(x, np.ndarray):
-        return x.tolist()
+        x = x.item()
+    if isinstance(x, float) and not np.isfinite(x):
+        return None
+    if x is None or isinstance(x, (str, bool, int, float)):
+        return x
     raise TypeError(f"cannot write {type(x).__name__} to JSON")
 
 

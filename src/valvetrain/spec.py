@@ -17,7 +17,8 @@ from typing import Annotated, Literal, Optional, Union
 
 from pydantic import AfterValidator, BaseModel, ConfigDict, Field, ValidationError, field_validator, model_validator
 
-from .units import cam_per_crank
+from .springs import feasible_mean_diameters
+from .units import MM, cam_per_crank
 
 
 class SpecError(Exception):
@@ -613,6 +614,13 @@ def _valve_problems(name, v, engine):
                    f"{engine.bore_mm:g}")
     if v.cam.base_radius_mm <= v.clearance_mm:
         out.append(f"{at}.cam.base_radius_mm = {v.cam.base_radius_mm:g} must exceed clearance_mm = {v.clearance_mm:g}")
+    ratio = v.spring.mean_diameter_ratio
+    low, high = (x / MM for x in feasible_mean_diameters())
+    if ratio[1] * v.throat_diameter_mm < low or ratio[0] * v.throat_diameter_mm > high:
+        out.append(f"{at}.spring.mean_diameter_ratio = {list(ratio)} with throat_diameter_mm = "
+                   f"{v.throat_diameter_mm:g} gives spring mean diameters {ratio[0] * v.throat_diameter_mm:g}..."
+                   f"{ratio[1] * v.throat_diameter_mm:g} mm; the wire series makes {low:g}...{high:g} mm "
+                   "(seed 000, work 6)")
     if v.drive.layout == "direct" and v.rocker_ratio != 1.0:
         out.append(f"{at}.drive.layout = \"direct\" needs rocker_ratio = 1 (got {v.rocker_ratio:g})")
     if v.piston_gap_tdc_mm is not None and engine.rod_length_mm is None:

@@ -26,6 +26,12 @@ SHAPE_FACTOR_TABLE = (np.array([3, 4, 5, 6, 7, 8, 9, 10, 11, 12], dtype=float),
                       np.array([1.5, 1.38, 1.3, 1.23, 1.2, 1.17, 1.15, 1.13, 1.11, 1.1]))
 """Spring index D/d and shape factor chi (seed 000, work 6, table of eq. 6.1)."""
 
+def feasible_mean_diameters(wire_series_mm=WIRE_SERIES_MM):
+    """Mean diameters D [m] some wire of the series can make: D/d within the shape-factor table (3...12)."""
+    index = SHAPE_FACTOR_TABLE[0]
+    return index[0] * min(wire_series_mm) * 1e-3, index[-1] * max(wire_series_mm) * 1e-3
+
+
 MEAN_DIAMETER_RANGE = (0.7, 0.9)
 """Spring mean diameter / valve throat diameter (seed 000, work 6)."""
 
@@ -308,6 +314,14 @@ class SpringMaterial:
     end_coils: float = 2.0               # i_0
 
 
+def _margin(value, limit, kind):
+    """value/limit - 1 for a minimum, 1 - value/limit for a maximum; a zero minimum (check switched off) always
+    passes with an infinite margin."""
+    if kind == "min":
+        return np.inf if limit == 0.0 else value / limit - 1.0
+    return 1.0 - value / limit
+
+
 @dataclass
 class SpringDesign:
     """One helical spring: geometry, loads and every check (SI)."""
@@ -330,7 +344,7 @@ class SpringDesign:
     @property
     def margins(self):
         """Relative margin of each check: > 0 passes (value/limit - 1 for a minimum, 1 - value/limit for a maximum)."""
-        return {k: (v / lim - 1.0 if kind == "min" else 1.0 - v / lim) for k, (v, lim, kind) in self.checks.items()}
+        return {k: _margin(v, lim, kind) for k, (v, lim, kind) in self.checks.items()}
 
     @property
     def passes(self):
@@ -431,8 +445,10 @@ def design_spring(required, throat_diameter, material, camshaft_speed, diameter_
                 s.checks.update(extra_check(s))
             candidates.append(s)
     if not candidates:
-        raise ValueError("no spring of the wire series fits: the spring index D/d must lie in 3...12 "
-                         f"with D in {lo * 1e3:.1f}...{hi * 1e3:.1f} mm")
+        low, high = feasible_mean_diameters(wire_series_mm)
+        raise ValueError(f"no spring of the wire series fits: D in {lo * 1e3:.1f}...{hi * 1e3:.1f} mm"
+                         + (f", outside diameter at most {max_outer * 1e3:.1f} mm" if max_outer is not None else "")
+                         + f"; the series makes D = {low * 1e3:g}...{high * 1e3:g} mm (index 3...12)")
     passing = [s for s in candidates if s.passes]
     if passing:
         return min(passing, key=lambda s: s.mass), len(passing)

@@ -152,7 +152,11 @@ def hertz_line_stress(force, width, curvature_sum, modulus):
     ----------
     seed 002, eqs. (2.4)-(2.5), (2.11); seed 000, eqs. (7.4)-(7.5).
     """
-    return 0.418 * np.sqrt(np.clip(force, 0.0, None) * modulus * np.clip(curvature_sum, 0.0, None) / width)
+    load = np.clip(force, 0.0, None)
+    curvature = np.clip(curvature_sum, 0.0, None)
+    # an unloaded point carries no stress, even where the profile has a cusp (infinite curvature)
+    loaded = np.multiply(load, curvature, out=np.zeros(np.broadcast(load, curvature).shape), where=load > 0.0)
+    return 0.418 * np.sqrt(loaded * modulus / width)
 
 
 def tappet_side_pressure(force, offset, tappet_diameter, guide_length):

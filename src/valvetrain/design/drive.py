@@ -122,7 +122,7 @@ def drive_stage(v, spec, law, omega, heel, roller):
 
             def differs(s, outer=outer):
                 diff = abs(s.natural_frequency - outer.natural_frequency) / outer.natural_frequency
-                return {"frequency_difference": (diff, max(sp.min_frequency_difference, 1e-12), "min")}
+                return {"frequency_difference": (diff, sp.min_frequency_difference, "min")}
 
             inner, n_in = springs.design_spring(inner_line, d_g, material, omega, (0.3, sp.mean_diameter_ratio[1]),
                                                 max_outer=room, extra_check=differs,
