@@ -187,3 +187,18 @@ def test_a_throat_no_spring_can_serve_is_refused(tmp_path):
     assert result.exit_code == 2
     assert "valves.intake.spring.mean_diameter_ratio = [0.7, 0.9] with throat_diameter_mm = 5 gives spring mean " \
            "diameters 3.5...4.5 mm; the wire series makes 8.4...72 mm" in result.output
+
+
+def test_a_pair_without_room_for_the_inner_spring_exits_2(tmp_path):
+    """Seed 000's polydyne example (a nested pair) with an 11.04 mm throat: the outer spring leaves an outside
+    diameter of 4.7 mm for the inner one, less than the smallest spring of the series (D = 3 x 2.8 = 8.4 mm, seed
+    000 work 6); the run stops with exit 2 and one message, writing nothing."""
+    from pathlib import Path
+
+    src = Path(__file__).parent.parent / "examples" / "seed000-polydyne.toml"
+    f = tmp_path / "pair.toml"
+    f.write_text(src.read_text().replace("throat_diameter_mm = 36.8", "throat_diameter_mm = 11.04"))
+    result = CliRunner().invoke(main, ["run", str(f), "--out", str(tmp_path / "out")])
+    assert result.exit_code == 2
+    assert "valves.intake.spring: no spring of the wire series fits inside the outer spring" in result.output
+    assert not (tmp_path / "out").exists()

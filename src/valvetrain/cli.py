@@ -25,6 +25,16 @@ def _load(path):
         _fail_spec(err)
 
 
+def _design(spec):
+    """Run a design; a valid specification that admits no design (no spring fits) exits like a bad one."""
+    from .design import run as run_design
+
+    try:
+        return run_design(spec)
+    except SpecError as err:
+        _fail_spec(err)
+
+
 @click.group(context_settings={"help_option_names": ["-h", "--help"]})
 @click.version_option(__version__, prog_name="valvetrain")
 def main():
@@ -44,11 +54,9 @@ def main():
               help="Language of the report and plots.")
 def run(file, out, lang):
     """Run the design of FILE (default: the built-in example) and write it to --out."""
-    from .design import run as run_design
     from .export import write_outputs
 
-    spec = _load(file)
-    results = run_design(spec)
+    results = _design(_load(file))
     write_outputs(results, out, lang)
     click.echo(f"wrote {out}/ (results.json, report.html, tables/, plots/, contour/)")
     for w in results.warnings:
@@ -74,11 +82,10 @@ def compare(files, out):
     from pathlib import Path
 
     from .compare import METRICS, write_comparison
-    from .design import run as run_design
 
     designs = {}
     for f in files:
-        res = run_design(_load(f))
+        res = _design(_load(f))
         for name, v in res.valves.items():
             designs[f"{Path(f).stem}:{name}" if len(files) > 1 else name] = v
     if not designs:

@@ -26,6 +26,10 @@ SHAPE_FACTOR_TABLE = (np.array([3, 4, 5, 6, 7, 8, 9, 10, 11, 12], dtype=float),
                       np.array([1.5, 1.38, 1.3, 1.23, 1.2, 1.17, 1.15, 1.13, 1.11, 1.1]))
 """Spring index D/d and shape factor chi (seed 000, work 6, table of eq. 6.1)."""
 
+class NoSpringFits(ValueError):
+    """No spring of the wire series can be wound within the given diameters."""
+
+
 def feasible_mean_diameters(wire_series_mm=WIRE_SERIES_MM):
     """Mean diameters D [m] some wire of the series can make: D/d within the shape-factor table (3...12)."""
     index = SHAPE_FACTOR_TABLE[0]
@@ -446,9 +450,9 @@ def design_spring(required, throat_diameter, material, camshaft_speed, diameter_
             candidates.append(s)
     if not candidates:
         low, high = feasible_mean_diameters(wire_series_mm)
-        raise ValueError(f"no spring of the wire series fits: D in {lo * 1e3:.1f}...{hi * 1e3:.1f} mm"
-                         + (f", outside diameter at most {max_outer * 1e3:.1f} mm" if max_outer is not None else "")
-                         + f"; the series makes D = {low * 1e3:g}...{high * 1e3:g} mm (index 3...12)")
+        inside = f" inside the outer spring (outside diameter <= {max_outer * 1e3:.1f} mm)" if max_outer else ""
+        raise NoSpringFits(f"no spring of the wire series fits{inside} with D in {lo * 1e3:.1f}...{hi * 1e3:.1f} mm; "
+                           f"the series makes D = {low * 1e3:g}...{high * 1e3:g} mm (index 3...12)")
     passing = [s for s in candidates if s.passes]
     if passing:
         return min(passing, key=lambda s: s.mass), len(passing)

@@ -14,7 +14,8 @@ from ..checks import Finding, check_range
 from ..crank.kinematics import displacement
 from ..laws import AsymmetricLaw, CombinedLaw, ConstantAccelerationLaw, DynamicLaw, HarmonicLaw, KurzLaw, PolydyneLaw, PolynomialLaw, TangentLaw, ThreeArcLaw
 from ..numerics import extremum
-from ..spec import kurz_phi3_deg, main_half_angle_deg
+from ..spec import SpecError, kurz_phi3_deg, main_half_angle_deg
+from ..springs import NoSpringFits
 from ..units import DEG, MM, rad_to_deg, rpm_to_rad_s
 from ..laws.measured import CHECKING_HEIGHTS_MM, TableLaw, read_lift_table
 from .drive import drive_stage, reduced_mass
@@ -426,7 +427,10 @@ def design_valve(name, v, spec):
         found += check_range("valve-piston clearance", gap[i] / MM, low=0.0, strict_low=True,
                              source="seed 002, eqs. (2.13)-(2.14)", unit="mm")
 
-    drive = drive_stage(v, spec, law, omega, heel, roller)
+    try:
+        drive = drive_stage(v, spec, law, omega, heel, roller)
+    except NoSpringFits as exc:
+        raise SpecError([f"valves.{name}.spring: {exc}"]) from None
     summary["masses"] = drive.masses
     summary["spring"] = drive.spring
     summary["strength"] = {k: rec for k, rec in drive.strength.items()}
