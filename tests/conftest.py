@@ -1,7 +1,10 @@
-"""Shared fixtures: the seed 000 appendix cam."""
+"""Shared fixtures: the seed 000 appendix cam; a specification refused by the command line."""
 
+from click.testing import CliRunner
 import numpy as np
 import pytest
+
+from valvetrain.cli import main
 
 from valvetrain.laws import KurzLaw
 
@@ -20,3 +23,18 @@ def seed000_law():
 @pytest.fixture
 def kurz_appendix():
     return seed000_law()
+
+
+@pytest.fixture
+def refused(tmp_path):
+    """``refused(text, command="validate")``: write ``text`` as a specification in ``tmp_path``, run the command
+    on it, check exit status 2 and that no output folder was made; return the printed messages."""
+    def check(text, command="validate"):
+        f = tmp_path / "spec.toml"
+        f.write_text(text)
+        out = tmp_path / "out"
+        result = CliRunner().invoke(main, [command, str(f)] + (["--out", str(out)] if command == "run" else []))
+        assert result.exit_code == 2, result.output
+        assert not out.exists()
+        return result.output
+    return check
