@@ -67,8 +67,11 @@ def run(file, out, lang):
 @main.command()
 @click.argument("file", type=click.Path(dir_okay=False))
 def validate(file):
-    """Check a specification FILE; exit status 2 and one message per problem if it is not valid."""
+    """Check a specification FILE; exit status 2 and one message per problem if it is not valid.
+
+    The design is computed (nothing is written), so a file that validates also runs."""
     spec = _load(file)
+    _design(spec)
     click.echo(f"{file}: valid ({len(spec.valves)} valve(s): {', '.join(spec.valves)})")
 
 
