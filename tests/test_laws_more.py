@@ -202,6 +202,23 @@ def test_dynamic_cam_ramp():
     assert np.allclose(d[:3, 0], d[:3, 1], rtol=1e-6, atol=1e-9)
 
 
+def test_dynamic_cam_needs_a_stiff_enough_drive():
+    """k h = x0 + y + (M omega^2 y'' + K y + F0)/c (spec section 8): the spec's drive gives a cam that rises to the
+    nose; with c 100 times softer the negative y'' near the nose makes the cam dip (a warning); with c 10^4 times
+    softer the nose falls below the ramp's end (no cam: an error naming the remedy)."""
+    law, omega = _dynamic()
+    assert law.fall_before_nose() == 0.0 and law.checks() == []
+    args = (8e-3, np.radians(55), [2, 10, 18, 26, 34], 0.3 / omega)
+    soft = DynamicLaw(*args, 15e4, 0.25, 67.5e3, 400.0, omega, 1.5, 0.3e-3)
+    # independent: the lift along a fine grid from the ramp's end to the nose, its largest drop below a running maximum
+    h = soft.lift(np.linspace(soft.start + soft.ramp_angle, 0.0, 20001))
+    drop = np.max(np.maximum.accumulate(h) - h)
+    assert drop > 1e-5 and soft.fall_before_nose() == pytest.approx(drop, rel=1e-3)
+    assert soft.checks()[0].quantity == "dynamic cam: fall of the lift before the nose"
+    with pytest.raises(ValueError, match="would not rise above its ramp"):
+        DynamicLaw(*args, 1.5e3, 0.25, 67.5e3, 400.0, omega, 1.5, 0.3e-3)
+
+
 def test_dynamic_cam_gives_the_design_valve_motion():
     """Simulated one-mass elastic train, M y'' = c(k h - x0 - y) - (F0 + K y), integrated with scipy's LSODA from the
     valve's opening at the design speed: the valve follows the design polynomial (spec section 8)."""

@@ -6,6 +6,8 @@ spec/methods-seeds-002-004.md, section 8 [S+D]).
 
 import numpy as np
 
+from ..checks import check_range
+
 from .base import RampedLaw, SymmetricLaw
 from .polydyne import _falling, polynomial_junction_coefficients
 from .ramps import make_ramp
@@ -71,6 +73,11 @@ class DynamicLaw(RampedLaw, SymmetricLaw):
         self.ramp = make_ramp(ramp_kind, (self.x0 + self.F0 / self.c) / self.ratio,
                               (1.0 + self.K / self.c) * self.v_y / self.ratio, ramp_fraction)
         self._nose = float(self._cam(np.zeros(1))[0, 0])
+        if self.lift_max <= 0.0:
+            raise ValueError(f"dynamic law: the cam would not rise above its ramp (nose {self.lift_max * 1e3:.4g} mm "
+                             f"above it): the inertia term M omega^2 y'' outweighs the drive's deflection (M omega^2 "
+                             f"= {self.m * self.omega**2 * 1e-3:.4g} N/mm against c = {self.c * 1e-3:.4g} N/mm); "
+                             "stiffen the drive, lighten the train or lower the design speed")
 
     def valve_motion(self, u):
         """Design valve motion y and its first five derivatives with respect to the cam angle from the nose u [rad]."""
@@ -115,6 +122,20 @@ class DynamicLaw(RampedLaw, SymmetricLaw):
         d = self._cam(u)
         out[:, ~ramp] = [d[0], -d[1], d[2], -d[3]]            # d/dphi = -d/du
         return out
+
+    def fall_before_nose(self, samples=2001):
+        """Largest drop of the cam lift on its way to the nose [m] (0 for a cam that rises monotonically).
+
+        The correction (M omega^2 y'' + K y)/c lowers the lift near the nose, where y'' < 0; a compliant
+        drive or a heavy train makes the cam dip there, a shape no follower can use."""
+        h = self._cam(np.linspace(self.phi_p0, 0.0, samples))[0]        # from the ramp's end to the nose
+        return float(np.max(np.maximum.accumulate(h) - h))
+
+    def checks(self):
+        """The cam lift must rise monotonically to the nose (a dip means the drive is too compliant)."""
+        return check_range("dynamic cam: fall of the lift before the nose", self.fall_before_nose() / 1e-3, high=0.0,
+                           source="the cam lift rises to the nose (spec/methods-seeds-002-004.md, section 8)",
+                           unit="mm")
 
     def coefficients(self):
         """Valve-motion coefficients C_k = a_k / y_max, exponents, and the drive data used."""
