@@ -39,10 +39,13 @@ def _text(cam_keys):
     return text.replace(KURZ_KEYS, cam_keys)
 
 
-def _spec(law):
+def _spec(law, *replacements):
+    """The example with the cam of ``law``; further ``(old, new)`` text replacements are applied in order."""
     text = _text(CAMS[law])
     if law == "tangent":
         text = text.replace('follower = "flat"', 'follower = "roller"\nroller_radius_mm = 11.0')
+    for old, new in replacements:
+        text = text.replace(old, new)
     return parse_spec(text)
 
 
@@ -93,6 +96,14 @@ def test_tangent_needs_a_roller(tmp_path):
     f.write_text(_text('law = "tangent"'))
     result = CliRunner().invoke(main, ["validate", str(f)])
     assert result.exit_code == 2 and 'needs follower = "roller"' in result.output
+
+
+def test_tangent_cam_has_no_concave_stretch():
+    """Straight flanks and arcs only (spec section 4): no concave radius is reported, whatever the event length
+    (a 78 deg opening lengthens the flanks)."""
+    for opens in (26.0, 78.0):
+        spec = _spec("tangent", ("opens_deg = 26.0", f"opens_deg = {opens}"))
+        assert run(spec).to_dict()["valves"]["intake"]["cam"]["min_concave_radius_mm"] is None
 
 
 def test_report_for_an_arc_cam(tmp_path):

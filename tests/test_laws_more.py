@@ -117,6 +117,19 @@ def test_tangent_cam_roller_centre_distance():
     assert np.abs(dist - law.rr).max() < 2e-4
 
 
+def test_tangent_cam_flanks_are_straight():
+    """On the flank the pitch curve is a straight line offset by the roller radius, so rho_p is infinite (spec
+    section 4); round-off must not turn it into a huge radius of either sign (which read as a concave flank)."""
+    law = TangentLaw(20.0, 8.0, np.radians(60), 10.0)
+    flank = np.linspace(-law.half_angle + 1e-3, -law.half_angle + law.junction - 1e-3, 2001)
+    h, dh, d2h, _ = law.derivatives(flank)
+    assert np.all(geometry.roller_pitch_curvature(law.r0, law.rr, h, dh, d2h) == np.inf)
+    # the nose: the pitch curve is the nose arc r2 + r_r = 22 mm about its centre
+    nose = np.linspace(-0.3, 0.3, 11)
+    h, dh, d2h, _ = law.derivatives(nose)
+    assert geometry.roller_pitch_curvature(law.r0, law.rr, h, dh, d2h) == pytest.approx(np.full(11, 22.0), rel=1e-9)
+
+
 def test_polynomial_generalises_polydyne():
     """The 5-exponent polynomial law with (2, p, q, r, s) is the polydyne law (spec section 7)."""
     a = PolynomialLaw(6.25e-3, np.radians(71), [2, 8, 14, 20, 26])

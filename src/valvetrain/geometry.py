@@ -111,6 +111,10 @@ def roller_follower_contour(theta, base_radius, roller_radius, h, dh):
     return g * u - roller_radius * n
 
 
+STRAIGHT_TOLERANCE = 1e-10
+"""Relative size of the curvature terms' difference below which the pitch curve counts as straight."""
+
+
 def roller_pitch_curvature(base_radius, roller_radius, h, dh, d2h):
     """Radius of curvature of the pitch curve [m]; the cam profile's is this minus the roller radius.
 
@@ -133,8 +137,12 @@ def roller_pitch_curvature(base_radius, roller_radius, h, dh, d2h):
     30.0
     """
     g = roller_pitch_radius(base_radius, roller_radius, h)
-    with np.errstate(divide="ignore"):  # a straight pitch line (tangent cam flank) has an infinite radius
-        return (g * g + dh * dh) ** 1.5 / (g * g + 2.0 * dh * dh - g * d2h)
+    first, second = g * g + 2.0 * dh * dh, g * d2h
+    den = first - second
+    # on a straight pitch line (tangent cam flank) the two terms cancel to round-off: the radius is infinite, not a
+    # huge number of either sign (beyond 1e10 pitch radii the line is straight to the precision of the terms)
+    straight = np.abs(den) <= STRAIGHT_TOLERANCE * (np.abs(first) + np.abs(second))
+    return np.where(straight, np.inf, (g * g + dh * dh) ** 1.5 / np.where(straight, 1.0, den))
 
 
 def roller_follower_curvature(base_radius, roller_radius, h, dh, d2h):
