@@ -112,7 +112,11 @@ def test_report_for_an_arc_cam(tmp_path):
     f.write_text(_text(CAMS["three_arc"]))
     assert CliRunner().invoke(main, ["run", str(f), "--out", str(out)]).exit_code == 0
     assert json.loads((out / "results.json").read_text())["valves"]["intake"]["cam"]["law"] == "three_arc"
-    assert "three_arc" in (out / "report.html").read_text()
+    html = (out / "report.html").read_text()
+    assert "three_arc" in html
+    # the report names the three-arc cam's own source, not the polydyne formula of seed 000 work 3
+    assert "Kolchin &amp; Demidov; seed 003): spec/methods-seeds-002-004.md, section 3" in html
+    assert "seed 000, work 3" not in html
 
 
 def test_train_natural_frequency_and_harmonic_rule():

@@ -1,11 +1,14 @@
 """Measured lift tables (seed 002 sections 5.1-5.3; spec/methods-seeds-002-004.md sections 9-11)."""
 
+import json
 from pathlib import Path
 
+from click.testing import CliRunner
 import numpy as np
 import pytest
 from scipy.optimize import brentq
 
+from valvetrain.cli import main
 from valvetrain.design import run
 from valvetrain.laws.measured import TableFileError, TableLaw, harmonic_fit, read_lift_table
 from valvetrain.spec import load_spec
@@ -121,3 +124,16 @@ def test_table_cams_get_the_common_checks(refused):
     text = (EXAMPLE.read_text().replace("throat_diameter_mm = 36.8", "throat_diameter_mm = 85.0")
             .replace('table_file = "data/', f'table_file = "{EXAMPLE.parent}/data/'))
     assert "valves.intake.throat_diameter_mm = 85 must be smaller than engine.bore_mm = 80" in refused(text)
+
+
+def test_report_shows_the_measured_analysis(tmp_path):
+    """The report carries the measured table's analysis: durations at the checking heights of results.json (0.1, 0.5,
+    1.0 mm and 0.050 in = 1.27 mm) and the quality of both fits."""
+    out = tmp_path / "d"
+    assert CliRunner().invoke(main, ["run", str(EXAMPLE), "--out", str(out)]).exit_code == 0
+    html = (out / "report.html").read_text()
+    data = json.loads((out / "results.json").read_text())["valves"]["intake"]["cam"]
+    assert "Measured lift table" in html and "sign changes of the jerk" in html
+    for d in data["measured"]["durations_deg"]:
+        assert f'<td class="n">{d["height_mm"]:.6g}</td><td class="n">{d["duration_deg"]:.6g}</td>' in html
+    assert "seed 002, sections 5.1-5.3; GCV smoothing spline" in html

@@ -326,6 +326,7 @@ def design_valve(name, v, spec):
 
     summary_cam = {
         "law": law.name,
+        "source": law.source,
         "coefficients": law.coefficients(),
         "max_velocity_m_s": ext.max_velocity,
         "max_acceleration_m_s2": ext.max_acceleration,

@@ -29,6 +29,9 @@ class AsymmetricLaw(LiftLaw):
             raise ValueError("asymmetric cam: the flanks have different ramp heights")
         self.opening, self.closing = opening, closing
         self.name = opening.name if opening.name == closing.name else f"{opening.name}/{closing.name}"
+        flanks = (opening.source if opening.source == closing.source
+                  else f"opening: {opening.source}; closing: {closing.source}")
+        self.source = f"{flanks}; asymmetric flanks joined at the nose (lift and velocity continuous)"
         self.nose_acceleration_jump = float(closing.derivatives(np.zeros(1))[2, 0]
                                             - opening.derivatives(np.zeros(1))[2, 0])
         self.continuity = min(opening.continuity, closing.continuity)

@@ -60,6 +60,9 @@ class LiftLaw(ABC):
     #: identifier used in specification files and results (``law = "..."``)
     name: str = ""
 
+    #: where the method and its formulas come from (seed, equations, spec section), shown in results and report
+    source: str = ""
+
     #: highest derivative of the lift that is continuous at the junctions (2: acceleration continuous)
     continuity: int = 2
 

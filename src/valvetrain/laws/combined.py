@@ -91,6 +91,9 @@ class CombinedLaw(RampedLaw, SymmetricLaw):
     """
 
     name = "combined"
+    source = ('seed 002, section 2.5; segments with continuous acceleration, closure as a linear system: '
+              'spec/methods-seeds-002-004.md, section 6 (general mechanism; FB2/MFB2 are not defined in any available'
+              ' source)')
 
     def __init__(self, lift, ramp_height, ramp_velocity, segments, ratios=(), ramp_kind="cosine", ramp_fraction=0.5):
         self._lift = float(lift)

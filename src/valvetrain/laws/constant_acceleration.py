@@ -65,6 +65,8 @@ class ConstantAccelerationLaw(RampedLaw, SymmetricLaw):
     """
 
     name = "constant_acceleration"
+    source = ('seed 002, section 2.4; +A1, -A2, -kappa A2 after a ramp, closure as a 2 x 2 system: '
+              'spec/methods-seeds-002-004.md, section 5 (reconstructed)')
     continuity = 1
 
     def __init__(self, lift, ramp_height, ramp_velocity, phi1, phi2, phi3=0.0, kappa=1.0, ramp_kind="cosine",

@@ -117,6 +117,8 @@ class ThreeArcLaw(_ArcCam):
     """
 
     name = "three_arc"
+    source = ('three-arc convex cam for a flat follower (Kolchin & Demidov; seed 003): spec/methods-seeds-002-004.md,'
+              ' section 3 (derived)')
 
     def __init__(self, base_radius, lift, half_angle, nose_radius):
         self.r0, self._lift, self.phi_p0, self.r2 = map(float, (base_radius, lift, half_angle, nose_radius))
@@ -192,6 +194,8 @@ class TangentLaw(_ArcCam):
     """
 
     name = "tangent"
+    source = ('tangent cam for a roller follower (Kolchin & Demidov): spec/methods-seeds-002-004.md, section 4 '
+              '(derived)')
 
     def __init__(self, base_radius, lift, half_angle, roller_radius):
         self.r0, self._lift, self.phi_p0, self.rr = map(float, (base_radius, lift, half_angle, roller_radius))

@@ -57,6 +57,8 @@ class DynamicLaw(RampedLaw, SymmetricLaw):
     """
 
     name = "dynamic"
+    source = ("seed 002, section 4.1; Dudley-Stoddart polydyne k h = x0 + y + (M omega^2 y'' + K y + F0)/c "
+              "(Rothbart, Cam Design Handbook, 2004, 13.7): spec/methods-seeds-002-004.md, section 8 (derived)")
 
     def __init__(self, valve_lift, main_half_angle, exponents, opening_velocity, stiffness, mass, spring_rate,
                  preload, cam_speed, rocker_ratio=1.0, lash=0.0, ramp_kind="cosine", ramp_fraction=0.5):

@@ -61,6 +61,8 @@ class HarmonicLaw(LiftLaw):
     """
 
     name = "harmonic"
+    source = ('seed 002, section 4.2; h = sum a_k cos(k pi theta / alpha_W) with junction conditions, fitted to a '
+              'target law: spec/methods-seeds-002-004.md, section 9 (reconstructed)')
 
     def __init__(self, target, harmonics, junction_order=1, samples=2001):
         n, m = int(harmonics), int(junction_order)

@@ -135,6 +135,8 @@ class KurzLaw(RampedLaw, SymmetricLaw):
     """
 
     name = "kurz"
+    source = ('seed 000, work 2: ramp (2.1), (2.5); segments (2.6)-(2.8); coefficients (2.23)-(2.34); extremes '
+              '(2.35)-(2.39); phi_p0 = (phi_op + 180 + phi_zap)/4 (corrected, SPEC E1)')
 
     def __init__(self, lift, clearance, ramp_velocity, phi1, phi2, phi3, shape_factor=0.625, ramp_kind="cosine",
                  ramp_fraction=0.5):

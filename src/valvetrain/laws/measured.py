@@ -140,6 +140,8 @@ class TableLaw(RampedLaw):
     """
 
     name = "table"
+    source = ('seed 002, sections 5.1-5.3; GCV smoothing spline or N-harmonic fit, nose finding and false asymmetry: '
+              'spec/methods-seeds-002-004.md, sections 9-11 (reconstructed)')
 
     def __init__(self, angles, lift, fit="spline", accuracy=5e-6, max_harmonics=60):
         x, y = np.asarray(angles, dtype=float), np.asarray(lift, dtype=float)

@@ -148,6 +148,8 @@ class PolynomialLaw(RampedLaw, SymmetricLaw):
     """
 
     name = "polynomial"
+    source = ('seed 002, section 2.6: h = h_nose (1 + sum C_k x^k); junction with the ramp '
+              'spec/methods-seeds-002-004.md, section 7 (derived)')
 
     def __init__(self, lift, main_half_angle, exponents, ramp_height=0.0, ramp_velocity=0.0, ramp_kind="cosine",
                  ramp_fraction=0.5):
@@ -242,6 +244,8 @@ class PolydyneLaw(PolynomialLaw):
     """
 
     name = "polydyne"
+    source = ('seed 000, work 3: h = h_max (1 + C2 x^2 + Cp x^p + Cq x^q + Cr x^r + Cs x^s), (3.1)-(3.8); with a ramp'
+              ' spec/methods-seeds-002-004.md, section 7 (derived)')
 
     def __init__(self, lift, main_half_angle, p, q=None, r=None, s=None, ramp_height=0.0, ramp_velocity=0.0,
                  ramp_kind="cosine", ramp_fraction=0.5):

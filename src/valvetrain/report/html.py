@@ -52,6 +52,14 @@ def _abridged_table(valve):
     return [[fmt(cols[c][i]) for c in TABLE_COLUMNS] for i in np.flatnonzero(keep)]
 
 
+def _measured(rec):
+    """The measured-table analysis for the report: scalars, durations at the checking heights, fit quality."""
+    if rec is None:
+        return None
+    scalars = [(k, val) for k, val in rec.items() if not isinstance(val, (list, dict))]
+    return {"summary": scalars, "durations": rec["durations_deg"], "quality": list(rec["fit_quality"].items())}
+
+
 def render_report(results, plots, lang="en"):
     """The report as HTML text.
 
@@ -78,6 +86,7 @@ def render_report(results, plots, lang="en"):
             "coefficients": list(s["cam"]["coefficients"].items()),
             "seed": [(k, val, s["cam"][k]) for k, val in s["cam"].get("seed_formulas", {}).items()],
             "residuals": list(s["cam"].get("residuals", {}).items()),
+            "measured": _measured(s["cam"].get("measured")),
             "clearance": list(s.get("piston_clearance", {}).items()),
             "masses": list(s["masses"].items()),
             "spring": [(k, val) for k, val in s["spring"].items() if not isinstance(val, dict)],

@@ -20,6 +20,10 @@ TEXT = {
         "seed_check": "Closed forms of the source beside the values found on the analytic law",
         "closed_form": "closed form", "profile": "along the profile",
         "residuals": "Residuals of the continuity system",
+        "measured": "Measured lift table (seed 002, sections 5.1-5.3; angles and lifts as in the table)",
+        "checking_height": "checking height, mm", "duration": "duration, deg", "fit": "fit",
+        "rms_residual": "rms residual, mm", "max_residual": "max residual, mm",
+        "jerk_sign_changes": "sign changes of the jerk",
         "table": "Lift table (every {step:g} cam deg; the full table is tables/{name}_lift.csv)",
         "plots": "Plots",
         "files": "Files",
@@ -50,6 +54,11 @@ TEXT = {
         "crank_from_tdc": "crank angle from TDC, deg", "port_area": "port area, mm²", "speed": "crank speed, rpm",
         "port_time_area": "time-area, mm²·s", "port": "Port", "pressure_model": "Cylinder pressure",
         "names": {
+            "max_lift_mm": "max lift in the table, mm", "lobe_centre_deg": "lobe centre (after the asymmetry "
+            "correction), deg", "harmonics": "harmonics of the N-harmonic fit", "asymmetry_rms_mm":
+            "rms difference of the flanks after the correction, mm", "table_angle": "table angles",
+            "table_lift_at": "table lift at", "opens_deg_at_0.1mm": "opens at 0.1 mm valve lift, crank deg",
+            "closes_deg_at_0.1mm": "closes at 0.1 mm valve lift, crank deg", "source": "source",
             "V1_m_s": "V' throat velocity, m/s (seed 000, eq. 1.1)",
             "V2_m_s": "V'' curtain velocity at full lift, m/s (eq. 1.2)",
             "V3_m_s": "V''' time-area velocity, m/s (eq. 1.4)",
@@ -96,6 +105,10 @@ TEXT = {
         "seed_check": "Формулы источника рядом со значениями, найденными по аналитическому закону",
         "closed_form": "по формуле", "profile": "по профилю",
         "residuals": "Невязки системы условий сопряжения",
+        "measured": "Измеренная таблица подъёма (seed 002, разделы 5.1-5.3; углы и подъёмы как в таблице)",
+        "checking_height": "контрольная высота, мм", "duration": "продолжительность, град", "fit": "аппроксимация",
+        "rms_residual": "СКО отклонения, мм", "max_residual": "наибольшее отклонение, мм",
+        "jerk_sign_changes": "перемены знака третьей производной",
         "table": "Таблица подъёма (через {step:g}° ПРВ; полная таблица: tables/{name}_lift.csv)",
         "plots": "Графики",
         "files": "Файлы",
@@ -131,6 +144,11 @@ TEXT = {
         "speed": "частота вращения, мин⁻¹", "port_time_area": "время-сечение, мм²·с", "port": "Окно",
         "pressure_model": "Давление в цилиндре",
         "names": {
+            "max_lift_mm": "наибольший подъём в таблице, мм", "lobe_centre_deg": "ось кулачка (после исправления "
+            "асимметрии), град", "harmonics": "число гармоник аппроксимации", "asymmetry_rms_mm":
+            "СКО разности ветвей после исправления, мм", "table_angle": "углы таблицы",
+            "table_lift_at": "подъём в таблице", "opens_deg_at_0.1mm": "открытие при подъёме клапана 0,1 мм, град ПКВ",
+            "closes_deg_at_0.1mm": "закрытие при подъёме клапана 0,1 мм, град ПКВ", "source": "источник",
             "V1_m_s": "V′ скорость в горловине, м/с (сем. 000, ф. 1.1)",
             "V2_m_s": "V″ скорость при полном подъёме, м/с (ф. 1.2)",
             "V3_m_s": "V‴ скорость по время-сечению, м/с (ф. 1.4)",
