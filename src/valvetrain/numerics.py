@@ -100,8 +100,14 @@ def extremum(fn, edges, kind="max", samples=65):
     lo, hi = xs[j], xs[k]
     best_x, best_y = xs[i], ys[i]
     if hi > lo and np.all(np.isfinite(ys[j:k + 1])):
-        res = minimize_scalar(lambda x: -sign * float(fn(np.array([x]))[0]), bounds=(lo, hi),
-                              method="bounded", options={"xatol": 1e-13 * max(1.0, abs(hi))})
+        worst = float(-ys[j:k + 1].min())
+
+        def objective(x):  # a value that is not finite between the samples (a pole, a cusp) is no extremum
+            y = sign * float(fn(np.array([x]))[0])
+            return -y if np.isfinite(y) else worst
+
+        res = minimize_scalar(objective, bounds=(lo, hi), method="bounded",
+                              options={"xatol": 1e-13 * max(1.0, abs(hi))})
         if -res.fun > best_y:
             best_x, best_y = float(res.x), -float(res.fun)
     return float(best_x), float(sign * best_y)
