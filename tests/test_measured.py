@@ -10,7 +10,7 @@ from scipy.optimize import brentq
 
 from valvetrain.cli import main
 from valvetrain.design import run
-from valvetrain.laws.measured import TableFileError, TableLaw, harmonic_fit, read_lift_table
+from valvetrain.laws.measured import TableFileError, TableLaw, harmonic_fit, read_lift_table, symmetry_shift
 from valvetrain.spec import load_spec
 
 from conftest import seed000_law
@@ -45,6 +45,30 @@ def test_nose_finding_recovers_a_known_shift(shift):
     law = TableLaw(theta, lift)
     assert np.degrees(law.centre) == pytest.approx(shift, abs=0.01)
     assert law.asymmetry_rms < 5e-6  # the remaining (true) asymmetry is at the noise level
+
+
+def test_nose_finding_does_not_depend_on_the_order():
+    """A lobe 2.5 deg off the origin with 2 um noise (spec section 10): the axis found from fits of order 8 to 60 is
+    the known shift to 0.01 deg. A fit of high order over a window shorter than its period has large coefficients
+    that cancel inside the data; the odd part is therefore measured over the data, not by sum b_k^2."""
+    _, theta, lift = _sampled(2.5, noise=2e-6)
+    top = int(np.argmax(lift))
+    for n in (8, 25, 40, 60):
+        a, b, w = harmonic_fit(theta - theta[top], lift, n, 1.15 * (theta[-1] - theta[top]))
+        shift, odd = symmetry_shift(a, b, w, theta[top] - theta[0])
+        assert np.degrees(theta[top] + shift) == pytest.approx(2.5, abs=0.01)
+        assert odd < 2e-6   # the remaining odd part is below the noise
+
+
+def test_an_accuracy_finer_than_the_noise_is_a_warning():
+    """accuracy_mm = 1e-5 on a table with 2 um noise: the N-harmonic fit cannot meet it by max_harmonics; the law
+    warns (spec section 9), and the lobe centre found from that overfitted series is still the true axis (0) to
+    0.01 deg."""
+    _, theta, lift = _sampled(noise=2e-6)
+    law = TableLaw(theta, lift, accuracy=1e-8)
+    assert law.harmonics == 60 and law.checks()[0].quantity == "measured table: rms residual of the N-harmonic fit"
+    assert TableLaw(theta, lift, accuracy=5e-6).checks() == []
+    assert np.degrees(law.centre) == pytest.approx(0.0, abs=0.01)
 
 
 def test_durations_at_checking_heights():
