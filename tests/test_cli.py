@@ -162,15 +162,14 @@ def test_module_entry_point():
     assert "valvetrain" in result.stdout
 
 
-def test_array_keys_are_accepted(tmp_path):
+def test_array_keys_are_accepted(tmp_path, refused):
     f = tmp_path / "e.toml"
     f.write_text(example_text().replace("min_resonance_ratio = 10.0", "min_resonance_ratio = 10.0\n"
                                         "mean_diameter_ratio = [0.75, 0.85]"))
     assert CliRunner().invoke(main, ["validate", str(f)]).exit_code == 0
-    f.write_text(example_text().replace("min_resonance_ratio = 10.0", "min_resonance_ratio = 10.0\n"
-                                        "mean_diameter_ratio = [0.85, 0.75]"))
-    result = CliRunner().invoke(main, ["validate", str(f)])
-    assert result.exit_code == 2 and "mean_diameter_ratio" in result.output
+    assert "mean_diameter_ratio" in refused(example_text().replace("min_resonance_ratio = 10.0",
+                                                                   "min_resonance_ratio = 10.0\n"
+                                                                   "mean_diameter_ratio = [0.85, 0.75]"))
 
 
 def test_a_throat_no_spring_can_serve_is_refused(refused):

@@ -82,14 +82,10 @@ def test_bad_pressure_file_is_refused_with_its_line(tmp_path):
     assert not out.exists()
 
 
-def test_missing_pressure_source_is_refused(tmp_path):
+def test_missing_pressure_source_is_refused(refused):
     text = example_text()
     start, end = text.index("[crank.cycle]"), text.index("[output]")
-    f = tmp_path / "e.toml"
-    f.write_text(text[:start] + text[end:])
-    result = CliRunner().invoke(main, ["validate", str(f)])
-    assert result.exit_code == 2
-    assert "give pressure_file" in result.output
+    assert "give pressure_file" in refused(text[:start] + text[end:])
 
 
 def test_v8_example():
