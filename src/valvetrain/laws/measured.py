@@ -11,11 +11,10 @@ from dataclasses import dataclass
 
 import numpy as np
 from scipy.interpolate import make_smoothing_spline
-from scipy.optimize import minimize_scalar
 
 from ..checks import check_range
 from ..csvfiles import read_two_columns
-from ..numerics import level_span
+from ..numerics import extremum, level_span
 from .base import RampedLaw, Segment
 
 CHECKING_HEIGHTS_MM = (0.1, 0.5, 1.0, 1.27)
@@ -91,7 +90,7 @@ def symmetry_shift(a, b, w, half_width, search=0.2, samples=801):
     same criterion where the basis is orthogonal and stays meaningful where it is not: a fit of high
     order over a window shorter than its period has large coefficients that cancel inside the data,
     and their b_k(delta)^2 would place the axis degrees away.  The axis is searched on a grid over
-    |delta| <= ``search`` T and refined by bounded Brent iteration.
+    |delta| <= ``search`` T and refined (:func:`~valvetrain.numerics.extremum`).
 
     Parameters
     ----------
@@ -122,16 +121,10 @@ def symmetry_shift(a, b, w, half_width, search=0.2, samples=801):
     sines = np.sin(np.outer(np.linspace(0.0, half_width - span, samples), k * w))
 
     def odd_rms(d):
-        d = np.atleast_1d(d)
         coef = b * np.cos(np.outer(d, k * w)) - a * np.sin(np.outer(d, k * w))
         return np.sqrt(np.mean((coef @ sines.T) ** 2, axis=1))
 
-    grid = np.linspace(-span, span, 401)
-    i = int(np.argmin(odd_rms(grid)))
-    lo, hi = grid[max(i - 1, 0)], grid[min(i + 1, grid.size - 1)]
-    res = minimize_scalar(lambda d: float(odd_rms(d)[0]), bounds=(lo, hi), method="bounded",
-                          options={"xatol": 1e-12})
-    return float(res.x), float(res.fun)
+    return extremum(odd_rms, [-span, span], "min", samples=401)
 
 
 @dataclass
