@@ -26,6 +26,7 @@ SHAPE_FACTOR_TABLE = (np.array([3, 4, 5, 6, 7, 8, 9, 10, 11, 12], dtype=float),
                       np.array([1.5, 1.38, 1.3, 1.23, 1.2, 1.17, 1.15, 1.13, 1.11, 1.1]))
 """Spring index D/d and shape factor chi (seed 000, work 6, table of eq. 6.1)."""
 
+
 class NoSpringFits(ValueError):
     """No spring of the wire series can be wound within the given diameters."""
 

@@ -51,7 +51,6 @@ class DesignResults:
         return out
 
 
-
 def run(spec):
     """Run the whole design of a validated specification.
 

@@ -9,6 +9,7 @@ from .. import flow, geometry, masses, springs, strength
 from ..checks import check_range
 from ..units import MM, MPA, rad_to_deg
 
+
 @dataclass
 class DriveResults:
     """Springs and strength of one valve: the JSON records and the curves for the report (SI)."""
@@ -21,8 +22,6 @@ class DriveResults:
     inertia_force: np.ndarray      # m_v |j_v| where j_v < 0 [N]
     required_force: np.ndarray     # K_z m_v |j_v| [N]
     lines: dict                    # name -> springs.Characteristic (required, chosen, outer, inner)
-
-
 
 
 def reduced_mass(v, throat_area, spring_mass_kg):

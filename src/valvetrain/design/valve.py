@@ -90,8 +90,6 @@ class ValveDesign:
     drive: object = None           # DriveResults: masses, spring curves, strength
 
 
-
-
 def build_law(valve, strokes=4, rated_speed=None):
     """The lift law of a valve (see :func:`build_side`); an asymmetric cam joins two flanks at the nose."""
     closing = valve.cam.closing_cam() if hasattr(valve.cam, "closing_cam") else None
