@@ -54,6 +54,19 @@ def Pair(low, high, unit=""):  # noqa: N802 (a type factory, like Length)
     return Annotated[tuple[_bounded(low, high, unit), _bounded(low, high, unit)], Field(strict=False)]
 
 
+MAX_LIFT_TO_THROAT = 0.5
+"""Largest valve lift / throat diameter accepted.  The curtain area pi d y equals the throat area at y = d/4
+(seed 000, eq. 1.3 with the seat cone neglected), the recommended lift is 0.18-0.30 d (seed 000, work 2); a
+lift of more than half the throat is no valve design."""
+
+RAMP_VELOCITY = _bounded(0.001, 1.0, "mm/deg", low_open=False)
+"""Tappet velocity at the end of a ramp; seed 000 work 2 recommends 0.008-0.022 mm/deg, and below 0.001 mm/deg
+a ramp of the usual clearance would outlast the whole cam revolution."""
+
+SEGMENT_ANGLE = _bounded(0.1, 180.0, "deg", low_open=False)
+"""A segment of a lift law [cam deg]: below 0.1 deg the accelerations of any law leave every physical scale."""
+
+
 class _Model(BaseModel):
     model_config = ConfigDict(extra="forbid", strict=True)
 
@@ -62,21 +75,21 @@ class Engine(_Model):
     """[engine]: the engine the valves belong to."""
 
     name: str = "engine"
-    bore_mm: Length(0.0, 2000.0)
-    stroke_mm: Length(0.0, 3000.0)
-    rated_speed_rpm: _bounded(0.0, 30000.0, "rpm")
+    bore_mm: Length(5.0, 2000.0, low_open=False)
+    stroke_mm: Length(5.0, 4000.0, low_open=False)
+    rated_speed_rpm: _bounded(10.0, 30000.0, "rpm", low_open=False)
     cylinders: Annotated[int, Field(ge=1, le=64)]
     strokes: Literal[2, 4]
     type: Literal["si", "si_injected", "diesel"] = "si"
     chamber: Literal["side_valve", "overhead", "prechamber_diesel", "direct_injection_diesel", "wedge",
                      "hemispherical"] = "overhead"
-    rod_length_mm: Optional[Length(0.0, 10000.0)] = None
+    rod_length_mm: Optional[Length(5.0, 10000.0, low_open=False)] = None
     layout: Literal["inline", "v"] = "inline"
-    bank_angle_deg: _bounded(0.0, 180.0, "deg") = 90.0
+    bank_angle_deg: _bounded(1.0, 180.0, "deg", low_open=False) = 90.0
     firing_order: Optional[list[int]] = None
-    crank_throws_deg: Optional[list[float]] = None
+    crank_throws_deg: Optional[list[_bounded(-720.0, 720.0, "deg", low_open=False)]] = None
     banks: Optional[list[Literal[0, 1]]] = None
-    firing_angles_deg: Optional[list[float]] = None
+    firing_angles_deg: Optional[list[_bounded(0.0, 720.0, "deg", low_open=False, high_open=True)]] = None
 
     @model_validator(mode="after")
     def _engine_consistency(self):
@@ -104,9 +117,9 @@ class Engine(_Model):
 
 
 class _CamBase(_Model):
-    base_radius_mm: Length(0.0, 500.0)
+    base_radius_mm: Length(2.0, 500.0, low_open=False)
     follower: Literal["flat", "roller"] = "flat"
-    roller_radius_mm: Optional[Length(0.0, 200.0)] = None
+    roller_radius_mm: Optional[Length(1.0, 200.0, low_open=False)] = None
 
     @model_validator(mode="after")
     def _roller_needs_radius(self):
@@ -117,7 +130,7 @@ class _CamBase(_Model):
 
 class _RampKeys(_Model):
     ramp_type: Literal["cosine", "constant_velocity", "constant_acceleration"] = "cosine"
-    ramp_acceleration_fraction: _bounded(0.0, 1.0) = 0.5
+    ramp_acceleration_fraction: _bounded(0.01, 1.0, low_open=False) = 0.5
 
 
 class _ClosingSide(_Model):
@@ -136,11 +149,11 @@ class KurzCam(_CamBase, _RampKeys, _ClosingSide):
     """[valves.NAME.cam] with law = "kurz" (seed 000, work 2)."""
 
     law: Literal["kurz"]
-    ramp_end_velocity_mm_per_deg: _bounded(0.0, 1.0, "mm/deg")
-    phi1_deg: _bounded(0.0, 180.0, "deg")
-    phi2_deg: _bounded(0.0, 180.0, "deg")
-    phi3_deg: Optional[_bounded(0.0, 180.0, "deg")] = None
-    shape_factor: _bounded(0.0, 1.0, high_open=True) = 0.625
+    ramp_end_velocity_mm_per_deg: RAMP_VELOCITY
+    phi1_deg: SEGMENT_ANGLE
+    phi2_deg: SEGMENT_ANGLE
+    phi3_deg: Optional[SEGMENT_ANGLE] = None
+    shape_factor: _bounded(0.05, 1.0, low_open=False, high_open=True) = 0.625
 
 
 class PolydyneCam(_CamBase, _RampKeys):
@@ -152,7 +165,7 @@ class PolydyneCam(_CamBase, _RampKeys):
     r: Optional[_bounded(3.0, 600.0)] = None
     s: Optional[_bounded(3.0, 800.0)] = None
     ramp: bool = False
-    ramp_end_velocity_mm_per_deg: Optional[_bounded(0.0, 1.0, "mm/deg")] = None
+    ramp_end_velocity_mm_per_deg: Optional[RAMP_VELOCITY] = None
 
     @model_validator(mode="after")
     def _exponents_and_ramp(self):
@@ -174,7 +187,7 @@ class PolynomialCam(_CamBase, _RampKeys):
     law: Literal["polynomial"]
     exponents: Annotated[list[_bounded(2.0, 1000.0, low_open=False)], Field(min_length=2, max_length=20)]
     ramp: bool = False
-    ramp_end_velocity_mm_per_deg: Optional[_bounded(0.0, 1.0, "mm/deg")] = None
+    ramp_end_velocity_mm_per_deg: Optional[RAMP_VELOCITY] = None
 
     @model_validator(mode="after")
     def _exponents_and_ramp(self):
@@ -191,18 +204,18 @@ class ConstantAccelerationCam(_CamBase, _RampKeys, _ClosingSide):
     """[valves.NAME.cam] with law = "constant_acceleration" (seed 002 section 2.4; spec section 5)."""
 
     law: Literal["constant_acceleration"]
-    ramp_end_velocity_mm_per_deg: _bounded(0.0, 1.0, "mm/deg")
-    phi1_deg: _bounded(0.0, 180.0, "deg")
-    phi2_deg: _bounded(0.0, 180.0, "deg")
+    ramp_end_velocity_mm_per_deg: RAMP_VELOCITY
+    phi1_deg: SEGMENT_ANGLE
+    phi2_deg: SEGMENT_ANGLE
     phi3_deg: Optional[_bounded(0.0, 180.0, "deg", low_open=False)] = None
-    kappa: _bounded(0.0, 10.0) = 0.6
+    kappa: _bounded(0.01, 10.0, low_open=False) = 0.6
 
 
 class Segment(_Model):
     """One acceleration segment of a combined-function cam."""
 
     shape: Literal["half_sine", "quarter_sine", "quarter_cosine", "constant", "linear", "parabola_to_nose"]
-    length_deg: _bounded(0.0, 180.0, "deg")
+    length_deg: SEGMENT_ANGLE
 
 
 class Ratio(_Model):
@@ -216,7 +229,7 @@ class CombinedCam(_CamBase, _RampKeys, _ClosingSide):
     """[valves.NAME.cam] with law = "combined": acceleration segments with continuous acceleration (spec section 6)."""
 
     law: Literal["combined"]
-    ramp_end_velocity_mm_per_deg: _bounded(0.0, 1.0, "mm/deg")
+    ramp_end_velocity_mm_per_deg: RAMP_VELOCITY
     segments: Annotated[list[Segment], Field(min_length=1, max_length=50)]
     ratios: list[Ratio] = []
 
@@ -234,11 +247,11 @@ class DynamicCam(_CamBase, _RampKeys):
     law: Literal["dynamic"]
     exponents: Annotated[list[_bounded(2.0, 1000.0, low_open=False)], Field(min_length=5, max_length=5)] = \
         [2.0, 10.0, 18.0, 26.0, 34.0]
-    valve_opening_velocity_m_s: _bounded(0.0, 10.0, "m/s")
-    drive_stiffness_N_per_mm: _bounded(0.0, 1e7, "N/mm")
+    valve_opening_velocity_m_s: _bounded(0.01, 10.0, "m/s", low_open=False)
+    drive_stiffness_N_per_mm: _bounded(10.0, 1e7, "N/mm", low_open=False)
     spring_rate_N_per_mm: _bounded(0.0, 1e6, "N/mm", low_open=False)
     spring_preload_N: _bounded(0.0, 1e6, "N", low_open=False)
-    design_speed_rpm: Optional[_bounded(0.0, 30000.0, "rpm")] = None
+    design_speed_rpm: Optional[_bounded(10.0, 30000.0, "rpm", low_open=False)] = None
 
 
 class HarmonicCam(_CamBase):
@@ -279,7 +292,7 @@ class TableCam(_CamBase):
     table_angle: Literal["crank", "cam"]
     table_lift_at: Literal["valve", "tappet"]
     fit: Literal["spline", "harmonic"] = "spline"
-    accuracy_mm: _bounded(0.0, 1.0, "mm") = 0.005
+    accuracy_mm: _bounded(1e-4, 1.0, "mm", low_open=False) = 0.005
     max_harmonics: Annotated[int, Field(ge=4, le=400)] = 60
 
 
@@ -287,9 +300,9 @@ class ThreeArcCam(_CamBase):
     """[valves.NAME.cam] with law = "three_arc": convex cam of two arcs (spec section 3); no ramp."""
 
     law: Literal["three_arc"]
-    nose_radius_mm: Optional[Length(0.0, 500.0)] = None
-    flank_radius_mm: Optional[Length(0.0, 10000.0)] = None
-    flank_angle_deg: Optional[_bounded(0.0, 90.0, "deg", high_open=True)] = None
+    nose_radius_mm: Optional[Length(0.5, 500.0, low_open=False)] = None
+    flank_radius_mm: Optional[Length(1.0, 10000.0, low_open=False)] = None
+    flank_angle_deg: Optional[_bounded(0.1, 90.0, "deg", low_open=False, high_open=True)] = None
 
     @model_validator(mode="after")
     def _one_parameter(self):
@@ -322,10 +335,10 @@ HarmonicCam.model_rebuild()
 class Masses(_Model):
     """[valves.NAME.drive.masses]: part masses for the reduced mass (seed 000, eq. 5.2)."""
 
-    valve_kg: _bounded(0.0, 50.0)
+    valve_kg: _bounded(0.001, 50.0, "kg", low_open=False)
     retainer_kg: _bounded(0.0, 20.0, low_open=False) = 0.0
     cotters_kg: _bounded(0.0, 5.0, low_open=False) = 0.0
-    spring_kg: Optional[_bounded(0.0, 20.0)] = None
+    spring_kg: Optional[_bounded(0.001, 20.0, "kg", low_open=False)] = None
     pushrod_kg: _bounded(0.0, 20.0, low_open=False) = 0.0
     tappet_kg: _bounded(0.0, 20.0, low_open=False) = 0.0
     rocker_inertia_kg_mm2: _bounded(0.0, 1e7, "kg mm2", low_open=False) = 0.0
@@ -336,9 +349,9 @@ class Drive(_Model):
 
     layout: Optional[Literal["direct", "rocker", "pushrod"]] = None
     spring_reserve: _bounded(1.0, 5.0) = 1.8
-    stiffness_N_per_mm: Optional[_bounded(0.0, 1e7, "N/mm")] = None
-    specific_mass_kg_m2: Optional[_bounded(0.0, 5000.0, "kg/m2")] = None
-    valve_arm_mm: Optional[Length(0.0, 1000.0)] = None
+    stiffness_N_per_mm: Optional[_bounded(10.0, 1e7, "N/mm", low_open=False)] = None
+    specific_mass_kg_m2: Optional[_bounded(10.0, 5000.0, "kg/m2", low_open=False)] = None
+    valve_arm_mm: Optional[Length(1.0, 1000.0, low_open=False)] = None
     masses: Optional[Masses] = None
 
     @model_validator(mode="after")
@@ -354,16 +367,16 @@ class Spring(_Model):
     """[valves.NAME.spring]: spring count, material and design limits (seed 000, works 5-6)."""
 
     count: Literal[1, 2] = 1
-    inner_share: _bounded(0.0, 1.0, high_open=True) = 0.4
+    inner_share: _bounded(0.05, 0.95, low_open=False) = 0.4
     material: str = "60S2A"
     shear_modulus_MPa: _bounded(1e3, 3e5, "MPa") = 8.0e4
     density_kg_m3: _bounded(100.0, 20000.0, "kg/m3") = 7850.0
-    allowable_stress_MPa: _bounded(0.0, 3000.0, "MPa") = 500.0
-    endurance_limit_MPa: _bounded(0.0, 3000.0, "MPa") = 370.0
+    allowable_stress_MPa: _bounded(50.0, 3000.0, "MPa", low_open=False) = 500.0
+    endurance_limit_MPa: _bounded(50.0, 3000.0, "MPa", low_open=False) = 370.0
     mean_stress_factor: _bounded(0.0, 1.0, low_open=False) = 0.2
-    min_safety_factor: _bounded(0.0, 10.0) = 1.3
+    min_safety_factor: _bounded(0.1, 10.0, low_open=False) = 1.3
     min_resonance_ratio: _bounded(0.0, 100.0, low_open=False) = 10.0
-    coil_gap_factor: _bounded(0.0, 1.0) = 0.12
+    coil_gap_factor: _bounded(0.01, 1.0, low_open=False) = 0.12
     mean_diameter_ratio: Pair(0.0, 5.0) = (0.7, 0.9)
     deflection_ratio_range: Pair(1.0, 20.0) = (1.6, 3.2)
     min_frequency_difference: _bounded(0.0, 1.0, low_open=False) = 0.1
@@ -382,29 +395,29 @@ class Parts(_Model):
     """[valves.NAME.parts]: dimensions of the loaded parts (seed 000, work 7); a check runs when its keys are given."""
 
     contact_modulus_MPa: _bounded(1e3, 1e6, "MPa") = 2.1e5
-    head_diameter_mm: Optional[Length(0.0, 1000.0)] = None
-    cam_width_mm: Optional[Length(0.0, 200.0)] = None
-    camshaft_diameter_mm: Optional[Length(0.0, 500.0)] = None
+    head_diameter_mm: Optional[Length(2.0, 1000.0, low_open=False)] = None
+    cam_width_mm: Optional[Length(1.0, 200.0, low_open=False)] = None
+    camshaft_diameter_mm: Optional[Length(2.0, 500.0, low_open=False)] = None
     camshaft_bore_mm: Length(0.0, 500.0, low_open=False) = 0.0
-    camshaft_span_mm: Optional[Length(0.0, 2000.0)] = None
-    cam_to_bearing_mm: Optional[Length(0.0, 2000.0)] = None
+    camshaft_span_mm: Optional[Length(5.0, 2000.0, low_open=False)] = None
+    cam_to_bearing_mm: Optional[Length(0.5, 2000.0, low_open=False)] = None
     camshaft_modulus_MPa: _bounded(1e3, 1e6, "MPa") = 2.1e5
-    camshaft_deflection_coefficient: _bounded(0.0, 100.0) = 64.0 / (3.0 * math.pi)
-    tappet_diameter_mm: Optional[Length(0.0, 500.0)] = None
-    tappet_guide_length_mm: Optional[Length(0.0, 500.0)] = None
-    pushrod_length_mm: Optional[Length(0.0, 2000.0)] = None
-    pushrod_diameter_mm: Optional[Length(0.0, 100.0)] = None
+    camshaft_deflection_coefficient: _bounded(0.01, 100.0, low_open=False) = 64.0 / (3.0 * math.pi)
+    tappet_diameter_mm: Optional[Length(2.0, 500.0, low_open=False)] = None
+    tappet_guide_length_mm: Optional[Length(1.0, 500.0, low_open=False)] = None
+    pushrod_length_mm: Optional[Length(5.0, 2000.0, low_open=False)] = None
+    pushrod_diameter_mm: Optional[Length(1.0, 100.0, low_open=False)] = None
     pushrod_bore_mm: Length(0.0, 100.0, low_open=False) = 0.0
     pushrod_modulus_MPa: _bounded(1e3, 1e6, "MPa") = 2.1e5
-    ball_radius_mm: Optional[Length(0.0, 100.0)] = None
-    socket_radius_mm: Optional[Length(0.0, 100.0)] = None
-    pushrod_head_area_mm2: Optional[_bounded(0.0, 1e5, "mm2")] = None
-    rocker_pad_width_mm: Optional[Length(0.0, 100.0)] = None
-    rocker_pad_radius_mm: Optional[Length(0.0, 1000.0)] = None
-    rocker_shaft_span_mm: Optional[Length(0.0, 1000.0)] = None
-    rocker_shaft_diameter_mm: Optional[Length(0.0, 200.0)] = None
+    ball_radius_mm: Optional[Length(0.5, 100.0, low_open=False)] = None
+    socket_radius_mm: Optional[Length(0.5, 100.0, low_open=False)] = None
+    pushrod_head_area_mm2: Optional[_bounded(0.1, 1e5, "mm2", low_open=False)] = None
+    rocker_pad_width_mm: Optional[Length(0.5, 100.0, low_open=False)] = None
+    rocker_pad_radius_mm: Optional[Length(0.5, 1000.0, low_open=False)] = None
+    rocker_shaft_span_mm: Optional[Length(1.0, 1000.0, low_open=False)] = None
+    rocker_shaft_diameter_mm: Optional[Length(1.0, 200.0, low_open=False)] = None
     rocker_shaft_bore_mm: Length(0.0, 200.0, low_open=False) = 0.0
-    rocker_width_mm: Optional[Length(0.0, 200.0)] = None
+    rocker_width_mm: Optional[Length(0.5, 200.0, low_open=False)] = None
 
     @model_validator(mode="after")
     def _consistent(self):
@@ -432,13 +445,13 @@ class Valve(_Model):
 
     kind: Literal["intake", "exhaust"]
     count: Annotated[int, Field(ge=1, le=8)] = 1
-    throat_diameter_mm: Length(0.0, 1000.0)
-    seat_angle_deg: _bounded(0.0, 90.0, "deg", high_open=True)
-    max_lift_mm: Optional[Length(0.0, 500.0)] = None
+    throat_diameter_mm: Length(2.0, 1000.0, low_open=False)
+    seat_angle_deg: _bounded(0.0, 75.0, "deg", low_open=False)
+    max_lift_mm: Optional[Length(0.3, 500.0, low_open=False)] = None
     clearance_mm: Length(0.0, 5.0, low_open=False)
     opens_deg: Optional[_bounded(-180.0, 180.0, "deg")] = None
     closes_deg: Optional[_bounded(-180.0, 180.0, "deg")] = None
-    rocker_ratio: _bounded(0.0, 5.0) = 1.0
+    rocker_ratio: _bounded(0.2, 5.0, low_open=False) = 1.0
     piston_gap_tdc_mm: Optional[Length(-100.0, 500.0)] = None
     cam: Cam
     drive: Drive = Drive()
@@ -456,22 +469,22 @@ class Valve(_Model):
 class Gas(_Model):
     """[gas]: absolute pressures for the closed-valve spring check and the cam load (seed 000, works 5, 7)."""
 
-    exhaust_back_pressure_MPa: _bounded(0.0, 10.0, "MPa") = 0.106
-    cylinder_intake_pressure_MPa: _bounded(0.0, 10.0, "MPa") = 0.085
-    intake_port_pressure_MPa: _bounded(0.0, 10.0, "MPa") = 0.1
-    cylinder_exhaust_pressure_MPa: _bounded(0.0, 10.0, "MPa") = 0.115
-    exhaust_opening_pressure_MPa: _bounded(0.0, 50.0, "MPa") = 0.5
+    exhaust_back_pressure_MPa: _bounded(0.001, 10.0, "MPa", low_open=False) = 0.106
+    cylinder_intake_pressure_MPa: _bounded(0.001, 10.0, "MPa", low_open=False) = 0.085
+    intake_port_pressure_MPa: _bounded(0.001, 10.0, "MPa", low_open=False) = 0.1
+    cylinder_exhaust_pressure_MPa: _bounded(0.001, 10.0, "MPa", low_open=False) = 0.115
+    exhaust_opening_pressure_MPa: _bounded(0.001, 50.0, "MPa", low_open=False) = 0.5
 
 
 class Cycle(_Model):
     """[crank.cycle]: the Wiebe cycle model used when no pressure_file is given."""
 
-    heat_input_J: _bounded(0.0, 1e8, "J")
-    intake_pressure_MPa: _bounded(0.0, 10.0, "MPa") = 0.09
-    exhaust_pressure_MPa: _bounded(0.0, 10.0, "MPa") = 0.11
+    heat_input_J: _bounded(0.01, 1e8, "J", low_open=False)
+    intake_pressure_MPa: _bounded(0.001, 10.0, "MPa", low_open=False) = 0.09
+    exhaust_pressure_MPa: _bounded(0.001, 10.0, "MPa", low_open=False) = 0.11
     combustion_start_deg: _bounded(-90.0, 90.0, "deg") = -15.0
-    combustion_duration_deg: _bounded(0.0, 180.0, "deg") = 60.0
-    wiebe_a: _bounded(0.0, 50.0) = 6.908
+    combustion_duration_deg: _bounded(1.0, 180.0, "deg", low_open=False) = 60.0
+    wiebe_a: _bounded(0.01, 50.0, low_open=False) = 6.908
     wiebe_m: _bounded(-1.0, 10.0) = 2.0
     gamma: _bounded(1.0, 2.0) = 1.33
 
@@ -479,24 +492,24 @@ class Cycle(_Model):
 class CrankSpec(_Model):
     """[crank]: the crank mechanism (seed 001).  bore, stroke, rod length and speed default to [engine]."""
 
-    bore_mm: Optional[Length(0.0, 2000.0)] = None
-    stroke_mm: Optional[Length(0.0, 3000.0)] = None
-    rod_length_mm: Optional[Length(0.0, 10000.0)] = None
+    bore_mm: Optional[Length(5.0, 2000.0, low_open=False)] = None
+    stroke_mm: Optional[Length(5.0, 4000.0, low_open=False)] = None
+    rod_length_mm: Optional[Length(5.0, 10000.0, low_open=False)] = None
     offset_mm: _bounded(-1000.0, 1000.0, "mm", low_open=False) = 0.0
-    speed_rpm: Optional[_bounded(0.0, 30000.0, "rpm")] = None
+    speed_rpm: Optional[_bounded(10.0, 30000.0, "rpm", low_open=False)] = None
     kinematics: Literal["exact", "approximate"] = "exact"
     pressure_file: Optional[str] = None
     pv_method: Literal["exact", "brix"] = "exact"
     compression_ratio: Optional[_bounded(1.0, 60.0)] = None
-    ambient_pressure_MPa: _bounded(0.0, 10.0, "MPa") = 0.1
-    step_deg: _bounded(0.0, 10.0, "deg") = 1.0
-    piston_kg: Optional[_bounded(0.0, 1e4, "kg")] = None
-    rod_kg: Optional[_bounded(0.0, 1e4, "kg")] = None
+    ambient_pressure_MPa: _bounded(0.001, 10.0, "MPa", low_open=False) = 0.1
+    step_deg: _bounded(0.1, 10.0, "deg", low_open=False) = 1.0
+    piston_kg: Optional[_bounded(0.001, 1e4, "kg", low_open=False)] = None
+    rod_kg: Optional[_bounded(0.001, 1e4, "kg", low_open=False)] = None
     crank_kg: Optional[_bounded(0.0, 1e4, "kg", low_open=False)] = None
-    specific_piston_kg_m2: Optional[_bounded(0.0, 1e4, "kg/m2")] = None
-    specific_rod_kg_m2: Optional[_bounded(0.0, 1e4, "kg/m2")] = None
+    specific_piston_kg_m2: Optional[_bounded(1.0, 1e4, "kg/m2", low_open=False)] = None
+    specific_rod_kg_m2: Optional[_bounded(1.0, 1e4, "kg/m2", low_open=False)] = None
     specific_crank_kg_m2: Optional[_bounded(0.0, 1e4, "kg/m2", low_open=False)] = None
-    rod_pin_fraction: _bounded(0.0, 1.0, high_open=True) = 0.275
+    rod_pin_fraction: _bounded(0.01, 0.99, low_open=False) = 0.275
     cycle: Optional[Cycle] = None
 
     @model_validator(mode="after")
@@ -522,10 +535,10 @@ class Port(_Model):
     """[two_stroke.ports.NAME]: one piston-controlled port (or a group of equal ports: width is their sum)."""
 
     kind: Literal["exhaust", "transfer", "inlet"]
-    width_mm: Length(0.0, 10000.0)
-    height_mm: Optional[Length(0.0, 3000.0)] = None
-    opens_before_bdc_deg: Optional[_bounded(0.0, 180.0, "deg", high_open=True)] = None
-    lower_edge_mm: Optional[Length(0.0, 5000.0)] = None
+    width_mm: Length(0.5, 10000.0, low_open=False)
+    height_mm: Optional[Length(0.1, 3000.0, low_open=False)] = None
+    opens_before_bdc_deg: Optional[_bounded(0.1, 180.0, "deg", low_open=False, high_open=True)] = None
+    lower_edge_mm: Optional[Length(0.0, 5000.0, low_open=False)] = None
 
     @model_validator(mode="after")
     def _geometry(self):
@@ -541,20 +554,20 @@ class Port(_Model):
 class TwoStroke(_Model):
     """[two_stroke]: port timing of a piston-ported two-stroke (seed 000, work 8)."""
 
-    speed_rpm: Optional[_bounded(0.0, 30000.0, "rpm")] = None
-    speed_range_rpm: Optional[Pair(0.0, 30000.0, "rpm")] = None
+    speed_rpm: Optional[_bounded(10.0, 30000.0, "rpm", low_open=False)] = None
+    speed_range_rpm: Optional[Pair(10.0, 30000.0, "rpm")] = None
     kinematics: Literal["exact", "approximate"] = "exact"
-    piston_height_mm: Optional[Length(0.0, 3000.0)] = None
-    step_deg: _bounded(0.0, 10.0, "deg") = 0.5
+    piston_height_mm: Optional[Length(1.0, 3000.0, low_open=False)] = None
+    step_deg: _bounded(0.05, 10.0, "deg", low_open=False) = 0.5
     ports: dict[str, Port]
 
 
 class Output(_Model):
     """[output]: tables and exports."""
 
-    table_step_cam_deg: _bounded(0.0, 10.0, "deg") = 0.5
+    table_step_cam_deg: _bounded(0.05, 10.0, "deg", low_open=False) = 0.5
     contour_points: Annotated[int, Field(ge=36, le=100000)] = 721
-    export_step_deg: _bounded(0.0, 10.0, "deg") = 1.0
+    export_step_deg: _bounded(0.1, 10.0, "deg", low_open=False) = 1.0
 
 
 _NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_-]*$")
@@ -609,6 +622,10 @@ def _valve_problems(name, v, engine):
         return [f"{at}.{k}: required key is missing (only a measured table, law = \"table\", sets its own lift "
                 "and timing)" for k in missing]
     out = []
+    if len({"opens_deg", "closes_deg"} & set(missing)) == 1:
+        given, other = ("opens_deg", "closes_deg") if v.closes_deg is None else ("closes_deg", "opens_deg")
+        return [f"{at}.{given} = {getattr(v, given):g} needs {other} too: the timing is given by both or, for a "
+                "measured table, by neither"]
     if v.throat_diameter_mm >= engine.bore_mm:
         out.append(f"{at}.throat_diameter_mm = {v.throat_diameter_mm:g} must be smaller than engine.bore_mm = "
                    f"{engine.bore_mm:g}")
@@ -703,23 +720,7 @@ def _crank_problems(spec):
     n = cycle / c.step_deg
     if abs(n - round(n)) > 1e-9:
         out.append(f"crank.step_deg = {c.step_deg:g} must divide the {cycle:g} deg cycle into whole steps")
-    if c.pressure_file is not None and not out:
-        out += _pressure_file_problems(spec)
     return out
-
-
-def _pressure_file_problems(spec):
-    from .crank.pressure import PressureFileError, read_indicator
-
-    c = spec.crank
-    try:
-        table = read_indicator(resolve_path(spec, c.pressure_file), spec.engine.strokes)
-    except PressureFileError as exc:
-        return [f"crank.pressure_file: {exc}"]
-    if table.kind == "volume" and c.compression_ratio is None:
-        return ["crank.pressure_file is a p-V diagram: crank.compression_ratio is needed to place it on the crank "
-                "angle"]
-    return []
 
 
 def resolve_path(spec, name):
@@ -792,19 +793,27 @@ def _location(err):
     return ".".join(parts) if parts else "(file)"
 
 
+def _shown(value, limit=60):
+    """A value as echoed in a message: its repr, cut to ``limit`` characters."""
+    text = repr(value)
+    return text if len(text) <= limit else f"{text[:limit - 5]}...{text[-2:]}"
+
+
 def _message(err):
     loc = _location(err)
     kind = err["type"]
     if kind == "missing":
         return f"{loc}: required key is missing"
     if kind == "extra_forbidden":
-        return f"{loc}: unknown key (value {err['input']!r}); check the spelling against `valvetrain example`"
+        return f"{loc}: unknown key (value {_shown(err['input'])}); check the spelling against `valvetrain example`"
     if kind == "union_tag_invalid":
-        return f"{loc}.law = {err['ctx']['tag']!r}: allowed {err['ctx']['expected_tags']}"
+        return f"{loc}.law = {_shown(err['ctx']['tag'])}: allowed {err['ctx']['expected_tags']}"
+    if kind == "union_tag_not_found":
+        return f"{loc}.law: required key is missing; allowed {', '.join(repr(law) for law in LAWS)}"
     msg = err["msg"].removeprefix("Value error, ")
     if isinstance(err["input"], dict):
         return f"{loc}: {msg}"
-    return f"{loc} = {err['input']!r}: {msg}"
+    return f"{loc} = {_shown(err['input'])}: {msg}"
 
 
 def validate(data):
@@ -840,18 +849,33 @@ def _law_problems(spec):
     out = []
     for name, v in spec.valves.items():
         try:
-            build_law(v, spec.engine.strokes, spec.engine.rated_speed_rpm)
+            law = build_law(v, spec.engine.strokes, spec.engine.rated_speed_rpm)
         except ValueError as exc:
             out.append(f"valves.{name}.cam: {exc}")
+            continue
+        event = math.degrees(law.end - law.start)
+        if not event < 360.0:
+            ramp = math.degrees(law.ramp_angle)
+            out.append(f"valves.{name}.cam: the cam event lasts {event:.4g} cam deg; allowed < 360" + (
+                f" (a ramp of {ramp:.4g} cam deg on each flank: raise ramp_end_velocity_mm_per_deg or lower "
+                "clearance_mm)" if ramp > 0.0 else ""))
+        lift = law.lift_max * v.rocker_ratio / MM
+        if lift > MAX_LIFT_TO_THROAT * v.throat_diameter_mm:
+            what = "cam.table_file: the measured valve lift" if v.cam.law == "table" else "max_lift_mm"
+            out.append(f"valves.{name}.{what} = {lift:.4g} mm: allowed at most {MAX_LIFT_TO_THROAT:g} x "
+                       f"throat_diameter_mm = {MAX_LIFT_TO_THROAT * v.throat_diameter_mm:.4g} mm (the curtain area "
+                       "already equals the throat area at a quarter of the diameter)")
     return out
 
 
 def parse_spec(text, source="<string>", source_dir=None):
     """Parse and validate TOML text; relative file names in it are read from ``source_dir``."""
     try:
-        data = tomllib.loads(text)
+        data = tomllib.loads(text.removeprefix("\ufeff"))
     except tomllib.TOMLDecodeError as exc:
         raise SpecError([f"{source}: not valid TOML: {exc}"]) from None
+    except RecursionError:
+        raise SpecError([f"{source}: arrays or tables nested too deeply to be a specification"]) from None
     if source_dir is not None and isinstance(data, dict):
         data["source_dir"] = str(source_dir)
     return validate(data)

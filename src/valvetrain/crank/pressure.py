@@ -82,6 +82,56 @@ def read_indicator(path, strokes):
     return IndicatorTable(kind, np.asarray(x), np.array(ps) * 1e6, where)
 
 
+MAX_GAP_DEG = 60.0
+"""Longest stretch of the cycle [crank deg] an indicator diagram may leave without a point: linear
+interpolation across a longer gap (a file of only the closed cycle, or of 0...360 deg of a four-stroke)
+would invent the pressure of whole strokes."""
+
+FIRING_WINDOW_DEG = 90.0
+"""The peak pressure of a fired cycle lies within this many crank degrees of the firing TDC."""
+
+
+def check_cycle(angle, pressure, strokes, source="indicator diagram"):
+    """Refuse a p(phi) diagram that does not describe one whole fired cycle in the cycle-angle convention.
+
+    Parameters
+    ----------
+    angle : ndarray
+        Increasing cycle angles [rad], 0 = the TDC that starts the intake stroke (four-stroke).
+    pressure : ndarray
+        Absolute pressures [Pa].
+    strokes : {2, 4}
+    source : str
+        Name of the diagram in the messages.
+
+    Raises
+    ------
+    PressureFileError
+        When a gap between points (periodically, across the end of the cycle) exceeds
+        :data:`MAX_GAP_DEG`, or the peak pressure lies more than :data:`FIRING_WINDOW_DEG` from
+        the firing TDC (360 deg of a four-stroke, 0 = 360 deg of a two-stroke): a file counted
+        from the firing TDC gives a negative indicated work.
+    """
+    length = cycle_length(strokes)
+    ends = np.concatenate([angle, [angle[0] + length]])
+    gaps = np.diff(ends)
+    k = int(np.argmax(gaps))
+    if gaps[k] > np.radians(MAX_GAP_DEG):
+        raise PressureFileError(
+            f"{source}: no point between crank_deg {np.degrees(ends[k]):.4g} and "
+            f"{np.degrees(ends[k + 1]) % (180 * strokes):.4g}, a gap of {np.degrees(gaps[k]):.4g} deg; allowed at "
+            f"most {MAX_GAP_DEG:g} deg: the diagram must cover the whole cycle 0...{180 * strokes}")
+    firing = np.pi * (strokes - 2)
+    peak = float(angle[int(np.argmax(pressure))])
+    off = abs((peak - firing + length / 2.0) % length - length / 2.0)
+    if off > np.radians(FIRING_WINDOW_DEG):
+        raise PressureFileError(
+            f"{source}: the pressure peaks at crank_deg = {np.degrees(peak):.4g}; the firing TDC is at "
+            f"{np.degrees(firing) % 360 if strokes == 2 else 360:g} deg (0 = TDC of the intake stroke), so the peak "
+            f"must lie within +-{FIRING_WINDOW_DEG:g} deg of it: shift the angles if the file counts from the "
+            "firing TDC")
+
+
 def on_grid(angle, pressure, grid, strokes):
     """Periodic linear interpolation of p(phi) onto the calculation grid [Pa]."""
     return np.interp(np.asarray(grid), angle, pressure, period=cycle_length(strokes))

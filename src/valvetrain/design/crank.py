@@ -7,7 +7,7 @@ import numpy as np
 
 from ..checks import check_range
 from ..crank import dynamics, kinematics, pressure, torque
-from ..spec import crank_geometry, resolve_path
+from ..spec import SpecError, crank_geometry, resolve_path
 from ..units import DEG, MM, MPA, rad_to_deg, rpm_to_rad_s
 
 LAMBDA_RANGE = (0.24, 0.31)
@@ -56,9 +56,14 @@ def _gas_pressure(spec, phi, bore, radius, lam, k):
         return pressure.wiebe_pressure(phi, model, bore, radius, lam, strokes, k), source
     table = pressure.read_indicator(resolve_path(spec, c.pressure_file), strokes)
     if table.kind == "angle":
+        pressure.check_cycle(table.x, table.pressure, strokes, table.source)
         return pressure.on_grid(table.x, table.pressure, phi, strokes), f"p-phi diagram {table.source}"
+    if c.compression_ratio is None:
+        raise pressure.PressureFileError(f"{table.source} is a p-V diagram: crank.compression_ratio is needed to place "
+                                         "it on the crank angle")
     angle, p = pressure.pv_to_angle(table.x, table.pressure, bore, radius, lam, c.compression_ratio, strokes, k,
                                     c.pv_method, table.source)
+    pressure.check_cycle(angle, p, strokes, table.source)
     how = "Brix's construction" if c.pv_method == "brix" else "the exact kinematics"
     return pressure.on_grid(angle, p, phi, strokes), f"p-V diagram {table.source}, placed on the crank angle by {how}"
 
@@ -88,7 +93,10 @@ def crank_stage(spec):
     phi = np.arange(n) * (c.step_deg * DEG)
     area = np.pi * bore**2 / 4.0
 
-    p_abs, source = _gas_pressure(spec, phi, bore, radius, lam, k)
+    try:
+        p_abs, source = _gas_pressure(spec, phi, bore, radius, lam, k)
+    except pressure.PressureFileError as exc:
+        raise SpecError([f"crank.pressure_file: {exc}"]) from None
     masses = _masses(c, area, 2 if eng.layout == "v" else 1)
     forces = dynamics.cylinder_dynamics(phi, p_abs, c.ambient_pressure_MPa * MPA, bore, radius, lam, omega, masses,
                                         k, exact)

@@ -423,8 +423,11 @@ def design_valve(name, v, spec):
         gap = geometry.valve_piston_clearance(s, valve_lift((crank - nose) / 2.0), v.piston_gap_tdc_mm * MM)
         i = int(np.argmin(gap))
         summary["piston_clearance"] = {"min_clearance_mm": gap[i] / MM, "crank_deg": rad_to_deg(wrap_crank(crank[i]))}
-        found += check_range("valve-piston clearance", gap[i] / MM, low=0.0, strict_low=True,
-                             source="seed 002, eqs. (2.13)-(2.14)", unit="mm")
+        if gap[i] <= 0.0:
+            raise SpecError([f"valves.{name}: the valve hits the piston: the valve-piston gap falls to "
+                             f"{gap[i] / MM:.4g} mm at {rad_to_deg(wrap_crank(crank[i])):.4g} crank deg (seed 002, eqs. "
+                             f"2.13-2.14, with piston_gap_tdc_mm = {v.piston_gap_tdc_mm:g}); allowed a gap > 0: lower "
+                             "the lift near TDC or deepen the valve pocket"])
 
     try:
         drive = drive_stage(v, spec, law, omega, heel, roller)

@@ -44,6 +44,46 @@ def harmonic_limit(half_angle, natural_frequency, cam_speed):
     return float(half_angle * natural_frequency / (np.pi * cam_speed))
 
 
+MAX_DEVIATION = 0.05
+"""Largest deviation of the series from its target, as a share of the target's lift, accepted as a fit."""
+
+
+def _junction_conditions(w, order, nose_lift):
+    """Equality constraints C a = d of the series: even derivatives 0, 2, ..., 2m zero at theta = alpha_W and
+    h(0) = the nose lift.  Row j is scaled by (w_N)^(2j) so that every row has entries of order one."""
+    k = np.arange(w.size)
+    scale = w / w[-1]
+    c = np.array([(-1.0) ** k * scale ** (2 * j) for j in range(order + 1)] + [np.ones(w.size)])
+    d = np.zeros(order + 2)
+    d[-1] = nose_lift
+    return c, d
+
+
+def constrained_least_squares(a, b, c, d):
+    """Minimise ||a x - b|| subject to c x = d, by the null-space method.
+
+    ``x = x_p + Z y`` with ``x_p`` the minimum-norm solution of ``c x = d`` and ``Z`` an orthonormal
+    basis of the null space of ``c`` (both from the SVD, :func:`scipy.linalg.null_space`), then ``y``
+    by least squares.  Unlike the KKT system this stays solvable when the constraints are badly
+    scaled or nearly dependent (high harmonic and junction orders).
+
+    Examples
+    --------
+    The point of the line x0 + x1 = 2 closest to (0, 0):
+
+    >>> [round(float(v), 12) for v in constrained_least_squares(np.eye(2), np.zeros(2), np.ones((1, 2)), [2.0])]
+    [1.0, 1.0]
+    """
+    from scipy.linalg import lstsq, null_space
+
+    x_p = lstsq(c, d)[0]
+    z = null_space(c)
+    if z.shape[1] == 0:
+        return x_p
+    y = lstsq(a @ z, b - a @ x_p)[0]
+    return x_p + z @ y
+
+
 class HarmonicLaw(LiftLaw):
     """N-harmonic cam fitted to a target law.
 
@@ -76,13 +116,12 @@ class HarmonicLaw(LiftLaw):
         theta = np.linspace(0.0, self.alpha, samples)
         a = np.cos(np.outer(theta, self.w))
         b = target.lift(theta)
-        sign = (-1.0) ** k
-        c = np.array([sign * self.w ** (2 * j) for j in range(m + 1)] + [np.ones(n + 1)])
-        d = np.zeros(m + 2)
-        d[-1] = float(target.lift(0.0))
-        kkt = np.block([[a.T @ a, c.T], [c, np.zeros((m + 2, m + 2))]])
-        self.a = np.linalg.solve(kkt, np.concatenate([a.T @ b, d]))[: n + 1]
+        self.a = constrained_least_squares(a, b, *_junction_conditions(self.w, m, float(target.lift(0.0))))
         self.deviation = float(np.abs(a @ self.a - b).max())
+        if not self.deviation <= MAX_DEVIATION * float(target.lift(0.0)):
+            raise ValueError(f"harmonic law: N = {n} harmonics with junction_order = {m} follow the target only to "
+                             f"{self.deviation * 1e3:.3g} mm of its {float(target.lift(0.0)) * 1e3:.4g} mm lift; allowed "
+                             f"{MAX_DEVIATION:.0%} of the lift: lower junction_order or change harmonics")
         self._ramp_height = float(target.ramp_height)
         self._opening = self._valve_opening()
 

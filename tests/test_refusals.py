@@ -1,0 +1,161 @@
+"""Inputs that cannot give a physically meaningful design are refused at validation (exit 2, one message naming
+the key, the value and what is allowed), never a traceback or a result that cannot be true (issue 9)."""
+
+import numpy as np
+import pytest
+from click.testing import CliRunner
+
+from valvetrain.cli import main
+from valvetrain.crank import pressure
+from valvetrain.spec import example_text
+
+CAM = example_text()[example_text().index("[valves.intake.cam]"):example_text().index("# Drive, springs")]
+
+
+def _with(*replacements):
+    text = example_text()
+    for old, new in replacements:
+        assert old in text, old
+        text = text.replace(old, new, 1)
+    return text
+
+
+def test_a_utf8_bom_is_accepted(tmp_path):
+    f = tmp_path / "bom.toml"
+    f.write_bytes(b"\xef\xbb\xbf" + example_text().encode("utf-8"))
+    result = CliRunner().invoke(main, ["validate", str(f)])
+    assert result.exit_code == 0, result.output
+
+
+def test_deeply_nested_arrays_are_refused(refused):
+    deep = "[" * 5000 + "]" * 5000
+    assert "nested too deeply" in refused(_with(("contour_points = 721", f"contour_points = 721\nx = {deep}")))
+
+
+def test_echoed_values_are_cut(refused):
+    out = refused(_with(("contour_points = 721", "contour_points = 721\nx = " + "[" * 200 + "]" * 200)))
+    line = next(ln for ln in out.splitlines() if "output.x" in ln)
+    assert len(line) < 200
+
+
+def test_a_missing_law_lists_the_laws(refused):
+    out = refused(_with(('law = "kurz"', "")))
+    assert "valves.intake.cam.law: required key is missing; allowed 'kurz', 'polydyne', 'polynomial'" in out
+    assert "discriminator" not in out
+
+
+def test_timing_of_a_table_needs_both_angles_or_none(tmp_path, refused):
+    """A measured table may leave the timing to the table; one angle alone was a TypeError."""
+    import shutil
+    from pathlib import Path
+
+    shutil.copytree(Path(__file__).parent.parent / "examples" / "data", tmp_path / "data")
+    text = (Path(__file__).parent.parent / "examples" / "measured-lobe.toml").read_text()
+    out = refused(text.replace("# max_lift_mm, opens_deg", "opens_deg = 20.0\n# max_lift_mm, opens_deg"))
+    assert "valves.intake.opens_deg = 20 needs closes_deg too" in out
+
+
+@pytest.mark.parametrize("old,new,message", [
+    # seed 000 work 2 recommends 0.008-0.022 mm/deg: 2e-8 would make a ramp of millions of degrees
+    ("ramp_end_velocity_mm_per_deg = 0.02", "ramp_end_velocity_mm_per_deg = 2e-8",
+     "valves.intake.cam.ramp_end_velocity_mm_per_deg = 2e-08: allowed [0.001, 1] mm/deg"),
+    # a table step of 1e-9 deg would allocate terabytes
+    ("table_step_cam_deg = 0.5", "table_step_cam_deg = 1e-9", "output.table_step_cam_deg = 1e-09: allowed [0.05, 10] deg"),
+    ("bore_mm = 80.0", "bore_mm = 1e-300", "engine.bore_mm = 1e-300: allowed [5, 2000] mm"),
+    ("firing_order = [1, 3, 4, 2]", "crank_throws_deg = [0.0, nan, 180.0, 0.0]",
+     "engine.crank_throws_deg.1 = nan: must be a finite number"),
+])
+def test_values_below_physical_bounds(refused, old, new, message):
+    assert message in refused(_with((old, new)))
+
+
+def test_a_cam_event_over_a_revolution_is_refused(refused):
+    """Clearance 1.5 mm taken up at 0.002 mm/deg: the cosine ramp of seed 000 eq. (2.1), Phi0 = pi h0 / (2 w'),
+    lasts 1178 cam deg on each flank (spec/valvetrain-works-1-8.md, work 2)."""
+    out = refused(_with(("clearance_mm = 0.25", "clearance_mm = 1.5"),
+                        ("ramp_end_velocity_mm_per_deg = 0.02", "ramp_end_velocity_mm_per_deg = 0.002")))
+    assert "valves.intake.cam: the cam event lasts 2498 cam deg; allowed < 360 (a ramp of 1178 cam deg" in out
+
+
+def test_a_lift_beyond_half_the_throat_is_refused(refused):
+    assert "valves.intake.max_lift_mm = 400 mm: allowed at most 0.5 x throat_diameter_mm = 18.4 mm" in \
+        refused(_with(("max_lift_mm = 10.0", "max_lift_mm = 400.0")))
+
+
+def _harmonic(n, m):
+    return _with((CAM, f"""[valves.intake.cam]
+law = "harmonic"
+harmonics = {n}
+junction_order = {m}
+base_radius_mm = 20.0
+[valves.intake.cam.target]
+law = "kurz"
+ramp_end_velocity_mm_per_deg = 0.02
+phi1_deg = 27.0
+phi2_deg = 6.0
+phi3_deg = 38.0
+
+"""))
+
+
+def test_high_harmonic_and_junction_orders_fit(tmp_path):
+    """N = 400, m = 10 made the KKT system singular (a lift of 1.5e10 mm); the null-space solution follows the
+    seed 000 appendix Kurz target (10 mm valve lift) within 2 um."""
+    from valvetrain.design import run
+    from valvetrain.spec import parse_spec
+
+    res = run(parse_spec(_harmonic(400, 10))).to_dict()["valves"]["intake"]
+    assert res["flow"]["valve_lift_mm"] == pytest.approx(10.0, rel=1e-9)
+    assert res["cam"]["coefficients"]["max_deviation_mm"] < 2e-3
+
+
+def test_a_harmonic_series_that_cannot_follow_its_target_is_refused(refused):
+    """N = 20 with 12 junction conditions leaves 9 free coefficients: 0.45 mm off the 6.5 mm target lift."""
+    assert "harmonic law: N = 20 harmonics with junction_order = 10 follow the target only to" in \
+        refused(_harmonic(20, 10))
+
+
+def _indicator(tmp_path, phi_deg, p):
+    """The example with its Wiebe cycle replaced by an indicator file of p(phi_deg) [Pa]."""
+    (tmp_path / "ind.csv").write_text("crank_deg,pressure_MPa\n" + "".join(f"{a:.6f},{b / 1e6:.9f}\n"
+                                                                           for a, b in zip(phi_deg, p)))
+    text = example_text()
+    text = text.replace(text[text.index("# Without a pressure_file"):text.index("[output]")], "")
+    return text.replace('# pressure_file = "indicator.csv"', 'pressure_file = "ind.csv"')
+
+
+def _wiebe(phi_deg):
+    return pressure.wiebe_pressure(np.radians(phi_deg), pressure.WiebeCycle(10.0, 950.0), 0.080, 0.0385714, 0.2857, 4)
+
+
+def test_a_whole_cycle_file_runs(tmp_path):
+    phi = np.arange(0.0, 720.0, 1.0)
+    f = tmp_path / "spec.toml"
+    f.write_text(_indicator(tmp_path, phi, _wiebe(phi)))
+    assert CliRunner().invoke(main, ["validate", str(f)]).exit_code == 0
+
+
+def test_a_pressure_file_over_half_the_cycle_is_refused(tmp_path, refused):
+    """A four-stroke file of 0-360 deg only: interpolating across 360-720 gave -816 J of indicated work."""
+    phi = np.arange(0.0, 361.0, 1.0)
+    out = refused(_indicator(tmp_path, phi, _wiebe(phi)), "run")
+    assert "crank.pressure_file:" in out and "a gap of 360 deg; allowed at most 60 deg" in out
+
+
+def test_a_pressure_file_from_firing_tdc_is_refused(tmp_path, refused):
+    """The same cycle counted from the firing TDC peaks near 0 instead of 360 deg."""
+    phi = np.arange(0.0, 720.0, 1.0)
+    out = refused(_indicator(tmp_path, phi, _wiebe(phi + 360.0)))
+    assert "the pressure peaks at crank_deg = " in out and "shift the angles" in out
+
+
+@pytest.mark.parametrize("volumes,message", [
+    (np.full(40, 300.0), "the volume changes direction 0 times; a 4-stroke cycle needs 4 monotone branches"),
+    (np.concatenate([np.linspace(45, 430, 20), np.linspace(430, 45, 20)]), "changes direction 1 times"),
+    (np.concatenate([np.linspace(45, 900, 10), np.linspace(900, 45, 10)] * 2), "is outside the cylinder volume"),
+])
+def test_bad_p_v_files_are_refused(tmp_path, refused, volumes, message):
+    (tmp_path / "pv.csv").write_text("volume_cm3,pressure_MPa\n" + "".join(f"{v:g},0.5\n" for v in volumes))
+    text = _indicator(tmp_path, [0.0], [1e5]).replace('pressure_file = "ind.csv"', 'pressure_file = "pv.csv"')
+    out = refused(text)
+    assert "crank.pressure_file:" in out and message in out
