@@ -181,13 +181,14 @@ def test_a_throat_no_spring_can_serve_is_refused(refused):
 
 
 def test_a_pair_without_room_for_the_inner_spring_exits_2(refused):
-    """Seed 000's polydyne example (a nested pair) with an 11.04 mm throat: the outer spring leaves an outside
+    """Seed 000's polydyne example (a nested pair) with an 11.04 mm throat and 5 mm lift: the outer spring leaves an outside
     diameter of 4.7 mm for the inner one, less than the smallest spring of the series (D = 3 x 2.8 = 8.4 mm, seed
     000 work 6); the run stops with exit 2 and one message, writing nothing."""
     from pathlib import Path
 
     text = (Path(__file__).parent.parent / "examples" / "seed000-polydyne.toml").read_text()
-    text = text.replace("throat_diameter_mm = 36.8", "throat_diameter_mm = 11.04")
+    text = text.replace("throat_diameter_mm = 36.8", "throat_diameter_mm = 11.04").replace("max_lift_mm = 10.0",
+                                                                                           "max_lift_mm = 5.0")
     for command in ("validate", "run"):
         assert "valves.intake.spring: no spring of the wire series fits inside the outer spring" in \
                refused(text, command)
