@@ -18,6 +18,7 @@ from ..spec import SpecError, kurz_phi3_deg, main_half_angle_deg
 from ..springs import NoSpringFits
 from ..units import DEG, MM, rad_to_deg, rpm_to_rad_s
 from ..laws.measured import CHECKING_HEIGHTS_MM, TableLaw, read_lift_table
+from ..laws.takeup import ClearanceTakeUp
 from .drive import drive_stage, reduced_mass
 
 ACCELERATION_LIMITS = (3500.0, -1500.0)
@@ -44,6 +45,12 @@ RHO_MIN_MM = 2.0
 
 PRESSURE_ANGLE_MAX_DEG = 30.0
 """Largest recommended pressure angle of a roller follower [deg] (seed 004, via spec section 2)."""
+
+SEATING_VELOCITY_MAX = 0.5
+"""Working limit of the valve's seating velocity at rated speed [m/s] (no primary source; spec
+methods-seeds-002-004.md, section 2: 0.3-0.5 m/s)."""
+
+SEATING_VELOCITY_SOURCE = "spec/methods-seeds-002-004.md, section 2 (working guidance 0.3-0.5 m/s; seed 000, work 2)"
 
 THROAT_AREA_SHARE_RANGE = (0.25, 0.40)
 """Inlet plus exhaust throat areas as a share of the piston area (seed 000, work 1)."""
@@ -104,7 +111,10 @@ def build_side(valve, strokes=4, rated_speed=None):
     """The lift law of a valve specification, in SI (tappet side).
 
     Laws with a ramp take up the clearance on it (ramp height = clearance); the arc cams
-    (three-arc, tangent) and the polynomial laws without a ramp start on the base circle.
+    (three-arc, tangent) and the polynomial laws without a ramp lift the valve lift plus the
+    clearance from a heel circle of radius r0 - h0 and take the clearance up on their flanks
+    (:class:`~valvetrain.laws.takeup.ClearanceTakeUp`), so that with any law the valve
+    reaches ``max_lift_mm`` and starts to move at radius r0.
     The dynamic cam's ramp ends where the drive force reaches the preload; its design speed
     defaults to ``rated_speed`` [rpm] and its mass is the reduced mass at the valve without
     the spring (unless the masses give ``spring_kg``).
@@ -142,13 +152,20 @@ def build_side(valve, strokes=4, rated_speed=None):
     if cam.law == "combined":
         return CombinedLaw(lift, h0, velocity, [(seg.shape, seg.length_deg * DEG) for seg in cam.segments],
                            [(r.segment - 1, r.value) for r in cam.ratios], **ramp)
-    if cam.law in ("polydyne", "polynomial"):
-        if cam.ramp:
-            ramp.update(ramp_height=h0, ramp_velocity=velocity)
-        else:
-            ramp = {}
-        if cam.law == "polydyne":
-            return PolydyneLaw(lift, half, cam.p, cam.q, cam.r, cam.s, **ramp)
+    if getattr(cam, "ramp", False):
+        ramp.update(ramp_height=h0, ramp_velocity=velocity)
+        return _rampless(cam, lift, half, r0, **ramp)
+    if h0 == 0.0:
+        return _rampless(cam, lift, half, r0)
+    # no ramp: the flanks take up the clearance; the heel circle lies h0 below r0 as with a ramp
+    return ClearanceTakeUp(_rampless(cam, lift + h0, half, r0 - h0), h0)
+
+
+def _rampless(cam, lift, half, r0, **ramp):
+    """Polydyne, polynomial and arc cams of a lift above their base circle of radius r0 [m]."""
+    if cam.law == "polydyne":
+        return PolydyneLaw(lift, half, cam.p, cam.q, cam.r, cam.s, **ramp)
+    if cam.law == "polynomial":
         return PolynomialLaw(lift, half, cam.exponents, **ramp)
     if cam.law == "three_arc":
         if cam.nose_radius_mm is not None:
@@ -281,8 +298,9 @@ def design_valve(name, v, spec):
     v1 = flow.throat_velocity(c_p, bore, d_throat, v.count)
     v2 = flow.curtain_velocity(c_p, bore, f_max, v.count)
 
-    # 2. extremes of the law (follower side)
+    # 2. extremes of the law (follower side) and the valve's velocity as it leaves and meets its seat
     ext = law.extremes(omega)
+    seat_velocity = i_k * omega * np.abs(law.derivatives(np.array([law.valve_opens, law.valve_closes]))[1])
 
     # 3. time-area over the valve's own stroke and over the whole opening
     stroke_crank = (0.0, np.pi) if v.kind == "intake" else (-np.pi, 0.0)
@@ -338,6 +356,8 @@ def design_valve(name, v, spec):
         "ramp_deg": rad_to_deg(law.ramp_angle),
         "ramp_height_mm": law.ramp_height / MM,
         "tappet_lift_mm": law.lift_max / MM,
+        "valve_opening_velocity_m_s": seat_velocity[0],
+        "valve_seating_velocity_m_s": seat_velocity[1],
         "event_cam_deg": rad_to_deg(law.end - law.start),
         "nose_crank_deg": rad_to_deg(nose),
         "camshaft_speed_rad_s": omega,
@@ -391,6 +411,10 @@ def design_valve(name, v, spec):
         (o_lo, o_hi), (c_lo, c_hi) = TIMING_RANGES[v.kind]
         found += check_range("opening advance", opens, o_lo, o_hi, source="seed 000, work 2", unit="crank deg")
         found += check_range("closing lag", closes, c_lo, c_hi, source="seed 000, work 2", unit="crank deg")
+    if isinstance(law, ClearanceTakeUp):
+        found.append(Finding("clearance taken up without a ramp: valve seating velocity", seat_velocity[1],
+                             f"a ramp that takes up clearance_mm = {v.clearance_mm:g} (seating <= "
+                             f"{SEATING_VELOCITY_MAX:g} m/s)", SEATING_VELOCITY_SOURCE, "m/s"))
     found += check_range("seat angle", v.seat_angle_deg, *SEAT_ANGLE_USUAL[v.kind],
                          source="seed 000, work 1 (usually 30 deg inlet, 45 deg exhaust)", unit="deg")
     found += check_range("clearance h0", v.clearance_mm, *CLEARANCE_RANGES[v.kind], source="seed 000, work 2",
