@@ -267,3 +267,18 @@ def test_specific_mass_estimate():
     m = res.to_dict()["valves"]["intake"]["masses"]
     assert m["at_valve_kg"] == pytest.approx(450 * np.pi * 0.0368**2 / 4, rel=1e-12)
     assert m["at_tappet_kg"] == pytest.approx(m["at_valve_kg"] * 1.6**2)
+
+
+def test_two_valves_per_cylinder():
+    """count = 2: the charge passes two curtains, so V''' (seed 000 eq. 1.4) and v_vp (eq. 4.3) are half those of one
+    valve, and the throat/bore range of one inlet valve (work 1) is applied to the equivalent diameter sqrt(2) d."""
+    one = run(example_spec())
+    two = run(_variant([("count = 1                    # same", "count = 2 # same")]))
+    f1, f2 = one.to_dict()["valves"]["intake"]["flow"], two.to_dict()["valves"]["intake"]["flow"]
+    assert f2["V3_m_s"] == pytest.approx(f1["V3_m_s"] / 2.0, rel=1e-12)
+    assert f2["mean_charge_velocity_m_s"] == pytest.approx(f1["mean_charge_velocity_m_s"] / 2.0, rel=1e-12)
+    assert f2["mean_charge_velocity_m_s"] == pytest.approx(f2["V3_m_s"], rel=1e-12)
+    # sqrt(2) x 36.8 / 80 = 0.6505, above the hemispherical chamber's 0.46-0.52
+    throat = [w for w in two.warnings if "throat diameter" in w.quantity]
+    assert [(w.quantity, round(w.value, 4)) for w in throat] == [
+        ("intake: equivalent throat diameter sqrt(2) d / bore", 0.6505)]

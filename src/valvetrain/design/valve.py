@@ -309,7 +309,7 @@ def design_valve(name, v, spec):
     ta_stroke = flow.time_area(area, window[0], window[1], omega, bp)
     ta_open = flow.time_area(area, law.valve_opens, law.valve_closes, omega, bp)
     v3 = flow.time_area_velocity(swept, ta_stroke, v.count)
-    v_charge = flow.mean_charge_velocity(swept, ta_stroke)
+    v_charge = flow.mean_charge_velocity(swept, ta_stroke, v.count)
     xi = flow.fullness(valve_lift, law.valve_opens, law.valve_closes, lift_valve, bp)
 
     # 4. the lift table
@@ -397,7 +397,8 @@ def design_valve(name, v, spec):
 
     found = law.checks()
     found += flow.check_flow(v.kind, bore=bore, throat_diameter=d_throat, max_lift=lift_valve, v1=v1, v2=v2,
-                             v3=v3, charge_velocity=v_charge, engine_type=eng.type, chamber=eng.chamber)
+                             v3=v3, charge_velocity=v_charge, engine_type=eng.type, chamber=eng.chamber,
+                             count=v.count)
     found += check_range("max tappet acceleration", ext.max_acceleration, high=ACCELERATION_LIMITS[0],
                          source="seed 000, work 2 (positive 1500...3500 m/s2)", unit="m/s2")
     found += check_range("min tappet acceleration", ext.min_acceleration, low=ACCELERATION_LIMITS[1],
