@@ -50,3 +50,17 @@ def test_compare_refuses_bad_files(tmp_path):
     result = CliRunner().invoke(main, ["compare", str(f), "--out", str(tmp_path / "c")])
     assert result.exit_code == 2
     assert not (tmp_path / "c").exists()
+
+
+def test_files_of_the_same_name_are_all_compared(tmp_path):
+    """v1/engine.toml and v2/engine.toml: each valve of each file is a column (one was silently dropped)."""
+    for d in ("v1", "v2"):
+        (tmp_path / d).mkdir()
+        (tmp_path / d / "engine.toml").write_text((EXAMPLES / "seed000-appendix-kurz.toml").read_text())
+    out = tmp_path / "cmp"
+    files = [str(tmp_path / "v1" / "engine.toml"), str(tmp_path / "v2" / "engine.toml"),
+             str(tmp_path / "v2" / "engine.toml")]
+    result = CliRunner().invoke(main, ["compare", *files, "--out", str(out)])
+    assert result.exit_code == 0, result.output
+    entries = json.loads((out / "compare.json").read_text())["entries"]
+    assert sorted(entries) == ["v1/engine:intake", "v2/engine (1):intake", "v2/engine (2):intake"]

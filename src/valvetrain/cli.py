@@ -82,15 +82,13 @@ def validate(file):
 def compare(files, out):
     """Compare the cams of every valve of FILES side by side (time-area, fullness, kinematics, curvature,
     contact stress, required spring); writes compare.csv, compare.json and overlaid plots."""
-    from pathlib import Path
-
     from .compare import METRICS, write_comparison
 
     designs = {}
-    for f in files:
+    for f, label in zip(files, _file_labels(files), strict=True):
         res = _design(_load(f))
         for name, v in res.valves.items():
-            designs[f"{Path(f).stem}:{name}" if len(files) > 1 else name] = v
+            designs[f"{label}:{name}" if len(files) > 1 else name] = v
     if not designs:
         click.echo("error: the files define no valves to compare", err=True)
         sys.exit(2)
@@ -103,6 +101,19 @@ def compare(files, out):
     for n in notes:
         click.echo(f"note: {n}")
     click.echo(f"wrote {out}/ (compare.csv, compare.json, plots/)")
+
+
+def _file_labels(files):
+    """Short distinct labels of files: the name without suffix, with as many parent folders as tell them apart
+    (``v1/engine`` and ``v2/engine``); the same file given twice is counted (``engine (2)``)."""
+    from pathlib import Path
+
+    parts = [Path(f).with_suffix("").parts for f in files]
+    depth = 1
+    while len({p[-depth:] for p in parts}) < len(set(parts)):
+        depth += 1
+    labels = ["/".join(p[-depth:]) for p in parts]
+    return [lab if labels.count(lab) == 1 else f"{lab} ({labels[:i + 1].count(lab)})" for i, lab in enumerate(labels)]
 
 
 @main.command()
