@@ -128,3 +128,17 @@ def test_exported_lift_table_reads_back(written):
     assert np.abs(lift - v.law.lift(theta) * 1e3).max() < 1e-6
     law = TableLaw(np.radians(angle), lift * 1e-3)
     assert np.degrees(law.centre) * 2 == pytest.approx(116.0, abs=0.01)  # nose at 116 crank deg (Table P1)
+
+
+def test_dxf_is_reproducible(tmp_path):
+    """Two runs in fresh interpreters with different hash seeds write the same DXF bytes (no clock, no random GUID)."""
+    import os
+    import subprocess
+    import sys
+
+    code = ("import sys; from valvetrain.spec import example_spec; from valvetrain.design import run; "
+            "from valvetrain.export import write_dxf; write_dxf(sys.argv[1], run(example_spec()).valves['intake'])")
+    for seed in ("1", "2"):
+        subprocess.run([sys.executable, "-c", code, str(tmp_path / f"{seed}.dxf")], check=True,
+                       env={**os.environ, "PYTHONHASHSEED": seed})
+    assert (tmp_path / "1.dxf").read_bytes() == (tmp_path / "2.dxf").read_bytes()

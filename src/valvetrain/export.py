@@ -181,7 +181,21 @@ def write_dxf(path, valve):
     circle), ``RAMP_BOUNDARIES`` and ``SEGMENT_BOUNDARIES`` (radial lines to the ends of
     the ramps and to the other junctions of the lift-law segments), ``AXES`` (centre lines;
     +y is the nose direction).
+
+    The file is reproducible: ezdxf's fixed metadata (creation date, GUIDs) replaces the clock
+    and random identifiers, so the same design writes the same bytes.
     """
+    import ezdxf
+
+    fixed = ezdxf.options.write_fixed_meta_data_for_testing
+    ezdxf.options.write_fixed_meta_data_for_testing = True
+    try:
+        _dxf_document(valve).saveas(path)
+    finally:
+        ezdxf.options.write_fixed_meta_data_for_testing = fixed
+
+
+def _dxf_document(valve):
     import ezdxf
     from ezdxf import units
 
@@ -203,7 +217,7 @@ def write_dxf(path, valve):
         k = int(np.argmin(np.abs(valve.contour_angle - a)))
         layer = "RAMP_BOUNDARIES" if any(np.isclose(a, r) for r in ramps) else "SEGMENT_BOUNDARIES"
         msp.add_line((0.0, 0.0), tuple(pts[k]), dxfattribs={"layer": layer})
-    doc.saveas(path)
+    return doc
 
 
 def results_json(results):
