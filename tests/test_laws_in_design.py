@@ -129,3 +129,15 @@ def test_train_natural_frequency_and_harmonic_rule():
     assert m["harmonic_limit"] == pytest.approx(law.alpha * omega_n / (np.pi * omega), rel=1e-12)
     flagged = any(w.quantity == "intake: harmonic order N of the cam" for w in res.warnings)
     assert flagged == (24 > m["harmonic_limit"])
+
+
+def test_tangent_cam_lift_table_has_no_inf(tmp_path):
+    """The straight flanks' infinite radius is an empty rho_mm cell (documented), never 'inf' or 'nan'."""
+    import csv
+
+    from valvetrain.export import lift_table_columns, write_csv
+
+    write_csv(tmp_path / "t.csv", lift_table_columns(run(_spec("tangent")).valves["intake"].table))
+    rows = list(csv.DictReader((tmp_path / "t.csv").open()))
+    assert any(r["rho_mm"] == "" for r in rows)
+    assert not any(c in ("inf", "-inf", "nan") for r in rows for c in r.values())

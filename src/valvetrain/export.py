@@ -23,7 +23,7 @@ LIFT_COLUMNS = [
     ("valve_lift_mm", "valve lift [mm]"),
     ("curtain_area_mm2", "valve curtain area [mm2]"),
     ("time_area_mm2_s", "running time-area from the start of the event [mm2 s]"),
-    ("rho_mm", "radius of curvature of the cam profile [mm]"),
+    ("rho_mm", "radius of curvature of the cam profile [mm]; empty on a straight flank (infinite radius)"),
     ("pressure_angle_deg", "pressure angle (roller follower) [deg]"),
     ("contact_offset_mm", "contact point off the follower axis (flat follower) [mm]"),
 ]
@@ -99,11 +99,17 @@ def two_stroke_speed_columns(ports):
 
 
 def _cell(x):
-    return x if isinstance(x, str) else f"{float(x):.10g}"
+    if isinstance(x, str):
+        return x
+    x = float(x)
+    return f"{x:.10g}" if np.isfinite(x) else ""
 
 
 def write_csv(path, columns):
-    """Write equal-length columns (a dict name -> sequence) as a CSV file with a header row."""
+    """Write equal-length columns (a dict name -> sequence) as a CSV file with a header row.
+
+    Numbers are written with 10 significant digits; a quantity that is not finite (the infinite
+    radius of curvature of a straight flank) is an empty cell, never ``inf`` or ``nan``."""
     names = list(columns)
     with open(path, "w", newline="", encoding="utf-8") as fh:
         w = csv.writer(fh)
