@@ -166,6 +166,22 @@ def test_undercut_is_a_warning_not_an_error():
     assert any("undercut" in w.quantity for w in res.warnings)
 
 
+def test_an_undercut_profile_is_not_exported_for_manufacture(tmp_path):
+    """An undercut profile cannot be made: the run shows it (report, plots, lift table) but writes no contour, DXF
+    or manufacturing table for it, and says so."""
+    from click.testing import CliRunner
+
+    from valvetrain.cli import main
+
+    f = tmp_path / "e.toml"
+    f.write_text(example_text().replace("base_radius_mm = 20.0", "base_radius_mm = 8.0"))
+    result = CliRunner().invoke(main, ["run", str(f), "--out", str(tmp_path / "d")])
+    assert result.exit_code == 0, result.output
+    assert "refused: valves.intake: the cam profile is undercut (rho_min = -" in result.output
+    assert sorted(p.name for p in (tmp_path / "d" / "contour").iterdir()) == []
+    assert (tmp_path / "d" / "tables" / "intake_lift.csv").is_file()
+
+
 @settings(max_examples=15, deadline=None)
 @given(st.floats(20.0, 30.0), st.floats(40.0, 78.0), st.floats(0.15, 0.3), st.floats(0.008, 0.022),
        st.floats(1.5, 3.0))

@@ -59,6 +59,10 @@ def run(file, out, lang):
     results = _design(_load(file))
     write_outputs(results, out, lang)
     click.echo(f"wrote {out}/ (results.json, report.html, tables/, plots/, contour/)")
+    for name, v in results.valves.items():
+        if v.summary["cam"]["undercut"]:
+            click.echo(f"refused: valves.{name}: the cam profile is undercut (rho_min = {v.summary['cam']['rho_min_mm']:.4g}"
+                       " mm): no contour, DXF or manufacturing table was written for it")
     for w in results.warnings:
         click.echo(f"warning: {w.quantity} = {w.value:.6g} {w.unit}, recommended {w.range} ({w.source})".replace(
             "  ", " "))

@@ -263,6 +263,7 @@ def write_outputs(results, out, lang="en"):
         out/results.json
         out/tables/NAME_lift.csv, crank.csv, engine_torque.csv, two_stroke_ports.csv, two_stroke_time_area.csv
         out/contour/NAME.csv, NAME_polar.csv, NAME_cartesian.csv, NAME_lift.csv, NAME.dxf
+                    (not for a valve whose cam profile is undercut: it cannot be made)
         out/plots/NAME_kinematics.png, NAME_contour.png, NAME_time_area.png, NAME_curvature.png,
                   NAME_spring.png, crank_forces.png, crank_torque.png, crank_pin_polar.png,
                   two_stroke_ports.png, two_stroke_time_area.png
@@ -276,6 +277,8 @@ def write_outputs(results, out, lang="en"):
         (tmp / "results.json").write_text(results_json(results), encoding="utf-8")
         for name, v in results.valves.items():
             write_csv(tmp / "tables" / f"{name}_lift.csv", lift_table_columns(v.table))
+            if v.summary["cam"]["undercut"]:
+                continue  # no follower can trace an undercut profile: nothing is written for its manufacture
             write_csv(tmp / "contour" / f"{name}.csv", contour_columns(v))
             step = results.spec.output.export_step_deg
             write_csv(tmp / "contour" / f"{name}_polar.csv", polar_contour_columns(v, step))
