@@ -1,0 +1,198 @@
+"""The output folder (``--out``): which folders a run may replace, and replacing one atomically.
+
+A folder that a run writes carries :data:`MARKER`, a list of the files the run wrote.  A
+folder may become an output folder if it is absent, holds no files, or holds only files
+that its marker lists; ``force`` lifts that last condition but never the others: the
+folder must not be, or contain, the current folder or a file the run reads.
+
+The new contents are written into a temporary sibling folder
+``.NAME.valvetrain-PID.XXXXXXXX.tmp`` and put in place of the old folder by two renames.
+"""
+
+from contextlib import contextmanager
+import os
+from pathlib import Path
+import secrets
+import shutil
+
+from . import __version__
+
+MARKER = ".valvetrain-output"
+"""File in every output folder: a comment line, then the path of every file the run wrote, one a line."""
+
+KERNEL_FILE_SYSTEMS = (Path("/proc"), Path("/sys"))
+"""Trees that hold no user files; a folder cannot be written there."""
+
+
+class OutFolderError(ValueError):
+    """An output folder that a run may not write; the message is one line naming the folder."""
+
+
+def check_out(out, inputs=(), force=False):
+    """Check that ``out`` may become an output folder, before anything is computed or written.
+
+    Parameters
+    ----------
+    out : str or Path
+        The output folder as given.
+    inputs : iterable of str or Path
+        Files the run reads (the specification and the tables it names); ``out`` must not
+        contain them, even with ``force``.
+    force : bool
+        Allow replacing a folder that holds files no valvetrain run wrote.
+
+    Returns
+    -------
+    Path
+        ``out`` made absolute, with symbolic links resolved.
+
+    Raises
+    ------
+    OutFolderError
+        The message names ``out``, what is wrong and what is allowed.
+    """
+    path = Path(out).resolve()
+    problem = (location_problem(path) or kind_problem(path) or input_problem(path, inputs)
+               or (None if force else foreign_problem(path)))
+    if problem:
+        raise OutFolderError(f"{out}: {problem}")
+    return path
+
+
+def location_problem(path):
+    """Why a folder cannot be made at the absolute ``path``, or None."""
+    cwd = Path.cwd().resolve()
+    if path == cwd or path in cwd.parents:
+        return "is the current folder or contains it; allowed: a folder outside the current one"
+    for tree in KERNEL_FILE_SYSTEMS:
+        if path == tree or tree in path.parents:
+            return f"lies in {tree}, a kernel file system; allowed: a folder on a disk"
+    parent = next(p for p in path.parents if os.path.lexists(p))
+    if not parent.is_dir():
+        return f"{parent} is a file; allowed: a path whose every parent is a folder"
+    if not os.access(parent, os.W_OK | os.X_OK):
+        return f"cannot create a folder in {parent} (no write permission); allowed: a folder where you can write"
+    return None
+
+
+def kind_problem(path):
+    """Why what exists at ``path`` cannot be replaced by a folder (a file, a mount point), or None."""
+    if os.path.lexists(path) and not path.is_dir():
+        return "is a file; allowed: a folder (new, empty or a previous valvetrain output)"
+    if path.is_dir() and path.is_mount():
+        return "is a mount point; allowed: a folder inside it"
+    return None
+
+
+def input_problem(path, inputs):
+    """Why replacing ``path`` would delete an input file, or None."""
+    for f in inputs:
+        real = Path(f).resolve()
+        if real == path or path in real.parents:
+            return (f"contains the input file {f}, which replacing the folder would delete; allowed: a folder that "
+                    "holds no input file (even with --force)")
+    return None
+
+
+def foreign_problem(path):
+    """Why replacing the folder ``path`` would delete files no valvetrain run wrote, or None."""
+    if not path.is_dir():
+        return None
+    try:
+        foreign = first_foreign_file(path)
+    except OSError as exc:
+        return f"cannot be read ({exc.strerror}); allowed: a folder whose files can be listed, or pass --force"
+    if foreign is None:
+        return None
+    return (f"holds {foreign}, which valvetrain did not write; allowed: a new or empty folder or a previous valvetrain "
+            "output; choose another folder or pass --force to replace this one and everything in it")
+
+
+def first_foreign_file(folder):
+    """The first file (or link) under ``folder`` that its :data:`MARKER` does not list, as a relative path, or None.
+
+    Folders are not files: a folder that holds only empty folders has no foreign file.
+    The walk stops at the first foreign file, so a large unrelated folder is not read through.
+    """
+    written = written_files(folder) | {MARKER}
+    for root, dirs, files in os.walk(folder, onerror=_raise):
+        rel = Path(root).relative_to(folder)
+        links = [d for d in dirs if os.path.islink(os.path.join(root, d))]
+        for name in files + links:
+            if (rel / name).as_posix() not in written:
+                return (rel / name).as_posix()
+    return None
+
+
+def _raise(exc):
+    raise exc
+
+
+def written_files(folder):
+    """The relative paths that ``folder``'s :data:`MARKER` lists (empty if it has none)."""
+    try:
+        text = (Path(folder) / MARKER).read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError):
+        return set()
+    return {line for line in text.splitlines() if line and not line.startswith("#")}
+
+
+def marker_text(folder):
+    """The :data:`MARKER` of a completed ``folder``: every file under it, relative, sorted."""
+    paths = sorted(Path(root, name).relative_to(folder).as_posix()
+                   for root, _, files in os.walk(folder) for name in files)
+    return (f"# written by valvetrain {__version__}; `valvetrain run/compare --out` replaces this folder when every "
+            "file in it is listed below\n" + "".join(f"{p}\n" for p in paths))
+
+
+@contextmanager
+def atomic_folder(out, inputs=(), force=False):
+    """Yield a new temporary sibling folder of ``out`` and put it in place of ``out`` when the block completes.
+
+    ``out`` is checked by :func:`check_out` (with ``inputs`` and ``force``) before the
+    block and again just before the new folder is put in place.  A failure or an interruption inside the
+    block removes the temporary folder and leaves ``out`` as it was (absent, or the previous
+    contents).  The folder gets the permissions of the user's umask, like any new folder.
+    """
+    out = check_out(out, inputs, force)
+    out.parent.mkdir(parents=True, exist_ok=True)
+    tmp = make_temp(out)
+    try:
+        yield tmp
+        (tmp / MARKER).write_text(marker_text(tmp), encoding="utf-8")
+        check_out(out, inputs, force)
+        swap(tmp, out)
+    finally:
+        shutil.rmtree(tmp, ignore_errors=True)
+
+
+def temp_name(out):
+    """A fresh name for a temporary sibling of ``out``, carrying this process's id."""
+    return out.parent / f".{out.name}.valvetrain-{os.getpid()}.{secrets.token_hex(4)}.tmp"
+
+
+def make_temp(out):
+    """Create a temporary sibling folder of ``out`` (mode 0777 less the umask, as ``mkdir`` makes it)."""
+    while True:
+        path = temp_name(out)
+        try:
+            path.mkdir()
+            return path
+        except FileExistsError:
+            continue
+
+
+def swap(new, out):
+    """Put the folder ``new`` at ``out``; what was at ``out`` (if anything) is then at ``new``, to be removed."""
+    if not os.path.lexists(out):
+        os.rename(new, out)
+    else:
+        aside = temp_name(out)
+        os.rename(out, aside)
+        try:
+            os.rename(new, out)
+        except BaseException:
+            os.rename(aside, out)
+            raise
+        os.rename(aside, new)
+

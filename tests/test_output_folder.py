@@ -1,0 +1,213 @@
+"""The output folder (issue 9, item 1): ``--out`` never deletes a file that a valvetrain run did not write, refuses
+unusable paths before computing, replaces a previous output and follows the umask."""
+
+import json
+import os
+from pathlib import Path
+import shutil
+import subprocess
+import sys
+
+from click.testing import CliRunner
+import pytest
+
+import valvetrain
+from valvetrain.cli import main
+from valvetrain.outfolder import MARKER, OutFolderError, atomic_folder, check_out, written_files
+from valvetrain.spec import example_text
+
+EXAMPLES = Path(__file__).parents[1] / "examples"
+SRC = str(Path(valvetrain.__file__).parents[1])
+"""The package under test, for the command run as a separate process."""
+
+
+def command(tmp_path, *args):
+    """``python -m valvetrain ARGS`` as a separate process in ``tmp_path`` (the package under test)."""
+    return subprocess.Popen([sys.executable, "-m", "valvetrain", *args], cwd=tmp_path, text=True,
+                            env={**os.environ, "PYTHONPATH": SRC}, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+
+
+@pytest.fixture(scope="module")
+def previous(tmp_path_factory):
+    """A previous output of the built-in example (English report)."""
+    folder = tmp_path_factory.mktemp("previous")
+    proc = command(folder, "run", "--out", "design")
+    _, err = proc.communicate(timeout=120)
+    assert proc.returncode == 0, err
+    return folder / "design"
+
+
+def listing(folder):
+    """Every file under ``folder`` with its content."""
+    return {p.relative_to(folder).as_posix(): p.read_bytes() for p in sorted(folder.rglob("*")) if p.is_file()}
+
+
+def hidden(folder, name):
+    """The hidden siblings ``.NAME.*`` of an output folder (temporary folders)."""
+    return sorted(p.name for p in folder.glob(f".{name}.*"))
+
+
+def complete(out):
+    """``out`` holds a whole output: exactly the files its marker lists, results.json readable, report.html."""
+    files = {p.relative_to(out).as_posix() for p in out.rglob("*") if p.is_file()} - {MARKER}
+    assert files == written_files(out)
+    assert "valves" in json.loads((out / "results.json").read_text(encoding="utf-8"))
+    assert (out / "report.html").stat().st_size > 0
+
+
+def write_folder(out, **options):
+    """A small output written by :func:`atomic_folder` (no design computed)."""
+    with atomic_folder(out, **options) as tmp:
+        (tmp / "plots").mkdir()
+        (tmp / "results.json").write_text('{"valves": {}}')
+        (tmp / "report.html").write_text("<html></html>")
+
+
+@pytest.fixture
+def no_design(monkeypatch):
+    """The design must not be computed: a refusal comes before it."""
+    import valvetrain.design
+
+    monkeypatch.setattr(valvetrain.design, "run", lambda spec: pytest.fail("the design was computed"))
+
+
+def foreign_folder(tmp_path):
+    """``docs/``: a folder of the user's files, one of them in a subfolder."""
+    docs = tmp_path / "docs"
+    (docs / "sub").mkdir(parents=True)
+    (docs / "notes.txt").write_text("mine")
+    (docs / "sub" / "data.csv").write_text("1,2\n")
+    return docs
+
+
+@pytest.mark.parametrize("args", [["run"], ["compare", str(EXAMPLES / "seed000-appendix-kurz.toml")]],
+                         ids=["run", "compare"])
+def test_a_folder_of_other_files_is_refused(tmp_path, no_design, args):
+    docs = foreign_folder(tmp_path)
+    before = listing(docs)
+    result = CliRunner().invoke(main, [*args, "--out", str(docs)])
+    assert result.exit_code == 2
+    assert result.output.splitlines() == [f"error: --out {docs}: holds notes.txt, which valvetrain did not write; "
+                                          "allowed: a new or empty folder or a previous valvetrain output; choose "
+                                          "another folder or pass --force to replace this one and everything in it"]
+    assert listing(docs) == before
+    assert hidden(tmp_path, "docs") == []
+
+
+def test_a_file_added_to_a_previous_output_is_kept(tmp_path, no_design, previous):
+    """A file the user put into an output folder is not the run's: the folder is refused like a foreign one."""
+    out = tmp_path / "design"
+    shutil.copytree(previous, out)
+    (out / "tables" / "my-notes.txt").write_text("mine")
+    result = CliRunner().invoke(main, ["run", "--out", str(out)])
+    assert result.exit_code == 2
+    assert "holds tables/my-notes.txt, which valvetrain did not write" in result.output
+    assert (out / "tables" / "my-notes.txt").read_text() == "mine"
+
+
+def test_force_replaces_a_folder_of_other_files(tmp_path):
+    docs = foreign_folder(tmp_path)
+    result = CliRunner().invoke(main, ["run", "--out", str(docs), "--force"])
+    assert result.exit_code == 0, result.output
+    assert not (docs / "notes.txt").exists()
+    complete(docs)
+    assert hidden(tmp_path, "docs") == []
+
+
+def test_an_empty_folder_is_used(tmp_path):
+    out = tmp_path / "empty"
+    (out / "nothing-here").mkdir(parents=True)  # folders only: no file to lose
+    write_folder(out)
+    complete(out)
+
+
+def test_force_never_deletes_the_specification(tmp_path, no_design):
+    docs = foreign_folder(tmp_path)
+    spec = docs / "engine.toml"
+    spec.write_text(example_text())
+    result = CliRunner().invoke(main, ["run", str(spec), "--out", str(docs), "--force"])
+    assert result.exit_code == 2
+    assert result.output.splitlines() == [f"error: --out {docs}: contains the input file {spec}, which replacing the "
+                                          "folder would delete; allowed: a folder that holds no input file (even "
+                                          "with --force)"]
+    assert spec.read_text() == example_text()
+
+
+def test_force_never_deletes_a_table_the_specification_reads(tmp_path, no_design, monkeypatch):
+    """examples/measured-lobe.toml reads data/measured-intake-lobe.csv: --out data --force is refused."""
+    shutil.copytree(EXAMPLES / "data", tmp_path / "data")
+    shutil.copy(EXAMPLES / "measured-lobe.toml", tmp_path / "lobe.toml")
+    monkeypatch.chdir(tmp_path)
+    result = CliRunner().invoke(main, ["run", "lobe.toml", "--out", "data", "--force"])
+    assert result.exit_code == 2
+    assert f"contains the input file {tmp_path / 'data' / 'measured-intake-lobe.csv'}" in result.output
+    assert listing(tmp_path / "data") == listing(EXAMPLES / "data")
+
+
+BAD_OUT = [
+    (".", "is the current folder or contains it; allowed: a folder outside the current one"),
+    ("..", "is the current folder or contains it; allowed: a folder outside the current one"),
+    ("/proc/x", "lies in /proc, a kernel file system; allowed: a folder on a disk"),
+    ("file/sub", "{cwd}/file is a file; allowed: a path whose every parent is a folder"),
+    ("file", "is a file; allowed: a folder (new, empty or a previous valvetrain output)"),
+]
+
+
+@pytest.mark.parametrize("out,message", BAD_OUT)
+@pytest.mark.parametrize("cmd", ["run", "compare"])
+def test_an_unusable_out_is_refused_before_computing(tmp_path, monkeypatch, no_design, cmd, out, message):
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "file").write_text("not a folder")
+    spec = tmp_path / "spec.toml"
+    spec.write_text(example_text())
+    result = CliRunner().invoke(main, [cmd, str(spec), "--out", out, "--force"])
+    assert result.exit_code == 2
+    assert result.output.splitlines() == [f"error: --out {out}: {message.format(cwd=tmp_path)}"]
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["file", "spec.toml"]
+    assert (tmp_path / "file").read_text() == "not a folder"
+
+
+def test_a_folder_where_one_cannot_write_is_refused(tmp_path, monkeypatch):
+    """The tests may run as root, for whom every folder is writable: os.access is made to deny it."""
+    monkeypatch.setattr(os, "access", lambda path, mode: Path(path) != tmp_path)
+    with pytest.raises(OutFolderError) as err:
+        check_out(tmp_path / "design")
+    assert str(err.value) == (f"{tmp_path / 'design'}: cannot create a folder in {tmp_path} (no write permission); "
+                              "allowed: a folder where you can write")
+
+
+@pytest.mark.parametrize("umask,mode", [(0o022, 0o755), (0o077, 0o700)])
+def test_the_folder_follows_the_umask(tmp_path, umask, mode):
+    old = os.umask(umask)
+    try:
+        write_folder(tmp_path / "design")
+    finally:
+        os.umask(old)
+    assert (tmp_path / "design").stat().st_mode & 0o777 == mode
+    assert (tmp_path / "design" / "plots").stat().st_mode & 0o777 == mode
+
+
+def test_a_rerun_replaces_a_previous_output(tmp_path, previous):
+    """A file of the previous output that the rerun does not write goes (a previous run with an exhaust valve)."""
+    out = tmp_path / "design"
+    shutil.copytree(previous, out)
+    (out / "tables" / "exhaust_lift.csv").write_text("written by a previous run with an exhaust valve")
+    with (out / MARKER).open("a", encoding="utf-8") as fh:
+        fh.write("tables/exhaust_lift.csv\n")
+    result = CliRunner().invoke(main, ["run", "--out", str(out), "--lang", "ru"])
+    assert result.exit_code == 0, result.output
+    assert not (out / "tables" / "exhaust_lift.csv").exists()
+    assert 'lang="ru"' in (out / "report.html").read_text(encoding="utf-8")
+    complete(out)
+    assert hidden(tmp_path, "design") == []
+
+
+def test_compare_replaces_a_previous_comparison(tmp_path):
+    out = tmp_path / "cmp"
+    for _ in range(2):
+        result = CliRunner().invoke(main, ["compare", str(EXAMPLES / "seed000-appendix-kurz.toml"), "--out", str(out)])
+        assert result.exit_code == 0, result.output
+    assert written_files(out) == {"compare.csv", "compare.json", "plots/compare_lift.png", "plots/compare_velocity.png",
+                                  "plots/compare_acceleration.png", "plots/compare_jerk.png"}
+    assert hidden(tmp_path, "cmp") == []
+
