@@ -1,5 +1,5 @@
 """The output folder (issue 9, item 1): ``--out`` never deletes a file that a valvetrain run did not write, refuses
-unusable paths before computing, replaces a previous output and follows the umask."""
+unusable paths before computing, replaces a previous output atomically and follows the umask."""
 
 import json
 import os
@@ -13,7 +13,7 @@ import pytest
 
 import valvetrain
 from valvetrain.cli import main
-from valvetrain.outfolder import MARKER, OutFolderError, atomic_folder, check_out, written_files
+from valvetrain.outfolder import MARKER, OutFolderError, atomic_folder, check_out, exchange, written_files
 from valvetrain.spec import example_text
 
 EXAMPLES = Path(__file__).parents[1] / "examples"
@@ -187,6 +187,28 @@ def test_the_folder_follows_the_umask(tmp_path, umask, mode):
     assert (tmp_path / "design" / "plots").stat().st_mode & 0o777 == mode
 
 
+@pytest.mark.skipif(sys.platform != "linux", reason="renameat2 is Linux's")
+def test_exchange_swaps_two_folders(tmp_path):
+    a, b = tmp_path / "a", tmp_path / "b"
+    a.mkdir()
+    b.mkdir()
+    (a / "x").write_text("in a")
+    (b / "y").write_text("in b")
+    assert exchange(a, b) is True
+    assert [p.name for p in a.iterdir()] == ["y"] and [p.name for p in b.iterdir()] == ["x"]
+
+
+@pytest.mark.skipif(sys.platform != "linux", reason="renameat2 is Linux's")
+def test_on_linux_the_folder_is_never_absent(tmp_path, monkeypatch, previous):
+    """The previous output is exchanged with the new one, not renamed away first (os.rename is not called)."""
+    out = tmp_path / "design"
+    shutil.copytree(previous, out)
+    monkeypatch.setattr(os, "rename", lambda *a: pytest.fail(f"os.rename{a}"))
+    write_folder(out)
+    assert written_files(out) == {"results.json", "report.html"}
+    assert hidden(tmp_path, "design") == []
+
+
 def test_a_rerun_replaces_a_previous_output(tmp_path, previous):
     """A file of the previous output that the rerun does not write goes (a previous run with an exhaust valve)."""
     out = tmp_path / "design"
@@ -198,6 +220,18 @@ def test_a_rerun_replaces_a_previous_output(tmp_path, previous):
     assert result.exit_code == 0, result.output
     assert not (out / "tables" / "exhaust_lift.csv").exists()
     assert 'lang="ru"' in (out / "report.html").read_text(encoding="utf-8")
+    complete(out)
+    assert hidden(tmp_path, "design") == []
+
+
+def test_without_rename_exchange_two_renames_replace_the_folder(tmp_path, monkeypatch, previous):
+    import valvetrain.outfolder
+
+    monkeypatch.setattr(valvetrain.outfolder, "exchange", lambda a, b: False)
+    out = tmp_path / "design"
+    shutil.copytree(previous, out)
+    write_folder(out)
+    assert written_files(out) == {"results.json", "report.html"}
     complete(out)
     assert hidden(tmp_path, "design") == []
 

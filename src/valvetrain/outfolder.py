@@ -5,11 +5,17 @@ folder may become an output folder if it is absent, holds no files, or holds onl
 that its marker lists; ``force`` lifts that last condition but never the others: the
 folder must not be, or contain, the current folder or a file the run reads.
 
-The new contents are written into a temporary sibling folder
-``.NAME.valvetrain-PID.XXXXXXXX.tmp`` and put in place of the old folder by two renames.
+The new contents are written into a temporary sibling folder and swapped with the old
+folder in one ``renameat2(RENAME_EXCHANGE)`` system call (Linux), so that ``out`` always
+holds either its old or its complete new contents; where the system cannot exchange, two
+renames do it, with a moment in which ``out`` is absent.  Temporary folders are named
+``.NAME.valvetrain-PID.XXXXXXXX.tmp``.
 """
 
 from contextlib import contextmanager
+import ctypes
+import errno
+from functools import cache
 import os
 from pathlib import Path
 import secrets
@@ -22,6 +28,12 @@ MARKER = ".valvetrain-output"
 
 KERNEL_FILE_SYSTEMS = (Path("/proc"), Path("/sys"))
 """Trees that hold no user files; a folder cannot be written there."""
+
+_RENAME_EXCHANGE = 2
+"""``renameat2`` flag: swap the two paths (linux/fs.h)."""
+
+_AT_FDCWD = -100
+"""``renameat2`` directory argument: paths relative to the current folder (linux/fcntl.h)."""
 
 
 class OutFolderError(ValueError):
@@ -186,7 +198,7 @@ def swap(new, out):
     """Put the folder ``new`` at ``out``; what was at ``out`` (if anything) is then at ``new``, to be removed."""
     if not os.path.lexists(out):
         os.rename(new, out)
-    else:
+    elif not exchange(new, out):
         aside = temp_name(out)
         os.rename(out, aside)
         try:
@@ -195,4 +207,34 @@ def swap(new, out):
             os.rename(aside, out)
             raise
         os.rename(aside, new)
+
+
+def exchange(a, b):
+    """Swap the paths ``a`` and ``b`` atomically; False where the system cannot.
+
+    Linux's ``renameat2(..., RENAME_EXCHANGE)`` (kernel 3.15, glibc 2.28) through ctypes:
+    Python's :mod:`os` has no ``renameat2``.  A file system or system without it gives
+    False; any other failure raises :class:`OSError`.
+    """
+    renameat2 = _renameat2()
+    if renameat2 is None:
+        return False
+    if renameat2(_AT_FDCWD, os.fsencode(a), _AT_FDCWD, os.fsencode(b), _RENAME_EXCHANGE) == 0:
+        return True
+    err = ctypes.get_errno()
+    if err in (errno.ENOSYS, errno.EINVAL, errno.ENOTSUP, errno.EOPNOTSUPP):
+        return False
+    raise OSError(err, os.strerror(err), str(a), None, str(b))
+
+
+@cache
+def _renameat2():
+    """The C library's ``renameat2``, or None where it has none."""
+    try:
+        fn = ctypes.CDLL(None, use_errno=True).renameat2
+    except (OSError, AttributeError, TypeError):
+        return None
+    fn.argtypes = [ctypes.c_int, ctypes.c_char_p, ctypes.c_int, ctypes.c_char_p, ctypes.c_uint]
+    fn.restype = ctypes.c_int
+    return fn
 
