@@ -187,6 +187,33 @@ def test_the_folder_follows_the_umask(tmp_path, umask, mode):
     assert (tmp_path / "design" / "plots").stat().st_mode & 0o777 == mode
 
 
+def dead_pid():
+    """The id of a process that has ended."""
+    proc = subprocess.Popen([sys.executable, "-c", ""])
+    proc.wait()
+    return proc.pid
+
+
+def test_the_next_run_removes_what_killed_runs_left(tmp_path):
+    """Only ``.design.valvetrain-PID.XXXXXXXX.tmp`` folders of a process that is gone are removed."""
+    dead, alive = dead_pid(), os.getpid()
+    leftover = tmp_path / f".design.valvetrain-{dead}.0123abcd.tmp"
+    (leftover / "plots").mkdir(parents=True)
+    (leftover / "results.json").write_text("{}")
+    kept = [f".design.valvetrain-{alive}.0123abcd.tmp",  # a run that is still running
+            f".other.valvetrain-{dead}.0123abcd.tmp",  # beside another output folder
+            f".design.valvetrain-{dead}.mine.tmp",  # not a name valvetrain makes
+            ".design.backup"]
+    for name in kept:
+        (tmp_path / name).mkdir()
+        (tmp_path / name / "keep.txt").write_text("keep")
+    (tmp_path / f".design.valvetrain-{dead}.4567cdef.tmp").write_text("a file, not a folder")
+    kept.append(f".design.valvetrain-{dead}.4567cdef.tmp")
+    write_folder(tmp_path / "design")
+    assert sorted(p.name for p in tmp_path.iterdir()) == sorted(kept + ["design"])
+    assert all((tmp_path / name / "keep.txt").read_text() == "keep" for name in kept[:-1])
+
+
 @pytest.mark.skipif(sys.platform != "linux", reason="renameat2 is Linux's")
 def test_exchange_swaps_two_folders(tmp_path):
     a, b = tmp_path / "a", tmp_path / "b"

@@ -9,7 +9,8 @@ The new contents are written into a temporary sibling folder and swapped with th
 folder in one ``renameat2(RENAME_EXCHANGE)`` system call (Linux), so that ``out`` always
 holds either its old or its complete new contents; where the system cannot exchange, two
 renames do it, with a moment in which ``out`` is absent.  Temporary folders are named
-``.NAME.valvetrain-PID.XXXXXXXX.tmp``.
+``.NAME.valvetrain-PID.XXXXXXXX.tmp``; those of a process that no longer runs (a run that
+was killed) are removed by the next run into ``NAME``.
 """
 
 from contextlib import contextmanager
@@ -18,6 +19,7 @@ import errno
 from functools import cache
 import os
 from pathlib import Path
+import re
 import secrets
 import shutil
 
@@ -168,6 +170,7 @@ def atomic_folder(out, inputs=(), force=False):
     """
     out = check_out(out, inputs, force)
     out.parent.mkdir(parents=True, exist_ok=True)
+    remove_stale_temps(out)
     tmp = make_temp(out)
     try:
         yield tmp
@@ -192,6 +195,31 @@ def make_temp(out):
             return path
         except FileExistsError:
             continue
+
+
+def remove_stale_temps(out):
+    """Remove the temporary siblings of ``out`` that runs which no longer run left behind (killed runs).
+
+    Only folders named ``.NAME.valvetrain-PID.XXXXXXXX.tmp`` for this ``out``, whose process
+    ``PID`` is gone, are removed; nothing else is touched.
+    """
+    pattern = re.compile(re.escape(f".{out.name}.valvetrain-") + r"([1-9][0-9]{0,9})\.[0-9a-f]{8}\.tmp")
+    with os.scandir(out.parent) as entries:
+        for entry in entries:
+            m = pattern.fullmatch(entry.name)
+            if m and entry.is_dir(follow_symlinks=False) and not process_alive(int(m.group(1))):
+                shutil.rmtree(entry.path, ignore_errors=True)
+
+
+def process_alive(pid):
+    """Whether a process ``pid`` exists (signal 0 tests that and sends nothing)."""
+    try:
+        os.kill(pid, 0)
+    except (ProcessLookupError, OverflowError):
+        return False
+    except PermissionError:  # another user's process
+        pass
+    return True
 
 
 def swap(new, out):
