@@ -1,12 +1,15 @@
 """The output folder (issue 9, item 1): ``--out`` never deletes a file that a valvetrain run did not write, refuses
-unusable paths before computing, replaces a previous output atomically and follows the umask."""
+unusable paths before computing, replaces a previous output atomically (also when killed) and follows the umask."""
 
 import json
 import os
 from pathlib import Path
+import random
 import shutil
+import signal
 import subprocess
 import sys
+import time
 
 from click.testing import CliRunner
 import pytest
@@ -28,13 +31,20 @@ def command(tmp_path, *args):
 
 
 @pytest.fixture(scope="module")
-def previous(tmp_path_factory):
-    """A previous output of the built-in example (English report)."""
+def previous_run(tmp_path_factory):
+    """A previous output of the built-in example (English report), and how long the command took to write it [s]."""
     folder = tmp_path_factory.mktemp("previous")
+    start = time.monotonic()
     proc = command(folder, "run", "--out", "design")
     _, err = proc.communicate(timeout=120)
     assert proc.returncode == 0, err
-    return folder / "design"
+    return folder / "design", time.monotonic() - start
+
+
+@pytest.fixture(scope="module")
+def previous(previous_run):
+    """A previous output of the built-in example (English report)."""
+    return previous_run[0]
 
 
 def listing(folder):
@@ -272,3 +282,34 @@ def test_compare_replaces_a_previous_comparison(tmp_path):
                                   "plots/compare_acceleration.png", "plots/compare_jerk.png"}
     assert hidden(tmp_path, "cmp") == []
 
+
+@pytest.mark.parametrize("sig", [signal.SIGKILL, signal.SIGINT], ids=["SIGKILL", "SIGINT"])
+def test_an_interrupted_run_keeps_a_whole_output(tmp_path, previous_run, sig):
+    """Five runs over a previous output, each sent ``sig`` at a random moment (seeded) between 0.1 s (after Python's
+    own start) and the run's duration: ``--out`` holds the previous or the whole new output after each; a SIGINT
+    ends the command with one line and its temporary folder removed; the next run leaves no temporary folder.
+
+    The status after a SIGINT is 130, or death by SIGINT (which a shell shows as 130): ``python -m`` ends that way,
+    after a clean exit, when the KeyboardInterrupt passed through an ``exec`` of a string (scipy's imports have
+    one; CPython's Py_RunMain and its unhandled_keyboard_interrupt mark)."""
+    previous, seconds = previous_run
+    out = tmp_path / "design"
+    shutil.copytree(previous, out)
+    moments = random.Random(9).sample(range(100, int(seconds * 1000)), 5)
+    for ms in moments:
+        proc = command(tmp_path, "run", "--out", "design", "--lang", "ru")
+        time.sleep(ms / 1000)
+        proc.send_signal(sig)
+        _, err = proc.communicate(timeout=120)
+        complete(out)
+        if sig == signal.SIGINT:
+            assert (proc.returncode, err) in ((130, "error: interrupted\n"), (-signal.SIGINT, "error: interrupted\n"),
+                                              (0, "")), (ms, err)
+            assert hidden(tmp_path, "design") == [], ms
+        else:
+            assert proc.returncode in (-signal.SIGKILL, 0), (ms, err)
+    proc = command(tmp_path, "run", "--out", "design")
+    _, err = proc.communicate(timeout=120)
+    assert proc.returncode == 0, err
+    complete(out)
+    assert hidden(tmp_path, "design") == []

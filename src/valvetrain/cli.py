@@ -1,9 +1,11 @@
 """Command line: ``valvetrain run | validate | compare | example``.
 
 Exit status: 0 on success, 2 for a specification or an output folder that cannot be used
-(one message per problem on standard error; nothing is written), 1 for any other failure.
+(one message per problem on standard error; nothing is written), 130 when interrupted
+(Ctrl-C), 1 for any other failure.
 """
 
+import signal
 import sys
 
 import click
@@ -55,7 +57,18 @@ def _design(spec):
         _fail_spec(err)
 
 
-@click.group(context_settings={"help_option_names": ["-h", "--help"]})
+class _Main(click.Group):
+    """The command group; Ctrl-C ends any command with exit status 130 and one line, not a traceback."""
+
+    def invoke(self, ctx):
+        try:
+            return super().invoke(ctx)
+        except KeyboardInterrupt:
+            click.echo("error: interrupted", err=True)
+            sys.exit(130)
+
+
+@click.group(cls=_Main, context_settings={"help_option_names": ["-h", "--help"]})
 @click.version_option(__version__, prog_name="valvetrain")
 def main():
     """Design calculation of engine valve trains.
@@ -138,3 +151,15 @@ def compare(files, out, force):
 def example():
     """Print the built-in example specification (seed 000's appendix engine) as TOML."""
     click.echo(example_text(), nl=False)
+
+
+def program():
+    """The ``valvetrain`` program: :func:`main`, then Ctrl-C ignored while Python shuts down.
+
+    The command is done by then (its exit status is set); Python's shutdown restores the
+    default SIGINT action, which would kill the process with no message instead.
+    """
+    try:
+        main()
+    finally:
+        signal.signal(signal.SIGINT, signal.SIG_IGN)

@@ -22,6 +22,7 @@ from pathlib import Path
 import re
 import secrets
 import shutil
+import signal
 
 from . import __version__
 
@@ -174,11 +175,13 @@ def atomic_folder(out, inputs=(), force=False):
     tmp = make_temp(out)
     try:
         yield tmp
-        (tmp / MARKER).write_text(marker_text(tmp), encoding="utf-8")
-        check_out(out, inputs, force)
-        swap(tmp, out)
+        with sigint_deferred():
+            (tmp / MARKER).write_text(marker_text(tmp), encoding="utf-8")
+            check_out(out, inputs, force)
+            swap(tmp, out)
     finally:
-        shutil.rmtree(tmp, ignore_errors=True)
+        with sigint_deferred():
+            shutil.rmtree(tmp, ignore_errors=True)
 
 
 def temp_name(out):
@@ -266,3 +269,16 @@ def _renameat2():
     fn.restype = ctypes.c_int
     return fn
 
+
+@contextmanager
+def sigint_deferred():
+    """Hold SIGINT (Ctrl-C) back during the block, so that it cannot stop an exchange or a removal half-way;
+    a SIGINT that came meanwhile is raised as :class:`KeyboardInterrupt` right after the block."""
+    if not hasattr(signal, "pthread_sigmask"):
+        yield
+        return
+    previous = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT})
+    try:
+        yield
+    finally:
+        signal.pthread_sigmask(signal.SIG_SETMASK, previous)
