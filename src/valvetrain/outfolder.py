@@ -140,6 +140,7 @@ def first_foreign_file(folder):
 
 
 def _raise(exc):
+    """Raise ``exc``: :func:`os.walk` skips an unreadable folder unless its ``onerror`` raises."""
     raise exc
 
 
@@ -165,9 +166,10 @@ def atomic_folder(out, inputs=(), force=False):
     """Yield a new temporary sibling folder of ``out`` and put it in place of ``out`` when the block completes.
 
     ``out`` is checked by :func:`check_out` (with ``inputs`` and ``force``) before the
-    block and again just before the new folder is put in place.  A failure or an interruption inside the
-    block removes the temporary folder and leaves ``out`` as it was (absent, or the previous
-    contents).  The folder gets the permissions of the user's umask, like any new folder.
+    block and again just before the new folder is put in place.  A failure or an
+    interruption inside the block removes the temporary folder and leaves ``out`` as it was
+    (absent, or the previous contents).  The folder gets the permissions of the user's
+    umask, like any new folder.
     """
     out = check_out(out, inputs, force)
     out.parent.mkdir(parents=True, exist_ok=True)
