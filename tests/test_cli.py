@@ -147,15 +147,6 @@ def test_failed_rerun_keeps_previous_results(tmp_path, monkeypatch, example_run)
     assert [p.name for p in tmp_path.iterdir()] == ["design"]
 
 
-def test_rerun_replaces_the_folder(tmp_path):
-    out = tmp_path / "design"
-    out.mkdir()
-    (out / "stale.txt").write_text("old")
-    assert CliRunner().invoke(main, ["run", "--out", str(out)]).exit_code == 0
-    assert not (out / "stale.txt").exists()
-    assert (out / "results.json").is_file()
-
-
 def test_module_entry_point():
     result = subprocess.run([sys.executable, "-m", "valvetrain", "--version"], capture_output=True, text=True)
     assert result.returncode == 0

@@ -1,5 +1,11 @@
 """``python -m valvetrain`` is the ``valvetrain`` command."""
 
-from .cli import main
+import sys
 
-main()
+try:
+    from .cli import program
+except KeyboardInterrupt:  # Ctrl-C while the command line is being imported
+    print("error: interrupted", file=sys.stderr)
+    sys.exit(130)
+
+program()

@@ -1,15 +1,22 @@
-"""Command line: ``valvetrain run | validate | example``.
+"""Command line: ``valvetrain run | validate | compare | example``.
 
-Exit status: 0 on success, 2 for a specification that cannot be used (one message per
-problem on standard error; nothing is written), 1 for any other failure.
+Exit status: 0 on success, 2 for a specification or an output folder that cannot be used
+(one message per problem on standard error; nothing is written), 130 when interrupted
+(Ctrl-C), 1 for any other failure.
 """
 
+import signal
 import sys
 
 import click
 
 from . import __version__
-from .spec import SpecError, example_spec, example_text, load_spec
+from .outfolder import OutFolderError, check_out
+from .spec import SpecError, example_spec, example_text, input_files, load_spec
+
+OUT_HELP = ("Folder for the results: new, empty, or a previous valvetrain output, which is replaced "
+            "atomically; a folder with other files is refused unless --force.")
+FORCE_HELP = "Replace --out even if it holds files that valvetrain did not write (never the input files)."
 
 
 def _fail_spec(err):
@@ -25,6 +32,21 @@ def _load(path):
         _fail_spec(err)
 
 
+def _fail_out(err):
+    click.echo(f"error: --out {err}", err=True)
+    sys.exit(2)
+
+
+def _check_out(out, files, specs, force):
+    """Refuse an unusable --out before the design is computed; return the files the run reads."""
+    inputs = [*files, *(f for spec in specs for f in input_files(spec))]
+    try:
+        check_out(out, inputs, force)
+    except OutFolderError as err:
+        _fail_out(err)
+    return inputs
+
+
 def _design(spec):
     """Run a design; a valid specification that admits no design (no spring fits) exits like a bad one."""
     from .design import run as run_design
@@ -35,7 +57,18 @@ def _design(spec):
         _fail_spec(err)
 
 
-@click.group(context_settings={"help_option_names": ["-h", "--help"]})
+class _Main(click.Group):
+    """The command group; Ctrl-C ends any command with exit status 130 and one line, not a traceback."""
+
+    def invoke(self, ctx):
+        try:
+            return super().invoke(ctx)
+        except KeyboardInterrupt:
+            click.echo("error: interrupted", err=True)
+            sys.exit(130)
+
+
+@click.group(cls=_Main, context_settings={"help_option_names": ["-h", "--help"]})
 @click.version_option(__version__, prog_name="valvetrain")
 def main():
     """Design calculation of engine valve trains.
@@ -48,16 +81,21 @@ def main():
 
 @main.command()
 @click.argument("file", required=False, type=click.Path(dir_okay=False))
-@click.option("--out", "out", default="design", show_default=True, type=click.Path(file_okay=False),
-              help="Folder for the results (replaced atomically if it exists).")
+@click.option("--out", "out", default="design", show_default=True, type=click.Path(), help=OUT_HELP)
+@click.option("--force", is_flag=True, help=FORCE_HELP)
 @click.option("--lang", type=click.Choice(["en", "ru"]), default="en", show_default=True,
               help="Language of the report and plots.")
-def run(file, out, lang):
+def run(file, out, force, lang):
     """Run the design of FILE (default: the built-in example) and write it to --out."""
     from .export import write_outputs
 
-    results = _design(_load(file))
-    write_outputs(results, out, lang)
+    spec = _load(file)
+    inputs = _check_out(out, [file] if file else [], [spec], force)
+    results = _design(spec)
+    try:
+        write_outputs(results, out, lang, inputs, force)
+    except OutFolderError as err:
+        _fail_out(err)
     click.echo(f"wrote {out}/ (results.json, report.html, tables/, plots/, contour/)")
     for name, v in results.valves.items():
         if v.summary["cam"]["undercut"]:
@@ -81,22 +119,26 @@ def validate(file):
 
 @main.command()
 @click.argument("files", nargs=-1, required=True, type=click.Path(dir_okay=False))
-@click.option("--out", "out", default="compare", show_default=True, type=click.Path(file_okay=False),
-              help="Folder for the comparison (replaced atomically if it exists).")
-def compare(files, out):
+@click.option("--out", "out", default="compare", show_default=True, type=click.Path(), help=OUT_HELP)
+@click.option("--force", is_flag=True, help=FORCE_HELP)
+def compare(files, out, force):
     """Compare the cams of every valve of FILES side by side (time-area, fullness, kinematics, curvature,
     contact stress, required spring); writes compare.csv, compare.json and overlaid plots."""
     from .compare import METRICS, write_comparison
 
-    designs = {}
-    for f, label in zip(files, _file_labels(files), strict=True):
-        res = _design(_load(f))
-        for name, v in res.valves.items():
-            designs[f"{label}:{name}" if len(files) > 1 else name] = v
-    if not designs:
+    specs = [_load(f) for f in files]
+    if not any(spec.valves for spec in specs):
         click.echo("error: the files define no valves to compare", err=True)
         sys.exit(2)
-    rows, notes = write_comparison(designs, out)
+    inputs = _check_out(out, files, specs, force)
+    designs = {}
+    for spec, label in zip(specs, _file_labels(files), strict=True):
+        for name, v in _design(spec).valves.items():
+            designs[f"{label}:{name}" if len(files) > 1 else name] = v
+    try:
+        rows, notes = write_comparison(designs, out, inputs, force)
+    except OutFolderError as err:
+        _fail_out(err)
     width = max(len(label) for _, label in METRICS)
     click.echo(" " * width + "".join(f"  {lab[:18]:>18}" for lab in rows))
     for key, label in METRICS:
@@ -124,3 +166,15 @@ def _file_labels(files):
 def example():
     """Print the built-in example specification (seed 000's appendix engine) as TOML."""
     click.echo(example_text(), nl=False)
+
+
+def program():
+    """The ``valvetrain`` program: :func:`main`, then Ctrl-C ignored while Python shuts down.
+
+    The command is done by then (its exit status is set); Python's shutdown restores the
+    default SIGINT action, which would kill the process with no message instead.
+    """
+    try:
+        main()
+    finally:
+        signal.signal(signal.SIGINT, signal.SIG_IGN)

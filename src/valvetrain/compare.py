@@ -95,17 +95,21 @@ def comparison(designs):
     return rows, notes
 
 
-def write_comparison(designs, out):
-    """Write ``compare.csv``, ``compare.json`` and the overlaid plots into ``out`` atomically."""
+def write_comparison(designs, out, inputs=(), force=False):
+    """Write ``compare.csv``, ``compare.json`` and the overlaid plots into ``out`` atomically.
+
+    ``inputs`` (the files read) and ``force`` are those of :func:`valvetrain.outfolder.atomic_folder`.
+    """
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    from .export import atomic_folder, json_text, write_csv
+    from .export import json_text, write_csv
+    from .outfolder import atomic_folder
 
     rows, notes = comparison(designs)
-    with atomic_folder(out) as tmp:
+    with atomic_folder(out, inputs, force) as tmp:
         (tmp / "plots").mkdir()
         labels = list(rows)
         table = {"quantity": [label for _, label in METRICS]}

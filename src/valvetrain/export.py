@@ -1,15 +1,12 @@
 """Writing results: JSON, CSV tables, contour CSV and DXF, and the whole output folder atomically."""
 
-from contextlib import contextmanager
 import csv
 import json
-import os
 from pathlib import Path
-import shutil
-import tempfile
 
 import numpy as np
 
+from .outfolder import atomic_folder
 from .units import MM, rad_to_deg
 
 LIFT_COLUMNS = [
@@ -251,12 +248,14 @@ def _plain(x):
     raise TypeError(f"cannot write {type(x).__name__} to JSON")
 
 
-def write_outputs(results, out, lang="en"):
+def write_outputs(results, out, lang="en", inputs=(), force=False):
     """Write every artefact of a design into the folder ``out``, atomically.
 
-    Everything is written into a temporary sibling folder first and moved into place
-    only when complete; an existing ``out`` is replaced in one rename.  A failure or an
-    interruption leaves ``out`` as it was (absent, or the previous results).
+    Everything is written into a temporary sibling folder first and put in place only
+    when complete (:func:`valvetrain.outfolder.atomic_folder`, which also says which
+    folders may be replaced: ``inputs`` are the files the run read, ``force`` allows
+    replacing a folder with files no valvetrain run wrote).  A failure or an interruption
+    leaves ``out`` as it was (absent, or the previous results).
 
     Layout::
 
@@ -268,10 +267,11 @@ def write_outputs(results, out, lang="en"):
                   NAME_spring.png, crank_forces.png, crank_torque.png, crank_pin_polar.png,
                   two_stroke_ports.png, two_stroke_time_area.png
         out/report.html
+        out/.valvetrain-output (the files the run wrote)
     """
     from .report import write_plots, write_report
 
-    with atomic_folder(out) as tmp:
+    with atomic_folder(out, inputs, force) as tmp:
         for sub in ("tables", "contour", "plots"):
             (tmp / sub).mkdir()
         (tmp / "results.json").write_text(results_json(results), encoding="utf-8")
@@ -294,39 +294,3 @@ def write_outputs(results, out, lang="en"):
         plots = write_plots(results, tmp / "plots", lang)
         write_report(results, tmp / "report.html", plots, lang)
     return Path(out)
-
-
-@contextmanager
-def atomic_folder(out):
-    """Yield a temporary sibling folder of ``out`` and move it into place when the block completes.
-
-    A failure or an interruption inside the block removes the temporary folder and leaves
-    ``out`` as it was (absent, or the previous contents); an existing ``out`` is replaced
-    in one rename.
-    """
-    out = Path(out)
-    if out.exists() and not out.is_dir():
-        raise FileExistsError(f"--out {out}: exists and is not a folder")
-    out.parent.mkdir(parents=True, exist_ok=True)
-    tmp = Path(tempfile.mkdtemp(prefix=f".{out.name}.", suffix=".tmp", dir=out.parent))
-    try:
-        yield tmp
-        _replace_dir(tmp, out)
-    except BaseException:
-        shutil.rmtree(tmp, ignore_errors=True)
-        raise
-
-
-def _replace_dir(new, out):
-    if not out.exists():
-        os.replace(new, out)
-        return
-    old = Path(tempfile.mkdtemp(prefix=f".{out.name}.", suffix=".old", dir=out.parent))
-    os.replace(out, old / "previous")
-    try:
-        os.replace(new, out)
-    except BaseException:
-        os.replace(old / "previous", out)
-        raise
-    finally:
-        shutil.rmtree(old, ignore_errors=True)

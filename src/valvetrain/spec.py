@@ -729,6 +729,22 @@ def resolve_path(spec, name):
     return path if path.is_absolute() or spec.source_dir is None else Path(spec.source_dir) / path
 
 
+def input_files(spec):
+    """Every file the specification names (each ``..._file`` key: lift tables, indicator diagrams), resolved."""
+    def named(node):
+        if isinstance(node, dict):
+            for key, value in node.items():
+                if key.endswith("_file") and isinstance(value, str):
+                    yield resolve_path(spec, value)
+                else:
+                    yield from named(value)
+        elif isinstance(node, list):
+            for value in node:
+                yield from named(value)
+
+    return sorted(set(named(spec.model_dump())))
+
+
 def _two_stroke_problems(spec):
     ts = spec.two_stroke
     if ts is None:
