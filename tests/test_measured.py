@@ -10,12 +10,20 @@ from scipy.optimize import brentq
 
 from valvetrain.cli import main
 from valvetrain.design import run
+from valvetrain.laws import measured
 from valvetrain.laws.measured import TableFileError, TableLaw, harmonic_fit, read_lift_table, symmetry_shift
 from valvetrain.spec import load_spec
 
 from conftest import seed000_law
 
 EXAMPLE = Path(__file__).parents[1] / "examples" / "measured-lobe.toml"
+EXAMPLE_TABLE = EXAMPLE.parent / "data" / "measured-intake-lobe.csv"
+"""Valve lift every 2 crank deg from -70 to 300: the seed 000 appendix lobe x 1.6, 3 crank deg late, 2 um noise."""
+
+
+def _write_table(path, angle, lift):
+    path.write_text("angle_deg,lift_mm\n" + "".join(f"{a:.10g},{h:.10g}\n" for a, h in zip(angle, lift)))
+    return path
 
 
 def _sampled(shift_deg=0.0, noise=0.0, step_deg=1.0):
@@ -161,3 +169,34 @@ def test_report_shows_the_measured_analysis(tmp_path):
     for d in data["measured"]["durations_deg"]:
         assert f'<td class="n">{d["height_mm"]:.6g}</td><td class="n">{d["duration_deg"]:.6g}</td>' in html
     assert "seed 002, sections 5.1-5.3; GCV smoothing spline" in html
+
+
+def test_too_many_rows(tmp_path, monkeypatch):
+    """A table of more rows than MAX_TABLE_ROWS (10^6; 50 here) is refused when read, naming the file."""
+    monkeypatch.setattr(measured, "MAX_TABLE_ROWS", 50)
+    with pytest.raises(TableFileError, match=r"t.csv: 60 rows; allowed at most 50"):
+        read_lift_table(_write_table(tmp_path / "t.csv", np.arange(60.0), np.zeros(60)))
+
+
+def test_the_plain_and_the_line_reader_agree(tmp_path, monkeypatch):
+    """A plain file is parsed in one numpy call, one with comments line by line: the same numbers either way
+    (the example table has comment lines; without them, with CRLF line ends, it takes the plain path, which does
+    not call the line reader)."""
+    from valvetrain import csvfiles
+
+    angle, lift = read_lift_table(EXAMPLE_TABLE)
+    plain = "\r\n".join(line for line in EXAMPLE_TABLE.read_text().splitlines() if not line.startswith("#"))
+    (tmp_path / "plain.csv").write_text(plain, newline="")
+    monkeypatch.setattr(csvfiles, "read_two_columns", None)
+    again = read_lift_table(tmp_path / "plain.csv")
+    assert np.array_equal(again[0], angle) and np.array_equal(again[1], lift)
+    assert angle.size == 186 and lift.max() == 10.0032
+
+
+def test_echoed_rows_are_cut(tmp_path):
+    """Issue 9: a row of 10,000 characters is echoed as its first 40 and '...'."""
+    f = tmp_path / "t.csv"
+    f.write_text("angle_deg,lift_mm\n0,0\n1," + "9" * 10_000 + "x\n")
+    with pytest.raises(TableFileError) as err:
+        read_lift_table(f)
+    assert str(err.value) == f"{f}:3: '1,{'9' * 38}...' is not two numbers"

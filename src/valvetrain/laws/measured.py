@@ -13,12 +13,15 @@ import numpy as np
 from scipy.interpolate import make_smoothing_spline
 
 from ..checks import check_range
-from ..csvfiles import read_two_columns
+from ..csvfiles import read_two_column_arrays, read_two_columns
 from ..numerics import extremum, level_span
 from .base import RampedLaw, Segment
 
 CHECKING_HEIGHTS_MM = (0.1, 0.5, 1.0, 1.27)
 """Standard checking heights [mm]: 0.1, 0.5, 1.0 mm and 0.050 in = 1.27 mm."""
+
+MAX_TABLE_ROWS = 1_000_000
+"""Most rows of a lift table (10^6: a row every 0.0007 crank deg over a whole revolution)."""
 
 
 class TableFileError(ValueError):
@@ -36,18 +39,20 @@ def read_lift_table(path):
     Raises
     ------
     TableFileError
-        Naming the file and line of the first problem.
+        Naming the file and line of the first problem; also for more than :data:`MAX_TABLE_ROWS` rows.
     """
-    _, rows = read_two_columns(path, [("angle_deg", "lift_mm")], TableFileError)
-    angles, lifts = [], []
-    for n, a, h in rows:
-        if angles and a <= angles[-1]:
-            raise TableFileError(f"{path}:{n}: angle_deg = {a:g} must be larger than the previous {angles[-1]:g}")
-        angles.append(a)
-        lifts.append(h)
-    if len(angles) < 10:
-        raise TableFileError(f"{path}: at least 10 rows are needed to fit a lift curve, found {len(angles)}")
-    return np.array(angles), np.array(lifts)
+    _, angles, lifts = read_two_column_arrays(path, [("angle_deg", "lift_mm")], TableFileError)
+    back = np.flatnonzero(np.diff(angles) <= 0.0)
+    if back.size:
+        i = int(back[0]) + 1
+        line = read_two_columns(path, [("angle_deg", "lift_mm")], TableFileError)[1][i][0]
+        raise TableFileError(f"{path}:{line}: angle_deg = {angles[i]:g} must be larger than the previous "
+                             f"{angles[i - 1]:g}")
+    if angles.size < 10:
+        raise TableFileError(f"{path}: at least 10 rows are needed to fit a lift curve, found {angles.size}")
+    if angles.size > MAX_TABLE_ROWS:
+        raise TableFileError(f"{path}: {angles.size} rows; allowed at most {MAX_TABLE_ROWS}: thin the table")
+    return angles, lifts
 
 
 def harmonic_fit(theta, lift, harmonics, period_half):
