@@ -1,10 +1,10 @@
-"""Measured lift tables: reading, smoothing-spline and N-harmonic fits, nose finding and false asymmetry,
-checking-height durations, and the measured cam as a lift law
+"""Measured lift tables: reading, checking and trimming to the lobe, smoothing-spline and N-harmonic fits,
+nose finding and false asymmetry, checking-height durations, and the measured cam as a lift law
 (seed 002 contents, sections 5.1-5.3; spec/methods-seeds-002-004.md, sections 9-11 [R]).
 
-Angles inside are camshaft radians; a table measured against the crank angle is halved
-when read.  Lifts are follower (tappet) lifts [m]; a table of valve lift is divided by
-the rocker ratio.
+Angles inside are camshaft radians in the engine's cam frame (crank angle from the gas-exchange TDC / 2); a
+table measured against the crank angle is halved, and one measured from the firing TDC is turned back by 360
+crank deg.  Lifts are follower (tappet) lifts [m]; a table of valve lift is divided by the rocker ratio.
 """
 
 from dataclasses import dataclass
@@ -20,8 +20,28 @@ from .base import RampedLaw, Segment
 CHECKING_HEIGHTS_MM = (0.1, 0.5, 1.0, 1.27)
 """Standard checking heights [mm]: 0.1, 0.5, 1.0 mm and 0.050 in = 1.27 mm."""
 
+BASE_CIRCLE_ACCURACIES = 3.0
+"""Half-width of the base-circle band in measurement accuracies: a lift within 3 x accuracy_mm of zero is the
+base circle (noise and run-out of the measurement).  A table must start and end in the band and no row may lie
+below it."""
+
+MIN_VALVE_LIFT_MM = 0.3
+"""Smallest largest valve lift of a table [mm]: about the valve clearance (0.25-0.35 mm inlet, seed 000, work 2);
+a table that lifts the valve less holds a ramp or noise, not a cam lobe."""
+
 MAX_TABLE_ROWS = 1_000_000
 """Most rows of a lift table (10^6: a row every 0.0007 crank deg over a whole revolution)."""
+
+FIT_POINTS = 1000
+"""Most points a fit sees: a denser lobe is averaged in bins of equal angle (about 0.2 cam deg for a lobe with
+its margin), which also lowers its noise by the square root of the rows in a bin."""
+
+LOBE_MARGIN = 0.1
+"""Base circle kept on either side of the lobe for the fits, as a fraction of the lobe's angle: the rows
+further out do not change the analysis."""
+
+MIN_LOBE_POINTS = 20
+"""Fewest rows of a lobe with its margin (the N-harmonic fit takes at least N = 4, nine coefficients)."""
 
 
 class TableFileError(ValueError):
@@ -53,6 +73,132 @@ def read_lift_table(path):
     if angles.size > MAX_TABLE_ROWS:
         raise TableFileError(f"{path}: {angles.size} rows; allowed at most {MAX_TABLE_ROWS}: thin the table")
     return angles, lifts
+
+
+def lobe_table(angle_deg, lift_mm, angle="crank", zero="gas_exchange_tdc", accuracy_mm=0.005,
+               min_lift_mm=MIN_VALVE_LIFT_MM):
+    """The lobe of a lift table in the engine's cam frame: checked, trimmed and bounded in size for the fits.
+
+    The table must cover at most one camshaft revolution, rise from the base circle (within
+    ``BASE_CIRCLE_ACCURACIES`` x ``accuracy_mm`` of zero) to at least ``min_lift_mm`` and hold one lobe: one
+    region of lift; rows at the base circle separate regions (a single such row between lifted rows is
+    noise).  A table of a whole revolution may cut the lobe at its ends; it is turned to start in the middle of
+    its base circle.  The angles are moved into the engine's cam frame (firing TDC = gas-exchange TDC + 360
+    crank deg; the highest row within (-180, 180] cam deg), the rows are trimmed to the lobe and
+    ``LOBE_MARGIN`` of its angle of base circle on either side (the analysis does not depend on how much base
+    circle the table holds) and, beyond ``FIT_POINTS`` rows, averaged in bins of equal angle.
+
+    Parameters
+    ----------
+    angle_deg, lift_mm : ndarray
+        The table: strictly increasing angles [deg] and lifts [mm].
+    angle : {"crank", "cam"}
+        What the angles measure.
+    zero : {"gas_exchange_tdc", "firing_tdc"}
+        The table's zero: the TDC that starts the intake stroke, or the firing TDC (360 crank deg later).
+    accuracy_mm : float
+        Measurement accuracy [mm].
+    min_lift_mm : float
+        Least largest lift of a lobe, in the table's lift [mm].
+
+    Returns
+    -------
+    (ndarray, ndarray, float)
+        Camshaft angles [rad] in the engine's cam frame, lifts [mm] as in the table, and the table rows per
+        point (1 unless binned).
+
+    Raises
+    ------
+    ValueError
+        Naming the rows, their values and what is allowed.
+
+    References
+    ----------
+    seed 002 contents, section 5.1 (a measured table of the lobe); this project's reading of what a table of one
+    lobe is.
+    """
+    revolution = 720.0 if angle == "crank" else 360.0
+    unit = f"{angle} deg"
+    a, h = np.asarray(angle_deg, dtype=float), np.asarray(lift_mm, dtype=float)
+    if a[-1] - a[0] > revolution:
+        raise ValueError(f"angle_deg runs from {a[0]:g} to {a[-1]:g} {unit} ({a[-1] - a[0]:g}); a table covers "
+                         f"at most one camshaft revolution, {revolution:g} {unit}")
+    band = BASE_CIRCLE_ACCURACIES * accuracy_mm
+    low, top = int(np.argmin(h)), int(np.argmax(h))
+    if h[low] < -band:
+        raise ValueError(f"lift_mm = {h[low]:g} at angle_deg = {a[low]:g} lies below the base circle; allowed "
+                         f">= {-band:g} mm (3 x accuracy_mm of measurement noise)")
+    if h[top] < min_lift_mm:
+        raise ValueError(f"the largest lift is {h[top]:g} mm (angle_deg = {a[top]:g}); a cam lobe lifts the valve "
+                         f"at least {MIN_VALVE_LIFT_MM:g} mm: allowed >= {min_lift_mm:.4g} mm in this table")
+    a, h = _whole_lobe(a, h, band, revolution, unit)
+    first, last = _one_lobe(a, h, band)
+    cam = (a + (0.5 * revolution if zero == "firing_tdc" else 0.0)) * (360.0 / revolution)
+    cam -= 360.0 * np.ceil((cam[np.argmax(h)] - 180.0) / 360.0)
+    margin = LOBE_MARGIN * (cam[last] - cam[first])
+    keep = (cam >= cam[first] - margin) & (cam <= cam[last] + margin)
+    if keep.sum() < MIN_LOBE_POINTS:
+        raise ValueError(f"the lobe (lift above {band:g} mm from angle_deg = {a[first]:g} to {a[last]:g}) has "
+                         f"{keep.sum()} rows with its margin of base circle; at least {MIN_LOBE_POINTS} are needed "
+                         "to fit it")
+    x, y, per_point = binned(cam[keep], h[keep], FIT_POINTS)
+    return np.radians(x), y, per_point
+
+
+def _whole_lobe(a, h, band, revolution, unit):
+    """The table, turned to start in the middle of its base circle if it covers a whole revolution and its
+    lobe runs over its ends; otherwise it must start and end on the base circle."""
+    lifted = h > band
+    if not (lifted[0] or lifted[-1]):
+        return a, h
+    whole = revolution - (a[-1] - a[0]) <= 2.0 * np.median(np.diff(a))
+    if whole and not lifted.all():
+        if a[-1] - a[0] >= revolution * (1.0 - 1e-12):   # the last row repeats the first
+            a, h, lifted = a[:-1], h[:-1], lifted[:-1]
+        base = np.flatnonzero(~lifted)
+        m = base[base.size // 2]
+        return np.concatenate([a[m:], a[:m] + revolution]), np.concatenate([h[m:], h[:m]])
+    end, i = ("first", 0) if lifted[0] else ("last", -1)
+    raise ValueError(f"the {end} row, angle_deg = {a[i]:g}, lifts {h[i]:g} mm: a table starts and ends on the base "
+                     f"circle, allowed |lift| <= {band:g} mm (3 x accuracy_mm), or covers a whole revolution "
+                     f"({revolution:g} {unit}) around the lobe")
+
+
+def _one_lobe(a, h, band):
+    """First and last row of the lobe, the region of lift around the highest row; a second region that rises
+    above twice the base-circle band (well above the noise) is a second lobe."""
+    rows = np.flatnonzero(h > band)
+    regions = np.split(rows, np.flatnonzero(np.diff(rows) > 2) + 1)
+    top = int(np.argmax(h))
+    lobe = next(r for r in regions if r[0] <= top <= r[-1])
+    for r in regions:
+        if r is not lobe and h[r].max() > 2.0 * band:
+            raise ValueError(f"a second lift region, angle_deg = {a[r[0]]:g} to {a[r[-1]]:g} (up to {h[r].max():g} "
+                             f"mm), besides the lobe at {a[lobe[0]]:g} to {a[lobe[-1]]:g}, separated by base-circle "
+                             "rows; a table holds one lobe")
+    return int(lobe[0]), int(lobe[-1])
+
+
+def binned(x, y, points):
+    """Rows averaged in at most ``points`` bins of equal width in x; empty bins are dropped.
+
+    Averaging the angle with the lift keeps the points on the curve to second order (the bias is h'' w^2 / 24
+    for a bin of width w, below 0.02 um for 0.2 cam deg bins of a lobe); the noise falls by the square root of
+    the rows in a bin.
+
+    Returns
+    -------
+    (ndarray, ndarray, float)
+        Mean x and y of the bins, and the mean number of rows in a bin (1 when ``x`` has no more than ``points``
+        rows: returned as they are).
+    """
+    if x.size <= points:
+        return x, y, 1.0
+    bins = np.minimum(((x - x[0]) / (x[-1] - x[0]) * points).astype(int), points - 1)
+    count = np.bincount(bins, minlength=points)
+    full = count > 0
+    return (np.bincount(bins, x, points)[full] / count[full], np.bincount(bins, y, points)[full] / count[full],
+            x.size / full.sum())
 
 
 def harmonic_fit(theta, lift, harmonics, period_half):
@@ -148,8 +294,8 @@ class TableLaw(RampedLaw):
     Parameters
     ----------
     angles : ndarray
-        Camshaft angles of the table [rad] in the engine's cam frame (crank angle from the
-        gas-exchange TDC / 2).
+        Camshaft angles of the lobe's rows [rad] in the engine's cam frame (crank angle from the
+        gas-exchange TDC / 2), as :func:`lobe_table` gives them.
     lift : ndarray
         Follower lift [m].
     fit : {"spline", "harmonic"}
@@ -161,6 +307,8 @@ class TableLaw(RampedLaw):
         meets it (spec section 9: choose N by the residual, not the largest N that fits).
     max_harmonics : int
         Upper bound of N.
+    rows_per_point : float
+        Table rows averaged into each point (see :func:`binned`), for the record.
 
     Attributes
     ----------
@@ -172,9 +320,10 @@ class TableLaw(RampedLaw):
     source = ('seed 002, sections 5.1-5.3; GCV smoothing spline or N-harmonic fit, nose finding and false asymmetry: '
               'spec/methods-seeds-002-004.md, sections 9-11 (reconstructed)')
 
-    def __init__(self, angles, lift, fit="spline", accuracy=5e-6, max_harmonics=60):
+    def __init__(self, angles, lift, fit="spline", accuracy=5e-6, max_harmonics=60, rows_per_point=1.0):
         x, y = np.asarray(angles, dtype=float), np.asarray(lift, dtype=float)
         self.angles, self.values = x, y
+        self.rows_per_point = float(rows_per_point)
         self.fit = fit
         top = int(np.argmax(y))
         half = max(x[top] - x[0], x[-1] - x[top])
@@ -262,6 +411,8 @@ class TableLaw(RampedLaw):
                                   "section 9: N by the residual against the accuracy, 0.002-0.01 mm)")
 
     def coefficients(self):
-        """The fit used, the harmonic order, the remaining (true) asymmetry and the lobe centre."""
+        """The fit used, the harmonic order, the remaining (true) asymmetry, the lobe centre and the points fitted
+        (with the table rows averaged into each)."""
         return {"fit": self.fit, "harmonics": self.harmonics, "asymmetry_rms_mm": self.asymmetry_rms * 1e3,
-                "lobe_centre_cam_deg": float(np.degrees(self.centre)), "points": int(self.angles.size)}
+                "lobe_centre_cam_deg": float(np.degrees(self.centre)), "points": int(self.angles.size),
+                "rows_per_point": self.rows_per_point}
