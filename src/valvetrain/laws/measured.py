@@ -11,6 +11,7 @@ from dataclasses import dataclass
 
 import numpy as np
 from scipy.interpolate import make_smoothing_spline
+from scipy.optimize import brentq
 
 from ..checks import check_range
 from ..csvfiles import read_two_column_arrays, read_two_columns
@@ -23,7 +24,7 @@ CHECKING_HEIGHTS_MM = (0.1, 0.5, 1.0, 1.27)
 BASE_CIRCLE_ACCURACIES = 3.0
 """Half-width of the base-circle band in measurement accuracies: a lift within 3 x accuracy_mm of zero is the
 base circle (noise and run-out of the measurement).  A table must start and end in the band and no row may lie
-below it."""
+below it; a fit must stay within it below zero and above the table's largest lift."""
 
 MIN_VALVE_LIFT_MM = 0.3
 """Smallest largest valve lift of a table [mm]: about the valve clearance (0.25-0.35 mm inlet, seed 000, work 2);
@@ -42,6 +43,17 @@ further out do not change the analysis."""
 
 MIN_LOBE_POINTS = 20
 """Fewest rows of a lobe with its margin (the N-harmonic fit takes at least N = 4, nine coefficients)."""
+
+HARMONIC_POINTS_PER_ORDER = 4
+"""The harmonic order N is at most (points - 1) / 4: the 2N + 1 coefficients come from twice as many points."""
+
+HARMONIC_RCOND = 1e-8
+"""Relative cut-off of the singular values in the harmonic least squares: the combinations of harmonics the
+window of data does not determine (they live in the part of the period without data) are left out instead of
+being fitted to the noise with huge coefficients."""
+
+FITS = ("spline", "harmonic")
+"""Fits of a table: the smoothing spline or the N-harmonic fit."""
 
 
 class TableFileError(ValueError):
@@ -227,8 +239,86 @@ def harmonic_fit(theta, lift, harmonics, period_half):
     w = np.pi / period_half
     k = np.arange(harmonics + 1)
     design = np.hstack([np.cos(np.outer(theta, k * w)), np.sin(np.outer(theta, k[1:] * w))])
-    coef = np.linalg.lstsq(design, lift, rcond=None)[0]
+    coef = np.linalg.lstsq(design, lift, rcond=HARMONIC_RCOND)[0]
     return coef[: harmonics + 1], np.concatenate([[0.0], coef[harmonics + 1:]]), w
+
+
+def harmonic_lift(theta, a, b, w):
+    """The N-harmonic series sum a_k cos(k w t) + b_k sin(k w t) at angles theta [rad]."""
+    k = np.arange(a.size) * w
+    return np.cos(np.outer(theta, k)) @ a + np.sin(np.outer(theta, k)) @ b
+
+
+def harmonic_order(theta, lift, accuracy, most, period_half):
+    """The smallest order N <= ``most`` whose N-harmonic fit meets the accuracy, and its fit (spec section 9:
+    choose N by the residual against the measurement accuracy, not the largest N that fits).
+
+    The residual falls with N (the fits are nested), so N is bracketed by doubling from 4 and then found by
+    bisection: about 2 log2(N) fits instead of one per order.  If even ``most`` does not meet the accuracy,
+    N = ``most``.
+
+    Returns
+    -------
+    (int, ndarray, ndarray, float, float)
+        N, a_0..a_N, b_0..b_N, w (see :func:`harmonic_fit`) and the RMS residual [m].
+    """
+    def fit(n):
+        a, b, w = harmonic_fit(theta, lift, n, period_half)
+        return n, a, b, w, float(np.sqrt(np.mean((lift - harmonic_lift(theta, a, b, w)) ** 2)))
+
+    low, best = 3, fit(min(4, most))      # orders <= low miss the accuracy
+    while best[4] > accuracy and best[0] < most:
+        low, best = best[0], fit(min(2 * best[0], most))
+    while best[4] <= accuracy and best[0] - low > 1:
+        trial = fit((low + best[0]) // 2)
+        if trial[4] <= accuracy:
+            best = trial
+        else:
+            low = trial[0]
+    return best
+
+
+def lift_event(fn, a, b, level, samples=4001):
+    """Where a fitted lift leaves the base circle and returns to it, within [a, b].
+
+    The lobe is the stretch around the fit's highest point that stays above ``level`` (the noise band of the
+    base circle); on either side the event ends at the nearest point where the fit reaches zero, so that the
+    fitted lift inside the event is positive and its ends carry lift and velocity of the order of the noise.
+    Where the fit stays above zero up to the edge of the window, the event ends at its lowest point there.
+
+    Parameters
+    ----------
+    fn : callable
+        Vectorised fitted lift ``fn(theta)`` [m].
+    a, b : float
+        The window of the data [rad].
+    level : float
+        Half-width of the base-circle band [m].
+    samples : int
+        Grid on which the crossings are located before Brent's method refines them.
+
+    Returns
+    -------
+    (float, float)
+        Start and end of the event [rad].
+    """
+    x = np.linspace(a, b, samples)
+    h = fn(x)
+    top = int(np.argmax(h))
+    quiet = np.flatnonzero(h <= level)
+    i = quiet[quiet < top].max(initial=0)
+    j = quiet[quiet > top].min(initial=samples - 1)
+
+    def root(k):  # the zero of the fit between x[k] and x[k + 1], where its sign changes
+        if h[k] == 0.0 or h[k + 1] == 0.0:
+            return x[k] if h[k] == 0.0 else x[k + 1]
+        return brentq(lambda t: float(fn(np.array([t]))[0]), x[k], x[k + 1], xtol=1e-14)
+
+    zero = np.flatnonzero(h[:i + 1] <= 0.0)
+    start = root(int(zero[-1])) if zero.size else x[int(np.argmin(h[:i + 1]))]
+    zero = np.flatnonzero(h[j:] <= 0.0)
+    end = root(j + int(zero[0]) - 1) if zero.size else x[j + int(np.argmin(h[j:]))]
+    return float(start), float(end)
 
 
 def symmetry_shift(a, b, w, half_width, search=0.2, samples=801):
@@ -291,6 +381,10 @@ class FitQuality:
 class TableLaw(RampedLaw):
     """A measured lift table as a lift law, through a smoothing spline (GCV) or an N-harmonic fit.
 
+    The event is where the fit leaves the base circle and returns to it (:func:`lift_event`): outside it the
+    lift is zero, inside it the fitted lift is positive, so the law never dips below the base circle and its
+    event does not depend on how much base circle the table holds.
+
     Parameters
     ----------
     angles : ndarray
@@ -304,9 +398,10 @@ class TableLaw(RampedLaw):
         stand-in of the spec for Shang's 回弹法 fairing, or the N-harmonic fit.
     accuracy : float
         Measurement accuracy [m]: the harmonic order N is the smallest whose RMS residual
-        meets it (spec section 9: choose N by the residual, not the largest N that fits).
+        meets it (spec section 9: choose N by the residual, not the largest N that fits); the base-circle
+        band is ``BASE_CIRCLE_ACCURACIES`` times it.
     max_harmonics : int
-        Upper bound of N.
+        Upper bound of N; N is also at most (points - 1) / ``HARMONIC_POINTS_PER_ORDER``.
     rows_per_point : float
         Table rows averaged into each point (see :func:`binned`), for the record.
 
@@ -314,6 +409,14 @@ class TableLaw(RampedLaw):
     ----------
     centre : float
         The lobe centre (symmetry axis) in the table's cam frame [rad], after the false-asymmetry correction.
+    fit : str
+        The fit the law evaluates, ``"spline"`` or ``"harmonic"``.
+
+    Raises
+    ------
+    ValueError
+        For ``fit = "harmonic"`` when the fit leaves the band [-3 accuracy, largest lift + 3 accuracy] between
+        the rows (the message suggests the spline), and for a spline that cannot be fitted.
     """
 
     name = "table"
@@ -321,30 +424,33 @@ class TableLaw(RampedLaw):
               'spec/methods-seeds-002-004.md, sections 9-11 (reconstructed)')
 
     def __init__(self, angles, lift, fit="spline", accuracy=5e-6, max_harmonics=60, rows_per_point=1.0):
+        if fit not in FITS:
+            raise ValueError(f"fit = {fit!r}: allowed {', '.join(repr(f) for f in FITS)}")
         x, y = np.asarray(angles, dtype=float), np.asarray(lift, dtype=float)
-        self.angles, self.values = x, y
+        self.angles, self.values, self.accuracy = x, y, float(accuracy)
         self.rows_per_point = float(rows_per_point)
-        self.fit = fit
-        top = int(np.argmax(y))
-        half = max(x[top] - x[0], x[-1] - x[top])
-        period_half = 1.15 * half
         # N-harmonic fit about the highest point, the smallest N meeting the accuracy
-        for n in range(4, max_harmonics + 1):
-            a, b, w = harmonic_fit(x - x[top], y, n, period_half)
-            k = np.arange(n + 1)
-            resid = y - (np.cos(np.outer(x - x[top], k * w)) @ a + np.sin(np.outer(x - x[top], k * w)) @ b)
-            if np.sqrt(np.mean(resid**2)) <= accuracy:
-                break
-        self.accuracy, self.harmonic_rms = float(accuracy), float(np.sqrt(np.mean(resid**2)))
+        top = int(np.argmax(y))
+        most = max(4, min(max_harmonics, (x.size - 1) // HARMONIC_POINTS_PER_ORDER))
+        n, a, b, w, self.harmonic_rms = harmonic_order(x - x[top], y, self.accuracy, most,
+                                                       1.15 * max(x[top] - x[0], x[-1] - x[top]))
         shift, self.asymmetry_rms = symmetry_shift(a, b, w, min(x[top] - x[0], x[-1] - x[top]))
         self.centre = float(x[top] + shift)
         self.harmonics = int(n)
-        self._harmonic = (a * np.cos(np.arange(n + 1) * w * shift) + b * np.sin(np.arange(n + 1) * w * shift),
-                          b * np.cos(np.arange(n + 1) * w * shift) - a * np.sin(np.arange(n + 1) * w * shift), w)
-        self._spline = make_smoothing_spline(x - self.centre, y)
-        self.start_angle, self.end_angle = float(x[0] - self.centre), float(x[-1] - self.centre)
-        if fit not in ("spline", "harmonic"):
-            raise ValueError(f"fit = {fit!r}: allowed 'spline' or 'harmonic'")
+        cos, sin = np.cos(np.arange(n + 1) * w * shift), np.sin(np.arange(n + 1) * w * shift)
+        self._harmonic = (a * cos + b * sin, b * cos - a * sin, w)
+        self._spline = _smoothing_spline(x - self.centre, y)
+        window = (float(x[0] - self.centre), float(x[-1] - self.centre))
+        band = BASE_CIRCLE_ACCURACIES * self.accuracy
+        swing = self.fitted(np.linspace(*window, 8001), "harmonic")[0]
+        bounded = swing.min() >= -band and swing.max() <= y.max() + band
+        if fit == "harmonic" and not bounded:
+            raise ValueError(f"the N-harmonic fit (N = {n}) swings from {swing.min() / 1e-3:.4g} to "
+                             f"{swing.max() / 1e-3:.4g} mm of tappet lift between the rows; allowed "
+                             f"{-band / 1e-3:.4g} to {(y.max() + band) / 1e-3:.4g} mm (the table's range and 3 x "
+                             "accuracy_mm): use fit = \"spline\"")
+        self.fit = fit
+        self.start_angle, self.end_angle = lift_event(lambda t: self.fitted(t)[0], *window, band)
 
     def _harmonic_derivatives(self, t):
         a, b, w = self._harmonic
@@ -366,6 +472,7 @@ class TableLaw(RampedLaw):
         out = np.zeros((4, flat.size))
         inside = (flat >= self.start_angle) & (flat <= self.end_angle)
         out[:, inside] = self.fitted(flat[inside])
+        out[0] = np.maximum(out[0], 0.0)    # the round-off of the event's ends (the fit is positive inside)
         return out.reshape((4,) + theta.shape)
 
     def quality(self, kind):
@@ -416,3 +523,12 @@ class TableLaw(RampedLaw):
         return {"fit": self.fit, "harmonics": self.harmonics, "asymmetry_rms_mm": self.asymmetry_rms * 1e3,
                 "lobe_centre_cam_deg": float(np.degrees(self.centre)), "points": int(self.angles.size),
                 "rows_per_point": self.rows_per_point}
+
+
+def _smoothing_spline(x, y):
+    """Reinsch's smoothing spline with GCV; a failure is told in the terms of the table, not scipy's."""
+    try:
+        return make_smoothing_spline(x, y)
+    except (ValueError, np.linalg.LinAlgError):
+        raise ValueError(f"the smoothing spline cannot be fitted to the {x.size} points of the lobe (generalised "
+                         "cross-validation finds no smoothing for them)") from None
