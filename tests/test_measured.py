@@ -445,6 +445,36 @@ def test_no_library_message_reaches_the_user():
                               "cross-validation finds no smoothing for them)")
 
 
+def test_the_exported_lift_table_reads_back(tmp_path):
+    """Issue 10: `valvetrain run` of the built-in example writes contour/intake_lift.csv (tappet lift with the ramps,
+    cam deg from the gas-exchange TDC); read back as law = "table" it gives the example's valve lift (10 mm, not
+    10.4: the ramp takes up the clearance) and timing: the nose at 116 crank deg, the valve lift of 0.1 mm at the
+    crank angles where the Kurz law reaches it (root finding on the law)."""
+    from valvetrain.spec import example_spec, example_text
+
+    out = tmp_path / "design"
+    assert CliRunner().invoke(main, ["run", "--out", str(out)]).exit_code == 0
+    cam = ('[valves.intake.cam]\nlaw = "table"\ntable_file = "design/contour/intake_lift.csv"\ntable_angle = "cam"\n'
+           'table_lift_at = "tappet"\nbase_radius_mm = 20.0\n')
+    text = re.sub(r"\[valves\.intake\.cam\]\n(.*\n)*?(?=follower)", cam, example_text(), count=1)
+    text = re.sub(r"^(max_lift_mm|opens_deg|closes_deg) = .*\n", "", text, count=3, flags=re.MULTILINE)
+    back = run(load_spec(_write(tmp_path / "back.toml", text))).to_dict()["valves"]["intake"]
+    kurz = run(example_spec()).valves["intake"]
+    assert back["cam"]["law"] == "table"
+    assert back["flow"]["valve_lift_mm"] == pytest.approx(10.0, abs=0.01)
+    assert back["cam"]["nose_crank_deg"] == pytest.approx(116.0, abs=0.01)
+    rise, fall = level_span(lambda t: kurz.law.valve_lift(t, 1.6), kurz.law.start, kurz.law.end, 0.1e-3)
+    assert back["cam"]["measured"]["opens_deg_at_0.1mm"] == pytest.approx(-(116.0 + 2 * np.degrees(rise)), abs=0.3)
+    assert back["cam"]["measured"]["closes_deg_at_0.1mm"] == pytest.approx(116.0 + 2 * np.degrees(fall) - 180.0,
+                                                                           abs=0.3)
+    assert back["flow"]["time_area_mm2_s"] == pytest.approx(kurz.summary["flow"]["time_area_mm2_s"], rel=1e-3)
+
+
+def _write(path, text):
+    path.write_text(text)
+    return path
+
+
 def test_binning_keeps_a_straight_line():
     """Means of angle and lift in a bin lie on a straight line through the rows (an analytic identity); 10,000 rows
     into 100 bins of 100 rows each, their noise falls tenfold."""

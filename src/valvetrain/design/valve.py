@@ -159,7 +159,8 @@ def build_side(valve, strokes=4, rated_speed=None):
 def table_law(valve):
     """The law of a measured table (seed 002, sections 5.1-5.3), checked as one lobe of this valve.
 
-    A table of valve lift is divided by the rocker ratio.  The table sets the lift: a ``max_lift_mm`` given beside
+    A table of valve lift is divided by the rocker ratio; a table of tappet lift is the cam's lift with its ramps,
+    and the valve moves once the clearance is taken up.  The table sets the lift: a ``max_lift_mm`` given beside
     it must agree with it to 1 %.  The lobe must open the valve during the valve's own stroke.
 
     Raises
@@ -178,11 +179,12 @@ def table_law(valve):
 def _checked_table_law(valve, angle, lift):
     cam, i_k = valve.cam, valve.rocker_ratio
     at_valve = cam.table_lift_at == "valve"
-    least = MIN_VALVE_LIFT_MM / (1.0 if at_valve else i_k)
+    clearance = 0.0 if at_valve else valve.clearance_mm
+    least = MIN_VALVE_LIFT_MM / (1.0 if at_valve else i_k) + clearance
     theta, lift, per_point = lobe_table(angle, lift, cam.table_angle, cam.table_zero, cam.accuracy_mm, least)
     to_tappet = MM / (i_k if at_valve else 1.0)
     law = TableLaw(theta, lift * to_tappet, cam.fit, cam.accuracy_mm * to_tappet, cam.max_harmonics,
-                   rows_per_point=per_point)
+                   clearance * MM, per_point)
     table_lift = law.lift_max * i_k / MM
     if valve.max_lift_mm is not None and abs(valve.max_lift_mm - table_lift) > 0.01 * table_lift:
         raise ValueError(f"max_lift_mm = {valve.max_lift_mm:g} disagrees with the table's valve lift {table_lift:.4g} "
@@ -220,12 +222,12 @@ def measured_summary(valve, law, nose):
     quality = {kind: {"rms_residual_mm": q.rms_residual / MM, "max_residual_mm": q.max_residual / MM,
                       "jerk_sign_changes": q.jerk_sign_changes}
                for kind in ("spline", "harmonic") for q in [law.quality(kind)]}
-    rec = {"max_lift_mm": law.lift_max * at_valve / MM,
+    rec = {"max_lift_mm": (law.lift_max + law.ramp_height) * at_valve / MM,
            "lobe_centre_deg": rad_to_deg(law.centre) * to_table, "durations_deg": durations, "fit": law.fit,
            "harmonics": law.harmonics, "asymmetry_rms_mm": law.asymmetry_rms * at_valve / MM, "fit_quality": quality,
            "table_angle": cam.table_angle, "table_lift_at": cam.table_lift_at, "table_zero": cam.table_zero}
     # the timing the table implies, at the first checking height of valve lift (0.1 mm)
-    h = CHECKING_HEIGHTS_MM[0] * MM / valve.rocker_ratio
+    h = law.ramp_height + CHECKING_HEIGHTS_MM[0] * MM / valve.rocker_ratio
     half = 0.5 * law.duration(h)
     opens = -(nose - 2.0 * half) if valve.kind == "intake" else np.pi - (nose - 2.0 * half) - 2 * np.pi
     closes = (nose + 2.0 * half) - (np.pi if valve.kind == "intake" else 0.0)

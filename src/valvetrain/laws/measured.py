@@ -402,6 +402,9 @@ class TableLaw(RampedLaw):
         band is ``BASE_CIRCLE_ACCURACIES`` times it.
     max_harmonics : int
         Upper bound of N; N is also at most (points - 1) / ``HARMONIC_POINTS_PER_ORDER``.
+    ramp_height : float
+        Lift the follower makes before the valve moves [m]: the clearance in a table of tappet lift, which
+        holds the cam's ramps; 0 for a table of valve lift.
     rows_per_point : float
         Table rows averaged into each point (see :func:`binned`), for the record.
 
@@ -423,7 +426,8 @@ class TableLaw(RampedLaw):
     source = ('seed 002, sections 5.1-5.3; GCV smoothing spline or N-harmonic fit, nose finding and false asymmetry: '
               'spec/methods-seeds-002-004.md, sections 9-11 (reconstructed)')
 
-    def __init__(self, angles, lift, fit="spline", accuracy=5e-6, max_harmonics=60, rows_per_point=1.0):
+    def __init__(self, angles, lift, fit="spline", accuracy=5e-6, max_harmonics=60, ramp_height=0.0,
+                 rows_per_point=1.0):
         if fit not in FITS:
             raise ValueError(f"fit = {fit!r}: allowed {', '.join(repr(f) for f in FITS)}")
         x, y = np.asarray(angles, dtype=float), np.asarray(lift, dtype=float)
@@ -451,6 +455,13 @@ class TableLaw(RampedLaw):
                              "accuracy_mm): use fit = \"spline\"")
         self.fit = fit
         self.start_angle, self.end_angle = lift_event(lambda t: self.fitted(t)[0], *window, band)
+        self._ramp_height = float(ramp_height)
+        self._valve_span = (self.start_angle, self.end_angle)
+        if ramp_height > 0.0:
+            self._valve_span = level_span(lambda t: self.fitted(t)[0], self.start_angle, self.end_angle, ramp_height)
+            if not np.isfinite(self._valve_span[0]):
+                raise ValueError(f"the fitted lift never exceeds the clearance taken up by the ramp, "
+                                 f"{ramp_height / 1e-3:.4g} mm: the valve does not open")
 
     def _harmonic_derivatives(self, t):
         a, b, w = self._harmonic
@@ -498,7 +509,26 @@ class TableLaw(RampedLaw):
 
     @property
     def lift_max(self):
-        return float(self.fitted(np.zeros(1))[0, 0])
+        return float(self.fitted(np.zeros(1))[0, 0]) - self._ramp_height
+
+    @property
+    def ramp_height(self):
+        return self._ramp_height
+
+    @property
+    def ramp_angle(self):
+        """Opening ramp: from the start of the event to where the valve opens [rad]."""
+        return self._valve_span[0] - self.start_angle
+
+    @property
+    def valve_opens(self):
+        """Where the fitted lift exceeds the ramp height (the clearance) on the opening flank [rad]."""
+        return self._valve_span[0]
+
+    @property
+    def valve_closes(self):
+        """Where the fitted lift falls back to the ramp height on the closing flank [rad]."""
+        return self._valve_span[1]
 
     @property
     def main_half_angle(self):
