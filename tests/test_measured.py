@@ -445,6 +445,20 @@ def test_no_library_message_reaches_the_user():
                               "cross-validation finds no smoothing for them)")
 
 
+def test_the_default_fit_follows_the_accuracy(tmp_path):
+    """Issue 10: the example's GCV spline keeps its 2 um noise (min acceleration -2505 m/s2 against the law's
+    -1930).  By default (fit = "auto") the N-harmonic fit that meets accuracy_mm = 0.005 is used, and named in
+    results.json; its acceleration is the law's to 5 %."""
+    omega = np.pi * 7000 / 60
+    true = seed000_law().extremes(omega)
+    auto = _example_results(_spec_text(EXAMPLE_TABLE), tmp_path)
+    spline = _example_results(_spec_text(EXAMPLE_TABLE, fit='"spline"'), tmp_path)
+    assert auto.summary["cam"]["coefficients"]["fit"] == auto.summary["cam"]["measured"]["fit"] == "harmonic"
+    assert auto.summary["cam"]["min_acceleration_m_s2"] == pytest.approx(true.min_acceleration, rel=0.05)
+    assert auto.summary["cam"]["max_acceleration_m_s2"] == pytest.approx(true.max_acceleration, rel=0.05)
+    assert spline.summary["cam"]["min_acceleration_m_s2"] < 1.25 * true.min_acceleration
+
+
 def test_the_exported_lift_table_reads_back(tmp_path):
     """Issue 10: `valvetrain run` of the built-in example writes contour/intake_lift.csv (tappet lift with the ramps,
     cam deg from the gas-exchange TDC); read back as law = "table" it gives the example's valve lift (10 mm, not

@@ -279,7 +279,7 @@ class TableCam(_CamBase):
     table_angle: Literal["crank", "cam"]
     table_lift_at: Literal["valve", "tappet"]
     table_zero: Literal["gas_exchange_tdc", "firing_tdc"] = "gas_exchange_tdc"
-    fit: Literal["spline", "harmonic"] = "spline"
+    fit: Literal["auto", "spline", "harmonic"] = "auto"
     accuracy_mm: _bounded(0.0, 1.0, "mm") = 0.005
     max_harmonics: Annotated[int, Field(ge=4, le=400)] = 60
 

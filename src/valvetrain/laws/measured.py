@@ -52,8 +52,9 @@ HARMONIC_RCOND = 1e-8
 window of data does not determine (they live in the part of the period without data) are left out instead of
 being fitted to the noise with huge coefficients."""
 
-FITS = ("spline", "harmonic")
-"""Fits of a table: the smoothing spline or the N-harmonic fit."""
+FITS = ("auto", "spline", "harmonic")
+"""Fits of a table: the N-harmonic fit where it meets the stated accuracy (auto), the smoothing spline, or the
+N-harmonic fit."""
 
 
 class TableFileError(ValueError):
@@ -392,10 +393,13 @@ class TableLaw(RampedLaw):
         gas-exchange TDC / 2), as :func:`lobe_table` gives them.
     lift : ndarray
         Follower lift [m].
-    fit : {"spline", "harmonic"}
+    fit : {"auto", "spline", "harmonic"}
         The curve the law evaluates: Reinsch's smoothing spline with the smoothing chosen by
         generalised cross-validation (:func:`scipy.interpolate.make_smoothing_spline`), the
-        stand-in of the spec for Shang's 回弹法 fairing, or the N-harmonic fit.
+        stand-in of the spec for Shang's 回弹法 fairing, or the N-harmonic fit; ``"auto"`` takes the
+        N-harmonic fit where it meets the accuracy and stays within the table's range, else the spline
+        (GCV follows the measurement noise into the acceleration, a fit that meets the stated accuracy with
+        few harmonics does not).
     accuracy : float
         Measurement accuracy [m]: the harmonic order N is the smallest whose RMS residual
         meets it (spec section 9: choose N by the residual, not the largest N that fits); the base-circle
@@ -426,7 +430,7 @@ class TableLaw(RampedLaw):
     source = ('seed 002, sections 5.1-5.3; GCV smoothing spline or N-harmonic fit, nose finding and false asymmetry: '
               'spec/methods-seeds-002-004.md, sections 9-11 (reconstructed)')
 
-    def __init__(self, angles, lift, fit="spline", accuracy=5e-6, max_harmonics=60, ramp_height=0.0,
+    def __init__(self, angles, lift, fit="auto", accuracy=5e-6, max_harmonics=60, ramp_height=0.0,
                  rows_per_point=1.0):
         if fit not in FITS:
             raise ValueError(f"fit = {fit!r}: allowed {', '.join(repr(f) for f in FITS)}")
@@ -453,6 +457,8 @@ class TableLaw(RampedLaw):
                              f"{swing.max() / 1e-3:.4g} mm of tappet lift between the rows; allowed "
                              f"{-band / 1e-3:.4g} to {(y.max() + band) / 1e-3:.4g} mm (the table's range and 3 x "
                              "accuracy_mm): use fit = \"spline\"")
+        if fit == "auto":
+            fit = "harmonic" if bounded and self.harmonic_rms <= self.accuracy else "spline"
         self.fit = fit
         self.start_angle, self.end_angle = lift_event(lambda t: self.fitted(t)[0], *window, band)
         self._ramp_height = float(ramp_height)
