@@ -169,8 +169,9 @@ def lift_export_columns(valve, step_deg):
     """Tappet lift every ``step_deg`` cam degrees in the measured-table format ``angle_deg,lift_mm``.
 
     The angles are camshaft degrees in the engine's cam frame (crank angle from the
-    gas-exchange TDC / 2), so ``law = "table"`` with ``table_angle = "cam"`` and
-    ``table_lift_at = "tappet"`` reads the file back.
+    gas-exchange TDC / 2) and the lift is the cam's, ramps included, so ``law = "table"``
+    with ``table_angle = "cam"`` and ``table_lift_at = "tappet"`` reads the file back to the
+    same valve lift and timing (the ramp takes up the valve's clearance).
     """
     law = valve.law
     theta = np.radians(np.arange(np.ceil(np.degrees(law.start) / step_deg) * step_deg, np.degrees(law.end), step_deg))

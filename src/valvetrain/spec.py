@@ -291,7 +291,8 @@ class TableCam(_CamBase):
     table_file: str
     table_angle: Literal["crank", "cam"]
     table_lift_at: Literal["valve", "tappet"]
-    fit: Literal["spline", "harmonic"] = "spline"
+    table_zero: Literal["gas_exchange_tdc", "firing_tdc"] = "gas_exchange_tdc"
+    fit: Literal["auto", "spline", "harmonic"] = "auto"
     accuracy_mm: _bounded(1e-4, 1.0, "mm", low_open=False) = 0.005
     max_harmonics: Annotated[int, Field(ge=4, le=400)] = 60
 

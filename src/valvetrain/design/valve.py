@@ -17,7 +17,7 @@ from ..numerics import extremum
 from ..spec import SpecError, kurz_phi3_deg, main_half_angle_deg
 from ..springs import NoSpringFits
 from ..units import DEG, MM, rad_to_deg, rpm_to_rad_s
-from ..laws.measured import CHECKING_HEIGHTS_MM, TableLaw, read_lift_table
+from ..laws.measured import CHECKING_HEIGHTS_MM, MIN_VALVE_LIFT_MM, TableLaw, lobe_table, read_lift_table
 from ..laws.takeup import ClearanceTakeUp
 from .drive import drive_stage, reduced_mass
 
@@ -135,10 +135,7 @@ def build_side(valve, strokes=4, rated_speed=None):
         return ConstantAccelerationLaw(lift, h0, velocity, cam.phi1_deg * DEG, cam.phi2_deg * DEG,
                                        kurz_phi3_deg(cam, valve, strokes) * DEG, cam.kappa, **ramp)
     if cam.law == "table":
-        angle, lift = read_lift_table(cam.table_file)
-        theta = angle * DEG * (0.5 if cam.table_angle == "crank" else 1.0)
-        lift = lift * MM / (valve.rocker_ratio if cam.table_lift_at == "valve" else 1.0)
-        return TableLaw(theta, lift, cam.fit, cam.accuracy_mm * MM, cam.max_harmonics)
+        return table_law(valve)
     if cam.law == "harmonic":
         target = build_side(valve.model_copy(update={"cam": cam.target}), strokes, rated_speed)
         return HarmonicLaw(target, cam.harmonics, cam.junction_order)
@@ -176,6 +173,50 @@ def _rampless(cam, lift, half, r0, **ramp):
     return TangentLaw(r0, lift, half, cam.roller_radius_mm * MM)
 
 
+def table_law(valve):
+    """The law of a measured table (seed 002, sections 5.1-5.3), checked as one lobe of this valve.
+
+    A table of valve lift is divided by the rocker ratio; a table of tappet lift is the cam's lift with its ramps,
+    and the valve moves once the clearance is taken up.  The table sets the lift: a ``max_lift_mm`` given beside
+    it must agree with it to 1 %.  The lobe must open the valve during the valve's own stroke.
+
+    Raises
+    ------
+    ValueError
+        ``"<table file>: <what is wrong, the value, what is allowed>"``.
+    """
+    cam = valve.cam
+    angle, lift = read_lift_table(cam.table_file)      # its errors name the file and the line
+    try:
+        return _checked_table_law(valve, angle, lift)
+    except ValueError as exc:
+        raise ValueError(f"{cam.table_file}: {exc}") from None
+
+
+def _checked_table_law(valve, angle, lift):
+    cam, i_k = valve.cam, valve.rocker_ratio
+    at_valve = cam.table_lift_at == "valve"
+    clearance = 0.0 if at_valve else valve.clearance_mm
+    least = MIN_VALVE_LIFT_MM / (1.0 if at_valve else i_k) + clearance
+    theta, lift, per_point = lobe_table(angle, lift, cam.table_angle, cam.table_zero, cam.accuracy_mm, least)
+    to_tappet = MM / (i_k if at_valve else 1.0)
+    law = TableLaw(theta, lift * to_tappet, cam.fit, cam.accuracy_mm * to_tappet, cam.max_harmonics,
+                   clearance * MM, per_point)
+    table_lift = law.lift_max * i_k / MM
+    if valve.max_lift_mm is not None and abs(valve.max_lift_mm - table_lift) > 0.01 * table_lift:
+        raise ValueError(f"max_lift_mm = {valve.max_lift_mm:g} disagrees with the table's valve lift {table_lift:.4g} "
+                         f"mm; allowed {0.99 * table_lift:.4g}...{1.01 * table_lift:.4g} mm (+-1 %), or leave it out: "
+                         "the table sets the lift")
+    nose = valve_nose(valve, law)
+    lo, hi = (0.0, 180.0) if valve.kind == "intake" else (-180.0, 0.0)
+    opens, closes = (rad_to_deg(nose + 2.0 * t) for t in (law.valve_opens, law.valve_closes))
+    if closes <= lo or opens >= hi:
+        raise ValueError(f"the lobe opens the valve from {opens:.4g} to {closes:.4g} crank deg after the "
+                         f"gas-exchange TDC and misses the {valve.kind} stroke, {lo:g}...{hi:g} crank deg; check "
+                         "table_angle and table_zero (a table from the firing TDC needs table_zero = \"firing_tdc\")")
+    return law
+
+
 def valve_nose(valve, law):
     """Crank angle of the cam nose [rad]: from the measured table when the law carries its timing, else from
     opens_deg/closes_deg."""
@@ -198,21 +239,17 @@ def measured_summary(valve, law, nose):
     quality = {kind: {"rms_residual_mm": q.rms_residual / MM, "max_residual_mm": q.max_residual / MM,
                       "jerk_sign_changes": q.jerk_sign_changes}
                for kind in ("spline", "harmonic") for q in [law.quality(kind)]}
-    rec = {"max_lift_mm": law.lift_max * at_valve / MM, "lobe_centre_deg": rad_to_deg(law.centre) * to_table,
-           "durations_deg": durations, "fit": law.fit, "harmonics": law.harmonics,
-           "asymmetry_rms_mm": law.asymmetry_rms * at_valve / MM, "fit_quality": quality,
-           "table_angle": cam.table_angle, "table_lift_at": cam.table_lift_at}
+    rec = {"max_lift_mm": (law.lift_max + law.ramp_height) * at_valve / MM,
+           "lobe_centre_deg": rad_to_deg(law.centre) * to_table, "durations_deg": durations, "fit": law.fit,
+           "harmonics": law.harmonics, "asymmetry_rms_mm": law.asymmetry_rms * at_valve / MM, "fit_quality": quality,
+           "table_angle": cam.table_angle, "table_lift_at": cam.table_lift_at, "table_zero": cam.table_zero}
     # the timing the table implies, at the first checking height of valve lift (0.1 mm)
-    h = CHECKING_HEIGHTS_MM[0] * MM / valve.rocker_ratio
+    h = law.ramp_height + CHECKING_HEIGHTS_MM[0] * MM / valve.rocker_ratio
     half = 0.5 * law.duration(h)
     opens = -(nose - 2.0 * half) if valve.kind == "intake" else np.pi - (nose - 2.0 * half) - 2 * np.pi
     closes = (nose + 2.0 * half) - (np.pi if valve.kind == "intake" else 0.0)
     rec["opens_deg_at_0.1mm"], rec["closes_deg_at_0.1mm"] = rad_to_deg(opens), rad_to_deg(closes)
     found = []
-    if valve.max_lift_mm is not None:
-        table_lift = law.lift_max * valve.rocker_ratio / MM
-        found += check_range("max_lift_mm against the measured table", valve.max_lift_mm, 0.99 * table_lift,
-                             1.01 * table_lift, source="the table's maximum valve lift (+-1 %)", unit="mm")
     for key, derived in (("opens_deg", rec["opens_deg_at_0.1mm"]), ("closes_deg", rec["closes_deg_at_0.1mm"])):
         given = getattr(valve, key)
         if given is not None:

@@ -1,24 +1,60 @@
-"""Measured lift tables: reading, smoothing-spline and N-harmonic fits, nose finding and false asymmetry,
-checking-height durations, and the measured cam as a lift law
+"""Measured lift tables: reading, checking and trimming to the lobe, smoothing-spline and N-harmonic fits,
+nose finding and false asymmetry, checking-height durations, and the measured cam as a lift law
 (seed 002 contents, sections 5.1-5.3; spec/methods-seeds-002-004.md, sections 9-11 [R]).
 
-Angles inside are camshaft radians; a table measured against the crank angle is halved
-when read.  Lifts are follower (tappet) lifts [m]; a table of valve lift is divided by
-the rocker ratio.
+Angles inside are camshaft radians in the engine's cam frame (crank angle from the gas-exchange TDC / 2); a
+table measured against the crank angle is halved, and one measured from the firing TDC is turned back by 360
+crank deg.  Lifts are follower (tappet) lifts [m]; a table of valve lift is divided by the rocker ratio.
 """
 
 from dataclasses import dataclass
 
 import numpy as np
 from scipy.interpolate import make_smoothing_spline
+from scipy.optimize import brentq
 
 from ..checks import check_range
-from ..csvfiles import read_two_columns
+from ..csvfiles import read_two_column_arrays, read_two_columns
 from ..numerics import extremum, level_span
 from .base import RampedLaw, Segment
 
 CHECKING_HEIGHTS_MM = (0.1, 0.5, 1.0, 1.27)
 """Standard checking heights [mm]: 0.1, 0.5, 1.0 mm and 0.050 in = 1.27 mm."""
+
+BASE_CIRCLE_ACCURACIES = 3.0
+"""Half-width of the base-circle band in measurement accuracies: a lift within 3 x accuracy_mm of zero is the
+base circle (noise and run-out of the measurement).  A table must start and end in the band and no row may lie
+below it; a fit must stay within it below zero and above the table's largest lift."""
+
+MIN_VALVE_LIFT_MM = 0.3
+"""Smallest largest valve lift of a table [mm]: about the valve clearance (0.25-0.35 mm inlet, seed 000, work 2);
+a table that lifts the valve less holds a ramp or noise, not a cam lobe."""
+
+MAX_TABLE_ROWS = 1_000_000
+"""Most rows of a lift table (10^6: a row every 0.0007 crank deg over a whole revolution)."""
+
+FIT_POINTS = 1000
+"""Most points a fit sees: a denser lobe is averaged in bins of equal angle (about 0.2 cam deg for a lobe with
+its margin), which also lowers its noise by the square root of the rows in a bin."""
+
+LOBE_MARGIN = 0.1
+"""Base circle kept on either side of the lobe for the fits, as a fraction of the lobe's angle: the rows
+further out do not change the analysis."""
+
+MIN_LOBE_POINTS = 20
+"""Fewest rows of a lobe with its margin (the N-harmonic fit takes at least N = 4, nine coefficients)."""
+
+HARMONIC_POINTS_PER_ORDER = 4
+"""The harmonic order N is at most (points - 1) / 4: the 2N + 1 coefficients come from twice as many points."""
+
+HARMONIC_RCOND = 1e-8
+"""Relative cut-off of the singular values in the harmonic least squares: the combinations of harmonics the
+window of data does not determine (they live in the part of the period without data) are left out instead of
+being fitted to the noise with huge coefficients."""
+
+FITS = ("auto", "spline", "harmonic")
+"""Fits of a table: the N-harmonic fit where it meets the stated accuracy (auto), the smoothing spline, or the
+N-harmonic fit."""
 
 
 class TableFileError(ValueError):
@@ -36,18 +72,146 @@ def read_lift_table(path):
     Raises
     ------
     TableFileError
-        Naming the file and line of the first problem.
+        Naming the file and line of the first problem; also for more than :data:`MAX_TABLE_ROWS` rows.
     """
-    _, rows = read_two_columns(path, [("angle_deg", "lift_mm")], TableFileError)
-    angles, lifts = [], []
-    for n, a, h in rows:
-        if angles and a <= angles[-1]:
-            raise TableFileError(f"{path}:{n}: angle_deg = {a:g} must be larger than the previous {angles[-1]:g}")
-        angles.append(a)
-        lifts.append(h)
-    if len(angles) < 10:
-        raise TableFileError(f"{path}: at least 10 rows are needed to fit a lift curve, found {len(angles)}")
-    return np.array(angles), np.array(lifts)
+    _, angles, lifts = read_two_column_arrays(path, [("angle_deg", "lift_mm")], TableFileError)
+    back = np.flatnonzero(np.diff(angles) <= 0.0)
+    if back.size:
+        i = int(back[0]) + 1
+        line = read_two_columns(path, [("angle_deg", "lift_mm")], TableFileError)[1][i][0]
+        raise TableFileError(f"{path}:{line}: angle_deg = {angles[i]:g} must be larger than the previous "
+                             f"{angles[i - 1]:g}")
+    if angles.size < 10:
+        raise TableFileError(f"{path}: at least 10 rows are needed to fit a lift curve, found {angles.size}")
+    if angles.size > MAX_TABLE_ROWS:
+        raise TableFileError(f"{path}: {angles.size} rows; allowed at most {MAX_TABLE_ROWS}: thin the table")
+    return angles, lifts
+
+
+def lobe_table(angle_deg, lift_mm, angle="crank", zero="gas_exchange_tdc", accuracy_mm=0.005,
+               min_lift_mm=MIN_VALVE_LIFT_MM):
+    """The lobe of a lift table in the engine's cam frame: checked, trimmed and bounded in size for the fits.
+
+    The table must cover at most one camshaft revolution, rise from the base circle (within
+    ``BASE_CIRCLE_ACCURACIES`` x ``accuracy_mm`` of zero) to at least ``min_lift_mm`` and hold one lobe: one
+    region of lift; rows at the base circle separate regions (a single such row between lifted rows is
+    noise).  A table of a whole revolution may cut the lobe at its ends; it is turned to start in the middle of
+    its base circle.  The angles are moved into the engine's cam frame (firing TDC = gas-exchange TDC + 360
+    crank deg; the highest row within (-180, 180] cam deg), the rows are trimmed to the lobe and
+    ``LOBE_MARGIN`` of its angle of base circle on either side (the analysis does not depend on how much base
+    circle the table holds) and, beyond ``FIT_POINTS`` rows, averaged in bins of equal angle.
+
+    Parameters
+    ----------
+    angle_deg, lift_mm : ndarray
+        The table: strictly increasing angles [deg] and lifts [mm].
+    angle : {"crank", "cam"}
+        What the angles measure.
+    zero : {"gas_exchange_tdc", "firing_tdc"}
+        The table's zero: the TDC that starts the intake stroke, or the firing TDC (360 crank deg later).
+    accuracy_mm : float
+        Measurement accuracy [mm].
+    min_lift_mm : float
+        Least largest lift of a lobe, in the table's lift [mm].
+
+    Returns
+    -------
+    (ndarray, ndarray, float)
+        Camshaft angles [rad] in the engine's cam frame, lifts [mm] as in the table, and the table rows per
+        point (1 unless binned).
+
+    Raises
+    ------
+    ValueError
+        Naming the rows, their values and what is allowed.
+
+    References
+    ----------
+    seed 002 contents, section 5.1 (a measured table of the lobe); this project's reading of what a table of one
+    lobe is.
+    """
+    revolution = 720.0 if angle == "crank" else 360.0
+    unit = f"{angle} deg"
+    a, h = np.asarray(angle_deg, dtype=float), np.asarray(lift_mm, dtype=float)
+    if a[-1] - a[0] > revolution:
+        raise ValueError(f"angle_deg runs from {a[0]:g} to {a[-1]:g} {unit} ({a[-1] - a[0]:g}); a table covers "
+                         f"at most one camshaft revolution, {revolution:g} {unit}")
+    band = BASE_CIRCLE_ACCURACIES * accuracy_mm
+    low, top = int(np.argmin(h)), int(np.argmax(h))
+    if h[low] < -band:
+        raise ValueError(f"lift_mm = {h[low]:g} at angle_deg = {a[low]:g} lies below the base circle; allowed "
+                         f">= {-band:g} mm (3 x accuracy_mm of measurement noise)")
+    if h[top] < min_lift_mm:
+        raise ValueError(f"the largest lift is {h[top]:g} mm (angle_deg = {a[top]:g}); a cam lobe lifts the valve "
+                         f"at least {MIN_VALVE_LIFT_MM:g} mm: allowed >= {min_lift_mm:.4g} mm in this table")
+    a, h = _whole_lobe(a, h, band, revolution, unit)
+    first, last = _one_lobe(a, h, band)
+    cam = (a + (0.5 * revolution if zero == "firing_tdc" else 0.0)) * (360.0 / revolution)
+    cam -= 360.0 * np.ceil((cam[np.argmax(h)] - 180.0) / 360.0)
+    margin = LOBE_MARGIN * (cam[last] - cam[first])
+    keep = (cam >= cam[first] - margin) & (cam <= cam[last] + margin)
+    if keep.sum() < MIN_LOBE_POINTS:
+        raise ValueError(f"the lobe (lift above {band:g} mm from angle_deg = {a[first]:g} to {a[last]:g}) has "
+                         f"{keep.sum()} rows with its margin of base circle; at least {MIN_LOBE_POINTS} are needed "
+                         "to fit it")
+    x, y, per_point = binned(cam[keep], h[keep], FIT_POINTS)
+    return np.radians(x), y, per_point
+
+
+def _whole_lobe(a, h, band, revolution, unit):
+    """The table, turned to start in the middle of its base circle if it covers a whole revolution and its
+    lobe runs over its ends; otherwise it must start and end on the base circle."""
+    lifted = h > band
+    if not (lifted[0] or lifted[-1]):
+        return a, h
+    whole = revolution - (a[-1] - a[0]) <= 2.0 * np.median(np.diff(a))
+    if whole and not lifted.all():
+        if a[-1] - a[0] >= revolution * (1.0 - 1e-12):   # the last row repeats the first
+            a, h, lifted = a[:-1], h[:-1], lifted[:-1]
+        base = np.flatnonzero(~lifted)
+        m = base[base.size // 2]
+        return np.concatenate([a[m:], a[:m] + revolution]), np.concatenate([h[m:], h[:m]])
+    end, i = ("first", 0) if lifted[0] else ("last", -1)
+    raise ValueError(f"the {end} row, angle_deg = {a[i]:g}, lifts {h[i]:g} mm: a table starts and ends on the base "
+                     f"circle, allowed |lift| <= {band:g} mm (3 x accuracy_mm), or covers a whole revolution "
+                     f"({revolution:g} {unit}) around the lobe")
+
+
+def _one_lobe(a, h, band):
+    """First and last row of the lobe, the region of lift around the highest row; a second region that rises
+    above twice the base-circle band (well above the noise) is a second lobe."""
+    rows = np.flatnonzero(h > band)
+    regions = np.split(rows, np.flatnonzero(np.diff(rows) > 2) + 1)
+    top = int(np.argmax(h))
+    lobe = next(r for r in regions if r[0] <= top <= r[-1])
+    for r in regions:
+        if r is not lobe and h[r].max() > 2.0 * band:
+            raise ValueError(f"a second lift region, angle_deg = {a[r[0]]:g} to {a[r[-1]]:g} (up to {h[r].max():g} "
+                             f"mm), besides the lobe at {a[lobe[0]]:g} to {a[lobe[-1]]:g}, separated by base-circle "
+                             "rows; a table holds one lobe")
+    return int(lobe[0]), int(lobe[-1])
+
+
+def binned(x, y, points):
+    """Rows averaged in at most ``points`` bins of equal width in x; empty bins are dropped.
+
+    Averaging the angle with the lift keeps the points on the curve to second order (the bias is h'' w^2 / 24
+    for a bin of width w, below 0.02 um for 0.2 cam deg bins of a lobe); the noise falls by the square root of
+    the rows in a bin.
+
+    Returns
+    -------
+    (ndarray, ndarray, float)
+        Mean x and y of the bins, and the mean number of rows in a bin (1 when ``x`` has no more than ``points``
+        rows: returned as they are).
+    """
+    if x.size <= points:
+        return x, y, 1.0
+    bins = np.minimum(((x - x[0]) / (x[-1] - x[0]) * points).astype(int), points - 1)
+    count = np.bincount(bins, minlength=points)
+    full = count > 0
+    return (np.bincount(bins, x, points)[full] / count[full], np.bincount(bins, y, points)[full] / count[full],
+            x.size / full.sum())
 
 
 def harmonic_fit(theta, lift, harmonics, period_half):
@@ -76,8 +240,86 @@ def harmonic_fit(theta, lift, harmonics, period_half):
     w = np.pi / period_half
     k = np.arange(harmonics + 1)
     design = np.hstack([np.cos(np.outer(theta, k * w)), np.sin(np.outer(theta, k[1:] * w))])
-    coef = np.linalg.lstsq(design, lift, rcond=None)[0]
+    coef = np.linalg.lstsq(design, lift, rcond=HARMONIC_RCOND)[0]
     return coef[: harmonics + 1], np.concatenate([[0.0], coef[harmonics + 1:]]), w
+
+
+def harmonic_lift(theta, a, b, w):
+    """The N-harmonic series sum a_k cos(k w t) + b_k sin(k w t) at angles theta [rad]."""
+    k = np.arange(a.size) * w
+    return np.cos(np.outer(theta, k)) @ a + np.sin(np.outer(theta, k)) @ b
+
+
+def harmonic_order(theta, lift, accuracy, most, period_half):
+    """The smallest order N <= ``most`` whose N-harmonic fit meets the accuracy, and its fit (spec section 9:
+    choose N by the residual against the measurement accuracy, not the largest N that fits).
+
+    The residual falls with N (the fits are nested), so N is bracketed by doubling from 4 and then found by
+    bisection: about 2 log2(N) fits instead of one per order.  If even ``most`` does not meet the accuracy,
+    N = ``most``.
+
+    Returns
+    -------
+    (int, ndarray, ndarray, float, float)
+        N, a_0..a_N, b_0..b_N, w (see :func:`harmonic_fit`) and the RMS residual [m].
+    """
+    def fit(n):
+        a, b, w = harmonic_fit(theta, lift, n, period_half)
+        return n, a, b, w, float(np.sqrt(np.mean((lift - harmonic_lift(theta, a, b, w)) ** 2)))
+
+    low, best = 3, fit(min(4, most))      # orders <= low miss the accuracy
+    while best[4] > accuracy and best[0] < most:
+        low, best = best[0], fit(min(2 * best[0], most))
+    while best[4] <= accuracy and best[0] - low > 1:
+        trial = fit((low + best[0]) // 2)
+        if trial[4] <= accuracy:
+            best = trial
+        else:
+            low = trial[0]
+    return best
+
+
+def lift_event(fn, a, b, level, samples=4001):
+    """Where a fitted lift leaves the base circle and returns to it, within [a, b].
+
+    The lobe is the stretch around the fit's highest point that stays above ``level`` (the noise band of the
+    base circle); on either side the event ends at the nearest point where the fit reaches zero, so that the
+    fitted lift inside the event is positive and its ends carry lift and velocity of the order of the noise.
+    Where the fit stays above zero up to the edge of the window, the event ends at its lowest point there.
+
+    Parameters
+    ----------
+    fn : callable
+        Vectorised fitted lift ``fn(theta)`` [m].
+    a, b : float
+        The window of the data [rad].
+    level : float
+        Half-width of the base-circle band [m].
+    samples : int
+        Grid on which the crossings are located before Brent's method refines them.
+
+    Returns
+    -------
+    (float, float)
+        Start and end of the event [rad].
+    """
+    x = np.linspace(a, b, samples)
+    h = fn(x)
+    top = int(np.argmax(h))
+    quiet = np.flatnonzero(h <= level)
+    i = quiet[quiet < top].max(initial=0)
+    j = quiet[quiet > top].min(initial=samples - 1)
+
+    def root(k):  # the zero of the fit between x[k] and x[k + 1], where its sign changes
+        if h[k] == 0.0 or h[k + 1] == 0.0:
+            return x[k] if h[k] == 0.0 else x[k + 1]
+        return brentq(lambda t: float(fn(np.array([t]))[0]), x[k], x[k + 1], xtol=1e-14)
+
+    zero = np.flatnonzero(h[:i + 1] <= 0.0)
+    start = root(int(zero[-1])) if zero.size else x[int(np.argmin(h[:i + 1]))]
+    zero = np.flatnonzero(h[j:] <= 0.0)
+    end = root(j + int(zero[0]) - 1) if zero.size else x[j + int(np.argmin(h[j:]))]
+    return float(start), float(end)
 
 
 def symmetry_shift(a, b, w, half_width, search=0.2, samples=801):
@@ -140,57 +382,92 @@ class FitQuality:
 class TableLaw(RampedLaw):
     """A measured lift table as a lift law, through a smoothing spline (GCV) or an N-harmonic fit.
 
+    The event is where the fit leaves the base circle and returns to it (:func:`lift_event`): outside it the
+    lift is zero, inside it the fitted lift is positive, so the law never dips below the base circle and its
+    event does not depend on how much base circle the table holds.
+
     Parameters
     ----------
     angles : ndarray
-        Camshaft angles of the table [rad] in the engine's cam frame (crank angle from the
-        gas-exchange TDC / 2).
+        Camshaft angles of the lobe's rows [rad] in the engine's cam frame (crank angle from the
+        gas-exchange TDC / 2), as :func:`lobe_table` gives them.
     lift : ndarray
         Follower lift [m].
-    fit : {"spline", "harmonic"}
+    fit : {"auto", "spline", "harmonic"}
         The curve the law evaluates: Reinsch's smoothing spline with the smoothing chosen by
         generalised cross-validation (:func:`scipy.interpolate.make_smoothing_spline`), the
-        stand-in of the spec for Shang's 回弹法 fairing, or the N-harmonic fit.
+        stand-in of the spec for Shang's 回弹法 fairing, or the N-harmonic fit; ``"auto"`` takes the
+        N-harmonic fit where it meets the accuracy and stays within the table's range, else the spline
+        (GCV follows the measurement noise into the acceleration, a fit that meets the stated accuracy with
+        few harmonics does not).
     accuracy : float
         Measurement accuracy [m]: the harmonic order N is the smallest whose RMS residual
-        meets it (spec section 9: choose N by the residual, not the largest N that fits).
+        meets it (spec section 9: choose N by the residual, not the largest N that fits); the base-circle
+        band is ``BASE_CIRCLE_ACCURACIES`` times it.
     max_harmonics : int
-        Upper bound of N.
+        Upper bound of N; N is also at most (points - 1) / ``HARMONIC_POINTS_PER_ORDER``.
+    ramp_height : float
+        Lift the follower makes before the valve moves [m]: the clearance in a table of tappet lift, which
+        holds the cam's ramps; 0 for a table of valve lift.
+    rows_per_point : float
+        Table rows averaged into each point (see :func:`binned`), for the record.
 
     Attributes
     ----------
     centre : float
         The lobe centre (symmetry axis) in the table's cam frame [rad], after the false-asymmetry correction.
+    fit : str
+        The fit the law evaluates, ``"spline"`` or ``"harmonic"``.
+
+    Raises
+    ------
+    ValueError
+        For ``fit = "harmonic"`` when the fit leaves the band [-3 accuracy, largest lift + 3 accuracy] between
+        the rows (the message suggests the spline), and for a spline that cannot be fitted.
     """
 
     name = "table"
     source = ('seed 002, sections 5.1-5.3; GCV smoothing spline or N-harmonic fit, nose finding and false asymmetry: '
               'spec/methods-seeds-002-004.md, sections 9-11 (reconstructed)')
 
-    def __init__(self, angles, lift, fit="spline", accuracy=5e-6, max_harmonics=60):
+    def __init__(self, angles, lift, fit="auto", accuracy=5e-6, max_harmonics=60, ramp_height=0.0,
+                 rows_per_point=1.0):
+        if fit not in FITS:
+            raise ValueError(f"fit = {fit!r}: allowed {', '.join(repr(f) for f in FITS)}")
         x, y = np.asarray(angles, dtype=float), np.asarray(lift, dtype=float)
-        self.angles, self.values = x, y
-        self.fit = fit
-        top = int(np.argmax(y))
-        half = max(x[top] - x[0], x[-1] - x[top])
-        period_half = 1.15 * half
+        self.angles, self.values, self.accuracy = x, y, float(accuracy)
+        self.rows_per_point = float(rows_per_point)
         # N-harmonic fit about the highest point, the smallest N meeting the accuracy
-        for n in range(4, max_harmonics + 1):
-            a, b, w = harmonic_fit(x - x[top], y, n, period_half)
-            k = np.arange(n + 1)
-            resid = y - (np.cos(np.outer(x - x[top], k * w)) @ a + np.sin(np.outer(x - x[top], k * w)) @ b)
-            if np.sqrt(np.mean(resid**2)) <= accuracy:
-                break
-        self.accuracy, self.harmonic_rms = float(accuracy), float(np.sqrt(np.mean(resid**2)))
+        top = int(np.argmax(y))
+        most = max(4, min(max_harmonics, (x.size - 1) // HARMONIC_POINTS_PER_ORDER))
+        n, a, b, w, self.harmonic_rms = harmonic_order(x - x[top], y, self.accuracy, most,
+                                                       1.15 * max(x[top] - x[0], x[-1] - x[top]))
         shift, self.asymmetry_rms = symmetry_shift(a, b, w, min(x[top] - x[0], x[-1] - x[top]))
         self.centre = float(x[top] + shift)
         self.harmonics = int(n)
-        self._harmonic = (a * np.cos(np.arange(n + 1) * w * shift) + b * np.sin(np.arange(n + 1) * w * shift),
-                          b * np.cos(np.arange(n + 1) * w * shift) - a * np.sin(np.arange(n + 1) * w * shift), w)
-        self._spline = make_smoothing_spline(x - self.centre, y)
-        self.start_angle, self.end_angle = float(x[0] - self.centre), float(x[-1] - self.centre)
-        if fit not in ("spline", "harmonic"):
-            raise ValueError(f"fit = {fit!r}: allowed 'spline' or 'harmonic'")
+        cos, sin = np.cos(np.arange(n + 1) * w * shift), np.sin(np.arange(n + 1) * w * shift)
+        self._harmonic = (a * cos + b * sin, b * cos - a * sin, w)
+        self._spline = _smoothing_spline(x - self.centre, y)
+        window = (float(x[0] - self.centre), float(x[-1] - self.centre))
+        band = BASE_CIRCLE_ACCURACIES * self.accuracy
+        swing = self.fitted(np.linspace(*window, 8001), "harmonic")[0]
+        bounded = swing.min() >= -band and swing.max() <= y.max() + band
+        if fit == "harmonic" and not bounded:
+            raise ValueError(f"the N-harmonic fit (N = {n}) swings from {swing.min() / 1e-3:.4g} to "
+                             f"{swing.max() / 1e-3:.4g} mm of tappet lift between the rows; allowed "
+                             f"{-band / 1e-3:.4g} to {(y.max() + band) / 1e-3:.4g} mm (the table's range and 3 x "
+                             "accuracy_mm): use fit = \"spline\"")
+        if fit == "auto":
+            fit = "harmonic" if bounded and self.harmonic_rms <= self.accuracy else "spline"
+        self.fit = fit
+        self.start_angle, self.end_angle = lift_event(lambda t: self.fitted(t)[0], *window, band)
+        self._ramp_height = float(ramp_height)
+        self._valve_span = (self.start_angle, self.end_angle)
+        if ramp_height > 0.0:
+            self._valve_span = level_span(lambda t: self.fitted(t)[0], self.start_angle, self.end_angle, ramp_height)
+            if not np.isfinite(self._valve_span[0]):
+                raise ValueError(f"the fitted lift never exceeds the clearance taken up by the ramp, "
+                                 f"{ramp_height / 1e-3:.4g} mm: the valve does not open")
 
     def _harmonic_derivatives(self, t):
         a, b, w = self._harmonic
@@ -212,6 +489,7 @@ class TableLaw(RampedLaw):
         out = np.zeros((4, flat.size))
         inside = (flat >= self.start_angle) & (flat <= self.end_angle)
         out[:, inside] = self.fitted(flat[inside])
+        out[0] = np.maximum(out[0], 0.0)    # the round-off of the event's ends (the fit is positive inside)
         return out.reshape((4,) + theta.shape)
 
     def quality(self, kind):
@@ -237,7 +515,26 @@ class TableLaw(RampedLaw):
 
     @property
     def lift_max(self):
-        return float(self.fitted(np.zeros(1))[0, 0])
+        return float(self.fitted(np.zeros(1))[0, 0]) - self._ramp_height
+
+    @property
+    def ramp_height(self):
+        return self._ramp_height
+
+    @property
+    def ramp_angle(self):
+        """Opening ramp: from the start of the event to where the valve opens [rad]."""
+        return self._valve_span[0] - self.start_angle
+
+    @property
+    def valve_opens(self):
+        """Where the fitted lift exceeds the ramp height (the clearance) on the opening flank [rad]."""
+        return self._valve_span[0]
+
+    @property
+    def valve_closes(self):
+        """Where the fitted lift falls back to the ramp height on the closing flank [rad]."""
+        return self._valve_span[1]
 
     @property
     def main_half_angle(self):
@@ -257,6 +554,17 @@ class TableLaw(RampedLaw):
                                   "section 9: N by the residual against the accuracy, 0.002-0.01 mm)")
 
     def coefficients(self):
-        """The fit used, the harmonic order, the remaining (true) asymmetry and the lobe centre."""
+        """The fit used, the harmonic order, the remaining (true) asymmetry, the lobe centre and the points fitted
+        (with the table rows averaged into each)."""
         return {"fit": self.fit, "harmonics": self.harmonics, "asymmetry_rms_mm": self.asymmetry_rms * 1e3,
-                "lobe_centre_cam_deg": float(np.degrees(self.centre)), "points": int(self.angles.size)}
+                "lobe_centre_cam_deg": float(np.degrees(self.centre)), "points": int(self.angles.size),
+                "rows_per_point": self.rows_per_point}
+
+
+def _smoothing_spline(x, y):
+    """Reinsch's smoothing spline with GCV; a failure is told in the terms of the table, not scipy's."""
+    try:
+        return make_smoothing_spline(x, y)
+    except (ValueError, np.linalg.LinAlgError):
+        raise ValueError(f"the smoothing spline cannot be fitted to the {x.size} points of the lobe (generalised "
+                         "cross-validation finds no smoothing for them)") from None

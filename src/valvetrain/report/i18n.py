@@ -55,9 +55,9 @@ TEXT = {
         "port_time_area": "time-area, mm²·s", "port": "Port", "pressure_model": "Cylinder pressure",
         "names": {
             "max_lift_mm": "max lift in the table, mm", "lobe_centre_deg": "lobe centre (after the asymmetry "
-            "correction), deg", "harmonics": "harmonics of the N-harmonic fit", "asymmetry_rms_mm":
+            "correction), deg from the gas-exchange TDC", "harmonics": "harmonics of the N-harmonic fit", "asymmetry_rms_mm":
             "rms odd part (true asymmetry) after the correction, mm", "table_angle": "table angles",
-            "table_lift_at": "table lift at", "opens_deg_at_0.1mm": "opens at 0.1 mm valve lift, crank deg",
+            "table_lift_at": "table lift at", "table_zero": "table angles from", "opens_deg_at_0.1mm": "opens at 0.1 mm valve lift, crank deg",
             "closes_deg_at_0.1mm": "closes at 0.1 mm valve lift, crank deg", "source": "source",
             "V1_m_s": "V' throat velocity, m/s (seed 000, eq. 1.1)",
             "V2_m_s": "V'' curtain velocity at full lift, m/s (eq. 1.2)",
@@ -145,9 +145,9 @@ TEXT = {
         "pressure_model": "Давление в цилиндре",
         "names": {
             "max_lift_mm": "наибольший подъём в таблице, мм", "lobe_centre_deg": "ось кулачка (после исправления "
-            "асимметрии), град", "harmonics": "число гармоник аппроксимации", "asymmetry_rms_mm":
+            "асимметрии), град от ВМТ газообмена", "harmonics": "число гармоник аппроксимации", "asymmetry_rms_mm":
             "СКО нечётной части (истинная асимметрия) после исправления, мм", "table_angle": "углы таблицы",
-            "table_lift_at": "подъём в таблице", "opens_deg_at_0.1mm": "открытие при подъёме клапана 0,1 мм, град ПКВ",
+            "table_lift_at": "подъём в таблице", "table_zero": "углы таблицы от", "opens_deg_at_0.1mm": "открытие при подъёме клапана 0,1 мм, град ПКВ",
             "closes_deg_at_0.1mm": "закрытие при подъёме клапана 0,1 мм, град ПКВ", "source": "источник",
             "V1_m_s": "V′ скорость в горловине, м/с (сем. 000, ф. 1.1)",
             "V2_m_s": "V″ скорость при полном подъёме, м/с (ф. 1.2)",
