@@ -782,8 +782,8 @@ def _frame(tb_entries):
         short = name[cut + 1:] if cut >= 0 else name
         return f"{short}:{fr.lineno} ({fr.name})"
 
-    own = [fr for fr in tb_entries if "/valvetrain/" in fr.filename.replace("\\", "/")
-           and "/tools/" not in fr.filename.replace("\\", "/")]
+    tb_entries = [fr for fr in tb_entries if not fr.filename.endswith("fuzz_specs.py")]
+    own = [fr for fr in tb_entries if "/valvetrain/" in fr.filename.replace("\\", "/")]
     return (fmt(own[-1]) if own else "(no valvetrain frame)"), (fmt(tb_entries[-1]) if tb_entries else "")
 
 
@@ -1120,12 +1120,13 @@ def run_cases(cases, workers=2, timeout=60.0, write=False, progress=None):
             try:
                 while todo or inflight:
                     while todo and len(inflight) < workers:
-                        i = todo.popleft()
-                        inflight[pool.submit(_worker, cases[i], timeout, write)] = i
+                        inflight[pool.submit(_worker, cases[todo[0]], timeout, write)] = todo[0]
+                        todo.popleft()
                     finished, _ = wait(inflight, return_when=FIRST_COMPLETED)
                     for fut in finished:
+                        rec = fut.result()
                         i = inflight.pop(fut)
-                        records[i] = fut.result()
+                        records[i] = rec
                         done += 1
                         if progress:
                             progress(done, len(cases), records[i])
