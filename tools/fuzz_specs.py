@@ -829,7 +829,8 @@ def null_problems(data, valve_names):
             key = str(path[-1]) if path else ""
             if key in DOCUMENTED_NULLS and v is None:
                 continue
-            if key.endswith("margin") and v == math.inf:
+            margin = key.endswith("margin") or (len(path) > 1 and path[-2] == "margins")
+            if margin and v == math.inf:
                 continue      # springs._margin: a check switched off passes with an infinite margin
             out.append((_generic(path, valve_names), f"{dotted(path)} = {v!r}"))
     return out
@@ -948,13 +949,21 @@ def check_results(results, tmp, write):
     return nans, plausibility(results)
 
 
-def _dedupe(pairs):
-    seen, out = set(), []
-    for k, t in pairs:
-        if k not in seen:
-            seen.add(k)
-            out.append((k, t))
-    return out
+def _group(key):
+    """The signature of one NaN/nonsense finding: a measured table's timing record counts once, list items once."""
+    key = re.sub(r"^(valves\.NAME\.cam\.measured)\..*", r"\1", key)
+    return key.replace("[]", "")
+
+
+def _signatures(pairs):
+    """Distinct signatures of findings ``[(key, text)]``; ``warnings.value`` (a copy of a value found elsewhere)
+    only when it is the only finding."""
+    out = []
+    for k, _ in pairs:
+        g = _group(k)
+        if g not in out:
+            out.append(g)
+    return [g for g in out if g != "warnings.value"] or out
 
 
 def run_case(case, bases, timeout=60.0, write=False):
@@ -983,12 +992,11 @@ def run_case(case, bases, timeout=60.0, write=False):
             signal.setitimer(signal.ITIMER_REAL, 0)
             rec["other_warnings"] = sorted({f"{w.category.__name__}: {str(w.message)[:120]}" for w in caught})
             if nans:
-                nans = _dedupe(nans)
-                rec.update(outcome="nan_output", signature=" | ".join(k for k, _ in nans[:3]),
+                rec.update(outcome="nan_output", signatures=[f"nan_output: {g}" for g in _signatures(nans)],
                            detail=[t for _, t in nans[:10]])
             elif nonsense:
-                rec.update(outcome="nonsense", signature=" | ".join(k for k, _ in nonsense),
-                           detail=[t for _, t in nonsense])
+                rec.update(outcome="nonsense", signatures=[f"nonsense: {g}" for g in _signatures(nonsense)],
+                           detail=[t for _, t in nonsense[:10]])
             else:
                 rec["outcome"] = "ok"
         except SpecError as err:
@@ -1017,8 +1025,10 @@ def run_case(case, bases, timeout=60.0, write=False):
             signal.setitimer(signal.ITIMER_REAL, 0)
             signal.signal(signal.SIGALRM, old)
     rec["seconds"] = round(time.monotonic() - t0, 3)
-    if rec["outcome"] in ("nan_output", "nonsense"):
-        rec["signature"] = f"{rec['outcome']}: {rec['signature']}"
+    if "signature" in rec:
+        rec["signatures"] = [rec["signature"]]
+    elif "signatures" in rec:
+        rec["signature"] = rec["signatures"][0]
     return rec
 
 
@@ -1088,9 +1098,9 @@ def _dead_worker_record(case, seconds, timeout, hang_dir):
     where = f"{frames[0][0][frames[0][0].rfind('/valvetrain/') + 1:]}:{frames[0][1]} ({frames[0][2]})" if frames \
         else "(no valvetrain frame)"
     hung = seconds >= timeout
+    sig = f"hard timeout (C code) at {where}" if hung else f"worker process died at {where}"
     return {"base": case["base"], "ops": case["ops"], "mutation": materialize(case, base_specs())[2],
-            "outcome": "hang" if hung else "traceback",
-            "signature": f"hard timeout (C code) at {where}" if hung else f"worker process died at {where}",
+            "outcome": "hang" if hung else "traceback", "signature": sig, "signatures": [sig],
             "detail": [f"the worker did not return within {timeout:g} s + 30 s" if hung else
                        "the worker process died (crash or killed)"], "seconds": round(seconds, 3)}
 
@@ -1182,7 +1192,7 @@ def minimise(groups, workers, timeout, write, log):
         while len(ops) > 1:
             trials = [{"base": rep["base"], "ops": ops[:k] + ops[k + 1:]} for k in range(len(ops))]
             got = run_cases(trials, workers, timeout, write)
-            same = [t for t, g in zip(trials, got, strict=True) if g.get("signature") == sig]
+            same = [t for t, g in zip(trials, got, strict=True) if sig in g.get("signatures", [])]
             if not same:
                 break
             ops = same[0]["ops"]
@@ -1215,8 +1225,11 @@ def summary_text(records, reps, seconds, workers):
              f"{'class':<12} {'count':>7} {'share':>7}"]
     for o in OUTCOMES:
         lines.append(f"{o:<12} {counts.get(o, 0):>7} {100.0 * counts.get(o, 0) / max(len(records), 1):>6.1f}%")
-    groups = Counter(r["signature"] for r in records if r["outcome"] in FAILURES)
-    lines += ["", f"{len(groups)} distinct failure signatures:"]
+    lines += ["", "slowest cases:"]
+    for r in sorted(records, key=lambda r: -r["seconds"])[:5]:
+        lines.append(f"  {r['seconds']:7.1f} s  {r['outcome']:<11} {r['base']}: {'; '.join(r['mutation'])[:120]}")
+    groups = Counter(s for r in records if r["outcome"] in FAILURES for s in r["signatures"])
+    lines += ["", f"{len(groups)} distinct failure signatures (a case can carry several):"]
     for o in FAILURES:
         for sig, n in sorted(((s, n) for s, n in groups.items() if reps[s]["outcome"] == o), key=lambda x: -x[1]):
             rep = reps[sig]
@@ -1258,7 +1271,8 @@ def main(argv=None):
     groups = {}
     for r in records:
         if r["outcome"] in FAILURES:
-            groups.setdefault(r["signature"], []).append(r)
+            for sig in r["signatures"]:
+                groups.setdefault(sig, []).append(r)
     log = lambda m: print(m, file=sys.stderr, flush=True)  # noqa: E731
     reps = ({s: min(g, key=lambda r: len(r["ops"])) for s, g in groups.items()} if args.no_minimise
             else minimise(groups, args.workers, args.timeout, args.write, log))
@@ -1274,7 +1288,7 @@ def main(argv=None):
                             "mutation": reps[s]["mutation"], "detail": reps[s].get("detail", [])}
                            for s, g in sorted(groups.items(), key=lambda kv: (reps[kv[0]]["outcome"], -len(kv[1])))],
             "cases": [{k: r[k] for k in ("id", "base", "mutation", "outcome", "seconds")}
-                      | {k: r[k] for k in ("signature", "detail", "other_warnings") if r.get(k)} for r in records],
+                      | {k: r[k] for k in ("signatures", "detail", "other_warnings") if r.get(k)} for r in records],
         }
         Path(args.report).write_text(json.dumps(report, indent=1, default=str), encoding="utf-8")
     if args.repro:
