@@ -1,0 +1,1302 @@
+#!/usr/bin/env python
+"""Fuzz the specification path of valvetrain (issue 9, "Trustworthy under any input").
+
+Every case is a base specification (the built-in example, ``examples/*.toml``, one specification per lift law
+with a flat and a roller follower, asymmetric cams, a two-stroke with a crank) and a list of mutation
+operations: numbers scaled by 0, -1, 1e-300 ... 1e300, set to NaN/inf, keys deleted, types changed, unknown keys
+added, laws and followers swapped, deep or long arrays, byte-level damage of the file (BOM, truncation, bad
+encodings), and malformed CSV files for measured lift tables and indicator diagrams.  Each case runs through
+the command line's path, ``load_spec -> design.run`` (and ``export.write_outputs`` with ``--write``), with
+numpy RuntimeWarnings turned into errors, and is classified:
+
+``ok``           accepted, finite and plausible results;
+``refused``      SpecError (exit status 2) whose messages each name a key;
+``traceback``    any other exception (exit status 1 of the command line);
+``hang``         no result within ``--timeout`` seconds;
+``nan_output``   accepted, but NaN/inf in a table column or in results.json (null where it is not documented);
+``nonsense``     accepted and finite, but a plausibility check fails (event >= 360 cam deg, valve lift not the
+                 declared one within 1 %, fullness outside (0, 1]);
+``bad_message``  refused with a message that names no key, carries library internals, or is over 300 characters.
+
+Usage (from the repository root, with the package on the path)::
+
+    PYTHONPATH=src python tools/fuzz_specs.py --count 3000 --seed 1 --workers 2 --report fuzz-report.json
+
+The mutation generator draws through a ``pick(sequence)`` chooser, so tests/test_fuzz.py drives the same
+generator from hypothesis.
+"""
+
+import os
+
+for _var in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS"):
+    os.environ.setdefault(_var, "1")  # one BLAS thread per worker: --workers processes share the cores
+
+import argparse  # noqa: E402
+from collections import Counter, deque  # noqa: E402
+from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait  # noqa: E402
+from concurrent.futures.process import BrokenProcessPool  # noqa: E402
+import copy  # noqa: E402
+import csv  # noqa: E402
+import datetime  # noqa: E402
+import faulthandler  # noqa: E402
+import json  # noqa: E402
+import math  # noqa: E402
+from pathlib import Path  # noqa: E402
+import random  # noqa: E402
+import re  # noqa: E402
+import signal  # noqa: E402
+import sys  # noqa: E402
+import tempfile  # noqa: E402
+import time  # noqa: E402
+import tomllib  # noqa: E402
+import traceback  # noqa: E402
+import warnings  # noqa: E402
+
+import numpy as np  # noqa: E402
+
+import valvetrain  # noqa: E402
+from valvetrain import export  # noqa: E402
+from valvetrain.design import run as run_design  # noqa: E402
+from valvetrain.spec import LAWS, SpecError, example_text, load_spec  # noqa: E402
+
+ROOT = Path(__file__).resolve().parent.parent
+EXAMPLES = ROOT / "examples"
+MEASURED_LOBE = "data/measured-intake-lobe.csv"
+
+OUTCOMES = ("ok", "refused", "traceback", "hang", "nan_output", "nonsense", "bad_message")
+FAILURES = ("traceback", "hang", "nan_output", "nonsense", "bad_message")
+
+# ---------------------------------------------------------------------------------------------------------------
+# TOML text of a nested dictionary (tomllib reads, the standard library writes none)
+
+_BARE = re.compile(r"^[A-Za-z0-9_-]+$")
+
+
+def _key(k):
+    return k if _BARE.match(k) else _string(k)
+
+
+def _string(s):
+    out = []
+    for ch in s:
+        if ch == '"':
+            out.append('\\"')
+        elif ch == "\\":
+            out.append("\\\\")
+        elif ch == "\n":
+            out.append("\\n")
+        elif ch == "\t":
+            out.append("\\t")
+        elif ord(ch) < 0x20 or ord(ch) == 0x7F:
+            out.append(f"\\u{ord(ch):04X}")
+        else:
+            out.append(ch)
+    return '"' + "".join(out) + '"'
+
+
+def _value(v):
+    if isinstance(v, bool):
+        return "true" if v else "false"
+    if isinstance(v, int):
+        return str(v)
+    if isinstance(v, float):
+        if math.isnan(v):
+            return "nan"
+        if math.isinf(v):
+            return "inf" if v > 0 else "-inf"
+        return repr(v)
+    if isinstance(v, _Raw):
+        return str(v)
+    if isinstance(v, str):
+        return _string(v)
+    if isinstance(v, (datetime.date, datetime.datetime, datetime.time)):
+        return v.isoformat()
+    if isinstance(v, dict):
+        return "{" + ", ".join(f"{_key(k)} = {_value(x)}" for k, x in v.items()) + "}"
+    if isinstance(v, list):
+        return "[" + ", ".join(_value(x) for x in v) + "]"
+    raise TypeError(f"cannot write {type(v).__name__} as TOML")
+
+
+def toml_dumps(doc):
+    """TOML text of a dictionary: scalars and arrays as ``key = value``, dictionaries as ``[tables]``."""
+    lines = []
+
+    def table(d, prefix):
+        subs = [(k, v) for k, v in d.items() if isinstance(v, dict)]
+        for k, v in d.items():
+            if not isinstance(v, dict):
+                lines.append(f"{_key(k)} = {_value(v)}")
+        for k, v in subs:
+            path = prefix + [k]
+            lines.append("")
+            lines.append("[" + ".".join(_key(p) for p in path) + "]")
+            table(v, path)
+
+    table(doc, [])
+    return "\n".join(lines).lstrip("\n") + "\n"
+
+
+# ---------------------------------------------------------------------------------------------------------------
+# Base specifications
+
+LAW_CAMS = {
+    # valid cam sections of every law: those of tests/test_laws_in_design.py (CAMS), tests/test_asymmetric.py and
+    # examples/seed000-polydyne.toml; base_radius_mm and follower come from the example's cam
+    "kurz": {"law": "kurz", "ramp_end_velocity_mm_per_deg": 0.02, "phi1_deg": 27.0, "phi2_deg": 6.0,
+             "phi3_deg": 38.0, "shape_factor": 0.625},
+    "polydyne": {"law": "polydyne", "p": 8},
+    "polynomial": {"law": "polynomial", "exponents": [2, 6, 10, 14, 18, 22], "ramp": True,
+                   "ramp_end_velocity_mm_per_deg": 0.015, "ramp_type": "constant_acceleration"},
+    "constant_acceleration": {"law": "constant_acceleration", "ramp_end_velocity_mm_per_deg": 0.02,
+                              "phi1_deg": 22.0, "phi2_deg": 30.0, "kappa": 0.6},
+    "combined": {"law": "combined", "ramp_end_velocity_mm_per_deg": 0.02,
+                 "segments": [{"shape": "half_sine", "length_deg": 25.0}, {"shape": "quarter_sine", "length_deg": 8.0},
+                              {"shape": "parabola_to_nose", "length_deg": 38.0}],
+                 "ratios": [{"segment": 2, "value": 0.625}]},
+    "dynamic": {"law": "dynamic", "valve_opening_velocity_m_s": 0.3, "drive_stiffness_N_per_mm": 15000.0,
+                "spring_rate_N_per_mm": 70.0, "spring_preload_N": 250.0, "ramp_type": "constant_acceleration"},
+    "harmonic": {"law": "harmonic", "harmonics": 24, "junction_order": 2,
+                 "target": {"law": "polydyne", "p": 8, "ramp": True, "ramp_end_velocity_mm_per_deg": 0.02}},
+    "three_arc": {"law": "three_arc", "flank_angle_deg": 25.0},
+    "tangent": {"law": "tangent"},
+    "table": {"law": "table", "table_file": "lobe.csv", "table_angle": "crank", "table_lift_at": "valve",
+              "fit": "spline", "accuracy_mm": 0.005},
+}
+
+ASYMMETRIC_CAMS = {
+    # Kurz: tests/test_asymmetric.py, opening 21/5/30 cam deg, closing 30/7/49 (the flanks add up to 2 phi_p0 = 142);
+    # the others: flanks of the same sum whose profile is not undercut
+    "kurz": {**LAW_CAMS["kurz"], "phi1_deg": 21.0, "phi2_deg": 5.0, "phi3_deg": 30.0,
+             "closing": {"phi1_deg": 30.0, "phi2_deg": 7.0, "phi3_deg": 49.0, "ramp_end_velocity_mm_per_deg": 0.015}},
+    "constant_acceleration": {**LAW_CAMS["constant_acceleration"], "phi1_deg": 22.0, "phi2_deg": 30.0,
+                              "phi3_deg": 4.0, "closing": {"phi1_deg": 30.0, "phi2_deg": 40.0, "phi3_deg": 16.0}},
+    "combined": {**LAW_CAMS["combined"],
+                 "closing": {"segments": [{"shape": "half_sine", "length_deg": 30.0},
+                                          {"shape": "quarter_sine", "length_deg": 10.0},
+                                          {"shape": "parabola_to_nose", "length_deg": 31.0}]}},
+}
+
+ROLLER = {"follower": "roller", "roller_radius_mm": 11.0}
+
+TWO_STROKE_CRANK = {
+    # an illustrative crank for examples/two-stroke-ports.toml (masses of a 56 mm bore, a small Wiebe cycle)
+    "piston_kg": 0.15, "rod_kg": 0.12, "crank_kg": 0.1, "compression_ratio": 8.0, "step_deg": 1.0,
+    "cycle": {"heat_input_J": 250.0},
+}
+
+
+def _with_cam(doc, cam, drop=()):
+    doc = copy.deepcopy(doc)
+    valve = doc["valves"]["intake"]
+    old = valve["cam"]
+    valve["cam"] = {**copy.deepcopy(cam), "base_radius_mm": old["base_radius_mm"], "follower": "flat"}
+    for k in drop:
+        valve.pop(k, None)
+    return doc
+
+
+def base_specs():
+    """``{name: (document, {relative file name: bytes})}`` of every base specification, in a fixed order."""
+    example = tomllib.loads(example_text())
+    lobe = (EXAMPLES / MEASURED_LOBE).read_bytes()
+    bases = {"example": (example, {})}
+    for f in sorted(EXAMPLES.glob("*.toml")):
+        files = {MEASURED_LOBE: lobe} if "measured" in f.name else {}
+        bases[f"examples/{f.name}"] = (tomllib.loads(f.read_text(encoding="utf-8")), files)
+    for law in LAWS:
+        files = {"lobe.csv": lobe} if law == "table" else {}
+        drop = ("max_lift_mm", "opens_deg", "closes_deg") if law == "table" else ()
+        doc = _with_cam(example, LAW_CAMS[law], drop)
+        if law != "tangent":
+            bases[f"law:{law}"] = (doc, files)
+        roller = copy.deepcopy(doc)
+        roller["valves"]["intake"]["cam"].update(ROLLER)
+        if law == "harmonic":
+            roller["valves"]["intake"]["cam"]["target"].update(ROLLER)
+        bases[f"law:{law}+roller"] = (roller, files)
+    for law, cam in ASYMMETRIC_CAMS.items():
+        bases[f"asymmetric:{law}"] = (_with_cam(example, cam), {})
+    two = tomllib.loads((EXAMPLES / "two-stroke-ports.toml").read_text(encoding="utf-8"))
+    two["crank"] = copy.deepcopy(TWO_STROKE_CRANK)
+    bases["two-stroke+crank"] = (two, {})
+    return bases
+
+
+# ---------------------------------------------------------------------------------------------------------------
+# Malformed CSV files
+
+def _lobe(x, centre, half_width, height):
+    """A lobe: height (1 + cos(pi u)) / 2, u = (x - centre) / half_width, zero outside (the 10 mm, 280 crank deg
+    lobe has a profile radius of 5 mm at the nose on a 20 mm base circle with rocker ratio 1.6: no undercut)."""
+    u = np.clip((np.asarray(x, dtype=float) - centre) / half_width, -1.0, 1.0)
+    return height * (1.0 + np.cos(np.pi * u)) / 2.0
+
+
+def _rows(header, x, y, fmt="{:.6f},{:.6f}"):
+    return (header + "\n" + "".join(fmt.format(a, b) + "\n" for a, b in zip(x, y, strict=True))).encode()
+
+
+LIFT_HEADER = "angle_deg,lift_mm"
+_CRANK = np.arange(-40.0, 262.0, 2.0)          # crank deg of a 10 mm intake lobe: nose at 110, event 280 deg
+_LOBE = _lobe(_CRANK, 110.0, 140.0, 10.0)
+
+
+def _lift(x, y):
+    return _rows(LIFT_HEADER, x, y)
+
+
+LIFT_FILES = {
+    # name: (angle unit the table is meant in, bytes)
+    "valid_lobe": ("crank", _lift(_CRANK, _LOBE)),
+    "empty": ("crank", b""),
+    "header_only": ("crank", (LIFT_HEADER + "\n").encode()),
+    "comments_only": ("crank", b"# a comment\n# another\n"),
+    "bad_header": ("crank", _rows("angle,lift", _CRANK, _LOBE)),
+    "semicolons": ("crank", _rows("angle_deg;lift_mm", _CRANK, _LOBE, "{:.6f};{:.6f}")),
+    "three_columns": ("crank", _rows(LIFT_HEADER, _CRANK, _LOBE, "{:.6f},{:.6f},1")),
+    "non_numbers": ("crank", _lift(_CRANK, _LOBE).replace(b"110.000000,10.000000", b"abc,def")),
+    "nan_lift": ("crank", _lift(_CRANK, _LOBE).replace(b"110.000000,10.000000", b"110.0,nan")),
+    "inf_lift": ("crank", _lift(_CRANK, _LOBE).replace(b"110.000000,10.000000", b"110.0,inf")),
+    "nan_angle": ("crank", _lift(_CRANK, _LOBE).replace(b"110.000000,10.000000", b"nan,10.0")),
+    "decreasing_angles": ("crank", _lift(_CRANK[::-1], _LOBE[::-1])),
+    "duplicate_angle": ("crank", _lift(np.r_[_CRANK[:80], _CRANK[79:]], np.r_[_LOBE[:80], _LOBE[79:]])),
+    "nine_rows": ("crank", _lift(np.linspace(-30, 250, 9), _lobe(np.linspace(-30, 250, 9), 110, 140, 10))),
+    "ten_rows": ("crank", _lift(np.linspace(-30, 250, 10), _lobe(np.linspace(-30, 250, 10), 110, 140, 10))),
+    "all_zero": ("crank", _lift(_CRANK, 0.0 * _LOBE)),
+    "negative_lobe": ("crank", _lift(_CRANK, -_LOBE)),
+    "negative_base": ("crank", _lift(_CRANK, _LOBE - 0.05)),
+    "constant_lift": ("crank", _lift(_CRANK, 0.0 * _LOBE + 5.0)),
+    "scaled_1e-300": ("crank", _rows(LIFT_HEADER, _CRANK, 1e-300 * _LOBE, "{:.6f},{:.6g}")),
+    "scaled_1e-9": ("crank", _rows(LIFT_HEADER, _CRANK, 1e-9 * _LOBE, "{:.6f},{:.6g}")),
+    "scaled_1e300": ("crank", _rows(LIFT_HEADER, _CRANK, 1e300 * _LOBE, "{:.6f},{:.6g}")),
+    "firing_tdc_angles": ("crank", _lift(np.arange(337.0, 624.0, 2.0), _lobe(np.arange(337.0, 624.0, 2.0),
+                                                                             480.0, 143.0, 10.0))),
+    "cam_370_deg": ("cam", _lift(np.arange(-185.0, 186.0, 1.0),
+                                 _lobe(np.arange(-185.0, 186.0, 1.0), 0.0, 185.0, 10.0))),
+    "crank_740_deg": ("crank", _lift(np.arange(-260.0, 481.0, 2.0), _lobe(np.arange(-260.0, 481.0, 2.0), 110.0, 370.0,
+                                                                          10.0))),
+    "two_lobes": ("crank", _lift(np.arange(-100.0, 520.0, 2.0), _lobe(np.arange(-100.0, 520.0, 2.0), 30.0, 120.0, 10.0)
+                                 + _lobe(np.arange(-100.0, 520.0, 2.0), 390.0, 120.0, 9.0))),
+    "dense_15000": ("crank", _lift(np.linspace(-40.0, 260.0, 15000), _lobe(np.linspace(-40.0, 260.0, 15000), 110.0,
+                                                                           140.0, 10.0))),
+    "dense_100000": ("crank", _rows(LIFT_HEADER, np.linspace(-40.0, 260.0, 100000),
+                                    _lobe(np.linspace(-40.0, 260.0, 100000), 110.0, 140.0, 10.0), "{:.7f},{:.7f}")),
+    "single_spike": ("crank", _lift(_CRANK, np.where(_CRANK == 110.0, 10.0, 0.0))),
+    "top_hat": ("crank", _lift(_CRANK, np.where(np.abs(_CRANK - 110.0) < 60.0, 10.0, 0.0))),
+    "rising_only": ("crank", _lift(_CRANK, np.linspace(0.0, 10.0, _CRANK.size))),
+    "max_at_first_row": ("crank", _lift(_CRANK, np.linspace(10.0, 0.0, _CRANK.size))),
+    "short_event_10_deg": ("crank", _lift(np.linspace(100.0, 120.0, 41), _lobe(np.linspace(100.0, 120.0, 41), 110.0,
+                                                                               5.0, 10.0))),
+    "tiny_angle_span": ("crank", _lift(np.linspace(0.0, 1e-6, 50),
+                                       _lobe(np.linspace(0.0, 1e-6, 50), 5e-7, 5e-7, 10.0))),
+    "huge_angles": ("crank", _lift(_CRANK + 1e6, _LOBE)),
+    "noise_everywhere": ("crank", _lift(_CRANK, _LOBE + 0.05 * np.sin(7.3 * _CRANK))),
+    "utf16": ("crank", _lift(_CRANK, _LOBE).decode().encode("utf-16")),
+    "bom": ("crank", b"\xef\xbb\xbf" + _lift(_CRANK, _LOBE)),
+    "latin1_comment": ("crank", b"# Ventilhub \xe9\n" + _lift(_CRANK, _LOBE)),
+    "blank_cells": ("crank", _lift(_CRANK, _LOBE).replace(b"110.000000,10.000000", b"110.0,")),
+}
+"""Lift tables (``angle_deg,lift_mm``) for ``law = "table"``."""
+
+SLOW_FILES = {"dense_15000", "dense_100000", "pv_dense"}
+"""Files that take seconds each: run once each by :func:`file_cases`, not drawn into random mutations."""
+
+PRESSURE_ANGLE = "crank_deg,pressure_MPa"
+PRESSURE_VOLUME = "volume_cm3,pressure_MPa"
+
+
+def _geometry(doc):
+    """bore, stroke, rod [mm], compression ratio and strokes of a (possibly mutated) document, with the example's
+    values where a key is missing or not a number."""
+    def num(*paths, default):
+        for path in paths:
+            v = _get(doc, path)
+            if isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v) and v > 0:
+                return float(v)
+        return default
+
+    strokes = _get(doc, ("engine", "strokes"))
+    return (num(("crank", "bore_mm"), ("engine", "bore_mm"), default=80.0),
+            num(("crank", "stroke_mm"), ("engine", "stroke_mm"), default=77.142857),
+            num(("crank", "rod_length_mm"), ("engine", "rod_length_mm"), default=135.0),
+            num(("crank", "compression_ratio"), default=10.0),
+            strokes if strokes in (2, 4) else 4)
+
+
+def _cycle(phi, strokes):
+    """An indicator diagram [MPa] over the cycle angle [deg]: intake, compression, a combustion peak at the firing
+    TDC, expansion, exhaust (four-stroke: firing TDC 360; two-stroke: 0 = 360)."""
+    fire = 360.0 if strokes == 4 else 0.0
+    d = np.minimum(np.abs(phi - fire), np.abs(phi - fire - 360.0 * (strokes == 2)))
+    return 0.1 + 1.5 * np.exp(-(d / 60.0) ** 2) + 5.0 * np.exp(-((phi - fire - 15.0) / 25.0) ** 2)
+
+
+def _volume(phi, geom):
+    bore, stroke, rod, cr, _ = geom
+    r, lam = stroke / 2.0, stroke / 2.0 / rod
+    a = np.radians(phi)
+    s = r * (1.0 - np.cos(a) + (1.0 - np.sqrt(1.0 - (lam * np.sin(a)) ** 2)) / lam)
+    area = np.pi * bore ** 2 / 4.0
+    return (area * stroke / (cr - 1.0) + area * s) / 1000.0        # cm3
+
+
+def _pv(geom, end_deg, scale=1.0, step=2.0):
+    phi = np.arange(0.0, end_deg + step / 2, step)
+    return _rows(PRESSURE_VOLUME, scale * _volume(phi, geom), _cycle(np.mod(phi, 180.0 * geom[4]), geom[4]),
+                 "{:.9g},{:.6f}")
+
+
+def _pa(geom, end=None, step=2.0, p=None):
+    cycle = 180.0 * geom[4]
+    phi = np.arange(0.0, (cycle if end is None else end) + step / 2, step)
+    return _rows(PRESSURE_ANGLE, phi, _cycle(phi, geom[4]) if p is None else p(phi), "{:.6f},{:.6g}")
+
+
+PRESSURE_FILES = {
+    # name: function of the geometry (bore, stroke, rod, compression ratio, strokes) -> bytes
+    "valid_p_phi": lambda g: _pa(g),
+    "valid_p_v": lambda g: _pv(g, 180.0 * g[4]),
+    "empty": lambda g: b"",
+    "header_only": lambda g: (PRESSURE_ANGLE + "\n").encode(),
+    "bad_header": lambda g: _pa(g).replace(PRESSURE_ANGLE.encode(), b"angle,p"),
+    "non_numbers": lambda g: _pa(g).replace(b"\n20.000000,", b"\nxx,"),
+    "nan_pressure": lambda g: _pa(g, p=lambda phi: np.where(phi == 20.0, np.nan, _cycle(phi, g[4]))),
+    "inf_pressure": lambda g: _pa(g, p=lambda phi: np.where(phi == 20.0, np.inf, _cycle(phi, g[4]))),
+    "decreasing_angles": lambda g: b"\n".join([PRESSURE_ANGLE.encode()] + _pa(g).splitlines()[1:][::-1]) + b"\n",
+    "three_rows": lambda g: _pa(g, end=4.0),
+    "angle_beyond_cycle": lambda g: _pa(g, end=180.0 * g[4] + 80.0),
+    "negative_pressure": lambda g: _pa(g, p=lambda phi: _cycle(phi, g[4]) - 1.0),
+    "zero_pressure": lambda g: _pa(g, p=lambda phi: 0.0 * phi),
+    "constant_pressure": lambda g: _pa(g, p=lambda phi: 0.0 * phi + 0.1),
+    "pressure_1e300": lambda g: _pa(g, p=lambda phi: 1e300 * _cycle(phi, g[4])),
+    "pressure_1e-300": lambda g: _pa(g, p=lambda phi: 1e-300 * _cycle(phi, g[4])),
+    "only_0_to_360": lambda g: _pa(g, end=360.0),
+    "only_0_to_90": lambda g: _pa(g, end=90.0),
+    "coarse_60_deg": lambda g: _pa(g, step=60.0),
+    "dense_100000": lambda g: _pa(g, step=180.0 * g[4] / 100000),
+    "pv_one_branch": lambda g: _pv(g, 180.0),
+    "pv_two_branches": lambda g: _pv(g, 360.0),
+    "pv_three_branches": lambda g: _pv(g, 540.0),
+    "pv_five_branches": lambda g: _pv(g, 900.0),
+    "pv_eight_branches": lambda g: _pv(g, 1440.0),
+    "pv_constant_volume": lambda g: _rows(PRESSURE_VOLUME, np.full(200, 300.0),
+                                          _cycle(np.linspace(0.0, 720.0, 200), g[4])),
+    "pv_volume_x1000": lambda g: _pv(g, 180.0 * g[4], scale=1000.0),
+    "pv_volume_x0.01": lambda g: _pv(g, 180.0 * g[4], scale=0.01),
+    "pv_volume_1e-300": lambda g: _pv(g, 180.0 * g[4], scale=1e-300),
+    "pv_four_rows": lambda g: _pv(g, 180.0 * g[4], step=180.0 * g[4] / 3),
+    "pv_dense": lambda g: _pv(g, 180.0 * g[4], step=0.01),
+    "pv_jitter": lambda g: _rows(PRESSURE_VOLUME, _volume(np.arange(0.0, 720.5, 2.0), g)
+                                 * (1.0 + 1e-3 * np.sin(np.arange(361.0) * 2.1)),
+                                 _cycle(np.arange(0.0, 720.5, 2.0), g[4]), "{:.9g},{:.6f}"),
+}
+"""Indicator diagrams for ``[crank] pressure_file``."""
+
+# ---------------------------------------------------------------------------------------------------------------
+# Mutations: operations on the parsed document (and on the bytes of the file), replayable in any subset
+
+FACTORS = [0, -1, 1e-300, 1e-9, 0.01, 0.5, 2, 100, 1e300]
+GENTLE = [0.8, 1.25, 0.95, 1.05, 1.5, 3, 10, 0.1, -0.5]
+SPECIALS = [math.nan, math.inf, -math.inf, -0.0, 5e-324, 1.7976931348623157e308, 2 ** 63, -(2 ** 63), 0, 1]
+OTHER_TYPES = ["", "10", "abc", True, [], [1.0], [[1.0]], {}, {"x": 1}, datetime.date(1979, 5, 27),
+               "\u00fc\u4e2d\u0416", "x" * 5000, [1.0, "a"], [{"law": "kurz"}]]
+LITERALS = {
+    "kind": ["intake", "exhaust", "transfer", "inlet"], "follower": ["flat", "roller"], "law": list(LAWS),
+    "layout": ["inline", "v", "direct", "rocker", "pushrod"], "type": ["si", "si_injected", "diesel"],
+    "chamber": ["side_valve", "overhead", "prechamber_diesel", "direct_injection_diesel", "wedge", "hemispherical"],
+    "ramp_type": ["cosine", "constant_velocity", "constant_acceleration"], "fit": ["spline", "harmonic"],
+    "table_angle": ["crank", "cam"], "table_lift_at": ["valve", "tappet"], "kinematics": ["exact", "approximate"],
+    "pv_method": ["exact", "brix"], "shape": ["half_sine", "quarter_sine", "quarter_cosine", "constant", "linear",
+                                             "parabola_to_nose"],
+    "strokes": [2, 4], "count": [1, 2, 8], "cylinders": [1, 2, 3, 64], "ramp": [True, False],
+    "harmonics": [2, 3, 4, 400], "junction_order": [0, 1, 5, 10], "max_harmonics": [4, 400],
+    "contour_points": [36, 100000], "segment": [1, 2, 3, 50],
+}
+UNKNOWN_KEYS = ["bore", "Bore_mm", "max_lift", "phi4_deg", "\u00fcber", "x y", ""]
+WEIRD_NAMES = ["crank", "two_stroke", "1st", "ex haust", "\u00e9chappement", "a" * 300, "x.y", ""]
+NEST_DEPTHS = [2, 20, 100, 400, 2000]
+LONG_LISTS = [0, 1, 65, 1000, 100000]
+TEXT_OPS = ["bom", "crlf", "truncate_half", "truncate_end", "nul_byte", "latin1_byte", "empty", "utf16",
+            "duplicate_key", "bom_twice"]
+
+OP_KINDS = (["scale"] * 4 + ["gentle"] * 4 + ["special"] * 2 + ["type"] * 2 + ["delete"] * 2 + ["literal"] * 2
+            + ["law"] * 2 + ["unknown", "follower", "nest", "long_list", "text", "valve", "section", "lift_file",
+                             "pressure_file"])
+
+
+def _get(doc, path):
+    for p in path:
+        try:
+            doc = doc[p]
+        except (KeyError, IndexError, TypeError):
+            return None
+    return doc
+
+
+def _parent(doc, path):
+    """The container holding ``path[-1]``, or None when the path no longer exists."""
+    node = _get(doc, path[:-1])
+    if isinstance(node, dict) and path[-1] in node:
+        return node
+    if isinstance(node, list) and isinstance(path[-1], int) and 0 <= path[-1] < len(node):
+        return node
+    return None
+
+
+def leaves(doc, prefix=()):
+    """Paths of every value (scalars, lists and list items, but not tables) in document order."""
+    out = []
+    for k, v in doc.items():
+        path = prefix + (k,)
+        if isinstance(v, dict):
+            out += leaves(v, path)
+            continue
+        out.append(path)
+        if isinstance(v, list):
+            for i, x in enumerate(v):
+                if isinstance(x, dict):
+                    out += leaves(x, path + (i,))
+                else:
+                    out.append(path + (i,))
+    return out
+
+
+def tables(doc, prefix=()):
+    """Paths of every table (dictionary), the document itself first."""
+    out = [prefix]
+    for k, v in doc.items():
+        if isinstance(v, dict):
+            out += tables(v, prefix + (k,))
+    return out
+
+
+def dotted(path):
+    return ".".join(str(p) if not isinstance(p, int) else f"[{p}]" for p in path).replace(".[", "[") or "(document)"
+
+
+def _show(v):
+    text = _value(v) if not isinstance(v, _Nested) else f"{'[' * v.depth}1.0{']' * v.depth}"
+    return text if len(text) <= 60 else text[:40] + f"... ({len(text)} chars)"
+
+
+class _Nested:
+    """A value written as ``depth`` nested arrays around 1.0 (written by :func:`toml_dumps` through ``_value``)."""
+
+    def __init__(self, depth):
+        self.depth = depth
+
+
+def _numbers(doc):
+    return [p for p in leaves(doc) if isinstance(_get(doc, p), (int, float)) and not isinstance(_get(doc, p), bool)]
+
+
+def _cams(doc):
+    valves = doc.get("valves")
+    if not isinstance(valves, dict):
+        return []
+    return [n for n, v in valves.items() if isinstance(v, dict) and isinstance(v.get("cam"), dict)]
+
+
+def draw_op(pick, doc):
+    """One mutation operation for the document ``doc``, drawn with ``pick(sequence) -> item``."""
+    kind = pick(OP_KINDS)
+    numbers = _numbers(doc)
+    if kind in ("scale", "gentle", "special") and numbers:
+        path = pick(numbers)
+        if kind == "special":
+            return ["set", path, pick(SPECIALS)]
+        return ["scale", path, pick(FACTORS if kind == "scale" else GENTLE)]
+    if kind == "literal":
+        paths = [p for p in leaves(doc) if isinstance(p[-1], str) and p[-1] in LITERALS]
+        if paths:
+            path = pick(paths)
+            return ["set", path, pick(LITERALS[path[-1]])]
+    if kind == "delete":
+        paths = leaves(doc) + [t for t in tables(doc) if t]
+        return ["delete", pick(paths)]
+    if kind == "unknown":
+        return ["set", pick(tables(doc)) + (pick(UNKNOWN_KEYS),), pick([1.0, "x", True])]
+    if kind in ("law", "follower", "lift_file") and _cams(doc):
+        valve = pick(_cams(doc))
+        if kind == "law":
+            return ["law", valve, pick(list(LAWS))]
+        if kind == "follower":
+            return ["follower", valve, pick(["roller", "flat"]), pick([11.0, 1e-9, 0.5, 200.0])]
+        name = pick([n for n in LIFT_FILES if n not in SLOW_FILES])
+        return ["lift_file", valve, name, pick(["valve", "tappet"]), pick(["spline", "harmonic"])]
+    if kind == "pressure_file" and isinstance(doc.get("crank"), dict):
+        return ["pressure_file", pick([n for n in PRESSURE_FILES if n not in SLOW_FILES]), pick(["exact", "brix"])]
+    if kind == "nest":
+        return ["nest", pick(leaves(doc)), pick(NEST_DEPTHS)]
+    if kind == "long_list":
+        lists = [p for p in leaves(doc) if isinstance(_get(doc, p), list)]
+        if lists:
+            return ["long_list", pick(lists), pick(LONG_LISTS)]
+    if kind == "text":
+        return ["text", pick(TEXT_OPS)]
+    if kind == "valve" and _cams(doc):
+        return ["valve", pick(_cams(doc)), pick(["rename", "copy_exhaust", "copy_many"]), pick(WEIRD_NAMES)]
+    if kind == "section":
+        return ["section", pick(["drop_valves", "drop_crank", "add_crank", "add_two_stroke", "drop_engine",
+                                 "empty_valves", "add_cycle_and_file"])]
+    paths = leaves(doc)
+    return ["type", pick(paths), pick(OTHER_TYPES)]
+
+
+def draw_case(pick, bases):
+    """A case ``{"base": name, "ops": [...]}``: a base specification and one to three operations."""
+    base = pick(list(bases))
+    doc = copy.deepcopy(bases[base][0])
+    ops = []
+    for _ in range(pick([1, 1, 1, 2, 3])):
+        op = draw_op(pick, doc)
+        ops.append(op)
+        _apply(doc, {}, op)
+    return {"base": base, "ops": ops}
+
+
+def _scaled(v, factor):
+    x = v * factor
+    if isinstance(v, int) and isinstance(factor, int):
+        return x
+    if isinstance(v, int) and math.isfinite(x) and abs(x) < 2 ** 62 and x == int(x):
+        return int(x)
+    return float(x)
+
+
+def _apply(doc, files, op):
+    """Apply ``op`` to ``doc`` (and ``files``) in place; return its description, or None when it does not apply."""
+    kind = op[0]
+    if kind in ("scale", "set", "type", "delete", "nest", "long_list"):
+        path = tuple(op[1])
+        node = _parent(doc, path) if kind != "set" else _get(doc, path[:-1])
+        if node is None or (kind == "set" and not isinstance(node, (dict, list))):
+            return None
+        if kind == "set" and isinstance(node, list) and not (isinstance(path[-1], int) and path[-1] < len(node)):
+            return None
+        old = node[path[-1]] if kind != "set" or (isinstance(node, list) or path[-1] in node) else None
+        if kind == "delete":
+            del node[path[-1]]
+            return f"delete {dotted(path)}"
+        if kind == "scale":
+            if not isinstance(old, (int, float)) or isinstance(old, bool):
+                return None
+            node[path[-1]] = _scaled(old, op[2])
+            return f"{dotted(path)} = {_show(node[path[-1]])}  (was {_show(old)}, x {op[2]:g})"
+        if kind == "nest":
+            node[path[-1]] = _Nested(op[2])
+            return f"{dotted(path)} = {op[2]} nested arrays [[[...1.0...]]]"
+        if kind == "long_list":
+            if not isinstance(old, list):
+                return None
+            item = old[0] if old else 1.0
+            node[path[-1]] = [copy.deepcopy(item) for _ in range(op[2])]
+            return f"{dotted(path)} = a list of {op[2]} x {_show(item)}"
+        node[path[-1]] = copy.deepcopy(op[2])
+        return f"{dotted(path)} = {_show(op[2])}" + (f"  (was {_show(old)})" if old is not None else "  (new key)")
+    if kind == "law":
+        valve = _get(doc, ("valves", op[1]))
+        if not isinstance(valve, dict) or not isinstance(valve.get("cam"), dict):
+            return None
+        old = valve["cam"]
+        keep = {k: old[k] for k in ("base_radius_mm", "follower", "roller_radius_mm") if k in old}
+        valve["cam"] = {**copy.deepcopy(LAW_CAMS[op[2]]), **keep}
+        if op[2] == "table":
+            files["lobe.csv"] = (EXAMPLES / MEASURED_LOBE).read_bytes()
+        if op[2] == "tangent":
+            valve["cam"].update(ROLLER)
+        return f"valves.{op[1]}.cam = the {op[2]} cam of LAW_CAMS (was law {old.get('law')!r})"
+    if kind == "follower":
+        cam = _get(doc, ("valves", op[1], "cam"))
+        if not isinstance(cam, dict):
+            return None
+        cam["follower"] = op[2]
+        if op[2] == "roller":
+            cam["roller_radius_mm"] = op[3]
+            return f"valves.{op[1]}.cam.follower = \"roller\", roller_radius_mm = {op[3]:g}"
+        cam.pop("roller_radius_mm", None)
+        return f"valves.{op[1]}.cam.follower = \"flat\" (roller_radius_mm removed)"
+    if kind == "lift_file":
+        valve = _get(doc, ("valves", op[1]))
+        if not isinstance(valve, dict) or not isinstance(valve.get("cam"), dict):
+            return None
+        unit, content = LIFT_FILES[op[2]]
+        old = valve["cam"]
+        keep = {k: old[k] for k in ("base_radius_mm", "follower", "roller_radius_mm") if k in old}
+        valve["cam"] = {**LAW_CAMS["table"], **keep, "table_file": f"{op[1]}-lift.csv", "table_angle": unit,
+                        "table_lift_at": op[3], "fit": op[4]}
+        for k in ("max_lift_mm", "opens_deg", "closes_deg"):
+            valve.pop(k, None)
+        files[f"{op[1]}-lift.csv"] = content
+        return (f"valves.{op[1]}.cam: law = \"table\", table_file = LIFT_FILES[{op[2]!r}], table_angle = {unit!r}, "
+                f"table_lift_at = {op[3]!r}, fit = {op[4]!r}")
+    if kind == "pressure_file":
+        crank = doc.get("crank")
+        if not isinstance(crank, dict):
+            return None
+        crank["pressure_file"] = "pressure.csv"
+        crank["pv_method"] = op[2]
+        crank.pop("cycle", None)
+        files["pressure.csv"] = PRESSURE_FILES[op[1]](_geometry(doc))
+        return f"crank.pressure_file = PRESSURE_FILES[{op[1]!r}], pv_method = {op[2]!r}, [crank.cycle] removed"
+    if kind == "valve":
+        valves = doc.get("valves")
+        if not isinstance(valves, dict) or op[1] not in valves:
+            return None
+        if op[2] == "rename":
+            valves[op[3]] = valves.pop(op[1])
+            return f"rename [valves.{op[1]}] to [valves.{_show(op[3])}]"
+        if op[2] == "copy_exhaust":
+            valves["exhaust2"] = copy.deepcopy(valves[op[1]])
+            valves["exhaust2"]["kind"] = "exhaust"
+            return f"add [valves.exhaust2] = a copy of [valves.{op[1]}] with kind = \"exhaust\""
+        for i in range(40):
+            valves[f"v{i}"] = copy.deepcopy(valves[op[1]])
+        return f"add 40 copies of [valves.{op[1]}] (v0 ... v39)"
+    if kind == "section":
+        what = op[1]
+        if what == "drop_valves":
+            doc.pop("valves", None)
+        elif what == "empty_valves":
+            doc["valves"] = {}
+        elif what == "drop_crank":
+            doc.pop("crank", None)
+        elif what == "drop_engine":
+            doc.pop("engine", None)
+        elif what == "add_crank":
+            doc["crank"] = copy.deepcopy(TWO_STROKE_CRANK)
+        elif what == "add_two_stroke":
+            two = tomllib.loads((EXAMPLES / "two-stroke-ports.toml").read_text(encoding="utf-8"))
+            doc["two_stroke"] = two["two_stroke"]
+        else:  # both a cycle and a (valid) pressure file
+            crank = doc.setdefault("crank", copy.deepcopy(TWO_STROKE_CRANK))
+            if not isinstance(crank, dict):
+                return None
+            crank["pressure_file"] = "pressure.csv"
+            files["pressure.csv"] = PRESSURE_FILES["valid_p_phi"](_geometry(doc))
+        return f"section change: {what}"
+    if kind == "text":
+        files["__text__"] = files.get("__text__", []) + [op[1]]
+        return f"file bytes: {op[1]}"
+    raise ValueError(f"unknown operation {op!r}")
+
+
+def _text_op(data, what):
+    if what == "bom":
+        return b"\xef\xbb\xbf" + data
+    if what == "bom_twice":
+        return b"\xef\xbb\xbf\xef\xbb\xbf" + data
+    if what == "crlf":
+        return data.replace(b"\n", b"\r\n")
+    if what == "truncate_half":
+        return data[: len(data) // 2]
+    if what == "truncate_end":
+        return data[:-3]
+    if what == "nul_byte":
+        return data.replace(b"\n", b"\n\x00", 1)
+    if what == "latin1_byte":
+        return b"# \xe9\n" + data
+    if what == "empty":
+        return b""
+    if what == "utf16":
+        return data.decode("utf-8").encode("utf-16")
+    if what == "duplicate_key":
+        if b"[engine]\n" in data:
+            return data.replace(b"[engine]\n", b"[engine]\nbore_mm = 1.0\n", 1)
+        return data + b"a = 1\na = 2\n"
+    raise ValueError(what)
+
+
+def materialize(case, bases):
+    """The bytes of the specification, its files ``{relative name: bytes}`` and the applied operations' descriptions
+    (operations that no longer apply, in a replayed subset, are skipped)."""
+    doc, files = bases[case["base"]]
+    doc, files = copy.deepcopy(doc), dict(files)
+    described = []
+    for op in case["ops"]:
+        d = _apply(doc, files, op)
+        if d is not None:
+            described.append(d)
+    text = toml_dumps(_swap_nested(doc)).encode("utf-8")
+    for what in files.pop("__text__", []):
+        text = _text_op(text, what)
+    return text, files, described
+
+
+class _Raw(str):
+    """Text written into the TOML file as it is (a deeply nested array)."""
+
+
+def _swap_nested(x):
+    if isinstance(x, dict):
+        return {k: _swap_nested(v) for k, v in x.items()}
+    if isinstance(x, list):
+        return [_swap_nested(v) for v in x]
+    if isinstance(x, _Nested):
+        return _Raw("[" * x.depth + "1.0" + "]" * x.depth)
+    return x
+
+
+# ---------------------------------------------------------------------------------------------------------------
+# Running one case and classifying its outcome
+
+class CaseTimeout(BaseException):
+    """Raised in the worker when a case exceeds its time (a BaseException: ``except Exception`` does not eat it)."""
+
+
+def _alarm(signum, frame):
+    raise CaseTimeout()
+
+
+MAX_MESSAGE = 300
+KEY_PATH = re.compile(r"(?<![\w.])\[?(engine|valves|gas|crank|two_stroke|output)\b")
+INTERNAL_TEXT = ("ill-posed", "ill-conditioned", "singular matrix", "traceback", "numpy", "scipy", "ndarray",
+                 "dtype", "object has no attribute", "nonetype", "index out of", "division by zero",
+                 "math domain", "not enough values", "too many values", "recursion", "operands could not",
+                 "errors.pydantic.dev", "input_value", "f(a) and f(b)", "linprog", "brentq", "x must be",
+                 "the number of derivatives", "iteration limit", "valueerror", "typeerror", "keyerror")
+
+
+def message_problem(message, spec_file):
+    """Why a refusal message breaks the contract (None when it is fine): no key path, library internals, too long.
+
+    Messages about the file itself (unreadable, not TOML) are located by the file name and line instead of a key;
+    an unknown key's message starts with that key."""
+    if len(message) > MAX_MESSAGE:
+        return "longer than 300 characters"
+    low = message.lower()
+    for text in INTERNAL_TEXT:
+        if text in low:
+            return f"internal text {text!r}"
+    if not KEY_PATH.search(message) and ": unknown key" not in message and not message.startswith(str(spec_file)):
+        return "no key path"
+    return None
+
+
+def _frame(tb_entries):
+    """``valvetrain/path.py:line (function)`` of the innermost frame in the package, and the innermost frame."""
+    def fmt(fr):
+        name = fr.filename.replace("\\", "/")
+        cut = name.rfind("/valvetrain/")
+        short = name[cut + 1:] if cut >= 0 else name
+        return f"{short}:{fr.lineno} ({fr.name})"
+
+    tb_entries = [fr for fr in tb_entries if not fr.filename.endswith("fuzz_specs.py")]
+    own = [fr for fr in tb_entries if "/valvetrain/" in fr.filename.replace("\\", "/")]
+    return (fmt(own[-1]) if own else "(no valvetrain frame)"), (fmt(tb_entries[-1]) if tb_entries else "")
+
+
+DOCUMENTED_NULLS = {
+    # key (last part of the path) -> when a null (None or a non-finite number) is documented
+    "rho_max_mm": "straight flanks", "rho_max_cam_deg": "straight flanks",
+    "min_concave_radius_mm": "no concave stretch",
+}
+
+
+def _walk(x, path=()):
+    if isinstance(x, dict):
+        for k, v in x.items():
+            yield from _walk(v, path + (str(k),))
+    elif isinstance(x, (list, tuple)):
+        for i, v in enumerate(x):
+            yield from _walk(v, path + (i,))
+    elif isinstance(x, np.ndarray):
+        for i, v in enumerate(x.tolist()):
+            yield from _walk(v, path + (i,))
+    else:
+        yield path, x
+
+
+def _generic(path, valve_names):
+    """A key path with valve names, list indices and the names of warnings made generic (for signatures)."""
+    parts = []
+    for i, p in enumerate(path):
+        if isinstance(p, int):
+            parts.append("[]")
+        elif i == 1 and path[0] == "valves" and p in valve_names:
+            parts.append("NAME")
+        else:
+            parts.append(p)
+    return ".".join(parts).replace(".[]", "[]")
+
+
+def null_problems(data, valve_names):
+    """Non-finite numbers and nulls of ``results.to_dict()`` that are not documented: ``[(generic path, text)]``."""
+    out = []
+    for path, v in _walk(data):
+        if v is None or (isinstance(v, (float, np.floating)) and not math.isfinite(v)):
+            key = str(path[-1]) if path else ""
+            if key in DOCUMENTED_NULLS and v is None:
+                continue
+            margin = key.endswith("margin") or (len(path) > 1 and path[-2] == "margins")
+            if margin and v == math.inf:
+                continue      # springs._margin: a check switched off passes with an infinite margin
+            out.append((_generic(path, valve_names), f"{dotted(path)} = {v!r}"))
+    return out
+
+
+def column_problems(name, columns):
+    """Columns of a table with NaN/inf: ``[(generic name, text)]``."""
+    out = []
+    for col, values in columns.items():
+        arr = np.asarray(values)
+        if arr.dtype.kind in "fc" and not np.all(np.isfinite(arr)):
+            bad = arr[~np.isfinite(arr)]
+            out.append((f"{name}:{col}", f"{name}: column {col} has {bad.size} non-finite of {arr.size} "
+                                         f"(first {bad[0]!r})"))
+    return out
+
+
+def _table_max(path):
+    """The largest lift of a measured table (read independently of the package)."""
+    text = Path(path).read_text(encoding="utf-8")
+    rows = [r for r in csv.reader(text.splitlines()) if r and not r[0].lstrip().startswith("#")]
+    return max(float(r[1]) for r in rows[1:])
+
+
+def plausibility(results):
+    """Failed plausibility checks of an accepted design: ``[(check name, text)]``."""
+    out = []
+    for name, v in results.valves.items():
+        spec_valve = results.spec.valves[name]
+        law = spec_valve.cam.law
+        s = v.summary
+        event = s["cam"]["event_cam_deg"]
+        if not event < 360.0:
+            out.append((f"event_cam_deg >= 360 [law={law}]", f"valves.{name}.cam.event_cam_deg = {event:.6g}"))
+        lift = s["flow"]["valve_lift_mm"]
+        if law == "table":
+            declared = _table_max(spec_valve.cam.table_file)
+            declared *= spec_valve.rocker_ratio if spec_valve.cam.table_lift_at == "tappet" else 1.0
+            what = "the table's maximum valve lift"
+        else:
+            declared, what = spec_valve.max_lift_mm, "max_lift_mm"
+        if not abs(lift - declared) <= 0.01 * abs(declared):
+            out.append((f"valve lift != declared [law={law}]",
+                        f"valves.{name}.flow.valve_lift_mm = {lift:.6g}, {what} = {declared:.6g}"))
+        table_top = float(np.max(v.table.valve_lift)) * 1e3
+        if not table_top <= 1.01 * max(declared, lift):
+            out.append((f"lift table above the valve lift [law={law}]",
+                        f"valves.{name}: tables/{name}_lift.csv valve_lift_mm reaches {table_top:.6g}, "
+                        f"valve_lift_mm = {lift:.6g}"))
+        fullness = s["flow"]["fullness"]
+        if not 0.0 < fullness <= 1.0:
+            out.append((f"fullness outside (0, 1] [law={law}]", f"valves.{name}.flow.fullness = {fullness:.6g}"))
+    return out
+
+
+def _in_memory_columns(results):
+    out = {}
+    for name, v in results.valves.items():
+        out[f"tables/{name}_lift.csv"] = export.lift_table_columns(v.table)
+        out[f"contour/{name}.csv"] = export.contour_columns(v)
+        step = results.spec.output.export_step_deg
+        out[f"contour/{name}_cartesian.csv"] = export.cartesian_contour_columns(v, step)
+        out[f"contour/{name}_lift.csv"] = export.lift_export_columns(v, step)
+    if results.crank is not None:
+        out["tables/crank.csv"] = export.crank_columns(results.crank)
+        out["tables/engine_torque.csv"] = export.engine_torque_columns(results.crank)
+    if results.two_stroke is not None:
+        out["tables/two_stroke_ports.csv"] = export.two_stroke_columns(results.two_stroke)
+        out["tables/two_stroke_time_area.csv"] = export.two_stroke_speed_columns(results.two_stroke)
+    return out
+
+
+def _file_problems(out):
+    """NaN/inf cells in the written CSV files: ``[(generic name, text)]``."""
+    found = []
+    for f in sorted(list((out / "tables").glob("*.csv")) + list((out / "contour").glob("*.csv"))):
+        with open(f, newline="", encoding="utf-8") as fh:
+            rows = list(csv.reader(fh))
+        header, bad = rows[0], {}
+        for row in rows[1:]:
+            for col, cell in zip(header, row, strict=False):
+                try:
+                    x = float(cell)
+                except ValueError:
+                    continue
+                if not math.isfinite(x):
+                    bad.setdefault(col, cell)
+        for col, cell in bad.items():
+            found.append((f"{f.parent.name}/{f.name}:{col}", f"{f.parent.name}/{f.name}: column {col} has {cell!r}"))
+    return found
+
+
+def _generic_file(name, valve_names):
+    for v in valve_names:
+        name = name.replace(f"/{v}_", "/NAME_").replace(f"/{v}.csv", "/NAME.csv")
+    return name
+
+
+def check_results(results, tmp, write):
+    """nan_output and nonsense findings of an accepted design (and of its written folder with ``write``)."""
+    names = set(results.valves)
+    data = results.to_dict()
+    export.json_text(data)                      # must serialise (a TypeError here is a traceback)
+    for w in results.warnings:                  # as `valvetrain run` prints them
+        f"warning: {w.quantity} = {w.value:.6g} {w.unit}, recommended {w.range} ({w.source})"  # noqa: B018
+    nans = null_problems(data, names)
+    for fname, columns in _in_memory_columns(results).items():
+        nans += [(_generic_file(k, names), t) for k, t in column_problems(fname, columns)]
+    if write:
+        out = Path(tmp) / "out"
+        export.write_outputs(results, out)
+        nans += [(_generic_file(k, names), t) for k, t in _file_problems(out)]
+        written = json.loads((out / "results.json").read_text(encoding="utf-8"))
+        nans += [(k, t + " (results.json)") for k, t in null_problems(written, names)
+                 if (k, t) not in null_problems(data, names)]
+    return nans, plausibility(results)
+
+
+def _group(key):
+    """The signature of one NaN/nonsense finding: a measured table's timing record, list items and the cylinders'
+    torque columns count once."""
+    key = re.sub(r"^(valves\.NAME\.cam\.measured)\..*", r"\1", key)
+    key = re.sub(r"_cyl\d+_", "_cylN_", key)          # engine_torque.csv: one column per cylinder
+    return key.replace("[]", "")
+
+
+def _signatures(pairs):
+    """Distinct signatures of findings ``[(key, text)]``; ``warnings.value`` (a copy of a value found elsewhere)
+    only when it is the only finding."""
+    out = []
+    for k, _ in pairs:
+        g = _group(k)
+        if g not in out:
+            out.append(g)
+    return [g for g in out if g != "warnings.value"] or out
+
+
+def run_case(case, bases, timeout=60.0, write=False):
+    """Run one case through load_spec -> design.run (-> write_outputs) and classify it; a JSON-ready record."""
+    text, files, described = materialize(case, bases)
+    rec = {"base": case["base"], "ops": case["ops"], "mutation": described, "outcome": None}
+    t0 = time.monotonic()
+    with tempfile.TemporaryDirectory(prefix="vf") as tmp:
+        spec_file = Path(tmp) / "spec.toml"
+        spec_file.write_bytes(text)
+        for name, content in files.items():
+            (Path(tmp) / name).parent.mkdir(parents=True, exist_ok=True)
+            (Path(tmp) / name).write_bytes(content)
+        stage = "load_spec"
+        old = signal.signal(signal.SIGALRM, _alarm)
+        signal.setitimer(signal.ITIMER_REAL, timeout)
+        try:
+            with warnings.catch_warnings(record=True) as caught:
+                warnings.simplefilter("always")
+                warnings.simplefilter("error", RuntimeWarning)
+                spec = load_spec(spec_file)
+                stage = "design.run"
+                results = run_design(spec)
+                stage = "write_outputs" if write else "checks"
+                nans, nonsense = check_results(results, tmp, write)
+            signal.setitimer(signal.ITIMER_REAL, 0)
+            rec["other_warnings"] = sorted({f"{w.category.__name__}: {str(w.message)[:120]}" for w in caught})
+            if nans:
+                rec.update(outcome="nan_output", signatures=[f"nan_output: {g}" for g in _signatures(nans)],
+                           detail=[t for _, t in nans[:10]])
+            elif nonsense:
+                rec.update(outcome="nonsense", signatures=[f"nonsense: {g}" for g in _signatures(nonsense)],
+                           detail=[t for _, t in nonsense[:10]])
+            else:
+                rec["outcome"] = "ok"
+        except SpecError as err:
+            signal.setitimer(signal.ITIMER_REAL, 0)
+            bad = [(m, message_problem(m, spec_file)) for m in err.problems]
+            bad = [(m, why) for m, why in bad if why]
+            if not err.problems:
+                rec.update(outcome="bad_message", signature="no message", detail=[])
+            elif bad:
+                m, why = bad[0]
+                rec.update(outcome="bad_message", signature=f"{why}: {_message_template(m.replace(tmp, '<tmp>'), why)}",
+                           detail=[f"{why}: {_clip(m.replace(tmp, '<tmp>'))}" for m, why in bad[:5]])
+            else:
+                rec.update(outcome="refused", detail=[_clip(m.replace(tmp, "<tmp>")) for m in err.problems[:5]])
+        except CaseTimeout as exc:
+            own, inner = _frame(traceback.extract_tb(exc.__traceback__))
+            rec.update(outcome="hang", signature=f"timeout {timeout:g} s in {stage} at {own}",
+                       detail=[f"still running after {timeout:g} s; innermost frame {inner}"])
+        except Exception as exc:  # noqa: BLE001 (every other exception is the finding)
+            signal.setitimer(signal.ITIMER_REAL, 0)
+            own, inner = _frame(traceback.extract_tb(exc.__traceback__))
+            rec.update(outcome="traceback", signature=f"{type(exc).__name__} at {own}",
+                       detail=[f"{stage}: {type(exc).__name__}: {_clip(str(exc).replace(tmp, '<tmp>'))}",
+                               f"innermost frame {inner}"])
+        finally:
+            signal.setitimer(signal.ITIMER_REAL, 0)
+            signal.signal(signal.SIGALRM, old)
+    rec["seconds"] = round(time.monotonic() - t0, 3)
+    if "signature" in rec:
+        rec["signatures"] = [rec["signature"]]
+    elif "signatures" in rec:
+        rec["signature"] = rec["signatures"][0]
+    return rec
+
+
+def _clip(text, n=400):
+    return text if len(text) <= n else text[:n] + f"... ({len(text)} chars)"
+
+
+def _message_template(message, why):
+    """The signature of a bad message: its generic text; a message that is too long because it repeats the
+    value it refuses is grouped by the text that follows the value."""
+    if why.startswith("longer"):
+        if ": unknown key (value " in message:
+            return "KEY: unknown key (value VALUE): VALUE echoed in full"
+        head, sep, rest = message.partition(" = ")
+        if sep:
+            text = rest.rsplit(": ", 1)[-1]
+            if re.match(r"(Input|Tuple|List|Value|String|Dictionary)\b.* should", text):
+                return "KEY = VALUE: pydantic's type message, VALUE echoed in full"
+            return f"{_message_key(head)} = VALUE: {_message_key(text)}, VALUE echoed in full"
+    return _message_key(message)
+
+
+def _message_key(message):
+    """A refusal message made generic for the signature: the valve names, quoted text, arrays and numbers replaced
+    (``valves.NAME.cam.p = Q: Input should be ...``)."""
+    text = re.sub(r"^valves\.[^.\s:]+", "valves.NAME", message)
+    text = re.sub(r"'[^']*'|\"[^\"]*\"", "Q", text)
+    text = re.sub(r"\[[\[\]\s\w.,+\-']*\]", "L", text)
+    text = re.sub(r"<tmp>\S*|/\S+", "FILE", text)
+    text = re.sub(r"\d+(\.\d*)?([eE][+-]?\d+)?", "N", text)
+    return text[:100]
+
+
+# ---------------------------------------------------------------------------------------------------------------
+# Parallel running with a deadline per case
+
+_BASES = None
+_HANG_DIR = None
+
+
+def _init_worker(hang_dir):
+    global _BASES, _HANG_DIR
+    _BASES, _HANG_DIR = base_specs(), hang_dir
+    try:
+        import resource
+        limit = 6 * 1024 ** 3  # a runaway allocation becomes a MemoryError, not a stalled machine
+        resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
+    except (ImportError, ValueError, OSError):
+        pass
+
+
+def _worker(case, timeout, write):
+    # the hard deadline: a case stuck in C code, where the SIGALRM of run_case cannot interrupt it, ends the
+    # worker process after writing where it was stuck
+    with open(Path(_HANG_DIR) / f"{os.getpid()}.txt", "w") as fh:
+        faulthandler.dump_traceback_later(timeout + 30.0, exit=True, file=fh)
+        try:
+            return run_case(case, _BASES, timeout, write)
+        finally:
+            faulthandler.cancel_dump_traceback_later()
+
+
+def _dead_worker_record(case, seconds, timeout, hang_dir):
+    dumps = [p.read_text(errors="replace") for p in Path(hang_dir).glob("*.txt") if p.stat().st_size]
+    frames = re.findall(r'File "([^"]*/valvetrain/[^"]*)", line (\d+) in (\S+)', "\n".join(dumps))
+    frames = [f for f in frames if "/tools/" not in f[0]]
+    where = f"{frames[0][0][frames[0][0].rfind('/valvetrain/') + 1:]}:{frames[0][1]} ({frames[0][2]})" if frames \
+        else "(no valvetrain frame)"
+    hung = seconds >= timeout
+    sig = f"hard timeout (C code) at {where}" if hung else f"worker process died at {where}"
+    return {"base": case["base"], "ops": case["ops"], "mutation": materialize(case, base_specs())[2],
+            "outcome": "hang" if hung else "traceback", "signature": sig, "signatures": [sig],
+            "detail": [f"the worker did not return within {timeout:g} s + 30 s" if hung else
+                       "the worker process died (crash or killed)"], "seconds": round(seconds, 3)}
+
+
+def _run_isolated(case, timeout, write):
+    """Run one case alone in a fresh worker: the culprit of a broken pool is found this way."""
+    with tempfile.TemporaryDirectory(prefix="vfhang") as hang_dir:
+        t0 = time.monotonic()
+        with ProcessPoolExecutor(1, initializer=_init_worker, initargs=(hang_dir,)) as pool:
+            fut = pool.submit(_worker, case, timeout, write)
+            try:
+                return fut.result()
+            except BrokenProcessPool:
+                return _dead_worker_record(case, time.monotonic() - t0, timeout, hang_dir)
+
+
+def run_cases(cases, workers=2, timeout=60.0, write=False, progress=None):
+    """Records of ``cases`` in their order; at most ``workers`` cases in flight so a dead worker names its suspects."""
+    records = [None] * len(cases)
+    todo = deque(range(len(cases)))
+    done = 0
+    while todo:
+        suspects = []
+        with tempfile.TemporaryDirectory(prefix="vfhang") as hang_dir, \
+                ProcessPoolExecutor(workers, initializer=_init_worker, initargs=(hang_dir,)) as pool:
+            inflight = {}
+            try:
+                while todo or inflight:
+                    while todo and len(inflight) < workers:
+                        inflight[pool.submit(_worker, cases[todo[0]], timeout, write)] = todo[0]
+                        todo.popleft()
+                    finished, _ = wait(inflight, return_when=FIRST_COMPLETED)
+                    for fut in finished:
+                        rec = fut.result()
+                        i = inflight.pop(fut)
+                        records[i] = rec
+                        done += 1
+                        if progress:
+                            progress(done, len(cases), records[i])
+            except BrokenProcessPool:
+                suspects = sorted(inflight.values())
+        for i in suspects:
+            records[i] = _run_isolated(cases[i], timeout, write)
+            done += 1
+            if progress:
+                progress(done, len(cases), records[i])
+    return records
+
+
+# ---------------------------------------------------------------------------------------------------------------
+# Case lists, minimisation, the summary
+
+def file_cases(bases):
+    """Every malformed CSV file against the bases it belongs to (lift tables: the table law with either follower,
+    valve and tappet lift, spline and harmonic fit; indicator diagrams: every base with a [crank])."""
+    cases = []
+    for name in LIFT_FILES:
+        for base, lift_at, fit in (("law:table", "valve", "spline"), ("law:table+roller", "tappet", "harmonic")):
+            cases.append({"base": base, "ops": [["lift_file", "intake", name, lift_at, fit]]})
+    crank_bases = [b for b, (doc, _) in bases.items() if isinstance(doc.get("crank"), dict)
+                   and b in ("example", "examples/v8-crank.toml", "two-stroke+crank")]
+    for name in PRESSURE_FILES:
+        for base in crank_bases:
+            for method in (["exact", "brix"] if name.startswith("pv_") or name == "valid_p_v" else ["exact"]):
+                cases.append({"base": base, "ops": [["pressure_file", name, method]]})
+    return cases
+
+
+def random_cases(count, seed, bases):
+    """``count`` mutated specifications; case i draws from random.Random(f"{seed}:{i}") (reproducible one by one)."""
+    out = []
+    for i in range(count):
+        rng = random.Random(f"{seed}:{i}")
+        case = draw_case(lambda seq, rng=rng: seq[rng.randrange(len(seq))], bases)
+        case["id"] = f"{seed}:{i}"
+        out.append(case)
+    for b in bases:
+        out.append({"base": b, "ops": [], "id": f"base:{b}"})
+    return out
+
+
+def minimise(groups, workers, timeout, write, log):
+    """For each signature, the representative with the fewest operations, reduced further by dropping operations
+    one at a time while the signature stays the same."""
+    reps = {}
+    for sig, recs in groups.items():
+        rep = min(recs, key=lambda r: (len(r["ops"]), len(json.dumps(r["ops"], default=str))))
+        ops = list(rep["ops"])
+        while len(ops) > 1:
+            trials = [{"base": rep["base"], "ops": ops[:k] + ops[k + 1:]} for k in range(len(ops))]
+            got = run_cases(trials, workers, timeout, write)
+            same = [t for t, g in zip(trials, got, strict=True) if sig in g.get("signatures", [])]
+            if not same:
+                break
+            ops = same[0]["ops"]
+        if ops != rep["ops"]:
+            rep = run_cases([{"base": rep["base"], "ops": ops}], 1, timeout, write)[0]
+            log(f"  minimised {sig[:90]} to {len(ops)} operation(s)")
+        reps[sig] = rep
+    return reps
+
+
+def write_repro(folder, reps, bases):
+    """Each signature's minimal specification and its files in ``folder/NN-class/``."""
+    folder = Path(folder)
+    for k, (sig, rep) in enumerate(sorted(reps.items(), key=lambda kv: (kv[1]["outcome"], kv[0])), start=1):
+        text, files, described = materialize(rep, bases)
+        d = folder / f"{k:02d}-{rep['outcome']}"
+        d.mkdir(parents=True, exist_ok=True)
+        (d / "spec.toml").write_bytes(text)
+        for name, content in files.items():
+            (d / name).parent.mkdir(parents=True, exist_ok=True)
+            (d / name).write_bytes(content)
+        (d / "README.txt").write_text(f"{sig}\nbase: {rep['base']}\n" + "\n".join(described) + "\n\n"
+                                      + "\n".join(rep.get("detail", [])) + "\n", encoding="utf-8")
+
+
+def summary_text(records, reps, seconds, workers):
+    counts = Counter(r["outcome"] for r in records)
+    lines = [f"valvetrain {valvetrain.__version__} from {Path(valvetrain.__file__).parent}",
+             f"{len(records)} specifications in {seconds:.0f} s ({workers} workers)", "",
+             f"{'class':<12} {'count':>7} {'share':>7}"]
+    for o in OUTCOMES:
+        lines.append(f"{o:<12} {counts.get(o, 0):>7} {100.0 * counts.get(o, 0) / max(len(records), 1):>6.1f}%")
+    lines += ["", "slowest cases:"]
+    for r in sorted(records, key=lambda r: -r["seconds"])[:5]:
+        lines.append(f"  {r['seconds']:7.1f} s  {r['outcome']:<11} {r['base']}: {'; '.join(r['mutation'])[:120]}")
+    groups = Counter(s for r in records if r["outcome"] in FAILURES for s in r["signatures"])
+    lines += ["", f"{len(groups)} distinct failure signatures (a case can carry several):"]
+    for o in FAILURES:
+        for sig, n in sorted(((s, n) for s, n in groups.items() if reps[s]["outcome"] == o), key=lambda x: -x[1]):
+            rep = reps[sig]
+            lines.append(f"\n[{o}] x{n}  {sig}")
+            lines.append(f"    base: {rep['base']}")
+            for d in rep["mutation"]:
+                lines.append(f"    mutation: {d}")
+            for d in rep.get("detail", [])[:3]:
+                lines.append(f"    -> {d}")
+    return "\n".join(lines)
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--count", type=int, default=300, help="mutated specifications (default 300)")
+    ap.add_argument("--seed", default="0", help="seed of the mutations (default 0)")
+    ap.add_argument("--workers", type=int, default=2, help="worker processes (default 2)")
+    ap.add_argument("--timeout", type=float, default=60.0, help="seconds per case before it counts as a hang")
+    ap.add_argument("--write", action="store_true", help="also write every output folder (slow: plots, report)")
+    ap.add_argument("--no-files", action="store_true", help="skip the malformed-CSV cases")
+    ap.add_argument("--no-minimise", action="store_true", help="do not reduce the representative mutations")
+    ap.add_argument("--report", help="write the JSON report here")
+    ap.add_argument("--repro", help="write each failure signature's minimal specification into this folder")
+    args = ap.parse_args(argv)
+
+    bases = base_specs()
+    cases = ([] if args.no_files else file_cases(bases)) + random_cases(args.count, args.seed, bases)
+    t0 = time.monotonic()
+    step = max(len(cases) // 20, 1)
+
+    def progress(done, total, rec):
+        if done % step == 0 or done == total:
+            print(f"  {done}/{total} ({time.monotonic() - t0:.0f} s)", file=sys.stderr, flush=True)
+
+    print(f"running {len(cases)} cases on {args.workers} workers", file=sys.stderr)
+    records = run_cases(cases, args.workers, args.timeout, args.write, progress)
+    for case, rec in zip(cases, records, strict=True):
+        rec["id"] = case.get("id", "file")
+    groups = {}
+    for r in records:
+        if r["outcome"] in FAILURES:
+            for sig in r["signatures"]:
+                groups.setdefault(sig, []).append(r)
+    log = lambda m: print(m, file=sys.stderr, flush=True)  # noqa: E731
+    reps = ({s: min(g, key=lambda r: len(r["ops"])) for s, g in groups.items()} if args.no_minimise
+            else minimise(groups, args.workers, args.timeout, args.write, log))
+    seconds = time.monotonic() - t0
+    print(summary_text(records, reps, seconds, args.workers))
+    if args.report:
+        report = {
+            "command": " ".join(sys.argv), "valvetrain": str(Path(valvetrain.__file__).parent),
+            "seconds": round(seconds, 1), "specifications": len(records),
+            "counts": {o: sum(r["outcome"] == o for r in records) for o in OUTCOMES},
+            "signatures": [{"outcome": reps[s]["outcome"], "signature": s, "count": len(g),
+                            "bases": sorted({r["base"] for r in g}), "base": reps[s]["base"],
+                            "mutation": reps[s]["mutation"], "detail": reps[s].get("detail", [])}
+                           for s, g in sorted(groups.items(), key=lambda kv: (reps[kv[0]]["outcome"], -len(kv[1])))],
+            "cases": [{k: r[k] for k in ("id", "base", "mutation", "outcome", "seconds")}
+                      | {k: r[k] for k in ("signatures", "detail", "other_warnings") if r.get(k)} for r in records],
+        }
+        Path(args.report).write_text(json.dumps(report, indent=1, default=str), encoding="utf-8")
+    if args.repro:
+        write_repro(args.repro, reps, bases)
+    return 1 if groups else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
