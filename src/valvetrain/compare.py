@@ -11,7 +11,6 @@ defines the same way).
 
 import numpy as np
 
-from .numerics import level_span
 from .units import MM, rad_to_deg
 
 METRICS = [
@@ -37,9 +36,7 @@ METRICS = [
 
 def duration_at(valve, height):
     """Camshaft angle [rad] over which the valve lift exceeds ``height`` [m], by root finding on the law."""
-    law = valve.law
-    rise, fall = level_span(lambda t: law.valve_lift(t, valve.rocker_ratio), law.start, law.end, height)
-    return fall - rise
+    return valve.law.duration(valve.law.ramp_height + height / valve.rocker_ratio)
 
 
 def entry(valve):

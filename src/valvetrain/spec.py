@@ -17,6 +17,7 @@ from typing import Annotated, Literal, Optional, Union
 
 from pydantic import AfterValidator, BaseModel, ConfigDict, Field, ValidationError, field_validator, model_validator
 
+from .numerics import extremum
 from .springs import feasible_mean_diameters
 from .units import MM, cam_per_crank
 
@@ -47,6 +48,18 @@ def _bounded(low, high, unit="", low_open=True, high_open=False):
 
 
 Length = lambda low, high, **kw: _bounded(low, high, "mm", **kw)  # noqa: E731
+
+
+def _zero_or(low, high, unit="", zero="none"):
+    """A float that is either 0 (meaning ``zero``) or within [low, high]: a tiny positive value is no quantity."""
+    suffix = f" {unit}" if unit else ""
+
+    def check(v):
+        if not (v == 0.0 or low <= v <= high):
+            raise ValueError(f"allowed 0 ({zero}) or [{low:g}, {high:g}]{suffix}")
+        return v
+
+    return Annotated[float, AfterValidator(check)]
 
 
 def Pair(low, high, unit=""):  # noqa: N802 (a type factory, like Length)
@@ -99,7 +112,7 @@ class Engine(_Model):
                             f"stroke_mm/2 = {self.stroke_mm / 2.0:g} mm")
         n = self.cylinders
         if self.firing_order is not None and sorted(self.firing_order) != list(range(1, n + 1)):
-            problems.append(f"engine.firing_order = {self.firing_order}: must list each cylinder 1...{n} once")
+            problems.append(f"engine.firing_order = {_shown(self.firing_order)}: must list each cylinder 1...{n} once")
         for key in ("crank_throws_deg", "banks", "firing_angles_deg"):
             value = getattr(self, key)
             if value is not None and len(value) != n:
@@ -293,7 +306,7 @@ class TableCam(_CamBase):
     table_lift_at: Literal["valve", "tappet"]
     table_zero: Literal["gas_exchange_tdc", "firing_tdc"] = "gas_exchange_tdc"
     fit: Literal["auto", "spline", "harmonic"] = "auto"
-    accuracy_mm: _bounded(1e-4, 1.0, "mm", low_open=False) = 0.005
+    accuracy_mm: _bounded(1e-4, 0.1, "mm", low_open=False) = 0.005
     max_harmonics: Annotated[int, Field(ge=4, le=400)] = 60
 
 
@@ -376,7 +389,7 @@ class Spring(_Model):
     endurance_limit_MPa: _bounded(50.0, 3000.0, "MPa", low_open=False) = 370.0
     mean_stress_factor: _bounded(0.0, 1.0, low_open=False) = 0.2
     min_safety_factor: _bounded(0.1, 10.0, low_open=False) = 1.3
-    min_resonance_ratio: _bounded(0.0, 100.0, low_open=False) = 10.0
+    min_resonance_ratio: _zero_or(1.0, 100.0, zero="the check switched off") = 10.0
     coil_gap_factor: _bounded(0.01, 1.0, low_open=False) = 0.12
     mean_diameter_ratio: Pair(0.0, 5.0) = (0.7, 0.9)
     deflection_ratio_range: Pair(1.0, 20.0) = (1.6, 3.2)
@@ -449,7 +462,7 @@ class Valve(_Model):
     throat_diameter_mm: Length(2.0, 1000.0, low_open=False)
     seat_angle_deg: _bounded(0.0, 75.0, "deg", low_open=False)
     max_lift_mm: Optional[Length(0.3, 500.0, low_open=False)] = None
-    clearance_mm: Length(0.0, 5.0, low_open=False)
+    clearance_mm: _zero_or(0.01, 5.0, "mm", zero="no clearance: a hydraulic lash adjuster")
     opens_deg: Optional[_bounded(-180.0, 180.0, "deg")] = None
     closes_deg: Optional[_bounded(-180.0, 180.0, "deg")] = None
     rocker_ratio: _bounded(0.2, 5.0, low_open=False) = 1.0
@@ -571,7 +584,7 @@ class Output(_Model):
     export_step_deg: _bounded(0.1, 10.0, "deg", low_open=False) = 1.0
 
 
-_NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_-]*$")
+_NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_-]{0,31}$")
 
 
 class Spec(_Model):
@@ -589,10 +602,10 @@ class Spec(_Model):
     @field_validator("valves")
     @classmethod
     def _valve_names(cls, valves):
-        bad = [n for n in valves if not _NAME.match(n) or n in ("crank", "two_stroke")]
+        bad = [_shown(n, 40) for n in valves if not _NAME.match(n) or n in ("crank", "two_stroke")]
         if bad:
-            raise ValueError(f"valve names {bad} must start with a letter and use only letters, digits, '_' and '-' "
-                             "(and not be 'crank' or 'two_stroke', the names of the engine's chapters)")
+            raise ValueError(f"valve names {', '.join(bad)}: allowed a letter, then up to 31 letters, digits, '_' and "
+                             "'-' (and not 'crank' or 'two_stroke', the names of the engine's chapters)")
         return valves
 
     @model_validator(mode="after")
@@ -805,7 +818,7 @@ def _resolve_tables(spec):
 def _location(err):
     """The key path of a pydantic error without the law tags pydantic inserts after a cam (``cam.kurz.phi1_deg``)."""
     loc = err["loc"]
-    parts = [str(p) for i, p in enumerate(loc)
+    parts = [str(p) if len(str(p)) <= 40 else f"{str(p)[:35]}..." for i, p in enumerate(loc)
              if not (p in LAWS and i > 0 and loc[i - 1] in ("cam", "target"))]
     return ".".join(parts) if parts else "(file)"
 
@@ -869,6 +882,12 @@ def _law_problems(spec):
             law = build_law(v, spec.engine.strokes, spec.engine.rated_speed_rpm)
         except ValueError as exc:
             out.append(f"valves.{name}.cam: {exc}")
+            continue
+        nose = law.lift_max + law.ramp_height
+        low, high = (extremum(law.lift, law.breakpoints, kind)[1] for kind in ("min", "max"))
+        if high > nose * (1.0 + 1e-6) or low < -1e-6 * nose:
+            out.append(f"valves.{name}.cam: the lift runs from {low / MM:.4g} to {high / MM:.4g} mm; allowed 0 to the "
+                       f"nose lift {nose / MM:.4g} mm (the law's angles and ramp velocity do not fit together)")
             continue
         event = math.degrees(law.end - law.start)
         if not event < 360.0:

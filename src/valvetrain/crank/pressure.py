@@ -14,6 +14,9 @@ from scipy.integrate import solve_ivp
 from ..csvfiles import read_two_columns
 from .kinematics import brix_displacement, displacement, velocity
 
+MIN_PRESSURE_MPA = 0.001
+"""Least absolute pressure of an indicator diagram [MPa] (1 kPa, far below any cylinder's)."""
+
 
 class PressureFileError(ValueError):
     """An indicator-diagram file that cannot be used; the message names the file and the line."""
@@ -63,8 +66,9 @@ def read_indicator(path, strokes):
     kind = _HEADERS[key]
     xs, ps = [], []
     for n, x, p in rows:
-        if p <= 0.0:
-            raise PressureFileError(f"{where}:{n}: pressure_MPa = {p:g}: an absolute pressure must be > 0")
+        if p < MIN_PRESSURE_MPA:
+            raise PressureFileError(f"{where}:{n}: pressure_MPa = {p:g}: an absolute pressure; allowed >= "
+                                    f"{MIN_PRESSURE_MPA:g}")
         if kind == "angle":
             if not 0.0 <= x <= 180.0 * strokes:
                 raise PressureFileError(f"{where}:{n}: crank_deg = {x:g}: allowed [0, {180 * strokes}] for a "
@@ -86,6 +90,10 @@ MAX_GAP_DEG = 60.0
 """Longest stretch of the cycle [crank deg] an indicator diagram may leave without a point: linear
 interpolation across a longer gap (a file of only the closed cycle, or of 0...360 deg of a four-stroke)
 would invent the pressure of whole strokes."""
+
+MIN_PEAK_RATIO = 2.0
+"""Least ratio of the peak to the lowest pressure of an indicator diagram: compression alone raises the
+pressure of any engine more than this (p_c / p_a = epsilon^n, about 15 at epsilon = 7, n = 1.35)."""
 
 FIRING_WINDOW_DEG = 90.0
 """The peak pressure of a fired cycle lies within this many crank degrees of the firing TDC."""
@@ -112,6 +120,9 @@ def check_cycle(angle, pressure, strokes, source="indicator diagram"):
         the firing TDC (360 deg of a four-stroke, 0 = 360 deg of a two-stroke): a file counted
         from the firing TDC gives a negative indicated work.
     """
+    if pressure.max() < MIN_PEAK_RATIO * pressure.min():
+        raise PressureFileError(f"{source}: the pressure stays within {pressure.min() / 1e6:.4g}...{pressure.max() / 1e6:.4g}"
+                                f" MPa; an indicator diagram rises at least {MIN_PEAK_RATIO:g}-fold by compression")
     length = cycle_length(strokes)
     ends = np.concatenate([angle, [angle[0] + length]])
     gaps = np.diff(ends)

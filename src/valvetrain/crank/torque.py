@@ -129,7 +129,9 @@ def engine_torque(psi, cylinder_torque, firing, strokes):
 def torque_statistics(total):
     """Mean, max, min and the non-uniformity mu = (M_max - M_min) / M_mean of samples over one period.
 
-    The samples must cover exactly one period, uniformly, without a duplicated end point.
+    The samples must cover exactly one period, uniformly, without a duplicated end point.  The
+    non-uniformity is defined for an engine that delivers torque: it is None where the mean torque is
+    not positive (a motored cycle) or vanishes against the swing of the torque.
 
     References
     ----------
@@ -137,7 +139,8 @@ def torque_statistics(total):
     """
     mean = float(np.mean(total))
     mx, mn = float(np.max(total)), float(np.min(total))
-    return {"mean": mean, "max": mx, "min": mn, "nonuniformity": (mx - mn) / mean if mean else float("nan")}
+    defined = mean > 1e-9 * max(abs(mx), abs(mn))
+    return {"mean": mean, "max": mx, "min": mn, "nonuniformity": (mx - mn) / mean if defined else None}
 
 
 def is_even(firing, strokes, tol=1e-9):

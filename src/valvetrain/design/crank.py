@@ -148,7 +148,7 @@ def crank_stage(spec):
         from_work = eng.cylinders * work / (np.pi * strokes)
         summary.update(indicated_work_J=work, imep_MPa=work / (area * 2.0 * radius) / MPA,
                        mean_torque_from_work_Nm=from_work,
-                       torque_work_balance=(stats["mean"] - from_work) / from_work if from_work else float("nan"))
+                       torque_work_balance=(stats["mean"] - from_work) / from_work if from_work else None)
     found = check_range("crank lambda = R/L", lam, *LAMBDA_RANGE, source="seed 001, eq. (1.1)")
     found += check_range("rod mass share at the piston pin", c.rod_pin_fraction, *ROD_PIN_FRACTION_RANGE,
                          source="seed 001, eq. (2.7)")

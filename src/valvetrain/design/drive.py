@@ -221,17 +221,19 @@ def _strength(v, law, omega, heel, roller, theta, y, h, dh, d2h, a_v, m_v, line,
         verdicts.append(strength.verdict("camshaft_deflection", f,
                                          f"coefficient {parts.camshaft_deflection_coefficient:.4g} (E20: not 0.8)"))
     if need(["cam_width_mm"], "cam_contact_stress"):
-        if v.cam.follower == "flat":
-            rho = geometry.flat_follower_curvature(heel, h, d2h)
-            curv = np.where(rho > 0, 1.0 / rho, np.inf)
+        flat = v.cam.follower == "flat"
+        rho = (geometry.flat_follower_curvature(heel, h, d2h) if flat
+               else geometry.roller_follower_curvature(heel, roller, h, dh, d2h))
+        # line contact needs a convex profile (flat) or a concave one wider than the roller
+        if not np.all((rho > 0.0) if flat else (rho > 0.0) | (rho < -roller)):
+            notes.append("cam_contact_stress: not checked, the profile is undercut (no line contact)")
         else:
-            rho = geometry.roller_follower_curvature(heel, roller, h, dh, d2h)
-            curv = 1.0 / rho + 1.0 / roller
-        sigma = strength.hertz_line_stress(cam, parts.cam_width_mm * MM, curv, e_contact)
-        j = int(np.argmax(sigma))
-        rec["cam_contact_stress_cam_deg"] = rad_to_deg(theta[j])
-        verdicts.append(strength.verdict("cam_contact_stress", sigma[j], "along the profile with the instantaneous "
-                                         "force and radius (seed 002, eq. 2.5)"))
+            curv = 1.0 / rho + (0.0 if flat else 1.0 / roller)
+            sigma = strength.hertz_line_stress(cam, parts.cam_width_mm * MM, curv, e_contact)
+            j = int(np.argmax(sigma))
+            rec["cam_contact_stress_cam_deg"] = rad_to_deg(theta[j])
+            verdicts.append(strength.verdict("cam_contact_stress", sigma[j], "along the profile with the "
+                                             "instantaneous force and radius (seed 002, eq. 2.5)"))
     if v.layout in ("direct", "pushrod") and v.cam.follower == "flat" and \
             need(["tappet_diameter_mm", "tappet_guide_length_mm"], "tappet_side_pressure"):
         b = float(np.max(np.abs(dh)))

@@ -234,7 +234,7 @@ def measured_summary(valve, law, nose):
     cam = valve.cam
     to_table = 2.0 if cam.table_angle == "crank" else 1.0        # table angle units per cam angle
     at_valve = valve.rocker_ratio if cam.table_lift_at == "valve" else 1.0
-    durations = [{"height_mm": h, "duration_deg": rad_to_deg(law.duration(h * MM / at_valve)) * to_table}
+    durations = [{"height_mm": h, "duration_deg": _finite(rad_to_deg(law.duration(h * MM / at_valve)) * to_table)}
                  for h in CHECKING_HEIGHTS_MM]
     quality = {kind: {"rms_residual_mm": q.rms_residual / MM, "max_residual_mm": q.max_residual / MM,
                       "jerk_sign_changes": q.jerk_sign_changes}
@@ -243,19 +243,23 @@ def measured_summary(valve, law, nose):
            "lobe_centre_deg": rad_to_deg(law.centre) * to_table, "durations_deg": durations, "fit": law.fit,
            "harmonics": law.harmonics, "asymmetry_rms_mm": law.asymmetry_rms * at_valve / MM, "fit_quality": quality,
            "table_angle": cam.table_angle, "table_lift_at": cam.table_lift_at, "table_zero": cam.table_zero}
-    # the timing the table implies, at the first checking height of valve lift (0.1 mm)
-    h = law.ramp_height + CHECKING_HEIGHTS_MM[0] * MM / valve.rocker_ratio
-    half = 0.5 * law.duration(h)
-    opens = -(nose - 2.0 * half) if valve.kind == "intake" else np.pi - (nose - 2.0 * half) - 2 * np.pi
-    closes = (nose + 2.0 * half) - (np.pi if valve.kind == "intake" else 0.0)
-    rec["opens_deg_at_0.1mm"], rec["closes_deg_at_0.1mm"] = rad_to_deg(opens), rad_to_deg(closes)
+    # the timing the table implies, where the valve lift crosses the first checking height (0.1 mm)
+    rise, fall = law.crossings(law.ramp_height + CHECKING_HEIGHTS_MM[0] * MM / valve.rocker_ratio)
+    opens = -(nose + 2.0 * rise) if valve.kind == "intake" else -np.pi - (nose + 2.0 * rise)
+    closes = (nose + 2.0 * fall) - (np.pi if valve.kind == "intake" else 0.0)
+    rec["opens_deg_at_0.1mm"], rec["closes_deg_at_0.1mm"] = _finite(rad_to_deg(opens)), _finite(rad_to_deg(closes))
     found = []
     for key, derived in (("opens_deg", rec["opens_deg_at_0.1mm"]), ("closes_deg", rec["closes_deg_at_0.1mm"])):
         given = getattr(valve, key)
-        if given is not None:
+        if given is not None and derived is not None:
             found += check_range(f"{key} against the measured table", given, derived - 2.0, derived + 2.0,
                                  source="the table's timing at 0.1 mm valve lift (+-2 crank deg)", unit="crank deg")
     return rec, found
+
+
+def _finite(x):
+    """A float, or None where it is not defined (a checking height the lift never reaches)."""
+    return float(x) if np.isfinite(x) else None
 
 
 def nose_crank_angle(valve):

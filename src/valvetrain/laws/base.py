@@ -20,7 +20,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..numerics import extremum
+from ..numerics import extremum, level_span
 
 
 @dataclass(frozen=True)
@@ -152,6 +152,16 @@ class LiftLaw(ABC):
     def valve_lift(self, theta, rocker_ratio=1.0):
         """Valve lift i_k (h - h0) for h > h0, else 0 [m] (seed 000, work 2: valve = tappet x l_v/l_t)."""
         return rocker_ratio * np.clip(self.lift(theta) - self.ramp_height, 0.0, None)
+
+    def crossings(self, height):
+        """Camshaft angles [rad from the nose] where the lift first rises above and last falls below ``height``
+        [m], by root finding on the law; ``(nan, nan)`` where the lift never reaches it."""
+        return level_span(self.lift, self.start, self.end, height)
+
+    def duration(self, height):
+        """Camshaft angle [rad] over which the lift exceeds ``height`` [m] (nan if it never reaches it)."""
+        rise, fall = self.crossings(height)
+        return fall - rise
 
     def extremes(self, omega):
         """Extreme velocity and accelerations at camshaft speed omega [rad/s], found on the analytic law."""

@@ -26,6 +26,9 @@ BASE_CIRCLE_ACCURACIES = 3.0
 base circle (noise and run-out of the measurement).  A table must start and end in the band and no row may lie
 below it; a fit must stay within it below zero and above the table's largest lift."""
 
+MAX_LIFT_MM = 500.0
+"""Largest lift a table may hold [mm], the bound of max_lift_mm: beyond it the table is not in millimetres."""
+
 MIN_VALVE_LIFT_MM = 0.3
 """Smallest largest valve lift of a table [mm]: about the valve clearance (0.25-0.35 mm inlet, seed 000, work 2);
 a table that lifts the valve less holds a ramp or noise, not a cam lobe."""
@@ -88,6 +91,24 @@ def read_lift_table(path):
     return angles, lifts
 
 
+def noise_level(lift):
+    """Robust estimate of the measurement noise of a table [same unit as ``lift``].
+
+    The second differences of a smooth curve sampled densely are small; those of white noise of
+    standard deviation sigma have the standard deviation sqrt(6) sigma.  Their median absolute
+    deviation (scaled by 1.4826 to a standard deviation) ignores the few rows where the curve itself
+    bends sharply, so a noiseless table with a step or a flat top gives zero.
+
+    Examples
+    --------
+    >>> rng = np.random.default_rng(1)
+    >>> round(float(noise_level(np.sin(np.linspace(0, 3, 4000)) + rng.normal(0, 1e-3, 4000))) * 1e3, 1)
+    1.0
+    """
+    d2 = np.diff(np.asarray(lift, dtype=float), 2)
+    return float(1.4826 * np.median(np.abs(d2 - np.median(d2))) / np.sqrt(6.0))
+
+
 def lobe_table(angle_deg, lift_mm, angle="crank", zero="gas_exchange_tdc", accuracy_mm=0.005,
                min_lift_mm=MIN_VALVE_LIFT_MM):
     """The lobe of a lift table in the engine's cam frame: checked, trimmed and bounded in size for the fits.
@@ -144,6 +165,9 @@ def lobe_table(angle_deg, lift_mm, angle="crank", zero="gas_exchange_tdc", accur
     if h[top] < min_lift_mm:
         raise ValueError(f"the largest lift is {h[top]:g} mm (angle_deg = {a[top]:g}); a cam lobe lifts the valve "
                          f"at least {MIN_VALVE_LIFT_MM:g} mm: allowed >= {min_lift_mm:.4g} mm in this table")
+    if h[top] > MAX_LIFT_MM:
+        raise ValueError(f"the largest lift is {h[top]:g} mm (angle_deg = {a[top]:g}); allowed at most "
+                         f"{MAX_LIFT_MM:g} mm (is the table in millimetres?)")
     a, h = _whole_lobe(a, h, band, revolution, unit)
     first, last = _one_lobe(a, h, band)
     cam = (a + (0.5 * revolution if zero == "firing_tdc" else 0.0)) * (360.0 / revolution)
@@ -460,7 +484,15 @@ class TableLaw(RampedLaw):
         if fit == "auto":
             fit = "harmonic" if bounded and self.harmonic_rms <= self.accuracy else "spline"
         self.fit = fit
+        # the fit used stays within the table's range and reaches its top, to the noise of the measurement
+        tol = BASE_CIRCLE_ACCURACIES * max(self.accuracy, noise_level(y))
+        swing = self.fitted(np.linspace(*window, 8001))[0]
+        if swing.min() < -tol or abs(swing.max() - y.max()) > tol:
+            raise ValueError(f"the {fit} fit runs from {swing.min() / 1e-3:.4g} to {swing.max() / 1e-3:.4g} mm "
+                             f"against the table's 0 to {y.max() / 1e-3:.4g} mm; allowed +-{tol / 1e-3:.3g} mm (3 x "
+                             "the noise): no smooth lobe (a flat top, a step, too few rows?)")
         self.start_angle, self.end_angle = lift_event(lambda t: self.fitted(t)[0], *window, band)
+        self._top = extremum(lambda t: self.fitted(t)[0], [self.start_angle, 0.0, self.end_angle], "max")[1]
         self._ramp_height = float(ramp_height)
         self._valve_span = (self.start_angle, self.end_angle)
         if ramp_height > 0.0:
@@ -504,18 +536,14 @@ class TableLaw(RampedLaw):
         return FitQuality(float(np.sqrt(np.mean(resid**2))), float(np.abs(resid).max()), changes,
                           float(np.sum(np.abs(np.diff(jerk)))))
 
-    def duration(self, height):
-        """Angular duration at a checking height [rad camshaft] (nan if the lift never reaches it)."""
-        rise, fall = level_span(lambda t: self.fitted(t)[0], self.start_angle, self.end_angle, height)
-        return fall - rise
-
     @property
     def segments(self):
         return [Segment("measured opening", self.start_angle, 0.0), Segment("measured closing", 0.0, self.end_angle)]
 
     @property
     def lift_max(self):
-        return float(self.fitted(np.zeros(1))[0, 0]) - self._ramp_height
+        """The largest fitted lift above the ramp [m] (a lobe's top need not lie on its symmetry axis)."""
+        return self._top - self._ramp_height
 
     @property
     def ramp_height(self):
