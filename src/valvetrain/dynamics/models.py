@@ -388,6 +388,39 @@ class MultiMassTrain:
         return net.build(x_valve, valve, self.rocker_ratio)
 
 
+def natural_frequencies(network, held=()):
+    """Natural frequencies of a network with every contact closed and no damping [rad/s], ascending.
+
+    Parameters
+    ----------
+    network : Network
+    held : sequence of str
+        Names of nodes held fixed (e.g. ``("valve",)`` for the surge modes of the springs alone).
+
+    Notes
+    -----
+    Eigenvalues of :math:`\\mathbf M^{-1/2}\\mathbf K\\mathbf M^{-1/2}`, K assembled from the element
+    stiffnesses (an element between nodes a and b adds k to K_aa, K_bb and -k to K_ab, K_ba).
+
+    Examples
+    --------
+    The one-mass train with its seat closed: sqrt((c + K + c_s) / M).
+
+    >>> net = one_mass_train(0.25, 15e6, 67.5e3, 400.0, seat_stiffness=2e8).network()
+    >>> bool(np.isclose(natural_frequencies(net)[0], np.sqrt((15e6 + 67.5e3 + 2e8) / 0.25)))
+    True
+    """
+    n = network.mass.size
+    k = np.zeros((n, n))
+    for a, b, c in zip(network.a, network.b, network.stiffness, strict=True):
+        for i, j, sign in ((a, a, 1.0), (b, b, 1.0), (a, b, -1.0), (b, a, -1.0)):
+            if i >= 0 and j >= 0:
+                k[i, j] += sign * c
+    free = np.array([name not in held for name in network.names])
+    scale = 1.0 / np.sqrt(network.mass[free])
+    return np.sqrt(np.clip(np.linalg.eigvalsh(scale[:, None] * k[np.ix_(free, free)] * scale[None, :]), 0.0, None))
+
+
 def pushrod_stiffness(length, diameter, bore=0.0, modulus=STEEL_MODULUS):
     """Axial stiffness of a pushrod, E A / L [N/m] (a tube of outer ``diameter`` and inner ``bore``)."""
     return modulus * np.pi * (diameter**2 - bore**2) / 4.0 / length
