@@ -88,31 +88,38 @@ def _one_speed(omega, n_sub, dtheta, cam_u, cam_du, per_step, steps_per_rev, rev
         out_clash[e] = np.inf
     for i in range(n):
         out_surge[i] = 0.0
-    j = 0
+    j0 = 0
+    countdown = 0                           # sub-steps to the next recorded angle
     for step in range(total):
-        j0, j1, j2 = j % period, (j + half) % period, (j + 2 * half) % period
+        j1 = j0 + half
+        j2 = j1 + half
+        if j2 == period:
+            j2 = 0
         u0, u1, u2 = cam_u[j0], cam_u[j1], cam_u[j2]
         w0, w1, w2 = omega * cam_du[j0], omega * cam_du[j1], omega * cam_du[j2]
         _forces(x, v, u0, w0, inv_mass, a, b, k, d, gap, pre, uni, k1v, force)
-        if step >= first_recorded and (step - first_recorded) % n_sub == 0:
-            r = (step - first_recorded) // n_sub
-            for q in range(rec_nodes.size):
-                out_x[q, r] = x[rec_nodes[q]]
-                out_v[q, r] = v[rec_nodes[q]]
-            for q in range(rec_elems.size):
-                out_f[q, r] = force[rec_elems[q]]
-            for e in range(ne):
-                if clash_gap[e] > 0.0:
-                    xa = x[a[e]] if a[e] >= 0 else 0.0
-                    xb = x[b[e]] if b[e] >= 0 else 0.0
-                    margin = clash_gap[e] - (xa - xb)
-                    if margin < out_clash[e]:
-                        out_clash[e] = margin
-            for i in range(n):
-                if surge_w[i] > 0.0:
-                    dev = abs(x[i] - surge_w[i] * x[surge_ref])
-                    if dev > out_surge[i]:
-                        out_surge[i] = dev
+        if step >= first_recorded:
+            if countdown == 0:
+                r = (step - first_recorded) // n_sub
+                countdown = n_sub
+                for q in range(rec_nodes.size):
+                    out_x[q, r] = x[rec_nodes[q]]
+                    out_v[q, r] = v[rec_nodes[q]]
+                for q in range(rec_elems.size):
+                    out_f[q, r] = force[rec_elems[q]]
+                for e in range(ne):
+                    if clash_gap[e] > 0.0:
+                        xa = x[a[e]] if a[e] >= 0 else 0.0
+                        xb = x[b[e]] if b[e] >= 0 else 0.0
+                        margin = clash_gap[e] - (xa - xb)
+                        if margin < out_clash[e]:
+                            out_clash[e] = margin
+                for i in range(n):
+                    if surge_w[i] > 0.0:
+                        dev = abs(x[i] - surge_w[i] * x[surge_ref])
+                        if dev > out_surge[i]:
+                            out_surge[i] = dev
+            countdown -= 1
         for i in range(n):
             k1x[i] = v[i]
             xs[i] = x[i] + 0.5 * dt * k1x[i]
@@ -132,7 +139,7 @@ def _one_speed(omega, n_sub, dtheta, cam_u, cam_du, per_step, steps_per_rev, rev
             k4x[i] = vs[i]
             x[i] += dt / 6.0 * (k1x[i] + 2.0 * k2x[i] + 2.0 * k3x[i] + k4x[i])
             v[i] += dt / 6.0 * (k1v[i] + 2.0 * k2v[i] + 2.0 * k3v[i] + k4v[i])
-        j += 2 * half
+        j0 = j2
 
 
 @njit(cache=True, parallel=True)
