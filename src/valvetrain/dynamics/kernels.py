@@ -15,8 +15,8 @@ RK4 is chosen over a symplectic or Newmark scheme because the contact laws are n
 switch (a Newmark step would need an iteration at every switch) and because its error
 constant is small enough for the 1 um lift accuracy at 0.1 cam deg; its stability bound on
 an undamped mode is omega_n dt < 2.83.  The caller (:mod:`.sweep`) divides the angle step
-by a power of two per speed so that omega_max dt <= 1 for the stiffest mode (Gershgorin
-bound of the network); there RK4 damps that mode by under 1 % a step, a mild numerical
+by a power of two per speed so that |lambda| dt <= 1 for the fastest eigenvalue of the
+linearised network; there RK4 damps an undamped mode by under 1 % a step, a mild numerical
 dissipation of modes far above the cam harmonics (references: E. Hairer, S. P. Norsett,
 G. Wanner, Solving Ordinary Differential Equations I, 1993, section II.1 and IV.2 for the
 stability function 1 + z + z^2/2 + z^3/6 + z^4/24).

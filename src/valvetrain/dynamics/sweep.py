@@ -25,20 +25,21 @@ import numpy as np
 from .kernels import integrate_network
 
 STEP_LIMIT = 1.0
-"""Largest omega_max dt of the explicit integrator (omega_max: Gershgorin bound of the train); RK4 is stable to
-2.83 and damps a mode at omega dt = 1 by 0.7 % a step (Hairer, Norsett, Wanner 1993, section IV.2)."""
+"""Largest |lambda| dt of the explicit integrator (|lambda|: spectral radius of the train's state matrix,
+:meth:`~.models.Network.highest_frequency`); RK4 is stable to 2.83 on the imaginary axis and damps an undamped
+mode at omega dt = 1 by 0.7 % a step (Hairer, Norsett, Wanner 1993, section IV.2)."""
 
 BOUNCE_TOLERANCE = 1e-6
 """Lift above the seat that counts as a bounce [m] (1 um: below it the valve rocks on the seat's elasticity)."""
 
 
 def substeps(highest_frequency, cam_speeds, step):
-    """Sub-steps per angle step for each speed, the smallest power of two with omega_max dt <= STEP_LIMIT.
+    """Sub-steps per angle step for each speed, the smallest power of two with |lambda|_max dt <= STEP_LIMIT.
 
     Parameters
     ----------
     highest_frequency : float
-        Bound on the train's highest natural frequency [rad/s].
+        Spectral radius of the train's state matrix [1/s].
     cam_speeds : ndarray
         Camshaft speeds [rad/s].
     step : float
@@ -123,9 +124,18 @@ class SpeedResult:
 
     @property
     def lift_error(self):
-        """Valve lift minus the rigid lift where the valve is open by either [m]."""
-        return np.where((self.lift > 0) | (self.kinematic_lift > 0), self.lift - np.maximum(self.kinematic_lift, 0.0),
-                        0.0)
+        """Valve lift minus the rigid lift where either is open [m]."""
+        return lift_error(self.lift, self.kinematic_lift)
+
+
+def lift_error(lift, kinematic_lift):
+    """Valve lift y minus the rigid lift max(k h - x0, 0) where either is open, else 0 [m].
+
+    >>> (lift_error(np.array([-1e-6, 2e-3, 0.0]), np.array([-1e-4, 2.1e-3, 1e-5])) * 1e6).round(6).tolist()
+    [0.0, -100.0, -10.0]
+    """
+    rigid = np.maximum(kinematic_lift, 0.0)
+    return np.where((lift > 0) | (rigid > 0), lift - rigid, 0.0)
 
 
 def runs(mask):
@@ -223,8 +233,7 @@ class SweepResult:
     @property
     def lift_error(self):
         """Map of valve lift minus rigid lift where either is open [m], shape (S, n)."""
-        rigid = np.maximum(self.kinematic_lift, 0.0)
-        return np.where((self.lift > 0) | (rigid > 0), self.lift - rigid, 0.0)
+        return lift_error(self.lift, self.kinematic_lift)
 
     @property
     def torque(self):
