@@ -113,3 +113,18 @@ def test_layouts_and_lash_position():
     assert d.elements[int(np.argmax(d.gap))] == "cam contact" and d.lash == 0.25e-3
     assert p.names[:4] == ("tappet", "pushrod", "rocker", "valve") and len(p.names) == 6
     assert replace(p).valve == 3
+
+
+def test_geometry_estimates():
+    """Stiffness and inertia estimates from part geometry against hand formulas: a steel tube E pi (D^2 - d^2)/4/L;
+    a rectangular cantilever 3 E b h^3 / (12 l^3); the camshaft between bearings 3 E I l / (l1^2 l2^2) (simply
+    supported beam, the force over the deflection of seed 000 eq. 7.3); a rocker of two equal slender arms
+    m l^2 / 3."""
+    from valvetrain.dynamics.models import camshaft_stiffness, pushrod_stiffness, rocker_arm_inertia, rocker_stiffness
+
+    e = 2.1e11
+    assert pushrod_stiffness(0.25, 8e-3, 5e-3) == pytest.approx(e * np.pi * (8e-3**2 - 5e-3**2) / 4 / 0.25)
+    assert rocker_stiffness(0.04, 12e-3, 10e-3) == pytest.approx(3 * e * 12e-3 * (10e-3) ** 3 / 12 / 0.04**3)
+    inertia = np.pi * 0.025**4 / 64
+    assert camshaft_stiffness(0.03, 0.05, 0.025) == pytest.approx(3 * e * inertia * 0.08 / (0.03**2 * 0.05**2))
+    assert rocker_arm_inertia(0.09, 0.04, 0.04) == pytest.approx(0.09 * 0.04**2 / 3)
