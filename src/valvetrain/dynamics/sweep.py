@@ -331,5 +331,12 @@ def simulate(law, train, cam_speed, revolutions=3, step_deg=0.1, bounce_toleranc
 
 
 def speed_range(low, high, count=200):
-    """``count`` camshaft speeds evenly spaced from ``low`` (idle) to ``high`` (over-speed) [rad/s]."""
+    """``count`` camshaft speeds evenly spaced from ``low`` (idle) to ``high`` (over-speed) [rad/s].
+
+    The issue's default sweep is 200 speeds; an engine speed n [rpm] of a four-stroke turns the camshaft at
+    pi n / 60 rad/s.
+
+    >>> speed_range(np.pi * 800 / 60, np.pi * 7000 / 60).size
+    200
+    """
     return np.linspace(low, high, count)
