@@ -1,0 +1,88 @@
+"""Cam-follower contact under the dynamic force: Hertz stress and the lubrication characteristic.
+
+Seed 002 section 3.4 computes the contact stress (2.5) with the force of the elastic train
+instead of the kinetostatic one; the curvature comes from the law (2.6)/(2.7) and the
+lubrication characteristic gamma = rho / (R0 + h) from (2.12).  The formulas live in
+:mod:`valvetrain.strength` and :mod:`valvetrain.geometry`; this module only feeds them the
+simulated force.
+"""
+
+import numpy as np
+
+from ..geometry import flat_follower_curvature, roller_follower_curvature
+from ..strength import hertz_line_stress
+
+
+def cam_curvature(law, theta, base_radius, roller_radius=None):
+    """Radius of curvature of the cam profile [m], flat follower (2.6) or roller follower (2.7).
+
+    Parameters
+    ----------
+    law : valvetrain.laws.base.LiftLaw
+    theta : ndarray
+        Camshaft angle [rad from the nose].
+    base_radius : float
+        Heel-circle radius on which h = 0 [m].
+    roller_radius : float, optional
+        Roller radius [m]; None for a flat follower.
+    """
+    h, dh, d2h = law.derivatives(theta)[:3]
+    if roller_radius is None:
+        return flat_follower_curvature(base_radius, h, d2h)
+    return roller_follower_curvature(base_radius, roller_radius, h, dh, d2h)
+
+
+def dynamic_contact_stress(law, theta, force, base_radius, width, modulus, roller_radius=None):
+    """Hertz stress between cam and follower under the dynamic contact force [Pa].
+
+    Parameters
+    ----------
+    law : valvetrain.laws.base.LiftLaw
+    theta : ndarray (n,)
+        Camshaft angle [rad from the nose].
+    force : ndarray (..., n)
+        Contact force at the cam [N] (e.g. ``SweepResult.contact_force``, one row per speed).
+    base_radius, width : float
+        Heel-circle radius and cam width [m].
+    modulus : float
+        Effective modulus E_m [Pa] (:func:`valvetrain.strength.effective_modulus`).
+    roller_radius : float, optional
+        Roller radius [m]; None for a flat follower (1/rho_2 = 0, eq. 2.11).
+
+    Notes
+    -----
+    .. math:: \\sigma = 0.418\\sqrt{\\frac{F E_m}{b}\\left(\\frac1{\\rho_1} + \\frac1{\\rho_2}\\right)}
+
+    References
+    ----------
+    seed 002, eqs. (2.5), (2.11) and section 3.4 (the force of the dynamic calculation).
+    """
+    rho = cam_curvature(law, theta, base_radius, roller_radius)
+    curvature = 1.0 / rho + (0.0 if roller_radius is None else 1.0 / roller_radius)
+    return hertz_line_stress(force, width, curvature, modulus)
+
+
+def lubrication_characteristic(law, theta, base_radius):
+    """gamma = rho / (R0 + h), the hydrodynamic lubrication characteristic of a flat follower.
+
+    Parameters
+    ----------
+    law : valvetrain.laws.base.LiftLaw
+    theta : ndarray
+        Camshaft angle [rad from the nose].
+    base_radius : float
+        Heel-circle radius [m].
+
+    Notes
+    -----
+    Eq. (2.12) gives h_min = k (R0 + h) sqrt(2 gamma^2 - gamma), zero at gamma = 0 and 0.5 (imaginary
+    between as printed, open question Q6 of the spec), so only gamma is returned: the film is poor near
+    gamma = 0.5, and 0.15-0.25 is recommended on the nose; on the base circle rho = R0 and gamma = 1.  The
+    force does not enter (2.12); the dynamic force enters the stress of :func:`dynamic_contact_stress`.
+
+    References
+    ----------
+    seed 002, eq. (2.12); spec/methods-seeds-002-004.md, section 1.
+    """
+    h, _, d2h = law.derivatives(theta)[:3]
+    return flat_follower_curvature(base_radius, h, d2h) / (base_radius + h)

@@ -1,0 +1,525 @@
+"""Elastic valve-train models: one-mass and multi-mass (4 + N1 + N2) trains as lumped networks.
+
+Coordinates are reduced to the valve (seed 002, section 3.1; spec/methods-seeds-002-004.md,
+section 12): a displacement on the tappet side is multiplied by the rocker ratio k (valve
+arm / tappet arm), so a tappet-side mass m counts as m / k^2, a tappet-side stiffness c as
+c / k^2 and a rocker of inertia J about its shaft as J / l_v^2.  Positive is the opening
+direction.  SI units: kg, N/m, N s/m, N, m.
+
+A train becomes a :class:`Network` of masses and elements that the compiled integrator of
+:mod:`.kernels` advances: bilateral spring-dampers with a preload (valve-spring coils) and
+unilateral contacts with a gap (cam contact with the lash, drive joints, valve seat).
+"""
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..masses import spring_mass
+from ..springs import spring_rate
+from ..strength import STEEL_MODULUS, camshaft_deflection
+from .kernels import CAM, GROUND
+
+DAMPING_RATIO = 0.05
+"""Damping ratio of the drive, zeta in C = 2 zeta sqrt(c M): the value of the worked example of
+spec/methods-seeds-002-004.md, sections 2 and 12 (the sources give none; 0.03-0.1 is the usual
+range in the valve-train literature)."""
+
+SEAT_STIFFNESS = 2.0e8
+"""Stiffness of the valve head on its seat [N/m]: an assumption (the sources give none).  A 30 mm
+steel valve head and seat insert deflect some 2-5 um under a 1 kN seating load, i.e. 2e8-5e8
+N/m; the seat must be much stiffer than the drive (c ~ 1.5e7 N/m) and resolved by the time step."""
+
+SEAT_DAMPING_RATIO = 0.4
+"""Damping ratio of the seat contact, C_s = 2 zeta_s sqrt(c_s M): an assumption (a coefficient of restitution
+of exp(-pi zeta / sqrt(1 - zeta^2)) = 0.25 for a free impact).  With it the sweep of the spec's worked example
+shows its pattern: a few um of bounce at 1500 cam rpm, none at 3000, about 2 mm once the valve floats
+(spec/methods-seeds-002-004.md, section 12, whose reference seat values are not given)."""
+
+COIL_DAMPING_RATIO = 0.02
+"""Damping ratio of the spring coils (material and inter-coil friction; an assumption in the usual
+0.01-0.03 range of spring-surge studies)."""
+
+
+@dataclass(frozen=True)
+class Network:
+    """A lumped train ready for :func:`~valvetrain.dynamics.kernels.integrate_network` (SI, valve side).
+
+    Attributes
+    ----------
+    names : tuple of str
+        Node names (``"valve"`` is the valve).
+    mass : ndarray (n,)
+        Node masses [kg].
+    x_init : ndarray (n,)
+        Static position on the seat [m].
+    elements : tuple of str
+        Element names.
+    a, b : ndarray (E,) of int
+        End nodes (``CAM``, ``GROUND`` or a node index); compression x_a - x_b - gap > 0 pushes b.
+    stiffness, damping, gap, preload : ndarray (E,)
+        [N/m], [N s/m], [m], [N].
+    unilateral : ndarray (E,) of bool
+        Compression-only contact.
+    clash_gap : ndarray (E,)
+        Coil closing distance at the installed length [m] (0: not a coil element).
+    surge_weight : ndarray (n,)
+        Quasi-static share of the valve motion of each coil node (0: not a coil node).
+    rocker_ratio : float
+        k, to turn the valve-side cam force into the force at the cam.
+    """
+
+    names: tuple
+    mass: np.ndarray
+    x_init: np.ndarray
+    elements: tuple
+    a: np.ndarray
+    b: np.ndarray
+    stiffness: np.ndarray
+    damping: np.ndarray
+    gap: np.ndarray
+    preload: np.ndarray
+    unilateral: np.ndarray
+    clash_gap: np.ndarray
+    surge_weight: np.ndarray
+    rocker_ratio: float
+
+    @property
+    def valve(self):
+        """Index of the valve node."""
+        return self.names.index("valve")
+
+    @property
+    def cam_element(self):
+        """Index of the cam-follower contact."""
+        return int(np.flatnonzero(self.a == CAM)[0])
+
+    @property
+    def seat_element(self):
+        """Index of the valve-seat contact."""
+        return self.elements.index("seat")
+
+    @property
+    def lash(self):
+        """Total clearance of the drive at the valve [m]: the gaps of its unilateral elements."""
+        drive = self.unilateral & (np.arange(self.a.size) != self.seat_element)
+        return float(self.gap[drive].sum())
+
+    @property
+    def spring_elements(self):
+        """Indices of the elements that act on the valve from its springs (force on the valve = -their sum)."""
+        return np.array([i for i, n in enumerate(self.elements) if n.endswith("spring at valve")], dtype=np.int64)
+
+    def matrix(self, values):
+        """Assembled n x n matrix of element values (stiffnesses or dampings) with every contact closed.
+
+        An element between nodes a and b adds its value to M_aa and M_bb and subtracts it from M_ab and M_ba;
+        the cam and the ground add to the diagonal only.
+        """
+        n = self.mass.size
+        out = np.zeros((n, n))
+        for a, b, value in zip(self.a, self.b, values, strict=True):
+            for i, j, sign in ((a, a, 1.0), (b, b, 1.0), (a, b, -1.0), (b, a, -1.0)):
+                if i >= 0 and j >= 0:
+                    out[i, j] += sign * value
+        return out
+
+    def highest_frequency(self):
+        """Spectral radius of the linearised state matrix with every contact closed [1/s].
+
+        The eigenvalues of [[0, I], [-M^-1 K, -M^-1 C]]: closing a contact only adds stiffness and damping,
+        so this bounds |lambda| of every contact state; the explicit integrator keeps |lambda| dt <= 1, well
+        inside the stability region of RK4.
+        """
+        n = self.mass.size
+        inv = (1.0 / self.mass)[:, None]
+        state = np.block([[np.zeros((n, n)), np.eye(n)],
+                          [-inv * self.matrix(self.stiffness), -inv * self.matrix(self.damping)]])
+        return float(np.abs(np.linalg.eigvals(state)).max())
+
+
+@dataclass(frozen=True)
+class CoilSpring:
+    """A valve spring for the coil-mass model (SI).
+
+    Attributes
+    ----------
+    rate : float
+        Spring rate K [N/m].
+    preload : float
+        Installed force F0 [N].
+    mass : float
+        Mass of the active coils m_s [kg]; the dead end coils move with the retainer or rest on the head.
+    closing_gap : float
+        Sum of the gaps between the active coils at the installed length [m]: the spring goes solid
+        when compressed by this much (0: not monitored).
+    coils : int
+        Coil masses N of the model (0: a massless spring with m_s / 3 on the valve, as in seed 000 eq. 5.2).
+    damping_ratio : float
+        Of each coil segment on its two neighbouring half masses.
+    """
+
+    rate: float
+    preload: float
+    mass: float
+    closing_gap: float = 0.0
+    coils: int = 8
+    damping_ratio: float = COIL_DAMPING_RATIO
+
+
+def coil_spring_from_geometry(wire_diameter, mean_diameter, active_coils, preload, installed_pitch, coils=8,
+                              shear_modulus=8.0e10, density=7850.0, damping_ratio=COIL_DAMPING_RATIO):
+    """A :class:`CoilSpring` from the wire and coil geometry.
+
+    Parameters
+    ----------
+    wire_diameter, mean_diameter : float
+        d and D [m].
+    active_coils : float
+        Working coils i_p.
+    preload : float
+        Installed force F0 [N].
+    installed_pitch : float
+        Coil pitch t_0 at the installed length [m] (seed 000, eq. 6.6).
+    coils : int
+        Coil masses of the model.
+    shear_modulus, density : float
+        G [Pa] and rho [kg/m^3] (seed 000, work 6 defaults).
+
+    Notes
+    -----
+    Rate :math:`K = G d^4 / (8 D^3 i_p)` (seed 000, eq. 6.2); mass of the active coils
+    :math:`m_s = \\rho \\pi d^2/4\\,\\pi D\\,i_p` (seed 003, step 3); closing gap :math:`i_p (t_0 - d)`.
+    """
+    return CoilSpring(float(spring_rate(shear_modulus, wire_diameter, mean_diameter, active_coils)), float(preload),
+                      float(spring_mass(mean_diameter, wire_diameter, active_coils, density)),
+                      float(active_coils * (installed_pitch - wire_diameter)), int(coils), float(damping_ratio))
+
+
+class _Builder:
+    """Collects nodes and elements of a :class:`Network`."""
+
+    def __init__(self):
+        self.names, self.mass, self.weight = [], [], []
+        self.elements, self.rows = [], []
+
+    def node(self, name, mass, weight=0.0):
+        self.names.append(name)
+        self.mass.append(float(mass))
+        self.weight.append(float(weight))
+        return len(self.names) - 1
+
+    def element(self, name, a, b, stiffness, damping, gap=0.0, preload=0.0, unilateral=False, clash=0.0):
+        self.elements.append(name)
+        self.rows.append((a, b, float(stiffness), float(damping), float(gap), float(preload), bool(unilateral),
+                          float(clash)))
+
+    def node_mass(self, i):
+        return self.mass[i] if i >= 0 else np.inf
+
+    def pair_mass(self, a, b):
+        """Reduced mass of the two ends of an element (the moving one alone against the ground or the cam)."""
+        ma, mb = self.node_mass(a), self.node_mass(b)
+        return mb if not np.isfinite(ma) else ma if not np.isfinite(mb) else ma * mb / (ma + mb)
+
+    def damped(self, name, a, b, stiffness, ratio, **kw):
+        self.element(name, a, b, stiffness, 2.0 * ratio * np.sqrt(stiffness * self.pair_mass(a, b)), **kw)
+
+    def spring(self, tag, spring, valve):
+        """The coils of one spring between the valve (retainer) and the head: N masses, N + 1 segments."""
+        n = spring.coils
+        if n == 0:
+            self.mass[valve] += spring.mass / 3.0
+            self.element(f"{tag} spring at valve", valve, GROUND, spring.rate, 0.0, preload=spring.preload,
+                         clash=spring.closing_gap)
+            return
+        seg_k = (n + 1) * spring.rate
+        seg_gap = spring.closing_gap / (n + 1)
+        self.mass[valve] += spring.mass / (2.0 * (n + 1))
+        nodes = [self.node(f"{tag} coil {i + 1}", spring.mass / (n + 1), (n - i) / (n + 1)) for i in range(n)]
+        ends = [valve] + nodes + [GROUND]
+        for i in range(n + 1):
+            name = f"{tag} spring at valve" if i == 0 else f"{tag} coil segment {i + 1}"
+            self.damped(name, ends[i], ends[i + 1], seg_k, spring.damping_ratio, preload=spring.preload,
+                        clash=seg_gap)
+
+    def seat(self, valve, stiffness, ratio, springs_preload):
+        self.damped("seat", GROUND, valve, stiffness, ratio, unilateral=True)
+        return -springs_preload / stiffness
+
+    def build(self, x_valve, valve, rocker_ratio):
+        rows = list(zip(*self.rows, strict=True))
+        weight = np.array(self.weight)
+        x_init = x_valve * np.where(weight > 0.0, weight, 1.0)   # drive parts resting on the seated valve
+        return Network(tuple(self.names), np.array(self.mass), x_init, tuple(self.elements),
+                       np.array(rows[0], dtype=np.int64), np.array(rows[1], dtype=np.int64), np.array(rows[2]),
+                       np.array(rows[3]), np.array(rows[4]), np.array(rows[5]), np.array(rows[6], dtype=np.bool_),
+                       np.array(rows[7]), np.array(self.weight), float(rocker_ratio))
+
+
+@dataclass(frozen=True)
+class OneMassTrain:
+    """Single-degree-of-freedom train (seed 002, section 3.1; spec/methods-seeds-002-004.md, section 12).
+
+    Attributes
+    ----------
+    mass : float
+        Mass reduced to the valve M [kg].
+    stiffness : float
+        Drive stiffness between cam and valve reduced to the valve c [N/m].
+    damping : float
+        Drive damping C [N s/m].
+    spring_rate, preload : float
+        Valve spring K [N/m] and installed force F0 [N].
+    rocker_ratio : float
+        k = valve arm / tappet arm.
+    lash : float
+        Valve clearance at the valve x0 [m].
+    seat_stiffness, seat_damping : float
+        Valve seat contact c_s [N/m], C_s [N s/m].
+    notes : tuple of str
+        How each value was obtained.
+
+    Notes
+    -----
+    .. math:: M\\ddot y = F_c - (F_0 + K y) + F_{seat},\\quad
+              F_c = \\max(0,\\,c\\,\\delta + C\\dot\\delta)\\ \\text{if}\\ \\delta = k h - x_0 - y > 0,
+
+    :math:`F_{seat} = \\max(0, -c_s y - C_s\\dot y)` for y < 0.
+    """
+
+    mass: float
+    stiffness: float
+    damping: float
+    spring_rate: float
+    preload: float
+    rocker_ratio: float = 1.0
+    lash: float = 0.0
+    seat_stiffness: float = SEAT_STIFFNESS
+    seat_damping: float = 0.0
+    notes: tuple = ()
+
+    def network(self):
+        """The train as a :class:`Network`: one node, cam contact with the lash, spring, seat."""
+        net = _Builder()
+        valve = net.node("valve", self.mass)
+        net.element("cam contact", CAM, valve, self.stiffness, self.damping, gap=self.lash, unilateral=True)
+        net.element("spring at valve", valve, GROUND, self.spring_rate, 0.0, preload=self.preload)
+        net.element("seat", GROUND, valve, self.seat_stiffness, self.seat_damping, unilateral=True)
+        return net.build(-self.preload / self.seat_stiffness, valve, self.rocker_ratio)
+
+
+def one_mass_train(mass, stiffness, spring_rate, preload, rocker_ratio=1.0, lash=0.0, damping_ratio=DAMPING_RATIO,
+                   seat_stiffness=SEAT_STIFFNESS, seat_damping_ratio=SEAT_DAMPING_RATIO):
+    """A :class:`OneMassTrain` with the damping given by damping ratios.
+
+    Parameters
+    ----------
+    mass : float
+        M [kg] at the valve (seed 000 eq. 5.2, :func:`valvetrain.masses.reduced_mass_at_valve`).
+    stiffness : float
+        c [N/m] at the valve.
+    spring_rate, preload : float
+        K [N/m], F0 [N].
+    rocker_ratio, lash : float
+        k and x0 [m].
+    damping_ratio, seat_damping_ratio : float
+        zeta of C = 2 zeta sqrt(c M) and of C_s = 2 zeta_s sqrt(c_s M).
+    seat_stiffness : float
+        c_s [N/m].
+    """
+    notes = (f"drive damping C = 2 zeta sqrt(c M) with zeta = {damping_ratio:g}",
+             f"seat: c_s = {seat_stiffness:.3g} N/m, zeta_s = {seat_damping_ratio:g} (assumed, see SEAT_STIFFNESS)")
+    return OneMassTrain(float(mass), float(stiffness), 2.0 * damping_ratio * np.sqrt(stiffness * mass),
+                        float(spring_rate), float(preload), float(rocker_ratio), float(lash), float(seat_stiffness),
+                        2.0 * seat_damping_ratio * np.sqrt(seat_stiffness * mass), notes)
+
+
+@dataclass(frozen=True)
+class MultiMassTrain:
+    """Multi-degree-of-freedom train, 4 + N1 + N2 masses (seed 002, section 3.2; spec section 12).
+
+    Attributes
+    ----------
+    layout : str
+        ``"pushrod"`` (cam - tappet - pushrod - rocker - valve), ``"rocker"`` (overhead cam: cam - rocker -
+        valve) or ``"direct"`` (overhead cam on a bucket tappet: cam - tappet - valve).
+    drive : tuple of (str, float)
+        Drive masses from the cam to the valve, reduced to the valve [kg] (the valve last).
+    links : tuple of float
+        Stiffnesses reduced to the valve [N/m]: cam to the first mass, then between successive masses.
+    springs : tuple of CoilSpring
+        Outer and inner spring (one or two).
+    rocker_ratio, lash : float
+        k and the valve clearance x0 [m] at the valve.
+    lash_link : int
+        Index in ``links`` of the joint that holds the clearance (the rocker-valve joint, or the cam for a
+        bucket tappet).
+    damping_ratio : float
+        Of every drive link on the reduced mass of its two ends.
+    seat_stiffness, seat_damping_ratio : float
+        Valve seat contact.
+    notes : tuple of str
+        How each value was obtained.
+
+    Notes
+    -----
+    :math:`\\mathbf M\\ddot{\\mathbf x} + \\mathbf C\\dot{\\mathbf x} + \\mathbf K\\mathbf x = \\mathbf f(h,
+    \\text{contacts})` (spec section 12).  Every drive link is a compression-only contact (a ball joint or a
+    face transmits no tension); the coils are bilateral.  A spring of N coil masses is N + 1 segments of
+    rate (N + 1) K between the retainer and the head, masses m_s / (N + 1) inside and half of one on the
+    valve (lumped-mass discretisation of the wave equation of the coil; its lowest fixed-fixed mode tends to
+    pi sqrt(K / m_s), seed 000 eq. 6.13, as N grows).
+    """
+
+    layout: str
+    drive: tuple
+    links: tuple
+    springs: tuple
+    rocker_ratio: float = 1.0
+    lash: float = 0.0
+    lash_link: int = 0
+    damping_ratio: float = DAMPING_RATIO
+    seat_stiffness: float = SEAT_STIFFNESS
+    seat_damping_ratio: float = SEAT_DAMPING_RATIO
+    notes: tuple = field(default=())
+
+    def network(self):
+        """The train as a :class:`Network`."""
+        net = _Builder()
+        nodes = [net.node(name, m) for name, m in self.drive]
+        valve = nodes[-1]
+        for s, tag in zip(self.springs, ("outer", "inner"), strict=False):
+            net.spring(tag, s, valve)
+        ends = [CAM] + nodes
+        for i, c in enumerate(self.links):
+            name = "cam contact" if i == 0 else f"{self.drive[i - 1][0]}-{self.drive[i][0]} joint"
+            net.damped(name, ends[i], ends[i + 1], c, self.damping_ratio, unilateral=True,
+                       gap=self.lash if i == self.lash_link else 0.0)
+        x_valve = net.seat(valve, self.seat_stiffness, self.seat_damping_ratio, sum(s.preload for s in self.springs))
+        return net.build(x_valve, valve, self.rocker_ratio)
+
+
+def natural_frequencies(network, held=()):
+    """Natural frequencies of a network with every contact closed and no damping [rad/s], ascending.
+
+    Parameters
+    ----------
+    network : Network
+    held : sequence of str
+        Names of nodes held fixed (e.g. ``("valve",)`` for the surge modes of the springs alone).
+
+    Notes
+    -----
+    Eigenvalues of :math:`\\mathbf M^{-1/2}\\mathbf K\\mathbf M^{-1/2}` with K from :meth:`Network.matrix`.
+
+    Examples
+    --------
+    The one-mass train with its seat closed: sqrt((c + K + c_s) / M).
+
+    >>> net = one_mass_train(0.25, 15e6, 67.5e3, 400.0, seat_stiffness=2e8).network()
+    >>> bool(np.isclose(natural_frequencies(net)[0], np.sqrt((15e6 + 67.5e3 + 2e8) / 0.25)))
+    True
+    """
+    k = network.matrix(network.stiffness)
+    free = np.array([name not in held for name in network.names])
+    scale = 1.0 / np.sqrt(network.mass[free])
+    return np.sqrt(np.clip(np.linalg.eigvalsh(scale[:, None] * k[np.ix_(free, free)] * scale[None, :]), 0.0, None))
+
+
+def pushrod_stiffness(length, diameter, bore=0.0, modulus=STEEL_MODULUS):
+    """Axial stiffness of a pushrod, E A / L [N/m] (a tube of outer ``diameter`` and inner ``bore``)."""
+    return modulus * np.pi * (diameter**2 - bore**2) / 4.0 / length
+
+
+def rocker_stiffness(arm, width, height, modulus=STEEL_MODULUS):
+    """Bending stiffness of a rocker arm at its tip, 3 E I / l^3 with I = b h^3 / 12 [N/m] (a cantilever
+    from the shaft; engineering estimate, the sources give none)."""
+    return 3.0 * modulus * width * height**3 / 12.0 / arm**3
+
+
+def camshaft_stiffness(l1, l2, diameter, bore=0.0, modulus=STEEL_MODULUS):
+    """Stiffness of the camshaft under its cam, force / deflection of seed 000 eq. (7.3) [N/m]."""
+    return 1.0 / camshaft_deflection(1.0, l1, l2, diameter, bore, modulus)
+
+
+def series(*stiffnesses):
+    """Stiffness of springs in series, 1 / sum(1/c_i) [N/m]."""
+    return 1.0 / sum(1.0 / c for c in stiffnesses)
+
+
+def pushrod_train(tappet_mass, pushrod_mass, rocker_inertia, valve_mass, valve_arm, rocker_ratio, cam_stiffness,
+                  pushrod_stiffness, rocker_stiffness, valve_stiffness, springs, lash=0.0, **kw):
+    """A pushrod (cam-in-block) :class:`MultiMassTrain`: cam - tappet - pushrod - rocker - valve.
+
+    Parameters
+    ----------
+    tappet_mass, pushrod_mass : float
+        [kg], on the tappet side.
+    rocker_inertia : float
+        J about the rocker shaft [kg m^2].
+    valve_mass : float
+        Valve with retainer and cotters [kg].
+    valve_arm : float
+        l_v [m]; ``rocker_ratio`` k = l_v / l_t.
+    cam_stiffness : float
+        Camshaft bending with the cam-tappet contact, tappet side [N/m] (e.g. :func:`camshaft_stiffness`).
+    pushrod_stiffness : float
+        Axial, tappet side [N/m] (e.g. :func:`pushrod_stiffness`).
+    rocker_stiffness : float
+        At the valve tip, valve side [N/m] (e.g. :func:`rocker_stiffness`).
+    valve_stiffness : float
+        Valve stem between the rocker and the retainer [N/m] (a large value if the stem is rigid).
+    springs : sequence of CoilSpring
+    lash : float
+        Valve clearance at the valve [m] (held at the rocker-valve joint).
+    **kw
+        ``damping_ratio``, ``seat_stiffness``, ``seat_damping_ratio`` of :class:`MultiMassTrain`.
+
+    Notes
+    -----
+    Masses at the valve: tappet m_t / k^2, pushrod m_p / k^2 at its middle, rocker J / l_v^2, valve.  The
+    pushrod is split into two halves of stiffness 2 c_p / k^2 each side of its mass; the camshaft c_cam / k^2.
+    """
+    k2 = rocker_ratio**2
+    drive = (("tappet", tappet_mass / k2), ("pushrod", pushrod_mass / k2), ("rocker", rocker_inertia / valve_arm**2),
+             ("valve", valve_mass))
+    links = (cam_stiffness / k2, 2.0 * pushrod_stiffness / k2, 2.0 * pushrod_stiffness / k2,
+             series(rocker_stiffness, valve_stiffness))
+    notes = ("masses at the valve: m_t/k^2, m_p/k^2, J/l_v^2, valve (seed 000 eq. 5.2)",
+             "pushrod mass lumped at its middle between two halves of stiffness 2 c_p",
+             "rocker tip and valve stem stiffness in series between rocker and valve; lash at that joint")
+    return MultiMassTrain("pushrod", drive, links, tuple(springs), float(rocker_ratio), float(lash), 3,
+                          notes=notes, **kw)
+
+
+def rocker_train(rocker_inertia, valve_mass, valve_arm, rocker_ratio, cam_stiffness, rocker_stiffness,
+                 valve_stiffness, springs, lash=0.0, **kw):
+    """An overhead-cam rocker (finger follower) :class:`MultiMassTrain`: cam - rocker - valve.
+
+    The rocker inertia about its pivot gives J / l_v^2 at the valve; the cam stiffness (camshaft and contact,
+    cam side) counts c / k^2; the lash sits at the rocker-valve joint.
+    """
+    drive = (("rocker", rocker_inertia / valve_arm**2), ("valve", valve_mass))
+    links = (cam_stiffness / rocker_ratio**2, series(rocker_stiffness, valve_stiffness))
+    notes = ("masses at the valve: J/l_v^2, valve", "lash at the rocker-valve joint")
+    return MultiMassTrain("rocker", drive, links, tuple(springs), float(rocker_ratio), float(lash), 1,
+                          notes=notes, **kw)
+
+
+def direct_train(tappet_mass, valve_mass, cam_stiffness, valve_stiffness, springs, lash=0.0, **kw):
+    """A direct-acting overhead-cam :class:`MultiMassTrain`: cam - bucket tappet - valve (k = 1).
+
+    The clearance is between the cam and the bucket (shim), so the lash sits at the cam contact.
+    """
+    drive = (("tappet", tappet_mass), ("valve", valve_mass))
+    links = (cam_stiffness, valve_stiffness)
+    notes = ("bucket tappet on the valve stem, lash between cam and tappet",)
+    return MultiMassTrain("direct", drive, links, tuple(springs), 1.0, float(lash), 0, notes=notes, **kw)
+
+
+def rocker_arm_inertia(mass, arm_valve, arm_tappet):
+    """Moment of inertia of a rocker about its shaft [kg m^2], two slender arms of total mass ``mass`` split in
+    proportion to their lengths: J = m (l_v^3 + l_t^3) / (3 (l_v + l_t)) (engineering estimate)."""
+    return mass * (arm_valve**3 + arm_tappet**3) / (3.0 * (arm_valve + arm_tappet))
+

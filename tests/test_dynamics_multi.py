@@ -1,0 +1,130 @@
+"""Multi-mass (4 + N1 + N2) trains: reduction to one mass, spring surge, coil clash, layouts (spec section 12)."""
+
+from dataclasses import replace
+
+import numpy as np
+import pytest
+
+from valvetrain.dynamics.models import (CoilSpring, OneMassTrain, coil_spring_from_geometry, direct_train,
+                                        natural_frequencies, pushrod_train, rocker_train)
+from valvetrain.dynamics.sweep import simulate, sweep
+from valvetrain.laws import DynamicLaw
+from valvetrain.masses import reduced_mass_at_valve
+from valvetrain.springs import natural_frequency
+
+RPM = np.pi / 30.0
+PARTS = dict(tappet_mass=0.06, pushrod_mass=0.09, rocker_inertia=6e-5, valve_mass=0.12, valve_arm=0.045,
+             rocker_ratio=1.5)
+
+
+def spec8_law():
+    """The dynamic cam of spec section 8 (see tests/test_dynamics.py)."""
+    omega = 3000 * RPM
+    law = DynamicLaw(8e-3, np.radians(55), [2, 10, 18, 26, 34], 0.3 / omega, 15e6, 0.25, 67.5e3, 400.0, omega,
+                     1.5, 0.3e-3, "constant_acceleration", 0.5)
+    return law
+
+
+def test_pushrod_masses_are_seed000_reduced_mass():
+    """With massless-coil springs (N = 0, m_s/3 on the valve) the node masses of the pushrod train add up to
+    seed 000 eq. (5.2), valvetrain.masses.reduced_mass_at_valve."""
+    spring = CoilSpring(67.5e3, 400.0, 0.05, coils=0)
+    train = pushrod_train(**PARTS, cam_stiffness=5e7, pushrod_stiffness=4e7, rocker_stiffness=3e7,
+                          valve_stiffness=2e8, springs=[spring])
+    expected = reduced_mass_at_valve(0.12, 0.0, 0.0, 0.05, 0.09, 0.06, 6e-5, 0.045, 1.5)
+    assert train.network().mass.sum() == pytest.approx(expected, rel=1e-12)
+
+
+def test_rigid_links_reduce_to_one_mass():
+    """Drive links 1000 times stiffer than the cam link make the four drive masses move as one: the valve lift
+    and the cam force equal those of the one-mass train with M = their sum, c and C = the cam link's and the same
+    seat (spec section 12).  No lash: a clearance at a rigid joint would be a hard impact the one-mass train
+    cannot have."""
+    law = spec8_law()
+    spring = CoilSpring(67.5e3, 400.0, 0.05, coils=0)
+    k2 = PARTS["rocker_ratio"] ** 2
+    c = 15e6
+    rigid = 1e3 * c
+    multi = pushrod_train(**PARTS, cam_stiffness=c * k2, pushrod_stiffness=rigid * k2 / 2, rocker_stiffness=2 * rigid,
+                          valve_stiffness=2 * rigid, springs=[spring])
+    net = multi.network()
+    one = OneMassTrain(net.mass.sum(), c, net.damping[net.cam_element], 67.5e3, 400.0, 1.5, 0.0,
+                       net.stiffness[net.seat_element], net.damping[net.seat_element])
+    omega = 2000 * RPM
+    a, b = simulate(law, multi, omega), simulate(law, one, omega)
+    event = a.theta < b.seating_angle      # at the seating impact the drive parts may lift off the stopped valve
+    assert a.lift.max() > 7e-3
+    assert np.abs(a.lift - b.lift)[event].max() < 1e-6
+    assert np.abs(a.contact_force - b.contact_force)[event].max() < 0.01 * b.contact_force.max()
+
+
+@pytest.mark.parametrize("coils", [4, 8, 16, 32])
+def test_first_surge_frequency_tends_to_the_spring_formula(coils):
+    """Coil-mass model with the valve held: its first mode is that of a uniform fixed-fixed chain,
+    2 (N + 1) sqrt(K/m_s) sin(pi / (2 (N + 1))), which tends from below to seed 000 eq. (6.13),
+    omega_c1 = d / (D^2 i_p) sqrt(G / (2 rho)) = pi sqrt(K / m_s) of the continuous spring."""
+    d, big_d, i_p = 4e-3, 30e-3, 6.0
+    spring = coil_spring_from_geometry(d, big_d, i_p, 300.0, installed_pitch=7e-3, coils=coils)
+    train = direct_train(0.05, 0.1, 5e7, 2e8, [spring])
+    modes = natural_frequencies(train.network(), held=("valve", "tappet"))
+    analytic = natural_frequency(d, big_d, i_p, 8.0e10, 7850.0)
+    chain = 2 * (coils + 1) * np.sqrt(spring.rate / spring.mass) * np.sin(np.pi / (2 * (coils + 1)))
+    assert modes[0] == pytest.approx(chain, rel=1e-10)
+    assert modes[0] < analytic and modes[0] == pytest.approx(analytic, rel=1.2 / (coils + 1) ** 2)
+
+
+def test_coil_clash_margin():
+    """Slow cam: the coils share the valve lift evenly, so the closing margin of each segment is
+    (closing gap - valve lift) / (N + 1); a gap below the lift makes the coils clash."""
+    law = spec8_law()
+    springs = [CoilSpring(45e3, 250.0, 0.04, closing_gap=gap, coils=8) for gap in (10e-3, 6e-3)]
+    trains = [pushrod_train(**PARTS, cam_stiffness=4e7, pushrod_stiffness=3e7, rocker_stiffness=3e7,
+                            valve_stiffness=2e8, springs=[s, CoilSpring(22.5e3, 150.0, 0.02, coils=4)], lash=0.3e-3)
+              for s in springs]
+    results = [sweep(law, t, [300 * RPM], revolutions=1) for t in trains]
+    lift = results[0].lift[0].max()
+    assert results[0].clash_margin[0] == pytest.approx((10e-3 - lift) / 9, abs=5e-6)
+    assert results[1].clash_margin[0] == pytest.approx((6e-3 - lift) / 9, abs=5e-6) and results[1].clash_margin[0] < 0
+    assert results[1].headline()["coil_clash_speed"] == 300 * RPM
+    assert results[0].surge_amplitude.shape == (1, 12)
+
+
+def test_surge_grows_at_resonance():
+    """A cam harmonic on the first surge frequency (omega_c1 = 13 omega_cam, seed 000 eq. 6.14's ratio below
+    its limit of 10 is the resonant case) makes the coils swing more than off resonance (omega_c1 = 13.5)."""
+    law = spec8_law()
+    spring = CoilSpring(45e3, 400.0, 0.05, coils=8, damping_ratio=0.01)
+    train = rocker_train(3e-5, 0.12, 0.04, 1.5, 1e8, 3e7, 2e8, [spring], lash=0.3e-3)
+    omega_c1 = natural_frequencies(train.network(), held=("valve", "rocker"))[0]
+    r = sweep(law, train, [omega_c1 / 13, omega_c1 / 13.5])
+    amp = r.surge_amplitude.max(axis=1)
+    assert amp[0] > 1.5 * amp[1]
+
+
+def test_layouts_and_lash_position():
+    """The lash sits at the rocker-valve joint of a pushrod or rocker train and at the cam of a bucket tappet."""
+    spring = CoilSpring(45e3, 250.0, 0.04, coils=2)
+    p = pushrod_train(**PARTS, cam_stiffness=4e7, pushrod_stiffness=3e7, rocker_stiffness=3e7, valve_stiffness=2e8,
+                      springs=[spring], lash=0.3e-3).network()
+    r = rocker_train(3e-5, 0.12, 0.04, 1.5, 1e8, 3e7, 2e8, [spring], lash=0.2e-3).network()
+    d = direct_train(0.05, 0.1, 5e7, 2e8, [spring], lash=0.25e-3).network()
+    assert p.elements[int(np.argmax(p.gap))] == "rocker-valve joint" and p.lash == 0.3e-3
+    assert r.elements[int(np.argmax(r.gap))] == "rocker-valve joint" and r.lash == 0.2e-3
+    assert d.elements[int(np.argmax(d.gap))] == "cam contact" and d.lash == 0.25e-3
+    assert p.names[:4] == ("tappet", "pushrod", "rocker", "valve") and len(p.names) == 6
+    assert replace(p).valve == 3
+
+
+def test_geometry_estimates():
+    """Stiffness and inertia estimates from part geometry against hand formulas: a steel tube E pi (D^2 - d^2)/4/L;
+    a rectangular cantilever 3 E b h^3 / (12 l^3); the camshaft between bearings 3 E I l / (l1^2 l2^2) (simply
+    supported beam, the force over the deflection of seed 000 eq. 7.3); a rocker of two equal slender arms
+    m l^2 / 3."""
+    from valvetrain.dynamics.models import camshaft_stiffness, pushrod_stiffness, rocker_arm_inertia, rocker_stiffness
+
+    e = 2.1e11
+    assert pushrod_stiffness(0.25, 8e-3, 5e-3) == pytest.approx(e * np.pi * (8e-3**2 - 5e-3**2) / 4 / 0.25)
+    assert rocker_stiffness(0.04, 12e-3, 10e-3) == pytest.approx(3 * e * 12e-3 * (10e-3) ** 3 / 12 / 0.04**3)
+    inertia = np.pi * 0.025**4 / 64
+    assert camshaft_stiffness(0.03, 0.05, 0.025) == pytest.approx(3 * e * inertia * 0.08 / (0.03**2 * 0.05**2))
+    assert rocker_arm_inertia(0.09, 0.04, 0.04) == pytest.approx(0.09 * 0.04**2 / 3)
