@@ -5,6 +5,7 @@ import pytest
 from scipy.integrate import quad
 
 from valvetrain import flow
+from valvetrain.checks import failed
 from valvetrain.numerics import cumulative_integral
 
 from conftest import SEED000_OMEGA_EXACT, seed000_law
@@ -83,6 +84,6 @@ def test_flow_checks_flag_the_appendix():
     """E8: V' = 85.1 m/s above 50-80 and V'' = 97.4 above 80-95."""
     found = flow.check_flow("intake", bore=D, throat_diameter=D_THROAT, max_lift=0.010, v1=85.07, v2=97.44,
                             v3=135.75, charge_velocity=135.75, engine_type="si", chamber="hemispherical")
-    names = [f.quantity for f in found]
+    names = [f.quantity for f in failed(found)]
     assert names == ["V' (throat velocity)", "V'' (curtain velocity at full lift)"]
-    assert found[0].range == "50...80 m/s"
+    assert failed(found)[0].range == "50...80 m/s"

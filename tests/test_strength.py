@@ -68,7 +68,9 @@ def test_sphere_socket_and_pad():
 
 
 def test_verdict_records():
+    """A strength verdict is a Check against the limit of seed 000 work 7, shown in its unit."""
     v = strength.verdict("pushrod_buckling_margin", 1.5)
-    assert not v.passed
-    assert v.as_dict()["allowed"] == ">= 2"
-    assert strength.verdict("cam_contact_stress", 900e6).as_dict(1e-6, "MPa")["pass"] is True
+    assert not v.passed and v.range == ">= 2" and v.severity == "failure"
+    assert v.margin == pytest.approx(1.5 / 2.0 - 1.0)
+    stress = strength.verdict("cam_contact_stress", 900e6)
+    assert stress.passed and stress.range == "<= 1200 MPa" and stress.shown_value == pytest.approx(900.0)

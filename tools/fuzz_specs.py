@@ -794,6 +794,7 @@ DOCUMENTED_NULLS = {
     "duration_deg": "a checking height the measured lift never reaches",
     "opens_deg_at_0.1mm": "a measured lift that never reaches 0.1 mm", "closes_deg_at_0.1mm": "the same",
     "nonuniformity": "a mean torque that is not positive", "torque_work_balance": "no indicated work",
+    "low": "a check open below", "high": "a check open above",
 }
 
 DOCUMENTED_EMPTY_CELLS = {"rho_mm"}
@@ -837,7 +838,7 @@ def null_problems(data, valve_names):
                 continue
             margin = key.endswith("margin") or (len(path) > 1 and path[-2] == "margins")
             if margin and v == math.inf:
-                continue      # springs._margin: a check switched off passes with an infinite margin
+                continue      # a check switched off (or without bounds) passes with an infinite margin
             out.append((_generic(path, valve_names), f"{dotted(path)} = {v!r}"))
     return out
 

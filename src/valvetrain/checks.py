@@ -1,104 +1,158 @@
-"""Design checks as data.
+"""Design checks as data: one record for every check, passed or failed.
 
-Every computed design is compared with the recommended ranges of the sources.  A value
-outside its range is not an exception: it becomes a :class:`Finding`, a record of the
-quantity, its value, the allowed range and the source of the range.  The report lists
-the findings and ``results.json`` carries them under ``warnings``.
+Every computed design is compared with the recommended ranges and the allowable limits of
+the sources.  Each comparison is a :class:`Check`: the quantity, its value, the bounds, the
+unit they are shown in, the source of the bounds, the severity of a failure and the margin.
+A check that fails is not an exception: the report lists every check, ``results.json``
+carries them, the failed ones are the design's warnings, and an optimiser takes its
+constraints from the margins.
+
+Values and bounds are SI; ``unit`` names the unit they are shown in (see
+:func:`valvetrain.units.to_display`), so that conversion happens only when a check is shown.
 """
 
-from dataclasses import asdict, dataclass
+from dataclasses import dataclass, replace
 import math
+
+from .units import to_display
+
+SEVERITIES = ("info", "warning", "failure")
+"""What a failed check means: ``info`` a remark, ``warning`` a value outside a recommended range,
+``failure`` a limit a part cannot pass (a stress above its allowable, an impossible geometry)."""
+
+_TOL = 1e-9
+"""Relative tolerance at a bound, so that a value printed as the bound (0.46 = 36.8/80) is inside."""
 
 
 @dataclass(frozen=True)
-class Finding:
-    """One value outside its recommended range.
+class Check:
+    """One value against its allowed range.
 
     Attributes
     ----------
     quantity : str
-        What was checked, with the part it belongs to (e.g. ``"intake: V' (throat)"``).
+        What was checked, with the part it belongs to (e.g. ``"intake: V' (throat velocity)"``).
     value : float
-        The computed value, in ``unit``.
-    range : str
-        The allowed or recommended range, as text with its unit (e.g. ``"50...80 m/s"``).
-    source : str
-        Where the range comes from (seed and equation or section).
+        The computed value, SI.
+    low, high : float or None
+        Bounds of the allowed or recommended range, SI; None leaves that side open.
     unit : str
-        Unit of ``value``.
+        Unit in which value and bounds are shown (``"mm"``, ``"MPa"``, ``"crank deg"``, ``""``).
+    source : str
+        Where the range comes from.
+    severity : {"info", "warning", "failure"}
+        What a failure means.
+    strict_low : bool
+        The lower bound itself fails (``value > low`` required).
+    note : str
+        How the value was obtained, where that needs saying.
     """
 
     quantity: str
     value: float
-    range: str
-    source: str
+    low: float = None
+    high: float = None
     unit: str = ""
+    source: str = ""
+    severity: str = "warning"
+    strict_low: bool = False
+    note: str = ""
+
+    @property
+    def passed(self):
+        """True when the value lies within the bounds (to a relative 1e-9 at a bound)."""
+        v = float(self.value)
+        if not math.isfinite(v):
+            return False
+        if self.low is not None:
+            if self.strict_low and v <= self.low:
+                return False
+            if v < self.low - _TOL * max(1.0, abs(self.low)):
+                return False
+        return self.high is None or v <= self.high + _TOL * max(1.0, abs(self.high))
+
+    @property
+    def margin(self):
+        """Relative distance to the nearest bound, >= 0 when the check passes: (value - low)/|low| and
+        (high - value)/|high| (a bound of 0 divides by 1 in SI); +inf without bounds, -inf for a value
+        that is not finite."""
+        v = float(self.value)
+        if not math.isfinite(v):
+            return -math.inf
+        sides = [(v - self.low) / (abs(self.low) or 1.0)] if self.low is not None else []
+        if self.high is not None:
+            sides.append((self.high - v) / (abs(self.high) or 1.0))
+        return min(sides, default=math.inf)
+
+    @property
+    def shown_value(self):
+        """The value in :attr:`unit`."""
+        return to_display(self.value, self.unit)
+
+    @property
+    def range(self):
+        """The allowed range as text in :attr:`unit` (``"50...80 m/s"``, ``">= 1.3"``, ``"> 0 mm"``)."""
+        low = None if self.low is None else to_display(self.low, self.unit)
+        high = None if self.high is None else to_display(self.high, self.unit)
+        return describe_range(low, high, self.unit, self.strict_low)
+
+    def named(self, prefix):
+        """The same check with ``prefix: `` before its quantity (the valve or chapter it belongs to)."""
+        return replace(self, quantity=f"{prefix}: {self.quantity}")
+
+    def warning(self):
+        """The record of a failed check in ``results.json`` ``warnings``: quantity, value, range, source, unit."""
+        return {"quantity": self.quantity, "value": self.shown_value, "range": self.range, "source": self.source,
+                "unit": self.unit}
 
     def as_dict(self):
-        return asdict(self)
-
-
-_TOL = 1e-9
-"""Relative tolerance at a bound, so that a value printed as the bound (0.46 = 36.8/80) is inside."""
+        """The full record, in :attr:`unit`: the warning record with the bounds, severity, pass and margin."""
+        return {**self.warning(),
+                "low": None if self.low is None else to_display(self.low, self.unit),
+                "high": None if self.high is None else to_display(self.high, self.unit),
+                "severity": self.severity, "pass": self.passed, "margin": self.margin,
+                **({"note": self.note} if self.note else {})}
 
 
 def _fmt(x):
     return f"{x:g}"
 
 
-def describe_range(low=None, high=None, unit=""):
-    """Text of a range ``low...high`` (either side may be open) with its unit."""
+def describe_range(low=None, high=None, unit="", strict_low=False):
+    """Text of a range ``low...high`` (either side may be open) with its unit.
+
+    >>> describe_range(50, 80, "m/s"), describe_range(low=0, unit="mm", strict_low=True)
+    ('50...80 m/s', '> 0 mm')
+    """
     suffix = f" {unit}" if unit else ""
     if low is not None and low == high:
         return f"{_fmt(low)}{suffix}"
     if low is not None and high is not None:
         return f"{_fmt(low)}...{_fmt(high)}{suffix}"
     if low is not None:
-        return f">= {_fmt(low)}{suffix}"
+        return f"{'>' if strict_low else '>='} {_fmt(low)}{suffix}"
     if high is not None:
         return f"<= {_fmt(high)}{suffix}"
-    raise ValueError("a range needs at least one bound")
+    return "any"
 
 
-def check_range(quantity, value, low=None, high=None, *, source, unit="", strict_low=False):
-    """Compare a value with a recommended range.
-
-    Parameters
-    ----------
-    quantity : str
-        Name of the checked quantity.
-    value : float
-        Value in ``unit``.
-    low, high : float or None
-        Bounds of the recommended range (inclusive); ``None`` leaves that side open.
-    source : str
-        Source of the range.
-    unit : str
-        Unit of value and bounds.
-    strict_low : bool
-        If true the lower bound itself is outside the range (``value > low`` required).
-
-    Returns
-    -------
-    list of Finding
-        Empty when the value is inside the range, otherwise one finding.
+def check(quantity, value, low=None, high=None, *, source, unit="", severity="warning", strict_low=False, note=""):
+    """A :class:`Check` of ``value`` (SI) against ``low``/``high`` (SI); see :class:`Check` for the fields.
 
     Examples
     --------
-    >>> check_range("V'", 85.07, 50, 80, source="seed 000, work 1", unit="m/s")[0].range
-    '50...80 m/s'
-    >>> check_range("V'", 70.0, 50, 80, source="seed 000, work 1", unit="m/s")
-    []
+    >>> c = check("V'", 85.07, 50, 80, source="seed 000, work 1", unit="m/s")
+    >>> c.passed, c.range, round(c.margin, 4)
+    (False, '50...80 m/s', -0.0634)
+    >>> check("rho_min", 11.885e-3, low=2e-3, source="seed 002", unit="mm").warning()["range"]
+    '>= 2 mm'
     """
-    value = float(value)
-    bad = not math.isfinite(value)
-    if low is not None:
-        bad |= value <= low if strict_low else value < low - _TOL * max(1.0, abs(low))
-    if high is not None:
-        bad |= value > high + _TOL * max(1.0, abs(high))
-    if not bad:
-        return []
-    text = describe_range(low, high, unit)
-    if strict_low and high is None:
-        text = f"> {_fmt(low)}{' ' + unit if unit else ''}"
-    return [Finding(quantity, value, text, source, unit)]
+    if severity not in SEVERITIES:
+        raise ValueError(f"severity = {severity!r}: allowed {SEVERITIES}")
+    return Check(quantity, float(value), None if low is None else float(low), None if high is None else float(high),
+                 unit, source, severity, strict_low, note)
+
+
+def failed(checks):
+    """The checks of a sequence that fail, in order."""
+    return [c for c in checks if not c.passed]

@@ -102,7 +102,7 @@ def run(file, out, force, lang):
             click.echo(f"refused: valves.{name}: the cam profile is undercut (rho_min = {v.summary['cam']['rho_min_mm']:.4g}"
                        " mm): no contour, DXF or manufacturing table was written for it")
     for w in results.warnings:
-        click.echo(f"warning: {w.quantity} = {w.value:.6g} {w.unit}, recommended {w.range} ({w.source})".replace(
+        click.echo(f"warning: {w.quantity} = {w.shown_value:.6g} {w.unit}, recommended {w.range} ({w.source})".replace(
             "  ", " "))
 
 

@@ -6,7 +6,7 @@ lengths in m, areas in m^2, time-area in m^2*s, velocities in m/s, angles in rad
 
 import numpy as np
 
-from .checks import check_range
+from .checks import check
 from .numerics import cumulative_integral
 
 THROAT_TO_BORE_RANGES = {
@@ -289,7 +289,8 @@ def check_flow(kind, *, bore, throat_diameter, max_lift, v1, v2, v3, charge_velo
 
     Returns
     -------
-    list of Finding
+    list of Check
+        Every check, passed or not.
 
     Notes
     -----
@@ -297,22 +298,20 @@ def check_flow(kind, *, bore, throat_diameter, max_lift, v1, v2, v3, charge_velo
     total throat area is compared: the equivalent diameter sqrt(i) d of one valve of the same
     area (this project's reading for multi-valve heads).
     """
-    found = []
+    out = []
     if kind == "intake":
         label = "throat diameter / bore" if count == 1 else f"equivalent throat diameter sqrt({count}) d / bore"
-        found += check_range(label, np.sqrt(count) * throat_diameter / bore,
-                             *THROAT_TO_BORE_RANGES[chamber], source=f"seed 000, work 1 ({chamber} chamber)")
-    found += check_range("valve lift / throat diameter", max_lift / throat_diameter, *LIFT_TO_THROAT_RANGE,
-                         source="seed 000, work 2 (automotive engines)")
-    found += check_range("V' (throat velocity)", v1, *THROAT_VELOCITY_RANGE[kind],
-                         source="seed 000, work 1, eq. (1.1)", unit="m/s")
+        out.append(check(label, np.sqrt(count) * throat_diameter / bore, *THROAT_TO_BORE_RANGES[chamber],
+                         source=f"seed 000, work 1 ({chamber} chamber)"))
+    out.append(check("valve lift / throat diameter", max_lift / throat_diameter, *LIFT_TO_THROAT_RANGE,
+                     source="seed 000, work 2 (automotive engines)"))
+    out.append(check("V' (throat velocity)", v1, *THROAT_VELOCITY_RANGE[kind], source="seed 000, work 1, eq. (1.1)",
+                     unit="m/s"))
     if kind == "intake":
-        found += check_range("V'' (curtain velocity at full lift)", v2, *CURTAIN_VELOCITY_RANGE[kind],
-                             source="seed 000, work 1, eq. (1.2)", unit="m/s")
+        out.append(check("V'' (curtain velocity at full lift)", v2, *CURTAIN_VELOCITY_RANGE[kind],
+                         source="seed 000, work 1, eq. (1.2)", unit="m/s"))
         v3_range = TIME_AREA_VELOCITY_RANGE["diesel" if engine_type == "diesel" else "si"]
-        found += check_range("V''' (time-area velocity)", v3, *v3_range,
-                             source="seed 000, work 1, eq. (1.4)", unit="m/s")
-        found += check_range("v_vp (mean charge velocity)", charge_velocity,
-                             *MEAN_CHARGE_VELOCITY_RANGE[engine_type], source="seed 000, work 4, eq. (4.3)",
-                             unit="m/s")
-    return found
+        out.append(check("V''' (time-area velocity)", v3, *v3_range, source="seed 000, work 1, eq. (1.4)", unit="m/s"))
+        out.append(check("v_vp (mean charge velocity)", charge_velocity, *MEAN_CHARGE_VELOCITY_RANGE[engine_type],
+                         source="seed 000, work 4, eq. (4.3)", unit="m/s"))
+    return out

@@ -8,6 +8,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from .checks import check
 from .masses import spring_mass
 
 SPRING_RESERVE_RANGE = (1.5, 2.25)
@@ -319,14 +320,6 @@ class SpringMaterial:
     end_coils: float = 2.0               # i_0
 
 
-def _margin(value, limit, kind):
-    """value/limit - 1 for a minimum, 1 - value/limit for a maximum; a zero minimum (check switched off) always
-    passes with an infinite margin."""
-    if kind == "min":
-        return np.inf if limit == 0.0 else value / limit - 1.0
-    return 1.0 - value / limit
-
-
 @dataclass
 class SpringDesign:
     """One helical spring: geometry, loads and every check (SI)."""
@@ -344,21 +337,27 @@ class SpringDesign:
     resonance_ratio: float
     lengths: dict
     mass: float
-    checks: dict = field(default_factory=dict)   # name -> (value, limit, kind "max"/"min")
+    checks: dict = field(default_factory=dict)   # name -> valvetrain.checks.Check
 
     @property
     def margins(self):
-        """Relative margin of each check: > 0 passes (value/limit - 1 for a minimum, 1 - value/limit for a maximum)."""
-        return {k: _margin(v, lim, kind) for k, (v, lim, kind) in self.checks.items()}
+        """Relative margin of each check: >= 0 passes (value/limit - 1 for a minimum, 1 - value/limit for a
+        maximum; +inf for a check switched off by a zero minimum)."""
+        return {k: c.margin for k, c in self.checks.items()}
 
     @property
     def passes(self):
-        return all(m >= 0.0 for m in self.margins.values())
+        return all(c.passed for c in self.checks.values())
 
     @property
     def binding_check(self):
         """The check with the smallest margin."""
         return min(self.margins, key=self.margins.get)
+
+
+def _minimum(limit):
+    """A lower bound of a check, or None where a zero minimum switches the check off."""
+    return limit if limit > 0.0 else None
 
 
 def evaluate_spring(required, mean_diameter, wire_diameter, material, camshaft_speed, installed_length=None):
@@ -390,13 +389,20 @@ def evaluate_spring(required, mean_diameter, wire_diameter, material, camshaft_s
                              material.end_coils, installed_length)
     mass = float(spring_mass(mean_diameter, wire_diameter, coils + material.end_coils, material.density))
     checks = {
-        "tau_max": (tau_max, material.allowable_stress, "max"),
-        "fatigue_safety": (safety, material.min_safety, "min"),
-        "resonance_ratio": (omega / camshaft_speed, material.min_resonance_ratio, "min"),
-        "working_coils": (exact, 2.0, "min"),
+        "tau_max": check("tau_max", tau_max, high=material.allowable_stress, unit="MPa", severity="failure",
+                         source="seed 000, eq. (6.1): [tau] = 350-600 MPa"),
+        "fatigue_safety": check("fatigue safety factor", safety, low=_minimum(material.min_safety), severity="failure",
+                                source=f"seed 000, eq. (6.12) with psi_tau = {material.mean_stress_factor:g}: "
+                                       "n >= 1.2-1.4"),
+        "resonance_ratio": check("resonance ratio omega_c1/omega_cam", omega / camshaft_speed,
+                                 low=_minimum(material.min_resonance_ratio),
+                                 source="seed 000, eq. (6.14): >= 10 (hard to meet at high speed, E27)"),
+        "working_coils": check("working coils", exact, low=2.0, source="seed 000, eq. (6.2)"),
     }
     if installed_length is not None:
-        checks["coil_gap_at_full_lift"] = (lengths["min_pitch"] / wire_diameter - 1.0, material.gap_factor, "min")
+        checks["coil_gap_at_full_lift"] = check("coil gap at full lift / wire diameter",
+                                                lengths["min_pitch"] / wire_diameter - 1.0, low=material.gap_factor,
+                                                source="seed 000, eq. (6.3): Delta_min = 0.10-0.15 d")
     return SpringDesign(mean_diameter, wire_diameter, coils, actual, chi, float(wahl_factor(index)), tau_max, tau_min,
                         safety, omega, omega / camshaft_speed, lengths, mass, checks)
 
@@ -420,7 +426,7 @@ def design_spring(required, throat_diameter, material, camshaft_speed, diameter_
     diameter_step : float
         Step of the mean diameters tried [m].
     extra_check : callable, optional
-        ``extra_check(design) -> dict`` of further checks ``name -> (value, limit, kind)``.
+        ``extra_check(design) -> dict`` of further checks ``name -> Check``.
     installed_length : float, optional
         Imposed installed length [m] (inner spring of a nested pair); the coils must then
         keep their minimum gap at full lift.

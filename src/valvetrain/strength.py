@@ -1,12 +1,12 @@
 """Strength checks of the drive parts (seed 000, work 7; seed 002, eq. 2.5).
 
-SI units: N, m, Pa.  Each check is a pure function; :class:`Verdict` carries a value
-with its allowable limit and source, and becomes a warning when it fails.
+SI units: N, m, Pa.  Each check is a pure function; :func:`verdict` makes its value a
+:class:`~valvetrain.checks.Check` against the allowable limit and its source.
 """
 
-from dataclasses import dataclass
-
 import numpy as np
+
+from .checks import check
 
 DEFLECTION_COEFFICIENT = 64.0 / (3.0 * np.pi)
 """Camshaft deflection coefficient of (7.3): 64/(3 pi) = 6.79 from beam theory; the printed 0.8 is wrong (E20)."""
@@ -15,50 +15,27 @@ STEEL_MODULUS = 2.1e11
 """Young's modulus of steel [Pa]; the manual's 1.1e5 MPa for steel pushrods is wrong (E21)."""
 
 LIMITS = {
-    "camshaft_deflection": (0.05e-3, "max", "m", "seed 000, eq. (7.3): 0.02-0.05 mm"),
-    "cam_contact_stress": (1200e6, "max", "Pa", "seed 000, eqs. (7.4)-(7.5): 600-1200 MPa"),
-    "tappet_side_pressure": (10e6, "max", "Pa", "seed 000, eq. (7.6): < 10 MPa"),
+    "camshaft_deflection": (0.05e-3, "max", "mm", "seed 000, eq. (7.3): 0.02-0.05 mm"),
+    "cam_contact_stress": (1200e6, "max", "MPa", "seed 000, eqs. (7.4)-(7.5): 600-1200 MPa"),
+    "tappet_side_pressure": (10e6, "max", "MPa", "seed 000, eq. (7.6): < 10 MPa"),
     "pushrod_buckling_margin": (2.0, "min", "", "seed 000, eq. (7.8): n = 2-5"),
-    "ball_socket_stress": (2000e6, "max", "Pa", "seed 000, eqs. (7.11), (7.14): <= 2000 MPa"),
-    "pushrod_head_pressure": (100e6, "max", "Pa", "seed 000, eq. (7.12): <= 80-100 MPa"),
-    "rocker_pad_stress": (2000e6, "max", "Pa", "seed 000, eq. (7.13): <= 2000 MPa"),
-    "rocker_shaft_bending": (150e6, "max", "Pa", "seed 000, eq. (7.15): <= 150 MPa"),
-    "rocker_shaft_shear": (90e6, "max", "Pa", "seed 000, eq. (7.17): <= 90 MPa"),
-    "rocker_shaft_bearing": (80e6, "max", "Pa", "seed 000, eq. (7.18): <= 80 MPa"),
+    "ball_socket_stress": (2000e6, "max", "MPa", "seed 000, eqs. (7.11), (7.14): <= 2000 MPa"),
+    "pushrod_head_pressure": (100e6, "max", "MPa", "seed 000, eq. (7.12): <= 80-100 MPa"),
+    "rocker_pad_stress": (2000e6, "max", "MPa", "seed 000, eq. (7.13): <= 2000 MPa"),
+    "rocker_shaft_bending": (150e6, "max", "MPa", "seed 000, eq. (7.15): <= 150 MPa"),
+    "rocker_shaft_shear": (90e6, "max", "MPa", "seed 000, eq. (7.17): <= 90 MPa"),
+    "rocker_shaft_bearing": (80e6, "max", "MPa", "seed 000, eq. (7.18): <= 80 MPa"),
 }
-"""Allowable values: the limit (the less strict end of the source's range), its kind, unit and source."""
+"""Allowable values: the limit SI (the less strict end of the source's range), its kind, the unit it is shown in
+and its source."""
 
 
-@dataclass(frozen=True)
-class Verdict:
-    """A checked value against its allowable limit (SI)."""
-
-    check: str
-    value: float
-    limit: float
-    kind: str        # "max": value <= limit; "min": value >= limit
-    unit: str
-    source: str
-    note: str = ""
-
-    @property
-    def passed(self):
-        return bool(self.value <= self.limit) if self.kind == "max" else bool(self.value >= self.limit)
-
-    def as_dict(self, scale=1.0, unit=None):
-        """Record for results.json: value and allowed in ``unit`` (scaled by ``scale``)."""
-        sign = "<=" if self.kind == "max" else ">="
-        out = {"value": self.value * scale, "allowed": f"{sign} {self.limit * scale:g}", "limit": self.limit * scale,
-               "unit": unit if unit is not None else self.unit, "pass": self.passed, "source": self.source}
-        if self.note:
-            out["note"] = self.note
-        return out
-
-
-def verdict(check, value, note=""):
-    """A :class:`Verdict` for one of the checks of :data:`LIMITS`."""
-    limit, kind, unit, source = LIMITS[check]
-    return Verdict(check, float(value), limit, kind, unit, source, note)
+def verdict(check_name, value, note=""):
+    """The :class:`~valvetrain.checks.Check` of one of the checks of :data:`LIMITS` (severity ``failure``: the
+    part cannot carry the load), its value SI."""
+    limit, kind, unit, source = LIMITS[check_name]
+    bounds = {"high": limit} if kind == "max" else {"low": limit}
+    return check(check_name, value, **bounds, unit=unit, source=source, severity="failure", note=note)
 
 
 def cam_force(spring_force, valve_inertia_force, rocker_ratio):

@@ -62,3 +62,25 @@ def crank_to_cam(angle, strokes=4):
 def cam_to_crank(angle, strokes=4):
     """Camshaft angle to crank angle (same unit in and out)."""
     return angle / cam_per_crank(strokes)
+
+
+DISPLAY_UNITS = {
+    "": 1.0, "mm": MM, "mm2": MM**2, "mm2 s": MM**2, "m": 1.0, "m/s": 1.0, "m/s2": 1.0, "m/s3": 1.0, "N": 1.0,
+    "kN": 1e3, "N/mm": 1.0 / MM, "N m": 1.0, "kg": 1.0, "kg mm2": MM**2, "MPa": MPA, "Pa": 1.0, "J": 1.0,
+    "deg": DEG, "crank deg": DEG, "cam deg": DEG, "rad/s": 1.0, "Hz": 1.0, "rpm": np.pi / 30.0,
+    "mm/rad2": MM, "mm/deg": MM / DEG,
+}
+"""SI value of one display unit: a quantity of ``x`` SI is shown as ``x / DISPLAY_UNITS[unit]`` (tables,
+reports, check records); ``rpm`` is shown from rad/s."""
+
+
+def to_display(value, unit):
+    """An SI value (or array) in the display ``unit`` of :data:`DISPLAY_UNITS`.
+
+    >>> round(to_display(0.0118, "mm"), 9), round(to_display(np.pi, "crank deg"), 9)
+    (11.8, 180.0)
+    """
+    try:
+        return value / DISPLAY_UNITS[unit]
+    except KeyError:
+        raise ValueError(f"unit {unit!r}: allowed {sorted(DISPLAY_UNITS)}") from None

@@ -14,7 +14,7 @@ rpm) are converted to SI for the physics functions.  Stages:
 from dataclasses import dataclass
 
 from .. import flow
-from ..checks import Finding, check_range
+from ..checks import check, failed
 from ..units import MM
 from .crank import CrankResults, crank_stage
 from .twostroke import TwoStrokeResults, two_stroke_stage
@@ -30,9 +30,14 @@ class DesignResults:
     spec: object
     engine: dict
     valves: dict
-    warnings: list
+    checks: list                  # every valvetrain.checks.Check of the design, passed or not
     crank: CrankResults = None
     two_stroke: TwoStrokeResults = None
+
+    @property
+    def warnings(self):
+        """The checks that fail, in the order of the chapters."""
+        return failed(self.checks)
 
     def to_dict(self):
         """JSON-ready dictionary (engineering units, named in the keys)."""
@@ -47,7 +52,8 @@ class DesignResults:
             out["crank"] = self.crank.summary
         if self.two_stroke is not None:
             out["two_stroke"] = self.two_stroke.summary
-        out["warnings"] = [w.as_dict() for w in self.warnings]
+        out["warnings"] = [w.warning() for w in self.warnings]
+        out["checks"] = [c.as_dict() for c in self.checks]
         return out
 
 
@@ -65,12 +71,12 @@ def run(spec):
     eng = spec.engine
     bore, stroke = eng.bore_mm * MM, eng.stroke_mm * MM
     valves = {name: design_valve(name, v, spec) for name, v in spec.valves.items()}
-    found = [f for v in valves.values() for f in v.warnings]
+    found = [c for v in valves.values() for c in v.checks]
     kinds = {v.kind for v in spec.valves.values()}
     if kinds == {"intake", "exhaust"}:
         share = sum(v.count * float(flow.circle_area(v.throat_diameter_mm * MM)) for v in spec.valves.values())
-        found += check_range("sum of throat areas / piston area", share / float(flow.circle_area(bore)),
-                             *THROAT_AREA_SHARE_RANGE, source="seed 000, work 1")
+        found.append(check("sum of throat areas / piston area", share / float(flow.circle_area(bore)),
+                           *THROAT_AREA_SHARE_RANGE, source="seed 000, work 1"))
     engine = {
         "name": eng.name,
         "bore_mm": eng.bore_mm,
@@ -87,5 +93,5 @@ def run(spec):
     ports = two_stroke_stage(spec) if spec.two_stroke is not None else None
     for stage, tag in ((crank, "crank"), (ports, "two-stroke")):
         if stage is not None:
-            found += [Finding(f"{tag}: {f.quantity}", f.value, f.range, f.source, f.unit) for f in stage.warnings]
+            found += [c.named(tag) for c in stage.checks]
     return DesignResults(spec, engine, valves, found, crank, ports)

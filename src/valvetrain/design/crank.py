@@ -5,7 +5,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..checks import check_range
+from ..checks import check
 from ..crank import dynamics, kinematics, pressure, torque
 from ..spec import SpecError, crank_geometry, resolve_path
 from ..units import DEG, MM, MPA, rad_to_deg, rpm_to_rad_s
@@ -28,7 +28,7 @@ class CrankResults:
     total_torque: np.ndarray        # (n,) [N m]
     firing: np.ndarray              # firing angles after cylinder 1 [rad]
     summary: dict
-    warnings: list
+    checks: list                    # every valvetrain.checks.Check of the chapter
     pressure_source: str
 
 
@@ -149,7 +149,7 @@ def crank_stage(spec):
         summary.update(indicated_work_J=work, imep_MPa=work / (area * 2.0 * radius) / MPA,
                        mean_torque_from_work_Nm=from_work,
                        torque_work_balance=(stats["mean"] - from_work) / from_work if from_work else None)
-    found = check_range("crank lambda = R/L", lam, *LAMBDA_RANGE, source="seed 001, eq. (1.1)")
-    found += check_range("rod mass share at the piston pin", c.rod_pin_fraction, *ROD_PIN_FRACTION_RANGE,
-                         source="seed 001, eq. (2.7)")
+    found = [check("crank lambda = R/L", lam, *LAMBDA_RANGE, source="seed 001, eq. (1.1)"),
+             check("rod mass share at the piston pin", c.rod_pin_fraction, *ROD_PIN_FRACTION_RANGE,
+                   source="seed 001, eq. (2.7)")]
     return CrankResults(phi, columns, phi, each, total, firing, summary, found, source)

@@ -1,13 +1,13 @@
 """Drive stages of a valve design: reduced masses, spring characteristic and design, strength of the
 drive parts (seed 000, works 5-7)."""
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
 from .. import flow, geometry, masses, springs, strength
-from ..checks import check_range
-from ..units import MM, MPA, rad_to_deg
+from ..checks import check
+from ..units import MM, MPA, rad_to_deg, to_display
 
 
 @dataclass
@@ -17,7 +17,7 @@ class DriveResults:
     masses: dict
     spring: dict
     strength: dict
-    warnings: list
+    checks: list                   # every valvetrain.checks.Check of the drive, passed or not
     lift: np.ndarray               # valve lift along the open event [m]
     inertia_force: np.ndarray      # m_v |j_v| where j_v < 0 [N]
     required_force: np.ndarray     # K_z m_v |j_v| [N]
@@ -68,15 +68,10 @@ def _spring_record(s):
     }
 
 
-def _spring_findings(tag, s, sp):
-    c = s.checks
-    return (check_range(f"{tag} tau_max", s.tau_max / MPA, high=sp.allowable_stress_MPa,
-                        source="seed 000, eq. (6.1): [tau] = 350-600 MPa", unit="MPa")
-            + check_range(f"{tag} fatigue safety factor", s.safety, low=sp.min_safety_factor,
-                          source=f"seed 000, eq. (6.12) with psi_tau = {sp.mean_stress_factor:g}: n >= 1.2-1.4")
-            + check_range(f"{tag} resonance ratio omega_c1/omega_cam", s.resonance_ratio, low=sp.min_resonance_ratio,
-                          source="seed 000, eq. (6.14): >= 10 (hard to meet at high speed, E27)")
-            + check_range(f"{tag} working coils", c["working_coils"][0], low=2.0, source="seed 000, eq. (6.2)"))
+def _spring_checks(tag, s):
+    """A designed spring's own checks, named after the spring (``spring``, ``outer``, ``inner``)."""
+    return [replace(c, quantity=f"{tag} {c.quantity}") for key, c in s.checks.items()
+            if key in ("tau_max", "fatigue_safety", "resonance_ratio", "working_coils")]
 
 
 def drive_stage(v, spec, law, omega, heel, roller):
@@ -121,7 +116,10 @@ def drive_stage(v, spec, law, omega, heel, roller):
 
             def differs(s, outer=outer):
                 diff = abs(s.natural_frequency - outer.natural_frequency) / outer.natural_frequency
-                return {"frequency_difference": (diff, sp.min_frequency_difference, "min")}
+                low = sp.min_frequency_difference if sp.min_frequency_difference > 0.0 else None
+                return {"frequency_difference": check(
+                    "frequency difference", diff, low=low,
+                    source="seed 000, eq. (6.14): the two ratios must differ (10 % assumed)")}
 
             inner, n_in = springs.design_spring(inner_line, d_g, material, omega, (0.3, sp.mean_diameter_ratio[1]),
                                                 max_outer=room, extra_check=differs,
@@ -139,18 +137,17 @@ def drive_stage(v, spec, law, omega, heel, roller):
                                          sum(d.characteristic.rate for d in designs.values()), lift)
     lines["chosen"] = chosen_line
     ratio = chosen_line.max_deflection / chosen_line.preload_deflection
-    found += check_range("spring reserve K_z", v.drive.spring_reserve, *springs.SPRING_RESERVE_RANGE,
-                         source="seed 000, eq. (5.3)")
-    found += check_range("spring f_max/f_min", ratio, *springs.DEFLECTION_RATIO_RANGE, source="seed 000, work 5 "
-                         "(the chosen springs' rounded coils can move it off the required line's ratio)")
+    found.append(check("spring reserve K_z", v.drive.spring_reserve, *springs.SPRING_RESERVE_RANGE,
+                       source="seed 000, eq. (5.3)"))
+    found.append(check("spring f_max/f_min", ratio, *springs.DEFLECTION_RATIO_RANGE, source="seed 000, work 5 "
+                       "(the chosen springs' rounded coils can move it off the required line's ratio)"))
     if sp.count == 2:
-        found += check_range("inner spring share", sp.inner_share, *springs.INNER_SHARE_RANGE, source="seed 000, work 5")
+        found.append(check("inner spring share", sp.inner_share, *springs.INNER_SHARE_RANGE, source="seed 000, work 5"))
     for tag, d in designs.items():
-        found += _spring_findings(tag if tag != "spring" else "spring", d, sp)
+        found += _spring_checks(tag, d)
     if sp.count == 2:
-        diff = designs["inner"].checks["frequency_difference"][0]
-        found += check_range("inner/outer spring frequency difference", diff, low=sp.min_frequency_difference,
-                             source="seed 000, eq. (6.14): the two ratios must differ (10 % assumed)")
+        found.append(replace(designs["inner"].checks["frequency_difference"],
+                             quantity="inner/outer spring frequency difference"))
 
     spring_rec = {
         "count": sp.count, "material": sp.material,
@@ -171,21 +168,15 @@ def drive_stage(v, spec, law, omega, heel, roller):
 
     mass_rec = {"at_valve_kg": m_v, "at_tappet_kg": m_t, "source": mass_source, "layout": v.layout}
     if v.drive.stiffness_N_per_mm is not None:
-        mass_rec.update(_train_dynamics(v, law, omega, m_v, chosen_line.rate))
-        found += mass_rec.pop("_findings")
+        train, train_checks = _train_dynamics(v, law, omega, m_v, chosen_line.rate)
+        mass_rec.update(train)
+        found += train_checks
 
     strength_rec, strength_found = _strength(v, law, omega, heel, roller, theta, y, h, dh, d2h, a_v, m_v, chosen_line,
                                              gas)
     found += strength_found
     inertia = m_v * np.clip(-a_v, 0.0, None)
     return DriveResults(mass_rec, spring_rec, strength_rec, found, y, inertia, required, lines)
-
-
-_STRESS = (1.0 / MPA, "MPa")
-_UNITS = {"camshaft_deflection": (1.0 / MM, "mm"), "cam_contact_stress": _STRESS, "tappet_side_pressure": _STRESS,
-          "pushrod_buckling_margin": (1.0, ""), "ball_socket_stress": _STRESS, "pushrod_head_pressure": _STRESS,
-          "rocker_pad_stress": _STRESS, "rocker_shaft_bending": _STRESS, "rocker_shaft_shear": _STRESS,
-          "rocker_shaft_bearing": _STRESS}
 
 
 def _strength(v, law, omega, heel, roller, theta, y, h, dh, d2h, a_v, m_v, line, gas):
@@ -262,18 +253,19 @@ def _strength(v, law, omega, heel, roller, theta, y, h, dh, d2h, a_v, m_v, line,
                                              f"{st['bending_simply_supported'] / MPA:.4g} MPa; load P_T max (E25)"))
             verdicts.append(strength.verdict("rocker_shaft_shear", st["shear"]))
             verdicts.append(strength.verdict("rocker_shaft_bearing", st["bearing"]))
-    checks = {}
-    found = []
-    for vd in verdicts:
-        scale, unit = _UNITS[vd.check]
-        checks[vd.check] = vd.as_dict(scale, unit)
-        if not vd.passed:
-            found += check_range(vd.check.replace("_", " "), vd.value * scale,
-                                 high=vd.limit * scale if vd.kind == "max" else None,
-                                 low=vd.limit * scale if vd.kind == "min" else None, source=vd.source, unit=unit)
-    rec["checks"] = checks
+    rec["checks"] = {c.quantity: _strength_record(c) for c in verdicts}
     rec["not_checked"] = notes
-    return rec, found
+    return rec, [replace(c, quantity=c.quantity.replace("_", " ")) for c in verdicts]
+
+
+def _strength_record(c):
+    """results.json record of a strength check: value and limit in its unit, pass, source (and a note)."""
+    limit = c.high if c.high is not None else c.low
+    out = {"value": c.shown_value, "allowed": f"{'<=' if c.high is not None else '>='} {to_display(limit, c.unit):g}",
+           "limit": to_display(limit, c.unit), "unit": c.unit, "pass": c.passed, "source": c.source}
+    if c.note:
+        out["note"] = c.note
+    return out
 
 
 def _train_dynamics(v, law, omega, mass, spring_rate):
@@ -288,10 +280,11 @@ def _train_dynamics(v, law, omega, mass, spring_rate):
     c = v.drive.stiffness_N_per_mm / MM
     omega_n = float(np.sqrt((c + spring_rate) / mass))
     out = {"drive_stiffness_N_per_mm": c * MM, "natural_frequency_Hz": omega_n / (2 * np.pi),
-           "epsilon": mass * omega**2 / (c + spring_rate), "_findings": []}
+           "epsilon": mass * omega**2 / (c + spring_rate)}
+    found = []
     if isinstance(law, HarmonicLaw):
         limit = harmonic_limit(law.alpha, omega_n, omega)
         out["harmonic_limit"] = limit
-        out["_findings"] = check_range("harmonic order N of the cam", law.harmonics, high=limit,
-                                       source="spec/methods-seeds-002-004.md section 9: N < alpha_W omega_n/(pi omega)")
-    return out
+        found.append(check("harmonic order N of the cam", law.harmonics, high=limit,
+                           source="spec/methods-seeds-002-004.md section 9: N < alpha_W omega_n/(pi omega)"))
+    return out, found

@@ -6,7 +6,7 @@ import numpy as np
 from scipy.optimize import brentq
 
 from .. import twostroke
-from ..checks import check_range
+from ..checks import check
 from ..crank.kinematics import displacement
 from ..spec import crank_geometry
 from ..units import DEG, MM, rad_to_deg
@@ -21,7 +21,7 @@ class TwoStrokeResults:
     speeds: np.ndarray       # [rpm]
     time_areas: dict         # port name -> Z(n) [m^2 s]
     summary: dict
-    warnings: list
+    checks: list                    # every valvetrain.checks.Check of the chapter
 
 
 def _skirt_opening(lower, piston_height, radius, lam, exact):
@@ -74,8 +74,8 @@ def two_stroke_stage(spec):
                        time_area_analytic_mm2_s=twostroke.time_area_analytic(
                            bore, stroke, sigma, lam, width / (np.pi * bore), speed) / MM**2)
             (h_lo, h_hi), (w_lo, w_hi) = twostroke.PORT_SIZE_RANGES[port.kind]
-            found += check_range(f"{name} port height / stroke", sigma, h_lo, h_hi, source="seed 000, Table 8.1")
-            found += check_range(f"{name} port width / bore", width / bore, w_lo, w_hi, source="seed 000, Table 8.1")
+            found.append(check(f"{name} port height / stroke", sigma, h_lo, h_hi, source="seed 000, Table 8.1"))
+            found.append(check(f"{name} port width / bore", width / bore, w_lo, w_hi, source="seed 000, Table 8.1"))
         z = twostroke.time_area_numeric(phi, area, speed)
         rec.update(max_area_mm2=float(area.max()) / MM**2, time_area_mm2_s=z / MM**2)
         areas[name], ports[name] = area, rec

@@ -10,7 +10,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .. import flow, geometry
-from ..checks import Finding, check_range
+from ..checks import check, failed
 from ..crank.kinematics import displacement
 from ..laws import AsymmetricLaw, CombinedLaw, ConstantAccelerationLaw, DynamicLaw, HarmonicLaw, KurzLaw, PolydyneLaw, PolynomialLaw, TangentLaw, ThreeArcLaw
 from ..numerics import extremum
@@ -93,8 +93,13 @@ class ValveDesign:
     contour: np.ndarray            # (2, n) [m], cam frame, nose on +y
     contour_angle: np.ndarray      # camshaft angle of each contour point [rad from the nose]
     summary: dict
-    warnings: list = field(default_factory=list)
+    checks: list = field(default_factory=list)   # every valvetrain.checks.Check of the valve, passed or not
     drive: object = None           # DriveResults: masses, spring curves, strength
+
+    @property
+    def warnings(self):
+        """The checks that fail."""
+        return failed(self.checks)
 
 
 def build_law(valve, strokes=4, rated_speed=None):
@@ -252,8 +257,9 @@ def measured_summary(valve, law, nose):
     for key, derived in (("opens_deg", rec["opens_deg_at_0.1mm"]), ("closes_deg", rec["closes_deg_at_0.1mm"])):
         given = getattr(valve, key)
         if given is not None and derived is not None:
-            found += check_range(f"{key} against the measured table", given, derived - 2.0, derived + 2.0,
-                                 source="the table's timing at 0.1 mm valve lift (+-2 crank deg)", unit="crank deg")
+            found.append(check(f"{key} against the measured table", given * DEG, (derived - 2.0) * DEG,
+                               (derived + 2.0) * DEG, source="the table's timing at 0.1 mm valve lift (+-2 crank deg)",
+                               unit="crank deg"))
     return rec, found
 
 
@@ -440,10 +446,10 @@ def design_valve(name, v, spec):
     found += flow.check_flow(v.kind, bore=bore, throat_diameter=d_throat, max_lift=lift_valve, v1=v1, v2=v2,
                              v3=v3, charge_velocity=v_charge, engine_type=eng.type, chamber=eng.chamber,
                              count=v.count)
-    found += check_range("max tappet acceleration", ext.max_acceleration, high=ACCELERATION_LIMITS[0],
-                         source="seed 000, work 2 (positive 1500...3500 m/s2)", unit="m/s2")
-    found += check_range("min tappet acceleration", ext.min_acceleration, low=ACCELERATION_LIMITS[1],
-                         source="seed 000, work 2 (negative 500...1500 m/s2)", unit="m/s2")
+    found.append(check("max tappet acceleration", ext.max_acceleration, high=ACCELERATION_LIMITS[0],
+                       source="seed 000, work 2 (positive 1500...3500 m/s2)", unit="m/s2"))
+    found.append(check("min tappet acceleration", ext.min_acceleration, low=ACCELERATION_LIMITS[1],
+                       source="seed 000, work 2 (negative 500...1500 m/s2)", unit="m/s2"))
     opens, closes = v.opens_deg, v.closes_deg
     if isinstance(law, TableLaw):
         summary_cam["measured"], table_found = measured_summary(v, law, nose)
@@ -451,36 +457,37 @@ def design_valve(name, v, spec):
         opens, closes = summary_cam["measured"]["opens_deg_at_0.1mm"], summary_cam["measured"]["closes_deg_at_0.1mm"]
     if v.kind in TIMING_RANGES:
         (o_lo, o_hi), (c_lo, c_hi) = TIMING_RANGES[v.kind]
-        found += check_range("opening advance", opens, o_lo, o_hi, source="seed 000, work 2", unit="crank deg")
-        found += check_range("closing lag", closes, c_lo, c_hi, source="seed 000, work 2", unit="crank deg")
+        for label, angle, lo, hi in (("opening advance", opens, o_lo, o_hi), ("closing lag", closes, c_lo, c_hi)):
+            if angle is not None:
+                found.append(check(label, angle * DEG, lo * DEG, hi * DEG, source="seed 000, work 2", unit="crank deg"))
     if isinstance(law, ClearanceTakeUp):
-        found.append(Finding("clearance taken up without a ramp: valve seating velocity", seat_velocity[1],
-                             f"a ramp that takes up clearance_mm = {v.clearance_mm:g} (seating <= "
-                             f"{SEATING_VELOCITY_MAX:g} m/s)", SEATING_VELOCITY_SOURCE, "m/s"))
-    found += check_range("seat angle", v.seat_angle_deg, *SEAT_ANGLE_USUAL[v.kind],
-                         source="seed 000, work 1 (usually 30 deg inlet, 45 deg exhaust)", unit="deg")
-    found += check_range("clearance h0", v.clearance_mm, *CLEARANCE_RANGES[v.kind], source="seed 000, work 2",
-                         unit="mm")
+        found.append(check("clearance taken up without a ramp: valve seating velocity", seat_velocity[1],
+                           high=SEATING_VELOCITY_MAX, source=SEATING_VELOCITY_SOURCE, unit="m/s",
+                           note=f"no ramp takes up clearance_mm = {v.clearance_mm:g}: the flank does"))
+    found.append(check("seat angle", v.seat_angle_deg * DEG, *(a * DEG for a in SEAT_ANGLE_USUAL[v.kind]),
+                       source="seed 000, work 1 (usually 30 deg inlet, 45 deg exhaust)", unit="deg"))
+    found.append(check("clearance h0", v.clearance_mm * MM, *(c * MM for c in CLEARANCE_RANGES[v.kind]),
+                       source="seed 000, work 2", unit="mm"))
     if i_k != 1.0:
-        found += check_range("rocker ratio", i_k, *ROCKER_RATIO_RANGE, source="seed 000, work 2 (or 1, direct drive)")
-    found += check_range("base radius r0 / valve lift", cam.base_radius_mm * MM / lift_valve,
-                         *BASE_RADIUS_TO_LIFT_RANGE, source="seed 000, work 2 (1.5-2.0; supercharged 3.0-4.0)")
+        found.append(check("rocker ratio", i_k, *ROCKER_RATIO_RANGE, source="seed 000, work 2 (or 1, direct drive)"))
+    found.append(check("base radius r0 / valve lift", cam.base_radius_mm * MM / lift_valve,
+                       *BASE_RADIUS_TO_LIFT_RANGE, source="seed 000, work 2 (1.5-2.0; supercharged 3.0-4.0)"))
     if cam.follower == "flat":
         undercut = rho_min <= 0.0
         if undercut:
-            found += check_range("cam profile undercut: rho_min (flat follower)", rho_min / MM, low=0.0,
-                                 strict_low=True, source="seed 002, eq. (2.6); seed 000, E26", unit="mm")
+            found.append(check("cam profile undercut: rho_min (flat follower)", rho_min, low=0.0, strict_low=True,
+                               source="seed 002, eq. (2.6); seed 000, E26", unit="mm", severity="failure"))
     else:
         pitch = rho + roller
         undercut = bool(np.any(geometry.undercut_roller(pitch, roller)))
         if undercut:
-            found += check_range("cam profile undercut: pitch radius of curvature - roller radius", rho_min / MM,
-                                 low=0.0, strict_low=True, source="seed 002, eq. (2.7)", unit="mm")
-        found += check_range("max pressure angle", summary_cam["max_pressure_angle_deg"],
-                             high=PRESSURE_ANGLE_MAX_DEG, source="seed 004 (spec section 2)", unit="deg")
+            found.append(check("cam profile undercut: pitch radius of curvature - roller radius", rho_min, low=0.0,
+                               strict_low=True, source="seed 002, eq. (2.7)", unit="mm", severity="failure"))
+        found.append(check("max pressure angle", summary_cam["max_pressure_angle_deg"] * DEG,
+                           high=PRESSURE_ANGLE_MAX_DEG * DEG, source="seed 004 (spec section 2)", unit="deg"))
     if not undercut:
-        found += check_range("rho_min (cam profile)", rho_min / MM, low=RHO_MIN_MM, source="seed 002, section 2.1",
-                             unit="mm")
+        found.append(check("rho_min (cam profile)", rho_min, low=RHO_MIN_MM * MM, source="seed 002, section 2.1",
+                           unit="mm"))
     summary_cam["undercut"] = bool(undercut)
 
     if v.piston_gap_tdc_mm is not None:
@@ -502,9 +509,9 @@ def design_valve(name, v, spec):
     summary["masses"] = drive.masses
     summary["spring"] = drive.spring
     summary["strength"] = {k: rec for k, rec in drive.strength.items()}
-    found += drive.warnings
+    found += drive.checks
 
-    found = [Finding(f"{name}: {f.quantity}", f.value, f.range, f.source, f.unit) for f in found]
+    found = [c.named(name) for c in found]
     return ValveDesign(name, v.kind, law, omega, i_k, heel, cam.follower, roller, nose, window, table, contour,
                        ctheta, summary, found, drive)
 

@@ -95,7 +95,7 @@ class LiftLaw(ABC):
         """The law's coefficients as a dict in the units of its source (for results and reports)."""
 
     def checks(self):
-        """The law's own recommended-range checks, a list of :class:`~valvetrain.checks.Finding`."""
+        """The law's own recommended-range checks, a list of :class:`~valvetrain.checks.Check`, passed or not."""
         return []
 
     @property

@@ -6,7 +6,7 @@ spec/methods-seeds-002-004.md, section 8 [S+D]).
 
 import numpy as np
 
-from ..checks import check_range
+from ..checks import check
 
 from .base import RampedLaw, SymmetricLaw
 from .polydyne import _falling, polynomial_junction_coefficients
@@ -135,9 +135,8 @@ class DynamicLaw(RampedLaw, SymmetricLaw):
 
     def checks(self):
         """The cam lift must rise monotonically to the nose (a dip means the drive is too compliant)."""
-        return check_range("dynamic cam: fall of the lift before the nose", self.fall_before_nose() / 1e-3, high=0.0,
-                           source="the cam lift rises to the nose (spec/methods-seeds-002-004.md, section 8)",
-                           unit="mm")
+        return [check("dynamic cam: fall of the lift before the nose", self.fall_before_nose(), high=0.0,
+                      source="the cam lift rises to the nose (spec/methods-seeds-002-004.md, section 8)", unit="mm")]
 
     def coefficients(self):
         """Valve-motion coefficients C_k = a_k / y_max, exponents, and the drive data used."""

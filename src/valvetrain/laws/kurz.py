@@ -10,7 +10,7 @@ from dataclasses import asdict, dataclass
 
 import numpy as np
 
-from ..checks import check_range
+from ..checks import check
 from .base import RampedLaw, SymmetricLaw, segment_index
 from .ramps import make_ramp
 
@@ -244,11 +244,11 @@ class KurzLaw(RampedLaw, SymmetricLaw):
 
     def checks(self):
         """Recommended ranges of (2.1), (2.3) and (2.4)."""
-        w = self.ramp_velocity * 1e3 * np.pi / 180.0
-        return (
-            check_range("ramp end velocity", w, *RAMP_VELOCITY_RANGE_MM_PER_DEG,
-                        source="seed 000, work 2, eq. (2.1)", unit="mm/deg")
-            + check_range("Phi2/Phi3", self.phi2 / self.phi3, *PHI2_TO_PHI3_RANGE, source="seed 000, work 2, eq. (2.3)")
-            + check_range("(Phi2+Phi3)/Phi1", (self.phi2 + self.phi3) / self.phi1, *NEGATIVE_TO_POSITIVE_RANGE,
-                          source="seed 000, work 2, eq. (2.4)")
-        )
+        return [
+            check("ramp end velocity", self.ramp_velocity, *(w * 1e-3 / np.radians(1.0)
+                                                             for w in RAMP_VELOCITY_RANGE_MM_PER_DEG),
+                  source="seed 000, work 2, eq. (2.1)", unit="mm/deg"),
+            check("Phi2/Phi3", self.phi2 / self.phi3, *PHI2_TO_PHI3_RANGE, source="seed 000, work 2, eq. (2.3)"),
+            check("(Phi2+Phi3)/Phi1", (self.phi2 + self.phi3) / self.phi1, *NEGATIVE_TO_POSITIVE_RANGE,
+                  source="seed 000, work 2, eq. (2.4)"),
+        ]

@@ -12,7 +12,7 @@ ends at zero acceleration, so the joined law is C2; its jerk jumps at the juncti
 
 import numpy as np
 
-from ..checks import check_range
+from ..checks import check
 from .base import RampedLaw, SymmetricLaw
 from .ramps import make_ramp
 
@@ -270,4 +270,4 @@ class PolydyneLaw(PolynomialLaw):
 
     def checks(self):
         """The recommended range of p (seed 000, work 3)."""
-        return check_range("polydyne exponent p", self._k[1], *EXPONENT_P_RANGE, source="seed 000, work 3")
+        return [check("polydyne exponent p", self._k[1], *EXPONENT_P_RANGE, source="seed 000, work 3")]
