@@ -119,7 +119,8 @@ def test_manufacturing_tables(written):
 
 def test_exported_lift_table_reads_back(written):
     """The exported lift table, read back, gives the same lift to 1e-6 mm; as law = "table" it finds the nose."""
-    from valvetrain.laws.measured import TableLaw, read_lift_table
+    from valvetrain.files import read_lift_table
+    from valvetrain.laws.measured import TableLaw
 
     results, out = written
     v = results.valves["intake"]

@@ -13,7 +13,9 @@ from valvetrain.cli import main
 from valvetrain.checks import failed
 from valvetrain.design import run
 from valvetrain.laws import measured
-from valvetrain.laws.measured import (TableFileError, TableLaw, harmonic_fit, lobe_table, read_lift_table,
+from valvetrain import files
+from valvetrain.files import TableFileError, read_lift_table
+from valvetrain.laws.measured import (TableLaw, harmonic_fit, lobe_table,
                                       symmetry_shift)
 from valvetrain.numerics import level_span
 from valvetrain.spec import load_spec
@@ -405,7 +407,7 @@ def test_a_dense_table(tmp_path, rows):
 
 def test_too_many_rows(tmp_path, monkeypatch):
     """A table of more rows than MAX_TABLE_ROWS (10^6; 50 here) is refused when read, naming the file."""
-    monkeypatch.setattr(measured, "MAX_TABLE_ROWS", 50)
+    monkeypatch.setattr(files, "MAX_TABLE_ROWS", 50)
     with pytest.raises(TableFileError, match=r"t.csv: 60 rows; allowed at most 50"):
         read_lift_table(_write_table(tmp_path / "t.csv", np.arange(60.0), np.zeros(60)))
 
@@ -414,12 +416,11 @@ def test_the_plain_and_the_line_reader_agree(tmp_path, monkeypatch):
     """A plain file is parsed in one numpy call, one with comments line by line: the same numbers either way
     (the example table has comment lines; without them, with CRLF line ends, it takes the plain path, which does
     not call the line reader)."""
-    from valvetrain import csvfiles
 
     angle, lift = read_lift_table(EXAMPLE_TABLE)
     plain = "\r\n".join(line for line in EXAMPLE_TABLE.read_text().splitlines() if not line.startswith("#"))
     (tmp_path / "plain.csv").write_text(plain, newline="")
-    monkeypatch.setattr(csvfiles, "read_two_columns", None)
+    monkeypatch.setattr(files, "read_two_columns", None)
     again = read_lift_table(tmp_path / "plain.csv")
     assert np.array_equal(again[0], angle) and np.array_equal(again[1], lift)
     assert angle.size == 186 and lift.max() == 10.0032

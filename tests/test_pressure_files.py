@@ -4,6 +4,7 @@ import numpy as np
 import pytest
 
 from valvetrain.crank import pressure
+from valvetrain.files import read_indicator
 
 GEOM = dict(bore=0.080, radius=0.0385, lam=0.285)
 
@@ -18,7 +19,7 @@ def test_p_phi_file_round_trip(tmp_path):
     f = tmp_path / "ind.csv"
     f.write_text("# a comment\ncrank_deg,pressure_MPa\n" + "".join(f"{np.degrees(a):.6f},{b / 1e6:.9f}\n"
                                                                  for a, b in zip(phi, p)))
-    t = pressure.read_indicator(f, 4)
+    t = read_indicator(f, 4)
     assert t.kind == "angle"
     assert np.allclose(pressure.on_grid(t.x, t.pressure, phi, 4), p, rtol=1e-8)
 
@@ -56,7 +57,7 @@ def test_bad_files_name_the_line(tmp_path, text, message):
     f = tmp_path / "ind.csv"
     f.write_text(text)
     with pytest.raises(pressure.PressureFileError, match=message.replace("[", r"\[").replace("]", r"\]")):
-        pressure.read_indicator(f, 4)
+        read_indicator(f, 4)
 
 
 def test_p_v_needs_one_branch_per_stroke():

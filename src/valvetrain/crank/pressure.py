@@ -11,7 +11,6 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.integrate import solve_ivp
 
-from ..csvfiles import read_two_columns
 from .kinematics import brix_displacement, displacement, velocity
 
 MIN_PRESSURE_MPA = 0.001
@@ -32,58 +31,6 @@ def cylinder_volume(phi, bore, radius, lam, compression_ratio, k=0.0, exact=True
     area = np.pi * bore**2 / 4.0
     clearance = area * 2.0 * radius / (compression_ratio - 1.0)
     return clearance + area * displacement(phi, radius, lam, k, exact)
-
-
-@dataclass(frozen=True)
-class IndicatorTable:
-    """A read indicator diagram: either ``angle`` [rad] or ``volume`` [m^3] against ``pressure`` [Pa]."""
-
-    kind: str                  # "angle" or "volume"
-    x: np.ndarray
-    pressure: np.ndarray
-    source: str
-
-
-_HEADERS = {("crank_deg", "pressure_MPa"): "angle", ("volume_cm3", "pressure_MPa"): "volume"}
-
-
-def read_indicator(path, strokes):
-    """Read an indicator diagram from a CSV file.
-
-    The header is ``crank_deg,pressure_MPa`` (absolute pressure against the cycle angle,
-    0...720 for a four-stroke with the firing TDC at 360; rows increasing, not
-    necessarily evenly spaced) or ``volume_cm3,pressure_MPa`` (a p-V diagram, rows in the
-    order of the cycle from its first TDC, one monotone branch of volume per stroke).
-    Lines starting with ``#`` are comments.
-
-    Raises
-    ------
-    PressureFileError
-        With the file name and line number of the first problem.
-    """
-    where = str(path)
-    key, rows = read_two_columns(path, list(_HEADERS), PressureFileError)
-    kind = _HEADERS[key]
-    xs, ps = [], []
-    for n, x, p in rows:
-        if p < MIN_PRESSURE_MPA:
-            raise PressureFileError(f"{where}:{n}: pressure_MPa = {p:g}: an absolute pressure; allowed >= "
-                                    f"{MIN_PRESSURE_MPA:g}")
-        if kind == "angle":
-            if not 0.0 <= x <= 180.0 * strokes:
-                raise PressureFileError(f"{where}:{n}: crank_deg = {x:g}: allowed [0, {180 * strokes}] for a "
-                                        f"{strokes}-stroke cycle")
-            if xs and x <= xs[-1]:
-                raise PressureFileError(f"{where}:{n}: crank_deg = {x:g} must be larger than the previous "
-                                        f"{xs[-1]:g}")
-        elif x <= 0.0:
-            raise PressureFileError(f"{where}:{n}: volume_cm3 = {x:g} must be > 0")
-        xs.append(x)
-        ps.append(p)
-    if len(xs) < 4:
-        raise PressureFileError(f"{where}: at least 4 data rows are needed, found {len(xs)}")
-    x = np.radians(xs) if kind == "angle" else np.array(xs) * 1e-6
-    return IndicatorTable(kind, np.asarray(x), np.array(ps) * 1e6, where)
 
 
 MAX_GAP_DEG = 60.0

@@ -7,6 +7,7 @@ import numpy as np
 
 from ..checks import check
 from ..crank import dynamics, kinematics, pressure, torque
+from ..files import read_indicator
 from ..spec import SpecError, crank_geometry, resolve_path
 from ..units import DEG, MM, MPA, rad_to_deg, rpm_to_rad_s
 
@@ -54,7 +55,7 @@ def _gas_pressure(spec, phi, bore, radius, lam, k):
                   f"exchange at {cy.intake_pressure_MPa:g}/{cy.exhaust_pressure_MPa:g} MPa with the valves at the "
                   "dead centres")
         return pressure.wiebe_pressure(phi, model, bore, radius, lam, strokes, k), source
-    table = pressure.read_indicator(resolve_path(spec, c.pressure_file), strokes)
+    table = read_indicator(resolve_path(spec, c.pressure_file), strokes)
     if table.kind == "angle":
         pressure.check_cycle(table.x, table.pressure, strokes, table.source)
         return pressure.on_grid(table.x, table.pressure, phi, strokes), f"p-phi diagram {table.source}"

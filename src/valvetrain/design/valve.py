@@ -17,7 +17,8 @@ from ..numerics import extremum
 from ..spec import SpecError, kurz_phi3_deg, main_half_angle_deg
 from ..springs import NoSpringFits
 from ..units import DEG, MM, rad_to_deg, rpm_to_rad_s
-from ..laws.measured import CHECKING_HEIGHTS_MM, MIN_VALVE_LIFT_MM, TableLaw, lobe_table, read_lift_table
+from ..files import read_lift_table
+from ..laws.measured import CHECKING_HEIGHTS_MM, MIN_VALVE_LIFT_MM, TableLaw, lobe_table
 from ..laws.takeup import ClearanceTakeUp
 from .drive import drive_stage, reduced_mass
 

@@ -14,7 +14,6 @@ from scipy.interpolate import make_smoothing_spline
 from scipy.optimize import brentq
 
 from ..checks import check
-from ..csvfiles import read_two_column_arrays, read_two_columns
 from ..numerics import extremum, level_span
 from .base import RampedLaw, Segment
 
@@ -32,9 +31,6 @@ MAX_LIFT_MM = 500.0
 MIN_VALVE_LIFT_MM = 0.3
 """Smallest largest valve lift of a table [mm]: about the valve clearance (0.25-0.35 mm inlet, seed 000, work 2);
 a table that lifts the valve less holds a ramp or noise, not a cam lobe."""
-
-MAX_TABLE_ROWS = 1_000_000
-"""Most rows of a lift table (10^6: a row every 0.0007 crank deg over a whole revolution)."""
 
 FIT_POINTS = 1000
 """Most points a fit sees: a denser lobe is averaged in bins of equal angle (about 0.2 cam deg for a lobe with
@@ -58,37 +54,6 @@ being fitted to the noise with huge coefficients."""
 FITS = ("auto", "spline", "harmonic")
 """Fits of a table: the N-harmonic fit where it meets the stated accuracy (auto), the smoothing spline, or the
 N-harmonic fit."""
-
-
-class TableFileError(ValueError):
-    """A lift-table file that cannot be used; the message names the file and the line."""
-
-
-def read_lift_table(path):
-    """Read a CSV lift table with the header ``angle_deg,lift_mm``; ``#`` lines are comments.
-
-    Returns
-    -------
-    (ndarray, ndarray)
-        Angles [deg] (strictly increasing) and lifts [mm], as in the file.
-
-    Raises
-    ------
-    TableFileError
-        Naming the file and line of the first problem; also for more than :data:`MAX_TABLE_ROWS` rows.
-    """
-    _, angles, lifts = read_two_column_arrays(path, [("angle_deg", "lift_mm")], TableFileError)
-    back = np.flatnonzero(np.diff(angles) <= 0.0)
-    if back.size:
-        i = int(back[0]) + 1
-        line = read_two_columns(path, [("angle_deg", "lift_mm")], TableFileError)[1][i][0]
-        raise TableFileError(f"{path}:{line}: angle_deg = {angles[i]:g} must be larger than the previous "
-                             f"{angles[i - 1]:g}")
-    if angles.size < 10:
-        raise TableFileError(f"{path}: at least 10 rows are needed to fit a lift curve, found {angles.size}")
-    if angles.size > MAX_TABLE_ROWS:
-        raise TableFileError(f"{path}: {angles.size} rows; allowed at most {MAX_TABLE_ROWS}: thin the table")
-    return angles, lifts
 
 
 def noise_level(lift):

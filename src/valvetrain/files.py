@@ -1,0 +1,198 @@
+"""Reading the files a specification names: measured lift tables and indicator diagrams (CSV).
+
+The one place where the package reads data files.  Every reader returns arrays in the file's
+units (degrees, millimetres, MPa, cm3) with the file's errors named by file and line; the
+specification's SI view converts them, the physics takes arrays.
+"""
+
+import csv
+from dataclasses import dataclass
+import io
+from pathlib import Path
+import re
+
+import numpy as np
+
+from .crank.pressure import MIN_PRESSURE_MPA, PressureFileError
+
+ECHO_CHARS = 40
+"""Longest text of a file echoed in a message (a longer row or header is cut)."""
+
+
+def _short(text):
+    """``text`` cut to :data:`ECHO_CHARS` characters (a cut marked with '...')."""
+    return text if len(text) <= ECHO_CHARS else text[:ECHO_CHARS] + "..."
+
+
+def _text(path, error):
+    try:
+        return Path(path).read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError) as exc:
+        raise error(f"{path}: cannot read the file: {exc}") from None
+
+
+def read_two_columns(path, headers, error):
+    """Read a CSV file of a header row and rows of two finite numbers; ``#`` lines are comments.
+
+    Parameters
+    ----------
+    path : str or Path
+        The file.
+    headers : sequence of tuple of str
+        Accepted headers, e.g. ``[("crank_deg", "pressure_MPa")]``.
+    error : type
+        Exception class raised with ``"FILE:LINE: message"``.
+
+    Returns
+    -------
+    (tuple of str, list of (int, float, float))
+        The header found and the rows as (line number, first value, second value).
+    """
+    path = Path(path)
+    text = _text(path, error)
+    rows = [(n, r) for n, r in enumerate(csv.reader(text.splitlines()), start=1)
+            if r and not r[0].lstrip().startswith("#")]
+    if not rows:
+        raise error(f"{path}: the file is empty")
+    n0, header = rows[0]
+    key = tuple(h.strip() for h in header)
+    if key not in headers:
+        allowed = " or ".join(repr(",".join(h)) for h in headers)
+        raise error(f"{path}:{n0}: header {_short(','.join(key))!r}: allowed {allowed}")
+    out = []
+    for n, r in rows[1:]:
+        if len(r) != 2:
+            raise error(f"{path}:{n}: expected 2 values, found {len(r)}")
+        try:
+            x, y = float(r[0]), float(r[1])
+        except ValueError:
+            raise error(f"{path}:{n}: {_short(','.join(r))!r} is not two numbers") from None
+        if not (np.isfinite(x) and np.isfinite(y)):
+            raise error(f"{path}:{n}: values must be finite")
+        out.append((n, x, y))
+    return key, out
+
+
+_PLAIN = re.compile(r"[^\t\n\x20-\x7e]|\"")
+"""A character that keeps a file off the fast path: a control character other than tab and newline (a lone
+carriage return, a form feed: line breaks of :meth:`str.splitlines`), a non-ASCII character or a quote."""
+
+_SKIPPED_LINE = re.compile(r"^[ \t]*(#|$)", re.MULTILINE)
+"""A comment or blank line."""
+
+
+def read_two_column_arrays(path, headers, error):
+    """Read a file like :func:`read_two_columns`, returning the header and the two columns as arrays.
+
+    A plain file (ASCII, no quotes, no comment or blank line after the header) is parsed by one call of
+    :func:`numpy.loadtxt`: a table of 10^6 rows in a fraction of a second.  Any other file, and any file that
+    call does not parse as two finite numbers a row, is read by :func:`read_two_columns`, whose messages name
+    the line; both paths accept the same files and give the same numbers.
+
+    Returns
+    -------
+    (tuple of str, ndarray, ndarray)
+        The header found and the first and second values of the rows.
+    """
+    text = _text(path, error).replace("\r\n", "\n")
+    head = re.search(r"^(?![ \t]*#).+$", text, re.MULTILINE)
+    if head is not None and not _PLAIN.search(text):
+        key = tuple(h.strip() for h in head.group().split(","))
+        body = text[head.end():].strip("\n")
+        if key in headers and body and not _SKIPPED_LINE.search(body):
+            try:
+                data = np.loadtxt(io.StringIO(body), delimiter=",", comments=None, ndmin=2)
+            except ValueError:
+                data = None
+            if data is not None and data.shape[1] == 2 and np.all(np.isfinite(data)):
+                return key, data[:, 0], data[:, 1]
+    key, rows = read_two_columns(path, headers, error)
+    values = np.array([(x, y) for _, x, y in rows], dtype=float).reshape(-1, 2)
+    return key, values[:, 0], values[:, 1]
+
+
+MAX_TABLE_ROWS = 1_000_000
+"""Most rows of a lift table (10^6: a row every 0.0007 crank deg over a whole revolution)."""
+
+
+class TableFileError(ValueError):
+    """A lift-table file that cannot be used; the message names the file and the line."""
+
+
+def read_lift_table(path):
+    """Read a CSV lift table with the header ``angle_deg,lift_mm``; ``#`` lines are comments.
+
+    Returns
+    -------
+    (ndarray, ndarray)
+        Angles [deg] (strictly increasing) and lifts [mm], as in the file.
+
+    Raises
+    ------
+    TableFileError
+        Naming the file and line of the first problem; also for more than :data:`MAX_TABLE_ROWS` rows.
+    """
+    _, angles, lifts = read_two_column_arrays(path, [("angle_deg", "lift_mm")], TableFileError)
+    back = np.flatnonzero(np.diff(angles) <= 0.0)
+    if back.size:
+        i = int(back[0]) + 1
+        line = read_two_columns(path, [("angle_deg", "lift_mm")], TableFileError)[1][i][0]
+        raise TableFileError(f"{path}:{line}: angle_deg = {angles[i]:g} must be larger than the previous "
+                             f"{angles[i - 1]:g}")
+    if angles.size < 10:
+        raise TableFileError(f"{path}: at least 10 rows are needed to fit a lift curve, found {angles.size}")
+    if angles.size > MAX_TABLE_ROWS:
+        raise TableFileError(f"{path}: {angles.size} rows; allowed at most {MAX_TABLE_ROWS}: thin the table")
+    return angles, lifts
+
+
+@dataclass(frozen=True)
+class IndicatorTable:
+    """A read indicator diagram: either ``angle`` [rad] or ``volume`` [m^3] against ``pressure`` [Pa]."""
+
+    kind: str                  # "angle" or "volume"
+    x: np.ndarray
+    pressure: np.ndarray
+    source: str
+
+
+_HEADERS = {("crank_deg", "pressure_MPa"): "angle", ("volume_cm3", "pressure_MPa"): "volume"}
+
+
+def read_indicator(path, strokes):
+    """Read an indicator diagram from a CSV file.
+
+    The header is ``crank_deg,pressure_MPa`` (absolute pressure against the cycle angle,
+    0...720 for a four-stroke with the firing TDC at 360; rows increasing, not
+    necessarily evenly spaced) or ``volume_cm3,pressure_MPa`` (a p-V diagram, rows in the
+    order of the cycle from its first TDC, one monotone branch of volume per stroke).
+    Lines starting with ``#`` are comments.
+
+    Raises
+    ------
+    PressureFileError
+        With the file name and line number of the first problem.
+    """
+    where = str(path)
+    key, rows = read_two_columns(path, list(_HEADERS), PressureFileError)
+    kind = _HEADERS[key]
+    xs, ps = [], []
+    for n, x, p in rows:
+        if p < MIN_PRESSURE_MPA:
+            raise PressureFileError(f"{where}:{n}: pressure_MPa = {p:g}: an absolute pressure; allowed >= "
+                                    f"{MIN_PRESSURE_MPA:g}")
+        if kind == "angle":
+            if not 0.0 <= x <= 180.0 * strokes:
+                raise PressureFileError(f"{where}:{n}: crank_deg = {x:g}: allowed [0, {180 * strokes}] for a "
+                                        f"{strokes}-stroke cycle")
+            if xs and x <= xs[-1]:
+                raise PressureFileError(f"{where}:{n}: crank_deg = {x:g} must be larger than the previous "
+                                        f"{xs[-1]:g}")
+        elif x <= 0.0:
+            raise PressureFileError(f"{where}:{n}: volume_cm3 = {x:g} must be > 0")
+        xs.append(x)
+        ps.append(p)
+    if len(xs) < 4:
+        raise PressureFileError(f"{where}: at least 4 data rows are needed, found {len(xs)}")
+    x = np.radians(xs) if kind == "angle" else np.array(xs) * 1e-6
+    return IndicatorTable(kind, np.asarray(x), np.array(ps) * 1e6, where)
