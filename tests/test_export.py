@@ -8,7 +8,8 @@ import numpy as np
 import pytest
 
 from valvetrain.design import run
-from valvetrain.export import LIFT_COLUMNS, json_text, write_outputs
+from valvetrain.export import json_text, write_outputs
+from valvetrain.tables import LIFT_COLUMNS
 from valvetrain.spec import example_spec
 
 
@@ -65,10 +66,9 @@ def test_contour_csv_and_dxf(written):
     ramps = msp.query("LINE[layer=='RAMP_BOUNDARIES']")
     assert len(ramps) == 2
     assert len(msp.query("LINE[layer=='SEGMENT_BOUNDARIES']")) == len(law.breakpoints) - 2
-    from valvetrain.design.valve import contour_points
     ends = sorted((line.dxf.end.x, line.dxf.end.y) for line in ramps)
     a = law.end - law.ramp_angle
-    expected = sorted(map(tuple, (contour_points(law, np.array([-a, a]), 19.75e-3, "flat", 0.0) * 1e3).T))
+    expected = sorted(map(tuple, (law.profile(np.array([-a, a]), 19.75e-3, "flat", 0.0)[0] * 1e3).T))
     assert np.allclose(ends, expected, atol=0.05)  # the contour point nearest the ramp end (0.5 deg sampling)
 
 
@@ -102,9 +102,8 @@ def test_manufacturing_tables(written):
     psi = np.array([float(r[0]) for r in rows])
     radius = np.array([float(r[1]) for r in rows])
     assert np.allclose(np.diff(psi), 1.0)  # [output] export_step_deg = 1
-    from valvetrain.design.valve import contour_points
     theta = np.linspace(-np.pi, np.pi, 400001)
-    x, y = contour_points(v.law, theta, v.heel_radius, "flat", 0.0) * 1e3
+    x, y = v.law.profile(theta, v.heel_radius, "flat", 0.0)[0] * 1e3
     ang = np.degrees(np.arctan2(x, y))
     order = np.argsort(ang)
     assert np.allclose(radius, np.interp(psi, ang[order], np.hypot(x, y)[order]), atol=1e-6)
@@ -114,7 +113,7 @@ def test_manufacturing_tables(written):
     assert header == ["cam_deg", "x_mm", "y_mm"]
     cam = np.radians([float(r[0]) for r in rows])
     xy = np.array([[float(r[1]), float(r[2])] for r in rows]).T
-    assert np.allclose(xy, contour_points(v.law, cam, v.heel_radius, "flat", 0.0) * 1e3, atol=1e-9)
+    assert np.allclose(xy, v.law.profile(cam, v.heel_radius, "flat", 0.0)[0] * 1e3, atol=1e-9)
 
 
 def test_exported_lift_table_reads_back(written):

@@ -135,7 +135,8 @@ def test_tangent_cam_lift_table_has_no_inf(tmp_path):
     """The straight flanks' infinite radius is an empty rho_mm cell (documented), never 'inf' or 'nan'."""
     import csv
 
-    from valvetrain.export import lift_table_columns, write_csv
+    from valvetrain.export import write_csv
+    from valvetrain.tables import lift_table_columns
 
     write_csv(tmp_path / "t.csv", lift_table_columns(run(_spec("tangent")).valves["intake"].table))
     rows = list(csv.DictReader((tmp_path / "t.csv").open()))

@@ -79,3 +79,45 @@ def mass_from_specific(specific_mass, throat_area):
 def spring_mass(mean_diameter, wire_diameter, total_coils, density):
     """Mass of a helical spring, m = rho (pi d^2/4) pi D i_total [kg] (seed 003, step 3)."""
     return density * np.pi * wire_diameter**2 / 4.0 * np.pi * mean_diameter * total_coils
+
+
+def reduced_mass(throat_area, layout, rocker_ratio, parts=None, specific_mass=None, valve_arm=None, spring_mass=0.0):
+    """Reduced mass of a valve train at the valve [kg], from its parts or from a specific mass, and how.
+
+    Parameters
+    ----------
+    throat_area : float
+        Throat area of the valve f_g [m^2].
+    layout : {"direct", "rocker", "pushrod"}
+        Drive layout (selects the default specific mass).
+    rocker_ratio : float
+        i_k = l_v / l_t.
+    parts : object, optional
+        Part masses with the attributes ``valve_kg``, ``retainer_kg``, ``cotters_kg``, ``spring_kg`` (None: the
+        designed spring's mass ``spring_mass``), ``pushrod_kg``, ``tappet_kg`` and ``rocker_inertia`` [kg m^2]
+        (the SI view of a ``[valves.NAME.drive.masses]`` section).
+    specific_mass : float, optional
+        m' [kg/m^2] when no parts are given; default :data:`SPECIFIC_MASS_DEFAULT` of the layout.
+    valve_arm : float, optional
+        Valve-side rocker arm [m] for the rocker's inertia.
+    spring_mass : float
+        Mass of the designed spring(s) [kg].
+
+    Returns
+    -------
+    (float, str)
+        The mass and its source.
+
+    References
+    ----------
+    seed 000, work 5: eq. (5.2) from the parts, m' f_g otherwise.
+    """
+    if parts is not None:
+        spring = parts.spring_kg if parts.spring_kg is not None else spring_mass
+        value = reduced_mass_at_valve(parts.valve_kg, parts.retainer_kg, parts.cotters_kg, spring, parts.pushrod_kg,
+                                      parts.tappet_kg, parts.rocker_inertia, valve_arm or 1.0, rocker_ratio)
+        return value, "part masses, seed 000 eq. (5.2)" + ("" if parts.spring_kg is not None
+                                                            else "; spring mass of the design")
+    specific = specific_mass or SPECIFIC_MASS_DEFAULT[layout]
+    given = "given" if specific_mass else f"default for a {layout} drive"
+    return mass_from_specific(specific, throat_area), f"specific mass {specific:g} kg/m2 ({given}), seed 000 work 5"

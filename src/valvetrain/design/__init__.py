@@ -15,12 +15,15 @@ from dataclasses import dataclass
 
 from .. import flow
 from ..checks import check, failed
+from ..crank.pressure import PressureFileError
+from ..files import TableFileError
+from ..spec import SpecError, si
 from ..units import MM
 from .crank import CrankResults, crank_stage
 from .twostroke import TwoStrokeResults, two_stroke_stage
-from .valve import THROAT_AREA_SHARE_RANGE, ValveDesign, build_law, design_valve, nose_crank_angle
+from .valve import THROAT_AREA_SHARE_RANGE, ValveDesign, design_valve
 
-__all__ = ["DesignResults", "ValveDesign", "build_law", "nose_crank_angle", "run"]
+__all__ = ["DesignResults", "ValveDesign", "design_valve", "run"]
 
 
 @dataclass
@@ -57,27 +60,56 @@ class DesignResults:
         return out
 
 
-def run(spec):
+def run(spec, laws=None):
     """Run the whole design of a validated specification.
 
     Parameters
     ----------
     spec : valvetrain.spec.Spec
+    laws : dict, optional
+        ``valve name -> LiftLaw``: enter those valves' designs with a law of the caller's own.
 
     Returns
     -------
     DesignResults
+
+    Raises
+    ------
+    SpecError
+        Inputs that admit no design (a cam the law cannot make, a file that cannot be read, no spring that
+        fits), one message per problem of every valve.
     """
-    eng = spec.engine
-    bore, stroke = eng.bore_mm * MM, eng.stroke_mm * MM
-    valves = {name: design_valve(name, v, spec) for name, v in spec.valves.items()}
+    engine, gas, output = si(spec.engine), si(spec.gas), si(spec.output)
+    valves, problems = {}, []
+    for name, v in spec.valves.items():
+        try:
+            valve = si(v, spec)
+        except (TableFileError, PressureFileError) as exc:
+            problems.append(f"valves.{name}.cam.table_file: {exc}")
+            continue
+        try:
+            valves[name] = design_valve(name, valve, engine, gas, output, (laws or {}).get(name))
+        except SpecError as err:
+            problems += err.problems
+    if problems:
+        raise SpecError(problems)
     found = [c for v in valves.values() for c in v.checks]
-    kinds = {v.kind for v in spec.valves.values()}
-    if kinds == {"intake", "exhaust"}:
-        share = sum(v.count * float(flow.circle_area(v.throat_diameter_mm * MM)) for v in spec.valves.values())
-        found.append(check("sum of throat areas / piston area", share / float(flow.circle_area(bore)),
+    if {v.kind for v in valves.values()} == {"intake", "exhaust"}:
+        share = sum(v.count * v.flow.throat_area for v in valves.values())
+        found.append(check("sum of throat areas / piston area", share / float(flow.circle_area(engine.bore)),
                            *THROAT_AREA_SHARE_RANGE, source="seed 000, work 1"))
-    engine = {
+    crank = crank_stage(spec) if spec.crank is not None else None
+    ports = two_stroke_stage(spec) if spec.two_stroke is not None else None
+    for stage, tag in ((crank, "crank"), (ports, "two-stroke")):
+        if stage is not None:
+            found += [c.named(tag) for c in stage.checks]
+    return DesignResults(spec, engine_record(spec.engine), valves, found, crank, ports)
+
+
+def engine_record(eng):
+    """The engine's figures in results.json: its data and the mean piston speed, swept volume and piston area."""
+    bore, stroke = eng.bore_mm * MM, eng.stroke_mm * MM
+    return {
         "name": eng.name,
         "bore_mm": eng.bore_mm,
         "stroke_mm": eng.stroke_mm,
@@ -89,9 +121,3 @@ def run(spec):
         "displacement_cm3": float(flow.swept_volume(bore, stroke)) * 1e6 * eng.cylinders,
         "piston_area_mm2": float(flow.circle_area(bore)) / MM**2,
     }
-    crank = crank_stage(spec) if spec.crank is not None else None
-    ports = two_stroke_stage(spec) if spec.two_stroke is not None else None
-    for stage, tag in ((crank, "crank"), (ports, "two-stroke")):
-        if stage is not None:
-            found += [c.named(tag) for c in stage.checks]
-    return DesignResults(spec, engine, valves, found, crank, ports)

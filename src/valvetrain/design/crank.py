@@ -7,8 +7,7 @@ import numpy as np
 
 from ..checks import check
 from ..crank import dynamics, kinematics, pressure, torque
-from ..files import read_indicator
-from ..spec import SpecError, crank_geometry, resolve_path
+from ..spec import SpecError, crank_geometry, si
 from ..units import DEG, MM, MPA, rad_to_deg, rpm_to_rad_s
 
 LAMBDA_RANGE = (0.24, 0.31)
@@ -55,7 +54,7 @@ def _gas_pressure(spec, phi, bore, radius, lam, k):
                   f"exchange at {cy.intake_pressure_MPa:g}/{cy.exhaust_pressure_MPa:g} MPa with the valves at the "
                   "dead centres")
         return pressure.wiebe_pressure(phi, model, bore, radius, lam, strokes, k), source
-    table = read_indicator(resolve_path(spec, c.pressure_file), strokes)
+    table = si(c, spec).indicator
     if table.kind == "angle":
         pressure.check_cycle(table.x, table.pressure, strokes, table.source)
         return pressure.on_grid(table.x, table.pressure, phi, strokes), f"p-phi diagram {table.source}"

@@ -7,6 +7,8 @@ import numpy as np
 
 from .. import flow, geometry, masses, springs, strength
 from ..checks import check
+from ..spec import si
+from ..spec.cams import train_mass
 from ..units import MM, MPA, rad_to_deg, to_display
 
 
@@ -25,19 +27,8 @@ class DriveResults:
 
 
 def reduced_mass(v, throat_area, spring_mass_kg):
-    """Reduced mass at the valve [kg] and a description of how it was obtained."""
-    d = v.drive
-    if d.masses is not None:
-        m = d.masses
-        spring = m.spring_kg if m.spring_kg is not None else spring_mass_kg
-        arm = (d.valve_arm_mm or 1.0) * MM
-        value = masses.reduced_mass_at_valve(m.valve_kg, m.retainer_kg, m.cotters_kg, spring, m.pushrod_kg,
-                                             m.tappet_kg, m.rocker_inertia_kg_mm2 * MM**2, arm, v.rocker_ratio)
-        source = "part masses, seed 000 eq. (5.2)" + ("" if m.spring_kg is not None else "; spring mass of the design")
-        return value, source
-    specific = d.specific_mass_kg_m2 or masses.SPECIFIC_MASS_DEFAULT[v.layout]
-    given = "given" if d.specific_mass_kg_m2 else f"default for a {v.layout} drive"
-    return masses.mass_from_specific(specific, throat_area), f"specific mass {specific:g} kg/m2 ({given}), seed 000 work 5"
+    """Reduced mass at the valve [kg] and a description of how it was obtained (the valve's SI view)."""
+    return train_mass(si(v), spring_mass_kg)
 
 
 def _material(sp):
@@ -74,12 +65,11 @@ def _spring_checks(tag, s):
             if key in ("tau_max", "fatigue_safety", "resonance_ratio", "working_coils")]
 
 
-def drive_stage(v, spec, law, omega, heel, roller):
+def drive_stage(v, gas, law, omega, heel, roller):
     """Stages 6 and 7: reduced masses, spring characteristic and design, strength of the drive parts."""
     i_k = v.rocker_ratio
     d_g = v.throat_diameter_mm * MM
     f_g = float(flow.circle_area(d_g))
-    gas = spec.gas
     found = []
 
     theta = np.unique(np.concatenate([np.linspace(law.valve_opens, law.valve_closes, 2001), law.breakpoints]))

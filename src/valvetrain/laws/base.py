@@ -20,6 +20,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .. import geometry
 from ..numerics import extremum, level_span
 
 
@@ -65,6 +66,9 @@ class LiftLaw(ABC):
 
     #: highest derivative of the lift that is continuous at the junctions (2: acceleration continuous)
     continuity: int = 2
+
+    #: the law has no ramp and its flanks take up the valve clearance (the valve meets its seat at speed)
+    clearance_on_flank: bool = False
 
     @property
     @abstractmethod
@@ -162,6 +166,64 @@ class LiftLaw(ABC):
         """Camshaft angle [rad] over which the lift exceeds ``height`` [m] (nan if it never reaches it)."""
         rise, fall = self.crossings(height)
         return fall - rise
+
+    def profile(self, theta, heel_radius, follower="flat", roller_radius=0.0):
+        """The cam profile at camshaft angles ``theta`` [rad from the nose].
+
+        Parameters
+        ----------
+        heel_radius : float
+            Radius of the circle the law's lift starts from [m] (r0 - h0 with a ramp).
+        follower : {"flat", "roller"}
+        roller_radius : float
+            [m], for a roller follower.
+
+        Returns
+        -------
+        (ndarray, ndarray, ndarray, ndarray)
+            Contour points shape (2, n) [m] (cam frame, nose on +y), profile radius of curvature
+            [m], pressure angle [rad] (zero for a flat follower) and contact offset from the
+            follower axis [m] (h' for a flat follower, zero for a roller).
+
+        References
+        ----------
+        seed 002, section 2.1, eqs. (2.6)-(2.7), (2.15)-(2.16) (:mod:`valvetrain.geometry`).
+        """
+        theta = np.asarray(theta, dtype=float)
+        h, dh, d2h, _ = self.derivatives(theta)
+        if follower == "flat":
+            return (geometry.flat_follower_contour(theta, heel_radius, h, dh),
+                    geometry.flat_follower_curvature(heel_radius, h, d2h), np.zeros_like(theta), dh)
+        return (geometry.roller_follower_contour(theta, heel_radius, roller_radius, h, dh),
+                geometry.roller_follower_curvature(heel_radius, roller_radius, h, dh, d2h),
+                geometry.roller_pressure_angle(heel_radius, roller_radius, h, dh), np.zeros_like(theta))
+
+    def polar_radius(self, polar_angle, heel_radius, follower="flat", roller_radius=0.0, samples=7201):
+        """Radius of the cam contour at polar angles from the nose direction (+y towards +x) [m].
+
+        Each radius is found on the analytic contour: the contour point's polar angle is
+        bracketed on ``samples`` camshaft angles and the bracket bisected, all angles at once,
+        to the round-off of the angle (not interpolated), so a table of any step is exact.
+        """
+        target = np.asarray(polar_angle, dtype=float)
+        theta = np.linspace(-np.pi, np.pi, samples)
+        psi = np.unwrap(np.arctan2(*self.profile(theta, heel_radius, follower, roller_radius)[0]))
+        wrapped = (target - psi[0]) % (2.0 * np.pi) + psi[0]
+        k = np.clip(np.searchsorted(psi, wrapped), 1, samples - 1)
+        lo, hi = theta[k - 1], theta[k]
+
+        def miss(t):
+            x, y = self.profile(t, heel_radius, follower, roller_radius)[0]
+            return np.angle(np.exp(1j * (np.arctan2(x, y) - target)))
+
+        f_lo = miss(lo)
+        for _ in range(60):
+            mid = 0.5 * (lo + hi)
+            f_mid = miss(mid)
+            left = np.sign(f_mid) == np.sign(f_lo)
+            lo, f_lo = np.where(left, mid, lo), np.where(left, f_mid, f_lo)
+            hi = np.where(left, hi, mid)
+        return np.hypot(*self.profile(0.5 * (lo + hi), heel_radius, follower, roller_radius)[0])
 
     def extremes(self, omega):
         """Extreme velocity and accelerations at camshaft speed omega [rad/s], found on the analytic law."""

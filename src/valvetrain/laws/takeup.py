@@ -44,6 +44,8 @@ class ClearanceTakeUp(LiftLaw):
     (6.25, 'clearance take-up opening')
     """
 
+    clearance_on_flank = True
+
     def __init__(self, law, clearance):
         if law.ramp_height > 0.0:
             raise ValueError(f"{law.name} law: it has a ramp, which takes up the clearance itself")

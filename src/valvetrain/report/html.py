@@ -4,7 +4,7 @@ from jinja2 import Environment, PackageLoader, select_autoescape
 import numpy as np
 
 from .. import __version__
-from ..export import lift_table_columns
+from ..tables import lift_table_columns
 from .i18n import SOURCES, TEXT
 
 TABLE_COLUMNS = ["cam_deg", "crank_deg", "segment", "tappet_lift_mm", "tappet_velocity_m_s",

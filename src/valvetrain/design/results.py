@@ -1,0 +1,116 @@
+"""Typed results of the design stages: SI fields whose metadata give the key, unit and meaning in results.json.
+
+A stage result is a frozen dataclass.  A field declared with :func:`quantity` is part of the
+results: ``key`` is its name in ``results.json`` (engineering units in the name, as in the
+specification: ``rho_min_mm``), ``unit`` the unit it is shown in (:data:`valvetrain.units.DISPLAY_UNITS`),
+``label`` what it is.  :func:`record` converts a result to that dictionary, the one place where
+a result leaves SI; :func:`json_schema` describes the same dictionary as a JSON Schema, generated
+from the same metadata.  Fields without the metadata (arrays, the law object) stay inside.
+"""
+
+from dataclasses import MISSING, field, fields, is_dataclass
+import math
+import typing
+
+import numpy as np
+
+from ..units import to_display
+
+
+def quantity(key, unit="", label="", *, default=MISSING, flatten=False, omit_none=False):
+    """A result field shown in results.json as ``key`` in ``unit``.
+
+    Parameters
+    ----------
+    key : str
+        Name in results.json.
+    unit : str
+        Display unit of the value (a key of :data:`valvetrain.units.DISPLAY_UNITS`); numbers,
+        tuples and arrays of numbers are converted, other values kept.
+    label : str
+        What the quantity is, for the schema and the report.
+    default
+        Default value of the field.
+    flatten : bool
+        A nested result whose keys are merged into the parent's record.
+    omit_none : bool
+        Leave the key out where the value is None (a quantity that exists only for some designs).
+    """
+    meta = {"key": key, "unit": unit, "label": label, "flatten": flatten, "omit_none": omit_none}
+    return field(metadata=meta) if default is MISSING else field(default=default, metadata=meta)
+
+
+def _shown(value, unit):
+    if value is None or isinstance(value, (str, bool)):
+        return value
+    if is_dataclass(value):
+        return record(value)
+    if isinstance(value, dict):
+        return {k: _shown(v, unit) for k, v in value.items()}
+    if isinstance(value, (tuple, list, np.ndarray)):
+        return [_shown(v, unit) for v in value]
+    if isinstance(value, (int, np.integer)) and not unit:
+        return int(value)
+    return float(to_display(float(value), unit))
+
+
+def record(result):
+    """The results.json dictionary of a stage result (engineering units, keys from the field metadata)."""
+    out = {}
+    for f in fields(result):
+        meta = f.metadata
+        if "key" not in meta:
+            continue
+        value = getattr(result, f.name)
+        if value is None and meta["omit_none"]:
+            continue
+        if meta["flatten"]:
+            out.update(record(value) if value is not None else {})
+        else:
+            out[meta["key"]] = _shown(value, meta["unit"])
+    return out
+
+
+_JSON_TYPES = {float: "number", int: "integer", str: "string", bool: "boolean", dict: "object"}
+
+
+def _type_schema(annotation):
+    origin = typing.get_origin(annotation)
+    if origin is typing.Union or origin is getattr(__import__("types"), "UnionType", None):
+        options = [_type_schema(a) for a in typing.get_args(annotation)]
+        return {"anyOf": options}
+    if annotation is type(None):
+        return {"type": "null"}
+    if origin in (tuple, list):
+        return {"type": "array", "items": _type_schema(typing.get_args(annotation)[0])}
+    if isinstance(annotation, type) and is_dataclass(annotation):
+        return json_schema(annotation)
+    if annotation in _JSON_TYPES:
+        return {"type": _JSON_TYPES[annotation]}
+    return {}
+
+
+def json_schema(cls):
+    """JSON Schema (draft 2020-12) of the record of a result class: properties from the fields' metadata."""
+    hints = typing.get_type_hints(cls)
+    props, required = {}, []
+    for f in fields(cls):
+        meta = f.metadata
+        if "key" not in meta:
+            continue
+        sub = _type_schema(hints[f.name])
+        if meta["flatten"]:
+            nested = sub if "properties" in sub else next((o for o in sub.get("anyOf", []) if "properties" in o), {})
+            props.update(nested.get("properties", {}))
+            continue
+        text = meta["label"] + (f" [{meta['unit']}]" if meta["unit"] else "")
+        props[meta["key"]] = {**sub, "description": text} if text else sub
+        if not meta["omit_none"]:
+            required.append(meta["key"])
+    return {"type": "object", "title": cls.__name__, "description": (cls.__doc__ or "").strip().split("\n")[0],
+            "properties": props, "required": required}
+
+
+def finite_or_none(x):
+    """A float, or None where it is not defined (not finite)."""
+    return float(x) if x is not None and math.isfinite(x) else None

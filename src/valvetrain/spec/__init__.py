@@ -1,0 +1,16 @@
+"""The design specification: a TOML file of sections, validated by pydantic models, and its SI view.
+
+Units are in the key names (``_mm``, ``_deg``, ``_rpm``, ``_MPa``); :func:`si` converts them to SI,
+the design never does.  Timing angles are crank degrees, cam segment angles camshaft degrees.
+"""
+
+from .cams import LAWS, REGISTRY, Cam, main_half_angle_deg
+from .messages import SpecError
+from .models import Engine, Spec, Valve
+from .si import si
+from .validate import (crank_geometry, example_spec, example_text, input_files, load_spec, parse_spec, resolve_path,
+                       validate)
+
+__all__ = ["Cam", "Engine", "LAWS", "REGISTRY", "Spec", "SpecError", "Valve", "crank_geometry", "example_spec",
+           "example_text", "input_files", "load_spec", "main_half_angle_deg", "parse_spec", "resolve_path", "si",
+           "validate"]

@@ -1,0 +1,634 @@
+"""The cam section of a valve, ``[valves.NAME.cam]``: one model per lift law, the registry of the laws.
+
+Each model is the single place where its law meets the specification: its keys (pydantic
+fields, with the allowed ranges), the cross-checks of its angles against the valve's timing
+(:meth:`problems`), the law it builds in SI (:meth:`build`, the law's constructor holding the
+parameter rules), and what it adds to the results (:meth:`records`, :meth:`nose_crank`,
+:meth:`timing`).  Adding a law means adding its module under :mod:`valvetrain.laws` and its
+model here, decorated with :func:`register`.
+
+``build`` receives the valve's SI view (:func:`valvetrain.spec.si.si`), whose ``cam`` is the
+cam's own SI view, and the engine's.  Tappet-side lifts: the valve lift divided by the rocker
+ratio.  Timing angles are crank angles, segment angles camshaft angles.
+"""
+
+from typing import Annotated, ClassVar, Literal, Optional, Union
+
+import numpy as np
+from pydantic import Field, model_validator
+
+from .. import flow, masses
+from ..checks import check
+from ..laws import (AsymmetricLaw, CombinedLaw, ConstantAccelerationLaw, DynamicLaw, HarmonicLaw, KurzLaw, PolydyneLaw,
+                    PolynomialLaw, TangentLaw, ThreeArcLaw)
+from ..laws.measured import CHECKING_HEIGHTS_MM, MIN_VALVE_LIFT_MM, TableLaw, lobe_table
+from ..laws.takeup import ClearanceTakeUp
+from ..units import DEG, MM, cam_per_crank, rad_to_deg
+from .fields import RAMP_VELOCITY, SEGMENT_ANGLE, Length, _bounded, _Model
+
+REGISTRY = {}
+"""``law`` name -> its cam model, in the order of registration."""
+
+
+def register(model):
+    """Class decorator: add a cam model to :data:`REGISTRY` under its ``law`` literal."""
+    REGISTRY[model.model_fields["law"].annotation.__args__[0]] = model
+    return model
+
+
+def main_half_angle(valve, strokes):
+    """phi_p0 [rad camshaft]: half the main event (ramps excluded), (opens + pi + closes)/2 crank angle on the
+    camshaft (seed 000, work 2, corrected phi_p0 formula, E1); ``valve`` is an SI view."""
+    return (valve.opens + np.pi + valve.closes) / 2.0 * cam_per_crank(strokes)
+
+
+def main_half_angle_deg(valve, strokes):
+    """phi_p0 [cam deg] from a valve section in degrees (see :func:`main_half_angle`)."""
+    return (valve.opens_deg + 180.0 + valve.closes_deg) / 2.0 * cam_per_crank(strokes)
+
+
+def symmetric_nose(valve):
+    """Crank angle of the nose of a symmetric lobe from the gas-exchange TDC [rad] (four-stroke), SI view.
+
+    Intake: the main lift opens ``opens`` before TDC (crank 0) and closes ``closes`` after BDC (crank pi).
+    Exhaust: opens ``opens`` before BDC (crank -pi) and closes ``closes`` after TDC (crank 0).
+    """
+    if valve.kind == "intake":
+        return (np.pi + valve.closes - valve.opens) / 2.0
+    return (valve.closes - np.pi - valve.opens) / 2.0
+
+
+def layout(valve):
+    """Drive layout of a valve (SI view or section): as given, else direct for rocker ratio 1 and pushrod otherwise."""
+    if valve.drive.layout is not None:
+        return valve.drive.layout
+    return "direct" if valve.rocker_ratio == 1.0 else "pushrod"
+
+
+def train_mass(valve, spring_mass):
+    """Reduced mass of a valve's train at the valve [kg] and how it was obtained (SI view; seed 000, eq. 5.2 or the
+    specific mass of work 5); ``spring_mass`` [kg] where the part masses leave it to the designed spring."""
+    d = valve.drive
+    return masses.reduced_mass(float(flow.circle_area(valve.throat_diameter)), layout(valve), valve.rocker_ratio,
+                               parts=d.masses, specific_mass=d.specific_mass_kg_m2, valve_arm=d.valve_arm,
+                               spring_mass=spring_mass)
+
+
+def _finite(x):
+    """A float, or None where it is not defined (a checking height the lift never reaches)."""
+    return float(x) if np.isfinite(x) else None
+
+
+class _CamBase(_Model):
+    base_radius_mm: Length(2.0, 500.0, low_open=False)
+    follower: Literal["flat", "roller"] = "flat"
+    roller_radius_mm: Optional[Length(1.0, 200.0, low_open=False)] = None
+
+    @model_validator(mode="after")
+    def _roller_needs_radius(self):
+        if self.follower == "roller" and self.roller_radius_mm is None:
+            raise ValueError("roller_radius_mm is required when follower = \"roller\" (allowed [1, 200] mm)")
+        return self
+
+    needs_timing: ClassVar[bool] = True
+    """Whether the valve's ``max_lift_mm``, ``opens_deg`` and ``closes_deg`` are required (a measured table sets
+    its own)."""
+
+    def build(self, valve, engine):
+        """The lift law of this cam (tappet side, SI).
+
+        Parameters
+        ----------
+        valve : the valve's SI view; ``valve.cam`` is this cam's SI view.
+        engine : the engine's SI view.
+
+        Raises
+        ------
+        ValueError
+            Inputs that pass their bounds but admit no cam; the message names the keys.
+        """
+        raise NotImplementedError
+
+    def problems(self, at, valve, engine):
+        """Cross-checks of the cam's keys against the valve's timing and clearance, one message each ([] if none);
+        ``at`` is the key path of the valve, ``valve`` and ``engine`` the spec sections."""
+        return []
+
+    def nose_crank(self, valve, law):
+        """Crank angle of the cam nose from the gas-exchange TDC [rad]; ``valve`` is the SI view."""
+        return symmetric_nose(valve)
+
+    def records(self, law, valve, engine, nose):
+        """What the law adds to the cam's results: ``(dict, list of Check)`` (SI views)."""
+        return {}, []
+
+    def timing(self, valve, record):
+        """Opening advance and closing lag [crank rad] of the main lift for the recommended ranges (SI view; a
+        measured table's from its ``record``); None where not defined."""
+        return valve.opens, valve.closes
+
+
+def _tappet_lift(valve):
+    return valve.max_lift / valve.rocker_ratio
+
+
+def _ramp(cam):
+    return dict(ramp_kind=cam.ramp_type, ramp_fraction=cam.ramp_acceleration_fraction)
+
+
+def _clearance_problem(at, valve, what="the cam's ramp takes up the clearance"):
+    return [f"{at}.clearance_mm = {valve.clearance_mm:g}: {what}, allowed [0.01, 5] mm"] \
+        if valve.clearance_mm <= 0.0 else []
+
+
+class _RampKeys(_Model):
+    ramp_type: Literal["cosine", "constant_velocity", "constant_acceleration"] = "cosine"
+    ramp_acceleration_fraction: _bounded(0.01, 1.0, low_open=False) = 0.5
+
+
+class _ClosingSide(_Model):
+    """Laws that may give the closing flank its own angles and ramp: ``[valves.NAME.cam.closing]``."""
+
+    closing: Optional[dict] = None
+    """[valves.NAME.cam.closing]: the closing flank's own keys (same law; angles and ramp may differ)."""
+
+    def closing_cam(self):
+        """The closing flank as a cam of the same law (the keys not given are the opening flank's)."""
+        if self.closing is None:
+            return None
+        data = {**self.model_dump(exclude={"closing"}), **self.closing, "law": self.law}
+        return type(self).model_validate(data)
+
+    def flank_angle_deg(self):
+        """Main angle of one flank [cam deg]: the sum of its segment angles."""
+        raise NotImplementedError
+
+    def build(self, valve, engine):
+        if self.closing is None:
+            return self.build_flank(valve, engine)
+        from .si import si
+
+        closing = self.closing_cam()
+        opening = self.model_copy(update={"closing": None})
+        return AsymmetricLaw(opening.build_flank(_with_cam(valve, si(opening)), engine),
+                             closing.build_flank(_with_cam(valve, si(closing)), engine))
+
+    def problems(self, at, valve, engine):
+        if self.closing is None:
+            return self.flank_problems(at, valve, engine)
+        from pydantic import ValidationError
+
+        from .messages import message
+
+        out = _clearance_problem(at, valve)
+        try:
+            closing = self.closing_cam()
+        except ValidationError as exc:
+            return out + [f"{at}.cam.closing: {message(err)}" for err in exc.errors()]
+        total = self.flank_angle_deg() + closing.flank_angle_deg()
+        event = 2.0 * main_half_angle_deg(valve, engine.strokes)
+        if abs(total - event) > 1e-6:
+            out.append(f"{at}.cam: the opening and closing flanks add up to {total:g} cam deg; they must equal the main "
+                       f"event (opens_deg + 180 + closes_deg)/2 = {event:g} cam deg")
+        return out + self.asymmetric_problems(at, closing)
+
+    def asymmetric_problems(self, at, closing):
+        return []
+
+    def nose_crank(self, valve, law):
+        if self.closing is None:
+            return symmetric_nose(valve)
+        # the main lift starts where the specification says, the nose follows it
+        start = -valve.opens if valve.kind == "intake" else -np.pi - valve.opens
+        return start + 2.0 * law.main_half_angle
+
+
+def _with_cam(valve, cam):
+    """The valve's SI view with another cam."""
+    from dataclasses import replace
+
+    return replace(valve, cam=cam)
+
+
+class _SegmentAngles(_ClosingSide):
+    """Kurz and constant-acceleration cams: Phi1 + Phi2 + Phi3 = phi_p0, Phi3 may be left to the remainder."""
+
+    def third_angle_deg(self, valve, strokes):
+        """Phi3 [cam deg]: given, or the remainder phi_p0 - Phi1 - Phi2 (seed 000, eq. 2.2)."""
+        if self.phi3_deg is not None:
+            return self.phi3_deg
+        return main_half_angle_deg(valve, strokes) - self.phi1_deg - self.phi2_deg
+
+    def flank_angle_deg(self):
+        return self.phi1_deg + self.phi2_deg + (self.phi3_deg or 0.0)
+
+    def _phi3(self, valve, engine):
+        """Phi3 [rad]: given, or the remainder of the half angle (SI view)."""
+        cam = valve.cam
+        return cam.phi3 if cam.phi3 is not None else main_half_angle(valve, engine.strokes) - cam.phi1 - cam.phi2
+
+    def flank_problems(self, at, valve, engine):
+        out = _clearance_problem(at, valve)
+        half = main_half_angle_deg(valve, engine.strokes)
+        phi3 = self.third_angle_deg(valve, engine.strokes)
+        total = self.phi1_deg + self.phi2_deg + phi3
+        empty = phi3 < 0.0 or (self.law == "kurz" and phi3 == 0.0)
+        if self.phi3_deg is None and empty:
+            out.append(f"{at}.cam: phi1_deg + phi2_deg = {self.phi1_deg + self.phi2_deg:g} leaves no room for phi3 "
+                       f"in the half-angle phi_p0 = {half:g} cam deg; allowed phi1_deg + phi2_deg < {half:g}")
+        elif abs(total - half) > 1e-6:
+            out.append(f"{at}.cam: phi1_deg + phi2_deg + phi3_deg = {total:g} cam deg must equal the half-angle "
+                       f"phi_p0 = (opens_deg + 180 + closes_deg)/2 crank deg = {half:g} cam deg (seed 000, eq. 2.2)")
+        return out
+
+
+@register
+class KurzCam(_SegmentAngles, _CamBase, _RampKeys):
+    """[valves.NAME.cam] with law = "kurz" (seed 000, work 2)."""
+
+    law: Literal["kurz"]
+    ramp_end_velocity_mm_per_deg: RAMP_VELOCITY
+    phi1_deg: SEGMENT_ANGLE
+    phi2_deg: SEGMENT_ANGLE
+    phi3_deg: Optional[SEGMENT_ANGLE] = None
+    shape_factor: _bounded(0.05, 1.0, low_open=False, high_open=True) = 0.625
+
+    def build_flank(self, valve, engine):
+        c = valve.cam
+        return KurzLaw(_tappet_lift(valve), valve.clearance, c.ramp_end_velocity, c.phi1, c.phi2,
+                       self._phi3(valve, engine), c.shape_factor, **_ramp(c))
+
+    def asymmetric_problems(self, at, closing):
+        if self.phi3_deg is None or closing.phi3_deg is None:
+            return [f"{at}.cam: an asymmetric Kurz cam needs phi3_deg on both flanks"]
+        return []
+
+    def records(self, law, valve, engine, nose):
+        """The appendix formulas of seed 000 (2.35)-(2.39) beside the exact extremes, and the residuals of the
+        junction conditions (2.10)-(2.20), for a symmetric cam."""
+        if self.closing is not None:
+            return {}, []
+        sf = law.seed_formulas(valve.cam.base_radius, engine.rated_speed / 2.0)
+        return {"seed_formulas": {"max_velocity_m_s": sf["max_velocity"], "max_acceleration_m_s2": sf["max_acceleration"],
+                                  "min_acceleration_m_s2": sf["min_acceleration"], "rho_min_mm": sf["rho_min"] / MM,
+                                  "rho_max_mm": sf["rho_max"] / MM},
+                "residuals": law.residuals()}, []
+
+
+@register
+class PolydyneCam(_CamBase, _RampKeys):
+    """[valves.NAME.cam] with law = "polydyne" (seed 000, work 3)."""
+
+    law: Literal["polydyne"]
+    p: _bounded(3.0, 200.0, low_open=False)
+    q: Optional[_bounded(3.0, 400.0)] = None
+    r: Optional[_bounded(3.0, 600.0)] = None
+    s: Optional[_bounded(3.0, 800.0)] = None
+    ramp: bool = False
+    ramp_end_velocity_mm_per_deg: Optional[RAMP_VELOCITY] = None
+
+    @model_validator(mode="after")
+    def _exponents_and_ramp(self):
+        p = self.p
+        q = self.q if self.q is not None else 2 * p - 2
+        r = self.r if self.r is not None else 3 * p - 4
+        s = self.s if self.s is not None else 4 * p - 6
+        if not p < q < r < s:
+            raise ValueError(f"exponents p, q, r, s = {p:g}, {q:g}, {r:g}, {s:g} must increase strictly "
+                             "(3 <= p < q < r < s)")
+        if self.ramp and self.ramp_end_velocity_mm_per_deg is None:
+            raise ValueError("ramp = true needs ramp_end_velocity_mm_per_deg (allowed [0.001, 1] mm/deg)")
+        return self
+
+    def law_of(self, cam, lift, half, r0, **ramp):
+        return PolydyneLaw(lift, half, cam.p, cam.q, cam.r, cam.s, **ramp)
+
+    def build(self, valve, engine):
+        return _rampless_or_ramped(self, valve, engine)
+
+    def problems(self, at, valve, engine):
+        return _clearance_problem(at, valve, "a ramp needs a clearance to take up") if self.ramp else []
+
+
+def _rampless_or_ramped(model, valve, engine):
+    """Polydyne, polynomial and arc cams: joined to ramps that take up the clearance, or without a ramp lifting
+    the valve lift plus the clearance from a heel circle r0 - h0 and taking the clearance up on the flanks
+    (:class:`~valvetrain.laws.takeup.ClearanceTakeUp`), so that with any law the valve reaches ``max_lift_mm`` and
+    starts to move at radius r0."""
+    cam, lift, h0 = valve.cam, _tappet_lift(valve), valve.clearance
+    half, r0 = main_half_angle(valve, engine.strokes), cam.base_radius
+    if getattr(cam, "ramp", False):
+        return model.law_of(cam, lift, half, r0, ramp_height=h0, ramp_velocity=cam.ramp_end_velocity, **_ramp(cam))
+    if h0 == 0.0:
+        return model.law_of(cam, lift, half, r0)
+    return ClearanceTakeUp(model.law_of(cam, lift + h0, half, r0 - h0), h0)
+
+
+@register
+class PolynomialCam(_CamBase, _RampKeys):
+    """[valves.NAME.cam] with law = "polynomial": any exponent set (seed 002 section 2.6; spec section 7)."""
+
+    law: Literal["polynomial"]
+    exponents: Annotated[list[_bounded(2.0, 1000.0, low_open=False)], Field(min_length=2, max_length=20)]
+    ramp: bool = False
+    ramp_end_velocity_mm_per_deg: Optional[RAMP_VELOCITY] = None
+
+    @model_validator(mode="after")
+    def _exponents_and_ramp(self):
+        k = self.exponents
+        if any(b <= a for a, b in zip(k, k[1:], strict=False)) or any(e < 3 and e != 2 for e in k):
+            raise ValueError(f"exponents = {k}: allowed an increasing list, each 2 or >= 3 (below 3 the jerk is "
+                             "infinite at the nose)")
+        if self.ramp and self.ramp_end_velocity_mm_per_deg is None:
+            raise ValueError("ramp = true needs ramp_end_velocity_mm_per_deg (allowed [0.001, 1] mm/deg)")
+        return self
+
+    def law_of(self, cam, lift, half, r0, **ramp):
+        return PolynomialLaw(lift, half, cam.exponents, **ramp)
+
+    def build(self, valve, engine):
+        return _rampless_or_ramped(self, valve, engine)
+
+    def problems(self, at, valve, engine):
+        return _clearance_problem(at, valve, "a ramp needs a clearance to take up") if self.ramp else []
+
+
+@register
+class ConstantAccelerationCam(_SegmentAngles, _CamBase, _RampKeys):
+    """[valves.NAME.cam] with law = "constant_acceleration" (seed 002 section 2.4; spec section 5)."""
+
+    law: Literal["constant_acceleration"]
+    ramp_end_velocity_mm_per_deg: RAMP_VELOCITY
+    phi1_deg: SEGMENT_ANGLE
+    phi2_deg: SEGMENT_ANGLE
+    phi3_deg: Optional[_bounded(0.0, 180.0, "deg", low_open=False)] = None
+    kappa: _bounded(0.01, 10.0, low_open=False) = 0.6
+
+    def build_flank(self, valve, engine):
+        c = valve.cam
+        return ConstantAccelerationLaw(_tappet_lift(valve), valve.clearance, c.ramp_end_velocity, c.phi1, c.phi2,
+                                       self._phi3(valve, engine), c.kappa, **_ramp(c))
+
+
+class Segment(_Model):
+    """One acceleration segment of a combined-function cam."""
+
+    shape: Literal["half_sine", "quarter_sine", "quarter_cosine", "constant", "linear", "parabola_to_nose"]
+    length_deg: SEGMENT_ANGLE
+
+
+class Ratio(_Model):
+    """a(end of segment) = value x a(nose), e.g. Kurz's Z."""
+
+    segment: Annotated[int, Field(ge=1, le=50)]
+    value: _bounded(-100.0, 100.0)
+
+
+@register
+class CombinedCam(_ClosingSide, _CamBase, _RampKeys):
+    """[valves.NAME.cam] with law = "combined": acceleration segments with continuous acceleration (spec section 6)."""
+
+    law: Literal["combined"]
+    ramp_end_velocity_mm_per_deg: RAMP_VELOCITY
+    segments: Annotated[list[Segment], Field(min_length=1, max_length=50)]
+    ratios: list[Ratio] = []
+
+    @model_validator(mode="after")
+    def _ratio_segments_exist(self):
+        bad = [r.segment for r in self.ratios if r.segment > len(self.segments)]
+        if bad:
+            raise ValueError(f"ratios name segments {bad}; allowed 1...{len(self.segments)}")
+        return self
+
+    def flank_angle_deg(self):
+        return sum(seg.length_deg for seg in self.segments)
+
+    def build_flank(self, valve, engine):
+        c = valve.cam
+        return CombinedLaw(_tappet_lift(valve), valve.clearance, c.ramp_end_velocity,
+                           [(seg.shape, seg.length) for seg in c.segments], [(r.segment - 1, r.value) for r in c.ratios],
+                           **_ramp(c))
+
+    def flank_problems(self, at, valve, engine):
+        out = []
+        total, half = self.flank_angle_deg(), main_half_angle_deg(valve, engine.strokes)
+        if abs(total - half) > 1e-6:
+            out.append(f"{at}.cam.segments: the lengths add up to {total:g} cam deg; they must equal the half-angle "
+                       f"phi_p0 = {half:g} cam deg")
+        return out + _clearance_problem(at, valve)
+
+
+@register
+class DynamicCam(_CamBase, _RampKeys):
+    """[valves.NAME.cam] with law = "dynamic": the multi-term dynamic (Dudley-Stoddart polydyne) cam (spec section 8).
+
+    Its ramp ends where the drive force reaches the preload; its design speed defaults to the rated speed and its
+    mass is the reduced mass at the valve without the spring (unless the masses give ``spring_kg``)."""
+
+    law: Literal["dynamic"]
+    exponents: Annotated[list[_bounded(2.0, 1000.0, low_open=False)], Field(min_length=5, max_length=5)] = \
+        [2.0, 10.0, 18.0, 26.0, 34.0]
+    valve_opening_velocity_m_s: _bounded(0.01, 10.0, "m/s", low_open=False)
+    drive_stiffness_N_per_mm: _bounded(10.0, 1e7, "N/mm", low_open=False)
+    spring_rate_N_per_mm: _bounded(0.0, 1e6, "N/mm", low_open=False)
+    spring_preload_N: _bounded(0.0, 1e6, "N", low_open=False)
+    design_speed_rpm: Optional[_bounded(10.0, 30000.0, "rpm", low_open=False)] = None
+
+    def build(self, valve, engine):
+        c = valve.cam
+        omega = (c.design_speed if c.design_speed is not None else engine.rated_speed) / 2.0
+        mass = train_mass(valve, 0.0)[0]
+        return DynamicLaw(valve.max_lift, main_half_angle(valve, engine.strokes), c.exponents,
+                          c.valve_opening_velocity_m_s / omega, c.drive_stiffness, mass, c.spring_rate,
+                          c.spring_preload_N, omega, valve.rocker_ratio, valve.clearance * valve.rocker_ratio,
+                          c.ramp_type, c.ramp_acceleration_fraction)
+
+
+@register
+class HarmonicCam(_CamBase):
+    """[valves.NAME.cam] with law = "harmonic": an N-harmonic cosine series fitted to the law of
+    [valves.NAME.cam.target] (spec section 9); the target inherits base_radius_mm, follower and roller_radius_mm."""
+
+    law: Literal["harmonic"]
+    harmonics: Annotated[int, Field(ge=2, le=400)]
+    junction_order: Annotated[int, Field(ge=0, le=10)] = 1
+    target: "Cam"
+
+    @model_validator(mode="before")
+    @classmethod
+    def _inherit(cls, data):
+        if isinstance(data, dict) and isinstance(data.get("target"), dict):
+            target = dict(data["target"])
+            for key in ("base_radius_mm", "follower", "roller_radius_mm"):
+                if key in data and key not in target:
+                    target[key] = data[key]
+            data = {**data, "target": target}
+        return data
+
+    @model_validator(mode="after")
+    def _target_law(self):
+        if self.target.law == "harmonic":
+            raise ValueError("target.law = \"harmonic\": the target must be another law")
+        if self.harmonics < self.junction_order + 2:
+            raise ValueError(f"harmonics = {self.harmonics} cannot meet junction_order + 2 = {self.junction_order + 2} "
+                             "conditions")
+        return self
+
+    def build(self, valve, engine):
+        target = self.target.build(_with_cam(valve, valve.cam.target), engine)
+        return HarmonicLaw(target, self.harmonics, self.junction_order)
+
+    def problems(self, at, valve, engine):
+        return self.target.problems(at, valve, engine)
+
+    def nose_crank(self, valve, law):
+        return self.target.nose_crank(valve, law)
+
+
+@register
+class ThreeArcCam(_CamBase):
+    """[valves.NAME.cam] with law = "three_arc": convex cam of two arcs (spec section 3); no ramp."""
+
+    law: Literal["three_arc"]
+    nose_radius_mm: Optional[Length(0.5, 500.0, low_open=False)] = None
+    flank_radius_mm: Optional[Length(1.0, 10000.0, low_open=False)] = None
+    flank_angle_deg: Optional[_bounded(0.1, 90.0, "deg", low_open=False, high_open=True)] = None
+
+    @model_validator(mode="after")
+    def _one_parameter(self):
+        given = [k for k in ("nose_radius_mm", "flank_radius_mm", "flank_angle_deg") if getattr(self, k) is not None]
+        if len(given) != 1:
+            raise ValueError(f"give exactly one of nose_radius_mm, flank_radius_mm, flank_angle_deg (got {given or 'none'})")
+        return self
+
+    def law_of(self, cam, lift, half, r0):
+        if cam.nose_radius is not None:
+            return ThreeArcLaw(r0, lift, half, cam.nose_radius)
+        if cam.flank_radius is not None:
+            return ThreeArcLaw.from_flank_radius(r0, lift, half, cam.flank_radius)
+        return ThreeArcLaw.from_flank_angle(r0, lift, half, cam.flank_angle)
+
+    def build(self, valve, engine):
+        return _rampless_or_ramped(self, valve, engine)
+
+
+@register
+class TangentCam(_CamBase):
+    """[valves.NAME.cam] with law = "tangent": straight flanks and a nose arc for a roller follower (spec section 4)."""
+
+    law: Literal["tangent"]
+
+    @model_validator(mode="after")
+    def _roller(self):
+        if self.follower != "roller":
+            raise ValueError("law = \"tangent\" needs follower = \"roller\" (a flat follower on straight flanks is "
+                             "degenerate) and roller_radius_mm")
+        return self
+
+    def law_of(self, cam, lift, half, r0):
+        return TangentLaw(r0, lift, half, cam.roller_radius)
+
+    def build(self, valve, engine):
+        return _rampless_or_ramped(self, valve, engine)
+
+
+@register
+class TableCam(_CamBase):
+    """[valves.NAME.cam] with law = "table": a measured lift table (seed 002 sections 5.1-5.3; spec sections 9-11).
+
+    A table of valve lift is divided by the rocker ratio; a table of tappet lift is the cam's lift with its ramps,
+    and the valve moves once the clearance is taken up.  The table sets the lift and the timing: a ``max_lift_mm``
+    given beside it must agree with it to 1 %, ``opens_deg``/``closes_deg`` are checked against it.  The lobe must
+    open the valve during the valve's own stroke."""
+
+    law: Literal["table"]
+    table_file: str
+    table_angle: Literal["crank", "cam"]
+    table_lift_at: Literal["valve", "tappet"]
+    table_zero: Literal["gas_exchange_tdc", "firing_tdc"] = "gas_exchange_tdc"
+    fit: Literal["auto", "spline", "harmonic"] = "auto"
+    accuracy_mm: _bounded(1e-4, 0.1, "mm", low_open=False) = 0.005
+    max_harmonics: Annotated[int, Field(ge=4, le=400)] = 60
+
+    needs_timing: ClassVar[bool] = False
+    si_extras: ClassVar[tuple] = ("table",)
+
+    def read_extras(self, root):
+        """The table as read, ``(angle_deg, lift_mm)`` arrays (:func:`valvetrain.files.read_lift_table`)."""
+        from ..files import read_lift_table
+
+        return {"table": read_lift_table(self.table_file)}
+
+    def build(self, valve, engine):
+        try:
+            return self._checked_law(valve, engine)
+        except ValueError as exc:
+            raise ValueError(f"{self.table_file}: {exc}") from None
+
+    def _checked_law(self, valve, engine):
+        cam, i_k = valve.cam, valve.rocker_ratio
+        angle_deg, lift_mm = cam.table
+        at_valve = cam.table_lift_at == "valve"
+        clearance = 0.0 if at_valve else valve.clearance
+        least = MIN_VALVE_LIFT_MM / (1.0 if at_valve else i_k) + clearance / MM
+        theta, lift, per_point = lobe_table(angle_deg, lift_mm, cam.table_angle, cam.table_zero, cam.accuracy / MM,
+                                            least)
+        to_tappet = MM / (i_k if at_valve else 1.0)
+        law = TableLaw(theta, lift * to_tappet, cam.fit, cam.accuracy * to_tappet / MM, cam.max_harmonics, clearance,
+                       per_point)
+        table_lift = law.lift_max * i_k
+        if valve.max_lift is not None and abs(valve.max_lift - table_lift) > 0.01 * table_lift:
+            raise ValueError(f"max_lift_mm = {valve.max_lift / MM:g} disagrees with the table's valve lift "
+                             f"{table_lift / MM:.4g} mm; allowed {0.99 * table_lift / MM:.4g}...{1.01 * table_lift / MM:.4g}"
+                             " mm (+-1 %), or leave it out: the table sets the lift")
+        nose = 2.0 * law.centre
+        lo, hi = (0.0, 180.0) if valve.kind == "intake" else (-180.0, 0.0)
+        opens, closes = (rad_to_deg(nose + 2.0 * t) for t in (law.valve_opens, law.valve_closes))
+        if closes <= lo or opens >= hi:
+            raise ValueError(f"the lobe opens the valve from {opens:.4g} to {closes:.4g} crank deg after the "
+                             f"gas-exchange TDC and misses the {valve.kind} stroke, {lo:g}...{hi:g} crank deg; check "
+                             "table_angle and table_zero (a table from the firing TDC needs table_zero = \"firing_tdc\")")
+        return law
+
+    def nose_crank(self, valve, law):
+        return 2.0 * law.centre
+
+    def records(self, law, valve, engine, nose):
+        """The measured-table record of results.json and its timing checks (seed 002, sections 5.1-5.3)."""
+        to_table = 2.0 if self.table_angle == "crank" else 1.0        # table angle units per cam angle
+        at_valve = valve.rocker_ratio if self.table_lift_at == "valve" else 1.0
+        durations = [{"height_mm": h, "duration_deg": _finite(rad_to_deg(law.duration(h * MM / at_valve)) * to_table)}
+                     for h in CHECKING_HEIGHTS_MM]
+        quality = {kind: {"rms_residual_mm": q.rms_residual / MM, "max_residual_mm": q.max_residual / MM,
+                          "jerk_sign_changes": q.jerk_sign_changes}
+                   for kind in ("spline", "harmonic") for q in [law.quality(kind)]}
+        rec = {"max_lift_mm": (law.lift_max + law.ramp_height) * at_valve / MM,
+               "lobe_centre_deg": rad_to_deg(law.centre) * to_table, "durations_deg": durations, "fit": law.fit,
+               "harmonics": law.harmonics, "asymmetry_rms_mm": law.asymmetry_rms * at_valve / MM,
+               "fit_quality": quality, "table_angle": self.table_angle, "table_lift_at": self.table_lift_at,
+               "table_zero": self.table_zero}
+        # the timing the table implies, where the valve lift crosses the first checking height (0.1 mm)
+        rise, fall = law.crossings(law.ramp_height + CHECKING_HEIGHTS_MM[0] * MM / valve.rocker_ratio)
+        opens = -(nose + 2.0 * rise) if valve.kind == "intake" else -np.pi - (nose + 2.0 * rise)
+        closes = (nose + 2.0 * fall) - (np.pi if valve.kind == "intake" else 0.0)
+        rec["opens_deg_at_0.1mm"], rec["closes_deg_at_0.1mm"] = _finite(rad_to_deg(opens)), _finite(rad_to_deg(closes))
+        found = []
+        for key, given, derived in (("opens_deg", valve.opens, opens), ("closes_deg", valve.closes, closes)):
+            if given is not None and np.isfinite(derived):
+                found.append(check(f"{key} against the measured table", given, derived - 2.0 * DEG,
+                                   derived + 2.0 * DEG, unit="crank deg",
+                                   source="the table's timing at 0.1 mm valve lift (+-2 crank deg)"))
+        return {"measured": rec}, found
+
+    def timing(self, valve, record):
+        return tuple(None if a is None else a * DEG for a in (record["measured"]["opens_deg_at_0.1mm"],
+                                                             record["measured"]["closes_deg_at_0.1mm"]))
+
+
+Cam = Annotated[Union[tuple(REGISTRY.values())], Field(discriminator="law")]
+"""The cam section: one of the registered models, chosen by its ``law``."""
+
+LAWS = tuple(REGISTRY)
+"""The ``law`` names of the registry."""
+
+HarmonicCam.model_rebuild()

@@ -1,0 +1,339 @@
+"""The sections of a specification: engine, valves (drive, springs, parts), gas, crank, two-stroke ports, output.
+
+Units are in the key names; :mod:`.si` converts them.  Timing angles are crank degrees, cam segment angles
+camshaft degrees.  A model checks its own keys and the keys that must agree within it; the checks across
+sections are in :mod:`.validate`.
+"""
+
+import math
+import re
+from typing import Annotated, ClassVar, Literal, Optional
+
+from pydantic import Field, field_validator, model_validator
+
+from .cams import Cam, layout
+from .fields import Length, Pair, _bounded, _Model, _zero_or
+from .messages import shown
+
+
+class Engine(_Model):
+    """[engine]: the engine the valves belong to."""
+
+    name: str = "engine"
+    bore_mm: Length(5.0, 2000.0, low_open=False)
+    stroke_mm: Length(5.0, 4000.0, low_open=False)
+    rated_speed_rpm: _bounded(10.0, 30000.0, "rpm", low_open=False)
+    cylinders: Annotated[int, Field(ge=1, le=64)]
+    strokes: Literal[2, 4]
+    type: Literal["si", "si_injected", "diesel"] = "si"
+    chamber: Literal["side_valve", "overhead", "prechamber_diesel", "direct_injection_diesel", "wedge",
+                     "hemispherical"] = "overhead"
+    rod_length_mm: Optional[Length(5.0, 10000.0, low_open=False)] = None
+    layout: Literal["inline", "v"] = "inline"
+    bank_angle_deg: _bounded(1.0, 180.0, "deg", low_open=False) = 90.0
+    firing_order: Optional[list[int]] = None
+    crank_throws_deg: Optional[list[_bounded(-720.0, 720.0, "deg", low_open=False)]] = None
+    banks: Optional[list[Literal[0, 1]]] = None
+    firing_angles_deg: Optional[list[_bounded(0.0, 720.0, "deg", low_open=False, high_open=True)]] = None
+
+    @model_validator(mode="after")
+    def _engine_consistency(self):
+        problems = []
+        if self.rod_length_mm is not None and self.rod_length_mm <= self.stroke_mm / 2.0:
+            problems.append(f"engine.rod_length_mm = {self.rod_length_mm:g} must exceed the crank radius "
+                            f"stroke_mm/2 = {self.stroke_mm / 2.0:g} mm")
+        n = self.cylinders
+        if self.firing_order is not None and sorted(self.firing_order) != list(range(1, n + 1)):
+            problems.append(f"engine.firing_order = {shown(self.firing_order)}: must list each cylinder 1...{n} once")
+        for key in ("crank_throws_deg", "banks", "firing_angles_deg"):
+            value = getattr(self, key)
+            if value is not None and len(value) != n:
+                problems.append(f"engine.{key} has {len(value)} entries: one per cylinder ({n}) is needed")
+        if self.firing_angles_deg is not None and len(self.firing_angles_deg) == n:
+            cycle = 180.0 * self.strokes
+            if self.firing_angles_deg[0] != 0.0 or not all(0.0 <= a < cycle for a in self.firing_angles_deg):
+                problems.append(f"engine.firing_angles_deg = {self.firing_angles_deg}: cylinder 1 fires at 0 and "
+                                f"every angle lies in [0, {cycle:g}) crank deg")
+        if self.firing_angles_deg is not None and self.crank_throws_deg is not None:
+            problems.append("engine: give firing_angles_deg or crank_throws_deg, not both")
+        if problems:
+            raise ValueError("; ".join(problems))
+        return self
+
+
+class Masses(_Model):
+    """[valves.NAME.drive.masses]: part masses for the reduced mass (seed 000, eq. 5.2)."""
+
+    valve_kg: _bounded(0.001, 50.0, "kg", low_open=False)
+    retainer_kg: _bounded(0.0, 20.0, low_open=False) = 0.0
+    cotters_kg: _bounded(0.0, 5.0, low_open=False) = 0.0
+    spring_kg: Optional[_bounded(0.001, 20.0, "kg", low_open=False)] = None
+    pushrod_kg: _bounded(0.0, 20.0, low_open=False) = 0.0
+    tappet_kg: _bounded(0.0, 20.0, low_open=False) = 0.0
+    rocker_inertia_kg_mm2: _bounded(0.0, 1e7, "kg mm2", low_open=False) = 0.0
+
+
+class Drive(_Model):
+    """[valves.NAME.drive]: drive layout, masses and spring reserve (seed 000, works 5 and 7)."""
+
+    layout: Optional[Literal["direct", "rocker", "pushrod"]] = None
+    spring_reserve: _bounded(1.0, 5.0) = 1.8
+    stiffness_N_per_mm: Optional[_bounded(10.0, 1e7, "N/mm", low_open=False)] = None
+    specific_mass_kg_m2: Optional[_bounded(10.0, 5000.0, "kg/m2", low_open=False)] = None
+    valve_arm_mm: Optional[Length(1.0, 1000.0, low_open=False)] = None
+    masses: Optional[Masses] = None
+
+    @model_validator(mode="after")
+    def _one_mass_model(self):
+        if self.masses is not None and self.specific_mass_kg_m2 is not None:
+            raise ValueError("give either specific_mass_kg_m2 or a [masses] table, not both")
+        if self.masses is not None and self.masses.rocker_inertia_kg_mm2 > 0 and self.valve_arm_mm is None:
+            raise ValueError("masses.rocker_inertia_kg_mm2 needs valve_arm_mm (the valve-side rocker arm)")
+        return self
+
+
+class Spring(_Model):
+    """[valves.NAME.spring]: spring count, material and design limits (seed 000, works 5-6)."""
+
+    count: Literal[1, 2] = 1
+    inner_share: _bounded(0.05, 0.95, low_open=False) = 0.4
+    material: str = "60S2A"
+    shear_modulus_MPa: _bounded(1e3, 3e5, "MPa") = 8.0e4
+    density_kg_m3: _bounded(100.0, 20000.0, "kg/m3") = 7850.0
+    allowable_stress_MPa: _bounded(50.0, 3000.0, "MPa", low_open=False) = 500.0
+    endurance_limit_MPa: _bounded(50.0, 3000.0, "MPa", low_open=False) = 370.0
+    mean_stress_factor: _bounded(0.0, 1.0, low_open=False) = 0.2
+    min_safety_factor: _bounded(0.1, 10.0, low_open=False) = 1.3
+    min_resonance_ratio: _zero_or(1.0, 100.0, zero="the check switched off") = 10.0
+    coil_gap_factor: _bounded(0.01, 1.0, low_open=False) = 0.12
+    mean_diameter_ratio: Pair(0.0, 5.0) = (0.7, 0.9)
+    deflection_ratio_range: Pair(1.0, 20.0) = (1.6, 3.2)
+    min_frequency_difference: _bounded(0.0, 1.0, low_open=False) = 0.1
+    radial_gap_mm: Length(0.0, 20.0, low_open=False) = 1.0
+
+    @model_validator(mode="after")
+    def _ordered_range(self):
+        for key, default in (("mean_diameter_ratio", "[0.7, 0.9]"), ("deflection_ratio_range", "[1.6, 3.2]")):
+            low, high = getattr(self, key)
+            if low >= high:
+                raise ValueError(f"{key} = {[low, high]} must be [low, high] with low < high (seed 000: {default})")
+        return self
+
+
+class Parts(_Model):
+    """[valves.NAME.parts]: dimensions of the loaded parts (seed 000, work 7); a check runs when its keys are given."""
+
+    contact_modulus_MPa: _bounded(1e3, 1e6, "MPa") = 2.1e5
+    head_diameter_mm: Optional[Length(2.0, 1000.0, low_open=False)] = None
+    cam_width_mm: Optional[Length(1.0, 200.0, low_open=False)] = None
+    camshaft_diameter_mm: Optional[Length(2.0, 500.0, low_open=False)] = None
+    camshaft_bore_mm: Length(0.0, 500.0, low_open=False) = 0.0
+    camshaft_span_mm: Optional[Length(5.0, 2000.0, low_open=False)] = None
+    cam_to_bearing_mm: Optional[Length(0.5, 2000.0, low_open=False)] = None
+    camshaft_modulus_MPa: _bounded(1e3, 1e6, "MPa") = 2.1e5
+    camshaft_deflection_coefficient: _bounded(0.01, 100.0, low_open=False) = 64.0 / (3.0 * math.pi)
+    tappet_diameter_mm: Optional[Length(2.0, 500.0, low_open=False)] = None
+    tappet_guide_length_mm: Optional[Length(1.0, 500.0, low_open=False)] = None
+    pushrod_length_mm: Optional[Length(5.0, 2000.0, low_open=False)] = None
+    pushrod_diameter_mm: Optional[Length(1.0, 100.0, low_open=False)] = None
+    pushrod_bore_mm: Length(0.0, 100.0, low_open=False) = 0.0
+    pushrod_modulus_MPa: _bounded(1e3, 1e6, "MPa") = 2.1e5
+    ball_radius_mm: Optional[Length(0.5, 100.0, low_open=False)] = None
+    socket_radius_mm: Optional[Length(0.5, 100.0, low_open=False)] = None
+    pushrod_head_area_mm2: Optional[_bounded(0.1, 1e5, "mm2", low_open=False)] = None
+    rocker_pad_width_mm: Optional[Length(0.5, 100.0, low_open=False)] = None
+    rocker_pad_radius_mm: Optional[Length(0.5, 1000.0, low_open=False)] = None
+    rocker_shaft_span_mm: Optional[Length(1.0, 1000.0, low_open=False)] = None
+    rocker_shaft_diameter_mm: Optional[Length(1.0, 200.0, low_open=False)] = None
+    rocker_shaft_bore_mm: Length(0.0, 200.0, low_open=False) = 0.0
+    rocker_width_mm: Optional[Length(0.5, 200.0, low_open=False)] = None
+
+    @model_validator(mode="after")
+    def _consistent(self):
+        problems = []
+        if self.camshaft_span_mm is not None and self.cam_to_bearing_mm is not None \
+                and self.cam_to_bearing_mm >= self.camshaft_span_mm:
+            problems.append(f"cam_to_bearing_mm = {self.cam_to_bearing_mm:g} must be smaller than camshaft_span_mm = "
+                            f"{self.camshaft_span_mm:g}")
+        for outer, inner in (("camshaft_diameter_mm", "camshaft_bore_mm"), ("pushrod_diameter_mm", "pushrod_bore_mm"),
+                             ("rocker_shaft_diameter_mm", "rocker_shaft_bore_mm")):
+            o, i = getattr(self, outer), getattr(self, inner)
+            if o is not None and i >= o:
+                problems.append(f"{inner} = {i:g} must be smaller than {outer} = {o:g}")
+        if self.ball_radius_mm is not None and self.socket_radius_mm is not None \
+                and self.socket_radius_mm <= self.ball_radius_mm:
+            problems.append(f"socket_radius_mm = {self.socket_radius_mm:g} must exceed ball_radius_mm = "
+                            f"{self.ball_radius_mm:g}")
+        if problems:
+            raise ValueError("; ".join(problems))
+        return self
+
+
+class Valve(_Model):
+    """[valves.NAME]: one valve (or a set of same-name valves) of a cylinder."""
+
+    kind: Literal["intake", "exhaust"]
+    count: Annotated[int, Field(ge=1, le=8)] = 1
+    throat_diameter_mm: Length(2.0, 1000.0, low_open=False)
+    seat_angle_deg: _bounded(0.0, 75.0, "deg", low_open=False)
+    max_lift_mm: Optional[Length(0.3, 500.0, low_open=False)] = None
+    clearance_mm: _zero_or(0.01, 5.0, "mm", zero="no clearance: a hydraulic lash adjuster")
+    opens_deg: Optional[_bounded(-180.0, 180.0, "deg")] = None
+    closes_deg: Optional[_bounded(-180.0, 180.0, "deg")] = None
+    rocker_ratio: _bounded(0.2, 5.0, low_open=False) = 1.0
+    piston_gap_tdc_mm: Optional[Length(-100.0, 500.0)] = None
+    cam: Cam
+    drive: Drive = Drive()
+    spring: Spring = Spring()
+    parts: Parts = Parts()
+
+    @property
+    def layout(self):
+        """Drive layout: as given, else direct for rocker ratio 1 and pushrod otherwise."""
+        return layout(self)
+
+
+class Gas(_Model):
+    """[gas]: absolute pressures for the closed-valve spring check and the cam load (seed 000, works 5, 7)."""
+
+    exhaust_back_pressure_MPa: _bounded(0.001, 10.0, "MPa", low_open=False) = 0.106
+    cylinder_intake_pressure_MPa: _bounded(0.001, 10.0, "MPa", low_open=False) = 0.085
+    intake_port_pressure_MPa: _bounded(0.001, 10.0, "MPa", low_open=False) = 0.1
+    cylinder_exhaust_pressure_MPa: _bounded(0.001, 10.0, "MPa", low_open=False) = 0.115
+    exhaust_opening_pressure_MPa: _bounded(0.001, 50.0, "MPa", low_open=False) = 0.5
+
+
+class Cycle(_Model):
+    """[crank.cycle]: the Wiebe cycle model used when no pressure_file is given."""
+
+    heat_input_J: _bounded(0.01, 1e8, "J", low_open=False)
+    intake_pressure_MPa: _bounded(0.001, 10.0, "MPa", low_open=False) = 0.09
+    exhaust_pressure_MPa: _bounded(0.001, 10.0, "MPa", low_open=False) = 0.11
+    combustion_start_deg: _bounded(-90.0, 90.0, "deg") = -15.0
+    combustion_duration_deg: _bounded(1.0, 180.0, "deg", low_open=False) = 60.0
+    wiebe_a: _bounded(0.01, 50.0, low_open=False) = 6.908
+    wiebe_m: _bounded(-1.0, 10.0) = 2.0
+    gamma: _bounded(1.0, 2.0) = 1.33
+
+
+class CrankSpec(_Model):
+    """[crank]: the crank mechanism (seed 001).  bore, stroke, rod length and speed default to [engine]."""
+
+    bore_mm: Optional[Length(5.0, 2000.0, low_open=False)] = None
+    stroke_mm: Optional[Length(5.0, 4000.0, low_open=False)] = None
+    rod_length_mm: Optional[Length(5.0, 10000.0, low_open=False)] = None
+    offset_mm: _bounded(-1000.0, 1000.0, "mm", low_open=False) = 0.0
+    speed_rpm: Optional[_bounded(10.0, 30000.0, "rpm", low_open=False)] = None
+    kinematics: Literal["exact", "approximate"] = "exact"
+    pressure_file: Optional[str] = None
+    pv_method: Literal["exact", "brix"] = "exact"
+    compression_ratio: Optional[_bounded(1.0, 60.0)] = None
+    ambient_pressure_MPa: _bounded(0.001, 10.0, "MPa", low_open=False) = 0.1
+    step_deg: _bounded(0.1, 10.0, "deg", low_open=False) = 1.0
+    piston_kg: Optional[_bounded(0.001, 1e4, "kg", low_open=False)] = None
+    rod_kg: Optional[_bounded(0.001, 1e4, "kg", low_open=False)] = None
+    crank_kg: Optional[_bounded(0.0, 1e4, "kg", low_open=False)] = None
+    specific_piston_kg_m2: Optional[_bounded(1.0, 1e4, "kg/m2", low_open=False)] = None
+    specific_rod_kg_m2: Optional[_bounded(1.0, 1e4, "kg/m2", low_open=False)] = None
+    specific_crank_kg_m2: Optional[_bounded(0.0, 1e4, "kg/m2", low_open=False)] = None
+    rod_pin_fraction: _bounded(0.01, 0.99, low_open=False) = 0.275
+    cycle: Optional[Cycle] = None
+
+    si_extras: ClassVar[tuple] = ("indicator",)
+
+    def read_extras(self, root):
+        """The indicator diagram of ``pressure_file`` as read (:func:`valvetrain.files.read_indicator`), or None."""
+        from ..files import read_indicator
+        from .validate import resolve_path
+
+        if self.pressure_file is None:
+            return {"indicator": None}
+        return {"indicator": read_indicator(resolve_path(root, self.pressure_file), root.engine.strokes)}
+
+    @model_validator(mode="after")
+    def _masses_and_pressure(self):
+        problems = []
+        for part in ("piston", "rod", "crank"):
+            given = getattr(self, f"{part}_kg") is not None, getattr(self, f"specific_{part}_kg_m2") is not None
+            if all(given):
+                problems.append(f"give {part}_kg or specific_{part}_kg_m2, not both")
+            elif not any(given):
+                problems.append(f"{part}_kg or specific_{part}_kg_m2 is required (seed 001, eq. 2.6 and Table 2.1)")
+        if self.pressure_file is None and self.cycle is None:
+            problems.append("the cylinder pressure is needed: give pressure_file (crank_deg,pressure_MPa or "
+                            "volume_cm3,pressure_MPa) or a [crank.cycle] table with heat_input_J")
+        if self.cycle is not None and self.compression_ratio is None:
+            problems.append("[crank.cycle] needs compression_ratio")
+        if problems:
+            raise ValueError("; ".join(problems))
+        return self
+
+
+class Port(_Model):
+    """[two_stroke.ports.NAME]: one piston-controlled port (or a group of equal ports: width is their sum)."""
+
+    kind: Literal["exhaust", "transfer", "inlet"]
+    width_mm: Length(0.5, 10000.0, low_open=False)
+    height_mm: Optional[Length(0.1, 3000.0, low_open=False)] = None
+    opens_before_bdc_deg: Optional[_bounded(0.1, 180.0, "deg", low_open=False, high_open=True)] = None
+    lower_edge_mm: Optional[Length(0.0, 5000.0, low_open=False)] = None
+
+    @model_validator(mode="after")
+    def _geometry(self):
+        if self.kind == "inlet":
+            if self.lower_edge_mm is None or self.height_mm is None:
+                raise ValueError("an inlet port needs lower_edge_mm (below the crown at TDC) and height_mm "
+                                 "(seed 000, eq. 8.4)")
+        elif (self.height_mm is None) == (self.opens_before_bdc_deg is None):
+            raise ValueError("give height_mm or opens_before_bdc_deg (one of them) for an exhaust or transfer port")
+        return self
+
+
+class TwoStroke(_Model):
+    """[two_stroke]: port timing of a piston-ported two-stroke (seed 000, work 8)."""
+
+    speed_rpm: Optional[_bounded(10.0, 30000.0, "rpm", low_open=False)] = None
+    speed_range_rpm: Optional[Pair(10.0, 30000.0, "rpm")] = None
+    kinematics: Literal["exact", "approximate"] = "exact"
+    piston_height_mm: Optional[Length(1.0, 3000.0, low_open=False)] = None
+    step_deg: _bounded(0.05, 10.0, "deg", low_open=False) = 0.5
+    ports: dict[str, Port]
+
+
+class Output(_Model):
+    """[output]: tables and exports."""
+
+    table_step_cam_deg: _bounded(0.05, 10.0, "deg", low_open=False) = 0.5
+    contour_points: Annotated[int, Field(ge=36, le=100000)] = 721
+    export_step_deg: _bounded(0.1, 10.0, "deg", low_open=False) = 1.0
+
+
+_NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_-]{0,31}$")
+
+
+class Spec(_Model):
+    """A whole design specification."""
+
+    engine: Engine
+    valves: dict[str, Valve] = {}
+    gas: Gas = Gas()
+    crank: Optional[CrankSpec] = None
+    two_stroke: Optional[TwoStroke] = None
+    output: Output = Output()
+    source_dir: Optional[str] = Field(default=None, exclude=True)
+    """Folder of the specification file: relative file names (pressure_file) are read from there."""
+
+    @field_validator("valves")
+    @classmethod
+    def _valve_names(cls, valves):
+        bad = [shown(n, 40) for n in valves if not _NAME.match(n) or n in ("crank", "two_stroke")]
+        if bad:
+            raise ValueError(f"valve names {', '.join(bad)}: allowed a letter, then up to 31 letters, digits, '_' and "
+                             "'-' (and not 'crank' or 'two_stroke', the names of the engine's chapters)")
+        return valves
+
+    @model_validator(mode="after")
+    def _something_to_design(self):
+        if not self.valves and self.crank is None and self.two_stroke is None:
+            raise ValueError("nothing to design: give at least one [valves.NAME], [crank] or [two_stroke] section")
+        return self

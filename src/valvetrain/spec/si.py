@@ -1,0 +1,84 @@
+"""The SI view of a specification: the one place where its engineering units become SI.
+
+A specification names the unit of every number in its key (``throat_diameter_mm``,
+``opens_deg``, ``rated_speed_rpm``, ``allowable_stress_MPa``).  :func:`si` turns a section
+into a frozen dataclass whose fields are the same keys without the unit and in SI
+(``throat_diameter`` [m], ``opens`` [rad], ``rated_speed`` [rad/s], ``allowable_stress``
+[Pa]); keys whose unit is already SI (``_kg``, ``_N``, ``_J``, ``_m_s``, ``_kg_m2``) keep
+their names and values.  Nested sections become nested views, lists tuples, so a view is
+immutable and compares (and, without arrays, hashes) by value: stage results can be cached
+by their inputs.  Angles keep their kind: a crank angle stays a crank angle, a camshaft
+angle a camshaft angle (the spec says which in its key documentation).
+"""
+
+from dataclasses import field, make_dataclass
+from functools import cache
+
+import numpy as np
+from pydantic import BaseModel
+
+from ..units import DEG, MM, MPA, rpm_to_rad_s
+
+UNIT_SUFFIXES = (
+    ("_mm_per_deg", MM / DEG), ("_N_per_mm", 1.0 / MM), ("_kg_mm2", MM**2), ("_mm2", MM**2), ("_mm", MM),
+    ("_cam_deg", DEG), ("_deg", DEG), ("_rpm", rpm_to_rad_s(1.0)), ("_MPa", MPA),
+)
+"""Key suffixes of non-SI units and the SI value of one unit; the first suffix that ends a key applies."""
+
+
+def si_name(key):
+    """The SI field of a key and the factor to SI: ``("throat_diameter", 1e-3)`` for ``throat_diameter_mm``.
+
+    >>> si_name("rated_speed_rpm")[0], si_name("valve_kg")
+    ('rated_speed', ('valve_kg', 1.0))
+    """
+    for suffix, factor in UNIT_SUFFIXES:
+        if key.endswith(suffix):
+            return key[: -len(suffix)], factor
+    return key, 1.0
+
+
+def _convert(value, factor, root):
+    if isinstance(value, BaseModel):
+        return si(value, root)
+    if isinstance(value, dict):
+        return {k: _convert(v, factor, root) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return tuple(_convert(v, factor, root) for v in value)
+    if isinstance(value, np.ndarray):
+        return value * factor
+    if isinstance(value, (int, float)) and not isinstance(value, bool) and factor != 1.0:
+        return value * factor
+    return value
+
+
+@cache
+def _view_class(model):
+    fields = [(si_name(key)[0], object) for key in model.model_fields]
+    fields += [(name, object) for name in getattr(model, "si_extras", ())]
+    fields.append(("section", object, field(default=None, compare=False, repr=False)))
+    return make_dataclass(f"{model.__name__}SI", fields, frozen=True,
+                          namespace={"__doc__": f"SI view of :class:`{model.__module__}.{model.__name__}` (its keys "
+                                                "without the unit, in SI; ``section`` is the section itself)."})
+
+
+def si(section, root=None):
+    """The SI view of a specification section (a pydantic model of :mod:`valvetrain.spec`).
+
+    A section may name data it brings along in ``si_extras`` and provide them with
+    ``read_extras(root)`` (a measured lift table, an indicator diagram: the files are read here,
+    by :mod:`valvetrain.files`, so that the design never reads a file); ``root`` is the whole
+    specification.
+
+    Examples
+    --------
+    >>> from valvetrain.spec import example_spec
+    >>> valve = si(example_spec().valves["intake"])
+    >>> valve.throat_diameter, round(valve.opens, 6), valve.cam.law
+    (0.0368, 0.453786, 'kurz')
+    """
+    values = {si_name(key)[0]: _convert(getattr(section, key), si_name(key)[1], root)
+              for key in type(section).model_fields}
+    if getattr(section, "si_extras", ()):
+        values.update(section.read_extras(root))
+    return _view_class(type(section))(**values, section=section)

@@ -1,0 +1,205 @@
+"""Reading and validating a specification: TOML text, the sections' models, the checks across sections.
+
+Every problem in a file becomes one message naming the key, the value and what is allowed;
+:func:`load_spec` raises :class:`SpecError` carrying them all.  What needs a computation (a cam
+that the angles admit but the law cannot make, a spring that does not fit) is the design's to
+find (:func:`valvetrain.design.run`); ``valvetrain validate`` runs it.
+"""
+
+from importlib.resources import files
+from pathlib import Path
+import tomllib
+
+from pydantic import ValidationError
+
+from ..springs import feasible_mean_diameters
+from ..units import MM
+from .cams import LAWS, main_half_angle_deg
+from .messages import SpecError, message
+from .models import Spec
+
+
+def _valve_problems(name, v, engine):
+    at = f"valves.{name}"
+    missing = [k for k in ("max_lift_mm", "opens_deg", "closes_deg") if getattr(v, k) is None]
+    if missing and v.cam.needs_timing:
+        return [f"{at}.{k}: required key is missing (only a measured table, law = \"table\", sets its own lift "
+                "and timing)" for k in missing]
+    out = []
+    if len({"opens_deg", "closes_deg"} & set(missing)) == 1:
+        given, other = ("opens_deg", "closes_deg") if v.closes_deg is None else ("closes_deg", "opens_deg")
+        return [f"{at}.{given} = {getattr(v, given):g} needs {other} too: the timing is given by both or, for a "
+                "measured table, by neither"]
+    if v.throat_diameter_mm >= engine.bore_mm:
+        out.append(f"{at}.throat_diameter_mm = {v.throat_diameter_mm:g} must be smaller than engine.bore_mm = "
+                   f"{engine.bore_mm:g}")
+    if v.cam.base_radius_mm <= v.clearance_mm:
+        out.append(f"{at}.cam.base_radius_mm = {v.cam.base_radius_mm:g} must exceed clearance_mm = {v.clearance_mm:g}")
+    ratio = v.spring.mean_diameter_ratio
+    low, high = (x / MM for x in feasible_mean_diameters())
+    if ratio[1] * v.throat_diameter_mm < low or ratio[0] * v.throat_diameter_mm > high:
+        out.append(f"{at}.spring.mean_diameter_ratio = {list(ratio)} with throat_diameter_mm = "
+                   f"{v.throat_diameter_mm:g} gives spring mean diameters {ratio[0] * v.throat_diameter_mm:g}..."
+                   f"{ratio[1] * v.throat_diameter_mm:g} mm; the wire series makes {low:g}...{high:g} mm "
+                   "(seed 000, work 6)")
+    if v.drive.layout == "direct" and v.rocker_ratio != 1.0:
+        out.append(f"{at}.drive.layout = \"direct\" needs rocker_ratio = 1 (got {v.rocker_ratio:g})")
+    if v.piston_gap_tdc_mm is not None and engine.rod_length_mm is None:
+        out.append(f"{at}.piston_gap_tdc_mm needs engine.rod_length_mm for the piston kinematics")
+    if not {"opens_deg", "closes_deg"} & set(missing):
+        half = main_half_angle_deg(v, engine.strokes)
+        if not 0.0 < half < 180.0:
+            out.append(f"{at}.opens_deg + closes_deg = {v.opens_deg + v.closes_deg:g}: the valve event "
+                       f"opens_deg + 180 + closes_deg must lie in (0, 360) crank deg")
+        out += v.cam.problems(at, v, engine)
+    return out
+
+
+def _same(spec, key_crank, key_engine):
+    """A [crank] value that defaults to [engine]'s; a problem message when both are given and differ."""
+    a, b = getattr(spec.crank, key_crank) if spec.crank else None, getattr(spec.engine, key_engine)
+    if a is not None and b is not None and abs(a - b) > 1e-9 * max(abs(a), abs(b)):
+        return a, [f"crank.{key_crank} = {a:g} differs from engine.{key_engine} = {b:g}; give it in one place"]
+    return (a if a is not None else b), []
+
+
+def crank_geometry(spec):
+    """Effective bore, stroke, rod length [mm] and speed [rpm] of the crank mechanism."""
+    return tuple(_same(spec, kc, ke)[0] for kc, ke in (("bore_mm", "bore_mm"), ("stroke_mm", "stroke_mm"),
+                                                      ("rod_length_mm", "rod_length_mm"),
+                                                      ("speed_rpm", "rated_speed_rpm")))
+
+
+def _crank_problems(spec):
+    if spec.crank is None and spec.two_stroke is None:
+        return []
+    out = []
+    for kc, ke in (("bore_mm", "bore_mm"), ("stroke_mm", "stroke_mm"), ("rod_length_mm", "rod_length_mm"),
+                   ("speed_rpm", "rated_speed_rpm")):
+        out += _same(spec, kc, ke)[1]
+    bore, stroke, rod, _ = crank_geometry(spec)
+    if rod is None:
+        out.append("crank.rod_length_mm (or engine.rod_length_mm) is required for the crank mechanism and the "
+                   "two-stroke ports")
+    elif rod <= stroke / 2.0:
+        out.append(f"crank.rod_length_mm = {rod:g} must exceed the crank radius {stroke / 2.0:g} mm")
+    c = spec.crank
+    if c is None:
+        return out
+    if rod is not None and rod > stroke / 2.0 and abs(c.offset_mm) >= rod - stroke / 2.0:
+        out.append(f"crank.offset_mm = {c.offset_mm:g}: allowed |offset| < rod length - crank radius = "
+                   f"{rod - stroke / 2.0:g} mm")
+    cycle = 180.0 * spec.engine.strokes
+    n = cycle / c.step_deg
+    if abs(n - round(n)) > 1e-9:
+        out.append(f"crank.step_deg = {c.step_deg:g} must divide the {cycle:g} deg cycle into whole steps")
+    return out
+
+
+def resolve_path(spec, name):
+    """A file named in the specification, relative to the specification file's folder."""
+    path = Path(name)
+    return path if path.is_absolute() or spec.source_dir is None else Path(spec.source_dir) / path
+
+
+def input_files(spec):
+    """Every file the specification names (each ``..._file`` key: lift tables, indicator diagrams), resolved."""
+    def named(node):
+        if isinstance(node, dict):
+            for key, value in node.items():
+                if key.endswith("_file") and isinstance(value, str):
+                    yield resolve_path(spec, value)
+                else:
+                    yield from named(value)
+        elif isinstance(node, list):
+            for value in node:
+                yield from named(value)
+
+    return sorted(set(named(spec.model_dump())))
+
+
+def _two_stroke_problems(spec):
+    ts = spec.two_stroke
+    if ts is None:
+        return []
+    out = []
+    if spec.engine.strokes != 2:
+        out.append(f"[two_stroke] needs engine.strokes = 2 (got {spec.engine.strokes})")
+    if not ts.ports:
+        out.append("[two_stroke] needs at least one [two_stroke.ports.NAME]")
+    stroke = crank_geometry(spec)[1]
+    for name, port in ts.ports.items():
+        if port.height_mm is not None and port.kind != "inlet" and port.height_mm >= stroke:
+            out.append(f"two_stroke.ports.{name}.height_mm = {port.height_mm:g} must be smaller than the stroke "
+                       f"{stroke:g} mm")
+        if port.kind == "inlet" and ts.piston_height_mm is None:
+            out.append(f"two_stroke.ports.{name}: an inlet port needs two_stroke.piston_height_mm")
+    if ts.speed_range_rpm is not None and ts.speed_range_rpm[0] >= ts.speed_range_rpm[1]:
+        out.append(f"two_stroke.speed_range_rpm = {list(ts.speed_range_rpm)} must be [low, high] with low < high")
+    return out
+
+
+def _resolve_tables(spec):
+    """Make every valve's table_file absolute (relative to the specification file's folder)."""
+    valves = {}
+    for name, v in spec.valves.items():
+        if v.cam.law == "table":
+            cam = v.cam.model_copy(update={"table_file": str(resolve_path(spec, v.cam.table_file))})
+            v = v.model_copy(update={"cam": cam})
+        valves[name] = v
+    return spec.model_copy(update={"valves": valves})
+
+
+def validate(data):
+    """Validate a parsed TOML document; return a :class:`Spec` or raise :class:`SpecError`.
+
+    Field problems (missing keys, wrong types, values outside physical bounds) are
+    reported first; the cross-checks between keys (angles that must add up, a throat
+    smaller than the bore, ...) run once every field is valid.
+    """
+    try:
+        spec = Spec.model_validate(data)
+    except ValidationError as exc:
+        raise SpecError([message(err, LAWS) for err in exc.errors()]) from None
+    spec = _resolve_tables(spec)
+    problems = [p for name, v in spec.valves.items() for p in _valve_problems(name, v, spec.engine)]
+    problems += _crank_problems(spec) + _two_stroke_problems(spec)
+    if spec.engine.strokes != 4 and spec.valves:
+        problems.insert(0, f"engine.strokes = {spec.engine.strokes}: the valve timing (opens_deg/closes_deg before and "
+                           "after TDC/BDC of the gas-exchange strokes) is defined for four-stroke engines; allowed 4 "
+                           "with [valves.NAME] sections")
+    if problems:
+        raise SpecError(problems)
+    return spec
+
+
+def parse_spec(text, source="<string>", source_dir=None):
+    """Parse and validate TOML text; relative file names in it are read from ``source_dir``."""
+    try:
+        data = tomllib.loads(text.removeprefix("\ufeff"))
+    except tomllib.TOMLDecodeError as exc:
+        raise SpecError([f"{source}: not valid TOML: {exc}"]) from None
+    except RecursionError:
+        raise SpecError([f"{source}: arrays or tables nested too deeply to be a specification"]) from None
+    if source_dir is not None and isinstance(data, dict):
+        data["source_dir"] = str(source_dir)
+    return validate(data)
+
+
+def load_spec(path):
+    """Read and validate a specification file."""
+    try:
+        text = Path(path).read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError) as exc:
+        raise SpecError([f"{path}: cannot read the file: {exc}"]) from None
+    return parse_spec(text, str(path), Path(path).resolve().parent)
+
+
+def example_text():
+    """The built-in example specification (the engine of seed 000's appendix), as TOML text."""
+    return files("valvetrain").joinpath("data/example.toml").read_text(encoding="utf-8")
+
+
+def example_spec():
+    """The built-in example, validated."""
+    return parse_spec(example_text(), "built-in example")

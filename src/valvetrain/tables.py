@@ -1,0 +1,135 @@
+"""Tables of a design as named columns in the units engineers read (mm, deg, MPa): the one conversion of the
+stage results for the CSV files, the exports for manufacture and the report."""
+
+import numpy as np
+
+from .units import MM, rad_to_deg
+
+LIFT_COLUMNS = [
+    ("cam_deg", "camshaft angle from the cam nose [deg]"),
+    ("crank_deg", "crank angle from the gas-exchange TDC [deg]"),
+    ("segment", "segment of the lift law"),
+    ("tappet_lift_mm", "tappet (follower) lift including the ramp [mm]"),
+    ("tappet_velocity_m_s", "tappet velocity [m/s]"),
+    ("tappet_acceleration_m_s2", "tappet acceleration [m/s2]"),
+    ("tappet_jerk_m_s3", "tappet jerk [m/s3]"),
+    ("valve_lift_mm", "valve lift [mm]"),
+    ("curtain_area_mm2", "valve curtain area [mm2]"),
+    ("time_area_mm2_s", "running time-area from the start of the event [mm2 s]"),
+    ("rho_mm", "radius of curvature of the cam profile [mm]; empty on a straight flank (infinite radius)"),
+    ("pressure_angle_deg", "pressure angle (roller follower) [deg]"),
+    ("contact_offset_mm", "contact point off the follower axis (flat follower) [mm]"),
+]
+"""Columns of ``tables/NAME_lift.csv`` with their meaning and unit."""
+
+
+def lift_table_columns(table):
+    """The lift table of a valve as ordered columns in the units of :data:`LIFT_COLUMNS`."""
+    return {
+        "cam_deg": rad_to_deg(table.cam_angle),
+        "crank_deg": rad_to_deg(table.crank_angle),
+        "segment": table.segment,
+        "tappet_lift_mm": table.lift / MM,
+        "tappet_velocity_m_s": table.velocity,
+        "tappet_acceleration_m_s2": table.acceleration,
+        "tappet_jerk_m_s3": table.jerk,
+        "valve_lift_mm": table.valve_lift / MM,
+        "curtain_area_mm2": table.curtain_area / MM**2,
+        "time_area_mm2_s": table.time_area / MM**2,
+        "rho_mm": table.rho / MM,
+        "pressure_angle_deg": rad_to_deg(table.pressure_angle),
+        "contact_offset_mm": table.contact_offset / MM,
+    }
+
+
+CRANK_COLUMNS = [
+    ("crank_deg", "crank angle of the cycle (0 = TDC of intake for a four-stroke, firing TDC at 360) [deg]"),
+    ("s_m", "piston displacement [m]"), ("v_m_s", "piston velocity [m/s]"), ("j_m_s2", "piston acceleration [m/s2]"),
+    ("beta_deg", "connecting-rod angle [deg]"), ("p_abs_MPa", "absolute cylinder pressure [MPa]"),
+    ("p_gas_MPa", "gauge gas pressure p_g - p_0 [MPa]"), ("p_j_MPa", "specific inertia force [MPa]"),
+    ("p_MPa", "total specific force on the pin axis [MPa]"), ("p_N_MPa", "normal (side) force [MPa]"),
+    ("p_S_MPa", "rod force [MPa]"), ("p_K_MPa", "radial force on the crank [MPa]"),
+    ("p_T_MPa", "tangential force [MPa]"), ("T_kN", "tangential force [kN]"),
+    ("M_cyl_Nm", "torque of one cylinder [N m]"), ("pin_radial_kN", "crank-pin load, radial (K + rod centrifugal) [kN]"),
+    ("pin_tangential_kN", "crank-pin load, tangential [kN]"),
+]
+"""Columns of ``tables/crank.csv`` (one cylinder over its cycle; sign conventions of seed 001)."""
+
+
+def crank_columns(crank):
+    """The crank table of one cylinder in the units of :data:`CRANK_COLUMNS`."""
+    c = crank.columns
+    mpa = 1e-6
+    return {
+        "crank_deg": rad_to_deg(crank.phi), "s_m": c["s"], "v_m_s": c["v"], "j_m_s2": c["j"],
+        "beta_deg": rad_to_deg(c["beta"]), "p_abs_MPa": c["p_abs"] * mpa, "p_gas_MPa": c["p_gas"] * mpa,
+        "p_j_MPa": c["p_j"] * mpa, "p_MPa": c["p"] * mpa, "p_N_MPa": c["p_N"] * mpa, "p_S_MPa": c["p_S"] * mpa,
+        "p_K_MPa": c["p_K"] * mpa, "p_T_MPa": c["p_T"] * mpa, "T_kN": c["T"] * 1e-3, "M_cyl_Nm": c["torque"],
+        "pin_radial_kN": c["pin_radial"] * 1e-3, "pin_tangential_kN": c["pin_tangential"] * 1e-3,
+    }
+
+
+def engine_torque_columns(crank):
+    """``crank_deg, M_total_Nm`` and one column per cylinder over one cycle."""
+    out = {"crank_deg": rad_to_deg(crank.psi), "M_total_Nm": crank.total_torque}
+    for i, m in enumerate(crank.cylinder_torques, start=1):
+        out[f"M_cyl{i}_Nm"] = m
+    return out
+
+
+def two_stroke_columns(ports):
+    """Port areas against the crank angle from TDC [deg, mm2]."""
+    out = {"crank_deg": rad_to_deg(ports.phi)}
+    out.update({f"{name}_area_mm2": a / MM**2 for name, a in ports.areas.items()})
+    return out
+
+
+def two_stroke_speed_columns(ports):
+    """Time-area of every port against the crank speed [rpm, mm2 s] (Z = K1 K2 / n, seed 000 eq. 8.6)."""
+    out = {"speed_rpm": ports.speeds}
+    out.update({f"{name}_time_area_mm2_s": z / MM**2 for name, z in ports.time_areas.items()})
+    return out
+
+
+def contour_columns(valve):
+    """Cam contour of a valve for manufacture: cam angle, x, y, polar radius and angle [mm, deg]."""
+    x, y = valve.contour / MM
+    return {
+        "cam_deg": rad_to_deg(valve.contour_angle),
+        "x_mm": x,
+        "y_mm": y,
+        "radius_mm": np.hypot(x, y),
+        "polar_angle_deg": rad_to_deg(np.arctan2(x, y)),
+    }
+
+
+def polar_contour_columns(valve, step_deg):
+    """The contour's polar radius at polar angles every ``step_deg`` [deg, mm], for manufacture.
+
+    The polar angle is measured from the nose direction (+y) towards +x; each radius is
+    solved on the analytic contour (:meth:`valvetrain.laws.LiftLaw.polar_radius`), not
+    interpolated, so the table is exact at any step.
+    """
+    targets = np.radians(np.arange(-180.0, 180.0, step_deg))
+    radii = valve.law.polar_radius(targets, valve.heel_radius, valve.follower, valve.roller_radius)
+    return {"polar_angle_deg": np.degrees(targets), "radius_mm": radii / MM}
+
+
+def cartesian_contour_columns(valve, step_deg):
+    """Contour points every ``step_deg`` of camshaft angle [deg, mm] (follower angle from the nose)."""
+    theta = np.radians(np.arange(-180.0, 180.0, step_deg))
+    x, y = valve.law.profile(theta, valve.heel_radius, valve.follower, valve.roller_radius)[0] / MM
+    return {"cam_deg": np.degrees(theta), "x_mm": x, "y_mm": y}
+
+
+def lift_export_columns(valve, step_deg):
+    """Tappet lift every ``step_deg`` cam degrees in the measured-table format ``angle_deg,lift_mm``.
+
+    The angles are camshaft degrees in the engine's cam frame (crank angle from the
+    gas-exchange TDC / 2) and the lift is the cam's, ramps included, so ``law = "table"``
+    with ``table_angle = "cam"`` and ``table_lift_at = "tappet"`` reads the file back to the
+    same valve lift and timing (the ramp takes up the valve's clearance).
+    """
+    law = valve.law
+    theta = np.radians(np.arange(np.ceil(np.degrees(law.start) / step_deg) * step_deg, np.degrees(law.end), step_deg))
+    return {"angle_deg": np.degrees(theta + valve.nose_crank / 2.0), "lift_mm": law.lift(theta) / MM}
