@@ -55,7 +55,8 @@ import warnings  # noqa: E402
 import numpy as np  # noqa: E402
 
 import valvetrain  # noqa: E402
-from valvetrain import export, tables  # noqa: E402
+from valvetrain import export  # noqa: E402
+from valvetrain import tables as columns  # noqa: E402
 from valvetrain.design import run as run_design  # noqa: E402
 from valvetrain.spec import LAWS, SpecError, example_text, load_spec  # noqa: E402
 
@@ -901,17 +902,17 @@ def plausibility(results):
 def _in_memory_columns(results):
     out = {}
     for name, v in results.valves.items():
-        out[f"tables/{name}_lift.csv"] = tables.lift_table_columns(v.table)
-        out[f"contour/{name}.csv"] = tables.contour_columns(v)
+        out[f"tables/{name}_lift.csv"] = columns.lift_table_columns(v.table)
+        out[f"contour/{name}.csv"] = columns.contour_columns(v)
         step = results.spec.output.export_step_deg
-        out[f"contour/{name}_cartesian.csv"] = tables.cartesian_contour_columns(v, step)
-        out[f"contour/{name}_lift.csv"] = tables.lift_export_columns(v, step)
+        out[f"contour/{name}_cartesian.csv"] = columns.cartesian_contour_columns(v, step)
+        out[f"contour/{name}_lift.csv"] = columns.lift_export_columns(v, step)
     if results.crank is not None:
-        out["tables/crank.csv"] = tables.crank_columns(results.crank)
-        out["tables/engine_torque.csv"] = tables.engine_torque_columns(results.crank)
+        out["tables/crank.csv"] = columns.crank_columns(results.crank)
+        out["tables/engine_torque.csv"] = columns.engine_torque_columns(results.crank)
     if results.two_stroke is not None:
-        out["tables/two_stroke_ports.csv"] = tables.two_stroke_columns(results.two_stroke)
-        out["tables/two_stroke_time_area.csv"] = tables.two_stroke_speed_columns(results.two_stroke)
+        out["tables/two_stroke_ports.csv"] = columns.two_stroke_columns(results.two_stroke)
+        out["tables/two_stroke_time_area.csv"] = columns.two_stroke_speed_columns(results.two_stroke)
     return out
 
 
