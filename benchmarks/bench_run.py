@@ -12,7 +12,7 @@ from pathlib import Path
 
 from valvetrain.design import run
 from valvetrain.export import write_outputs
-from valvetrain.spec import example_spec
+from valvetrain.specification import example_spec
 
 REPEATS = 5
 

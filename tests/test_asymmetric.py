@@ -6,7 +6,7 @@ import pytest
 from valvetrain.design import run
 from valvetrain.checks import failed
 from valvetrain.laws import AsymmetricLaw, KurzLaw
-from valvetrain.spec import example_text, parse_spec
+from valvetrain.specification import example_text, parse_spec
 
 W = 0.02e-3 * 180 / np.pi
 

@@ -8,7 +8,7 @@ from click.testing import CliRunner
 import pytest
 
 from valvetrain.cli import main
-from valvetrain.spec import example_text
+from valvetrain.specification import example_text
 
 ARTEFACTS = ["results.json", "report.html", "tables/intake_lift.csv", "contour/intake.csv", "contour/intake.dxf",
              "plots/intake_kinematics.png", "plots/intake_contour.png", "plots/intake_time_area.png",

@@ -9,7 +9,7 @@ import pytest
 from valvetrain.cli import main
 from valvetrain.crank import pressure
 from valvetrain.design import run
-from valvetrain.spec import example_spec, example_text, load_spec
+from valvetrain.specification import example_spec, example_text, load_spec
 
 CRANK_KEYS = ["max_velocity_m_s", "max_acceleration_m_s2", "min_acceleration_m_s2", "mean_torque_Nm",
               "max_torque_Nm", "min_torque_Nm", "nonuniformity"]

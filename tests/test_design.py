@@ -7,7 +7,7 @@ from scipy.integrate import quad
 
 from valvetrain import flow
 from valvetrain.design import run
-from valvetrain.spec import SpecError, example_spec, example_text, parse_spec
+from valvetrain.specification import SpecError, example_spec, example_text, parse_spec
 
 
 def _variant(replacements):
@@ -212,7 +212,7 @@ def test_results_agree_with_independent_computation(opens, closes, f1_share, w, 
 @pytest.mark.parametrize("path", sorted((__import__("pathlib").Path(__file__).parents[1] / "examples").glob("*.toml")),
                          ids=lambda p: p.name)
 def test_shipped_examples_run(path):
-    from valvetrain.spec import load_spec
+    from valvetrain.specification import load_spec
 
     res = run(load_spec(path))
     assert res.valves or res.crank is not None or res.two_stroke is not None

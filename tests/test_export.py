@@ -10,7 +10,7 @@ import pytest
 from valvetrain.design import run
 from valvetrain.export import json_text, write_outputs
 from valvetrain.tables import LIFT_COLUMNS
-from valvetrain.spec import example_spec
+from valvetrain.specification import example_spec
 
 
 @pytest.fixture(scope="module")
@@ -136,7 +136,7 @@ def test_dxf_is_reproducible(tmp_path):
     import subprocess
     import sys
 
-    code = ("import sys; from valvetrain.spec import example_spec; from valvetrain.design import run; "
+    code = ("import sys; from valvetrain.specification import example_spec; from valvetrain.design import run; "
             "from valvetrain.export import write_dxf; write_dxf(sys.argv[1], run(example_spec()).valves['intake'])")
     for seed in ("1", "2"):
         subprocess.run([sys.executable, "-c", code, str(tmp_path / f"{seed}.dxf")], check=True,

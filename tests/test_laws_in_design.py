@@ -8,7 +8,7 @@ import pytest
 
 from valvetrain.cli import main
 from valvetrain.design import run
-from valvetrain.spec import example_text, parse_spec
+from valvetrain.specification import example_text, parse_spec
 
 KURZ_KEYS = '''law = "kurz"                 # "kurz" or "polydyne"'''
 KURZ_BLOCK = ["ramp_end_velocity_mm_per_deg = 0.02\n", "phi1_deg = 27.0", "phi2_deg = 6.0", "phi3_deg = 38.0",

@@ -18,7 +18,7 @@ from valvetrain.files import TableFileError, read_lift_table
 from valvetrain.laws.measured import (TableLaw, harmonic_fit, lobe_table,
                                       symmetry_shift)
 from valvetrain.numerics import level_span
-from valvetrain.spec import load_spec
+from valvetrain.specification import load_spec
 
 from conftest import seed000_law
 
@@ -159,7 +159,7 @@ def test_bad_table_file_exits_2(tmp_path, refused):
 
 
 def test_lift_and_timing_keys_required_for_other_laws(refused):
-    from valvetrain.spec import example_text
+    from valvetrain.specification import example_text
 
     output = refused(example_text().replace("opens_deg = 26.0", "").replace("max_lift_mm = 10.0", ""))
     assert "valves.intake.opens_deg: required key is missing" in output
@@ -466,7 +466,7 @@ def test_the_exported_lift_table_reads_back(tmp_path):
     cam deg from the gas-exchange TDC); read back as law = "table" it gives the example's valve lift (10 mm, not
     10.4: the ramp takes up the clearance) and timing: the nose at 116 crank deg, the valve lift of 0.1 mm at the
     crank angles where the Kurz law reaches it (root finding on the law)."""
-    from valvetrain.spec import example_spec, example_text
+    from valvetrain.specification import example_spec, example_text
 
     out = tmp_path / "design"
     assert CliRunner().invoke(main, ["run", "--out", str(out)]).exit_code == 0

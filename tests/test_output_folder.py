@@ -17,7 +17,7 @@ import pytest
 import valvetrain
 from valvetrain.cli import main
 from valvetrain.outfolder import MARKER, OutFolderError, atomic_folder, check_out, exchange, written_files
-from valvetrain.spec import example_text
+from valvetrain.specification import example_text
 
 EXAMPLES = Path(__file__).parents[1] / "examples"
 SRC = str(Path(valvetrain.__file__).parents[1])

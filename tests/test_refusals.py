@@ -7,7 +7,7 @@ from click.testing import CliRunner
 
 from valvetrain.cli import main
 from valvetrain.crank import pressure
-from valvetrain.spec import example_text
+from valvetrain.specification import example_text
 
 CAM = example_text()[example_text().index("[valves.intake.cam]"):example_text().index("# Drive, springs")]
 
@@ -102,7 +102,7 @@ def test_high_harmonic_and_junction_orders_fit(tmp_path):
     """N = 400, m = 10 made the KKT system singular (a lift of 1.5e10 mm); the null-space solution follows the
     seed 000 appendix Kurz target (10 mm valve lift) within 2 um."""
     from valvetrain.design import run
-    from valvetrain.spec import parse_spec
+    from valvetrain.specification import parse_spec
 
     res = run(parse_spec(_harmonic(400, 10))).to_dict()["valves"]["intake"]
     assert res["flow"]["valve_lift_mm"] == pytest.approx(10.0, rel=1e-9)

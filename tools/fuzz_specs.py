@@ -58,7 +58,7 @@ import valvetrain  # noqa: E402
 from valvetrain import export  # noqa: E402
 from valvetrain import tables as columns  # noqa: E402
 from valvetrain.design import run as run_design  # noqa: E402
-from valvetrain.spec import LAWS, SpecError, example_text, load_spec  # noqa: E402
+from valvetrain.specification import LAWS, SpecError, example_text, load_spec  # noqa: E402
 
 ROOT = Path(__file__).resolve().parent.parent
 EXAMPLES = ROOT / "examples"

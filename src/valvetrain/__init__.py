@@ -6,7 +6,7 @@ Three layers (see DESIGN.md in the project's shared folder):
   :mod:`valvetrain.laws`, :mod:`valvetrain.crank` (pure, vectorised, SI units);
 * objects: the lift laws (:class:`~valvetrain.laws.KurzLaw`,
   :class:`~valvetrain.laws.PolydyneLaw`) and the sampled results;
-* orchestration and edges: :mod:`valvetrain.spec` (validated TOML design
+* orchestration and edges: :mod:`valvetrain.specification` (validated TOML design
   specification), :func:`valvetrain.design.run`, :mod:`valvetrain.export`,
   :mod:`valvetrain.report`, :mod:`valvetrain.cli`.
 """

@@ -12,7 +12,7 @@ import click
 
 from . import __version__
 from .outfolder import OutFolderError, check_out
-from .spec import SpecError, example_spec, example_text, input_files, load_spec
+from .specification import SpecError, example_spec, example_text, input_files, load_spec
 
 OUT_HELP = ("Folder for the results: new, empty, or a previous valvetrain output, which is replaced "
             "atomically; a folder with other files is refused unless --force.")

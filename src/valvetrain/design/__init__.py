@@ -17,7 +17,7 @@ from .. import flow
 from ..checks import check, failed
 from ..crank.pressure import PressureFileError
 from ..files import TableFileError
-from ..spec import SpecError, si
+from ..specification import SpecError, si
 from ..units import MM
 from .crank import CrankResults, crank_stage
 from .twostroke import TwoStrokeResults, two_stroke_stage
@@ -65,7 +65,7 @@ def run(spec, laws=None):
 
     Parameters
     ----------
-    spec : valvetrain.spec.Spec
+    spec : valvetrain.specification.Spec
     laws : dict, optional
         ``valve name -> LiftLaw``: enter those valves' designs with a law of the caller's own.
 

@@ -7,7 +7,7 @@ import numpy as np
 
 from ..checks import check
 from ..crank import dynamics, kinematics, pressure, torque
-from ..spec import SpecError, crank_geometry, si
+from ..specification import SpecError, crank_geometry, si
 from ..units import DEG, MM, MPA, rad_to_deg, rpm_to_rad_s
 
 LAMBDA_RANGE = (0.24, 0.31)

@@ -7,8 +7,8 @@ import numpy as np
 
 from .. import flow, geometry, masses, springs, strength
 from ..checks import check
-from ..spec import si
-from ..spec.cams import train_mass
+from ..specification import si
+from ..specification.cams import train_mass
 from ..units import MM, MPA, rad_to_deg, to_display
 
 

@@ -8,7 +8,7 @@ from scipy.optimize import brentq
 from .. import twostroke
 from ..checks import check
 from ..crank.kinematics import displacement
-from ..spec import crank_geometry
+from ..specification import crank_geometry
 from ..units import DEG, MM, rad_to_deg
 
 

@@ -2,7 +2,7 @@
 (seed 000 works 1-4, seed 002 section 2.1).
 
 Each stage is a function from SI inputs (the valve's and the engine's SI views,
-:func:`valvetrain.spec.si`, and the results of earlier stages) to a typed, frozen result;
+:func:`valvetrain.specification.si`, and the results of earlier stages) to a typed, frozen result;
 :func:`design_valve` composes them with the drive stage and can be entered with a law of the
 caller's own.  Crank angles are measured from the gas-exchange TDC (the TDC that starts the
 intake stroke) in (-360, 360]; camshaft angles from the cam nose.
@@ -19,7 +19,7 @@ from ..crank.kinematics import displacement
 from ..laws import LiftLaw
 from ..laws.base import Extremes
 from ..numerics import extremum
-from ..spec import SpecError
+from ..specification import SpecError
 from ..springs import NoSpringFits
 from ..units import DEG, MM
 from .drive import drive_stage
@@ -184,7 +184,7 @@ def law_stage(valve, engine, law=None):
 
     Parameters
     ----------
-    valve, engine : SI views of the valve and the engine (:func:`valvetrain.spec.si`).
+    valve, engine : SI views of the valve and the engine (:func:`valvetrain.specification.si`).
     law : LiftLaw, optional
         A law of the caller's own instead of the one the cam section builds.
 

@@ -63,7 +63,7 @@ def _view_class(model):
 
 
 def si(section, root=None):
-    """The SI view of a specification section (a pydantic model of :mod:`valvetrain.spec`).
+    """The SI view of a specification section (a pydantic model of :mod:`valvetrain.specification`).
 
     A section may name data it brings along in ``si_extras`` and provide them with
     ``read_extras(root)`` (a measured lift table, an indicator diagram: the files are read here,
@@ -72,7 +72,7 @@ def si(section, root=None):
 
     Examples
     --------
-    >>> from valvetrain.spec import example_spec
+    >>> from valvetrain.specification import example_spec
     >>> valve = si(example_spec().valves["intake"])
     >>> valve.throat_diameter, round(valve.opens, 6), valve.cam.law
     (0.0368, 0.453786, 'kurz')

@@ -7,7 +7,7 @@ parameter rules), and what it adds to the results (:meth:`records`, :meth:`nose_
 :meth:`timing`).  Adding a law means adding its module under :mod:`valvetrain.laws` and its
 model here, decorated with :func:`register`.
 
-``build`` receives the valve's SI view (:func:`valvetrain.spec.si.si`), whose ``cam`` is the
+``build`` receives the valve's SI view (:func:`valvetrain.specification.si.si`), whose ``cam`` is the
 cam's own SI view, and the engine's.  Tappet-side lifts: the valve lift divided by the rocker
 ratio.  Timing angles are crank angles, segment angles camshaft angles.
 """
