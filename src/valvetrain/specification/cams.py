@@ -12,19 +12,23 @@ cam's own SI view, and the engine's.  Tappet-side lifts: the valve lift divided 
 ratio.  Timing angles are crank angles, segment angles camshaft angles.
 """
 
+from dataclasses import replace
 from typing import Annotated, ClassVar, Literal, Optional, Union
 
 import numpy as np
-from pydantic import Field, model_validator
+from pydantic import Field, ValidationError, model_validator
 
 from .. import flow, masses
 from ..checks import check
+from ..files import read_lift_table
 from ..laws import (AsymmetricLaw, CombinedLaw, ConstantAccelerationLaw, DynamicLaw, HarmonicLaw, KurzLaw, PolydyneLaw,
                     PolynomialLaw, TangentLaw, ThreeArcLaw)
 from ..laws.measured import CHECKING_HEIGHTS_MM, MIN_VALVE_LIFT_MM, TableLaw, lobe_table
 from ..laws.takeup import ClearanceTakeUp
 from ..units import DEG, MM, cam_per_crank, rad_to_deg
 from .fields import RAMP_VELOCITY, SEGMENT_ANGLE, Length, _bounded, _Model
+from .messages import message
+from .si import si
 
 REGISTRY = {}
 """``law`` name -> its cam model, in the order of registration."""
@@ -166,8 +170,6 @@ class _ClosingSide(_Model):
     def build(self, valve, engine):
         if self.closing is None:
             return self.build_flank(valve, engine)
-        from .si import si
-
         closing = self.closing_cam()
         opening = self.model_copy(update={"closing": None})
         return AsymmetricLaw(opening.build_flank(_with_cam(valve, si(opening)), engine),
@@ -176,10 +178,6 @@ class _ClosingSide(_Model):
     def problems(self, at, valve, engine):
         if self.closing is None:
             return self.flank_problems(at, valve, engine)
-        from pydantic import ValidationError
-
-        from .messages import message
-
         out = _clearance_problem(at, valve)
         try:
             closing = self.closing_cam()
@@ -205,8 +203,6 @@ class _ClosingSide(_Model):
 
 def _with_cam(valve, cam):
     """The valve's SI view with another cam."""
-    from dataclasses import replace
-
     return replace(valve, cam=cam)
 
 
@@ -555,8 +551,6 @@ class TableCam(_CamBase):
 
     def read_extras(self, root):
         """The table as read, ``(angle_deg, lift_mm)`` arrays (:func:`valvetrain.files.read_lift_table`)."""
-        from ..files import read_lift_table
-
         return {"table": read_lift_table(self.table_file)}
 
     def build(self, valve, engine):

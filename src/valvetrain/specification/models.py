@@ -6,11 +6,13 @@ sections are in :mod:`.validate`.
 """
 
 import math
+from pathlib import Path
 import re
 from typing import Annotated, ClassVar, Literal, Optional
 
 from pydantic import Field, field_validator, model_validator
 
+from ..files import read_indicator
 from .cams import Cam, layout
 from .fields import Length, Pair, _bounded, _Model, _zero_or
 from .messages import shown
@@ -243,9 +245,6 @@ class CrankSpec(_Model):
 
     def read_extras(self, root):
         """The indicator diagram of ``pressure_file`` as read (:func:`valvetrain.files.read_indicator`), or None."""
-        from ..files import read_indicator
-        from .validate import resolve_path
-
         if self.pressure_file is None:
             return {"indicator": None}
         return {"indicator": read_indicator(resolve_path(root, self.pressure_file), root.engine.strokes)}
@@ -337,3 +336,9 @@ class Spec(_Model):
         if not self.valves and self.crank is None and self.two_stroke is None:
             raise ValueError("nothing to design: give at least one [valves.NAME], [crank] or [two_stroke] section")
         return self
+
+
+def resolve_path(spec, name):
+    """A file named in the specification, relative to the specification file's folder."""
+    path = Path(name)
+    return path if path.is_absolute() or spec.source_dir is None else Path(spec.source_dir) / path

@@ -16,7 +16,7 @@ from ..springs import feasible_mean_diameters
 from ..units import MM
 from .cams import LAWS, main_half_angle_deg
 from .messages import SpecError, message
-from .models import Spec
+from .models import Spec, resolve_path
 
 
 def _valve_problems(name, v, engine):
@@ -94,12 +94,6 @@ def _crank_problems(spec):
     if abs(n - round(n)) > 1e-9:
         out.append(f"crank.step_deg = {c.step_deg:g} must divide the {cycle:g} deg cycle into whole steps")
     return out
-
-
-def resolve_path(spec, name):
-    """A file named in the specification, relative to the specification file's folder."""
-    path = Path(name)
-    return path if path.is_absolute() or spec.source_dir is None else Path(spec.source_dir) / path
 
 
 def input_files(spec):
