@@ -262,19 +262,11 @@ def _train_dynamics(v, law, omega, mass, spring_rate):
     """Natural frequency of the one-mass train and the perturbation parameter (seed 002, sections 1 and 3.3).
 
     omega_n = sqrt((c + K) / M) with the drive stiffness c and the spring rate K at the valve;
-    epsilon = M omega^2 / (c + K) (the printed M omega^3 / c is dimensionally wrong, SPEC.md);
-    for an N-harmonic cam the design rule N < alpha_W omega_n / (pi omega) (spec section 9).
+    epsilon = M omega^2 / (c + K) (the printed M omega^3 / c is dimensionally wrong, SPEC.md); and the law's own
+    checks against the train (:meth:`valvetrain.laws.LiftLaw.train_checks`).
     """
-    from ..laws import HarmonicLaw, harmonic_limit
-
     c = v.drive.stiffness_N_per_mm / MM
     omega_n = float(np.sqrt((c + spring_rate) / mass))
     out = {"drive_stiffness_N_per_mm": c * MM, "natural_frequency_Hz": omega_n / (2 * np.pi),
            "epsilon": mass * omega**2 / (c + spring_rate)}
-    found = []
-    if isinstance(law, HarmonicLaw):
-        limit = harmonic_limit(law.alpha, omega_n, omega)
-        out["harmonic_limit"] = limit
-        found.append(check("harmonic order N of the cam", law.harmonics, high=limit,
-                           source="spec/methods-seeds-002-004.md section 9: N < alpha_W omega_n/(pi omega)"))
-    return out, found
+    return out, law.train_checks(omega_n, omega)

@@ -102,6 +102,11 @@ class LiftLaw(ABC):
         """The law's own recommended-range checks, a list of :class:`~valvetrain.checks.Check`, passed or not."""
         return []
 
+    def train_checks(self, natural_frequency, cam_speed):
+        """The law's checks against the elastic train that drives it (natural frequency omega_n and camshaft speed
+        omega [rad/s]), a list of :class:`~valvetrain.checks.Check`."""
+        return []
+
     @property
     def start(self):
         """Camshaft angle where the follower leaves the base circle [rad from the nose]."""

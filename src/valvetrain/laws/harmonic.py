@@ -11,6 +11,7 @@ rules for N and the end conditions are not in the seed (spec open question Q3).
 
 import numpy as np
 
+from ..checks import check
 from ..numerics import level_span
 from .base import LiftLaw, Segment
 
@@ -165,6 +166,12 @@ class HarmonicLaw(LiftLaw):
         c, s = np.cos(arg), np.sin(arg)
         out[:, inside] = [c @ self.a, -s @ (self.a * self.w), -c @ (self.a * self.w**2), s @ (self.a * self.w**3)]
         return out.reshape((4,) + theta.shape)
+
+    def train_checks(self, natural_frequency, cam_speed):
+        """The harmonic order against the train: N < alpha_W omega_n / (pi omega) (:func:`harmonic_limit`)."""
+        return [check("harmonic order N of the cam", self.harmonics,
+                      high=harmonic_limit(self.alpha, natural_frequency, cam_speed),
+                      source="spec/methods-seeds-002-004.md section 9: N < alpha_W omega_n/(pi omega)")]
 
     def coefficients(self):
         """a_0 ... a_N [mm], N, m and the largest deviation from the target [mm]."""

@@ -300,20 +300,20 @@ class PolydyneCam(_CamBase, _RampKeys):
         return PolydyneLaw(lift, half, cam.p, cam.q, cam.r, cam.s, **ramp)
 
     def build(self, valve, engine):
-        return _rampless_or_ramped(self, valve, engine)
+        return _rampless_or_ramped(self, valve, engine, self.ramp)
 
     def problems(self, at, valve, engine):
         return _clearance_problem(at, valve, "a ramp needs a clearance to take up") if self.ramp else []
 
 
-def _rampless_or_ramped(model, valve, engine):
+def _rampless_or_ramped(model, valve, engine, ramped=False):
     """Polydyne, polynomial and arc cams: joined to ramps that take up the clearance, or without a ramp lifting
     the valve lift plus the clearance from a heel circle r0 - h0 and taking the clearance up on the flanks
     (:class:`~valvetrain.laws.takeup.ClearanceTakeUp`), so that with any law the valve reaches ``max_lift_mm`` and
     starts to move at radius r0."""
     cam, lift, h0 = valve.cam, _tappet_lift(valve), valve.clearance
     half, r0 = main_half_angle(valve, engine.strokes), cam.base_radius
-    if getattr(cam, "ramp", False):
+    if ramped:
         return model.law_of(cam, lift, half, r0, ramp_height=h0, ramp_velocity=cam.ramp_end_velocity, **_ramp(cam))
     if h0 == 0.0:
         return model.law_of(cam, lift, half, r0)
@@ -343,7 +343,7 @@ class PolynomialCam(_CamBase, _RampKeys):
         return PolynomialLaw(lift, half, cam.exponents, **ramp)
 
     def build(self, valve, engine):
-        return _rampless_or_ramped(self, valve, engine)
+        return _rampless_or_ramped(self, valve, engine, self.ramp)
 
     def problems(self, at, valve, engine):
         return _clearance_problem(at, valve, "a ramp needs a clearance to take up") if self.ramp else []
