@@ -28,7 +28,7 @@ def test_port_height_inverts_angle():
 
 def test_time_area_closed_form():
     """Z = K1 K2 / n (8.6)-(8.8) equals the integral of the area (8.2) with the lambda/4 kinematics (spec: 6e-9)."""
-    D, S, lam, n = 0.056, 0.060, 0.25, 6000.0
+    D, S, lam, n = 0.056, 0.060, 0.25, 6000.0 * np.pi / 30.0   # omega of 6000 rpm [rad/s]
     for sigma, psi in ((0.27, 0.22), (0.20, 0.26)):
         phi = np.linspace(0, 2 * np.pi, 400001)
         area = twostroke.top_port_area(phi, sigma * S, psi * np.pi * D, S, lam, exact=False)

@@ -3,7 +3,7 @@ stage results for the CSV files, the exports for manufacture and the report."""
 
 import numpy as np
 
-from .units import MM, rad_to_deg
+from .units import MM, rad_to_deg, to_display
 
 LIFT_COLUMNS = [
     ("cam_deg", "camshaft angle from the cam nose [deg]"),
@@ -86,7 +86,7 @@ def two_stroke_columns(ports):
 
 def two_stroke_speed_columns(ports):
     """Time-area of every port against the crank speed [rpm, mm2 s] (Z = K1 K2 / n, seed 000 eq. 8.6)."""
-    out = {"speed_rpm": ports.speeds}
+    out = {"speed_rpm": to_display(ports.speeds, "rpm")}
     out.update({f"{name}_time_area_mm2_s": z / MM**2 for name, z in ports.time_areas.items()})
     return out
 

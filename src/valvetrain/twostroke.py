@@ -2,7 +2,7 @@
 
 Angles: ``phi`` is the crank angle from TDC [rad]; port timings are also given as the
 angle from BDC, since the phases are symmetric about BDC.  Lengths in m, areas in m^2,
-time-area in m^2 s, speeds in min^-1.
+time-area in m^2 s, crank speeds omega in rad/s.
 """
 
 import numpy as np
@@ -108,13 +108,14 @@ def skirt_port_area(phi, lower_edge, height, piston_height, width, stroke, lam, 
     return np.clip(lower_edge - s - piston_height, 0.0, height) * width
 
 
-def time_area_numeric(phi, area, speed_rpm):
-    """Time-area Z = (1/(6 n)) integral of F d(phi in deg) [m^2 s] by the trapezoidal rule (seed 000, eq. 8.5)."""
-    return float(np.trapezoid(area, np.degrees(phi)) / (6.0 * speed_rpm))
+def time_area_numeric(phi, area, speed):
+    """Time-area Z = integral of F dt = (1/omega) integral of F dphi [m^2 s] by the trapezoidal rule, crank speed
+    omega [rad/s] (seed 000, eq. 8.5: (1/(6 n)) integral of F d(phi in deg), n in min^-1)."""
+    return float(np.trapezoid(area, phi) / speed)
 
 
-def time_area_analytic(bore, stroke, sigma, lam, width_share, speed_rpm):
-    """Time-area of a top port in closed form, Z = K1 K2 / n [m^2 s].
+def time_area_analytic(bore, stroke, sigma, lam, width_share, speed):
+    """Time-area of a top port in closed form, Z = K1 K2 / n [m^2 s], at the crank speed omega [rad/s].
 
     Parameters
     ----------
@@ -125,13 +126,13 @@ def time_area_analytic(bore, stroke, sigma, lam, width_share, speed_rpm):
     -----
     :math:`K_1 = 30 D S` (8.7), :math:`K_2 = \\psi[\\varphi(2\\sigma - 1 + \\lambda/4) + \\sin\\varphi
     - \\frac{\\lambda}{8}\\sin2\\varphi]` (8.8) with phi from (8.1).  Exact for the lambda/4
-    kinematics when psi is the width share of the circumference (spec, reading of (8.7)).
+    kinematics when psi is the width share of the circumference (spec, reading of (8.7)).  With n = 30 omega / pi
+    [min^-1], K1 / n = pi D S / omega.
 
     References
     ----------
     seed 000, work 8, eqs. (8.6)-(8.8).
     """
     phi = port_angle_series(sigma, lam)
-    k1 = 30.0 * bore * stroke
     k2 = width_share * (phi * (2.0 * sigma - 1.0 + lam / 4.0) + np.sin(phi) - lam / 8.0 * np.sin(2.0 * phi))
-    return float(k1 * k2 / speed_rpm)
+    return float(np.pi * bore * stroke * k2 / speed)

@@ -98,8 +98,14 @@ def run(spec, laws=None):
         share = sum(v.count * v.flow.throat_area for v in valves.values())
         found.append(check("sum of throat areas / piston area", share / float(flow.circle_area(engine.bore)),
                            *THROAT_AREA_SHARE_RANGE, source="seed 000, work 1"))
-    crank = crank_stage(spec) if spec.crank is not None else None
-    ports = two_stroke_stage(spec) if spec.two_stroke is not None else None
+    crank_view = None
+    if spec.crank is not None:
+        try:
+            crank_view = si(spec.crank, spec)
+        except PressureFileError as exc:
+            raise SpecError([f"crank.pressure_file: {exc}"]) from None
+    crank = crank_stage(crank_view, engine) if crank_view is not None else None
+    ports = two_stroke_stage(si(spec.two_stroke), crank_view, engine) if spec.two_stroke is not None else None
     for stage, tag in ((crank, "crank"), (ports, "two-stroke")):
         if stage is not None:
             found += [c.named(tag) for c in stage.checks]

@@ -7,14 +7,90 @@ import numpy as np
 
 from ..checks import check
 from ..crank import dynamics, kinematics, pressure, torque
-from ..specification import SpecError, crank_geometry, si
-from ..units import DEG, MM, MPA, rad_to_deg, rpm_to_rad_s
+from ..specification import SpecError
+from ..units import MPA
+from .results import quantity, record
 
 LAMBDA_RANGE = (0.24, 0.31)
 """lambda = R / L of automotive and tractor engines (seed 001, eq. 1.1)."""
 
 ROD_PIN_FRACTION_RANGE = (0.2, 0.3)
 """Share of the rod mass at the piston pin (seed 001, eq. 2.7)."""
+
+
+@dataclass(frozen=True)
+class TextbookExtremes:
+    """The manual's closed forms of the piston extremes, for comparison (central mechanism)."""
+
+    max_velocity: float = quantity("max_velocity_m_s", "m/s", "largest piston velocity, eq. (1.7)")
+    max_acceleration: float = quantity("max_acceleration_m_s2", "m/s2", "largest piston acceleration, eq. (1.10)")
+    min_acceleration: float = quantity("min_acceleration_m_s2", "m/s2", "smallest piston acceleration, eq. (1.11)")
+    min_acceleration_angle: float = quantity("min_acceleration_crank_deg", "crank deg", "where it is smallest")
+    source: str = quantity("source", label="source")
+
+
+@dataclass(frozen=True)
+class MassRecord:
+    """The masses of the crank mechanism and their reduction to two points (seed 001, eqs. 2.6-2.10)."""
+
+    piston: float = quantity("piston_kg", "kg", "piston group")
+    rod: float = quantity("rod_kg", "kg", "connecting rod")
+    crank: float = quantity("crank_kg", "kg", "unbalanced crank throw")
+    rod_pin: float = quantity("rod_at_pin_kg", "kg", "rod mass at the piston pin")
+    rod_crank: float = quantity("rod_at_crank_kg", "kg", "rod mass at the crank pin")
+    reciprocating: float = quantity("reciprocating_kg", "kg", "reciprocating mass m_j")
+    rotating: float = quantity("rotating_kg", "kg", "rotating mass m_R")
+
+
+@dataclass(frozen=True)
+class WorkRecord:
+    """Indicated work of the cycle and the balance of torque and work."""
+
+    indicated_work: float = quantity("indicated_work_J", "J", "indicated work of one cycle, closed integral p dV")
+    imep: float = quantity("imep_MPa", "MPa", "indicated mean effective pressure")
+    mean_torque_from_work: float = quantity("mean_torque_from_work_Nm", "N m", "mean torque of the engine from the work")
+    balance: float = quantity("torque_work_balance", label="(mean torque - torque from work) / torque from work")
+
+
+@dataclass(frozen=True)
+class CrankSummary:
+    """The crank chapter's figures (seed 001; spec/crank-kinematics-dynamics.md)."""
+
+    bore: float = quantity("bore_mm", "mm", "bore")
+    stroke: float = quantity("stroke_mm", "mm", "stroke")
+    rod_length: float = quantity("rod_length_mm", "mm", "connecting-rod length")
+    offset: float = quantity("offset_mm", "mm", "piston-pin offset")
+    speed: float = quantity("speed_rpm", "rpm", "crank speed")
+    lam: float = quantity("lambda", label="lambda = R / L")
+    kinematics: str = quantity("kinematics", label="exact or approximate (the manual's series)")
+    max_velocity: float = quantity("max_velocity_m_s", "m/s", "largest piston velocity")
+    max_velocity_angle: float = quantity("max_velocity_crank_deg", "crank deg", "where")
+    max_acceleration: float = quantity("max_acceleration_m_s2", "m/s2", "largest piston acceleration")
+    max_acceleration_angle: float = quantity("max_acceleration_crank_deg", "crank deg", "where")
+    min_acceleration: float = quantity("min_acceleration_m_s2", "m/s2", "smallest piston acceleration")
+    min_acceleration_angle: float = quantity("min_acceleration_crank_deg", "crank deg", "where")
+    textbook: TextbookExtremes = quantity("textbook", label="the manual's closed forms")
+    max_rod_angle: float = quantity("max_rod_angle_deg", "deg", "largest connecting-rod angle")
+    tdc: float = quantity("tdc_crank_deg", "crank deg", "top dead centre (offset mechanism)")
+    bdc: float = quantity("bdc_crank_deg", "crank deg", "bottom dead centre")
+    masses: MassRecord = quantity("masses", label="masses")
+    centrifugal_force: float = quantity("centrifugal_force_N", "N", "centrifugal force of the rotating mass")
+    max_gas_pressure: float = quantity("max_gas_pressure_MPa", "MPa", "peak cylinder pressure")
+    max_gas_pressure_angle: float = quantity("max_gas_pressure_crank_deg", "crank deg", "where")
+    pressure_source: str = quantity("pressure_source", label="where the cylinder pressure comes from")
+    mean_torque: float = quantity("mean_torque_Nm", "N m", "mean engine torque")
+    max_torque: float = quantity("max_torque_Nm", "N m", "largest engine torque")
+    min_torque: float = quantity("min_torque_Nm", "N m", "smallest engine torque")
+    nonuniformity: float = quantity("nonuniformity", label="(M_max - M_min) / M_mean (null: no positive mean)")
+    cylinder_mean_torque: float = quantity("cylinder_mean_torque_Nm", "N m", "mean torque of one cylinder")
+    torque_period: float = quantity("torque_period_deg", "crank deg", "period of the engine torque")
+    even_firing: bool = quantity("even_firing", label="the cylinders fire at equal intervals")
+    firing_angles: tuple = quantity("firing_angles_deg", "crank deg", "firing angles after cylinder 1")
+    firing: str = quantity("firing", label="how the firing angles were found")
+    layout: str = quantity("layout", label="inline or v")
+    cylinders: int = quantity("cylinders", label="cylinders")
+    strokes: int = quantity("strokes", label="strokes per cycle")
+    work: WorkRecord = quantity("work", flatten=True, omit_none=True)
 
 
 @dataclass
@@ -27,9 +103,24 @@ class CrankResults:
     cylinder_torques: np.ndarray    # (i, n) [N m]
     total_torque: np.ndarray        # (n,) [N m]
     firing: np.ndarray              # firing angles after cylinder 1 [rad]
-    summary: dict
+    figures: CrankSummary
     checks: list                    # every valvetrain.checks.Check of the chapter
     pressure_source: str
+
+    @property
+    def summary(self):
+        """The chapter's record in results.json (engineering units)."""
+        return record(self.figures)
+
+
+def crank_geometry(crank, engine):
+    """Bore, stroke, rod length [m] and speed [rad/s] of the crank mechanism: [crank]'s, else [engine]'s (SI
+    views; the specification refuses values given in both that differ)."""
+    def either(a, b):
+        return a if a is not None else b
+
+    return (either(crank.bore, engine.bore), either(crank.stroke, engine.stroke),
+            either(crank.rod_length, engine.rod_length), either(crank.speed, engine.rated_speed))
 
 
 def _masses(c, area, rods_per_pin):
@@ -40,21 +131,19 @@ def _masses(c, area, rods_per_pin):
     return dynamics.reduced_masses(mass("piston"), mass("rod"), mass("crank"), c.rod_pin_fraction, rods_per_pin)
 
 
-def _gas_pressure(spec, phi, bore, radius, lam, k):
-    c = spec.crank
-    strokes = spec.engine.strokes
-    if c.pressure_file is None:
+def _gas_pressure(c, strokes, phi, bore, radius, lam, k):
+    """Cylinder pressure on the grid from the indicator diagram or the Wiebe model, and its description."""
+    if c.indicator is None:
         cy = c.cycle
-        model = pressure.WiebeCycle(
-            c.compression_ratio, cy.heat_input_J, cy.intake_pressure_MPa * MPA, cy.exhaust_pressure_MPa * MPA,
-            cy.combustion_start_deg * DEG, cy.combustion_duration_deg * DEG, cy.wiebe_a, cy.wiebe_m, cy.gamma)
+        model = pressure.WiebeCycle(c.compression_ratio, cy.heat_input_J, cy.intake_pressure, cy.exhaust_pressure,
+                                    cy.combustion_start, cy.combustion_duration, cy.wiebe_a, cy.wiebe_m, cy.gamma)
         source = (f"Wiebe cycle model: compression ratio {c.compression_ratio:g}, heat input {cy.heat_input_J:g} J, "
-                  f"start {cy.combustion_start_deg:g} deg from firing TDC, duration {cy.combustion_duration_deg:g} "
-                  f"deg, a = {cy.wiebe_a:g}, m = {cy.wiebe_m:g}, gamma = {cy.gamma:g}, no wall heat loss, gas "
-                  f"exchange at {cy.intake_pressure_MPa:g}/{cy.exhaust_pressure_MPa:g} MPa with the valves at the "
-                  "dead centres")
+                  f"start {np.degrees(cy.combustion_start):g} deg from firing TDC, duration "
+                  f"{np.degrees(cy.combustion_duration):g} deg, a = {cy.wiebe_a:g}, m = {cy.wiebe_m:g}, gamma = "
+                  f"{cy.gamma:g}, no wall heat loss, gas exchange at {cy.intake_pressure / MPA:g}/"
+                  f"{cy.exhaust_pressure / MPA:g} MPa with the valves at the dead centres")
         return pressure.wiebe_pressure(phi, model, bore, radius, lam, strokes, k), source
-    table = si(c, spec).indicator
+    table = c.indicator
     if table.kind == "angle":
         pressure.check_cycle(table.x, table.pressure, strokes, table.source)
         return pressure.on_grid(table.x, table.pressure, phi, strokes), f"p-phi diagram {table.source}"
@@ -69,87 +158,69 @@ def _gas_pressure(spec, phi, bore, radius, lam, k):
 
 
 def _firing(eng):
-    order = eng.firing_order or list(range(1, eng.cylinders + 1))
-    if eng.firing_angles_deg is not None:
-        return np.asarray(eng.firing_angles_deg) * DEG, "given firing angles"
-    if eng.crank_throws_deg is not None:
+    order = eng.firing_order or tuple(range(1, eng.cylinders + 1))
+    if eng.firing_angles is not None:
+        return np.asarray(eng.firing_angles), "given firing angles"
+    if eng.crank_throws is not None:
         banks = eng.banks or [0] * (eng.cylinders // 2) + [1] * (eng.cylinders - eng.cylinders // 2)
-        axes = [b * eng.bank_angle_deg * DEG if eng.layout == "v" else 0.0 for b in banks]
-        return torque.layout_firing(order, np.asarray(eng.crank_throws_deg) * DEG, axes, eng.strokes), \
+        axes = [b * eng.bank_angle if eng.layout == "v" else 0.0 for b in banks]
+        return torque.layout_firing(list(order), np.asarray(eng.crank_throws), axes, eng.strokes), \
             "from the crank throws and cylinder axes"
-    return torque.even_firing(order, eng.strokes), f"even firing, order {'-'.join(map(str, order))}"
+    return torque.even_firing(list(order), eng.strokes), f"even firing, order {'-'.join(map(str, order))}"
 
 
-def crank_stage(spec):
-    """Run the crank chapter of a specification with a [crank] section; returns :class:`CrankResults`."""
-    c, eng = spec.crank, spec.engine
-    bore_mm, stroke_mm, rod_mm, speed = crank_geometry(spec)
-    bore, radius, rod = bore_mm * MM, stroke_mm * MM / 2.0, rod_mm * MM
-    lam, k = radius / rod, c.offset_mm * MM / radius
-    omega = rpm_to_rad_s(speed)
+def crank_stage(c, eng):
+    """Run the crank chapter: ``c`` and ``eng`` are the SI views of [crank] and [engine]; returns
+    :class:`CrankResults`."""
+    bore, stroke, rod, omega = crank_geometry(c, eng)
+    radius = stroke / 2.0
+    lam, k = radius / rod, c.offset / radius
     exact = c.kinematics == "exact"
     strokes = eng.strokes
-    n = int(round(180.0 * strokes / c.step_deg))
-    phi = np.arange(n) * (c.step_deg * DEG)
+    n = int(round(np.pi * strokes / c.step))
+    phi = np.arange(n) * c.step
     area = np.pi * bore**2 / 4.0
 
     try:
-        p_abs, source = _gas_pressure(spec, phi, bore, radius, lam, k)
+        p_abs, source = _gas_pressure(c, strokes, phi, bore, radius, lam, k)
     except pressure.PressureFileError as exc:
         raise SpecError([f"crank.pressure_file: {exc}"]) from None
     masses = _masses(c, area, 2 if eng.layout == "v" else 1)
-    forces = dynamics.cylinder_dynamics(phi, p_abs, c.ambient_pressure_MPa * MPA, bore, radius, lam, omega, masses,
-                                        k, exact)
-    s = kinematics.displacement(phi, radius, lam, k, exact)
-    v = kinematics.velocity(phi, radius, lam, omega, k, exact)
-    j = kinematics.acceleration(phi, radius, lam, omega, k, exact)
+    forces = dynamics.cylinder_dynamics(phi, p_abs, c.ambient_pressure, bore, radius, lam, omega, masses, k, exact)
     beta = kinematics.rod_angle(phi, lam, k)
-    columns = {"s": s, "v": v, "j": j, "beta": beta, "p_abs": p_abs, **forces}
+    columns = {"s": kinematics.displacement(phi, radius, lam, k, exact),
+               "v": kinematics.velocity(phi, radius, lam, omega, k, exact),
+               "j": kinematics.acceleration(phi, radius, lam, omega, k, exact), "beta": beta, "p_abs": p_abs, **forces}
 
     firing, firing_how = _firing(eng)
     each, total = torque.engine_torque(phi, (phi, forces["torque"]), firing, strokes)
     even = torque.is_even(firing, strokes)
     period = torque.firing_interval(strokes, eng.cylinders) if even else np.pi * strokes
-    in_period = phi < period - 1e-12
-    stats = torque.torque_statistics(total[in_period])
+    stats = torque.torque_statistics(total[phi < period - 1e-12])
 
-    volume = pressure.cylinder_volume(phi, bore, radius, lam, c.compression_ratio, k, exact) \
-        if c.compression_ratio is not None else None
-    work = pressure.indicated_work(phi, p_abs, volume) if volume is not None else None
+    work = None
+    if c.compression_ratio is not None:
+        volume = pressure.cylinder_volume(phi, bore, radius, lam, c.compression_ratio, k, exact)
+        w = pressure.indicated_work(phi, p_abs, volume)
+        from_work = eng.cylinders * w / (np.pi * strokes)
+        work = WorkRecord(w, w / (area * stroke), from_work,
+                          (stats["mean"] - from_work) / from_work if from_work else None)
     ext = kinematics.extremes(radius, lam, omega, k, exact)
     book = kinematics.textbook_extremes(radius, lam, omega)
     tdc, bdc = kinematics.dead_centres(lam, k)
-    summary = {
-        "bore_mm": bore_mm, "stroke_mm": stroke_mm, "rod_length_mm": rod_mm, "offset_mm": c.offset_mm,
-        "speed_rpm": speed, "lambda": lam, "kinematics": c.kinematics,
-        "max_velocity_m_s": ext["v_max"], "max_velocity_crank_deg": rad_to_deg(ext["v_max_angle"]),
-        "max_acceleration_m_s2": ext["j_max"], "max_acceleration_crank_deg": rad_to_deg(ext["j_max_angle"]),
-        "min_acceleration_m_s2": ext["j_min"], "min_acceleration_crank_deg": rad_to_deg(ext["j_min_angle"]),
-        "textbook": {"max_velocity_m_s": book["v_max"], "max_acceleration_m_s2": book["j_max"],
-                     "min_acceleration_m_s2": book["j_min"], "min_acceleration_crank_deg": rad_to_deg(book["j_min_angle"]),
-                     "source": "seed 001, eqs. (1.7), (1.10), (1.11) (central mechanism)"},
-        "max_rod_angle_deg": rad_to_deg(float(np.max(np.abs(beta)))),
-        "tdc_crank_deg": rad_to_deg(tdc), "bdc_crank_deg": rad_to_deg(bdc),
-        "masses": {"piston_kg": masses.piston, "rod_kg": masses.rod, "crank_kg": masses.crank,
-                   "rod_at_pin_kg": masses.rod_pin, "rod_at_crank_kg": masses.rod_crank,
-                   "reciprocating_kg": masses.reciprocating, "rotating_kg": masses.rotating},
-        "centrifugal_force_N": dynamics.centrifugal_force(masses.rotating, radius, omega),
-        "max_gas_pressure_MPa": float(np.max(p_abs)) / MPA,
-        "max_gas_pressure_crank_deg": rad_to_deg(phi[int(np.argmax(p_abs))]),
-        "pressure_source": source,
-        "mean_torque_Nm": stats["mean"], "max_torque_Nm": stats["max"], "min_torque_Nm": stats["min"],
-        "nonuniformity": stats["nonuniformity"],
-        "cylinder_mean_torque_Nm": float(np.mean(forces["torque"])),
-        "torque_period_deg": rad_to_deg(period), "even_firing": even,
-        "firing_angles_deg": [rad_to_deg(a) for a in firing], "firing": firing_how,
-        "layout": eng.layout, "cylinders": eng.cylinders, "strokes": strokes,
-    }
-    if work is not None:
-        from_work = eng.cylinders * work / (np.pi * strokes)
-        summary.update(indicated_work_J=work, imep_MPa=work / (area * 2.0 * radius) / MPA,
-                       mean_torque_from_work_Nm=from_work,
-                       torque_work_balance=(stats["mean"] - from_work) / from_work if from_work else None)
+    figures = CrankSummary(
+        bore, stroke, rod, c.offset, omega, lam, c.kinematics, ext["v_max"], ext["v_max_angle"], ext["j_max"],
+        ext["j_max_angle"], ext["j_min"], ext["j_min_angle"],
+        TextbookExtremes(book["v_max"], book["j_max"], book["j_min"], book["j_min_angle"],
+                         "seed 001, eqs. (1.7), (1.10), (1.11) (central mechanism)"),
+        float(np.max(np.abs(beta))), tdc, bdc,
+        MassRecord(masses.piston, masses.rod, masses.crank, masses.rod_pin, masses.rod_crank, masses.reciprocating,
+                   masses.rotating),
+        dynamics.centrifugal_force(masses.rotating, radius, omega), float(np.max(p_abs)),
+        float(phi[int(np.argmax(p_abs))]), source, stats["mean"], stats["max"], stats["min"], stats["nonuniformity"],
+        float(np.mean(forces["torque"])), period, even, tuple(float(a) for a in firing), firing_how, eng.layout,
+        eng.cylinders, strokes, work)
     found = [check("crank lambda = R/L", lam, *LAMBDA_RANGE, source="seed 001, eq. (1.1)"),
              check("rod mass share at the piston pin", c.rod_pin_fraction, *ROD_PIN_FRACTION_RANGE,
                    source="seed 001, eq. (2.7)")]
-    return CrankResults(phi, columns, phi, each, total, firing, summary, found, source)
+    return CrankResults(phi, columns, phi, each, total, firing, figures, found, source)

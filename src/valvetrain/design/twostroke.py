@@ -8,8 +8,53 @@ from scipy.optimize import brentq
 from .. import twostroke
 from ..checks import check
 from ..crank.kinematics import displacement
-from ..specification import crank_geometry
-from ..units import DEG, MM, rad_to_deg
+from .crank import crank_geometry
+from .results import quantity, record
+
+
+@dataclass(frozen=True)
+class SkirtPort:
+    """An inlet port opened by the piston skirt (seed 000, eq. 8.4)."""
+
+    kind: str = quantity("kind", label="inlet")
+    width: float = quantity("width_mm", "mm", "port width (sum of equal ports)")
+    opens: float = quantity("opens_crank_deg", "crank deg", "opens (before TDC: negative)")
+    closes: float = quantity("closes_crank_deg", "crank deg", "closes after TDC")
+    duration: float = quantity("duration_deg", "crank deg", "open duration")
+    height: float = quantity("height_mm", "mm", "port height")
+    lower_edge: float = quantity("lower_edge_mm", "mm", "lower edge below the crown at TDC")
+    max_area: float = quantity("max_area_mm2", "mm2", "largest open area")
+    time_area: float = quantity("time_area_mm2_s", "mm2 s", "time-area at the speed")
+
+
+@dataclass(frozen=True)
+class TopPort:
+    """An exhaust or transfer port opened by the piston crown (seed 000, eqs. 8.1-8.3, 8.5-8.7)."""
+
+    kind: str = quantity("kind", label="exhaust or transfer")
+    width: float = quantity("width_mm", "mm", "port width (sum of equal ports)")
+    height: float = quantity("height_mm", "mm", "port height")
+    relative_height: float = quantity("relative_height", label="height / stroke, sigma")
+    opens_before_bdc: float = quantity("opens_before_bdc_deg", "crank deg", "opens before BDC")
+    opens: float = quantity("opens_crank_deg", "crank deg", "opens after TDC")
+    closes: float = quantity("closes_crank_deg", "crank deg", "closes after TDC")
+    duration: float = quantity("duration_deg", "crank deg", "open duration")
+    opens_before_bdc_series: float = quantity("opens_before_bdc_series_deg", "crank deg",
+                                              "opening by the manual's series kinematics")
+    time_area_analytic: float = quantity("time_area_analytic_mm2_s", "mm2 s", "time-area, eq. (8.7)")
+    max_area: float = quantity("max_area_mm2", "mm2", "largest open area")
+    time_area: float = quantity("time_area_mm2_s", "mm2 s", "time-area at the speed")
+
+
+@dataclass(frozen=True)
+class TwoStrokeSummary:
+    """The two-stroke chapter's figures."""
+
+    speed: float = quantity("speed_rpm", "rpm", "crank speed")
+    lam: float = quantity("lambda", label="lambda = R / L")
+    kinematics: str = quantity("kinematics", label="exact or approximate")
+    ports: dict = quantity("ports", label="each port")
+    speed_range: tuple = quantity("speed_range_rpm", "rpm", "speeds of Z(n)")
 
 
 @dataclass
@@ -18,10 +63,15 @@ class TwoStrokeResults:
 
     phi: np.ndarray          # crank angle from TDC [rad]
     areas: dict              # port name -> area [m^2]
-    speeds: np.ndarray       # [rpm]
+    speeds: np.ndarray       # [rad/s]
     time_areas: dict         # port name -> Z(n) [m^2 s]
-    summary: dict
-    checks: list                    # every valvetrain.checks.Check of the chapter
+    figures: TwoStrokeSummary
+    checks: list             # every valvetrain.checks.Check of the chapter
+
+    @property
+    def summary(self):
+        """The chapter's record in results.json (engineering units)."""
+        return record(self.figures)
 
 
 def _skirt_opening(lower, piston_height, radius, lam, exact):
@@ -34,52 +84,46 @@ def _skirt_opening(lower, piston_height, radius, lam, exact):
     return brentq(lambda a: displacement(a, radius, lam, exact=exact) - travel, 0.0, np.pi, xtol=1e-14)
 
 
-def two_stroke_stage(spec):
-    """Run the [two_stroke] chapter; returns :class:`TwoStrokeResults`."""
-    ts = spec.two_stroke
-    bore_mm, stroke_mm, rod_mm, rated = crank_geometry(spec)
-    bore, stroke, radius = bore_mm * MM, stroke_mm * MM, stroke_mm * MM / 2.0
-    lam = radius / (rod_mm * MM)
-    speed = ts.speed_rpm or rated
+def two_stroke_stage(ts, crank, eng):
+    """Run the [two_stroke] chapter from the SI views of [two_stroke], [crank] (or None) and [engine]; returns
+    :class:`TwoStrokeResults`."""
+    bore, stroke, rod, rated = crank_geometry(crank, eng) if crank is not None else \
+        (eng.bore, eng.stroke, eng.rod_length, eng.rated_speed)
+    radius = stroke / 2.0
+    lam = radius / rod
+    speed = ts.speed or rated
     exact = ts.kinematics == "exact"
-    n = int(round(360.0 / ts.step_deg))
-    phi = np.arange(n + 1) * (ts.step_deg * DEG)
-    low, high = ts.speed_range_rpm or (0.4 * speed, 1.2 * speed)
+    n = int(round(2.0 * np.pi / ts.step))
+    phi = np.arange(n + 1) * ts.step
+    low, high = ts.speed_range or (0.4 * speed, 1.2 * speed)
     speeds = np.linspace(low, high, 21)
     areas, curves, ports, found = {}, {}, {}, []
     for name, port in ts.ports.items():
-        width = port.width_mm * MM
-        rec = {"kind": port.kind, "width_mm": port.width_mm}
         if port.kind == "inlet":
-            height = port.height_mm * MM
-            area = twostroke.skirt_port_area(phi, port.lower_edge_mm * MM, height, ts.piston_height_mm * MM, width,
+            area = twostroke.skirt_port_area(phi, port.lower_edge, port.height, ts.piston_height, port.width,
                                              stroke, lam, exact)
-            before_tdc = _skirt_opening(port.lower_edge_mm * MM, ts.piston_height_mm * MM, radius, lam, exact)
-            rec.update(opens_crank_deg=-rad_to_deg(before_tdc), closes_crank_deg=rad_to_deg(before_tdc),
-                       duration_deg=2.0 * rad_to_deg(before_tdc), height_mm=port.height_mm,
-                       lower_edge_mm=port.lower_edge_mm)
+            before_tdc = _skirt_opening(port.lower_edge, ts.piston_height, radius, lam, exact)
+            z = twostroke.time_area_numeric(phi, area, speed)
+            rec = SkirtPort(port.kind, port.width, -before_tdc, before_tdc, 2.0 * before_tdc, port.height,
+                            port.lower_edge, float(area.max()), z)
         else:
-            if port.height_mm is not None:
-                sigma = port.height_mm / stroke_mm
+            if port.height is not None:
+                sigma = port.height / stroke
                 angle = twostroke.port_angle(sigma, lam, exact)
             else:
-                angle = port.opens_before_bdc_deg * DEG
+                angle = port.opens_before_bdc
                 sigma = twostroke.port_height(angle, lam, exact)
-            height = sigma * stroke
-            area = twostroke.top_port_area(phi, height, width, stroke, lam, exact)
-            rec.update(height_mm=height / MM, relative_height=sigma, opens_before_bdc_deg=rad_to_deg(angle),
-                       opens_crank_deg=180.0 - rad_to_deg(angle), closes_crank_deg=180.0 + rad_to_deg(angle),
-                       duration_deg=2.0 * rad_to_deg(angle),
-                       opens_before_bdc_series_deg=rad_to_deg(twostroke.port_angle_series(sigma, lam)),
-                       time_area_analytic_mm2_s=twostroke.time_area_analytic(
-                           bore, stroke, sigma, lam, width / (np.pi * bore), speed) / MM**2)
+            area = twostroke.top_port_area(phi, sigma * stroke, port.width, stroke, lam, exact)
+            z = twostroke.time_area_numeric(phi, area, speed)
+            rec = TopPort(port.kind, port.width, sigma * stroke, sigma, angle, np.pi - angle, np.pi + angle,
+                          2.0 * angle, twostroke.port_angle_series(sigma, lam),
+                          twostroke.time_area_analytic(bore, stroke, sigma, lam, port.width / (np.pi * bore), speed),
+                          float(area.max()), z)
             (h_lo, h_hi), (w_lo, w_hi) = twostroke.PORT_SIZE_RANGES[port.kind]
             found.append(check(f"{name} port height / stroke", sigma, h_lo, h_hi, source="seed 000, Table 8.1"))
-            found.append(check(f"{name} port width / bore", width / bore, w_lo, w_hi, source="seed 000, Table 8.1"))
-        z = twostroke.time_area_numeric(phi, area, speed)
-        rec.update(max_area_mm2=float(area.max()) / MM**2, time_area_mm2_s=z / MM**2)
+            found.append(check(f"{name} port width / bore", port.width / bore, w_lo, w_hi,
+                               source="seed 000, Table 8.1"))
         areas[name], ports[name] = area, rec
         curves[name] = z * speed / speeds                       # Z = K / n (8.6)
-    summary = {"speed_rpm": speed, "lambda": lam, "kinematics": ts.kinematics, "ports": ports,
-               "speed_range_rpm": [float(low), float(high)]}
-    return TwoStrokeResults(phi, areas, speeds, curves, summary, found)
+    figures = TwoStrokeSummary(speed, lam, ts.kinematics, ports, (float(low), float(high)))
+    return TwoStrokeResults(phi, areas, speeds, curves, figures, found)

@@ -6,7 +6,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-from ..units import MM, rad_to_deg  # noqa: E402
+from ..units import MM, rad_to_deg, to_display  # noqa: E402
 from .i18n import TEXT  # noqa: E402
 
 
@@ -208,7 +208,7 @@ def two_stroke_speed_figure(ports, t):
     """Time-area of each port against the crank speed, Z = f(n) (seed 000, work 8)."""
     fig, ax = plt.subplots(figsize=(8, 4.5))
     for name, z in ports.time_areas.items():
-        ax.plot(ports.speeds, z / MM**2, label=name)
+        ax.plot(to_display(ports.speeds, "rpm"), z / MM**2, label=name)
     ax.set_xlabel(t["speed"])
     ax.set_ylabel(t["port_time_area"])
     ax.grid(alpha=0.3)
