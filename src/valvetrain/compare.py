@@ -97,10 +97,7 @@ def write_comparison(designs, out, inputs=(), force=False):
 
     ``inputs`` (the files read) and ``force`` are those of :func:`valvetrain.outfolder.atomic_folder`.
     """
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    from matplotlib.figure import Figure
 
     from .export import json_text, write_csv
     from .outfolder import atomic_folder
@@ -117,7 +114,8 @@ def write_comparison(designs, out, inputs=(), force=False):
         quantities = (("lift", 1.0 / MM, "tappet lift, mm"), ("velocity", 1.0, "tappet velocity, m/s"),
                       ("acceleration", 1.0, "tappet acceleration, m/s²"), ("jerk", 1.0, "tappet jerk, m/s³"))
         for i, (name, scale, ylabel) in enumerate(quantities):
-            fig, ax = plt.subplots(figsize=(8, 4.5))
+            fig = Figure(figsize=(8, 4.5))
+            ax = fig.subplots()
             for label, v in designs.items():
                 theta = np.linspace(v.law.start, v.law.end, 2001)
                 d = v.law.derivatives(theta)[i] * v.omega_cam**i
@@ -128,5 +126,4 @@ def write_comparison(designs, out, inputs=(), force=False):
             ax.legend(fontsize=8)
             fig.tight_layout()
             fig.savefig(tmp / "plots" / f"compare_{name}.png", dpi=110)
-            plt.close(fig)
     return rows, notes

@@ -21,12 +21,14 @@ from ..specification import SpecError, si
 from ..units import MM
 from .crank import CrankResults, crank_stage
 from .twostroke import TwoStrokeResults, two_stroke_stage
-from .valve import THROAT_AREA_SHARE_RANGE, ValveDesign, design_valve
+from .valve import (THROAT_AREA_SHARE_RANGE, ValveDesign, clearance_stage, design_valve, flow_stage, law_stage,
+                    profile_stage, valve_checks)
 
-__all__ = ["DesignResults", "ValveDesign", "design_valve", "run"]
+__all__ = ["DesignResults", "ValveDesign", "clearance_stage", "design_valve", "flow_stage", "law_stage", "profile_stage", "run",
+           "valve_checks"]
 
 
-@dataclass
+@dataclass(repr=False)
 class DesignResults:
     """Result of :func:`run`: the engine's derived figures, each valve's design, all warnings."""
 
@@ -41,6 +43,38 @@ class DesignResults:
     def warnings(self):
         """The checks that fail, in the order of the chapters."""
         return failed(self.checks)
+
+    def _rows(self):
+        """One line of figures per valve: name, law, valve lift, time-area, fullness, spring, failed checks."""
+        for name, v in self.valves.items():
+            spring = v.drive.spring
+            yield (name, v.law.name, f"{v.flow.valve_lift / MM:.4g}", f"{v.flow.time_area / MM**2:.4g}",
+                   f"{v.flow.fullness:.4g}", f"{spring['wire_mm']:g} x {spring['mean_diameter_mm']:g}",
+                   f"{len(v.warnings)} of {len(v.checks)}")
+
+    _HEADS = ("valve", "law", "lift, mm", "time-area, mm2 s", "fullness", "spring wire x D, mm", "checks failed")
+
+    def __repr__(self):
+        e = self.engine
+        lines = [f"DesignResults: {e['name']} ({e['cylinders']} cyl., {e['bore_mm']:g} x {e['stroke_mm']:g} mm, "
+                 f"{e['rated_speed_rpm']:g} rpm), {len(self.warnings)} of {len(self.checks)} checks fail"]
+        lines += ["  " + ", ".join(f"{h} {c}" for h, c in zip(self._HEADS, row, strict=True)) for row in self._rows()]
+        if self.crank is not None:
+            lines.append(f"  crank: mean torque {self.crank.figures.mean_torque:.4g} N m")
+        return "\n".join(lines)
+
+    def _repr_html_(self):
+        """A summary table for notebooks: the valves' figures and the checks that fail."""
+        from html import escape
+
+        def table(heads, rows):
+            head = "".join(f"<th>{escape(h)}</th>" for h in heads)
+            body = "".join("<tr>" + "".join(f"<td>{escape(str(c))}</td>" for c in r) + "</tr>" for r in rows)
+            return f"<table><tr>{head}</tr>{body}</table>"
+
+        warnings = [(w.quantity, f"{w.shown_value:.6g} {w.unit}", w.range, w.source) for w in self.warnings]
+        return (f"<p><b>{escape(self.engine['name'])}</b></p>" + table(self._HEADS, self._rows())
+                + "<p>Checks that fail</p>" + table(("quantity", "value", "allowed", "source"), warnings))
 
     def to_dict(self):
         """JSON-ready dictionary (engineering units, named in the keys)."""

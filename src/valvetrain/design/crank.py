@@ -5,7 +5,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..checks import check
+from ..checks import check, failed
 from ..crank import dynamics, kinematics, pressure, torque
 from ..specification import SpecError
 from ..units import MPA
@@ -93,7 +93,7 @@ class CrankSummary:
     work: WorkRecord = quantity("work", flatten=True, omit_none=True)
 
 
-@dataclass
+@dataclass(repr=False)
 class CrankResults:
     """The crank chapter: per-angle arrays of one cylinder, the engine torque and the summary (SI)."""
 
@@ -111,6 +111,11 @@ class CrankResults:
     def summary(self):
         """The chapter's record in results.json (engineering units)."""
         return record(self.figures)
+
+    def __repr__(self):
+        f = self.figures
+        return (f"CrankResults({f.cylinders} cyl. {f.layout}, mean torque {f.mean_torque:.4g} N m, peak pressure "
+                f"{f.max_gas_pressure / MPA:.4g} MPa, {len(failed(self.checks))} of {len(self.checks)} checks fail)")
 
 
 def crank_geometry(crank, engine):

@@ -57,7 +57,7 @@ class TwoStrokeSummary:
     speed_range: tuple = quantity("speed_range_rpm", "rpm", "speeds of Z(n)")
 
 
-@dataclass
+@dataclass(repr=False)
 class TwoStrokeResults:
     """Port areas over a revolution, the time-area against speed, and the summary (SI)."""
 
@@ -72,6 +72,9 @@ class TwoStrokeResults:
     def summary(self):
         """The chapter's record in results.json (engineering units)."""
         return record(self.figures)
+
+    def __repr__(self):
+        return f"TwoStrokeResults(ports {', '.join(self.areas)}, {len(self.checks)} checks)"
 
 
 def _skirt_opening(lower, piston_height, radius, lam, exact):

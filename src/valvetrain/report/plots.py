@@ -1,13 +1,10 @@
 """Plots of every stage of a valve design (matplotlib, written as PNG files)."""
 
-import matplotlib
+from matplotlib.figure import Figure
+import numpy as np
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-
-from ..units import MM, rad_to_deg, to_display  # noqa: E402
-from .i18n import TEXT  # noqa: E402
+from ..units import MM, rad_to_deg, to_display
+from .i18n import TEXT
 
 
 def _segment_lines(ax, law):
@@ -19,7 +16,8 @@ def kinematics_figure(valve, t):
     """Tappet lift (and valve lift), velocity, acceleration and jerk against camshaft angle."""
     tab = valve.table
     x = rad_to_deg(tab.cam_angle)
-    fig, axes = plt.subplots(4, 1, figsize=(8, 10), sharex=True)
+    fig = Figure(figsize=(8, 10))
+    axes = fig.subplots(4, 1, sharex=True)
     axes[0].plot(x, tab.lift / MM, label=t["tappet_lift"])
     axes[0].plot(x, tab.valve_lift / MM, label=t["valve_lift"])
     axes[0].legend(loc="upper right")
@@ -42,7 +40,8 @@ def kinematics_figure(valve, t):
 
 def contour_figure(valve, t):
     """The cam contour to scale, with the heel circle (and the pitch curve of a roller)."""
-    fig, ax = plt.subplots(figsize=(7, 7))
+    fig = Figure(figsize=(7, 7))
+    ax = fig.subplots()
     x, y = valve.contour / MM
     ax.plot(np.append(x, x[0]), np.append(y, y[0]), color="k", lw=1.5, label=t["contour"])
     phi = np.linspace(0, 2 * np.pi, 361)
@@ -69,7 +68,8 @@ def time_area_figure(valve, t):
     """Curtain area and running time-area against crank angle; the valve's own stroke shaded."""
     tab = valve.table
     k = rad_to_deg(valve.nose_crank + 2.0 * tab.cam_angle)
-    fig, ax = plt.subplots(figsize=(8, 5))
+    fig = Figure(figsize=(8, 5))
+    ax = fig.subplots()
     ax.plot(k, tab.curtain_area / MM**2, color="C0")
     ax.set_xlabel(t["crank_deg"])
     ax.set_ylabel(t["curtain"], color="C0")
@@ -89,7 +89,8 @@ def curvature_figure(valve, t):
     """Radius of curvature of the profile (and the pressure angle of a roller) against camshaft angle."""
     tab = valve.table
     x = rad_to_deg(tab.cam_angle)
-    fig, ax = plt.subplots(figsize=(8, 4.5))
+    fig = Figure(figsize=(8, 4.5))
+    ax = fig.subplots()
     ax.plot(x, tab.rho / MM, color="C0")
     ax.set_xlabel(t["cam_deg"])
     ax.set_ylabel(t["rho"])
@@ -111,7 +112,8 @@ def spring_figure(valve, t):
     drive = valve.drive
     y = drive.lift / MM
     order = np.argsort(y)
-    fig, ax = plt.subplots(figsize=(8, 5))
+    fig = Figure(figsize=(8, 5))
+    ax = fig.subplots()
     ax.plot(y[order], drive.inertia_force[order], color="0.5", ls=":", label=t["inertia_force"])
     ax.plot(y[order], drive.required_force[order], color="C3", label=t["required_force"])
     yy = np.array([0.0, y.max()])
@@ -135,7 +137,8 @@ def crank_forces_figure(crank, t):
     """Specific forces against the crank angle, as Fig. 2.6 of seed 001: gas, inertia and total; N, S, K, T."""
     c = crank.columns
     x = rad_to_deg(crank.phi)
-    fig, axes = plt.subplots(2, 1, figsize=(9, 8), sharex=True)
+    fig = Figure(figsize=(9, 8))
+    axes = fig.subplots(2, 1, sharex=True)
     for key, label in (("p_gas", "Δp_g"), ("p_j", "p_j"), ("p", "p")):
         axes[0].plot(x, c[key] * 1e-6, label=label)
     for key, label in (("p_N", "p_N"), ("p_S", "p_S"), ("p_K", "p_K"), ("p_T", "p_T")):
@@ -155,7 +158,8 @@ def crank_forces_figure(crank, t):
 def crank_torque_figure(crank, t):
     """Torque of every cylinder and the total over one cycle (Fig. 2.7 of seed 001)."""
     x = rad_to_deg(crank.psi)
-    fig, ax = plt.subplots(figsize=(9, 5))
+    fig = Figure(figsize=(9, 5))
+    ax = fig.subplots()
     for i, m in enumerate(crank.cylinder_torques, start=1):
         ax.plot(x, m, lw=0.8, alpha=0.7, label=f"{t['cylinder']} {i}")
     ax.plot(x, crank.total_torque, color="k", lw=1.8, label=t["total"])
@@ -173,7 +177,8 @@ def crank_pin_figure(crank, t):
     """Polar diagram of the crank-pin load in the crank's frame (tangential against radial, kN)."""
     c = crank.columns
     tang, rad = c["pin_tangential"] * 1e-3, -c["pin_radial"] * 1e-3
-    fig, ax = plt.subplots(figsize=(7, 7))
+    fig = Figure(figsize=(7, 7))
+    ax = fig.subplots()
     ax.plot(tang, rad, color="C0")
     for deg in range(0, int(rad_to_deg(crank.phi[-1])) + 1, 180):
         k = int(np.argmin(np.abs(rad_to_deg(crank.phi) - deg)))
@@ -191,7 +196,8 @@ def crank_pin_figure(crank, t):
 
 def two_stroke_ports_figure(ports, t):
     """Port areas against the crank angle (seed 000, Fig. 8.1 b)."""
-    fig, ax = plt.subplots(figsize=(8, 4.5))
+    fig = Figure(figsize=(8, 4.5))
+    ax = fig.subplots()
     x = rad_to_deg(ports.phi)
     for name, a in ports.areas.items():
         ax.plot(x, a / MM**2, label=name)
@@ -206,7 +212,8 @@ def two_stroke_ports_figure(ports, t):
 
 def two_stroke_speed_figure(ports, t):
     """Time-area of each port against the crank speed, Z = f(n) (seed 000, work 8)."""
-    fig, ax = plt.subplots(figsize=(8, 4.5))
+    fig = Figure(figsize=(8, 4.5))
+    ax = fig.subplots()
     for name, z in ports.time_areas.items():
         ax.plot(to_display(ports.speeds, "rpm"), z / MM**2, label=name)
     ax.set_xlabel(t["speed"])
@@ -234,7 +241,6 @@ def write_plots(results, folder, lang="en"):
 
     def save(fig, fname):
         fig.savefig(folder / fname, dpi=110)
-        plt.close(fig)
         return fname
 
     for name, valve in results.valves.items():
