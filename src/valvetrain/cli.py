@@ -163,6 +163,15 @@ def _file_labels(files):
 
 
 @main.command()
+def schema():
+    """Print the JSON Schema of results.json (generated from the design's result types)."""
+    from .design import results_schema
+    from .export import json_text
+
+    click.echo(json_text(results_schema()))
+
+
+@main.command()
 def example():
     """Print the built-in example specification (seed 000's appendix engine) as TOML."""
     click.echo(example_text(), nl=False)

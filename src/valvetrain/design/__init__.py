@@ -13,19 +13,38 @@ rpm) are converted to SI for the physics functions.  Stages:
 
 from dataclasses import dataclass
 
+import numpy as np
+
 from .. import flow
 from ..checks import check, failed
 from ..crank.pressure import PressureFileError
 from ..files import TableFileError
 from ..specification import SpecError, si
 from ..units import MM
-from .crank import CrankResults, crank_stage
-from .twostroke import TwoStrokeResults, two_stroke_stage
-from .valve import (THROAT_AREA_SHARE_RANGE, ValveDesign, clearance_stage, design_valve, flow_stage, law_stage,
+from .crank import CrankResults, CrankSummary, crank_stage
+from .results import json_schema, quantity, record
+from .twostroke import TwoStrokeResults, TwoStrokeSummary, two_stroke_stage
+from .valve import (THROAT_AREA_SHARE_RANGE, CamResult, ClearanceResult, FlowResult, ProfileResult, ValveDesign, clearance_stage, design_valve, flow_stage, law_stage,
                     profile_stage, valve_checks)
 
 __all__ = ["DesignResults", "ValveDesign", "clearance_stage", "design_valve", "flow_stage", "law_stage", "profile_stage", "run",
            "valve_checks"]
+
+
+@dataclass(frozen=True)
+class EngineRecord:
+    """The engine's data and derived figures."""
+
+    name: str = quantity("name", label="engine name")
+    bore: float = quantity("bore_mm", "mm", "bore D")
+    stroke: float = quantity("stroke_mm", "mm", "stroke S")
+    rated_speed: float = quantity("rated_speed_rpm", "rpm", "rated speed")
+    cylinders: int = quantity("cylinders", label="cylinders")
+    strokes: int = quantity("strokes", label="strokes per cycle")
+    mean_piston_speed: float = quantity("mean_piston_speed_m_s", "m/s", "mean piston speed c_p = S n / 30")
+    swept_volume: float = quantity("swept_volume_cm3", "cm3", "swept volume of one cylinder V_h")
+    displacement: float = quantity("displacement_cm3", "cm3", "engine displacement")
+    piston_area: float = quantity("piston_area_mm2", "mm2", "piston area F_p")
 
 
 @dataclass(repr=False)
@@ -33,7 +52,7 @@ class DesignResults:
     """Result of :func:`run`: the engine's derived figures, each valve's design, all warnings."""
 
     spec: object
-    engine: dict
+    engine: EngineRecord
     valves: dict
     checks: list                  # every valvetrain.checks.Check of the design, passed or not
     crank: CrankResults = None
@@ -55,7 +74,7 @@ class DesignResults:
     _HEADS = ("valve", "law", "lift, mm", "time-area, mm2 s", "fullness", "spring wire x D, mm", "checks failed")
 
     def __repr__(self):
-        e = self.engine
+        e = record(self.engine)
         lines = [f"DesignResults: {e['name']} ({e['cylinders']} cyl., {e['bore_mm']:g} x {e['stroke_mm']:g} mm, "
                  f"{e['rated_speed_rpm']:g} rpm), {len(self.warnings)} of {len(self.checks)} checks fail"]
         lines += ["  " + ", ".join(f"{h} {c}" for h, c in zip(self._HEADS, row, strict=True)) for row in self._rows()]
@@ -73,7 +92,7 @@ class DesignResults:
             return f"<table><tr>{head}</tr>{body}</table>"
 
         warnings = [(w.quantity, f"{w.shown_value:.6g} {w.unit}", w.range, w.source) for w in self.warnings]
-        return (f"<p><b>{escape(self.engine['name'])}</b></p>" + table(self._HEADS, self._rows())
+        return (f"<p><b>{escape(self.engine.name)}</b></p>" + table(self._HEADS, self._rows())
                 + "<p>Checks that fail</p>" + table(("quantity", "value", "allowed", "source"), warnings))
 
     def to_dict(self):
@@ -82,7 +101,7 @@ class DesignResults:
 
         out = {
             "valvetrain_version": __version__,
-            "engine": self.engine,
+            "engine": record(self.engine),
             "valves": {name: v.summary for name, v in self.valves.items()},
         }
         if self.crank is not None:
@@ -143,21 +162,53 @@ def run(spec, laws=None):
     for stage, tag in ((crank, "crank"), (ports, "two-stroke")):
         if stage is not None:
             found += [c.named(tag) for c in stage.checks]
-    return DesignResults(spec, engine_record(spec.engine), valves, found, crank, ports)
+    return DesignResults(spec, engine_record(engine), valves, found, crank, ports)
 
 
 def engine_record(eng):
-    """The engine's figures in results.json: its data and the mean piston speed, swept volume and piston area."""
-    bore, stroke = eng.bore_mm * MM, eng.stroke_mm * MM
+    """The engine's figures (SI view of [engine]): its data, the mean piston speed, swept volume and piston area."""
+    swept = float(flow.swept_volume(eng.bore, eng.stroke))
+    return EngineRecord(eng.name, eng.bore, eng.stroke, eng.rated_speed, eng.cylinders, eng.strokes,
+                        flow.mean_piston_speed(eng.stroke, eng.rated_speed * 30.0 / np.pi), swept,
+                        swept * eng.cylinders, float(flow.circle_area(eng.bore)))
+
+
+def results_schema():
+    """JSON Schema (draft 2020-12) of results.json, generated from the stage results' field metadata.
+
+    The records of the drive (masses, spring, strength) and the law's own records (seed formulas, a
+    measured table's analysis) are objects described in the README.
+    """
+    from .. import __version__
+
+    def merged(*schemas, **extra):
+        props = {k: v for sch in schemas for k, v in sch["properties"].items()}
+        props.update({k: {"type": "object", "description": text} for k, text in extra.items()})
+        return {"type": "object", "properties": props, "required": [k for sch in schemas for k in sch["required"]]}
+
+    check_record = {"type": "object", "required": ["quantity", "value", "range", "source", "unit"],
+                    "properties": {k: {"type": t} for k, t in (("quantity", "string"), ("range", "string"),
+                                                                ("source", "string"), ("unit", "string"))}
+                    | {"value": {"type": ["number", "null"]}}}
+    valve = {"type": "object", "properties": {
+        "kind": {"type": "string"}, "count": {"type": "integer"}, "rocker_ratio": {"type": "number"},
+        "cam": merged(json_schema(CamResult), json_schema(ProfileResult),
+                      seed_formulas="the appendix formulas of seed 000 beside the exact extremes (Kurz cams)",
+                      residuals="residuals of the junction conditions (Kurz cams)",
+                      measured="a measured table's analysis: durations, lobe centre, fit quality"),
+        "flow": json_schema(FlowResult), "piston_clearance": json_schema(ClearanceResult),
+        "masses": {"type": "object", "description": "reduced masses at the valve and the tappet"},
+        "spring": {"type": "object", "description": "the required and the designed spring(s) with their checks"},
+        "strength": {"type": "object", "description": "the cam load and one record per strength check"}}}
     return {
-        "name": eng.name,
-        "bore_mm": eng.bore_mm,
-        "stroke_mm": eng.stroke_mm,
-        "rated_speed_rpm": eng.rated_speed_rpm,
-        "cylinders": eng.cylinders,
-        "strokes": eng.strokes,
-        "mean_piston_speed_m_s": flow.mean_piston_speed(stroke, eng.rated_speed_rpm),
-        "swept_volume_cm3": float(flow.swept_volume(bore, stroke)) * 1e6,
-        "displacement_cm3": float(flow.swept_volume(bore, stroke)) * 1e6 * eng.cylinders,
-        "piston_area_mm2": float(flow.circle_area(bore)) / MM**2,
-    }
+        "$schema": "https://json-schema.org/draft/2020-12/schema",
+        "$id": f"https://valvetrain.invalid/results-{__version__}.schema.json",
+        "title": "valvetrain results.json", "type": "object",
+        "required": ["valvetrain_version", "engine", "valves", "warnings", "checks"],
+        "properties": {
+            "valvetrain_version": {"type": "string"}, "engine": json_schema(EngineRecord),
+            "valves": {"type": "object", "additionalProperties": valve},
+            "crank": json_schema(CrankSummary), "two_stroke": json_schema(TwoStrokeSummary),
+            "warnings": {"type": "array", "items": check_record, "description": "the checks that fail"},
+            "checks": {"type": "array", "items": check_record,
+                       "description": "every check, with low, high, severity, pass and margin"}}}

@@ -71,7 +71,9 @@ def record(result):
     return out
 
 
-_JSON_TYPES = {float: "number", int: "integer", str: "string", bool: "boolean", dict: "object"}
+_JSON_TYPES = {float: ["number", "null"], int: "integer", str: "string", bool: "boolean", dict: "object"}
+"""JSON types of the field annotations; a float may be null, which is how results.json writes a quantity that is
+not finite or not defined (see :func:`valvetrain.export.json_text`)."""
 
 
 def _type_schema(annotation):

@@ -4,6 +4,7 @@ from jinja2 import Environment, PackageLoader, select_autoescape
 import numpy as np
 
 from .. import __version__
+from ..design.results import record
 from ..tables import lift_table_columns
 from .i18n import SOURCES, TEXT
 
@@ -107,7 +108,7 @@ def render_report(results, plots, lang="en"):
         ports = {"inputs": [(k, v) for k, v in _flatten(spec["two_stroke"]) if not k.startswith("ports.")],
                  "plots": plots["two_stroke"], "ports": results.two_stroke.summary["ports"]}
     return env.get_template("report.html").render(
-        t=TEXT[lang], lang=lang, version=__version__, engine=results.engine, engine_inputs=_flatten(spec["engine"]),
+        t=TEXT[lang], lang=lang, version=__version__, engine=record(results.engine), engine_inputs=_flatten(spec["engine"]),
         valves=valves, warnings=results.warnings, sources=SOURCES, table_columns=TABLE_COLUMNS,
         step=REPORT_STEP_DEG, output=_flatten(spec["output"]), crank=crank, ports=ports,
     )
