@@ -1,35 +1,13 @@
 """Cam-follower contact under the dynamic force: Hertz stress and the lubrication characteristic.
 
 Seed 002 section 3.4 computes the contact stress (2.5) with the force of the elastic train
-instead of the kinetostatic one; the curvature comes from the law (2.6)/(2.7) and the
+instead of the kinetostatic one; the curvature comes from the law's profile (2.6)/(2.7) and the
 lubrication characteristic gamma = rho / (R0 + h) from (2.12).  The formulas live in
 :mod:`valvetrain.strength` and :mod:`valvetrain.geometry`; this module only feeds them the
 simulated force.
 """
 
-import numpy as np
-
-from ..geometry import flat_follower_curvature, roller_follower_curvature
 from ..strength import hertz_line_stress
-
-
-def cam_curvature(law, theta, base_radius, roller_radius=None):
-    """Radius of curvature of the cam profile [m], flat follower (2.6) or roller follower (2.7).
-
-    Parameters
-    ----------
-    law : valvetrain.laws.base.LiftLaw
-    theta : ndarray
-        Camshaft angle [rad from the nose].
-    base_radius : float
-        Heel-circle radius on which h = 0 [m].
-    roller_radius : float, optional
-        Roller radius [m]; None for a flat follower.
-    """
-    h, dh, d2h = law.derivatives(theta)[:3]
-    if roller_radius is None:
-        return flat_follower_curvature(base_radius, h, d2h)
-    return roller_follower_curvature(base_radius, roller_radius, h, dh, d2h)
 
 
 def dynamic_contact_stress(law, theta, force, base_radius, width, modulus, roller_radius=None):
@@ -57,7 +35,8 @@ def dynamic_contact_stress(law, theta, force, base_radius, width, modulus, rolle
     ----------
     seed 002, eqs. (2.5), (2.11) and section 3.4 (the force of the dynamic calculation).
     """
-    rho = cam_curvature(law, theta, base_radius, roller_radius)
+    follower = "flat" if roller_radius is None else "roller"
+    rho = law.profile(theta, base_radius, follower, roller_radius or 0.0)[1]
     curvature = 1.0 / rho + (0.0 if roller_radius is None else 1.0 / roller_radius)
     return hertz_line_stress(force, width, curvature, modulus)
 
@@ -84,5 +63,4 @@ def lubrication_characteristic(law, theta, base_radius):
     ----------
     seed 002, eq. (2.12); spec/methods-seeds-002-004.md, section 1.
     """
-    h, _, d2h = law.derivatives(theta)[:3]
-    return flat_follower_curvature(base_radius, h, d2h) / (base_radius + h)
+    return law.profile(theta, base_radius)[1] / (base_radius + law.lift(theta))
