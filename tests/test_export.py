@@ -142,3 +142,28 @@ def test_dxf_is_reproducible(tmp_path):
         subprocess.run([sys.executable, "-c", code, str(tmp_path / f"{seed}.dxf")], check=True,
                        env={**os.environ, "PYTHONHASHSEED": seed})
     assert (tmp_path / "1.dxf").read_bytes() == (tmp_path / "2.dxf").read_bytes()
+
+
+def test_the_specification_is_saved_with_the_results(written):
+    """spec.toml beside results.json reads back to the same specification and so to the same design (seed 000
+    appendix: time-area 2.8564 mm2 s)."""
+    from valvetrain.specification import load_spec
+
+    results, out = written
+    again = load_spec(out / "spec.toml")
+    assert again == results.spec.model_copy(update={"source_dir": str(out.resolve())})
+    assert run(again).valves["intake"].flow.time_area * 1e6 == pytest.approx(2.8564, abs=1e-4)
+
+
+def test_a_saved_specification_names_its_files_absolutely(tmp_path):
+    """A measured lobe's table file is named by its absolute path, so the saved spec runs from the output folder."""
+    from pathlib import Path
+
+    from valvetrain.specification import load_spec
+
+    spec = load_spec(Path(__file__).parents[1] / "examples" / "measured-lobe.toml")
+    out = write_outputs(run(spec), tmp_path / "d")
+    again = load_spec(out / "spec.toml")
+    assert Path(again.valves["intake"].cam.table_file).is_absolute()
+    assert run(again).valves["intake"].flow.valve_lift == pytest.approx(
+        run(spec).valves["intake"].flow.valve_lift, rel=1e-12)

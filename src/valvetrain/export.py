@@ -7,6 +7,7 @@ from pathlib import Path
 import numpy as np
 
 from .outfolder import atomic_folder
+from .specification import spec_toml
 from .tables import (cartesian_contour_columns, contour_columns, crank_columns, engine_torque_columns,
                      lift_export_columns, lift_table_columns, polar_contour_columns, two_stroke_columns,
                      two_stroke_speed_columns)
@@ -114,7 +115,7 @@ def write_outputs(results, out, lang="en", inputs=(), force=False):
 
     Layout::
 
-        out/results.json
+        out/results.json, spec.toml (the specification as run, every default written out)
         out/tables/NAME_lift.csv, crank.csv, engine_torque.csv, two_stroke_ports.csv, two_stroke_time_area.csv
         out/contour/NAME.csv, NAME_polar.csv, NAME_cartesian.csv, NAME_lift.csv, NAME.dxf
                     (not for a valve whose cam profile is undercut: it cannot be made)
@@ -130,6 +131,7 @@ def write_outputs(results, out, lang="en", inputs=(), force=False):
         for sub in ("tables", "contour", "plots"):
             (tmp / sub).mkdir()
         (tmp / "results.json").write_text(results_json(results), encoding="utf-8")
+        (tmp / "spec.toml").write_text(spec_toml(results.spec), encoding="utf-8")
         for name, v in results.valves.items():
             write_csv(tmp / "tables" / f"{name}_lift.csv", lift_table_columns(v.table))
             if v.summary["cam"]["undercut"]:

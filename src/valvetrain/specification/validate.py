@@ -10,6 +10,8 @@ from importlib.resources import files
 from pathlib import Path
 import tomllib
 
+import tomli_w
+
 from pydantic import ValidationError
 
 from ..springs import feasible_mean_diameters
@@ -197,3 +199,21 @@ def example_text():
 def example_spec():
     """The built-in example, validated."""
     return parse_spec(example_text(), "built-in example")
+
+
+def spec_toml(spec):
+    """The specification as TOML text with every default written out and every file named by its absolute path:
+    what a run used, saved beside its results (``spec.toml``), which ``valvetrain run`` reads back."""
+    def absolute(node):
+        if isinstance(node, dict):
+            return {k: str(resolve_path(spec, v).resolve()) if k.endswith("_file") and isinstance(v, str)
+                    else absolute(v) for k, v in node.items()}
+        if isinstance(node, list):
+            return [absolute(v) for v in node]
+        return node
+
+    from .. import __version__
+
+    header = (f"# The specification of a valvetrain {__version__} run, every default written out and every file "
+              "named by its\n# absolute path: `valvetrain run spec.toml` repeats the run.\n\n")
+    return header + tomli_w.dumps(absolute(spec.model_dump(exclude_none=True, exclude={"source_dir"})))
