@@ -186,3 +186,11 @@ def test_a_pair_without_room_for_the_inner_spring_exits_2(refused):
     for command in ("validate", "run"):
         assert "valves.intake.spring: no spring of the wire series fits inside the outer spring" in \
                refused(text, command)
+
+
+def test_the_report_is_one_file(example_run):
+    """Every figure is embedded in report.html (a PNG data URI), so the report can be mailed alone."""
+    out, _ = example_run
+    html = (out / "report.html").read_text(encoding="utf-8")
+    assert html.count('src="data:image/png;base64,') == len(list((out / "plots").glob("*.png")))
+    assert 'src="plots/' not in html

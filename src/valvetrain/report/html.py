@@ -1,4 +1,6 @@
-"""The HTML design report (Jinja2 template ``templates/report.html``)."""
+"""The HTML design report (Jinja2 template ``templates/report.html``): one file, its figures embedded."""
+
+import base64
 
 from jinja2 import Environment, PackageLoader, select_autoescape
 import numpy as np
@@ -30,7 +32,7 @@ def fmt(x):
     if isinstance(x, (int, float, np.floating)):
         return f"{float(x):.6g}"
     if isinstance(x, (list, tuple)):
-        return " ... ".join(fmt(v) for v in x)
+        return ", ".join(fmt(v) for v in x)
     return "-" if x is None else str(x)
 
 
@@ -61,7 +63,7 @@ def _measured(rec):
     return {"summary": scalars, "durations": rec["durations_deg"], "quality": list(rec["fit_quality"].items())}
 
 
-def render_report(results, plots, lang="en"):
+def render_report(results, plots, lang="en", folder=None):
     """The report as HTML text.
 
     Parameters
@@ -70,9 +72,13 @@ def render_report(results, plots, lang="en"):
     plots : dict
         ``{valve name: {figure kind: file name relative to plots/}}``.
     lang : {"en", "ru"}
+    folder : Path, optional
+        The output folder holding ``plots/``: the figures are embedded in the report (one file to mail); without
+        it they are linked.
     """
     env = Environment(loader=PackageLoader("valvetrain", "report/templates"), autoescape=select_autoescape())
     env.filters["fmt"] = fmt
+    env.filters["image"] = lambda name: _image(folder, name)
     spec = results.spec.model_dump()
     valves = []
     for name, v in results.valves.items():
@@ -114,6 +120,13 @@ def render_report(results, plots, lang="en"):
     )
 
 
+def _image(folder, name):
+    """A figure of ``plots/`` as a data URI (PNG, base64) or, without a folder, as a relative link."""
+    if folder is None:
+        return f"plots/{name}"
+    return "data:image/png;base64," + base64.b64encode((folder / "plots" / name).read_bytes()).decode("ascii")
+
+
 def write_report(results, path, plots, lang="en"):
-    """Write ``report.html``."""
-    path.write_text(render_report(results, plots, lang), encoding="utf-8")
+    """Write ``report.html`` with its figures embedded (``path``'s folder holds ``plots/``)."""
+    path.write_text(render_report(results, plots, lang, path.parent), encoding="utf-8")
