@@ -85,6 +85,10 @@ class CamResult:
     seating_velocity: float = quantity("valve_seating_velocity_m_s", "m/s", "valve velocity as it meets its seat")
     event: float = quantity("event_cam_deg", "cam deg", "cam event, ramps included")
     nose: float = quantity("nose_crank_deg", "crank deg", "crank angle of the nose from the gas-exchange TDC")
+    valve_opens: float = quantity("valve_opens_crank_deg", "crank deg",
+                                  "where the valve leaves its seat, from the gas-exchange TDC")
+    valve_closes: float = quantity("valve_closes_crank_deg", "crank deg",
+                                   "where the valve meets its seat, from the gas-exchange TDC")
     cam_speed: float = quantity("camshaft_speed_rad_s", "rad/s", "camshaft speed omega_cam at the rated speed")
     follower: str = quantity("follower", label="follower: flat or roller")
     base_radius: float = quantity("base_radius_mm", "mm", "r0, where the main lift starts")
@@ -224,11 +228,12 @@ def law_stage(valve, engine, law=None):
     omega = engine.rated_speed / 2.0
     ext = law.extremes(omega)
     seat = valve.rocker_ratio * omega * np.abs(law.derivatives(np.array([law.valve_opens, law.valve_closes]))[1])
+    nose = cam.section.nose_crank(valve, law)
     return CamResult(law, law.name, law.source, law.coefficients(), ext, ext.max_velocity, ext.max_acceleration,
                      ext.min_acceleration, law.main_half_angle, law.ramp_angle, law.ramp_height, law.lift_max,
-                     float(seat[0]), float(seat[1]), event, cam.section.nose_crank(valve, law), omega,
-                     cam.follower, cam.base_radius, cam.base_radius - law.ramp_height, cam.roller_radius or 0.0,
-                     valve.rocker_ratio)
+                     float(seat[0]), float(seat[1]), event, nose, nose + 2.0 * law.valve_opens,
+                     nose + 2.0 * law.valve_closes, omega, cam.follower, cam.base_radius,
+                     cam.base_radius - law.ramp_height, cam.roller_radius or 0.0, valve.rocker_ratio)
 
 
 def flow_stage(cam, valve, engine):

@@ -63,6 +63,26 @@ def _measured(rec):
     return {"summary": scalars, "durations": rec["durations_deg"], "quality": list(rec["fit_quality"].items())}
 
 
+def _summary(results, t):
+    """The report's first page: one row per valve and the limits not met."""
+    rows = []
+    for name, v in results.valves.items():
+        s = v.summary
+        spring = s["spring"]
+        text = t["spring_text"].format(count=spring["count"], wire_mm=spring["wire_mm"],
+                                       mean_diameter_mm=spring["mean_diameter_mm"],
+                                       active_coils=spring["active_coils"], material=spring["material"])
+        binding = spring["binding_check"]
+        rows.append({"name": name, "kind": t[v.kind], "law": v.law.name, "lift": s["flow"]["valve_lift_mm"],
+                     "opens": s["cam"]["valve_opens_crank_deg"], "closes": s["cam"]["valve_closes_crank_deg"],
+                     "duration": s["cam"]["valve_closes_crank_deg"] - s["cam"]["valve_opens_crank_deg"],
+                     "time_area": s["flow"]["time_area_mm2_s"], "fullness": s["flow"]["fullness"], "spring": text,
+                     "binding": f"{binding} ({spring['margins'][binding]:+.0%})",
+                     "failures": sum(c.severity == "failure" for c in v.warnings),
+                     "warnings": sum(c.severity != "failure" for c in v.warnings)})
+    return {"valves": rows, "failures": [c for c in results.warnings if c.severity == "failure"]}
+
+
 def render_report(results, plots, lang="en", folder=None):
     """The report as HTML text.
 
@@ -103,6 +123,7 @@ def render_report(results, plots, lang="en", folder=None):
             "table": _abridged_table(v),
             "warnings": v.warnings,
         })
+    first_page = _summary(results, TEXT[lang])
     crank = None
     if results.crank is not None:
         summary = results.crank.summary
@@ -115,7 +136,7 @@ def render_report(results, plots, lang="en", folder=None):
                  "plots": plots["two_stroke"], "ports": results.two_stroke.summary["ports"]}
     return env.get_template("report.html").render(
         t=TEXT[lang], lang=lang, version=__version__, engine=record(results.engine), engine_inputs=_flatten(spec["engine"]),
-        valves=valves, warnings=results.warnings, sources=SOURCES, table_columns=TABLE_COLUMNS,
+        valves=valves, warnings=results.warnings, first_page=first_page, timing=plots.get("(timing)"), sources=SOURCES, table_columns=TABLE_COLUMNS,
         step=REPORT_STEP_DEG, output=_flatten(spec["output"]), crank=crank, ports=ports,
     )
 

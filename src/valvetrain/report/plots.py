@@ -224,6 +224,36 @@ def two_stroke_speed_figure(ports, t):
     return fig
 
 
+def timing_figure(valves, t):
+    """The valve timing diagram: every valve's lift against the crank angle from the gas-exchange TDC on one axis,
+    the overlap of intake and exhaust shaded."""
+    fig = Figure(figsize=(9, 4))
+    ax = fig.subplots()
+    crank = np.radians(np.linspace(-360.0, 360.0, 2881))
+    open_by_kind = {}
+    for name, v in valves.items():
+        theta = (crank - v.nose_crank) / 2.0
+        lift = v.law.valve_lift(theta, v.rocker_ratio)
+        ax.plot(rad_to_deg(crank), lift / MM, label=name if name == v.kind else f"{name} ({t[v.kind]})",
+                color="C0" if v.kind == "intake" else "C3")
+        open_by_kind[v.kind] = open_by_kind.get(v.kind, np.zeros_like(crank, dtype=bool)) | (lift > 0.0)
+    if len(open_by_kind) == 2:
+        overlap = open_by_kind["intake"] & open_by_kind["exhaust"]
+        ax.fill_between(rad_to_deg(crank), 0.0, 1.0, where=overlap, transform=ax.get_xaxis_transform(),
+                        color="0.85", label=t["overlap"])
+    for angle, label in ((-180, t["bdc"]), (0, t["tdc"]), (180, t["bdc"])):
+        ax.axvline(angle, color="0.5", lw=0.6, ls="--")
+        ax.annotate(label, (angle, 1.0), xycoords=("data", "axes fraction"), ha="center", va="bottom", fontsize=8)
+    ax.set_xlim(-360, 360)
+    ax.set_xticks(np.arange(-360, 361, 60))
+    ax.set_xlabel(t["crank_deg"])
+    ax.set_ylabel(t["valve_lift_mm"])
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    return fig
+
+
 ENGINE_FIGURES = {"crank": {"crank_forces": crank_forces_figure, "crank_torque": crank_torque_figure,
                             "crank_pin_polar": crank_pin_figure},
                   "two_stroke": {"two_stroke_ports": two_stroke_ports_figure,
@@ -245,6 +275,8 @@ def write_plots(results, folder, lang="en"):
 
     for name, valve in results.valves.items():
         written[name] = {kind: save(make(valve, t), f"{name}_{kind}.png") for kind, make in FIGURES.items()}
+    if results.valves:
+        written["(timing)"] = save(timing_figure(results.valves, t), "valve_timing.png")
     for stage, figures in ENGINE_FIGURES.items():
         data = getattr(results, stage)
         if data is not None:
