@@ -12,7 +12,7 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 from ..csvfiles import read_two_columns
-from .kinematics import brix_displacement, displacement, velocity
+from .kinematics import brix_crank_angle, crank_angle_at, displacement, piston_stroke, velocity
 
 MIN_PRESSURE_MPA = 0.001
 """Least absolute pressure of an indicator diagram [MPa] (1 kPa, far below any cylinder's)."""
@@ -154,10 +154,11 @@ def pv_to_angle(volume, pressure, bore, radius, lam, compression_ratio, strokes,
 
     The rows follow the cycle from its first TDC; the volume rises and falls once per
     stroke, so the table splits into ``strokes`` monotone branches, the n-th belonging to
-    the crank angles [n pi, (n + 1) pi].  Each volume is mapped to the crank angle of its
-    branch where the cylinder has that volume: exactly (``method="exact"``), which
-    replaces Brix's graphical construction, or with Brix's construction itself
-    (``method="brix"``, seed 001 eq. 2.1).
+    the crank angles from one dead centre to the next (about [n pi, (n + 1) pi]).  Each volume
+    is mapped to the crank angle of its branch where the cylinder has that volume, in closed
+    form: exactly (``method="exact"``, :func:`~.kinematics.crank_angle_at`), which replaces
+    Brix's graphical construction, or with Brix's construction itself (``method="brix"``,
+    seed 001 eq. 2.1, :func:`~.kinematics.brix_crank_angle`).
 
     Returns
     -------
@@ -178,22 +179,22 @@ def pv_to_angle(volume, pressure, bore, radius, lam, compression_ratio, strokes,
     if len(branches) != strokes:
         raise PressureFileError(f"{source}: the volume changes direction {len(turns)} times; a {strokes}-stroke "
                                 f"cycle needs {strokes} monotone branches (rows in cycle order from TDC)")
-    phi_fine = np.linspace(0.0, np.pi, 4001)
-    out_phi, out_p = [], []
     area = np.pi * bore**2 / 4.0
     clearance = area * 2.0 * radius / (compression_ratio - 1.0)
+    full = 2.0 * radius if method == "brix" else piston_stroke(radius, lam, k)
+    lo, hi = clearance, clearance + area * full
+    out_phi, out_p = [], []
     for n, rows in enumerate(branches):
-        ph = n * np.pi + phi_fine
-        s = brix_displacement(ph, radius, lam) if method == "brix" else displacement(ph, radius, lam, k)
-        v = clearance + area * s
-        order = np.argsort(v)
-        lo, hi = v.min(), v.max()
         bad = (volume[rows] < lo * (1 - 1e-3)) | (volume[rows] > hi * (1 + 1e-3))
         if bad.any():
             i = rows[np.flatnonzero(bad)[0]]
             raise PressureFileError(f"{source}: row {i + 1}: volume {volume[i] * 1e6:g} cm3 is outside the cylinder "
                                     f"volume {lo * 1e6:.4g}...{hi * 1e6:.4g} cm3 of stroke {n + 1}")
-        out_phi.append(np.interp(volume[rows], v[order], ph[order]))
+        travel = np.clip((volume[rows] - clearance) / area, 0.0, full)
+        upstroke = n % 2 == 1
+        angle = (brix_crank_angle(travel, radius, lam, upstroke) if method == "brix"
+                 else crank_angle_at(travel, radius, lam, k, upstroke=upstroke))
+        out_phi.append(2.0 * np.pi * (n // 2) + angle)
         out_p.append(pressure[rows])
     phi, p = np.concatenate(out_phi), np.concatenate(out_p)
     keep = np.concatenate([[True], np.diff(phi) > 0])
