@@ -7,7 +7,9 @@ repeats of each old and new implementation, their ratio and how far their result
   (``crank.pressure.wiebe_pressure``) against LSODA with a scalar right-hand side;
 * the inverse slider-crank: the closed form (``crank.kinematics.crank_angle_at``) against a
   ``brentq`` per port height, and ``crank.pressure.pv_to_angle`` against interpolation on a
-  fine grid of every branch.
+  fine grid of every branch;
+* ``LiftLaw.extremes``: the roots of the next derivative refined all at once against three
+  calls of ``numerics.extremum`` (grid and bounded Brent per call).
 
 The old implementations live only here, as the baselines, copied from the commit before
 each change.
@@ -21,6 +23,9 @@ from scipy.optimize import brentq
 
 from valvetrain import twostroke
 from valvetrain.crank import kinematics, pressure
+from valvetrain.laws import KurzLaw, PolydyneLaw, TangentLaw
+from valvetrain.laws.base import Extremes
+from valvetrain.numerics import extremum
 
 REPEATS = 7
 GEOM = dict(bore=0.080, radius=0.0385, lam=0.285)
@@ -92,6 +97,16 @@ def old_pv_angles(volume, bore, radius, lam, compression_ratio, strokes, k=0.0):
     return np.concatenate(out)
 
 
+def old_extremes(law, omega):
+    """LiftLaw.extremes by three calls of numerics.extremum (before the vectorised root search)."""
+    edges = law.breakpoints
+    opening = edges[edges <= 0.0]
+    xv, v = extremum(lambda t: law.derivatives(t)[1], opening, "max")
+    xa, amax = extremum(lambda t: law.derivatives(t)[2], edges, "max")
+    xn, amin = extremum(lambda t: law.derivatives(t)[2], edges, "min")
+    return Extremes(omega * v, omega**2 * amax, omega**2 * amin, xv, xa, xn)
+
+
 def report(name, old, new, difference, unit):
     print(f"{name:44s} old {old * 1e3:9.3f} ms  new {new * 1e3:8.3f} ms  old/new {old / new:7.1f}  "
           f"max difference {difference:.1e} {unit}")
@@ -128,9 +143,27 @@ def bench_inverse_slider_crank():
           f"new {np.abs(new - phi).max():.1e} rad")
 
 
+def bench_extremes():
+    omega = np.pi * 7000 / 60
+    laws = {
+        "kurz (seed 000 appendix)": KurzLaw(6.25e-3, 0.25e-3, 0.02e-3 * 180 / np.pi, *np.deg2rad([27, 6, 38])),
+        "polydyne p=8": PolydyneLaw(6.25e-3, np.deg2rad(71.0), 8),
+        "polydyne p=8 with ramp": PolydyneLaw(6.0e-3, np.deg2rad(71.0), 8, ramp_height=0.25e-3,
+                                              ramp_velocity=0.02e-3 * 180 / np.pi),
+        "tangent (acceleration jump)": TangentLaw(20e-3, 10e-3, np.radians(50), 10e-3),
+    }
+    keys = ("max_velocity", "max_acceleration", "min_acceleration")
+    for name, law in laws.items():
+        old, new = old_extremes(law, omega), law.extremes(omega)
+        difference = max(abs(getattr(new, k) / getattr(old, k) - 1) for k in keys)
+        report(f"extremes, {name}", best_time(lambda law=law: old_extremes(law, omega)),
+               best_time(lambda law=law: law.extremes(omega)), difference, "relative")
+
+
 def main():
     bench_wiebe()
     bench_inverse_slider_crank()
+    bench_extremes()
 
 
 if __name__ == "__main__":

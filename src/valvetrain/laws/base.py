@@ -20,7 +20,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..numerics import extremum, level_span
+from ..numerics import bracketed_roots, level_span
 
 
 @dataclass(frozen=True)
@@ -164,13 +164,59 @@ class LiftLaw(ABC):
         return fall - rise
 
     def extremes(self, omega):
-        """Extreme velocity and accelerations at camshaft speed omega [rad/s], found on the analytic law."""
+        """Extreme velocity and accelerations at camshaft speed omega [rad/s], found on the analytic law.
+
+        Notes
+        -----
+        A velocity extreme lies where d2h/dtheta2 = 0 or at a segment end, an acceleration
+        extreme where d3h/dtheta3 = 0 or at a segment end (a kink, or the jump of a law with
+        continuity 1, where either side may hold the extreme).  Every segment is sampled at
+        :data:`EXTREME_SAMPLES` angles from :data:`EDGE_INSET` inside its ends (its own formula
+        there, the one-sided limits to that inset); every change of sign of the next derivative
+        between two samples that makes a maximum (minimum) is refined to its root, all at once
+        (:func:`~valvetrain.numerics.bracketed_roots`).  The extreme is the best of the
+        breakpoints, the samples and the roots.  The largest velocity is searched on the opening
+        flank, up to the nose (theta = 0, a breakpoint of every law).
+        """
         edges = self.breakpoints
-        opening = edges[edges <= 0.0]          # the nose is at theta = 0 for every law
-        xv, v = extremum(lambda t: self.derivatives(t)[1], opening, "max")
-        xa, amax = extremum(lambda t: self.derivatives(t)[2], edges, "max")
-        xn, amin = extremum(lambda t: self.derivatives(t)[2], edges, "min")
+        t = np.linspace(0.0, 1.0, EXTREME_SAMPLES)
+        t[[0, -1]] = EDGE_INSET, 1.0 - EDGE_INSET
+        x = edges[:-1, None] + np.diff(edges)[:, None] * t
+        d = self.derivatives(np.concatenate([edges, x.ravel()]))
+        at_edges, d = d[:, :edges.size], d[:, edges.size:].reshape((4,) + x.shape)
+        everywhere = np.ones(x.shape[0], dtype=bool)
+        searches = [(1, 1.0, edges[1:] <= 0.0), (2, 1.0, everywhere), (2, -1.0, everywhere)]
+        brackets = [_peak_brackets(x[m], sign * d[row + 1][m]) for row, sign, m in searches]
+        which = np.concatenate([np.full(b[0].size, n) for n, b in enumerate(brackets)])
+        rows = np.array([row + 1 for row, _, _ in searches])[which]
+        signs = np.array([sign for _, sign, _ in searches])[which]
+        roots = bracketed_roots(lambda t: signs * self.derivatives(t)[rows, np.arange(t.size)],
+                                *(np.concatenate(parts) for parts in zip(*brackets, strict=True)))
+        at_roots = self.derivatives(roots)
+        found = []
+        for n, (row, sign, m) in enumerate(searches):
+            ends = edges <= edges[1:][m].max()
+            xs = np.concatenate([edges[ends], x[m].ravel(), roots[which == n]])
+            ys = np.concatenate([at_edges[row][ends], d[row][m].ravel(), at_roots[row][which == n]])
+            i = int(np.argmax(sign * ys))
+            found.append((float(xs[i]), float(ys[i])))
+        (xv, v), (xa, amax), (xn, amin) = found
         return Extremes(omega * v, omega**2 * amax, omega**2 * amin, xv, xa, xn)
+
+
+EXTREME_SAMPLES = 65
+"""Samples per segment in :meth:`LiftLaw.extremes`."""
+
+EDGE_INSET = 1e-12
+"""Inset of the first and last sample of a segment from its ends, a fraction of its length: far above the
+round-off of a law's own segment search, so the sample takes the segment's formula."""
+
+
+def _peak_brackets(x, slope):
+    """Brackets ``(a, b, slope(a), slope(b))`` between consecutive samples (along the last axis) where the slope
+    falls from positive to negative: each holds a maximum of the function."""
+    falls = (slope[..., :-1] > 0.0) & (slope[..., 1:] < 0.0)
+    return x[..., :-1][falls], x[..., 1:][falls], slope[..., :-1][falls], slope[..., 1:][falls]
 
 
 class RampedLaw(LiftLaw):
