@@ -19,6 +19,7 @@ from abc import ABC, abstractmethod
 from dataclasses import dataclass
 
 import numpy as np
+from numba import njit
 
 from ..numerics import bracketed_roots, level_span
 
@@ -238,11 +239,14 @@ class RampedLaw(LiftLaw):
 
 
 class SymmetricLaw(LiftLaw):
-    """A law symmetric about the nose, defined by its rise ``_rise(phi)`` on the opening side.
+    """A law symmetric about the nose, defined by its rise on the opening side.
 
     ``phi`` is the camshaft angle from the start of the event (ramp start),
     ``0 <= phi <= half_angle``; the law mirrors it onto the closing flank with
     ``phi = half_angle - |theta|``: ``h`` and ``h''`` are even, ``h'`` and ``h'''`` odd.
+    A law gives its rise either vectorised, ``_rise(phi)``, mirrored by :meth:`_mirrored`, or
+    in a compiled kernel that overrides :meth:`_mirrored` and mirrors each angle with
+    :func:`mirror` as it goes (one pass over the angles, no masks).
     """
 
     @property
@@ -254,9 +258,9 @@ class SymmetricLaw(LiftLaw):
     def _rise_segments(self):
         """``[(name, phi_start, phi_end), ...]`` on the opening side, in rise coordinates."""
 
-    @abstractmethod
     def _rise(self, phi):
-        """Rise and its derivatives with respect to phi, shape (4, n)."""
+        """Rise and its derivatives with respect to phi, shape (4, n) (for :meth:`_mirrored`)."""
+        raise NotImplementedError
 
     @property
     def segments(self):
@@ -268,14 +272,31 @@ class SymmetricLaw(LiftLaw):
 
     def derivatives(self, theta):
         theta = np.asarray(theta, dtype=float)
-        flat = theta.ravel()
-        out = np.zeros((4, flat.size))
-        inside = np.abs(flat) <= self.half_angle
-        t = flat[inside]
+        out = np.zeros((4, theta.size))
+        self._mirrored(np.ascontiguousarray(theta).ravel(), out)
+        return out.reshape((4,) + theta.shape)
+
+    def _mirrored(self, theta, out):
+        """Write the law at the angles ``theta`` (1-D) into ``out`` (zeros, shape (4, n)) by mirroring :meth:`_rise`."""
+        inside = np.abs(theta) <= self.half_angle
+        t = theta[inside]
         r = self._rise(self.half_angle - np.abs(t))
         r[1::2] *= -np.sign(t)
         out[:, inside] = r
-        return out.reshape((4,) + theta.shape)
+
+
+@njit(cache=True)
+def mirror(theta, half):
+    """The rise coordinate of a symmetric law at one angle (compiled kernels; see :class:`SymmetricLaw`).
+
+    Returns
+    -------
+    (float, float)
+        ``phi = half - |theta|`` [rad] (negative on the base circle) and the factor of the odd
+        derivatives: 1 on the opening flank (theta < 0), -1 on the closing flank, 0 at the nose.
+    """
+    flip = 1.0 if theta < 0.0 else (-1.0 if theta > 0.0 else 0.0)
+    return half - abs(theta), flip
 
 
 def segment_index(x, edges):
