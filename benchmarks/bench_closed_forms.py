@@ -9,7 +9,8 @@ repeats of each old and new implementation, their ratio and how far their result
   ``brentq`` per port height, and ``crank.pressure.pv_to_angle`` against interpolation on a
   fine grid of every branch;
 * ``LiftLaw.extremes``: the roots of the next derivative refined all at once against three
-  calls of ``numerics.extremum`` (grid and bounded Brent per call).
+  calls of ``numerics.extremum`` (grid and bounded Brent per call), both on the same (compiled)
+  law evaluation, so the ratio is the search's alone.
 
 The old implementations live only here, as the baselines, copied from the commit before
 each change.
