@@ -6,6 +6,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from valvetrain import twostroke
 from valvetrain.crank import dynamics, kinematics, pressure, torque
 
 TABLES = Path(__file__).parent / "data" / "seed001_factor_tables.csv"
@@ -131,6 +132,57 @@ def test_brix_construction():
     b = kinematics.brix_displacement(phi, 1.0, 0.285)
     assert np.abs(b - kinematics.displacement(phi, 1.0, 0.285, exact=False)).max() == pytest.approx(0.0039, abs=1e-4)
     assert np.abs(b - kinematics.displacement(phi, 1.0, 0.285)).max() == pytest.approx(0.0056, abs=1e-4)
+
+
+@pytest.mark.parametrize("k", [0.0, 0.1, -0.2])
+@pytest.mark.parametrize("lam", [0.24, 0.31])
+def test_crank_angle_at_inverts_displacement(lam, k):
+    """Round trip s(phi(s)) = s to 1e-12 of the stroke over the whole stroke, on the way down (from TDC to BDC,
+    spec section 3) and back; and phi(s(phi)) = phi away from the dead centres, where ds/dphi vanishes."""
+    R = 0.04
+    tdc, bdc = kinematics.dead_centres(lam, k)
+    full = kinematics.piston_stroke(R, lam, k)
+    assert full == pytest.approx(kinematics.displacement(bdc, R, lam, k), rel=1e-14)
+    s = np.linspace(0.0, full, 2001)
+    down, up = (kinematics.crank_angle_at(s, R, lam, k, upstroke=b) for b in (False, True))
+    for phi in (down, up):
+        assert np.abs(kinematics.displacement(phi, R, lam, k) - s).max() < 1e-12 * full
+    assert (down[0], down[-1], up[0], up[-1]) == pytest.approx((tdc, bdc, 2 * np.pi + tdc, bdc), abs=1e-7)
+    assert np.all(np.diff(down) > 0) and np.all(np.diff(up) < 0)
+    phi = np.linspace(tdc, 2 * np.pi + tdc, 721)[1:-1]
+    phi = phi[np.abs(phi - bdc) > 0.01]
+    back = kinematics.crank_angle_at(kinematics.displacement(phi, R, lam, k), R, lam, k, upstroke=False)
+    back[phi > bdc] = kinematics.crank_angle_at(kinematics.displacement(phi[phi > bdc], R, lam, k), R, lam, k,
+                                                upstroke=True)
+    assert np.abs(back - phi).max() < 1e-9
+
+
+@pytest.mark.parametrize("lam", [0.24, 0.31])
+def test_crank_angle_at_series_and_brix(lam):
+    """The series (1.2) and Brix's construction (2.1) invert in closed form too: round trip to 1e-12 of the stroke
+    on both halves of the revolution; the series inverse is (8.1) of seed 000, work 8 (phi from BDC,
+    s = S (1 - sigma))."""
+    R = 0.04
+    s = np.linspace(0.0, 2 * R, 2001)
+    for up in (False, True):
+        series = kinematics.crank_angle_at(s, R, lam, exact=False, upstroke=up)
+        brix = kinematics.brix_crank_angle(s, R, lam, up)
+        assert np.abs(kinematics.displacement(series, R, lam, exact=False) - s).max() < 1e-12 * 2 * R
+        assert np.abs(kinematics.brix_displacement(brix, R, lam) - s).max() < 1e-12 * 2 * R
+        lo, hi = (np.pi, 2 * np.pi) if up else (0.0, np.pi)
+        assert np.all((series >= lo) & (series <= hi)) and np.all((brix >= lo) & (brix <= hi))
+    sigma = np.array([0.18, 0.27, 0.32])
+    assert np.allclose(np.pi - kinematics.crank_angle_at(2 * R * (1 - sigma), R, lam, exact=False),
+                       twostroke.port_angle_series(sigma, lam), rtol=0, atol=1e-13)
+
+
+def test_crank_angle_at_refuses_travel_outside_the_stroke():
+    with pytest.raises(ValueError, match="allowed 0 ... 0.08"):
+        kinematics.crank_angle_at([0.0, 0.0800001], 0.04, 0.25)
+    with pytest.raises(ValueError, match="use the exact kinematics"):
+        kinematics.crank_angle_at(0.01, 0.04, 0.25, 0.1, exact=False)
+    with pytest.raises(ValueError, match="allowed 0 ... 0.08"):
+        kinematics.brix_crank_angle(-1e-9, 0.04, 0.25)
 
 
 def test_force_decomposition_identities():

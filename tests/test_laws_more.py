@@ -131,6 +131,26 @@ def test_tangent_cam_flanks_are_straight():
     assert geometry.roller_pitch_curvature(law.r0, law.rr, h, dh, d2h) == pytest.approx(np.full(11, 22.0), rel=1e-9)
 
 
+def test_extremes_of_a_law_with_an_acceleration_jump():
+    """A tangent cam's acceleration jumps at the flank-nose junction (continuity 1) from its largest value (flank
+    side) to its smallest (nose side) for r0 20, h 10, phi_p0 50 deg, r_r 10 mm: both are found, as the one-sided
+    limits.  Independent computation: the law sampled on 200001 angles and 1e-9 rad either side of the junction
+    (1e-8 of the values there); no sample beats the extremes, and they lie within 1e-7 of the samples'."""
+    law = TangentLaw(20e-3, 10e-3, np.radians(50), 10e-3)
+    e = law.extremes(1.0)
+    junction = -law.half_angle + law.junction
+    sides = law.derivatives(junction + np.array([-1e-9, 1e-9]))[2]
+    theta = np.concatenate([np.linspace(law.start, law.end, 200001), junction + np.array([-1e-9, 1e-9])])
+    _, v, a, _ = law.derivatives(theta)
+    assert v[theta <= 0].max() <= e.max_velocity <= v[theta <= 0].max() * (1 + 1e-7)
+    assert a.max() <= e.max_acceleration <= a.max() * (1 + 1e-7)
+    assert a.min() * (1 + 1e-7) <= e.min_acceleration <= a.min()
+    assert (e.max_acceleration, e.min_acceleration) == pytest.approx(sides, rel=1e-7)
+    # on the flank side of a junction and on the nose side (the law is symmetric: either junction)
+    assert abs(junction) <= abs(e.max_acceleration_angle) < abs(junction) + 1e-12
+    assert abs(junction) - 1e-12 < abs(e.min_acceleration_angle) < abs(junction)
+
+
 def test_polynomial_generalises_polydyne():
     """The 5-exponent polynomial law with (2, p, q, r, s) is the polydyne law (spec section 7)."""
     a = PolynomialLaw(6.25e-3, np.radians(71), [2, 8, 14, 20, 26])

@@ -1,8 +1,9 @@
-"""Numerical helpers: the refined extremum of a sampled function."""
+"""Numerical helpers: the refined extremum of a sampled function, roots in many brackets at once."""
 
 import numpy as np
+import pytest
 
-from valvetrain.numerics import extremum
+from valvetrain.numerics import bracketed_roots, extremum
 
 
 def test_extremum_refines_a_smooth_maximum():
@@ -21,3 +22,19 @@ def test_extremum_steps_around_a_gap_of_non_finite_values():
     x, y = extremum(fn, [0.0, 1.0], "max", samples=201)
     assert not 0.5015 < x < 0.5045
     assert 0.998 <= y <= 0.9985 + 1e-12
+
+
+def test_bracketed_roots_of_several_brackets_at_once():
+    """cos vanishes at pi/2 and 3 pi/2 (analytic), x^3 - x / 1000 at 0 and 1/sqrt(1000); a jump of a step function
+    across zero is located like a root; each to round-off."""
+    x = bracketed_roots(np.cos, [1.0, 4.0], [2.0, 5.0], np.cos([1.0, 4.0]), np.cos([2.0, 5.0]))
+    assert np.abs(x - [np.pi / 2, 3 * np.pi / 2]).max() <= 4 * np.finfo(float).eps * 5
+
+    def cubic(t):
+        return t**3 - 1e-3 * t
+
+    a, b = np.array([-0.02, 0.01]), np.array([0.01, 0.5])
+    x = bracketed_roots(cubic, a, b, cubic(a), cubic(b))
+    assert abs(x[0]) < 1e-18 and x[1] == pytest.approx(np.sqrt(1e-3), rel=1e-15)
+    x = bracketed_roots(lambda t: np.where(t < 0.3, -1.0, 2.0), [0.0], [1.0], [-1.0], [2.0])
+    assert x[0] == pytest.approx(0.3, rel=1e-15)

@@ -9,13 +9,15 @@ from valvetrain.crank.kinematics import displacement
 
 
 def test_port_angle_closed_form_against_root_finding():
-    """(8.1) equals the root of the lambda/4 series S_p(alpha) = S - h, found independently; the spec's example
-    sigma = 0.27, lambda = 0.25 gives 69.49 deg, and 69.60 deg with the exact kinematics."""
+    """(8.1) and the exact closed form equal the root of S_p(alpha) = S - h (lambda/4 series and exact slider-crank),
+    found independently; the spec's example sigma = 0.27, lambda = 0.25 gives 69.49 deg, and 69.60 deg with the
+    exact kinematics."""
     for sigma in (0.18, 0.22, 0.27, 0.32):
         for lam in (0.24, 0.28, 0.31):
-            alpha = brentq(lambda a, lam=lam, sigma=sigma: displacement(a, 0.5, lam, exact=False) - (1 - sigma), 0, np.pi,
-                           xtol=1e-15)
-            assert twostroke.port_angle_series(sigma, lam) == pytest.approx(np.pi - alpha, abs=1e-12)
+            for exact in (False, True):
+                alpha = brentq(lambda a, lam=lam, sigma=sigma, exact=exact: displacement(a, 0.5, lam, exact=exact)
+                               - (1 - sigma), 0, np.pi, xtol=1e-15)
+                assert twostroke.port_angle(sigma, lam, exact) == pytest.approx(np.pi - alpha, abs=1e-12)
     assert np.degrees(twostroke.port_angle_series(0.27, 0.25)) == pytest.approx(69.49, abs=0.005)
     assert np.degrees(twostroke.port_angle(0.27, 0.25)) == pytest.approx(69.60, abs=0.005)
 

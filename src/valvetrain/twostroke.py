@@ -6,9 +6,8 @@ time-area in m^2 s, crank speeds omega in rad/s.
 """
 
 import numpy as np
-from scipy.optimize import brentq
 
-from .crank.kinematics import displacement
+from .crank.kinematics import crank_angle_at, displacement
 
 PORT_SIZE_RANGES = {"exhaust": ((0.26, 0.28), (0.20, 0.24)), "transfer": ((0.18, 0.22), (0.24, 0.28)),
                     "inlet": ((0.18, 0.32), (0.22, 0.30))}
@@ -44,8 +43,9 @@ def port_angle_series(sigma, lam):
 def port_angle(sigma, lam, exact=True):
     """Port opening angle from BDC [rad]: the piston's top edge is at the port's upper edge.
 
-    With ``exact=True`` the exact slider-crank is solved (:func:`scipy.optimize.brentq`),
-    otherwise the closed form (8.1) of the lambda/4 kinematics.
+    With ``exact=True`` the exact slider-crank is solved in closed form
+    (:func:`~valvetrain.crank.kinematics.crank_angle_at`), otherwise the closed form (8.1) of
+    the lambda/4 kinematics.
 
     Examples
     --------
@@ -58,9 +58,8 @@ def port_angle(sigma, lam, exact=True):
         return port_angle_series(sigma, lam)
     if not 0.0 < sigma < 1.0:
         raise ValueError(f"relative port height {sigma!r}: allowed (0, 1)")
-    # piston travel from TDC reaches S - h at alpha = pi - phi
-    alpha = brentq(lambda a: displacement(a, 0.5, lam) - (1.0 - sigma), 0.0, np.pi, xtol=1e-14)
-    return np.pi - alpha
+    # piston travel from TDC reaches S - h at alpha = pi - phi (unit stroke)
+    return np.pi - float(crank_angle_at(1.0 - sigma, 0.5, lam))
 
 
 def port_height(angle_from_bdc, lam, exact=True):

@@ -149,6 +149,117 @@ def extremes(radius, lam, omega, k=0.0, exact=True):
             "j_min": a_min, "j_min_angle": xn % (2 * np.pi)}
 
 
+def piston_stroke(radius, lam, k=0.0):
+    """Piston stroke of the exact slider-crank, sqrt((L+R)^2 - a^2) - sqrt((L-R)^2 - a^2) [m] (2R for k = 0).
+
+    References
+    ----------
+    spec/crank-kinematics-dynamics.md, section 3 (further exact results for the offset mechanism).
+
+    Examples
+    --------
+    2R for a central mechanism; spec section 7: k = 0.1, lambda = 0.285 gives 2R x 1.00044.
+
+    >>> round(float(piston_stroke(0.04, 0.25)), 15), round(float(piston_stroke(1.0, 0.285, 0.1)) / 2, 5)
+    (0.08, 1.00044)
+    """
+    rod, a = radius / lam, k * radius
+    return np.sqrt((rod + radius) ** 2 - a**2) - np.sqrt((rod - radius) ** 2 - a**2)
+
+
+def crank_angle_at(travel, radius, lam, k=0.0, exact=True, upstroke=False):
+    """Crank angle at which the piston has travelled ``travel`` from TDC: the inverse of :func:`displacement`.
+
+    Parameters
+    ----------
+    travel : array_like
+        Piston travel from TDC s [m], 0 <= s <= stroke (:func:`piston_stroke`; 2R for the series).
+    radius : float
+        Crank radius R [m].
+    lam : float
+        lambda = R / L.
+    k : float
+        Relative offset a / R (exact kinematics only).
+    exact : bool
+        Exact slider-crank or the manual's series (1.2) of a central mechanism.
+    upstroke : bool
+        The angle on the way back from BDC to TDC, in [phi_BDC, 2 pi + phi_TDC], instead of the
+        angle on the way down, in [phi_TDC, phi_BDC] (:func:`dead_centres`).
+
+    Returns
+    -------
+    ndarray
+        Crank angle phi [rad] in the convention of :func:`displacement`.
+
+    Raises
+    ------
+    ValueError
+        For a travel outside the stroke, or an offset with the series (measured from the
+        phi = 0 position, not from TDC, and a quartic in cos phi).
+
+    Notes
+    -----
+    Exact: the crank pin lies at R from the crank centre O and at L from the piston pin P,
+    which is at :math:`d = \\sqrt{a^2 + x^2}` from O, :math:`x = \\sqrt{(L+R)^2 - a^2} - s`.
+    The angle between OP and the crank follows from the triangle O-crank pin-P,
+
+    .. math:: \\tan^2\\frac{\\psi}{2} = \\frac{1-\\cos\\psi}{1+\\cos\\psi}
+              = \\frac{p\\,(2L - p)}{q\\,(2L + q)},\\quad p = L + R - d,\\ q = d - (L - R),
+
+    with p and q written without cancellation, :math:`p = s(2x_T - s)/(L + R + d)`,
+    :math:`q = (x - x_B)(x + x_B)/(d + L - R)` (:math:`x_T, x_B` the pin positions at TDC and BDC);
+    OP leans by :math:`\\delta = \\arctan(a/x)` from the cylinder axis, so
+    :math:`\\varphi = \\delta + \\psi` on the way down and :math:`2\\pi + \\delta - \\psi` on the way back.
+
+    Series: (1.2) is a quadratic in cos phi; with :math:`u = s/R` and :math:`w = 2 - u`,
+
+    .. math:: 1 - \\cos\\varphi = \\frac{2u}{1 + \\lambda + \\sqrt{(1+\\lambda)^2 - 2\\lambda u}},\\quad
+              1 + \\cos\\varphi = \\frac{2w}{1 - \\lambda + \\sqrt{(1-\\lambda)^2 + 2\\lambda w}},
+
+    and :math:`\\varphi = 2\\arctan\\sqrt{(1-\\cos\\varphi)/(1+\\cos\\varphi)}`; both forms keep
+    full precision at the dead centres.
+
+    References
+    ----------
+    seed 001, eq. (1.2) and section 1; exact slider-crank from spec/crank-kinematics-dynamics.md,
+    section 3 (solved for phi here); the series form is (8.1) of seed 000, work 8, for s = 2R (1 - sigma).
+
+    Examples
+    --------
+    Half the stroke of a central mechanism, lambda = 0.25: 82.8 deg with the exact form, the
+    series gives cos phi = (sqrt(1.5625 - 0.5) - 1) / 0.25 (1.2):
+
+    >>> round(float(np.degrees(crank_angle_at(0.04, 0.04, 0.25))), 4)
+    82.8192
+    >>> bool(np.isclose(np.cos(crank_angle_at(0.04, 0.04, 0.25, exact=False)), (np.sqrt(1.0625) - 1) / 0.25))
+    True
+    """
+    s = np.asarray(travel, dtype=float)
+    full = piston_stroke(radius, lam, k) if exact else 2.0 * radius
+    if np.any(s < 0.0) or np.any(s > full):
+        raise ValueError(f"piston travel from TDC: allowed 0 ... {full:g} m (the stroke)")
+    if exact:
+        rod, a = radius / lam, k * radius
+        top, bottom = np.sqrt((rod + radius) ** 2 - a**2), np.sqrt((rod - radius) ** 2 - a**2)
+        x = top - s
+        d = np.hypot(a, x)
+        p = s * (2.0 * top - s) / (rod + radius + d)
+        q = (x - bottom) * (x + bottom) / (d + rod - radius)
+        psi = 2.0 * np.arctan2(np.sqrt(p * (2.0 * rod - p)), np.sqrt(q * (2.0 * rod + q)))
+        delta = np.arctan2(a, x)
+    else:
+        if k != 0.0:
+            raise ValueError("the series (1.3) of an offset mechanism is measured from the phi = 0 position, not "
+                             "from TDC, and is a quartic in cos phi: use the exact kinematics")
+        u = s / radius
+        w = 2.0 - u
+        one_minus_cos = 2.0 * u / (1.0 + lam + np.sqrt((1.0 + lam) ** 2 - 2.0 * lam * u))
+        one_plus_cos = 2.0 * w / (1.0 - lam + np.sqrt((1.0 - lam) ** 2 + 2.0 * lam * w))
+        psi = 2.0 * np.arctan2(np.sqrt(one_minus_cos), np.sqrt(one_plus_cos))
+        delta = 0.0
+    return 2.0 * np.pi + delta - psi if upstroke else delta + psi
+
+
 def dead_centres(lam, k=0.0):
     """Crank angles of TDC and BDC of an offset mechanism [rad]: arcsin(k lambda/(1+lambda)),
     pi + arcsin(k lambda/(1-lambda)) (spec/crank-kinematics-dynamics.md, section 3)."""
@@ -173,3 +284,42 @@ def brix_displacement(phi, radius, lam):
     phi = np.asarray(phi, dtype=float)
     e = radius * lam / 2.0
     return radius + e * np.sin(phi) ** 2 - np.cos(phi) * np.sqrt(radius**2 - (e * np.sin(phi)) ** 2)
+
+
+def brix_crank_angle(travel, radius, lam, upstroke=False):
+    """Crank angle at which Brix's construction puts the piston at ``travel`` from TDC [rad]: the inverse
+    of :func:`brix_displacement`.
+
+    Parameters
+    ----------
+    travel : array_like
+        Piston travel from TDC s [m], 0 <= s <= 2R.
+    radius, lam : float
+        Crank radius R [m] and lambda = R / L.
+    upstroke : bool
+        The angle in [pi, 2 pi] (BDC back to TDC) instead of [0, pi].
+
+    Notes
+    -----
+    The point of the crank circle above the travel s is :math:`(R - s, \\sqrt{s(2R - s)})` from
+    the circle centre; the ray to it from O', e = R lambda / 2 towards BDC, is parallel to the
+    crank, so
+
+    .. math:: \\varphi = \\arctan\\frac{\\sqrt{s(2R - s)}}{R + e - s}.
+
+    References
+    ----------
+    seed 001, eq. (2.1); spec/crank-kinematics-dynamics.md, section 4 (solved for phi here).
+
+    Examples
+    --------
+    The ray to the top of the circle (s = R) from O' at e = R lambda / 2:
+
+    >>> bool(np.isclose(brix_crank_angle(0.04, 0.04, 0.25), np.arctan2(1.0, 0.125)))
+    True
+    """
+    s = np.asarray(travel, dtype=float)
+    if np.any(s < 0.0) or np.any(s > 2.0 * radius):
+        raise ValueError(f"piston travel from TDC: allowed 0 ... {2.0 * radius:g} m (the stroke)")
+    phi = np.arctan2(np.sqrt(s * (2.0 * radius - s)), radius + radius * lam / 2.0 - s)
+    return 2.0 * np.pi - phi if upstroke else phi

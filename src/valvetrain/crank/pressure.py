@@ -9,9 +9,9 @@ cycle runs 0...360 deg with the firing TDC at 0 (= 360).  Pressures are absolute
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.integrate import solve_ivp
 
-from .kinematics import brix_displacement, displacement, velocity
+from ..numerics import cumulative_integral
+from .kinematics import brix_crank_angle, crank_angle_at, displacement, piston_stroke
 
 MIN_PRESSURE_MPA = 0.001
 """Least absolute pressure of an indicator diagram [MPa] (1 kPa, far below any cylinder's)."""
@@ -101,10 +101,11 @@ def pv_to_angle(volume, pressure, bore, radius, lam, compression_ratio, strokes,
 
     The rows follow the cycle from its first TDC; the volume rises and falls once per
     stroke, so the table splits into ``strokes`` monotone branches, the n-th belonging to
-    the crank angles [n pi, (n + 1) pi].  Each volume is mapped to the crank angle of its
-    branch where the cylinder has that volume: exactly (``method="exact"``), which
-    replaces Brix's graphical construction, or with Brix's construction itself
-    (``method="brix"``, seed 001 eq. 2.1).
+    the crank angles from one dead centre to the next (about [n pi, (n + 1) pi]).  Each volume
+    is mapped to the crank angle of its branch where the cylinder has that volume, in closed
+    form: exactly (``method="exact"``, :func:`~.kinematics.crank_angle_at`), which replaces
+    Brix's graphical construction, or with Brix's construction itself (``method="brix"``,
+    seed 001 eq. 2.1, :func:`~.kinematics.brix_crank_angle`).
 
     Returns
     -------
@@ -125,22 +126,22 @@ def pv_to_angle(volume, pressure, bore, radius, lam, compression_ratio, strokes,
     if len(branches) != strokes:
         raise PressureFileError(f"{source}: the volume changes direction {len(turns)} times; a {strokes}-stroke "
                                 f"cycle needs {strokes} monotone branches (rows in cycle order from TDC)")
-    phi_fine = np.linspace(0.0, np.pi, 4001)
-    out_phi, out_p = [], []
     area = np.pi * bore**2 / 4.0
     clearance = area * 2.0 * radius / (compression_ratio - 1.0)
+    full = 2.0 * radius if method == "brix" else piston_stroke(radius, lam, k)
+    lo, hi = clearance, clearance + area * full
+    out_phi, out_p = [], []
     for n, rows in enumerate(branches):
-        ph = n * np.pi + phi_fine
-        s = brix_displacement(ph, radius, lam) if method == "brix" else displacement(ph, radius, lam, k)
-        v = clearance + area * s
-        order = np.argsort(v)
-        lo, hi = v.min(), v.max()
         bad = (volume[rows] < lo * (1 - 1e-3)) | (volume[rows] > hi * (1 + 1e-3))
         if bad.any():
             i = rows[np.flatnonzero(bad)[0]]
             raise PressureFileError(f"{source}: row {i + 1}: volume {volume[i] * 1e6:g} cm3 is outside the cylinder "
                                     f"volume {lo * 1e6:.4g}...{hi * 1e6:.4g} cm3 of stroke {n + 1}")
-        out_phi.append(np.interp(volume[rows], v[order], ph[order]))
+        travel = np.clip((volume[rows] - clearance) / area, 0.0, full)
+        upstroke = n % 2 == 1
+        angle = (brix_crank_angle(travel, radius, lam, upstroke) if method == "brix"
+                 else crank_angle_at(travel, radius, lam, k, upstroke=upstroke))
+        out_phi.append(2.0 * np.pi * (n // 2) + angle)
         out_p.append(pressure[rows])
     phi, p = np.concatenate(out_phi), np.concatenate(out_p)
     keep = np.concatenate([[True], np.diff(phi) > 0])
@@ -171,6 +172,53 @@ class WiebeCycle:
     gamma: float = 1.33
 
 
+def wiebe_fraction(phi, cycle, firing):
+    """Wiebe mass fraction burnt x at cycle angles ``phi`` for the firing TDC at ``firing`` [rad].
+
+    Notes
+    -----
+    .. math:: x = 1 - e^{-a z^{m+1}},\\quad z = \\frac{\\varphi - \\varphi_s}{\\Delta\\varphi} > 0,
+
+    zero before the start of combustion :math:`\\varphi_s` (``firing + cycle.start``).
+
+    References
+    ----------
+    I. I. Wiebe, Brennverlauf und Kreisprozess von Verbrennungsmotoren, 1970 (see :class:`WiebeCycle`).
+    """
+    z = np.maximum((np.asarray(phi, dtype=float) - firing - cycle.start) / cycle.duration, 0.0)
+    return -np.expm1(-cycle.a * z ** (cycle.m + 1.0))
+
+
+def wiebe_rate(phi, cycle, firing):
+    """Wiebe burn rate dx/dphi [1/rad] at cycle angles ``phi`` for the firing TDC at ``firing`` [rad].
+
+    Notes
+    -----
+    .. math:: \\frac{dx}{d\\varphi} = \\frac{a(m+1)}{\\Delta\\varphi}\\,z^m e^{-a z^{m+1}}
+
+    for z > 0 (see :func:`wiebe_fraction`), zero before the start of combustion; integrable but
+    unbounded at the start for -1 < m < 0.
+
+    References
+    ----------
+    I. I. Wiebe, Brennverlauf und Kreisprozess von Verbrennungsmotoren, 1970 (see :class:`WiebeCycle`).
+    """
+    z = (np.asarray(phi, dtype=float) - firing - cycle.start) / cycle.duration
+    burning = z > 0.0
+    zb = np.where(burning, z, 1.0)
+    rate = cycle.a * (cycle.m + 1.0) / cycle.duration * zb**cycle.m * np.exp(-cycle.a * zb ** (cycle.m + 1.0))
+    return np.where(burning, rate, 0.0)
+
+
+WIEBE_PIECE = np.radians(5.0)
+"""Longest piece of the closed cycle [rad] in the quadrature of the heat-release integral: a 16-point
+Gauss-Legendre rule is exact to round-off on it whatever grid the pressure is asked on."""
+
+WIEBE_GRADING = 50
+"""Pieces of the quadrature graded towards the start of combustion, at Delta phi / 2^j, j < 50: the
+integrand behaves like z^(m+1) there, smooth only for an integer m."""
+
+
 def wiebe_pressure(phi, cycle, bore, radius, lam, strokes, k=0.0):
     """Cylinder pressure of the Wiebe cycle model at cycle angles ``phi`` [Pa].
 
@@ -181,34 +229,51 @@ def wiebe_pressure(phi, cycle, bore, radius, lam, strokes, k=0.0):
     .. math:: \\frac{dp}{d\\varphi} = \\frac{\\gamma - 1}{V}\\,Q\\frac{dx}{d\\varphi}
               - \\gamma\\frac{p}{V}\\frac{dV}{d\\varphi},
 
-    integrated with :func:`scipy.integrate.solve_ivp` from the intake pressure at BDC.
+    which the integrating factor :math:`V^\\gamma` makes exact,
+    :math:`d(pV^\\gamma)/d\\varphi = (\\gamma - 1)\\,Q\\,V^{\\gamma-1}\\,dx/d\\varphi`; from the intake
+    pressure p_0 at BDC (angle :math:`\\varphi_0`, volume V_0), with :math:`V_s = V(\\varphi_s)` at the
+    start of combustion taken out of the integral in closed form,
+
+    .. math:: p\\,V^\\gamma = p_0V_0^\\gamma + (\\gamma - 1)\\,Q\\left[V_s^{\\gamma-1}\\big(x(\\varphi) -
+              x(\\varphi_0)\\big) + \\int_{\\varphi_0}^{\\varphi}\\big(V^{\\gamma-1} - V_s^{\\gamma-1}\\big)
+              \\frac{dx}{d\\varphi'}\\,d\\varphi'\\right].
+
+    The remaining integrand is bounded (it vanishes like :math:`z^{m+1}` at the start) and is
+    integrated by :func:`~valvetrain.numerics.cumulative_integral` in pieces of at most
+    :data:`WIEBE_PIECE`, cut at the start and the nominal end of combustion and graded towards the
+    start (:data:`WIEBE_GRADING`); V is the exact cylinder volume (:func:`cylinder_volume`).
+
+    References
+    ----------
+    Wiebe's heat release, see :class:`WiebeCycle`; the single-zone energy equation with a
+    constant ratio of specific heats and no wall heat loss, integrated in closed form here.
     """
     phi = np.asarray(phi, dtype=float)
     firing = np.pi * (strokes - 2)          # 2 pi for a four-stroke, 0 (= 2 pi) for a two-stroke
-    area = np.pi * bore**2 / 4.0
+    exponent = cycle.gamma - 1.0
 
     def volume(t):
         return cylinder_volume(t, bore, radius, lam, cycle.compression_ratio, k)
 
-    def dvolume(t):  # dV/dphi = F_p ds/dphi = F_p v / omega, exact (seed 001 kinematics)
-        return area * velocity(t, radius, lam, 1.0, k)
-
-    def burn_rate(t):
-        z = (t - firing - cycle.start) / cycle.duration
-        if z <= 0.0:
-            return 0.0
-        return cycle.a * (cycle.m + 1) / cycle.duration * z**cycle.m * np.exp(-cycle.a * z ** (cycle.m + 1))
-
-    def rhs(t, p):
-        v = volume(t)
-        return [(cycle.gamma - 1.0) / v * cycle.heat_input * burn_rate(t) - cycle.gamma * p[0] / v * dvolume(t)]
-
     t0, t1 = firing - np.pi, firing + np.pi
-    sol = solve_ivp(rhs, (t0, t1), [cycle.intake_pressure], method="LSODA", dense_output=True, rtol=1e-9, atol=1.0,
-                    max_step=np.radians(0.5))
+    burn = firing + cycle.start
+    at_start = volume(burn) ** exponent
+
+    def excess(t):
+        return (volume(t) ** exponent - at_start) * wiebe_rate(t, cycle, firing)
+
     length = cycle_length(strokes)
     rel = np.mod(phi - t0, length)                  # angle since the start of the closed cycle
-    p = np.where(rel <= 2 * np.pi, sol.sol(t0 + np.clip(rel, 0.0, 2 * np.pi))[0], cycle.intake_pressure)
+    closed = rel <= 2 * np.pi
+    t = t0 + rel[closed]
+    grid = np.unique(np.concatenate([[t0, t1], t]))
+    pieces = np.linspace(t0, t1, int(np.ceil(2 * np.pi / WIEBE_PIECE)) + 1)
+    graded = burn + cycle.duration * 2.0 ** -np.arange(WIEBE_GRADING)
+    released = (at_start * (wiebe_fraction(grid, cycle, firing) - wiebe_fraction(t0, cycle, firing))
+                + cumulative_integral(excess, grid, np.concatenate([pieces, [burn], graded])))
+    pv = cycle.intake_pressure * volume(t0) ** cycle.gamma + exponent * cycle.heat_input * released
+    p = np.full(phi.shape, cycle.intake_pressure)
+    p[closed] = pv[np.searchsorted(grid, t)] / volume(t) ** cycle.gamma
     if strokes == 4:
         cyc = np.mod(phi, length)
         p = np.where((cyc > 3 * np.pi) & (cyc < 4 * np.pi), cycle.exhaust_pressure, p)

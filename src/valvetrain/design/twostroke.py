@@ -3,11 +3,10 @@
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import brentq
 
 from .. import twostroke
 from ..checks import check
-from ..crank.kinematics import displacement
+from ..crank.kinematics import crank_angle_at
 from .crank import crank_geometry
 from .results import quantity, record
 
@@ -84,7 +83,7 @@ def _skirt_opening(lower, piston_height, radius, lam, exact):
         return 0.0
     if travel >= 2.0 * radius:
         return np.pi
-    return brentq(lambda a: displacement(a, radius, lam, exact=exact) - travel, 0.0, np.pi, xtol=1e-14)
+    return float(crank_angle_at(travel, radius, lam, exact=exact))
 
 
 def two_stroke_stage(ts, crank, eng):

@@ -19,9 +19,10 @@ from abc import ABC, abstractmethod
 from dataclasses import dataclass
 
 import numpy as np
+from numba import njit
 
 from .. import geometry
-from ..numerics import extremum, level_span
+from ..numerics import bracketed_roots, level_span
 
 
 @dataclass(frozen=True)
@@ -231,13 +232,59 @@ class LiftLaw(ABC):
         return np.hypot(*self.profile(0.5 * (lo + hi), heel_radius, follower, roller_radius)[0])
 
     def extremes(self, omega):
-        """Extreme velocity and accelerations at camshaft speed omega [rad/s], found on the analytic law."""
+        """Extreme velocity and accelerations at camshaft speed omega [rad/s], found on the analytic law.
+
+        Notes
+        -----
+        A velocity extreme lies where d2h/dtheta2 = 0 or at a segment end, an acceleration
+        extreme where d3h/dtheta3 = 0 or at a segment end (a kink, or the jump of a law with
+        continuity 1, where either side may hold the extreme).  Every segment is sampled at
+        :data:`EXTREME_SAMPLES` angles from :data:`EDGE_INSET` inside its ends (its own formula
+        there, the one-sided limits to that inset); every change of sign of the next derivative
+        between two samples that makes a maximum (minimum) is refined to its root, all at once
+        (:func:`~valvetrain.numerics.bracketed_roots`).  The extreme is the best of the
+        breakpoints, the samples and the roots.  The largest velocity is searched on the opening
+        flank, up to the nose (theta = 0, a breakpoint of every law).
+        """
         edges = self.breakpoints
-        opening = edges[edges <= 0.0]          # the nose is at theta = 0 for every law
-        xv, v = extremum(lambda t: self.derivatives(t)[1], opening, "max")
-        xa, amax = extremum(lambda t: self.derivatives(t)[2], edges, "max")
-        xn, amin = extremum(lambda t: self.derivatives(t)[2], edges, "min")
+        t = np.linspace(0.0, 1.0, EXTREME_SAMPLES)
+        t[[0, -1]] = EDGE_INSET, 1.0 - EDGE_INSET
+        x = edges[:-1, None] + np.diff(edges)[:, None] * t
+        d = self.derivatives(np.concatenate([edges, x.ravel()]))
+        at_edges, d = d[:, :edges.size], d[:, edges.size:].reshape((4,) + x.shape)
+        everywhere = np.ones(x.shape[0], dtype=bool)
+        searches = [(1, 1.0, edges[1:] <= 0.0), (2, 1.0, everywhere), (2, -1.0, everywhere)]
+        brackets = [_peak_brackets(x[m], sign * d[row + 1][m]) for row, sign, m in searches]
+        which = np.concatenate([np.full(b[0].size, n) for n, b in enumerate(brackets)])
+        rows = np.array([row + 1 for row, _, _ in searches])[which]
+        signs = np.array([sign for _, sign, _ in searches])[which]
+        roots = bracketed_roots(lambda t: signs * self.derivatives(t)[rows, np.arange(t.size)],
+                                *(np.concatenate(parts) for parts in zip(*brackets, strict=True)))
+        at_roots = self.derivatives(roots)
+        found = []
+        for n, (row, sign, m) in enumerate(searches):
+            ends = edges <= edges[1:][m].max()
+            xs = np.concatenate([edges[ends], x[m].ravel(), roots[which == n]])
+            ys = np.concatenate([at_edges[row][ends], d[row][m].ravel(), at_roots[row][which == n]])
+            i = int(np.argmax(sign * ys))
+            found.append((float(xs[i]), float(ys[i])))
+        (xv, v), (xa, amax), (xn, amin) = found
         return Extremes(omega * v, omega**2 * amax, omega**2 * amin, xv, xa, xn)
+
+
+EXTREME_SAMPLES = 65
+"""Samples per segment in :meth:`LiftLaw.extremes`."""
+
+EDGE_INSET = 1e-12
+"""Inset of the first and last sample of a segment from its ends, a fraction of its length: far above the
+round-off of a law's own segment search, so the sample takes the segment's formula."""
+
+
+def _peak_brackets(x, slope):
+    """Brackets ``(a, b, slope(a), slope(b))`` between consecutive samples (along the last axis) where the slope
+    falls from positive to negative: each holds a maximum of the function."""
+    falls = (slope[..., :-1] > 0.0) & (slope[..., 1:] < 0.0)
+    return x[..., :-1][falls], x[..., 1:][falls], slope[..., :-1][falls], slope[..., 1:][falls]
 
 
 class RampedLaw(LiftLaw):
@@ -259,11 +306,14 @@ class RampedLaw(LiftLaw):
 
 
 class SymmetricLaw(LiftLaw):
-    """A law symmetric about the nose, defined by its rise ``_rise(phi)`` on the opening side.
+    """A law symmetric about the nose, defined by its rise on the opening side.
 
     ``phi`` is the camshaft angle from the start of the event (ramp start),
     ``0 <= phi <= half_angle``; the law mirrors it onto the closing flank with
     ``phi = half_angle - |theta|``: ``h`` and ``h''`` are even, ``h'`` and ``h'''`` odd.
+    A law gives its rise either vectorised, ``_rise(phi)``, mirrored by :meth:`_mirrored`, or
+    in a compiled kernel that overrides :meth:`_mirrored` and mirrors each angle with
+    :func:`mirror` as it goes (one pass over the angles, no masks).
     """
 
     @property
@@ -275,9 +325,9 @@ class SymmetricLaw(LiftLaw):
     def _rise_segments(self):
         """``[(name, phi_start, phi_end), ...]`` on the opening side, in rise coordinates."""
 
-    @abstractmethod
     def _rise(self, phi):
-        """Rise and its derivatives with respect to phi, shape (4, n)."""
+        """Rise and its derivatives with respect to phi, shape (4, n) (for :meth:`_mirrored`)."""
+        raise NotImplementedError
 
     @property
     def segments(self):
@@ -289,14 +339,31 @@ class SymmetricLaw(LiftLaw):
 
     def derivatives(self, theta):
         theta = np.asarray(theta, dtype=float)
-        flat = theta.ravel()
-        out = np.zeros((4, flat.size))
-        inside = np.abs(flat) <= self.half_angle
-        t = flat[inside]
+        out = np.zeros((4, theta.size))
+        self._mirrored(np.ascontiguousarray(theta).ravel(), out)
+        return out.reshape((4,) + theta.shape)
+
+    def _mirrored(self, theta, out):
+        """Write the law at the angles ``theta`` (1-D) into ``out`` (zeros, shape (4, n)) by mirroring :meth:`_rise`."""
+        inside = np.abs(theta) <= self.half_angle
+        t = theta[inside]
         r = self._rise(self.half_angle - np.abs(t))
         r[1::2] *= -np.sign(t)
         out[:, inside] = r
-        return out.reshape((4,) + theta.shape)
+
+
+@njit(cache=True)
+def mirror(theta, half):
+    """The rise coordinate of a symmetric law at one angle (compiled kernels; see :class:`SymmetricLaw`).
+
+    Returns
+    -------
+    (float, float)
+        ``phi = half - |theta|`` [rad] (negative on the base circle) and the factor of the odd
+        derivatives: 1 on the opening flank (theta < 0), -1 on the closing flank, 0 at the nose.
+    """
+    flip = 1.0 if theta < 0.0 else (-1.0 if theta > 0.0 else 0.0)
+    return half - abs(theta), flip
 
 
 def segment_index(x, edges):

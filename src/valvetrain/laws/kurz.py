@@ -9,10 +9,11 @@ solution of the continuity system (2.9)-(2.22).
 from dataclasses import asdict, dataclass
 
 import numpy as np
+from numba import njit
 
 from ..checks import check
-from .base import RampedLaw, SymmetricLaw, segment_index
-from .ramps import make_ramp
+from .base import RampedLaw, SymmetricLaw, mirror
+from .ramps import make_ramp, ramp_at
 
 RAMP_VELOCITY_RANGE_MM_PER_DEG = (0.008, 0.022)
 """Recommended tappet velocity at the end of the ramp [mm/deg cam] (seed 000, eq. 2.1)."""
@@ -167,28 +168,10 @@ class KurzLaw(RampedLaw, SymmetricLaw):
         e = self._edges
         return [("ramp", e[0], e[1]), ("Phi1", e[1], e[2]), ("Phi2", e[2], e[3]), ("Phi3", e[3], e[4])]
 
-    def _rise(self, phi):
-        c, h0 = self.c, self.clearance
-        out = np.empty((4, phi.size))
-        seg = segment_index(phi, self._edges)
-        x = phi - self._edges[seg]
-        m = seg == 0
-        out[:, m] = self.ramp.evaluate(x[m])
-        m = seg == 1
-        k = np.pi / self.phi1
-        s, co = np.sin(k * x[m]), np.cos(k * x[m])
-        out[:, m] = [h0 + c.c11 * x[m] - c.c12 * s, c.c11 - c.c12 * k * co, c.c12 * k**2 * s, c.c12 * k**3 * co]
-        m = seg == 2
-        k = np.pi / (2.0 * self.phi2)
-        s, co = np.sin(k * x[m]), np.cos(k * x[m])
-        h1k = h0 + c.c11 * self.phi1
-        out[:, m] = [h1k + c.c21 * x[m] + c.c22 * s, c.c21 + c.c22 * k * co, -c.c22 * k**2 * s, -c.c22 * k**3 * co]
-        m = seg == 3
-        y = self.phi3 - x[m]
-        h2k = h1k + c.c21 * self.phi2 + c.c22
-        out[:, m] = [h2k + c.c31 * y**4 + c.c32 * y**2 + c.c33, -(4.0 * c.c31 * y**3 + 2.0 * c.c32 * y),
-                     12.0 * c.c31 * y**2 + 2.0 * c.c32, -24.0 * c.c31 * y]
-        return out
+    def _mirrored(self, theta, out):
+        c = self.c
+        _kurz_kernel(theta, out, self.half_angle, self._edges, self.ramp.parameters,
+                     (self.clearance, c.c11, c.c12, c.c21, c.c22, c.c31, c.c32, c.c33, self.phi1, self.phi2, self.phi3))
 
     def coefficients(self):
         """Coefficients and auxiliaries in the manual's units (mm, rad), keys as in seed 000."""
@@ -252,3 +235,44 @@ class KurzLaw(RampedLaw, SymmetricLaw):
             check("(Phi2+Phi3)/Phi1", (self.phi2 + self.phi3) / self.phi1, *NEGATIVE_TO_POSITIVE_RANGE,
                   source="seed 000, work 2, eq. (2.4)"),
         ]
+
+
+@njit(cache=True)
+def _kurz_kernel(theta, out, half, edges, ramp, coefficients):
+    """Kurz law at the angles ``theta`` into ``out`` (zeros, shape (4, n)), one pass (see :class:`KurzLaw`).
+
+    Notes
+    -----
+    With x the angle from the start of each segment: the ramp (:func:`~.ramps.ramp_at`); Phi1
+    :math:`h = h_0 + c_{11}x - c_{12}\\sin(\\pi x/\\Phi_1)`; Phi2
+    :math:`h = h_{1K} + c_{21}x + c_{22}\\sin(\\pi x/(2\\Phi_2))`; Phi3, with y = Phi3 - x the angle to
+    the nose, :math:`h = h_{2K} + c_{31}y^4 + c_{32}y^2 + c_{33}`; :math:`h_{1K} = h_0 + c_{11}\\Phi_1`,
+    :math:`h_{2K} = h_{1K} + c_{21}\\Phi_2 + c_{22}`, and their derivatives.
+
+    References
+    ----------
+    seed 000, work 2, eqs. (2.5)-(2.8).
+    """
+    h0, c11, c12, c21, c22, c31, c32, c33, phi1, phi2, phi3 = coefficients
+    k1, k2 = np.pi / phi1, np.pi / (2.0 * phi2)
+    h1k = h0 + c11 * phi1
+    h2k = h1k + c21 * phi2 + c22
+    for i in range(theta.size):
+        phi, flip = mirror(theta[i], half)
+        if phi < 0.0:
+            continue
+        if phi < edges[1]:
+            h, v, a, j = ramp_at(ramp[0], phi, ramp[1], ramp[2], ramp[3], ramp[4])
+        elif phi < edges[2]:
+            x = phi - edges[1]
+            s, co = np.sin(k1 * x), np.cos(k1 * x)
+            h, v, a, j = h0 + c11 * x - c12 * s, c11 - c12 * k1 * co, c12 * k1**2 * s, c12 * k1**3 * co
+        elif phi < edges[3]:
+            x = phi - edges[2]
+            s, co = np.sin(k2 * x), np.cos(k2 * x)
+            h, v, a, j = h1k + c21 * x + c22 * s, c21 + c22 * k2 * co, -c22 * k2**2 * s, -c22 * k2**3 * co
+        else:
+            y = phi3 - (phi - edges[3])
+            h = h2k + c31 * y**4 + c32 * y**2 + c33
+            v, a, j = -(4.0 * c31 * y**3 + 2.0 * c32 * y), 12.0 * c31 * y**2 + 2.0 * c32, -24.0 * c31 * y
+        out[0, i], out[1, i], out[2, i], out[3, i] = h, flip * v, a, flip * j

@@ -11,10 +11,11 @@ ends at zero acceleration, so the joined law is C2; its jerk jumps at the juncti
 """
 
 import numpy as np
+from numba import njit
 
 from ..checks import check
-from .base import RampedLaw, SymmetricLaw
-from .ramps import make_ramp
+from .base import RampedLaw, SymmetricLaw, mirror
+from .ramps import make_ramp, ramp_at
 
 EXPONENT_P_RANGE = (6, 16)
 """Recommended first exponent p: 6-10 for fast passenger-car engines, 12-16 for trucks (seed 000, work 3)."""
@@ -188,25 +189,15 @@ class PolynomialLaw(RampedLaw, SymmetricLaw):
         ramp = [("ramp", 0.0, self.ramp_angle)] if self.ramp is not None else []
         return ramp + [(self.name, self.ramp_angle, self.half_angle)]
 
-    def _rise(self, phi):
-        out = np.empty((4, phi.size))
-        ramp = phi < self.ramp_angle
-        if self.ramp is not None:
-            out[:, ramp] = self.ramp.evaluate(phi[ramp])
-        x = (self.half_angle - phi[~ramp]) / self.phi_p0
-        # d^j/dx^j of sum a_k x^k: a quadratic term directly, the others from one power x^(k-3) per exponent
+    def _mirrored(self, theta, out):
         quad = self._k == 2.0
-        c2 = float(self._a[quad].sum())
-        a, k = self._a[~quad, None], self._k[~quad, None]
-        base = x[None, :] ** (k - 3.0)
-        x1 = x[None, :]
-        series = [(a * base * x1**3).sum(0) + c2 * x * x, (a * k * base * x1**2).sum(0) + 2.0 * c2 * x,
-                  (a * _falling(k, 2) * base * x1).sum(0) + 2.0 * c2, (a * _falling(k, 3) * base).sum(0)]
-        nose = self._lift + self.ramp_height
-        # d/dphi = -d/dtheta_from_nose = -(1/phi_p0) d/dx
-        out[:, ~ramp] = [nose + series[0], -series[1] / self.phi_p0, series[2] / self.phi_p0**2,
-                         -series[3] / self.phi_p0**3]
-        return out
+        a, k = self._a[~quad], self._k[~quad]
+        # x^(k_n - 3) as a running product of x^(k_n - k_(n-1)), one power per distinct step (two for a progression)
+        powers, step = np.unique(np.diff(k, prepend=3.0), return_inverse=True)
+        ramp = self.ramp.parameters if self.ramp is not None else (0, 0.0, 0.0, 0.0, 0.0)
+        _polynomial_kernel(theta, out, self.half_angle, self.ramp_angle, self.phi_p0, self._lift + self.ramp_height,
+                           float(self._a[quad].sum()), np.stack([a, a * k, a * _falling(k, 2), a * _falling(k, 3)]),
+                           powers, np.where(powers == np.round(powers), powers, -1).astype(np.int64), step, ramp)
 
     def coefficients(self):
         """a_k / h_nose (dimensionless, h = h_nose (1 + sum C_k x^k)) keyed ``C<k>``, and the exponents."""
@@ -271,3 +262,43 @@ class PolydyneLaw(PolynomialLaw):
     def checks(self):
         """The recommended range of p (seed 000, work 3)."""
         return [check("polydyne exponent p", self._k[1], *EXPONENT_P_RANGE, source="seed 000, work 3")]
+
+
+@njit(cache=True)
+def _polynomial_kernel(theta, out, half, ramp_angle, phi_p0, nose, c2, weights, powers, whole, step, ramp):
+    """Polynomial law at the angles ``theta`` into ``out`` (zeros, shape (4, n)), one pass (see :class:`PolynomialLaw`).
+
+    Notes
+    -----
+    On the ramp :func:`~.ramps.ramp_at`; after it, with :math:`x = \\theta/\\varphi_{p0}` from the nose,
+    :math:`h = h_{nose} + c_2x^2 + \\sum_n a_n x^{k_n}` and :math:`d^jh/d\\theta^j = \\varphi_{p0}^{-j}\\,d^jh/dx^j`
+    (``weights`` holds :math:`a_n`, :math:`a_nk_n`, :math:`a_nk_n(k_n-1)`, :math:`a_nk_n(k_n-1)(k_n-2)`);
+    :math:`x^{k_n-3}` is the product of ``powers[step[m]]`` = :math:`x^{k_m - k_{m-1}}` over m <= n
+    (:math:`k_0 - 3` first).  The angle phi from the start of the event runs the other way, so
+    the odd derivatives change sign.
+
+    References
+    ----------
+    seed 000, work 3, eq. (3.1); spec/methods-seeds-002-004.md, section 7.
+    """
+    pw = np.empty(powers.size)
+    for i in range(theta.size):
+        phi, flip = mirror(theta[i], half)
+        if phi < 0.0:
+            continue
+        if phi < ramp_angle:
+            h, v, a, j = ramp_at(ramp[0], phi, ramp[1], ramp[2], ramp[3], ramp[4])
+        else:
+            x = (half - phi) / phi_p0
+            for m in range(powers.size):
+                pw[m] = x ** whole[m] if whole[m] >= 0 else x ** powers[m]
+            base, s0, s1, s2, s3 = 1.0, 0.0, 0.0, 0.0, 0.0
+            for n in range(step.size):
+                base *= pw[step[n]]
+                s0 += weights[0, n] * base * x**3
+                s1 += weights[1, n] * base * x**2
+                s2 += weights[2, n] * base * x
+                s3 += weights[3, n] * base
+            h = nose + (s0 + c2 * x * x)
+            v, a, j = -(s1 + 2.0 * c2 * x) / phi_p0, (s2 + 2.0 * c2) / phi_p0**2, -s3 / phi_p0**3
+        out[0, i], out[1, i], out[2, i], out[3, i] = h, flip * v, a, flip * j

@@ -5,6 +5,7 @@ velocity so that the valve opens and seats softly.
 """
 
 import numpy as np
+from numba import njit
 
 
 def cosine_ramp_length(height, end_velocity):
@@ -37,12 +38,13 @@ def cosine_ramp_length(height, end_velocity):
     return np.pi * height / (2.0 * end_velocity)
 
 
-def cosine_ramp(phi, height, length):
-    """Cosine ramp: lift and its first three derivatives with respect to camshaft angle.
+@njit(cache=True)
+def cosine_ramp_at(phi, height, length):
+    """Cosine ramp at one angle: lift and its first three derivatives with respect to camshaft angle.
 
     Parameters
     ----------
-    phi : ndarray
+    phi : float
         Camshaft angle from the start of the ramp, 0 <= phi <= length [rad].
     height : float
         Ramp height h0 [m].
@@ -51,7 +53,7 @@ def cosine_ramp(phi, height, length):
 
     Returns
     -------
-    ndarray, shape (4, n)
+    tuple of float
         h [m], dh/dphi [m/rad], d2h/dphi2 [m/rad^2], d3h/dphi3 [m/rad^3].
 
     Notes
@@ -66,7 +68,47 @@ def cosine_ramp(phi, height, length):
     """
     k = np.pi / (2.0 * length)
     s, c = np.sin(k * phi), np.cos(k * phi)
-    return np.stack([height * (1.0 - c), height * k * s, height * k**2 * c, -height * k**3 * s])
+    return height * (1.0 - c), height * k * s, height * k**2 * c, -height * k**3 * s
+
+
+@njit(cache=True)
+def constant_velocity_ramp_at(phi, end_velocity):
+    """Constant-velocity ramp h = w' phi at one angle: h [m] and its three derivatives (see
+    :class:`ConstantVelocityRamp`)."""
+    return end_velocity * phi, end_velocity, 0.0, 0.0
+
+
+@njit(cache=True)
+def constant_acceleration_ramp_at(phi, end_velocity, accelerating):
+    """Constant-acceleration ramp at one angle: h [m] and its three derivatives (see
+    :class:`ConstantAccelerationRamp`; ``accelerating`` = f alpha_r [rad], the accelerating stretch)."""
+    if phi < accelerating:
+        acc = end_velocity / accelerating
+        return 0.5 * acc * phi**2, acc * phi, acc, 0.0
+    return end_velocity * phi - end_velocity * accelerating / 2.0, end_velocity, 0.0, 0.0
+
+
+COSINE, CONSTANT_VELOCITY, CONSTANT_ACCELERATION = 0, 1, 2
+"""Codes of the ramp kinds in the compiled kernels (:attr:`Ramp.code`)."""
+
+
+@njit(cache=True)
+def ramp_at(code, phi, height, end_velocity, length, fraction):
+    """A ramp of kind ``code`` at one angle phi [rad from its start]: h and its three derivatives (the
+    compiled laws' ramp; the arguments are :attr:`Ramp.parameters`)."""
+    if code == COSINE:
+        return cosine_ramp_at(phi, height, length)
+    if code == CONSTANT_VELOCITY:
+        return constant_velocity_ramp_at(phi, end_velocity)
+    return constant_acceleration_ramp_at(phi, end_velocity, fraction * length)
+
+
+@njit(cache=True)
+def _ramp_values(phi, code, height, end_velocity, length, fraction):
+    out = np.empty((4, phi.size))
+    for i in range(phi.size):
+        out[0, i], out[1, i], out[2, i], out[3, i] = ramp_at(code, phi[i], height, end_velocity, length, fraction)
+    return out
 
 
 class Ramp:
@@ -83,6 +125,12 @@ class Ramp:
     #: whether the ramp starts with zero velocity (a constant-velocity ramp starts with a velocity step)
     starts_at_rest = True
 
+    #: kind code of the compiled kernels (:data:`COSINE`, ...)
+    code = COSINE
+
+    #: acceleration share of the ramp's length (a constant-acceleration ramp's only)
+    fraction = 0.0
+
     def __init__(self, height, end_velocity):
         if not (height > 0 and end_velocity > 0):
             raise ValueError(f"{self.kind} ramp: height and end velocity must be positive")
@@ -94,8 +142,14 @@ class Ramp:
         """Ramp length [rad camshaft]."""
         raise NotImplementedError
 
+    @property
+    def parameters(self):
+        """``(code, height, end_velocity, length, fraction)``, the arguments of :func:`ramp_at`."""
+        return self.code, self.height, self.end_velocity, self.length, self.fraction
+
     def evaluate(self, phi):
-        raise NotImplementedError
+        """Lift and three derivatives at the angles ``phi`` from the start of the ramp, shape (4, n)."""
+        return _ramp_values(np.ascontiguousarray(phi, dtype=float).ravel(), *self.parameters)
 
 
 class CosineRamp(Ramp):
@@ -107,9 +161,6 @@ class CosineRamp(Ramp):
     def length(self):
         return float(cosine_ramp_length(self.height, self.end_velocity))
 
-    def evaluate(self, phi):
-        return cosine_ramp(phi, self.height, self.length)
-
 
 class ConstantVelocityRamp(Ramp):
     """Constant-velocity ramp h = w' phi, length h0 / w' (spec/methods-seeds-002-004.md, section 2).
@@ -118,16 +169,12 @@ class ConstantVelocityRamp(Ramp):
     """
 
     kind = "constant_velocity"
+    code = CONSTANT_VELOCITY
     starts_at_rest = False
 
     @property
     def length(self):
         return self.height / self.end_velocity
-
-    def evaluate(self, phi):
-        phi = np.asarray(phi, dtype=float)
-        z = np.zeros_like(phi)
-        return np.stack([self.end_velocity * phi, z + self.end_velocity, z, z])
 
 
 class ConstantAccelerationRamp(Ramp):
@@ -153,6 +200,7 @@ class ConstantAccelerationRamp(Ramp):
     """
 
     kind = "constant_acceleration"
+    code = CONSTANT_ACCELERATION
 
     def __init__(self, height, end_velocity, fraction=0.5):
         super().__init__(height, end_velocity)
@@ -163,16 +211,6 @@ class ConstantAccelerationRamp(Ramp):
     @property
     def length(self):
         return self.height / (self.end_velocity * (1.0 - self.fraction / 2.0))
-
-    def evaluate(self, phi):
-        phi = np.asarray(phi, dtype=float)
-        ta = self.fraction * self.length
-        acc = self.end_velocity / ta
-        first = phi < ta
-        z = np.zeros_like(phi)
-        h = np.where(first, 0.5 * acc * phi**2, self.end_velocity * phi - self.end_velocity * ta / 2.0)
-        v = np.where(first, acc * phi, self.end_velocity)
-        return np.stack([h, v, np.where(first, acc, 0.0), z])
 
 
 RAMPS = {"cosine": CosineRamp, "constant_velocity": ConstantVelocityRamp,
