@@ -284,7 +284,7 @@ def profile_stage(cam, valve, output):
     bp = law.breakpoints
     theta = _table_grid(law, output.table_step)
     d = law.derivatives(theta)
-    xy, rho, beta, offset = law.profile(theta, heel, follower, roller)
+    _, rho, beta, offset = law.profile(theta, heel, follower, roller)
 
     def area(t):
         return flow.curtain_area(cam.valve_lift(t), valve.throat_diameter, valve.seat_angle)
