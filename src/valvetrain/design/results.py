@@ -9,7 +9,6 @@ from the same metadata.  Fields without the metadata (arrays, the law object) st
 """
 
 from dataclasses import MISSING, field, fields, is_dataclass
-import math
 import typing
 
 import numpy as np
@@ -111,8 +110,3 @@ def json_schema(cls):
             required.append(meta["key"])
     return {"type": "object", "title": cls.__name__, "description": (cls.__doc__ or "").strip().split("\n")[0],
             "properties": props, "required": required}
-
-
-def finite_or_none(x):
-    """A float, or None where it is not defined (not finite)."""
-    return float(x) if x is not None and math.isfinite(x) else None

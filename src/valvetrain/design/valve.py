@@ -23,7 +23,7 @@ from ..specification import SpecError
 from ..springs import NoSpringFits
 from ..units import DEG, MM
 from .drive import drive_stage
-from .results import finite_or_none, quantity, record
+from .results import quantity, record
 
 ACCELERATION_LIMITS = (3500.0, -1500.0)
 """Upper ends of the recommended bands of positive (1500-3500) and negative (500-1500) tappet
@@ -488,5 +488,5 @@ def design_valve(name, valve, engine, gas, output, law=None):
 
 
 __all__ = ["CamResult", "ClearanceResult", "FlowResult", "LiftTable", "ProfileResult", "ValveDesign",
-           "clearance_stage", "design_valve", "finite_or_none", "flow_stage", "law_stage", "profile_stage",
+           "clearance_stage", "design_valve", "flow_stage", "law_stage", "profile_stage",
            "valve_checks", "wrap_crank"]
