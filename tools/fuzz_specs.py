@@ -948,10 +948,10 @@ def check_results(results, tmp, write):
     data = results.to_dict()
     export.json_text(data)                      # must serialise (a TypeError here is a traceback)
     for w in results.warnings:                  # as `valvetrain run` prints them
-        f"warning: {w.quantity} = {w.value:.6g} {w.unit}, recommended {w.range} ({w.source})"  # noqa: B018
+        f"warning: {w.quantity} = {w.shown_value:.6g} {w.unit}, recommended {w.range} ({w.source})"  # noqa: B018
     nans = null_problems(data, names)
-    for fname, columns in _in_memory_columns(results).items():
-        nans += [(_generic_file(k, names), t) for k, t in column_problems(fname, columns)]
+    for fname, cols in _in_memory_columns(results).items():
+        nans += [(_generic_file(k, names), t) for k, t in column_problems(fname, cols)]
     if write:
         out = Path(tmp) / "out"
         export.write_outputs(results, out)
