@@ -159,3 +159,15 @@ def test_bad_p_v_files_are_refused(tmp_path, refused, volumes, message):
     text = _indicator(tmp_path, [0.0], [1e5]).replace('pressure_file = "ind.csv"', 'pressure_file = "pv.csv"')
     out = refused(text)
     assert "crank.pressure_file:" in out and message in out
+
+
+def test_a_long_file_name_is_cut_in_the_message(tmp_path, refused):
+    """A 5000-character table_file name (the fuzzer's) is shown cut, not echoed whole."""
+    import shutil
+    from pathlib import Path
+
+    shutil.copytree(Path(__file__).parent.parent / "examples" / "data", tmp_path / "data")
+    text = (Path(__file__).parent.parent / "examples" / "measured-lobe.toml").read_text()
+    out = refused(text.replace('"data/measured-intake-lobe.csv"', '"' + "x" * 5000 + '.csv"'))
+    line = next(ln for ln in out.splitlines() if "table_file" in ln)
+    assert "cannot read the file" in line and len(line) < 300

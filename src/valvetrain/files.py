@@ -24,11 +24,19 @@ def _short(text):
     return text if len(text) <= ECHO_CHARS else text[:ECHO_CHARS] + "..."
 
 
+def shown_path(path, limit=120):
+    """A file name as shown in a message: whole, or its start and end around '...' when longer than ``limit``."""
+    text = str(path)
+    return text if len(text) <= limit else f"{text[:40]}...{text[-(limit - 43):]}"
+
+
 def _text(path, error):
     try:
         return Path(path).read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError) as exc:
-        raise error(f"{path}: cannot read the file: {exc}") from None
+    except OSError as exc:
+        raise error(f"{shown_path(path)}: cannot read the file: {exc.strerror or exc}") from None
+    except UnicodeDecodeError as exc:
+        raise error(f"{shown_path(path)}: cannot read the file: not UTF-8 text ({exc.reason})") from None
 
 
 def read_two_columns(path, headers, error):
@@ -53,22 +61,22 @@ def read_two_columns(path, headers, error):
     rows = [(n, r) for n, r in enumerate(csv.reader(text.splitlines()), start=1)
             if r and not r[0].lstrip().startswith("#")]
     if not rows:
-        raise error(f"{path}: the file is empty")
+        raise error(f"{shown_path(path)}: the file is empty")
     n0, header = rows[0]
     key = tuple(h.strip() for h in header)
     if key not in headers:
         allowed = " or ".join(repr(",".join(h)) for h in headers)
-        raise error(f"{path}:{n0}: header {_short(','.join(key))!r}: allowed {allowed}")
+        raise error(f"{shown_path(path)}:{n0}: header {_short(','.join(key))!r}: allowed {allowed}")
     out = []
     for n, r in rows[1:]:
         if len(r) != 2:
-            raise error(f"{path}:{n}: expected 2 values, found {len(r)}")
+            raise error(f"{shown_path(path)}:{n}: expected 2 values, found {len(r)}")
         try:
             x, y = float(r[0]), float(r[1])
         except ValueError:
-            raise error(f"{path}:{n}: {_short(','.join(r))!r} is not two numbers") from None
+            raise error(f"{shown_path(path)}:{n}: {_short(','.join(r))!r} is not two numbers") from None
         if not (np.isfinite(x) and np.isfinite(y)):
-            raise error(f"{path}:{n}: values must be finite")
+            raise error(f"{shown_path(path)}:{n}: values must be finite")
         out.append((n, x, y))
     return key, out
 
@@ -137,12 +145,12 @@ def read_lift_table(path):
     if back.size:
         i = int(back[0]) + 1
         line = read_two_columns(path, [("angle_deg", "lift_mm")], TableFileError)[1][i][0]
-        raise TableFileError(f"{path}:{line}: angle_deg = {angles[i]:g} must be larger than the previous "
+        raise TableFileError(f"{shown_path(path)}:{line}: angle_deg = {angles[i]:g} must be larger than the previous "
                              f"{angles[i - 1]:g}")
     if angles.size < 10:
-        raise TableFileError(f"{path}: at least 10 rows are needed to fit a lift curve, found {angles.size}")
+        raise TableFileError(f"{shown_path(path)}: at least 10 rows are needed to fit a lift curve, found {angles.size}")
     if angles.size > MAX_TABLE_ROWS:
-        raise TableFileError(f"{path}: {angles.size} rows; allowed at most {MAX_TABLE_ROWS}: thin the table")
+        raise TableFileError(f"{shown_path(path)}: {angles.size} rows; allowed at most {MAX_TABLE_ROWS}: thin the table")
     return angles, lifts
 
 
@@ -173,7 +181,7 @@ def read_indicator(path, strokes):
     PressureFileError
         With the file name and line number of the first problem.
     """
-    where = str(path)
+    where = shown_path(path)
     key, rows = read_two_columns(path, list(_HEADERS), PressureFileError)
     kind = _HEADERS[key]
     xs, ps = [], []

@@ -20,7 +20,7 @@ from pydantic import Field, ValidationError, model_validator
 
 from .. import flow, masses
 from ..checks import check
-from ..files import read_lift_table
+from ..files import read_lift_table, shown_path
 from ..laws import (AsymmetricLaw, CombinedLaw, ConstantAccelerationLaw, DynamicLaw, HarmonicLaw, KurzLaw, PolydyneLaw,
                     PolynomialLaw, TangentLaw, ThreeArcLaw)
 from ..laws.measured import CHECKING_HEIGHTS_MM, MIN_VALVE_LIFT_MM, TableLaw, lobe_table
@@ -557,7 +557,7 @@ class TableCam(_CamBase):
         try:
             return self._checked_law(valve, engine)
         except ValueError as exc:
-            raise ValueError(f"{self.table_file}: {exc}") from None
+            raise ValueError(f"{shown_path(self.table_file)}: {exc}") from None
 
     def _checked_law(self, valve, engine):
         cam, i_k = valve.cam, valve.rocker_ratio

@@ -14,6 +14,7 @@ import tomli_w
 
 from pydantic import ValidationError
 
+from ..files import shown_path
 from ..springs import feasible_mean_diameters
 from ..units import MM
 from .cams import LAWS, main_half_angle_deg
@@ -186,9 +187,11 @@ def load_spec(path):
     """Read and validate a specification file."""
     try:
         text = Path(path).read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError) as exc:
-        raise SpecError([f"{path}: cannot read the file: {exc}"]) from None
-    return parse_spec(text, str(path), Path(path).resolve().parent)
+    except OSError as exc:
+        raise SpecError([f"{shown_path(path)}: cannot read the file: {exc.strerror or exc}"]) from None
+    except UnicodeDecodeError as exc:
+        raise SpecError([f"{shown_path(path)}: cannot read the file: not UTF-8 text ({exc.reason})"]) from None
+    return parse_spec(text, shown_path(path), Path(path).resolve().parent)
 
 
 def example_text():
