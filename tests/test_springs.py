@@ -104,6 +104,31 @@ def test_envelope_is_steepest_line_through_full_lift_when_ratio_allows():
     assert c == pytest.approx(np.min((req[top] - req[below]) / (y[top] - y[below])), rel=1e-4)
 
 
+def test_closed_form_envelope_is_the_linear_programme():
+    """The closed-form line of enveloping_line is the optimum of the linear programme of its docstring, solved
+    independently with scipy's HiGHS: the same smallest P_max and, of the optimal lines, the steepest (largest
+    C at that P_max).  Requirements of the seed 000 appendix cam at random masses, reserves and gas forces."""
+    from scipy.optimize import linprog
+
+    rng = np.random.default_rng(10)
+    law = seed000_law()
+    for _ in range(20):
+        y, req = _requirement(law, rng.uniform(0.05, 0.4), rng.uniform(1.5, 2.25))
+        gas = rng.choice([0.0, rng.uniform(0.0, 600.0)])
+        ratios = tuple(rng.choice([(1.6, 3.2), (1.0, 100.0), (2.0, 2.5)]))
+        p0, c = springs.enveloping_line(y, req, ratios, gas)
+        h = y.max()
+        a_ub = np.vstack([np.column_stack([-np.ones_like(y), -y]), [[ratios[0] - 1.0, -h], [1.0 - ratios[1], h]]])
+        b_ub = np.concatenate([-req, [0.0, 0.0]])
+        bounds = [(gas, None), (0.0, None)]
+        lp = linprog([1.0, h], A_ub=a_ub, b_ub=b_ub, bounds=bounds, method="highs")
+        assert p0 + c * h == pytest.approx(lp.fun, rel=1e-6)
+        steep = linprog([0.0, -1.0], A_ub=np.vstack([a_ub, [[1.0, h]]]), b_ub=np.append(b_ub, lp.fun * (1 + 1e-9)),
+                        bounds=bounds, method="highs")
+        # HiGHS meets the constraints to its feasibility tolerance, not to round-off
+        assert c == pytest.approx(steep.x[1], rel=1e-4)
+
+
 def test_design_picks_the_lightest_passing_spring():
     line = springs.Characteristic(150.0, 25e3, 0.009)
     material = springs.SpringMaterial(min_resonance_ratio=5.0)

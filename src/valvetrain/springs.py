@@ -99,12 +99,18 @@ def enveloping_line(lift, required, ratio_range=DEFLECTION_RATIO_RANGE, min_prel
     * keep the deflection ratio in the usual range, :math:`r_1 P_{min} \\le P_{min} + C h \\le r_2 P_{min}`;
     * hold the valve closed against the gas force, :math:`P_{min} \\ge P_g`.
 
-    This is a linear programme in (P_min, C), solved with :func:`scipy.optimize.linprog`.
-    Where the ratio bound is slack, the optimum is the steepest line through the
-    full-lift point c' that stays above the curve (the reading of the graphical
-    construction in spec/valvetrain-works-1-8.md, work 5); a polydyne cam, whose
-    requirement is flat at the nose, gets the line of the smallest allowed ratio.  At
-    the optimum the line touches the requirement at least once.
+    This is a linear programme in (P_min, C), solved here in closed form.  Written with
+    the ratio r = P_max / P_min and u_i = y_i / h, a line of ratio r above the requirement
+    has :math:`P_{max} \\ge \\max_i r P_i / (1 + (r - 1) u_i)` (and :math:`\\ge r P_g`);
+    every term grows with r, so the smallest P_max is
+    :math:`P^* = \\max(\\max_i r_1 P_i / (1 + (r_1 - 1) u_i), r_1 P_g)`, reached by every
+    ratio up to :math:`r^* = \\min(r_2, \\min_{P_i > P^* u_i} P^* (1 - u_i) / (P_i - P^* u_i),
+    P^* / P_g)`.  Of these optimal lines the steepest, r*, is taken: where the ratio bound
+    is slack it is the steepest line through the full-lift point c' that stays above the
+    curve (the reading of the graphical construction in spec/valvetrain-works-1-8.md,
+    work 5); a polydyne cam, whose requirement is flat at the nose, gets the line of the
+    smallest allowed ratio.  The line touches the requirement at least once, or sits on
+    the gas force.
 
     References
     ----------
@@ -119,21 +125,20 @@ def enveloping_line(lift, required, ratio_range=DEFLECTION_RATIO_RANGE, min_prel
     >>> round(p0, 6), round(c, 6)
     (6.25, 6.875)
     """
-    from scipy.optimize import linprog
-
     y = np.asarray(lift, dtype=float)
     p = np.asarray(required, dtype=float)
     h = float(y.max())
+    u = y / h
     r1, r2 = ratio_range
-    # variables x = (P_min, C); minimise P_min + C h
-    a_ub = np.vstack([np.column_stack([-np.ones_like(y), -y]),       # P_min + C y >= P
-                      [[r1 - 1.0, -h], [1.0 - r2, h]]])               # r1 P_min <= P_max <= r2 P_min
-    b_ub = np.concatenate([-p, [0.0, 0.0]])
-    res = linprog([1.0, h], A_ub=a_ub, b_ub=b_ub, bounds=[(max(min_preload, 0.0), None), (0.0, None)],
-                  method="highs")
-    if not res.success:
-        raise ValueError(f"no straight spring characteristic envelops the requirement: {res.message}")
-    return float(res.x[0]), float(res.x[1])
+    gas = max(min_preload, 0.0)
+    p_max = max(float(np.max(r1 * p / (1.0 + (r1 - 1.0) * u))), r1 * gas)
+    if p_max <= 0.0:
+        return 0.0, 0.0
+    excess = p - p_max * u
+    bounds = [r2, *(p_max * (1.0 - u[excess > 0.0]) / excess[excess > 0.0])] + ([p_max / gas] if gas > 0.0 else [])
+    ratio = max(min(bounds), r1)
+    preload = p_max / ratio
+    return float(preload), float((ratio - 1.0) * preload / h)
 
 
 def gas_opening_force(throat_diameter, port_pressure, cylinder_pressure):
