@@ -236,6 +236,61 @@ def test_array_checks_agree_with_the_check_records():
         assert min(design.margins.values()) == pytest.approx(found.worst_margin[i], rel=1e-12)
 
 
+def test_surge_frequency_is_bought_with_stress():
+    """omega_c1 = pi tau_max / (chi f_max sqrt(2 rho G)), from (6.1), (6.2) and (6.13) with the actual (rounded)
+    coils, for every candidate of a grid; so a resonance ratio needs a stress independent of d and D."""
+    line = springs.Characteristic(270.0, 58e3, 0.010)
+    material = springs.SpringMaterial("VDSiCr")
+    found = springs.evaluate_springs(line.preload, line.rate, line.lift, np.linspace(0.02, 0.034, 15)[:, None],
+                                     springs.wire_series()[None, :], material, SEED000_OMEGA_EXACT)
+    ok = np.isfinite(found.shape_factor)
+    f_max = (found.preload + found.rate * line.lift) / found.rate
+    stress = springs.resonance_stress(found.resonance_ratio, SEED000_OMEGA_EXACT, f_max, found.shape_factor,
+                                      material.shear_modulus, material.density)
+    assert np.allclose(stress[ok], found.tau_max[ok], rtol=1e-12)
+
+
+def test_resonance_needs_more_stress_than_60s2a_allows_at_7000_rpm():
+    """E27 in numbers: at the seed 000 appendix speed (omega_cam = 366.5 rad/s) and lift (10 mm) a line of
+    f_max/f_min <= 3.2 has f_max >= 14.545 mm; with chi >= 1.1 (D/d <= 12) the ratio 10 needs, by hand,
+    10 x 366.52 x 1.1 x 0.014545 x sqrt(2 x 7850 x 8e10) / pi = 661.5 MPa, above [tau] = 500 MPa of 60S2A
+    (seed 000, work 6): no spring of the manual's steel can pass."""
+    w = springs.stress_window(springs.SpringMaterial(), 0.010, SEED000_OMEGA_EXACT)
+    assert w["ratio"] == pytest.approx(3.2)
+    assert w["max_deflection"] == pytest.approx(0.010 * 3.2 / 2.2)
+    assert w["needed"] / 1e6 == pytest.approx(661.5, abs=0.1)
+    assert w["allowed"] == pytest.approx(500e6)
+    tau = springs.fatigue_stress_limit(370e6, 0.2, 3.2, 1.3)
+    assert tau / 1e6 == pytest.approx(2 * 370 / (1.3 * (1 - 1 / 3.2 + 0.2 * (1 + 1 / 3.2))), rel=1e-12)
+
+
+def test_diagnosis_of_the_example_in_60s2a():
+    """The appendix requirement (m_v 0.147 kg: the example's parts with its spring) with the manual's steel:
+    no spring passes; the diagnosis names tau_max and the resonance ratio, shows the stress window of E27, and
+    each remedy it proposes passes when tried (VDSiCr; a lower speed), while a lower mass does not help (the
+    resonance ratio does not depend on the force)."""
+    law = seed000_law()
+    y, req = _requirement(law, 0.147)
+    requirement = springs.Requirement(y, req, springs.seat_load(0.147))
+    options = springs.SpringOptions()
+    search = springs.design_springs(requirement, 0.0368, SEED000_OMEGA_EXACT, options)
+    assert not search.passes and search.passing == 0
+    d = springs.diagnose(requirement, 0.0368, SEED000_OMEGA_EXACT, options, search, np.pi * 7000 / 30)
+    checks = {x["check"] for x in d["conflicts"]}
+    assert {"tau_max", "resonance_ratio"} <= checks
+    assert d["resonance"]["stress_needed_MPa"] > d["resonance"]["stress_allowed_MPa"] == pytest.approx(500.0)
+    remedies = {x["change"]: x for x in d["remedies"]}
+    assert remedies["material"]["to"] == "VDSiCr"
+    vdsicr = replace(options, materials=(springs.SpringMaterial("VDSiCr"),))
+    assert springs.design_springs(requirement, 0.0368, SEED000_OMEGA_EXACT, vdsicr).passes
+    f = remedies["rated_speed_factor"]["to"]
+    assert 0.3 < f < 1.0 and remedies["rated_speed_factor"]["rated_speed_rpm"] == pytest.approx(7000 * f)
+    slower = springs.design_springs(requirement.scaled(f**2), 0.0368, SEED000_OMEGA_EXACT * f, options)
+    assert slower.passes
+    assert {"change": "reduced_mass_factor", "to": 0.1} in d["tried"]
+    assert "needs tau_max >= 662 MPa" in d["text"] and 'material = "VDSiCr"' in d["text"]
+
+
 def test_the_seat_load_holds_a_slow_engine_s_valve():
     """Issue 10: at 600 rpm the inertia asks for a 2.3 N preload.  The preload is at least m_v x 100 g (a stated
     default), or min_preload_N, and never below the gas force (5.4)."""

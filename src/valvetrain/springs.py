@@ -7,7 +7,8 @@ The design searches a grid of springs at once (numpy arrays over the candidates)
 straight lines above the required force with the deflection ratios of the manual, the
 wire grades of :mod:`valvetrain.spring_materials`, the mean diameters D = (0.7...0.9) d_g
 and the wire diameters 2.0...7.0 mm.  The lightest spring that passes every check is
-chosen; when none passes, the one whose worst margin is best.
+chosen; when none passes, :func:`diagnose` names the requirements in conflict and
+computes what would make a spring pass.
 
 Conical (beehive) and progressive-rate springs are not designed: the seeds give no
 formulas for them.
@@ -696,7 +697,7 @@ def enveloping_lines(lift, required, ratios, min_preload=0.0):
     requirement when :math:`P_{min} = \\max(\\max_i P_i / (1 + (r - 1) y_i / h), P_g)`, and
     :math:`C = (r - 1) P_{min} / h`.  The line of :func:`enveloping_line` (smallest P_max)
     is the one of its own ratio; a steeper line has a shorter f_max = h r / (r - 1) and so a
-    higher surge frequency at a given stress.
+    higher surge frequency at a given stress (see :func:`resonance_stress`).
 
     References
     ----------
@@ -1004,3 +1005,220 @@ def design_springs(requirement, throat_diameter, camshaft_speed, options=SpringO
     else:
         designs, passing, tried = design_pair(preloads, rates, lift, throat_diameter, camshaft_speed, options)
     return Search(designs, passing, tried, line)
+
+
+def resonance_stress(ratio, camshaft_speed, max_deflection, shape_factor, shear_modulus, density):
+    """Shear stress at full lift of a spring whose surge frequency is ``ratio`` x omega_cam [Pa].
+
+    Notes
+    -----
+    Eliminating d, D and i_p between (6.1), (6.2) and (6.13):
+
+    .. math:: \\omega_{c1} = \\frac{\\pi \\tau_{max}}{\\chi f_{max} \\sqrt{2 \\rho G}}
+
+    so that a resonance ratio R needs
+    :math:`\\tau_{max} = R \\omega_{cam} \\chi f_{max} \\sqrt{2 \\rho G} / \\pi`, whatever the
+    wire and mean diameters: at a given f_max (fixed by the line, f_max = h r / (r - 1))
+    the frequency can only be bought with stress.
+
+    References
+    ----------
+    seed 000, eqs. (6.1), (6.2), (6.13) (reading [A]).
+
+    Examples
+    --------
+    The seed 000 appendix speed and lift, f_max/f_min = 3.2 (f_max = 14.545 mm), chi = 1.1 (D/d = 12),
+    60S2A: 10 x omega_cam needs 661.5 MPa.
+
+    >>> round(float(resonance_stress(10.0, np.pi * 3500 / 30, 0.010 * 3.2 / 2.2, 1.1, 8e10, 7850.0)) / 1e6, 1)
+    661.5
+    """
+    return ratio * camshaft_speed * shape_factor * max_deflection * np.sqrt(2.0 * density * shear_modulus) / np.pi
+
+
+def fatigue_stress_limit(endurance, mean_stress_factor, ratio, min_safety):
+    """Largest tau_max with a fatigue safety of ``min_safety`` when tau_min = tau_max / ratio [Pa].
+
+    Notes
+    -----
+    From (6.10)-(6.12) with :math:`\\tau_{min} = \\tau_{max} / r` (r = f_max / f_min):
+
+    .. math:: \\tau_{max} = \\frac{2 \\tau_{-1}}{n [(1 - 1/r) + \\psi_\\tau (1 + 1/r)]}
+
+    Examples
+    --------
+    >>> tau = fatigue_stress_limit(370e6, 0.2, 3.2, 1.3)
+    >>> round(float(fatigue_safety(tau, tau / 3.2, 370e6, 0.2)), 12)
+    1.3
+    """
+    return 2.0 * endurance / (min_safety * ((1.0 - 1.0 / ratio) + mean_stress_factor * (1.0 + 1.0 / ratio)))
+
+
+def _passing_factor(trial, floor, tolerance=0.01):
+    """A factor in [floor, 1) for which ``trial(factor)`` passes, found by bisection to ``tolerance`` between
+    ``floor`` (which must pass) and 1 (which failed); None when ``floor`` fails.  The factor returned always
+    passed; with the discrete wire sizes a slightly larger one may pass too."""
+    if not trial(floor):
+        return None
+    good, bad = floor, 1.0
+    while bad - good > tolerance:
+        middle = 0.5 * (good + bad)
+        if trial(middle):
+            good = middle
+        else:
+            bad = middle
+    return float(good)
+
+
+def stress_window(material, lift, camshaft_speed, ratio_range=DEFLECTION_RATIO_RANGE, wire_range_mm=WIRE_RANGE_MM):
+    """The room the resonance check leaves between stress limits, at the best deflection ratio (SI).
+
+    For each ratio r of ``ratio_range`` (every :data:`DEFLECTION_RATIO_STEP`): the stress the
+    resonance ratio needs at f_max = h r / (r - 1) with the smallest shape factor of the
+    table (D/d = 12, :func:`resonance_stress`), and the largest stress the grade allows at
+    the thinnest wire ([tau] and :func:`fatigue_stress_limit` with tau_min = tau_max / r).
+    No spring of the grade can pass when the needed stress exceeds the allowed one at every r.
+
+    Returns
+    -------
+    dict
+        ``ratio``, ``max_deflection`` [m], ``needed`` and ``allowed`` [Pa] at the ratio of the
+        largest allowed / needed.
+    """
+    r = deflection_ratios(ratio_range)
+    f_max = lift * r / (r - 1.0)
+    needed = resonance_stress(material.min_resonance_ratio, camshaft_speed, f_max, SHAPE_FACTOR_TABLE[1][-1],
+                              material.shear_modulus, material.density)
+    allowable, endurance, psi = material.limits(np.array([wire_range_mm[0] * 1e-3]))
+    allowed = np.minimum(allowable, fatigue_stress_limit(endurance, psi, r, material.min_safety))
+    k = int(np.argmax(allowed / needed))
+    return {"ratio": float(r[k]), "max_deflection": float(f_max[k]), "needed": float(needed[k]),
+            "allowed": float(allowed[k])}
+
+
+def _conflicts(search):
+    """Every failing check of the springs of a search: value, limit (display units) and relative shortfall."""
+    out = []
+    for tag, spring in search.designs.items():
+        for key, c in spring.checks.items():
+            if not c.passed:
+                limit = c.high if c.high is not None and (c.low is None or c.value > c.high) else c.low
+                out.append({"spring": tag, "check": key, "quantity": c.quantity, "value": c.shown_value,
+                            "limit": to_display(limit, c.unit), "unit": c.unit, "shortfall": -c.margin})
+    return out
+
+
+def _remedies(requirement, throat_diameter, camshaft_speed, options, conflicts, engine_speed):
+    """(remedies that make a spring pass, remedies tried in vain), each computed by a new search."""
+    def passing(req=requirement, speed=camshaft_speed, **changes):
+        try:
+            found = design_springs(req, throat_diameter, speed, replace(options, **changes))
+        except NoSpringFits:
+            return None
+        return found if found.passes else None
+
+    helped, tried = [], []
+    base = options.materials[0]
+    for name in (n for n in GRADES if n not in {m.grade for m in options.materials}):
+        own = replace(base, grade=name, shear_modulus=None, density=None, allowable_stress=None, endurance_limit=None,
+                      mean_stress_factor=None)
+        found = passing(materials=(own,))
+        (helped if found else tried).append({"change": "material", "to": name,
+                                             **({"spring_mass_kg": found.mass} if found else {})})
+    found = passing(count=3 - options.count)
+    (helped if found else tried).append({"change": "count", "to": 3 - options.count,
+                                         **({"spring_mass_kg": found.mass} if found else {})})
+    if any(x["check"] == "installed_length" for x in conflicts):
+        found = passing(installed_length_range=(None, None))
+        if found:
+            longest = max(s.lengths["installed_length"] for s in found.designs.values())
+            helped.append({"change": "max_installed_length_mm", "to": longest * 1e3, "spring_mass_kg": found.mass})
+        else:
+            tried.append({"change": "max_installed_length_mm"})
+    speed = _passing_factor(lambda f: passing(requirement.scaled(f**2), camshaft_speed * f) is not None, 0.3)
+    if speed is None:
+        tried.append({"change": "rated_speed_factor", "to": 0.3})
+    else:
+        helped.append({"change": "rated_speed_factor", "to": speed,
+                       **({} if engine_speed is None else {"rated_speed_rpm": speed * engine_speed * 30.0 / np.pi})})
+    mass = _passing_factor(lambda f: passing(requirement.scaled(f)) is not None, 0.1)
+    (tried if mass is None else helped).append({"change": "reduced_mass_factor", "to": 0.1 if mass is None else mass})
+    return helped, tried
+
+
+def _remedy_text(x, helped):
+    """One remedy in words."""
+    grams = f" ({x['spring_mass_kg'] * 1e3:.0f} g)" if helped and "spring_mass_kg" in x else ""
+    if x["change"] == "material":
+        return f"material = \"{x['to']}\"{grams}"
+    if x["change"] == "count":
+        return ("a nested pair (count = 2)" if x["to"] == 2 else "one spring (count = 1)") + grams
+    if x["change"] == "max_installed_length_mm":
+        return f"an installed length up to {x['to']:.1f} mm" if helped else "no installed length limit"
+    if x["change"] == "rated_speed_factor":
+        rpm = f" ({x['rated_speed_rpm']:.0f} rpm)" if "rated_speed_rpm" in x else ""
+        return f"a rated speed lowered to {x['to']:.1%}{rpm}" if helped else "a rated speed down to 30 %"
+    return f"a reduced mass lowered by {1.0 - x['to']:.0%}" if helped else "a reduced mass down to 10 %"
+
+
+def diagnose(requirement, throat_diameter, camshaft_speed, options, search, engine_speed=None):
+    """Why no spring of a search passes, by how much, and what would make one pass (each remedy computed).
+
+    Parameters
+    ----------
+    requirement : Requirement
+    throat_diameter, camshaft_speed : float
+        d_g [m] and omega_cam [rad/s].
+    options : SpringOptions
+        The search that found no passing spring.
+    search : Search
+        Its result (the best candidate).
+    engine_speed : float, optional
+        Rated crank speed [rad/s], to state the speed remedy in rpm.
+
+    Returns
+    -------
+    dict
+        ``conflicts``: every failing check of the best candidate with its value, limit and
+        relative shortfall; ``resonance`` (where the resonance check is on):
+        :func:`stress_window` of the best candidate's grade in MPa and mm; ``remedies``: the
+        changes with which a new search finds a passing spring (another grade of
+        :data:`valvetrain.spring_materials.GRADES`, a nested pair or one spring, a longer
+        installed length, a lower rated speed -- forces ~ omega^2, resonance ratio
+        ~ 1/omega --, a lower reduced mass -- forces ~ m), with the spring mass where it
+        applies; ``tried``: those that did not help; ``text``: all of it in words.
+    """
+    conflicts = _conflicts(search)
+    pair = len(search.designs) > 1
+    unit = {x["check"]: f" {x['unit']}" if x["unit"] else "" for x in conflicts}
+    words = [f"{x['spring'] + ' ' if pair else ''}{x['quantity']} {x['value']:.4g}{unit[x['check']]} against "
+             f"{x['limit']:.4g}{unit[x['check']]} (short by {x['shortfall']:.1%})" for x in conflicts]
+    text = [f"No {'nested pair' if pair else 'spring'} passes; the best {'pair' if pair else 'candidate'}: "
+            + "; ".join(words) + "."]
+    out = {"conflicts": conflicts}
+    grade_name = next(iter(search.designs.values())).material
+    material = next(m for m in options.materials if m.grade == grade_name)
+    if material.min_resonance_ratio > 0.0:
+        w = stress_window(material, requirement.max_lift, camshaft_speed, options.ratio_range, options.wire_range_mm)
+        out["resonance"] = {"material": grade_name, "deflection_ratio": w["ratio"],
+                            "max_deflection_mm": w["max_deflection"] * 1e3, "stress_needed_MPa": w["needed"] / 1e6,
+                            "stress_allowed_MPa": w["allowed"] / 1e6}
+        where = (f"at D/d = 12 and f_max/f_min = {w['ratio']:.3g} (f_max = {w['max_deflection'] * 1e3:.3g} mm), "
+                 f"while {grade_name} allows at most {w['allowed'] / 1e6:.0f} MPa there ([tau] and the fatigue safety)")
+        separation = 1.0 + options.min_frequency_difference
+        if w["needed"] > w["allowed"]:
+            text.append(f"The resonance ratio {material.min_resonance_ratio:g} needs tau_max >= {w['needed'] / 1e6:.0f} "
+                        f"MPa even {where}: no wire and no diameter of this grade can pass at this speed and lift.")
+        elif pair and w["needed"] * separation > w["allowed"]:
+            text.append(f"The two springs of a pair share f_max, so their frequencies stand as tau_max / chi: "
+                        f"frequencies {options.min_frequency_difference:.0%} apart with both resonance ratios >= "
+                        f"{material.min_resonance_ratio:g} need tau_max up to {w['needed'] * separation / 1e6:.0f} MPa "
+                        f"even {where}: no nested pair of this grade can pass at this speed and lift.")
+    helped, tried = _remedies(requirement, throat_diameter, camshaft_speed, options, conflicts, engine_speed)
+    out["remedies"], out["tried"] = helped, tried
+    if helped:
+        text.append("A spring passes with " + "; or ".join(_remedy_text(x, True) for x in helped) + ".")
+    if tried:
+        text.append("None passes with " + ", ".join(_remedy_text(x, False) for x in tried) + ".")
+    out["text"] = " ".join(text)
+    return out

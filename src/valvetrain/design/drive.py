@@ -80,9 +80,10 @@ def _spring_record(s):
     }
 
 
-def _spring_checks(tag, s):
-    """A designed spring's own checks, named after the spring (``spring``, ``outer``, ``inner``)."""
-    return [replace(c, quantity=f"{tag} {c.quantity}") for key, c in s.checks.items()
+def _spring_checks(tag, s, note=""):
+    """A designed spring's own checks, named after the spring (``spring``, ``outer``, ``inner``); a failed one
+    carries ``note`` (the diagnosis)."""
+    return [replace(c, quantity=f"{tag} {c.quantity}", note=c.note if c.passed else note) for key, c in s.checks.items()
             if key in ("tau_max", "fatigue_safety", "resonance_ratio", "working_coils", "installed_length",
                        "free_length", "coil_gap_at_full_lift")]
 
@@ -128,6 +129,8 @@ def drive_stage(v, spec, law, omega, heel, roller):
         if v.drive.masses is None or v.drive.masses.spring_kg is not None or abs(new_mass - spring_total_mass) < 1e-7:
             break
         spring_total_mass = new_mass
+    diagnosis = None if search.passes else springs.diagnose(requirement, d_g, omega, options, search,
+                                                            spec.engine.rated_speed_rpm * np.pi / 30.0)
     m_t = masses.reduced_mass_at_tappet(m_v, i_k)
 
     chosen_line = springs.Characteristic(sum(d.characteristic.preload for d in designs.values()),
@@ -141,7 +144,7 @@ def drive_stage(v, spec, law, omega, heel, roller):
     if sp.count == 2:
         found.append(check("inner spring share", sp.inner_share, *springs.INNER_SHARE_RANGE, source="seed 000, work 5"))
     for tag, d in designs.items():
-        found += _spring_checks(tag, d)
+        found += _spring_checks(tag, d, diagnosis["text"] if diagnosis else "")
     if sp.count == 2:
         found.append(replace(designs["inner"].checks["frequency_difference"],
                              quantity="inner/outer spring frequency difference"))
@@ -158,6 +161,8 @@ def drive_stage(v, spec, law, omega, heel, roller):
         "deflection_ratio": ratio, "spring_reserve": v.drive.spring_reserve, "candidates_passing": n_pass,
         "candidates_tried": search.tried,
     }
+    if diagnosis:
+        spring_rec["diagnosis"] = diagnosis
     if sp.count == 1:
         spring_rec.update(_spring_record(designs["spring"]))
     else:
