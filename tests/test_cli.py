@@ -167,24 +167,25 @@ def test_array_keys_are_accepted(tmp_path, refused):
 
 
 def test_a_throat_no_spring_can_serve_is_refused(refused):
-    """D = 0.7...0.9 d_g must meet the wire series' 3 x 2.8 ... 12 x 6.0 = 8.4...72 mm (seed 000, work 6): a 5 mm
-    throat (D 3.5...4.5 mm) is refused at validation, not by a failure in the middle of the run."""
+    """D = 0.7...0.9 d_g must meet the wire range's 3 x 2.0 ... 12 x 7.0 = 6...84 mm (index 3...12, seed 000,
+    work 6): a 5 mm throat (D 3.5...4.5 mm) is refused at validation, not by a failure in the middle of the run."""
     assert "valves.intake.spring.mean_diameter_ratio = [0.7, 0.9] with throat_diameter_mm = 5 gives spring mean " \
-           "diameters 3.5...4.5 mm; the wire series makes 8.4...72 mm" in \
+           "diameters 3.5...4.5 mm; wire of 2...7 mm makes 6...84 mm" in \
            refused(example_text().replace("throat_diameter_mm = 36.8", "throat_diameter_mm = 5.0"))
 
 
 def test_a_pair_without_room_for_the_inner_spring_exits_2(refused):
-    """Seed 000's polydyne example (a nested pair) with an 11.04 mm throat and 5 mm lift: the outer spring leaves an outside
-    diameter of 4.7 mm for the inner one, less than the smallest spring of the series (D = 3 x 2.8 = 8.4 mm, seed
-    000 work 6); the run stops with exit 2 and one message, writing nothing."""
+    """Seed 000's polydyne example as a nested pair with an 11.04 mm throat and 5 mm lift: the outer springs (D
+    = 0.7...0.9 d_g = 7.7...9.9 mm) leave an outside diameter of at most 9.9 - 2.0 - 2 x 1 = 5.9 mm for the
+    inner one, less than the smallest spring of the wire range (D + d = 4 x 2.0 = 8 mm at index 3, seed 000
+    work 6); the run stops with exit 2 and one message, writing nothing."""
     from pathlib import Path
 
     text = (Path(__file__).parent.parent / "examples" / "seed000-polydyne.toml").read_text()
-    text = text.replace("throat_diameter_mm = 36.8", "throat_diameter_mm = 11.04").replace("max_lift_mm = 10.0",
-                                                                                           "max_lift_mm = 5.0")
+    text = text.replace("throat_diameter_mm = 36.8", "throat_diameter_mm = 11.04").replace(
+        "max_lift_mm = 10.0", "max_lift_mm = 5.0").replace("count = 1\n# count = 2", "count = 2\n#")
     for command in ("validate", "run"):
-        assert "valves.intake.spring: no spring of the wire series fits inside the outer spring" in \
+        assert "valves.intake.spring: no spring of the wire range 2...7 mm fits inside the outer spring" in \
                refused(text, command)
 
 

@@ -1,10 +1,12 @@
 """Valve springs: characteristic (seed 000 work 5) and design (work 6), with a textbook spring example."""
 
+from dataclasses import replace
+
 import numpy as np
 import pytest
 from hypothesis import given, settings, strategies as st
 
-from valvetrain import masses, springs
+from valvetrain import masses, spring_materials, springs
 
 from conftest import SEED000_OMEGA_EXACT, seed000_law
 
@@ -104,15 +106,108 @@ def test_envelope_is_steepest_line_through_full_lift_when_ratio_allows():
     assert c == pytest.approx(np.min((req[top] - req[below]) / (y[top] - y[below])), rel=1e-4)
 
 
+def test_closed_form_envelope_is_the_linear_programme():
+    """The closed-form line of enveloping_line is the optimum of the linear programme of its docstring, solved
+    independently with scipy's HiGHS: the same smallest P_max and, of the optimal lines, the steepest (largest
+    C at that P_max).  Requirements of the seed 000 appendix cam at random masses, reserves and gas forces."""
+    from scipy.optimize import linprog
+
+    rng = np.random.default_rng(10)
+    law = seed000_law()
+    for _ in range(20):
+        y, req = _requirement(law, rng.uniform(0.05, 0.4), rng.uniform(1.5, 2.25))
+        gas = rng.choice([0.0, rng.uniform(0.0, 600.0)])
+        ratios = tuple(rng.choice([(1.6, 3.2), (1.0, 100.0), (2.0, 2.5)]))
+        p0, c = springs.enveloping_line(y, req, ratios, gas)
+        h = y.max()
+        a_ub = np.vstack([np.column_stack([-np.ones_like(y), -y]), [[ratios[0] - 1.0, -h], [1.0 - ratios[1], h]]])
+        b_ub = np.concatenate([-req, [0.0, 0.0]])
+        bounds = [(gas, None), (0.0, None)]
+        lp = linprog([1.0, h], A_ub=a_ub, b_ub=b_ub, bounds=bounds, method="highs")
+        assert p0 + c * h == pytest.approx(lp.fun, rel=1e-6)
+        steep = linprog([0.0, -1.0], A_ub=np.vstack([a_ub, [[1.0, h]]]), b_ub=np.append(b_ub, lp.fun * (1 + 1e-9)),
+                        bounds=bounds, method="highs")
+        # HiGHS meets the constraints to its feasibility tolerance, not to round-off
+        assert c == pytest.approx(steep.x[1], rel=1e-4)
+
+
+def test_lines_of_every_ratio_envelop_the_requirement():
+    """enveloping_lines: each line has its ratio, stays above the requirement and touches it (or the gas force);
+    the required line's own ratio gives the required line (eqs. 5.6-5.9)."""
+    y, req = _requirement(seed000_law(), 0.16)
+    ratios = springs.deflection_ratios()
+    p0, c = springs.enveloping_lines(y, req, ratios, 50.0)
+    h = y.max()
+    assert np.allclose((p0 + c * h) / p0, ratios, rtol=1e-12)
+    gap = p0[:, None] + c[:, None] * y[None, :] - req[None, :]
+    assert np.all(gap >= -1e-9 * req.max())
+    assert np.all((np.min(gap, axis=1) <= 1e-9 * req.max()) | np.isclose(p0, 50.0))
+    line = springs.enveloping_line(y, req, min_preload=50.0)
+    p1, c1 = springs.enveloping_lines(y, req, [(line[0] + line[1] * h) / line[0]], 50.0)
+    assert (p1[0], c1[0]) == pytest.approx(line, rel=1e-12)
+
+
+def _brute_force(line, throat, omega, options):
+    """Every candidate of the search, one at a time with the scalar formulas of seed 000 (6.1), (6.2), (6.9)-(6.14)
+    and the wire limits written out (Shigley Table 10-4: R_m = A/d^m; [tau] = 0.5 R_m; Goodman through Zimmerli's
+    peened point, S_su = 0.67 R_m): (passing springs as (mass, D, d), number of candidates)."""
+    material = options.materials[0]
+    a, m = {"VDSiCr": (1974.0, 0.108), "VDCrV": (2005.0, 0.168)}[material.grade]
+    g, rho, h = material.shear_modulus, material.density, line.lift
+    low, high = options.ratio_range
+    passing, count = [], 0
+    for big_d in np.arange(np.ceil(options.diameter_range[0] * throat / options.diameter_step - 1e-9),
+                           np.floor(options.diameter_range[1] * throat / options.diameter_step + 1e-9) + 1) \
+            * options.diameter_step:
+        for d in springs.wire_series(options.wire_range_mm, options.wire_step_mm):
+            if not 3.0 <= big_d / d <= 12.0:
+                continue
+            count += 1
+            rm = a / (d * 1e3) ** m * 1e6
+            su = 0.67 * rm
+            endurance = 398e6 / (1.0 - 534e6 / su)
+            chi = float(np.interp(big_d / d, *springs.SHAPE_FACTOR_TABLE))
+            exact = g * d**4 * line.max_deflection / (8.0 * line.max_force * big_d**3)
+            coils = max(np.floor(2.0 * exact) / 2.0, 1.0)
+            rate = g * d**4 / (8.0 * big_d**3 * coils)
+            p_max = line.preload + rate * h
+            tau_max = 8.0 * chi * p_max * big_d / (np.pi * d**3)
+            tau_min = 8.0 * chi * line.preload * big_d / (np.pi * d**3)
+            safety = endurance / ((tau_max - tau_min) / 2 + endurance / su * (tau_max + tau_min) / 2)
+            omega_c1 = d / (big_d**2 * coils) * np.sqrt(g / (2.0 * rho))
+            installed = d * 1.12 * (coils + 2.0) + d + h
+            if (tau_max <= 0.5 * rm and safety >= material.min_safety and omega_c1 / omega >= 10.0 and exact >= 2.0
+                    and low <= p_max / line.preload <= high and installed <= 6.0 * h):
+                passing.append((rho * np.pi * d**2 / 4 * np.pi * big_d * (coils + 2.0), big_d, d))
+    return passing, count
+
+
+@pytest.mark.parametrize("grade", ["VDSiCr", "VDCrV"])
+def test_vectorised_search_equals_brute_force(grade):
+    """The array search picks the lightest of the candidates a Python loop over the same grid finds passing,
+    and counts the same ones (a seed 000 appendix-sized line, 260 N + 52 N/mm over 10 mm, at 6000 rpm)."""
+    line = springs.Characteristic(260.0, 52e3, 0.010)
+    omega = SEED000_OMEGA_EXACT * 6000 / 7000
+    options = springs.SpringOptions(materials=(springs.SpringMaterial(grade),), wire_range_mm=(3.0, 6.0),
+                                    diameter_step=0.5e-3)
+    best, n_pass, tried = springs.design_spring(line, 0.0368, omega, options)
+    passing, count = _brute_force(line, 0.0368, omega, options)
+    assert tried == count and count > 300 and passing
+    assert n_pass == len(passing)
+    mass, big_d, d = min(passing)
+    assert (best.mass, best.mean_diameter, best.wire_diameter) == pytest.approx((mass, big_d, d), rel=1e-12)
+    assert best.passes
+
+
 def test_design_picks_the_lightest_passing_spring():
     line = springs.Characteristic(150.0, 25e3, 0.009)
-    material = springs.SpringMaterial(min_resonance_ratio=5.0)
-    best, n_pass = springs.design_spring(line, 0.034, material, 300.0)
-    assert n_pass > 0 and best.passes
+    options = springs.SpringOptions(materials=(springs.SpringMaterial(min_resonance_ratio=5.0),))
+    best, n_pass, tried = springs.design_spring(line, 0.034, 300.0, options)
+    assert n_pass > 0 and best.passes and tried >= n_pass
     # every lighter candidate of the search space fails a check
-    for D in np.arange(0.7 * 0.034, 0.9 * 0.034, 0.5e-3):
-        for d in springs.WIRE_SERIES_MM:
-            s = springs.evaluate_spring(line, D, d * 1e-3, material, 300.0)
+    for big_d in np.arange(0.7 * 0.034, 0.9 * 0.034, 0.5e-3):
+        for d in springs.wire_series():
+            s = springs.evaluate_spring(line, big_d, d, options.materials[0], 300.0, max_installed_length=0.054)
             if s is not None and s.mass < best.mass - 1e-12:
                 assert not s.passes
     # the actual line (rounded coils) still envelops the required one
@@ -129,6 +224,125 @@ def test_a_zero_minimum_switches_a_check_off():
     assert s.binding_check != "resonance_ratio"
 
 
+def test_array_checks_agree_with_the_check_records():
+    """Pass and margin of every candidate's checks as arrays are those of the valvetrain.checks.Check records."""
+    line = springs.Characteristic(270.0, 58e3, 0.010)
+    found = springs.evaluate_springs(line.preload, line.rate, line.lift, np.linspace(0.02, 0.034, 29)[:, None],
+                                     springs.wire_series((2.0, 7.0), 0.25)[None, :], springs.SpringMaterial("VDCrV"),
+                                     SEED000_OMEGA_EXACT, max_installed_length=0.06)
+    for i in range(len(found)):
+        design = found.design(i)
+        assert design.passes == found.passed[i]
+        assert min(design.margins.values()) == pytest.approx(found.worst_margin[i], rel=1e-12)
+
+
+def test_surge_frequency_is_bought_with_stress():
+    """omega_c1 = pi tau_max / (chi f_max sqrt(2 rho G)), from (6.1), (6.2) and (6.13) with the actual (rounded)
+    coils, for every candidate of a grid; so a resonance ratio needs a stress independent of d and D."""
+    line = springs.Characteristic(270.0, 58e3, 0.010)
+    material = springs.SpringMaterial("VDSiCr")
+    found = springs.evaluate_springs(line.preload, line.rate, line.lift, np.linspace(0.02, 0.034, 15)[:, None],
+                                     springs.wire_series()[None, :], material, SEED000_OMEGA_EXACT)
+    ok = np.isfinite(found.shape_factor)
+    f_max = (found.preload + found.rate * line.lift) / found.rate
+    stress = springs.resonance_stress(found.resonance_ratio, SEED000_OMEGA_EXACT, f_max, found.shape_factor,
+                                      material.shear_modulus, material.density)
+    assert np.allclose(stress[ok], found.tau_max[ok], rtol=1e-12)
+
+
+def test_resonance_needs_more_stress_than_60s2a_allows_at_7000_rpm():
+    """E27 in numbers: at the seed 000 appendix speed (omega_cam = 366.5 rad/s) and lift (10 mm) a line of
+    f_max/f_min <= 3.2 has f_max >= 14.545 mm; with chi >= 1.1 (D/d <= 12) the ratio 10 needs, by hand,
+    10 x 366.52 x 1.1 x 0.014545 x sqrt(2 x 7850 x 8e10) / pi = 661.5 MPa, above [tau] = 500 MPa of 60S2A
+    (seed 000, work 6): no spring of the manual's steel can pass."""
+    w = springs.stress_window(springs.SpringMaterial(), 0.010, SEED000_OMEGA_EXACT)
+    assert w["ratio"] == pytest.approx(3.2)
+    assert w["max_deflection"] == pytest.approx(0.010 * 3.2 / 2.2)
+    assert w["needed"] / 1e6 == pytest.approx(661.5, abs=0.1)
+    assert w["allowed"] == pytest.approx(500e6)
+    tau = springs.fatigue_stress_limit(370e6, 0.2, 3.2, 1.3)
+    assert tau / 1e6 == pytest.approx(2 * 370 / (1.3 * (1 - 1 / 3.2 + 0.2 * (1 + 1 / 3.2))), rel=1e-12)
+
+
+def test_diagnosis_of_the_example_in_60s2a():
+    """The appendix requirement (m_v 0.147 kg: the example's parts with its spring) with the manual's steel:
+    no spring passes; the diagnosis names tau_max and the resonance ratio, shows the stress window of E27, and
+    each remedy it proposes passes when tried (VDSiCr; a lower speed), while a lower mass does not help (the
+    resonance ratio does not depend on the force)."""
+    law = seed000_law()
+    y, req = _requirement(law, 0.147)
+    requirement = springs.Requirement(y, req, springs.seat_load(0.147))
+    options = springs.SpringOptions()
+    search = springs.design_springs(requirement, 0.0368, SEED000_OMEGA_EXACT, options)
+    assert not search.passes and search.passing == 0
+    d = springs.diagnose(requirement, 0.0368, SEED000_OMEGA_EXACT, options, search, np.pi * 7000 / 30)
+    checks = {x["check"] for x in d["conflicts"]}
+    assert {"tau_max", "resonance_ratio"} <= checks
+    assert d["resonance"]["stress_needed_MPa"] > d["resonance"]["stress_allowed_MPa"] == pytest.approx(500.0)
+    remedies = {x["change"]: x for x in d["remedies"]}
+    assert remedies["material"]["to"] == "VDSiCr"
+    vdsicr = replace(options, materials=(springs.SpringMaterial("VDSiCr"),))
+    assert springs.design_springs(requirement, 0.0368, SEED000_OMEGA_EXACT, vdsicr).passes
+    f = remedies["rated_speed_factor"]["to"]
+    assert 0.3 < f < 1.0 and remedies["rated_speed_factor"]["rated_speed_rpm"] == pytest.approx(7000 * f)
+    slower = springs.design_springs(requirement.scaled(f**2), 0.0368, SEED000_OMEGA_EXACT * f, options)
+    assert slower.passes
+    assert {"change": "reduced_mass_factor", "to": 0.1} in d["tried"]
+    assert "needs tau_max >= 662 MPa" in d["text"] and 'material = "VDSiCr"' in d["text"]
+
+
+def test_the_seat_load_holds_a_slow_engine_s_valve():
+    """Issue 10: at 600 rpm the inertia asks for a 2.3 N preload.  The preload is at least m_v x 100 g (a stated
+    default), or min_preload_N, and never below the gas force (5.4)."""
+    law = seed000_law()
+    slow = SEED000_OMEGA_EXACT * 600 / 7000
+    theta = np.linspace(law.valve_opens, law.valve_closes, 2001)
+    y = law.valve_lift(theta, 1.6)
+    req = springs.required_spring_force(0.147, 1.6 * slow**2 * law.derivatives(theta)[2], 1.8)
+    assert springs.enveloping_line(y, req)[0] < 5.0
+    seat = springs.seat_load(0.147)
+    assert seat == pytest.approx(0.147 * 9.80665 * 100)
+    p0, _ = springs.enveloping_line(y, req, min_preload=max(seat, 15.85))
+    assert p0 == pytest.approx(seat)
+
+
+def test_installed_length_limits():
+    """A given installed-length range is kept: a spring shorter than its lower end is installed there (the coils
+    further apart), none longer than its upper end passes; without a range the limit is 6 x lift."""
+    line = springs.Characteristic(270.0, 58e3, 0.010)
+    material = springs.SpringMaterial("VDSiCr")
+    free, _, _ = springs.design_spring(line, 0.0368, SEED000_OMEGA_EXACT,
+                                       springs.SpringOptions(materials=(material,), installed_length_range=(None, None)))
+    assert "installed_length" not in free.checks
+    default, _, _ = springs.design_spring(line, 0.0368, SEED000_OMEGA_EXACT, springs.SpringOptions(materials=(material,)))
+    assert default.checks["installed_length"].high == pytest.approx(0.060)
+    natural = default.lengths["installed_length"]
+    raised, n, _ = springs.design_spring(line, 0.0368, SEED000_OMEGA_EXACT, springs.SpringOptions(
+        materials=(material,), installed_length_range=(natural + 5e-3, natural + 8e-3)))
+    assert n > 0 and raised.lengths["installed_length"] >= natural + 5e-3 - 1e-12
+    assert raised.checks["coil_gap_at_full_lift"].passed
+    short, n, _ = springs.design_spring(line, 0.0368, SEED000_OMEGA_EXACT, springs.SpringOptions(
+        materials=(material,), installed_length_range=(None, 0.030)))
+    assert n == 0 and not short.checks["installed_length"].passed
+
+
+def test_nested_pair_is_installed_together():
+    """A pair (eqs. 5.10-5.14): one installed length, the inner spring inside the outer one with the radial gap,
+    natural frequencies 10 % apart; both pass at 5000 rpm."""
+    law = seed000_law()
+    omega = SEED000_OMEGA_EXACT * 5 / 7
+    y, req = _requirement(law, 0.147)
+    requirement = springs.Requirement(y, req * (5 / 7) ** 2, springs.seat_load(0.147))
+    options = springs.SpringOptions(materials=(springs.SpringMaterial("VDSiCr"),), count=2)
+    search = springs.design_springs(requirement, 0.0368, omega, options)
+    outer, inner = search.designs["outer"], search.designs["inner"]
+    assert search.passes and search.passing > 0
+    assert inner.lengths["installed_length"] == pytest.approx(outer.lengths["installed_length"], rel=1e-12)
+    assert inner.mean_diameter + inner.wire_diameter <= outer.mean_diameter - outer.wire_diameter - 2e-3 + 1e-12
+    assert abs(inner.natural_frequency / outer.natural_frequency - 1.0) >= 0.1
+    assert inner.characteristic.preload == pytest.approx(0.4 / 0.6 * outer.characteristic.preload, rel=1e-12)
+
+
 def test_spring_mass_and_reduced_masses():
     # rho (pi d^2 / 4) pi D i: 7850 * pi/4 * 0.004^2 * pi * 0.03 * 8
     assert masses.spring_mass(0.03, 0.004, 8, 7850.0) == pytest.approx(7850 * np.pi**2 / 4 * 16e-6 * 0.03 * 8)
@@ -137,3 +351,69 @@ def test_spring_mass_and_reduced_masses():
     assert m_v == pytest.approx(0.05 + 0.02 + 0.005 + 0.015 + 4e-5 / 0.04**2 + 0.1 / 1.6**2)
     assert masses.reduced_mass_at_tappet(m_v, 1.6) == pytest.approx(
         0.06 + 0.04 + 4e-5 / 0.025**2 + (0.05 + 0.02 + 0.005 + 0.015) * 1.6**2)
+
+
+def test_wire_grades():
+    """60S2A is the manual's steel with the middle of its ranges (seed 000, work 6); the VD grades follow
+    Shigley Table 10-4 (R_m = A/d^m), Table 10-6 ([tau] = 0.5 R_m) and section 10-9 (S_su = 0.67 R_m, Goodman
+    line through Zimmerli's peened point): the manual's n of eq. (6.12) is 1 exactly at that point
+    (tau_m = 534 MPa, tau_a = 398 MPa, i.e. tau_max = 932 MPa, tau_min = 136 MPa) for every wire."""
+    seed = springs.SpringMaterial()
+    allowable, endurance, psi = seed.limits(np.array([2.8e-3, 6e-3]))
+    assert (seed.shear_modulus, seed.density) == (8e10, 7850.0)
+    assert np.all(allowable == 500e6) and np.all(endurance == 370e6) and np.all(psi == 0.2)
+    d = springs.wire_series()
+    for grade, a, m in (("VDSiCr", 1974.0, 0.108), ("VDCrV", 2005.0, 0.168)):
+        material = springs.SpringMaterial(grade)
+        assert material.shear_modulus == 79.5e9
+        allowable, endurance, psi = material.limits(d)
+        rm = a / (d * 1e3) ** m * 1e6
+        assert np.allclose(allowable, 0.5 * rm, rtol=1e-12)
+        assert np.allclose(springs.fatigue_safety(932e6, 136e6, endurance, psi), 1.0, rtol=1e-12)
+        # a thinner wire is stronger: a higher [tau]; the Goodman line through the fixed point then runs flatter
+        assert np.all(np.diff(allowable) < 0) and np.all(np.diff(psi) > 0)
+    # chrome-silicon is the stronger wire, by 7 % at 4 mm: 1974/4^0.108 against 2005/4^0.168
+    assert spring_materials.GRADES["VDSiCr"].tensile_strength(4e-3) / 1e6 == pytest.approx(1699.5, abs=0.1)
+    assert spring_materials.GRADES["VDCrV"].tensile_strength(4e-3) / 1e6 == pytest.approx(1588.4, abs=0.1)
+
+
+def test_a_property_given_replaces_the_grade_s():
+    material = springs.SpringMaterial("vd-sicr", shear_modulus=8.1e10, allowable_stress=600e6)
+    assert material.grade == "VDSiCr" and material.shear_modulus == 8.1e10
+    allowable, endurance, _ = material.limits(np.array([3e-3, 5e-3]))
+    assert np.all(allowable == 600e6) and endurance[0] < endurance[1]
+    with pytest.raises(KeyError, match="allowed '60S2A', 'VDSiCr', 'VDCrV'"):
+        springs.SpringMaterial("65G")
+
+
+def _with_spring(section):
+    """The built-in example with ``section`` as its [valves.intake.spring] table."""
+    from valvetrain.specification import example_text, parse_spec
+
+    text = example_text()
+    start, end = text.index("[valves.intake.spring]"), text.index("[valves.intake.parts]")
+    return parse_spec(text[:start] + "[valves.intake.spring]\n" + section + "\n\n" + text[end:])
+
+
+def test_spring_keys_of_the_specification():
+    """material names a grade (or several, all searched); a property key replaces the grade's value; the wire
+    range, installed length and seat load are keys; a name or range that admits no spring is refused."""
+    from valvetrain.design import run
+    from valvetrain.design.drive import _spring_options
+    from valvetrain.specification import SpecError
+
+    both = _with_spring('material = ["VD-SiCr", "vdcrv"]\nallowable_stress_MPa = 700.0\n'
+                        'wire_diameter_range_mm = [3.0, 6.0]\nmin_preload_N = 300.0\ninstalled_length_mm = [45.0, 52.0]')
+    options = _spring_options(both.valves["intake"].spring)
+    assert [m.grade for m in options.materials] == ["VDSiCr", "VDCrV"]
+    assert all(m.allowable_stress == 700e6 for m in options.materials)
+    assert options.wire_range_mm == (3.0, 6.0) and options.installed_length_range == pytest.approx((0.045, 0.052))
+    spring = run(both).to_dict()["valves"]["intake"]["spring"]
+    assert spring["preload_N"] == pytest.approx(300.0) and spring["preload_set_by_seat_load"]
+    assert 45.0 - 1e-9 <= spring["installed_length_mm"] and 3.0 <= spring["wire_mm"] <= 6.0
+    assert spring["margins"]["tau_max"] == pytest.approx(1.0 - spring["tau_max_MPa"] / 700.0)
+    with pytest.raises(SpecError, match=r"material = '65G': allowed '60S2A', 'VDSiCr', 'VDCrV'"):
+        _with_spring('material = "65G"')
+    with pytest.raises(SpecError, match=r"installed_length_mm = \[5.0, 9.0\]: the spring must be longer than the "
+                                        r"valve lift max_lift_mm = 10"):
+        _with_spring('material = "VDSiCr"\ninstalled_length_mm = [5.0, 9.0]')

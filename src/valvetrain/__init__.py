@@ -19,16 +19,27 @@ In a notebook::
 
 __version__ = "0.1.0"
 
-from .checks import Check  # noqa: E402
-from .design import (DesignResults, ValveDesign, clearance_stage, design_valve, flow_stage, law_stage,  # noqa: E402
-                     profile_stage, run, valve_checks)
-from .laws import (AsymmetricLaw, CombinedLaw, ConstantAccelerationLaw, DynamicLaw, HarmonicLaw, KurzLaw,  # noqa: E402
-                   LiftLaw, PolydyneLaw, PolynomialLaw, TangentLaw, ThreeArcLaw)
-from .specification import SpecError, example_spec, load_spec, parse_spec, si  # noqa: E402
+_PUBLIC = {
+    "Check": "checks",
+    **dict.fromkeys(["DesignResults", "ValveDesign", "clearance_stage", "design_valve", "flow_stage", "law_stage",
+                     "profile_stage", "run", "valve_checks"], "design"),
+    **dict.fromkeys(["AsymmetricLaw", "CombinedLaw", "ConstantAccelerationLaw", "DynamicLaw", "HarmonicLaw", "KurzLaw",
+                     "LiftLaw", "PolydyneLaw", "PolynomialLaw", "TangentLaw", "ThreeArcLaw"], "laws"),
+    **dict.fromkeys(["SpecError", "example_spec", "load_spec", "parse_spec", "si"], "specification"),
+}
+"""The public names and the module each comes from: imported when first used (PEP 562), so that ``import
+valvetrain`` and the command line start without loading the whole package."""
 
-__all__ = [
-    "AsymmetricLaw", "Check", "CombinedLaw", "ConstantAccelerationLaw", "DesignResults", "DynamicLaw", "HarmonicLaw",
-    "KurzLaw", "LiftLaw", "PolydyneLaw", "PolynomialLaw", "SpecError", "TangentLaw", "ThreeArcLaw", "ValveDesign",
-    "clearance_stage", "design_valve", "example_spec", "flow_stage", "law_stage", "load_spec", "parse_spec",
-    "profile_stage", "run", "si", "valve_checks",
-]
+__all__ = sorted(_PUBLIC)
+
+
+def __getattr__(name):
+    if name not in _PUBLIC:
+        raise AttributeError(f"module 'valvetrain' has no attribute {name!r}")
+    from importlib import import_module
+
+    return getattr(import_module(f".{_PUBLIC[name]}", __name__), name)
+
+
+def __dir__():
+    return sorted(set(globals()) | set(_PUBLIC))

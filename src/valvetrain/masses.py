@@ -5,12 +5,23 @@ SI units: kg, m, kg*m^2.  ``rocker_ratio`` i_k = l_v / l_t (valve arm over tappe
 
 import numpy as np
 
-SPECIFIC_MASS_RANGE = {"direct": (200.0, 300.0), "pushrod": (400.0, 500.0)}
-"""Constructive mass of the valve train per inlet throat area [kg/m^2] (seed 000, work 5)."""
+SPECIFIC_MASS_DEFAULT = {"direct": 125.0, "rocker": 105.0, "pushrod": 135.0}
+"""Default reduced mass at the valve per inlet throat area m' [kg/m^2], used where no part masses are given.
 
-SPECIFIC_MASS_DEFAULT = {"direct": 250.0, "rocker": 400.0, "pushrod": 450.0}
-"""Defaults [kg/m^2]: the middle of the seed 000 ranges; an overhead-cam rocker drive (no pushrod) is not
-in the source and takes the lower end of the pushrod range (an assumption, stated in the report)."""
+Derived from the part masses of the built-in example (the seed 000 appendix valve, d_g = 36.8 mm, f_g =
+1063.6 mm^2; illustrative figures of a pushrod drive of that size): valve 55 g, retainer 15 g, cotters
+4 g, a third of its 64 g VDSiCr spring, tappet 40 g, pushrod 45 g, rocker 25 kg mm^2 at a 40 mm valve arm
+(15.6 g), i_k = 1.6 (eq. 5.2):
+
+* pushrod drive: 74 + 21.3 + 15.6 + (45 + 40) / 1.6^2 = 144.1 g, 135.5 kg/m^2 -> 135;
+* overhead-cam rocker (no pushrod, no tappet): 74 + 21.3 + 15.6 = 110.9 g, 104.3 kg/m^2 -> 105;
+* direct drive (the 40 g tappet on the valve, i_k = 1): 74 + 21.3 + 40 = 135.3 g, 127.2 kg/m^2 -> 125.
+
+Seed 000 (work 5) gives 200-300 kg/m^2 for direct and 400-500 kg/m^2 for pushrod drives: 1.6-3.7 times
+these, so that the same engine needed 861 N of spring force from its parts and 2952 N from the estimate
+(issue 10).  The source does not say which parts or masses its figures stand for; a design with its
+own part masses gives them in ``[valves.NAME.drive.masses]``, and ``specific_mass_kg_m2`` sets any other
+figure."""
 
 
 def reduced_mass_at_valve(valve, retainer, cotters, spring, pushrod=0.0, tappet=0.0, rocker_inertia=0.0,
@@ -64,7 +75,8 @@ def mass_from_specific(specific_mass, throat_area):
 
     References
     ----------
-    seed 000, work 5 (m' = 200-300 kg/m^2 direct drive, 400-500 kg/m^2 pushrod drive).
+    seed 000, work 5 (m' = 200-300 kg/m^2 direct drive, 400-500 kg/m^2 pushrod drive; the defaults of
+    this package, :data:`SPECIFIC_MASS_DEFAULT`, are lower).
 
     Examples
     --------

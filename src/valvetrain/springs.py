@@ -2,14 +2,27 @@
 
 SI units inside: N, m, Pa, kg, rad/s.  The characteristic is written against the valve
 lift y: P(y) = P_min + C y (eq. 5.6).
+
+The design searches a grid of springs at once (numpy arrays over the candidates): the
+straight lines above the required force with the deflection ratios of the manual, the
+wire grades of :mod:`valvetrain.spring_materials`, the mean diameters D = (0.7...0.9) d_g
+and the wire diameters 2.0...7.0 mm.  The lightest spring that passes every check is
+chosen; when none passes, :func:`diagnose` names the requirements in conflict and
+computes what would make a spring pass.
+
+Conical (beehive) and progressive-rate springs are not designed: the seeds give no
+formulas for them.
 """
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
+from functools import cached_property
 
 import numpy as np
 
-from .checks import check
+from .checks import _TOL, check
 from .masses import spring_mass
+from .spring_materials import GRADES, grade
+from .units import to_display
 
 SPRING_RESERVE_RANGE = (1.5, 2.25)
 """Spring reserve factor K_z (seed 000, eq. 5.3)."""
@@ -17,32 +30,87 @@ SPRING_RESERVE_RANGE = (1.5, 2.25)
 DEFLECTION_RATIO_RANGE = (1.6, 3.2)
 """f_max / f_min (seed 000, work 5; 2 is the optimum)."""
 
+DEFLECTION_RATIO_STEP = 0.1
+"""Step of the deflection ratios of the straight lines the search tries."""
+
 INNER_SHARE_RANGE = (0.35, 0.45)
 """Share of the force taken by the inner spring of a nested pair (seed 000, work 5)."""
 
-WIRE_SERIES_MM = (2.8, 3.0, 3.5, 3.8, 4.0, 4.2, 4.5, 4.8, 5.0, 5.5, 6.0)
-"""Valve-spring wire diameters [mm] (seed 000, work 6)."""
+WIRE_RANGE_MM = (2.0, 7.0)
+WIRE_STEP_MM = 0.1
+"""Wire diameters searched [mm]: every 0.1 mm from 2.0 to 7.0 mm.  Wider than the manual's series
+2.8, 3.0, 3.5, 3.8, 4.0, 4.2, 4.5, 4.8, 5.0, 5.5, 6.0 mm (seed 000, work 6); valve-spring wire is drawn to
+any size in this range (EN 10270-2 makes the VD grades from 0.5 to 10 mm)."""
 
 SHAPE_FACTOR_TABLE = (np.array([3, 4, 5, 6, 7, 8, 9, 10, 11, 12], dtype=float),
                       np.array([1.5, 1.38, 1.3, 1.23, 1.2, 1.17, 1.15, 1.13, 1.11, 1.1]))
 """Spring index D/d and shape factor chi (seed 000, work 6, table of eq. 6.1)."""
 
-
-class NoSpringFits(ValueError):
-    """No spring of the wire series can be wound within the given diameters."""
-
-
-def feasible_mean_diameters(wire_series_mm=WIRE_SERIES_MM):
-    """Mean diameters D [m] some wire of the series can make: D/d within the shape-factor table (3...12)."""
-    index = SHAPE_FACTOR_TABLE[0]
-    return index[0] * min(wire_series_mm) * 1e-3, index[-1] * max(wire_series_mm) * 1e-3
-
-
 MEAN_DIAMETER_RANGE = (0.7, 0.9)
 """Spring mean diameter / valve throat diameter (seed 000, work 6)."""
 
+MEAN_DIAMETER_STEP = 0.1e-3
+"""Step of the mean diameters tried [m]."""
+
+INNER_DIAMETER_RATIO_LOW = 0.3
+"""Smallest mean diameter of the inner spring of a pair / throat diameter (it must fit inside the outer one)."""
+
 RESONANCE_RATIO_MIN = 10.0
 """omega_c1 / omega_cam (seed 000, eq. 6.14)."""
+
+INSTALLED_TO_LIFT_MAX = 6.0
+"""Default upper limit of the installed length l_0 / valve lift h where no ``installed_length_mm`` is
+given.  A stated default of this package, not from the sources, which set no length: it keeps the search
+to springs that fit a cylinder head and leaves out, for example, the 120 mm long outer spring (l_0 = 10 h)
+that the search without a limit proposed for the nested pair of the polydyne example; the springs
+chosen for the shipped examples stand at 4.3-4.8 h."""
+
+SEAT_ACCELERATION = 100.0 * 9.80665
+"""Default seat load per unit reduced mass [m/s^2]: the closed valve is held on its seat with at least
+m_v x 100 g.  A stated default of this package, not from the sources (they ask only P_min > P_gas,
+eqs. 5.4-5.5): without it a slow engine gets a spring of a few newtons.  A valve that leaves its seat at
+0.5 m/s is returned by it within v^2 / (2 a) = 0.13 mm, less than the usual clearance at the valve."""
+
+
+class NoSpringFits(ValueError):
+    """No spring of the wire range can be wound within the given diameters."""
+
+
+def wire_series(wire_range_mm=WIRE_RANGE_MM, step_mm=WIRE_STEP_MM):
+    """Wire diameters [m] from ``wire_range_mm[0]`` to ``wire_range_mm[1]`` every ``step_mm``.
+
+    >>> [round(float(d) * 1e3, 1) for d in wire_series((2.8, 3.2))]
+    [2.8, 2.9, 3.0, 3.1, 3.2]
+    """
+    low, high = wire_range_mm
+    count = int(np.floor((high - low) / step_mm + 1e-9))
+    return np.round(low + step_mm * np.arange(count + 1), 9) * 1e-3
+
+
+def feasible_mean_diameters(wire_range_mm=WIRE_RANGE_MM):
+    """Mean diameters D [m] some wire of the range can make: D/d within the shape-factor table (3...12)."""
+    index = SHAPE_FACTOR_TABLE[0]
+    return index[0] * min(wire_range_mm) * 1e-3, index[-1] * max(wire_range_mm) * 1e-3
+
+
+def deflection_ratios(ratio_range=DEFLECTION_RATIO_RANGE, step=DEFLECTION_RATIO_STEP):
+    """The deflection ratios f_max / f_min the search tries: ``ratio_range`` every ``step`` and its upper end.
+
+    >>> [round(float(r), 2) for r in deflection_ratios((1.6, 2.0), 0.15)]
+    [1.6, 1.75, 1.9, 2.0]
+    """
+    low, high = ratio_range
+    return np.unique(np.append(low + step * np.arange(int(np.floor((high - low) / step + 1e-9)) + 1), high))
+
+
+def seat_load(mass_at_valve, acceleration=SEAT_ACCELERATION):
+    """Smallest preload that holds the closed valve on its seat, m_v a [N] (a stated default, see
+    :data:`SEAT_ACCELERATION`).
+
+    >>> round(seat_load(0.15), 2)
+    147.1
+    """
+    return mass_at_valve * acceleration
 
 
 def required_spring_force(mass_at_valve, valve_acceleration, reserve):
@@ -99,12 +167,18 @@ def enveloping_line(lift, required, ratio_range=DEFLECTION_RATIO_RANGE, min_prel
     * keep the deflection ratio in the usual range, :math:`r_1 P_{min} \\le P_{min} + C h \\le r_2 P_{min}`;
     * hold the valve closed against the gas force, :math:`P_{min} \\ge P_g`.
 
-    This is a linear programme in (P_min, C), solved with :func:`scipy.optimize.linprog`.
-    Where the ratio bound is slack, the optimum is the steepest line through the
-    full-lift point c' that stays above the curve (the reading of the graphical
-    construction in spec/valvetrain-works-1-8.md, work 5); a polydyne cam, whose
-    requirement is flat at the nose, gets the line of the smallest allowed ratio.  At
-    the optimum the line touches the requirement at least once.
+    This is a linear programme in (P_min, C), solved here in closed form.  Written with
+    the ratio r = P_max / P_min and u_i = y_i / h, a line of ratio r above the requirement
+    has :math:`P_{max} \\ge \\max_i r P_i / (1 + (r - 1) u_i)` (and :math:`\\ge r P_g`);
+    every term grows with r, so the smallest P_max is
+    :math:`P^* = \\max(\\max_i r_1 P_i / (1 + (r_1 - 1) u_i), r_1 P_g)`, reached by every
+    ratio up to :math:`r^* = \\min(r_2, \\min_{P_i > P^* u_i} P^* (1 - u_i) / (P_i - P^* u_i),
+    P^* / P_g)`.  Of these optimal lines the steepest, r*, is taken: where the ratio bound
+    is slack it is the steepest line through the full-lift point c' that stays above the
+    curve (the reading of the graphical construction in spec/valvetrain-works-1-8.md,
+    work 5); a polydyne cam, whose requirement is flat at the nose, gets the line of the
+    smallest allowed ratio.  The line touches the requirement at least once, or sits on
+    the gas force.
 
     References
     ----------
@@ -119,21 +193,20 @@ def enveloping_line(lift, required, ratio_range=DEFLECTION_RATIO_RANGE, min_prel
     >>> round(p0, 6), round(c, 6)
     (6.25, 6.875)
     """
-    from scipy.optimize import linprog
-
     y = np.asarray(lift, dtype=float)
     p = np.asarray(required, dtype=float)
     h = float(y.max())
+    u = y / h
     r1, r2 = ratio_range
-    # variables x = (P_min, C); minimise P_min + C h
-    a_ub = np.vstack([np.column_stack([-np.ones_like(y), -y]),       # P_min + C y >= P
-                      [[r1 - 1.0, -h], [1.0 - r2, h]]])               # r1 P_min <= P_max <= r2 P_min
-    b_ub = np.concatenate([-p, [0.0, 0.0]])
-    res = linprog([1.0, h], A_ub=a_ub, b_ub=b_ub, bounds=[(max(min_preload, 0.0), None), (0.0, None)],
-                  method="highs")
-    if not res.success:
-        raise ValueError(f"no straight spring characteristic envelops the requirement: {res.message}")
-    return float(res.x[0]), float(res.x[1])
+    gas = max(min_preload, 0.0)
+    p_max = max(float(np.max(r1 * p / (1.0 + (r1 - 1.0) * u))), r1 * gas)
+    if p_max <= 0.0:
+        return 0.0, 0.0
+    excess = p - p_max * u
+    bounds = [r2, *(p_max * (1.0 - u[excess > 0.0]) / excess[excess > 0.0])] + ([p_max / gas] if gas > 0.0 else [])
+    ratio = max(min(bounds), r1)
+    preload = p_max / ratio
+    return float(preload), float((ratio - 1.0) * preload / h)
 
 
 def gas_opening_force(throat_diameter, port_pressure, cylinder_pressure):
@@ -307,17 +380,47 @@ def spring_lengths(wire_diameter, coils, lift, preload_deflection, gap_factor, e
 
 @dataclass(frozen=True)
 class SpringMaterial:
-    """Material and design limits of a valve spring (SI)."""
+    """A wire grade and the design limits of a valve spring (SI).
 
-    shear_modulus: float = 8.0e10        # G, 7.6-8.2e4 MPa (seed 000, work 6)
-    density: float = 7850.0              # rho, 7800-7900 kg/m^3
-    allowable_stress: float = 500e6      # [tau], 350-600 MPa
-    endurance_limit: float = 370e6       # tau_-1, 340-400 MPa
-    mean_stress_factor: float = 0.2      # psi_tau (literature; not in the manual, E24)
+    ``grade`` names a grade of :data:`valvetrain.spring_materials.GRADES`; a property given
+    here (not None) replaces the grade's value for every wire diameter.  After construction
+    ``shear_modulus`` and ``density`` hold the values in use.
+    """
+
+    grade: str = "60S2A"
+    shear_modulus: float = None          # G [Pa]
+    density: float = None                # rho [kg/m^3]
+    allowable_stress: float = None       # [tau] [Pa]
+    endurance_limit: float = None        # tau_-1 [Pa]
+    mean_stress_factor: float = None     # psi_tau of eq. (6.12)
     min_safety: float = 1.3              # n >= 1.2-1.4
     min_resonance_ratio: float = RESONANCE_RATIO_MIN
     gap_factor: float = 0.12             # Delta_min / d, 0.10-0.15
     end_coils: float = 2.0               # i_0
+
+    def __post_init__(self):
+        found = grade(self.grade)
+        object.__setattr__(self, "grade", found.name)
+        if self.shear_modulus is None:
+            object.__setattr__(self, "shear_modulus", found.shear_modulus)
+        if self.density is None:
+            object.__setattr__(self, "density", found.density)
+
+    def limits(self, wire_diameter):
+        """([tau], tau_-1, psi_tau) for wires of diameter d [m], arrays of d's shape."""
+        found = GRADES[self.grade]
+        d = np.asarray(wire_diameter, dtype=float)
+        allowable = found.allowable_stress(d) if self.allowable_stress is None else np.full(d.shape,
+                                                                                            self.allowable_stress)
+        endurance = found.endurance_limit(d) if self.endurance_limit is None else np.full(d.shape,
+                                                                                          self.endurance_limit)
+        psi = found.mean_stress(d) if self.mean_stress_factor is None else np.full(d.shape, self.mean_stress_factor)
+        return allowable, endurance, psi
+
+    @property
+    def source(self):
+        """Where the grade's figures come from."""
+        return GRADES[self.grade].source
 
 
 @dataclass
@@ -338,6 +441,8 @@ class SpringDesign:
     lengths: dict
     mass: float
     checks: dict = field(default_factory=dict)   # name -> valvetrain.checks.Check
+    material: str = "60S2A"
+    target_ratio: float = None           # f_max / f_min of the line the spring was designed for
 
     @property
     def margins(self):
@@ -355,112 +460,765 @@ class SpringDesign:
         return min(self.margins, key=self.margins.get)
 
 
+@dataclass(frozen=True)
+class _ArrayCheck:
+    """A check of many candidates at once: the arguments of :func:`valvetrain.checks.check` with array
+    values and bounds; ``passed`` and ``margin`` follow :class:`valvetrain.checks.Check` element by element."""
+
+    quantity: str
+    value: np.ndarray
+    low: object = None
+    high: object = None
+    unit: str = ""
+    source: str = ""
+    severity: str = "warning"
+
+    @property
+    def passed(self):
+        v = self.value
+        ok = np.isfinite(v)
+        if self.low is not None:
+            ok &= ~(v < self.low - _TOL * np.maximum(1.0, np.abs(self.low)))
+        if self.high is not None:
+            ok &= ~(v > self.high + _TOL * np.maximum(1.0, np.abs(self.high)))
+        return ok
+
+    @property
+    def margin(self):
+        v = self.value
+        sides = []
+        if self.low is not None:
+            sides.append((v - self.low) / np.where(self.low == 0.0, 1.0, np.abs(self.low)))
+        if self.high is not None:
+            sides.append((self.high - v) / np.where(self.high == 0.0, 1.0, np.abs(self.high)))
+        margin = np.minimum.reduce(sides) if sides else np.full(v.shape, np.inf)
+        return np.where(np.isfinite(v), margin, -np.inf)
+
+    def at(self, i):
+        """The :class:`valvetrain.checks.Check` of candidate ``i``."""
+        def pick(x):
+            return None if x is None else float(np.broadcast_to(x, self.value.shape)[i])
+
+        return check(self.quantity, float(self.value[i]), pick(self.low), pick(self.high), unit=self.unit,
+                     source=self.source, severity=self.severity)
+
+
 def _minimum(limit):
     """A lower bound of a check, or None where a zero minimum switches the check off."""
     return limit if limit > 0.0 else None
 
 
-def evaluate_spring(required, mean_diameter, wire_diameter, material, camshaft_speed, installed_length=None):
-    """Design one spring of given diameters for a required characteristic.
+@dataclass
+class Candidates:
+    """Springs of one wire grade evaluated at once: flat arrays of one length (SI) and their checks."""
 
-    The working coils from (6.2) are rounded **down** to a multiple of 0.5 (at least 1):
-    the spring gets slightly stiffer, and with the preload kept the actual line stays
-    above the required one (the envelope property is preserved).
+    material: SpringMaterial
+    mean_diameter: np.ndarray
+    wire_diameter: np.ndarray
+    coils: np.ndarray
+    preload: np.ndarray
+    rate: np.ndarray                     # actual rate with the rounded coils
+    lift: float
+    target_ratio: np.ndarray
+    shape_factor: np.ndarray
+    tau_max: np.ndarray
+    tau_min: np.ndarray
+    safety: np.ndarray
+    natural_frequency: np.ndarray
+    resonance_ratio: np.ndarray
+    lengths: dict
+    mass: np.ndarray
+    checks: dict                         # name -> _ArrayCheck
+    line: np.ndarray = None              # index of the line of each candidate (set by the search)
+
+    def __len__(self):
+        return len(self.mass)
+
+    @cached_property
+    def passed(self):
+        """Candidates passing every check."""
+        ok = np.ones(len(self), dtype=bool)
+        for c in self.checks.values():
+            ok &= c.passed
+        return ok
+
+    @cached_property
+    def worst_margin(self):
+        """The smallest margin of each candidate."""
+        return np.minimum.reduce([c.margin for c in self.checks.values()])
+
+    def design(self, i):
+        """Candidate ``i`` as a :class:`SpringDesign` with its :class:`valvetrain.checks.Check` records."""
+        index = self.mean_diameter[i] / self.wire_diameter[i]
+        line = Characteristic(float(self.preload[i]), float(self.rate[i]), self.lift)
+        return SpringDesign(float(self.mean_diameter[i]), float(self.wire_diameter[i]), float(self.coils[i]), line,
+                            float(self.shape_factor[i]), float(wahl_factor(index)), float(self.tau_max[i]),
+                            float(self.tau_min[i]), float(self.safety[i]), float(self.natural_frequency[i]),
+                            float(self.resonance_ratio[i]), {k: float(v[i]) for k, v in self.lengths.items()},
+                            float(self.mass[i]), {k: c.at(i) for k, c in self.checks.items()}, self.material.grade,
+                            float(self.target_ratio[i]))
+
+
+def evaluate_springs(preload, rate, lift, mean_diameter, wire_diameter, material, camshaft_speed, *,
+                     ratio_range=DEFLECTION_RATIO_RANGE, installed_length=None, min_installed_length=None,
+                     max_installed_length=None, max_free_length=None, partner_frequency=None,
+                     min_frequency_difference=0.0):
+    """Design many springs at once, each for its own straight characteristic (seed 000, work 6).
+
+    Parameters
+    ----------
+    preload, rate : ndarray
+        The line each spring is designed for, P(y) = P_min + C y [N, N/m].
+    lift : float
+        Valve lift h [m].
+    mean_diameter, wire_diameter : ndarray
+        D and d [m]; every argument array broadcasts to one shape.
+    material : SpringMaterial
+    camshaft_speed : float
+        omega_cam [rad/s] for the resonance ratio (6.14).
+    ratio_range : (float, float)
+        Allowed f_max / f_min of the spring's actual line (seed 000, work 5).
+    installed_length : ndarray, optional
+        Imposed installed length l_0 [m] (the inner spring of a pair: the outer one's); the
+        coils must then keep their minimum gap at full lift.
+    min_installed_length : float, optional
+        A spring shorter than this is installed at this length (on a taller seat).
+    max_installed_length, max_free_length : float, optional
+        Upper limits of l_0 and of the free length [m], checked.
+    partner_frequency : ndarray, optional
+        omega_c1 of the outer spring, for the inner spring of a pair: the two must differ by
+        ``min_frequency_difference`` (eq. 6.14).
+
+    Returns
+    -------
+    Candidates
+        Flat arrays.  The working coils from (6.2) are rounded **down** to a multiple of 0.5
+        (at least 1): the spring gets slightly stiffer and, with the preload kept, the actual
+        line stays above the one it was designed for.  A spring index D/d outside the manual's
+        table (3...12) gives a NaN shape factor, and the candidate fails.
+    """
+    p0, c0 = np.asarray(preload, dtype=float), np.asarray(rate, dtype=float)
+    big_d, d = np.asarray(mean_diameter, dtype=float), np.asarray(wire_diameter, dtype=float)
+    g, rho = material.shear_modulus, material.density
+    chi = shape_factor_table(big_d / d)
+    allowable, endurance, psi = material.limits(d)
+    p_max = p0 + c0 * lift
+    exact = active_coils(g, d, p_max / c0, p_max, big_d)
+    coils = np.maximum(np.floor(exact * 2.0) / 2.0, 1.0)
+    actual = spring_rate(g, d, big_d, coils)
+    tau_max = shear_stress(p0 + actual * lift, big_d, d, chi)
+    tau_min = shear_stress(p0, big_d, d, chi)
+    safety = fatigue_safety(tau_max, tau_min, endurance, psi)
+    omega = natural_frequency(d, big_d, coils, g, rho)
+    shape = np.broadcast_shapes(np.shape(p0), np.shape(c0), np.shape(big_d), np.shape(d))
+
+    def flat(x):
+        return np.broadcast_to(x, shape).ravel()
+
+    p0, c0, big_d, d, chi, allowable, endurance, psi, exact, coils, actual, tau_max, tau_min, safety, omega = map(
+        flat, (p0, c0, big_d, d, chi, allowable, endurance, psi, exact, coils, actual, tau_max, tau_min, safety, omega))
+    lengths = spring_lengths(d, coils, lift, p0 / actual, material.gap_factor, material.end_coils)
+    imposed = None if installed_length is None else flat(installed_length)
+    if imposed is None and min_installed_length is not None:
+        imposed = np.maximum(lengths["installed_length"], min_installed_length)
+    if imposed is not None:
+        lengths = spring_lengths(d, coils, lift, p0 / actual, material.gap_factor, material.end_coils, imposed)
+    mass = spring_mass(big_d, d, coils + material.end_coils, rho)
+    grade_note = f"{material.grade}: {material.source}"
+    checks = {
+        "tau_max": _ArrayCheck("tau_max", tau_max, high=allowable, unit="MPa", severity="failure",
+                               source=f"seed 000, eq. (6.1) with [tau] of {grade_note}"),
+        "fatigue_safety": _ArrayCheck("fatigue safety factor", safety, low=_minimum(material.min_safety),
+                                      severity="failure", source=f"seed 000, eq. (6.12): n >= 1.2-1.4; tau_-1 "
+                                                                 f"and psi_tau of {grade_note}"),
+        "resonance_ratio": _ArrayCheck("resonance ratio omega_c1/omega_cam", omega / camshaft_speed,
+                                       low=_minimum(material.min_resonance_ratio),
+                                       source="seed 000, eq. (6.14): >= 10 (hard to meet at high speed, E27)"),
+        "working_coils": _ArrayCheck("working coils", exact, low=2.0, source="seed 000, eq. (6.2)"),
+        "deflection_ratio": _ArrayCheck("f_max/f_min", (p0 + actual * lift) / p0, *ratio_range,
+                                        source="seed 000, work 5 (with the rounded coils)"),
+    }
+    if max_installed_length is not None:
+        checks["installed_length"] = _ArrayCheck("installed length", lengths["installed_length"],
+                                                 high=max_installed_length, unit="mm",
+                                                 source="installed_length_mm of the specification, or "
+                                                        f"{INSTALLED_TO_LIFT_MAX:g} x lift (a stated default)")
+    if max_free_length is not None:
+        checks["free_length"] = _ArrayCheck("free length", lengths["free_length"], high=max_free_length, unit="mm",
+                                            source="max_free_length_mm of the specification")
+    if imposed is not None:
+        checks["coil_gap_at_full_lift"] = _ArrayCheck("coil gap at full lift / wire diameter",
+                                                      lengths["min_pitch"] / d - 1.0, low=material.gap_factor,
+                                                      source="seed 000, eq. (6.3): Delta_min = 0.10-0.15 d")
+    if partner_frequency is not None:
+        difference = np.abs(omega - partner_frequency) / partner_frequency
+        checks["frequency_difference"] = _ArrayCheck("frequency difference", difference,
+                                                     low=_minimum(min_frequency_difference),
+                                                     source="seed 000, eq. (6.14): the two ratios must differ "
+                                                            f"({min_frequency_difference:.0%} assumed)")
+    target = (p0 + c0 * lift) / p0
+    return Candidates(material, big_d, d, coils, p0, actual, lift, target, chi, tau_max, tau_min, safety,
+                      omega, omega / camshaft_speed, lengths, mass, checks)
+
+
+def evaluate_spring(required, mean_diameter, wire_diameter, material, camshaft_speed, **limits):
+    """Design one spring of given diameters for a line (:func:`evaluate_springs` of one candidate).
 
     Returns
     -------
     SpringDesign or None
         None when the spring index D/d is outside the manual's table (3...12).
     """
-    index = mean_diameter / wire_diameter
-    chi = float(shape_factor_table(index))
-    if not np.isfinite(chi):
-        return None
-    exact = active_coils(material.shear_modulus, wire_diameter, required.max_deflection, required.max_force,
-                         mean_diameter)
-    coils = max(np.floor(exact * 2.0) / 2.0, 1.0)
-    rate = spring_rate(material.shear_modulus, wire_diameter, mean_diameter, coils)
-    actual = Characteristic(required.preload, rate, required.lift)
-    tau_max = shear_stress(actual.max_force, mean_diameter, wire_diameter, chi)
-    tau_min = shear_stress(actual.preload, mean_diameter, wire_diameter, chi)
-    safety = fatigue_safety(tau_max, tau_min, material.endurance_limit, material.mean_stress_factor)
-    omega = natural_frequency(wire_diameter, mean_diameter, coils, material.shear_modulus, material.density)
-    lengths = spring_lengths(wire_diameter, coils, required.lift, actual.preload_deflection, material.gap_factor,
-                             material.end_coils, installed_length)
-    mass = float(spring_mass(mean_diameter, wire_diameter, coils + material.end_coils, material.density))
-    checks = {
-        "tau_max": check("tau_max", tau_max, high=material.allowable_stress, unit="MPa", severity="failure",
-                         source="seed 000, eq. (6.1): [tau] = 350-600 MPa"),
-        "fatigue_safety": check("fatigue safety factor", safety, low=_minimum(material.min_safety), severity="failure",
-                                source=f"seed 000, eq. (6.12) with psi_tau = {material.mean_stress_factor:g}: "
-                                       "n >= 1.2-1.4"),
-        "resonance_ratio": check("resonance ratio omega_c1/omega_cam", omega / camshaft_speed,
-                                 low=_minimum(material.min_resonance_ratio),
-                                 source="seed 000, eq. (6.14): >= 10 (hard to meet at high speed, E27)"),
-        "working_coils": check("working coils", exact, low=2.0, source="seed 000, eq. (6.2)"),
-    }
-    if installed_length is not None:
-        checks["coil_gap_at_full_lift"] = check("coil gap at full lift / wire diameter",
-                                                lengths["min_pitch"] / wire_diameter - 1.0, low=material.gap_factor,
-                                                source="seed 000, eq. (6.3): Delta_min = 0.10-0.15 d")
-    return SpringDesign(mean_diameter, wire_diameter, coils, actual, chi, float(wahl_factor(index)), tau_max, tau_min,
-                        safety, omega, omega / camshaft_speed, lengths, mass, checks)
+    found = evaluate_springs(required.preload, required.rate, required.lift, mean_diameter, wire_diameter, material,
+                             camshaft_speed, **limits)
+    return found.design(0) if np.isfinite(found.shape_factor[0]) else None
 
 
-def design_spring(required, throat_diameter, material, camshaft_speed, diameter_range=MEAN_DIAMETER_RANGE,
-                  max_outer=None, wire_series_mm=WIRE_SERIES_MM, diameter_step=0.5e-3, extra_check=None,
-                  installed_length=None):
-    """Choose the lightest spring of the wire series that passes every check.
+def enveloping_lines(lift, required, ratios, min_preload=0.0):
+    """For each deflection ratio r = f_max / f_min the lowest straight line of that ratio above a requirement.
 
     Parameters
     ----------
-    required : Characteristic
-        The required line at the valve.
-    throat_diameter : float
-        Valve throat diameter d_g [m]; mean diameters from ``diameter_range`` x d_g.
-    material : SpringMaterial
-    camshaft_speed : float
-        omega_cam [rad/s] for the resonance ratio (6.14).
-    max_outer : float, optional
-        Largest outside diameter D + d [m] (the inner spring of a nested pair).
-    diameter_step : float
-        Step of the mean diameters tried [m].
-    extra_check : callable, optional
-        ``extra_check(design) -> dict`` of further checks ``name -> Check``.
-    installed_length : float, optional
-        Imposed installed length [m] (inner spring of a nested pair); the coils must then
-        keep their minimum gap at full lift.
+    lift, required : ndarray
+        Valve lift y [m] and required spring force [N] at the points of the curve.
+    ratios : ndarray
+        Deflection ratios r.
+    min_preload : float
+        Smallest preload [N] (gas force, eqs. 5.4-5.5, or seat load).
 
     Returns
     -------
-    (SpringDesign, int)
-        The lightest spring passing every check or, when none does, the one whose worst
-        margin is best; and the number of candidates that passed.
+    (ndarray, ndarray)
+        Preloads P_min [N] and rates C [N/m] of the lines, one per ratio.
+
+    Notes
+    -----
+    A line of ratio r is :math:`P(y) = P_{min}(1 + (r - 1) y / h)`; it stays on or above the
+    requirement when :math:`P_{min} = \\max(\\max_i P_i / (1 + (r - 1) y_i / h), P_g)`, and
+    :math:`C = (r - 1) P_{min} / h`.  The line of :func:`enveloping_line` (smallest P_max)
+    is the one of its own ratio; a steeper line has a shorter f_max = h r / (r - 1) and so a
+    higher surge frequency at a given stress (see :func:`resonance_stress`).
 
     References
     ----------
-    seed 000, work 6 (D = 0.7-0.9 d_g, wire series 2.8-6.0 mm, checks (6.1), (6.12), (6.14)).
+    seed 000, work 5, eqs. (5.6)-(5.9), Fig. 5.1.
+
+    Examples
+    --------
+    The requirement 10 N/mm up to 2 mm with r = 3.2: P_min = 20/3.2 N, as in :func:`enveloping_line`.
+
+    >>> p0, c = enveloping_lines(np.array([0.0, 1.0, 2.0]), np.array([0.0, 10.0, 20.0]), np.array([3.2]))
+    >>> round(float(p0[0]), 6), round(float(c[0]), 6)
+    (6.25, 6.875)
     """
+    y = np.asarray(lift, dtype=float)
+    p = np.asarray(required, dtype=float)
+    r = np.asarray(ratios, dtype=float)
+    h = float(y.max())
+    slope = (r[:, None] - 1.0) * y[None, :] / h
+    preload = np.maximum(np.max(p[None, :] / (1.0 + slope), axis=1), max(min_preload, 0.0))
+    return preload, (r - 1.0) * preload / h
+
+
+@dataclass(frozen=True)
+class Requirement:
+    """The spring force a valve needs (SI): the required force against lift and the smallest preload."""
+
+    lift: np.ndarray            # valve lift y at the points [m]
+    force: np.ndarray           # K_z m_v |j_v| (5.3) [N]
+    min_preload: float = 0.0    # gas force (5.4)-(5.5) or seat load [N]
+
+    @property
+    def max_lift(self):
+        return float(np.max(self.lift))
+
+    def line(self, ratio_range=DEFLECTION_RATIO_RANGE):
+        """The required line of the manual's construction (:func:`enveloping_line`)."""
+        return Characteristic(*enveloping_line(self.lift, self.force, ratio_range, self.min_preload), self.max_lift)
+
+    def lines(self, ratio_range=DEFLECTION_RATIO_RANGE, step=DEFLECTION_RATIO_STEP, line=None):
+        """(preloads, rates) of the lines of the deflection ratios ``ratio_range`` every ``step``, its upper end
+        and the ratio of the required line ``line`` (:meth:`line` when not given)."""
+        required = self.line(ratio_range) if line is None else line
+        ratios = np.append(deflection_ratios(ratio_range, step), required.max_force / required.preload)
+        return enveloping_lines(self.lift, self.force, np.unique(np.clip(ratios, *ratio_range)), self.min_preload)
+
+    def scaled(self, factor):
+        """The requirement with every required force times ``factor`` (the preload minimum kept)."""
+        return replace(self, force=self.force * factor)
+
+
+@dataclass(frozen=True)
+class SpringOptions:
+    """What the spring search tries (SI): grades, diameters, wire, lengths, one spring or a nested pair."""
+
+    materials: tuple = (SpringMaterial(),)
+    count: int = 1
+    inner_share: float = 0.4
+    diameter_range: tuple = MEAN_DIAMETER_RANGE          # D / d_g
+    diameter_step: float = MEAN_DIAMETER_STEP            # [m]
+    wire_range_mm: tuple = WIRE_RANGE_MM
+    wire_step_mm: float = WIRE_STEP_MM
+    ratio_range: tuple = DEFLECTION_RATIO_RANGE
+    installed_length_range: tuple = None                 # (low, high) [m], either None; None: (None, 6 h)
+    max_free_length: float = None                        # [m]
+    radial_gap: float = 1.0e-3                           # between the coils of a pair [m]
+    min_frequency_difference: float = 0.1
+
+    def installed_limits(self, lift):
+        """(min_installed_length, max_installed_length) [m]."""
+        if self.installed_length_range is None:
+            return None, INSTALLED_TO_LIFT_MAX * lift
+        return self.installed_length_range
+
+
+def _grid(throat_diameter, diameter_range, diameter_step, wires, max_outer=None):
+    """Flat arrays (D, d) of the mean diameters (multiples of the step in the range x d_g) and wires whose index
+    lies in the shape-factor table and, for an inner spring, whose outside diameter D + d fits ``max_outer``."""
     lo, hi = diameter_range[0] * throat_diameter, diameter_range[1] * throat_diameter
-    diameters = np.arange(np.ceil(lo / diameter_step), np.floor(hi / diameter_step) + 1) * diameter_step
-    candidates = []
-    for D in diameters:
-        for d_mm in wire_series_mm:
-            d = d_mm * 1e-3
-            if max_outer is not None and D + d > max_outer:
-                continue
-            s = evaluate_spring(required, D, d, material, camshaft_speed, installed_length)
-            if s is None:
-                continue
-            if extra_check is not None:
-                s.checks.update(extra_check(s))
-            candidates.append(s)
-    if not candidates:
-        low, high = feasible_mean_diameters(wire_series_mm)
-        inside = f" inside the outer spring (outside diameter <= {max_outer * 1e3:.1f} mm)" if max_outer else ""
-        raise NoSpringFits(f"no spring of the wire series fits{inside} with D in {lo * 1e3:.1f}...{hi * 1e3:.1f} mm; "
-                           f"the series makes D = {low * 1e3:g}...{high * 1e3:g} mm (index 3...12)")
-    passing = [s for s in candidates if s.passes]
+    diameters = np.arange(np.ceil(lo / diameter_step - 1e-9), np.floor(hi / diameter_step + 1e-9) + 1) * diameter_step
+    big_d, d = (a.ravel() for a in np.meshgrid(diameters, wires, indexing="ij"))
+    index = big_d / d
+    keep = (index >= SHAPE_FACTOR_TABLE[0][0]) & (index <= SHAPE_FACTOR_TABLE[0][-1])
+    if max_outer is not None:
+        keep &= big_d + d <= max_outer
+    return big_d[keep], d[keep]
+
+
+@dataclass
+class Search:
+    """Result of a spring search: the chosen springs, how many candidates passed and were tried."""
+
+    designs: dict                # "spring", or "outer" and "inner" -> SpringDesign
+    passing: int
+    tried: int
+    line: Characteristic         # the required line of the manual's construction
+
+    @property
+    def passes(self):
+        return all(s.passes for s in self.designs.values())
+
+    @property
+    def mass(self):
+        return sum(s.mass for s in self.designs.values())
+
+
+def _search(preloads, rates, lift, throat_diameter, camshaft_speed, options, *, diameter_range=None, max_outer=None,
+            installed_length=None, partner_frequency=None, free_lengths=False):
+    """Every line x grade x D x d at once: a list of :class:`Candidates` (one per grade).  ``free_lengths``:
+    no limit on the lengths (the inner springs of a pair, installed at the outer one's length)."""
+    wires = wire_series(options.wire_range_mm, options.wire_step_mm)
+    big_d, d = _grid(throat_diameter, diameter_range or options.diameter_range, options.diameter_step, wires,
+                     max_outer)
+    low, high = (None, None) if free_lengths else options.installed_limits(lift)
+    found = []
+    for material in options.materials:
+        found.append(evaluate_springs(
+            np.asarray(preloads)[:, None], np.asarray(rates)[:, None], lift, big_d[None, :], d[None, :], material,
+            camshaft_speed, ratio_range=options.ratio_range, installed_length=installed_length,
+            min_installed_length=low if installed_length is None else None, max_installed_length=high,
+            max_free_length=None if free_lengths else options.max_free_length, partner_frequency=partner_frequency,
+            min_frequency_difference=options.min_frequency_difference))
+        found[-1].line = np.repeat(np.arange(len(preloads)), len(d))
+    return found
+
+
+def _best(found):
+    """(candidates, index, passing count): the lightest passing candidate, else the best worst margin."""
+    passing = sum(int(np.count_nonzero(c.passed)) for c in found)
     if passing:
-        return min(passing, key=lambda s: s.mass), len(passing)
-    return max(candidates, key=lambda s: min(s.margins.values())), 0
+        key = [np.where(c.passed, c.mass, np.inf) for c in found]
+        k = int(np.argmin([np.min(m) for m in key]))
+        return found[k], int(np.argmin(key[k])), passing
+    key = [c.worst_margin for c in found]
+    k = int(np.argmax([np.max(m) for m in key]))
+    return found[k], int(np.argmax(key[k])), 0
+
+
+def design_spring(required, throat_diameter, camshaft_speed, options=SpringOptions(), **limits):
+    """The lightest spring that passes every check for the lines ``required``.
+
+    Parameters
+    ----------
+    required : Characteristic or (ndarray, ndarray)
+        One line, or the preloads and rates of several (:meth:`Requirement.lines`), whose
+        valve lift is then ``limits["lift"]``.
+    throat_diameter : float
+        Valve throat diameter d_g [m]; mean diameters from ``options.diameter_range`` x d_g.
+    camshaft_speed : float
+        omega_cam [rad/s] for the resonance ratio (6.14).
+    options : SpringOptions
+    limits
+        ``lift`` [m]; for the inner spring of a pair: ``diameter_range`` (D / d_g),
+        ``max_outer`` (largest D + d [m]), and ``installed_length``, ``partner_frequency`` of
+        :func:`evaluate_springs`.
+
+    Returns
+    -------
+    (SpringDesign, int, int)
+        The lightest spring passing every check or, when none does, the one whose worst
+        margin is best; the number of candidates that passed and that were tried.
+
+    Raises
+    ------
+    NoSpringFits
+        When no wire of the range makes a spring of the mean diameters (index 3...12) that fits.
+
+    References
+    ----------
+    seed 000, work 6 (D = 0.7-0.9 d_g, checks (6.1), (6.12), (6.14)).
+    """
+    if isinstance(required, Characteristic):
+        preloads, rates, lift = [required.preload], [required.rate], required.lift
+    else:
+        (preloads, rates), lift = required, limits.pop("lift")
+    found = _search(preloads, rates, lift, throat_diameter, camshaft_speed, options, **limits)
+    if not len(found[0]):
+        low, high = feasible_mean_diameters(options.wire_range_mm)
+        ratio = limits.get("diameter_range") or options.diameter_range
+        lo, hi = ratio[0] * throat_diameter, ratio[1] * throat_diameter
+        max_outer = limits.get("max_outer")
+        inside = f" inside the outer spring (outside diameter <= {max_outer * 1e3:.1f} mm)" if max_outer else ""
+        raise NoSpringFits(f"no spring of the wire range {options.wire_range_mm[0]:g}...{options.wire_range_mm[1]:g} "
+                           f"mm fits{inside} with D in {lo * 1e3:.1f}...{hi * 1e3:.1f} mm; the range makes D = "
+                           f"{low * 1e3:g}...{high * 1e3:g} mm (index 3...12)")
+    best, i, passing = _best(found)
+    return best.design(i), passing, sum(len(c) for c in found)
+
+
+PAIR_CANDIDATES = 300
+"""Passing outer and inner springs per line, lightest first, joined into nested pairs."""
+
+
+def _inner_design(outer, inner_found, i, camshaft_speed, options):
+    """Inner candidate ``i`` designed at the outer spring's installed length, against its frequency."""
+    c = inner_found
+    preload = float(c.preload[i])
+    line = Characteristic(preload, (float(c.target_ratio[i]) - 1.0) * preload / c.lift, c.lift)
+    return evaluate_spring(line, c.mean_diameter[i], c.wire_diameter[i], c.material, camshaft_speed,
+                           ratio_range=options.ratio_range, installed_length=outer.lengths["installed_length"],
+                           max_free_length=options.max_free_length, partner_frequency=outer.natural_frequency,
+                           min_frequency_difference=options.min_frequency_difference)
+
+
+def _joined(outer, inner, options, lift):
+    """(outer index, inner index, count) of the lightest compatible pair of two grades' candidates, or None.
+
+    Per line: the :data:`PAIR_CANDIDATES` lightest passing springs of each kind, compatible when the inner
+    one fits inside the outer one with ``options.radial_gap``, its own length at full lift is not longer
+    than the outer one's (the coil gap at the common installed length), its natural frequency differs by
+    ``options.min_frequency_difference`` and its free length at that installed length is allowed."""
+    best, count = None, 0
+    for line in np.unique(outer.line):
+        o = np.flatnonzero(outer.passed & (outer.line == line))
+        n = np.flatnonzero(inner.passed & (inner.line == line))
+        o, n = o[np.argsort(outer.mass[o])][:PAIR_CANDIDATES], n[np.argsort(inner.mass[n])][:PAIR_CANDIDATES]
+        if not len(o) or not len(n):
+            continue
+        room = outer.mean_diameter[o] - outer.wire_diameter[o] - 2.0 * options.radial_gap
+        ok = (inner.mean_diameter[n] + inner.wire_diameter[n])[None, :] <= room[:, None]
+        ok &= inner.lengths["min_length"][n][None, :] <= outer.lengths["min_length"][o][:, None] * (1.0 + 1e-9)
+        w_o = outer.natural_frequency[o][:, None]
+        ok &= np.abs(inner.natural_frequency[n][None, :] - w_o) / w_o >= options.min_frequency_difference
+        if options.max_free_length is not None:
+            free = outer.lengths["installed_length"][o][:, None] + (inner.preload[n] / inner.rate[n])[None, :]
+            ok &= free <= options.max_free_length
+        count += int(np.count_nonzero(ok))
+        if ok.any():
+            total = np.where(ok, outer.mass[o][:, None] + inner.mass[n][None, :], np.inf)
+            a, b = np.unravel_index(int(np.argmin(total)), total.shape)
+            if best is None or total[a, b] < best[0]:
+                best = (total[a, b], int(o[a]), int(n[b]))
+    return None if best is None else (best[1], best[2], count)
+
+
+def design_pair(preloads, rates, lift, throat_diameter, camshaft_speed, options):
+    """The lightest nested pair: the outer spring takes 1 - s of each line, the inner spring s (eqs. 5.10-5.14).
+
+    Both kinds are searched over the whole grid (the inner one over D = 0.3...0.9 d_g), each
+    with its own checks; the passing ones of the same line are joined (:func:`_joined`): one
+    seat and one retainer, so the inner spring is installed at the outer one's length, fits
+    inside it and has a natural frequency apart from it (6.14).  The pair of the smallest
+    total mass wins.  When no pair passes, the best outer spring (lightest passing, else best
+    worst margin) gets its best inner spring.
+
+    Returns
+    -------
+    (dict, int, int)
+        ``{"outer": SpringDesign, "inner": SpringDesign}``, the number of passing pairs found
+        (0 when none) and the number of candidates tried.
+
+    Raises
+    ------
+    NoSpringFits
+        When no spring of the wire range can be wound (outer), or none fits inside the outer one.
+    """
+    share = options.inner_share
+    p, c = np.asarray(preloads, dtype=float), np.asarray(rates, dtype=float)
+    outer_found = _search(p * (1.0 - share), c * (1.0 - share), lift, throat_diameter, camshaft_speed, options)
+    if not len(outer_found[0]):
+        design_spring((p, c), throat_diameter, camshaft_speed, options, lift=lift)    # raises NoSpringFits
+    inner_range = (INNER_DIAMETER_RATIO_LOW, options.diameter_range[1])
+    inner_found = _search(p * share, c * share, lift, throat_diameter, camshaft_speed, options,
+                          diameter_range=inner_range, free_lengths=True)
+    tried = sum(len(x) for x in outer_found + inner_found)
+    best, passing = None, 0
+    for outer in outer_found:
+        for inner in inner_found:
+            joined = _joined(outer, inner, options, lift)
+            if joined is None:
+                continue
+            a, b, count = joined
+            passing += count
+            total = outer.mass[a] + inner.mass[b]
+            if best is None or total < best[0]:
+                best = (total, outer, a, inner, b)
+    if best is not None:
+        _, outer, a, inner, b = best
+        chosen = outer.design(a)
+        return {"outer": chosen, "inner": _inner_design(chosen, inner, b, camshaft_speed, options)}, passing, tried
+    found, a, _ = _best(outer_found)
+    chosen = found.design(a)
+    line = int(found.line[a])
+    room = chosen.mean_diameter - chosen.wire_diameter - 2.0 * options.radial_gap
+    inner, _, n_tried = design_spring(([p[line] * share], [c[line] * share]), throat_diameter, camshaft_speed, options,
+                                      lift=lift, diameter_range=inner_range, max_outer=room,
+                                      installed_length=chosen.lengths["installed_length"],
+                                      partner_frequency=chosen.natural_frequency)
+    return {"outer": chosen, "inner": inner}, 0, tried + n_tried
+
+
+def design_springs(requirement, throat_diameter, camshaft_speed, options=SpringOptions()):
+    """The lightest spring (or nested pair) of ``options`` for a requirement, over the lines of every allowed
+    deflection ratio (:meth:`Requirement.lines`).
+
+    Returns
+    -------
+    Search
+    """
+    line = requirement.line(options.ratio_range)
+    preloads, rates = requirement.lines(options.ratio_range, line=line)
+    lift = requirement.max_lift
+    if options.count == 1:
+        spring, passing, tried = design_spring((preloads, rates), throat_diameter, camshaft_speed, options, lift=lift)
+        designs = {"spring": spring}
+    else:
+        designs, passing, tried = design_pair(preloads, rates, lift, throat_diameter, camshaft_speed, options)
+    return Search(designs, passing, tried, line)
+
+
+def resonance_stress(ratio, camshaft_speed, max_deflection, shape_factor, shear_modulus, density):
+    """Shear stress at full lift of a spring whose surge frequency is ``ratio`` x omega_cam [Pa].
+
+    Notes
+    -----
+    Eliminating d, D and i_p between (6.1), (6.2) and (6.13):
+
+    .. math:: \\omega_{c1} = \\frac{\\pi \\tau_{max}}{\\chi f_{max} \\sqrt{2 \\rho G}}
+
+    so that a resonance ratio R needs
+    :math:`\\tau_{max} = R \\omega_{cam} \\chi f_{max} \\sqrt{2 \\rho G} / \\pi`, whatever the
+    wire and mean diameters: at a given f_max (fixed by the line, f_max = h r / (r - 1))
+    the frequency can only be bought with stress.
+
+    References
+    ----------
+    seed 000, eqs. (6.1), (6.2), (6.13) (reading [A]).
+
+    Examples
+    --------
+    The seed 000 appendix speed and lift, f_max/f_min = 3.2 (f_max = 14.545 mm), chi = 1.1 (D/d = 12),
+    60S2A: 10 x omega_cam needs 661.5 MPa.
+
+    >>> round(float(resonance_stress(10.0, np.pi * 3500 / 30, 0.010 * 3.2 / 2.2, 1.1, 8e10, 7850.0)) / 1e6, 1)
+    661.5
+    """
+    return ratio * camshaft_speed * shape_factor * max_deflection * np.sqrt(2.0 * density * shear_modulus) / np.pi
+
+
+def fatigue_stress_limit(endurance, mean_stress_factor, ratio, min_safety):
+    """Largest tau_max with a fatigue safety of ``min_safety`` when tau_min = tau_max / ratio [Pa].
+
+    Notes
+    -----
+    From (6.10)-(6.12) with :math:`\\tau_{min} = \\tau_{max} / r` (r = f_max / f_min):
+
+    .. math:: \\tau_{max} = \\frac{2 \\tau_{-1}}{n [(1 - 1/r) + \\psi_\\tau (1 + 1/r)]}
+
+    Examples
+    --------
+    >>> tau = fatigue_stress_limit(370e6, 0.2, 3.2, 1.3)
+    >>> round(float(fatigue_safety(tau, tau / 3.2, 370e6, 0.2)), 12)
+    1.3
+    """
+    return 2.0 * endurance / (min_safety * ((1.0 - 1.0 / ratio) + mean_stress_factor * (1.0 + 1.0 / ratio)))
+
+
+def _passing_factor(trial, floor, tolerance=0.01):
+    """A factor in [floor, 1) for which ``trial(factor)`` passes, found by bisection to ``tolerance`` between
+    ``floor`` (which must pass) and 1 (which failed); None when ``floor`` fails.  The factor returned always
+    passed; with the discrete wire sizes a slightly larger one may pass too."""
+    if not trial(floor):
+        return None
+    good, bad = floor, 1.0
+    while bad - good > tolerance:
+        middle = 0.5 * (good + bad)
+        if trial(middle):
+            good = middle
+        else:
+            bad = middle
+    return float(good)
+
+
+def stress_window(material, lift, camshaft_speed, ratio_range=DEFLECTION_RATIO_RANGE, wire_range_mm=WIRE_RANGE_MM):
+    """The room the resonance check leaves between stress limits, at the best deflection ratio (SI).
+
+    For each ratio r of ``ratio_range`` (every :data:`DEFLECTION_RATIO_STEP`): the stress the
+    resonance ratio needs at f_max = h r / (r - 1) with the smallest shape factor of the
+    table (D/d = 12, :func:`resonance_stress`), and the largest stress the grade allows at
+    the thinnest wire ([tau] and :func:`fatigue_stress_limit` with tau_min = tau_max / r).
+    No spring of the grade can pass when the needed stress exceeds the allowed one at every r.
+
+    Returns
+    -------
+    dict
+        ``ratio``, ``max_deflection`` [m], ``needed`` and ``allowed`` [Pa] at the ratio of the
+        largest allowed / needed.
+    """
+    r = deflection_ratios(ratio_range)
+    f_max = lift * r / (r - 1.0)
+    needed = resonance_stress(material.min_resonance_ratio, camshaft_speed, f_max, SHAPE_FACTOR_TABLE[1][-1],
+                              material.shear_modulus, material.density)
+    allowable, endurance, psi = material.limits(np.array([wire_range_mm[0] * 1e-3]))
+    allowed = np.minimum(allowable, fatigue_stress_limit(endurance, psi, r, material.min_safety))
+    k = int(np.argmax(allowed / needed))
+    return {"ratio": float(r[k]), "max_deflection": float(f_max[k]), "needed": float(needed[k]),
+            "allowed": float(allowed[k])}
+
+
+def _conflicts(search):
+    """Every failing check of the springs of a search: value, limit (display units) and relative shortfall."""
+    out = []
+    for tag, spring in search.designs.items():
+        for key, c in spring.checks.items():
+            if not c.passed:
+                limit = c.high if c.high is not None and (c.low is None or c.value > c.high) else c.low
+                out.append({"spring": tag, "check": key, "quantity": c.quantity, "value": c.shown_value,
+                            "limit": to_display(limit, c.unit), "unit": c.unit, "shortfall": -c.margin})
+    return out
+
+
+def _remedies(requirement, throat_diameter, camshaft_speed, options, conflicts, engine_speed):
+    """(remedies that make a spring pass, remedies tried in vain), each computed by a new search."""
+    def passing(req=requirement, speed=camshaft_speed, **changes):
+        try:
+            found = design_springs(req, throat_diameter, speed, replace(options, **changes))
+        except NoSpringFits:
+            return None
+        return found if found.passes else None
+
+    helped, tried = [], []
+    base = options.materials[0]
+    for name in (n for n in GRADES if n not in {m.grade for m in options.materials}):
+        own = replace(base, grade=name, shear_modulus=None, density=None, allowable_stress=None, endurance_limit=None,
+                      mean_stress_factor=None)
+        found = passing(materials=(own,))
+        (helped if found else tried).append({"change": "material", "to": name,
+                                             **({"spring_mass_kg": found.mass} if found else {})})
+    found = passing(count=3 - options.count)
+    (helped if found else tried).append({"change": "count", "to": 3 - options.count,
+                                         **({"spring_mass_kg": found.mass} if found else {})})
+    if any(x["check"] == "installed_length" for x in conflicts):
+        found = passing(installed_length_range=(None, None))
+        if found:
+            longest = max(s.lengths["installed_length"] for s in found.designs.values())
+            helped.append({"change": "max_installed_length_mm", "to": longest * 1e3, "spring_mass_kg": found.mass})
+        else:
+            tried.append({"change": "max_installed_length_mm"})
+    speed = _passing_factor(lambda f: passing(requirement.scaled(f**2), camshaft_speed * f) is not None, 0.3)
+    if speed is None:
+        tried.append({"change": "rated_speed_factor", "to": 0.3})
+    else:
+        helped.append({"change": "rated_speed_factor", "to": speed,
+                       **({} if engine_speed is None else {"rated_speed_rpm": speed * engine_speed * 30.0 / np.pi})})
+    mass = _passing_factor(lambda f: passing(requirement.scaled(f)) is not None, 0.1)
+    (tried if mass is None else helped).append({"change": "reduced_mass_factor", "to": 0.1 if mass is None else mass})
+    return helped, tried
+
+
+def _remedy_text(x, helped):
+    """One remedy in words."""
+    grams = f" ({x['spring_mass_kg'] * 1e3:.0f} g)" if helped and "spring_mass_kg" in x else ""
+    if x["change"] == "material":
+        return f"material = \"{x['to']}\"{grams}"
+    if x["change"] == "count":
+        return ("a nested pair (count = 2)" if x["to"] == 2 else "one spring (count = 1)") + grams
+    if x["change"] == "max_installed_length_mm":
+        return f"an installed length up to {x['to']:.1f} mm" if helped else "no installed length limit"
+    if x["change"] == "rated_speed_factor":
+        rpm = f" ({x['rated_speed_rpm']:.0f} rpm)" if "rated_speed_rpm" in x else ""
+        return f"a rated speed lowered to {x['to']:.1%}{rpm}" if helped else "a rated speed down to 30 %"
+    return f"a reduced mass lowered by {1.0 - x['to']:.0%}" if helped else "a reduced mass down to 10 %"
+
+
+def diagnose(requirement, throat_diameter, camshaft_speed, options, search, engine_speed=None):
+    """Why no spring of a search passes, by how much, and what would make one pass (each remedy computed).
+
+    Parameters
+    ----------
+    requirement : Requirement
+    throat_diameter, camshaft_speed : float
+        d_g [m] and omega_cam [rad/s].
+    options : SpringOptions
+        The search that found no passing spring.
+    search : Search
+        Its result (the best candidate).
+    engine_speed : float, optional
+        Rated crank speed [rad/s], to state the speed remedy in rpm.
+
+    Returns
+    -------
+    dict
+        ``conflicts``: every failing check of the best candidate with its value, limit and
+        relative shortfall; ``resonance`` (where the resonance check is on):
+        :func:`stress_window` of the best candidate's grade in MPa and mm; ``remedies``: the
+        changes with which a new search finds a passing spring (another grade of
+        :data:`valvetrain.spring_materials.GRADES`, a nested pair or one spring, a longer
+        installed length, a lower rated speed -- forces ~ omega^2, resonance ratio
+        ~ 1/omega --, a lower reduced mass -- forces ~ m), with the spring mass where it
+        applies; ``tried``: those that did not help; ``text``: all of it in words.
+    """
+    conflicts = _conflicts(search)
+    pair = len(search.designs) > 1
+    unit = {x["check"]: f" {x['unit']}" if x["unit"] else "" for x in conflicts}
+    words = [f"{x['spring'] + ' ' if pair else ''}{x['quantity']} {x['value']:.4g}{unit[x['check']]} against "
+             f"{x['limit']:.4g}{unit[x['check']]} (short by {x['shortfall']:.1%})" for x in conflicts]
+    text = [f"No {'nested pair' if pair else 'spring'} passes; the best {'pair' if pair else 'candidate'}: "
+            + "; ".join(words) + "."]
+    out = {"conflicts": conflicts}
+    grade_name = next(iter(search.designs.values())).material
+    material = next(m for m in options.materials if m.grade == grade_name)
+    if material.min_resonance_ratio > 0.0:
+        w = stress_window(material, requirement.max_lift, camshaft_speed, options.ratio_range, options.wire_range_mm)
+        out["resonance"] = {"material": grade_name, "deflection_ratio": w["ratio"],
+                            "max_deflection_mm": w["max_deflection"] * 1e3, "stress_needed_MPa": w["needed"] / 1e6,
+                            "stress_allowed_MPa": w["allowed"] / 1e6}
+        where = (f"at D/d = 12 and f_max/f_min = {w['ratio']:.3g} (f_max = {w['max_deflection'] * 1e3:.3g} mm), "
+                 f"while {grade_name} allows at most {w['allowed'] / 1e6:.0f} MPa there ([tau] and the fatigue safety)")
+        separation = 1.0 + options.min_frequency_difference
+        if w["needed"] > w["allowed"]:
+            text.append(f"The resonance ratio {material.min_resonance_ratio:g} needs tau_max >= {w['needed'] / 1e6:.0f} "
+                        f"MPa even {where}: no wire and no diameter of this grade can pass at this speed and lift.")
+        elif pair and w["needed"] * separation > w["allowed"]:
+            text.append(f"The two springs of a pair share f_max, so their frequencies stand as tau_max / chi: "
+                        f"frequencies {options.min_frequency_difference:.0%} apart with both resonance ratios >= "
+                        f"{material.min_resonance_ratio:g} need tau_max up to {w['needed'] * separation / 1e6:.0f} MPa "
+                        f"even {where}: no nested pair of this grade can pass at this speed and lift.")
+    helped, tried = _remedies(requirement, throat_diameter, camshaft_speed, options, conflicts, engine_speed)
+    out["remedies"], out["tried"] = helped, tried
+    if helped:
+        text.append("A spring passes with " + "; or ".join(_remedy_text(x, True) for x in helped) + ".")
+    if tried:
+        text.append("None passes with " + ", ".join(_remedy_text(x, False) for x in tried) + ".")
+    out["text"] = " ".join(text)
+    return out

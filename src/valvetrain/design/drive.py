@@ -31,11 +31,22 @@ def reduced_mass(v, throat_area, spring_mass_kg):
     return train_mass(si(v), spring_mass_kg)
 
 
-def _material(sp):
-    return springs.SpringMaterial(
-        shear_modulus=sp.shear_modulus_MPa * MPA, density=sp.density_kg_m3, allowable_stress=sp.allowable_stress_MPa * MPA,
-        endurance_limit=sp.endurance_limit_MPa * MPA, mean_stress_factor=sp.mean_stress_factor,
-        min_safety=sp.min_safety_factor, min_resonance_ratio=sp.min_resonance_ratio, gap_factor=sp.coil_gap_factor)
+def _spring_options(sp):
+    """The spring search of a [valves.NAME.spring] section, SI (grades, overrides, ranges, arrangement)."""
+    def si(value, unit):
+        return None if value is None else value * unit
+
+    materials = tuple(springs.SpringMaterial(
+        grade=name, shear_modulus=si(sp.shear_modulus_MPa, MPA), density=sp.density_kg_m3,
+        allowable_stress=si(sp.allowable_stress_MPa, MPA), endurance_limit=si(sp.endurance_limit_MPa, MPA),
+        mean_stress_factor=sp.mean_stress_factor, min_safety=sp.min_safety_factor,
+        min_resonance_ratio=sp.min_resonance_ratio, gap_factor=sp.coil_gap_factor) for name in sp.materials)
+    installed = None if sp.installed_length_mm is None else tuple(x * MM for x in sp.installed_length_mm)
+    return springs.SpringOptions(
+        materials=materials, count=sp.count, inner_share=sp.inner_share, diameter_range=sp.mean_diameter_ratio,
+        wire_range_mm=sp.wire_diameter_range_mm, wire_step_mm=sp.wire_step_mm, ratio_range=sp.deflection_ratio_range,
+        installed_length_range=installed, max_free_length=si(sp.max_free_length_mm, MM), radial_gap=sp.radial_gap_mm * MM,
+        min_frequency_difference=sp.min_frequency_difference)
 
 
 def _spring_record(s):
@@ -52,17 +63,20 @@ def _spring_record(s):
         "max_deflection_mm": c.max_deflection / MM, "spring_index": s.mean_diameter / s.wire_diameter,
         "shape_factor": s.shape_factor, "wahl_factor": s.wahl, "tau_max_MPa": s.tau_max / MPA,
         "tau_min_MPa": s.tau_min / MPA, "safety_factor": s.safety, "natural_frequency_Hz": s.natural_frequency / (2 * np.pi),
-        "resonance_ratio": s.resonance_ratio, "mass_kg": s.mass,
+        "resonance_ratio": s.resonance_ratio, "mass_kg": s.mass, "material": s.material,
+        "target_deflection_ratio": s.target_ratio,
         "guide_sleeve_needed": bool(s.lengths["free_length"] / s.mean_diameter > 2.5),
         "passes_all_checks": s.passes, "binding_check": s.binding_check,
         "margins": s.margins,
     }
 
 
-def _spring_checks(tag, s):
-    """A designed spring's own checks, named after the spring (``spring``, ``outer``, ``inner``)."""
-    return [replace(c, quantity=f"{tag} {c.quantity}") for key, c in s.checks.items()
-            if key in ("tau_max", "fatigue_safety", "resonance_ratio", "working_coils")]
+def _spring_checks(tag, s, note=""):
+    """A designed spring's own checks, named after the spring (``spring``, ``outer``, ``inner``); a failed one
+    carries ``note`` (the diagnosis)."""
+    return [replace(c, quantity=f"{tag} {c.quantity}", note=c.note if c.passed else note) for key, c in s.checks.items()
+            if key in ("tau_max", "fatigue_safety", "resonance_ratio", "working_coils", "installed_length",
+                       "free_length", "coil_gap_at_full_lift")]
 
 
 def drive_stage(v, gas, law, omega, heel, roller):
@@ -87,40 +101,26 @@ def drive_stage(v, gas, law, omega, heel, roller):
         gas_source = "seed 000, eq. (5.5)"
 
     sp = v.spring
-    material = _material(sp)
+    options = _spring_options(sp)
     spring_total_mass = 0.0
     for _ in range(20):
         m_v, mass_source = reduced_mass(v, f_g, spring_total_mass)
         required = springs.required_spring_force(m_v, a_v, v.drive.spring_reserve)
-        preload, rate = springs.enveloping_line(y, required, sp.deflection_ratio_range, p_gas)
-        raised = preload <= p_gas * (1.0 + 1e-9) and p_gas > 0.0
-        line = springs.Characteristic(preload, rate, lift)
+        seat = springs.seat_load(m_v) if sp.min_preload_N is None else sp.min_preload_N
+        requirement = springs.Requirement(y, required, max(p_gas, seat))
+        search = springs.design_springs(requirement, d_g, omega, options)
+        line, designs, n_pass = search.line, search.designs, search.passing
+        preload, rate = line.preload, line.rate
+        raised = preload <= requirement.min_preload * (1.0 + 1e-9) and requirement.min_preload > 0.0
         lines = {"required": line}
-        if sp.count == 1:
-            chosen, n_pass = springs.design_spring(line, d_g, material, omega, sp.mean_diameter_ratio)
-            designs = {"spring": chosen}
-        else:
-            outer_line, inner_line = line.split(sp.inner_share)
-            outer, n_pass = springs.design_spring(outer_line, d_g, material, omega, sp.mean_diameter_ratio)
-            room = outer.mean_diameter - outer.wire_diameter - 2.0 * sp.radial_gap_mm * MM
-
-            def differs(s, outer=outer):
-                diff = abs(s.natural_frequency - outer.natural_frequency) / outer.natural_frequency
-                low = sp.min_frequency_difference if sp.min_frequency_difference > 0.0 else None
-                return {"frequency_difference": check(
-                    "frequency difference", diff, low=low,
-                    source="seed 000, eq. (6.14): the two ratios must differ (10 % assumed)")}
-
-            inner, n_in = springs.design_spring(inner_line, d_g, material, omega, (0.3, sp.mean_diameter_ratio[1]),
-                                                max_outer=room, extra_check=differs,
-                                                installed_length=outer.lengths["installed_length"])
-            n_pass = min(n_pass, n_in)
-            designs = {"outer": outer, "inner": inner}
-            lines.update(outer=outer.characteristic, inner=inner.characteristic)
+        if sp.count == 2:
+            lines.update(outer=designs["outer"].characteristic, inner=designs["inner"].characteristic)
         new_mass = sum(d.mass for d in designs.values())
         if v.drive.masses is None or v.drive.masses.spring_kg is not None or abs(new_mass - spring_total_mass) < 1e-7:
             break
         spring_total_mass = new_mass
+    diagnosis = None if search.passes else springs.diagnose(requirement, d_g, omega, options, search,
+                                                            2.0 * omega)
     m_t = masses.reduced_mass_at_tappet(m_v, i_k)
 
     chosen_line = springs.Characteristic(sum(d.characteristic.preload for d in designs.values()),
@@ -134,7 +134,7 @@ def drive_stage(v, gas, law, omega, heel, roller):
     if sp.count == 2:
         found.append(check("inner spring share", sp.inner_share, *springs.INNER_SHARE_RANGE, source="seed 000, work 5"))
     for tag, d in designs.items():
-        found += _spring_checks(tag, d)
+        found += _spring_checks(tag, d, diagnosis["text"] if diagnosis else "")
     if sp.count == 2:
         found.append(replace(designs["inner"].checks["frequency_difference"],
                              quantity="inner/outer spring frequency difference"))
@@ -144,14 +144,21 @@ def drive_stage(v, gas, law, omega, heel, roller):
         "preload_N": chosen_line.preload, "max_force_N": chosen_line.max_force, "rate_N_per_mm": chosen_line.rate * MM,
         "required_preload_N": preload, "required_rate_N_per_mm": rate * MM, "required_max_force_N": line.max_force,
         "required_deflection_ratio": line.max_deflection / line.preload_deflection,
-        "preload_set_by_gas_force": bool(raised), "gas_force_N": p_gas, "gas_force_source": gas_source,
+        "preload_set_by_gas_force": bool(raised and p_gas >= seat), "gas_force_N": p_gas, "gas_force_source": gas_source,
+        "preload_set_by_seat_load": bool(raised and seat > p_gas), "seat_load_N": seat,
+        "seat_load_source": "min_preload_N of the specification" if sp.min_preload_N is not None else
+        f"m_v x {springs.SEAT_ACCELERATION:.5g} m/s2 (100 g, a stated default)",
         "deflection_ratio": ratio, "spring_reserve": v.drive.spring_reserve, "candidates_passing": n_pass,
+        "candidates_tried": search.tried,
     }
+    if diagnosis:
+        spring_rec["diagnosis"] = diagnosis
     if sp.count == 1:
         spring_rec.update(_spring_record(designs["spring"]))
     else:
         spring_rec.update({k: val for k, val in _spring_record(designs["outer"]).items()
                            if k not in ("preload_N", "max_force_N", "rate_N_per_mm")})
+        spring_rec["passes_all_checks"] = search.passes
         spring_rec["outer"] = _spring_record(designs["outer"])
         spring_rec["inner"] = _spring_record(designs["inner"])
         spring_rec["inner_share"] = sp.inner_share

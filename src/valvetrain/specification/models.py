@@ -8,11 +8,12 @@ sections are in :mod:`.validate`.
 import math
 from pathlib import Path
 import re
-from typing import Annotated, ClassVar, Literal, Optional
+from typing import Annotated, ClassVar, Literal, Optional, Union
 
 from pydantic import Field, field_validator, model_validator
 
 from ..files import read_indicator
+from ..spring_materials import GRADES, grade
 from .cams import Cam, layout
 from .fields import Length, Pair, _bounded, _Model, _zero_or
 from .messages import shown
@@ -95,30 +96,57 @@ class Drive(_Model):
 
 
 class Spring(_Model):
-    """[valves.NAME.spring]: spring count, material and design limits (seed 000, works 5-6)."""
+    """[valves.NAME.spring]: spring count, material, search ranges and design limits (seed 000, works 5-6).
+
+    ``material`` names a wire grade of :data:`valvetrain.spring_materials.GRADES` (or a list of
+    them, all searched); the property keys left out come from the grade, a key given replaces
+    the grade's value for every wire."""
 
     count: Literal[1, 2] = 1
     inner_share: _bounded(0.05, 0.95, low_open=False) = 0.4
-    material: str = "60S2A"
-    shear_modulus_MPa: _bounded(1e3, 3e5, "MPa") = 8.0e4
-    density_kg_m3: _bounded(100.0, 20000.0, "kg/m3") = 7850.0
-    allowable_stress_MPa: _bounded(50.0, 3000.0, "MPa", low_open=False) = 500.0
-    endurance_limit_MPa: _bounded(50.0, 3000.0, "MPa", low_open=False) = 370.0
-    mean_stress_factor: _bounded(0.0, 1.0, low_open=False) = 0.2
+    material: Union[str, list[str]] = "60S2A"
+    shear_modulus_MPa: Optional[_bounded(1e3, 3e5, "MPa")] = None
+    density_kg_m3: Optional[_bounded(100.0, 20000.0, "kg/m3")] = None
+    allowable_stress_MPa: Optional[_bounded(50.0, 3000.0, "MPa", low_open=False)] = None
+    endurance_limit_MPa: Optional[_bounded(50.0, 3000.0, "MPa", low_open=False)] = None
+    mean_stress_factor: Optional[_bounded(0.0, 1.0, low_open=False)] = None
     min_safety_factor: _bounded(0.1, 10.0, low_open=False) = 1.3
     min_resonance_ratio: _zero_or(1.0, 100.0, zero="the check switched off") = 10.0
     coil_gap_factor: _bounded(0.01, 1.0, low_open=False) = 0.12
     mean_diameter_ratio: Pair(0.0, 5.0) = (0.7, 0.9)
+    wire_diameter_range_mm: Pair(0.1, 30.0, "mm") = (2.0, 7.0)
+    wire_step_mm: _bounded(0.01, 1.0, "mm", low_open=False) = 0.1
     deflection_ratio_range: Pair(1.0, 20.0) = (1.6, 3.2)
     min_frequency_difference: _bounded(0.0, 1.0, low_open=False) = 0.1
     radial_gap_mm: Length(0.0, 20.0, low_open=False) = 1.0
+    min_preload_N: Optional[_bounded(0.0, 1e6, "N", low_open=False)] = None
+    installed_length_mm: Optional[Pair(1.0, 5000.0, "mm")] = None
+    max_free_length_mm: Optional[Length(1.0, 5000.0, low_open=False)] = None
+
+    @property
+    def materials(self):
+        """The grade names searched, canonical spelling."""
+        names = [self.material] if isinstance(self.material, str) else self.material
+        return [grade(n).name for n in names]
 
     @model_validator(mode="after")
     def _ordered_range(self):
-        for key, default in (("mean_diameter_ratio", "[0.7, 0.9]"), ("deflection_ratio_range", "[1.6, 3.2]")):
+        for key, default in (("mean_diameter_ratio", "[0.7, 0.9]"), ("deflection_ratio_range", "[1.6, 3.2]"),
+                             ("wire_diameter_range_mm", "[2.0, 7.0]")):
             low, high = getattr(self, key)
             if low >= high:
-                raise ValueError(f"{key} = {[low, high]} must be [low, high] with low < high (seed 000: {default})")
+                raise ValueError(f"{key} = {[low, high]} must be [low, high] with low < high (default: {default})")
+        if self.installed_length_mm is not None and self.installed_length_mm[0] > self.installed_length_mm[1]:
+            raise ValueError(f"installed_length_mm = {list(self.installed_length_mm)} must be [low, high] with "
+                             "low <= high")
+        names = [self.material] if isinstance(self.material, str) else self.material
+        if not names:
+            raise ValueError(f"material = []: name at least one of {', '.join(repr(n) for n in GRADES)}")
+        for name in names:
+            try:
+                grade(name)
+            except KeyError as exc:
+                raise ValueError(exc.args[0]) from None
         return self
 
 

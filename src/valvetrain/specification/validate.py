@@ -39,12 +39,17 @@ def _valve_problems(name, v, engine):
     if v.cam.base_radius_mm <= v.clearance_mm:
         out.append(f"{at}.cam.base_radius_mm = {v.cam.base_radius_mm:g} must exceed clearance_mm = {v.clearance_mm:g}")
     ratio = v.spring.mean_diameter_ratio
-    low, high = (x / MM for x in feasible_mean_diameters())
+    wires = v.spring.wire_diameter_range_mm
+    low, high = (x / MM for x in feasible_mean_diameters(wires))
     if ratio[1] * v.throat_diameter_mm < low or ratio[0] * v.throat_diameter_mm > high:
         out.append(f"{at}.spring.mean_diameter_ratio = {list(ratio)} with throat_diameter_mm = "
                    f"{v.throat_diameter_mm:g} gives spring mean diameters {ratio[0] * v.throat_diameter_mm:g}..."
-                   f"{ratio[1] * v.throat_diameter_mm:g} mm; the wire series makes {low:g}...{high:g} mm "
-                   "(seed 000, work 6)")
+                   f"{ratio[1] * v.throat_diameter_mm:g} mm; wire of {wires[0]:g}...{wires[1]:g} mm makes "
+                   f"{low:g}...{high:g} mm (index D/d = 3...12, seed 000, work 6)")
+    installed = v.spring.installed_length_mm
+    if installed is not None and v.max_lift_mm is not None and installed[1] <= v.max_lift_mm:
+        out.append(f"{at}.spring.installed_length_mm = {list(installed)}: the spring must be longer than the valve "
+                   f"lift max_lift_mm = {v.max_lift_mm:g} (it is compressed by it, seed 000, eq. 6.5)")
     if v.drive.layout == "direct" and v.rocker_ratio != 1.0:
         out.append(f"{at}.drive.layout = \"direct\" needs rocker_ratio = 1 (got {v.rocker_ratio:g})")
     if v.piston_gap_tdc_mm is not None and engine.rod_length_mm is None:
