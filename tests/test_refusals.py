@@ -171,3 +171,20 @@ def test_a_long_file_name_is_cut_in_the_message(tmp_path, refused):
     out = refused(text.replace('"data/measured-intake-lobe.csv"', '"' + "x" * 5000 + '.csv"'))
     line = next(ln for ln in out.splitlines() if "table_file" in ln)
     assert "cannot read the file" in line and len(line) < 300
+
+
+def test_a_long_spring_material_is_cut_in_the_message(refused):
+    """A 5000-character material name (found by the fuzzer) is shown cut, with the grades allowed."""
+    out = refused(_with(('material = "VDSiCr"', 'material = "' + "x" * 5000 + '"')))
+    line = next(ln for ln in out.splitlines() if "material" in ln)
+    assert "VDSiCr" in line and len(line) < 300
+
+
+def test_many_combined_ratios_are_refused_with_a_short_message(refused):
+    """100,000 ratio entries (found by the fuzzer) are refused by their count, not echoed."""
+    cam = ('[valves.intake.cam]\nlaw = "combined"\nramp_end_velocity_mm_per_deg = 0.02\n'
+           'segments = [{shape = "half_sine", length_deg = 25.0}, {shape = "quarter_sine", length_deg = 8.0}, '
+           '{shape = "parabola_to_nose", length_deg = 38.0}]\n'
+           'ratios = [' + ", ".join(["{segment = 20, value = 0.625}"] * 100_000) + "]\n")
+    out = refused(_with((CAM, cam + "\n")))
+    assert "ratios" in out and max(len(ln) for ln in out.splitlines()) < 300

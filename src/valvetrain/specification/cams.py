@@ -27,7 +27,7 @@ from ..laws.measured import CHECKING_HEIGHTS_MM, MIN_VALVE_LIFT_MM, TableLaw, lo
 from ..laws.takeup import ClearanceTakeUp
 from ..units import DEG, MM, cam_per_crank, rad_to_deg
 from .fields import RAMP_VELOCITY, SEGMENT_ANGLE, Length, _bounded, _Model
-from .messages import message
+from .messages import message, shown
 from .si import si
 
 REGISTRY = {}
@@ -387,13 +387,13 @@ class CombinedCam(_ClosingSide, _CamBase, _RampKeys):
     law: Literal["combined"]
     ramp_end_velocity_mm_per_deg: RAMP_VELOCITY
     segments: Annotated[list[Segment], Field(min_length=1, max_length=50)]
-    ratios: list[Ratio] = []
+    ratios: Annotated[list[Ratio], Field(max_length=50)] = []
 
     @model_validator(mode="after")
     def _ratio_segments_exist(self):
-        bad = [r.segment for r in self.ratios if r.segment > len(self.segments)]
+        bad = sorted({r.segment for r in self.ratios if r.segment > len(self.segments)})
         if bad:
-            raise ValueError(f"ratios name segments {bad}; allowed 1...{len(self.segments)}")
+            raise ValueError(f"ratios name segments {shown(bad)}; allowed 1...{len(self.segments)}")
         return self
 
     def flank_angle_deg(self):

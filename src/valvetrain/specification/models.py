@@ -145,8 +145,8 @@ class Spring(_Model):
         for name in names:
             try:
                 grade(name)
-            except KeyError as exc:
-                raise ValueError(exc.args[0]) from None
+            except KeyError:
+                raise ValueError(f"material = {shown(name)}: allowed {', '.join(repr(n) for n in GRADES)}") from None
         return self
 
 
