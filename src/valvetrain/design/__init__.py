@@ -84,7 +84,8 @@ class DesignResults:
     def __repr__(self):
         e = record(self.engine)
         lines = [f"DesignResults: {e['name']} ({e['cylinders']} cyl., {e['bore_mm']:g} x {e['stroke_mm']:g} mm, "
-                 f"{e['rated_speed_rpm']:g} rpm), {len(self.warnings)} of {len(self.checks)} checks fail"]
+                 f"{e['rated_speed_rpm']:g} rpm), {len(self.warnings)} of {len(self.checks)} checks fail"
+                 + (f" ({len(self.accepted)} more accepted)" if self.accepted else "")]
         lines += ["  " + ", ".join(f"{h} {c}" for h, c in zip(self._HEADS, row, strict=True)) for row in self._rows()]
         if self.crank is not None:
             lines.append(f"  crank: mean torque {self.crank.figures.mean_torque:.4g} N m")
