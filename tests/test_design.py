@@ -56,11 +56,14 @@ def test_example_reproduces_the_appendix(example):
 def test_example_warnings_are_those_of_e8(example):
     """E8: V' above 50-80, phi_zap 78 above 40-60, |j_min| above 1500, 45 deg inlet seat (usually 30);
     and V'' = 97.4 above 80-95 (E7)."""
-    names = {w["quantity"] for w in example["warnings"]}
-    assert names == {"intake: V' (throat velocity)", "intake: V'' (curtain velocity at full lift)",
-                     "intake: min tappet acceleration", "intake: closing lag", "intake: seat angle"}
+    names = {w["quantity"]: w["severity"] for w in example["warnings"]}
+    assert names == {"intake: V' (throat velocity)": "warning", "intake: V'' (curtain velocity at full lift)": "warning",
+                     "intake: min tappet acceleration": "warning", "intake: closing lag": "warning",
+                     "intake: seat angle": "info",
+                     # the example's part masses against the source's 400-500 kg/m2 of a pushrod train (issue 10)
+                     "intake: specific mass of the drive m' = m_v / f_g": "info"}
     for w in example["warnings"]:
-        assert set(w) == {"quantity", "value", "range", "source", "unit"}
+        assert set(w) == {"quantity", "value", "range", "source", "unit", "severity", "margin"}
         assert w["source"].startswith("seed")
 
 

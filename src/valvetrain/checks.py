@@ -7,6 +7,21 @@ A check that fails is not an exception: the report lists every check, ``results.
 carries them, the failed ones are the design's warnings, and an optimiser takes its
 constraints from the margins.
 
+Severity (:data:`SEVERITIES`) says what a failed check means, by the kind of bound:
+
+* ``failure``: an allowable limit of a part or a physical limit -- a stress or a safety factor of the strength
+  and spring calculations, an undercut profile (a part that breaks, wears through or cannot be made);
+* ``warning``: a recommended band of a textbook -- velocities, accelerations, timing, ratios, curvature (a design
+  that works, but outside the experience the source summarises);
+* ``info``: an informative comparison -- a value the user chose against what the source calls usual (the seat
+  angle), or a default of the source known to be far from today's parts (the specific drive mass).
+
+A check fails when its value lies outside its range, whatever its severity.  :func:`ranked` orders failed checks
+for a reader: failures first, then warnings, then info, and within a level the farthest outside first (the most
+negative relative :attr:`Check.margin`).  A failed check the user accepted in the specification (``[[accepted]]``,
+with a reason) keeps its severity and its record and carries ``accepted`` and ``reason``
+(:func:`apply_acceptances`): the report lists it apart, with the reason, and it is no longer an open warning.
+
 Values and bounds are SI; ``unit`` names the unit they are shown in (see
 :func:`valvetrain.units.to_display`), so that conversion happens only when a check is shown.
 """
@@ -46,6 +61,10 @@ class Check:
         The lower bound itself fails (``value > low`` required).
     note : str
         How the value was obtained, where that needs saying.
+    accepted : bool
+        The user accepted this check in the specification (``[[accepted]]``); meaningful for a failed check.
+    reason : str
+        The user's reason for the acceptance.
     """
 
     quantity: str
@@ -57,6 +76,8 @@ class Check:
     severity: str = "warning"
     strict_low: bool = False
     note: str = ""
+    accepted: bool = False
+    reason: str = ""
 
     @property
     def passed(self):
@@ -100,17 +121,24 @@ class Check:
         """The same check with ``prefix: `` before its quantity (the valve or chapter it belongs to)."""
         return replace(self, quantity=f"{prefix}: {self.quantity}")
 
+    @property
+    def open(self):
+        """True for a failed check that the user did not accept: an open warning (or failure, or remark)."""
+        return not self.passed and not self.accepted
+
     def warning(self):
-        """The record of a failed check in ``results.json`` ``warnings``: quantity, value, range, source, unit."""
+        """The record of a failed check in ``results.json`` ``warnings``: quantity, value, range, source, unit,
+        severity and margin (and the reason of an acceptance)."""
         return {"quantity": self.quantity, "value": self.shown_value, "range": self.range, "source": self.source,
-                "unit": self.unit}
+                "unit": self.unit, "severity": self.severity, "margin": self.margin,
+                **({"accepted": True, "reason": self.reason} if self.accepted else {})}
 
     def as_dict(self):
-        """The full record, in :attr:`unit`: the warning record with the bounds, severity, pass and margin."""
+        """The full record, in :attr:`unit`: the warning record with the bounds, pass, accepted (and reason)."""
         return {**self.warning(),
                 "low": None if self.low is None else to_display(self.low, self.unit),
                 "high": None if self.high is None else to_display(self.high, self.unit),
-                "severity": self.severity, "pass": self.passed, "margin": self.margin,
+                "pass": self.passed, "accepted": self.accepted,
                 **({"note": self.note} if self.note else {})}
 
 
@@ -156,3 +184,70 @@ def check(quantity, value, low=None, high=None, *, source, unit="", severity="wa
 def failed(checks):
     """The checks of a sequence that fail, in order."""
     return [c for c in checks if not c.passed]
+
+
+def ranked(checks):
+    """Checks in the order a reader needs them: failures, warnings, info; within a severity the farthest outside its
+    range first (smallest :attr:`Check.margin`), then in the given order.
+
+    >>> a = check("a", 85.0, 50, 80, source="s")                      # 6 % over: a warning
+    >>> b = check("b", 120.0, 50, 80, source="s")                     # 50 % over: a warning
+    >>> c = check("c", 1.0, high=0.9, source="s", severity="failure")  # 11 % over: a failure
+    >>> [x.quantity for x in ranked([a, b, c])]
+    ['c', 'b', 'a']
+    """
+    order = {s: i for i, s in enumerate(reversed(SEVERITIES))}
+    return sorted(checks, key=lambda c: (order[c.severity], c.margin))
+
+
+def valve_of(quantity, valves):
+    """The valve a check's quantity names in its prefix (``"intake: V'"`` -> ``"intake"``), or None."""
+    prefix, sep, _ = quantity.partition(": ")
+    return prefix if sep and prefix in valves else None
+
+
+def matches(acceptance, quantity, valves):
+    """True when an acceptance (``quantity`` and an optional ``valve``) names a check's quantity.
+
+    The acceptance's quantity is the check's quantity as printed (``"intake: Phi2/Phi3"``) or, for a valve's check,
+    without the valve's prefix (``"Phi2/Phi3"``: every valve, or the one ``valve`` names); case and surrounding
+    blanks do not matter.
+    """
+    def norm(text):
+        return " ".join(text.split()).casefold()
+
+    valve = valve_of(quantity, valves)
+    if acceptance.valve is not None and acceptance.valve != valve:
+        return False
+    wanted = norm(acceptance.quantity)
+    return wanted == norm(quantity) or (valve is not None and wanted == norm(quantity.partition(": ")[2]))
+
+
+def apply_acceptances(checks, acceptances, valves=()):
+    """The checks with ``accepted`` and ``reason`` set where an acceptance of the specification names them, and the
+    indices of the acceptances that name no check.
+
+    Parameters
+    ----------
+    checks : sequence of Check
+    acceptances : sequence
+        Objects with ``quantity``, ``valve`` (None: any) and ``reason`` (the ``[[accepted]]`` tables); the first that
+        names a check gives its reason.
+    valves : collection of str
+        The valve names (the prefixes of the valves' checks).
+
+    Returns
+    -------
+    checks : list of Check
+    unmatched : list of int
+    """
+    used = set()
+    out = []
+    for c in checks:
+        hit = next((i for i, a in enumerate(acceptances) if matches(a, c.quantity, valves)), None)
+        if hit is None:
+            out.append(c)
+        else:
+            used.update(i for i, a in enumerate(acceptances) if matches(a, c.quantity, valves))
+            out.append(replace(c, accepted=True, reason=acceptances[hit].reason))
+    return out, [i for i in range(len(acceptances)) if i not in used]

@@ -2,7 +2,9 @@
 
 Exit status: 0 on success, 2 for a specification or an output folder that cannot be used
 (one message per problem on standard error; nothing is written), 130 when interrupted
-(Ctrl-C), 1 for any other failure.
+(Ctrl-C), 1 for any other failure.  A design whose checks fail -- warnings, and failures
+such as a stress above its allowable -- is a result, not an error: ``run`` and ``validate``
+print the open checks, ranked, and exit 0.
 """
 
 import signal
@@ -57,6 +59,26 @@ def _design(spec):
         _fail_spec(err)
 
 
+_BOUND = {"failure": "allowed", "warning": "recommended", "info": "usual"}
+
+
+def _echo_checks(results):
+    """The failed checks, ranked (failures, warnings, info; the farthest outside first), one line each; the accepted
+    failures marked as such with their reasons; then a count that leaves the accepted checks out."""
+    for w in results.warnings:
+        click.echo(f"{w.severity}: {w.quantity} = {w.shown_value:.6g} {w.unit}, {_BOUND[w.severity]} {w.range} "
+                   f"({w.source})".replace("  ", " "))
+    accepted = results.accepted
+    for w in accepted:
+        if w.severity == "failure":
+            click.echo(f"accepted failure: {w.quantity} = {w.shown_value:.6g} {w.unit}, allowed {w.range} "
+                       f"({w.source}); reason: {w.reason}".replace("  ", " "))
+    counts = {s: sum(w.severity == s for w in results.warnings) for s in _BOUND}
+    click.echo(f"checks: {counts['failure']} failure(s), {counts['warning']} warning(s), {counts['info']} info of "
+               f"{len(results.checks)}" + (f"; {len(accepted)} accepted in the specification, not counted"
+                                           if accepted else ""))
+
+
 class _Main(click.Group):
     """The command group; Ctrl-C ends any command with exit status 130 and one line, not a traceback."""
 
@@ -101,9 +123,7 @@ def run(file, out, force, lang):
         if v.summary["cam"]["undercut"]:
             click.echo(f"refused: valves.{name}: the cam profile is undercut (rho_min = {v.summary['cam']['rho_min_mm']:.4g}"
                        " mm): no contour, DXF or manufacturing table was written for it")
-    for w in results.warnings:
-        click.echo(f"warning: {w.quantity} = {w.shown_value:.6g} {w.unit}, recommended {w.range} ({w.source})".replace(
-            "  ", " "))
+    _echo_checks(results)
 
 
 @main.command()
@@ -111,10 +131,15 @@ def run(file, out, force, lang):
 def validate(file):
     """Check a specification FILE; exit status 2 and one message per problem if it is not valid.
 
-    The design is computed (nothing is written), so a file that validates also runs."""
+    The design is computed (nothing is written), so a file that validates also runs, and its
+    failed checks are printed as `run` prints them: ranked, failures first, those accepted in
+    the file's [[accepted]] tables left out.  Exit status 0 whatever the checks say (failures
+    are results of the design, not errors of the input); 2 also for an [[accepted]] table that
+    names no check."""
     spec = _load(file)
-    _design(spec)
+    results = _design(spec)
     click.echo(f"{file}: valid ({len(spec.valves)} valve(s): {', '.join(spec.valves)})")
+    _echo_checks(results)
 
 
 @main.command()

@@ -8,15 +8,17 @@ rpm) are converted to SI for the physics functions.  Stages:
   the cam contour (seed 002 section 2.1), masses and springs (works 5-6), strength (work 7);
 * the crank mechanism (:mod:`.crank`): kinematics, forces and torque, multi-cylinder torque (seed 001);
 * two-stroke ports (:mod:`.twostroke`): timing, areas, time-area (seed 000 work 8);
-* recommended-range checks of every stage (warnings, never exceptions).
+* recommended-range checks of every stage (warnings, never exceptions), ranked by severity and margin, with
+  the acceptances of the specification (``[[accepted]]``) applied.
 """
 
 from dataclasses import dataclass
+import difflib
 
 import numpy as np
 
 from .. import flow
-from ..checks import check, failed
+from ..checks import SEVERITIES, apply_acceptances, check, failed, ranked, valve_of
 from ..crank.pressure import PressureFileError
 from ..files import TableFileError
 from ..specification import SpecError, si
@@ -60,8 +62,14 @@ class DesignResults:
 
     @property
     def warnings(self):
-        """The checks that fail, in the order of the chapters."""
-        return failed(self.checks)
+        """The checks that fail and that the specification does not accept, ranked (:func:`valvetrain.checks.ranked`:
+        failures, warnings, info; the farthest outside first)."""
+        return ranked(c for c in failed(self.checks) if not c.accepted)
+
+    @property
+    def accepted(self):
+        """The checks that fail and that the specification accepts (``[[accepted]]``, with a reason), ranked."""
+        return ranked(c for c in failed(self.checks) if c.accepted)
 
     def _rows(self):
         """One line of figures per valve: name, law, valve lift, time-area, fullness, spring, failed checks."""
@@ -76,7 +84,8 @@ class DesignResults:
     def __repr__(self):
         e = record(self.engine)
         lines = [f"DesignResults: {e['name']} ({e['cylinders']} cyl., {e['bore_mm']:g} x {e['stroke_mm']:g} mm, "
-                 f"{e['rated_speed_rpm']:g} rpm), {len(self.warnings)} of {len(self.checks)} checks fail"]
+                 f"{e['rated_speed_rpm']:g} rpm), {len(self.warnings)} of {len(self.checks)} checks fail"
+                 + (f" ({len(self.accepted)} more accepted)" if self.accepted else "")]
         lines += ["  " + ", ".join(f"{h} {c}" for h, c in zip(self._HEADS, row, strict=True)) for row in self._rows()]
         if self.crank is not None:
             lines.append(f"  crank: mean torque {self.crank.figures.mean_torque:.4g} N m")
@@ -91,9 +100,12 @@ class DesignResults:
             body = "".join("<tr>" + "".join(f"<td>{escape(str(c))}</td>" for c in r) + "</tr>" for r in rows)
             return f"<table><tr>{head}</tr>{body}</table>"
 
-        warnings = [(w.quantity, f"{w.shown_value:.6g} {w.unit}", w.range, w.source) for w in self.warnings]
+        warnings = [(w.severity, w.quantity, f"{w.shown_value:.6g} {w.unit}", w.range, w.source) for w in self.warnings]
+        accepted = [(w.severity, w.quantity, f"{w.shown_value:.6g} {w.unit}", w.range, w.reason) for w in self.accepted]
         return (f"<p><b>{escape(self.engine.name)}</b></p>" + table(self._HEADS, self._rows())
-                + "<p>Checks that fail</p>" + table(("quantity", "value", "allowed", "source"), warnings))
+                + "<p>Checks that fail</p>" + table(("severity", "quantity", "value", "allowed", "source"), warnings)
+                + ("<p>Accepted in the specification</p>" + table(("severity", "quantity", "value", "allowed",
+                                                                   "reason"), accepted) if accepted else ""))
 
     def to_dict(self):
         """JSON-ready dictionary (engineering units, named in the keys)."""
@@ -109,6 +121,7 @@ class DesignResults:
         if self.two_stroke is not None:
             out["two_stroke"] = self.two_stroke.summary
         out["warnings"] = [w.warning() for w in self.warnings]
+        out["accepted"] = [w.warning() for w in self.accepted]
         out["checks"] = [c.as_dict() for c in self.checks]
         return out
 
@@ -162,7 +175,34 @@ def run(spec, laws=None):
     for stage, tag in ((crank, "crank"), (ports, "two-stroke")):
         if stage is not None:
             found += [c.named(tag) for c in stage.checks]
+    found = accept(found, spec.accepted, valves)
     return DesignResults(spec, engine_record(engine), valves, found, crank, ports)
+
+
+def accept(found, acceptances, valves):
+    """The checks with the specification's acceptances applied (also to each valve's own list of checks).
+
+    Raises
+    ------
+    SpecError
+        An acceptance that names no check of the design (``accepted.N.quantity``), with the nearest quantities.
+    """
+    found, unmatched = apply_acceptances(found, acceptances, valves)
+    if unmatched:
+        names = sorted({c.quantity for c in found} | {c.quantity.partition(": ")[2] for c in found
+                                                      if valve_of(c.quantity, valves)})
+        problems = []
+        for i in unmatched:
+            a = acceptances[i]
+            near = difflib.get_close_matches(a.quantity, names, n=3, cutoff=0.5)
+            where = f" of valve {a.valve!r}" if a.valve is not None else ""
+            problems.append(f"accepted.{i}.quantity = {a.quantity!r} names no check{where} of the design"
+                            + (f"; did you mean {' or '.join(repr(n) for n in near)}?" if near else
+                               " (every check is listed in results.json, checks)"))
+        raise SpecError(problems)
+    for v in valves.values():
+        v.checks = apply_acceptances(v.checks, acceptances, valves)[0]
+    return found
 
 
 def engine_record(eng):
@@ -186,10 +226,16 @@ def results_schema():
         props.update({k: {"type": "object", "description": text} for k, text in extra.items()})
         return {"type": "object", "properties": props, "required": [k for sch in schemas for k in sch["required"]]}
 
-    check_record = {"type": "object", "required": ["quantity", "value", "range", "source", "unit"],
+    check_record = {"type": "object", "required": ["quantity", "value", "range", "source", "unit", "severity", "margin"],
                     "properties": {k: {"type": t} for k, t in (("quantity", "string"), ("range", "string"),
-                                                                ("source", "string"), ("unit", "string"))}
-                    | {"value": {"type": ["number", "null"]}}}
+                                                                ("source", "string"), ("unit", "string"),
+                                                                ("accepted", "boolean"), ("reason", "string"))}
+                    | {"value": {"type": ["number", "null"]}, "margin": {"type": ["number", "null"]},
+                       "severity": {"enum": list(SEVERITIES)}}}
+    full_record = {**check_record, "required": [*check_record["required"], "low", "high", "pass", "accepted"],
+                   "properties": check_record["properties"] | {
+                       "low": {"type": ["number", "null"]}, "high": {"type": ["number", "null"]},
+                       "pass": {"type": "boolean"}, "note": {"type": "string"}}}
     valve = {"type": "object", "properties": {
         "kind": {"type": "string"}, "count": {"type": "integer"}, "rocker_ratio": {"type": "number"},
         "cam": merged(json_schema(CamResult), json_schema(ProfileResult),
@@ -204,11 +250,17 @@ def results_schema():
         "$schema": "https://json-schema.org/draft/2020-12/schema",
         "$id": f"https://valvetrain.invalid/results-{__version__}.schema.json",
         "title": "valvetrain results.json", "type": "object",
-        "required": ["valvetrain_version", "engine", "valves", "warnings", "checks"],
+        "required": ["valvetrain_version", "engine", "valves", "warnings", "accepted", "checks"],
         "properties": {
             "valvetrain_version": {"type": "string"}, "engine": json_schema(EngineRecord),
             "valves": {"type": "object", "additionalProperties": valve},
             "crank": json_schema(CrankSummary), "two_stroke": json_schema(TwoStrokeSummary),
-            "warnings": {"type": "array", "items": check_record, "description": "the checks that fail"},
-            "checks": {"type": "array", "items": check_record,
-                       "description": "every check, with low, high, severity, pass and margin"}}}
+            "warnings": {"type": "array", "items": check_record,
+                         "description": "the checks that fail and are not accepted, ranked: failures, warnings, info, "
+                                        "the farthest outside (smallest margin) first"},
+            "accepted": {"type": "array", "items": check_record,
+                         "description": "the checks that fail and that the specification accepts ([[accepted]]), "
+                                        "ranked, each with accepted = true and the reason"},
+            "checks": {"type": "array", "items": full_record,
+                       "description": "every check, with low, high, severity, pass, margin and accepted (and the "
+                                      "reason of an acceptance)"}}}

@@ -14,12 +14,13 @@ import math
 import numpy as np
 
 from .. import flow, geometry
-from ..checks import check, failed
+from ..checks import check, failed, ranked
 from ..crank.kinematics import displacement
 from ..laws import LiftLaw
 from ..laws.base import Extremes
 from ..numerics import extremum
 from ..specification import SpecError
+from ..specification.cams import layout
 from ..springs import NoSpringFits
 from ..units import DEG, MM
 from .drive import drive_stage
@@ -29,6 +30,63 @@ ACCELERATION_LIMITS = (3500.0, -1500.0)
 """Upper ends of the recommended bands of positive (1500-3500) and negative (500-1500) tappet
 acceleration [m/s^2] (seed 000, work 2)."""
 
+LAYOUTS = ("direct", "rocker", "pushrod")
+"""Drive layouts (``[valves.NAME.drive] layout``): ``direct``, the cam acts on the valve through a tappet (an overhead
+camshaft on a bucket tappet, or the lower camshaft of a side-valve engine); ``rocker``, an overhead camshaft on a
+rocker or finger follower; ``pushrod``, a lower camshaft moving tappet, pushrod and rocker of overhead valves (OHV)."""
+
+
+@dataclass(frozen=True)
+class Band:
+    """A recommended range of one layout: bounds (SI, None open), its source and, where the source states it for
+    another layout, the note that says so."""
+
+    low: float = None
+    high: float = None
+    source: str = ""
+    note: str = ""
+
+
+_FOR_DIRECT = ("the source states this band in work 2 for the shock-free cam, whose Kurz law it uses for direct drive "
+               "from an overhead camshaft; work 3 (the polydyne cam of a tappet, pushrod and rocker train) gives no band "
+               "of its own, so the same band is applied to the {layout} drive")
+_ACCELERATION_SOURCE = "seed 000, work 2 ({sign} {band} m/s2)"
+
+LAYOUT_BANDS = {
+    "max tappet acceleration": {
+        layout: Band(high=ACCELERATION_LIMITS[0], source=_ACCELERATION_SOURCE.format(sign="positive", band="1500...3500"),
+                     note="" if layout == "direct" else _FOR_DIRECT.format(layout=layout)) for layout in LAYOUTS},
+    "min tappet acceleration": {
+        layout: Band(low=ACCELERATION_LIMITS[1], source=_ACCELERATION_SOURCE.format(sign="negative", band="500...1500"),
+                     note="" if layout == "direct" else _FOR_DIRECT.format(layout=layout)) for layout in LAYOUTS},
+    "rocker ratio": {
+        "rocker": Band(1.4, 1.75, "seed 000, work 2 (i_k = 1 for direct drive, 1.4-1.75 with a rocker or lever)"),
+        "pushrod": Band(1.4, 1.75, "seed 000, work 2 (i_k = 1 for direct drive, 1.4-1.75 with a rocker or lever)"),
+    },
+    "specific mass of the drive m' = m_v / f_g": {
+        "direct": Band(200.0, 300.0, "seed 000, work 5 (direct drive 200-300 kg/m2)"),
+        "rocker": Band(200.0, 300.0, "seed 000, work 5 (direct drive 200-300 kg/m2)",
+                       "the source gives 200-300 kg/m2 for direct drive and 400-500 kg/m2 for a tappet, pushrod and "
+                       "rocker train; an overhead-cam rocker train has no pushrod or tappet and is compared with the "
+                       "direct drive's band"),
+        "pushrod": Band(400.0, 500.0, "seed 000, work 5 (tappet, pushrod and rocker 400-500 kg/m2)"),
+    },
+}
+"""The recommended ranges that depend on the drive layout, ``quantity -> {layout: Band}``; a layout missing from a
+quantity's table has no such check (direct drive has no rocker: its ratio 1 is refused otherwise at validation).
+The valve arrangement of seed 000, work 1 (throat diameter / bore "при нижнем/верхнем расположении клапанов",
+side valves or overhead valves) is the combustion chamber's, ``[engine] chamber``
+(:data:`valvetrain.flow.THROAT_TO_BORE_RANGES`)."""
+
+
+def layout_check(quantity, value, layout, **kw):
+    """The check of ``quantity`` against the band of ``layout`` (:data:`LAYOUT_BANDS`), or None where the layout has
+    no such band; the band's note, if any, becomes the check's note."""
+    band = LAYOUT_BANDS[quantity].get(layout)
+    if band is None:
+        return None
+    return check(quantity, value, band.low, band.high, source=band.source, note=band.note, **kw)
+
 TIMING_RANGES = {"intake": ((20.0 * DEG, 30.0 * DEG), (40.0 * DEG, 60.0 * DEG))}
 """Recommended inlet opening advance and closing lag [crank rad] (seed 000, work 2: 20-30 and 40-60 crank deg)."""
 
@@ -37,9 +95,6 @@ CLEARANCE_RANGES = {"intake": (0.25 * MM, 0.35 * MM), "exhaust": (0.35 * MM, 0.5
 
 SEAT_ANGLE_USUAL = {"intake": (30.0 * DEG, 30.0 * DEG), "exhaust": (45.0 * DEG, 45.0 * DEG)}
 """Usual seat angles [rad] (seed 000, work 1: 30 deg inlet, 45 deg exhaust)."""
-
-ROCKER_RATIO_RANGE = (1.4, 1.75)
-"""Recommended rocker ratio when not 1 (direct drive) (seed 000, work 2)."""
 
 BASE_RADIUS_TO_LIFT_RANGE = (1.5, 4.0)
 """r0 / valve lift: 1.5-2.0 naturally aspirated, up to 3.0-4.0 supercharged (seed 000, work 2)."""
@@ -352,7 +407,8 @@ def clearance_stage(cam, valve, engine):
 def valve_checks(cam, flow_result, profile, valve, engine, timing):
     """The recommended-range checks of the law, the flow, the timing and the profile (every check, passed or not).
 
-    ``timing`` is the opening advance and closing lag [crank rad] of the main lift (None where not defined).
+    ``timing`` is the opening advance and closing lag [crank rad] of the main lift (None where not defined).  The
+    acceleration and rocker-ratio bands are those of the valve's drive layout (:data:`LAYOUT_BANDS`).
     """
     law, i_k = cam.law, cam.rocker_ratio
     out = law.checks()
@@ -360,10 +416,9 @@ def valve_checks(cam, flow_result, profile, valve, engine, timing):
                            max_lift=flow_result.valve_lift, v1=flow_result.v1, v2=flow_result.v2, v3=flow_result.v3,
                            charge_velocity=flow_result.charge_velocity, engine_type=engine.type,
                            chamber=engine.chamber, count=valve.count)
-    out.append(check("max tappet acceleration", cam.max_acceleration, high=ACCELERATION_LIMITS[0],
-                     source="seed 000, work 2 (positive 1500...3500 m/s2)", unit="m/s2"))
-    out.append(check("min tappet acceleration", cam.min_acceleration, low=ACCELERATION_LIMITS[1],
-                     source="seed 000, work 2 (negative 500...1500 m/s2)", unit="m/s2"))
+    drive = layout(valve)
+    out.append(layout_check("max tappet acceleration", cam.max_acceleration, drive, unit="m/s2"))
+    out.append(layout_check("min tappet acceleration", cam.min_acceleration, drive, unit="m/s2"))
     if valve.kind in TIMING_RANGES:
         for label, angle, (lo, hi) in zip(("opening advance", "closing lag"), timing, TIMING_RANGES[valve.kind],
                                           strict=True):
@@ -374,11 +429,12 @@ def valve_checks(cam, flow_result, profile, valve, engine, timing):
                          high=SEATING_VELOCITY_MAX, source=SEATING_VELOCITY_SOURCE, unit="m/s",
                          note=f"no ramp takes up clearance_mm = {valve.clearance / MM:g}: the flank does"))
     out.append(check("seat angle", valve.seat_angle, *SEAT_ANGLE_USUAL[valve.kind],
-                     source="seed 000, work 1 (usually 30 deg inlet, 45 deg exhaust)", unit="deg"))
+                     source="seed 000, work 1 (usually 30 deg inlet, 45 deg exhaust)", unit="deg", severity="info"))
     out.append(check("clearance h0", valve.clearance, *CLEARANCE_RANGES[valve.kind], source="seed 000, work 2",
                      unit="mm"))
-    if i_k != 1.0:
-        out.append(check("rocker ratio", i_k, *ROCKER_RATIO_RANGE, source="seed 000, work 2 (or 1, direct drive)"))
+    ratio = layout_check("rocker ratio", i_k, drive)
+    if ratio is not None:
+        out.append(ratio)
     out.append(check("base radius r0 / valve lift", cam.base_radius / flow_result.valve_lift, *BASE_RADIUS_TO_LIFT_RANGE,
                      source="seed 000, work 2 (1.5-2.0; supercharged 3.0-4.0)"))
     if cam.follower == "flat" and profile.undercut:
@@ -394,6 +450,18 @@ def valve_checks(cam, flow_result, profile, valve, engine, timing):
         out.append(check("rho_min (cam profile)", profile.rho_min, low=RHO_MIN, source="seed 002, section 2.1",
                          unit="mm"))
     return out
+
+
+def mass_checks(valve, mass, throat_area):
+    """The specific mass of the drive m' = m_v / f_g [kg/m2] against the band of the valve's layout (seed 000, work 5),
+    an ``info`` check: only where the masses or m' are given (the default m' is this project's, not the source's,
+    whose bands are 1.6-3.7 times the masses of the example's parts)."""
+    d = valve.drive
+    if d.masses is None and d.specific_mass_kg_m2 is None:
+        return []
+    c = layout_check("specific mass of the drive m' = m_v / f_g", mass / throat_area, layout(valve), unit="kg/m2",
+                     severity="info")
+    return [] if c is None else [c]
 
 
 @dataclass
@@ -413,8 +481,13 @@ class ValveDesign:
 
     @property
     def warnings(self):
-        """The checks that fail."""
-        return failed(self.checks)
+        """The checks that fail and that the specification does not accept, ranked (failures first)."""
+        return ranked(c for c in failed(self.checks) if not c.accepted)
+
+    @property
+    def accepted(self):
+        """The checks that fail and that the specification accepts, ranked."""
+        return ranked(c for c in failed(self.checks) if c.accepted)
 
     # the stage results that the edges (tables, plots, exports) read
     law = property(lambda self: self.cam.law)
@@ -483,10 +556,11 @@ def design_valve(name, valve, engine, gas, output, law=None):
     except NoSpringFits as exc:
         raise SpecError([f"{at}.spring: {exc}"]) from None
     found += valve_checks(cam, flow_result, profile, valve, engine, section.timing(valve, records)) + drive.checks
+    found += mass_checks(valve, drive.masses["at_valve_kg"], flow_result.throat_area)
     return ValveDesign(name, valve.kind, valve.count, cam, flow_result, profile, clearance, records, drive,
                        [c.named(name) for c in found])
 
 
 __all__ = ["CamResult", "ClearanceResult", "FlowResult", "LiftTable", "ProfileResult", "ValveDesign",
-           "clearance_stage", "design_valve", "flow_stage", "law_stage", "profile_stage",
+           "clearance_stage", "design_valve", "flow_stage", "law_stage", "layout_check", "mass_checks", "profile_stage",
            "valve_checks", "wrap_crank"]

@@ -64,7 +64,8 @@ def _measured(rec):
 
 
 def _summary(results, t):
-    """The report's first page: one row per valve and the limits not met."""
+    """The report's first page: one row per valve (its open failures, warnings and info, and its accepted checks),
+    the limits not met (ranked) and the failures the specification accepts."""
     rows = []
     for name, v in results.valves.items():
         s = v.summary
@@ -78,9 +79,11 @@ def _summary(results, t):
                      "duration": s["cam"]["valve_closes_crank_deg"] - s["cam"]["valve_opens_crank_deg"],
                      "time_area": s["flow"]["time_area_mm2_s"], "fullness": s["flow"]["fullness"], "spring": text,
                      "binding": f"{binding} ({spring['margins'][binding]:+.0%})",
-                     "failures": sum(c.severity == "failure" for c in v.warnings),
-                     "warnings": sum(c.severity != "failure" for c in v.warnings)})
-    return {"valves": rows, "failures": [c for c in results.warnings if c.severity == "failure"]}
+                     **{key: sum(c.severity == level for c in v.warnings) for key, level in
+                        (("failures", "failure"), ("warnings", "warning"), ("info", "info"))},
+                     "accepted": len(v.accepted)})
+    return {"valves": rows, "failures": [c for c in results.warnings if c.severity == "failure"],
+            "accepted_failures": [c for c in results.accepted if c.severity == "failure"]}
 
 
 def render_report(results, plots, lang="en", folder=None):
@@ -136,7 +139,7 @@ def render_report(results, plots, lang="en", folder=None):
                  "plots": plots["two_stroke"], "ports": results.two_stroke.summary["ports"]}
     return env.get_template("report.html").render(
         t=TEXT[lang], lang=lang, version=__version__, engine=record(results.engine), engine_inputs=_flatten(spec["engine"]),
-        valves=valves, warnings=results.warnings, first_page=first_page, timing=plots.get("(timing)"), sources=SOURCES, table_columns=TABLE_COLUMNS,
+        valves=valves, warnings=results.warnings, accepted=results.accepted, first_page=first_page, timing=plots.get("(timing)"), sources=SOURCES, table_columns=TABLE_COLUMNS,
         step=REPORT_STEP_DEG, output=_flatten(spec["output"]), crank=crank, ports=ports,
     )
 

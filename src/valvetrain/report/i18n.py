@@ -198,6 +198,38 @@ TEXT = {
     },
 }
 
+CHECK_TEXT = {
+    "en": {
+        "severity": "Severity", "reason": "Reason",
+        "severities": {"failure": "failure", "warning": "warning", "info": "info"},
+        "s_info": "info", "s_accepted": "accepted",
+        "accepted_list": "Accepted in the specification",
+        "open_checks": "Checks outside their ranges: failures, warnings, remarks",
+        "no_open": "Every checked value is inside its range or accepted in the specification.",
+        "accepted_intro": "Checks outside their ranges that the specification accepts ([[accepted]]) with the reason "
+                          "given; they are not counted among the open warnings. An accepted failure stays a failure.",
+        "ranking": "Failures first (an allowable limit or a physical limit), then warnings (a recommended range), then "
+                   "remarks (info); within each, the farthest outside its range first.",
+    },
+    "ru": {
+        "severity": "Уровень", "reason": "Обоснование",
+        "severities": {"failure": "нарушение предела", "warning": "предупреждение", "info": "справка"},
+        "s_info": "справки", "s_accepted": "принято",
+        "accepted_list": "Принято в исходных данных",
+        "open_checks": "Проверки вне пределов: нарушения, предупреждения, справки",
+        "no_open": "Все проверенные величины в пределах или приняты в исходных данных.",
+        "accepted_intro": "Проверки вне пределов, принятые в исходных данных ([[accepted]]) с указанным "
+                          "обоснованием; они не считаются открытыми предупреждениями. Принятое нарушение предела "
+                          "остаётся нарушением.",
+        "ranking": "Сначала нарушения пределов (допускаемые значения и физические пределы), затем предупреждения "
+                   "(рекомендуемые пределы), затем справки; внутри каждой группы сначала наиболее далёкие от пределов.",
+    },
+}
+"""Texts of the check levels and the accepted checks, merged into :data:`TEXT`."""
+
+for _lang, _texts in CHECK_TEXT.items():
+    TEXT[_lang].update(_texts)
+
 SOURCES = [
     ("seed 000", "Practical works 1-8 on valve-train design (Russian manual), with the appendix example "
                  "of a Kurz cam; formulas as reconstructed in spec/valvetrain-works-1-8.md"),

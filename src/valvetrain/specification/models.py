@@ -338,6 +338,25 @@ class Output(_Model):
 _NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_-]{0,31}$")
 
 
+class Acceptance(_Model):
+    """[[accepted]]: a check the user accepts outside its range, with the reason (see :mod:`valvetrain.checks`).
+
+    ``quantity`` is the check's quantity as printed (``"intake: Phi2/Phi3"``) or, for a valve's check, without the
+    valve (``"Phi2/Phi3"``: every valve, or the one ``valve`` names).  A failure (a strength or spring limit) can be
+    accepted like a warning; it stays marked as a failure."""
+
+    quantity: Annotated[str, Field(min_length=1, max_length=200)]
+    reason: Annotated[str, Field(max_length=2000)]
+    valve: Optional[str] = None
+
+    @field_validator("quantity", "reason")
+    @classmethod
+    def _not_blank(cls, text):
+        if not text.strip():
+            raise ValueError("must not be blank: name the check and say why it is accepted")
+        return text
+
+
 class Spec(_Model):
     """A whole design specification."""
 
@@ -347,6 +366,7 @@ class Spec(_Model):
     crank: Optional[CrankSpec] = None
     two_stroke: Optional[TwoStroke] = None
     output: Output = Output()
+    accepted: list[Acceptance] = []
     source_dir: Optional[str] = Field(default=None, exclude=True)
     """Folder of the specification file: relative file names (pressure_file) are read from there."""
 

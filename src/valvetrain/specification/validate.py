@@ -18,7 +18,7 @@ from ..files import shown_path
 from ..springs import feasible_mean_diameters
 from ..units import MM
 from .cams import LAWS, main_half_angle_deg
-from .messages import SpecError, message
+from .messages import SpecError, message, shown
 from .models import Spec, resolve_path
 
 
@@ -141,6 +141,13 @@ def _two_stroke_problems(spec):
     return out
 
 
+def _acceptance_problems(spec):
+    """An [[accepted]] table naming a valve the specification does not have."""
+    names = ", ".join(repr(n) for n in spec.valves) or "none: the specification has no valves"
+    return [f"accepted.{i}.valve = {shown(a.valve, 40)}: allowed {names}"
+            for i, a in enumerate(spec.accepted) if a.valve is not None and a.valve not in spec.valves]
+
+
 def _resolve_tables(spec):
     """Make every valve's table_file absolute (relative to the specification file's folder)."""
     valves = {}
@@ -165,7 +172,7 @@ def validate(data):
         raise SpecError([message(err, LAWS) for err in exc.errors()]) from None
     spec = _resolve_tables(spec)
     problems = [p for name, v in spec.valves.items() for p in _valve_problems(name, v, spec.engine)]
-    problems += _crank_problems(spec) + _two_stroke_problems(spec)
+    problems += _crank_problems(spec) + _two_stroke_problems(spec) + _acceptance_problems(spec)
     if spec.engine.strokes != 4 and spec.valves:
         problems.insert(0, f"engine.strokes = {spec.engine.strokes}: the valve timing (opens_deg/closes_deg before and "
                            "after TDC/BDC of the gas-exchange strokes) is defined for four-stroke engines; allowed 4 "
