@@ -22,6 +22,9 @@ from importlib import resources
 UNKNOWN = "publisher and year not given in the copy used"
 """Said of a work whose copy has no title page."""
 
+NO_AUTHORS = "authors and institution not given in the copy used"
+"""The authors of a work whose copy names none."""
+
 
 @dataclass(frozen=True)
 class Work:
@@ -32,7 +35,7 @@ class Work:
     short : str
         The in-text form, e.g. ``"Shang Hanji (1988)"``.
     authors : str
-        Authors or editor, or the institution; ``""`` where the copy used names none.
+        Authors or editor, or the institution; :data:`NO_AUTHORS` where the copy used names none.
     title : str
         Title in the original language (with an English translation in brackets where it is not English).
     kind : str
@@ -63,16 +66,12 @@ class Work:
 
     def reference(self):
         """The full reference as one line of text."""
-        head = f"{self.authors}, " if self.authors else ""
-        where = ", ".join(p for p in (self.publisher, self.place) if p)
-        parts = [f"{head}{self.title}", self.kind, where, self.year]
-        if self.isbn:
-            parts.append(f"ISBN {self.isbn}")
-        if self.url:
-            parts.append(self.url)
-        parts.append(f"in {self.language}")
-        text = ". ".join(p for p in parts if p) + "."
-        return f"{text} {self.note}" if self.note else text
+        head = self.title if self.authors == NO_AUTHORS else f"{self.authors}, {self.title}"
+        details = ", ".join(p for p in (self.kind[:1].upper() + self.kind[1:],
+                                        NO_AUTHORS if self.authors == NO_AUTHORS else "",
+                                        self.publisher, self.place, self.year) if p)
+        parts = [head, details, f"ISBN {self.isbn}" if self.isbn else "", self.url, f"In {self.language}", self.note]
+        return " ".join(p if p.endswith(".") else p + "." for p in parts if p)
 
 
 WORKS = {
@@ -87,7 +86,7 @@ WORKS = {
              "contents are reconstructed by this package, as their docstrings say."),
     "vt_works": Work(
         short="Valve-train practical works (n.d.)",
-        authors="",
+        authors=NO_AUTHORS,
         title="Практические работы № 1-8 по расчёту газораспределительного механизма [Practical works 1-8 "
               "on the design of the valve train of an internal-combustion engine] (descriptive title: the "
               "copy used has no title page)",
@@ -99,7 +98,7 @@ WORKS = {
              "ports."),
     "power_units": Work(
         short="Power units manual (n.d.)",
-        authors="",
+        authors=NO_AUTHORS,
         title="Методические указания к расчётно-графической работе по дисциплине «Силовые агрегаты»: "
               "кинематика поршня и динамика кривошипно-шатунного механизма [Course-work manual for the "
               "course \"Power units\": piston kinematics and crank-mechanism dynamics] (descriptive title: "
@@ -108,14 +107,14 @@ WORKS = {
         note="Its worked example (section 2.6) is not in the copy used."),
     "valve_dynamics_article": Work(
         short="Valve-train dynamics article (n.d.)",
-        authors="",
+        authors=NO_AUTHORS,
         title="Исследование динамики МГР с кулачками различного профиля [A study of the dynamics of the "
               "valve train with cams of various profiles: three-arc, Kurz and polydyne] (section title; the "
               "copy used has no title page)",
         kind="journal article", year=UNKNOWN, language="Russian"),
     "ukrsurt2019": Work(
         short="UkrSURT Proceedings (2019)",
-        authors="authors not given in the copy used",
+        authors=NO_AUTHORS,
         title="Динамічний синтез безударних профілів кулачків привода клапанів форсованих транспортних "
               "дизелів [Dynamic synthesis of shock-free cam profiles of the valve drive of forced transport "
               "diesels] (descriptive title, from the article's abstract)",
@@ -168,6 +167,11 @@ WORKS = {
         authors="Hairer, E.; Nørsett, S. P.; Wanner, G.",
         title="Solving Ordinary Differential Equations I: Nonstiff Problems, 2nd ed.", kind="book",
         publisher="Springer", place="Berlin", year="1993"),
+    "dowell1971": Work(
+        short="Dowell and Jarratt (1971)",
+        authors="Dowell, M.; Jarratt, P.",
+        title="A modified regula falsi method for computing the root of an equation", kind="journal article",
+        publisher="BIT, vol. 11, pp. 168-174", year="1971"),
     "shigley2011": Work(
         short="Shigley's Mechanical Engineering Design, 9th ed. (2011)",
         authors="Budynas, R. G.; Nisbett, J. K.",

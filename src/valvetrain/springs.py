@@ -283,7 +283,7 @@ def shape_factor_table(index):
 def wahl_factor(index):
     """Wahl's curvature and direct-shear factor, (4c - 1)/(4c - 4) + 0.615/c.
 
-    Engineering literature (A. M. Wahl, Mechanical Springs, 1944); printed beside the
+    Engineering literature (Wahl (1944)); printed beside the
     manual's table, which lies below it by 5 % at D/d = 3 and by under 2 % from 4 to 12.
 
     >>> round(float(wahl_factor(6.0)), 4)

@@ -106,7 +106,7 @@ def effective_modulus(e1, e2):
 
 
 def hertz_line_stress(force, width, curvature_sum, modulus):
-    """Hertz contact stress of two cylinders in line contact [Pa].
+    """Hertz contact stress of two cylinders in line contact [Pa] (Hertz (1882)).
 
     Parameters
     ----------

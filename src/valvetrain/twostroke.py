@@ -49,7 +49,7 @@ def port_angle(sigma, lam, exact=True):
 
     Examples
     --------
-    Spec/valvetrain-works-1-8.md, work 8: 69.60 deg exactly for sigma = 0.27, lambda = 0.25.
+    Valve-train practical works (n.d.), work 8: 69.60 deg exactly for sigma = 0.27, lambda = 0.25.
 
     >>> round(float(np.degrees(port_angle(0.27, 0.25))), 2)
     69.6

@@ -115,7 +115,7 @@ class _CamBase(_Model):
 
     def problems(self, at, valve, engine):
         """Cross-checks of the cam's keys against the valve's timing and clearance, one message each ([] if none);
-        ``at`` is the key path of the valve, ``valve`` and ``engine`` the spec sections."""
+        ``at`` is the key path of the valve, ``valve`` and ``engine`` the specification's sections."""
         return []
 
     def nose_crank(self, valve, law):
