@@ -108,8 +108,8 @@ def test_report_for_an_arc_cam(tmp_path):
     html = (out / "report.html").read_text()
     assert "three_arc" in html
     # the report names the three-arc cam's own source, not the polydyne formula of seed 000 work 3
-    assert "Kolchin &amp; Demidov; seed 003): spec/methods-seeds-002-004.md, section 3" in html
-    assert "seed 000, work 3" not in html
+    assert "three-arc convex cam for a flat follower (Kolchin and Demidov (1980); Valve-train dynamics article (n.d.))" in html
+    assert "Valve-train practical works (n.d.), work 3" not in html
 
 
 def test_train_natural_frequency_and_harmonic_rule():

@@ -183,7 +183,7 @@ def test_report_shows_the_measured_analysis(tmp_path):
     assert "Measured lift table" in html and "sign changes of the jerk" in html
     for d in data["measured"]["durations_deg"]:
         assert f'<td class="n">{d["height_mm"]:.6g}</td><td class="n">{d["duration_deg"]:.6g}</td>' in html
-    assert "seed 002, sections 5.1-5.3; GCV smoothing spline" in html
+    assert "Shang Hanji (1988), sections 5.1-5.3; GCV smoothing spline" in html
 
 
 def _example_results(text, tmp_path):

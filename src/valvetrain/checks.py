@@ -169,10 +169,10 @@ def check(quantity, value, low=None, high=None, *, source, unit="", severity="wa
 
     Examples
     --------
-    >>> c = check("V'", 85.07, 50, 80, source="seed 000, work 1", unit="m/s")
+    >>> c = check("V'", 85.07, 50, 80, source="Valve-train practical works (n.d.), work 1", unit="m/s")
     >>> c.passed, c.range, round(c.margin, 4)
     (False, '50...80 m/s', -0.0634)
-    >>> check("rho_min", 11.885e-3, low=2e-3, source="seed 002", unit="mm").warning()["range"]
+    >>> check("rho_min", 11.885e-3, low=2e-3, source="Shang Hanji (1988)", unit="mm").warning()["range"]
     '>= 2 mm'
     """
     if severity not in SEVERITIES:

@@ -198,7 +198,7 @@ def schema():
 
 @main.command()
 def example():
-    """Print the built-in example specification (seed 000's appendix engine) as TOML."""
+    """Print the built-in example specification (the appendix of Valve-train practical works (n.d.) engine) as TOML."""
     click.echo(example_text(), nl=False)
 
 

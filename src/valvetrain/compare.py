@@ -3,7 +3,7 @@
 Each valve of each specification becomes one column: time-area, fullness, extreme
 kinematics, curvature, contact stress and the required spring, computed by the same
 design chain as ``valvetrain run``.  The laws should be compared at equal lift and
-duration (seed 003 compares its three profiles so); the table states both, and
+duration (Valve-train dynamics article (n.d.) compares its three profiles so); the table states both, and
 :func:`comparison` flags entries that differ by more than 1 % in lift or by more than 1 deg in
 the duration at 1 mm valve lift (a checking height that every law, measured ones included,
 defines the same way).

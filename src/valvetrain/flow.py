@@ -1,6 +1,6 @@
 """Valve flow sections, conditional gas velocities, time-area and fullness.
 
-Seed 000, works 1 and 4; seed 002, section 2.1, eqs. (2.1)-(2.3).  SI units:
+Valve-train practical works (n.d.), works 1 and 4; Shang Hanji (1988), section 2.1, eqs. (2.1)-(2.3).  SI units:
 lengths in m, areas in m^2, time-area in m^2*s, velocities in m/s, angles in rad.
 """
 
@@ -17,22 +17,22 @@ THROAT_TO_BORE_RANGES = {
     "wedge": (0.42, 0.46),
     "hemispherical": (0.46, 0.52),
 }
-"""Recommended inlet throat diameter / bore by combustion-chamber layout (seed 000, work 1)."""
+"""Recommended inlet throat diameter / bore by combustion-chamber layout (Valve-train practical works (n.d.), work 1)."""
 
 THROAT_VELOCITY_RANGE = {"intake": (50.0, 80.0), "exhaust": (70.0, 100.0)}
-"""Recommended V' in m/s (seed 000, work 1, eq. 1.1)."""
+"""Recommended V' in m/s (Valve-train practical works (n.d.), work 1, eq. 1.1)."""
 
 CURTAIN_VELOCITY_RANGE = {"intake": (80.0, 95.0)}
-"""Recommended V'' in m/s for the inlet valve (seed 000, work 1, eq. 1.2)."""
+"""Recommended V'' in m/s for the inlet valve (Valve-train practical works (n.d.), work 1, eq. 1.2)."""
 
 TIME_AREA_VELOCITY_RANGE = {"si": (90.0, 150.0), "diesel": (80.0, 120.0)}
-"""Recommended V''' of the inlet valve in m/s (seed 000, work 1, eq. 1.4)."""
+"""Recommended V''' of the inlet valve in m/s (Valve-train practical works (n.d.), work 1, eq. 1.4)."""
 
 MEAN_CHARGE_VELOCITY_RANGE = {"si": (90.0, 150.0), "diesel": (80.0, 120.0), "si_injected": (100.0, 170.0)}
-"""Recommended mean charge velocity v_vp in m/s (seed 000, work 4, eq. 4.3)."""
+"""Recommended mean charge velocity v_vp in m/s (Valve-train practical works (n.d.), work 4, eq. 4.3)."""
 
 LIFT_TO_THROAT_RANGE = (0.18, 0.30)
-"""Recommended valve lift / throat diameter (seed 000 work 2, automotive; work 1 gives 0.23-0.30, E17)."""
+"""Recommended valve lift / throat diameter (Valve-train practical works (n.d.), work 2, automotive; work 1 gives 0.23-0.30, corrections note 17)."""
 
 
 def circle_area(diameter):
@@ -41,7 +41,7 @@ def circle_area(diameter):
 
 
 def mean_piston_speed(stroke, speed_rpm):
-    """Mean piston speed c_p = S n / 30 [m/s], stroke in m, speed in min^-1 (seed 000, appendix)."""
+    """Mean piston speed c_p = S n / 30 [m/s], stroke in m, speed in min^-1 (Valve-train practical works (n.d.), appendix)."""
     return stroke * speed_rpm / 30.0
 
 
@@ -73,12 +73,11 @@ def curtain_area(lift, throat_diameter, seat_angle):
 
     References
     ----------
-    seed 000, work 1, eq. (1.3); seed 002, eq. (2.1).
+    Valve-train practical works (n.d.), work 1, eq. (1.3); Shang Hanji (1988), eq. (2.1).
 
     Examples
     --------
-    The appendix valve of seed 000 (d = 36.8 mm, 45 deg, 10 mm lift): 928.56 mm^2
-    (spec/valvetrain-works-1-8.md, section 4.4).
+    The appendix valve of Valve-train practical works (n.d.) (d = 36.8 mm, 45 deg, 10 mm lift): 928.56 mm^2.
 
     >>> round(float(curtain_area(0.010, 0.0368, np.pi / 4)) * 1e6, 2)
     928.56
@@ -104,11 +103,11 @@ def throat_velocity(piston_speed, bore, throat_diameter, count):
 
     References
     ----------
-    seed 000, work 1, eq. (1.1).
+    Valve-train practical works (n.d.), work 1, eq. (1.1).
 
     Examples
     --------
-    Seed 000 appendix: 85.07 m/s (spec, section 4.4).
+    The appendix of Valve-train practical works (n.d.): 85.07 m/s.
 
     >>> round(throat_velocity(18.0, 0.080, 0.0368, 1), 2)
     85.07
@@ -121,11 +120,11 @@ def curtain_velocity(piston_speed, bore, max_curtain_area, count):
 
     References
     ----------
-    seed 000, work 1, eq. (1.2).
+    Valve-train practical works (n.d.), work 1, eq. (1.2).
 
     Examples
     --------
-    Seed 000 appendix with the geometric curtain area 928.56 mm^2: 97.44 m/s (spec, 4.4).
+    The appendix of Valve-train practical works (n.d.) with the geometric curtain area 928.56 mm^2: 97.44 m/s (corrections note 7).
 
     >>> round(curtain_velocity(18.0, 0.080, 928.56e-6, 1), 2)
     97.44
@@ -147,12 +146,12 @@ def time_area_velocity(swept, time_area, count):
 
     References
     ----------
-    seed 000, work 1, eq. (1.4) (t1 = TDC, t2 = BDC; the integration is over time,
-    see spec/valvetrain-works-1-8.md, work 1, on the crank/cam reading).
+    Valve-train practical works (n.d.), work 1, eq. (1.4) (t1 = TDC, t2 = BDC; the integration is over time,
+    corrections note 51).
 
     Examples
     --------
-    Seed 000 appendix: 2.8564 mm^2 s gives 135.75 m/s (spec, 4.4).
+    The appendix of Valve-train practical works (n.d.): 2.8564 mm^2 s gives 135.75 m/s.
 
     >>> round(time_area_velocity(3.8776e-4, 2.8564e-6, 1), 1)
     135.8
@@ -174,13 +173,13 @@ def mean_charge_velocity(swept, time_area, count=1):
 
     Notes
     -----
-    The manual's work 4 is written for one valve per cylinder and does not divide by i (E29
-    of the spec); with i valves the charge passes through i curtains, so the time-area is
+    The manual's work 4 is written for one valve per cylinder and does not divide by i (corrections
+    note 29); with i valves the charge passes through i curtains, so the time-area is
     i times that of one valve, as in V''' of work 1.
 
     References
     ----------
-    seed 000, work 4, eq. (4.3).
+    Valve-train practical works (n.d.), work 4, eq. (4.3).
 
     Examples
     --------
@@ -217,17 +216,17 @@ def cumulative_time_area(area, cam_angle, cam_speed, breakpoints=()):
 
     The integral is evaluated with Gauss-Legendre quadrature between the segment
     junctions of the analytic lift law, which replaces the graphical evaluation
-    M_t M_F F_ABCD of eq. (4.2) (that linearises the curtain area, see E29).
+    M_t M_F F_ABCD of eq. (4.2) (that linearises the curtain area, see corrections note 29).
 
     References
     ----------
-    seed 000, work 4, eq. (4.1); seed 002, eq. (2.2).
+    Valve-train practical works (n.d.), work 4, eq. (4.1); Shang Hanji (1988), eq. (2.2).
     """
     return cumulative_integral(area, cam_angle, breakpoints) / cam_speed
 
 
 def time_area(area, start, end, cam_speed, breakpoints=()):
-    """Time-area integral of f dt between two camshaft angles [m^2*s] (seed 000, eq. 4.1)."""
+    """Time-area integral of f dt between two camshaft angles [m^2*s] (Valve-train practical works (n.d.), eq. 4.1)."""
     return float(cumulative_time_area(area, [start, end], cam_speed, breakpoints)[-1])
 
 
@@ -256,7 +255,7 @@ def fullness(lift, start, end, max_lift, breakpoints=()):
 
     References
     ----------
-    seed 002, section 2.1, eq. (2.3).
+    Shang Hanji (1988), section 2.1, eq. (2.3).
 
     Examples
     --------
@@ -270,7 +269,7 @@ def fullness(lift, start, end, max_lift, breakpoints=()):
 
 
 def check_flow(kind, *, bore, throat_diameter, max_lift, v1, v2, v3, charge_velocity, engine_type, chamber, count=1):
-    """Compare a valve's flow figures with the recommended ranges of seed 000, works 1 and 4.
+    """Compare a valve's flow figures with the recommended ranges of Valve-train practical works (n.d.), works 1 and 4.
 
     Parameters
     ----------
@@ -294,7 +293,7 @@ def check_flow(kind, *, bore, throat_diameter, max_lift, v1, v2, v3, charge_velo
 
     Notes
     -----
-    The throat/bore ranges of seed 000 are stated for one inlet valve.  With i valves the
+    The throat/bore ranges of Valve-train practical works (n.d.) are stated for one inlet valve.  With i valves the
     total throat area is compared: the equivalent diameter sqrt(i) d of one valve of the same
     area (this project's reading for multi-valve heads).
     """
@@ -302,16 +301,16 @@ def check_flow(kind, *, bore, throat_diameter, max_lift, v1, v2, v3, charge_velo
     if kind == "intake":
         label = "throat diameter / bore" if count == 1 else f"equivalent throat diameter sqrt({count}) d / bore"
         out.append(check(label, np.sqrt(count) * throat_diameter / bore, *THROAT_TO_BORE_RANGES[chamber],
-                         source=f"seed 000, work 1 ({chamber} chamber)"))
+                         source=f"Valve-train practical works (n.d.), work 1 ({chamber} chamber)"))
     out.append(check("valve lift / throat diameter", max_lift / throat_diameter, *LIFT_TO_THROAT_RANGE,
-                     source="seed 000, work 2 (automotive engines)"))
-    out.append(check("V' (throat velocity)", v1, *THROAT_VELOCITY_RANGE[kind], source="seed 000, work 1, eq. (1.1)",
+                     source="Valve-train practical works (n.d.), work 2 (automotive engines)"))
+    out.append(check("V' (throat velocity)", v1, *THROAT_VELOCITY_RANGE[kind], source="Valve-train practical works (n.d.), work 1, eq. (1.1)",
                      unit="m/s"))
     if kind == "intake":
         out.append(check("V'' (curtain velocity at full lift)", v2, *CURTAIN_VELOCITY_RANGE[kind],
-                         source="seed 000, work 1, eq. (1.2)", unit="m/s"))
+                         source="Valve-train practical works (n.d.), work 1, eq. (1.2)", unit="m/s"))
         v3_range = TIME_AREA_VELOCITY_RANGE["diesel" if engine_type == "diesel" else "si"]
-        out.append(check("V''' (time-area velocity)", v3, *v3_range, source="seed 000, work 1, eq. (1.4)", unit="m/s"))
+        out.append(check("V''' (time-area velocity)", v3, *v3_range, source="Valve-train practical works (n.d.), work 1, eq. (1.4)", unit="m/s"))
         out.append(check("v_vp (mean charge velocity)", charge_velocity, *MEAN_CHARGE_VELOCITY_RANGE[engine_type],
-                         source="seed 000, work 4, eq. (4.3)", unit="m/s"))
+                         source="Valve-train practical works (n.d.), work 4, eq. (4.3)", unit="m/s"))
     return out

@@ -3,7 +3,7 @@
 Conventions: camshaft angle ``theta`` [rad] from the cam nose as in
 :mod:`valvetrain.laws.base`; lift ``h`` and its derivatives ``dh = dh/dtheta``,
 ``d2h`` from the law [m].  ``base_radius`` is the radius of the cam's heel circle on
-which ``h = 0`` (for a law with a ramp of height h0 this is r_k = r0 - h0, seed 000).
+which ``h = 0`` (for a law with a ramp of height h0 this is r_k = r0 - h0, Valve-train practical works (n.d.)).
 
 The contour is given in a frame fixed to the cam: the follower axis points along
 ``u = (sin theta, cos theta)``, so the nose lies on +y and the cam turns
@@ -45,7 +45,7 @@ def flat_follower_contour(theta, base_radius, h, dh):
 
     References
     ----------
-    seed 002, section 2.1, eq. (2.15) (same curve, rotated so that the nose is on +y).
+    Shang Hanji (1988), section 2.1, eq. (2.15) (same curve, rotated so that the nose is on +y).
     """
     u, t = _axes(theta)
     return (base_radius + h) * u + dh * t
@@ -58,12 +58,12 @@ def flat_follower_curvature(base_radius, h, d2h):
 
     References
     ----------
-    seed 002, eq. (2.6); seed 000, eq. (2.38) at the nose.
+    Shang Hanji (1988), eq. (2.6); Valve-train practical works (n.d.), eq. (2.38) at the nose.
 
     Examples
     --------
-    At the nose of the seed 000 appendix cam (r_k = 19.75 mm, h = 6.5 mm,
-    h'' = 2 c32 = -14.365 mm/rad^2) rho_min = 11.885 mm (spec E2).
+    At the nose of the appendix of Valve-train practical works (n.d.) cam (r_k = 19.75 mm, h = 6.5 mm,
+    h'' = 2 c32 = -14.365 mm/rad^2) rho_min = 11.885 mm (corrections note 2).
 
     >>> round(flat_follower_curvature(19.75, 6.5, 2 * -7.182502), 3)
     11.885
@@ -72,7 +72,7 @@ def flat_follower_curvature(base_radius, h, d2h):
 
 
 def roller_pitch_radius(base_radius, roller_radius, h):
-    """Polar radius of the roller-centre (pitch) curve, g = R0 + R_r + h [m] (seed 002, eq. 2.7)."""
+    """Polar radius of the roller-centre (pitch) curve, g = R0 + R_r + h [m] (Shang Hanji (1988), eq. 2.7)."""
     return base_radius + roller_radius + h
 
 
@@ -102,8 +102,8 @@ def roller_follower_contour(theta, base_radius, roller_radius, h, dh):
 
     References
     ----------
-    seed 002, section 2.1, eq. (2.16) (with R00 the roller radius, see the misprint
-    table of spec/methods-seeds-002-004.md).
+    Shang Hanji (1988), section 2.1, eq. (2.16) (with R00 the roller radius, corrections
+    note 33).
     """
     u, t = _axes(theta)
     g = roller_pitch_radius(base_radius, roller_radius, h)
@@ -127,7 +127,7 @@ def roller_pitch_curvature(base_radius, roller_radius, h, dh, d2h):
 
     References
     ----------
-    seed 002, eq. (2.7) (corrected: the subtracted radius is the roller radius).
+    Shang Hanji (1988), eq. (2.7) (corrected: the subtracted radius is the roller radius).
 
     Examples
     --------
@@ -146,15 +146,15 @@ def roller_pitch_curvature(base_radius, roller_radius, h, dh, d2h):
 
 
 def roller_follower_curvature(base_radius, roller_radius, h, dh, d2h):
-    """Radius of curvature of the cam profile for a roller follower, rho = rho_p - R_r [m] (seed 002, eq. 2.7)."""
+    """Radius of curvature of the cam profile for a roller follower, rho = rho_p - R_r [m] (Shang Hanji (1988), eq. 2.7)."""
     return roller_pitch_curvature(base_radius, roller_radius, h, dh, d2h) - roller_radius
 
 
 def roller_pressure_angle(base_radius, roller_radius, h, dh):
     """Pressure angle of a central translating roller follower, tan beta = h' / g [rad].
 
-    The angle between the contact normal and the follower axis; seed 004 limits it to
-    30 deg (spec/methods-seeds-002-004.md, section 2).
+    The angle between the contact normal and the follower axis; UkrSURT Proceedings (2019) limits it to
+    30 deg (corrections note 41).
 
     Examples
     --------
@@ -165,12 +165,12 @@ def roller_pressure_angle(base_radius, roller_radius, h, dh):
 
 
 def undercut_flat(rho):
-    """Mask of the angles where a flat follower's cam is undercut: rho <= 0 (seed 002, section 2.1)."""
+    """Mask of the angles where a flat follower's cam is undercut: rho <= 0 (Shang Hanji (1988), section 2.1)."""
     return np.asarray(rho) <= 0.0
 
 
 def undercut_roller(pitch_rho, roller_radius):
-    """Mask of the angles where a roller follower's cam is undercut: 0 < rho_pitch <= R_r (seed 002, 2.1)."""
+    """Mask of the angles where a roller follower's cam is undercut: 0 < rho_pitch <= R_r (Shang Hanji (1988), 2.1)."""
     pitch_rho = np.asarray(pitch_rho)
     return (pitch_rho > 0.0) & (pitch_rho <= roller_radius)
 
@@ -193,6 +193,6 @@ def valve_piston_clearance(piston_displacement, valve_lift, tdc_gap):
 
     References
     ----------
-    seed 002, section 2.1, eqs. (2.13)-(2.14).
+    Shang Hanji (1988), section 2.1, eqs. (2.13)-(2.14).
     """
     return piston_displacement + tdc_gap - valve_lift

@@ -1,4 +1,4 @@
-"""Masses of the valve train reduced to the valve axis and to the tappet (seed 000, works 5 and 7).
+"""Masses of the valve train reduced to the valve axis and to the tappet (Valve-train practical works (n.d.), works 5 and 7).
 
 SI units: kg, m, kg*m^2.  ``rocker_ratio`` i_k = l_v / l_t (valve arm over tappet arm).
 """
@@ -8,7 +8,7 @@ import numpy as np
 SPECIFIC_MASS_DEFAULT = {"direct": 125.0, "rocker": 105.0, "pushrod": 135.0}
 """Default reduced mass at the valve per inlet throat area m' [kg/m^2], used where no part masses are given.
 
-Derived from the part masses of the built-in example (the seed 000 appendix valve, d_g = 36.8 mm, f_g =
+Derived from the part masses of the built-in example (the appendix of Valve-train practical works (n.d.) valve, d_g = 36.8 mm, f_g =
 1063.6 mm^2; illustrative figures of a pushrod drive of that size): valve 55 g, retainer 15 g, cotters
 4 g, a third of its 64 g VDSiCr spring, tappet 40 g, pushrod 45 g, rocker 25 kg mm^2 at a 40 mm valve arm
 (15.6 g), i_k = 1.6 (eq. 5.2):
@@ -17,7 +17,7 @@ Derived from the part masses of the built-in example (the seed 000 appendix valv
 * overhead-cam rocker (no pushrod, no tappet): 74 + 21.3 + 15.6 = 110.9 g, 104.3 kg/m^2 -> 105;
 * direct drive (the 40 g tappet on the valve, i_k = 1): 74 + 21.3 + 40 = 135.3 g, 127.2 kg/m^2 -> 125.
 
-Seed 000 (work 5) gives 200-300 kg/m^2 for direct and 400-500 kg/m^2 for pushrod drives: 1.6-3.7 times
+Valve-train practical works (n.d.) (work 5) gives 200-300 kg/m^2 for direct and 400-500 kg/m^2 for pushrod drives: 1.6-3.7 times
 these, so that the same engine needed 861 N of spring force from its parts and 2952 N from the estimate
 (issue 10).  The source does not say which parts or masses its figures stand for; a design with its
 own part masses gives them in ``[valves.NAME.drive.masses]``, and ``specific_mass_kg_m2`` sets any other
@@ -46,7 +46,7 @@ def reduced_mass_at_valve(valve, retainer, cotters, spring, pushrod=0.0, tappet=
 
     References
     ----------
-    seed 000, work 5, eq. (5.2).
+    Valve-train practical works (n.d.), work 5, eq. (5.2).
 
     Examples
     --------
@@ -60,12 +60,12 @@ def reduced_mass_at_valve(valve, retainer, cotters, spring, pushrod=0.0, tappet=
 def reduced_mass_at_tappet(mass_at_valve, rocker_ratio=1.0):
     """Mass reduced to the tappet, m_t = m_v i_k^2 [kg].
 
-    Equal term by term to seed 000 eq. (7.2) written from the parts, since every part of
+    Equal term by term to Valve-train practical works (n.d.) eq. (7.2) written from the parts, since every part of
     (5.2) is moved to the tappet by the square of the lever ratio.
 
     References
     ----------
-    seed 000, work 7, eq. (7.2).
+    Valve-train practical works (n.d.), work 7, eq. (7.2).
     """
     return mass_at_valve * rocker_ratio**2
 
@@ -75,12 +75,12 @@ def mass_from_specific(specific_mass, throat_area):
 
     References
     ----------
-    seed 000, work 5 (m' = 200-300 kg/m^2 direct drive, 400-500 kg/m^2 pushrod drive; the defaults of
+    Valve-train practical works (n.d.), work 5 (m' = 200-300 kg/m^2 direct drive, 400-500 kg/m^2 pushrod drive; the defaults of
     this package, :data:`SPECIFIC_MASS_DEFAULT`, are lower).
 
     Examples
     --------
-    The seed 000 appendix valve (f_g = 1063.6 mm^2) with 450 kg/m^2: 0.479 kg.
+    the appendix of Valve-train practical works (n.d.) valve (f_g = 1063.6 mm^2) with 450 kg/m^2: 0.479 kg.
 
     >>> round(mass_from_specific(450.0, 1063.6e-6), 3)
     0.479
@@ -89,7 +89,7 @@ def mass_from_specific(specific_mass, throat_area):
 
 
 def spring_mass(mean_diameter, wire_diameter, total_coils, density):
-    """Mass of a helical spring, m = rho (pi d^2/4) pi D i_total [kg] (seed 003, step 3)."""
+    """Mass of a helical spring, m = rho (pi d^2/4) pi D i_total [kg] (Valve-train dynamics article (n.d.), step 3)."""
     return density * np.pi * wire_diameter**2 / 4.0 * np.pi * mean_diameter * total_coils
 
 
@@ -122,14 +122,14 @@ def reduced_mass(throat_area, layout, rocker_ratio, parts=None, specific_mass=No
 
     References
     ----------
-    seed 000, work 5: eq. (5.2) from the parts, m' f_g otherwise.
+    Valve-train practical works (n.d.), work 5: eq. (5.2) from the parts, m' f_g otherwise.
     """
     if parts is not None:
         spring = parts.spring_kg if parts.spring_kg is not None else spring_mass
         value = reduced_mass_at_valve(parts.valve_kg, parts.retainer_kg, parts.cotters_kg, spring, parts.pushrod_kg,
                                       parts.tappet_kg, parts.rocker_inertia, valve_arm or 1.0, rocker_ratio)
-        return value, "part masses, seed 000 eq. (5.2)" + ("" if parts.spring_kg is not None
+        return value, "part masses, Valve-train practical works (n.d.) eq. (5.2)" + ("" if parts.spring_kg is not None
                                                             else "; spring mass of the design")
     specific = specific_mass or SPECIFIC_MASS_DEFAULT[layout]
     given = "given" if specific_mass else f"default for a {layout} drive"
-    return mass_from_specific(specific, throat_area), f"specific mass {specific:g} kg/m2 ({given}), seed 000 work 5"
+    return mass_from_specific(specific, throat_area), f"specific mass {specific:g} kg/m2 ({given}), Valve-train practical works (n.d.), work 5"

@@ -147,8 +147,7 @@ def bracketed_roots(fn, a, b, fa, fb, max_iterations=100):
 
     References
     ----------
-    M. Dowell and P. Jarratt, A modified regula falsi method for computing the root of an
-    equation, BIT 11 (1971) 168-174.
+    Dowell and Jarratt (1971).
 
     Examples
     --------

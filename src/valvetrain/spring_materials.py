@@ -9,12 +9,12 @@ Grades (:data:`GRADES`, selected by ``[valves.NAME.spring] material``):
     The manual's spring steels (60G, 65G, 60S2A, 60S2G, 50KhGA, 50KhFA, HRC 40-45, shot
     peened) with the middle of its ranges, the same for every wire: G = 8.0e4 MPa
     (7.6-8.2e4), rho = 7850 kg/m3 (7800-7900), [tau] = 500 MPa (350-600), tau_-1 = 370 MPa
-    (340-400) (seed 000, work 6).  The mean-stress factor psi_tau = 0.2 of the fatigue check
-    is not in the manual (E24; 0.1-0.2 in the literature).
+    (340-400) (Valve-train practical works (n.d.), work 6).  The mean-stress factor psi_tau = 0.2 of the fatigue check
+    is not in the manual (corrections note 24; 0.1-0.2 in the literature).
 
 ``VDSiCr``, ``VDCrV``
     The valve-spring grades of oil-hardened and tempered chrome-silicon and chrome-vanadium
-    wire (EN 10270-2; 54SiCr6-type, e.g. OTEVA 70, and 51CrV4-type).  The seeds give no
+    wire (EN 10270-2; 54SiCr6-type, e.g. OTEVA 70, and 51CrV4-type).  The design sources give no
     figures for them; from the engineering literature:
 
     * G = 79.5 GPa, rho = 7850 kg/m3: EN 13906-1 (cylindrical helical compression springs),
@@ -145,7 +145,7 @@ _SHIGLEY = "Shigley's Mechanical Engineering Design, 9th ed. (2011), Tables 10-4
 
 GRADES = {
     "60S2A": WireGrade("60S2A", "silicon spring steel of the manual (60G, 65G, 60S2A, 60S2G, 50KhGA, 50KhFA)",
-                       8.0e10, 7850.0, "seed 000, work 6 (psi_tau: literature, E24)",
+                       8.0e10, 7850.0, "Valve-train practical works (n.d.), work 6 (psi_tau: literature, corrections note 24)",
                        allowable=500e6, endurance=370e6, mean_stress_factor=0.2),
     "VDSiCr": WireGrade("VDSiCr", "oil-hardened and tempered chrome-silicon valve-spring wire (EN 10270-2)",
                         79.5e9, 7850.0, f"{_SHIGLEY} (R_m of ASTM A401)", tensile=(1974.0, 0.108)),

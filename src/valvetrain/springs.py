@@ -1,4 +1,4 @@
-"""Valve spring characteristic and spring design (seed 000, works 5 and 6).
+"""Valve spring characteristic and spring design (Valve-train practical works (n.d.), works 5 and 6).
 
 SI units inside: N, m, Pa, kg, rad/s.  The characteristic is written against the valve
 lift y: P(y) = P_min + C y (eq. 5.6).
@@ -10,7 +10,7 @@ and the wire diameters 2.0...7.0 mm.  The lightest spring that passes every chec
 chosen; when none passes, :func:`diagnose` names the requirements in conflict and
 computes what would make a spring pass.
 
-Conical (beehive) and progressive-rate springs are not designed: the seeds give no
+Conical (beehive) and progressive-rate springs are not designed: the sources give no
 formulas for them.
 """
 
@@ -25,29 +25,29 @@ from .spring_materials import GRADES, grade
 from .units import to_display
 
 SPRING_RESERVE_RANGE = (1.5, 2.25)
-"""Spring reserve factor K_z (seed 000, eq. 5.3)."""
+"""Spring reserve factor K_z (Valve-train practical works (n.d.), eq. 5.3)."""
 
 DEFLECTION_RATIO_RANGE = (1.6, 3.2)
-"""f_max / f_min (seed 000, work 5; 2 is the optimum)."""
+"""f_max / f_min (Valve-train practical works (n.d.), work 5; 2 is the optimum)."""
 
 DEFLECTION_RATIO_STEP = 0.1
 """Step of the deflection ratios of the straight lines the search tries."""
 
 INNER_SHARE_RANGE = (0.35, 0.45)
-"""Share of the force taken by the inner spring of a nested pair (seed 000, work 5)."""
+"""Share of the force taken by the inner spring of a nested pair (Valve-train practical works (n.d.), work 5)."""
 
 WIRE_RANGE_MM = (2.0, 7.0)
 WIRE_STEP_MM = 0.1
 """Wire diameters searched [mm]: every 0.1 mm from 2.0 to 7.0 mm.  Wider than the manual's series
-2.8, 3.0, 3.5, 3.8, 4.0, 4.2, 4.5, 4.8, 5.0, 5.5, 6.0 mm (seed 000, work 6); valve-spring wire is drawn to
+2.8, 3.0, 3.5, 3.8, 4.0, 4.2, 4.5, 4.8, 5.0, 5.5, 6.0 mm (Valve-train practical works (n.d.), work 6); valve-spring wire is drawn to
 any size in this range (EN 10270-2 makes the VD grades from 0.5 to 10 mm)."""
 
 SHAPE_FACTOR_TABLE = (np.array([3, 4, 5, 6, 7, 8, 9, 10, 11, 12], dtype=float),
                       np.array([1.5, 1.38, 1.3, 1.23, 1.2, 1.17, 1.15, 1.13, 1.11, 1.1]))
-"""Spring index D/d and shape factor chi (seed 000, work 6, table of eq. 6.1)."""
+"""Spring index D/d and shape factor chi (Valve-train practical works (n.d.), work 6, table of eq. 6.1)."""
 
 MEAN_DIAMETER_RANGE = (0.7, 0.9)
-"""Spring mean diameter / valve throat diameter (seed 000, work 6)."""
+"""Spring mean diameter / valve throat diameter (Valve-train practical works (n.d.), work 6)."""
 
 MEAN_DIAMETER_STEP = 0.1e-3
 """Step of the mean diameters tried [m]."""
@@ -56,7 +56,7 @@ INNER_DIAMETER_RATIO_LOW = 0.3
 """Smallest mean diameter of the inner spring of a pair / throat diameter (it must fit inside the outer one)."""
 
 RESONANCE_RATIO_MIN = 10.0
-"""omega_c1 / omega_cam (seed 000, eq. 6.14)."""
+"""omega_c1 / omega_cam (Valve-train practical works (n.d.), eq. 6.14)."""
 
 INSTALLED_TO_LIFT_MAX = 6.0
 """Default upper limit of the installed length l_0 / valve lift h where no ``installed_length_mm`` is
@@ -131,7 +131,7 @@ def required_spring_force(mass_at_valve, valve_acceleration, reserve):
 
     References
     ----------
-    seed 000, work 5, eqs. (5.1), (5.3).
+    Valve-train practical works (n.d.), work 5, eqs. (5.1), (5.3).
     """
     return reserve * mass_at_valve * np.clip(-np.asarray(valve_acceleration, dtype=float), 0.0, None)
 
@@ -146,7 +146,7 @@ def enveloping_line(lift, required, ratio_range=DEFLECTION_RATIO_RANGE, min_prel
     required : ndarray
         Required spring force at those lifts [N].
     ratio_range : (float, float)
-        Allowed f_max / f_min = P_max / P_min (seed 000, work 5: usually 1.6...3.2).
+        Allowed f_max / f_min = P_max / P_min (Valve-train practical works (n.d.), work 5: usually 1.6...3.2).
     min_preload : float
         Smallest preload [N]: the gas force that tends to open the closed valve
         (eqs. 5.4-5.5); the manual raises P_min to meet it.
@@ -159,7 +159,7 @@ def enveloping_line(lift, required, ratio_range=DEFLECTION_RATIO_RANGE, min_prel
     Notes
     -----
     The manual replaces the curve a'b'c' of required force against valve lift by a
-    straight line a''c'' drawn by hand (seed 000, work 5, Fig. 5.1).  Here the line is
+    straight line a''c'' drawn by hand (Valve-train practical works (n.d.), work 5, Fig. 5.1).  Here the line is
     the one with the smallest maximum force P_max = P_min + C h (the spring's largest
     stress) among the lines that
 
@@ -175,14 +175,14 @@ def enveloping_line(lift, required, ratio_range=DEFLECTION_RATIO_RANGE, min_prel
     ratio up to :math:`r^* = \\min(r_2, \\min_{P_i > P^* u_i} P^* (1 - u_i) / (P_i - P^* u_i),
     P^* / P_g)`.  Of these optimal lines the steepest, r*, is taken: where the ratio bound
     is slack it is the steepest line through the full-lift point c' that stays above the
-    curve (the reading of the graphical construction in spec/valvetrain-works-1-8.md,
-    work 5); a polydyne cam, whose requirement is flat at the nose, gets the line of the
+    curve (this package's reading of the graphical construction of
+    Valve-train practical works (n.d.), work 5, Fig. 5.1); a polydyne cam, whose requirement is flat at the nose, gets the line of the
     smallest allowed ratio.  The line touches the requirement at least once, or sits on
     the gas force.
 
     References
     ----------
-    seed 000, work 5, eqs. (5.3)-(5.9) and Fig. 5.1.
+    Valve-train practical works (n.d.), work 5, eqs. (5.3)-(5.9) and Fig. 5.1.
 
     Examples
     --------
@@ -221,11 +221,11 @@ def gas_opening_force(throat_diameter, port_pressure, cylinder_pressure):
         for an exhaust valve (5.4), boost p_k for an inlet valve (5.5).
     cylinder_pressure : float
         Absolute cylinder pressure at the same time [Pa]: p_a during intake (5.4), p_r
-        during the exhaust stroke (5.5, E19).
+        during the exhaust stroke (5.5, corrections note 19).
 
     References
     ----------
-    seed 000, work 5, eqs. (5.4), (5.5).
+    Valve-train practical works (n.d.), work 5, eqs. (5.4), (5.5).
 
     Examples
     --------
@@ -239,7 +239,7 @@ def gas_opening_force(throat_diameter, port_pressure, cylinder_pressure):
 
 @dataclass(frozen=True)
 class Characteristic:
-    """A straight spring characteristic at the valve, P(y) = preload + rate y (seed 000, eqs. 5.6-5.9)."""
+    """A straight spring characteristic at the valve, P(y) = preload + rate y (Valve-train practical works (n.d.), eqs. 5.6-5.9)."""
 
     preload: float     # P_min [N]
     rate: float        # C [N/m]
@@ -272,7 +272,7 @@ class Characteristic:
 
 
 def shape_factor_table(index):
-    """Shape factor chi from the manual's table, linear interpolation in D/d (seed 000, work 6, eq. 6.1).
+    """Shape factor chi from the manual's table, linear interpolation in D/d (Valve-train practical works (n.d.), work 6, eq. 6.1).
 
     >>> round(float(shape_factor_table(5.5)), 6)
     1.265
@@ -283,7 +283,7 @@ def shape_factor_table(index):
 def wahl_factor(index):
     """Wahl's curvature and direct-shear factor, (4c - 1)/(4c - 4) + 0.615/c.
 
-    Engineering literature (A. M. Wahl, Mechanical Springs, 1944); printed beside the
+    Engineering literature (Wahl (1944)); printed beside the
     manual's table, which lies below it by 5 % at D/d = 3 and by under 2 % from 4 to 12.
 
     >>> round(float(wahl_factor(6.0)), 4)
@@ -294,12 +294,12 @@ def wahl_factor(index):
 
 
 def shear_stress(force, mean_diameter, wire_diameter, factor):
-    """Maximum shear stress in the wire, tau = 8 chi P D / (pi d^3) [Pa] (seed 000, eq. 6.1)."""
+    """Maximum shear stress in the wire, tau = 8 chi P D / (pi d^3) [Pa] (Valve-train practical works (n.d.), eq. 6.1)."""
     return 8.0 * factor * force * mean_diameter / (np.pi * wire_diameter**3)
 
 
 def active_coils(shear_modulus, wire_diameter, max_deflection, max_force, mean_diameter):
-    """Working coils i_p = G d^4 f_max / (8 P_max D^3) (seed 000, eq. 6.2).
+    """Working coils i_p = G d^4 f_max / (8 P_max D^3) (Valve-train practical works (n.d.), eq. 6.2).
 
     Examples
     --------
@@ -328,17 +328,17 @@ def natural_frequency(wire_diameter, mean_diameter, coils, shear_modulus, densit
 
     References
     ----------
-    seed 000, work 6, eq. (6.13), reading [A] of spec/valvetrain-works-1-8.md section 6
-    (the alternative reading is 4.44 times smaller); agrees within 1.2 % with Kolchin's
+    Valve-train practical works (n.d.), work 6, eq. (6.13), as read in corrections note 47
+    (the alternative reading is 4.44 times smaller); agrees within 1.2 % with Kolchin and Demidov (1980),
     n_c = 2.17e7 d/(i_p D^2) min^-1.
     """
     return wire_diameter / (mean_diameter**2 * coils) * np.sqrt(shear_modulus / (2.0 * density))
 
 
 def fatigue_safety(tau_max, tau_min, endurance, mean_stress_factor):
-    """Fatigue safety factor n = tau_-1 / (tau_a + psi_tau tau_m) (seed 000, eqs. 6.9-6.12).
+    """Fatigue safety factor n = tau_-1 / (tau_a + psi_tau tau_m) (Valve-train practical works (n.d.), eqs. 6.9-6.12).
 
-    The manual defines no mean-stress coefficient psi_tau (E24); 0.1-0.2 is usual in the
+    The manual defines no mean-stress coefficient psi_tau (corrections note 24); 0.1-0.2 is usual in the
     engineering literature, and the design takes it from the specification.
     """
     tau_m = 0.5 * (tau_max + tau_min)
@@ -347,7 +347,7 @@ def fatigue_safety(tau_max, tau_min, endurance, mean_stress_factor):
 
 
 def spring_lengths(wire_diameter, coils, lift, preload_deflection, gap_factor, end_coils=2, installed_length=None):
-    """Pitches and lengths of a valve spring (seed 000, eqs. 6.3-6.8).
+    """Pitches and lengths of a valve spring (Valve-train practical works (n.d.), eqs. 6.3-6.8).
 
     Parameters
     ----------
@@ -360,7 +360,7 @@ def spring_lengths(wire_diameter, coils, lift, preload_deflection, gap_factor, e
     -------
     dict
         ``min_pitch`` t_min = d + Delta_min (6.3); ``min_length`` (valve fully open)
-        l_min = t_min (i_p + 2) + d (i_0 - 1) (6.4, reading [A]); ``installed_length``
+        l_min = t_min (i_p + 2) + d (i_0 - 1) (6.4, as read in corrections note 46); ``installed_length``
         l_0 = l_min + h (6.5); ``installed_pitch`` t_0 (6.6); ``free_length``
         l_free = l_0 + f_min (6.7); ``free_pitch`` t_free (6.8) [m].
     """
@@ -563,7 +563,7 @@ def evaluate_springs(preload, rate, lift, mean_diameter, wire_diameter, material
                      ratio_range=DEFLECTION_RATIO_RANGE, installed_length=None, min_installed_length=None,
                      max_installed_length=None, max_free_length=None, partner_frequency=None,
                      min_frequency_difference=0.0):
-    """Design many springs at once, each for its own straight characteristic (seed 000, work 6).
+    """Design many springs at once, each for its own straight characteristic (Valve-train practical works (n.d.), work 6).
 
     Parameters
     ----------
@@ -577,7 +577,7 @@ def evaluate_springs(preload, rate, lift, mean_diameter, wire_diameter, material
     camshaft_speed : float
         omega_cam [rad/s] for the resonance ratio (6.14).
     ratio_range : (float, float)
-        Allowed f_max / f_min of the spring's actual line (seed 000, work 5).
+        Allowed f_max / f_min of the spring's actual line (Valve-train practical works (n.d.), work 5).
     installed_length : ndarray, optional
         Imposed installed length l_0 [m] (the inner spring of a pair: the outer one's); the
         coils must then keep their minimum gap at full lift.
@@ -627,16 +627,16 @@ def evaluate_springs(preload, rate, lift, mean_diameter, wire_diameter, material
     grade_note = f"{material.grade}: {material.source}"
     checks = {
         "tau_max": _ArrayCheck("tau_max", tau_max, high=allowable, unit="MPa", severity="failure",
-                               source=f"seed 000, eq. (6.1) with [tau] of {grade_note}"),
+                               source=f"Valve-train practical works (n.d.), eq. (6.1) with [tau] of {grade_note}"),
         "fatigue_safety": _ArrayCheck("fatigue safety factor", safety, low=_minimum(material.min_safety),
-                                      severity="failure", source=f"seed 000, eq. (6.12): n >= 1.2-1.4; tau_-1 "
+                                      severity="failure", source=f"Valve-train practical works (n.d.), eq. (6.12): n >= 1.2-1.4; tau_-1 "
                                                                  f"and psi_tau of {grade_note}"),
         "resonance_ratio": _ArrayCheck("resonance ratio omega_c1/omega_cam", omega / camshaft_speed,
                                        low=_minimum(material.min_resonance_ratio),
-                                       source="seed 000, eq. (6.14): >= 10 (hard to meet at high speed, E27)"),
-        "working_coils": _ArrayCheck("working coils", exact, low=2.0, source="seed 000, eq. (6.2)"),
+                                       source="Valve-train practical works (n.d.), eq. (6.14): >= 10 (hard to meet at high speed, corrections note 27)"),
+        "working_coils": _ArrayCheck("working coils", exact, low=2.0, source="Valve-train practical works (n.d.), eq. (6.2)"),
         "deflection_ratio": _ArrayCheck("f_max/f_min", (p0 + actual * lift) / p0, *ratio_range,
-                                        source="seed 000, work 5 (with the rounded coils)"),
+                                        source="Valve-train practical works (n.d.), work 5 (with the rounded coils)"),
     }
     if max_installed_length is not None:
         checks["installed_length"] = _ArrayCheck("installed length", lengths["installed_length"],
@@ -649,12 +649,12 @@ def evaluate_springs(preload, rate, lift, mean_diameter, wire_diameter, material
     if imposed is not None:
         checks["coil_gap_at_full_lift"] = _ArrayCheck("coil gap at full lift / wire diameter",
                                                       lengths["min_pitch"] / d - 1.0, low=material.gap_factor,
-                                                      source="seed 000, eq. (6.3): Delta_min = 0.10-0.15 d")
+                                                      source="Valve-train practical works (n.d.), eq. (6.3): Delta_min = 0.10-0.15 d")
     if partner_frequency is not None:
         difference = np.abs(omega - partner_frequency) / partner_frequency
         checks["frequency_difference"] = _ArrayCheck("frequency difference", difference,
                                                      low=_minimum(min_frequency_difference),
-                                                     source="seed 000, eq. (6.14): the two ratios must differ "
+                                                     source="Valve-train practical works (n.d.), eq. (6.14): the two ratios must differ "
                                                             f"({min_frequency_difference:.0%} assumed)")
     target = (p0 + c0 * lift) / p0
     return Candidates(material, big_d, d, coils, p0, actual, lift, target, chi, tau_max, tau_min, safety,
@@ -701,7 +701,7 @@ def enveloping_lines(lift, required, ratios, min_preload=0.0):
 
     References
     ----------
-    seed 000, work 5, eqs. (5.6)-(5.9), Fig. 5.1.
+    Valve-train practical works (n.d.), work 5, eqs. (5.6)-(5.9), Fig. 5.1.
 
     Examples
     --------
@@ -866,7 +866,7 @@ def design_spring(required, throat_diameter, camshaft_speed, options=SpringOptio
 
     References
     ----------
-    seed 000, work 6 (D = 0.7-0.9 d_g, checks (6.1), (6.12), (6.14)).
+    Valve-train practical works (n.d.), work 6 (D = 0.7-0.9 d_g, checks (6.1), (6.12), (6.14)).
     """
     if isinstance(required, Characteristic):
         preloads, rates, lift = [required.preload], [required.rate], required.lift
@@ -1023,11 +1023,11 @@ def resonance_stress(ratio, camshaft_speed, max_deflection, shape_factor, shear_
 
     References
     ----------
-    seed 000, eqs. (6.1), (6.2), (6.13) (reading [A]).
+    Valve-train practical works (n.d.), eqs. (6.1), (6.2), (6.13) (as read in corrections note 47).
 
     Examples
     --------
-    The seed 000 appendix speed and lift, f_max/f_min = 3.2 (f_max = 14.545 mm), chi = 1.1 (D/d = 12),
+    the appendix of Valve-train practical works (n.d.) speed and lift, f_max/f_min = 3.2 (f_max = 14.545 mm), chi = 1.1 (D/d = 12),
     60S2A: 10 x omega_cam needs 661.5 MPa.
 
     >>> round(float(resonance_stress(10.0, np.pi * 3500 / 30, 0.010 * 3.2 / 2.2, 1.1, 8e10, 7850.0)) / 1e6, 1)

@@ -1,4 +1,4 @@
-"""Strength checks of the drive parts (seed 000, work 7; seed 002, eq. 2.5).
+"""Strength checks of the drive parts (Valve-train practical works (n.d.), work 7; Shang Hanji (1988), eq. 2.5).
 
 SI units: N, m, Pa.  Each check is a pure function; :func:`verdict` makes its value a
 :class:`~valvetrain.checks.Check` against the allowable limit and its source.
@@ -9,22 +9,22 @@ import numpy as np
 from .checks import check
 
 DEFLECTION_COEFFICIENT = 64.0 / (3.0 * np.pi)
-"""Camshaft deflection coefficient of (7.3): 64/(3 pi) = 6.79 from beam theory; the printed 0.8 is wrong (E20)."""
+"""Camshaft deflection coefficient of (7.3): 64/(3 pi) = 6.79 from beam theory; the printed 0.8 is wrong (corrections note 20)."""
 
 STEEL_MODULUS = 2.1e11
-"""Young's modulus of steel [Pa]; the manual's 1.1e5 MPa for steel pushrods is wrong (E21)."""
+"""Young's modulus of steel [Pa]; the manual's 1.1e5 MPa for steel pushrods is wrong (corrections note 21)."""
 
 LIMITS = {
-    "camshaft_deflection": (0.05e-3, "max", "mm", "seed 000, eq. (7.3): 0.02-0.05 mm"),
-    "cam_contact_stress": (1200e6, "max", "MPa", "seed 000, eqs. (7.4)-(7.5): 600-1200 MPa"),
-    "tappet_side_pressure": (10e6, "max", "MPa", "seed 000, eq. (7.6): < 10 MPa"),
-    "pushrod_buckling_margin": (2.0, "min", "", "seed 000, eq. (7.8): n = 2-5"),
-    "ball_socket_stress": (2000e6, "max", "MPa", "seed 000, eqs. (7.11), (7.14): <= 2000 MPa"),
-    "pushrod_head_pressure": (100e6, "max", "MPa", "seed 000, eq. (7.12): <= 80-100 MPa"),
-    "rocker_pad_stress": (2000e6, "max", "MPa", "seed 000, eq. (7.13): <= 2000 MPa"),
-    "rocker_shaft_bending": (150e6, "max", "MPa", "seed 000, eq. (7.15): <= 150 MPa"),
-    "rocker_shaft_shear": (90e6, "max", "MPa", "seed 000, eq. (7.17): <= 90 MPa"),
-    "rocker_shaft_bearing": (80e6, "max", "MPa", "seed 000, eq. (7.18): <= 80 MPa"),
+    "camshaft_deflection": (0.05e-3, "max", "mm", "Valve-train practical works (n.d.), eq. (7.3): 0.02-0.05 mm"),
+    "cam_contact_stress": (1200e6, "max", "MPa", "Valve-train practical works (n.d.), eqs. (7.4)-(7.5): 600-1200 MPa"),
+    "tappet_side_pressure": (10e6, "max", "MPa", "Valve-train practical works (n.d.), eq. (7.6): < 10 MPa"),
+    "pushrod_buckling_margin": (2.0, "min", "", "Valve-train practical works (n.d.), eq. (7.8): n = 2-5"),
+    "ball_socket_stress": (2000e6, "max", "MPa", "Valve-train practical works (n.d.), eqs. (7.11), (7.14): <= 2000 MPa"),
+    "pushrod_head_pressure": (100e6, "max", "MPa", "Valve-train practical works (n.d.), eq. (7.12): <= 80-100 MPa"),
+    "rocker_pad_stress": (2000e6, "max", "MPa", "Valve-train practical works (n.d.), eq. (7.13): <= 2000 MPa"),
+    "rocker_shaft_bending": (150e6, "max", "MPa", "Valve-train practical works (n.d.), eq. (7.15): <= 150 MPa"),
+    "rocker_shaft_shear": (90e6, "max", "MPa", "Valve-train practical works (n.d.), eq. (7.17): <= 90 MPa"),
+    "rocker_shaft_bearing": (80e6, "max", "MPa", "Valve-train practical works (n.d.), eq. (7.18): <= 80 MPa"),
 }
 """Allowable values: the limit SI (the less strict end of the source's range), its kind, the unit it is shown in
 and its source."""
@@ -54,12 +54,12 @@ def cam_force(spring_force, valve_inertia_force, rocker_ratio):
     -----
     .. math:: P_T = i_k\\,(P_{spr} + P_{gas}) + m_t j_T,\\quad m_t j_T = i_k\\,m_v j_v
 
-    Seed 000's (7.1) evaluates this at the opening with the inertia term of a circular-arc
-    cam; for an analytic law the inertia term is m_t j_T along the whole profile (E23).
+    Valve-train practical works (n.d.)'s (7.1) evaluates this at the opening with the inertia term of a circular-arc
+    cam; for an analytic law the inertia term is m_t j_T along the whole profile (corrections note 23).
 
     References
     ----------
-    seed 000, work 7, eqs. (7.1)-(7.2).
+    Valve-train practical works (n.d.), work 7, eqs. (7.1)-(7.2).
     """
     return rocker_ratio * (np.asarray(spring_force) + np.asarray(valve_inertia_force))
 
@@ -78,7 +78,7 @@ def camshaft_deflection(force, l1, l2, diameter, bore=0.0, modulus=STEEL_MODULUS
     modulus : float
         Young's modulus [Pa].
     coefficient : float
-        64/(3 pi) = 6.79 for a simply supported beam (default); the manual prints 0.8 (E20).
+        64/(3 pi) = 6.79 for a simply supported beam (default); the manual prints 0.8 (corrections note 20).
 
     Notes
     -----
@@ -86,7 +86,7 @@ def camshaft_deflection(force, l1, l2, diameter, bore=0.0, modulus=STEEL_MODULUS
 
     References
     ----------
-    seed 000, work 7, eq. (7.3), with the coefficient corrected as in SPEC.md.
+    Valve-train practical works (n.d.), work 7, eq. (7.3), with the coefficient corrected (corrections note 20).
 
     Examples
     --------
@@ -101,12 +101,12 @@ def camshaft_deflection(force, l1, l2, diameter, bore=0.0, modulus=STEEL_MODULUS
 
 
 def effective_modulus(e1, e2):
-    """E_m = 2 E1 E2 / (E1 + E2) [Pa] (seed 002, eq. 2.5)."""
+    """E_m = 2 E_1 E_2 / (E_1 + E_2) [Pa] (Shang Hanji (1988), eq. 2.5)."""
     return 2.0 * e1 * e2 / (e1 + e2)
 
 
 def hertz_line_stress(force, width, curvature_sum, modulus):
-    """Hertz contact stress of two cylinders in line contact [Pa].
+    """Hertz contact stress of two cylinders in line contact [Pa] (Hertz (1882)).
 
     Parameters
     ----------
@@ -127,7 +127,7 @@ def hertz_line_stress(force, width, curvature_sum, modulus):
 
     References
     ----------
-    seed 002, eqs. (2.4)-(2.5), (2.11); seed 000, eqs. (7.4)-(7.5).
+    Shang Hanji (1988), eqs. (2.4)-(2.5), (2.11); Valve-train practical works (n.d.), eqs. (7.4)-(7.5).
     """
     load = np.clip(force, 0.0, None)
     curvature = np.clip(curvature_sum, 0.0, None)
@@ -137,7 +137,7 @@ def hertz_line_stress(force, width, curvature_sum, modulus):
 
 
 def tappet_side_pressure(force, offset, tappet_diameter, guide_length):
-    """Side pressure of a flat tappet in its guide, q = 6 P b / (d l^2) [Pa] (seed 000, eqs. 7.6-7.7).
+    """Side pressure of a flat tappet in its guide, q = 6 P b / (d l^2) [Pa] (Valve-train practical works (n.d.), eqs. 7.6-7.7).
 
     ``offset`` b is the largest distance of the contact point from the tappet axis,
     max dh/dtheta for a flat tappet (= omega_T max / omega_cam).
@@ -151,7 +151,7 @@ def second_moment(diameter, bore=0.0):
 
 
 def euler_load(modulus, second_moment_area, length):
-    """Euler critical load of a pin-ended strut, pi^2 E J / l^2 [N] (seed 000, eq. 7.8).
+    """Euler critical load of a pin-ended strut, pi^2 E J / l^2 [N] (Valve-train practical works (n.d.), eq. 7.8).
 
     >>> round(euler_load(2.1e11, second_moment(0.008), 0.25) / 1e3, 2)  # 8 mm steel rod, 250 mm
     6.67
@@ -160,17 +160,17 @@ def euler_load(modulus, second_moment_area, length):
 
 
 def sphere_socket_stress(force, modulus, ball_radius, socket_radius):
-    """Contact stress of a ball in a concave socket, 0.388 (P E^2 (1/r1 - 1/r2)^2)^(1/3) [Pa] (seed 000, 7.11/7.14)."""
+    """Contact stress of a ball in a concave socket, 0.388 (P E^2 (1/r1 - 1/r2)^2)^(1/3) [Pa] (Valve-train practical works (n.d.), 7.11/7.14)."""
     return 0.388 * np.cbrt(force * modulus**2 * (1.0 / ball_radius - 1.0 / socket_radius) ** 2)
 
 
 def rocker_pad_stress(force, modulus, width, radius):
-    """Contact stress of the rocker pad on the valve stem, 0.418 sqrt(P E / (b r)) [Pa] (seed 000, eq. 7.13)."""
+    """Contact stress of the rocker pad on the valve stem, 0.418 sqrt(P E / (b r)) [Pa] (Valve-train practical works (n.d.), eq. 7.13)."""
     return 0.418 * np.sqrt(force * modulus / (width * radius))
 
 
 def section_modulus(diameter, bore=0.0):
-    """Bending section modulus of a tube, W = pi (D^4 - d^4)/(32 D) [m^3] (seed 000, eq. 7.16)."""
+    """Bending section modulus of a tube, W = pi (D^4 - d^4)/(32 D) [m^3] (Valve-train practical works (n.d.), eq. 7.16)."""
     return np.pi * (diameter**4 - bore**4) / (32.0 * diameter)
 
 
@@ -180,14 +180,14 @@ def rocker_shaft_stresses(force, span, rocker_width, diameter, bore=0.0):
     Returns
     -------
     dict
-        ``bending`` P (l - b)/(8 W) (7.15, built-in beam, reading [A]); ``bending_simply_supported``
+        ``bending`` P (l - b)/(8 W) (7.15, built-in beam, corrections note 48); ``bending_simply_supported``
         P (2l - b)/(8 W), the alternative reading; ``shear`` P / (2 f) (7.17) with f the
         cross-section area; ``bearing`` P / (b D) (7.18).
 
     Notes
     -----
     The manual loads the shaft with P_T max; the physical reaction is the vector sum of
-    the pushrod and valve forces (E25), which the design notes but does not change.
+    the pushrod and valve forces (corrections note 25), which the design notes but does not change.
     """
     w = section_modulus(diameter, bore)
     area = np.pi * (diameter**2 - bore**2) / 4.0

@@ -53,7 +53,7 @@ CRANK_COLUMNS = [
     ("M_cyl_Nm", "torque of one cylinder [N m]"), ("pin_radial_kN", "crank-pin load, radial (K + rod centrifugal) [kN]"),
     ("pin_tangential_kN", "crank-pin load, tangential [kN]"),
 ]
-"""Columns of ``tables/crank.csv`` (one cylinder over its cycle; sign conventions of seed 001)."""
+"""Columns of ``tables/crank.csv`` (one cylinder over its cycle; sign conventions of Power units manual (n.d.))."""
 
 
 def crank_columns(crank):
@@ -85,7 +85,7 @@ def two_stroke_columns(ports):
 
 
 def two_stroke_speed_columns(ports):
-    """Time-area of every port against the crank speed [rpm, mm2 s] (Z = K1 K2 / n, seed 000 eq. 8.6)."""
+    """Time-area of every port against the crank speed [rpm, mm2 s] (Z = K1 K2 / n, Valve-train practical works (n.d.) eq. 8.6)."""
     out = {"speed_rpm": to_display(ports.speeds, "rpm")}
     out.update({f"{name}_time_area_mm2_s": z / MM**2 for name, z in ports.time_areas.items()})
     return out

@@ -1,4 +1,4 @@
-"""Two-stroke piston-controlled port timing, port areas and time-area (seed 000, work 8).
+"""Two-stroke piston-controlled port timing, port areas and time-area (Valve-train practical works (n.d.), work 8).
 
 Angles: ``phi`` is the crank angle from TDC [rad]; port timings are also given as the
 angle from BDC, since the phases are symmetric about BDC.  Lengths in m, areas in m^2,
@@ -11,7 +11,7 @@ from .crank.kinematics import crank_angle_at, displacement
 
 PORT_SIZE_RANGES = {"exhaust": ((0.26, 0.28), (0.20, 0.24)), "transfer": ((0.18, 0.22), (0.24, 0.28)),
                     "inlet": ((0.18, 0.32), (0.22, 0.30))}
-"""Recommended port height / stroke and width / bore (seed 000, Table 8.1)."""
+"""Recommended port height / stroke and width / bore (Valve-train practical works (n.d.), Table 8.1)."""
 
 
 def port_angle_series(sigma, lam):
@@ -30,7 +30,7 @@ def port_angle_series(sigma, lam):
 
     References
     ----------
-    seed 000, work 8, eq. (8.1) (spec: sigma = 0.27, lambda = 0.25 gives 69.49 deg).
+    Valve-train practical works (n.d.), work 8, eq. (8.1) (sigma = 0.27, lambda = 0.25 gives 69.49 deg).
 
     Examples
     --------
@@ -49,7 +49,7 @@ def port_angle(sigma, lam, exact=True):
 
     Examples
     --------
-    Spec/valvetrain-works-1-8.md, work 8: 69.60 deg exactly for sigma = 0.27, lambda = 0.25.
+    Valve-train practical works (n.d.), work 8: 69.60 deg exactly for sigma = 0.27, lambda = 0.25.
 
     >>> round(float(np.degrees(port_angle(0.27, 0.25))), 2)
     69.6
@@ -76,7 +76,7 @@ def top_port_area(phi, height, width, stroke, lam, exact=True):
 
     References
     ----------
-    seed 000, work 8, eqs. (8.2)-(8.3).
+    Valve-train practical works (n.d.), work 8, eqs. (8.2)-(8.3).
     """
     s = displacement(phi, stroke / 2.0, lam, exact=exact)
     return np.clip(height - stroke + s, 0.0, height) * width
@@ -100,8 +100,8 @@ def skirt_port_area(phi, lower_edge, height, piston_height, width, stroke, lam, 
 
     References
     ----------
-    seed 000, work 8, eq. (8.4), reading [A] of spec/valvetrain-works-1-8.md section 6 (the
-    manual's figure 8.2 is missing; its caption misnames the port, E22).
+    Valve-train practical works (n.d.), work 8, eq. (8.4), as read in corrections note 49 (the
+    manual's figure 8.2 is missing; its caption misnames the port, corrections note 22).
     """
     s = displacement(phi, stroke / 2.0, lam, exact=exact)
     return np.clip(lower_edge - s - piston_height, 0.0, height) * width
@@ -109,7 +109,7 @@ def skirt_port_area(phi, lower_edge, height, piston_height, width, stroke, lam, 
 
 def time_area_numeric(phi, area, speed):
     """Time-area Z = integral of F dt = (1/omega) integral of F dphi [m^2 s] by the trapezoidal rule, crank speed
-    omega [rad/s] (seed 000, eq. 8.5: (1/(6 n)) integral of F d(phi in deg), n in min^-1)."""
+    omega [rad/s] (Valve-train practical works (n.d.), eq. 8.5: (1/(6 n)) integral of F d(phi in deg), n in min^-1)."""
     return float(np.trapezoid(area, phi) / speed)
 
 
@@ -125,12 +125,12 @@ def time_area_analytic(bore, stroke, sigma, lam, width_share, speed):
     -----
     :math:`K_1 = 30 D S` (8.7), :math:`K_2 = \\psi[\\varphi(2\\sigma - 1 + \\lambda/4) + \\sin\\varphi
     - \\frac{\\lambda}{8}\\sin2\\varphi]` (8.8) with phi from (8.1).  Exact for the lambda/4
-    kinematics when psi is the width share of the circumference (spec, reading of (8.7)).  With n = 30 omega / pi
+    kinematics when psi is the width share of the circumference (corrections note 50).  With n = 30 omega / pi
     [min^-1], K1 / n = pi D S / omega.
 
     References
     ----------
-    seed 000, work 8, eqs. (8.6)-(8.8).
+    Valve-train practical works (n.d.), work 8, eqs. (8.6)-(8.8).
     """
     phi = port_angle_series(sigma, lam)
     k2 = width_share * (phi * (2.0 * sigma - 1.0 + lam / 4.0) + np.sin(phi) - lam / 8.0 * np.sin(2.0 * phi))

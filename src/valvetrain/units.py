@@ -5,7 +5,7 @@ degrees, rpm and MPa; the spec reader, the tables and the report convert here an
 nowhere else.
 
 Angles: a *camshaft* angle and a *crank* angle are different quantities.  For a
-four-stroke engine crank angle = 2 x camshaft angle (seed 000, section 0); the
+four-stroke engine crank angle = 2 x camshaft angle (Valve-train practical works (n.d.), section 0); the
 conversions take the number of strokes so that a two-stroke is handled too.
 """
 

@@ -1,7 +1,7 @@
 """Crank-mechanism dynamics: reduced masses, gas and inertia forces, N, S, K, T and cylinder torque
-(seed 001, section 2; spec/crank-kinematics-dynamics.md, section 4).
+(Power units manual (n.d.), section 2).
 
-Sign conventions (spec section 2): forces along the cylinder axis positive towards the
+Sign conventions: forces along the cylinder axis positive towards the
 crank axis; N positive when its moment opposes rotation; S positive compressing the
 rod; K positive towards the shaft axis; T positive when its moment is in the direction
 of rotation.  SI units: N, Pa, m, kg.
@@ -19,14 +19,14 @@ SPECIFIC_MASS_RANGES = {
     "rod": (100.0, 200.0),
     "crank_unbalanced": (150.0, 200.0),
 }
-"""Typical specific masses m' [kg/m^2] of Kolchin & Demidov's table, which Table 2.1 of seed 001 follows
+"""Typical specific masses m' [kg/m^2] of Kolchin & Demidov's table, which Table 2.1 of Power units manual (n.d.) follows
 (design data: the extracted copy of the table is too damaged to transcribe; the ranges are stated as
 engineering literature)."""
 
 
 @dataclass(frozen=True)
 class ReducedMasses:
-    """Reciprocating and rotating masses of one crank mechanism [kg] (seed 001, eqs. 2.7-2.10)."""
+    """Reciprocating and rotating masses of one crank mechanism [kg] (Power units manual (n.d.), eqs. 2.7-2.10)."""
 
     piston: float
     rod: float
@@ -45,7 +45,7 @@ def reduced_masses(piston, rod, crank, rod_pin_fraction=0.275, rods_per_pin=1):
     piston, rod, crank : float
         Piston group, connecting rod and unbalanced crank-throw masses [kg].
     rod_pin_fraction : float
-        Share of the rod mass at the piston pin, m_sh.p = f m_sh (0.2-0.3, seed 001).
+        Share of the rod mass at the piston pin, m_sh.p = f m_sh (0.2-0.3, Power units manual (n.d.)).
     rods_per_pin : int
         1 for an inline engine, 2 for a V engine with two rods on one crank pin.
 
@@ -55,7 +55,7 @@ def reduced_masses(piston, rod, crank, rod_pin_fraction=0.275, rods_per_pin=1):
 
     References
     ----------
-    seed 001, eqs. (2.6)-(2.10).
+    Power units manual (n.d.), eqs. (2.6)-(2.10).
 
     Examples
     --------
@@ -69,12 +69,12 @@ def reduced_masses(piston, rod, crank, rod_pin_fraction=0.275, rods_per_pin=1):
 
 
 def inertia_force(reciprocating_mass, piston_acceleration):
-    """Reciprocating inertia force P_j = -m_j j [N] (seed 001, eq. 2.11)."""
+    """Reciprocating inertia force P_j = -m_j j [N] (Power units manual (n.d.), eq. 2.11)."""
     return -reciprocating_mass * np.asarray(piston_acceleration)
 
 
 def centrifugal_force(rotating_mass, radius, omega):
-    """Centrifugal force K_R = -m_R R omega^2 [N] (seed 001, eqs. 2.12-2.13; negative: away from the axis)."""
+    """Centrifugal force K_R = -m_R R omega^2 [N] (Power units manual (n.d.), eqs. 2.12-2.13; negative: away from the axis)."""
     return -rotating_mass * radius * omega**2
 
 
@@ -89,7 +89,7 @@ def force_factors(phi, lam, k=0.0):
 
     References
     ----------
-    seed 001, Tables 2.3-2.6 (their printed values carry a small bias, spec section 6).
+    Power units manual (n.d.), Tables 2.3-2.6 (their printed values carry a small bias, corrections note 44).
 
     Examples
     --------
@@ -124,7 +124,7 @@ def specific_forces(gas_gauge, inertia_specific, phi, lam, k=0.0):
 
     References
     ----------
-    seed 001, eqs. (2.14)-(2.19).
+    Power units manual (n.d.), eqs. (2.14)-(2.19).
     """
     p = np.asarray(gas_gauge) + np.asarray(inertia_specific)
     f = force_factors(phi, lam, k)
@@ -164,7 +164,7 @@ def cylinder_dynamics(phi, gas_pressure, ambient, bore, radius, lam, omega, mass
 
     References
     ----------
-    seed 001, eqs. (2.3)-(2.21).
+    Power units manual (n.d.), eqs. (2.3)-(2.21).
     """
     area = np.pi * bore**2 / 4.0
     j = acceleration(phi, radius, lam, omega, k, exact)

@@ -1,6 +1,6 @@
-"""Piston kinematics of the central and offset slider-crank mechanism (seed 001, section 1).
+"""Piston kinematics of the central and offset slider-crank mechanism (Power units manual (n.d.), section 1).
 
-Conventions (spec/crank-kinematics-dynamics.md, section 2): crank angle ``phi`` [rad]
+Conventions: crank angle ``phi`` [rad]
 from the crank position parallel to the cylinder axis (TDC for a central mechanism),
 positive in the direction of rotation; displacement, velocity and acceleration along
 the cylinder axis, positive from TDC towards the crankshaft.  The offset ``k = a/R`` is
@@ -17,7 +17,7 @@ from ..numerics import extremum
 
 
 def rod_angle(phi, lam, k=0.0):
-    """Connecting-rod angle beta = arcsin(lambda (sin phi - k)) [rad] (seed 001, section 2, exact)."""
+    """Connecting-rod angle beta = arcsin(lambda (sin phi - k)) [rad] (Power units manual (n.d.), section 2, exact)."""
     return np.arcsin(lam * (np.sin(phi) - k))
 
 
@@ -45,7 +45,7 @@ def displacement(phi, radius, lam, k=0.0, exact=True):
 
     References
     ----------
-    seed 001, eqs. (1.2)-(1.3); exact form from spec/crank-kinematics-dynamics.md, section 3.
+    Power units manual (n.d.), eqs. (1.2)-(1.3); the exact form of the slider-crank.
 
     Examples
     --------
@@ -72,7 +72,7 @@ def velocity(phi, radius, lam, omega, k=0.0, exact=True):
 
     References
     ----------
-    seed 001, eqs. (1.5)-(1.6); spec/crank-kinematics-dynamics.md, section 3.
+    Power units manual (n.d.), eqs. (1.5)-(1.6); the exact form of the slider-crank.
     """
     phi = np.asarray(phi, dtype=float)
     if not exact:
@@ -92,7 +92,7 @@ def acceleration(phi, radius, lam, omega, k=0.0, exact=True):
 
     References
     ----------
-    seed 001, eqs. (1.8)-(1.9); spec/crank-kinematics-dynamics.md, section 3.
+    Power units manual (n.d.), eqs. (1.8)-(1.9); the exact form of the slider-crank.
 
     Examples
     --------
@@ -120,7 +120,7 @@ def textbook_extremes(radius, lam, omega):
 
     References
     ----------
-    seed 001, eqs. (1.7), (1.10), (1.11) (the minus sign of (1.11) is lost in the extraction).
+    Power units manual (n.d.), eqs. (1.7), (1.10), (1.11) (the minus sign of (1.11) is lost in the extraction).
     """
     out = {"v_max": omega * radius * np.sqrt(1.0 + lam**2), "j_max": omega**2 * radius * (1.0 + lam)}
     if lam > 0.25:
@@ -154,11 +154,11 @@ def piston_stroke(radius, lam, k=0.0):
 
     References
     ----------
-    spec/crank-kinematics-dynamics.md, section 3 (further exact results for the offset mechanism).
+    Exact slider-crank geometry of the offset mechanism (derived in this package).
 
     Examples
     --------
-    2R for a central mechanism; spec section 7: k = 0.1, lambda = 0.285 gives 2R x 1.00044.
+    2R for a central mechanism; k = 0.1, lambda = 0.285 gives 2R x 1.00044.
 
     >>> round(float(piston_stroke(0.04, 0.25)), 15), round(float(piston_stroke(1.0, 0.285, 0.1)) / 2, 5)
     (0.08, 1.00044)
@@ -221,8 +221,8 @@ def crank_angle_at(travel, radius, lam, k=0.0, exact=True, upstroke=False):
 
     References
     ----------
-    seed 001, eq. (1.2) and section 1; exact slider-crank from spec/crank-kinematics-dynamics.md,
-    section 3 (solved for phi here); the series form is (8.1) of seed 000, work 8, for s = 2R (1 - sigma).
+    Power units manual (n.d.), eq. (1.2) and section 1; the exact slider-crank
+    (solved for phi here); the series form is (8.1) of Valve-train practical works (n.d.), work 8, for s = 2R (1 - sigma).
 
     Examples
     --------
@@ -262,7 +262,7 @@ def crank_angle_at(travel, radius, lam, k=0.0, exact=True, upstroke=False):
 
 def dead_centres(lam, k=0.0):
     """Crank angles of TDC and BDC of an offset mechanism [rad]: arcsin(k lambda/(1+lambda)),
-    pi + arcsin(k lambda/(1-lambda)) (spec/crank-kinematics-dynamics.md, section 3)."""
+    pi + arcsin(k lambda/(1-lambda)) (exact slider-crank geometry)."""
     return np.arcsin(k * lam / (1.0 + lam)), np.pi + np.arcsin(k * lam / (1.0 - lam))
 
 
@@ -279,7 +279,7 @@ def brix_displacement(phi, radius, lam):
 
     References
     ----------
-    seed 001, eq. (2.1); spec/crank-kinematics-dynamics.md, section 4.
+    Power units manual (n.d.), eq. (2.1).
     """
     phi = np.asarray(phi, dtype=float)
     e = radius * lam / 2.0
@@ -309,7 +309,7 @@ def brix_crank_angle(travel, radius, lam, upstroke=False):
 
     References
     ----------
-    seed 001, eq. (2.1); spec/crank-kinematics-dynamics.md, section 4 (solved for phi here).
+    Power units manual (n.d.), eq. (2.1) (solved for phi here).
 
     Examples
     --------

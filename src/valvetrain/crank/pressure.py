@@ -1,7 +1,7 @@
 """Cylinder pressure over the cycle: indicator-diagram files (p-phi or p-V), a Wiebe cycle model,
 interpolation onto the calculation grid and the indicated work.
 
-Cycle angle convention (seed 001): a four-stroke cycle runs 0...720 deg crank with
+Cycle angle convention (Power units manual (n.d.)): a four-stroke cycle runs 0...720 deg crank with
 phi = 0 the TDC that starts the intake stroke and the firing TDC at 360 deg; a two-stroke
 cycle runs 0...360 deg with the firing TDC at 0 (= 360).  Pressures are absolute [Pa].
 """
@@ -105,7 +105,7 @@ def pv_to_angle(volume, pressure, bore, radius, lam, compression_ratio, strokes,
     is mapped to the crank angle of its branch where the cylinder has that volume, in closed
     form: exactly (``method="exact"``, :func:`~.kinematics.crank_angle_at`), which replaces
     Brix's graphical construction, or with Brix's construction itself (``method="brix"``,
-    seed 001 eq. 2.1, :func:`~.kinematics.brix_crank_angle`).
+    Power units manual (n.d.), eq. 2.1, :func:`~.kinematics.brix_crank_angle`).
 
     Returns
     -------
@@ -157,8 +157,8 @@ class WiebeCycle:
     and close at the dead centres), a closed cycle from BDC to BDC with a constant ratio of
     specific heats, no wall heat loss and a Wiebe heat release
     :math:`x = 1 - \\exp(-a\\,((\\varphi-\\varphi_s)/\\Delta\\varphi)^{m+1})`.
-    (I. I. Wiebe, Brennverlauf und Kreisprozess von Verbrennungsmotoren, 1970; the
-    standard single-zone model, not in the seeds.)
+    (Wiebe (1970); the
+    standard single-zone model, not in the design sources of this package.)
     """
 
     compression_ratio: float
@@ -183,7 +183,7 @@ def wiebe_fraction(phi, cycle, firing):
 
     References
     ----------
-    I. I. Wiebe, Brennverlauf und Kreisprozess von Verbrennungsmotoren, 1970 (see :class:`WiebeCycle`).
+    Wiebe (1970) (see :class:`WiebeCycle`).
     """
     z = np.maximum((np.asarray(phi, dtype=float) - firing - cycle.start) / cycle.duration, 0.0)
     return -np.expm1(-cycle.a * z ** (cycle.m + 1.0))
@@ -201,7 +201,7 @@ def wiebe_rate(phi, cycle, firing):
 
     References
     ----------
-    I. I. Wiebe, Brennverlauf und Kreisprozess von Verbrennungsmotoren, 1970 (see :class:`WiebeCycle`).
+    Wiebe (1970) (see :class:`WiebeCycle`).
     """
     z = (np.asarray(phi, dtype=float) - firing - cycle.start) / cycle.duration
     burning = z > 0.0

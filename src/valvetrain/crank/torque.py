@@ -1,5 +1,5 @@
-"""Total torque of a multi-cylinder engine for any layout and firing order (seed 001, section 2.5;
-spec/crank-kinematics-dynamics.md, section 5).
+"""Total torque of a multi-cylinder engine for any layout and firing order (Power units manual (n.d.), section 2.5;
+generalised here to any layout and firing order).
 
 Angles in rad.  ``firing[c]`` is the shaft angle at which cylinder c fires, measured
 after cylinder 1; the cycle angle of cylinder c at engine angle psi (the cycle angle of
@@ -10,7 +10,7 @@ import numpy as np
 
 
 def firing_interval(strokes, cylinders):
-    """Even firing interval theta = 180 tau / i [rad] (seed 001, eq. 2.22).
+    """Even firing interval theta = 180 tau / i [rad] (Power units manual (n.d.), eq. 2.22).
 
     >>> round(float(np.degrees(firing_interval(4, 4))), 9)
     180.0
@@ -61,11 +61,11 @@ def layout_firing(order, throws, banks, strokes):
 
     References
     ----------
-    spec/crank-kinematics-dynamics.md, section 5 ("general layout").
+    Power units manual (n.d.), section 2.5, generalised to any layout.
 
     Examples
     --------
-    A 90 deg V-twin on one crank pin fires at 0 and 90 deg (intervals 90/630 deg, spec section 5):
+    A 90 deg V-twin on one crank pin fires at 0 and 90 deg (intervals 90/630 deg):
 
     >>> [round(float(np.degrees(a)), 6) for a in layout_firing([1, 2], [0, 0], [0, np.pi / 2], 4)]
     [0.0, 90.0]
@@ -113,7 +113,7 @@ def engine_torque(psi, cylinder_torque, firing, strokes):
 
     References
     ----------
-    seed 001, section 2 (Table 2.8); spec/crank-kinematics-dynamics.md, section 5.
+    Power units manual (n.d.), section 2 (Table 2.8).
     """
     cycle = np.pi * strokes
     psi = np.asarray(psi, dtype=float)
@@ -135,7 +135,7 @@ def torque_statistics(total):
 
     References
     ----------
-    spec/crank-kinematics-dynamics.md, section 5 (Kolchin's coefficient of torque non-uniformity).
+    Kolchin and Demidov (1980) (coefficient of torque non-uniformity).
     """
     mean = float(np.mean(total))
     mx, mn = float(np.max(total)), float(np.min(total))

@@ -4,10 +4,10 @@ This package is the one place where the specification's engineering units (mm, d
 rpm) are converted to SI for the physics functions.  Stages:
 
 * per valve (:mod:`.valve`, :mod:`.drive`): flow sections and conditional velocities
-  (seed 000 work 1), the lift law (works 2-3), time-area and fullness (work 4, seed 002),
-  the cam contour (seed 002 section 2.1), masses and springs (works 5-6), strength (work 7);
-* the crank mechanism (:mod:`.crank`): kinematics, forces and torque, multi-cylinder torque (seed 001);
-* two-stroke ports (:mod:`.twostroke`): timing, areas, time-area (seed 000 work 8);
+  (Valve-train practical works (n.d.) work 1), the lift law (works 2-3), time-area and fullness (work 4, Shang Hanji (1988)),
+  the cam contour (Shang Hanji (1988) section 2.1), masses and springs (works 5-6), strength (work 7);
+* the crank mechanism (:mod:`.crank`): kinematics, forces and torque, multi-cylinder torque (Power units manual (n.d.));
+* two-stroke ports (:mod:`.twostroke`): timing, areas, time-area (Valve-train practical works (n.d.) work 8);
 * recommended-range checks of every stage (warnings, never exceptions), ranked by severity and margin, with
   the acceptances of the specification (``[[accepted]]``) applied.
 """
@@ -163,7 +163,7 @@ def run(spec, laws=None):
     if {v.kind for v in valves.values()} == {"intake", "exhaust"}:
         share = sum(v.count * v.flow.throat_area for v in valves.values())
         found.append(check("sum of throat areas / piston area", share / float(flow.circle_area(engine.bore)),
-                           *THROAT_AREA_SHARE_RANGE, source="seed 000, work 1"))
+                           *THROAT_AREA_SHARE_RANGE, source="Valve-train practical works (n.d.), work 1"))
     crank_view = None
     if spec.crank is not None:
         try:
@@ -239,7 +239,7 @@ def results_schema():
     valve = {"type": "object", "properties": {
         "kind": {"type": "string"}, "count": {"type": "integer"}, "rocker_ratio": {"type": "number"},
         "cam": merged(json_schema(CamResult), json_schema(ProfileResult),
-                      seed_formulas="the appendix formulas of seed 000 beside the exact extremes (Kurz cams)",
+                      seed_formulas="the appendix formulas of Valve-train practical works (n.d.) beside the exact extremes (Kurz cams)",
                       residuals="residuals of the junction conditions (Kurz cams)",
                       measured="a measured table's analysis: durations, lobe centre, fit quality"),
         "flow": json_schema(FlowResult), "piston_clearance": json_schema(ClearanceResult),

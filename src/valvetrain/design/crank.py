@@ -1,5 +1,5 @@
 """Crank-mechanism stage: kinematics, gas pressure, forces and torque of one cylinder, the engine's total
-torque (seed 001; spec/crank-kinematics-dynamics.md)."""
+torque (Power units manual (n.d.))."""
 
 from dataclasses import dataclass
 
@@ -12,10 +12,10 @@ from ..units import MPA
 from .results import quantity, record
 
 LAMBDA_RANGE = (0.24, 0.31)
-"""lambda = R / L of automotive and tractor engines (seed 001, eq. 1.1)."""
+"""lambda = R / L of automotive and tractor engines (Power units manual (n.d.), eq. 1.1)."""
 
 ROD_PIN_FRACTION_RANGE = (0.2, 0.3)
-"""Share of the rod mass at the piston pin (seed 001, eq. 2.7)."""
+"""Share of the rod mass at the piston pin (Power units manual (n.d.), eq. 2.7)."""
 
 
 @dataclass(frozen=True)
@@ -31,7 +31,7 @@ class TextbookExtremes:
 
 @dataclass(frozen=True)
 class MassRecord:
-    """The masses of the crank mechanism and their reduction to two points (seed 001, eqs. 2.6-2.10)."""
+    """The masses of the crank mechanism and their reduction to two points (Power units manual (n.d.), eqs. 2.6-2.10)."""
 
     piston: float = quantity("piston_kg", "kg", "piston group")
     rod: float = quantity("rod_kg", "kg", "connecting rod")
@@ -54,7 +54,7 @@ class WorkRecord:
 
 @dataclass(frozen=True)
 class CrankSummary:
-    """The crank chapter's figures (seed 001; spec/crank-kinematics-dynamics.md)."""
+    """The crank chapter's figures (Power units manual (n.d.))."""
 
     bore: float = quantity("bore_mm", "mm", "bore")
     stroke: float = quantity("stroke_mm", "mm", "stroke")
@@ -217,7 +217,7 @@ def crank_stage(c, eng):
         bore, stroke, rod, c.offset, omega, lam, c.kinematics, ext["v_max"], ext["v_max_angle"], ext["j_max"],
         ext["j_max_angle"], ext["j_min"], ext["j_min_angle"],
         TextbookExtremes(book["v_max"], book["j_max"], book["j_min"], book["j_min_angle"],
-                         "seed 001, eqs. (1.7), (1.10), (1.11) (central mechanism)"),
+                         "Power units manual (n.d.), eqs. (1.7), (1.10), (1.11) (central mechanism)"),
         float(np.max(np.abs(beta))), tdc, bdc,
         MassRecord(masses.piston, masses.rod, masses.crank, masses.rod_pin, masses.rod_crank, masses.reciprocating,
                    masses.rotating),
@@ -225,7 +225,7 @@ def crank_stage(c, eng):
         float(phi[int(np.argmax(p_abs))]), source, stats["mean"], stats["max"], stats["min"], stats["nonuniformity"],
         float(np.mean(forces["torque"])), period, even, tuple(float(a) for a in firing), firing_how, eng.layout,
         eng.cylinders, strokes, work)
-    found = [check("crank lambda = R/L", lam, *LAMBDA_RANGE, source="seed 001, eq. (1.1)"),
+    found = [check("crank lambda = R/L", lam, *LAMBDA_RANGE, source="Power units manual (n.d.), eq. (1.1)"),
              check("rod mass share at the piston pin", c.rod_pin_fraction, *ROD_PIN_FRACTION_RANGE,
-                   source="seed 001, eq. (2.7)")]
+                   source="Power units manual (n.d.), eq. (2.7)")]
     return CrankResults(phi, columns, phi, each, total, firing, figures, found, source)

@@ -1,5 +1,5 @@
 """Drive stages of a valve design: reduced masses, spring characteristic and design, strength of the
-drive parts (seed 000, works 5-7)."""
+drive parts (Valve-train practical works (n.d.), works 5-7)."""
 
 from dataclasses import dataclass, replace
 
@@ -95,10 +95,10 @@ def drive_stage(v, gas, law, omega, heel, roller):
 
     if v.kind == "exhaust":
         p_gas = springs.gas_opening_force(d_g, gas.exhaust_back_pressure_MPa * MPA, gas.cylinder_intake_pressure_MPa * MPA)
-        gas_source = "seed 000, eq. (5.4)"
+        gas_source = "Valve-train practical works (n.d.), eq. (5.4)"
     else:
         p_gas = springs.gas_opening_force(d_g, gas.intake_port_pressure_MPa * MPA, gas.cylinder_exhaust_pressure_MPa * MPA)
-        gas_source = "seed 000, eq. (5.5)"
+        gas_source = "Valve-train practical works (n.d.), eq. (5.5)"
 
     sp = v.spring
     options = _spring_options(sp)
@@ -128,11 +128,11 @@ def drive_stage(v, gas, law, omega, heel, roller):
     lines["chosen"] = chosen_line
     ratio = chosen_line.max_deflection / chosen_line.preload_deflection
     found.append(check("spring reserve K_z", v.drive.spring_reserve, *springs.SPRING_RESERVE_RANGE,
-                       source="seed 000, eq. (5.3)"))
-    found.append(check("spring f_max/f_min", ratio, *springs.DEFLECTION_RATIO_RANGE, source="seed 000, work 5 "
+                       source="Valve-train practical works (n.d.), eq. (5.3)"))
+    found.append(check("spring f_max/f_min", ratio, *springs.DEFLECTION_RATIO_RANGE, source="Valve-train practical works (n.d.), work 5 "
                        "(the chosen springs' rounded coils can move it off the required line's ratio)"))
     if sp.count == 2:
-        found.append(check("inner spring share", sp.inner_share, *springs.INNER_SHARE_RANGE, source="seed 000, work 5"))
+        found.append(check("inner spring share", sp.inner_share, *springs.INNER_SHARE_RANGE, source="Valve-train practical works (n.d.), work 5"))
     for tag, d in designs.items():
         found += _spring_checks(tag, d, diagnosis["text"] if diagnosis else "")
     if sp.count == 2:
@@ -207,7 +207,7 @@ def _strength(v, law, omega, heel, roller, theta, y, h, dh, d2h, a_v, m_v, line,
                                          parts.camshaft_bore_mm * MM, parts.camshaft_modulus_MPa * MPA,
                                          parts.camshaft_deflection_coefficient)
         verdicts.append(strength.verdict("camshaft_deflection", f,
-                                         f"coefficient {parts.camshaft_deflection_coefficient:.4g} (E20: not 0.8)"))
+                                         f"coefficient {parts.camshaft_deflection_coefficient:.4g} (corrections note 20: not 0.8)"))
     if need(["cam_width_mm"], "cam_contact_stress"):
         flat = v.cam.follower == "flat"
         rho = (geometry.flat_follower_curvature(heel, h, d2h) if flat
@@ -221,7 +221,7 @@ def _strength(v, law, omega, heel, roller, theta, y, h, dh, d2h, a_v, m_v, line,
             j = int(np.argmax(sigma))
             rec["cam_contact_stress_cam_deg"] = rad_to_deg(theta[j])
             verdicts.append(strength.verdict("cam_contact_stress", sigma[j], "along the profile with the "
-                                             "instantaneous force and radius (seed 002, eq. 2.5)"))
+                                             "instantaneous force and radius (Shang Hanji (1988), eq. 2.5)"))
     if v.layout in ("direct", "pushrod") and v.cam.follower == "flat" and \
             need(["tappet_diameter_mm", "tappet_guide_length_mm"], "tappet_side_pressure"):
         b = float(np.max(np.abs(dh)))
@@ -232,7 +232,7 @@ def _strength(v, law, omega, heel, roller, theta, y, h, dh, d2h, a_v, m_v, line,
             inertia = strength.second_moment(parts.pushrod_diameter_mm * MM, parts.pushrod_bore_mm * MM)
             p_cr = strength.euler_load(parts.pushrod_modulus_MPa * MPA, inertia, parts.pushrod_length_mm * MM)
             verdicts.append(strength.verdict("pushrod_buckling_margin", p_cr / p_max,
-                                             f"Euler load {p_cr:.5g} N; E = {parts.pushrod_modulus_MPa:g} MPa (E21)"))
+                                             f"Euler load {p_cr:.5g} N; E = {parts.pushrod_modulus_MPa:g} MPa (corrections note 21)"))
         if need(["ball_radius_mm", "socket_radius_mm"], "ball_socket_stress"):
             verdicts.append(strength.verdict("ball_socket_stress", strength.sphere_socket_stress(
                 p_max, e_contact, parts.ball_radius_mm * MM, parts.socket_radius_mm * MM)))
@@ -246,8 +246,8 @@ def _strength(v, law, omega, heel, roller, theta, y, h, dh, d2h, a_v, m_v, line,
             st = strength.rocker_shaft_stresses(p_max, parts.rocker_shaft_span_mm * MM, parts.rocker_width_mm * MM,
                                                 parts.rocker_shaft_diameter_mm * MM, parts.rocker_shaft_bore_mm * MM)
             verdicts.append(strength.verdict("rocker_shaft_bending", st["bending"],
-                                             f"built-in beam (7.15, reading [A]); simply supported: "
-                                             f"{st['bending_simply_supported'] / MPA:.4g} MPa; load P_T max (E25)"))
+                                             f"built-in beam (7.15, corrections note 48); simply supported: "
+                                             f"{st['bending_simply_supported'] / MPA:.4g} MPa; load P_T max (corrections note 25)"))
             verdicts.append(strength.verdict("rocker_shaft_shear", st["shear"]))
             verdicts.append(strength.verdict("rocker_shaft_bearing", st["bearing"]))
     rec["checks"] = {c.quantity: _strength_record(c) for c in verdicts}
@@ -266,10 +266,10 @@ def _strength_record(c):
 
 
 def _train_dynamics(v, law, omega, mass, spring_rate):
-    """Natural frequency of the one-mass train and the perturbation parameter (seed 002, sections 1 and 3.3).
+    """Natural frequency of the one-mass train and the perturbation parameter (Shang Hanji (1988), sections 1 and 3.3).
 
     omega_n = sqrt((c + K) / M) with the drive stiffness c and the spring rate K at the valve;
-    epsilon = M omega^2 / (c + K) (the printed M omega^3 / c is dimensionally wrong, SPEC.md); and the law's own
+    epsilon = M omega^2 / (c + K) (the printed M omega^3 / c is dimensionally wrong, corrections note 30); and the law's own
     checks against the train (:meth:`valvetrain.laws.LiftLaw.train_checks`).
     """
     c = v.drive.stiffness_N_per_mm / MM

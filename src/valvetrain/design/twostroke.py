@@ -1,4 +1,4 @@
-"""Two-stroke port stage: timing, areas and time-area of the piston-controlled ports (seed 000, work 8)."""
+"""Two-stroke port stage: timing, areas and time-area of the piston-controlled ports (Valve-train practical works (n.d.), work 8)."""
 
 from dataclasses import dataclass
 
@@ -13,7 +13,7 @@ from .results import quantity, record
 
 @dataclass(frozen=True)
 class SkirtPort:
-    """An inlet port opened by the piston skirt (seed 000, eq. 8.4)."""
+    """An inlet port opened by the piston skirt (Valve-train practical works (n.d.), eq. 8.4)."""
 
     kind: str = quantity("kind", label="inlet")
     width: float = quantity("width_mm", "mm", "port width (sum of equal ports)")
@@ -28,7 +28,7 @@ class SkirtPort:
 
 @dataclass(frozen=True)
 class TopPort:
-    """An exhaust or transfer port opened by the piston crown (seed 000, eqs. 8.1-8.3, 8.5-8.7)."""
+    """An exhaust or transfer port opened by the piston crown (Valve-train practical works (n.d.), eqs. 8.1-8.3, 8.5-8.7)."""
 
     kind: str = quantity("kind", label="exhaust or transfer")
     width: float = quantity("width_mm", "mm", "port width (sum of equal ports)")
@@ -122,9 +122,9 @@ def two_stroke_stage(ts, crank, eng):
                           twostroke.time_area_analytic(bore, stroke, sigma, lam, port.width / (np.pi * bore), speed),
                           float(area.max()), z)
             (h_lo, h_hi), (w_lo, w_hi) = twostroke.PORT_SIZE_RANGES[port.kind]
-            found.append(check(f"{name} port height / stroke", sigma, h_lo, h_hi, source="seed 000, Table 8.1"))
+            found.append(check(f"{name} port height / stroke", sigma, h_lo, h_hi, source="Valve-train practical works (n.d.), Table 8.1"))
             found.append(check(f"{name} port width / bore", port.width / bore, w_lo, w_hi,
-                               source="seed 000, Table 8.1"))
+                               source="Valve-train practical works (n.d.), Table 8.1"))
         areas[name], ports[name] = area, rec
         curves[name] = z * speed / speeds                       # Z = K / n (8.6)
     figures = TwoStrokeSummary(speed, lam, ts.kinematics, ports, (float(low), float(high)))

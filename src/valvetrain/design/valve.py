@@ -1,5 +1,5 @@
 """Valve stages of the design: the law, the flow, the profile, the piston clearance and the checks
-(seed 000 works 1-4, seed 002 section 2.1).
+(Valve-train practical works (n.d.), works 1-4, Shang Hanji (1988), section 2.1).
 
 Each stage is a function from SI inputs (the valve's and the engine's SI views,
 :func:`valvetrain.specification.si`, and the results of earlier stages) to a typed, frozen result;
@@ -28,7 +28,7 @@ from .results import quantity, record
 
 ACCELERATION_LIMITS = (3500.0, -1500.0)
 """Upper ends of the recommended bands of positive (1500-3500) and negative (500-1500) tappet
-acceleration [m/s^2] (seed 000, work 2)."""
+acceleration [m/s^2] (Valve-train practical works (n.d.), work 2)."""
 
 LAYOUTS = ("direct", "rocker", "pushrod")
 """Drive layouts (``[valves.NAME.drive] layout``): ``direct``, the cam acts on the valve through a tappet (an overhead
@@ -50,7 +50,7 @@ class Band:
 _FOR_DIRECT = ("the source states this band in work 2 for the shock-free cam, whose Kurz law it uses for direct drive "
                "from an overhead camshaft; work 3 (the polydyne cam of a tappet, pushrod and rocker train) gives no band "
                "of its own, so the same band is applied to the {layout} drive")
-_ACCELERATION_SOURCE = "seed 000, work 2 ({sign} {band} m/s2)"
+_ACCELERATION_SOURCE = "Valve-train practical works (n.d.), work 2 ({sign} {band} m/s2)"
 
 LAYOUT_BANDS = {
     "max tappet acceleration": {
@@ -60,21 +60,21 @@ LAYOUT_BANDS = {
         layout: Band(low=ACCELERATION_LIMITS[1], source=_ACCELERATION_SOURCE.format(sign="negative", band="500...1500"),
                      note="" if layout == "direct" else _FOR_DIRECT.format(layout=layout)) for layout in LAYOUTS},
     "rocker ratio": {
-        "rocker": Band(1.4, 1.75, "seed 000, work 2 (i_k = 1 for direct drive, 1.4-1.75 with a rocker or lever)"),
-        "pushrod": Band(1.4, 1.75, "seed 000, work 2 (i_k = 1 for direct drive, 1.4-1.75 with a rocker or lever)"),
+        "rocker": Band(1.4, 1.75, "Valve-train practical works (n.d.), work 2 (i_k = 1 for direct drive, 1.4-1.75 with a rocker or lever)"),
+        "pushrod": Band(1.4, 1.75, "Valve-train practical works (n.d.), work 2 (i_k = 1 for direct drive, 1.4-1.75 with a rocker or lever)"),
     },
     "specific mass of the drive m' = m_v / f_g": {
-        "direct": Band(200.0, 300.0, "seed 000, work 5 (direct drive 200-300 kg/m2)"),
-        "rocker": Band(200.0, 300.0, "seed 000, work 5 (direct drive 200-300 kg/m2)",
+        "direct": Band(200.0, 300.0, "Valve-train practical works (n.d.), work 5 (direct drive 200-300 kg/m2)"),
+        "rocker": Band(200.0, 300.0, "Valve-train practical works (n.d.), work 5 (direct drive 200-300 kg/m2)",
                        "the source gives 200-300 kg/m2 for direct drive and 400-500 kg/m2 for a tappet, pushrod and "
                        "rocker train; an overhead-cam rocker train has no pushrod or tappet and is compared with the "
                        "direct drive's band"),
-        "pushrod": Band(400.0, 500.0, "seed 000, work 5 (tappet, pushrod and rocker 400-500 kg/m2)"),
+        "pushrod": Band(400.0, 500.0, "Valve-train practical works (n.d.), work 5 (tappet, pushrod and rocker 400-500 kg/m2)"),
     },
 }
 """The recommended ranges that depend on the drive layout, ``quantity -> {layout: Band}``; a layout missing from a
 quantity's table has no such check (direct drive has no rocker: its ratio 1 is refused otherwise at validation).
-The valve arrangement of seed 000, work 1 (throat diameter / bore "при нижнем/верхнем расположении клапанов",
+The valve arrangement of Valve-train practical works (n.d.), work 1 (throat diameter / bore "при нижнем/верхнем расположении клапанов",
 side valves or overhead valves) is the combustion chamber's, ``[engine] chamber``
 (:data:`valvetrain.flow.THROAT_TO_BORE_RANGES`)."""
 
@@ -88,35 +88,35 @@ def layout_check(quantity, value, layout, **kw):
     return check(quantity, value, band.low, band.high, source=band.source, note=band.note, **kw)
 
 TIMING_RANGES = {"intake": ((20.0 * DEG, 30.0 * DEG), (40.0 * DEG, 60.0 * DEG))}
-"""Recommended inlet opening advance and closing lag [crank rad] (seed 000, work 2: 20-30 and 40-60 crank deg)."""
+"""Recommended inlet opening advance and closing lag [crank rad] (Valve-train practical works (n.d.), work 2: 20-30 and 40-60 crank deg)."""
 
 CLEARANCE_RANGES = {"intake": (0.25 * MM, 0.35 * MM), "exhaust": (0.35 * MM, 0.50 * MM)}
-"""Recommended valve clearance h0 [m] (seed 000, work 2)."""
+"""Recommended valve clearance h0 [m] (Valve-train practical works (n.d.), work 2)."""
 
 SEAT_ANGLE_USUAL = {"intake": (30.0 * DEG, 30.0 * DEG), "exhaust": (45.0 * DEG, 45.0 * DEG)}
-"""Usual seat angles [rad] (seed 000, work 1: 30 deg inlet, 45 deg exhaust)."""
+"""Usual seat angles [rad] (Valve-train practical works (n.d.), work 1: 30 deg inlet, 45 deg exhaust)."""
 
 BASE_RADIUS_TO_LIFT_RANGE = (1.5, 4.0)
-"""r0 / valve lift: 1.5-2.0 naturally aspirated, up to 3.0-4.0 supercharged (seed 000, work 2)."""
+"""r0 / valve lift: 1.5-2.0 naturally aspirated, up to 3.0-4.0 supercharged (Valve-train practical works (n.d.), work 2)."""
 
 RHO_MIN = 2.0 * MM
-"""Smallest recommended radius of curvature of the cam profile [m] (seed 002, section 2.1)."""
+"""Smallest recommended radius of curvature of the cam profile [m] (Shang Hanji (1988), section 2.1)."""
 
 PRESSURE_ANGLE_MAX = 30.0 * DEG
-"""Largest recommended pressure angle of a roller follower [rad] (seed 004, via spec section 2)."""
+"""Largest recommended pressure angle of a roller follower [rad] (UkrSURT Proceedings (2019))."""
 
 SEATING_VELOCITY_MAX = 0.5
-"""Working limit of the valve's seating velocity at rated speed [m/s] (no primary source; spec
-methods-seeds-002-004.md, section 2: 0.3-0.5 m/s)."""
+"""Working limit of the valve's seating velocity at rated speed [m/s] (no primary source;
+0.3-0.5 m/s is working guidance)."""
 
-SEATING_VELOCITY_SOURCE = "spec/methods-seeds-002-004.md, section 2 (working guidance 0.3-0.5 m/s; seed 000, work 2)"
+SEATING_VELOCITY_SOURCE = "working guidance 0.3-0.5 m/s (Valve-train practical works (n.d.), work 2: the ramp limits it)"
 
 THROAT_AREA_SHARE_RANGE = (0.25, 0.40)
-"""Inlet plus exhaust throat areas as a share of the piston area (seed 000, work 1)."""
+"""Inlet plus exhaust throat areas as a share of the piston area (Valve-train practical works (n.d.), work 1)."""
 
 MAX_LIFT_TO_THROAT = 0.5
 """Largest valve lift / throat diameter a design may have.  The curtain area pi d y equals the throat area at
-y = d/4 (seed 000, eq. 1.3 with the seat cone neglected), the recommended lift is 0.18-0.30 d (seed 000, work 2); a
+y = d/4 (Valve-train practical works (n.d.), eq. 1.3 with the seat cone neglected), the recommended lift is 0.18-0.30 d (Valve-train practical works (n.d.), work 2); a
 lift of more than half the throat is no valve design."""
 
 
@@ -158,7 +158,7 @@ class CamResult:
 
 @dataclass(frozen=True)
 class FlowResult:
-    """The flow stage: flow sections, conditional velocities, time-area and fullness (seed 000 works 1, 4; seed 002)."""
+    """The flow stage: flow sections, conditional velocities, time-area and fullness (Valve-train practical works (n.d.), works 1, 4; Shang Hanji (1988))."""
 
     throat_area: float = quantity("throat_area_mm2", "mm2", "throat area f_g")
     max_curtain_area: float = quantity("max_curtain_area_mm2", "mm2", "curtain area at full lift")
@@ -168,7 +168,7 @@ class FlowResult:
     time_area: float = quantity("time_area_mm2_s", "mm2 s", "time-area over the valve's own stroke")
     time_area_open: float = quantity("time_area_open_mm2_s", "mm2 s", "time-area over the whole opening")
     charge_velocity: float = quantity("mean_charge_velocity_m_s", "m/s", "v_vp, mean charge velocity (eq. 4.3)")
-    fullness: float = quantity("fullness", label="fullness of the valve lift diagram (seed 002, eq. 2.3)")
+    fullness: float = quantity("fullness", label="fullness of the valve lift diagram (Shang Hanji (1988), eq. 2.3)")
     valve_lift: float = quantity("valve_lift_mm", "mm", "largest valve lift")
     stroke: tuple = quantity("stroke_crank_deg", "crank deg", "the valve's own stroke, from and to")
 
@@ -211,7 +211,7 @@ class RollerContact:
 
 @dataclass(frozen=True)
 class ProfileResult:
-    """The profile stage: lift table, contour, curvature and contact of the cam (seed 002, section 2.1)."""
+    """The profile stage: lift table, contour, curvature and contact of the cam (Shang Hanji (1988), section 2.1)."""
 
     table: LiftTable = field(repr=False)
     contour: np.ndarray = field(repr=False)        # (2, n) [m], cam frame, nose on +y
@@ -227,7 +227,7 @@ class ProfileResult:
 
 @dataclass(frozen=True)
 class ClearanceResult:
-    """The valve-piston clearance stage (seed 002, eqs. 2.13-2.14)."""
+    """The valve-piston clearance stage (Shang Hanji (1988), eqs. 2.13-2.14)."""
 
     min_gap: float = quantity("min_clearance_mm", "mm", "smallest valve-to-piston gap over the open event")
     angle: float = quantity("crank_deg", "crank deg", "where the gap is smallest")
@@ -296,7 +296,7 @@ def flow_stage(cam, valve, engine):
 
     References
     ----------
-    seed 000, work 1, eqs. (1.1)-(1.4); work 4, eqs. (4.1), (4.3); seed 002, eqs. (2.1)-(2.3).
+    Valve-train practical works (n.d.), work 1, eqs. (1.1)-(1.4); work 4, eqs. (4.1), (4.3); Shang Hanji (1988), eqs. (2.1)-(2.3).
     """
     law, omega = cam.law, cam.cam_speed
     c_p = flow.mean_piston_speed(engine.stroke, engine.rated_speed * 30.0 / np.pi)
@@ -333,7 +333,7 @@ def profile_stage(cam, valve, output):
 
     References
     ----------
-    seed 002, section 2.1, eqs. (2.6)-(2.7), (2.15)-(2.16); seed 000, work 2 (rho_min, E2, E26).
+    Shang Hanji (1988), section 2.1, eqs. (2.6)-(2.7), (2.15)-(2.16); Valve-train practical works (n.d.), work 2 (rho_min, corrections note 2, corrections note 26).
     """
     law, omega, heel, follower, roller = cam.law, cam.cam_speed, cam.heel_radius, cam.follower, cam.roller_radius
     bp = law.breakpoints
@@ -386,7 +386,7 @@ def clearance_stage(cam, valve, engine):
 
     References
     ----------
-    seed 002, eqs. (2.13)-(2.14), with the exact slider-crank displacement (seed 001, eq. 1.2).
+    Shang Hanji (1988), eqs. (2.13)-(2.14), with the exact slider-crank displacement (Power units manual (n.d.), eq. 1.2).
     """
     if valve.piston_gap_tdc is None:
         return None
@@ -398,7 +398,7 @@ def clearance_stage(cam, valve, engine):
     angle = float(wrap_crank(crank[i]))
     if gap[i] <= 0.0:
         raise ValueError(f"the valve hits the piston: the valve-piston gap falls to {gap[i] / MM:.4g} mm at "
-                         f"{math.degrees(angle):.4g} crank deg (seed 002, eqs. 2.13-2.14, with piston_gap_tdc_mm = "
+                         f"{math.degrees(angle):.4g} crank deg (Shang Hanji (1988), eqs. 2.13-2.14, with piston_gap_tdc_mm = "
                          f"{valve.piston_gap_tdc / MM:g}); allowed a gap > 0: lower the lift near TDC or deepen the "
                          "valve pocket")
     return ClearanceResult(float(gap[i]), angle)
@@ -423,37 +423,37 @@ def valve_checks(cam, flow_result, profile, valve, engine, timing):
         for label, angle, (lo, hi) in zip(("opening advance", "closing lag"), timing, TIMING_RANGES[valve.kind],
                                           strict=True):
             if angle is not None:
-                out.append(check(label, angle, lo, hi, source="seed 000, work 2", unit="crank deg"))
+                out.append(check(label, angle, lo, hi, source="Valve-train practical works (n.d.), work 2", unit="crank deg"))
     if law.clearance_on_flank:
         out.append(check("clearance taken up without a ramp: valve seating velocity", cam.seating_velocity,
                          high=SEATING_VELOCITY_MAX, source=SEATING_VELOCITY_SOURCE, unit="m/s",
                          note=f"no ramp takes up clearance_mm = {valve.clearance / MM:g}: the flank does"))
     out.append(check("seat angle", valve.seat_angle, *SEAT_ANGLE_USUAL[valve.kind],
-                     source="seed 000, work 1 (usually 30 deg inlet, 45 deg exhaust)", unit="deg", severity="info"))
-    out.append(check("clearance h0", valve.clearance, *CLEARANCE_RANGES[valve.kind], source="seed 000, work 2",
+                     source="Valve-train practical works (n.d.), work 1 (usually 30 deg inlet, 45 deg exhaust)", unit="deg", severity="info"))
+    out.append(check("clearance h0", valve.clearance, *CLEARANCE_RANGES[valve.kind], source="Valve-train practical works (n.d.), work 2",
                      unit="mm"))
     ratio = layout_check("rocker ratio", i_k, drive)
     if ratio is not None:
         out.append(ratio)
     out.append(check("base radius r0 / valve lift", cam.base_radius / flow_result.valve_lift, *BASE_RADIUS_TO_LIFT_RANGE,
-                     source="seed 000, work 2 (1.5-2.0; supercharged 3.0-4.0)"))
+                     source="Valve-train practical works (n.d.), work 2 (1.5-2.0; supercharged 3.0-4.0)"))
     if cam.follower == "flat" and profile.undercut:
         out.append(check("cam profile undercut: rho_min (flat follower)", profile.rho_min, low=0.0, strict_low=True,
-                         source="seed 002, eq. (2.6); seed 000, E26", unit="mm", severity="failure"))
+                         source="Shang Hanji (1988), eq. (2.6); Valve-train practical works (n.d.), corrections note 26", unit="mm", severity="failure"))
     elif profile.undercut:
         out.append(check("cam profile undercut: pitch radius of curvature - roller radius", profile.rho_min, low=0.0,
-                         strict_low=True, source="seed 002, eq. (2.7)", unit="mm", severity="failure"))
+                         strict_low=True, source="Shang Hanji (1988), eq. (2.7)", unit="mm", severity="failure"))
     if cam.follower == "roller":
         out.append(check("max pressure angle", profile.contact.max_pressure_angle, high=PRESSURE_ANGLE_MAX,
-                         source="seed 004 (spec section 2)", unit="deg"))
+                         source="UkrSURT Proceedings (2019)", unit="deg"))
     if not profile.undercut:
-        out.append(check("rho_min (cam profile)", profile.rho_min, low=RHO_MIN, source="seed 002, section 2.1",
+        out.append(check("rho_min (cam profile)", profile.rho_min, low=RHO_MIN, source="Shang Hanji (1988), section 2.1",
                          unit="mm"))
     return out
 
 
 def mass_checks(valve, mass, throat_area):
-    """The specific mass of the drive m' = m_v / f_g [kg/m2] against the band of the valve's layout (seed 000, work 5),
+    """The specific mass of the drive m' = m_v / f_g [kg/m2] against the band of the valve's layout (Valve-train practical works (n.d.), work 5),
     an ``info`` check: only where the masses or m' are given (the default m' is this project's, not the source's,
     whose bands are 1.6-3.7 times the masses of the example's parts)."""
     d = valve.drive

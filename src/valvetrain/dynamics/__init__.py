@@ -1,3 +1,2 @@
-"""Elastic valve-train dynamics: one-mass and multi-mass models, speed sweeps, seed 003 resonance,
-the perturbation parameter and the outer solution (seed 002, chapter 3; spec/methods-seeds-002-004.md,
-sections 2, 12 and 16)."""
+"""Elastic valve-train dynamics: one-mass and multi-mass models, speed sweeps, Valve-train dynamics article (n.d.) resonance,
+the perturbation parameter and the outer solution (Shang Hanji (1988), chapter 3)."""

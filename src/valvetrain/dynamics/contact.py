@@ -1,6 +1,6 @@
 """Cam-follower contact under the dynamic force: Hertz stress and the lubrication characteristic.
 
-Seed 002 section 3.4 computes the contact stress (2.5) with the force of the elastic train
+Shang Hanji (1988), section 3.4, computes the contact stress (2.5) with the force of the elastic train
 instead of the kinetostatic one; the curvature comes from the law's profile (2.6)/(2.7) and the
 lubrication characteristic gamma = rho / (R0 + h) from (2.12).  The formulas live in
 :mod:`valvetrain.strength` and :mod:`valvetrain.geometry`; this module only feeds them the
@@ -33,7 +33,7 @@ def dynamic_contact_stress(law, theta, force, base_radius, width, modulus, rolle
 
     References
     ----------
-    seed 002, eqs. (2.5), (2.11) and section 3.4 (the force of the dynamic calculation).
+    Shang Hanji (1988), eqs. (2.5), (2.11) and section 3.4 (the force of the dynamic calculation).
     """
     follower = "flat" if roller_radius is None else "roller"
     rho = law.profile(theta, base_radius, follower, roller_radius or 0.0)[1]
@@ -55,12 +55,12 @@ def lubrication_characteristic(law, theta, base_radius):
     Notes
     -----
     Eq. (2.12) gives h_min = k (R0 + h) sqrt(2 gamma^2 - gamma), zero at gamma = 0 and 0.5 (imaginary
-    between as printed, open question Q6 of the spec), so only gamma is returned: the film is poor near
+    between as printed, corrections note 34), so only gamma is returned: the film is poor near
     gamma = 0.5, and 0.15-0.25 is recommended on the nose; on the base circle rho = R0 and gamma = 1.  The
     force does not enter (2.12); the dynamic force enters the stress of :func:`dynamic_contact_stress`.
 
     References
     ----------
-    seed 002, eq. (2.12); spec/methods-seeds-002-004.md, section 1.
+    Shang Hanji (1988), eq. (2.12) (corrections note 34).
     """
     return law.profile(theta, base_radius)[1] / (base_radius + law.lift(theta))

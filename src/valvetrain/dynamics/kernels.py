@@ -17,8 +17,7 @@ constant is small enough for the 1 um lift accuracy at 0.1 cam deg; its stabilit
 an undamped mode is omega_n dt < 2.83.  The caller (:mod:`.sweep`) divides the angle step
 by a power of two per speed so that |lambda| dt <= 1 for the fastest eigenvalue of the
 linearised network; there RK4 damps an undamped mode by under 1 % a step, a mild numerical
-dissipation of modes far above the cam harmonics (references: E. Hairer, S. P. Norsett,
-G. Wanner, Solving Ordinary Differential Equations I, 1993, section II.1 and IV.2 for the
+dissipation of modes far above the cam harmonics (references: Hairer, Nørsett and Wanner (1993), section II.1 and IV.2 for the
 stability function 1 + z + z^2/2 + z^3/6 + z^4/24).
 
 Every speed is an independent problem: the loop over speeds runs in parallel (``prange``),

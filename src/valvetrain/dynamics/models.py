@@ -1,7 +1,6 @@
 """Elastic valve-train models: one-mass and multi-mass (4 + N1 + N2) trains as lumped networks.
 
-Coordinates are reduced to the valve (seed 002, section 3.1; spec/methods-seeds-002-004.md,
-section 12): a displacement on the tappet side is multiplied by the rocker ratio k (valve
+Coordinates are reduced to the valve (Shang Hanji (1988), section 3.1): a displacement on the tappet side is multiplied by the rocker ratio k (valve
 arm / tappet arm), so a tappet-side mass m counts as m / k^2, a tappet-side stiffness c as
 c / k^2 and a rocker of inertia J about its shaft as J / l_v^2.  Positive is the opening
 direction.  SI units: kg, N/m, N s/m, N, m.
@@ -21,8 +20,8 @@ from ..strength import STEEL_MODULUS, camshaft_deflection
 from .kernels import CAM, GROUND
 
 DAMPING_RATIO = 0.05
-"""Damping ratio of the drive, zeta in C = 2 zeta sqrt(c M): the value of the worked example of
-spec/methods-seeds-002-004.md, sections 2 and 12 (the sources give none; 0.03-0.1 is the usual
+"""Damping ratio of the drive, zeta in C = 2 zeta sqrt(c M): the value of the worked examples of
+this package's tests (the sources give none; 0.03-0.1 is the usual
 range in the valve-train literature)."""
 
 SEAT_STIFFNESS = 2.0e8
@@ -32,9 +31,8 @@ N/m; the seat must be much stiffer than the drive (c ~ 1.5e7 N/m) and resolved b
 
 SEAT_DAMPING_RATIO = 0.4
 """Damping ratio of the seat contact, C_s = 2 zeta_s sqrt(c_s M): an assumption (a coefficient of restitution
-of exp(-pi zeta / sqrt(1 - zeta^2)) = 0.25 for a free impact).  With it the sweep of the spec's worked example
-shows its pattern: a few um of bounce at 1500 cam rpm, none at 3000, about 2 mm once the valve floats
-(spec/methods-seeds-002-004.md, section 12, whose reference seat values are not given)."""
+of exp(-pi zeta / sqrt(1 - zeta^2)) = 0.25 for a free impact).  With it the sweep of this package's worked example
+shows its pattern: a few um of bounce at 1500 cam rpm, none at 3000, about 2 mm once the valve floats."""
 
 COIL_DAMPING_RATIO = 0.02
 """Damping ratio of the spring coils (material and inter-coil friction; an assumption in the usual
@@ -154,7 +152,7 @@ class CoilSpring:
         Sum of the gaps between the active coils at the installed length [m]: the spring goes solid
         when compressed by this much (0: not monitored).
     coils : int
-        Coil masses N of the model (0: a massless spring with m_s / 3 on the valve, as in seed 000 eq. 5.2).
+        Coil masses N of the model (0: a massless spring with m_s / 3 on the valve, as in Valve-train practical works (n.d.) eq. 5.2).
     damping_ratio : float
         Of each coil segment on its two neighbouring half masses.
     """
@@ -180,16 +178,16 @@ def coil_spring_from_geometry(wire_diameter, mean_diameter, active_coils, preloa
     preload : float
         Installed force F0 [N].
     installed_pitch : float
-        Coil pitch t_0 at the installed length [m] (seed 000, eq. 6.6).
+        Coil pitch t_0 at the installed length [m] (Valve-train practical works (n.d.), eq. 6.6).
     coils : int
         Coil masses of the model.
     shear_modulus, density : float
-        G [Pa] and rho [kg/m^3] (seed 000, work 6 defaults).
+        G [Pa] and rho [kg/m^3] (Valve-train practical works (n.d.), work 6 defaults).
 
     Notes
     -----
-    Rate :math:`K = G d^4 / (8 D^3 i_p)` (seed 000, eq. 6.2); mass of the active coils
-    :math:`m_s = \\rho \\pi d^2/4\\,\\pi D\\,i_p` (seed 003, step 3); closing gap :math:`i_p (t_0 - d)`.
+    Rate :math:`K = G d^4 / (8 D^3 i_p)` (Valve-train practical works (n.d.), eq. 6.2); mass of the active coils
+    :math:`m_s = \\rho \\pi d^2/4\\,\\pi D\\,i_p` (Valve-train dynamics article (n.d.), step 3); closing gap :math:`i_p (t_0 - d)`.
     """
     return CoilSpring(float(spring_rate(shear_modulus, wire_diameter, mean_diameter, active_coils)), float(preload),
                       float(spring_mass(mean_diameter, wire_diameter, active_coils, density)),
@@ -259,7 +257,7 @@ class _Builder:
 
 @dataclass(frozen=True)
 class OneMassTrain:
-    """Single-degree-of-freedom train (seed 002, section 3.1; spec/methods-seeds-002-004.md, section 12).
+    """Single-degree-of-freedom train (Shang Hanji (1988), section 3.1).
 
     Attributes
     ----------
@@ -316,7 +314,7 @@ def one_mass_train(mass, stiffness, spring_rate, preload, rocker_ratio=1.0, lash
     Parameters
     ----------
     mass : float
-        M [kg] at the valve (seed 000 eq. 5.2, :func:`valvetrain.masses.reduced_mass_at_valve`).
+        M [kg] at the valve (Valve-train practical works (n.d.) eq. 5.2, :func:`valvetrain.masses.reduced_mass_at_valve`).
     stiffness : float
         c [N/m] at the valve.
     spring_rate, preload : float
@@ -337,7 +335,7 @@ def one_mass_train(mass, stiffness, spring_rate, preload, rocker_ratio=1.0, lash
 
 @dataclass(frozen=True)
 class MultiMassTrain:
-    """Multi-degree-of-freedom train, 4 + N1 + N2 masses (seed 002, section 3.2; spec section 12).
+    """Multi-degree-of-freedom train, 4 + N1 + N2 masses (Shang Hanji (1988), section 3.2).
 
     Attributes
     ----------
@@ -365,11 +363,11 @@ class MultiMassTrain:
     Notes
     -----
     :math:`\\mathbf M\\ddot{\\mathbf x} + \\mathbf C\\dot{\\mathbf x} + \\mathbf K\\mathbf x = \\mathbf f(h,
-    \\text{contacts})` (spec section 12).  Every drive link is a compression-only contact (a ball joint or a
+    \\text{contacts})`.  Every drive link is a compression-only contact (a ball joint or a
     face transmits no tension); the coils are bilateral.  A spring of N coil masses is N + 1 segments of
     rate (N + 1) K between the retainer and the head, masses m_s / (N + 1) inside and half of one on the
     valve (lumped-mass discretisation of the wave equation of the coil; its lowest fixed-fixed mode tends to
-    pi sqrt(K / m_s), seed 000 eq. 6.13, as N grows).
+    pi sqrt(K / m_s), Valve-train practical works (n.d.) eq. 6.13, as N grows).
     """
 
     layout: str
@@ -439,7 +437,7 @@ def rocker_stiffness(arm, width, height, modulus=STEEL_MODULUS):
 
 
 def camshaft_stiffness(l1, l2, diameter, bore=0.0, modulus=STEEL_MODULUS):
-    """Stiffness of the camshaft under its cam, force / deflection of seed 000 eq. (7.3) [N/m]."""
+    """Stiffness of the camshaft under its cam, force / deflection of Valve-train practical works (n.d.) eq. (7.3) [N/m]."""
     return 1.0 / camshaft_deflection(1.0, l1, l2, diameter, bore, modulus)
 
 
@@ -486,7 +484,7 @@ def pushrod_train(tappet_mass, pushrod_mass, rocker_inertia, valve_mass, valve_a
              ("valve", valve_mass))
     links = (cam_stiffness / k2, 2.0 * pushrod_stiffness / k2, 2.0 * pushrod_stiffness / k2,
              series(rocker_stiffness, valve_stiffness))
-    notes = ("masses at the valve: m_t/k^2, m_p/k^2, J/l_v^2, valve (seed 000 eq. 5.2)",
+    notes = ("masses at the valve: m_t/k^2, m_p/k^2, J/l_v^2, valve (Valve-train practical works (n.d.) eq. 5.2)",
              "pushrod mass lumped at its middle between two halves of stiffness 2 c_p",
              "rocker tip and valve stem stiffness in series between rocker and valve; lash at that joint")
     return MultiMassTrain("pushrod", drive, links, tuple(springs), float(rocker_ratio), float(lash), 3,

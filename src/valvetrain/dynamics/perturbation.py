@@ -1,4 +1,4 @@
-"""Perturbation view of the one-mass train (seed 002, section 3.3; spec/methods-seeds-002-004.md, section 12).
+"""Perturbation view of the one-mass train (Shang Hanji (1988), section 3.3).
 
 With the valve open the one-mass equation divided by c + K reads epsilon y'' + y = G in the
 camshaft angle, with the quasi-static lift G = (c u - F0)/(c + K), u = k h - x0, and the
@@ -25,16 +25,16 @@ def perturbation_parameter(mass, stiffness, spring_rate, cam_speed):
 
     Notes
     -----
-    Equal to (omega / omega_n)^2 with omega_n = sqrt((c + K)/M).  Seed 002 prints M omega^3 / c, which is not
-    dimensionless (spec section 0); with K << c the corrected form is Shang's M omega^2 / c.
+    Equal to (omega / omega_n)^2 with omega_n = sqrt((c + K)/M).  Shang Hanji (1988) prints M omega^3 / c, which is not
+    dimensionless (corrections note 30); with K << c the corrected form is Shang's M omega^2 / c.
 
     References
     ----------
-    seed 002, chapter 1 and section 3.3, corrected in spec/methods-seeds-002-004.md, sections 0 and 12.
+    Shang Hanji (1988), chapter 1 and section 3.3 (corrected: corrections note 30).
 
     Examples
     --------
-    The spec's worked example (M = 0.25 kg, c = 15000 N/mm, K = 67.5 N/mm) at 3000 cam rpm: 0.00164.
+    A worked example (M = 0.25 kg, c = 15000 N/mm, K = 67.5 N/mm) at 3000 cam rpm: 0.00164.
 
     >>> round(float(perturbation_parameter(0.25, 15e6, 67.5e3, 3000 * np.pi / 30)), 5)
     0.00164
@@ -60,7 +60,7 @@ def quasi_static_lift(cam_lift, train):
 
     References
     ----------
-    spec/methods-seeds-002-004.md, section 12 (perturbation method).
+    Shang Hanji (1988), section 3.3 (perturbation method).
     """
     cam_lift = np.asarray(cam_lift, dtype=float)
     scale = train.stiffness * train.rocker_ratio / (train.stiffness + train.spring_rate)
@@ -86,7 +86,7 @@ def outer_solution(even_derivatives, epsilon):
 
     References
     ----------
-    seed 002, section 3.3; spec/methods-seeds-002-004.md, section 12.
+    Shang Hanji (1988), section 3.3.
 
     Examples
     --------
@@ -119,12 +119,12 @@ def outer_lift(law, train, theta, cam_speed):
 def kinetostatic_force(law, train, theta, cam_speed):
     """Kinetostatic cam contact force at the valve, F0 + K G + M omega^2 G'' where G > 0, else nan [N].
 
-    The rigid-train criterion of spec section 2 (jump when negative) written with the quasi-static lift G,
+    The rigid-train criterion (jump when negative) written with the quasi-static lift G,
     which includes the drive's deflection; multiply by the rocker ratio for the force at the cam.
 
     References
     ----------
-    spec/methods-seeds-002-004.md, section 2 (jump criteria) and section 12 (table column).
+    Shang Hanji (1988), sections 3.1 and 3.3 (the cam contact force of the rigid train).
     """
     g = quasi_static_lift(law.derivatives(theta)[:3], train)
     force = train.preload + train.spring_rate * g[0] + train.mass * cam_speed**2 * g[2]

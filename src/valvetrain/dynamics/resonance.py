@@ -1,13 +1,13 @@
-"""Seed 003: resonant harmonic of the cam excitation and the distortion of the valve motion.
+"""Valve-train dynamics article (n.d.): resonant harmonic of the cam excitation and the distortion of the valve motion.
 
 The train is one mass m on the drive stiffness C_mgr and the spring C_pr; its natural
 frequency omega_0 meets the harmonic k = int(omega_0 / omega_cam) of the cam excitation
 C_mgr i_k h_T(theta).  That harmonic's amplitude F, over the damping xi = 0.107 m omega_0,
 gives the elastic amplitude Delta = F / (xi omega_0); the distortion delta compares it with the
-RMS valve lift.  The corrections of spec/methods-seeds-002-004.md, section 0 are applied:
+RMS valve lift.  The corrections notes 35-38 are applied:
 J / l_k^2 (not J / i_k^2), N samples per camshaft revolution, xi in N s/m.  A single
 harmonic is fragile (piecewise-trigonometric profiles have exact spectral zeros), so the
-spectrum over k +- 2 is returned too (spec section 16).
+spectrum over k +- 2 is returned too.
 """
 
 from dataclasses import dataclass
@@ -17,12 +17,12 @@ import numpy as np
 from ..springs import required_spring_force
 
 DAMPING_FACTOR = 0.107
-"""xi / (m omega_0) for trains with the camshaft in the block (seed 003, step 4i; a damping ratio of 0.0535)."""
+"""xi / (m omega_0) for trains with the camshaft in the block (Valve-train dynamics article (n.d.), step 4i; a damping ratio of 0.0535)."""
 
 
 def reduced_mass(valve_mass, spring_mass, rocker_inertia, valve_arm, pushrod_mass, rocker_ratio, pushrod_stiffness,
                  rocker_stiffness, rigid_pushrod=False):
-    """Reduced mass of the train at the valve, seed 003 step 4c [kg].
+    """Reduced mass of the train at the valve, Valve-train dynamics article (n.d.) step 4c [kg].
 
     Parameters
     ----------
@@ -44,11 +44,11 @@ def reduced_mass(valve_mass, spring_mass, rocker_inertia, valve_arm, pushrod_mas
     .. math:: m = m_{kl} + \\frac{m_{pr}}{3} + \\frac{J_{kor}}{l_k^2}
               + \\frac13\\frac{m_{sht}}{(i_k + C_{sht}/(i_k C_{kor}))^2}
 
-    The last term is kept as printed (its intended meaning is open question Q9 of the spec).
+    The last term is kept as printed (its intended meaning is unclear, corrections note 35).
 
     References
     ----------
-    seed 003, step 4c, with J / l_k^2 (spec/methods-seeds-002-004.md, sections 0 and 16).
+    Valve-train dynamics article (n.d.), step 4c, with J / l_k^2 (corrections note 35).
     """
     if rigid_pushrod:
         pushrod = pushrod_mass / rocker_ratio**2
@@ -58,11 +58,11 @@ def reduced_mass(valve_mass, spring_mass, rocker_inertia, valve_arm, pushrod_mas
 
 
 def drive_stiffness(pushrod_stiffness, rocker_stiffness, rocker_ratio):
-    """C_mgr = C_sht C_kor / (i_k^2 C_kor + C_sht) [N/m] (seed 003, step 4e).
+    """C_mgr = C_sht C_kor / (i_k^2 C_kor + C_sht) [N/m] (Valve-train dynamics article (n.d.), step 4e).
 
     Examples
     --------
-    The spec's worked example, C_sht = 8000 N/mm, C_kor = 12000 N/mm, i_k = 1.5: 2742.9 N/mm.
+    A worked example, C_sht = 8000 N/mm, C_kor = 12000 N/mm, i_k = 1.5: 2742.9 N/mm.
 
     >>> round(drive_stiffness(8000e3, 12000e3, 1.5) / 1e3, 1)
     2742.9
@@ -71,7 +71,7 @@ def drive_stiffness(pushrod_stiffness, rocker_stiffness, rocker_ratio):
 
 
 def spring_rate(mass, min_valve_acceleration, reserve, preload, valve_lift):
-    """Spring rate of seed 003 step 4a/4e, C_pr = (K_3 m |j_min| - P_0) / h_kl max [N/m].
+    """Spring rate of Valve-train dynamics article (n.d.) step 4a/4e, C_pr = (K_3 m |j_min| - P_0) / h_kl max [N/m].
 
     Parameters
     ----------
@@ -90,20 +90,20 @@ def spring_rate(mass, min_valve_acceleration, reserve, preload, valve_lift):
 
 
 def natural_frequency(spring_rate, drive_stiffness, mass):
-    """omega_0 = sqrt((C_pr + C_mgr) / m) [rad/s] (seed 003, step 4e)."""
+    """omega_0 = sqrt((C_pr + C_mgr) / m) [rad/s] (Valve-train dynamics article (n.d.), step 4e)."""
     return np.sqrt((spring_rate + drive_stiffness) / mass)
 
 
 def resonant_harmonic(omega0, cam_speed):
     """k = int(omega_0 / omega_cam), the harmonic of the camshaft revolution nearest below omega_0 (step 4zh).
 
-    The printed 0.5 omega is the camshaft speed when omega is the crankshaft's (spec section 0).
+    The printed 0.5 omega is the camshaft speed when omega is the crankshaft's (corrections note 36).
     """
     return int(omega0 / cam_speed)
 
 
 def harmonic_force(tappet_lift, drive_stiffness, rocker_ratio, orders):
-    """Amplitudes of harmonics of the excitation C_mgr i_k h_T over one period of N samples (seed 003, step 4z).
+    """Amplitudes of harmonics of the excitation C_mgr i_k h_T over one period of N samples (Valve-train dynamics article (n.d.), step 4z).
 
     Parameters
     ----------
@@ -141,7 +141,7 @@ def harmonic_force(tappet_lift, drive_stiffness, rocker_ratio, orders):
 
 
 def elastic_amplitude(force, mass, omega0, damping_factor=DAMPING_FACTOR):
-    """Delta = F / (xi omega_0) with xi = 0.107 m omega_0 [m] (seed 003, step 4i; xi in N s/m, spec section 0)."""
+    """Delta = F / (xi omega_0) with xi = 0.107 m omega_0 [m] (Valve-train dynamics article (n.d.), step 4i; xi in N s/m, corrections note 38)."""
     return force / (damping_factor * mass * omega0**2)
 
 
@@ -154,7 +154,7 @@ def distortion(amplitude, valve_lift):
         Delta [m].
     valve_lift : ndarray
         Valve lift i_k h_T samples [m]; the RMS is taken over the positive ones (the event), the reading that
-        reproduces the spec's worked example.
+        reproduces this package's worked example.
     """
     lift = np.asarray(valve_lift, dtype=float)
     lift = lift[lift > 0.0]
@@ -163,7 +163,7 @@ def distortion(amplitude, valve_lift):
 
 @dataclass(frozen=True)
 class Resonance:
-    """Seed 003 resonance analysis of one cam at one speed (SI).
+    """Resonance analysis of the Valve-train dynamics article (n.d.) for one cam at one speed (SI).
 
     Attributes
     ----------
@@ -192,7 +192,7 @@ class Resonance:
 
 def resonance(law, cam_speed, mass, spring_rate, drive_stiffness, rocker_ratio, samples=3600, period="revolution",
               span=2, damping_factor=DAMPING_FACTOR):
-    """Seed 003 resonance analysis of a lift law (steps 4e-4k).
+    """Resonance analysis of the Valve-train dynamics article (n.d.) for a lift law (steps 4e-4k).
 
     Parameters
     ----------
@@ -217,7 +217,7 @@ def resonance(law, cam_speed, mass, spring_rate, drive_stiffness, rocker_ratio, 
 
     References
     ----------
-    seed 003, steps 4e-4k; spec/methods-seeds-002-004.md, sections 0 and 16.
+    Valve-train dynamics article (n.d.), steps 4e-4k (corrected: corrections notes 35-38).
     """
     omega0 = float(natural_frequency(spring_rate, drive_stiffness, mass))
     k = resonant_harmonic(omega0, cam_speed)

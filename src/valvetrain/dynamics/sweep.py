@@ -5,7 +5,7 @@ law's convention, :mod:`valvetrain.laws.base`).  Every speed starts at rest on t
 the angle opposite the nose, runs ``revolutions`` camshaft revolutions so that the residual
 vibration of the previous event is included, and the last revolution is recorded.
 
-Events (spec/methods-seeds-002-004.md, sections 2 and 12):
+Events (Shang Hanji (1988), sections 3.1-3.2):
 
 * follower separation (jump, 飞脱): the cam contact force is zero while the rigid valve
   lift k h - x0 is positive and the valve is off its seat, before the first seating;
@@ -27,7 +27,7 @@ from .kernels import integrate_network
 STEP_LIMIT = 1.0
 """Largest |lambda| dt of the explicit integrator (|lambda|: spectral radius of the train's state matrix,
 :meth:`~.models.Network.highest_frequency`); RK4 is stable to 2.83 on the imaginary axis and damps an undamped
-mode at omega dt = 1 by 0.7 % a step (Hairer, Norsett, Wanner 1993, section IV.2)."""
+mode at omega dt = 1 by 0.7 % a step (Hairer, Nørsett and Wanner (1993), section IV.2)."""
 
 BOUNCE_TOLERANCE = 1e-6
 """Lift above the seat that counts as a bounce [m] (1 um: below it the valve rocks on the seat's elasticity)."""

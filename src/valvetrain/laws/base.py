@@ -6,7 +6,7 @@ A lift law is a function of the **camshaft** angle ``theta`` [rad] measured from
 cam nose (the axis of the lobe): ``theta < 0`` on the opening flank, ``theta > 0`` on
 the closing flank.  Outside ``[start, end]`` the follower rests on the base circle and
 every quantity is zero.  The lift ``h`` is the follower (tappet) lift above the base
-circle including the ramp, as in seed 000 eqs. (2.5)-(2.8); the valve moves once the
+circle including the ramp, as in Valve-train practical works (n.d.) eqs. (2.5)-(2.8); the valve moves once the
 ramp height (the clearance) is taken up.
 
 Derivatives are analytic.  ``derivatives(theta)`` returns the geometric derivatives
@@ -62,7 +62,7 @@ class LiftLaw(ABC):
     #: identifier used in specification files and results (``law = "..."``)
     name: str = ""
 
-    #: where the method and its formulas come from (seed, equations, spec section), shown in results and report
+    #: where the method and its formulas come from (work, equations; a citation of valvetrain.bibliography), shown in results and report
     source: str = ""
 
     #: highest derivative of the lift that is continuous at the junctions (2: acceleration continuous)
@@ -160,7 +160,7 @@ class LiftLaw(ABC):
         return omega**3 * self.derivatives(theta)[3]
 
     def valve_lift(self, theta, rocker_ratio=1.0):
-        """Valve lift i_k (h - h0) for h > h0, else 0 [m] (seed 000, work 2: valve = tappet x l_v/l_t)."""
+        """Valve lift i_k (h - h0) for h > h0, else 0 [m] (Valve-train practical works (n.d.), work 2: valve = tappet x l_v/l_t)."""
         return rocker_ratio * np.clip(self.lift(theta) - self.ramp_height, 0.0, None)
 
     def crossings(self, height):
@@ -193,7 +193,7 @@ class LiftLaw(ABC):
 
         References
         ----------
-        seed 002, section 2.1, eqs. (2.6)-(2.7), (2.15)-(2.16) (:mod:`valvetrain.geometry`).
+        Shang Hanji (1988), section 2.1, eqs. (2.6)-(2.7), (2.15)-(2.16) (:mod:`valvetrain.geometry`).
         """
         theta = np.asarray(theta, dtype=float)
         h, dh, d2h, _ = self.derivatives(theta)

@@ -1,9 +1,9 @@
 """Combined-function cams: a sequence of acceleration segments joined with continuous acceleration,
-closed at the nose by a linear system (seed 002 contents, section 2.5; spec/methods-seeds-002-004.md, section 6).
+closed at the nose by a linear system (Shang Hanji (1988), section 2.5; the general mechanism, derived in this package).
 
 Shang's FB2 and MFB2 cams are combined-function cams whose definitions are not in any
-available source (spec open question Q2); this module provides the general mechanism they
-belong to, and the Kurz cam of seed 000 is one instance of it (see the tests).
+available source; this module provides the general mechanism they
+belong to, and the Kurz cam of Valve-train practical works (n.d.) is one instance of it (see the tests).
 
 Each segment's acceleration (with respect to the camshaft angle) is a linear
 combination of known shape functions with unknown amplitudes.  Lift and velocity follow
@@ -77,7 +77,7 @@ class CombinedLaw(RampedLaw, SymmetricLaw):
 
     Examples
     --------
-    Kurz's cam of the seed 000 appendix rebuilt: half-sine, quarter-sine and a parabola to the
+    Kurz's cam of the appendix of Valve-train practical works (n.d.) rebuilt: half-sine, quarter-sine and a parabola to the
     nose with Z = 5/8 give c12 (pi/Phi1)^2 as the first amplitude (0.584172 x 44.444 = 25.963 mm/rad^2).
 
     >>> law = CombinedLaw(6.25, 0.25, 0.02 * 180 / np.pi, [("half_sine", np.radians(27)), ("quarter_sine",
@@ -87,13 +87,13 @@ class CombinedLaw(RampedLaw, SymmetricLaw):
 
     References
     ----------
-    spec/methods-seeds-002-004.md, section 6 (the general mechanism; FB2/MFB2 not defined in any source).
+    Shang Hanji (1988), section 2.5 (names the FB2/MFB2 cams, whose definitions are not available); the
+    general mechanism is derived in this package.
     """
 
     name = "combined"
-    source = ('seed 002, section 2.5; segments with continuous acceleration, closure as a linear system: '
-              'spec/methods-seeds-002-004.md, section 6 (general mechanism; FB2/MFB2 are not defined in any available'
-              ' source)')
+    source = ('Shang Hanji (1988), section 2.5; segments with continuous acceleration, closure as a linear system '
+              '(general mechanism, derived in this package; FB2/MFB2 are not defined in any available source)')
 
     def __init__(self, lift, ramp_height, ramp_velocity, segments, ratios=(), ramp_kind="cosine", ramp_fraction=0.5):
         self._lift = float(lift)

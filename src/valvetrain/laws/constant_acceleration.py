@@ -1,10 +1,10 @@
-"""Constant-acceleration cam with ramps (seed 002 contents, section 2.4 等加速凸轮; spec/methods-seeds-002-004.md, 5).
+"""Constant-acceleration cam with ramps (Shang Hanji (1988), section 2.4 等加速凸轮; reconstructed).
 
 After the ramp (height h0, end velocity v0, zero end acceleration): +A1 over Phi1, -A2
 over Phi2 and optionally -kappa A2 over Phi3 up to the nose.  A1 and A2 follow from the
 closure conditions, a 2 x 2 linear system.  The acceleration is piecewise constant (soft
 impacts where it jumps); the lift is C1.  Shang's exact segmentation and parameter rules
-are not in the seed (open question Q1 of the spec): this is the general classical form.
+are not available to this package: this is the general classical form.
 """
 
 import numpy as np
@@ -29,11 +29,11 @@ def constant_acceleration_levels(nose_lift, ramp_height, ramp_velocity, phi1, ph
 
     References
     ----------
-    spec/methods-seeds-002-004.md, section 5 [R].
+    Shang Hanji (1988), section 2.4 (the method; the formulas are reconstructed in this package).
 
     Examples
     --------
-    The spec's worked example: h_max 8, h0 0.35, v0 1.33690 mm/rad, 18/20/12 deg, kappa 0.6:
+    A worked example: h_max 8, h0 0.35, v0 1.33690 mm/rad, 18/20/12 deg, kappa 0.6:
 
     >>> a1, a2 = constant_acceleration_levels(8.0, 0.35, 1.33690, *np.radians([18, 20, 12]), kappa=0.6)
     >>> round(a1, 3), round(a2, 3)
@@ -65,8 +65,8 @@ class ConstantAccelerationLaw(RampedLaw, SymmetricLaw):
     """
 
     name = "constant_acceleration"
-    source = ('seed 002, section 2.4; +A1, -A2, -kappa A2 after a ramp, closure as a 2 x 2 system: '
-              'spec/methods-seeds-002-004.md, section 5 (reconstructed)')
+    source = ('Shang Hanji (1988), section 2.4; +A1, -A2, -kappa A2 after a ramp, closure as a 2 x 2 system '
+              '(reconstructed in this package)')
     continuity = 1
 
     def __init__(self, lift, ramp_height, ramp_velocity, phi1, phi2, phi3=0.0, kappa=1.0, ramp_kind="cosine",

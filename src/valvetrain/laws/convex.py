@@ -1,5 +1,5 @@
 """Circular-arc cams: the three-arc convex cam for a flat follower and the tangent cam for a roller follower
-(Kolchin & Demidov's construction; spec/methods-seeds-002-004.md, sections 3-4; seed 003 uses the three-arc cam).
+(the construction of Kolchin and Demidov (1980); Valve-train dynamics article (n.d.) uses the three-arc cam).
 
 The classical arc cams have no ramp: the lift starts on the base circle of radius r0.
 """
@@ -32,11 +32,11 @@ def three_arc_geometry(base_radius, lift, half_angle, nose_radius):
 
     References
     ----------
-    spec/methods-seeds-002-004.md, section 3 [S+D].
+    Kolchin and Demidov (1980) (the construction; the closed forms are derived in this package).
 
     Examples
     --------
-    The spec's worked example: r0 = 20, h = 8, phi_p0 = 60 deg, r2 = 5: r1 = 63.4286, phi1 = 19.9320 deg.
+    A worked example: r0 = 20, h = 8, phi_p0 = 60 deg, r2 = 5: r1 = 63.4286, phi1 = 19.9320 deg.
 
     >>> r1, f1, f2 = three_arc_geometry(20.0, 8.0, np.radians(60), 5.0)
     >>> round(r1, 4), round(float(np.degrees(f1)), 4), round(float(np.degrees(f2)), 4)
@@ -108,17 +108,17 @@ class ThreeArcLaw(_ArcCam):
     -----
     Flank (0 <= phi <= phi1 from the start of lift): h = (r1 - r0)(1 - cos phi); nose
     (psi = phi_p0 - phi): h = a cos psi + r2 - r0.  The radius of curvature of the flat
-    follower's cam is r1 on the flank and r2 on the nose (seed 002, eq. 2.6 reproduces both).
+    follower's cam is r1 on the flank and r2 on the nose (Shang Hanji (1988), eq. 2.6 reproduces both).
     The acceleration jumps at the start of lift and at the flank-nose junction.
 
     References
     ----------
-    spec/methods-seeds-002-004.md, section 3; seed 003 (three-arc profile).
+    Kolchin and Demidov (1980); Valve-train dynamics article (n.d.) (three-arc profile).
     """
 
     name = "three_arc"
-    source = ('three-arc convex cam for a flat follower (Kolchin & Demidov; seed 003): spec/methods-seeds-002-004.md,'
-              ' section 3 (derived)')
+    source = ('three-arc convex cam for a flat follower (Kolchin and Demidov (1980); Valve-train dynamics article (n.d.)),'
+              ' closed forms derived in this package')
 
     def __init__(self, base_radius, lift, half_angle, nose_radius):
         self.r0, self._lift, self.phi_p0, self.r2 = map(float, (base_radius, lift, half_angle, nose_radius))
@@ -132,7 +132,7 @@ class ThreeArcLaw(_ArcCam):
 
     @classmethod
     def from_flank_angle(cls, base_radius, lift, half_angle, flank_angle):
-        """Seed 003 fixes the flank (positive-acceleration) angle phi1.
+        """The Valve-train dynamics article (n.d.) fixes the flank (positive-acceleration) angle phi1.
 
         >>> law = ThreeArcLaw.from_flank_angle(20.0, 8.0, np.radians(60), np.radians(25))
         >>> round(law.r2, 5), round(law.r1, 4)
@@ -182,11 +182,11 @@ class TangentLaw(_ArcCam):
 
     References
     ----------
-    spec/methods-seeds-002-004.md, section 4 [D].
+    Kolchin and Demidov (1980) (the tangent cam; the closed forms are derived in this package).
 
     Examples
     --------
-    r0 = 20, h = 8, phi_p0 = 60 deg, r_r = 10 (spec): r2 = 12, junction at 24.7913 deg, lift there 3.04542.
+    r0 = 20, h = 8, phi_p0 = 60 deg, r_r = 10: r2 = 12, junction at 24.7913 deg, lift there 3.04542.
 
     >>> law = TangentLaw(20.0, 8.0, np.radians(60), 10.0)
     >>> round(law.r2, 6), round(float(np.degrees(law.junction)), 4), round(float(law.lift(-law.half_angle + law.junction)), 5)
@@ -194,8 +194,8 @@ class TangentLaw(_ArcCam):
     """
 
     name = "tangent"
-    source = ('tangent cam for a roller follower (Kolchin & Demidov): spec/methods-seeds-002-004.md, section 4 '
-              '(derived)')
+    source = ('tangent cam for a roller follower (Kolchin and Demidov (1980)), '
+              'closed forms derived in this package')
 
     def __init__(self, base_radius, lift, half_angle, roller_radius):
         self.r0, self._lift, self.phi_p0, self.rr = map(float, (base_radius, lift, half_angle, roller_radius))

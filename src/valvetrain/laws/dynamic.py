@@ -1,7 +1,7 @@
-"""Multi-term dynamic cam (seed 002 contents, section 4.1 多项动力凸轮) = the Dudley-Stoddart polydyne:
+"""Multi-term dynamic cam (Shang Hanji (1988), section 4.1 多项动力凸轮) = the Dudley-Stoddart polydyne:
 the cam is shaped so that the valve of a one-mass elastic train follows a chosen polynomial
-motion at the design speed (Rothbart, Cam Design Handbook, 2004, section 13.7;
-spec/methods-seeds-002-004.md, section 8 [S+D]).
+motion at the design speed (Dudley (1948); Stoddart (1953); Rothbart (2004), section 13.7; the
+formulas of the multi-term cam are derived in this package).
 """
 
 import numpy as np
@@ -53,12 +53,13 @@ class DynamicLaw(RampedLaw, SymmetricLaw):
 
     References
     ----------
-    spec/methods-seeds-002-004.md, section 8; seed 002 (multi-term dynamic cam, section 4.1).
+    Shang Hanji (1988), section 4.1 (multi-term dynamic cam); Dudley (1948); Stoddart (1953);
+    Rothbart (2004), section 13.7.
     """
 
     name = "dynamic"
-    source = ("seed 002, section 4.1; Dudley-Stoddart polydyne k h = x0 + y + (M omega^2 y'' + K y + F0)/c "
-              "(Rothbart, Cam Design Handbook, 2004, 13.7): spec/methods-seeds-002-004.md, section 8 (derived)")
+    source = ("Shang Hanji (1988), section 4.1; Dudley-Stoddart polydyne k h = x0 + y + (M omega^2 y'' + K y + F0)/c "
+              "(Dudley (1948); Stoddart (1953); Rothbart (2004), section 13.7; derived in this package)")
 
     def __init__(self, valve_lift, main_half_angle, exponents, opening_velocity, stiffness, mass, spring_rate,
                  preload, cam_speed, rocker_ratio=1.0, lash=0.0, ramp_kind="cosine", ramp_fraction=0.5):
@@ -136,7 +137,7 @@ class DynamicLaw(RampedLaw, SymmetricLaw):
     def checks(self):
         """The cam lift must rise monotonically to the nose (a dip means the drive is too compliant)."""
         return [check("dynamic cam: fall of the lift before the nose", self.fall_before_nose(), high=0.0,
-                      source="the cam lift rises to the nose (spec/methods-seeds-002-004.md, section 8)", unit="mm")]
+                      source="Rothbart (2004), section 13.7: the cam lift rises to the nose", unit="mm")]
 
     def coefficients(self):
         """Valve-motion coefficients C_k = a_k / y_max, exponents, and the drive data used."""

@@ -1,12 +1,12 @@
 """N-harmonic cam: a finite cosine series over the working angle with junction conditions
-(seed 002 contents, section 4.2; spec/methods-seeds-002-004.md, section 9 [R]).
+(Shang Hanji (1988), section 4.2; reconstructed in this package).
 
 .. math:: h(\\theta) = \\sum_{k=0}^{N} a_k\\cos\\frac{k\\pi\\theta}{\\alpha_W},\\quad |\\theta| \\le \\alpha_W
 
 Odd derivatives vanish at +-alpha_W by construction; the even ones up to 2m are made zero
 there (a C^(2m+1) junction with the base circle), h(0) is the nose lift, and the remaining
 freedom is fitted to a target law by equality-constrained least squares.  Shang's exact
-rules for N and the end conditions are not in the seed (spec open question Q3).
+rules for N and the end conditions are not available to this package.
 """
 
 import numpy as np
@@ -35,7 +35,7 @@ def harmonic_limit(half_angle, natural_frequency, cam_speed):
 
     References
     ----------
-    spec/methods-seeds-002-004.md, section 9 (tied to the perturbation method of section 12).
+    Shang Hanji (1988), sections 4.2 and 3.3 (the N-harmonic cam and the perturbation method; reconstructed).
 
     Examples
     --------
@@ -102,8 +102,8 @@ class HarmonicLaw(LiftLaw):
     """
 
     name = "harmonic"
-    source = ('seed 002, section 4.2; h = sum a_k cos(k pi theta / alpha_W) with junction conditions, fitted to a '
-              'target law: spec/methods-seeds-002-004.md, section 9 (reconstructed)')
+    source = ('Shang Hanji (1988), section 4.2; h = sum a_k cos(k pi theta / alpha_W) with junction conditions, fitted to a '
+              'target law (reconstructed in this package)')
 
     def __init__(self, target, harmonics, junction_order=1, samples=2001):
         n, m = int(harmonics), int(junction_order)
@@ -171,7 +171,7 @@ class HarmonicLaw(LiftLaw):
         """The harmonic order against the train: N < alpha_W omega_n / (pi omega) (:func:`harmonic_limit`)."""
         return [check("harmonic order N of the cam", self.harmonics,
                       high=harmonic_limit(self.alpha, natural_frequency, cam_speed),
-                      source="spec/methods-seeds-002-004.md section 9: N < alpha_W omega_n/(pi omega)")]
+                      source="Shang Hanji (1988), section 4.2 (reconstructed): N < alpha_W omega_n/(pi omega)")]
 
     def coefficients(self):
         """a_0 ... a_N [mm], N, m and the largest deviation from the target [mm]."""

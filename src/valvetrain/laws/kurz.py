@@ -1,4 +1,4 @@
-"""Kurz shock-free cam (seed 000, work 2).
+"""Kurz shock-free cam (Valve-train practical works (n.d.), work 2).
 
 Cosine ramp Phi0, half-sine positive acceleration Phi1, quarter-sine negative
 acceleration Phi2 and a parabolic negative acceleration (quartic lift) Phi3 up to the
@@ -16,13 +16,13 @@ from .base import RampedLaw, SymmetricLaw, mirror
 from .ramps import make_ramp, ramp_at
 
 RAMP_VELOCITY_RANGE_MM_PER_DEG = (0.008, 0.022)
-"""Recommended tappet velocity at the end of the ramp [mm/deg cam] (seed 000, eq. 2.1)."""
+"""Recommended tappet velocity at the end of the ramp [mm/deg cam] (Valve-train practical works (n.d.), eq. 2.1)."""
 
 PHI2_TO_PHI3_RANGE = (0.10, 0.25)
-"""Recommended Phi2/Phi3 (seed 000, eq. 2.3)."""
+"""Recommended Phi2/Phi3 (Valve-train practical works (n.d.), eq. 2.3)."""
 
 NEGATIVE_TO_POSITIVE_RANGE = (1.5, 3.0)
-"""Recommended (Phi2 + Phi3)/Phi1 (seed 000, eq. 2.4)."""
+"""Recommended (Phi2 + Phi3)/Phi1 (Valve-train practical works (n.d.), eq. 2.4)."""
 
 
 @dataclass(frozen=True)
@@ -82,11 +82,11 @@ def kurz_coefficients(lift, ramp_velocity, phi1, phi2, phi3, shape_factor=0.625)
 
     References
     ----------
-    seed 000, work 2, eqs. (2.23)-(2.34) (verified in spec/valvetrain-works-1-8.md, 4.1).
+    Valve-train practical works (n.d.), work 2, eqs. (2.23)-(2.34) (verified on the appendix example).
 
     Examples
     --------
-    The appendix of seed 000 (h = 6.25 mm, w' = 0.02 mm/deg, Phi = 27/6/38 deg):
+    The appendix of Valve-train practical works (n.d.) (h = 6.25 mm, w' = 0.02 mm/deg, Phi = 27/6/38 deg):
 
     >>> c = kurz_coefficients(6.25, 0.02 * 180 / np.pi, *np.deg2rad([27, 6, 38]))
     >>> round(c.c11, 6), round(c.c32, 6), round(c.c33, 6)
@@ -122,7 +122,7 @@ class KurzLaw(RampedLaw, SymmetricLaw):
     shape_factor : float
         Z (eq. 2.22), default 5/8.
     ramp_kind : str
-        ``cosine`` (seed 000, eq. 2.5; default), ``constant_velocity`` or ``constant_acceleration``:
+        ``cosine`` (Valve-train practical works (n.d.), eq. 2.5; default), ``constant_velocity`` or ``constant_acceleration``:
         the coefficients depend only on the ramp's end velocity, and every ramp ends at zero
         acceleration, so the main lift joins any of them as in (2.13).
     ramp_fraction : float
@@ -136,8 +136,8 @@ class KurzLaw(RampedLaw, SymmetricLaw):
     """
 
     name = "kurz"
-    source = ('seed 000, work 2: ramp (2.1), (2.5); segments (2.6)-(2.8); coefficients (2.23)-(2.34); extremes '
-              '(2.35)-(2.39); phi_p0 = (phi_op + 180 + phi_zap)/4 (corrected, SPEC E1)')
+    source = ('Valve-train practical works (n.d.), work 2: ramp (2.1), (2.5); segments (2.6)-(2.8); coefficients (2.23)-(2.34); extremes '
+              '(2.35)-(2.39); phi_p0 = (phi_op + 180 + phi_zap)/4 (corrected: corrections note 1)')
 
     def __init__(self, lift, clearance, ramp_velocity, phi1, phi2, phi3, shape_factor=0.625, ramp_kind="cosine",
                  ramp_fraction=0.5):
@@ -174,14 +174,14 @@ class KurzLaw(RampedLaw, SymmetricLaw):
                      (self.clearance, c.c11, c.c12, c.c21, c.c22, c.c31, c.c32, c.c33, self.phi1, self.phi2, self.phi3))
 
     def coefficients(self):
-        """Coefficients and auxiliaries in the manual's units (mm, rad), keys as in seed 000."""
+        """Coefficients and auxiliaries in the manual's units (mm, rad), keys as in Valve-train practical works (n.d.)."""
         return {k: v * 1e3 if k.startswith("c") else v for k, v in asdict(self.c).items()}
 
     def residuals(self):
         """Residuals of the continuity system (2.10), (2.12), (2.14), (2.16), (2.18), (2.20), (2.22) [mm, rad].
 
         With the closed-form coefficients they vanish to round-off; the appendix of
-        seed 000 prints residuals up to 8.2e-5 because it rounded the coefficients (E11).
+        Valve-train practical works (n.d.) prints residuals up to 8.2e-5 because it rounded the coefficients (corrections note 11).
         """
         c = {k: v * 1e3 for k, v in asdict(self.c).items() if k.startswith("c")}
         f1, f2, f3, Z = self.phi1, self.phi2, self.phi3, self.shape_factor
@@ -198,7 +198,7 @@ class KurzLaw(RampedLaw, SymmetricLaw):
         }
 
     def seed_formulas(self, base_radius, omega):
-        """The closed-form extremes of seed 000 (2.35)-(2.39), follower side, SI.
+        """The closed-form extremes of Valve-train practical works (n.d.) (2.35)-(2.39), follower side, SI.
 
         Parameters
         ----------
@@ -212,7 +212,7 @@ class KurzLaw(RampedLaw, SymmetricLaw):
         dict
             ``max_velocity`` (2.35) [m/s], ``max_acceleration`` (2.36) and
             ``min_acceleration`` (2.37) [m/s^2], ``rho_min`` (2.38) and ``rho_max`` (2.39)
-            [m].  (2.39) is evaluated at Phi1/2, slightly below the true maximum (E16);
+            [m].  (2.39) is evaluated at Phi1/2, slightly below the true maximum (corrections note 16);
             the profile extremes are computed along the contour by
             :mod:`valvetrain.geometry`.
         """
@@ -230,10 +230,10 @@ class KurzLaw(RampedLaw, SymmetricLaw):
         return [
             check("ramp end velocity", self.ramp_velocity, *(w * 1e-3 / np.radians(1.0)
                                                              for w in RAMP_VELOCITY_RANGE_MM_PER_DEG),
-                  source="seed 000, work 2, eq. (2.1)", unit="mm/deg"),
-            check("Phi2/Phi3", self.phi2 / self.phi3, *PHI2_TO_PHI3_RANGE, source="seed 000, work 2, eq. (2.3)"),
+                  source="Valve-train practical works (n.d.), work 2, eq. (2.1)", unit="mm/deg"),
+            check("Phi2/Phi3", self.phi2 / self.phi3, *PHI2_TO_PHI3_RANGE, source="Valve-train practical works (n.d.), work 2, eq. (2.3)"),
             check("(Phi2+Phi3)/Phi1", (self.phi2 + self.phi3) / self.phi1, *NEGATIVE_TO_POSITIVE_RANGE,
-                  source="seed 000, work 2, eq. (2.4)"),
+                  source="Valve-train practical works (n.d.), work 2, eq. (2.4)"),
         ]
 
 
@@ -251,7 +251,7 @@ def _kurz_kernel(theta, out, half, edges, ramp, coefficients):
 
     References
     ----------
-    seed 000, work 2, eqs. (2.5)-(2.8).
+    Valve-train practical works (n.d.), work 2, eqs. (2.5)-(2.8).
     """
     h0, c11, c12, c21, c22, c31, c32, c33, phi1, phi2, phi3 = coefficients
     k1, k2 = np.pi / phi1, np.pi / (2.0 * phi2)

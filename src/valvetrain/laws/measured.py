@@ -1,6 +1,6 @@
 """Measured lift tables: reading, checking and trimming to the lobe, smoothing-spline and N-harmonic fits,
 nose finding and false asymmetry, checking-height durations, and the measured cam as a lift law
-(seed 002 contents, sections 5.1-5.3; spec/methods-seeds-002-004.md, sections 9-11 [R]).
+(Shang Hanji (1988), sections 5.1-5.3; reconstructed in this package).
 
 Angles inside are camshaft radians in the engine's cam frame (crank angle from the gas-exchange TDC / 2); a
 table measured against the crank angle is halved, and one measured from the firing TDC is turned back by 360
@@ -29,7 +29,7 @@ MAX_LIFT_MM = 500.0
 """Largest lift a table may hold [mm], the bound of max_lift_mm: beyond it the table is not in millimetres."""
 
 MIN_VALVE_LIFT_MM = 0.3
-"""Smallest largest valve lift of a table [mm]: about the valve clearance (0.25-0.35 mm inlet, seed 000, work 2);
+"""Smallest largest valve lift of a table [mm]: about the valve clearance (0.25-0.35 mm inlet, Valve-train practical works (n.d.), work 2);
 a table that lifts the valve less holds a ramp or noise, not a cam lobe."""
 
 FIT_POINTS = 1000
@@ -113,7 +113,7 @@ def lobe_table(angle_deg, lift_mm, angle="crank", zero="gas_exchange_tdc", accur
 
     References
     ----------
-    seed 002 contents, section 5.1 (a measured table of the lobe); this project's reading of what a table of one
+    Shang Hanji (1988), section 5.1 (a measured table of the lobe); this project's reading of what a table of one
     lobe is.
     """
     revolution = 720.0 if angle == "crank" else 360.0
@@ -224,7 +224,7 @@ def harmonic_fit(theta, lift, harmonics, period_half):
 
     References
     ----------
-    seed 002 contents, section 5.2; spec/methods-seeds-002-004.md, section 9 (approximation of a measured table).
+    Shang Hanji (1988), section 5.2 (approximation of a measured table; reconstructed).
     """
     w = np.pi / period_half
     k = np.arange(harmonics + 1)
@@ -240,7 +240,7 @@ def harmonic_lift(theta, a, b, w):
 
 
 def harmonic_order(theta, lift, accuracy, most, period_half):
-    """The smallest order N <= ``most`` whose N-harmonic fit meets the accuracy, and its fit (spec section 9:
+    """The smallest order N <= ``most`` whose N-harmonic fit meets the accuracy, and its fit (
     choose N by the residual against the measurement accuracy, not the largest N that fits).
 
     The residual falls with N (the fits are nested), so N is bracketed by doubling from 4 and then found by
@@ -315,7 +315,7 @@ def symmetry_shift(a, b, w, half_width, search=0.2, samples=801):
     """Origin shift delta [rad] that best removes the odd part of a harmonic fit, and the odd part left.
 
     Shifting the origin by delta turns the sine coefficients into b_k(delta) = b_k cos(k w delta) -
-    a_k sin(k w delta), and the odd part of the fit into o(t) = sum b_k(delta) sin(k w t).  The spec's
+    a_k sin(k w delta), and the odd part of the fit into o(t) = sum b_k(delta) sin(k w t).  The
     criterion, min sum b_k(delta)^2, is the energy of o over a whole half-period; here the energy is
     taken over the measured window |t| <= T (T = ``half_width`` less the searched shift), which is the
     same criterion where the basis is orthogonal and stays meaningful where it is not: a fit of high
@@ -344,7 +344,7 @@ def symmetry_shift(a, b, w, half_width, search=0.2, samples=801):
 
     References
     ----------
-    seed 002 contents, section 5.3; spec/methods-seeds-002-004.md, section 10 [R] (criterion restricted to
+    Shang Hanji (1988), section 5.3 (reconstructed; criterion restricted to
     the measured window: this project's reading).
     """
     k = np.arange(a.size)
@@ -385,13 +385,13 @@ class TableLaw(RampedLaw):
     fit : {"auto", "spline", "harmonic"}
         The curve the law evaluates: Reinsch's smoothing spline with the smoothing chosen by
         generalised cross-validation (:func:`scipy.interpolate.make_smoothing_spline`), the
-        stand-in of the spec for Shang's 回弹法 fairing, or the N-harmonic fit; ``"auto"`` takes the
+        stand-in of this package for Shang's 回弹法 fairing, or the N-harmonic fit; ``"auto"`` takes the
         N-harmonic fit where it meets the accuracy and stays within the table's range, else the spline
         (GCV follows the measurement noise into the acceleration, a fit that meets the stated accuracy with
         few harmonics does not).
     accuracy : float
         Measurement accuracy [m]: the harmonic order N is the smallest whose RMS residual
-        meets it (spec section 9: choose N by the residual, not the largest N that fits); the base-circle
+        meets it (choose N by the residual, not the largest N that fits); the base-circle
         band is ``BASE_CIRCLE_ACCURACIES`` times it.
     max_harmonics : int
         Upper bound of N; N is also at most (points - 1) / ``HARMONIC_POINTS_PER_ORDER``.
@@ -416,8 +416,8 @@ class TableLaw(RampedLaw):
     """
 
     name = "table"
-    source = ('seed 002, sections 5.1-5.3; GCV smoothing spline or N-harmonic fit, nose finding and false asymmetry: '
-              'spec/methods-seeds-002-004.md, sections 9-11 (reconstructed)')
+    source = ('Shang Hanji (1988), sections 5.1-5.3; GCV smoothing spline or N-harmonic fit, nose finding and false asymmetry '
+              '(reconstructed in this package)')
 
     def __init__(self, angles, lift, fit="auto", accuracy=5e-6, max_harmonics=60, ramp_height=0.0,
                  rows_per_point=1.0):
@@ -542,8 +542,8 @@ class TableLaw(RampedLaw):
         """The N-harmonic fit must meet the stated measurement accuracy by ``max_harmonics``; if it does not, the
         table is noisier than stated (or the accuracy finer than the instrument's)."""
         return [check("measured table: rms residual of the N-harmonic fit", self.harmonic_rms, high=self.accuracy,
-                      unit="mm", source=f"accuracy_mm, met by N <= {self.harmonics} harmonics (spec/methods-seeds-002-004.md, "
-                                        "section 9: N by the residual against the accuracy, 0.002-0.01 mm)")]
+                      unit="mm", source=f"Shang Hanji (1988), section 5.2: accuracy_mm, met by N <= {self.harmonics} harmonics "
+                                        "(N by the residual against the accuracy, 0.002-0.01 mm)")]
 
     def coefficients(self):
         """The fit used, the harmonic order, the remaining (true) asymmetry, the lobe centre and the points fitted

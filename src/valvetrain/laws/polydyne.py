@@ -1,12 +1,12 @@
-"""Polydyne and high-order polynomial cams (seed 000, work 3; seed 002, section 2.6).
+"""Polydyne and high-order polynomial cams (Valve-train practical works (n.d.), work 3; Shang Hanji (1988), section 2.6).
 
 .. math:: h = h_{nose}\\,(1 + C_2x^2 + C_px^p + C_qx^q + C_rx^r + C_sx^s),\\quad x = \\theta/\\varphi_{p0}
 
-with ``theta`` the camshaft angle from the nose.  Without a ramp (seed 000) the five
+with ``theta`` the camshaft angle from the nose.  Without a ramp (Valve-train practical works (n.d.)) the five
 coefficients make h and its first four derivatives vanish at x = 1 (closed form
 (3.4)-(3.8)).  With a ramp the same polynomial is joined to a cosine ramp: h = h0 and
 dh/dtheta = ramp end velocity at x = 1, the second to fourth derivatives zero there (a
-5x5 linear system; spec/methods-seeds-002-004.md, section 7, [D]).  The cosine ramp
+5x5 linear system, derived in this package).  The cosine ramp
 ends at zero acceleration, so the joined law is C2; its jerk jumps at the junction.
 """
 
@@ -18,11 +18,11 @@ from .base import RampedLaw, SymmetricLaw, mirror
 from .ramps import make_ramp, ramp_at
 
 EXPONENT_P_RANGE = (6, 16)
-"""Recommended first exponent p: 6-10 for fast passenger-car engines, 12-16 for trucks (seed 000, work 3)."""
+"""Recommended first exponent p: 6-10 for fast passenger-car engines, 12-16 for trucks (Valve-train practical works (n.d.), work 3)."""
 
 
 def default_exponents(p):
-    """The progression of seed 000 work 3: q = 2p - 2, r = 3p - 4, s = 4p - 6 (difference p - 2).
+    """The progression of Valve-train practical works (n.d.), work 3: q = 2p - 2, r = 3p - 4, s = 4p - 6 (difference p - 2).
 
     >>> default_exponents(12)
     (12, 22, 32, 42)
@@ -56,11 +56,11 @@ def polydyne_coefficients(p, q, r, s):
 
     References
     ----------
-    seed 000, work 3, eqs. (3.4)-(3.8).
+    Valve-train practical works (n.d.), work 3, eqs. (3.4)-(3.8).
 
     Examples
     --------
-    p = 8 with the default progression (spec/valvetrain-works-1-8.md, 4.5):
+    p = 8 with the default progression:
 
     >>> [round(c, 5) for c in polydyne_coefficients(8, 14, 20, 26)]
     [-1.87243, 1.87243, -1.60494, 0.74897, -0.14403]
@@ -107,8 +107,7 @@ def polynomial_junction_coefficients(exponents, nose_lift, end_lift, end_slope):
     Notes
     -----
     With five exponents and ``end_lift = end_slope = 0`` the solution is ``nose_lift``
-    times the closed form of :func:`polydyne_coefficients` (spec/methods-seeds-002-004.md,
-    section 7, [D]).
+    times the closed form of :func:`polydyne_coefficients` (derived in this package).
     """
     k = np.asarray(exponents, dtype=float)
     matrix = np.array([_falling(k, j) for j in range(k.size)])
@@ -145,12 +144,13 @@ class PolynomialLaw(RampedLaw, SymmetricLaw):
 
     References
     ----------
-    seed 000, work 3; seed 002, section 2.6 (高次方凸轮); spec/methods-seeds-002-004.md, section 7.
+    Valve-train practical works (n.d.), work 3; Shang Hanji (1988), section 2.6 (高次方凸轮); the junction
+    with a ramp is derived in this package.
     """
 
     name = "polynomial"
-    source = ('seed 002, section 2.6: h = h_nose (1 + sum C_k x^k); junction with the ramp '
-              'spec/methods-seeds-002-004.md, section 7 (derived)')
+    source = ('Shang Hanji (1988), section 2.6: h = h_nose (1 + sum C_k x^k); junction with the ramp '
+              'derived in this package')
 
     def __init__(self, lift, main_half_angle, exponents, ramp_height=0.0, ramp_velocity=0.0, ramp_kind="cosine",
                  ramp_fraction=0.5):
@@ -208,7 +208,7 @@ class PolynomialLaw(RampedLaw, SymmetricLaw):
 
 
 class PolydyneLaw(PolynomialLaw):
-    """Polydyne cam of seed 000, work 3: exponents 2, p, q, r, s (default progression), optionally joined to ramps.
+    """Polydyne cam of Valve-train practical works (n.d.), work 3: exponents 2, p, q, r, s (default progression), optionally joined to ramps.
 
     Parameters
     ----------
@@ -221,7 +221,7 @@ class PolydyneLaw(PolynomialLaw):
     q, r, s : float, optional
         Further exponents; default the progression of :func:`default_exponents`.
     ramp_height, ramp_velocity, ramp_kind, ramp_fraction
-        As for :class:`PolynomialLaw`; no ramp by default, as in seed 000.
+        As for :class:`PolynomialLaw`; no ramp by default, as in Valve-train practical works (n.d.).
 
     Notes
     -----
@@ -235,8 +235,8 @@ class PolydyneLaw(PolynomialLaw):
     """
 
     name = "polydyne"
-    source = ('seed 000, work 3: h = h_max (1 + C2 x^2 + Cp x^p + Cq x^q + Cr x^r + Cs x^s), (3.1)-(3.8); with a ramp'
-              ' spec/methods-seeds-002-004.md, section 7 (derived)')
+    source = ('Valve-train practical works (n.d.), work 3: h = h_max (1 + C2 x^2 + Cp x^p + Cq x^q + Cr x^r + Cs x^s), (3.1)-(3.8); with a ramp'
+              ' derived in this package')
 
     def __init__(self, lift, main_half_angle, p, q=None, r=None, s=None, ramp_height=0.0, ramp_velocity=0.0,
                  ramp_kind="cosine", ramp_fraction=0.5):
@@ -260,8 +260,8 @@ class PolydyneLaw(PolynomialLaw):
         return out
 
     def checks(self):
-        """The recommended range of p (seed 000, work 3)."""
-        return [check("polydyne exponent p", self._k[1], *EXPONENT_P_RANGE, source="seed 000, work 3")]
+        """The recommended range of p (Valve-train practical works (n.d.), work 3)."""
+        return [check("polydyne exponent p", self._k[1], *EXPONENT_P_RANGE, source="Valve-train practical works (n.d.), work 3")]
 
 
 @njit(cache=True)
@@ -279,7 +279,7 @@ def _polynomial_kernel(theta, out, half, ramp_angle, phi_p0, nose, c2, weights, 
 
     References
     ----------
-    seed 000, work 3, eq. (3.1); spec/methods-seeds-002-004.md, section 7.
+    Valve-train practical works (n.d.), work 3, eq. (3.1).
     """
     pw = np.empty(powers.size)
     for i in range(theta.size):

@@ -26,11 +26,11 @@ def cosine_ramp_length(height, end_velocity):
 
     References
     ----------
-    seed 000, work 2, eq. (2.1).
+    Valve-train practical works (n.d.), work 2, eq. (2.1).
 
     Examples
     --------
-    Seed 000 appendix: h0 = 0.25 mm, w' = 0.02 mm/deg gives 19.635 deg.
+    the appendix of Valve-train practical works (n.d.): h0 = 0.25 mm, w' = 0.02 mm/deg gives 19.635 deg.
 
     >>> round(float(np.rad2deg(cosine_ramp_length(0.25e-3, 0.02e-3 * 180 / np.pi))), 3)
     19.635
@@ -64,7 +64,7 @@ def cosine_ramp_at(phi, height, length):
 
     References
     ----------
-    seed 000, work 2, eq. (2.5).
+    Valve-train practical works (n.d.), work 2, eq. (2.5).
     """
     k = np.pi / (2.0 * length)
     s, c = np.sin(k * phi), np.cos(k * phi)
@@ -153,7 +153,7 @@ class Ramp:
 
 
 class CosineRamp(Ramp):
-    """Cosine ramp of seed 000, eqs. (2.1) and (2.5); the acceleration jumps at its start (train unloaded)."""
+    """Cosine ramp of Valve-train practical works (n.d.), eqs. (2.1) and (2.5); the acceleration jumps at its start (train unloaded)."""
 
     kind = "cosine"
 
@@ -163,7 +163,7 @@ class CosineRamp(Ramp):
 
 
 class ConstantVelocityRamp(Ramp):
-    """Constant-velocity ramp h = w' phi, length h0 / w' (spec/methods-seeds-002-004.md, section 2).
+    """Constant-velocity ramp h = w' phi, length h0 / w' (Shang Hanji (1988), section 2.2, as a ramp family).
 
     The velocity steps from 0 to w' at the start of the ramp, while the clearance is still open.
     """
@@ -187,11 +187,12 @@ class ConstantAccelerationRamp(Ramp):
 
     References
     ----------
-    spec/methods-seeds-002-004.md, section 2 (cited from CN103422923B as used for ramps).
+    A constant-acceleration and constant-velocity ramp as used in the Chinese patent CN 103422923 B
+    (abstract); the formulas are derived in this package.
 
     Examples
     --------
-    Section 5 of the same spec: h0 = 0.35 mm, alpha_r = 20 deg, f = 0.5 give v0 = 1.3369 mm/rad and a ramp
+    h0 = 0.35 mm, alpha_r = 20 deg, f = 0.5 give v0 = 1.3369 mm/rad and a ramp
     acceleration of 7.66 mm/rad^2.
 
     >>> r = ConstantAccelerationRamp(0.35, 1.33690, 0.5)

@@ -4,9 +4,9 @@ The follower rises from the base circle with the law's lift ``h``; the valve sta
 seat until ``h`` reaches the clearance ``h0`` and then moves with ``i_k (h - h0)``.  With a
 ramp (Kurz, constant acceleration, combined, ramped polydyne) the clearance is taken up at
 the ramp's small constant velocity; without one it is taken up on the flank, and the valve
-leaves and meets its seat at the flank's velocity there (seed 000, work 2: the ramp exists
-to limit exactly that velocity; spec/methods-seeds-002-004.md, section 2: seating velocity
-about 0.3-0.5 m/s at rated speed).
+leaves and meets its seat at the flank's velocity there (Valve-train practical works (n.d.), work 2: the ramp exists
+to limit exactly that velocity; the working
+guidance for the seating velocity is about 0.3-0.5 m/s at rated speed).
 """
 
 import numpy as np

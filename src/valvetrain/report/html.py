@@ -1,6 +1,7 @@
 """The HTML design report (Jinja2 template ``templates/report.html``): one file, its figures embedded."""
 
 import base64
+from html import unescape
 
 from jinja2 import Environment, PackageLoader, select_autoescape
 import numpy as np
@@ -8,7 +9,8 @@ import numpy as np
 from .. import __version__
 from ..design.results import record
 from ..tables import lift_table_columns
-from .i18n import SOURCES, TEXT
+from ..bibliography import WORKS, cited_in
+from .i18n import TEXT
 
 TABLE_COLUMNS = ["cam_deg", "crank_deg", "segment", "tappet_lift_mm", "tappet_velocity_m_s",
                  "tappet_acceleration_m_s2", "valve_lift_mm", "curtain_area_mm2", "time_area_mm2_s", "rho_mm"]
@@ -137,11 +139,15 @@ def render_report(results, plots, lang="en", folder=None):
     if results.two_stroke is not None:
         ports = {"inputs": [(k, v) for k, v in _flatten(spec["two_stroke"]) if not k.startswith("ports.")],
                  "plots": plots["two_stroke"], "ports": results.two_stroke.summary["ports"]}
-    return env.get_template("report.html").render(
+    context = dict(
         t=TEXT[lang], lang=lang, version=__version__, engine=record(results.engine), engine_inputs=_flatten(spec["engine"]),
-        valves=valves, warnings=results.warnings, accepted=results.accepted, first_page=first_page, timing=plots.get("(timing)"), sources=SOURCES, table_columns=TABLE_COLUMNS,
+        valves=valves, warnings=results.warnings, accepted=results.accepted, first_page=first_page, timing=plots.get("(timing)"), table_columns=TABLE_COLUMNS,
         step=REPORT_STEP_DEG, output=_flatten(spec["output"]), crank=crank, ports=ports,
     )
+    template = env.get_template("report.html")
+    # the bibliography lists the works the report actually cites: found by their short form in a first rendering
+    cited = cited_in(unescape(template.render(sources=[], **context)))
+    return template.render(sources=[(WORKS[k].short, WORKS[k].reference()) for k in cited], **context)
 
 
 def _image(folder, name):

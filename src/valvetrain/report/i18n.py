@@ -29,7 +29,7 @@ TEXT = {
         "seed_check": "Closed forms of the source beside the values found on the analytic law",
         "closed_form": "closed form", "profile": "along the profile",
         "residuals": "Residuals of the continuity system",
-        "measured": "Measured lift table (seed 002, sections 5.1-5.3; angles and lifts as in the table)",
+        "measured": "Measured lift table (Shang Hanji (1988), sections 5.1-5.3; angles and lifts as in the table)",
         "checking_height": "checking height, mm", "duration": "duration, deg", "fit": "fit",
         "rms_residual": "rms residual, mm", "max_residual": "max residual, mm",
         "jerk_sign_changes": "sign changes of the jerk",
@@ -37,6 +37,8 @@ TEXT = {
         "plots": "Plots",
         "files": "Files",
         "sources": "Sources",
+        "corrections_note": "Misprints of these works and what valvetrain uses instead: the corrections notes shipped "
+                            "with the package (valvetrain/data/corrections.md), cited as \"corrections note N\".",
         "cam_deg": "camshaft angle from the nose, deg",
         "crank_deg": "crank angle from gas-exchange TDC, deg",
         "lift": "lift, mm", "tappet_lift": "tappet lift", "valve_lift": "valve lift",
@@ -56,7 +58,7 @@ TEXT = {
         "no_spring_passes": "No spring of the wire series passes every check; the one shown has the best worst margin.",
         "crank_chapter": "Crank mechanism: kinematics, forces and torque", "two_stroke_chapter": "Two-stroke ports",
         "specific_force": "specific force, MPa", "cycle_deg": "crank angle of the cycle, deg",
-        "crank_forces": "specific forces on the piston pin (as Fig. 2.6 of seed 001)", "cylinder": "cylinder",
+        "crank_forces": "specific forces on the piston pin (as in Power units manual (n.d.), Fig. 2.6)", "cylinder": "cylinder",
         "total": "total", "mean": "mean", "engine_deg": "engine angle (cycle angle of cylinder 1), deg",
         "torque": "torque, N m", "pin_tangential": "tangential load on the crank pin, kN",
         "pin_radial": "radial load on the crank pin (outwards +), kN", "pin_polar": "polar diagram of the crank-pin load",
@@ -68,7 +70,7 @@ TEXT = {
             "rms odd part (true asymmetry) after the correction, mm", "table_angle": "table angles",
             "table_lift_at": "table lift at", "table_zero": "table angles from", "opens_deg_at_0.1mm": "opens at 0.1 mm valve lift, crank deg",
             "closes_deg_at_0.1mm": "closes at 0.1 mm valve lift, crank deg", "source": "source",
-            "V1_m_s": "V' throat velocity, m/s (seed 000, eq. 1.1)",
+            "V1_m_s": "V' throat velocity, m/s (Valve-train practical works (n.d.), eq. 1.1)",
             "V2_m_s": "V'' curtain velocity at full lift, m/s (eq. 1.2)",
             "V3_m_s": "V''' time-area velocity, m/s (eq. 1.4)",
             "throat_area_mm2": "throat area f_g, mm²",
@@ -77,7 +79,7 @@ TEXT = {
             "time_area_mm2_s": "time-area over the valve's stroke, mm²·s (eq. 4.1)",
             "time_area_open_mm2_s": "time-area over the whole opening, mm²·s",
             "mean_charge_velocity_m_s": "mean charge velocity v_vp, m/s (eq. 4.3)",
-            "fullness": "fullness coefficient (seed 002, eq. 2.3)",
+            "fullness": "fullness coefficient (Shang Hanji (1988), eq. 2.3)",
             "stroke_crank_deg": "stroke of the valve, crank deg",
             "max_velocity_m_s": "max tappet velocity, m/s",
             "max_acceleration_m_s2": "max tappet acceleration, m/s²",
@@ -124,7 +126,7 @@ TEXT = {
         "seed_check": "Формулы источника рядом со значениями, найденными по аналитическому закону",
         "closed_form": "по формуле", "profile": "по профилю",
         "residuals": "Невязки системы условий сопряжения",
-        "measured": "Измеренная таблица подъёма (seed 002, разделы 5.1-5.3; углы и подъёмы как в таблице)",
+        "measured": "Измеренная таблица подъёма (Shang Hanji (1988), разделы 5.1-5.3; углы и подъёмы как в таблице)",
         "checking_height": "контрольная высота, мм", "duration": "продолжительность, град", "fit": "аппроксимация",
         "rms_residual": "СКО отклонения, мм", "max_residual": "наибольшее отклонение, мм",
         "jerk_sign_changes": "перемены знака третьей производной",
@@ -132,6 +134,8 @@ TEXT = {
         "plots": "Графики",
         "files": "Файлы",
         "sources": "Источники",
+        "corrections_note": "Опечатки этих работ и то, что valvetrain использует вместо них: заметки об исправлениях "
+                            "в составе пакета (valvetrain/data/corrections.md), ссылки вида «corrections note N».",
         "cam_deg": "угол поворота распредвала от вершины, °",
         "crank_deg": "угол поворота коленвала от ВМТ газообмена, °",
         "lift": "подъём, мм", "tappet_lift": "подъём толкателя", "valve_lift": "подъём клапана",
@@ -229,14 +233,3 @@ CHECK_TEXT = {
 
 for _lang, _texts in CHECK_TEXT.items():
     TEXT[_lang].update(_texts)
-
-SOURCES = [
-    ("seed 000", "Practical works 1-8 on valve-train design (Russian manual), with the appendix example "
-                 "of a Kurz cam; formulas as reconstructed in spec/valvetrain-works-1-8.md"),
-    ("seed 002", "Shang Hanji, Valve cam mechanisms of internal-combustion engines: design and calculation, "
-                 "Fudan University Press, 1988, section 2.1 (spec/methods-seeds-002-004.md, section 1)"),
-    ("seed 001", "Course-work manual \"Power units\": piston kinematics and crank-mechanism dynamics "
-                 "(spec/crank-kinematics-dynamics.md)"),
-    ("seed 004", "Dynamic synthesis of shock-free cams for forced transport diesels (2019): pressure-angle "
-                 "limit 30 deg"),
-]

@@ -107,7 +107,7 @@ def curvature_figure(valve, t):
 
 
 def spring_figure(valve, t):
-    """Spring characteristic as Fig. 5.1 of seed 000: inertia force, required force and the chosen lines
+    """Spring characteristic as Fig. 5.1 of Valve-train practical works (n.d.): inertia force, required force and the chosen lines
     against valve lift."""
     drive = valve.drive
     y = drive.lift / MM
@@ -134,7 +134,7 @@ def spring_figure(valve, t):
 
 
 def crank_forces_figure(crank, t):
-    """Specific forces against the crank angle, as Fig. 2.6 of seed 001: gas, inertia and total; N, S, K, T."""
+    """Specific forces against the crank angle, as Fig. 2.6 of Power units manual (n.d.): gas, inertia and total; N, S, K, T."""
     c = crank.columns
     x = rad_to_deg(crank.phi)
     fig = Figure(figsize=(9, 8))
@@ -156,7 +156,7 @@ def crank_forces_figure(crank, t):
 
 
 def crank_torque_figure(crank, t):
-    """Torque of every cylinder and the total over one cycle (Fig. 2.7 of seed 001)."""
+    """Torque of every cylinder and the total over one cycle (Fig. 2.7 of Power units manual (n.d.))."""
     x = rad_to_deg(crank.psi)
     fig = Figure(figsize=(9, 5))
     ax = fig.subplots()
@@ -195,7 +195,7 @@ def crank_pin_figure(crank, t):
 
 
 def two_stroke_ports_figure(ports, t):
-    """Port areas against the crank angle (seed 000, Fig. 8.1 b)."""
+    """Port areas against the crank angle (Valve-train practical works (n.d.), Fig. 8.1 b)."""
     fig = Figure(figsize=(8, 4.5))
     ax = fig.subplots()
     x = rad_to_deg(ports.phi)
@@ -211,7 +211,7 @@ def two_stroke_ports_figure(ports, t):
 
 
 def two_stroke_speed_figure(ports, t):
-    """Time-area of each port against the crank speed, Z = f(n) (seed 000, work 8)."""
+    """Time-area of each port against the crank speed, Z = f(n) (Valve-train practical works (n.d.), work 8)."""
     fig = Figure(figsize=(8, 4.5))
     ax = fig.subplots()
     for name, z in ports.time_areas.items():

@@ -42,7 +42,7 @@ def register(model):
 
 def main_half_angle(valve, strokes):
     """phi_p0 [rad camshaft]: half the main event (ramps excluded), (opens + pi + closes)/2 crank angle on the
-    camshaft (seed 000, work 2, corrected phi_p0 formula, E1); ``valve`` is an SI view."""
+    camshaft (Valve-train practical works (n.d.), work 2, corrected phi_p0 formula, corrections note 1); ``valve`` is an SI view."""
     return (valve.opens + np.pi + valve.closes) / 2.0 * cam_per_crank(strokes)
 
 
@@ -70,7 +70,7 @@ def layout(valve):
 
 
 def train_mass(valve, spring_mass):
-    """Reduced mass of a valve's train at the valve [kg] and how it was obtained (SI view; seed 000, eq. 5.2 or the
+    """Reduced mass of a valve's train at the valve [kg] and how it was obtained (SI view; Valve-train practical works (n.d.), eq. 5.2 or the
     specific mass of work 5); ``spring_mass`` [kg] where the part masses leave it to the designed spring."""
     d = valve.drive
     return masses.reduced_mass(float(flow.circle_area(valve.throat_diameter)), layout(valve), valve.rocker_ratio,
@@ -115,7 +115,7 @@ class _CamBase(_Model):
 
     def problems(self, at, valve, engine):
         """Cross-checks of the cam's keys against the valve's timing and clearance, one message each ([] if none);
-        ``at`` is the key path of the valve, ``valve`` and ``engine`` the spec sections."""
+        ``at`` is the key path of the valve, ``valve`` and ``engine`` the specification's sections."""
         return []
 
     def nose_crank(self, valve, law):
@@ -210,7 +210,7 @@ class _SegmentAngles(_ClosingSide):
     """Kurz and constant-acceleration cams: Phi1 + Phi2 + Phi3 = phi_p0, Phi3 may be left to the remainder."""
 
     def third_angle_deg(self, valve, strokes):
-        """Phi3 [cam deg]: given, or the remainder phi_p0 - Phi1 - Phi2 (seed 000, eq. 2.2)."""
+        """Phi3 [cam deg]: given, or the remainder phi_p0 - Phi1 - Phi2 (Valve-train practical works (n.d.), eq. 2.2)."""
         if self.phi3_deg is not None:
             return self.phi3_deg
         return main_half_angle_deg(valve, strokes) - self.phi1_deg - self.phi2_deg
@@ -234,13 +234,13 @@ class _SegmentAngles(_ClosingSide):
                        f"in the half-angle phi_p0 = {half:g} cam deg; allowed phi1_deg + phi2_deg < {half:g}")
         elif abs(total - half) > 1e-6:
             out.append(f"{at}.cam: phi1_deg + phi2_deg + phi3_deg = {total:g} cam deg must equal the half-angle "
-                       f"phi_p0 = (opens_deg + 180 + closes_deg)/2 crank deg = {half:g} cam deg (seed 000, eq. 2.2)")
+                       f"phi_p0 = (opens_deg + 180 + closes_deg)/2 crank deg = {half:g} cam deg (Valve-train practical works (n.d.), eq. 2.2)")
         return out
 
 
 @register
 class KurzCam(_SegmentAngles, _CamBase, _RampKeys):
-    """[valves.NAME.cam] with law = "kurz" (seed 000, work 2)."""
+    """[valves.NAME.cam] with law = "kurz" (Valve-train practical works (n.d.), work 2)."""
 
     law: Literal["kurz"]
     ramp_end_velocity_mm_per_deg: RAMP_VELOCITY
@@ -260,7 +260,7 @@ class KurzCam(_SegmentAngles, _CamBase, _RampKeys):
         return []
 
     def records(self, law, valve, engine, nose):
-        """The appendix formulas of seed 000 (2.35)-(2.39) beside the exact extremes, and the residuals of the
+        """The appendix formulas of Valve-train practical works (n.d.) (2.35)-(2.39) beside the exact extremes, and the residuals of the
         junction conditions (2.10)-(2.20), for a symmetric cam."""
         if self.closing is not None:
             return {}, []
@@ -273,7 +273,7 @@ class KurzCam(_SegmentAngles, _CamBase, _RampKeys):
 
 @register
 class PolydyneCam(_CamBase, _RampKeys):
-    """[valves.NAME.cam] with law = "polydyne" (seed 000, work 3)."""
+    """[valves.NAME.cam] with law = "polydyne" (Valve-train practical works (n.d.), work 3)."""
 
     law: Literal["polydyne"]
     p: _bounded(3.0, 200.0, low_open=False)
@@ -322,7 +322,7 @@ def _rampless_or_ramped(model, valve, engine, ramped=False):
 
 @register
 class PolynomialCam(_CamBase, _RampKeys):
-    """[valves.NAME.cam] with law = "polynomial": any exponent set (seed 002 section 2.6; spec section 7)."""
+    """[valves.NAME.cam] with law = "polynomial": any exponent set (Shang Hanji (1988), section 2.6; the junction with a ramp derived in this package)."""
 
     law: Literal["polynomial"]
     exponents: Annotated[list[_bounded(2.0, 1000.0, low_open=False)], Field(min_length=2, max_length=20)]
@@ -351,7 +351,7 @@ class PolynomialCam(_CamBase, _RampKeys):
 
 @register
 class ConstantAccelerationCam(_SegmentAngles, _CamBase, _RampKeys):
-    """[valves.NAME.cam] with law = "constant_acceleration" (seed 002 section 2.4; spec section 5)."""
+    """[valves.NAME.cam] with law = "constant_acceleration" (Shang Hanji (1988), section 2.4; reconstructed)."""
 
     law: Literal["constant_acceleration"]
     ramp_end_velocity_mm_per_deg: RAMP_VELOCITY
@@ -382,7 +382,7 @@ class Ratio(_Model):
 
 @register
 class CombinedCam(_ClosingSide, _CamBase, _RampKeys):
-    """[valves.NAME.cam] with law = "combined": acceleration segments with continuous acceleration (spec section 6)."""
+    """[valves.NAME.cam] with law = "combined": acceleration segments with continuous acceleration (Shang Hanji (1988), section 2.5: the general mechanism)."""
 
     law: Literal["combined"]
     ramp_end_velocity_mm_per_deg: RAMP_VELOCITY
@@ -416,7 +416,7 @@ class CombinedCam(_ClosingSide, _CamBase, _RampKeys):
 
 @register
 class DynamicCam(_CamBase, _RampKeys):
-    """[valves.NAME.cam] with law = "dynamic": the multi-term dynamic (Dudley-Stoddart polydyne) cam (spec section 8).
+    """[valves.NAME.cam] with law = "dynamic": the multi-term dynamic (Dudley-Stoddart polydyne) cam (Shang Hanji (1988), section 4.1; Dudley (1948); Stoddart (1953)).
 
     Its ramp ends where the drive force reaches the preload; its design speed defaults to the rated speed and its
     mass is the reduced mass at the valve without the spring (unless the masses give ``spring_kg``)."""
@@ -443,7 +443,7 @@ class DynamicCam(_CamBase, _RampKeys):
 @register
 class HarmonicCam(_CamBase):
     """[valves.NAME.cam] with law = "harmonic": an N-harmonic cosine series fitted to the law of
-    [valves.NAME.cam.target] (spec section 9); the target inherits base_radius_mm, follower and roller_radius_mm."""
+    [valves.NAME.cam.target] (Shang Hanji (1988), section 4.2, reconstructed); the target inherits base_radius_mm, follower and roller_radius_mm."""
 
     law: Literal["harmonic"]
     harmonics: Annotated[int, Field(ge=2, le=400)]
@@ -483,7 +483,7 @@ class HarmonicCam(_CamBase):
 
 @register
 class ThreeArcCam(_CamBase):
-    """[valves.NAME.cam] with law = "three_arc": convex cam of two arcs (spec section 3); no ramp."""
+    """[valves.NAME.cam] with law = "three_arc": convex cam of two arcs (Kolchin and Demidov (1980)); no ramp."""
 
     law: Literal["three_arc"]
     nose_radius_mm: Optional[Length(0.5, 500.0, low_open=False)] = None
@@ -510,7 +510,7 @@ class ThreeArcCam(_CamBase):
 
 @register
 class TangentCam(_CamBase):
-    """[valves.NAME.cam] with law = "tangent": straight flanks and a nose arc for a roller follower (spec section 4)."""
+    """[valves.NAME.cam] with law = "tangent": straight flanks and a nose arc for a roller follower (Kolchin and Demidov (1980))."""
 
     law: Literal["tangent"]
 
@@ -530,7 +530,7 @@ class TangentCam(_CamBase):
 
 @register
 class TableCam(_CamBase):
-    """[valves.NAME.cam] with law = "table": a measured lift table (seed 002 sections 5.1-5.3; spec sections 9-11).
+    """[valves.NAME.cam] with law = "table": a measured lift table (Shang Hanji (1988), sections 5.1-5.3, reconstructed).
 
     A table of valve lift is divided by the rocker ratio; a table of tappet lift is the cam's lift with its ramps,
     and the valve moves once the clearance is taken up.  The table sets the lift and the timing: a ``max_lift_mm``
@@ -588,7 +588,7 @@ class TableCam(_CamBase):
         return 2.0 * law.centre
 
     def records(self, law, valve, engine, nose):
-        """The measured-table record of results.json and its timing checks (seed 002, sections 5.1-5.3)."""
+        """The measured-table record of results.json and its timing checks (Shang Hanji (1988), sections 5.1-5.3)."""
         to_table = 2.0 if self.table_angle == "crank" else 1.0        # table angle units per cam angle
         at_valve = valve.rocker_ratio if self.table_lift_at == "valve" else 1.0
         durations = [{"height_mm": h, "duration_deg": _finite(rad_to_deg(law.duration(h * MM / at_valve)) * to_table)}

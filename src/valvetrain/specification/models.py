@@ -65,7 +65,7 @@ class Engine(_Model):
 
 
 class Masses(_Model):
-    """[valves.NAME.drive.masses]: part masses for the reduced mass (seed 000, eq. 5.2)."""
+    """[valves.NAME.drive.masses]: part masses for the reduced mass (Valve-train practical works (n.d.), eq. 5.2)."""
 
     valve_kg: _bounded(0.001, 50.0, "kg", low_open=False)
     retainer_kg: _bounded(0.0, 20.0, low_open=False) = 0.0
@@ -77,7 +77,7 @@ class Masses(_Model):
 
 
 class Drive(_Model):
-    """[valves.NAME.drive]: drive layout, masses and spring reserve (seed 000, works 5 and 7)."""
+    """[valves.NAME.drive]: drive layout, masses and spring reserve (Valve-train practical works (n.d.), works 5 and 7)."""
 
     layout: Optional[Literal["direct", "rocker", "pushrod"]] = None
     spring_reserve: _bounded(1.0, 5.0) = 1.8
@@ -96,7 +96,7 @@ class Drive(_Model):
 
 
 class Spring(_Model):
-    """[valves.NAME.spring]: spring count, material, search ranges and design limits (seed 000, works 5-6).
+    """[valves.NAME.spring]: spring count, material, search ranges and design limits (Valve-train practical works (n.d.), works 5-6).
 
     ``material`` names a wire grade of :data:`valvetrain.spring_materials.GRADES` (or a list of
     them, all searched); the property keys left out come from the grade, a key given replaces
@@ -151,7 +151,7 @@ class Spring(_Model):
 
 
 class Parts(_Model):
-    """[valves.NAME.parts]: dimensions of the loaded parts (seed 000, work 7); a check runs when its keys are given."""
+    """[valves.NAME.parts]: dimensions of the loaded parts (Valve-train practical works (n.d.), work 7); a check runs when its keys are given."""
 
     contact_modulus_MPa: _bounded(1e3, 1e6, "MPa") = 2.1e5
     head_diameter_mm: Optional[Length(2.0, 1000.0, low_open=False)] = None
@@ -224,7 +224,7 @@ class Valve(_Model):
 
 
 class Gas(_Model):
-    """[gas]: absolute pressures for the closed-valve spring check and the cam load (seed 000, works 5, 7)."""
+    """[gas]: absolute pressures for the closed-valve spring check and the cam load (Valve-train practical works (n.d.), works 5, 7)."""
 
     exhaust_back_pressure_MPa: _bounded(0.001, 10.0, "MPa", low_open=False) = 0.106
     cylinder_intake_pressure_MPa: _bounded(0.001, 10.0, "MPa", low_open=False) = 0.085
@@ -247,7 +247,7 @@ class Cycle(_Model):
 
 
 class CrankSpec(_Model):
-    """[crank]: the crank mechanism (seed 001).  bore, stroke, rod length and speed default to [engine]."""
+    """[crank]: the crank mechanism (Power units manual (n.d.)).  bore, stroke, rod length and speed default to [engine]."""
 
     bore_mm: Optional[Length(5.0, 2000.0, low_open=False)] = None
     stroke_mm: Optional[Length(5.0, 4000.0, low_open=False)] = None
@@ -285,7 +285,7 @@ class CrankSpec(_Model):
             if all(given):
                 problems.append(f"give {part}_kg or specific_{part}_kg_m2, not both")
             elif not any(given):
-                problems.append(f"{part}_kg or specific_{part}_kg_m2 is required (seed 001, eq. 2.6 and Table 2.1)")
+                problems.append(f"{part}_kg or specific_{part}_kg_m2 is required (Power units manual (n.d.), eq. 2.6 and Table 2.1)")
         if self.pressure_file is None and self.cycle is None:
             problems.append("the cylinder pressure is needed: give pressure_file (crank_deg,pressure_MPa or "
                             "volume_cm3,pressure_MPa) or a [crank.cycle] table with heat_input_J")
@@ -310,14 +310,14 @@ class Port(_Model):
         if self.kind == "inlet":
             if self.lower_edge_mm is None or self.height_mm is None:
                 raise ValueError("an inlet port needs lower_edge_mm (below the crown at TDC) and height_mm "
-                                 "(seed 000, eq. 8.4)")
+                                 "(Valve-train practical works (n.d.), eq. 8.4)")
         elif (self.height_mm is None) == (self.opens_before_bdc_deg is None):
             raise ValueError("give height_mm or opens_before_bdc_deg (one of them) for an exhaust or transfer port")
         return self
 
 
 class TwoStroke(_Model):
-    """[two_stroke]: port timing of a piston-ported two-stroke (seed 000, work 8)."""
+    """[two_stroke]: port timing of a piston-ported two-stroke (Valve-train practical works (n.d.), work 8)."""
 
     speed_rpm: Optional[_bounded(10.0, 30000.0, "rpm", low_open=False)] = None
     speed_range_rpm: Optional[Pair(10.0, 30000.0, "rpm")] = None

@@ -45,11 +45,11 @@ def _valve_problems(name, v, engine):
         out.append(f"{at}.spring.mean_diameter_ratio = {list(ratio)} with throat_diameter_mm = "
                    f"{v.throat_diameter_mm:g} gives spring mean diameters {ratio[0] * v.throat_diameter_mm:g}..."
                    f"{ratio[1] * v.throat_diameter_mm:g} mm; wire of {wires[0]:g}...{wires[1]:g} mm makes "
-                   f"{low:g}...{high:g} mm (index D/d = 3...12, seed 000, work 6)")
+                   f"{low:g}...{high:g} mm (index D/d = 3...12, Valve-train practical works (n.d.), work 6)")
     installed = v.spring.installed_length_mm
     if installed is not None and v.max_lift_mm is not None and installed[1] <= v.max_lift_mm:
         out.append(f"{at}.spring.installed_length_mm = {list(installed)}: the spring must be longer than the valve "
-                   f"lift max_lift_mm = {v.max_lift_mm:g} (it is compressed by it, seed 000, eq. 6.5)")
+                   f"lift max_lift_mm = {v.max_lift_mm:g} (it is compressed by it, Valve-train practical works (n.d.), eq. 6.5)")
     if v.drive.layout == "direct" and v.rocker_ratio != 1.0:
         out.append(f"{at}.drive.layout = \"direct\" needs rocker_ratio = 1 (got {v.rocker_ratio:g})")
     if v.piston_gap_tdc_mm is not None and engine.rod_length_mm is None:
@@ -207,7 +207,7 @@ def load_spec(path):
 
 
 def example_text():
-    """The built-in example specification (the engine of seed 000's appendix), as TOML text."""
+    """The built-in example specification (the engine of the appendix of Valve-train practical works (n.d.)), as TOML text."""
     return files("valvetrain").joinpath("data/example.toml").read_text(encoding="utf-8")
 
 

@@ -1,0 +1,214 @@
+"""The works this package cites, once: a short key for each, the full reference and a short in-text form.
+
+In code a source is written ``cite("shang1988", "eq. (2.6)")`` -> ``"Shang Hanji (1988), eq. (2.6)"``;
+:func:`entry` gives the full reference, as printed at the end of the design report.
+
+Four of the Russian and Ukrainian documents the package was built from carry no title page in the copies
+used; they are cited by a descriptive title in the original language with an English translation, and
+"publisher and year not given in the copy used" where that is so.  Nothing here is guessed.
+
+Misprints of these works and what the package uses instead are explained in the corrections notes
+shipped with the package (:func:`corrections_text`, ``valvetrain/data/corrections.md``).
+
+>>> cite("shang1988", "eq. (2.6)")
+'Shang Hanji (1988), eq. (2.6)'
+>>> entry("hertz1882").startswith("Hertz, H.")
+True
+"""
+
+from dataclasses import dataclass
+from importlib import resources
+
+UNKNOWN = "publisher and year not given in the copy used"
+"""Said of a work whose copy has no title page."""
+
+NO_AUTHORS = "authors and institution not given in the copy used"
+"""The authors of a work whose copy names none."""
+
+
+@dataclass(frozen=True)
+class Work:
+    """One cited work.
+
+    Attributes
+    ----------
+    short : str
+        The in-text form, e.g. ``"Shang Hanji (1988)"``.
+    authors : str
+        Authors or editor, or the institution; :data:`NO_AUTHORS` where the copy used names none.
+    title : str
+        Title in the original language (with an English translation in brackets where it is not English).
+    kind : str
+        Book, article, teaching manual, standard, ...
+    publisher : str
+        Publisher, journal or series (with volume and pages where known).
+    place : str
+    year : str
+        Year, or :data:`UNKNOWN`.
+    isbn : str
+    url : str
+    language : str
+    note : str
+        What of the work is used, or what the copy used lacks.
+    """
+
+    short: str
+    authors: str
+    title: str
+    kind: str
+    publisher: str = ""
+    place: str = ""
+    year: str = UNKNOWN
+    isbn: str = ""
+    url: str = ""
+    language: str = "English"
+    note: str = ""
+
+    def reference(self):
+        """The full reference as one line of text."""
+        head = self.title if self.authors == NO_AUTHORS else f"{self.authors}, {self.title}"
+        details = ", ".join(p for p in (self.kind[:1].upper() + self.kind[1:],
+                                        NO_AUTHORS if self.authors == NO_AUTHORS else "",
+                                        self.publisher, self.place, self.year) if p)
+        parts = [head, details, f"ISBN {self.isbn}" if self.isbn else "", self.url, f"In {self.language}", self.note]
+        return " ".join(p if p.endswith(".") else p + "." for p in parts if p)
+
+
+WORKS = {
+    "shang1988": Work(
+        short="Shang Hanji (1988)",
+        authors="Shang Hanji (尚汉冀)",
+        title="内燃机配气凸轮机构——设计与计算 [Valve cam mechanisms of internal-combustion engines: "
+              "design and calculation]",
+        kind="book", publisher="Fudan University Press (复旦大学出版社)", place="Shanghai", year="1988",
+        isbn="7-309-00035-8", language="Chinese",
+        note="Chapter 1 and section 2.1 (design criteria) are used; further sections named by the book's "
+             "contents are reconstructed by this package, as their docstrings say."),
+    "vt_works": Work(
+        short="Valve-train practical works (n.d.)",
+        authors=NO_AUTHORS,
+        title="Практические работы № 1-8 по расчёту газораспределительного механизма [Practical works 1-8 "
+              "on the design of the valve train of an internal-combustion engine] (descriptive title: the "
+              "copy used has no title page)",
+        kind="university teaching manual, practical works 1-8 with an appendix (a Kurz cam for the valve "
+             "train of a petrol engine, Table P1)",
+        year=UNKNOWN, language="Russian",
+        note="Works: (1) valve flow sections, (2) Kurz shock-free cam, (3) polydyne cam, (4) time-area, "
+             "(5) spring characteristic, (6) spring design, (7) strength of the drive parts, (8) two-stroke "
+             "ports."),
+    "power_units": Work(
+        short="Power units manual (n.d.)",
+        authors=NO_AUTHORS,
+        title="Методические указания к расчётно-графической работе по дисциплине «Силовые агрегаты»: "
+              "кинематика поршня и динамика кривошипно-шатунного механизма [Course-work manual for the "
+              "course \"Power units\": piston kinematics and crank-mechanism dynamics] (descriptive title: "
+              "the copy used has no title page)",
+        kind="university teaching manual (course work)", year=UNKNOWN, language="Russian",
+        note="Its worked example (section 2.6) is not in the copy used."),
+    "valve_dynamics_article": Work(
+        short="Valve-train dynamics article (n.d.)",
+        authors=NO_AUTHORS,
+        title="Исследование динамики МГР с кулачками различного профиля [A study of the dynamics of the "
+              "valve train with cams of various profiles: three-arc, Kurz and polydyne] (section title; the "
+              "copy used has no title page)",
+        kind="journal article", year=UNKNOWN, language="Russian"),
+    "ukrsurt2019": Work(
+        short="UkrSURT Proceedings (2019)",
+        authors=NO_AUTHORS,
+        title="Динамічний синтез безударних профілів кулачків привода клапанів форсованих транспортних "
+              "дизелів [Dynamic synthesis of shock-free cam profiles of the valve drive of forced transport "
+              "diesels] (descriptive title, from the article's abstract)",
+        kind="journal article",
+        publisher="Збірник наукових праць Українського державного університету залізничного транспорту "
+                  "[Collected scientific works of the Ukrainian State University of Railway Transport], "
+                  "issue 184, p. 28 ff.",
+        place="Kharkiv", year="2019", language="Ukrainian",
+        note="Example: the ЧН26/27 (D80) transport diesel."),
+    "kolchin1980": Work(
+        short="Kolchin and Demidov (1980)",
+        authors="Kolchin, A. I.; Demidov, V. P. (Колчин А. И., Демидов В. П.)",
+        title="Расчёт автомобильных и тракторных двигателей [Design calculation of automotive and tractor "
+              "engines], 2nd ed.",
+        kind="textbook", publisher="Vysshaya shkola (Высшая школа)", place="Moscow", year="1980",
+        language="Russian"),
+    "rothbart2004": Work(
+        short="Rothbart (2004)",
+        authors="Rothbart, H. A. (ed.)",
+        title="Cam Design Handbook", kind="book", publisher="McGraw-Hill", place="New York", year="2004",
+        isbn="0-07-143328-7"),
+    "dudley1948": Work(
+        short="Dudley (1948)",
+        authors="Dudley, W. M.",
+        title="New methods in valve cam design", kind="journal article",
+        publisher="SAE Quarterly Transactions, vol. 2, no. 1, pp. 19-33", year="1948"),
+    "stoddart1953": Work(
+        short="Stoddart (1953)",
+        authors="Stoddart, D. A.",
+        title="Polydyne cam design", kind="journal article (in three parts)",
+        publisher="Machine Design, vol. 25", year="1953"),
+    "wiebe1970": Work(
+        short="Wiebe (1970)",
+        authors="Vibe (Wiebe), I. I.",
+        title="Brennverlauf und Kreisprozeß von Verbrennungsmotoren", kind="book",
+        publisher="VEB Verlag Technik", place="Berlin", year="1970", language="German"),
+    "hertz1882": Work(
+        short="Hertz (1882)",
+        authors="Hertz, H.",
+        title="Über die Berührung fester elastischer Körper", kind="journal article",
+        publisher="Journal für die reine und angewandte Mathematik, vol. 92, pp. 156-171", year="1882",
+        language="German"),
+    "wahl1944": Work(
+        short="Wahl (1944)",
+        authors="Wahl, A. M.",
+        title="Mechanical Springs", kind="book", publisher="Penton Publishing", place="Cleveland",
+        year="1944"),
+    "hairer1993": Work(
+        short="Hairer, Nørsett and Wanner (1993)",
+        authors="Hairer, E.; Nørsett, S. P.; Wanner, G.",
+        title="Solving Ordinary Differential Equations I: Nonstiff Problems, 2nd ed.", kind="book",
+        publisher="Springer", place="Berlin", year="1993"),
+    "dowell1971": Work(
+        short="Dowell and Jarratt (1971)",
+        authors="Dowell, M.; Jarratt, P.",
+        title="A modified regula falsi method for computing the root of an equation", kind="journal article",
+        publisher="BIT, vol. 11, pp. 168-174", year="1971"),
+    "shigley2011": Work(
+        short="Shigley's Mechanical Engineering Design, 9th ed. (2011)",
+        authors="Budynas, R. G.; Nisbett, J. K.",
+        title="Shigley's Mechanical Engineering Design, 9th ed.", kind="textbook", publisher="McGraw-Hill",
+        place="New York", year="2011"),
+    "en13906_1": Work(
+        short="EN 13906-1",
+        authors="CEN (European Committee for Standardization)",
+        title="EN 13906-1: Cylindrical helical springs made from round wire and bar - Calculation and design - "
+              "Part 1: Compression springs",
+        kind="standard", publisher="CEN", place="Brussels", year="2013"),
+    "en10270_2": Work(
+        short="EN 10270-2",
+        authors="CEN (European Committee for Standardization)",
+        title="EN 10270-2: Steel wire for mechanical springs - Part 2: Oil hardened and tempered spring "
+              "steel wire",
+        kind="standard", publisher="CEN", place="Brussels", year="2011"),
+}
+"""Every cited work by its key."""
+
+
+def entry(key):
+    """The full reference of ``key`` (see :data:`WORKS`)."""
+    return WORKS[key].reference()
+
+
+def cite(key, where=""):
+    """A short in-text citation: ``cite("shang1988", "eq. (2.6)")`` -> ``"Shang Hanji (1988), eq. (2.6)"``."""
+    short = WORKS[key].short
+    return f"{short}, {where}" if where else short
+
+
+def cited_in(text):
+    """Keys of the works whose in-text form occurs in ``text``, in the order of :data:`WORKS`."""
+    return [key for key, work in WORKS.items() if work.short in text]
+
+
+def corrections_text():
+    """The corrections notes shipped with the package (Markdown): each misprint of a source and what is used."""
+    return resources.files("valvetrain").joinpath("data/corrections.md").read_text(encoding="utf-8")

@@ -1,0 +1,167 @@
+"""What users see cites real works: no internal tags (seed numbers, spec files, misprint tags) in the report,
+results.json, command-line help, public docstrings, README and examples; every citation is in the bibliography."""
+
+import importlib
+import inspect
+import io
+import json
+from pathlib import Path
+import pkgutil
+import re
+import tokenize
+
+from click.testing import CliRunner
+import pytest
+
+import valvetrain
+from valvetrain import bibliography
+from valvetrain.bibliography import NO_AUTHORS, UNKNOWN, WORKS, cite, cited_in, corrections_text, entry
+from valvetrain.cli import main
+
+ROOT = Path(__file__).parent.parent
+SRC = Path(valvetrain.__file__).parent
+EXAMPLES = ROOT / "examples"
+
+TAG = re.compile(r"[Ss]eed 0|\bSPEC\b|spec/|methods-seeds|valvetrain-works|spec section|\[(?:R|D|A|S|V|S\+D)\]"
+                 r"|\bE\d{1,2}\b")
+"""Internal tags; ``E12``-style misprint tags are told from moduli such as ``E1 E2 / (E1 + E2)`` by :func:`tags`."""
+
+CITATION = re.compile(r"[A-Z][\w'’.-]*(?: [\w'’.-]+){0,5} \((?:1[89]\d\d|20\d\d|n\.d\.)\)")
+"""A short in-text citation: words before ``(year)`` or ``(n.d.)``."""
+
+
+def tags(text):
+    """The internal tags in ``text`` (with some context), arithmetic with E1, E2, ... (moduli) excepted."""
+    found = []
+    for m in TAG.finditer(text):
+        around = text[max(m.start() - 3, 0):m.end() + 3]
+        if m.group().startswith("E") and (re.search(r"[+*/=^]", around) or re.search(r"E\d+\s+E\d", around)):
+            continue
+        found.append(text[max(m.start() - 40, 0):m.end() + 40])
+    return found
+
+
+def unknown_citations(text):
+    """Short citations in ``text`` that no work of the bibliography ends."""
+    shorts = [w.short for w in WORKS.values()]
+    return [m.group() for m in CITATION.finditer(text)
+            if not any(m.group().endswith(s) or s.endswith(m.group()) for s in shorts)]
+
+
+@pytest.fixture(scope="module")
+def runs(tmp_path_factory):
+    """The built-in example in English and Russian and a shipped example, each run to an output folder."""
+    out = {}
+    for label, (file, lang) in {"en": ([], "en"), "ru": ([], "ru"), "v8": ([str(EXAMPLES / "v8-crank.toml")], "en")}.items():
+        folder = tmp_path_factory.mktemp(label) / "design"
+        result = CliRunner().invoke(main, ["run", *file, "--out", str(folder), "--lang", lang])
+        assert result.exit_code == 0, result.output
+        out[label] = folder
+    return out
+
+
+@pytest.mark.parametrize("label", ["en", "ru", "v8"])
+def test_report_and_results_cite_real_works(runs, label):
+    html = (runs[label] / "report.html").read_text(encoding="utf-8")
+    results = (runs[label] / "results.json").read_text(encoding="utf-8")
+    assert tags(html) == [] and tags(results) == []
+    assert unknown_citations(html) == []
+    # the report ends with the full references of the works it cites, and only those
+    cited = cited_in(html)
+    assert "shang1988" in cited or label == "v8"
+    for key in cited:
+        assert entry(key).replace("'", "&#39;").replace('"', "&#34;") in html
+    for key in set(WORKS) - set(cited):
+        assert WORKS[key].reference().replace("'", "&#39;").replace('"', "&#34;") not in html
+    # every source of a warning is a citation of the bibliography
+    for w in json.loads(results)["warnings"]:
+        assert cited_in(w["source"]), w
+
+
+def test_command_line_help():
+    texts = [CliRunner().invoke(main, ["--help"]).output]
+    texts += [CliRunner().invoke(main, [name, "--help"]).output for name in main.commands]
+    assert len(texts) > 3
+    for text in texts:
+        assert tags(text) == [], text
+
+
+def _modules():
+    yield valvetrain
+    for info in pkgutil.walk_packages(valvetrain.__path__, "valvetrain."):
+        if not info.name.endswith("__main__"):
+            yield importlib.import_module(info.name)
+
+
+def _docstrings():
+    """Module, public object and public method docstrings reachable with pydoc."""
+    for module in _modules():
+        yield module.__name__, module.__doc__ or ""
+        for name, obj in vars(module).items():
+            if name.startswith("_") or getattr(obj, "__module__", None) != module.__name__:
+                continue
+            yield f"{module.__name__}.{name}", inspect.getdoc(obj) or ""
+            if inspect.isclass(obj):
+                for attr, member in vars(obj).items():
+                    if not attr.startswith("_") and (inspect.isfunction(member) or isinstance(member, property)):
+                        yield f"{module.__name__}.{name}.{attr}", inspect.getdoc(member) or ""
+
+
+def test_public_docstrings():
+    bad = {where: found for where, doc in _docstrings() if (found := tags(doc) + unknown_citations(doc))}
+    assert bad == {}
+
+
+def test_every_string_of_the_package():
+    """Every string literal of the package's code (docstrings, check sources, messages, attribute docstrings);
+    internal tags may stay in comments only."""
+    bad = {}
+    for path in SRC.rglob("*.py"):
+        tokens = tokenize.generate_tokens(io.StringIO(path.read_text(encoding="utf-8")).readline)
+        for tok in tokens:
+            if tok.type == tokenize.STRING and (found := tags(tok.string) + unknown_citations(tok.string)):
+                bad[f"{path.relative_to(SRC)}:{tok.start[0]}"] = found
+    assert bad == {}
+
+
+@pytest.mark.parametrize("path", [ROOT / "README.md", ROOT / "docs" / "corrections.md",
+                                  *sorted(EXAMPLES.rglob("*.*")), *sorted((SRC / "data").glob("*.*")),
+                                  *sorted((SRC / "report" / "templates").glob("*.html"))],
+                         ids=lambda p: str(p.relative_to(ROOT)))
+def test_shipped_texts(path):
+    text = path.read_text(encoding="utf-8")
+    assert tags(text) == []
+    assert unknown_citations(text) == []
+
+
+def test_bibliography_entries_are_complete():
+    for key, work in WORKS.items():
+        assert work.authors, key                   # authors, editor or institution, or NO_AUTHORS said so
+        assert work.title and work.kind and work.language, key
+        assert re.fullmatch(r"1[89]\d\d|20\d\d", work.year) or work.year == UNKNOWN, key
+        if work.authors == NO_AUTHORS:
+            assert "[" in work.title, key         # original-language title with a translation
+        assert work.short.endswith(f"({work.year})") or work.year == UNKNOWN or work.short.startswith("EN "), key
+    assert len({w.short for w in WORKS.values()}) == len(WORKS)
+    assert cite("shang1988", "eq. (2.6)") == "Shang Hanji (1988), eq. (2.6)"
+    assert "ISBN 7-309-00035-8" in entry("shang1988") and "Fudan University Press" in entry("shang1988")
+
+
+def test_every_cited_key_is_in_the_bibliography():
+    used = set()
+    for path in SRC.rglob("*.py"):
+        used |= set(re.findall(r"\b(?:cite|entry)\(\s*[\"'](\w+)[\"']", path.read_text(encoding="utf-8")))
+    assert used <= set(WORKS), used - set(WORKS)
+
+
+def test_corrections_notes_ship_with_the_package():
+    text = corrections_text()
+    numbers = [int(n) for n in re.findall(r"^(\d+)\. ", text, flags=re.M)]
+    assert numbers == list(range(1, len(numbers) + 1)) and len(numbers) >= 40
+    # every "corrections note N" the package cites exists
+    cited = set()
+    for path in [*SRC.rglob("*.py"), *SRC.rglob("*.html"), *SRC.rglob("*.toml"), ROOT / "README.md"]:
+        for a, b in re.findall(r"corrections notes? (\d+)(?:-(\d+))?", path.read_text(encoding="utf-8")):
+            cited |= set(range(int(a), int(b or a) + 1))
+    assert cited and cited <= set(numbers), cited - set(numbers)
+    assert bibliography.corrections_text is corrections_text
