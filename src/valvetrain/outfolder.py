@@ -174,16 +174,23 @@ def atomic_folder(out, inputs=(), force=False):
     out = check_out(out, inputs, force)
     out.parent.mkdir(parents=True, exist_ok=True)
     remove_stale_temps(out)
-    tmp = make_temp(out)
+    tmp = None
     try:
+        # a SIGINT is held while the folder is made and while it is swapped in and the old one removed, so that it
+        # finds ``tmp`` either unmade, or named here for the ``finally``, or gone
+        with sigint_deferred():
+            tmp = make_temp(out)
         yield tmp
         with sigint_deferred():
             (tmp / MARKER).write_text(marker_text(tmp), encoding="utf-8")
             check_out(out, inputs, force)
             swap(tmp, out)
-    finally:
-        with sigint_deferred():
             shutil.rmtree(tmp, ignore_errors=True)
+            tmp = None
+    finally:
+        if tmp is not None:
+            with sigint_deferred():
+                shutil.rmtree(tmp, ignore_errors=True)
 
 
 def temp_name(out):
