@@ -29,7 +29,7 @@ def main():
         profile = profile_stage(cam, valve, output)
         valve_checks(cam, flow, profile, valve, engine, (valve.opens, valve.closes))
         t1 = time.perf_counter()
-        drive_stage(valve.section, gas.section, cam.law, cam.cam_speed, cam.heel_radius, cam.roller_radius)
+        drive_stage(valve, gas, cam)
         t2 = time.perf_counter()
         design_valve("intake", valve, engine, gas, output)
         t3 = time.perf_counter()

@@ -22,7 +22,7 @@ from ..numerics import extremum
 from ..specification import SpecError
 from ..springs import NoSpringFits
 from ..units import DEG, MM
-from .drive import drive_stage
+from .drive import drive_record, drive_stage
 from .results import quantity, record
 
 ACCELERATION_LIMITS = (3500.0, -1500.0)
@@ -408,7 +408,7 @@ class ValveDesign:
     profile: ProfileResult
     clearance: ClearanceResult
     records: dict                  # the law's own results (seed formulas, a measured table's analysis)
-    drive: object                  # DriveResults: masses, spring curves, strength
+    drive: object                  # DriveResult: masses, spring curves, strength
     checks: list = field(default_factory=list)   # every valvetrain.checks.Check of the valve, passed or not
 
     @property
@@ -435,7 +435,7 @@ class ValveDesign:
                "cam": {**record(self.cam), **record(self.profile), **self.records}, "flow": record(self.flow)}
         if self.clearance is not None:
             out["piston_clearance"] = record(self.clearance)
-        out.update(masses=self.drive.masses, spring=self.drive.spring, strength=self.drive.strength)
+        out.update(drive_record(self.drive))
         return out
 
     def __repr__(self):
@@ -479,10 +479,10 @@ def design_valve(name, valve, engine, gas, output, law=None):
     section = valve.cam.section
     records, found = section.records(cam.law, valve, engine, cam.nose)
     try:
-        drive = drive_stage(valve.section, gas.section, cam.law, cam.cam_speed, cam.heel_radius, cam.roller_radius)
+        drive = drive_stage(valve, gas, cam)
     except NoSpringFits as exc:
         raise SpecError([f"{at}.spring: {exc}"]) from None
-    found += valve_checks(cam, flow_result, profile, valve, engine, section.timing(valve, records)) + drive.checks
+    found += valve_checks(cam, flow_result, profile, valve, engine, section.timing(valve, records)) + list(drive.checks)
     return ValveDesign(name, valve.kind, valve.count, cam, flow_result, profile, clearance, records, drive,
                        [c.named(name) for c in found])
 
