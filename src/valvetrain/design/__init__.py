@@ -25,8 +25,9 @@ from .crank import CrankResults, CrankSummary, crank_stage
 from .drive import MassResult, SpringResult, StrengthResult
 from .results import json_schema, quantity, record
 from .twostroke import TwoStrokeResults, TwoStrokeSummary, two_stroke_stage
-from .valve import (THROAT_AREA_SHARE_RANGE, CamResult, ClearanceResult, FlowResult, ProfileResult, ValveDesign, clearance_stage, design_valve, flow_stage, law_stage,
-                    profile_stage, valve_checks)
+from .valve import (THROAT_AREA_SHARE_RANGE, CamResult, ClearanceResult, FlowResult, ProfileResult, ValveDesign,
+                    clearance_stage, design_valve, flow_stage, law_stage, overlap_clearance_checks, profile_stage,
+                    valve_checks)
 
 __all__ = ["DesignResults", "ValveDesign", "clearance_stage", "design_valve", "flow_stage", "law_stage", "profile_stage", "run",
            "valve_checks"]
@@ -147,7 +148,7 @@ def run(spec, laws=None):
             problems += err.problems
     if problems:
         raise SpecError(problems)
-    found = [c for v in valves.values() for c in v.checks]
+    found = [c for v in valves.values() for c in v.checks] + overlap_clearance_checks(valves)
     if {v.kind for v in valves.values()} == {"intake", "exhaust"}:
         share = sum(v.count * v.flow.throat_area for v in valves.values())
         found.append(check("sum of throat areas / piston area", share / float(flow.circle_area(engine.bore)),

@@ -21,6 +21,11 @@ from ..units import to_display
 from .results import quantity, record
 
 
+SHANG_2_1 = "Shang Hanji, Valve cam mechanisms of IC engines, 1988, sec. 2.1"
+NORTON = "R. L. Norton, Cam Design and Manufacturing Handbook, 2nd ed., 2009"
+WORKS_7_1 = "Practical works on valve-train design (Russian manual), work 7, eq. (7.1)"
+
+
 @dataclass(frozen=True)
 class TrainDynamics:
     """The one-mass train with the drive stiffness (seed 002, sections 1 and 3.3)."""
@@ -137,6 +142,10 @@ class StrengthResult:
                                            "opening (eq. 7.1)")
     contact_stress_angle: Optional[float] = quantity("cam_contact_stress_cam_deg", "cam deg",
                                                      "where the contact stress is largest", omit_none=True)
+    side_force_max: Optional[float] = quantity("roller_side_force_max_N", "N", "largest side force of the roller "
+                                               "follower on its guide, P_T tan(alpha)", omit_none=True)
+    side_force_angle: Optional[float] = quantity("roller_side_force_cam_deg", "cam deg",
+                                                 "where the side force is largest", omit_none=True)
     checks: tuple = ()             # the strength checks (valvetrain.checks.Check, quantity with underscores)
     not_checked: tuple = ()        # the checks whose parts are not given, each with the keys missing
 
@@ -293,8 +302,8 @@ def drive_stage(valve, gas, cam):
         found += train_checks
     mass_result = MassResult(m_v, masses.reduced_mass_at_tappet(m_v, i_k), mass_source, layout(valve), train)
 
-    strength_result = _strength(valve, gas, cam, theta, y, h, dh, d2h, a_v, m_v, chosen_line)
-    found += [replace(c, quantity=c.quantity.replace("_", " ")) for c in strength_result.checks]
+    strength_result, follower_checks = _strength(valve, gas, cam, theta, y, h, dh, d2h, a_v, m_v, chosen_line)
+    found += [replace(c, quantity=c.quantity.replace("_", " ")) for c in strength_result.checks] + follower_checks
     inertia = m_v * np.clip(-a_v, 0.0, None)
     return DriveResult(mass_result, spring_result, strength_result, tuple(found), y, inertia, required, lines)
 
@@ -305,15 +314,15 @@ def _strength(valve, gas, cam, theta, y, h, dh, d2h, a_v, m_v, line):
     parts, drive_layout, flat = valve.parts, layout(valve), cam.follower == "flat"
     spring_force = line.force(y)
     cam_force = strength.cam_force(spring_force, m_v * a_v, i_k)
+    verdicts, notes, found = [], [], []
     p_open = 0.0
-    if valve.kind == "exhaust" and parts.head_diameter is not None:
-        p_open = float(flow.circle_area(parts.head_diameter)) * max(
-            gas.exhaust_opening_pressure - gas.exhaust_back_pressure, 0.0)
+    if valve.kind == "exhaust":
+        p_open, gas_check = _exhaust_gas_force(valve, gas)
+        found.append(gas_check)
     cam_force[0] += i_k * p_open
     k = int(np.argmax(cam_force))
     p_max = float(cam_force[k])
-    verdicts, notes = [], []
-    contact_angle = None
+    contact_angle, side = None, (None, None)
 
     def need(keys, name):
         """Whether the parts' keys (spec names) are given; a note names those missing."""
@@ -323,6 +332,7 @@ def _strength(valve, gas, cam, theta, y, h, dh, d2h, a_v, m_v, line):
         return not missing
 
     e_contact = parts.contact_modulus
+    half_width = None
     if need(["camshaft_diameter_mm", "camshaft_span_mm", "cam_to_bearing_mm"], "camshaft_deflection"):
         l1 = parts.cam_to_bearing
         f = strength.camshaft_deflection(p_max, l1, parts.camshaft_span - l1, parts.camshaft_diameter,
@@ -339,6 +349,8 @@ def _strength(valve, gas, cam, theta, y, h, dh, d2h, a_v, m_v, line):
         else:
             curv = 1.0 / rho + (0.0 if flat else 1.0 / roller)
             sigma = strength.hertz_line_stress(cam_force, parts.cam_width, curv, e_contact)
+            if flat:
+                half_width = strength.hertz_half_width(cam_force, parts.cam_width, curv, e_contact)
             j = int(np.argmax(sigma))
             contact_angle = float(theta[j])
             verdicts.append(strength.verdict("cam_contact_stress", sigma[j], "along the profile with the "
@@ -374,7 +386,67 @@ def _strength(valve, gas, cam, theta, y, h, dh, d2h, a_v, m_v, line):
                                              "max (E25)"))
             verdicts.append(strength.verdict("rocker_shaft_shear", st["shear"]))
             verdicts.append(strength.verdict("rocker_shaft_bearing", st["bearing"]))
-    return StrengthResult(p_max, float(theta[k]), p_max / i_k, p_open, contact_angle, tuple(verdicts), tuple(notes))
+    if flat:
+        found += _edge_loading(parts, drive_layout, theta, dh, half_width, notes)
+    else:
+        side, side_check = _roller_side_force(cam, theta, h, dh, cam_force, drive_layout)
+        found.append(side_check)
+    return StrengthResult(p_max, float(theta[k]), p_max / i_k, p_open, contact_angle, *side, tuple(verdicts),
+                          tuple(notes)), found
+
+
+def _exhaust_gas_force(valve, gas):
+    """Gas force on the closed exhaust valve head as it opens [N] (7.1) and its record.
+
+    Without ``parts.head_diameter_mm`` the throat diameter stands in for the head's: the head is larger than
+    the throat, so the force is a lower bound, and the record says so.
+    """
+    head = valve.parts.head_diameter
+    diameter = valve.throat_diameter if head is None else head
+    force = float(flow.circle_area(diameter)) * max(gas.exhaust_opening_pressure - gas.exhaust_back_pressure, 0.0)
+    note = (f"on the head diameter d_n = {to_display(head, 'mm'):g} mm" if head is not None else
+            "parts.head_diameter_mm not given: computed on the throat diameter "
+            f"{to_display(diameter, 'mm'):g} mm, a lower bound (the head is larger than the throat)")
+    return force, check("gas force on the exhaust valve at opening", force, unit="N", severity="info",
+                        source=WORKS_7_1, note=note)
+
+
+def _edge_loading(parts, drive_layout, theta, dh, half_width, notes):
+    """The flat follower's contact against the edge of its face: max(|dh/dphi| + Hertz half-width) <= face radius.
+
+    The contact point of a flat follower lies dh/dphi from its axis (Shang's contour, eq. 2.15); the contact
+    band reaches a half-width further where the cam width is given.  The face is ``tappet_face_diameter_mm``,
+    else, for a tappet in a guide, ``tappet_diameter_mm`` (a bucket tappet's face is its diameter).
+    """
+    if parts.tappet_face_diameter is not None:
+        face, key = parts.tappet_face_diameter, "tappet_face_diameter_mm"
+    elif drive_layout in ("direct", "pushrod") and parts.tappet_diameter is not None:
+        face, key = parts.tappet_diameter, "tappet_diameter_mm (no tappet_face_diameter_mm: a bucket tappet)"
+    else:
+        notes.append("flat_follower_edge_loading: not checked, parts.tappet_face_diameter_mm not given")
+        return []
+    reach = np.abs(dh) + (0.0 if half_width is None else half_width)
+    j = int(np.argmax(reach))
+    width = ("with the Hertz half-width " f"{to_display(float(half_width[j]), 'mm'):.3g} mm" if half_width is not None
+             else "without the Hertz half-width (parts.cam_width_mm not given)")
+    return [check("flat follower contact reach (edge loading)", reach[j], high=face / 2.0, unit="mm",
+                  severity="failure", source=f"{SHANG_2_1}, eq. (2.15); {NORTON} (flat-faced follower face width)",
+                  note=f"contact offset |dh/dphi| {to_display(abs(float(dh[j])), 'mm'):.4g} mm at "
+                       f"{to_display(float(theta[j]), 'cam deg'):.4g} cam deg {width}; face radius from "
+                       f"parts.{key}")]
+
+
+def _roller_side_force(cam, theta, h, dh, cam_force, drive_layout):
+    """The largest side force of a roller follower, P_T tan(alpha), where and its (info) record."""
+    beta = geometry.roller_pressure_angle(cam.heel_radius, cam.roller_radius, h, dh)
+    side = strength.roller_side_force(cam_force, beta)
+    j = int(np.argmax(side))
+    carrier = "the tappet guide" if drive_layout in ("direct", "pushrod") else "the rocker and its shaft"
+    return (float(side[j]), float(theta[j])), check(
+        "roller follower side force", side[j], unit="N", severity="info",
+        source=f"{NORTON} (pressure angle: side load F_n sin(alpha)); no source gives an allowable",
+        note=f"at {to_display(float(theta[j]), 'cam deg'):.4g} cam deg, pressure angle "
+             f"{to_display(abs(float(beta[j])), 'deg'):.3g} deg; carried by {carrier}")
 
 
 def _strength_record(c):

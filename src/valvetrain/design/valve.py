@@ -59,6 +59,14 @@ SEATING_VELOCITY_SOURCE = "spec/methods-seeds-002-004.md, section 2 (working gui
 THROAT_AREA_SHARE_RANGE = (0.25, 0.40)
 """Inlet plus exhaust throat areas as a share of the piston area (seed 000, work 1)."""
 
+PISTON_CLEARANCE_MIN = {"intake": 0.080 * 25.4 * MM, "exhaust": 0.100 * 25.4 * MM}
+"""Smallest recommended valve-to-piston gap [m]: 0.080 in intake, 0.100 in exhaust (the exhaust valve is hotter and
+chased by the rising piston); Shang's (2.13) only demands a gap > 0."""
+
+PISTON_CLEARANCE_SOURCE = ("engine builders' rule of at least 0.080 in intake, 0.100 in exhaust (HP Academy, "
+                           "'Measuring piston to valve clearance'); gap D_s = s + y0 - y: Shang Hanji, Valve cam "
+                           "mechanisms of IC engines, 1988, sec. 2.1, eqs. (2.13)-(2.14)")
+
 MAX_LIFT_TO_THROAT = 0.5
 """Largest valve lift / throat diameter a design may have.  The curtain area pi d y equals the throat area at
 y = d/4 (seed 000, eq. 1.3 with the seat cone neglected), the recommended lift is 0.18-0.30 d (seed 000, work 2); a
@@ -176,6 +184,23 @@ class ClearanceResult:
 
     min_gap: float = quantity("min_clearance_mm", "mm", "smallest valve-to-piston gap over the open event")
     angle: float = quantity("crank_deg", "crank deg", "where the gap is smallest")
+    crank: np.ndarray = field(repr=False)   # crank angles of the open event, rad from the gas-exchange TDC
+    gap: np.ndarray = field(repr=False)     # valve-to-piston gap at those angles [m]
+
+    def within(self, low, high):
+        """The smallest gap [m] and its crank angle [rad] between the crank angles low and high, or None."""
+        inside = (self.crank >= low) & (self.crank <= high)
+        if not np.any(inside):
+            return None
+        i = int(np.argmin(np.where(inside, self.gap, np.inf)))
+        return float(self.gap[i]), float(self.crank[i])
+
+
+def clearance_check(kind, gap, angle, where):
+    """The check of a valve-to-piston gap [m] at a crank angle [rad] against :data:`PISTON_CLEARANCE_MIN`."""
+    return check(f"valve-piston clearance{where}", gap, low=PISTON_CLEARANCE_MIN[kind], unit="mm",
+                 source=PISTON_CLEARANCE_SOURCE,
+                 note=f"smallest at {math.degrees(angle):.4g} crank deg from the gas-exchange TDC")
 
 
 def wrap_crank(a):
@@ -346,7 +371,27 @@ def clearance_stage(cam, valve, engine):
                          f"{math.degrees(angle):.4g} crank deg (seed 002, eqs. 2.13-2.14, with piston_gap_tdc_mm = "
                          f"{valve.piston_gap_tdc / MM:g}); allowed a gap > 0: lower the lift near TDC or deepen the "
                          "valve pocket")
-    return ClearanceResult(float(gap[i]), angle)
+    return ClearanceResult(float(gap[i]), angle, wrap_crank(crank), gap)
+
+
+def overlap_clearance_checks(valves):
+    """The valve-to-piston gap of each valve over the overlap, from the first intake opening to the last exhaust
+    closing (crank angles from the gas-exchange TDC), where the piston is nearest the open valves.
+
+    ``valves`` maps names to :class:`ValveDesign`; no check without an intake and an exhaust valve that overlap.
+    """
+    opens = [v.cam.valve_opens for v in valves.values() if v.kind == "intake"]
+    closes = [v.cam.valve_closes for v in valves.values() if v.kind == "exhaust"]
+    if not opens or not closes or min(opens) >= max(closes):
+        return []
+    window = (min(opens), max(closes))
+    out = []
+    for name, v in valves.items():
+        found = None if v.clearance is None else v.clearance.within(*window)
+        if found is not None:
+            out.append(clearance_check(v.kind, *found, f" over the overlap ({math.degrees(window[0]):.4g} to "
+                                                        f"{math.degrees(window[1]):.4g} crank deg)").named(name))
+    return out
 
 
 def valve_checks(cam, flow_result, profile, valve, engine, timing):
@@ -483,10 +528,12 @@ def design_valve(name, valve, engine, gas, output, law=None):
     except NoSpringFits as exc:
         raise SpecError([f"{at}.spring: {exc}"]) from None
     found += valve_checks(cam, flow_result, profile, valve, engine, section.timing(valve, records)) + list(drive.checks)
+    if clearance is not None:
+        found.append(clearance_check(valve.kind, clearance.min_gap, clearance.angle, ""))
     return ValveDesign(name, valve.kind, valve.count, cam, flow_result, profile, clearance, records, drive,
                        [c.named(name) for c in found])
 
 
 __all__ = ["CamResult", "ClearanceResult", "FlowResult", "LiftTable", "ProfileResult", "ValveDesign",
-           "clearance_stage", "design_valve", "flow_stage", "law_stage", "profile_stage",
-           "valve_checks", "wrap_crank"]
+           "clearance_check", "clearance_stage", "design_valve", "flow_stage", "law_stage", "overlap_clearance_checks",
+           "profile_stage", "valve_checks", "wrap_crank"]
