@@ -1,5 +1,7 @@
 """The design run on the built-in example and on variants of it."""
 
+from pathlib import Path
+
 import numpy as np
 import pytest
 from hypothesis import given, settings, strategies as st
@@ -7,7 +9,7 @@ from scipy.integrate import quad
 
 from valvetrain import flow
 from valvetrain.design import run
-from valvetrain.specification import SpecError, example_spec, example_text, parse_spec
+from valvetrain.specification import SpecError, example_spec, example_text, load_spec, parse_spec
 
 
 def _variant(replacements):
@@ -342,3 +344,67 @@ def test_two_valves_per_cylinder():
     throat = [w for w in two.warnings if "throat diameter" in w.quantity]
     assert [(w.quantity, round(w.value, 4)) for w in throat] == [
         ("intake: equivalent throat diameter sqrt(2) d / bore", 0.6505)]
+
+
+def _check(res, quantity):
+    found = [c for c in res.checks if c.quantity == quantity]
+    assert len(found) == 1, [c.quantity for c in res.checks]
+    return found[0]
+
+
+def test_flat_follower_edge_loading():
+    """The contact of a flat tappet lies dh/dphi from its axis (Shang Hanji 1988, eq. 2.15); the appendix gives
+    omega_T max / omega_K = 8.935 mm, and the Hertz band reaches a half-width further (< 0.2 mm at these loads)."""
+    res = run(example_spec())
+    c = _check(res, "intake: flat follower contact reach (edge loading)")
+    assert c.passed and c.severity == "failure" and c.high == pytest.approx(12.5e-3)   # tappet_diameter_mm / 2
+    assert 8.935e-3 < c.value < 8.935e-3 + 0.2e-3 and "bucket tappet" in c.note
+    small = run(_variant([("tappet_diameter_mm = 25.0", "tappet_diameter_mm = 25.0\ntappet_face_diameter_mm = 17.0")]))
+    c = _check(small, "intake: flat follower contact reach (edge loading)")
+    assert not c.passed and c.high == pytest.approx(8.5e-3) and "tappet_face_diameter_mm" in c.note
+    rocker = run(_variant([('layout = "pushrod"', 'layout = "rocker"')]))
+    assert not [c for c in rocker.checks if "edge loading" in c.quantity]
+    assert any(n.startswith("flat_follower_edge_loading: not checked")
+               for n in rocker.to_dict()["valves"]["intake"]["strength"]["not_checked"])
+
+
+def test_roller_side_force_is_reported():
+    """F_side = P_T tan(alpha) (Norton): at most the largest cam force times tan of the largest pressure angle."""
+    res = run(_variant([('follower = "flat"', 'follower = "roller"\nroller_radius_mm = 12.0')]))
+    c = _check(res, "intake: roller follower side force")
+    rec = res.to_dict()["valves"]["intake"]
+    bound = rec["strength"]["cam_force_max_N"] * np.tan(np.radians(rec["cam"]["max_pressure_angle_deg"]))
+    assert c.severity == "info" and c.passed and 0.0 < c.value <= bound
+    assert rec["strength"]["roller_side_force_max_N"] == pytest.approx(c.value)
+    assert not [c for c in res.checks if "edge loading" in c.quantity]
+
+
+def test_exhaust_gas_load_without_the_head_diameter():
+    """(7.1): the gas load at exhaust opening is pi d_n^2 / 4 (p_b - p_r); without head_diameter_mm the throat
+    (36.8 mm) stands in, a lower bound, and the record says so (before: silently 0 N)."""
+    text = example_text().replace("[valves.intake", "[valves.exhaust").replace('kind = "intake"', 'kind = "exhaust"')
+    text = text.replace("clearance_mm = 0.25", "clearance_mm = 0.40")
+    dp = (0.5 - 0.106) * 1e6                      # [gas] defaults: exhaust_opening and exhaust_back pressures
+    for head, diameter in (("head_diameter_mm = 40.0", 40e-3), ("", 36.8e-3)):
+        res = run(parse_spec(text.replace("head_diameter_mm = 40.0", head)))
+        c = _check(res, "exhaust: gas force on the exhaust valve at opening")
+        assert c.value == pytest.approx(np.pi / 4.0 * diameter**2 * dp) and c.severity == "info"
+        assert res.to_dict()["valves"]["exhaust"]["strength"]["gas_force_at_opening_N"] == pytest.approx(c.value)
+        assert ("lower bound" in c.note) == (head == "")
+
+
+def test_valve_piston_clearance_is_a_check_with_its_crank_angle():
+    """The smallest gap of each valve against 0.080 in intake / 0.100 in exhaust, the angle in the note; over the
+    overlap (intake opening to exhaust closing) each valve's gap is at least its smallest over its whole event."""
+    res = run(_variant([("# rod_length_mm = 135.0", "rod_length_mm = 135.0"),
+                        ("# piston_gap_tdc_mm = 1.5", "piston_gap_tdc_mm = 1.5")]))
+    pc = res.to_dict()["valves"]["intake"]["piston_clearance"]
+    c = _check(res, "intake: valve-piston clearance")
+    assert c.value * 1e3 == pytest.approx(pc["min_clearance_mm"]) and c.low == pytest.approx(2.032e-3)
+    assert f"{pc['crank_deg']:.4g} crank deg" in c.note
+    both = run(load_spec(Path(__file__).parents[1] / "examples" / "seed000-polydyne.toml"))
+    for name, low in (("intake", 2.032e-3), ("exhaust", 2.54e-3)):
+        whole = _check(both, f"{name}: valve-piston clearance")
+        over = [c for c in both.checks if c.quantity.startswith(f"{name}: valve-piston clearance over the overlap")]
+        assert len(over) == 1 and over[0].value >= whole.value - 1e-12 and over[0].low == pytest.approx(low)
+        assert both.valves[name].clearance.min_gap == pytest.approx(whole.value)

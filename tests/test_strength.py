@@ -74,3 +74,24 @@ def test_verdict_records():
     assert v.margin == pytest.approx(1.5 / 2.0 - 1.0)
     stress = strength.verdict("cam_contact_stress", 900e6)
     assert stress.passed and stress.range == "<= 1200 MPa" and stress.shown_value == pytest.approx(900.0)
+
+
+def test_hertz_half_width_is_johnson_s_line_contact_band():
+    """a = sqrt(4 F R / (pi b E*)) with 1/E* = 2 (1 - 0.3^2) / E (K. L. Johnson, Contact Mechanics, 1985, ch. 4),
+    an independent computation; the 0.418 of seed 002's stress rounds the constant by 0.05 %."""
+    force, width, radius, modulus = 1500.0, 0.016, 0.012, 2.1e11
+    e_star = modulus / (2.0 * (1.0 - 0.3**2))
+    a = np.sqrt(4.0 * force * radius / (np.pi * width * e_star))
+    assert strength.hertz_half_width(force, width, 1.0 / radius, modulus) == pytest.approx(a, rel=1e-3)
+    # the load over the band is the elliptic pressure's: F / b = pi a sigma / 2
+    sigma = strength.hertz_line_stress(force, width, 1.0 / radius, modulus)
+    assert np.pi * strength.hertz_half_width(force, width, 1.0 / radius, modulus) * sigma / 2.0 == pytest.approx(
+        force / width)
+    assert strength.hertz_half_width(-10.0, width, 1.0 / radius, modulus) == 0.0
+
+
+def test_roller_side_force_is_the_normal_force_across_the_axis():
+    """F_side = F_n sin(alpha) with F_n = F_axial / cos(alpha) (analytic identity), either sign of alpha."""
+    alpha = np.radians([-25.0, 0.0, 10.0, 30.0])
+    normal = 800.0 / np.cos(alpha)
+    assert strength.roller_side_force(800.0, alpha) == pytest.approx(normal * np.abs(np.sin(alpha)))

@@ -162,6 +162,16 @@ WORKS = {
         authors="Wahl, A. M.",
         title="Mechanical Springs", kind="book", publisher="Penton Publishing", place="Cleveland",
         year="1944"),
+    "norton2009": Work(
+        short="Norton (2009)",
+        authors="Norton, R. L.",
+        title="Cam Design and Manufacturing Handbook, 2nd ed.", kind="book", publisher="Industrial Press",
+        place="New York", year="2009"),
+    "johnson1985": Work(
+        short="Johnson (1985)",
+        authors="Johnson, K. L.",
+        title="Contact Mechanics", kind="book", publisher="Cambridge University Press", place="Cambridge",
+        year="1985"),
     "hairer1993": Work(
         short="Hairer, Nørsett and Wanner (1993)",
         authors="Hairer, E.; Nørsett, S. P.; Wanner, G.",

@@ -136,6 +136,74 @@ def hertz_line_stress(force, width, curvature_sum, modulus):
     return 0.418 * np.sqrt(loaded * modulus / width)
 
 
+def hertz_half_width(force, width, curvature_sum, modulus):
+    """Half-width of the Hertz contact band of two cylinders in line contact [m].
+
+    Parameters
+    ----------
+    force : ndarray
+        Contact force [N] (a force <= 0 gives no band).
+    width : float
+        Contact (cam) width b [m].
+    curvature_sum : ndarray
+        1/rho_1 + 1/rho_2 [1/m], > 0.
+    modulus : float
+        Effective modulus E_m [Pa] (equal materials: E).
+
+    Notes
+    -----
+    The load is spread elliptically over the band, :math:`F/b = \\pi a \\sigma / 2`; with the stress of
+    :func:`hertz_line_stress`,
+
+    .. math:: a = \\frac{2F}{\\pi b \\sigma} = \\frac{2}{0.418\\pi}\\sqrt{\\frac{F}{b E_m (1/\\rho_1 + 1/\\rho_2)}}
+
+    (Poisson's ratio 0.3), the same as :math:`a = \\sqrt{4 F R / (\\pi b E^*)}` with
+    :math:`1/E^* = 2 (1 - \\mu^2) / E_m`.
+
+    References
+    ----------
+    Johnson (1985), ch. 4 (two-dimensional Hertz contact);
+    Shang Hanji (1988), section 2.1, eqs. (2.4)-(2.5).
+
+    Examples
+    --------
+    A steel cylinder of 10 mm radius on a flat, 1000 N over 10 mm: a = 0.105 mm.
+
+    >>> round(float(hertz_half_width(1000.0, 0.01, 100.0, 2.1e11)) * 1e3, 4)
+    0.1051
+    """
+    load = np.clip(force, 0.0, None)
+    return 2.0 / (0.418 * np.pi) * np.sqrt(load / (width * modulus * np.asarray(curvature_sum)))
+
+
+def roller_side_force(axial_force, pressure_angle):
+    """Side (lateral) force of a roller follower on its guide, F_n sin(alpha) = F_a tan(alpha) [N].
+
+    Parameters
+    ----------
+    axial_force : ndarray
+        Force along the follower axis, P_T [N] (a force <= 0 gives none).
+    pressure_angle : ndarray
+        Pressure angle alpha between the contact normal and the follower axis [rad].
+
+    Notes
+    -----
+    The contact normal carries :math:`F_n = F_a / \\cos\\alpha`; its component across the axis,
+    :math:`F_s = F_n \\sin\\alpha = F_a \\tan\\alpha`, is taken by the follower guide.
+
+    References
+    ----------
+    Norton (2009) (pressure angle and
+    follower side load).
+
+    Examples
+    --------
+    >>> round(float(roller_side_force(1000.0, np.radians(30.0))), 1)
+    577.4
+    """
+    return np.clip(axial_force, 0.0, None) * np.tan(np.abs(pressure_angle))
+
+
 def tappet_side_pressure(force, offset, tappet_diameter, guide_length):
     """Side pressure of a flat tappet in its guide, q = 6 P b / (d l^2) [Pa] (Valve-train practical works (n.d.), eqs. 7.6-7.7).
 

@@ -24,10 +24,12 @@ from ..files import TableFileError
 from ..specification import SpecError, si
 from ..units import MM
 from .crank import CrankResults, CrankSummary, crank_stage
+from .drive import MassResult, SpringResult, StrengthResult
 from .results import json_schema, quantity, record
 from .twostroke import TwoStrokeResults, TwoStrokeSummary, two_stroke_stage
-from .valve import (THROAT_AREA_SHARE_RANGE, CamResult, ClearanceResult, FlowResult, ProfileResult, ValveDesign, clearance_stage, design_valve, flow_stage, law_stage,
-                    profile_stage, valve_checks)
+from .valve import (THROAT_AREA_SHARE_RANGE, CamResult, ClearanceResult, FlowResult, ProfileResult, ValveDesign,
+                    clearance_stage, design_valve, flow_stage, law_stage, overlap_clearance_checks, profile_stage,
+                    valve_checks)
 
 __all__ = ["DesignResults", "ValveDesign", "clearance_stage", "design_valve", "flow_stage", "law_stage", "profile_stage", "run",
            "valve_checks"]
@@ -74,9 +76,9 @@ class DesignResults:
     def _rows(self):
         """One line of figures per valve: name, law, valve lift, time-area, fullness, spring, failed checks."""
         for name, v in self.valves.items():
-            spring = v.drive.spring
+            spring = v.drive.spring.design
             yield (name, v.law.name, f"{v.flow.valve_lift / MM:.4g}", f"{v.flow.time_area / MM**2:.4g}",
-                   f"{v.flow.fullness:.4g}", f"{spring['wire_mm']:g} x {spring['mean_diameter_mm']:g}",
+                   f"{v.flow.fullness:.4g}", f"{spring.wire_diameter / MM:g} x {spring.mean_diameter / MM:g}",
                    f"{len(v.warnings)} of {len(v.checks)}")
 
     _HEADS = ("valve", "law", "lift, mm", "time-area, mm2 s", "fullness", "spring wire x D, mm", "checks failed")
@@ -159,7 +161,7 @@ def run(spec, laws=None):
             problems += err.problems
     if problems:
         raise SpecError(problems)
-    found = [c for v in valves.values() for c in v.checks]
+    found = [c for v in valves.values() for c in v.checks] + overlap_clearance_checks(valves)
     if {v.kind for v in valves.values()} == {"intake", "exhaust"}:
         share = sum(v.count * v.flow.throat_area for v in valves.values())
         found.append(check("sum of throat areas / piston area", share / float(flow.circle_area(engine.bore)),
@@ -216,8 +218,8 @@ def engine_record(eng):
 def results_schema():
     """JSON Schema (draft 2020-12) of results.json, generated from the stage results' field metadata.
 
-    The records of the drive (masses, spring, strength) and the law's own records (seed formulas, a
-    measured table's analysis) are objects described in the README.
+    The law's own records (seed formulas, a measured table's analysis) and the strength checks are objects
+    described in the README.
     """
     from .. import __version__
 
@@ -236,6 +238,10 @@ def results_schema():
                    "properties": check_record["properties"] | {
                        "low": {"type": ["number", "null"]}, "high": {"type": ["number", "null"]},
                        "pass": {"type": "boolean"}, "note": {"type": "string"}}}
+    strength = merged(json_schema(StrengthResult), checks="one record per strength check: value, allowed, limit, "
+                      "unit, pass, source (and a note)")
+    strength["properties"]["not_checked"] = {"type": "array", "items": {"type": "string"},
+                                             "description": "the checks whose parts are not given"}
     valve = {"type": "object", "properties": {
         "kind": {"type": "string"}, "count": {"type": "integer"}, "rocker_ratio": {"type": "number"},
         "cam": merged(json_schema(CamResult), json_schema(ProfileResult),
@@ -243,9 +249,8 @@ def results_schema():
                       residuals="residuals of the junction conditions (Kurz cams)",
                       measured="a measured table's analysis: durations, lobe centre, fit quality"),
         "flow": json_schema(FlowResult), "piston_clearance": json_schema(ClearanceResult),
-        "masses": {"type": "object", "description": "reduced masses at the valve and the tappet"},
-        "spring": {"type": "object", "description": "the required and the designed spring(s) with their checks"},
-        "strength": {"type": "object", "description": "the cam load and one record per strength check"}}}
+        "masses": json_schema(MassResult), "spring": json_schema(SpringResult),
+        "strength": strength}}
     return {
         "$schema": "https://json-schema.org/draft/2020-12/schema",
         "$id": f"https://valvetrain.invalid/results-{__version__}.schema.json",

@@ -1,74 +1,192 @@
-"""Drive stages of a valve design: reduced masses, spring characteristic and design, strength of the
-drive parts (Valve-train practical works (n.d.), works 5-7)."""
+"""Drive stage of a valve design: reduced masses, spring characteristic and design, strength of the
+drive parts (Valve-train practical works (n.d.), works 5-7).
 
-from dataclasses import dataclass, replace
+:func:`drive_stage` takes SI inputs (the valve's and ``[gas]``'s SI views,
+:func:`valvetrain.specification.si`, and the law stage's :class:`~valvetrain.design.valve.CamResult`) to a
+typed, frozen :class:`DriveResult`; :func:`drive_record` is where it leaves SI, as the ``masses``,
+``spring`` and ``strength`` records of results.json.
+"""
+
+from dataclasses import dataclass, field, replace
+from typing import Optional, Union
 
 import numpy as np
 
 from .. import flow, geometry, masses, springs, strength
 from ..checks import check
-from ..specification import si
-from ..specification.cams import train_mass
-from ..units import MM, MPA, rad_to_deg, to_display
+from ..spring_materials import grade
+from ..specification.cams import layout, train_mass
+from ..specification.si import si_name
+from ..units import to_display
+from .results import quantity, record
 
 
-@dataclass
-class DriveResults:
-    """Springs and strength of one valve: the JSON records and the curves for the report (SI)."""
-
-    masses: dict
-    spring: dict
-    strength: dict
-    checks: list                   # every valvetrain.checks.Check of the drive, passed or not
-    lift: np.ndarray               # valve lift along the open event [m]
-    inertia_force: np.ndarray      # m_v |j_v| where j_v < 0 [N]
-    required_force: np.ndarray     # K_z m_v |j_v| [N]
-    lines: dict                    # name -> springs.Characteristic (required, chosen, outer, inner)
+SHANG_2_1 = "Shang Hanji (1988), section 2.1"
+NORTON = "Norton (2009)"
+WORKS_7_1 = "Valve-train practical works (n.d.), work 7, eq. (7.1)"
 
 
-def reduced_mass(v, throat_area, spring_mass_kg):
-    """Reduced mass at the valve [kg] and a description of how it was obtained (the valve's SI view)."""
-    return train_mass(si(v), spring_mass_kg)
+@dataclass(frozen=True)
+class TrainDynamics:
+    """The one-mass train with the drive stiffness (Shang Hanji (1988), sections 1 and 3.3)."""
+
+    stiffness: float = quantity("drive_stiffness_N_per_mm", "N/mm", "drive stiffness c at the valve")
+    natural_frequency: float = quantity("natural_frequency_Hz", "Hz", "natural frequency sqrt((c + K)/M) / 2 pi")
+    epsilon: float = quantity("epsilon", label="perturbation parameter M omega^2 / (c + K)")
+
+
+@dataclass(frozen=True)
+class MassResult:
+    """Reduced masses of the train (Valve-train practical works (n.d.), eq. 5.2 or the specific mass of work 5)."""
+
+    at_valve: float = quantity("at_valve_kg", "kg", "reduced mass at the valve m_v")
+    at_tappet: float = quantity("at_tappet_kg", "kg", "reduced mass at the tappet m_t = m_v i_k^2")
+    source: str = quantity("source", label="how the reduced mass was obtained")
+    layout: str = quantity("layout", label="drive layout: direct, rocker or pushrod")
+    train: Optional[TrainDynamics] = quantity("train", flatten=True, default=None)
+
+
+@dataclass(frozen=True)
+class SpringRecord:
+    """One designed spring: loads, geometry, stresses, frequency and margins (Valve-train practical works (n.d.), works 5-6)."""
+
+    preload: float = quantity("preload_N", "N", "preload P_min at the closed valve")
+    max_force: float = quantity("max_force_N", "N", "force P_max at full lift")
+    rate: float = quantity("rate_N_per_mm", "N/mm", "rate C")
+    wire_diameter: float = quantity("wire_mm", "mm", "wire diameter d")
+    mean_diameter: float = quantity("mean_diameter_mm", "mm", "mean coil diameter D")
+    outer_diameter: float = quantity("outer_diameter_mm", "mm", "outside diameter D + d")
+    active_coils: float = quantity("active_coils", label="working coils i_p")
+    total_coils: float = quantity("total_coils", label="total coils i_p + 2")
+    free_length: float = quantity("free_length_mm", "mm", "free length")
+    installed_length: float = quantity("installed_length_mm", "mm", "length at the closed valve")
+    min_length: float = quantity("min_length_mm", "mm", "length at full lift")
+    min_pitch: float = quantity("min_pitch_mm", "mm", "pitch at full lift")
+    installed_pitch: float = quantity("installed_pitch_mm", "mm", "pitch at the closed valve")
+    free_pitch: float = quantity("free_pitch_mm", "mm", "free pitch")
+    preload_deflection: float = quantity("preload_deflection_mm", "mm", "f_min, deflection at the closed valve")
+    max_deflection: float = quantity("max_deflection_mm", "mm", "f_max, deflection at full lift")
+    spring_index: float = quantity("spring_index", label="D / d")
+    shape_factor: float = quantity("shape_factor", label="chi from the table of work 6")
+    wahl_factor: float = quantity("wahl_factor", label="Wahl factor, for comparison")
+    tau_max: float = quantity("tau_max_MPa", "MPa", "largest shear stress")
+    tau_min: float = quantity("tau_min_MPa", "MPa", "smallest shear stress")
+    safety_factor: float = quantity("safety_factor", label="fatigue safety n (eq. 6.12)")
+    natural_frequency: float = quantity("natural_frequency_Hz", "Hz", "first natural frequency")
+    resonance_ratio: float = quantity("resonance_ratio", label="omega_c1 / omega_cam")
+    mass: float = quantity("mass_kg", "kg", "spring mass")
+    material: str = quantity("material", label="wire grade")
+    target_deflection_ratio: Optional[float] = quantity("target_deflection_ratio",
+                                                        label="f_max / f_min of the line designed for")
+    guide_sleeve_needed: bool = quantity("guide_sleeve_needed", label="free length / D > 2.5")
+    passes_all_checks: bool = quantity("passes_all_checks", label="every check of the spring passes")
+    binding_check: str = quantity("binding_check", label="the check with the smallest margin")
+    margins: dict = quantity("margins", label="relative margin of each check (>= 0 passes)")
+
+
+def spring_record(s):
+    """The :class:`SpringRecord` of a :class:`valvetrain.springs.SpringDesign`."""
+    c, n = s.characteristic, s.lengths
+    return SpringRecord(
+        c.preload, c.max_force, c.rate, s.wire_diameter, s.mean_diameter, s.mean_diameter + s.wire_diameter, s.coils,
+        s.coils + 2.0, n["free_length"], n["installed_length"], n["min_length"], n["min_pitch"], n["installed_pitch"],
+        n["free_pitch"], c.preload_deflection, c.max_deflection, s.mean_diameter / s.wire_diameter, s.shape_factor,
+        s.wahl, s.tau_max, s.tau_min, s.safety, s.natural_frequency / (2 * np.pi), s.resonance_ratio, s.mass,
+        s.material, s.target_ratio, bool(n["free_length"] / s.mean_diameter > 2.5), s.passes, s.binding_check,
+        s.margins)
+
+
+@dataclass(frozen=True)
+class SpringResult:
+    """The required spring line and the designed spring (or nested pair) (Valve-train practical works (n.d.), works 5-6).
+
+    The designed spring's record (for a pair: the outer spring's, with the pair's loads) is merged into this one.
+    """
+
+    count: int = quantity("count", label="springs: 1 or a nested pair")
+    material: Union[str, tuple] = quantity("material", label="the grade (or grades) searched")
+    preload: float = quantity("preload_N", "N", "preload of the chosen spring(s)")
+    max_force: float = quantity("max_force_N", "N", "force at full lift of the chosen spring(s)")
+    rate: float = quantity("rate_N_per_mm", "N/mm", "rate of the chosen spring(s)")
+    required_preload: float = quantity("required_preload_N", "N", "preload of the required line")
+    required_rate: float = quantity("required_rate_N_per_mm", "N/mm", "rate of the required line")
+    required_max_force: float = quantity("required_max_force_N", "N", "force at full lift of the required line")
+    required_deflection_ratio: float = quantity("required_deflection_ratio", label="f_max / f_min of the required line")
+    preload_set_by_gas_force: bool = quantity("preload_set_by_gas_force", label="the gas force sets the preload")
+    gas_force: float = quantity("gas_force_N", "N", "gas force that tends to open the closed valve")
+    gas_force_source: str = quantity("gas_force_source", label="source of the gas force")
+    preload_set_by_seat_load: bool = quantity("preload_set_by_seat_load", label="the seat load sets the preload")
+    seat_load: float = quantity("seat_load_N", "N", "smallest preload that holds the valve on its seat")
+    seat_load_source: str = quantity("seat_load_source", label="source of the seat load")
+    deflection_ratio: float = quantity("deflection_ratio", label="f_max / f_min of the chosen spring(s)")
+    spring_reserve: float = quantity("spring_reserve", label="spring reserve K_z")
+    candidates_passing: int = quantity("candidates_passing", label="candidates that pass every check")
+    candidates_tried: int = quantity("candidates_tried", label="candidates tried")
+    diagnosis: Optional[dict] = quantity("diagnosis", label="why no spring passes and what would help",
+                                         omit_none=True)
+    design: SpringRecord = quantity("design", flatten=True)
+    outer: Optional[SpringRecord] = quantity("outer", label="outer spring of a pair", omit_none=True, default=None)
+    inner: Optional[SpringRecord] = quantity("inner", label="inner spring of a pair", omit_none=True, default=None)
+    inner_share: Optional[float] = quantity("inner_share", label="share of the force on the inner spring",
+                                            omit_none=True, default=None)
+
+
+@dataclass(frozen=True)
+class StrengthResult:
+    """The cam load along the open event and the strength checks of the drive parts (Valve-train practical works (n.d.), work 7)."""
+
+    cam_force_max: float = quantity("cam_force_max_N", "N", "largest force between cam and follower P_T max")
+    cam_force_max_angle: float = quantity("cam_force_max_cam_deg", "cam deg", "where the cam force is largest")
+    valve_force_max: float = quantity("valve_force_max_N", "N", "P_T max / i_k")
+    gas_force_at_opening: float = quantity("gas_force_at_opening_N", "N", "gas force on the exhaust valve head at "
+                                           "opening (eq. 7.1)")
+    contact_stress_angle: Optional[float] = quantity("cam_contact_stress_cam_deg", "cam deg",
+                                                     "where the contact stress is largest", omit_none=True)
+    side_force_max: Optional[float] = quantity("roller_side_force_max_N", "N", "largest side force of the roller "
+                                               "follower on its guide, P_T tan(alpha)", omit_none=True)
+    side_force_angle: Optional[float] = quantity("roller_side_force_cam_deg", "cam deg",
+                                                 "where the side force is largest", omit_none=True)
+    checks: tuple = ()             # the strength checks (valvetrain.checks.Check, quantity with underscores)
+    not_checked: tuple = ()        # the checks whose parts are not given, each with the keys missing
+
+
+@dataclass(frozen=True)
+class DriveResult:
+    """The drive stage of one valve: masses, springs, strength (SI), every check and the curves for the report."""
+
+    masses: MassResult
+    spring: SpringResult
+    strength: StrengthResult
+    checks: tuple                  # every valvetrain.checks.Check of the drive, passed or not
+    lift: np.ndarray = field(repr=False)             # valve lift along the open event [m]
+    inertia_force: np.ndarray = field(repr=False)    # m_v |j_v| where j_v < 0 [N]
+    required_force: np.ndarray = field(repr=False)   # K_z m_v |j_v| [N]
+    lines: dict = field(repr=False)                  # name -> springs.Characteristic (required, chosen, outer, inner)
+
+
+def drive_record(drive):
+    """The ``masses``, ``spring`` and ``strength`` records of results.json (engineering units)."""
+    st = drive.strength
+    return {"masses": record(drive.masses), "spring": record(drive.spring),
+            "strength": {**record(st), "checks": {c.quantity: _strength_record(c) for c in st.checks},
+                         "not_checked": list(st.not_checked)}}
 
 
 def _spring_options(sp):
-    """The spring search of a [valves.NAME.spring] section, SI (grades, overrides, ranges, arrangement)."""
-    def si(value, unit):
-        return None if value is None else value * unit
-
+    """The spring search of a spring section's SI view (grades, overrides, ranges, arrangement); the wire series
+    is a catalogue grid in mm (:func:`valvetrain.springs.wire_series`)."""
+    names = (sp.material,) if isinstance(sp.material, str) else sp.material
     materials = tuple(springs.SpringMaterial(
-        grade=name, shear_modulus=si(sp.shear_modulus_MPa, MPA), density=sp.density_kg_m3,
-        allowable_stress=si(sp.allowable_stress_MPa, MPA), endurance_limit=si(sp.endurance_limit_MPa, MPA),
+        grade=grade(name).name, shear_modulus=sp.shear_modulus, density=sp.density_kg_m3,
+        allowable_stress=sp.allowable_stress, endurance_limit=sp.endurance_limit,
         mean_stress_factor=sp.mean_stress_factor, min_safety=sp.min_safety_factor,
-        min_resonance_ratio=sp.min_resonance_ratio, gap_factor=sp.coil_gap_factor) for name in sp.materials)
-    installed = None if sp.installed_length_mm is None else tuple(x * MM for x in sp.installed_length_mm)
+        min_resonance_ratio=sp.min_resonance_ratio, gap_factor=sp.coil_gap_factor) for name in names)
     return springs.SpringOptions(
         materials=materials, count=sp.count, inner_share=sp.inner_share, diameter_range=sp.mean_diameter_ratio,
-        wire_range_mm=sp.wire_diameter_range_mm, wire_step_mm=sp.wire_step_mm, ratio_range=sp.deflection_ratio_range,
-        installed_length_range=installed, max_free_length=si(sp.max_free_length_mm, MM), radial_gap=sp.radial_gap_mm * MM,
+        wire_range_mm=tuple(to_display(x, "mm") for x in sp.wire_diameter_range),
+        wire_step_mm=to_display(sp.wire_step, "mm"), ratio_range=sp.deflection_ratio_range,
+        installed_length_range=sp.installed_length, max_free_length=sp.max_free_length, radial_gap=sp.radial_gap,
         min_frequency_difference=sp.min_frequency_difference)
-
-
-def _spring_record(s):
-    """results.json record of one designed spring (engineering units)."""
-    c = s.characteristic
-    return {
-        "preload_N": c.preload, "max_force_N": c.max_force, "rate_N_per_mm": c.rate * MM,
-        "wire_mm": s.wire_diameter / MM, "mean_diameter_mm": s.mean_diameter / MM,
-        "outer_diameter_mm": (s.mean_diameter + s.wire_diameter) / MM, "active_coils": s.coils,
-        "total_coils": s.coils + 2.0, "free_length_mm": s.lengths["free_length"] / MM,
-        "installed_length_mm": s.lengths["installed_length"] / MM, "min_length_mm": s.lengths["min_length"] / MM,
-        "min_pitch_mm": s.lengths["min_pitch"] / MM, "installed_pitch_mm": s.lengths["installed_pitch"] / MM,
-        "free_pitch_mm": s.lengths["free_pitch"] / MM, "preload_deflection_mm": c.preload_deflection / MM,
-        "max_deflection_mm": c.max_deflection / MM, "spring_index": s.mean_diameter / s.wire_diameter,
-        "shape_factor": s.shape_factor, "wahl_factor": s.wahl, "tau_max_MPa": s.tau_max / MPA,
-        "tau_min_MPa": s.tau_min / MPA, "safety_factor": s.safety, "natural_frequency_Hz": s.natural_frequency / (2 * np.pi),
-        "resonance_ratio": s.resonance_ratio, "mass_kg": s.mass, "material": s.material,
-        "target_deflection_ratio": s.target_ratio,
-        "guide_sleeve_needed": bool(s.lengths["free_length"] / s.mean_diameter > 2.5),
-        "passes_all_checks": s.passes, "binding_check": s.binding_check,
-        "margins": s.margins,
-    }
 
 
 def _spring_checks(tag, s, note=""):
@@ -79,55 +197,79 @@ def _spring_checks(tag, s, note=""):
                        "free_length", "coil_gap_at_full_lift")]
 
 
-def drive_stage(v, gas, law, omega, heel, roller):
-    """Stages 6 and 7: reduced masses, spring characteristic and design, strength of the drive parts."""
-    i_k = v.rocker_ratio
-    d_g = v.throat_diameter_mm * MM
-    f_g = float(flow.circle_area(d_g))
+def drive_stage(valve, gas, cam):
+    """Stages 6 and 7: reduced masses, spring characteristic and design, strength of the drive parts.
+
+    Parameters
+    ----------
+    valve, gas : SI views of the valve and ``[gas]`` (:func:`valvetrain.specification.si`).
+    cam : CamResult
+        The law stage: the law, the camshaft speed [rad/s], the heel and roller radii [m], the rocker ratio.
+
+    Returns
+    -------
+    DriveResult
+
+    Raises
+    ------
+    valvetrain.springs.NoSpringFits
+        No spring of the wire range can be wound within the given diameters.
+
+    Notes
+    -----
+    The spring must hold the train on the cam, :math:`P_{spr} \\ge K_z m_v |j_v|` where :math:`j_v < 0`
+    (5.1)-(5.3); the reduced mass includes a third of the designed spring's mass where the part masses leave it
+    to the design, so the search is repeated until that mass settles.  The cam load is
+    :math:`P_T = i_k (P_{spr} + P_{gas}) + i_k m_v j_v` along the open event (7.1, corrections note 23).
+
+    References
+    ----------
+    Valve-train practical works (n.d.), works 5-7, eqs. (5.1)-(5.14), (6.1)-(6.14), (7.1)-(7.18).
+    """
+    law, omega, i_k = cam.law, cam.cam_speed, cam.rocker_ratio
+    d_g = valve.throat_diameter
     found = []
 
     theta = np.unique(np.concatenate([np.linspace(law.valve_opens, law.valve_closes, 2001), law.breakpoints]))
     theta = theta[(theta >= law.valve_opens) & (theta <= law.valve_closes)]
     h, dh, d2h, _ = law.derivatives(theta)
-    y = law.valve_lift(theta, i_k)
+    y = cam.valve_lift(theta)
     a_v = i_k * omega**2 * d2h
     lift = law.lift_max * i_k
 
-    if v.kind == "exhaust":
-        p_gas = springs.gas_opening_force(d_g, gas.exhaust_back_pressure_MPa * MPA, gas.cylinder_intake_pressure_MPa * MPA)
+    if valve.kind == "exhaust":
+        p_gas = springs.gas_opening_force(d_g, gas.exhaust_back_pressure, gas.cylinder_intake_pressure)
         gas_source = "Valve-train practical works (n.d.), eq. (5.4)"
     else:
-        p_gas = springs.gas_opening_force(d_g, gas.intake_port_pressure_MPa * MPA, gas.cylinder_exhaust_pressure_MPa * MPA)
+        p_gas = springs.gas_opening_force(d_g, gas.intake_port_pressure, gas.cylinder_exhaust_pressure)
         gas_source = "Valve-train practical works (n.d.), eq. (5.5)"
 
-    sp = v.spring
+    sp, drive = valve.spring, valve.drive
     options = _spring_options(sp)
     spring_total_mass = 0.0
     for _ in range(20):
-        m_v, mass_source = reduced_mass(v, f_g, spring_total_mass)
-        required = springs.required_spring_force(m_v, a_v, v.drive.spring_reserve)
+        m_v, mass_source = train_mass(valve, spring_total_mass)
+        required = springs.required_spring_force(m_v, a_v, drive.spring_reserve)
         seat = springs.seat_load(m_v) if sp.min_preload_N is None else sp.min_preload_N
         requirement = springs.Requirement(y, required, max(p_gas, seat))
         search = springs.design_springs(requirement, d_g, omega, options)
         line, designs, n_pass = search.line, search.designs, search.passing
-        preload, rate = line.preload, line.rate
-        raised = preload <= requirement.min_preload * (1.0 + 1e-9) and requirement.min_preload > 0.0
+        raised = line.preload <= requirement.min_preload * (1.0 + 1e-9) and requirement.min_preload > 0.0
         lines = {"required": line}
         if sp.count == 2:
             lines.update(outer=designs["outer"].characteristic, inner=designs["inner"].characteristic)
         new_mass = sum(d.mass for d in designs.values())
-        if v.drive.masses is None or v.drive.masses.spring_kg is not None or abs(new_mass - spring_total_mass) < 1e-7:
+        if drive.masses is None or drive.masses.spring_kg is not None or abs(new_mass - spring_total_mass) < 1e-7:
             break
         spring_total_mass = new_mass
     diagnosis = None if search.passes else springs.diagnose(requirement, d_g, omega, options, search,
                                                             2.0 * omega)
-    m_t = masses.reduced_mass_at_tappet(m_v, i_k)
 
     chosen_line = springs.Characteristic(sum(d.characteristic.preload for d in designs.values()),
                                          sum(d.characteristic.rate for d in designs.values()), lift)
     lines["chosen"] = chosen_line
     ratio = chosen_line.max_deflection / chosen_line.preload_deflection
-    found.append(check("spring reserve K_z", v.drive.spring_reserve, *springs.SPRING_RESERVE_RANGE,
+    found.append(check("spring reserve K_z", drive.spring_reserve, *springs.SPRING_RESERVE_RANGE,
                        source="Valve-train practical works (n.d.), eq. (5.3)"))
     found.append(check("spring f_max/f_min", ratio, *springs.DEFLECTION_RATIO_RANGE, source="Valve-train practical works (n.d.), work 5 "
                        "(the chosen springs' rounded coils can move it off the required line's ratio)"))
@@ -139,77 +281,66 @@ def drive_stage(v, gas, law, omega, heel, roller):
         found.append(replace(designs["inner"].checks["frequency_difference"],
                              quantity="inner/outer spring frequency difference"))
 
-    spring_rec = {
-        "count": sp.count, "material": sp.material,
-        "preload_N": chosen_line.preload, "max_force_N": chosen_line.max_force, "rate_N_per_mm": chosen_line.rate * MM,
-        "required_preload_N": preload, "required_rate_N_per_mm": rate * MM, "required_max_force_N": line.max_force,
-        "required_deflection_ratio": line.max_deflection / line.preload_deflection,
-        "preload_set_by_gas_force": bool(raised and p_gas >= seat), "gas_force_N": p_gas, "gas_force_source": gas_source,
-        "preload_set_by_seat_load": bool(raised and seat > p_gas), "seat_load_N": seat,
-        "seat_load_source": "min_preload_N of the specification" if sp.min_preload_N is not None else
-        f"m_v x {springs.SEAT_ACCELERATION:.5g} m/s2 (100 g, a stated default)",
-        "deflection_ratio": ratio, "spring_reserve": v.drive.spring_reserve, "candidates_passing": n_pass,
-        "candidates_tried": search.tried,
-    }
-    if diagnosis:
-        spring_rec["diagnosis"] = diagnosis
     if sp.count == 1:
-        spring_rec.update(_spring_record(designs["spring"]))
+        design, pair = spring_record(designs["spring"]), {}
     else:
-        spring_rec.update({k: val for k, val in _spring_record(designs["outer"]).items()
-                           if k not in ("preload_N", "max_force_N", "rate_N_per_mm")})
-        spring_rec["passes_all_checks"] = search.passes
-        spring_rec["outer"] = _spring_record(designs["outer"])
-        spring_rec["inner"] = _spring_record(designs["inner"])
-        spring_rec["inner_share"] = sp.inner_share
+        outer = spring_record(designs["outer"])
+        design = replace(outer, preload=chosen_line.preload, max_force=chosen_line.max_force, rate=chosen_line.rate,
+                         passes_all_checks=search.passes)
+        pair = {"outer": outer, "inner": spring_record(designs["inner"]), "inner_share": sp.inner_share}
+    spring_result = SpringResult(
+        sp.count, sp.material, chosen_line.preload, chosen_line.max_force, chosen_line.rate, line.preload, line.rate,
+        line.max_force, line.max_deflection / line.preload_deflection, bool(raised and p_gas >= seat), p_gas,
+        gas_source, bool(raised and seat > p_gas), seat,
+        "min_preload_N of the specification" if sp.min_preload_N is not None else
+        f"m_v x {springs.SEAT_ACCELERATION:.5g} m/s2 (100 g, a stated default)",
+        ratio, drive.spring_reserve, n_pass, search.tried, diagnosis, design, **pair)
 
-    mass_rec = {"at_valve_kg": m_v, "at_tappet_kg": m_t, "source": mass_source, "layout": v.layout}
-    if v.drive.stiffness_N_per_mm is not None:
-        train, train_checks = _train_dynamics(v, law, omega, m_v, chosen_line.rate)
-        mass_rec.update(train)
+    train = None
+    if drive.stiffness is not None:
+        train, train_checks = _train_dynamics(valve, law, omega, m_v, chosen_line.rate)
         found += train_checks
+    mass_result = MassResult(m_v, masses.reduced_mass_at_tappet(m_v, i_k), mass_source, layout(valve), train)
 
-    strength_rec, strength_found = _strength(v, law, omega, heel, roller, theta, y, h, dh, d2h, a_v, m_v, chosen_line,
-                                             gas)
-    found += strength_found
+    strength_result, follower_checks = _strength(valve, gas, cam, theta, y, h, dh, d2h, a_v, m_v, chosen_line)
+    found += [replace(c, quantity=c.quantity.replace("_", " ")) for c in strength_result.checks] + follower_checks
     inertia = m_v * np.clip(-a_v, 0.0, None)
-    return DriveResults(mass_rec, spring_rec, strength_rec, found, y, inertia, required, lines)
+    return DriveResult(mass_result, spring_result, strength_result, tuple(found), y, inertia, required, lines)
 
 
-def _strength(v, law, omega, heel, roller, theta, y, h, dh, d2h, a_v, m_v, line, gas):
+def _strength(valve, gas, cam, theta, y, h, dh, d2h, a_v, m_v, line):
     """Work 7: the cam load along the open event and every check the layout and the given dimensions allow."""
-    i_k = v.rocker_ratio
-    parts = v.parts
+    law, omega, i_k, heel, roller = cam.law, cam.cam_speed, cam.rocker_ratio, cam.heel_radius, cam.roller_radius
+    parts, drive_layout, flat = valve.parts, layout(valve), cam.follower == "flat"
     spring_force = line.force(y)
-    cam = strength.cam_force(spring_force, m_v * a_v, i_k)
+    cam_force = strength.cam_force(spring_force, m_v * a_v, i_k)
+    verdicts, notes, found = [], [], []
     p_open = 0.0
-    if v.kind == "exhaust" and parts.head_diameter_mm is not None:
-        p_open = float(flow.circle_area(parts.head_diameter_mm * MM)) * max(
-            (gas.exhaust_opening_pressure_MPa - gas.exhaust_back_pressure_MPa) * MPA, 0.0)
-    cam[0] += i_k * p_open
-    k = int(np.argmax(cam))
-    p_max = float(cam[k])
-    rec = {"cam_force_max_N": p_max, "cam_force_max_cam_deg": rad_to_deg(theta[k]),
-           "valve_force_max_N": p_max / i_k, "gas_force_at_opening_N": p_open}
-    verdicts = []
-    notes = []
+    if valve.kind == "exhaust":
+        p_open, gas_check = _exhaust_gas_force(valve, gas)
+        found.append(gas_check)
+    cam_force[0] += i_k * p_open
+    k = int(np.argmax(cam_force))
+    p_max = float(cam_force[k])
+    contact_angle, side = None, (None, None)
 
-    def need(keys, check):
-        missing = [key for key in keys if getattr(parts, key) is None]
+    def need(keys, name):
+        """Whether the parts' keys (spec names) are given; a note names those missing."""
+        missing = [key for key in keys if getattr(parts, si_name(key)[0]) is None]
         if missing:
-            notes.append(f"{check}: not checked, parts.{', parts.'.join(missing)} not given")
+            notes.append(f"{name}: not checked, parts.{', parts.'.join(missing)} not given")
         return not missing
 
-    e_contact = parts.contact_modulus_MPa * MPA
+    e_contact = parts.contact_modulus
+    half_width = None
     if need(["camshaft_diameter_mm", "camshaft_span_mm", "cam_to_bearing_mm"], "camshaft_deflection"):
-        l1 = parts.cam_to_bearing_mm * MM
-        f = strength.camshaft_deflection(p_max, l1, parts.camshaft_span_mm * MM - l1, parts.camshaft_diameter_mm * MM,
-                                         parts.camshaft_bore_mm * MM, parts.camshaft_modulus_MPa * MPA,
+        l1 = parts.cam_to_bearing
+        f = strength.camshaft_deflection(p_max, l1, parts.camshaft_span - l1, parts.camshaft_diameter,
+                                         parts.camshaft_bore, parts.camshaft_modulus,
                                          parts.camshaft_deflection_coefficient)
         verdicts.append(strength.verdict("camshaft_deflection", f,
                                          f"coefficient {parts.camshaft_deflection_coefficient:.4g} (corrections note 20: not 0.8)"))
     if need(["cam_width_mm"], "cam_contact_stress"):
-        flat = v.cam.follower == "flat"
         rho = (geometry.flat_follower_curvature(heel, h, d2h) if flat
                else geometry.roller_follower_curvature(heel, roller, h, dh, d2h))
         # line contact needs a convex profile (flat) or a concave one wider than the roller
@@ -217,42 +348,105 @@ def _strength(v, law, omega, heel, roller, theta, y, h, dh, d2h, a_v, m_v, line,
             notes.append("cam_contact_stress: not checked, the profile is undercut (no line contact)")
         else:
             curv = 1.0 / rho + (0.0 if flat else 1.0 / roller)
-            sigma = strength.hertz_line_stress(cam, parts.cam_width_mm * MM, curv, e_contact)
+            sigma = strength.hertz_line_stress(cam_force, parts.cam_width, curv, e_contact)
+            if flat:
+                half_width = strength.hertz_half_width(cam_force, parts.cam_width, curv, e_contact)
             j = int(np.argmax(sigma))
-            rec["cam_contact_stress_cam_deg"] = rad_to_deg(theta[j])
+            contact_angle = float(theta[j])
             verdicts.append(strength.verdict("cam_contact_stress", sigma[j], "along the profile with the "
                                              "instantaneous force and radius (Shang Hanji (1988), eq. 2.5)"))
-    if v.layout in ("direct", "pushrod") and v.cam.follower == "flat" and \
+    if drive_layout in ("direct", "pushrod") and flat and \
             need(["tappet_diameter_mm", "tappet_guide_length_mm"], "tappet_side_pressure"):
         b = float(np.max(np.abs(dh)))
-        q = strength.tappet_side_pressure(p_max, b, parts.tappet_diameter_mm * MM, parts.tappet_guide_length_mm * MM)
-        verdicts.append(strength.verdict("tappet_side_pressure", q, f"offset b = {b / MM:.4g} mm = max dh/dphi (7.7)"))
-    if v.layout == "pushrod":
+        q = strength.tappet_side_pressure(p_max, b, parts.tappet_diameter, parts.tappet_guide_length)
+        verdicts.append(strength.verdict("tappet_side_pressure", q,
+                                         f"offset b = {to_display(b, 'mm'):.4g} mm = max dh/dphi (7.7)"))
+    if drive_layout == "pushrod":
         if need(["pushrod_length_mm", "pushrod_diameter_mm"], "pushrod_buckling_margin"):
-            inertia = strength.second_moment(parts.pushrod_diameter_mm * MM, parts.pushrod_bore_mm * MM)
-            p_cr = strength.euler_load(parts.pushrod_modulus_MPa * MPA, inertia, parts.pushrod_length_mm * MM)
+            inertia = strength.second_moment(parts.pushrod_diameter, parts.pushrod_bore)
+            p_cr = strength.euler_load(parts.pushrod_modulus, inertia, parts.pushrod_length)
             verdicts.append(strength.verdict("pushrod_buckling_margin", p_cr / p_max,
-                                             f"Euler load {p_cr:.5g} N; E = {parts.pushrod_modulus_MPa:g} MPa (corrections note 21)"))
+                                             f"Euler load {p_cr:.5g} N; E = {to_display(parts.pushrod_modulus, 'MPa'):g}"
+                                             " MPa (corrections note 21)"))
         if need(["ball_radius_mm", "socket_radius_mm"], "ball_socket_stress"):
             verdicts.append(strength.verdict("ball_socket_stress", strength.sphere_socket_stress(
-                p_max, e_contact, parts.ball_radius_mm * MM, parts.socket_radius_mm * MM)))
+                p_max, e_contact, parts.ball_radius, parts.socket_radius)))
         if need(["pushrod_head_area_mm2"], "pushrod_head_pressure"):
-            verdicts.append(strength.verdict("pushrod_head_pressure", p_max / (parts.pushrod_head_area_mm2 * MM**2)))
-    if v.layout in ("rocker", "pushrod"):
+            verdicts.append(strength.verdict("pushrod_head_pressure", p_max / parts.pushrod_head_area))
+    if drive_layout in ("rocker", "pushrod"):
         if need(["rocker_pad_width_mm", "rocker_pad_radius_mm"], "rocker_pad_stress"):
             verdicts.append(strength.verdict("rocker_pad_stress", strength.rocker_pad_stress(
-                p_max / i_k, e_contact, parts.rocker_pad_width_mm * MM, parts.rocker_pad_radius_mm * MM)))
+                p_max / i_k, e_contact, parts.rocker_pad_width, parts.rocker_pad_radius)))
         if need(["rocker_shaft_span_mm", "rocker_shaft_diameter_mm", "rocker_width_mm"], "rocker_shaft"):
-            st = strength.rocker_shaft_stresses(p_max, parts.rocker_shaft_span_mm * MM, parts.rocker_width_mm * MM,
-                                                parts.rocker_shaft_diameter_mm * MM, parts.rocker_shaft_bore_mm * MM)
+            st = strength.rocker_shaft_stresses(p_max, parts.rocker_shaft_span, parts.rocker_width,
+                                                parts.rocker_shaft_diameter, parts.rocker_shaft_bore)
             verdicts.append(strength.verdict("rocker_shaft_bending", st["bending"],
                                              f"built-in beam (7.15, corrections note 48); simply supported: "
-                                             f"{st['bending_simply_supported'] / MPA:.4g} MPa; load P_T max (corrections note 25)"))
+                                             f"{to_display(st['bending_simply_supported'], 'MPa'):.4g} MPa; load P_T "
+                                             "max (corrections note 25)"))
             verdicts.append(strength.verdict("rocker_shaft_shear", st["shear"]))
             verdicts.append(strength.verdict("rocker_shaft_bearing", st["bearing"]))
-    rec["checks"] = {c.quantity: _strength_record(c) for c in verdicts}
-    rec["not_checked"] = notes
-    return rec, [replace(c, quantity=c.quantity.replace("_", " ")) for c in verdicts]
+    if flat:
+        found += _edge_loading(parts, drive_layout, theta, dh, half_width, notes)
+    else:
+        side, side_check = _roller_side_force(cam, theta, h, dh, cam_force, drive_layout)
+        found.append(side_check)
+    return StrengthResult(p_max, float(theta[k]), p_max / i_k, p_open, contact_angle, *side, tuple(verdicts),
+                          tuple(notes)), found
+
+
+def _exhaust_gas_force(valve, gas):
+    """Gas force on the closed exhaust valve head as it opens [N] (7.1) and its record.
+
+    Without ``parts.head_diameter_mm`` the throat diameter stands in for the head's: the head is larger than
+    the throat, so the force is a lower bound, and the record says so.
+    """
+    head = valve.parts.head_diameter
+    diameter = valve.throat_diameter if head is None else head
+    force = float(flow.circle_area(diameter)) * max(gas.exhaust_opening_pressure - gas.exhaust_back_pressure, 0.0)
+    note = (f"on the head diameter d_n = {to_display(head, 'mm'):g} mm" if head is not None else
+            "parts.head_diameter_mm not given: computed on the throat diameter "
+            f"{to_display(diameter, 'mm'):g} mm, a lower bound (the head is larger than the throat)")
+    return force, check("gas force on the exhaust valve at opening", force, unit="N", severity="info",
+                        source=WORKS_7_1, note=note)
+
+
+def _edge_loading(parts, drive_layout, theta, dh, half_width, notes):
+    """The flat follower's contact against the edge of its face: max(|dh/dphi| + Hertz half-width) <= face radius.
+
+    The contact point of a flat follower lies dh/dphi from its axis (Shang's contour, eq. 2.15); the contact
+    band reaches a half-width further where the cam width is given.  The face is ``tappet_face_diameter_mm``,
+    else, for a tappet in a guide, ``tappet_diameter_mm`` (a bucket tappet's face is its diameter).
+    """
+    if parts.tappet_face_diameter is not None:
+        face, key = parts.tappet_face_diameter, "tappet_face_diameter_mm"
+    elif drive_layout in ("direct", "pushrod") and parts.tappet_diameter is not None:
+        face, key = parts.tappet_diameter, "tappet_diameter_mm (no tappet_face_diameter_mm: a bucket tappet)"
+    else:
+        notes.append("flat_follower_edge_loading: not checked, parts.tappet_face_diameter_mm not given")
+        return []
+    reach = np.abs(dh) + (0.0 if half_width is None else half_width)
+    j = int(np.argmax(reach))
+    width = ("with the Hertz half-width " f"{to_display(float(half_width[j]), 'mm'):.3g} mm" if half_width is not None
+             else "without the Hertz half-width (parts.cam_width_mm not given)")
+    return [check("flat follower contact reach (edge loading)", reach[j], high=face / 2.0, unit="mm",
+                  severity="failure", source=f"{SHANG_2_1}, eq. (2.15); {NORTON} (flat-faced follower face width)",
+                  note=f"contact offset |dh/dphi| {to_display(abs(float(dh[j])), 'mm'):.4g} mm at "
+                       f"{to_display(float(theta[j]), 'cam deg'):.4g} cam deg {width}; face radius from "
+                       f"parts.{key}")]
+
+
+def _roller_side_force(cam, theta, h, dh, cam_force, drive_layout):
+    """The largest side force of a roller follower, P_T tan(alpha), where and its (info) record."""
+    beta = geometry.roller_pressure_angle(cam.heel_radius, cam.roller_radius, h, dh)
+    side = strength.roller_side_force(cam_force, beta)
+    j = int(np.argmax(side))
+    carrier = "the tappet guide" if drive_layout in ("direct", "pushrod") else "the rocker and its shaft"
+    return (float(side[j]), float(theta[j])), check(
+        "roller follower side force", side[j], unit="N", severity="info",
+        source=f"{NORTON} (pressure angle: side load F_n sin(alpha)); no source gives an allowable",
+        note=f"at {to_display(float(theta[j]), 'cam deg'):.4g} cam deg, pressure angle "
+             f"{to_display(abs(float(beta[j])), 'deg'):.3g} deg; carried by {carrier}")
 
 
 def _strength_record(c):
@@ -265,15 +459,14 @@ def _strength_record(c):
     return out
 
 
-def _train_dynamics(v, law, omega, mass, spring_rate):
+def _train_dynamics(valve, law, omega, mass, spring_rate):
     """Natural frequency of the one-mass train and the perturbation parameter (Shang Hanji (1988), sections 1 and 3.3).
 
     omega_n = sqrt((c + K) / M) with the drive stiffness c and the spring rate K at the valve;
     epsilon = M omega^2 / (c + K) (the printed M omega^3 / c is dimensionally wrong, corrections note 30); and the law's own
     checks against the train (:meth:`valvetrain.laws.LiftLaw.train_checks`).
     """
-    c = v.drive.stiffness_N_per_mm / MM
+    c = valve.drive.stiffness
     omega_n = float(np.sqrt((c + spring_rate) / mass))
-    out = {"drive_stiffness_N_per_mm": c * MM, "natural_frequency_Hz": omega_n / (2 * np.pi),
-           "epsilon": mass * omega**2 / (c + spring_rate)}
-    return out, law.train_checks(omega_n, omega)
+    return (TrainDynamics(c, omega_n / (2 * np.pi), mass * omega**2 / (c + spring_rate)),
+            law.train_checks(omega_n, omega))

@@ -23,7 +23,7 @@ from ..specification import SpecError
 from ..specification.cams import layout
 from ..springs import NoSpringFits
 from ..units import DEG, MM
-from .drive import drive_stage
+from .drive import drive_record, drive_stage
 from .results import quantity, record
 
 ACCELERATION_LIMITS = (3500.0, -1500.0)
@@ -113,6 +113,14 @@ SEATING_VELOCITY_SOURCE = "working guidance 0.3-0.5 m/s (Valve-train practical w
 
 THROAT_AREA_SHARE_RANGE = (0.25, 0.40)
 """Inlet plus exhaust throat areas as a share of the piston area (Valve-train practical works (n.d.), work 1)."""
+
+PISTON_CLEARANCE_MIN = {"intake": 0.080 * 25.4 * MM, "exhaust": 0.100 * 25.4 * MM}
+"""Smallest recommended valve-to-piston gap [m]: 0.080 in intake, 0.100 in exhaust (the exhaust valve is hotter and
+chased by the rising piston); Shang's (2.13) only demands a gap > 0."""
+
+PISTON_CLEARANCE_SOURCE = ("engine builders' rule of at least 0.080 in intake, 0.100 in exhaust (HP Academy, "
+                           "'Measuring piston to valve clearance'); gap D_s = s + y0 - y: Shang Hanji (1988), "
+                           "section 2.1, eqs. (2.13)-(2.14)")
 
 MAX_LIFT_TO_THROAT = 0.5
 """Largest valve lift / throat diameter a design may have.  The curtain area pi d y equals the throat area at
@@ -231,6 +239,23 @@ class ClearanceResult:
 
     min_gap: float = quantity("min_clearance_mm", "mm", "smallest valve-to-piston gap over the open event")
     angle: float = quantity("crank_deg", "crank deg", "where the gap is smallest")
+    crank: np.ndarray = field(repr=False)   # crank angles of the open event, rad from the gas-exchange TDC
+    gap: np.ndarray = field(repr=False)     # valve-to-piston gap at those angles [m]
+
+    def within(self, low, high):
+        """The smallest gap [m] and its crank angle [rad] between the crank angles low and high, or None."""
+        inside = (self.crank >= low) & (self.crank <= high)
+        if not np.any(inside):
+            return None
+        i = int(np.argmin(np.where(inside, self.gap, np.inf)))
+        return float(self.gap[i]), float(self.crank[i])
+
+
+def clearance_check(kind, gap, angle, where):
+    """The check of a valve-to-piston gap [m] at a crank angle [rad] against :data:`PISTON_CLEARANCE_MIN`."""
+    return check(f"valve-piston clearance{where}", gap, low=PISTON_CLEARANCE_MIN[kind], unit="mm",
+                 source=PISTON_CLEARANCE_SOURCE,
+                 note=f"smallest at {math.degrees(angle):.4g} crank deg from the gas-exchange TDC")
 
 
 def wrap_crank(a):
@@ -401,7 +426,27 @@ def clearance_stage(cam, valve, engine):
                          f"{math.degrees(angle):.4g} crank deg (Shang Hanji (1988), eqs. 2.13-2.14, with piston_gap_tdc_mm = "
                          f"{valve.piston_gap_tdc / MM:g}); allowed a gap > 0: lower the lift near TDC or deepen the "
                          "valve pocket")
-    return ClearanceResult(float(gap[i]), angle)
+    return ClearanceResult(float(gap[i]), angle, wrap_crank(crank), gap)
+
+
+def overlap_clearance_checks(valves):
+    """The valve-to-piston gap of each valve over the overlap, from the first intake opening to the last exhaust
+    closing (crank angles from the gas-exchange TDC), where the piston is nearest the open valves.
+
+    ``valves`` maps names to :class:`ValveDesign`; no check without an intake and an exhaust valve that overlap.
+    """
+    opens = [v.cam.valve_opens for v in valves.values() if v.kind == "intake"]
+    closes = [v.cam.valve_closes for v in valves.values() if v.kind == "exhaust"]
+    if not opens or not closes or min(opens) >= max(closes):
+        return []
+    window = (min(opens), max(closes))
+    out = []
+    for name, v in valves.items():
+        found = None if v.clearance is None else v.clearance.within(*window)
+        if found is not None:
+            out.append(clearance_check(v.kind, *found, f" over the overlap ({math.degrees(window[0]):.4g} to "
+                                                        f"{math.degrees(window[1]):.4g} crank deg)").named(name))
+    return out
 
 
 def valve_checks(cam, flow_result, profile, valve, engine, timing):
@@ -476,7 +521,7 @@ class ValveDesign:
     profile: ProfileResult
     clearance: ClearanceResult
     records: dict                  # the law's own results (seed formulas, a measured table's analysis)
-    drive: object                  # DriveResults: masses, spring curves, strength
+    drive: object                  # DriveResult: masses, spring curves, strength
     checks: list = field(default_factory=list)   # every valvetrain.checks.Check of the valve, passed or not
 
     @property
@@ -508,7 +553,7 @@ class ValveDesign:
                "cam": {**record(self.cam), **record(self.profile), **self.records}, "flow": record(self.flow)}
         if self.clearance is not None:
             out["piston_clearance"] = record(self.clearance)
-        out.update(masses=self.drive.masses, spring=self.drive.spring, strength=self.drive.strength)
+        out.update(drive_record(self.drive))
         return out
 
     def __repr__(self):
@@ -552,15 +597,17 @@ def design_valve(name, valve, engine, gas, output, law=None):
     section = valve.cam.section
     records, found = section.records(cam.law, valve, engine, cam.nose)
     try:
-        drive = drive_stage(valve.section, gas.section, cam.law, cam.cam_speed, cam.heel_radius, cam.roller_radius)
+        drive = drive_stage(valve, gas, cam)
     except NoSpringFits as exc:
         raise SpecError([f"{at}.spring: {exc}"]) from None
-    found += valve_checks(cam, flow_result, profile, valve, engine, section.timing(valve, records)) + drive.checks
-    found += mass_checks(valve, drive.masses["at_valve_kg"], flow_result.throat_area)
+    found += valve_checks(cam, flow_result, profile, valve, engine, section.timing(valve, records)) + list(drive.checks)
+    found += mass_checks(valve, drive.masses.at_valve, flow_result.throat_area)
+    if clearance is not None:
+        found.append(clearance_check(valve.kind, clearance.min_gap, clearance.angle, ""))
     return ValveDesign(name, valve.kind, valve.count, cam, flow_result, profile, clearance, records, drive,
                        [c.named(name) for c in found])
 
 
 __all__ = ["CamResult", "ClearanceResult", "FlowResult", "LiftTable", "ProfileResult", "ValveDesign",
-           "clearance_stage", "design_valve", "flow_stage", "law_stage", "layout_check", "mass_checks", "profile_stage",
-           "valve_checks", "wrap_crank"]
+           "clearance_check", "clearance_stage", "design_valve", "flow_stage", "law_stage", "layout_check", "mass_checks",
+           "overlap_clearance_checks", "profile_stage", "valve_checks", "wrap_crank"]

@@ -163,6 +163,7 @@ class Parts(_Model):
     camshaft_modulus_MPa: _bounded(1e3, 1e6, "MPa") = 2.1e5
     camshaft_deflection_coefficient: _bounded(0.01, 100.0, low_open=False) = 64.0 / (3.0 * math.pi)
     tappet_diameter_mm: Optional[Length(2.0, 500.0, low_open=False)] = None
+    tappet_face_diameter_mm: Optional[Length(2.0, 500.0, low_open=False)] = None
     tappet_guide_length_mm: Optional[Length(1.0, 500.0, low_open=False)] = None
     pushrod_length_mm: Optional[Length(5.0, 2000.0, low_open=False)] = None
     pushrod_diameter_mm: Optional[Length(1.0, 100.0, low_open=False)] = None
