@@ -559,3 +559,23 @@ def test_the_harmonic_order_is_the_smallest_that_meets_the_accuracy():
         scan = next(k for k in range(4, 47) if np.sqrt(np.mean(
             (lift - measured.harmonic_lift(x, *harmonic_fit(x, lift, k, period_half))) ** 2)) <= accuracy)
         assert n == scan
+
+
+@pytest.mark.parametrize("step", [1.0, 0.5])
+def test_durations_do_not_depend_on_the_base_circle_around_the_lobe(tmp_path, step):
+    """Issue 10: the example's table padded with 0, 10 and 100 more zero-lift rows on either side (every 1 and 0.5
+    crank deg, against the table's 2): the same durations at the checking heights, time-area and fullness, to
+    1e-9 (the rows beyond the lobe's margin do not enter the fit)."""
+    angle, lift = read_lift_table(EXAMPLE_TABLE)
+    figures = []
+    for pad in (0, 10, 100):
+        before = angle[0] - step * np.arange(pad, 0, -1)
+        after = angle[-1] + step * np.arange(1, pad + 1)
+        a = np.concatenate([before, angle, after])
+        h = np.concatenate([np.zeros(pad), lift, np.zeros(pad)])
+        table = _write_table(tmp_path / f"pad{pad}.csv", a, h)
+        s = _example_results(_spec_text(table), tmp_path).summary
+        figures.append([d["duration_deg"] for d in s["cam"]["measured"]["durations_deg"]]
+                       + [s["flow"]["time_area_mm2_s"], s["flow"]["fullness"]])
+    for other in figures[1:]:
+        assert other == pytest.approx(figures[0], rel=1e-9)
