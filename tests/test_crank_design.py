@@ -37,9 +37,15 @@ def test_crank_tables(tmp_path):
     out = tmp_path / "d"
     assert CliRunner().invoke(main, ["run", "--out", str(out)]).exit_code == 0
     header = (out / "tables" / "crank.csv").read_text().splitlines()[0].split(",")
-    for col in ["crank_deg", "s_m", "v_m_s", "j_m_s2", "p_gas_MPa", "p_j_MPa", "p_MPa", "p_N_MPa", "p_S_MPa",
-                "p_K_MPa", "p_T_MPa", "T_kN", "M_cyl_Nm"]:
+    for col in ["crank_deg", "s_mm", "v_m_s", "j_m_s2", "p_gas_MPa", "p_j_MPa", "p_MPa", "p_N_MPa", "p_S_MPa",
+                "p_K_MPa", "p_T_MPa", "T_N", "M_cyl_Nm", "pin_radial_N", "pin_tangential_N"]:
         assert col in header
+    rows = np.loadtxt(out / "tables" / "crank.csv", delimiter=",", skiprows=1)
+    s_mm, p_t, t_n = (rows[:, header.index(c)] for c in ("s_mm", "p_T_MPa", "T_N"))
+    # the piston travels the example's stroke, 77.142857 mm (central mechanism: s(180 deg) = 2R)
+    assert s_mm.max() == pytest.approx(77.142857, rel=1e-6)
+    # T = p_T x piston area (seed 001), in N from MPa and mm2
+    assert t_n == pytest.approx(p_t * np.pi * 80.0**2 / 4.0, rel=1e-9, abs=1e-6)
     torque_header = (out / "tables" / "engine_torque.csv").read_text().splitlines()[0].split(",")
     assert torque_header == ["crank_deg", "M_total_Nm", "M_cyl1_Nm", "M_cyl2_Nm", "M_cyl3_Nm", "M_cyl4_Nm"]
     for plot in ("crank_forces.png", "crank_torque.png", "crank_pin_polar.png"):
@@ -136,3 +142,20 @@ def test_two_stroke_crank_torque(tmp_path):
     assert c.summary["torque_period_deg"] == pytest.approx(180.0)
     assert c.summary["firing_angles_deg"] == [0.0, 180.0]
     assert abs(c.summary["torque_work_balance"]) < 2e-4
+
+
+UNITS = ("_deg", "_mm", "_mm2", "_mm2_s", "_m_s", "_m_s2", "_m_s3", "_MPa", "_N", "_Nm", "_rpm")
+
+
+def test_every_table_names_its_unit(tmp_path):
+    """Issue 10: every CSV table of the output folder is in mm, deg, MPa and N (m/s, m/s2 for speeds and
+    accelerations, as the lift table) and names the unit of each column in its header."""
+    out = tmp_path / "d"
+    assert CliRunner().invoke(main, ["run", "--out", str(out)]).exit_code == 0
+    files = sorted((out / "tables").glob("*.csv")) + sorted((out / "contour").glob("*.csv"))
+    assert len(files) >= 6
+    for f in files:
+        header = next(line for line in f.read_text().splitlines() if not line.startswith("#")).split(",")
+        for col in header:
+            assert col == "segment" or col.endswith(UNITS), (f.name, col)
+        assert not any(col.endswith(("_m", "_kN")) for col in header), f.name

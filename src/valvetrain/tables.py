@@ -44,16 +44,17 @@ def lift_table_columns(table):
 
 CRANK_COLUMNS = [
     ("crank_deg", "crank angle of the cycle (0 = TDC of intake for a four-stroke, firing TDC at 360) [deg]"),
-    ("s_m", "piston displacement [m]"), ("v_m_s", "piston velocity [m/s]"), ("j_m_s2", "piston acceleration [m/s2]"),
+    ("s_mm", "piston displacement [mm]"), ("v_m_s", "piston velocity [m/s]"), ("j_m_s2", "piston acceleration [m/s2]"),
     ("beta_deg", "connecting-rod angle [deg]"), ("p_abs_MPa", "absolute cylinder pressure [MPa]"),
     ("p_gas_MPa", "gauge gas pressure p_g - p_0 [MPa]"), ("p_j_MPa", "specific inertia force [MPa]"),
     ("p_MPa", "total specific force on the pin axis [MPa]"), ("p_N_MPa", "normal (side) force [MPa]"),
     ("p_S_MPa", "rod force [MPa]"), ("p_K_MPa", "radial force on the crank [MPa]"),
-    ("p_T_MPa", "tangential force [MPa]"), ("T_kN", "tangential force [kN]"),
-    ("M_cyl_Nm", "torque of one cylinder [N m]"), ("pin_radial_kN", "crank-pin load, radial (K + rod centrifugal) [kN]"),
-    ("pin_tangential_kN", "crank-pin load, tangential [kN]"),
+    ("p_T_MPa", "tangential force [MPa]"), ("T_N", "tangential force [N]"),
+    ("M_cyl_Nm", "torque of one cylinder [N m]"), ("pin_radial_N", "crank-pin load, radial (K + rod centrifugal) [N]"),
+    ("pin_tangential_N", "crank-pin load, tangential [N]"),
 ]
-"""Columns of ``tables/crank.csv`` (one cylinder over its cycle; sign conventions of seed 001)."""
+"""Columns of ``tables/crank.csv`` (one cylinder over its cycle; sign conventions of seed 001), in the units of
+every table: mm, deg, m/s, m/s2, MPa, N, N m."""
 
 
 def crank_columns(crank):
@@ -61,11 +62,11 @@ def crank_columns(crank):
     c = crank.columns
     mpa = 1e-6
     return {
-        "crank_deg": rad_to_deg(crank.phi), "s_m": c["s"], "v_m_s": c["v"], "j_m_s2": c["j"],
+        "crank_deg": rad_to_deg(crank.phi), "s_mm": c["s"] / MM, "v_m_s": c["v"], "j_m_s2": c["j"],
         "beta_deg": rad_to_deg(c["beta"]), "p_abs_MPa": c["p_abs"] * mpa, "p_gas_MPa": c["p_gas"] * mpa,
         "p_j_MPa": c["p_j"] * mpa, "p_MPa": c["p"] * mpa, "p_N_MPa": c["p_N"] * mpa, "p_S_MPa": c["p_S"] * mpa,
-        "p_K_MPa": c["p_K"] * mpa, "p_T_MPa": c["p_T"] * mpa, "T_kN": c["T"] * 1e-3, "M_cyl_Nm": c["torque"],
-        "pin_radial_kN": c["pin_radial"] * 1e-3, "pin_tangential_kN": c["pin_tangential"] * 1e-3,
+        "p_K_MPa": c["p_K"] * mpa, "p_T_MPa": c["p_T"] * mpa, "T_N": c["T"], "M_cyl_Nm": c["torque"],
+        "pin_radial_N": c["pin_radial"], "pin_tangential_N": c["pin_tangential"],
     }
 
 
