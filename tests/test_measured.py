@@ -516,8 +516,13 @@ def test_the_exported_lift_table_reads_back(tmp_path):
 
     out = tmp_path / "design"
     assert CliRunner().invoke(main, ["run", "--out", str(out)]).exit_code == 0
-    cam = ('[valves.intake.cam]\nlaw = "table"\ntable_file = "design/contour/intake_lift.csv"\ntable_angle = "cam"\n'
-           'table_lift_at = "tappet"\nbase_radius_mm = 20.0\n')
+    declared = next(line for line in (out / "contour" / "intake_lift.csv").read_text().splitlines()
+                    if line.startswith("# read back with: "))[len("# read back with: "):]
+    keys = dict(kv.split(" = ") for kv in declared.split(", "))
+    assert keys == {"law": '"table"', "table_angle": '"cam"', "table_lift_at": '"tappet"',
+                    "table_zero": '"gas_exchange_tdc"', "clearance_mm": "0.25", "rocker_ratio": "1.6"}
+    cam = ("[valves.intake.cam]\n" + "".join(f"{k} = {v}\n" for k, v in keys.items() if k.startswith(("law", "table")))
+           + 'table_file = "design/contour/intake_lift.csv"\nbase_radius_mm = 20.0\n')
     text = re.sub(r"\[valves\.intake\.cam\]\n(.*\n)*?(?=follower)", cam, example_text(), count=1)
     text = re.sub(r"^(max_lift_mm|opens_deg|closes_deg) = .*\n", "", text, count=3, flags=re.MULTILINE)
     back = run(load_spec(_write(tmp_path / "back.toml", text))).to_dict()["valves"]["intake"]
@@ -530,6 +535,10 @@ def test_the_exported_lift_table_reads_back(tmp_path):
     assert back["cam"]["measured"]["closes_deg_at_0.1mm"] == pytest.approx(116.0 + 2 * np.degrees(fall) - 180.0,
                                                                            abs=0.3)
     assert back["flow"]["time_area_mm2_s"] == pytest.approx(kurz.summary["flow"]["time_area_mm2_s"], rel=1e-3)
+    # issue 10: the valve lift to 0.5 %, the valve's opening and closing (after the ramps) to 0.5 crank deg
+    assert back["flow"]["valve_lift_mm"] == pytest.approx(kurz.summary["flow"]["valve_lift_mm"], rel=0.005)
+    for key in ("valve_opens_crank_deg", "valve_closes_crank_deg"):
+        assert back["cam"][key] == pytest.approx(kurz.summary["cam"][key], abs=0.5)
 
 
 def _write(path, text):

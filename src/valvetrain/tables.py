@@ -134,3 +134,15 @@ def lift_export_columns(valve, step_deg):
     law = valve.law
     theta = np.radians(np.arange(np.ceil(np.degrees(law.start) / step_deg) * step_deg, np.degrees(law.end), step_deg))
     return {"angle_deg": np.degrees(theta + valve.nose_crank / 2.0), "lift_mm": law.lift(theta) / MM}
+
+
+def lift_export_comments(valve):
+    """The comment lines of ``contour/NAME_lift.csv``: what its columns measure, from where, in which units, and the
+    keys of a ``law = "table"`` cam that read it back to the same valve lift and timing."""
+    return [f"{valve.kind} valve cam: tappet (cam) lift including the ramps [mm] against the camshaft angle [deg]",
+            "angles from the gas-exchange TDC (camshaft angle = crank angle / 2; not from the cam nose)",
+            f"the ramps take up a clearance of {valve.law.ramp_height / MM:.6g} mm at the cam; valve lift = rocker "
+            f"ratio {valve.rocker_ratio:.6g} x (tappet lift - clearance)",
+            'read back with: law = "table", table_angle = "cam", table_lift_at = "tappet", '
+            f'table_zero = "gas_exchange_tdc", clearance_mm = {valve.law.ramp_height / MM:.6g}, '
+            f"rocker_ratio = {valve.rocker_ratio:.6g}"]
