@@ -1,5 +1,7 @@
 """Texts of the report and the plots in English and Russian."""
 
+from ..laws.measured import FIT_REASONS, SMOOTHINGS
+
 TEXT = {
     "en": {
         "summary": "Summary", "summary_valves": "Valves", "timing_diagram": "Valve timing diagram",
@@ -34,18 +36,8 @@ TEXT = {
         "rms_residual": "rms residual, mm", "max_residual": "max residual, mm",
         "jerk_sign_changes": "sign changes of the jerk",
         "fit_used": {"harmonic": "N-harmonic fit (N = {n})", "spline": "smoothing spline"},
-        "fit_reasons": {
-            "given": "fit = \"{fit}\" in the specification",
-            "harmonic_gcv": "the N-harmonic fit meets accuracy_mm and predicts left-out rows better than the smoothing "
-                            "spline (generalised cross-validation score {ratio:.3g} x the spline's)",
-            "spline_gcv": "the smoothing spline predicts left-out rows better than the N-harmonic fit, which also meets "
-                          "accuracy_mm (generalised cross-validation score {ratio:.3g} x the N-harmonic fit's)",
-            "harmonic_misses": "the N-harmonic fit does not meet accuracy_mm by its highest order",
-            "harmonic_swings": "the N-harmonic fit swings outside the table's range between the rows"},
-        "smoothings": {
-            "accuracy": "the smoothing spline is smoothed to an RMS residual of accuracy_mm (Reinsch 1967)",
-            "gcv": "the smoothing spline is smoothed by generalised cross-validation: the table is noisier than "
-                   "accuracy_mm"},
+        "fit_reasons": FIT_REASONS,
+        "smoothings": SMOOTHINGS,
         "table": "Lift table (every {step:g} cam deg; the full table is tables/{name}_lift.csv)",
         "plots": "Plots",
         "files": "Files",
