@@ -37,9 +37,15 @@ def test_crank_tables(tmp_path):
     out = tmp_path / "d"
     assert CliRunner().invoke(main, ["run", "--out", str(out)]).exit_code == 0
     header = (out / "tables" / "crank.csv").read_text().splitlines()[0].split(",")
-    for col in ["crank_deg", "s_m", "v_m_s", "j_m_s2", "p_gas_MPa", "p_j_MPa", "p_MPa", "p_N_MPa", "p_S_MPa",
-                "p_K_MPa", "p_T_MPa", "T_kN", "M_cyl_Nm"]:
+    for col in ["crank_deg", "s_mm", "v_m_s", "j_m_s2", "p_gas_MPa", "p_j_MPa", "p_MPa", "p_N_MPa", "p_S_MPa",
+                "p_K_MPa", "p_T_MPa", "T_N", "M_cyl_Nm", "pin_radial_N", "pin_tangential_N"]:
         assert col in header
+    rows = np.loadtxt(out / "tables" / "crank.csv", delimiter=",", skiprows=1)
+    s_mm, p_t, t_n = (rows[:, header.index(c)] for c in ("s_mm", "p_T_MPa", "T_N"))
+    # the piston travels the example's stroke, 77.142857 mm (central mechanism: s(180 deg) = 2R)
+    assert s_mm.max() == pytest.approx(77.142857, rel=1e-6)
+    # T = p_T x piston area (seed 001), in N from MPa and mm2
+    assert t_n == pytest.approx(p_t * np.pi * 80.0**2 / 4.0, rel=1e-9, abs=1e-6)
     torque_header = (out / "tables" / "engine_torque.csv").read_text().splitlines()[0].split(",")
     assert torque_header == ["crank_deg", "M_total_Nm", "M_cyl1_Nm", "M_cyl2_Nm", "M_cyl3_Nm", "M_cyl4_Nm"]
     for plot in ("crank_forces.png", "crank_torque.png", "crank_pin_polar.png"):
@@ -136,3 +142,63 @@ def test_two_stroke_crank_torque(tmp_path):
     assert c.summary["torque_period_deg"] == pytest.approx(180.0)
     assert c.summary["firing_angles_deg"] == [0.0, 180.0]
     assert abs(c.summary["torque_work_balance"]) < 2e-4
+
+
+UNITS = ("_deg", "_mm", "_mm2", "_mm2_s", "_m_s", "_m_s2", "_m_s3", "_MPa", "_N", "_Nm", "_rpm")
+
+
+def test_every_table_names_its_unit(tmp_path):
+    """Issue 10: every CSV table of the output folder is in mm, deg, MPa and N (m/s, m/s2 for speeds and
+    accelerations, as the lift table) and names the unit of each column in its header."""
+    out = tmp_path / "d"
+    assert CliRunner().invoke(main, ["run", "--out", str(out)]).exit_code == 0
+    files = sorted((out / "tables").glob("*.csv")) + sorted((out / "contour").glob("*.csv"))
+    assert len(files) >= 6
+    for f in files:
+        header = next(line for line in f.read_text().splitlines() if not line.startswith("#")).split(",")
+        for col in header:
+            assert col == "segment" or col.endswith(UNITS), (f.name, col)
+        assert not any(col.endswith(("_m", "_kN")) for col in header), f.name
+
+
+def _wiebe(**timing):
+    """The example's Wiebe cycle (compression ratio 10, 950 J, 80 x 77.142857 mm, rod 135 mm) with valve angles."""
+    cycle = pressure.WiebeCycle(10.0, 950.0, **timing)
+    return lambda deg: pressure.wiebe_pressure(np.radians(deg), cycle, 0.08, 0.0385714285, 0.0385714285 / 0.135, 4)
+
+
+def test_the_wiebe_pressure_is_continuous():
+    """Issue 10: no step anywhere in the cycle, with the valves at the dead centres and at the example's timing
+    (intake -26...258, exhaust 474...-10 crank deg from the gas-exchange TDC): refining the grid tenfold divides the
+    largest change between neighbouring points by ten (a step would keep it), and no change exceeds 0.2 MPa per
+    degree (the combustion's steepest rise is 0.18 MPa per degree)."""
+    timed = dict(intake_closes=np.radians(258.0 - 360.0), intake_opens=np.radians(-26.0),
+                 exhaust_opens=np.radians(474.0 - 360.0), exhaust_closes=np.radians(10.0))
+    for p in (_wiebe(), _wiebe(**timed)):
+        coarse, fine = (np.abs(np.diff(p(np.arange(0.0, 720.0001, step)))).max() for step in (0.1, 0.01))
+        assert fine < 0.12 * coarse
+        assert coarse < 0.2e6 * 0.1
+
+
+def test_the_blowdown_follows_the_exhaust_opening():
+    """Issue 10: the pressure leaves the closed cycle's expansion at the exhaust opening: opening at 500 instead of
+    540 crank deg, it equals the other's pressure up to 500 and lies below it from there, and reaches the exhaust
+    pressure 40 deg earlier (at the end of the 60 deg blowdown)."""
+    early, late = _wiebe(exhaust_opens=np.radians(140.0)), _wiebe()
+    before = np.arange(400.0, 500.0, 1.0)
+    assert early(before) == pytest.approx(late(before), rel=1e-12)
+    assert np.all(early(np.arange(502.0, 600.0, 2.0)) < late(np.arange(502.0, 600.0, 2.0)))
+    assert early(np.array([560.0, 600.0])) == pytest.approx([0.11e6, 0.11e6])
+    assert late(np.array([560.0]))[0] > 0.2e6
+
+
+def test_the_example_cycle_uses_its_valve_timing():
+    """The built-in example's pressure: the intake pressure up to the intake valve's closing at 258 crank deg
+    (compression starts there, not at BDC), and the source names the timing."""
+    crank = run(example_spec()).crank
+    p = crank.columns["p_abs"]
+    deg = np.degrees(crank.phi)
+    assert np.all(p[(deg > 30.0) & (deg <= 257.0)] == 0.09e6)
+    assert p[deg == 270.0][0] > 0.1e6
+    assert "compression from the intake valve's closing" in crank.pressure_source
+    assert "intake valve -26...258" in crank.pressure_source

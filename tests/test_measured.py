@@ -100,9 +100,9 @@ def test_an_accuracy_finer_than_the_noise_is_a_warning():
 
 def test_durations_at_checking_heights():
     """Durations of the spline through the exact table against root finding on the analytic law (0.1, 0.5, 1.0 mm,
-    0.050 in)."""
+    0.050 in).  The table is exact: its stated accuracy is 0.01 um (the spline follows a table to its accuracy)."""
     exact, theta, lift = _sampled(step_deg=0.5)
-    law = TableLaw(theta, lift, fit="spline")
+    law = TableLaw(theta, lift, fit="spline", accuracy=1e-8)
     for h_mm in (0.1, 0.5, 1.0, 1.27):
         h = h_mm * 1e-3
         rise = brentq(lambda t, h=h: exact.lift(t) - h, exact.start, 0.0)
@@ -177,13 +177,16 @@ def test_report_shows_the_measured_analysis(tmp_path):
     """The report carries the measured table's analysis: durations at the checking heights of results.json (0.1, 0.5,
     1.0 mm and 0.050 in = 1.27 mm) and the quality of both fits."""
     out = tmp_path / "d"
-    assert CliRunner().invoke(main, ["run", str(EXAMPLE), "--out", str(out)]).exit_code == 0
+    result = CliRunner().invoke(main, ["run", str(EXAMPLE), "--out", str(out)])
+    assert result.exit_code == 0
+    assert "note: valves.intake: measured table fitted by the N-harmonic fit (N = 9): " in result.output
     html = (out / "report.html").read_text()
     data = json.loads((out / "results.json").read_text())["valves"]["intake"]["cam"]
     assert "Measured lift table" in html and "sign changes of the jerk" in html
     for d in data["measured"]["durations_deg"]:
         assert f'<td class="n">{d["height_mm"]:.6g}</td><td class="n">{d["duration_deg"]:.6g}</td>' in html
-    assert "Shang Hanji (1988), sections 5.1-5.3; GCV smoothing spline" in html
+    assert "Shang Hanji (1988), sections 5.1-5.3; smoothing spline to the measurement accuracy" in html
+    assert "fit used and why" in html and "N-harmonic fit (N = 9): the N-harmonic fit meets accuracy_mm" in html
 
 
 def _example_results(text, tmp_path):
@@ -447,18 +450,61 @@ def test_no_library_message_reaches_the_user():
                               "cross-validation finds no smoothing for them)")
 
 
+def test_the_example_table_is_the_built_in_valve_lift_with_noise():
+    """The independent reference of the tests below: examples/data/measured-intake-lobe.csv is the built-in
+    example's valve lift (the seed 000 appendix Kurz cam, 1.6 x the tappet lift above the 0.25 mm clearance,
+    nose at 116 crank deg) 3 crank deg late, with about 2 um of noise: the rows differ from the Kurz law by 2 um RMS
+    and never more than 10 um."""
+    law = seed000_law()
+    angle, lift = read_lift_table(EXAMPLE_TABLE)
+    valve = 1.6 * np.maximum(law.lift(np.radians((angle - 119.0) / 2.0)) - 0.25e-3, 0.0) / 1e-3
+    rest = lift - valve
+    assert np.sqrt(np.mean(rest[valve > 0] ** 2)) == pytest.approx(0.002, rel=0.2)
+    assert np.abs(rest).max() < 0.01
+
+
 def test_the_default_fit_follows_the_accuracy(tmp_path):
-    """Issue 10: the example's GCV spline keeps its 2 um noise (min acceleration -2505 m/s2 against the law's
-    -1930).  By default (fit = "auto") the N-harmonic fit that meets accuracy_mm = 0.005 is used, and named in
-    results.json; its acceleration is the law's to 5 %."""
+    """Issue 10: the example's spline by generalised cross-validation alone keeps its 2 um noise (min acceleration
+    about -2500 m/s2 against the Kurz law's -1930, above).  Both fits now follow the table to its stated accuracy,
+    accuracy_mm = 0.005: the spline smoothed to that RMS residual and the N-harmonic fit of the smallest order that
+    meets it; fit = "auto" takes the one with the smaller generalised cross-validation score, here the N-harmonic
+    fit, and results.json says so and why.  Both accelerations are the law's to 4 %."""
     omega = np.pi * 7000 / 60
     true = seed000_law().extremes(omega)
     auto = _example_results(_spec_text(EXAMPLE_TABLE), tmp_path)
     spline = _example_results(_spec_text(EXAMPLE_TABLE, fit='"spline"'), tmp_path)
-    assert auto.summary["cam"]["coefficients"]["fit"] == auto.summary["cam"]["measured"]["fit"] == "harmonic"
-    assert auto.summary["cam"]["min_acceleration_m_s2"] == pytest.approx(true.min_acceleration, rel=0.05)
+    noisy = _example_results(_spec_text(EXAMPLE_TABLE, fit='"spline"', accuracy_mm="0.0001"), tmp_path)
+    m = auto.summary["cam"]["measured"]
+    assert auto.summary["cam"]["coefficients"]["fit"] == m["fit"] == "harmonic"
+    assert m["fit_reason_code"] == "harmonic_gcv"
+    assert m["fit_reason"].startswith("N-harmonic fit (N = 9): the N-harmonic fit meets accuracy_mm")
+    assert spline.summary["cam"]["measured"]["spline_smoothing"] == "accuracy"
+    assert spline.summary["cam"]["measured"]["fit_quality"]["spline"]["rms_residual_mm"] == pytest.approx(0.005,
+                                                                                                         rel=0.01)
+    for r in (auto, spline):
+        assert r.summary["cam"]["min_acceleration_m_s2"] == pytest.approx(true.min_acceleration, rel=0.04)
     assert auto.summary["cam"]["max_acceleration_m_s2"] == pytest.approx(true.max_acceleration, rel=0.05)
-    assert spline.summary["cam"]["min_acceleration_m_s2"] < 1.25 * true.min_acceleration
+    assert noisy.summary["cam"]["measured"]["spline_smoothing"] == "gcv"
+    assert noisy.summary["cam"]["min_acceleration_m_s2"] < 1.2 * true.min_acceleration
+
+
+def test_the_spline_residual_is_the_accuracy():
+    """Reinsch's spline of a table with 2 um noise: smoothed to an RMS residual of 5 um, 3 um (to 0.1 %, the
+    tolerance of lambda); asked for 0.5 um, finer than the noise, it keeps the residual of generalised
+    cross-validation (below the noise: GCV follows part of it)."""
+    _, theta, lift = _sampled(noise=2e-6)
+    for accuracy in (5e-6, 3e-6):
+        _, how, rms, _ = measured.smoothing_spline(theta, lift, accuracy)
+        assert how == "accuracy" and rms == pytest.approx(accuracy, rel=1e-3)
+    _, how, rms, _ = measured.smoothing_spline(theta, lift, 0.5e-6)
+    assert how == "gcv" and 0.5e-6 < rms < 2e-6
+
+
+def test_the_gcv_score_of_a_straight_line_fit():
+    """The GCV score n RSS / (n - p)^2 of a least-squares line (p = 2) through n points: the leave-one-out
+    prediction error to first order; an analytic identity checked against the formula by hand."""
+    assert measured.gcv_score(1.0, 2, 10) == pytest.approx(10 * 10 * 1.0 / 64)
+    assert np.isnan(measured.gcv_score(1.0, 10, 10))
 
 
 def test_the_exported_lift_table_reads_back(tmp_path):
@@ -470,8 +516,13 @@ def test_the_exported_lift_table_reads_back(tmp_path):
 
     out = tmp_path / "design"
     assert CliRunner().invoke(main, ["run", "--out", str(out)]).exit_code == 0
-    cam = ('[valves.intake.cam]\nlaw = "table"\ntable_file = "design/contour/intake_lift.csv"\ntable_angle = "cam"\n'
-           'table_lift_at = "tappet"\nbase_radius_mm = 20.0\n')
+    declared = next(line for line in (out / "contour" / "intake_lift.csv").read_text().splitlines()
+                    if line.startswith("# read back with: "))[len("# read back with: "):]
+    keys = dict(kv.split(" = ") for kv in declared.split(", "))
+    assert keys == {"law": '"table"', "table_angle": '"cam"', "table_lift_at": '"tappet"',
+                    "table_zero": '"gas_exchange_tdc"', "clearance_mm": "0.25", "rocker_ratio": "1.6"}
+    cam = ("[valves.intake.cam]\n" + "".join(f"{k} = {v}\n" for k, v in keys.items() if k.startswith(("law", "table")))
+           + 'table_file = "design/contour/intake_lift.csv"\nbase_radius_mm = 20.0\n')
     text = re.sub(r"\[valves\.intake\.cam\]\n(.*\n)*?(?=follower)", cam, example_text(), count=1)
     text = re.sub(r"^(max_lift_mm|opens_deg|closes_deg) = .*\n", "", text, count=3, flags=re.MULTILINE)
     back = run(load_spec(_write(tmp_path / "back.toml", text))).to_dict()["valves"]["intake"]
@@ -484,6 +535,10 @@ def test_the_exported_lift_table_reads_back(tmp_path):
     assert back["cam"]["measured"]["closes_deg_at_0.1mm"] == pytest.approx(116.0 + 2 * np.degrees(fall) - 180.0,
                                                                            abs=0.3)
     assert back["flow"]["time_area_mm2_s"] == pytest.approx(kurz.summary["flow"]["time_area_mm2_s"], rel=1e-3)
+    # issue 10: the valve lift to 0.5 %, the valve's opening and closing (after the ramps) to 0.5 crank deg
+    assert back["flow"]["valve_lift_mm"] == pytest.approx(kurz.summary["flow"]["valve_lift_mm"], rel=0.005)
+    for key in ("valve_opens_crank_deg", "valve_closes_crank_deg"):
+        assert back["cam"][key] == pytest.approx(kurz.summary["cam"][key], abs=0.5)
 
 
 def _write(path, text):
@@ -513,3 +568,23 @@ def test_the_harmonic_order_is_the_smallest_that_meets_the_accuracy():
         scan = next(k for k in range(4, 47) if np.sqrt(np.mean(
             (lift - measured.harmonic_lift(x, *harmonic_fit(x, lift, k, period_half))) ** 2)) <= accuracy)
         assert n == scan
+
+
+@pytest.mark.parametrize("step", [1.0, 0.5])
+def test_durations_do_not_depend_on_the_base_circle_around_the_lobe(tmp_path, step):
+    """Issue 10: the example's table padded with 0, 10 and 100 more zero-lift rows on either side (every 1 and 0.5
+    crank deg, against the table's 2): the same durations at the checking heights, time-area and fullness, to
+    1e-9 (the rows beyond the lobe's margin do not enter the fit)."""
+    angle, lift = read_lift_table(EXAMPLE_TABLE)
+    figures = []
+    for pad in (0, 10, 100):
+        before = angle[0] - step * np.arange(pad, 0, -1)
+        after = angle[-1] + step * np.arange(1, pad + 1)
+        a = np.concatenate([before, angle, after])
+        h = np.concatenate([np.zeros(pad), lift, np.zeros(pad)])
+        table = _write_table(tmp_path / f"pad{pad}.csv", a, h)
+        s = _example_results(_spec_text(table), tmp_path).summary
+        figures.append([d["duration_deg"] for d in s["cam"]["measured"]["durations_deg"]]
+                       + [s["flow"]["time_area_mm2_s"], s["flow"]["fullness"]])
+    for other in figures[1:]:
+        assert other == pytest.approx(figures[0], rel=1e-9)

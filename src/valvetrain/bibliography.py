@@ -172,6 +172,22 @@ WORKS = {
         authors="Johnson, K. L.",
         title="Contact Mechanics", kind="book", publisher="Cambridge University Press", place="Cambridge",
         year="1985"),
+    "heywood1988": Work(
+        short="Heywood (1988)",
+        authors="Heywood, J. B.",
+        title="Internal Combustion Engine Fundamentals", kind="book", publisher="McGraw-Hill", place="New York",
+        year="1988"),
+    "reinsch1967": Work(
+        short="Reinsch (1967)",
+        authors="Reinsch, C. H.",
+        title="Smoothing by spline functions", kind="article", publisher="Numerische Mathematik, vol. 10, pp. 177-183",
+        year="1967"),
+    "craven1979": Work(
+        short="Craven and Wahba (1979)",
+        authors="Craven, P.; Wahba, G.",
+        title="Smoothing noisy data with spline functions: estimating the correct degree of smoothing by the method "
+              "of generalized cross-validation", kind="article",
+        publisher="Numerische Mathematik, vol. 31, pp. 377-403", year="1979"),
     "hairer1993": Work(
         short="Hairer, Nørsett and Wanner (1993)",
         authors="Hairer, E.; Nørsett, S. P.; Wanner, G.",

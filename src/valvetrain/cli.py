@@ -123,6 +123,8 @@ def run(file, out, force, lang):
         if v.summary["cam"]["undercut"]:
             click.echo(f"refused: valves.{name}: the cam profile is undercut (rho_min = {v.summary['cam']['rho_min_mm']:.4g}"
                        " mm): no contour, DXF or manufacturing table was written for it")
+        if "measured" in v.summary["cam"]:
+            click.echo(f"note: valves.{name}: measured table fitted by the {v.summary['cam']['measured']['fit_reason']}")
     _echo_checks(results)
 
 

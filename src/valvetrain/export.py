@@ -9,7 +9,7 @@ import numpy as np
 from .outfolder import atomic_folder
 from .specification import spec_toml
 from .tables import (cartesian_contour_columns, contour_columns, crank_columns, engine_torque_columns,
-                     lift_export_columns, lift_table_columns, polar_contour_columns, two_stroke_columns,
+                     lift_export_columns, lift_export_comments, lift_table_columns, polar_contour_columns, two_stroke_columns,
                      two_stroke_speed_columns)
 from .units import MM
 
@@ -20,13 +20,15 @@ def _cell(x):
     return f"{x:.10g}" if np.isfinite(x) else ""
 
 
-def write_csv(path, columns):
-    """Write equal-length columns (a dict name -> sequence) as a CSV file with a header row.
+def write_csv(path, columns, comments=()):
+    """Write equal-length columns (a dict name -> sequence) as a CSV file with a header row, after ``comments``
+    (lines written with a leading ``# ``).
 
     Numbers are written with 10 significant digits; a quantity that is not finite (the infinite
     radius of curvature of a straight flank) is an empty cell, never ``inf`` or ``nan``."""
     names = list(columns)
     with open(path, "w", newline="", encoding="utf-8") as fh:
+        fh.writelines(f"# {line}\n" for line in comments)
         w = csv.writer(fh)
         w.writerow(names)
         for row in zip(*(columns[n] for n in names), strict=True):
@@ -140,7 +142,7 @@ def write_outputs(results, out, lang="en", inputs=(), force=False):
             step = results.spec.output.export_step_deg
             write_csv(tmp / "contour" / f"{name}_polar.csv", polar_contour_columns(v, step))
             write_csv(tmp / "contour" / f"{name}_cartesian.csv", cartesian_contour_columns(v, step))
-            write_csv(tmp / "contour" / f"{name}_lift.csv", lift_export_columns(v, step))
+            write_csv(tmp / "contour" / f"{name}_lift.csv", lift_export_columns(v, step), lift_export_comments(v))
             write_dxf(tmp / "contour" / f"{name}.dxf", v)
         if results.crank is not None:
             write_csv(tmp / "tables" / "crank.csv", crank_columns(results.crank))

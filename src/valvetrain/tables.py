@@ -44,16 +44,17 @@ def lift_table_columns(table):
 
 CRANK_COLUMNS = [
     ("crank_deg", "crank angle of the cycle (0 = TDC of intake for a four-stroke, firing TDC at 360) [deg]"),
-    ("s_m", "piston displacement [m]"), ("v_m_s", "piston velocity [m/s]"), ("j_m_s2", "piston acceleration [m/s2]"),
+    ("s_mm", "piston displacement [mm]"), ("v_m_s", "piston velocity [m/s]"), ("j_m_s2", "piston acceleration [m/s2]"),
     ("beta_deg", "connecting-rod angle [deg]"), ("p_abs_MPa", "absolute cylinder pressure [MPa]"),
     ("p_gas_MPa", "gauge gas pressure p_g - p_0 [MPa]"), ("p_j_MPa", "specific inertia force [MPa]"),
     ("p_MPa", "total specific force on the pin axis [MPa]"), ("p_N_MPa", "normal (side) force [MPa]"),
     ("p_S_MPa", "rod force [MPa]"), ("p_K_MPa", "radial force on the crank [MPa]"),
-    ("p_T_MPa", "tangential force [MPa]"), ("T_kN", "tangential force [kN]"),
-    ("M_cyl_Nm", "torque of one cylinder [N m]"), ("pin_radial_kN", "crank-pin load, radial (K + rod centrifugal) [kN]"),
-    ("pin_tangential_kN", "crank-pin load, tangential [kN]"),
+    ("p_T_MPa", "tangential force [MPa]"), ("T_N", "tangential force [N]"),
+    ("M_cyl_Nm", "torque of one cylinder [N m]"), ("pin_radial_N", "crank-pin load, radial (K + rod centrifugal) [N]"),
+    ("pin_tangential_N", "crank-pin load, tangential [N]"),
 ]
-"""Columns of ``tables/crank.csv`` (one cylinder over its cycle; sign conventions of Power units manual (n.d.))."""
+"""Columns of ``tables/crank.csv`` (one cylinder over its cycle; sign conventions of Power units manual (n.d.)), in the units of
+every table: mm, deg, m/s, m/s2, MPa, N, N m."""
 
 
 def crank_columns(crank):
@@ -61,11 +62,11 @@ def crank_columns(crank):
     c = crank.columns
     mpa = 1e-6
     return {
-        "crank_deg": rad_to_deg(crank.phi), "s_m": c["s"], "v_m_s": c["v"], "j_m_s2": c["j"],
+        "crank_deg": rad_to_deg(crank.phi), "s_mm": c["s"] / MM, "v_m_s": c["v"], "j_m_s2": c["j"],
         "beta_deg": rad_to_deg(c["beta"]), "p_abs_MPa": c["p_abs"] * mpa, "p_gas_MPa": c["p_gas"] * mpa,
         "p_j_MPa": c["p_j"] * mpa, "p_MPa": c["p"] * mpa, "p_N_MPa": c["p_N"] * mpa, "p_S_MPa": c["p_S"] * mpa,
-        "p_K_MPa": c["p_K"] * mpa, "p_T_MPa": c["p_T"] * mpa, "T_kN": c["T"] * 1e-3, "M_cyl_Nm": c["torque"],
-        "pin_radial_kN": c["pin_radial"] * 1e-3, "pin_tangential_kN": c["pin_tangential"] * 1e-3,
+        "p_K_MPa": c["p_K"] * mpa, "p_T_MPa": c["p_T"] * mpa, "T_N": c["T"], "M_cyl_Nm": c["torque"],
+        "pin_radial_N": c["pin_radial"], "pin_tangential_N": c["pin_tangential"],
     }
 
 
@@ -133,3 +134,15 @@ def lift_export_columns(valve, step_deg):
     law = valve.law
     theta = np.radians(np.arange(np.ceil(np.degrees(law.start) / step_deg) * step_deg, np.degrees(law.end), step_deg))
     return {"angle_deg": np.degrees(theta + valve.nose_crank / 2.0), "lift_mm": law.lift(theta) / MM}
+
+
+def lift_export_comments(valve):
+    """The comment lines of ``contour/NAME_lift.csv``: what its columns measure, from where, in which units, and the
+    keys of a ``law = "table"`` cam that read it back to the same valve lift and timing."""
+    return [f"{valve.kind} valve cam: tappet (cam) lift including the ramps [mm] against the camshaft angle [deg]",
+            "angles from the gas-exchange TDC (camshaft angle = crank angle / 2; not from the cam nose)",
+            f"the ramps take up a clearance of {valve.law.ramp_height / MM:.6g} mm at the cam; valve lift = rocker "
+            f"ratio {valve.rocker_ratio:.6g} x (tappet lift - clearance)",
+            'read back with: law = "table", table_angle = "cam", table_lift_at = "tappet", '
+            f'table_zero = "gas_exchange_tdc", clearance_mm = {valve.law.ramp_height / MM:.6g}, '
+            f"rocker_ratio = {valve.rocker_ratio:.6g}"]

@@ -148,17 +148,39 @@ def pv_to_angle(volume, pressure, bore, radius, lam, compression_ratio, strokes,
     return phi[keep], p[keep]
 
 
+BLOWDOWN_DEG = 60.0
+"""Crank angle over which the cylinder pressure falls from its value at the exhaust opening to the exhaust
+pressure [deg]: the blowdown runs from the exhaust opening to somewhat past BDC (Heywood (1988), section 6.5); the
+model's figure, about twice the exhaust lead of a four-stroke."""
+
+OVERLAP_DEG = 20.0
+"""Crank angle over which the pressure changes from the exhaust to the intake pressure about the gas-exchange TDC
+when the valves' timing is not known [deg]."""
+
+
+def blend(phi, start, length):
+    """Weight rising smoothly from 0 at ``start`` to 1 at ``start + length`` (half a cosine wave; 0 before, 1
+    after), continuous with its first derivative; a step where ``length`` is 0."""
+    if length <= 0.0:
+        return np.where(np.asarray(phi) >= start, 1.0, 0.0)
+    z = np.clip((np.asarray(phi, dtype=float) - start) / length, 0.0, 1.0)
+    return 0.5 - 0.5 * np.cos(np.pi * z)
+
+
 @dataclass(frozen=True)
 class WiebeCycle:
     """Parameters of the single-zone Wiebe cycle model (SI; angles relative to the firing TDC, rad).
 
     The built-in example's indicator diagram: gas exchange at constant pressures (intake
-    at ``intake_pressure``, exhaust at ``exhaust_pressure``; the valves are taken to open
-    and close at the dead centres), a closed cycle from BDC to BDC with a constant ratio of
-    specific heats, no wall heat loss and a Wiebe heat release
-    :math:`x = 1 - \\exp(-a\\,((\\varphi-\\varphi_s)/\\Delta\\varphi)^{m+1})`.
-    (Wiebe (1970); the
-    standard single-zone model, not in the design sources of this package.)
+    at ``intake_pressure``, exhaust at ``exhaust_pressure``), a closed cycle from the intake
+    valve's closing to the exhaust valve's opening with a constant ratio of specific heats, no
+    wall heat loss and a Wiebe heat release
+    :math:`x = 1 - \\exp(-a\\,((\\varphi-\\varphi_s)/\\Delta\\varphi)^{m+1})`, a blowdown from the
+    exhaust opening to the exhaust pressure over ``blowdown`` and, for a four-stroke, the change from
+    the exhaust to the intake pressure over the valve overlap (:func:`wiebe_pressure`).  The valve
+    angles default to the dead centres.
+    (Wiebe (1970); Heywood (1988), sections 9.2 (Wiebe function) and 6.5
+    (exhaust blowdown); the standard single-zone model, not in the design sources of this package.)
     """
 
     compression_ratio: float
@@ -170,6 +192,11 @@ class WiebeCycle:
     a: float = 6.908
     m: float = 2.0
     gamma: float = 1.33
+    intake_closes: float = -np.pi            # start of compression, from the firing TDC [rad]
+    exhaust_opens: float = np.pi             # start of the blowdown, from the firing TDC [rad]
+    blowdown: float = np.radians(BLOWDOWN_DEG)
+    intake_opens: float = np.radians(-OVERLAP_DEG / 2.0)   # from the gas-exchange TDC [rad] (four-stroke)
+    exhaust_closes: float = np.radians(OVERLAP_DEG / 2.0)  # from the gas-exchange TDC [rad] (four-stroke)
 
 
 def wiebe_fraction(phi, cycle, firing):
@@ -224,7 +251,8 @@ def wiebe_pressure(phi, cycle, bore, radius, lam, strokes, k=0.0):
 
     Notes
     -----
-    Over the closed cycle (from BDC before the firing TDC to BDC after it)
+    Over the closed cycle (from BDC before the firing TDC to BDC after it for a two-stroke; for a
+    four-stroke from the intake valve's closing to the end of the blowdown)
 
     .. math:: \\frac{dp}{d\\varphi} = \\frac{\\gamma - 1}{V}\\,Q\\frac{dx}{d\\varphi}
               - \\gamma\\frac{p}{V}\\frac{dV}{d\\varphi},
@@ -243,6 +271,11 @@ def wiebe_pressure(phi, cycle, bore, radius, lam, strokes, k=0.0):
     :data:`WIEBE_PIECE`, cut at the start and the nominal end of combustion and graded towards the
     start (:data:`WIEBE_GRADING`); V is the exact cylinder volume (:func:`cylinder_volume`).
 
+    A four-stroke's blowdown blends this pressure into the exhaust pressure from the exhaust opening
+    over ``cycle.blowdown`` (:func:`blend`, half a cosine wave); the exhaust pressure holds to the valve
+    overlap, across which it blends into the intake pressure, which holds to the intake valve's closing:
+    the pressure is continuous over the whole cycle, with a continuous slope at the ends of the blends.
+
     References
     ----------
     Wiebe's heat release, see :class:`WiebeCycle`; the single-zone energy equation with a
@@ -251,11 +284,16 @@ def wiebe_pressure(phi, cycle, bore, radius, lam, strokes, k=0.0):
     phi = np.asarray(phi, dtype=float)
     firing = np.pi * (strokes - 2)          # 2 pi for a four-stroke, 0 (= 2 pi) for a two-stroke
     exponent = cycle.gamma - 1.0
+    four = strokes == 4
 
     def volume(t):
         return cylinder_volume(t, bore, radius, lam, cycle.compression_ratio, k)
 
-    t0, t1 = firing - np.pi, firing + np.pi
+    if four:
+        t0, opens = firing + cycle.intake_closes, firing + cycle.exhaust_opens
+        t1 = opens + cycle.blowdown
+    else:
+        t0, t1 = firing - np.pi, firing + np.pi
     burn = firing + cycle.start
     at_start = volume(burn) ** exponent
 
@@ -264,21 +302,50 @@ def wiebe_pressure(phi, cycle, bore, radius, lam, strokes, k=0.0):
 
     length = cycle_length(strokes)
     rel = np.mod(phi - t0, length)                  # angle since the start of the closed cycle
-    closed = rel <= 2 * np.pi
+    closed = rel <= t1 - t0
     t = t0 + rel[closed]
     grid = np.unique(np.concatenate([[t0, t1], t]))
-    pieces = np.linspace(t0, t1, int(np.ceil(2 * np.pi / WIEBE_PIECE)) + 1)
+    pieces = np.linspace(t0, t1, int(np.ceil((t1 - t0) / WIEBE_PIECE)) + 1)
     graded = burn + cycle.duration * 2.0 ** -np.arange(WIEBE_GRADING)
+    cuts = np.concatenate([pieces, [burn], graded])
     released = (at_start * (wiebe_fraction(grid, cycle, firing) - wiebe_fraction(t0, cycle, firing))
-                + cumulative_integral(excess, grid, np.concatenate([pieces, [burn], graded])))
+                + cumulative_integral(excess, grid, cuts[(cuts >= t0) & (cuts <= t1)]))
     pv = cycle.intake_pressure * volume(t0) ** cycle.gamma + exponent * cycle.heat_input * released
     p = np.full(phi.shape, cycle.intake_pressure)
     p[closed] = pv[np.searchsorted(grid, t)] / volume(t) ** cycle.gamma
-    if strokes == 4:
-        cyc = np.mod(phi, length)
-        p = np.where((cyc > 3 * np.pi) & (cyc < 4 * np.pi), cycle.exhaust_pressure, p)
-        p = np.where(cyc < np.pi, cycle.intake_pressure, p)
+    if four:
+        # blowdown: from the closed cycle's pressure at the exhaust opening to the exhaust pressure
+        w = blend(t, opens, cycle.blowdown)
+        p[closed] = (1.0 - w) * p[closed] + w * cycle.exhaust_pressure
+        # exhaust stroke, then the change to the intake pressure over the overlap about the gas-exchange TDC
+        cyc = np.mod(phi - t1, length) + t1          # cycle angle from the end of the blowdown on
+        change = cycle.exhaust_closes - cycle.intake_opens
+        w = blend(cyc, length + cycle.intake_opens, change)
+        exchange = ~closed
+        p[exchange] = ((1.0 - w) * cycle.exhaust_pressure + w * cycle.intake_pressure)[exchange]
     return p
+
+
+def check_timing(cycle):
+    """Refuse valve angles the four-stroke model cannot place: the closed cycle must start before the firing TDC
+    and the blowdown end before the intake valve opens, the overlap after it.
+
+    Raises
+    ------
+    ValueError
+        Naming the crank angles (from the gas-exchange TDC) and what is allowed.
+    """
+    ivc, evo = np.degrees(cycle.intake_closes) + 360.0, np.degrees(cycle.exhaust_opens) + 360.0
+    end = evo + np.degrees(cycle.blowdown)
+    ivo, evc = np.degrees(cycle.intake_opens) + 720.0, np.degrees(cycle.exhaust_closes) + 720.0
+    if not 0.0 < ivc < 360.0 + np.degrees(cycle.start):
+        raise ValueError(f"the intake valve closes at {ivc:.4g} crank deg; the Wiebe model needs it after the "
+                         f"gas-exchange TDC and before the start of combustion, 0...{360.0 + np.degrees(cycle.start):.4g}")
+    if not (360.0 < evo and end <= ivo and evc - 720.0 < ivc and evc >= ivo):
+        raise ValueError(f"the exhaust valve opens at {evo:.4g} crank deg (blowdown to {end:.4g}) and the overlap "
+                         f"runs {ivo - 720.0:.4g}...{evc - 720.0:.4g}; the Wiebe model needs the opening after the "
+                         "firing TDC (360), the blowdown ended before the intake valve opens, and the exhaust valve "
+                         "closed before the intake valve closes")
 
 
 def indicated_work(phi, pressure, volume):

@@ -23,7 +23,7 @@ from ..crank.pressure import PressureFileError
 from ..files import TableFileError
 from ..specification import SpecError, si
 from ..units import MM
-from .crank import CrankResults, CrankSummary, crank_stage
+from .crank import CrankResults, CrankSummary, crank_stage, valve_timing
 from .drive import MassResult, SpringResult, StrengthResult
 from .results import json_schema, quantity, record
 from .twostroke import TwoStrokeResults, TwoStrokeSummary, two_stroke_stage
@@ -172,7 +172,7 @@ def run(spec, laws=None):
             crank_view = si(spec.crank, spec)
         except PressureFileError as exc:
             raise SpecError([f"crank.pressure_file: {exc}"]) from None
-    crank = crank_stage(crank_view, engine) if crank_view is not None else None
+    crank = crank_stage(crank_view, engine, valve_timing(valves)) if crank_view is not None else None
     ports = two_stroke_stage(si(spec.two_stroke), crank_view, engine) if spec.two_stroke is not None else None
     for stage, tag in ((crank, "crank"), (ports, "two-stroke")):
         if stage is not None:

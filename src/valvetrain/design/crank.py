@@ -136,17 +136,60 @@ def _masses(c, area, rods_per_pin):
     return dynamics.reduced_masses(mass("piston"), mass("rod"), mass("crank"), c.rod_pin_fraction, rods_per_pin)
 
 
-def _gas_pressure(c, strokes, phi, bore, radius, lam, k):
+def valve_timing(valves):
+    """The gas-exchange angles of the Wiebe model from the designed valves [rad, crank angle from the gas-exchange
+    TDC]: ``intake_opens``/``intake_closes`` of the intake valves (the earliest opening, the latest closing),
+    ``exhaust_opens``/``exhaust_closes`` of the exhaust valves; a kind without valves is left out."""
+    out = {}
+    for kind in ("intake", "exhaust"):
+        these = [v for v in valves.values() if v.kind == kind]
+        if these:
+            out[f"{kind}_opens"] = min(v.cam.valve_opens for v in these)
+            out[f"{kind}_closes"] = max(v.cam.valve_closes for v in these)
+    return out
+
+
+def wiebe_timing(timing):
+    """Keyword arguments of :class:`~valvetrain.crank.pressure.WiebeCycle` from :func:`valve_timing` (angles
+    moved to the model's frames: the closed cycle's from the firing TDC, the overlap's from the gas-exchange TDC),
+    and the words of the pressure source naming them."""
+    two_pi, four_pi = 2.0 * np.pi, 4.0 * np.pi
+    kw, said = {}, []
+    if "intake_closes" in timing:
+        kw["intake_closes"] = np.mod(timing["intake_closes"], four_pi) - two_pi
+        kw["intake_opens"] = np.mod(timing["intake_opens"] + two_pi, four_pi) - two_pi
+        said.append(f"intake valve {np.degrees(timing['intake_opens']):.4g}...{np.degrees(timing['intake_closes']):.4g}")
+    if "exhaust_opens" in timing:
+        kw["exhaust_opens"] = np.mod(timing["exhaust_opens"], four_pi) - two_pi
+        kw["exhaust_closes"] = np.mod(timing["exhaust_closes"] + two_pi, four_pi) - two_pi
+        said.append(f"exhaust valve {np.degrees(np.mod(timing['exhaust_opens'], four_pi)):.4g}..."
+                    f"{np.degrees(timing['exhaust_closes']):.4g}")
+    where = (" and ".join(said) + " crank deg from the gas-exchange TDC") if said else ""
+    return kw, where
+
+
+def _gas_pressure(c, strokes, phi, bore, radius, lam, k, timing=None):
     """Cylinder pressure on the grid from the indicator diagram or the Wiebe model, and its description."""
     if c.indicator is None:
         cy = c.cycle
+        kw, where = wiebe_timing(timing or {}) if strokes == 4 else ({}, "")
         model = pressure.WiebeCycle(c.compression_ratio, cy.heat_input_J, cy.intake_pressure, cy.exhaust_pressure,
-                                    cy.combustion_start, cy.combustion_duration, cy.wiebe_a, cy.wiebe_m, cy.gamma)
+                                    cy.combustion_start, cy.combustion_duration, cy.wiebe_a, cy.wiebe_m, cy.gamma,
+                                    **kw)
+        if strokes == 4:
+            try:
+                pressure.check_timing(model)
+            except ValueError as exc:
+                raise SpecError([f"crank.cycle: {exc}"]) from None
+            valves = (f"compression from the intake valve's closing, a blowdown of {pressure.BLOWDOWN_DEG:g} deg "
+                      f"from the exhaust valve's opening ({where or 'valves at the dead centres'})")
+        else:
+            valves = "the ports at the dead centres"
         source = (f"Wiebe cycle model: compression ratio {c.compression_ratio:g}, heat input {cy.heat_input_J:g} J, "
                   f"start {np.degrees(cy.combustion_start):g} deg from firing TDC, duration "
                   f"{np.degrees(cy.combustion_duration):g} deg, a = {cy.wiebe_a:g}, m = {cy.wiebe_m:g}, gamma = "
                   f"{cy.gamma:g}, no wall heat loss, gas exchange at {cy.intake_pressure / MPA:g}/"
-                  f"{cy.exhaust_pressure / MPA:g} MPa with the valves at the dead centres")
+                  f"{cy.exhaust_pressure / MPA:g} MPa, {valves} (Heywood 1988)")
         return pressure.wiebe_pressure(phi, model, bore, radius, lam, strokes, k), source
     table = c.indicator
     if table.kind == "angle":
@@ -174,9 +217,9 @@ def _firing(eng):
     return torque.even_firing(list(order), eng.strokes), f"even firing, order {'-'.join(map(str, order))}"
 
 
-def crank_stage(c, eng):
-    """Run the crank chapter: ``c`` and ``eng`` are the SI views of [crank] and [engine]; returns
-    :class:`CrankResults`."""
+def crank_stage(c, eng, timing=None):
+    """Run the crank chapter: ``c`` and ``eng`` are the SI views of [crank] and [engine], ``timing`` the valves'
+    angles for the Wiebe model (:func:`valve_timing`); returns :class:`CrankResults`."""
     bore, stroke, rod, omega = crank_geometry(c, eng)
     radius = stroke / 2.0
     lam, k = radius / rod, c.offset / radius
@@ -187,7 +230,7 @@ def crank_stage(c, eng):
     area = np.pi * bore**2 / 4.0
 
     try:
-        p_abs, source = _gas_pressure(c, strokes, phi, bore, radius, lam, k)
+        p_abs, source = _gas_pressure(c, strokes, phi, bore, radius, lam, k, timing)
     except pressure.PressureFileError as exc:
         raise SpecError([f"crank.pressure_file: {exc}"]) from None
     masses = _masses(c, area, 2 if eng.layout == "v" else 1)

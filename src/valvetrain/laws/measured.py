@@ -52,8 +52,12 @@ window of data does not determine (they live in the part of the period without d
 being fitted to the noise with huge coefficients."""
 
 FITS = ("auto", "spline", "harmonic")
-"""Fits of a table: the N-harmonic fit where it meets the stated accuracy (auto), the smoothing spline, or the
-N-harmonic fit."""
+"""Fits of a table: the one of the two below that predicts left-out rows better (auto), the smoothing spline, or
+the N-harmonic fit."""
+
+SMOOTHING_XTOL = 1e-3
+"""Tolerance of the smoothing parameter of the spline, as a relative change of lambda: its residual RMS is the
+target to about 0.1 %."""
 
 
 def noise_level(lift):
@@ -369,7 +373,8 @@ class FitQuality:
 
 
 class TableLaw(RampedLaw):
-    """A measured lift table as a lift law, through a smoothing spline (GCV) or an N-harmonic fit.
+    """A measured lift table as a lift law, through a smoothing spline or an N-harmonic fit, each following the
+    table to its stated accuracy.
 
     The event is where the fit leaves the base circle and returns to it (:func:`lift_event`): outside it the
     lift is zero, inside it the fitted lift is positive, so the law never dips below the base circle and its
@@ -383,12 +388,11 @@ class TableLaw(RampedLaw):
     lift : ndarray
         Follower lift [m].
     fit : {"auto", "spline", "harmonic"}
-        The curve the law evaluates: Reinsch's smoothing spline with the smoothing chosen by
-        generalised cross-validation (:func:`scipy.interpolate.make_smoothing_spline`), the
-        stand-in of this package for Shang's 回弹法 fairing, or the N-harmonic fit; ``"auto"`` takes the
-        N-harmonic fit where it meets the accuracy and stays within the table's range, else the spline
-        (GCV follows the measurement noise into the acceleration, a fit that meets the stated accuracy with
-        few harmonics does not).
+        The curve the law evaluates: Reinsch's smoothing spline whose RMS residual is the stated accuracy
+        (:func:`smoothing_spline`; generalised cross-validation's where the table is noisier), the stand-in of this
+        package for Shang's 回弹法 fairing, or the N-harmonic fit of the smallest order that meets the accuracy;
+        ``"auto"`` takes the one with the smaller generalised cross-validation score where the N-harmonic fit meets
+        the accuracy and stays within the table's range, else the spline (:func:`choose_fit`).
     accuracy : float
         Measurement accuracy [m]: the harmonic order N is the smallest whose RMS residual
         meets it (choose N by the residual, not the largest N that fits); the base-circle
@@ -407,6 +411,10 @@ class TableLaw(RampedLaw):
         The lobe centre (symmetry axis) in the table's cam frame [rad], after the false-asymmetry correction.
     fit : str
         The fit the law evaluates, ``"spline"`` or ``"harmonic"``.
+    choice : (str, float)
+        Why: a code of :data:`FIT_REASONS` and the ratio of the generalised cross-validation scores.
+    smoothing : str
+        How the spline's smoothing was chosen, ``"accuracy"`` or ``"gcv"`` (:func:`smoothing_spline`).
 
     Raises
     ------
@@ -416,7 +424,8 @@ class TableLaw(RampedLaw):
     """
 
     name = "table"
-    source = ('Shang Hanji (1988), sections 5.1-5.3; GCV smoothing spline or N-harmonic fit, nose finding and false asymmetry '
+    source = ('Shang Hanji (1988), sections 5.1-5.3; smoothing spline to the measurement accuracy (Reinsch (1967)) or N-harmonic '
+              'fit, chosen by generalised cross-validation (Craven and Wahba (1979)); nose finding and false asymmetry '
               '(reconstructed in this package)')
 
     def __init__(self, angles, lift, fit="auto", accuracy=5e-6, max_harmonics=60, ramp_height=0.0,
@@ -436,7 +445,7 @@ class TableLaw(RampedLaw):
         self.harmonics = int(n)
         cos, sin = np.cos(np.arange(n + 1) * w * shift), np.sin(np.arange(n + 1) * w * shift)
         self._harmonic = (a * cos + b * sin, b * cos - a * sin, w)
-        self._spline = _smoothing_spline(x - self.centre, y)
+        self._spline, self.smoothing, self.spline_rms, lam = smoothing_spline(x - self.centre, y, self.accuracy)
         window = (float(x[0] - self.centre), float(x[-1] - self.centre))
         band = BASE_CIRCLE_ACCURACIES * self.accuracy
         swing = self.fitted(np.linspace(*window, 8001), "harmonic")[0]
@@ -446,9 +455,10 @@ class TableLaw(RampedLaw):
                              f"{swing.max() / 1e-3:.4g} mm of tappet lift between the rows; allowed "
                              f"{-band / 1e-3:.4g} to {(y.max() + band) / 1e-3:.4g} mm (the table's range and 3 x "
                              "accuracy_mm): use fit = \"spline\"")
-        if fit == "auto":
-            fit = "harmonic" if bounded and self.harmonic_rms <= self.accuracy else "spline"
-        self.fit = fit
+        self.gcv = {"harmonic": gcv_score(self.harmonic_rms, 2 * n + 1, x.size),
+                    "spline": gcv_score(self.spline_rms, spline_dof(x - self.centre, lam), x.size)}
+        self.fit, self.choice = choose_fit(fit, bounded, self.harmonic_rms <= self.accuracy, self.gcv)
+        fit = self.fit
         # the fit used stays within the table's range and reaches its top, to the noise of the measurement
         tol = BASE_CIRCLE_ACCURACIES * max(self.accuracy, noise_level(y))
         swing = self.fitted(np.linspace(*window, 8001))[0]
@@ -553,10 +563,136 @@ class TableLaw(RampedLaw):
                 "rows_per_point": self.rows_per_point}
 
 
-def _smoothing_spline(x, y):
-    """Reinsch's smoothing spline with GCV; a failure is told in the terms of the table, not scipy's."""
+def _spline_rms(x, y, lam):
+    """The smoothing spline with parameter ``lam`` and its RMS residual."""
     try:
-        return make_smoothing_spline(x, y)
+        spline = make_smoothing_spline(x, y, lam=lam)
+    except (ValueError, np.linalg.LinAlgError):
+        raise ValueError(f"the smoothing spline cannot be fitted to the {x.size} points of the lobe") from None
+    return spline, float(np.sqrt(np.mean((spline(x) - y) ** 2)))
+
+
+def smoothing_spline(x, y, accuracy):
+    """Reinsch's smoothing spline whose RMS residual is the stated measurement accuracy, or the GCV spline's if
+    that is larger (the table is noisier than stated).
+
+    Among all curves whose RMS residual is at most ``accuracy`` the cubic smoothing spline with that residual has
+    the least integral of the squared second derivative (Reinsch's formulation): it follows the table to its
+    stated accuracy and no closer, so the noise of the rows does not pass into the acceleration.  Generalised
+    cross-validation alone (:func:`scipy.interpolate.make_smoothing_spline` without ``lam``) follows 2 um of noise
+    on a table every 2 crank deg into an acceleration 30 % too large; it is kept where its residual exceeds the
+    stated accuracy, which the table then does not meet.  The residual grows with lambda, so lambda is found by
+    Brent's method on log(lambda) after bracketing by decades.
+
+    Parameters
+    ----------
+    x, y : ndarray
+        Angles [rad], increasing, and lifts [m].
+    accuracy : float
+        Measurement accuracy, as an RMS error [m].
+
+    Returns
+    -------
+    (BSpline, str, float, float)
+        The spline, how its smoothing was chosen (``"accuracy"`` or ``"gcv"``), its RMS residual [m] and lambda.
+
+    Raises
+    ------
+    ValueError
+        Where no spline can be fitted, in the terms of the table.
+
+    References
+    ----------
+    Reinsch (1967), the smoothing spline; Craven and Wahba (1979), generalised cross-validation.
+    """
+    try:
+        gcv = make_smoothing_spline(x, y)
     except (ValueError, np.linalg.LinAlgError):
         raise ValueError(f"the smoothing spline cannot be fitted to the {x.size} points of the lobe (generalised "
                          "cross-validation finds no smoothing for them)") from None
+    gcv_rms = float(np.sqrt(np.mean((gcv(x) - y) ** 2)))
+    how, target = ("gcv", gcv_rms) if gcv_rms >= accuracy else ("accuracy", accuracy)
+
+    def excess(log_lam):
+        return _spline_rms(x, y, np.exp(log_lam))[1] - target
+
+    low = high = np.log(1e-6 * np.ptp(x) ** 3)     # lambda carries the unit of x^3
+    while excess(high) < 0.0 and high < low + 80.0:
+        high += np.log(10.0)
+    while excess(low) > 0.0 and low > high - 80.0:
+        low -= np.log(10.0)
+    if low == high:
+        low -= np.log(10.0)
+    if excess(low) > 0.0 or excess(high) < 0.0:     # no lambda reaches the target: keep the GCV spline
+        return gcv, "gcv", gcv_rms, float("nan")
+    lam = float(np.exp(brentq(excess, low, high, xtol=SMOOTHING_XTOL)))
+    spline, rms = _spline_rms(x, y, lam)
+    return spline, how, rms, lam
+
+
+def spline_dof(x, lam):
+    """Degrees of freedom of the smoothing spline with parameter ``lam``: the trace of its hat matrix, from the
+    splines of the unit vectors (one banded solve with n right-hand sides).  NaN for an unknown lambda."""
+    if not np.isfinite(lam):
+        return float("nan")
+    return float(np.trace(make_smoothing_spline(x, np.eye(x.size), lam=lam)(x)))
+
+
+def gcv_score(rms, dof, points):
+    """Generalised cross-validation score n RSS / (n - dof)^2 [m^2] of a linear fit with RMS residual ``rms``.
+
+    The mean squared error with which the fit predicts a row left out of it, to first order (Craven and Wahba
+    1979, see :func:`smoothing_spline`); it compares fits of different kinds on the same rows.  NaN when the fit
+    has as many degrees of freedom as rows, or an unknown number.
+    """
+    if not np.isfinite(dof) or dof >= points:
+        return float("nan")
+    return points * points * rms**2 / (points - dof) ** 2
+
+
+FIT_REASONS = {
+    "given": "fit = \"{fit}\" in the specification",
+    "harmonic_gcv": "the N-harmonic fit meets accuracy_mm and predicts left-out rows better than the smoothing "
+                    "spline (generalised cross-validation score {ratio:.3g} x the spline's)",
+    "spline_gcv": "the smoothing spline predicts left-out rows better than the N-harmonic fit, which also meets "
+                  "accuracy_mm (generalised cross-validation score {ratio:.3g} x the N-harmonic fit's)",
+    "harmonic_misses": "the N-harmonic fit does not meet accuracy_mm by its highest order",
+    "harmonic_swings": "the N-harmonic fit swings outside the table's range between the rows",
+}
+"""Why a fit was chosen, by the code of :func:`choose_fit` (the report translates the same codes)."""
+
+SMOOTHINGS = {
+    "accuracy": "the smoothing spline is smoothed to an RMS residual of accuracy_mm (Reinsch 1967)",
+    "gcv": "the smoothing spline is smoothed by generalised cross-validation: the table is noisier than accuracy_mm",
+}
+"""How the spline's smoothing was chosen (:func:`smoothing_spline`)."""
+
+
+def choose_fit(fit, bounded, meets, gcv):
+    """The fit a law evaluates and why: ``(fit, (code, ratio))``, a code of :data:`FIT_REASONS`.
+
+    ``"auto"`` compares the two fits where both are admissible, the N-harmonic fit meeting the stated accuracy and
+    staying within the table's range, by their generalised cross-validation scores (``gcv``, :func:`gcv_score`):
+    both follow the table to its accuracy, and the one that predicts left-out rows better carries less noise.
+    Otherwise it takes the smoothing spline.
+    """
+    if fit != "auto":
+        return fit, ("given", float("nan"))
+    if not bounded:
+        return "spline", ("harmonic_swings", float("nan"))
+    if not meets:
+        return "spline", ("harmonic_misses", float("nan"))
+    ratio = gcv["harmonic"] / gcv["spline"]
+    if not np.isfinite(ratio) or ratio <= 1.0:
+        return "harmonic", ("harmonic_gcv", ratio)
+    return "spline", ("spline_gcv", 1.0 / ratio)
+
+
+def fit_reason(law):
+    """One sentence: the fit a :class:`TableLaw` evaluates and why (results.json, the CLI)."""
+    code, ratio = law.choice
+    used = f"N-harmonic fit (N = {law.harmonics})" if law.fit == "harmonic" else "smoothing spline"
+    text = f"{used}: " + FIT_REASONS[code].format(fit=law.fit, ratio=ratio)
+    if law.fit == "spline":
+        text += "; " + SMOOTHINGS[law.smoothing]
+    return text

@@ -57,12 +57,24 @@ def _abridged_table(valve):
     return [[fmt(cols[c][i]) for c in TABLE_COLUMNS] for i in np.flatnonzero(keep)]
 
 
-def _measured(rec):
-    """The measured-table analysis for the report: scalars, durations at the checking heights, fit quality."""
+def _measured(rec, t):
+    """The measured-table analysis for the report: scalars (the fit's reason in the report's language),
+    durations at the checking heights, fit quality."""
     if rec is None:
         return None
-    scalars = [(k, val) for k, val in rec.items() if not isinstance(val, (list, dict))]
+    hidden = ("fit_reason_code", "spline_smoothing", "gcv_ratio_harmonic_to_spline")
+    scalars = [(k, _fit_reason(rec, t) if k == "fit_reason" else val) for k, val in rec.items()
+               if not isinstance(val, (list, dict)) and k not in hidden]
     return {"summary": scalars, "durations": rec["durations_deg"], "quality": list(rec["fit_quality"].items())}
+
+
+def _fit_reason(rec, t):
+    """The fit a measured table used and why, from the codes of results.json in the report's language."""
+    ratio = rec.get("gcv_ratio_harmonic_to_spline")
+    ratio = float("nan") if ratio is None else ratio if rec["fit"] == "harmonic" else 1.0 / ratio
+    text = (t["fit_used"][rec["fit"]].format(n=rec["harmonics"]) + ": "
+            + t["fit_reasons"][rec["fit_reason_code"]].format(fit=rec["fit"], ratio=ratio))
+    return text + ("; " + t["smoothings"][rec["spline_smoothing"]] if rec["fit"] == "spline" else "")
 
 
 def _summary(results, t):
@@ -118,7 +130,7 @@ def render_report(results, plots, lang="en", folder=None):
             "coefficients": list(s["cam"]["coefficients"].items()),
             "seed": [(k, val, s["cam"][k]) for k, val in s["cam"].get("seed_formulas", {}).items()],
             "residuals": list(s["cam"].get("residuals", {}).items()),
-            "measured": _measured(s["cam"].get("measured")),
+            "measured": _measured(s["cam"].get("measured"), TEXT[lang]),
             "clearance": list(s.get("piston_clearance", {}).items()),
             "masses": list(s["masses"].items()),
             "spring": [(k, val) for k, val in s["spring"].items() if not isinstance(val, dict)],

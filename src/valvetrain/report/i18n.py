@@ -1,5 +1,7 @@
 """Texts of the report and the plots in English and Russian."""
 
+from ..laws.measured import FIT_REASONS, SMOOTHINGS
+
 TEXT = {
     "en": {
         "summary": "Summary", "summary_valves": "Valves", "timing_diagram": "Valve timing diagram",
@@ -33,6 +35,9 @@ TEXT = {
         "checking_height": "checking height, mm", "duration": "duration, deg", "fit": "fit",
         "rms_residual": "rms residual, mm", "max_residual": "max residual, mm",
         "jerk_sign_changes": "sign changes of the jerk",
+        "fit_used": {"harmonic": "N-harmonic fit (N = {n})", "spline": "smoothing spline"},
+        "fit_reasons": FIT_REASONS,
+        "smoothings": SMOOTHINGS,
         "table": "Lift table (every {step:g} cam deg; the full table is tables/{name}_lift.csv)",
         "plots": "Plots",
         "files": "Files",
@@ -67,7 +72,7 @@ TEXT = {
         "names": {
             "max_lift_mm": "max lift in the table, mm", "lobe_centre_deg": "lobe centre (after the asymmetry "
             "correction), deg from the gas-exchange TDC", "harmonics": "harmonics of the N-harmonic fit", "asymmetry_rms_mm":
-            "rms odd part (true asymmetry) after the correction, mm", "table_angle": "table angles",
+            "rms odd part (true asymmetry) after the correction, mm", "fit_reason": "fit used and why", "table_angle": "table angles",
             "table_lift_at": "table lift at", "table_zero": "table angles from", "opens_deg_at_0.1mm": "opens at 0.1 mm valve lift, crank deg",
             "closes_deg_at_0.1mm": "closes at 0.1 mm valve lift, crank deg", "source": "source",
             "V1_m_s": "V' throat velocity, m/s (Valve-train practical works (n.d.), eq. 1.1)",
@@ -130,6 +135,20 @@ TEXT = {
         "checking_height": "контрольная высота, мм", "duration": "продолжительность, град", "fit": "аппроксимация",
         "rms_residual": "СКО отклонения, мм", "max_residual": "наибольшее отклонение, мм",
         "jerk_sign_changes": "перемены знака третьей производной",
+        "fit_used": {"harmonic": "N-гармоническая аппроксимация (N = {n})", "spline": "сглаживающий сплайн"},
+        "fit_reasons": {
+            "given": "fit = \"{fit}\" задано в исходных данных",
+            "harmonic_gcv": "N-гармоническая аппроксимация укладывается в accuracy_mm и лучше предсказывает "
+                            "исключённые точки, чем сглаживающий сплайн (критерий обобщённой перекрёстной проверки "
+                            "{ratio:.3g} от критерия сплайна)",
+            "spline_gcv": "сглаживающий сплайн лучше предсказывает исключённые точки, чем N-гармоническая "
+                          "аппроксимация, тоже укладывающаяся в accuracy_mm (критерий обобщённой перекрёстной "
+                          "проверки {ratio:.3g} от критерия гармонической аппроксимации)",
+            "harmonic_misses": "N-гармоническая аппроксимация не укладывается в accuracy_mm и при наибольшем порядке",
+            "harmonic_swings": "N-гармоническая аппроксимация выходит между точками за пределы подъёмов таблицы"},
+        "smoothings": {
+            "accuracy": "сплайн сглажен до СКО отклонения, равного accuracy_mm (Reinsch 1967)",
+            "gcv": "сплайн сглажен по обобщённой перекрёстной проверке: шум таблицы больше accuracy_mm"},
         "table": "Таблица подъёма (через {step:g}° ПРВ; полная таблица: tables/{name}_lift.csv)",
         "plots": "Графики",
         "files": "Файлы",
@@ -169,7 +188,7 @@ TEXT = {
         "names": {
             "max_lift_mm": "наибольший подъём в таблице, мм", "lobe_centre_deg": "ось кулачка (после исправления "
             "асимметрии), град от ВМТ газообмена", "harmonics": "число гармоник аппроксимации", "asymmetry_rms_mm":
-            "СКО нечётной части (истинная асимметрия) после исправления, мм", "table_angle": "углы таблицы",
+            "СКО нечётной части (истинная асимметрия) после исправления, мм", "fit_reason": "аппроксимация и почему она выбрана", "table_angle": "углы таблицы",
             "table_lift_at": "подъём в таблице", "table_zero": "углы таблицы от", "opens_deg_at_0.1mm": "открытие при подъёме клапана 0,1 мм, град ПКВ",
             "closes_deg_at_0.1mm": "закрытие при подъёме клапана 0,1 мм, град ПКВ", "source": "источник",
             "V1_m_s": "V′ скорость в горловине, м/с (сем. 000, ф. 1.1)",

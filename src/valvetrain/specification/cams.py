@@ -23,7 +23,7 @@ from ..checks import check
 from ..files import read_lift_table, shown_path
 from ..laws import (AsymmetricLaw, CombinedLaw, ConstantAccelerationLaw, DynamicLaw, HarmonicLaw, KurzLaw, PolydyneLaw,
                     PolynomialLaw, TangentLaw, ThreeArcLaw)
-from ..laws.measured import CHECKING_HEIGHTS_MM, MIN_VALVE_LIFT_MM, TableLaw, lobe_table
+from ..laws.measured import CHECKING_HEIGHTS_MM, MIN_VALVE_LIFT_MM, TableLaw, fit_reason, lobe_table
 from ..laws.takeup import ClearanceTakeUp
 from ..units import DEG, MM, cam_per_crank, rad_to_deg
 from .fields import RAMP_VELOCITY, SEGMENT_ANGLE, Length, _bounded, _Model
@@ -593,11 +593,13 @@ class TableCam(_CamBase):
         at_valve = valve.rocker_ratio if self.table_lift_at == "valve" else 1.0
         durations = [{"height_mm": h, "duration_deg": _finite(rad_to_deg(law.duration(h * MM / at_valve)) * to_table)}
                      for h in CHECKING_HEIGHTS_MM]
-        quality = {kind: {"rms_residual_mm": q.rms_residual / MM, "max_residual_mm": q.max_residual / MM,
+        quality = {kind: {"rms_residual_mm": q.rms_residual * at_valve / MM, "max_residual_mm": q.max_residual * at_valve / MM,
                           "jerk_sign_changes": q.jerk_sign_changes}
                    for kind in ("spline", "harmonic") for q in [law.quality(kind)]}
         rec = {"max_lift_mm": (law.lift_max + law.ramp_height) * at_valve / MM,
                "lobe_centre_deg": rad_to_deg(law.centre) * to_table, "durations_deg": durations, "fit": law.fit,
+               "fit_reason": fit_reason(law), "fit_reason_code": law.choice[0], "spline_smoothing": law.smoothing,
+               "gcv_ratio_harmonic_to_spline": _finite(law.gcv["harmonic"] / law.gcv["spline"]),
                "harmonics": law.harmonics, "asymmetry_rms_mm": law.asymmetry_rms * at_valve / MM,
                "fit_quality": quality, "table_angle": self.table_angle, "table_lift_at": self.table_lift_at,
                "table_zero": self.table_zero}
