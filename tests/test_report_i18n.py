@@ -139,6 +139,7 @@ def test_labels_and_values():
     assert label("lift.tappet_acceleration_m_s2", "en") == "tappet acceleration a_T, m/s²"
     assert label("spring.count", "ru") == "число пружин" and label("count", "ru") == "число клапанов i"
     assert label("crank.max_velocity_crank_deg", "ru") == "угол ПКВ наибольшей скорости поршня, град"
+    assert label("phi1_deg", "ru").endswith("град ПРВ") and label("opens_deg", "en").endswith("crank deg")
     assert value_text("Phi1 opening", "ru") == "Φ1, подъём" and value_text("pushrod", "en") == "pushrod"
 
 

@@ -430,10 +430,22 @@ def _lookup(path, table):
     return None
 
 
+ANGLE_UNITS = {
+    **dict.fromkeys(("opens", "closes", "nose_crank", "stroke_crank", "valve_opens_crank", "valve_closes_crank",
+                     "lift.crank", "opens_crank", "closes_crank"), "crank deg"),
+    **dict.fromkeys(("phi1", "phi2", "phi3", "phi_p0", "ramp", "event_cam", "rho_min_cam", "rho_max_cam", "lift.cam",
+                     "output.table_step_cam", "cam_force_max_cam", "cam_contact_stress_cam", "lobe_centre_cam"),
+                    "cam deg"),
+}
+"""Angles in degrees of the crank or of the camshaft (their keys end in ``_deg``)."""
+
+
 def _named(path):
     for name_path, unit in _candidates(path):
         found = _lookup(name_path, NAMES)
         if found is not None:
+            if unit == "deg":
+                unit = _lookup(name_path, ANGLE_UNITS) or unit
             return found, unit
     return None, ""
 
