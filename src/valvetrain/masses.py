@@ -128,7 +128,7 @@ def reduced_mass(throat_area, layout, rocker_ratio, parts=None, specific_mass=No
         spring = parts.spring_kg if parts.spring_kg is not None else spring_mass
         value = reduced_mass_at_valve(parts.valve_kg, parts.retainer_kg, parts.cotters_kg, spring, parts.pushrod_kg,
                                       parts.tappet_kg, parts.rocker_inertia, valve_arm or 1.0, rocker_ratio)
-        return value, "part masses, Valve-train practical works (n.d.) eq. (5.2)" + ("" if parts.spring_kg is not None
+        return value, "part masses, Valve-train practical works (n.d.), eq. (5.2)" + ("" if parts.spring_kg is not None
                                                             else "; spring mass of the design")
     specific = specific_mass or SPECIFIC_MASS_DEFAULT[layout]
     given = "given" if specific_mass else f"default for a {layout} drive"

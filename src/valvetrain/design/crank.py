@@ -189,7 +189,7 @@ def _gas_pressure(c, strokes, phi, bore, radius, lam, k, timing=None):
                   f"start {np.degrees(cy.combustion_start):g} deg from firing TDC, duration "
                   f"{np.degrees(cy.combustion_duration):g} deg, a = {cy.wiebe_a:g}, m = {cy.wiebe_m:g}, gamma = "
                   f"{cy.gamma:g}, no wall heat loss, gas exchange at {cy.intake_pressure / MPA:g}/"
-                  f"{cy.exhaust_pressure / MPA:g} MPa, {valves} (Heywood 1988)")
+                  f"{cy.exhaust_pressure / MPA:g} MPa, {valves} (Heywood (1988))")
         return pressure.wiebe_pressure(phi, model, bore, radius, lam, strokes, k), source
     table = c.indicator
     if table.kind == "angle":

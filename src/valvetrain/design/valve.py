@@ -251,11 +251,14 @@ class ClearanceResult:
         return float(self.gap[i]), float(self.crank[i])
 
 
-def clearance_check(kind, gap, angle, where):
-    """The check of a valve-to-piston gap [m] at a crank angle [rad] against :data:`PISTON_CLEARANCE_MIN`."""
-    return check(f"valve-piston clearance{where}", gap, low=PISTON_CLEARANCE_MIN[kind], unit="mm",
-                 source=PISTON_CLEARANCE_SOURCE,
-                 note=f"smallest at {math.degrees(angle):.4g} crank deg from the gas-exchange TDC")
+def clearance_check(kind, gap, angle, window=None):
+    """The check of a valve-to-piston gap [m] at a crank angle [rad] against :data:`PISTON_CLEARANCE_MIN`, over the
+    open event or, with ``window`` (crank rad from the gas-exchange TDC), over the valve overlap."""
+    where = "" if window is None else (f" over the overlap from {math.degrees(window[0]):.4g} to "
+                                       f"{math.degrees(window[1]):.4g} crank deg")
+    return check("valve-piston clearance" + ("" if window is None else " over the overlap"), gap,
+                 low=PISTON_CLEARANCE_MIN[kind], unit="mm", source=PISTON_CLEARANCE_SOURCE,
+                 note=f"smallest at {math.degrees(angle):.4g} crank deg from the gas-exchange TDC{where}")
 
 
 def wrap_crank(a):
@@ -444,8 +447,7 @@ def overlap_clearance_checks(valves):
     for name, v in valves.items():
         found = None if v.clearance is None else v.clearance.within(*window)
         if found is not None:
-            out.append(clearance_check(v.kind, *found, f" over the overlap ({math.degrees(window[0]):.4g} to "
-                                                        f"{math.degrees(window[1]):.4g} crank deg)").named(name))
+            out.append(clearance_check(v.kind, *found, window).named(name))
     return out
 
 
@@ -603,7 +605,7 @@ def design_valve(name, valve, engine, gas, output, law=None):
     found += valve_checks(cam, flow_result, profile, valve, engine, section.timing(valve, records)) + list(drive.checks)
     found += mass_checks(valve, drive.masses.at_valve, flow_result.throat_area)
     if clearance is not None:
-        found.append(clearance_check(valve.kind, clearance.min_gap, clearance.angle, ""))
+        found.append(clearance_check(valve.kind, clearance.min_gap, clearance.angle))
     return ValveDesign(name, valve.kind, valve.count, cam, flow_result, profile, clearance, records, drive,
                        [c.named(name) for c in found])
 

@@ -3,14 +3,20 @@
 import base64
 from html import unescape
 
+import re
+
 from jinja2 import Environment, PackageLoader, select_autoescape
+from markupsafe import Markup, escape
 import numpy as np
 
 from .. import __version__
+from ..checks import describe_range
 from ..design.results import record
 from ..tables import lift_table_columns
 from ..bibliography import WORKS, cited_in
-from .i18n import TEXT
+from ..units import to_display
+from .i18n import SYMBOLS, TEXT
+from .names import has_name, label, quantity_text, translate, unit_text, value_text
 
 TABLE_COLUMNS = ["cam_deg", "crank_deg", "segment", "tappet_lift_mm", "tappet_velocity_m_s",
                  "tappet_acceleration_m_s2", "valve_lift_mm", "curtain_area_mm2", "time_area_mm2_s", "rho_mm"]
@@ -27,15 +33,114 @@ TIME_AREA_KEYS = ["stroke_crank_deg", "time_area_mm2_s", "time_area_open_mm2_s",
                   "mean_charge_velocity_m_s", "fullness"]
 
 
-def fmt(x):
-    """A number for a human: 6 significant digits; lists, booleans and text as they are."""
+def fmt(x, lang="en"):
+    """A number for a human: 6 significant digits; a list with commas; yes/no; a text value in ``lang``."""
     if isinstance(x, bool):
-        return str(x).lower()
+        return TEXT[lang]["yes" if x else "no"]
     if isinstance(x, (int, float, np.floating)):
         return f"{float(x):.6g}"
     if isinstance(x, (list, tuple)):
-        return ", ".join(fmt(v) for v in x)
-    return "-" if x is None else str(x)
+        return ", ".join(fmt(v, lang) for v in x)
+    return "-" if x is None else str(value_text(x, lang))
+
+
+NAME_KEYS = ("name", "material", "table_file")
+"""Keys whose values are names given by the designer (shown as they are, in every language)."""
+
+CITE_KEYS = ("source", "gas_force_source")
+"""Keys whose values cite a source (shown as they are: the bibliography's)."""
+
+
+def cell(key, value, lang):
+    """The value of a key for a table cell: names and citations as they are (marked), the rest by :func:`fmt`."""
+    leaf = key.rsplit(".", 1)[-1]
+    if leaf in NAME_KEYS and isinstance(value, str):
+        return Markup('<span class="name">{}</span>').format(value)
+    if leaf in CITE_KEYS and isinstance(value, str):
+        text = translate(value, lang)
+        return Markup('<span class="cite">{}</span>').format(value) if text == value else text
+    return fmt(value, lang)
+
+
+def check_range(c, lang):
+    """The allowed range of a check record or :class:`~valvetrain.checks.Check` with its unit in ``lang``."""
+    get = c.get if isinstance(c, dict) else lambda k: getattr(c, k)
+    unit = get("unit")
+    low, high = get("low"), get("high")
+    if not isinstance(c, dict):
+        low, high = (None if x is None else to_display(x, unit) for x in (low, high))
+    text = describe_range(low, high, unit_text(unit, lang), bool(get("strict_low") or False))
+    return TEXT[lang]["any"] if text == "any" else text
+
+
+NOT_CHECKED = re.compile(r"(\w+): not checked, (.*) not given")
+
+
+def not_checked(note, lang):
+    """``"camshaft_deflection: not checked, parts.cam_width_mm not given"`` in ``lang``."""
+    m = NOT_CHECKED.fullmatch(note)
+    if not m:
+        return note
+    parts = ", ".join(label(k.strip(), lang) for k in m[2].split(","))
+    return TEXT[lang]["not_checked_note"].format(check=label(m[1], lang), parts=parts)
+
+
+def diagnosis_text(diagnosis, lang):
+    """The spring diagnosis: the English text as it is; in Russian the conflicts and the resonance window."""
+    if lang == "en":
+        return diagnosis["text"]
+    t = TEXT[lang]
+    words = [t["diag_conflict"].format(spring=t.get("line_" + x["spring"], ""), quantity=quantity_text(x["quantity"], lang),
+                                       value=x["value"], limit=x["limit"], unit=unit_text(x["unit"], lang),
+                                       shortfall=x["shortfall"]) for x in diagnosis.get("conflicts", [])]
+    text = [t["diag_head"] + "; ".join(words) + "."]
+    if "resonance" in diagnosis:
+        text.append(t["diag_resonance"].format(**diagnosis["resonance"]))
+    text.append(t["diag_remedies"])
+    return " ".join(text)
+
+
+def _quantity(quantity, lang, parts):
+    """A check quantity in ``lang``, the name of its part (a valve, a port) marked as a name."""
+    text = quantity_text(quantity, lang, parts)
+    head, sep, rest = text.partition(": ")
+    if sep and head in parts:
+        return Markup('<span class="name">{}</span>: {}').format(head, rest)
+    return text
+
+
+def symbol_legend(lang):
+    """A Jinja function ``legend(*symbols)``: the symbols not yet explained in this report, each with its meaning
+    and unit (every symbol is explained where it is first used)."""
+    seen = set()
+
+    def legend(*keys):
+        new = [k for k in keys if k not in seen]
+        seen.update(new)
+        if not new:
+            return ""
+        items = Markup("; ").join(Markup("{} — {}").format(Markup(SYMBOLS[k][0]), Markup(SYMBOLS[k][1 if lang == "en" else 2]))
+                                  for k in new)
+        return Markup('<p class="legend">{}: {}.</p>').format(TEXT[lang]["where"], items)
+    return legend
+
+
+INPUT_SYMBOLS = ("i", "dg", "phi_seat", "hv", "h0", "ik", "r0", "w1", "Phi123", "Kz")
+"""Symbols of the valve's input table."""
+
+WARNING_SYMBOLS = {"V1": r"V' ", "V2": r"V'' ", "V3": r"V''' ", "vvp": r"v_vp", "aT": r"tappet acceleration",
+                   "dg": r"throat diameter", "hv": r"valve lift", "h0": r"h0", "ik": r"rocker ratio", "r0": r"r0",
+                   "rho": r"rho_min", "Kz": r"K_z", "Phi123": r"Phi", "w1": r"ramp end velocity", "lambda": r"lambda"}
+"""Symbols that a check quantity may use (a pattern of the English quantity)."""
+
+
+def _coefficient_symbols(coefficients):
+    """The symbols of a lift law's coefficient table."""
+    if "c11" in coefficients:
+        return ["c_ij", "k_i", "K12"]
+    if "C2" in coefficients:
+        return ["h_max", "C_poly", "pqrs"]
+    return ["coefficients"]
 
 
 def _flatten(d, prefix=""):
@@ -48,13 +153,13 @@ def _flatten(d, prefix=""):
     return rows
 
 
-def _abridged_table(valve):
+def _abridged_table(valve, lang):
     cols = lift_table_columns(valve.table)
     cam = cols["cam_deg"]
     keep = np.isclose(np.mod(cam, REPORT_STEP_DEG), 0.0) | np.isclose(np.mod(cam, REPORT_STEP_DEG),
                                                                         REPORT_STEP_DEG)
     keep[[0, -1]] = True
-    return [[fmt(cols[c][i]) for c in TABLE_COLUMNS] for i in np.flatnonzero(keep)]
+    return [[fmt(cols[c][i], lang) for c in TABLE_COLUMNS] for i in np.flatnonzero(keep)]
 
 
 def _measured(rec, t):
@@ -88,11 +193,12 @@ def _summary(results, t):
                                        mean_diameter_mm=spring["mean_diameter_mm"],
                                        active_coils=spring["active_coils"], material=spring["material"])
         binding = spring["binding_check"]
-        rows.append({"name": name, "kind": t[v.kind], "law": v.law.name, "lift": s["flow"]["valve_lift_mm"],
+        lang = t["lang"]
+        rows.append({"name": name, "kind": t[v.kind], "law": value_text(v.law.name, lang), "lift": s["flow"]["valve_lift_mm"],
                      "opens": s["cam"]["valve_opens_crank_deg"], "closes": s["cam"]["valve_closes_crank_deg"],
                      "duration": s["cam"]["valve_closes_crank_deg"] - s["cam"]["valve_opens_crank_deg"],
                      "time_area": s["flow"]["time_area_mm2_s"], "fullness": s["flow"]["fullness"], "spring": text,
-                     "binding": f"{binding} ({spring['margins'][binding]:+.0%})",
+                     "binding": f"{label('spring.' + binding, lang)} ({spring['margins'][binding]:+.0%})",
                      **{key: sum(c.severity == level for c in v.warnings) for key, level in
                         (("failures", "failure"), ("warnings", "warning"), ("info", "info"))},
                      "accepted": len(v.accepted)})
@@ -114,9 +220,20 @@ def render_report(results, plots, lang="en", folder=None):
         it they are linked.
     """
     env = Environment(loader=PackageLoader("valvetrain", "report/templates"), autoescape=select_autoescape())
-    env.filters["fmt"] = fmt
+    env.filters["fmt"] = lambda x: fmt(x, lang)
+    env.filters["label"] = lambda key: label(key, lang)
+    env.filters["named"] = lambda key: has_name(key)
+    env.filters["unit"] = lambda unit: unit_text(unit, lang)
+    env.filters["tr"] = lambda text: translate(text, lang)
+    env.filters["range"] = lambda c: check_range(c, lang)
+    env.filters["not_checked"] = lambda note: not_checked(note, lang)
+    env.globals["cell"] = lambda key, value: cell(key, value, lang)
+    env.globals["legend"] = symbol_legend(lang)
     env.filters["image"] = lambda name: _image(folder, name)
     spec = results.spec.model_dump()
+    parts = list(results.valves) + (list(results.two_stroke.summary["ports"]) if results.two_stroke is not None else [])
+    env.filters["quantity"] = lambda q: _quantity(q, lang, parts)
+    env.filters["diagnosis"] = lambda d: diagnosis_text(d, lang)
     valves = []
     for name, v in results.valves.items():
         s = v.summary
@@ -128,6 +245,8 @@ def render_report(results, plots, lang="en", folder=None):
             "cam": [(k, s["cam"][k]) for k in CAM_KEYS],
             "geometry": [(k, s["cam"][k]) for k in GEOMETRY_KEYS if s["cam"].get(k) is not None],
             "coefficients": list(s["cam"]["coefficients"].items()),
+            "coefficient_symbols": _coefficient_symbols(s["cam"]["coefficients"]),
+            "input_symbols": INPUT_SYMBOLS,
             "seed": [(k, val, s["cam"][k]) for k, val in s["cam"].get("seed_formulas", {}).items()],
             "residuals": list(s["cam"].get("residuals", {}).items()),
             "measured": _measured(s["cam"].get("measured"), TEXT[lang]),
@@ -137,7 +256,7 @@ def render_report(results, plots, lang="en", folder=None):
             "pair": [(t, s["spring"][k]) for k, t in (("outer", "outer_spring"), ("inner", "inner_spring"))
                      if k in s["spring"]],
             "strength": s["strength"],
-            "table": _abridged_table(v),
+            "table": _abridged_table(v, lang),
             "warnings": v.warnings,
         })
     first_page = _summary(results, TEXT[lang])
@@ -151,9 +270,12 @@ def render_report(results, plots, lang="en", folder=None):
     if results.two_stroke is not None:
         ports = {"inputs": [(k, v) for k, v in _flatten(spec["two_stroke"]) if not k.startswith("ports.")],
                  "plots": plots["two_stroke"], "ports": results.two_stroke.summary["ports"]}
+    warning_symbols = [key for key, pattern in WARNING_SYMBOLS.items()
+                       if any(re.search(pattern, w.quantity) for w in (*results.warnings, *results.accepted))]
     context = dict(
-        t=TEXT[lang], lang=lang, version=__version__, engine=record(results.engine), engine_inputs=_flatten(spec["engine"]),
-        valves=valves, warnings=results.warnings, accepted=results.accepted, first_page=first_page, timing=plots.get("(timing)"), table_columns=TABLE_COLUMNS,
+        t=TEXT[lang], warning_symbols=warning_symbols, lang=lang, version=__version__, engine=record(results.engine),
+        engine_inputs=_flatten(spec["engine"]), valves=valves, warnings=results.warnings, accepted=results.accepted,
+        first_page=first_page, timing=plots.get("(timing)"), table_columns=TABLE_COLUMNS,
         step=REPORT_STEP_DEG, output=_flatten(spec["output"]), crank=crank, ports=ports,
     )
     template = env.get_template("report.html")

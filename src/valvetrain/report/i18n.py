@@ -43,7 +43,7 @@ TEXT = {
         "files": "Files",
         "sources": "Sources",
         "corrections_note": "Misprints of these works and what valvetrain uses instead: the corrections notes shipped "
-                            "with the package (valvetrain/data/corrections.md), cited as \"corrections note N\".",
+                            "with the package, cited as \"corrections note N\":",
         "cam_deg": "camshaft angle from the nose, deg",
         "crank_deg": "crank angle from gas-exchange TDC, deg",
         "lift": "lift, mm", "tappet_lift": "tappet lift", "valve_lift": "valve lift",
@@ -69,38 +69,6 @@ TEXT = {
         "pin_radial": "radial load on the crank pin (outwards +), kN", "pin_polar": "polar diagram of the crank-pin load",
         "crank_from_tdc": "crank angle from TDC, deg", "port_area": "port area, mm²", "speed": "crank speed, rpm",
         "port_time_area": "time-area, mm²·s", "port": "Port", "pressure_model": "Cylinder pressure",
-        "names": {
-            "max_lift_mm": "max lift in the table, mm", "lobe_centre_deg": "lobe centre (after the asymmetry "
-            "correction), deg from the gas-exchange TDC", "harmonics": "harmonics of the N-harmonic fit", "asymmetry_rms_mm":
-            "rms odd part (true asymmetry) after the correction, mm", "fit_reason": "fit used and why", "table_angle": "table angles",
-            "table_lift_at": "table lift at", "table_zero": "table angles from", "opens_deg_at_0.1mm": "opens at 0.1 mm valve lift, crank deg",
-            "closes_deg_at_0.1mm": "closes at 0.1 mm valve lift, crank deg", "source": "source",
-            "V1_m_s": "V' throat velocity, m/s (Valve-train practical works (n.d.), eq. 1.1)",
-            "V2_m_s": "V'' curtain velocity at full lift, m/s (eq. 1.2)",
-            "V3_m_s": "V''' time-area velocity, m/s (eq. 1.4)",
-            "throat_area_mm2": "throat area f_g, mm²",
-            "max_curtain_area_mm2": "curtain area at full lift, mm² (eq. 1.3)",
-            "valve_lift_mm": "valve lift, mm",
-            "time_area_mm2_s": "time-area over the valve's stroke, mm²·s (eq. 4.1)",
-            "time_area_open_mm2_s": "time-area over the whole opening, mm²·s",
-            "mean_charge_velocity_m_s": "mean charge velocity v_vp, m/s (eq. 4.3)",
-            "fullness": "fullness coefficient (Shang Hanji (1988), eq. 2.3)",
-            "stroke_crank_deg": "stroke of the valve, crank deg",
-            "max_velocity_m_s": "max tappet velocity, m/s",
-            "max_acceleration_m_s2": "max tappet acceleration, m/s²",
-            "min_acceleration_m_s2": "min tappet acceleration, m/s²",
-            "rho_min_mm": "min radius of curvature, mm", "rho_max_mm": "max radius of curvature, mm",
-            "rho_min_cam_deg": "at cam angle, deg", "rho_max_cam_deg": "at cam angle, deg",
-            "phi_p0_deg": "main half-angle phi_p0, cam deg", "ramp_deg": "ramp Phi0, cam deg",
-            "ramp_height_mm": "ramp height, mm", "tappet_lift_mm": "tappet lift h_T max, mm",
-            "event_cam_deg": "whole event with ramps, cam deg", "nose_crank_deg": "nose at crank angle, deg",
-            "camshaft_speed_rad_s": "camshaft speed, rad/s", "follower": "follower",
-            "base_radius_mm": "base radius r0, mm", "heel_radius_mm": "heel radius r0 - h0, mm",
-            "max_contact_offset_mm": "max contact offset on the flat follower, mm (b of eq. 7.7)",
-            "roller_radius_mm": "roller radius, mm", "max_pressure_angle_deg": "max pressure angle, deg",
-            "min_concave_radius_mm": "concave radius closest to zero, mm", "undercut": "profile undercut",
-            "min_clearance_mm": "min valve-piston clearance, mm", "crank_deg": "at crank angle, deg",
-        },
     },
     "ru": {
         "summary": "Сводка", "summary_valves": "Клапаны", "timing_diagram": "Диаграмма фаз газораспределения",
@@ -137,24 +105,24 @@ TEXT = {
         "jerk_sign_changes": "перемены знака третьей производной",
         "fit_used": {"harmonic": "N-гармоническая аппроксимация (N = {n})", "spline": "сглаживающий сплайн"},
         "fit_reasons": {
-            "given": "fit = \"{fit}\" задано в исходных данных",
-            "harmonic_gcv": "N-гармоническая аппроксимация укладывается в accuracy_mm и лучше предсказывает "
+            "given": "способ аппроксимации задан в исходных данных",
+            "harmonic_gcv": "N-гармоническая аппроксимация укладывается в заданную точность измерения и лучше предсказывает "
                             "исключённые точки, чем сглаживающий сплайн (критерий обобщённой перекрёстной проверки "
                             "{ratio:.3g} от критерия сплайна)",
             "spline_gcv": "сглаживающий сплайн лучше предсказывает исключённые точки, чем N-гармоническая "
-                          "аппроксимация, тоже укладывающаяся в accuracy_mm (критерий обобщённой перекрёстной "
+                          "аппроксимация, тоже укладывающаяся в заданную точность измерения (критерий обобщённой перекрёстной "
                           "проверки {ratio:.3g} от критерия гармонической аппроксимации)",
-            "harmonic_misses": "N-гармоническая аппроксимация не укладывается в accuracy_mm и при наибольшем порядке",
+            "harmonic_misses": "N-гармоническая аппроксимация не укладывается в заданную точность измерения и при наибольшем порядке",
             "harmonic_swings": "N-гармоническая аппроксимация выходит между точками за пределы подъёмов таблицы"},
         "smoothings": {
-            "accuracy": "сплайн сглажен до СКО отклонения, равного accuracy_mm (Reinsch 1967)",
-            "gcv": "сплайн сглажен по обобщённой перекрёстной проверке: шум таблицы больше accuracy_mm"},
+            "accuracy": "сплайн сглажен до СКО отклонения, равного заданной точности измерения (Reinsch (1967))",
+            "gcv": "сплайн сглажен по обобщённой перекрёстной проверке: шум таблицы больше заданной точности измерения"},
         "table": "Таблица подъёма (через {step:g}° ПРВ; полная таблица: tables/{name}_lift.csv)",
         "plots": "Графики",
         "files": "Файлы",
         "sources": "Источники",
         "corrections_note": "Опечатки этих работ и то, что valvetrain использует вместо них: заметки об исправлениях "
-                            "в составе пакета (valvetrain/data/corrections.md), ссылки вида «corrections note N».",
+                            "в составе пакета (на английском языке), ссылки вида «поправка N»:",
         "cam_deg": "угол поворота распредвала от вершины, °",
         "crank_deg": "угол поворота коленвала от ВМТ газообмена, °",
         "lift": "подъём, мм", "tappet_lift": "подъём толкателя", "valve_lift": "подъём клапана",
@@ -185,39 +153,6 @@ TEXT = {
         "crank_from_tdc": "угол поворота коленвала от ВМТ, °", "port_area": "площадь окна, мм²",
         "speed": "частота вращения, мин⁻¹", "port_time_area": "время-сечение, мм²·с", "port": "Окно",
         "pressure_model": "Давление в цилиндре",
-        "names": {
-            "max_lift_mm": "наибольший подъём в таблице, мм", "lobe_centre_deg": "ось кулачка (после исправления "
-            "асимметрии), град от ВМТ газообмена", "harmonics": "число гармоник аппроксимации", "asymmetry_rms_mm":
-            "СКО нечётной части (истинная асимметрия) после исправления, мм", "fit_reason": "аппроксимация и почему она выбрана", "table_angle": "углы таблицы",
-            "table_lift_at": "подъём в таблице", "table_zero": "углы таблицы от", "opens_deg_at_0.1mm": "открытие при подъёме клапана 0,1 мм, град ПКВ",
-            "closes_deg_at_0.1mm": "закрытие при подъёме клапана 0,1 мм, град ПКВ", "source": "источник",
-            "V1_m_s": "V′ скорость в горловине, м/с (сем. 000, ф. 1.1)",
-            "V2_m_s": "V″ скорость при полном подъёме, м/с (ф. 1.2)",
-            "V3_m_s": "V‴ скорость по время-сечению, м/с (ф. 1.4)",
-            "throat_area_mm2": "площадь горловины f_г, мм²",
-            "max_curtain_area_mm2": "проходное сечение при полном подъёме, мм² (ф. 1.3)",
-            "valve_lift_mm": "подъём клапана, мм",
-            "time_area_mm2_s": "время-сечение за такт, мм²·с (ф. 4.1)",
-            "time_area_open_mm2_s": "время-сечение за всё открытие, мм²·с",
-            "mean_charge_velocity_m_s": "средняя скорость заряда v_вп, м/с (ф. 4.3)",
-            "fullness": "коэффициент полноты (сем. 002, ф. 2.3)",
-            "stroke_crank_deg": "такт клапана, ° ПКВ",
-            "max_velocity_m_s": "макс. скорость толкателя, м/с",
-            "max_acceleration_m_s2": "макс. ускорение толкателя, м/с²",
-            "min_acceleration_m_s2": "мин. ускорение толкателя, м/с²",
-            "rho_min_mm": "мин. радиус кривизны, мм", "rho_max_mm": "макс. радиус кривизны, мм",
-            "rho_min_cam_deg": "при угле ПРВ, °", "rho_max_cam_deg": "при угле ПРВ, °",
-            "phi_p0_deg": "полуугол основного участка φ_р0, ° ПРВ", "ramp_deg": "участок сбега Ф0, ° ПРВ",
-            "ramp_height_mm": "высота сбега, мм", "tappet_lift_mm": "подъём толкателя h_T max, мм",
-            "event_cam_deg": "полная продолжительность с участками сбега, ° ПРВ",
-            "nose_crank_deg": "вершина кулачка при угле ПКВ, °",
-            "camshaft_speed_rad_s": "угловая скорость распредвала, рад/с", "follower": "толкатель",
-            "base_radius_mm": "радиус начальной окружности r0, мм", "heel_radius_mm": "радиус тыльной части r0 − h0, мм",
-            "max_contact_offset_mm": "макс. смещение точки контакта на плоском толкателе, мм (b в ф. 7.7)",
-            "roller_radius_mm": "радиус ролика, мм", "max_pressure_angle_deg": "макс. угол давления, °",
-            "min_concave_radius_mm": "ближайший к нулю вогнутый радиус, мм", "undercut": "подрез профиля",
-            "min_clearance_mm": "мин. зазор клапан-поршень, мм", "crank_deg": "при угле ПКВ, °",
-        },
     },
 }
 
@@ -241,7 +176,7 @@ CHECK_TEXT = {
         "accepted_list": "Принято в исходных данных",
         "open_checks": "Проверки вне пределов: нарушения, предупреждения, справки",
         "no_open": "Все проверенные величины в пределах или приняты в исходных данных.",
-        "accepted_intro": "Проверки вне пределов, принятые в исходных данных ([[accepted]]) с указанным "
+        "accepted_intro": "Проверки вне пределов, принятые в исходных данных (в списке принятых проверок) с указанным "
                           "обоснованием; они не считаются открытыми предупреждениями. Принятое нарушение предела "
                           "остаётся нарушением.",
         "ranking": "Сначала нарушения пределов (допускаемые значения и физические пределы), затем предупреждения "
@@ -252,3 +187,194 @@ CHECK_TEXT = {
 
 for _lang, _texts in CHECK_TEXT.items():
     TEXT[_lang].update(_texts)
+
+TEXT["en"].update({
+    "lang": "en", "any": "any", "where": "Symbols",
+    "not_checked_note": "{check}: not checked, not given: {parts}",
+    "diag_head": "No spring passes every check; the best: ",
+    "diag_conflict": "{spring} {quantity} {value:.4g} {unit} against {limit:.4g} {unit} (short by {shortfall:.1%})",
+    "diag_resonance": "", "diag_remedies": "",
+    "tappet_side": "Lifts, velocities and accelerations h_T, v_T, a_T are on the tappet side; the valve's (h_v, v_v, "
+                   "a_v) are i_k = {ik} times larger.",
+    "kinematics_alt": "lift, velocity, acceleration and jerk", "time_area_alt": "time-area",
+    "cam_index": "cam", "vp_index": "vp", "integrated": "integrated on the analytic law between its segment junctions",
+    "geometry_method": "flat follower ρ = r<sub>0</sub> + h<sub>T</sub> + h″ (2.6), contour (2.15); roller follower "
+                       "(2.7), (2.16); undercut when ρ ≤ 0 (flat) or when the pitch radius of curvature ≤ the roller radius.",
+    "spring_method_5": "P<sub>in</sub> = m<sub>v</sub>a<sub>v</sub> (5.1), m<sub>v</sub> (5.2), P<sub>spr</sub> = "
+                       "K<sub>z</sub>P<sub>in</sub> (5.3), gas force P<sub>gas</sub> (5.4)-(5.5), characteristic (5.6)-(5.9): "
+                       "the tightest straight line through the full-lift point that stays above the required force;",
+    "spring_method_6": "τ = 8χPD/(πd<sup>3</sup>) (6.1), working coils i<sub>w</sub> (6.2) rounded down to 0.5, lengths "
+                       "(6.3)-(6.8), fatigue safety n (6.9)-(6.12), natural frequency (6.13)-(6.14).",
+    "strength_method": "cam load P<sub>T</sub> = i<sub>k</sub>(P<sub>spr</sub> + P<sub>gas</sub>) + m<sub>T</sub>a<sub>T</sub> "
+                       "along the profile (7.1)-(7.2); camshaft (7.3), contact (7.4)-(7.5) and (2.5), tappet (7.6)-(7.7), "
+                       "pushrod (7.8)-(7.12), rocker (7.13), rocker shaft (7.15)-(7.18).",
+    "crank_method": "kinematics (1.1)-(1.11) or the exact slider-crank; forces (2.3)-(2.19) with the exact rod angle β; "
+                    "T = p<sub>T</sub>F<sub>p</sub> (2.20), M = TR (2.21); total torque for the layout and firing order; "
+                    "mean torque against the indicated work W<sub>i</sub>/(πτ).",
+    "ports_method": "opening angles (8.1) or the exact kinematics, areas (8.2)-(8.4), time-area (8.5) and "
+                    "Z = K<sub>1</sub>K<sub>2</sub>/n (8.6)-(8.8), recommended sizes (Table 8.1).",
+    "residuals_note": "Residuals of the continuity conditions of the segments at their junctions (equation numbers "
+                      "of the source); zero to rounding.",
+    "file_lift": "full lift table", "file_contour": "cam contour for manufacture", "file_results": "all results",
+    "table": "Lift table (every {step:g} cam deg)",
+    "lift": "lift h, mm", "tappet_lift": "tappet h_T", "valve_lift": "valve h_v",
+    "velocity": "tappet velocity v_T, m/s", "acceleration": "tappet acceleration a_T, m/s²",
+    "jerk": "tappet jerk j_T, m/s³", "x_mm": "x, mm", "y_mm": "y, mm", "valve_lift_axis": "valve lift h_v, mm",
+    "valve_lift_mm": "valve lift h_v, mm", "inertia_force": "inertia force m_v|a_v|",
+    "required_force": "required force K_z m_v|a_v|", "force": "force at the valve P, N",
+    "p_gas": "gas Δp_g", "p_in": "inertia p_in", "p_total": "total p", "speed": "crank speed n, rpm",
+    "cam_deg": "camshaft angle from the nose φ, cam deg", "crank_deg": "crank angle from the gas-exchange TDC, crank deg",
+    "rho": "radius of curvature ρ, mm", "pressure_angle": "pressure angle, deg",
+    "curtain": "curtain area f, mm²", "running_ta": "running time-area ∫f dt, mm²·s",
+})
+
+TEXT["ru"].update({
+    "lang": "ru", "any": "любое", "where": "Обозначения",
+    "not_checked_note": "{check}: не проверено, не задано: {parts}",
+    "diag_head": "Ни одна пружина не проходит все проверки; лучший вариант: ",
+    "diag_conflict": "{spring} {quantity} {value:.4g} {unit} при допустимом {limit:.4g} {unit} (не хватает {shortfall:.1%})",
+    "diag_resonance": "Для отношения частот нужно касательное напряжение τ_max не менее {stress_needed_MPa:.0f} МПа, "
+                      "а сталь допускает не более {stress_allowed_MPa:.0f} МПа.",
+    "diag_remedies": "Изменения, при которых пружина проходит, перечислены в results.json (spring.diagnosis.remedies).",
+    "tappet_side": "Подъём, скорость и ускорение h_T, v_T, a_T даны на толкателе; на клапане (h_v, v_v, a_v) они "
+                   "в i_k = {ik} раза больше.",
+    "kinematics_alt": "подъём, скорость, ускорение и рывок", "time_area_alt": "время-сечение",
+    "cam_index": "р", "vp_index": "вп", "integrated": "интегрируется по аналитическому закону между точками сопряжения участков",
+    "geometry_method": "плоский толкатель ρ = r<sub>0</sub> + h<sub>T</sub> + h″ (2.6), профиль (2.15); роликовый толкатель "
+                       "(2.7), (2.16); подрез профиля при ρ ≤ 0 (плоский толкатель) или когда радиус кривизны центрового "
+                       "профиля не больше радиуса ролика.",
+    "spring_method_5": "P<sub>ин</sub> = m<sub>кл</sub>a<sub>v</sub> (5.1), m<sub>кл</sub> (5.2), P<sub>пр</sub> = "
+                       "K<sub>з</sub>P<sub>ин</sub> (5.3), сила давления газов P<sub>г</sub> (5.4)-(5.5), характеристика "
+                       "(5.6)-(5.9): самая пологая прямая через точку полного подъёма, лежащая выше необходимой силы;",
+    "spring_method_6": "τ = 8χPD/(πd<sup>3</sup>) (6.1), число рабочих витков i<sub>р</sub> (6.2) с округлением вниз до 0,5, "
+                       "длины (6.3)-(6.8), запас прочности n (6.9)-(6.12), собственная частота (6.13)-(6.14).",
+    "strength_method": "нагрузка на кулачок P<sub>T</sub> = i<sub>k</sub>(P<sub>пр</sub> + P<sub>г</sub>) + "
+                       "m<sub>т</sub>a<sub>T</sub> по профилю (7.1)-(7.2); распределительный вал (7.3), контактные "
+                       "напряжения (7.4)-(7.5) и (2.5), толкатель (7.6)-(7.7), штанга (7.8)-(7.12), коромысло (7.13), "
+                       "ось коромысла (7.15)-(7.18).",
+    "crank_method": "кинематика (1.1)-(1.11) или точные формулы кривошипно-шатунного механизма; силы (2.3)-(2.19) с "
+                    "точным углом отклонения шатуна β; T = p<sub>T</sub>F<sub>p</sub> (2.20), M = TR (2.21); суммарный "
+                    "крутящий момент по компоновке и порядку работы; средний момент сверяется с индикаторной работой "
+                    "W<sub>i</sub>/(πτ).",
+    "ports_method": "углы открытия (8.1) или точная кинематика, площади (8.2)-(8.4), время-сечение (8.5) и "
+                    "Z = K<sub>1</sub>K<sub>2</sub>/n (8.6)-(8.8), рекомендуемые размеры (табл. 8.1).",
+    "residuals_note": "Невязки условий сопряжения участков в точках сопряжения (номера формул источника); равны нулю "
+                      "с точностью округления.",
+    "file_lift": "полная таблица подъёма", "file_contour": "профиль кулачка для изготовления",
+    "file_results": "все результаты",
+    "table": "Таблица подъёма (через {step:g} град ПРВ)",
+    "lift": "подъём h, мм", "tappet_lift": "толкатель h_T", "valve_lift": "клапан h_v",
+    "velocity": "скорость толкателя v_T, м/с", "acceleration": "ускорение толкателя a_T, м/с²",
+    "jerk": "рывок толкателя j_T, м/с³", "x_mm": "x, мм", "y_mm": "y, мм", "valve_lift_axis": "подъём клапана h_v, мм",
+    "valve_lift_mm": "подъём клапана h_v, мм", "inertia_force": "сила инерции m_кл|a_v|",
+    "required_force": "необходимая сила K_з m_кл|a_v|", "force": "сила на клапане P, Н",
+    "p_gas": "газов Δp_г", "p_in": "инерции p_ин", "p_total": "суммарная p", "speed": "частота вращения n, об/мин",
+    "cam_deg": "угол поворота распределительного вала от вершины φ, град ПРВ",
+    "crank_deg": "угол поворота коленчатого вала от ВМТ газообмена, град ПКВ",
+    "rho": "радиус кривизны ρ, мм", "pressure_angle": "угол давления, град",
+    "curtain": "проходное сечение f, мм²", "running_ta": "время-сечение нарастающим итогом ∫f dt, мм²·с",
+    "s_opens": "клапан открывается, град ПКВ от ВМТ", "s_closes": "клапан закрывается, град ПКВ от ВМТ",
+    "s_duration": "клапан открыт, град ПКВ", "duration": "продолжительность, град",
+    "cycle_deg": "угол поворота коленчатого вала в цикле, град", "engine_deg": "угол поворота (цикл цилиндра 1), град",
+    "crank_from_tdc": "угол поворота коленчатого вала от ВМТ, град", "pressure_angle_deg": "угол давления, град",
+    "spring_text": "{count} x проволока {wire_mm:.3g} мм, D {mean_diameter_mm:.3g} мм, {active_coils:g} рабочих витков, {material}",
+    "jerk_sign_changes": "перемены знака рывка j",
+})
+
+SYMBOLS = {
+    "D": ("D", "bore, mm", "диаметр цилиндра, мм"), "S": ("S", "piston stroke, mm", "ход поршня, мм"),
+    "ic": ("i<sub>c</sub>", "number of cylinders", "число цилиндров"),
+    "Vh": ("V<sub>h</sub>", "swept volume of one cylinder, cm³", "рабочий объём цилиндра, см³"),
+    "n": ("n", "crank speed, rpm", "частота вращения коленчатого вала, об/мин"),
+    "cp": ("c<sub>p</sub>", "mean piston speed, m/s", "средняя скорость поршня, м/с"),
+    "spring_text": ("D", "mean coil diameter of the spring, mm", "средний диаметр пружины, мм"),
+    "Fp": ("F<sub>p</sub>", "piston area, mm²", "площадь поршня, мм²"),
+    "i": ("i", "number of valves of the kind per cylinder", "число одноимённых клапанов в цилиндре"),
+    "dg": ("d<sub>g</sub>", "throat diameter, mm", "диаметр горловины, мм"),
+    "phi_seat": ("φ", "seat angle, deg", "угол фаски клапана, град"),
+    "hv": ("h<sub>v</sub>", "valve lift, mm", "подъём клапана, мм"),
+    "h0": ("h<sub>0</sub>", "valve clearance (the ramp height on the tappet side), mm",
+           "тепловой зазор (высота участка сбега на толкателе), мм"),
+    "ik": ("i<sub>k</sub>", "rocker ratio (valve side / tappet side)", "передаточное отношение коромысла (клапан / толкатель)"),
+    "r0": ("r<sub>0</sub>", "base radius of the cam, mm", "радиус начальной окружности кулачка, мм"),
+    "w1": ("w′", "tappet velocity at the ramp end, mm/deg", "скорость толкателя в конце участка сбега, мм/град"),
+    "Phi123": ("Φ<sub>1</sub>, Φ<sub>2</sub>, Φ<sub>3</sub>",
+               "cam angles of the positive acceleration, of its fall and of the negative acceleration, cam deg",
+               "углы участков положительного ускорения, его спада и отрицательного ускорения, град ПРВ"),
+    "Kz": ("K<sub>z</sub>", "spring reserve: spring force / inertia force", "коэффициент запаса пружины: сила пружины / сила инерции"),
+    "V1": ("V′", "conditional gas velocity in the throat, m/s", "условная скорость газа в горловине, м/с"),
+    "V2": ("V″", "conditional gas velocity in the curtain at full lift, m/s",
+           "условная скорость газа в проходном сечении при полном подъёме, м/с"),
+    "V3": ("V‴", "conditional gas velocity by the time-area, m/s", "условная скорость газа по время-сечению, м/с"),
+    "fg": ("f<sub>g</sub>", "throat area, mm²", "площадь горловины, мм²"),
+    "fmax": ("f<sub>max</sub>", "curtain area at full lift, mm²", "проходное сечение при полном подъёме, мм²"),
+    "f": ("f", "curtain area of the valve, mm²", "проходное сечение клапана, мм²"),
+    "hT": ("h<sub>T</sub>", "tappet lift, mm", "подъём толкателя, мм"),
+    "vT": ("v<sub>T</sub>", "tappet velocity, m/s", "скорость толкателя, м/с"),
+    "aT": ("a<sub>T</sub>", "tappet acceleration, m/s²", "ускорение толкателя, м/с²"),
+    "jT": ("j<sub>T</sub>", "tappet jerk, m/s³", "рывок толкателя, м/с³"),
+    "av": ("a<sub>v</sub>", "valve acceleration i<sub>k</sub>a<sub>T</sub>, m/s²", "ускорение клапана i<sub>k</sub>a<sub>T</sub>, м/с²"),
+    "phi_p0": ("φ<sub>p0</sub>", "half-angle of the main part of the cam, cam deg", "полуугол основного участка кулачка, град ПРВ"),
+    "Phi0": ("Φ<sub>0</sub>", "ramp angle, cam deg", "угол участка сбега, град ПРВ"),
+    "omega_cam": ("ω<sub>cam</sub>", "camshaft angular speed, rad/s", "угловая скорость распределительного вала, рад/с"),
+    "c_ij": ("c<sub>11</sub>...c<sub>33</sub>", "coefficients of the Kurz cam segments (2.23)-(2.31), mm",
+             "коэффициенты участков кулачка Курца (2.23)-(2.31), мм"),
+    "k_i": ("k<sub>1</sub>, k<sub>2</sub>, k<sub>3</sub>", "auxiliary coefficients of the Kurz cam (2.32)-(2.34)",
+            "вспомогательные коэффициенты кулачка Курца (2.32)-(2.34)"),
+    "K12": ("K<sub>1</sub>, K<sub>2</sub>", "ratios of the acceleration extremes of the Kurz cam",
+            "отношения экстремальных ускорений кулачка Курца"),
+    "h_max": ("h<sub>max</sub>", "max tappet lift of the polydyne cam, mm", "наибольший подъём толкателя полидинамического кулачка, мм"),
+    "C_poly": ("C<sub>2</sub>, C<sub>p</sub>, C<sub>q</sub>, C<sub>r</sub>, C<sub>s</sub>",
+               "coefficients of the polydyne polynomial (3.1)", "коэффициенты полинома полидинамического кулачка (3.1)"),
+    "pqrs": ("p, q, r, s", "exponents of the polydyne polynomial", "показатели степени полинома полидинамического кулачка"),
+    "coefficients": ("", "coefficients of the lift law", "коэффициенты закона подъёма"),
+    "dt": ("∫f dt", "time-area, mm²·s", "время-сечение, мм²·с"),
+    "phi": ("φ", "camshaft angle from the cam nose, cam deg", "угол поворота распределительного вала от вершины кулачка, град ПРВ"),
+    "vvp": ("v<sub>vp</sub>", "mean charge velocity, m/s", "средняя скорость заряда, м/с"),
+    "xi": ("ξ", "fullness coefficient of the lift diagram", "коэффициент полноты диаграммы подъёма"),
+    "Phi_open": ("Φ", "cam angle of the valve's stroke, cam deg", "угол такта клапана, град ПРВ"),
+    "rho": ("ρ", "radius of curvature of the cam profile, mm", "радиус кривизны профиля кулачка, мм"),
+    "hpp": ("h″", "second derivative of the tappet lift by the cam angle, mm/rad²",
+            "вторая производная подъёма толкателя по углу кулачка, мм/рад²"),
+    "b": ("b", "offset of the contact point on the flat tappet, mm", "смещение точки контакта на плоском толкателе, мм"),
+    "E": ("E", "Young's modulus, MPa", "модуль упругости, МПа"),
+    "gap": ("Δ", "valve-piston clearance, mm", "зазор между клапаном и поршнем, мм"),
+    "s0": ("s<sub>0</sub>", "valve-piston gap at TDC with the valve closed, mm", "зазор клапан-поршень в ВМТ при закрытом клапане, мм"),
+    "hv0": ("h<sub>v0</sub>", "piston travel from TDC, mm", "перемещение поршня от ВМТ, мм"),
+    "Pin": ("P<sub>in</sub>", "inertia force of the valve, N", "сила инерции клапана, Н"),
+    "mv": ("m<sub>v</sub>", "mass reduced to the valve, kg", "масса, приведённая к клапану, кг"),
+    "Pspr": ("P<sub>spr</sub>", "required spring force, N", "необходимая сила пружины, Н"),
+    "Pgas": ("P<sub>gas</sub>", "gas force on the valve head, N", "сила давления газов на тарелку клапана, Н"),
+    "fmin": ("f<sub>min</sub>", "preload deflection of the spring, mm", "предварительная деформация пружины, мм"),
+    "fmax_spring": ("f<sub>max</sub>", "deflection of the spring at full lift, mm", "деформация пружины при полном подъёме, мм"),
+    "tau": ("τ", "shear stress of the spring wire, MPa", "касательное напряжение в проволоке пружины, МПа"),
+    "chi": ("χ", "stress factor of the coil curvature", "коэффициент, учитывающий кривизну витка"),
+    "P": ("P", "spring force, N", "сила пружины, Н"),
+    "D_spring": ("D", "mean coil diameter, mm", "средний диаметр пружины, мм"),
+    "d_wire": ("d", "wire diameter, mm", "диаметр проволоки, мм"),
+    "iw": ("i<sub>w</sub>", "number of working coils", "число рабочих витков"),
+    "n_safety": ("n", "fatigue safety factor of the spring", "запас прочности пружины"),
+    "omega_c1": ("ω<sub>c1</sub>", "first natural angular frequency of the spring, rad/s", "первая собственная угловая частота пружины, рад/с"),
+    "PT": ("P<sub>T</sub>", "load on the cam, N", "нагрузка на кулачок, Н"),
+    "mT": ("m<sub>T</sub>", "mass reduced to the tappet, kg", "масса, приведённая к толкателю, кг"),
+    "R": ("R", "crank radius, mm", "радиус кривошипа, мм"), "L": ("L", "connecting-rod length, mm", "длина шатуна, мм"),
+    "lambda": ("λ", "R/L", "R/L"), "beta": ("β", "connecting-rod angle, deg", "угол отклонения шатуна, град"),
+    "pg": ("Δp<sub>g</sub>", "gauge gas pressure on the piston, MPa", "избыточное давление газов на поршень, МПа"),
+    "pin": ("p<sub>in</sub>", "specific inertia force of the reciprocating masses, MPa",
+            "удельная сила инерции поступательно движущихся масс, МПа"),
+    "p_total": ("p", "total specific force on the piston pin axis, MPa", "суммарная удельная сила на оси поршневого пальца, МПа"),
+    "pN": ("p<sub>N</sub>", "specific side force normal to the cylinder wall, MPa", "удельная нормальная сила на стенку цилиндра, МПа"),
+    "pS": ("p<sub>S</sub>", "specific force along the connecting rod, MPa", "удельная сила, действующая вдоль шатуна, МПа"),
+    "pK": ("p<sub>K</sub>", "specific radial force on the crank, MPa", "удельная радиальная сила на кривошипе, МПа"),
+    "pT": ("p<sub>T</sub>", "specific tangential force on the crank, MPa", "удельная тангенциальная сила на кривошипе, МПа"),
+    "T": ("T", "tangential force, kN", "тангенциальная сила, кН"), "M": ("M", "torque, N·m", "крутящий момент, Н·м"),
+    "Wi": ("W<sub>i</sub>", "indicated work of the cycle, J", "индикаторная работа цикла, Дж"),
+    "tau_strokes": ("τ", "strokes of the cycle", "тактность двигателя"),
+    "mj": ("m<sub>j</sub>", "reciprocating mass, kg", "масса поступательно движущихся частей, кг"),
+    "mr": ("m<sub>r</sub>", "rotating mass, kg", "масса вращающихся частей, кг"),
+    "Kr": ("K<sub>r</sub>", "centrifugal force of the rotating masses, N", "центробежная сила вращающихся масс, Н"),
+    "pi": ("p<sub>i</sub>", "mean indicated pressure, MPa", "среднее индикаторное давление, МПа"),
+    "K1K2": ("K<sub>1</sub>, K<sub>2</sub>", "factors of the port time-area (8.6)-(8.7)", "коэффициенты время-сечения окна (8.6)-(8.7)"),
+    "Z": ("Z", "time-area of a port, mm²·s", "время-сечение окна, мм²·с"),
+}
+"""Every symbol of the report: ``key: (HTML, English, Russian)`` -- explained where it is first used."""

@@ -5,6 +5,7 @@ import numpy as np
 
 from ..units import MM, rad_to_deg, to_display
 from .i18n import TEXT
+from .names import value_text
 
 
 def _segment_lines(ax, law):
@@ -33,7 +34,7 @@ def kinematics_figure(valve, t):
     top = axes[0].secondary_xaxis("top", functions=(lambda c: 2 * c + rad_to_deg(valve.nose_crank),
                                                      lambda k: (k - rad_to_deg(valve.nose_crank)) / 2))
     top.set_xlabel(t["crank_deg"])
-    fig.suptitle(f"{valve.name}: {valve.law.name}")
+    fig.suptitle(f"{valve.name}: {value_text(valve.law.name, t['lang'])}")
     fig.tight_layout()
     return fig
 
@@ -55,8 +56,8 @@ def contour_figure(valve, t):
     ax.axhline(0, color="0.6", lw=0.5)
     ax.axvline(0, color="0.6", lw=0.5)
     ax.set_aspect("equal")
-    ax.set_xlabel("x, mm")
-    ax.set_ylabel("y, mm")
+    ax.set_xlabel(t["x_mm"])
+    ax.set_ylabel(t["y_mm"])
     ax.legend(loc="lower right")
     ax.grid(alpha=0.3)
     ax.set_title(f"{valve.name}: {t['contour']}")
@@ -122,7 +123,7 @@ def spring_figure(valve, t):
         color, ls = styles[name]
         ax.plot(yy, line.force(yy * MM), color=color, ls=ls, lw=1.5 if name == "chosen" else 1.0,
                 label=t["line_" + name])
-    ax.set_xlabel(t["valve_lift"] + ", mm")
+    ax.set_xlabel(t["valve_lift_axis"])
     ax.set_ylabel(t["force"])
     ax.set_xlim(0.0, y.max())
     ax.set_ylim(0.0, None)
@@ -139,7 +140,7 @@ def crank_forces_figure(crank, t):
     x = rad_to_deg(crank.phi)
     fig = Figure(figsize=(9, 8))
     axes = fig.subplots(2, 1, sharex=True)
-    for key, label in (("p_gas", "Δp_g"), ("p_j", "p_j"), ("p", "p")):
+    for key, label in (("p_gas", t["p_gas"]), ("p_j", t["p_in"]), ("p", t["p_total"])):
         axes[0].plot(x, c[key] * 1e-6, label=label)
     for key, label in (("p_N", "p_N"), ("p_S", "p_S"), ("p_K", "p_K"), ("p_T", "p_T")):
         axes[1].plot(x, c[key] * 1e-6, label=label)

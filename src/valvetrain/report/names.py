@@ -1,0 +1,592 @@
+"""Names a designer reads for the keys, units, values and check texts of a design, in English and Russian.
+
+The records of a design (``results.json``, the specification, the CSV headers) keep their machine keys
+(``tappet_acceleration_m_s2``); the report shows :func:`label` of a key (``"tappet acceleration a_T, m/s²"``,
+``"ускорение толкателя a_T, м/с²"``).  A key is looked up with the path of the table it belongs to
+(``spring.count`` before ``count``); the unit comes from the key's suffix (``_mm``, ``_m_s2``, ``_MPa``...).
+
+Texts made with numbers (the notes of the checks, the cylinder-pressure model) are translated by their
+skeleton: the numbers are taken out, the Russian skeleton is looked up and the numbers put back
+(:func:`translate`).  A key, a value or a text without a Russian entry is shown as it is (in English):
+``tests/test_report_i18n.py`` finds them.
+
+Symbols: one symbol for one quantity throughout the report and the plots: ``h`` lift, ``v`` velocity,
+``a`` acceleration, ``j`` jerk (index ``T`` tappet side, ``v`` valve side).
+"""
+
+import re
+
+UNITS = {
+    "": ("", ""), "mm": ("mm", "мм"), "mm2": ("mm²", "мм²"), "mm2 s": ("mm²·s", "мм²·с"), "m": ("m", "м"),
+    "m/s": ("m/s", "м/с"), "m/s2": ("m/s²", "м/с²"), "m/s3": ("m/s³", "м/с³"), "N": ("N", "Н"), "kN": ("kN", "кН"),
+    "cm3": ("cm³", "см³"), "N/mm": ("N/mm", "Н/мм"), "N m": ("N·m", "Н·м"), "kg": ("kg", "кг"),
+    "kg mm2": ("kg·mm²", "кг·мм²"), "kg/m2": ("kg/m²", "кг/м²"), "MPa": ("MPa", "МПа"), "Pa": ("Pa", "Па"),
+    "J": ("J", "Дж"), "deg": ("deg", "град"), "crank deg": ("crank deg", "град ПКВ"),
+    "cam deg": ("cam deg", "град ПРВ"), "rad/s": ("rad/s", "рад/с"), "Hz": ("Hz", "Гц"), "rpm": ("rpm", "об/мин"),
+    "mm/rad2": ("mm/rad²", "мм/рад²"), "mm/deg": ("mm/deg", "мм/град"), "%": ("%", "%"),
+}
+"""Display units of :data:`valvetrain.units.DISPLAY_UNITS` (and a few of the keys) as printed."""
+
+SUFFIXES = [
+    ("_mm2_s", "mm2 s"), ("_N_per_mm", "N/mm"), ("_mm_per_deg", "mm/deg"), ("_kg_mm2", "kg mm2"),
+    ("_kg_m2", "kg/m2"), ("_m_s2", "m/s2"), ("_m_s3", "m/s3"), ("_m_s", "m/s"), ("_rad_s", "rad/s"),
+    ("_crank_deg", "crank deg"), ("_cam_deg", "cam deg"), ("_deg", "deg"), ("_mm2", "mm2"), ("_mm", "mm"),
+    ("_MPa", "MPa"), ("_Nm", "N m"), ("_kN", "kN"), ("_N", "N"), ("_kg", "kg"), ("_Hz", "Hz"), ("_rpm", "rpm"),
+    ("_cm3", "cm3"), ("_J", "J"),
+]
+"""Unit suffixes of the keys, longest first."""
+
+LANGS = ("en", "ru")
+
+NAMES = {
+    # engine
+    "name": ("name", "наименование"), "bore": ("bore D", "диаметр цилиндра D"),
+    "stroke": ("piston stroke S", "ход поршня S"), "rated_speed": ("rated speed n", "номинальная частота вращения n"),
+    "cylinders": ("number of cylinders", "число цилиндров"), "strokes": ("strokes of the cycle", "тактность"),
+    "type": ("engine type", "тип двигателя"), "chamber": ("combustion chamber", "камера сгорания"),
+    "layout": ("layout", "компоновка"), "bank_angle": ("bank angle", "угол развала"),
+    "firing_order": ("firing order", "порядок работы цилиндров"),
+    "mean_piston_speed": ("mean piston speed c_p", "средняя скорость поршня c_p"),
+    "swept_volume": ("swept volume of one cylinder V_h", "рабочий объём цилиндра V_h"),
+    "displacement": ("displacement i_c V_h", "литраж i_c V_h"), "piston_area": ("piston area F_p", "площадь поршня F_p"),
+    "banks": ("bank of each cylinder", "ряд каждого цилиндра"),
+    "crank_throws": ("crank throw angles", "углы колен вала"),
+    "output.table_step_cam": ("step of the lift table", "шаг таблицы подъёма"),
+    "output.contour_points": ("points of the contour", "число точек профиля"),
+    "output.export_step": ("step of the exported tables", "шаг таблиц для изготовления"),
+    # valve
+    "kind": ("valve kind", "вид клапана"), "count": ("number of valves of this kind i", "число клапанов i"),
+    "throat_diameter": ("throat diameter d_g", "диаметр горловины d_г"),
+    "seat_angle": ("seat angle φ", "угол фаски φ"), "max_lift": ("valve lift h_v max", "подъём клапана h_v max"),
+    "clearance": ("valve clearance h0", "тепловой зазор h0"),
+    "opens": ("opening advance (before TDC)", "угол опережения открытия (до ВМТ)"),
+    "closes": ("closing lag (after BDC)", "угол запаздывания закрытия (после НМТ)"),
+    "rocker_ratio": ("rocker ratio i_k", "передаточное отношение коромысла i_k"),
+    "ramp_type": ("ramp type", "вид участка сбега"),
+    "ramp_acceleration_fraction": ("share of the ramp with acceleration", "доля участка сбега с ускорением"),
+    "base_radius": ("base radius r0", "радиус начальной окружности r0"),
+    "follower": ("follower", "толкатель"), "law": ("lift law", "закон подъёма"),
+    "ramp_end_velocity": ("velocity at the ramp end w′", "скорость в конце участка сбега w′"),
+    "phi1": ("angle Φ1 (positive acceleration)", "угол Φ1 (положительное ускорение)"),
+    "phi2": ("angle Φ2", "угол Φ2"), "phi3": ("angle Φ3 (negative acceleration)", "угол Φ3 (отрицательное ускорение)"),
+    "shape_factor": ("shape factor", "коэффициент формы"),
+    "roller_radius": ("roller radius", "радиус ролика"),
+    "drive.layout": ("drive layout", "схема привода"),
+    "spring_reserve": ("spring reserve K_z", "коэффициент запаса пружины K_з"),
+    "valve_arm": ("rocker arm on the valve side", "плечо коромысла со стороны клапана"),
+    "masses.valve": ("valve mass", "масса клапана"), "masses.retainer": ("retainer mass", "масса тарелки пружины"),
+    "masses.cotters": ("cotters mass", "масса сухарей"), "masses.pushrod": ("pushrod mass", "масса штанги"),
+    "masses.tappet": ("tappet mass", "масса толкателя"),
+    "masses.rocker_inertia": ("rocker moment of inertia", "момент инерции коромысла"),
+    "spring.count": ("number of springs", "число пружин"), "inner_share": ("share of the inner spring", "доля внутренней пружины"),
+    "material": ("spring steel", "материал пружины"), "min_safety_factor": ("minimum fatigue safety factor", "наименьший запас прочности"),
+    "min_resonance_ratio": ("minimum resonance ratio", "наименьшее отношение частот"),
+    "coil_gap_factor": ("coil gap at full lift / wire diameter", "зазор между витками при полном подъёме / диаметр проволоки"),
+    "mean_diameter_ratio": ("mean diameter / throat diameter", "средний диаметр / диаметр горловины"),
+    "wire_diameter_range": ("wire diameters", "диаметры проволоки"), "wire_step": ("wire step", "шаг диаметра проволоки"),
+    "deflection_ratio_range": ("ratios f_max/f_min", "отношения f_max/f_min"),
+    "min_frequency_difference": ("minimum frequency difference of a pair", "наименьшая разница частот пары"),
+    "radial_gap": ("radial gap between the springs", "радиальный зазор между пружинами"),
+    "installed_length": ("installed length", "длина в установленном состоянии"),
+    "spring.installed_length": ("installed length", "длина в установленном состоянии"),
+    "max_free_length": ("max free length", "наибольшая длина в свободном состоянии"),
+    "contact_modulus": ("contact modulus", "приведённый модуль упругости в контакте"),
+    "head_diameter": ("valve head diameter", "диаметр тарелки клапана"), "cam_width": ("cam width", "ширина кулачка"),
+    "camshaft_diameter": ("camshaft diameter", "диаметр распределительного вала"),
+    "camshaft_bore": ("camshaft bore", "диаметр отверстия распределительного вала"),
+    "camshaft_span": ("camshaft span between bearings", "пролёт распределительного вала между опорами"),
+    "cam_to_bearing": ("cam to bearing", "расстояние от кулачка до опоры"),
+    "camshaft_modulus": ("camshaft Young's modulus", "модуль упругости распределительного вала"),
+    "camshaft_deflection_coefficient": ("camshaft deflection coefficient", "коэффициент в формуле прогиба вала"),
+    "tappet_diameter": ("tappet diameter", "диаметр толкателя"),
+    "tappet_guide_length": ("tappet guide length", "длина направляющей толкателя"),
+    "pushrod_length": ("pushrod length", "длина штанги"), "pushrod_diameter": ("pushrod diameter", "диаметр штанги"),
+    "pushrod_bore": ("pushrod bore", "диаметр отверстия штанги"),
+    "pushrod_modulus": ("pushrod Young's modulus", "модуль упругости штанги"),
+    "ball_radius": ("ball radius of the pushrod", "радиус сферы наконечника штанги"),
+    "socket_radius": ("socket radius", "радиус сферической опоры"),
+    "pushrod_head_area": ("pushrod head bearing area", "площадь опоры наконечника штанги"),
+    "rocker_pad_width": ("rocker pad width", "ширина бойка коромысла"),
+    "rocker_pad_radius": ("rocker pad radius", "радиус бойка коромысла"),
+    "rocker_shaft_span": ("rocker shaft span", "пролёт оси коромысла"),
+    "rocker_shaft_diameter": ("rocker shaft diameter", "диаметр оси коромысла"),
+    "rocker_shaft_bore": ("rocker shaft bore", "диаметр отверстия оси коромысла"),
+    "rocker_width": ("rocker bearing width", "ширина втулки коромысла"),
+    "table_file": ("lift table file", "файл таблицы подъёма"), "table_angle": ("angles of the table", "углы таблицы"),
+    "table_lift_at": ("lift of the table at", "подъём в таблице на"), "table_zero": ("table angles from", "углы таблицы от"),
+    "fit": ("fit", "аппроксимация"), "accuracy": ("accuracy of the fit", "точность аппроксимации"),
+    "max_harmonics": ("max number of harmonics", "наибольшее число гармоник"),
+    "straight_flanks": ("straight flanks", "прямолинейные участки"),
+    "points": ("points fitted", "число аппроксимируемых точек"), "rows_per_point": ("rows per point", "строк на точку"),
+    "relative_height": ("relative height", "относительная высота"), "limit": ("limit", "предел"),
+    # cam and flow
+    "V1": ("V′ throat velocity", "V′ условная скорость в горловине"),
+    "V2": ("V″ curtain velocity at full lift", "V″ условная скорость в проходном сечении при полном подъёме"),
+    "V3": ("V‴ time-area velocity", "V‴ условная скорость по время-сечению"),
+    "throat_area": ("throat area f_g", "площадь горловины f_г"),
+    "valve_lift": ("valve lift h_v", "подъём клапана h_v"),
+    "max_curtain_area": ("curtain area at full lift f_max", "проходное сечение при полном подъёме f_max"),
+    "time_area": ("time-area over the valve's stroke ∫f dt", "время-сечение за такт ∫f dt"),
+    "time_area_open": ("time-area over the whole opening", "время-сечение за всё открытие"),
+    "time_area_analytic": ("time-area on the analytic law", "время-сечение по аналитическому закону"),
+    "mean_charge_velocity": ("mean charge velocity v_vp", "средняя скорость заряда v_вп"),
+    "fullness": ("fullness coefficient ξ", "коэффициент полноты ξ"),
+    "stroke_crank": ("the valve's own stroke", "такт клапана"),
+    "max_velocity": ("max tappet velocity v_T max", "наибольшая скорость толкателя v_T max"),
+    "max_acceleration": ("max tappet acceleration a_T max", "наибольшее ускорение толкателя a_T max"),
+    "min_acceleration": ("min tappet acceleration a_T min", "наименьшее ускорение толкателя a_T min"),
+    "rho_min": ("min radius of curvature ρ_min", "наименьший радиус кривизны ρ_min"),
+    "rho_max": ("max radius of curvature ρ_max", "наибольший радиус кривизны ρ_max"),
+    "rho_min_cam": ("cam angle of ρ_min", "угол ПРВ при ρ_min"), "rho_max_cam": ("cam angle of ρ_max", "угол ПРВ при ρ_max"),
+    "phi_p0": ("main half-angle φ_p0", "полуугол основного участка φ_р0"),
+    "ramp": ("ramp angle Φ0", "угол участка сбега Φ0"), "ramp_height": ("ramp height h0", "высота участка сбега h0"),
+    "tappet_lift": ("tappet lift h_T max", "подъём толкателя h_T max"),
+    "event_cam": ("whole event with the ramps", "продолжительность с участками сбега"),
+    "nose_crank": ("crank angle of the cam nose", "угол ПКВ вершины кулачка"),
+    "camshaft_speed": ("camshaft angular speed ω_cam", "угловая скорость распределительного вала ω_р"),
+    "heel_radius": ("heel radius r0 − h0", "радиус тыльной части r0 − h0"),
+    "max_contact_offset": ("max contact offset on the flat follower b", "наибольшее смещение точки контакта на плоском толкателе b"),
+    "max_pressure_angle": ("max pressure angle", "наибольший угол давления"),
+    "min_concave_radius": ("concave radius closest to zero", "ближайший к нулю вогнутый радиус"),
+    "undercut": ("profile undercut", "подрез профиля"),
+    "min_clearance": ("min valve-piston clearance", "наименьший зазор клапан-поршень"),
+    "crank": ("at crank angle", "при угле ПКВ"), "piston_gap_tdc": ("valve-piston gap at TDC", "зазор клапан-поршень в ВМТ"),
+    "valve_opens_crank": ("valve opens (from TDC)", "клапан открывается (от ВМТ)"),
+    "valve_closes_crank": ("valve closes (from TDC)", "клапан закрывается (от ВМТ)"),
+    "valve_opening_velocity": ("valve velocity at the start of the lift", "скорость клапана в начале подъёма"),
+    "valve_seating_velocity": ("valve seating velocity", "скорость посадки клапана"),
+    "h_max": ("max lift h_max", "наибольший подъём h_max"),
+    # measured table
+    "max_lift_table": ("max lift in the table", "наибольший подъём в таблице"),
+    "measured.max_lift": ("max lift in the table", "наибольший подъём в таблице"),
+    "lobe_centre": ("lobe centre after the asymmetry correction (from the gas-exchange TDC)",
+                    "ось кулачка после исправления асимметрии (от ВМТ газообмена)"),
+    "lobe_centre_cam": ("lobe centre after the asymmetry correction", "ось кулачка после исправления асимметрии"),
+    "harmonics": ("harmonics of the N-harmonic fit", "число гармоник аппроксимации"),
+    "asymmetry_rms": ("rms odd part (true asymmetry) after the correction", "СКО нечётной части (истинная асимметрия) после исправления"),
+    "opens_deg_at_0.1mm": ("opens at 0.1 mm valve lift, crank deg", "открытие при подъёме клапана 0,1 мм, град ПКВ"),
+    "closes_deg_at_0.1mm": ("closes at 0.1 mm valve lift, crank deg", "закрытие при подъёме клапана 0,1 мм, град ПКВ"),
+    "source": ("source", "источник"), "rms_residual": ("rms residual", "СКО отклонения"),
+    "max_residual": ("max residual", "наибольшее отклонение"),
+    "jerk_sign_changes": ("sign changes of the jerk j", "перемены знака рывка j"),
+    # masses
+    "at_valve": ("reduced mass at the valve m_v", "приведённая к клапану масса m_кл"),
+    "at_tappet": ("reduced mass at the tappet m_T", "приведённая к толкателю масса m_т"),
+    "masses.source": ("source", "источник"), "masses.layout": ("drive layout", "схема привода"),
+    # spring
+    "preload": ("preload P_min", "сила предварительной затяжки P_min"),
+    "max_force": ("force at full lift P_max", "сила при полном подъёме P_max"), "rate": ("spring rate c", "жёсткость пружины c"),
+    "required_preload": ("required preload", "необходимая сила затяжки"),
+    "required_rate": ("required rate", "необходимая жёсткость"),
+    "required_max_force": ("required force at full lift", "необходимая сила при полном подъёме"),
+    "required_deflection_ratio": ("f_max/f_min of the required line", "f_max/f_min необходимой характеристики"),
+    "preload_set_by_gas_force": ("preload set by the gas force", "затяжка определена силой давления газов"),
+    "gas_force": ("gas force on the valve head P_gas", "сила давления газов на клапан P_г"),
+    "gas_force_source": ("gas force from", "сила давления газов по"),
+    "preload_set_by_seat_load": ("preload set by the seat load", "затяжка определена посадочным усилием"),
+    "seat_load": ("seat load", "посадочное усилие"), "seat_load_source": ("seat load from", "посадочное усилие по"),
+    "deflection_ratio": ("ratio f_max/f_min", "отношение f_max/f_min"),
+    "candidates_passing": ("candidates passing every check", "вариантов, прошедших все проверки"),
+    "candidates_tried": ("candidates tried", "рассмотрено вариантов"),
+    "wire": ("wire diameter d", "диаметр проволоки d"), "mean_diameter": ("mean coil diameter D", "средний диаметр пружины D"),
+    "outer_diameter": ("outer diameter", "наружный диаметр"), "active_coils": ("working coils i_w", "число рабочих витков i_р"),
+    "total_coils": ("total coils", "полное число витков"), "free_length": ("free length", "длина в свободном состоянии"),
+    "min_length": ("length at full lift", "длина при полном подъёме"), "min_pitch": ("min pitch", "наименьший шаг витков"),
+    "installed_pitch": ("pitch at the installed length", "шаг витков в установленном состоянии"),
+    "free_pitch": ("pitch of the free spring", "шаг витков в свободном состоянии"),
+    "preload_deflection": ("preload deflection f_min", "предварительная деформация f_min"),
+    "max_deflection": ("max deflection f_max", "наибольшая деформация f_max"),
+    "spring_index": ("spring index D/d", "индекс пружины D/d"), "wahl_factor": ("Wahl factor", "коэффициент Валя"),
+    "tau_max": ("max shear stress τ_max", "наибольшее касательное напряжение τ_max"),
+    "tau_min": ("min shear stress τ_min", "наименьшее касательное напряжение τ_min"),
+    "safety_factor": ("fatigue safety factor n", "запас прочности n"),
+    "natural_frequency": ("natural frequency of the spring", "собственная частота пружины"),
+    "resonance_ratio": ("resonance ratio ω_c1/ω_cam", "отношение частот ω_c1/ω_р"),
+    "mass": ("mass of the spring", "масса пружины"), "target_deflection_ratio": ("target f_max/f_min", "заданное f_max/f_min"),
+    "guide_sleeve_needed": ("guide sleeve needed", "нужна направляющая втулка"),
+    "passes_all_checks": ("passes every check", "проходит все проверки"),
+    "binding_check": ("binding check", "определяющая проверка"),
+    "working_coils": ("working coils", "число рабочих витков"), "fatigue_safety": ("fatigue safety factor", "запас прочности"),
+    "coil_gap_at_full_lift": ("coil gap at full lift", "зазор между витками при полном подъёме"),
+    "frequency_difference": ("frequency difference of the pair", "разница частот пары"),
+    # strength
+    "cam_force_max": ("max cam load P_T", "наибольшая нагрузка на кулачок P_T"),
+    "roller_side_force_max": ("largest side force of the roller follower", "наибольшая боковая сила на роликовом толкателе"),
+    "roller_side_force_cam": ("cam angle of the largest side force", "угол ПРВ наибольшей боковой силы"),
+    "flat_follower_edge_loading": ("flat follower edge loading", "кромочный контакт плоского толкателя"),
+    "tappet_face_diameter": ("tappet face diameter", "диаметр тарелки толкателя"),
+    "fit_reason": ("fit used and why", "аппроксимация и почему она выбрана"),
+    "cam_force_max_cam": ("cam angle of the max cam load", "угол ПРВ наибольшей нагрузки на кулачок"),
+    "valve_force_max": ("max force at the valve", "наибольшая сила на клапане"),
+    "gas_force_at_opening": ("gas force at the valve's opening", "сила давления газов в момент открытия"),
+    "cam_contact_stress_cam": ("cam angle of the max contact stress", "угол ПРВ наибольшего контактного напряжения"),
+    "camshaft_deflection": ("camshaft deflection", "стрела прогиба распределительного вала"),
+    "cam_contact_stress": ("contact stress of the cam", "контактное напряжение кулачка"),
+    "tappet_side_pressure": ("side pressure on the tappet", "удельное давление на боковую поверхность толкателя"),
+    "pushrod_buckling_margin": ("buckling safety factor of the pushrod", "запас устойчивости штанги"),
+    "ball_socket_stress": ("contact stress of the pushrod ball", "контактное напряжение наконечника штанги"),
+    "pushrod_head_pressure": ("bearing pressure on the pushrod head", "напряжение смятия наконечника штанги"),
+    "rocker_pad_stress": ("contact stress of the rocker pad", "контактное напряжение бойка коромысла"),
+    "rocker_shaft": ("rocker shaft", "ось коромысла"),
+    "rocker_shaft_bending": ("bending stress of the rocker shaft", "напряжение изгиба оси коромысла"),
+    "rocker_shaft_shear": ("shear stress of the rocker shaft", "касательное напряжение оси коромысла"),
+    "rocker_shaft_bearing": ("bearing pressure of the rocker shaft", "напряжение смятия оси коромысла"),
+    # crank
+    "rod_length": ("connecting-rod length L", "длина шатуна L"), "offset": ("piston pin offset", "дезаксаж"),
+    "kinematics": ("kinematics", "кинематика"), "pv_method": ("indicator diagram", "индикаторная диаграмма"),
+    "compression_ratio": ("compression ratio ε", "степень сжатия ε"),
+    "ambient_pressure": ("ambient pressure p_0", "давление окружающей среды p_0"),
+    "step": ("step", "шаг"), "piston": ("piston mass", "масса поршня"), "rod": ("connecting-rod mass", "масса шатуна"),
+    "crank.crank": ("crank mass", "масса кривошипа"),
+    "rod_pin_fraction": ("share of the rod mass at the piston pin", "доля массы шатуна на поршневом пальце"),
+    "heat_input": ("heat input", "подведённая теплота"), "intake_pressure": ("intake pressure", "давление впуска"),
+    "exhaust_pressure": ("exhaust pressure", "давление выпуска"),
+    "combustion_start": ("start of combustion (from firing TDC)", "начало сгорания (от ВМТ сгорания)"),
+    "combustion_duration": ("combustion duration", "продолжительность сгорания"),
+    "wiebe_a": ("Wiebe a", "коэффициент Вибе a"), "wiebe_m": ("Wiebe exponent m", "показатель сгорания Вибе m"),
+    "gamma": ("ratio of specific heats γ", "показатель адиабаты γ"),
+    "cylinder_intake_pressure": ("cylinder pressure on intake", "давление в цилиндре при впуске"),
+    "cylinder_exhaust_pressure": ("cylinder pressure on exhaust", "давление в цилиндре при выпуске"),
+    "exhaust_back_pressure": ("exhaust back pressure", "противодавление выпуска"),
+    "exhaust_opening_pressure": ("cylinder pressure at exhaust opening", "давление в цилиндре при открытии выпуска"),
+    "intake_port_pressure": ("intake port pressure", "давление во впускном канале"),
+    "speed": ("crank speed n", "частота вращения n"), "lambda": ("λ = R/L", "λ = R/L"),
+    "max_velocity_crank": ("crank angle of the max piston velocity", "угол ПКВ наибольшей скорости поршня"),
+    "max_acceleration_crank": ("crank angle of the max piston acceleration", "угол ПКВ наибольшего ускорения поршня"),
+    "min_acceleration_crank": ("crank angle of the min piston acceleration", "угол ПКВ наименьшего ускорения поршня"),
+    "crank.max_velocity": ("max piston velocity v_p", "наибольшая скорость поршня v_п"),
+    "crank.max_acceleration": ("max piston acceleration a_p", "наибольшее ускорение поршня a_п"),
+    "crank.min_acceleration": ("min piston acceleration a_p", "наименьшее ускорение поршня a_п"),
+    "textbook.max_velocity": ("max piston velocity, approximate formula", "наибольшая скорость поршня по приближённой формуле"),
+    "textbook.max_acceleration": ("max piston acceleration, approximate formula", "наибольшее ускорение поршня по приближённой формуле"),
+    "textbook.min_acceleration": ("min piston acceleration, approximate formula", "наименьшее ускорение поршня по приближённой формуле"),
+    "textbook.min_acceleration_crank": ("its crank angle, approximate formula", "его угол ПКВ по приближённой формуле"),
+    "textbook.source": ("approximate formulas from", "приближённые формулы по"),
+    "max_rod_angle": ("max connecting-rod angle β", "наибольший угол отклонения шатуна β"),
+    "tdc_crank": ("TDC at crank angle", "ВМТ при угле ПКВ"), "bdc_crank": ("BDC at crank angle", "НМТ при угле ПКВ"),
+    "masses.piston": ("piston mass", "масса поршня"), "masses.rod": ("connecting-rod mass", "масса шатуна"),
+    "masses.crank": ("crank mass", "масса кривошипа"),
+    "rod_at_pin": ("rod mass at the piston pin", "масса шатуна на поршневом пальце"),
+    "rod_at_crank": ("rod mass at the crank pin", "масса шатуна на шатунной шейке"),
+    "reciprocating": ("reciprocating mass m_j", "масса поступательно движущихся частей m_j"),
+    "rotating": ("rotating mass m_r", "масса вращающихся частей m_r"),
+    "centrifugal_force": ("centrifugal force K_r", "центробежная сила K_r"),
+    "max_gas_pressure": ("max gas pressure", "наибольшее давление газов"),
+    "max_gas_pressure_crank": ("crank angle of the max gas pressure", "угол ПКВ наибольшего давления газов"),
+    "mean_torque": ("mean torque M_mean", "средний крутящий момент M_ср"),
+    "max_torque": ("max torque", "наибольший крутящий момент"), "min_torque": ("min torque", "наименьший крутящий момент"),
+    "nonuniformity": ("torque nonuniformity (M_max − M_min)/M_mean", "неравномерность крутящего момента (M_max − M_min)/M_ср"),
+    "cylinder_mean_torque": ("mean torque of one cylinder", "средний крутящий момент одного цилиндра"),
+    "torque_period": ("period of the total torque", "период суммарного крутящего момента"),
+    "even_firing": ("even firing", "равномерное чередование вспышек"),
+    "firing_angles": ("firing angles", "углы вспышек"), "firing": ("firing", "чередование вспышек"),
+    "indicated_work": ("indicated work W_i", "индикаторная работа W_i"),
+    "imep": ("mean indicated pressure p_i", "среднее индикаторное давление p_i"),
+    "mean_torque_from_work": ("mean torque from the work W_i/(πτ)", "средний момент по работе W_i/(πτ)"),
+    "torque_work_balance": ("relative difference of the two mean torques", "относительная разница двух средних моментов"),
+    "specific_piston": ("specific piston mass", "удельная масса поршня"),
+    "specific_rod": ("specific rod mass", "удельная масса шатуна"), "specific_crank": ("specific crank mass", "удельная масса кривошипа"),
+    "cycle.intake_pressure": ("intake pressure", "давление впуска"),
+    # two-stroke
+    "ports.kind": ("port kind", "вид окна"), "width": ("port width", "ширина окна"), "height": ("port height", "высота окна"),
+    "lower_edge": ("lower edge above the piston crown at BDC", "нижняя кромка над днищем поршня в НМТ"),
+    "opens_crank": ("opens (from TDC)", "открывается (от ВМТ)"), "closes_crank": ("closes (from TDC)", "закрывается (от ВМТ)"),
+    "duration": ("open", "открыто"), "max_area": ("max port area", "наибольшая площадь окна"),
+    "opens_before_bdc": ("opens before BDC", "открывается до НМТ"),
+    "opens_before_bdc_series": ("opens before BDC, series formula (8.1)", "открывается до НМТ, по формуле (8.1)"),
+    "speed_range": ("range of speeds", "диапазон частот вращения"), "piston_height": ("piston height", "высота поршня"),
+}
+"""Names of the keys without their unit suffix (or a whole key where the suffix is no unit): ``(en, ru)``."""
+
+VALUES = {
+    "intake": "впускной", "exhaust": "выпускной", "inlet": "впускное", "transfer": "продувочное",
+    "flat": "плоский", "roller": "роликовый", "direct": "непосредственный", "rocker": "с коромыслом",
+    "pushrod": "со штангой и коромыслом", "inline": "рядный", "v": "V-образный", "si": "с искровым зажиганием",
+    "si_injected": "с искровым зажиганием и впрыском", "diesel": "дизель", "side_valve": "нижнеклапанная",
+    "overhead": "верхнеклапанная", "prechamber_diesel": "предкамерная (дизель)",
+    "direct_injection_diesel": "неразделённая (дизель)", "wedge": "клиновая", "hemispherical": "полусферическая",
+    "exact": "точная", "approximate": "приближённая", "brix": "по методу Брикса", "cosine": "косинусоидальный",
+    "constant_velocity": "с постоянной скоростью", "constant_acceleration": "с постоянным ускорением",
+    "kurz": "безударный кулачок Курца", "polydyne": "полидинамический кулачок", "polynomial": "полиномиальный",
+    "combined": "составной", "dynamic": "динамический синтез", "harmonic": "гармонический",
+    "three_arc": "трёхдуговой", "tangent": "тангенциальный", "table": "по измеренной таблице",
+    "crank": "по коленчатому валу", "cam": "по распределительному валу", "valve": "на клапане", "tappet": "на толкателе",
+    "gas_exchange_tdc": "ВМТ газообмена", "firing_tdc": "ВМТ сгорания", "auto": "автоматически", "spline": "сплайн",
+    "true": "да", "false": "нет", "outer": "наружная", "inner": "внутренняя", "any": "любое",
+}
+"""Russian of the text values of the specification and the records (their English is the value itself)."""
+
+SEGMENTS = {
+    "ramp": "участок сбега", "polydyne": "полидинамический участок", "harmonic": "гармонический участок",
+    "measured": "измеренный участок", "clearance take-up": "выборка зазора", "dynamic": "основной участок",
+    "flank": "боковой участок", "nose": "вершина", "A1": "A1", "A2": "A2", "A3": "A3",
+    "Phi1": "Φ1", "Phi2": "Φ2", "Phi3": "Φ3",
+}
+"""Names of the lift-law segments (``"Phi1 opening"``) without their side."""
+
+QUANTITIES = {
+    "V' (throat velocity)": ("V′ (throat velocity)", "V′ (условная скорость в горловине)"),
+    "V'' (curtain velocity at full lift)": ("V″ (curtain velocity at full lift)",
+                                            "V″ (условная скорость в проходном сечении при полном подъёме)"),
+    "V''' (time-area velocity)": ("V‴ (time-area velocity)", "V‴ (условная скорость по время-сечению)"),
+    "v_vp (mean charge velocity)": ("v_vp (mean charge velocity)", "v_вп (средняя скорость заряда)"),
+    "throat diameter / bore": ("throat diameter / bore d_g/D", "диаметр горловины / диаметр цилиндра d_г/D"),
+    "valve lift / throat diameter": ("valve lift / throat diameter h_v/d_g", "подъём клапана / диаметр горловины h_v/d_г"),
+    "max tappet acceleration": ("max tappet acceleration a_T max", "наибольшее ускорение толкателя a_T max"),
+    "min tappet acceleration": ("min tappet acceleration a_T min", "наименьшее ускорение толкателя a_T min"),
+    "opening advance": ("opening advance", "угол опережения открытия"),
+    "closing lag": ("closing lag", "угол запаздывания закрытия"),
+    "clearance taken up without a ramp: valve seating velocity": (
+        "clearance taken up without a ramp: valve seating velocity",
+        "зазор выбирается без участка сбега: скорость посадки клапана"),
+    "seat angle": ("seat angle φ", "угол фаски φ"), "clearance h0": ("clearance h0", "тепловой зазор h0"),
+    "rocker ratio": ("rocker ratio i_k", "передаточное отношение коромысла i_k"),
+    "base radius r0 / valve lift": ("base radius / valve lift r0/h_v", "радиус начальной окружности / подъём клапана r0/h_v"),
+    "cam profile undercut: rho_min (flat follower)": ("cam profile undercut: ρ_min (flat follower)",
+                                                      "подрез профиля кулачка: ρ_min (плоский толкатель)"),
+    "cam profile undercut: pitch radius of curvature - roller radius": (
+        "cam profile undercut: pitch radius of curvature − roller radius",
+        "подрез профиля кулачка: радиус кривизны центрового профиля − радиус ролика"),
+    "max pressure angle": ("max pressure angle", "наибольший угол давления"),
+    "rho_min (cam profile)": ("ρ_min (cam profile)", "ρ_min (профиль кулачка)"),
+    "ramp end velocity": ("ramp end velocity w′", "скорость в конце участка сбега w′"),
+    "Phi2/Phi3": ("Φ2/Φ3", "Φ2/Φ3"), "(Phi2+Phi3)/Phi1": ("(Φ2+Φ3)/Φ1", "(Φ2+Φ3)/Φ1"),
+    "polydyne exponent p": ("polydyne exponent p", "показатель степени p полидинамического кулачка"),
+    "harmonic order N of the cam": ("harmonic order N of the cam", "порядок гармоники N кулачка"),
+    "acceleration jump at the nose": ("acceleration jump at the nose", "скачок ускорения на вершине"),
+    "dynamic cam: fall of the lift before the nose": ("dynamic cam: fall of the lift before the nose",
+                                                      "динамический кулачок: спад подъёма до вершины"),
+    "measured table: rms residual of the N-harmonic fit": ("measured table: rms residual of the N-harmonic fit",
+                                                           "измеренная таблица: СКО гармонической аппроксимации"),
+    "opens_deg against the measured table": ("opening advance against the measured table",
+                                             "угол опережения открытия по измеренной таблице"),
+    "closes_deg against the measured table": ("closing lag against the measured table",
+                                              "угол запаздывания закрытия по измеренной таблице"),
+    "spring reserve K_z": ("spring reserve K_z", "коэффициент запаса пружины K_з"),
+    "spring f_max/f_min": ("spring f_max/f_min", "отношение деформаций пружины f_max/f_min"),
+    "inner spring share": ("share of the inner spring", "доля внутренней пружины"),
+    "sum of throat areas / piston area": ("sum of throat areas / piston area", "сумма площадей горловин / площадь поршня"),
+    "crank lambda = R/L": ("λ = R/L", "λ = R/L"),
+    "rod mass share at the piston pin": ("share of the rod mass at the piston pin", "доля массы шатуна на поршневом пальце"),
+    "coil gap at full lift / wire diameter": ("coil gap at full lift / wire diameter",
+                                              "зазор между витками при полном подъёме / диаметр проволоки"),
+    "f_max/f_min": ("f_max/f_min", "f_max/f_min"), "fatigue safety factor": ("fatigue safety factor n", "запас прочности n"),
+    "free length": ("free length", "длина в свободном состоянии"), "frequency difference": ("frequency difference", "разница частот"),
+    "installed length": ("installed length", "длина в установленном состоянии"),
+    "resonance ratio omega_c1/omega_cam": ("resonance ratio ω_c1/ω_cam", "отношение частот ω_c1/ω_р"),
+    "tau_max": ("τ_max", "τ_max"), "working coils": ("working coils", "число рабочих витков"),
+    "valve-piston clearance": ("valve-piston clearance", "зазор клапан-поршень"),
+    "valve-piston clearance over the overlap": ("valve-piston clearance over the overlap",
+                                                "зазор клапан-поршень в период перекрытия клапанов"),
+    "gas force on the exhaust valve at opening": ("gas force on the exhaust valve at opening",
+                                                  "сила давления газов на выпускной клапан в момент открытия"),
+    "specific mass of the drive m' = m_v / f_g": ("specific mass of the drive m′ = m_v/f_g",
+                                                  "удельная масса привода m′ = m_кл/f_г"),
+    "flat follower contact reach (edge loading)": ("flat follower contact reach (edge loading)",
+                                                   "вылет точки контакта на плоском толкателе (кромочный контакт)"),
+    "roller follower side force": ("roller follower side force", "боковая сила на роликовом толкателе"),
+    "port height / stroke": ("port height / stroke", "высота окна / ход поршня"),
+    "port width / bore": ("port width / bore", "ширина окна / диаметр цилиндра"),
+}
+"""Names of the check quantities (without the ``"valve: "`` prefix): ``(en, ru)``; the strength checks are
+named by :data:`NAMES` of their key."""
+
+SKELETONS = {
+    "coefficient {} (corrections note {}: not {})": "коэффициент {} (поправка {}: не {})",
+    "along the profile with the instantaneous force and radius (Shang Hanji ({}), eq. {})":
+        "по профилю, с мгновенными силой и радиусом кривизны (Shang Hanji ({}), ф. {})",
+    "offset b = {} mm = max dh/dphi ({})": "смещение b = {} мм = max dh/dφ ({})",
+    "Euler load {} N; E = {} MPa (corrections note {})": "критическая сила по Эйлеру {} Н; E = {} МПа (поправка {})",
+    "built-in beam ({}, corrections note {}); simply supported: {} MPa; load P_T max (corrections note {})":
+        "балка с заделкой ({}, поправка {}); на двух опорах: {} МПа; нагрузка P_T max (поправка {})",
+    "no ramp takes up clearance_mm = {}: the flank does": "участок сбега не выбирает зазор {} мм: его выбирает профиль",
+    "even firing, order {}{}{}{}": "равномерное чередование вспышек, порядок работы {}{}{}{}",
+    "even firing, order {}{}{}{}{}{}{}{}": "равномерное чередование вспышек, порядок работы {}{}{}{}{}{}{}{}",
+    "from the crank throws and cylinder axes": "по углам колен вала и осям цилиндров",
+    "m_v x {} m/s{} ({} g, a stated default)": "m_кл × {0} м/с² ({2} g, принято по умолчанию)",
+    "part masses, Valve-train practical works (n.d.), eq. ({}); spring mass of the design":
+        "массы деталей, практические работы по расчёту ГРМ, ф. ({}); масса рассчитанной пружины",
+    "part masses, Valve-train practical works (n.d.), eq. ({})": "массы деталей, практические работы по расчёту ГРМ, ф. ({})",
+    "specific mass {} kg/m2 (given), Valve-train practical works (n.d.), work {}":
+        "удельная масса {} кг/м² (задана), практические работы по расчёту ГРМ, работа {}",
+    "specific mass {} kg/m2 (default for a pushrod drive), Valve-train practical works (n.d.), work {}":
+        "удельная масса {} кг/м² (по умолчанию для привода со штангой), практические работы по расчёту ГРМ, работа {}",
+    "specific mass {} kg/m2 (default for a rocker drive), Valve-train practical works (n.d.), work {}":
+        "удельная масса {} кг/м² (по умолчанию для привода с коромыслом), практические работы по расчёту ГРМ, работа {}",
+    "specific mass {} kg/m2 (default for a direct drive), Valve-train practical works (n.d.), work {}":
+        "удельная масса {} кг/м² (по умолчанию для непосредственного привода), практические работы по расчёту ГРМ, работа {}",
+}
+"""Russian skeletons of the texts made with numbers (notes, models): ``{}`` stands for each number in turn."""
+
+_WIEBE = ("Wiebe cycle model: compression ratio {}, heat input {} J, start {} deg from firing TDC, duration {} deg, "
+          "a = {}, m = {}, gamma = {}, no wall heat loss, gas exchange at {}/{} MPa, ",
+          "модель цикла по Вибе: степень сжатия {}, подведённая теплота {} Дж, начало сгорания {} град от ВМТ "
+          "сгорания, продолжительность {} град, a = {}, m = {}, γ = {}, без теплоотдачи в стенки, газообмен при "
+          "{}/{} МПа, ")
+_WIEBE_VALVES = ("compression from the intake valve's closing, a blowdown of {} deg from the exhaust valve's opening ({})",
+                 "сжатие с момента закрытия впускного клапана, выпуск за {} град с момента открытия выпускного "
+                 "клапана ({})")
+_WIEBE_WHERE = [
+    ("valves at the dead centres", "клапаны в мёртвых точках"),
+    ("intake valve {}...{} crank deg from the gas-exchange TDC", "впускной клапан {}...{} град ПКВ от ВМТ газообмена"),
+    ("exhaust valve {}...{} crank deg from the gas-exchange TDC", "выпускной клапан {}...{} град ПКВ от ВМТ газообмена"),
+    ("intake valve {}...{} and exhaust valve {}...{} crank deg from the gas-exchange TDC",
+     "впускной клапан {}...{} и выпускной клапан {}...{} град ПКВ от ВМТ газообмена"),
+]
+SKELETONS.update({
+    _WIEBE[0] + _WIEBE_VALVES[0].replace("({})", "(" + en + ")") + " (Heywood ({}))":
+        _WIEBE[1] + _WIEBE_VALVES[1].replace("({})", "(" + ru + ")") + " (Heywood ({}))"
+    for en, ru in _WIEBE_WHERE})
+SKELETONS[_WIEBE[0] + "the ports at the dead centres (Heywood ({}))"] = \
+    _WIEBE[1] + "окна в мёртвых точках (Heywood ({}))"
+
+NUMBER = re.compile(r"[-+]?\d+(?:\.\d+)?(?:e[-+]?\d+)?")
+
+
+def _candidates(path):
+    """``(name path, unit)`` to look up for a key: the whole key, then without each unit suffix it ends with,
+    the shortest suffix first (``max_velocity_crank_deg`` is ``max_velocity_crank`` in deg before it is
+    ``max_velocity`` in crank deg)."""
+    leaf = path.rsplit(".", 1)[-1]
+    prefix = path[: len(path) - len(leaf)]
+    out = [(path, "")]
+    for suffix, unit in sorted(SUFFIXES, key=lambda s: len(s[0])):
+        if leaf.endswith(suffix) and len(leaf) > len(suffix):
+            out.append((prefix + leaf[: -len(suffix)], unit))
+    return out
+
+
+def _lookup(path, table):
+    """The entry of the longest tail of a dotted ``path`` in ``table``."""
+    parts = path.split(".")
+    for i in range(len(parts)):
+        tail = ".".join(parts[i:])
+        if tail in table:
+            return table[tail]
+    return None
+
+
+ANGLE_UNITS = {
+    **dict.fromkeys(("opens", "closes", "nose_crank", "stroke_crank", "valve_opens_crank", "valve_closes_crank",
+                     "lift.crank", "opens_crank", "closes_crank"), "crank deg"),
+    **dict.fromkeys(("phi1", "phi2", "phi3", "phi_p0", "ramp", "event_cam", "rho_min_cam", "rho_max_cam", "lift.cam",
+                     "output.table_step_cam", "cam_force_max_cam", "cam_contact_stress_cam", "lobe_centre_cam",
+                     "roller_side_force_cam"),
+                    "cam deg"),
+}
+"""Angles in degrees of the crank or of the camshaft (their keys end in ``_deg``)."""
+
+
+def _named(path):
+    for name_path, unit in _candidates(path):
+        found = _lookup(name_path, NAMES)
+        if found is not None:
+            if unit == "deg":
+                unit = _lookup(name_path, ANGLE_UNITS) or unit
+            return found, unit
+    return None, ""
+
+
+def unit_text(unit, lang):
+    """A display unit as printed (``"m/s2"`` -> ``"m/s²"``, ``"м/с²"``)."""
+    pair = UNITS.get(unit)
+    return unit if pair is None else pair[LANGS.index(lang)]
+
+
+def label(path, lang):
+    """The name of a key of a record with its unit: ``"cam.max_velocity_m_s"`` -> ``"max tappet velocity
+    v_T max, m/s"``.
+
+    ``path`` is dotted (``"spring.count"``); the longest tail with a name wins, the unit comes from the key's
+    suffix.  A key without a name is shown with spaces for its underscores -- :func:`has_name` finds them.
+    """
+    found, unit = _named(path)
+    if found is None:
+        return path.rsplit(".", 1)[-1].replace("_", " ")
+    name = found[LANGS.index(lang)]
+    return f"{name}, {unit_text(unit, lang)}" if unit else name
+
+
+def has_name(path):
+    """True when :func:`label` has a name for ``path`` (not the key itself)."""
+    return _named(path)[0] is not None
+
+
+def value_text(value, lang):
+    """A text value of a record (``"flat"``, ``"pushrod"``, a segment ``"Phi1 opening"``) in ``lang``."""
+    if lang == "en" or not isinstance(value, str):
+        return value
+    if value in VALUES:
+        return VALUES[value]
+    for side, ru in ((" opening", "подъём"), (" closing", "опускание")):
+        if value.endswith(side) and value[: -len(side)] in SEGMENTS:
+            return f"{SEGMENTS[value[: -len(side)]]}, {ru}"
+    return translate(value, lang)
+
+
+def translate(text, lang):
+    """A text made with numbers in ``lang`` by its skeleton (:data:`SKELETONS`); as it is without one."""
+    if lang == "en" or not text:
+        return text
+    numbers = NUMBER.findall(text)
+    skeleton = NUMBER.sub("{}", text)
+    ru = SKELETONS.get(skeleton)
+    return text if ru is None else ru.format(*numbers)
+
+
+def quantity_text(quantity, lang, prefixes=()):
+    """The quantity of a check in ``lang``: ``"intake: V' (throat velocity)"`` -> ``"intake: V′ (условная ..."``.
+
+    ``prefixes`` are the names of the parts (valves, ports) that may stand before the quantity.
+    """
+    prefix, rest = "", quantity
+    if ": " in quantity:
+        head, tail = quantity.split(": ", 1)
+        if head in prefixes:
+            prefix, rest = head + ": ", tail
+        elif head in CHAPTERS:
+            prefix, rest = CHAPTERS[head][LANGS.index(lang)] + ": ", tail
+    name = quantity_name(rest, lang, prefixes)
+    return prefix + (rest if name is None else name)
+
+
+CHAPTERS = {"crank": ("crank mechanism", "кривошипно-шатунный механизм"), "two-stroke": ("two-stroke", "двухтактный")}
+"""Prefixes of the checks of a chapter (not of a valve)."""
+
+
+def quantity_name(quantity, lang, prefixes=()):
+    """The name of a check quantity without a part prefix, or None when it has none."""
+    if quantity in QUANTITIES:
+        return QUANTITIES[quantity][LANGS.index(lang)]
+    if quantity.replace(" ", "_") in NAMES:  # a strength check, "camshaft deflection"
+        return NAMES[quantity.replace(" ", "_")][LANGS.index(lang)]
+    for tag, en, ru in (("spring ", "spring", "пружина"), ("outer spring ", "outer spring", "наружная пружина"),
+                        ("inner spring ", "inner spring", "внутренняя пружина")):
+        if quantity.startswith(tag):
+            name = quantity_name(quantity[len(tag):], lang, prefixes)
+            return None if name is None else f"{en if lang == 'en' else ru}: {name}"
+    for name in prefixes:  # "<port> port height / stroke"
+        if quantity.startswith(name + " ") and quantity[len(name) + 1:] in QUANTITIES:
+            return f"{name}: {QUANTITIES[quantity[len(name) + 1:]][LANGS.index(lang)]}"
+    m = re.fullmatch(r"equivalent throat diameter sqrt\((\d+)\) d / bore", quantity)
+    if m:
+        return (f"equivalent throat diameter √{m[1]} d_g / bore" if lang == "en"
+                else f"приведённый диаметр горловины √{m[1]} d_г / диаметр цилиндра")
+    return None
+
+
+NAMES.update({
+    "lift.cam": ("camshaft angle from the nose φ", "угол поворота распределительного вала от вершины φ"),
+    "lift.crank": ("crank angle from the gas-exchange TDC", "угол поворота коленчатого вала от ВМТ газообмена"),
+    "lift.segment": ("segment of the lift law", "участок закона подъёма"),
+    "lift.tappet_lift": ("tappet lift h_T", "подъём толкателя h_T"),
+    "lift.tappet_velocity": ("tappet velocity v_T", "скорость толкателя v_T"),
+    "lift.tappet_acceleration": ("tappet acceleration a_T", "ускорение толкателя a_T"),
+    "lift.tappet_jerk": ("tappet jerk j_T", "рывок толкателя j_T"),
+    "lift.valve_lift": ("valve lift h_v", "подъём клапана h_v"),
+    "lift.curtain_area": ("curtain area f", "проходное сечение клапана f"),
+    "lift.time_area": ("running time-area ∫f dt", "время-сечение нарастающим итогом ∫f dt"),
+    "lift.rho": ("radius of curvature ρ", "радиус кривизны ρ"),
+    "lift.pressure_angle": ("pressure angle", "угол давления"),
+    "lift.contact_offset": ("contact offset b", "смещение точки контакта b"),
+})

@@ -1,0 +1,181 @@
+"""The Russian report is Russian throughout: every visible text of the report of the built-in example and of every
+shipped example, every check quantity and every plot label (issue 10, "The report" and "Words")."""
+
+from collections import defaultdict
+from html.parser import HTMLParser
+from pathlib import Path
+import re
+
+from matplotlib.text import Text
+import pytest
+
+from valvetrain.design import run
+from valvetrain.report import plots as report_plots
+from valvetrain.report.html import render_report
+from valvetrain.report.i18n import TEXT
+from valvetrain.report.names import CHAPTERS, label, quantity_name, value_text
+from valvetrain.specification import example_spec, load_spec
+
+EXAMPLES = sorted((Path(__file__).parents[1] / "examples").glob("*.toml"))
+
+ALLOWED = {
+    # symbols of the sources (the report explains each where it is first used)
+    "cp", "vp", "max", "min", "in", "spr", "gas", "cam", "sin", "cos", "ln", "dt", "dh", "dx", "ik", "hv", "mv",
+    "av", "aT", "hT", "vT", "jT", "Cp", "Cq", "Cr", "Cs", "Kr", "Wi", "fg", "Fp", "Vh", "ic", "pi", "pN", "pS",
+    "pK", "pT", "mT", "mj", "mr", "iw", "vv", "c1", "v0", "p0", "PD", "TR",
+    # unit-free names of formulas and proper names
+    "Kurz", "Wiebe", "Euler", "VDSiCr", "VDCrV", "valvetrain", "json", "csv", "dxf", "png",
+    # authors of cited works in the notes of a computation (the citations themselves are not translated)
+    "Shang", "Hanji", "Heywood", "Reinsch",
+}
+"""Latin words allowed in the Russian report: symbols, proper names and file types."""
+
+LATIN_WORD = re.compile(r"[A-Za-z]{2,}")
+
+
+class _Visible(HTMLParser):
+    """The visible text of an HTML page and its image descriptions, without styles, scripts, names given by the
+    designer (class ``name``) and citations (class ``cite``, the bibliography)."""
+
+    SKIP_CLASSES = {"name", "cite", "bibliography"}
+    VOID = {"img", "br", "meta", "hr", "input", "link"}
+
+    def __init__(self):
+        super().__init__()
+        self.stack, self.texts = [], []
+
+    def handle_starttag(self, tag, attrs):
+        attrs = dict(attrs)
+        if tag in self.VOID:
+            if not self._skipping() and attrs.get("alt"):
+                self.texts.append(attrs["alt"])
+            return
+        skip = tag in ("style", "script") or bool(self.SKIP_CLASSES & set((attrs.get("class") or "").split()))
+        self.stack.append((tag, skip))
+
+    def handle_endtag(self, tag):
+        while self.stack:
+            if self.stack.pop()[0] == tag:
+                break
+
+    def _skipping(self):
+        return any(skip for _, skip in self.stack)
+
+    def handle_data(self, data):
+        if not self._skipping() and data.strip():
+            self.texts.append(data)
+
+
+def english_words(texts):
+    """The Latin words of ``texts`` that are not in :data:`ALLOWED`, with the text each is in."""
+    found = []
+    for text in texts:
+        for word in LATIN_WORD.findall(text):
+            if word not in ALLOWED:
+                found.append((word, text.strip()[:120]))
+    return found
+
+
+def _plots():
+    """Plot file names for a report rendered without its folder (the figures are linked, not embedded)."""
+    return defaultdict(lambda: defaultdict(lambda: "figure.png"))
+
+
+def _specs():
+    return [("built-in", example_spec())] + [(f.stem, load_spec(f)) for f in EXAMPLES]
+
+
+@pytest.fixture(scope="module")
+def designs():
+    return {name: run(spec) for name, spec in _specs()}
+
+
+def test_russian_report_has_no_english_words(designs):
+    for name, results in designs.items():
+        parser = _Visible()
+        parser.feed(render_report(results, _plots(), "ru"))
+        assert parser.texts
+        assert english_words(parser.texts) == [], name
+
+
+def test_the_extractor_finds_english():
+    parser = _Visible()
+    parser.feed('<p>подъём <span class="cite">seed 000, work 1</span> tappet_lift_mm</p><img alt="lift">'
+                '<style>p { color: red }</style>')
+    assert [w for w, _ in english_words(parser.texts)] == ["tappet", "lift", "mm", "lift"]
+
+
+def test_english_report_shows_names_not_keys(designs):
+    html = render_report(designs["built-in"], _plots(), "en")
+    parser = _Visible()
+    parser.feed(html)
+    keys = [t for t in parser.texts if re.search(r"\b[a-z]+_[a-z_]+\b", t) and not re.search(r"[A-Za-z]_[A-Za-z]{1,3}\b", t)]
+    assert keys == []
+    assert "Valve lift h_v, mm" in html or "valve lift h_v, mm" in html
+
+
+def test_every_check_quantity_has_a_russian_name(designs):
+    missing = []
+    for name, results in designs.items():
+        parts = list(results.valves) + (list(results.two_stroke.summary["ports"]) if results.two_stroke else [])
+        for c in results.checks:
+            head = c.quantity.split(": ", 1)[0]
+            quantity = c.quantity.split(": ", 1)[1] if head in parts or head in CHAPTERS else c.quantity
+            if quantity_name(quantity, "ru", parts) is None:
+                missing.append((name, c.quantity))
+    assert missing == []
+
+
+def test_a_new_check_quantity_falls_back_to_its_english():
+    from valvetrain.report.names import quantity_text
+
+    assert quantity_text("intake: lash adjuster collapse", "ru", ["intake"]) == "intake: lash adjuster collapse"
+    assert quantity_text("intake: V' (throat velocity)", "ru", ["intake"]).startswith("intake: V′ (условная")
+
+
+def test_labels_and_values():
+    assert label("tappet_acceleration_m_s2", "ru") == "tappet acceleration m s2"  # no name: shown as the key
+    assert label("lift.tappet_acceleration_m_s2", "ru") == "ускорение толкателя a_T, м/с²"
+    assert label("lift.tappet_acceleration_m_s2", "en") == "tappet acceleration a_T, m/s²"
+    assert label("spring.count", "ru") == "число пружин" and label("count", "ru") == "число клапанов i"
+    assert label("crank.max_velocity_crank_deg", "ru") == "угол ПКВ наибольшей скорости поршня, град"
+    assert label("phi1_deg", "ru").endswith("град ПРВ") and label("opens_deg", "en").endswith("crank deg")
+    assert value_text("Phi1 opening", "ru") == "Φ1, подъём" and value_text("pushrod", "en") == "pushrod"
+
+
+FIGURE_TEXT = (Text,)
+
+
+def _figure_texts(fig):
+    texts = [t.get_text() for t in fig.findobj(Text)]
+    return [t for t in texts if t and not re.fullmatch(r"[−\-+0-9.,e ]*", t)]
+
+
+def test_plot_labels_come_from_the_texts(designs):
+    """Every figure's titles, axis labels and legends are the Russian texts (valve and port names excepted)."""
+    t = TEXT["ru"]
+    seen = 0
+    for results in designs.values():
+        names = set(results.valves) | (set(results.two_stroke.summary["ports"]) if results.two_stroke else set())
+        figures = [make(v, t) for v in results.valves.values() for make in report_plots.FIGURES.values()]
+        if results.valves:
+            figures.append(report_plots.timing_figure(results.valves, t))
+        for stage, makers in report_plots.ENGINE_FIGURES.items():
+            data = getattr(results, stage)
+            if data is not None:
+                figures += [make(data, t) for make in makers.values()]
+        for fig in figures:
+            texts = [re.sub("|".join(map(re.escape, sorted(names, key=len, reverse=True))), "", x) if names else x
+                     for x in _figure_texts(fig)]
+            assert english_words(texts) == []
+            seen += 1
+    assert seen > 20
+
+
+def test_one_symbol_for_one_quantity():
+    """Acceleration is a, jerk is j, in the plots and in the tables of both languages."""
+    for lang in ("en", "ru"):
+        t = TEXT[lang]
+        assert "a_T" in t["acceleration"] and "j_T" in t["jerk"] and "v_T" in t["velocity"]
+        assert "a_v" in t["inertia_force"] and "j_" not in t["inertia_force"] + t["required_force"]
+        assert "a_T" in label("lift.tappet_acceleration_m_s2", lang)
