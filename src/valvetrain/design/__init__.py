@@ -22,6 +22,7 @@ from ..files import TableFileError
 from ..specification import SpecError, si
 from ..units import MM
 from .crank import CrankResults, CrankSummary, crank_stage
+from .dynamics import DynamicsResult
 from .results import json_schema, quantity, record
 from .twostroke import TwoStrokeResults, TwoStrokeSummary, two_stroke_stage
 from .valve import (THROAT_AREA_SHARE_RANGE, CamResult, ClearanceResult, FlowResult, ProfileResult, ValveDesign, clearance_stage, design_valve, flow_stage, law_stage,
@@ -113,7 +114,7 @@ class DesignResults:
         return out
 
 
-def run(spec, laws=None):
+def run(spec, laws=None, progress=None):
     """Run the whole design of a validated specification.
 
     Parameters
@@ -121,6 +122,8 @@ def run(spec, laws=None):
     spec : valvetrain.specification.Spec
     laws : dict, optional
         ``valve name -> LiftLaw``: enter those valves' designs with a law of the caller's own.
+    progress : callable, optional
+        ``progress(valve name, done, total)`` during the speed sweep of a valve's ``[dynamics]`` section.
 
     Returns
     -------
@@ -141,7 +144,8 @@ def run(spec, laws=None):
             problems.append(f"valves.{name}.cam.table_file: {exc}")
             continue
         try:
-            valves[name] = design_valve(name, valve, engine, gas, output, (laws or {}).get(name))
+            tick = None if progress is None else (lambda done, total, name=name: progress(name, done, total))
+            valves[name] = design_valve(name, valve, engine, gas, output, (laws or {}).get(name), tick)
         except SpecError as err:
             problems += err.problems
     if problems:
@@ -199,7 +203,8 @@ def results_schema():
         "flow": json_schema(FlowResult), "piston_clearance": json_schema(ClearanceResult),
         "masses": {"type": "object", "description": "reduced masses at the valve and the tappet"},
         "spring": {"type": "object", "description": "the required and the designed spring(s) with their checks"},
-        "strength": {"type": "object", "description": "the cam load and one record per strength check"}}}
+        "strength": {"type": "object", "description": "the cam load and one record per strength check"},
+        "dynamics": json_schema(DynamicsResult)}}
     return {
         "$schema": "https://json-schema.org/draft/2020-12/schema",
         "$id": f"https://valvetrain.invalid/results-{__version__}.schema.json",

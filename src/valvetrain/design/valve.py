@@ -23,6 +23,7 @@ from ..specification import SpecError
 from ..springs import NoSpringFits
 from ..units import DEG, MM
 from .drive import drive_stage
+from .dynamics import dynamics_stage
 from .results import quantity, record
 
 ACCELERATION_LIMITS = (3500.0, -1500.0)
@@ -410,6 +411,7 @@ class ValveDesign:
     records: dict                  # the law's own results (seed formulas, a measured table's analysis)
     drive: object                  # DriveResults: masses, spring curves, strength
     checks: list = field(default_factory=list)   # every valvetrain.checks.Check of the valve, passed or not
+    dynamics: object = None        # DynamicsResult when the valve has a [dynamics] section
 
     @property
     def warnings(self):
@@ -436,6 +438,8 @@ class ValveDesign:
         if self.clearance is not None:
             out["piston_clearance"] = record(self.clearance)
         out.update(masses=self.drive.masses, spring=self.drive.spring, strength=self.drive.strength)
+        if self.dynamics is not None:
+            out["dynamics"] = record(self.dynamics)
         return out
 
     def __repr__(self):
@@ -445,7 +449,7 @@ class ValveDesign:
                 f"{len(self.warnings)} of {len(self.checks)} checks fail)")
 
 
-def design_valve(name, valve, engine, gas, output, law=None):
+def design_valve(name, valve, engine, gas, output, law=None, progress=None):
     """All stages of one valve and its drive (masses, springs, strength).
 
     Parameters
@@ -455,6 +459,8 @@ def design_valve(name, valve, engine, gas, output, law=None):
     valve, engine, gas, output : SI views of the valve, the engine, ``[gas]`` and ``[output]``.
     law : LiftLaw, optional
         Enter the design with a law of the caller's own (the cam section's ``build`` is skipped).
+    progress : callable, optional
+        ``progress(done, total)`` during the speed sweep of a ``[dynamics]`` section.
 
     Returns
     -------
@@ -483,8 +489,12 @@ def design_valve(name, valve, engine, gas, output, law=None):
     except NoSpringFits as exc:
         raise SpecError([f"{at}.spring: {exc}"]) from None
     found += valve_checks(cam, flow_result, profile, valve, engine, section.timing(valve, records)) + drive.checks
+    dynamics = None
+    if valve.dynamics is not None:
+        dynamics, dynamics_found = dynamics_stage(valve.dynamics, valve, engine, cam.law, drive, name, progress)
+        found += dynamics_found
     return ValveDesign(name, valve.kind, valve.count, cam, flow_result, profile, clearance, records, drive,
-                       [c.named(name) for c in found])
+                       [c.named(name) for c in found], dynamics)
 
 
 __all__ = ["CamResult", "ClearanceResult", "FlowResult", "LiftTable", "ProfileResult", "ValveDesign",
