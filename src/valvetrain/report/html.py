@@ -6,6 +6,7 @@ from jinja2 import Environment, PackageLoader, select_autoescape
 import numpy as np
 
 from .. import __version__
+from ..design.dynamics import SOURCES as DYNAMICS_SOURCES
 from ..design.results import record
 from ..tables import lift_table_columns
 from .i18n import SOURCES, TEXT
@@ -61,6 +62,25 @@ def _measured(rec):
         return None
     scalars = [(k, val) for k, val in rec.items() if not isinstance(val, (list, dict))]
     return {"summary": scalars, "durations": rec["durations_deg"], "quality": list(rec["fit_quality"].items())}
+
+
+DYNAMICS_HEADLINE = ["speed_range_rpm", "speeds", "jump_speed_rpm", "bounce_speed_rpm", "max_seating_velocity_m_s",
+                     "max_seating_velocity_speed_rpm", "coil_clash_speed_rpm", "epsilon", "natural_frequency_Hz"]
+
+
+def _dynamics(rec):
+    """The dynamics record for the report: headline rows, the train, the estimates, the rated speed, resonance."""
+    if rec is None:
+        return None
+    params = rec["parameters"]
+    return {"headline": [(k, rec[k]) for k in DYNAMICS_HEADLINE if k in rec],
+            "parameters": [(k, val) for k, val in params.items() if k != "estimates" and not isinstance(val, dict)],
+            "nodes": list(params.get("node_masses_kg", {}).items()), "estimates": params["estimates"],
+            "rated": list(rec["at_rated_speed"].items()),
+            "resonance": [(k, val) for k, val in rec["resonance"].items() if not k.startswith("spectrum")],
+            "spectrum": list(zip(rec["resonance"]["spectrum_k"], rec["resonance"]["spectrum_distortion_percent"],
+                                 strict=True)),
+            "table": rec["sweep_table"], "revolutions": params["revolutions"]}
 
 
 def _summary(results, t):
@@ -122,6 +142,7 @@ def render_report(results, plots, lang="en", folder=None):
             "strength": s["strength"],
             "table": _abridged_table(v),
             "warnings": v.warnings,
+            "dynamics": _dynamics(s.get("dynamics")),
         })
     first_page = _summary(results, TEXT[lang])
     crank = None
@@ -136,7 +157,8 @@ def render_report(results, plots, lang="en", folder=None):
                  "plots": plots["two_stroke"], "ports": results.two_stroke.summary["ports"]}
     return env.get_template("report.html").render(
         t=TEXT[lang], lang=lang, version=__version__, engine=record(results.engine), engine_inputs=_flatten(spec["engine"]),
-        valves=valves, warnings=results.warnings, first_page=first_page, timing=plots.get("(timing)"), sources=SOURCES, table_columns=TABLE_COLUMNS,
+        valves=valves, warnings=results.warnings, first_page=first_page, timing=plots.get("(timing)"), sources=SOURCES,
+        dynamics_sources=DYNAMICS_SOURCES, table_columns=TABLE_COLUMNS,
         step=REPORT_STEP_DEG, output=_flatten(spec["output"]), crank=crank, ports=ports,
     )
 
