@@ -155,3 +155,39 @@ def test_run_writes_chapter_csv_and_plots(tmp_path):
     assert "seed" not in chapter.lower() and "spec section" not in chapter.lower()
     ru = write_outputs(r, tmp_path / "ru", "ru")
     assert "Динамика механизма газораспределения" in (ru / "report.html").read_text(encoding="utf-8")
+
+
+def write_spec(tmp_path, dynamics):
+    text = example_text().replace("[valves.intake.parts]", f"[valves.intake.dynamics]\n{dynamics}\n[valves.intake.parts]")
+    path = tmp_path / "engine.toml"
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+def test_sweep_command(tmp_path, monkeypatch):
+    """`valvetrain sweep` writes dynamics.json, the CSV and the plots; a progress bar goes to standard error only
+    (forced here: this sweep is faster than the second after which it appears; the bar updates after each chunk
+    of 25 speeds)."""
+    from click.testing import CliRunner
+
+    from valvetrain import cli
+
+    monkeypatch.setattr(cli._Progress, "AFTER", 0.0)
+    f = write_spec(tmp_path, FEW.replace("speeds = 3", "speeds = 30"))
+    out = tmp_path / "sweep"
+    result = CliRunner().invoke(cli.main, ["sweep", str(f), "--out", str(out)])
+    assert result.exit_code == 0, result.output
+    assert "intake: jump" in result.stdout and "speed sweep" not in result.stdout
+    assert "intake: speed sweep" in result.stderr
+    data = json.loads((out / "dynamics.json").read_text(encoding="utf-8"))
+    assert len(data["valves"]["intake"]["per_speed"]["speed_rpm"]) == 30
+    assert len((out / "tables" / "intake_dynamics.csv").read_text(encoding="utf-8").splitlines()) == 31
+    assert sorted(p.name for p in (out / "plots").iterdir()) == ["intake_dynamics_map.png", "intake_dynamics_speed.png"]
+    # a second sweep replaces its own output; a folder with other files is refused (the output-folder rules)
+    assert CliRunner().invoke(cli.main, ["sweep", str(f), "--out", str(out)]).exit_code == 0
+    (tmp_path / "mine").mkdir()
+    (tmp_path / "mine" / "notes.txt").write_text("x")
+    refused = CliRunner().invoke(cli.main, ["sweep", str(f), "--out", str(tmp_path / "mine")])
+    assert refused.exit_code == 2 and "notes.txt" in refused.stderr
+    bad = CliRunner().invoke(cli.main, ["sweep", str(f), "--out", str(tmp_path / "x"), "--valve", "exhaust"])
+    assert bad.exit_code == 2 and "--valve exhaust: no such valve; allowed: intake" in bad.stderr

@@ -154,3 +154,30 @@ def write_outputs(results, out, lang="en", inputs=(), force=False):
         plots = write_plots(results, tmp / "plots", lang)
         write_report(results, tmp / "report.html", plots, lang)
     return Path(out)
+
+
+def write_sweep(designs, out, lang="en", inputs=(), force=False):
+    """Write the speed sweeps of ``designs`` (name -> ValveDesign with dynamics) into ``out``, atomically.
+
+    Layout::
+
+        out/dynamics.json (valves.NAME: the dynamics record of results.json)
+        out/tables/NAME_dynamics.csv (one row per speed)
+        out/plots/NAME_dynamics_map.png, NAME_dynamics_speed.png
+        out/.valvetrain-output (the files the run wrote)
+    """
+    from . import __version__
+    from .design.results import record
+    from .report.i18n import TEXT
+    from .report.plots import write_dynamics_plots
+
+    with atomic_folder(out, inputs, force) as tmp:
+        for sub in ("tables", "plots"):
+            (tmp / sub).mkdir()
+        data = {"valvetrain_version": __version__, "valves": {}}
+        for name, v in designs.items():
+            data["valves"][name] = record(v.dynamics)
+            write_csv(tmp / v.dynamics.sweep_table, sweep_columns(v.dynamics))
+            write_dynamics_plots(name, v.dynamics, tmp / "plots", TEXT[lang])
+        (tmp / "dynamics.json").write_text(json_text(data), encoding="utf-8")
+    return Path(out)

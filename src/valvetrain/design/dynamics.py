@@ -314,6 +314,8 @@ def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None):
     params = replace(params, estimates=tuple(notes))
     speeds = np.linspace(low, high, dyn.speeds)
     step_deg = dyn.step / DEG
+    if progress is not None:
+        progress(0, dyn.speeds)
     result = sweep(law, train, speeds * to_cam, dyn.revolutions, step_deg, progress=progress)
     rated = sweep(law, train, [engine.rated_speed * to_cam], dyn.revolutions, step_deg).speed(0)
     m, c, kk = params.mass, params.drive_stiffness, params.spring_rate
@@ -341,12 +343,16 @@ def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None):
     return out, dynamics_checks(out, engine)
 
 
+CHECK_QUANTITIES = ("dynamic seating velocity at the rated speed", "follower separation (jump) speed / rated speed")
+"""The quantities of the dynamics checks."""
+
+
 def dynamics_checks(d, engine):
     """The seating velocity at the rated speed and the follower separation below it."""
-    out = [check("dynamic seating velocity at the rated speed", abs(d.at_rated_speed.seating_velocity),
+    out = [check(CHECK_QUANTITIES[0], abs(d.at_rated_speed.seating_velocity),
                  high=SEATING_VELOCITY_MAX, unit="m/s", source=CHECK_SOURCE + "; 0.3-0.5 m/s usual")]
     if np.isfinite(d.jump_speed):
-        out.append(check("follower separation (jump) speed / rated speed", d.jump_speed / engine.rated_speed,
+        out.append(check(CHECK_QUANTITIES[1], d.jump_speed / engine.rated_speed,
                          low=1.0, source=CHECK_SOURCE + ": no separation below the rated speed"))
     return out
 
@@ -385,5 +391,51 @@ def sweep_columns(d):
     return out
 
 
-__all__ = ["DynamicsParameters", "DynamicsResult", "PerSpeed", "ResonanceRecord", "SWEEP_COLUMNS", "SpeedRecord",
-           "build_train", "drive_links", "dynamics_checks", "dynamics_stage", "speed_record", "sweep_columns"]
+def sweep_designs(spec, names=None, progress=None):
+    """The speed sweep alone: the named valves of a specification (default: those with a ``[dynamics]`` section, or
+    every valve if none has one) designed with their section, or the default one where they have none.
+
+    Parameters
+    ----------
+    spec : valvetrain.specification.Spec
+    names : sequence of str, optional
+    progress : callable, optional
+        ``progress(valve name, done, total)``.
+
+    Returns
+    -------
+    dict
+        ``name -> ValveDesign`` whose ``dynamics`` is set.
+
+    Raises
+    ------
+    SpecError
+        An unknown valve name, or inputs that admit no design.
+    """
+    from ..specification import si
+    from ..specification.models import Dynamics
+    from .valve import design_valve
+
+    if not names:
+        names = [n for n, v in spec.valves.items() if v.dynamics is not None] or list(spec.valves)
+    unknown = [n for n in names if n not in spec.valves]
+    if unknown:
+        raise SpecError([f"--valve {n}: no such valve; allowed: {', '.join(spec.valves)}" for n in unknown])
+    engine, gas, output = si(spec.engine), si(spec.gas), si(spec.output)
+    out, problems = {}, []
+    for name in names:
+        v = spec.valves[name]
+        if v.dynamics is None:
+            v = v.model_copy(update={"dynamics": Dynamics()})
+        tick = None if progress is None else (lambda done, total, name=name: progress(name, done, total))
+        try:
+            out[name] = design_valve(name, si(v, spec), engine, gas, output, progress=tick)
+        except SpecError as err:
+            problems += err.problems
+    if problems:
+        raise SpecError(problems)
+    return out
+
+
+__all__ = ["CHECK_QUANTITIES", "DynamicsParameters", "DynamicsResult", "PerSpeed", "ResonanceRecord", "SWEEP_COLUMNS", "SpeedRecord",
+           "build_train", "drive_links", "dynamics_checks", "dynamics_stage", "speed_record", "sweep_columns", "sweep_designs"]
