@@ -15,10 +15,15 @@ from valvetrain.units import MM
 FEW = "speeds = 3\nrevolutions = 2\nstep_cam_deg = 0.5\n"
 
 
+def with_section(dynamics):
+    """The built-in example's text with a [valves.intake.dynamics] section."""
+    return example_text().replace("[valves.intake.parts]", f"[valves.intake.dynamics]\n{dynamics}\n[valves.intake.parts]")
+
+
 def spec(dynamics, geometry=True):
     """The built-in example with a [valves.intake.dynamics] section (without the camshaft and pushrod geometry: no
     link stiffness estimated from [parts])."""
-    text = example_text().replace("[valves.intake.parts]", f"[valves.intake.dynamics]\n{dynamics}\n[valves.intake.parts]")
+    text = with_section(dynamics)
     if not geometry:
         text = text.replace("camshaft_diameter_mm = 28.0", "").replace("pushrod_length_mm = 220.0", "")
     return parse_spec(text)
@@ -135,7 +140,7 @@ def test_multi_needs_the_part_masses():
     text = text[:text.index("[valves.intake.unused]")] + text[text.index("[valves.intake.spring]"):]
     text = text.replace("[valves.intake.parts]", "[valves.intake.dynamics]\nmodel = \"multi\"\n" + FEW
                         + "\n[valves.intake.parts]")
-    with pytest.raises(SpecError, match=r"valves.intake.dynamics.model = \"multi\" needs \[valves.intake.drive.masses\]"):
+    with pytest.raises(SpecError, match=r"dynamics.model = \"multi\" needs \[valves.intake.drive.masses\]"):
         run(parse_spec(text))
 
 
@@ -158,9 +163,8 @@ def test_run_writes_chapter_csv_and_plots(tmp_path):
 
 
 def write_spec(tmp_path, dynamics):
-    text = example_text().replace("[valves.intake.parts]", f"[valves.intake.dynamics]\n{dynamics}\n[valves.intake.parts]")
     path = tmp_path / "engine.toml"
-    path.write_text(text, encoding="utf-8")
+    path.write_text(with_section(dynamics), encoding="utf-8")
     return path
 
 

@@ -117,11 +117,13 @@ def write_outputs(results, out, lang="en", inputs=(), force=False):
     Layout::
 
         out/results.json, spec.toml (the specification as run, every default written out)
-        out/tables/NAME_lift.csv, NAME_dynamics.csv (a [dynamics] section: one row per speed), crank.csv, engine_torque.csv, two_stroke_ports.csv, two_stroke_time_area.csv
+        out/tables/NAME_lift.csv, crank.csv, engine_torque.csv, two_stroke_ports.csv, two_stroke_time_area.csv,
+                   NAME_dynamics.csv (a [dynamics] section: one row per speed)
         out/contour/NAME.csv, NAME_polar.csv, NAME_cartesian.csv, NAME_lift.csv, NAME.dxf
                     (not for a valve whose cam profile is undercut: it cannot be made)
         out/plots/NAME_kinematics.png, NAME_contour.png, NAME_time_area.png, NAME_curvature.png,
-                  NAME_spring.png, NAME_dynamics_map.png, NAME_dynamics_speed.png, crank_forces.png, crank_torque.png, crank_pin_polar.png,
+                  NAME_spring.png, NAME_dynamics_map.png, NAME_dynamics_speed.png (a [dynamics] section),
+                  crank_forces.png, crank_torque.png, crank_pin_polar.png,
                   two_stroke_ports.png, two_stroke_time_area.png
         out/report.html
         out/.valvetrain-output (the files the run wrote)

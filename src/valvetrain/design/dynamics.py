@@ -437,5 +437,6 @@ def sweep_designs(spec, names=None, progress=None):
     return out
 
 
-__all__ = ["CHECK_QUANTITIES", "DynamicsParameters", "DynamicsResult", "PerSpeed", "ResonanceRecord", "SWEEP_COLUMNS", "SpeedRecord",
-           "build_train", "drive_links", "dynamics_checks", "dynamics_stage", "speed_record", "sweep_columns", "sweep_designs"]
+__all__ = ["CHECK_QUANTITIES", "DynamicsParameters", "DynamicsResult", "PerSpeed", "ResonanceRecord", "SWEEP_COLUMNS",
+           "SpeedRecord", "build_train", "drive_links", "dynamics_checks", "dynamics_stage", "speed_record",
+           "sweep_columns", "sweep_designs"]

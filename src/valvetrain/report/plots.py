@@ -306,8 +306,9 @@ def dynamics_speed_figure(name, d, t):
     axes[2].set_xlabel(t["speed"])
     for ax in axes:
         ax.grid(alpha=0.3)
-        for value, label, style in ((d.jump_speed, t["dyn_jump_speed"], "--"), (d.bounce_speed, t["dyn_bounce_speed"], ":"),
-                                    (d.at_rated_speed.speed, t["dyn_rated"], "-.")):
+        marks = ((d.jump_speed, t["dyn_jump_speed"], "--"), (d.bounce_speed, t["dyn_bounce_speed"], ":"),
+                 (d.at_rated_speed.speed, t["dyn_rated"], "-."))
+        for value, label, style in marks:
             if np.isfinite(value):
                 ax.axvline(to_display(value, "rpm"), color="0.3", lw=0.8, ls=style, label=label)
     axes[0].legend(fontsize=8)
