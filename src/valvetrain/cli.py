@@ -1,4 +1,4 @@
-"""Command line: ``valvetrain run | validate | compare | example``.
+"""Command line: ``valvetrain run | sweep | validate | compare | example``.
 
 Exit status: 0 on success, 2 for a specification or an output folder that cannot be used
 (one message per problem on standard error; nothing is written), 130 when interrupted
@@ -9,6 +9,7 @@ print the open checks, ranked, and exit 0.
 
 import signal
 import sys
+import time
 
 import click
 
@@ -49,12 +50,12 @@ def _check_out(out, files, specs, force):
     return inputs
 
 
-def _design(spec):
+def _design(spec, progress=None):
     """Run a design; a valid specification that admits no design (no spring fits) exits like a bad one."""
     from .design import run as run_design
 
     try:
-        return run_design(spec)
+        return run_design(spec, progress=progress)
     except SpecError as err:
         _fail_spec(err)
 
@@ -77,6 +78,36 @@ def _echo_checks(results):
     click.echo(f"checks: {counts['failure']} failure(s), {counts['warning']} warning(s), {counts['info']} info of "
                f"{len(results.checks)}" + (f"; {len(accepted)} accepted in the specification, not counted"
                                            if accepted else ""))
+
+
+class _Progress:
+    """``progress(name, done, total)`` of a speed sweep: a bar on standard error once a sweep promises to take more
+    than :attr:`AFTER` seconds (a short sweep prints nothing)."""
+
+    AFTER = 1.0
+
+    def __init__(self):
+        self.bar, self.start, self.shown = None, 0.0, 0
+
+    def __call__(self, name, done, total):
+        now = time.monotonic()
+        if done == 0:
+            self.close()
+            self.start, self.shown = now, 0
+            return
+        if self.bar is None and (now - self.start) * total / done > self.AFTER and done < total:
+            self.bar = click.progressbar(length=total, label=f"{name}: speed sweep", file=sys.stderr)
+            self.bar.__enter__()
+        if self.bar is not None:
+            self.bar.update(done - self.shown)
+            self.shown = done
+            if done >= total:
+                self.close()
+
+    def close(self):
+        if self.bar is not None:
+            self.bar.__exit__(None, None, None)
+            self.bar = None
 
 
 class _Main(click.Group):
@@ -113,7 +144,7 @@ def run(file, out, force, lang):
 
     spec = _load(file)
     inputs = _check_out(out, [file] if file else [], [spec], force)
-    results = _design(spec)
+    results = _design(spec, _Progress())
     try:
         write_outputs(results, out, lang, inputs, force)
     except OutFolderError as err:
@@ -126,6 +157,61 @@ def run(file, out, force, lang):
         if "measured" in v.summary["cam"]:
             click.echo(f"note: valves.{name}: measured table fitted by the {v.summary['cam']['measured']['fit_reason']}")
     _echo_checks(results)
+
+
+@main.command()
+@click.argument("file", type=click.Path(dir_okay=False))
+@click.option("--out", "out", default="sweep", show_default=True, type=click.Path(), help=OUT_HELP)
+@click.option("--valve", "valves", multiple=True, metavar="NAME",
+              help="A valve to sweep (repeatable); default: the valves with a [dynamics] section, or all.")
+@click.option("--force", is_flag=True, help=FORCE_HELP)
+@click.option("--lang", type=click.Choice(["en", "ru"]), default="en", show_default=True, help="Language of the plots.")
+def sweep(file, out, valves, force, lang):
+    """Run only the speed sweep of the elastic valve train of FILE and write it to --out.
+
+    Each valve's [valves.NAME.dynamics] section is used (its defaults where it has none): one-mass or
+    multi-mass train, every speed of the range, jump, bounce and seating. Writes dynamics.json,
+    tables/NAME_dynamics.csv and plots/NAME_dynamics_map.png, NAME_dynamics_speed.png."""
+    from .design.dynamics import CHECK_QUANTITIES, sweep_designs
+    from .export import write_sweep
+
+    spec = _load(file)
+    if not spec.valves:
+        click.echo("error: the file defines no valves to sweep", err=True)
+        sys.exit(2)
+    inputs = _check_out(out, [file], [spec], force)
+    progress = _Progress()
+    try:
+        designs = sweep_designs(spec, valves, progress)
+    except SpecError as err:
+        _fail_spec(err)
+    finally:
+        progress.close()
+    try:
+        write_sweep(designs, out, lang, inputs, force)
+    except OutFolderError as err:
+        _fail_out(err)
+    for name, v in designs.items():
+        d = v.dynamics
+        click.echo(f"{name}: {_headline(d)}")
+        for w in v.warnings:
+            if w.quantity.endswith(CHECK_QUANTITIES):
+                click.echo(f"warning: {w.quantity} = {w.shown_value:.6g} {w.unit}, recommended {w.range} ({w.source})")
+    click.echo(f"wrote {out}/ (dynamics.json, tables/, plots/)")
+
+
+def _headline(d):
+    """One line of a sweep's headline numbers (engine rpm)."""
+    from .units import to_display
+
+    def rpm(x):
+        return "none in the range" if x != x else f"{to_display(x, 'rpm'):.0f} rpm"
+
+    r = d.at_rated_speed
+    return (f"jump {rpm(d.jump_speed)}, bounce onset {rpm(d.bounce_speed)}, max seating velocity "
+            f"{d.max_seating_velocity:.3g} m/s at {rpm(d.max_seating_velocity_speed)}; at the rated {rpm(r.speed)}: "
+            f"min contact force {r.min_contact_force:.4g} N, seating velocity {r.seating_velocity:.3g} m/s, bounce "
+            f"{r.bounce * 1e3:.3g} mm")
 
 
 @main.command()

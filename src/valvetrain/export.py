@@ -6,6 +6,7 @@ from pathlib import Path
 
 import numpy as np
 
+from .design.dynamics import sweep_columns
 from .outfolder import atomic_folder
 from .specification import spec_toml
 from .tables import (cartesian_contour_columns, contour_columns, crank_columns, engine_torque_columns,
@@ -118,11 +119,13 @@ def write_outputs(results, out, lang="en", inputs=(), force=False):
     Layout::
 
         out/results.json, spec.toml (the specification as run, every default written out)
-        out/tables/NAME_lift.csv, crank.csv, engine_torque.csv, two_stroke_ports.csv, two_stroke_time_area.csv
+        out/tables/NAME_lift.csv, crank.csv, engine_torque.csv, two_stroke_ports.csv, two_stroke_time_area.csv,
+                   NAME_dynamics.csv (a [dynamics] section: one row per speed)
         out/contour/NAME.csv, NAME_polar.csv, NAME_cartesian.csv, NAME_lift.csv, NAME.dxf
                     (not for a valve whose cam profile is undercut: it cannot be made)
         out/plots/NAME_kinematics.png, NAME_contour.png, NAME_time_area.png, NAME_curvature.png,
-                  NAME_spring.png, crank_forces.png, crank_torque.png, crank_pin_polar.png,
+                  NAME_spring.png, NAME_dynamics_map.png, NAME_dynamics_speed.png (a [dynamics] section),
+                  crank_forces.png, crank_torque.png, crank_pin_polar.png,
                   two_stroke_ports.png, two_stroke_time_area.png
         out/report.html
         out/.valvetrain-output (the files the run wrote)
@@ -136,6 +139,8 @@ def write_outputs(results, out, lang="en", inputs=(), force=False):
         (tmp / "spec.toml").write_text(spec_toml(results.spec), encoding="utf-8")
         for name, v in results.valves.items():
             write_csv(tmp / "tables" / f"{name}_lift.csv", lift_table_columns(v.table))
+            if v.dynamics is not None:
+                write_csv(tmp / v.dynamics.sweep_table, sweep_columns(v.dynamics))
             if v.summary["cam"]["undercut"]:
                 continue  # no follower can trace an undercut profile: nothing is written for its manufacture
             write_csv(tmp / "contour" / f"{name}.csv", contour_columns(v))
@@ -152,4 +157,31 @@ def write_outputs(results, out, lang="en", inputs=(), force=False):
             write_csv(tmp / "tables" / "two_stroke_time_area.csv", two_stroke_speed_columns(results.two_stroke))
         plots = write_plots(results, tmp / "plots", lang)
         write_report(results, tmp / "report.html", plots, lang)
+    return Path(out)
+
+
+def write_sweep(designs, out, lang="en", inputs=(), force=False):
+    """Write the speed sweeps of ``designs`` (name -> ValveDesign with dynamics) into ``out``, atomically.
+
+    Layout::
+
+        out/dynamics.json (valves.NAME: the dynamics record of results.json)
+        out/tables/NAME_dynamics.csv (one row per speed)
+        out/plots/NAME_dynamics_map.png, NAME_dynamics_speed.png
+        out/.valvetrain-output (the files the run wrote)
+    """
+    from . import __version__
+    from .design.results import record
+    from .report.i18n import TEXT
+    from .report.plots import write_dynamics_plots
+
+    with atomic_folder(out, inputs, force) as tmp:
+        for sub in ("tables", "plots"):
+            (tmp / sub).mkdir()
+        data = {"valvetrain_version": __version__, "valves": {}}
+        for name, v in designs.items():
+            data["valves"][name] = record(v.dynamics)
+            write_csv(tmp / v.dynamics.sweep_table, sweep_columns(v.dynamics))
+            write_dynamics_plots(name, v.dynamics, tmp / "plots", TEXT[lang])
+        (tmp / "dynamics.json").write_text(json_text(data), encoding="utf-8")
     return Path(out)

@@ -25,6 +25,7 @@ from ..specification import SpecError, si
 from ..units import MM
 from .crank import CrankResults, CrankSummary, crank_stage, valve_timing
 from .drive import MassResult, SpringResult, StrengthResult
+from .dynamics import DynamicsResult
 from .results import json_schema, quantity, record
 from .twostroke import TwoStrokeResults, TwoStrokeSummary, two_stroke_stage
 from .valve import (THROAT_AREA_SHARE_RANGE, CamResult, ClearanceResult, FlowResult, ProfileResult, ValveDesign,
@@ -128,7 +129,7 @@ class DesignResults:
         return out
 
 
-def run(spec, laws=None):
+def run(spec, laws=None, progress=None):
     """Run the whole design of a validated specification.
 
     Parameters
@@ -136,6 +137,8 @@ def run(spec, laws=None):
     spec : valvetrain.specification.Spec
     laws : dict, optional
         ``valve name -> LiftLaw``: enter those valves' designs with a law of the caller's own.
+    progress : callable, optional
+        ``progress(valve name, done, total)`` during the speed sweep of a valve's ``[dynamics]`` section.
 
     Returns
     -------
@@ -156,7 +159,8 @@ def run(spec, laws=None):
             problems.append(f"valves.{name}.cam.table_file: {exc}")
             continue
         try:
-            valves[name] = design_valve(name, valve, engine, gas, output, (laws or {}).get(name))
+            tick = None if progress is None else (lambda done, total, name=name: progress(name, done, total))
+            valves[name] = design_valve(name, valve, engine, gas, output, (laws or {}).get(name), tick)
         except SpecError as err:
             problems += err.problems
     if problems:
@@ -250,7 +254,7 @@ def results_schema():
                       measured="a measured table's analysis: durations, lobe centre, fit quality"),
         "flow": json_schema(FlowResult), "piston_clearance": json_schema(ClearanceResult),
         "masses": json_schema(MassResult), "spring": json_schema(SpringResult),
-        "strength": strength}}
+        "strength": strength, "dynamics": json_schema(DynamicsResult)}}
     return {
         "$schema": "https://json-schema.org/draft/2020-12/schema",
         "$id": f"https://valvetrain.invalid/results-{__version__}.schema.json",

@@ -24,6 +24,7 @@ from ..specification.cams import layout
 from ..springs import NoSpringFits
 from ..units import DEG, MM
 from .drive import drive_record, drive_stage
+from .dynamics import dynamics_stage
 from .results import quantity, record
 
 ACCELERATION_LIMITS = (3500.0, -1500.0)
@@ -525,6 +526,7 @@ class ValveDesign:
     records: dict                  # the law's own results (seed formulas, a measured table's analysis)
     drive: object                  # DriveResult: masses, spring curves, strength
     checks: list = field(default_factory=list)   # every valvetrain.checks.Check of the valve, passed or not
+    dynamics: object = None        # DynamicsResult when the valve has a [dynamics] section
 
     @property
     def warnings(self):
@@ -556,6 +558,8 @@ class ValveDesign:
         if self.clearance is not None:
             out["piston_clearance"] = record(self.clearance)
         out.update(drive_record(self.drive))
+        if self.dynamics is not None:
+            out["dynamics"] = record(self.dynamics)
         return out
 
     def __repr__(self):
@@ -565,7 +569,7 @@ class ValveDesign:
                 f"{len(self.warnings)} of {len(self.checks)} checks fail)")
 
 
-def design_valve(name, valve, engine, gas, output, law=None):
+def design_valve(name, valve, engine, gas, output, law=None, progress=None):
     """All stages of one valve and its drive (masses, springs, strength).
 
     Parameters
@@ -575,6 +579,8 @@ def design_valve(name, valve, engine, gas, output, law=None):
     valve, engine, gas, output : SI views of the valve, the engine, ``[gas]`` and ``[output]``.
     law : LiftLaw, optional
         Enter the design with a law of the caller's own (the cam section's ``build`` is skipped).
+    progress : callable, optional
+        ``progress(done, total)`` during the speed sweep of a ``[dynamics]`` section.
 
     Returns
     -------
@@ -606,8 +612,12 @@ def design_valve(name, valve, engine, gas, output, law=None):
     found += mass_checks(valve, drive.masses.at_valve, flow_result.throat_area)
     if clearance is not None:
         found.append(clearance_check(valve.kind, clearance.min_gap, clearance.angle))
+    dynamics = None
+    if valve.dynamics is not None:
+        dynamics, dynamics_found = dynamics_stage(valve.dynamics, valve, engine, cam.law, drive, name, progress)
+        found += dynamics_found
     return ValveDesign(name, valve.kind, valve.count, cam, flow_result, profile, clearance, records, drive,
-                       [c.named(name) for c in found])
+                       [c.named(name) for c in found], dynamics)
 
 
 __all__ = ["CamResult", "ClearanceResult", "FlowResult", "LiftTable", "ProfileResult", "ValveDesign",

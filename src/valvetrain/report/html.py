@@ -11,6 +11,7 @@ import numpy as np
 
 from .. import __version__
 from ..checks import describe_range
+from ..design.dynamics import SOURCES as DYNAMICS_SOURCES
 from ..design.results import record
 from ..tables import lift_table_columns
 from ..bibliography import WORKS, cited_in
@@ -182,6 +183,25 @@ def _fit_reason(rec, t):
     return text + ("; " + t["smoothings"][rec["spline_smoothing"]] if rec["fit"] == "spline" else "")
 
 
+DYNAMICS_HEADLINE = ["speed_range_rpm", "speeds", "jump_speed_rpm", "bounce_speed_rpm", "max_seating_velocity_m_s",
+                     "max_seating_velocity_speed_rpm", "coil_clash_speed_rpm", "epsilon", "natural_frequency_Hz"]
+
+
+def _dynamics(rec):
+    """The dynamics record for the report: headline rows, the train, the estimates, the rated speed, resonance."""
+    if rec is None:
+        return None
+    params = rec["parameters"]
+    return {"headline": [(k, rec[k]) for k in DYNAMICS_HEADLINE if k in rec],
+            "parameters": [(k, val) for k, val in params.items() if k != "estimates" and not isinstance(val, dict)],
+            "nodes": list(params.get("node_masses_kg", {}).items()), "estimates": params["estimates"],
+            "rated": list(rec["at_rated_speed"].items()),
+            "resonance": [(k, val) for k, val in rec["resonance"].items() if not k.startswith("spectrum")],
+            "spectrum": list(zip(rec["resonance"]["spectrum_k"], rec["resonance"]["spectrum_distortion_percent"],
+                                 strict=True)),
+            "table": rec["sweep_table"], "revolutions": params["revolutions"]}
+
+
 def _summary(results, t):
     """The report's first page: one row per valve (its open failures, warnings and info, and its accepted checks),
     the limits not met (ranked) and the failures the specification accepts."""
@@ -258,6 +278,7 @@ def render_report(results, plots, lang="en", folder=None):
             "strength": s["strength"],
             "table": _abridged_table(v, lang),
             "warnings": v.warnings,
+            "dynamics": _dynamics(s.get("dynamics")),
         })
     first_page = _summary(results, TEXT[lang])
     crank = None
@@ -276,6 +297,7 @@ def render_report(results, plots, lang="en", folder=None):
         t=TEXT[lang], warning_symbols=warning_symbols, lang=lang, version=__version__, engine=record(results.engine),
         engine_inputs=_flatten(spec["engine"]), valves=valves, warnings=results.warnings, accepted=results.accepted,
         first_page=first_page, timing=plots.get("(timing)"), table_columns=TABLE_COLUMNS,
+        dynamics_sources=DYNAMICS_SOURCES,
         step=REPORT_STEP_DEG, output=_flatten(spec["output"]), crank=crank, ports=ports,
     )
     template = env.get_template("report.html")

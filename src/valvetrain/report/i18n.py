@@ -69,6 +69,39 @@ TEXT = {
         "pin_radial": "radial load on the crank pin (outwards +), kN", "pin_polar": "polar diagram of the crank-pin load",
         "crank_from_tdc": "crank angle from TDC, deg", "port_area": "port area, mm²", "speed": "crank speed, rpm",
         "port_time_area": "time-area, mm²·s", "port": "Port", "pressure_model": "Cylinder pressure",
+        "dyn_chapter": "7. Valve-train dynamics: the elastic train over the speed range",
+        "dyn_method": "Valve-side coordinates; unilateral cam contact with the lash as a gap, a unilateral stiff damped "
+                      "seat; fixed-step integration in camshaft angle, every speed from rest over {revolutions} camshaft "
+                      "revolutions, the last one recorded. Jump: the cam force is zero while the cam lifts the open "
+                      "valve; bounce: the valve leaves its seat again after the first seating. Resonance: the "
+                      "harmonic k of the cam excitation nearest below the natural frequency, its elastic amplitude "
+                      "and the distortion delta of the valve motion",
+        "dyn_lift_error": "valve lift − rigid lift, mm", "dyn_contact_force": "cam contact force, N",
+        "dyn_zero_is_jump": "0: the follower leaves the cam", "dyn_seating_velocity": "|seating velocity|, m/s",
+        "dyn_bounce": "bounce, mm", "dyn_min_force": "min contact force, N", "dyn_jump_speed": "jump (float) speed",
+        "dyn_bounce_speed": "bounce onset", "dyn_rated": "rated speed",
+        "dyn_title": "seating, bounce and contact force against speed", "dyn_headline": "Headline numbers",
+        "dyn_parameters": "The train simulated (at the valve)",
+        "dyn_estimates": "Estimates: values the specification does not give",
+        "dyn_rated_table": "At the rated speed", "dyn_resonance": "Resonant harmonic of the cam excitation at the rated speed",
+        "dyn_spectrum": "harmonic k", "dyn_spectrum_delta": "distortion delta, %",
+        "dyn_table": "Per-speed table",
+        "dyn_maps": "maps of the valve-lift error and the cam contact force over cam angle and speed",
+        "dyn_node": "mass of the node",
+        "dyn_names": {
+            "speed_range_rpm": "engine speeds swept, rpm", "speeds": "speeds", "jump_speed_rpm": "jump (float) speed, rpm",
+            "bounce_speed_rpm": "bounce onset speed, rpm", "max_seating_velocity_m_s": "max seating velocity, m/s",
+            "max_seating_velocity_speed_rpm": "at engine speed, rpm", "coil_clash_speed_rpm": "coil clash speed, rpm",
+            "epsilon": "perturbation parameter epsilon = M omega² / (c + K)",
+            "natural_frequency_Hz": "natural frequency f0, Hz", "speed_rpm": "engine speed, rpm",
+            "min_contact_force_N": "min cam contact force, N", "max_contact_force_N": "max cam contact force, N",
+            "seating_velocity_m_s": "seating velocity, m/s", "bounce_mm": "bounce height, mm",
+            "bounce_count": "bounces", "max_lift_error_mm": "max |lift − rigid lift|, mm",
+            "jump_intervals_cam_deg": "separation, cam deg from the nose", "max_surge_mm": "max coil surge, mm",
+            "coil_clash_margin_mm": "min coil gap, mm", "harmonic_k": "resonant harmonic k",
+            "harmonic_force_N": "harmonic force F_k, N", "amplitude_mm": "elastic amplitude Delta, mm",
+            "distortion_percent": "distortion delta, %",
+        },
     },
     "ru": {
         "summary": "Сводка", "summary_valves": "Клапаны", "timing_diagram": "Диаграмма фаз газораспределения",
@@ -153,6 +186,43 @@ TEXT = {
         "crank_from_tdc": "угол поворота коленвала от ВМТ, °", "port_area": "площадь окна, мм²",
         "speed": "частота вращения, мин⁻¹", "port_time_area": "время-сечение, мм²·с", "port": "Окно",
         "pressure_model": "Давление в цилиндре",
+        "dyn_chapter": "7. Динамика механизма газораспределения: упругая модель в диапазоне частот вращения",
+        "dyn_method": "Координаты приведены к клапану; односторонний контакт кулачка с зазором, односторонняя жёсткая "
+                      "демпфированная посадка на седло; интегрирование с постоянным шагом по углу распредвала, каждая "
+                      "частота от покоя за {revolutions} оборота распредвала, записан последний. Отрыв: сила на "
+                      "кулачке равна нулю, когда кулачок поднимает открытый клапан; отскок: клапан снова отходит от "
+                      "седла после первой посадки. Резонанс: гармоника k возбуждения от кулачка, ближайшая снизу к "
+                      "собственной частоте, её упругая амплитуда и искажение delta движения клапана",
+        "dyn_lift_error": "подъём клапана − кинематический подъём, мм", "dyn_contact_force": "сила в контакте кулачка, Н",
+        "dyn_zero_is_jump": "0: толкатель отрывается от кулачка", "dyn_seating_velocity": "|скорость посадки|, м/с",
+        "dyn_bounce": "отскок, мм", "dyn_min_force": "мин. сила в контакте, Н", "dyn_jump_speed": "частота отрыва",
+        "dyn_bounce_speed": "начало отскока", "dyn_rated": "номинальная частота",
+        "dyn_title": "посадка, отскок и сила в контакте в зависимости от частоты вращения",
+        "dyn_headline": "Основные результаты", "dyn_parameters": "Расчётная модель (приведённая к клапану)",
+        "dyn_estimates": "Оценки: величины, не заданные в исходных данных",
+        "dyn_rated_table": "На номинальной частоте вращения",
+        "dyn_resonance": "Резонансная гармоника возбуждения от кулачка на номинальной частоте",
+        "dyn_spectrum": "гармоника k", "dyn_spectrum_delta": "искажение delta, %",
+        "dyn_table": "Таблица по частотам вращения",
+        "dyn_maps": "поля отклонения подъёма клапана и силы в контакте кулачка по углу и частоте вращения",
+        "dyn_node": "масса узла",
+        "dyn_names": {
+            "speed_range_rpm": "диапазон частот вращения, мин⁻¹", "speeds": "число частот",
+            "jump_speed_rpm": "частота отрыва толкателя, мин⁻¹", "bounce_speed_rpm": "частота начала отскока, мин⁻¹",
+            "max_seating_velocity_m_s": "наибольшая скорость посадки, м/с",
+            "max_seating_velocity_speed_rpm": "при частоте вращения, мин⁻¹",
+            "coil_clash_speed_rpm": "частота соударения витков, мин⁻¹",
+            "epsilon": "малый параметр epsilon = M omega² / (c + K)",
+            "natural_frequency_Hz": "собственная частота f0, Гц", "speed_rpm": "частота вращения, мин⁻¹",
+            "min_contact_force_N": "мин. сила в контакте кулачка, Н",
+            "max_contact_force_N": "макс. сила в контакте кулачка, Н",
+            "seating_velocity_m_s": "скорость посадки, м/с", "bounce_mm": "высота отскока, мм",
+            "bounce_count": "число отскоков", "max_lift_error_mm": "макс. |подъём − кинематический подъём|, мм",
+            "jump_intervals_cam_deg": "отрыв, ° ПРВ от вершины", "max_surge_mm": "макс. колебания витков, мм",
+            "coil_clash_margin_mm": "мин. зазор между витками, мм", "harmonic_k": "резонансная гармоника k",
+            "harmonic_force_N": "сила гармоники F_k, Н", "amplitude_mm": "упругая амплитуда Delta, мм",
+            "distortion_percent": "искажение delta, %",
+        },
     },
 }
 

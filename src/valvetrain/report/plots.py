@@ -255,6 +255,82 @@ def timing_figure(valves, t):
     return fig
 
 
+def _event_window(d, margin_deg=10.0):
+    """Camshaft angles of the sweep around the event (where any speed or the rigid lift is off the seat)."""
+    sw = d.sweep
+    open_ = (sw.kinematic_lift > 0.0) | np.any(sw.lift > 1e-6, axis=0)
+    idx = np.flatnonzero(open_)
+    if idx.size == 0:
+        return np.ones(sw.theta.size, dtype=bool)
+    lo, hi = sw.theta[idx[0]] - np.radians(margin_deg), sw.theta[idx[-1]] + np.radians(margin_deg)
+    return (sw.theta >= lo) & (sw.theta <= hi)
+
+
+def dynamics_map_figure(name, d, t):
+    """Maps over camshaft angle and engine speed: valve lift minus the rigid lift, and the cam contact force."""
+    sw = d.sweep
+    keep = _event_window(d)
+    x = rad_to_deg(sw.theta[keep])
+    y = to_display(np.asarray(d.per_speed.speed), "rpm")
+    fig = Figure(figsize=(9, 8))
+    axes = fig.subplots(2, 1, sharex=True)
+    err = sw.lift_error[:, keep] / MM
+    bound = float(np.abs(err).max()) or 1.0
+    for ax, z, label, cmap, kw in ((axes[0], err, t["dyn_lift_error"], "RdBu_r", dict(vmin=-bound, vmax=bound)),
+                                   (axes[1], sw.contact_force[:, keep], t["dyn_contact_force"], "viridis", {})):
+        mesh = ax.pcolormesh(x, y, z, cmap=cmap, shading="auto", rasterized=True, **kw)
+        fig.colorbar(mesh, ax=ax, label=label)
+        ax.set_ylabel(t["speed"])
+        for value, style in ((d.jump_speed, "--"), (d.bounce_speed, ":")):
+            if np.isfinite(value):
+                ax.axhline(to_display(value, "rpm"), color="k", lw=0.8, ls=style)
+    axes[0].set_title(f"{name}: {t['dyn_lift_error']}")
+    axes[1].set_title(t["dyn_contact_force"] + " (" + t["dyn_zero_is_jump"] + ")")
+    axes[1].set_xlabel(t["cam_deg"])
+    fig.tight_layout()
+    return fig
+
+
+def dynamics_speed_figure(name, d, t):
+    """Seating velocity, bounce and the smallest contact force against the engine speed, the headline speeds
+    marked."""
+    p = d.per_speed
+    n = to_display(np.asarray(p.speed), "rpm")
+    fig = Figure(figsize=(9, 8))
+    axes = fig.subplots(3, 1, sharex=True)
+    axes[0].plot(n, np.abs(p.seating_velocity), color="C3")
+    axes[0].set_ylabel(t["dyn_seating_velocity"])
+    axes[1].plot(n, np.asarray(p.bounce) / MM, color="C1")
+    axes[1].set_ylabel(t["dyn_bounce"])
+    axes[2].plot(n, p.min_contact_force, color="C0")
+    axes[2].set_ylabel(t["dyn_min_force"])
+    axes[2].set_xlabel(t["speed"])
+    for ax in axes:
+        ax.grid(alpha=0.3)
+        marks = ((d.jump_speed, t["dyn_jump_speed"], "--"), (d.bounce_speed, t["dyn_bounce_speed"], ":"),
+                 (d.at_rated_speed.speed, t["dyn_rated"], "-."))
+        for value, label, style in marks:
+            if np.isfinite(value):
+                ax.axvline(to_display(value, "rpm"), color="0.3", lw=0.8, ls=style, label=label)
+    axes[0].legend(fontsize=8)
+    axes[0].set_title(f"{name}: {t['dyn_title']}")
+    fig.tight_layout()
+    return fig
+
+
+DYNAMICS_FIGURES = {"dynamics_map": dynamics_map_figure, "dynamics_speed": dynamics_speed_figure}
+
+
+def write_dynamics_plots(name, d, folder, t):
+    """Write the dynamics figures of one valve as PNG; return ``{kind: filename}``."""
+    out = {}
+    for kind, make in DYNAMICS_FIGURES.items():
+        fname = f"{name}_{kind}.png"
+        make(name, d, t).savefig(folder / fname, dpi=110)
+        out[kind] = fname
+    return out
+
+
 ENGINE_FIGURES = {"crank": {"crank_forces": crank_forces_figure, "crank_torque": crank_torque_figure,
                             "crank_pin_polar": crank_pin_figure},
                   "two_stroke": {"two_stroke_ports": two_stroke_ports_figure,
@@ -276,6 +352,8 @@ def write_plots(results, folder, lang="en"):
 
     for name, valve in results.valves.items():
         written[name] = {kind: save(make(valve, t), f"{name}_{kind}.png") for kind, make in FIGURES.items()}
+        if valve.dynamics is not None:
+            written[name].update(write_dynamics_plots(name, valve.dynamics, folder, t))
     if results.valves:
         written["(timing)"] = save(timing_figure(results.valves, t), "valve_timing.png")
     for stage, figures in ENGINE_FIGURES.items():

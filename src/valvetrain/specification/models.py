@@ -200,6 +200,38 @@ class Parts(_Model):
         return self
 
 
+class Dynamics(_Model):
+    """[valves.NAME.dynamics]: the elastic valve train over a speed range (Shang Hanji 1988, ch. 3).
+
+    A key left out is estimated from what the specification has (the reduced mass, the designed
+    spring, the part geometry of [parts]); results.json states each estimate."""
+
+    model: Literal["1dof", "multi"] = "1dof"
+    drive_stiffness_N_per_mm: Optional[_bounded(100.0, 1e6, "N/mm", low_open=False)] = None
+    damping_ratio: _bounded(0.0, 0.5, low_open=False) = 0.05
+    seat_stiffness_N_per_mm: _bounded(1e3, 1e7, "N/mm", low_open=False) = 2e5
+    seat_damping_ratio: _bounded(0.0, 1.0, low_open=False, high_open=True) = 0.4
+    speed_range_rpm: Optional[Pair(10.0, 30000.0, "rpm")] = None
+    speeds: Annotated[int, Field(ge=2, le=2000)] = 200
+    revolutions: Annotated[int, Field(ge=1, le=20)] = 3
+    coils_per_spring: Annotated[int, Field(ge=0, le=64)] = 8
+    step_cam_deg: _bounded(0.01, 2.0, "deg", low_open=False) = 0.1
+
+    @model_validator(mode="after")
+    def _range_and_step(self):
+        problems = []
+        if self.speed_range_rpm is not None and self.speed_range_rpm[0] >= self.speed_range_rpm[1]:
+            problems.append(f"speed_range_rpm = {list(self.speed_range_rpm)} must be [low, high] engine rpm with "
+                            "low < high")
+        n = 360.0 / self.step_cam_deg
+        if abs(n - round(n)) > 1e-6:
+            problems.append(f"step_cam_deg = {self.step_cam_deg:g} must divide the 360 deg camshaft revolution into "
+                            "whole steps (0.05, 0.1, 0.2, 0.25, 0.5, 1, ...)")
+        if problems:
+            raise ValueError("; ".join(problems))
+        return self
+
+
 class Valve(_Model):
     """[valves.NAME]: one valve (or a set of same-name valves) of a cylinder."""
 
@@ -217,6 +249,7 @@ class Valve(_Model):
     drive: Drive = Drive()
     spring: Spring = Spring()
     parts: Parts = Parts()
+    dynamics: Optional[Dynamics] = None
 
     @property
     def layout(self):

@@ -1,0 +1,440 @@
+"""The dynamics stage of a valve design: the elastic train over a speed range ([valves.NAME.dynamics]).
+
+The stage builds a one-mass or a multi-mass train (:mod:`valvetrain.dynamics.models`) from the
+valve's design (the reduced mass, the designed spring, the lash the ramp takes up, the part
+masses and geometry of the specification), sweeps it over the engine speeds
+(:func:`valvetrain.dynamics.sweep.sweep`), simulates the rated speed, and adds the resonance
+analysis of the cam's harmonics (:mod:`valvetrain.dynamics.resonance`).  Every value the
+specification leaves out is estimated and the estimate stated in ``parameters.estimates``.
+
+Speeds in the results are engine (crank) speeds; the camshaft of a four-stroke turns at half.
+"""
+
+from dataclasses import dataclass, field, replace
+import math
+from typing import Optional
+
+import numpy as np
+
+from ..checks import check
+from ..dynamics.models import (CoilSpring, camshaft_stiffness, direct_train, one_mass_train, pushrod_stiffness,
+                               pushrod_train, rocker_train, series)
+from ..dynamics.perturbation import perturbation_parameter
+from ..dynamics.resonance import resonance
+from ..dynamics.sweep import sweep
+from ..specification import SpecError
+from ..specification.cams import layout
+from ..units import DEG, MM, cam_per_crank, rpm_to_rad_s
+from .results import quantity, record
+
+SOURCES = ("Shang Hanji (1988), ch. 3 (one-mass and multi-mass trains, jump, seating, bounce); Valve-train dynamics "
+           "article (n.d.) (resonant harmonic and distortion)")
+"""The works the dynamics stage follows, as the report cites them."""
+
+CHECK_SOURCE = "Shang Hanji (1988), ch. 3"
+"""Short citation of the dynamics checks."""
+
+LINK_STIFFNESS = 45e6
+"""Stiffness assumed for a drive link whose geometry the specification does not give, at the valve [N/m]:
+three such links in series (camshaft, pushrod, rocker) make the 15000 N/mm of the one-mass worked example of
+Shang Hanji (1988, ch. 3); published pushrod trains have 3000-20000 N/mm at the valve."""
+
+SPEED_RANGE = (0.1, 1.25)
+"""Default speed range as fractions of the rated speed: idle to over-speed."""
+
+SEATING_VELOCITY_MAX = 0.5
+"""Working limit of the seating velocity [m/s] (0.3-0.5 m/s in the valve-train literature)."""
+
+
+@dataclass(frozen=True)
+class DynamicsParameters:
+    """The train that was simulated, every value at the valve (SI), and how each was obtained."""
+
+    model: str = quantity("model", label="1dof: one mass; multi: drive masses and coil masses")
+    drive_layout: str = quantity("layout", label="drive layout")
+    mass: float = quantity("mass_kg", "kg", "M, the train's mass reduced to the valve")
+    drive_stiffness: float = quantity("drive_stiffness_N_per_mm", "N/mm", "c, drive stiffness from cam to valve, at "
+                                      "the valve (the links in series)")
+    damping_ratio: float = quantity("damping_ratio", label="zeta of the drive, C = 2 zeta sqrt(c M)")
+    spring_rate: float = quantity("spring_rate_N_per_mm", "N/mm", "K, valve spring(s) rate")
+    preload: float = quantity("spring_preload_N", "N", "F0, installed spring force")
+    rocker_ratio: float = quantity("rocker_ratio", label="k, valve arm / tappet arm")
+    lash: float = quantity("lash_mm", "mm", "valve clearance at the valve, k h0")
+    seat_stiffness: float = quantity("seat_stiffness_N_per_mm", "N/mm", "c_s, valve seat contact")
+    seat_damping_ratio: float = quantity("seat_damping_ratio", label="zeta_s of the seat, C_s = 2 zeta_s sqrt(c_s M)")
+    revolutions: int = quantity("revolutions", label="camshaft revolutions per speed, the last one recorded")
+    step: float = quantity("step_cam_deg", "cam deg", "recording and base integration step")
+    coils_per_spring: int = quantity("coils_per_spring", label="coil masses per spring (multi)")
+    links: tuple[float, ...] = quantity("link_stiffnesses_N_per_mm", "N/mm", "drive links from the cam to the valve, "
+                                        "at the valve")
+    link_names: tuple[str, ...] = quantity("link_names", label="what each link is")
+    node_masses: Optional[dict] = quantity("node_masses_kg", "kg", "multi: masses of the nodes at the valve",
+                                           omit_none=True)
+    estimates: tuple[str, ...] = quantity("estimates", label="how each value the specification does not give was "
+                                          "obtained")
+
+
+@dataclass(frozen=True)
+class SpeedRecord:
+    """The train at one engine speed (SI)."""
+
+    speed: float = quantity("speed_rpm", "rpm", "engine speed")
+    epsilon: float = quantity("epsilon", label="perturbation parameter M omega_cam^2 / (c + K)")
+    min_contact_force: float = quantity("min_contact_force_N", "N", "smallest cam contact force while the cam lifts "
+                                        "the open valve, before it seats (at the cam; 0: separation)")
+    max_contact_force: float = quantity("max_contact_force_N", "N", "largest cam contact force (at the cam)")
+    seating_velocity: float = quantity("seating_velocity_m_s", "m/s", "valve velocity at the first seating "
+                                       "(negative: closing; null: no seating)")
+    bounce: float = quantity("bounce_mm", "mm", "largest valve lift after the first seating")
+    bounce_count: int = quantity("bounce_count", label="returns above 1 um after the first seating")
+    max_lift_error: float = quantity("max_lift_error_mm", "mm", "largest |valve lift - rigid lift|")
+    jump_intervals: tuple[tuple[float, ...], ...] = quantity("jump_intervals_cam_deg", "cam deg",
+                                                              "follower separation, from and to (from the nose)")
+    max_surge: Optional[float] = quantity("max_surge_mm", "mm", "multi: largest coil deviation from its share of "
+                                          "the valve motion", omit_none=True)
+    clash_margin: Optional[float] = quantity("coil_clash_margin_mm", "mm", "multi: smallest gap between coils "
+                                             "(negative: clash)", omit_none=True)
+
+
+@dataclass(frozen=True)
+class ResonanceRecord:
+    """Resonant harmonic of the cam excitation at the rated speed and the distortion of the valve motion."""
+
+    natural_frequency: float = quantity("natural_frequency_Hz", "Hz", "f0 = sqrt((K + c)/M) / 2 pi")
+    order: int = quantity("harmonic_k", label="k = int(omega0 / omega_cam), the resonant harmonic")
+    force: float = quantity("harmonic_force_N", "N", "amplitude of harmonic k of c k h")
+    amplitude: float = quantity("amplitude_mm", "mm", "elastic amplitude Delta = F / (xi omega0)")
+    distortion: float = quantity("distortion_percent", label="delta = Delta / (sqrt 2 h_rms), %")
+    orders: tuple[int, ...] = quantity("spectrum_k", label="harmonics k - 2 ... k + 2")
+    spectrum: tuple[float, ...] = quantity("spectrum_distortion_percent", label="delta at those harmonics, % (one "
+                                           "harmonic alone is fragile: a piecewise profile can have exact zeros)")
+
+
+@dataclass(frozen=True)
+class PerSpeed:
+    """One entry per speed of the sweep (SI), as in the CSV table."""
+
+    speed: tuple[float, ...] = quantity("speed_rpm", "rpm", "engine speed")
+    min_contact_force: tuple[float, ...] = quantity("min_contact_force_N", "N", "smallest cam contact force")
+    seating_velocity: tuple[float, ...] = quantity("seating_velocity_m_s", "m/s", "valve velocity at seating")
+    bounce: tuple[float, ...] = quantity("bounce_mm", "mm", "bounce height")
+    bounce_count: tuple[int, ...] = quantity("bounce_count", label="bounces")
+    jump: tuple[bool, ...] = quantity("jump", label="follower separation")
+    max_lift_error: tuple[float, ...] = quantity("max_lift_error_mm", "mm", "largest |valve lift - rigid lift|")
+
+
+@dataclass(frozen=True)
+class DynamicsResult:
+    """The dynamics stage: the train, the headline numbers of the sweep, the rated speed and the resonance."""
+
+    model: str = quantity("model", label="1dof or multi")
+    parameters: DynamicsParameters = quantity("parameters")
+    speed_range: tuple[float, ...] = quantity("speed_range_rpm", "rpm", "engine speeds swept, from and to")
+    speeds: int = quantity("speeds", label="speeds swept")
+    jump_speed: float = quantity("jump_speed_rpm", "rpm", "lowest engine speed with follower separation (null: "
+                                 "none in the range)")
+    bounce_speed: float = quantity("bounce_speed_rpm", "rpm", "lowest engine speed with a seating bounce (null: none)")
+    max_seating_velocity: float = quantity("max_seating_velocity_m_s", "m/s", "largest |seating velocity| of the "
+                                           "sweep")
+    max_seating_velocity_speed: float = quantity("max_seating_velocity_speed_rpm", "rpm", "where it occurs")
+    coil_clash_speed: Optional[float] = quantity("coil_clash_speed_rpm", "rpm", "multi: lowest speed whose coils "
+                                                 "meet (null: none)", omit_none=True)
+    epsilon: float = quantity("epsilon", label="perturbation parameter at the rated speed")
+    natural_frequency: float = quantity("natural_frequency_Hz", "Hz", "one-mass natural frequency sqrt((K + c)/M)")
+    at_rated_speed: SpeedRecord = quantity("at_rated_speed")
+    resonance: ResonanceRecord = quantity("resonance")
+    per_speed: PerSpeed = quantity("per_speed")
+    sweep_table: str = quantity("sweep_table", label="CSV with one row per speed, relative to the output folder")
+    sweep: object = field(default=None, repr=False, compare=False)       # dynamics.sweep.SweepResult
+    records: tuple = field(default=(), repr=False, compare=False)        # SpeedRecord of every speed
+    rated: object = field(default=None, repr=False, compare=False)       # dynamics.sweep.SpeedResult at rated speed
+
+
+def _link_estimates(valve, k):
+    """The drive links of the layout (name, stiffness at the valve [N/m] or None) from the part geometry."""
+    parts = valve.parts
+    cam = None
+    if None not in (parts.camshaft_diameter, parts.camshaft_span, parts.cam_to_bearing):
+        cam = camshaft_stiffness(parts.cam_to_bearing, parts.camshaft_span - parts.cam_to_bearing,
+                                 parts.camshaft_diameter, parts.camshaft_bore, parts.camshaft_modulus) / k**2
+    links = [("camshaft and cam contact", cam)]
+    if layout(valve) == "pushrod":
+        rod = None
+        if None not in (parts.pushrod_length, parts.pushrod_diameter):
+            rod = pushrod_stiffness(parts.pushrod_length, parts.pushrod_diameter, parts.pushrod_bore,
+                                    parts.pushrod_modulus) / k**2
+        links.append(("pushrod", rod))
+    links.append(("valve stem and tappet" if layout(valve) == "direct" else "rocker and valve joint", None))
+    return links
+
+
+def drive_links(dyn, valve, k, at):
+    """Link stiffnesses at the valve [N/m], their names, and the estimates stated.
+
+    The total drive stiffness c is ``dynamics.drive_stiffness_N_per_mm``, else ``drive.stiffness_N_per_mm``;
+    links with geometry in [parts] (camshaft bending, pushrod E A / L) take their estimate and the others share
+    the rest of the compliance equally.  Without a total, a link without geometry is :data:`LINK_STIFFNESS`.
+    """
+    links = _link_estimates(valve, k)
+    notes = [f"{name}: {c * MM:.5g} N/mm at the valve from the part geometry in [parts]" for name, c in links
+             if c is not None]
+    total, key = dyn.drive_stiffness, "dynamics.drive_stiffness_N_per_mm"
+    if total is None and valve.drive.stiffness is not None:
+        total, key = valve.drive.stiffness, "drive.stiffness_N_per_mm"
+        notes.append(f"drive stiffness c = {total * MM:.5g} N/mm from [drive] stiffness_N_per_mm")
+    unknown = [i for i, (_, c) in enumerate(links) if c is None]
+    known = sum(1.0 / c for _, c in links if c is not None)
+    if total is not None:
+        rest = 1.0 / total - known
+        if rest <= 0.0:
+            raise SpecError([f"{at}.{key} = {total * MM:g}: stiffer than the links estimated from [parts] alone "
+                             f"({1.0 / known * MM:.5g} N/mm in series); allowed below that"])
+        share = len(unknown) / rest
+        notes.append(", ".join(links[i][0] for i in unknown) + f": {share * MM:.5g} N/mm each at the valve, the "
+                     f"rest of c = {total * MM:.5g} N/mm")
+    else:
+        share = LINK_STIFFNESS
+        notes.append(", ".join(links[i][0] for i in unknown) + f": {share * MM:.5g} N/mm each at the valve "
+                     "(assumed; give drive_stiffness_N_per_mm or the part geometry)")
+    values = tuple(share if c is None else float(c) for _, c in links)
+    return values, tuple(name for name, _ in links), notes
+
+
+def _coil_springs(spring_record, coils):
+    """The designed spring(s) as :class:`CoilSpring` (rate, preload, active-coil mass, closing gap)."""
+    recs = [spring_record.design] if spring_record.count == 1 else [spring_record.outer, spring_record.inner]
+    return [CoilSpring(r.rate, r.preload, r.mass, r.active_coils * (r.installed_pitch - r.wire_diameter), int(coils))
+            for r in recs]
+
+
+def build_train(dyn, valve, law, drive, at):
+    """The train of a valve: (train, DynamicsParameters).  ``drive`` is the drive stage's DriveResults."""
+    k = valve.rocker_ratio
+    lash = k * law.ramp_height
+    line = drive.lines["chosen"]
+    mass = float(drive.masses.at_valve)
+    links, names, notes = drive_links(dyn, valve, k, at)
+    c = float(series(*links))
+    notes.insert(0, f"M = {mass:.5g} kg: the reduced mass at the valve of the spring design (masses.at_valve_kg)")
+    notes.append(f"K = {line.rate * MM:.5g} N/mm and F0 = {line.preload:.5g} N: the designed spring(s)")
+    notes.append(f"lash {lash / MM:.4g} mm at the valve: the clearance the ramp takes up times the rocker ratio")
+    kw = dict(damping_ratio=dyn.damping_ratio, seat_stiffness=dyn.seat_stiffness,
+              seat_damping_ratio=dyn.seat_damping_ratio)
+    nodes = None
+    if dyn.model == "1dof":
+        train = one_mass_train(mass, c, line.rate, line.preload, k, lash, **kw)
+    else:
+        train = _multi_train(valve, links, _coil_springs(drive.spring, dyn.coils_per_spring), lash, kw, at)
+        net = train.network()
+        nodes = {n: float(m) for n, m in zip(net.names, net.mass, strict=True)}
+        notes.append(f"coil masses: the designed spring's active coils in {dyn.coils_per_spring} masses per spring, "
+                     "half a segment on the valve")
+    params = DynamicsParameters(dyn.model, layout(valve), mass, c, dyn.damping_ratio, line.rate, line.preload, k, lash,
+                                dyn.seat_stiffness, dyn.seat_damping_ratio, dyn.revolutions, dyn.step,
+                                dyn.coils_per_spring, links, names, nodes, tuple(notes))
+    return train, params
+
+
+def _multi_train(valve, links, springs, lash, kw, at):
+    """A pushrod, rocker or direct multi-mass train from the part masses of [drive.masses]."""
+    m = valve.drive.masses
+    need = {"pushrod": ("tappet_kg", "pushrod_kg", "rocker_inertia_kg_mm2"), "rocker": ("rocker_inertia_kg_mm2",),
+            "direct": ("tappet_kg",)}[layout(valve)]
+    if m is None:
+        raise SpecError([f"{at}.dynamics.model = \"multi\" needs [{at}.drive.masses] with valve_kg, "
+                         f"{', '.join(need)} (the masses of the drive parts)"])
+    si_keys = {"tappet_kg": "tappet_kg", "pushrod_kg": "pushrod_kg", "rocker_inertia_kg_mm2": "rocker_inertia"}
+    missing = [key for key in need if getattr(m, si_keys[key]) <= 0.0]
+    if layout(valve) != "direct" and valve.drive.valve_arm is None:
+        missing.append("valve_arm_mm (in [drive])")
+    if missing:
+        raise SpecError([f"{at}.dynamics.model = \"multi\" with layout \"{layout(valve)}\" needs positive "
+                         f"drive.masses.{', '.join(missing)}"])
+    k = valve.rocker_ratio
+    valve_mass = m.valve_kg + m.retainer_kg + m.cotters_kg
+    inf = math.inf
+    if layout(valve) == "pushrod":
+        return pushrod_train(m.tappet_kg, m.pushrod_kg, m.rocker_inertia, valve_mass, valve.drive.valve_arm, k,
+                             links[0] * k**2, links[1] * k**2, links[2], inf, springs, lash, **kw)
+    if layout(valve) == "rocker":
+        return rocker_train(m.rocker_inertia, valve_mass, valve.drive.valve_arm, k, links[0] * k**2, links[1], inf,
+                            springs, lash, **kw)
+    return direct_train(m.tappet_kg, valve_mass, links[0], links[1], springs, lash, **kw)
+
+
+def speed_record(r, speed, epsilon):
+    """A :class:`SpeedRecord` of a :class:`~valvetrain.dynamics.sweep.SpeedResult` at engine speed [rad/s]."""
+    before = r.theta < r.seating_angle if np.isfinite(r.seating_angle) else np.ones(r.theta.size, dtype=bool)
+    lifting = (r.kinematic_lift > 0.0) & (r.lift > 0.0) & before      # where separation would be a jump
+    surge = float(r.surge_amplitude.max()) if r.surge_amplitude.size else None
+    clash = float(r.clash_margin) if np.isfinite(r.clash_margin) and r.surge_amplitude.size else None
+    return SpeedRecord(float(speed), float(epsilon), float(r.contact_force[lifting].min()) if lifting.any() else np.nan,
+                       float(r.contact_force.max()), float(r.seating_velocity), float(r.bounce_height),
+                       int(r.bounce_count), float(np.abs(r.lift_error).max()),
+                       tuple(tuple(float(a) for a in pair) for pair in r.jump_intervals), surge, clash)
+
+
+def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None):
+    """Sweep the elastic train of a valve over its speed range and simulate the rated speed.
+
+    Parameters
+    ----------
+    dyn : SI view of ``[valves.NAME.dynamics]``.
+    valve, engine : SI views of the valve and the engine.
+    law : LiftLaw
+        The valve's cam.
+    drive : DriveResults
+        The drive stage (reduced mass, designed spring).
+    name : str
+        The valve's name (the CSV table's name and the messages' keys).
+    progress : callable, optional
+        ``progress(done, total)`` after each chunk of speeds.
+
+    Returns
+    -------
+    (DynamicsResult, list of Check)
+
+    Raises
+    ------
+    SpecError
+        A multi-mass train without the part masses it needs, or a drive stiffness above that of its parts.
+    """
+    at = f"valves.{name}"
+    train, params = build_train(dyn, valve, law, drive, at)
+    to_cam = cam_per_crank(engine.strokes)
+    notes = list(params.estimates)
+    if dyn.speed_range is None:
+        low, high = (f * engine.rated_speed for f in SPEED_RANGE)
+        notes.append(f"speed range {low / rpm_to_rad_s(1.0):.0f}-{high / rpm_to_rad_s(1.0):.0f} rpm: "
+                     f"{SPEED_RANGE[0]:.0%} to {SPEED_RANGE[1]:.0%} of the rated speed (idle to over-speed)")
+    else:
+        low, high = dyn.speed_range
+    params = replace(params, estimates=tuple(notes))
+    speeds = np.linspace(low, high, dyn.speeds)
+    step_deg = dyn.step / DEG
+    if progress is not None:
+        progress(0, dyn.speeds)
+    result = sweep(law, train, speeds * to_cam, dyn.revolutions, step_deg, progress=progress)
+    rated = sweep(law, train, [engine.rated_speed * to_cam], dyn.revolutions, step_deg).speed(0)
+    m, c, kk = params.mass, params.drive_stiffness, params.spring_rate
+    eps = perturbation_parameter(m, c, kk, speeds * to_cam)
+    per = [speed_record(r, s, e) for r, s, e in zip(result.per_speed(), speeds, eps, strict=True)]
+    head = result.headline()
+    res = resonance(law, engine.rated_speed * to_cam, m, kk, c, valve.rocker_ratio)
+    reson = ResonanceRecord(res.omega0 / (2 * np.pi), res.order, res.force, res.amplitude, 100 * res.distortion,
+                            tuple(int(o) for o in res.orders), tuple(100 * float(d) for d in res.spectrum_distortion))
+    table = PerSpeed(tuple(float(s) for s in speeds), tuple(p.min_contact_force for p in per),
+                     tuple(p.seating_velocity for p in per), tuple(p.bounce for p in per),
+                     tuple(p.bounce_count for p in per), tuple(bool(p.jump_intervals) for p in per),
+                     tuple(p.max_lift_error for p in per))
+
+    def crank(cam_speed):
+        return float(cam_speed / to_cam)
+
+    eps_rated = float(perturbation_parameter(m, c, kk, engine.rated_speed * to_cam))
+    out = DynamicsResult(
+        dyn.model, params, (float(low), float(high)), int(dyn.speeds), crank(head["jump_speed"]),
+        crank(head["bounce_onset_speed"]), head["max_seating_velocity"], crank(head["max_seating_velocity_speed"]),
+        crank(head["coil_clash_speed"]) if dyn.model == "multi" else None, eps_rated,
+        float(np.sqrt((kk + c) / m) / (2 * np.pi)), speed_record(rated, engine.rated_speed, eps_rated), reson, table,
+        f"tables/{name}_dynamics.csv", result, tuple(per), rated)
+    return out, dynamics_checks(out, engine)
+
+
+CHECK_QUANTITIES = ("dynamic seating velocity at the rated speed", "follower separation (jump) speed / rated speed")
+"""The quantities of the dynamics checks."""
+
+
+def dynamics_checks(d, engine):
+    """The seating velocity at the rated speed and the follower separation below it."""
+    out = [check(CHECK_QUANTITIES[0], abs(d.at_rated_speed.seating_velocity),
+                 high=SEATING_VELOCITY_MAX, unit="m/s", source=CHECK_SOURCE + "; 0.3-0.5 m/s usual")]
+    if np.isfinite(d.jump_speed):
+        out.append(check(CHECK_QUANTITIES[1], d.jump_speed / engine.rated_speed,
+                         low=1.0, source=CHECK_SOURCE + ": no separation below the rated speed"))
+    return out
+
+
+SWEEP_COLUMNS = [
+    ("speed_rpm", "engine speed [rpm]"), ("camshaft_rpm", "camshaft speed [rpm]"),
+    ("epsilon", "perturbation parameter M omega_cam^2 / (c + K)"),
+    ("min_contact_force_N", "smallest cam contact force where the cam lifts the valve [N]"),
+    ("max_contact_force_N", "largest cam contact force [N]"),
+    ("seating_velocity_m_s", "valve velocity at the first seating [m/s]"),
+    ("bounce_mm", "largest lift after the first seating [mm]"), ("bounce_count", "bounces"),
+    ("jump", "follower separation: 1, else 0"), ("jump_from_cam_deg", "first separation starts [cam deg]"),
+    ("jump_to_cam_deg", "last separation ends [cam deg]"), ("max_lift_error_mm", "largest |lift - rigid lift| [mm]"),
+]
+"""Columns of ``tables/NAME_dynamics.csv`` (multi: also ``max_surge_mm`` and ``coil_clash_margin_mm``)."""
+
+
+def sweep_columns(d):
+    """The per-speed table of a :class:`DynamicsResult` as named columns (engineering units)."""
+    rows = [record(r) for r in d.records]
+    to_cam = d.sweep.cam_speeds[0] / d.per_speed.speed[0]
+    out = {"speed_rpm": [r["speed_rpm"] for r in rows],
+           "camshaft_rpm": [s * to_cam / rpm_to_rad_s(1.0) for s in d.per_speed.speed]}
+    for key in ("epsilon", "min_contact_force_N", "max_contact_force_N", "seating_velocity_m_s", "bounce_mm",
+                "bounce_count"):
+        out[key] = [r[key] for r in rows]
+    out["jump"] = [int(bool(r["jump_intervals_cam_deg"])) for r in rows]
+    out["jump_from_cam_deg"] = [r["jump_intervals_cam_deg"][0][0] if r["jump_intervals_cam_deg"] else np.nan
+                                for r in rows]
+    out["jump_to_cam_deg"] = [r["jump_intervals_cam_deg"][-1][1] if r["jump_intervals_cam_deg"] else np.nan
+                              for r in rows]
+    out["max_lift_error_mm"] = [r["max_lift_error_mm"] for r in rows]
+    if d.model == "multi":
+        out["max_surge_mm"] = [r.get("max_surge_mm", np.nan) for r in rows]
+        out["coil_clash_margin_mm"] = [r.get("coil_clash_margin_mm", np.nan) for r in rows]
+    return out
+
+
+def sweep_designs(spec, names=None, progress=None):
+    """The speed sweep alone: the named valves of a specification (default: those with a ``[dynamics]`` section, or
+    every valve if none has one) designed with their section, or the default one where they have none.
+
+    Parameters
+    ----------
+    spec : valvetrain.specification.Spec
+    names : sequence of str, optional
+    progress : callable, optional
+        ``progress(valve name, done, total)``.
+
+    Returns
+    -------
+    dict
+        ``name -> ValveDesign`` whose ``dynamics`` is set.
+
+    Raises
+    ------
+    SpecError
+        An unknown valve name, or inputs that admit no design.
+    """
+    from ..specification import si
+    from ..specification.models import Dynamics
+    from .valve import design_valve
+
+    if not names:
+        names = [n for n, v in spec.valves.items() if v.dynamics is not None] or list(spec.valves)
+    unknown = [n for n in names if n not in spec.valves]
+    if unknown:
+        raise SpecError([f"--valve {n}: no such valve; allowed: {', '.join(spec.valves)}" for n in unknown])
+    engine, gas, output = si(spec.engine), si(spec.gas), si(spec.output)
+    out, problems = {}, []
+    for name in names:
+        v = spec.valves[name]
+        if v.dynamics is None:
+            v = v.model_copy(update={"dynamics": Dynamics()})
+        tick = None if progress is None else (lambda done, total, name=name: progress(name, done, total))
+        try:
+            out[name] = design_valve(name, si(v, spec), engine, gas, output, progress=tick)
+        except SpecError as err:
+            problems += err.problems
+    if problems:
+        raise SpecError(problems)
+    return out
+
+
+__all__ = ["CHECK_QUANTITIES", "DynamicsParameters", "DynamicsResult", "PerSpeed", "ResonanceRecord", "SWEEP_COLUMNS",
+           "SpeedRecord", "build_train", "drive_links", "dynamics_checks", "dynamics_stage", "speed_record",
+           "sweep_columns", "sweep_designs"]

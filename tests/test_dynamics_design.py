@@ -1,0 +1,197 @@
+"""The [valves.NAME.dynamics] section: specification, the dynamics stage, results.json, the report and the CSV."""
+
+import csv
+import json
+
+import jsonschema
+import numpy as np
+import pytest
+
+from valvetrain.design import results_schema, run
+from valvetrain.export import results_json, write_outputs
+from valvetrain.specification import SpecError, example_text, parse_spec
+from valvetrain.units import MM
+
+FEW = "speeds = 3\nrevolutions = 2\nstep_cam_deg = 0.5\n"
+
+
+def with_section(dynamics):
+    """The built-in example's text with a [valves.intake.dynamics] section."""
+    return example_text().replace("[valves.intake.parts]", f"[valves.intake.dynamics]\n{dynamics}\n[valves.intake.parts]")
+
+
+def spec(dynamics, geometry=True):
+    """The built-in example with a [valves.intake.dynamics] section (without the camshaft and pushrod geometry: no
+    link stiffness estimated from [parts])."""
+    text = with_section(dynamics)
+    if not geometry:
+        text = text.replace("camshaft_diameter_mm = 28.0", "").replace("pushrod_length_mm = 220.0", "")
+    return parse_spec(text)
+
+
+def problems(dynamics):
+    with pytest.raises(SpecError) as err:
+        spec(dynamics)
+    return err.value.problems
+
+
+def test_no_section_no_dynamics():
+    """Without the section the results are as before: no dynamics key, no dynamics check."""
+    results = json.loads(results_json(run(parse_spec(example_text()))))
+    assert "dynamics" not in results["valves"]["intake"]
+    assert not [c for c in results["checks"] if "seating velocity at the rated" in c["quantity"]]
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("speeds = 1", "valves.intake.dynamics.speeds = 1: Input should be greater than or equal to 2"),
+    ("damping_ratio = 0.7", "valves.intake.dynamics.damping_ratio = 0.7: allowed [0, 0.5]"),
+    ("model = \"2dof\"", "valves.intake.dynamics.model = '2dof': Input should be '1dof' or 'multi'"),
+    ("speed_range_rpm = [5000.0, 1000.0]", "valves.intake.dynamics: speed_range_rpm = [5000.0, 1000.0] must be [low, "
+                                           "high] engine rpm with low < high"),
+    ("step_cam_deg = 0.7", "valves.intake.dynamics: step_cam_deg = 0.7 must divide the 360 deg camshaft revolution"),
+    ("seat_stiffness_N_per_mm = 10.0", "valves.intake.dynamics.seat_stiffness_N_per_mm = 10.0: allowed [1000, 1e+07] "
+                                       "N/mm"),
+    ("drive_stiffness_N_per_mm = 1e9", "valves.intake.dynamics.drive_stiffness_N_per_mm = 1000000000.0: allowed [100, "
+                                       "1e+06] N/mm"),
+    ("coils = 8", "valves.intake.dynamics.coils: unknown key"),
+])
+def test_section_messages(text, expected):
+    """Every bad key gives one message with the key, the value and the allowed range."""
+    assert any(p.startswith(expected) for p in problems(text)), problems(text)
+
+
+def kinetostatic_cam_force(valve, cam_speed, theta):
+    """k (F0 + K y + M a_v) at the cam for the rigid train (seed 000 eqs. 5.1, 7.1), independent of the stage."""
+    law, k = valve.law, valve.rocker_ratio
+    d = law.derivatives(theta)
+    y = k * np.clip(d[0] - law.ramp_height, 0.0, None)
+    line = valve.drive.lines["chosen"]
+    return k * (line.preload + line.rate * y + valve.drive.masses.at_valve * k * cam_speed**2 * d[2])
+
+
+def test_stiff_slow_train_follows_the_kinematics():
+    """Rigid limit: a drive of 1e6 N/mm at 300-600 rpm lifts the valve by the rigid lift less the static deflection
+    (F0 + K y)/c, and the contact force is the kinetostatic one (analytic identity)."""
+    r = run(spec("drive_stiffness_N_per_mm = 1e6\nspeed_range_rpm = [300.0, 600.0]\n" + FEW, geometry=False))
+    v = r.valves["intake"]
+    d = v.dynamics
+    c, line = d.parameters.drive_stiffness, v.drive.lines["chosen"]
+    assert c == pytest.approx(1e9)
+    deflection = (line.preload + line.rate * v.flow.valve_lift) / c
+    assert max(d.per_speed.max_lift_error) < 1.2 * deflection + 1e-6
+    sw = d.sweep
+    for i, omega in enumerate(sw.cam_speeds):
+        open_ = sw.lift[i] > 0.2 * v.flow.valve_lift
+        expected = kinetostatic_cam_force(v, omega, sw.theta[open_])
+        assert np.abs(sw.contact_force[i][open_] - expected).max() < 0.01 * expected.max()
+    assert np.isnan(d.jump_speed) and np.isnan(d.bounce_speed)
+    assert d.per_speed.min_contact_force[0] > 0.0
+
+
+def test_results_contract_schema_and_estimates():
+    """results.json carries the contract keys, the schema accepts it; the omitted values are estimated and stated:
+    the camshaft and pushrod links from [parts], the rocker link assumed, c their series."""
+    r = run(spec(FEW + "speed_range_rpm = [2000.0, 9000.0]\n"))
+    rec = json.loads(results_json(r))
+    jsonschema.validate(rec, results_schema())
+    d = rec["valves"]["intake"]["dynamics"]
+    for key in ("jump_speed_rpm", "bounce_speed_rpm", "max_seating_velocity_m_s", "epsilon", "natural_frequency_Hz",
+                "sweep_table", "model", "parameters", "resonance", "per_speed"):
+        assert key in d
+    for key in ("min_contact_force_N", "seating_velocity_m_s", "bounce_mm", "max_lift_error_mm",
+                "jump_intervals_cam_deg"):
+        assert key in d["at_rated_speed"]
+    p = d["parameters"]
+    assert p["link_names"] == ["camshaft and cam contact", "pushrod", "rocker and valve joint"]
+    assert p["link_stiffnesses_N_per_mm"][2] == 45000.0
+    assert 1.0 / sum(1.0 / x for x in p["link_stiffnesses_N_per_mm"]) == pytest.approx(p["drive_stiffness_N_per_mm"])
+    text = " ".join(p["estimates"])
+    assert "camshaft and cam contact" in text and "assumed" in text and "of the rated speed" not in text
+    assert d["per_speed"]["speed_rpm"] == [2000.0, 5500.0, 9000.0]
+    # natural frequency and epsilon from the parameters (f0 = sqrt((K + c)/M) / 2 pi, eps = M omega_cam^2/(c + K))
+    m, c, k = p["mass_kg"], p["drive_stiffness_N_per_mm"] / MM, p["spring_rate_N_per_mm"] / MM
+    assert d["natural_frequency_Hz"] == pytest.approx(np.sqrt((k + c) / m) / (2 * np.pi))
+    assert d["epsilon"] == pytest.approx(m * (7000 * np.pi / 60) ** 2 / (c + k))
+    assert d["resonance"]["harmonic_k"] == int(2 * np.pi * d["natural_frequency_Hz"] / (7000 * np.pi / 60))
+    # 9000 rpm is beyond the float speed of this train: the contact force vanishes somewhere
+    assert d["per_speed"]["min_contact_force_N"][-1] == 0.0 and d["jump_speed_rpm"] is not None
+
+
+def test_given_stiffness_shared_by_the_links_without_geometry():
+    """A total c given: the links without geometry share what the camshaft and pushrod leave of its compliance; a c
+    stiffer than those parts alone is refused."""
+    d = run(spec("drive_stiffness_N_per_mm = 8000.0\n" + FEW)).valves["intake"].dynamics
+    links = d.parameters.links
+    assert 1.0 / sum(1.0 / x for x in links) == pytest.approx(8000e3)
+    with pytest.raises(SpecError, match=r"dynamics.drive_stiffness_N_per_mm = 500000: stiffer than the links"):
+        run(spec("drive_stiffness_N_per_mm = 5e5\n" + FEW))
+
+
+def test_multi_with_massless_coils_has_the_reduced_mass():
+    """The multi-mass pushrod train with coils_per_spring = 0 (m_s/3 on the valve) has the nodes of seed 000 eq. 5.2:
+    their masses add up to the reduced mass the one-mass train uses; with coils the CSV has the surge columns."""
+    d = run(spec("model = \"multi\"\ncoils_per_spring = 0\n" + FEW)).valves["intake"].dynamics
+    assert sum(d.parameters.node_masses.values()) == pytest.approx(d.parameters.mass, rel=1e-9)
+    assert list(d.parameters.node_masses) == ["tappet", "pushrod", "rocker", "valve"]
+
+
+def test_multi_needs_the_part_masses():
+    text = example_text().replace("[valves.intake.drive.masses]", "[valves.intake.unused]")
+    text = text[:text.index("[valves.intake.unused]")] + text[text.index("[valves.intake.spring]"):]
+    text = text.replace("[valves.intake.parts]", "[valves.intake.dynamics]\nmodel = \"multi\"\n" + FEW
+                        + "\n[valves.intake.parts]")
+    with pytest.raises(SpecError, match=r"dynamics.model = \"multi\" needs \[valves.intake.drive.masses\]"):
+        run(parse_spec(text))
+
+
+def test_run_writes_chapter_csv_and_plots(tmp_path):
+    """`run` with the section: the CSV has one row per speed, the plots exist, the report has the chapter (and its
+    Russian one); the user-facing text cites the works, not internal tags."""
+    r = run(spec("model = \"multi\"\ncoils_per_spring = 4\n" + FEW))
+    out = write_outputs(r, tmp_path / "out", "en")
+    rows = list(csv.DictReader(open(out / "tables" / "intake_dynamics.csv", encoding="utf-8")))
+    assert len(rows) == 3 and "coil_clash_margin_mm" in rows[0]
+    assert float(rows[0]["speed_rpm"]) == pytest.approx(700.0)
+    for kind in ("dynamics_map", "dynamics_speed"):
+        assert (out / "plots" / f"intake_{kind}.png").stat().st_size > 10000
+    html = (out / "report.html").read_text(encoding="utf-8")
+    assert "7. Valve-train dynamics" in html and "Shang Hanji" in html and "tables/intake_dynamics.csv" in html
+    chapter = html[html.index("7. Valve-train dynamics"):html.index("Lift table (every")]
+    assert "seed" not in chapter.lower() and "spec section" not in chapter.lower()
+    ru = write_outputs(r, tmp_path / "ru", "ru")
+    assert "Динамика механизма газораспределения" in (ru / "report.html").read_text(encoding="utf-8")
+
+
+def write_spec(tmp_path, dynamics):
+    path = tmp_path / "engine.toml"
+    path.write_text(with_section(dynamics), encoding="utf-8")
+    return path
+
+
+def test_sweep_command(tmp_path, monkeypatch):
+    """`valvetrain sweep` writes dynamics.json, the CSV and the plots; a progress bar goes to standard error only
+    (forced here: this sweep is faster than the second after which it appears; the bar updates after each chunk
+    of 25 speeds)."""
+    from click.testing import CliRunner
+
+    from valvetrain import cli
+
+    monkeypatch.setattr(cli._Progress, "AFTER", 0.0)
+    f = write_spec(tmp_path, FEW.replace("speeds = 3", "speeds = 30"))
+    out = tmp_path / "sweep"
+    result = CliRunner().invoke(cli.main, ["sweep", str(f), "--out", str(out)])
+    assert result.exit_code == 0, result.output
+    assert "intake: jump" in result.stdout and "speed sweep" not in result.stdout
+    assert "intake: speed sweep" in result.stderr
+    data = json.loads((out / "dynamics.json").read_text(encoding="utf-8"))
+    assert len(data["valves"]["intake"]["per_speed"]["speed_rpm"]) == 30
+    assert len((out / "tables" / "intake_dynamics.csv").read_text(encoding="utf-8").splitlines()) == 31
+    assert sorted(p.name for p in (out / "plots").iterdir()) == ["intake_dynamics_map.png", "intake_dynamics_speed.png"]
+    # a second sweep replaces its own output; a folder with other files is refused (the output-folder rules)
+    assert CliRunner().invoke(cli.main, ["sweep", str(f), "--out", str(out)]).exit_code == 0
+    (tmp_path / "mine").mkdir()
+    (tmp_path / "mine" / "notes.txt").write_text("x")
+    refused = CliRunner().invoke(cli.main, ["sweep", str(f), "--out", str(tmp_path / "mine")])
+    assert refused.exit_code == 2 and "notes.txt" in refused.stderr
+    bad = CliRunner().invoke(cli.main, ["sweep", str(f), "--out", str(tmp_path / "x"), "--valve", "exhaust"])
+    assert bad.exit_code == 2 and "--valve exhaust: no such valve; allowed: intake" in bad.stderr
