@@ -17,7 +17,7 @@ from ..tables import lift_table_columns
 from ..bibliography import WORKS, cited_in
 from ..units import to_display
 from .i18n import SYMBOLS, TEXT
-from .names import has_name, label, quantity_text, translate, unit_text, value_text
+from .names import has_name, label, link_names, quantity_text, translate, unit_text, value_text
 
 TABLE_COLUMNS = ["cam_deg", "crank_deg", "segment", "tappet_lift_mm", "tappet_velocity_m_s",
                  "tappet_acceleration_m_s2", "valve_lift_mm", "curtain_area_mm2", "time_area_mm2_s", "rho_mm"]
@@ -55,6 +55,8 @@ CITE_KEYS = ("source", "gas_force_source")
 def cell(key, value, lang):
     """The value of a key for a table cell: names and citations as they are (marked), the rest by :func:`fmt`."""
     leaf = key.rsplit(".", 1)[-1]
+    if leaf == "link_names":
+        return link_names(value, lang)
     if leaf in NAME_KEYS and isinstance(value, str):
         return Markup('<span class="name">{}</span>').format(value)
     if leaf in CITE_KEYS and isinstance(value, str):

@@ -75,7 +75,7 @@ TEXT = {
                       "revolutions, the last one recorded. Jump: the cam force is zero while the cam lifts the open "
                       "valve; bounce: the valve leaves its seat again after the first seating. Resonance: the "
                       "harmonic k of the cam excitation nearest below the natural frequency, its elastic amplitude "
-                      "and the distortion delta of the valve motion",
+                      "and the distortion δ of the valve motion",
         "dyn_lift_error": "valve lift − rigid lift, mm", "dyn_contact_force": "cam contact force, N",
         "dyn_zero_is_jump": "0: the follower leaves the cam", "dyn_seating_velocity": "|seating velocity|, m/s",
         "dyn_bounce": "bounce, mm", "dyn_min_force": "min contact force, N", "dyn_jump_speed": "jump (float) speed",
@@ -84,7 +84,7 @@ TEXT = {
         "dyn_parameters": "The train simulated (at the valve)",
         "dyn_estimates": "Estimates: values the specification does not give",
         "dyn_rated_table": "At the rated speed", "dyn_resonance": "Resonant harmonic of the cam excitation at the rated speed",
-        "dyn_spectrum": "harmonic k", "dyn_spectrum_delta": "distortion delta, %",
+        "dyn_spectrum": "harmonic k", "dyn_spectrum_delta": "distortion δ, %",
         "dyn_table": "Per-speed table",
         "dyn_maps": "maps of the valve-lift error and the cam contact force over cam angle and speed",
         "dyn_node": "mass of the node",
@@ -92,15 +92,15 @@ TEXT = {
             "speed_range_rpm": "engine speeds swept, rpm", "speeds": "speeds", "jump_speed_rpm": "jump (float) speed, rpm",
             "bounce_speed_rpm": "bounce onset speed, rpm", "max_seating_velocity_m_s": "max seating velocity, m/s",
             "max_seating_velocity_speed_rpm": "at engine speed, rpm", "coil_clash_speed_rpm": "coil clash speed, rpm",
-            "epsilon": "perturbation parameter epsilon = M omega² / (c + K)",
+            "epsilon": "perturbation parameter ε = M ω² / (c + K)",
             "natural_frequency_Hz": "natural frequency f0, Hz", "speed_rpm": "engine speed, rpm",
             "min_contact_force_N": "min cam contact force, N", "max_contact_force_N": "max cam contact force, N",
             "seating_velocity_m_s": "seating velocity, m/s", "bounce_mm": "bounce height, mm",
             "bounce_count": "bounces", "max_lift_error_mm": "max |lift − rigid lift|, mm",
             "jump_intervals_cam_deg": "separation, cam deg from the nose", "max_surge_mm": "max coil surge, mm",
             "coil_clash_margin_mm": "min coil gap, mm", "harmonic_k": "resonant harmonic k",
-            "harmonic_force_N": "harmonic force F_k, N", "amplitude_mm": "elastic amplitude Delta, mm",
-            "distortion_percent": "distortion delta, %",
+            "harmonic_force_N": "harmonic force F_k, N", "amplitude_mm": "elastic amplitude Δ, mm",
+            "distortion_percent": "distortion δ, %",
         },
     },
     "ru": {
@@ -192,7 +192,7 @@ TEXT = {
                       "частота от покоя за {revolutions} оборота распредвала, записан последний. Отрыв: сила на "
                       "кулачке равна нулю, когда кулачок поднимает открытый клапан; отскок: клапан снова отходит от "
                       "седла после первой посадки. Резонанс: гармоника k возбуждения от кулачка, ближайшая снизу к "
-                      "собственной частоте, её упругая амплитуда и искажение delta движения клапана",
+                      "собственной частоте, её упругая амплитуда и искажение δ движения клапана",
         "dyn_lift_error": "подъём клапана − кинематический подъём, мм", "dyn_contact_force": "сила в контакте кулачка, Н",
         "dyn_zero_is_jump": "0: толкатель отрывается от кулачка", "dyn_seating_velocity": "|скорость посадки|, м/с",
         "dyn_bounce": "отскок, мм", "dyn_min_force": "мин. сила в контакте, Н", "dyn_jump_speed": "частота отрыва",
@@ -202,7 +202,7 @@ TEXT = {
         "dyn_estimates": "Оценки: величины, не заданные в исходных данных",
         "dyn_rated_table": "На номинальной частоте вращения",
         "dyn_resonance": "Резонансная гармоника возбуждения от кулачка на номинальной частоте",
-        "dyn_spectrum": "гармоника k", "dyn_spectrum_delta": "искажение delta, %",
+        "dyn_spectrum": "гармоника k", "dyn_spectrum_delta": "искажение δ, %",
         "dyn_table": "Таблица по частотам вращения",
         "dyn_maps": "поля отклонения подъёма клапана и силы в контакте кулачка по углу и частоте вращения",
         "dyn_node": "масса узла",
@@ -212,7 +212,7 @@ TEXT = {
             "max_seating_velocity_m_s": "наибольшая скорость посадки, м/с",
             "max_seating_velocity_speed_rpm": "при частоте вращения, мин⁻¹",
             "coil_clash_speed_rpm": "частота соударения витков, мин⁻¹",
-            "epsilon": "малый параметр epsilon = M omega² / (c + K)",
+            "epsilon": "малый параметр ε = M ω² / (c + K)",
             "natural_frequency_Hz": "собственная частота f0, Гц", "speed_rpm": "частота вращения, мин⁻¹",
             "min_contact_force_N": "мин. сила в контакте кулачка, Н",
             "max_contact_force_N": "макс. сила в контакте кулачка, Н",
@@ -220,8 +220,8 @@ TEXT = {
             "bounce_count": "число отскоков", "max_lift_error_mm": "макс. |подъём − кинематический подъём|, мм",
             "jump_intervals_cam_deg": "отрыв, ° ПРВ от вершины", "max_surge_mm": "макс. колебания витков, мм",
             "coil_clash_margin_mm": "мин. зазор между витками, мм", "harmonic_k": "резонансная гармоника k",
-            "harmonic_force_N": "сила гармоники F_k, Н", "amplitude_mm": "упругая амплитуда Delta, мм",
-            "distortion_percent": "искажение delta, %",
+            "harmonic_force_N": "сила гармоники F_k, Н", "amplitude_mm": "упругая амплитуда Δ, мм",
+            "distortion_percent": "искажение δ, %",
         },
     },
 }

@@ -216,6 +216,23 @@ NAMES = {
     "flat_follower_edge_loading": ("flat follower edge loading", "кромочный контакт плоского толкателя"),
     "tappet_face_diameter": ("tappet face diameter", "диаметр тарелки толкателя"),
     "fit_reason": ("fit used and why", "аппроксимация и почему она выбрана"),
+    # the train of the dynamics chapter
+    "dynamics.model": ("model", "расчётная модель"), "dynamics.layout": ("drive layout", "схема привода"),
+    "dynamics.mass": ("reduced mass at the valve M", "приведённая к клапану масса M"),
+    "dynamics.drive_stiffness": ("drive stiffness at the valve c", "жёсткость привода, приведённая к клапану, c"),
+    "dynamics.damping_ratio": ("damping ratio of the drive ζ", "относительное демпфирование привода ζ"),
+    "dynamics.spring_rate": ("spring rate K", "жёсткость пружины K"),
+    "dynamics.spring_preload": ("spring preload F0", "предварительная затяжка пружины F0"),
+    "dynamics.rocker_ratio": ("rocker ratio i_k", "передаточное отношение коромысла i_k"),
+    "dynamics.lash": ("lash at the valve", "зазор на клапане"),
+    "dynamics.seat_stiffness": ("seat stiffness", "жёсткость седла"),
+    "dynamics.seat_damping_ratio": ("damping ratio of the seat", "относительное демпфирование седла"),
+    "dynamics.revolutions": ("camshaft revolutions per speed", "оборотов распредвала на каждую частоту"),
+    "dynamics.step": ("integration step", "шаг интегрирования"),
+    "dynamics.coils_per_spring": ("coil masses per spring", "масс витков на пружину"),
+    "dynamics.link_stiffnesses": ("stiffnesses of the links at the valve", "жёсткости звеньев, приведённые к клапану"),
+    "dynamics.link_names": ("links of the drive", "звенья привода"),
+    "dynamics.speeds": ("speeds of the sweep", "число частот вращения в расчёте"),
     "cam_force_max_cam": ("cam angle of the max cam load", "угол ПРВ наибольшей нагрузки на кулачок"),
     "valve_force_max": ("max force at the valve", "наибольшая сила на клапане"),
     "gas_force_at_opening": ("gas force at the valve's opening", "сила давления газов в момент открытия"),
@@ -313,6 +330,7 @@ VALUES = {
     "crank": "по коленчатому валу", "cam": "по распределительному валу", "valve": "на клапане", "tappet": "на толкателе",
     "gas_exchange_tdc": "ВМТ газообмена", "firing_tdc": "ВМТ сгорания", "auto": "автоматически", "spline": "сплайн",
     "true": "да", "false": "нет", "outer": "наружная", "inner": "внутренняя", "any": "любое",
+    "1dof": "одномассовая", "multi": "многомассовая",
 }
 """Russian of the text values of the specification and the records (their English is the value itself)."""
 
@@ -376,6 +394,10 @@ QUANTITIES = {
     "resonance ratio omega_c1/omega_cam": ("resonance ratio ω_c1/ω_cam", "отношение частот ω_c1/ω_р"),
     "tau_max": ("τ_max", "τ_max"), "working coils": ("working coils", "число рабочих витков"),
     "valve-piston clearance": ("valve-piston clearance", "зазор клапан-поршень"),
+    "dynamic seating velocity at the rated speed": ("dynamic seating velocity at the rated speed",
+                                                    "скорость посадки клапана на номинальной частоте (динамический расчёт)"),
+    "follower separation (jump) speed / rated speed": ("follower separation (jump) speed / rated speed",
+                                                       "частота отрыва толкателя / номинальная частота"),
     "valve-piston clearance over the overlap": ("valve-piston clearance over the overlap",
                                                 "зазор клапан-поршень в период перекрытия клапанов"),
     "gas force on the exhaust valve at opening": ("gas force on the exhaust valve at opening",
@@ -403,6 +425,22 @@ SKELETONS = {
     "even firing, order {}{}{}{}": "равномерное чередование вспышек, порядок работы {}{}{}{}",
     "even firing, order {}{}{}{}{}{}{}{}": "равномерное чередование вспышек, порядок работы {}{}{}{}{}{}{}{}",
     "from the crank throws and cylinder axes": "по углам колен вала и осям цилиндров",
+    "{} N/mm at the valve from the part geometry in [parts]":
+        "{} Н/мм, приведённая к клапану, по геометрии деталей из исходных данных",
+    "{} N/mm each at the valve, the rest of c = {} N/mm":
+        "по {} Н/мм каждое звено, приведённая к клапану: остаток жёсткости c = {} Н/мм",
+    "{} N/mm each at the valve (assumed; give drive_stiffness_N_per_mm or the part geometry)":
+        "по {} Н/мм каждое звено, приведённая к клапану (принято; задайте жёсткость привода или геометрию деталей)",
+    "drive stiffness c = {} N/mm from [drive] stiffness_N_per_mm": "жёсткость привода c = {} Н/мм из исходных данных",
+    "M = {} kg: the reduced mass at the valve of the spring design (masses.at_valve_kg)":
+        "M = {} кг: приведённая к клапану масса из расчёта пружины",
+    "K = {} N/mm and F{} = {} N: the designed spring(s)": "K = {} Н/мм и F{} = {} Н: рассчитанная пружина (пружины)",
+    "lash {} mm at the valve: the clearance the ramp takes up times the rocker ratio":
+        "зазор {} мм на клапане: зазор, выбираемый участком сбега, умноженный на передаточное отношение коромысла",
+    "coil masses: the designed spring's active coils in {} masses per spring, half a segment on the valve":
+        "массы витков: рабочие витки рассчитанной пружины как {} масс на пружину, половина участка на клапане",
+    "speed range {}{} rpm: {}% to {}% of the rated speed (idle to over-speed)":
+        "диапазон частот {}{} мин⁻¹: от {}% до {}% номинальной (от холостого хода до заброса оборотов)",
     "m_v x {} m/s{} ({} g, a stated default)": "m_кл × {0} м/с² ({2} g, принято по умолчанию)",
     "part masses, Valve-train practical works (n.d.), eq. ({}); spring mass of the design":
         "массы деталей, практические работы по расчёту ГРМ, ф. ({}); масса рассчитанной пружины",
@@ -524,10 +562,26 @@ def value_text(value, lang):
     return translate(value, lang)
 
 
+LINKS = {
+    "camshaft and cam contact": "распределительный вал и контакт кулачка", "pushrod": "штанга",
+    "rocker and valve joint": "коромысло и его сочленения", "valve stem and tappet": "стержень клапана и толкатель",
+}
+"""Russian of the drive links of the dynamics chapter (their English is the name itself)."""
+
+
+def link_names(names, lang):
+    """The drive links of a dynamics record, comma-separated, in ``lang``."""
+    return ", ".join(name if lang == "en" else LINKS.get(name, name) for name in names)
+
+
 def translate(text, lang):
-    """A text made with numbers in ``lang`` by its skeleton (:data:`SKELETONS`); as it is without one."""
+    """A text made with numbers in ``lang`` by its skeleton (:data:`SKELETONS`); as it is without one.  A text that
+    starts with drive links (``"pushrod: ..."``, :data:`LINKS`) has them translated and the rest by its skeleton."""
     if lang == "en" or not text:
         return text
+    head, sep, rest = text.partition(": ")
+    if sep and all(name in LINKS for name in head.split(", ")):
+        return f"{link_names(head.split(', '), lang)}: {translate(rest, lang)}"
     numbers = NUMBER.findall(text)
     skeleton = NUMBER.sub("{}", text)
     ru = SKELETONS.get(skeleton)
