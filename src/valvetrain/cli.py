@@ -172,7 +172,8 @@ def sweep(file, out, valves, force, lang):
     Each valve's [valves.NAME.dynamics] section is used (its defaults where it has none): one-mass or
     multi-mass train, every speed of the range, jump, bounce and seating. Writes dynamics.json,
     tables/NAME_dynamics.csv and plots/NAME_dynamics_map.png, NAME_dynamics_speed.png."""
-    from .design.dynamics import CHECK_QUANTITIES, sweep_designs
+    from .design import sweep_designs
+    from .design.dynamics import CHECK_QUANTITIES
     from .export import write_sweep
 
     spec = _load(file)

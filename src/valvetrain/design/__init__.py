@@ -22,6 +22,7 @@ from ..checks import SEVERITIES, apply_acceptances, check, failed, ranked, valve
 from ..crank.pressure import PressureFileError
 from ..files import TableFileError
 from ..specification import SpecError, si
+from ..specification.models import Dynamics
 from ..units import MM
 from .crank import CrankResults, CrankSummary, crank_stage, valve_timing
 from .drive import MassResult, SpringResult, StrengthResult
@@ -33,7 +34,7 @@ from .valve import (THROAT_AREA_SHARE_RANGE, CamResult, ClearanceResult, FlowRes
                     valve_checks)
 
 __all__ = ["DesignResults", "ValveDesign", "clearance_stage", "design_valve", "flow_stage", "law_stage", "profile_stage", "run",
-           "valve_checks"]
+           "sweep_designs", "valve_checks"]
 
 
 @dataclass(frozen=True)
@@ -217,6 +218,48 @@ def engine_record(eng):
     return EngineRecord(eng.name, eng.bore, eng.stroke, eng.rated_speed, eng.cylinders, eng.strokes,
                         flow.mean_piston_speed(eng.stroke, eng.rated_speed * 30.0 / np.pi), swept,
                         swept * eng.cylinders, float(flow.circle_area(eng.bore)))
+
+
+def sweep_designs(spec, names=None, progress=None):
+    """The speed sweep alone: the named valves of a specification (default: those with a ``[dynamics]`` section, or
+    every valve if none has one) designed with their section, or the default one where they have none.
+
+    Parameters
+    ----------
+    spec : valvetrain.specification.Spec
+    names : sequence of str, optional
+    progress : callable, optional
+        ``progress(valve name, done, total)``.
+
+    Returns
+    -------
+    dict
+        ``name -> ValveDesign`` whose ``dynamics`` is set.
+
+    Raises
+    ------
+    SpecError
+        An unknown valve name, or inputs that admit no design.
+    """
+    if not names:
+        names = [n for n, v in spec.valves.items() if v.dynamics is not None] or list(spec.valves)
+    unknown = [n for n in names if n not in spec.valves]
+    if unknown:
+        raise SpecError([f"--valve {n}: no such valve; allowed: {', '.join(spec.valves)}" for n in unknown])
+    engine, gas, output = si(spec.engine), si(spec.gas), si(spec.output)
+    out, problems = {}, []
+    for name in names:
+        v = spec.valves[name]
+        if v.dynamics is None:
+            v = v.model_copy(update={"dynamics": Dynamics()})
+        tick = None if progress is None else (lambda done, total, name=name: progress(name, done, total))
+        try:
+            out[name] = design_valve(name, si(v, spec), engine, gas, output, progress=tick)
+        except SpecError as err:
+            problems += err.problems
+    if problems:
+        raise SpecError(problems)
+    return out
 
 
 def results_schema():

@@ -389,52 +389,6 @@ def sweep_columns(d):
     return out
 
 
-def sweep_designs(spec, names=None, progress=None):
-    """The speed sweep alone: the named valves of a specification (default: those with a ``[dynamics]`` section, or
-    every valve if none has one) designed with their section, or the default one where they have none.
-
-    Parameters
-    ----------
-    spec : valvetrain.specification.Spec
-    names : sequence of str, optional
-    progress : callable, optional
-        ``progress(valve name, done, total)``.
-
-    Returns
-    -------
-    dict
-        ``name -> ValveDesign`` whose ``dynamics`` is set.
-
-    Raises
-    ------
-    SpecError
-        An unknown valve name, or inputs that admit no design.
-    """
-    from ..specification import si
-    from ..specification.models import Dynamics
-    from .valve import design_valve
-
-    if not names:
-        names = [n for n, v in spec.valves.items() if v.dynamics is not None] or list(spec.valves)
-    unknown = [n for n in names if n not in spec.valves]
-    if unknown:
-        raise SpecError([f"--valve {n}: no such valve; allowed: {', '.join(spec.valves)}" for n in unknown])
-    engine, gas, output = si(spec.engine), si(spec.gas), si(spec.output)
-    out, problems = {}, []
-    for name in names:
-        v = spec.valves[name]
-        if v.dynamics is None:
-            v = v.model_copy(update={"dynamics": Dynamics()})
-        tick = None if progress is None else (lambda done, total, name=name: progress(name, done, total))
-        try:
-            out[name] = design_valve(name, si(v, spec), engine, gas, output, progress=tick)
-        except SpecError as err:
-            problems += err.problems
-    if problems:
-        raise SpecError(problems)
-    return out
-
-
 __all__ = ["CHECK_QUANTITIES", "DynamicsParameters", "DynamicsResult", "PerSpeed", "ResonanceRecord", "SWEEP_COLUMNS",
            "SpeedRecord", "build_train", "drive_links", "dynamics_checks", "dynamics_stage", "speed_record",
-           "sweep_columns", "sweep_designs"]
+           "sweep_columns"]
