@@ -1,1 +1,2 @@
-"""Crank mechanism: piston kinematics (and, later, dynamics and multi-cylinder torque)."""
+"""Crank mechanism: piston kinematics, gas pressure (indicator files, p-V diagrams, the Wiebe cycle), forces and
+cylinder torque, and the multi-cylinder torque."""
