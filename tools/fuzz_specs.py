@@ -796,7 +796,10 @@ DOCUMENTED_NULLS = {
     "opens_deg_at_0.1mm": "a measured lift that never reaches 0.1 mm", "closes_deg_at_0.1mm": "the same",
     "nonuniformity": "a mean torque that is not positive", "torque_work_balance": "no indicated work",
     "low": "a check open below", "high": "a check open above",
+    "jump_speed_rpm": "no follower separation in the speed range", "bounce_speed_rpm": "no bounce in the range",
+    "coil_clash_speed_rpm": "no coil clash in the range",
 }
+"""In memory a documented null may be NaN (numpy's "none"), which results.json writes as null."""
 
 DOCUMENTED_EMPTY_CELLS = {"rho_mm"}
 """Table columns where an infinite value is written as a documented empty cell (a straight flank's radius)."""
@@ -835,7 +838,7 @@ def null_problems(data, valve_names):
     for path, v in _walk(data):
         if v is None or (isinstance(v, (float, np.floating)) and not math.isfinite(v)):
             key = str(path[-1]) if path else ""
-            if key in DOCUMENTED_NULLS and v is None:
+            if key in DOCUMENTED_NULLS and (v is None or v != v):
                 continue
             margin = key.endswith("margin") or (len(path) > 1 and path[-2] == "margins")
             if margin and v == math.inf:
