@@ -195,3 +195,31 @@ def test_sweep_command(tmp_path, monkeypatch):
     assert refused.exit_code == 2 and "notes.txt" in refused.stderr
     bad = CliRunner().invoke(cli.main, ["sweep", str(f), "--out", str(tmp_path / "x"), "--valve", "exhaust"])
     assert bad.exit_code == 2 and "--valve exhaust: no such valve; allowed: intake" in bad.stderr
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("mass_kg = 0.0", "valves.intake.dynamics.mass_kg = 0.0: allowed [0.001, 50] kg"),
+    ("spring_rate_N_per_mm = -1.0", "valves.intake.dynamics.spring_rate_N_per_mm = -1.0: allowed [0, 1e+06] N/mm"),
+    ("model = \"multi\"\nmass_kg = 0.2", "valves.intake.dynamics: mass_kg: a one-mass train's"),
+])
+def test_train_override_messages(text, expected):
+    """The one-mass train given as a whole: bounds, and no override of the multi-mass train."""
+    assert any(p.startswith(expected) for p in problems(text)), problems(text)
+
+
+def test_train_overrides_replace_the_designed_train():
+    """mass_kg, spring_rate_N_per_mm and spring_preload_N are the train's, each stated as given; a preload alone
+    sizes the rate as (K_3 M |j_min| - F0) / h_max (Valve-train dynamics article (n.d.), step 4a), computed here
+    independently from the law's nose acceleration; a preload above K_3 M |j_min| is refused."""
+    given = run(spec(FEW + "mass_kg = 0.2\nspring_rate_N_per_mm = 50.0\nspring_preload_N = 300.0\n")).valves["intake"]
+    p = given.dynamics.parameters
+    assert (p.mass, p.spring_rate * MM, p.preload) == pytest.approx((0.2, 50.0, 300.0))
+    assert any("given" in n for n in p.estimates if n.startswith("M ="))
+    sized = run(spec(FEW + "mass_kg = 0.2\nspring_preload_N = 300.0\n")).valves["intake"]
+    law, k = sized.law, sized.rocker_ratio
+    theta = np.linspace(law.start, law.end, 3601)
+    j_min = k * sized.omega_cam**2 * law.derivatives(theta)[2].min()
+    expected = (1.8 * 0.2 * -j_min - 300.0) / (k * law.lift_max)
+    assert sized.dynamics.parameters.spring_rate == pytest.approx(expected, rel=1e-12)
+    with pytest.raises(SpecError, match="spring_preload_N = 5000: above the spring force"):
+        run(spec(FEW + "mass_kg = 0.2\nspring_preload_N = 5000.0\n"))

@@ -207,29 +207,71 @@ def _coil_springs(spring_record, coils):
             for r in recs]
 
 
-def build_train(dyn, valve, law, drive, at):
-    """The train of a valve: (train, DynamicsParameters).  ``drive`` is the drive stage's DriveResults."""
+def nose_acceleration(law, cam_speed, rocker_ratio, points=3601):
+    """Smallest valve acceleration of the lift event j_min = i_k omega_cam^2 min h''(theta) [m/s^2] (at the nose for
+    a symmetric law), on ``points`` evenly spaced angles of the event."""
+    theta = np.linspace(law.start, law.end, points)
+    return float(rocker_ratio * cam_speed**2 * law.derivatives(theta)[2].min())
+
+
+def train_spring(dyn, valve, law, line, mass, cam_speed, at):
+    """Rate K [N/m] and preload F0 [N] of the one-mass train, and the note on where they come from.
+
+    ``spring_rate_N_per_mm`` and ``spring_preload_N`` of [dynamics] replace the designed spring's; a preload given
+    without a rate sizes the rate by Valve-train dynamics article (n.d.), step 4a: K = (K_3 M |j_min| - F0) / h_max at
+    the rated camshaft speed, K_3 = drive.spring_reserve.
+    """
+    from ..dynamics.resonance import spring_rate
+
+    if dyn.spring_rate is None and dyn.spring_preload_N is None:
+        return line.rate, line.preload, (f"K = {line.rate * MM:.5g} N/mm and F0 = {line.preload:.5g} N: the "
+                                         "designed spring(s)")
+    preload = line.preload if dyn.spring_preload_N is None else float(dyn.spring_preload_N)
+    told = "given" if dyn.spring_preload_N is not None else "the designed spring's"
+    if dyn.spring_rate is not None:
+        return float(dyn.spring_rate), preload, (f"K = {dyn.spring_rate * MM:.5g} N/mm given and F0 = {preload:.5g} "
+                                                 f"N {told} ([dynamics])")
+    reserve = valve.drive.spring_reserve
+    lift = valve.rocker_ratio * law.lift_max
+    rate = spring_rate(mass, nose_acceleration(law, cam_speed, valve.rocker_ratio), reserve, preload, lift)
+    if rate <= 0.0:
+        raise SpecError([f"{at}.dynamics.spring_preload_N = {preload:g}: above the spring force K_3 M |j_min| the "
+                         "rated speed needs, so no positive rate follows; give spring_rate_N_per_mm"])
+    return rate, preload, (f"K = {rate * MM:.5g} N/mm = (K_3 M |j_min| - F0) / h_max with K_3 = {reserve:g}, F0 = "
+                           f"{preload:.5g} N given (Valve-train dynamics article (n.d.), step 4a)")
+
+
+def build_train(dyn, valve, law, drive, at, cam_speed=None):
+    """The train of a valve: (train, DynamicsParameters).  ``drive`` is the drive stage's DriveResults.
+
+    ``cam_speed`` (rated camshaft speed [rad/s]) is needed when [dynamics] gives a preload without a rate.
+    """
     k = valve.rocker_ratio
     lash = k * law.ramp_height
     line = drive.lines["chosen"]
-    mass = float(drive.masses.at_valve)
     links, names, notes = drive_links(dyn, valve, k, at)
     c = float(series(*links))
-    notes.insert(0, f"M = {mass:.5g} kg: the reduced mass at the valve of the spring design (masses.at_valve_kg)")
-    notes.append(f"K = {line.rate * MM:.5g} N/mm and F0 = {line.preload:.5g} N: the designed spring(s)")
+    if dyn.mass_kg is None:
+        mass = float(drive.masses.at_valve)
+        notes.insert(0, f"M = {mass:.5g} kg: the reduced mass at the valve of the spring design (masses.at_valve_kg)")
+    else:
+        mass = float(dyn.mass_kg)
+        notes.insert(0, f"M = {mass:.5g} kg given ([dynamics] mass_kg)")
+    rate, preload, spring_note = train_spring(dyn, valve, law, line, mass, cam_speed, at)
+    notes.append(spring_note)
     notes.append(f"lash {lash / MM:.4g} mm at the valve: the clearance the ramp takes up times the rocker ratio")
     kw = dict(damping_ratio=dyn.damping_ratio, seat_stiffness=dyn.seat_stiffness,
               seat_damping_ratio=dyn.seat_damping_ratio)
     nodes = None
     if dyn.model == "1dof":
-        train = one_mass_train(mass, c, line.rate, line.preload, k, lash, **kw)
+        train = one_mass_train(mass, c, rate, preload, k, lash, **kw)
     else:
         train = _multi_train(valve, links, _coil_springs(drive.spring, dyn.coils_per_spring), lash, kw, at)
         net = train.network()
         nodes = {n: float(m) for n, m in zip(net.names, net.mass, strict=True)}
         notes.append(f"coil masses: the designed spring's active coils in {dyn.coils_per_spring} masses per spring, "
                      "half a segment on the valve")
-    params = DynamicsParameters(dyn.model, layout(valve), mass, c, dyn.damping_ratio, line.rate, line.preload, k, lash,
+    params = DynamicsParameters(dyn.model, layout(valve), mass, c, dyn.damping_ratio, rate, preload, k, lash,
                                 dyn.seat_stiffness, dyn.seat_damping_ratio, dyn.revolutions, dyn.step,
                                 dyn.coils_per_spring, links, names, nodes, tuple(notes))
     return train, params
@@ -300,8 +342,8 @@ def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None):
         A multi-mass train without the part masses it needs, or a drive stiffness above that of its parts.
     """
     at = f"valves.{name}"
-    train, params = build_train(dyn, valve, law, drive, at)
     to_cam = cam_per_crank(engine.strokes)
+    train, params = build_train(dyn, valve, law, drive, at, engine.rated_speed * to_cam)
     notes = list(params.estimates)
     if dyn.speed_range is None:
         low, high = (f * engine.rated_speed for f in SPEED_RANGE)
