@@ -223,3 +223,27 @@ def test_train_overrides_replace_the_designed_train():
     assert sized.dynamics.parameters.spring_rate == pytest.approx(expected, rel=1e-12)
     with pytest.raises(SpecError, match="spring_preload_N = 5000: above the spring force"):
         run(spec(FEW + "mass_kg = 0.2\nspring_preload_N = 5000.0\n"))
+
+
+def test_rated_speed_contact_stress_lubrication_and_torque():
+    """At the rated speed, with the simulated cam force F: the Hertz stress 0.418 sqrt(F E (1/rho) / b) with rho =
+    r_heel + h + h'' (Shang Hanji (1988), eqs. (2.5), (2.6), section 3.4), gamma = rho / (r_heel + h) (eq. (2.12)),
+    and the drive torque F dh/dtheta; each recomputed here by hand from the recorded force and the law."""
+    v = run(spec(FEW)).valves["intake"]
+    d = v.dynamics
+    r, law, heel = d.rated, v.law, v.heel_radius
+    a = d.at_rated_speed
+    h, dh, d2h = law.derivatives(r.theta)[:3]
+    rho = heel + h + d2h
+    width, modulus = 16e-3, 2.1e11                   # the built-in example's cam_width_mm and contact_modulus_MPa
+    sigma = 0.418 * np.sqrt(np.clip(r.contact_force, 0, None) * modulus / (width * rho))
+    assert a.max_contact_stress == pytest.approx(sigma.max(), rel=1e-9)
+    assert a.max_contact_stress_angle == r.theta[np.argmax(sigma)]
+    nose = int(np.argmin(np.abs(r.theta)))
+    assert a.lubrication_gamma_nose == pytest.approx(rho[nose] / (heel + h[nose]), rel=1e-12)
+    torque = r.contact_force * dh
+    assert (a.max_drive_torque, a.min_drive_torque, a.mean_drive_torque) == pytest.approx(
+        (torque.max(), torque.min(), torque.mean()), rel=1e-9, abs=1e-9)
+    rec = json.loads(results_json(run(spec(FEW))))["valves"]["intake"]["dynamics"]["at_rated_speed"]
+    assert rec["max_contact_stress_MPa"] == pytest.approx(sigma.max() / 1e6, rel=1e-9)
+    assert {"lubrication_gamma_at_max_stress", "lubrication_poor_film_cam_deg", "max_drive_torque_N_m"} <= set(rec)
