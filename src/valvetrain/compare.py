@@ -51,7 +51,7 @@ DYNAMICS_METRICS = [
     ("harmonic_force_N", "harmonic force F_k, N"),
     ("amplitude_mm", "elastic amplitude Delta, mm"),
     ("distortion_percent", "distortion delta, %"),
-    ("jump_speed_rpm", "jump (float) speed of the one-mass sweep, engine rpm (blank: none in the range)"),
+    ("jump_speed_rpm", "jump (float) speed of the one-mass sweep, engine rpm (empty: none in the range)"),
     ("sweep_speed_range_rpm", "speeds swept, engine rpm"),
 ]
 """Rows of the comparative dynamics (Valve-train dynamics article (n.d.)), with their labels."""
