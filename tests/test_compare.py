@@ -27,6 +27,8 @@ def test_compare_two_files(tmp_path):
     # equal lift and duration: the polydyne intake matches the Kurz lobe's lift; the exhaust valve is flagged
     assert kurz["valve_lift_mm"] == pytest.approx(poly["valve_lift_mm"])
     assert any("exhaust" in n for n in data["notes"])
+    # without a [dynamics] section the default one is swept, 40 speeds over 10 %-125 % of the rated 7000 rpm
+    assert kurz["sweep_speed_range_rpm"] == "700-8750 (40)" and kurz["harmonic_k"] >= 1
     for name in ("lift", "velocity", "acceleration", "jerk"):
         assert (out / "plots" / f"compare_{name}.png").stat().st_size > 0
     assert (out / "compare.csv").read_text().startswith("quantity,")
