@@ -27,6 +27,8 @@ def test_compare_two_files(tmp_path):
     # equal lift and duration: the polydyne intake matches the Kurz lobe's lift; the exhaust valve is flagged
     assert kurz["valve_lift_mm"] == pytest.approx(poly["valve_lift_mm"])
     assert any("exhaust" in n for n in data["notes"])
+    # without a [dynamics] section the default one is swept, 40 speeds over 10 %-125 % of the rated 7000 rpm
+    assert kurz["sweep_speed_range_rpm"] == "700-8750 (40)" and kurz["harmonic_k"] >= 1
     for name in ("lift", "velocity", "acceleration", "jerk"):
         assert (out / "plots" / f"compare_{name}.png").stat().st_size > 0
     assert (out / "compare.csv").read_text().startswith("quantity,")
@@ -64,3 +66,55 @@ def test_files_of_the_same_name_are_all_compared(tmp_path):
     assert result.exit_code == 0, result.output
     entries = json.loads((out / "compare.json").read_text())["entries"]
     assert sorted(entries) == ["v1/engine:intake", "v2/engine (1):intake", "v2/engine (2):intake"]
+
+
+DYNAMICS_EXAMPLE = EXAMPLES / "dynamics-comparison"
+
+
+def test_comparative_dynamics_table_of_the_worked_example(tmp_path):
+    """The worked example of the comparative dynamics of cam profiles (Valve-train dynamics article (n.d.), as
+    corrected in the methods notes): r0 = 20 mm, h_T = 6 mm, half action angle 60 deg, phi1 = 23 deg, i_k = 1.5,
+    n = 5000 rpm, m = 0.2458 kg, C_mgr = 2742.9 N/mm, P0 = 200 N, K3 = 1.8.  Its table, to the digits printed:
+    three-arc C_pr 71.43 N/mm, f0 539 Hz, k 12, F_k 62.3 N, Delta 207 um, delta 2.52 %; polydyne (2, 10, 18, 26,
+    34) 67.30 N/mm, 538 Hz, 12, 84.3 N, 280 um, 3.39 %."""
+    out = tmp_path / "cmp"
+    files = [str(DYNAMICS_EXAMPLE / f"{n}.toml") for n in ("three-arc", "kurz", "polydyne")]
+    result = CliRunner().invoke(main, ["compare", *files, "--out", str(out)])
+    assert result.exit_code == 0, result.output
+    data = json.loads((out / "compare.json").read_text())["entries"]
+    table = {"three-arc:intake": (71.43, 539, 12, 62.3, 207, 2.52), "polydyne:intake": (67.30, 538, 12, 84.3, 280, 3.39)}
+    for label, (c_pr, f0, k, force, amplitude, delta) in table.items():
+        e = data[label]
+        assert e["spring_rate_N_per_mm"] == pytest.approx(c_pr, abs=0.005)
+        assert e["drive_stiffness_N_per_mm"] == pytest.approx(2742.9, abs=0.05)
+        assert e["reduced_mass_kg"] == 0.2458 and e["spring_preload_N"] == 200.0
+        assert e["natural_frequency_Hz"] == pytest.approx(f0, abs=0.5)
+        assert e["harmonic_k"] == k
+        assert e["harmonic_force_N"] == pytest.approx(force, abs=0.05)
+        assert e["amplitude_mm"] * 1e3 == pytest.approx(amplitude, abs=0.5)
+        assert e["distortion_percent"] == pytest.approx(delta, abs=0.005)
+    # equal lift and main event; every design has the simulated jump speed of its short sweep and the drive load
+    for e in data.values():
+        assert e["valve_lift_mm"] == pytest.approx(9.0) and e["duration_cam_deg"] == pytest.approx(120.0)
+        assert e["sweep_speed_range_rpm"] == "1000-7000 (40)"
+        assert e["jump_speed_rpm"] is None or 1000.0 <= e["jump_speed_rpm"] <= 7000.0
+        assert e["max_drive_load_N"] > e["spring_preload_N"]
+    csv = (out / "compare.csv").read_text()
+    assert "natural frequency f0" in csv and "distortion delta, %" in csv
+    assert (out / "plots" / "compare_dynamics.png").stat().st_size > 0
+
+
+def test_max_drive_load_against_a_hand_computation():
+    """F0 + K y + M j: at rest the spring force at full lift, and at speed the positive-acceleration peak,
+    against a direct evaluation on a fine grid (Shang Hanji (1988),
+    eqs. (2.8)-(2.9))."""
+    from valvetrain.compare import max_drive_load
+    from valvetrain.laws import PolydyneLaw
+
+    law = PolydyneLaw(6e-3, np.radians(60), 10)
+    omega = np.pi * 5000 / 60
+    theta = np.linspace(law.start, law.end, 200001)
+    h, _, d2h = law.derivatives(theta)[:3]
+    direct = np.max(200.0 + 70e3 * 1.5 * h + 0.2458 * 1.5 * omega**2 * d2h)
+    assert max_drive_load(law, omega, 1.5, 0.2458, 70e3, 200.0) == pytest.approx(direct, rel=1e-5)
+    assert max_drive_load(law, 0.0, 1.5, 0.2458, 70e3, 200.0) == pytest.approx(200.0 + 70e3 * 9e-3, rel=1e-12)

@@ -195,3 +195,55 @@ def test_sweep_command(tmp_path, monkeypatch):
     assert refused.exit_code == 2 and "notes.txt" in refused.stderr
     bad = CliRunner().invoke(cli.main, ["sweep", str(f), "--out", str(tmp_path / "x"), "--valve", "exhaust"])
     assert bad.exit_code == 2 and "--valve exhaust: no such valve; allowed: intake" in bad.stderr
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("mass_kg = 0.0", "valves.intake.dynamics.mass_kg = 0.0: allowed [0.001, 50] kg"),
+    ("spring_rate_N_per_mm = -1.0", "valves.intake.dynamics.spring_rate_N_per_mm = -1.0: allowed [0, 1e+06] N/mm"),
+    ("model = \"multi\"\nmass_kg = 0.2", "valves.intake.dynamics: mass_kg: a one-mass train's"),
+])
+def test_train_override_messages(text, expected):
+    """The one-mass train given as a whole: bounds, and no override of the multi-mass train."""
+    assert any(p.startswith(expected) for p in problems(text)), problems(text)
+
+
+def test_train_overrides_replace_the_designed_train():
+    """mass_kg, spring_rate_N_per_mm and spring_preload_N are the train's, each stated as given; a preload alone
+    sizes the rate as (K_3 M |j_min| - F0) / h_max (Valve-train dynamics article (n.d.), step 4a), computed here
+    independently from the law's nose acceleration; a preload above K_3 M |j_min| is refused."""
+    given = run(spec(FEW + "mass_kg = 0.2\nspring_rate_N_per_mm = 50.0\nspring_preload_N = 300.0\n")).valves["intake"]
+    p = given.dynamics.parameters
+    assert (p.mass, p.spring_rate * MM, p.preload) == pytest.approx((0.2, 50.0, 300.0))
+    assert any("given" in n for n in p.estimates if n.startswith("M ="))
+    sized = run(spec(FEW + "mass_kg = 0.2\nspring_preload_N = 300.0\n")).valves["intake"]
+    law, k = sized.law, sized.rocker_ratio
+    theta = np.linspace(law.start, law.end, 3601)
+    j_min = k * sized.omega_cam**2 * law.derivatives(theta)[2].min()
+    expected = (1.8 * 0.2 * -j_min - 300.0) / (k * law.lift_max)
+    assert sized.dynamics.parameters.spring_rate == pytest.approx(expected, rel=1e-12)
+    with pytest.raises(SpecError, match="spring_preload_N = 5000: above the spring force"):
+        run(spec(FEW + "mass_kg = 0.2\nspring_preload_N = 5000.0\n"))
+
+
+def test_rated_speed_contact_stress_lubrication_and_torque():
+    """At the rated speed, with the simulated cam force F: the Hertz stress 0.418 sqrt(F E (1/rho) / b) with rho =
+    r_heel + h + h'' (Shang Hanji (1988), eqs. (2.5), (2.6), section 3.4), gamma = rho / (r_heel + h) (eq. (2.12)),
+    and the drive torque F dh/dtheta; each recomputed here by hand from the recorded force and the law."""
+    v = run(spec(FEW)).valves["intake"]
+    d = v.dynamics
+    r, law, heel = d.rated, v.law, v.heel_radius
+    a = d.at_rated_speed
+    h, dh, d2h = law.derivatives(r.theta)[:3]
+    rho = heel + h + d2h
+    width, modulus = 16e-3, 2.1e11                   # the built-in example's cam_width_mm and contact_modulus_MPa
+    sigma = 0.418 * np.sqrt(np.clip(r.contact_force, 0, None) * modulus / (width * rho))
+    assert a.max_contact_stress == pytest.approx(sigma.max(), rel=1e-9)
+    assert a.max_contact_stress_angle == r.theta[np.argmax(sigma)]
+    nose = int(np.argmin(np.abs(r.theta)))
+    assert a.lubrication_gamma_nose == pytest.approx(rho[nose] / (heel + h[nose]), rel=1e-12)
+    torque = r.contact_force * dh
+    assert (a.max_drive_torque, a.min_drive_torque, a.mean_drive_torque) == pytest.approx(
+        (torque.max(), torque.min(), torque.mean()), rel=1e-9, abs=1e-9)
+    rec = json.loads(results_json(run(spec(FEW))))["valves"]["intake"]["dynamics"]["at_rated_speed"]
+    assert rec["max_contact_stress_MPa"] == pytest.approx(sigma.max() / 1e6, rel=1e-9)
+    assert {"lubrication_gamma_at_max_stress", "lubrication_poor_film_cam_deg", "max_drive_torque_N_m"} <= set(rec)

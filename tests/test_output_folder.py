@@ -279,7 +279,8 @@ def test_compare_replaces_a_previous_comparison(tmp_path):
         result = CliRunner().invoke(main, ["compare", str(EXAMPLES / "seed000-appendix-kurz.toml"), "--out", str(out)])
         assert result.exit_code == 0, result.output
     assert written_files(out) == {"compare.csv", "compare.json", "plots/compare_lift.png", "plots/compare_velocity.png",
-                                  "plots/compare_acceleration.png", "plots/compare_jerk.png"}
+                                  "plots/compare_acceleration.png", "plots/compare_jerk.png",
+                                  "plots/compare_dynamics.png"}
     assert hidden(tmp_path, "cmp") == []
 
 

@@ -237,8 +237,10 @@ def validate(file):
 @click.option("--force", is_flag=True, help=FORCE_HELP)
 def compare(files, out, force):
     """Compare the cams of every valve of FILES side by side (time-area, fullness, kinematics, curvature,
-    contact stress, required spring); writes compare.csv, compare.json and overlaid plots."""
-    from .compare import METRICS, write_comparison
+    contact stress, required spring) and their trains' dynamics (drive load, spring, reduced mass, drive stiffness,
+    natural frequency, resonant harmonic, distortion, and the jump speed of a 40-speed one-mass sweep over each
+    valve's [dynamics] range); writes compare.csv, compare.json and overlaid plots."""
+    from .compare import shown_metrics, with_dynamics, write_comparison
 
     specs = [_load(f) for f in files]
     if not any(spec.valves for spec in specs):
@@ -247,16 +249,18 @@ def compare(files, out, force):
     inputs = _check_out(out, files, specs, force)
     designs = {}
     for spec, label in zip(specs, _file_labels(files), strict=True):
-        for name, v in _design(spec).valves.items():
+        for name, v in _design(with_dynamics(spec)).valves.items():
             designs[f"{label}:{name}" if len(files) > 1 else name] = v
     try:
         rows, notes = write_comparison(designs, out, inputs, force)
     except OutFolderError as err:
         _fail_out(err)
-    width = max(len(label) for _, label in METRICS)
+    metrics = shown_metrics(rows)
+    width = max(len(label) for _, label in metrics)
     click.echo(" " * width + "".join(f"  {lab[:18]:>18}" for lab in rows))
-    for key, label in METRICS:
-        cells = "".join(f"  {r[key]:>18}" if isinstance(r[key], str) else f"  {r[key]:>18.6g}" for r in rows.values())
+    for key, label in metrics:
+        cells = "".join(f"  {r.get(key, ''):>18}" if isinstance(r.get(key, ""), str) else f"  {r[key]:>18.6g}"
+                        for r in rows.values())
         click.echo(f"{label:<{width}}{cells}")
     for n in notes:
         click.echo(f"note: {n}")

@@ -7,11 +7,17 @@ duration (Valve-train dynamics article (n.d.) compares its three profiles so); t
 :func:`comparison` flags entries that differ by more than 1 % in lift or by more than 1 deg in
 the duration at 1 mm valve lift (a checking height that every law, measured ones included,
 defines the same way).
+
+The dynamics rows (Valve-train dynamics article (n.d.): the comparative dynamics of cam profiles) put each
+valve's elastic train beside its cam: the maximum drive load, the spring, the reduced mass, the drive
+stiffness, the natural frequency, the resonant harmonic k and the distortion delta at the rated speed,
+and the jump speed of a short one-mass sweep (:data:`COMPARE_SPEEDS` speeds over the valve's
+``[dynamics]`` range, or the default range).  :func:`with_dynamics` sets that sweep up.
 """
 
 import numpy as np
 
-from .units import MM, rad_to_deg
+from .units import MM, rad_to_deg, rpm_to_rad_s
 
 METRICS = [
     ("law", "law"),
@@ -31,7 +37,27 @@ METRICS = [
     ("required_spring_max_N", "required spring force at full lift, N"),
     ("required_spring_preload_N", "required preload, N"),
 ]
-"""Rows of the comparison, with their labels."""
+"""Rows of the comparison of the cams, with their labels."""
+
+DYNAMICS_METRICS = [
+    ("max_drive_load_N", "max drive load F0 + K y + M j at the rated speed (kinetostatic, at the valve), N"),
+    ("max_dynamic_contact_force_N", "max cam contact force at the rated speed (simulated, at the cam), N"),
+    ("spring_preload_N", "spring preload F0 of the train, N"),
+    ("spring_rate_N_per_mm", "spring rate K of the train, N/mm"),
+    ("reduced_mass_kg", "reduced mass M at the valve, kg"),
+    ("drive_stiffness_N_per_mm", "drive stiffness c at the valve, N/mm"),
+    ("natural_frequency_Hz", "natural frequency f0 = sqrt((K + c)/M) / 2 pi, Hz"),
+    ("harmonic_k", "resonant harmonic k at the rated speed"),
+    ("harmonic_force_N", "harmonic force F_k, N"),
+    ("amplitude_mm", "elastic amplitude Delta, mm"),
+    ("distortion_percent", "distortion delta, %"),
+    ("jump_speed_rpm", "jump (float) speed of the one-mass sweep, engine rpm (empty: none in the range)"),
+    ("sweep_speed_range_rpm", "speeds swept, engine rpm"),
+]
+"""Rows of the comparative dynamics (Valve-train dynamics article (n.d.)), with their labels."""
+
+COMPARE_SPEEDS = 40
+"""Speeds of the one-mass sweep of each compared valve (fewer if its [dynamics] section asks fewer)."""
 
 
 def duration_at(valve, height):
@@ -65,6 +91,77 @@ def entry(valve):
     }
 
 
+def with_dynamics(spec, speeds=COMPARE_SPEEDS):
+    """The specification with every valve's ``[dynamics]`` section (or the default one) turned into a short
+    one-mass sweep of at most ``speeds`` speeds, for the dynamics rows of the comparison."""
+    from .specification.models import Dynamics
+
+    valves = {}
+    for name, v in spec.valves.items():
+        dyn = v.dynamics if v.dynamics is not None else Dynamics()
+        dyn = dyn.model_copy(update={"model": "1dof", "speeds": min(dyn.speeds, speeds)})
+        valves[name] = v.model_copy(update={"dynamics": dyn})
+    return spec.model_copy(update={"valves": valves})
+
+
+def max_drive_load(law, cam_speed, rocker_ratio, mass, rate, preload, points=3601):
+    """Largest kinetostatic load of the drive at the valve over the event, max(F0 + K y + M j) [N].
+
+    Parameters
+    ----------
+    law : valvetrain.laws.base.LiftLaw
+        The cam (tappet lift h, rad from the nose).
+    cam_speed : float
+        Camshaft speed [rad/s].
+    rocker_ratio : float
+        i_k; the valve lift is y = i_k h and its acceleration j = i_k omega^2 h''.
+    mass, rate, preload : float
+        Reduced mass M [kg], spring rate K [N/m] and preload F0 [N] at the valve.
+
+    Notes
+    -----
+    The spring force plus the inertia force of the rigid train (Shang Hanji (1988), eqs. (2.8)-(2.9)); the
+    largest value falls in the positive-acceleration phase, the load the article compares the profiles by
+    (Valve-train dynamics article (n.d.), aim of the work).
+
+    Examples
+    --------
+    At rest the load is the spring force at full lift, F0 + K y_max:
+
+    >>> from valvetrain.laws import PolydyneLaw
+    >>> law = PolydyneLaw(6e-3, 1.0, 10)
+    >>> round(max_drive_load(law, 0.0, 1.5, 0.25, 70e3, 200.0), 6)
+    830.0
+    """
+    theta = np.linspace(law.start, law.end, points)
+    h, _, d2h = law.derivatives(theta)[:3]
+    return float(np.max(preload + rate * rocker_ratio * h + mass * rocker_ratio * cam_speed**2 * d2h))
+
+
+def dynamics_entry(valve):
+    """The comparative-dynamics figures of one designed valve whose ``dynamics`` is set (SI in, display units out)."""
+    d = valve.dynamics
+    p = d.parameters
+    r = d.resonance
+    return {
+        "max_drive_load_N": max_drive_load(valve.law, valve.omega_cam, p.rocker_ratio, p.mass, p.spring_rate,
+                                           p.preload),
+        "max_dynamic_contact_force_N": d.at_rated_speed.max_contact_force,
+        "spring_preload_N": p.preload,
+        "spring_rate_N_per_mm": p.spring_rate * MM,
+        "reduced_mass_kg": p.mass,
+        "drive_stiffness_N_per_mm": p.drive_stiffness * MM,
+        "natural_frequency_Hz": r.natural_frequency,
+        "harmonic_k": int(r.order),
+        "harmonic_force_N": r.force,
+        "amplitude_mm": r.amplitude / MM,
+        "distortion_percent": r.distortion,
+        "jump_speed_rpm": d.jump_speed / rpm_to_rad_s(1.0),
+        "sweep_speed_range_rpm": f"{d.speed_range[0] / rpm_to_rad_s(1.0):.0f}-{d.speed_range[1] / rpm_to_rad_s(1.0):.0f}"
+                                 f" ({d.speeds})",
+    }
+
+
 def comparison(designs):
     """Compare designed valves.
 
@@ -79,7 +176,7 @@ def comparison(designs):
         ``label -> entry`` and notes on entries that are not at equal lift and duration
         with the first one.
     """
-    rows = {label: entry(v) for label, v in designs.items()}
+    rows = {label: entry(v) | (dynamics_entry(v) if v.dynamics is not None else {}) for label, v in designs.items()}
     notes = []
     first_label, first = next(iter(rows.items()))
     for label, row in rows.items():
@@ -106,9 +203,9 @@ def write_comparison(designs, out, inputs=(), force=False):
     with atomic_folder(out, inputs, force) as tmp:
         (tmp / "plots").mkdir()
         labels = list(rows)
-        table = {"quantity": [label for _, label in METRICS]}
-        table.update({lab: [rows[lab][key] if isinstance(rows[lab][key], str) else float(rows[lab][key])
-                            for key, _ in METRICS] for lab in labels})
+        metrics = shown_metrics(rows)
+        table = {"quantity": [label for _, label in metrics]}
+        table.update({lab: [_cell(rows[lab].get(key, np.nan)) for key, _ in metrics] for lab in labels})
         write_csv(tmp / "compare.csv", table)
         (tmp / "compare.json").write_text(json_text({"entries": rows, "notes": notes}), encoding="utf-8")
         quantities = (("lift", 1.0 / MM, "tappet lift, mm"), ("velocity", 1.0, "tappet velocity, m/s"),
@@ -126,4 +223,37 @@ def write_comparison(designs, out, inputs=(), force=False):
             ax.legend(fontsize=8)
             fig.tight_layout()
             fig.savefig(tmp / "plots" / f"compare_{name}.png", dpi=110)
+        with_dyn = {label: v for label, v in designs.items() if v.dynamics is not None}
+        if with_dyn:
+            _dynamics_plot(with_dyn, tmp / "plots" / "compare_dynamics.png")
     return rows, notes
+
+
+def shown_metrics(rows):
+    """The rows of :data:`METRICS` and of :data:`DYNAMICS_METRICS` that some entry has."""
+    return METRICS + [(key, label) for key, label in DYNAMICS_METRICS if any(key in r for r in rows.values())]
+
+
+def _cell(value):
+    return value if isinstance(value, str) else float(value)
+
+
+def _dynamics_plot(designs, path):
+    """Smallest cam contact force and seating velocity against the engine speed, one line per valve."""
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=(8, 6.5))
+    top, bottom = fig.subplots(2, 1, sharex=True)
+    for label, v in designs.items():
+        t = v.dynamics.per_speed
+        rpm = np.asarray(t.speed) / rpm_to_rad_s(1.0)
+        top.plot(rpm, t.min_contact_force, marker=".", label=f"{label} ({v.law.name})")
+        bottom.plot(rpm, t.seating_velocity, marker=".", label=f"{label} ({v.law.name})")
+    top.set_ylabel("min cam contact force, N")
+    bottom.set_ylabel("seating velocity, m/s")
+    bottom.set_xlabel("engine speed, rpm")
+    for ax in (top, bottom):
+        ax.grid(alpha=0.3)
+    top.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)

@@ -94,6 +94,25 @@ class SpeedRecord:
                                           "the valve motion", omit_none=True)
     clash_margin: Optional[float] = quantity("coil_clash_margin_mm", "mm", "multi: smallest gap between coils "
                                              "(negative: clash)", omit_none=True)
+    max_contact_stress: Optional[float] = quantity("max_contact_stress_MPa", "MPa", "rated speed: largest Hertz "
+                                                   "stress of the cam contact under the simulated force (needs "
+                                                   "parts.cam_width_mm)", default=None, omit_none=True)
+    max_contact_stress_angle: Optional[float] = quantity("max_contact_stress_angle_cam_deg", "cam deg", "where it "
+                                                         "occurs, from the nose", default=None, omit_none=True)
+    lubrication_gamma_nose: Optional[float] = quantity("lubrication_gamma_nose", label="rated speed, flat follower: "
+                                                       "gamma = rho / (R0 + h) at the nose (0.15-0.25 recommended)",
+                                                       default=None, omit_none=True)
+    lubrication_gamma_at_max_stress: Optional[float] = quantity("lubrication_gamma_at_max_stress", label="gamma "
+                                                                "where the dynamic stress is largest", default=None, omit_none=True)
+    lubrication_near_half: Optional[float] = quantity("lubrication_poor_film_cam_deg", "cam deg", "cam angle over "
+                                                      "which the loaded contact has 0.4 <= gamma <= 0.6 (poor film "
+                                                      "near gamma = 0.5; keep it short)", default=None, omit_none=True)
+    max_drive_torque: Optional[float] = quantity("max_drive_torque_N_m", "N m", "rated speed: largest camshaft "
+                                                 "drive torque of this cam, F dh/dtheta", default=None, omit_none=True)
+    min_drive_torque: Optional[float] = quantity("min_drive_torque_N_m", "N m", "smallest (negative: the closing "
+                                                 "flank drives the camshaft)", default=None, omit_none=True)
+    mean_drive_torque: Optional[float] = quantity("mean_drive_torque_N_m", "N m", "mean over the revolution (the "
+                                                  "damping losses)", default=None, omit_none=True)
 
 
 @dataclass(frozen=True)
@@ -207,29 +226,71 @@ def _coil_springs(spring_record, coils):
             for r in recs]
 
 
-def build_train(dyn, valve, law, drive, at):
-    """The train of a valve: (train, DynamicsParameters).  ``drive`` is the drive stage's DriveResults."""
+def nose_acceleration(law, cam_speed, rocker_ratio, points=3601):
+    """Smallest valve acceleration of the lift event j_min = i_k omega_cam^2 min h''(theta) [m/s^2] (at the nose for
+    a symmetric law), on ``points`` evenly spaced angles of the event."""
+    theta = np.linspace(law.start, law.end, points)
+    return float(rocker_ratio * cam_speed**2 * law.derivatives(theta)[2].min())
+
+
+def train_spring(dyn, valve, law, line, mass, cam_speed, at):
+    """Rate K [N/m] and preload F0 [N] of the one-mass train, and the note on where they come from.
+
+    ``spring_rate_N_per_mm`` and ``spring_preload_N`` of [dynamics] replace the designed spring's; a preload given
+    without a rate sizes the rate by Valve-train dynamics article (n.d.), step 4a: K = (K_3 M |j_min| - F0) / h_max at
+    the rated camshaft speed, K_3 = drive.spring_reserve.
+    """
+    from ..dynamics.resonance import spring_rate
+
+    if dyn.spring_rate is None and dyn.spring_preload_N is None:
+        return line.rate, line.preload, (f"K = {line.rate * MM:.5g} N/mm and F0 = {line.preload:.5g} N: the "
+                                         "designed spring(s)")
+    preload = line.preload if dyn.spring_preload_N is None else float(dyn.spring_preload_N)
+    told = "given" if dyn.spring_preload_N is not None else "the designed spring's"
+    if dyn.spring_rate is not None:
+        return float(dyn.spring_rate), preload, (f"K = {dyn.spring_rate * MM:.5g} N/mm given and F0 = {preload:.5g} "
+                                                 f"N {told} ([dynamics])")
+    reserve = valve.drive.spring_reserve
+    lift = valve.rocker_ratio * law.lift_max
+    rate = spring_rate(mass, nose_acceleration(law, cam_speed, valve.rocker_ratio), reserve, preload, lift)
+    if rate <= 0.0:
+        raise SpecError([f"{at}.dynamics.spring_preload_N = {preload:g}: above the spring force K_3 M |j_min| the "
+                         "rated speed needs, so no positive rate follows; give spring_rate_N_per_mm"])
+    return rate, preload, (f"K = {rate * MM:.5g} N/mm = (K_3 M |j_min| - F0) / h_max with K_3 = {reserve:g}, F0 = "
+                           f"{preload:.5g} N given (Valve-train dynamics article (n.d.), step 4a)")
+
+
+def build_train(dyn, valve, law, drive, at, cam_speed=None):
+    """The train of a valve: (train, DynamicsParameters).  ``drive`` is the drive stage's DriveResults.
+
+    ``cam_speed`` (rated camshaft speed [rad/s]) is needed when [dynamics] gives a preload without a rate.
+    """
     k = valve.rocker_ratio
     lash = k * law.ramp_height
     line = drive.lines["chosen"]
-    mass = float(drive.masses.at_valve)
     links, names, notes = drive_links(dyn, valve, k, at)
     c = float(series(*links))
-    notes.insert(0, f"M = {mass:.5g} kg: the reduced mass at the valve of the spring design (masses.at_valve_kg)")
-    notes.append(f"K = {line.rate * MM:.5g} N/mm and F0 = {line.preload:.5g} N: the designed spring(s)")
+    if dyn.mass_kg is None:
+        mass = float(drive.masses.at_valve)
+        notes.insert(0, f"M = {mass:.5g} kg: the reduced mass at the valve of the spring design (masses.at_valve_kg)")
+    else:
+        mass = float(dyn.mass_kg)
+        notes.insert(0, f"M = {mass:.5g} kg given ([dynamics] mass_kg)")
+    rate, preload, spring_note = train_spring(dyn, valve, law, line, mass, cam_speed, at)
+    notes.append(spring_note)
     notes.append(f"lash {lash / MM:.4g} mm at the valve: the clearance the ramp takes up times the rocker ratio")
     kw = dict(damping_ratio=dyn.damping_ratio, seat_stiffness=dyn.seat_stiffness,
               seat_damping_ratio=dyn.seat_damping_ratio)
     nodes = None
     if dyn.model == "1dof":
-        train = one_mass_train(mass, c, line.rate, line.preload, k, lash, **kw)
+        train = one_mass_train(mass, c, rate, preload, k, lash, **kw)
     else:
         train = _multi_train(valve, links, _coil_springs(drive.spring, dyn.coils_per_spring), lash, kw, at)
         net = train.network()
         nodes = {n: float(m) for n, m in zip(net.names, net.mass, strict=True)}
         notes.append(f"coil masses: the designed spring's active coils in {dyn.coils_per_spring} masses per spring, "
                      "half a segment on the valve")
-    params = DynamicsParameters(dyn.model, layout(valve), mass, c, dyn.damping_ratio, line.rate, line.preload, k, lash,
+    params = DynamicsParameters(dyn.model, layout(valve), mass, c, dyn.damping_ratio, rate, preload, k, lash,
                                 dyn.seat_stiffness, dyn.seat_damping_ratio, dyn.revolutions, dyn.step,
                                 dyn.coils_per_spring, links, names, nodes, tuple(notes))
     return train, params
@@ -274,7 +335,62 @@ def speed_record(r, speed, epsilon):
                        tuple(tuple(float(a) for a in pair) for pair in r.jump_intervals), surge, clash)
 
 
-def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None):
+POOR_FILM_BAND = (0.4, 0.6)
+"""Band of the lubrication characteristic gamma around 0.5 where (2.12) gives no film (Shang Hanji (1988), eq. (2.12):
+h_min vanishes at gamma = 0.5); the width of the band is this package's choice."""
+
+
+def rated_contact(r, law, heel_radius, roller_radius, width, modulus):
+    """The cam contact at one speed under the simulated force: Hertz stress, lubrication characteristic, drive torque.
+
+    Parameters
+    ----------
+    r : valvetrain.dynamics.sweep.SpeedResult
+    law : LiftLaw
+    heel_radius : float
+        Circle the law's lift starts from [m].
+    roller_radius : float or None
+        [m]; None for a flat follower (then the lubrication characteristic too).
+    width : float or None
+        Cam width [m]; None: no stress.
+    modulus : float
+        Effective contact modulus E_m [Pa].
+
+    Returns
+    -------
+    dict
+        Fields of :class:`SpeedRecord` (SI): stress [Pa] and its angle [rad], gamma at the nose, at the largest stress,
+        the angle [rad] of loaded contact with gamma in :data:`POOR_FILM_BAND`, and the largest, smallest and mean
+        drive torque [N m].
+
+    References
+    ----------
+    Shang Hanji (1988), eqs. (2.5), (2.12) and section 3.4 (the dynamic force); the torque F dh/dtheta from the power
+    balance of a frictionless follower.
+    """
+    from ..dynamics.contact import dynamic_contact_stress, lubrication_characteristic
+
+    theta, force = r.theta, r.contact_force
+    out = {"max_drive_torque": float(r.torque.max()), "min_drive_torque": float(r.torque.min()),
+           "mean_drive_torque": float(r.torque.mean())}
+    j = None
+    if width is not None:
+        sigma = dynamic_contact_stress(law, theta, force, heel_radius, width, modulus, roller_radius)
+        j = int(np.argmax(sigma))
+        out.update(max_contact_stress=float(sigma[j]), max_contact_stress_angle=float(theta[j]))
+    if roller_radius is None:
+        gamma = lubrication_characteristic(law, theta, heel_radius)
+        loaded = (force > 0.0) & (law.lift(theta) > 0.0)
+        poor = loaded & (gamma >= POOR_FILM_BAND[0]) & (gamma <= POOR_FILM_BAND[1])
+        step = float(theta[1] - theta[0])
+        out.update(lubrication_gamma_nose=float(gamma[int(np.argmin(np.abs(theta)))]),
+                   lubrication_near_half=float(poor.sum() * step))
+        if j is not None:
+            out["lubrication_gamma_at_max_stress"] = float(gamma[j])
+    return out
+
+
+def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, cam=None):
     """Sweep the elastic train of a valve over its speed range and simulate the rated speed.
 
     Parameters
@@ -289,6 +405,9 @@ def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None):
         The valve's name (the CSV table's name and the messages' keys).
     progress : callable, optional
         ``progress(done, total)`` after each chunk of speeds.
+    cam : CamResult, optional
+        The law stage (heel and roller radii): with it the rated speed has the dynamic contact stress, the
+        lubrication characteristic and the drive torque.
 
     Returns
     -------
@@ -300,8 +419,8 @@ def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None):
         A multi-mass train without the part masses it needs, or a drive stiffness above that of its parts.
     """
     at = f"valves.{name}"
-    train, params = build_train(dyn, valve, law, drive, at)
     to_cam = cam_per_crank(engine.strokes)
+    train, params = build_train(dyn, valve, law, drive, at, engine.rated_speed * to_cam)
     notes = list(params.estimates)
     if dyn.speed_range is None:
         low, high = (f * engine.rated_speed for f in SPEED_RANGE)
@@ -332,11 +451,16 @@ def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None):
         return float(cam_speed / to_cam)
 
     eps_rated = float(perturbation_parameter(m, c, kk, engine.rated_speed * to_cam))
+    rated_record = speed_record(rated, engine.rated_speed, eps_rated)
+    if cam is not None:
+        roller = cam.roller_radius if cam.follower == "roller" else None
+        rated_record = replace(rated_record, **rated_contact(rated, law, cam.heel_radius, roller, valve.parts.cam_width,
+                                                             valve.parts.contact_modulus))
     out = DynamicsResult(
         dyn.model, params, (float(low), float(high)), int(dyn.speeds), crank(head["jump_speed"]),
         crank(head["bounce_onset_speed"]), head["max_seating_velocity"], crank(head["max_seating_velocity_speed"]),
         crank(head["coil_clash_speed"]) if dyn.model == "multi" else None, eps_rated,
-        float(np.sqrt((kk + c) / m) / (2 * np.pi)), speed_record(rated, engine.rated_speed, eps_rated), reson, table,
+        float(np.sqrt((kk + c) / m) / (2 * np.pi)), rated_record, reson, table,
         f"tables/{name}_dynamics.csv", result, tuple(per), rated)
     return out, dynamics_checks(out, engine)
 
@@ -390,5 +514,5 @@ def sweep_columns(d):
 
 
 __all__ = ["CHECK_QUANTITIES", "DynamicsParameters", "DynamicsResult", "PerSpeed", "ResonanceRecord", "SWEEP_COLUMNS",
-           "SpeedRecord", "build_train", "drive_links", "dynamics_checks", "dynamics_stage", "speed_record",
+           "SpeedRecord", "build_train", "drive_links", "dynamics_checks", "dynamics_stage", "rated_contact", "speed_record",
            "sweep_columns"]

@@ -614,7 +614,7 @@ def design_valve(name, valve, engine, gas, output, law=None, progress=None):
         found.append(clearance_check(valve.kind, clearance.min_gap, clearance.angle))
     dynamics = None
     if valve.dynamics is not None:
-        dynamics, dynamics_found = dynamics_stage(valve.dynamics, valve, engine, cam.law, drive, name, progress)
+        dynamics, dynamics_found = dynamics_stage(valve.dynamics, valve, engine, cam.law, drive, name, progress, cam)
         found += dynamics_found
     return ValveDesign(name, valve.kind, valve.count, cam, flow_result, profile, clearance, records, drive,
                        [c.named(name) for c in found], dynamics)

@@ -75,7 +75,9 @@ TEXT = {
                       "revolutions, the last one recorded. Jump: the cam force is zero while the cam lifts the open "
                       "valve; bounce: the valve leaves its seat again after the first seating. Resonance: the "
                       "harmonic k of the cam excitation nearest below the natural frequency, its elastic amplitude "
-                      "and the distortion δ of the valve motion",
+                      "and the distortion δ of the valve motion. At the rated speed the Hertz stress (Shang Hanji "
+                      "(1988), eq. (2.5)) and the lubrication characteristic γ (eq. (2.12)) are taken with the "
+                      "simulated cam force (section 3.4), and the camshaft drive torque of the cam is F dh/dφ",
         "dyn_lift_error": "valve lift − rigid lift, mm", "dyn_contact_force": "cam contact force, N",
         "dyn_zero_is_jump": "0: the follower leaves the cam", "dyn_seating_velocity": "|seating velocity|, m/s",
         "dyn_bounce": "bounce, mm", "dyn_min_force": "min contact force, N", "dyn_jump_speed": "jump (float) speed",
@@ -101,6 +103,14 @@ TEXT = {
             "coil_clash_margin_mm": "min coil gap, mm", "harmonic_k": "resonant harmonic k",
             "harmonic_force_N": "harmonic force F_k, N", "amplitude_mm": "elastic amplitude Δ, mm",
             "distortion_percent": "distortion δ, %",
+            "max_contact_stress_MPa": "max cam contact stress under the dynamic force, MPa",
+            "max_contact_stress_angle_cam_deg": "where, cam deg from the nose",
+            "lubrication_gamma_nose": "lubrication characteristic γ = ρ / (R0 + h) at the nose",
+            "lubrication_gamma_at_max_stress": "γ at the max dynamic stress",
+            "lubrication_poor_film_cam_deg": "loaded contact with 0.4 ≤ γ ≤ 0.6 (poor film), cam deg",
+            "max_drive_torque_N_m": "max camshaft drive torque of the cam, N·m",
+            "min_drive_torque_N_m": "min camshaft drive torque of the cam, N·m",
+            "mean_drive_torque_N_m": "mean camshaft drive torque of the cam, N·m",
         },
     },
     "ru": {
@@ -192,7 +202,10 @@ TEXT = {
                       "частота от покоя за {revolutions} оборота распредвала, записан последний. Отрыв: сила на "
                       "кулачке равна нулю, когда кулачок поднимает открытый клапан; отскок: клапан снова отходит от "
                       "седла после первой посадки. Резонанс: гармоника k возбуждения от кулачка, ближайшая снизу к "
-                      "собственной частоте, её упругая амплитуда и искажение δ движения клапана",
+                      "собственной частоте, её упругая амплитуда и искажение δ движения клапана. При номинальной "
+                      "частоте контактное напряжение по Герцу (Shang Hanji (1988), ф. (2.5)) и характеристика смазки "
+                      "γ (ф. (2.12)) вычисляются по силе из динамического расчёта (раздел 3.4), момент привода "
+                      "распределительного вала от кулачка равен F dh/dφ",
         "dyn_lift_error": "подъём клапана − кинематический подъём, мм", "dyn_contact_force": "сила в контакте кулачка, Н",
         "dyn_zero_is_jump": "0: толкатель отрывается от кулачка", "dyn_seating_velocity": "|скорость посадки|, м/с",
         "dyn_bounce": "отскок, мм", "dyn_min_force": "мин. сила в контакте, Н", "dyn_jump_speed": "частота отрыва",
@@ -222,6 +235,14 @@ TEXT = {
             "coil_clash_margin_mm": "мин. зазор между витками, мм", "harmonic_k": "резонансная гармоника k",
             "harmonic_force_N": "сила гармоники F_k, Н", "amplitude_mm": "упругая амплитуда Δ, мм",
             "distortion_percent": "искажение δ, %",
+            "max_contact_stress_MPa": "наибольшее контактное напряжение кулачка при динамической силе, МПа",
+            "max_contact_stress_angle_cam_deg": "при угле, ° ПРВ от вершины",
+            "lubrication_gamma_nose": "характеристика смазки γ = ρ / (R0 + h) на вершине",
+            "lubrication_gamma_at_max_stress": "γ при наибольшем динамическом напряжении",
+            "lubrication_poor_film_cam_deg": "нагруженный контакт при 0,4 ≤ γ ≤ 0,6 (плохая плёнка), ° ПРВ",
+            "max_drive_torque_N_m": "наибольший момент привода распределительного вала от кулачка, Н·м",
+            "min_drive_torque_N_m": "наименьший момент привода распределительного вала от кулачка, Н·м",
+            "mean_drive_torque_N_m": "средний момент привода распределительного вала от кулачка, Н·м",
         },
     },
 }

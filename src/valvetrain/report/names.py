@@ -435,6 +435,15 @@ SKELETONS = {
     "M = {} kg: the reduced mass at the valve of the spring design (masses.at_valve_kg)":
         "M = {} кг: приведённая к клапану масса из расчёта пружины",
     "K = {} N/mm and F{} = {} N: the designed spring(s)": "K = {} Н/мм и F{} = {} Н: рассчитанная пружина (пружины)",
+    "M = {} kg given ([dynamics] mass_kg)": "M = {} кг задана в исходных данных динамики",
+    "K = {} N/mm given and F{} = {} N given ([dynamics])":
+        "K = {} Н/мм и F{} = {} Н заданы в исходных данных динамики",
+    "K = {} N/mm given and F{} = {} N the designed spring's ([dynamics])":
+        "K = {} Н/мм задана в исходных данных динамики, F{} = {} Н рассчитанной пружины",
+    "K = {} N/mm = (K_{} M |j_min| - F{}) / h_max with K_{} = {}, F{} = {} N given (Valve-train dynamics article "
+    "(n.d.), step {}a)":
+        "K = {} Н/мм = (K_{} M |j_min| − F{}) / h_max при K_{} = {}, F{} = {} Н задана (Valve-train dynamics article "
+        "(n.d.), этап {}а)",
     "lash {} mm at the valve: the clearance the ramp takes up times the rocker ratio":
         "зазор {} мм на клапане: зазор, выбираемый участком сбега, умноженный на передаточное отношение коромысла",
     "coil masses: the designed spring's active coils in {} masses per spring, half a segment on the valve":

@@ -204,7 +204,11 @@ class Dynamics(_Model):
     """[valves.NAME.dynamics]: the elastic valve train over a speed range (Shang Hanji 1988, ch. 3).
 
     A key left out is estimated from what the specification has (the reduced mass, the designed
-    spring, the part geometry of [parts]); results.json states each estimate."""
+    spring, the part geometry of [parts]); results.json states each estimate.  ``mass_kg``,
+    ``spring_rate_N_per_mm`` and ``spring_preload_N`` replace the reduced mass and the designed spring in
+    the dynamics alone (a train given as a whole, e.g. a published worked example); a preload given
+    without a rate sizes the rate as Valve-train dynamics article (n.d.), step 4a:
+    (K_3 M |j_min| - P_0) / h_max with K_3 = drive.spring_reserve at the rated speed."""
 
     model: Literal["1dof", "multi"] = "1dof"
     drive_stiffness_N_per_mm: Optional[_bounded(100.0, 1e6, "N/mm", low_open=False)] = None
@@ -216,6 +220,9 @@ class Dynamics(_Model):
     revolutions: Annotated[int, Field(ge=1, le=20)] = 3
     coils_per_spring: Annotated[int, Field(ge=0, le=64)] = 8
     step_cam_deg: _bounded(0.01, 2.0, "deg", low_open=False) = 0.1
+    mass_kg: Optional[_bounded(0.001, 50.0, "kg", low_open=False)] = None
+    spring_rate_N_per_mm: Optional[_bounded(0.0, 1e6, "N/mm", low_open=False)] = None
+    spring_preload_N: Optional[_bounded(0.0, 1e6, "N", low_open=False)] = None
 
     @model_validator(mode="after")
     def _range_and_step(self):
@@ -227,6 +234,10 @@ class Dynamics(_Model):
         if abs(n - round(n)) > 1e-6:
             problems.append(f"step_cam_deg = {self.step_cam_deg:g} must divide the 360 deg camshaft revolution into "
                             "whole steps (0.05, 0.1, 0.2, 0.25, 0.5, 1, ...)")
+        given = [k for k in ("mass_kg", "spring_rate_N_per_mm", "spring_preload_N") if getattr(self, k) is not None]
+        if given and self.model == "multi":
+            problems.append(f"{', '.join(given)}: a one-mass train's (model = \"1dof\"); the multi-mass train takes "
+                            "its masses from [drive.masses] and its springs from the spring design")
         if problems:
             raise ValueError("; ".join(problems))
         return self
