@@ -48,18 +48,18 @@ def write_dxf(path, valve):
     The file is reproducible: ezdxf's fixed metadata (creation date, GUIDs) replaces the clock
     and random identifiers, so the same design writes the same bytes.
     """
-    _save_dxf(_dxf_document(valve), path)
+    _save_dxf(lambda: _dxf_document(valve), path)
 
 
-def _save_dxf(doc, path):
-    """Save a DXF document with ezdxf's fixed metadata (creation date, GUIDs), so the same design writes the same
-    bytes."""
+def _save_dxf(build, path):
+    """Build a DXF document (``build()``) and save it with ezdxf's fixed metadata (creation date, GUIDs) in place
+    from its creation on, so the same design writes the same bytes."""
     import ezdxf
 
     fixed = ezdxf.options.write_fixed_meta_data_for_testing
     ezdxf.options.write_fixed_meta_data_for_testing = True
     try:
-        doc.saveas(path)
+        build().saveas(path)
     finally:
         ezdxf.options.write_fixed_meta_data_for_testing = fixed
 
@@ -70,40 +70,39 @@ def write_master_dxf(path, grinding):
     Layers: ``MASTER_PROFILE`` (closed polyline of the master contour), ``MASTER_BASE_CIRCLE`` (its heel
     circle), ``AXES`` (centre lines; +y is the direction of the cam nose, the master turns with the cam).
     """
+    _save_dxf(lambda: _master_document(grinding), path)
+
+
+def _profile_document(contour, heel, layers):
+    """A DXF document in mm with ``layers`` (name, colour), the closed ``contour`` (2, n) [m] on the first layer,
+    the heel circle of radius ``heel`` [m] on the second and centre lines on ``AXES``; and its points [mm]."""
     import ezdxf
     from ezdxf import units
 
     doc = ezdxf.new("R2010")
     doc.units = units.MM
-    for layer, color in (("MASTER_PROFILE", 7), ("MASTER_BASE_CIRCLE", 3), ("AXES", 5)):
-        doc.layers.add(layer, color=color)
+    for name, color in layers:
+        doc.layers.add(name, color=color)
     msp = doc.modelspace()
-    pts = (grinding.master_contour / MM).T
-    msp.add_lwpolyline([tuple(p) for p in pts], close=True, dxfattribs={"layer": "MASTER_PROFILE"})
-    msp.add_circle((0.0, 0.0), grinding.master_base_radius / MM, dxfattribs={"layer": "MASTER_BASE_CIRCLE"})
+    pts = (contour / MM).T
+    msp.add_lwpolyline([tuple(p) for p in pts], close=True, dxfattribs={"layer": layers[0][0]})
+    msp.add_circle((0.0, 0.0), heel / MM, dxfattribs={"layer": layers[1][0]})
     reach = 1.2 * float(np.max(np.hypot(*pts.T)))
     msp.add_line((-reach, 0.0), (reach, 0.0), dxfattribs={"layer": "AXES"})
     msp.add_line((0.0, -reach), (0.0, reach), dxfattribs={"layer": "AXES"})
-    _save_dxf(doc, path)
+    return doc, pts
+
+
+def _master_document(grinding):
+    return _profile_document(grinding.master_contour, grinding.master_base_radius,
+                             (("MASTER_PROFILE", 7), ("MASTER_BASE_CIRCLE", 3), ("AXES", 5)))[0]
 
 
 def _dxf_document(valve):
-    import ezdxf
-    from ezdxf import units
-
-    doc = ezdxf.new("R2010")
-    doc.units = units.MM
-    for name, color in (("CAM_PROFILE", 7), ("BASE_CIRCLE", 3), ("RAMP_BOUNDARIES", 6), ("SEGMENT_BOUNDARIES", 1),
-                        ("AXES", 5)):
-        doc.layers.add(name, color=color)
+    doc, pts = _profile_document(valve.contour, valve.heel_radius,
+                                 (("CAM_PROFILE", 7), ("BASE_CIRCLE", 3), ("RAMP_BOUNDARIES", 6),
+                                  ("SEGMENT_BOUNDARIES", 1), ("AXES", 5)))
     msp = doc.modelspace()
-    pts = (valve.contour / MM).T
-    msp.add_lwpolyline([tuple(p) for p in pts], close=True, dxfattribs={"layer": "CAM_PROFILE"})
-    heel = valve.heel_radius / MM
-    msp.add_circle((0.0, 0.0), heel, dxfattribs={"layer": "BASE_CIRCLE"})
-    reach = 1.2 * float(np.max(np.hypot(*pts.T)))
-    msp.add_line((-reach, 0.0), (reach, 0.0), dxfattribs={"layer": "AXES"})
-    msp.add_line((0.0, -reach), (0.0, reach), dxfattribs={"layer": "AXES"})
     ramps = {s.end if "opening" in s.name else s.start for s in valve.law.segments if s.name.startswith("ramp")}
     for a in valve.law.breakpoints:
         k = int(np.argmin(np.abs(valve.contour_angle - a)))
