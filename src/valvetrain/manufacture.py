@@ -25,8 +25,7 @@ from the contour geometry of its section 2.1, eqs. (2.6)-(2.7), (2.15)-(2.16)).
 import numpy as np
 
 from . import geometry
-
-_BISECTIONS = 60
+from .numerics import invert_angle
 
 
 def _axes(theta):
@@ -131,34 +130,6 @@ def wheel_centre_path(derivs, theta, heel, wheel_radius, follower="flat", roller
     return c, np.hypot(*c), np.arctan2(*c)
 
 
-def _invert_angle(angle_of, target, samples=4097):
-    """The parameters theta in [-pi, pi] at which the angle ``angle_of(theta)`` (increasing by 2 pi over a
-    revolution) equals each ``target`` [rad]: bracketed on ``samples`` angles and bisected to round-off."""
-    target = np.asarray(target, dtype=float)
-    theta = np.linspace(-np.pi, np.pi, samples)
-    a = np.unwrap(angle_of(theta))
-    wrapped = (target - a[0]) % (2.0 * np.pi) + a[0]
-    k = np.clip(np.searchsorted(a, wrapped), 1, samples - 1)
-    lo, hi = theta[k - 1], theta[k]
-
-    def miss(t):
-        return np.angle(np.exp(1j * (angle_of(t) - target)))
-
-    f_lo, f_hi = miss(lo), miss(hi)
-    # a root on a bracket's end may show no sign change by round-off: take the nearer end
-    edge = np.sign(f_lo) == np.sign(f_hi)
-    at = np.where(np.abs(f_lo) <= np.abs(f_hi), lo, hi)
-    lo, hi = np.where(edge, at, lo), np.where(edge, at, hi)
-    f_lo = miss(lo)
-    for _ in range(_BISECTIONS):
-        mid = 0.5 * (lo + hi)
-        f_mid = miss(mid)
-        left = np.sign(f_mid) == np.sign(f_lo)
-        lo, f_lo = np.where(left, mid, lo), np.where(left, f_mid, f_lo)
-        hi = np.where(left, hi, mid)
-    return 0.5 * (lo + hi)
-
-
 def wheel_centre_radius(derivs, psi, heel, wheel_radius, follower="flat", roller=0.0):
     """The wheel centre's polar radius L [m] at polar angles ``psi`` of the cam frame [rad from the nose].
 
@@ -170,7 +141,7 @@ def wheel_centre_radius(derivs, psi, heel, wheel_radius, follower="flat", roller
     ----------
     Shang Hanji (1988), ch. 6.
     """
-    theta = _invert_angle(lambda t: wheel_centre_path(derivs, t, heel, wheel_radius, follower, roller)[2], psi)
+    theta = invert_angle(lambda t: wheel_centre_path(derivs, t, heel, wheel_radius, follower, roller)[2], psi)
     return wheel_centre_path(derivs, theta, heel, wheel_radius, follower, roller)[1]
 
 
@@ -322,7 +293,7 @@ def worn_wheel_lift(derivs, theta, heel, wheel_radius, wear, follower="flat", ro
 
     theta = np.asarray(theta, dtype=float)
     if follower == "flat":
-        tau = _invert_angle(lambda t: np.arctan2(*path(t)[1]), theta)
+        tau = invert_angle(lambda t: np.arctan2(*path(t)[1]), theta)
         e, _ = path(tau)
         return np.sum(e * _axes(theta)[0], axis=0) - (heel + wear)
 
@@ -330,7 +301,7 @@ def worn_wheel_lift(derivs, theta, heel, wheel_radius, wear, follower="flat", ro
         e, n = path(t)
         return e + roller * n
 
-    tau = _invert_angle(lambda t: np.arctan2(*centre(t)), theta)
+    tau = invert_angle(lambda t: np.arctan2(*centre(t)), theta)
     return np.hypot(*centre(tau)) - (heel + wear + roller)
 
 
