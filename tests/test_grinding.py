@@ -186,15 +186,26 @@ def test_the_master_reproduces_the_cam_lift_through_its_follower_and_the_bar_rat
 
 
 def test_the_surface_grinder_lift_of_a_master_is_its_support_function():
-    """A master of bar ratio 1 and a roller as large as the wheel is the cam, whose flat-follower lift is the law."""
+    """A master of bar ratio 1 and a roller as large as the wheel is the cam, whose flat-follower lift is the law and
+    whose polar radius is the cam's."""
     law = ThreeArcLaw(20e-3, 8e-3, np.radians(60.0), 5e-3)
-    wheel = 0.2
-    dense = np.linspace(-np.pi, np.pi, 20001)
-    args = (law.r0, wheel, 1.0, law.r0, wheel)
-    contour = mf.master_contour(law.derivatives, dense, *args)
-    normal = mf.master_pitch(law.derivatives, dense, *args)[2]
-    flat = mf.support_lift(contour, normal, THETA) - law.r0
-    assert flat == pytest.approx(law.lift(THETA), abs=1e-9)
+    args = (law.r0, 0.2, 1.0, law.r0, 0.2)
+    assert mf.master_flat_lift(law.derivatives, THETA, *args) == pytest.approx(law.lift(THETA), abs=1e-15)
+    assert mf.master_polar_radius(law.derivatives, THETA, *args) == pytest.approx(
+        law.polar_radius(THETA, law.r0), abs=1e-15)
+
+
+def test_the_surface_grinder_lift_of_a_scaled_master_against_a_sampled_support_function():
+    """The flat-follower lift of a master (bar ratio 2.5, its own heel circle) equals the largest projection of its
+    densely sampled contour on each direction (a lower bound, short by the sagitta of the samples' chords)."""
+    law = ThreeArcLaw(20e-3, 8e-3, np.radians(60.0), 5e-3)
+    args = (law.r0, 0.15, 2.5, 0.4, 0.03)
+    dense = np.linspace(-np.pi, np.pi, 40001)
+    points = mf.master_contour(law.derivatives, dense, *args)
+    u = np.stack([np.sin(THETA), np.cos(THETA)])
+    sampled = np.max(points.T @ u, axis=0) - 0.4
+    miss = mf.master_flat_lift(law.derivatives, THETA, *args) - sampled
+    assert np.all(miss > -1e-15) and np.all(miss < 5e-9)
 
 
 def test_a_concave_stretch_smaller_than_the_wheel_cannot_be_ground():

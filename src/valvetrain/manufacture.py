@@ -221,23 +221,41 @@ def master_pitch_curvature(derivs, theta, heel, wheel_radius, bar_ratio, master_
         return np.where(cross == 0.0, np.inf, -np.hypot(*dm) ** 3 / np.where(cross == 0.0, 1.0, cross))
 
 
-def support_lift(points, normal, directions):
-    """Flat-follower lift (support function) of a convex contour in the polar ``directions`` [rad], H [m].
-
-    A flat face pressed against a convex contour touches it where the contour's normal points along
-    the face normal u(phi), and its distance from the centre is H(phi) = p . u(phi) there. ``points`` and
-    ``normal`` are a dense sampling of the contour and its outward unit normal (in contour order); the
-    contact is interpolated linearly in the normal angle between neighbouring samples.
+def master_polar_radius(derivs, psi, heel, wheel_radius, bar_ratio, master_base, master_roller, follower="flat",
+                        roller=0.0):
+    """Polar radius of the master contour [m] at polar angles ``psi`` of the master frame [rad from the nose
+    direction], solved on the analytic contour (the contour point's polar angle inverted to round-off).
 
     References
     ----------
-    Shang Hanji (1988), eq. (2.15) (the flat follower's contact) and ch. 6 (machining the master on a
-    surface grinder, whose wheel face acts as a flat follower).
+    Shang Hanji (1988), ch. 6 (master cam).
     """
-    phi = np.unwrap(np.arctan2(*normal))
-    support = np.sum(points * normal, axis=0)
-    target = (np.asarray(directions, dtype=float) - phi[0]) % (2.0 * np.pi) + phi[0]
-    return np.interp(target, np.append(phi, phi[0] + 2.0 * np.pi), np.append(support, support[0]))
+    args = (heel, wheel_radius, bar_ratio, master_base, master_roller, follower, roller)
+    theta = invert_angle(lambda t: np.arctan2(*master_contour(derivs, t, *args)), psi)
+    return np.hypot(*master_contour(derivs, theta, *args))
+
+
+def master_flat_lift(derivs, phi, heel, wheel_radius, bar_ratio, master_base, master_roller, follower="flat",
+                     roller=0.0):
+    """Flat-follower lift of a convex master [m] in the directions ``phi`` [rad from the nose direction]: its support
+    function less its heel radius, for making the master on a surface grinder.
+
+    Notes
+    -----
+    A flat face pressed against a convex contour touches it where the contour's normal n points along the face
+    normal u(phi), at the distance H(phi) = p . n there (the support function); the contact is found by inverting
+    the direction of the master's normal to round-off. On a master with a concave stretch the result is
+    meaningless: a flat face cannot reach into it (:func:`master_pitch_curvature` tells).
+
+    References
+    ----------
+    Shang Hanji (1988), eq. (2.15) (the flat follower's contact) and ch. 6 (machining the master on a surface
+    grinder, whose wheel face acts as a flat follower).
+    """
+    args = (heel, wheel_radius, bar_ratio, master_base, master_roller, follower, roller)
+    theta = invert_angle(lambda t: np.arctan2(*master_pitch(derivs, t, *args)[2]), phi)
+    normal = master_pitch(derivs, theta, *args)[2]
+    return np.sum(master_contour(derivs, theta, *args) * normal, axis=0) - master_base
 
 
 def grindable(derivs, theta, heel, wheel_radius, follower="flat", roller=0.0):
@@ -340,5 +358,6 @@ def wear_error_first_order(derivs, theta, heel, wear, follower="flat", roller=0.
 
 
 __all__ = ["default_master_base_radius", "grindable", "master_contour", "master_follower_lift", "master_pitch",
-           "master_pitch_curvature", "offset_curve", "support_lift", "wear_error_first_order", "wheel_centre_path",
+           "master_flat_lift", "master_pitch_curvature", "master_polar_radius",
+           "offset_curve", "wear_error_first_order", "wheel_centre_path",
            "wheel_centre_radius", "worn_wheel_lift"]

@@ -42,7 +42,7 @@ class MasterTable:
     psi: np.ndarray                 # spindle angles of the export step [rad]
     wheel_centre: np.ndarray        # wheel-centre polar radius L(psi) [m]
     follower_lift: np.ndarray       # master follower lift s_m(psi) = i (L - L_min) [m]
-    radius: np.ndarray              # master contour's polar radius at psi [m]... on the master's own contour
+    radius: np.ndarray              # polar radius of the master contour at psi [m]
     flat_lift: np.ndarray           # flat-follower (surface grinder) lift of the master at psi [m]; nan if concave
 
 
@@ -162,11 +162,10 @@ def grinding_stage(grinding, cam, name, export_step):
         psi = np.radians(np.arange(-180.0, 180.0, np.degrees(export_step)))
         wheel = manufacture.wheel_centre_radius(derivs, psi, heel, r_w, follower, roller)
         contour = manufacture.master_contour(derivs, theta, *args)
-        radius = _polar_radius(contour, psi)
+        radius = manufacture.master_polar_radius(derivs, psi, *args)
         flat = np.full_like(psi, np.nan)
         if convex:
-            normal = manufacture.master_pitch(derivs, theta, *args)[2]
-            flat = manufacture.support_lift(contour, normal, psi) - base
+            flat = manufacture.master_flat_lift(derivs, psi, *args)
             result["master_flat_lift"] = float(np.max(flat))
         result.update(master=MasterTable(psi, wheel, i * (wheel - l_min), radius, flat), master_contour=contour,
                       master_angle=theta)
@@ -180,17 +179,6 @@ def grinding_stage(grinding, cam, name, export_step):
                   max_error_angle=float(t[k]), max_error_first_order=float(np.max(np.abs(first))),
                   max_phase_shift=float(np.max(np.abs(phase))), wear_table_file=f"tables/{name}_wear_error.csv")
     return GrindingResult(**result), found
-
-
-def _polar_radius(points, psi):
-    """Polar radius of a closed star-shaped contour (2, n) at polar angles psi [rad from +y towards +x], by linear
-    interpolation in the polar angle between the dense contour points."""
-    angle = np.unwrap(np.arctan2(*points))
-    radius = np.hypot(*points)
-    order = np.argsort(angle)
-    angle, radius = angle[order], radius[order]
-    target = (psi - angle[0]) % (2.0 * np.pi) + angle[0]
-    return np.interp(target, np.append(angle, angle[0] + 2.0 * np.pi), np.append(radius, radius[0]))
 
 
 WEAR_COLUMNS = [
