@@ -109,3 +109,15 @@ def test_bad_values_are_refused_with_the_key_and_the_range(text, words):
     assert "grinding" in found
     for w in words:
         assert w in found, found
+
+
+def test_a_master_without_a_heel_circle_is_refused():
+    """The default master heel radius i (heel + R_w) - r_m must be positive: the run names the key and the limit."""
+    text = with_section("wheel_radius_mm = 5.0\nmaster_follower_radius_mm = 10.0\nbar_ratio = 0.1\n")
+    with pytest.raises(SpecError) as err:
+        run(parse_spec(text))
+    found = "; ".join(err.value.problems)
+    assert "valves.intake.grinding.master_follower_radius_mm = 10" in found
+    assert "allowed master_follower_radius_mm <" in found and "master_base_radius_mm" in found
+    # with a heel radius of its own the master exists
+    run(parse_spec(text.replace("bar_ratio = 0.1\n", "bar_ratio = 0.1\nmaster_base_radius_mm = 30.0\n")))

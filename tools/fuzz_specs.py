@@ -796,6 +796,9 @@ DOCUMENTED_NULLS = {
     "opens_deg_at_0.1mm": "a measured lift that never reaches 0.1 mm", "closes_deg_at_0.1mm": "the same",
     "nonuniformity": "a mean torque that is not positive", "torque_work_balance": "no indicated work",
     "low": "a check open below", "high": "a check open above",
+    "cam_min_concave_radius_mm": "no concave stretch", "master_flat_lift_max_mm": "a master that is not convex",
+    **dict.fromkeys(("max_wear_lift_error_mm", "max_wear_lift_error_cam_deg", "max_wear_lift_error_first_order_mm",
+                     "max_wear_phase_shift_cam_deg", "master_rho_min_mm"), "a wheel that cannot grind the cam"),
 }
 
 DOCUMENTED_EMPTY_CELLS = {"rho_mm"}

@@ -75,8 +75,8 @@ class GrindingResult:
     concave_radius: Optional[float] = quantity("cam_min_concave_radius_mm", "mm",
                                                "cam's concave radius closest to zero (null: no concave stretch)")
     grindable: bool = quantity("grindable", label="the wheel grinds the contour without cutting into it")
-    master_rho_min: float = quantity("master_rho_min_mm", "mm", "smallest radius of curvature of the master contour "
-                                     "(convex stretches)")
+    master_rho_min: Optional[float] = quantity("master_rho_min_mm", "mm", "smallest radius of curvature of the "
+                                               "master contour (convex stretches; null: not grindable)")
     master_convex: bool = quantity("master_convex", label="the master is convex (a flat wheel face can grind it)")
     master_makeable: bool = quantity("master_makeable", label="a master exists for this wheel and its roller follows "
                                      "it: the master files are written")
@@ -127,6 +127,11 @@ def grinding_stage(grinding, cam, name, export_step):
     base = grinding.master_base_radius
     if base is None:
         base = manufacture.default_master_base_radius(heel, r_w, i, r_m)
+        if base <= 0.0:
+            raise ValueError(f"master_follower_radius_mm = {r_m / MM:g}: the master's heel radius bar_ratio x (cam heel "
+                             f"radius + wheel_radius_mm) - master_follower_radius_mm = {base / MM:.4g} mm is not "
+                             f"positive; allowed master_follower_radius_mm < {i * (heel + r_w) / MM:.4g} mm, or give "
+                             "master_base_radius_mm")
     theta = np.unique(np.concatenate([np.linspace(-np.pi, np.pi, DENSE, endpoint=False), law.breakpoints]))
     ok, factor = manufacture.grindable(derivs, theta, heel, r_w, follower, roller)
     rho = law.profile(theta, heel, follower, roller)[1]
@@ -140,13 +145,12 @@ def grinding_stage(grinding, cam, name, export_step):
     path, length, _ = manufacture.wheel_centre_path(derivs, theta, heel, r_w, follower, roller)
     l_min, l_max = heel + r_w, float(np.max(length))
     args = (heel, r_w, i, base, r_m, follower, roller)
-    if base <= 0.0:
-        master_ok, master_rho, convex = False, float("nan"), False
-    else:
+    master_ok, master_rho, convex = False, None, False
+    if ok:   # a looped wheel path has no master
         pitch_rho = manufacture.master_pitch_curvature(derivs, theta, *args)
         convex = bool(np.all(pitch_rho > r_m))
         master_rho = float(np.min(np.where(pitch_rho > 0.0, pitch_rho, np.inf)) - r_m)
-        master_ok = bool(ok and master_rho > 0.0)
+        master_ok = master_rho > 0.0
         found.append(check("master cam: smallest radius of curvature (master roller undercut)", master_rho, low=0.0,
                            strict_low=True, source=MASTER_SOURCE, unit="mm", severity="failure",
                            note=f"master roller r_m = {r_m / MM:g} mm, bar ratio {i:g}"))

@@ -622,7 +622,10 @@ def design_valve(name, valve, engine, gas, output, law=None, progress=None):
         found += dynamics_found
     grinding = None
     if valve.grinding is not None:
-        grinding, grinding_found = grinding_stage(valve.grinding, cam, name, output.export_step)
+        try:
+            grinding, grinding_found = grinding_stage(valve.grinding, cam, name, output.export_step)
+        except ValueError as exc:
+            raise SpecError([f"{at}.grinding.{exc}"]) from None
         found += grinding_found
     return ValveDesign(name, valve.kind, valve.count, cam, flow_result, profile, clearance, records, drive,
                        [c.named(name) for c in found], dynamics, grinding)
