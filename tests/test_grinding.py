@@ -216,3 +216,28 @@ def test_a_concave_stretch_smaller_than_the_wheel_cannot_be_ground():
     assert 0.05 < concave < 0.1
     for wheel, ok in ((0.9 * concave, True), (1.1 * concave, False)):
         assert mf.grindable(v.law.derivatives, theta, v.heel_radius, wheel, "roller", v.roller_radius)[0] is ok
+
+
+@pytest.mark.parametrize("follower", ["flat", "roller"])
+def test_infeed_keeps_the_base_circle_and_its_first_order_error_agrees_with_re_enveloping(follower):
+    """The head fed in by the wear: zero wear, zero error; the base circle is the design's; the first-order error
+    w (1 - cos gamma) (times sec beta for a roller) differs from the re-enveloped one by O(w^2)."""
+    if follower == "flat":
+        law = ThreeArcLaw(20e-3, 8e-3, np.radians(60.0), 5e-3)
+        heel, wheel, roller = law.r0, 0.3, 0.0
+    else:
+        v = exhaust()
+        law, heel, wheel, roller = v.law, v.heel_radius, 0.05, v.roller_radius
+    theta = np.linspace(-np.pi, np.pi, 721)
+    zero = mf.worn_wheel_lift(law.derivatives, theta, heel, wheel, 0.0, follower, roller, infeed=True)
+    assert zero == pytest.approx(law.lift(theta), abs=1e-15)
+    misses = []
+    for wear in (1e-3, 1e-4):
+        exact = mf.worn_wheel_lift(law.derivatives, theta, heel, wheel, wear, follower, roller, infeed=True)
+        error = exact - law.lift(theta)
+        assert error[0] == pytest.approx(0.0, abs=1e-15)           # on the base circle: restored
+        first = mf.wear_error_first_order(law.derivatives, theta, heel, wear, follower, roller, wheel, True)[0]
+        assert np.max(np.abs(error)) > 1e-3 * wear                 # a flat follower sees an error too
+        misses.append(np.max(np.abs(error - first)))
+        assert misses[-1] < 0.05 * np.max(np.abs(error))
+    assert misses[1] < misses[0] / 50.0

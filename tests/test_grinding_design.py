@@ -84,7 +84,12 @@ def test_a_roller_cam_with_a_concave_flank_refuses_a_larger_wheel(tmp_path):
     assert not (out / "contour/exhaust_master.dxf").exists() and not (out / "tables/exhaust_wear_error.csv").exists()
     assert (out / "contour/intake_master.dxf").exists()
 
-    good = json.loads(results_json(run(parse_spec(text))))["valves"]["exhaust"]["grinding"]
+    data = json.loads(results_json(run(parse_spec(text))))["valves"]
+    # the flat-follower intake is ground with infeed: the base circle kept, a lift error of a fraction of a micrometre
+    intake = data["intake"]["grinding"]
+    assert intake["wear_compensation"] == "infeed" and 1e-5 < intake["max_wear_lift_error_mm"] < 1e-3
+    assert intake["max_wear_lift_error_first_order_mm"] == pytest.approx(intake["max_wear_lift_error_mm"], rel=0.01)
+    good = data["exhaust"]["grinding"]
     assert good["grindable"] and good["master_makeable"] and not good["master_convex"]
     assert good["master_flat_lift_max_mm"] is None   # a concave master cannot be made on a surface grinder
     # a roller follower sees w (sec beta - 1): some tens of micrometres for a 1 mm wear at 21 deg
@@ -101,6 +106,7 @@ def test_a_roller_cam_with_a_concave_flank_refuses_a_larger_wheel(tmp_path):
      ["wheel_wear_mm = 10", "wheel_radius_mm = 10", "allowed [0, wheel radius)"]),
     ("master_follower_radius_mm = 20.0", ["wheel_radius_mm"]),
     (SECTION + "wheel_speed = 30.0", ["wheel_speed"]),
+    (SECTION + 'wear_compensation = "reset"', ["wear_compensation", "'none'", "'infeed'"]),
 ])
 def test_bad_values_are_refused_with_the_key_and_the_range(text, words):
     if "bar_ratio = 2.0\nbar_ratio" in text:

@@ -276,9 +276,12 @@ def grindable(derivs, theta, heel, wheel_radius, follower="flat", roller=0.0):
     return worst > 0.0, worst
 
 
-def worn_wheel_lift(derivs, theta, heel, wheel_radius, wear, follower="flat", roller=0.0):
+def worn_wheel_lift(derivs, theta, heel, wheel_radius, wear, follower="flat", roller=0.0, infeed=False):
     """Follower lift [m] of the cam ground by a worn wheel (radius R_w - w) on the design wheel-centre path,
     from the cam's own base circle (R_0 + w), exactly: by re-enveloping the path with the worn wheel.
+
+    With ``infeed`` the head is fed in by w to restore the base circle: the wheel centre runs at L(psi) - w on the
+    head's line, and the lift is from the design base circle R_0.
 
     Parameters
     ----------
@@ -294,6 +297,7 @@ def worn_wheel_lift(derivs, theta, heel, wheel_radius, wear, follower="flat", ro
 
     Notes
     -----
+    With infeed the path is C - w C/|C|, its derivative C' - w (C' - L' C/L)/L with L' = C . C'/L.
     The worn wheel touches its envelope along the path's normal n_C (from the path's own derivative):
     E = C - (R_w - w) n_C. A flat follower at theta touches E where n_C points along u(theta),
     lift = E . u(theta) - (R_0 + w); a roller's centre runs on Q = E + R_r n_C, and at theta it is the point
@@ -306,24 +310,30 @@ def worn_wheel_lift(derivs, theta, heel, wheel_radius, wear, follower="flat", ro
     """
     def path(tau):
         c, dc = offset_curve(derivs, tau, heel, wheel_radius, follower, roller)[:2]
+        if infeed:
+            length = np.hypot(*c)
+            unit = c / length
+            dc = dc - wear * (dc - np.sum(unit * dc, axis=0) * unit) / length
+            c = c - wear * unit
         n = np.stack([-dc[1], dc[0]]) / np.hypot(*dc)
         return c - (wheel_radius - wear) * n, n
 
+    base = heel if infeed else heel + wear
     theta = np.asarray(theta, dtype=float)
     if follower == "flat":
         tau = invert_angle(lambda t: np.arctan2(*path(t)[1]), theta)
         e, _ = path(tau)
-        return np.sum(e * _axes(theta)[0], axis=0) - (heel + wear)
+        return np.sum(e * _axes(theta)[0], axis=0) - base
 
     def centre(t):
         e, n = path(t)
         return e + roller * n
 
     tau = invert_angle(lambda t: np.arctan2(*centre(t)), theta)
-    return np.hypot(*centre(tau)) - (heel + wear + roller)
+    return np.hypot(*centre(tau)) - (base + roller)
 
 
-def wear_error_first_order(derivs, theta, heel, wear, follower="flat", roller=0.0):
+def wear_error_first_order(derivs, theta, heel, wear, follower="flat", roller=0.0, wheel_radius=None, infeed=False):
     """First-order lift error and phase shift of a cam ground by a wheel worn by ``wear`` [m].
 
     Returns
@@ -332,29 +342,39 @@ def wear_error_first_order(derivs, theta, heel, wear, follower="flat", roller=0.
         Lift error from the cam's own base circle [m].
     phase : ndarray
         Phase shift delta [rad]: the worn cam's lift at theta is the design lift at theta + delta plus
-        w cos(beta) - w; positive delta means the lift comes earlier on the opening flank.
+        d cos(beta) less the base change; positive delta means the lift comes earlier on the opening flank.
 
     Notes
     -----
-    The worn cam is the outer offset of the design cam by w. A flat follower's lift is its support
-    function, which grows by exactly w: no error, no phase shift. A roller's centre curve is the pitch
-    curve offset by w; with the pressure angle beta (tan beta = h'/g, g = R_0 + R_r + h):
+    On the design centre path the worn cam is the outer offset of the design cam by d = w and its base circle
+    grows by w. With ``infeed`` (the head fed in by w to restore the base circle; ``wheel_radius`` needed) the
+    offset varies, d = w (1 - cos gamma), gamma the angle between the wheel centre's radius and the contact
+    normal, and the base circle is kept. A flat follower's lift is the support function, which grows by d:
+    the error is d less the base change and there is no phase shift. A roller's centre curve is the pitch curve
+    offset by d; with the pressure angle beta (tan beta = h'/g, g = R_0 + R_r + h):
 
-    .. math:: \\delta = \\frac{w\\sin\\beta}{g},\\qquad
-              \\Delta h \\approx h(\\theta+\\delta) + w\\cos\\beta - w - h(\\theta)
-              \\approx w\\,(\\sec\\beta - 1)
+    .. math:: \\delta = \\frac{d\\sin\\beta}{g},\\qquad
+              \\Delta h \\approx h(\\theta+\\delta) + d\\cos\\beta - h(\\theta) - \\Delta_0
+              \\approx d\\sec\\beta - \\Delta_0
+
+    with the base change :math:`\\Delta_0` = w on the design path, 0 with infeed: w (sec beta - 1) on the design
+    path.
 
     References
     ----------
     Shang Hanji (1988), ch. 6 (the effect of the wheel radius on the cam profile), first order derived here.
     """
     theta = np.asarray(theta, dtype=float)
+    offset, base = np.full_like(theta, wear), wear
+    if infeed:
+        c, _, n, _ = offset_curve(derivs, theta, heel, wheel_radius, follower, roller)
+        offset, base = wear * (1.0 - np.sum(c * n, axis=0) / np.hypot(*c)), 0.0
     if follower == "flat":
-        return np.zeros_like(theta), np.zeros_like(theta)
+        return offset - base, np.zeros_like(theta)
     h, dh = derivs(theta)[:2]
     g = geometry.roller_pitch_radius(heel, roller, h)
     beta = geometry.roller_pressure_angle(heel, roller, h, dh)
-    return wear * (1.0 / np.cos(beta) - 1.0), wear * np.sin(beta) / g
+    return offset / np.cos(beta) - base, offset * np.sin(beta) / g
 
 
 __all__ = ["default_master_base_radius", "grindable", "master_contour", "master_follower_lift", "master_pitch",

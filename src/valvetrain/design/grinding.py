@@ -83,6 +83,8 @@ class GrindingResult:
     master_flat_lift: Optional[float] = quantity("master_flat_lift_max_mm", "mm", "largest flat-follower lift of "
                                                  "the master (surface grinder; null: the master is not convex)")
     wheel_wear: float = quantity("wheel_wear_mm", "mm", "wheel wear w (radius lost) of the error table")
+    wear_compensation: str = quantity("wear_compensation", label="none: the worn wheel on the design centre path; "
+                                      "infeed: the head fed in by the wear to restore the base circle")
     max_error: Optional[float] = quantity("max_wear_lift_error_mm", "mm", "largest |lift error| of the worn wheel, "
                                           "exact (null: not grindable)")
     max_error_angle: Optional[float] = quantity("max_wear_lift_error_cam_deg", "cam deg", "where it is largest")
@@ -158,7 +160,7 @@ def grinding_stage(grinding, cam, name, export_step):
                   wheel_centre_min=l_min, wheel_centre_max=l_max, master_lift=i * (l_max - l_min),
                   path_factor=factor, concave_radius=concave_radius, grindable=bool(ok), master_rho_min=master_rho,
                   master_convex=convex, master_makeable=master_ok, master_flat_lift=None,
-                  wheel_wear=grinding.wheel_wear, max_error=None, max_error_angle=None, max_error_first_order=None,
+                  wheel_wear=grinding.wheel_wear, wear_compensation=grinding.wear_compensation, max_error=None, max_error_angle=None, max_error_first_order=None,
                   max_phase_shift=None, cam_contour=law.profile(theta, heel, follower, roller)[0], wheel_path=path)
     if not ok:
         return GrindingResult(**result), found
@@ -175,8 +177,10 @@ def grinding_stage(grinding, cam, name, export_step):
                       master_angle=theta)
     t = np.arange(law.start, law.end + 0.5 * WEAR_STEP, WEAR_STEP)
     lift = law.lift(t)
-    worn = manufacture.worn_wheel_lift(derivs, t, heel, r_w, grinding.wheel_wear, follower, roller)
-    first, phase = manufacture.wear_error_first_order(derivs, t, heel, grinding.wheel_wear, follower, roller)
+    infeed = grinding.wear_compensation == "infeed"
+    worn = manufacture.worn_wheel_lift(derivs, t, heel, r_w, grinding.wheel_wear, follower, roller, infeed)
+    first, phase = manufacture.wear_error_first_order(derivs, t, heel, grinding.wheel_wear, follower, roller, r_w,
+                                                      infeed)
     error = worn - lift
     k = int(np.argmax(np.abs(error)))
     result.update(wear=WearTable(t, lift, worn, error, first, phase), max_error=float(np.abs(error[k])),
@@ -188,7 +192,8 @@ def grinding_stage(grinding, cam, name, export_step):
 WEAR_COLUMNS = [
     ("cam_deg", "camshaft angle from the cam nose [deg]"),
     ("lift_mm", "design follower lift [mm]"),
-    ("worn_lift_mm", "follower lift of the cam ground by the worn wheel, from its own base circle [mm]"),
+    ("worn_lift_mm", "follower lift of the cam ground by the worn wheel, from its own base circle (with infeed the "
+                     "design base circle) [mm]"),
     ("error_mm", "lift error, exact (re-enveloped) [mm]"),
     ("error_first_order_mm", "lift error, first order [mm]"),
     ("phase_shift_deg", "phase shift of the lift, first order [cam deg]"),

@@ -76,7 +76,9 @@ TEXT = {
                      "(the head's travel taken as straight). A worn wheel on the same centre path grinds the cam "
                      "offset by the wear: a flat follower's lift is unchanged on a base circle larger by the wear; a "
                      "roller's lift error is exact by re-enveloping the path with the worn wheel, and to first order "
-                     "w (sec β − 1) with the phase shift w sin β / g",
+                     "w (sec β − 1) with the phase shift w sin β / g. With infeed the head is fed in by the wear to "
+                     "restore the base circle: the cam is offset by w (1 − cos γ), γ the angle between the wheel "
+                     "centre's radius and the contact normal, and a flat follower sees that as its lift error",
         "gr_title": "grinding: master cam and wheel wear", "gr_cam": "cam", "gr_wheel_path": "wheel-centre path",
         "gr_master": "master cam", "gr_contours": "cam, wheel-centre path and master to scale",
         "gr_exact": "exact (re-enveloped)", "gr_first_order": "first order", "gr_error_um": "lift error, µm",
@@ -97,7 +99,9 @@ TEXT = {
             "master_convex": "the master is convex (a surface grinder can make it)",
             "master_makeable": "the master is written for manufacture",
             "master_flat_lift_max_mm": "largest flat-follower lift of the master, mm",
-            "wheel_wear_mm": "wheel wear w, mm", "max_wear_lift_error_mm": "largest |lift error|, exact, mm",
+            "wheel_wear_mm": "wheel wear w, mm",
+            "wear_compensation": "wear compensation (none: the design centre path; infeed: the base circle restored)",
+            "max_wear_lift_error_mm": "largest |lift error|, exact, mm",
             "max_wear_lift_error_cam_deg": "where it is largest, cam deg",
             "max_wear_lift_error_first_order_mm": "largest |lift error|, first order, mm",
             "max_wear_phase_shift_cam_deg": "largest |phase shift|, cam deg", "wear_table": "wear-error table",
@@ -227,7 +231,10 @@ TEXT = {
                      "Изношенный круг на той же траектории центра шлифует эквидистанту кулачка на величину износа: "
                      "подъём плоского толкателя не меняется, а начальная окружность увеличивается на износ; погрешность "
                      "подъёма роликового толкателя найдена точно (повторным построением огибающей изношенного круга) "
-                     "и в первом приближении w (1/cos β − 1) со сдвигом по фазе w sin β / g",
+                     "и в первом приближении w (1/cos β − 1) со сдвигом по фазе w sin β / g. При компенсации износа "
+                     "подачей бабка подаётся на величину износа, восстанавливая начальную окружность: профиль "
+                     "смещается на w (1 − cos γ), где γ — угол между радиусом центра круга и нормалью в точке "
+                     "контакта, и это смещение плоский толкатель воспринимает как погрешность подъёма",
         "gr_title": "шлифование: копир и износ круга", "gr_cam": "кулачок", "gr_wheel_path": "траектория центра круга",
         "gr_master": "копир", "gr_contours": "кулачок, траектория центра круга и копир в масштабе",
         "gr_exact": "точно (огибающая)", "gr_first_order": "первое приближение", "gr_error_um": "погрешность подъёма, мкм",
@@ -248,7 +255,10 @@ TEXT = {
             "master_convex": "копир выпуклый (его можно шлифовать на плоскошлифовальном станке)",
             "master_makeable": "копир записан для изготовления",
             "master_flat_lift_max_mm": "наибольший подъём плоского толкателя по копиру, мм",
-            "wheel_wear_mm": "износ круга w, мм", "max_wear_lift_error_mm": "наибольшая |погрешность подъёма|, точно, мм",
+            "wheel_wear_mm": "износ круга w, мм",
+            "wear_compensation": "компенсация износа (нет: прежняя траектория центра; подачей круга: начальная "
+                                 "окружность восстановлена)",
+            "max_wear_lift_error_mm": "наибольшая |погрешность подъёма|, точно, мм",
             "max_wear_lift_error_cam_deg": "где она наибольшая, град. распредвала",
             "max_wear_lift_error_first_order_mm": "наибольшая |погрешность подъёма|, первое приближение, мм",
             "max_wear_phase_shift_cam_deg": "наибольший |сдвиг по фазе|, град. распредвала",

@@ -330,7 +330,7 @@ VALUES = {
     "crank": "по коленчатому валу", "cam": "по распределительному валу", "valve": "на клапане", "tappet": "на толкателе",
     "gas_exchange_tdc": "ВМТ газообмена", "firing_tdc": "ВМТ сгорания", "auto": "автоматически", "spline": "сплайн",
     "true": "да", "false": "нет", "outer": "наружная", "inner": "внутренняя", "any": "любое",
-    "1dof": "одномассовая", "multi": "многомассовая",
+    "1dof": "одномассовая", "multi": "многомассовая", "none": "нет", "infeed": "подачей круга",
 }
 """Russian of the text values of the specification and the records (their English is the value itself)."""
 
@@ -651,6 +651,7 @@ NAMES.update({
     "grinding.bar_ratio": ("bar ratio of the grinder i", "передаточное отношение качающейся планки i"),
     "grinding.master_base_radius": ("heel circle radius of the master R_m0", "радиус начальной окружности копира R_m0"),
     "grinding.wheel_wear": ("wheel wear w", "износ шлифовального круга w"),
+    "grinding.wear_compensation": ("wear compensation", "компенсация износа круга"),
 })
 
 QUANTITIES.update({

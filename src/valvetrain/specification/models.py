@@ -238,13 +238,16 @@ class Grinding(_Model):
 
     The master turns with the cam; its follower (a roller) moves ``bar_ratio`` times as far as the wheel centre.
     ``master_base_radius_mm`` left out makes the master's pitch curve the wheel-centre path scaled by the bar ratio
-    (with bar ratio 1 and a master roller as large as the wheel the master is the cam itself)."""
+    (with bar ratio 1 and a master roller as large as the wheel the master is the cam itself).
+    ``wear_compensation``: ``"none"``, the worn wheel runs on the design centre path (the base circle grows by the
+    wear); ``"infeed"``, the head is fed in by the wear to restore the base circle."""
 
     wheel_radius_mm: Length(5.0, 1000.0, low_open=False)
     master_follower_radius_mm: Length(1.0, 1000.0, low_open=False)
     bar_ratio: _bounded(0.1, 10.0, low_open=False) = 1.0
     master_base_radius_mm: Optional[Length(5.0, 5000.0, low_open=False)] = None
     wheel_wear_mm: _bounded(0.0, 50.0, "mm", low_open=False) = 0.5
+    wear_compensation: Literal["none", "infeed"] = "none"
 
     @model_validator(mode="after")
     def _wear_below_radius(self):
