@@ -139,18 +139,23 @@ def exhaust():
     return run(load_spec(Path(__file__).parents[1] / "examples" / "seed000-polydyne.toml")).valves["exhaust"]
 
 
+def cam_for(follower, flat_wheel):
+    """A cam, its heel radius, a wheel that grinds it and the roller radius: a three-arc cam (flat follower) with
+    ``flat_wheel``, or the polydyne with ramps and concave flanks of the example (roller) with a 50 mm wheel."""
+    if follower == "flat":
+        law = ThreeArcLaw(20e-3, 8e-3, np.radians(60.0), 5e-3)
+        return law, law.r0, flat_wheel, 0.0
+    v = exhaust()
+    return v.law, v.heel_radius, 0.05, v.roller_radius
+
+
 @pytest.mark.parametrize("follower", ["flat", "roller"])
 def test_the_master_reproduces_the_cam_lift_through_its_follower_and_the_bar_ratio(follower):
     """Grind on a simulated copy grinder: a roller r_m on the sampled master contour gives the head's travel; divided
     by the bar ratio it places the wheel centre; the wheel's envelope is the ground cam, and the cam's follower lift
     on it (its support function for a flat follower, the roller centre for a roller) is the design lift.  The flat
     follower's cam is a three-arc cam, the roller's the polydyne with ramps and concave flanks of the example."""
-    if follower == "flat":
-        law = ThreeArcLaw(20e-3, 8e-3, np.radians(60.0), 5e-3)
-        heel, wheel, roller = law.r0, 0.15, 0.0
-    else:
-        v = exhaust()
-        law, heel, wheel, roller = v.law, v.heel_radius, 0.05, v.roller_radius
+    law, heel, wheel, roller = cam_for(follower, 0.15)
     i, r_m = 2.5, 0.03
     base = 0.4   # not the default: the master's own heel circle
     dense = np.linspace(-np.pi, np.pi, 30001)
@@ -222,12 +227,7 @@ def test_a_concave_stretch_smaller_than_the_wheel_cannot_be_ground():
 def test_infeed_keeps_the_base_circle_and_its_first_order_error_agrees_with_re_enveloping(follower):
     """The head fed in by the wear: zero wear, zero error; the base circle is the design's; the first-order error
     w (1 - cos gamma) (times sec beta for a roller) differs from the re-enveloped one by O(w^2)."""
-    if follower == "flat":
-        law = ThreeArcLaw(20e-3, 8e-3, np.radians(60.0), 5e-3)
-        heel, wheel, roller = law.r0, 0.3, 0.0
-    else:
-        v = exhaust()
-        law, heel, wheel, roller = v.law, v.heel_radius, 0.05, v.roller_radius
+    law, heel, wheel, roller = cam_for(follower, 0.3)
     theta = np.linspace(-np.pi, np.pi, 721)
     zero = mf.worn_wheel_lift(law.derivatives, theta, heel, wheel, 0.0, follower, roller, infeed=True)
     assert zero == pytest.approx(law.lift(theta), abs=1e-15)

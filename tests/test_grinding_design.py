@@ -2,8 +2,11 @@
 
 import csv
 import json
+from pathlib import Path
 
+import ezdxf
 import jsonschema
+import numpy as np
 import pytest
 
 from valvetrain.design import results_schema, run
@@ -47,6 +50,14 @@ def test_a_flat_follower_cam_gets_a_master_and_no_wear_error(tmp_path):
     for f in ("contour/intake_master.csv", "contour/intake_master_cartesian.csv", "contour/intake_master.dxf",
               "tables/intake_wear_error.csv", "plots/intake_grinding.png"):
         assert (out / f).is_file(), f
+    msp = ezdxf.readfile(out / "contour/intake_master.dxf").modelspace()
+    (profile,) = msp.query('LWPOLYLINE[layer=="MASTER_PROFILE"]')
+    points = np.array([p[:2] for p in profile.get_points()])
+    assert profile.closed and np.min(np.hypot(*points.T)) == pytest.approx(g["master_base_radius_mm"], rel=1e-9)
+    assert np.max(np.hypot(*points.T)) == pytest.approx(g["master_base_radius_mm"] + g["master_follower_lift_mm"],
+                                                        rel=1e-6)
+    (heel,) = msp.query('CIRCLE[layer=="MASTER_BASE_CIRCLE"]')
+    assert heel.dxf.radius == pytest.approx(g["master_base_radius_mm"])
     rows = list(csv.DictReader(line for line in open(out / "contour/intake_master.csv") if not line.startswith("#")))
     assert len(rows) == 360 and float(rows[180]["spindle_deg"]) == 0.0
     # at the nose the master follower is at its full lift, and so is the surface grinder's flat face
@@ -69,8 +80,6 @@ def test_the_russian_report_has_the_grinding_chapter(tmp_path):
 def test_a_roller_cam_with_a_concave_flank_refuses_a_larger_wheel(tmp_path):
     """The roller exhaust of the polydyne example has concave flanks of 72 mm: a 300 mm wheel cannot grind them; the
     run says so as a failure check and writes no master and no wear table; a 60 mm wheel grinds it."""
-    from pathlib import Path
-
     text = (Path(__file__).parents[1] / "examples" / "seed000-polydyne.toml").read_text()
     assert "wheel_radius_mm = 60.0" in text
     results = run(parse_spec(text.replace("wheel_radius_mm = 60.0", "wheel_radius_mm = 300.0")))
