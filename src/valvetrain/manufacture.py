@@ -181,7 +181,8 @@ def master_pitch(derivs, theta, heel, wheel_radius, bar_ratio, master_base, mast
     in the direction of the wheel centre C at the radius
 
     .. math:: g_m = R_{m0} + r_m + i\\,(L - L_{min}),\\qquad \\mathbf M = g_m\\,\\mathbf C / L,\\qquad
-              \\mathbf M' = i L'\\,\\hat{\\mathbf C} + g_m\\,(\\mathbf C' - L'\\hat{\\mathbf C})/L,\\quad L' = \\hat{\\mathbf C}\\cdot\\mathbf C'
+              \\mathbf M' = i L'\\,\\hat{\\mathbf C} + g_m\\,(\\mathbf C' - L'\\hat{\\mathbf C})/L,\\quad
+              L' = \\hat{\\mathbf C}\\cdot\\mathbf C'
 
     References
     ----------

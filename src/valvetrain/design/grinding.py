@@ -136,8 +136,10 @@ def grinding_stage(grinding, cam, name, export_step):
                              "master_base_radius_mm")
     theta = np.unique(np.concatenate([np.linspace(-np.pi, np.pi, DENSE, endpoint=False), law.breakpoints]))
     ok, factor = manufacture.grindable(derivs, theta, heel, r_w, follower, roller)
-    rho = law.profile(theta, heel, follower, roller)[1]
-    concave = rho[rho + (roller if follower == "roller" else 0.0) < 0.0] if follower == "roller" else rho[rho < 0.0]
+    cam_contour, rho = law.profile(theta, heel, follower, roller)[:2]
+    # a roller cam is concave where its pitch curve is (rho + R_r < 0); a flat follower's cam is never concave (its
+    # rho <= 0 is an undercut, a failure of the profile stage)
+    concave = rho[rho + roller < 0.0] if follower == "roller" else rho[:0]
     concave_radius = float(np.max(concave)) if concave.size else None
     found = []
     if concave_radius is not None:
@@ -160,8 +162,9 @@ def grinding_stage(grinding, cam, name, export_step):
                   wheel_centre_min=l_min, wheel_centre_max=l_max, master_lift=i * (l_max - l_min),
                   path_factor=factor, concave_radius=concave_radius, grindable=bool(ok), master_rho_min=master_rho,
                   master_convex=convex, master_makeable=master_ok, master_flat_lift=None,
-                  wheel_wear=grinding.wheel_wear, wear_compensation=grinding.wear_compensation, max_error=None, max_error_angle=None, max_error_first_order=None,
-                  max_phase_shift=None, cam_contour=law.profile(theta, heel, follower, roller)[0], wheel_path=path)
+                  wheel_wear=grinding.wheel_wear, wear_compensation=grinding.wear_compensation, max_error=None,
+                  max_error_angle=None, max_error_first_order=None,
+                  max_phase_shift=None, cam_contour=cam_contour, wheel_path=path)
     if not ok:
         return GrindingResult(**result), found
     if master_ok:
