@@ -798,6 +798,9 @@ DOCUMENTED_NULLS = {
     "low": "a check open below", "high": "a check open above",
     "jump_speed_rpm": "no follower separation in the speed range", "bounce_speed_rpm": "no bounce in the range",
     "coil_clash_speed_rpm": "no coil clash in the range",
+    "cam_min_concave_radius_mm": "no concave stretch", "master_flat_lift_max_mm": "a master that is not convex",
+    **dict.fromkeys(("max_wear_lift_error_mm", "max_wear_lift_error_cam_deg", "max_wear_lift_error_first_order_mm",
+                     "max_wear_phase_shift_cam_deg", "master_rho_min_mm"), "a wheel that cannot grind the cam"),
 }
 """In memory a documented null may be NaN (numpy's "none"), which results.json writes as null."""
 

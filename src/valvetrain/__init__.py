@@ -3,7 +3,8 @@
 Three layers:
 
 * physics functions: :mod:`valvetrain.flow`, :mod:`valvetrain.geometry`, :mod:`valvetrain.springs`,
-  :mod:`valvetrain.strength`, :mod:`valvetrain.crank`, :mod:`valvetrain.dynamics` (pure, vectorised, SI units);
+  :mod:`valvetrain.strength`, :mod:`valvetrain.crank`, :mod:`valvetrain.dynamics`, :mod:`valvetrain.manufacture`
+  (pure, vectorised, SI units);
 * objects: the lift laws of :mod:`valvetrain.laws` (:class:`KurzLaw`, :class:`PolydyneLaw`, ...);
 * orchestration and edges: :mod:`valvetrain.specification` (the validated TOML specification and its SI
   view), :mod:`valvetrain.design` (the stages and :func:`run`), :mod:`valvetrain.export`,
@@ -23,6 +24,7 @@ _PUBLIC = {
     "Check": "checks",
     **dict.fromkeys(["DesignResults", "ValveDesign", "clearance_stage", "design_valve", "flow_stage", "law_stage",
                      "profile_stage", "run", "valve_checks"], "design"),
+    "grinding_stage": "design.grinding",
     **dict.fromkeys(["AsymmetricLaw", "CombinedLaw", "ConstantAccelerationLaw", "DynamicLaw", "HarmonicLaw", "KurzLaw",
                      "LiftLaw", "PolydyneLaw", "PolynomialLaw", "TangentLaw", "ThreeArcLaw"], "laws"),
     **dict.fromkeys(["SpecError", "example_spec", "load_spec", "parse_spec", "si"], "specification"),

@@ -7,6 +7,7 @@ from pathlib import Path
 import numpy as np
 
 from .design.dynamics import sweep_columns
+from .design.grinding import master_cartesian_columns, master_polar_columns, wear_columns
 from .outfolder import atomic_folder
 from .specification import spec_toml
 from .tables import (cartesian_contour_columns, contour_columns, crank_columns, engine_torque_columns,
@@ -47,33 +48,61 @@ def write_dxf(path, valve):
     The file is reproducible: ezdxf's fixed metadata (creation date, GUIDs) replaces the clock
     and random identifiers, so the same design writes the same bytes.
     """
+    _save_dxf(lambda: _dxf_document(valve), path)
+
+
+def _save_dxf(build, path):
+    """Build a DXF document (``build()``) and save it with ezdxf's fixed metadata (creation date, GUIDs) in place
+    from its creation on, so the same design writes the same bytes."""
     import ezdxf
 
     fixed = ezdxf.options.write_fixed_meta_data_for_testing
     ezdxf.options.write_fixed_meta_data_for_testing = True
     try:
-        _dxf_document(valve).saveas(path)
+        build().saveas(path)
     finally:
         ezdxf.options.write_fixed_meta_data_for_testing = fixed
 
 
-def _dxf_document(valve):
+def write_master_dxf(path, grinding):
+    """Write the master cam of a valve's grinder as DXF (millimetres).
+
+    Layers: ``MASTER_PROFILE`` (closed polyline of the master contour), ``MASTER_BASE_CIRCLE`` (its heel
+    circle), ``AXES`` (centre lines; +y is the direction of the cam nose, the master turns with the cam).
+    """
+    _save_dxf(lambda: _master_document(grinding), path)
+
+
+def _profile_document(contour, heel, layers):
+    """A DXF document in mm with ``layers`` (name, colour), the closed ``contour`` (2, n) [m] on the first layer,
+    the heel circle of radius ``heel`` [m] on the second and centre lines on ``AXES``; and its points [mm]."""
     import ezdxf
     from ezdxf import units
 
     doc = ezdxf.new("R2010")
     doc.units = units.MM
-    for name, color in (("CAM_PROFILE", 7), ("BASE_CIRCLE", 3), ("RAMP_BOUNDARIES", 6), ("SEGMENT_BOUNDARIES", 1),
-                        ("AXES", 5)):
+    for name, color in layers:
         doc.layers.add(name, color=color)
     msp = doc.modelspace()
-    pts = (valve.contour / MM).T
-    msp.add_lwpolyline([tuple(p) for p in pts], close=True, dxfattribs={"layer": "CAM_PROFILE"})
-    heel = valve.heel_radius / MM
-    msp.add_circle((0.0, 0.0), heel, dxfattribs={"layer": "BASE_CIRCLE"})
+    pts = (contour / MM).T
+    msp.add_lwpolyline([tuple(p) for p in pts], close=True, dxfattribs={"layer": layers[0][0]})
+    msp.add_circle((0.0, 0.0), heel / MM, dxfattribs={"layer": layers[1][0]})
     reach = 1.2 * float(np.max(np.hypot(*pts.T)))
     msp.add_line((-reach, 0.0), (reach, 0.0), dxfattribs={"layer": "AXES"})
     msp.add_line((0.0, -reach), (0.0, reach), dxfattribs={"layer": "AXES"})
+    return doc, pts
+
+
+def _master_document(grinding):
+    return _profile_document(grinding.master_contour, grinding.master_base_radius,
+                             (("MASTER_PROFILE", 7), ("MASTER_BASE_CIRCLE", 3), ("AXES", 5)))[0]
+
+
+def _dxf_document(valve):
+    doc, pts = _profile_document(valve.contour, valve.heel_radius,
+                                 (("CAM_PROFILE", 7), ("BASE_CIRCLE", 3), ("RAMP_BOUNDARIES", 6),
+                                  ("SEGMENT_BOUNDARIES", 1), ("AXES", 5)))
+    msp = doc.modelspace()
     ramps = {s.end if "opening" in s.name else s.start for s in valve.law.segments if s.name.startswith("ramp")}
     for a in valve.law.breakpoints:
         k = int(np.argmin(np.abs(valve.contour_angle - a)))
@@ -107,6 +136,15 @@ def _plain(x):
     raise TypeError(f"cannot write {type(x).__name__} to JSON")
 
 
+MASTER_COMMENTS = [
+    "master cam of the copy grinder against the spindle angle (from the cam nose direction towards +x) [deg]",
+    "wheel_centre_radius_mm: distance of the wheel centre from the cam axis; master_follower_lift_mm: bar ratio x "
+    "its travel; master_radius_mm: polar radius of the master contour; master_flat_lift_mm: lift of a flat face "
+    "on the master (surface grinder), empty where the master is concave",
+]
+"""Comment lines of ``contour/NAME_master.csv``."""
+
+
 def write_outputs(results, out, lang="en", inputs=(), force=False):
     """Write every artefact of a design into the folder ``out``, atomically.
 
@@ -120,11 +158,15 @@ def write_outputs(results, out, lang="en", inputs=(), force=False):
 
         out/results.json, spec.toml (the specification as run, every default written out)
         out/tables/NAME_lift.csv, crank.csv, engine_torque.csv, two_stroke_ports.csv, two_stroke_time_area.csv,
-                   NAME_dynamics.csv (a [dynamics] section: one row per speed)
+                   NAME_dynamics.csv (a [dynamics] section: one row per speed),
+                   NAME_wear_error.csv (a [grinding] section: the lift error of the worn wheel)
         out/contour/NAME.csv, NAME_polar.csv, NAME_cartesian.csv, NAME_lift.csv, NAME.dxf
                     (not for a valve whose cam profile is undercut: it cannot be made)
+                    NAME_master.csv, NAME_master_cartesian.csv, NAME_master.dxf (a [grinding] section whose
+                    wheel grinds the cam and whose master its roller follows)
         out/plots/NAME_kinematics.png, NAME_contour.png, NAME_time_area.png, NAME_curvature.png,
                   NAME_spring.png, NAME_dynamics_map.png, NAME_dynamics_speed.png (a [dynamics] section),
+                  NAME_grinding.png (a [grinding] section),
                   crank_forces.png, crank_torque.png, crank_pin_polar.png,
                   two_stroke_ports.png, two_stroke_time_area.png
         out/report.html
@@ -143,6 +185,13 @@ def write_outputs(results, out, lang="en", inputs=(), force=False):
                 write_csv(tmp / v.dynamics.sweep_table, sweep_columns(v.dynamics))
             if v.summary["cam"]["undercut"]:
                 continue  # no follower can trace an undercut profile: nothing is written for its manufacture
+            g = v.grinding
+            if g is not None and g.wear is not None:
+                write_csv(tmp / g.wear_table_file, wear_columns(g))
+            if g is not None and g.master_makeable:   # no master for a wheel that cannot grind the cam
+                write_csv(tmp / "contour" / f"{name}_master.csv", master_polar_columns(g), MASTER_COMMENTS)
+                write_csv(tmp / "contour" / f"{name}_master_cartesian.csv", master_cartesian_columns(g))
+                write_master_dxf(tmp / "contour" / f"{name}_master.dxf", g)
             write_csv(tmp / "contour" / f"{name}.csv", contour_columns(v))
             step = results.spec.output.export_step_deg
             write_csv(tmp / "contour" / f"{name}_polar.csv", polar_contour_columns(v, step))

@@ -25,6 +25,7 @@ from ..springs import NoSpringFits
 from ..units import DEG, MM
 from .drive import drive_record, drive_stage
 from .dynamics import dynamics_stage
+from .grinding import grinding_stage
 from .results import quantity, record
 
 ACCELERATION_LIMITS = (3500.0, -1500.0)
@@ -527,6 +528,7 @@ class ValveDesign:
     drive: object                  # DriveResult: masses, spring curves, strength
     checks: list = field(default_factory=list)   # every valvetrain.checks.Check of the valve, passed or not
     dynamics: object = None        # DynamicsResult when the valve has a [dynamics] section
+    grinding: object = None        # GrindingResult when the valve has a [grinding] section
 
     @property
     def warnings(self):
@@ -560,6 +562,8 @@ class ValveDesign:
         out.update(drive_record(self.drive))
         if self.dynamics is not None:
             out["dynamics"] = record(self.dynamics)
+        if self.grinding is not None:
+            out["grinding"] = record(self.grinding)
         return out
 
     def __repr__(self):
@@ -616,8 +620,15 @@ def design_valve(name, valve, engine, gas, output, law=None, progress=None):
     if valve.dynamics is not None:
         dynamics, dynamics_found = dynamics_stage(valve.dynamics, valve, engine, cam.law, drive, name, progress, cam)
         found += dynamics_found
+    grinding = None
+    if valve.grinding is not None:
+        try:
+            grinding, grinding_found = grinding_stage(valve.grinding, cam, name, output.export_step)
+        except ValueError as exc:
+            raise SpecError([f"{at}.grinding.{exc}"]) from None
+        found += grinding_found
     return ValveDesign(name, valve.kind, valve.count, cam, flow_result, profile, clearance, records, drive,
-                       [c.named(name) for c in found], dynamics)
+                       [c.named(name) for c in found], dynamics, grinding)
 
 
 __all__ = ["CamResult", "ClearanceResult", "FlowResult", "LiftTable", "ProfileResult", "ValveDesign",

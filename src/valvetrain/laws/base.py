@@ -22,7 +22,7 @@ import numpy as np
 from numba import njit
 
 from .. import geometry
-from ..numerics import bracketed_roots, level_span
+from ..numerics import bracketed_roots, invert_angle, level_span
 
 
 @dataclass(frozen=True)
@@ -211,25 +211,9 @@ class LiftLaw(ABC):
         bracketed on ``samples`` camshaft angles and the bracket bisected, all angles at once,
         to the round-off of the angle (not interpolated), so a table of any step is exact.
         """
-        target = np.asarray(polar_angle, dtype=float)
-        theta = np.linspace(-np.pi, np.pi, samples)
-        psi = np.unwrap(np.arctan2(*self.profile(theta, heel_radius, follower, roller_radius)[0]))
-        wrapped = (target - psi[0]) % (2.0 * np.pi) + psi[0]
-        k = np.clip(np.searchsorted(psi, wrapped), 1, samples - 1)
-        lo, hi = theta[k - 1], theta[k]
-
-        def miss(t):
-            x, y = self.profile(t, heel_radius, follower, roller_radius)[0]
-            return np.angle(np.exp(1j * (np.arctan2(x, y) - target)))
-
-        f_lo = miss(lo)
-        for _ in range(60):
-            mid = 0.5 * (lo + hi)
-            f_mid = miss(mid)
-            left = np.sign(f_mid) == np.sign(f_lo)
-            lo, f_lo = np.where(left, mid, lo), np.where(left, f_mid, f_lo)
-            hi = np.where(left, hi, mid)
-        return np.hypot(*self.profile(0.5 * (lo + hi), heel_radius, follower, roller_radius)[0])
+        theta = invert_angle(lambda t: np.arctan2(*self.profile(t, heel_radius, follower, roller_radius)[0]),
+                             polar_angle, samples)
+        return np.hypot(*self.profile(theta, heel_radius, follower, roller_radius)[0])
 
     def extremes(self, omega):
         """Extreme velocity and accelerations at camshaft speed omega [rad/s], found on the analytic law.

@@ -12,6 +12,7 @@ import numpy as np
 from .. import __version__
 from ..checks import describe_range
 from ..design.dynamics import SOURCES as DYNAMICS_SOURCES
+from ..design.grinding import SOURCES as GRINDING_SOURCES
 from ..design.results import record
 from ..tables import lift_table_columns
 from ..bibliography import WORKS, cited_in
@@ -204,6 +205,18 @@ def _dynamics(rec):
             "table": rec["sweep_table"], "revolutions": params["revolutions"]}
 
 
+def _grinding(name, v):
+    """The grinding record for the report: its rows (booleans and numbers; the table's file is listed with the
+    master's files) and the files written for manufacture."""
+    if v.grinding is None:
+        return None
+    rec = record(v.grinding)
+    files = [] if v.summary["cam"]["undercut"] else ([rec["wear_table"]] if "wear_table" in rec else [])
+    if v.grinding.master_makeable and not v.summary["cam"]["undercut"]:
+        files += [f"contour/{name}_master.csv", f"contour/{name}_master_cartesian.csv", f"contour/{name}_master.dxf"]
+    return {"rows": [(k, val) for k, val in rec.items() if k != "wear_table"], "files": files}
+
+
 def _summary(results, t):
     """The report's first page: one row per valve (its open failures, warnings and info, and its accepted checks),
     the limits not met (ranked) and the failures the specification accepts."""
@@ -281,6 +294,7 @@ def render_report(results, plots, lang="en", folder=None):
             "table": _abridged_table(v, lang),
             "warnings": v.warnings,
             "dynamics": _dynamics(s.get("dynamics")),
+            "grinding": _grinding(name, v),
         })
     first_page = _summary(results, TEXT[lang])
     crank = None
@@ -299,7 +313,7 @@ def render_report(results, plots, lang="en", folder=None):
         t=TEXT[lang], warning_symbols=warning_symbols, lang=lang, version=__version__, engine=record(results.engine),
         engine_inputs=_flatten(spec["engine"]), valves=valves, warnings=results.warnings, accepted=results.accepted,
         first_page=first_page, timing=plots.get("(timing)"), table_columns=TABLE_COLUMNS,
-        dynamics_sources=DYNAMICS_SOURCES,
+        dynamics_sources=DYNAMICS_SOURCES, grinding_sources=GRINDING_SOURCES,
         step=REPORT_STEP_DEG, output=_flatten(spec["output"]), crank=crank, ports=ports,
     )
     template = env.get_template("report.html")

@@ -69,6 +69,43 @@ TEXT = {
         "pin_radial": "radial load on the crank pin (outwards +), kN", "pin_polar": "polar diagram of the crank-pin load",
         "crank_from_tdc": "crank angle from TDC, deg", "port_area": "port area, mm²", "speed": "crank speed, rpm",
         "port_time_area": "time-area, mm²·s", "port": "Port", "pressure_model": "Cylinder pressure",
+        "gr_chapter": "8. Cam grinding: master cam and wheel wear",
+        "gr_method": "The copy grinder turns the cam and its master on one spindle; the master follower (a roller) moves "
+                     "the wheel head so that the wheel centre traces the offset of the cam contour by the wheel radius "
+                     "along its normal, the master follower travelling the bar ratio times as far as the wheel centre "
+                     "(the head's travel taken as straight). A worn wheel on the same centre path grinds the cam "
+                     "offset by the wear: a flat follower's lift is unchanged on a base circle larger by the wear; a "
+                     "roller's lift error is exact by re-enveloping the path with the worn wheel, and to first order "
+                     "w (sec β − 1) with the phase shift w sin β / g. With infeed the head is fed in by the wear to "
+                     "restore the base circle: the cam is offset by w (1 − cos γ), γ the angle between the wheel "
+                     "centre's radius and the contact normal, and a flat follower sees that as its lift error",
+        "gr_title": "grinding: master cam and wheel wear", "gr_cam": "cam", "gr_wheel_path": "wheel-centre path",
+        "gr_master": "master cam", "gr_contours": "cam, wheel-centre path and master to scale",
+        "gr_exact": "exact (re-enveloped)", "gr_first_order": "first order", "gr_error_um": "lift error, µm",
+        "gr_error_title": "lift error of a wheel worn by {wear:g} mm",
+        "gr_not_grindable": "the wheel cannot grind this cam: no wear error",
+        "gr_files": "Files for manufacture", "gr_no_master": "No master is written: the wheel cannot grind the cam "
+                    "or the master roller cannot follow the master (see the failure checks)",
+        "gr_names": {
+            "wheel_radius_mm": "grinding wheel radius R_w, mm", "master_follower_radius_mm": "master roller radius r_m, mm",
+            "bar_ratio": "bar ratio i (master follower travel / wheel-centre travel)",
+            "master_base_radius_mm": "heel circle radius of the master R_m0, mm",
+            "wheel_centre_min_radius_mm": "wheel centre from the cam axis, smallest L_min, mm",
+            "wheel_centre_max_radius_mm": "wheel centre from the cam axis, largest L_max, mm",
+            "master_follower_lift_mm": "master follower lift i (L_max − L_min), mm",
+            "wheel_path_factor_min": "smallest 1 + R_w / ρ (> 0: the wheel grinds the whole contour)",
+            "cam_min_concave_radius_mm": "concave radius of the cam closest to zero, mm",
+            "grindable": "the wheel grinds the cam", "master_rho_min_mm": "smallest radius of curvature of the master, mm",
+            "master_convex": "the master is convex (a surface grinder can make it)",
+            "master_makeable": "the master is written for manufacture",
+            "master_flat_lift_max_mm": "largest flat-follower lift of the master, mm",
+            "wheel_wear_mm": "wheel wear w, mm",
+            "wear_compensation": "wear compensation (none: the design centre path; infeed: the base circle restored)",
+            "max_wear_lift_error_mm": "largest |lift error|, exact, mm",
+            "max_wear_lift_error_cam_deg": "where it is largest, cam deg",
+            "max_wear_lift_error_first_order_mm": "largest |lift error|, first order, mm",
+            "max_wear_phase_shift_cam_deg": "largest |phase shift|, cam deg", "wear_table": "wear-error table",
+        },
         "dyn_chapter": "7. Valve-train dynamics: the elastic train over the speed range",
         "dyn_method": "Valve-side coordinates; unilateral cam contact with the lash as a gap, a unilateral stiff damped "
                       "seat; fixed-step integration in camshaft angle, every speed from rest over {revolutions} camshaft "
@@ -196,6 +233,47 @@ TEXT = {
         "crank_from_tdc": "угол поворота коленвала от ВМТ, °", "port_area": "площадь окна, мм²",
         "speed": "частота вращения, мин⁻¹", "port_time_area": "время-сечение, мм²·с", "port": "Окно",
         "pressure_model": "Давление в цилиндре",
+        "gr_chapter": "8. Шлифование кулачка: копир и износ шлифовального круга",
+        "gr_method": "На копировально-шлифовальном станке кулачок и копир вращаются на одном шпинделе; ролик копира "
+                     "перемещает шлифовальную бабку так, что центр круга описывает эквидистанту профиля кулачка на "
+                     "расстоянии, равном радиусу круга, по нормали; ролик копира перемещается в i раз больше центра "
+                     "круга (i — передаточное отношение качающейся планки, её перемещение принято прямолинейным). "
+                     "Изношенный круг на той же траектории центра шлифует эквидистанту кулачка на величину износа: "
+                     "подъём плоского толкателя не меняется, а начальная окружность увеличивается на износ; погрешность "
+                     "подъёма роликового толкателя найдена точно (повторным построением огибающей изношенного круга) "
+                     "и в первом приближении w (1/cos β − 1) со сдвигом по фазе w sin β / g. При компенсации износа "
+                     "подачей бабка подаётся на величину износа, восстанавливая начальную окружность: профиль "
+                     "смещается на w (1 − cos γ), где γ — угол между радиусом центра круга и нормалью в точке "
+                     "контакта, и это смещение плоский толкатель воспринимает как погрешность подъёма",
+        "gr_title": "шлифование: копир и износ круга", "gr_cam": "кулачок", "gr_wheel_path": "траектория центра круга",
+        "gr_master": "копир", "gr_contours": "кулачок, траектория центра круга и копир в масштабе",
+        "gr_exact": "точно (огибающая)", "gr_first_order": "первое приближение", "gr_error_um": "погрешность подъёма, мкм",
+        "gr_error_title": "погрешность подъёма при износе круга {wear:g} мм",
+        "gr_not_grindable": "круг не может шлифовать этот кулачок: погрешность от износа не считается",
+        "gr_files": "Файлы для изготовления", "gr_no_master": "Копир не записан: круг не может шлифовать кулачок "
+                    "или ролик копира не может обкатывать копир (см. недопустимые значения)",
+        "gr_names": {
+            "wheel_radius_mm": "радиус шлифовального круга R_w, мм", "master_follower_radius_mm": "радиус ролика копира r_m, мм",
+            "bar_ratio": "передаточное отношение i (ход ролика копира / ход центра круга)",
+            "master_base_radius_mm": "радиус начальной окружности копира R_m0, мм",
+            "wheel_centre_min_radius_mm": "наименьшее расстояние центра круга от оси кулачка L_min, мм",
+            "wheel_centre_max_radius_mm": "наибольшее расстояние центра круга от оси кулачка L_max, мм",
+            "master_follower_lift_mm": "подъём ролика копира i (L_max − L_min), мм",
+            "wheel_path_factor_min": "наименьшее 1 + R_w / ρ (> 0: круг шлифует весь профиль)",
+            "cam_min_concave_radius_mm": "наименьший по модулю радиус вогнутого участка кулачка, мм",
+            "grindable": "круг может шлифовать кулачок", "master_rho_min_mm": "наименьший радиус кривизны копира, мм",
+            "master_convex": "копир выпуклый (его можно шлифовать на плоскошлифовальном станке)",
+            "master_makeable": "копир записан для изготовления",
+            "master_flat_lift_max_mm": "наибольший подъём плоского толкателя по копиру, мм",
+            "wheel_wear_mm": "износ круга w, мм",
+            "wear_compensation": "компенсация износа (нет: прежняя траектория центра; подачей круга: начальная "
+                                 "окружность восстановлена)",
+            "max_wear_lift_error_mm": "наибольшая |погрешность подъёма|, точно, мм",
+            "max_wear_lift_error_cam_deg": "где она наибольшая, град. распредвала",
+            "max_wear_lift_error_first_order_mm": "наибольшая |погрешность подъёма|, первое приближение, мм",
+            "max_wear_phase_shift_cam_deg": "наибольший |сдвиг по фазе|, град. распредвала",
+            "wear_table": "таблица погрешности от износа",
+        },
         "dyn_chapter": "7. Динамика механизма газораспределения: упругая модель в диапазоне частот вращения",
         "dyn_method": "Координаты приведены к клапану; односторонний контакт кулачка с зазором, односторонняя жёсткая "
                       "демпфированная посадка на седло; интегрирование с постоянным шагом по углу распредвала, каждая "

@@ -330,7 +330,7 @@ VALUES = {
     "crank": "по коленчатому валу", "cam": "по распределительному валу", "valve": "на клапане", "tappet": "на толкателе",
     "gas_exchange_tdc": "ВМТ газообмена", "firing_tdc": "ВМТ сгорания", "auto": "автоматически", "spline": "сплайн",
     "true": "да", "false": "нет", "outer": "наружная", "inner": "внутренняя", "any": "любое",
-    "1dof": "одномассовая", "multi": "многомассовая",
+    "1dof": "одномассовая", "multi": "многомассовая", "none": "нет", "infeed": "подачей круга",
 }
 """Russian of the text values of the specification and the records (their English is the value itself)."""
 
@@ -652,4 +652,28 @@ NAMES.update({
     "lift.rho": ("radius of curvature ρ", "радиус кривизны ρ"),
     "lift.pressure_angle": ("pressure angle", "угол давления"),
     "lift.contact_offset": ("contact offset b", "смещение точки контакта b"),
+})
+
+NAMES.update({
+    "grinding.wheel_radius": ("grinding wheel radius R_w", "радиус шлифовального круга R_w"),
+    "grinding.master_follower_radius": ("master roller radius r_m", "радиус ролика копира r_m"),
+    "grinding.bar_ratio": ("bar ratio of the grinder i", "передаточное отношение качающейся планки i"),
+    "grinding.master_base_radius": ("heel circle radius of the master R_m0", "радиус начальной окружности копира R_m0"),
+    "grinding.wheel_wear": ("wheel wear w", "износ шлифовального круга w"),
+    "grinding.wear_compensation": ("wear compensation", "компенсация износа круга"),
+})
+
+QUANTITIES.update({
+    "cam concave radius |rho| against the grinding wheel radius": (
+        "concave radius of the cam |ρ| against the grinding wheel radius R_w",
+        "радиус вогнутого участка кулачка |ρ| и радиус шлифовального круга R_w"),
+    "master cam: smallest radius of curvature (master roller undercut)": (
+        "master cam: smallest radius of curvature (undercut by the master roller)",
+        "копир: наименьший радиус кривизны (подрез роликом копира)"),
+})
+
+SKELETONS.update({
+    "a wheel of radius {} mm cannot grind a concave stretch of smaller radius":
+        "круг радиусом {} мм не может шлифовать вогнутый участок меньшего радиуса",
+    "master roller r_m = {} mm, bar ratio {}": "ролик копира r_m = {} мм, передаточное отношение {}",
 })

@@ -318,6 +318,42 @@ def dynamics_speed_figure(name, d, t):
     return fig
 
 
+def grinding_figure(valve, t):
+    """The cam, the wheel-centre path and the master to scale; the lift error of the worn wheel against cam angle."""
+    g = valve.grinding
+    fig = Figure(figsize=(12, 5.5))
+    left, right = fig.subplots(1, 2, gridspec_kw={"width_ratios": [1, 1.3]})
+    for pts, label, style in ((g.cam_contour, t["gr_cam"], dict(color="k", lw=1.5)),
+                              (g.wheel_path, t["gr_wheel_path"], dict(color="C1", lw=0.8, ls="--")),
+                              (g.master_contour, t["gr_master"], dict(color="C0", lw=1.2))):
+        if pts is not None:
+            x, y = pts / MM
+            left.plot(np.append(x, x[0]), np.append(y, y[0]), label=label, **style)
+    left.set_aspect("equal")
+    left.set_xlabel(t["x_mm"])
+    left.set_ylabel(t["y_mm"])
+    left.grid(alpha=0.3)
+    left.legend(loc="lower right", fontsize=8)
+    left.set_title(t["gr_contours"])
+    w = g.wear
+    if w is not None:
+        x = rad_to_deg(w.cam_angle)
+        right.plot(x, w.error / MM * 1e3, color="C3", label=t["gr_exact"])
+        right.plot(x, w.error_first_order / MM * 1e3, color="C0", ls="--", label=t["gr_first_order"])
+        _segment_lines(right, valve.law)
+        right.legend(loc="upper right", fontsize=8)
+    else:
+        right.text(0.5, 0.5, t["gr_not_grindable"], ha="center", va="center", transform=right.transAxes, wrap=True)
+    right.axhline(0.0, color="0.5", lw=0.5)
+    right.set_xlabel(t["cam_deg"])
+    right.set_ylabel(t["gr_error_um"])
+    right.grid(alpha=0.3)
+    right.set_title(t["gr_error_title"].format(wear=g.wheel_wear / MM))
+    fig.suptitle(f"{valve.name}: {t['gr_title']}")
+    fig.tight_layout()
+    return fig
+
+
 DYNAMICS_FIGURES = {"dynamics_map": dynamics_map_figure, "dynamics_speed": dynamics_speed_figure}
 
 
@@ -354,6 +390,8 @@ def write_plots(results, folder, lang="en"):
         written[name] = {kind: save(make(valve, t), f"{name}_{kind}.png") for kind, make in FIGURES.items()}
         if valve.dynamics is not None:
             written[name].update(write_dynamics_plots(name, valve.dynamics, folder, t))
+        if valve.grinding is not None:
+            written[name]["grinding"] = save(grinding_figure(valve, t), f"{name}_grinding.png")
     if results.valves:
         written["(timing)"] = save(timing_figure(results.valves, t), "valve_timing.png")
     for stage, figures in ENGINE_FIGURES.items():

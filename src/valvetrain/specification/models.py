@@ -243,6 +243,31 @@ class Dynamics(_Model):
         return self
 
 
+class Grinding(_Model):
+    """[valves.NAME.grinding]: the cam's copy grinder, its master cam and the effect of wheel wear (Shang Hanji (1988),
+    ch. 6).
+
+    The master turns with the cam; its follower (a roller) moves ``bar_ratio`` times as far as the wheel centre.
+    ``master_base_radius_mm`` left out makes the master's pitch curve the wheel-centre path scaled by the bar ratio
+    (with bar ratio 1 and a master roller as large as the wheel the master is the cam itself).
+    ``wear_compensation``: ``"none"``, the worn wheel runs on the design centre path (the base circle grows by the
+    wear); ``"infeed"``, the head is fed in by the wear to restore the base circle."""
+
+    wheel_radius_mm: Length(5.0, 1000.0, low_open=False)
+    master_follower_radius_mm: Length(1.0, 1000.0, low_open=False)
+    bar_ratio: _bounded(0.1, 10.0, low_open=False) = 1.0
+    master_base_radius_mm: Optional[Length(5.0, 5000.0, low_open=False)] = None
+    wheel_wear_mm: _bounded(0.0, 50.0, "mm", low_open=False) = 0.5
+    wear_compensation: Literal["none", "infeed"] = "none"
+
+    @model_validator(mode="after")
+    def _wear_below_radius(self):
+        if self.wheel_wear_mm >= self.wheel_radius_mm:
+            raise ValueError(f"wheel_wear_mm = {self.wheel_wear_mm:g} must be less than wheel_radius_mm = "
+                             f"{self.wheel_radius_mm:g}: allowed [0, wheel radius) mm")
+        return self
+
+
 class Valve(_Model):
     """[valves.NAME]: one valve (or a set of same-name valves) of a cylinder."""
 
@@ -261,6 +286,7 @@ class Valve(_Model):
     spring: Spring = Spring()
     parts: Parts = Parts()
     dynamics: Optional[Dynamics] = None
+    grinding: Optional[Grinding] = None
 
     @property
     def layout(self):
