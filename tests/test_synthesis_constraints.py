@@ -93,3 +93,16 @@ def test_flat_follower_rho_min(article):
     assert rho_min(article, 2 * MM) is None
     flat = replace(article, cam=replace(article.cam, follower="flat"))
     assert rho_min(flat, 2 * MM).value == article.profile.rho_min
+
+
+def test_no_jump_from_a_short_sweep(article):
+    """A short 1-DOF sweep to 1.3 x the rated speed gives the separation constraint; without [dynamics], none."""
+    from valvetrain.synthesis.constraints import no_jump
+    assert no_jump(article, 1.1) is None
+    text = EXAMPLE.read_text() + ("\n[valves.intake.dynamics]\ndrive_stiffness_N_per_mm = 20000\n"
+                                  "speed_range_rpm = [500, 1300]\nspeeds = 9\nrevolutions = 2\nstep_cam_deg = 0.5\n")
+    d = run(parse_spec(text, source_dir=EXAMPLE.parent)).valves["intake"]
+    c = no_jump(d, 1.1)
+    assert c.value >= 0.5 and np.isfinite(c.margin)
+    assert c.passed == (c.value >= 1.1)
+    assert by_name(constraints(d, Limits.article(no_jump_factor=1.1)))[c.quantity] == c

@@ -57,6 +57,9 @@ class Limits:
         of at most 0.5 m/s; no primary source states it).
     min_piston_gap : float
         Smallest valve-piston gap over the open event [m].
+    no_jump_factor : float
+        No follower separation up to this multiple of the rated speed (needs the valve's ``[dynamics]`` sweep to
+        reach it).
     """
 
     max_pressure_angle: float = 30.0 * DEG
@@ -71,6 +74,7 @@ class Limits:
     ramp_velocity: tuple = (0.008 * MM / DEG, 0.022 * MM / DEG)
     seating_velocity: tuple = (0.0, 0.5)
     min_piston_gap: float = 0.0
+    no_jump_factor: float = None
 
     @classmethod
     def article(cls, **kw):
@@ -235,6 +239,31 @@ def piston_gap(design, low):
                  source="Shang Hanji (1988), eqs. (2.13)-(2.14)", severity="failure", strict_low=True)
 
 
+def no_jump(design, factor):
+    """No follower separation up to ``factor`` x the rated speed, from the design's ``[dynamics]`` speed sweep.
+
+    Returns
+    -------
+    Check or None
+        The lowest engine speed with separation over the rated speed, low = ``factor``; without separation in the
+        sweep, the top of the swept range over the rated speed (noted).  None when the valve has no
+        ``[dynamics]`` section (no sweep was run).
+
+    References
+    ----------
+    Shang Hanji (1988), chapter 3 (the dynamic jump criterion); the 1-DOF or multi-mass train of
+    :mod:`valvetrain.design.dynamics`.
+    """
+    d = design.dynamics
+    if d is None:
+        return None
+    rated = d.at_rated_speed.speed
+    jumps = np.isfinite(d.jump_speed)
+    value = (d.jump_speed if jumps else d.speed_range[1]) / rated
+    return check("follower separation (jump) speed / rated speed", value, low=factor, source="Shang Hanji (1988), chapter 3",
+                 note="" if jumps else "no separation in the swept range: its top speed")
+
+
 def constraints(design, limits=Limits()):
     """Every constraint of ``limits`` that applies to ``design``: a list of :class:`~valvetrain.checks.Check`.
 
@@ -263,6 +292,8 @@ def constraints(design, limits=Limits()):
         out.append(seating_velocity(design, L.seating_velocity))
     if L.min_piston_gap is not None:
         out.append(piston_gap(design, L.min_piston_gap))
+    if L.no_jump_factor is not None:
+        out.append(no_jump(design, L.no_jump_factor))
     return [c for c in out if c is not None]
 
 
