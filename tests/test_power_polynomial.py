@@ -136,3 +136,46 @@ def test_refusals():
         article(exponents=dict(n=2.0, m=2.0))
     with pytest.raises(ValueError, match="reconstruction"):
         article(reconstruction="R3")
+
+
+def _spec_text(**keys):
+    from pathlib import Path
+    text = (Path(__file__).parents[1] / "examples" / "ukrsurt2019-diesel.toml").read_text()
+    for k, v in keys.items():
+        text = "\n".join(f"{k} = {v}" if line.split("=")[0].strip() == k else line for line in text.splitlines())
+    return text
+
+
+@pytest.mark.parametrize("keys, words", [
+    (dict(n=4.0), "n = m = 4"),
+    (dict(peak_position=1.0), "peak_position"),
+    (dict(phi1_deg=70.0), "phi1_deg = 70 leaves no room"),
+    (dict(ramp_end_velocity_mm_per_rad=100.0), "ramp_end_velocity_mm_per_rad"),
+])
+def test_specification_refusals(keys, words):
+    """Keys out of their bounds or that admit no cam are refused with a message that names them."""
+    from valvetrain.specification.messages import SpecError
+    from valvetrain.specification.validate import parse_spec
+    with pytest.raises(SpecError) as err:
+        parse_spec(_spec_text(**keys))
+    assert words in str(err.value)
+
+
+def test_no_room_for_the_dwell_is_refused_at_the_design():
+    """A weak positive part needs a phi_2 beyond the half angle: the design refuses it naming the keys."""
+    from valvetrain.design import run
+    from valvetrain.specification.messages import SpecError
+    from valvetrain.specification.validate import parse_spec
+    with pytest.raises(SpecError, match="peak_acceleration_mm_per_rad2"):
+        run(parse_spec(_spec_text(peak_acceleration_mm_per_rad2=20.0)))
+
+
+def test_the_spec_builds_the_article_law():
+    from valvetrain.design import run
+    from valvetrain.specification.validate import parse_spec
+    law = run(parse_spec(_spec_text())).valves["intake"].law
+    assert isinstance(law, PowerPolynomialLaw)
+    assert np.degrees(law.phi2) == pytest.approx(39.40, abs=0.01)
+    assert law.half_angle / DEG == pytest.approx(80.75, abs=1e-9)
+    r1 = run(parse_spec(_spec_text(reconstruction='"R1"'))).valves["intake"].law
+    assert r1.reconstruction == "R1" and r1.S_h == pytest.approx(21.1 * MM, rel=1e-12)

@@ -260,7 +260,8 @@ def no_jump(design, factor):
     rated = d.at_rated_speed.speed
     jumps = np.isfinite(d.jump_speed)
     value = (d.jump_speed if jumps else d.speed_range[1]) / rated
-    return check("follower separation (jump) speed / rated speed", value, low=factor, source="Shang Hanji (1988), chapter 3",
+    return check("follower separation (jump) speed / rated speed", value, low=factor,
+                 source="Shang Hanji (1988), chapter 3",
                  note="" if jumps else "no separation in the swept range: its top speed")
 
 
