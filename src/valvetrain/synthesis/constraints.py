@@ -275,26 +275,12 @@ def constraints(design, limits=Limits()):
     ['cam_width', 'contact_modulus', 'grinding_wheel_radius']
     """
     L = limits
-    out = []
-    if L.max_pressure_angle is not None:
-        out.append(pressure_angle(design, L.max_pressure_angle))
-    if L.grinding_wheel_radius is not None:
-        out.append(concave_radius(design, L.grinding_wheel_radius))
-    if L.min_spring_reserve is not None:
-        out.append(spring_reserve(design, L.min_spring_reserve))
-    out += acceleration_band(design, L.min_acceleration, L.max_acceleration)
+    out = acceleration_band(design, L.min_acceleration, L.max_acceleration)
     if L.cam_width is not None and L.max_contact_stress is not None:
         out.append(contact_stress(design, L.max_contact_stress, L.cam_width, L.contact_modulus))
-    if L.min_rho is not None:
-        out.append(rho_min(design, L.min_rho))
-    if L.ramp_velocity is not None:
-        out.append(ramp_velocity(design, L.ramp_velocity))
-    if L.seating_velocity is not None:
-        out.append(seating_velocity(design, L.seating_velocity))
-    if L.min_piston_gap is not None:
-        out.append(piston_gap(design, L.min_piston_gap))
-    if L.no_jump_factor is not None:
-        out.append(no_jump(design, L.no_jump_factor))
+    for key, constraint in SINGLE_LIMITS:
+        if getattr(L, key) is not None:
+            out.append(constraint(design, getattr(L, key)))
     return [c for c in out if c is not None]
 
 
@@ -302,6 +288,11 @@ def worst_margin(checks):
     """The smallest :attr:`~valvetrain.checks.Check.margin` of ``checks`` (+inf for none)."""
     return min((c.margin for c in checks), default=math.inf)
 
+
+SINGLE_LIMITS = (("max_pressure_angle", pressure_angle), ("grinding_wheel_radius", concave_radius),
+                 ("min_spring_reserve", spring_reserve), ("min_rho", rho_min), ("ramp_velocity", ramp_velocity),
+                 ("seating_velocity", seating_velocity), ("min_piston_gap", piston_gap), ("no_jump_factor", no_jump))
+"""The limits of :class:`Limits` that one constraint function checks alone: (field, function)."""
 
 LIMIT_NAMES = tuple(f.name for f in fields(Limits))
 """The fields of :class:`Limits`."""
