@@ -257,14 +257,14 @@ class PowerPolynomialLaw(SymmetricLaw):
             vrel -= frac * F / sumF
         need = self.nose_lift - self.S_e
         if need <= 0.0 or gain <= 0.0:
-            raise ValueError(f"power_polynomial law: the lift {self.nose_lift * 1e3:.4g} mm is already reached at the "
-                             f"end of the positive part (S_e = {self.S_e * 1e3:.4g} mm); lower peak_acceleration or phi1")
+            raise ValueError(f"power_polynomial law: the lift {self.nose_lift * 1e3:.4g} mm is reached within the "
+                             f"positive part (S_e = {self.S_e * 1e3:.4g} mm); lower peak_acceleration or phi1")
         self.phi2 = need / (self.v_e * gain)
         self.dwell = 2.0 * (self.phi_p0 - self.phi1 - self.phi2)
         if self.dwell < -1e-12:
             raise ValueError(f"power_polynomial law: phi1 + phi2 = {np.degrees(self.phi1 + self.phi2):.4g} deg exceeds "
-                             f"the main half angle {np.degrees(self.phi_p0):.4g} deg (phi2 = {np.degrees(self.phi2):.4g} "
-                             "deg follows from the lift); raise peak_acceleration or phi1, or widen the timing")
+                             f"the main half angle {np.degrees(self.phi_p0):.4g} deg (phi2 from the lift); raise "
+                             "peak_acceleration or phi1")
         self.dwell = max(self.dwell, 0.0)
         self.a_g = -self.v_e / (self.phi2 * sumF)
         pieces += [(name, frac * self.phi2, self.a_g, shape) for name, (frac, shape) in zip(("e-g", "g-h"), neg)]

@@ -490,8 +490,8 @@ class PowerPolynomialCam(_CamBase):
                                       c.phi1, c.peak_position, c.trough_position, exponents, c.reconstruction,
                                       c.sharpness)
         except ValueError as exc:
-            raise ValueError(f"{exc} (keys: max_lift_mm, opens_deg, closes_deg, cam.peak_acceleration_mm_per_rad2, "
-                             "cam.phi1_deg, cam.ramp_*)") from None
+            raise ValueError(f"{exc} (keys peak_acceleration_mm_per_rad2, phi1_deg, max_lift_mm, opens_deg, "
+                             "closes_deg)") from None
 
     def problems(self, at, valve, engine):
         out = _clearance_problem(at, valve)
