@@ -87,6 +87,10 @@ class _PowerRise(_Piece):
             df = df + (c * e * tiny ** (e - 1) if e else 0.0)
         return f, F, G, df
 
+    def area(self):
+        """int_0^1 G, the third integral over the piece."""
+        return sum(c / ((e + 1) * (e + 2) * (e + 3)) for c, e in self.terms)
+
 
 class _PowerFall(_PowerRise):
     """f = g(1 - xi), g the sum of the terms as in :class:`_PowerRise`."""
@@ -101,6 +105,9 @@ class _PowerFall(_PowerRise):
             G = G + c * (xi - (1.0 - u ** (e + 2)) / (e + 2)) / (e + 1)
             df = df - (c * e * tiny ** (e - 1) if e else 0.0)
         return f, F, G, df
+
+    def area(self):
+        return sum(c * (0.5 - (1.0 - 1.0 / (e + 3)) / (e + 2)) / (e + 1) for c, e in self.terms)
 
 
 def flat_extremum(e1, e2):
@@ -339,13 +346,11 @@ class PowerPolynomialLaw(SymmetricLaw):
         Notes
         -----
         The article's definition is not available; this reading reproduces its fullness best
-        (UkrSURT Proceedings (2019); reconstructed).
+        (UkrSURT Proceedings (2019); reconstructed).  The integral is closed-form: on a piece of length L,
+        int S = L (S_0 + v_0 L/2 + A L^2 int_0^1 G).
         """
-        x, w = np.polynomial.legendre.leggauss(64)
-        total = 0.0
-        for _, start, L, *_ in self._pieces[1:]:
-            phi = start + 0.5 * L * (x + 1.0)
-            total += 0.5 * L * np.dot(w, self._rise(phi)[0])
+        # int_0^L S = L (S_0 + v_0 L/2 + A L^2 int_0^1 G), in closed form on every piece after the ramp
+        total = sum(L * (S0 + v0 * L / 2 + A * L**2 * shape.area()) for _, _, L, A, shape, S0, v0 in self._pieces[1:])
         total += 0.5 * self.dwell * self.S_h
         return total / (self.S_h * self.phi_p0)
 
