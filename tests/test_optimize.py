@@ -32,6 +32,7 @@ def test_a_short_search_finds_a_feasible_fuller_cam():
     result = optimize_valve(load_spec(EXAMPLE), maxiter=6, popsize=6)
     assert all(c.passed for c in result.checks)
     assert result.fullness > 0.64
+    assert result.polydyne_fullness == pytest.approx(0.578, abs=1e-3)
     optimum = parse_spec(result.spec_text)
     assert optimum.valves["intake"].cam.peak_acceleration_mm_per_rad2 == pytest.approx(
         result.optimum["peak_acceleration_mm_per_rad2"], rel=1e-5)

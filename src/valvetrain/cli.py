@@ -251,6 +251,7 @@ def optimize(file, out, valve, seed, maxiter, force):
               "start_fullness": result.start_fullness, "fullness": result.fullness,
               "fast_margins": result.margins, "evaluations": result.evaluations, "seconds": result.seconds,
               "seconds_in_evaluations": result.seconds_in_evaluations,
+              "polydyne_2_10_18_26_34_fullness": result.polydyne_fullness,
               "constraints": [{**c.as_dict(), "passed": c.passed, "note": c.note} for c in result.checks]}
     try:
         with atomic_folder(out, inputs, force) as tmp:
@@ -259,7 +260,8 @@ def optimize(file, out, valve, seed, maxiter, force):
     except OutFolderError as err:
         _fail_out(err)
     click.echo(f"{result.valve}: fullness {result.start_fullness:.4f} -> {result.fullness:.4f} "
-               f"({result.evaluations} evaluations, {result.seconds:.1f} s)")
+               f"({result.evaluations} evaluations, {result.seconds:.1f} s); the polydyne (2, 10, 18, 26, 34) of the "
+               f"same lift, ramp and angle: {result.polydyne_fullness:.4f}")
     for key, value in result.optimum.items():
         click.echo(f"  {key} = {value:.6g}")
     for c in result.checks:

@@ -21,7 +21,7 @@ import numpy as np
 from scipy import optimize
 
 from ..design import run as run_design
-from ..laws import PowerPolynomialLaw
+from ..laws import PolydyneLaw, PowerPolynomialLaw
 from ..units import DEG, MM
 from .constraints import Limits, constraints, spring_reserve
 
@@ -138,8 +138,26 @@ class Result:
     evaluations: int
     seconds: float
     seconds_in_evaluations: float
+    polydyne_fullness: float = float("nan")
     spec_text: str = field(repr=False, default="")
     checks: list = field(repr=False, default_factory=list)
+
+
+def polydyne_fullness(law, exponents=(10, 18, 26, 34)):
+    """Fullness of the polydyne (2, p, q, r, s) with the same lift, cosine ramp of the same height and end velocity
+    and the same main angle as a power-polynomial ``law``, on the same definition (tappet lift over the valve-open
+    part): the serial-type reference of the comparison.
+
+    References
+    ----------
+    Valve-train practical works (n.d.), work 3 (the polydyne); UkrSURT Proceedings (2019) (the comparison).
+    """
+    poly = PolydyneLaw(law.lift_max, law.main_half_angle, *exponents, ramp_height=law.ramp_height,
+                       ramp_velocity=law.v_qb)
+    phi = np.linspace(poly.valve_opens, poly.valve_closes, 20001)
+    lift = poly.lift(phi)
+    area = float(np.sum((lift[1:] + lift[:-1]) * np.diff(phi)) / 2.0)
+    return area / ((poly.lift_max + poly.ramp_height) * (phi[-1] - phi[0]))
 
 
 def optimize_valve(spec, valve=None, limits=None, seed=1, maxiter=60, popsize=12, progress=None):
@@ -209,7 +227,7 @@ def optimize_valve(spec, valve=None, limits=None, seed=1, maxiter=60, popsize=12
     return Result(valve, {k: float(v) for k, v in zip(VARIABLES, x0)}, values, problem.evaluate(x0)[0],
                   checked.records["power_polynomial"]["tappet_fullness"],
                   dict(zip(problem.margin_names(), map(float, margins(best)))), problem.evaluations,
-                  time.perf_counter() - t0, problem.seconds, text, checks)
+                  time.perf_counter() - t0, problem.seconds, polydyne_fullness(checked.law), text, checks)
 
 
 def optimum_spec_text(spec, valve, values):
