@@ -161,6 +161,8 @@ LAW_CAMS = {
                  "target": {"law": "polydyne", "p": 8, "ramp": True, "ramp_end_velocity_mm_per_deg": 0.02}},
     "three_arc": {"law": "three_arc", "flank_angle_deg": 25.0},
     "tangent": {"law": "tangent"},
+    "power_polynomial": {"law": "power_polynomial", "ramp_angle_deg": 20.0, "ramp_end_velocity_mm_per_rad": 1.1,
+                         "peak_acceleration_mm_per_rad2": 40.0, "phi1_deg": 20.0},
     "table": {"law": "table", "table_file": "lobe.csv", "table_angle": "crank", "table_lift_at": "valve",
               "fit": "spline", "accuracy_mm": 0.005},
 }
@@ -801,6 +803,7 @@ DOCUMENTED_NULLS = {
     "cam_min_concave_radius_mm": "no concave stretch", "master_flat_lift_max_mm": "a master that is not convex",
     **dict.fromkeys(("max_wear_lift_error_mm", "max_wear_lift_error_cam_deg", "max_wear_lift_error_first_order_mm",
                      "max_wear_phase_shift_cam_deg", "master_rho_min_mm"), "a wheel that cannot grind the cam"),
+    "seating_velocity_m_s": "a speed whose recorded revolution has no seating",
 }
 """In memory a documented null may be NaN (numpy's "none"), which results.json writes as null."""
 
@@ -840,7 +843,8 @@ def null_problems(data, valve_names):
     out = []
     for path, v in _walk(data):
         if v is None or (isinstance(v, (float, np.floating)) and not math.isfinite(v)):
-            key = str(path[-1]) if path else ""
+            # the key of a list's item is the list's own (its entries share its documentation)
+            key = next((str(p) for p in reversed(path) if not isinstance(p, int)), "")
             if key in DOCUMENTED_NULLS and (v is None or v != v):
                 continue
             margin = key.endswith("margin") or (len(path) > 1 and path[-2] == "margins")

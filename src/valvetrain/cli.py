@@ -1,4 +1,4 @@
-"""Command line: ``valvetrain run | sweep | validate | compare | example``.
+"""Command line: ``valvetrain run | sweep | optimize | validate | compare | example``.
 
 Exit status: 0 on success, 2 for a specification or an output folder that cannot be used
 (one message per problem on standard error; nothing is written), 130 when interrupted
@@ -213,6 +213,63 @@ def _headline(d):
             f"{d.max_seating_velocity:.3g} m/s at {rpm(d.max_seating_velocity_speed)}; at the rated {rpm(r.speed)}: "
             f"min contact force {r.min_contact_force:.4g} N, seating velocity {r.seating_velocity:.3g} m/s, bounce "
             f"{r.bounce * 1e3:.3g} mm")
+
+
+@main.command()
+@click.argument("file", type=click.Path(dir_okay=False))
+@click.option("--out", "out", default="optimum", show_default=True, type=click.Path(), help=OUT_HELP)
+@click.option("--valve", default=None, metavar="NAME", help="The valve whose cam is optimised; default: the first "
+              "with law = \"power_polynomial\".")
+@click.option("--seed", default=1, show_default=True, type=int, help="Seed of the differential evolution.")
+@click.option("--maxiter", default=60, show_default=True, type=click.IntRange(1, 10000),
+              help="Generations of the differential evolution.")
+@click.option("--force", is_flag=True, help=FORCE_HELP)
+def optimize(file, out, valve, seed, maxiter, force):
+    """Maximise the fullness of a power-polynomial cam of FILE under its limits and write the optimum to --out.
+
+    Varies peak_acceleration_mm_per_rad2, phi1_deg, peak_position and trough_position with a differential
+    evolution and a local polish, under the pressure angle (30 deg), the grinding wheel against the concave radius
+    (170 mm) and the spring reserve of the valve's drive.spring_reserve (UkrSURT Proceedings (2019)). Writes
+    optimum.toml (a specification that valvetrain run accepts) and optimization.json (start, optimum, margins,
+    evaluations, time)."""
+    import json
+
+    from .outfolder import atomic_folder
+    from .synthesis.optimize import optimize_valve
+
+    spec = _load(file)
+    inputs = _check_out(out, [file], [spec], force)
+    with click.progressbar(length=maxiter, label="optimize", file=sys.stderr) as bar:
+        try:
+            result = optimize_valve(spec, valve, seed=seed, maxiter=maxiter,
+                                    progress=lambda generation, best: bar.update(1))
+        except SpecError as err:
+            _fail_spec(err)
+        except ValueError as err:
+            click.echo(f"error: {err}", err=True)
+            sys.exit(2)
+    record = {"valve": result.valve, "start": result.start, "optimum": result.optimum,
+              "start_fullness": result.start_fullness, "fullness": result.fullness,
+              "fast_margins": result.margins, "evaluations": result.evaluations, "seconds": result.seconds,
+              "seconds_in_evaluations": result.seconds_in_evaluations,
+              "polydyne_2_10_18_26_34_fullness": result.polydyne_fullness,
+              "constraints": [{**c.as_dict(), "passed": c.passed, "note": c.note} for c in result.checks]}
+    try:
+        with atomic_folder(out, inputs, force) as tmp:
+            (tmp / "optimum.toml").write_text(result.spec_text, encoding="utf-8")
+            (tmp / "optimization.json").write_text(json.dumps(record, indent=2) + "\n", encoding="utf-8")
+    except OutFolderError as err:
+        _fail_out(err)
+    click.echo(f"{result.valve}: fullness {result.start_fullness:.4f} -> {result.fullness:.4f} "
+               f"({result.evaluations} evaluations, {result.seconds:.1f} s); the polydyne (2, 10, 18, 26, 34) of the "
+               f"same lift, ramp and angle: {result.polydyne_fullness:.4f}")
+    for key, value in result.optimum.items():
+        click.echo(f"  {key} = {value:.6g}")
+    for c in result.checks:
+        state = "ok" if c.passed else "FAILS"
+        note = f" [{c.note}]" if c.note else ""
+        click.echo(f"  {c.quantity}{note} = {c.shown_value:.6g} {c.unit} ({c.range}), margin {c.margin:.4f} {state}")
+    click.echo(f"wrote {out}/ (optimum.toml, optimization.json)")
 
 
 @main.command()

@@ -135,7 +135,8 @@ class PerSpeed:
 
     speed: tuple[float, ...] = quantity("speed_rpm", "rpm", "engine speed")
     min_contact_force: tuple[float, ...] = quantity("min_contact_force_N", "N", "smallest cam contact force")
-    seating_velocity: tuple[float, ...] = quantity("seating_velocity_m_s", "m/s", "valve velocity at seating")
+    seating_velocity: tuple[Optional[float], ...] = quantity("seating_velocity_m_s", "m/s",
+                                                             "valve velocity at seating (null: no seating)")
     bounce: tuple[float, ...] = quantity("bounce_mm", "mm", "bounce height")
     bounce_count: tuple[int, ...] = quantity("bounce_count", label="bounces")
     jump: tuple[bool, ...] = quantity("jump", label="follower separation")
@@ -323,6 +324,11 @@ def _multi_train(valve, links, springs, lash, kw, at):
     return direct_train(m.tappet_kg, valve_mass, links[0], links[1], springs, lash, **kw)
 
 
+def _finite_or_none(x):
+    """``x``, or None where it is not finite (a speed whose recorded revolution has no seating)."""
+    return float(x) if np.isfinite(x) else None
+
+
 def speed_record(r, speed, epsilon):
     """A :class:`SpeedRecord` of a :class:`~valvetrain.dynamics.sweep.SpeedResult` at engine speed [rad/s]."""
     before = r.theta < r.seating_angle if np.isfinite(r.seating_angle) else np.ones(r.theta.size, dtype=bool)
@@ -443,7 +449,7 @@ def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, 
     reson = ResonanceRecord(res.omega0 / (2 * np.pi), res.order, res.force, res.amplitude, 100 * res.distortion,
                             tuple(int(o) for o in res.orders), tuple(100 * float(d) for d in res.spectrum_distortion))
     table = PerSpeed(tuple(float(s) for s in speeds), tuple(p.min_contact_force for p in per),
-                     tuple(p.seating_velocity for p in per), tuple(p.bounce for p in per),
+                     tuple(_finite_or_none(p.seating_velocity) for p in per), tuple(p.bounce for p in per),
                      tuple(p.bounce_count for p in per), tuple(bool(p.jump_intervals) for p in per),
                      tuple(p.max_lift_error for p in per))
 

@@ -399,7 +399,10 @@ def profile_stage(cam, valve, output):
         undercut = rho_min <= 0.0
     else:
         beta_max = extremum(lambda t: np.abs(law.profile(t, heel, "roller", roller)[2]), bp, "max")[1]
-        concave = extremum(lambda t: law.profile(t, heel, "roller", roller)[1], bp, "min")[1]
+        # the concave radius closest to zero is the most negative curvature (the radius itself passes through
+        # -inf at the inflections, where its minimum would be found)
+        curvature = extremum(lambda t: 1.0 / law.profile(t, heel, "roller", roller)[1], bp, "min")[1]
+        concave = 1.0 / curvature if curvature < 0.0 else 0.0
         contact = RollerContact(roller, beta_max, concave if concave + roller < 0.0 else None)
         undercut = bool(np.any(geometry.undercut_roller(rho + roller, roller)))
     return ProfileResult(table, contour, ctheta, rho_min, None if straight else rho_max, x_min,

@@ -9,9 +9,10 @@ from .dynamic import DynamicLaw
 from .harmonic import HarmonicLaw, harmonic_limit
 from .kurz import KurzLaw, kurz_coefficients
 from .polydyne import PolydyneLaw, PolynomialLaw, default_exponents, polydyne_coefficients
+from .power_polynomial import PowerPolynomialLaw
 from .ramps import make_ramp
 
 __all__ = [
     "AsymmetricLaw", "CombinedLaw", "ConstantAccelerationLaw", "DynamicLaw", "HarmonicLaw", "harmonic_limit", "TangentLaw", "ThreeArcLaw", "Extremes", "LiftLaw", "Segment", "SymmetricLaw", "KurzLaw", "kurz_coefficients", "PolydyneLaw",
-    "PolynomialLaw", "default_exponents", "make_ramp", "polydyne_coefficients",
+    "PolynomialLaw", "PowerPolynomialLaw", "default_exponents", "make_ramp", "polydyne_coefficients",
 ]

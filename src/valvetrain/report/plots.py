@@ -298,7 +298,7 @@ def dynamics_speed_figure(name, d, t):
     n = to_display(np.asarray(p.speed), "rpm")
     fig = Figure(figsize=(9, 8))
     axes = fig.subplots(3, 1, sharex=True)
-    axes[0].plot(n, np.abs(p.seating_velocity), color="C3")
+    axes[0].plot(n, np.abs(np.array(p.seating_velocity, dtype=float)), color="C3")   # None (no seating): a gap
     axes[0].set_ylabel(t["dyn_seating_velocity"])
     axes[1].plot(n, np.asarray(p.bounce) / MM, color="C1")
     axes[1].set_ylabel(t["dyn_bounce"])

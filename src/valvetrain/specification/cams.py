@@ -22,7 +22,8 @@ from .. import flow, masses
 from ..checks import check
 from ..files import read_lift_table, shown_path
 from ..laws import (AsymmetricLaw, CombinedLaw, ConstantAccelerationLaw, DynamicLaw, HarmonicLaw, KurzLaw, PolydyneLaw,
-                    PolynomialLaw, TangentLaw, ThreeArcLaw)
+                    PolynomialLaw, PowerPolynomialLaw, TangentLaw, ThreeArcLaw)
+from ..laws.power_polynomial import ARTICLE_EXPONENTS
 from ..laws.measured import CHECKING_HEIGHTS_MM, MIN_VALVE_LIFT_MM, TableLaw, fit_reason, lobe_table
 from ..laws.takeup import ClearanceTakeUp
 from ..units import DEG, MM, cam_per_crank, rad_to_deg
@@ -438,6 +439,73 @@ class DynamicCam(_CamBase, _RampKeys):
                           c.valve_opening_velocity_m_s / omega, c.drive_stiffness, mass, c.spring_rate,
                           c.spring_preload_N, omega, valve.rocker_ratio, valve.clearance * valve.rocker_ratio,
                           c.ramp_type, c.ramp_acceleration_fraction)
+
+
+_EXPONENT = _bounded(0.05, 50.0)
+"""A power of the power-polynomial law: below 0.05 a piece is a step, above 50 a spike."""
+
+
+@register
+class PowerPolynomialCam(_CamBase):
+    """[valves.NAME.cam] with law = "power_polynomial": the piecewise power-polynomial acceleration cam of the
+    UkrSURT Proceedings (2019) dynamic synthesis (reconstructed; the article's formulas are not available).
+
+    The ramp takes up ``clearance_mm`` (S_b) over ``ramp_angle_deg`` (phi_0) and ends at
+    ``ramp_end_velocity_mm_per_rad`` (v_qb); the positive part lasts ``phi1_deg`` with the peak
+    ``peak_acceleration_mm_per_rad2`` (a_qd) at ``peak_position``; the negative part's length phi_2 follows
+    from ``max_lift_mm``, and the rest of the main half angle is the top dwell."""
+
+    law: Literal["power_polynomial"]
+    reconstruction: Literal["R2", "R1"] = "R2"
+    ramp_angle_deg: SEGMENT_ANGLE
+    ramp_end_velocity_mm_per_rad: _bounded(0.05, 60.0, "mm/rad", low_open=False)
+    peak_acceleration_mm_per_rad2: _bounded(1.0, 10000.0, "mm/rad2", low_open=False)
+    phi1_deg: SEGMENT_ANGLE
+    peak_position: _bounded(0.0, 1.0, high_open=True) = 0.2
+    trough_position: _bounded(0.0, 1.0, high_open=True) = 0.8
+    n: _EXPONENT = ARTICLE_EXPONENTS["n"]
+    m: _EXPONENT = ARTICLE_EXPONENTS["m"]
+    p: _EXPONENT = ARTICLE_EXPONENTS["p"]
+    q: _EXPONENT = ARTICLE_EXPONENTS["q"]
+    r: _EXPONENT = ARTICLE_EXPONENTS["r"]
+    s: _EXPONENT = ARTICLE_EXPONENTS["s"]
+    t: _EXPONENT = ARTICLE_EXPONENTS["t"]
+    u: _EXPONENT = ARTICLE_EXPONENTS["u"]
+    sharpness: _bounded(1.0, 50.0, low_open=False) = 10.0
+
+    @model_validator(mode="after")
+    def _distinct_pairs(self):
+        for a, b in (("n", "m"), ("p", "q"), ("r", "s"), ("t", "u")):
+            if getattr(self, a) == getattr(self, b):
+                raise ValueError(f"exponents {a} = {b} = {getattr(self, a):g}: the two powers of a piece must differ "
+                                 "(allowed (0.05, 50] each)")
+        return self
+
+    def build(self, valve, engine):
+        c = valve.cam
+        exponents = {k: getattr(c, k) for k in ARTICLE_EXPONENTS}
+        try:
+            return PowerPolynomialLaw(_tappet_lift(valve), main_half_angle(valve, engine.strokes), valve.clearance,
+                                      c.ramp_angle, c.ramp_end_velocity, c.peak_acceleration,
+                                      c.phi1, c.peak_position, c.trough_position, exponents, c.reconstruction,
+                                      c.sharpness)
+        except ValueError as exc:
+            raise ValueError(f"{exc} (keys peak_acceleration_mm_per_rad2, phi1_deg, max_lift_mm, opens_deg, "
+                             "closes_deg)") from None
+
+    def problems(self, at, valve, engine):
+        out = _clearance_problem(at, valve)
+        half = main_half_angle_deg(valve, engine.strokes)
+        if self.phi1_deg >= half:
+            out.append(f"{at}.cam.phi1_deg = {self.phi1_deg:g} leaves no room for the negative part in the half-angle "
+                       f"phi_p0 = {half:g} cam deg; allowed phi1_deg < {half:g}")
+        return out
+
+    def records(self, law, valve, engine, nose):
+        """The responses of the synthesis: phi_2, the dwell, S_e, v_e and the fullness of the tappet lift."""
+        return {"power_polynomial": {"phi2_deg": float(np.degrees(law.phi2)), "dwell_deg": float(np.degrees(law.dwell)),
+                                     "S_e_mm": law.S_e / MM, "v_e_mm_per_rad": law.v_e / MM,
+                                     "tappet_fullness": float(law.fullness())}}, []
 
 
 @register

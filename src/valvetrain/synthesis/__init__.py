@@ -1,0 +1,1 @@
+"""Cam synthesis: design constraints as functions of a computed design (:mod:`.constraints`)."""

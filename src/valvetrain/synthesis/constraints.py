@@ -1,0 +1,298 @@
+"""Design constraints as functions of a computed valve design, for cam synthesis by optimisation.
+
+Each function takes a :class:`~valvetrain.design.valve.ValveDesign` (the typed stage results of
+:func:`~valvetrain.design.valve.design_valve`) and limits, and returns a :class:`~valvetrain.checks.Check`:
+value, bounds, unit, source and the relative :attr:`~valvetrain.checks.Check.margin` (>= 0 when the
+constraint holds), so that an optimiser takes its constraints from the margins.  A constraint that
+does not apply to the design (a pressure angle on a flat follower) returns None.
+:func:`constraints` gathers the applicable ones for a :class:`Limits`, :func:`worst_margin` the
+smallest margin.
+
+All values are SI; ``unit`` names how they are shown.
+"""
+
+from dataclasses import dataclass, fields
+import math
+
+import numpy as np
+
+from .. import strength
+from ..checks import check
+from ..units import DEG, MM, MPA
+
+SOURCE_SYNTHESIS = "UkrSURT Proceedings (2019)"
+SOURCE_CRITERIA = "Shang Hanji (1988), section 2.1"
+SOURCE_MANUAL = "Valve-train practical works (n.d.)"
+
+
+@dataclass(frozen=True)
+class Limits:
+    """The limits of a synthesis (SI); None switches a constraint off.
+
+    Attributes
+    ----------
+    max_pressure_angle : float
+        Largest pressure angle of a roller follower [rad] (30 deg: UkrSURT Proceedings (2019)).
+    grinding_wheel_radius : float
+        Radius of the grinding wheel [m]: a concave stretch of the profile must have |R| >= it
+        (170 mm: UkrSURT Proceedings (2019)).
+    min_spring_reserve : float
+        Smallest ratio of spring force to the train's inertia force where the acceleration is negative
+        (2.2: UkrSURT Proceedings (2019); 1.5-2.25: Valve-train practical works (n.d.), eq. 5.3).
+    max_acceleration, min_acceleration : float
+        Band of the tappet acceleration [m/s^2].
+    max_contact_stress : float
+        Allowable Hertz stress [Pa] (1200 MPa: Valve-train practical works (n.d.), eqs. 7.4-7.5).
+    cam_width : float
+        Contact width of cam and follower [m], needed for the Hertz stress.
+    contact_modulus : float
+        Effective modulus E_m [Pa] (steel on steel: E).
+    min_rho : float
+        Smallest profile radius of a flat follower's cam [m] (2 mm: Shang Hanji (1988), section 2.1).
+    ramp_velocity : tuple
+        Band of the tappet velocity analogue at the end of the ramp [m/rad] (0.008-0.022 mm/deg:
+        Valve-train practical works (n.d.), eq. 2.1).
+    seating_velocity : tuple
+        Band of the valve's seating (and opening) velocity at the rated speed [m/s] (a configurable default
+        of at most 0.5 m/s; no primary source states it).
+    min_piston_gap : float
+        Smallest valve-piston gap over the open event [m].
+    no_jump_factor : float
+        No follower separation up to this multiple of the rated speed (needs the valve's ``[dynamics]`` sweep to
+        reach it).
+    """
+
+    max_pressure_angle: float = 30.0 * DEG
+    grinding_wheel_radius: float = None
+    min_spring_reserve: float = 1.5
+    max_acceleration: float = None
+    min_acceleration: float = None
+    max_contact_stress: float = 1200.0 * MPA
+    cam_width: float = None
+    contact_modulus: float = strength.STEEL_MODULUS
+    min_rho: float = 2.0 * MM
+    ramp_velocity: tuple = (0.008 * MM / DEG, 0.022 * MM / DEG)
+    seating_velocity: tuple = (0.0, 0.5)
+    min_piston_gap: float = 0.0
+    no_jump_factor: float = None
+
+    @classmethod
+    def article(cls, **kw):
+        """The limits of the 26/27 diesel of UkrSURT Proceedings (2019): pressure angle <= 30 deg, concave radius
+        <= -170 mm, spring reserve >= 2.2 (its ramp ends at 6 mm/rad, outside the band of
+        Valve-train practical works (n.d.), which is switched off)."""
+        base = dict(max_pressure_angle=30.0 * DEG, grinding_wheel_radius=170.0 * MM, min_spring_reserve=2.2,
+                    ramp_velocity=None)
+        return cls(**{**base, **kw})
+
+
+def pressure_angle(design, limit):
+    """Largest pressure angle of a roller follower against ``limit`` [rad]; None for a flat follower.
+
+    References
+    ----------
+    Shang Hanji (1988), section 2.1; UkrSURT Proceedings (2019) (beta_max <= 30 deg).
+    """
+    if design.follower != "roller":
+        return None
+    return check("max pressure angle", design.profile.contact.max_pressure_angle, high=limit, unit="deg",
+                 source=SOURCE_SYNTHESIS, severity="failure")
+
+
+def concave_radius(design, wheel_radius):
+    """The grinding wheel against the concave stretches of a roller follower's cam: wheel radius / |R_min| <= 1.
+
+    Parameters
+    ----------
+    wheel_radius : float
+        Grinding wheel radius [m].
+
+    Returns
+    -------
+    Check or None
+        The ratio (0 where the profile has no concave stretch, so the margin is continuous); None for a flat
+        follower, whose cam has no concave stretch that is not an undercut.
+
+    Notes
+    -----
+    R_min is the concave profile radius closest to zero (Shang Hanji (1988), eq. 2.7); the wheel fits into the
+    concave stretch when |R_min| >= its radius, UkrSURT Proceedings (2019) (R_min <= -170 mm).
+    """
+    if design.follower != "roller":
+        return None
+    radius = design.profile.contact.min_concave_radius
+    ratio = 0.0 if radius is None else wheel_radius / abs(radius)
+    return check("grinding wheel radius / concave radius", ratio, high=1.0, source=SOURCE_SYNTHESIS,
+                 severity="failure", note="no concave stretch" if radius is None else "")
+
+
+def spring_reserve_value(design, preload=None, rate=None):
+    """Smallest ratio of the spring force to the train's inertia force where the valve decelerates.
+
+    Parameters
+    ----------
+    design : ValveDesign
+    preload, rate : float, optional
+        A spring of the caller's own at the valve [N, N/m]; default the design's chosen spring.
+
+    Returns
+    -------
+    float
+        min over the open event with j_v < 0 of (P_0 + C y) / (m_v |j_v|); +inf if the valve never decelerates.
+
+    Notes
+    -----
+    k_зп = min (P_0 + C (S - S_b)) / (M omega^2 |a|) (UkrSURT Proceedings (2019); Valve-train practical works
+    (n.d.), eq. 5.3 for the reserve K_z).
+    """
+    drive = design.drive
+    line = drive.lines["chosen"]
+    force = line.force(drive.lift) if preload is None else preload + rate * drive.lift
+    inertia = drive.inertia_force
+    loaded = inertia > 0.0
+    if not np.any(loaded):
+        return math.inf
+    return float(np.min(force[loaded] / inertia[loaded]))
+
+
+def spring_reserve(design, low, preload=None, rate=None):
+    """:func:`spring_reserve_value` against the smallest reserve ``low``."""
+    return check("spring reserve against inertia", spring_reserve_value(design, preload, rate), low=low,
+                 source=SOURCE_SYNTHESIS, severity="failure")
+
+
+def acceleration_band(design, low=None, high=None):
+    """Largest and smallest tappet acceleration at the rated speed against a band [m/s^2]: two checks."""
+    cam = design.cam
+    out = []
+    if high is not None:
+        out.append(check("max tappet acceleration", cam.max_acceleration, high=high, unit="m/s2",
+                         source=SOURCE_MANUAL))
+    if low is not None:
+        out.append(check("min tappet acceleration", cam.min_acceleration, low=low, unit="m/s2", source=SOURCE_MANUAL))
+    return out
+
+
+def contact_stress_value(design, width, modulus=strength.STEEL_MODULUS):
+    """Largest Hertz stress between cam and follower along the open event [Pa].
+
+    Notes
+    -----
+    The cam force P_T = i_k (P_spr + m_v j_v) at each angle of the design's table with the instantaneous profile
+    radius (Shang Hanji (1988), eqs. 2.4-2.5; Valve-train practical works (n.d.), eqs. 7.1, 7.4-7.5).
+    """
+    table, drive, i_k = design.table, design.drive, design.rocker_ratio
+    line = drive.lines["chosen"]
+    m_v = drive.masses.at_valve
+    open_ = table.valve_lift > 0.0
+    force = strength.cam_force(line.force(table.valve_lift[open_]), m_v * i_k * table.acceleration[open_], i_k)
+    rho = table.rho[open_]
+    curvature = 1.0 / rho + (1.0 / design.roller_radius if design.follower == "roller" else 0.0)
+    return float(np.max(strength.hertz_line_stress(force, width, curvature, modulus)))
+
+
+def contact_stress(design, high, width, modulus=strength.STEEL_MODULUS):
+    """:func:`contact_stress_value` against the allowable ``high`` [Pa]."""
+    return check("Hertz contact stress", contact_stress_value(design, width, modulus), high=high, unit="MPa",
+                 source=SOURCE_MANUAL + ", eqs. (7.4)-(7.5)", severity="failure")
+
+
+def rho_min(design, low):
+    """Smallest profile radius of a flat follower's cam against ``low`` [m]; None for a roller.
+
+    References
+    ----------
+    Shang Hanji (1988), section 2.1 (rho_min >= 2 mm).
+    """
+    if design.follower != "flat":
+        return None
+    return check("rho_min (cam profile)", design.profile.rho_min, low=low, unit="mm", source=SOURCE_CRITERIA,
+                 severity="failure")
+
+
+def ramp_velocity(design, band):
+    """Tappet velocity analogue at the end of the ramp dh/dphi [m/rad] against ``band`` (shown in mm/deg);
+    None for a law without a ramp."""
+    law = design.law
+    if law.ramp_angle <= 0.0:
+        return None
+    v = float(abs(law.derivatives(np.array([law.valve_opens]))[1][0]))
+    return check("ramp end velocity", v, *band, unit="mm/deg", source=SOURCE_MANUAL + ", eq. (2.1)")
+
+
+def seating_velocity(design, band):
+    """The valve's seating velocity at the rated speed against ``band`` [m/s] (a configurable default)."""
+    return check("valve seating velocity", design.cam.seating_velocity, *band, unit="m/s",
+                 source="a configurable default (no primary source)")
+
+
+def piston_gap(design, low):
+    """Smallest valve-piston gap over the open event against ``low`` [m]; None without ``piston_gap_tdc_mm``.
+
+    References
+    ----------
+    Shang Hanji (1988), eqs. (2.13)-(2.14).
+    """
+    if design.clearance is None:
+        return None
+    return check("valve-piston clearance", design.clearance.min_gap, low=low, unit="mm",
+                 source="Shang Hanji (1988), eqs. (2.13)-(2.14)", severity="failure", strict_low=True)
+
+
+def no_jump(design, factor):
+    """No follower separation up to ``factor`` x the rated speed, from the design's ``[dynamics]`` speed sweep.
+
+    Returns
+    -------
+    Check or None
+        The lowest engine speed with separation over the rated speed, low = ``factor``; without separation in the
+        sweep, the top of the swept range over the rated speed (noted).  None when the valve has no
+        ``[dynamics]`` section (no sweep was run).
+
+    References
+    ----------
+    Shang Hanji (1988), chapter 3 (the dynamic jump criterion); the 1-DOF or multi-mass train of
+    :mod:`valvetrain.design.dynamics`.
+    """
+    d = design.dynamics
+    if d is None:
+        return None
+    rated = d.at_rated_speed.speed
+    jumps = np.isfinite(d.jump_speed)
+    value = (d.jump_speed if jumps else d.speed_range[1]) / rated
+    return check("follower separation (jump) speed / rated speed", value, low=factor,
+                 source="Shang Hanji (1988), chapter 3",
+                 note="" if jumps else "no separation in the swept range: its top speed")
+
+
+def constraints(design, limits=Limits()):
+    """Every constraint of ``limits`` that applies to ``design``: a list of :class:`~valvetrain.checks.Check`.
+
+    Examples
+    --------
+    >>> from valvetrain.synthesis.constraints import Limits
+    >>> sorted(f.name for f in __import__("dataclasses").fields(Limits))[:3]
+    ['cam_width', 'contact_modulus', 'grinding_wheel_radius']
+    """
+    L = limits
+    out = acceleration_band(design, L.min_acceleration, L.max_acceleration)
+    if L.cam_width is not None and L.max_contact_stress is not None:
+        out.append(contact_stress(design, L.max_contact_stress, L.cam_width, L.contact_modulus))
+    for key, constraint in SINGLE_LIMITS:
+        if getattr(L, key) is not None:
+            out.append(constraint(design, getattr(L, key)))
+    return [c for c in out if c is not None]
+
+
+def worst_margin(checks):
+    """The smallest :attr:`~valvetrain.checks.Check.margin` of ``checks`` (+inf for none)."""
+    return min((c.margin for c in checks), default=math.inf)
+
+
+SINGLE_LIMITS = (("max_pressure_angle", pressure_angle), ("grinding_wheel_radius", concave_radius),
+                 ("min_spring_reserve", spring_reserve), ("min_rho", rho_min), ("ramp_velocity", ramp_velocity),
+                 ("seating_velocity", seating_velocity), ("min_piston_gap", piston_gap), ("no_jump_factor", no_jump))
+"""The limits of :class:`Limits` that one constraint function checks alone: (field, function)."""
+
+LIMIT_NAMES = tuple(f.name for f in fields(Limits))
+"""The fields of :class:`Limits`."""

@@ -1,0 +1,108 @@
+"""Constraints as functions of a design (margins for an optimiser), on the 26/27 diesel of UkrSURT Proceedings (2019)
+shipped as an example: its limits and its fullness against the article's claims, where the reconstruction allows."""
+
+from dataclasses import replace
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from valvetrain.checks import Check
+from valvetrain.design import run
+from valvetrain.laws import PolydyneLaw, PowerPolynomialLaw
+from valvetrain.specification.validate import load_spec, parse_spec
+from valvetrain.synthesis.constraints import (Limits, concave_radius, constraints, contact_stress_value, rho_min,
+                                              spring_reserve_value, worst_margin)
+
+EXAMPLE = Path(__file__).parents[1] / "examples" / "ukrsurt2019-diesel.toml"
+MM, DEG = 1e-3, np.pi / 180.0
+
+
+@pytest.fixture(scope="module")
+def article():
+    return run(load_spec(EXAMPLE)).valves["intake"]
+
+
+def with_cam(**keys):
+    """The example with other cam keys."""
+    text = EXAMPLE.read_text()
+    for k, v in keys.items():
+        text = "\n".join(f"{k} = {v}" if line.split("=")[0].strip() == k else line for line in text.splitlines())
+    return run(parse_spec(text, source_dir=EXAMPLE.parent)).valves["intake"]
+
+
+def by_name(checks):
+    return {c.quantity: c for c in checks}
+
+
+def test_every_constraint_is_a_check_with_a_margin(article):
+    found = constraints(article, Limits.article(max_acceleration=3500.0, min_acceleration=-1500.0, cam_width=40 * MM))
+    assert all(isinstance(c, Check) and np.isfinite(c.margin) for c in found)
+    names = set(by_name(found))
+    assert {"max pressure angle", "grinding wheel radius / concave radius", "spring reserve against inertia",
+            "max tappet acceleration", "min tappet acceleration", "Hertz contact stress", "valve seating velocity",
+            "valve-piston clearance"} <= names
+    assert "rho_min (cam profile)" not in names            # a roller follower
+    assert worst_margin(found) == min(c.margin for c in found)
+
+
+def test_the_article_cam_against_the_article_limits(article):
+    """At the article's a_qd, phi_1 (x_d = 0.2, x_g = 0.8): fullness 0.668 as claimed (0.667), pressure angle 26.8 deg
+    <= 30, spring reserve 2.2 by the designed spring, but the concave radius -102 mm, not <= -170 mm: the
+    reconstruction cannot make the article's optimum meet its own concave-radius limit (the discrepancy the
+    reconstruction states; the follower type of the article is not known)."""
+    c = by_name(constraints(article, Limits.article()))
+    assert article.records["power_polynomial"]["tappet_fullness"] == pytest.approx(0.667, abs=2e-3)
+    assert c["max pressure angle"].value / DEG == pytest.approx(26.8, abs=0.05) and c["max pressure angle"].passed
+    assert article.profile.contact.min_concave_radius / MM == pytest.approx(-102.4, abs=0.1)
+    assert c["grinding wheel radius / concave radius"].value == pytest.approx(170 / 102.4, rel=1e-3)
+    assert not c["grinding wheel radius / concave radius"].passed
+    assert c["spring reserve against inertia"].value >= 2.2 * (1 - 1e-6)
+
+
+def test_the_reconstruction_optimum_meets_every_limit():
+    """a_qd = 100.8 mm/rad2, phi_1 = 24.35 deg, x_d = 0.02, x_g = 0.78: every limit of the article holds, the
+    concave radius binds (-170 mm), fullness 0.660 (article: 0.667), 12 % above the polydyne (2, 10, 18, 26, 34)
+    of the same lift, ramp and angle and 9.6 % above the serial cam's 0.602."""
+    d = with_cam(peak_acceleration_mm_per_rad2=100.8, phi1_deg=24.35, peak_position=0.02, trough_position=0.78)
+    found = constraints(d, Limits.article())
+    assert worst_margin(found) > -2e-3
+    assert by_name(found)["grinding wheel radius / concave radius"].margin == pytest.approx(0.0, abs=2e-3)
+    eta = d.records["power_polynomial"]["tappet_fullness"]
+    assert eta == pytest.approx(0.660, abs=1e-3)
+    poly = PolydyneLaw(20.3 * MM, 68.75 * DEG, 10, ramp_height=0.8 * MM, ramp_velocity=6 * MM)
+    phi = np.linspace(poly.valve_opens, poly.valve_closes, 200001)
+    s = poly.lift(phi)
+    eta_poly = np.sum((s[1:] + s[:-1]) / 2 * np.diff(phi)) / (21.1 * MM * (phi[-1] - phi[0]))
+    assert eta / eta_poly > 1.12
+    assert eta / 0.602 > 1.09
+
+
+def test_margins_follow_the_design(article):
+    """A faster positive part raises the concave ratio; a weaker spring lowers the reserve in proportion."""
+    base = spring_reserve_value(article)
+    line = article.drive.lines["chosen"]
+    half = spring_reserve_value(article, line.preload / 2, line.rate / 2)
+    assert half == pytest.approx(base / 2, rel=1e-9)
+    assert concave_radius(article, 170 * MM).value > concave_radius(article, 100 * MM).value
+    assert contact_stress_value(article, 20 * MM) == pytest.approx(np.sqrt(2) * contact_stress_value(article, 40 * MM),
+                                                                   rel=1e-9)
+
+
+def test_flat_follower_rho_min(article):
+    assert rho_min(article, 2 * MM) is None
+    flat = replace(article, cam=replace(article.cam, follower="flat"))
+    assert rho_min(flat, 2 * MM).value == article.profile.rho_min
+
+
+def test_no_jump_from_a_short_sweep(article):
+    """A short 1-DOF sweep to 1.3 x the rated speed gives the separation constraint; without [dynamics], none."""
+    from valvetrain.synthesis.constraints import no_jump
+    assert no_jump(article, 1.1) is None
+    text = EXAMPLE.read_text() + ("\n[valves.intake.dynamics]\ndrive_stiffness_N_per_mm = 20000\n"
+                                  "speed_range_rpm = [500, 1300]\nspeeds = 9\nrevolutions = 2\nstep_cam_deg = 0.5\n")
+    d = run(parse_spec(text, source_dir=EXAMPLE.parent)).valves["intake"]
+    c = no_jump(d, 1.1)
+    assert c.value >= 0.5 and np.isfinite(c.margin)
+    assert c.passed == (c.value >= 1.1)
+    assert by_name(constraints(d, Limits.article(no_jump_factor=1.1)))[c.quantity] == c
