@@ -111,11 +111,28 @@ class _Progress:
 
 
 class _Main(click.Group):
-    """The command group; Ctrl-C ends any command with exit status 130 and one line, not a traceback."""
+    """The command group; Ctrl-C ends any command with exit status 130 and one line, not a traceback.
+
+    A library may turn the KeyboardInterrupt into an error of its own (a compiled extension or a callback that
+    catches it), so the SIGINT is remembered and any error after it is the interruption too."""
+
+    interrupted = False
+
+    @classmethod
+    def _on_sigint(cls, signum, frame):
+        cls.interrupted = True
+        raise KeyboardInterrupt
 
     def invoke(self, ctx):
+        if signal.getsignal(signal.SIGINT) is signal.default_int_handler:
+            signal.signal(signal.SIGINT, self._on_sigint)
         try:
             return super().invoke(ctx)
+        except Exception:
+            if not self.interrupted:
+                raise
+            click.echo("error: interrupted", err=True)
+            sys.exit(130)
         except KeyboardInterrupt:
             click.echo("error: interrupted", err=True)
             sys.exit(130)
