@@ -199,29 +199,50 @@ def blocks(n_sub):
     blocks by decreasing cost (speeds x sub-steps), the order in which the threads take them.  A block holds up
     to BLOCK_SPEEDS speeds, a multiple of 8 speeds (one AVX-512 register) when it is split.
     """
-    order = np.argsort(n_sub, kind="mergesort")
-    width = BLOCK_SPEEDS
-    starts = [0]
-    lo = 0
-    while lo < order.size:
-        hi = lo
-        while hi < order.size and n_sub[order[hi]] == n_sub[order[lo]]:
-            hi += 1
-        count = hi - lo
-        pieces = -(-count // width)
-        size = -(-count // pieces)
+    count = n_sub.size
+    order = np.empty(count, dtype=np.int64)
+    start = np.zeros(count + 1, dtype=np.int64)
+    cost = np.zeros(count + 1)
+    nb, filled, last = 0, 0, 0
+    while filled < count:                   # the speeds by increasing sub-step count (plain loops compile fast)
+        m = -1
+        for i in range(count):
+            if n_sub[i] > last and (m < 0 or n_sub[i] < m):
+                m = n_sub[i]
+        lo = filled
+        for i in range(count):
+            if n_sub[i] == m:
+                order[filled] = i
+                filled += 1
+        pieces = -(-(filled - lo) // BLOCK_SPEEDS)
+        size = -(-(filled - lo) // pieces)
         size = -(-size // 8) * 8 if size > 8 else size
         p = lo
-        while p < hi:
-            p = min(p + size, hi)
-            starts.append(p)
-        lo = hi
-    start = np.array(starts, dtype=np.int64)
-    nb = start.size - 1
-    cost = np.empty(nb)
-    for j in range(nb):
-        cost[j] = (start[j + 1] - start[j]) * n_sub[order[start[j]]]
-    return order, start, np.argsort(-cost, kind="mergesort")
+        while p < filled:
+            q = min(p + size, filled)
+            cost[nb] = (q - p) * m
+            nb += 1
+            start[nb] = q
+            p = q
+        last = m
+    seq = np.arange(nb)
+    for j in range(1, nb):                  # insertion sort by decreasing cost (a handful of blocks)
+        c, t = seq[j], j
+        while t > 0 and cost[seq[t - 1]] < cost[c]:
+            seq[t] = seq[t - 1]
+            t -= 1
+        seq[t] = c
+    return order, start[:nb + 1], seq
+
+
+@njit(cache=True)
+def _rows(a, b, n):
+    """Element end rows of a block's state: the node, or row n for the ground and n + 1 for the cam."""
+    ra, rb = np.empty_like(a), np.empty_like(b)
+    for e in range(a.size):
+        ra[e] = n + 1 if a[e] == CAM else (n if a[e] == GROUND else a[e])
+        rb[e] = n if b[e] == GROUND else b[e]
+    return ra, rb
 
 
 @njit(cache=True, parallel=True)
@@ -265,8 +286,7 @@ def integrate_network(omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_per_
         Largest deviation of each coil node from its quasi-static share of the valve motion [m].
     """
     n = inv_mass.size
-    ra = np.where(a == CAM, n + 1, np.where(a == GROUND, n, a))
-    rb = np.where(b == GROUND, n, b)
+    ra, rb = _rows(a, b, n)
     order, start, seq = blocks(n_sub)
     for q in prange(seq.size):
         j = seq[q]
