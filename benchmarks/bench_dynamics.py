@@ -7,7 +7,9 @@ Run on demand: ``python benchmarks/bench_dynamics.py``.  Measures, in one run:
 * warm timings of a 1-DOF sweep (200 speeds x 3 camshaft revolutions at 0.1 cam deg) and of
   a 4 + 8 + 8 pushrod train, on all cores and on one thread;
 * baseline (b): the same fixed-step RK4 arithmetic as a plain C loop, compiled here with
-  gcc -O2 and loaded with ctypes (single thread), checked to give the same lifts;
+  gcc -O2 and loaded with ctypes (single thread), checked to give the same lifts (the numba
+  kernel runs the speeds of a block in SIMD lanes, each lane doing the C loop's scalar
+  arithmetic, so the lifts agree to the bit; the C loop takes the speeds one after another);
 * baseline (a): the straightforward per-speed ``scipy.integrate.solve_ivp`` loop at equal
   accuracy: the fastest tolerance and largest step whose valve lift stays within 1 um of a
   tight-tolerance (rtol 1e-11) reference, timed on a sample of the speeds and scaled to the sweep.
@@ -245,7 +247,8 @@ def main():
     law = spec_law()
     threads = numba.config.NUMBA_NUM_THREADS
     print(f"valve-train dynamics benchmark: {SPEEDS.size} speeds x {REVOLUTIONS} revolutions at {STEP_DEG} cam deg, "
-          f"{os.cpu_count()} cores, numba {numba.__version__} ({threads} threads)")
+          f"{os.cpu_count()} cores, numba {numba.__version__} ({threads} threads), load average "
+          f"{os.getloadavg()[0]:.1f} (other processes share the cores: the times are best of 5)")
     first, cached = compile_times()
     print(f"numba compile time, first call with an empty cache: {first:.2f} s; second process with the cache: "
           f"{cached:.3f} s")
@@ -261,7 +264,8 @@ def main():
             run_c, c_lift = c_sweep(lib, law, train, SPEEDS)
             t_c = best(run_c)
             same = np.abs(c_lift - result.lift).max()
-            print(f"\n{name}: {train.network().mass.size} masses, sub-steps {sorted(set(result.substeps.tolist()))}")
+            print(f"\n{name}: {train.network().mass.size} masses, sub-steps {sorted(set(result.substeps.tolist()))}, "
+                  f"load average {os.getloadavg()[0]:.1f}")
             print(f"  numba, {threads} threads: {t_par * 1e3:8.1f} ms   (target < {target:g} s: "
                   f"{'met' if t_par < target else 'MISSED'})")
             print(f"  numba, 1 thread : {t_one * 1e3:8.1f} ms")
