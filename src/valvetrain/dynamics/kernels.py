@@ -30,7 +30,7 @@ disk (``cache=True``) so a second process pays no compile time.
 """
 
 import numpy as np
-from numba import njit, prange
+from numba import config, njit, prange
 
 GROUND = -1
 """Node index of the fixed head (seat, spring seat)."""
@@ -191,13 +191,19 @@ the time per speed falls by half from 8 to 64 speeds a block and no further beyo
 of 64-bit floats used); 64 still leaves several blocks per thread on a sweep of 200 speeds."""
 
 
+PARALLEL_BLOCKS = max(2, config.NUMBA_NUM_THREADS)
+"""Fewest blocks a group of 16 or more speeds is split into, so that a small call (a chunk of a sweep with a
+progress bar) still runs on every core.  Frozen into the cached kernel; the blocking never changes the results."""
+
+
 @njit(cache=True)
 def blocks(n_sub):
     """Speeds grouped into blocks of equal sub-step count, the blocks in the order of decreasing cost.
 
     Returns (order, start, seq): the speeds ``order[start[j]:start[j + 1]]`` form block j; ``seq`` lists the
     blocks by decreasing cost (speeds x sub-steps), the order in which the threads take them.  A block holds up
-    to BLOCK_SPEEDS speeds, a multiple of 8 speeds (one AVX-512 register) when it is split.
+    to BLOCK_SPEEDS speeds, a multiple of 8 speeds (one AVX-512 register) when it is split; a group of 16 or
+    more speeds is split into at least PARALLEL_BLOCKS blocks.
     """
     count = n_sub.size
     order = np.empty(count, dtype=np.int64)
@@ -214,7 +220,7 @@ def blocks(n_sub):
             if n_sub[i] == m:
                 order[filled] = i
                 filled += 1
-        pieces = -(-(filled - lo) // BLOCK_SPEEDS)
+        pieces = max(-(-(filled - lo) // BLOCK_SPEEDS), min((filled - lo) // 8, PARALLEL_BLOCKS))
         size = -(-(filled - lo) // pieces)
         size = -(-size // 8) * 8 if size > 8 else size
         p = lo
