@@ -253,14 +253,21 @@ def c_library(tmp):
     return ctypes.CDLL(str(lib))
 
 
-def c_sweep(lib, law, train, speeds):
-    """The C loop on the same network and excitation as :func:`valvetrain.dynamics.sweep.sweep` (valve lift)."""
+def c_inputs(law, train, speeds):
+    """Network, steps per revolution, angle step, sub-steps, excitation samples per step and the excitation, as
+    :func:`valvetrain.dynamics.sweep.sweep` makes them."""
     net = train.network()
     steps = int(round(360.0 / STEP_DEG))
     dtheta = 2 * np.pi / steps
     n_sub = substeps(net.highest_frequency(), speeds, dtheta)
     per_step = 2 * int(n_sub.max())
     _, u, du = cam_excitation(law, net.rocker_ratio, steps, per_step)
+    return net, steps, dtheta, n_sub, per_step, u, du
+
+
+def c_sweep(lib, law, train, speeds):
+    """The C loop on the same network and excitation as :func:`valvetrain.dynamics.sweep.sweep` (valve lift)."""
+    net, steps, dtheta, n_sub, per_step, u, du = c_inputs(law, train, speeds)
     out_x = np.empty((speeds.size, steps))
     out_f = np.empty((speeds.size, steps))
     arrays = [np.ascontiguousarray(x) for x in (speeds, n_sub.astype(np.int64), u, du, 1.0 / net.mass, net.x_init,
@@ -280,12 +287,7 @@ def c_sweep(lib, law, train, speeds):
 def c_block_sweep(lib, law, train, speeds):
     """The C loop in the numba kernel's order: the blocks of :func:`valvetrain.dynamics.kernels.blocks` one
     after another (single thread), each block's speeds in lockstep."""
-    net = train.network()
-    steps = int(round(360.0 / STEP_DEG))
-    dtheta = 2 * np.pi / steps
-    n_sub = substeps(net.highest_frequency(), speeds, dtheta)
-    per_step = 2 * int(n_sub.max())
-    _, u, du = cam_excitation(law, net.rocker_ratio, steps, per_step)
+    net, steps, dtheta, n_sub, per_step, u, du = c_inputs(law, train, speeds)
     n = net.mass.size
     ra = np.where(net.a == -2, n + 1, np.where(net.a == -1, n, net.a)).astype(np.int64)
     rb = np.where(net.b == -1, n, net.b).astype(np.int64)
