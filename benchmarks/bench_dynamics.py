@@ -7,7 +7,9 @@ Run on demand: ``python benchmarks/bench_dynamics.py``.  Measures, in one run:
 * warm timings of a 1-DOF sweep (200 speeds x 3 camshaft revolutions at 0.1 cam deg) and of
   a 4 + 8 + 8 pushrod train, on all cores and on one thread;
 * baseline (b): the same fixed-step RK4 arithmetic as a plain C loop, compiled here with
-  gcc -O2 and loaded with ctypes (single thread), checked to give the same lifts;
+  gcc -O2 and loaded with ctypes (single thread), checked to give the same lifts (the numba
+  kernel runs the speeds of a block in SIMD lanes, each lane doing the C loop's scalar
+  arithmetic, so the lifts agree to the bit; the C loop takes the speeds one after another);
 * baseline (a): the straightforward per-speed ``scipy.integrate.solve_ivp`` loop at equal
   accuracy: the fastest tolerance and largest step whose valve lift stays within 1 um of a
   tight-tolerance (rtol 1e-11) reference, timed on a sample of the speeds and scaled to the sweep.
@@ -29,6 +31,7 @@ from scipy.integrate import solve_ivp
 
 import numba
 
+from valvetrain.dynamics.kernels import blocks
 from valvetrain.dynamics.models import CoilSpring, one_mass_train, pushrod_train
 from valvetrain.dynamics.sweep import cam_excitation, substeps, sweep
 from valvetrain.laws import DynamicLaw
@@ -111,6 +114,85 @@ void integrate(int S, const double *omegas, const long *nsub, double dtheta, con
     }
     free(w);
 }
+
+/* The same arithmetic in the numba kernel's loop order: the speeds of a block (equal sub-steps) in lockstep,
+   state stored (row, speed), rows n and n + 1 the ground and the cam (inverse mass 0). */
+static void forces_block(int B, int ne, const double *x, const double *v, const double *im, const long *ra,
+                         const long *rb, const double *k, const double *d, const double *gap, const double *pre,
+                         const unsigned char *uni, int rows, double *acc, double *force) {
+    for (int i = 0; i < rows * B; i++) acc[i] = 0.0;
+    for (int e = 0; e < ne; e++) {
+        const double *xa = x + ra[e] * B, *xb = x + rb[e] * B, *va = v + ra[e] * B, *vb = v + rb[e] * B;
+        double *fa = acc + ra[e] * B, *fb = acc + rb[e] * B, *fe = force + e * B;
+        double ke = k[e], de = d[e], ge = gap[e], ma = im[ra[e]], mb = im[rb[e]];
+        if (uni[e]) {
+            for (int s = 0; s < B; s++) {
+                double delta = xa[s] - xb[s] - ge, f = ke * delta + de * (va[s] - vb[s]);
+                f = (delta > 0.0 && f > 0.0) ? f : 0.0;
+                fe[s] = f; fb[s] += f * mb; fa[s] -= f * ma;
+            }
+        } else {
+            double pe = pre[e];
+            for (int s = 0; s < B; s++) {
+                double f = pe + ke * (xa[s] - xb[s] - ge) + de * (va[s] - vb[s]);
+                fe[s] = f; fb[s] += f * mb; fa[s] -= f * ma;
+            }
+        }
+    }
+}
+
+void integrate_block(int B, const long *idx, const double *omegas, long ns, double dtheta, const double *cu,
+                     const double *cdu, long period, long per_step, long steps, long revs, int n, const double *imn,
+                     const double *x0, int ne, const long *ra, const long *rb, const double *k, const double *d,
+                     const double *gap, const double *pre, const unsigned char *uni, long valve, long cam_elem,
+                     double *out_x, double *out_f) {
+    int rows = n + 2, cam = n + 1, RB = rows * B;
+    double *w = calloc(10 * RB + 2 * ne * B + 2 * B + rows, sizeof(double));
+    double *x = w, *v = w + RB, *xs = w + 2 * RB, *vs = w + 3 * RB, *k1v = w + 4 * RB, *k2v = w + 5 * RB;
+    double *k3v = w + 6 * RB, *k4v = w + 7 * RB, *k2x = w + 8 * RB, *k3x = w + 9 * RB, *force = w + 10 * RB;
+    double *scratch = force + ne * B, *om = scratch + ne * B, *dt = om + B, *im = dt + B;
+    for (int i = 0; i < n; i++) im[i] = imn[i];
+    for (int s = 0; s < B; s++) {
+        om[s] = omegas[idx[s]]; dt[s] = dtheta / (ns * om[s]);
+        for (int i = 0; i < n; i++) x[i * B + s] = x0[i];
+    }
+    long half = per_step / (2 * ns), total = revs * steps * ns, first = (revs - 1) * steps * ns, j0 = 0, countdown = 0;
+    for (long step = 0; step < total; step++) {
+        long j1 = j0 + half, j2 = j1 + half;
+        if (j2 == period) j2 = 0;
+        for (int s = 0; s < B; s++) { x[cam * B + s] = cu[j0]; v[cam * B + s] = om[s] * cdu[j0]; }
+        forces_block(B, ne, x, v, im, ra, rb, k, d, gap, pre, uni, rows, k1v, force);
+        if (step >= first) {
+            if (countdown == 0) {
+                long r = (step - first) / ns;
+                countdown = ns;
+                for (int s = 0; s < B; s++) {
+                    out_x[idx[s] * steps + r] = x[valve * B + s];
+                    out_f[idx[s] * steps + r] = force[cam_elem * B + s];
+                }
+            }
+            countdown--;
+        }
+        for (int i = 0; i < n * B; i++) { xs[i] = x[i] + 0.5 * dt[i % B] * v[i]; vs[i] = v[i] + 0.5 * dt[i % B] * k1v[i]; }
+        for (int s = 0; s < B; s++) { xs[cam * B + s] = cu[j1]; vs[cam * B + s] = om[s] * cdu[j1]; }
+        forces_block(B, ne, xs, vs, im, ra, rb, k, d, gap, pre, uni, rows, k2v, scratch);
+        for (int i = 0; i < n * B; i++) {
+            k2x[i] = vs[i]; xs[i] = x[i] + 0.5 * dt[i % B] * k2x[i]; vs[i] = v[i] + 0.5 * dt[i % B] * k2v[i];
+        }
+        forces_block(B, ne, xs, vs, im, ra, rb, k, d, gap, pre, uni, rows, k3v, scratch);
+        for (int i = 0; i < n * B; i++) {
+            k3x[i] = vs[i]; xs[i] = x[i] + dt[i % B] * k3x[i]; vs[i] = v[i] + dt[i % B] * k3v[i];
+        }
+        for (int s = 0; s < B; s++) { xs[cam * B + s] = cu[j2]; vs[cam * B + s] = om[s] * cdu[j2]; }
+        forces_block(B, ne, xs, vs, im, ra, rb, k, d, gap, pre, uni, rows, k4v, scratch);
+        for (int i = 0; i < n * B; i++) {
+            x[i] += dt[i % B] / 6.0 * (v[i] + 2.0 * k2x[i] + 2.0 * k3x[i] + vs[i]);
+            v[i] += dt[i % B] / 6.0 * (k1v[i] + 2.0 * k2v[i] + 2.0 * k3v[i] + k4v[i]);
+        }
+        j0 = j2;
+    }
+    free(w);
+}
 """
 
 
@@ -171,14 +253,21 @@ def c_library(tmp):
     return ctypes.CDLL(str(lib))
 
 
-def c_sweep(lib, law, train, speeds):
-    """The C loop on the same network and excitation as :func:`valvetrain.dynamics.sweep.sweep` (valve lift)."""
+def c_inputs(law, train, speeds):
+    """Network, steps per revolution, angle step, sub-steps, excitation samples per step and the excitation, as
+    :func:`valvetrain.dynamics.sweep.sweep` makes them."""
     net = train.network()
     steps = int(round(360.0 / STEP_DEG))
     dtheta = 2 * np.pi / steps
     n_sub = substeps(net.highest_frequency(), speeds, dtheta)
     per_step = 2 * int(n_sub.max())
     _, u, du = cam_excitation(law, net.rocker_ratio, steps, per_step)
+    return net, steps, dtheta, n_sub, per_step, u, du
+
+
+def c_sweep(lib, law, train, speeds):
+    """The C loop on the same network and excitation as :func:`valvetrain.dynamics.sweep.sweep` (valve lift)."""
+    net, steps, dtheta, n_sub, per_step, u, du = c_inputs(law, train, speeds)
     out_x = np.empty((speeds.size, steps))
     out_f = np.empty((speeds.size, steps))
     arrays = [np.ascontiguousarray(x) for x in (speeds, n_sub.astype(np.int64), u, du, 1.0 / net.mass, net.x_init,
@@ -193,6 +282,39 @@ def c_sweep(lib, law, train, speeds):
             ctypes.c_long(net.valve), ctypes.c_long(net.cam_element), out_x.ctypes.data_as(ctypes.c_void_p),
             out_f.ctypes.data_as(ctypes.c_void_p))
     return lambda: lib.integrate(*args), out_x
+
+
+def c_block_sweep(lib, law, train, speeds):
+    """The C loop in the numba kernel's order: the blocks of :func:`valvetrain.dynamics.kernels.blocks` one
+    after another (single thread), each block's speeds in lockstep."""
+    net, steps, dtheta, n_sub, per_step, u, du = c_inputs(law, train, speeds)
+    n = net.mass.size
+    ra = np.where(net.a == -2, n + 1, np.where(net.a == -1, n, net.a)).astype(np.int64)
+    rb = np.where(net.b == -1, n, net.b).astype(np.int64)
+    order, start, _ = blocks(n_sub)
+    out_x = np.empty((speeds.size, steps))
+    out_f = np.empty((speeds.size, steps))
+    keep = [np.ascontiguousarray(x) for x in (speeds, u, du, 1.0 / net.mass, net.x_init, ra, rb, net.stiffness,
+                                                net.damping, net.gap, net.preload, net.unilateral.astype(np.uint8))]
+    ptr = [a.ctypes.data_as(ctypes.c_void_p) for a in keep]
+    lib.integrate_block.restype = None
+    calls = []
+    for j in range(start.size - 1):
+        idx = np.ascontiguousarray(order[start[j]:start[j + 1]], dtype=np.int64)
+        keep.append(idx)
+        calls.append((ctypes.c_int(idx.size), idx.ctypes.data_as(ctypes.c_void_p), ptr[0],
+                      ctypes.c_long(int(n_sub[idx[0]])), ctypes.c_double(dtheta), ptr[1], ptr[2], ctypes.c_long(u.size),
+                      ctypes.c_long(per_step), ctypes.c_long(steps), ctypes.c_long(REVOLUTIONS), ctypes.c_int(n),
+                      ptr[3], ptr[4], ctypes.c_int(net.a.size), *ptr[5:12], ctypes.c_long(net.valve),
+                      ctypes.c_long(net.cam_element), out_x.ctypes.data_as(ctypes.c_void_p),
+                      out_f.ctypes.data_as(ctypes.c_void_p)))
+
+    def run():
+        for args in calls:
+            lib.integrate_block(*args)
+        return keep
+
+    return run, out_x
 
 
 def ivp_lift(law, train, omega, rtol, theta, steps_per_rev=720):
@@ -245,7 +367,8 @@ def main():
     law = spec_law()
     threads = numba.config.NUMBA_NUM_THREADS
     print(f"valve-train dynamics benchmark: {SPEEDS.size} speeds x {REVOLUTIONS} revolutions at {STEP_DEG} cam deg, "
-          f"{os.cpu_count()} cores, numba {numba.__version__} ({threads} threads)")
+          f"{os.cpu_count()} cores, numba {numba.__version__} ({threads} threads), load average "
+          f"{os.getloadavg()[0]:.1f} (other processes share the cores: the times are best of 5)")
     first, cached = compile_times()
     print(f"numba compile time, first call with an empty cache: {first:.2f} s; second process with the cache: "
           f"{cached:.3f} s")
@@ -261,11 +384,17 @@ def main():
             run_c, c_lift = c_sweep(lib, law, train, SPEEDS)
             t_c = best(run_c)
             same = np.abs(c_lift - result.lift).max()
-            print(f"\n{name}: {train.network().mass.size} masses, sub-steps {sorted(set(result.substeps.tolist()))}")
+            run_cb, cb_lift = c_block_sweep(lib, law, train, SPEEDS)
+            t_cb = best(run_cb)
+            same_b = np.abs(cb_lift - result.lift).max()
+            print(f"\n{name}: {train.network().mass.size} masses, sub-steps {sorted(set(result.substeps.tolist()))}, "
+                  f"load average {os.getloadavg()[0]:.1f}")
             print(f"  numba, {threads} threads: {t_par * 1e3:8.1f} ms   (target < {target:g} s: "
                   f"{'met' if t_par < target else 'MISSED'})")
             print(f"  numba, 1 thread : {t_one * 1e3:8.1f} ms")
             print(f"  C gcc -O2, 1 thread: {t_c * 1e3:8.1f} ms  (same lifts within {same:.1e} m)")
+            print(f"  C gcc -O2 in the kernel's block order, 1 thread: {t_cb * 1e3:8.1f} ms  (same lifts within "
+                  f"{same_b:.1e} m; numba 1 thread / this: {t_one / t_cb:5.2f})")
             print(f"  numba 1 thread / C: {t_one / t_c:5.2f}   numba {threads} threads / C: {t_par / t_c:5.2f}   "
                   f"(target within {factor:g}x: {'met' if t_par / t_c <= factor else 'MISSED'})")
             if name == "1-DOF":

@@ -21,6 +21,7 @@ Events (Shang Hanji (1988), sections 3.1-3.2):
 from dataclasses import dataclass
 
 import numpy as np
+from numba import parallel_chunksize
 
 from .kernels import integrate_network
 
@@ -283,7 +284,8 @@ def sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, progress=None, ch
     progress : callable, optional
         ``progress(done, total)`` after each chunk of speeds (the compiled kernel itself never calls Python).
     chunk : int
-        Speeds per kernel call.
+        Speeds per kernel call when ``progress`` is given (without it, one call integrates every speed: the
+        kernel groups the speeds into SIMD blocks and deals them to the threads itself).
     bounce_tolerance : float
         Lift that counts as a bounce [m].
 
@@ -310,12 +312,15 @@ def sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, progress=None, ch
     out_f = np.empty((s_count, rec_elems.size, steps))
     out_clash = np.empty((s_count, n_elems))
     out_surge = np.empty((s_count, n_nodes))
+    chunk = chunk if progress is not None else s_count
     for lo in range(0, s_count, chunk):
         hi = min(lo + chunk, s_count)
-        integrate_network(speeds[lo:hi], n_sub[lo:hi], dtheta, u, du, per_step, steps, int(revolutions),
-                          1.0 / net.mass, net.x_init, net.a, net.b, net.stiffness, net.damping, net.gap, net.preload,
-                          net.unilateral, rec_nodes, rec_elems, net.clash_gap, net.valve, net.surge_weight,
-                          out_x[lo:hi], out_v[lo:hi], out_f[lo:hi], out_clash[lo:hi], out_surge[lo:hi])
+        with parallel_chunksize(1):                   # the threads take the blocks one by one, costliest first
+            integrate_network(speeds[lo:hi], n_sub[lo:hi], dtheta, u, du, per_step, steps, int(revolutions),
+                              1.0 / net.mass, net.x_init, net.a, net.b, net.stiffness, net.damping, net.gap,
+                              net.preload, net.unilateral, rec_nodes, rec_elems, net.clash_gap, net.valve,
+                              net.surge_weight, out_x[lo:hi], out_v[lo:hi], out_f[lo:hi], out_clash[lo:hi],
+                              out_surge[lo:hi])
         if progress is not None:
             progress(hi, s_count)
     coils = net.surge_weight > 0.0
