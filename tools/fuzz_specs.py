@@ -339,7 +339,8 @@ def _volume(phi, geom):
     bore, stroke, rod, cr, _ = geom
     r, lam = stroke / 2.0, stroke / 2.0 / rod
     a = np.radians(phi)
-    s = r * (1.0 - np.cos(a) + (1.0 - np.sqrt(1.0 - (lam * np.sin(a)) ** 2)) / lam)
+    with np.errstate(invalid="ignore"):       # a mutated rod shorter than the crank: a NaN volume, a malformed file
+        s = r * (1.0 - np.cos(a) + (1.0 - np.sqrt(1.0 - (lam * np.sin(a)) ** 2)) / lam)
     area = np.pi * bore ** 2 / 4.0
     return (area * stroke / (cr - 1.0) + area * s) / 1000.0        # cm3
 
