@@ -98,3 +98,13 @@ def test_a_grid_too_fine_for_one_revolution_is_refused():
         run(parse_spec(text))
     (problem,) = err.value.problems
     assert problem.startswith("valves.intake.hydraulic.reaches = 400: one revolution") and "allowed <=" in problem
+
+
+@pytest.mark.parametrize("lang, heading", [("en", "9. Hydraulic valve actuation"),
+                                           ("ru", "9. Гидравлический привод клапана")])
+def test_the_report_has_the_hydraulic_chapter(tmp_path, lang, heading):
+    results = run(parse_spec(with_section(SECTION)))
+    out = write_outputs(results, tmp_path / "out", lang=lang)
+    html = (out / "report.html").read_text(encoding="utf-8")
+    assert heading in html and "Shang Hanji (1988), ch. 7" in html and "Wylie and Streeter (1978)" in html
+    assert (out / "plots" / "intake_hydraulic.png").is_file() and "tables/intake_hydraulic.csv" in html

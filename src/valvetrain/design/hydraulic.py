@@ -46,6 +46,7 @@ class HydraulicResult:
     max_pressure: float = quantity("max_pressure_MPa", "MPa", "largest absolute pressure at either end of the pipe")
     max_pressure_angle: float = quantity("max_pressure_cam_deg", "cam deg", "where it is largest")
     min_pressure: float = quantity("min_pressure_MPa", "MPa", "smallest absolute pressure at either end of the pipe")
+    vapour_pressure: float = quantity("vapour_pressure_MPa", "MPa", "vapour pressure of the liquid (absolute)")
     cavitation: bool = quantity("cavitation", label="the pressure fell to the vapour pressure somewhere (held there, "
                                 "a column-separation model that does not track the cavity volume)")
     table_file: str = quantity("table", label="the pressures and lifts against camshaft angle in the output folder")
@@ -104,6 +105,7 @@ def hydraulic_stage(hydraulic, law, engine, name):
         rigid_lift=float(r.rigid_lift.max()), valve_lift=float(r.valve_lift.max()), lift_loss=r.lift_loss,
         opening_delay=None if math.isnan(opening) else opening, closing_delay=None if math.isnan(closing) else closing,
         max_pressure=r.max_pressure, max_pressure_angle=r.max_pressure_angle, min_pressure=float(ends.min()),
+        vapour_pressure=hydraulic.vapour_pressure,
         cavitation=bool(r.cavitation.any()), table_file=f"tables/{name}_hydraulic.csv", response=r)
     found = [check("hydraulic drive: smallest pressure above the vapour pressure", result.min_pressure,
                    low=hydraulic.vapour_pressure, strict_low=True, source=SOURCES, unit="MPa",
