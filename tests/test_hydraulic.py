@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from valvetrain.hydraulic import (PRESSURE, VELOCITY, Actuator, Fluid, HydraulicDrive, Pipe, Pump, Valve,
-                                  pipe_transient, simulate, wave_speed)
+                                  pipe_transient, simulate, speed_sweep, wave_speed)
 from valvetrain.laws import KurzLaw
 
 OMEGA = 2 * math.pi * 300 / 60
@@ -169,3 +169,29 @@ def test_one_cycle_runs_well_under_a_second(law):
     r = simulate(law, drive(reaches=40), OMEGA)
     assert time.perf_counter() - t < 0.25
     assert r.angle[-1] - r.angle[0] >= 2 * math.pi - 1e-9
+
+
+def test_speed_sweep_is_the_single_runs_and_the_loss_grows_with_speed(law):
+    """Each entry of the sweep is the single revolution at that speed; a faster cam leaves the compressible
+    column less time: the opening delay in camshaft angle grows with speed (no leakage)."""
+    d = drive(leakage=0.0, fill=0.0)
+    speeds = OMEGA * np.array([0.25, 0.5, 1.0])
+    s = speed_sweep(law, d, speeds)
+    one = simulate(law, d, speeds[1])
+    assert s.max_pressure[1] == one.max_pressure and s.lift_loss[1] == one.lift_loss
+    assert s.opening_delay[1] == one.delays()[0] and not s.cavitation.any()
+    assert np.all(np.diff(s.opening_delay) > 0)
+
+
+def test_slow_cam_loses_the_static_compression_of_the_column(law):
+    """Quasi-static limit (analytic): on a slow cam the valve at full lift Y - l holds its spring with the
+    pressure p = p_back + (F_0 + k (Y - l)) / A_a, and the lift lost is the liquid compressed by it,
+    l = C (p - p_0) / A_a with the compliance C = (V_p + V_a) / K + A L / (rho a^2) of chambers and pipe."""
+    d = drive(leakage=0.0, fill=0.0, friction=0.0)
+    r = simulate(law, d, 0.02 * OMEGA)
+    k, f0, aa = d.valve.spring_rate, d.valve.preload, d.actuator.piston_area
+    c = (d.pump.volume + d.actuator.volume) / d.fluid.bulk_modulus + d.pipe.area * d.pipe.length / (
+        d.fluid.density * d.wave_speed**2)
+    y = r.rigid_lift.max()
+    loss = c * (d.back_pressure - d.initial_pressure + (f0 + k * y) / aa) / aa / (1 + c * k / aa**2)
+    assert r.lift_loss == pytest.approx(loss, rel=2e-3)

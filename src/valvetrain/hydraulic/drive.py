@@ -275,3 +275,49 @@ def simulate(law, drive, cam_speed, start=None, span=2.0 * math.pi):
         leaked_volume=out[:, 4], pipe_stored_volume=out[:, 5] * pipe.area * reach / (impedance * a),
         cavitation_pump=flags[:, 0], cavitation_pipe=flags[:, 1], cavitation_actuator=flags[:, 2],
         wave_speed=a, time_step=dt)
+
+
+@dataclass(frozen=True)
+class SpeedSweep:
+    """The drive's response at several camshaft speeds (SI), one entry per speed.
+
+    Attributes
+    ----------
+    cam_speed : ndarray
+        Camshaft speed omega [rad/s].
+    max_pressure : ndarray
+        Largest pressure at either end of the pipe [Pa].
+    valve_lift, lift_loss : ndarray
+        Largest valve lift and the rigid drive's largest lift less it [m].
+    opening_delay, closing_delay : ndarray
+        Delays against the rigid drive at ``fraction`` of its largest lift [rad camshaft] (nan: never reached).
+    cavitation : ndarray of bool
+        The pressure fell to the vapour pressure somewhere during the revolution.
+    """
+
+    cam_speed: np.ndarray
+    max_pressure: np.ndarray
+    valve_lift: np.ndarray
+    lift_loss: np.ndarray
+    opening_delay: np.ndarray
+    closing_delay: np.ndarray
+    cavitation: np.ndarray
+
+
+def speed_sweep(law, drive, cam_speeds, fraction=0.05, **kwargs):
+    """One revolution of the drive (:func:`simulate`) at each camshaft speed of ``cam_speeds`` [rad/s].
+
+    ``fraction`` is the lift level of the delays (:meth:`DriveResult.delays`); ``kwargs`` go to :func:`simulate`.
+
+    References
+    ----------
+    Shang Hanji (1988), ch. 7.
+    """
+    speeds = np.asarray(cam_speeds, dtype=float)
+    rows = []
+    for omega in speeds:
+        r = simulate(law, drive, float(omega), **kwargs)
+        rows.append((r.max_pressure, float(r.valve_lift.max()), r.lift_loss, *r.delays(fraction),
+                     bool(r.cavitation.any())))
+    cols = list(zip(*rows, strict=True)) if rows else [()] * 6
+    return SpeedSweep(speeds, *(np.array(c, dtype=float) for c in cols[:5]), np.array(cols[5], dtype=bool))
