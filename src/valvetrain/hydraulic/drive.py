@@ -98,15 +98,19 @@ def _drive_kernel(plunger, dt, n_reaches, impedance, friction, area, vapour, p_i
         g[2] = act_area * beta
         ref[2] = 0.0
         pa = _chamber(act_capacity, p[n], -act_area * alpha, g, ref)
+        clamped = pa < vapour
+        if clamped:      # the valve is pushed by the vapour pressure, not by a tension of the liquid
+            pa = vapour
         v_new = alpha + beta * pa
         if y + dt * v_new < 0.0:
             v_new = -y / dt
             g[2] = 0.0
             pa = _chamber(act_capacity, p[n], -act_area * v_new, g, ref)
+            clamped = pa < vapour
+            if clamped:
+                pa = vapour
+        flags[k, 2] = clamped
         leaked += dt * act_leak * (pa - p_back)
-        if pa < vapour:
-            pa = vapour
-            flags[k, 2] = True
         p[n] = pa
         u[n] = (cp[n] - pa) / impedance
         v = v_new
