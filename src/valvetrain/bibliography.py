@@ -198,6 +198,12 @@ WORKS = {
         authors="Dowell, M.; Jarratt, P.",
         title="A modified regula falsi method for computing the root of an equation", kind="journal article",
         publisher="BIT, vol. 11, pp. 168-174", year="1971"),
+    "wylie1978": Work(
+        short="Wylie and Streeter (1978)",
+        authors="Wylie, E. B.; Streeter, V. L.",
+        title="Fluid Transients", kind="book", publisher="McGraw-Hill", place="New York", year="1978",
+        note="Wave speed in an elastic pipe (Korteweg), the Joukowsky pressure rise and the method of "
+             "characteristics for one-dimensional transient pipe flow with friction."),
     "shigley2011": Work(
         short="Shigley's Mechanical Engineering Design, 9th ed. (2011)",
         authors="Budynas, R. G.; Nisbett, J. K.",

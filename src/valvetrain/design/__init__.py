@@ -28,6 +28,7 @@ from .crank import CrankResults, CrankSummary, crank_stage, valve_timing
 from .drive import MassResult, SpringResult, StrengthResult
 from .dynamics import DynamicsResult
 from .grinding import GrindingResult
+from .hydraulic import HydraulicResult
 from .results import json_schema, quantity, record
 from .twostroke import TwoStrokeResults, TwoStrokeSummary, two_stroke_stage
 from .valve import (THROAT_AREA_SHARE_RANGE, CamResult, ClearanceResult, FlowResult, ProfileResult, ValveDesign,
@@ -299,7 +300,7 @@ def results_schema():
         "flow": json_schema(FlowResult), "piston_clearance": json_schema(ClearanceResult),
         "masses": json_schema(MassResult), "spring": json_schema(SpringResult),
         "strength": strength, "dynamics": json_schema(DynamicsResult),
-        "grinding": json_schema(GrindingResult)}}
+        "grinding": json_schema(GrindingResult), "hydraulic": json_schema(HydraulicResult)}}
     return {
         "$schema": "https://json-schema.org/draft/2020-12/schema",
         "$id": f"https://valvetrain.invalid/results-{__version__}.schema.json",

@@ -26,6 +26,7 @@ from ..units import DEG, MM
 from .drive import drive_record, drive_stage
 from .dynamics import dynamics_stage
 from .grinding import grinding_stage
+from .hydraulic import hydraulic_stage
 from .results import quantity, record
 
 ACCELERATION_LIMITS = (3500.0, -1500.0)
@@ -532,6 +533,7 @@ class ValveDesign:
     checks: list = field(default_factory=list)   # every valvetrain.checks.Check of the valve, passed or not
     dynamics: object = None        # DynamicsResult when the valve has a [dynamics] section
     grinding: object = None        # GrindingResult when the valve has a [grinding] section
+    hydraulic: object = None       # HydraulicResult when the valve has a [hydraulic] section
 
     @property
     def warnings(self):
@@ -567,6 +569,8 @@ class ValveDesign:
             out["dynamics"] = record(self.dynamics)
         if self.grinding is not None:
             out["grinding"] = record(self.grinding)
+        if self.hydraulic is not None:
+            out["hydraulic"] = record(self.hydraulic)
         return out
 
     def __repr__(self):
@@ -630,8 +634,15 @@ def design_valve(name, valve, engine, gas, output, law=None, progress=None):
         except ValueError as exc:
             raise SpecError([f"{at}.grinding.{exc}"]) from None
         found += grinding_found
+    hydraulic = None
+    if valve.hydraulic is not None:
+        try:
+            hydraulic, hydraulic_found = hydraulic_stage(valve.hydraulic, cam.law, engine, name)
+        except ValueError as exc:
+            raise SpecError([f"{at}.hydraulic.{exc}"]) from None
+        found += hydraulic_found
     return ValveDesign(name, valve.kind, valve.count, cam, flow_result, profile, clearance, records, drive,
-                       [c.named(name) for c in found], dynamics, grinding)
+                       [c.named(name) for c in found], dynamics, grinding, hydraulic)
 
 
 __all__ = ["CamResult", "ClearanceResult", "FlowResult", "LiftTable", "ProfileResult", "ValveDesign",

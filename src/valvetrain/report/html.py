@@ -13,6 +13,7 @@ from .. import __version__
 from ..checks import describe_range
 from ..design.dynamics import SOURCES as DYNAMICS_SOURCES
 from ..design.grinding import SOURCES as GRINDING_SOURCES
+from ..design.hydraulic import SOURCES as HYDRAULIC_SOURCES
 from ..design.results import record
 from ..tables import lift_table_columns
 from ..bibliography import WORKS, cited_in
@@ -217,6 +218,14 @@ def _grinding(name, v):
     return {"rows": [(k, val) for k, val in rec.items() if k != "wear_table"], "files": files}
 
 
+def _hydraulic(v):
+    """The hydraulic record for the report: its rows and the table's file."""
+    if v.hydraulic is None:
+        return None
+    rec = record(v.hydraulic)
+    return {"rows": [(k, val) for k, val in rec.items() if k != "table"], "table": rec["table"]}
+
+
 def _summary(results, t):
     """The report's first page: one row per valve (its open failures, warnings and info, and its accepted checks),
     the limits not met (ranked) and the failures the specification accepts."""
@@ -295,6 +304,7 @@ def render_report(results, plots, lang="en", folder=None):
             "warnings": v.warnings,
             "dynamics": _dynamics(s.get("dynamics")),
             "grinding": _grinding(name, v),
+            "hydraulic": _hydraulic(v),
         })
     first_page = _summary(results, TEXT[lang])
     crank = None
@@ -314,6 +324,7 @@ def render_report(results, plots, lang="en", folder=None):
         engine_inputs=_flatten(spec["engine"]), valves=valves, warnings=results.warnings, accepted=results.accepted,
         first_page=first_page, timing=plots.get("(timing)"), table_columns=TABLE_COLUMNS,
         dynamics_sources=DYNAMICS_SOURCES, grinding_sources=GRINDING_SOURCES,
+        hydraulic_sources=HYDRAULIC_SOURCES,
         step=REPORT_STEP_DEG, output=_flatten(spec["output"]), crank=crank, ports=ports,
     )
     template = env.get_template("report.html")

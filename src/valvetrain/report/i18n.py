@@ -450,6 +450,58 @@ TEXT["ru"].update({
     "jerk_sign_changes": "перемены знака рывка j",
 })
 
+
+TEXT["en"].update({
+    "hy_chapter": "9. Hydraulic valve actuation",
+    "hy_method": "The cam drives a plunger that feeds a pipe to an actuator piston on the valve. The pipe is solved by the "
+                 "method of characteristics with a constant Darcy friction factor (time step L / (N a), the wave speed "
+                 "a corrected for the elasticity of the wall); the pump and actuator chambers are compressible "
+                 "volumes (V / K) dp/dt = inflow − outflow with leakage, fill and relief valves; the valve is one mass "
+                 "on its spring, its damping and a rigid seat. Pressures are absolute; a pressure that falls to the "
+                 "vapour pressure is held there and flagged as cavitation (the cavity volume is not tracked). The "
+                 "rigid drive lifts the valve by the plunger lift times A_p / A_a; the delays are taken at 5 % of its "
+                 "largest lift",
+    "hy_title": "hydraulic drive: pressures and valve lift", "hy_pressure": "absolute pressure, MPa",
+    "hy_lift": "lift, mm", "hy_pump": "pump end", "hy_actuator": "actuator end", "hy_vapour": "vapour pressure",
+    "hy_valve": "valve", "hy_rigid": "rigid drive", "hy_cavitation": "cavitation", "hy_table": "Table against camshaft angle",
+    "hy_names": {
+        "speed_rpm": "engine speed, rpm", "wave_speed_m_s": "wave speed a in the pipe, m/s",
+        "time_step_us": "time step L / (N a), µs", "area_ratio": "area ratio A_p / A_a",
+        "rigid_lift_mm": "largest lift of the rigid drive, mm", "valve_lift_mm": "largest valve lift, mm",
+        "lift_loss_mm": "lift loss, mm", "opening_delay_cam_deg": "opening delay, cam deg",
+        "closing_delay_cam_deg": "closing delay (negative: early), cam deg",
+        "max_pressure_MPa": "largest pressure, MPa", "max_pressure_cam_deg": "where it is largest, cam deg",
+        "min_pressure_MPa": "smallest pressure, MPa", "vapour_pressure_MPa": "vapour pressure, MPa", "cavitation": "cavitation (pressure at the vapour pressure)",
+    },
+})
+
+TEXT["ru"].update({
+    "hy_chapter": "9. Гидравлический привод клапана",
+    "hy_method": "Кулачок приводит плунжер насоса, который по трубопроводу подаёт жидкость к поршню привода клапана. "
+                 "Трубопровод рассчитан методом характеристик с постоянным коэффициентом трения Дарси (шаг по "
+                 "времени L / (N a), скорость волны a с поправкой на упругость стенки); полости насоса и привода "
+                 "сжимаемы: (V / K) dp/dt = приток − отток, с утечками, подпиточным и предохранительным клапанами; "
+                 "клапан — одна масса на пружине, с демпфированием и жёстким седлом. Давления абсолютные; давление, "
+                 "упавшее до давления насыщенных паров, удерживается на нём и отмечается как кавитация (объём "
+                 "каверны не отслеживается). Жёсткий привод поднимает клапан на подъём плунжера, умноженный на "
+                 "A_p / A_a; запаздывания взяты на уровне 5 % его наибольшего подъёма",
+    "hy_title": "гидропривод: давления и подъём клапана", "hy_pressure": "абсолютное давление, МПа",
+    "hy_lift": "подъём, мм", "hy_pump": "у насоса", "hy_actuator": "у привода клапана",
+    "hy_vapour": "давление насыщенных паров", "hy_valve": "клапан", "hy_rigid": "жёсткий привод",
+    "hy_cavitation": "кавитация", "hy_table": "Таблица по углу поворота распределительного вала",
+    "hy_names": {
+        "speed_rpm": "частота вращения двигателя, мин⁻¹", "wave_speed_m_s": "скорость волны a в трубопроводе, м/с",
+        "time_step_us": "шаг по времени L / (N a), мкс", "area_ratio": "отношение площадей A_p / A_a",
+        "rigid_lift_mm": "наибольший подъём при жёстком приводе, мм", "valve_lift_mm": "наибольший подъём клапана, мм",
+        "lift_loss_mm": "потеря подъёма, мм", "opening_delay_cam_deg": "запаздывание открытия, град ПРВ",
+        "closing_delay_cam_deg": "запаздывание закрытия (минус: раньше), град ПРВ",
+        "max_pressure_MPa": "наибольшее давление, МПа", "max_pressure_cam_deg": "где оно наибольшее, град ПРВ",
+        "min_pressure_MPa": "наименьшее давление, МПа", "vapour_pressure_MPa": "давление насыщенных паров, МПа",
+        "cavitation": "кавитация (давление насыщенных паров)",
+    },
+})
+
+
 SYMBOLS = {
     "D": ("D", "bore, mm", "диаметр цилиндра, мм"), "S": ("S", "piston stroke, mm", "ход поршня, мм"),
     "ic": ("i<sub>c</sub>", "number of cylinders", "число цилиндров"),

@@ -705,6 +705,9 @@ QUANTITIES.update({
     "cam concave radius |rho| against the grinding wheel radius": (
         "concave radius of the cam |ρ| against the grinding wheel radius R_w",
         "радиус вогнутого участка кулачка |ρ| и радиус шлифовального круга R_w"),
+    "hydraulic drive: smallest pressure above the vapour pressure": (
+        "hydraulic drive: smallest pressure above the vapour pressure",
+        "гидропривод: наименьшее давление выше давления насыщенных паров"),
     "master cam: smallest radius of curvature (master roller undercut)": (
         "master cam: smallest radius of curvature (undercut by the master roller)",
         "копир: наименьший радиус кривизны (подрез роликом копира)"),

@@ -354,6 +354,33 @@ def grinding_figure(valve, t):
     return fig
 
 
+def hydraulic_figure(valve, t):
+    """The pressures at both ends of the pipe and the valve lift against the rigid drive's, against camshaft angle."""
+    r = valve.hydraulic.response
+    fig = Figure(figsize=(10, 7))
+    top, bottom = fig.subplots(2, 1, sharex=True)
+    x = rad_to_deg(r.angle)
+    top.plot(x, r.pump_pressure / 1e6, color="C0", lw=1.0, label=t["hy_pump"])
+    top.plot(x, r.actuator_pressure / 1e6, color="C3", lw=1.0, label=t["hy_actuator"])
+    top.axhline(valve.hydraulic.vapour_pressure / 1e6, color="0.5", lw=0.6, ls=":", label=t["hy_vapour"])
+    cav = r.cavitation
+    if cav.any():
+        top.plot(x[cav], np.full(int(cav.sum()), valve.hydraulic.vapour_pressure / 1e6), "x", color="k", ms=3,
+                 label=t["hy_cavitation"])
+    top.set_ylabel(t["hy_pressure"])
+    top.grid(alpha=0.3)
+    top.legend(loc="upper right", fontsize=8)
+    bottom.plot(x, r.valve_lift / MM, color="C2", label=t["hy_valve"])
+    bottom.plot(x, r.rigid_lift / MM, color="k", ls="--", lw=0.8, label=t["hy_rigid"])
+    bottom.set_xlabel(t["cam_deg"])
+    bottom.set_ylabel(t["hy_lift"])
+    bottom.grid(alpha=0.3)
+    bottom.legend(loc="upper right", fontsize=8)
+    fig.suptitle(f"{valve.name}: {t['hy_title']}")
+    fig.tight_layout()
+    return fig
+
+
 DYNAMICS_FIGURES = {"dynamics_map": dynamics_map_figure, "dynamics_speed": dynamics_speed_figure}
 
 
@@ -392,6 +419,8 @@ def write_plots(results, folder, lang="en"):
             written[name].update(write_dynamics_plots(name, valve.dynamics, folder, t))
         if valve.grinding is not None:
             written[name]["grinding"] = save(grinding_figure(valve, t), f"{name}_grinding.png")
+        if valve.hydraulic is not None:
+            written[name]["hydraulic"] = save(hydraulic_figure(valve, t), f"{name}_hydraulic.png")
     if results.valves:
         written["(timing)"] = save(timing_figure(results.valves, t), "valve_timing.png")
     for stage, figures in ENGINE_FIGURES.items():

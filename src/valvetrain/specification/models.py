@@ -268,6 +268,59 @@ class Grinding(_Model):
         return self
 
 
+class Hydraulic(_Model):
+    """[valves.NAME.hydraulic]: hydraulic valve actuation (Shang Hanji (1988), ch. 7): the valve's cam drives a
+    plunger that feeds a pipe to an actuator piston on the valve (one mass on a spring and a seat).
+
+    Pressures are absolute.  ``speed_rpm`` is the engine speed (the rated speed if left out).  ``pipe_wall_mm``
+    left out makes the pipe rigid.  ``fill_pressure_MPa`` gives the pump chamber a fill (check) valve from a supply
+    at that pressure, ``relief_pressure_MPa`` a relief valve opening at it.  The valve's mass, spring and damping are
+    the ones of the hydraulic drive and stand apart from the mechanical spring design."""
+
+    speed_rpm: Optional[_bounded(1.0, 30000.0, "rpm", low_open=False)] = None
+    plunger_diameter_mm: Length(1.0, 1000.0, low_open=False)
+    pump_volume_cm3: _bounded(0.001, 1e6, "cm3", low_open=False)
+    pipe_length_mm: Length(1.0, 100000.0, low_open=False)
+    pipe_diameter_mm: Length(0.5, 500.0, low_open=False)
+    pipe_wall_mm: Optional[Length(0.1, 200.0, low_open=False)] = None
+    pipe_wall_modulus_GPa: _bounded(1.0, 1000.0, "GPa", low_open=False) = 210.0
+    friction_factor: _bounded(0.0, 1.0, low_open=False) = 0.03
+    reaches: Annotated[int, Field(ge=1, le=400)] = 20
+    actuator_diameter_mm: Length(1.0, 1000.0, low_open=False)
+    actuator_volume_cm3: _bounded(0.001, 1e6, "cm3", low_open=False)
+    valve_mass_kg: _bounded(0.001, 1000.0, "kg", low_open=False)
+    spring_rate_N_per_mm: _bounded(0.0, 1e6, "N/mm", low_open=False)
+    spring_preload_N: _bounded(0.0, 1e7, "N", low_open=False)
+    damping_N_s_per_m: _bounded(0.0, 1e7, "N s/m", low_open=False) = 0.0
+    density_kg_m3: _bounded(100.0, 20000.0, "kg/m3", low_open=False) = 870.0
+    bulk_modulus_GPa: _bounded(0.01, 100.0, "GPa", low_open=False) = 1.5
+    vapour_pressure_MPa: _bounded(0.0, 1.0, "MPa", low_open=False) = 0.002
+    initial_pressure_MPa: _bounded(0.0, 100.0, "MPa", low_open=False) = 0.3
+    back_pressure_MPa: _bounded(0.0, 100.0, "MPa", low_open=False) = 0.1
+    leakage_cm3_per_s_MPa: _bounded(0.0, 1e6, "cm3/(s MPa)", low_open=False) = 0.0
+    fill_pressure_MPa: Optional[_bounded(0.0, 100.0, "MPa", low_open=False)] = None
+    fill_conductance_cm3_per_s_MPa: _bounded(0.0, 1e9, "cm3/(s MPa)") = 1000.0
+    relief_pressure_MPa: Optional[_bounded(0.0, 1000.0, "MPa")] = None
+    relief_conductance_cm3_per_s_MPa: _bounded(0.0, 1e9, "cm3/(s MPa)") = 1000.0
+
+    @model_validator(mode="after")
+    def _pressures_in_order(self):
+        problems = []
+        if self.vapour_pressure_MPa >= self.initial_pressure_MPa:
+            problems.append(f"vapour_pressure_MPa = {self.vapour_pressure_MPa:g} must be below initial_pressure_MPa = "
+                            f"{self.initial_pressure_MPa:g}")
+        if self.relief_pressure_MPa is not None and self.relief_pressure_MPa <= self.initial_pressure_MPa:
+            problems.append(f"relief_pressure_MPa = {self.relief_pressure_MPa:g} must be above initial_pressure_MPa = "
+                            f"{self.initial_pressure_MPa:g}")
+        if (self.relief_pressure_MPa is not None and self.fill_pressure_MPa is not None
+                and self.relief_pressure_MPa <= self.fill_pressure_MPa):
+            problems.append(f"relief_pressure_MPa = {self.relief_pressure_MPa:g} must be above fill_pressure_MPa = "
+                            f"{self.fill_pressure_MPa:g}")
+        if problems:
+            raise ValueError("; ".join(problems))
+        return self
+
+
 class Valve(_Model):
     """[valves.NAME]: one valve (or a set of same-name valves) of a cylinder."""
 
@@ -287,6 +340,7 @@ class Valve(_Model):
     parts: Parts = Parts()
     dynamics: Optional[Dynamics] = None
     grinding: Optional[Grinding] = None
+    hydraulic: Optional[Hydraulic] = None
 
     @property
     def layout(self):

@@ -20,6 +20,7 @@ from pydantic import BaseModel
 from ..units import DEG, MM, MPA, rpm_to_rad_s
 
 UNIT_SUFFIXES = (
+    ("_cm3_per_s_MPa", 1e-6 / MPA), ("_cm3", 1e-6), ("_GPa", 1e3 * MPA),
     ("_mm_per_rad2", MM), ("_mm_per_rad", MM), ("_mm_per_deg", MM / DEG), ("_N_per_mm", 1.0 / MM), ("_kg_mm2", MM**2), ("_mm2", MM**2), ("_mm", MM),
     ("_cam_deg", DEG), ("_deg", DEG), ("_rpm", rpm_to_rad_s(1.0)), ("_MPa", MPA),
 )

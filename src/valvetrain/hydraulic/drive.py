@@ -1,0 +1,327 @@
+"""Simulation of a hydraulic valve drive over camshaft angle: plunger chamber, pipe, actuator chamber, valve.
+
+The method is that of Shang Hanji (1988), ch. 7; the pipe is solved by the method of characteristics of
+Wylie and Streeter (1978) (:mod:`valvetrain.hydraulic.moc`) and the two chambers and the valve are
+implicit (backward Euler) boundary conditions of it, solved with the end characteristic in one linear
+step, so that a stiff (nearly incompressible) liquid is stable.
+
+Pump chamber at x = 0, with fill and relief valves and leakage:
+
+    (V_p / K) dp_0/dt = A_p dx_p/dt - A u(0) - Q_leak,p + Q_fill - Q_relief
+
+Actuator chamber at x = L and the valve (one degree of freedom on a rigid seat):
+
+    (V_a / K) dp_a/dt = A u(L) - A_a dy/dt - Q_leak,a
+    M d2y/dt2 = (p_a - p_back) A_a - F_0 - K_s y - C dy/dt + F_seat
+
+The seat holds y >= 0: a valve that would move into it stops there (an inelastic impact), and F_seat is
+the reaction that keeps it there.  The chamber volumes are held at their rest values (linear
+compressibility).  Pressures below the vapour pressure are clamped to it (see
+:mod:`valvetrain.hydraulic.moc`).
+"""
+
+from dataclasses import dataclass
+import math
+
+import numpy as np
+from numba import njit
+
+from ..bibliography import cite
+from .moc import characteristics, interior
+
+SOURCE = cite("shang1988", "ch. 7") + "; " + cite("wylie1978", "method of characteristics")
+"""Where the model comes from."""
+
+
+@njit(cache=True)
+def _chamber(capacity, old, source, conductances, references):
+    """Backward-Euler pressure of a chamber: capacity (P - old) = source + sum g_j (p_j - P) [Pa]."""
+    num = capacity * old + source
+    den = capacity
+    for j in range(conductances.size):
+        num += conductances[j] * references[j]
+        den += conductances[j]
+    return num / den
+
+
+@njit(cache=True)
+def _drive_kernel(plunger, dt, n_reaches, impedance, friction, area, vapour, p_init, p_back,
+                  pump_area, pump_capacity, pump_leak, p_fill, g_fill, p_relief, g_relief,
+                  act_area, act_capacity, act_leak, mass, rate, preload, damping):
+    steps = plunger.size
+    p = np.full(n_reaches + 1, p_init)
+    u = np.zeros(n_reaches + 1)
+    out = np.zeros((steps, 6))
+    flags = np.zeros((steps, 3), dtype=np.bool_)
+    y = 0.0
+    v = 0.0
+    leaked = 0.0
+    g = np.empty(3)
+    ref = np.empty(3)
+    out[0, 0] = p_init
+    out[0, 1] = p_init
+    n = n_reaches
+    for k in range(1, steps):
+        cp, cm = characteristics(p, u, impedance, friction)
+        flags[k, 1] = interior(p, u, cp, cm, impedance, vapour)
+        # pump chamber: fill valve or relief valve opened when the closed solution calls for it
+        source = pump_area * (plunger[k] - plunger[k - 1]) / dt
+        g[0] = area / impedance
+        ref[0] = cm[0]
+        g[1] = pump_leak
+        ref[1] = p_back
+        g[2] = 0.0
+        ref[2] = 0.0
+        p0 = _chamber(pump_capacity, p[0], source, g, ref)
+        if g_fill > 0.0 and p0 < p_fill:
+            g[2] = g_fill
+            ref[2] = p_fill
+            p0 = _chamber(pump_capacity, p[0], source, g, ref)
+        elif g_relief > 0.0 and p0 > p_relief:
+            g[2] = g_relief
+            ref[2] = p_relief
+            p0 = _chamber(pump_capacity, p[0], source, g, ref)
+        leaked += dt * (pump_leak * (p0 - p_back) - g[2] * (ref[2] - p0))
+        if p0 < vapour:
+            p0 = vapour
+            flags[k, 0] = True
+        p[0] = p0
+        u[0] = (p0 - cm[0]) / impedance
+        # actuator chamber and valve: the new valve speed is linear in the new chamber pressure
+        stiffness = mass / dt + rate * dt + damping
+        alpha = (mass * v / dt - p_back * act_area - preload - rate * y) / stiffness
+        beta = act_area / stiffness
+        g[0] = area / impedance
+        ref[0] = cp[n]
+        g[1] = act_leak
+        ref[1] = p_back
+        g[2] = act_area * beta
+        ref[2] = 0.0
+        pa = _chamber(act_capacity, p[n], -act_area * alpha, g, ref)
+        clamped = pa < vapour
+        if clamped:      # the valve is pushed by the vapour pressure, not by a tension of the liquid
+            pa = vapour
+        v_new = alpha + beta * pa
+        if y + dt * v_new < 0.0:
+            v_new = -y / dt
+            g[2] = 0.0
+            pa = _chamber(act_capacity, p[n], -act_area * v_new, g, ref)
+            clamped = pa < vapour
+            if clamped:
+                pa = vapour
+        flags[k, 2] = clamped
+        leaked += dt * act_leak * (pa - p_back)
+        p[n] = pa
+        u[n] = (cp[n] - pa) / impedance
+        v = v_new
+        y = y + dt * v
+        stored = 0.0
+        for i in range(n + 1):
+            stored += (0.5 if i == 0 or i == n else 1.0) * (p[i] - p_init)
+        out[k, 0] = p[0]
+        out[k, 1] = p[n]
+        out[k, 2] = y
+        out[k, 3] = v
+        out[k, 4] = leaked
+        out[k, 5] = stored
+    return out, flags
+
+
+@dataclass(frozen=True)
+class DriveResult:
+    """The response of a hydraulic valve drive over camshaft angle (SI).
+
+    Attributes
+    ----------
+    angle : ndarray
+        Camshaft angle [rad from the nose of the law].
+    time : ndarray
+        Time from the start [s].
+    plunger_lift : ndarray
+        Plunger (follower) lift h [m].
+    pump_pressure, actuator_pressure : ndarray
+        Absolute pressures at the pump end and the actuator end of the pipe [Pa].
+    valve_lift, valve_velocity : ndarray
+        y [m] and dy/dt [m/s].
+    rigid_lift : ndarray
+        Valve lift of the rigid, incompressible drive h A_p / A_a [m].
+    leaked_volume : ndarray
+        Net volume let out of the drive by the leaks and the relief valve, less the fill valve's [m^3].
+    pipe_stored_volume : ndarray
+        Liquid volume stored in the pipe by compression and wall expansion, against the rest state [m^3].
+    cavitation_pump, cavitation_pipe, cavitation_actuator : ndarray of bool
+        Where the pressure was clamped at the vapour pressure.
+    wave_speed, time_step : float
+        a [m/s] and dt [s].
+    """
+
+    angle: np.ndarray
+    time: np.ndarray
+    plunger_lift: np.ndarray
+    pump_pressure: np.ndarray
+    actuator_pressure: np.ndarray
+    valve_lift: np.ndarray
+    valve_velocity: np.ndarray
+    rigid_lift: np.ndarray
+    leaked_volume: np.ndarray
+    pipe_stored_volume: np.ndarray
+    cavitation_pump: np.ndarray
+    cavitation_pipe: np.ndarray
+    cavitation_actuator: np.ndarray
+    wave_speed: float
+    time_step: float
+
+    @property
+    def cavitation(self):
+        """True where the pressure was at the vapour pressure anywhere in the drive."""
+        return self.cavitation_pump | self.cavitation_pipe | self.cavitation_actuator
+
+    @property
+    def max_pressure(self):
+        """Largest pressure at either end of the pipe [Pa]."""
+        return float(max(self.pump_pressure.max(), self.actuator_pressure.max()))
+
+    @property
+    def max_pressure_angle(self):
+        """Camshaft angle of :attr:`max_pressure` [rad]."""
+        both = np.maximum(self.pump_pressure, self.actuator_pressure)
+        return float(self.angle[np.argmax(both)])
+
+    @property
+    def lift_loss(self):
+        """Largest rigid lift less the largest valve lift [m]."""
+        return float(self.rigid_lift.max() - self.valve_lift.max())
+
+    def crossings(self, lift, level):
+        """First rising and last falling camshaft angles [rad] where ``lift`` crosses ``level`` [m],
+        linearly interpolated ((nan, nan) if it never does)."""
+        above = np.flatnonzero(lift > level)
+        if above.size == 0 or above[0] == 0:
+            return math.nan, math.nan
+        i, j = above[0], above[-1]
+        rise = np.interp(level, lift[i - 1:i + 1], self.angle[i - 1:i + 1])
+        if j + 1 >= lift.size:
+            return float(rise), math.nan
+        fall = np.interp(level, lift[j:j + 2][::-1], self.angle[j:j + 2][::-1])
+        return float(rise), float(fall)
+
+    def delays(self, fraction=0.05):
+        """Opening and closing delays of the valve against the rigid drive [rad camshaft].
+
+        Parameters
+        ----------
+        fraction : float
+            The lift level of the comparison, a fraction of the largest rigid lift [-].
+
+        Returns
+        -------
+        (float, float)
+            Angle at which the valve passes the level on opening, less the rigid drive's; the same on
+            closing (positive: the valve is late).
+        """
+        level = fraction * float(self.rigid_lift.max())
+        open_v, close_v = self.crossings(self.valve_lift, level)
+        open_r, close_r = self.crossings(self.rigid_lift, level)
+        return open_v - open_r, close_v - close_r
+
+
+def simulate(law, drive, cam_speed, start=None, span=2.0 * math.pi):
+    """Response of a hydraulic valve drive to a cam lift law at a constant camshaft speed.
+
+    Parameters
+    ----------
+    law : valvetrain.laws.LiftLaw
+        The plunger (follower) lift h(theta) [m] against camshaft angle [rad].
+    drive : valvetrain.hydraulic.HydraulicDrive
+    cam_speed : float
+        Camshaft speed omega [rad/s].
+    start : float, optional
+        First camshaft angle [rad from the nose]; by default 0.1 rad before the law starts.
+    span : float
+        Camshaft angle simulated [rad] (one revolution by default).
+
+    Returns
+    -------
+    DriveResult
+        On the characteristic grid, dt = L / (N a).
+
+    Notes
+    -----
+    The equations are those of the module docstring.  The plunger speed of a step is the lift difference
+    over the step, so that the displaced volume is exact.  The rigid equivalent is h A_p / A_a.
+
+    References
+    ----------
+    Shang Hanji (1988), ch. 7; Wylie and Streeter (1978), method of characteristics.
+    """
+    fluid, pipe, pump, actuator, valve = drive.fluid, drive.pipe, drive.pump, drive.actuator, drive.valve
+    a = drive.wave_speed
+    dt = drive.time_step
+    start = law.start - 0.1 if start is None else start
+    steps = int(math.ceil(span / cam_speed / dt)) + 1
+    time = np.arange(steps) * dt
+    angle = start + cam_speed * time
+    lift = law.lift(angle)
+    impedance = fluid.density * a
+    friction = impedance * dt * pipe.friction_factor / (2.0 * pipe.diameter)
+    K = fluid.bulk_modulus
+    out, flags = _drive_kernel(
+        lift, dt, int(pipe.reaches), impedance, friction, pipe.area, fluid.vapour_pressure,
+        drive.initial_pressure, drive.back_pressure,
+        pump.plunger_area, pump.volume / (K * dt), pump.leakage, pump.fill_pressure, pump.fill_conductance,
+        pump.relief_pressure, pump.relief_conductance,
+        actuator.piston_area, actuator.volume / (K * dt), actuator.leakage,
+        valve.mass, valve.spring_rate, valve.preload, valve.damping)
+    reach = pipe.length / pipe.reaches
+    return DriveResult(
+        angle=angle, time=time, plunger_lift=lift, pump_pressure=out[:, 0], actuator_pressure=out[:, 1],
+        valve_lift=out[:, 2], valve_velocity=out[:, 3], rigid_lift=lift * drive.area_ratio,
+        leaked_volume=out[:, 4], pipe_stored_volume=out[:, 5] * pipe.area * reach / (impedance * a),
+        cavitation_pump=flags[:, 0], cavitation_pipe=flags[:, 1], cavitation_actuator=flags[:, 2],
+        wave_speed=a, time_step=dt)
+
+
+@dataclass(frozen=True)
+class SpeedSweep:
+    """The drive's response at several camshaft speeds (SI), one entry per speed.
+
+    Attributes
+    ----------
+    cam_speed : ndarray
+        Camshaft speed omega [rad/s].
+    max_pressure : ndarray
+        Largest pressure at either end of the pipe [Pa].
+    valve_lift, lift_loss : ndarray
+        Largest valve lift and the rigid drive's largest lift less it [m].
+    opening_delay, closing_delay : ndarray
+        Delays against the rigid drive at ``fraction`` of its largest lift [rad camshaft] (nan: never reached).
+    cavitation : ndarray of bool
+        The pressure fell to the vapour pressure somewhere during the revolution.
+    """
+
+    cam_speed: np.ndarray
+    max_pressure: np.ndarray
+    valve_lift: np.ndarray
+    lift_loss: np.ndarray
+    opening_delay: np.ndarray
+    closing_delay: np.ndarray
+    cavitation: np.ndarray
+
+
+def speed_sweep(law, drive, cam_speeds, fraction=0.05, **kwargs):
+    """One revolution of the drive (:func:`simulate`) at each camshaft speed of ``cam_speeds`` [rad/s].
+
+    ``fraction`` is the lift level of the delays (:meth:`DriveResult.delays`); ``kwargs`` go to :func:`simulate`.
+
+    References
+    ----------
+    Shang Hanji (1988), ch. 7.
+    """
+    speeds = np.asarray(cam_speeds, dtype=float)
+    rows = []
+    for omega in speeds:
+        r = simulate(law, drive, float(omega), **kwargs)
+        rows.append((r.max_pressure, float(r.valve_lift.max()), r.lift_loss, *r.delays(fraction),
+                     bool(r.cavitation.any())))
+    cols = list(zip(*rows, strict=True)) if rows else [()] * 6
+    return SpeedSweep(speeds, *(np.array(c, dtype=float) for c in cols[:5]), np.array(cols[5], dtype=bool))

@@ -1,0 +1,197 @@
+"""Hydraulic valve actuation (Shang Hanji (1988), ch. 7): the pipe by the method of characteristics against
+analytic travelling waves and the Joukowsky pressure rise, the drive against its rigid, incompressible limit,
+and the volume (mass) balance of the chambers and the pipe."""
+
+import math
+import time
+
+import numpy as np
+import pytest
+
+from valvetrain.hydraulic import (PRESSURE, VELOCITY, Actuator, Fluid, HydraulicDrive, Pipe, Pump, Valve,
+                                  pipe_transient, simulate, speed_sweep, wave_speed)
+from valvetrain.laws import KurzLaw
+
+OMEGA = 2 * math.pi * 300 / 60
+"""Camshaft speed of the cases [rad/s] (600 rpm crankshaft, four-stroke)."""
+
+
+@pytest.fixture(scope="module")
+def law():
+    """A Kurz law of 6.25 mm lift as the plunger lift (any lift law will do)."""
+    return KurzLaw(6.25e-3, 0.25e-3, 0.02e-3 * 180 / np.pi, *np.deg2rad([27.0, 6.0, 38.0]), 0.625)
+
+
+def drive(bulk_modulus=1.5e9, length=2.0, reaches=20, friction=0.03, leakage=1e-13, fill=1e-9, spring=2e5,
+          preload=1500.0, relief=math.inf, wall=210e9):
+    """An assumed drive: 40 mm plunger, 20 mm steel pipe (3 mm wall), 50 mm actuator, 5 kg valve."""
+    pipe = Pipe(length, 0.02, 0.003, wall, friction, reaches)
+    pump = Pump(math.pi * 0.04**2 / 4, 2e-4, leakage, 0.3e6, fill, relief, 1e-9 if relief < math.inf else 0.0)
+    return HydraulicDrive(Fluid(bulk_modulus=bulk_modulus), pipe, pump, Actuator(math.pi * 0.05**2 / 4, 2e-4, leakage),
+                          Valve(5.0, spring, preload, 200.0))
+
+
+def test_wave_speed_korteweg():
+    """Analytic identities: a rigid pipe carries sound at sqrt(K / rho); the Korteweg formula for the wall."""
+    assert wave_speed(1.5e9, 870.0) == pytest.approx(math.sqrt(1.5e9 / 870.0), rel=1e-15)
+    K, rho, d, e, E = 1.5e9, 870.0, 0.02, 0.003, 210e9
+    assert wave_speed(K, rho, d, e, E) == pytest.approx(math.sqrt(K / rho / (1 + K * d / (E * e))), rel=1e-15)
+    assert wave_speed(K, rho, d, e, E) < wave_speed(K, rho)
+
+
+def test_pressure_step_travels_at_the_wave_speed_and_doubles_at_a_closed_end():
+    """Analytic travelling wave of a frictionless pipe: a step dp let in at x = 0 at t = 0 travels at a with
+    the velocity dp / (rho a) behind it; the closed end at x = L reflects it, doubling the pressure there
+    from t = L/a, and the reservoir end sends it back as a relief wave: p(L) is a square wave between 0 and
+    2 dp of period 4 L / a.  The method of characteristics at Courant number one is exact here."""
+    rho, a, d, n, dp = 870.0, 1300.0, 0.02, 40, 1e5
+    dt = 2.0 / (n * a)                                           # L = 2 m
+    steps = 8 * n
+    left = np.full(steps, dp)                                    # reservoir pressure raised at the first step
+    ends, p, u = pipe_transient(np.zeros(n + 1), np.zeros(n + 1), rho, a, d, 0.0, dt, left, np.zeros(steps),
+                                PRESSURE, VELOCITY)
+    k = np.arange(steps)                                         # steps since the step entered, each row
+    expected = np.where(((k - n) // (2 * n)) % 2 == 0, 2 * dp, 0.0) * (k >= n)
+    assert ends[:, 2] == pytest.approx(expected, abs=1e-9 * dp)
+    # the front m - 1 reaches in after m < N steps: dp and dp / (rho a) behind it (x <= a t), rest in front
+    m = n // 2
+    ends, p, u = pipe_transient(np.zeros(n + 1), np.zeros(n + 1), rho, a, d, 0.0, dt, left[:m], np.zeros(m),
+                                PRESSURE, VELOCITY)
+    assert p[:m] == pytest.approx(dp) and u[:m] == pytest.approx(dp / (rho * a))
+    assert np.all(p[m:] == 0.0) and np.all(u[m:] == 0.0)
+
+
+def test_water_hammer_is_the_joukowsky_rise():
+    """Joukowsky: a valve at the end of a pipe fed from a reservoir, closed suddenly on a flow u0, raises
+    the pressure there by rho a u0 for 2 L / a, then drops it as far below for 2 L / a (frictionless)."""
+    rho, a, d, n, u0, p_r = 870.0, 1300.0, 0.02, 20, 2.0, 5e6
+    dt = 3.0 / (n * a)
+    steps = 4 * n
+    ends, _, _ = pipe_transient(np.full(n + 1, p_r), np.full(n + 1, u0), rho, a, d, 0.0, dt,
+                                np.full(steps, p_r), np.zeros(steps), PRESSURE, VELOCITY)
+    rise = rho * a * u0
+    assert ends[:2 * n - 1, 2] == pytest.approx(p_r + rise, rel=1e-12)
+    assert ends[2 * n:4 * n - 1, 2] == pytest.approx(p_r - rise, rel=1e-12)
+    # friction: the first rise is still rho a u0 above the steady pressure at the valve
+    lam = 0.03
+    steady = p_r - lam * rho * u0**2 / (2 * d) * 3.0 * np.linspace(0.0, 1.0, n + 1)
+    ends, _, _ = pipe_transient(steady, np.full(n + 1, u0), rho, a, d, lam, dt, np.full(steps, p_r),
+                                np.zeros(steps), PRESSURE, VELOCITY)
+    assert ends[0, 2] - steady[-1] == pytest.approx(rise, rel=1e-3)
+    # line packing: a rise of the order of the steady friction loss, not more, while the wave travels
+    loss = steady[0] - steady[-1]
+    assert np.all(np.diff(ends[:2 * n - 1, 2]) >= 0)
+    assert 0.5 * loss < ends[2 * n - 2, 2] - ends[0, 2] <= loss
+
+
+def test_vapour_pressure_clamps_the_pipe():
+    """A relief wave deeper than the pressure: the pressure stays at the vapour pressure (column separation)."""
+    rho, a, d, n = 870.0, 1300.0, 0.02, 10
+    ends, p, _ = pipe_transient(np.full(n + 1, 2e5), np.full(n + 1, 2.0), rho, a, d, 0.0, 1e-4,
+                                np.full(30, 2e5), np.zeros(30), PRESSURE, VELOCITY, vapour_pressure=2e3)
+    assert ends[:, 2].min() == pytest.approx(2e3) and p.min() >= 2e3
+
+
+def test_rigid_incompressible_limit_follows_the_cam_scaled_by_the_area_ratio(law):
+    """Analytic limit: a stiff liquid (K = 1e13 Pa) in a short pipe moves the valve as the plunger times
+    A_p / A_a, opening and closing with the cam."""
+    d = drive(bulk_modulus=1e13, length=0.05, reaches=2, leakage=0.0, fill=0.0, wall=math.inf)
+    r = simulate(law, d, OMEGA, start=law.start - 0.05, span=law.end - law.start + 0.1)
+    assert d.area_ratio == pytest.approx(0.64)
+    assert r.rigid_lift == pytest.approx(r.plunger_lift * 0.64)
+    assert np.abs(r.valve_lift - r.rigid_lift).max() < 1e-4 * r.rigid_lift.max()
+    assert abs(r.lift_loss) < 1e-4 * r.rigid_lift.max()
+    assert np.abs(r.delays()).max() < 1e-4
+    assert not r.cavitation.any()
+
+
+def test_compressible_drive_is_late_and_loses_lift(law):
+    """The real drive: the liquid's compliance delays the opening and loses lift against the rigid drive."""
+    r = simulate(law, drive(), OMEGA)
+    opening, closing = r.delays()
+    assert opening > 0 and closing < 0
+    assert 0 < r.lift_loss < 0.2 * r.rigid_lift.max()
+    assert r.max_pressure > d_open_pressure()
+    assert r.max_pressure_angle == pytest.approx(r.angle[np.argmax(np.maximum(r.pump_pressure, r.actuator_pressure))])
+    assert not r.cavitation.any()
+
+
+def d_open_pressure():
+    """Absolute pressure that lifts the assumed valve off its seat [Pa]: F_0 / A_a + p_back."""
+    return 1500.0 / (math.pi * 0.05**2 / 4) + 0.1e6
+
+
+@pytest.mark.parametrize("kwargs", [{}, {"friction": 0.0, "fill": 0.0}, {"leakage": 1e-12}])
+def test_volume_balance_of_chambers_and_pipe(law, kwargs):
+    """Mass conservation (linear compressibility): the plunger's displaced volume A_p h equals the volume
+    stored by compression in the two chambers, (V / K) (p - p_0), and in the pipe, plus A_a y and the net
+    leaked volume, at every step; the pipe's storage is summed on the grid, so the balance closes to the
+    grid's first-order error, which halves when the grid is refined twice."""
+    errors = []
+    for reaches in (20, 40):
+        d = drive(reaches=reaches, **kwargs)
+        r = simulate(law, d, OMEGA)
+        K, p0 = d.fluid.bulk_modulus, d.initial_pressure
+        displaced = d.pump.plunger_area * r.plunger_lift
+        stored = (d.pump.volume / K * (r.pump_pressure - p0) + d.actuator.volume / K * (r.actuator_pressure - p0)
+                  + r.pipe_stored_volume + d.actuator.piston_area * r.valve_lift + r.leaked_volume)
+        assert not r.cavitation.any()
+        errors.append(np.abs(displaced - stored).max() / displaced.max())
+    assert errors[0] < 5e-4 and errors[1] < 0.6 * errors[0]
+
+
+def test_leakage_without_fill_lowers_the_lift(law):
+    """Leakage lets out volume the plunger would have sent to the valve: less lift with more leakage."""
+    tight = simulate(law, drive(leakage=0.0, fill=0.0), OMEGA)
+    leaky = simulate(law, drive(leakage=2e-11, fill=0.0), OMEGA)
+    assert leaky.valve_lift.max() < tight.valve_lift.max()
+    assert leaky.leaked_volume[-1] > 0 and tight.leaked_volume[-1] == 0.0
+
+
+def test_cavitation_is_flagged_and_clamped(law):
+    """A weak spring on a fast cam: the valve overruns the liquid, the pressure falls to the vapour
+    pressure, where it is held and flagged."""
+    d = drive(spring=2e3, preload=200.0, fill=0.0)
+    r = simulate(law, d, 4 * OMEGA)
+    assert r.cavitation.any()
+    assert min(r.pump_pressure.min(), r.actuator_pressure.min()) == pytest.approx(d.fluid.vapour_pressure)
+
+
+def test_relief_valve_limits_the_pressure(law):
+    free = simulate(law, drive(), OMEGA)
+    limited = simulate(law, drive(relief=1.0e6), OMEGA)
+    assert free.max_pressure > 1.1e6 and limited.max_pressure < free.max_pressure
+
+
+def test_one_cycle_runs_well_under_a_second(law):
+    simulate(law, drive(), OMEGA)                                # compiled (or loaded from the cache)
+    t = time.perf_counter()
+    r = simulate(law, drive(reaches=40), OMEGA)
+    assert time.perf_counter() - t < 0.25
+    assert r.angle[-1] - r.angle[0] >= 2 * math.pi - 1e-9
+
+
+def test_speed_sweep_is_the_single_runs_and_the_loss_grows_with_speed(law):
+    """Each entry of the sweep is the single revolution at that speed; a faster cam leaves the compressible
+    column less time: the opening delay in camshaft angle grows with speed (no leakage)."""
+    d = drive(leakage=0.0, fill=0.0)
+    speeds = OMEGA * np.array([0.25, 0.5, 1.0])
+    s = speed_sweep(law, d, speeds)
+    one = simulate(law, d, speeds[1])
+    assert s.max_pressure[1] == one.max_pressure and s.lift_loss[1] == one.lift_loss
+    assert s.opening_delay[1] == one.delays()[0] and not s.cavitation.any()
+    assert np.all(np.diff(s.opening_delay) > 0)
+
+
+def test_slow_cam_loses_the_static_compression_of_the_column(law):
+    """Quasi-static limit (analytic): on a slow cam the valve at full lift Y - l holds its spring with the
+    pressure p = p_back + (F_0 + k (Y - l)) / A_a, and the lift lost is the liquid compressed by it,
+    l = C (p - p_0) / A_a with the compliance C = (V_p + V_a) / K + A L / (rho a^2) of chambers and pipe."""
+    d = drive(leakage=0.0, fill=0.0, friction=0.0)
+    r = simulate(law, d, 0.02 * OMEGA)
+    k, f0, aa = d.valve.spring_rate, d.valve.preload, d.actuator.piston_area
+    c = (d.pump.volume + d.actuator.volume) / d.fluid.bulk_modulus + d.pipe.area * d.pipe.length / (
+        d.fluid.density * d.wave_speed**2)
+    y = r.rigid_lift.max()
+    loss = c * (d.back_pressure - d.initial_pressure + (f0 + k * y) / aa) / aa / (1 + c * k / aa**2)
+    assert r.lift_loss == pytest.approx(loss, rel=2e-3)
