@@ -19,6 +19,7 @@ and only the command line imports it.
 import copy
 from concurrent.futures import ProcessPoolExecutor, as_completed
 import itertools
+import multiprocessing
 from pathlib import Path
 import tomllib
 
@@ -208,7 +209,8 @@ def evaluate(documents, workers=None, scheduler=None, progress=None):
     ----------
     documents : list of dict
     workers : int, optional
-        Local processes (:class:`concurrent.futures.ProcessPoolExecutor`); None or 1: this process.
+        Local processes (:class:`concurrent.futures.ProcessPoolExecutor`, started with ``spawn``); None or 1:
+        this process.
     scheduler : str, optional
         Address of a running Dask distributed scheduler (``tcp://host:8786``); needs the ``dask`` extra.
     progress : callable, optional
@@ -240,7 +242,8 @@ def evaluate(documents, workers=None, scheduler=None, progress=None):
                 records[index[future.key]] = future.result()
                 tick(done, total)
     elif workers and workers > 1:
-        with ProcessPoolExecutor(workers) as pool:
+        # fresh interpreters: a fork of a process whose compiled kernels run OpenMP threads is unsafe
+        with ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context("spawn")) as pool:
             futures = {pool.submit(evaluate_point, d): i for i, d in enumerate(documents)}
             for done, future in enumerate(as_completed(futures), 1):
                 records[futures[future]] = future.result()
