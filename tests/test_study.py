@@ -105,3 +105,12 @@ def test_invalid_point_is_a_row(tmp_path):
     assert refused["status"] == "refused" and refused["intake.fullness"] is None
     assert "phi1_deg + phi2_deg + phi3_deg = 84 cam deg must equal the half-angle" in refused["message"]
     assert "refused" in (out / "study.csv").read_text(encoding="utf-8").splitlines()[2]
+
+
+def test_unreachable_scheduler_is_one_line(spec_file, tmp_path):
+    pytest.importorskip("distributed")
+    result = CliRunner().invoke(main, ["study", str(spec_file), *GRID, "--out", str(tmp_path / "o"),
+                                       "--scheduler", "nonsense://x"])
+    assert result.exit_code == 2
+    assert result.output.splitlines()[-1].startswith("error: --scheduler nonsense://x: cannot connect")
+    assert not (tmp_path / "o").exists()

@@ -331,7 +331,7 @@ def study(file, grid_items, out, workers, scheduler, force):
     start = time.monotonic()
     try:
         records = evaluate(documents, workers, scheduler, lambda done, total: progress("study", done, total))
-    except ImportError as err:
+    except (ImportError, ConnectionError) as err:
         click.echo(f"error: {err}", err=True)
         sys.exit(2)
     finally:

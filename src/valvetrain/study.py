@@ -54,6 +54,10 @@ POINT_COLUMNS = [
 """Columns of every point after the grid values and the valves' columns, with their meanings."""
 
 
+CONNECT_SECONDS = 20
+"""How long :func:`evaluate` tries to reach a Dask scheduler."""
+
+
 class GridError(ValueError):
     """A grid that cannot be studied; the message is one line naming the key or the value."""
 
@@ -225,6 +229,8 @@ def evaluate(documents, workers=None, scheduler=None, progress=None):
     ------
     ImportError
         ``scheduler`` without dask's distributed package installed.
+    ConnectionError
+        No Dask scheduler answers at ``scheduler`` within :data:`CONNECT_SECONDS`.
     """
     total = len(documents)
     records = [None] * total
@@ -235,7 +241,11 @@ def evaluate(documents, workers=None, scheduler=None, progress=None):
             from distributed import Client, as_completed as dask_completed
         except ImportError:
             raise ImportError("--scheduler needs Dask's distributed package: pip install 'valvetrain[dask]'") from None
-        with Client(scheduler) as client:
+        try:
+            client = Client(scheduler, timeout=CONNECT_SECONDS)
+        except (OSError, ValueError, TypeError) as exc:
+            raise ConnectionError(f"--scheduler {scheduler}: cannot connect to a Dask scheduler there ({exc})") from None
+        with client:
             futures = client.map(evaluate_point, documents, pure=False)
             index = {f.key: i for i, f in enumerate(futures)}
             for done, future in enumerate(dask_completed(futures), 1):
