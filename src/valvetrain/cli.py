@@ -1,4 +1,4 @@
-"""Command line: ``valvetrain run | sweep | optimize | validate | compare | example``.
+"""Command line: ``valvetrain run | sweep | optimize | study | validate | compare | example``.
 
 Exit status: 0 on success, 2 for a specification or an output folder that cannot be used
 (one message per problem on standard error; nothing is written), 130 when interrupted
@@ -86,8 +86,8 @@ class _Progress:
 
     AFTER = 1.0
 
-    def __init__(self):
-        self.bar, self.start, self.shown = None, 0.0, 0
+    def __init__(self, what="speed sweep"):
+        self.bar, self.start, self.shown, self.what = None, 0.0, 0, what
 
     def __call__(self, name, done, total):
         now = time.monotonic()
@@ -96,7 +96,7 @@ class _Progress:
             self.start, self.shown = now, 0
             return
         if self.bar is None and (now - self.start) * total / done > self.AFTER and done < total:
-            self.bar = click.progressbar(length=total, label=f"{name}: speed sweep", file=sys.stderr)
+            self.bar = click.progressbar(length=total, label=f"{name}: {self.what}", file=sys.stderr)
             self.bar.__enter__()
         if self.bar is not None:
             self.bar.update(done - self.shown)
@@ -287,6 +287,72 @@ def optimize(file, out, valve, seed, maxiter, force):
         note = f" [{c.note}]" if c.note else ""
         click.echo(f"  {c.quantity}{note} = {c.shown_value:.6g} {c.unit} ({c.range}), margin {c.margin:.4f} {state}")
     click.echo(f"wrote {out}/ (optimum.toml, optimization.json)")
+
+
+@main.command()
+@click.argument("file", type=click.Path(dir_okay=False))
+@click.option("--grid", "grid_items", multiple=True, required=True, metavar="KEY=V1,V2,...",
+              help="A dotted key of FILE and its values (repeatable): valves.intake.cam.shape_factor=0.5,0.6,0.7; "
+                   "the points are the cartesian product of the grids.")
+@click.option("--out", "out", default="study", show_default=True, type=click.Path(), help=OUT_HELP)
+@click.option("--workers", default=1, show_default=True, type=click.IntRange(1, 1024),
+              help="Local processes evaluating the points.")
+@click.option("--scheduler", default=None, metavar="ADDRESS",
+              help="Evaluate the points on the Dask distributed cluster of this scheduler (tcp://host:8786); "
+                   "needs pip install 'valvetrain[dask]'.")
+@click.option("--force", is_flag=True, help=FORCE_HELP)
+def study(file, grid_items, out, workers, scheduler, force):
+    """Design every point of a grid of FILE's keys and write one table of results to --out.
+
+    Each point is FILE with the grid's values, validated and designed like `valvetrain run`; a point that is
+    refused is a row with its messages. Per point and valve: time-area, fullness, max/min tappet acceleration,
+    rho_min, max contact stress, the spring (wire, preload, whether it passes), the jump speed of a valve with a
+    [dynamics] section; per point the counts of failures and warnings. Writes study.csv and study.json."""
+    from .export import json_text, write_csv
+    from .outfolder import atomic_folder
+    from .study import GridError, POINT_COLUMNS, VALVE_COLUMNS, check_grid, evaluate, parse_grid, points, \
+        read_document, table, with_values
+
+    _load(file)
+    try:
+        grid = parse_grid(grid_items)
+        document = read_document(file)
+        check_grid(document, grid)
+        values = points(grid)
+        documents = [with_values(document, p) for p in values]
+    except GridError as err:
+        click.echo(f"error: {err}", err=True)
+        sys.exit(2)
+    if scheduler is not None and workers > 1:
+        click.echo("error: --workers and --scheduler: give one (the cluster's workers evaluate the points)", err=True)
+        sys.exit(2)
+    inputs = _check_out(out, [file], [], force)
+    progress = _Progress("design points")
+    start = time.monotonic()
+    try:
+        records = evaluate(documents, workers, scheduler, lambda done, total: progress("study", done, total))
+    except (ImportError, ConnectionError) as err:
+        click.echo(f"error: {err}", err=True)
+        sys.exit(2)
+    finally:
+        progress.close()
+    seconds = time.monotonic() - start
+    columns = table(grid, values, records)
+    meanings = dict(VALVE_COLUMNS) | dict(POINT_COLUMNS)
+    try:
+        with atomic_folder(out, inputs, force) as tmp:
+            write_csv(tmp / "study.csv", columns)
+            (tmp / "study.json").write_text(json_text({
+                "file": file, "grid": dict(grid),
+                "columns": {c: "grid value" if c in dict(grid) else meanings[c.rpartition(".")[2]] for c in columns},
+                "points": [dict(zip(columns, row, strict=True)) for row in zip(*columns.values(), strict=True)],
+            }) + "\n", encoding="utf-8")
+    except OutFolderError as err:
+        _fail_out(err)
+    refused = sum(r["status"] != "ok" for r in records)
+    backend = f"on {scheduler}" if scheduler else f"in {workers} processes" if workers > 1 else "in this process"
+    click.echo(f"{len(records)} design points ({refused} refused) {backend}, {seconds:.1f} s")
+    click.echo(f"wrote {out}/ (study.csv, study.json)")
 
 
 @main.command()

@@ -19,6 +19,10 @@ from .units import MM
 def _cell(x):
     if isinstance(x, str):
         return x
+    if x is None:
+        return ""
+    if isinstance(x, bool):
+        return str(x).lower()
     x = float(x)
     return f"{x:.10g}" if np.isfinite(x) else ""
 
@@ -28,7 +32,8 @@ def write_csv(path, columns, comments=()):
     (lines written with a leading ``# ``).
 
     Numbers are written with 10 significant digits; a quantity that is not finite (the infinite
-    radius of curvature of a straight flank) is an empty cell, never ``inf`` or ``nan``."""
+    radius of curvature of a straight flank) or None is an empty cell, never ``inf`` or ``nan``; booleans are
+    ``true`` and ``false``."""
     names = list(columns)
     with open(path, "w", newline="", encoding="utf-8") as fh:
         fh.writelines(f"# {line}\n" for line in comments)

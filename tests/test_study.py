@@ -1,0 +1,116 @@
+"""valvetrain study (issue 12 item 4): a grid of keys, one table, the same on every backend."""
+
+import json
+from pathlib import Path
+
+from click.testing import CliRunner
+import pytest
+
+from valvetrain.cli import main
+from valvetrain.specification import example_text
+
+ROOT = Path(__file__).resolve().parents[1]
+GRID = ["--grid", "valves.intake.cam.shape_factor=0.55,0.6,0.65", "--grid", "engine.rated_speed_rpm=6000,7000"]
+
+
+@pytest.fixture(scope="module")
+def spec_file(tmp_path_factory):
+    """The pushrod example with a short one-mass sweep, so that the jump speed is a column."""
+    text = (ROOT / "examples" / "pushrod-dynamics.toml").read_text(encoding="utf-8").replace("speeds = 200", "speeds = 12")
+    path = tmp_path_factory.mktemp("study") / "engine.toml"
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+def study(spec_file, out, *extra):
+    result = CliRunner().invoke(main, ["study", str(spec_file), *GRID, "--out", str(out), *extra])
+    assert result.exit_code == 0, result.output
+    return (out / "study.csv").read_text(encoding="utf-8"), json.loads((out / "study.json").read_text(encoding="utf-8"))
+
+
+@pytest.fixture(scope="module")
+def serial(spec_file, tmp_path_factory):
+    return study(spec_file, tmp_path_factory.mktemp("serial") / "out")
+
+
+def test_serial_table(serial):
+    csv, data = serial
+    points = data["points"]
+    assert len(points) == 6 and len(csv.splitlines()) == 7
+    assert [(p["valves.intake.cam.shape_factor"], p["engine.rated_speed_rpm"]) for p in points][:3] == [
+        (0.55, 6000), (0.55, 7000), (0.6, 6000)]
+    for p in points:
+        assert p["status"] == "ok" and p["message"] == ""
+        assert p["intake.time_area_mm2_s"] > 0 and 0 < p["intake.fullness"] < 1
+        assert p["intake.max_acceleration_m_s2"] > 0 > p["intake.min_acceleration_m_s2"]
+        assert p["intake.spring_wire_mm"] > 0 and p["intake.spring_preload_N"] > 0
+        assert isinstance(p["intake.spring_passes"], bool)
+        assert p["intake.rho_min_mm"] > 0 and p["intake.max_contact_stress_MPa"] > 0
+        assert isinstance(p["failures"], int) and isinstance(p["warnings"], int)
+        assert p["intake.jump_speed_rpm"] > 0
+    # a higher rated speed: higher accelerations, a smaller time-area
+    assert points[1]["intake.max_acceleration_m_s2"] > points[0]["intake.max_acceleration_m_s2"]
+    assert points[1]["intake.time_area_mm2_s"] < points[0]["intake.time_area_mm2_s"]
+
+
+def test_local_processes_give_the_same_table(spec_file, serial, tmp_path):
+    assert study(spec_file, tmp_path / "out", "--workers", "2") == serial
+
+
+def test_dask_cluster_gives_the_same_table(spec_file, serial, tmp_path):
+    distributed = pytest.importorskip("distributed")
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster:
+        assert study(spec_file, tmp_path / "out", "--scheduler", cluster.scheduler_address) == serial
+
+
+def test_scheduler_without_dask_is_an_error(spec_file, tmp_path, monkeypatch):
+    import sys
+
+    monkeypatch.setitem(sys.modules, "distributed", None)
+    result = CliRunner().invoke(main, ["study", str(spec_file), *GRID, "--out", str(tmp_path / "o"),
+                                       "--scheduler", "tcp://127.0.0.1:1"])
+    assert result.exit_code == 2
+    assert "pip install 'valvetrain[dask]'" in result.output
+    assert not (tmp_path / "o").exists()
+
+
+@pytest.mark.parametrize("grid, said", [
+    ("valves.intake.cam.shape_fctor=0.5", "valves.intake.cam.shape_fctor: unknown key"),
+    ("valves.intake.cam.shape_factor=0.5,7", "valves.intake.cam.shape_factor = 7: allowed"),
+    ("engine.rated_speed_rpm=6000,fast", "engine.rated_speed_rpm = 'fast'"),
+    ("valves.exhaust.cam.shape_factor=0.5", "no valve 'exhaust'"),
+    ("valves.intake.cam=0.5", "valves.intake.cam: a table"),
+    ("engine.rated_speed_rpm", "expected KEY=V1,V2,..."),
+    ("engine.rated_speed_rpm=6000,,7000", "engine.rated_speed_rpm=6000,,7000: an empty value"),
+])
+def test_invalid_grid_is_refused(tmp_path, grid, said):
+    f = tmp_path / "engine.toml"
+    f.write_text(example_text(), encoding="utf-8")
+    result = CliRunner().invoke(main, ["study", str(f), "--grid", grid, "--out", str(tmp_path / "o")])
+    assert result.exit_code == 2
+    (line,) = result.output.splitlines()
+    assert line.startswith("error: --grid ") and said in line
+    assert not (tmp_path / "o").exists()
+
+
+def test_invalid_point_is_a_row(tmp_path):
+    f = tmp_path / "engine.toml"
+    f.write_text(example_text(), encoding="utf-8")
+    out = tmp_path / "o"
+    result = CliRunner().invoke(main, ["study", str(f), "--grid", "valves.intake.cam.phi1_deg=27,40", "--out", str(out)])
+    assert result.exit_code == 0, result.output
+    assert "2 design points (1 refused)" in result.output
+    ok, refused = json.loads((out / "study.json").read_text(encoding="utf-8"))["points"]
+    assert ok["status"] == "ok" and ok["intake.fullness"] > 0
+    assert refused["status"] == "refused" and refused["intake.fullness"] is None
+    assert "phi1_deg + phi2_deg + phi3_deg = 84 cam deg must equal the half-angle" in refused["message"]
+    assert "refused" in (out / "study.csv").read_text(encoding="utf-8").splitlines()[2]
+
+
+def test_unreachable_scheduler_is_one_line(spec_file, tmp_path):
+    pytest.importorskip("distributed")
+    result = CliRunner().invoke(main, ["study", str(spec_file), *GRID, "--out", str(tmp_path / "o"),
+                                       "--scheduler", "nonsense://x"])
+    assert result.exit_code == 2
+    assert result.output.splitlines()[-1].startswith("error: --scheduler nonsense://x: cannot connect")
+    assert not (tmp_path / "o").exists()
