@@ -16,8 +16,6 @@ The old implementations live only here, as the baselines, copied from the commit
 each change.
 """
 
-import time
-
 import numpy as np
 from scipy.integrate import solve_ivp
 from scipy.optimize import brentq
@@ -28,17 +26,9 @@ from valvetrain.laws import KurzLaw, PolydyneLaw, TangentLaw
 from valvetrain.laws.base import Extremes
 from valvetrain.numerics import extremum
 
-REPEATS = 7
+from timing import best_time
+
 GEOM = dict(bore=0.080, radius=0.0385, lam=0.285)
-
-
-def best_time(fn, repeats=REPEATS):
-    times = []
-    for _ in range(repeats):
-        t0 = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - t0)
-    return min(times)
 
 
 def old_wiebe_pressure(phi, cycle, bore, radius, lam, strokes, k=0.0):

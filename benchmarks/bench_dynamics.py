@@ -36,6 +36,8 @@ from valvetrain.dynamics.models import CoilSpring, one_mass_train, pushrod_train
 from valvetrain.dynamics.sweep import cam_excitation, substeps, sweep
 from valvetrain.laws import DynamicLaw
 
+from timing import best_time
+
 RPM = np.pi / 30.0
 SPEEDS = np.linspace(400.0, 4000.0, 200) * RPM     # camshaft rpm, idle to over-speed of the spec's example
 REVOLUTIONS, STEP_DEG = 3, 0.1
@@ -215,15 +217,6 @@ def multi_mass():
                          rocker_stiffness=4e7, valve_stiffness=3e8, springs=[outer, inner], lash=0.3e-3)
 
 
-def best(fn, repeats=5):
-    times = []
-    for _ in range(repeats):
-        t0 = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - t0)
-    return min(times)
-
-
 def compile_times():
     """First call in a fresh process with an empty cache, then a second process that loads the cache [s]."""
     code = textwrap.dedent("""
@@ -377,15 +370,15 @@ def main():
         for name, train, target, factor in (("1-DOF", one_mass(), 0.1, 2.0), ("4+8+8", multi_mass(), 1.0, 3.0)):
             sweep(law, train, SPEEDS[:2])                                  # warm up
             result = sweep(law, train, SPEEDS)
-            t_par = best(lambda: sweep(law, train, SPEEDS))                # noqa: B023 (called at once)
+            t_par = best_time(lambda: sweep(law, train, SPEEDS), 5)        # noqa: B023 (called at once)
             numba.set_num_threads(1)
-            t_one = best(lambda: sweep(law, train, SPEEDS))                # noqa: B023
+            t_one = best_time(lambda: sweep(law, train, SPEEDS), 5)        # noqa: B023
             numba.set_num_threads(threads)
             run_c, c_lift = c_sweep(lib, law, train, SPEEDS)
-            t_c = best(run_c)
+            t_c = best_time(run_c, 5)
             same = np.abs(c_lift - result.lift).max()
             run_cb, cb_lift = c_block_sweep(lib, law, train, SPEEDS)
-            t_cb = best(run_cb)
+            t_cb = best_time(run_cb, 5)
             same_b = np.abs(cb_lift - result.lift).max()
             print(f"\n{name}: {train.network().mass.size} masses, sub-steps {sorted(set(result.substeps.tolist()))}, "
                   f"load average {os.getloadavg()[0]:.1f}")

@@ -11,7 +11,6 @@ laws differ by up to some 1e-14 of a row's scale: the round-off of their alterna
 (both implementations are that far from an 80-bit evaluation), not a change of formula.
 """
 
-import time
 
 import numpy as np
 
@@ -19,17 +18,9 @@ from valvetrain.laws import KurzLaw, PolydyneLaw
 from valvetrain.laws.base import segment_index
 from valvetrain.laws.polydyne import _falling
 
+from timing import best_time
+
 N = 1_000_000
-REPEATS = 7
-
-
-def best_time(fn):
-    times = []
-    for _ in range(REPEATS):
-        t0 = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - t0)
-    return min(times)
 
 
 def old_ramp(ramp, phi):
