@@ -223,8 +223,8 @@ def invert_angle(angle_of, target, samples=4097):
     """The parameters theta in [-pi, pi] at which an angle ``angle_of(theta)`` [rad] that grows by 2 pi over the
     revolution equals each ``target`` [rad], all at once.
 
-    Each target is bracketed on ``samples`` parameters and the bracket bisected to the round-off of the angle (a
-    polar angle of a contour point, the direction of a normal): exact, not interpolated.
+    Each target is bracketed on ``samples`` parameters and the bracket refined by :func:`bracketed_roots` to the
+    round-off of the angle (a polar angle of a contour point, the direction of a normal): exact, not interpolated.
 
     Examples
     --------
@@ -233,25 +233,19 @@ def invert_angle(angle_of, target, samples=4097):
     (0.920415, 1.0)
     """
     target = np.asarray(target, dtype=float)
+    goal = target.ravel()
     theta = np.linspace(-np.pi, np.pi, samples)
     a = np.unwrap(angle_of(theta))
-    wrapped = (target - a[0]) % (2.0 * np.pi) + a[0]
+    wrapped = (goal - a[0]) % (2.0 * np.pi) + a[0]
     k = np.clip(np.searchsorted(a, wrapped), 1, samples - 1)
     lo, hi = theta[k - 1], theta[k]
 
     def miss(t):
-        return np.angle(np.exp(1j * (angle_of(t) - target)))
+        return np.angle(np.exp(1j * (angle_of(t) - goal)))
 
     f_lo, f_hi = miss(lo), miss(hi)
-    # a root on a bracket's end may show no sign change by round-off: take the nearer end
+    # a root on a bracket's end may show no sign change by round-off: take the nearer end (an empty bracket)
     edge = np.sign(f_lo) == np.sign(f_hi)
     at = np.where(np.abs(f_lo) <= np.abs(f_hi), lo, hi)
     lo, hi = np.where(edge, at, lo), np.where(edge, at, hi)
-    f_lo = miss(lo)
-    for _ in range(60):
-        mid = 0.5 * (lo + hi)
-        f_mid = miss(mid)
-        left = np.sign(f_mid) == np.sign(f_lo)
-        lo, f_lo = np.where(left, mid, lo), np.where(left, f_mid, f_lo)
-        hi = np.where(left, hi, mid)
-    return 0.5 * (lo + hi)
+    return bracketed_roots(miss, lo, hi, miss(lo), miss(hi)).reshape(target.shape)
