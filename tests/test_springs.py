@@ -399,12 +399,12 @@ def test_spring_keys_of_the_specification():
     """material names a grade (or several, all searched); a property key replaces the grade's value; the wire
     range, installed length and seat load are keys; a name or range that admits no spring is refused."""
     from valvetrain.design import run
-    from valvetrain.design.drive import _spring_options
+    from valvetrain.design.drive import spring_options
     from valvetrain.specification import SpecError, si
 
     both = _with_spring('material = ["VD-SiCr", "vdcrv"]\nallowable_stress_MPa = 700.0\n'
                         'wire_diameter_range_mm = [3.0, 6.0]\nmin_preload_N = 300.0\ninstalled_length_mm = [45.0, 52.0]')
-    options = _spring_options(si(both.valves["intake"].spring))
+    options = spring_options(si(both.valves["intake"].spring))
     assert [m.grade for m in options.materials] == ["VDSiCr", "VDCrV"]
     assert all(m.allowable_stress == 700e6 for m in options.materials)
     assert options.wire_range_mm == (3.0, 6.0) and options.installed_length_range == pytest.approx((0.045, 0.052))

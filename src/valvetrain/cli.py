@@ -235,58 +235,90 @@ def _headline(d):
 @main.command()
 @click.argument("file", type=click.Path(dir_okay=False))
 @click.option("--out", "out", default="optimum", show_default=True, type=click.Path(), help=OUT_HELP)
-@click.option("--valve", default=None, metavar="NAME", help="The valve whose cam is optimised; default: the first "
-              "with law = \"power_polynomial\".")
+@click.option("--valve", default=None, metavar="NAME", help="The valve whose cam is optimised; default: the first.")
+@click.option("--objective", type=click.Choice(["fullness", "time_area"]), default="fullness", show_default=True,
+              help="Maximise the fullness of the valve lift diagram or the time-area of the whole opening.")
+@click.option("--vary", "vary", multiple=True, metavar="KEY=LOW,HIGH",
+              help="A numeric key under [valves.NAME] and its bounds (repeatable), e.g. cam.phi1_deg=20,35 or "
+                   "drive.spring_reserve=1.5,2.25; default: the law's own variables.")
+@click.option("--no-jump", "no_jump", default=1.1, show_default=True, type=click.FloatRange(0.0, 3.0),
+              help="No follower separation up to this multiple of the rated speed (one-mass train of the valve's "
+                   "[dynamics] section or its estimates); 0 leaves the dynamics out.")
+@click.option("--wheel-radius", "wheel_radius", default=None, type=click.FloatRange(5.0, 1000.0),
+              metavar="MM", help="Grinding wheel radius [mm] that a roller follower cam's concave stretches must "
+                                 "take; default: the valve's [grinding] section's, else no such limit.")
 @click.option("--seed", default=1, show_default=True, type=int, help="Seed of the differential evolution.")
 @click.option("--maxiter", default=60, show_default=True, type=click.IntRange(1, 10000),
               help="Generations of the differential evolution.")
+@click.option("--lang", type=click.Choice(["en", "ru"]), default="en", show_default=True,
+              help="Language of the report and the plot.")
 @click.option("--force", is_flag=True, help=FORCE_HELP)
-def optimize(file, out, valve, seed, maxiter, force):
-    """Maximise the fullness of a power-polynomial cam of FILE under its limits and write the optimum to --out.
+def optimize(file, out, valve, objective, vary, no_jump, wheel_radius, seed, maxiter, lang, force):
+    """Maximise the fullness or time-area of a valve's cam of FILE under its limits and write the optimum to --out.
 
-    Varies peak_acceleration_mm_per_rad2, phi1_deg, peak_position and trough_position with a differential
-    evolution and a local polish, under the pressure angle (30 deg), the grinding wheel against the concave radius
-    (170 mm) and the spring reserve of the valve's drive.spring_reserve (UkrSURT Proceedings (2019)). Writes
-    optimum.toml (a specification that valvetrain run accepts) and optimization.json (start, optimum, margins,
-    evaluations, time)."""
-    import json
-
+    Varies the law's parameters (Kurz: phi1, phi2, Z; constant acceleration: phi1, phi2, kappa; polydyne: the
+    exponents; combined: the ratios; each with the ramp end velocity and the spring reserve K_z; the power
+    polynomial: a_qd, phi_1, x_d, x_g) or the keys of --vary, with a differential evolution and a local polish,
+    under the design's own limits: the spring reserve, the tappet acceleration band (kept at the start's value
+    where the start is outside it), rho_min of a flat follower, the pressure angle (30 deg) and the grinding wheel of
+    a roller follower, the ramp end velocity band, and no jump up to --no-jump x the rated speed (UkrSURT Proceedings
+    (2019); Shang Hanji (1988), section 4.3 and chapter 3). Writes optimum.toml (a specification that valvetrain run
+    accepts), optimization.json, comparison.csv, history.csv, history.png and report.html."""
+    from .export import json_text, write_csv
     from .outfolder import atomic_folder
-    from .synthesis.optimize import optimize_valve
+    from .report.optimization import (HISTORY_COMMENTS, comparison_columns, history_columns, history_figure,
+                                      report_html)
+    from .synthesis.optimize import optimize_valve, parse_variables
+    from .units import MM
 
     spec = _load(file)
     inputs = _check_out(out, [file], [spec], force)
     with click.progressbar(length=maxiter, label="optimize", file=sys.stderr) as bar:
         try:
-            result = optimize_valve(spec, valve, seed=seed, maxiter=maxiter,
-                                    progress=lambda generation, best: bar.update(1))
+            result = optimize_valve(spec, valve, parse_variables(vary) if vary else None, objective,
+                                    None if wheel_radius is None else wheel_radius * MM, no_jump or None,
+                                    seed=seed, maxiter=maxiter, progress=lambda generation, best: bar.update(1))
         except SpecError as err:
             _fail_spec(err)
         except ValueError as err:
             click.echo(f"error: {err}", err=True)
             sys.exit(2)
-    record = {"valve": result.valve, "start": result.start, "optimum": result.optimum,
-              "start_fullness": result.start_fullness, "fullness": result.fullness,
-              "fast_margins": result.margins, "evaluations": result.evaluations, "seconds": result.seconds,
+    record = {"valve": result.valve, "objective": result.objective, "start": result.start, "optimum": result.optimum,
+              "bounds": dict(zip(result.start, result.bounds, strict=True)),
+              "start_value": result.start_value, "value": result.value, "feasible": result.feasible,
+              "binding": [c.quantity for c in result.binding], "fast_margins": result.margins,
+              "limit_notes": result.limit_notes, "evaluations": result.evaluations, "seconds": result.seconds,
               "seconds_in_evaluations": result.seconds_in_evaluations,
-              "polydyne_2_10_18_26_34_fullness": result.polydyne_fullness,
-              "constraints": [{**c.as_dict(), "passed": c.passed, "note": c.note} for c in result.checks]}
+              "comparison": [dict(zip(("quantity", "unit", "start", "optimum"), r, strict=True))
+                             for r in result.comparison],
+              "constraints_start": [c.as_dict() for c in result.checks_start],
+              "constraints": [c.as_dict() for c in result.checks]}
+    if result.polydyne_fullness is not None:
+        record["polydyne_2_10_18_26_34_tappet_fullness"] = result.polydyne_fullness
     try:
         with atomic_folder(out, inputs, force) as tmp:
             (tmp / "optimum.toml").write_text(result.spec_text, encoding="utf-8")
-            (tmp / "optimization.json").write_text(json.dumps(record, indent=2) + "\n", encoding="utf-8")
+            (tmp / "optimization.json").write_text(json_text(record) + "\n", encoding="utf-8")
+            write_csv(tmp / "comparison.csv", comparison_columns(result))
+            write_csv(tmp / "history.csv", history_columns(result), HISTORY_COMMENTS)
+            history_figure(result, lang).savefig(tmp / "history.png", dpi=110)
+            (tmp / "report.html").write_text(report_html(result, lang), encoding="utf-8")
     except OutFolderError as err:
         _fail_out(err)
-    click.echo(f"{result.valve}: fullness {result.start_fullness:.4f} -> {result.fullness:.4f} "
-               f"({result.evaluations} evaluations, {result.seconds:.1f} s); the polydyne (2, 10, 18, 26, 34) of the "
-               f"same lift, ramp and angle: {result.polydyne_fullness:.4f}")
+    unit = 1e6 if objective == "time_area" else 1.0
+    click.echo(f"{result.valve}: {objective} {result.start_value * unit:.6g} -> {result.value * unit:.6g} "
+               f"({result.evaluations} evaluations, {result.seconds:.1f} s)"
+               + (f"; the polydyne (2, 10, 18, 26, 34) of the same lift, ramp and angle: tappet fullness "
+                  f"{result.polydyne_fullness:.4f}" if result.polydyne_fullness is not None else ""))
     for key, value in result.optimum.items():
         click.echo(f"  {key} = {value:.6g}")
     for c in result.checks:
-        state = "ok" if c.passed else "FAILS"
+        state = "FAILS" if not c.passed else "binds" if c in result.binding else "ok"
         note = f" [{c.note}]" if c.note else ""
         click.echo(f"  {c.quantity}{note} = {c.shown_value:.6g} {c.unit} ({c.range}), margin {c.margin:.4f} {state}")
-    click.echo(f"wrote {out}/ (optimum.toml, optimization.json)")
+    click.echo(f"wrote {out}/ (optimum.toml, optimization.json, comparison.csv, history.csv, history.png, report.html)")
+    if not result.feasible:
+        click.echo("warning: the optimum's full design does not meet every limit (see FAILS above)", err=True)
 
 
 @main.command()

@@ -172,7 +172,7 @@ def drive_record(drive):
                          "not_checked": list(st.not_checked)}}
 
 
-def _spring_options(sp):
+def spring_options(sp):
     """The spring search of a spring section's SI view (grades, overrides, ranges, arrangement); the wire series
     is a catalogue grid in mm (:func:`valvetrain.springs.wire_series`)."""
     names = (sp.material,) if isinstance(sp.material, str) else sp.material
@@ -245,7 +245,7 @@ def drive_stage(valve, gas, cam):
         gas_source = "Valve-train practical works (n.d.), eq. (5.5)"
 
     sp, drive = valve.spring, valve.drive
-    options = _spring_options(sp)
+    options = spring_options(sp)
     spring_total_mass = 0.0
     for _ in range(20):
         m_v, mass_source = train_mass(valve, spring_total_mass)

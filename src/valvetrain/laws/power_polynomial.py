@@ -35,6 +35,10 @@ p=0,5; q=4,5'); r, s, t, u are printed garbled ('r=0,3; s=25; t=14; u=1') and ar
 r = 0.3, s = 2.5, t = 4, u = 7: within the article's ranges (r = 0.1-0.5, s = 1-3, t = 3-7, u = 3-9), they
 reproduce a dwell lift of 18.57 mm at the article's a_qd, phi_1 and phi_2 with x_d = 0.2, x_g = 0.8."""
 
+ARTICLE_FULLNESS = dict(optimum=0.667, serial=0.602)
+"""Fullness of the tappet lift over the valve-open part that the article reports for its optimum and for the
+serial cam of the 26/27 diesel (UkrSURT Proceedings (2019)): the figures an optimum is compared with."""
+
 EXPONENT_RANGES = dict(n=(1.0, 3.0), m=(3.0, 6.0), p=(0.3, 0.7), q=(4.0, 6.0), r=(0.1, 0.5), s=(1.0, 3.0),
                        t=(3.0, 7.0), u=(3.0, 9.0))
 """The exponent ranges the article recommends from its search studies (UkrSURT Proceedings (2019))."""

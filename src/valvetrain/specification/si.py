@@ -27,6 +27,7 @@ UNIT_SUFFIXES = (
 """Key suffixes of non-SI units and the SI value of one unit; the first suffix that ends a key applies."""
 
 
+@cache
 def si_name(key):
     """The SI field of a key and the factor to SI: ``("throat_diameter", 1e-3)`` for ``throat_diameter_mm``.
 

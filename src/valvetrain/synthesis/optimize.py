@@ -1,146 +1,496 @@
-"""A first cam synthesis by optimisation: the power-polynomial cam's parameters that maximise the fullness.
+"""Cam synthesis by optimisation: the parameters of a valve's parametric lift law that maximise its fullness or
+its time-area under the design's limits, the dynamics among them.
 
-The variables are the cam keys a_qd (``peak_acceleration_mm_per_rad2``), phi_1 (``phi1_deg``), x_d
-(``peak_position``) and x_g (``trough_position``) of a ``law = "power_polynomial"`` cam; the lift, the
-ramp and the timing stay as the specification gives them.  The objective is the fullness of the tappet
-lift over the valve-open part; the constraints are those of :class:`~.constraints.Limits`, evaluated
-here on the law alone (the profile on a grid, the starting design's spring and reduced mass held fixed,
-as a cam is synthesised for a given train), and checked at the end on the full design of the optimum
-with :func:`~.constraints.constraints`.
+The variables are keys of the valve's specification (:class:`Variable`, a path under ``[valves.NAME]``): the
+cam's (``cam.phi1_deg``, ``cam.shape_factor``, ``cam.p``, ``cam.ratios.1.value``) and the spring reserve
+``drive.spring_reserve``.  Every law with parameters has a default set (:func:`default_variables`: Kurz,
+constant acceleration, polydyne exponents, combined-function ratios, the piecewise power polynomial); any other
+numeric key may be named.  The lift, the timing and the follower stay as the specification gives them.
 
-Search: :func:`scipy.optimize.differential_evolution` over the bounds with the constraints' margins as
-nonlinear constraints, then a local polish with SLSQP from its best point (kept when it is feasible and
-better), as the seed article of the method does (UkrSURT Proceedings (2019); Shang Hanji (1988), section 4.3).
+One evaluation (:class:`Problem`) builds the law of a point through the cam section of the specification, runs
+the law and flow stages of the design on it (the lift table, the time-area and fullness) and measures the margins
+of the limits (:class:`~.constraints.Limits`) on the profile: spring reserve, pressure angle and concave radius
+against the grinding wheel of a roller follower, rho_min of a flat follower, the acceleration band, and, with
+``no_jump_factor``, the follower separation of the one-mass elastic train at the rated speed and at that multiple
+of it.  During the search the train and its spring are the starting design's (the spring scaled by
+K_z / K_z,0 when the spring reserve is a variable, as the spring design sizes it); the optimum is then designed in
+full, with its own spring, and every constraint is checked again on it, the dynamics over a speed sweep up to the
+limit (:func:`final_checks`).
+
+Search: :func:`scipy.optimize.differential_evolution` over the bounds with the margins as nonlinear constraints,
+then a local polish with SLSQP from its best point (kept when it is feasible and better), as the method's article
+does (UkrSURT Proceedings (2019); Shang Hanji (1988), section 4.3).
 """
 
 from dataclasses import dataclass, field, replace
+import math
 import time
 import tomllib
 
 import numpy as np
+from pydantic import ValidationError
 from scipy import optimize
 
+from .. import springs
 from ..design import run as run_design
-from ..laws import PolydyneLaw, PowerPolynomialLaw
-from ..units import DEG, MM
-from .constraints import Limits, constraints, spring_reserve
+from ..design.drive import spring_options
+from ..design.dynamics import SPEED_RANGE, build_train, dynamics_stage
+from ..design.valve import flow_stage, law_stage
+from ..dynamics.models import one_mass_train
+from ..dynamics.sweep import sweep
+from ..laws import PolydyneLaw
+from ..specification.cams import train_mass
+from ..specification.models import Dynamics
+from ..specification.si import si
+from ..units import DEG, MM, cam_per_crank
+from .constraints import Limits, constraints
 
-VARIABLES = ("peak_acceleration_mm_per_rad2", "phi1_deg", "peak_position", "trough_position")
-"""The cam keys the optimiser varies."""
-
-POSITION_BOUNDS = (0.02, 0.98)
-"""Bounds of x_d and x_g: a peak at the very end of its part is a step of the acceleration."""
+OBJECTIVES = {
+    "fullness": ("fullness", "fullness of the valve lift diagram (Shang Hanji (1988), eq. 2.3)"),
+    "time_area": ("time_area_open", "time-area of the valve's whole opening [mm2 s]"),
+}
+"""Objective name -> (field of the flow stage's result, what it is)."""
 
 GRID = 1201
-"""Camshaft angles of the opening flank on which the fast evaluation samples the profile."""
+"""Camshaft angles of the opening flank on which one evaluation samples the profile."""
+
+SPEEDS = (1.0,)
+"""Engine speeds, fractions of the rated speed, at which one evaluation simulates the train (with the limit's own
+multiple of the rated speed); the final check sweeps the whole range."""
+
+FINAL_SPEEDS = 60
+"""Speeds of the final check's dynamics sweep."""
+
+PENALTY = 10.0
+"""Weight of the summed constraint violations (relative margins below 0) against the objective over its starting
+value in the global search (an exact penalty: a feasible point always beats a point that violates a limit by more
+than a tenth of the objective's range)."""
+
+SPRING_MARGIN = 0.05
+"""The margin of the spring design in the search: it passes (+) or it does not (-); the weight of a failing spring
+in the penalty is PENALTY times it."""
+
+SPRING_ITERATIONS = 4
+"""Spring searches of one evaluation at most while the reduced mass settles on the found spring's mass."""
+
+LAZY = 1e-6
+"""A margin above minus this lets the spring search run (a limit met to the optimiser's tolerance)."""
+
+CACHE = 4096
+"""Points whose evaluation :class:`Problem` keeps (the optimiser asks for the objective and the margins of a point
+separately)."""
+
+BINDING = 1e-3
+"""A constraint whose relative margin at the optimum is below this binds."""
 
 
-class Problem:
-    """The fast evaluation of one valve's power-polynomial cam: fullness and constraint margins of the variables.
+@dataclass(frozen=True)
+class Variable:
+    """One design variable: a numeric key under ``[valves.NAME]`` and its bounds (the key's own unit).
+
+    ``path`` is dotted, list entries by their 1-based position: ``cam.phi1_deg``, ``drive.spring_reserve``,
+    ``cam.ratios.2.value``.
+    """
+
+    path: str
+    low: float
+    high: float
+
+    def put(self, data, value):
+        """Set the variable in a valve section's data (dict, changed in place)."""
+        *parents, last = self.path.split(".")
+        node = data
+        for part in parents:
+            node = node[int(part) - 1] if isinstance(node, list) else node.setdefault(part, {})
+        if isinstance(node, list):
+            node[int(last) - 1] = value
+        else:
+            node[last] = value
+
+
+def _segment_angle_variables(cam, half):
+    """phi1, phi2 of a Kurz or constant-acceleration cam (phi3 the remainder)."""
+    return [Variable("cam.phi1_deg", 0.15 * half, 0.75 * half), Variable("cam.phi2_deg", 0.02 * half, 0.45 * half)]
+
+
+RAMP_BAND_MM_PER_DEG = (0.008, 0.022)
+"""Band of the ramp end velocity (Valve-train practical works (n.d.), eq. 2.1): the bounds of the variable."""
+
+SPRING_RESERVE_BAND = (1.5, 2.25)
+"""Band of the spring reserve K_z (Valve-train practical works (n.d.), eq. 5.3): the bounds of the variable."""
+
+
+def _ramp_and_spring(cam):
+    out = [Variable("drive.spring_reserve", *SPRING_RESERVE_BAND)]
+    if getattr(cam, "ramp_end_velocity_mm_per_deg", None) is not None:
+        out.insert(0, Variable("cam.ramp_end_velocity_mm_per_deg", *RAMP_BAND_MM_PER_DEG))
+    return out
+
+
+def default_variables(valve, engine):
+    """The default design variables of a valve's cam law (a list of :class:`Variable`).
+
+    Parameters
+    ----------
+    valve, engine : the specification's ``[valves.NAME]`` and ``[engine]`` sections.
+
+    Returns
+    -------
+    list of Variable
+        Kurz: phi1, phi2, shape factor Z; constant acceleration: phi1, phi2, kappa; polydyne: the exponents the
+        cam gives; combined: the ratios' values; each with the ramp end velocity (0.008-0.022 mm/deg) and the
+        spring reserve K_z (1.5-2.25).  The power polynomial: a_qd, phi_1, x_d, x_g (its article holds the spring
+        and the ramp).
+
+    Raises
+    ------
+    ValueError
+        A law without parameters to vary (a measured table, three arcs), or an asymmetric cam.
+    """
+    from ..specification.cams import main_half_angle_deg
+
+    cam = valve.cam
+    if getattr(cam, "closing", None) is not None:
+        raise ValueError("optimize: the cam has a [cam.closing] flank of its own; name the variables with --vary")
+    law = cam.law
+    if law not in ("kurz", "constant_acceleration", "polydyne", "combined", "power_polynomial"):
+        raise ValueError(f"optimize: law = {law!r} has no default variables; name them with --vary KEY=LOW,HIGH "
+                         "(e.g. --vary cam.nose_radius_mm=5,12)")
+    half = main_half_angle_deg(valve, engine.strokes) if cam.needs_timing else None
+    if law == "kurz":
+        out = _segment_angle_variables(cam, half) + [Variable("cam.shape_factor", 0.05, 0.99)]
+    elif law == "constant_acceleration":
+        out = _segment_angle_variables(cam, half) + [Variable("cam.kappa", 0.1, 5.0)]
+    elif law == "polydyne":
+        given = [k for k in ("p", "q", "r", "s") if getattr(cam, k) is not None]
+        out = [Variable(f"cam.{k}", 3.0, 4.0 * getattr(cam, k)) for k in given]
+    elif law == "combined":
+        out = [Variable(f"cam.ratios.{i}.value", -5.0 * abs(r.value) - 1.0, 5.0 * abs(r.value) + 1.0)
+               for i, r in enumerate(cam.ratios, 1)]
+        if not out:
+            raise ValueError("optimize: the combined cam has no [[cam.ratios]]; name the variables with --vary")
+    elif law == "power_polynomial":
+        return [Variable("cam.peak_acceleration_mm_per_rad2", 10.0, 600.0),
+                Variable("cam.phi1_deg", 2.0, 0.9 * (half - cam.ramp_angle_deg)),
+                Variable("cam.peak_position", 0.02, 0.98), Variable("cam.trough_position", 0.02, 0.98)]
+    return out + _ramp_and_spring(cam)
+
+
+def parse_variables(items):
+    """Variables from ``KEY=LOW,HIGH`` texts (``cam.phi1_deg=20,35``).
+
+    Raises
+    ------
+    ValueError
+        A text that is not of that form, or LOW >= HIGH; the message names the text.
+    """
+    out = []
+    for item in items:
+        key, sep, bounds = item.partition("=")
+        parts = bounds.split(",")
+        try:
+            low, high = (float(p) for p in parts) if sep and len(parts) == 2 else (None, None)
+        except ValueError:
+            low = high = None
+        if not key.strip() or low is None or not (math.isfinite(low) and math.isfinite(high) and low < high):
+            raise ValueError(f"--vary {item[:80]!r}: allowed KEY=LOW,HIGH with finite LOW < HIGH, KEY a path under "
+                             "[valves.NAME] such as cam.phi1_deg")
+        out.append(Variable(key.strip(), low, high))
+    return out
+
+
+def _relaxed(c, quantity, notes):
+    """The band of a start check, widened to the start's value where the start lies outside it (noted)."""
+    if c is None:
+        return None, None
+    low, high = c.low, c.high
+    if not c.passed:
+        notes.append({"quantity": quantity, "value": c.shown_value, "unit": c.unit, "range": c.range})
+        low = None if low is None else min(low, c.value)
+        high = None if high is None else max(high, c.value)
+    return low, high
+
+
+def design_limits(design, wheel_radius=None, no_jump_factor=None, ramp_varied=True):
+    """The limits of a design's own checks and of the synthesis, and notes on how they were set.
 
     Parameters
     ----------
     design : ValveDesign
-        The starting design (its law gives the lift, ramp and angle; its drive the spring and the mass).
+        The starting design.
+    wheel_radius : float, optional
+        Grinding wheel radius [m]; default the ``[grinding]`` section's, else no concave-radius limit.
+    no_jump_factor : float, optional
+        No follower separation up to this multiple of the rated speed.
+    ramp_varied : bool
+        Whether the ramp end velocity is a variable (else it has no limit: it cannot change).
+
+    Returns
+    -------
+    (Limits, list of dict)
+        The spring reserve of ``drive.spring_reserve``; the tappet acceleration bands of the design's checks
+        (Valve-train practical works (n.d.), work 2), each widened to the starting design's value where that lies
+        outside; rho_min >= 2 mm (Shang Hanji (1988), section 2.1); pressure angle <= 30 deg (UkrSURT Proceedings
+        (2019)); the ramp end velocity band of :class:`~.constraints.Limits`, widened the same way (it bounds the
+        kinematic seating velocity, i_k omega times it, which is not limited apart).
+    """
+    notes = []
+    by_name = {c.quantity.split(": ", 1)[-1]: c for c in design.checks}
+    high, low = (_relaxed(by_name.get(q), q, notes)[i] for q, i in (("max tappet acceleration", 1),
+                                                                     ("min tappet acceleration", 0)))
+    if wheel_radius is None and design.grinding is not None:
+        wheel_radius = design.grinding.wheel_radius
+    limits = Limits(max_acceleration=high, min_acceleration=low, grinding_wheel_radius=wheel_radius,
+                    min_spring_reserve=design.drive.spring.spring_reserve, no_jump_factor=no_jump_factor,
+                    cam_width=None, seating_velocity=None)
+    c = {c.quantity: c for c in constraints(design, replace(limits, no_jump_factor=None))}.get("ramp end velocity")
+    if not ramp_varied:
+        limits = replace(limits, ramp_velocity=None)
+    elif c is not None:
+        limits = replace(limits, ramp_velocity=_relaxed(c, "ramp end velocity", notes))
+    return limits, notes
+
+
+class Problem:
+    """The fast evaluation of one valve's design variables: the objective and the constraint margins.
+
+    Parameters
+    ----------
+    spec : valvetrain.specification.Spec
+    design : ValveDesign
+        The starting design of the valve (its train and spring are those of the search).
+    variables : list of Variable
     limits : Limits
+    objective : {"fullness", "time_area"}
     """
 
-    def __init__(self, design, limits):
-        law = design.law
-        if not isinstance(law, PowerPolynomialLaw):
-            raise ValueError(f"optimize: the cam of valve {design.name!r} has law = {law.name!r}; this first "
-                             "optimiser varies a law = \"power_polynomial\" cam")
-        self.law0, self.limits = law, limits
-        self.heel, self.follower, self.roller = design.heel_radius, design.follower, design.roller_radius
-        self.omega, self.i_k = design.omega_cam, design.rocker_ratio
+    def __init__(self, spec, design, variables, limits, objective="fullness"):
+        self.name, self.variables, self.limits, self.objective = design.name, list(variables), limits, objective
+        self.spec, self.engine = spec, si(spec.engine)
+        self.section = spec.valves[self.name]
+        self.data = self.section.model_dump(mode="json", exclude_unset=True, exclude_none=True)
+        self.x0 = np.array([self._value(v) for v in self.variables], dtype=float)
+        self.bounds = [(v.low, v.high) for v in self.variables]
+        self.reserve0 = self.section.drive.spring_reserve
+        self.follower, self.roller = design.cam.follower, design.cam.roller_radius
+        self.heel, self.i_k, self.omega = design.cam.heel_radius, design.cam.rocker_ratio, design.cam.cam_speed
         self.mass = design.drive.masses.at_valve
         self.spring = design.drive.lines["chosen"]
-        half = np.degrees(law.main_half_angle)
-        self.bounds = [(10.0, 600.0), (2.0, 0.9 * half), POSITION_BOUNDS, POSITION_BOUNDS]
-        self.evaluations = 0
-        self.seconds = 0.0
-        self._cache = (None, None)
+        self.valve = si(self.section, self.spec)
+        self.spring_inputs = (self.valve.throat_diameter, spring_options(self.valve.spring),
+                              max(design.drive.spring.gas_force, design.drive.spring.seat_load))
+        self._train_parameters(design)
+        self.evaluations, self.seconds = 0, 0.0
+        self.history = []
+        self._cache = {}
 
-    def law(self, x):
-        """The law of the variables x (keys' units), or None where they admit no cam."""
-        L = self.law0
+    def _value(self, v):
+        """The variable's value in the specification (given or the key's default).
+
+        Raises
+        ------
+        ValueError
+            The path names no numeric key of the valve's section.
+        """
+        node = self.section
         try:
-            return PowerPolynomialLaw(L.lift_max, L.main_half_angle, L.ramp_height, L.ramp_angle, L.v_qb, x[0] * MM,
-                                      x[1] * DEG, x[2], x[3], L.exponents, L.reconstruction, L.sharpness)
-        except ValueError:
-            return None
+            for part in v.path.split("."):
+                node = node[int(part) - 1] if isinstance(node, list) else getattr(node, part)
+        except (AttributeError, IndexError, ValueError):
+            node = None
+        if isinstance(node, bool) or not isinstance(node, (int, float)):
+            raise ValueError(f"optimize: valves.{self.name}.{v.path} is not a numeric key of the valve; allowed the "
+                             "numbers of [valves.NAME] and its sections (cam.phi1_deg, drive.spring_reserve, ...)")
+        return float(node)
+
+    def _train_parameters(self, design):
+        """The one-mass train of the search: the valve's [dynamics] section's (or the defaults')."""
+        self.speeds = None
+        if self.limits.no_jump_factor is None:
+            return
+        dyn = self.section.dynamics or Dynamics()
+        valve = si(self.section, self.spec)
+        _, p = build_train(si(dyn.model_copy(update={"model": "1dof"})), valve, design.law, design.drive,
+                           f"valves.{self.name}", self.engine.rated_speed * cam_per_crank(self.engine.strokes))
+        self.train_parameters = p
+        rated = self.engine.rated_speed * cam_per_crank(self.engine.strokes)
+        self.speeds = rated * np.unique(np.array(SPEEDS + (self.limits.no_jump_factor,)))
 
     def margin_names(self):
         """Names of the entries of :meth:`evaluate`'s margins."""
+        L = self.limits
         names = ["spring reserve"]
         if self.follower == "roller":
-            names += ["pressure angle"] + (["concave radius"] if self.limits.grinding_wheel_radius else [])
-        elif self.limits.min_rho is not None:
+            names += ["pressure angle"] + (["concave radius"] if L.grinding_wheel_radius else [])
+        elif L.min_rho is not None:
             names.append("rho_min")
-        if self.limits.max_acceleration is not None:
-            names.append("max acceleration")
-        if self.limits.min_acceleration is not None:
-            names.append("min acceleration")
-        return names
+        names += [n for n, lim in (("max acceleration", L.max_acceleration), ("min acceleration", L.min_acceleration),
+                                   ("seating velocity", L.seating_velocity)) if lim is not None]
+        if self.speeds is not None:
+            names.append("no jump")
+        return names + ["spring design"]
+
+    def point(self, x):
+        """The valve section's data with the variables ``x``."""
+        import copy
+
+        data = copy.deepcopy(self.data)
+        for v, value in zip(self.variables, x, strict=True):
+            v.put(data, float(value))
+        cam = data["cam"]
+        if cam.get("law") in ("kurz", "constant_acceleration") and any(
+                v.path in ("cam.phi1_deg", "cam.phi2_deg") for v in self.variables):
+            cam.pop("phi3_deg", None)
+        return data
+
+    def stages(self, x):
+        """(law stage, flow stage, spring scale) of the variables, or None where they admit no design."""
+        from ..specification.models import Valve
+
+        data = self.point(x)
+        try:
+            section = Valve.model_validate(data)
+        except ValidationError:
+            return None
+        if section.cam.problems(f"valves.{self.name}", section, self.spec.engine):
+            return None
+        try:
+            valve = si(section, self.spec)
+            cam = law_stage(valve, self.engine)
+            flow = flow_stage(cam, valve, self.engine)
+        except ValueError:
+            return None
+        return cam, flow, section.drive.spring_reserve / self.reserve0
 
     def evaluate(self, x):
-        """(fullness, margins) of the variables; a law that cannot be made has fullness 0 and margins -1."""
+        """(objective, margins) of the variables; a point that admits no design has objective 0 and margins -1."""
         key = tuple(float(v) for v in x)
-        if self._cache[0] == key:
-            return self._cache[1]
+        if key in self._cache:
+            return self._cache[key]
         t0 = time.perf_counter()
         self.evaluations += 1
-        n = len(self.margin_names())
-        law = self.law(x)
-        if law is None:
-            out = (0.0, -np.ones(n))
+        found = self.stages(x)
+        if found is None:
+            out = (0.0, -np.ones(len(self.margin_names())))
         else:
-            out = (law.fullness(), self._margins(law))
+            cam, flow, scale = found
+            out = (float(getattr(flow, OBJECTIVES[self.objective][0])), self._margins(cam, scale))
         self.seconds += time.perf_counter() - t0
-        self._cache = (key, out)
+        if len(self._cache) >= CACHE:
+            self._cache.pop(next(iter(self._cache)))
+        self._cache[key] = out
+        self.history.append((out[0], out[1]))
         return out
 
-    def _margins(self, law):
-        L = self.limits
+    def _margins(self, cam, scale):
+        L, law = self.limits, cam.law
         theta = np.unique(np.concatenate([np.linspace(law.start, 0.0, GRID), law.breakpoints[law.breakpoints <= 0]]))
         h, dh, d2h, _ = law.derivatives(theta)
         y = self.i_k * np.clip(h - law.ramp_height, 0.0, None)
         inertia = self.mass * self.i_k * self.omega**2 * np.clip(-d2h, 0.0, None)
         loaded = (inertia > 0.0) & (y > 0.0)
-        reserve = np.min(self.spring.force(y[loaded]) / inertia[loaded]) if np.any(loaded) else 10.0
-        out = [(reserve - L.min_spring_reserve) / L.min_spring_reserve]
+        reserve = np.min(scale * self.spring.force(y[loaded]) / inertia[loaded]) if np.any(loaded) else 10.0
+        target = L.min_spring_reserve * scale
+        out = [(reserve - target) / target]
         _, rho, beta, _ = law.profile(theta, self.heel, self.follower, self.roller)
         if self.follower == "roller":
             out.append((L.max_pressure_angle - np.max(np.abs(beta))) / L.max_pressure_angle)
             if L.grinding_wheel_radius:
-                curvature = np.min(1.0 / rho)
-                out.append(1.0 - L.grinding_wheel_radius * max(-curvature, 0.0))
+                out.append(1.0 - L.grinding_wheel_radius * max(-np.min(1.0 / rho), 0.0))
         elif L.min_rho is not None:
             out.append((np.min(rho) - L.min_rho) / L.min_rho)
-        a = self.omega**2 * d2h
         if L.max_acceleration is not None:
-            out.append((L.max_acceleration - a.max()) / L.max_acceleration)
+            out.append((L.max_acceleration - cam.max_acceleration) / abs(L.max_acceleration))
         if L.min_acceleration is not None:
-            out.append((a.min() - L.min_acceleration) / abs(L.min_acceleration))
+            out.append((cam.min_acceleration - L.min_acceleration) / abs(L.min_acceleration))
+        if L.seating_velocity is not None:
+            ends = np.array([law.valve_opens, law.valve_closes])
+            seat = self.i_k * self.omega * float(np.max(np.abs(law.derivatives(ends)[1])))
+            out.append((L.seating_velocity[1] - seat) / L.seating_velocity[1])
+        if self.speeds is not None:
+            out.append(self._separation(law, scale))
+        out.append(self._spring_design(law, scale) if min(out) >= -LAZY else 0.0)
         return np.array(out, dtype=float)
+
+    def _spring_design(self, law, scale):
+        """Whether a spring (or nested pair) of the specification's options passes every spring check for this cam
+        at K_z = scale x K_z,0: +SPRING_MARGIN or -SPRING_MARGIN (the design's own search,
+        :func:`valvetrain.springs.design_springs`, with the reduced mass iterated on the found spring's mass as the
+        drive stage does).  Left at 0 while another margin fails by more than :data:`LAZY` (the search is the
+        costliest part of an evaluation)."""
+        theta = np.linspace(law.valve_opens, law.valve_closes, GRID)
+        _, _, d2h, _ = law.derivatives(theta)
+        y = self.i_k * np.clip(law.lift(theta) - law.ramp_height, 0.0, None)
+        throat, options, min_preload = self.spring_inputs
+        masses = self.valve.drive.masses
+        mass = self.mass
+        for _ in range(SPRING_ITERATIONS):
+            force = springs.required_spring_force(mass, self.i_k * self.omega**2 * d2h, self.reserve0 * scale)
+            search = springs.design_springs(springs.Requirement(y, force, min_preload), throat, self.omega, options)
+            if masses is None or masses.spring_kg is not None:
+                break
+            settled = train_mass(self.valve, sum(d.mass for d in search.designs.values()))[0]
+            if abs(settled - mass) < 1e-7:
+                break
+            mass = settled
+        return SPRING_MARGIN if search.passes else -SPRING_MARGIN
+
+    def _separation(self, law, scale):
+        """Margin of the follower separation: the smallest contact force while the cam lifts the valve over the
+        spring preload (> 0), or minus the separated camshaft angle [rad] (< 0); 0 on the border."""
+        p = self.train_parameters
+        train = one_mass_train(p.mass, p.drive_stiffness, p.spring_rate * scale, p.preload * scale, p.rocker_ratio,
+                               p.lash, damping_ratio=p.damping_ratio, seat_stiffness=p.seat_stiffness,
+                               seat_damping_ratio=p.seat_damping_ratio)
+        worst = math.inf
+        for r in sweep(law, train, self.speeds, p.revolutions, p.step / DEG).per_speed():
+            if len(r.jump_intervals):
+                worst = min(worst, -float(np.sum(np.diff(r.jump_intervals, axis=1))))
+            else:
+                lifting = (r.kinematic_lift > 0.0) & (r.lift > 0.0)
+                force = float(r.contact_force[lifting].min()) if lifting.any() else p.preload * scale
+                worst = min(worst, force / (p.preload * scale))
+        return worst
 
 
 @dataclass
 class Result:
-    """An optimisation: the variables and responses at the start and at the optimum, and the cost."""
+    """An optimisation: the variables and the designs at the start and at the optimum, and the cost.
+
+    ``start`` and ``optimum`` map each variable's path to its value; ``comparison`` holds rows
+    ``(quantity, unit, start, optimum)`` of the two full designs; ``checks_start`` and ``checks`` the constraints
+    on them (:func:`final_checks`); ``history`` one ``(objective, margins)`` per evaluation, in order.
+    """
 
     valve: str
+    objective: str
     start: dict
     optimum: dict
-    start_fullness: float
-    fullness: float
+    start_value: float
+    value: float
+    bounds: list
+    margin_names: list
     margins: dict
     evaluations: int
     seconds: float
     seconds_in_evaluations: float
-    polydyne_fullness: float = float("nan")
-    spec_text: str = field(repr=False, default="")
+    limit_notes: list = field(default_factory=list)
+    comparison: list = field(default_factory=list)
+    checks_start: list = field(repr=False, default_factory=list)
     checks: list = field(repr=False, default_factory=list)
+    history: list = field(repr=False, default_factory=list)
+    polydyne_fullness: float = None
+    spec_text: str = field(repr=False, default="")
+
+    @property
+    def feasible(self):
+        """Every constraint of the optimum's full design holds."""
+        return all(c.passed for c in self.checks)
+
+    @property
+    def binding(self):
+        """The constraints of the optimum with a relative margin below :data:`BINDING` (they bind)."""
+        return [c for c in self.checks if c.passed and c.margin < BINDING]
 
 
 def polydyne_fullness(law, exponents=(10, 18, 26, 34)):
@@ -160,88 +510,177 @@ def polydyne_fullness(law, exponents=(10, 18, 26, 34)):
     return area / ((poly.lift_max + poly.ramp_height) * (phi[-1] - phi[0]))
 
 
-def optimize_valve(spec, valve=None, limits=None, seed=1, maxiter=60, popsize=12, progress=None):
-    """Maximise the fullness of one valve's power-polynomial cam under the limits.
+def final_checks(design, spec, limits, scale=1.0, search_spring=None):
+    """Every constraint of ``limits`` on a full design, and the design's own failures.
+
+    Parameters
+    ----------
+    design : ValveDesign
+    spec : valvetrain.specification.Spec
+        The design's specification (its ``[dynamics]`` section, if any, sets the train of the sweep).
+    limits : Limits
+    scale : float
+        K_z / K_z,0 of the design against the starting design.
+    search_spring : springs.Characteristic, optional
+        The starting design's spring: the reserve is checked with it (scaled) too, as the search held it.
+
+    Returns
+    -------
+    list of Check
+        With ``no_jump_factor``, the follower separation from a dynamics sweep of the design with its own spring
+        from 10 % of the rated speed up to the limit or 125 % of it, whichever is higher (the ``[dynamics]``
+        section's train and range, the range raised to that top where it ends below).
+    """
+    from .constraints import spring_reserve
+
+    if limits.no_jump_factor is not None:
+        section = spec.valves[design.name]
+        rated = spec.engine.rated_speed_rpm
+        top = max(limits.no_jump_factor, SPEED_RANGE[1]) * rated
+        dyn = section.dynamics or Dynamics(speeds=FINAL_SPEEDS)
+        low, high = dyn.speed_range_rpm or (SPEED_RANGE[0] * rated, top)
+        dyn = dyn.model_copy(update={"speed_range_rpm": [low, max(high, top)]})
+        result, _ = dynamics_stage(si(dyn), si(section, spec), si(spec.engine), design.law, design.drive,
+                                   design.name, cam=design.cam)
+        design = replace(design, dynamics=result)
+    out = constraints(design, limits)
+    if search_spring is not None:
+        out.append(replace(spring_reserve(design, limits.min_spring_reserve * scale, search_spring.preload * scale,
+                                          search_spring.rate * scale),
+                           note="with the starting design's spring" + (f" x {scale:.4g}" if scale != 1.0 else "")))
+    quantities = {c.quantity for c in out}
+    own = [c for c in design.checks if c.severity == "failure" and c.quantity.split(": ", 1)[-1] not in quantities]
+    return out + own
+
+
+def _comparison(start, end, objective):
+    """Rows (quantity, unit, start, optimum) of two full designs, engineering units."""
+    def rows(d):
+        c, f = d.cam, d.flow
+        out = [("fullness", "", f.fullness), ("time-area of the whole opening", "mm2 s", f.time_area_open / MM**2),
+               ("time-area over the valve's stroke", "mm2 s", f.time_area / MM**2),
+               ("max tappet acceleration", "m/s2", c.max_acceleration),
+               ("min tappet acceleration", "m/s2", c.min_acceleration),
+               ("max tappet velocity", "m/s", c.max_velocity),
+               ("spring preload", "N", d.drive.spring.preload), ("spring rate", "N/mm", d.drive.spring.rate * MM),
+               ("spring reserve K_z", "", d.drive.spring.spring_reserve)]
+        if d.profile.rho_min is not None:
+            out.append(("rho_min", "mm", d.profile.rho_min / MM))
+        fullness = d.records.get("power_polynomial", {}).get("tappet_fullness")
+        if fullness is not None:
+            out.insert(1, ("tappet fullness (UkrSURT Proceedings (2019))", "", fullness))
+        return out
+    return [(q, u, a, b) for (q, u, a), (_, _, b) in zip(rows(start), rows(end), strict=True)]
+
+
+def optimize_valve(spec, valve=None, variables=None, objective="fullness", wheel_radius=None, no_jump_factor=None,
+                   seed=1, maxiter=60, popsize=12, progress=None):
+    """Maximise the fullness or the time-area of one valve's cam under its limits.
 
     Parameters
     ----------
     spec : valvetrain.specification.Spec
     valve : str, optional
-        The valve's name (default: the first with a power-polynomial cam).
-    limits : Limits, optional
-        Default :meth:`Limits.article` with the spring reserve of the valve's ``drive.spring_reserve``.
+        The valve's name (default: the first whose law has default variables).
+    variables : list of Variable, optional
+        Default :func:`default_variables` of the valve's law.
+    objective : {"fullness", "time_area"}
+        :data:`OBJECTIVES`.
+    wheel_radius : float, optional
+        Grinding wheel radius [m] for the concave radius of a roller follower's cam (default: the valve's
+        ``[grinding]`` section's, else none).
+    no_jump_factor : float, optional
+        No follower separation up to this multiple of the rated speed (None: no dynamics in the search).
     seed, maxiter, popsize : int
         Of :func:`scipy.optimize.differential_evolution` (deterministic for a seed).
     progress : callable, optional
-        ``progress(generation, best fullness)`` after each generation.
+        ``progress(generation, best objective)`` after each generation.
 
     Returns
     -------
     Result
-        With ``spec_text``, the specification with the optimum's cam keys (TOML), and ``checks``, the
-        constraints on the full design of the optimum.
+        With ``spec_text``, the specification with the optimum's keys (TOML).
+
+    Raises
+    ------
+    ValueError
+        An unknown valve or objective, a law without variables, a variable that is not a key of the valve.
     """
+    from ..specification.validate import parse_spec
+
+    if objective not in OBJECTIVES:
+        raise ValueError(f"optimize: objective = {objective!r}; allowed {', '.join(OBJECTIVES)}")
     t0 = time.perf_counter()
     start = run_design(spec)
     if valve is None:
-        valve = next((n for n, v in start.valves.items() if v.law.name == "power_polynomial"), None)
-        if valve is None:
-            raise ValueError("optimize: no valve has a law = \"power_polynomial\" cam")
+        valve = next(iter(start.valves))
+    if valve not in start.valves:
+        raise ValueError(f"optimize: --valve {valve!r}; allowed {', '.join(start.valves)}")
     design = start.valves[valve]
-    if limits is None:
-        limits = Limits.article(min_spring_reserve=spec.valves[valve].drive.spring_reserve)
-    problem = Problem(design, limits)
-    cam = spec.valves[valve].cam
-    x0 = np.array([getattr(cam, k) for k in VARIABLES], dtype=float)
+    if variables is None:
+        variables = default_variables(spec.valves[valve], spec.engine)
+    ramp = any(v.path.startswith("cam.ramp_end_velocity") for v in variables)
+    limits, notes = design_limits(design, wheel_radius, no_jump_factor, ramp)
+    problem = Problem(spec, design, variables, limits, objective)
+    scale0 = problem.evaluate(problem.x0)[0] or 1.0
 
-    def objective(x):
-        return -problem.evaluate(x)[0]
+    def negative(x):
+        return -problem.evaluate(x)[0] / scale0
 
     def margins(x):
         return problem.evaluate(x)[1]
 
-    constraint = optimize.NonlinearConstraint(margins, 0.0, np.inf)
     generation = [0]
 
     def callback(xk, convergence=None):
         generation[0] += 1
         if progress is not None:
-            progress(generation[0], -objective(xk))
+            progress(generation[0], -negative(xk) * scale0)
 
-    found = optimize.differential_evolution(objective, problem.bounds, constraints=(constraint,), seed=seed,
-                                            maxiter=maxiter, popsize=popsize, tol=1e-7, polish=False,
-                                            callback=callback, init="sobol")
+    def penalised(x):
+        return negative(x) + PENALTY * float(np.sum(np.clip(-margins(x), 0.0, None)))
+
+    found = optimize.differential_evolution(penalised, problem.bounds, seed=seed, maxiter=maxiter, popsize=popsize,
+                                            tol=1e-7, polish=False, callback=callback,
+                                            x0=np.clip(problem.x0, *zip(*problem.bounds, strict=True)))
     best = found.x
-    local = optimize.minimize(objective, best, method="SLSQP", bounds=problem.bounds,
-                              constraints=({"type": "ineq", "fun": margins},), options={"maxiter": 200, "ftol": 1e-10})
-    if local.success and np.all(margins(local.x) >= -1e-9) and -objective(local.x) > -objective(best):
+    local = optimize.minimize(negative, best, method="SLSQP", bounds=problem.bounds,
+                              constraints=({"type": "ineq", "fun": margins},),
+                              options={"maxiter": 200, "ftol": 1e-10})
+    if local.success and np.all(margins(local.x) >= -1e-9) and negative(local.x) < negative(best):
         best = local.x
-    values = {k: float(v) for k, v in zip(VARIABLES, best)}
-    text = optimum_spec_text(spec, valve, values)
-    from ..specification.validate import parse_spec
-    checked = run_design(parse_spec(text)).valves[valve]
-    line = design.drive.lines["chosen"]
-    checks = constraints(checked, limits) + [
-        replace(spring_reserve(checked, limits.min_spring_reserve, line.preload, line.rate),
-                note="with the starting design's spring")]
-    return Result(valve, {k: float(v) for k, v in zip(VARIABLES, x0)}, values, problem.evaluate(x0)[0],
-                  checked.records["power_polynomial"]["tappet_fullness"],
-                  dict(zip(problem.margin_names(), map(float, margins(best)))), problem.evaluations,
-                  time.perf_counter() - t0, problem.seconds, polydyne_fullness(checked.law), text, checks)
+    values = {v.path: float(x) for v, x in zip(problem.variables, best, strict=True)}
+    text = optimum_spec_text(spec, valve, problem.point(best), values)
+    optimum_spec = parse_spec(text)
+    checked = run_design(optimum_spec).valves[valve]
+    scale = optimum_spec.valves[valve].drive.spring_reserve / problem.reserve0
+    spring = None if any(v.path == "drive.spring_reserve" for v in problem.variables) else design.drive.lines["chosen"]
+    result = Result(
+        valve, objective, {v.path: float(x) for v, x in zip(problem.variables, problem.x0, strict=True)}, values,
+        problem.evaluate(problem.x0)[0], float(getattr(checked.flow, OBJECTIVES[objective][0])), problem.bounds,
+        problem.margin_names(), dict(zip(problem.margin_names(), map(float, margins(best)), strict=True)),
+        problem.evaluations, 0.0, problem.seconds, notes, _comparison(design, checked, objective),
+        final_checks(design, spec, limits, 1.0, spring), final_checks(checked, optimum_spec, limits, scale, spring),
+        list(problem.history),
+        polydyne_fullness(checked.law) if checked.law.name == "power_polynomial" else None, text)
+    result.seconds = time.perf_counter() - t0
+    return result
 
 
-def optimum_spec_text(spec, valve, values):
-    """The specification file of ``spec`` with the cam keys of ``valve`` set to ``values`` (TOML text).
+def optimum_spec_text(spec, valve, section, values):
+    """The specification file of ``spec`` with the valve section ``section`` (dict) of the optimum (TOML text).
 
     The specification is written back from its validated keys (those the user gave), so ``valvetrain run``
-    reads it as the original with the optimum's cam.
+    reads it as the original with the optimum's keys.
     """
     import tomli_w
 
     data = spec.model_dump(mode="json", exclude_unset=True, exclude_none=True)
-    data["valves"][valve]["cam"].update({k: round(v, 6) for k, v in values.items()})
-    head = (f"# The optimum of valvetrain optimize for valve {valve!r}: the power-polynomial cam's "
-            f"{', '.join(VARIABLES)} that maximise the fullness under the limits (UkrSURT Proceedings (2019)).\n\n")
+    data["valves"][valve] = section
+    shown = ", ".join(f"{k} = {v:.6g}" for k, v in values.items())
+    head = (f"# The optimum of valvetrain optimize for valve {valve!r}: {shown}.\n"
+            "# Method: differential evolution and a local polish under the design's limits (UkrSURT Proceedings "
+            "(2019); Shang Hanji (1988), section 4.3).\n\n")
     text = head + tomli_w.dumps(data)
     tomllib.loads(text)
     return text

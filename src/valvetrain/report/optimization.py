@@ -1,0 +1,132 @@
+"""What ``valvetrain optimize`` writes besides the optimum's specification: the history of the search (table and
+plot), the side-by-side comparison of the starting design and the optimum (table), and a report (HTML) that states
+the constraints that bind and, for the power-polynomial cam, compares the optimum with its article."""
+
+from html import escape
+
+from matplotlib.figure import Figure
+import numpy as np
+
+from ..bibliography import WORKS, cited_in
+from ..laws.power_polynomial import ARTICLE_FULLNESS
+from ..synthesis.optimize import BINDING
+from .i18n import OPTIMIZE_TEXT
+from .names import quantity_text, unit_text
+
+
+def history_columns(result):
+    """The history as named columns: evaluation, objective, feasible (every margin >= 0), and each margin."""
+    objective = np.array([h[0] for h in result.history])
+    margins = np.array([h[1] for h in result.history]).reshape(len(result.history), len(result.margin_names))
+    feasible = np.all(margins >= 0.0, axis=1)
+    best = np.maximum.accumulate(np.where(feasible, objective, -np.inf))
+    unit = 1e6 if result.objective == "time_area" else 1.0      # m2 s -> mm2 s
+    out = {"evaluation": np.arange(1, objective.size + 1), f"{result.objective}": objective * unit,
+           "feasible": feasible, f"best_feasible_{result.objective}": np.where(np.isfinite(best), best * unit, np.nan)}
+    for i, name in enumerate(result.margin_names):
+        out[f"margin_{name.replace(' ', '_')}"] = margins[:, i]
+    return out
+
+
+HISTORY_COMMENTS = ("valvetrain optimize: one row per evaluation of the search, in order",
+                    "objective: fullness (-) or time-area of the whole opening (mm2 s); margin_*: relative margin of a "
+                    "limit, >= 0 when it holds")
+
+
+def comparison_columns(result):
+    """The side-by-side comparison as named columns."""
+    rows = result.comparison
+    return {"quantity": [r[0] for r in rows], "unit": [r[1] for r in rows], "start": [r[2] for r in rows],
+            "optimum": [r[3] for r in rows]}
+
+
+def history_figure(result, lang="en"):
+    """Objective (every evaluation, and the best feasible so far) and the constraints' margins against evaluations."""
+    t = OPTIMIZE_TEXT[lang]
+    cols = history_columns(result)
+    n = cols["evaluation"]
+    fig = Figure(figsize=(8, 7))
+    top, bottom = fig.subplots(2, 1, sharex=True)
+    y = cols[result.objective]
+    top.plot(n[cols["feasible"]], y[cols["feasible"]], ".", ms=2, color="C0", label=t["feasible"])
+    top.plot(n[~cols["feasible"]], y[~cols["feasible"]], ".", ms=2, color="0.7", label=t["infeasible"])
+    top.plot(n, cols[f"best_feasible_{result.objective}"], color="C3", lw=1.2, label=t["best"])
+    top.axhline(result.start_value * (1e6 if result.objective == "time_area" else 1.0), color="k", lw=0.8, ls="--",
+                label=t["start"])
+    top.set_ylabel(t[f"objective_{result.objective}"])
+    finite = y[y > 0]
+    if finite.size:
+        top.set_ylim(np.percentile(finite, 5) * 0.98, finite.max() * 1.01)
+    top.legend(loc="lower right", fontsize=8)
+    for i, name in enumerate(result.margin_names):
+        bottom.plot(n, np.clip(cols[f"margin_{name.replace(' ', '_')}"], -1.0, 1.0), lw=0.6, label=t["margins"][name])
+    bottom.axhline(0.0, color="k", lw=0.8)
+    bottom.set_ylabel(t["margin"])
+    bottom.set_xlabel(t["evaluations"])
+    bottom.legend(loc="lower right", fontsize=7, ncol=2)
+    for ax in (top, bottom):
+        ax.grid(alpha=0.3)
+    fig.tight_layout()
+    return fig
+
+
+def _table(head, rows):
+    cells = "".join(f"<th>{escape(h)}</th>" for h in head)
+    body = "".join("<tr>" + "".join(f"<td>{escape(str(c))}</td>" for c in row) + "</tr>" for row in rows)
+    return f"<table><tr>{cells}</tr>{body}</table>"
+
+
+def _g(x):
+    return "" if x is None else f"{x:.5g}"
+
+
+def report_html(result, lang="en"):
+    """The optimisation's report in ``lang`` (HTML text): method, variables, comparison, constraints, history."""
+    t = OPTIMIZE_TEXT[lang]
+    prefixes = (result.valve,)
+    start = {c.quantity: c for c in result.checks_start}
+    parts = [f"<h1>{escape(t['title'])}: {escape(result.valve)}</h1>",
+             f"<p>{escape(t['method'].format(objective=t[f'objective_{result.objective}']))}</p>"]
+    parts.append(f"<h2>{escape(t['variables'])}</h2>")
+    bounds = dict(zip(result.start, result.bounds, strict=True))
+    parts.append(_table([t["key"], t["start"], t["optimum"], t["bounds"]],
+                        [(k, _g(result.start[k]), _g(result.optimum[k]), f"{bounds[k][0]:g}...{bounds[k][1]:g}")
+                         for k in result.start]))
+    parts.append(f"<h2>{escape(t['comparison'])}</h2>")
+    parts.append(_table([t["quantity"], t["unit"], t["start"], t["optimum"]],
+                        [(t["rows"].get(q, q), u, _g(a), _g(b)) for q, u, a, b in result.comparison]))
+    parts.append(f"<h2>{escape(t['constraints'])}</h2>")
+    rows = []
+    for c in result.checks:
+        s = start.get(c.quantity)
+        state = t["fails"] if not c.passed else t["binds"] if c.margin < BINDING else t["holds"]
+        note = f" ({c.note})" if c.note and lang == "en" else ""
+        rows.append((quantity_text(c.quantity, lang, prefixes) + note, _g(s.shown_value) if s else "",
+                     _g(c.shown_value), c.range, f"{c.margin:.4f}", state))
+    parts.append(_table([t["quantity"], t["start"], t["optimum"], t["range"], t["margin"], t["state"]], rows))
+    binding = [quantity_text(c.quantity, lang, prefixes) for c in result.binding]
+    parts.append(f"<p>{escape(t['binding'])}: {escape(', '.join(binding) if binding else t['none'])}.</p>")
+    for note in result.limit_notes:
+        shown = {**note, "quantity": quantity_text(note["quantity"], lang), "unit": unit_text(note["unit"], lang)}
+        parts.append(f"<p>{escape(t['relaxed'].format(**shown))}</p>")
+    if result.polydyne_fullness is not None:
+        tappet = next(r for r in result.comparison if r[0].startswith("tappet fullness"))
+        parts.append(f"<h2>{escape(t['article'])}</h2>")
+        parts.append(_table([t["cam"], t["tappet_fullness"]], [
+            (t["ours"], f"{tappet[3]:.4f}"), (t["article_optimum"], f"{ARTICLE_FULLNESS['optimum']:.3f}"),
+            (t["article_serial"], f"{ARTICLE_FULLNESS['serial']:.3f}"),
+            (t["polydyne"], f"{result.polydyne_fullness:.4f}")]))
+        gain = tappet[3] / result.polydyne_fullness - 1.0
+        parts.append(f"<p>{escape(t['gain'].format(gain=100 * gain))}</p>")
+    parts.append(f"<h2>{escape(t['history'])}</h2><img src=\"history.png\" alt=\"history\">")
+    parts.append(f"<p>{escape(t['cost'].format(n=result.evaluations, s=result.seconds, e=result.seconds_in_evaluations))}</p>")
+    text = "\n".join(parts)
+    works = [WORKS[k].reference() for k in cited_in(text)]
+    refs = "".join(f"<li>{escape(w)}</li>" for w in works)
+    return (f"<!DOCTYPE html><html lang=\"{lang}\"><head><meta charset=\"utf-8\"><title>{escape(t['title'])}</title>"
+            "<style>body{font-family:sans-serif;max-width:60em;margin:2em auto}table{border-collapse:collapse}"
+            "td,th{border:1px solid #bbb;padding:2px 6px;text-align:left}img{max-width:100%}</style></head><body>"
+            f"{text}<h2>{escape(t['references'])}</h2><ol>{refs}</ol></body></html>\n")
+
+
+__all__ = ["HISTORY_COMMENTS", "comparison_columns", "history_columns", "history_figure", "report_html"]
