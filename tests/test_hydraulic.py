@@ -105,6 +105,15 @@ def test_rigid_incompressible_limit_follows_the_cam_scaled_by_the_area_ratio(law
     assert not r.cavitation.any()
 
 
+def test_rigid_drive_seats_the_valve_at_the_cam_velocity(law):
+    """Analytic limit: the stiff drive seats the valve with the rigid drive's velocity A_p / A_a omega dh/dtheta at
+    the seating angle (to the O(dt) of the rigid seat's step), without a bounce."""
+    d = drive(bulk_modulus=1e13, length=0.05, reaches=2, leakage=0.0, fill=0.0, wall=math.inf)
+    angle, velocity, bounce = simulate(law, d, OMEGA).seating()
+    rigid = 0.64 * OMEGA * law.derivatives(np.array([angle]))[1][0]
+    assert rigid < 0 and velocity == pytest.approx(rigid, rel=1e-2) and bounce == 0.0
+
+
 def test_compressible_drive_is_late_and_loses_lift(law):
     """The real drive: the liquid's compliance delays the opening and loses lift against the rigid drive."""
     r = simulate(law, drive(), OMEGA)
@@ -180,6 +189,7 @@ def test_speed_sweep_is_the_single_runs_and_the_loss_grows_with_speed(law):
     one = simulate(law, d, speeds[1])
     assert s.max_pressure[1] == one.max_pressure and s.lift_loss[1] == one.lift_loss
     assert s.opening_delay[1] == one.delays()[0] and not s.cavitation.any()
+    assert (s.seating_velocity[1], s.bounce[1]) == one.seating()[1:]
     assert np.all(np.diff(s.opening_delay) > 0)
 
 

@@ -82,6 +82,8 @@ def test_cavitation_is_a_warning():
     (SECTION + "vapour_pressure_MPa = 0.5\n", ["vapour_pressure_MPa = 0.5", "below initial_pressure_MPa"]),
     (SECTION.replace("pipe_length_mm = 500.0\n", ""), ["pipe_length_mm"]),
     (SECTION + "pipe_colour = 1.0\n", ["pipe_colour"]),
+    (SECTION + "speed_range_rpm = [2000.0, 1000.0]\n", ["speed_range_rpm = [2000.0, 1000.0]", "low < high"]),
+    (SECTION + "speeds = 1\n", ["speeds", "greater than or equal to 2"]),
 ])
 def test_bad_values_are_refused_with_the_key_and_the_range(text, words):
     with pytest.raises(SpecError) as err:
@@ -92,12 +94,60 @@ def test_bad_values_are_refused_with_the_key_and_the_range(text, words):
         assert w in found, found
 
 
-def test_a_grid_too_fine_for_one_revolution_is_refused():
-    text = with_section(SECTION.replace("pipe_length_mm = 500.0", "pipe_length_mm = 1.0") + "reaches = 400\n")
+@pytest.mark.parametrize("extra", [
+    "pipe_length_mm = 1.0\nreaches = 400\n",                      # one revolution alone is too fine a grid
+    "speed_range_rpm = [2.0, 10.0]\nspeeds = 200\n",               # the grid is fine, the slow sweep is too long
+])
+def test_a_grid_too_fine_for_the_runs_is_refused(extra):
+    text = with_section(SECTION.replace("pipe_length_mm = 500.0\n", "") + ("" if "pipe" in extra else
+                                                                          "pipe_length_mm = 500.0\n") + extra)
     with pytest.raises(SpecError) as err:
         run(parse_spec(text))
     (problem,) = err.value.problems
-    assert problem.startswith("valves.intake.hydraulic.reaches = 400: one revolution") and "allowed <=" in problem
+    assert problem.startswith("valves.intake.hydraulic.reaches = ") and "node updates" in problem
+    assert "allowed <= 2e+08" in problem
+
+
+def test_the_sweep_is_the_single_runs_at_its_speeds(tmp_path):
+    """The sweep's entry at the simulated speed (the middle of [1000, 2000] rpm) is the simulation itself; the table
+    holds the same numbers as results.json, every column naming its unit."""
+    results = run(parse_spec(with_section(SECTION + "speed_range_rpm = [1000.0, 2000.0]\nspeeds = 3\n")))
+    data = json.loads(results_json(results))
+    jsonschema.validate(data, results_schema())
+    h = data["valves"]["intake"]["hydraulic"]
+    p = h["per_speed"]
+    assert h["speed_range_rpm"] == pytest.approx([1000.0, 2000.0]) and h["speeds"] == 3 and h["notes"] == []
+    assert p["speed_rpm"] == pytest.approx([1000.0, 1500.0, 2000.0])
+    for key in ("max_pressure_MPa", "valve_lift_mm", "lift_loss_mm", "opening_delay_cam_deg", "closing_delay_cam_deg",
+                "seating_velocity_m_s", "bounce_mm", "cavitation"):
+        assert p[key][1] == pytest.approx(h[key], rel=1e-12), key
+    out = write_outputs(results, tmp_path / "out")
+    with open(out / h["sweep_table"], newline="") as f:
+        rows = [r for r in csv.reader(f) if r and not r[0].startswith("#")]
+    assert rows[0] == ["speed_rpm", "camshaft_rpm", "max_pressure_MPa", "valve_lift_mm", "lift_loss_mm",
+                       "opening_delay_cam_deg", "closing_delay_cam_deg", "cavitation", "seating_velocity_m_s",
+                       "bounce_mm"]
+    table = np.array([[float(x) if x else np.nan for x in r] for r in rows[1:]])    # an empty cell: null
+    assert table[:, 1] == pytest.approx(table[:, 0] / 2)                # a four-stroke's camshaft
+    assert table[:, 2] == pytest.approx(p["max_pressure_MPa"])
+    assert table[:, 8] == pytest.approx(np.array(p["seating_velocity_m_s"], dtype=float), nan_ok=True)
+
+
+def test_the_default_sweep_is_stated():
+    """Left out, the sweep runs 12 speeds from 50 % to 110 % of the rated 7000 rpm, and the notes say so."""
+    h = json.loads(results_json(run(parse_spec(with_section(SECTION)))))["valves"]["intake"]["hydraulic"]
+    assert h["speed_range_rpm"] == pytest.approx([3500.0, 7700.0]) and len(h["per_speed"]["speed_rpm"]) == 12
+    assert h["notes"] == ["speed range 3500-7700 rpm: 50% to 110% of the rated speed"]
+
+
+def test_the_seating_velocity_is_checked_against_the_dynamics_limit():
+    """The check is the dynamics stage's: |seating velocity| <= 0.5 m/s (Shang Hanji (1988), ch. 3), a warning."""
+    results = run(parse_spec(with_section(SECTION)))
+    h = json.loads(results_json(results))["valves"]["intake"]["hydraulic"]
+    (c,) = [c for c in results.checks if "seating velocity" in c.quantity and "hydraulic" in c.quantity]
+    assert c.quantity == "intake: hydraulic drive: valve seating velocity at the simulated speed"
+    assert c.value == pytest.approx(abs(h["seating_velocity_m_s"])) and c.high == 0.5 and c.severity == "warning"
+    assert h["seating_velocity_m_s"] < 0 and c.passed
 
 
 @pytest.mark.parametrize("lang, heading", [("en", "9. Hydraulic valve actuation"),
@@ -108,3 +158,4 @@ def test_the_report_has_the_hydraulic_chapter(tmp_path, lang, heading):
     html = (out / "report.html").read_text(encoding="utf-8")
     assert heading in html and "Shang Hanji (1988), ch. 7" in html and "Wylie and Streeter (1978)" in html
     assert (out / "plots" / "intake_hydraulic.png").is_file() and "tables/intake_hydraulic.csv" in html
+    assert (out / "plots" / "intake_hydraulic_sweep.png").is_file() and "tables/intake_hydraulic_sweep.csv" in html

@@ -22,7 +22,7 @@ ALLOWED = {
     # symbols of the sources (the report explains each where it is first used)
     "cp", "vp", "max", "min", "in", "spr", "gas", "cam", "sin", "cos", "ln", "dt", "dh", "dx", "ik", "hv", "mv",
     "av", "aT", "hT", "vT", "jT", "Cp", "Cq", "Cr", "Cs", "Kr", "Wi", "fg", "Fp", "Vh", "ic", "pi", "pN", "pS",
-    "pK", "pT", "mT", "mj", "mr", "iw", "vv", "c1", "v0", "p0", "PD", "TR",
+    "pK", "pT", "mT", "mj", "mr", "iw", "vv", "c1", "v0", "p0", "PD", "TR", "dp",
     # unit-free names of formulas and proper names
     "Kurz", "Wiebe", "Euler", "VDSiCr", "VDCrV", "valvetrain", "json", "csv", "dxf", "png",
     # authors of cited works in the notes of a computation (the citations themselves are not translated)
@@ -158,6 +158,8 @@ def test_plot_labels_come_from_the_texts(designs):
     for results in designs.values():
         names = set(results.valves) | (set(results.two_stroke.summary["ports"]) if results.two_stroke else set())
         figures = [make(v, t) for v in results.valves.values() for make in report_plots.FIGURES.values()]
+        figures += [make(v, t) for v in results.valves.values() if v.hydraulic is not None
+                    for make in (report_plots.hydraulic_figure, report_plots.hydraulic_sweep_figure)]
         if results.valves:
             figures.append(report_plots.timing_figure(results.valves, t))
         for stage, makers in report_plots.ENGINE_FIGURES.items():

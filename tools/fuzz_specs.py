@@ -480,7 +480,7 @@ def dotted(path):
 
 
 def _show(v):
-    text = _value(v) if not isinstance(v, _Nested) else f"{'[' * v.depth}1.0{']' * v.depth}"
+    text = _value(_swap_nested(v))            # a nested array may sit anywhere in v (a list of tables copied)
     return text if len(text) <= 60 else text[:40] + f"... ({len(text)} chars)"
 
 
@@ -804,7 +804,10 @@ DOCUMENTED_NULLS = {
     "cam_min_concave_radius_mm": "no concave stretch", "master_flat_lift_max_mm": "a master that is not convex",
     **dict.fromkeys(("max_wear_lift_error_mm", "max_wear_lift_error_cam_deg", "max_wear_lift_error_first_order_mm",
                      "max_wear_phase_shift_cam_deg", "master_rho_min_mm"), "a wheel that cannot grind the cam"),
-    "seating_velocity_m_s": "a speed whose recorded revolution has no seating",
+    "seating_velocity_m_s": "a speed whose recorded revolution has no seating (dynamics), a hydraulic valve that "
+                            "does not return to its seat within the revolution",
+    **dict.fromkeys(("opening_delay_cam_deg", "closing_delay_cam_deg"),
+                    "a hydraulic valve that stays shut (or, closing, does not return) within the revolution"),
 }
 """In memory a documented null may be NaN (numpy's "none"), which results.json writes as null."""
 

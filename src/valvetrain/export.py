@@ -8,7 +8,7 @@ import numpy as np
 
 from .design.dynamics import sweep_columns
 from .design.grinding import master_cartesian_columns, master_polar_columns, wear_columns
-from .design.hydraulic import table_columns as hydraulic_columns
+from .design.hydraulic import sweep_columns as hydraulic_sweep_columns, table_columns as hydraulic_columns
 from .outfolder import atomic_folder
 from .specification import spec_toml
 from .tables import (cartesian_contour_columns, contour_columns, crank_columns, engine_torque_columns,
@@ -166,7 +166,8 @@ def write_outputs(results, out, lang="en", inputs=(), force=False):
         out/tables/NAME_lift.csv, crank.csv, engine_torque.csv, two_stroke_ports.csv, two_stroke_time_area.csv,
                    NAME_dynamics.csv (a [dynamics] section: one row per speed),
                    NAME_wear_error.csv (a [grinding] section: the lift error of the worn wheel)
-                   NAME_hydraulic.csv (a [hydraulic] section: pressures and lifts against camshaft angle)
+                   NAME_hydraulic.csv (a [hydraulic] section: pressures and lifts against camshaft angle),
+                   NAME_hydraulic_sweep.csv (a [hydraulic] section: one row per engine speed)
         out/contour/NAME.csv, NAME_polar.csv, NAME_cartesian.csv, NAME_lift.csv, NAME.dxf
                     (not for a valve whose cam profile is undercut: it cannot be made)
                     NAME_master.csv, NAME_master_cartesian.csv, NAME_master.dxf (a [grinding] section whose
@@ -174,6 +175,7 @@ def write_outputs(results, out, lang="en", inputs=(), force=False):
         out/plots/NAME_kinematics.png, NAME_contour.png, NAME_time_area.png, NAME_curvature.png,
                   NAME_spring.png, NAME_dynamics_map.png, NAME_dynamics_speed.png (a [dynamics] section),
                   NAME_grinding.png (a [grinding] section),
+                  NAME_hydraulic.png, NAME_hydraulic_sweep.png (a [hydraulic] section),
                   crank_forces.png, crank_torque.png, crank_pin_polar.png,
                   two_stroke_ports.png, two_stroke_time_area.png
         out/report.html
@@ -192,6 +194,7 @@ def write_outputs(results, out, lang="en", inputs=(), force=False):
                 write_csv(tmp / v.dynamics.sweep_table, sweep_columns(v.dynamics))
             if v.hydraulic is not None:
                 write_csv(tmp / v.hydraulic.table_file, hydraulic_columns(v.hydraulic))
+                write_csv(tmp / v.hydraulic.sweep_table, hydraulic_sweep_columns(v.hydraulic))
             if v.summary["cam"]["undercut"]:
                 continue  # no follower can trace an undercut profile: nothing is written for its manufacture
             g = v.grinding

@@ -167,6 +167,19 @@ def seating(theta, lift, velocity):
                                                                                              velocity[i - 1]))
 
 
+def bounce(lift, first_seating, tolerance=BOUNCE_TOLERANCE):
+    """The bounce after the first seating: (largest lift after it [m], returns above ``tolerance``); (0, 0) without one.
+
+    ``first_seating`` is the index :func:`seating` returns (the record's length: no seating, no bounce).
+
+    >>> bounce(np.array([0.0, 2e-3, 0.0, 5e-6, 0.0, 3e-6, 0.0]), 2)
+    (5e-06, 2)
+    """
+    after = lift[first_seating:]
+    returns = runs(after > tolerance)
+    return (float(max(after.max(), 0.0)) if returns.size else 0.0), len(returns)
+
+
 def speed_result(cam_speed, theta, lift, velocity, kinematic, contact, seat, spring, slope, surge, clash,
                  bounce_tolerance=BOUNCE_TOLERANCE):
     """Events of one speed from its recorded revolution (see the module docstring for the definitions)."""
@@ -176,11 +189,9 @@ def speed_result(cam_speed, theta, lift, velocity, kinematic, contact, seat, spr
     intervals = runs(separation)
     jumps = np.column_stack([theta[intervals[:, 0]], theta[intervals[:, 1] - 1]]) if intervals.size else \
         np.zeros((0, 2))
-    after = lift[i_seat:]
-    bounces = runs(after > bounce_tolerance)
-    height = float(max(after.max(), 0.0)) if after.size and bounces.size else 0.0
+    height, count = bounce(lift, i_seat, bounce_tolerance)
     return SpeedResult(float(cam_speed), theta, lift, velocity, kinematic, contact, seat, spring, contact * slope,
-                       separation, jumps, seat_angle, seat_velocity, height, len(bounces), surge, clash)
+                       separation, jumps, seat_angle, seat_velocity, height, count, surge, clash)
 
 
 @dataclass(frozen=True)

@@ -15,7 +15,8 @@ Actuator chamber at x = L and the valve (one degree of freedom on a rigid seat):
     M d2y/dt2 = (p_a - p_back) A_a - F_0 - K_s y - C dy/dt + F_seat
 
 The seat holds y >= 0: a valve that would move into it stops there (an inelastic impact), and F_seat is
-the reaction that keeps it there.  The chamber volumes are held at their rest values (linear
+the reaction that keeps it there; the seating velocity is the valve's velocity over the last step before the seat
+stops it.  The chamber volumes are held at their rest values (linear
 compressibility).  Pressures below the vapour pressure are clamped to it (see
 :mod:`valvetrain.hydraulic.moc`).
 """
@@ -27,6 +28,7 @@ import numpy as np
 from numba import njit
 
 from ..bibliography import cite
+from ..dynamics.sweep import BOUNCE_TOLERANCE, bounce, seating
 from .moc import characteristics, interior
 
 SOURCE = cite("shang1988", "ch. 7") + "; " + cite("wylie1978", "method of characteristics")
@@ -205,6 +207,35 @@ class DriveResult:
         fall = np.interp(level, lift[j:j + 2][::-1], self.angle[j:j + 2][::-1])
         return float(rise), float(fall)
 
+    def seating(self, tolerance=BOUNCE_TOLERANCE):
+        """The valve's first return to its seat after its largest lift, and the bounce after it.
+
+        Parameters
+        ----------
+        tolerance : float
+            Lift above the seat that counts as a bounce [m].
+
+        Returns
+        -------
+        (float, float, float)
+            Camshaft angle [rad] and the valve's velocity [m/s] at the first seating (negative: closing; both nan
+            if the valve does not open or does not return within the record); the largest lift after it [m] (0
+            without a bounce).
+
+        Notes
+        -----
+        The seat stops the valve within a time step (an inelastic impact on a rigid seat), so the velocity at
+        seating is that of the last step before it, a time step L / (N a) earlier.
+
+        References
+        ----------
+        Shang Hanji (1988), ch. 3 (seating velocity and bounce) and ch. 7.
+        """
+        i, angle, _ = seating(self.angle, self.valve_lift, self.valve_velocity)
+        if i == self.angle.size:
+            return math.nan, math.nan, 0.0
+        return angle, float(self.valve_velocity[i - 1]), bounce(self.valve_lift, i, tolerance)[0]
+
     def delays(self, fraction=0.05):
         """Opening and closing delays of the valve against the rigid drive [rad camshaft].
 
@@ -297,6 +328,9 @@ class SpeedSweep:
         Delays against the rigid drive at ``fraction`` of its largest lift [rad camshaft] (nan: never reached).
     cavitation : ndarray of bool
         The pressure fell to the vapour pressure somewhere during the revolution.
+    seating_velocity, bounce : ndarray
+        The valve's velocity at its first seating [m/s] (nan: it does not return) and its largest lift after it
+        [m] (:meth:`DriveResult.seating`).
     """
 
     cam_speed: np.ndarray
@@ -306,6 +340,8 @@ class SpeedSweep:
     opening_delay: np.ndarray
     closing_delay: np.ndarray
     cavitation: np.ndarray
+    seating_velocity: np.ndarray
+    bounce: np.ndarray
 
 
 def speed_sweep(law, drive, cam_speeds, fraction=0.05, **kwargs):
@@ -321,7 +357,8 @@ def speed_sweep(law, drive, cam_speeds, fraction=0.05, **kwargs):
     rows = []
     for omega in speeds:
         r = simulate(law, drive, float(omega), **kwargs)
+        _, seat_velocity, height = r.seating()
         rows.append((r.max_pressure, float(r.valve_lift.max()), r.lift_loss, *r.delays(fraction),
-                     bool(r.cavitation.any())))
-    cols = list(zip(*rows, strict=True)) if rows else [()] * 6
-    return SpeedSweep(speeds, *(np.array(c, dtype=float) for c in cols[:5]), np.array(cols[5], dtype=bool))
+                     bool(r.cavitation.any()), seat_velocity, height))
+    cols = [np.array(c, dtype=float) for c in zip(*rows, strict=True)] if rows else [np.zeros(0)] * 8
+    return SpeedSweep(speeds, *cols[:5], cols[5].astype(bool), *cols[6:])

@@ -219,11 +219,14 @@ def _grinding(name, v):
 
 
 def _hydraulic(v):
-    """The hydraulic record for the report: its rows and the table's file."""
+    """The hydraulic record for the report: its rows (the simulated speed), the notes on the defaults taken and the
+    tables' files (the sweep is shown in its figure)."""
     if v.hydraulic is None:
         return None
     rec = record(v.hydraulic)
-    return {"rows": [(k, val) for k, val in rec.items() if k != "table"], "table": rec["table"]}
+    return {"rows": [(k, val) for k, val in rec.items()
+                     if k not in ("table", "sweep_table", "notes") and not isinstance(val, (list, dict))],
+            "notes": rec["notes"], "table": rec["table"], "sweep_table": rec["sweep_table"]}
 
 
 def _summary(results, t):

@@ -472,7 +472,14 @@ TEXT["en"].update({
         "closing_delay_cam_deg": "closing delay (negative: early), cam deg",
         "max_pressure_MPa": "largest pressure, MPa", "max_pressure_cam_deg": "where it is largest, cam deg",
         "min_pressure_MPa": "smallest pressure, MPa", "vapour_pressure_MPa": "vapour pressure, MPa", "cavitation": "cavitation (pressure at the vapour pressure)",
+        "seating_velocity_m_s": "seating velocity (negative: closing), m/s",
+        "bounce_mm": "largest lift after the first seating (bounce), mm", "speeds": "speeds swept",
     },
+    "hy_sweep": "Speed sweep (one revolution per speed)",
+    "hy_sweep_title": "hydraulic drive against engine speed", "hy_sweep_table": "Table against engine speed",
+    "hy_max_pressure": "largest pressure, MPa", "hy_lift_loss": "lift loss, mm", "hy_delay": "delay, cam deg",
+    "hy_opening_delay": "opening", "hy_closing_delay": "closing (negative: early)",
+    "hy_notes": "Values not given in the specification",
 })
 
 TEXT["ru"].update({
@@ -498,7 +505,16 @@ TEXT["ru"].update({
         "max_pressure_MPa": "наибольшее давление, МПа", "max_pressure_cam_deg": "где оно наибольшее, град ПРВ",
         "min_pressure_MPa": "наименьшее давление, МПа", "vapour_pressure_MPa": "давление насыщенных паров, МПа",
         "cavitation": "кавитация (давление насыщенных паров)",
+        "seating_velocity_m_s": "скорость посадки клапана (минус: при закрытии), м/с",
+        "bounce_mm": "наибольший подъём после первой посадки (отскок), мм", "speeds": "число частот вращения",
     },
+    "hy_sweep": "Расчёт по частоте вращения (один оборот на каждой частоте)",
+    "hy_sweep_title": "гидропривод в зависимости от частоты вращения двигателя",
+    "hy_sweep_table": "Таблица по частоте вращения двигателя",
+    "hy_max_pressure": "наибольшее давление, МПа", "hy_lift_loss": "потеря подъёма, мм",
+    "hy_delay": "запаздывание, град ПРВ", "hy_opening_delay": "открытия",
+    "hy_closing_delay": "закрытия (минус: раньше)",
+    "hy_notes": "Величины, не заданные в исходных данных",
 })
 
 

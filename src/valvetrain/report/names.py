@@ -24,10 +24,13 @@ UNITS = {
     "J": ("J", "Дж"), "deg": ("deg", "град"), "crank deg": ("crank deg", "град ПКВ"),
     "cam deg": ("cam deg", "град ПРВ"), "rad/s": ("rad/s", "рад/с"), "Hz": ("Hz", "Гц"), "rpm": ("rpm", "об/мин"),
     "mm/rad2": ("mm/rad²", "мм/рад²"), "mm/rad": ("mm/rad", "мм/рад"), "mm/deg": ("mm/deg", "мм/град"), "%": ("%", "%"),
+    "GPa": ("GPa", "ГПа"), "kg/m3": ("kg/m³", "кг/м³"), "N s/m": ("N·s/m", "Н·с/м"),
+    "cm3/(s MPa)": ("cm³/(s·MPa)", "см³/(с·МПа)"),
 }
 """Display units of :data:`valvetrain.units.DISPLAY_UNITS` (and a few of the keys) as printed."""
 
 SUFFIXES = [
+    ("_cm3_per_s_MPa", "cm3/(s MPa)"), ("_N_s_per_m", "N s/m"), ("_kg_m3", "kg/m3"), ("_GPa", "GPa"),
     ("_mm2_s", "mm2 s"), ("_N_per_mm", "N/mm"), ("_mm_per_rad2", "mm/rad2"), ("_mm_rad2", "mm/rad2"),
     ("_mm_per_rad", "mm/rad"), ("_mm_rad", "mm/rad"), ("_mm_per_deg", "mm/deg"), ("_kg_mm2", "kg mm2"),
     ("_kg_m2", "kg/m2"), ("_m_s2", "m/s2"), ("_m_s3", "m/s3"), ("_m_s", "m/s"), ("_rad_s", "rad/s"),
@@ -693,6 +696,33 @@ NAMES.update({
 })
 
 NAMES.update({
+    "spring.min_preload": ("smallest preload (seat load)", "наименьшая сила предварительной затяжки (посадочное усилие)"),
+    "hydraulic.speed": ("engine speed of the simulation", "частота вращения двигателя в расчёте"),
+    "hydraulic.speeds": ("speeds of the sweep", "число частот вращения в расчёте по частоте"),
+    "hydraulic.plunger_diameter": ("plunger diameter", "диаметр плунжера"),
+    "hydraulic.pump_volume": ("pump chamber volume V_p", "объём полости насоса V_p"),
+    "hydraulic.pipe_length": ("pipe length L", "длина трубопровода L"),
+    "hydraulic.pipe_diameter": ("pipe bore", "внутренний диаметр трубопровода"),
+    "hydraulic.pipe_wall": ("pipe wall thickness", "толщина стенки трубопровода"),
+    "hydraulic.pipe_wall_modulus": ("elastic modulus of the pipe wall", "модуль упругости стенки трубопровода"),
+    "hydraulic.friction_factor": ("Darcy friction factor", "коэффициент трения Дарси"),
+    "hydraulic.reaches": ("pipe reaches N", "число участков трубопровода N"),
+    "hydraulic.actuator_diameter": ("actuator piston diameter", "диаметр поршня привода клапана"),
+    "hydraulic.actuator_volume": ("actuator chamber volume V_a", "объём полости привода клапана V_a"),
+    "hydraulic.valve_mass": ("moving mass of the valve M", "подвижная масса клапана M"),
+    "hydraulic.spring_rate": ("valve spring rate", "жёсткость пружины клапана"),
+    "hydraulic.spring_preload": ("valve spring preload F_0", "сила предварительной затяжки пружины F_0"),
+    "hydraulic.damping": ("valve damping C", "коэффициент демпфирования клапана C"),
+    "hydraulic.density": ("liquid density", "плотность жидкости"),
+    "hydraulic.bulk_modulus": ("bulk modulus of the liquid K", "модуль объёмной упругости жидкости K"),
+    "hydraulic.vapour_pressure": ("vapour pressure", "давление насыщенных паров"),
+    "hydraulic.initial_pressure": ("initial pressure", "начальное давление"),
+    "hydraulic.back_pressure": ("back pressure", "противодавление"),
+    "hydraulic.leakage": ("leakage of each chamber", "утечки каждой полости"),
+    "hydraulic.fill_pressure": ("fill valve supply pressure", "давление подпитки"),
+    "hydraulic.fill_conductance": ("fill valve conductance", "проводимость подпиточного клапана"),
+    "hydraulic.relief_pressure": ("relief valve opening pressure", "давление открытия предохранительного клапана"),
+    "hydraulic.relief_conductance": ("relief valve conductance", "проводимость предохранительного клапана"),
     "grinding.wheel_radius": ("grinding wheel radius R_w", "радиус шлифовального круга R_w"),
     "grinding.master_follower_radius": ("master roller radius r_m", "радиус ролика копира r_m"),
     "grinding.bar_ratio": ("bar ratio of the grinder i", "передаточное отношение качающейся планки i"),
@@ -708,6 +738,9 @@ QUANTITIES.update({
     "hydraulic drive: smallest pressure above the vapour pressure": (
         "hydraulic drive: smallest pressure above the vapour pressure",
         "гидропривод: наименьшее давление выше давления насыщенных паров"),
+    "hydraulic drive: valve seating velocity at the simulated speed": (
+        "hydraulic drive: valve seating velocity at the simulated speed",
+        "гидропривод: скорость посадки клапана на расчётной частоте вращения"),
     "master cam: smallest radius of curvature (master roller undercut)": (
         "master cam: smallest radius of curvature (undercut by the master roller)",
         "копир: наименьший радиус кривизны (подрез роликом копира)"),
@@ -717,4 +750,9 @@ SKELETONS.update({
     "a wheel of radius {} mm cannot grind a concave stretch of smaller radius":
         "круг радиусом {} мм не может шлифовать вогнутый участок меньшего радиуса",
     "master roller r_m = {} mm, bar ratio {}": "ролик копира r_m = {} мм, передаточное отношение {}",
+    "min_preload_N of the specification": "наименьшая сила затяжки, заданная в исходных данных",
+    "engine speed of the simulation {} rpm: the rated speed": "частота вращения расчёта {} мин⁻¹: номинальная",
+    "speed range {}{} rpm: {}% to {}% of the rated speed": "диапазон частот {}{} мин⁻¹: от {}% до {}% номинальной",
+    "the liquid column separates (cavitation) where the pressure falls to the vapour pressure":
+        "столб жидкости разрывается (кавитация), где давление падает до давления насыщенных паров",
 })

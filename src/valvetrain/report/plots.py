@@ -381,6 +381,36 @@ def hydraulic_figure(valve, t):
     return fig
 
 
+def hydraulic_sweep_figure(valve, t):
+    """The largest pressure, the lift loss and the delays of the hydraulic drive against the engine speed, the
+    simulated speed marked."""
+    h = valve.hydraulic
+    p = h.per_speed
+    n = to_display(np.asarray(p.speed), "rpm")
+    fig = Figure(figsize=(9, 8))
+    axes = fig.subplots(3, 1, sharex=True)
+    axes[0].plot(n, np.asarray(p.max_pressure) / 1e6, "o-", color="C3", ms=3)
+    axes[0].set_ylabel(t["hy_max_pressure"])
+    axes[1].plot(n, np.asarray(p.lift_loss) / MM, "o-", color="C1", ms=3)
+    axes[1].set_ylabel(t["hy_lift_loss"])
+    for values, label, color in ((p.opening_delay, t["hy_opening_delay"], "C0"),
+                                 (p.closing_delay, t["hy_closing_delay"], "C2")):
+        axes[2].plot(n, rad_to_deg(np.array(values, dtype=float)), "o-", color=color, ms=3, label=label)  # None: a gap
+    axes[2].set_ylabel(t["hy_delay"])
+    axes[2].legend(fontsize=8)
+    axes[2].set_xlabel(t["speed"])
+    for ax in axes:
+        ax.grid(alpha=0.3)
+        ax.axvline(to_display(h.speed, "rpm"), color="0.3", lw=0.8, ls="-.")
+    cav = np.asarray(p.cavitation)
+    if cav.any():
+        axes[0].plot(n[cav], np.asarray(p.max_pressure)[cav] / 1e6, "x", color="k", ms=6, label=t["hy_cavitation"])
+        axes[0].legend(fontsize=8)
+    axes[0].set_title(f"{valve.name}: {t['hy_sweep_title']}")
+    fig.tight_layout()
+    return fig
+
+
 DYNAMICS_FIGURES = {"dynamics_map": dynamics_map_figure, "dynamics_speed": dynamics_speed_figure}
 
 
@@ -421,6 +451,7 @@ def write_plots(results, folder, lang="en"):
             written[name]["grinding"] = save(grinding_figure(valve, t), f"{name}_grinding.png")
         if valve.hydraulic is not None:
             written[name]["hydraulic"] = save(hydraulic_figure(valve, t), f"{name}_hydraulic.png")
+            written[name]["hydraulic_sweep"] = save(hydraulic_sweep_figure(valve, t), f"{name}_hydraulic_sweep.png")
     if results.valves:
         written["(timing)"] = save(timing_figure(results.valves, t), "valve_timing.png")
     for stage, figures in ENGINE_FIGURES.items():

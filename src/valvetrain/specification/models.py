@@ -272,12 +272,17 @@ class Hydraulic(_Model):
     """[valves.NAME.hydraulic]: hydraulic valve actuation (Shang Hanji (1988), ch. 7): the valve's cam drives a
     plunger that feeds a pipe to an actuator piston on the valve (one mass on a spring and a seat).
 
-    Pressures are absolute.  ``speed_rpm`` is the engine speed (the rated speed if left out).  ``pipe_wall_mm``
+    The section belongs to a valve, not to the engine, because each valve's own cam drives its plunger.
+    Pressures are absolute.  ``speed_rpm`` is the engine speed of the simulation (the rated speed if left out);
+    ``speed_range_rpm`` the engine speeds of the sweep, ``speeds`` of them (50 % to 110 % of the rated speed if
+    left out).  ``pipe_wall_mm``
     left out makes the pipe rigid.  ``fill_pressure_MPa`` gives the pump chamber a fill (check) valve from a supply
     at that pressure, ``relief_pressure_MPa`` a relief valve opening at it.  The valve's mass, spring and damping are
     the ones of the hydraulic drive and stand apart from the mechanical spring design."""
 
     speed_rpm: Optional[_bounded(1.0, 30000.0, "rpm", low_open=False)] = None
+    speed_range_rpm: Optional[Pair(1.0, 30000.0, "rpm")] = None
+    speeds: Annotated[int, Field(ge=2, le=200)] = 12
     plunger_diameter_mm: Length(1.0, 1000.0, low_open=False)
     pump_volume_cm3: _bounded(0.001, 1e6, "cm3", low_open=False)
     pipe_length_mm: Length(1.0, 100000.0, low_open=False)
@@ -306,6 +311,9 @@ class Hydraulic(_Model):
     @model_validator(mode="after")
     def _pressures_in_order(self):
         problems = []
+        if self.speed_range_rpm is not None and self.speed_range_rpm[0] >= self.speed_range_rpm[1]:
+            problems.append(f"speed_range_rpm = {list(self.speed_range_rpm)} must be [low, high] engine rpm with "
+                            "low < high")
         if self.vapour_pressure_MPa >= self.initial_pressure_MPa:
             problems.append(f"vapour_pressure_MPa = {self.vapour_pressure_MPa:g} must be below initial_pressure_MPa = "
                             f"{self.initial_pressure_MPa:g}")
