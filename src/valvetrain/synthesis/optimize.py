@@ -66,15 +66,14 @@ PENALTY = 10.0
 value in the global search (an exact penalty: a feasible point always beats a point that violates a limit by more
 than a tenth of the objective's range)."""
 
-SPRING_MARGIN = 0.05
-"""The margin of the spring design in the search: it passes (+) or it does not (-); the weight of a failing spring
-in the penalty is PENALTY times it."""
+FRONTIER_RANGE = (0.5, 3.0)
+"""Factors on the starting design's required spring force between which the spring frontier is searched."""
+
+FRONTIER_TOLERANCE = 2e-3
+"""Width of the bisection bracket of the spring frontier (its lower end is used: on the side where a spring passes)."""
 
 SPRING_ITERATIONS = 4
 """Spring searches of one evaluation at most while the reduced mass settles on the found spring's mass."""
-
-LAZY = 1e-6
-"""A margin above minus this lets the spring search run (a limit met to the optimiser's tolerance)."""
 
 CACHE = 4096
 """Points whose evaluation :class:`Problem` keeps (the optimiser asks for the objective and the margins of a point
@@ -279,6 +278,7 @@ class Problem:
         self.valve = si(self.section, self.spec)
         self.spring_inputs = (self.valve.throat_diameter, spring_options(self.valve.spring),
                               max(design.drive.spring.gas_force, design.drive.spring.seat_load))
+        self.law0, self.frontier = design.law, None
         self._train_parameters(design)
         self.evaluations, self.seconds = 0, 0.0
         self.history = []
@@ -409,31 +409,64 @@ class Problem:
             out.append((L.seating_velocity[1] - seat) / L.seating_velocity[1])
         if self.speeds is not None:
             out.append(self._separation(law, scale))
-        out.append(self._spring_design(law, scale) if min(out) >= -LAZY else 0.0)
+        out.append(self._spring_design(law, scale))
         return np.array(out, dtype=float)
 
-    def _spring_design(self, law, scale):
-        """Whether a spring (or nested pair) of the specification's options passes every spring check for this cam
-        at K_z = scale x K_z,0: +SPRING_MARGIN or -SPRING_MARGIN (the design's own search,
-        :func:`valvetrain.springs.design_springs`, with the reduced mass iterated on the found spring's mass as the
-        drive stage does).  Left at 0 while another margin fails by more than :data:`LAZY` (the search is the
-        costliest part of an evaluation)."""
+    def _required_line(self, law, scale, mass=None):
+        """The required spring line (:meth:`valvetrain.springs.Requirement.line`) of a cam at K_z = scale x K_z,0,
+        on the starting design's reduced mass or ``mass`` [kg]."""
         theta = np.linspace(law.valve_opens, law.valve_closes, GRID)
         _, _, d2h, _ = law.derivatives(theta)
         y = self.i_k * np.clip(law.lift(theta) - law.ramp_height, 0.0, None)
-        throat, options, min_preload = self.spring_inputs
+        force = springs.required_spring_force(self.mass if mass is None else mass, self.i_k * self.omega**2 * d2h,
+                                              self.reserve0 * scale)
+        return springs.Requirement(y, force, self.spring_inputs[2])
+
+    def _spring_passes(self, requirement):
+        """Whether the design's spring search finds a spring for ``requirement`` (times a factor), the reduced mass
+        iterated on the found spring's mass as the drive stage does: ``passes(factor)``."""
+        throat, options, _ = self.spring_inputs
         masses = self.valve.drive.masses
-        mass = self.mass
-        for _ in range(SPRING_ITERATIONS):
-            force = springs.required_spring_force(mass, self.i_k * self.omega**2 * d2h, self.reserve0 * scale)
-            search = springs.design_springs(springs.Requirement(y, force, min_preload), throat, self.omega, options)
-            if masses is None or masses.spring_kg is not None:
-                break
-            settled = train_mass(self.valve, sum(d.mass for d in search.designs.values()))[0]
-            if abs(settled - mass) < 1e-7:
-                break
-            mass = settled
-        return SPRING_MARGIN if search.passes else -SPRING_MARGIN
+
+        def passes(factor):
+            required, mass = requirement.scaled(factor), self.mass
+            for _ in range(SPRING_ITERATIONS):
+                search = springs.design_springs(required, throat, self.omega, options)
+                if masses is None or masses.spring_kg is not None:
+                    break
+                settled = train_mass(self.valve, sum(d.mass for d in search.designs.values()))[0]
+                if abs(settled - mass) < 1e-7:
+                    break
+                required, mass = requirement.scaled(factor * settled / self.mass), settled
+            return search.passes
+        return passes
+
+    def _spring_frontier(self, law):
+        """The largest factor on the starting design's required spring force for which a spring passes every spring
+        check (bisection to :data:`FRONTIER_TOLERANCE`, at most :data:`FRONTIER_RANGE`), and that required line."""
+        requirement = self._required_line(law, 1.0)
+        passes = self._spring_passes(requirement)
+        low, high = FRONTIER_RANGE
+        if not passes(low):
+            return 0.0, requirement.line(self.spring_inputs[1].ratio_range)
+        if passes(high):
+            return high, requirement.line(self.spring_inputs[1].ratio_range)
+        while high - low > FRONTIER_TOLERANCE:
+            mid = 0.5 * (low + high)
+            low, high = (mid, high) if passes(mid) else (low, mid)
+        return low, requirement.line(self.spring_inputs[1].ratio_range)
+
+    def _spring_design(self, law, scale):
+        """Margin of the spring design: the largest of the candidate's required preload and largest force over the
+        starting design's, against the factor up to which a spring passes (:meth:`_spring_frontier`, found once);
+        >= 0 when a spring of the specification's options is expected to pass.  The optimum's own spring design
+        is checked exactly (:func:`final_checks`)."""
+        if self.frontier is None:
+            self.frontier = self._spring_frontier(self.law0)
+        factor, line0 = self.frontier
+        line = self._required_line(law, scale).line(self.spring_inputs[1].ratio_range)
+        ratio = max(line.preload / line0.preload, line.max_force / line0.max_force)
+        return (factor - ratio) / max(factor, FRONTIER_RANGE[0])
 
     def _separation(self, law, scale):
         """Margin of the follower separation: the smallest contact force while the cam lifts the valve over the
