@@ -32,6 +32,13 @@ def test_deeply_nested_arrays_are_refused(refused):
     assert "nested too deeply" in refused(_with(("contour_points = 721", f"contour_points = 721\nx = {deep}")))
 
 
+def test_a_huge_specification_is_refused_before_parsing(refused):
+    """A fuzz case: 100,000 tables of deeply nested arrays (83 MB) kept tomllib busy for over a minute."""
+    filler = "\n".join(f"[extra{i}]\nx = [[[1]]]" for i in range(60_000))
+    out = refused(_with(("contour_points = 721", f"contour_points = 721\n{filler}")))
+    assert "allowed at most 1,000,000" in out
+
+
 def test_echoed_values_are_cut(refused):
     out = refused(_with(("contour_points = 721", "contour_points = 721\nx = " + "[" * 200 + "]" * 200)))
     line = next(ln for ln in out.splitlines() if "output.x" in ln)

@@ -182,8 +182,16 @@ def validate(data):
     return spec
 
 
+MAX_SPEC_CHARACTERS = 1_000_000
+"""Largest specification text read (the largest shipped example has about 6,000 characters; a lift table or an
+indicator diagram belongs in a file of its own)."""
+
+
 def parse_spec(text, source="<string>", source_dir=None):
     """Parse and validate TOML text; relative file names in it are read from ``source_dir``."""
+    if len(text) > MAX_SPEC_CHARACTERS:
+        raise SpecError([f"{source}: {len(text):,} characters; allowed at most {MAX_SPEC_CHARACTERS:,} for a "
+                         "specification (put long tables in a CSV file: cam.table_file, crank.pressure_file)"])
     try:
         data = tomllib.loads(text.removeprefix("\ufeff"))
     except tomllib.TOMLDecodeError as exc:
