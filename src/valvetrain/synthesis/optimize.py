@@ -75,6 +75,9 @@ FRONTIER_TOLERANCE = 2e-3
 SPRING_ITERATIONS = 4
 """Spring searches of one evaluation at most while the reduced mass settles on the found spring's mass."""
 
+POLISH_ITERATIONS = 60
+"""Iterations of the SLSQP polish at most (from a feasible point it converges in about 20)."""
+
 CACHE = 4096
 """Points whose evaluation :class:`Problem` keeps (the optimiser asks for the objective and the margins of a point
 separately)."""
@@ -679,7 +682,7 @@ def optimize_valve(spec, valve=None, variables=None, objective="fullness", wheel
     best = found.x
     local = optimize.minimize(negative, best, method="SLSQP", bounds=problem.bounds,
                               constraints=({"type": "ineq", "fun": margins},),
-                              options={"maxiter": 200, "ftol": 1e-10})
+                              options={"maxiter": POLISH_ITERATIONS, "ftol": 1e-10})
     if local.success and np.all(margins(local.x) >= -1e-9) and negative(local.x) < negative(best):
         best = local.x
     values = {v.path: float(x) for v, x in zip(problem.variables, best, strict=True)}
