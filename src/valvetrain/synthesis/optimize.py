@@ -609,6 +609,12 @@ def _comparison(start, end, objective):
     return [(q, u, a, b) for (q, u, a), (_, _, b) in zip(rows(start), rows(end), strict=True)]
 
 
+def _inside(x, bounds):
+    """``x`` moved into the bounds, a hair inside them (the optimiser's own scaling must find it within)."""
+    low, high = (np.array(b, dtype=float) for b in zip(*bounds, strict=True))
+    return low + (high - low) * np.clip((np.asarray(x, dtype=float) - low) / (high - low), 1e-9, 1.0 - 1e-9)
+
+
 def optimize_valve(spec, valve=None, variables=None, objective="fullness", wheel_radius=None, no_jump_factor=None,
                    seed=1, maxiter=60, popsize=12, progress=None):
     """Maximise the fullness or the time-area of one valve's cam under its limits.
@@ -678,7 +684,7 @@ def optimize_valve(spec, valve=None, variables=None, objective="fullness", wheel
 
     found = optimize.differential_evolution(penalised, problem.bounds, seed=seed, maxiter=maxiter, popsize=popsize,
                                             tol=1e-7, polish=False, callback=callback,
-                                            x0=np.clip(problem.x0, *zip(*problem.bounds, strict=True)))
+                                            x0=_inside(problem.x0, problem.bounds))
     best = found.x
     local = optimize.minimize(negative, best, method="SLSQP", bounds=problem.bounds,
                               constraints=({"type": "ineq", "fun": margins},),
