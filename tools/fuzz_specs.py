@@ -27,6 +27,7 @@ generator from hypothesis.
 """
 
 import os
+import zlib
 
 for _var in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS"):
     os.environ.setdefault(_var, "1")  # one BLAS thread per worker: --workers processes share the cores
@@ -628,11 +629,13 @@ def _apply(doc, files, op):
         unit, content = LIFT_FILES[op[2]]
         old = valve["cam"]
         keep = {k: old[k] for k in ("base_radius_mm", "follower", "roller_radius_mm") if k in old}
-        valve["cam"] = {**LAW_CAMS["table"], **keep, "table_file": f"{op[1]}-lift.csv", "table_angle": unit,
+        # the file is named for the valve by a hash: a valve name may be 300 characters or hold spaces and dots
+        name = f"lift-{zlib.crc32(op[1].encode('utf-8')):08x}.csv"
+        valve["cam"] = {**LAW_CAMS["table"], **keep, "table_file": name, "table_angle": unit,
                         "table_lift_at": op[3], "fit": op[4]}
         for k in ("max_lift_mm", "opens_deg", "closes_deg"):
             valve.pop(k, None)
-        files[f"{op[1]}-lift.csv"] = content
+        files[name] = content
         return (f"valves.{op[1]}.cam: law = \"table\", table_file = LIFT_FILES[{op[2]!r}], table_angle = {unit!r}, "
                 f"table_lift_at = {op[3]!r}, fit = {op[4]!r}")
     if kind == "pressure_file":
