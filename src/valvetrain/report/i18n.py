@@ -645,7 +645,7 @@ OPTIMIZE_TEXT = {
         "polydyne": "polydyne (2, 10, 18, 26, 34), same lift, ramp and angle (Valve-train practical works (n.d.))",
         "gain": "The optimum is {gain:.1f} % fuller than the polydyne.",
         "cost": "{n} evaluations, {s:.1f} s in all, {e:.1f} s of them in the evaluations.",
-        "references": "References", "rows": {},
+        "references": "References", "rows": {}, "start_spring": "with the starting design's spring",
     },
     "ru": {
         "title": "Синтез профиля кулачка оптимизацией", "key": "параметр", "start": "исходный",
@@ -654,9 +654,10 @@ OPTIMIZE_TEXT = {
         "holds": "выполнено", "none": "нет",
         "method": ("{objective} максимизируется по параметрам ниже дифференциальной эволюцией с ограничениями в виде "
                    "точного штрафа и уточняется методом SLSQP (UkrSURT Proceedings (2019); Shang Hanji (1988), "
-                   "section 4.3). При поиске привод и пружина исходные; оптимум рассчитывается полностью, со своей "
+                   "разд. 4.3). При поиске привод и пружина исходные; оптимум рассчитывается полностью, со своей "
                    "пружиной, и все ограничения проверяются на нём заново, отрыв толкателя по динамическому расчёту "
-                   "в диапазоне частот (Shang Hanji (1988), chapter 3)."),
+                   "в диапазоне частот (Shang Hanji (1988), гл. 3)."),
+        "start_spring": "с исходной пружиной",
         "objective_fullness": "коэффициент полноты диаграммы подъёма клапана",
         "objective_time_area": "время-сечение всего открытия, мм²·с",
         "variables": "Параметры", "comparison": "Исходный вариант и оптимум", "constraints": "Ограничения",

@@ -9,7 +9,7 @@ import numpy as np
 
 from ..bibliography import WORKS, cited_in
 from ..laws.power_polynomial import ARTICLE_FULLNESS
-from ..synthesis.optimize import BINDING
+from ..synthesis.optimize import BINDING, START_SPRING
 from .i18n import OPTIMIZE_TEXT
 from .names import quantity_text, unit_text
 
@@ -94,15 +94,16 @@ def report_html(result, lang="en"):
                          for k in result.start]))
     parts.append(f"<h2>{escape(t['comparison'])}</h2>")
     parts.append(_table([t["quantity"], t["unit"], t["start"], t["optimum"]],
-                        [(t["rows"].get(q, q), u, _g(a), _g(b)) for q, u, a, b in result.comparison]))
+                        [(t["rows"].get(q, q), unit_text(u, lang), _g(a), _g(b)) for q, u, a, b in result.comparison]))
     parts.append(f"<h2>{escape(t['constraints'])}</h2>")
     rows = []
     for c in result.checks:
         s = start.get(c.quantity)
         state = t["fails"] if not c.passed else t["binds"] if c.margin < BINDING else t["holds"]
-        note = f" ({c.note})" if c.note and lang == "en" else ""
-        rows.append((quantity_text(c.quantity, lang, prefixes) + note, _g(s.shown_value) if s else "",
-                     _g(c.shown_value), c.range, f"{c.margin:.4f}", state))
+        note = c.note if lang == "en" else t["start_spring"] if c.note.startswith(START_SPRING) else ""
+        shown_range = c.range.replace(c.unit, unit_text(c.unit, lang)) if c.unit else c.range
+        rows.append((quantity_text(c.quantity, lang, prefixes) + (f" ({note})" if note else ""),
+                     _g(s.shown_value) if s else "", _g(c.shown_value), shown_range, f"{c.margin:.4f}", state))
     parts.append(_table([t["quantity"], t["start"], t["optimum"], t["range"], t["margin"], t["state"]], rows))
     binding = [quantity_text(c.quantity, lang, prefixes) for c in result.binding]
     parts.append(f"<p>{escape(t['binding'])}: {escape(', '.join(binding) if binding else t['none'])}.</p>")

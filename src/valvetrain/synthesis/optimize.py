@@ -75,6 +75,9 @@ FRONTIER_TOLERANCE = 2e-3
 SPRING_ITERATIONS = 4
 """Spring searches of one evaluation at most while the reduced mass settles on the found spring's mass."""
 
+START_SPRING = "with the starting design's spring"
+"""The note of the spring reserve checked with the spring the search held."""
+
 POLISH_ITERATIONS = 60
 """Iterations of the SLSQP polish at most (from a feasible point it converges in about 20)."""
 
@@ -583,7 +586,7 @@ def final_checks(design, spec, limits, scale=1.0, search_spring=None):
     if search_spring is not None:
         out.append(replace(spring_reserve(design, limits.min_spring_reserve * scale, search_spring.preload * scale,
                                           search_spring.rate * scale),
-                           note="with the starting design's spring" + (f" x {scale:.4g}" if scale != 1.0 else "")))
+                           note=START_SPRING + (f" x {scale:.4g}" if scale != 1.0 else "")))
     quantities = {c.quantity for c in out}
     own = [c for c in design.checks if c.severity == "failure" and c.quantity.split(": ", 1)[-1] not in quantities]
     return out + own
