@@ -310,7 +310,7 @@ def drive_stage(valve, gas, cam):
 
 def _strength(valve, gas, cam, theta, y, h, dh, d2h, a_v, m_v, line):
     """Work 7: the cam load along the open event and every check the layout and the given dimensions allow."""
-    law, omega, i_k, heel, roller = cam.law, cam.cam_speed, cam.rocker_ratio, cam.heel_radius, cam.roller_radius
+    i_k, heel, roller = cam.rocker_ratio, cam.heel_radius, cam.roller_radius
     parts, drive_layout, flat = valve.parts, layout(valve), cam.follower == "flat"
     spring_force = line.force(y)
     cam_force = strength.cam_force(spring_force, m_v * a_v, i_k)

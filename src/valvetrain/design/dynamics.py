@@ -324,7 +324,7 @@ def _multi_train(valve, links, springs, lash, kw, at):
     return direct_train(m.tappet_kg, valve_mass, links[0], links[1], springs, lash, **kw)
 
 
-def _finite_or_none(x):
+def finite_or_none(x):
     """``x``, or None where it is not finite (a speed whose recorded revolution has no seating)."""
     return float(x) if np.isfinite(x) else None
 
@@ -449,7 +449,7 @@ def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, 
     reson = ResonanceRecord(res.omega0 / (2 * np.pi), res.order, res.force, res.amplitude, 100 * res.distortion,
                             tuple(int(o) for o in res.orders), tuple(100 * float(d) for d in res.spectrum_distortion))
     table = PerSpeed(tuple(float(s) for s in speeds), tuple(p.min_contact_force for p in per),
-                     tuple(_finite_or_none(p.seating_velocity) for p in per), tuple(p.bounce for p in per),
+                     tuple(finite_or_none(p.seating_velocity) for p in per), tuple(p.bounce for p in per),
                      tuple(p.bounce_count for p in per), tuple(bool(p.jump_intervals) for p in per),
                      tuple(p.max_lift_error for p in per))
 
@@ -520,5 +520,6 @@ def sweep_columns(d):
 
 
 __all__ = ["CHECK_QUANTITIES", "DynamicsParameters", "DynamicsResult", "PerSpeed", "ResonanceRecord", "SWEEP_COLUMNS",
-           "SpeedRecord", "build_train", "drive_links", "dynamics_checks", "dynamics_stage", "rated_contact", "speed_record",
+           "SpeedRecord", "build_train", "drive_links", "dynamics_checks", "dynamics_stage", "finite_or_none", "rated_contact",
+           "speed_record",
            "sweep_columns"]

@@ -18,7 +18,7 @@ from ..checks import check
 from ..hydraulic import (Actuator, DriveResult, Fluid, HydraulicDrive, Pipe, Pump, SpeedSweep, Valve, simulate,
                          speed_sweep)
 from ..units import DEG, MM, cam_per_crank, rpm_to_rad_s
-from .dynamics import SEATING_VELOCITY_MAX, _finite_or_none
+from .dynamics import SEATING_VELOCITY_MAX, finite_or_none
 from .results import quantity, record
 
 SOURCES = ("Shang Hanji (1988), ch. 7 (hydraulic valve actuation); Wylie and Streeter (1978) (wave speed, "
@@ -171,16 +171,16 @@ def hydraulic_stage(hydraulic, law, engine, name):
     ends = np.concatenate([r.pump_pressure, r.actuator_pressure])
     per_speed = HydraulicSweep(
         tuple(float(x) for x in speeds), tuple(sw.max_pressure.tolist()), tuple(sw.valve_lift.tolist()),
-        tuple(sw.lift_loss.tolist()), tuple(map(_finite_or_none, sw.opening_delay)),
-        tuple(map(_finite_or_none, sw.closing_delay)), tuple(sw.cavitation.tolist()),
-        tuple(map(_finite_or_none, sw.seating_velocity)), tuple(sw.bounce.tolist()))
+        tuple(sw.lift_loss.tolist()), tuple(map(finite_or_none, sw.opening_delay)),
+        tuple(map(finite_or_none, sw.closing_delay)), tuple(sw.cavitation.tolist()),
+        tuple(map(finite_or_none, sw.seating_velocity)), tuple(sw.bounce.tolist()))
     result = HydraulicResult(
         speed=speed, wave_speed=r.wave_speed, time_step=r.time_step, area_ratio=drive.area_ratio,
         rigid_lift=float(r.rigid_lift.max()), valve_lift=float(r.valve_lift.max()), lift_loss=r.lift_loss,
-        opening_delay=_finite_or_none(opening), closing_delay=_finite_or_none(closing),
+        opening_delay=finite_or_none(opening), closing_delay=finite_or_none(closing),
         max_pressure=r.max_pressure, max_pressure_angle=r.max_pressure_angle, min_pressure=float(ends.min()),
         vapour_pressure=hydraulic.vapour_pressure, cavitation=bool(r.cavitation.any()),
-        seating_velocity=_finite_or_none(seat_velocity), bounce=bounce,
+        seating_velocity=finite_or_none(seat_velocity), bounce=bounce,
         speed_range=(float(speeds[0]), float(speeds[-1])), speeds=int(speeds.size), per_speed=per_speed,
         notes=tuple(notes), table_file=f"tables/{name}_hydraulic.csv",
         sweep_table=f"tables/{name}_hydraulic_sweep.csv", response=r, sweep=sw)
