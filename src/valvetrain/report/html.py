@@ -6,7 +6,7 @@ from html import unescape
 import re
 
 from jinja2 import Environment, PackageLoader, select_autoescape
-from markupsafe import Markup, escape
+from markupsafe import Markup
 import numpy as np
 
 from .. import __version__

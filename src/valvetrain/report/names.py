@@ -374,7 +374,6 @@ QUANTITIES = {
                                                "радиус шлифовального круга / вогнутый радиус профиля"),
     "spring reserve against inertia": ("spring reserve against inertia", "коэффициент запаса пружины по силам инерции"),
     "Hertz contact stress": ("Hertz contact stress", "контактное напряжение по Герцу"),
-    "ramp end velocity": ("ramp end velocity", "скорость в конце участка сбега"),
     "valve seating velocity": ("valve seating velocity", "скорость посадки клапана"),
     "power-polynomial exponent n": ("power-polynomial exponent n", "показатель степени n степенно-полиномиального кулачка"),
     "power-polynomial exponent m": ("power-polynomial exponent m", "показатель степени m степенно-полиномиального кулачка"),
