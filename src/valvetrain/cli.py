@@ -268,7 +268,7 @@ def optimize(file, out, valve, objective, vary, no_jump, wheel_radius, seed, max
     from .outfolder import atomic_folder
     from .report.optimization import (HISTORY_COMMENTS, comparison_columns, history_columns, history_figure,
                                       report_html)
-    from .synthesis.optimize import optimize_valve, parse_variables
+    from .synthesis.optimize import optimize_valve, parse_variables, shown_objective
     from .units import MM
 
     spec = _load(file)
@@ -305,8 +305,8 @@ def optimize(file, out, valve, objective, vary, no_jump, wheel_radius, seed, max
             (tmp / "report.html").write_text(report_html(result, lang), encoding="utf-8")
     except OutFolderError as err:
         _fail_out(err)
-    unit = 1e6 if objective == "time_area" else 1.0
-    click.echo(f"{result.valve}: {objective} {result.start_value * unit:.6g} -> {result.value * unit:.6g} "
+    click.echo(f"{result.valve}: {objective} {shown_objective(objective, result.start_value):.6g} -> "
+               f"{shown_objective(objective, result.value):.6g} "
                f"({result.evaluations} evaluations, {result.seconds:.1f} s)"
                + (f"; the polydyne (2, 10, 18, 26, 34) of the same lift, ramp and angle: tappet fullness "
                   f"{result.polydyne_fullness:.4f}" if result.polydyne_fullness is not None else ""))

@@ -9,7 +9,7 @@ import numpy as np
 
 from ..bibliography import WORKS, cited_in
 from ..laws.power_polynomial import ARTICLE_FULLNESS
-from ..synthesis.optimize import BINDING, START_SPRING
+from ..synthesis.optimize import BINDING, START_SPRING, shown_objective
 from .i18n import OPTIMIZE_TEXT
 from .names import quantity_text, unit_text
 
@@ -20,9 +20,10 @@ def history_columns(result):
     margins = np.array([h[1] for h in result.history]).reshape(len(result.history), len(result.margin_names))
     feasible = np.all(margins >= 0.0, axis=1)
     best = np.maximum.accumulate(np.where(feasible, objective, -np.inf))
-    unit = 1e6 if result.objective == "time_area" else 1.0      # m2 s -> mm2 s
-    out = {"evaluation": np.arange(1, objective.size + 1), f"{result.objective}": objective * unit,
-           "feasible": feasible, f"best_feasible_{result.objective}": np.where(np.isfinite(best), best * unit, np.nan)}
+    shown = shown_objective(result.objective, objective)
+    out = {"evaluation": np.arange(1, objective.size + 1), f"{result.objective}": shown, "feasible": feasible,
+           f"best_feasible_{result.objective}": np.where(np.isfinite(best), shown_objective(result.objective, best),
+                                                         np.nan)}
     for i, name in enumerate(result.margin_names):
         out[f"margin_{name.replace(' ', '_')}"] = margins[:, i]
     return out
@@ -51,7 +52,7 @@ def history_figure(result, lang="en"):
     top.plot(n[cols["feasible"]], y[cols["feasible"]], ".", ms=2, color="C0", label=t["feasible"])
     top.plot(n[~cols["feasible"]], y[~cols["feasible"]], ".", ms=2, color="0.7", label=t["infeasible"])
     top.plot(n, cols[f"best_feasible_{result.objective}"], color="C3", lw=1.2, label=t["best"])
-    top.axhline(result.start_value * (1e6 if result.objective == "time_area" else 1.0), color="k", lw=0.8, ls="--",
+    top.axhline(shown_objective(result.objective, result.start_value), color="k", lw=0.8, ls="--",
                 label=t["start"])
     top.set_ylabel(t[f"objective_{result.objective}"])
     finite = y[y > 0]

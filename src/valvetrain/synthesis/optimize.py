@@ -17,11 +17,12 @@ K_z / K_z,0 when the spring reserve is a variable, as the spring design sizes it
 full, with its own spring, and every constraint is checked again on it, the dynamics over a speed sweep up to the
 limit (:func:`final_checks`).
 
-Search: :func:`scipy.optimize.differential_evolution` over the bounds with the margins as nonlinear constraints,
-then a local polish with SLSQP from its best point (kept when it is feasible and better), as the method's article
-does (UkrSURT Proceedings (2019); Shang Hanji (1988), section 4.3).
+Search: :func:`scipy.optimize.differential_evolution` over the bounds with the margins as an exact penalty
+(:data:`PENALTY`), then a local polish with SLSQP, the margins as constraints, from its best point (kept when it is
+feasible and better), as the method's article does (UkrSURT Proceedings (2019); Shang Hanji (1988), section 4.3).
 """
 
+import copy
 from dataclasses import dataclass, field, replace
 import math
 import time
@@ -31,7 +32,7 @@ import numpy as np
 from pydantic import ValidationError
 from scipy import optimize
 
-from .. import springs
+from .. import flow, springs
 from ..design import run as run_design
 from ..design.drive import spring_options
 from ..design.dynamics import SPEED_RANGE, build_train, dynamics_stage
@@ -39,17 +40,23 @@ from ..design.valve import flow_stage, law_stage
 from ..dynamics.models import one_mass_train
 from ..dynamics.sweep import sweep
 from ..laws import PolydyneLaw
+from ..laws.kurz import RAMP_VELOCITY_RANGE_MM_PER_DEG
 from ..specification.cams import train_mass
-from ..specification.models import Dynamics
+from ..specification.models import Dynamics, Valve
 from ..specification.si import si
-from ..units import DEG, MM, cam_per_crank
-from .constraints import Limits, constraints
+from ..units import DEG, cam_per_crank, to_display
+from .constraints import Limits, constraints, spring_reserve
 
 OBJECTIVES = {
-    "fullness": ("fullness", "fullness of the valve lift diagram (Shang Hanji (1988), eq. 2.3)"),
-    "time_area": ("time_area_open", "time-area of the valve's whole opening [mm2 s]"),
+    "fullness": ("fullness", "", "fullness of the valve lift diagram (Shang Hanji (1988), eq. 2.3)"),
+    "time_area": ("time_area_open", "mm2 s", "time-area of the valve's whole opening"),
 }
-"""Objective name -> (field of the flow stage's result, what it is)."""
+"""Objective name -> (field of the flow stage's result, display unit, what it is)."""
+
+
+def shown_objective(objective, value):
+    """An objective's value (SI) in its display unit (:data:`OBJECTIVES`)."""
+    return to_display(value, OBJECTIVES[objective][1])
 
 GRID = 1201
 """Camshaft angles of the opening flank on which one evaluation samples the profile."""
@@ -113,22 +120,17 @@ class Variable:
             node[last] = value
 
 
-def _segment_angle_variables(cam, half):
+def _segment_angle_variables(half):
     """phi1, phi2 of a Kurz or constant-acceleration cam (phi3 the remainder)."""
     return [Variable("cam.phi1_deg", 0.15 * half, 0.75 * half), Variable("cam.phi2_deg", 0.02 * half, 0.45 * half)]
 
 
-RAMP_BAND_MM_PER_DEG = (0.008, 0.022)
-"""Band of the ramp end velocity (Valve-train practical works (n.d.), eq. 2.1): the bounds of the variable."""
-
-SPRING_RESERVE_BAND = (1.5, 2.25)
-"""Band of the spring reserve K_z (Valve-train practical works (n.d.), eq. 5.3): the bounds of the variable."""
-
-
 def _ramp_and_spring(cam):
-    out = [Variable("drive.spring_reserve", *SPRING_RESERVE_BAND)]
+    """The ramp end velocity within its band (Valve-train practical works (n.d.), eq. 2.1) and the spring reserve
+    K_z within its band (eq. 5.3)."""
+    out = [Variable("drive.spring_reserve", *springs.SPRING_RESERVE_RANGE)]
     if getattr(cam, "ramp_end_velocity_mm_per_deg", None) is not None:
-        out.insert(0, Variable("cam.ramp_end_velocity_mm_per_deg", *RAMP_BAND_MM_PER_DEG))
+        out.insert(0, Variable("cam.ramp_end_velocity_mm_per_deg", *RAMP_VELOCITY_RANGE_MM_PER_DEG))
     return out
 
 
@@ -163,9 +165,9 @@ def default_variables(valve, engine):
                          "(e.g. --vary cam.nose_radius_mm=5,12)")
     half = main_half_angle_deg(valve, engine.strokes) if cam.needs_timing else None
     if law == "kurz":
-        out = _segment_angle_variables(cam, half) + [Variable("cam.shape_factor", 0.05, 0.99)]
+        out = _segment_angle_variables(half) + [Variable("cam.shape_factor", 0.05, 0.99)]
     elif law == "constant_acceleration":
-        out = _segment_angle_variables(cam, half) + [Variable("cam.kappa", 0.1, 5.0)]
+        out = _segment_angle_variables(half) + [Variable("cam.kappa", 0.1, 5.0)]
     elif law == "polydyne":
         given = [k for k in ("p", "q", "r", "s") if getattr(cam, k) is not None]
         out = [Variable(f"cam.{k}", 3.0, 4.0 * getattr(cam, k)) for k in given]
@@ -315,11 +317,9 @@ class Problem:
         if self.limits.no_jump_factor is None:
             return
         dyn = self.section.dynamics or Dynamics()
-        valve = si(self.section, self.spec)
-        _, p = build_train(si(dyn.model_copy(update={"model": "1dof"})), valve, design.law, design.drive,
-                           f"valves.{self.name}", self.engine.rated_speed * cam_per_crank(self.engine.strokes))
-        self.train_parameters = p
         rated = self.engine.rated_speed * cam_per_crank(self.engine.strokes)
+        _, self.train_parameters = build_train(si(dyn.model_copy(update={"model": "1dof"})), self.valve, design.law,
+                                               design.drive, f"valves.{self.name}", rated)
         self.speeds = rated * np.unique(np.array(SPEEDS + (self.limits.no_jump_factor,)))
 
     def margin_names(self):
@@ -338,8 +338,6 @@ class Problem:
 
     def point(self, x):
         """The valve section's data with the variables ``x``."""
-        import copy
-
         data = copy.deepcopy(self.data)
         for v, value in zip(self.variables, x, strict=True):
             v.put(data, float(value))
@@ -351,8 +349,6 @@ class Problem:
 
     def stages(self, x):
         """(law stage, flow stage, spring scale) of the variables, or None where they admit no design."""
-        from ..specification.models import Valve
-
         data = self.point(x)
         try:
             section = Valve.model_validate(data)
@@ -410,22 +406,20 @@ class Problem:
         if L.min_acceleration is not None:
             out.append((cam.min_acceleration - L.min_acceleration) / abs(L.min_acceleration))
         if L.seating_velocity is not None:
-            ends = np.array([law.valve_opens, law.valve_closes])
-            seat = self.i_k * self.omega * float(np.max(np.abs(law.derivatives(ends)[1])))
+            seat = max(cam.opening_velocity, cam.seating_velocity)
             out.append((L.seating_velocity[1] - seat) / L.seating_velocity[1])
         if self.speeds is not None:
             out.append(self._separation(law, scale))
         out.append(self._spring_design(law, scale))
         return np.array(out, dtype=float)
 
-    def _required_line(self, law, scale, mass=None):
-        """The required spring line (:meth:`valvetrain.springs.Requirement.line`) of a cam at K_z = scale x K_z,0,
-        on the starting design's reduced mass or ``mass`` [kg]."""
+    def _required_line(self, law, scale):
+        """The required spring force (:class:`valvetrain.springs.Requirement`) of a cam at K_z = scale x K_z,0, on
+        the starting design's reduced mass."""
         theta = np.linspace(law.valve_opens, law.valve_closes, GRID)
         _, _, d2h, _ = law.derivatives(theta)
         y = self.i_k * np.clip(law.lift(theta) - law.ramp_height, 0.0, None)
-        force = springs.required_spring_force(self.mass if mass is None else mass, self.i_k * self.omega**2 * d2h,
-                                              self.reserve0 * scale)
+        force = springs.required_spring_force(self.mass, self.i_k * self.omega**2 * d2h, self.reserve0 * scale)
         return springs.Requirement(y, force, self.spring_inputs[2])
 
     def _spring_passes(self, requirement):
@@ -451,16 +445,17 @@ class Problem:
         """The largest factor on the starting design's required spring force for which a spring passes every spring
         check (bisection to :data:`FRONTIER_TOLERANCE`, at most :data:`FRONTIER_RANGE`), and that required line."""
         requirement = self._required_line(law, 1.0)
+        line = requirement.line(self.spring_inputs[1].ratio_range)
         passes = self._spring_passes(requirement)
         low, high = FRONTIER_RANGE
         if not passes(low):
-            return 0.0, requirement.line(self.spring_inputs[1].ratio_range)
+            return 0.0, line
         if passes(high):
-            return high, requirement.line(self.spring_inputs[1].ratio_range)
+            return high, line
         while high - low > FRONTIER_TOLERANCE:
             mid = 0.5 * (low + high)
             low, high = (mid, high) if passes(mid) else (low, mid)
-        return low, requirement.line(self.spring_inputs[1].ratio_range)
+        return low, line
 
     def _spring_design(self, law, scale):
         """Margin of the spring design: the largest of the candidate's required preload and largest force over the
@@ -543,10 +538,8 @@ def polydyne_fullness(law, exponents=(10, 18, 26, 34)):
     """
     poly = PolydyneLaw(law.lift_max, law.main_half_angle, *exponents, ramp_height=law.ramp_height,
                        ramp_velocity=law.v_qb)
-    phi = np.linspace(poly.valve_opens, poly.valve_closes, 20001)
-    lift = poly.lift(phi)
-    area = float(np.sum((lift[1:] + lift[:-1]) * np.diff(phi)) / 2.0)
-    return area / ((poly.lift_max + poly.ramp_height) * (phi[-1] - phi[0]))
+    return flow.fullness(poly.lift, poly.valve_opens, poly.valve_closes, poly.lift_max + poly.ramp_height,
+                         poly.breakpoints)
 
 
 def final_checks(design, spec, limits, scale=1.0, search_spring=None):
@@ -570,8 +563,6 @@ def final_checks(design, spec, limits, scale=1.0, search_spring=None):
         from 10 % of the rated speed up to the limit or 125 % of it, whichever is higher (the ``[dynamics]``
         section's train and range, the range raised to that top where it ends below).
     """
-    from .constraints import spring_reserve
-
     if limits.no_jump_factor is not None:
         section = spec.valves[design.name]
         rated = spec.engine.rated_speed_rpm
@@ -592,24 +583,25 @@ def final_checks(design, spec, limits, scale=1.0, search_spring=None):
     return out + own
 
 
-def _comparison(start, end, objective):
-    """Rows (quantity, unit, start, optimum) of two full designs, engineering units."""
+def _comparison(start, end):
+    """Rows (quantity, unit, start, optimum) of two full designs, in the display units."""
     def rows(d):
         c, f = d.cam, d.flow
-        out = [("fullness", "", f.fullness), ("time-area of the whole opening", "mm2 s", f.time_area_open / MM**2),
-               ("time-area over the valve's stroke", "mm2 s", f.time_area / MM**2),
+        out = [("fullness", "", f.fullness), ("time-area of the whole opening", "mm2 s", f.time_area_open),
+               ("time-area over the valve's stroke", "mm2 s", f.time_area),
                ("max tappet acceleration", "m/s2", c.max_acceleration),
                ("min tappet acceleration", "m/s2", c.min_acceleration),
                ("max tappet velocity", "m/s", c.max_velocity),
-               ("spring preload", "N", d.drive.spring.preload), ("spring rate", "N/mm", d.drive.spring.rate * MM),
+               ("spring preload", "N", d.drive.spring.preload), ("spring rate", "N/mm", d.drive.spring.rate),
                ("spring reserve K_z", "", d.drive.spring.spring_reserve)]
         if d.profile.rho_min is not None:
-            out.append(("rho_min", "mm", d.profile.rho_min / MM))
+            out.append(("rho_min", "mm", d.profile.rho_min))
         fullness = d.records.get("power_polynomial", {}).get("tappet_fullness")
         if fullness is not None:
             out.insert(1, ("tappet fullness (UkrSURT Proceedings (2019))", "", fullness))
         return out
-    return [(q, u, a, b) for (q, u, a), (_, _, b) in zip(rows(start), rows(end), strict=True)]
+    return [(q, u, to_display(a, u), to_display(b, u)) for (q, u, a), (_, _, b) in zip(rows(start), rows(end),
+                                                                                      strict=True)]
 
 
 def _inside(x, bounds):
@@ -626,7 +618,7 @@ def optimize_valve(spec, valve=None, variables=None, objective="fullness", wheel
     ----------
     spec : valvetrain.specification.Spec
     valve : str, optional
-        The valve's name (default: the first whose law has default variables).
+        The valve's name (default: the first).
     variables : list of Variable, optional
         Default :func:`default_variables` of the valve's law.
     objective : {"fullness", "time_area"}
@@ -700,16 +692,16 @@ def optimize_valve(spec, valve=None, variables=None, objective="fullness", wheel
     checked = run_design(optimum_spec).valves[valve]
     scale = optimum_spec.valves[valve].drive.spring_reserve / problem.reserve0
     spring = None if any(v.path == "drive.spring_reserve" for v in problem.variables) else design.drive.lines["chosen"]
-    result = Result(
+    checks_start = final_checks(design, spec, limits, 1.0, spring)
+    checks = final_checks(checked, optimum_spec, limits, scale, spring)
+    reference = polydyne_fullness(checked.law) if checked.law.name == "power_polynomial" else None
+    names = problem.margin_names()
+    return Result(
         valve, objective, {v.path: float(x) for v, x in zip(problem.variables, problem.x0, strict=True)}, values,
         problem.evaluate(problem.x0)[0], float(getattr(checked.flow, OBJECTIVES[objective][0])), problem.bounds,
-        problem.margin_names(), dict(zip(problem.margin_names(), map(float, margins(best)), strict=True)),
-        problem.evaluations, 0.0, problem.seconds, notes, _comparison(design, checked, objective),
-        final_checks(design, spec, limits, 1.0, spring), final_checks(checked, optimum_spec, limits, scale, spring),
-        list(problem.history),
-        polydyne_fullness(checked.law) if checked.law.name == "power_polynomial" else None, text)
-    result.seconds = time.perf_counter() - t0
-    return result
+        names, dict(zip(names, map(float, margins(best)), strict=True)), problem.evaluations,
+        time.perf_counter() - t0, problem.seconds, notes, _comparison(design, checked), checks_start, checks,
+        list(problem.history), reference, text)
 
 
 def optimum_spec_text(spec, valve, section, values):
