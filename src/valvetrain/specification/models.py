@@ -32,6 +32,7 @@ class Engine(_Model):
     chamber: Literal["side_valve", "overhead", "prechamber_diesel", "direct_injection_diesel", "wedge",
                      "hemispherical"] = "overhead"
     rod_length_mm: Optional[Length(5.0, 10000.0, low_open=False)] = None
+    over_speed_ratio: _bounded(1.0, 2.0, low_open=False) = 1.1
     layout: Literal["inline", "v"] = "inline"
     bank_angle_deg: _bounded(1.0, 180.0, "deg", low_open=False) = 90.0
     firing_order: Optional[list[int]] = None
