@@ -8,7 +8,7 @@ caller's own.  Crank angles are measured from the gas-exchange TDC (the TDC that
 intake stroke) in (-360, 360]; camshaft angles from the cam nose.
 """
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 import math
 
 import numpy as np
@@ -23,7 +23,7 @@ from ..specification import SpecError
 from ..specification.cams import layout
 from ..springs import NoSpringFits
 from ..units import DEG, MM
-from .drive import drive_record, drive_stage
+from .drive import drive_record, drive_stage, strength_stage
 from .dynamics import dynamics_stage
 from .grinding import grinding_stage
 from .hydraulic import hydraulic_stage
@@ -627,6 +627,9 @@ def design_valve(name, valve, engine, gas, output, law=None, progress=None):
     if valve.dynamics is not None:
         dynamics, dynamics_found = dynamics_stage(valve.dynamics, valve, engine, cam.law, drive, name, progress, cam)
         found += dynamics_found
+    strength_result, strength_found = strength_stage(valve, gas, engine, cam, drive, dynamics)
+    drive = replace(drive, strength=strength_result, checks=drive.checks + tuple(strength_found))
+    found += strength_found
     grinding = None
     if valve.grinding is not None:
         try:

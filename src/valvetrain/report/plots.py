@@ -39,6 +39,35 @@ def kinematics_figure(valve, t):
     return fig
 
 
+def strength_speed_figure(valve, t):
+    """The largest cam load and contact stress at each engine speed of the strength checks, the worst points marked."""
+    st = valve.drive.strength
+    per = st.per_speed
+    rpm = to_display(np.asarray(per.speed), "rpm")
+    kinds = np.asarray(per.load)
+    fig = Figure(figsize=(8, 6.5))
+    axes = fig.subplots(2 if per.contact_stress is not None else 1, 1, sharex=True, squeeze=False)[:, 0]
+    rows = [(axes[0], np.asarray(per.cam_force_max), t["cam_force_axis"], st.cam_force_max_speed, st.cam_force_max)]
+    if per.contact_stress is not None:
+        stress = to_display(np.asarray(per.contact_stress), "MPa")
+        rows.append((axes[1], stress, t["contact_stress_axis"], st.contact_stress_speed, float(stress.max())))
+    for ax, y, ylabel, worst_speed, worst in rows:
+        for kind, marker in (("quasi-static", "."), ("dynamic", "x")):
+            on = kinds == kind
+            if on.any():
+                ax.plot(rpm[on], y[on], ls="-" if kind == "quasi-static" else "none", marker=marker,
+                        label=t["load_" + kind.replace("-", "_")])
+        ax.plot([to_display(worst_speed, "rpm")], [worst], "o", mfc="none", mec="C3", ms=10)
+        ax.axvline(to_display(st.rated_speed, "rpm"), color="0.5", lw=0.8, ls="--", label=t["rated_speed"])
+        ax.set_ylabel(ylabel)
+        ax.grid(alpha=0.3)
+    axes[0].legend(fontsize=8)
+    axes[-1].set_xlabel(t["engine_speed"])
+    fig.suptitle(f"{valve.name}: {t['strength_speed_title']}")
+    fig.tight_layout()
+    return fig
+
+
 def contour_figure(valve, t):
     """The cam contour to scale, with the heel circle (and the pitch curve of a roller)."""
     fig = Figure(figsize=(7, 7))
@@ -431,7 +460,7 @@ ENGINE_FIGURES = {"crank": {"crank_forces": crank_forces_figure, "crank_torque":
 
 
 FIGURES = {"kinematics": kinematics_figure, "contour": contour_figure, "time_area": time_area_figure,
-           "curvature": curvature_figure, "spring": spring_figure}
+           "curvature": curvature_figure, "spring": spring_figure, "strength_speed": strength_speed_figure}
 
 
 def write_plots(results, folder, lang="en"):
