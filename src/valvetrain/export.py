@@ -163,7 +163,8 @@ def write_outputs(results, out, lang="en", inputs=(), force=False):
     Layout::
 
         out/results.json, spec.toml (the specification as run, every default written out)
-        out/tables/NAME_lift.csv, NAME_strength.csv (one row per engine speed of the strength checks), crank.csv, engine_torque.csv, two_stroke_ports.csv, two_stroke_time_area.csv,
+        out/tables/NAME_lift.csv, NAME_strength.csv (one row per engine speed of the strength checks),
+                   crank.csv, engine_torque.csv, two_stroke_ports.csv, two_stroke_time_area.csv,
                    NAME_dynamics.csv (a [dynamics] section: one row per speed),
                    NAME_wear_error.csv (a [grinding] section: the lift error of the worn wheel)
                    NAME_hydraulic.csv (a [hydraulic] section: pressures and lifts against camshaft angle),
@@ -173,7 +174,8 @@ def write_outputs(results, out, lang="en", inputs=(), force=False):
                     NAME_master.csv, NAME_master_cartesian.csv, NAME_master.dxf (a [grinding] section whose
                     wheel grinds the cam and whose master its roller follows)
         out/plots/NAME_kinematics.png, NAME_contour.png, NAME_time_area.png, NAME_curvature.png,
-                  NAME_spring.png, NAME_strength_speed.png, NAME_dynamics_map.png, NAME_dynamics_speed.png (a [dynamics] section),
+                  NAME_spring.png, NAME_strength_speed.png,
+                  NAME_dynamics_map.png, NAME_dynamics_speed.png (a [dynamics] section),
                   NAME_grinding.png (a [grinding] section),
                   NAME_hydraulic.png, NAME_hydraulic_sweep.png (a [hydraulic] section),
                   crank_forces.png, crank_torque.png, crank_pin_polar.png,

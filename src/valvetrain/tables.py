@@ -59,7 +59,8 @@ def strength_speed_columns(strength):
     :data:`STRENGTH_COLUMNS`."""
     p = strength.per_speed
     out = {"speed_rpm": to_display(np.asarray(p.speed), "rpm"), "load": list(p.load),
-           "cam_force_max_N": np.asarray(p.cam_force_max), "cam_force_max_cam_deg": rad_to_deg(np.asarray(p.cam_force_max_angle))}
+           "cam_force_max_N": np.asarray(p.cam_force_max),
+           "cam_force_max_cam_deg": rad_to_deg(np.asarray(p.cam_force_max_angle))}
     if p.contact_stress is not None:
         out["cam_contact_stress_MPa"] = to_display(np.asarray(p.contact_stress), "MPa")
         out["cam_contact_stress_cam_deg"] = rad_to_deg(np.asarray(p.contact_stress_angle))

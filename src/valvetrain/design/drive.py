@@ -604,26 +604,29 @@ def _strength(valve, cam, theta, maps, p_open):
         (0.0, 0.0), "", load.value, load.angle, load.speed, p_max / i_k, p_open,
         None if stress is None else stress.angle, None if stress is None else stress.speed,
         None if side is None else side.value, None if side is None else side.angle,
-        None if side is None else side.speed, _per_speed(maps, cam, width, e_contact, stress is not None),
+        None if side is None else side.speed, _per_speed(maps, cam, width, e_contact),
         tuple(verdicts), tuple(notes)), found
 
 
-def _per_speed(maps, cam, width, modulus, with_stress):
-    """The largest cam force and contact stress at every speed of the load maps, a :class:`StrengthPerSpeed`."""
-    rows = []
-    for m in maps:
-        j = np.argmax(m.force, axis=1)
-        s = np.arange(m.speeds.size)
-        if with_stress:
-            sigma = strength.hertz_line_stress(m.force, width, _curvature(cam, m.theta), modulus)
-            k = np.argmax(sigma, axis=1)
-        for i in s:
-            rows.append((float(m.speeds[i]), m.kind, float(m.force[i, j[i]]), float(m.theta[j[i]]),
-                         float(sigma[i, k[i]]) if with_stress else None,
-                         float(m.theta[k[i]]) if with_stress else None))
-    rows.sort(key=lambda r: r[0])
-    columns = list(zip(*rows, strict=True))
-    return StrengthPerSpeed(*columns[:4], *(columns[4:] if with_stress else (None, None)))
+def _per_speed(maps, cam, width, modulus):
+    """The largest cam force and (with the cam width ``width`` [m], None: not checked) contact stress at every speed
+    of the load maps, a :class:`StrengthPerSpeed` in increasing speed."""
+    def largest(m, values):
+        j = np.argmax(values, axis=1)
+        return values[np.arange(j.size), j], m.theta[j]
+
+    def column(rows):
+        return tuple(float(x) for x in np.concatenate(rows)[order])
+
+    speeds = np.concatenate([m.speeds for m in maps])
+    order = np.argsort(speeds, kind="stable")
+    kinds = tuple(np.concatenate([[m.kind] * m.speeds.size for m in maps])[order])
+    force, force_at = zip(*(largest(m, m.force) for m in maps), strict=True)
+    stress = (None, None)
+    if width is not None:
+        stress = [column(c) for c in zip(*(largest(m, strength.hertz_line_stress(
+            m.force, width, _curvature(cam, m.theta), modulus)) for m in maps), strict=True)]
+    return StrengthPerSpeed(column([speeds]), kinds, column(force), column(force_at), *stress)
 
 
 def _exhaust_gas_force(valve, gas):
