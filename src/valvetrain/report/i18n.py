@@ -382,10 +382,11 @@ TEXT["en"].update({
     "strength_speed_title": "cam load and contact stress against the engine speed",
     "cam_force_axis": "max cam load P_T, N", "contact_stress_axis": "max contact stress σ, MPa",
     "engine_speed": "engine speed n, rpm", "load_quasi_static": "quasi-static", "load_dynamic": "simulated",
-    "rated_speed": "rated speed", "jerk_impulse": "jerk impulse: acceleration step",
+    "rated_speed": "rated speed", "jerk_impulse": "jerk impulse at a step of the acceleration Δa_T, m/s²",
     "acceleration_steps": "Acceleration steps (the jerk is an impulse there)",
     "step_angle": "camshaft angle from the nose, cam deg", "step_before": "a_T before, m/s²",
     "step_after": "a_T after, m/s²", "step_size": "step Δa_T, m/s²",
+    "step_on_ramp": "on a ramp (the valve at rest)",
     "crank_method": "kinematics (1.1)-(1.11) or the exact slider-crank; forces (2.3)-(2.19) with the exact rod angle β; "
                     "T = p<sub>T</sub>F<sub>p</sub> (2.20), M = TR (2.21); total torque for the layout and firing order; "
                     "mean torque against the indicated work W<sub>i</sub>/(πτ).",
@@ -436,10 +437,11 @@ TEXT["ru"].update({
     "cam_force_axis": "P_T max на кулачке, Н", "contact_stress_axis": "σ max контактное, МПа",
     "engine_speed": "частота вращения двигателя n, об/мин", "load_quasi_static": "квазистатическая",
     "load_dynamic": "динамический расчёт", "rated_speed": "номинальная частота",
-    "jerk_impulse": "импульс рывка: скачок ускорения",
+    "jerk_impulse": "импульс рывка при скачке ускорения Δa_T, м/с²",
     "acceleration_steps": "Скачки ускорения (рывок в этих точках — импульс)",
     "step_angle": "угол ПРВ от вершины кулачка, град", "step_before": "a_T до скачка, м/с²",
     "step_after": "a_T после скачка, м/с²", "step_size": "скачок Δa_T, м/с²",
+    "step_on_ramp": "на участке сбега (клапан неподвижен)",
     "crank_method": "кинематика (1.1)-(1.11) или точные формулы кривошипно-шатунного механизма; силы (2.3)-(2.19) с "
                     "точным углом отклонения шатуна β; T = p<sub>T</sub>F<sub>p</sub> (2.20), M = TR (2.21); суммарный "
                     "крутящий момент по компоновке и порядку работы; средний момент сверяется с индикаторной работой "

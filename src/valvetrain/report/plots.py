@@ -13,6 +13,27 @@ def _segment_lines(ax, law):
         ax.axvline(rad_to_deg(a), color="0.75", lw=0.6, ls=":")
 
 
+def jerk_impulses(ax, law, cam_speed, color="C3", label=None):
+    """Mark the jerk impulses of a law on a jerk axis: an arrow at each acceleration step, up for a rise of the
+    acceleration and down for a fall, reaching the edge of the axis (an impulse has no finite height), with the step
+    written beside it [m/s^2].  Call it after the curves are drawn (the arrows take the axis' extent)."""
+    steps = law.acceleration_steps()
+    if not steps:
+        return
+    low, high = ax.get_ylim()
+    reach = max(abs(low), abs(high))
+    ax.set_ylim(min(low, -0.15 * reach), max(high, 0.15 * reach))
+    low, high = ax.get_ylim()
+    for n, st in enumerate(steps):
+        size = cam_speed**2 * st.size
+        tip = 0.92 * (high if size > 0.0 else low)
+        x = rad_to_deg(st.angle)
+        ax.annotate("", xy=(x, tip), xytext=(x, 0.0), arrowprops={"arrowstyle": "-|>", "color": color, "lw": 1.2})
+        ax.plot([x], [0.0], marker="o", color=color, ms=4, label=label if n == 0 else None)
+        ax.annotate(f"{size:+.4g}", xy=(x, tip), xytext=(3, 0), textcoords="offset points", fontsize=7, color=color,
+                    va="top" if size > 0.0 else "bottom")
+
+
 def kinematics_figure(valve, t):
     """Tappet lift (and valve lift), velocity, acceleration and jerk against camshaft angle."""
     tab = valve.table
@@ -30,6 +51,9 @@ def kinematics_figure(valve, t):
         ax.grid(alpha=0.3)
         ax.axhline(0.0, color="0.5", lw=0.5)
         _segment_lines(ax, valve.law)
+    if valve.law.acceleration_steps():
+        jerk_impulses(axes[-1], valve.law, valve.omega_cam)
+        axes[-1].set_title(t["jerk_impulse"], fontsize=8, color="C3", loc="right")
     axes[-1].set_xlabel(t["cam_deg"])
     top = axes[0].secondary_xaxis("top", functions=(lambda c: 2 * c + rad_to_deg(valve.nose_crank),
                                                      lambda k: (k - rad_to_deg(valve.nose_crank)) / 2))
