@@ -3,8 +3,10 @@ drive parts (Valve-train practical works (n.d.), works 5-7).
 
 :func:`drive_stage` takes SI inputs (the valve's and ``[gas]``'s SI views,
 :func:`valvetrain.specification.si`, and the law stage's :class:`~valvetrain.design.valve.CamResult`) to a
-typed, frozen :class:`DriveResult`; :func:`drive_record` is where it leaves SI, as the ``masses``,
-``spring`` and ``strength`` records of results.json.
+typed, frozen :class:`DriveResult` (masses and springs); :func:`strength_stage` checks the drive parts over the
+engine speeds from the lowest to the over-speed, on the dynamics stage's contact force where it ran;
+:func:`drive_record` is where they leave SI, as the ``masses``, ``spring`` and ``strength`` records of
+results.json.
 """
 
 from dataclasses import dataclass, field, replace
@@ -38,7 +40,7 @@ quasi-static force is linear in the square of the speed, so its extremes at ever
 range; the speeds between give the per-speed table."""
 
 LOWEST_SPEED_SOURCES = ("engine.idle_speed_rpm", "the low end of the dynamics speed range",
-                        "0.1 x the rated speed (the default idle)")
+                        f"{IDLE_SPEED_RATIO:g} x the rated speed (the default idle)")
 """Where the lowest speed of the strength checks comes from (:func:`strength_speed_range`)."""
 
 
@@ -259,7 +261,7 @@ def _spring_checks(tag, s, note=""):
 
 
 def drive_stage(valve, gas, cam):
-    """Stages 6 and 7: reduced masses, spring characteristic and design, strength of the drive parts.
+    """Stage 6: reduced masses, spring characteristic and design (the strength is :func:`strength_stage`).
 
     Parameters
     ----------
@@ -280,12 +282,11 @@ def drive_stage(valve, gas, cam):
     -----
     The spring must hold the train on the cam, :math:`P_{spr} \\ge K_z m_v |j_v|` where :math:`j_v < 0`
     (5.1)-(5.3); the reduced mass includes a third of the designed spring's mass where the part masses leave it
-    to the design, so the search is repeated until that mass settles.  The cam load is
-    :math:`P_T = i_k (P_{spr} + P_{gas}) + i_k m_v j_v` along the open event (7.1, corrections note 23).
+    to the design, so the search is repeated until that mass settles.
 
     References
     ----------
-    Valve-train practical works (n.d.), works 5-7, eqs. (5.1)-(5.14), (6.1)-(6.14), (7.1)-(7.18).
+    Valve-train practical works (n.d.), works 5-6, eqs. (5.1)-(5.14), (6.1)-(6.14).
     """
     law, omega, i_k = cam.law, cam.cam_speed, cam.rocker_ratio
     d_g = valve.throat_diameter
