@@ -449,22 +449,27 @@ def load_maps(valve, engine, cam, theta, spring_force, mass, dynamics=None):
     return [m for m in maps if m is not None], (low, high, source)
 
 
-def _worst(maps, quantity):
-    """The largest value of ``quantity(map)`` (shape (S, n)) over every map: a :class:`Worst`."""
+def _worst(maps, values):
+    """The largest of ``values`` (one array (S, n) per load map) over every map: a :class:`Worst`."""
     best = None
-    for m in maps:
-        q = quantity(m)
+    for m, q in zip(maps, values, strict=True):
         i, j = np.unravel_index(int(np.argmax(q)), q.shape)
         if best is None or q[i, j] > best.value:
             best = Worst(float(q[i, j]), float(m.speeds[i]), float(m.theta[j]), m.kind)
     return best
 
 
+def _radius(cam, theta):
+    """Radius of curvature of the cam profile at camshaft angles [m] (Shang Hanji (1988), eqs. (2.6)-(2.7))."""
+    h, dh, d2h, _ = cam.law.derivatives(theta)
+    if cam.follower == "flat":
+        return geometry.flat_follower_curvature(cam.heel_radius, h, d2h)
+    return geometry.roller_follower_curvature(cam.heel_radius, cam.roller_radius, h, dh, d2h)
+
+
 def _curvature(cam, theta):
-    """1/rho_1 + 1/rho_2 of the cam contact at camshaft angles [1/m] (Shang Hanji (1988), eqs. (2.6)-(2.7), (2.11))."""
-    roller = cam.follower == "roller"
-    rho = cam.law.profile(theta, cam.heel_radius, cam.follower, cam.roller_radius)[1]
-    return 1.0 / rho + (1.0 / cam.roller_radius if roller else 0.0)
+    """1/rho_1 + 1/rho_2 of the cam contact at camshaft angles [1/m] (Shang Hanji (1988), eq. (2.11))."""
+    return 1.0 / _radius(cam, theta) + (1.0 / cam.roller_radius if cam.follower == "roller" else 0.0)
 
 
 def strength_stage(valve, gas, engine, cam, drive, dynamics=None):
@@ -528,7 +533,7 @@ def _strength(valve, cam, theta, maps, p_open):
     i_k = cam.rocker_ratio
     parts, drive_layout, flat = valve.parts, layout(valve), cam.follower == "flat"
     notes, verdicts = [], []
-    load = _worst(maps, lambda m: m.force)
+    load = _worst(maps, [m.force for m in maps])
     p_max, at_load = load.value, _where(load)
 
     def need(keys, name):
@@ -542,8 +547,7 @@ def _strength(valve, cam, theta, maps, p_open):
         return "; ".join(t for t in texts if t)
 
     e_contact = parts.contact_modulus
-    width = None
-    stress = None
+    width = stress = stresses = None
     if need(["camshaft_diameter_mm", "camshaft_span_mm", "cam_to_bearing_mm"], "camshaft_deflection"):
         l1 = parts.cam_to_bearing
         f = strength.camshaft_deflection(p_max, l1, parts.camshaft_span - l1, parts.camshaft_diameter,
@@ -552,16 +556,14 @@ def _strength(valve, cam, theta, maps, p_open):
         verdicts.append(strength.verdict("camshaft_deflection", f, joined(
             at_load, f"coefficient {parts.camshaft_deflection_coefficient:.4g} (corrections note 20: not 0.8)")))
     if need(["cam_width_mm"], "cam_contact_stress"):
-        h, dh, d2h, _ = cam.law.derivatives(theta)
-        rho = (geometry.flat_follower_curvature(cam.heel_radius, h, d2h) if flat
-               else geometry.roller_follower_curvature(cam.heel_radius, cam.roller_radius, h, dh, d2h))
+        rho = _radius(cam, theta)
         # line contact needs a convex profile (flat) or a concave one wider than the roller
         if not np.all((rho > 0.0) if flat else (rho > 0.0) | (rho < -cam.roller_radius)):
             notes.append("cam_contact_stress: not checked, the profile is undercut (no line contact)")
         else:
             width = parts.cam_width
-            stress = _worst(maps, lambda m: strength.hertz_line_stress(m.force, width, _curvature(cam, m.theta),
-                                                                         e_contact))
+            stresses = [strength.hertz_line_stress(m.force, width, _curvature(cam, m.theta), e_contact) for m in maps]
+            stress = _worst(maps, stresses)
             verdicts.append(strength.verdict("cam_contact_stress", stress.value, joined(
                 _where(stress), "along the profile with the instantaneous force and radius (Shang Hanji (1988), "
                 "eq. 2.5)")))
@@ -605,13 +607,13 @@ def _strength(valve, cam, theta, maps, p_open):
         (0.0, 0.0), "", load.value, load.angle, load.speed, p_max / i_k, p_open,
         None if stress is None else stress.angle, None if stress is None else stress.speed,
         None if side is None else side.value, None if side is None else side.angle,
-        None if side is None else side.speed, _per_speed(maps, cam, width, e_contact),
+        None if side is None else side.speed, _per_speed(maps, stresses),
         tuple(verdicts), tuple(notes)), found
 
 
-def _per_speed(maps, cam, width, modulus):
-    """The largest cam force and (with the cam width ``width`` [m], None: not checked) contact stress at every speed
-    of the load maps, a :class:`StrengthPerSpeed` in increasing speed."""
+def _per_speed(maps, stresses=None):
+    """The largest cam force and contact stress (``stresses``: one array (S, n) per load map, None: not checked) at
+    every speed of the load maps, a :class:`StrengthPerSpeed` in increasing speed."""
     def largest(m, values):
         j = np.argmax(values, axis=1)
         return values[np.arange(j.size), j], m.theta[j]
@@ -624,9 +626,8 @@ def _per_speed(maps, cam, width, modulus):
     kinds = tuple(np.concatenate([[m.kind] * m.speeds.size for m in maps])[order])
     force, force_at = zip(*(largest(m, m.force) for m in maps), strict=True)
     stress = (None, None)
-    if width is not None:
-        stress = [column(c) for c in zip(*(largest(m, strength.hertz_line_stress(
-            m.force, width, _curvature(cam, m.theta), modulus)) for m in maps), strict=True)]
+    if stresses is not None:
+        stress = [column(c) for c in zip(*(largest(m, q) for m, q in zip(maps, stresses, strict=True)), strict=True)]
     return StrengthPerSpeed(column([speeds]), kinds, column(force), column(force_at), *stress)
 
 
@@ -668,7 +669,7 @@ def _edge_loading(parts, drive_layout, cam, maps, width, notes):
             return np.broadcast_to(offset, m.force.shape)
         return offset + strength.hertz_half_width(m.force, width, _curvature(cam, m.theta), parts.contact_modulus)
 
-    w = _worst(maps, reach)
+    w = _worst(maps, [reach(m) for m in maps])
     offset = abs(float(cam.law.derivatives(np.array([w.angle]))[1, 0]))
     band = ("with the Hertz half-width " f"{to_display(w.value - offset, 'mm'):.3g} mm" if width is not None
             else "without the Hertz half-width (parts.cam_width_mm not given)")
@@ -686,7 +687,7 @@ def _roller_side_force(cam, maps, drive_layout):
         return strength.roller_side_force(m.force, geometry.roller_pressure_angle(cam.heel_radius, cam.roller_radius,
                                                                                    h, dh))
 
-    w = _worst(maps, side)
+    w = _worst(maps, [side(m) for m in maps])
     h, dh = cam.law.derivatives(np.array([w.angle]))[:2]
     beta = abs(float(geometry.roller_pressure_angle(cam.heel_radius, cam.roller_radius, h, dh)[0]))
     carrier = "the tappet guide" if drive_layout in ("direct", "pushrod") else "the rocker and its shaft"
