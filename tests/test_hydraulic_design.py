@@ -2,6 +2,8 @@
 
 import csv
 import json
+import math
+from pathlib import Path
 
 import jsonschema
 import numpy as np
@@ -172,3 +174,78 @@ def test_the_report_has_the_hydraulic_chapter(tmp_path, lang, heading):
     assert heading in html and "Shang Hanji (1988), ch. 7" in html and "Wylie and Streeter (1978)" in html
     assert (out / "plots" / "intake_hydraulic.png").is_file() and "tables/intake_hydraulic.csv" in html
     assert (out / "plots" / "intake_hydraulic_sweep.png").is_file() and "tables/intake_hydraulic_sweep.csv" in html
+
+
+MARINE = (Path(__file__).parents[1] / "examples" / "marine-hydraulic-exhaust.toml").read_text(encoding="utf-8")
+"""The shipped marine example: a 36 mm rigid lift (plunger 23.04 mm x A_p / A_a = 1.5625), 4000 N preload, 70 mm
+actuator, back pressure 0.1 MPa, its engine cycle in [crank]."""
+
+
+def hydraulic_checks(results):
+    return {c.quantity.split("hydraulic drive: ", 1)[1]: c for c in results.checks if "hydraulic drive" in c.quantity}
+
+
+@pytest.fixture(scope="module")
+def marine():
+    return run(parse_spec(MARINE))
+
+
+def test_the_marine_example_opens_against_its_cylinder_pressure(marine):
+    """The exhaust valve opens against the [crank] cycle's pressure on its 142 mm head: later, with a higher pressure
+    peak, than the same drive without it; the force at lift-off is (p_cyl - p_port) pi d^2 / 4 (hand calculation
+    on the reported pressures) and the pressure that lifts the valve there p_back + (F_0 + F) / A_a."""
+    h = json.loads(results_json(marine))["valves"]["exhaust"]["hydraulic"]
+    g = h["gas_force"]
+    assert g["head_diameter_mm"] == 142.0 and g["port_pressure_MPa"] == pytest.approx(0.3)
+    assert g["gas_force_at_lift_off_N"] == pytest.approx(
+        (g["cylinder_pressure_at_lift_off_MPa"] - 0.3) * 1e6 * math.pi / 4 * 0.142**2, rel=1e-9)
+    assert g["lift_off_pressure_MPa"] == pytest.approx(
+        0.1 + (4000.0 + g["gas_force_at_lift_off_N"]) / (math.pi / 4 * 0.07**2) / 1e6, rel=1e-9)
+    assert g["opening_delay_cam_deg"] > 0 and g["pressure_rise_MPa"] > 0 and g["lift_loss_mm"] >= 0
+    assert 480.0 < g["lift_off_crank_deg"] < 540.0       # after the nominal opening (60 crank deg before BDC at 540)
+    assert h["max_pressure_MPa"] > g["lift_off_pressure_MPa"]
+    assert h["stop_mm"] == pytest.approx(1.1 * 36.0, rel=1e-6) and not h["stop_reached"] and h["residual_lift_mm"] == 0
+    assert all(c.passed for c in hydraulic_checks(marine).values())
+
+
+@pytest.mark.parametrize("change", [("valve_mass_kg = 11.0", "valve_mass_kg = 725.0"),
+                                    ("pipe_diameter_mm = 50.0 ", "pipe_diameter_mm = 22.0 ")])
+def test_a_valve_that_overtravels_or_stays_open_fails(change):
+    """Issue 21 (nonsense 1): a 725 kg valve flies past its stroke and does not close before the next opening;
+    a 22 mm pipe leaves the valve open at the over-speed.  Each is a failure (not a warning), every check's value
+    finite, and the valve that does not reseat says so in words instead of a seating velocity."""
+    results = run(parse_spec(MARINE.replace(*change)))
+    checks = hydraulic_checks(results)
+    left = checks["valve lift left at the next opening"]
+    assert left.severity == "failure" and not left.passed and "has not closed before its next opening" in left.note
+    assert all(math.isfinite(c.value) for c in checks.values())
+    h = results.valves["exhaust"].hydraulic
+    if "725" in change[1]:
+        stop = checks["largest valve lift within the stroke (below the stop)"]
+        assert stop.severity == "failure" and not stop.passed and stop.high == pytest.approx(39.6e-3, rel=1e-6)
+        assert h.stop_reached and h.valve_lift < 39.6e-3 * 1.2       # the stop holds it (before: 276 mm)
+    else:
+        assert h.sweep.residual_lift[-1] > 1e-4 and h.sweep.cam_speed[-1] == pytest.approx(
+            1.1 * 514 * math.pi / 60, rel=1e-9)                       # the over-speed, a four-stroke's camshaft
+
+
+def test_a_fill_pressure_that_lifts_the_valve_fails():
+    """Issue 21 (nonsense 1): a 100 MPa supply holds the valve open.  The lift-off pressure by hand:
+    p_back + F_0 / A_a = 0.1 + 4000 / (pi / 4 x 0.07^2) / 1e6 = 1.1394 MPa."""
+    results = run(parse_spec(MARINE.replace("fill_pressure_MPa = 0.6 ", "fill_pressure_MPa = 100.0 ")
+                             .replace("relief_pressure_MPa = 30.0 ", "")))
+    checks = hydraulic_checks(results)
+    fill = checks["fill pressure below the valve's lift-off pressure"]
+    assert fill.severity == "failure" and not fill.passed and fill.high == pytest.approx(1.1394e6, rel=1e-4)
+    assert not checks["largest valve lift within the stroke (below the stop)"].passed
+    assert not checks["valve lift left at the next opening"].passed
+
+
+def test_an_initial_pressure_that_lifts_the_valve_at_rest_is_refused():
+    """The drive at rest must hold the valve on its seat: 0.1 + 250 N / (pi / 4 x 25 mm^2) = 0.6093 MPa (hand
+    calculation) is the most the initial pressure may be."""
+    with pytest.raises(SpecError) as err:
+        parse_spec(with_section(SECTION + "initial_pressure_MPa = 0.7\n"))
+    (problem,) = err.value.problems
+    assert "initial_pressure_MPa = 0.7" in problem and "0.6093 MPa" in problem and "hydraulic" in problem
+    parse_spec(with_section(SECTION + "initial_pressure_MPa = 0.6\n"))
