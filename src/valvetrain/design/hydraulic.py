@@ -116,7 +116,8 @@ class GasForceRecord:
     force: Optional[float] = quantity("gas_force_at_lift_off_N", "N", "(p_cyl - p_port) x head area there, towards "
                                       "the seat")
     lift_off_pressure: Optional[float] = quantity("lift_off_pressure_MPa", "MPa", "actuator pressure that holds the "
-                                                  "spring preload and the gas force there, p_back + (F_0 + F_gas) / A_a")
+                                                  "spring preload and the gas force there, p_back + (F_0 + F_gas) / "
+                                                  "A_a")
     opening_delay: Optional[float] = quantity("opening_delay_cam_deg", "cam deg", "opening delay the gas force adds "
                                               "(against the same drive without it)")
     lift_loss: float = quantity("lift_loss_mm", "mm", "lift the gas force costs (largest lift without it less with "
@@ -374,9 +375,11 @@ def _failure_checks(r, sw, speed, speeds, engine, drive, hydraulic):
                     "again: it has not closed before its next opening"
                     if left[m] > BOUNCE_TOLERANCE else ""))]
     if hydraulic.fill_pressure is not None:
-        found.append(check("hydraulic drive: fill pressure below the valve's lift-off pressure", hydraulic.fill_pressure,
-                           high=lift_off_pressure(drive), unit="MPa", severity="failure", source=FAILURE_SOURCE,
-                           note="above it the supply alone lifts the valve off its seat (F_0 / A_a above the back pressure)"))
+        found.append(check("hydraulic drive: fill pressure below the valve's lift-off pressure",
+                           hydraulic.fill_pressure, high=lift_off_pressure(drive), unit="MPa", severity="failure",
+                           source=FAILURE_SOURCE,
+                           note="above it the supply alone lifts the valve off its seat (F_0 / A_a above the back "
+                                "pressure)"))
     return found
 
 

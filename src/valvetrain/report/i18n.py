@@ -457,7 +457,9 @@ TEXT["en"].update({
                  "method of characteristics with a constant Darcy friction factor (time step L / (N a), the wave speed "
                  "a corrected for the elasticity of the wall); the pump and actuator chambers are compressible "
                  "volumes (V / K) dp/dt = inflow − outflow with leakage, fill and relief valves; the valve is one mass "
-                 "on its spring, its damping and a rigid seat. Pressures are absolute; a pressure that falls to the "
+                 "on its spring, its damping, a rigid seat and a stiff stop at the end of its stroke (a valve that "
+                 "reaches it, or that is not back on its seat when the plunger lifts again, fails). Pressures are "
+                 "absolute; a pressure that falls to the "
                  "vapour pressure is held there and flagged as cavitation (the cavity volume is not tracked). The "
                  "rigid drive lifts the valve by the plunger lift times A_p / A_a; the delays are taken at 5 % of its "
                  "largest lift",
@@ -505,7 +507,9 @@ TEXT["ru"].update({
                  "Трубопровод рассчитан методом характеристик с постоянным коэффициентом трения Дарси (шаг по "
                  "времени L / (N a), скорость волны a с поправкой на упругость стенки); полости насоса и привода "
                  "сжимаемы: (V / K) dp/dt = приток − отток, с утечками, подпиточным и предохранительным клапанами; "
-                 "клапан — одна масса на пружине, с демпфированием и жёстким седлом. Давления абсолютные; давление, "
+                 "клапан — одна масса на пружине, с демпфированием, жёстким седлом и жёстким упором в конце хода "
+                 "(клапан, дошедший до упора или не вернувшийся на седло к следующему подъёму плунжера, — отказ). "
+                 "Давления абсолютные; давление, "
                  "упавшее до давления насыщенных паров, удерживается на нём и отмечается как кавитация (объём "
                  "каверны не отслеживается). Жёсткий привод поднимает клапан на подъём плунжера, умноженный на "
                  "A_p / A_a; запаздывания взяты на уровне 5 % его наибольшего подъёма",

@@ -462,8 +462,6 @@ SKELETONS = {
     "built-in beam ({}, corrections note {}); simply supported: {} MPa; load P_T max (corrections note {})":
         "балка с заделкой ({}, поправка {}); на двух опорах: {} МПа; нагрузка P_T max (поправка {})",
     "no ramp takes up clearance_mm = {}: the flank does": "участок сбега не выбирает зазор {} мм: его выбирает профиль",
-    "even firing, order {}{}{}{}": "равномерное чередование вспышек, порядок работы {}{}{}{}",
-    "even firing, order {}{}{}{}{}{}{}{}": "равномерное чередование вспышек, порядок работы {}{}{}{}{}{}{}{}",
     "from the crank throws and cylinder axes": "по углам колен вала и осям цилиндров",
     "{} N/mm at the valve from the part geometry in [parts]":
         "{} Н/мм, приведённая к клапану, по геометрии деталей из исходных данных",
@@ -756,6 +754,8 @@ QUANTITIES.update({
         "копир: наименьший радиус кривизны (подрез роликом копира)"),
 })
 
+SKELETONS.update({f"even firing, order {'{}' * n}": f"равномерное чередование вспышек, порядок работы {'{}' * n}"
+                  for n in range(1, 25)})   # the order of any number of cylinders, "1-5-3-6-2-4"
 SKELETONS.update({
     "a wheel of radius {} mm cannot grind a concave stretch of smaller radius":
         "круг радиусом {} мм не может шлифовать вогнутый участок меньшего радиуса",
