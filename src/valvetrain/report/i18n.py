@@ -494,6 +494,7 @@ TEXT["en"].update({
                      "cycle is the engine's as given (its blowdown does not wait for the valve), the effects are "
                      "against the same drive without the force",
     "hy_gas_source": "Cylinder pressure",
+    "hy_stop": "stop (end of the stroke)", "hy_lift_off": "valve leaves its seat (gas force {force:.3g} kN)",
     "hy_sweep": "Speed sweep (one revolution per speed)",
     "hy_sweep_title": "hydraulic drive against engine speed", "hy_sweep_table": "Table against engine speed",
     "hy_max_pressure": "largest pressure, MPa", "hy_lift_loss": "lift loss, mm", "hy_delay": "delay, cam deg",
@@ -546,6 +547,7 @@ TEXT["ru"].update({
                      "заданный цикл двигателя (выпуск не ждёт открытия клапана), влияние силы — по сравнению с тем же "
                      "приводом без неё",
     "hy_gas_source": "Давление в цилиндре",
+    "hy_stop": "упор (конец хода)", "hy_lift_off": "клапан отходит от седла (сила газов {force:.3g} кН)",
     "hy_sweep": "Расчёт по частоте вращения (один оборот на каждой частоте)",
     "hy_sweep_title": "гидропривод в зависимости от частоты вращения двигателя",
     "hy_sweep_table": "Таблица по частоте вращения двигателя",
