@@ -46,6 +46,7 @@ NAMES = {
     # engine
     "name": ("name", "наименование"), "bore": ("bore D", "диаметр цилиндра D"),
     "stroke": ("piston stroke S", "ход поршня S"), "rated_speed": ("rated speed n", "номинальная частота вращения n"),
+    "over_speed_ratio": ("over-speed as a multiple of the rated speed", "заброс частоты вращения в долях номинальной"),
     "cylinders": ("number of cylinders", "число цилиндров"), "strokes": ("strokes of the cycle", "тактность"),
     "type": ("engine type", "тип двигателя"), "chamber": ("combustion chamber", "камера сгорания"),
     "layout": ("layout", "компоновка"), "bank_angle": ("bank angle", "угол развала"),
