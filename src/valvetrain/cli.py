@@ -304,11 +304,13 @@ def optimize(file, out, valve, objective, vary, no_jump, cam_width, seating_velo
             sys.exit(2)
     if not result.feasible:
         click.echo(f"error: no point of the search meets every limit ({result.evaluations} evaluations, start "
-                   f"included); nothing written. The limits that fail at the point nearest to them:", err=True)
-        for c in result.checks:
-            if not c.passed:
-                note = f" [{c.note}]" if c.note else ""
-                click.echo(f"  {c.quantity}{note} = {c.shown_value:.6g} {c.unit}, allowed {c.range}", err=True)
+                   "included); nothing written. The limits that fail:", err=True)
+        for where, checks in (("at the point nearest to them", result.checks), ("at the start", result.checks_start)):
+            for c in checks:
+                if not c.passed:
+                    note = f" [{c.note}]" if c.note else ""
+                    click.echo(f"  {where}: {c.quantity}{note} = {c.shown_value:.6g} {c.unit}, allowed {c.range}",
+                               err=True)
         sys.exit(1)
     record = {"valve": result.valve, "objective": result.objective, "start": result.start, "optimum": result.optimum,
               "bounds": dict(zip(result.start, result.bounds, strict=True)),
