@@ -317,7 +317,8 @@ def optimize(file, out, valve, objective, vary, no_jump, cam_width, seating_velo
               "start_value": result.start_value, "value": result.value, "feasible": result.feasible,
               "binding": [c.quantity for c in result.binding], "fast_margins": result.margins,
               "limit_notes": result.limit_notes, "evaluations": result.evaluations, "seconds": result.seconds,
-              "seconds_in_evaluations": result.seconds_in_evaluations,
+              "seconds_in_evaluations": result.seconds_in_evaluations, "law_samples": result.law_samples,
+              "simulations": result.simulations,
               "comparison": [dict(zip(("quantity", "unit", "start", "optimum"), r, strict=True))
                              for r in result.comparison],
               "constraints_start": [c.as_dict() for c in result.checks_start],

@@ -81,8 +81,20 @@ POLISH_RESERVE = 1e-5
 """Relative margin the local polish keeps from every limit (the full design's extremes, refined to round-off, may lie
 that far beyond the search's)."""
 
+RELAXED = 1e-6
+"""Relative room a limit relaxed to the start's value leaves beyond it (the search's extremes and the full design's
+agree to about this, so that the start itself meets the limit in both)."""
+
 FINAL_CANDIDATES = 4
 """Points that met every margin of the search designed in full at most, best first, before the start is taken."""
+
+NEAR = 0.01
+"""Summed relative violations of the other limits up to which a point's follower separation is simulated (beyond,
+its penalty of :data:`PENALTY` times them already ranks it below any candidate of the search)."""
+
+SPRING_SLACK = 0.1
+"""How far below 0 the spring design's margin of the search (a conservative closed form) may lie for a point to be
+designed in full: the final spring search decides."""
 
 CAM_WIDTH_TO_BASE_RADIUS = 0.5
 """The cam width of the Hertz stress where ``parts.cam_width_mm`` is not given, as a fraction of the base radius r0:
@@ -290,8 +302,8 @@ def _relaxed(c, quantity, notes):
     low, high = c.low, c.high
     if not c.passed:
         notes.append({"quantity": quantity, "value": c.shown_value, "unit": c.unit, "range": c.range})
-        low = None if low is None else min(low, c.value)
-        high = None if high is None else max(high, c.value)
+        low = None if low is None else min(low, c.value - RELAXED * abs(c.value))
+        high = None if high is None else max(high, c.value + RELAXED * abs(c.value))
     return low, high
 
 
@@ -387,7 +399,7 @@ class Problem:
         self._train_parameters(design)
         self.names = self.margin_names()
         self.jump = self.names.index("no jump") if "no jump" in self.names else None
-        self.evaluations, self.seconds, self.law_samples, self.best = 0, 0.0, 0, -math.inf
+        self.evaluations, self.seconds, self.law_samples, self.simulations, self.best = 0, 0.0, 0, 0, -math.inf
         self.history, self.points = [], []
         self._cache = {}
 
@@ -525,9 +537,11 @@ class Problem:
     def evaluate(self, x, dynamics=None):
         """(objective, margins) of the variables; a point that admits no design has objective 0 and margins -1.
 
-        The follower separation is simulated (``dynamics`` None) only where it decides whether the point is the best
-        that meets every limit so far: every other margin holds and the objective beats that best; with ``dynamics``
-        True always, with False never.  Where it is not simulated its margin is NaN.
+        The follower separation is simulated (``dynamics`` None) only where it can matter: until a candidate is found
+        (:meth:`acceptable`) at every point, to rank the infeasible ones; then where the objective beats the best
+        candidate's and the other margins are violated by at most :data:`NEAR` in all (a point farther out is ranked
+        below every candidate by its penalty alone); with ``dynamics`` True always, with False never.  Where it is
+        not simulated its margin is NaN.
         """
         key = tuple(float(v) for v in x)
         entry = self._cache.get(key)
@@ -546,10 +560,11 @@ class Problem:
             self.points.append(np.array(key))
         objective, margins, kept = entry
         if self.jump is not None and kept is not None and np.isnan(margins[self.jump]) and (
-                dynamics or (dynamics is None and objective > self.best
-                             and np.all(np.delete(margins, self.jump) >= 0.0))):
+                dynamics or (dynamics is None and objective > self.best and (
+                    self.best == -math.inf or self.violation(margins) <= NEAR))):
             margins[self.jump] = self._separation(*kept)
-        if np.all(margins >= 0.0):
+            self.simulations += 1
+        if self.acceptable(margins):
             self.best = max(self.best, objective)
         self.seconds += time.perf_counter() - t0
         return objective, margins
@@ -669,9 +684,23 @@ class Problem:
                 worst = min(worst, force / (p.preload * scale))
         return worst
 
-    def feasible_points(self):
-        """The points evaluated whose every margin holds, best objective first: (objective, x) pairs."""
-        found = [(o, x) for (o, m), x in zip(self.history, self.points, strict=True) if np.all(m >= 0.0)]
+    def _slack(self, margins):
+        """The margins with the spring design's raised by :data:`SPRING_SLACK`."""
+        return margins + np.where(np.arange(margins.size) == margins.size - 1, SPRING_SLACK, 0.0)
+
+    def acceptable(self, margins):
+        """Whether a point is a candidate for the full design: every margin holds (a NaN one does not), the spring
+        design's within :data:`SPRING_SLACK`."""
+        return bool(np.all(self._slack(margins) >= 0.0))
+
+    def violation(self, margins):
+        """The summed violations of the margins but a NaN one, the spring design's beyond :data:`SPRING_SLACK`."""
+        return float(np.nansum(np.clip(-self._slack(margins), 0.0, None)))
+
+    def candidates(self):
+        """The points evaluated that are :meth:`acceptable`, best objective first: (objective, x, worst margin)."""
+        found = [(o, x, float(np.nanmin(m))) for (o, m), x in zip(self.history, self.points, strict=True)
+                 if self.acceptable(m)]
         return sorted(found, key=lambda p: -p[0])
 
 
@@ -683,7 +712,7 @@ class Result:
     ``(quantity, unit, start, optimum)`` of the two full designs; ``checks_start`` and ``checks`` the constraints
     on them (:func:`final_checks`); ``history`` one ``(objective, margins)`` per evaluation, in order (a margin not
     needed, NaN); ``law_samples`` the angles at which the search evaluated the law (the objective's quadrature nodes
-    not counted).  Where no point meets every limit, ``optimum`` is the point nearest to them (or the start) and
+    not counted), ``simulations`` the dynamics runs of the search (two speeds each).  Where no point meets every limit, ``optimum`` is the point nearest to them (or the start) and
     ``feasible`` is False.
     """
 
@@ -707,6 +736,7 @@ class Result:
     polydyne_fullness: float = None
     spec_text: str = field(repr=False, default="")
     law_samples: int = 0
+    simulations: int = 0
 
     @property
     def feasible(self):
@@ -877,19 +907,22 @@ def optimize_valve(spec, valve=None, variables=None, objective="fullness", wheel
     found = optimize.differential_evolution(population, problem.bounds, seed=seed, maxiter=maxiter, popsize=popsize,
                                             tol=1e-7, polish=False, callback=callback, vectorized=True,
                                             updating="deferred", x0=_inside(problem.x0, problem.bounds))
-    feasible = problem.feasible_points()
-    origin = feasible[0][1] if feasible else found.x
-    held = problem.evaluate(origin, dynamics=True)[1]
+    candidates = problem.candidates()
+    if candidates:
+        origin = candidates[0][1]
+        held = problem.evaluate(origin, dynamics=True)[1]
 
-    def polish_margins(x):
-        """The margins less :data:`POLISH_RESERVE`, the separation's held at the polish's origin."""
-        margins = problem.evaluate(x, dynamics=False)[1]
-        return np.where(np.isnan(margins), held, margins) - POLISH_RESERVE
+        def polish_margins(x):
+            """The margins less :data:`POLISH_RESERVE`, the separation's held at the polish's origin (the final
+            design's sweep checks it)."""
+            margins = problem.evaluate(x, dynamics=False)[1]
+            return np.where(np.isnan(margins), held, margins) - POLISH_RESERVE
 
-    local = optimize.minimize(lambda x: -problem.evaluate(x, dynamics=False)[0] / scale0, origin, method="SLSQP",
-                              bounds=problem.bounds, constraints=({"type": "ineq", "fun": polish_margins},),
-                              options={"maxiter": POLISH_ITERATIONS, "ftol": 1e-10})
-    problem.evaluate(local.x)
+        local = optimize.minimize(lambda x: -problem.evaluate(x, dynamics=False)[0] / scale0, origin,
+                                  method="SLSQP", bounds=problem.bounds,
+                                  constraints=({"type": "ineq", "fun": polish_margins},),
+                                  options={"maxiter": POLISH_ITERATIONS, "ftol": 1e-10})
+        problem.evaluate(local.x)
     spring = None if any(v.path == "drive.spring_reserve" for v in problem.variables) else design.drive.lines["chosen"]
     checks_start = final_checks(design, spec, limits, 1.0, spring)
     start = (problem.x0, spec, design, checks_start,
@@ -908,7 +941,7 @@ def optimize_valve(spec, valve=None, variables=None, objective="fullness", wheel
         values, start_value, float(getattr(checked.flow, OBJECTIVES[objective][0])), problem.bounds, problem.names,
         dict(zip(problem.names, map(float, margins), strict=True)), problem.evaluations, time.perf_counter() - t0,
         problem.seconds, notes, _comparison(design, checked), checks_start, checks, list(problem.history), reference,
-        text, problem.law_samples)
+        text, problem.law_samples, problem.simulations)
 
 
 def _passed(checks):
@@ -932,18 +965,21 @@ def _designed(problem, spec, valve, limits, spring, x):
 
 
 def _best_designed(problem, spec, valve, limits, spring, floor):
-    """The best of the points that met every margin of the search whose full design meets every limit, trying at most
-    :data:`FINAL_CANDIDATES` of them, each better than ``floor`` (the start's objective where the start meets every
-    limit, else None): (found or None, the first point tried that admits a full design or None)."""
-    tried, nearest = 0, None
-    for value, x in problem.feasible_points():
+    """The best of the search's candidates (:meth:`Problem.candidates`) whose full design meets every limit, each better
+    than ``floor`` (the start's objective where the start meets every limit, else None), trying at most
+    :data:`FINAL_CANDIDATES`; after one fails, only a point whose worst margin of the search is larger is tried:
+    (found or None, the first point tried that admits a full design or None)."""
+    tried, nearest, worst = 0, None, -math.inf
+    for value, x, least in problem.candidates():
         if tried == FINAL_CANDIDATES or (floor is not None and value <= floor):
             break
+        if least <= worst:
+            continue
         tried += 1
         found = _designed(problem, spec, valve, limits, spring, x)
         if found is not None and _passed(found[3]):
             return found, found
-        nearest = nearest or found
+        nearest, worst = nearest or found, least
     return None, nearest
 
 
