@@ -211,8 +211,8 @@ def test_no_jump_defaults_to_the_over_speed_ratio(tmp_path):
 
 
 def test_a_seating_velocity_limit():
-    """--seating-velocity: the kinematic seating velocity i_k omega |dh/dphi| at the valve's closing, which the law stage
-    reports (design.cam.seating_velocity), against the limit."""
+    """--seating-velocity: the kinematic seating velocity i_k omega |dh/dphi| at the valve's closing, which the law
+    stage reports (design.cam.seating_velocity), against the limit."""
     spec = example_spec()
     design = run(spec).valves["intake"]
     limits, _ = design_limits(design, seating_velocity=0.3)

@@ -97,8 +97,8 @@ def test_rho_min_for_either_follower(article):
 
 
 def pitch_radius_by_differences(law, heel, roller, low, high, n=2001):
-    """Signed radius of curvature of the roller-centre curve c = (r + R_r + h) (sin t, cos t) by central differences of its
-    points (numpy.gradient), not by the closed form of valvetrain.geometry: the independent reference (a step of
+    """Signed radius of curvature of the roller-centre curve c = (r + R_r + h) (sin t, cos t) by central differences of
+    its points (numpy.gradient), not by the closed form of valvetrain.geometry: the independent reference (a step of
     some 5e-5 rad keeps both the round-off and the truncation of the second differences below 1e-6 relative)."""
     t = np.linspace(low, high, n)
     g = heel + roller + law.lift(t)

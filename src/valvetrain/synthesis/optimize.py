@@ -288,11 +288,10 @@ def check_bounds(section, name, variables):
                 for e in exc.errors():
                     at = ".".join(str(part + 1) if isinstance(part, int) else str(part) for part in e["loc"])
                     if at == v.path:
-                        shown = v.written[i] if v.written else f"{value:g}"
+                        written = v.written or (f"{v.low:g}", f"{v.high:g}")
                         reason = e["msg"].removeprefix("Value error, ")
-                        raise ValueError(f"--vary {v.path}={','.join(v.written) if v.written else f'{v.low:g},{v.high:g}'}"
-                                         f": {which} = {shown} is outside the range of valves.{name}.{v.path}: "
-                                         f"{reason}") from None
+                        raise ValueError(f"--vary {v.path}={','.join(written)}: {which} = {written[i]} is outside "
+                                         f"the range of valves.{name}.{v.path}: {reason}") from None
 
 
 def _relaxed(c, quantity, notes):
@@ -712,8 +711,8 @@ class Result:
     ``(quantity, unit, start, optimum)`` of the two full designs; ``checks_start`` and ``checks`` the constraints
     on them (:func:`final_checks`); ``history`` one ``(objective, margins)`` per evaluation, in order (a margin not
     needed, NaN); ``law_samples`` the angles at which the search evaluated the law (the objective's quadrature nodes
-    not counted), ``simulations`` the dynamics runs of the search (two speeds each).  Where no point meets every limit, ``optimum`` is the point nearest to them (or the start) and
-    ``feasible`` is False.
+    not counted), ``simulations`` the dynamics runs of the search (two speeds each).  Where no point meets every
+    limit, ``optimum`` is the point nearest to them (or the start) and ``feasible`` is False.
     """
 
     valve: str
