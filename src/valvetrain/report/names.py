@@ -47,6 +47,7 @@ NAMES = {
     "name": ("name", "наименование"), "bore": ("bore D", "диаметр цилиндра D"),
     "stroke": ("piston stroke S", "ход поршня S"), "rated_speed": ("rated speed n", "номинальная частота вращения n"),
     "cylinders": ("number of cylinders", "число цилиндров"), "strokes": ("strokes of the cycle", "тактность"),
+    "over_speed_ratio": ("over-speed / rated speed", "отношение максимальной частоты вращения к номинальной"),
     "type": ("engine type", "тип двигателя"), "chamber": ("combustion chamber", "камера сгорания"),
     "layout": ("layout", "компоновка"), "bank_angle": ("bank angle", "угол развала"),
     "firing_order": ("firing order", "порядок работы цилиндров"),
