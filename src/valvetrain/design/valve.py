@@ -414,14 +414,19 @@ def profile_stage(cam, valve, output):
         r = law.profile(t, heel, follower, roller)[1]
         return r if follower == "flat" else np.where(r + roller > 0.0, r, np.inf)
 
-    # the base circle (radius = heel radius for both followers) closes the profile
-    x_min, rho_min = min(extremum(convex, bp, "min"), (np.pi, heel), key=lambda p: p[1])
+    # the base circle (radius = heel radius for both followers) closes the profile; the smallest radius is refined
+    # on the contour around the least sample of each piece and around the table's least, so that a dip between the
+    # table's points (an undercut) is found
+    i = int(np.argmin(rho if follower == "flat" else np.where(rho + roller > 0.0, rho, np.inf)))
+    near = theta[[max(i - 1, 0), min(i + 1, theta.size - 1)]]
+    x_min, rho_min = min(extremum(convex, bp, "min"), extremum(convex, near, "min"), (np.pi, heel),
+                         key=lambda p: p[1])
     x_max, rho_max = max(extremum(lambda t: np.where(np.isinf(convex(t)), -np.inf, convex(t)), bp, "max"),
                          (np.pi, heel), key=lambda p: p[1])
     straight = bool(np.any(np.isposinf(rho)))   # straight flanks (tangent cam): the largest radius is infinite
     if follower == "flat":
         contact = FlatContact(cam.max_velocity / omega)
-        undercut = rho_min <= 0.0
+        undercut = geometry.undercut_flat(rho_min)
     else:
         beta_max = extremum(lambda t: np.abs(law.profile(t, heel, "roller", roller)[2]), bp, "max")[1]
         # the concave radius closest to zero is the most negative curvature (the radius itself passes through
@@ -429,7 +434,7 @@ def profile_stage(cam, valve, output):
         curvature = extremum(lambda t: 1.0 / law.profile(t, heel, "roller", roller)[1], bp, "min")[1]
         concave = 1.0 / curvature if curvature < 0.0 else 0.0
         contact = RollerContact(roller, beta_max, concave if concave + roller < 0.0 else None)
-        undercut = bool(np.any(geometry.undercut_roller(rho + roller, roller)))
+        undercut = geometry.undercut_roller(rho_min + roller, roller)
     return ProfileResult(table, contour, ctheta, rho_min, None if straight else rho_max, x_min,
                          None if straight else x_max, straight, contact, bool(undercut))
 

@@ -678,8 +678,8 @@ SYMBOLS = {
 """Every symbol of the report: ``key: (HTML, English, Russian)`` -- explained where it is first used."""
 
 
-_MARGINS = ("spring reserve", "pressure angle", "concave radius", "rho_min", "max acceleration", "min acceleration",
-            "seating velocity", "no jump", "spring design")
+_MARGINS = ("spring reserve", "pressure angle", "concave radius", "rho_min", "contact stress", "max acceleration",
+            "min acceleration", "seating velocity", "no jump", "spring design")
 
 OPTIMIZE_TEXT = {
     "en": {
@@ -725,7 +725,8 @@ OPTIMIZE_TEXT = {
         "binding": "Ограничения, определяющие оптимум", "history": "Ход поиска",
         "feasible": "в пределах ограничений", "infeasible": "вне ограничений", "best": "лучший в пределах",
         "margins": {"spring reserve": "запас пружины", "pressure angle": "угол давления",
-                    "concave radius": "вогнутый радиус", "rho_min": "ρ_min", "max acceleration": "ускорение max",
+                    "concave radius": "вогнутый радиус", "rho_min": "ρ_min",
+                    "contact stress": "контактное напряжение", "max acceleration": "ускорение max",
                     "min acceleration": "ускорение min", "seating velocity": "скорость посадки",
                     "no jump": "отрыв толкателя", "spring design": "подбор пружины"},
         "evaluations": "число расчётов",

@@ -50,6 +50,7 @@ NAMES = {
     "idle_speed": ("idle speed (lowest speed of the strength checks)",
                    "частота холостого хода (наименьшая в расчёте на прочность)"),
     "cylinders": ("number of cylinders", "число цилиндров"), "strokes": ("strokes of the cycle", "тактность"),
+    "over_speed_ratio": ("over-speed / rated speed", "отношение максимальной частоты вращения к номинальной"),
     "type": ("engine type", "тип двигателя"), "chamber": ("combustion chamber", "камера сгорания"),
     "layout": ("layout", "компоновка"), "bank_angle": ("bank angle", "угол развала"),
     "firing_order": ("firing order", "порядок работы цилиндров"),
