@@ -140,6 +140,7 @@ NAMES = {
     "table_file": ("lift table file", "файл таблицы подъёма"), "table_angle": ("angles of the table", "углы таблицы"),
     "table_lift_at": ("lift of the table at", "подъём в таблице на"), "table_zero": ("table angles from", "углы таблицы от"),
     "fit": ("fit", "аппроксимация"), "accuracy": ("accuracy of the fit", "точность аппроксимации"),
+    "accuracy_from": ("accuracy of the fit from", "точность аппроксимации"),
     "max_harmonics": ("max number of harmonics", "наибольшее число гармоник"),
     "straight_flanks": ("straight flanks", "прямолинейные участки"),
     "points": ("points fitted", "число аппроксимируемых точек"), "rows_per_point": ("rows per point", "строк на точку"),
@@ -355,6 +356,7 @@ VALUES = {
     "three_arc": "трёхдуговой", "tangent": "тангенциальный", "table": "по измеренной таблице",
     "crank": "по коленчатому валу", "cam": "по распределительному валу", "valve": "на клапане", "tappet": "на толкателе",
     "gas_exchange_tdc": "ВМТ газообмена", "firing_tdc": "ВМТ сгорания", "auto": "автоматически", "spline": "сплайн",
+    "stated": "задана в исходных данных",
     "true": "да", "false": "нет", "outer": "наружная", "inner": "внутренняя", "any": "любое",
     "1dof": "одномассовая", "multi": "многомассовая", "none": "нет", "infeed": "подачей круга",
 }
