@@ -106,8 +106,8 @@ class DesignResults:
             body = "".join("<tr>" + "".join(f"<td>{escape(str(c))}</td>" for c in r) + "</tr>" for r in rows)
             return f"<table><tr>{head}</tr>{body}</table>"
 
-        warnings = [(w.severity, w.quantity, f"{w.shown_value:.6g} {w.unit}", w.range, w.source) for w in self.warnings]
-        accepted = [(w.severity, w.quantity, f"{w.shown_value:.6g} {w.unit}", w.range, w.reason) for w in self.accepted]
+        warnings = [(w.severity, w.quantity, w.value_text, w.range, w.source) for w in self.warnings]
+        accepted = [(w.severity, w.quantity, w.value_text, w.range, w.reason) for w in self.accepted]
         return (f"<p><b>{escape(self.engine.name)}</b></p>" + table(self._HEADS, self._rows())
                 + "<p>Checks that fail</p>" + table(("severity", "quantity", "value", "allowed", "source"), warnings)
                 + ("<p>Accepted in the specification</p>" + table(("severity", "quantity", "value", "allowed",

@@ -16,6 +16,8 @@ Symbols: one symbol for one quantity throughout the report and the plots: ``h`` 
 
 import re
 
+from ..checks import UNEVALUATED
+
 UNITS = {
     "": ("", ""), "mm": ("mm", "мм"), "mm2": ("mm²", "мм²"), "mm2 s": ("mm²·s", "мм²·с"), "m": ("m", "м"),
     "m/s": ("m/s", "м/с"), "m/s2": ("m/s²", "м/с²"), "m/s3": ("m/s³", "м/с³"), "N": ("N", "Н"), "kN": ("kN", "кН"),
@@ -655,6 +657,16 @@ def quantity_text(quantity, lang, prefixes=()):
     return prefix + (rest if name is None else name)
 
 
+CANNOT_EVALUATE = ("cannot be evaluated", "не может быть вычислено")
+"""Said of a check whose value is not a finite number, before its reason."""
+
+
+def unevaluated_text(check, lang):
+    """``"cannot be evaluated: REASON"`` of a check that cannot be evaluated, in ``lang`` (the reason by
+    :func:`translate`)."""
+    return f"{CANNOT_EVALUATE[LANGS.index(lang)]}: {translate(check.unevaluated, lang)}"
+
+
 CHAPTERS = {"crank": ("crank mechanism", "кривошипно-шатунный механизм"), "two-stroke": ("two-stroke", "двухтактный")}
 """Prefixes of the checks of a chapter (not of a valve)."""
 
@@ -748,6 +760,7 @@ QUANTITIES.update({
 })
 
 SKELETONS.update({
+    UNEVALUATED: "значение не удалось вычислить",
     "a wheel of radius {} mm cannot grind a concave stretch of smaller radius":
         "круг радиусом {} мм не может шлифовать вогнутый участок меньшего радиуса",
     "master roller r_m = {} mm, bar ratio {}": "ролик копира r_m = {} мм, передаточное отношение {}",
