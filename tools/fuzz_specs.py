@@ -868,6 +868,9 @@ def _json_problems(folder):
     return found
 
 
+OPTION = re.compile(r"(?<![\w-])--[a-z]|'--[a-z]")
+"""An option of a command named in a message (click's own messages quote it: "Invalid value for '--grid'")."""
+
 NAN_WORD = re.compile(r"(?<![\w.])-?(nan|inf)(?![\w.])", re.IGNORECASE)
 
 
@@ -904,9 +907,11 @@ def run_command(case, tmp, spec_file, base_file, timeout):
                 "detail": [f"{name}: {type(exc).__name__}: {_clip(str(exc).replace(str(tmp), '<tmp>'))}",
                            f"innermost frame {inner}"]}
     if result.exit_code == 2:
-        messages = _command_messages(output)
+        messages = _command_messages(result.output)
         bad = [(m, message_problem(m, spec_file)) for m in messages]
-        bad = [(m, why) for m, why in bad if why and not m.startswith(("Invalid value", "Missing", "No such"))]
+        # a message about an option of the command (--grid, --vary, --valve) names the option instead of a key
+        bad = [(m.replace(str(tmp), "<tmp>"), why) for m, why in bad
+               if why and not (why == "no key path" and OPTION.search(m))]
         if not messages:
             return {"outcome": "bad_message", "signature": f"{name}: exit 2 without a message",
                     "detail": [_clip(output)]}
@@ -914,7 +919,7 @@ def run_command(case, tmp, spec_file, base_file, timeout):
             m, why = bad[0]
             return {"outcome": "bad_message", "signature": f"{name}: {why}: {_message_template(m, why)}",
                     "detail": [f"{why}: {_clip(m)}" for m, why in bad[:5]]}
-        return {"outcome": "refused", "detail": [_clip(m) for m in messages[:5]]}
+        return {"outcome": "refused", "detail": [_clip(m.replace(str(tmp), "<tmp>")) for m in messages[:5]]}
     if result.exit_code != 0:
         return {"outcome": "traceback", "signature": f"{name}: exit status {result.exit_code}",
                 "detail": [_clip(output)]}

@@ -96,9 +96,9 @@ def interpolation_error(x, y, per_step=8):
     The cubic spline through the rows (scipy's not-a-knot :class:`~scipy.interpolate.CubicSpline`) is the
     smoothest curve through them; where it goes above the highest row or below the lowest, no fit that follows
     the rows can be asked to stay inside.  At the foot of a valve-lift table, where the valve leaves its seat with
-    the velocity of the ramp, the lift has a kink: the spline through rows 2 crank deg apart swings about 8 % of
-    the lift the kink's slope makes in one step below the base circle (1.7 um for the valve of the built-in
-    example, rounded to 1 um: about six times the rounding error), and so does any smooth fit.
+    the velocity of the ramp, the lift has a kink: the spline through rows 2 crank deg apart swings below the base
+    circle by about 8 % of the lift the kink's slope makes in one step (1.7 um of tappet lift for the built-in
+    example's valve-lift table, 0.02 mm/cam deg at the tappet), and so does any smooth fit.
 
     Parameters
     ----------
