@@ -286,7 +286,8 @@ def results_schema():
     check_record = {"type": "object", "required": ["quantity", "value", "range", "source", "unit", "severity", "margin"],
                     "properties": {k: {"type": t} for k, t in (("quantity", "string"), ("range", "string"),
                                                                 ("source", "string"), ("unit", "string"),
-                                                                ("accepted", "boolean"), ("reason", "string"))}
+                                                                ("accepted", "boolean"), ("reason", "string"),
+                                                                ("unevaluated", "string"))}
                     | {"value": {"type": ["number", "null"]}, "margin": {"type": ["number", "null"]},
                        "severity": {"enum": list(SEVERITIES)}}}
     full_record = {**check_record, "required": [*check_record["required"], "low", "high", "pass", "accepted"],
