@@ -67,12 +67,12 @@ def _echo_checks(results):
     """The failed checks, ranked (failures, warnings, info; the farthest outside first), one line each; the accepted
     failures marked as such with their reasons; then a count that leaves the accepted checks out."""
     for w in results.warnings:
-        click.echo(f"{w.severity}: {w.quantity} = {w.shown_value:.6g} {w.unit}, {_BOUND[w.severity]} {w.range} "
+        click.echo(f"{w.severity}: {w.statement}, {_BOUND[w.severity]} {w.range} "
                    f"({w.source})".replace("  ", " "))
     accepted = results.accepted
     for w in accepted:
         if w.severity == "failure":
-            click.echo(f"accepted failure: {w.quantity} = {w.shown_value:.6g} {w.unit}, allowed {w.range} "
+            click.echo(f"accepted failure: {w.statement}, allowed {w.range} "
                        f"({w.source}); reason: {w.reason}".replace("  ", " "))
     counts = {s: sum(w.severity == s for w in results.warnings) for s in _BOUND}
     click.echo(f"checks: {counts['failure']} failure(s), {counts['warning']} warning(s), {counts['info']} info of "
@@ -214,7 +214,7 @@ def sweep(file, out, valves, force, lang):
         click.echo(f"{name}: {_headline(d)}")
         for w in v.warnings:
             if w.quantity.endswith(CHECK_QUANTITIES):
-                click.echo(f"warning: {w.quantity} = {w.shown_value:.6g} {w.unit}, recommended {w.range} ({w.source})")
+                click.echo(f"{w.severity}: {w.statement}, {_BOUND[w.severity]} {w.range} ({w.source})")
     click.echo(f"wrote {out}/ (dynamics.json, tables/, plots/)")
 
 
@@ -347,7 +347,8 @@ def optimize(file, out, valve, objective, vary, no_jump, cam_width, seating_velo
     for c in result.checks:
         state = "binds" if c in result.binding else "ok"
         note = f" [{c.note}]" if c.note else ""
-        click.echo(f"  {c.quantity}{note} = {c.shown_value:.6g} {c.unit} ({c.range}), margin {c.margin:.4f} {state}")
+        click.echo(f"  {c.quantity}{note} {'= ' if c.evaluated else ''}{c.value_text} ({c.range}), margin "
+                   f"{c.margin:.4f} {state}")
     click.echo(f"wrote {out}/ (optimum.toml, optimization.json, comparison.csv, history.csv, history.png, report.html)")
 
 

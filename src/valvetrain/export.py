@@ -59,13 +59,21 @@ def write_dxf(path, valve):
 
 def _save_dxf(build, path):
     """Build a DXF document (``build()``) and save it with ezdxf's fixed metadata (creation date, GUIDs) in place
-    from its creation on, so the same design writes the same bytes."""
+    from its creation on, so the same design writes the same bytes.
+
+    ezdxf registers the CLASS entries of the entity types in use when it saves, in the order of a set, which
+    follows the interpreter's string hashing (PYTHONHASHSEED): registered here first, the required classes in
+    ezdxf's order and the types in use sorted by name, they are written in that order whatever the seed."""
     import ezdxf
+    from ezdxf.sections.classes import REQ_R2004, REQUIRED_CLASSES
 
     fixed = ezdxf.options.write_fixed_meta_data_for_testing
     ezdxf.options.write_fixed_meta_data_for_testing = True
     try:
-        build().saveas(path)
+        doc = build()
+        for name in (*REQUIRED_CLASSES.get(doc.dxfversion, REQ_R2004), *sorted(doc.entitydb.dxf_types_in_use())):
+            doc.classes.add_class(name)
+        doc.saveas(path)
     finally:
         ezdxf.options.write_fixed_meta_data_for_testing = fixed
 

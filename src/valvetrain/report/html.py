@@ -19,7 +19,7 @@ from ..tables import lift_table_columns
 from ..bibliography import WORKS, cited_in
 from ..units import to_display
 from .i18n import SYMBOLS, TEXT
-from .names import has_name, label, link_names, quantity_text, translate, unit_text, value_text
+from .names import has_name, label, link_names, quantity_text, translate, unevaluated_text, unit_text, value_text
 
 TABLE_COLUMNS = ["cam_deg", "crank_deg", "segment", "tappet_lift_mm", "tappet_velocity_m_s",
                  "tappet_acceleration_m_s2", "valve_lift_mm", "curtain_area_mm2", "time_area_mm2_s", "rho_mm"]
@@ -76,6 +76,14 @@ def check_range(c, lang):
         low, high = (None if x is None else to_display(x, unit) for x in (low, high))
     text = describe_range(low, high, unit_text(unit, lang), bool(get("strict_low") or False))
     return TEXT[lang]["any"] if text == "any" else text
+
+
+def check_value(c, lang):
+    """The value of a :class:`~valvetrain.checks.Check` with its unit in ``lang``, or that it cannot be evaluated
+    and why (:func:`~valvetrain.report.names.unevaluated_text`)."""
+    if not c.evaluated:
+        return unevaluated_text(c, lang)
+    return f"{fmt(c.shown_value, lang)} {unit_text(c.unit, lang)}".rstrip()
 
 
 NOT_CHECKED = re.compile(r"(\w+): not checked, (.*) not given")
@@ -276,6 +284,7 @@ def render_report(results, plots, lang="en", folder=None):
     env.filters["unit"] = lambda unit: unit_text(unit, lang)
     env.filters["tr"] = lambda text: translate(text, lang)
     env.filters["range"] = lambda c: check_range(c, lang)
+    env.filters["value"] = lambda c: check_value(c, lang)
     env.filters["not_checked"] = lambda note: not_checked(note, lang)
     env.globals["cell"] = lambda key, value: cell(key, value, lang)
     env.globals["legend"] = symbol_legend(lang)
