@@ -90,6 +90,13 @@ def designs():
     return {name: run(spec) for name, spec in _specs()}
 
 
+def test_russian_report_without_its_figures_has_no_english_words(designs):
+    """A figure not drawn (``--figures``) is named in Russian, beside the command that draws it."""
+    parser = _Visible()
+    parser.feed(render_report(designs["built-in"], {}, "ru"))
+    assert "\u00ab" in "".join(parser.texts) and english_words(parser.texts) == []
+
+
 def test_russian_report_has_no_english_words(designs):
     for name, results in designs.items():
         parser = _Visible()
