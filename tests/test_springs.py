@@ -212,15 +212,16 @@ def _every_candidate(preloads, rates, lift, throat, omega, options, material, **
 @settings(max_examples=60, deadline=None)
 @given(preload=st.floats(30.0, 900.0), lift=st.floats(0.004, 0.016),
        throat=st.floats(0.025, 0.06), rpm=st.floats(800.0, 8000.0), resonance=st.sampled_from([0.0, 6.0, 10.0]),
-       grade=st.sampled_from(["60S2A", "VDSiCr", "VDCrV"]), longest=st.sampled_from([None, 4.0, 6.0]))
-def test_the_screen_keeps_every_passing_spring(preload, lift, throat, rpm, resonance, grade, longest):
+       grade=st.sampled_from(["60S2A", "VDSiCr", "VDCrV"]), longest=st.sampled_from([None, 4.0, 6.0]),
+       safety=st.sampled_from([0.0, 1.1, 1.3, 1.6]))
+def test_the_screen_keeps_every_passing_spring(preload, lift, throat, rpm, resonance, grade, longest, safety):
     """The bounds of the screen (:func:`valvetrain.springs._may_pass`) never drop a spring that passes: every
     candidate of the exhaustive search that passes every check lies inside the screen, for lines of every ratio,
-    grades with and without the resonance check and installed-length limits."""
+    grades with and without the resonance and fatigue checks and installed-length limits."""
     omega = np.pi * rpm / 60.0
     ratios = springs.deflection_ratios()
     preloads, rates = np.full(ratios.size, preload), (ratios - 1.0) * preload / lift
-    material = springs.SpringMaterial(grade, min_resonance_ratio=resonance)
+    material = springs.SpringMaterial(grade, min_resonance_ratio=resonance, min_safety=safety)
     options = springs.SpringOptions(materials=(material,))
     high = None if longest is None else longest * lift
     found, big_d, d = _every_candidate(preloads, rates, lift, throat, omega, options, material,

@@ -824,6 +824,10 @@ def _may_pass(preloads, rates, lift, big_d, d, material, camshaft_speed, max_ins
     * ``tau_max``: :math:`8 \\chi P_{max} D / (\\pi d^3) \\le \\tau_{max} \\le [\\tau]`, P_max of the line: the
       coils rounded down (:math:`i_p \\le i` where i >= 2) make the spring stiffer, its full-lift force at least
       the line's (6.1);
+    * ``fatigue_safety``: with :math:`\\tau_{min} = 8 \\chi P_{min} D / (\\pi d^3)` and that bound of
+      :math:`\\tau_{max}`, :math:`n = 2 \\tau_{-1} / ((1 + \\psi_\\tau) \\tau_{max} - (1 - \\psi_\\tau) \\tau_{min})
+      \\le 2 \\tau_{-1} \\pi d^3 / (8 \\chi D (C h + \\psi_\\tau (2 P_{min} + C h)))` must reach
+      :math:`n_{min}` (6.9)-(6.12), where :math:`\\psi_\\tau \\ge 0`;
     * ``resonance_ratio``: :math:`\\omega_{c1} = d \\sqrt{G / 2\\rho} / (D^2 i_p) \\ge R \\omega_{cam}`, so
       :math:`i - 1/2 \\le i_p \\le d \\sqrt{G / 2\\rho} / (D^2 R \\omega_{cam})` (6.13)-(6.14);
     * ``installed_length`` (no imposed length): :math:`l_0 \\ge d (1 + \\Delta/d)(i_p + 2) + d (i_0 - 1) + h \\le
@@ -835,9 +839,13 @@ def _may_pass(preloads, rates, lift, big_d, d, material, camshaft_speed, max_ins
     p = np.asarray(preloads, dtype=float)
     c = np.asarray(rates, dtype=float)
     one_coil = g * d**4 / (8.0 * big_d**3)
-    allowable = material.limits(d)[0]
-    force_cap = allowable * (1.0 + SCREEN_SLACK) * np.pi * d**3 / (8.0 * shape_factor_table(big_d / d) * big_d)
-    keep = (p + c * lift)[:, None] <= force_cap[None, :]
+    allowable, endurance, psi = material.limits(d)
+    stress_per_force = 8.0 * shape_factor_table(big_d / d) * big_d / (np.pi * d**3)
+    keep = (p + c * lift)[:, None] <= (allowable * (1.0 + SCREEN_SLACK) / stress_per_force)[None, :]
+    if material.min_safety > 0.0:
+        fatigue_cap = np.where(psi >= 0.0, 2.0 * endurance / (stress_per_force * material.min_safety
+                                                               * (1.0 - SCREEN_SLACK)), np.inf)
+        keep &= (c * lift)[:, None] + psi[None, :] * (2.0 * p + c * lift)[:, None] <= fatigue_cap[None, :]
     keep &= c[:, None] <= (one_coil / (2.0 * (1.0 - SCREEN_SLACK)))[None, :]
     coil_cap = np.full(d.shape, np.inf)
     if material.min_resonance_ratio > 0.0:
