@@ -95,7 +95,7 @@ def test_russian_report_without_its_figures_has_no_english_words(designs):
     parser = _Visible()
     parser.feed(render_report(designs["built-in"], {}, "ru"))
     notes = [text for text in parser.texts if "строится по запросу" in text]
-    assert len(notes) == 9 and english_words(notes) == []   # every figure of the example: 5 + timing + 3 crank
+    assert len(notes) == 10 and english_words(notes) == []   # the example's 6 of the valve, the timing, 3 of the crank
 
 
 def test_russian_report_has_no_english_words(designs):
