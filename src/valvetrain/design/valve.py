@@ -608,7 +608,7 @@ class ValveDesign:
                 f"{len(self.warnings)} of {len(self.checks)} checks fail)")
 
 
-def design_valve(name, valve, engine, gas, output, law=None, progress=None):
+def design_valve(name, valve, engine, gas, output, law=None, progress=None, cylinder=None):
     """All stages of one valve and its drive (masses, springs, strength).
 
     Parameters
@@ -620,6 +620,8 @@ def design_valve(name, valve, engine, gas, output, law=None, progress=None):
         Enter the design with a law of the caller's own (the cam section's ``build`` is skipped).
     progress : callable, optional
         ``progress(done, total)`` during the speed sweep of a ``[dynamics]`` section.
+    cylinder : valvetrain.design.hydraulic.CylinderPressure, optional
+        The engine's cycle, whose pressure on the valve head a ``[hydraulic]`` section's valve opens against.
 
     Returns
     -------
@@ -665,17 +667,35 @@ def design_valve(name, valve, engine, gas, output, law=None, progress=None):
         except ValueError as exc:
             raise SpecError([f"{at}.grinding.{exc}"]) from None
         found += grinding_found
-    hydraulic = None
-    if valve.hydraulic is not None:
-        try:
-            hydraulic, hydraulic_found = hydraulic_stage(valve.hydraulic, cam.law, engine, name)
-        except ValueError as exc:
-            raise SpecError([f"{at}.hydraulic.{exc}"]) from None
-        found += hydraulic_found
-    return ValveDesign(name, valve.kind, valve.count, cam, flow_result, profile, clearance, records, drive,
-                       [c.named(name) for c in found], dynamics, grinding, hydraulic)
+    design = ValveDesign(name, valve.kind, valve.count, cam, flow_result, profile, clearance, records, drive,
+                         [c.named(name) for c in found], dynamics, grinding)
+    return with_hydraulic(design, valve, engine, gas, cylinder)
+
+
+def with_hydraulic(design, valve, engine, gas, cylinder=None):
+    """The design with the hydraulic stage of the valve's ``[hydraulic]`` section (as it is without one).
+
+    Parameters
+    ----------
+    design : ValveDesign
+    valve, engine, gas : SI views of the valve, the engine and ``[gas]``.
+    cylinder : valvetrain.design.hydraulic.CylinderPressure, optional
+        The engine's cycle (no gas force on the valve head without it).
+
+    Raises
+    ------
+    SpecError
+        A drive whose simulation asks for too much work, naming the key.
+    """
+    if valve.hydraulic is None:
+        return design
+    try:
+        hydraulic, found = hydraulic_stage(valve, design.cam.law, engine, gas, design.name, design.cam.nose, cylinder)
+    except ValueError as exc:
+        raise SpecError([f"valves.{design.name}.hydraulic.{exc}"]) from None
+    return replace(design, checks=design.checks + [c.named(design.name) for c in found], hydraulic=hydraulic)
 
 
 __all__ = ["CamResult", "ClearanceResult", "FlowResult", "LiftTable", "ProfileResult", "StepRecord", "ValveDesign",
            "clearance_check", "clearance_stage", "design_valve", "flow_stage", "law_stage", "layout_check", "mass_checks",
-           "overlap_clearance_checks", "profile_stage", "step_records", "valve_checks", "wrap_crank"]
+           "overlap_clearance_checks", "profile_stage", "step_records", "valve_checks", "with_hydraulic", "wrap_crank"]
