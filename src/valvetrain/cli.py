@@ -155,7 +155,10 @@ def main():
 @click.option("--force", is_flag=True, help=FORCE_HELP)
 @click.option("--lang", type=click.Choice(["en", "ru"]), default="en", show_default=True,
               help="Language of the report and plots.")
-def run(file, out, force, lang):
+@click.option("--figures", type=click.Choice(["main", "all", "none"]), default="main", show_default=True,
+              help="Plots to draw: main (all but the time-area, curvature, crank-force, crank-pin and port "
+                   "time-area figures), all, or none; the report embeds those drawn.")
+def run(file, out, force, lang, figures):
     """Run the design of FILE (default: the built-in example) and write it to --out."""
     from .export import write_outputs
 
@@ -163,7 +166,7 @@ def run(file, out, force, lang):
     inputs = _check_out(out, [file] if file else [], [spec], force)
     results = _design(spec, _Progress())
     try:
-        write_outputs(results, out, lang, inputs, force)
+        write_outputs(results, out, lang, inputs, force, figures)
     except OutFolderError as err:
         _fail_out(err)
     click.echo(f"wrote {out}/ (results.json, report.html, tables/, plots/, contour/)")

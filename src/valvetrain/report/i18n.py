@@ -5,6 +5,7 @@ from ..laws.measured import FIT_REASONS, SMOOTHINGS
 TEXT = {
     "en": {
         "summary": "Summary", "summary_valves": "Valves", "timing_diagram": "Valve timing diagram",
+        "figure_on_request": "The figure “{}” is drawn on request:",
         "intake": "intake", "exhaust": "exhaust", "overlap": "overlap", "tdc": "TDC", "bdc": "BDC",
         "valve_lift_mm": "valve lift, mm",
         "s_law": "lift law", "s_lift": "valve lift, mm", "s_opens": "valve opens, crank deg from TDC",
@@ -152,6 +153,7 @@ TEXT = {
     },
     "ru": {
         "summary": "Сводка", "summary_valves": "Клапаны", "timing_diagram": "Диаграмма фаз газораспределения",
+        "figure_on_request": "Рисунок «{}» строится по запросу:",
         "intake": "впускной", "exhaust": "выпускной", "overlap": "перекрытие", "tdc": "ВМТ", "bdc": "НМТ",
         "valve_lift_mm": "подъём клапана, мм",
         "s_law": "закон подъёма", "s_lift": "подъём клапана, мм", "s_opens": "клапан открывается, ° ПКВ от ВМТ",
