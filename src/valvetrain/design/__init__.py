@@ -21,7 +21,7 @@ from .. import flow
 from ..checks import SEVERITIES, apply_acceptances, check, failed, ranked, valve_of
 from ..crank.pressure import PressureFileError
 from ..files import TableFileError
-from ..specification import SpecError, si
+from ..specification import Spec, SpecError, si, spec_document, validate
 from ..specification.models import Dynamics
 from ..units import MM
 from .crank import CrankResults, CrankSummary, crank_stage, valve_timing
@@ -138,6 +138,8 @@ def run(spec, laws=None, progress=None):
     Parameters
     ----------
     spec : valvetrain.specification.Spec
+        Validated again here: a specification changed with ``model_copy(update=...)``, which validates nothing, is
+        refused like a file with the same values (:meth:`Spec.replace` is the validated way to change one).
     laws : dict, optional
         ``valve name -> LiftLaw``: enter those valves' designs with a law of the caller's own.
     progress : callable, optional
@@ -150,9 +152,13 @@ def run(spec, laws=None, progress=None):
     Raises
     ------
     SpecError
-        Inputs that admit no design (a cam the law cannot make, a file that cannot be read, no spring that
-        fits), one message per problem of every valve.
+        A specification that does not validate; inputs that admit no design (a cam the law cannot make, a file
+        that cannot be read, no spring that fits), one message per problem of every valve.
     """
+    if not isinstance(spec, Spec):
+        raise SpecError([f"run: a valvetrain.specification.Spec is needed (from load_spec, parse_spec or "
+                         f"Spec.replace), not a {type(spec).__name__}"])
+    spec = validate(spec_document(spec))
     engine, gas, output = si(spec.engine), si(spec.gas), si(spec.output)
     valves, problems = {}, []
     for name, v in spec.valves.items():
