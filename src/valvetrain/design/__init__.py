@@ -21,10 +21,10 @@ from .. import flow
 from ..checks import SEVERITIES, apply_acceptances, check, failed, ranked, valve_of
 from ..crank.pressure import PressureFileError
 from ..files import TableFileError
-from ..specification import Spec, SpecError, si, spec_document, validate
+from ..specification import Spec, SpecError, crank_geometry, si, spec_document, validate
 from ..specification.models import Dynamics
 from ..units import MM
-from .crank import CrankResults, CrankSummary, crank_stage, valve_timing
+from .crank import LAMBDA_RANGE, CrankResults, CrankSummary, crank_stage, valve_timing
 from .drive import MassResult, SpringResult, StrengthResult
 from .dynamics import DynamicsResult
 from .grinding import GrindingResult
@@ -174,7 +174,7 @@ def run(spec, laws=None, progress=None):
             problems += err.problems
     if problems:
         raise SpecError(problems)
-    found = [c for v in valves.values() for c in v.checks] + overlap_clearance_checks(valves)
+    found = [c for v in valves.values() for c in v.checks] + overlap_clearance_checks(valves) + engine_checks(spec)
     if {v.kind for v in valves.values()} == {"intake", "exhaust"}:
         share = sum(v.count * v.flow.throat_area for v in valves.values())
         found.append(check("sum of throat areas / piston area", share / float(flow.circle_area(engine.bore)),
@@ -226,6 +226,57 @@ def engine_record(eng):
     return EngineRecord(eng.name, eng.bore, eng.stroke, eng.rated_speed, eng.cylinders, eng.strokes,
                         flow.mean_piston_speed(eng.stroke, eng.rated_speed * 30.0 / np.pi), swept,
                         swept * eng.cylinders, float(flow.circle_area(eng.bore)))
+
+
+UNIT_SLIP_FACTOR = 3.0
+"""How far beyond a typical range of engines a figure of the engine's keys is a failure: a factor of 3 either way.
+A unit slip (a stroke in cm, x10; inches, x25.4; a speed in rev/s, x60) takes a typical value far outside, a real
+engine stays inside."""
+
+MEAN_PISTON_SPEED_RANGE = (8.0, 15.0)
+"""Typical mean piston speed at the rated speed [m/s] (Heywood (1988), section 2.2)."""
+
+STROKE_BORE_RANGE = (1.0 / 1.2, 2.0)
+"""Typical stroke / bore ratio: bore / stroke 0.8-1.2 for small and medium engines, down to about 0.5 for large
+slow-speed diesels (Heywood (1988), section 2.2)."""
+
+
+def engine_checks(spec):
+    """Plausibility of the engine's keys: the stroke / bore ratio, the mean piston speed and the crank-rod ratio
+    lambda, failures a factor of :data:`UNIT_SLIP_FACTOR` beyond their typical ranges (a unit slip, not an engine).
+
+    Parameters
+    ----------
+    spec : valvetrain.specification.Spec
+
+    Returns
+    -------
+    list of Check
+        Severity failure, the quantities naming the keys they come from.
+
+    Notes
+    -----
+    S/D = stroke / bore; c_p = S n / 30 [m/s] with S in m and n in rpm; lambda = R / L = S / (2 L).
+
+    References
+    ----------
+    Heywood (1988), section 2.2 (mean piston speed 8-15 m/s; bore / stroke 0.8-1.2, about 0.5 for large slow-speed
+    diesels); Power units manual (n.d.), eq. (1.1) (lambda = 0.24-0.31).
+    """
+    bore, stroke, rod, speed = crank_geometry(spec)
+    k = UNIT_SLIP_FACTOR
+    found = [check("engine: stroke / bore (stroke_mm / bore_mm)", stroke / bore, STROKE_BORE_RANGE[0] / k,
+                   STROKE_BORE_RANGE[1] * k, source=f"a factor of {k:g} beyond Heywood (1988), section 2.2",
+                   severity="failure"),
+             check("engine: mean piston speed (stroke_mm x rated_speed_rpm / 30000)",
+                   flow.mean_piston_speed(stroke * MM, speed), MEAN_PISTON_SPEED_RANGE[0] / k,
+                   MEAN_PISTON_SPEED_RANGE[1] * k, unit="m/s",
+                   source=f"a factor of {k:g} beyond Heywood (1988), section 2.2", severity="failure")]
+    if rod is not None:
+        found.append(check("engine: lambda = R / L (stroke_mm / 2 / rod_length_mm)", stroke / 2.0 / rod, LAMBDA_RANGE[0] / k,
+                           min(LAMBDA_RANGE[1] * k, 1.0), source=f"a factor of {k:g} beyond Power units manual (n.d.), "
+                           "eq. (1.1)", severity="failure"))
+    return found
 
 
 def sweep_designs(spec, names=None, progress=None):
