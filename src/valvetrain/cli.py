@@ -119,9 +119,12 @@ class _Main(click.Group):
     made of the KeyboardInterrupt is the interruption too."""
 
     def make_context(self, info_name, args, parent=None, **extra):
-        """Parse the command line; Ctrl-C while parsing is the interruption too (click would say 'Aborted!')."""
-        Interruption.install()
+        """Parse the command line; Ctrl-C before or while parsing is the interruption too (click would say
+        'Aborted!')."""
+        Interruption.install(Interruption.interrupt)
         try:
+            if Interruption.seen:
+                raise KeyboardInterrupt
             return super().make_context(info_name, args, parent, **extra)
         except BaseException:
             if not Interruption.seen:
@@ -129,7 +132,6 @@ class _Main(click.Group):
             interrupted_while_starting()
 
     def invoke(self, ctx):
-        Interruption.install()
         try:
             return super().invoke(ctx)
         except Exception:
