@@ -209,8 +209,12 @@ def test_model_copy_bypasses_validation_but_run_refuses_it():
     with pytest.raises(vt.SpecError) as err:
         vt.run(bad)
     assert err.value.problems == ["engine.bore_mm = -80.0: allowed [5, 2000] mm"]
-    with pytest.raises(vt.SpecError, match="a valvetrain.specification.Spec is needed"):
-        vt.run({"engine": {}})
+    with pytest.raises(vt.SpecError, match="a valvetrain.specification.Spec .* or a dict of its tables is needed, "
+                                           "not a str"):
+        vt.run("my-engine.toml")
+    with pytest.raises(vt.SpecError, match="engine.bore_mm: required key is missing"):
+        vt.run({"engine": {"stroke_mm": 80.0, "rated_speed_rpm": 6000.0, "cylinders": 4, "strokes": 4},
+                "crank": {}})
 
 
 def test_replace_takes_the_dotted_keys_of_a_study_grid():

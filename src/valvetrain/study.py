@@ -333,7 +333,9 @@ def evaluate(documents, total, workers=None, scheduler=None, progress=None, desc
 
 
 def _stopped(records, lost, describe, why):
-    shown = "; ".join(f"point {i + 1} ({describe(i)})" for i in lost)
+    """The :class:`StudyStopped` of a study whose points ``lost`` (indices) were in progress when ``why`` happened."""
+    shown = "; ".join(f"point {i + 1} ({describe(i)})" for i in lost[:3]) + (
+        f" and {len(lost) - 3} more" if len(lost) > 3 else "")
     done = sum(r is not None for r in records)
     return StudyStopped(f"{why} while designing {'one of ' if len(lost) > 1 else ''}{shown}; the study stopped "
                         f"with {done} of {len(records)} points designed", records, lost)
@@ -350,13 +352,11 @@ def _in_processes(numbered, workers, records, tick, describe):
             if not running:
                 return
             finished, _ = wait(running, return_when=FIRST_COMPLETED)
-            for future in finished:
-                try:
-                    records[running[future]] = future.result()
-                except BrokenProcessPool:
+            for future in sorted(finished, key=lambda f: isinstance(f.exception(), BrokenProcessPool)):
+                if isinstance(future.exception(), BrokenProcessPool):
                     raise _stopped(records, sorted(running.values()), describe,
-                                   "a worker process died (killed, or out of memory)") from None
-                del running[future]
+                                   "a worker process died (killed, or out of memory)")
+                records[running.pop(future)] = future.result()
                 done += 1
             tick(done, len(records))
 

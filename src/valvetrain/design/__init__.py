@@ -137,9 +137,10 @@ def run(spec, laws=None, progress=None):
 
     Parameters
     ----------
-    spec : valvetrain.specification.Spec
+    spec : valvetrain.specification.Spec or dict
         Validated again here: a specification changed with ``model_copy(update=...)``, which validates nothing, is
-        refused like a file with the same values (:meth:`Spec.replace` is the validated way to change one).
+        refused like a file with the same values (:meth:`Spec.replace` is the validated way to change one); a dict
+        is the tables of a specification, as :func:`tomllib.loads` gives them.
     laws : dict, optional
         ``valve name -> LiftLaw``: enter those valves' designs with a law of the caller's own.
     progress : callable, optional
@@ -155,10 +156,10 @@ def run(spec, laws=None, progress=None):
         A specification that does not validate; inputs that admit no design (a cam the law cannot make, a file
         that cannot be read, no spring that fits), one message per problem of every valve.
     """
-    if not isinstance(spec, Spec):
-        raise SpecError([f"run: a valvetrain.specification.Spec is needed (from load_spec, parse_spec or "
-                         f"Spec.replace), not a {type(spec).__name__}"])
-    spec = validate(spec_document(spec))
+    if not isinstance(spec, (Spec, dict)):
+        raise SpecError([f"run: a valvetrain.specification.Spec (from load_spec, parse_spec or Spec.replace) or a "
+                         f"dict of its tables is needed, not a {type(spec).__name__}"])
+    spec = validate(spec if isinstance(spec, dict) else spec_document(spec))
     engine, gas, output = si(spec.engine), si(spec.gas), si(spec.output)
     valves, problems = {}, []
     for name, v in spec.valves.items():
