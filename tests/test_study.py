@@ -61,8 +61,11 @@ def test_local_processes_give_the_same_table(spec_file, serial, tmp_path):
     assert study(spec_file, tmp_path / "out", "--workers", "2") == serial
 
 
-def test_dask_cluster_gives_the_same_table(spec_file, serial, tmp_path):
+def test_dask_cluster_gives_the_same_table(spec_file, serial, tmp_path, monkeypatch):
+    """On a two-worker cluster in tasks of 3 points (one task per worker thread: 6 points / 2 threads), the table of
+    the serial study."""
     distributed = pytest.importorskip("distributed")
+    monkeypatch.setattr(study_module, "DASK_TASKS_PER_THREAD", 1)
     with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster:
         assert study(spec_file, tmp_path / "out", "--scheduler", cluster.scheduler_address) == serial
 
@@ -193,3 +196,9 @@ def test_a_huge_grid_is_refused_before_any_point_is_built(tmp_path, monkeypatch)
     result = CliRunner().invoke(main, ["study", str(f), "--grid", "valves.intake.cam.shape_factor=0.55,0.6,0.65",
                                        "--max-points", "3", "--out", str(tmp_path / "o")])
     assert result.exit_code == 0, result.output
+
+
+def test_dask_tasks_hold_several_points():
+    """Points per task = ceil(points / (8 tasks x threads)), between 1 and 32: 1000 points on 2 threads -> 63, capped
+    at 32; 300 points -> ceil(300 / 16) = 19; 5 points -> 1."""
+    assert [study_module.dask_chunk(n, 2) for n in (1000, 300, 5)] == [32, 19, 1]

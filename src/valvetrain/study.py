@@ -18,9 +18,12 @@ and only the command line imports it.
 
 from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 from concurrent.futures.process import BrokenProcessPool
+import ctypes
+import functools
 import itertools
 import math
 import multiprocessing
+import os
 from pathlib import Path
 import re
 import tomllib
@@ -272,8 +275,34 @@ DASK_MAX_CHUNK = 32
 """Most points in one Dask task."""
 
 
+MMAP_THRESHOLD_BYTES = 32 * 2**20
+"""glibc's mmap threshold set in a Dask worker (its largest value on 64-bit systems, 32 MiB): see :func:`heap_arrays`."""
+
+
+@functools.cache
+def heap_arrays():
+    """Let glibc serve arrays below :data:`MMAP_THRESHOLD_BYTES` from the heap again, in a process whose environment
+    sets ``MALLOC_TRIM_THRESHOLD_`` (a Dask nanny starts its workers so); once per process.
+
+    Setting that variable also stops glibc from raising its mmap threshold as arrays are freed (its "dynamic"
+    threshold), so every array above 128 KiB is mapped and unmapped afresh, its pages zeroed on first touch: a
+    design then takes about 1.5 times the CPU time of a plain process (measured: 57 against 38 ms for the built-in
+    example).  ``mallopt(M_MMAP_THRESHOLD, ...)`` restores the threshold; the trimming the variable asks for stays.
+    Elsewhere (no such variable, no glibc) nothing is done."""
+    if "MALLOC_TRIM_THRESHOLD_" not in os.environ:
+        return
+    try:
+        libc = ctypes.CDLL("libc.so.6")
+    except OSError:
+        return
+    m_mmap_threshold = -3   # glibc's malloc.h
+    libc.mallopt(m_mmap_threshold, MMAP_THRESHOLD_BYTES)
+
+
 def evaluate_points(documents):
-    """:func:`evaluate_point` of each document of a list (one Dask task): the list of records."""
+    """:func:`evaluate_point` of each document of a list (one Dask task, :func:`heap_arrays` first): the list of
+    records."""
+    heap_arrays()
     return [evaluate_point(d) for d in documents]
 
 
