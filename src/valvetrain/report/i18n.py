@@ -376,7 +376,17 @@ TEXT["en"].update({
                        "(6.3)-(6.8), fatigue safety n (6.9)-(6.12), natural frequency (6.13)-(6.14).",
     "strength_method": "cam load P<sub>T</sub> = i<sub>k</sub>(P<sub>spr</sub> + P<sub>gas</sub>) + m<sub>T</sub>a<sub>T</sub> "
                        "along the profile (7.1)-(7.2); camshaft (7.3), contact (7.4)-(7.5) and (2.5), tappet (7.6)-(7.7), "
-                       "pushrod (7.8)-(7.12), rocker (7.13), rocker shaft (7.15)-(7.18).",
+                       "pushrod (7.8)-(7.12), rocker (7.13), rocker shaft (7.15)-(7.18); at every engine speed from the "
+                       "lowest to the over-speed (the simulated contact force where the valve has a dynamics section), "
+                       "each check at its worst, its speed and cam angle in its note.",
+    "strength_speed_title": "cam load and contact stress against the engine speed",
+    "cam_force_axis": "max cam load P_T, N", "contact_stress_axis": "max contact stress σ, MPa",
+    "engine_speed": "engine speed n, rpm", "load_quasi_static": "quasi-static", "load_dynamic": "simulated",
+    "rated_speed": "rated speed", "jerk_impulse": "jerk impulse at a step of the acceleration Δa_T, m/s²",
+    "acceleration_steps": "Acceleration steps (the jerk is an impulse there)",
+    "step_angle": "camshaft angle from the nose, cam deg", "step_before": "a_T before, m/s²",
+    "step_after": "a_T after, m/s²", "step_size": "step Δa_T, m/s²",
+    "step_on_ramp": "on a ramp (the valve at rest)",
     "crank_method": "kinematics (1.1)-(1.11) or the exact slider-crank; forces (2.3)-(2.19) with the exact rod angle β; "
                     "T = p<sub>T</sub>F<sub>p</sub> (2.20), M = TR (2.21); total torque for the layout and firing order; "
                     "mean torque against the indicated work W<sub>i</sub>/(πτ).",
@@ -420,7 +430,18 @@ TEXT["ru"].update({
     "strength_method": "нагрузка на кулачок P<sub>T</sub> = i<sub>k</sub>(P<sub>пр</sub> + P<sub>г</sub>) + "
                        "m<sub>т</sub>a<sub>T</sub> по профилю (7.1)-(7.2); распределительный вал (7.3), контактные "
                        "напряжения (7.4)-(7.5) и (2.5), толкатель (7.6)-(7.7), штанга (7.8)-(7.12), коромысло (7.13), "
-                       "ось коромысла (7.15)-(7.18).",
+                       "ось коромысла (7.15)-(7.18); на всех частотах вращения от наименьшей до превышающей номинальную "
+                       "(с силой динамического расчёта, если он задан для клапана), каждая проверка в худшей точке, её "
+                       "частота и угол ПРВ в примечании.",
+    "strength_speed_title": "нагрузка на кулачок и контактное напряжение по частотам вращения",
+    "cam_force_axis": "P_T max на кулачке, Н", "contact_stress_axis": "σ max контактное, МПа",
+    "engine_speed": "частота вращения двигателя n, об/мин", "load_quasi_static": "квазистатическая",
+    "load_dynamic": "динамический расчёт", "rated_speed": "номинальная частота",
+    "jerk_impulse": "импульс рывка при скачке ускорения Δa_T, м/с²",
+    "acceleration_steps": "Скачки ускорения (рывок в этих точках — импульс)",
+    "step_angle": "угол ПРВ от вершины кулачка, град", "step_before": "a_T до скачка, м/с²",
+    "step_after": "a_T после скачка, м/с²", "step_size": "скачок Δa_T, м/с²",
+    "step_on_ramp": "на участке сбега (клапан неподвижен)",
     "crank_method": "кинематика (1.1)-(1.11) или точные формулы кривошипно-шатунного механизма; силы (2.3)-(2.19) с "
                     "точным углом отклонения шатуна β; T = p<sub>T</sub>F<sub>p</sub> (2.20), M = TR (2.21); суммарный "
                     "крутящий момент по компоновке и порядку работы; средний момент сверяется с индикаторной работой "

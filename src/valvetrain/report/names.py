@@ -46,6 +46,9 @@ NAMES = {
     # engine
     "name": ("name", "наименование"), "bore": ("bore D", "диаметр цилиндра D"),
     "stroke": ("piston stroke S", "ход поршня S"), "rated_speed": ("rated speed n", "номинальная частота вращения n"),
+    "over_speed_ratio": ("over-speed / rated speed", "отношение предельной частоты вращения к номинальной"),
+    "idle_speed": ("idle speed (lowest speed of the strength checks)",
+                   "частота холостого хода (наименьшая в расчёте на прочность)"),
     "cylinders": ("number of cylinders", "число цилиндров"), "strokes": ("strokes of the cycle", "тактность"),
     "type": ("engine type", "тип двигателя"), "chamber": ("combustion chamber", "камера сгорания"),
     "layout": ("layout", "компоновка"), "bank_angle": ("bank angle", "угол развала"),
@@ -259,6 +262,12 @@ NAMES = {
     "dynamics.link_names": ("links of the drive", "звенья привода"),
     "dynamics.speeds": ("speeds of the sweep", "число частот вращения в расчёте"),
     "cam_force_max_cam": ("cam angle of the max cam load", "угол ПРВ наибольшей нагрузки на кулачок"),
+    "strength.speed_range": ("engine speeds of the strength checks", "частоты вращения двигателя в расчёте на прочность"),
+    "lowest_speed_source": ("where the lowest speed comes from", "откуда взята наименьшая частота вращения"),
+    "cam_force_max_speed": ("engine speed of the max cam load", "частота вращения наибольшей нагрузки на кулачок"),
+    "cam_contact_stress_speed": ("engine speed of the max contact stress",
+                                 "частота вращения наибольшего контактного напряжения"),
+    "roller_side_force_speed": ("engine speed of the largest side force", "частота вращения наибольшей боковой силы"),
     "valve_force_max": ("max force at the valve", "наибольшая сила на клапане"),
     "gas_force_at_opening": ("gas force at the valve's opening", "сила давления газов в момент открытия"),
     "cam_contact_stress_cam": ("cam angle of the max contact stress", "угол ПРВ наибольшего контактного напряжения"),
@@ -632,16 +641,28 @@ def link_names(names, lang):
 
 def translate(text, lang):
     """A text made with numbers in ``lang`` by its skeleton (:data:`SKELETONS`); as it is without one.  A text that
-    starts with drive links (``"pushrod: ..."``, :data:`LINKS`) has them translated and the rest by its skeleton."""
+    starts with drive links (``"pushrod: ..."``, :data:`LINKS`) has them translated and the rest by its skeleton; a
+    text of parts joined by ``"; "`` without a skeleton of its own, part by part (the longest head with one first)."""
     if lang == "en" or not text:
         return text
     head, sep, rest = text.partition(": ")
     if sep and all(name in LINKS for name in head.split(", ")):
         return f"{link_names(head.split(', '), lang)}: {translate(rest, lang)}"
-    numbers = NUMBER.findall(text)
-    skeleton = NUMBER.sub("{}", text)
-    ru = SKELETONS.get(skeleton)
-    return text if ru is None else ru.format(*numbers)
+    found = _by_skeleton(text)
+    if found is not None:
+        return found
+    parts = text.split("; ")
+    for k in range(len(parts) - 1, 0, -1):
+        head = _by_skeleton("; ".join(parts[:k]))
+        if head is not None:
+            return f"{head}; {translate('; '.join(parts[k:]), lang)}"
+    return text
+
+
+def _by_skeleton(text):
+    """The Russian of a text made with numbers by its skeleton (:data:`SKELETONS`), or None."""
+    ru = SKELETONS.get(NUMBER.sub("{}", text))
+    return None if ru is None else ru.format(*NUMBER.findall(text))
 
 
 def quantity_text(quantity, lang, prefixes=()):
@@ -763,6 +784,13 @@ SKELETONS.update({
     "min_preload_N of the specification": "наименьшая сила затяжки, заданная в исходных данных",
     "engine speed of the simulation {} rpm: the rated speed": "частота вращения расчёта {} мин⁻¹: номинальная",
     "speed range {}{} rpm: {}% to {}% of the rated speed": "диапазон частот {}{} мин⁻¹: от {}% до {}% номинальной",
+    "at {} rpm, {} cam deg from the nose (quasi-static force)":
+        "при {} мин⁻¹, {} град ПРВ от вершины кулачка (квазистатическая сила)",
+    "at {} rpm, {} cam deg from the nose (dynamic force)":
+        "при {} мин⁻¹, {} град ПРВ от вершины кулачка (сила динамического расчёта)",
+    "engine.idle_speed_rpm": "частота холостого хода из исходных данных",
+    "the low end of the dynamics speed range": "нижняя граница диапазона частот динамического расчёта",
+    "{} x the rated speed (the default idle)": "{} номинальной частоты (холостой ход по умолчанию)",
     "the liquid column separates (cavitation) where the pressure falls to the vapour pressure":
         "столб жидкости разрывается (кавитация), где давление падает до давления насыщенных паров",
 })

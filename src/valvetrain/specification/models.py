@@ -33,6 +33,7 @@ class Engine(_Model):
                      "hemispherical"] = "overhead"
     rod_length_mm: Optional[Length(5.0, 10000.0, low_open=False)] = None
     over_speed_ratio: _bounded(1.0, 2.0, low_open=False) = 1.1
+    idle_speed_rpm: Optional[_bounded(10.0, 30000.0, "rpm", low_open=False)] = None
     layout: Literal["inline", "v"] = "inline"
     bank_angle_deg: _bounded(1.0, 180.0, "deg", low_open=False) = 90.0
     firing_order: Optional[list[int]] = None
@@ -46,6 +47,9 @@ class Engine(_Model):
         if self.rod_length_mm is not None and self.rod_length_mm <= self.stroke_mm / 2.0:
             problems.append(f"engine.rod_length_mm = {self.rod_length_mm:g} must exceed the crank radius "
                             f"stroke_mm/2 = {self.stroke_mm / 2.0:g} mm")
+        if self.idle_speed_rpm is not None and self.idle_speed_rpm >= self.rated_speed_rpm:
+            problems.append(f"engine.idle_speed_rpm = {self.idle_speed_rpm:g}: allowed below rated_speed_rpm = "
+                            f"{self.rated_speed_rpm:g}")
         n = self.cylinders
         if self.firing_order is not None and sorted(self.firing_order) != list(range(1, n + 1)):
             problems.append(f"engine.firing_order = {shown(self.firing_order)}: must list each cylinder 1...{n} once")
