@@ -414,14 +414,19 @@ def profile_stage(cam, valve, output):
         r = law.profile(t, heel, follower, roller)[1]
         return r if follower == "flat" else np.where(r + roller > 0.0, r, np.inf)
 
-    # the base circle (radius = heel radius for both followers) closes the profile
-    x_min, rho_min = min(extremum(convex, bp, "min"), (np.pi, heel), key=lambda p: p[1])
+    # the base circle (radius = heel radius for both followers) closes the profile; the smallest radius is refined
+    # on the contour around the least sample of each piece and around the table's least, so that a dip between the
+    # table's points (an undercut) is found
+    i = int(np.argmin(rho if follower == "flat" else np.where(rho + roller > 0.0, rho, np.inf)))
+    near = theta[[max(i - 1, 0), min(i + 1, theta.size - 1)]]
+    x_min, rho_min = min(extremum(convex, bp, "min"), extremum(convex, near, "min"), (np.pi, heel),
+                         key=lambda p: p[1])
     x_max, rho_max = max(extremum(lambda t: np.where(np.isinf(convex(t)), -np.inf, convex(t)), bp, "max"),
                          (np.pi, heel), key=lambda p: p[1])
     straight = bool(np.any(np.isposinf(rho)))   # straight flanks (tangent cam): the largest radius is infinite
     if follower == "flat":
         contact = FlatContact(cam.max_velocity / omega)
-        undercut = rho_min <= 0.0
+        undercut = geometry.undercut_flat(rho_min)
     else:
         beta_max = extremum(lambda t: np.abs(law.profile(t, heel, "roller", roller)[2]), bp, "max")[1]
         # the concave radius closest to zero is the most negative curvature (the radius itself passes through
@@ -429,7 +434,7 @@ def profile_stage(cam, valve, output):
         curvature = extremum(lambda t: 1.0 / law.profile(t, heel, "roller", roller)[1], bp, "min")[1]
         concave = 1.0 / curvature if curvature < 0.0 else 0.0
         contact = RollerContact(roller, beta_max, concave if concave + roller < 0.0 else None)
-        undercut = bool(np.any(geometry.undercut_roller(rho + roller, roller)))
+        undercut = geometry.undercut_roller(rho_min + roller, roller)
     return ProfileResult(table, contour, ctheta, rho_min, None if straight else rho_max, x_min,
                          None if straight else x_max, straight, contact, bool(undercut))
 
@@ -604,7 +609,7 @@ class ValveDesign:
                 f"{len(self.warnings)} of {len(self.checks)} checks fail)")
 
 
-def design_valve(name, valve, engine, gas, output, law=None, progress=None):
+def design_valve(name, valve, engine, gas, output, law=None, progress=None, cylinder=None):
     """All stages of one valve and its drive (masses, springs, strength).
 
     Parameters
@@ -616,6 +621,8 @@ def design_valve(name, valve, engine, gas, output, law=None, progress=None):
         Enter the design with a law of the caller's own (the cam section's ``build`` is skipped).
     progress : callable, optional
         ``progress(done, total)`` during the speed sweep of a ``[dynamics]`` section.
+    cylinder : valvetrain.design.hydraulic.CylinderPressure, optional
+        The engine's cycle, whose pressure on the valve head a ``[hydraulic]`` section's valve opens against.
 
     Returns
     -------
@@ -661,17 +668,35 @@ def design_valve(name, valve, engine, gas, output, law=None, progress=None):
         except ValueError as exc:
             raise SpecError([f"{at}.grinding.{exc}"]) from None
         found += grinding_found
-    hydraulic = None
-    if valve.hydraulic is not None:
-        try:
-            hydraulic, hydraulic_found = hydraulic_stage(valve.hydraulic, cam.law, engine, name)
-        except ValueError as exc:
-            raise SpecError([f"{at}.hydraulic.{exc}"]) from None
-        found += hydraulic_found
-    return ValveDesign(name, valve.kind, valve.count, cam, flow_result, profile, clearance, records, drive,
-                       [c.named(name) for c in found], dynamics, grinding, hydraulic)
+    design = ValveDesign(name, valve.kind, valve.count, cam, flow_result, profile, clearance, records, drive,
+                         [c.named(name) for c in found], dynamics, grinding)
+    return with_hydraulic(design, valve, engine, gas, cylinder)
+
+
+def with_hydraulic(design, valve, engine, gas, cylinder=None):
+    """The design with the hydraulic stage of the valve's ``[hydraulic]`` section (as it is without one).
+
+    Parameters
+    ----------
+    design : ValveDesign
+    valve, engine, gas : SI views of the valve, the engine and ``[gas]``.
+    cylinder : valvetrain.design.hydraulic.CylinderPressure, optional
+        The engine's cycle (no gas force on the valve head without it).
+
+    Raises
+    ------
+    SpecError
+        A drive whose simulation asks for too much work, naming the key.
+    """
+    if valve.hydraulic is None:
+        return design
+    try:
+        hydraulic, found = hydraulic_stage(valve, design.cam.law, engine, gas, design.name, design.cam.nose, cylinder)
+    except ValueError as exc:
+        raise SpecError([f"valves.{design.name}.hydraulic.{exc}"]) from None
+    return replace(design, checks=design.checks + [c.named(design.name) for c in found], hydraulic=hydraulic)
 
 
 __all__ = ["CamResult", "ClearanceResult", "FlowResult", "LiftTable", "ProfileResult", "StepRecord", "ValveDesign",
            "clearance_check", "clearance_stage", "design_valve", "flow_stage", "law_stage", "layout_check", "mass_checks",
-           "overlap_clearance_checks", "profile_stage", "step_records", "valve_checks", "wrap_crank"]
+           "overlap_clearance_checks", "profile_stage", "step_records", "valve_checks", "with_hydraulic", "wrap_crank"]

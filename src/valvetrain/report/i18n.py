@@ -478,7 +478,9 @@ TEXT["en"].update({
                  "method of characteristics with a constant Darcy friction factor (time step L / (N a), the wave speed "
                  "a corrected for the elasticity of the wall); the pump and actuator chambers are compressible "
                  "volumes (V / K) dp/dt = inflow − outflow with leakage, fill and relief valves; the valve is one mass "
-                 "on its spring, its damping and a rigid seat. Pressures are absolute; a pressure that falls to the "
+                 "on its spring, its damping, a rigid seat and a stiff stop at the end of its stroke (a valve that "
+                 "reaches it, or that is not back on its seat when the plunger lifts again, fails). Pressures are "
+                 "absolute; a pressure that falls to the "
                  "vapour pressure is held there and flagged as cavitation (the cavity volume is not tracked). The "
                  "rigid drive lifts the valve by the plunger lift times A_p / A_a; the delays are taken at 5 % of its "
                  "largest lift",
@@ -495,7 +497,25 @@ TEXT["en"].update({
         "min_pressure_MPa": "smallest pressure, MPa", "vapour_pressure_MPa": "vapour pressure, MPa", "cavitation": "cavitation (pressure at the vapour pressure)",
         "seating_velocity_m_s": "seating velocity (negative: closing), m/s",
         "bounce_mm": "largest lift after the first seating (bounce), mm", "speeds": "speeds swept",
+        "stop_mm": "valve stop (end of its stroke), mm", "stop_reached": "the valve reaches its stop (a failure)",
+        "residual_lift_mm": "lift left when the plunger lifts again (above 0: not closed, a failure), mm",
+        "gas_force.head_diameter_mm": "diameter the cylinder pressure acts on, mm",
+        "gas_force.port_pressure_MPa": "pressure behind the valve head (port), MPa",
+        "gas_force.lift_off_crank_deg": "valve leaves its seat, crank deg from the gas-exchange TDC (0...720)",
+        "gas_force.cylinder_pressure_at_lift_off_MPa": "cylinder pressure there, MPa",
+        "gas_force.gas_force_at_lift_off_N": "gas force on the valve head there, N",
+        "gas_force.lift_off_pressure_MPa": "actuator pressure that lifts the valve there, MPa",
+        "gas_force.opening_delay_cam_deg": "opening delay the gas force adds, cam deg",
+        "gas_force.lift_loss_mm": "lift loss the gas force adds, mm",
+        "gas_force.pressure_rise_MPa": "rise of the largest pressure by the gas force, MPa",
     },
+    "hy_gas": "Gas force on the valve head",
+    "hy_gas_method": "The valve opens against the cylinder pressure on its head: the force (p_cyl − p_port) π d² / 4 "
+                     "acts towards the seat at the crank angle of the cam nose plus twice the camshaft angle; the "
+                     "cycle is the engine's as given (its blowdown does not wait for the valve), the effects are "
+                     "against the same drive without the force",
+    "hy_gas_source": "Cylinder pressure",
+    "hy_stop": "stop (end of the stroke)", "hy_lift_off": "valve leaves its seat (gas force {force:.3g} kN)",
     "hy_sweep": "Speed sweep (one revolution per speed)",
     "hy_sweep_title": "hydraulic drive against engine speed", "hy_sweep_table": "Table against engine speed",
     "hy_max_pressure": "largest pressure, MPa", "hy_lift_loss": "lift loss, mm", "hy_delay": "delay, cam deg",
@@ -509,7 +529,9 @@ TEXT["ru"].update({
                  "Трубопровод рассчитан методом характеристик с постоянным коэффициентом трения Дарси (шаг по "
                  "времени L / (N a), скорость волны a с поправкой на упругость стенки); полости насоса и привода "
                  "сжимаемы: (V / K) dp/dt = приток − отток, с утечками, подпиточным и предохранительным клапанами; "
-                 "клапан — одна масса на пружине, с демпфированием и жёстким седлом. Давления абсолютные; давление, "
+                 "клапан — одна масса на пружине, с демпфированием, жёстким седлом и жёстким упором в конце хода "
+                 "(клапан, дошедший до упора или не вернувшийся на седло к следующему подъёму плунжера, — отказ). "
+                 "Давления абсолютные; давление, "
                  "упавшее до давления насыщенных паров, удерживается на нём и отмечается как кавитация (объём "
                  "каверны не отслеживается). Жёсткий привод поднимает клапан на подъём плунжера, умноженный на "
                  "A_p / A_a; запаздывания взяты на уровне 5 % его наибольшего подъёма",
@@ -528,7 +550,25 @@ TEXT["ru"].update({
         "cavitation": "кавитация (давление насыщенных паров)",
         "seating_velocity_m_s": "скорость посадки клапана (минус: при закрытии), м/с",
         "bounce_mm": "наибольший подъём после первой посадки (отскок), мм", "speeds": "число частот вращения",
+        "stop_mm": "упор клапана (конец его хода), мм", "stop_reached": "клапан доходит до упора (отказ)",
+        "residual_lift_mm": "подъём к началу следующего подъёма плунжера (больше 0: клапан не закрылся, отказ), мм",
+        "gas_force.head_diameter_mm": "диаметр, на который действует давление в цилиндре, мм",
+        "gas_force.port_pressure_MPa": "давление за тарелкой клапана (в канале), МПа",
+        "gas_force.lift_off_crank_deg": "клапан отходит от седла, град ПКВ от ВМТ газообмена (0...720)",
+        "gas_force.cylinder_pressure_at_lift_off_MPa": "давление в цилиндре в этот момент, МПа",
+        "gas_force.gas_force_at_lift_off_N": "сила давления газов на тарелку клапана в этот момент, Н",
+        "gas_force.lift_off_pressure_MPa": "давление в приводе, поднимающее клапан в этот момент, МПа",
+        "gas_force.opening_delay_cam_deg": "добавочное запаздывание открытия от силы газов, град ПРВ",
+        "gas_force.lift_loss_mm": "добавочная потеря подъёма от силы газов, мм",
+        "gas_force.pressure_rise_MPa": "рост наибольшего давления от силы газов, МПа",
     },
+    "hy_gas": "Сила давления газов на тарелку клапана",
+    "hy_gas_method": "Клапан открывается против давления в цилиндре на его тарелку: сила (p_ц − p_к) π d² / 4 "
+                     "направлена к седлу и берётся при угле ПКВ вершины кулачка плюс удвоенный угол ПРВ; цикл — "
+                     "заданный цикл двигателя (выпуск не ждёт открытия клапана), влияние силы — по сравнению с тем же "
+                     "приводом без неё",
+    "hy_gas_source": "Давление в цилиндре",
+    "hy_stop": "упор (конец хода)", "hy_lift_off": "клапан отходит от седла (сила газов {force:.3g} кН)",
     "hy_sweep": "Расчёт по частоте вращения (один оборот на каждой частоте)",
     "hy_sweep_title": "гидропривод в зависимости от частоты вращения двигателя",
     "hy_sweep_table": "Таблица по частоте вращения двигателя",
@@ -638,8 +678,8 @@ SYMBOLS = {
 """Every symbol of the report: ``key: (HTML, English, Russian)`` -- explained where it is first used."""
 
 
-_MARGINS = ("spring reserve", "pressure angle", "concave radius", "rho_min", "max acceleration", "min acceleration",
-            "seating velocity", "no jump", "spring design")
+_MARGINS = ("spring reserve", "pressure angle", "concave radius", "rho_min", "contact stress", "max acceleration",
+            "min acceleration", "seating velocity", "no jump", "spring design")
 
 OPTIMIZE_TEXT = {
     "en": {
@@ -685,7 +725,8 @@ OPTIMIZE_TEXT = {
         "binding": "Ограничения, определяющие оптимум", "history": "Ход поиска",
         "feasible": "в пределах ограничений", "infeasible": "вне ограничений", "best": "лучший в пределах",
         "margins": {"spring reserve": "запас пружины", "pressure angle": "угол давления",
-                    "concave radius": "вогнутый радиус", "rho_min": "ρ_min", "max acceleration": "ускорение max",
+                    "concave radius": "вогнутый радиус", "rho_min": "ρ_min",
+                    "contact stress": "контактное напряжение", "max acceleration": "ускорение max",
                     "min acceleration": "ускорение min", "seating velocity": "скорость посадки",
                     "no jump": "отрыв толкателя", "spring design": "подбор пружины"},
         "evaluations": "число расчётов",

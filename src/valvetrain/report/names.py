@@ -50,6 +50,7 @@ NAMES = {
     "idle_speed": ("idle speed (lowest speed of the strength checks)",
                    "частота холостого хода (наименьшая в расчёте на прочность)"),
     "cylinders": ("number of cylinders", "число цилиндров"), "strokes": ("strokes of the cycle", "тактность"),
+    "over_speed_ratio": ("over-speed / rated speed", "отношение максимальной частоты вращения к номинальной"),
     "type": ("engine type", "тип двигателя"), "chamber": ("combustion chamber", "камера сгорания"),
     "layout": ("layout", "компоновка"), "bank_angle": ("bank angle", "угол развала"),
     "firing_order": ("firing order", "порядок работы цилиндров"),
@@ -478,8 +479,6 @@ SKELETONS = {
     "built-in beam ({}, corrections note {}); simply supported: {} MPa; load P_T max (corrections note {})":
         "балка с заделкой ({}, поправка {}); на двух опорах: {} МПа; нагрузка P_T max (поправка {})",
     "no ramp takes up clearance_mm = {}: the flank does": "участок сбега не выбирает зазор {} мм: его выбирает профиль",
-    "even firing, order {}{}{}{}": "равномерное чередование вспышек, порядок работы {}{}{}{}",
-    "even firing, order {}{}{}{}{}{}{}{}": "равномерное чередование вспышек, порядок работы {}{}{}{}{}{}{}{}",
     "from the crank throws and cylinder axes": "по углам колен вала и осям цилиндров",
     "{} N/mm at the valve from the part geometry in [parts]":
         "{} Н/мм, приведённая к клапану, по геометрии деталей из исходных данных",
@@ -751,6 +750,8 @@ NAMES.update({
     "hydraulic.fill_conductance": ("fill valve conductance", "проводимость подпиточного клапана"),
     "hydraulic.relief_pressure": ("relief valve opening pressure", "давление открытия предохранительного клапана"),
     "hydraulic.relief_conductance": ("relief valve conductance", "проводимость предохранительного клапана"),
+    "hydraulic.stop_margin": ("stop above the rigid drive's largest lift", "упор выше наибольшего подъёма жёсткого привода"),
+    "hydraulic.stop_stiffness": ("stiffness of the valve's stop", "жёсткость упора клапана"),
     "grinding.wheel_radius": ("grinding wheel radius R_w", "радиус шлифовального круга R_w"),
     "grinding.master_follower_radius": ("master roller radius r_m", "радиус ролика копира r_m"),
     "grinding.bar_ratio": ("bar ratio of the grinder i", "передаточное отношение качающейся планки i"),
@@ -769,11 +770,22 @@ QUANTITIES.update({
     "hydraulic drive: valve seating velocity at the simulated speed": (
         "hydraulic drive: valve seating velocity at the simulated speed",
         "гидропривод: скорость посадки клапана на расчётной частоте вращения"),
+    "hydraulic drive: largest valve lift within the stroke (below the stop)": (
+        "hydraulic drive: largest valve lift within the stroke (below the stop)",
+        "гидропривод: наибольший подъём клапана в пределах хода (ниже упора)"),
+    "hydraulic drive: valve lift left at the next opening": (
+        "hydraulic drive: valve lift left at the next opening",
+        "гидропривод: подъём клапана, оставшийся к следующему открытию"),
+    "hydraulic drive: fill pressure below the valve's lift-off pressure": (
+        "hydraulic drive: fill pressure below the valve's lift-off pressure",
+        "гидропривод: давление подпитки ниже давления подъёма клапана с седла"),
     "master cam: smallest radius of curvature (master roller undercut)": (
         "master cam: smallest radius of curvature (undercut by the master roller)",
         "копир: наименьший радиус кривизны (подрез роликом копира)"),
 })
 
+SKELETONS.update({f"even firing, order {'{}' * n}": f"равномерное чередование вспышек, порядок работы {'{}' * n}"
+                  for n in range(1, 25)})   # the order of any number of cylinders, "1-5-3-6-2-4"
 SKELETONS.update({
     "a factor of {} beyond Heywood ({}), section {}": "в {} раза шире диапазона Heywood ({}), раздел {}",
     "a factor of {} beyond Power units manual (n.d.), eq. ({})":
@@ -793,4 +805,19 @@ SKELETONS.update({
     "{} x the rated speed (the default idle)": "{} номинальной частоты (холостой ход по умолчанию)",
     "the liquid column separates (cavitation) where the pressure falls to the vapour pressure":
         "столб жидкости разрывается (кавитация), где давление падает до давления насыщенных паров",
+    "valve stop {} mm: {}% above the rigid drive's largest lift":
+        "упор клапана {} мм: на {}% выше наибольшего подъёма жёсткого привода",
+    "no gas force on the valve head: the specification gives no engine cycle ([crank] with its pressure_file or "
+    "[crank.cycle])":
+        "сила давления газов на тарелку клапана не учтена: в исходных данных нет рабочего цикла двигателя "
+        "(индикаторной диаграммы или модели Вибе)",
+    "largest at {} rpm": "наибольший при {} мин⁻¹",
+    "the valve reaches its stop at {} rpm: it travels further than its stroke":
+        "клапан доходит до упора при {} мин⁻¹: его перемещение больше хода",
+    "at {} rpm the valve is not back on its seat when the plunger is about to lift again: it has not closed before "
+    "its next opening":
+        "при {} мин⁻¹ клапан не вернулся на седло к началу следующего подъёма плунжера: он не закрылся до "
+        "следующего открытия",
+    "above it the supply alone lifts the valve off its seat (F_0 / A_a above the back pressure)":
+        "выше него подпитка сама поднимает клапан с седла (на F_0 / A_a выше противодавления)",
 })

@@ -420,11 +420,16 @@ def hydraulic_figure(valve, t):
     if cav.any():
         top.plot(x[cav], np.full(int(cav.sum()), valve.hydraulic.vapour_pressure / 1e6), "x", color="k", ms=3,
                  label=t["hy_cavitation"])
+    off = r.lift_off()
+    if valve.hydraulic.gas_force is not None and off < r.angle.size:
+        top.plot(x[off], r.actuator_pressure[off] / 1e6, "o", color="k", ms=5,
+                 label=t["hy_lift_off"].format(force=r.gas_force[off] / 1e3))
     top.set_ylabel(t["hy_pressure"])
     top.grid(alpha=0.3)
     top.legend(loc="upper right", fontsize=8)
     bottom.plot(x, r.valve_lift / MM, color="C2", label=t["hy_valve"])
     bottom.plot(x, r.rigid_lift / MM, color="k", ls="--", lw=0.8, label=t["hy_rigid"])
+    bottom.axhline(valve.hydraulic.stop / MM, color="C3", ls=":", lw=1.0, label=t["hy_stop"])
     bottom.set_xlabel(t["cam_deg"])
     bottom.set_ylabel(t["hy_lift"])
     bottom.grid(alpha=0.3)
