@@ -224,3 +224,45 @@ def test_the_report_is_one_file(example_run):
     html = (out / "report.html").read_text(encoding="utf-8")
     assert html.count('src="data:image/png;base64,') == len(list((out / "plots").glob("*.png")))
     assert 'src="plots/' not in html
+
+
+def _console_script():
+    """The command the installed ``valvetrain`` script runs, read from pyproject.toml's [project.scripts]: what pip's
+    generated script does (import the entry point, call it), after a line on standard error saying Python is up."""
+    import tomllib
+    from pathlib import Path
+
+    entry = tomllib.loads((Path(__file__).resolve().parents[1] / "pyproject.toml").read_text())["project"]["scripts"]
+    module, _, function = entry["valvetrain"].partition(":")
+    return [sys.executable, "-c", f"import sys; sys.stderr.write('up\\n'); sys.stderr.flush(); "
+                                  f"from {module} import {function}; sys.exit({function}())"]
+
+
+def test_ctrl_c_while_importing_is_one_line_and_status_130():
+    """Ctrl-C at 20 moments (seeded) spread over the start-up of ``valvetrain --version`` (measured first: Python is
+    up, then the command line is imported, then it prints the version): every one ends with ``error: interrupted``
+    and status 130, or, after the command finished, with the version; never a traceback.  Most moments fall in the
+    imports, so some are interrupted (the issue's traceback came 2 times in 20)."""
+    import random
+    import signal
+    import time
+
+    def start():
+        proc = subprocess.Popen([*_console_script(), "--version"], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                                text=True)
+        assert proc.stderr.readline() == "up\n"
+        return proc, time.monotonic()
+
+    proc, t0 = start()
+    out, err = proc.communicate(timeout=120)
+    startup = time.monotonic() - t0
+    assert (proc.returncode, out, err) == (0, "valvetrain, version 0.1.0\n", "")
+    outcomes = []
+    for moment in random.Random(21).sample(range(int(startup * 900)), 20):
+        proc, t0 = start()
+        time.sleep(max(moment / 1000 - (time.monotonic() - t0), 0.0))
+        proc.send_signal(signal.SIGINT)
+        out, err = proc.communicate(timeout=120)
+        outcomes.append((proc.returncode, out, err))
+        assert (proc.returncode, err) in ((130, "error: interrupted\n"), (0, "")), (moment, err)
+    assert sum(rc == 130 for rc, _, _ in outcomes) >= 5

@@ -195,3 +195,77 @@ def test_many_combined_ratios_are_refused_with_a_short_message(refused):
            'ratios = [' + ", ".join(["{segment = 20, value = 0.625}"] * 100_000) + "]\n")
     out = refused(_with((CAM, cam + "\n")))
     assert "ratios" in out and max(len(ln) for ln in out.splitlines()) < 300
+
+
+# issue 21, "The Python API validates"
+
+def test_model_copy_bypasses_validation_but_run_refuses_it():
+    """A bore of -80 mm made with pydantic's model_copy (which validates nothing) is refused by run with the message
+    a file with that bore gets (the field's bounds: [5, 2000] mm)."""
+    import valvetrain as vt
+
+    spec = vt.example_spec()
+    bad = spec.model_copy(update={"engine": spec.engine.model_copy(update={"bore_mm": -80.0})})
+    with pytest.raises(vt.SpecError) as err:
+        vt.run(bad)
+    assert err.value.problems == ["engine.bore_mm = -80.0: allowed [5, 2000] mm"]
+    with pytest.raises(vt.SpecError, match="a valvetrain.specification.Spec .* or a dict of its tables is needed, "
+                                           "not a str"):
+        vt.run("my-engine.toml")
+    with pytest.raises(vt.SpecError, match="engine.bore_mm: required key is missing"):
+        vt.run({"engine": {"stroke_mm": 80.0, "rated_speed_rpm": 6000.0, "cylinders": 4, "strokes": 4},
+                "crank": {}})
+
+
+def test_replace_takes_the_dotted_keys_of_a_study_grid():
+    """Spec.replace changes keys by the dotted paths of `study --grid`, validated: the new value is in the copy, the
+    original is unchanged, and a value outside its bounds, an unknown key and a missing valve are SpecErrors."""
+    import valvetrain as vt
+
+    spec = vt.example_spec()
+    new = spec.replace({"engine.bore_mm": 85.0, "valves.intake.cam.shape_factor": 0.6})
+    assert (new.engine.bore_mm, new.valves["intake"].cam.shape_factor) == (85.0, 0.6)
+    assert spec.engine.bore_mm == 80.0 and new.engine.stroke_mm == spec.engine.stroke_mm
+    for values, said in [({"engine.bore_mm": -80.0}, "engine.bore_mm = -80.0: allowed [5, 2000] mm"),
+                         ({"engine.bore_mmm": 80.0}, "engine.bore_mmm: unknown key"),
+                         ({"valves.exhaust.max_lift_mm": 8.0}, "valves.exhaust.max_lift_mm: the specification has no "
+                                                                "valve 'exhaust' (valves: intake)"),
+                         ({"valves.intake.cam": 1.0}, "valves.intake.cam: a table, not a value")]:
+        with pytest.raises(vt.SpecError) as err:
+            spec.replace(values)
+        assert said in err.value.problems[0]
+
+
+def test_parse_spec_takes_a_parsed_document():
+    """parse_spec of the example's tables (as tomllib gives them) is the example; something else is a SpecError."""
+    import tomllib
+
+    import valvetrain as vt
+
+    assert vt.parse_spec(tomllib.loads(example_text())) == vt.example_spec()
+    with pytest.raises(vt.SpecError, match="TOML text or a dict of its tables, not a list"):
+        vt.parse_spec([1, 2])
+
+
+@pytest.mark.parametrize("key,value,failing", [
+    # issue 21 nonsense 7: the example's stroke (77.14 mm) typed in cm: S/D 0.096, c_p 1.80 m/s, lambda 0.029
+    ("engine.stroke_mm", 7.7, {"stroke / bore (stroke_mm / bore_mm)", "lambda = R / L (stroke_mm / 2 / rod_length_mm)",
+                               "mean piston speed (stroke_mm x rated_speed_rpm / 30000)"}),
+    ("engine.rated_speed_rpm", 100.0, {"mean piston speed (stroke_mm x rated_speed_rpm / 30000)"}),  # rev/s: 0.26 m/s
+])
+def test_unit_slips_of_the_engine_are_failures(key, value, failing):
+    """Hand calculation for the example (bore 80 mm, stroke 77.14 mm, [crank] rod 135 mm, 7000 rpm): the stroke in cm
+    gives S/D = 7.7 / 80 = 0.096 < 0.278 (= (1 / 1.2) / 3, Heywood (1988)'s bore / stroke 0.8-1.2, 0.5), c_p =
+    0.0077 x 7000 / 30 = 1.80 m/s < 2.67 m/s (= 8 / 3) and lambda = 3.85 / 135 = 0.029 < 0.08 (= 0.24 / 3); the speed in
+    rev/s c_p = 0.07714 x 100 / 30 = 0.26 m/s.  (The bore in cm is refused already: the throat exceeds it.)  The example
+    itself (S/D 0.96, c_p 18 m/s, lambda 0.29) passes all three."""
+    import valvetrain as vt
+
+    spec = vt.example_spec()
+    engine = {c.quantity.removeprefix("engine: "): c for c in vt.run(spec).checks if c.quantity.startswith("engine: ")}
+    assert len(engine) == 3 and all(c.passed for c in engine.values())
+    checks = vt.run(spec.replace({key: value})).checks
+    failed = {c.quantity.removeprefix("engine: ") for c in checks
+              if c.quantity.startswith("engine: ") and not c.passed}
+    assert failed == failing
+    assert all(c.severity == "failure" for c in checks if c.quantity.startswith("engine: "))

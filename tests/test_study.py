@@ -1,13 +1,17 @@
 """valvetrain study (issue 12 item 4): a grid of keys, one table, the same on every backend."""
 
 import json
+import os
 from pathlib import Path
+import signal
 
 from click.testing import CliRunner
 import pytest
 
+from valvetrain import study as study_module
 from valvetrain.cli import main
 from valvetrain.specification import example_text
+from valvetrain.study import evaluate_point, parse_grid, toml_text
 
 ROOT = Path(__file__).resolve().parents[1]
 GRID = ["--grid", "valves.intake.cam.shape_factor=0.55,0.6,0.65", "--grid", "engine.rated_speed_rpm=6000,7000"]
@@ -57,8 +61,11 @@ def test_local_processes_give_the_same_table(spec_file, serial, tmp_path):
     assert study(spec_file, tmp_path / "out", "--workers", "2") == serial
 
 
-def test_dask_cluster_gives_the_same_table(spec_file, serial, tmp_path):
+def test_dask_cluster_gives_the_same_table(spec_file, serial, tmp_path, monkeypatch):
+    """On a two-worker cluster in tasks of 3 points (one task per worker thread: 6 points / 2 threads), the table of
+    the serial study."""
     distributed = pytest.importorskip("distributed")
+    monkeypatch.setattr(study_module, "DASK_TASKS_PER_THREAD", 1)
     with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster:
         assert study(spec_file, tmp_path / "out", "--scheduler", cluster.scheduler_address) == serial
 
@@ -114,3 +121,84 @@ def test_unreachable_scheduler_is_one_line(spec_file, tmp_path):
     assert result.exit_code == 2
     assert result.output.splitlines()[-1].startswith("error: --scheduler nonsense://x: cannot connect")
     assert not (tmp_path / "o").exists()
+
+
+def _dies_at_the_last_point(document):
+    """A point's design whose process is killed (as by the kernel's out-of-memory killer) at the grid's last point."""
+    if document["engine"]["rated_speed_rpm"] == 7000 and document["valves"]["intake"]["cam"]["shape_factor"] == 0.65:
+        os.kill(os.getpid(), signal.SIGKILL)
+    return evaluate_point(document)
+
+
+def test_a_worker_that_dies_stops_the_study_keeping_the_points_done(tmp_path, monkeypatch):
+    """Issue 21 traceback 7: a worker killed at point 6 of 6 ends the study with one line naming the point (and the
+    one the other process was designing then), exit 1, and the table with every other point designed (two points
+    are in progress at a time, so all but those two were done when point 6 started)."""
+    f = tmp_path / "engine.toml"
+    f.write_text(example_text(), encoding="utf-8")
+    monkeypatch.setattr(study_module, "evaluate_point", _dies_at_the_last_point)
+    out = tmp_path / "o"
+    result = CliRunner().invoke(main, ["study", str(f), *GRID, "--out", str(out), "--workers", "2"])
+    assert result.exit_code == 1, result.output
+    error = result.output.splitlines()[-1]
+    assert error.startswith("error: a worker process died (killed, or out of memory) while designing ")
+    assert "point 6 (valves.intake.cam.shape_factor = 0.65, engine.rated_speed_rpm = 7000)" in error
+    import re
+
+    lost = {int(n) for n in re.findall(r"point (\d) \(", error)}
+    assert 6 in lost and len(lost) <= 2   # the point that died, and the one the other process was designing
+    rows = json.loads((out / "study.json").read_text(encoding="utf-8"))["points"]
+    assert [r["status"] for r in rows] == ["not designed" if i in lost else "ok" for i in range(1, 7)]
+    assert all(r["intake.fullness"] > 0 for i, r in enumerate(rows, 1) if i not in lost)
+
+
+def test_a_toml_array_grid_value_is_one_value_written_as_toml(tmp_path):
+    """Issue 21 traceback 1: a grid value that is a TOML array (a spring's list of materials) is one value, designed,
+    and written to study.csv as its TOML text."""
+    f = tmp_path / "engine.toml"
+    f.write_text(example_text(), encoding="utf-8")
+    out = tmp_path / "o"
+    result = CliRunner().invoke(main, ["study", str(f), "--grid",
+                                       'valves.intake.spring.material=["VDSiCr", "60S2A"],"60S2A"', "--out", str(out)])
+    assert result.exit_code == 0, result.output
+    lines = (out / "study.csv").read_text(encoding="utf-8").splitlines()
+    assert [line.split(",")[0] for line in lines] == ["valves.intake.spring.material", '"[""VDSiCr""', "60S2A"]
+    assert lines[1].startswith('"[""VDSiCr"", ""60S2A""]",')   # the CSV quoting of the TOML text ["VDSiCr", "60S2A"]
+    assert "2 design points (0 refused)" in result.output
+
+
+def test_grid_values_split_outside_arrays_tables_and_strings():
+    assert parse_grid(['k=[1, 2],{ a = "x,y" },"p,q",3']) == [("k", [[1, 2], {"a": "x,y"}, "p,q", 3])]
+    # TOML's own text of each (TOML v1.0.0: arrays, inline tables, basic strings)
+    assert [toml_text(v) for v in ([1, 2], {"a": "x,y", "b c": True}, "p,q", 3.5)] == [
+        "[1, 2]", '{ a = "x,y", "b c" = true }', '"p,q"', "3.5"]
+
+
+def test_a_huge_grid_is_refused_before_any_point_is_built(tmp_path, monkeypatch):
+    """Issue 21 traceback 6: 1000 x 1000 points are counted, not made: refused with exit 2, the count and an estimate,
+    in about the time of two designs; --max-points allows a grid above the default limit."""
+    f = tmp_path / "engine.toml"
+    f.write_text(example_text(), encoding="utf-8")
+    made = []
+    monkeypatch.setattr(study_module, "with_values", lambda d, v: made.append(v) or d)
+    shape = ",".join(f"{0.5 + i * 1e-4:.4f}" for i in range(1000))
+    speed = ",".join(str(5000 + i) for i in range(1000))
+    result = CliRunner().invoke(main, ["study", str(f), "--grid", f"valves.intake.cam.shape_factor={shape}",
+                                       "--grid", f"engine.rated_speed_rpm={speed}", "--out", str(tmp_path / "o")])
+    assert result.exit_code == 2
+    (line,) = result.output.splitlines()
+    assert line.startswith("error: --grid: 1,000,000 design points: about ") and " in 1 process at the " in line
+    assert line.endswith("allowed at most 10,000 points unless --max-points 1000000 is given")
+    assert made == [] and not (tmp_path / "o").exists()
+    result = CliRunner().invoke(main, ["study", str(f), "--grid", "valves.intake.cam.shape_factor=0.55,0.6,0.65",
+                                       "--max-points", "2", "--out", str(tmp_path / "o")])
+    assert result.exit_code == 2 and "3 design points" in result.output
+    result = CliRunner().invoke(main, ["study", str(f), "--grid", "valves.intake.cam.shape_factor=0.55,0.6,0.65",
+                                       "--max-points", "3", "--out", str(tmp_path / "o")])
+    assert result.exit_code == 0, result.output
+
+
+def test_dask_tasks_hold_several_points():
+    """Points per task = ceil(points / (8 tasks x threads)), between 1 and 32: 1000 points on 2 threads -> 63, capped
+    at 32; 300 points -> ceil(300 / 16) = 19; 5 points -> 1."""
+    assert [study_module.dask_chunk(n, 2) for n in (1000, 300, 5)] == [32, 19, 1]

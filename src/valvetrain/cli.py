@@ -7,6 +7,7 @@ such as a stress above its allowable -- is a result, not an error: ``run`` and `
 print the open checks, ranked, and exit 0.
 """
 
+import itertools
 import signal
 import sys
 import time
@@ -14,6 +15,7 @@ import time
 import click
 
 from . import __version__
+from .console import Interruption, interrupted_while_starting
 from .outfolder import OutFolderError, check_out
 from .specification import SpecError, example_spec, example_text, input_files, load_spec
 
@@ -113,23 +115,27 @@ class _Progress:
 class _Main(click.Group):
     """The command group; Ctrl-C ends any command with exit status 130 and one line, not a traceback.
 
-    A library may turn the KeyboardInterrupt into an error of its own (a compiled extension or a callback that
-    catches it), so the SIGINT is remembered and any error after it is the interruption too."""
+    The SIGINT handler (:class:`valvetrain.console.Interruption`) remembers the SIGINT, so that an error a library
+    made of the KeyboardInterrupt is the interruption too."""
 
-    interrupted = False
-
-    @classmethod
-    def _on_sigint(cls, signum, frame):
-        cls.interrupted = True
-        raise KeyboardInterrupt
+    def make_context(self, info_name, args, parent=None, **extra):
+        """Parse the command line; Ctrl-C before or while parsing is the interruption too (click would say
+        'Aborted!')."""
+        Interruption.install(Interruption.interrupt)
+        try:
+            if Interruption.seen:
+                raise KeyboardInterrupt
+            return super().make_context(info_name, args, parent, **extra)
+        except BaseException:
+            if not Interruption.seen:
+                raise
+            interrupted_while_starting()
 
     def invoke(self, ctx):
-        if signal.getsignal(signal.SIGINT) is signal.default_int_handler:
-            signal.signal(signal.SIGINT, self._on_sigint)
         try:
             return super().invoke(ctx)
         except Exception:
-            if not self.interrupted:
+            if not Interruption.seen:
                 raise
             click.echo("error: interrupted", err=True)
             sys.exit(130)
@@ -366,26 +372,40 @@ def optimize(file, out, valve, objective, vary, no_jump, cam_width, seating_velo
 @click.option("--scheduler", default=None, metavar="ADDRESS",
               help="Evaluate the points on the Dask distributed cluster of this scheduler (tcp://host:8786); "
                    "needs pip install 'valvetrain[dask]'.")
+@click.option("--max-points", "max_points", default=None, type=click.IntRange(1), metavar="N",
+              help="Allow a grid of up to N points (default 10,000; a larger grid is refused with an estimate of "
+                   "its time).")
 @click.option("--force", is_flag=True, help=FORCE_HELP)
-def study(file, grid_items, out, workers, scheduler, force):
+def study(file, grid_items, out, workers, scheduler, max_points, force):
     """Design every point of a grid of FILE's keys and write one table of results to --out.
 
     Each point is FILE with the grid's values, validated and designed like `valvetrain run`; a point that is
     refused is a row with its messages. Per point and valve: time-area, fullness, max/min tappet acceleration,
     rho_min, max contact stress, the spring (wire, preload, whether it passes), the jump speed of a valve with a
-    [dynamics] section; per point the counts of failures and warnings. Writes study.csv and study.json."""
+    [dynamics] section; per point the counts of failures and warnings. Writes study.csv and study.json; a study
+    stopped by a worker process that died writes the points designed before it and exits 1."""
     from .export import json_text, write_csv
     from .outfolder import atomic_folder
-    from .study import GridError, POINT_COLUMNS, VALVE_COLUMNS, check_grid, evaluate, parse_grid, points, \
-        read_document, table, with_values
+    from .study import (MAX_POINTS, POINT_COLUMNS, VALVE_COLUMNS, GridError, StudyStopped, check_grid,
+                        count_points, evaluate, evaluate_point, parse_grid, point_text, points, read_document,
+                        table, with_values)
 
     _load(file)
     try:
         grid = parse_grid(grid_items)
         document = read_document(file)
+        total = count_points(grid)
+        if total > (max_points or MAX_POINTS):
+            evaluate_point(document)  # the first design loads what the design needs; the second is timed
+            start = time.monotonic()
+            evaluate_point(document)
+            each = time.monotonic() - start
+            processes = workers if scheduler is None else 1
+            raise GridError(f"--grid: {total:,} design points: about {_duration(each * total / processes)} in "
+                            f"{processes} process{'es' if processes > 1 else ''} at the {each:.2g} s that a design of the "
+                            f"file takes; allowed at most {max_points or MAX_POINTS:,} points unless "
+                            f"--max-points {total} is given")
         check_grid(document, grid)
-        values = points(grid)
-        documents = [with_values(document, p) for p in values]
     except GridError as err:
         click.echo(f"error: {err}", err=True)
         sys.exit(2)
@@ -395,15 +415,20 @@ def study(file, grid_items, out, workers, scheduler, force):
     inputs = _check_out(out, [file], [], force)
     progress = _Progress("design points")
     start = time.monotonic()
+    stopped = None
     try:
-        records = evaluate(documents, workers, scheduler, lambda done, total: progress("study", done, total))
+        records = evaluate((with_values(document, p) for p in points(grid)), total, workers, scheduler,
+                           lambda done, total: progress("study", done, total),
+                           lambda i: point_text(next(itertools.islice(points(grid), i, None))))
     except (ImportError, ConnectionError) as err:
         click.echo(f"error: {err}", err=True)
         sys.exit(2)
+    except StudyStopped as err:
+        stopped, records = err, err.records
     finally:
         progress.close()
     seconds = time.monotonic() - start
-    columns = table(grid, values, records)
+    columns = table(grid, records)
     meanings = dict(VALVE_COLUMNS) | dict(POINT_COLUMNS)
     try:
         with atomic_folder(out, inputs, force) as tmp:
@@ -415,10 +440,22 @@ def study(file, grid_items, out, workers, scheduler, force):
             }) + "\n", encoding="utf-8")
     except OutFolderError as err:
         _fail_out(err)
-    refused = sum(r["status"] != "ok" for r in records)
+    done = [r for r in records if r is not None]
+    refused = sum(r["status"] != "ok" for r in done)
     backend = f"on {scheduler}" if scheduler else f"in {workers} processes" if workers > 1 else "in this process"
-    click.echo(f"{len(records)} design points ({refused} refused) {backend}, {seconds:.1f} s")
+    click.echo(f"{len(done)} design points ({refused} refused) {backend}, {seconds:.1f} s")
     click.echo(f"wrote {out}/ (study.csv, study.json)")
+    if stopped is not None:
+        click.echo(f"error: {stopped}; the rows of the points not designed say 'not designed'", err=True)
+        sys.exit(1)
+
+
+def _duration(seconds):
+    """A duration in the unit that reads best: seconds, minutes, hours or days."""
+    for unit, size in (("days", 86400.0), ("hours", 3600.0), ("minutes", 60.0)):
+        if seconds >= 2.0 * size:
+            return f"{seconds / size:.3g} {unit}"
+    return f"{seconds:.2g} s"
 
 
 @main.command()

@@ -119,6 +119,41 @@ def read_two_column_arrays(path, headers, error):
     return key, values[:, 0], values[:, 1]
 
 
+def check_ranges(path, columns, ranges, line_of, error):
+    """Refuse the first value of a file outside its column's range, naming the file, the line, the value and the range.
+
+    Parameters
+    ----------
+    path : str or Path
+        The file (for the message).
+    columns : dict
+        Column name -> array of its values, in the file's order.
+    ranges : dict
+        Column name -> ``(low, high, why)``: the closed range of the values and what it is.
+    line_of : callable
+        ``line_of(i)``: the line of the file of the i-th value.
+    error : type
+        Exception class raised.
+    """
+    for name, (low, high, why) in ranges.items():
+        values = columns[name]
+        bad = np.flatnonzero((values < low) | (values > high))
+        if bad.size:
+            i = int(bad[0])
+            raise error(f"{shown_path(path)}:{line_of(i)}: {name} = {values[i]:g}: allowed [{low:g}, {high:g}] "
+                        f"({why})")
+
+
+LIFT_TABLE_RANGES = {
+    "angle_deg": (-3600.0, 3600.0, "crank or camshaft degrees: five four-stroke cycles either way of the TDC; the "
+                                   "lobe's own checks take the table to one revolution"),
+    "lift_mm": (-500.0, 500.0, "a lift in mm: at most the largest max_lift_mm, 500 mm, either way; the lobe's own "
+                               "checks take the rows below the base circle to the noise"),
+}
+"""The values a lift table may hold at all: beyond them a value is a unit slip or a corrupt file, refused before
+any fit.  The fit's checks (:func:`valvetrain.laws.measured.lobe_table`) then hold the table to one camshaft
+revolution and its rows below the base circle to the measurement noise, with messages of their own."""
+
 MAX_TABLE_ROWS = 1_000_000
 """Most rows of a lift table (10^6: a row every 0.0007 crank deg over a whole revolution)."""
 
@@ -141,6 +176,8 @@ def read_lift_table(path):
         Naming the file and line of the first problem; also for more than :data:`MAX_TABLE_ROWS` rows.
     """
     _, angles, lifts = read_two_column_arrays(path, [("angle_deg", "lift_mm")], TableFileError)
+    check_ranges(path, {"angle_deg": angles, "lift_mm": lifts}, LIFT_TABLE_RANGES,
+                 lambda i: read_two_columns(path, [("angle_deg", "lift_mm")], TableFileError)[1][i][0], TableFileError)
     back = np.flatnonzero(np.diff(angles) <= 0.0)
     if back.size:
         i = int(back[0]) + 1
@@ -166,6 +203,15 @@ class IndicatorTable:
 
 _HEADERS = {("crank_deg", "pressure_MPa"): "angle", ("volume_cm3", "pressure_MPa"): "volume"}
 
+MAX_PRESSURE_MPA = 100.0
+"""Largest absolute pressure of an indicator diagram [MPa]: over three times the highest peak firing pressures of
+engines (about 30 MPa in the heavy-duty diesels of the 2010s); a larger value is a unit slip (kPa, bar read as MPa)
+or a corrupt file."""
+
+MAX_VOLUME_CM3 = 1e8
+"""Largest cylinder volume of a p-V diagram [cm3]: eight times the largest swept volume the specification admits
+(bore 2000 mm x stroke 4000 mm: 1.26e7 cm3)."""
+
 
 def read_indicator(path, strokes):
     """Read an indicator diagram from a CSV file.
@@ -186,9 +232,6 @@ def read_indicator(path, strokes):
     kind = _HEADERS[key]
     xs, ps = [], []
     for n, x, p in rows:
-        if p < MIN_PRESSURE_MPA:
-            raise PressureFileError(f"{where}:{n}: pressure_MPa = {p:g}: an absolute pressure; allowed >= "
-                                    f"{MIN_PRESSURE_MPA:g}")
         if kind == "angle":
             if not 0.0 <= x <= 180.0 * strokes:
                 raise PressureFileError(f"{where}:{n}: crank_deg = {x:g}: allowed [0, {180 * strokes}] for a "
@@ -200,6 +243,10 @@ def read_indicator(path, strokes):
             raise PressureFileError(f"{where}:{n}: volume_cm3 = {x:g} must be > 0")
         xs.append(x)
         ps.append(p)
+    check_ranges(path, {"pressure_MPa": np.array(ps), "volume_cm3": np.array(xs)},
+                 {"pressure_MPa": (MIN_PRESSURE_MPA, MAX_PRESSURE_MPA, "an absolute cylinder pressure"),
+                  **({"volume_cm3": (0.0, MAX_VOLUME_CM3, "a cylinder volume")} if kind == "volume" else {})},
+                 lambda i: rows[i][0], PressureFileError)
     if len(xs) < 4:
         raise PressureFileError(f"{where}: at least 4 data rows are needed, found {len(xs)}")
     x = np.radians(xs) if kind == "angle" else np.array(xs) * 1e-6

@@ -16,17 +16,23 @@ This module is part of the orchestration: it imports :mod:`valvetrain.design` an
 and only the command line imports it.
 """
 
-import copy
-from concurrent.futures import ProcessPoolExecutor, as_completed
+from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
+from concurrent.futures.process import BrokenProcessPool
+import ctypes
+import functools
 import itertools
+import math
 import multiprocessing
+import os
 from pathlib import Path
+import re
 import tomllib
 
 import pydantic
+import tomli_w
 
 from .design import run
-from .specification import LAWS, SpecError, validate
+from .specification import LAWS, SpecError, set_keys, validate
 from .specification.messages import location, message
 from .specification.models import Spec
 from .units import rpm_to_rad_s
@@ -46,7 +52,8 @@ VALVE_COLUMNS = [
 """Columns of each valve of a point (``VALVE.KEY``), with their meanings."""
 
 POINT_COLUMNS = [
-    ("status", "'ok', or 'refused' (the point is not a valid design; see message)"),
+    ("status", "'ok', 'refused' (the point is not a valid design; see message), or 'not designed' (the study "
+               "stopped before it)"),
     ("failures", "failed checks of severity failure (not counting those accepted in the file)"),
     ("warnings", "failed checks of severity warning"),
     ("message", "why the point was refused, one problem per line"),
@@ -60,6 +67,43 @@ CONNECT_SECONDS = 20
 
 class GridError(ValueError):
     """A grid that cannot be studied; the message is one line naming the key or the value."""
+
+
+def split_values(text):
+    """The values of ``V1,V2,...``: split at the commas outside brackets, braces and quotes, so that a TOML array or
+    inline table is one value (``["VDSiCr", "60S2A"],"60S2A"`` is two values)."""
+    parts, depth, quote, start = [], 0, None, 0
+    for i, ch in enumerate(text):
+        if quote:
+            quote = None if ch == quote and text[i - 1] != "\\" else quote
+        elif ch in "\"'":
+            quote = ch
+        elif ch in "[{":
+            depth += 1
+        elif ch in "]}":
+            depth = max(depth - 1, 0)
+        elif ch == "," and depth == 0:
+            parts.append(text[start:i])
+            start = i + 1
+    return [*parts, text[start:]]
+
+
+def toml_text(value):
+    """A value as TOML text, an array or inline table on one line: how a grid value is written in study.csv.
+
+    >>> toml_text(["VDSiCr", "60S2A"]), toml_text({"a": 1, "b c": [0.5, True]}), toml_text(6000)
+    ('["VDSiCr", "60S2A"]', '{ a = 1, "b c" = [0.5, true] }', '6000')
+    """
+    if isinstance(value, list):
+        return "[" + ", ".join(toml_text(v) for v in value) + "]"
+    if isinstance(value, dict):
+        return "{ " + ", ".join(f"{k if _BARE_KEY.match(k) else toml_text(k)} = {toml_text(v)}"
+                                for k, v in value.items()) + " }"
+    return tomli_w.dumps({"v": value}).removeprefix("v = ").rstrip("\n")
+
+
+_BARE_KEY = re.compile(r"^[A-Za-z0-9_-]+$")
+"""A TOML key written without quotes."""
 
 
 def parse_value(text):
@@ -95,7 +139,7 @@ def parse_grid(items):
                             "(engine.rated_speed_rpm=6000,7000)")
         if any(not part.strip() for part in key.split(".")):
             raise GridError(f"--grid {key}: an empty name in the dotted key")
-        texts = [t.strip() for t in values.split(",")]
+        texts = [t.strip() for t in split_values(values)]
         if any(not t for t in texts):
             raise GridError(f"--grid {key}={values}: an empty value; give V1,V2,... separated by single commas")
         if key in (k for k, _ in grid):
@@ -112,25 +156,18 @@ def read_document(path):
 
 
 def with_values(document, values):
-    """A deep copy of the TOML ``document`` with the dotted keys of ``values`` (a dict) set; missing tables are
-    made, except a valve that the document does not have."""
-    out = copy.deepcopy(document)
-    for key, value in values.items():
-        parts = key.split(".")
-        node = out
-        for i, part in enumerate(parts[:-1]):
-            if part not in node:
-                if i == 1 and parts[0] == "valves":
-                    raise GridError(f"--grid {key}: the file has no valve {part!r} (valves: "
-                                    f"{', '.join(node) or 'none'})")
-                node[part] = {}
-            node = node[part]
-            if not isinstance(node, dict):
-                raise GridError(f"--grid {key}: {'.'.join(parts[:i + 1])} is a value, not a table")
-        if isinstance(node.get(parts[-1]), dict):
-            raise GridError(f"--grid {key}: a table, not a value; give one of its keys")
-        node[parts[-1]] = value
-    return out
+    """The TOML ``document`` with the dotted keys of ``values`` (a dict) set
+    (:func:`valvetrain.specification.set_keys`, which :meth:`Spec.replace` uses too).
+
+    Raises
+    ------
+    GridError
+        A valve the document does not have, a key through a value or naming a table.
+    """
+    try:
+        return set_keys(document, values)
+    except ValueError as exc:
+        raise GridError(f"--grid {exc}") from None
 
 
 def check_grid(document, grid):
@@ -153,10 +190,21 @@ def check_grid(document, grid):
                         raise GridError(f"--grid {message(err, LAWS)}") from None
 
 
+def count_points(grid):
+    """The number of design points of a grid (the product of its numbers of values), without making them."""
+    return math.prod(len(values) for _, values in grid)
+
+
 def points(grid):
-    """The design points of a grid: dicts ``key -> value``, the cartesian product, the first key varying slowest."""
+    """The design points of a grid, made one at a time: dicts ``key -> value``, the cartesian product, the first key
+    varying slowest."""
     keys = [k for k, _ in grid]
-    return [dict(zip(keys, combo, strict=True)) for combo in itertools.product(*(v for _, v in grid))]
+    return (dict(zip(keys, combo, strict=True)) for combo in itertools.product(*(v for _, v in grid)))
+
+
+def point_text(point):
+    """A point as shown in a message: ``key = value, ...`` (values as TOML text)."""
+    return ", ".join(f"{key} = {toml_text(value)}" for key, value in point.items())
 
 
 def _valve_record(v):
@@ -206,19 +254,84 @@ def evaluate_point(document):
             "failures": severities.count("failure"), "warnings": severities.count("warning"), "message": ""}
 
 
-def evaluate(documents, workers=None, scheduler=None, progress=None):
+class StudyStopped(RuntimeError):
+    """A study that could not design every point (a worker process died); ``records`` holds the points designed
+    before (None for the others), ``lost`` the indices of the points that were in progress."""
+
+    def __init__(self, message, records, lost):
+        super().__init__(message)
+        self.records, self.lost = records, lost
+
+
+MAX_POINTS = 10_000
+"""Most design points a study takes without ``--max-points``: at the 0.05-0.5 s a point of the shipped examples
+(more with a [dynamics] section) about 10 minutes to an hour and a half in one process."""
+
+DASK_TASKS_PER_THREAD = 8
+"""Tasks of a Dask study per worker thread: enough to even out the load, few enough that the scheduler's own
+3-6 ms a task stays a small part of the work."""
+
+DASK_MAX_CHUNK = 32
+"""Most points in one Dask task."""
+
+
+MMAP_THRESHOLD_BYTES = 32 * 2**20
+"""glibc's mmap threshold set in a Dask worker (its largest value on 64-bit systems, 32 MiB): see :func:`heap_arrays`."""
+
+
+@functools.cache
+def heap_arrays():
+    """Let glibc serve arrays below :data:`MMAP_THRESHOLD_BYTES` from the heap again, in a process whose environment
+    sets ``MALLOC_TRIM_THRESHOLD_`` (a Dask nanny starts its workers so); once per process.
+
+    Setting that variable also stops glibc from raising its mmap threshold as arrays are freed (its "dynamic"
+    threshold), so every array above 128 KiB is mapped and unmapped afresh, its pages zeroed on first touch: a
+    design then takes about 1.5 times the CPU time of a plain process (measured: 57 against 38 ms for the built-in
+    example).  ``mallopt(M_MMAP_THRESHOLD, ...)`` restores the threshold; the trimming the variable asks for stays.
+    Elsewhere (no such variable, no glibc) nothing is done."""
+    if "MALLOC_TRIM_THRESHOLD_" not in os.environ:
+        return
+    try:
+        libc = ctypes.CDLL("libc.so.6")
+    except OSError:
+        return
+    m_mmap_threshold = -3   # glibc's malloc.h
+    libc.mallopt(m_mmap_threshold, MMAP_THRESHOLD_BYTES)
+
+
+def evaluate_points(documents):
+    """:func:`evaluate_point` of each document of a list (one Dask task, :func:`heap_arrays` first): the list of
+    records."""
+    heap_arrays()
+    return [evaluate_point(d) for d in documents]
+
+
+def dask_chunk(total, threads):
+    """Points per Dask task: :data:`DASK_TASKS_PER_THREAD` tasks per worker thread, at most :data:`DASK_MAX_CHUNK`."""
+    return max(1, min(DASK_MAX_CHUNK, math.ceil(total / (DASK_TASKS_PER_THREAD * max(threads, 1)))))
+
+
+def evaluate(documents, total, workers=None, scheduler=None, progress=None, describe=str):
     """Evaluate documents with :func:`evaluate_point`: serially, in local processes, or on a Dask cluster.
+
+    The documents are taken from the iterable as they are needed (a few per worker at a time), so a large study
+    never holds them all.
 
     Parameters
     ----------
-    documents : list of dict
+    documents : iterable of dict
+    total : int
+        The number of documents.
     workers : int, optional
-        Local processes (:class:`concurrent.futures.ProcessPoolExecutor`, started with ``spawn``); None or 1:
-        this process.
+        Local processes (:class:`concurrent.futures.ProcessPoolExecutor`, started with ``spawn``), one point each
+        at a time; None or 1: this process.
     scheduler : str, optional
-        Address of a running Dask distributed scheduler (``tcp://host:8786``); needs the ``dask`` extra.
+        Address of a running Dask distributed scheduler (``tcp://host:8786``); needs the ``dask`` extra.  The points
+        go in tasks of :func:`dask_chunk` points.
     progress : callable, optional
-        ``progress(done, total)`` after each point (and ``progress(0, total)`` first).
+        ``progress(done, total)`` after each point or task (and ``progress(0, total)`` first).
+    describe : callable, optional
+        ``describe(index)``: a point as a message names it.
 
     Returns
     -------
@@ -231,33 +344,16 @@ def evaluate(documents, workers=None, scheduler=None, progress=None):
         ``scheduler`` without dask's distributed package installed.
     ConnectionError
         No Dask scheduler answers at ``scheduler`` within :data:`CONNECT_SECONDS`.
+    StudyStopped
+        A worker process died (killed, out of memory); the records designed before it are kept.
     """
-    total = len(documents)
     records = [None] * total
     tick = progress or (lambda done, total: None)
     tick(0, total)
     if scheduler is not None:
-        try:
-            from distributed import Client, as_completed as dask_completed
-        except ImportError:
-            raise ImportError("--scheduler needs Dask's distributed package: pip install 'valvetrain[dask]'") from None
-        try:
-            client = Client(scheduler, timeout=CONNECT_SECONDS)
-        except (OSError, ValueError, TypeError) as exc:
-            raise ConnectionError(f"--scheduler {scheduler}: cannot connect to a Dask scheduler there ({exc})") from None
-        with client:
-            futures = client.map(evaluate_point, documents, pure=False)
-            index = {f.key: i for i, f in enumerate(futures)}
-            for done, future in enumerate(dask_completed(futures), 1):
-                records[index[future.key]] = future.result()
-                tick(done, total)
+        _on_dask(enumerate(documents), total, scheduler, records, tick, describe)
     elif workers and workers > 1:
-        # fresh interpreters: a fork of a process whose compiled kernels run OpenMP threads is unsafe
-        with ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context("spawn")) as pool:
-            futures = {pool.submit(evaluate_point, d): i for i, d in enumerate(documents)}
-            for done, future in enumerate(as_completed(futures), 1):
-                records[futures[future]] = future.result()
-                tick(done, total)
+        _in_processes(enumerate(documents), workers, records, tick, describe)
     else:
         for i, d in enumerate(documents):
             records[i] = evaluate_point(d)
@@ -265,16 +361,94 @@ def evaluate(documents, workers=None, scheduler=None, progress=None):
     return records
 
 
-def table(grid, point_values, records):
+def _stopped(records, lost, describe, why):
+    """The :class:`StudyStopped` of a study whose points ``lost`` (indices) were in progress when ``why`` happened."""
+    shown = "; ".join(f"point {i + 1} ({describe(i)})" for i in lost[:3]) + (
+        f" and {len(lost) - 3} more" if len(lost) > 3 else "")
+    done = sum(r is not None for r in records)
+    return StudyStopped(f"{why} while designing {'one of ' if len(lost) > 1 else ''}{shown}; the study stopped "
+                        f"with {done} of {len(records)} points designed", records, lost)
+
+
+def _in_processes(numbered, workers, records, tick, describe):
+    """Local processes, each with one point at a time: when one dies, the points in progress are known."""
+    # fresh interpreters: a fork of a process whose compiled kernels run OpenMP threads is unsafe
+    with ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context("spawn")) as pool:
+        running, done = {}, 0
+        while True:
+            for i, d in itertools.islice(numbered, workers - len(running)):
+                running[pool.submit(evaluate_point, d)] = i
+            if not running:
+                return
+            finished, _ = wait(running, return_when=FIRST_COMPLETED)
+            for future in sorted(finished, key=lambda f: isinstance(f.exception(), BrokenProcessPool)):
+                if isinstance(future.exception(), BrokenProcessPool):
+                    raise _stopped(records, sorted(running.values()), describe,
+                                   "a worker process died (killed, or out of memory)")
+                records[running.pop(future)] = future.result()
+                done += 1
+            tick(done, len(records))
+
+
+def _on_dask(numbered, total, scheduler, records, tick, describe):
+    """A Dask cluster: tasks of :func:`dask_chunk` points, two tasks per worker thread submitted at a time."""
+    try:
+        from distributed import Client, KilledWorker, as_completed as dask_completed
+    except ImportError:
+        raise ImportError("--scheduler needs Dask's distributed package: pip install 'valvetrain[dask]'") from None
+    try:
+        client = Client(scheduler, timeout=CONNECT_SECONDS)
+    except (OSError, ValueError, TypeError) as exc:
+        raise ConnectionError(f"--scheduler {scheduler}: cannot connect to a Dask scheduler there ({exc})") from None
+    with client:
+        threads = max(sum(client.nthreads().values()), 1)
+        size = dask_chunk(total, threads)
+        chunks = iter(lambda: list(itertools.islice(numbered, size)), [])
+        indices, queue, done = {}, dask_completed(), 0
+
+        def submit():
+            for chunk in itertools.islice(chunks, 1):
+                future = client.submit(evaluate_points, [d for _, d in chunk], pure=False)
+                indices[future] = [i for i, _ in chunk]
+                queue.add(future)
+
+        for _ in range(2 * threads):
+            submit()
+        for future in queue:
+            lost = indices.pop(future)
+            try:
+                results = future.result()
+            except KilledWorker:
+                raise _stopped(records, lost, describe, "a Dask worker died (killed, or out of memory)") from None
+            for i, record in zip(lost, results, strict=True):
+                records[i] = record
+            done += len(lost)
+            tick(done, total)
+            submit()
+
+
+NOT_DESIGNED = {"status": "not designed", "valves": {}, "failures": None, "warnings": None,
+                "message": "the study stopped before this point was designed"}
+"""The record of a point that a stopped study did not design."""
+
+
+def table(grid, records):
     """The study's rows: the grid values, the valves' figures (``VALVE.KEY``) and the point columns.
+
+    A grid value that is a TOML array or inline table is its TOML text (:func:`toml_text`); a record that is None
+    (a point that a stopped study did not design) is :data:`NOT_DESIGNED`.
 
     Returns
     -------
     dict
         Column name -> list of values (None for an empty cell), in the order of the points.
     """
+    records = [NOT_DESIGNED if r is None else r for r in records]
+    columns = {key: [] for key, _ in grid}
+    for point in points(grid):
+        for key, value in point.items():
+            columns[key].append(toml_text(value) if isinstance(value, (list, dict)) else value)
     valves = list(dict.fromkeys(name for r in records for name in r["valves"]))
-    columns = {key: [p[key] for p in point_values] for key, _ in grid}
     for name in valves:
         for key, _ in VALVE_COLUMNS:
             columns[f"{name}.{key}"] = [r["valves"].get(name, {}).get(key) for r in records]

@@ -9,6 +9,8 @@ four-stroke engine crank angle = 2 x camshaft angle (Valve-train practical works
 conversions take the number of strokes so that a two-stroke is handled too.
 """
 
+from functools import cache
+
 import numpy as np
 
 MM = 1e-3
@@ -84,3 +86,24 @@ def to_display(value, unit):
         return value / DISPLAY_UNITS[unit]
     except KeyError:
         raise ValueError(f"unit {unit!r}: allowed {sorted(DISPLAY_UNITS)}") from None
+
+
+UNIT_SUFFIXES = (
+    ("_cm3_per_s_MPa", 1e-6 / MPA), ("_cm3", 1e-6), ("_GPa", 1e3 * MPA),
+    ("_mm_per_rad2", MM), ("_mm_per_rad", MM), ("_mm_per_deg", MM / DEG), ("_N_per_mm", 1.0 / MM), ("_kg_mm2", MM**2), ("_mm2", MM**2), ("_mm", MM),
+    ("_cam_deg", DEG), ("_deg", DEG), ("_rpm", rpm_to_rad_s(1.0)), ("_MPa", MPA),
+)
+"""Key suffixes of non-SI units and the SI value of one unit; the first suffix that ends a key applies."""
+
+
+@cache
+def si_name(key):
+    """The SI field of a key and the factor to SI: ``("throat_diameter", 1e-3)`` for ``throat_diameter_mm``.
+
+    >>> si_name("rated_speed_rpm")[0], si_name("valve_kg")
+    ('rated_speed', ('valve_kg', 1.0))
+    """
+    for suffix, factor in UNIT_SUFFIXES:
+        if key.endswith(suffix):
+            return key[: -len(suffix)], factor
+    return key, 1.0

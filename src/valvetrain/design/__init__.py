@@ -21,10 +21,10 @@ from .. import flow
 from ..checks import SEVERITIES, apply_acceptances, check, failed, ranked, valve_of
 from ..crank.pressure import PressureFileError
 from ..files import TableFileError
-from ..specification import SpecError, si
+from ..specification import Spec, SpecError, crank_geometry, si, spec_document, validate
 from ..specification.models import Dynamics
 from ..units import MM
-from .crank import CrankResults, CrankSummary, crank_stage, valve_timing
+from .crank import LAMBDA_RANGE, CrankResults, CrankSummary, crank_stage, valve_timing
 from .drive import MassResult, SpringResult, StrengthResult
 from .dynamics import DynamicsResult
 from .grinding import GrindingResult
@@ -137,7 +137,10 @@ def run(spec, laws=None, progress=None):
 
     Parameters
     ----------
-    spec : valvetrain.specification.Spec
+    spec : valvetrain.specification.Spec or dict
+        Validated again here: a specification changed with ``model_copy(update=...)``, which validates nothing, is
+        refused like a file with the same values (:meth:`Spec.replace` is the validated way to change one); a dict
+        is the tables of a specification, as :func:`tomllib.loads` gives them.
     laws : dict, optional
         ``valve name -> LiftLaw``: enter those valves' designs with a law of the caller's own.
     progress : callable, optional
@@ -150,9 +153,13 @@ def run(spec, laws=None, progress=None):
     Raises
     ------
     SpecError
-        Inputs that admit no design (a cam the law cannot make, a file that cannot be read, no spring that
-        fits), one message per problem of every valve.
+        A specification that does not validate; inputs that admit no design (a cam the law cannot make, a file
+        that cannot be read, no spring that fits), one message per problem of every valve.
     """
+    if not isinstance(spec, (Spec, dict)):
+        raise SpecError([f"run: a valvetrain.specification.Spec (from load_spec, parse_spec or Spec.replace) or a "
+                         f"dict of its tables is needed, not a {type(spec).__name__}"])
+    spec = validate(spec if isinstance(spec, dict) else spec_document(spec))
     engine, gas, output = si(spec.engine), si(spec.gas), si(spec.output)
     valves, problems, waiting = {}, [], {}
     for name, v in spec.valves.items():
@@ -181,7 +188,7 @@ def run(spec, laws=None, progress=None):
         cylinder = CylinderPressure(crank.phi, crank.columns["p_abs"], crank.pressure_source)
         for name, valve in waiting.items():
             valves[name] = with_hydraulic(valves[name], valve, engine, gas, cylinder)
-    found = [c for v in valves.values() for c in v.checks] + overlap_clearance_checks(valves)
+    found = [c for v in valves.values() for c in v.checks] + overlap_clearance_checks(valves) + engine_checks(spec)
     if {v.kind for v in valves.values()} == {"intake", "exhaust"}:
         share = sum(v.count * v.flow.throat_area for v in valves.values())
         found.append(check("sum of throat areas / piston area", share / float(flow.circle_area(engine.bore)),
@@ -226,6 +233,57 @@ def engine_record(eng):
     return EngineRecord(eng.name, eng.bore, eng.stroke, eng.rated_speed, eng.cylinders, eng.strokes,
                         flow.mean_piston_speed(eng.stroke, eng.rated_speed * 30.0 / np.pi), swept,
                         swept * eng.cylinders, float(flow.circle_area(eng.bore)))
+
+
+UNIT_SLIP_FACTOR = 3.0
+"""How far beyond a typical range of engines a figure of the engine's keys is a failure: a factor of 3 either way.
+A unit slip (a stroke in cm, x10; inches, x25.4; a speed in rev/s, x60) takes a typical value far outside, a real
+engine stays inside."""
+
+MEAN_PISTON_SPEED_RANGE = (8.0, 15.0)
+"""Typical mean piston speed at the rated speed [m/s] (Heywood (1988), section 2.2)."""
+
+STROKE_BORE_RANGE = (1.0 / 1.2, 2.0)
+"""Typical stroke / bore ratio: bore / stroke 0.8-1.2 for small and medium engines, down to about 0.5 for large
+slow-speed diesels (Heywood (1988), section 2.2)."""
+
+
+def engine_checks(spec):
+    """Plausibility of the engine's keys: the stroke / bore ratio, the mean piston speed and the crank-rod ratio
+    lambda, failures a factor of :data:`UNIT_SLIP_FACTOR` beyond their typical ranges (a unit slip, not an engine).
+
+    Parameters
+    ----------
+    spec : valvetrain.specification.Spec
+
+    Returns
+    -------
+    list of Check
+        Severity failure, the quantities naming the keys they come from.
+
+    Notes
+    -----
+    S/D = stroke / bore; c_p = S n / 30 [m/s] with S in m and n in rpm; lambda = R / L = S / (2 L).
+
+    References
+    ----------
+    Heywood (1988), section 2.2 (mean piston speed 8-15 m/s; bore / stroke 0.8-1.2, about 0.5 for large slow-speed
+    diesels); Power units manual (n.d.), eq. (1.1) (lambda = 0.24-0.31).
+    """
+    bore, stroke, rod, speed = crank_geometry(spec)
+    k = UNIT_SLIP_FACTOR
+    found = [check("engine: stroke / bore (stroke_mm / bore_mm)", stroke / bore, STROKE_BORE_RANGE[0] / k,
+                   STROKE_BORE_RANGE[1] * k, source=f"a factor of {k:g} beyond Heywood (1988), section 2.2",
+                   severity="failure"),
+             check("engine: mean piston speed (stroke_mm x rated_speed_rpm / 30000)",
+                   flow.mean_piston_speed(stroke * MM, speed), MEAN_PISTON_SPEED_RANGE[0] / k,
+                   MEAN_PISTON_SPEED_RANGE[1] * k, unit="m/s",
+                   source=f"a factor of {k:g} beyond Heywood (1988), section 2.2", severity="failure")]
+    if rod is not None:
+        found.append(check("engine: lambda = R / L (stroke_mm / 2 / rod_length_mm)", stroke / 2.0 / rod, LAMBDA_RANGE[0] / k,
+                           min(LAMBDA_RANGE[1] * k, 1.0), source=f"a factor of {k:g} beyond Power units manual (n.d.), "
+                           "eq. (1.1)", severity="failure"))
+    return found
 
 
 def sweep_designs(spec, names=None, progress=None):

@@ -23,6 +23,7 @@ from numba import njit
 
 from .. import geometry
 from ..numerics import bracketed_roots, invert_angle, level_span
+from ..units import si_name
 
 
 @dataclass(frozen=True)
@@ -94,6 +95,29 @@ class LiftLaw(ABC):
 
     #: highest derivative of the lift that is continuous at the junctions (2: acceleration continuous)
     continuity: int = 2
+
+    @classmethod
+    def from_mm_deg(cls, **keywords):
+        """The law from keywords in the units of a specification file: a keyword ending in a unit (``lift_mm``,
+        ``phi1_deg``, ``ramp_velocity_mm_per_deg``; :data:`valvetrain.units.UNIT_SUFFIXES`) is the constructor's SI
+        parameter without the unit (``lift`` [m], ``phi1`` [rad], ``ramp_velocity`` [m/rad]); the others pass as
+        they are.  The angles are the law's own: camshaft degrees.
+
+        Examples
+        --------
+        >>> from valvetrain.laws import KurzLaw
+        >>> a = KurzLaw.from_mm_deg(lift_mm=10.0, clearance_mm=0.3, ramp_velocity_mm_per_deg=0.015, phi1_deg=27.0,
+        ...                         phi2_deg=9.0, phi3_deg=48.0)
+        >>> b = KurzLaw(lift=0.01, clearance=0.0003, ramp_velocity=0.015e-3 * 180 / np.pi, phi1=np.radians(27.0),
+        ...             phi2=np.radians(9.0), phi3=np.radians(48.0))
+        >>> bool(np.allclose(a.lift(np.linspace(-1.5, 1.5, 7)), b.lift(np.linspace(-1.5, 1.5, 7)), rtol=1e-13))
+        True
+        """
+        converted = {}
+        for key, value in keywords.items():
+            name, factor = si_name(key)
+            converted[name] = value if factor == 1.0 else np.multiply(value, factor)
+        return cls(**converted)
 
     #: the law has no ramp and its flanks take up the valve clearance (the valve meets its seat at speed)
     clearance_on_flank: bool = False

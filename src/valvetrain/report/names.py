@@ -439,6 +439,13 @@ QUANTITIES = {
     "inner spring share": ("share of the inner spring", "доля внутренней пружины"),
     "sum of throat areas / piston area": ("sum of throat areas / piston area", "сумма площадей горловин / площадь поршня"),
     "crank lambda = R/L": ("λ = R/L", "λ = R/L"),
+    "stroke / bore (stroke_mm / bore_mm)": ("stroke / bore S/D (stroke_mm / bore_mm)",
+                                            "отношение хода поршня к диаметру цилиндра S/D (stroke_mm / bore_mm)"),
+    "mean piston speed (stroke_mm x rated_speed_rpm / 30000)": (
+        "mean piston speed c_p (stroke_mm x rated_speed_rpm / 30000)",
+        "средняя скорость поршня c_p (stroke_mm x rated_speed_rpm / 30000)"),
+    "lambda = R / L (stroke_mm / 2 / rod_length_mm)": ("λ = R/L (stroke_mm / 2 / rod_length_mm)",
+                                                       "λ = R/L (stroke_mm / 2 / rod_length_mm)"),
     "rod mass share at the piston pin": ("share of the rod mass at the piston pin", "доля массы шатуна на поршневом пальце"),
     "coil gap at full lift / wire diameter": ("coil gap at full lift / wire diameter",
                                               "зазор между витками при полном подъёме / диаметр проволоки"),
@@ -687,7 +694,8 @@ def unevaluated_text(check, lang):
     return f"{CANNOT_EVALUATE[LANGS.index(lang)]}: {translate(check.unevaluated, lang)}"
 
 
-CHAPTERS = {"crank": ("crank mechanism", "кривошипно-шатунный механизм"), "two-stroke": ("two-stroke", "двухтактный")}
+CHAPTERS = {"crank": ("crank mechanism", "кривошипно-шатунный механизм"), "two-stroke": ("two-stroke", "двухтактный"),
+            "engine": ("engine", "двигатель")}
 """Prefixes of the checks of a chapter (not of a valve)."""
 
 
@@ -794,6 +802,9 @@ SKELETONS.update({f"even firing, order {'{}' * n}": f"равномерное ч�
                   for n in range(1, 25)})   # the order of any number of cylinders, "1-5-3-6-2-4"
 SKELETONS.update({
     UNEVALUATED: "значение не удалось вычислить",
+    "a factor of {} beyond Heywood ({}), section {}": "в {} раза шире диапазона Heywood ({}), раздел {}",
+    "a factor of {} beyond Power units manual (n.d.), eq. ({})":
+        "в {} раза шире диапазона Power units manual (n.d.), ф. ({})",
     "a wheel of radius {} mm cannot grind a concave stretch of smaller radius":
         "круг радиусом {} мм не может шлифовать вогнутый участок меньшего радиуса",
     "master roller r_m = {} mm, bar ratio {}": "ролик копира r_m = {} мм, передаточное отношение {}",

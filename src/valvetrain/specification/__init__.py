@@ -9,8 +9,8 @@ from .messages import SpecError
 from .models import Engine, Spec, Valve
 from .si import si
 from .validate import (crank_geometry, example_spec, example_text, input_files, load_spec, parse_spec, resolve_path,
-                       spec_toml, validate)
+                       set_keys, spec_document, spec_toml, validate)
 
 __all__ = ["Cam", "Engine", "LAWS", "REGISTRY", "Spec", "SpecError", "Valve", "crank_geometry", "example_spec",
-           "example_text", "input_files", "load_spec", "main_half_angle_deg", "parse_spec", "resolve_path", "si", "spec_toml",
-           "validate"]
+           "example_text", "input_files", "load_spec", "main_half_angle_deg", "parse_spec", "resolve_path", "set_keys", "si",
+           "spec_document", "spec_toml", "validate"]

@@ -16,7 +16,7 @@ from ..files import read_indicator
 from ..spring_materials import GRADES, grade
 from .cams import Cam, layout
 from .fields import Length, Pair, _bounded, _Model, _zero_or
-from .messages import shown
+from .messages import SpecError, shown
 
 
 class Engine(_Model):
@@ -526,6 +526,36 @@ class Spec(_Model):
             raise ValueError(f"valve names {', '.join(bad)}: allowed a letter, then up to 31 letters, digits, '_' and "
                              "'-' (and not 'crank' or 'two_stroke', the names of the engine's chapters)")
         return valves
+
+    def replace(self, values):
+        """A copy with the dotted keys of ``values`` changed, validated like a specification file.
+
+        The keys are those of ``valvetrain study --grid``: the path of TOML tables, then the key, in the file's units
+        (``{"engine.bore_mm": 85.0, "valves.intake.cam.shape_factor": 0.6}``).  This is the one way to change a
+        validated specification (``model_copy(update=...)`` validates nothing; :func:`valvetrain.design.run` refuses
+        what it makes if that is not valid).
+
+        Parameters
+        ----------
+        values : dict
+            Dotted key -> value.
+
+        Returns
+        -------
+        Spec
+
+        Raises
+        ------
+        valvetrain.specification.SpecError
+            One message per problem, naming the key, the value and what is allowed.
+        """
+        from .validate import set_keys, spec_document, validate
+
+        try:
+            document = set_keys(spec_document(self), values)
+        except ValueError as exc:
+            raise SpecError([str(exc)]) from None
+        return validate(document)
 
     @model_validator(mode="after")
     def _something_to_design(self):

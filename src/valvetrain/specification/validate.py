@@ -6,6 +6,7 @@ that the angles admit but the law cannot make, a spring that does not fit) is th
 find (:func:`valvetrain.design.run`); ``valvetrain validate`` runs it.
 """
 
+import copy
 from importlib.resources import files
 from pathlib import Path
 import tomllib
@@ -188,7 +189,13 @@ indicator diagram belongs in a file of its own)."""
 
 
 def parse_spec(text, source="<string>", source_dir=None):
-    """Parse and validate TOML text; relative file names in it are read from ``source_dir``."""
+    """Parse and validate a specification: TOML text, or a document already parsed (a dict of its tables, as
+    :func:`tomllib.loads` gives it); relative file names in it are read from ``source_dir``."""
+    if isinstance(text, dict):
+        return validate(text if source_dir is None else {**text, "source_dir": str(source_dir)})
+    if not isinstance(text, str):
+        raise SpecError([f"{source}: a specification is TOML text or a dict of its tables, not a "
+                         f"{type(text).__name__}"])
     if len(text) > MAX_SPEC_CHARACTERS:
         raise SpecError([f"{source}: {len(text):,} characters; allowed at most {MAX_SPEC_CHARACTERS:,} for a "
                          "specification (put long tables in a CSV file: cam.table_file, crank.pressure_file)"])
@@ -201,6 +208,55 @@ def parse_spec(text, source="<string>", source_dir=None):
     if source_dir is not None and isinstance(data, dict):
         data["source_dir"] = str(source_dir)
     return validate(data)
+
+
+def set_keys(document, values):
+    """A deep copy of a specification ``document`` (a dict of TOML tables) with the dotted keys of ``values`` set.
+
+    A key is the path of TOML tables, then the key (``engine.bore_mm``, ``valves.intake.cam.shape_factor``); tables
+    on the path that the document lacks are made, except a valve it does not have.  The copy is not validated.
+
+    Parameters
+    ----------
+    document : dict
+    values : dict
+        Dotted key -> value.
+
+    Returns
+    -------
+    dict
+
+    Raises
+    ------
+    ValueError
+        A key naming a valve the document lacks, passing through a value, or naming a table; the message starts
+        with the key.
+    """
+    out = copy.deepcopy(document)
+    for key, value in values.items():
+        parts = key.split(".")
+        if not all(parts):
+            raise ValueError(f"{key}: an empty name in the dotted key")
+        node = out
+        for i, part in enumerate(parts[:-1]):
+            if part not in node:
+                if i == 1 and parts[0] == "valves":
+                    raise ValueError(f"{key}: the specification has no valve {part!r} (valves: "
+                                     f"{', '.join(node) or 'none'})")
+                node[part] = {}
+            node = node[part]
+            if not isinstance(node, dict):
+                raise ValueError(f"{key}: {'.'.join(parts[:i + 1])} is a value, not a table")
+        if isinstance(node.get(parts[-1]), dict):
+            raise ValueError(f"{key}: a table, not a value; give one of its keys")
+        node[parts[-1]] = value
+    return out
+
+
+def spec_document(spec):
+    """The document of a :class:`Spec` (a dict of its tables, every default written out) that :func:`validate`
+    turns back into the same specification."""
+    return {**spec.model_dump(), "source_dir": spec.source_dir}
 
 
 def load_spec(path):
