@@ -33,7 +33,7 @@ def refused(tmp_path):
         f = tmp_path / "spec.toml"
         f.write_text(text)
         out = tmp_path / "out"
-        result = CliRunner().invoke(main, [command, str(f)] + (["--out", str(out)] if command == "run" else []))
+        result = CliRunner().invoke(main, [command, str(f)] + (["--out", str(out)] if command in ("run", "sweep") else []))
         assert result.exit_code == 2, result.output
         assert not out.exists()
         return result.output

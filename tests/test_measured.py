@@ -153,9 +153,12 @@ def test_inconsistent_timing_is_a_warning(tmp_path):
     assert "intake: closes_deg against the measured table" not in flagged
 
 
-def test_bad_table_file_exits_2(tmp_path, refused):
+@pytest.mark.parametrize("command", ["run", "sweep"])
+def test_bad_table_file_exits_2(tmp_path, refused, command):
+    """Every command that designs refuses an unreadable table naming the key (sweep raised the reader's error)."""
     (tmp_path / "t.csv").write_text("angle_deg,lift_mm\n0,0\n1,abc\n")
-    assert "t.csv:3:" in refused(EXAMPLE.read_text().replace("data/measured-intake-lobe.csv", "t.csv"), "run")
+    out = refused(EXAMPLE.read_text().replace("data/measured-intake-lobe.csv", "t.csv"), command)
+    assert "valves.intake.cam.table_file:" in out and "t.csv:3:" in out
 
 
 def test_lift_and_timing_keys_required_for_other_laws(refused):

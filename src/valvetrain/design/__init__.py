@@ -164,9 +164,9 @@ def run(spec, laws=None, progress=None):
     valves, problems, waiting = {}, [], {}
     for name, v in spec.valves.items():
         try:
-            valve = si(v, spec)
-        except (TableFileError, PressureFileError) as exc:
-            problems.append(f"valves.{name}.cam.table_file: {exc}")
+            valve = _valve_view(name, v, spec)
+        except SpecError as err:
+            problems += err.problems
             continue
         if spec.crank is not None and valve.hydraulic is not None:
             waiting[name], valve = valve, replace(valve, hydraulic=None)   # opens against the cycle: after the crank
@@ -286,6 +286,15 @@ def engine_checks(spec):
     return found
 
 
+def _valve_view(name, valve, spec):
+    """The SI view of ``spec.valves[name]``, its lift table read; a file that cannot be read is a
+    :class:`SpecError` naming the key."""
+    try:
+        return si(valve, spec)
+    except (TableFileError, PressureFileError) as exc:
+        raise SpecError([f"valves.{name}.cam.table_file: {exc}"]) from None
+
+
 def sweep_designs(spec, names=None, progress=None):
     """The speed sweep alone: the named valves of a specification (default: those with a ``[dynamics]`` section, or
     every valve if none has one) designed with their section, or the default one where they have none.
@@ -320,7 +329,7 @@ def sweep_designs(spec, names=None, progress=None):
             v = v.model_copy(update={"dynamics": Dynamics()})
         tick = None if progress is None else (lambda done, total, name=name: progress(name, done, total))
         try:
-            out[name] = design_valve(name, si(v, spec), engine, gas, output, progress=tick)
+            out[name] = design_valve(name, _valve_view(name, v, spec), engine, gas, output, progress=tick)
         except SpecError as err:
             problems += err.problems
     if problems:
