@@ -118,3 +118,16 @@ def test_max_drive_load_against_a_hand_computation():
     direct = np.max(200.0 + 70e3 * 1.5 * h + 0.2458 * 1.5 * omega**2 * d2h)
     assert max_drive_load(law, omega, 1.5, 0.2458, 70e3, 200.0) == pytest.approx(direct, rel=1e-5)
     assert max_drive_load(law, 0.0, 1.5, 0.2458, 70e3, 200.0) == pytest.approx(200.0 + 70e3 * 9e-3, rel=1e-12)
+
+
+def test_a_value_not_computed_is_empty_not_nan(tmp_path):
+    """The marine example has no cam width (no contact stress) and its one-mass train does not jump up to 125 % of
+    its rated speed: both cells are empty in the printed table and the CSV and null in compare.json (they printed
+    'nan', against the label's 'empty: none in the range')."""
+    out = tmp_path / "cmp"
+    result = CliRunner().invoke(main, ["compare", str(EXAMPLES / "marine-hydraulic-exhaust.toml"), "--out", str(out)])
+    assert result.exit_code == 0, result.output
+    assert "nan" not in result.output.lower()
+    assert "nan" not in (out / "compare.csv").read_text().lower()
+    entry = json.loads((out / "compare.json").read_text())["entries"]["exhaust"]
+    assert entry["max_contact_stress_MPa"] is None and entry["jump_speed_rpm"] is None

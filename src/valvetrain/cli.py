@@ -483,7 +483,7 @@ def compare(files, out, force):
     contact stress, required spring) and their trains' dynamics (drive load, spring, reduced mass, drive stiffness,
     natural frequency, resonant harmonic, distortion, and the jump speed of a 40-speed one-mass sweep over each
     valve's [dynamics] range); writes compare.csv, compare.json and overlaid plots."""
-    from .compare import shown_metrics, with_dynamics, write_comparison
+    from .compare import table_cell, shown_metrics, with_dynamics, write_comparison
 
     specs = [_load(f) for f in files]
     if not any(spec.valves for spec in specs):
@@ -502,8 +502,8 @@ def compare(files, out, force):
     width = max(len(label) for _, label in metrics)
     click.echo(" " * width + "".join(f"  {lab[:18]:>18}" for lab in rows))
     for key, label in metrics:
-        cells = "".join(f"  {r.get(key, ''):>18}" if isinstance(r.get(key, ""), str) else f"  {r[key]:>18.6g}"
-                        for r in rows.values())
+        cells = "".join(f"  {cell:>18}" if isinstance(cell, str) else f"  {cell:>18.6g}"
+                        for cell in (table_cell(r.get(key)) for r in rows.values()))
         click.echo(f"{label:<{width}}{cells}")
     for n in notes:
         click.echo(f"note: {n}")

@@ -34,7 +34,7 @@ METRICS = [
     ("acceleration_steps", "steps of the tappet acceleration, m/s2 at cam deg from the nose"),
     ("rho_min_mm", "min radius of curvature, mm"),
     ("max_pressure_angle_deg", "max pressure angle, deg"),
-    ("max_contact_stress_MPa", "max cam contact stress, MPa"),
+    ("max_contact_stress_MPa", "max cam contact stress, MPa (empty: not computed, no parts.cam_width_mm)"),
     ("required_spring_max_N", "required spring force at full lift, N"),
     ("required_spring_preload_N", "required preload, N"),
 ]
@@ -102,7 +102,7 @@ def entry(valve):
         "acceleration_steps": "; ".join(step_text(st) for st in valve.cam.acceleration_steps) or "none",
         "rho_min_mm": s["cam"]["rho_min_mm"],
         "max_pressure_angle_deg": s["cam"].get("max_pressure_angle_deg", 0.0),
-        "max_contact_stress_MPa": stress["value"] if stress else float("nan"),
+        "max_contact_stress_MPa": stress["value"] if stress else None,
         "required_spring_max_N": s["spring"]["required_max_force_N"],
         "required_spring_preload_N": s["spring"]["required_preload_N"],
     }
@@ -173,7 +173,7 @@ def dynamics_entry(valve):
         "harmonic_force_N": r.force,
         "amplitude_mm": r.amplitude / MM,
         "distortion_percent": r.distortion,
-        "jump_speed_rpm": d.jump_speed / rpm_to_rad_s(1.0),
+        "jump_speed_rpm": None if not np.isfinite(d.jump_speed) else d.jump_speed / rpm_to_rad_s(1.0),
         "sweep_speed_range_rpm": f"{d.speed_range[0] / rpm_to_rad_s(1.0):.0f}-{d.speed_range[1] / rpm_to_rad_s(1.0):.0f}"
                                  f" ({d.speeds})",
     }
@@ -223,7 +223,7 @@ def write_comparison(designs, out, inputs=(), force=False):
         labels = list(rows)
         metrics = shown_metrics(rows)
         table = {"quantity": [label for _, label in metrics]}
-        table.update({lab: [_cell(rows[lab].get(key, np.nan)) for key, _ in metrics] for lab in labels})
+        table.update({lab: [table_cell(rows[lab].get(key)) for key, _ in metrics] for lab in labels})
         write_csv(tmp / "compare.csv", table)
         (tmp / "compare.json").write_text(json_text({"entries": rows, "notes": notes}), encoding="utf-8")
         quantities = (("lift", 1.0 / MM, "tappet lift, mm"), ("velocity", 1.0, "tappet velocity, m/s"),
@@ -256,8 +256,9 @@ def shown_metrics(rows):
     return METRICS + [(key, label) for key, label in DYNAMICS_METRICS if any(key in r for r in rows.values())]
 
 
-def _cell(value):
-    return value if isinstance(value, str) else float(value)
+def table_cell(value):
+    """A table cell: a text as it is, a number as a float, a missing value (None) empty."""
+    return "" if value is None else value if isinstance(value, str) else float(value)
 
 
 def _dynamics_plot(designs, path):
