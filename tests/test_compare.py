@@ -1,6 +1,7 @@
 """valvetrain compare: laws side by side at equal lift and duration (issue 5)."""
 
 import json
+import re
 from pathlib import Path
 
 from click.testing import CliRunner
@@ -127,7 +128,7 @@ def test_a_value_not_computed_is_empty_not_nan(tmp_path):
     out = tmp_path / "cmp"
     result = CliRunner().invoke(main, ["compare", str(EXAMPLES / "marine-hydraulic-exhaust.toml"), "--out", str(out)])
     assert result.exit_code == 0, result.output
-    assert "nan" not in result.output.lower()
-    assert "nan" not in (out / "compare.csv").read_text().lower()
+    assert not re.search(r"\bnan\b", result.output, re.I)
+    assert not re.search(r"\bnan\b", (out / "compare.csv").read_text(), re.I)
     entry = json.loads((out / "compare.json").read_text())["entries"]["exhaust"]
     assert entry["max_contact_stress_MPa"] is None and entry["jump_speed_rpm"] is None
