@@ -399,7 +399,7 @@ class MultiMassTrain:
 
 
 def natural_modes(network, held=(), opened=()):
-    """Natural frequencies [rad/s, ascending] and mode shapes of a network without damping.
+    r"""Natural frequencies [rad/s, ascending] and mode shapes of a network without damping.
 
     Parameters
     ----------

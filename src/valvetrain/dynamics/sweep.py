@@ -9,8 +9,8 @@ revolution repeats (so that the residual vibration of the previous event is incl
 Events (Shang Hanji (1988), sections 3.1-3.2):
 
 * follower separation (jump, 飞脱): the cam contact force is zero and the valve at or above the
-  cam while the cam's lift is positive (the rigid valve lift k h - x0 > 0), anywhere in the
-  revolution; the jump speed of a sweep is the zero of the smallest such contact force,
+  cam while the cam's lift is positive (the rigid valve lift k h - x0 > 0), from the start of the
+  cam's lift to the valve's first return to its seat; the jump speed of a sweep is the zero of the smallest such contact force,
   interpolated between the speeds;
 * first seating: the first downward crossing of y = 0 after the valve's largest lift, located
   inside the step by carrying the last free state to y = 0; the seating velocity is dy/dt there;
@@ -226,35 +226,54 @@ def bounce(lift, first_seating, tolerance=BOUNCE_TOLERANCE):
     return (float(max(after.max(), 0.0)) if returns.size else 0.0), len(returns)
 
 
+def lift_event(kinematic, lift):
+    """Mask of the cam's lift event as the valve lives it: from the first angle where the cam's lift is positive to
+    the valve's first return to its seat after it (a downward crossing of y = 0), or to the end of the record.
+
+    A valve that rebounds from its seat after that return bounces; before it, the cam should be carrying the valve.
+
+    >>> lift_event(np.array([-1.0, 1.0, 2.0, 1.0, 0.5, -1.0]), np.array([0.0, 0.5, 1.5, 0.2, -0.1, 0.3])).tolist()
+    [False, True, True, True, False, False]
+    """
+    index = np.arange(lift.size)
+    rising = np.flatnonzero(kinematic > 0.0)
+    if rising.size == 0:
+        return np.zeros(lift.size, dtype=bool)
+    start = int(rising[0])
+    down = np.flatnonzero((lift[1:] <= 0.0) & (lift[:-1] > 0.0) & (index[1:] > start)) + 1
+    end = int(down[0]) if down.size else lift.size
+    return (index >= start) & (index < end)
+
+
 def separation_mask(contact, kinematic, lift):
-    """Follower separation (jump): no contact force, and the valve at or above the cam, while the cam's lift is positive.
+    """Follower separation (jump): no contact force, and the valve at or above the cam, while the cam's lift is
+    positive during the lift event (:func:`lift_event`).
 
     Only the cam's lift decides whether the cam should be carrying the valve: a valve thrown above the cam, or one
-    that never comes down to it, has jumped whether or not it has seated since; a valve that rebounds from its seat
-    while the cam is on its base circle (or in its lash) bounces, it does not jump.  The valve must be at or above
-    the cam's rigid lift (the contact's gap open): a contact whose damping releases it an instant before the gap
-    opens, while the cam lowers a valve that rests on (or rocks on) its seat, has not separated.
+    that never comes down to it while the cam lifts, has jumped; a valve that rebounds from its seat after the event
+    has returned it there bounces, it does not jump.  The valve must be at or above the cam's rigid lift (the
+    contact's gap open): a contact whose damping releases it an instant before the gap opens has not separated.
 
-    >>> separation_mask(np.array([0.0, 0.0, 0.0, 5.0, 0.0]), np.array([1e-3, -1e-4, 1e-3, 1e-3, 3e-6]),
-    ...                 np.array([2e-3, 1e-4, -1e-6, 1e-3, 4e-7])).tolist()
-    [True, False, False, False, False]
+    >>> separation_mask(np.array([0.0, 0.0, 5.0, 0.0, 0.0]), np.array([-1e-4, 1e-3, 1e-3, 3e-6, 2e-6]),
+    ...                 np.array([1e-4, 2e-3, 1e-3, -1e-7, 4e-6])).tolist()
+    [False, True, False, False, False]
     """
-    return (contact <= 0.0) & (kinematic > 0.0) & (lift >= kinematic)
+    return (contact <= 0.0) & (kinematic > 0.0) & (lift >= kinematic) & lift_event(kinematic, lift)
 
 
-def lowest_lifting_force(contact, kinematic, lift, before, separated):
+def lowest_lifting_force(contact, kinematic, lift, separated):
     """Smallest cam contact force while the cam carries the open valve [N]: 0 with a separation, else the least where
-    the cam's lift is positive and the valve is off its seat before the first seating (``before``, a mask; after it
-    the cam lowers a seated valve to its base circle and the force falls to 0 without a separation); nan if the
+    the cam's lift is positive and the valve is off its seat during the lift event (:func:`lift_event`; after it
+    the cam lowers the seated valve to its base circle and the force falls to 0 without a separation); nan if the
     valve never leaves its seat while the cam lifts.
 
-    >>> float(lowest_lifting_force(np.array([300.0, 50.0, 80.0, 2.0]), np.array([-1e-4, 1e-3, 2e-3, 1e-6]),
-    ...                            np.array([0.0, 1e-3, 2e-3, 1e-7]), np.array([1, 1, 1, 0], dtype=bool), False))
+    >>> float(lowest_lifting_force(np.array([300.0, 50.0, 80.0, 2.0, 1.0]), np.array([-1e-4, 1e-3, 2e-3, 2e-6, 1e-6]),
+    ...                            np.array([0.0, 1e-3, 2e-3, -1e-7, 1e-7]), False))
     50.0
     """
     if separated:
         return 0.0
-    lifting = (kinematic > 0.0) & (lift > 0.0) & before
+    lifting = (kinematic > 0.0) & (lift > 0.0) & lift_event(kinematic, lift)
     return float(contact[lifting].min()) if lifting.any() else np.nan
 
 
@@ -271,7 +290,7 @@ def speed_result(cam_speed, theta, lift, velocity, kinematic, contact, seat, spr
     height = float(max(lift[i_seat:].max(), 0.0)) if i_seat < lift.size else 0.0
     return SpeedResult(float(cam_speed), theta, lift, velocity, kinematic, contact, seat, spring, contact * slope,
                        separation, jumps, seat_angle, seat_velocity, height, count, surge, clash,
-                       lowest_lifting_force(contact, kinematic, lift, np.arange(lift.size) < i_seat, intervals.size > 0),
+                       lowest_lifting_force(contact, kinematic, lift, intervals.size > 0),
                        int(revolutions), bool(converged))
 
 
@@ -474,8 +493,7 @@ def sweep_size(network, cam_speeds, revolutions, step_deg):
             n_sub.size * steps * recorded * 8)
 
 
-def sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, progress=None, chunk=None,
-          bounce_tolerance=BOUNCE_TOLERANCE):
+def sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, progress=None, bounce_tolerance=BOUNCE_TOLERANCE):
     """Simulate an elastic train on a lift law at every camshaft speed of a sweep.
 
     Parameters
@@ -495,8 +513,6 @@ def sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, progress=None, ch
         sub-steps (:func:`substeps`).
     progress : callable, optional
         ``progress(done, total)`` after each block of speeds (the compiled kernel itself never calls Python).
-    chunk : None
-        Unused; kept for callers of the former chunked interface.
     bounce_tolerance : float
         Lift that counts as a bounce [m].
 
