@@ -21,7 +21,7 @@ from ..dynamics.models import (CoilSpring, camshaft_stiffness, direct_train, nat
                                pushrod_stiffness, pushrod_train, rocker_train, series)
 from ..dynamics.perturbation import perturbation_parameter
 from ..dynamics.resonance import resonance
-from ..dynamics.sweep import sweep
+from ..dynamics.sweep import sweep, sweep_size
 from ..specification import SpecError
 from ..specification.cams import layout
 from ..units import DEG, MM, cam_per_crank, rpm_to_rad_s, to_display
@@ -41,6 +41,13 @@ Shang Hanji (1988, ch. 3); published pushrod trains have 3000-20000 N/mm at the 
 
 SPEED_RANGE = (0.1, 1.25)
 """Default speed range as fractions of the rated speed: idle to over-speed."""
+
+MAX_SWEEP_WORK = 2e9
+"""Most integrator steps x network elements of a sweep without ``allow_large_sweep`` (about 30 s on one core of
+this package's reference machine at 6.5e7 a second; the revolutions counted at their cap)."""
+
+MAX_SWEEP_BYTES = 1e9
+"""Most bytes of the recorded revolutions of a sweep without ``allow_large_sweep`` (1 GB)."""
 
 SEATING_VELOCITY_MAX = 0.5
 """Working limit of the seating velocity [m/s] (0.3-0.5 m/s in the valve-train literature)."""
@@ -62,7 +69,8 @@ class DynamicsParameters:
     lash: float = quantity("lash_mm", "mm", "valve clearance at the valve, k h0")
     seat_stiffness: float = quantity("seat_stiffness_N_per_mm", "N/mm", "c_s, valve seat contact")
     seat_damping_ratio: float = quantity("seat_damping_ratio", label="zeta_s of the seat, C_s = 2 zeta_s sqrt(c_s M)")
-    revolutions: int = quantity("revolutions", label="camshaft revolutions per speed, the last one recorded")
+    revolutions: int = quantity("revolutions", label="most camshaft revolutions per speed (a speed stops once its "
+                                "motion repeats), the last one recorded")
     step: float = quantity("step_cam_deg", "cam deg", "recording and base integration step")
     coils_per_spring: int = quantity("coils_per_spring", label="coil masses per spring (multi)")
     links: tuple[float, ...] = quantity("link_stiffnesses_N_per_mm", "N/mm", "drive links from the cam to the valve, "
@@ -248,6 +256,22 @@ def _coil_springs(spring_record, coils):
             for r in recs]
 
 
+def multi_springs(dyn, spring_record, rate, preload):
+    """The springs of the multi-mass train and the notes on them: the designed spring(s), or one spring of the rate
+    K [N/m] and preload F0 [N] of :func:`train_spring` when [dynamics] gives any of the spring's keys (its active-coil
+    mass ``spring_mass_kg``, else the designed springs' together; its coil clash is then not monitored)."""
+    designed = _coil_springs(spring_record, dyn.coils_per_spring)
+    given = (dyn.spring_rate, dyn.spring_preload_N, dyn.spring_mass_kg)
+    if all(v is None for v in given):
+        return designed, [f"coil masses: the designed spring's active coils in {dyn.coils_per_spring} masses per "
+                          "spring, half a segment on the valve"]
+    mass = sum(sp.mass for sp in designed) if dyn.spring_mass_kg is None else float(dyn.spring_mass_kg)
+    told = "the designed springs' active coils" if dyn.spring_mass_kg is None else "given ([dynamics] spring_mass_kg)"
+    return [CoilSpring(rate, preload, mass, 0.0, int(dyn.coils_per_spring))], [
+        f"one spring of K = {rate * MM:.5g} N/mm and F0 = {preload:.5g} N, coil mass {mass:.5g} kg {told}, in "
+        f"{dyn.coils_per_spring} masses, half a segment on the valve; its coil clash is not monitored"]
+
+
 def nose_acceleration(law, cam_speed, rocker_ratio, points=3601):
     """Smallest valve acceleration of the lift event j_min = i_k omega_cam^2 min h''(theta) [m/s^2] (at the nose for
     a symmetric law), on ``points`` evenly spaced angles of the event."""
@@ -256,7 +280,8 @@ def nose_acceleration(law, cam_speed, rocker_ratio, points=3601):
 
 
 def train_spring(dyn, valve, law, line, mass, cam_speed, at):
-    """Rate K [N/m] and preload F0 [N] of the one-mass train, and the note on where they come from.
+    """Rate K [N/m] and preload F0 [N] of the train (the spring of the one-mass train, or of the multi-mass train when
+    [dynamics] gives it), and the note on where they come from.
 
     ``spring_rate_N_per_mm`` and ``spring_preload_N`` of [dynamics] replace the designed spring's; a preload given
     without a rate sizes the rate by Valve-train dynamics article (n.d.), step 4a: K = (K_3 M |j_min| - F0) / h_max at
@@ -307,11 +332,11 @@ def build_train(dyn, valve, law, drive, at, cam_speed=None):
     if dyn.model == "1dof":
         train = one_mass_train(mass, c, rate, preload, k, lash, **kw)
     else:
-        train = _multi_train(valve, links, _coil_springs(drive.spring, dyn.coils_per_spring), lash, kw, at)
+        springs, spring_notes = multi_springs(dyn, drive.spring, rate, preload)
+        train = _multi_train(valve, links, springs, lash, kw, at)
         net = train.network()
         nodes = {n: float(m) for n, m in zip(net.names, net.mass, strict=True)}
-        notes.append(f"coil masses: the designed spring's active coils in {dyn.coils_per_spring} masses per spring, "
-                     "half a segment on the valve")
+        notes.extend(spring_notes)
     params = DynamicsParameters(dyn.model, layout(valve), mass, c, dyn.damping_ratio, rate, preload, k, lash,
                                 dyn.seat_stiffness, dyn.seat_damping_ratio, dyn.revolutions, dyn.step,
                                 dyn.coils_per_spring, links, names, nodes, tuple(notes))
@@ -353,7 +378,7 @@ def finite_or_none(x):
 def speed_record(r, speed, epsilon):
     """A :class:`SpeedRecord` of a :class:`~valvetrain.dynamics.sweep.SpeedResult` at engine speed [rad/s]."""
     surge = float(r.surge_amplitude.max()) if r.surge_amplitude.size else None
-    clash = float(r.clash_margin) if np.isfinite(r.clash_margin) and r.surge_amplitude.size else None
+    clash = float(r.clash_margin) if np.isfinite(r.clash_margin) else None
     return SpeedRecord(float(speed), float(epsilon), float(r.min_contact_force), float(r.contact_force.max()),
                        float(r.seating_velocity), float(r.bounce_height), int(r.bounce_count),
                        float(np.abs(r.lift_error).max()),
@@ -442,7 +467,8 @@ def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, 
     Raises
     ------
     SpecError
-        A multi-mass train without the part masses it needs, or a drive stiffness above that of its parts.
+        A multi-mass train without the part masses it needs, a drive stiffness above that of its parts, or a sweep
+        estimated above :data:`MAX_SWEEP_WORK` or :data:`MAX_SWEEP_BYTES` without ``allow_large_sweep``.
     """
     at = f"valves.{name}"
     to_cam = cam_per_crank(engine.strokes)
@@ -457,6 +483,12 @@ def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, 
     params = replace(params, estimates=tuple(notes))
     speeds = np.linspace(low, high, dyn.speeds)
     step_deg = dyn.step / DEG
+    work, size = sweep_size(train.network(), speeds * to_cam, dyn.revolutions, step_deg)
+    if not dyn.allow_large_sweep and (work > MAX_SWEEP_WORK or size > MAX_SWEEP_BYTES):
+        raise SpecError([f"{at}.dynamics: speeds = {dyn.speeds} x revolutions = {dyn.revolutions} at step_cam_deg = "
+                         f"{step_deg:g} is about {work:.3g} integrator steps x elements (allowed {MAX_SWEEP_WORK:.3g}) "
+                         f"and {size / 1e6:.0f} MB of recorded revolutions (allowed {MAX_SWEEP_BYTES / 1e6:.0f} MB); "
+                         "fewer speeds or revolutions or a larger step, or allow_large_sweep = true to run it"])
     if progress is not None:
         progress(0, dyn.speeds)
     result = sweep(law, train, speeds * to_cam, dyn.revolutions, step_deg, progress=progress)
@@ -531,7 +563,9 @@ SWEEP_COLUMNS = [
     ("jump_to_cam_deg", "last separation ends [cam deg]"), ("max_lift_error_mm", "largest |lift - rigid lift| [mm]"),
     ("revolutions", "camshaft revolutions until the motion repeated"),
 ]
-"""Columns of ``tables/NAME_dynamics.csv`` (multi: also ``max_surge_mm`` and ``coil_clash_margin_mm``)."""
+"""Columns of ``tables/NAME_dynamics.csv`` (multi: also ``max_surge_mm`` with coil masses, and
+``coil_clash_margin_mm`` where the spring's closing is monitored: a massless spring, coils_per_spring = 0, has no
+surge but still goes solid)."""
 
 
 def sweep_columns(d):
@@ -550,8 +584,9 @@ def sweep_columns(d):
                               for r in rows]
     out["max_lift_error_mm"] = [r["max_lift_error_mm"] for r in rows]
     out["revolutions"] = [r["revolutions"] for r in rows]
-    if d.model == "multi":
+    if d.model == "multi" and d.parameters.coils_per_spring > 0:
         out["max_surge_mm"] = [r.get("max_surge_mm", np.nan) for r in rows]
+    if any("coil_clash_margin_mm" in r for r in rows):
         out["coil_clash_margin_mm"] = [r.get("coil_clash_margin_mm", np.nan) for r in rows]
     return out
 

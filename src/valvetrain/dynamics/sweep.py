@@ -493,7 +493,8 @@ def sweep_size(network, cam_speeds, revolutions, step_deg):
             n_sub.size * steps * recorded * 8)
 
 
-def sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, progress=None, bounce_tolerance=BOUNCE_TOLERANCE):
+def sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, progress=None, bounce_tolerance=BOUNCE_TOLERANCE,
+          tolerance=STATE_TOLERANCE):
     """Simulate an elastic train on a lift law at every camshaft speed of a sweep.
 
     Parameters
@@ -515,6 +516,9 @@ def sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, progress=None, bo
         ``progress(done, total)`` after each block of speeds (the compiled kernel itself never calls Python).
     bounce_tolerance : float
         Lift that counts as a bounce [m].
+    tolerance : float
+        Largest change of the state over a revolution at which a speed repeats [m] (:data:`STATE_TOLERANCE`; a
+        negative value runs every speed for ``revolutions``).
 
     Returns
     -------
@@ -548,7 +552,7 @@ def sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, progress=None, bo
     def run(j):
         idx = order[start[j]:start[j + 1]]
         integrate_block(idx, speeds, int(n_sub[idx[0]]), dtheta, u, du, per_step, steps, int(revolutions),
-                        STATE_TOLERANCE, rate, inv_mass, net.x_init, ra, rb, net.stiffness, net.damping, net.gap,
+                        tolerance, rate, inv_mass, net.x_init, ra, rb, net.stiffness, net.damping, net.gap,
                         net.preload, net.unilateral, rec_nodes, rec_elems, net.clash_gap, net.valve,
                         net.surge_weight, out_x, out_v, out_a, out_f, out_clash, out_surge, out_revs)
         return idx.size
