@@ -1,4 +1,4 @@
-"""The headline events of a sweep at the default step: seating velocity and jump speed (issue 20, item 1)."""
+"""The headline events of a sweep at the default step: seating velocity, jump speed, bounce onset (issue 20, item 1)."""
 
 from types import SimpleNamespace
 
@@ -108,3 +108,16 @@ def test_a_follower_that_never_touches_the_lifting_cam_has_jumped():
     first_seat = seating(r.theta, r.lift, r.velocity)[0]
     assert first_seat < np.flatnonzero(lifting)[0]
     assert r.jump_intervals.size and r.min_contact_force == 0.0
+
+
+def test_bounce_onset_does_not_move_with_the_step():
+    """The bounce onset speed is where the bounce height, continuous in the speed, crosses 1 um; the seat's closing is
+    located inside the step, so the height converges with the step and halving the step moves the onset by much
+    less than the 40 cam rpm between the speeds of the sweep (the first speed with a counted bounce moves by whole
+    speed steps).  Reference: the same sweep at half the step, 0.05 cam deg."""
+    law, train = spec12()
+    speeds = np.linspace(600, 1600, 26) * RPM
+    coarse, fine = (sweep(law, train, speeds, revolutions=2, step_deg=step).headline()["bounce_onset_speed"]
+                    for step in (0.1, 0.05))
+    assert np.isfinite(coarse) and speeds[0] < coarse < speeds[-1]
+    assert abs(coarse - fine) < 0.1 * (speeds[1] - speeds[0])

@@ -83,8 +83,8 @@ def _forces(x, v, inv_mass, ra, rb, k, d, gap, pre, uni, acc, force):
 
 @njit(cache=True, nogil=True)
 def integrate_block(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_per_rev, max_revolutions, tolerance,
-                    rate, inv_mass, x_init, ra, rb, k, d, gap, pre, uni, rec_nodes, rec_elems, clash_gap, surge_ref,
-                    surge_w, out_x, out_v, out_a, out_f, out_clash, out_surge, out_revs):
+                    rate, inv_mass, x_init, ra, rb, k, d, gap, pre, uni, closing, rec_nodes, rec_elems, clash_gap,
+                    surge_ref, surge_w, out_x, out_v, out_a, out_f, out_clash, out_surge, out_revs):
     """Integrate the speeds ``idx`` of one block (all with ``n_sub`` sub-steps) in lockstep until each repeats.
 
     Every revolution is recorded over the previous one; after each revolution the state of every speed is compared
@@ -121,6 +121,9 @@ def integrate_block(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_p
         Element end rows (:func:`rows`).
     k, d, gap, pre, uni : ndarray (E,)
         Element stiffness [N/m], damping [N s/m], gap [m], preload [N], unilateral flag.
+    closing : int
+        A unilateral element whose closing is located inside the step (the valve seat; -1: none): a speed whose
+        element closes during a step redoes that step in two, to the closing and from it (:func:`_split_step`).
     rec_nodes, rec_elems : ndarray of int
         Nodes whose position, velocity and acceleration, and elements whose force, are recorded.
     clash_gap : ndarray (E,)
@@ -144,6 +147,7 @@ def integrate_block(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_p
     x = np.zeros((rows, bsize))
     v = np.zeros((rows, bsize))
     x0, v0 = np.zeros((n, bsize)), np.zeros((n, bsize))
+    xb, vb = np.zeros((rows, bsize)), np.zeros((rows, bsize))
     xs, vs = np.zeros((rows, bsize)), np.zeros((rows, bsize))
     k1v, k2v, k3v, k4v = (np.zeros((rows, bsize)), np.zeros((rows, bsize)), np.zeros((rows, bsize)),
                           np.zeros((rows, bsize)))
@@ -180,6 +184,9 @@ def integrate_block(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_p
                 x[cam, s] = u0
                 v[cam, s] = om[s] * d0
             _forces(x, v, im, ra, rb, k, d, gap, pre, uni, k1v, force)
+            if closing >= 0:
+                xb[:, :] = x
+                vb[:, :] = v
             if step % n_sub == 0:
                 _record(step // n_sub, idx, x, v, k1v, force, ra, rb, rec_nodes, rec_elems, clash_gap, surge_ref,
                         surge_w, out_x, out_v, out_a, out_f, out_clash, out_surge)
@@ -210,6 +217,12 @@ def integrate_block(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_p
                 for s in range(bsize):
                     x[i, s] += dt[s] / 6.0 * (v[i, s] + 2.0 * k2x[i, s] + 2.0 * k3x[i, s] + vs[i, s])
                     v[i, s] += dt[s] / 6.0 * (k1v[i, s] + 2.0 * k2v[i, s] + 2.0 * k3v[i, s] + k4v[i, s])
+            if closing >= 0:
+                ia, ib, ge = ra[closing], rb[closing], gap[closing]
+                for s in range(bsize):
+                    if xb[ia, s] - xb[ib, s] - ge <= 0.0 and x[ia, s] - x[ib, s] - ge > 0.0:
+                        _split_step(s, xb, vb, k1v, x, v, dt[s], om[s], dtheta / n_sub, u0, d0, u2, d2, closing,
+                                    im, ra, rb, k, d, gap, pre, uni)
             j0 = j2
         done = True
         for s in range(bsize):
@@ -223,6 +236,68 @@ def integrate_block(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_p
                     done = False
         if done:
             break
+
+
+@njit(cache=True, nogil=True)
+def _lane_rk4(xl, vl, h, fa, fb, step_angle, om, u0, d0, u2, d2, im, ra, rb, k, d, gap, pre, uni):
+    """One RK4 step of a single speed (state ``xl``, ``vl`` of shape (rows, 1), updated in place) from the fraction
+    ``fa`` to ``fb`` of an angle step, the cam on the cubic Hermite of its samples and slopes at both ends."""
+    rows = xl.shape[0]
+    n = rows - 2
+    ne = ra.size
+    acc = np.zeros((4, rows, 1))
+    xs, vs, kx = np.zeros((rows, 1)), np.zeros((rows, 1)), np.zeros((4, rows, 1))
+    force = np.zeros((ne, 1))
+    fm = 0.5 * (fa + fb)
+    for q in range(4):
+        f = fa if q == 0 else (fm if q < 3 else fb)
+        f2, f3 = f * f, f * f * f
+        if q == 0:
+            for i in range(rows):
+                xs[i, 0] = xl[i, 0]
+                vs[i, 0] = vl[i, 0]
+        xs[n + 1, 0] = ((2 * f3 - 3 * f2 + 1) * u0 + (f3 - 2 * f2 + f) * step_angle * d0 + (-2 * f3 + 3 * f2) * u2
+                        + (f3 - f2) * step_angle * d2)
+        vs[n + 1, 0] = om * ((6 * f2 - 6 * f) * u0 / step_angle + (3 * f2 - 4 * f + 1) * d0
+                             + (-6 * f2 + 6 * f) * u2 / step_angle + (3 * f2 - 2 * f) * d2)
+        _forces(xs, vs, im, ra, rb, k, d, gap, pre, uni, acc[q], force)
+        for i in range(n):
+            kx[q, i, 0] = vs[i, 0]
+            if q < 3:
+                c = 0.5 * h if q < 2 else h
+                xs[i, 0] = xl[i, 0] + c * vs[i, 0]
+                vs[i, 0] = vl[i, 0] + c * acc[q, i, 0]
+    for i in range(n):
+        xl[i, 0] += h / 6.0 * (kx[0, i, 0] + 2.0 * kx[1, i, 0] + 2.0 * kx[2, i, 0] + kx[3, i, 0])
+        vl[i, 0] += h / 6.0 * (acc[0, i, 0] + 2.0 * acc[1, i, 0] + 2.0 * acc[2, i, 0] + acc[3, i, 0])
+
+
+@njit(cache=True, nogil=True)
+def _split_step(s, xb, vb, acc, x, v, dt, om, step_angle, u0, d0, u2, d2, e, im, ra, rb, k, d, gap, pre, uni):
+    """Redo the step of speed ``s`` in which element ``e`` closed: RK4 from the start (``xb``, ``vb``, acceleration
+    ``acc``) to the closing, located by the Taylor series of the element's gap, then RK4 from it to the step's end;
+    the result replaces column ``s`` of ``x``, ``v``.  A contact law that switches inside a step (the seat's damping
+    force jumps from 0 at the closing) costs a fixed-step scheme its order; split there, each part is smooth."""
+    rows = xb.shape[0]
+    ia, ib = ra[e], rb[e]
+    g0 = xb[ia, s] - xb[ib, s] - gap[e]
+    g1 = vb[ia, s] - vb[ib, s]
+    g2 = acc[ia, s] - acc[ib, s]
+    tau = dt * g0 / (g0 - (x[ia, s] - x[ib, s] - gap[e]))
+    disc = g1 * g1 - 2.0 * g2 * g0
+    if disc >= 0.0 and g1 + np.sqrt(disc) > 0.0:
+        root = -2.0 * g0 / (g1 + np.sqrt(disc))          # g0 + g1 t + g2 t^2 / 2 = 0, the root nearest -g0 / g1
+        if 0.0 < root < dt:
+            tau = root
+    xl, vl = np.zeros((rows, 1)), np.zeros((rows, 1))
+    for i in range(rows):
+        xl[i, 0] = xb[i, s]
+        vl[i, 0] = vb[i, s]
+    _lane_rk4(xl, vl, tau, 0.0, tau / dt, step_angle, om, u0, d0, u2, d2, im, ra, rb, k, d, gap, pre, uni)
+    _lane_rk4(xl, vl, dt - tau, tau / dt, 1.0, step_angle, om, u0, d0, u2, d2, im, ra, rb, k, d, gap, pre, uni)
+    for i in range(rows - 2):
+        x[i, s] = xl[i, 0]
+        v[i, s] = vl[i, 0]
 
 
 @njit(cache=True, nogil=True)
