@@ -8,7 +8,7 @@ design runs it (all stages, the law's records, the checks).  Best of the repeats
 
 import time
 
-from valvetrain.design.drive import drive_stage
+from valvetrain.design.drive import drive_stage, strength_stage
 from valvetrain.design.valve import design_valve, flow_stage, law_stage, profile_stage, valve_checks
 from valvetrain.specification import example_spec, si
 
@@ -29,7 +29,8 @@ def main():
         profile = profile_stage(cam, valve, output)
         valve_checks(cam, flow, profile, valve, engine, (valve.opens, valve.closes))
         t1 = time.perf_counter()
-        drive_stage(valve, gas, cam)
+        drive = drive_stage(valve, gas, cam)
+        strength_stage(valve, gas, engine, cam, drive)
         t2 = time.perf_counter()
         design_valve("intake", valve, engine, gas, output)
         t3 = time.perf_counter()
@@ -38,7 +39,7 @@ def main():
         designs.append(t3 - t2)
     print(f"law + flow + profile + checks of one valve: best {min(stages) * 1e3:6.2f} ms, "
           f"median {sorted(stages)[len(stages) // 2] * 1e3:6.2f} ms")
-    print(f"the same with the drive (masses, springs, strength): best {min(whole) * 1e3:6.2f} ms")
+    print(f"the same with the drive (masses, springs, strength over the speed range): best {min(whole) * 1e3:6.2f} ms")
     print(f"design_valve (all stages, records and checks): best {min(designs) * 1e3:6.2f} ms, "
           f"median {sorted(designs)[len(designs) // 2] * 1e3:6.2f} ms")
 

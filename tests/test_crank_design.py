@@ -157,7 +157,7 @@ def test_every_table_names_its_unit(tmp_path):
     for f in files:
         header = next(line for line in f.read_text().splitlines() if not line.startswith("#")).split(",")
         for col in header:
-            assert col == "segment" or col.endswith(UNITS), (f.name, col)
+            assert col in ("segment", "load") or col.endswith(UNITS), (f.name, col)   # the two text columns
         assert not any(col.endswith(("_m", "_kN")) for col in header), f.name
 
 

@@ -3,10 +3,11 @@ analytic travelling waves and the Joukowsky pressure rise, the drive against its
 and the volume (mass) balance of the chambers and the pipe."""
 
 import math
-import time
+from dataclasses import replace
 
 import numpy as np
 import pytest
+from scipy.optimize import brentq
 
 from valvetrain.hydraulic import (PRESSURE, VELOCITY, Actuator, Fluid, HydraulicDrive, Pipe, Pump, Valve,
                                   pipe_transient, simulate, speed_sweep, wave_speed)
@@ -172,14 +173,6 @@ def test_relief_valve_limits_the_pressure(law):
     assert free.max_pressure > 1.1e6 and limited.max_pressure < free.max_pressure
 
 
-def test_one_cycle_runs_well_under_a_second(law):
-    simulate(law, drive(), OMEGA)                                # compiled (or loaded from the cache)
-    t = time.perf_counter()
-    r = simulate(law, drive(reaches=40), OMEGA)
-    assert time.perf_counter() - t < 0.25
-    assert r.angle[-1] - r.angle[0] >= 2 * math.pi - 1e-9
-
-
 def test_speed_sweep_is_the_single_runs_and_the_loss_grows_with_speed(law):
     """Each entry of the sweep is the single revolution at that speed; a faster cam leaves the compressible
     column less time: the opening delay in camshaft angle grows with speed (no leakage)."""
@@ -205,3 +198,67 @@ def test_slow_cam_loses_the_static_compression_of_the_column(law):
     y = r.rigid_lift.max()
     loss = c * (d.back_pressure - d.initial_pressure + (f0 + k * y) / aa) / aa / (1 + c * k / aa**2)
     assert r.lift_loss == pytest.approx(loss, rel=2e-3)
+
+
+def _compliance(d):
+    """Liquid compliance of the drive, chambers and pipe, C = (V_p + V_a) / K + A L / (rho a^2) [m^3/Pa]."""
+    return (d.pump.volume + d.actuator.volume) / d.fluid.bulk_modulus + d.pipe.area * d.pipe.length / (
+        d.fluid.density * d.wave_speed**2)
+
+
+def test_gas_force_holds_the_valve_until_the_actuator_force_exceeds_it(law):
+    """Quasi-static limit (hand calculation): on a slow cam a constant gas force F = p_cyl A_head holds the valve on
+    its seat until (p_a - p_back) A_a = F_0 + F; until then the valve stands and the plunger only compresses the
+    liquid, A_p h = C (p - p_0), so the valve leaves its seat where the plunger lift is
+    h* = C (p_back + (F_0 + F) / A_a - p_0) / A_p.  At the nose (plunger lift H) the valve lift is
+    y = (A_p H - C (p_back - p_0) - C (F_0 + F) / A_a) / (A_a + C k / A_a)."""
+    d = drive(leakage=0.0, fill=0.0, friction=0.0)
+    p_cyl, head = 0.8e6, math.pi * 0.04**2 / 4                  # 0.8 MPa over the port on a 40 mm head: 1005 N
+    force = p_cyl * head
+    r = simulate(law, d, 0.02 * OMEGA, gas_force=lambda angle: np.full(angle.shape, force))
+    c, aa, ap, f0, k = _compliance(d), d.actuator.piston_area, d.pump.plunger_area, d.valve.preload, d.valve.spring_rate
+    p_lift = d.back_pressure + (f0 + force) / aa
+    h_star = c * (p_lift - d.initial_pressure) / ap
+    theta_star = brentq(lambda t: law.lift(np.array([t]))[0] - h_star, law.start, 0.0)
+    i = r.lift_off()
+    assert r.angle[i] == pytest.approx(theta_star, abs=1e-4)     # two time steps, 0.006 cam deg
+    assert r.actuator_pressure[i] == pytest.approx(p_lift, rel=5e-4)
+    assert np.all(r.gas_force == force)
+    y = (ap * law.lift(np.array([0.0]))[0] - c * (d.back_pressure - d.initial_pressure) - c * (f0 + force) / aa) / (
+        aa + c * k / aa)
+    assert r.valve_lift.max() == pytest.approx(y, rel=1e-4)
+    # without the gas force the same drive opens earlier and lifts further
+    free = simulate(law, d, 0.02 * OMEGA)
+    assert free.lift_off() < i and free.valve_lift.max() > r.valve_lift.max()
+
+
+def test_the_stop_ends_the_stroke_quasi_statically(law):
+    """Closed form of a stop contact on a slow cam: with the stop at y_s below the drive's lift, at the nose the valve
+    presses on it; the liquid balance A_p H = C (p - p_0) + A_a (y_s + d) and the valve's
+    (p - p_back) A_a = F_0 + k (y_s + d) + K_stop d give the stop's deflection d and the pressure p."""
+    d = drive(leakage=0.0, fill=0.0, friction=0.0)
+    free = simulate(law, d, 0.02 * OMEGA)
+    y_s, k_stop = 0.8 * free.valve_lift.max(), 2e7
+    d = replace(d, valve=replace(d.valve, stop=y_s, stop_rate=k_stop))
+    r = simulate(law, d, 0.02 * OMEGA)
+    c, aa, ap, f0, k = _compliance(d), d.actuator.piston_area, d.pump.plunger_area, d.valve.preload, d.valve.spring_rate
+    big_h = law.lift(np.array([0.0]))[0]
+    # two linear equations in (p, d):  C p + A_a d = A_p H + C p_0 - A_a y_s;  A_a p - (k + K_stop) d = ...
+    a = np.array([[c, aa], [aa, -(k + k_stop)]])
+    b = np.array([ap * big_h + c * d.initial_pressure - aa * y_s, d.back_pressure * aa + f0 + k * y_s])
+    p, deflection = np.linalg.solve(a, b)
+    assert deflection > 0 and r.stop_reached and not free.stop_reached
+    assert r.valve_lift.max() == pytest.approx(y_s + deflection, rel=1e-4)
+    assert r.actuator_pressure.max() == pytest.approx(p, rel=1e-4)
+    assert r.actuator_pressure.max() > free.actuator_pressure.max()   # the stop takes the lift the liquid would give
+
+
+def test_a_valve_that_does_not_close_is_open_at_the_end_of_the_revolution(law):
+    """A valve whose spring cannot push the liquid back before the plunger lifts again: the lift left at the end of
+    the revolution (where the plunger is about to lift again) is the valve's, and it has no seating (nan)."""
+    d = drive(leakage=0.0, fill=0.0)
+    heavy = replace(d, valve=replace(d.valve, mass=500.0))
+    r = simulate(law, heavy, OMEGA)
+    assert r.residual_lift == r.valve_lift[-1] > 1e-3
+    assert math.isnan(r.seating()[1])
+    assert simulate(law, d, OMEGA).residual_lift == 0.0             # the assumed drive closes

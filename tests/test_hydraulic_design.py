@@ -2,6 +2,8 @@
 
 import csv
 import json
+import math
+from pathlib import Path
 
 import jsonschema
 import numpy as np
@@ -43,7 +45,9 @@ def test_no_section_no_hydraulic(tmp_path):
 
 
 def test_the_section_runs_to_results_and_a_table(tmp_path):
-    results = run(parse_spec(with_section(SECTION)))
+    """The assumed drive at its own speeds (1000-1600 rpm): it opens late, loses lift, closes and stays below its stop;
+    no check of the drive fails."""
+    results = run(parse_spec(with_section(SECTION + "speed_range_rpm = [1000.0, 1600.0]\n")))
     data = json.loads(results_json(results))
     jsonschema.validate(data, results_schema())
     h = data["valves"]["intake"]["hydraulic"]
@@ -58,11 +62,21 @@ def test_the_section_runs_to_results_and_a_table(tmp_path):
     out = write_outputs(results, tmp_path / "out")
     with open(out / h["table"], newline="") as f:
         rows = [r for r in csv.reader(f) if r and not r[0].startswith("#")]
-    assert rows[0] == ["cam_deg", "plunger_lift_mm", "pump_pressure_MPa", "actuator_pressure_MPa", "valve_lift_mm",
-                       "rigid_lift_mm", "cavitation"]
+    assert rows[0] == ["cam_deg", "crank_deg", "plunger_lift_mm", "pump_pressure_MPa", "actuator_pressure_MPa",
+                       "valve_lift_mm", "rigid_lift_mm", "gas_force_N", "cavitation"]
     table = np.array(rows[1:], dtype=float)
     assert np.ptp(table[:, 0]) > 359.0 and np.allclose(np.diff(table[:, 0]), np.diff(table[:, 0])[0])
-    assert table[:, 4].max() == pytest.approx(h["valve_lift_mm"], rel=1e-2)
+    assert table[:, 5].max() == pytest.approx(h["valve_lift_mm"], rel=1e-2)
+    # a four-stroke's crank angle is the nose's (results.json) plus twice the camshaft angle, in the cycle 0...720
+    nose = data["valves"]["intake"]["cam"]["nose_crank_deg"]
+    assert table[:, 1] == pytest.approx(np.mod(nose + 2 * table[:, 0], 720.0), abs=1e-3)
+    # the example's [crank] cycle presses the valve onto its seat, most at the firing TDC (360 crank deg): there the
+    # force is (p_max - p_port) pi d^2 / 4 with the crank chapter's peak pressure (1 crank deg rows, so 2 %)
+    g = h["gas_force"]
+    peak = (data["crank"]["max_gas_pressure_MPa"] - g["port_pressure_MPa"]) * 1e6 * np.pi / 4 * (
+        g["head_diameter_mm"] * 1e-3) ** 2
+    assert table[:, 7].max() == pytest.approx(peak, rel=2e-2)
+    assert abs(table[np.argmax(table[:, 7]), 1] - 360.0) < 20.0
 
 
 def test_cavitation_is_a_warning():
@@ -71,7 +85,7 @@ def test_cavitation_is_a_warning():
     data = json.loads(results_json(results))
     h = data["valves"]["intake"]["hydraulic"]
     assert h["speed_rpm"] == pytest.approx(7000.0) and h["cavitation"] and h["min_pressure_MPa"] == pytest.approx(0.002)
-    (w,) = [w for w in data["warnings"] if "hydraulic" in w["quantity"]]
+    (w,) = [w for w in data["warnings"] if "vapour pressure" in w["quantity"]]
     assert w["severity"] == "warning" and "Shang Hanji (1988), ch. 7" in w["source"]
 
 
@@ -116,7 +130,8 @@ def test_the_sweep_is_the_single_runs_at_its_speeds(tmp_path):
     jsonschema.validate(data, results_schema())
     h = data["valves"]["intake"]["hydraulic"]
     p = h["per_speed"]
-    assert h["speed_range_rpm"] == pytest.approx([1000.0, 2000.0]) and h["speeds"] == 3 and h["notes"] == []
+    assert h["speed_range_rpm"] == pytest.approx([1000.0, 2000.0]) and h["speeds"] == 3
+    assert h["notes"] == [f"valve stop {1.1 * h['rigid_lift_mm']:.4g} mm: 10% above the rigid drive's largest lift"]
     assert p["speed_rpm"] == pytest.approx([1000.0, 1500.0, 2000.0])
     for key in ("max_pressure_MPa", "valve_lift_mm", "lift_loss_mm", "opening_delay_cam_deg", "closing_delay_cam_deg",
                 "seating_velocity_m_s", "bounce_mm", "cavitation"):
@@ -126,7 +141,7 @@ def test_the_sweep_is_the_single_runs_at_its_speeds(tmp_path):
         rows = [r for r in csv.reader(f) if r and not r[0].startswith("#")]
     assert rows[0] == ["speed_rpm", "camshaft_rpm", "max_pressure_MPa", "valve_lift_mm", "lift_loss_mm",
                        "opening_delay_cam_deg", "closing_delay_cam_deg", "cavitation", "seating_velocity_m_s",
-                       "bounce_mm"]
+                       "bounce_mm", "residual_lift_mm", "stop_reached"]
     table = np.array([[float(x) if x else np.nan for x in r] for r in rows[1:]])    # an empty cell: null
     assert table[:, 1] == pytest.approx(table[:, 0] / 2)                # a four-stroke's camshaft
     assert table[:, 2] == pytest.approx(p["max_pressure_MPa"])
@@ -137,7 +152,7 @@ def test_the_default_sweep_is_stated():
     """Left out, the sweep runs 12 speeds from 50 % to 110 % of the rated 7000 rpm, and the notes say so."""
     h = json.loads(results_json(run(parse_spec(with_section(SECTION)))))["valves"]["intake"]["hydraulic"]
     assert h["speed_range_rpm"] == pytest.approx([3500.0, 7700.0]) and len(h["per_speed"]["speed_rpm"]) == 12
-    assert h["notes"] == ["speed range 3500-7700 rpm: 50% to 110% of the rated speed"]
+    assert h["notes"][0] == "speed range 3500-7700 rpm: 50% to 110% of the rated speed"
 
 
 def test_the_seating_velocity_is_checked_against_the_dynamics_limit():
@@ -159,3 +174,78 @@ def test_the_report_has_the_hydraulic_chapter(tmp_path, lang, heading):
     assert heading in html and "Shang Hanji (1988), ch. 7" in html and "Wylie and Streeter (1978)" in html
     assert (out / "plots" / "intake_hydraulic.png").is_file() and "tables/intake_hydraulic.csv" in html
     assert (out / "plots" / "intake_hydraulic_sweep.png").is_file() and "tables/intake_hydraulic_sweep.csv" in html
+
+
+MARINE = (Path(__file__).parents[1] / "examples" / "marine-hydraulic-exhaust.toml").read_text(encoding="utf-8")
+"""The shipped marine example: a 36 mm rigid lift (plunger 23.04 mm x A_p / A_a = 1.5625), 4000 N preload, 70 mm
+actuator, back pressure 0.1 MPa, its engine cycle in [crank]."""
+
+
+def hydraulic_checks(results):
+    return {c.quantity.split("hydraulic drive: ", 1)[1]: c for c in results.checks if "hydraulic drive" in c.quantity}
+
+
+@pytest.fixture(scope="module")
+def marine():
+    return run(parse_spec(MARINE))
+
+
+def test_the_marine_example_opens_against_its_cylinder_pressure(marine):
+    """The exhaust valve opens against the [crank] cycle's pressure on its 142 mm head: later, with a higher pressure
+    peak, than the same drive without it; the force at lift-off is (p_cyl - p_port) pi d^2 / 4 (hand calculation
+    on the reported pressures) and the pressure that lifts the valve there p_back + (F_0 + F) / A_a."""
+    h = json.loads(results_json(marine))["valves"]["exhaust"]["hydraulic"]
+    g = h["gas_force"]
+    assert g["head_diameter_mm"] == 142.0 and g["port_pressure_MPa"] == pytest.approx(0.3)
+    assert g["gas_force_at_lift_off_N"] == pytest.approx(
+        (g["cylinder_pressure_at_lift_off_MPa"] - 0.3) * 1e6 * math.pi / 4 * 0.142**2, rel=1e-9)
+    assert g["lift_off_pressure_MPa"] == pytest.approx(
+        0.1 + (4000.0 + g["gas_force_at_lift_off_N"]) / (math.pi / 4 * 0.07**2) / 1e6, rel=1e-9)
+    assert g["opening_delay_cam_deg"] > 0 and g["pressure_rise_MPa"] > 0 and g["lift_loss_mm"] >= 0
+    assert 480.0 < g["lift_off_crank_deg"] < 540.0       # after the nominal opening (60 crank deg before BDC at 540)
+    assert h["max_pressure_MPa"] > g["lift_off_pressure_MPa"]
+    assert h["stop_mm"] == pytest.approx(1.1 * 36.0, rel=1e-6) and not h["stop_reached"] and h["residual_lift_mm"] == 0
+    assert all(c.passed for c in hydraulic_checks(marine).values())
+
+
+@pytest.mark.parametrize("change", [("valve_mass_kg = 11.0", "valve_mass_kg = 725.0"),
+                                    ("pipe_diameter_mm = 50.0 ", "pipe_diameter_mm = 22.0 ")])
+def test_a_valve_that_overtravels_or_stays_open_fails(change):
+    """Issue 21 (nonsense 1): a 725 kg valve flies past its stroke and does not close before the next opening;
+    a 22 mm pipe leaves the valve open at the over-speed.  Each is a failure (not a warning), every check's value
+    finite, and the valve that does not reseat says so in words instead of a seating velocity."""
+    results = run(parse_spec(MARINE.replace(*change)))
+    checks = hydraulic_checks(results)
+    left = checks["valve lift left at the next opening"]
+    assert left.severity == "failure" and not left.passed and "has not closed before its next opening" in left.note
+    assert all(math.isfinite(c.value) for c in checks.values())
+    h = results.valves["exhaust"].hydraulic
+    if "725" in change[1]:
+        stop = checks["largest valve lift within the stroke (below the stop)"]
+        assert stop.severity == "failure" and not stop.passed and stop.high == pytest.approx(39.6e-3, rel=1e-6)
+        assert h.stop_reached and h.valve_lift < 39.6e-3 * 1.2       # the stop holds it (before: 276 mm)
+    else:
+        assert h.sweep.residual_lift[-1] > 1e-4 and h.sweep.cam_speed[-1] == pytest.approx(
+            1.1 * 514 * math.pi / 60, rel=1e-9)                       # the over-speed, a four-stroke's camshaft
+
+
+def test_a_fill_pressure_that_lifts_the_valve_fails():
+    """Issue 21 (nonsense 1): a 100 MPa supply holds the valve open.  The lift-off pressure by hand:
+    p_back + F_0 / A_a = 0.1 + 4000 / (pi / 4 x 0.07^2) / 1e6 = 1.1394 MPa."""
+    results = run(parse_spec(MARINE.replace("fill_pressure_MPa = 0.6 ", "fill_pressure_MPa = 100.0 ")
+                             .replace("relief_pressure_MPa = 30.0 ", "")))
+    checks = hydraulic_checks(results)
+    fill = checks["fill pressure below the valve's lift-off pressure"]
+    assert fill.severity == "failure" and not fill.passed and fill.high == pytest.approx(1.1394e6, rel=1e-4)
+    assert not checks["largest valve lift within the stroke (below the stop)"].passed
+    assert not checks["valve lift left at the next opening"].passed
+
+
+def test_an_initial_pressure_that_lifts_the_valve_at_rest_is_refused():
+    """The drive at rest must hold the valve on its seat: 0.1 + 250 N / (pi / 4 x 25 mm^2) = 0.6093 MPa (hand
+    calculation) is the most the initial pressure may be."""
+    with pytest.raises(SpecError) as err:
+        parse_spec(with_section(SECTION + "initial_pressure_MPa = 0.7\n"))
+    (problem,) = err.value.problems
+    assert "initial_pressure_MPa = 0.7" in problem and "0.6093 MPa" in problem and "hydraulic" in problem
+    parse_spec(with_section(SECTION + "initial_pressure_MPa = 0.6\n"))

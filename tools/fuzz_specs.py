@@ -811,6 +811,8 @@ DOCUMENTED_NULLS = {
                             "does not return to its seat within the revolution",
     **dict.fromkeys(("opening_delay_cam_deg", "closing_delay_cam_deg"),
                     "a hydraulic valve that stays shut (or, closing, does not return) within the revolution"),
+    **dict.fromkeys(("lift_off_crank_deg", "cylinder_pressure_at_lift_off_MPa", "gas_force_at_lift_off_N",
+                     "lift_off_pressure_MPa"), "a hydraulic valve that never leaves its seat against the gas force"),
 }
 """In memory a documented null may be NaN (numpy's "none"), which results.json writes as null."""
 

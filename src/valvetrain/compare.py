@@ -30,7 +30,8 @@ METRICS = [
     ("max_velocity_m_s", "max tappet velocity, m/s"),
     ("max_acceleration_m_s2", "max tappet acceleration, m/s2"),
     ("min_acceleration_m_s2", "min tappet acceleration, m/s2"),
-    ("max_jerk_m_s3", "max |tappet jerk|, m/s3"),
+    ("max_jerk_m_s3", "max |tappet jerk|, m/s3 (∞ where the acceleration steps: the jerk is an impulse there)"),
+    ("acceleration_steps", "steps of the tappet acceleration, m/s2 at cam deg from the nose"),
     ("rho_min_mm", "min radius of curvature, mm"),
     ("max_pressure_angle_deg", "max pressure angle, deg"),
     ("max_contact_stress_MPa", "max cam contact stress, MPa"),
@@ -65,6 +66,21 @@ def duration_at(valve, height):
     return valve.law.duration(valve.law.ramp_height + height / valve.rocker_ratio)
 
 
+def step_text(step):
+    """An acceleration step (:class:`valvetrain.design.valve.StepRecord`) for the comparison table."""
+    ramp = ", on the ramp" if step.on_ramp else ""
+    return f"{step.size:+.4g} m/s2 at {rad_to_deg(step.angle):.4g} cam deg{ramp}"
+
+
+def max_jerk(valve, theta):
+    """The largest |tappet jerk| [m/s^3] on the angles ``theta`` [rad]; where the acceleration steps, the jerk is an
+    impulse: ``"∞ (step of ...)"`` with the largest step (the valve's ``cam.acceleration_steps``)."""
+    steps = valve.cam.acceleration_steps
+    if steps:
+        return f"∞ (step of {step_text(max(steps, key=lambda st: abs(st.size)))})"
+    return float(np.abs(valve.law.jerk(theta, valve.omega_cam)).max())
+
+
 def entry(valve):
     """The comparison figures of one designed valve (a :class:`valvetrain.design.ValveDesign`)."""
     s = valve.summary
@@ -82,7 +98,8 @@ def entry(valve):
         "max_velocity_m_s": s["cam"]["max_velocity_m_s"],
         "max_acceleration_m_s2": s["cam"]["max_acceleration_m_s2"],
         "min_acceleration_m_s2": s["cam"]["min_acceleration_m_s2"],
-        "max_jerk_m_s3": float(np.abs(law.jerk(theta, valve.omega_cam)).max()),
+        "max_jerk_m_s3": max_jerk(valve, theta),
+        "acceleration_steps": "; ".join(step_text(st) for st in valve.cam.acceleration_steps) or "none",
         "rho_min_mm": s["cam"]["rho_min_mm"],
         "max_pressure_angle_deg": s["cam"].get("max_pressure_angle_deg", 0.0),
         "max_contact_stress_MPa": stress["value"] if stress else float("nan"),
@@ -198,6 +215,7 @@ def write_comparison(designs, out, inputs=(), force=False):
 
     from .export import json_text, write_csv
     from .outfolder import atomic_folder
+    from .report.plots import jerk_impulses
 
     rows, notes = comparison(designs)
     with atomic_folder(out, inputs, force) as tmp:
@@ -217,6 +235,10 @@ def write_comparison(designs, out, inputs=(), force=False):
                 theta = np.linspace(v.law.start, v.law.end, 2001)
                 d = v.law.derivatives(theta)[i] * v.omega_cam**i
                 ax.plot(rad_to_deg(theta), d * scale, label=f"{label} ({v.law.name})")
+            if name == "jerk":
+                for n, (label, v) in enumerate(designs.items()):
+                    jerk_impulses(ax, v.law, v.omega_cam, color=f"C{n}", label=f"{label}: jerk impulse (acceleration "
+                                  "step, m/s²)")
             ax.set_xlabel("camshaft angle from the nose, deg")
             ax.set_ylabel(ylabel)
             ax.grid(alpha=0.3)

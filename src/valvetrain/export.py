@@ -12,8 +12,8 @@ from .design.hydraulic import sweep_columns as hydraulic_sweep_columns, table_co
 from .outfolder import atomic_folder
 from .specification import spec_toml
 from .tables import (cartesian_contour_columns, contour_columns, crank_columns, engine_torque_columns,
-                     lift_export_columns, lift_export_comments, lift_table_columns, polar_contour_columns, two_stroke_columns,
-                     two_stroke_speed_columns)
+                     lift_export_columns, lift_export_comments, lift_table_columns, polar_contour_columns,
+                     strength_speed_columns, two_stroke_columns, two_stroke_speed_columns)
 from .units import MM
 
 def _cell(x):
@@ -163,7 +163,8 @@ def write_outputs(results, out, lang="en", inputs=(), force=False):
     Layout::
 
         out/results.json, spec.toml (the specification as run, every default written out)
-        out/tables/NAME_lift.csv, crank.csv, engine_torque.csv, two_stroke_ports.csv, two_stroke_time_area.csv,
+        out/tables/NAME_lift.csv, NAME_strength.csv (one row per engine speed of the strength checks),
+                   crank.csv, engine_torque.csv, two_stroke_ports.csv, two_stroke_time_area.csv,
                    NAME_dynamics.csv (a [dynamics] section: one row per speed),
                    NAME_wear_error.csv (a [grinding] section: the lift error of the worn wheel)
                    NAME_hydraulic.csv (a [hydraulic] section: pressures and lifts against camshaft angle),
@@ -173,7 +174,8 @@ def write_outputs(results, out, lang="en", inputs=(), force=False):
                     NAME_master.csv, NAME_master_cartesian.csv, NAME_master.dxf (a [grinding] section whose
                     wheel grinds the cam and whose master its roller follows)
         out/plots/NAME_kinematics.png, NAME_contour.png, NAME_time_area.png, NAME_curvature.png,
-                  NAME_spring.png, NAME_dynamics_map.png, NAME_dynamics_speed.png (a [dynamics] section),
+                  NAME_spring.png, NAME_strength_speed.png,
+                  NAME_dynamics_map.png, NAME_dynamics_speed.png (a [dynamics] section),
                   NAME_grinding.png (a [grinding] section),
                   NAME_hydraulic.png, NAME_hydraulic_sweep.png (a [hydraulic] section),
                   crank_forces.png, crank_torque.png, crank_pin_polar.png,
@@ -190,6 +192,7 @@ def write_outputs(results, out, lang="en", inputs=(), force=False):
         (tmp / "spec.toml").write_text(spec_toml(results.spec), encoding="utf-8")
         for name, v in results.valves.items():
             write_csv(tmp / "tables" / f"{name}_lift.csv", lift_table_columns(v.table))
+            write_csv(tmp / "tables" / f"{name}_strength.csv", strength_speed_columns(v.drive.strength))
             if v.dynamics is not None:
                 write_csv(tmp / v.dynamics.sweep_table, sweep_columns(v.dynamics))
             if v.hydraulic is not None:

@@ -42,6 +42,31 @@ def lift_table_columns(table):
     }
 
 
+STRENGTH_COLUMNS = [
+    ("speed_rpm", "engine speed [rpm]"),
+    ("load", "the cam force: quasi-static (spring + gas + inertia of the rigid train) or dynamic (simulated)"),
+    ("cam_force_max_N", "largest force between cam and follower at that speed [N]"),
+    ("cam_force_max_cam_deg", "where, camshaft angle from the nose [deg]"),
+    ("cam_contact_stress_MPa", "largest Hertz stress of the cam contact at that speed [MPa] (needs parts.cam_width_mm)"),
+    ("cam_contact_stress_cam_deg", "where, camshaft angle from the nose [deg]"),
+]
+"""Columns of ``tables/NAME_strength.csv``, one row per engine speed of the strength checks (the contact stress
+columns only where the cam width is given and the profile is not undercut)."""
+
+
+def strength_speed_columns(strength):
+    """The per-speed table of a :class:`~valvetrain.design.drive.StrengthResult` in the units of
+    :data:`STRENGTH_COLUMNS`."""
+    p = strength.per_speed
+    out = {"speed_rpm": to_display(np.asarray(p.speed), "rpm"), "load": list(p.load),
+           "cam_force_max_N": np.asarray(p.cam_force_max),
+           "cam_force_max_cam_deg": rad_to_deg(np.asarray(p.cam_force_max_angle))}
+    if p.contact_stress is not None:
+        out["cam_contact_stress_MPa"] = to_display(np.asarray(p.contact_stress), "MPa")
+        out["cam_contact_stress_cam_deg"] = rad_to_deg(np.asarray(p.contact_stress_angle))
+    return out
+
+
 CRANK_COLUMNS = [
     ("crank_deg", "crank angle of the cycle (0 = TDC of intake for a four-stroke, firing TDC at 360) [deg]"),
     ("s_mm", "piston displacement [mm]"), ("v_m_s", "piston velocity [m/s]"), ("j_m_s2", "piston acceleration [m/s2]"),

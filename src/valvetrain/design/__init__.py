@@ -12,7 +12,7 @@ rpm) are converted to SI for the physics functions.  Stages:
   the acceptances of the specification (``[[accepted]]``) applied.
 """
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 import difflib
 
 import numpy as np
@@ -28,12 +28,12 @@ from .crank import CrankResults, CrankSummary, crank_stage, valve_timing
 from .drive import MassResult, SpringResult, StrengthResult
 from .dynamics import DynamicsResult
 from .grinding import GrindingResult
-from .hydraulic import HydraulicResult
+from .hydraulic import CylinderPressure, HydraulicResult
 from .results import json_schema, quantity, record
 from .twostroke import TwoStrokeResults, TwoStrokeSummary, two_stroke_stage
 from .valve import (THROAT_AREA_SHARE_RANGE, CamResult, ClearanceResult, FlowResult, ProfileResult, ValveDesign,
                     clearance_stage, design_valve, flow_stage, law_stage, overlap_clearance_checks, profile_stage,
-                    valve_checks)
+                    valve_checks, with_hydraulic)
 
 __all__ = ["DesignResults", "ValveDesign", "clearance_stage", "design_valve", "flow_stage", "law_stage", "profile_stage", "run",
            "sweep_designs", "valve_checks"]
@@ -154,13 +154,15 @@ def run(spec, laws=None, progress=None):
         fits), one message per problem of every valve.
     """
     engine, gas, output = si(spec.engine), si(spec.gas), si(spec.output)
-    valves, problems = {}, []
+    valves, problems, waiting = {}, [], {}
     for name, v in spec.valves.items():
         try:
             valve = si(v, spec)
         except (TableFileError, PressureFileError) as exc:
             problems.append(f"valves.{name}.cam.table_file: {exc}")
             continue
+        if spec.crank is not None and valve.hydraulic is not None:
+            waiting[name], valve = valve, replace(valve, hydraulic=None)   # opens against the cycle: after the crank
         try:
             tick = None if progress is None else (lambda done, total, name=name: progress(name, done, total))
             valves[name] = design_valve(name, valve, engine, gas, output, (laws or {}).get(name), tick)
@@ -168,11 +170,6 @@ def run(spec, laws=None, progress=None):
             problems += err.problems
     if problems:
         raise SpecError(problems)
-    found = [c for v in valves.values() for c in v.checks] + overlap_clearance_checks(valves)
-    if {v.kind for v in valves.values()} == {"intake", "exhaust"}:
-        share = sum(v.count * v.flow.throat_area for v in valves.values())
-        found.append(check("sum of throat areas / piston area", share / float(flow.circle_area(engine.bore)),
-                           *THROAT_AREA_SHARE_RANGE, source="Valve-train practical works (n.d.), work 1"))
     crank_view = None
     if spec.crank is not None:
         try:
@@ -180,6 +177,15 @@ def run(spec, laws=None, progress=None):
         except PressureFileError as exc:
             raise SpecError([f"crank.pressure_file: {exc}"]) from None
     crank = crank_stage(crank_view, engine, valve_timing(valves)) if crank_view is not None else None
+    if waiting:
+        cylinder = CylinderPressure(crank.phi, crank.columns["p_abs"], crank.pressure_source)
+        for name, valve in waiting.items():
+            valves[name] = with_hydraulic(valves[name], valve, engine, gas, cylinder)
+    found = [c for v in valves.values() for c in v.checks] + overlap_clearance_checks(valves)
+    if {v.kind for v in valves.values()} == {"intake", "exhaust"}:
+        share = sum(v.count * v.flow.throat_area for v in valves.values())
+        found.append(check("sum of throat areas / piston area", share / float(flow.circle_area(engine.bore)),
+                           *THROAT_AREA_SHARE_RANGE, source="Valve-train practical works (n.d.), work 1"))
     ports = two_stroke_stage(si(spec.two_stroke), crank_view, engine) if spec.two_stroke is not None else None
     for stage, tag in ((crank, "crank"), (ports, "two-stroke")):
         if stage is not None:

@@ -3,8 +3,10 @@ drive parts (Valve-train practical works (n.d.), works 5-7).
 
 :func:`drive_stage` takes SI inputs (the valve's and ``[gas]``'s SI views,
 :func:`valvetrain.specification.si`, and the law stage's :class:`~valvetrain.design.valve.CamResult`) to a
-typed, frozen :class:`DriveResult`; :func:`drive_record` is where it leaves SI, as the ``masses``,
-``spring`` and ``strength`` records of results.json.
+typed, frozen :class:`DriveResult` (masses and springs); :func:`strength_stage` checks the drive parts over the
+engine speeds from the lowest to the over-speed, on the dynamics stage's contact force where it ran;
+:func:`drive_record` is where they leave SI, as the ``masses``, ``spring`` and ``strength`` records of
+results.json.
 """
 
 from dataclasses import dataclass, field, replace
@@ -18,12 +20,28 @@ from ..spring_materials import grade
 from ..specification.cams import layout, train_mass
 from ..specification.si import si_name
 from ..units import to_display
+from .dynamics import SPEED_RANGE
 from .results import quantity, record
 
 
 SHANG_2_1 = "Shang Hanji (1988), section 2.1"
 NORTON = "Norton (2009)"
 WORKS_7_1 = "Valve-train practical works (n.d.), work 7, eq. (7.1)"
+
+IDLE_SPEED_RATIO = SPEED_RANGE[0]
+"""Lowest speed of the strength checks as a fraction of the rated speed where neither ``[engine] idle_speed_rpm`` nor
+a ``[dynamics]`` section gives one: the dynamics stage's default idle, 0.1.  At or below the idle of engines (700 rpm
+idle for 7000 rpm rated is 0.1), and low enough that the inertia of the train is 1 % of its rated value: the spring
+alone loads the nose, the worst case of the spring-dominated checks (Valve-train practical works (n.d.), eq. (7.1))."""
+
+STRENGTH_SPEEDS = 41
+"""Engine speeds of the quasi-static strength checks, evenly spaced over the range (the rated speed added): the
+quasi-static force is linear in the square of the speed, so its extremes at every angle lie at the ends of the
+range; the speeds between give the per-speed table."""
+
+LOWEST_SPEED_SOURCES = ("engine.idle_speed_rpm", "the low end of the dynamics speed range",
+                        f"{IDLE_SPEED_RATIO:g} x the rated speed (the default idle)")
+"""Where the lowest speed of the strength checks comes from (:func:`strength_speed_range`)."""
 
 
 @dataclass(frozen=True)
@@ -132,22 +150,67 @@ class SpringResult:
 
 
 @dataclass(frozen=True)
-class StrengthResult:
-    """The cam load along the open event and the strength checks of the drive parts (Valve-train practical works (n.d.), work 7)."""
+class StrengthPerSpeed:
+    """The largest cam force and contact stress at each engine speed of the strength checks (SI)."""
 
+    speed: tuple[float, ...] = quantity("speed_rpm", "rpm", "engine speed")
+    load: tuple[str, ...] = quantity("load", label="the cam force at that speed: quasi-static or dynamic")
+    cam_force_max: tuple[float, ...] = quantity("cam_force_max_N", "N", "largest cam force")
+    cam_force_max_angle: tuple[float, ...] = quantity("cam_force_max_cam_deg", "cam deg", "where, from the nose")
+    contact_stress: Optional[tuple[float, ...]] = quantity("cam_contact_stress_MPa", "MPa", "largest Hertz stress "
+                                                           "of the cam contact", omit_none=True)
+    contact_stress_angle: Optional[tuple[float, ...]] = quantity("cam_contact_stress_cam_deg", "cam deg",
+                                                                 "where, from the nose", omit_none=True)
+
+
+@dataclass(frozen=True)
+class StrengthResult:
+    """The cam load over the speed range and the strength checks of the drive parts at their worst (Valve-train
+    practical works (n.d.), work 7)."""
+
+    speed_range: tuple[float, ...] = quantity("speed_range_rpm", "rpm", "engine speeds checked: the lowest to the "
+                                              "over-speed")
+    lowest_speed_source: str = quantity("lowest_speed_source", label="where the lowest speed comes from")
     cam_force_max: float = quantity("cam_force_max_N", "N", "largest force between cam and follower P_T max")
     cam_force_max_angle: float = quantity("cam_force_max_cam_deg", "cam deg", "where the cam force is largest")
+    cam_force_max_speed: float = quantity("cam_force_max_speed_rpm", "rpm", "engine speed of the largest cam force")
     valve_force_max: float = quantity("valve_force_max_N", "N", "P_T max / i_k")
     gas_force_at_opening: float = quantity("gas_force_at_opening_N", "N", "gas force on the exhaust valve head at "
                                            "opening (eq. 7.1)")
     contact_stress_angle: Optional[float] = quantity("cam_contact_stress_cam_deg", "cam deg",
                                                      "where the contact stress is largest", omit_none=True)
+    contact_stress_speed: Optional[float] = quantity("cam_contact_stress_speed_rpm", "rpm",
+                                                     "engine speed of the largest contact stress", omit_none=True)
     side_force_max: Optional[float] = quantity("roller_side_force_max_N", "N", "largest side force of the roller "
                                                "follower on its guide, P_T tan(alpha)", omit_none=True)
     side_force_angle: Optional[float] = quantity("roller_side_force_cam_deg", "cam deg",
                                                  "where the side force is largest", omit_none=True)
+    side_force_speed: Optional[float] = quantity("roller_side_force_speed_rpm", "rpm",
+                                                 "engine speed of the largest side force", omit_none=True)
+    per_speed: StrengthPerSpeed = quantity("per_speed", label="the largest cam force and contact stress at each speed")
     checks: tuple = ()             # the strength checks (valvetrain.checks.Check, quantity with underscores)
     not_checked: tuple = ()        # the checks whose parts are not given, each with the keys missing
+    rated_speed: float = 0.0       # the engine's rated speed [rad/s] (for the plot)
+
+
+@dataclass(frozen=True)
+class LoadMap:
+    """The force between cam and follower over engine speeds x camshaft angles (SI)."""
+
+    kind: str                      # "quasi-static" or "dynamic"
+    speeds: np.ndarray             # engine speeds [rad/s], (S,)
+    theta: np.ndarray              # camshaft angles [rad from the nose], (n,)
+    force: np.ndarray              # force at the cam [N], (S, n)
+
+
+@dataclass(frozen=True)
+class Worst:
+    """The largest value of a quantity over the load maps, and where: engine speed [rad/s], cam angle [rad]."""
+
+    value: float
+    speed: float
+    angle: float
+    kind: str
 
 
 @dataclass(frozen=True)
@@ -156,7 +219,7 @@ class DriveResult:
 
     masses: MassResult
     spring: SpringResult
-    strength: StrengthResult
+    strength: Optional[StrengthResult]             # set by :func:`strength_stage` (None from drive_stage alone)
     checks: tuple                  # every valvetrain.checks.Check of the drive, passed or not
     lift: np.ndarray = field(repr=False)             # valve lift along the open event [m]
     inertia_force: np.ndarray = field(repr=False)    # m_v |j_v| where j_v < 0 [N]
@@ -198,7 +261,7 @@ def _spring_checks(tag, s, note=""):
 
 
 def drive_stage(valve, gas, cam):
-    """Stages 6 and 7: reduced masses, spring characteristic and design, strength of the drive parts.
+    """Stage 6: reduced masses, spring characteristic and design (the strength is :func:`strength_stage`).
 
     Parameters
     ----------
@@ -219,12 +282,11 @@ def drive_stage(valve, gas, cam):
     -----
     The spring must hold the train on the cam, :math:`P_{spr} \\ge K_z m_v |j_v|` where :math:`j_v < 0`
     (5.1)-(5.3); the reduced mass includes a third of the designed spring's mass where the part masses leave it
-    to the design, so the search is repeated until that mass settles.  The cam load is
-    :math:`P_T = i_k (P_{spr} + P_{gas}) + i_k m_v j_v` along the open event (7.1, corrections note 23).
+    to the design, so the search is repeated until that mass settles.
 
     References
     ----------
-    Valve-train practical works (n.d.), works 5-7, eqs. (5.1)-(5.14), (6.1)-(6.14), (7.1)-(7.18).
+    Valve-train practical works (n.d.), works 5-6, eqs. (5.1)-(5.14), (6.1)-(6.14).
     """
     law, omega, i_k = cam.law, cam.cam_speed, cam.rocker_ratio
     d_g = valve.throat_diameter
@@ -232,9 +294,8 @@ def drive_stage(valve, gas, cam):
 
     theta = np.unique(np.concatenate([np.linspace(law.valve_opens, law.valve_closes, 2001), law.breakpoints]))
     theta = theta[(theta >= law.valve_opens) & (theta <= law.valve_closes)]
-    h, dh, d2h, _ = law.derivatives(theta)
     y = cam.valve_lift(theta)
-    a_v = i_k * omega**2 * d2h
+    a_v = i_k * omega**2 * law.derivatives(theta)[2]
     lift = law.lift_max * i_k
 
     if valve.kind == "exhaust":
@@ -302,27 +363,178 @@ def drive_stage(valve, gas, cam):
         found += train_checks
     mass_result = MassResult(m_v, masses.reduced_mass_at_tappet(m_v, i_k), mass_source, layout(valve), train)
 
-    strength_result, follower_checks = _strength(valve, gas, cam, theta, y, h, dh, d2h, a_v, m_v, chosen_line)
-    found += [replace(c, quantity=c.quantity.replace("_", " ")) for c in strength_result.checks] + follower_checks
     inertia = m_v * np.clip(-a_v, 0.0, None)
-    return DriveResult(mass_result, spring_result, strength_result, tuple(found), y, inertia, required, lines)
+    return DriveResult(mass_result, spring_result, None, tuple(found), y, inertia, required, lines)
 
 
-def _strength(valve, gas, cam, theta, y, h, dh, d2h, a_v, m_v, line):
-    """Work 7: the cam load along the open event and every check the layout and the given dimensions allow."""
-    i_k, heel, roller = cam.rocker_ratio, cam.heel_radius, cam.roller_radius
-    parts, drive_layout, flat = valve.parts, layout(valve), cam.follower == "flat"
-    spring_force = line.force(y)
-    cam_force = strength.cam_force(spring_force, m_v * a_v, i_k)
-    verdicts, notes, found = [], [], []
+def strength_speed_range(engine, dynamics=None):
+    """The engine speeds the strength is checked over [rad/s]: the lowest, the highest and where the lowest comes from.
+
+    The highest is the over-speed, ``[engine] over_speed_ratio`` x the rated speed.  The lowest is ``[engine]
+    idle_speed_rpm``; without it the low end of the valve's ``[dynamics]`` speed range, else
+    :data:`IDLE_SPEED_RATIO` x the rated speed (the dynamics stage's default idle).  Never above the rated speed.
+    """
+    if engine.idle_speed is not None:
+        low, source = engine.idle_speed, LOWEST_SPEED_SOURCES[0]
+    elif dynamics is not None:
+        low, source = dynamics.speed_range[0], LOWEST_SPEED_SOURCES[1]
+    else:
+        low, source = IDLE_SPEED_RATIO * engine.rated_speed, LOWEST_SPEED_SOURCES[2]
+    return min(low, engine.rated_speed), engine.over_speed_ratio * engine.rated_speed, source
+
+
+def quasi_static_loads(law, rocker_ratio, theta, spring_force, mass, speeds, to_cam):
+    """The quasi-static cam force over engine speeds x camshaft angles, :class:`LoadMap`.
+
+    Parameters
+    ----------
+    law : LiftLaw
+    rocker_ratio : float
+        i_k.
+    theta : ndarray (n,)
+        Camshaft angles of the open event [rad from the nose].
+    spring_force : ndarray (n,)
+        Spring force at the valve at those angles [N].
+    mass : float
+        Reduced mass at the valve m_v [kg].
+    speeds : ndarray (S,)
+        Engine speeds [rad/s].
+    to_cam : float
+        Camshaft per crank revolution (1/2 for a four-stroke).
+
+    Notes
+    -----
+    :math:`P_T(n, \\theta) = i_k\\,(P_{spr}(\\theta) + m_v\\,i_k\\,\\omega_{cam}(n)^2\\,h''(\\theta))`, (7.1) at every
+    speed: the inertia of the rigid train grows with the square of the speed, so the spring carries the nose alone
+    at low speed.
+
+    References
+    ----------
+    Valve-train practical works (n.d.), work 7, eqs. (7.1)-(7.2).
+    """
+    omega = np.asarray(speeds, dtype=float)[:, None] * to_cam
+    force = strength.cam_force(spring_force, mass * rocker_ratio * omega**2 * law.derivatives(theta)[2], rocker_ratio)
+    return LoadMap("quasi-static", np.asarray(speeds, dtype=float), theta, force)
+
+
+def dynamic_loads(dynamics, low, high):
+    """The dynamics stage's simulated cam force at its speeds within [low, high] (and the rated speed), a
+    :class:`LoadMap`, or None where none of its speeds lies in the range."""
+    speeds = np.append(np.asarray(dynamics.per_speed.speed, dtype=float), dynamics.at_rated_speed.speed)
+    force = np.vstack([dynamics.sweep.contact_force, dynamics.rated.contact_force[None, :]])
+    keep = (speeds >= low * (1.0 - 1e-12)) & (speeds <= high * (1.0 + 1e-12))
+    if not keep.any():
+        return None
+    order = np.argsort(speeds[keep], kind="stable")
+    return LoadMap("dynamic", speeds[keep][order], dynamics.sweep.theta, force[keep][order])
+
+
+def load_maps(valve, engine, cam, theta, spring_force, mass, dynamics=None):
+    """The cam force over the strength speed range, a list of :class:`LoadMap`, and the range (low, high, source).
+
+    With the dynamics stage, its simulated force at its speeds in the range and the quasi-static force at the
+    speeds of the range it does not sweep; without it, the quasi-static force at :data:`STRENGTH_SPEEDS` speeds
+    and the rated speed.
+    """
+    low, high, source = strength_speed_range(engine, dynamics)
+    speeds = np.unique(np.append(np.linspace(low, high, STRENGTH_SPEEDS), engine.rated_speed))
+    maps = []
+    if dynamics is not None:
+        swept = dynamics.speed_range
+        maps.append(dynamic_loads(dynamics, low, high))
+        speeds = speeds[(speeds < swept[0]) | (speeds > swept[1])]
+    if speeds.size:
+        to_cam = cam.cam_speed / engine.rated_speed
+        maps.append(quasi_static_loads(cam.law, cam.rocker_ratio, theta, spring_force, mass, speeds, to_cam))
+    return [m for m in maps if m is not None], (low, high, source)
+
+
+def _worst(maps, values):
+    """The largest of ``values`` (one array (S, n) per load map) over every map: a :class:`Worst`."""
+    best = None
+    for m, q in zip(maps, values, strict=True):
+        i, j = np.unravel_index(int(np.argmax(q)), q.shape)
+        if best is None or q[i, j] > best.value:
+            best = Worst(float(q[i, j]), float(m.speeds[i]), float(m.theta[j]), m.kind)
+    return best
+
+
+def _radius(cam, theta):
+    """Radius of curvature of the cam profile at camshaft angles [m] (Shang Hanji (1988), eqs. (2.6)-(2.7))."""
+    h, dh, d2h, _ = cam.law.derivatives(theta)
+    if cam.follower == "flat":
+        return geometry.flat_follower_curvature(cam.heel_radius, h, d2h)
+    return geometry.roller_follower_curvature(cam.heel_radius, cam.roller_radius, h, dh, d2h)
+
+
+def _curvature(cam, theta):
+    """1/rho_1 + 1/rho_2 of the cam contact at camshaft angles [1/m] (Shang Hanji (1988), eq. (2.11))."""
+    return 1.0 / _radius(cam, theta) + (1.0 / cam.roller_radius if cam.follower == "roller" else 0.0)
+
+
+def strength_stage(valve, gas, engine, cam, drive, dynamics=None):
+    """Work 7 over the speed range: every strength check the layout and the given dimensions allow, at its worst.
+
+    Parameters
+    ----------
+    valve, gas, engine : SI views of the valve, ``[gas]`` and ``[engine]``.
+    cam : CamResult
+        The law stage.
+    drive : DriveResult
+        The drive stage (reduced mass, chosen spring line).
+    dynamics : DynamicsResult, optional
+        The dynamics stage: its simulated contact force replaces the quasi-static one at its speeds.
+
+    Returns
+    -------
+    (StrengthResult, list of Check)
+        The strength checks (quantity with spaces) and the follower checks.
+
+    Notes
+    -----
+    The cam force :math:`P_T(n, \\theta)` is evaluated on a grid of engine speeds x camshaft angles from the lowest
+    speed to the over-speed (:func:`strength_speed_range`); each check takes its worst point.  The checks loaded by
+    :math:`P_{T\\,max}` (camshaft deflection, tappet side pressure, pushrod buckling and ball, rocker pad and shaft)
+    follow the largest force, on the opening flank at the highest speed for a rigid train; the Hertz stress follows
+    force and curvature together, at the nose at the lowest speed, where the inertia no longer unloads the nose.
+
+    References
+    ----------
+    Valve-train practical works (n.d.), work 7, eqs. (7.1)-(7.18); Shang Hanji (1988), eq. (2.5) and section 3.4
+    (the contact stress under the dynamic force).
+    """
+    law = cam.law
+    theta = np.unique(np.concatenate([np.linspace(law.valve_opens, law.valve_closes, 2001), law.breakpoints]))
+    theta = theta[(theta >= law.valve_opens) & (theta <= law.valve_closes)]
+    line = drive.lines["chosen"]
+    maps, (low, high, source) = load_maps(valve, engine, cam, theta, line.force(cam.valve_lift(theta)),
+                                          drive.masses.at_valve, dynamics)
+    found = []
     p_open = 0.0
     if valve.kind == "exhaust":
         p_open, gas_check = _exhaust_gas_force(valve, gas)
         found.append(gas_check)
-    cam_force[0] += i_k * p_open
-    k = int(np.argmax(cam_force))
-    p_max = float(cam_force[k])
-    contact_angle, side = None, (None, None)
+        for m in maps:
+            m.force[:, int(np.argmin(np.abs(m.theta - law.valve_opens)))] += cam.rocker_ratio * p_open
+    result, checks = _strength(valve, cam, theta, maps, p_open)
+    result = replace(result, speed_range=(float(low), float(high)), lowest_speed_source=source,
+                     rated_speed=engine.rated_speed)
+    return result, [replace(c, quantity=c.quantity.replace("_", " ")) for c in result.checks] + found + checks
+
+
+def _where(w):
+    """Where a worst value occurs, for a check's note."""
+    return (f"at {to_display(w.speed, 'rpm'):.0f} rpm, {to_display(w.angle, 'cam deg'):.4g} cam deg from the nose "
+            f"({w.kind} force)")
+
+
+def _strength(valve, cam, theta, maps, p_open):
+    """Work 7 on the load maps: every check the layout and the given dimensions allow, at its worst point."""
+    i_k = cam.rocker_ratio
+    parts, drive_layout, flat = valve.parts, layout(valve), cam.follower == "flat"
+    notes, verdicts = [], []
+    load = _worst(maps, [m.force for m in maps])
+    p_max, at_load = load.value, _where(load)
 
     def need(keys, name):
         """Whether the parts' keys (spec names) are given; a note names those missing."""
@@ -331,68 +543,92 @@ def _strength(valve, gas, cam, theta, y, h, dh, d2h, a_v, m_v, line):
             notes.append(f"{name}: not checked, parts.{', parts.'.join(missing)} not given")
         return not missing
 
+    def joined(*texts):
+        return "; ".join(t for t in texts if t)
+
     e_contact = parts.contact_modulus
-    half_width = None
+    width = stress = stresses = None
     if need(["camshaft_diameter_mm", "camshaft_span_mm", "cam_to_bearing_mm"], "camshaft_deflection"):
         l1 = parts.cam_to_bearing
         f = strength.camshaft_deflection(p_max, l1, parts.camshaft_span - l1, parts.camshaft_diameter,
                                          parts.camshaft_bore, parts.camshaft_modulus,
                                          parts.camshaft_deflection_coefficient)
-        verdicts.append(strength.verdict("camshaft_deflection", f,
-                                         f"coefficient {parts.camshaft_deflection_coefficient:.4g} (corrections note 20: not 0.8)"))
+        verdicts.append(strength.verdict("camshaft_deflection", f, joined(
+            at_load, f"coefficient {parts.camshaft_deflection_coefficient:.4g} (corrections note 20: not 0.8)")))
     if need(["cam_width_mm"], "cam_contact_stress"):
-        rho = (geometry.flat_follower_curvature(heel, h, d2h) if flat
-               else geometry.roller_follower_curvature(heel, roller, h, dh, d2h))
+        rho = _radius(cam, theta)
         # line contact needs a convex profile (flat) or a concave one wider than the roller
-        if not np.all((rho > 0.0) if flat else (rho > 0.0) | (rho < -roller)):
+        if not np.all((rho > 0.0) if flat else (rho > 0.0) | (rho < -cam.roller_radius)):
             notes.append("cam_contact_stress: not checked, the profile is undercut (no line contact)")
         else:
-            curv = 1.0 / rho + (0.0 if flat else 1.0 / roller)
-            sigma = strength.hertz_line_stress(cam_force, parts.cam_width, curv, e_contact)
-            if flat:
-                half_width = strength.hertz_half_width(cam_force, parts.cam_width, curv, e_contact)
-            j = int(np.argmax(sigma))
-            contact_angle = float(theta[j])
-            verdicts.append(strength.verdict("cam_contact_stress", sigma[j], "along the profile with the "
-                                             "instantaneous force and radius (Shang Hanji (1988), eq. 2.5)"))
+            width = parts.cam_width
+            stresses = [strength.hertz_line_stress(m.force, width, _curvature(cam, m.theta), e_contact) for m in maps]
+            stress = _worst(maps, stresses)
+            verdicts.append(strength.verdict("cam_contact_stress", stress.value, joined(
+                _where(stress), "along the profile with the instantaneous force and radius (Shang Hanji (1988), "
+                "eq. 2.5)")))
     if drive_layout in ("direct", "pushrod") and flat and \
             need(["tappet_diameter_mm", "tappet_guide_length_mm"], "tappet_side_pressure"):
-        b = float(np.max(np.abs(dh)))
+        b = float(np.max(np.abs(cam.law.derivatives(theta)[1])))
         q = strength.tappet_side_pressure(p_max, b, parts.tappet_diameter, parts.tappet_guide_length)
-        verdicts.append(strength.verdict("tappet_side_pressure", q,
-                                         f"offset b = {to_display(b, 'mm'):.4g} mm = max dh/dphi (7.7)"))
+        verdicts.append(strength.verdict("tappet_side_pressure", q, joined(
+            at_load, f"offset b = {to_display(b, 'mm'):.4g} mm = max dh/dphi (7.7)")))
     if drive_layout == "pushrod":
         if need(["pushrod_length_mm", "pushrod_diameter_mm"], "pushrod_buckling_margin"):
             inertia = strength.second_moment(parts.pushrod_diameter, parts.pushrod_bore)
             p_cr = strength.euler_load(parts.pushrod_modulus, inertia, parts.pushrod_length)
-            verdicts.append(strength.verdict("pushrod_buckling_margin", p_cr / p_max,
-                                             f"Euler load {p_cr:.5g} N; E = {to_display(parts.pushrod_modulus, 'MPa'):g}"
-                                             " MPa (corrections note 21)"))
+            verdicts.append(strength.verdict("pushrod_buckling_margin", p_cr / p_max, joined(
+                at_load, f"Euler load {p_cr:.5g} N; E = {to_display(parts.pushrod_modulus, 'MPa'):g} MPa "
+                "(corrections note 21)")))
         if need(["ball_radius_mm", "socket_radius_mm"], "ball_socket_stress"):
             verdicts.append(strength.verdict("ball_socket_stress", strength.sphere_socket_stress(
-                p_max, e_contact, parts.ball_radius, parts.socket_radius)))
+                p_max, e_contact, parts.ball_radius, parts.socket_radius), at_load))
         if need(["pushrod_head_area_mm2"], "pushrod_head_pressure"):
-            verdicts.append(strength.verdict("pushrod_head_pressure", p_max / parts.pushrod_head_area))
+            verdicts.append(strength.verdict("pushrod_head_pressure", p_max / parts.pushrod_head_area, at_load))
     if drive_layout in ("rocker", "pushrod"):
         if need(["rocker_pad_width_mm", "rocker_pad_radius_mm"], "rocker_pad_stress"):
             verdicts.append(strength.verdict("rocker_pad_stress", strength.rocker_pad_stress(
-                p_max / i_k, e_contact, parts.rocker_pad_width, parts.rocker_pad_radius)))
+                p_max / i_k, e_contact, parts.rocker_pad_width, parts.rocker_pad_radius), at_load))
         if need(["rocker_shaft_span_mm", "rocker_shaft_diameter_mm", "rocker_width_mm"], "rocker_shaft"):
             st = strength.rocker_shaft_stresses(p_max, parts.rocker_shaft_span, parts.rocker_width,
                                                 parts.rocker_shaft_diameter, parts.rocker_shaft_bore)
-            verdicts.append(strength.verdict("rocker_shaft_bending", st["bending"],
-                                             f"built-in beam (7.15, corrections note 48); simply supported: "
-                                             f"{to_display(st['bending_simply_supported'], 'MPa'):.4g} MPa; load P_T "
-                                             "max (corrections note 25)"))
-            verdicts.append(strength.verdict("rocker_shaft_shear", st["shear"]))
-            verdicts.append(strength.verdict("rocker_shaft_bearing", st["bearing"]))
+            verdicts.append(strength.verdict("rocker_shaft_bending", st["bending"], joined(
+                at_load, f"built-in beam (7.15, corrections note 48); simply supported: "
+                f"{to_display(st['bending_simply_supported'], 'MPa'):.4g} MPa; load P_T max (corrections note 25)")))
+            verdicts.append(strength.verdict("rocker_shaft_shear", st["shear"], at_load))
+            verdicts.append(strength.verdict("rocker_shaft_bearing", st["bearing"], at_load))
+    side, found = None, []
     if flat:
-        found += _edge_loading(parts, drive_layout, theta, dh, half_width, notes)
+        found += _edge_loading(parts, drive_layout, cam, maps, width, notes)
     else:
-        side, side_check = _roller_side_force(cam, theta, h, dh, cam_force, drive_layout)
+        side, side_check = _roller_side_force(cam, maps, drive_layout)
         found.append(side_check)
-    return StrengthResult(p_max, float(theta[k]), p_max / i_k, p_open, contact_angle, *side, tuple(verdicts),
-                          tuple(notes)), found
+    return StrengthResult(
+        (0.0, 0.0), "", load.value, load.angle, load.speed, p_max / i_k, p_open,
+        None if stress is None else stress.angle, None if stress is None else stress.speed,
+        None if side is None else side.value, None if side is None else side.angle,
+        None if side is None else side.speed, _per_speed(maps, stresses),
+        tuple(verdicts), tuple(notes)), found
+
+
+def _per_speed(maps, stresses=None):
+    """The largest cam force and contact stress (``stresses``: one array (S, n) per load map, None: not checked) at
+    every speed of the load maps, a :class:`StrengthPerSpeed` in increasing speed."""
+    def largest(m, values):
+        j = np.argmax(values, axis=1)
+        return values[np.arange(j.size), j], m.theta[j]
+
+    def column(rows):
+        return tuple(float(x) for x in np.concatenate(rows)[order])
+
+    speeds = np.concatenate([m.speeds for m in maps])
+    order = np.argsort(speeds, kind="stable")
+    kinds = tuple(np.concatenate([[m.kind] * m.speeds.size for m in maps])[order])
+    force, force_at = zip(*(largest(m, m.force) for m in maps), strict=True)
+    stress = (None, None)
+    if stresses is not None:
+        stress = [column(c) for c in zip(*(largest(m, q) for m, q in zip(maps, stresses, strict=True)), strict=True)]
+    return StrengthPerSpeed(column([speeds]), kinds, column(force), column(force_at), *stress)
 
 
 def _exhaust_gas_force(valve, gas):
@@ -411,12 +647,13 @@ def _exhaust_gas_force(valve, gas):
                         source=WORKS_7_1, note=note)
 
 
-def _edge_loading(parts, drive_layout, theta, dh, half_width, notes):
+def _edge_loading(parts, drive_layout, cam, maps, width, notes):
     """The flat follower's contact against the edge of its face: max(|dh/dphi| + Hertz half-width) <= face radius.
 
     The contact point of a flat follower lies dh/dphi from its axis (Shang's contour, eq. 2.15); the contact
-    band reaches a half-width further where the cam width is given.  The face is ``tappet_face_diameter_mm``,
-    else, for a tappet in a guide, ``tappet_diameter_mm`` (a bucket tappet's face is its diameter).
+    band reaches a half-width further where the cam width is given (``width`` [m], None: not given or undercut),
+    under the force of each speed.  The face is ``tappet_face_diameter_mm``, else, for a tappet in a guide,
+    ``tappet_diameter_mm`` (a bucket tappet's face is its diameter).
     """
     if parts.tappet_face_diameter is not None:
         face, key = parts.tappet_face_diameter, "tappet_face_diameter_mm"
@@ -425,28 +662,39 @@ def _edge_loading(parts, drive_layout, theta, dh, half_width, notes):
     else:
         notes.append("flat_follower_edge_loading: not checked, parts.tappet_face_diameter_mm not given")
         return []
-    reach = np.abs(dh) + (0.0 if half_width is None else half_width)
-    j = int(np.argmax(reach))
-    width = ("with the Hertz half-width " f"{to_display(float(half_width[j]), 'mm'):.3g} mm" if half_width is not None
-             else "without the Hertz half-width (parts.cam_width_mm not given)")
-    return [check("flat follower contact reach (edge loading)", reach[j], high=face / 2.0, unit="mm",
+
+    def reach(m):
+        offset = np.abs(cam.law.derivatives(m.theta)[1])
+        if width is None:
+            return np.broadcast_to(offset, m.force.shape)
+        return offset + strength.hertz_half_width(m.force, width, _curvature(cam, m.theta), parts.contact_modulus)
+
+    w = _worst(maps, [reach(m) for m in maps])
+    offset = abs(float(cam.law.derivatives(np.array([w.angle]))[1, 0]))
+    band = ("with the Hertz half-width " f"{to_display(w.value - offset, 'mm'):.3g} mm" if width is not None
+            else "without the Hertz half-width (parts.cam_width_mm not given)")
+    return [check("flat follower contact reach (edge loading)", w.value, high=face / 2.0, unit="mm",
                   severity="failure", source=f"{SHANG_2_1}, eq. (2.15); {NORTON} (flat-faced follower face width)",
-                  note=f"contact offset |dh/dphi| {to_display(abs(float(dh[j])), 'mm'):.4g} mm at "
-                       f"{to_display(float(theta[j]), 'cam deg'):.4g} cam deg {width}; face radius from "
-                       f"parts.{key}")]
+                  note=f"contact offset |dh/dphi| {to_display(offset, 'mm'):.4g} mm {_where(w)} {band}; face radius "
+                       f"from parts.{key}")]
 
 
-def _roller_side_force(cam, theta, h, dh, cam_force, drive_layout):
-    """The largest side force of a roller follower, P_T tan(alpha), where and its (info) record."""
-    beta = geometry.roller_pressure_angle(cam.heel_radius, cam.roller_radius, h, dh)
-    side = strength.roller_side_force(cam_force, beta)
-    j = int(np.argmax(side))
+def _roller_side_force(cam, maps, drive_layout):
+    """The largest side force of a roller follower over the speeds, P_T tan(alpha): a :class:`Worst` and its (info)
+    record."""
+    def side(m):
+        h, dh = cam.law.derivatives(m.theta)[:2]
+        return strength.roller_side_force(m.force, geometry.roller_pressure_angle(cam.heel_radius, cam.roller_radius,
+                                                                                   h, dh))
+
+    w = _worst(maps, [side(m) for m in maps])
+    h, dh = cam.law.derivatives(np.array([w.angle]))[:2]
+    beta = abs(float(geometry.roller_pressure_angle(cam.heel_radius, cam.roller_radius, h, dh)[0]))
     carrier = "the tappet guide" if drive_layout in ("direct", "pushrod") else "the rocker and its shaft"
-    return (float(side[j]), float(theta[j])), check(
-        "roller follower side force", side[j], unit="N", severity="info",
+    return w, check(
+        "roller follower side force", w.value, unit="N", severity="info",
         source=f"{NORTON} (pressure angle: side load F_n sin(alpha)); no source gives an allowable",
-        note=f"at {to_display(float(theta[j]), 'cam deg'):.4g} cam deg, pressure angle "
-             f"{to_display(abs(float(beta[j])), 'deg'):.3g} deg; carried by {carrier}")
+        note=f"{_where(w)}, pressure angle {to_display(beta, 'deg'):.3g} deg; carried by {carrier}")
 
 
 def _strength_record(c):

@@ -6,18 +6,29 @@ valve lift against the rigid drive (plunger lift times the area ratio), the dela
 pressure, the cavitation (a pressure held at the vapour pressure, a warning), the seating velocity (a warning
 above the dynamics stage's limit) and the bounce; then it sweeps the engine speed (one revolution per speed) and
 reports the same numbers at each speed.
+
+The valve opens against the cylinder pressure on its head when the engine's cycle is known (the ``[crank]``
+section's indicator diagram or Wiebe cycle, :class:`CylinderPressure`): the force (p_cyl - p_port) A_head holds
+it on its seat, at the crank angle nose + camshaft angle x 2 (four-stroke); the stage reports what that force
+costs (the opening delay, the lift and the pressure peak against the same drive without it).  The valve's travel
+ends at a stop (the rigid drive's largest lift plus a margin): a valve that reaches it (over-travel) or that is not
+back on its seat when the plunger is about to lift again (not closed before the next opening) is a failure at any
+speed of the sweep up to the over-speed, as is a fill (supply) pressure that lifts the valve off its seat.
 """
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 import math
 from typing import Optional
 
 import numpy as np
 
 from ..checks import check
+from ..crank.pressure import on_grid
+from ..dynamics.sweep import BOUNCE_TOLERANCE
+from ..flow import circle_area
 from ..hydraulic import (Actuator, DriveResult, Fluid, HydraulicDrive, Pipe, Pump, SpeedSweep, Valve, simulate,
                          speed_sweep)
-from ..units import DEG, MM, cam_per_crank, rpm_to_rad_s
+from ..units import DEG, MM, cam_per_crank, rpm_to_rad_s, to_display
 from .dynamics import SEATING_VELOCITY_MAX, finite_or_none
 from .results import quantity, record
 
@@ -32,8 +43,15 @@ together (about two seconds)."""
 DELAY_LEVEL = 0.05
 """Lift level of the delays, a fraction of the largest rigid lift."""
 
-SPEED_RANGE = (0.5, 1.1)
-"""Default speed sweep as fractions of the rated speed."""
+LOWEST_SPEED = 0.5
+"""Lowest speed of the default sweep, a fraction of the rated speed; the sweep ends at the over-speed
+(``[engine] over_speed_ratio`` x the rated speed)."""
+
+STOP_MARGIN = 0.1
+"""Default margin of the valve's stop above the rigid drive's largest lift, a fraction of that lift."""
+
+FAILURE_SOURCE = "Shang Hanji (1988), ch. 7"
+"""Source of the failure checks of the drive (the valve's stroke, its closing and its rest)."""
 
 SEATING_QUANTITY = "hydraulic drive: valve seating velocity at the simulated speed"
 """The quantity of the seating-velocity check."""
@@ -59,6 +77,52 @@ class HydraulicSweep:
     seating_velocity: tuple[Optional[float], ...] = quantity("seating_velocity_m_s", "m/s", "valve velocity at the "
                                                              "first seating (null: it does not return)")
     bounce: tuple[float, ...] = quantity("bounce_mm", "mm", "largest valve lift after the first seating")
+    residual_lift: tuple[float, ...] = quantity("residual_lift_mm", "mm", "valve lift left when the plunger is about "
+                                                "to lift again (0: closed before the next opening)")
+    stop_reached: tuple[bool, ...] = quantity("stop_reached", label="the valve reached its stop (over-travel)")
+
+
+@dataclass(frozen=True)
+class CylinderPressure:
+    """The cylinder pressure over the engine's cycle (SI), as the crank chapter computes it.
+
+    Attributes
+    ----------
+    angle : ndarray
+        Cycle crank angle [rad], increasing within one cycle; 0 is the TDC that starts the intake stroke (the
+        gas-exchange TDC), the firing TDC is at pi (two-stroke: 0) or 2 pi (four-stroke).
+    pressure : ndarray
+        Absolute cylinder pressure [Pa].
+    source : str
+        Where the pressure comes from (an indicator diagram, the Wiebe model).
+    """
+
+    angle: np.ndarray
+    pressure: np.ndarray
+    source: str
+
+
+@dataclass(frozen=True)
+class GasForceRecord:
+    """The cylinder pressure on the valve head and what it costs the drive at the simulated speed (SI)."""
+
+    source: str = quantity("pressure_source", label="where the cylinder pressure comes from")
+    head_diameter: float = quantity("head_diameter_mm", "mm", "diameter the pressure acts on")
+    port_pressure: float = quantity("port_pressure_MPa", "MPa", "absolute pressure behind the valve head (the port's)")
+    lift_off: Optional[float] = quantity("lift_off_crank_deg", "crank deg", "where the valve leaves its seat, cycle "
+                                         "angle from the gas-exchange TDC 0...720 (null: it does not)")
+    cylinder_pressure: Optional[float] = quantity("cylinder_pressure_at_lift_off_MPa", "MPa", "absolute cylinder "
+                                                  "pressure there")
+    force: Optional[float] = quantity("gas_force_at_lift_off_N", "N", "(p_cyl - p_port) x head area there, towards "
+                                      "the seat")
+    lift_off_pressure: Optional[float] = quantity("lift_off_pressure_MPa", "MPa", "actuator pressure that holds the "
+                                                  "spring preload and the gas force there, p_back + (F_0 + F_gas) / "
+                                                  "A_a")
+    opening_delay: Optional[float] = quantity("opening_delay_cam_deg", "cam deg", "opening delay the gas force adds "
+                                              "(against the same drive without it)")
+    lift_loss: float = quantity("lift_loss_mm", "mm", "lift the gas force costs (largest lift without it less with "
+                                "it)")
+    pressure_rise: float = quantity("pressure_rise_MPa", "MPa", "largest pressure with the gas force less without it")
 
 
 @dataclass(frozen=True)
@@ -86,6 +150,12 @@ class HydraulicResult:
                                                  "returns to its seat (negative: closing; null: it does not return "
                                                  "within the revolution)")
     bounce: float = quantity("bounce_mm", "mm", "largest valve lift after the first seating (0: no bounce)")
+    stop: float = quantity("stop_mm", "mm", "lift at which the valve meets its stop (the end of its stroke)")
+    stop_reached: bool = quantity("stop_reached", label="the valve reached its stop (over-travel, a failure)")
+    residual_lift: float = quantity("residual_lift_mm", "mm", "valve lift left when the plunger is about to lift "
+                                    "again (above 0: not closed before the next opening, a failure)")
+    gas_force: Optional[GasForceRecord] = quantity("gas_force", label="the cylinder pressure on the valve head "
+                                                   "(with the engine's cycle)", omit_none=True)
     speed_range: tuple[float, ...] = quantity("speed_range_rpm", "rpm", "engine speeds swept, from and to")
     speeds: int = quantity("speeds", label="speeds swept")
     per_speed: HydraulicSweep = quantity("per_speed")
@@ -94,10 +164,13 @@ class HydraulicResult:
     sweep_table: str = quantity("sweep_table", label="CSV with one row per speed, relative to the output folder")
     response: Optional[DriveResult] = field(default=None, repr=False)
     sweep: Optional[SpeedSweep] = field(default=None, repr=False)
+    nose: float = field(default=0.0, repr=False)      # crank angle of the cam nose from the gas-exchange TDC [rad]
+    strokes: int = field(default=4, repr=False)
 
 
 def _drive(h):
-    """The :class:`~valvetrain.hydraulic.HydraulicDrive` of the SI view of a hydraulic section."""
+    """The :class:`~valvetrain.hydraulic.HydraulicDrive` of the SI view of a hydraulic section (the valve's stop not yet
+    placed)."""
     area = lambda d: math.pi * d**2 / 4.0  # noqa: E731
     wall = math.inf if h.pipe_wall is None else h.pipe_wall
     fill = (h.fill_pressure, h.fill_conductance) if h.fill_pressure is not None else (0.0, 0.0)
@@ -107,8 +180,44 @@ def _drive(h):
         Pipe(h.pipe_length, h.pipe_diameter, wall, h.pipe_wall_modulus, h.friction_factor, h.reaches),
         Pump(area(h.plunger_diameter), h.pump_volume, h.leakage, *fill, *relief),
         Actuator(area(h.actuator_diameter), h.actuator_volume, h.leakage),
-        Valve(h.valve_mass_kg, h.spring_rate, h.spring_preload_N, h.damping_N_s_per_m),
+        Valve(h.valve_mass_kg, h.spring_rate, h.spring_preload_N, h.damping_N_s_per_m, math.inf, h.stop_stiffness),
         h.initial_pressure, h.back_pressure)
+
+
+def lift_off_pressure(drive, gas_force=0.0):
+    """Absolute actuator pressure that lifts the valve off its seat [Pa].
+
+    Parameters
+    ----------
+    drive : valvetrain.hydraulic.HydraulicDrive
+    gas_force : float
+        Force of the cylinder pressure that holds the valve on its seat [N].
+
+    Notes
+    -----
+    The valve's equation at rest on its seat: (p_a - p_back) A_a = F_0 + F_gas.
+
+    References
+    ----------
+    Shang Hanji (1988), ch. 7.
+    """
+    return drive.back_pressure + (drive.valve.preload + gas_force) / drive.actuator.piston_area
+
+
+def cycle_angle(nose, cam_angle, strokes):
+    """Cycle crank angle [rad from the gas-exchange TDC, 0...pi strokes] of camshaft angles [rad from the nose], the
+    nose at the crank angle ``nose`` [rad]: crank = nose + camshaft angle / (camshaft revolutions per crank
+    revolution), twice the camshaft angle for a four-stroke."""
+    return np.mod(nose + np.asarray(cam_angle) / cam_per_crank(strokes), math.pi * strokes)
+
+
+def head_load(valve, gas):
+    """The diameter the cylinder pressure acts on [m] (``parts.head_diameter_mm``, else the throat's, which is
+    smaller) and the absolute pressure behind the valve head [Pa] (``[gas]``: the exhaust back pressure of an exhaust
+    valve, the intake port pressure of an intake valve)."""
+    head = valve.parts.head_diameter
+    port = gas.exhaust_back_pressure if valve.kind == "exhaust" else gas.intake_port_pressure
+    return (valve.throat_diameter if head is None else head), port
 
 
 def speed_plan(hydraulic, engine):
@@ -119,26 +228,33 @@ def speed_plan(hydraulic, engine):
     if hydraulic.speed is None:
         notes.append(f"engine speed of the simulation {speed / rpm:.0f} rpm: the rated speed")
     if hydraulic.speed_range is None:
-        low, high = (f * engine.rated_speed for f in SPEED_RANGE)
-        notes.append(f"speed range {low / rpm:.0f}-{high / rpm:.0f} rpm: {SPEED_RANGE[0]:.0%} to {SPEED_RANGE[1]:.0%} "
-                     "of the rated speed")
+        top = engine.over_speed_ratio
+        low, high = LOWEST_SPEED * engine.rated_speed, top * engine.rated_speed
+        notes.append(f"speed range {low / rpm:.0f}-{high / rpm:.0f} rpm: {LOWEST_SPEED:.0%} to {top:.0%} of the rated "
+                     "speed")
     else:
         low, high = hydraulic.speed_range
     return speed, np.linspace(low, high, hydraulic.speeds), notes
 
 
-def hydraulic_stage(hydraulic, law, engine, name):
+def hydraulic_stage(valve, law, engine, gas, name, nose, cylinder=None):
     """One camshaft revolution of one valve's hydraulic drive, and one at each speed of a sweep.
 
     Parameters
     ----------
-    hydraulic : SI view of ``[valves.NAME.hydraulic]``
+    valve : SI view of ``[valves.NAME]`` with its ``hydraulic`` section
     law : valvetrain.laws.LiftLaw
         The valve's cam law, the plunger lift.
     engine : SI view of ``[engine]``
-        Rated speed and strokes.
+        Rated speed, over-speed ratio and strokes.
+    gas : SI view of ``[gas]``
+        The pressure behind the valve head.
     name : str
         The valve's name (the tables' file names).
+    nose : float
+        Crank angle of the cam nose from the gas-exchange TDC [rad].
+    cylinder : CylinderPressure, optional
+        The engine's cycle; without it no gas force acts on the valve head (a note says so).
 
     Returns
     -------
@@ -150,22 +266,47 @@ def hydraulic_stage(hydraulic, law, engine, name):
         The grid and the speeds ask for more than :data:`MAX_NODE_STEPS` node updates (the message starts with the
         key ``reaches``).
 
+    Notes
+    -----
+    The gas force on the valve head is F = (p_cyl(phi) - p_port) pi d^2 / 4 at the cycle angle phi = nose + 2 theta
+    (four-stroke), towards the seat; the pressure of an open valve's head is taken as that of the cylinder (no
+    flow forces).  The stop lies at the rigid drive's largest lift plus ``stop_margin_mm`` (default
+    :data:`STOP_MARGIN` of that lift).  Failures, at the simulated speed and every swept speed up to the over-speed:
+    the valve reaches its stop; the valve is more than the bounce tolerance (1 um) above its seat at the end of the
+    revolution, where the plunger is about to lift again; a fill pressure above :func:`lift_off_pressure`.
+
     References
     ----------
     Shang Hanji (1988), ch. 7 (the drive) and ch. 3 (seating velocity and bounce); :mod:`valvetrain.hydraulic`.
     """
+    hydraulic = valve.hydraulic
     drive = _drive(hydraulic)
     speed, speeds, notes = speed_plan(hydraulic, engine)
+    rigid = float(np.max(law.lift(np.linspace(law.start, law.end, 2001)))) * drive.area_ratio
+    margin = STOP_MARGIN * rigid if hydraulic.stop_margin is None else hydraulic.stop_margin
+    if hydraulic.stop_margin is None:
+        notes.append(f"valve stop {to_display(rigid + margin, 'mm'):.4g} mm: {STOP_MARGIN:.0%} above the rigid "
+                     "drive's largest lift")
+    drive = replace(drive, valve=replace(drive.valve, stop=rigid + margin))
     to_cam = cam_per_crank(engine.strokes)
-    revolutions = np.append(speeds, speed) * to_cam
+    revolutions = np.concatenate([speeds, [speed] * (1 if cylinder is None else 2)]) * to_cam
     work = float(np.sum(2.0 * math.pi / revolutions)) / drive.time_step * (drive.pipe.reaches + 1)
     if work > MAX_NODE_STEPS:
         raise ValueError(f"reaches = {drive.pipe.reaches}: the simulation and the {speeds.size} speeds of the sweep "
                          f"take {work:.3g} node updates of the pipe grid (time step {drive.time_step * 1e6:.3g} us); "
                          f"allowed <= {MAX_NODE_STEPS:.0e}: use fewer reaches, a longer pipe, fewer speeds or higher "
                          "ones")
-    r = simulate(law, drive, speed * to_cam)
-    sw = speed_sweep(law, drive, speeds * to_cam, DELAY_LEVEL)
+    diameter, port = head_load(valve, gas)
+    if cylinder is None:
+        force = None
+        notes.append("no gas force on the valve head: the specification gives no engine cycle ([crank] with its "
+                     "pressure_file or [crank.cycle])")
+    else:
+        def force(theta):
+            phi = cycle_angle(nose, theta, engine.strokes)
+            return (on_grid(cylinder.angle, cylinder.pressure, phi, engine.strokes) - port) * circle_area(diameter)
+    r = simulate(law, drive, speed * to_cam, gas_force=force)
+    sw = speed_sweep(law, drive, speeds * to_cam, DELAY_LEVEL, gas_force=force)
     opening, closing = r.delays(DELAY_LEVEL)
     _, seat_velocity, bounce = r.seating()
     ends = np.concatenate([r.pump_pressure, r.actuator_pressure])
@@ -173,33 +314,84 @@ def hydraulic_stage(hydraulic, law, engine, name):
         tuple(float(x) for x in speeds), tuple(sw.max_pressure.tolist()), tuple(sw.valve_lift.tolist()),
         tuple(sw.lift_loss.tolist()), tuple(map(finite_or_none, sw.opening_delay)),
         tuple(map(finite_or_none, sw.closing_delay)), tuple(sw.cavitation.tolist()),
-        tuple(map(finite_or_none, sw.seating_velocity)), tuple(sw.bounce.tolist()))
+        tuple(map(finite_or_none, sw.seating_velocity)), tuple(sw.bounce.tolist()), tuple(sw.residual_lift.tolist()),
+        tuple(sw.stop_reached.tolist()))
+    gas_record = None if cylinder is None else _gas_record(r, simulate(law, drive, speed * to_cam), drive, cylinder,
+                                                           diameter, port, nose, engine.strokes)
     result = HydraulicResult(
         speed=speed, wave_speed=r.wave_speed, time_step=r.time_step, area_ratio=drive.area_ratio,
         rigid_lift=float(r.rigid_lift.max()), valve_lift=float(r.valve_lift.max()), lift_loss=r.lift_loss,
         opening_delay=finite_or_none(opening), closing_delay=finite_or_none(closing),
         max_pressure=r.max_pressure, max_pressure_angle=r.max_pressure_angle, min_pressure=float(ends.min()),
         vapour_pressure=hydraulic.vapour_pressure, cavitation=bool(r.cavitation.any()),
-        seating_velocity=finite_or_none(seat_velocity), bounce=bounce,
+        seating_velocity=finite_or_none(seat_velocity), bounce=bounce, stop=drive.valve.stop,
+        stop_reached=r.stop_reached, residual_lift=r.residual_lift, gas_force=gas_record,
         speed_range=(float(speeds[0]), float(speeds[-1])), speeds=int(speeds.size), per_speed=per_speed,
         notes=tuple(notes), table_file=f"tables/{name}_hydraulic.csv",
-        sweep_table=f"tables/{name}_hydraulic_sweep.csv", response=r, sweep=sw)
+        sweep_table=f"tables/{name}_hydraulic_sweep.csv", response=r, sweep=sw, nose=nose, strokes=engine.strokes)
     found = [check("hydraulic drive: smallest pressure above the vapour pressure", result.min_pressure,
                    low=hydraulic.vapour_pressure, strict_low=True, source=SOURCES, unit="MPa",
                    note="the liquid column separates (cavitation) where the pressure falls to the vapour pressure")]
+    found += _failure_checks(r, sw, speed, speeds, engine, drive, hydraulic)
     if result.seating_velocity is not None:
         found.append(check(SEATING_QUANTITY, abs(result.seating_velocity), high=SEATING_VELOCITY_MAX, unit="m/s",
                            source=SEATING_SOURCE))
     return result, found
 
 
+def _gas_record(r, free, drive, cylinder, diameter, port, nose, strokes):
+    """The :class:`GasForceRecord` of the response ``r`` with the gas force and ``free`` without it."""
+    i = r.lift_off()
+    opened = i < r.angle.size
+    phi = float(cycle_angle(nose, r.angle[i], strokes)) if opened else None
+    force = float(r.gas_force[i]) if opened else None
+    return GasForceRecord(
+        cylinder.source, diameter, port, phi,
+        None if phi is None else float(on_grid(cylinder.angle, cylinder.pressure, phi, strokes)), force,
+        None if force is None else lift_off_pressure(drive, force),
+        finite_or_none(r.delays(DELAY_LEVEL)[0] - free.delays(DELAY_LEVEL)[0]),
+        float(free.valve_lift.max() - r.valve_lift.max()), r.max_pressure - free.max_pressure)
+
+
+def _failure_checks(r, sw, speed, speeds, engine, drive, hydraulic):
+    """The drive's failures at the simulated speed and the swept speeds up to the over-speed: over-travel (the
+    valve reaches its stop), a valve not closed before its next opening, a fill pressure that lifts the valve."""
+    rpm = rpm_to_rad_s(1.0)
+    judged = speeds <= engine.over_speed_ratio * engine.rated_speed * (1.0 + 1e-9)
+    at = np.append(speeds[judged], speed)
+    lift = np.append(sw.valve_lift[judged], r.valve_lift.max())
+    left = np.append(sw.residual_lift[judged], r.residual_lift)
+    k, m = int(np.argmax(lift)), int(np.argmax(left))
+    stop = drive.valve.stop
+    reached = lift[k] >= stop
+    found = [
+        check("hydraulic drive: largest valve lift within the stroke (below the stop)", lift[k], high=stop, unit="mm",
+              severity="failure", source=FAILURE_SOURCE,
+              note=(f"the valve reaches its stop at {at[k] / rpm:.0f} rpm: it travels further than its stroke"
+                    if reached else f"largest at {at[k] / rpm:.0f} rpm")),
+        check("hydraulic drive: valve lift left at the next opening", left[m], high=BOUNCE_TOLERANCE, unit="mm",
+              severity="failure", source=FAILURE_SOURCE,
+              note=(f"at {at[m] / rpm:.0f} rpm the valve is not back on its seat when the plunger is about to lift "
+                    "again: it has not closed before its next opening"
+                    if left[m] > BOUNCE_TOLERANCE else ""))]
+    if hydraulic.fill_pressure is not None:
+        found.append(check("hydraulic drive: fill pressure below the valve's lift-off pressure",
+                           hydraulic.fill_pressure, high=lift_off_pressure(drive), unit="MPa", severity="failure",
+                           source=FAILURE_SOURCE,
+                           note="above it the supply alone lifts the valve off its seat (F_0 / A_a above the back "
+                                "pressure)"))
+    return found
+
+
 TABLE_COLUMNS = [
     ("cam_deg", "camshaft angle from the cam nose [deg]"),
+    ("crank_deg", "cycle crank angle from the gas-exchange TDC, 0...720 [deg]"),
     ("plunger_lift_mm", "plunger (follower) lift [mm]"),
     ("pump_pressure_MPa", "absolute pressure at the pump end of the pipe [MPa]"),
     ("actuator_pressure_MPa", "absolute pressure at the actuator end of the pipe [MPa]"),
     ("valve_lift_mm", "valve lift [mm]"),
     ("rigid_lift_mm", "valve lift of the rigid drive, plunger lift x A_p / A_a [mm]"),
+    ("gas_force_N", "force of the cylinder pressure on the valve head, towards the seat [N] (0: no engine cycle)"),
     ("cavitation", "1 where a pressure is held at the vapour pressure"),
 ]
 """Columns of ``tables/NAME_hydraulic.csv``."""
@@ -214,10 +406,12 @@ def table_columns(result, step=0.5 * DEG):
     rows = np.arange(0, r.angle.size, stride)
     flags = np.cumsum(r.cavitation)
     seen = np.diff(np.concatenate([[0], flags[rows]])) > 0
-    return {"cam_deg": np.degrees(r.angle[rows]), "plunger_lift_mm": r.plunger_lift[rows] / MM,
+    return {"cam_deg": np.degrees(r.angle[rows]),
+            "crank_deg": np.degrees(cycle_angle(result.nose, r.angle[rows], result.strokes)),
+            "plunger_lift_mm": r.plunger_lift[rows] / MM,
             "pump_pressure_MPa": r.pump_pressure[rows] / 1e6, "actuator_pressure_MPa": r.actuator_pressure[rows] / 1e6,
             "valve_lift_mm": r.valve_lift[rows] / MM, "rigid_lift_mm": r.rigid_lift[rows] / MM,
-            "cavitation": seen.astype(int)}
+            "gas_force_N": r.gas_force[rows], "cavitation": seen.astype(int)}
 
 
 SWEEP_COLUMNS = [
@@ -229,6 +423,8 @@ SWEEP_COLUMNS = [
     ("cavitation", "1 where the pressure fell to the vapour pressure, else 0"),
     ("seating_velocity_m_s", "valve velocity at the first seating [m/s]; empty: it does not return"),
     ("bounce_mm", "largest valve lift after the first seating [mm]"),
+    ("residual_lift_mm", "valve lift left when the plunger is about to lift again [mm]; above 0: not closed"),
+    ("stop_reached", "1 where the valve reached its stop (over-travel), else 0"),
 ]
 """Columns of ``tables/NAME_hydraulic_sweep.csv``."""
 
@@ -240,8 +436,10 @@ def sweep_columns(result):
     out = {"speed_rpm": rec["speed_rpm"], "camshaft_rpm": (result.sweep.cam_speed / rpm_to_rad_s(1.0)).tolist()}
     out.update((key, rec[key]) for key, _ in SWEEP_COLUMNS[2:])
     out["cavitation"] = [int(c) for c in rec["cavitation"]]
+    out["stop_reached"] = [int(c) for c in rec["stop_reached"]]
     return out
 
 
-__all__ = ["HydraulicResult", "HydraulicSweep", "SWEEP_COLUMNS", "TABLE_COLUMNS", "hydraulic_stage", "speed_plan",
-           "sweep_columns", "table_columns"]
+__all__ = ["CylinderPressure", "GasForceRecord", "HydraulicResult", "HydraulicSweep", "SWEEP_COLUMNS", "TABLE_COLUMNS",
+           "cycle_angle", "head_load", "hydraulic_stage", "lift_off_pressure", "speed_plan", "sweep_columns",
+           "table_columns"]

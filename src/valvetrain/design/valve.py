@@ -8,7 +8,7 @@ caller's own.  Crank angles are measured from the gas-exchange TDC (the TDC that
 intake stroke) in (-360, 360]; camshaft angles from the cam nose.
 """
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 import math
 
 import numpy as np
@@ -23,7 +23,7 @@ from ..specification import SpecError
 from ..specification.cams import layout
 from ..springs import NoSpringFits
 from ..units import DEG, MM
-from .drive import drive_record, drive_stage
+from .drive import drive_record, drive_stage, strength_stage
 from .dynamics import dynamics_stage
 from .grinding import grinding_stage
 from .hydraulic import hydraulic_stage
@@ -132,6 +132,26 @@ lift of more than half the throat is no valve design."""
 
 
 @dataclass(frozen=True)
+class StepRecord:
+    """A step of the tappet acceleration at a boundary of the law, at the rated speed: the jerk is an impulse there."""
+
+    angle: float = quantity("cam_deg", "cam deg", "camshaft angle of the step, from the nose")
+    before: float = quantity("before_m_s2", "m/s2", "tappet acceleration just before")
+    after: float = quantity("after_m_s2", "m/s2", "tappet acceleration just after")
+    size: float = quantity("step_m_s2", "m/s2", "the step, after - before")
+    on_ramp: bool = quantity("on_ramp", label="within a ramp: the clearance is being taken up, the valve at rest")
+
+
+def step_records(law, cam_speed):
+    """The acceleration steps of a law (:meth:`~valvetrain.laws.LiftLaw.acceleration_steps`) as tappet
+    accelerations at the camshaft speed [rad/s], a tuple of :class:`StepRecord`."""
+    w2 = cam_speed**2
+    return tuple(StepRecord(st.angle, w2 * st.before, w2 * st.after, w2 * st.size,
+                            bool(st.angle < law.valve_opens or st.angle > law.valve_closes))
+                 for st in law.acceleration_steps())
+
+
+@dataclass(frozen=True)
 class CamResult:
     """The law stage: the cam's lift law at the rated speed and what the rest of the design needs of it (SI)."""
 
@@ -161,6 +181,9 @@ class CamResult:
     heel_radius: float = quantity("heel_radius_mm", "mm", "heel (base) circle of the cam, r0 - ramp height")
     roller_radius: float = 0.0
     rocker_ratio: float = 1.0
+    acceleration_steps: tuple[StepRecord, ...] = quantity(
+        "acceleration_steps", label="steps of the tappet acceleration at the rated speed (the jerk is an impulse "
+        "there): cam angle, before, after, step, on a ramp", default=())
 
     def valve_lift(self, theta):
         """Valve lift [m] at camshaft angles theta."""
@@ -319,7 +342,8 @@ def law_stage(valve, engine, law=None):
                      ext.min_acceleration, law.main_half_angle, law.ramp_angle, law.ramp_height, law.lift_max,
                      float(seat[0]), float(seat[1]), event, nose, nose + 2.0 * law.valve_opens,
                      nose + 2.0 * law.valve_closes, omega, cam.follower, cam.base_radius,
-                     cam.base_radius - law.ramp_height, cam.roller_radius or 0.0, valve.rocker_ratio)
+                     cam.base_radius - law.ramp_height, cam.roller_radius or 0.0, valve.rocker_ratio,
+                     step_records(law, omega))
 
 
 def flow_stage(cam, valve, engine):
@@ -580,7 +604,7 @@ class ValveDesign:
                 f"{len(self.warnings)} of {len(self.checks)} checks fail)")
 
 
-def design_valve(name, valve, engine, gas, output, law=None, progress=None):
+def design_valve(name, valve, engine, gas, output, law=None, progress=None, cylinder=None):
     """All stages of one valve and its drive (masses, springs, strength).
 
     Parameters
@@ -592,6 +616,8 @@ def design_valve(name, valve, engine, gas, output, law=None, progress=None):
         Enter the design with a law of the caller's own (the cam section's ``build`` is skipped).
     progress : callable, optional
         ``progress(done, total)`` during the speed sweep of a ``[dynamics]`` section.
+    cylinder : valvetrain.design.hydraulic.CylinderPressure, optional
+        The engine's cycle, whose pressure on the valve head a ``[hydraulic]`` section's valve opens against.
 
     Returns
     -------
@@ -627,6 +653,9 @@ def design_valve(name, valve, engine, gas, output, law=None, progress=None):
     if valve.dynamics is not None:
         dynamics, dynamics_found = dynamics_stage(valve.dynamics, valve, engine, cam.law, drive, name, progress, cam)
         found += dynamics_found
+    strength_result, strength_found = strength_stage(valve, gas, engine, cam, drive, dynamics)
+    drive = replace(drive, strength=strength_result, checks=drive.checks + tuple(strength_found))
+    found += strength_found
     grinding = None
     if valve.grinding is not None:
         try:
@@ -634,17 +663,35 @@ def design_valve(name, valve, engine, gas, output, law=None, progress=None):
         except ValueError as exc:
             raise SpecError([f"{at}.grinding.{exc}"]) from None
         found += grinding_found
-    hydraulic = None
-    if valve.hydraulic is not None:
-        try:
-            hydraulic, hydraulic_found = hydraulic_stage(valve.hydraulic, cam.law, engine, name)
-        except ValueError as exc:
-            raise SpecError([f"{at}.hydraulic.{exc}"]) from None
-        found += hydraulic_found
-    return ValveDesign(name, valve.kind, valve.count, cam, flow_result, profile, clearance, records, drive,
-                       [c.named(name) for c in found], dynamics, grinding, hydraulic)
+    design = ValveDesign(name, valve.kind, valve.count, cam, flow_result, profile, clearance, records, drive,
+                         [c.named(name) for c in found], dynamics, grinding)
+    return with_hydraulic(design, valve, engine, gas, cylinder)
 
 
-__all__ = ["CamResult", "ClearanceResult", "FlowResult", "LiftTable", "ProfileResult", "ValveDesign",
+def with_hydraulic(design, valve, engine, gas, cylinder=None):
+    """The design with the hydraulic stage of the valve's ``[hydraulic]`` section (as it is without one).
+
+    Parameters
+    ----------
+    design : ValveDesign
+    valve, engine, gas : SI views of the valve, the engine and ``[gas]``.
+    cylinder : valvetrain.design.hydraulic.CylinderPressure, optional
+        The engine's cycle (no gas force on the valve head without it).
+
+    Raises
+    ------
+    SpecError
+        A drive whose simulation asks for too much work, naming the key.
+    """
+    if valve.hydraulic is None:
+        return design
+    try:
+        hydraulic, found = hydraulic_stage(valve, design.cam.law, engine, gas, design.name, design.cam.nose, cylinder)
+    except ValueError as exc:
+        raise SpecError([f"valves.{design.name}.hydraulic.{exc}"]) from None
+    return replace(design, checks=design.checks + [c.named(design.name) for c in found], hydraulic=hydraulic)
+
+
+__all__ = ["CamResult", "ClearanceResult", "FlowResult", "LiftTable", "ProfileResult", "StepRecord", "ValveDesign",
            "clearance_check", "clearance_stage", "design_valve", "flow_stage", "law_stage", "layout_check", "mass_checks",
-           "overlap_clearance_checks", "profile_stage", "valve_checks", "wrap_crank"]
+           "overlap_clearance_checks", "profile_stage", "step_records", "valve_checks", "with_hydraulic", "wrap_crank"]

@@ -169,7 +169,7 @@ class Actuator:
 
 @dataclass(frozen=True)
 class Valve:
-    """The valve as one degree of freedom on a rigid seat.
+    """The valve as one degree of freedom between a rigid seat and a stiff stop.
 
     Attributes
     ----------
@@ -181,12 +181,18 @@ class Valve:
         Spring force on the seat F_0 [N].
     damping : float
         Viscous damping C [N s/m].
+    stop : float
+        Lift at which the valve meets its stop, the end of its stroke y_stop [m] (inf: no stop).
+    stop_rate : float
+        Rate of the stop K_stop [N/m]: beyond y_stop the stop pushes back with K_stop (y - y_stop).
     """
 
     mass: float
     spring_rate: float
     preload: float
     damping: float = 0.0
+    stop: float = math.inf
+    stop_rate: float = 0.0
 
 
 @dataclass(frozen=True)

@@ -9,14 +9,16 @@ Pump chamber at x = 0, with fill and relief valves and leakage:
 
     (V_p / K) dp_0/dt = A_p dx_p/dt - A u(0) - Q_leak,p + Q_fill - Q_relief
 
-Actuator chamber at x = L and the valve (one degree of freedom on a rigid seat):
+Actuator chamber at x = L and the valve (one degree of freedom between a rigid seat and a stiff stop):
 
     (V_a / K) dp_a/dt = A u(L) - A_a dy/dt - Q_leak,a
-    M d2y/dt2 = (p_a - p_back) A_a - F_0 - K_s y - C dy/dt + F_seat
+    M d2y/dt2 = (p_a - p_back) A_a - F_0 - K_s y - C dy/dt - F_gas(t) - K_stop max(y - y_stop, 0) + F_seat
 
-The seat holds y >= 0: a valve that would move into it stops there (an inelastic impact), and F_seat is
+F_gas is a given force that pushes the valve towards its seat (the cylinder pressure on the valve head, less the
+port's).  The seat holds y >= 0: a valve that would move into it stops there (an inelastic impact), and F_seat is
 the reaction that keeps it there; the seating velocity is the valve's velocity over the last step before the seat
-stops it.  The chamber volumes are held at their rest values (linear
+stops it.  The stop ends the valve's travel at y_stop: a spring of rate K_stop (the stop and the valve's stem)
+that acts only beyond it.  The chamber volumes are held at their rest values (linear
 compressibility).  Pressures below the vapour pressure are clamped to it (see
 :mod:`valvetrain.hydraulic.moc`).
 """
@@ -47,9 +49,22 @@ def _chamber(capacity, old, source, conductances, references):
 
 
 @njit(cache=True)
-def _drive_kernel(plunger, dt, n_reaches, impedance, friction, area, vapour, p_init, p_back,
+def _valve_step(act_capacity, p_old, g, ref, act_area, vapour, stiffness, numerator):
+    """Backward-Euler actuator pressure and valve velocity of one step, the valve's equation written as
+    v = alpha + beta p_a with alpha = numerator / stiffness, beta = A_a / stiffness: (p_a, v, clamped)."""
+    alpha = numerator / stiffness
+    g[2] = act_area * act_area / stiffness
+    pa = _chamber(act_capacity, p_old, -act_area * alpha, g, ref)
+    clamped = pa < vapour
+    if clamped:      # the valve is pushed by the vapour pressure, not by a tension of the liquid
+        pa = vapour
+    return pa, alpha + act_area / stiffness * pa, clamped
+
+
+@njit(cache=True)
+def _drive_kernel(plunger, gas, dt, n_reaches, impedance, friction, area, vapour, p_init, p_back,
                   pump_area, pump_capacity, pump_leak, p_fill, g_fill, p_relief, g_relief,
-                  act_area, act_capacity, act_leak, mass, rate, preload, damping):
+                  act_area, act_capacity, act_leak, mass, rate, preload, damping, stop, stop_rate):
     steps = plunger.size
     p = np.full(n_reaches + 1, p_init)
     u = np.zeros(n_reaches + 1)
@@ -90,20 +105,17 @@ def _drive_kernel(plunger, dt, n_reaches, impedance, friction, area, vapour, p_i
         p[0] = p0
         u[0] = (p0 - cm[0]) / impedance
         # actuator chamber and valve: the new valve speed is linear in the new chamber pressure
-        stiffness = mass / dt + rate * dt + damping
-        alpha = (mass * v / dt - p_back * act_area - preload - rate * y) / stiffness
-        beta = act_area / stiffness
         g[0] = area / impedance
         ref[0] = cp[n]
         g[1] = act_leak
         ref[1] = p_back
-        g[2] = act_area * beta
         ref[2] = 0.0
-        pa = _chamber(act_capacity, p[n], -act_area * alpha, g, ref)
-        clamped = pa < vapour
-        if clamped:      # the valve is pushed by the vapour pressure, not by a tension of the liquid
-            pa = vapour
-        v_new = alpha + beta * pa
+        stiffness = mass / dt + rate * dt + damping
+        numerator = mass * v / dt - p_back * act_area - preload - rate * y - gas[k]
+        pa, v_new, clamped = _valve_step(act_capacity, p[n], g, ref, act_area, vapour, stiffness, numerator)
+        if y + dt * v_new > stop:   # on the stop: its spring acts on the new position y + dt v
+            pa, v_new, clamped = _valve_step(act_capacity, p[n], g, ref, act_area, vapour,
+                                             stiffness + stop_rate * dt, numerator - stop_rate * (y - stop))
         if y + dt * v_new < 0.0:
             v_new = -y / dt
             g[2] = 0.0
@@ -147,6 +159,8 @@ class DriveResult:
         y [m] and dy/dt [m/s].
     rigid_lift : ndarray
         Valve lift of the rigid, incompressible drive h A_p / A_a [m].
+    gas_force : ndarray
+        The given force that pushes the valve towards its seat [N] (0 without one).
     leaked_volume : ndarray
         Net volume let out of the drive by the leaks and the relief valve, less the fill valve's [m^3].
     pipe_stored_volume : ndarray
@@ -155,6 +169,8 @@ class DriveResult:
         Where the pressure was clamped at the vapour pressure.
     wave_speed, time_step : float
         a [m/s] and dt [s].
+    stop : float
+        Lift at which the valve meets its stop [m] (inf: none).
     """
 
     angle: np.ndarray
@@ -165,6 +181,7 @@ class DriveResult:
     valve_lift: np.ndarray
     valve_velocity: np.ndarray
     rigid_lift: np.ndarray
+    gas_force: np.ndarray
     leaked_volume: np.ndarray
     pipe_stored_volume: np.ndarray
     cavitation_pump: np.ndarray
@@ -172,6 +189,7 @@ class DriveResult:
     cavitation_actuator: np.ndarray
     wave_speed: float
     time_step: float
+    stop: float = math.inf
 
     @property
     def cavitation(self):
@@ -193,6 +211,22 @@ class DriveResult:
     def lift_loss(self):
         """Largest rigid lift less the largest valve lift [m]."""
         return float(self.rigid_lift.max() - self.valve_lift.max())
+
+    @property
+    def stop_reached(self):
+        """True when the valve reached its stop (:attr:`stop`)."""
+        return bool(self.valve_lift.max() >= self.stop)
+
+    @property
+    def residual_lift(self):
+        """The valve's lift at the end of the record [m]: by default the revolution ends where the plunger is about
+        to lift again, so a valve above its seat there has not closed before its next opening."""
+        return float(self.valve_lift[-1])
+
+    def lift_off(self):
+        """Index of the first step at which the valve is off its seat (the record's length if it never is)."""
+        off = np.flatnonzero(self.valve_lift > 0.0)
+        return int(off[0]) if off.size else self.angle.size
 
     def crossings(self, lift, level):
         """First rising and last falling camshaft angles [rad] where ``lift`` crosses ``level`` [m],
@@ -256,7 +290,7 @@ class DriveResult:
         return open_v - open_r, close_v - close_r
 
 
-def simulate(law, drive, cam_speed, start=None, span=2.0 * math.pi):
+def simulate(law, drive, cam_speed, start=None, span=2.0 * math.pi, gas_force=None):
     """Response of a hydraulic valve drive to a cam lift law at a constant camshaft speed.
 
     Parameters
@@ -270,6 +304,9 @@ def simulate(law, drive, cam_speed, start=None, span=2.0 * math.pi):
         First camshaft angle [rad from the nose]; by default 0.1 rad before the law starts.
     span : float
         Camshaft angle simulated [rad] (one revolution by default).
+    gas_force : callable, optional
+        ``gas_force(angle)``: the force that pushes the valve towards its seat [N] at camshaft angles [rad from the
+        nose] (the cylinder pressure on the valve head less the port's); none by default.
 
     Returns
     -------
@@ -279,7 +316,8 @@ def simulate(law, drive, cam_speed, start=None, span=2.0 * math.pi):
     Notes
     -----
     The equations are those of the module docstring.  The plunger speed of a step is the lift difference
-    over the step, so that the displaced volume is exact.  The rigid equivalent is h A_p / A_a.
+    over the step, so that the displaced volume is exact; the gas force is taken at the end of the step (backward
+    Euler, as the other forces).  The rigid equivalent is h A_p / A_a.
 
     References
     ----------
@@ -293,23 +331,24 @@ def simulate(law, drive, cam_speed, start=None, span=2.0 * math.pi):
     time = np.arange(steps) * dt
     angle = start + cam_speed * time
     lift = law.lift(angle)
+    gas = np.zeros(steps) if gas_force is None else np.asarray(gas_force(angle), dtype=float)
     impedance = fluid.density * a
     friction = impedance * dt * pipe.friction_factor / (2.0 * pipe.diameter)
     K = fluid.bulk_modulus
     out, flags = _drive_kernel(
-        lift, dt, int(pipe.reaches), impedance, friction, pipe.area, fluid.vapour_pressure,
+        lift, gas, dt, int(pipe.reaches), impedance, friction, pipe.area, fluid.vapour_pressure,
         drive.initial_pressure, drive.back_pressure,
         pump.plunger_area, pump.volume / (K * dt), pump.leakage, pump.fill_pressure, pump.fill_conductance,
         pump.relief_pressure, pump.relief_conductance,
         actuator.piston_area, actuator.volume / (K * dt), actuator.leakage,
-        valve.mass, valve.spring_rate, valve.preload, valve.damping)
+        valve.mass, valve.spring_rate, valve.preload, valve.damping, valve.stop, valve.stop_rate)
     reach = pipe.length / pipe.reaches
     return DriveResult(
         angle=angle, time=time, plunger_lift=lift, pump_pressure=out[:, 0], actuator_pressure=out[:, 1],
-        valve_lift=out[:, 2], valve_velocity=out[:, 3], rigid_lift=lift * drive.area_ratio,
+        valve_lift=out[:, 2], valve_velocity=out[:, 3], rigid_lift=lift * drive.area_ratio, gas_force=gas,
         leaked_volume=out[:, 4], pipe_stored_volume=out[:, 5] * pipe.area * reach / (impedance * a),
         cavitation_pump=flags[:, 0], cavitation_pipe=flags[:, 1], cavitation_actuator=flags[:, 2],
-        wave_speed=a, time_step=dt)
+        wave_speed=a, time_step=dt, stop=valve.stop)
 
 
 @dataclass(frozen=True)
@@ -331,6 +370,10 @@ class SpeedSweep:
     seating_velocity, bounce : ndarray
         The valve's velocity at its first seating [m/s] (nan: it does not return) and its largest lift after it
         [m] (:meth:`DriveResult.seating`).
+    residual_lift : ndarray
+        The valve's lift at the end of the revolution [m] (:attr:`DriveResult.residual_lift`).
+    stop_reached : ndarray of bool
+        The valve reached its stop (:attr:`DriveResult.stop_reached`).
     """
 
     cam_speed: np.ndarray
@@ -342,6 +385,8 @@ class SpeedSweep:
     cavitation: np.ndarray
     seating_velocity: np.ndarray
     bounce: np.ndarray
+    residual_lift: np.ndarray
+    stop_reached: np.ndarray
 
 
 def speed_sweep(law, drive, cam_speeds, fraction=0.05, **kwargs):
@@ -359,6 +404,6 @@ def speed_sweep(law, drive, cam_speeds, fraction=0.05, **kwargs):
         r = simulate(law, drive, float(omega), **kwargs)
         _, seat_velocity, height = r.seating()
         rows.append((r.max_pressure, float(r.valve_lift.max()), r.lift_loss, *r.delays(fraction),
-                     bool(r.cavitation.any()), seat_velocity, height))
-    cols = [np.array(c, dtype=float) for c in zip(*rows, strict=True)] if rows else [np.zeros(0)] * 8
-    return SpeedSweep(speeds, *cols[:5], cols[5].astype(bool), *cols[6:])
+                     bool(r.cavitation.any()), seat_velocity, height, r.residual_lift, r.stop_reached))
+    cols = [np.array(c, dtype=float) for c in zip(*rows, strict=True)] if rows else [np.zeros(0)] * 10
+    return SpeedSweep(speeds, *cols[:5], cols[5].astype(bool), *cols[6:9], cols[9].astype(bool))

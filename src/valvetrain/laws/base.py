@@ -56,6 +56,33 @@ class Extremes:
     min_acceleration_angle: float
 
 
+@dataclass(frozen=True)
+class AccelerationStep:
+    """A step of the follower acceleration at a segment boundary of a law (its jerk is an impulse there).
+
+    Attributes
+    ----------
+    angle : float
+        Camshaft angle of the boundary [rad from the nose].
+    before, after : float
+        d2h/dtheta2 just before and just after it, the one-sided limits [m/rad^2].
+    """
+
+    angle: float
+    before: float
+    after: float
+
+    @property
+    def size(self):
+        """after - before [m/rad^2]; times omega^2 the step of the acceleration [m/s^2]."""
+        return self.after - self.before
+
+
+STEP_TOLERANCE = 1e-6
+"""A jump of d2h/dtheta2 at a boundary is a step when it exceeds this fraction of the largest |d2h/dtheta2| of the
+law: far above the residual of a law whose continuity is solved numerically, far below any step a designer sees."""
+
+
 class LiftLaw(ABC):
     """Base class of cam lift laws (see the module docstring for the conventions)."""
 
@@ -142,6 +169,26 @@ class LiftLaw(ABC):
         idx[theta == self.end] = len(self.segments)
         idx[(theta < self.start) | (theta > self.end)] = 0
         return names[idx]
+
+    def acceleration_steps(self):
+        """The steps of the acceleration at the law's boundaries, a tuple of :class:`AccelerationStep`.
+
+        Notes
+        -----
+        At every breakpoint (segment junctions, and the start and end of the event, where the base circle has
+        d2h/dtheta2 = 0) the one-sided limits are each side's own formula taken :data:`EDGE_INSET` of the event
+        from the boundary (the law's analytic segments, not differenced samples).  A jump larger than
+        :data:`STEP_TOLERANCE` of the largest |d2h/dtheta2| is a step: the jerk is a Dirac impulse of that size
+        times omega^2 there, and a train driven by the cam feels a shock.
+        """
+        edges = self.breakpoints
+        inset = EDGE_INSET * (self.end - self.start)
+        before, after = self.derivatives(edges - inset)[2], self.derivatives(edges + inset)[2]
+        ext = self.extremes(1.0)
+        scale = max(ext.max_acceleration, -ext.min_acceleration)
+        jumps = np.abs(after - before) > STEP_TOLERANCE * scale
+        return tuple(AccelerationStep(float(a), float(b), float(c))
+                     for a, b, c in zip(edges[jumps], before[jumps], after[jumps], strict=True))
 
     def lift(self, theta):
         """Follower lift h [m]."""

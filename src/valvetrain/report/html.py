@@ -225,8 +225,11 @@ def _hydraulic(v):
     if v.hydraulic is None:
         return None
     rec = record(v.hydraulic)
+    gas = dict(rec.get("gas_force", {}))
+    source = gas.pop("pressure_source", None)
     return {"rows": [(k, val) for k, val in rec.items()
                      if k not in ("table", "sweep_table", "notes") and not isinstance(val, (list, dict))],
+            "gas_rows": [(f"gas_force.{k}", val) for k, val in gas.items()], "gas_source": source,
             "notes": rec["notes"], "table": rec["table"], "sweep_table": rec["sweep_table"]}
 
 

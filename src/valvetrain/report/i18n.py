@@ -384,7 +384,17 @@ TEXT["en"].update({
                        "(6.3)-(6.8), fatigue safety n (6.9)-(6.12), natural frequency (6.13)-(6.14).",
     "strength_method": "cam load P<sub>T</sub> = i<sub>k</sub>(P<sub>spr</sub> + P<sub>gas</sub>) + m<sub>T</sub>a<sub>T</sub> "
                        "along the profile (7.1)-(7.2); camshaft (7.3), contact (7.4)-(7.5) and (2.5), tappet (7.6)-(7.7), "
-                       "pushrod (7.8)-(7.12), rocker (7.13), rocker shaft (7.15)-(7.18).",
+                       "pushrod (7.8)-(7.12), rocker (7.13), rocker shaft (7.15)-(7.18); at every engine speed from the "
+                       "lowest to the over-speed (the simulated contact force where the valve has a dynamics section), "
+                       "each check at its worst, its speed and cam angle in its note.",
+    "strength_speed_title": "cam load and contact stress against the engine speed",
+    "cam_force_axis": "max cam load P_T, N", "contact_stress_axis": "max contact stress σ, MPa",
+    "engine_speed": "engine speed n, rpm", "load_quasi_static": "quasi-static", "load_dynamic": "simulated",
+    "rated_speed": "rated speed", "jerk_impulse": "jerk impulse at a step of the acceleration Δa_T, m/s²",
+    "acceleration_steps": "Acceleration steps (the jerk is an impulse there)",
+    "step_angle": "camshaft angle from the nose, cam deg", "step_before": "a_T before, m/s²",
+    "step_after": "a_T after, m/s²", "step_size": "step Δa_T, m/s²",
+    "step_on_ramp": "on a ramp (the valve at rest)",
     "crank_method": "kinematics (1.1)-(1.11) or the exact slider-crank; forces (2.3)-(2.19) with the exact rod angle β; "
                     "T = p<sub>T</sub>F<sub>p</sub> (2.20), M = TR (2.21); total torque for the layout and firing order; "
                     "mean torque against the indicated work W<sub>i</sub>/(πτ).",
@@ -428,7 +438,18 @@ TEXT["ru"].update({
     "strength_method": "нагрузка на кулачок P<sub>T</sub> = i<sub>k</sub>(P<sub>пр</sub> + P<sub>г</sub>) + "
                        "m<sub>т</sub>a<sub>T</sub> по профилю (7.1)-(7.2); распределительный вал (7.3), контактные "
                        "напряжения (7.4)-(7.5) и (2.5), толкатель (7.6)-(7.7), штанга (7.8)-(7.12), коромысло (7.13), "
-                       "ось коромысла (7.15)-(7.18).",
+                       "ось коромысла (7.15)-(7.18); на всех частотах вращения от наименьшей до превышающей номинальную "
+                       "(с силой динамического расчёта, если он задан для клапана), каждая проверка в худшей точке, её "
+                       "частота и угол ПРВ в примечании.",
+    "strength_speed_title": "нагрузка на кулачок и контактное напряжение по частотам вращения",
+    "cam_force_axis": "P_T max на кулачке, Н", "contact_stress_axis": "σ max контактное, МПа",
+    "engine_speed": "частота вращения двигателя n, об/мин", "load_quasi_static": "квазистатическая",
+    "load_dynamic": "динамический расчёт", "rated_speed": "номинальная частота",
+    "jerk_impulse": "импульс рывка при скачке ускорения Δa_T, м/с²",
+    "acceleration_steps": "Скачки ускорения (рывок в этих точках — импульс)",
+    "step_angle": "угол ПРВ от вершины кулачка, град", "step_before": "a_T до скачка, м/с²",
+    "step_after": "a_T после скачка, м/с²", "step_size": "скачок Δa_T, м/с²",
+    "step_on_ramp": "на участке сбега (клапан неподвижен)",
     "crank_method": "кинематика (1.1)-(1.11) или точные формулы кривошипно-шатунного механизма; силы (2.3)-(2.19) с "
                     "точным углом отклонения шатуна β; T = p<sub>T</sub>F<sub>p</sub> (2.20), M = TR (2.21); суммарный "
                     "крутящий момент по компоновке и порядку работы; средний момент сверяется с индикаторной работой "
@@ -465,7 +486,9 @@ TEXT["en"].update({
                  "method of characteristics with a constant Darcy friction factor (time step L / (N a), the wave speed "
                  "a corrected for the elasticity of the wall); the pump and actuator chambers are compressible "
                  "volumes (V / K) dp/dt = inflow − outflow with leakage, fill and relief valves; the valve is one mass "
-                 "on its spring, its damping and a rigid seat. Pressures are absolute; a pressure that falls to the "
+                 "on its spring, its damping, a rigid seat and a stiff stop at the end of its stroke (a valve that "
+                 "reaches it, or that is not back on its seat when the plunger lifts again, fails). Pressures are "
+                 "absolute; a pressure that falls to the "
                  "vapour pressure is held there and flagged as cavitation (the cavity volume is not tracked). The "
                  "rigid drive lifts the valve by the plunger lift times A_p / A_a; the delays are taken at 5 % of its "
                  "largest lift",
@@ -482,7 +505,25 @@ TEXT["en"].update({
         "min_pressure_MPa": "smallest pressure, MPa", "vapour_pressure_MPa": "vapour pressure, MPa", "cavitation": "cavitation (pressure at the vapour pressure)",
         "seating_velocity_m_s": "seating velocity (negative: closing), m/s",
         "bounce_mm": "largest lift after the first seating (bounce), mm", "speeds": "speeds swept",
+        "stop_mm": "valve stop (end of its stroke), mm", "stop_reached": "the valve reaches its stop (a failure)",
+        "residual_lift_mm": "lift left when the plunger lifts again (above 0: not closed, a failure), mm",
+        "gas_force.head_diameter_mm": "diameter the cylinder pressure acts on, mm",
+        "gas_force.port_pressure_MPa": "pressure behind the valve head (port), MPa",
+        "gas_force.lift_off_crank_deg": "valve leaves its seat, crank deg from the gas-exchange TDC (0...720)",
+        "gas_force.cylinder_pressure_at_lift_off_MPa": "cylinder pressure there, MPa",
+        "gas_force.gas_force_at_lift_off_N": "gas force on the valve head there, N",
+        "gas_force.lift_off_pressure_MPa": "actuator pressure that lifts the valve there, MPa",
+        "gas_force.opening_delay_cam_deg": "opening delay the gas force adds, cam deg",
+        "gas_force.lift_loss_mm": "lift loss the gas force adds, mm",
+        "gas_force.pressure_rise_MPa": "rise of the largest pressure by the gas force, MPa",
     },
+    "hy_gas": "Gas force on the valve head",
+    "hy_gas_method": "The valve opens against the cylinder pressure on its head: the force (p_cyl − p_port) π d² / 4 "
+                     "acts towards the seat at the crank angle of the cam nose plus twice the camshaft angle; the "
+                     "cycle is the engine's as given (its blowdown does not wait for the valve), the effects are "
+                     "against the same drive without the force",
+    "hy_gas_source": "Cylinder pressure",
+    "hy_stop": "stop (end of the stroke)", "hy_lift_off": "valve leaves its seat (gas force {force:.3g} kN)",
     "hy_sweep": "Speed sweep (one revolution per speed)",
     "hy_sweep_title": "hydraulic drive against engine speed", "hy_sweep_table": "Table against engine speed",
     "hy_max_pressure": "largest pressure, MPa", "hy_lift_loss": "lift loss, mm", "hy_delay": "delay, cam deg",
@@ -496,7 +537,9 @@ TEXT["ru"].update({
                  "Трубопровод рассчитан методом характеристик с постоянным коэффициентом трения Дарси (шаг по "
                  "времени L / (N a), скорость волны a с поправкой на упругость стенки); полости насоса и привода "
                  "сжимаемы: (V / K) dp/dt = приток − отток, с утечками, подпиточным и предохранительным клапанами; "
-                 "клапан — одна масса на пружине, с демпфированием и жёстким седлом. Давления абсолютные; давление, "
+                 "клапан — одна масса на пружине, с демпфированием, жёстким седлом и жёстким упором в конце хода "
+                 "(клапан, дошедший до упора или не вернувшийся на седло к следующему подъёму плунжера, — отказ). "
+                 "Давления абсолютные; давление, "
                  "упавшее до давления насыщенных паров, удерживается на нём и отмечается как кавитация (объём "
                  "каверны не отслеживается). Жёсткий привод поднимает клапан на подъём плунжера, умноженный на "
                  "A_p / A_a; запаздывания взяты на уровне 5 % его наибольшего подъёма",
@@ -515,7 +558,25 @@ TEXT["ru"].update({
         "cavitation": "кавитация (давление насыщенных паров)",
         "seating_velocity_m_s": "скорость посадки клапана (минус: при закрытии), м/с",
         "bounce_mm": "наибольший подъём после первой посадки (отскок), мм", "speeds": "число частот вращения",
+        "stop_mm": "упор клапана (конец его хода), мм", "stop_reached": "клапан доходит до упора (отказ)",
+        "residual_lift_mm": "подъём к началу следующего подъёма плунжера (больше 0: клапан не закрылся, отказ), мм",
+        "gas_force.head_diameter_mm": "диаметр, на который действует давление в цилиндре, мм",
+        "gas_force.port_pressure_MPa": "давление за тарелкой клапана (в канале), МПа",
+        "gas_force.lift_off_crank_deg": "клапан отходит от седла, град ПКВ от ВМТ газообмена (0...720)",
+        "gas_force.cylinder_pressure_at_lift_off_MPa": "давление в цилиндре в этот момент, МПа",
+        "gas_force.gas_force_at_lift_off_N": "сила давления газов на тарелку клапана в этот момент, Н",
+        "gas_force.lift_off_pressure_MPa": "давление в приводе, поднимающее клапан в этот момент, МПа",
+        "gas_force.opening_delay_cam_deg": "добавочное запаздывание открытия от силы газов, град ПРВ",
+        "gas_force.lift_loss_mm": "добавочная потеря подъёма от силы газов, мм",
+        "gas_force.pressure_rise_MPa": "рост наибольшего давления от силы газов, МПа",
     },
+    "hy_gas": "Сила давления газов на тарелку клапана",
+    "hy_gas_method": "Клапан открывается против давления в цилиндре на его тарелку: сила (p_ц − p_к) π d² / 4 "
+                     "направлена к седлу и берётся при угле ПКВ вершины кулачка плюс удвоенный угол ПРВ; цикл — "
+                     "заданный цикл двигателя (выпуск не ждёт открытия клапана), влияние силы — по сравнению с тем же "
+                     "приводом без неё",
+    "hy_gas_source": "Давление в цилиндре",
+    "hy_stop": "упор (конец хода)", "hy_lift_off": "клапан отходит от седла (сила газов {force:.3g} кН)",
     "hy_sweep": "Расчёт по частоте вращения (один оборот на каждой частоте)",
     "hy_sweep_title": "гидропривод в зависимости от частоты вращения двигателя",
     "hy_sweep_table": "Таблица по частоте вращения двигателя",

@@ -46,6 +46,9 @@ NAMES = {
     # engine
     "name": ("name", "наименование"), "bore": ("bore D", "диаметр цилиндра D"),
     "stroke": ("piston stroke S", "ход поршня S"), "rated_speed": ("rated speed n", "номинальная частота вращения n"),
+    "over_speed_ratio": ("over-speed / rated speed", "отношение предельной частоты вращения к номинальной"),
+    "idle_speed": ("idle speed (lowest speed of the strength checks)",
+                   "частота холостого хода (наименьшая в расчёте на прочность)"),
     "cylinders": ("number of cylinders", "число цилиндров"), "strokes": ("strokes of the cycle", "тактность"),
     "type": ("engine type", "тип двигателя"), "chamber": ("combustion chamber", "камера сгорания"),
     "layout": ("layout", "компоновка"), "bank_angle": ("bank angle", "угол развала"),
@@ -260,6 +263,12 @@ NAMES = {
     "dynamics.link_names": ("links of the drive", "звенья привода"),
     "dynamics.speeds": ("speeds of the sweep", "число частот вращения в расчёте"),
     "cam_force_max_cam": ("cam angle of the max cam load", "угол ПРВ наибольшей нагрузки на кулачок"),
+    "strength.speed_range": ("engine speeds of the strength checks", "частоты вращения двигателя в расчёте на прочность"),
+    "lowest_speed_source": ("where the lowest speed comes from", "откуда взята наименьшая частота вращения"),
+    "cam_force_max_speed": ("engine speed of the max cam load", "частота вращения наибольшей нагрузки на кулачок"),
+    "cam_contact_stress_speed": ("engine speed of the max contact stress",
+                                 "частота вращения наибольшего контактного напряжения"),
+    "roller_side_force_speed": ("engine speed of the largest side force", "частота вращения наибольшей боковой силы"),
     "valve_force_max": ("max force at the valve", "наибольшая сила на клапане"),
     "gas_force_at_opening": ("gas force at the valve's opening", "сила давления газов в момент открытия"),
     "cam_contact_stress_cam": ("cam angle of the max contact stress", "угол ПРВ наибольшего контактного напряжения"),
@@ -463,8 +472,6 @@ SKELETONS = {
     "built-in beam ({}, corrections note {}); simply supported: {} MPa; load P_T max (corrections note {})":
         "балка с заделкой ({}, поправка {}); на двух опорах: {} МПа; нагрузка P_T max (поправка {})",
     "no ramp takes up clearance_mm = {}: the flank does": "участок сбега не выбирает зазор {} мм: его выбирает профиль",
-    "even firing, order {}{}{}{}": "равномерное чередование вспышек, порядок работы {}{}{}{}",
-    "even firing, order {}{}{}{}{}{}{}{}": "равномерное чередование вспышек, порядок работы {}{}{}{}{}{}{}{}",
     "from the crank throws and cylinder axes": "по углам колен вала и осям цилиндров",
     "{} N/mm at the valve from the part geometry in [parts]":
         "{} Н/мм, приведённая к клапану, по геометрии деталей из исходных данных",
@@ -626,16 +633,28 @@ def link_names(names, lang):
 
 def translate(text, lang):
     """A text made with numbers in ``lang`` by its skeleton (:data:`SKELETONS`); as it is without one.  A text that
-    starts with drive links (``"pushrod: ..."``, :data:`LINKS`) has them translated and the rest by its skeleton."""
+    starts with drive links (``"pushrod: ..."``, :data:`LINKS`) has them translated and the rest by its skeleton; a
+    text of parts joined by ``"; "`` without a skeleton of its own, part by part (the longest head with one first)."""
     if lang == "en" or not text:
         return text
     head, sep, rest = text.partition(": ")
     if sep and all(name in LINKS for name in head.split(", ")):
         return f"{link_names(head.split(', '), lang)}: {translate(rest, lang)}"
-    numbers = NUMBER.findall(text)
-    skeleton = NUMBER.sub("{}", text)
-    ru = SKELETONS.get(skeleton)
-    return text if ru is None else ru.format(*numbers)
+    found = _by_skeleton(text)
+    if found is not None:
+        return found
+    parts = text.split("; ")
+    for k in range(len(parts) - 1, 0, -1):
+        head = _by_skeleton("; ".join(parts[:k]))
+        if head is not None:
+            return f"{head}; {translate('; '.join(parts[k:]), lang)}"
+    return text
+
+
+def _by_skeleton(text):
+    """The Russian of a text made with numbers by its skeleton (:data:`SKELETONS`), or None."""
+    ru = SKELETONS.get(NUMBER.sub("{}", text))
+    return None if ru is None else ru.format(*NUMBER.findall(text))
 
 
 def quantity_text(quantity, lang, prefixes=()):
@@ -723,6 +742,8 @@ NAMES.update({
     "hydraulic.fill_conductance": ("fill valve conductance", "проводимость подпиточного клапана"),
     "hydraulic.relief_pressure": ("relief valve opening pressure", "давление открытия предохранительного клапана"),
     "hydraulic.relief_conductance": ("relief valve conductance", "проводимость предохранительного клапана"),
+    "hydraulic.stop_margin": ("stop above the rigid drive's largest lift", "упор выше наибольшего подъёма жёсткого привода"),
+    "hydraulic.stop_stiffness": ("stiffness of the valve's stop", "жёсткость упора клапана"),
     "grinding.wheel_radius": ("grinding wheel radius R_w", "радиус шлифовального круга R_w"),
     "grinding.master_follower_radius": ("master roller radius r_m", "радиус ролика копира r_m"),
     "grinding.bar_ratio": ("bar ratio of the grinder i", "передаточное отношение качающейся планки i"),
@@ -741,11 +762,22 @@ QUANTITIES.update({
     "hydraulic drive: valve seating velocity at the simulated speed": (
         "hydraulic drive: valve seating velocity at the simulated speed",
         "гидропривод: скорость посадки клапана на расчётной частоте вращения"),
+    "hydraulic drive: largest valve lift within the stroke (below the stop)": (
+        "hydraulic drive: largest valve lift within the stroke (below the stop)",
+        "гидропривод: наибольший подъём клапана в пределах хода (ниже упора)"),
+    "hydraulic drive: valve lift left at the next opening": (
+        "hydraulic drive: valve lift left at the next opening",
+        "гидропривод: подъём клапана, оставшийся к следующему открытию"),
+    "hydraulic drive: fill pressure below the valve's lift-off pressure": (
+        "hydraulic drive: fill pressure below the valve's lift-off pressure",
+        "гидропривод: давление подпитки ниже давления подъёма клапана с седла"),
     "master cam: smallest radius of curvature (master roller undercut)": (
         "master cam: smallest radius of curvature (undercut by the master roller)",
         "копир: наименьший радиус кривизны (подрез роликом копира)"),
 })
 
+SKELETONS.update({f"even firing, order {'{}' * n}": f"равномерное чередование вспышек, порядок работы {'{}' * n}"
+                  for n in range(1, 25)})   # the order of any number of cylinders, "1-5-3-6-2-4"
 SKELETONS.update({
     "a wheel of radius {} mm cannot grind a concave stretch of smaller radius":
         "круг радиусом {} мм не может шлифовать вогнутый участок меньшего радиуса",
@@ -753,6 +785,28 @@ SKELETONS.update({
     "min_preload_N of the specification": "наименьшая сила затяжки, заданная в исходных данных",
     "engine speed of the simulation {} rpm: the rated speed": "частота вращения расчёта {} мин⁻¹: номинальная",
     "speed range {}{} rpm: {}% to {}% of the rated speed": "диапазон частот {}{} мин⁻¹: от {}% до {}% номинальной",
+    "at {} rpm, {} cam deg from the nose (quasi-static force)":
+        "при {} мин⁻¹, {} град ПРВ от вершины кулачка (квазистатическая сила)",
+    "at {} rpm, {} cam deg from the nose (dynamic force)":
+        "при {} мин⁻¹, {} град ПРВ от вершины кулачка (сила динамического расчёта)",
+    "engine.idle_speed_rpm": "частота холостого хода из исходных данных",
+    "the low end of the dynamics speed range": "нижняя граница диапазона частот динамического расчёта",
+    "{} x the rated speed (the default idle)": "{} номинальной частоты (холостой ход по умолчанию)",
     "the liquid column separates (cavitation) where the pressure falls to the vapour pressure":
         "столб жидкости разрывается (кавитация), где давление падает до давления насыщенных паров",
+    "valve stop {} mm: {}% above the rigid drive's largest lift":
+        "упор клапана {} мм: на {}% выше наибольшего подъёма жёсткого привода",
+    "no gas force on the valve head: the specification gives no engine cycle ([crank] with its pressure_file or "
+    "[crank.cycle])":
+        "сила давления газов на тарелку клапана не учтена: в исходных данных нет рабочего цикла двигателя "
+        "(индикаторной диаграммы или модели Вибе)",
+    "largest at {} rpm": "наибольший при {} мин⁻¹",
+    "the valve reaches its stop at {} rpm: it travels further than its stroke":
+        "клапан доходит до упора при {} мин⁻¹: его перемещение больше хода",
+    "at {} rpm the valve is not back on its seat when the plunger is about to lift again: it has not closed before "
+    "its next opening":
+        "при {} мин⁻¹ клапан не вернулся на седло к началу следующего подъёма плунжера: он не закрылся до "
+        "следующего открытия",
+    "above it the supply alone lifts the valve off its seat (F_0 / A_a above the back pressure)":
+        "выше него подпитка сама поднимает клапан с седла (на F_0 / A_a выше противодавления)",
 })

@@ -13,6 +13,27 @@ def _segment_lines(ax, law):
         ax.axvline(rad_to_deg(a), color="0.75", lw=0.6, ls=":")
 
 
+def jerk_impulses(ax, law, cam_speed, color="C3", label=None):
+    """Mark the jerk impulses of a law on a jerk axis: an arrow at each acceleration step, up for a rise of the
+    acceleration and down for a fall, reaching the edge of the axis (an impulse has no finite height), with the step
+    written beside it [m/s^2].  Call it after the curves are drawn (the arrows take the axis' extent)."""
+    steps = law.acceleration_steps()
+    if not steps:
+        return
+    low, high = ax.get_ylim()
+    reach = max(abs(low), abs(high))
+    ax.set_ylim(min(low, -0.15 * reach), max(high, 0.15 * reach))
+    low, high = ax.get_ylim()
+    for n, st in enumerate(steps):
+        size = cam_speed**2 * st.size
+        tip = 0.92 * (high if size > 0.0 else low)
+        x = rad_to_deg(st.angle)
+        ax.annotate("", xy=(x, tip), xytext=(x, 0.0), arrowprops={"arrowstyle": "-|>", "color": color, "lw": 1.2})
+        ax.plot([x], [0.0], marker="o", color=color, ms=4, label=label if n == 0 else None)
+        ax.annotate(f"{size:+.4g}", xy=(x, tip), xytext=(3, 0), textcoords="offset points", fontsize=7, color=color,
+                    va="top" if size > 0.0 else "bottom")
+
+
 def kinematics_figure(valve, t):
     """Tappet lift (and valve lift), velocity, acceleration and jerk against camshaft angle."""
     tab = valve.table
@@ -30,11 +51,43 @@ def kinematics_figure(valve, t):
         ax.grid(alpha=0.3)
         ax.axhline(0.0, color="0.5", lw=0.5)
         _segment_lines(ax, valve.law)
+    if valve.law.acceleration_steps():
+        jerk_impulses(axes[-1], valve.law, valve.omega_cam)
+        axes[-1].set_title(t["jerk_impulse"], fontsize=8, color="C3", loc="right")
     axes[-1].set_xlabel(t["cam_deg"])
     top = axes[0].secondary_xaxis("top", functions=(lambda c: 2 * c + rad_to_deg(valve.nose_crank),
                                                      lambda k: (k - rad_to_deg(valve.nose_crank)) / 2))
     top.set_xlabel(t["crank_deg"])
     fig.suptitle(f"{valve.name}: {value_text(valve.law.name, t['lang'])}")
+    fig.tight_layout()
+    return fig
+
+
+def strength_speed_figure(valve, t):
+    """The largest cam load and contact stress at each engine speed of the strength checks, the worst points marked."""
+    st = valve.drive.strength
+    per = st.per_speed
+    rpm = to_display(np.asarray(per.speed), "rpm")
+    kinds = np.asarray(per.load)
+    fig = Figure(figsize=(8, 6.5))
+    axes = fig.subplots(2 if per.contact_stress is not None else 1, 1, sharex=True, squeeze=False)[:, 0]
+    rows = [(axes[0], np.asarray(per.cam_force_max), t["cam_force_axis"], st.cam_force_max_speed, st.cam_force_max)]
+    if per.contact_stress is not None:
+        stress = to_display(np.asarray(per.contact_stress), "MPa")
+        rows.append((axes[1], stress, t["contact_stress_axis"], st.contact_stress_speed, float(stress.max())))
+    for ax, y, ylabel, worst_speed, worst in rows:
+        for kind, marker in (("quasi-static", "."), ("dynamic", "x")):
+            on = kinds == kind
+            if on.any():
+                ax.plot(rpm[on], y[on], ls="-" if kind == "quasi-static" else "none", marker=marker,
+                        label=t["load_" + kind.replace("-", "_")])
+        ax.plot([to_display(worst_speed, "rpm")], [worst], "o", mfc="none", mec="C3", ms=10)
+        ax.axvline(to_display(st.rated_speed, "rpm"), color="0.5", lw=0.8, ls="--", label=t["rated_speed"])
+        ax.set_ylabel(ylabel)
+        ax.grid(alpha=0.3)
+    axes[0].legend(fontsize=8)
+    axes[-1].set_xlabel(t["engine_speed"])
+    fig.suptitle(f"{valve.name}: {t['strength_speed_title']}")
     fig.tight_layout()
     return fig
 
@@ -367,11 +420,16 @@ def hydraulic_figure(valve, t):
     if cav.any():
         top.plot(x[cav], np.full(int(cav.sum()), valve.hydraulic.vapour_pressure / 1e6), "x", color="k", ms=3,
                  label=t["hy_cavitation"])
+    off = r.lift_off()
+    if valve.hydraulic.gas_force is not None and off < r.angle.size:
+        top.plot(x[off], r.actuator_pressure[off] / 1e6, "o", color="k", ms=5,
+                 label=t["hy_lift_off"].format(force=r.gas_force[off] / 1e3))
     top.set_ylabel(t["hy_pressure"])
     top.grid(alpha=0.3)
     top.legend(loc="upper right", fontsize=8)
     bottom.plot(x, r.valve_lift / MM, color="C2", label=t["hy_valve"])
     bottom.plot(x, r.rigid_lift / MM, color="k", ls="--", lw=0.8, label=t["hy_rigid"])
+    bottom.axhline(valve.hydraulic.stop / MM, color="C3", ls=":", lw=1.0, label=t["hy_stop"])
     bottom.set_xlabel(t["cam_deg"])
     bottom.set_ylabel(t["hy_lift"])
     bottom.grid(alpha=0.3)
@@ -431,7 +489,7 @@ ENGINE_FIGURES = {"crank": {"crank_forces": crank_forces_figure, "crank_torque":
 
 
 FIGURES = {"kinematics": kinematics_figure, "contour": contour_figure, "time_area": time_area_figure,
-           "curvature": curvature_figure, "spring": spring_figure}
+           "curvature": curvature_figure, "spring": spring_figure, "strength_speed": strength_speed_figure}
 
 
 def write_plots(results, folder, lang="en"):

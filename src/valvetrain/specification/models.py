@@ -33,6 +33,7 @@ class Engine(_Model):
                      "hemispherical"] = "overhead"
     rod_length_mm: Optional[Length(5.0, 10000.0, low_open=False)] = None
     over_speed_ratio: _bounded(1.0, 2.0, low_open=False) = 1.1
+    idle_speed_rpm: Optional[_bounded(10.0, 30000.0, "rpm", low_open=False)] = None
     layout: Literal["inline", "v"] = "inline"
     bank_angle_deg: _bounded(1.0, 180.0, "deg", low_open=False) = 90.0
     firing_order: Optional[list[int]] = None
@@ -46,6 +47,9 @@ class Engine(_Model):
         if self.rod_length_mm is not None and self.rod_length_mm <= self.stroke_mm / 2.0:
             problems.append(f"engine.rod_length_mm = {self.rod_length_mm:g} must exceed the crank radius "
                             f"stroke_mm/2 = {self.stroke_mm / 2.0:g} mm")
+        if self.idle_speed_rpm is not None and self.idle_speed_rpm >= self.rated_speed_rpm:
+            problems.append(f"engine.idle_speed_rpm = {self.idle_speed_rpm:g}: allowed below rated_speed_rpm = "
+                            f"{self.rated_speed_rpm:g}")
         n = self.cylinders
         if self.firing_order is not None and sorted(self.firing_order) != list(range(1, n + 1)):
             problems.append(f"engine.firing_order = {shown(self.firing_order)}: must list each cylinder 1...{n} once")
@@ -290,7 +294,9 @@ class Hydraulic(_Model):
     left out).  ``pipe_wall_mm``
     left out makes the pipe rigid.  ``fill_pressure_MPa`` gives the pump chamber a fill (check) valve from a supply
     at that pressure, ``relief_pressure_MPa`` a relief valve opening at it.  The valve's mass, spring and damping are
-    the ones of the hydraulic drive and stand apart from the mechanical spring design."""
+    the ones of the hydraulic drive and stand apart from the mechanical spring design.  The valve's travel ends at
+    a stop ``stop_margin_mm`` above the rigid drive's largest lift (10 % of that lift if left out), of rate
+    ``stop_stiffness_N_per_mm``."""
 
     speed_rpm: Optional[_bounded(1.0, 30000.0, "rpm", low_open=False)] = None
     speed_range_rpm: Optional[Pair(1.0, 30000.0, "rpm")] = None
@@ -319,10 +325,18 @@ class Hydraulic(_Model):
     fill_conductance_cm3_per_s_MPa: _bounded(0.0, 1e9, "cm3/(s MPa)") = 1000.0
     relief_pressure_MPa: Optional[_bounded(0.0, 1000.0, "MPa")] = None
     relief_conductance_cm3_per_s_MPa: _bounded(0.0, 1e9, "cm3/(s MPa)") = 1000.0
+    stop_margin_mm: Optional[Length(0.0, 500.0, low_open=False)] = None
+    stop_stiffness_N_per_mm: _bounded(1.0, 1e8, "N/mm", low_open=False) = 1e5
 
     @model_validator(mode="after")
     def _pressures_in_order(self):
         problems = []
+        held = self.spring_preload_N / (math.pi * (self.actuator_diameter_mm * 1e-3) ** 2 / 4.0) / 1e6
+        if self.initial_pressure_MPa > self.back_pressure_MPa + held:
+            problems.append(f"initial_pressure_MPa = {self.initial_pressure_MPa:g} lifts the valve off its seat at "
+                            f"rest (its preload {self.spring_preload_N:g} N holds it up to back_pressure_MPa + F_0 / "
+                            f"A_a = {self.back_pressure_MPa + held:.4g} MPa): the drive at rest must hold the valve "
+                            "on its seat; allowed <= that pressure")
         if self.speed_range_rpm is not None and self.speed_range_rpm[0] >= self.speed_range_rpm[1]:
             problems.append(f"speed_range_rpm = {list(self.speed_range_rpm)} must be [low, high] engine rpm with "
                             "low < high")
