@@ -11,8 +11,14 @@ from valvetrain.cli import main
 from valvetrain.specification import example_text
 
 ARTEFACTS = ["results.json", "report.html", "tables/intake_lift.csv", "contour/intake.csv", "contour/intake.dxf",
-             "plots/intake_kinematics.png", "plots/intake_contour.png", "plots/intake_time_area.png",
-             "plots/intake_curvature.png"]
+             "plots/intake_kinematics.png", "plots/intake_contour.png", "plots/intake_spring.png"]
+
+MAIN_FIGURES = {"intake_kinematics.png", "intake_contour.png", "intake_spring.png", "intake_strength_speed.png",
+                "valve_timing.png", "crank_torque.png"}
+"""The figures of the built-in example that a run draws by default (README, ``--figures``)."""
+
+ON_REQUEST = {"intake_time_area.png", "intake_curvature.png", "crank_forces.png", "crank_pin_polar.png"}
+"""Those drawn only with ``--figures all``."""
 
 
 @pytest.fixture(scope="module")
@@ -187,6 +193,29 @@ def test_a_pair_without_room_for_the_inner_spring_exits_2(refused):
     for command in ("validate", "run"):
         assert "valves.intake.spring: no spring of the wire range 2...7 mm fits inside the outer spring" in \
                refused(text, command)
+
+
+@pytest.mark.parametrize("figures, drawn", [(None, MAIN_FIGURES), ("all", MAIN_FIGURES | ON_REQUEST),
+                                             ("none", set())])
+def test_the_figures_drawn_are_those_asked_for(tmp_path, figures, drawn):
+    """--figures main (the default), all or none: the plots written are those of the README's list, the report embeds
+    each of them and names the command that draws each of the others."""
+    out = tmp_path / "d"
+    option = [] if figures is None else ["--figures", figures]
+    assert CliRunner().invoke(main, ["run", "--out", str(out), *option]).exit_code == 0
+    assert {p.name for p in (out / "plots").iterdir()} == drawn
+    html = (out / "report.html").read_text(encoding="utf-8")
+    assert html.count('src="data:image/png;base64,') == len(drawn)
+    assert html.count("valvetrain run --figures all") == len(MAIN_FIGURES | ON_REQUEST) - len(drawn)
+
+
+def test_a_run_without_figures_does_without_matplotlib(tmp_path):
+    """--figures none draws nothing, so the run never imports matplotlib (a third of a second)."""
+    code = ("import sys; from valvetrain.cli import main; "
+            f"main(['run', '--out', {str(tmp_path / 'd')!r}, '--figures', 'none'], standalone_mode=False); "
+            "print('matplotlib' in sys.modules)")
+    found = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert found.stdout.splitlines()[-1] == "False"
 
 
 def test_the_report_is_one_file(example_run):

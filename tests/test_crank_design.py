@@ -35,7 +35,7 @@ def test_example_crank_chapter(example):
 
 def test_crank_tables(tmp_path):
     out = tmp_path / "d"
-    assert CliRunner().invoke(main, ["run", "--out", str(out)]).exit_code == 0
+    assert CliRunner().invoke(main, ["run", "--out", str(out), "--figures", "all"]).exit_code == 0
     header = (out / "tables" / "crank.csv").read_text().splitlines()[0].split(",")
     for col in ["crank_deg", "s_mm", "v_m_s", "j_m_s2", "p_gas_MPa", "p_j_MPa", "p_MPa", "p_N_MPa", "p_S_MPa",
                 "p_K_MPa", "p_T_MPa", "T_N", "M_cyl_Nm", "pin_radial_N", "pin_tangential_N"]:

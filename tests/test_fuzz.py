@@ -46,3 +46,26 @@ def test_mutated_specification_runs_or_is_refused(data):
 @given(st.sampled_from(FILE_CASES))
 def test_malformed_file_runs_or_is_refused(case):
     _assert_contract(case)
+
+
+def test_the_fuzzer_covers_the_commands_and_the_stage_sections():
+    """Issue 21: the fuzzer's random cases run study, optimize (bounded: --maxiter 1), sweep and compare besides run,
+    and mutate the keys of the [dynamics] and [hydraulic] sections or add them to a valve."""
+    cases = fuzz.random_cases(200, "21", BASES)
+    commands = {c["command"][0] for c in cases if c.get("command")}
+    assert commands == set(fuzz.COMMANDS)
+    assert all(c["command"][1:3] == ["--maxiter", "1"] for c in cases if c.get("command", [""])[0] == "optimize")
+    ops = [op for c in cases for op in c["ops"]]
+    assert any(op[0] == "stage" for op in ops)
+    assert any(op[0] in ("scale", "set", "type", "delete") and len(op[1]) > 3 and op[1][2] in fuzz.STAGES
+               for op in ops)
+
+
+def test_a_command_case_is_classified_by_its_exit_status():
+    """compare of the built-in example with itself runs (exit status 0, no NaN printed or written); a --grid of a
+    key the file does not have is refused with exit status 2 and a message naming the key."""
+    ok = fuzz.run_case({"base": "example", "ops": [], "command": ["compare", "<base>"]}, BASES, timeout=120.0)
+    assert ok["outcome"] == "ok", ok
+    refused = fuzz.run_case({"base": "example", "ops": [], "command": ["study", "--grid", "engine.nosuchkey_mm=1,2"]},
+                            BASES, timeout=120.0)
+    assert refused["outcome"] == "refused" and "engine.nosuchkey_mm" in " ".join(refused["detail"]), refused

@@ -199,6 +199,64 @@ def test_vectorised_search_equals_brute_force(grade):
     assert best.passes
 
 
+def _every_candidate(preloads, rates, lift, throat, omega, options, material, **limits):
+    """The exhaustive search the screen shortens: every line x D x d of the grid designed
+    (:func:`valvetrain.springs.evaluate_springs` over the whole grid), as a (lines, grid) array of passes."""
+    big_d, d = springs._grid(throat, options.diameter_range, options.diameter_step,
+                             springs.wire_series(options.wire_range_mm, options.wire_step_mm))
+    found = springs.evaluate_springs(np.asarray(preloads)[:, None], np.asarray(rates)[:, None], lift, big_d[None, :],
+                                     d[None, :], material, omega, ratio_range=options.ratio_range, **limits)
+    return found, big_d, d
+
+
+@settings(max_examples=60, deadline=None)
+@given(preload=st.floats(30.0, 900.0), lift=st.floats(0.004, 0.016),
+       throat=st.floats(0.025, 0.06), rpm=st.floats(800.0, 8000.0), resonance=st.sampled_from([0.0, 6.0, 10.0]),
+       grade=st.sampled_from(["60S2A", "VDSiCr", "VDCrV"]), longest=st.sampled_from([None, 4.0, 6.0]),
+       safety=st.sampled_from([0.0, 1.1, 1.3, 1.6]))
+def test_the_screen_keeps_every_passing_spring(preload, lift, throat, rpm, resonance, grade, longest, safety):
+    """The bounds of the screen (:func:`valvetrain.springs._may_pass`) never drop a spring that passes: every
+    candidate of the exhaustive search that passes every check lies inside the screen, for lines of every ratio,
+    grades with and without the resonance and fatigue checks and installed-length limits."""
+    omega = np.pi * rpm / 60.0
+    ratios = springs.deflection_ratios()
+    preloads, rates = np.full(ratios.size, preload), (ratios - 1.0) * preload / lift
+    material = springs.SpringMaterial(grade, min_resonance_ratio=resonance, min_safety=safety)
+    options = springs.SpringOptions(materials=(material,))
+    high = None if longest is None else longest * lift
+    found, big_d, d = _every_candidate(preloads, rates, lift, throat, omega, options, material,
+                                       max_installed_length=high)
+    passed = found.passed.reshape(ratios.size, d.size)
+    keep = springs._may_pass(preloads, rates, lift, big_d, d, material, omega, high)
+    assert not np.any(passed & ~keep)
+
+
+@pytest.mark.parametrize("scale, passing", [(1.0, True), (5.0, False)])
+def test_the_screened_search_finds_what_the_exhaustive_one_finds(scale, passing):
+    """design_springs designs only the springs the screen keeps (or every spring when none of them passes): the
+    spring chosen, the number passing and the number tried are those of the exhaustive search over every line of
+    the requirement (the lightest passing candidate, first in grid order; else the best worst margin)."""
+    law = seed000_law()
+    omega = SEED000_OMEGA_EXACT * 6 / 7
+    y, req = _requirement(law, 0.147)
+    requirement = springs.Requirement(y, req * scale * (6 / 7) ** 2, springs.seat_load(0.147))
+    material = springs.SpringMaterial("VDSiCr")
+    options = springs.SpringOptions(materials=(material,))
+    search = springs.design_springs(requirement, 0.0368, omega, options)
+    preloads, rates = requirement.lines(options.ratio_range)
+    found, _, _ = _every_candidate(preloads, rates, requirement.max_lift, 0.0368, omega, options, material,
+                                   max_installed_length=6.0 * requirement.max_lift)
+    n_pass = int(np.count_nonzero(found.passed))
+    assert (n_pass > 0) == passing and search.passing == n_pass and search.tried == len(found)
+    i = int(np.argmin(np.where(found.passed, found.mass, np.inf))) if passing else int(np.argmax(found.worst_margin))
+    chosen = search.designs["spring"]
+    assert (chosen.mean_diameter, chosen.wire_diameter, chosen.coils, chosen.characteristic.preload) == (
+        found.mean_diameter[i], found.wire_diameter[i], found.coils[i], found.preload[i])
+    assert chosen.passes == passing
+    designed = sum(len(c) for c in springs._search(preloads, rates, requirement.max_lift, 0.0368, omega, options)[0])
+    assert designed < len(found) / 10 if passing else designed == len(found)   # the screen's point
+
+
 def test_design_picks_the_lightest_passing_spring():
     line = springs.Characteristic(150.0, 25e3, 0.009)
     options = springs.SpringOptions(materials=(springs.SpringMaterial(min_resonance_ratio=5.0),))

@@ -42,7 +42,7 @@ def test_every_constraint_is_a_check_with_a_margin(article):
     assert {"max pressure angle", "grinding wheel radius / concave radius", "spring reserve against inertia",
             "max tappet acceleration", "min tappet acceleration", "Hertz contact stress", "valve seating velocity",
             "valve-piston clearance"} <= names
-    assert "rho_min (cam profile)" not in names            # a roller follower
+    assert "rho_min (cam profile)" in names                # a roller follower's cam too (issue 20: no pointed cam)
     assert worst_margin(found) == min(c.margin for c in found)
 
 
@@ -89,10 +89,58 @@ def test_margins_follow_the_design(article):
                                                                    rel=1e-9)
 
 
-def test_flat_follower_rho_min(article):
-    assert rho_min(article, 2 * MM) is None
+def test_rho_min_for_either_follower(article):
+    """The smallest convex radius bounds a roller follower's cam as a flat follower's (issue 20 item 4)."""
+    assert rho_min(article, 2 * MM).value == article.profile.rho_min
     flat = replace(article, cam=replace(article.cam, follower="flat"))
     assert rho_min(flat, 2 * MM).value == article.profile.rho_min
+
+
+def pitch_radius_by_differences(law, heel, roller, low, high, n=2001):
+    """Signed radius of curvature of the roller-centre curve c = (r + R_r + h) (sin t, cos t) by central differences of
+    its points (numpy.gradient), not by the closed form of valvetrain.geometry: the independent reference (a step of
+    some 5e-5 rad keeps both the round-off and the truncation of the second differences below 1e-6 relative)."""
+    t = np.linspace(low, high, n)
+    g = heel + roller + law.lift(t)
+    x, y = g * np.sin(t), g * np.cos(t)
+    dx, dy = np.gradient(x, t), np.gradient(y, t)
+    ddx, ddy = np.gradient(dx, t), np.gradient(dy, t)
+    return -(dx * dx + dy * dy) ** 1.5 / (dx * ddy - dy * ddx)     # > 0 where convex (a circle: its radius)
+
+
+def test_an_undercut_between_the_table_points_is_found():
+    """a_qd = 100.9 mm/rad2, phi_1 = 29.18 deg, x_d = 0.02, x_g = 0.63 (near the pointed optimum the search found
+    before the smallest contour radius bounded it): the pitch radius of curvature dips below the 27 mm roller between
+    two angles of the 0.5 deg table, where every table sample is convex (smallest +0.014 mm).  Reference: the pitch
+    curve's radius by central differences over 400,001 angles.  The undercut (0 < pitch radius <= roller radius,
+    Shang Hanji (1988), section 2.1) is reported, and the contour's rho_min matches the reference's."""
+    d = with_cam(peak_acceleration_mm_per_rad2=100.9, phi1_deg=29.18, peak_position=0.02, trough_position=0.63)
+    roller = d.cam.roller_radius
+    table = d.profile.table.rho
+    assert np.min(table[table + roller > 0.0]) > 0.0           # the table's samples alone show no undercut
+    reference = pitch_radius_by_differences(d.law, d.cam.heel_radius, roller, -30 * DEG, -24 * DEG)
+    assert 0.0 < reference.min() <= roller                       # the reference: undercut
+    assert d.profile.undercut
+    assert d.profile.rho_min == pytest.approx(reference.min() - roller, abs=1e-3 * MM)
+    assert "cam profile undercut: pitch radius of curvature - roller radius" in {
+        c.quantity.split(": ", 1)[-1] for c in d.checks if c.severity == "failure" and not c.passed}
+
+
+def test_the_contact_stress_is_the_worst_of_standstill_and_the_over_speed(article):
+    """Hand calculation of Valve-train practical works (n.d.), eq. 7.5 on the article's cam with its designed spring,
+    at the nose (cam angle 0, the largest lift): sigma = 0.418 sqrt(P E / b (1/rho + 1/r_p)), with P the spring
+    force at standstill (the valve decelerates at the nose: the inertia unloads the cam at speed) and rho from the
+    pitch curve by central differences; the refined largest stress along the open event is at least that."""
+    width, line = 40 * MM, article.drive.lines["chosen"]
+    rho = pitch_radius_by_differences(article.law, article.cam.heel_radius, article.cam.roller_radius, -0.05,
+                                      0.05)[1000] - article.cam.roller_radius          # the middle angle: 0
+    force = line.force(article.cam.valve_lift(np.array([0.0])))[0]          # i_k = 1
+    hand = 0.418 * np.sqrt(force * 2.1e11 / width * (1 / rho + 1 / article.cam.roller_radius))
+    assert article.cam.rocker_ratio == 1.0
+    at_speed = contact_stress_value(article, width, top=1.1)
+    assert at_speed >= hand * (1 - 1e-3)
+    # at the rated speed alone the nose is unloaded by the inertia: the standstill case is the larger there
+    assert contact_stress_value(article, width, top=1e-6) == pytest.approx(at_speed, rel=1e-9)
 
 
 def test_no_jump_from_a_short_sweep(article):

@@ -208,3 +208,41 @@ def test_validate_exits_0_with_a_failure_and_prints_it_first(tmp_path):
     assert result.exit_code == 0, result.output
     assert result.output.splitlines()[1].startswith("failure: intake: cam contact stress")
     assert "checks: 1 failure(s)" in result.output
+
+
+def test_a_check_that_cannot_be_evaluated_says_so_and_fails(tmp_path, monkeypatch):
+    """Issue 21: a check whose value is NaN was printed as "... = nan m/s, recommended <= 0.5 m/s" and counted as a
+    warning.  A check that cannot be evaluated says so in words, with the stage's reason (or that its value could
+    not be computed), and is a failure whatever its range's severity: on the command line, in results.json (its
+    value null, never NaN) and in the English and Russian reports.  The stage is made to give one such check (the
+    hydraulic and dynamics stages give them with their own reasons)."""
+    from valvetrain import flow
+
+    given = flow.check_flow
+
+    def with_nan(*args, **kwargs):
+        return given(*args, **kwargs) + [
+            check("valve seating velocity", float("nan"), high=0.5, unit="m/s", source="s",
+                  unevaluated="the valve has not reseated"),
+            check("closing lag", float("nan"), 40.0, 60.0, source="s", severity="info")]
+
+    monkeypatch.setattr(flow, "check_flow", with_nan)
+    out = tmp_path / "out"
+    result = CliRunner().invoke(main, ["run", str(write(tmp_path, example())), "--out", str(out)])
+    assert result.exit_code == 0, result.output
+    assert "nan" not in result.output.lower()
+    lines = result.output.splitlines()
+    assert ("failure: intake: valve seating velocity cannot be evaluated: the valve has not reseated, allowed "
+            "<= 0.5 m/s (s)") in lines
+    assert "failure: intake: closing lag cannot be evaluated: its value could not be computed, allowed 40...60 (s)" \
+        in lines
+    assert "checks: 2 failure(s)" in result.output
+    records = json.loads((out / "results.json").read_text())["warnings"]
+    seating = next(w for w in records if w["quantity"] == "intake: valve seating velocity")
+    assert seating["severity"] == "failure" and seating["value"] is None
+    assert seating["unevaluated"] == "the valve has not reseated"
+    report = (out / "report.html").read_text()
+    assert "cannot be evaluated: the valve has not reseated" in report and ">nan" not in report
+    ru = tmp_path / "ru"
+    assert CliRunner().invoke(main, ["run", str(tmp_path / "spec.toml"), "--out", str(ru), "--lang", "ru"]).exit_code == 0
+    assert "не может быть вычислено: значение не удалось вычислить" in (ru / "report.html").read_text()

@@ -40,6 +40,7 @@ import copy  # noqa: E402
 import csv  # noqa: E402
 import datetime  # noqa: E402
 import faulthandler  # noqa: E402
+import functools  # noqa: E402
 import json  # noqa: E402
 import math  # noqa: E402
 from pathlib import Path  # noqa: E402
@@ -416,7 +417,7 @@ LITERALS = {
                                              "parabola_to_nose"],
     "strokes": [2, 4], "count": [1, 2, 8], "cylinders": [1, 2, 3, 64], "ramp": [True, False],
     "harmonics": [2, 3, 4, 400], "junction_order": [0, 1, 5, 10], "max_harmonics": [4, 400],
-    "contour_points": [36, 100000], "segment": [1, 2, 3, 50],
+    "contour_points": [36, 100000], "segment": [1, 2, 3, 50], "model": ["1dof", "multi"],
 }
 UNKNOWN_KEYS = ["bore", "Bore_mm", "max_lift", "phi4_deg", "\u00fcber", "x y", ""]
 WEIRD_NAMES = ["crank", "two_stroke", "1st", "ex haust", "\u00e9chappement", "a" * 300, "x.y", ""]
@@ -426,8 +427,14 @@ TEXT_OPS = ["bom", "crlf", "truncate_half", "truncate_end", "nul_byte", "latin1_
             "duplicate_key", "bom_twice"]
 
 OP_KINDS = (["scale"] * 4 + ["gentle"] * 4 + ["special"] * 2 + ["type"] * 2 + ["delete"] * 2 + ["literal"] * 2
-            + ["law"] * 2 + ["unknown", "follower", "nest", "long_list", "text", "valve", "section", "lift_file",
-                             "pressure_file"])
+            + ["law"] * 2 + ["stage_key"] * 3 + ["stage"] * 2
+            + ["unknown", "follower", "nest", "long_list", "text", "valve", "section", "lift_file", "pressure_file"])
+
+STAGES = ("dynamics", "hydraulic")
+"""The sections of a valve whose keys :func:`draw_op` mutates on purpose (``stage_key``) and that it adds to a valve
+(``stage``): the elastic train's speed sweep and the hydraulic drive."""
+
+STAGE_OPS = ["scale", "gentle", "special", "type", "delete", "literal"]
 
 
 def _get(doc, path):
@@ -506,6 +513,12 @@ def _cams(doc):
 def draw_op(pick, doc):
     """One mutation operation for the document ``doc``, drawn with ``pick(sequence) -> item``."""
     kind = pick(OP_KINDS)
+    if kind == "stage_key":
+        paths = [p for p in leaves(doc) if len(p) > 3 and p[0] == "valves" and p[2] in STAGES]
+        if paths:
+            return _stage_key_op(pick, doc, pick(paths))
+    if kind == "stage" and _cams(doc):
+        return ["stage", pick(_cams(doc)), pick(list(STAGES))]
     numbers = _numbers(doc)
     if kind in ("scale", "gentle", "special") and numbers:
         path = pick(numbers)
@@ -547,6 +560,31 @@ def draw_op(pick, doc):
                                  "empty_valves", "add_cycle_and_file"])]
     paths = leaves(doc)
     return ["type", pick(paths), pick(OTHER_TYPES)]
+
+
+def _stage_key_op(pick, doc, path):
+    """A mutation of one key of a valve's [dynamics] or [hydraulic] section."""
+    how = pick(STAGE_OPS)
+    value = _get(doc, path)
+    if how in ("scale", "gentle") and isinstance(value, (int, float)) and not isinstance(value, bool):
+        return ["scale", path, pick(FACTORS if how == "scale" else GENTLE)]
+    if how == "special":
+        return ["set", path, pick(SPECIALS)]
+    if how == "delete":
+        return ["delete", path]
+    if how == "literal" and path[-1] in LITERALS:
+        return ["set", path, pick(LITERALS[path[-1]])]
+    return ["type", path, pick(OTHER_TYPES)]
+
+
+@functools.lru_cache(maxsize=1)
+def stage_sections():
+    """``{stage: table}``: the [dynamics] section of examples/pushrod-dynamics.toml (20 speeds: a case stays short)
+    and the [hydraulic] section of examples/marine-hydraulic-exhaust.toml."""
+    dyn = tomllib.loads((EXAMPLES / "pushrod-dynamics.toml").read_text(encoding="utf-8"))
+    hyd = tomllib.loads((EXAMPLES / "marine-hydraulic-exhaust.toml").read_text(encoding="utf-8"))
+    return {"dynamics": {**dyn["valves"]["intake"]["dynamics"], "speeds": 20},
+            "hydraulic": hyd["valves"]["exhaust"]["hydraulic"]}
 
 
 def draw_case(pick, bases):
@@ -612,6 +650,12 @@ def _apply(doc, files, op):
         if op[2] == "tangent":
             valve["cam"].update(ROLLER)
         return f"valves.{op[1]}.cam = the {op[2]} cam of LAW_CAMS (was law {old.get('law')!r})"
+    if kind == "stage":
+        valve = _get(doc, ("valves", op[1]))
+        if not isinstance(valve, dict):
+            return None
+        valve[op[2]] = copy.deepcopy(stage_sections()[op[2]])
+        return f"valves.{op[1]}.{op[2]} = the [{op[2]}] section of stage_sections()"
     if kind == "follower":
         cam = _get(doc, ("valves", op[1], "cam"))
         if not isinstance(cam, dict):
@@ -743,6 +787,149 @@ def _swap_nested(x):
     if isinstance(x, _Nested):
         return _Raw("[" * x.depth + "1.0" + "]" * x.depth)
     return x
+
+
+# ---------------------------------------------------------------------------------------------------------------
+# The other commands: study, optimize, sweep and compare on a (mutated) specification, through the command line
+
+COMMANDS = ("study", "optimize", "sweep", "compare")
+COMMAND_EVERY = 4
+"""One random case in COMMAND_EVERY runs one of the COMMANDS instead of ``run``."""
+
+COMMAND_BASES = ("example", "examples/pushrod-dynamics.toml", "examples/marine-hydraulic-exhaust.toml",
+                 "examples/measured-lobe.toml", "examples/v8-crank.toml")
+"""The base specifications each command runs on unmutated: the built-in example, the dynamics and hydraulic
+examples, a measured lobe and a file without valves."""
+
+COMMAND_TIMEOUT = {"optimize": 4.0, "study": 2.0, "compare": 2.0, "sweep": 2.0}
+"""Multiples of ``--timeout`` a command's case may take (an optimisation designs dozens of cams)."""
+
+GRID_VALUES = ["{a},{b}", "{a}", "{a},{a},{a}", '["VDSiCr"]', "{{x = 1}}", "nan,{a}", "inf", "abc", "", "1e300,{a}",
+               "-1,{a}", "true,false", '"flat","roller"', "{a},,{b}"]
+"""``--grid KEY=...`` texts: ``{a}`` and ``{b}`` are the key's value x 0.95 and x 1.05 (1 and 2 for text)."""
+
+VARY_BOUNDS = ["{a},{b}", "{b},{a}", "-10,1e6", "1e300,1e301", "nan,1", "{a},{a}", "0,0", "{a}"]
+"""``--vary KEY=...`` bounds, as :data:`GRID_VALUES`."""
+
+OPTIMIZE_OPTIONS = [[], [], ["--objective", "time_area"], ["--no-jump", "0"], ["--no-jump", "3"],
+                    ["--wheel-radius", "5"], ["--valve", "{valve}"], ["--valve", "nosuchvalve"]]
+
+
+def _near(value):
+    if isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value):
+        return {"a": f"{0.95 * value:.6g}", "b": f"{1.05 * value:.6g}"}
+    return {"a": "1", "b": "2"}
+
+
+def draw_command(pick, doc, command=None):
+    """The command line (after the command's name and the file) of one command on ``doc``, e.g. ``["study",
+    "--grid", "engine.bore_mm=76,84"]``; bounded runs: optimize with --maxiter 1, study grids of a few points.
+    ``compare`` compares the file with its unmutated base (``<base>``)."""
+    command = command or pick(COMMANDS)
+    paths = leaves(doc) or [("engine", "bore_mm")]
+    valves = _cams(doc) or ["intake"]
+    if command == "study":
+        args = ["study"]
+        for _ in range(pick([1, 1, 2])):
+            path = pick(paths)
+            args += ["--grid", f"{dotted(path)}={pick(GRID_VALUES).format(**_near(_get(doc, path)))}"]
+        return args
+    if command == "optimize":
+        args = ["optimize", "--maxiter", "1"]
+        valve = pick(valves)
+        under = [p for p in leaves(doc) if len(p) > 2 and p[0] == "valves" and p[1] == valve
+                 and isinstance(_get(doc, p), (int, float)) and not isinstance(_get(doc, p), bool)]
+        for _ in range(pick([0, 0, 1, 2])):
+            if under:
+                path = pick(under)
+                key = dotted(path[2:])
+                args += ["--vary", f"{key}={pick(VARY_BOUNDS).format(**_near(_get(doc, path)))}"]
+        if len(args) > 5 and pick([True, False]):
+            args += args[-2:]                                   # the same --vary twice
+        return args + [a.format(valve=valve) for a in pick(OPTIMIZE_OPTIONS)]
+    if command == "sweep":
+        return ["sweep"] + pick([[], [], ["--valve", pick(valves)], ["--valve", "nosuchvalve"]])
+    return ["compare", "<base>"]
+
+
+def _command_messages(output):
+    """The refusal messages of a command's output: its ``error: `` lines and click's ``Error: `` line."""
+    return [line.split(": ", 1)[1] for line in output.splitlines() if line.startswith(("error: ", "Error: "))]
+
+
+def _json_problems(folder):
+    """NaN and inf in the JSON files a command wrote: ``[(generic name, text)]``."""
+    found = []
+    for f in sorted(Path(folder).rglob("*.json")) if Path(folder).is_dir() else []:
+        bad = []
+        json.loads(f.read_text(encoding="utf-8"), parse_constant=bad.append)
+        if bad:
+            found.append((f"{f.name}: {bad[0]}", f"{f.name} holds {bad[0]} ({len(bad)} x)"))
+    return found
+
+
+OPTION = re.compile(r"(?<![\w-])--[a-z]|'--[a-z]")
+"""An option of a command named in a message (click's own messages quote it: "Invalid value for '--grid'")."""
+
+NAN_WORD = re.compile(r"(?<![\w.])-?(nan|inf)(?![\w.])", re.IGNORECASE)
+
+
+def run_command(case, tmp, spec_file, base_file, timeout):
+    """Run ``case["command"]`` through the command line in this process and classify it (updates of a record)."""
+    from click.testing import CliRunner
+    from valvetrain.cli import main as cli
+
+    name, *rest = case["command"]
+    out = Path(tmp) / "out"
+    args = [name, str(spec_file)] + [str(base_file) if a == "<base>" else a for a in rest] + ["--out", str(out)]
+    old = signal.signal(signal.SIGALRM, _alarm)
+    signal.setitimer(signal.ITIMER_REAL, timeout * COMMAND_TIMEOUT[name])
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("error", RuntimeWarning)
+            result = CliRunner().invoke(cli, args, catch_exceptions=True)
+    except CaseTimeout as exc:
+        own, inner = _frame(traceback.extract_tb(exc.__traceback__))
+        return {"outcome": "hang", "signature": f"timeout in {name} at {own}",
+                "detail": [f"still running after {timeout * COMMAND_TIMEOUT[name]:g} s; innermost frame {inner}"]}
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, old)
+    output = result.output.replace(str(tmp), "<tmp>")
+    if isinstance(result.exception, CaseTimeout):
+        own, inner = _frame(traceback.extract_tb(result.exc_info[2]))
+        return {"outcome": "hang", "signature": f"timeout in {name} at {own}",
+                "detail": [f"still running after {timeout * COMMAND_TIMEOUT[name]:g} s; innermost frame {inner}"]}
+    if result.exception is not None and not isinstance(result.exception, SystemExit):
+        exc = result.exception
+        own, inner = _frame(traceback.extract_tb(result.exc_info[2]))
+        return {"outcome": "traceback", "signature": f"{name}: {type(exc).__name__} at {own}",
+                "detail": [f"{name}: {type(exc).__name__}: {_clip(str(exc).replace(str(tmp), '<tmp>'))}",
+                           f"innermost frame {inner}"]}
+    if result.exit_code == 2:
+        messages = _command_messages(result.output)
+        bad = [(m, message_problem(m, spec_file)) for m in messages]
+        # a message about an option of the command (--grid, --vary, --valve) names the option instead of a key
+        bad = [(m.replace(str(tmp), "<tmp>"), why) for m, why in bad
+               if why and not (why == "no key path" and OPTION.search(m))]
+        if not messages:
+            return {"outcome": "bad_message", "signature": f"{name}: exit 2 without a message",
+                    "detail": [_clip(output)]}
+        if bad:
+            m, why = bad[0]
+            return {"outcome": "bad_message", "signature": f"{name}: {why}: {_message_template(m, why)}",
+                    "detail": [f"{why}: {_clip(m)}" for m, why in bad[:5]]}
+        return {"outcome": "refused", "detail": [_clip(m.replace(str(tmp), "<tmp>")) for m in messages[:5]]}
+    if result.exit_code != 0:
+        return {"outcome": "traceback", "signature": f"{name}: exit status {result.exit_code}",
+                "detail": [_clip(output)]}
+    nans = _json_problems(out)
+    printed = [line for line in output.splitlines() if NAN_WORD.search(line)]
+    if nans or printed:
+        return {"outcome": "nan_output", "signatures": [f"nan_output: {name}: {k}" for k, _ in nans]
+                + ([f"nan_output: {name}: printed {NAN_WORD.search(printed[0]).group(0)}"] if printed else []),
+                "detail": [t for _, t in nans[:5]] + [_clip(line) for line in printed[:5]]}
+    return {"outcome": "ok"}
 
 
 # ---------------------------------------------------------------------------------------------------------------
@@ -1010,6 +1197,9 @@ def run_case(case, bases, timeout=60.0, write=False):
     """Run one case through load_spec -> design.run (-> write_outputs) and classify it; a JSON-ready record."""
     text, files, described = materialize(case, bases)
     rec = {"base": case["base"], "ops": case["ops"], "mutation": described, "outcome": None}
+    if case.get("command"):
+        rec["command"] = case["command"]
+        rec["mutation"] = described + [f"command: valvetrain {case['command'][0]} FILE {' '.join(case['command'][1:])}"]
     t0 = time.monotonic()
     with tempfile.TemporaryDirectory(prefix="vf") as tmp:
         spec_file = Path(tmp) / "spec.toml"
@@ -1017,6 +1207,18 @@ def run_case(case, bases, timeout=60.0, write=False):
         for name, content in files.items():
             (Path(tmp) / name).parent.mkdir(parents=True, exist_ok=True)
             (Path(tmp) / name).write_bytes(content)
+        if case.get("command"):
+            base_text, base_files, _ = materialize({"base": case["base"], "ops": []}, bases)
+            base_dir = Path(tmp) / "base"
+            for name, content in {"spec.toml": base_text, **base_files}.items():
+                (base_dir / name).parent.mkdir(parents=True, exist_ok=True)
+                (base_dir / name).write_bytes(content)
+            rec.update(run_command(case, tmp, spec_file, base_dir / "spec.toml", timeout))
+            rec["seconds"] = round(time.monotonic() - t0, 3)
+            rec["signatures"] = rec.get("signatures") or ([rec["signature"]] if "signature" in rec else [])
+            if rec["signatures"]:
+                rec["signature"] = rec["signatures"][0]
+            return rec
         stage = "load_spec"
         old = signal.signal(signal.SIGALRM, _alarm)
         signal.setitimer(signal.ITIMER_REAL, timeout)
@@ -1139,7 +1341,7 @@ def _dead_worker_record(case, seconds, timeout, hang_dir):
         else "(no valvetrain frame)"
     hung = seconds >= timeout
     sig = f"hard timeout (C code) at {where}" if hung else f"worker process died at {where}"
-    return {"base": case["base"], "ops": case["ops"], "mutation": materialize(case, base_specs())[2],
+    return {"base": case["base"], "ops": case["ops"], **_command_of(case), "mutation": materialize(case, base_specs())[2],
             "outcome": "hang" if hung else "traceback", "signature": sig, "signatures": [sig],
             "detail": [f"the worker did not return within {timeout:g} s + 30 s" if hung else
                        "the worker process died (crash or killed)"], "seconds": round(seconds, 3)}
@@ -1210,16 +1412,34 @@ def file_cases(bases):
 
 
 def random_cases(count, seed, bases):
-    """``count`` mutated specifications; case i draws from random.Random(f"{seed}:{i}") (reproducible one by one)."""
+    """``count`` mutated specifications; case i draws from random.Random(f"{seed}:{i}") (reproducible one by one);
+    one case in :data:`COMMAND_EVERY` runs a command of :data:`COMMANDS` on its specification instead of ``run``;
+    every base specification runs once unmutated, and those of :data:`COMMAND_BASES` once with each command."""
     out = []
     for i in range(count):
         rng = random.Random(f"{seed}:{i}")
-        case = draw_case(lambda seq, rng=rng: seq[rng.randrange(len(seq))], bases)
+        pick = lambda seq, rng=rng: seq[rng.randrange(len(seq))]  # noqa: E731
+        case = draw_case(pick, bases)
+        if i % COMMAND_EVERY == COMMAND_EVERY - 1:
+            doc = copy.deepcopy(bases[case["base"]][0])
+            for op in case["ops"]:
+                _apply(doc, {}, op)
+            case["command"] = draw_command(pick, doc)
         case["id"] = f"{seed}:{i}"
         out.append(case)
     for b in bases:
         out.append({"base": b, "ops": [], "id": f"base:{b}"})
+    for command in COMMANDS:
+        for b in COMMAND_BASES:
+            rng = random.Random(f"{seed}:{command}:{b}")
+            doc = bases[b][0]
+            out.append({"base": b, "ops": [], "id": f"base:{b}:{command}",
+                        "command": draw_command(lambda seq, rng=rng: seq[rng.randrange(len(seq))], doc, command)})
     return out
+
+
+def _command_of(rec):
+    return {"command": rec["command"]} if rec.get("command") else {}
 
 
 def minimise(groups, workers, timeout, write, log):
@@ -1230,14 +1450,14 @@ def minimise(groups, workers, timeout, write, log):
         rep = min(recs, key=lambda r: (len(r["ops"]), len(json.dumps(r["ops"], default=str))))
         ops = list(rep["ops"])
         while len(ops) > 1:
-            trials = [{"base": rep["base"], "ops": ops[:k] + ops[k + 1:]} for k in range(len(ops))]
+            trials = [{"base": rep["base"], "ops": ops[:k] + ops[k + 1:], **_command_of(rep)} for k in range(len(ops))]
             got = run_cases(trials, workers, timeout, write)
             same = [t for t, g in zip(trials, got, strict=True) if sig in g.get("signatures", [])]
             if not same:
                 break
             ops = same[0]["ops"]
         if ops != rep["ops"]:
-            rep = run_cases([{"base": rep["base"], "ops": ops}], 1, timeout, write)[0]
+            rep = run_cases([{"base": rep["base"], "ops": ops, **_command_of(rep)}], 1, timeout, write)[0]
             log(f"  minimised {sig[:90]} to {len(ops)} operation(s)")
         reps[sig] = rep
     return reps
@@ -1254,7 +1474,8 @@ def write_repro(folder, reps, bases):
         for name, content in files.items():
             (d / name).parent.mkdir(parents=True, exist_ok=True)
             (d / name).write_bytes(content)
-        (d / "README.txt").write_text(f"{sig}\nbase: {rep['base']}\n" + "\n".join(described) + "\n\n"
+        (d / "README.txt").write_text(f"{sig}\nbase: {rep['base']}\n" + "\n".join(rep.get("mutation", described))
+                                      + "\n\n"
                                       + "\n".join(rep.get("detail", [])) + "\n", encoding="utf-8")
 
 

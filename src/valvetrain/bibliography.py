@@ -188,6 +188,13 @@ WORKS = {
         title="Smoothing noisy data with spline functions: estimating the correct degree of smoothing by the method "
               "of generalized cross-validation", kind="article",
         publisher="Numerische Mathematik, vol. 31, pp. 377-403", year="1979"),
+    "sheppard1898": Work(
+        short="Sheppard (1898)",
+        authors="Sheppard, W. F.",
+        title="On the calculation of the most probable values of frequency-constants, for data arranged according "
+              "to equidistant division of a scale", kind="article",
+        publisher="Proceedings of the London Mathematical Society, vol. 29, pp. 353-380", year="1898",
+        note="The variance q^2/12 that rounding to a grid of step q adds (Sheppard's correction)."),
     "hairer1993": Work(
         short="Hairer, Nørsett and Wanner (1993)",
         authors="Hairer, E.; Nørsett, S. P.; Wanner, G.",

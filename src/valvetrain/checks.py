@@ -16,7 +16,10 @@ Severity (:data:`SEVERITIES`) says what a failed check means, by the kind of bou
 * ``info``: an informative comparison -- a value the user chose against what the source calls usual (the seat
   angle), or a default of the source known to be far from today's parts (the specific drive mass).
 
-A check fails when its value lies outside its range, whatever its severity.  :func:`ranked` orders failed checks
+A check fails when its value lies outside its range, whatever its severity.  A check whose value is not a finite
+number cannot be evaluated (the valve has not reseated, so there is no seating velocity): it is a failure, whatever
+the severity of its range, and is shown as ``cannot be evaluated: REASON`` in words, never as ``nan``
+(:attr:`Check.unevaluated` gives the reason, :data:`UNEVALUATED` where the stage gave none).  :func:`ranked` orders failed checks
 for a reader: failures first, then warnings, then info, and within a level the farthest outside first (the most
 negative relative :attr:`Check.margin`).  A failed check the user accepted in the specification (``[[accepted]]``,
 with a reason) keeps its severity and its record and carries ``accepted`` and ``reason``
@@ -34,6 +37,9 @@ from .units import to_display
 SEVERITIES = ("info", "warning", "failure")
 """What a failed check means: ``info`` a remark, ``warning`` a value outside a recommended range,
 ``failure`` a limit a part cannot pass (a stress above its allowable, an impossible geometry)."""
+
+UNEVALUATED = "its value could not be computed"
+"""The reason of a check that cannot be evaluated where the stage that made it gave none."""
 
 _TOL = 1e-9
 """Relative tolerance at a bound, so that a value printed as the bound (0.46 = 36.8/80) is inside."""
@@ -65,6 +71,9 @@ class Check:
         The user accepted this check in the specification (``[[accepted]]``); meaningful for a failed check.
     reason : str
         The user's reason for the acceptance.
+    unevaluated : str
+        Why the value cannot be had, for a value that is not a finite number (:func:`check` makes such a check a
+        failure and gives :data:`UNEVALUATED` where no reason is given); empty otherwise.
     """
 
     quantity: str
@@ -78,6 +87,7 @@ class Check:
     note: str = ""
     accepted: bool = False
     reason: str = ""
+    unevaluated: str = ""
 
     @property
     def passed(self):
@@ -111,6 +121,24 @@ class Check:
         return to_display(self.value, self.unit)
 
     @property
+    def evaluated(self):
+        """False for a check whose value is not a finite number: it cannot be evaluated."""
+        return math.isfinite(float(self.value))
+
+    @property
+    def value_text(self):
+        """The value with its unit (``"85.07 m/s"``), or ``"cannot be evaluated: REASON"``."""
+        if not self.evaluated:
+            return f"cannot be evaluated: {self.unevaluated or UNEVALUATED}"
+        return f"{self.shown_value:.6g} {self.unit}".rstrip()
+
+    @property
+    def statement(self):
+        """The check's quantity and value as a line says them: ``"intake: V' = 85.07 m/s"``, or ``"intake: valve
+        seating velocity cannot be evaluated: the valve has not reseated"``."""
+        return f"{self.quantity} {'= ' if self.evaluated else ''}{self.value_text}"
+
+    @property
     def range(self):
         """The allowed range as text in :attr:`unit` (``"50...80 m/s"``, ``">= 1.3"``, ``"> 0 mm"``)."""
         low = None if self.low is None else to_display(self.low, self.unit)
@@ -129,8 +157,9 @@ class Check:
     def warning(self):
         """The record of a failed check in ``results.json`` ``warnings``: quantity, value, range, source, unit,
         severity and margin (and the reason of an acceptance)."""
-        return {"quantity": self.quantity, "value": self.shown_value, "range": self.range, "source": self.source,
-                "unit": self.unit, "severity": self.severity, "margin": self.margin,
+        return {"quantity": self.quantity, "value": self.shown_value if self.evaluated else None, "range": self.range,
+                "source": self.source, "unit": self.unit, "severity": self.severity, "margin": self.margin,
+                **({} if self.evaluated else {"unevaluated": self.unevaluated or UNEVALUATED}),
                 **({"accepted": True, "reason": self.reason} if self.accepted else {})}
 
     def as_dict(self):
@@ -164,8 +193,12 @@ def describe_range(low=None, high=None, unit="", strict_low=False):
     return "any"
 
 
-def check(quantity, value, low=None, high=None, *, source, unit="", severity="warning", strict_low=False, note=""):
+def check(quantity, value, low=None, high=None, *, source, unit="", severity="warning", strict_low=False, note="",
+          unevaluated=""):
     """A :class:`Check` of ``value`` (SI) against ``low``/``high`` (SI); see :class:`Check` for the fields.
+
+    A ``value`` that is None or not a finite number makes a check that cannot be evaluated: a failure, whatever
+    ``severity`` says, with ``unevaluated`` (why the value cannot be had; :data:`UNEVALUATED` if empty) in words.
 
     Examples
     --------
@@ -174,11 +207,20 @@ def check(quantity, value, low=None, high=None, *, source, unit="", severity="wa
     (False, '50...80 m/s', -0.0634)
     >>> check("rho_min", 11.885e-3, low=2e-3, source="Shang Hanji (1988)", unit="mm").warning()["range"]
     '>= 2 mm'
+    >>> c = check("seating velocity", float("nan"), high=0.5, source="s", unit="m/s",
+    ...           unevaluated="the valve has not reseated")
+    >>> c.severity, c.passed, c.statement
+    ('failure', False, 'seating velocity cannot be evaluated: the valve has not reseated')
     """
     if severity not in SEVERITIES:
         raise ValueError(f"severity = {severity!r}: allowed {SEVERITIES}")
-    return Check(quantity, float(value), None if low is None else float(low), None if high is None else float(high),
-                 unit, source, severity, strict_low, note)
+    value = float("nan") if value is None else float(value)
+    if math.isfinite(value):
+        unevaluated = ""
+    else:
+        severity, unevaluated = "failure", unevaluated or UNEVALUATED
+    return Check(quantity, value, None if low is None else float(low), None if high is None else float(high),
+                 unit, source, severity, strict_low, note, unevaluated=unevaluated)
 
 
 def failed(checks):

@@ -67,12 +67,12 @@ def _echo_checks(results):
     """The failed checks, ranked (failures, warnings, info; the farthest outside first), one line each; the accepted
     failures marked as such with their reasons; then a count that leaves the accepted checks out."""
     for w in results.warnings:
-        click.echo(f"{w.severity}: {w.quantity} = {w.shown_value:.6g} {w.unit}, {_BOUND[w.severity]} {w.range} "
+        click.echo(f"{w.severity}: {w.statement}, {_BOUND[w.severity]} {w.range} "
                    f"({w.source})".replace("  ", " "))
     accepted = results.accepted
     for w in accepted:
         if w.severity == "failure":
-            click.echo(f"accepted failure: {w.quantity} = {w.shown_value:.6g} {w.unit}, allowed {w.range} "
+            click.echo(f"accepted failure: {w.statement}, allowed {w.range} "
                        f"({w.source}); reason: {w.reason}".replace("  ", " "))
     counts = {s: sum(w.severity == s for w in results.warnings) for s in _BOUND}
     click.echo(f"checks: {counts['failure']} failure(s), {counts['warning']} warning(s), {counts['info']} info of "
@@ -155,7 +155,10 @@ def main():
 @click.option("--force", is_flag=True, help=FORCE_HELP)
 @click.option("--lang", type=click.Choice(["en", "ru"]), default="en", show_default=True,
               help="Language of the report and plots.")
-def run(file, out, force, lang):
+@click.option("--figures", type=click.Choice(["main", "all", "none"]), default="main", show_default=True,
+              help="Plots to draw: main (all but the time-area, curvature, crank-force, crank-pin and port "
+                   "time-area figures), all, or none; the report embeds those drawn.")
+def run(file, out, force, lang, figures):
     """Run the design of FILE (default: the built-in example) and write it to --out."""
     from .export import write_outputs
 
@@ -163,7 +166,7 @@ def run(file, out, force, lang):
     inputs = _check_out(out, [file] if file else [], [spec], force)
     results = _design(spec, _Progress())
     try:
-        write_outputs(results, out, lang, inputs, force)
+        write_outputs(results, out, lang, inputs, force, figures)
     except OutFolderError as err:
         _fail_out(err)
     click.echo(f"wrote {out}/ (results.json, report.html, tables/, plots/, contour/)")
@@ -214,7 +217,7 @@ def sweep(file, out, valves, force, lang):
         click.echo(f"{name}: {_headline(d)}")
         for w in v.warnings:
             if w.quantity.endswith(CHECK_QUANTITIES):
-                click.echo(f"warning: {w.quantity} = {w.shown_value:.6g} {w.unit}, recommended {w.range} ({w.source})")
+                click.echo(f"{w.severity}: {w.statement}, {_BOUND[w.severity]} {w.range} ({w.source})")
     click.echo(f"wrote {out}/ (dynamics.json, tables/, plots/)")
 
 
@@ -241,9 +244,16 @@ def _headline(d):
 @click.option("--vary", "vary", multiple=True, metavar="KEY=LOW,HIGH",
               help="A numeric key under [valves.NAME] and its bounds (repeatable), e.g. cam.phi1_deg=20,35 or "
                    "drive.spring_reserve=1.5,2.25; default: the law's own variables.")
-@click.option("--no-jump", "no_jump", default=1.1, show_default=True, type=click.FloatRange(0.0, 3.0),
+@click.option("--no-jump", "no_jump", default=None, type=click.FloatRange(0.0, 3.0),
               help="No follower separation up to this multiple of the rated speed (one-mass train of the valve's "
-                   "[dynamics] section or its estimates); 0 leaves the dynamics out.")
+                   "[dynamics] section or its estimates); 0 leaves the dynamics out. Default: [engine] "
+                   "over_speed_ratio (1.1 unless given).")
+@click.option("--cam-width", "cam_width", default=None, type=click.FloatRange(1.0, 200.0), metavar="MM",
+              help="Cam width [mm] of the Hertz contact stress; default: the valve's parts.cam_width_mm, else half "
+                   "the base radius (a narrow cam, so the stress is not understated).")
+@click.option("--seating-velocity", "seating_velocity", default=None, type=click.FloatRange(0.01, 10.0),
+              metavar="M_S", help="Largest valve seating velocity [m/s] (kinematic in the search, the dynamics "
+                                  "sweep's too at the end); default: no such limit.")
 @click.option("--wheel-radius", "wheel_radius", default=None, type=click.FloatRange(5.0, 1000.0),
               metavar="MM", help="Grinding wheel radius [mm] that a roller follower cam's concave stretches must "
                                  "take; default: the valve's [grinding] section's, else no such limit.")
@@ -253,17 +263,21 @@ def _headline(d):
 @click.option("--lang", type=click.Choice(["en", "ru"]), default="en", show_default=True,
               help="Language of the report and the plot.")
 @click.option("--force", is_flag=True, help=FORCE_HELP)
-def optimize(file, out, valve, objective, vary, no_jump, wheel_radius, seed, maxiter, lang, force):
+def optimize(file, out, valve, objective, vary, no_jump, cam_width, seating_velocity, wheel_radius, seed, maxiter,
+             lang, force):
     """Maximise the fullness or time-area of a valve's cam of FILE under its limits and write the optimum to --out.
 
     Varies the law's parameters (Kurz: phi1, phi2, Z; constant acceleration: phi1, phi2, kappa; polydyne: the
     exponents; combined: the ratios; each with the ramp end velocity and the spring reserve K_z; the power
     polynomial: a_qd, phi_1, x_d, x_g) or the keys of --vary, with a differential evolution and a local polish,
     under the design's own limits: the spring reserve, the tappet acceleration band (kept at the start's value
-    where the start is outside it), rho_min of a flat follower, the pressure angle (30 deg) and the grinding wheel of
-    a roller follower, the ramp end velocity band, and no jump up to --no-jump x the rated speed (UkrSURT Proceedings
-    (2019); Shang Hanji (1988), section 4.3 and chapter 3). Writes optimum.toml (a specification that valvetrain run
-    accepts), optimization.json, comparison.csv, history.csv, history.png and report.html."""
+    where the start is outside it), the smallest convex contour radius (2 mm) and the Hertz stress (1200 MPa, from
+    standstill to the over-speed), the pressure angle (30 deg) and the grinding wheel of a roller follower, the ramp
+    end velocity band, the seating velocity with --seating-velocity, and no jump up to --no-jump x the rated speed
+    (UkrSURT Proceedings (2019); Shang Hanji (1988), section 4.3 and chapter 3). The optimum is the best point
+    evaluated whose full design meets every limit, the start included. Writes optimum.toml (a specification that
+    valvetrain run accepts), optimization.json, comparison.csv, history.csv, history.png and report.html; where no
+    point meets every limit, writes nothing, names the limits that fail and exits 1."""
     from .export import json_text, write_csv
     from .outfolder import atomic_folder
     from .report.optimization import (HISTORY_COMMENTS, comparison_columns, history_columns, history_figure,
@@ -273,22 +287,41 @@ def optimize(file, out, valve, objective, vary, no_jump, wheel_radius, seed, max
 
     spec = _load(file)
     inputs = _check_out(out, [file], [spec], force)
+    try:
+        variables = parse_variables(vary) if vary else None
+    except ValueError as err:
+        click.echo(f"error: {err}", err=True)
+        sys.exit(2)
+    no_jump = spec.engine.over_speed_ratio if no_jump is None else no_jump
     with click.progressbar(length=maxiter, label="optimize", file=sys.stderr) as bar:
         try:
-            result = optimize_valve(spec, valve, parse_variables(vary) if vary else None, objective,
+            result = optimize_valve(spec, valve, variables, objective,
                                     None if wheel_radius is None else wheel_radius * MM, no_jump or None,
-                                    seed=seed, maxiter=maxiter, progress=lambda generation, best: bar.update(1))
+                                    seed=seed, maxiter=maxiter, progress=lambda generation, best: bar.update(1),
+                                    cam_width=None if cam_width is None else cam_width * MM,
+                                    seating_velocity=seating_velocity)
         except SpecError as err:
             _fail_spec(err)
         except ValueError as err:
             click.echo(f"error: {err}", err=True)
             sys.exit(2)
+    if not result.feasible:
+        click.echo(f"error: no point of the search meets every limit ({result.evaluations} evaluations, start "
+                   "included); nothing written. The limits that fail:", err=True)
+        for where, checks in (("at the point nearest to them", result.checks), ("at the start", result.checks_start)):
+            for c in checks:
+                if not c.passed:
+                    note = f" [{c.note}]" if c.note else ""
+                    click.echo(f"  {where}: {c.quantity}{note} = {c.shown_value:.6g} {c.unit}, allowed {c.range}",
+                               err=True)
+        sys.exit(1)
     record = {"valve": result.valve, "objective": result.objective, "start": result.start, "optimum": result.optimum,
               "bounds": dict(zip(result.start, result.bounds, strict=True)),
               "start_value": result.start_value, "value": result.value, "feasible": result.feasible,
               "binding": [c.quantity for c in result.binding], "fast_margins": result.margins,
               "limit_notes": result.limit_notes, "evaluations": result.evaluations, "seconds": result.seconds,
-              "seconds_in_evaluations": result.seconds_in_evaluations,
+              "seconds_in_evaluations": result.seconds_in_evaluations, "law_samples": result.law_samples,
+              "simulations": result.simulations,
               "comparison": [dict(zip(("quantity", "unit", "start", "optimum"), r, strict=True))
                              for r in result.comparison],
               "constraints_start": [c.as_dict() for c in result.checks_start],
@@ -310,15 +343,16 @@ def optimize(file, out, valve, objective, vary, no_jump, wheel_radius, seed, max
                f"({result.evaluations} evaluations, {result.seconds:.1f} s)"
                + (f"; the polydyne (2, 10, 18, 26, 34) of the same lift, ramp and angle: tappet fullness "
                   f"{result.polydyne_fullness:.4f}" if result.polydyne_fullness is not None else ""))
+    if result.optimum == result.start:
+        click.echo("  no point better than the start meets every limit: the optimum is the start")
     for key, value in result.optimum.items():
         click.echo(f"  {key} = {value:.6g}")
     for c in result.checks:
-        state = "FAILS" if not c.passed else "binds" if c in result.binding else "ok"
+        state = "binds" if c in result.binding else "ok"
         note = f" [{c.note}]" if c.note else ""
-        click.echo(f"  {c.quantity}{note} = {c.shown_value:.6g} {c.unit} ({c.range}), margin {c.margin:.4f} {state}")
+        click.echo(f"  {c.quantity}{note} {'= ' if c.evaluated else ''}{c.value_text} ({c.range}), margin "
+                   f"{c.margin:.4f} {state}")
     click.echo(f"wrote {out}/ (optimum.toml, optimization.json, comparison.csv, history.csv, history.png, report.html)")
-    if not result.feasible:
-        click.echo("warning: the optimum's full design does not meet every limit (see FAILS above)", err=True)
 
 
 @main.command()

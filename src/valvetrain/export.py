@@ -59,13 +59,21 @@ def write_dxf(path, valve):
 
 def _save_dxf(build, path):
     """Build a DXF document (``build()``) and save it with ezdxf's fixed metadata (creation date, GUIDs) in place
-    from its creation on, so the same design writes the same bytes."""
+    from its creation on, so the same design writes the same bytes.
+
+    ezdxf registers the CLASS entries of the entity types in use when it saves, in the order of a set, which
+    follows the interpreter's string hashing (PYTHONHASHSEED): registered here first, the required classes in
+    ezdxf's order and the types in use sorted by name, they are written in that order whatever the seed."""
     import ezdxf
+    from ezdxf.sections.classes import REQ_R2004, REQUIRED_CLASSES
 
     fixed = ezdxf.options.write_fixed_meta_data_for_testing
     ezdxf.options.write_fixed_meta_data_for_testing = True
     try:
-        build().saveas(path)
+        doc = build()
+        for name in (*REQUIRED_CLASSES.get(doc.dxfversion, REQ_R2004), *sorted(doc.entitydb.dxf_types_in_use())):
+            doc.classes.add_class(name)
+        doc.saveas(path)
     finally:
         ezdxf.options.write_fixed_meta_data_for_testing = fixed
 
@@ -151,8 +159,12 @@ MASTER_COMMENTS = [
 """Comment lines of ``contour/NAME_master.csv``."""
 
 
-def write_outputs(results, out, lang="en", inputs=(), force=False):
+def write_outputs(results, out, lang="en", inputs=(), force=False, figures="main"):
     """Write every artefact of a design into the folder ``out``, atomically.
+
+    ``figures`` says which plots are drawn (:data:`valvetrain.report.plots.FIGURE_SETS`): ``main`` (every one but
+    :data:`valvetrain.report.plots.FIGURES_ON_REQUEST`), ``all`` or ``none``; the report embeds those drawn and
+    names the command that draws the others.
 
     Everything is written into a temporary sibling folder first and put in place only
     when complete (:func:`valvetrain.outfolder.atomic_folder`, which also says which
@@ -173,17 +185,17 @@ def write_outputs(results, out, lang="en", inputs=(), force=False):
                     (not for a valve whose cam profile is undercut: it cannot be made)
                     NAME_master.csv, NAME_master_cartesian.csv, NAME_master.dxf (a [grinding] section whose
                     wheel grinds the cam and whose master its roller follows)
-        out/plots/NAME_kinematics.png, NAME_contour.png, NAME_time_area.png, NAME_curvature.png,
-                  NAME_spring.png, NAME_strength_speed.png,
+        out/plots/NAME_kinematics.png, NAME_contour.png, NAME_time_area.png (figures="all"),
+                  NAME_curvature.png (all), NAME_spring.png, NAME_strength_speed.png,
                   NAME_dynamics_map.png, NAME_dynamics_speed.png (a [dynamics] section),
                   NAME_grinding.png (a [grinding] section),
                   NAME_hydraulic.png, NAME_hydraulic_sweep.png (a [hydraulic] section),
-                  crank_forces.png, crank_torque.png, crank_pin_polar.png,
-                  two_stroke_ports.png, two_stroke_time_area.png
+                  crank_forces.png (all), crank_torque.png, crank_pin_polar.png (all),
+                  two_stroke_ports.png, two_stroke_time_area.png (all), valve_timing.png
         out/report.html
         out/.valvetrain-output (the files the run wrote)
     """
-    from .report import write_plots, write_report
+    from .report import write_report
 
     with atomic_folder(out, inputs, force) as tmp:
         for sub in ("tables", "contour", "plots"):
@@ -219,7 +231,11 @@ def write_outputs(results, out, lang="en", inputs=(), force=False):
         if results.two_stroke is not None:
             write_csv(tmp / "tables" / "two_stroke_ports.csv", two_stroke_columns(results.two_stroke))
             write_csv(tmp / "tables" / "two_stroke_time_area.csv", two_stroke_speed_columns(results.two_stroke))
-        plots = write_plots(results, tmp / "plots", lang)
+        plots = {}
+        if figures != "none":   # the plots import matplotlib
+            from .report import write_plots
+
+            plots = write_plots(results, tmp / "plots", lang, figures)
         write_report(results, tmp / "report.html", plots, lang)
     return Path(out)
 

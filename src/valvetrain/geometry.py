@@ -165,12 +165,20 @@ def roller_pressure_angle(base_radius, roller_radius, h, dh):
 
 
 def undercut_flat(rho):
-    """Mask of the angles where a flat follower's cam is undercut: rho <= 0 (Shang Hanji (1988), section 2.1)."""
+    """Mask of the angles where a flat follower's cam is undercut: rho <= 0 (Shang Hanji (1988), section 2.1).
+
+    Judge a profile by its smallest radius refined on the contour (the profile stage's ``rho_min``), not by the
+    samples of a table: an undercut may lie between them.
+    """
     return np.asarray(rho) <= 0.0
 
 
 def undercut_roller(pitch_rho, roller_radius):
-    """Mask of the angles where a roller follower's cam is undercut: 0 < rho_pitch <= R_r (Shang Hanji (1988), 2.1)."""
+    """Mask of the angles where a roller follower's cam is undercut: 0 < rho_pitch <= R_r (Shang Hanji (1988), 2.1).
+
+    Judge a profile by its smallest convex radius refined on the contour (the profile stage's ``rho_min`` plus R_r),
+    not by the samples of a table: an undercut may lie between them.
+    """
     pitch_rho = np.asarray(pitch_rho)
     return (pitch_rho > 0.0) & (pitch_rho <= roller_radius)
 

@@ -6,8 +6,9 @@ lift y: P(y) = P_min + C y (eq. 5.6).
 The design searches a grid of springs at once (numpy arrays over the candidates): the
 straight lines above the required force with the deflection ratios of the manual, the
 wire grades of :mod:`valvetrain.spring_materials`, the mean diameters D = (0.7...0.9) d_g
-and the wire diameters 2.0...7.0 mm.  The lightest spring that passes every check is
-chosen; when none passes, :func:`diagnose` names the requirements in conflict and
+and the wire diameters 2.0...7.0 mm; bounds that need no spring designed screen out the
+candidates that cannot pass first (:func:`_may_pass`).  The lightest spring that passes
+every check is chosen; when none passes, :func:`diagnose` names the requirements in conflict and
 computes what would make a spring pass.
 
 Conical (beehive) and progressive-rate springs are not designed: the sources give no
@@ -715,8 +716,9 @@ def enveloping_lines(lift, required, ratios, min_preload=0.0):
     p = np.asarray(required, dtype=float)
     r = np.asarray(ratios, dtype=float)
     h = float(y.max())
-    slope = (r[:, None] - 1.0) * y[None, :] / h
-    preload = np.maximum(np.max(p[None, :] / (1.0 + slope), axis=1), max(min_preload, 0.0))
+    loaded = p > 0.0     # the points of no required force bound no line
+    slope = (r[:, None] - 1.0) * y[None, loaded] / h
+    preload = np.maximum(np.max(p[None, loaded] / (1.0 + slope), axis=1, initial=0.0), max(min_preload, 0.0))
     return preload, (r - 1.0) * preload / h
 
 
@@ -803,24 +805,95 @@ class Search:
         return sum(s.mass for s in self.designs.values())
 
 
+SCREEN_SLACK = 1e-6
+"""Relative slack of the screen of :func:`_may_pass`: far wider than the tolerance of a check (1e-9) and the
+rounding of its arithmetic, so that the screen never drops a candidate that passes."""
+
+
+def _may_pass(preloads, rates, lift, big_d, d, material, camshaft_speed, max_installed_length):
+    """The (line, grid point) pairs that may pass every check: a boolean (lines, grid) array that holds every
+    passing candidate of :func:`evaluate_springs` (the screen of :func:`_search`).
+
+    Notes
+    -----
+    Bounds that need no spring to be designed, each of a line's scalar against a grid point's: with
+    :math:`K = G d^4 / (8 D^3)` (the rate of one working coil) a line of rate C needs the exact coils
+    :math:`i = K / C` (6.2), rounded down to :math:`i_p \\ge i - 1/2`.  A spring passes only if
+
+    * ``working_coils``: :math:`K / C \\ge 2`;
+    * ``tau_max``: :math:`8 \\chi P_{max} D / (\\pi d^3) \\le \\tau_{max} \\le [\\tau]`, P_max of the line: the
+      coils rounded down (:math:`i_p \\le i` where i >= 2) make the spring stiffer, its full-lift force at least
+      the line's (6.1);
+    * ``fatigue_safety``: with :math:`\\tau_{min} = 8 \\chi P_{min} D / (\\pi d^3)` and that bound of
+      :math:`\\tau_{max}`, :math:`n = 2 \\tau_{-1} / ((1 + \\psi_\\tau) \\tau_{max} - (1 - \\psi_\\tau) \\tau_{min})
+      \\le 2 \\tau_{-1} \\pi d^3 / (8 \\chi D (C h + \\psi_\\tau (2 P_{min} + C h)))` must reach
+      :math:`n_{min}` (6.9)-(6.12), where :math:`\\psi_\\tau \\ge 0`;
+    * ``resonance_ratio``: :math:`\\omega_{c1} = d \\sqrt{G / 2\\rho} / (D^2 i_p) \\ge R \\omega_{cam}`, so
+      :math:`i - 1/2 \\le i_p \\le d \\sqrt{G / 2\\rho} / (D^2 R \\omega_{cam})` (6.13)-(6.14);
+    * ``installed_length`` (no imposed length): :math:`l_0 \\ge d (1 + \\Delta/d)(i_p + 2) + d (i_0 - 1) + h \\le
+      l_{0,max}` (6.3)-(6.5), another upper bound of :math:`i_p`.
+
+    Each bound is widened by :data:`SCREEN_SLACK`.
+    """
+    g, rho = material.shear_modulus, material.density
+    p = np.asarray(preloads, dtype=float)
+    c = np.asarray(rates, dtype=float)
+    one_coil = g * d**4 / (8.0 * big_d**3)
+    allowable, endurance, psi = material.limits(d)
+    stress_per_force = 8.0 * shape_factor_table(big_d / d) * big_d / (np.pi * d**3)
+    keep = (p + c * lift)[:, None] <= (allowable * (1.0 + SCREEN_SLACK) / stress_per_force)[None, :]
+    if material.min_safety > 0.0:
+        fatigue_cap = np.where(psi >= 0.0, 2.0 * endurance / (stress_per_force * material.min_safety
+                                                               * (1.0 - SCREEN_SLACK)), np.inf)
+        keep &= (c * lift)[:, None] + psi[None, :] * (2.0 * p + c * lift)[:, None] <= fatigue_cap[None, :]
+    keep &= c[:, None] <= (one_coil / (2.0 * (1.0 - SCREEN_SLACK)))[None, :]
+    coil_cap = np.full(d.shape, np.inf)
+    if material.min_resonance_ratio > 0.0:
+        coil_cap = natural_frequency(d, big_d, 1.0, g, rho) / (material.min_resonance_ratio * camshaft_speed)
+    if max_installed_length is not None:
+        fit = (max_installed_length * (1.0 + SCREEN_SLACK) - lift - d * (material.end_coils - 1.0)) / (
+            d * (1.0 + material.gap_factor)) - 2.0
+        coil_cap = np.minimum(coil_cap, fit)
+    coil_cap = coil_cap + SCREEN_SLACK * (np.abs(coil_cap) + 1.0) + 0.5
+    min_rate = np.where(coil_cap > 0.0, one_coil / np.where(coil_cap > 0.0, coil_cap, 1.0), np.inf)
+    keep &= c[:, None] >= min_rate[None, :]
+    return keep
+
+
 def _search(preloads, rates, lift, throat_diameter, camshaft_speed, options, *, diameter_range=None, max_outer=None,
             installed_length=None, partner_frequency=None, free_lengths=False):
-    """Every line x grade x D x d at once: a list of :class:`Candidates` (one per grade).  ``free_lengths``:
-    no limit on the lengths (the inner springs of a pair, installed at the outer one's length)."""
+    """Every line x grade x D x d: a list of :class:`Candidates` (one per grade) and the number of candidates
+    tried.  ``free_lengths``: no limit on the lengths (the inner springs of a pair, installed at the outer one's
+    length).
+
+    Only the candidates that may pass (:func:`_may_pass`) are designed, in the order of the grid (line by line);
+    when none of them passes, every candidate is, so that the best worst margin is found among all.  The
+    lightest passing spring, the passing count and the margins of every spring designed are those of the
+    exhaustive search."""
     wires = wire_series(options.wire_range_mm, options.wire_step_mm)
     big_d, d = _grid(throat_diameter, diameter_range or options.diameter_range, options.diameter_step, wires,
                      max_outer)
     low, high = (None, None) if free_lengths else options.installed_limits(lift)
-    found = []
-    for material in options.materials:
-        found.append(evaluate_springs(
-            np.asarray(preloads)[:, None], np.asarray(rates)[:, None], lift, big_d[None, :], d[None, :], material,
-            camshaft_speed, ratio_range=options.ratio_range, installed_length=installed_length,
+    preloads, rates = np.asarray(preloads, dtype=float), np.asarray(rates, dtype=float)
+    lines = np.arange(len(preloads))
+
+    def designed(material, line, grid):
+        found = evaluate_springs(
+            preloads[line], rates[line], lift, big_d[grid], d[grid], material, camshaft_speed,
+            ratio_range=options.ratio_range, installed_length=installed_length,
             min_installed_length=low if installed_length is None else None, max_installed_length=high,
             max_free_length=None if free_lengths else options.max_free_length, partner_frequency=partner_frequency,
-            min_frequency_difference=options.min_frequency_difference))
-        found[-1].line = np.repeat(np.arange(len(preloads)), len(d))
-    return found
+            min_frequency_difference=options.min_frequency_difference)
+        found.line = line
+        return found
+
+    found = [designed(m, *divmod(np.flatnonzero(_may_pass(preloads, rates, lift, big_d, d, m, camshaft_speed,
+                                                         high if installed_length is None else None)), len(d)))
+             for m in options.materials]
+    if not any(c.passed.any() for c in found):
+        line, grid = (a.ravel() for a in np.meshgrid(lines, np.arange(len(d)), indexing="ij"))
+        found = [designed(m, line, grid) for m in options.materials]
+    return found, len(options.materials) * len(lines) * len(d)
 
 
 def _best(found):
@@ -828,7 +901,7 @@ def _best(found):
     passing = sum(int(np.count_nonzero(c.passed)) for c in found)
     if passing:
         key = [np.where(c.passed, c.mass, np.inf) for c in found]
-        k = int(np.argmin([np.min(m) for m in key]))
+        k = int(np.argmin([np.min(m, initial=np.inf) for m in key]))
         return found[k], int(np.argmin(key[k])), passing
     key = [c.worst_margin for c in found]
     k = int(np.argmax([np.max(m) for m in key]))
@@ -872,8 +945,8 @@ def design_spring(required, throat_diameter, camshaft_speed, options=SpringOptio
         preloads, rates, lift = [required.preload], [required.rate], required.lift
     else:
         (preloads, rates), lift = required, limits.pop("lift")
-    found = _search(preloads, rates, lift, throat_diameter, camshaft_speed, options, **limits)
-    if not len(found[0]):
+    found, tried = _search(preloads, rates, lift, throat_diameter, camshaft_speed, options, **limits)
+    if not tried:
         low, high = feasible_mean_diameters(options.wire_range_mm)
         ratio = limits.get("diameter_range") or options.diameter_range
         lo, hi = ratio[0] * throat_diameter, ratio[1] * throat_diameter
@@ -883,7 +956,7 @@ def design_spring(required, throat_diameter, camshaft_speed, options=SpringOptio
                            f"mm fits{inside} with D in {lo * 1e3:.1f}...{hi * 1e3:.1f} mm; the range makes D = "
                            f"{low * 1e3:g}...{high * 1e3:g} mm (index 3...12)")
     best, i, passing = _best(found)
-    return best.design(i), passing, sum(len(c) for c in found)
+    return best.design(i), passing, tried
 
 
 PAIR_CANDIDATES = 300
@@ -955,13 +1028,14 @@ def design_pair(preloads, rates, lift, throat_diameter, camshaft_speed, options)
     """
     share = options.inner_share
     p, c = np.asarray(preloads, dtype=float), np.asarray(rates, dtype=float)
-    outer_found = _search(p * (1.0 - share), c * (1.0 - share), lift, throat_diameter, camshaft_speed, options)
-    if not len(outer_found[0]):
+    outer_found, outer_tried = _search(p * (1.0 - share), c * (1.0 - share), lift, throat_diameter, camshaft_speed,
+                                       options)
+    if not outer_tried:
         design_spring((p, c), throat_diameter, camshaft_speed, options, lift=lift)    # raises NoSpringFits
     inner_range = (INNER_DIAMETER_RATIO_LOW, options.diameter_range[1])
-    inner_found = _search(p * share, c * share, lift, throat_diameter, camshaft_speed, options,
-                          diameter_range=inner_range, free_lengths=True)
-    tried = sum(len(x) for x in outer_found + inner_found)
+    inner_found, inner_tried = _search(p * share, c * share, lift, throat_diameter, camshaft_speed, options,
+                                       diameter_range=inner_range, free_lengths=True)
+    tried = outer_tried + inner_tried
     best, passing = None, 0
     for outer in outer_found:
         for inner in inner_found:

@@ -154,10 +154,12 @@ def lift_export_columns(valve, step_deg):
     The angles are camshaft degrees in the engine's cam frame (crank angle from the
     gas-exchange TDC / 2) and the lift is the cam's, ramps included, so ``law = "table"``
     with ``table_angle = "cam"`` and ``table_lift_at = "tappet"`` reads the file back to the
-    same valve lift and timing (the ramp takes up the valve's clearance).
+    same valve lift and timing (the ramp takes up the valve's clearance).  The first and the last row lie on the
+    base circle, at or just beyond the ends of the lift event: a table starts and ends there.
     """
     law = valve.law
-    theta = np.radians(np.arange(np.ceil(np.degrees(law.start) / step_deg) * step_deg, np.degrees(law.end), step_deg))
+    first, last = np.floor(np.degrees(law.start) / step_deg), np.ceil(np.degrees(law.end) / step_deg)
+    theta = np.radians(np.arange(first, last + 0.5) * step_deg)
     return {"angle_deg": np.degrees(theta + valve.nose_crank / 2.0), "lift_mm": law.lift(theta) / MM}
 
 

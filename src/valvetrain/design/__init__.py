@@ -106,8 +106,8 @@ class DesignResults:
             body = "".join("<tr>" + "".join(f"<td>{escape(str(c))}</td>" for c in r) + "</tr>" for r in rows)
             return f"<table><tr>{head}</tr>{body}</table>"
 
-        warnings = [(w.severity, w.quantity, f"{w.shown_value:.6g} {w.unit}", w.range, w.source) for w in self.warnings]
-        accepted = [(w.severity, w.quantity, f"{w.shown_value:.6g} {w.unit}", w.range, w.reason) for w in self.accepted]
+        warnings = [(w.severity, w.quantity, w.value_text, w.range, w.source) for w in self.warnings]
+        accepted = [(w.severity, w.quantity, w.value_text, w.range, w.reason) for w in self.accepted]
         return (f"<p><b>{escape(self.engine.name)}</b></p>" + table(self._HEADS, self._rows())
                 + "<p>Checks that fail</p>" + table(("severity", "quantity", "value", "allowed", "source"), warnings)
                 + ("<p>Accepted in the specification</p>" + table(("severity", "quantity", "value", "allowed",
@@ -286,7 +286,8 @@ def results_schema():
     check_record = {"type": "object", "required": ["quantity", "value", "range", "source", "unit", "severity", "margin"],
                     "properties": {k: {"type": t} for k, t in (("quantity", "string"), ("range", "string"),
                                                                 ("source", "string"), ("unit", "string"),
-                                                                ("accepted", "boolean"), ("reason", "string"))}
+                                                                ("accepted", "boolean"), ("reason", "string"),
+                                                                ("unevaluated", "string"))}
                     | {"value": {"type": ["number", "null"]}, "margin": {"type": ["number", "null"]},
                        "severity": {"enum": list(SEVERITIES)}}}
     full_record = {**check_record, "required": [*check_record["required"], "low", "high", "pass", "accepted"],

@@ -461,10 +461,7 @@ def _worst(maps, values):
 
 def _radius(cam, theta):
     """Radius of curvature of the cam profile at camshaft angles [m] (Shang Hanji (1988), eqs. (2.6)-(2.7))."""
-    h, dh, d2h, _ = cam.law.derivatives(theta)
-    if cam.follower == "flat":
-        return geometry.flat_follower_curvature(cam.heel_radius, h, d2h)
-    return geometry.roller_follower_curvature(cam.heel_radius, cam.roller_radius, h, dh, d2h)
+    return cam.law.curvature(theta, cam.heel_radius, cam.follower, cam.roller_radius)
 
 
 def _curvature(cam, theta):

@@ -411,25 +411,35 @@ def profile_stage(cam, valve, output):
     def convex(t):
         """Profile radius where the profile is convex, +inf where it is concave (a concave stretch of a roller
         cam is not an undercut; its radius is reported on its own)."""
-        r = law.profile(t, heel, follower, roller)[1]
+        r = law.curvature(t, heel, follower, roller)
         return r if follower == "flat" else np.where(r + roller > 0.0, r, np.inf)
 
-    # the base circle (radius = heel radius for both followers) closes the profile
-    x_min, rho_min = min(extremum(convex, bp, "min"), (np.pi, heel), key=lambda p: p[1])
-    x_max, rho_max = max(extremum(lambda t: np.where(np.isinf(convex(t)), -np.inf, convex(t)), bp, "max"),
-                         (np.pi, heel), key=lambda p: p[1])
+    # the base circle (radius = heel radius for both followers) closes the profile; the smallest radius is refined
+    # on the contour around the least sample of each piece and around the table's least, so that a dip between the
+    # table's points (an undercut) is found
+    i = int(np.argmin(rho if follower == "flat" else np.where(rho + roller > 0.0, rho, np.inf)))
+    near = theta[[max(i - 1, 0), min(i + 1, theta.size - 1)]]
+    x_min, rho_min = min(extremum(convex, bp, "min"), extremum(convex, near, "min"), (np.pi, heel),
+                         key=lambda p: p[1])
+
+    def convex_or_low(t):
+        """The convex radius, -inf where the profile is concave (the largest radius is that of a convex stretch)."""
+        r = convex(t)
+        return np.where(np.isinf(r), -np.inf, r)
+
+    x_max, rho_max = max(extremum(convex_or_low, bp, "max"), (np.pi, heel), key=lambda p: p[1])
     straight = bool(np.any(np.isposinf(rho)))   # straight flanks (tangent cam): the largest radius is infinite
     if follower == "flat":
         contact = FlatContact(cam.max_velocity / omega)
-        undercut = rho_min <= 0.0
+        undercut = geometry.undercut_flat(rho_min)
     else:
         beta_max = extremum(lambda t: np.abs(law.profile(t, heel, "roller", roller)[2]), bp, "max")[1]
         # the concave radius closest to zero is the most negative curvature (the radius itself passes through
         # -inf at the inflections, where its minimum would be found)
-        curvature = extremum(lambda t: 1.0 / law.profile(t, heel, "roller", roller)[1], bp, "min")[1]
+        curvature = extremum(lambda t: 1.0 / law.curvature(t, heel, "roller", roller), bp, "min")[1]
         concave = 1.0 / curvature if curvature < 0.0 else 0.0
         contact = RollerContact(roller, beta_max, concave if concave + roller < 0.0 else None)
-        undercut = bool(np.any(geometry.undercut_roller(rho + roller, roller)))
+        undercut = geometry.undercut_roller(rho_min + roller, roller)
     return ProfileResult(table, contour, ctheta, rho_min, None if straight else rho_max, x_min,
                          None if straight else x_max, straight, contact, bool(undercut))
 

@@ -244,12 +244,23 @@ class LiftLaw(ABC):
         """
         theta = np.asarray(theta, dtype=float)
         h, dh, d2h, _ = self.derivatives(theta)
+        rho = self._curvature(heel_radius, follower, roller_radius, h, dh, d2h)
         if follower == "flat":
-            return (geometry.flat_follower_contour(theta, heel_radius, h, dh),
-                    geometry.flat_follower_curvature(heel_radius, h, d2h), np.zeros_like(theta), dh)
-        return (geometry.roller_follower_contour(theta, heel_radius, roller_radius, h, dh),
-                geometry.roller_follower_curvature(heel_radius, roller_radius, h, dh, d2h),
+            return geometry.flat_follower_contour(theta, heel_radius, h, dh), rho, np.zeros_like(theta), dh
+        return (geometry.roller_follower_contour(theta, heel_radius, roller_radius, h, dh), rho,
                 geometry.roller_pressure_angle(heel_radius, roller_radius, h, dh), np.zeros_like(theta))
+
+    def curvature(self, theta, heel_radius, follower="flat", roller_radius=0.0):
+        """The profile's radius of curvature [m] at camshaft angles ``theta`` [rad from the nose], that of
+        :meth:`profile` without the contour (the arguments of :meth:`profile`)."""
+        h, dh, d2h, _ = self.derivatives(np.asarray(theta, dtype=float))
+        return self._curvature(heel_radius, follower, roller_radius, h, dh, d2h)
+
+    @staticmethod
+    def _curvature(heel_radius, follower, roller_radius, h, dh, d2h):
+        if follower == "flat":
+            return geometry.flat_follower_curvature(heel_radius, h, d2h)
+        return geometry.roller_follower_curvature(heel_radius, roller_radius, h, dh, d2h)
 
     def polar_radius(self, polar_angle, heel_radius, follower="flat", roller_radius=0.0, samples=7201):
         """Radius of the cam contour at polar angles from the nose direction (+y towards +x) [m].

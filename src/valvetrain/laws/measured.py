@@ -10,7 +10,7 @@ crank deg.  Lifts are follower (tappet) lifts [m]; a table of valve lift is divi
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.interpolate import make_smoothing_spline
+from scipy.interpolate import CubicSpline, make_smoothing_spline
 from scipy.optimize import brentq
 
 from ..checks import check
@@ -55,18 +55,25 @@ FITS = ("auto", "spline", "harmonic")
 """Fits of a table: the one of the two below that predicts left-out rows better (auto), the smoothing spline, or
 the N-harmonic fit."""
 
+ACCURACY_FLOOR_MM = 1e-4
+"""Finest accuracy of a table [mm], the lower bound of accuracy_mm: 0.1 um, below any measurement of a lobe."""
+
 SMOOTHING_XTOL = 1e-3
 """Tolerance of the smoothing parameter of the spline, as a relative change of lambda: its residual RMS is the
 target to about 0.1 %."""
 
 
 def noise_level(lift):
-    """Robust estimate of the measurement noise of a table [same unit as ``lift``].
+    """Robust estimate of the random error of a table's rows, measurement noise and rounding [same unit as ``lift``].
 
-    The second differences of a smooth curve sampled densely are small; those of white noise of
-    standard deviation sigma have the standard deviation sqrt(6) sigma.  Their median absolute
-    deviation (scaled by 1.4826 to a standard deviation) ignores the few rows where the curve itself
-    bends sharply, so a noiseless table with a step or a flat top gives zero.
+    The third differences of a smooth curve sampled every 1-2 crank deg are small (its third derivative times the
+    cube of the step); those of white noise of standard deviation sigma have the standard deviation sqrt(20) sigma
+    (the sum of the squared binomial coefficients 1, 3, 3, 1).  Their median absolute deviation (scaled by 1.4826
+    to a standard deviation) ignores the few rows where the curve bends sharply (the foot of a valve-lift table,
+    where the valve leaves its seat), so a noiseless table with a step or a flat top gives zero.  Runs of four
+    equal rows (a base circle printed as exact zeros) say nothing of the noise and are left out.  Second
+    differences take in the curvature of the flanks at 2 crank deg: 1.8 um on a lobe rounded to 1 um, whose
+    rounding error is 0.29 um (third differences: 0.33 um).
 
     Examples
     --------
@@ -74,8 +81,92 @@ def noise_level(lift):
     >>> round(float(noise_level(np.sin(np.linspace(0, 3, 4000)) + rng.normal(0, 1e-3, 4000))) * 1e3, 1)
     1.0
     """
-    d2 = np.diff(np.asarray(lift, dtype=float), 2)
-    return float(1.4826 * np.median(np.abs(d2 - np.median(d2))) / np.sqrt(6.0))
+    h = np.asarray(lift, dtype=float)
+    moving = np.ptp(np.lib.stride_tricks.sliding_window_view(h, 4), axis=1) > 0.0
+    if not moving.any():
+        return 0.0
+    d3 = np.diff(h, 3)[moving]
+    return float(1.4826 * np.median(np.abs(d3 - np.median(d3))) / np.sqrt(20.0))
+
+
+def interpolation_error(x, y, per_step=8):
+    """How far the lift between a table's rows may leave the range of the rows [same unit as ``y``]: the
+    interpolation error of the angle step, as the rows show it.
+
+    The cubic spline through the rows (scipy's not-a-knot :class:`~scipy.interpolate.CubicSpline`) is the
+    smoothest curve through them; where it goes above the highest row or below the lowest, no fit that follows
+    the rows can be asked to stay inside.  At the foot of a valve-lift table, where the valve leaves its seat with
+    the velocity of the ramp, the lift has a kink: the spline through rows 2 crank deg apart swings below the base
+    circle by about 8 % of the lift the kink's slope makes in one step (1.7 um of tappet lift for the built-in
+    example's valve-lift table, 0.02 mm/cam deg at the tappet), and so does any smooth fit.
+
+    Parameters
+    ----------
+    x, y : ndarray
+        Angles [rad], increasing, and lifts.
+    per_step : int
+        Points per step at which the spline is evaluated.
+
+    Returns
+    -------
+    float
+        The largest excursion of the spline beyond [min y, max y], 0 if none.
+    """
+    spline = CubicSpline(x, y)
+    between = spline(np.linspace(x[0], x[-1], per_step * (x.size - 1) + 1))
+    return float(max(y.min() - between.min(), between.max() - y.max(), 0.0))
+
+
+def lift_resolution(lift_mm, most_decimals=6):
+    """The step to which a table's lifts are rounded [mm]: the largest q = n x 10^-k mm (k <= ``most_decimals``)
+    of which every lift is a whole multiple; 0 where there is none (the lifts are not rounded).
+
+    Examples
+    --------
+    >>> lift_resolution([0.0, 0.897, 6.25]), lift_resolution([0.0, 0.002, 0.104]), lift_resolution([0.1 / 3])
+    (0.001, 0.002, 0.0)
+    """
+    h = np.asarray(lift_mm, dtype=float)
+    for k in range(most_decimals + 1):
+        counts = h * 10.0**k
+        whole = np.round(counts)
+        if np.all(np.abs(counts - whole) <= 1e-6 * np.maximum(1.0, np.abs(counts))):
+            return float(np.gcd.reduce(np.abs(whole).astype(np.int64))) / 10.0**k
+    return 0.0
+
+
+def table_accuracy(lift_mm):
+    """The accuracy of a table's lifts as its rows show it [mm]: the default of ``accuracy_mm``.
+
+    A table is no more accurate than its resolution and its noise.  Its rows differ from the true lift by the
+    measurement noise and by the rounding to the table's step q (:func:`lift_resolution`); a value rounded to q
+    carries an error uniform over +-q/2, of standard deviation q / sqrt(12).  Where the lift changes by more than
+    q from row to row both errors are random, and :func:`noise_level` measures their sum from the rows; where it
+    changes less (the base circle, the nose) the rounding error is not random and the differences miss it, so
+    q / sqrt(12) is the floor:
+
+        accuracy = max(noise_level(lift), q / sqrt(12), ACCURACY_FLOOR_MM)
+
+    an RMS error of a row, as the smoothing spline and the N-harmonic order read it.  A table printed to 1 um
+    without noise has 0.29 um, one with 2 um of noise about 2 um.  The lift between the rows carries also the
+    interpolation error of the angle step; that is no error of the rows and is judged where the fits are checked
+    between the rows (:class:`TableLaw`).
+
+    Parameters
+    ----------
+    lift_mm : ndarray
+        The lifts of the table [mm], in the order of their angles.
+
+    Returns
+    -------
+    float
+        The accuracy [mm].
+
+    References
+    ----------
+    Sheppard (1898), the variance q^2/12 of values rounded to a grid of step q.
+    """
+    return max(noise_level(lift_mm), lift_resolution(lift_mm) / np.sqrt(12.0), ACCURACY_FLOOR_MM)
 
 
 def lobe_table(angle_deg, lift_mm, angle="crank", zero="gas_exchange_tdc", accuracy_mm=0.005,
@@ -404,6 +495,8 @@ class TableLaw(RampedLaw):
         holds the cam's ramps; 0 for a table of valve lift.
     rows_per_point : float
         Table rows averaged into each point (see :func:`binned`), for the record.
+    accuracy_stated : bool
+        Whether the accuracy was given (``accuracy_mm``) or derived from the table (:func:`table_accuracy`).
 
     Attributes
     ----------
@@ -429,12 +522,12 @@ class TableLaw(RampedLaw):
               '(reconstructed in this package)')
 
     def __init__(self, angles, lift, fit="auto", accuracy=5e-6, max_harmonics=60, ramp_height=0.0,
-                 rows_per_point=1.0):
+                 rows_per_point=1.0, accuracy_stated=True):
         if fit not in FITS:
             raise ValueError(f"fit = {fit!r}: allowed {', '.join(repr(f) for f in FITS)}")
         x, y = np.asarray(angles, dtype=float), np.asarray(lift, dtype=float)
         self.angles, self.values, self.accuracy = x, y, float(accuracy)
-        self.rows_per_point = float(rows_per_point)
+        self.rows_per_point, self.accuracy_stated = float(rows_per_point), bool(accuracy_stated)
         # N-harmonic fit about the highest point, the smallest N meeting the accuracy
         top = int(np.argmax(y))
         most = max(4, min(max_harmonics, (x.size - 1) // HARMONIC_POINTS_PER_ORDER))
@@ -445,27 +538,33 @@ class TableLaw(RampedLaw):
         self.harmonics = int(n)
         cos, sin = np.cos(np.arange(n + 1) * w * shift), np.sin(np.arange(n + 1) * w * shift)
         self._harmonic = (a * cos + b * sin, b * cos - a * sin, w)
-        self._spline, self.smoothing, self.spline_rms, lam = smoothing_spline(x - self.centre, y, self.accuracy)
+        self._spline, self.smoothing, self.spline_rms, lam = smoothing_spline(x - self.centre, y, self.accuracy,
+                                                                                   self.accuracy_stated)
         window = (float(x[0] - self.centre), float(x[-1] - self.centre))
         band = BASE_CIRCLE_ACCURACIES * self.accuracy
+        off_rows = interpolation_error(x, y)          # how far the lift may go beyond the rows between them
+        between = band + off_rows
         swing = self.fitted(np.linspace(*window, 8001), "harmonic")[0]
-        bounded = swing.min() >= -band and swing.max() <= y.max() + band
+        bounded = swing.min() >= -between and swing.max() <= y.max() + between
         if fit == "harmonic" and not bounded:
             raise ValueError(f"the N-harmonic fit (N = {n}) swings from {swing.min() / 1e-3:.4g} to "
                              f"{swing.max() / 1e-3:.4g} mm of tappet lift between the rows; allowed "
-                             f"{-band / 1e-3:.4g} to {(y.max() + band) / 1e-3:.4g} mm (the table's range and 3 x "
-                             "accuracy_mm): use fit = \"spline\"")
+                             f"{-between / 1e-3:.4g} to {(y.max() + between) / 1e-3:.4g} mm (the table's range, 3 x "
+                             "accuracy_mm and the interpolation error of the angle step): use fit = \"spline\"")
         self.gcv = {"harmonic": gcv_score(self.harmonic_rms, 2 * n + 1, x.size),
                     "spline": gcv_score(self.spline_rms, spline_dof(x - self.centre, lam), x.size)}
         self.fit, self.choice = choose_fit(fit, bounded, self.harmonic_rms <= self.accuracy, self.gcv)
         fit = self.fit
-        # the fit used stays within the table's range and reaches its top, to the noise of the measurement
-        tol = BASE_CIRCLE_ACCURACIES * max(self.accuracy, noise_level(y))
+        # between the rows the fit used stays within the table's range and reaches its top, as far as it departs
+        # from the rows, the noise of the measurement and the interpolation error of the step allow
+        resid = np.abs(self.fitted(x - self.centre)[0] - y).max()
+        tol = BASE_CIRCLE_ACCURACIES * max(self.accuracy, noise_level(y)) + resid + off_rows
         swing = self.fitted(np.linspace(*window, 8001))[0]
         if swing.min() < -tol or abs(swing.max() - y.max()) > tol:
             raise ValueError(f"the {fit} fit runs from {swing.min() / 1e-3:.4g} to {swing.max() / 1e-3:.4g} mm "
                              f"against the table's 0 to {y.max() / 1e-3:.4g} mm; allowed +-{tol / 1e-3:.3g} mm (3 x "
-                             "the noise): no smooth lobe (a flat top, a step, too few rows?)")
+                             "the noise, the fit's largest residual and the interpolation error of the angle step): "
+                             "no smooth lobe (a flat top, a step, too few rows?)")
         self.start_angle, self.end_angle = lift_event(lambda t: self.fitted(t)[0], *window, band)
         self._top = extremum(lambda t: self.fitted(t)[0], [self.start_angle, 0.0, self.end_angle], "max")[1]
         self._ramp_height = float(ramp_height)
@@ -550,7 +649,11 @@ class TableLaw(RampedLaw):
 
     def checks(self):
         """The N-harmonic fit must meet the stated measurement accuracy by ``max_harmonics``; if it does not, the
-        table is noisier than stated (or the accuracy finer than the instrument's)."""
+        table is noisier than stated (or the accuracy finer than the instrument's).  An accuracy derived from the
+        rows (:func:`table_accuracy`) is not finer than their noise: an N-harmonic fit that misses it cannot follow
+        the lobe (a kink at the valve's foot), which matters only where that fit is the one used."""
+        if not (self.accuracy_stated or self.fit == "harmonic"):
+            return []
         return [check("measured table: rms residual of the N-harmonic fit", self.harmonic_rms, high=self.accuracy,
                       unit="mm", source=f"Shang Hanji (1988), section 5.2: accuracy_mm, met by N <= {self.harmonics} harmonics "
                                         "(N by the residual against the accuracy, 0.002-0.01 mm)")]
@@ -572,17 +675,20 @@ def _spline_rms(x, y, lam):
     return spline, float(np.sqrt(np.mean((spline(x) - y) ** 2)))
 
 
-def smoothing_spline(x, y, accuracy):
-    """Reinsch's smoothing spline whose RMS residual is the stated measurement accuracy, or the GCV spline's if
-    that is larger (the table is noisier than stated).
+def smoothing_spline(x, y, accuracy, stated=True):
+    """Reinsch's smoothing spline whose RMS residual is the measurement accuracy, or the GCV spline's if that is
+    larger and the accuracy was stated (the table is noisier than stated).
 
     Among all curves whose RMS residual is at most ``accuracy`` the cubic smoothing spline with that residual has
     the least integral of the squared second derivative (Reinsch's formulation): it follows the table to its
     stated accuracy and no closer, so the noise of the rows does not pass into the acceleration.  Generalised
     cross-validation alone (:func:`scipy.interpolate.make_smoothing_spline` without ``lam``) follows 2 um of noise
     on a table every 2 crank deg into an acceleration 30 % too large; it is kept where its residual exceeds the
-    stated accuracy, which the table then does not meet.  The residual grows with lambda, so lambda is found by
-    Brent's method on log(lambda) after bracketing by decades.
+    stated accuracy, which the table then does not meet.  An accuracy derived from the rows themselves
+    (:func:`table_accuracy`) is their noise, Reinsch's own choice of the residual: the spline is smoothed to it even
+    where generalised cross-validation smooths more, as it does around a kink (the foot of a valve-lift table
+    every 2 crank deg, whose durations at 0.1 mm it shortens by 0.2 crank deg).  The residual grows with lambda,
+    so lambda is found by Brent's method on log(lambda) after bracketing by decades.
 
     Parameters
     ----------
@@ -590,6 +696,8 @@ def smoothing_spline(x, y, accuracy):
         Angles [rad], increasing, and lifts [m].
     accuracy : float
         Measurement accuracy, as an RMS error [m].
+    stated : bool
+        Whether the accuracy was stated (a bound the table may not meet) or derived from the rows (their noise).
 
     Returns
     -------
@@ -611,7 +719,7 @@ def smoothing_spline(x, y, accuracy):
         raise ValueError(f"the smoothing spline cannot be fitted to the {x.size} points of the lobe (generalised "
                          "cross-validation finds no smoothing for them)") from None
     gcv_rms = float(np.sqrt(np.mean((gcv(x) - y) ** 2)))
-    how, target = ("gcv", gcv_rms) if gcv_rms >= accuracy else ("accuracy", accuracy)
+    how, target = ("gcv", gcv_rms) if stated and gcv_rms >= accuracy else ("accuracy", accuracy)
 
     def excess(log_lam):
         return _spline_rms(x, y, np.exp(log_lam))[1] - target
@@ -663,7 +771,8 @@ FIT_REASONS = {
 
 SMOOTHINGS = {
     "accuracy": "the smoothing spline is smoothed to an RMS residual of accuracy_mm (Reinsch 1967)",
-    "gcv": "the smoothing spline is smoothed by generalised cross-validation: the table is noisier than accuracy_mm",
+    "gcv": "the smoothing spline is smoothed by generalised cross-validation, whose residual exceeds accuracy_mm: the "
+           "table is noisier than accuracy_mm or bends more sharply than its rows resolve (the foot of a valve lift)",
 }
 """How the spline's smoothing was chosen (:func:`smoothing_spline`)."""
 

@@ -19,7 +19,7 @@ from ..tables import lift_table_columns
 from ..bibliography import WORKS, cited_in
 from ..units import to_display
 from .i18n import SYMBOLS, TEXT
-from .names import has_name, label, link_names, quantity_text, translate, unit_text, value_text
+from .names import has_name, label, link_names, quantity_text, translate, unevaluated_text, unit_text, value_text
 
 TABLE_COLUMNS = ["cam_deg", "crank_deg", "segment", "tappet_lift_mm", "tappet_velocity_m_s",
                  "tappet_acceleration_m_s2", "valve_lift_mm", "curtain_area_mm2", "time_area_mm2_s", "rho_mm"]
@@ -76,6 +76,14 @@ def check_range(c, lang):
         low, high = (None if x is None else to_display(x, unit) for x in (low, high))
     text = describe_range(low, high, unit_text(unit, lang), bool(get("strict_low") or False))
     return TEXT[lang]["any"] if text == "any" else text
+
+
+def check_value(c, lang):
+    """The value of a :class:`~valvetrain.checks.Check` with its unit in ``lang``, or that it cannot be evaluated
+    and why (:func:`~valvetrain.report.names.unevaluated_text`)."""
+    if not c.evaluated:
+        return unevaluated_text(c, lang)
+    return f"{fmt(c.shown_value, lang)} {unit_text(c.unit, lang)}".rstrip()
 
 
 NOT_CHECKED = re.compile(r"(\w+): not checked, (.*) not given")
@@ -264,7 +272,8 @@ def render_report(results, plots, lang="en", folder=None):
     ----------
     results : valvetrain.design.DesignResults
     plots : dict
-        ``{valve name: {figure kind: file name relative to plots/}}``.
+        ``{valve name: {figure kind: file name relative to plots/}}`` of the figures drawn (the report names the
+        command that draws the others).
     lang : {"en", "ru"}
     folder : Path, optional
         The output folder holding ``plots/``: the figures are embedded in the report (one file to mail); without
@@ -277,10 +286,19 @@ def render_report(results, plots, lang="en", folder=None):
     env.filters["unit"] = lambda unit: unit_text(unit, lang)
     env.filters["tr"] = lambda text: translate(text, lang)
     env.filters["range"] = lambda c: check_range(c, lang)
+    env.filters["value"] = lambda c: check_value(c, lang)
     env.filters["not_checked"] = lambda note: not_checked(note, lang)
     env.globals["cell"] = lambda key, value: cell(key, value, lang)
     env.globals["legend"] = symbol_legend(lang)
-    env.filters["image"] = lambda name: _image(folder, name)
+    images = {}
+
+    def image(name):
+        if name not in images:
+            images[name] = _image(folder, name)
+        return images[name]
+
+    env.filters["image"] = image
+    env.globals["figure"] = lambda name, alt: _figure(image, name, alt, TEXT[lang])
     spec = results.spec.model_dump()
     parts = list(results.valves) + (list(results.two_stroke.summary["ports"]) if results.two_stroke is not None else [])
     env.filters["quantity"] = lambda q: _quantity(q, lang, parts)
@@ -289,7 +307,7 @@ def render_report(results, plots, lang="en", folder=None):
     for name, v in results.valves.items():
         s = v.summary
         valves.append({
-            "name": name, "valve": v, "summary": s, "plots": plots[name],
+            "name": name, "valve": v, "summary": s, "plots": plots.get(name, {}),
             "inputs": _flatten(spec["valves"][name]),
             "flow": [(k, s["flow"][k]) for k in FLOW_KEYS],
             "time_area": [(k, s["flow"][k]) for k in TIME_AREA_KEYS],
@@ -317,13 +335,13 @@ def render_report(results, plots, lang="en", folder=None):
     crank = None
     if results.crank is not None:
         summary = results.crank.summary
-        crank = {"inputs": _flatten(spec["crank"]), "plots": plots["crank"],
+        crank = {"inputs": _flatten(spec["crank"]), "plots": plots.get("crank", {}),
                  "summary": [(k, v) for k, v in _flatten(summary) if k != "pressure_source"],
                  "pressure_source": summary["pressure_source"]}
     ports = None
     if results.two_stroke is not None:
         ports = {"inputs": [(k, v) for k, v in _flatten(spec["two_stroke"]) if not k.startswith("ports.")],
-                 "plots": plots["two_stroke"], "ports": results.two_stroke.summary["ports"]}
+                 "plots": plots.get("two_stroke", {}), "ports": results.two_stroke.summary["ports"]}
     warning_symbols = [key for key, pattern in WARNING_SYMBOLS.items()
                        if any(re.search(pattern, w.quantity) for w in (*results.warnings, *results.accepted))]
     context = dict(
@@ -338,6 +356,15 @@ def render_report(results, plots, lang="en", folder=None):
     # the bibliography lists the works the report actually cites: found by their short form in a first rendering
     cited = cited_in(unescape(template.render(sources=[], **context)))
     return template.render(sources=[(WORKS[k].short, WORKS[k].reference()) for k in cited], **context)
+
+
+def _figure(image, name, alt, t):
+    """The ``<img>`` of a figure of ``plots/`` (``image(name)`` its source), or where it was not drawn (``name``
+    undefined: not asked for, :data:`valvetrain.report.plots.FIGURES_ON_REQUEST`) the command that draws it."""
+    if not name:
+        return Markup('<p class="src">{} <span class="name">valvetrain run --figures all</span></p>').format(
+            t["figure_on_request"].format(alt))
+    return Markup('<img src="{}" alt="{}">').format(image(name), alt)
 
 
 def _image(folder, name):

@@ -5,6 +5,7 @@ from ..laws.measured import FIT_REASONS, SMOOTHINGS
 TEXT = {
     "en": {
         "summary": "Summary", "summary_valves": "Valves", "timing_diagram": "Valve timing diagram",
+        "figure_on_request": "The figure “{}” is drawn on request:",
         "intake": "intake", "exhaust": "exhaust", "overlap": "overlap", "tdc": "TDC", "bdc": "BDC",
         "valve_lift_mm": "valve lift, mm",
         "s_law": "lift law", "s_lift": "valve lift, mm", "s_opens": "valve opens, crank deg from TDC",
@@ -156,6 +157,7 @@ TEXT = {
     },
     "ru": {
         "summary": "Сводка", "summary_valves": "Клапаны", "timing_diagram": "Диаграмма фаз газораспределения",
+        "figure_on_request": "Рисунок «{}» строится по запросу:",
         "intake": "впускной", "exhaust": "выпускной", "overlap": "перекрытие", "tdc": "ВМТ", "bdc": "НМТ",
         "valve_lift_mm": "подъём клапана, мм",
         "s_law": "закон подъёма", "s_lift": "подъём клапана, мм", "s_opens": "клапан открывается, ° ПКВ от ВМТ",
@@ -200,7 +202,9 @@ TEXT = {
             "harmonic_swings": "N-гармоническая аппроксимация выходит между точками за пределы подъёмов таблицы"},
         "smoothings": {
             "accuracy": "сплайн сглажен до СКО отклонения, равного заданной точности измерения (Reinsch (1967))",
-            "gcv": "сплайн сглажен по обобщённой перекрёстной проверке: шум таблицы больше заданной точности измерения"},
+            "gcv": "сплайн сглажен по обобщённой перекрёстной проверке, СКО отклонения которой больше точности измерения: "
+                   "шум таблицы больше точности измерения или таблица изгибается круче, чем разрешают её точки "
+                   "(начало подъёма клапана)"},
         "table": "Таблица подъёма (через {step:g}° ПРВ; полная таблица: tables/{name}_lift.csv)",
         "plots": "Графики",
         "files": "Файлы",
@@ -686,8 +690,8 @@ SYMBOLS = {
 """Every symbol of the report: ``key: (HTML, English, Russian)`` -- explained where it is first used."""
 
 
-_MARGINS = ("spring reserve", "pressure angle", "concave radius", "rho_min", "max acceleration", "min acceleration",
-            "seating velocity", "no jump", "spring design")
+_MARGINS = ("spring reserve", "pressure angle", "concave radius", "rho_min", "contact stress", "max acceleration",
+            "min acceleration", "seating velocity", "no jump", "spring design")
 
 OPTIMIZE_TEXT = {
     "en": {
@@ -733,7 +737,8 @@ OPTIMIZE_TEXT = {
         "binding": "Ограничения, определяющие оптимум", "history": "Ход поиска",
         "feasible": "в пределах ограничений", "infeasible": "вне ограничений", "best": "лучший в пределах",
         "margins": {"spring reserve": "запас пружины", "pressure angle": "угол давления",
-                    "concave radius": "вогнутый радиус", "rho_min": "ρ_min", "max acceleration": "ускорение max",
+                    "concave radius": "вогнутый радиус", "rho_min": "ρ_min",
+                    "contact stress": "контактное напряжение", "max acceleration": "ускорение max",
                     "min acceleration": "ускорение min", "seating velocity": "скорость посадки",
                     "no jump": "отрыв толкателя", "spring design": "подбор пружины"},
         "evaluations": "число расчётов",

@@ -16,6 +16,8 @@ Symbols: one symbol for one quantity throughout the report and the plots: ``h`` 
 
 import re
 
+from ..checks import UNEVALUATED
+
 UNITS = {
     "": ("", ""), "mm": ("mm", "мм"), "mm2": ("mm²", "мм²"), "mm2 s": ("mm²·s", "мм²·с"), "m": ("m", "м"),
     "m/s": ("m/s", "м/с"), "m/s2": ("m/s²", "м/с²"), "m/s3": ("m/s³", "м/с³"), "N": ("N", "Н"), "kN": ("kN", "кН"),
@@ -50,6 +52,7 @@ NAMES = {
     "idle_speed": ("idle speed (lowest speed of the strength checks)",
                    "частота холостого хода (наименьшая в расчёте на прочность)"),
     "cylinders": ("number of cylinders", "число цилиндров"), "strokes": ("strokes of the cycle", "тактность"),
+    "over_speed_ratio": ("over-speed / rated speed", "отношение максимальной частоты вращения к номинальной"),
     "type": ("engine type", "тип двигателя"), "chamber": ("combustion chamber", "камера сгорания"),
     "layout": ("layout", "компоновка"), "bank_angle": ("bank angle", "угол развала"),
     "firing_order": ("firing order", "порядок работы цилиндров"),
@@ -143,6 +146,7 @@ NAMES = {
     "table_file": ("lift table file", "файл таблицы подъёма"), "table_angle": ("angles of the table", "углы таблицы"),
     "table_lift_at": ("lift of the table at", "подъём в таблице на"), "table_zero": ("table angles from", "углы таблицы от"),
     "fit": ("fit", "аппроксимация"), "accuracy": ("accuracy of the fit", "точность аппроксимации"),
+    "accuracy_from": ("accuracy of the fit from", "точность аппроксимации"),
     "max_harmonics": ("max number of harmonics", "наибольшее число гармоник"),
     "straight_flanks": ("straight flanks", "прямолинейные участки"),
     "points": ("points fitted", "число аппроксимируемых точек"), "rows_per_point": ("rows per point", "строк на точку"),
@@ -368,6 +372,7 @@ VALUES = {
     "three_arc": "трёхдуговой", "tangent": "тангенциальный", "table": "по измеренной таблице",
     "crank": "по коленчатому валу", "cam": "по распределительному валу", "valve": "на клапане", "tappet": "на толкателе",
     "gas_exchange_tdc": "ВМТ газообмена", "firing_tdc": "ВМТ сгорания", "auto": "автоматически", "spline": "сплайн",
+    "stated": "задана в исходных данных",
     "true": "да", "false": "нет", "outer": "наружная", "inner": "внутренняя", "any": "любое",
     "1dof": "одномассовая", "multi": "многомассовая", "none": "нет", "infeed": "подачей круга",
 }
@@ -676,6 +681,16 @@ def quantity_text(quantity, lang, prefixes=()):
     return prefix + (rest if name is None else name)
 
 
+CANNOT_EVALUATE = ("cannot be evaluated", "не может быть вычислено")
+"""Said of a check whose value is not a finite number, before its reason."""
+
+
+def unevaluated_text(check, lang):
+    """``"cannot be evaluated: REASON"`` of a check that cannot be evaluated, in ``lang`` (the reason by
+    :func:`translate`)."""
+    return f"{CANNOT_EVALUATE[LANGS.index(lang)]}: {translate(check.unevaluated, lang)}"
+
+
 CHAPTERS = {"crank": ("crank mechanism", "кривошипно-шатунный механизм"), "two-stroke": ("two-stroke", "двухтактный")}
 """Prefixes of the checks of a chapter (not of a valve)."""
 
@@ -782,6 +797,7 @@ QUANTITIES.update({
 SKELETONS.update({f"even firing, order {'{}' * n}": f"равномерное чередование вспышек, порядок работы {'{}' * n}"
                   for n in range(1, 25)})   # the order of any number of cylinders, "1-5-3-6-2-4"
 SKELETONS.update({
+    UNEVALUATED: "значение не удалось вычислить",
     "a wheel of radius {} mm cannot grind a concave stretch of smaller radius":
         "круг радиусом {} мм не может шлифовать вогнутый участок меньшего радиуса",
     "master roller r_m = {} mm, bar ratio {}": "ролик копира r_m = {} мм, передаточное отношение {}",

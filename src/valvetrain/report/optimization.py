@@ -11,7 +11,7 @@ from ..bibliography import WORKS, cited_in
 from ..laws.power_polynomial import ARTICLE_FULLNESS
 from ..synthesis.optimize import BINDING, START_SPRING, shown_objective
 from .i18n import OPTIMIZE_TEXT
-from .names import quantity_text, unit_text
+from .names import quantity_text, unevaluated_text, unit_text
 
 
 def history_columns(result):
@@ -81,6 +81,11 @@ def _g(x):
     return "" if x is None else f"{x:.5g}"
 
 
+def _checked(c, lang):
+    """The value of a check (its unit is the range's), or that it cannot be evaluated and why."""
+    return _g(c.shown_value) if c.evaluated else unevaluated_text(c, lang)
+
+
 def report_html(result, lang="en"):
     """The optimisation's report in ``lang`` (HTML text): method, variables, comparison, constraints, history."""
     t = OPTIMIZE_TEXT[lang]
@@ -104,7 +109,7 @@ def report_html(result, lang="en"):
         note = c.note if lang == "en" else t["start_spring"] if c.note.startswith(START_SPRING) else ""
         shown_range = c.range.replace(c.unit, unit_text(c.unit, lang)) if c.unit else c.range
         rows.append((quantity_text(c.quantity, lang, prefixes) + (f" ({note})" if note else ""),
-                     _g(s.shown_value) if s else "", _g(c.shown_value), shown_range, f"{c.margin:.4f}", state))
+                     _checked(s, lang) if s else "", _checked(c, lang), shown_range, f"{c.margin:.4f}", state))
     parts.append(_table([t["quantity"], t["start"], t["optimum"], t["range"], t["margin"], t["state"]], rows))
     binding = [quantity_text(c.quantity, lang, prefixes) for c in result.binding]
     parts.append(f"<p>{escape(t['binding'])}: {escape(', '.join(binding) if binding else t['none'])}.</p>")

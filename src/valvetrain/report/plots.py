@@ -491,29 +491,49 @@ ENGINE_FIGURES = {"crank": {"crank_forces": crank_forces_figure, "crank_torque":
 FIGURES = {"kinematics": kinematics_figure, "contour": contour_figure, "time_area": time_area_figure,
            "curvature": curvature_figure, "spring": spring_figure, "strength_speed": strength_speed_figure}
 
+FIGURE_SETS = ("main", "all", "none")
+"""Which figures :func:`write_plots` draws (``valvetrain run --figures``): ``main`` all but
+:data:`FIGURES_ON_REQUEST`, ``all`` every one, ``none`` none."""
 
-def write_plots(results, folder, lang="en"):
-    """Write every figure as PNG; return ``{valve name or "crank"/"two_stroke": {kind: filename}}``."""
+FIGURES_ON_REQUEST = frozenset({"time_area", "curvature", "crank_forces", "crank_pin_polar", "two_stroke_time_area"})
+"""The figures drawn only on request (``figures="all"``): each draws quantities whose extremes the report's tables
+give (the time-area, the radius of curvature, the crank forces and pin load, the ports' time-area); drawing a figure
+costs about 0.1 s, a design's numbers a few milliseconds."""
+
+
+def write_plots(results, folder, lang="en", figures="main"):
+    """Write the figures of ``figures`` (one of :data:`FIGURE_SETS`) as PNG; return ``{valve name or
+    "crank"/"two_stroke": {kind: filename}}`` (and ``"(timing)"``: the timing diagram's filename) of those written."""
+    if figures not in FIGURE_SETS:
+        raise ValueError(f"figures = {figures!r}; allowed: {', '.join(FIGURE_SETS)}")
     t = TEXT[lang]
     written = {}
+
+    def wanted(kind):
+        return figures == "all" or (figures == "main" and kind not in FIGURES_ON_REQUEST)
 
     def save(fig, fname):
         fig.savefig(folder / fname, dpi=110)
         return fname
 
     for name, valve in results.valves.items():
-        written[name] = {kind: save(make(valve, t), f"{name}_{kind}.png") for kind, make in FIGURES.items()}
-        if valve.dynamics is not None:
+        written[name] = {kind: save(make(valve, t), f"{name}_{kind}.png") for kind, make in FIGURES.items()
+                         if wanted(kind)}
+        if valve.dynamics is not None and figures != "none":
             written[name].update(write_dynamics_plots(name, valve.dynamics, folder, t))
-        if valve.grinding is not None:
+        if valve.grinding is not None and wanted("grinding"):
             written[name]["grinding"] = save(grinding_figure(valve, t), f"{name}_grinding.png")
         if valve.hydraulic is not None:
-            written[name]["hydraulic"] = save(hydraulic_figure(valve, t), f"{name}_hydraulic.png")
-            written[name]["hydraulic_sweep"] = save(hydraulic_sweep_figure(valve, t), f"{name}_hydraulic_sweep.png")
-    if results.valves:
+            if wanted("hydraulic"):
+                written[name]["hydraulic"] = save(hydraulic_figure(valve, t), f"{name}_hydraulic.png")
+            if wanted("hydraulic_sweep"):
+                written[name]["hydraulic_sweep"] = save(hydraulic_sweep_figure(valve, t),
+                                                        f"{name}_hydraulic_sweep.png")
+    if results.valves and wanted("timing"):
         written["(timing)"] = save(timing_figure(results.valves, t), "valve_timing.png")
-    for stage, figures in ENGINE_FIGURES.items():
+    for stage, figures_of_stage in ENGINE_FIGURES.items():
         data = getattr(results, stage)
         if data is not None:
-            written[stage] = {kind: save(make(data, t), f"{kind}.png") for kind, make in figures.items()}
+            written[stage] = {kind: save(make(data, t), f"{kind}.png") for kind, make in figures_of_stage.items()
+                              if wanted(kind)}
     return written

@@ -24,7 +24,7 @@ from ..files import read_lift_table, shown_path
 from ..laws import (AsymmetricLaw, CombinedLaw, ConstantAccelerationLaw, DynamicLaw, HarmonicLaw, KurzLaw, PolydyneLaw,
                     PolynomialLaw, PowerPolynomialLaw, TangentLaw, ThreeArcLaw)
 from ..laws.power_polynomial import ARTICLE_EXPONENTS
-from ..laws.measured import CHECKING_HEIGHTS_MM, MIN_VALVE_LIFT_MM, TableLaw, fit_reason, lobe_table
+from ..laws.measured import CHECKING_HEIGHTS_MM, MIN_VALVE_LIFT_MM, TableLaw, fit_reason, lobe_table, table_accuracy
 from ..laws.takeup import ClearanceTakeUp
 from ..units import DEG, MM, cam_per_crank, rad_to_deg
 from .fields import RAMP_VELOCITY, SEGMENT_ANGLE, Length, _bounded, _Model
@@ -611,7 +611,7 @@ class TableCam(_CamBase):
     table_lift_at: Literal["valve", "tappet"]
     table_zero: Literal["gas_exchange_tdc", "firing_tdc"] = "gas_exchange_tdc"
     fit: Literal["auto", "spline", "harmonic"] = "auto"
-    accuracy_mm: _bounded(1e-4, 0.1, "mm", low_open=False) = 0.005
+    accuracy_mm: Optional[_bounded(1e-4, 0.1, "mm", low_open=False)] = None
     max_harmonics: Annotated[int, Field(ge=4, le=400)] = 60
 
     needs_timing: ClassVar[bool] = False
@@ -633,11 +633,11 @@ class TableCam(_CamBase):
         at_valve = cam.table_lift_at == "valve"
         clearance = 0.0 if at_valve else valve.clearance
         least = MIN_VALVE_LIFT_MM / (1.0 if at_valve else i_k) + clearance / MM
-        theta, lift, per_point = lobe_table(angle_deg, lift_mm, cam.table_angle, cam.table_zero, cam.accuracy / MM,
-                                            least)
+        accuracy_mm = table_accuracy(lift_mm) if cam.accuracy is None else cam.accuracy / MM
+        theta, lift, per_point = lobe_table(angle_deg, lift_mm, cam.table_angle, cam.table_zero, accuracy_mm, least)
         to_tappet = MM / (i_k if at_valve else 1.0)
-        law = TableLaw(theta, lift * to_tappet, cam.fit, cam.accuracy * to_tappet / MM, cam.max_harmonics, clearance,
-                       per_point)
+        law = TableLaw(theta, lift * to_tappet, cam.fit, accuracy_mm * to_tappet, cam.max_harmonics, clearance,
+                       per_point, accuracy_stated=cam.accuracy is not None)
         table_lift = law.lift_max * i_k
         if valve.max_lift is not None and abs(valve.max_lift - table_lift) > 0.01 * table_lift:
             raise ValueError(f"max_lift_mm = {valve.max_lift / MM:g} disagrees with the table's valve lift "
@@ -669,7 +669,8 @@ class TableCam(_CamBase):
                "fit_reason": fit_reason(law), "fit_reason_code": law.choice[0], "spline_smoothing": law.smoothing,
                "gcv_ratio_harmonic_to_spline": _finite(law.gcv["harmonic"] / law.gcv["spline"]),
                "harmonics": law.harmonics, "asymmetry_rms_mm": law.asymmetry_rms * at_valve / MM,
-               "fit_quality": quality, "table_angle": self.table_angle, "table_lift_at": self.table_lift_at,
+               "accuracy_mm": law.accuracy * at_valve / MM,
+               "accuracy_from": "stated" if law.accuracy_stated else "table", "fit_quality": quality, "table_angle": self.table_angle, "table_lift_at": self.table_lift_at,
                "table_zero": self.table_zero}
         # the timing the table implies, where the valve lift crosses the first checking height (0.1 mm)
         rise, fall = law.crossings(law.ramp_height + CHECKING_HEIGHTS_MM[0] * MM / valve.rocker_ratio)

@@ -18,7 +18,8 @@ import numpy as np
 
 from .. import strength
 from ..checks import check
-from ..units import DEG, MM, MPA
+from ..numerics import extremum
+from ..units import DEG, MM
 
 SOURCE_SYNTHESIS = "UkrSURT Proceedings (2019)"
 SOURCE_CRITERIA = "Shang Hanji (1988), section 2.1"
@@ -45,10 +46,12 @@ class Limits:
         Allowable Hertz stress [Pa] (1200 MPa: Valve-train practical works (n.d.), eqs. 7.4-7.5).
     cam_width : float
         Contact width of cam and follower [m], needed for the Hertz stress.
+    top_speed : float
+        Highest engine speed over the rated speed up to which the contact stress is checked (from standstill).
     contact_modulus : float
         Effective modulus E_m [Pa] (steel on steel: E).
     min_rho : float
-        Smallest profile radius of a flat follower's cam [m] (2 mm: Shang Hanji (1988), section 2.1).
+        Smallest convex profile radius of the cam [m], either follower (2 mm: Shang Hanji (1988), section 2.1).
     ramp_velocity : tuple
         Band of the tappet velocity analogue at the end of the ramp [m/rad] (0.008-0.022 mm/deg:
         Valve-train practical works (n.d.), eq. 2.1).
@@ -67,8 +70,9 @@ class Limits:
     min_spring_reserve: float = 1.5
     max_acceleration: float = None
     min_acceleration: float = None
-    max_contact_stress: float = 1200.0 * MPA
+    max_contact_stress: float = strength.LIMITS["cam_contact_stress"][0]
     cam_width: float = None
+    top_speed: float = 1.0
     contact_modulus: float = strength.STEEL_MODULUS
     min_rho: float = 2.0 * MM
     ramp_velocity: tuple = (0.008 * MM / DEG, 0.022 * MM / DEG)
@@ -173,39 +177,119 @@ def acceleration_band(design, low=None, high=None):
     return out
 
 
-def contact_stress_value(design, width, modulus=strength.STEEL_MODULUS):
-    """Largest Hertz stress between cam and follower along the open event [Pa].
+def convex_radius(rho, follower, roller_radius=0.0):
+    """The profile radius where the profile is convex to the follower, +inf elsewhere [m].
+
+    A concave stretch of a roller cam (pitch radius of curvature < 0) is not convex; a flat follower's cam is convex
+    wherever it is not undercut, so its radius is kept as it is (rho <= 0 is its undercut).
+    """
+    rho = np.asarray(rho, dtype=float)
+    return rho if follower == "flat" else np.where(rho + roller_radius > 0.0, rho, np.inf)
+
+
+def worst_cam_force(spring_force, mass, rocker_ratio, top_acceleration):
+    """The largest cam force over the engine speeds from standstill up to a top speed [N].
+
+    Parameters
+    ----------
+    spring_force : ndarray
+        Spring force at the valve [N].
+    mass : float
+        Mass of the train reduced to the valve [kg].
+    rocker_ratio : float
+        i_k.
+    top_acceleration : ndarray
+        Tappet acceleration at the top speed [m/s^2].
 
     Notes
     -----
-    The cam force P_T = i_k (P_spr + m_v j_v) at each angle of the design's table with the instantaneous profile
-    radius (Shang Hanji (1988), eqs. 2.4-2.5; Valve-train practical works (n.d.), eqs. 7.1, 7.4-7.5).
+    P_T = i_k (P_spr + m_v i_k j) (Valve-train practical works (n.d.), eq. 7.1) is linear in omega^2: its largest
+    value over the speeds is the standstill's (j = 0) where the tappet decelerates and the top speed's where it
+    accelerates.
     """
-    table, drive, i_k = design.table, design.drive, design.rocker_ratio
-    line = drive.lines["chosen"]
-    m_v = drive.masses.at_valve
-    open_ = table.valve_lift > 0.0
-    force = strength.cam_force(line.force(table.valve_lift[open_]), m_v * i_k * table.acceleration[open_], i_k)
-    rho = table.rho[open_]
-    curvature = 1.0 / rho + (1.0 / design.roller_radius if design.follower == "roller" else 0.0)
-    return float(np.max(strength.hertz_line_stress(force, width, curvature, modulus)))
+    return strength.cam_force(spring_force, mass * rocker_ratio * np.clip(top_acceleration, 0.0, None), rocker_ratio)
 
 
-def contact_stress(design, high, width, modulus=strength.STEEL_MODULUS):
+def hertz_stress(force, rho, follower, roller_radius, width, modulus):
+    """Hertz line stress between cam and follower [Pa]; 0 where the profile gives no line contact.
+
+    Parameters
+    ----------
+    force : ndarray
+        Cam force [N].
+    rho : ndarray
+        Profile radius of curvature [m].
+    follower : {"flat", "roller"}
+    roller_radius, width, modulus : float
+        [m], [m], [Pa].
+
+    Notes
+    -----
+    sigma = 0.418 sqrt(P_T E / b (1/rho + 1/r_p)) (Valve-train practical works (n.d.), eqs. 7.4-7.5).  Line contact
+    needs a convex profile, or a concave one wider than the roller; elsewhere (an undercut) the smallest-radius
+    constraint fails instead.
+    """
+    rho = np.asarray(rho, dtype=float)
+    roller = follower == "roller"
+    contact = (rho > 0.0) | (roller & (rho < -roller_radius))
+    curvature = 1.0 / np.where(contact, rho, 1.0) + (1.0 / roller_radius if roller else 0.0)
+    sigma = strength.hertz_line_stress(np.clip(force, 0.0, None), width, np.where(contact, curvature, 1.0), modulus)
+    return np.where(contact, sigma, 0.0)
+
+
+def contact_stress_value(design, width, modulus=strength.STEEL_MODULUS, top=1.0):
+    """Largest Hertz stress between cam and follower along the open event [Pa], refined on the contour.
+
+    Parameters
+    ----------
+    design : ValveDesign
+    width : float
+        Contact (cam) width [m].
+    modulus : float
+        Effective modulus E_m [Pa].
+    top : float
+        Highest engine speed over the rated speed: the stress is the largest from standstill up to it.
+
+    Notes
+    -----
+    The cam force of :func:`worst_cam_force` with the design's chosen spring and the instantaneous profile radius at
+    each camshaft angle of the open event (:func:`hertz_stress`; Shang Hanji (1988), eqs. 2.4-2.5); its largest value
+    is refined between the samples of each piece of the law (:func:`valvetrain.numerics.extremum`), so that a sharp
+    nose between the table's angles is not missed.
+    """
+    law, cam, drive = design.law, design.cam, design.drive
+    line, omega, roller = drive.lines["chosen"], cam.cam_speed * top, cam.roller_radius
+
+    def stress(theta):
+        _, _, d2h, _ = law.derivatives(theta)
+        force = worst_cam_force(line.force(cam.valve_lift(theta)), drive.masses.at_valve, cam.rocker_ratio,
+                                omega**2 * d2h)
+        rho = law.profile(theta, cam.heel_radius, cam.follower, roller)[1]
+        return hertz_stress(force, rho, cam.follower, roller, width, modulus)
+
+    bp = law.breakpoints
+    edges = np.unique(np.concatenate([[law.valve_opens], bp[(bp > law.valve_opens) & (bp < law.valve_closes)],
+                                      [law.valve_closes]]))
+    return extremum(stress, edges, "max")[1]
+
+
+def contact_stress(design, high, width, modulus=strength.STEEL_MODULUS, top=1.0):
     """:func:`contact_stress_value` against the allowable ``high`` [Pa]."""
-    return check("Hertz contact stress", contact_stress_value(design, width, modulus), high=high, unit="MPa",
-                 source=SOURCE_MANUAL + ", eqs. (7.4)-(7.5)", severity="failure")
+    return check("Hertz contact stress", contact_stress_value(design, width, modulus, top), high=high, unit="MPa",
+                 source=SOURCE_MANUAL + ", eqs. (7.4)-(7.5)", severity="failure",
+                 note=f"cam width {width / MM:.4g} mm, from standstill to {top:.4g} x the rated speed")
 
 
 def rho_min(design, low):
-    """Smallest profile radius of a flat follower's cam against ``low`` [m]; None for a roller.
+    """Smallest convex profile radius of the cam against ``low`` [m], refined on the contour (the profile stage's).
+
+    A roller follower's cam needs it as a flat follower's does: at a radius near zero the cam is pointed (and at zero
+    or less undercut), whatever the roller.
 
     References
     ----------
     Shang Hanji (1988), section 2.1 (rho_min >= 2 mm).
     """
-    if design.follower != "flat":
-        return None
     return check("rho_min (cam profile)", design.profile.rho_min, low=low, unit="mm", source=SOURCE_CRITERIA,
                  severity="failure")
 
@@ -277,7 +361,7 @@ def constraints(design, limits=Limits()):
     L = limits
     out = acceleration_band(design, L.min_acceleration, L.max_acceleration)
     if L.cam_width is not None and L.max_contact_stress is not None:
-        out.append(contact_stress(design, L.max_contact_stress, L.cam_width, L.contact_modulus))
+        out.append(contact_stress(design, L.max_contact_stress, L.cam_width, L.contact_modulus, L.top_speed))
     for key, constraint in SINGLE_LIMITS:
         if getattr(L, key) is not None:
             out.append(constraint(design, getattr(L, key)))

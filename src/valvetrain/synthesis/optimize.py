@@ -5,21 +5,30 @@ The variables are keys of the valve's specification (:class:`Variable`, a path u
 cam's (``cam.phi1_deg``, ``cam.shape_factor``, ``cam.p``, ``cam.ratios.1.value``) and the spring reserve
 ``drive.spring_reserve``.  Every law with parameters has a default set (:func:`default_variables`: Kurz,
 constant acceleration, polydyne exponents, combined-function ratios, the piecewise power polynomial); any other
-numeric key may be named.  The lift, the timing and the follower stay as the specification gives them.
+numeric key may be named, within the key's own allowed range.  The lift, the timing and the follower stay as the
+specification gives them.
 
-One evaluation (:class:`Problem`) builds the law of a point through the cam section of the specification, runs
-the law and flow stages of the design on it (the lift table, the time-area and fullness) and measures the margins
-of the limits (:class:`~.constraints.Limits`) on the profile: spring reserve, pressure angle and concave radius
-against the grinding wheel of a roller follower, rho_min of a flat follower, the acceleration band, and, with
-``no_jump_factor``, the follower separation of the one-mass elastic train at the rated speed and at that multiple
-of it.  During the search the train and its spring are the starting design's (the spring scaled by
-K_z / K_z,0 when the spring reserve is a variable, as the spring design sizes it); the optimum is then designed in
-full, with its own spring, and every constraint is checked again on it, the dynamics over a speed sweep up to the
-limit (:func:`final_checks`).
+One evaluation (:class:`Problem`) builds the law of a point through the cam section of the specification and
+samples it once on a grid of the flank (the whole event for a cam with a closing flank of its own), then once more
+on short windows around each extreme of the sampled quantities (so the extremes are those of the contour between
+the samples, not of the grid): the objective (the flow module's fullness or time-area, exact quadrature) and the
+margins of the limits (:class:`~.constraints.Limits`): spring reserve, pressure angle and concave radius against
+the grinding wheel of a roller follower, the smallest convex radius of the contour and the Hertz stress with the cam
+width from standstill to the over-speed (either follower), the acceleration band, the seating velocity, the spring
+design, and, with ``no_jump_factor``, the follower separation of the one-mass elastic train at the rated speed and at
+that multiple of it.  The separation is simulated only for a point that meets every other limit (elsewhere its
+margin is NaN: not needed, the point is outside already).  During the search the train and its spring are the
+starting design's (the spring scaled by K_z / K_z,0 when the spring reserve is a variable, as the spring design sizes
+it); the spring design's margin is the closed form of the spring's required force line against the start's
+(:meth:`Problem.spring_design`), the discrete spring search runs only for the final design.
 
-Search: :func:`scipy.optimize.differential_evolution` over the bounds with the margins as an exact penalty
-(:data:`PENALTY`), then a local polish with SLSQP, the margins as constraints, from its best point (kept when it is
-feasible and better), as the method's article does (UkrSURT Proceedings (2019); Shang Hanji (1988), section 4.3).
+Search: :func:`scipy.optimize.differential_evolution` over the bounds, the whole population evaluated at once, the
+start in its first population and the margins as an exact penalty (:data:`PENALTY`), then a local polish with SLSQP,
+the margins as constraints, from its best point, as the method's article does (UkrSURT Proceedings (2019); Shang
+Hanji (1988), section 4.3).  The result is the best point evaluated that meets every limit in full: the points that
+met every margin of the search are designed in full (their own spring, a dynamics sweep), best first, until one meets
+every constraint (:func:`final_checks`); the start is one of them, so the optimum is never worse than a start that
+meets every limit.  Where no point does, the result says so (:attr:`Result.feasible`) with the limits that fail.
 """
 
 import copy
@@ -32,20 +41,21 @@ import numpy as np
 from pydantic import ValidationError
 from scipy import optimize
 
-from .. import flow, springs
+from .. import flow, geometry, springs
 from ..design import run as run_design
 from ..design.drive import spring_options
 from ..design.dynamics import SPEED_RANGE, build_train, dynamics_stage
-from ..design.valve import flow_stage, law_stage
+from ..design.valve import MAX_LIFT_TO_THROAT
 from ..dynamics.models import one_mass_train
 from ..dynamics.sweep import sweep
 from ..laws import PolydyneLaw
 from ..laws.kurz import RAMP_VELOCITY_RANGE_MM_PER_DEG
+from ..specification import SpecError
 from ..specification.cams import train_mass
 from ..specification.models import Dynamics, Valve
 from ..specification.si import si
-from ..units import DEG, cam_per_crank, to_display
-from .constraints import Limits, constraints, spring_reserve
+from ..units import DEG, MM, cam_per_crank, to_display
+from .constraints import Limits, constraints, convex_radius, hertz_stress, spring_reserve, worst_cam_force
 
 OBJECTIVES = {
     "fullness": ("fullness", "", "fullness of the valve lift diagram (Shang Hanji (1988), eq. 2.3)"),
@@ -58,8 +68,37 @@ def shown_objective(objective, value):
     """An objective's value (SI) in its display unit (:data:`OBJECTIVES`)."""
     return to_display(value, OBJECTIVES[objective][1])
 
+
 GRID = 1201
-"""Camshaft angles of the opening flank on which one evaluation samples the profile."""
+"""Camshaft angles of the opening flank (of the whole event for a cam with a closing flank of its own) on which one
+evaluation samples the law."""
+
+REFINE = 65
+"""Camshaft angles of each window, between the neighbours of a sampled extreme, on which one evaluation samples the
+law again: the extremes are those of the contour to 1/32 of the grid's step."""
+
+POLISH_RESERVE = 1e-5
+"""Relative margin the local polish keeps from every limit (the full design's extremes, refined to round-off, may lie
+that far beyond the search's)."""
+
+RELAXED = 1e-6
+"""Relative room a limit relaxed to the start's value leaves beyond it (the search's extremes and the full design's
+agree to about this, so that the start itself meets the limit in both)."""
+
+FINAL_CANDIDATES = 4
+"""Points that met every margin of the search designed in full at most, best first, before the start is taken."""
+
+NEAR = 0.01
+"""Summed relative violations of the other limits up to which a point's follower separation is simulated (beyond,
+its penalty of :data:`PENALTY` times them already ranks it below any candidate of the search)."""
+
+SPRING_SLACK = 0.1
+"""How far below 0 the spring design's margin of the search (a conservative closed form) may lie for a point to be
+designed in full: the final spring search decides."""
+
+CAM_WIDTH_TO_BASE_RADIUS = 0.5
+"""The cam width of the Hertz stress where ``parts.cam_width_mm`` is not given, as a fraction of the base radius r0:
+a narrow cam, so that the stress is not understated (a configurable default; no primary source states it)."""
 
 SPEEDS = (1.0,)
 """Engine speeds, fractions of the rated speed, at which one evaluation simulates the train (with the limit's own
@@ -88,10 +127,6 @@ START_SPRING = "with the starting design's spring"
 POLISH_ITERATIONS = 60
 """Iterations of the SLSQP polish at most (from a feasible point it converges in about 20)."""
 
-CACHE = 4096
-"""Points whose evaluation :class:`Problem` keeps (the optimiser asks for the objective and the margins of a point
-separately)."""
-
 BINDING = 1e-3
 """A constraint whose relative margin at the optimum is below this binds."""
 
@@ -107,6 +142,8 @@ class Variable:
     path: str
     low: float
     high: float
+    written: tuple = field(default=None, compare=False)
+    """LOW and HIGH as the user wrote them (for messages)."""
 
     def put(self, data, value):
         """Set the variable in a valve section's data (dict, changed in place)."""
@@ -189,7 +226,7 @@ def parse_variables(items):
     Raises
     ------
     ValueError
-        A text that is not of that form, or LOW >= HIGH; the message names the text.
+        A text that is not of that form, LOW >= HIGH, or a key named twice; the message names the text.
     """
     out = []
     for item in items:
@@ -202,8 +239,59 @@ def parse_variables(items):
         if not key.strip() or low is None or not (math.isfinite(low) and math.isfinite(high) and low < high):
             raise ValueError(f"--vary {item[:80]!r}: allowed KEY=LOW,HIGH with finite LOW < HIGH, KEY a path under "
                              "[valves.NAME] such as cam.phi1_deg")
-        out.append(Variable(key.strip(), low, high))
-    return out
+        out.append(Variable(key.strip(), low, high, tuple(p.strip() for p in parts)))
+    return unique_variables(out)
+
+
+def unique_variables(variables):
+    """``variables`` (a list of :class:`Variable`) with each key once.
+
+    Raises
+    ------
+    ValueError
+        A key named twice.
+    """
+    seen = set()
+    for v in variables:
+        if v.path in seen:
+            raise ValueError(f"--vary {v.path}: the key is named twice; allowed once, with one LOW,HIGH")
+        seen.add(v.path)
+    return list(variables)
+
+
+def check_bounds(section, name, variables):
+    """Refuse bounds of a variable outside the allowed range of its key.
+
+    Parameters
+    ----------
+    section : valvetrain.specification.models.Valve
+        The valve's section.
+    name : str
+        The valve's name.
+    variables : list of Variable
+
+    Raises
+    ------
+    ValueError
+        A bound that the key's own validation refuses, naming the bound as written and the key's allowed range.
+    """
+    data = section.model_dump(mode="json", exclude_unset=True, exclude_none=True)
+    for v in variables:
+        for i, (which, value) in enumerate((("LOW", v.low), ("HIGH", v.high))):
+            trial = copy.deepcopy(data)
+            try:
+                v.put(trial, value)
+                Valve.model_validate(trial)
+            except (IndexError, TypeError):
+                break  # not a key of the section: Problem names it
+            except ValidationError as exc:
+                for e in exc.errors():
+                    at = ".".join(str(part + 1) if isinstance(part, int) else str(part) for part in e["loc"])
+                    if at == v.path:
+                        written = v.written or (f"{v.low:g}", f"{v.high:g}")
+                        reason = e["msg"].removeprefix("Value error, ")
+                        raise ValueError(f"--vary {v.path}={','.join(written)}: {which} = {written[i]} is outside "
+                                         f"the range of valves.{name}.{v.path}: {reason}") from None
 
 
 def _relaxed(c, quantity, notes):
@@ -213,12 +301,13 @@ def _relaxed(c, quantity, notes):
     low, high = c.low, c.high
     if not c.passed:
         notes.append({"quantity": quantity, "value": c.shown_value, "unit": c.unit, "range": c.range})
-        low = None if low is None else min(low, c.value)
-        high = None if high is None else max(high, c.value)
+        low = None if low is None else min(low, c.value - RELAXED * abs(c.value))
+        high = None if high is None else max(high, c.value + RELAXED * abs(c.value))
     return low, high
 
 
-def design_limits(design, wheel_radius=None, no_jump_factor=None, ramp_varied=True):
+def design_limits(design, wheel_radius=None, no_jump_factor=None, ramp_varied=True, cam_width=None,
+                  seating_velocity=None, top_speed=1.0):
     """The limits of a design's own checks and of the synthesis, and notes on how they were set.
 
     Parameters
@@ -231,15 +320,23 @@ def design_limits(design, wheel_radius=None, no_jump_factor=None, ramp_varied=Tr
         No follower separation up to this multiple of the rated speed.
     ramp_varied : bool
         Whether the ramp end velocity is a variable (else it has no limit: it cannot change).
+    cam_width : float, optional
+        Cam width of the Hertz stress [m]; default :data:`CAM_WIDTH_TO_BASE_RADIUS` x the base radius.
+    seating_velocity : float, optional
+        Largest valve seating (and opening) velocity [m/s]; default none.
+    top_speed : float
+        Highest engine speed over the rated speed up to which the contact stress is checked.
 
     Returns
     -------
     (Limits, list of dict)
         The spring reserve of ``drive.spring_reserve``; the tappet acceleration bands of the design's checks
         (Valve-train practical works (n.d.), work 2), each widened to the starting design's value where that lies
-        outside; rho_min >= 2 mm (Shang Hanji (1988), section 2.1); pressure angle <= 30 deg (UkrSURT Proceedings
-        (2019)); the ramp end velocity band of :class:`~.constraints.Limits`, widened the same way (it bounds the
-        kinematic seating velocity, i_k omega times it, which is not limited apart).
+        outside; the smallest convex contour radius >= 2 mm (Shang Hanji (1988), section 2.1); the Hertz stress
+        <= 1200 MPa (Valve-train practical works (n.d.), eqs. 7.4-7.5), widened to the start's where it lies above;
+        pressure angle <= 30 deg (UkrSURT Proceedings (2019)); the ramp end velocity band of
+        :class:`~.constraints.Limits`, widened the same way (it bounds the kinematic seating velocity,
+        i_k omega times it).
     """
     notes = []
     by_name = {c.quantity.split(": ", 1)[-1]: c for c in design.checks}
@@ -249,8 +346,12 @@ def design_limits(design, wheel_radius=None, no_jump_factor=None, ramp_varied=Tr
         wheel_radius = design.grinding.wheel_radius
     limits = Limits(max_acceleration=high, min_acceleration=low, grinding_wheel_radius=wheel_radius,
                     min_spring_reserve=design.drive.spring.spring_reserve, no_jump_factor=no_jump_factor,
-                    cam_width=None, seating_velocity=None)
-    c = {c.quantity: c for c in constraints(design, replace(limits, no_jump_factor=None))}.get("ramp end velocity")
+                    cam_width=cam_width or CAM_WIDTH_TO_BASE_RADIUS * design.cam.base_radius, top_speed=top_speed,
+                    seating_velocity=None if seating_velocity is None else (0.0, seating_velocity))
+    start = {c.quantity: c for c in constraints(design, replace(limits, no_jump_factor=None))}
+    limits = replace(limits, max_contact_stress=_relaxed(start["Hertz contact stress"], "Hertz contact stress",
+                                                         notes)[1])
+    c = start.get("ramp end velocity")
     if not ramp_varied:
         limits = replace(limits, ramp_velocity=None)
     elif c is not None:
@@ -269,6 +370,12 @@ class Problem:
     variables : list of Variable
     limits : Limits
     objective : {"fullness", "time_area"}
+
+    Notes
+    -----
+    One evaluation samples the law twice (:data:`GRID` angles, then :data:`REFINE` around each extreme) and
+    integrates the objective by the flow module's quadrature; ``evaluations``, ``seconds`` and ``law_samples`` (the
+    angles at which the law was evaluated, the quadrature's nodes not counted) measure its cost.
     """
 
     def __init__(self, spec, design, variables, limits, objective="fullness"):
@@ -281,6 +388,7 @@ class Problem:
         self.reserve0 = self.section.drive.spring_reserve
         self.follower, self.roller = design.cam.follower, design.cam.roller_radius
         self.heel, self.i_k, self.omega = design.cam.heel_radius, design.cam.rocker_ratio, design.cam.cam_speed
+        self.whole_event = getattr(self.section.cam, "closing", None) is not None
         self.mass = design.drive.masses.at_valve
         self.spring = design.drive.lines["chosen"]
         self.valve = si(self.section, self.spec)
@@ -288,8 +396,10 @@ class Problem:
                               max(design.drive.spring.gas_force, design.drive.spring.seat_load))
         self.law0, self.frontier = design.law, None
         self._train_parameters(design)
-        self.evaluations, self.seconds = 0, 0.0
-        self.history = []
+        self.names = self.margin_names()
+        self.jump = self.names.index("no jump") if "no jump" in self.names else None
+        self.evaluations, self.seconds, self.law_samples, self.simulations, self.best = 0, 0.0, 0, 0, -math.inf
+        self.history, self.points = [], []
         self._cache = {}
 
     def _value(self, v):
@@ -328,9 +438,8 @@ class Problem:
         names = ["spring reserve"]
         if self.follower == "roller":
             names += ["pressure angle"] + (["concave radius"] if L.grinding_wheel_radius else [])
-        elif L.min_rho is not None:
-            names.append("rho_min")
-        names += [n for n, lim in (("max acceleration", L.max_acceleration), ("min acceleration", L.min_acceleration),
+        names += [n for n, lim in (("rho_min", L.min_rho), ("contact stress", L.cam_width),
+                                   ("max acceleration", L.max_acceleration), ("min acceleration", L.min_acceleration),
                                    ("seating velocity", L.seating_velocity)) if lim is not None]
         if self.speeds is not None:
             names.append("no jump")
@@ -347,8 +456,8 @@ class Problem:
             cam.pop("phi3_deg", None)
         return data
 
-    def stages(self, x):
-        """(law stage, flow stage, spring scale) of the variables, or None where they admit no design."""
+    def law(self, x):
+        """(law, SI valve, spring scale K_z / K_z,0) of the variables, or None where they admit no law."""
         data = self.point(x)
         try:
             section = Valve.model_validate(data)
@@ -358,68 +467,147 @@ class Problem:
             return None
         try:
             valve = si(section, self.spec)
-            cam = law_stage(valve, self.engine)
-            flow = flow_stage(cam, valve, self.engine)
+            law = valve.cam.section.build(valve, self.engine)
         except ValueError:
             return None
-        return cam, flow, section.drive.spring_reserve / self.reserve0
+        if not law.end - law.start < 2.0 * np.pi or law.lift_max * valve.rocker_ratio > (
+                MAX_LIFT_TO_THROAT * valve.throat_diameter):
+            return None
+        return law, valve, section.drive.spring_reserve / self.reserve0
 
-    def evaluate(self, x):
-        """(objective, margins) of the variables; a point that admits no design has objective 0 and margins -1."""
-        key = tuple(float(v) for v in x)
-        if key in self._cache:
-            return self._cache[key]
-        t0 = time.perf_counter()
-        self.evaluations += 1
-        found = self.stages(x)
-        if found is None:
-            out = (0.0, -np.ones(len(self.margin_names())))
-        else:
-            cam, flow, scale = found
-            out = (float(getattr(flow, OBJECTIVES[self.objective][0])), self._margins(cam, scale))
-        self.seconds += time.perf_counter() - t0
-        if len(self._cache) >= CACHE:
-            self._cache.pop(next(iter(self._cache)))
-        self._cache[key] = out
-        self.history.append((out[0], out[1]))
-        return out
+    def _angles(self, law):
+        """The grid of one evaluation and the law's junctions on it [rad from the nose]."""
+        end = law.end if self.whole_event else 0.0
+        bp = law.breakpoints
+        return np.unique(np.concatenate([np.linspace(law.start, end, GRID), bp[(bp > law.start) & (bp < end)],
+                                         [law.valve_opens], [law.valve_closes] if self.whole_event else []]))
 
-    def _margins(self, cam, scale):
-        L, law = self.limits, cam.law
-        theta = np.unique(np.concatenate([np.linspace(law.start, 0.0, GRID), law.breakpoints[law.breakpoints <= 0]]))
+    def _quantities(self, law, theta, scale):
+        """Each sampled quantity as one to minimise at the angles ``theta``, and (h, dh, d2h) there."""
+        L = self.limits
         h, dh, d2h, _ = law.derivatives(theta)
+        self.law_samples += theta.size
         y = self.i_k * np.clip(h - law.ramp_height, 0.0, None)
+        spring = scale * self.spring.force(y)
         inertia = self.mass * self.i_k * self.omega**2 * np.clip(-d2h, 0.0, None)
         loaded = (inertia > 0.0) & (y > 0.0)
-        reserve = np.min(scale * self.spring.force(y[loaded]) / inertia[loaded]) if np.any(loaded) else 10.0
+        nose = law.lift_max + law.ramp_height
+        q = {"spring reserve": np.where(loaded, spring / np.where(loaded, inertia, 1.0), np.inf),
+             "lift": h / nose, "overshoot": -h / nose,
+             "max acceleration": -d2h, "min acceleration": d2h}
+        if self.follower == "roller":
+            rho = geometry.roller_follower_curvature(self.heel, self.roller, h, dh, d2h)
+            q["pressure angle"] = -np.abs(geometry.roller_pressure_angle(self.heel, self.roller, h, dh))
+            q["concave radius"] = np.where(rho < 0.0, 1.0 / np.where(rho < 0.0, rho, -1.0), 0.0)
+        else:
+            rho = geometry.flat_follower_curvature(self.heel, h, d2h)
+        q["rho_min"] = convex_radius(rho, self.follower, self.roller)
+        if L.cam_width is not None:
+            force = worst_cam_force(spring, self.mass, self.i_k, (self.omega * L.top_speed)**2 * d2h)
+            q["contact stress"] = -hertz_stress(force, rho, self.follower, self.roller, L.cam_width,
+                                                L.contact_modulus)
+        return q, h, dh, d2h
+
+    def _extremes(self, law, scale):
+        """The least value of each quantity of :meth:`_quantities` on the grid refined around its least sample
+        (:data:`REFINE` angles between the neighbours), the grid's (theta, h, d2h) and |dh/dtheta| [m/rad] at the
+        valve's opening and closing."""
+        theta = self._angles(law)
+        q, h, dh, d2h = self._quantities(law, theta, scale)
+        last = theta.size - 1
+        windows = [np.linspace(theta[max(i - 1, 0)], theta[min(i + 1, last)], REFINE)
+                   for i in sorted({int(np.argmin(v)) for v in q.values()})]
+        fine = self._quantities(law, np.concatenate(windows), scale)[0]
+        seat = np.abs(dh[np.searchsorted(theta, [law.valve_opens, law.valve_closes if self.whole_event else
+                                                 law.valve_opens])])
+        return {k: min(float(np.min(v)), float(np.min(fine[k]))) for k, v in q.items()}, theta, h, d2h, seat
+
+    def _objective(self, law, valve):
+        """The objective of :data:`OBJECTIVES` as the flow stage computes it."""
+        lift = valve.rocker_ratio * law.lift_max
+        bp = law.breakpoints
+        if self.objective == "fullness":
+            return flow.fullness(lambda t: law.valve_lift(t, valve.rocker_ratio), law.valve_opens, law.valve_closes,
+                                 lift, bp)
+        return flow.time_area(lambda t: flow.curtain_area(law.valve_lift(t, valve.rocker_ratio),
+                                                          valve.throat_diameter, valve.seat_angle),
+                              law.valve_opens, law.valve_closes, self.omega, bp)
+
+    def evaluate(self, x, dynamics=None):
+        """(objective, margins) of the variables; a point that admits no design has objective 0 and margins -1.
+
+        The follower separation is simulated (``dynamics`` None) only where it can matter: until a candidate is found
+        (:meth:`acceptable`) at every point, to rank the infeasible ones; then where the objective beats the best
+        candidate's and the other margins are violated by at most :data:`NEAR` in all (a point farther out is ranked
+        below every candidate by its penalty alone); with ``dynamics`` True always, with False never.  Where it is
+        not simulated its margin is NaN.
+        """
+        key = tuple(float(v) for v in x)
+        entry = self._cache.get(key)
+        t0 = time.perf_counter()
+        if entry is None:
+            self.evaluations += 1
+            found = self.law(x)
+            entry = [0.0, -np.ones(len(self.names)), None]
+            if found is not None:
+                law, valve, scale = found
+                margins = self._margins(law, valve, scale)
+                if margins is not None:
+                    entry = [self._objective(law, valve), margins, (law, scale)]
+            self._cache[key] = entry
+            self.history.append((entry[0], entry[1]))
+            self.points.append(np.array(key))
+        objective, margins, kept = entry
+        if self.jump is not None and kept is not None and np.isnan(margins[self.jump]) and (
+                dynamics or (dynamics is None and objective > self.best and (
+                    self.best == -math.inf or self.violation(margins) <= NEAR))):
+            margins[self.jump] = self._separation(*kept)
+            self.simulations += 1
+        if self.acceptable(margins):
+            self.best = max(self.best, objective)
+        self.seconds += time.perf_counter() - t0
+        return objective, margins
+
+    def penalised(self, x, scale):
+        """The objective over ``scale``, negated, plus :data:`PENALTY` times the summed violations."""
+        objective, margins = self.evaluate(x)
+        return -objective / scale + PENALTY * float(np.nansum(np.clip(-margins, 0.0, None)))
+
+    def _margins(self, law, valve, scale):
+        """The margins of the limits, or None where the lift leaves 0...the nose lift (no cam)."""
+        L = self.limits
+        least, theta, h, d2h, seat = self._extremes(law, scale)
+        if least["lift"] < -1e-6 or least["overshoot"] < -1.0 - 1e-6:
+            return None
+        reserve = least["spring reserve"] if np.isfinite(least["spring reserve"]) else 10.0
         target = L.min_spring_reserve * scale
         out = [(reserve - target) / target]
-        _, rho, beta, _ = law.profile(theta, self.heel, self.follower, self.roller)
         if self.follower == "roller":
-            out.append((L.max_pressure_angle - np.max(np.abs(beta))) / L.max_pressure_angle)
+            out.append((L.max_pressure_angle + least["pressure angle"]) / L.max_pressure_angle)
             if L.grinding_wheel_radius:
-                out.append(1.0 - L.grinding_wheel_radius * max(-np.min(1.0 / rho), 0.0))
-        elif L.min_rho is not None:
-            out.append((np.min(rho) - L.min_rho) / L.min_rho)
+                out.append(1.0 - L.grinding_wheel_radius * max(-least["concave radius"], 0.0))
+        if L.min_rho is not None:
+            out.append((min(least["rho_min"], self.heel) - L.min_rho) / L.min_rho)
+        if L.cam_width is not None:
+            out.append((L.max_contact_stress + least["contact stress"]) / L.max_contact_stress)
         if L.max_acceleration is not None:
-            out.append((L.max_acceleration - cam.max_acceleration) / abs(L.max_acceleration))
+            out.append((L.max_acceleration + self.omega**2 * least["max acceleration"]) / abs(L.max_acceleration))
         if L.min_acceleration is not None:
-            out.append((cam.min_acceleration - L.min_acceleration) / abs(L.min_acceleration))
+            out.append((self.omega**2 * least["min acceleration"] - L.min_acceleration) / abs(L.min_acceleration))
         if L.seating_velocity is not None:
-            seat = max(cam.opening_velocity, cam.seating_velocity)
-            out.append((L.seating_velocity[1] - seat) / L.seating_velocity[1])
+            velocity = valve.rocker_ratio * self.omega * float(np.max(seat))
+            out.append((L.seating_velocity[1] - velocity) / L.seating_velocity[1])
         if self.speeds is not None:
-            out.append(self._separation(law, scale))
-        out.append(self._spring_design(law, scale))
+            out.append(math.nan)
+        out.append(self.spring_design(law, theta, h, d2h, scale))
         return np.array(out, dtype=float)
 
-    def _required_line(self, law, scale):
-        """The required spring force (:class:`valvetrain.springs.Requirement`) of a cam at K_z = scale x K_z,0, on
-        the starting design's reduced mass."""
-        theta = np.linspace(law.valve_opens, law.valve_closes, GRID)
-        _, _, d2h, _ = law.derivatives(theta)
-        y = self.i_k * np.clip(law.lift(theta) - law.ramp_height, 0.0, None)
-        force = springs.required_spring_force(self.mass, self.i_k * self.omega**2 * d2h, self.reserve0 * scale)
+    def _requirement(self, law, theta, h, d2h, scale):
+        """The required spring force (:class:`valvetrain.springs.Requirement`) of a cam at K_z = scale x K_z,0 on the
+        starting design's reduced mass, from the samples of the open event."""
+        open_ = (theta >= law.valve_opens) & (theta <= law.valve_closes)
+        y = self.i_k * np.clip(h[open_] - law.ramp_height, 0.0, None)
+        force = springs.required_spring_force(self.mass, self.i_k * self.omega**2 * d2h[open_], self.reserve0 * scale)
         return springs.Requirement(y, force, self.spring_inputs[2])
 
     def _spring_passes(self, requirement):
@@ -441,10 +629,13 @@ class Problem:
             return search.passes
         return passes
 
-    def _spring_frontier(self, law):
+    def _spring_frontier(self):
         """The largest factor on the starting design's required spring force for which a spring passes every spring
         check (bisection to :data:`FRONTIER_TOLERANCE`, at most :data:`FRONTIER_RANGE`), and that required line."""
-        requirement = self._required_line(law, 1.0)
+        law = self.law0
+        theta = self._angles(law)
+        h, _, d2h, _ = law.derivatives(theta)
+        requirement = self._requirement(law, theta, h, d2h, 1.0)
         line = requirement.line(self.spring_inputs[1].ratio_range)
         passes = self._spring_passes(requirement)
         low, high = FRONTIER_RANGE
@@ -457,15 +648,21 @@ class Problem:
             low, high = (mid, high) if passes(mid) else (low, mid)
         return low, line
 
-    def _spring_design(self, law, scale):
+    def spring_design(self, law, theta, h, d2h, scale):
         """Margin of the spring design: the largest of the candidate's required preload and largest force over the
         starting design's, against the factor up to which a spring passes (:meth:`_spring_frontier`, found once);
-        >= 0 when a spring of the specification's options is expected to pass.  The optimum's own spring design
-        is checked exactly (:func:`final_checks`)."""
+        >= 0 when a spring of the specification's options is expected to pass.
+
+        Notes
+        -----
+        The required force line of a cam is a closed form of its samples (:class:`valvetrain.springs.Requirement`);
+        the discrete spring search runs once, for the start's frontier, and for the final design
+        (:func:`final_checks`), which checks the optimum's own spring exactly.
+        """
         if self.frontier is None:
-            self.frontier = self._spring_frontier(self.law0)
+            self.frontier = self._spring_frontier()
         factor, line0 = self.frontier
-        line = self._required_line(law, scale).line(self.spring_inputs[1].ratio_range)
+        line = self._requirement(law, theta, h, d2h, scale).line(self.spring_inputs[1].ratio_range)
         ratio = max(line.preload / line0.preload, line.max_force / line0.max_force)
         return (factor - ratio) / max(factor, FRONTIER_RANGE[0])
 
@@ -486,6 +683,25 @@ class Problem:
                 worst = min(worst, force / (p.preload * scale))
         return worst
 
+    def _slack(self, margins):
+        """The margins with the spring design's raised by :data:`SPRING_SLACK`."""
+        return margins + np.where(np.arange(margins.size) == margins.size - 1, SPRING_SLACK, 0.0)
+
+    def acceptable(self, margins):
+        """Whether a point is a candidate for the full design: every margin holds (a NaN one does not), the spring
+        design's within :data:`SPRING_SLACK`."""
+        return bool(np.all(self._slack(margins) >= 0.0))
+
+    def violation(self, margins):
+        """The summed violations of the margins but a NaN one, the spring design's beyond :data:`SPRING_SLACK`."""
+        return float(np.nansum(np.clip(-self._slack(margins), 0.0, None)))
+
+    def candidates(self):
+        """The points evaluated that are :meth:`acceptable`, best objective first: (objective, x, worst margin)."""
+        found = [(o, x, float(np.nanmin(m))) for (o, m), x in zip(self.history, self.points, strict=True)
+                 if self.acceptable(m)]
+        return sorted(found, key=lambda p: -p[0])
+
 
 @dataclass
 class Result:
@@ -493,7 +709,10 @@ class Result:
 
     ``start`` and ``optimum`` map each variable's path to its value; ``comparison`` holds rows
     ``(quantity, unit, start, optimum)`` of the two full designs; ``checks_start`` and ``checks`` the constraints
-    on them (:func:`final_checks`); ``history`` one ``(objective, margins)`` per evaluation, in order.
+    on them (:func:`final_checks`); ``history`` one ``(objective, margins)`` per evaluation, in order (a margin not
+    needed, NaN); ``law_samples`` the angles at which the search evaluated the law (the objective's quadrature nodes
+    not counted), ``simulations`` the dynamics runs of the search (two speeds each).  Where no point meets every
+    limit, ``optimum`` is the point nearest to them (or the start) and ``feasible`` is False.
     """
 
     valve: str
@@ -515,6 +734,8 @@ class Result:
     history: list = field(repr=False, default_factory=list)
     polydyne_fullness: float = None
     spec_text: str = field(repr=False, default="")
+    law_samples: int = 0
+    simulations: int = 0
 
     @property
     def feasible(self):
@@ -611,7 +832,7 @@ def _inside(x, bounds):
 
 
 def optimize_valve(spec, valve=None, variables=None, objective="fullness", wheel_radius=None, no_jump_factor=None,
-                   seed=1, maxiter=60, popsize=12, progress=None):
+                   seed=1, maxiter=60, popsize=12, progress=None, cam_width=None, seating_velocity=None):
     """Maximise the fullness or the time-area of one valve's cam under its limits.
 
     Parameters
@@ -632,76 +853,133 @@ def optimize_valve(spec, valve=None, variables=None, objective="fullness", wheel
         Of :func:`scipy.optimize.differential_evolution` (deterministic for a seed).
     progress : callable, optional
         ``progress(generation, best objective)`` after each generation.
+    cam_width : float, optional
+        Cam width of the Hertz stress [m]; default ``parts.cam_width_mm``, else :data:`CAM_WIDTH_TO_BASE_RADIUS` x
+        the base radius.
+    seating_velocity : float, optional
+        Largest valve seating velocity [m/s] (kinematic in the search; the dynamics sweep's too in the final check).
 
     Returns
     -------
     Result
-        With ``spec_text``, the specification with the optimum's keys (TOML).
+        With ``spec_text``, the specification with the optimum's keys (TOML).  The optimum is the best point
+        evaluated whose full design meets every limit, the start included; where none does, ``feasible`` is False
+        and ``checks`` name what fails at the point nearest to the limits.
 
     Raises
     ------
     ValueError
-        An unknown valve or objective, a law without variables, a variable that is not a key of the valve.
+        A specification without valves, an unknown valve or objective, a law without variables, a variable that is
+        not a key of the valve, a key named twice, bounds outside the key's allowed range.
     """
-    from ..specification.validate import parse_spec
-
     if objective not in OBJECTIVES:
         raise ValueError(f"optimize: objective = {objective!r}; allowed {', '.join(OBJECTIVES)}")
-    t0 = time.perf_counter()
-    start = run_design(spec)
+    if not spec.valves:
+        raise ValueError("optimize: the specification has no [valves.NAME] section: no cam to optimise; allowed a "
+                         "file with at least one valve")
     if valve is None:
-        valve = next(iter(start.valves))
-    if valve not in start.valves:
-        raise ValueError(f"optimize: --valve {valve!r}; allowed {', '.join(start.valves)}")
-    design = start.valves[valve]
-    if variables is None:
-        variables = default_variables(spec.valves[valve], spec.engine)
+        valve = next(iter(spec.valves))
+    if valve not in spec.valves:
+        raise ValueError(f"optimize: --valve {valve!r}; allowed {', '.join(spec.valves)}")
+    section = spec.valves[valve]
+    variables = unique_variables(default_variables(section, spec.engine) if variables is None else variables)
+    check_bounds(section, valve, variables)
+    t0 = time.perf_counter()
+    design = run_design(spec).valves[valve]
     ramp = any(v.path.startswith("cam.ramp_end_velocity") for v in variables)
-    limits, notes = design_limits(design, wheel_radius, no_jump_factor, ramp)
+    limits, notes = design_limits(design, wheel_radius, no_jump_factor, ramp,
+                                  cam_width or si(section, spec).parts.cam_width, seating_velocity,
+                                  spec.engine.over_speed_ratio)
     problem = Problem(spec, design, variables, limits, objective)
-    scale0 = problem.evaluate(problem.x0)[0] or 1.0
-
-    def negative(x):
-        return -problem.evaluate(x)[0] / scale0
-
-    def margins(x):
-        return problem.evaluate(x)[1]
-
+    start_value = problem.evaluate(problem.x0, dynamics=True)[0]
+    scale0 = start_value or 1.0
     generation = [0]
+
+    def population(xs):
+        return np.array([problem.penalised(x, scale0) for x in np.asarray(xs).T])
 
     def callback(xk, convergence=None):
         generation[0] += 1
         if progress is not None:
-            progress(generation[0], -negative(xk) * scale0)
+            progress(generation[0], problem.evaluate(xk)[0])
 
-    def penalised(x):
-        return negative(x) + PENALTY * float(np.sum(np.clip(-margins(x), 0.0, None)))
+    found = optimize.differential_evolution(population, problem.bounds, seed=seed, maxiter=maxiter, popsize=popsize,
+                                            tol=1e-7, polish=False, callback=callback, vectorized=True,
+                                            updating="deferred", x0=_inside(problem.x0, problem.bounds))
+    candidates = problem.candidates()
+    if candidates:
+        origin = candidates[0][1]
+        held = problem.evaluate(origin, dynamics=True)[1]
 
-    found = optimize.differential_evolution(penalised, problem.bounds, seed=seed, maxiter=maxiter, popsize=popsize,
-                                            tol=1e-7, polish=False, callback=callback,
-                                            x0=_inside(problem.x0, problem.bounds))
-    best = found.x
-    local = optimize.minimize(negative, best, method="SLSQP", bounds=problem.bounds,
-                              constraints=({"type": "ineq", "fun": margins},),
-                              options={"maxiter": POLISH_ITERATIONS, "ftol": 1e-10})
-    if local.success and np.all(margins(local.x) >= -1e-9) and negative(local.x) < negative(best):
-        best = local.x
-    values = {v.path: float(x) for v, x in zip(problem.variables, best, strict=True)}
-    text = optimum_spec_text(spec, valve, problem.point(best), values)
-    optimum_spec = parse_spec(text)
-    checked = run_design(optimum_spec).valves[valve]
-    scale = optimum_spec.valves[valve].drive.spring_reserve / problem.reserve0
+        def polish_margins(x):
+            """The margins less :data:`POLISH_RESERVE`, the separation's held at the polish's origin (the final
+            design's sweep checks it)."""
+            margins = problem.evaluate(x, dynamics=False)[1]
+            return np.where(np.isnan(margins), held, margins) - POLISH_RESERVE
+
+        local = optimize.minimize(lambda x: -problem.evaluate(x, dynamics=False)[0] / scale0, origin,
+                                  method="SLSQP", bounds=problem.bounds,
+                                  constraints=({"type": "ineq", "fun": polish_margins},),
+                                  options={"maxiter": POLISH_ITERATIONS, "ftol": 1e-10})
+        problem.evaluate(local.x)
     spring = None if any(v.path == "drive.spring_reserve" for v in problem.variables) else design.drive.lines["chosen"]
     checks_start = final_checks(design, spec, limits, 1.0, spring)
-    checks = final_checks(checked, optimum_spec, limits, scale, spring)
+    start = (problem.x0, spec, design, checks_start,
+             optimum_spec_text(spec, valve, problem.data, dict(zip((v.path for v in variables), problem.x0))))
+    chosen, nearest = _best_designed(problem, spec, valve, limits, spring,
+                                     start_value if _passed(checks_start) else None)
+    if chosen is None:
+        chosen = start if _passed(checks_start) else (
+            nearest or _designed(problem, spec, valve, limits, spring, found.x) or start)
+    x, optimum_spec, checked, checks, text = chosen
+    margins = problem.evaluate(x, dynamics=True)[1]
+    values = {v.path: float(value) for v, value in zip(problem.variables, x, strict=True)}
     reference = polydyne_fullness(checked.law) if checked.law.name == "power_polynomial" else None
-    names = problem.margin_names()
     return Result(
-        valve, objective, {v.path: float(x) for v, x in zip(problem.variables, problem.x0, strict=True)}, values,
-        problem.evaluate(problem.x0)[0], float(getattr(checked.flow, OBJECTIVES[objective][0])), problem.bounds,
-        names, dict(zip(names, map(float, margins(best)), strict=True)), problem.evaluations,
-        time.perf_counter() - t0, problem.seconds, notes, _comparison(design, checked), checks_start, checks,
-        list(problem.history), reference, text)
+        valve, objective, {v.path: float(value) for v, value in zip(problem.variables, problem.x0, strict=True)},
+        values, start_value, float(getattr(checked.flow, OBJECTIVES[objective][0])), problem.bounds, problem.names,
+        dict(zip(problem.names, map(float, margins), strict=True)), problem.evaluations, time.perf_counter() - t0,
+        problem.seconds, notes, _comparison(design, checked), checks_start, checks, list(problem.history), reference,
+        text, problem.law_samples, problem.simulations)
+
+
+def _passed(checks):
+    return all(c.passed for c in checks)
+
+
+def _designed(problem, spec, valve, limits, spring, x):
+    """(x, specification, full design, final checks, specification text) of a point, or None where the point admits
+    no full design (no spring fits, a law the design refuses)."""
+    from ..specification.validate import parse_spec
+
+    values = {v.path: float(value) for v, value in zip(problem.variables, x, strict=True)}
+    text = optimum_spec_text(spec, valve, problem.point(x), values)
+    try:
+        optimum_spec = parse_spec(text)
+        checked = run_design(optimum_spec).valves[valve]
+    except (SpecError, ValueError):
+        return None
+    scale = optimum_spec.valves[valve].drive.spring_reserve / problem.reserve0
+    return x, optimum_spec, checked, final_checks(checked, optimum_spec, limits, scale, spring), text
+
+
+def _best_designed(problem, spec, valve, limits, spring, floor):
+    """The best of the search's candidates (:meth:`Problem.candidates`) whose full design meets every limit, each better
+    than ``floor`` (the start's objective where the start meets every limit, else None), trying at most
+    :data:`FINAL_CANDIDATES`; after one fails, only a point whose worst margin of the search is larger is tried:
+    (found or None, the first point tried that admits a full design or None)."""
+    tried, nearest, worst = 0, None, -math.inf
+    for value, x, least in problem.candidates():
+        if tried == FINAL_CANDIDATES or (floor is not None and value <= floor):
+            break
+        if least <= worst:
+            continue
+        tried += 1
+        found = _designed(problem, spec, valve, limits, spring, x)
+        if found is not None and _passed(found[3]):
+            return found, found
+        nearest, worst = nearest or found, least
+    return None, nearest
 
 
 def optimum_spec_text(spec, valve, section, values):
