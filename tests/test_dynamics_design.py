@@ -247,3 +247,54 @@ def test_rated_speed_contact_stress_lubrication_and_torque():
     rec = json.loads(results_json(run(spec(FEW))))["valves"]["intake"]["dynamics"]["at_rated_speed"]
     assert rec["max_contact_stress_MPa"] == pytest.approx(sigma.max() / 1e6, rel=1e-9)
     assert {"lubrication_gamma_at_max_stress", "lubrication_poor_film_cam_deg", "max_drive_torque_N_m"} <= set(rec)
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("spring_rate_N_per_mm = 0.0\nspring_preload_N = 0.0",
+     "valves.intake.dynamics: spring_rate_N_per_mm = 0 and spring_preload_N = 0: no valve spring"),
+    ("spring_mass_kg = 0.02", "valves.intake.dynamics: spring_mass_kg: the multi-mass train's coil mass"),
+])
+def test_spring_messages(text, expected):
+    """A train without a spring is refused (the valve would float at every speed); the coil mass is the multi-mass
+    train's."""
+    assert any(p.startswith(expected) for p in problems(text)), problems(text)
+
+
+def test_multi_takes_a_given_spring_and_reports_its_modes():
+    """The multi-mass train takes spring_rate_N_per_mm, spring_preload_N and spring_mass_kg: one spring of N coil
+    masses m_s / (N + 1) inside and half of one on the valve (the lumped model of MultiMassTrain), the drive masses
+    from [drive.masses]; results.json has one mode per node, ascending, each shape's largest entry 1."""
+    d = run(spec("model = \"multi\"\ncoils_per_spring = 4\nspring_rate_N_per_mm = 40.0\nspring_preload_N = 250.0\n"
+                 "spring_mass_kg = 0.05\n" + FEW)).valves["intake"].dynamics
+    nodes = d.parameters.node_masses
+    assert [nodes[f"outer coil {i}"] for i in range(1, 5)] == pytest.approx([0.01] * 4)
+    assert (d.parameters.spring_rate * MM, d.parameters.preload) == pytest.approx((40.0, 250.0))
+    record = json.loads(results_json(run(spec("model = \"multi\"\ncoils_per_spring = 4\nspring_mass_kg = 0.05\n"
+                                              + FEW))))["valves"]["intake"]["dynamics"]
+    freqs = record["natural_frequencies_Hz"]
+    assert len(freqs) == len(record["modes"]) == 4 + 4 and freqs == sorted(freqs)
+    assert all(max(abs(x) for x in m["shape"].values()) == pytest.approx(1.0) for m in record["modes"])
+
+
+def test_one_mass_natural_frequency_and_jump_failure():
+    """The one-mass train's only mode with the valve off its seat is sqrt((c + K) / M) / 2 pi (closed form); a train
+    whose valve floats below [engine] over_speed_ratio x the rated speed fails (a failure, not a warning): a 5 N/mm,
+    30 N spring on 0.2 kg leaves the cam at a fraction of the rated speed."""
+    d = run(spec(FEW + "mass_kg = 0.2\nspring_rate_N_per_mm = 5.0\nspring_preload_N = 30.0\n")).valves["intake"]
+    p = d.dynamics.parameters
+    assert d.dynamics.natural_frequencies[0] == pytest.approx(np.sqrt((p.drive_stiffness + p.spring_rate) / p.mass)
+                                                              / (2 * np.pi), rel=1e-12)
+    jump = [c for c in d.checks if c.quantity.endswith("follower separation (jump) speed / rated speed")]
+    assert len(jump) == 1 and jump[0].severity == "failure" and not jump[0].passed and jump[0].low == 1.1
+
+
+def test_sweep_estimated_above_the_limits_is_refused(monkeypatch):
+    """2000 speeds x 20 revolutions at 0.01 cam deg (issue 21, traceback 4) is refused before it starts, naming the
+    keys and the estimate; allow_large_sweep lets a sweep above the limit run (shown with the limit lowered)."""
+    with pytest.raises(SpecError, match=r"dynamics: speeds = 2000 x revolutions = 20 at step_cam_deg = 0.01 is about "
+                                        r".* allow_large_sweep = true"):
+        run(spec("speeds = 2000\nrevolutions = 20\nstep_cam_deg = 0.01\n"))
+    monkeypatch.setattr("valvetrain.design.dynamics.MAX_SWEEP_WORK", 1e4)
+    with pytest.raises(SpecError, match="allow_large_sweep"):
+        run(spec(FEW))
+    assert run(spec(FEW + "allow_large_sweep = true\n")).valves["intake"].dynamics.speeds == 3

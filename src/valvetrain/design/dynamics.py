@@ -17,14 +17,14 @@ from typing import Optional
 import numpy as np
 
 from ..checks import check
-from ..dynamics.models import (CoilSpring, camshaft_stiffness, direct_train, one_mass_train, pushrod_stiffness,
-                               pushrod_train, rocker_train, series)
+from ..dynamics.models import (CoilSpring, camshaft_stiffness, direct_train, natural_modes, one_mass_train,
+                               pushrod_stiffness, pushrod_train, rocker_train, series)
 from ..dynamics.perturbation import perturbation_parameter
 from ..dynamics.resonance import resonance
-from ..dynamics.sweep import sweep
+from ..dynamics.sweep import sweep, sweep_size
 from ..specification import SpecError
 from ..specification.cams import layout
-from ..units import DEG, MM, cam_per_crank, rpm_to_rad_s
+from ..units import DEG, MM, cam_per_crank, rpm_to_rad_s, to_display
 from .results import quantity, record
 
 SOURCES = ("Shang Hanji (1988), ch. 3 (one-mass and multi-mass trains, jump, seating, bounce); Valve-train dynamics "
@@ -41,6 +41,13 @@ Shang Hanji (1988, ch. 3); published pushrod trains have 3000-20000 N/mm at the 
 
 SPEED_RANGE = (0.1, 1.25)
 """Default speed range as fractions of the rated speed: idle to over-speed."""
+
+MAX_SWEEP_WORK = 2e9
+"""Most integrator steps x network elements of a sweep without ``allow_large_sweep`` (about 30 s on one core of
+this package's reference machine at 6.5e7 a second; the revolutions counted at their cap)."""
+
+MAX_SWEEP_BYTES = 1e9
+"""Most bytes of the recorded revolutions of a sweep without ``allow_large_sweep`` (1 GB)."""
 
 SEATING_VELOCITY_MAX = 0.5
 """Working limit of the seating velocity [m/s] (0.3-0.5 m/s in the valve-train literature)."""
@@ -62,7 +69,8 @@ class DynamicsParameters:
     lash: float = quantity("lash_mm", "mm", "valve clearance at the valve, k h0")
     seat_stiffness: float = quantity("seat_stiffness_N_per_mm", "N/mm", "c_s, valve seat contact")
     seat_damping_ratio: float = quantity("seat_damping_ratio", label="zeta_s of the seat, C_s = 2 zeta_s sqrt(c_s M)")
-    revolutions: int = quantity("revolutions", label="camshaft revolutions per speed, the last one recorded")
+    revolutions: int = quantity("revolutions", label="most camshaft revolutions per speed (a speed stops once its "
+                                "motion repeats), the last one recorded")
     step: float = quantity("step_cam_deg", "cam deg", "recording and base integration step")
     coils_per_spring: int = quantity("coils_per_spring", label="coil masses per spring (multi)")
     links: tuple[float, ...] = quantity("link_stiffnesses_N_per_mm", "N/mm", "drive links from the cam to the valve, "
@@ -81,7 +89,8 @@ class SpeedRecord:
     speed: float = quantity("speed_rpm", "rpm", "engine speed")
     epsilon: float = quantity("epsilon", label="perturbation parameter M omega_cam^2 / (c + K)")
     min_contact_force: float = quantity("min_contact_force_N", "N", "smallest cam contact force while the cam lifts "
-                                        "the open valve, before it seats (at the cam; 0: separation)")
+                                        "the open valve, before it seats (at the cam; 0: separation; null: the valve "
+                                        "never leaves its seat)")
     max_contact_force: float = quantity("max_contact_force_N", "N", "largest cam contact force (at the cam)")
     seating_velocity: float = quantity("seating_velocity_m_s", "m/s", "valve velocity at the first seating "
                                        "(negative: closing; null: no seating)")
@@ -94,6 +103,8 @@ class SpeedRecord:
                                           "the valve motion", omit_none=True)
     clash_margin: Optional[float] = quantity("coil_clash_margin_mm", "mm", "multi: smallest gap between coils "
                                              "(negative: clash)", omit_none=True)
+    revolutions: int = quantity("revolutions", label="camshaft revolutions integrated until the motion repeated "
+                                "(the cap where it did not)", default=1)
     max_contact_stress: Optional[float] = quantity("max_contact_stress_MPa", "MPa", "rated speed: largest Hertz "
                                                    "stress of the cam contact under the simulated force (needs "
                                                    "parts.cam_width_mm)", default=None, omit_none=True)
@@ -141,6 +152,16 @@ class PerSpeed:
     bounce_count: tuple[int, ...] = quantity("bounce_count", label="bounces")
     jump: tuple[bool, ...] = quantity("jump", label="follower separation")
     max_lift_error: tuple[float, ...] = quantity("max_lift_error_mm", "mm", "largest |valve lift - rigid lift|")
+    revolutions: tuple[int, ...] = quantity("revolutions", label="camshaft revolutions until the motion repeated")
+
+
+@dataclass(frozen=True)
+class Mode:
+    """One natural mode of the train with every contact closed (undamped)."""
+
+    frequency: float = quantity("frequency_Hz", "Hz", "natural frequency")
+    shape: dict = quantity("shape", label="displacement of each node at the valve, the largest 1 (sign: same or "
+                           "opposite direction)")
 
 
 @dataclass(frozen=True)
@@ -151,9 +172,11 @@ class DynamicsResult:
     parameters: DynamicsParameters = quantity("parameters")
     speed_range: tuple[float, ...] = quantity("speed_range_rpm", "rpm", "engine speeds swept, from and to")
     speeds: int = quantity("speeds", label="speeds swept")
-    jump_speed: float = quantity("jump_speed_rpm", "rpm", "lowest engine speed with follower separation (null: "
-                                 "none in the range)")
-    bounce_speed: float = quantity("bounce_speed_rpm", "rpm", "lowest engine speed with a seating bounce (null: none)")
+    jump_speed: float = quantity("jump_speed_rpm", "rpm", "engine speed where the smallest contact force while the "
+                                 "cam lifts reaches 0, interpolated between the speeds swept (null: no follower "
+                                 "separation in the range)")
+    bounce_speed: float = quantity("bounce_speed_rpm", "rpm", "engine speed where the bounce height first exceeds "
+                                   "1 um, interpolated between the speeds swept (null: none)")
     max_seating_velocity: float = quantity("max_seating_velocity_m_s", "m/s", "largest |seating velocity| of the "
                                            "sweep")
     max_seating_velocity_speed: float = quantity("max_seating_velocity_speed_rpm", "rpm", "where it occurs")
@@ -161,6 +184,12 @@ class DynamicsResult:
                                                  "meet (null: none)", omit_none=True)
     epsilon: float = quantity("epsilon", label="perturbation parameter at the rated speed")
     natural_frequency: float = quantity("natural_frequency_Hz", "Hz", "one-mass natural frequency sqrt((K + c)/M)")
+    natural_frequencies: tuple[float, ...] = quantity("natural_frequencies_Hz", "Hz", "natural frequencies of the "
+                                                      "simulated train with every contact closed, ascending")
+    modes: tuple[Mode, ...] = quantity("modes", label="the natural modes: frequency and shape")
+    max_revolutions: int = quantity("max_revolutions", label="most camshaft revolutions a speed took to repeat")
+    unsettled_speeds: int = quantity("unsettled_speeds", label="speeds whose motion did not repeat within the "
+                                     "revolutions key (the last revolution recorded)")
     at_rated_speed: SpeedRecord = quantity("at_rated_speed")
     resonance: ResonanceRecord = quantity("resonance")
     per_speed: PerSpeed = quantity("per_speed")
@@ -227,6 +256,22 @@ def _coil_springs(spring_record, coils):
             for r in recs]
 
 
+def multi_springs(dyn, spring_record, rate, preload):
+    """The springs of the multi-mass train and the notes on them: the designed spring(s), or one spring of the rate
+    K [N/m] and preload F0 [N] of :func:`train_spring` when [dynamics] gives any of the spring's keys (its active-coil
+    mass ``spring_mass_kg``, else the designed springs' together; its coil clash is then not monitored)."""
+    designed = _coil_springs(spring_record, dyn.coils_per_spring)
+    given = (dyn.spring_rate, dyn.spring_preload_N, dyn.spring_mass_kg)
+    if all(v is None for v in given):
+        return designed, [f"coil masses: the designed spring's active coils in {dyn.coils_per_spring} masses per "
+                          "spring, half a segment on the valve"]
+    mass = sum(sp.mass for sp in designed) if dyn.spring_mass_kg is None else float(dyn.spring_mass_kg)
+    told = "the designed springs' active coils" if dyn.spring_mass_kg is None else "given ([dynamics] spring_mass_kg)"
+    return [CoilSpring(rate, preload, mass, 0.0, int(dyn.coils_per_spring))], [
+        f"one spring of K = {rate * MM:.5g} N/mm and F0 = {preload:.5g} N, coil mass {mass:.5g} kg {told}, in "
+        f"{dyn.coils_per_spring} masses, half a segment on the valve; its coil clash is not monitored"]
+
+
 def nose_acceleration(law, cam_speed, rocker_ratio, points=3601):
     """Smallest valve acceleration of the lift event j_min = i_k omega_cam^2 min h''(theta) [m/s^2] (at the nose for
     a symmetric law), on ``points`` evenly spaced angles of the event."""
@@ -235,7 +280,8 @@ def nose_acceleration(law, cam_speed, rocker_ratio, points=3601):
 
 
 def train_spring(dyn, valve, law, line, mass, cam_speed, at):
-    """Rate K [N/m] and preload F0 [N] of the one-mass train, and the note on where they come from.
+    """Rate K [N/m] and preload F0 [N] of the train (the spring of the one-mass train, or of the multi-mass train when
+    [dynamics] gives it), and the note on where they come from.
 
     ``spring_rate_N_per_mm`` and ``spring_preload_N`` of [dynamics] replace the designed spring's; a preload given
     without a rate sizes the rate by Valve-train dynamics article (n.d.), step 4a: K = (K_3 M |j_min| - F0) / h_max at
@@ -286,11 +332,11 @@ def build_train(dyn, valve, law, drive, at, cam_speed=None):
     if dyn.model == "1dof":
         train = one_mass_train(mass, c, rate, preload, k, lash, **kw)
     else:
-        train = _multi_train(valve, links, _coil_springs(drive.spring, dyn.coils_per_spring), lash, kw, at)
+        springs, spring_notes = multi_springs(dyn, drive.spring, rate, preload)
+        train = _multi_train(valve, links, springs, lash, kw, at)
         net = train.network()
         nodes = {n: float(m) for n, m in zip(net.names, net.mass, strict=True)}
-        notes.append(f"coil masses: the designed spring's active coils in {dyn.coils_per_spring} masses per spring, "
-                     "half a segment on the valve")
+        notes.extend(spring_notes)
     params = DynamicsParameters(dyn.model, layout(valve), mass, c, dyn.damping_ratio, rate, preload, k, lash,
                                 dyn.seat_stiffness, dyn.seat_damping_ratio, dyn.revolutions, dyn.step,
                                 dyn.coils_per_spring, links, names, nodes, tuple(notes))
@@ -331,14 +377,13 @@ def finite_or_none(x):
 
 def speed_record(r, speed, epsilon):
     """A :class:`SpeedRecord` of a :class:`~valvetrain.dynamics.sweep.SpeedResult` at engine speed [rad/s]."""
-    before = r.theta < r.seating_angle if np.isfinite(r.seating_angle) else np.ones(r.theta.size, dtype=bool)
-    lifting = (r.kinematic_lift > 0.0) & (r.lift > 0.0) & before      # where separation would be a jump
     surge = float(r.surge_amplitude.max()) if r.surge_amplitude.size else None
-    clash = float(r.clash_margin) if np.isfinite(r.clash_margin) and r.surge_amplitude.size else None
-    return SpeedRecord(float(speed), float(epsilon), float(r.contact_force[lifting].min()) if lifting.any() else np.nan,
-                       float(r.contact_force.max()), float(r.seating_velocity), float(r.bounce_height),
-                       int(r.bounce_count), float(np.abs(r.lift_error).max()),
-                       tuple(tuple(float(a) for a in pair) for pair in r.jump_intervals), surge, clash)
+    clash = float(r.clash_margin) if np.isfinite(r.clash_margin) else None
+    return SpeedRecord(float(speed), float(epsilon), float(r.min_contact_force), float(r.contact_force.max()),
+                       float(r.seating_velocity), float(r.bounce_height), int(r.bounce_count),
+                       float(np.abs(r.lift_error).max()),
+                       tuple(tuple(float(a) for a in pair) for pair in r.jump_intervals), surge, clash,
+                       int(r.revolutions))
 
 
 POOR_FILM_BAND = (0.4, 0.6)
@@ -422,7 +467,8 @@ def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, 
     Raises
     ------
     SpecError
-        A multi-mass train without the part masses it needs, or a drive stiffness above that of its parts.
+        A multi-mass train without the part masses it needs, a drive stiffness above that of its parts, or a sweep
+        estimated above :data:`MAX_SWEEP_WORK` or :data:`MAX_SWEEP_BYTES` without ``allow_large_sweep``.
     """
     at = f"valves.{name}"
     to_cam = cam_per_crank(engine.strokes)
@@ -437,21 +483,32 @@ def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, 
     params = replace(params, estimates=tuple(notes))
     speeds = np.linspace(low, high, dyn.speeds)
     step_deg = dyn.step / DEG
+    work, size = sweep_size(train.network(), speeds * to_cam, dyn.revolutions, step_deg)
+    if not dyn.allow_large_sweep and (work > MAX_SWEEP_WORK or size > MAX_SWEEP_BYTES):
+        raise SpecError([f"{at}.dynamics: speeds = {dyn.speeds} x revolutions = {dyn.revolutions} at step_cam_deg = "
+                         f"{step_deg:g} is about {work:.3g} integrator steps x elements (allowed {MAX_SWEEP_WORK:.3g}) "
+                         f"and {size / 1e6:.0f} MB of recorded revolutions (allowed {MAX_SWEEP_BYTES / 1e6:.0f} MB); "
+                         "fewer speeds or revolutions or a larger step, or allow_large_sweep = true to run it"])
     if progress is not None:
         progress(0, dyn.speeds)
     result = sweep(law, train, speeds * to_cam, dyn.revolutions, step_deg, progress=progress)
     rated = sweep(law, train, [engine.rated_speed * to_cam], dyn.revolutions, step_deg).speed(0)
     m, c, kk = params.mass, params.drive_stiffness, params.spring_rate
     eps = perturbation_parameter(m, c, kk, speeds * to_cam)
-    per = [speed_record(r, s, e) for r, s, e in zip(result.per_speed(), speeds, eps, strict=True)]
-    head = result.headline()
+    results = result.per_speed()
+    per = [speed_record(r, s, e) for r, s, e in zip(results, speeds, eps, strict=True)]
+    head = result.headline(results)
     res = resonance(law, engine.rated_speed * to_cam, m, kk, c, valve.rocker_ratio)
     reson = ResonanceRecord(res.omega0 / (2 * np.pi), res.order, res.force, res.amplitude, 100 * res.distortion,
                             tuple(int(o) for o in res.orders), tuple(100 * float(d) for d in res.spectrum_distortion))
     table = PerSpeed(tuple(float(s) for s in speeds), tuple(p.min_contact_force for p in per),
                      tuple(finite_or_none(p.seating_velocity) for p in per), tuple(p.bounce for p in per),
                      tuple(p.bounce_count for p in per), tuple(bool(p.jump_intervals) for p in per),
-                     tuple(p.max_lift_error for p in per))
+                     tuple(p.max_lift_error for p in per), tuple(p.revolutions for p in per))
+    net = train.network()
+    omegas, shapes = natural_modes(net, opened=("seat",))
+    modes = tuple(Mode(float(w / (2 * np.pi)), {n: float(x) for n, x in zip(net.names, shapes[:, j], strict=True)})
+                  for j, w in enumerate(omegas))
 
     def crank(cam_speed):
         return float(cam_speed / to_cam)
@@ -466,23 +523,33 @@ def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, 
         dyn.model, params, (float(low), float(high)), int(dyn.speeds), crank(head["jump_speed"]),
         crank(head["bounce_onset_speed"]), head["max_seating_velocity"], crank(head["max_seating_velocity_speed"]),
         crank(head["coil_clash_speed"]) if dyn.model == "multi" else None, eps_rated,
-        float(np.sqrt((kk + c) / m) / (2 * np.pi)), rated_record, reson, table,
+        float(np.sqrt((kk + c) / m) / (2 * np.pi)), tuple(mode.frequency for mode in modes), modes,
+        int(result.revolutions.max()), int(np.count_nonzero(~result.converged)), rated_record, reson, table,
         f"tables/{name}_dynamics.csv", result, tuple(per), rated)
     return out, dynamics_checks(out, engine)
 
 
-CHECK_QUANTITIES = ("dynamic seating velocity at the rated speed", "follower separation (jump) speed / rated speed")
+CHECK_QUANTITIES = ("dynamic seating velocity at the rated speed",
+                    "follower separation (jump) speed / rated speed")
 """The quantities of the dynamics checks."""
 
 
 def dynamics_checks(d, engine):
-    """The seating velocity at the rated speed and the follower separation below it."""
-    out = [check(CHECK_QUANTITIES[0], abs(d.at_rated_speed.seating_velocity),
-                 high=SEATING_VELOCITY_MAX, unit="m/s", source=CHECK_SOURCE + "; 0.3-0.5 m/s usual")]
-    if np.isfinite(d.jump_speed):
-        out.append(check(CHECK_QUANTITIES[1], d.jump_speed / engine.rated_speed,
-                         low=1.0, source=CHECK_SOURCE + ": no separation below the rated speed"))
-    return out
+    """The seating velocity at the rated speed (a warning above its band) and the follower separation: a failure
+    below ``[engine] over_speed_ratio`` x the rated speed.
+
+    Without a separation in the range the check takes the top of the range: a range that stops below the over-speed
+    has not shown the valve keeps its cam there, and fails.
+    """
+    top = d.speed_range[1]
+    jump = d.jump_speed if np.isfinite(d.jump_speed) else top
+    note = "" if np.isfinite(d.jump_speed) else (f"no separation up to the top of the range swept, "
+                                                  f"{to_display(top, 'rpm'):.0f} rpm")
+    return [check(CHECK_QUANTITIES[0], abs(d.at_rated_speed.seating_velocity),
+                  high=SEATING_VELOCITY_MAX, unit="m/s", source=CHECK_SOURCE + "; 0.3-0.5 m/s usual"),
+            check(CHECK_QUANTITIES[1], jump / engine.rated_speed, low=engine.over_speed_ratio, severity="failure",
+                  note=note, source=CHECK_SOURCE + ": no separation below [engine] over_speed_ratio x the rated "
+                  "speed")]
 
 
 SWEEP_COLUMNS = [
@@ -494,8 +561,11 @@ SWEEP_COLUMNS = [
     ("bounce_mm", "largest lift after the first seating [mm]"), ("bounce_count", "bounces"),
     ("jump", "follower separation: 1, else 0"), ("jump_from_cam_deg", "first separation starts [cam deg]"),
     ("jump_to_cam_deg", "last separation ends [cam deg]"), ("max_lift_error_mm", "largest |lift - rigid lift| [mm]"),
+    ("revolutions", "camshaft revolutions until the motion repeated"),
 ]
-"""Columns of ``tables/NAME_dynamics.csv`` (multi: also ``max_surge_mm`` and ``coil_clash_margin_mm``)."""
+"""Columns of ``tables/NAME_dynamics.csv`` (multi: also ``max_surge_mm`` with coil masses, and
+``coil_clash_margin_mm`` where the spring's closing is monitored: a massless spring, coils_per_spring = 0, has no
+surge but still goes solid)."""
 
 
 def sweep_columns(d):
@@ -513,13 +583,15 @@ def sweep_columns(d):
     out["jump_to_cam_deg"] = [r["jump_intervals_cam_deg"][-1][1] if r["jump_intervals_cam_deg"] else np.nan
                               for r in rows]
     out["max_lift_error_mm"] = [r["max_lift_error_mm"] for r in rows]
-    if d.model == "multi":
+    out["revolutions"] = [r["revolutions"] for r in rows]
+    if d.model == "multi" and d.parameters.coils_per_spring > 0:
         out["max_surge_mm"] = [r.get("max_surge_mm", np.nan) for r in rows]
+    if any("coil_clash_margin_mm" in r for r in rows):
         out["coil_clash_margin_mm"] = [r.get("coil_clash_margin_mm", np.nan) for r in rows]
     return out
 
 
-__all__ = ["CHECK_QUANTITIES", "DynamicsParameters", "DynamicsResult", "PerSpeed", "ResonanceRecord", "SWEEP_COLUMNS",
+__all__ = ["CHECK_QUANTITIES", "DynamicsParameters", "DynamicsResult", "Mode", "PerSpeed", "ResonanceRecord", "SWEEP_COLUMNS",
            "SpeedRecord", "build_train", "drive_links", "dynamics_checks", "dynamics_stage", "finite_or_none", "rated_contact",
            "speed_record",
            "sweep_columns"]

@@ -25,12 +25,18 @@ excitation samples at the same steps, so they are integrated in lockstep as a bl
 (:func:`blocks`): the state is stored (node, speed), and each element's force is computed for all
 speeds of the block in one branch-free loop that the compiler turns into SIMD instructions (one
 speed per lane, each lane doing exactly the scalar arithmetic, so the results do not depend on the
-blocking).  The blocks run in parallel (``prange``), the costliest first; the kernels are cached on
-disk (``cache=True``) so a second process pays no compile time.
+blocking).  The blocks run on threads of the caller (the kernels release the interpreter lock,
+``nogil=True``), the costliest first; one compiled signature serves every train, and the kernels are
+cached on disk (``cache=True``) so a second process pays no compile time.
+
+A speed is integrated until it repeats: after each camshaft revolution its state is compared with
+the state at the start of that revolution, and a block stops once all its speeds repeat (most
+trains settle within the first revolution from rest; a floating valve may never repeat and runs
+to the cap).
 """
 
 import numpy as np
-from numba import config, njit, prange
+from numba import njit
 
 GROUND = -1
 """Node index of the fixed head (seat, spring seat)."""
@@ -39,7 +45,7 @@ CAM = -2
 """Node index of the cam excitation: displacement u = k h(theta), velocity omega k h'(theta)."""
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def _forces(x, v, inv_mass, ra, rb, k, d, gap, pre, uni, acc, force):
     """Element forces (compression positive, +f on row rb, -f on row ra) and row accelerations of a block.
 
@@ -73,11 +79,66 @@ def _forces(x, v, inv_mass, ra, rb, k, d, gap, pre, uni, acc, force):
                 fa[s] -= f * ma
 
 
-@njit(cache=True)
-def _block(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_per_rev, revolutions, inv_mass, x_init,
-           ra, rb, k, d, gap, pre, uni, rec_nodes, rec_elems, clash_gap, surge_ref, surge_w,
-           out_x, out_v, out_f, out_clash, out_surge):
-    """RK4 of the speeds ``idx`` (all with ``n_sub`` sub-steps) in lockstep, one SIMD lane per speed."""
+
+
+@njit(cache=True, nogil=True)
+def integrate_block(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_per_rev, max_revolutions, tolerance,
+                    rate, inv_mass, x_init, ra, rb, k, d, gap, pre, uni, closing, rec_nodes, rec_elems, clash_gap,
+                    surge_ref, surge_w, out_x, out_v, out_a, out_f, out_clash, out_surge, out_revs):
+    """Integrate the speeds ``idx`` of one block (all with ``n_sub`` sub-steps) in lockstep until each repeats.
+
+    Every revolution is recorded over the previous one; after each revolution the state of every speed is compared
+    with its state at the start of that revolution, and the block stops once every speed repeats within
+    ``tolerance`` (or after ``max_revolutions``).  The record is then the last revolution integrated.
+
+    Parameters
+    ----------
+    idx : ndarray (B,) of int
+        Speeds of the block (rows of the output arrays).
+    omegas : ndarray (S,)
+        Camshaft speeds [rad/s].
+    n_sub : int
+        Sub-steps per angle step dtheta of this block (a power of two dividing ``per_step // 2``).
+    dtheta : float
+        Recording step of camshaft angle [rad].
+    cam_u, cam_du : ndarray (L,)
+        Cam displacement at the valve k h [m] and its derivative k dh/dtheta [m/rad] on one revolution sampled
+        every dtheta / per_step from the start angle (periodic; L = steps_per_rev * per_step).
+    per_step : int
+        Excitation samples per recording step (2 x the largest sub-step count of the sweep).
+    steps_per_rev : int
+        Recording steps per revolution, 2 pi / dtheta.
+    max_revolutions : int
+        Most camshaft revolutions integrated.
+    tolerance : float
+        A speed repeats when no node's position differs by more than this from the start of the revolution, nor
+        its velocity by more than ``tolerance * rate`` [m].
+    rate : float
+        Velocity scale of the comparison [1/s] (the spectral radius of the train).
+    inv_mass, x_init : ndarray (n,)
+        Inverse node masses [1/kg] and initial positions [m] (the train starts at rest).
+    ra, rb : ndarray (E,) of int
+        Element end rows (:func:`rows`).
+    k, d, gap, pre, uni : ndarray (E,)
+        Element stiffness [N/m], damping [N s/m], gap [m], preload [N], unilateral flag.
+    closing : int
+        A unilateral element whose closing is located inside the step (the valve seat; -1: none): a speed whose
+        element closes during a step redoes that step in two, to the closing and from it (:func:`_split_step`).
+    rec_nodes, rec_elems : ndarray of int
+        Nodes whose position, velocity and acceleration, and elements whose force, are recorded.
+    clash_gap : ndarray (E,)
+        Closing distance of a coil element to coil contact [m] (0: not monitored).
+    surge_ref : int
+        Node of the valve; ``surge_w`` (n,) the quasi-static share of its motion for each coil node (0: none).
+    out_x, out_v, out_a : ndarray (S, len(rec_nodes), steps_per_rev)
+    out_f : ndarray (S, len(rec_elems), steps_per_rev)
+    out_clash : ndarray (S, E)
+        Smallest coil-contact margin [m] over the recorded revolution (inf where not monitored).
+    out_surge : ndarray (S, n)
+        Largest deviation of each coil node from its quasi-static share of the valve motion [m].
+    out_revs : ndarray (S,) of int
+        The revolution after which the speed repeated (0: not within ``max_revolutions``).
+    """
     n = x_init.size
     rows = n + 2
     cam = n + 1
@@ -85,6 +146,8 @@ def _block(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_per_rev, r
     bsize = idx.size
     x = np.zeros((rows, bsize))
     v = np.zeros((rows, bsize))
+    x0, v0 = np.zeros((n, bsize)), np.zeros((n, bsize))
+    xb, vb = np.zeros((rows, bsize)), np.zeros((rows, bsize))
     xs, vs = np.zeros((rows, bsize)), np.zeros((rows, bsize))
     k1v, k2v, k3v, k4v = (np.zeros((rows, bsize)), np.zeros((rows, bsize)), np.zeros((rows, bsize)),
                           np.zeros((rows, bsize)))
@@ -96,69 +159,150 @@ def _block(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_per_rev, r
     for s in range(bsize):
         om[s] = omegas[idx[s]]
         dt[s] = dtheta / (n_sub * om[s])
+        out_revs[idx[s]] = 0
         for i in range(n):
             x[i, s] = x_init[i]
-        for e in range(ne):
-            out_clash[idx[s], e] = np.inf
-        for i in range(n):
-            out_surge[idx[s], i] = 0.0
     half = per_step // (2 * n_sub)          # half-grid indices per half step
     period = cam_u.size
-    total = revolutions * steps_per_rev * n_sub
-    first_recorded = (revolutions - 1) * steps_per_rev * n_sub
-    j0 = 0
-    countdown = 0                           # sub-steps to the next recorded angle
-    for step in range(total):
-        j1 = j0 + half
-        j2 = j1 + half
-        if j2 == period:
-            j2 = 0
-        u0, u1, u2 = cam_u[j0], cam_u[j1], cam_u[j2]
-        d0, d1, d2 = cam_du[j0], cam_du[j1], cam_du[j2]
+    for rev in range(1, max_revolutions + 1):
         for s in range(bsize):
-            x[cam, s] = u0
-            v[cam, s] = om[s] * d0
-        _forces(x, v, im, ra, rb, k, d, gap, pre, uni, k1v, force)
-        if step >= first_recorded:
-            if countdown == 0:
-                r = (step - first_recorded) // n_sub
-                countdown = n_sub
-                _record(r, idx, x, v, force, ra, rb, rec_nodes, rec_elems, clash_gap, surge_ref, surge_w,
-                        out_x, out_v, out_f, out_clash, out_surge)
-            countdown -= 1
-        for i in range(n):
+            for e in range(ne):
+                out_clash[idx[s], e] = np.inf
+            for i in range(n):
+                out_surge[idx[s], i] = 0.0
+                x0[i, s] = x[i, s]
+                v0[i, s] = v[i, s]
+        j0 = 0
+        for step in range(steps_per_rev * n_sub):
+            j1 = j0 + half
+            j2 = j1 + half
+            if j2 == period:
+                j2 = 0
+            u0, u1, u2 = cam_u[j0], cam_u[j1], cam_u[j2]
+            d0, d1, d2 = cam_du[j0], cam_du[j1], cam_du[j2]
             for s in range(bsize):
-                xs[i, s] = x[i, s] + 0.5 * dt[s] * v[i, s]
-                vs[i, s] = v[i, s] + 0.5 * dt[s] * k1v[i, s]
+                x[cam, s] = u0
+                v[cam, s] = om[s] * d0
+            _forces(x, v, im, ra, rb, k, d, gap, pre, uni, k1v, force)
+            if closing >= 0:
+                xb[:, :] = x
+                vb[:, :] = v
+            if step % n_sub == 0:
+                _record(step // n_sub, idx, x, v, k1v, force, ra, rb, rec_nodes, rec_elems, clash_gap, surge_ref,
+                        surge_w, out_x, out_v, out_a, out_f, out_clash, out_surge)
+            for i in range(n):
+                for s in range(bsize):
+                    xs[i, s] = x[i, s] + 0.5 * dt[s] * v[i, s]
+                    vs[i, s] = v[i, s] + 0.5 * dt[s] * k1v[i, s]
+            for s in range(bsize):
+                xs[cam, s] = u1
+                vs[cam, s] = om[s] * d1
+            _forces(xs, vs, im, ra, rb, k, d, gap, pre, uni, k2v, scratch)
+            for i in range(n):
+                for s in range(bsize):
+                    k2x[i, s] = vs[i, s]
+                    xs[i, s] = x[i, s] + 0.5 * dt[s] * k2x[i, s]
+                    vs[i, s] = v[i, s] + 0.5 * dt[s] * k2v[i, s]
+            _forces(xs, vs, im, ra, rb, k, d, gap, pre, uni, k3v, scratch)
+            for i in range(n):
+                for s in range(bsize):
+                    k3x[i, s] = vs[i, s]
+                    xs[i, s] = x[i, s] + dt[s] * k3x[i, s]
+                    vs[i, s] = v[i, s] + dt[s] * k3v[i, s]
+            for s in range(bsize):
+                xs[cam, s] = u2
+                vs[cam, s] = om[s] * d2
+            _forces(xs, vs, im, ra, rb, k, d, gap, pre, uni, k4v, scratch)
+            for i in range(n):
+                for s in range(bsize):
+                    x[i, s] += dt[s] / 6.0 * (v[i, s] + 2.0 * k2x[i, s] + 2.0 * k3x[i, s] + vs[i, s])
+                    v[i, s] += dt[s] / 6.0 * (k1v[i, s] + 2.0 * k2v[i, s] + 2.0 * k3v[i, s] + k4v[i, s])
+            if closing >= 0:
+                ia, ib, ge = ra[closing], rb[closing], gap[closing]
+                for s in range(bsize):
+                    if xb[ia, s] - xb[ib, s] - ge <= 0.0 and x[ia, s] - x[ib, s] - ge > 0.0:
+                        _split_step(s, xb, vb, k1v, x, v, dt[s], om[s], dtheta / n_sub, u0, d0, u2, d2, closing,
+                                    im, ra, rb, k, d, gap, pre, uni)
+            j0 = j2
+        done = True
         for s in range(bsize):
-            xs[cam, s] = u1
-            vs[cam, s] = om[s] * d1
-        _forces(xs, vs, im, ra, rb, k, d, gap, pre, uni, k2v, scratch)
-        for i in range(n):
-            for s in range(bsize):
-                k2x[i, s] = vs[i, s]
-                xs[i, s] = x[i, s] + 0.5 * dt[s] * k2x[i, s]
-                vs[i, s] = v[i, s] + 0.5 * dt[s] * k2v[i, s]
-        _forces(xs, vs, im, ra, rb, k, d, gap, pre, uni, k3v, scratch)
-        for i in range(n):
-            for s in range(bsize):
-                k3x[i, s] = vs[i, s]
-                xs[i, s] = x[i, s] + dt[s] * k3x[i, s]
-                vs[i, s] = v[i, s] + dt[s] * k3v[i, s]
-        for s in range(bsize):
-            xs[cam, s] = u2
-            vs[cam, s] = om[s] * d2
-        _forces(xs, vs, im, ra, rb, k, d, gap, pre, uni, k4v, scratch)
-        for i in range(n):
-            for s in range(bsize):
-                x[i, s] += dt[s] / 6.0 * (v[i, s] + 2.0 * k2x[i, s] + 2.0 * k3x[i, s] + vs[i, s])
-                v[i, s] += dt[s] / 6.0 * (k1v[i, s] + 2.0 * k2v[i, s] + 2.0 * k3v[i, s] + k4v[i, s])
-        j0 = j2
+            if out_revs[idx[s]] == 0:
+                dev = 0.0
+                for i in range(n):
+                    dev = max(dev, abs(x[i, s] - x0[i, s]), abs(v[i, s] - v0[i, s]) / rate)
+                if dev <= tolerance:
+                    out_revs[idx[s]] = rev
+                else:
+                    done = False
+        if done:
+            break
 
 
-@njit(cache=True)
-def _record(r, idx, x, v, force, ra, rb, rec_nodes, rec_elems, clash_gap, surge_ref, surge_w,
-            out_x, out_v, out_f, out_clash, out_surge):
+@njit(cache=True, nogil=True)
+def _lane_rk4(xl, vl, h, fa, fb, step_angle, om, u0, d0, u2, d2, im, ra, rb, k, d, gap, pre, uni):
+    """One RK4 step of a single speed (state ``xl``, ``vl`` of shape (rows, 1), updated in place) from the fraction
+    ``fa`` to ``fb`` of an angle step, the cam on the cubic Hermite of its samples and slopes at both ends."""
+    rows = xl.shape[0]
+    n = rows - 2
+    ne = ra.size
+    acc = np.zeros((4, rows, 1))
+    xs, vs, kx = np.zeros((rows, 1)), np.zeros((rows, 1)), np.zeros((4, rows, 1))
+    force = np.zeros((ne, 1))
+    fm = 0.5 * (fa + fb)
+    for q in range(4):
+        f = fa if q == 0 else (fm if q < 3 else fb)
+        f2, f3 = f * f, f * f * f
+        if q == 0:
+            for i in range(rows):
+                xs[i, 0] = xl[i, 0]
+                vs[i, 0] = vl[i, 0]
+        xs[n + 1, 0] = ((2 * f3 - 3 * f2 + 1) * u0 + (f3 - 2 * f2 + f) * step_angle * d0 + (-2 * f3 + 3 * f2) * u2
+                        + (f3 - f2) * step_angle * d2)
+        vs[n + 1, 0] = om * ((6 * f2 - 6 * f) * u0 / step_angle + (3 * f2 - 4 * f + 1) * d0
+                             + (-6 * f2 + 6 * f) * u2 / step_angle + (3 * f2 - 2 * f) * d2)
+        _forces(xs, vs, im, ra, rb, k, d, gap, pre, uni, acc[q], force)
+        for i in range(n):
+            kx[q, i, 0] = vs[i, 0]
+            if q < 3:
+                c = 0.5 * h if q < 2 else h
+                xs[i, 0] = xl[i, 0] + c * vs[i, 0]
+                vs[i, 0] = vl[i, 0] + c * acc[q, i, 0]
+    for i in range(n):
+        xl[i, 0] += h / 6.0 * (kx[0, i, 0] + 2.0 * kx[1, i, 0] + 2.0 * kx[2, i, 0] + kx[3, i, 0])
+        vl[i, 0] += h / 6.0 * (acc[0, i, 0] + 2.0 * acc[1, i, 0] + 2.0 * acc[2, i, 0] + acc[3, i, 0])
+
+
+@njit(cache=True, nogil=True)
+def _split_step(s, xb, vb, acc, x, v, dt, om, step_angle, u0, d0, u2, d2, e, im, ra, rb, k, d, gap, pre, uni):
+    """Redo the step of speed ``s`` in which element ``e`` closed: RK4 from the start (``xb``, ``vb``, acceleration
+    ``acc``) to the closing, located by the Taylor series of the element's gap, then RK4 from it to the step's end;
+    the result replaces column ``s`` of ``x``, ``v``.  A contact law that switches inside a step (the seat's damping
+    force jumps from 0 at the closing) costs a fixed-step scheme its order; split there, each part is smooth."""
+    rows = xb.shape[0]
+    ia, ib = ra[e], rb[e]
+    g0 = xb[ia, s] - xb[ib, s] - gap[e]
+    g1 = vb[ia, s] - vb[ib, s]
+    g2 = acc[ia, s] - acc[ib, s]
+    tau = dt * g0 / (g0 - (x[ia, s] - x[ib, s] - gap[e]))
+    disc = g1 * g1 - 2.0 * g2 * g0
+    if disc >= 0.0 and g1 + np.sqrt(disc) > 0.0:
+        root = -2.0 * g0 / (g1 + np.sqrt(disc))          # g0 + g1 t + g2 t^2 / 2 = 0, the root nearest -g0 / g1
+        if 0.0 < root < dt:
+            tau = root
+    xl, vl = np.zeros((rows, 1)), np.zeros((rows, 1))
+    for i in range(rows):
+        xl[i, 0] = xb[i, s]
+        vl[i, 0] = vb[i, s]
+    _lane_rk4(xl, vl, tau, 0.0, tau / dt, step_angle, om, u0, d0, u2, d2, im, ra, rb, k, d, gap, pre, uni)
+    _lane_rk4(xl, vl, dt - tau, tau / dt, 1.0, step_angle, om, u0, d0, u2, d2, im, ra, rb, k, d, gap, pre, uni)
+    for i in range(rows - 2):
+        x[i, s] = xl[i, 0]
+        v[i, s] = vl[i, 0]
+
+
+@njit(cache=True, nogil=True)
+def _record(r, idx, x, v, acc, force, ra, rb, rec_nodes, rec_elems, clash_gap, surge_ref, surge_w,
+            out_x, out_v, out_a, out_f, out_clash, out_surge):
     """Write the recorded angle r of every speed of a block; update its coil clash and surge extremes."""
     bsize = idx.size
     for s in range(bsize):
@@ -166,6 +310,7 @@ def _record(r, idx, x, v, force, ra, rb, rec_nodes, rec_elems, clash_gap, surge_
         for q in range(rec_nodes.size):
             out_x[g, q, r] = x[rec_nodes[q], s]
             out_v[g, q, r] = v[rec_nodes[q], s]
+            out_a[g, q, r] = acc[rec_nodes[q], s]
         for q in range(rec_elems.size):
             out_f[g, q, r] = force[rec_elems[q], s]
     for e in range(ra.size):
@@ -191,112 +336,39 @@ the time per speed falls by half from 8 to 64 speeds a block and no further beyo
 of 64-bit floats used); 64 still leaves several blocks per thread on a sweep of 200 speeds."""
 
 
-PARALLEL_BLOCKS = max(2, config.NUMBA_NUM_THREADS)
-"""Fewest blocks a group of 16 or more speeds is split into, so that a small call (a chunk of a sweep with a
-progress bar) still runs on every core.  Frozen into the cached kernel; the blocking never changes the results."""
-
-
-@njit(cache=True)
-def blocks(n_sub):
+def blocks(n_sub, workers=2):
     """Speeds grouped into blocks of equal sub-step count, the blocks in the order of decreasing cost.
 
     Returns (order, start, seq): the speeds ``order[start[j]:start[j + 1]]`` form block j; ``seq`` lists the
     blocks by decreasing cost (speeds x sub-steps), the order in which the threads take them.  A block holds up
     to BLOCK_SPEEDS speeds, a multiple of 8 speeds (one AVX-512 register) when it is split; a group of 16 or
-    more speeds is split into at least PARALLEL_BLOCKS blocks.
+    more speeds is split into at least ``workers`` blocks.  Speeds keep their order inside a group, so that
+    neighbouring speeds (which repeat after about as many revolutions) share a block.
+
+    >>> order, start, seq = blocks(np.array([1, 2, 1, 1]))
+    >>> order.tolist(), start.tolist(), seq.tolist()
+    ([0, 2, 3, 1], [0, 3, 4], [0, 1])
     """
-    count = n_sub.size
-    order = np.empty(count, dtype=np.int64)
-    start = np.zeros(count + 1, dtype=np.int64)
-    cost = np.zeros(count + 1)
-    nb, filled, last = 0, 0, 0
-    while filled < count:                   # the speeds by increasing sub-step count (plain loops compile fast)
-        m = -1
-        for i in range(count):
-            if n_sub[i] > last and (m < 0 or n_sub[i] < m):
-                m = n_sub[i]
-        lo = filled
-        for i in range(count):
-            if n_sub[i] == m:
-                order[filled] = i
-                filled += 1
-        pieces = max(-(-(filled - lo) // BLOCK_SPEEDS), min((filled - lo) // 8, PARALLEL_BLOCKS))
-        size = -(-(filled - lo) // pieces)
+    n_sub = np.asarray(n_sub)
+    order = np.argsort(n_sub, kind="stable")
+    start, cost = [0], []
+    for m in np.unique(n_sub):
+        lo, count = start[-1], int(np.count_nonzero(n_sub == m))
+        pieces = max(-(-count // BLOCK_SPEEDS), min(count // 8, workers))
+        size = -(-count // pieces)
         size = -(-size // 8) * 8 if size > 8 else size
-        p = lo
-        while p < filled:
-            q = min(p + size, filled)
-            cost[nb] = (q - p) * m
-            nb += 1
-            start[nb] = q
-            p = q
-        last = m
-    seq = np.arange(nb)
-    for j in range(1, nb):                  # insertion sort by decreasing cost (a handful of blocks)
-        c, t = seq[j], j
-        while t > 0 and cost[seq[t - 1]] < cost[c]:
-            seq[t] = seq[t - 1]
-            t -= 1
-        seq[t] = c
-    return order, start[:nb + 1], seq
+        for p in range(lo, lo + count, size):
+            start.append(min(p + size, lo + count))
+            cost.append((start[-1] - p) * int(m))
+    seq = np.argsort(-np.array(cost), kind="stable")
+    return order, np.array(start), seq
 
 
-@njit(cache=True)
-def _rows(a, b, n):
-    """Element end rows of a block's state: the node, or row n for the ground and n + 1 for the cam."""
-    ra, rb = np.empty_like(a), np.empty_like(b)
-    for e in range(a.size):
-        ra[e] = n + 1 if a[e] == CAM else (n if a[e] == GROUND else a[e])
-        rb[e] = n if b[e] == GROUND else b[e]
-    return ra, rb
+def rows(a, b, n):
+    """Element end rows of a block's state: the node, or row n for the ground and n + 1 for the cam.
 
-
-@njit(cache=True, parallel=True)
-def integrate_network(omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_per_rev, revolutions, inv_mass, x_init,
-                      a, b, k, d, gap, pre, uni, rec_nodes, rec_elems, clash_gap, surge_ref, surge_w,
-                      out_x, out_v, out_f, out_clash, out_surge):
-    """Integrate the network at every camshaft speed; fill the output arrays of the last revolution.
-
-    Parameters
-    ----------
-    omegas : ndarray (S,)
-        Camshaft speeds [rad/s].
-    n_sub : ndarray (S,) of int
-        Sub-steps per angle step dtheta for each speed (a power of two dividing ``per_step // 2``).
-    dtheta : float
-        Recording step of camshaft angle [rad].
-    cam_u, cam_du : ndarray (L,)
-        Cam displacement at the valve k h [m] and its derivative k dh/dtheta [m/rad] on one revolution
-        sampled every dtheta / per_step (periodic; L = steps_per_rev * per_step).
-    per_step : int
-        Excitation samples per recording step (2 x the largest sub-step count).
-    steps_per_rev : int
-        Recording steps per revolution, 2 pi / dtheta.
-    revolutions : int
-        Camshaft revolutions integrated; the last one is recorded.
-    inv_mass, x_init : ndarray (n,)
-        Inverse node masses [1/kg] and initial positions [m] (the train starts at rest).
-    a, b, k, d, gap, pre, uni : ndarray (E,)
-        Element end nodes, stiffness [N/m], damping [N s/m], gap [m], preload [N], unilateral flag.
-    rec_nodes, rec_elems : ndarray of int
-        Nodes whose position and velocity, and elements whose force, are recorded.
-    clash_gap : ndarray (E,)
-        Closing distance of a coil element to coil contact [m] (0: not monitored).
-    surge_ref : int
-        Node of the valve; ``surge_w`` (n,) the quasi-static share of its motion for each coil node (0: none).
-    out_x, out_v : ndarray (S, len(rec_nodes), steps_per_rev)
-    out_f : ndarray (S, len(rec_elems), steps_per_rev)
-    out_clash : ndarray (S, E)
-        Smallest coil-contact margin [m] over the last revolution (inf where not monitored).
-    out_surge : ndarray (S, n)
-        Largest deviation of each coil node from its quasi-static share of the valve motion [m].
+    >>> [r.tolist() for r in rows(np.array([CAM, 0]), np.array([0, GROUND]), 1)]
+    [[2, 0], [0, 1]]
     """
-    n = inv_mass.size
-    ra, rb = _rows(a, b, n)
-    order, start, seq = blocks(n_sub)
-    for q in prange(seq.size):
-        j = seq[q]
-        idx = order[start[j]:start[j + 1]]
-        _block(idx, omegas, n_sub[idx[0]], dtheta, cam_u, cam_du, per_step, steps_per_rev, revolutions,
-               inv_mass, x_init, ra, rb, k, d, gap, pre, uni, rec_nodes, rec_elems, clash_gap, surge_ref,
-               surge_w, out_x, out_v, out_f, out_clash, out_surge)
+    ra = np.where(a == CAM, n + 1, np.where(a == GROUND, n, a)).astype(np.int64)
+    return ra, np.where(b == GROUND, n, b).astype(np.int64)

@@ -398,18 +398,42 @@ class MultiMassTrain:
         return net.build(x_valve, valve, self.rocker_ratio)
 
 
-def natural_frequencies(network, held=()):
-    """Natural frequencies of a network with every contact closed and no damping [rad/s], ascending.
+def natural_modes(network, held=(), opened=()):
+    r"""Natural frequencies [rad/s, ascending] and mode shapes of a network without damping.
 
     Parameters
     ----------
     network : Network
     held : sequence of str
         Names of nodes held fixed (e.g. ``("valve",)`` for the surge modes of the springs alone).
+    opened : sequence of str
+        Names of elements left open (e.g. ``("seat",)`` for the train with the valve off its seat); every other
+        contact is closed.
+
+    Returns
+    -------
+    frequencies : ndarray (m,)
+    shapes : ndarray (n, m)
+        Column j: the displacement of every node in mode j (0 on a held node), the largest 1 in magnitude.
 
     Notes
     -----
-    Eigenvalues of :math:`\\mathbf M^{-1/2}\\mathbf K\\mathbf M^{-1/2}` with K from :meth:`Network.matrix`.
+    Eigenpairs of :math:`\mathbf M^{-1/2}\mathbf K\mathbf M^{-1/2}` with K from :meth:`Network.matrix`; a shape
+    is :math:`\mathbf M^{-1/2}` times the eigenvector.
+    """
+    k = network.matrix(np.where(np.isin(network.elements, opened), 0.0, network.stiffness))
+    free = np.array([name not in held for name in network.names])
+    scale = 1.0 / np.sqrt(network.mass[free])
+    values, vectors = np.linalg.eigh(scale[:, None] * k[np.ix_(free, free)] * scale[None, :])
+    shapes = np.zeros((network.mass.size, values.size))
+    shapes[free] = scale[:, None] * vectors
+    peak = shapes[np.abs(shapes).argmax(axis=0), np.arange(values.size)]
+    return np.sqrt(np.clip(values, 0.0, None)), shapes / peak
+
+
+def natural_frequencies(network, held=()):
+    """Natural frequencies of a network with every contact closed and no damping [rad/s], ascending
+    (:func:`natural_modes`).
 
     Examples
     --------
@@ -419,10 +443,7 @@ def natural_frequencies(network, held=()):
     >>> bool(np.isclose(natural_frequencies(net)[0], np.sqrt((15e6 + 67.5e3 + 2e8) / 0.25)))
     True
     """
-    k = network.matrix(network.stiffness)
-    free = np.array([name not in held for name in network.names])
-    scale = 1.0 / np.sqrt(network.mass[free])
-    return np.sqrt(np.clip(np.linalg.eigvalsh(scale[:, None] * k[np.ix_(free, free)] * scale[None, :]), 0.0, None))
+    return natural_modes(network, held)[0]
 
 
 def pushrod_stiffness(length, diameter, bore=0.0, modulus=STEEL_MODULUS):

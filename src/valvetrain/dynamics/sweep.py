@@ -2,28 +2,34 @@
 
 Camshaft speeds are camshaft rad/s inside; camshaft angles are rad from the cam nose (the
 law's convention, :mod:`valvetrain.laws.base`).  Every speed starts at rest on the seat at
-the angle opposite the nose, runs ``revolutions`` camshaft revolutions so that the residual
-vibration of the previous event is included, and the last revolution is recorded.
+the angle opposite the nose and runs camshaft revolutions until its state at the start of a
+revolution repeats (so that the residual vibration of the previous event is included), at most
+``revolutions`` of them; the last revolution is recorded.
 
 Events (Shang Hanji (1988), sections 3.1-3.2):
 
-* follower separation (jump, 飞脱): the cam contact force is zero while the rigid valve
-  lift k h - x0 is positive and the valve is off its seat, before the first seating;
-* first seating: the first downward crossing of y = 0 after the valve's largest lift; the
-  seating velocity is dy/dt there;
+* follower separation (jump, 飞脱): the cam contact force is zero and the valve at or above the
+  cam while the cam's lift is positive (the rigid valve lift k h - x0 > 0), from the start of the
+  cam's lift to the valve's first return to its seat; the jump speed of a sweep is the zero of the smallest such contact force,
+  interpolated between the speeds;
+* first seating: the first downward crossing of y = 0 after the valve's largest lift, located
+  inside the step by carrying the last free state to y = 0; the seating velocity is dy/dt there;
 * bounce (落座反跳): every return of the valve above ``bounce_tolerance`` after the first
-  seating; its height is the largest lift after the first seating;
+  seating; its height is the largest lift after the first seating; the bounce onset speed of a
+  sweep is where that height crosses ``bounce_tolerance``, interpolated between the speeds;
 * spring surge: the largest deviation of each coil mass from its quasi-static share of the
   valve motion, and the coil clash margin (closing gap minus the compression of a coil
   segment; negative: adjacent coils meet).
 """
 
+from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
+import sys
 
 import numpy as np
-from numba import parallel_chunksize
+from numba import get_num_threads
 
-from .kernels import integrate_network
+from .kernels import blocks, integrate_block, rows
 
 STEP_LIMIT = 1.0
 """Largest |lambda| dt of the explicit integrator (|lambda|: spectral radius of the train's state matrix,
@@ -32,6 +38,11 @@ mode at omega dt = 1 by 0.7 % a step (Hairer, Nørsett and Wanner (1993), sectio
 
 BOUNCE_TOLERANCE = 1e-6
 """Lift above the seat that counts as a bounce [m] (1 um: below it the valve rocks on the seat's elasticity)."""
+
+STATE_TOLERANCE = 1e-9
+"""A speed's motion repeats when its state at the end of a camshaft revolution differs from the state at its start
+by no more than 1 nm in every position (and 1 nm times the spectral radius of the train in every velocity) [m]: a
+thousandth of the 1 um lift accuracy of the integrator, and 0.015 N of force on a 15000 N/mm drive."""
 
 
 def substeps(highest_frequency, cam_speeds, step):
@@ -96,13 +107,21 @@ class SpeedResult:
     seating_angle, seating_velocity : float
         Angle [rad] and dy/dt [m/s] at the first seating (nan if the valve never opens).
     bounce_height : float
-        Largest lift after the first seating [m] (0 without bounce).
+        Largest lift after the first seating [m] (0 if the valve stays on its seat; continuous in the speed, also
+        below the bounce tolerance).
     bounce_count : int
         Returns of the valve above the bounce tolerance after the first seating.
     surge_amplitude : ndarray (N,)
         Largest deviation of each coil mass from its quasi-static share of the valve motion [m].
     clash_margin : float
         Smallest coil closing margin [m] (inf: not monitored; negative: coil clash).
+    min_contact_force : float
+        Smallest cam contact force while the cam carries the open valve [N] (:func:`lowest_lifting_force`; 0 with a
+        jump).
+    revolutions : int
+        Camshaft revolutions after which the motion repeated (the cap if it did not).
+    converged : bool
+        The motion repeated before the cap (:data:`STATE_TOLERANCE`).
     """
 
     cam_speed: float
@@ -122,6 +141,9 @@ class SpeedResult:
     bounce_count: int
     surge_amplitude: np.ndarray
     clash_margin: float
+    min_contact_force: float = np.nan
+    revolutions: int = 1
+    converged: bool = True
 
     @property
     def lift_error(self):
@@ -149,11 +171,26 @@ def runs(mask):
     return np.column_stack([np.flatnonzero(edges == 1), np.flatnonzero(edges == -1)])
 
 
-def seating(theta, lift, velocity):
+def seating(theta, lift, velocity, acceleration=None, step_time=None):
     """First downward crossing of y = 0 after the largest lift: (index, angle [rad], velocity [m/s]).
 
-    The angle and velocity are interpolated linearly between the samples; (n, nan, nan) if the valve does not
-    open or does not return within the record.
+    ``index`` is the first sample at or below the seat.  With ``acceleration`` [m/s^2] and ``step_time`` (the time
+    between samples [s]) the last free state (the sample before, off the seat) is carried to y = 0 by its Taylor
+    series y + v t + a t^2/2 + j t^3/6, the jerk j from the two free samples before the crossing; the sample inside
+    the stiff seat, already slowed by it, is not used.  Without them the angle and velocity are interpolated
+    linearly between the samples.  (n, nan, nan) if the valve does not open or does not return within the record.
+
+    Examples
+    --------
+    A valve closing at a steady 0.3 m/s, sampled every 10 us; the sample inside the seat is already slowed to
+    0.1 m/s, which a linear interpolation would mix in:
+
+    >>> y, v = np.array([1e-3, 5e-6, 2e-6, -1e-6]), np.array([0.0, -0.3, -0.3, -0.1])
+    >>> i, angle, vel = seating(1e-5 * np.arange(4), y, v, np.zeros(4), 1e-5)
+    >>> i, round(angle * 1e5, 9), round(vel, 12)
+    (3, 2.666666667, -0.3)
+    >>> round(seating(1e-5 * np.arange(4), y, v)[2], 12)
+    -0.166666666667
     """
     top = int(np.argmax(lift))
     if lift[top] <= 0.0:
@@ -163,8 +200,17 @@ def seating(theta, lift, velocity):
         return lift.size, np.nan, np.nan
     i = top + int(below[0])
     w = lift[i - 1] / (lift[i - 1] - lift[i])
-    return i, float(theta[i - 1] + w * (theta[i] - theta[i - 1])), float(velocity[i - 1] + w * (velocity[i] -
-                                                                                             velocity[i - 1]))
+    if acceleration is None:
+        return i, float(theta[i - 1] + w * (theta[i] - theta[i - 1])), float(velocity[i - 1] + w * (velocity[i] -
+                                                                                                 velocity[i - 1]))
+    h = float(step_time)
+    y, v, a = float(lift[i - 1]), float(velocity[i - 1]), float(acceleration[i - 1])
+    jerk = (a - float(acceleration[i - 2])) / h if i >= 2 and lift[i - 2] > 0.0 else 0.0
+    roots = np.roots([jerk / 6.0, a / 2.0, v, y]) if jerk else np.roots([a / 2.0, v, y])
+    real = np.sort(roots[np.isreal(roots)].real)
+    real = real[(real > 0.0) & (real <= 2.0 * h)]
+    t = real[0] if real.size else w * h
+    return i, float(theta[i - 1] + t / h * (theta[i] - theta[i - 1])), float(v + a * t + 0.5 * jerk * t * t)
 
 
 def bounce(lift, first_seating, tolerance=BOUNCE_TOLERANCE):
@@ -180,18 +226,135 @@ def bounce(lift, first_seating, tolerance=BOUNCE_TOLERANCE):
     return (float(max(after.max(), 0.0)) if returns.size else 0.0), len(returns)
 
 
+def lift_event(kinematic, lift):
+    """Mask of the cam's lift event as the valve lives it: from the first angle where the cam's lift is positive to
+    the valve's first return to its seat after it (a downward crossing of y = 0), or to the end of the record.
+
+    A valve that rebounds from its seat after that return bounces; before it, the cam should be carrying the valve.
+
+    >>> lift_event(np.array([-1.0, 1.0, 2.0, 1.0, 0.5, -1.0]), np.array([0.0, 0.5, 1.5, 0.2, -0.1, 0.3])).tolist()
+    [False, True, True, True, False, False]
+    """
+    index = np.arange(lift.size)
+    rising = np.flatnonzero(kinematic > 0.0)
+    if rising.size == 0:
+        return np.zeros(lift.size, dtype=bool)
+    start = int(rising[0])
+    down = np.flatnonzero((lift[1:] <= 0.0) & (lift[:-1] > 0.0) & (index[1:] > start)) + 1
+    end = int(down[0]) if down.size else lift.size
+    return (index >= start) & (index < end)
+
+
+def separation_mask(contact, kinematic, lift):
+    """Follower separation (jump): no contact force, and the valve at or above the cam, while the cam's lift is
+    positive during the lift event (:func:`lift_event`).
+
+    Only the cam's lift decides whether the cam should be carrying the valve: a valve thrown above the cam, or one
+    that never comes down to it while the cam lifts, has jumped; a valve that rebounds from its seat after the event
+    has returned it there bounces, it does not jump.  The valve must be at or above the cam's rigid lift (the
+    contact's gap open): a contact whose damping releases it an instant before the gap opens has not separated.
+
+    >>> separation_mask(np.array([0.0, 0.0, 5.0, 0.0, 0.0]), np.array([-1e-4, 1e-3, 1e-3, 3e-6, 2e-6]),
+    ...                 np.array([1e-4, 2e-3, 1e-3, -1e-7, 4e-6])).tolist()
+    [False, True, False, False, False]
+    """
+    return (contact <= 0.0) & (kinematic > 0.0) & (lift >= kinematic) & lift_event(kinematic, lift)
+
+
+def lowest_lifting_force(contact, kinematic, lift, separated):
+    """Smallest cam contact force while the cam carries the open valve [N]: 0 with a separation, else the least where
+    the cam's lift is positive and the valve is off its seat during the lift event (:func:`lift_event`; after it
+    the cam lowers the seated valve to its base circle and the force falls to 0 without a separation); nan if the
+    valve never leaves its seat while the cam lifts.
+
+    >>> float(lowest_lifting_force(np.array([300.0, 50.0, 80.0, 2.0, 1.0]), np.array([-1e-4, 1e-3, 2e-3, 2e-6, 1e-6]),
+    ...                            np.array([0.0, 1e-3, 2e-3, -1e-7, 1e-7]), False))
+    50.0
+    """
+    if separated:
+        return 0.0
+    lifting = (kinematic > 0.0) & (lift > 0.0) & lift_event(kinematic, lift)
+    return float(contact[lifting].min()) if lifting.any() else np.nan
+
+
 def speed_result(cam_speed, theta, lift, velocity, kinematic, contact, seat, spring, slope, surge, clash,
-                 bounce_tolerance=BOUNCE_TOLERANCE):
+                 bounce_tolerance=BOUNCE_TOLERANCE, acceleration=None, revolutions=1, converged=True):
     """Events of one speed from its recorded revolution (see the module docstring for the definitions)."""
-    i_seat, seat_angle, seat_velocity = seating(theta, lift, velocity)
-    before = np.arange(theta.size) < i_seat
-    separation = (contact <= 0.0) & (kinematic > 0.0) & (lift > 0.0) & before
+    step_time = float(theta[1] - theta[0]) / cam_speed
+    i_seat, seat_angle, seat_velocity = seating(theta, lift, velocity, acceleration, step_time)
+    separation = separation_mask(contact, kinematic, lift)
     intervals = runs(separation)
     jumps = np.column_stack([theta[intervals[:, 0]], theta[intervals[:, 1] - 1]]) if intervals.size else \
         np.zeros((0, 2))
-    height, count = bounce(lift, i_seat, bounce_tolerance)
+    count = bounce(lift, i_seat, bounce_tolerance)[1]
+    height = float(max(lift[i_seat:].max(), 0.0)) if i_seat < lift.size else 0.0
     return SpeedResult(float(cam_speed), theta, lift, velocity, kinematic, contact, seat, spring, contact * slope,
-                       separation, jumps, seat_angle, seat_velocity, height, count, surge, clash)
+                       separation, jumps, seat_angle, seat_velocity, height, count, surge, clash,
+                       lowest_lifting_force(contact, kinematic, lift, intervals.size > 0),
+                       int(revolutions), bool(converged))
+
+
+def zero_crossing(speeds, values, hit):
+    """The speed where a quantity reaches its limit, interpolated between the speeds of a sweep.
+
+    Parameters
+    ----------
+    speeds : ndarray (S,)
+        Ascending speeds.
+    values : ndarray (S,)
+        The quantity less its limit: positive where the limit is not reached.
+    hit : ndarray (S,) of bool
+        Where the limit is reached (the event happens).
+
+    Returns
+    -------
+    float
+        nan if no speed has the event; the lowest speed if the first has it; else the zero of the smooth trend of
+        ``values`` through the last speeds without the event (a parabola through three, a line through two), kept
+        between the last speed without the event and the first with it (the trend of the speeds above is not
+        smooth: an event clamps the quantity, e.g. a contact force at 0).
+
+    Examples
+    --------
+    A force 400 - 0.01 w^2 [N] (zero at w = 200) sampled every 15 rad/s:
+
+    >>> w = np.arange(140.0, 260.0, 15.0)
+    >>> f = 400.0 - 0.01 * w**2
+    >>> round(zero_crossing(w, np.maximum(f, 0.0), f <= 0.0), 9)
+    200.0
+    """
+    first = np.flatnonzero(hit)
+    if first.size == 0:
+        return np.nan
+    i = int(first[0])
+    if i == 0:
+        return float(speeds[0])
+    fit = np.arange(max(0, i - 3), i)
+    fit = fit[np.isfinite(values[fit])]
+    if fit.size < 2 or fit[-1] != i - 1:
+        return float(speeds[i])
+    x0 = speeds[i - 1]
+    roots = np.roots(np.polyfit(speeds[fit] - x0, values[fit], fit.size - 1))
+    real = roots[np.isreal(roots)].real + x0
+    inside = real[(real >= x0) & (real <= speeds[i])]
+    return float(inside.min()) if inside.size else float(speeds[i])
+
+
+def level_crossing(speeds, values, level):
+    """The lowest speed where ``values`` rises above ``level``, linear between the two speeds around it (nan: none;
+    the lowest speed if it is already above).
+
+    >>> level_crossing(np.array([10.0, 20.0, 30.0]), np.array([0.0, 1e-6, 3e-6]), 2e-6)
+    25.0
+    """
+    above = np.flatnonzero(values > level)
+    if above.size == 0:
+        return np.nan
+    i = int(above[0])
+    if i == 0:
+        return float(speeds[0])
+    w = (level - values[i - 1]) / (values[i] - values[i - 1])
+    return float(speeds[i - 1] + w * (speeds[i] - speeds[i - 1]))
 
 
 @dataclass(frozen=True)
@@ -203,11 +366,11 @@ class SweepResult:
     cam_speeds : ndarray (S,)
         [rad/s].
     theta : ndarray (n,)
-        Camshaft angle of the last revolution [rad from the nose].
+        Camshaft angle of the recorded revolution [rad from the nose].
     kinematic_lift : ndarray (n,)
         Rigid valve lift k h - x0 [m].
-    lift, velocity, contact_force, seat_force, spring_force : ndarray (S, n)
-        As in :class:`SpeedResult`.
+    lift, velocity, acceleration, contact_force, seat_force, spring_force : ndarray (S, n)
+        As in :class:`SpeedResult`; the valve acceleration [m/s^2].
     slope : ndarray (n,)
         dh/dtheta of the law [m/rad] (for the torque).
     surge_amplitude : ndarray (S, N)
@@ -216,6 +379,10 @@ class SweepResult:
         Smallest coil closing margin [m].
     substeps : ndarray (S,)
         Integrator sub-steps per angle step used for each speed.
+    revolutions : ndarray (S,) of int
+        Camshaft revolutions after which each speed repeated (the cap where it did not).
+    converged : ndarray (S,) of bool
+        The speed repeated within :data:`STATE_TOLERANCE` before the cap.
     """
 
     cam_speeds: np.ndarray
@@ -223,6 +390,7 @@ class SweepResult:
     kinematic_lift: np.ndarray
     lift: np.ndarray
     velocity: np.ndarray
+    acceleration: np.ndarray
     contact_force: np.ndarray
     seat_force: np.ndarray
     spring_force: np.ndarray
@@ -230,13 +398,16 @@ class SweepResult:
     surge_amplitude: np.ndarray
     clash_margin: np.ndarray
     substeps: np.ndarray
+    revolutions: np.ndarray
+    converged: np.ndarray
     bounce_tolerance: float = BOUNCE_TOLERANCE
 
     def speed(self, i):
         """The :class:`SpeedResult` of the i-th speed."""
         return speed_result(self.cam_speeds[i], self.theta, self.lift[i], self.velocity[i], self.kinematic_lift,
                             self.contact_force[i], self.seat_force[i], self.spring_force[i], self.slope,
-                            self.surge_amplitude[i], float(self.clash_margin[i]), self.bounce_tolerance)
+                            self.surge_amplitude[i], float(self.clash_margin[i]), self.bounce_tolerance,
+                            self.acceleration[i], self.revolutions[i], self.converged[i])
 
     def per_speed(self):
         """Every :class:`SpeedResult` of the sweep."""
@@ -252,31 +423,78 @@ class SweepResult:
         """Map of the camshaft drive torque F dh/dtheta [N m], shape (S, n)."""
         return self.contact_force * self.slope
 
-    def headline(self):
+    def headline(self, results=None):
         """Jump speed, bounce onset speed and the largest seating speed of the sweep.
+
+        Parameters
+        ----------
+        results : list of SpeedResult, optional
+            :meth:`per_speed`, if already computed.
 
         Returns
         -------
         dict
-            ``jump_speed`` and ``bounce_onset_speed``: the lowest camshaft speed [rad/s] with a follower
-            separation / a bounce (nan if none); ``max_seating_velocity``: the largest |dy/dt| at seating
-            [m/s] and ``max_seating_velocity_speed`` where it occurs; ``coil_clash_speed``: the lowest speed
-            whose coils meet (nan if none).
+            ``jump_speed``: the camshaft speed [rad/s] where the smallest contact force while the cam lifts
+            (:func:`lowest_lifting_force`) reaches zero, interpolated between the speeds (:func:`zero_crossing`);
+            ``bounce_onset_speed``: where the bounce height (continuous in the speed) first exceeds the bounce
+            tolerance, linear between the speeds (nan if none): unlike the first speed with a counted bounce, it
+            does not move with the angle step; ``max_seating_velocity``: the largest |dy/dt| at seating [m/s] and
+            ``max_seating_velocity_speed`` where it occurs; ``coil_clash_speed``: the lowest speed whose coils
+            meet (nan if none).
         """
-        results = self.per_speed()
-        jump = [r.cam_speed for r in results if r.jump_intervals.size]
-        bounce = [r.cam_speed for r in results if r.bounce_count]
+        results = self.per_speed() if results is None else results
+        force = np.array([r.min_contact_force for r in results])
+        jumped = np.array([r.jump_intervals.size > 0 for r in results])
+        height = np.array([r.bounce_height for r in results])
         seat = np.array([abs(r.seating_velocity) for r in results])
         clash = self.cam_speeds[self.clash_margin < 0.0]
         worst = int(np.nanargmax(seat)) if np.isfinite(seat).any() else None
-        return {"jump_speed": min(jump, default=np.nan), "bounce_onset_speed": min(bounce, default=np.nan),
+        return {"jump_speed": zero_crossing(self.cam_speeds, force, jumped),
+                "bounce_onset_speed": level_crossing(self.cam_speeds, height, self.bounce_tolerance),
                 "max_seating_velocity": float(seat[worst]) if worst is not None else np.nan,
                 "max_seating_velocity_speed": float(self.cam_speeds[worst]) if worst is not None else np.nan,
                 "coil_clash_speed": float(clash.min()) if clash.size else np.nan}
 
 
-def sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, progress=None, chunk=25,
-          bounce_tolerance=BOUNCE_TOLERANCE):
+def _notify_compile():
+    """Say once on stderr that the kernels are being compiled, when no compiled or cached kernel is at hand."""
+    global _COMPILE_NOTIFIED
+    if _COMPILE_NOTIFIED or integrate_block.signatures:
+        return
+    _COMPILE_NOTIFIED = True
+    try:
+        cached = bool(integrate_block._cache._cache_file._load_index())   # numba's cache index of this kernel
+    except (AttributeError, OSError):
+        cached = False
+    if not cached:
+        print("compiling the dynamics kernels (once; later runs load them from the cache) ...", file=sys.stderr,
+              flush=True)
+
+
+_COMPILE_NOTIFIED = False
+
+
+def sweep_size(network, cam_speeds, revolutions, step_deg):
+    """Work and memory of a sweep before it runs: (integrator steps x elements, bytes of the recorded maps).
+
+    The work counts every sub-step of every speed for ``revolutions`` (the cap: a speed that repeats stops
+    earlier) times the elements of the network; the memory is the recorded revolution of every speed (position,
+    velocity, acceleration and the forces of the contact, the seat and the springs, 8 bytes each).
+
+    >>> from .models import one_mass_train
+    >>> sweep_size(one_mass_train(0.25, 15e6, 67.5e3, 400.0).network(), [300.0, 400.0], 3, 0.1)
+    (64800, 345600)
+    """
+    steps = int(round(360.0 / step_deg))
+    n_sub = substeps(network.highest_frequency(), np.atleast_1d(np.asarray(cam_speeds, dtype=float)),
+                     np.radians(step_deg))
+    recorded = 3 + 2 + len(network.spring_elements)
+    return (int(n_sub.sum()) * steps * int(revolutions) * network.a.size,
+            n_sub.size * steps * recorded * 8)
+
+
+def sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, progress=None, bounce_tolerance=BOUNCE_TOLERANCE,
+          tolerance=STATE_TOLERANCE):
     """Simulate an elastic train on a lift law at every camshaft speed of a sweep.
 
     Parameters
@@ -288,17 +506,19 @@ def sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, progress=None, ch
     cam_speeds : array_like
         Camshaft speeds [rad/s] (engine rpm: omega = pi n / 30 / 2 for a four-stroke).
     revolutions : int
-        Camshaft revolutions per speed; the last is recorded (the earlier ones settle the residual vibration).
+        Most camshaft revolutions per speed: a speed stops once its state at the start of a revolution repeats
+        within :data:`STATE_TOLERANCE` (``SweepResult.revolutions`` says after how many), else after this many;
+        the last revolution is recorded.
     step_deg : float
         Recording and base integration step [camshaft deg]; it must divide 360.  Slow speeds integrate with
         sub-steps (:func:`substeps`).
     progress : callable, optional
-        ``progress(done, total)`` after each chunk of speeds (the compiled kernel itself never calls Python).
-    chunk : int
-        Speeds per kernel call when ``progress`` is given (without it, one call integrates every speed: the
-        kernel groups the speeds into SIMD blocks and deals them to the threads itself).
+        ``progress(done, total)`` after each block of speeds (the compiled kernel itself never calls Python).
     bounce_tolerance : float
         Lift that counts as a bounce [m].
+    tolerance : float
+        Largest change of the state over a revolution at which a speed repeats [m] (:data:`STATE_TOLERANCE`; a
+        negative value runs every speed for ``revolutions``).
 
     Returns
     -------
@@ -312,33 +532,50 @@ def sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, progress=None, ch
     if revolutions < 1 or np.any(speeds <= 0.0):
         raise ValueError("sweep: at least one revolution and positive camshaft speeds are needed")
     dtheta = 2.0 * np.pi / steps
-    n_sub = substeps(net.highest_frequency(), speeds, dtheta)
+    rate = net.highest_frequency()
+    n_sub = substeps(rate, speeds, dtheta)
     per_step = 2 * int(n_sub.max())
     theta, u, du = cam_excitation(law, net.rocker_ratio, steps, per_step)
     rec_nodes = np.array([net.valve], dtype=np.int64)
     rec_elems = np.concatenate([[net.cam_element, net.seat_element], net.spring_elements]).astype(np.int64)
     s_count, n_nodes, n_elems = speeds.size, net.mass.size, net.a.size
-    out_x = np.empty((s_count, 1, steps))
-    out_v = np.empty((s_count, 1, steps))
+    out_x, out_v, out_a = (np.empty((s_count, 1, steps)) for _ in range(3))
     out_f = np.empty((s_count, rec_elems.size, steps))
     out_clash = np.empty((s_count, n_elems))
     out_surge = np.empty((s_count, n_nodes))
-    chunk = chunk if progress is not None else s_count
-    for lo in range(0, s_count, chunk):
-        hi = min(lo + chunk, s_count)
-        with parallel_chunksize(1):                   # the threads take the blocks one by one, costliest first
-            integrate_network(speeds[lo:hi], n_sub[lo:hi], dtheta, u, du, per_step, steps, int(revolutions),
-                              1.0 / net.mass, net.x_init, net.a, net.b, net.stiffness, net.damping, net.gap,
-                              net.preload, net.unilateral, rec_nodes, rec_elems, net.clash_gap, net.valve,
-                              net.surge_weight, out_x[lo:hi], out_v[lo:hi], out_f[lo:hi], out_clash[lo:hi],
-                              out_surge[lo:hi])
-        if progress is not None:
-            progress(hi, s_count)
+    out_revs = np.zeros(s_count, dtype=np.int64)
+    ra, rb = rows(net.a, net.b, n_nodes)
+    workers = get_num_threads()
+    order, start, seq = blocks(n_sub, workers)
+    inv_mass = 1.0 / net.mass
+
+    def run(j):
+        idx = order[start[j]:start[j + 1]]
+        integrate_block(idx, speeds, int(n_sub[idx[0]]), dtheta, u, du, per_step, steps, int(revolutions),
+                        tolerance, rate, inv_mass, net.x_init, ra, rb, net.stiffness, net.damping, net.gap,
+                        net.preload, net.unilateral, net.seat_element, rec_nodes, rec_elems, net.clash_gap, net.valve,
+                        net.surge_weight, out_x, out_v, out_a, out_f, out_clash, out_surge, out_revs)
+        return idx.size
+
+    _notify_compile()
+    if seq.size == 1 or workers == 1:
+        done = 0
+        for j in seq:
+            done += run(j)
+            if progress is not None:
+                progress(done, s_count)
+    else:
+        with ThreadPoolExecutor(min(workers, seq.size)) as pool:
+            done = 0
+            for size in pool.map(run, seq):
+                done += size
+                if progress is not None:
+                    progress(done, s_count)
     coils = net.surge_weight > 0.0
-    return SweepResult(speeds, theta[::per_step], u[::per_step] - net.lash, out_x[:, 0], out_v[:, 0],
+    return SweepResult(speeds, theta[::per_step], u[::per_step] - net.lash, out_x[:, 0], out_v[:, 0], out_a[:, 0],
                        net.rocker_ratio * out_f[:, 0], out_f[:, 1], -out_f[:, 2:].sum(axis=1),
                        du[::per_step] / net.rocker_ratio, out_surge[:, coils], out_clash.min(axis=1), n_sub,
-                       bounce_tolerance)
+                       np.where(out_revs > 0, out_revs, int(revolutions)), out_revs > 0, bounce_tolerance)
 
 
 def simulate(law, train, cam_speed, revolutions=3, step_deg=0.1, bounce_tolerance=BOUNCE_TOLERANCE):

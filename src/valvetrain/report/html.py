@@ -196,7 +196,8 @@ def _fit_reason(rec, t):
 
 
 DYNAMICS_HEADLINE = ["speed_range_rpm", "speeds", "jump_speed_rpm", "bounce_speed_rpm", "max_seating_velocity_m_s",
-                     "max_seating_velocity_speed_rpm", "coil_clash_speed_rpm", "epsilon", "natural_frequency_Hz"]
+                     "max_seating_velocity_speed_rpm", "coil_clash_speed_rpm", "epsilon", "natural_frequency_Hz",
+                     "natural_frequencies_Hz", "max_revolutions", "unsettled_speeds"]
 
 
 def _dynamics(rec):

@@ -209,11 +209,15 @@ class Dynamics(_Model):
     """[valves.NAME.dynamics]: the elastic valve train over a speed range (Shang Hanji 1988, ch. 3).
 
     A key left out is estimated from what the specification has (the reduced mass, the designed
-    spring, the part geometry of [parts]); results.json states each estimate.  ``mass_kg``,
-    ``spring_rate_N_per_mm`` and ``spring_preload_N`` replace the reduced mass and the designed spring in
-    the dynamics alone (a train given as a whole, e.g. a published worked example); a preload given
-    without a rate sizes the rate as Valve-train dynamics article (n.d.), step 4a:
-    (K_3 M |j_min| - P_0) / h_max with K_3 = drive.spring_reserve at the rated speed."""
+    spring, the part geometry of [parts]); results.json states each estimate.  ``spring_rate_N_per_mm``
+    and ``spring_preload_N`` replace the designed spring in the dynamics alone, in either model (a train
+    given as a whole, e.g. a published worked example); a preload given without a rate sizes the rate as
+    Valve-train dynamics article (n.d.), step 4a: (K_3 M |j_min| - P_0) / h_max with K_3 =
+    drive.spring_reserve at the rated speed.  ``mass_kg`` replaces the one-mass train's reduced mass; the
+    multi-mass train takes its drive masses from [drive.masses] and, with ``spring_mass_kg``, a given
+    mass of the active coils.  ``revolutions`` is the most camshaft revolutions a speed runs: it stops
+    once its motion repeats.  A sweep estimated above the limits of work or memory is refused unless
+    ``allow_large_sweep = true``."""
 
     model: Literal["1dof", "multi"] = "1dof"
     drive_stiffness_N_per_mm: Optional[_bounded(100.0, 1e6, "N/mm", low_open=False)] = None
@@ -228,6 +232,8 @@ class Dynamics(_Model):
     mass_kg: Optional[_bounded(0.001, 50.0, "kg", low_open=False)] = None
     spring_rate_N_per_mm: Optional[_bounded(0.0, 1e6, "N/mm", low_open=False)] = None
     spring_preload_N: Optional[_bounded(0.0, 1e6, "N", low_open=False)] = None
+    spring_mass_kg: Optional[_bounded(0.0, 5.0, "kg", low_open=False)] = None
+    allow_large_sweep: bool = False
 
     @model_validator(mode="after")
     def _range_and_step(self):
@@ -239,10 +245,15 @@ class Dynamics(_Model):
         if abs(n - round(n)) > 1e-6:
             problems.append(f"step_cam_deg = {self.step_cam_deg:g} must divide the 360 deg camshaft revolution into "
                             "whole steps (0.05, 0.1, 0.2, 0.25, 0.5, 1, ...)")
-        given = [k for k in ("mass_kg", "spring_rate_N_per_mm", "spring_preload_N") if getattr(self, k) is not None]
-        if given and self.model == "multi":
-            problems.append(f"{', '.join(given)}: a one-mass train's (model = \"1dof\"); the multi-mass train takes "
-                            "its masses from [drive.masses] and its springs from the spring design")
+        if self.mass_kg is not None and self.model == "multi":
+            problems.append("mass_kg: a one-mass train's (model = \"1dof\"); the multi-mass train takes its masses "
+                            "from [drive.masses] and spring_mass_kg")
+        if self.spring_mass_kg is not None and self.model == "1dof":
+            problems.append("spring_mass_kg: the multi-mass train's coil mass (model = \"multi\"); a one-mass train "
+                            "takes the spring's share in mass_kg")
+        if self.spring_rate_N_per_mm == 0.0 and self.spring_preload_N == 0.0:
+            problems.append("spring_rate_N_per_mm = 0 and spring_preload_N = 0: no valve spring, nothing returns the "
+                            "valve to its cam or its seat; give a rate or a preload above 0")
         if problems:
             raise ValueError("; ".join(problems))
         return self
