@@ -266,3 +266,28 @@ def test_ctrl_c_while_importing_is_one_line_and_status_130():
         outcomes.append((proc.returncode, out, err))
         assert (proc.returncode, err) in ((130, "error: interrupted\n"), (0, "")), (moment, err)
     assert sum(rc == 130 for rc, _, _ in outcomes) >= 5
+
+
+SIGINT_IN_A_CALLBACK = """
+import signal, sys, time, weakref
+from valvetrain.console import Interruption
+Interruption.install(Interruption.interrupt)
+class Part:
+    pass
+part = Part()
+ref = weakref.ref(part, lambda _: signal.raise_signal(signal.SIGINT))
+try:
+    del part           # the callback runs now, and the SIGINT's KeyboardInterrupt is raised inside it
+    time.sleep(5)      # the command's work goes on
+    sys.exit("not interrupted")
+except KeyboardInterrupt:
+    print("interrupted")
+"""
+
+
+def test_a_sigint_during_a_weakref_callback_still_interrupts():
+    """A SIGINT that came while the garbage collector ran a weakref callback was printed as 'Exception ignored ...
+    KeyboardInterrupt' and lost: the run went on and ended with status 0 (seen in test_output_folder's interrupted
+    runs). Provoked deterministically here: the KeyboardInterrupt is delivered again and interrupts the work."""
+    proc = subprocess.run([sys.executable, "-c", SIGINT_IN_A_CALLBACK], capture_output=True, text=True, timeout=60)
+    assert (proc.returncode, proc.stdout, proc.stderr) == (0, "interrupted\n", "")

@@ -8,6 +8,7 @@ the handler raises KeyboardInterrupt and remembers the SIGINT, so that an error 
 interruption too (:class:`valvetrain.cli._Main`).  This module imports nothing of the package at the top.
 """
 
+import _thread
 import os
 import signal
 import sys
@@ -29,10 +30,24 @@ class Interruption:
         raise KeyboardInterrupt
 
     @classmethod
+    def redeliver(cls, unraisable):
+        """``sys.unraisablehook``: a KeyboardInterrupt raised where Python cannot pass it on (the SIGINT came while a
+        weakref callback or a finaliser ran, e.g. in the garbage collector) is sent to the main thread again, so that
+        it interrupts at the next statement instead of being printed as "Exception ignored" and lost.  Sent from a
+        new thread: sent from this one, the handler would run inside this hook and be lost again."""
+        if isinstance(unraisable.exc_value, KeyboardInterrupt):
+            _thread.start_new_thread(_thread.interrupt_main, ())
+        else:
+            sys.__unraisablehook__(unraisable)
+
+    @classmethod
     def install(cls, handler):
-        """Install ``handler`` unless the SIGINT is handled otherwise already (a caller's own handler, or ignored)."""
+        """Install ``handler`` unless the SIGINT is handled otherwise already (a caller's own handler, or ignored);
+        with :meth:`interrupt`, also :meth:`redeliver` for the KeyboardInterrupts Python cannot raise."""
         if signal.getsignal(signal.SIGINT) in (signal.default_int_handler, cls.record, cls.interrupt):
             signal.signal(signal.SIGINT, handler)
+            if handler == cls.interrupt:
+                sys.unraisablehook = cls.redeliver
 
 
 def interrupted_while_starting():
