@@ -228,14 +228,17 @@ def test_the_report_is_one_file(example_run):
 
 def _console_script():
     """The command the installed ``valvetrain`` script runs, read from pyproject.toml's [project.scripts]: what pip's
-    generated script does (import the entry point, call it), after a line on standard error saying Python is up."""
+    generated script does (import the entry point, call it), after a line on standard error saying Python is up and
+    the entry module's SIGINT record is in place (what program() installs first; a SIGINT before that, while Python
+    itself starts and imports the entry module, is Python's own KeyboardInterrupt, which no program can handle)."""
     import tomllib
     from pathlib import Path
 
     entry = tomllib.loads((Path(__file__).resolve().parents[1] / "pyproject.toml").read_text())["project"]["scripts"]
     module, _, function = entry["valvetrain"].partition(":")
-    return [sys.executable, "-c", f"import sys; sys.stderr.write('up\\n'); sys.stderr.flush(); "
-                                  f"from {module} import {function}; sys.exit({function}())"]
+    return [sys.executable, "-c", f"import sys; from {module} import {function}; from valvetrain.console import "
+                                  "Interruption; Interruption.install(Interruption.record); "
+                                  f"sys.stderr.write('up\\n'); sys.stderr.flush(); sys.exit({function}())"]
 
 
 def test_ctrl_c_while_importing_is_one_line_and_status_130():
