@@ -218,6 +218,16 @@ def test_a_run_without_figures_does_without_matplotlib(tmp_path):
     assert found.stdout.splitlines()[-1] == "False"
 
 
+def test_importing_the_command_line_imports_no_heavy_library():
+    """``valvetrain validate`` or ``--help`` need no solver, spline, DXF writer or plotting: importing the command
+    line leaves scipy.optimize, scipy.interpolate, ezdxf and matplotlib unimported (together about half a second;
+    each is imported where it is used)."""
+    heavy = ("scipy.optimize", "scipy.interpolate", "ezdxf", "matplotlib")
+    code = f"import sys; import valvetrain.cli; print([m for m in {heavy!r} if m in sys.modules])"
+    found = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert found.stdout.splitlines()[-1] == "[]"
+
+
 def test_the_report_is_one_file(example_run):
     """Every figure is embedded in report.html (a PNG data URI), so the report can be mailed alone."""
     out, _ = example_run
