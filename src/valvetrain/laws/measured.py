@@ -23,6 +23,12 @@ BASE_CIRCLE_ACCURACIES = 3.0
 base circle (noise and run-out of the measurement).  A table must start and end in the band and no row may lie
 below it; a fit must stay within it below zero and above the table's largest lift."""
 
+MOST_SCATTER = 0.05
+"""Largest scatter of a table's rows (:func:`noise_level`) as a share of its largest lift.  A smooth lobe sampled
+every 10 cam deg scatters by about 1.6 % of its lift in third differences (a 10 mm lobe over 120 cam deg: a third
+derivative of about 1.6e-4 mm/deg^3 times 10^3 deg^3); a measurement scatters by hundredths of a per cent; a step
+or a flat top, by tens of per cent: no lobe to fit."""
+
 MAX_LIFT_MM = 500.0
 """Largest lift a table may hold [mm], the bound of max_lift_mm: beyond it the table is not in millimetres."""
 
@@ -88,15 +94,18 @@ def noise_level(lift):
 
 
 def interpolation_error(x, y, per_step=8):
-    """How far the lift between a table's rows may leave the range of the rows [same unit as ``y``]: the
-    interpolation error of the angle step, as the rows show it.
+    """How far the lift between a table's rows may leave the range of the rows, below and above [same unit as
+    ``y``]: the interpolation error of the angle step, as the rows show it.
 
     The cubic spline through the rows (scipy's not-a-knot :class:`~scipy.interpolate.CubicSpline`) is the
-    smoothest curve through them; where it goes above the highest row or below the lowest, no fit that follows
-    the rows can be asked to stay inside.  At the foot of a valve-lift table, where the valve leaves its seat with
-    the velocity of the ramp, the lift has a kink: the spline through rows 2 crank deg apart swings below the base
-    circle by about 8 % of the lift the kink's slope makes in one step (1.7 um of tappet lift for the built-in
-    example's valve-lift table, 0.02 mm/cam deg at the tappet), and so does any smooth fit.
+    smoothest curve through them; where it goes below the lowest row, no fit that follows the rows can be asked to
+    stay inside.  At the foot of a valve-lift table, where the valve leaves its seat with the velocity of the ramp,
+    the lift has a kink: the spline through rows 2 crank deg apart swings below the base circle by about 8 % of the
+    lift the kink's slope makes in one step (1.7 um of tappet lift for the built-in example's valve-lift table,
+    0.02 mm/cam deg at the tappet), and so does any smooth fit.  Above, a cam's nose is smooth: between the rows the
+    lift exceeds the highest row by at most a parabola's, |second difference| / 8 at the highest row (the smallest
+    over a run of equal highest rows), and by no more than the spline does; a table with a flat top or a step at
+    its top (no cam's nose) is allowed nothing.
 
     Parameters
     ----------
@@ -107,14 +116,26 @@ def interpolation_error(x, y, per_step=8):
 
     Returns
     -------
-    float
-        The largest excursion of the spline beyond [min y, max y], 0 if none.
+    below, above : float
+        The allowed excursion below the lowest row and above the highest, 0 if none.
+
+    Examples
+    --------
+    A parabolic nose sampled every step: the lift between the rows exceeds the highest row by a quarter step's
+    squared curvature, h = 10 - (u - 0.5)^2 peaks 0.25 above the rows at u = 0 and 1 (9.75):
+
+    >>> u = np.arange(-5.0, 6.0)
+    >>> [round(e, 6) for e in interpolation_error(u, 10.0 - (u - 0.5) ** 2)]
+    [0.0, 0.25]
     """
     from scipy.interpolate import CubicSpline   # imported where used: importing the package costs no scipy
 
     spline = CubicSpline(x, y)
     between = spline(np.linspace(x[0], x[-1], per_step * (x.size - 1) + 1))
-    return float(max(y.min() - between.min(), between.max() - y.max(), 0.0))
+    top = np.flatnonzero(y == y.max())
+    top = top[(top > 0) & (top < y.size - 1)]
+    nose = np.abs(y[top - 1] - 2.0 * y[top] + y[top + 1]).min() / 8.0 if top.size else 0.0
+    return float(max(y.min() - between.min(), 0.0)), float(min(max(between.max() - y.max(), 0.0), nose))
 
 
 def lift_resolution(lift_mm, most_decimals=6):
@@ -528,6 +549,11 @@ class TableLaw(RampedLaw):
         if fit not in FITS:
             raise ValueError(f"fit = {fit!r}: allowed {', '.join(repr(f) for f in FITS)}")
         x, y = np.asarray(angles, dtype=float), np.asarray(lift, dtype=float)
+        scatter = noise_level(y)
+        if scatter > MOST_SCATTER * y.max():
+            raise ValueError(f"the rows scatter by {scatter / 1e-3:.3g} mm (third differences), "
+                             f"{100 * scatter / y.max():.3g} % of the largest lift; allowed up to "
+                             f"{100 * MOST_SCATTER:g} %: no smooth lobe (a step, a flat top, too few rows?)")
         self.angles, self.values, self.accuracy = x, y, float(accuracy)
         self.rows_per_point, self.accuracy_stated = float(rows_per_point), bool(accuracy_stated)
         # N-harmonic fit about the highest point, the smallest N meeting the accuracy
@@ -544,15 +570,15 @@ class TableLaw(RampedLaw):
                                                                                    self.accuracy_stated)
         window = (float(x[0] - self.centre), float(x[-1] - self.centre))
         band = BASE_CIRCLE_ACCURACIES * self.accuracy
-        off_rows = interpolation_error(x, y)          # how far the lift may go beyond the rows between them
-        between = band + off_rows
+        below, above = interpolation_error(x, y)     # how far the lift may go beyond the rows between them
         swing = self.fitted(np.linspace(*window, 8001), "harmonic")[0]
-        bounded = swing.min() >= -between and swing.max() <= y.max() + between
+        bounded = swing.min() >= -(band + below) and swing.max() <= y.max() + band + above
         if fit == "harmonic" and not bounded:
             raise ValueError(f"the N-harmonic fit (N = {n}) swings from {swing.min() / 1e-3:.4g} to "
                              f"{swing.max() / 1e-3:.4g} mm of tappet lift between the rows; allowed "
-                             f"{-between / 1e-3:.4g} to {(y.max() + between) / 1e-3:.4g} mm (the table's range, 3 x "
-                             "accuracy_mm and the interpolation error of the angle step): use fit = \"spline\"")
+                             f"{-(band + below) / 1e-3:.4g} to {(y.max() + band + above) / 1e-3:.4g} mm (the table's "
+                             "range, 3 x accuracy_mm and the interpolation error of the angle step): use "
+                             "fit = \"spline\"")
         self.gcv = {"harmonic": gcv_score(self.harmonic_rms, 2 * n + 1, x.size),
                     "spline": gcv_score(self.spline_rms, spline_dof(x - self.centre, lam), x.size)}
         self.fit, self.choice = choose_fit(fit, bounded, self.harmonic_rms <= self.accuracy, self.gcv)
@@ -560,11 +586,15 @@ class TableLaw(RampedLaw):
         # between the rows the fit used stays within the table's range and reaches its top, as far as it departs
         # from the rows, the noise of the measurement and the interpolation error of the step allow
         resid = np.abs(self.fitted(x - self.centre)[0] - y).max()
-        tol = BASE_CIRCLE_ACCURACIES * max(self.accuracy, noise_level(y)) + resid + off_rows
+        noise = BASE_CIRCLE_ACCURACIES * max(self.accuracy, scatter)
+        tol = noise + resid
         swing = self.fitted(np.linspace(*window, 8001))[0]
-        if swing.min() < -tol or abs(swing.max() - y.max()) > tol:
+        # above the highest row only the noise and the nose's parabola: a smoothing fit may flatten the nose by its
+        # residual, but a lift above what the rows and a smooth nose allow is not what was measured
+        if swing.min() < -(tol + below) or y.max() - swing.max() > tol or swing.max() - y.max() > noise + above:
             raise ValueError(f"the {fit} fit runs from {swing.min() / 1e-3:.4g} to {swing.max() / 1e-3:.4g} mm "
-                             f"against the table's 0 to {y.max() / 1e-3:.4g} mm; allowed +-{tol / 1e-3:.3g} mm (3 x "
+                             f"against the table's 0 to {y.max() / 1e-3:.4g} mm; allowed {-(tol + below) / 1e-3:.3g} "
+                             f"to +{(noise + above) / 1e-3:.3g} mm beyond them (3 x "
                              "the noise, the fit's largest residual and the interpolation error of the angle step): "
                              "no smooth lobe (a flat top, a step, too few rows?)")
         self.start_angle, self.end_angle = lift_event(lambda t: self.fitted(t)[0], *window, band)
