@@ -54,8 +54,10 @@ def _forces(x, v, inv_mass, ra, rb, k, d, gap, pre, uni, acc, force):
     their accelerations stay 0.  The element's case (contact or spring) is decided once per element, and the
     loop over the block's speeds has no branch the compiler cannot turn into a select: it runs in SIMD lanes.
     """
-    bsize = x.shape[1]
-    acc[:, :] = 0.0
+    rows, bsize = x.shape
+    for i in range(rows):
+        for s in range(bsize):
+            acc[i, s] = 0.0
     for e in range(ra.size):
         ia, ib = ra[e], rb[e]
         ke, de, ge = k[e], d[e], gap[e]
@@ -191,7 +193,8 @@ def integrate_block(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_p
     cam_x, cam_v = np.zeros(4), np.zeros((4, bsize))
     om, dt = np.empty(bsize), np.empty(bsize)
     im = np.zeros(rows)
-    im[:n] = inv_mass
+    for i in range(n):
+        im[i] = inv_mass[i]
     for s in range(bsize):
         om[s] = omegas[idx[s]]
         dt[s] = dtheta / (n_sub * om[s])
@@ -225,8 +228,10 @@ def integrate_block(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_p
                 v[cam, s] = cam_v[0, s]
             _forces(x, v, im, ra, rb, k, d, gap, pre, uni, acc[0], force)
             if closing >= 0:
-                xb[:, :] = x
-                vb[:, :] = v
+                for i in range(rows):
+                    for s in range(bsize):
+                        xb[i, s] = x[i, s]
+                        vb[i, s] = v[i, s]
             if step % n_sub == 0:
                 _record(step // n_sub, idx, x, v, acc[0], force, ra, rb, rec_nodes, rec_elems, clash_gap, surge_ref,
                         surge_w, out_x, out_v, out_a, out_f, out_clash, out_surge)
