@@ -27,7 +27,10 @@ speeds of the block in one branch-free loop that the compiler turns into SIMD in
 speed per lane, each lane doing exactly the scalar arithmetic, so the results do not depend on the
 blocking).  The blocks run on threads of the caller (the kernels release the interpreter lock,
 ``nogil=True``), the costliest first; one compiled signature serves every train, and the kernels are
-cached on disk (``cache=True``) so a second process pays no compile time.
+cached on disk (``cache=True``) so a second process pays no compile time.  The first compile is kept short: one
+RK4 body (:func:`_rk4`) serves the lockstep step and the split step, the helpers are compiled without the wrappers
+a call from Python would need, and arrays are copied and cleared by explicit loops (numba's slice assignment
+compiles a generic broadcasting routine, a third of the former compile time).
 
 A speed is integrated until it repeats: after each camshaft revolution its state is compared with
 the state at the start of that revolution, and a block stops once all its speeds repeat (most
