@@ -8,38 +8,18 @@ the largest relative error.  Slow: a minute or more per speed.
 """
 
 import os
+from pathlib import Path
 import sys
 
 import numpy as np
-from scipy.integrate import solve_ivp
+
+sys.path.insert(0, str(Path(__file__).parents[1] / "tests"))
+from reference_dynamics import seat_crossings  # noqa: E402  the tests' independent reference
 
 from valvetrain.design import sweep_designs
 from valvetrain.dynamics.models import one_mass_train
 from valvetrain.dynamics.sweep import sweep
 from valvetrain.specification.validate import load_spec
-
-
-def reference(law, train, omega, revolutions):
-    """Downward y = 0 crossings of the last revolution: (times [s], states)."""
-    k = train.rocker_ratio
-
-    def rhs(t, s):
-        d = law.derivatives(np.array([(omega * t) % (2 * np.pi) - np.pi]))[:2, 0] * k
-        y, v = s
-        gap = d[0] - train.lash - y
-        fc = max(0.0, train.stiffness * gap + train.damping * (omega * d[1] - v)) if gap > 0 else 0.0
-        fs = max(0.0, -train.seat_stiffness * y - train.seat_damping * v) if y < 0 else 0.0
-        return [v, (fc - train.preload - train.spring_rate * y + fs) / train.mass]
-
-    def seat(t, s):
-        return s[0]
-
-    seat.direction = -1
-    period = 2 * np.pi / omega
-    sol = solve_ivp(rhs, (0, revolutions * period), [-train.preload / train.seat_stiffness, 0.0], method="DOP853",
-                    rtol=1e-10, atol=1e-14, max_step=period / 36000, events=seat)
-    last = sol.t_events[0] >= (revolutions - 1) * period
-    return sol.t_events[0][last], sol.y_events[0][last]
 
 
 def main():
@@ -55,7 +35,10 @@ def main():
     worst = 0.0
     for i in range(cam.size):
         r = res.speed(i)
-        times, states = reference(design.law, train, cam[i], int(res.revolutions[i]))
+        revolutions = int(res.revolutions[i])
+        times, states = seat_crossings(design.law, train, cam[i], revolutions, 36000)   # 0.01 cam deg largest step
+        last = times >= (revolutions - 1) * 2 * np.pi / cam[i]
+        times, states = times[last], states[last]
         angles = (times * cam[i]) % (2 * np.pi) - np.pi
         exact = states[np.argmin(np.abs(angles - r.seating_angle)), 1]
         err = 100 * (r.seating_velocity / exact - 1)

@@ -218,6 +218,16 @@ def test_a_run_without_figures_does_without_matplotlib(tmp_path):
     assert found.stdout.splitlines()[-1] == "False"
 
 
+def test_importing_the_command_line_imports_no_heavy_library():
+    """``valvetrain validate`` or ``--help`` need no solver, spline, DXF writer or plotting: importing the command
+    line leaves scipy.optimize, scipy.interpolate, ezdxf and matplotlib unimported (together about half a second;
+    each is imported where it is used)."""
+    heavy = ("scipy.optimize", "scipy.interpolate", "ezdxf", "matplotlib")
+    code = f"import sys; import valvetrain.cli; print([m for m in {heavy!r} if m in sys.modules])"
+    found = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert found.stdout.splitlines()[-1] == "[]"
+
+
 def test_the_report_is_one_file(example_run):
     """Every figure is embedded in report.html (a PNG data URI), so the report can be mailed alone."""
     out, _ = example_run
@@ -228,14 +238,17 @@ def test_the_report_is_one_file(example_run):
 
 def _console_script():
     """The command the installed ``valvetrain`` script runs, read from pyproject.toml's [project.scripts]: what pip's
-    generated script does (import the entry point, call it), after a line on standard error saying Python is up."""
+    generated script does (import the entry point, call it), after a line on standard error saying Python is up and
+    the entry module's SIGINT record is in place (what program() installs first; a SIGINT before that, while Python
+    itself starts and imports the entry module, is Python's own KeyboardInterrupt, which no program can handle)."""
     import tomllib
     from pathlib import Path
 
     entry = tomllib.loads((Path(__file__).resolve().parents[1] / "pyproject.toml").read_text())["project"]["scripts"]
     module, _, function = entry["valvetrain"].partition(":")
-    return [sys.executable, "-c", f"import sys; sys.stderr.write('up\\n'); sys.stderr.flush(); "
-                                  f"from {module} import {function}; sys.exit({function}())"]
+    return [sys.executable, "-c", f"import sys; from {module} import {function}; from valvetrain.console import "
+                                  "Interruption; Interruption.install(Interruption.record); "
+                                  f"sys.stderr.write('up\\n'); sys.stderr.flush(); sys.exit({function}())"]
 
 
 def test_ctrl_c_while_importing_is_one_line_and_status_130():

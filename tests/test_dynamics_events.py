@@ -3,11 +3,11 @@
 from types import SimpleNamespace
 
 import numpy as np
-from scipy.integrate import solve_ivp
 
 from valvetrain.dynamics.models import one_mass_train
 from valvetrain.dynamics.sweep import seating, sweep
 
+from reference_dynamics import seat_crossings
 from test_dynamics import RPM, spec12
 
 
@@ -46,29 +46,6 @@ def test_jump_speed_of_a_harmonic_cam_closed_form():
     assert below.jump_intervals.size == 0 and below.min_contact_force > 0.0   # undamped seat: a bounce, no jump
 
 
-def reference_seating(law, train, omega):
-    """Seating velocity by scipy's DOP853 at rtol 1e-10 with a 0.05 cam deg largest step, the y = 0 crossing located
-    by its event finder: the velocities of every downward crossing in the first revolution from rest, with angles."""
-    k = train.rocker_ratio
-
-    def rhs(t, s):
-        d = law.derivatives(np.array([-np.pi + omega * t]))[:2, 0] * k
-        y, v = s
-        gap = d[0] - train.lash - y
-        fc = max(0.0, train.stiffness * gap + train.damping * (omega * d[1] - v)) if gap > 0 else 0.0
-        fs = max(0.0, -train.seat_stiffness * y - train.seat_damping * v) if y < 0 else 0.0
-        return [v, (fc - train.preload - train.spring_rate * y + fs) / train.mass]
-
-    def seat(t, s):
-        return s[0]
-
-    seat.direction = -1
-    period = 2 * np.pi / omega
-    sol = solve_ivp(rhs, (0, period), [-train.preload / train.seat_stiffness, 0.0], method="DOP853", rtol=1e-10,
-                    atol=1e-14, max_step=period / 7200, events=seat)
-    return sol.t_events[0] * omega - np.pi, sol.y_events[0][:, 1]
-
-
 def test_seating_velocity_against_a_second_integrator():
     """At the default 0.1 cam deg the seating velocity is within 1 % of scipy's DOP853 (rtol 1e-10, largest step 0.05
     cam deg) at every speed; interpolating between the sample above the seat and the one inside it (the former
@@ -79,8 +56,8 @@ def test_seating_velocity_against_a_second_integrator():
         omega = rpm * RPM
         r = sweep(law, train, [omega], revolutions=1)
         s = r.speed(0)
-        angles, velocities = reference_seating(law, train, omega)
-        exact = velocities[np.argmin(np.abs(angles - s.seating_angle))]
+        times, states = seat_crossings(law, train, omega)       # 0.05 cam deg largest step
+        exact = states[np.argmin(np.abs(times * omega - np.pi - s.seating_angle)), 1]
         assert exact < -0.1
         assert abs(s.seating_velocity / exact - 1) < 0.01
         linear = seating(r.theta, r.lift[0], r.velocity[0])[2]

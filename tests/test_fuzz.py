@@ -63,9 +63,15 @@ def test_the_fuzzer_covers_the_commands_and_the_stage_sections():
 
 def test_a_command_case_is_classified_by_its_exit_status():
     """compare of the built-in example with itself runs (exit status 0, no NaN printed or written); a --grid of a
-    key the file does not have is refused with exit status 2 and a message naming the key."""
+    key the file does not have is refused with exit status 2 and a message naming the key; an optimisation with no
+    feasible point is that outcome (exit status 1 with the failing limits named)."""
     ok = fuzz.run_case({"base": "example", "ops": [], "command": ["compare", "<base>"]}, BASES, timeout=120.0)
     assert ok["outcome"] == "ok", ok
     refused = fuzz.run_case({"base": "example", "ops": [], "command": ["study", "--grid", "engine.nosuchkey_mm=1,2"]},
                             BASES, timeout=120.0)
     assert refused["outcome"] == "refused" and "engine.nosuchkey_mm" in " ".join(refused["detail"]), refused
+    # no follower separation up to 3 x the rated speed is out of the built-in train's reach (it separates near the
+    # rated speed): optimize exits 1 naming the limit, a result the fuzzer counted as a traceback
+    infeasible = fuzz.run_case({"base": "example", "ops": [], "command": ["optimize", "--maxiter", "1", "--no-jump",
+                                                                         "3"]}, BASES, timeout=120.0)
+    assert infeasible["outcome"] == "infeasible" and "separation" in " ".join(infeasible["detail"]), infeasible

@@ -11,6 +11,8 @@ numpy RuntimeWarnings turned into errors, and is classified:
 
 ``ok``           accepted, finite and plausible results;
 ``refused``      SpecError (exit status 2) whose messages each name a key;
+``infeasible``   ``optimize`` found no point meeting every limit: exit status 1 with the documented message and
+                 each failing limit named (a result, not an error);
 ``traceback``    any other exception (exit status 1 of the command line);
 ``hang``         no result within ``--timeout`` seconds;
 ``nan_output``   accepted, but NaN/inf in a table column or in results.json (null where it is not documented);
@@ -66,8 +68,12 @@ ROOT = Path(__file__).resolve().parent.parent
 EXAMPLES = ROOT / "examples"
 MEASURED_LOBE = "data/measured-intake-lobe.csv"
 
-OUTCOMES = ("ok", "refused", "traceback", "hang", "nan_output", "nonsense", "bad_message")
+OUTCOMES = ("ok", "refused", "infeasible", "traceback", "hang", "nan_output", "nonsense", "bad_message")
 FAILURES = ("traceback", "hang", "nan_output", "nonsense", "bad_message")
+INFEASIBLE = re.compile(r"(?s)(.*\n)?error: no point of the search meets every limit .*\n"
+                        r"  at the (point nearest to them|start): ")
+"""What ``optimize`` prints when no point meets every limit: the message, then each failing limit at the point
+nearest to them and at the start."""
 
 # ---------------------------------------------------------------------------------------------------------------
 # TOML text of a nested dictionary (tomllib reads, the standard library writes none)
@@ -920,6 +926,8 @@ def run_command(case, tmp, spec_file, base_file, timeout):
             return {"outcome": "bad_message", "signature": f"{name}: {why}: {_message_template(m, why)}",
                     "detail": [f"{why}: {_clip(m)}" for m, why in bad[:5]]}
         return {"outcome": "refused", "detail": [_clip(m.replace(str(tmp), "<tmp>")) for m in messages[:5]]}
+    if result.exit_code == 1 and name == "optimize" and INFEASIBLE.match(output):
+        return {"outcome": "infeasible", "detail": [_clip(line) for line in output.splitlines()[:5]]}
     if result.exit_code != 0:
         return {"outcome": "traceback", "signature": f"{name}: exit status {result.exit_code}",
                 "detail": [_clip(output)]}

@@ -318,8 +318,7 @@ def optimize(file, out, valve, objective, vary, no_jump, cam_width, seating_velo
             for c in checks:
                 if not c.passed:
                     note = f" [{c.note}]" if c.note else ""
-                    click.echo(f"  {where}: {c.quantity}{note} = {c.shown_value:.6g} {c.unit}, allowed {c.range}",
-                               err=True)
+                    click.echo(f"  {where}: {c.statement}{note}, allowed {c.range}", err=True)
         sys.exit(1)
     record = {"valve": result.valve, "objective": result.objective, "start": result.start, "optimum": result.optimum,
               "bounds": dict(zip(result.start, result.bounds, strict=True)),

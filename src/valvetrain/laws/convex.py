@@ -5,7 +5,6 @@ The classical arc cams have no ramp: the lift starts on the base circle of radiu
 """
 
 import numpy as np
-from scipy.optimize import brentq
 
 from .base import RampedLaw, SymmetricLaw
 
@@ -57,6 +56,8 @@ def three_arc_geometry(base_radius, lift, half_angle, nose_radius):
 
 def _solve_nose_radius(base_radius, lift, half_angle, target):
     """r2 such that ``target(r1, phi1) = 0``, bracketed over the admissible nose radii and solved with brentq."""
+    from scipy.optimize import brentq
+
     grid = np.linspace(0.0, base_radius, 2001)[1:-1]
     vals = []
     for r2 in grid:

@@ -10,8 +10,6 @@ crank deg.  Lifts are follower (tappet) lifts [m]; a table of valve lift is divi
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.interpolate import CubicSpline, make_smoothing_spline
-from scipy.optimize import brentq
 
 from ..checks import check
 from ..numerics import extremum, level_span
@@ -112,6 +110,8 @@ def interpolation_error(x, y, per_step=8):
     float
         The largest excursion of the spline beyond [min y, max y], 0 if none.
     """
+    from scipy.interpolate import CubicSpline   # imported where used: importing the package costs no scipy
+
     spline = CubicSpline(x, y)
     between = spline(np.linspace(x[0], x[-1], per_step * (x.size - 1) + 1))
     return float(max(y.min() - between.min(), between.max() - y.max(), 0.0))
@@ -387,6 +387,8 @@ def lift_event(fn, a, b, level, samples=4001):
     (float, float)
         Start and end of the event [rad].
     """
+    from scipy.optimize import brentq
+
     x = np.linspace(a, b, samples)
     h = fn(x)
     top = int(np.argmax(h))
@@ -668,6 +670,8 @@ class TableLaw(RampedLaw):
 
 def _spline_rms(x, y, lam):
     """The smoothing spline with parameter ``lam`` and its RMS residual."""
+    from scipy.interpolate import make_smoothing_spline
+
     try:
         spline = make_smoothing_spline(x, y, lam=lam)
     except (ValueError, np.linalg.LinAlgError):
@@ -713,6 +717,9 @@ def smoothing_spline(x, y, accuracy, stated=True):
     ----------
     Reinsch (1967), the smoothing spline; Craven and Wahba (1979), generalised cross-validation.
     """
+    from scipy.interpolate import make_smoothing_spline
+    from scipy.optimize import brentq
+
     try:
         gcv = make_smoothing_spline(x, y)
     except (ValueError, np.linalg.LinAlgError):
@@ -741,6 +748,8 @@ def smoothing_spline(x, y, accuracy, stated=True):
 def spline_dof(x, lam):
     """Degrees of freedom of the smoothing spline with parameter ``lam``: the trace of its hat matrix, from the
     splines of the unit vectors (one banded solve with n right-hand sides).  NaN for an unknown lambda."""
+    from scipy.interpolate import make_smoothing_spline
+
     if not np.isfinite(lam):
         return float("nan")
     return float(np.trace(make_smoothing_spline(x, np.eye(x.size), lam=lam)(x)))
