@@ -27,7 +27,10 @@ speeds of the block in one branch-free loop that the compiler turns into SIMD in
 speed per lane, each lane doing exactly the scalar arithmetic, so the results do not depend on the
 blocking).  The blocks run on threads of the caller (the kernels release the interpreter lock,
 ``nogil=True``), the costliest first; one compiled signature serves every train, and the kernels are
-cached on disk (``cache=True``) so a second process pays no compile time.
+cached on disk (``cache=True``) so a second process pays no compile time.  The first compile is kept short: one
+RK4 body (:func:`_rk4`) serves the lockstep step and the split step, the helpers are compiled without the wrappers
+a call from Python would need, and arrays are copied and cleared by explicit loops (numba's slice assignment
+compiles a generic broadcasting routine, a third of the former compile time).
 
 A speed is integrated until it repeats: after each camshaft revolution its state is compared with
 the state at the start of that revolution, and a block stops once all its speeds repeat (most
@@ -45,7 +48,7 @@ CAM = -2
 """Node index of the cam excitation: displacement u = k h(theta), velocity omega k h'(theta)."""
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, nogil=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _forces(x, v, inv_mass, ra, rb, k, d, gap, pre, uni, acc, force):
     """Element forces (compression positive, +f on row rb, -f on row ra) and row accelerations of a block.
 
@@ -54,8 +57,10 @@ def _forces(x, v, inv_mass, ra, rb, k, d, gap, pre, uni, acc, force):
     their accelerations stay 0.  The element's case (contact or spring) is decided once per element, and the
     loop over the block's speeds has no branch the compiler cannot turn into a select: it runs in SIMD lanes.
     """
-    bsize = x.shape[1]
-    acc[:, :] = 0.0
+    rows, bsize = x.shape
+    for i in range(rows):
+        for s in range(bsize):
+            acc[i, s] = 0.0
     for e in range(ra.size):
         ia, ib = ra[e], rb[e]
         ke, de, ge = k[e], d[e], gap[e]
@@ -81,6 +86,41 @@ def _forces(x, v, inv_mass, ra, rb, k, d, gap, pre, uni, acc, force):
 
 
 
+@njit(cache=True, nogil=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+def _rk4(x, v, h, cam_x, cam_v, im, ra, rb, k, d, gap, pre, uni, xs, vs, kx, acc, scratch):
+    """One classical RK4 step of every column of a block's state ``x``, ``v`` (rows, B), updated in place.
+
+    Column s advances by ``h[s]`` [s]; at stage q (0-3: start, middle twice, end) the cam row is ``cam_x[q]`` [m]
+    and ``cam_v[q, s]`` [m/s].  ``acc[0]`` holds the accelerations at the start (the caller has evaluated them,
+    :func:`_forces`, for its record).  ``xs``, ``vs`` (rows, B), ``kx``, ``acc`` (4, rows, B) and ``scratch``
+    (E, B) are work arrays, the ground row of ``xs`` zero.  The one RK4 body serves the lockstep steps of a block
+    and the split step of one speed (:func:`_split_step`), so that it is compiled once.
+    """
+    rows, bsize = x.shape
+    n = rows - 2
+    cam = n + 1
+    for q in range(1, 4):
+        c = 0.5 if q < 3 else 1.0
+        kp, ap = (v if q == 1 else kx[q - 1]), acc[q - 1]
+        for i in range(n):
+            for s in range(bsize):
+                hs = c * h[s]
+                xs[i, s] = x[i, s] + hs * kp[i, s]
+                vs[i, s] = v[i, s] + hs * ap[i, s]
+        for s in range(bsize):
+            xs[cam, s] = cam_x[q]
+            vs[cam, s] = cam_v[q, s]
+        kq = kx[q]
+        for i in range(n):
+            for s in range(bsize):
+                kq[i, s] = vs[i, s]
+        _forces(xs, vs, im, ra, rb, k, d, gap, pre, uni, acc[q], scratch)
+    for i in range(n):
+        for s in range(bsize):
+            x[i, s] += h[s] / 6.0 * (v[i, s] + 2.0 * kx[1, i, s] + 2.0 * kx[2, i, s] + kx[3, i, s])
+            v[i, s] += h[s] / 6.0 * (acc[0, i, s] + 2.0 * acc[1, i, s] + 2.0 * acc[2, i, s] + acc[3, i, s])
+
+
 @njit(cache=True, nogil=True)
 def integrate_block(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_per_rev, max_revolutions, tolerance,
                     rate, inv_mass, x_init, ra, rb, k, d, gap, pre, uni, closing, rec_nodes, rec_elems, clash_gap,
@@ -93,7 +133,7 @@ def integrate_block(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_p
 
     Parameters
     ----------
-    idx : ndarray (B,) of int
+    idx : ndarray (B,) of int64
         Speeds of the block (rows of the output arrays).
     omegas : ndarray (S,)
         Camshaft speeds [rad/s].
@@ -117,14 +157,16 @@ def integrate_block(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_p
         Velocity scale of the comparison [1/s] (the spectral radius of the train).
     inv_mass, x_init : ndarray (n,)
         Inverse node masses [1/kg] and initial positions [m] (the train starts at rest).
-    ra, rb : ndarray (E,) of int
+    ra, rb : ndarray (E,) of int64
         Element end rows (:func:`rows`).
-    k, d, gap, pre, uni : ndarray (E,)
-        Element stiffness [N/m], damping [N s/m], gap [m], preload [N], unilateral flag.
+    k, d, gap, pre : ndarray (E,)
+        Element stiffness [N/m], damping [N s/m], gap [m], preload [N].
+    uni : ndarray (E,) of bool
+        Unilateral flag.
     closing : int
         A unilateral element whose closing is located inside the step (the valve seat; -1: none): a speed whose
         element closes during a step redoes that step in two, to the closing and from it (:func:`_split_step`).
-    rec_nodes, rec_elems : ndarray of int
+    rec_nodes, rec_elems : ndarray of int64
         Nodes whose position, velocity and acceleration, and elements whose force, are recorded.
     clash_gap : ndarray (E,)
         Closing distance of a coil element to coil contact [m] (0: not monitored).
@@ -136,7 +178,7 @@ def integrate_block(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_p
         Smallest coil-contact margin [m] over the recorded revolution (inf where not monitored).
     out_surge : ndarray (S, n)
         Largest deviation of each coil node from its quasi-static share of the valve motion [m].
-    out_revs : ndarray (S,) of int
+    out_revs : ndarray (S,) of int64
         The revolution after which the speed repeated (0: not within ``max_revolutions``).
     """
     n = x_init.size
@@ -149,13 +191,13 @@ def integrate_block(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_p
     x0, v0 = np.zeros((n, bsize)), np.zeros((n, bsize))
     xb, vb = np.zeros((rows, bsize)), np.zeros((rows, bsize))
     xs, vs = np.zeros((rows, bsize)), np.zeros((rows, bsize))
-    k1v, k2v, k3v, k4v = (np.zeros((rows, bsize)), np.zeros((rows, bsize)), np.zeros((rows, bsize)),
-                          np.zeros((rows, bsize)))
-    k2x, k3x = np.zeros((rows, bsize)), np.zeros((rows, bsize))
+    kx, acc = np.zeros((4, rows, bsize)), np.zeros((4, rows, bsize))
     force, scratch = np.zeros((ne, bsize)), np.zeros((ne, bsize))
+    cam_x, cam_v = np.zeros(4), np.zeros((4, bsize))
     om, dt = np.empty(bsize), np.empty(bsize)
     im = np.zeros(rows)
-    im[:n] = inv_mass
+    for i in range(n):
+        im[i] = inv_mass[i]
     for s in range(bsize):
         om[s] = omegas[idx[s]]
         dt[s] = dtheta / (n_sub * om[s])
@@ -178,50 +220,30 @@ def integrate_block(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_p
             j2 = j1 + half
             if j2 == period:
                 j2 = 0
-            u0, u1, u2 = cam_u[j0], cam_u[j1], cam_u[j2]
-            d0, d1, d2 = cam_du[j0], cam_du[j1], cam_du[j2]
+            u0, u2, d0, d2 = cam_u[j0], cam_u[j2], cam_du[j0], cam_du[j2]
+            cam_x[0], cam_x[1], cam_x[2], cam_x[3] = u0, cam_u[j1], cam_u[j1], u2
             for s in range(bsize):
+                cam_v[0, s] = om[s] * d0
+                cam_v[1, s] = om[s] * cam_du[j1]
+                cam_v[2, s] = cam_v[1, s]
+                cam_v[3, s] = om[s] * d2
                 x[cam, s] = u0
-                v[cam, s] = om[s] * d0
-            _forces(x, v, im, ra, rb, k, d, gap, pre, uni, k1v, force)
+                v[cam, s] = cam_v[0, s]
+            _forces(x, v, im, ra, rb, k, d, gap, pre, uni, acc[0], force)
             if closing >= 0:
-                xb[:, :] = x
-                vb[:, :] = v
+                for i in range(rows):
+                    for s in range(bsize):
+                        xb[i, s] = x[i, s]
+                        vb[i, s] = v[i, s]
             if step % n_sub == 0:
-                _record(step // n_sub, idx, x, v, k1v, force, ra, rb, rec_nodes, rec_elems, clash_gap, surge_ref,
+                _record(step // n_sub, idx, x, v, acc[0], force, ra, rb, rec_nodes, rec_elems, clash_gap, surge_ref,
                         surge_w, out_x, out_v, out_a, out_f, out_clash, out_surge)
-            for i in range(n):
-                for s in range(bsize):
-                    xs[i, s] = x[i, s] + 0.5 * dt[s] * v[i, s]
-                    vs[i, s] = v[i, s] + 0.5 * dt[s] * k1v[i, s]
-            for s in range(bsize):
-                xs[cam, s] = u1
-                vs[cam, s] = om[s] * d1
-            _forces(xs, vs, im, ra, rb, k, d, gap, pre, uni, k2v, scratch)
-            for i in range(n):
-                for s in range(bsize):
-                    k2x[i, s] = vs[i, s]
-                    xs[i, s] = x[i, s] + 0.5 * dt[s] * k2x[i, s]
-                    vs[i, s] = v[i, s] + 0.5 * dt[s] * k2v[i, s]
-            _forces(xs, vs, im, ra, rb, k, d, gap, pre, uni, k3v, scratch)
-            for i in range(n):
-                for s in range(bsize):
-                    k3x[i, s] = vs[i, s]
-                    xs[i, s] = x[i, s] + dt[s] * k3x[i, s]
-                    vs[i, s] = v[i, s] + dt[s] * k3v[i, s]
-            for s in range(bsize):
-                xs[cam, s] = u2
-                vs[cam, s] = om[s] * d2
-            _forces(xs, vs, im, ra, rb, k, d, gap, pre, uni, k4v, scratch)
-            for i in range(n):
-                for s in range(bsize):
-                    x[i, s] += dt[s] / 6.0 * (v[i, s] + 2.0 * k2x[i, s] + 2.0 * k3x[i, s] + vs[i, s])
-                    v[i, s] += dt[s] / 6.0 * (k1v[i, s] + 2.0 * k2v[i, s] + 2.0 * k3v[i, s] + k4v[i, s])
+            _rk4(x, v, dt, cam_x, cam_v, im, ra, rb, k, d, gap, pre, uni, xs, vs, kx, acc, scratch)
             if closing >= 0:
                 ia, ib, ge = ra[closing], rb[closing], gap[closing]
                 for s in range(bsize):
                     if xb[ia, s] - xb[ib, s] - ge <= 0.0 and x[ia, s] - x[ib, s] - ge > 0.0:
-                        _split_step(s, xb, vb, k1v, x, v, dt[s], om[s], dtheta / n_sub, u0, d0, u2, d2, closing,
+                        _split_step(s, xb, vb, acc[0], x, v, dt[s], om[s], dtheta / n_sub, u0, d0, u2, d2, closing,
                                     im, ra, rb, k, d, gap, pre, uni)
             j0 = j2
         done = True
@@ -238,46 +260,14 @@ def integrate_block(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_p
             break
 
 
-@njit(cache=True, nogil=True)
-def _lane_rk4(xl, vl, h, fa, fb, step_angle, om, u0, d0, u2, d2, im, ra, rb, k, d, gap, pre, uni):
-    """One RK4 step of a single speed (state ``xl``, ``vl`` of shape (rows, 1), updated in place) from the fraction
-    ``fa`` to ``fb`` of an angle step, the cam on the cubic Hermite of its samples and slopes at both ends."""
-    rows = xl.shape[0]
-    n = rows - 2
-    ne = ra.size
-    acc = np.zeros((4, rows, 1))
-    xs, vs, kx = np.zeros((rows, 1)), np.zeros((rows, 1)), np.zeros((4, rows, 1))
-    force = np.zeros((ne, 1))
-    fm = 0.5 * (fa + fb)
-    for q in range(4):
-        f = fa if q == 0 else (fm if q < 3 else fb)
-        f2, f3 = f * f, f * f * f
-        if q == 0:
-            for i in range(rows):
-                xs[i, 0] = xl[i, 0]
-                vs[i, 0] = vl[i, 0]
-        xs[n + 1, 0] = ((2 * f3 - 3 * f2 + 1) * u0 + (f3 - 2 * f2 + f) * step_angle * d0 + (-2 * f3 + 3 * f2) * u2
-                        + (f3 - f2) * step_angle * d2)
-        vs[n + 1, 0] = om * ((6 * f2 - 6 * f) * u0 / step_angle + (3 * f2 - 4 * f + 1) * d0
-                             + (-6 * f2 + 6 * f) * u2 / step_angle + (3 * f2 - 2 * f) * d2)
-        _forces(xs, vs, im, ra, rb, k, d, gap, pre, uni, acc[q], force)
-        for i in range(n):
-            kx[q, i, 0] = vs[i, 0]
-            if q < 3:
-                c = 0.5 * h if q < 2 else h
-                xs[i, 0] = xl[i, 0] + c * vs[i, 0]
-                vs[i, 0] = vl[i, 0] + c * acc[q, i, 0]
-    for i in range(n):
-        xl[i, 0] += h / 6.0 * (kx[0, i, 0] + 2.0 * kx[1, i, 0] + 2.0 * kx[2, i, 0] + kx[3, i, 0])
-        vl[i, 0] += h / 6.0 * (acc[0, i, 0] + 2.0 * acc[1, i, 0] + 2.0 * acc[2, i, 0] + acc[3, i, 0])
-
-
-@njit(cache=True, nogil=True)
+@njit(cache=True, nogil=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _split_step(s, xb, vb, acc, x, v, dt, om, step_angle, u0, d0, u2, d2, e, im, ra, rb, k, d, gap, pre, uni):
     """Redo the step of speed ``s`` in which element ``e`` closed: RK4 from the start (``xb``, ``vb``, acceleration
     ``acc``) to the closing, located by the Taylor series of the element's gap, then RK4 from it to the step's end;
     the result replaces column ``s`` of ``x``, ``v``.  A contact law that switches inside a step (the seat's damping
-    force jumps from 0 at the closing) costs a fixed-step scheme its order; split there, each part is smooth."""
+    force jumps from 0 at the closing) costs a fixed-step scheme its order; split there, each part is smooth.  The
+    cam runs on the cubic Hermite of its samples ``u0``, ``u2`` [m] and slopes ``d0``, ``d2`` [m/rad] at both ends
+    of the step (``step_angle`` [rad]); both parts are :func:`_rk4` steps of a block of one speed."""
     rows = xb.shape[0]
     ia, ib = ra[e], rb[e]
     g0 = xb[ia, s] - xb[ib, s] - gap[e]
@@ -289,18 +279,35 @@ def _split_step(s, xb, vb, acc, x, v, dt, om, step_angle, u0, d0, u2, d2, e, im,
         root = -2.0 * g0 / (g1 + np.sqrt(disc))          # g0 + g1 t + g2 t^2 / 2 = 0, the root nearest -g0 / g1
         if 0.0 < root < dt:
             tau = root
-    xl, vl = np.zeros((rows, 1)), np.zeros((rows, 1))
+    ne = ra.size
+    xl, vl, xs, vs = np.zeros((rows, 1)), np.zeros((rows, 1)), np.zeros((rows, 1)), np.zeros((rows, 1))
+    kx, kv = np.zeros((4, rows, 1)), np.zeros((4, rows, 1))
+    force, scratch = np.zeros((ne, 1)), np.zeros((ne, 1))
+    h, cam_x, cam_v = np.zeros(1), np.zeros(4), np.zeros((4, 1))
     for i in range(rows):
         xl[i, 0] = xb[i, s]
         vl[i, 0] = vb[i, s]
-    _lane_rk4(xl, vl, tau, 0.0, tau / dt, step_angle, om, u0, d0, u2, d2, im, ra, rb, k, d, gap, pre, uni)
-    _lane_rk4(xl, vl, dt - tau, tau / dt, 1.0, step_angle, om, u0, d0, u2, d2, im, ra, rb, k, d, gap, pre, uni)
+    for part in range(2):
+        fa, fb = (0.0, tau / dt) if part == 0 else (tau / dt, 1.0)
+        h[0] = tau if part == 0 else dt - tau
+        fm = 0.5 * (fa + fb)
+        for q in range(4):
+            f = fa if q == 0 else (fm if q < 3 else fb)
+            f2, f3 = f * f, f * f * f
+            cam_x[q] = ((2 * f3 - 3 * f2 + 1) * u0 + (f3 - 2 * f2 + f) * step_angle * d0 + (-2 * f3 + 3 * f2) * u2
+                        + (f3 - f2) * step_angle * d2)
+            cam_v[q, 0] = om * ((6 * f2 - 6 * f) * u0 / step_angle + (3 * f2 - 4 * f + 1) * d0
+                                + (-6 * f2 + 6 * f) * u2 / step_angle + (3 * f2 - 2 * f) * d2)
+        xl[rows - 1, 0] = cam_x[0]
+        vl[rows - 1, 0] = cam_v[0, 0]
+        _forces(xl, vl, im, ra, rb, k, d, gap, pre, uni, kv[0], force)
+        _rk4(xl, vl, h, cam_x, cam_v, im, ra, rb, k, d, gap, pre, uni, xs, vs, kx, kv, scratch)
     for i in range(rows - 2):
         x[i, s] = xl[i, 0]
         v[i, s] = vl[i, 0]
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, nogil=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _record(r, idx, x, v, acc, force, ra, rb, rec_nodes, rec_elems, clash_gap, surge_ref, surge_w,
             out_x, out_v, out_a, out_f, out_clash, out_surge):
     """Write the recorded angle r of every speed of a block; update its coil clash and surge extremes."""

@@ -41,7 +41,7 @@ COIL_DAMPING_RATIO = 0.02
 
 @dataclass(frozen=True)
 class Network:
-    """A lumped train ready for :func:`~valvetrain.dynamics.kernels.integrate_network` (SI, valve side).
+    """A lumped train ready for :func:`~valvetrain.dynamics.kernels.integrate_block` (SI, valve side).
 
     Attributes
     ----------

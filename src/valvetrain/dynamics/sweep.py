@@ -552,9 +552,10 @@ def sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, progress=None, bo
     def run(j):
         idx = order[start[j]:start[j + 1]]
         integrate_block(idx, speeds, int(n_sub[idx[0]]), dtheta, u, du, per_step, steps, int(revolutions),
-                        tolerance, rate, inv_mass, net.x_init, ra, rb, net.stiffness, net.damping, net.gap,
-                        net.preload, net.unilateral, net.seat_element, rec_nodes, rec_elems, net.clash_gap, net.valve,
-                        net.surge_weight, out_x, out_v, out_a, out_f, out_clash, out_surge, out_revs)
+                        float(tolerance), float(rate), inv_mass, net.x_init, ra, rb, net.stiffness, net.damping,
+                        net.gap, net.preload, net.unilateral, int(net.seat_element), rec_nodes, rec_elems,
+                        net.clash_gap, int(net.valve), net.surge_weight, out_x, out_v, out_a, out_f, out_clash,
+                        out_surge, out_revs)
         return idx.size
 
     _notify_compile()
