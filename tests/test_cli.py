@@ -246,7 +246,7 @@ def _console_script():
 
     entry = tomllib.loads((Path(__file__).resolve().parents[1] / "pyproject.toml").read_text())["project"]["scripts"]
     module, _, function = entry["valvetrain"].partition(":")
-    return [sys.executable, "-c", f"import sys; from {module} import {function}; from valvetrain.console import "
+    return [sys.executable, "-c", f"import sys; from {module} import {function}; from valvetrain.interruption import "
                                   "Interruption; Interruption.install(Interruption.record); "
                                   f"sys.stderr.write('up\\n'); sys.stderr.flush(); sys.exit({function}())"]
 
@@ -283,7 +283,7 @@ def test_ctrl_c_while_importing_is_one_line_and_status_130():
 
 SIGINT_IN_A_CALLBACK = """
 import signal, sys, time, weakref
-from valvetrain.console import Interruption
+from valvetrain.interruption import Interruption
 Interruption.install(Interruption.interrupt)
 class Part:
     pass

@@ -15,7 +15,7 @@ import time
 import click
 
 from . import __version__
-from .console import Interruption, interrupted_while_starting
+from .interruption import Interruption, interrupted_while_starting
 from .outfolder import OutFolderError, check_out
 from .specification import SpecError, example_spec, example_text, input_files, load_spec
 
@@ -115,7 +115,7 @@ class _Progress:
 class _Main(click.Group):
     """The command group; Ctrl-C ends any command with exit status 130 and one line, not a traceback.
 
-    The SIGINT handler (:class:`valvetrain.console.Interruption`) remembers the SIGINT, so that an error a library
+    The SIGINT handler (:class:`valvetrain.interruption.Interruption`) remembers the SIGINT, so that an error a library
     made of the KeyboardInterrupt is the interruption too."""
 
     def make_context(self, info_name, args, parent=None, **extra):
