@@ -48,7 +48,6 @@ NAMES = {
     # engine
     "name": ("name", "наименование"), "bore": ("bore D", "диаметр цилиндра D"),
     "stroke": ("piston stroke S", "ход поршня S"), "rated_speed": ("rated speed n", "номинальная частота вращения n"),
-    "over_speed_ratio": ("over-speed / rated speed", "отношение предельной частоты вращения к номинальной"),
     "idle_speed": ("idle speed (lowest speed of the strength checks)",
                    "частота холостого хода (наименьшая в расчёте на прочность)"),
     "cylinders": ("number of cylinders", "число цилиндров"), "strokes": ("strokes of the cycle", "тактность"),

@@ -54,7 +54,7 @@ from ..specification import SpecError
 from ..specification.cams import train_mass
 from ..specification.models import Dynamics, Valve
 from ..specification.si import si
-from ..units import DEG, MM, cam_per_crank, to_display
+from ..units import DEG, cam_per_crank, to_display
 from .constraints import Limits, constraints, convex_radius, hertz_stress, spring_reserve, worst_cam_force
 
 OBJECTIVES = {
