@@ -228,6 +228,33 @@ WORKS = {
         title="EN 10270-2: Steel wire for mechanical springs - Part 2: Oil hardened and tempered spring "
               "steel wire",
         kind="standard", publisher="CEN", place="Brussels", year="2011"),
+    "hamrock2004": Work(
+        short="Hamrock, Schmid and Jacobson (2004)",
+        authors="Hamrock, B. J.; Schmid, S. R.; Jacobson, B. O.",
+        title="Fundamentals of Fluid Film Lubrication, 2nd ed.", kind="book", publisher="Marcel Dekker",
+        place="New York", year="2004",
+        note="The film parameter and the lubrication regimes, the reduced modulus, the elastohydrodynamic film "
+             "thickness of a line contact."),
+    "dowson1977": Work(
+        short="Dowson and Higginson (1977)",
+        authors="Dowson, D.; Higginson, G. R.",
+        title="Elasto-Hydrodynamic Lubrication, SI ed.", kind="book", publisher="Pergamon Press", place="Oxford",
+        year="1977", note="The minimum film thickness of a line contact."),
+    "blok1937": Work(
+        short="Blok (1937)",
+        authors="Blok, H.",
+        title="Theoretical study of temperature rise at surfaces of actual contact under oiliness lubricating "
+              "conditions", kind="conference paper",
+        publisher="Proceedings of the General Discussion on Lubrication and Lubricants, Institution of Mechanical "
+                  "Engineers, vol. 2, pp. 222-235", place="London", year="1937",
+        note="The flash temperature of a sliding line contact."),
+    "dowson1986": Work(
+        short="Dowson, Harrison and Taylor (1986)",
+        authors="Dowson, D.; Harrison, P.; Taylor, C. M.",
+        title="The lubrication of automotive cams and followers", kind="conference paper",
+        publisher="Mechanisms and Surface Distress, Proceedings of the 12th Leeds-Lyon Symposium on Tribology, "
+                  "Butterworths, pp. 305-322", place="London", year="1986",
+        note="The kinematics and the film of a cam and flat follower."),
 }
 """Every cited work by its key."""
 

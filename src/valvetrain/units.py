@@ -71,6 +71,7 @@ DISPLAY_UNITS = {
     "kN": 1e3, "cm3": 1e-6, "N/mm": 1.0 / MM, "N m": 1.0, "kg": 1.0, "kg/m2": 1.0, "kg mm2": MM**2, "MPa": MPA, "Pa": 1.0, "J": 1.0,
     "deg": DEG, "crank deg": DEG, "cam deg": DEG, "rad/s": 1.0, "Hz": 1.0, "rpm": np.pi / 30.0,
     "mm/rad2": MM, "mm/rad": MM, "mm/deg": MM / DEG, "GPa": 1e3 * MPA, "us": 1e-6,
+    "um": 1e-6, "mPa s": 1e-3, "1/GPa": 1e-9, "W": 1.0, "K": 1.0, "degC": 1.0,
 }
 """SI value of one display unit: a quantity of ``x`` SI is shown as ``x / DISPLAY_UNITS[unit]`` (tables,
 reports, check records); ``rpm`` is shown from rad/s."""
@@ -89,6 +90,7 @@ def to_display(value, unit):
 
 
 UNIT_SUFFIXES = (
+    ("_per_GPa", 1e-9), ("_mPa_s", 1e-3), ("_um", 1e-6),
     ("_cm3_per_s_MPa", 1e-6 / MPA), ("_cm3", 1e-6), ("_GPa", 1e3 * MPA),
     ("_mm_per_rad2", MM), ("_mm_per_rad", MM), ("_mm_per_deg", MM / DEG), ("_N_per_mm", 1.0 / MM), ("_kg_mm2", MM**2), ("_mm2", MM**2), ("_mm", MM),
     ("_cam_deg", DEG), ("_deg", DEG), ("_rpm", rpm_to_rad_s(1.0)), ("_MPa", MPA),

@@ -24,6 +24,7 @@ from ..specification.cams import layout
 from ..springs import NoSpringFits
 from ..units import DEG, MM
 from .drive import drive_record, drive_stage, strength_stage
+from .lubrication import lubrication_stage
 from .dynamics import dynamics_stage
 from .grinding import grinding_stage
 from .hydraulic import hydraulic_stage
@@ -568,6 +569,7 @@ class ValveDesign:
     dynamics: object = None        # DynamicsResult when the valve has a [dynamics] section
     grinding: object = None        # GrindingResult when the valve has a [grinding] section
     hydraulic: object = None       # HydraulicResult when the valve has a [hydraulic] section
+    lubrication: object = None     # LubricationResult when the valve has a [lubrication] section
 
     @property
     def warnings(self):
@@ -605,6 +607,8 @@ class ValveDesign:
             out["grinding"] = record(self.grinding)
         if self.hydraulic is not None:
             out["hydraulic"] = record(self.hydraulic)
+        if self.lubrication is not None:
+            out["lubrication"] = record(self.lubrication)
         return out
 
     def __repr__(self):
@@ -666,6 +670,10 @@ def design_valve(name, valve, engine, gas, output, law=None, progress=None, cyli
     strength_result, strength_found = strength_stage(valve, gas, engine, cam, drive, dynamics)
     drive = replace(drive, strength=strength_result, checks=drive.checks + tuple(strength_found))
     found += strength_found
+    lubrication = None
+    if valve.lubrication is not None:
+        lubrication, lubrication_found = lubrication_stage(valve.lubrication, valve, engine, cam, drive, dynamics, name)
+        found += lubrication_found
     grinding = None
     if valve.grinding is not None:
         try:
@@ -674,7 +682,7 @@ def design_valve(name, valve, engine, gas, output, law=None, progress=None, cyli
             raise SpecError([f"{at}.grinding.{exc}"]) from None
         found += grinding_found
     design = ValveDesign(name, valve.kind, valve.count, cam, flow_result, profile, clearance, records, drive,
-                         [c.named(name) for c in found], dynamics, grinding)
+                         [c.named(name) for c in found], dynamics, grinding, lubrication=lubrication)
     return with_hydraulic(design, valve, engine, gas, cylinder)
 
 

@@ -355,6 +355,42 @@ class Hydraulic(_Model):
         return self
 
 
+class Lubrication(_Model):
+    """[valves.NAME.lubrication]: the oil film and the friction of the cam contact over the speed range (Dowson and
+    Higginson (1977); Hamrock, Schmid and Jacobson (2004); Blok (1937)).
+
+    The oil is taken at the inlet of the contact at ``oil_temperature_C``; roughnesses are RMS (R_q).  The friction
+    coefficient falls linearly in the film parameter from ``boundary_friction`` (lambda <= 1) to
+    ``full_film_friction`` (lambda >= 3); a roller adds ``roller_rolling_friction`` x load on its rolling velocity
+    and slides with ``roller_slip`` of the cam's surface velocity.  The defaults are this package's: an SAE 5W-30
+    engine oil near 100 degC, a ground cam, a polished follower."""
+
+    oil_viscosity_mPa_s: _bounded(0.1, 2000.0, "mPa s") = 10.0
+    pressure_viscosity_per_GPa: _bounded(1.0, 60.0, "1/GPa") = 20.0
+    oil_temperature_C: _bounded(-40.0, 250.0, "degC", low_open=False) = 100.0
+    cam_roughness_um: _bounded(0.005, 10.0, "um") = 0.2
+    follower_roughness_um: _bounded(0.005, 10.0, "um") = 0.1
+    boundary_friction: _bounded(0.01, 0.5) = 0.12
+    full_film_friction: _bounded(0.001, 0.3) = 0.04
+    roller_rolling_friction: _bounded(0.0, 0.1, low_open=False) = 0.005
+    roller_slip: _bounded(0.0, 1.0, low_open=False) = 0.0
+    min_film_parameter: _bounded(0.0, 10.0) = 1.0
+    max_contact_temperature_C: _bounded(0.0, 1000.0, "degC") = 150.0
+
+    @model_validator(mode="after")
+    def _consistent(self):
+        problems = []
+        if self.full_film_friction > self.boundary_friction:
+            problems.append(f"full_film_friction = {self.full_film_friction:g} must not exceed boundary_friction = "
+                            f"{self.boundary_friction:g}")
+        if self.max_contact_temperature_C <= self.oil_temperature_C:
+            problems.append(f"max_contact_temperature_C = {self.max_contact_temperature_C:g} must exceed "
+                            f"oil_temperature_C = {self.oil_temperature_C:g}")
+        if problems:
+            raise ValueError("; ".join(problems))
+        return self
+
+
 class Valve(_Model):
     """[valves.NAME]: one valve (or a set of same-name valves) of a cylinder."""
 
@@ -375,6 +411,7 @@ class Valve(_Model):
     dynamics: Optional[Dynamics] = None
     grinding: Optional[Grinding] = None
     hydraulic: Optional[Hydraulic] = None
+    lubrication: Optional[Lubrication] = None
 
     @property
     def layout(self):
