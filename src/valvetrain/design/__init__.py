@@ -29,6 +29,7 @@ from .drive import MassResult, SpringResult, StrengthResult
 from .dynamics import DynamicsResult
 from .grinding import GrindingResult
 from .hydraulic import CylinderPressure, HydraulicResult
+from .lubrication import LubricationResult
 from .results import json_schema, quantity, record
 from .twostroke import TwoStrokeResults, TwoStrokeSummary, two_stroke_stage
 from .valve import (THROAT_AREA_SHARE_RANGE, CamResult, ClearanceResult, FlowResult, ProfileResult, ValveDesign,
@@ -374,7 +375,8 @@ def results_schema():
         "flow": json_schema(FlowResult), "piston_clearance": json_schema(ClearanceResult),
         "masses": json_schema(MassResult), "spring": json_schema(SpringResult),
         "strength": strength, "dynamics": json_schema(DynamicsResult),
-        "grinding": json_schema(GrindingResult), "hydraulic": json_schema(HydraulicResult)}}
+        "grinding": json_schema(GrindingResult), "hydraulic": json_schema(HydraulicResult),
+        "lubrication": json_schema(LubricationResult)}}
     return {
         "$schema": "https://json-schema.org/draft/2020-12/schema",
         "$id": f"https://valvetrain.invalid/results-{__version__}.schema.json",

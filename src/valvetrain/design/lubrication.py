@@ -79,6 +79,10 @@ class LubricationResult:
     per_speed: LubricationPerSpeed = quantity("per_speed", label="the cam contact at each speed")
 
 
+class UndercutError(ValueError):
+    """The cam profile has no line contact with its follower somewhere."""
+
+
 def _weights(theta):
     """Trapezoid weights of a sorted angle grid [rad]."""
     edges = np.concatenate([[theta[0]], (theta[1:] + theta[:-1]) / 2.0, [theta[-1]]])
@@ -131,7 +135,7 @@ def contact_map(lub, cam, width, modulus, theta, force, omega):
         u_cam, u_follower = tribology.roller_follower_velocities(omega, heel, r, h, dh, rho, lub.roller_slip)
         curvature, rolling_friction, rolling = 1.0 / rho + 1.0 / r, lub.roller_rolling_friction, u_follower
     if np.any(curvature <= 0.0):
-        raise ValueError("the cam profile is undercut (no line contact)")
+        raise UndercutError("the cam profile is undercut (no line contact)")
     loaded = force > 0.0
     load = np.where(loaded, force, 1.0)
     reduced = tribology.reduced_modulus(modulus)
@@ -183,13 +187,12 @@ def lubrication_stage(lub, valve, engine, cam, drive, dynamics=None, name="valve
     maps, _ = load_maps(valve, engine, cam, theta, drive.lines["chosen"].force(cam.valve_lift(theta)),
                         drive.masses.at_valve, dynamics)
     to_cam = cam.cam_speed / engine.rated_speed
-    weights = _weights(theta)
     rows, worst = [], None
     for m in maps:
-        omega = m.speeds[:, None] * to_cam
+        omega, theta, weights = m.speeds[:, None] * to_cam, m.theta, _weights(m.theta)
         try:
             c = contact_map(lub, cam, valve.parts.cam_width, valve.parts.contact_modulus, theta, m.force, omega)
-        except ValueError as exc:
+        except UndercutError as exc:
             raise SpecError([f"{at}.lubrication: {exc}"]) from None
         for i, speed in enumerate(m.speeds):
             lam = c["lam"][i]
@@ -218,7 +221,7 @@ def lubrication_stage(lub, valve, engine, cam, drive, dynamics=None, name="valve
         float(np.hypot(lub.cam_roughness, lub.follower_roughness)), worst[0], worst[1], worst[2], min(per.min_film),
         per.max_contact_temperature[hot], per.speed[hot], per.friction_power[rated], per.mean_friction_torque[rated],
         per.max_drive_torque[rated],
-        _zero_entrainment(cam, theta), per)
+        _zero_entrainment(cam, maps[0].theta), per)
     where = (f"at {to_display(worst[1], 'rpm'):.0f} rpm, {to_display(worst[2], 'cam deg'):.4g} cam deg from the nose"
              + ("; a flat follower's film vanishes where the entraining velocity changes sign (squeeze film not "
                 "modelled)" if cam.follower == "flat" else ""))
