@@ -14,6 +14,7 @@ from ..checks import describe_range
 from ..design.dynamics import SOURCES as DYNAMICS_SOURCES
 from ..design.grinding import SOURCES as GRINDING_SOURCES
 from ..design.hydraulic import SOURCES as HYDRAULIC_SOURCES
+from ..design.lubrication import SOURCES as LUBRICATION_SOURCES
 from ..design.results import record
 from ..tables import lift_table_columns
 from ..bibliography import WORKS, cited_in
@@ -37,11 +38,12 @@ TIME_AREA_KEYS = ["stroke_crank_deg", "time_area_mm2_s", "time_area_open_mm2_s",
 
 
 def fmt(x, lang="en"):
-    """A number for a human: 6 significant digits; a list with commas; yes/no; a text value in ``lang``."""
+    """A number for a human: 6 significant digits; a list with commas; yes/no; a text value in ``lang``; "-" for
+    no value (None, or a number that is not finite: results.json's null)."""
     if isinstance(x, bool):
         return TEXT[lang]["yes" if x else "no"]
     if isinstance(x, (int, float, np.floating)):
-        return f"{float(x):.6g}"
+        return f"{float(x):.6g}" if np.isfinite(x) else "-"
     if isinstance(x, (list, tuple)):
         return ", ".join(fmt(v, lang) for v in x)
     return "-" if x is None else str(value_text(x, lang))
@@ -241,6 +243,23 @@ def _hydraulic(v):
             "notes": rec["notes"], "table": rec["table"], "sweep_table": rec["sweep_table"]}
 
 
+LUBRICATION_COLUMNS = ["speed_rpm", "min_film_um", "min_film_parameter", "boundary_cam_deg", "mixed_cam_deg",
+                       "full_film_cam_deg", "mean_friction_torque_N_m", "friction_power_W", "max_flash_temperature_K",
+                       "max_drive_torque_N_m"]
+"""The columns of the report's table of the cam contact against engine speed."""
+
+
+def _lubrication(v):
+    """The lubrication record for the report: its headline rows and its table against engine speed."""
+    if v.lubrication is None:
+        return None
+    rec = record(v.lubrication)
+    per = rec["per_speed"]
+    return {"rows": [(k, val) for k, val in rec.items() if k not in ("per_speed", "follower", "zero_entrainment_cam_deg")],
+            "zero": rec.get("zero_entrainment_cam_deg"), "columns": LUBRICATION_COLUMNS,
+            "table": list(zip(*(per[c] for c in LUBRICATION_COLUMNS), strict=True))}
+
+
 def _summary(results, t):
     """The report's first page: one row per valve (its open failures, warnings and info, and its accepted checks),
     the limits not met (ranked) and the failures the specification accepts."""
@@ -330,6 +349,7 @@ def render_report(results, plots, lang="en", folder=None):
             "dynamics": _dynamics(s.get("dynamics")),
             "grinding": _grinding(name, v),
             "hydraulic": _hydraulic(v),
+            "lubrication": _lubrication(v),
         })
     first_page = _summary(results, TEXT[lang])
     crank = None
@@ -349,7 +369,7 @@ def render_report(results, plots, lang="en", folder=None):
         engine_inputs=_flatten(spec["engine"]), valves=valves, warnings=results.warnings, accepted=results.accepted,
         first_page=first_page, timing=plots.get("(timing)"), table_columns=TABLE_COLUMNS,
         dynamics_sources=DYNAMICS_SOURCES, grinding_sources=GRINDING_SOURCES,
-        hydraulic_sources=HYDRAULIC_SOURCES,
+        hydraulic_sources=HYDRAULIC_SOURCES, lubrication_sources=LUBRICATION_SOURCES,
         step=REPORT_STEP_DEG, output=_flatten(spec["output"]), crank=crank, ports=ports,
     )
     template = env.get_template("report.html")

@@ -591,6 +591,66 @@ TEXT["ru"].update({
 })
 
 
+TEXT["en"].update({
+    "lu_chapter": "10. Lubrication and friction of the cam contact",
+    "lu_method": "Over every engine speed of the strength checks (the simulated force at the speeds of a dynamics "
+                 "sweep): the surface velocities of cam and follower relative to the contact (a flat follower's "
+                 "contact point runs along the face at ω h″, a roller rolls with its slip), the Dowson-Higginson "
+                 "minimum film thickness of the line contact (isothermal, fully flooded, no squeeze film), the film "
+                 "parameter λ = h_min / √(Rq1² + Rq2²) and the regime (boundary below 1, full film from 3), a friction "
+                 "coefficient falling linearly in λ across the mixed band, a roller's rolling resistance, Blok's flash "
+                 "temperature of the sliding contact (steel on steel), the camshaft torque of the friction from the "
+                 "power it dissipates and the drive torque with it, F dh/dθ + T_f",
+    "lu_zero": "Flat follower: the entraining velocity changes sign (no steady film) at, cam deg",
+    "lu_table": "Against engine speed",
+    "lu_names": {
+        "reduced_modulus_GPa": "reduced modulus E′, GPa", "composite_roughness_um": "composite roughness, µm",
+        "min_film_parameter": "smallest film parameter λ", "min_film_parameter_speed_rpm": "at engine speed, rpm",
+        "min_film_parameter_cam_deg": "where, cam deg from the nose", "min_film_um": "smallest film h_min, µm",
+        "max_contact_temperature_C": "largest contact temperature, °C",
+        "max_contact_temperature_speed_rpm": "at engine speed, rpm",
+        "rated_friction_power_W": "friction power at the rated speed, W",
+        "rated_mean_friction_torque_N_m": "mean friction torque at the rated speed, N·m",
+        "rated_max_drive_torque_N_m": "largest drive torque with friction at the rated speed, N·m",
+        "speed_rpm": "engine speed, rpm", "boundary_cam_deg": "boundary, cam deg", "mixed_cam_deg": "mixed, cam deg",
+        "full_film_cam_deg": "full film, cam deg", "mean_friction_torque_N_m": "mean friction torque, N·m",
+        "friction_power_W": "friction power, W", "max_flash_temperature_K": "largest flash temperature rise, K",
+        "max_drive_torque_N_m": "largest drive torque, N·m",
+    },
+})
+
+TEXT["ru"].update({
+    "lu_chapter": "10. Смазка и трение в контакте кулачка",
+    "lu_method": "На каждой частоте вращения расчёта прочности (на частотах расчёта динамики — с рассчитанной силой): "
+                 "скорости поверхностей кулачка и толкателя относительно точки контакта (точка контакта плоского "
+                 "толкателя движется по его торцу со скоростью ω h″, ролик катится с заданным проскальзыванием), "
+                 "наименьшая толщина плёнки линейного контакта по Доусону — Хиггинсону (изотермически, без "
+                 "масляного голодания и выдавливания плёнки), параметр плёнки λ = h_min / √(σ1² + σ2²) и режим смазки "
+                 "(граничный при λ < 1, жидкостный при λ ≥ 3), коэффициент трения, линейно убывающий по λ в "
+                 "смешанном режиме, сопротивление качению ролика, температурная вспышка скользящего контакта по Блоку "
+                 "(сталь по стали), момент трения на распределительном валу по рассеиваемой мощности и момент привода "
+                 "с трением F dh/dθ + T_f",
+    "lu_zero": "Плоский толкатель: скорость увлечения масла меняет знак (установившейся плёнки нет) при углах, град ПРВ",
+    "lu_table": "В зависимости от частоты вращения двигателя",
+    "lu_names": {
+        "reduced_modulus_GPa": "приведённый модуль упругости E′, ГПа",
+        "composite_roughness_um": "суммарная шероховатость, мкм",
+        "min_film_parameter": "наименьший параметр плёнки λ", "min_film_parameter_speed_rpm": "при частоте, об/мин",
+        "min_film_parameter_cam_deg": "где, град ПРВ от вершины", "min_film_um": "наименьшая толщина плёнки, мкм",
+        "max_contact_temperature_C": "наибольшая температура контакта, °C",
+        "max_contact_temperature_speed_rpm": "при частоте, об/мин",
+        "rated_friction_power_W": "мощность трения на номинальной частоте, Вт",
+        "rated_mean_friction_torque_N_m": "средний момент трения на номинальной частоте, Н·м",
+        "rated_max_drive_torque_N_m": "наибольший момент привода с трением на номинальной частоте, Н·м",
+        "speed_rpm": "частота вращения, об/мин", "boundary_cam_deg": "граничный режим, град ПРВ",
+        "mixed_cam_deg": "смешанный режим, град ПРВ", "full_film_cam_deg": "жидкостный режим, град ПРВ",
+        "mean_friction_torque_N_m": "средний момент трения, Н·м", "friction_power_W": "мощность трения, Вт",
+        "max_flash_temperature_K": "наибольшая температурная вспышка, К",
+        "max_drive_torque_N_m": "наибольший момент привода, Н·м",
+    },
+})
+
+
 SYMBOLS = {
     "D": ("D", "bore, mm", "диаметр цилиндра, мм"), "S": ("S", "piston stroke, mm", "ход поршня, мм"),
     "ic": ("i<sub>c</sub>", "number of cylinders", "число цилиндров"),

@@ -28,10 +28,13 @@ UNITS = {
     "mm/rad2": ("mm/rad²", "мм/рад²"), "mm/rad": ("mm/rad", "мм/рад"), "mm/deg": ("mm/deg", "мм/град"), "%": ("%", "%"),
     "GPa": ("GPa", "ГПа"), "kg/m3": ("kg/m³", "кг/м³"), "N s/m": ("N·s/m", "Н·с/м"),
     "cm3/(s MPa)": ("cm³/(s·MPa)", "см³/(с·МПа)"),
+    "um": ("µm", "мкм"), "mPa s": ("mPa·s", "мПа·с"), "1/GPa": ("1/GPa", "1/ГПа"), "W": ("W", "Вт"), "K": ("K", "К"),
+    "degC": ("°C", "°C"),
 }
 """Display units of :data:`valvetrain.units.DISPLAY_UNITS` (and a few of the keys) as printed."""
 
 SUFFIXES = [
+    ("_per_GPa", "1/GPa"), ("_mPa_s", "mPa s"), ("_um", "um"), ("_C", "degC"),
     ("_cm3_per_s_MPa", "cm3/(s MPa)"), ("_N_s_per_m", "N s/m"), ("_kg_m3", "kg/m3"), ("_GPa", "GPa"),
     ("_mm2_s", "mm2 s"), ("_N_per_mm", "N/mm"), ("_mm_per_rad2", "mm/rad2"), ("_mm_rad2", "mm/rad2"),
     ("_mm_per_rad", "mm/rad"), ("_mm_rad", "mm/rad"), ("_mm_per_deg", "mm/deg"), ("_kg_mm2", "kg mm2"),
@@ -387,6 +390,12 @@ SEGMENTS = {
 """Names of the lift-law segments (``"Phi1 opening"``) without their side."""
 
 QUANTITIES = {
+    "cam contact: smallest film parameter lambda = h_min / sqrt(Rq1^2 + Rq2^2)":
+        ("cam contact: smallest film parameter λ = h_min / √(Rq1² + Rq2²)",
+         "контакт кулачка: наименьший параметр плёнки λ = h_min / √(σ1² + σ2²)"),
+    "cam contact: largest contact temperature (oil + Blok's flash temperature)":
+        ("cam contact: largest contact temperature (oil + Blok's flash temperature)",
+         "контакт кулачка: наибольшая температура контакта (масло + температурная вспышка по Блоку)"),
     "grinding wheel radius / concave radius": ("grinding wheel radius / concave radius",
                                                "радиус шлифовального круга / вогнутый радиус профиля"),
     "spring reserve against inertia": ("spring reserve against inertia", "коэффициент запаса пружины по силам инерции"),
@@ -478,6 +487,11 @@ QUANTITIES = {
 named by :data:`NAMES` of their key."""
 
 SKELETONS = {
+    "at {} rpm, {} cam deg from the nose": "при {} об/мин, {} град ПРВ от вершины",
+    "a flat follower's film vanishes where the entraining velocity changes sign (squeeze film not modelled)":
+        "плёнка у плоского толкателя исчезает там, где меняет знак скорость увлечения масла (выдавливание плёнки не "
+        "учитывается)",
+    "at {} rpm": "при {} об/мин",
     "coefficient {} (corrections note {}: not {})": "коэффициент {} (поправка {}: не {})",
     "along the profile with the instantaneous force and radius (Shang Hanji ({}), eq. {})":
         "по профилю, с мгновенными силой и радиусом кривизны (Shang Hanji ({}), ф. {})",
@@ -737,6 +751,23 @@ NAMES.update({
     "lift.rho": ("radius of curvature ρ", "радиус кривизны ρ"),
     "lift.pressure_angle": ("pressure angle", "угол давления"),
     "lift.contact_offset": ("contact offset b", "смещение точки контакта b"),
+})
+
+NAMES.update({
+    "lubrication.oil_viscosity": ("oil viscosity η0 at the contact inlet", "вязкость масла η0 на входе в контакт"),
+    "lubrication.pressure_viscosity": ("pressure-viscosity coefficient α", "пьезокоэффициент вязкости α"),
+    "lubrication.oil_temperature": ("oil temperature", "температура масла"),
+    "lubrication.cam_roughness": ("cam roughness Rq", "шероховатость кулачка σ1"),
+    "lubrication.follower_roughness": ("follower roughness Rq", "шероховатость толкателя σ2"),
+    "lubrication.boundary_friction": ("friction coefficient in boundary lubrication",
+                                      "коэффициент трения при граничной смазке"),
+    "lubrication.full_film_friction": ("friction coefficient in full film", "коэффициент трения при жидкостной смазке"),
+    "lubrication.roller_rolling_friction": ("rolling resistance coefficient of the roller",
+                                            "коэффициент сопротивления качению ролика"),
+    "lubrication.roller_slip": ("slip of the roller", "проскальзывание ролика"),
+    "lubrication.min_film_parameter": ("smallest film parameter allowed", "наименьший допустимый параметр плёнки"),
+    "lubrication.max_contact_temperature": ("largest contact temperature allowed",
+                                            "наибольшая допустимая температура контакта"),
 })
 
 NAMES.update({
