@@ -248,6 +248,12 @@ WORKS = {
         publisher="Proceedings of the General Discussion on Lubrication and Lubricants, Institution of Mechanical "
                   "Engineers, vol. 2, pp. 222-235", place="London", year="1937",
         note="The flash temperature of a sliding line contact."),
+    "merritt1967": Work(
+        short="Merritt (1967)",
+        authors="Merritt, H. E.",
+        title="Hydraulic Control Systems", kind="book", publisher="John Wiley & Sons", place="New York", year="1967",
+        note="The leakage of an annular clearance, the orifice equation, the effective bulk modulus of a liquid with "
+             "entrained air."),
     "dowson1986": Work(
         short="Dowson, Harrison and Taylor (1986)",
         authors="Dowson, D.; Harrison, P.; Taylor, C. M.",

@@ -29,6 +29,7 @@ from .drive import MassResult, SpringResult, StrengthResult
 from .dynamics import DynamicsResult
 from .grinding import GrindingResult
 from .hydraulic import CylinderPressure, HydraulicResult
+from .lash_adjuster import LashAdjusterResult
 from .lubrication import LubricationResult
 from .results import json_schema, quantity, record
 from .twostroke import TwoStrokeResults, TwoStrokeSummary, two_stroke_stage
@@ -376,7 +377,7 @@ def results_schema():
         "masses": json_schema(MassResult), "spring": json_schema(SpringResult),
         "strength": strength, "dynamics": json_schema(DynamicsResult),
         "grinding": json_schema(GrindingResult), "hydraulic": json_schema(HydraulicResult),
-        "lubrication": json_schema(LubricationResult)}}
+        "lubrication": json_schema(LubricationResult), "lash_adjuster": json_schema(LashAdjusterResult)}}
     return {
         "$schema": "https://json-schema.org/draft/2020-12/schema",
         "$id": f"https://valvetrain.invalid/results-{__version__}.schema.json",

@@ -316,6 +316,12 @@ def build_train(dyn, valve, law, drive, at, cam_speed=None):
     lash = k * law.ramp_height
     line = drive.lines["chosen"]
     links, names, notes = drive_links(dyn, valve, k, at)
+    if valve.lash_adjuster is not None:
+        from .lash_adjuster import series_link  # here: lash_adjuster imports drive, which imports this module
+
+        adjuster, note = series_link(valve, law, drive, cam_speed, at)
+        links = (float(series(links[0], adjuster)),) + links[1:]
+        notes.append(note)
     c = float(series(*links))
     if dyn.mass_kg is None:
         mass = float(drive.masses.at_valve)

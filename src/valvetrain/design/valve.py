@@ -24,6 +24,7 @@ from ..specification.cams import layout
 from ..springs import NoSpringFits
 from ..units import DEG, MM
 from .drive import drive_record, drive_stage, strength_stage
+from .lash_adjuster import lash_adjuster_stage
 from .lubrication import lubrication_stage
 from .dynamics import dynamics_stage
 from .grinding import grinding_stage
@@ -570,6 +571,7 @@ class ValveDesign:
     grinding: object = None        # GrindingResult when the valve has a [grinding] section
     hydraulic: object = None       # HydraulicResult when the valve has a [hydraulic] section
     lubrication: object = None     # LubricationResult when the valve has a [lubrication] section
+    lash_adjuster: object = None   # LashAdjusterResult when the valve has a [lash_adjuster] section
 
     @property
     def warnings(self):
@@ -609,6 +611,8 @@ class ValveDesign:
             out["hydraulic"] = record(self.hydraulic)
         if self.lubrication is not None:
             out["lubrication"] = record(self.lubrication)
+        if self.lash_adjuster is not None:
+            out["lash_adjuster"] = record(self.lash_adjuster)
         return out
 
     def __repr__(self):
@@ -674,6 +678,10 @@ def design_valve(name, valve, engine, gas, output, law=None, progress=None, cyli
     if valve.lubrication is not None:
         lubrication, lubrication_found = lubrication_stage(valve.lubrication, valve, engine, cam, drive, dynamics, name)
         found += lubrication_found
+    adjuster = None
+    if valve.lash_adjuster is not None:
+        adjuster, adjuster_found = lash_adjuster_stage(valve.lash_adjuster, valve, engine, cam, drive, dynamics, name)
+        found += adjuster_found
     grinding = None
     if valve.grinding is not None:
         try:
@@ -682,7 +690,8 @@ def design_valve(name, valve, engine, gas, output, law=None, progress=None, cyli
             raise SpecError([f"{at}.grinding.{exc}"]) from None
         found += grinding_found
     design = ValveDesign(name, valve.kind, valve.count, cam, flow_result, profile, clearance, records, drive,
-                         [c.named(name) for c in found], dynamics, grinding, lubrication=lubrication)
+                         [c.named(name) for c in found], dynamics, grinding, lubrication=lubrication,
+                         lash_adjuster=adjuster)
     return with_hydraulic(design, valve, engine, gas, cylinder)
 
 

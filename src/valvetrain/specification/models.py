@@ -391,6 +391,28 @@ class Lubrication(_Model):
         return self
 
 
+class LashAdjuster(_Model):
+    """[valves.NAME.lash_adjuster]: a hydraulic lash adjuster (zero lash on the base circle): its oil column's
+    compliance joins the drive stiffness of the dynamics, its leak-down and refill are followed per camshaft
+    revolution, and a float of the follower pumps it up (Merritt (1967)).
+
+    ``location``: ``"pivot"`` (the pivot of an end-pivot finger follower: it moves the valve by (i - 1) times its own
+    motion and carries (i - 1) times the valve force) or ``"tappet"`` (in the tappet or bucket: i times its motion,
+    the cam force).  The defaults are this package's, of a lash adjuster of a passenger-car engine."""
+
+    location: Literal["pivot", "tappet"] = "pivot"
+    plunger_diameter_mm: Length(2.0, 50.0, low_open=False) = 9.0
+    radial_clearance_um: _bounded(0.5, 50.0, "um", low_open=False) = 4.0
+    leak_length_mm: Length(0.5, 100.0, low_open=False) = 8.0
+    chamber_volume_cm3: _bounded(0.001, 50.0, "cm3", low_open=False) = 0.15
+    oil_viscosity_mPa_s: _bounded(0.1, 2000.0, "mPa s") = 10.0
+    bulk_modulus_GPa: _bounded(0.1, 5.0, "GPa") = 1.5
+    air_content: _bounded(0.0, 0.5, low_open=False) = 0.02
+    supply_pressure_MPa: _bounded(0.0, 2.0, "MPa", low_open=False) = 0.3
+    plunger_spring_N: _bounded(0.0, 500.0, "N", low_open=False) = 15.0
+    check_valve_diameter_mm: Length(0.2, 20.0, low_open=False) = 2.0
+
+
 class Valve(_Model):
     """[valves.NAME]: one valve (or a set of same-name valves) of a cylinder."""
 
@@ -412,6 +434,7 @@ class Valve(_Model):
     grinding: Optional[Grinding] = None
     hydraulic: Optional[Hydraulic] = None
     lubrication: Optional[Lubrication] = None
+    lash_adjuster: Optional[LashAdjuster] = None
 
     @property
     def layout(self):

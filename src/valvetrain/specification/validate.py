@@ -39,6 +39,9 @@ def _valve_problems(name, v, engine):
                    f"{engine.bore_mm:g}")
     if v.cam.base_radius_mm <= v.clearance_mm:
         out.append(f"{at}.cam.base_radius_mm = {v.cam.base_radius_mm:g} must exceed clearance_mm = {v.clearance_mm:g}")
+    if v.lash_adjuster is not None and v.clearance_mm != 0.0:
+        out.append(f"{at}.clearance_mm = {v.clearance_mm:g}: allowed 0 with a lash_adjuster section (it leaves no lash "
+                   "on the base circle for a ramp to take up)")
     ratio = v.spring.mean_diameter_ratio
     wires = v.spring.wire_diameter_range_mm
     low, high = (x / MM for x in feasible_mean_diameters(wires))
