@@ -1,0 +1,165 @@
+"""The hydraulic lash adjuster (valvetrain.lash_adjuster and its design stage), each against an independent
+reference: the leak-down of a plunger under a constant load by a second solver (scipy solve_ivp at rtol 1e-10) and by
+hand, the compression of oil with entrained air by quadrature of its compressibility, the orifice flow by hand, the
+motion ratio of an end-pivot finger by a hand-built lever, and the pump-up of a float of a simulated train."""
+
+import json
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+from scipy.integrate import quad, solve_ivp
+
+from valvetrain import lash_adjuster as hla
+from valvetrain.design import run
+from valvetrain.design.lash_adjuster import motion_ratio
+from valvetrain.specification import SpecError, parse_spec
+
+D, C, L, MU = 9e-3, 4e-6, 8e-3, 0.010
+"""Plunger diameter, radial clearance, sealing land [m] and oil viscosity [Pa s] of the tests."""
+
+
+def test_leak_down_time_by_hand_and_by_a_second_solver():
+    """Under 1000 N, supply 0: A = pi 0.009^2 / 4 = 6.3617e-5 m^2, p = 1000 / A = 15.719 MPa,
+    Q = pi 0.009 (4e-6)^3 15.719e6 / (12 x 0.010 x 0.008) = 2.9630e-8 m^3/s, sink velocity Q / A = 0.46576 mm/s:
+    1 mm takes 2.1470 s.  The second solver integrates dx/dt = -Q(F / A) / A with solve_ivp (rtol 1e-10) until
+    x = -1 mm."""
+    t = hla.leak_down_time(1000.0, 1e-3, D, C, L, MU)
+    assert t == pytest.approx(2.1470, rel=1e-4)
+    area = math.pi * D**2 / 4.0
+
+    def sink(_, x):
+        return [-hla.annular_leakage(1000.0 / area, D, C, L, MU) / area]
+
+    def done(_, x):
+        return x[0] + 1e-3
+    done.terminal = True
+    sol = solve_ivp(sink, (0.0, 100.0), [0.0], events=done, rtol=1e-10, atol=1e-15)
+    assert sol.t_events[0][0] == pytest.approx(t, rel=1e-9)
+
+
+def test_annular_leakage_does_not_flow_back():
+    assert hla.annular_leakage(-1e6, D, C, L, MU) == 0.0
+
+
+def test_chamber_compression_is_the_integral_of_the_compressibility():
+    """-dV/dp = V (1/beta + a0 p_atm / P^2) (isothermal free air of volume a0 V p_atm / P), integrated by quad from
+    the supply pressure to 20 MPa; and without air the oil alone, V (p - p_s) / beta."""
+    volume, beta, air, supply = 0.15e-6, 1.5e9, 0.02, 0.3e6
+
+    def compressibility(p):
+        return volume * (1.0 / beta + air * hla.ATMOSPHERE / (p + hla.ATMOSPHERE) ** 2)
+
+    expected = quad(compressibility, supply, 20e6, epsabs=0.0, epsrel=1e-12)[0]
+    assert hla.chamber_compression(20e6, supply, volume, beta, air) == pytest.approx(expected, rel=1e-10)
+    assert hla.chamber_compression(20e6, supply, volume, beta, 0.0) == pytest.approx(volume * 19.7e6 / beta, rel=1e-12)
+
+
+def test_check_valve_flow_by_hand():
+    """0.6 x pi 0.002^2 / 4 x sqrt(2 x 0.3e6 / 850) = 0.6 x 3.14159e-6 x 26.5684 = 5.0080e-5 m^3/s."""
+    assert hla.check_valve_flow(0.3e6, 2e-3) == pytest.approx(5.0080e-5, rel=1e-4)
+    assert hla.check_valve_flow(-1.0, 2e-3) == 0.0
+
+
+def test_pump_up_follows_the_gap_at_its_rate_and_locks_on_landing():
+    """A gap opening at 2 m/s for 1 s and closing as fast, against a plunger of 1 m/s: the plunger extends as s = t
+    and the closing gap 2 (2 - t) meets it at t = 4/3 s, where it locks at 4/3 m (to one step of 0.01 s); a plunger
+    faster than the gap keeps the largest gap."""
+    t = np.linspace(0.0, 2.0, 201)
+    gap = np.where(t <= 1.0, 2.0 * t, 2.0 * (2.0 - t))
+    assert hla.pump_up(gap, 0.01, 1.0) == pytest.approx(4.0 / 3.0, abs=0.01)
+    assert hla.pump_up(gap, 0.01, 100.0) == pytest.approx(2.0)
+    assert hla.pump_up(np.zeros(5), 0.01, 1.0) == 0.0
+
+
+def test_motion_ratio_of_an_end_pivot_finger_is_the_lever():
+    """A hand-built lever: pivot at x = 0, roller at a, valve at L = i a, straight.  The pivot rises by s with the
+    roller held on the cam: the valve end moves by s (1 - L / a); the adjuster's share of the load by the moments
+    about the roller, F_pivot a = F_valve (L - a)."""
+    a, i, s = 0.020, 1.6, 1e-4
+    length = i * a
+
+    def valve_end(pivot):                       # height of the valve end of the straight finger through the roller
+        return pivot + (0.0 - pivot) * length / a
+
+    moved = abs(valve_end(s) - valve_end(0.0))
+    assert motion_ratio("pivot", i) == pytest.approx(moved / s, rel=1e-12)
+    assert motion_ratio("pivot", i) == pytest.approx(1.0 * (length - a) / a, rel=1e-12)
+    assert motion_ratio("tappet", i) == i
+
+
+EXAMPLE = Path(__file__).parents[1] / "examples" / "seed000-polydyne.toml"
+
+
+def polydyne(dynamics="", adjuster='location = "tappet"\n'):
+    """The polydyne example's intake (zero clearance, no ramp, rocker ratio 1.6) with a lash adjuster."""
+    text = EXAMPLE.read_text().replace("[valves.intake.spring]", f"[valves.intake.dynamics]\nspeeds = 30\n{dynamics}\n"
+                                       f"[valves.intake.lash_adjuster]\n{adjuster}\n[valves.intake.spring]")
+    return parse_spec(text)
+
+
+@pytest.fixture(scope="module")
+def floating():
+    """A spring preload of 150 N lets the follower float from about 0.9 x the rated speed."""
+    design = run(polydyne("spring_preload_N = 150\n"))
+    return design.valves["intake"]
+
+
+def test_a_float_pumps_the_adjuster_up_and_holds_the_valve_open(floating):
+    rec = json.loads(json.dumps(floating.summary["lash_adjuster"], default=float))
+    per = rec["per_speed"]
+    checks = {c.quantity: c for c in floating.checks}
+    jump = checks["intake: follower separation (jump) speed / rated speed"].value * 7000.0
+    # no pump-up below the first float; pump-up at some speed above it
+    below = [p for s, p in zip(per["speed_rpm"], per["pump_up_um"], strict=True) if p is not None and s < jump]
+    above = [p for s, p in zip(per["speed_rpm"], per["pump_up_um"], strict=True) if p is not None and s > jump]
+    assert max(below) == 0.0 and max(above) > 1.0
+    # the valve held open is the pump-up, less one base circle's leak-down under the preload, times the ratio 1.6
+    for pump, held in zip(per["pump_up_um"], per["held_open_um"], strict=True):
+        if pump is not None:
+            assert held <= 1.6 * pump + 1e-12
+    held = checks["intake: lash adjuster: valve held off its seat after a float, up to the over-speed"]
+    assert held.severity == "failure" and not held.passed
+
+
+def test_the_adjuster_softens_the_drive_in_series(floating):
+    """c with the adjuster = 1 / (1/c_without + 1/K_valve): the dynamics' drive stiffness against the same train
+    without the section, and the adjuster's own stiffness at the valve."""
+    without = run(parse_spec(EXAMPLE.read_text().replace(
+        "[valves.intake.spring]", "[valves.intake.dynamics]\nspeeds = 30\nspring_preload_N = 150\n\n"
+        "[valves.intake.spring]"))).valves["intake"].dynamics.parameters.drive_stiffness
+    rec = floating.lash_adjuster
+    assert floating.dynamics.parameters.drive_stiffness == pytest.approx(
+        1.0 / (1.0 / without + 1.0 / rec.stiffness_at_valve), rel=1e-12)
+    assert rec.stiffness_at_valve == pytest.approx(rec.stiffness / 1.6**2, rel=1e-12)
+    assert rec.stiffness == pytest.approx(rec.reference_force / rec.compression, rel=1e-12)
+
+
+def test_leak_down_per_revolution_scales_with_the_inverse_viscosity():
+    """The oil's viscosity changes neither the stiffness nor the forces, and the annular leakage is ~ 1 / mu: four
+    times the viscosity, a quarter of the leak-down at every speed."""
+    thin = run(polydyne(adjuster='location = "tappet"\noil_viscosity_mPa_s = 10\n')).valves["intake"]
+    thick = run(polydyne(adjuster='location = "tappet"\noil_viscosity_mPa_s = 40\n')).valves["intake"]
+    a, b = thin.lash_adjuster.per_speed.leak_down, thick.lash_adjuster.per_speed.leak_down
+    assert np.allclose(np.asarray(a), 4.0 * np.asarray(b), rtol=1e-12)
+
+
+@pytest.mark.parametrize("change, words", [
+    (("clearance_mm = 0.0             #", "clearance_mm = 0.1             #"),
+     "valves.intake.clearance_mm = 0.1: allowed 0 with a lash_adjuster section"),
+    (('location = "tappet"', 'location = "pivot"\nplunger_diameter_mm = 1'), "plunger_diameter_mm"),
+])
+def test_refusals_name_the_key(change, words):
+    text = EXAMPLE.read_text().replace("[valves.intake.spring]", '[valves.intake.lash_adjuster]\nlocation = "tappet"\n\n'
+                                       "[valves.intake.spring]").replace(*change)
+    with pytest.raises(SpecError, match=words):
+        run(parse_spec(text))
+
+
+def test_a_pivot_needs_a_finger():
+    text = EXAMPLE.read_text().replace("rocker_ratio = 1.6", "rocker_ratio = 1.0").replace(
+        "[valves.intake.spring]", "[valves.intake.dynamics]\nspeeds = 4\n\n[valves.intake.lash_adjuster]\n\n"
+        "[valves.intake.spring]")
+    with pytest.raises(SpecError, match="needs rocker_ratio > 1"):
+        run(parse_spec(text))
