@@ -14,6 +14,7 @@ from ..checks import describe_range
 from ..design.dynamics import SOURCES as DYNAMICS_SOURCES
 from ..design.grinding import SOURCES as GRINDING_SOURCES
 from ..design.hydraulic import SOURCES as HYDRAULIC_SOURCES
+from ..design.lash_adjuster import SOURCES as ADJUSTER_SOURCES
 from ..design.lubrication import SOURCES as LUBRICATION_SOURCES
 from ..design.results import record
 from ..tables import lift_table_columns
@@ -260,6 +261,21 @@ def _lubrication(v):
             "table": list(zip(*(per[c] for c in LUBRICATION_COLUMNS), strict=True))}
 
 
+ADJUSTER_COLUMNS = ["speed_rpm", "leak_down_um", "valve_lash_um", "refill_share", "pump_up_um", "held_open_um"]
+"""The columns of the report's table of the lash adjuster against engine speed."""
+
+
+def _lash_adjuster(v):
+    """The lash-adjuster record for the report: its headline rows and its table against engine speed."""
+    if v.lash_adjuster is None:
+        return None
+    rec = record(v.lash_adjuster)
+    per = rec["per_speed"]
+    return {"rows": [(k, val) for k, val in rec.items() if k not in ("per_speed", "location")],
+            "location": rec["location"], "columns": ADJUSTER_COLUMNS,
+            "table": list(zip(*(per[c] for c in ADJUSTER_COLUMNS), strict=True))}
+
+
 def _summary(results, t):
     """The report's first page: one row per valve (its open failures, warnings and info, and its accepted checks),
     the limits not met (ranked) and the failures the specification accepts."""
@@ -350,6 +366,7 @@ def render_report(results, plots, lang="en", folder=None):
             "grinding": _grinding(name, v),
             "hydraulic": _hydraulic(v),
             "lubrication": _lubrication(v),
+            "lash_adjuster": _lash_adjuster(v),
         })
     first_page = _summary(results, TEXT[lang])
     crank = None
@@ -370,6 +387,7 @@ def render_report(results, plots, lang="en", folder=None):
         first_page=first_page, timing=plots.get("(timing)"), table_columns=TABLE_COLUMNS,
         dynamics_sources=DYNAMICS_SOURCES, grinding_sources=GRINDING_SOURCES,
         hydraulic_sources=HYDRAULIC_SOURCES, lubrication_sources=LUBRICATION_SOURCES,
+        adjuster_sources=ADJUSTER_SOURCES,
         step=REPORT_STEP_DEG, output=_flatten(spec["output"]), crank=crank, ports=ports,
     )
     template = env.get_template("report.html")

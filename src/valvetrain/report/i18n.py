@@ -651,6 +651,68 @@ TEXT["ru"].update({
 })
 
 
+TEXT["en"].update({
+    "la_chapter": "11. Hydraulic lash adjuster",
+    "la_method": "The oil column of the adjuster's high-pressure chamber is compressed from the supply pressure with "
+                 "its entrained air (isothermal); its secant stiffness under the largest quasi-static force at the "
+                 "rated speed joins the drive stiffness of the dynamics in series. Over each camshaft revolution the "
+                 "plunger leaks down through its annular clearance under the force it carries (laminar flow), and "
+                 "the lash this leaves at closing is refilled through the check valve on the base circle. Where the "
+                 "simulated follower floats, the plunger extends into the opened gap at the rate the check valve "
+                 "lets in and keeps that extension when the follower lands; less the leak-down under the valve "
+                 "spring's preload over one base circle, it holds the valve off its seat",
+    "la_location": "Location", "la_locations": {"pivot": "pivot of an end-pivot finger follower",
+                                                "tappet": "in the tappet, in series with the cam contact"},
+    "la_names": {
+        "motion_ratio": "valve motion / adjuster motion", "reference_force_N": "largest force on the adjuster, N",
+        "chamber_pressure_MPa": "chamber pressure under it, MPa", "compression_um": "compression of the oil column, µm",
+        "stiffness_N_per_mm": "stiffness of the oil column, N/mm",
+        "stiffness_at_valve_N_per_mm": "its stiffness at the valve, N/mm",
+        "drive_stiffness_with_adjuster_N_per_mm": "drive stiffness of the dynamics with it, N/mm",
+        "rated_leak_down_um": "leak-down per revolution at the rated speed, µm",
+        "rated_valve_lash_um": "lash at the valve at closing, rated speed, µm",
+        "max_refill_share": "largest refill time / base-circle time",
+        "max_pump_up_um": "largest pump-up of a float up to the over-speed, µm",
+        "max_held_open_um": "largest valve lift held on the base circle, µm",
+        "speed_rpm": "engine speed, rpm", "leak_down_um": "leak-down per revolution, µm",
+        "valve_lash_um": "lash at the valve, µm", "refill_share": "refill time / base-circle time",
+        "pump_up_um": "pump-up, µm", "held_open_um": "valve held open, µm",
+    },
+})
+
+TEXT["ru"].update({
+    "la_chapter": "11. Гидрокомпенсатор зазора",
+    "la_method": "Столб масла в камере высокого давления гидрокомпенсатора сжимается от давления подачи вместе с "
+                 "нерастворённым воздухом (изотермически); его секущая жёсткость при наибольшей квазистатической "
+                 "силе на номинальной частоте включается последовательно в жёсткость привода в расчёте динамики. За "
+                 "каждый оборот распределительного вала плунжер проседает из-за утечки через кольцевой зазор под "
+                 "действующей на него силой (ламинарное течение), а оставленный этим зазор при посадке клапана "
+                 "восполняется через обратный клапан на цилиндрической части кулачка. Там, где в расчёте динамики "
+                 "толкатель отрывается от кулачка, плунжер выдвигается в открывшийся зазор со скоростью, которую "
+                 "допускает обратный клапан, и сохраняет это выдвижение после возврата толкателя; за вычетом "
+                 "проседания под силой предварительной затяжки пружины клапана за время одной цилиндрической части "
+                 "оно не даёт клапану сесть на седло",
+    "la_location": "Расположение", "la_locations": {"pivot": "опора рычага с опорой на конце",
+                                                    "tappet": "в толкателе, последовательно с контактом кулачка"},
+    "la_names": {
+        "motion_ratio": "перемещение клапана / перемещение гидрокомпенсатора",
+        "reference_force_N": "наибольшая сила на гидрокомпенсатор, Н",
+        "chamber_pressure_MPa": "давление в камере при ней, МПа",
+        "compression_um": "сжатие столба масла, мкм", "stiffness_N_per_mm": "жёсткость столба масла, Н/мм",
+        "stiffness_at_valve_N_per_mm": "она же, приведённая к клапану, Н/мм",
+        "drive_stiffness_with_adjuster_N_per_mm": "жёсткость привода в расчёте динамики с ним, Н/мм",
+        "rated_leak_down_um": "проседание за оборот на номинальной частоте, мкм",
+        "rated_valve_lash_um": "зазор у клапана при посадке на номинальной частоте, мкм",
+        "max_refill_share": "наибольшее отношение времени заполнения к времени на цилиндрической части",
+        "max_pump_up_um": "наибольшее выдвижение плунжера при отрыве до заброса оборотов, мкм",
+        "max_held_open_um": "наибольший подъём клапана, удерживаемый на цилиндрической части, мкм",
+        "speed_rpm": "частота вращения, об/мин", "leak_down_um": "проседание за оборот, мкм",
+        "valve_lash_um": "зазор у клапана, мкм", "refill_share": "время заполнения / время на цилиндрической части",
+        "pump_up_um": "выдвижение при отрыве, мкм", "held_open_um": "клапан удерживается открытым, мкм",
+    },
+})
+
+
 SYMBOLS = {
     "D": ("D", "bore, mm", "диаметр цилиндра, мм"), "S": ("S", "piston stroke, mm", "ход поршня, мм"),
     "ic": ("i<sub>c</sub>", "number of cylinders", "число цилиндров"),

@@ -360,6 +360,7 @@ NAMES = {
 """Names of the keys without their unit suffix (or a whole key where the suffix is no unit): ``(en, ru)``."""
 
 VALUES = {
+    "pivot": "опора рычага", "tappet": "в толкателе",
     "intake": "впускной", "exhaust": "выпускной", "inlet": "впускное", "transfer": "продувочное",
     "flat": "плоский", "roller": "роликовый", "direct": "непосредственный", "rocker": "с коромыслом",
     "pushrod": "со штангой и коромыслом", "inline": "рядный", "v": "V-образный", "si": "с искровым зажиганием",
@@ -390,6 +391,15 @@ SEGMENTS = {
 """Names of the lift-law segments (``"Phi1 opening"``) without their side."""
 
 QUANTITIES = {
+    "lash adjuster: refill time of the leak-down / base-circle time":
+        ("lash adjuster: refill time of the leak-down / base-circle time",
+         "гидрокомпенсатор: время заполнения после проседания / время на цилиндрической части кулачка"),
+    "lash adjuster: pump-up during a float, up to the over-speed":
+        ("lash adjuster: pump-up during a float, up to the over-speed",
+         "гидрокомпенсатор: выдвижение плунжера при отрыве толкателя до заброса оборотов"),
+    "lash adjuster: valve held off its seat after a float, up to the over-speed":
+        ("lash adjuster: valve held off its seat after a float, up to the over-speed",
+         "гидрокомпенсатор: клапан не садится на седло после отрыва толкателя до заброса оборотов"),
     "cam contact: smallest film parameter lambda = h_min / sqrt(Rq1^2 + Rq2^2)":
         ("cam contact: smallest film parameter λ = h_min / √(Rq1² + Rq2²)",
          "контакт кулачка: наименьший параметр плёнки λ = h_min / √(σ1² + σ2²)"),
@@ -492,6 +502,10 @@ SKELETONS = {
         "плёнка у плоского толкателя исчезает там, где меняет знак скорость увлечения масла (выдавливание плёнки не "
         "учитывается)",
     "at {} rpm": "при {} об/мин",
+    "lash adjuster: {} N/mm at the valve in series with the cam contact (the oil column's secant stiffness under {} N)":
+        "гидрокомпенсатор: {} Н/мм, приведённая к клапану, последовательно с контактом кулачка (секущая жёсткость "
+        "столба масла при силе {} Н)",
+    "largest over the speeds up to the over-speed": "наибольшее по частотам вращения до заброса оборотов",
     "coefficient {} (corrections note {}: not {})": "коэффициент {} (поправка {}: не {})",
     "along the profile with the instantaneous force and radius (Shang Hanji ({}), eq. {})":
         "по профилю, с мгновенными силой и радиусом кривизны (Shang Hanji ({}), ф. {})",
@@ -751,6 +765,21 @@ NAMES.update({
     "lift.rho": ("radius of curvature ρ", "радиус кривизны ρ"),
     "lift.pressure_angle": ("pressure angle", "угол давления"),
     "lift.contact_offset": ("contact offset b", "смещение точки контакта b"),
+})
+
+NAMES.update({
+    "lash_adjuster.location": ("location of the lash adjuster", "расположение гидрокомпенсатора"),
+    "lash_adjuster.plunger_diameter": ("plunger diameter", "диаметр плунжера"),
+    "lash_adjuster.radial_clearance": ("radial clearance of the plunger", "радиальный зазор плунжера"),
+    "lash_adjuster.leak_length": ("sealing length of the plunger", "длина уплотняющего пояска плунжера"),
+    "lash_adjuster.chamber_volume": ("volume of the high-pressure chamber", "объём камеры высокого давления"),
+    "lash_adjuster.oil_viscosity": ("oil viscosity", "вязкость масла"),
+    "lash_adjuster.bulk_modulus": ("bulk modulus of the oil", "модуль объёмной упругости масла"),
+    "lash_adjuster.air_content": ("share of free air at atmospheric pressure",
+                                  "доля нерастворённого воздуха при атмосферном давлении"),
+    "lash_adjuster.supply_pressure": ("oil supply pressure", "давление подачи масла"),
+    "lash_adjuster.plunger_spring": ("plunger spring force", "сила пружины плунжера"),
+    "lash_adjuster.check_valve_diameter": ("check valve bore", "диаметр седла обратного клапана"),
 })
 
 NAMES.update({
