@@ -449,6 +449,18 @@ def load_maps(valve, engine, cam, theta, spring_force, mass, dynamics=None):
     return [m for m in maps if m is not None], (low, high, source)
 
 
+def event_load_maps(valve, engine, cam, drive, dynamics=None):
+    """The cam force over the strength speed range on the open event: its camshaft angles [rad from the nose] (2001
+    and the law's breakpoints), the list of :class:`LoadMap` and the range (low, high, source) of :func:`load_maps`
+    with the drive stage's chosen spring and reduced mass."""
+    law = cam.law
+    theta = np.unique(np.concatenate([np.linspace(law.valve_opens, law.valve_closes, 2001), law.breakpoints]))
+    theta = theta[(theta >= law.valve_opens) & (theta <= law.valve_closes)]
+    maps, span = load_maps(valve, engine, cam, theta, drive.lines["chosen"].force(cam.valve_lift(theta)),
+                           drive.masses.at_valve, dynamics)
+    return theta, maps, span
+
+
 def _worst(maps, values):
     """The largest of ``values`` (one array (S, n) per load map) over every map: a :class:`Worst`."""
     best = None
@@ -501,11 +513,7 @@ def strength_stage(valve, gas, engine, cam, drive, dynamics=None):
     (the contact stress under the dynamic force).
     """
     law = cam.law
-    theta = np.unique(np.concatenate([np.linspace(law.valve_opens, law.valve_closes, 2001), law.breakpoints]))
-    theta = theta[(theta >= law.valve_opens) & (theta <= law.valve_closes)]
-    line = drive.lines["chosen"]
-    maps, (low, high, source) = load_maps(valve, engine, cam, theta, line.force(cam.valve_lift(theta)),
-                                          drive.masses.at_valve, dynamics)
+    theta, maps, (low, high, source) = event_load_maps(valve, engine, cam, drive, dynamics)
     found = []
     p_open = 0.0
     if valve.kind == "exhaust":

@@ -12,8 +12,7 @@ from ..bibliography import cite
 from ..checks import check
 from ..specification.messages import SpecError
 from ..strength import cam_force
-from ..units import to_display
-from .drive import load_maps
+from .drive import event_load_maps
 from .results import quantity
 
 SOURCES = cite("merritt1967")
@@ -148,9 +147,7 @@ def lash_adjuster_stage(la, valve, engine, cam, drive, dynamics=None, name="valv
     area, refill = _geometry(la)
     ref = reference_force(valve, law, drive, cam.cam_speed, ratio)
     stiffness, sink, pressure = adjuster_stiffness(la, ref)
-    theta = np.linspace(law.valve_opens, law.valve_closes, 2001)
-    maps, (low, high, _) = load_maps(valve, engine, cam, theta, drive.lines["chosen"].force(cam.valve_lift(theta)),
-                                     drive.masses.at_valve, dynamics)
+    _, maps, (low, high, _) = event_load_maps(valve, engine, cam, drive, dynamics)
     to_cam = cam.cam_speed / engine.rated_speed
     base = 2.0 * np.pi - (law.valve_closes - law.valve_opens)
     pumped = _pump_up(la, dynamics, ratio, refill, area, drive.lines["chosen"].preload, base, low, high)

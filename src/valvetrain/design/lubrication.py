@@ -13,7 +13,7 @@ from ..checks import check
 from ..specification.messages import SpecError
 from ..strength import hertz_half_width
 from ..units import to_display
-from .drive import load_maps
+from .drive import event_load_maps
 from .results import quantity
 
 STEEL_EFFUSIVITY = float(np.sqrt(46.6 * 7850.0 * 460.0))
@@ -181,11 +181,7 @@ def lubrication_stage(lub, valve, engine, cam, drive, dynamics=None, name="valve
     at = f"valves.{name}"
     if valve.parts.cam_width is None:
         raise SpecError([f"{at}.lubrication needs {at}.parts.cam_width_mm (the load per unit width of the contact)"])
-    law = cam.law
-    theta = np.unique(np.concatenate([np.linspace(law.valve_opens, law.valve_closes, 2001), law.breakpoints]))
-    theta = theta[(theta >= law.valve_opens) & (theta <= law.valve_closes)]
-    maps, _ = load_maps(valve, engine, cam, theta, drive.lines["chosen"].force(cam.valve_lift(theta)),
-                        drive.masses.at_valve, dynamics)
+    maps = event_load_maps(valve, engine, cam, drive, dynamics)[1]
     to_cam = cam.cam_speed / engine.rated_speed
     rows, worst = [], None
     for m in maps:
