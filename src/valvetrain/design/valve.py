@@ -519,8 +519,9 @@ def valve_checks(cam, flow_result, profile, valve, engine, timing):
                          note=f"no ramp takes up clearance_mm = {valve.clearance / MM:g}: the flank does"))
     out.append(check("seat angle", valve.seat_angle, *SEAT_ANGLE_USUAL[valve.kind],
                      source="Valve-train practical works (n.d.), work 1 (usually 30 deg inlet, 45 deg exhaust)", unit="deg", severity="info"))
-    out.append(check("clearance h0", valve.clearance, *CLEARANCE_RANGES[valve.kind], source="Valve-train practical works (n.d.), work 2",
-                     unit="mm"))
+    if valve.lash_adjuster is None:  # a hydraulic lash adjuster leaves no clearance (validated: clearance_mm = 0)
+        out.append(check("clearance h0", valve.clearance, *CLEARANCE_RANGES[valve.kind],
+                         source="Valve-train practical works (n.d.), work 2", unit="mm"))
     ratio = layout_check("rocker ratio", i_k, drive)
     if ratio is not None:
         out.append(ratio)
