@@ -25,7 +25,7 @@ _PUBLIC = {
     **dict.fromkeys(["DesignResults", "ValveDesign", "clearance_stage", "design_valve", "flow_stage", "law_stage",
                      "profile_stage", "run", "valve_checks"], "design"),
     "grinding_stage": "design.grinding",
-    "hydraulic_stage": "design.hydraulic",
+    "hydraulic_stage": "design.hydraulic_actuation",
     **dict.fromkeys(["AsymmetricLaw", "CombinedLaw", "ConstantAccelerationLaw", "DynamicLaw", "HarmonicLaw", "KurzLaw",
                      "LiftLaw", "PolydyneLaw", "PolynomialLaw", "TangentLaw", "ThreeArcLaw"], "laws"),
     **dict.fromkeys(["SpecError", "example_spec", "load_spec", "parse_spec", "si"], "specification"),

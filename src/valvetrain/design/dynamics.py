@@ -23,7 +23,7 @@ from ..dynamics.perturbation import perturbation_parameter
 from ..dynamics.resonance import resonance
 from ..dynamics.sweep import sweep, sweep_size
 from ..specification import SpecError
-from ..specification.cams import layout
+from ..layouts import layout
 from ..units import DEG, MM, cam_per_crank, rpm_to_rad_s, to_display
 from .results import quantity, record
 
@@ -391,7 +391,7 @@ POOR_FILM_BAND = (0.4, 0.6)
 h_min vanishes at gamma = 0.5); the width of the band is this package's choice."""
 
 
-def rated_contact(r, law, heel_radius, roller_radius, width, modulus):
+def rated_contact(r, law, heel_radius, follower, width, modulus):
     """The cam contact at one speed under the simulated force: Hertz stress, lubrication characteristic, drive torque.
 
     Parameters
@@ -400,8 +400,8 @@ def rated_contact(r, law, heel_radius, roller_radius, width, modulus):
     law : LiftLaw
     heel_radius : float
         Circle the law's lift starts from [m].
-    roller_radius : float or None
-        [m]; None for a flat follower (then the lubrication characteristic too).
+    follower : valvetrain.followers.Follower
+        The cam's follower (the lubrication characteristic where it has one).
     width : float or None
         Cam width [m]; None: no stress.
     modulus : float
@@ -426,11 +426,11 @@ def rated_contact(r, law, heel_radius, roller_radius, width, modulus):
            "mean_drive_torque": float(r.torque.mean())}
     j = None
     if width is not None:
-        sigma = dynamic_contact_stress(law, theta, force, heel_radius, width, modulus, roller_radius)
+        sigma = dynamic_contact_stress(law, theta, force, heel_radius, width, modulus, follower)
         j = int(np.argmax(sigma))
         out.update(max_contact_stress=float(sigma[j]), max_contact_stress_angle=float(theta[j]))
-    if roller_radius is None:
-        gamma = lubrication_characteristic(law, theta, heel_radius)
+    gamma = lubrication_characteristic(law, theta, heel_radius, follower)
+    if gamma is not None:
         loaded = (force > 0.0) & (law.lift(theta) > 0.0)
         poor = loaded & (gamma >= POOR_FILM_BAND[0]) & (gamma <= POOR_FILM_BAND[1])
         step = float(theta[1] - theta[0])
@@ -516,9 +516,8 @@ def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, 
     eps_rated = float(perturbation_parameter(m, c, kk, engine.rated_speed * to_cam))
     rated_record = speed_record(rated, engine.rated_speed, eps_rated)
     if cam is not None:
-        roller = cam.roller_radius if cam.follower == "roller" else None
-        rated_record = replace(rated_record, **rated_contact(rated, law, cam.heel_radius, roller, valve.parts.cam_width,
-                                                             valve.parts.contact_modulus))
+        rated_record = replace(rated_record, **rated_contact(rated, law, cam.heel_radius, cam.follower_model,
+                                                             valve.parts.cam_width, valve.parts.contact_modulus))
     out = DynamicsResult(
         dyn.model, params, (float(low), float(high)), int(dyn.speeds), crank(head["jump_speed"]),
         crank(head["bounce_onset_speed"]), head["max_seating_velocity"], crank(head["max_seating_velocity_speed"]),

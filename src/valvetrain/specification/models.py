@@ -13,8 +13,9 @@ from typing import Annotated, ClassVar, Literal, Optional, Union
 from pydantic import Field, field_validator, model_validator
 
 from ..files import read_indicator
+from ..layouts import layout
 from ..spring_materials import GRADES, grade
-from .cams import Cam, layout
+from .cams import Cam
 from .fields import Length, Pair, _bounded, _Model, _zero_or
 from .messages import SpecError, shown
 
