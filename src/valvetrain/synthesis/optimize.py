@@ -928,7 +928,7 @@ def _passed(checks):
 def _designed(problem, spec, valve, limits, spring, x):
     """(x, specification, full design, final checks, specification text) of a point, or None where the point admits
     no full design (no spring fits, a law the design refuses)."""
-    from ..specification.validate import parse_spec
+    from ..specification.reading import parse_spec
 
     values = {v.path: float(value) for v, value in zip(problem.variables, x, strict=True)}
     text = optimum_spec_text(spec, valve, problem.point(x), values)
