@@ -10,10 +10,41 @@ References
 Valve-train practical works (n.d.), works 5 and 7.
 """
 
+from dataclasses import dataclass
+
 from . import flow, masses
 
-LAYOUTS = ("direct", "rocker", "pushrod")
-"""Drive layouts (``[valves.NAME.drive] layout``), see the module's text."""
+
+@dataclass(frozen=True)
+class Layout:
+    """A drive layout: its name and the chain of parts from the cam to the valve.
+
+    Attributes
+    ----------
+    name : str
+        The ``[valves.NAME.drive] layout`` value.
+    parts : tuple of str
+        The moving parts between cam and valve in order from the cam: ``"tappet"`` (in a guide, under the cam),
+        ``"pushrod"``, ``"rocker"`` (on its shaft, the valve arm at the valve).
+    """
+
+    name: str
+    parts: tuple
+
+    tappet = property(lambda self: "tappet" in self.parts)
+    pushrod = property(lambda self: "pushrod" in self.parts)
+    rocker = property(lambda self: "rocker" in self.parts)
+
+    @property
+    def train_masses(self):
+        """The ``[drive.masses]`` keys of the parts a multi-mass train of this layout needs, from the cam."""
+        return tuple({"tappet": "tappet_kg", "pushrod": "pushrod_kg", "rocker": "rocker_inertia_kg_mm2"}[p]
+                     for p in self.parts)
+
+
+LAYOUTS = {"direct": Layout("direct", ("tappet",)), "rocker": Layout("rocker", ("rocker",)),
+           "pushrod": Layout("pushrod", ("tappet", "pushrod", "rocker"))}
+"""Drive layouts by name (``[valves.NAME.drive] layout``), see the module's text."""
 
 
 def layout(valve):
@@ -21,6 +52,11 @@ def layout(valve):
     if valve.drive.layout is not None:
         return valve.drive.layout
     return "direct" if valve.rocker_ratio == 1.0 else "pushrod"
+
+
+def chain(valve):
+    """The :class:`Layout` of a valve (SI view or section), by :func:`layout`."""
+    return LAYOUTS[layout(valve)]
 
 
 def train_mass(valve, spring_mass):

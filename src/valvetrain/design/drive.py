@@ -16,7 +16,7 @@ import numpy as np
 
 from .. import flow, masses, springs, strength
 from ..checks import check
-from ..layouts import layout, train_mass
+from ..layouts import chain, layout, train_mass
 from ..spring_materials import grade
 from ..specification.si import si_name
 from ..units import to_display
@@ -518,7 +518,7 @@ def _where(w):
 def _strength(valve, cam, theta, maps, p_open):
     """Work 7 on the load maps: every check the layout and the given dimensions allow, at its worst point."""
     i_k = cam.rocker_ratio
-    parts, drive_layout, follower = valve.parts, layout(valve), cam.follower_model
+    parts, drive, follower = valve.parts, chain(valve), cam.follower_model
     notes, verdicts = [], []
     load = _worst(maps, [m.force for m in maps])
     p_max, at_load = load.value, _where(load)
@@ -554,13 +554,13 @@ def _strength(valve, cam, theta, maps, p_open):
             verdicts.append(strength.verdict("cam_contact_stress", stress.value, joined(
                 _where(stress), "along the profile with the instantaneous force and radius (Shang Hanji (1988), "
                 "eq. 2.5)")))
-    if drive_layout in ("direct", "pushrod") and not follower.rolling and \
+    if drive.tappet and not follower.rolling and \
             need(["tappet_diameter_mm", "tappet_guide_length_mm"], "tappet_side_pressure"):
         b = float(np.max(np.abs(cam.law.derivatives(theta)[1])))
         q = strength.tappet_side_pressure(p_max, b, parts.tappet_diameter, parts.tappet_guide_length)
         verdicts.append(strength.verdict("tappet_side_pressure", q, joined(
             at_load, f"offset b = {to_display(b, 'mm'):.4g} mm = max dh/dphi (7.7)")))
-    if drive_layout == "pushrod":
+    if drive.pushrod:
         if need(["pushrod_length_mm", "pushrod_diameter_mm"], "pushrod_buckling_margin"):
             inertia = strength.second_moment(parts.pushrod_diameter, parts.pushrod_bore)
             p_cr = strength.euler_load(parts.pushrod_modulus, inertia, parts.pushrod_length)
@@ -572,7 +572,7 @@ def _strength(valve, cam, theta, maps, p_open):
                 p_max, e_contact, parts.ball_radius, parts.socket_radius), at_load))
         if need(["pushrod_head_area_mm2"], "pushrod_head_pressure"):
             verdicts.append(strength.verdict("pushrod_head_pressure", p_max / parts.pushrod_head_area, at_load))
-    if drive_layout in ("rocker", "pushrod"):
+    if drive.rocker:
         if need(["rocker_pad_width_mm", "rocker_pad_radius_mm"], "rocker_pad_stress"):
             verdicts.append(strength.verdict("rocker_pad_stress", strength.rocker_pad_stress(
                 p_max / i_k, e_contact, parts.rocker_pad_width, parts.rocker_pad_radius), at_load))
@@ -586,10 +586,10 @@ def _strength(valve, cam, theta, maps, p_open):
             verdicts.append(strength.verdict("rocker_shaft_bearing", st["bearing"], at_load))
     side, found = None, []
     if follower.rolling:
-        side, side_check = _roller_side_force(cam, follower, maps, drive_layout)
+        side, side_check = _roller_side_force(cam, follower, maps, drive)
         found.append(side_check)
     else:
-        found += _edge_loading(parts, drive_layout, cam, follower, maps, width, notes)
+        found += _edge_loading(parts, drive, cam, follower, maps, width, notes)
     return StrengthResult(
         (0.0, 0.0), "", load.value, load.angle, load.speed, p_max / i_k, p_open,
         None if stress is None else stress.angle, None if stress is None else stress.speed,
@@ -634,7 +634,7 @@ def _exhaust_gas_force(valve, gas):
                         source=WORKS_7_1, note=note)
 
 
-def _edge_loading(parts, drive_layout, cam, follower, maps, width, notes):
+def _edge_loading(parts, drive, cam, follower, maps, width, notes):
     """The flat follower's contact against the edge of its face: max(|dh/dphi| + Hertz half-width) <= face radius.
 
     The contact point of a flat follower lies dh/dphi from its axis (Shang's contour, eq. 2.15); the contact
@@ -644,7 +644,7 @@ def _edge_loading(parts, drive_layout, cam, follower, maps, width, notes):
     """
     if parts.tappet_face_diameter is not None:
         face, key = parts.tappet_face_diameter, "tappet_face_diameter_mm"
-    elif drive_layout in ("direct", "pushrod") and parts.tappet_diameter is not None:
+    elif drive.tappet and parts.tappet_diameter is not None:
         face, key = parts.tappet_diameter, "tappet_diameter_mm (no tappet_face_diameter_mm: a bucket tappet)"
     else:
         notes.append("flat_follower_edge_loading: not checked, parts.tappet_face_diameter_mm not given")
@@ -667,7 +667,7 @@ def _edge_loading(parts, drive_layout, cam, follower, maps, width, notes):
                        f"from parts.{key}")]
 
 
-def _roller_side_force(cam, follower, maps, drive_layout):
+def _roller_side_force(cam, follower, maps, drive):
     """The largest side force of a roller follower over the speeds, P_T tan(alpha): a :class:`Worst` and its (info)
     record."""
     def side(m):
@@ -677,7 +677,7 @@ def _roller_side_force(cam, follower, maps, drive_layout):
     w = _worst(maps, [side(m) for m in maps])
     h, dh = cam.law.derivatives(np.array([w.angle]))[:2]
     beta = abs(float(follower.pressure_angle(cam.heel_radius, h, dh)[0]))
-    carrier = "the tappet guide" if drive_layout in ("direct", "pushrod") else "the rocker and its shaft"
+    carrier = "the tappet guide" if drive.tappet else "the rocker and its shaft"
     return w, check(
         "roller follower side force", w.value, unit="N", severity="info",
         source=f"{NORTON} (pressure angle: side load F_n sin(alpha)); no source gives an allowable",

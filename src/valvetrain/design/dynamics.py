@@ -23,7 +23,7 @@ from ..dynamics.perturbation import perturbation_parameter
 from ..dynamics.resonance import resonance
 from ..dynamics.sweep import sweep, sweep_size
 from ..specification import SpecError
-from ..layouts import layout
+from ..layouts import chain, layout
 from ..units import DEG, MM, cam_per_crank, rpm_to_rad_s, to_display
 from .results import quantity, record
 
@@ -207,13 +207,14 @@ def _link_estimates(valve, k):
         cam = camshaft_stiffness(parts.cam_to_bearing, parts.camshaft_span - parts.cam_to_bearing,
                                  parts.camshaft_diameter, parts.camshaft_bore, parts.camshaft_modulus) / k**2
     links = [("camshaft and cam contact", cam)]
-    if layout(valve) == "pushrod":
+    drive = chain(valve)
+    if drive.pushrod:
         rod = None
         if None not in (parts.pushrod_length, parts.pushrod_diameter):
             rod = pushrod_stiffness(parts.pushrod_length, parts.pushrod_diameter, parts.pushrod_bore,
                                     parts.pushrod_modulus) / k**2
         links.append(("pushrod", rod))
-    links.append(("valve stem and tappet" if layout(valve) == "direct" else "rocker and valve joint", None))
+    links.append(("rocker and valve joint" if drive.rocker else "valve stem and tappet", None))
     return links
 
 
@@ -345,26 +346,25 @@ def build_train(dyn, valve, law, drive, at, cam_speed=None):
 
 def _multi_train(valve, links, springs, lash, kw, at):
     """A pushrod, rocker or direct multi-mass train from the part masses of [drive.masses]."""
-    m = valve.drive.masses
-    need = {"pushrod": ("tappet_kg", "pushrod_kg", "rocker_inertia_kg_mm2"), "rocker": ("rocker_inertia_kg_mm2",),
-            "direct": ("tappet_kg",)}[layout(valve)]
+    m, drive = valve.drive.masses, chain(valve)
+    need = drive.train_masses
     if m is None:
         raise SpecError([f"{at}.dynamics.model = \"multi\" needs [{at}.drive.masses] with valve_kg, "
                          f"{', '.join(need)} (the masses of the drive parts)"])
     si_keys = {"tappet_kg": "tappet_kg", "pushrod_kg": "pushrod_kg", "rocker_inertia_kg_mm2": "rocker_inertia"}
     missing = [key for key in need if getattr(m, si_keys[key]) <= 0.0]
-    if layout(valve) != "direct" and valve.drive.valve_arm is None:
+    if drive.rocker and valve.drive.valve_arm is None:
         missing.append("valve_arm_mm (in [drive])")
     if missing:
-        raise SpecError([f"{at}.dynamics.model = \"multi\" with layout \"{layout(valve)}\" needs positive "
+        raise SpecError([f"{at}.dynamics.model = \"multi\" with layout \"{drive.name}\" needs positive "
                          f"drive.masses.{', '.join(missing)}"])
     k = valve.rocker_ratio
     valve_mass = m.valve_kg + m.retainer_kg + m.cotters_kg
     inf = math.inf
-    if layout(valve) == "pushrod":
+    if drive.pushrod:
         return pushrod_train(m.tappet_kg, m.pushrod_kg, m.rocker_inertia, valve_mass, valve.drive.valve_arm, k,
                              links[0] * k**2, links[1] * k**2, links[2], inf, springs, lash, **kw)
-    if layout(valve) == "rocker":
+    if drive.rocker:
         return rocker_train(m.rocker_inertia, valve_mass, valve.drive.valve_arm, k, links[0] * k**2, links[1], inf,
                             springs, lash, **kw)
     return direct_train(m.tappet_kg, valve_mass, links[0], links[1], springs, lash, **kw)

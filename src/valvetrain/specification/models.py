@@ -13,7 +13,7 @@ from typing import Annotated, ClassVar, Literal, Optional, Union
 from pydantic import Field, ValidationError, field_validator, model_validator
 
 from ..files import read_indicator
-from ..layouts import layout
+from ..layouts import LAYOUTS, layout
 from ..spring_materials import GRADES, grade
 from .cams import LAWS, Cam
 from .fields import Length, Pair, _bounded, _Model, _zero_or
@@ -86,7 +86,7 @@ class Masses(_Model):
 class Drive(_Model):
     """[valves.NAME.drive]: drive layout, masses and spring reserve (Valve-train practical works (n.d.), works 5 and 7)."""
 
-    layout: Optional[Literal["direct", "rocker", "pushrod"]] = None
+    layout: Optional[Literal[tuple(LAYOUTS)]] = None
     spring_reserve: _bounded(1.0, 5.0) = 1.8
     stiffness_N_per_mm: Optional[_bounded(10.0, 1e7, "N/mm", low_open=False)] = None
     specific_mass_kg_m2: Optional[_bounded(10.0, 5000.0, "kg/m2", low_open=False)] = None

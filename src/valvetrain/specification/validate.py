@@ -9,6 +9,7 @@ are the dotted keys that :meth:`Spec.replace` and ``study --grid`` change.
 
 import copy
 
+from ..layouts import LAYOUTS
 from ..springs import feasible_mean_diameters
 from ..units import MM
 from .cams import main_half_angle_deg
@@ -43,8 +44,8 @@ def _valve_problems(name, v, engine):
     if installed is not None and v.max_lift_mm is not None and installed[1] <= v.max_lift_mm:
         out.append(f"{at}.spring.installed_length_mm = {list(installed)}: the spring must be longer than the valve "
                    f"lift max_lift_mm = {v.max_lift_mm:g} (it is compressed by it, Valve-train practical works (n.d.), eq. 6.5)")
-    if v.drive.layout == "direct" and v.rocker_ratio != 1.0:
-        out.append(f"{at}.drive.layout = \"direct\" needs rocker_ratio = 1 (got {v.rocker_ratio:g})")
+    if v.drive.layout is not None and not LAYOUTS[v.drive.layout].rocker and v.rocker_ratio != 1.0:
+        out.append(f"{at}.drive.layout = \"{v.drive.layout}\" needs rocker_ratio = 1 (got {v.rocker_ratio:g})")
     if v.piston_gap_tdc_mm is not None and engine.rod_length_mm is None:
         out.append(f"{at}.piston_gap_tdc_mm needs engine.rod_length_mm for the piston kinematics")
     if not {"opens_deg", "closes_deg"} & set(missing):
