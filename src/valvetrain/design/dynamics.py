@@ -22,8 +22,8 @@ from ..dynamics.models import (CoilSpring, camshaft_stiffness, direct_train, nat
 from ..dynamics.perturbation import perturbation_parameter
 from ..dynamics.resonance import resonance
 from ..dynamics.sweep import sweep, sweep_size
-from ..specification import SpecError
 from ..layouts import chain, layout
+from ..specification import SpecError
 from ..units import DEG, MM, cam_per_crank, rpm_to_rad_s, to_display
 from .results import quantity, record
 

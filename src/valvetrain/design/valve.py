@@ -15,13 +15,13 @@ import numpy as np
 
 from .. import flow, geometry
 from ..checks import check, failed, ranked
-from ..followers import follower_of
 from ..crank.kinematics import displacement
+from ..followers import follower_of
 from ..laws import LiftLaw
 from ..laws.base import Extremes
+from ..layouts import LAYOUTS, layout
 from ..numerics import extremum
 from ..specification import SpecError
-from ..layouts import LAYOUTS, layout
 from ..springs import NoSpringFits
 from ..units import DEG, MM
 from .drive import drive_record, drive_stage, strength_stage
@@ -33,7 +33,6 @@ from .results import quantity, record
 ACCELERATION_LIMITS = (3500.0, -1500.0)
 """Upper ends of the recommended bands of positive (1500-3500) and negative (500-1500) tappet
 acceleration [m/s^2] (Valve-train practical works (n.d.), work 2)."""
-
 
 
 @dataclass(frozen=True)

@@ -41,8 +41,11 @@ Write one module in this package with a subclass of :class:`Follower` decorated 
   ============================  =======================================================================
 
   A follower whose lever ratio varies with the lift (a finger follower: valve lift / cam lift depends on the
-  finger's angle) returns it from :meth:`ratio`; the law stage's ``CamResult.valve_lift`` multiplies the
-  valve's rocker ratio by it.  Today's followers translate on their line of action: ratio 1, contact on the
+  finger's angle) returns it from :meth:`ratio`; ``LiftLaw.valve_lift`` multiplies the valve's rocker ratio by it
+  (the law stage's ``CamResult.valve_lift``, hence the flow, the tables and the figures, and the synthesis'
+  objective).  The forces and masses reduced through the drive (drive, strength and dynamics stages, the
+  synthesis' spring reserve) still take the constant rocker ratio: a follower with a varying ratio must bring
+  them the ratio at each lift too.  Today's followers translate on their line of action: ratio 1, contact on the
   line u.  A finger follower's contact point and pressure angle follow from its pivot and pad geometry; its
   contour and curvature must still be those of the cam seen in the frame above.
 

@@ -287,7 +287,7 @@ def timing_figure(valves, t):
     open_by_kind = {}
     for name, v in valves.items():
         theta = (crank - v.nose_crank) / 2.0
-        lift = v.law.valve_lift(theta, v.rocker_ratio)
+        lift = v.law.valve_lift(theta, v.rocker_ratio, v.follower_model)
         ax.plot(rad_to_deg(crank), lift / MM, label=name if name == v.kind else f"{name} ({t[v.kind]})",
                 color="C0" if v.kind == "intake" else "C3")
         open_by_kind[v.kind] = open_by_kind.get(v.kind, np.zeros_like(crank, dtype=bool)) | (lift > 0.0)

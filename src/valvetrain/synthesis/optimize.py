@@ -504,11 +504,12 @@ class Problem:
         """The objective of :data:`OBJECTIVES` as the flow stage computes it."""
         lift = valve.rocker_ratio * law.lift_max
         bp = law.breakpoints
+        def valve_lift(t):
+            return law.valve_lift(t, valve.rocker_ratio, self.follower)
+
         if self.objective == "fullness":
-            return flow.fullness(lambda t: law.valve_lift(t, valve.rocker_ratio), law.valve_opens, law.valve_closes,
-                                 lift, bp)
-        return flow.time_area(lambda t: flow.curtain_area(law.valve_lift(t, valve.rocker_ratio),
-                                                          valve.throat_diameter, valve.seat_angle),
+            return flow.fullness(valve_lift, law.valve_opens, law.valve_closes, lift, bp)
+        return flow.time_area(lambda t: flow.curtain_area(valve_lift(t), valve.throat_diameter, valve.seat_angle),
                               law.valve_opens, law.valve_closes, self.omega, bp)
 
     def evaluate(self, x, dynamics=None):
