@@ -55,8 +55,14 @@ Write one module in this package with a subclass of :class:`Follower` decorated 
   finger about its pivot) adds its node where the layout's train is built (``design/dynamics.py``,
   ``_multi_train``), reading its mass from ``[drive.masses]``.
 
+- ``rolling`` selects, beside the geometry, what the stages report: a rolling follower's profile record (roller
+  radius, largest pressure angle, concave radius) and its side-force record and the pressure-angle checks; a
+  sliding one's contact-offset record, its face's edge loading and the tappet's side pressure.  A tangent cam
+  admits only a rolling follower.
+
 Methods return numpy arrays (floats where the argument is a scalar); none of them mutates its arguments or
-the follower, and they hold no state beyond the follower's dimensions.
+the follower, and they hold no state beyond the follower's dimensions.  ``tests/test_followers.py`` checks the two
+followers against hand calculations; a new follower's tests go beside them.
 """
 
 from typing import ClassVar
