@@ -28,7 +28,7 @@ from .crank import LAMBDA_RANGE, CrankResults, CrankSummary, crank_stage, valve_
 from .drive import MassResult, SpringResult, StrengthResult
 from .dynamics import DynamicsResult
 from .grinding import GrindingResult
-from .hydraulic import CylinderPressure, HydraulicResult
+from .hydraulic_actuation import CylinderPressure, HydraulicResult
 from .lash_adjuster import LashAdjusterResult
 from .lubrication import LubricationResult
 from .results import json_schema, quantity, record

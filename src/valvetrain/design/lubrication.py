@@ -3,7 +3,6 @@ and the camshaft drive torque with the friction (Dowson and Higginson (1977); Ha
 Blok (1937))."""
 
 from dataclasses import dataclass
-from typing import Optional
 
 import numpy as np
 
@@ -73,9 +72,9 @@ class LubricationResult:
                                                  "the friction at the rated speed")
     rated_max_drive_torque: float = quantity("rated_max_drive_torque_N_m", "N m", "largest drive torque with "
                                              "friction at the rated speed")
-    zero_entrainment: Optional[tuple[float, ...]] = quantity(
-        "zero_entrainment_cam_deg", "cam deg", "flat follower: cam angles where the entraining velocity changes sign "
-        "(no steady film there)", omit_none=True)
+    zero_entrainment: tuple[float, ...] = quantity(
+        "zero_entrainment_cam_deg", "cam deg", "cam angles where the entraining velocity changes sign (no steady film "
+        "there: a flat follower's nose; none for a roller)")
     per_speed: LubricationPerSpeed = quantity("per_speed", label="the cam contact at each speed")
 
 
@@ -90,11 +89,10 @@ def _weights(theta):
 
 
 def _zero_entrainment(cam, theta):
-    """A flat follower's camshaft angles [rad] where the entraining velocity changes sign (None for a roller)."""
-    if cam.follower != "flat":
-        return None
-    h, _, d2h = cam.law.derivatives(theta)[:3]
-    u_cam, u_follower = tribology.flat_follower_velocities(1.0, cam.heel_radius, h, d2h)
+    """Camshaft angles [rad] where the entraining velocity changes sign (a sliding face's nose; none for a roller)."""
+    follower, heel = cam.follower_model, cam.heel_radius
+    h, dh, d2h = cam.law.derivatives(theta)[:3]
+    u_cam, u_follower = follower.surface_velocities(1.0, heel, h, dh, d2h, follower.curvature(heel, h, dh, d2h))
     e = np.sign(u_cam + u_follower)
     return tuple(float(t) for t in theta[1:][e[1:] * e[:-1] < 0.0])
 
@@ -123,24 +121,23 @@ def contact_map(lub, cam, width, modulus, theta, force, omega):
         ``film`` [m], ``lam``, ``friction_force`` [N], ``friction_torque`` [N m], ``flash`` [K], ``drive_torque``
         [N m] (NaN where there is no contact, except the torques, 0 there) and ``entraining`` [m/s].
     """
-    law, heel = cam.law, cam.heel_radius
-    h, dh, d2h = law.derivatives(theta)[:3]
-    if cam.follower == "flat":
-        rho = law.curvature(theta, heel)
-        u_cam, u_follower = tribology.flat_follower_velocities(omega, heel, h, d2h)
-        curvature, rolling_friction, rolling = 1.0 / rho, 0.0, 0.0
-    else:
-        r = cam.roller_radius
-        rho = law.curvature(theta, heel, "roller", r)
-        u_cam, u_follower = tribology.roller_follower_velocities(omega, heel, r, h, dh, rho, lub.roller_slip)
-        curvature, rolling_friction, rolling = 1.0 / rho + 1.0 / r, lub.roller_rolling_friction, u_follower
-    if np.any(curvature <= 0.0):
+    follower, heel = cam.follower_model, cam.heel_radius
+    h, dh, d2h = cam.law.derivatives(theta)[:3]
+    rho = follower.curvature(heel, h, dh, d2h)
+    if not np.all(follower.line_contact(rho)):
         raise UndercutError("the cam profile is undercut (no line contact)")
+    u_cam, u_follower = follower.surface_velocities(omega, heel, h, dh, d2h, rho)
+    rolling_friction, rolling = 0.0, 0.0
+    if follower.rolling:
+        u_follower = (1.0 - lub.roller_slip) * u_follower
+        rolling_friction, rolling = lub.roller_rolling_friction, u_follower
+    curvature = follower.contact_curvature(rho)
     loaded = force > 0.0
     load = np.where(loaded, force, 1.0)
     reduced = tribology.reduced_modulus(modulus)
     entraining = np.broadcast_to((u_cam + u_follower) / 2.0, force.shape)
-    film = tribology.film_thickness_line(entraining, 1.0 / curvature, load / width, lub.oil_viscosity, lub.pressure_viscosity, reduced)
+    film = tribology.film_thickness_line(entraining, 1.0 / curvature, load / width, lub.oil_viscosity,
+                                         lub.pressure_viscosity, reduced)
     lam = tribology.film_parameter(film, lub.cam_roughness, lub.follower_roughness)
     mu = tribology.friction_coefficient(lam, lub.boundary_friction, lub.full_film_friction)
     sliding = u_cam - u_follower
@@ -219,8 +216,8 @@ def lubrication_stage(lub, valve, engine, cam, drive, dynamics=None, name="valve
         per.max_drive_torque[rated],
         _zero_entrainment(cam, maps[0].theta), per)
     where = (f"at {to_display(worst[1], 'rpm'):.0f} rpm, {to_display(worst[2], 'cam deg'):.4g} cam deg from the nose"
-             + ("; a flat follower's film vanishes where the entraining velocity changes sign (squeeze film not "
-                "modelled)" if cam.follower == "flat" else ""))
+             + ("; the film vanishes where the entraining velocity changes sign (squeeze film not modelled)"
+                if result.zero_entrainment else ""))
     found = [check("cam contact: smallest film parameter lambda = h_min / sqrt(Rq1^2 + Rq2^2)", worst[0],
                    low=lub.min_film_parameter,
                    source=f"{cite('hamrock2004', 'ch. 1')}: boundary lubrication below lambda = 1; "

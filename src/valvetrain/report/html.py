@@ -13,7 +13,7 @@ from .. import __version__
 from ..checks import describe_range
 from ..design.dynamics import SOURCES as DYNAMICS_SOURCES
 from ..design.grinding import SOURCES as GRINDING_SOURCES
-from ..design.hydraulic import SOURCES as HYDRAULIC_SOURCES
+from ..design.hydraulic_actuation import SOURCES as HYDRAULIC_SOURCES
 from ..design.lash_adjuster import SOURCES as ADJUSTER_SOURCES
 from ..design.lubrication import SOURCES as LUBRICATION_SOURCES
 from ..design.results import record
@@ -257,7 +257,7 @@ def _lubrication(v):
     rec = record(v.lubrication)
     per = rec["per_speed"]
     return {"rows": [(k, val) for k, val in rec.items() if k not in ("per_speed", "follower", "zero_entrainment_cam_deg")],
-            "zero": rec.get("zero_entrainment_cam_deg"), "columns": LUBRICATION_COLUMNS,
+            "zero": rec["zero_entrainment_cam_deg"], "columns": LUBRICATION_COLUMNS,
             "table": list(zip(*(per[c] for c in LUBRICATION_COLUMNS), strict=True))}
 
 

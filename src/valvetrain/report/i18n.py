@@ -601,7 +601,7 @@ TEXT["en"].update({
                  "coefficient falling linearly in λ across the mixed band, a roller's rolling resistance, Blok's flash "
                  "temperature of the sliding contact (steel on steel), the camshaft torque of the friction from the "
                  "power it dissipates and the drive torque with it, F dh/dθ + T_f",
-    "lu_zero": "Flat follower: the entraining velocity changes sign (no steady film) at, cam deg",
+    "lu_zero": "The entraining velocity changes sign (no steady film) at, cam deg",
     "lu_table": "Against engine speed",
     "lu_names": {
         "reduced_modulus_GPa": "reduced modulus E′, GPa", "composite_roughness_um": "composite roughness, µm",
@@ -630,7 +630,7 @@ TEXT["ru"].update({
                  "смешанном режиме, сопротивление качению ролика, температурная вспышка скользящего контакта по Блоку "
                  "(сталь по стали), момент трения на распределительном валу по рассеиваемой мощности и момент привода "
                  "с трением F dh/dθ + T_f",
-    "lu_zero": "Плоский толкатель: скорость увлечения масла меняет знак (установившейся плёнки нет) при углах, град ПРВ",
+    "lu_zero": "Скорость увлечения масла меняет знак (установившейся плёнки нет) при углах, град ПРВ",
     "lu_table": "В зависимости от частоты вращения двигателя",
     "lu_names": {
         "reduced_modulus_GPa": "приведённый модуль упругости E′, ГПа",

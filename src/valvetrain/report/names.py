@@ -498,9 +498,8 @@ named by :data:`NAMES` of their key."""
 
 SKELETONS = {
     "at {} rpm, {} cam deg from the nose": "при {} об/мин, {} град ПРВ от вершины",
-    "a flat follower's film vanishes where the entraining velocity changes sign (squeeze film not modelled)":
-        "плёнка у плоского толкателя исчезает там, где меняет знак скорость увлечения масла (выдавливание плёнки не "
-        "учитывается)",
+    "the film vanishes where the entraining velocity changes sign (squeeze film not modelled)":
+        "плёнка исчезает там, где меняет знак скорость увлечения масла (выдавливание плёнки не учитывается)",
     "at {} rpm": "при {} об/мин",
     "lash adjuster: {} N/mm at the valve in series with the cam contact (the oil column's secant stiffness under {} N)":
         "гидрокомпенсатор: {} Н/мм, приведённая к клапану, последовательно с контактом кулачка (секущая жёсткость "
