@@ -13,7 +13,6 @@ from scipy.integrate import quad, solve_ivp
 
 from valvetrain import lash_adjuster as hla
 from valvetrain.design import run
-from valvetrain.design.lash_adjuster import motion_ratio
 from valvetrain.specification import SpecError, parse_spec
 
 D, C, L, MU = 9e-3, 4e-6, 8e-3, 0.010
@@ -84,9 +83,9 @@ def test_motion_ratio_of_an_end_pivot_finger_is_the_lever():
         return pivot + (0.0 - pivot) * length / a
 
     moved = abs(valve_end(s) - valve_end(0.0))
-    assert motion_ratio("pivot", i) == pytest.approx(moved / s, rel=1e-12)
-    assert motion_ratio("pivot", i) == pytest.approx(1.0 * (length - a) / a, rel=1e-12)
-    assert motion_ratio("tappet", i) == i
+    assert hla.motion_ratio("pivot", i) == pytest.approx(moved / s, rel=1e-12)
+    assert hla.motion_ratio("pivot", i) == pytest.approx(1.0 * (length - a) / a, rel=1e-12)
+    assert hla.motion_ratio("tappet", i) == i
 
 
 EXAMPLE = Path(__file__).parents[1] / "examples" / "seed000-polydyne.toml"

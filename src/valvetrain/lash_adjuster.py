@@ -119,6 +119,32 @@ def refill_pressure(supply, plunger_spring, area):
     return supply + min(plunger_spring / area, ATMOSPHERE)
 
 
+def motion_ratio(location, rocker_ratio):
+    """Valve motion per adjuster motion, and the adjuster's force per valve force (virtual work).
+
+    At the pivot of an end-pivot finger (``"pivot"``; pivot, roller at a, valve at L = i a): with the roller held on
+    the cam a pivot motion s moves the valve by (i - 1) s; in the tappet (``"tappet"``): i.
+
+    >>> round(motion_ratio("pivot", 1.6), 12), motion_ratio("tappet", 1.6)
+    (0.6, 1.6)
+    """
+    return rocker_ratio - 1.0 if location == "pivot" else rocker_ratio
+
+
+def secant_stiffness(force, plunger_spring, area, supply, volume, bulk_modulus, air_content):
+    """Secant stiffness [N/m] of the oil column under ``force`` [N] on the plunger, its compression [m] and the chamber
+    pressure [Pa, gauge] (the plunger spring ``plunger_spring`` [N] carries its share; no less than ``supply``).
+
+    Notes
+    -----
+    p = max((F - F_s) / A, p_s); the plunger sinks by :func:`chamber_compression` / A; K = F / sink (inf without
+    compression).
+    """
+    pressure = max((force - plunger_spring) / area, supply)
+    sink = chamber_compression(pressure, supply, volume, bulk_modulus, air_content) / area
+    return (force / sink if sink > 0.0 else np.inf), sink, pressure
+
+
 def pump_up(gap, dt, rate):
     """Extension [m] the plunger keeps after a float: it follows the opened gap at most at ``rate`` [m/s] and locks
     once the follower lands on it.

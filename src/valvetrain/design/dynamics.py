@@ -16,6 +16,7 @@ from typing import Optional
 
 import numpy as np
 
+from .. import lash_adjuster as hla
 from ..checks import check
 from ..dynamics.models import (CoilSpring, camshaft_stiffness, direct_train, natural_modes, one_mass_train,
                                pushrod_stiffness, pushrod_train, rocker_train, series)
@@ -24,6 +25,7 @@ from ..dynamics.resonance import resonance
 from ..dynamics.sweep import sweep, sweep_size
 from ..layouts import chain, layout
 from ..specification import SpecError
+from ..strength import cam_force
 from ..units import DEG, MM, cam_per_crank, rpm_to_rad_s, to_display
 from .results import quantity, record
 
@@ -308,6 +310,33 @@ def train_spring(dyn, valve, law, line, mass, cam_speed, at):
                            f"{preload:.5g} N given (Valve-train dynamics article (n.d.), step 4a)")
 
 
+def adjuster_reference_force(valve, law, drive, cam_speed, ratio):
+    """The largest quasi-static force on a lash adjuster of motion ratio ``ratio`` at the camshaft speed
+    ``cam_speed`` [rad/s] [N]: spring and inertia of the rigid train over the open event, (7.1) of
+    :func:`valvetrain.strength.cam_force` reduced from the valve."""
+    theta = np.linspace(law.valve_opens, law.valve_closes, 2001)
+    k = valve.rocker_ratio
+    spring = drive.lines["chosen"].force(k * law.lift(theta))
+    force = cam_force(spring, drive.masses.at_valve * k * cam_speed**2 * law.derivatives(theta)[2], k)
+    return float(force.max()) / k * ratio
+
+
+def adjuster_link(valve, law, drive, cam_speed, at):
+    """The lash adjuster's oil column reduced to the valve [N/m] (in series with the cam contact) and the note that
+    says so: its secant stiffness under :func:`adjuster_reference_force` over the square of the motion ratio."""
+    la = valve.lash_adjuster
+    ratio = hla.motion_ratio(la.location, valve.rocker_ratio)
+    if ratio <= 0.0:
+        raise SpecError([f"{at}.lash_adjuster.location = \"pivot\" needs rocker_ratio > 1 (an end-pivot finger); "
+                         f"rocker_ratio = {valve.rocker_ratio:g}"])
+    force = adjuster_reference_force(valve, law, drive, cam_speed, ratio)
+    stiffness = hla.secant_stiffness(force, la.plunger_spring_N, hla.plunger_area(la.plunger_diameter),
+                                     la.supply_pressure, la.chamber_volume, la.bulk_modulus, la.air_content)[0]
+    at_valve = stiffness / ratio**2
+    return at_valve, (f"lash adjuster: {at_valve / 1e3:.5g} N/mm at the valve in series with the cam contact (the oil "
+                      f"column's secant stiffness under {force:.4g} N)")
+
+
 def build_train(dyn, valve, law, drive, at, cam_speed=None):
     """The train of a valve: (train, DynamicsParameters).  ``drive`` is the drive stage's DriveResults.
 
@@ -318,9 +347,7 @@ def build_train(dyn, valve, law, drive, at, cam_speed=None):
     line = drive.lines["chosen"]
     links, names, notes = drive_links(dyn, valve, k, at)
     if valve.lash_adjuster is not None:
-        from .lash_adjuster import series_link  # here: lash_adjuster imports drive, which imports this module
-
-        adjuster, note = series_link(valve, law, drive, cam_speed, at)
+        adjuster, note = adjuster_link(valve, law, drive, cam_speed, at)
         links = (float(series(links[0], adjuster)),) + links[1:]
         notes.append(note)
     c = float(series(*links))

@@ -10,9 +10,8 @@ import numpy as np
 from .. import lash_adjuster as hla
 from ..bibliography import cite
 from ..checks import check
-from ..specification.messages import SpecError
-from ..strength import cam_force
 from .drive import event_load_maps
+from .dynamics import adjuster_reference_force
 from .results import quantity
 
 SOURCES = cite("merritt1967")
@@ -60,58 +59,11 @@ class LashAdjusterResult:
     per_speed: LashAdjusterPerSpeed = quantity("per_speed", label="the lash adjuster at each speed")
 
 
-def motion_ratio(location, rocker_ratio):
-    """Valve motion per adjuster motion, and the adjuster's force per valve force (virtual work): i - 1 at the pivot
-    of an end-pivot finger, i in the tappet."""
-    return rocker_ratio - 1.0 if location == "pivot" else rocker_ratio
-
-
-def _geometry(la):
-    area = hla.plunger_area(la.plunger_diameter)
-    refill = hla.check_valve_flow(hla.refill_pressure(la.supply_pressure, la.plunger_spring_N, area),
-                                  la.check_valve_diameter) / area
-    return area, refill
-
-
 def _leak_rate(la, force, area):
     """Plunger sink velocity [m/s] under ``force`` on the adjuster [N]."""
     pressure = (force - la.plunger_spring_N) / area - la.supply_pressure
     return hla.annular_leakage(pressure, la.plunger_diameter, la.radial_clearance, la.leak_length,
                                la.oil_viscosity) / area
-
-
-def adjuster_stiffness(la, force):
-    """Secant stiffness of the oil column under ``force`` on the adjuster [N/m] (at the adjuster) and its compression
-    [m] and chamber pressure [Pa] there."""
-    area = hla.plunger_area(la.plunger_diameter)
-    pressure = max((force - la.plunger_spring_N) / area, la.supply_pressure)
-    sink = hla.chamber_compression(pressure, la.supply_pressure, la.chamber_volume, la.bulk_modulus,
-                                   la.air_content) / area
-    return (force / sink if sink > 0.0 else np.inf), sink, pressure
-
-
-def reference_force(valve, law, drive, cam_speed, ratio):
-    """The largest quasi-static force on the adjuster at the rated camshaft speed [N] (spring and inertia of the
-    rigid train over the open event)."""
-    theta = np.linspace(law.valve_opens, law.valve_closes, 2001)
-    k = valve.rocker_ratio
-    spring = drive.lines["chosen"].force(k * law.lift(theta))
-    force = cam_force(spring, drive.masses.at_valve * k * cam_speed**2 * law.derivatives(theta)[2], k)
-    return float(force.max()) / k * ratio
-
-
-def series_link(valve, law, drive, cam_speed, at):
-    """The adjuster's stiffness reduced to the valve [N/m] (in series with the drive) and the note that says so."""
-    la = valve.lash_adjuster
-    ratio = motion_ratio(la.location, valve.rocker_ratio)
-    if ratio <= 0.0:
-        raise SpecError([f"{at}.lash_adjuster.location = \"pivot\" needs rocker_ratio > 1 (an end-pivot finger); "
-                         f"rocker_ratio = {valve.rocker_ratio:g}"])
-    force = reference_force(valve, law, drive, cam_speed, ratio)
-    stiffness = adjuster_stiffness(la, force)[0]
-    at_valve = stiffness / ratio**2
-    return at_valve, (f"lash adjuster: {at_valve / 1e3:.5g} N/mm at the valve in series with the cam contact (the oil "
-                      f"column's secant stiffness under {force:.4g} N)")
 
 
 def lash_adjuster_stage(la, valve, engine, cam, drive, dynamics=None, name="valve"):
@@ -134,7 +86,8 @@ def lash_adjuster_stage(la, valve, engine, cam, drive, dynamics=None, name="valv
 
     Notes
     -----
-    The oil column enters the dynamics as its secant stiffness in series with the drive (:func:`series_link`); the
+    The oil column enters the dynamics as its secant stiffness in series with the drive
+    (:func:`valvetrain.design.dynamics.adjuster_link`); the
     hydraulic state changes too slowly to matter within a revolution and is followed from one revolution to the
     next: the leak-down under the force on the adjuster (:func:`valvetrain.lash_adjuster.annular_leakage`), the
     time to refill it on the base circle through the check valve, and for a float of the simulated motion the
@@ -143,10 +96,13 @@ def lash_adjuster_stage(la, valve, engine, cam, drive, dynamics=None, name="valv
     """
     at = f"valves.{name}"
     law, k = cam.law, valve.rocker_ratio
-    ratio = motion_ratio(la.location, k)
-    area, refill = _geometry(la)
-    ref = reference_force(valve, law, drive, cam.cam_speed, ratio)
-    stiffness, sink, pressure = adjuster_stiffness(la, ref)
+    ratio = hla.motion_ratio(la.location, k)
+    area = hla.plunger_area(la.plunger_diameter)
+    refill = hla.check_valve_flow(hla.refill_pressure(la.supply_pressure, la.plunger_spring_N, area),
+                                  la.check_valve_diameter) / area
+    ref = adjuster_reference_force(valve, law, drive, cam.cam_speed, ratio)
+    stiffness, sink, pressure = hla.secant_stiffness(ref, la.plunger_spring_N, area, la.supply_pressure,
+                                                     la.chamber_volume, la.bulk_modulus, la.air_content)
     _, maps, (low, high, _) = event_load_maps(valve, engine, cam, drive, dynamics)
     to_cam = cam.cam_speed / engine.rated_speed
     base = 2.0 * np.pi - (law.valve_closes - law.valve_opens)
