@@ -528,7 +528,7 @@ class TableLaw(RampedLaw):
     fit : str
         The fit the law evaluates, ``"spline"`` or ``"harmonic"``.
     choice : (str, float)
-        Why: a code of :data:`FIT_REASONS` and the ratio of the generalised cross-validation scores.
+        Why: a code of :func:`choose_fit` and the ratio of the generalised cross-validation scores.
     smoothing : str
         How the spline's smoothing was chosen, ``"accuracy"`` or ``"gcv"`` (:func:`smoothing_spline`).
 
@@ -797,27 +797,13 @@ def gcv_score(rms, dof, points):
     return points * points * rms**2 / (points - dof) ** 2
 
 
-FIT_REASONS = {
-    "given": "fit = \"{fit}\" in the specification",
-    "harmonic_gcv": "the N-harmonic fit meets accuracy_mm and predicts left-out rows better than the smoothing "
-                    "spline (generalised cross-validation score {ratio:.3g} x the spline's)",
-    "spline_gcv": "the smoothing spline predicts left-out rows better than the N-harmonic fit, which also meets "
-                  "accuracy_mm (generalised cross-validation score {ratio:.3g} x the N-harmonic fit's)",
-    "harmonic_misses": "the N-harmonic fit does not meet accuracy_mm by its highest order",
-    "harmonic_swings": "the N-harmonic fit swings outside the table's range between the rows",
-}
-"""Why a fit was chosen, by the code of :func:`choose_fit` (the report translates the same codes)."""
-
-SMOOTHINGS = {
-    "accuracy": "the smoothing spline is smoothed to an RMS residual of accuracy_mm (Reinsch 1967)",
-    "gcv": "the smoothing spline is smoothed by generalised cross-validation, whose residual exceeds accuracy_mm: the "
-           "table is noisier than accuracy_mm or bends more sharply than its rows resolve (the foot of a valve lift)",
-}
-"""How the spline's smoothing was chosen (:func:`smoothing_spline`)."""
-
-
 def choose_fit(fit, bounded, meets, gcv):
-    """The fit a law evaluates and why: ``(fit, (code, ratio))``, a code of :data:`FIT_REASONS`.
+    """The fit a law evaluates and why: ``(fit, (code, ratio))``.
+
+    The codes: ``"given"`` (``fit`` is not ``"auto"``), ``"harmonic_swings"`` (the N-harmonic fit leaves the table's
+    range), ``"harmonic_misses"`` (it does not meet the accuracy), ``"harmonic_gcv"`` and ``"spline_gcv"`` (the one
+    with the smaller score, ``ratio`` its score / the other's); the report words them
+    (:func:`valvetrain.report.wording.fit_reason`).
 
     ``"auto"`` compares the two fits where both are admissible, the N-harmonic fit meeting the stated accuracy and
     staying within the table's range, by their generalised cross-validation scores (``gcv``, :func:`gcv_score`):
@@ -834,13 +820,3 @@ def choose_fit(fit, bounded, meets, gcv):
     if not np.isfinite(ratio) or ratio <= 1.0:
         return "harmonic", ("harmonic_gcv", ratio)
     return "spline", ("spline_gcv", 1.0 / ratio)
-
-
-def fit_reason(law):
-    """One sentence: the fit a :class:`TableLaw` evaluates and why (results.json, the CLI)."""
-    code, ratio = law.choice
-    used = f"N-harmonic fit (N = {law.harmonics})" if law.fit == "harmonic" else "smoothing spline"
-    text = f"{used}: " + FIT_REASONS[code].format(fit=law.fit, ratio=ratio)
-    if law.fit == "spline":
-        text += "; " + SMOOTHINGS[law.smoothing]
-    return text
