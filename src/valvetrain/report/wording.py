@@ -7,8 +7,6 @@ reads and into the specification's key names.  results.json and the CLI take the
 report its own language.
 """
 
-import numpy as np
-
 from ..units import to_display
 from .i18n import TEXT
 from .names import quantity_text, unit_text
@@ -29,8 +27,8 @@ DIAGNOSIS_WORDS = {
         "helped": "A spring passes with {}.", "helped_join": "; or ", "tried": "None passes with {}.",
         "tried_join": ", ", "remedies": "",
         "grams": " ({grams:.0f} g)",
-        "material": "material = \"{value}\"{grams}",
-        "count": {"1": "one spring (count = 1){grams}", "2": "a nested pair (count = 2){grams}"},
+        "material": "{key} = \"{value}\"{grams}",
+        "count": {"1": "one spring ({key} = 1){grams}", "2": "a nested pair ({key} = 2){grams}"},
         "max_installed_length": ("an installed length up to {mm:.1f} mm", "no installed length limit"),
         "rated_speed_factor": ("a rated speed lowered to {value:.1%}{rpm}", "a rated speed down to {percent:g} %"),
         "rpm": " ({rpm:.0f} rpm)",
@@ -52,20 +50,21 @@ stress window and points to the remedies in results.json)."""
 
 def _window_record(w):
     """The stress window of results.json (MPa, mm)."""
-    return {"material": w.material, "deflection_ratio": w.deflection_ratio, "max_deflection_mm": w.max_deflection * 1e3,
-            "stress_needed_MPa": w.needed / 1e6, "stress_allowed_MPa": w.allowed / 1e6}
+    return {"material": w.material, "deflection_ratio": w.deflection_ratio,
+            "max_deflection_mm": to_display(w.max_deflection, "mm"), "stress_needed_MPa": to_display(w.needed, "MPa"),
+            "stress_allowed_MPa": to_display(w.allowed, "MPa")}
 
 
 def _remedy_record(r):
     """A remedy as results.json gives it: the change, the value in the specification's units, the spring mass."""
     if r.change == "max_installed_length":
-        out = {"change": "max_installed_length_mm", **({} if r.value is None else {"to": r.value * 1e3})}
+        out = {"change": "max_installed_length_mm", **({} if r.value is None else {"to": to_display(r.value, "mm")})}
     else:
         out = {"change": r.change, "to": r.value}
     if r.spring_mass is not None:
         out["spring_mass_kg"] = r.spring_mass
     if r.rated_speed is not None:
-        out["rated_speed_rpm"] = r.rated_speed * 30.0 / np.pi
+        out["rated_speed_rpm"] = to_display(r.rated_speed, "rpm")
     return out
 
 
@@ -87,14 +86,14 @@ def _remedy_text(r, words):
     """One remedy in English words."""
     grams = words["grams"].format(grams=r.spring_mass * 1e3) if r.passes and r.spring_mass is not None else ""
     if r.change == "material":
-        return words["material"].format(value=r.value, grams=grams)
+        return words["material"].format(key=r.key, value=r.value, grams=grams)
     if r.change == "count":
-        return words["count"][str(r.value)].format(grams=grams)
+        return words["count"][str(r.value)].format(key=r.key, grams=grams)
     helped, tried = words[r.change]
     if not r.passes:
         return tried.format(percent=None if r.value is None else r.value * 100.0)
-    rpm = "" if r.rated_speed is None else words["rpm"].format(rpm=r.rated_speed * 30.0 / np.pi)
-    mm = None if r.value is None else r.value * 1e3
+    rpm = "" if r.rated_speed is None else words["rpm"].format(rpm=to_display(r.rated_speed, "rpm"))
+    mm = None if r.value is None else to_display(r.value, "mm")
     return helped.format(value=r.value, mm=mm, rpm=rpm, saved=1.0 - r.value)
 
 
@@ -115,7 +114,7 @@ def diagnosis_text(d, lang):
         w = d.window
         values = {**_window_record(w), "resonance_ratio": w.resonance_ratio,
                   "frequency_difference": d.frequency_difference,
-                  "stress_pair_MPa": w.needed * (1.0 + d.frequency_difference) / 1e6}
+                  "stress_pair_MPa": to_display(w.needed * (1.0 + d.frequency_difference), "MPa")}
         values["where"] = words.get("where", "").format(**values)
         text += [words[key].format(**values) for key in ("window", d.kind) if key and words[key]]
     if d.helped and words["helped"]:
