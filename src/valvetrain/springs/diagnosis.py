@@ -67,7 +67,9 @@ class Remedy:
     change: str                           # MATERIAL, COUNT, INSTALLED_LENGTH, RATED_SPEED or REDUCED_MASS
     value: object
     passes: bool                          # a spring passes with it
-    key: Optional[str] = None             # the specification key it changes, None for the part masses
+    key: Optional[str] = None             # the key it changes: of [valves.NAME.spring] (material, count,
+                                          # installed_length_mm: its upper end) or [engine] (rated_speed_rpm); None
+                                          # for the part masses
     spring_mass: Optional[float] = None   # of the passing spring(s) [kg], where the masses are kept
     rated_speed: Optional[float] = None   # the lowered rated crank speed [rad/s] of RATED_SPEED
 
