@@ -217,7 +217,7 @@ def _every_candidate(preloads, rates, lift, throat, omega, options, material, **
        grade=st.sampled_from(["60S2A", "VDSiCr", "VDCrV"]), longest=st.sampled_from([None, 4.0, 6.0]),
        safety=st.sampled_from([0.0, 1.1, 1.3, 1.6]))
 def test_the_screen_keeps_every_passing_spring(preload, lift, throat, rpm, resonance, grade, longest, safety):
-    """The bounds of the screen (:func:`valvetrain.springs._may_pass`) never drop a spring that passes: every
+    """The bounds of the screen (:func:`valvetrain.springs.search._may_pass`) never drop a spring that passes: every
     candidate of the exhaustive search that passes every check lies inside the screen, for lines of every ratio,
     grades with and without the resonance and fatigue checks and installed-length limits."""
     omega = np.pi * rpm / 60.0
