@@ -404,8 +404,10 @@ class SymmetricLaw(LiftLaw):
         """Rise and its derivatives with respect to phi, shape (4, n) (for :meth:`_mirrored`)."""
         raise NotImplementedError
 
-    @property
+    @cached_property
     def segments(self):
+        """The opening flank's segments and their mirror images, made once per law (a law is not changed once
+        made)."""
         T = self.half_angle
         rise = self._rise_segments()
         opening = [Segment(f"{n} opening", a - T, b - T) for n, a, b in rise]
