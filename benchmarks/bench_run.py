@@ -4,7 +4,7 @@ Run on demand: ``python benchmarks/bench_run.py``.  Times, best of several repea
 
 * in this process, the calculation (``design.run``) and the writing of every artefact (JSON, CSV, DXF, plots,
   report) with the default figures (``figures="main"``) and, as the baseline in the same run, with every figure
-  (``figures="all"``, what a run wrote before ``--figures``); the default figures drawn in a second process
+  (``figures="all"``, what a run wrote before ``--figures``); the default figures drawn in other processes
   (:class:`valvetrain.report.drawing.FigureProcess`, as the command draws them on Linux) against those drawn here;
   and the peak Python memory of one full run;
 * the command itself, ``python -m valvetrain run --out ...`` in a new process (imports included), with the default
@@ -71,7 +71,7 @@ def main():
     print(f"write_outputs, default figures (main):             best {min(write['main']) * 1e3:7.1f} ms")
     print(f"write_outputs, every figure (all; the baseline):   best {min(write['all']) * 1e3:7.1f} ms")
     if forked:
-        print(f"write_outputs, default figures drawn in a second process: best {min(forked) * 1e3:7.1f} ms wall "
+        print(f"write_outputs, default figures drawn in other processes: best {min(forked) * 1e3:7.1f} ms wall "
               f"(drawn here: {min(write['main']) * 1e3:7.1f} ms, the baseline)")
     print(f"peak traced Python memory of one run: {peak / 2**20:.1f} MiB")
     for figures, label in (("main", "default figures (main)"), ("all", "--figures all (the baseline)"),

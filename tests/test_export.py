@@ -195,9 +195,9 @@ def test_figures_drawn_in_a_second_process_are_those_drawn_here(tmp_path):
 @pytest.mark.skipif(not sys.platform.startswith("linux"), reason="the figures are drawn in a forked process on Linux")
 def test_an_error_in_the_drawing_process_is_raised_and_nothing_is_written(tmp_path):
     """write_plots refuses an unknown figure set (ValueError naming the allowed ones); raised in the drawing process,
-    it must reach the caller, leave no folder and end that process."""
+    it must reach the caller, leave no folder and end the drawing processes."""
     drawer = FigureProcess()
     with pytest.raises(ValueError, match="allowed: main, all, none"):
         write_outputs(run(example_spec()), tmp_path / "d", figures="some", drawer=drawer)
     assert not (tmp_path / "d").exists()
-    assert not drawer._process.is_alive()
+    assert not any(p.is_alive() for p in drawer._processes)
