@@ -140,8 +140,8 @@ def bounded_minimum(fn, a, b, xatol, max_evaluations=500):
 
     References
     ----------
-    Brent, R. P. (1973). Algorithms for Minimization without Derivatives, ch. 5. Forsythe, G. E., Malcolm, M. A.
-    and Moler, C. B. (1977). Computer Methods for Mathematical Computations, procedure fmin.
+    SciPy, ``scipy/optimize/_optimize.py``, ``_minimize_scalar_bounded``: Brent's minimisation without derivatives
+    in the form of the procedure fmin of Forsythe, Malcolm and Moler.
     """
     sqrt_eps = math.sqrt(2.2e-16)
     golden_mean = 0.5 * (3.0 - math.sqrt(5.0))
