@@ -167,14 +167,19 @@ def main():
 def run(file, out, force, lang, figures):
     """Run the design of FILE (default: the built-in example) and write it to --out."""
     from .export import write_outputs
+    from .report.drawing import start
 
     spec = _load(file)
     inputs = _check_out(out, [file] if file else [], [spec], force)
-    results = _design(spec, _Progress())
+    drawer = start() if figures != "none" else None   # imports matplotlib while this process designs
     try:
-        write_outputs(results, out, lang, inputs, force, figures)
+        results = _design(spec, _Progress())
+        write_outputs(results, out, lang, inputs, force, figures, drawer)
     except OutFolderError as err:
         _fail_out(err)
+    finally:
+        if drawer is not None:
+            drawer.stop()
     click.echo(f"wrote {out}/ (results.json, report.html, tables/, plots/, contour/)")
     for name, v in results.valves.items():
         if v.summary["cam"]["undercut"]:
