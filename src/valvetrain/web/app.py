@@ -182,7 +182,7 @@ class Designer:
         self.curtain_axis = LinearAxis(y_range_name="curtain", axis_label_text_color="#ff7f0e")
         ta.add_layout(self.curtain_axis, "right")
 
-        self.checks = ColumnDataSource({k: [] for k in ("quantity", "value", "allowed", "margin", "source",
+        self.checks = ColumnDataSource({k: [] for k in ("key", "quantity", "value", "allowed", "margin", "source",
                                                         "colour", "baseline")})
         fmt = HTMLTemplateFormatter(template='<div style="background:<%= colour %>; padding-left:3px"><%= value %></div>')
         self.check_columns = [TableColumn(field="quantity", title="", width=330),
@@ -264,6 +264,7 @@ class Designer:
         out = {k: [] for k in self.checks.data}
         for c in sorted(results["checks"], key=lambda c: (c["pass"], {"failure": 0, "warning": 1}.get(c["severity"], 2),
                                                           c["margin"] if c["margin"] is not None else 1e300)):
+            out["key"].append(c["quantity"])
             out["quantity"].append(quantity_text(c["quantity"], self.lang, self.names))
             out["value"].append("-" if c["value"] is None else f"{c['value']:.5g} {c['unit']}".rstrip())
             b = base.get(c["quantity"])
