@@ -62,8 +62,9 @@ def _column(x, unit=None):
 def valve_series(v):
     """The plot series of one :class:`~valvetrain.design.ValveDesign` (display units in the keys).
 
-    Kinematics against the camshaft angle from the nose (valve side, at the rated speed: the tappet's lift,
-    velocity, acceleration and jerk times the rocker ratio), the law's segment boundaries, the radius of
+    Kinematics against the camshaft angle from the nose (the tappet's lift and the valve's; the tappet's
+    velocity, acceleration and jerk at the rated speed times the rocker ratio: the valve's while it is off its
+    seat, on a ramp the motion that closes the clearance), the law's segment boundaries, the radius of
     curvature, the curtain area and the running time-area against the crank angle from the gas-exchange TDC, the
     contour (cam frame, nose on +y) with its heel circle, and the spring's required force and chosen line against
     the valve lift.
