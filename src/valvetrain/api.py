@@ -18,6 +18,7 @@ command line prints it).
 """
 
 import json
+import math
 import re
 
 import numpy as np
@@ -52,6 +53,12 @@ def plain(data):
         return out.tolist()
     if isinstance(data, (list, tuple, np.ndarray)):
         return [plain(v) for v in data]
+    if isinstance(data, np.generic):
+        data = data.item()
+    if isinstance(data, float):
+        return data if math.isfinite(data) else None
+    if data is None or isinstance(data, (str, bool, int)):
+        return data
     return json.loads(json_text(data))
 
 
