@@ -87,4 +87,6 @@ def test_page_callbacks():
     assert d.fields["valves.intake.max_lift_mm"].value == 10.5
     d.on_language("value", "en", "ru")
     assert d.check_columns[0].title == "Величина"
+    d.on_report()
+    assert d.report_text.text.startswith("<!DOCTYPE html>") and 'lang="ru"' in d.report_text.text
     assert tomllib.loads(d.toml_text.text)["valves"]["intake"]["max_lift_mm"] == 10.5

@@ -7,7 +7,8 @@ indicator diagram named in the specification is read from its ``source_dir``, as
 * :func:`design` ``(spec) -> {"ok", "errors", "results", "series"}``: the design of ``valvetrain run``;
 * :func:`sweep` ``(spec) -> {"ok", "errors", "sweeps"}``: the speed sweep of ``valvetrain sweep`` (jump and bounce
   speeds, seating velocity, contact force and the map of the lift error over angle and speed);
-* :func:`toml_text` ``(spec) -> str``: the specification as the TOML that ``valvetrain run`` reads back.
+* :func:`toml_text` ``(spec) -> str``: the specification as the TOML that ``valvetrain run`` reads back;
+* :func:`report_html` ``(spec, lang) -> str``: the design report (tables and checks) as HTML text.
 
 The dict is the structure of the TOML file (``{"engine": {...}, "valves": {"intake": {...}}, ...}``, as
 :func:`tomllib.loads` gives it).  Every number out is a plain float in the display unit named in its key (mm, deg,
@@ -199,6 +200,21 @@ def sweep(spec, progress=None):
     except SpecError as err:
         return {"ok": False, "errors": error_records(err), "sweeps": None}
     return {"ok": True, "errors": [], "sweeps": plain({n: sweep_series(v.dynamics) for n, v in valves.items()})}
+
+
+def report_html(spec, lang="en"):
+    """The design report of a specification (a dict) as HTML text, in ``lang`` ("en" or "ru"): the report that
+    ``valvetrain run`` writes, its tables and checks, without figures (it names the command that draws them).
+
+    Raises
+    ------
+    SpecError
+        The specification does not validate or does not design.
+    """
+    from .design import run
+    from .report.html import render_report
+
+    return render_report(run(validate(spec)), {}, lang)
 
 
 def toml_text(spec):

@@ -95,6 +95,8 @@ class Designer:
         self.valve = self.names[0]
         self.generation = 0
         self._syncing = False
+        self.reports = 0
+        self.sweep_result, self.base_sweep = None, None
         self.fields = {}
         self.errors = {}
         self._build()
@@ -129,6 +131,11 @@ class Designer:
         self.toml_button = Button(label=t["toml"], name="download-toml", width=160)
         self.toml_button.js_on_click(CustomJS(args={"div": self.toml_text, "mime": "application/toml",
                                                     "name": "valvetrain.toml"}, code=DOWNLOAD_JS))
+        self.report_text = Div(text="", visible=False)
+        self.report_text.js_on_change("text", CustomJS(args={"div": self.report_text, "mime": "text/html",
+                                                             "name": "report.html"}, code=DOWNLOAD_JS))
+        self.report_button = Button(label=t["report"], name="download-report", width=160)
+        self.report_button.on_click(self.on_report)
         self.status = Div(text="", name="status", styles={"color": "#b00020"})
         self.section_errors = Div(text="", name="section-errors", styles={"color": "#b00020"})
         panels = [TabPanel(title=path, child=column(*[self._widget(f) for f in fields], height=700,
@@ -198,9 +205,11 @@ class Designer:
         # the sweep panel
         self.sweep_status = Div(text="", name="sweep-status")
         self.sweep_sources = {k: ColumnDataSource({"x": [], "y": []}) for k in ("force", "seating")}
+        self.base_sweep_sources = {k: ColumnDataSource({"x": [], "y": []}) for k in ("force", "seating")}
         self.sweep_marks = ColumnDataSource({"x": [], "y0": [], "y1": []})
         for key in ("force", "seating"):
             p = figure(height=220, width=420, tools=tools, name=f"plot-sweep-{key}")
+            p.line("x", "y", source=self.base_sweep_sources[key], color="#999999", line_dash="dashed", line_width=1.5)
             p.line("x", "y", source=self.sweep_sources[key], color="#1f77b4", line_width=2)
             p.segment("x", "y0", "x", "y1", source=self.sweep_marks, color="#d62728", line_dash="dashed")
             self.figures["sweep_" + key] = p
@@ -221,10 +230,11 @@ class Designer:
         self.sweep_title = Div(text="")
         sweep = column(self.sweep_title, self.sweep_status,
                        row(f["sweep_force"], f["sweep_seating"], f["sweep_map"]))
-        top = row(self.language, self.valve_select, self.pin_button, self.toml_button, self.status)
+        top = row(self.language, self.valve_select, self.pin_button, self.toml_button, self.report_button,
+                  self.status)
         self.checks_title = Div(text="")
         self.doc.add_root(column(top, row(column(self.section_errors, self.spec_tabs), column(row(plots, self.card),
-                                 self.checks_title, self.table, sweep)), self.toml_text, self.kinematic_stamp,
+                                 self.checks_title, self.table, sweep)), self.toml_text, self.report_text, self.kinematic_stamp,
                                  self.sweep_stamp))
 
     # --- drawing ---------------------------------------------------------------------------------------------------
@@ -256,7 +266,7 @@ class Designer:
             c.title = {"value": t["value"] + f" ({w['current']})", "baseline": w["baseline"],
                        "margin": w["margin"]}.get(key) or t[key]
         self.language.title, self.valve_select.title = w["language"], w["valve"]
-        self.pin_button.label, self.toml_button.label = w["pin"], w["toml"]
+        self.pin_button.label, self.toml_button.label, self.report_button.label = w["pin"], w["toml"], w["report"]
 
     def _checks(self):
         results = self.session.good["results"]
@@ -364,16 +374,26 @@ class Designer:
 
         SWEEP_WORKERS.submit(work)
 
+    def _sweep_of(self, result):
+        return result["sweeps"].get(self.valve) or next(iter(result["sweeps"].values()))
+
+    @staticmethod
+    def _sweep_curves(sw, sources):
+        sources["force"].data = {"x": sw["speed_rpm"], "y": sw["min_contact_force_N"]}
+        sources["seating"].data = {"x": sw["speed_rpm"],
+                                   "y": [None if v is None else abs(v) for v in sw["seating_velocity_m_s"]]}
+
     def draw_sweep(self, generation, result):
         if generation != self.generation:
             return
         if not result["ok"]:
             self.sweep_status.text = "<br>".join(p["text"] for p in result["errors"])
             return
-        sw = result["sweeps"].get(self.valve) or next(iter(result["sweeps"].values()))
-        self.sweep_sources["force"].data = {"x": sw["speed_rpm"], "y": sw["min_contact_force_N"]}
-        self.sweep_sources["seating"].data = {"x": sw["speed_rpm"],
-                                              "y": [None if v is None else abs(v) for v in sw["seating_velocity_m_s"]]}
+        self.sweep_result = result
+        sw = self._sweep_of(result)
+        self._sweep_curves(sw, self.sweep_sources)
+        if self.base_sweep is not None:
+            self._sweep_curves(self._sweep_of(self.base_sweep), self.base_sweep_sources)
         marks = [v for v in (sw["jump_speed_rpm"], sw["bounce_speed_rpm"]) if v is not None]
         forces = [v for v in sw["min_contact_force_N"] if v is not None]
         self.sweep_marks.data = {"x": marks, "y0": [min(forces)] * len(marks), "y1": [max(forces)] * len(marks)}
@@ -435,7 +455,13 @@ class Designer:
         self.valve = new
         self.redraw()
 
+    def on_report(self):
+        """The report of the good design, to the page, which saves it (a comment makes every one a change)."""
+        self.reports += 1
+        self.report_text.text = self.session.report(self.lang) + f"<!-- {self.reports} -->"
+
     def on_pin(self):
         self.session.pin()
+        self.base_sweep = self.sweep_result
         self.redraw()
 

@@ -266,6 +266,10 @@ class Session:
         """Pin the good design as the baseline that the plots and the checks table compare with."""
         self.baseline = self.good
 
+    def report(self, lang):
+        """The report of the good design as HTML text in ``lang``."""
+        return api.report_html(without_nones(self.good_document), lang)
+
     def toml(self):
         """The specification of the good design as TOML text (every default written out)."""
         return api.toml_text(without_nones(self.good_document))
