@@ -157,3 +157,8 @@ def test_downloaded_toml_validates(designer, tmp_path):
     done = subprocess.run([sys.executable, "-m", "valvetrain", "validate", str(path)], capture_output=True, text=True)
     assert done.returncode == 0, done.stderr
     assert "valid (1 valve(s): intake)" in done.stdout
+    with designer.expect_download() as info:
+        designer.get_by_text("Download report").click()
+    report = tmp_path / "report.html"
+    info.value.save_as(report)
+    assert report.read_text(encoding="utf-8").startswith("<!DOCTYPE html>")

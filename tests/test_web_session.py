@@ -89,4 +89,5 @@ def test_page_callbacks():
     assert d.check_columns[0].title == "Величина"
     d.on_report()
     assert d.report_text.text.startswith("<!DOCTYPE html>") and 'lang="ru"' in d.report_text.text
+    d.on_toml()
     assert tomllib.loads(d.toml_text.text)["valves"]["intake"]["max_lift_mm"] == 10.5

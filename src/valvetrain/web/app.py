@@ -95,7 +95,7 @@ class Designer:
         self.valve = self.names[0]
         self.generation = 0
         self._syncing = False
-        self.reports = 0
+        self.downloads = 0
         self.sweep_result, self.base_sweep = None, None
         self.fields = {}
         self.errors = {}
@@ -129,8 +129,9 @@ class Designer:
         self.pin_button.on_click(self.on_pin)
         self.toml_text = Div(text="", visible=False)
         self.toml_button = Button(label=t["toml"], name="download-toml", width=160)
-        self.toml_button.js_on_click(CustomJS(args={"div": self.toml_text, "mime": "application/toml",
-                                                    "name": "valvetrain.toml"}, code=DOWNLOAD_JS))
+        self.toml_text.js_on_change("text", CustomJS(args={"div": self.toml_text, "mime": "application/toml",
+                                                           "name": "valvetrain.toml"}, code=DOWNLOAD_JS))
+        self.toml_button.on_click(self.on_toml)
         self.report_text = Div(text="", visible=False)
         self.report_text.js_on_change("text", CustomJS(args={"div": self.report_text, "mime": "text/html",
                                                              "name": "report.html"}, code=DOWNLOAD_JS))
@@ -328,7 +329,6 @@ class Designer:
         self._checks()
         self._card()
         self._texts()
-        self.toml_text.text = s.toml()
         self.kinematic_stamp.text = str(int(self.kinematic_stamp.text) + 1)
         self.start_sweep()
 
@@ -457,8 +457,13 @@ class Designer:
 
     def on_report(self):
         """The report of the good design, to the page, which saves it (a comment makes every one a change)."""
-        self.reports += 1
-        self.report_text.text = self.session.report(self.lang) + f"<!-- {self.reports} -->"
+        self.downloads += 1
+        self.report_text.text = self.session.report(self.lang) + f"<!-- download {self.downloads} -->\n"
+
+    def on_toml(self):
+        """The specification of the good design, to the page, which saves it (a comment makes every one a change)."""
+        self.downloads += 1
+        self.toml_text.text = self.session.toml() + f"# download {self.downloads}\n"
 
     def on_pin(self):
         self.session.pin()
