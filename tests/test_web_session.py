@@ -3,6 +3,7 @@ on a Bokeh document."""
 
 import tomllib
 
+import numpy as np
 import pytest
 
 pytest.importorskip("bokeh")
@@ -87,6 +88,14 @@ def test_page_callbacks():
     assert d.fields["valves.intake.max_lift_mm"].value == 10.5
     d.on_language("value", "en", "ru")
     assert d.check_columns[0].title == "Величина"
+    d.on_units("value", "rated", "deg")
+    # per cam degree: the velocity is the slope of the valve lift in mm/deg; central differences of the lift series
+    # (0.5 cam deg apart) agree to 1 % of the peak where the valve is off its seat
+    x, v = np.array(d.sources["velocity"].data["x"]), np.array(d.sources["velocity"].data["y"])
+    lift = np.array(d.sources["lift"].data["y"])
+    slope = np.gradient(lift, x)
+    off = lift > 0.5
+    assert np.max(np.abs(v[off] - slope[off])) < 0.01 * np.max(np.abs(slope))
     d.on_report()
     assert d.report_text.text.startswith("<!DOCTYPE html>") and 'lang="ru"' in d.report_text.text
     d.on_toml()

@@ -8,6 +8,7 @@ drag to the redrawn kinematics, ms) and ``window.vtSweepTimes`` (to the redrawn 
 """
 
 from concurrent.futures import ThreadPoolExecutor
+from dataclasses import replace
 from functools import partial
 
 from bokeh.layouts import column, row
@@ -29,7 +30,9 @@ WORDS = {
            "sweep": "At speed: the dynamics sweep", "sweeping": "sweeping...", "min_force": "min contact force, N",
            "seating": "|seating velocity|, m/s", "map": "valve lift - rigid lift, mm", "spec": "Specification",
            "velocity_valve": "valve velocity, m/s", "acceleration_valve": "valve acceleration, m/s²",
-           "jerk_valve": "valve jerk, m/s³", "lift_mm": "lift, mm", "jump": "jump speed", "bounce": "bounce onset"},
+           "jerk_valve": "valve jerk, m/s³", "velocity_valve_deg": "valve velocity, mm/deg",
+           "acceleration_valve_deg": "valve acceleration, mm/deg²", "jerk_valve_deg": "valve jerk, mm/deg³",
+           "units": "Derivatives", "rated": "at the rated speed", "deg": "per cam degree", "lift_mm": "lift, mm", "jump": "jump speed", "bounce": "bounce onset"},
     "ru": {"language": "Язык", "valve": "Клапан", "pin": "Закрепить как базовый", "toml": "Скачать TOML",
            "report": "Скачать отчёт", "checks": "Проверки", "baseline": "базовый", "current": "текущий",
            "margin": "Запас", "card": "Карта кулачка", "kept": "не рассчитано; на экране последний годный вариант",
@@ -37,7 +40,9 @@ WORDS = {
            "min_force": "мин. сила в контакте, Н", "seating": "|скорость посадки|, м/с",
            "map": "подъём клапана - кинематический подъём, мм", "spec": "Исходные данные",
            "velocity_valve": "скорость клапана, м/с", "acceleration_valve": "ускорение клапана, м/с²",
-           "jerk_valve": "рывок клапана, м/с³", "lift_mm": "подъём, мм", "jump": "частота отрыва",
+           "jerk_valve": "рывок клапана, м/с³", "velocity_valve_deg": "скорость клапана, мм/град",
+           "acceleration_valve_deg": "ускорение клапана, мм/град²", "jerk_valve_deg": "рывок клапана, мм/град³",
+           "units": "Производные", "rated": "на номинальной частоте", "deg": "на градус ПРВ", "lift_mm": "подъём, мм", "jump": "частота отрыва",
            "bounce": "начало отскока"},
 }
 """The designer's own words in English and Russian (the plots' and the checks' come from the report's)."""
@@ -47,10 +52,16 @@ CARD_KEYS = ("cam.valve_opens_crank_deg", "cam.valve_closes_crank_deg", "cam.eve
              "cam.max_acceleration_m_s2", "cam.min_acceleration_m_s2", "cam.rho_min_mm")
 """The keys of a valve's results shown on the cam card."""
 
-KINEMATIC_PLOTS = (("lift", "valve_lift_mm", "lift_mm"), ("velocity", "valve_velocity_m_s", "velocity_valve"),
-                   ("acceleration", "valve_acceleration_m_s2", "acceleration_valve"),
-                   ("jerk", "valve_jerk_m_s3", "jerk_valve"))
-"""The plots against the camshaft angle: name, series, axis words."""
+KINEMATIC_PLOTS = (("lift", "valve_lift_mm", "lift_mm", 0), ("velocity", "valve_velocity_m_s", "velocity_valve", 1),
+                   ("acceleration", "valve_acceleration_m_s2", "acceleration_valve", 2),
+                   ("jerk", "valve_jerk_m_s3", "jerk_valve", 3))
+"""The plots against the camshaft angle: name, series, axis words, order of the derivative."""
+
+
+def per_degree(values, order, omega):
+    """A derivative of the lift at the rated speed (m/s, m/s², m/s³) in mm per camshaft degree to the ``order``:
+    divided by omega_cam^order [rad/s] and converted (1000 mm/m, pi/180 rad/deg per order)."""
+    return np.array(values, dtype=float) * 1e3 * (np.pi / 180.0 / omega) ** order
 
 SEVERITY_COLOURS = {"failure": "#f4c7c3", "warning": "#fce8b2", "info": "#e8eaf6", "pass": "#d9ead3"}
 
@@ -96,6 +107,7 @@ class Designer:
         self.generation = 0
         self._syncing = False
         self.downloads = 0
+        self.per_degree = False
         self.sweep_result, self.base_sweep = None, None
         self.fields = {}
         self.errors = {}
@@ -125,6 +137,9 @@ class Designer:
         self.language.on_change("value", self.on_language)
         self.valve_select = Select(title=t["valve"], value=self.valve, options=self.names, width=120)
         self.valve_select.on_change("value", self.on_valve)
+        self.units = Select(title=t["units"], value="rated", options=[("rated", t["rated"]), ("deg", t["deg"])],
+                            name="units", width=170)
+        self.units.on_change("value", self.on_units)
         self.pin_button = Button(label=t["pin"], name="pin", width=160)
         self.pin_button.on_click(self.on_pin)
         self.toml_text = Div(text="", visible=False)
@@ -146,7 +161,7 @@ class Designer:
 
         tools = "pan,wheel_zoom,box_zoom,reset,save"
         self.sources, self.base_sources, self.figures = {}, {}, {}
-        for name, _, _ in KINEMATIC_PLOTS:
+        for name, *_ in KINEMATIC_PLOTS:
             p = figure(height=210, width=520, tools=tools, name=f"plot-{name}")
             self.sources[name] = ColumnDataSource({"x": [], "y": []})
             self.base_sources[name] = ColumnDataSource({"x": [], "y": []})
@@ -231,7 +246,7 @@ class Designer:
         self.sweep_title = Div(text="")
         sweep = column(self.sweep_title, self.sweep_status,
                        row(f["sweep_force"], f["sweep_seating"], f["sweep_map"]))
-        top = row(self.language, self.valve_select, self.pin_button, self.toml_button, self.report_button,
+        top = row(self.language, self.valve_select, self.units, self.pin_button, self.toml_button, self.report_button,
                   self.status)
         self.checks_title = Div(text="")
         self.doc.add_root(column(top, row(column(self.section_errors, self.spec_tabs), column(row(plots, self.card),
@@ -241,8 +256,9 @@ class Designer:
     # --- drawing ---------------------------------------------------------------------------------------------------
     def _texts(self):
         t, w = TEXT[self.lang], WORDS[self.lang]
-        axes = {"lift": w["lift_mm"], "velocity": w["velocity_valve"], "acceleration": w["acceleration_valve"],
-                "jerk": w["jerk_valve"]}
+        unit = "_deg" if self.per_degree else ""
+        axes = {"lift": w["lift_mm"], "velocity": w["velocity_valve" + unit],
+                "acceleration": w["acceleration_valve" + unit], "jerk": w["jerk_valve" + unit]}
         for name, words in axes.items():
             self.figures[name].yaxis.axis_label = words
             self.figures[name].title.text = words
@@ -266,7 +282,8 @@ class Designer:
                           strict=True):
             c.title = {"value": t["value"] + f" ({w['current']})", "baseline": w["baseline"],
                        "margin": w["margin"]}.get(key) or t[key]
-        self.language.title, self.valve_select.title = w["language"], w["valve"]
+        self.language.title, self.valve_select.title, self.units.title = w["language"], w["valve"], w["units"]
+        self.units.options = [("rated", w["rated"]), ("deg", w["deg"])]
         self.pin_button.label, self.toml_button.label, self.report_button.label = w["pin"], w["toml"], w["report"]
 
     def _checks(self):
@@ -297,46 +314,58 @@ class Designer:
                 rows.append(f"<tr><td>{label(key, self.lang)}</td><td>{value:.5g}</td></tr>")
         self.card.text = f"<h3>{WORDS[self.lang]['card']}</h3><table>{''.join(rows)}</table>"
 
-    def _curves(self, series, sources):
-        for name, key, _ in KINEMATIC_PLOTS:
-            sources[name].data = _xy(series, key)
+    def _omega(self, result):
+        """The camshaft speed of a design [rad/s] when the plots are per degree, else None."""
+        return result["results"]["valves"][self.valve]["cam"]["camshaft_speed_rad_s"] if self.per_degree else None
+
+    def _curves(self, series, sources, omega=None):
+        for name, key, _, order in KINEMATIC_PLOTS:
+            y = series[key] if omega is None or order == 0 else per_degree(series[key], order, omega)
+            sources[name].data = {"x": series["cam_deg"], "y": y}
         sources["contour"].data = {"x": series["contour_x_mm"] + series["contour_x_mm"][:1],
                                    "y": series["contour_y_mm"] + series["contour_y_mm"][:1]}
         sources["curvature"].data = _xy(series, "rho_mm")
         sources["time_area"].data = _xy(series, "time_area_mm2_s", "crank_deg")
         sources["spring"].data = {"x": series["spring_lift_mm"], "y": series["required_force_N"]}
 
-    def redraw(self):
-        """Draw the good design (and the baseline), its checks, card and handles; start its speed sweep."""
+    def redraw(self, sweep=True):
+        """Draw the good design (and the baseline), its checks, card and handles; start its speed sweep (``sweep``)
+        or draw the last one again."""
         s = self.session
         series = s.good["series"][self.valve]
-        self._curves(series, self.sources)
+        omega = self._omega(s.good)
+        self._curves(series, self.sources, omega)
         self.sources["tappet"].data = _xy(series, "tappet_lift_mm")
         phi = np.linspace(0.0, 2.0 * np.pi, 181)
         r = series["heel_radius_mm"]
         self.sources["heel"].data = {"x": r * np.cos(phi), "y": r * np.sin(phi)}
         self.sources["spring_line"].data = {"x": series["spring_line_lift_mm"], "y": series["spring_line_force_N"]}
         self.sources["curtain"].data = _xy(series, "curtain_area_mm2", "crank_deg")
-        acc = [a for a in series["valve_acceleration_m_s2"] if a is not None]
+        acc = self.sources["acceleration"].data["y"]
+        acc = [a for a in acc if a is not None and np.isfinite(a)]
         edges = series["segments_cam_deg"]
         self.segments.data = {"x": edges, "y0": [min(acc)] * len(edges), "y1": [max(acc)] * len(edges)}
         base = s.baseline["series"].get(self.valve) if s.baseline else None
         if base is not None:
-            self._curves(base, self.base_sources)
+            self._curves(base, self.base_sources, self._omega(s.baseline))
         self.figures["time_area"].title.text = (f"{TEXT[self.lang]['running_ta']}; "
                                                 f"fullness {s.good['results']['valves'][self.valve]['flow']['fullness']:.4g}")
-        self._handles()
+        self._handles(omega)
         self._checks()
         self._card()
         self._texts()
         self.kinematic_stamp.text = str(int(self.kinematic_stamp.text) + 1)
-        self.start_sweep()
+        if sweep:
+            self.start_sweep()
+        elif self.sweep_result is not None:
+            self.draw_sweep(self.generation, self.sweep_result)
 
-    def _handles(self):
+    def _handles(self, omega=None):
         self._placed = {}
         found = self.session.handles(self.valve)
         for plot, src in self.handles.items():
-            mine = [h for h in found if h.plot == plot]
+            mine = [h if omega is None or plot == "lift" else replace(h, y=float(per_degree(h.y, 2, omega)))
+                    for h in found if h.plot == plot]
             self._placed[plot] = [(h.name, h.x, h.y) for h in mine]
             src.data = {"x": [h.x for h in mine], "y": [h.y for h in mine], "name": [h.name for h in mine]}
 
@@ -424,14 +453,14 @@ class Designer:
     def on_handles(self, plot, attr, old, new):
         placed = getattr(self, "_placed", {}).get(plot, [])
         if len(new["x"]) != len(placed):      # a point deleted: put the handles back
-            self._handles()
+            self._handles(self._omega(self.session.good))
             return
         for (name, x, y), nx, ny in zip(placed, new["x"], new["y"], strict=True):
             if abs(nx - x) > 1e-9 or abs(ny - y) > 1e-9:
                 if self.session.drag(self.valve, name, nx, ny):
                     self.redraw()
                 else:
-                    self._handles()
+                    self._handles(self._omega(self.session.good))
                 self.show_problems()
                 self._sync_fields()
                 return
@@ -448,8 +477,12 @@ class Designer:
 
     def on_language(self, attr, old, new):
         self.lang = new
-        self.redraw()
+        self.redraw(sweep=False)
         self.show_problems()
+
+    def on_units(self, attr, old, new):
+        self.per_degree = new == "deg"
+        self.redraw(sweep=False)
 
     def on_valve(self, attr, old, new):
         self.valve = new
@@ -468,5 +501,5 @@ class Designer:
     def on_pin(self):
         self.session.pin()
         self.base_sweep = self.sweep_result
-        self.redraw()
+        self.redraw(sweep=False)
 
