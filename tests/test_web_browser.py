@@ -76,6 +76,14 @@ def check_passes(page, quantity):
     return data["colour"][i] == SEVERITY_COLOURS["pass"]
 
 
+def table_shows_its_source(page):
+    """The checks table's first rendered rows show the first values of its source (a grid that kept the old rows
+    after new data came was a bug)."""
+    values = model_data(page, "checks")["value"][:4]
+    rows = [r.split("\n") for r in page.locator(".slick-row").all_inner_texts()[:4]]
+    return [r[1] for r in rows] == values
+
+
 def wait_redrawn(page, done):
     page.wait_for_function(f"() => (window.vtTimesDone || 0) > {done}", timeout=30_000)
 
@@ -107,6 +115,7 @@ def test_rated_speed_flips_a_check(designer):
     fill(designer, "rated_speed_rpm", "6000")
     wait_redrawn(designer, done)
     assert check_passes(designer, quantity)
+    assert table_shows_its_source(designer)
 
 
 def test_drag_of_the_nose_changes_the_lift_and_a_check(designer):

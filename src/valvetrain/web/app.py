@@ -302,7 +302,8 @@ class Designer:
             out["margin"].append("" if c["margin"] is None else f"{c['margin']:+.3g}")
             out["source"].append(translate(c["source"], self.lang))
             out["colour"].append(SEVERITY_COLOURS["pass" if c["pass"] or c["accepted"] else c["severity"]])
-        self.checks.data = out
+        self.checks = ColumnDataSource(out)      # a new source: the page's grid redraws a replaced one, not
+        self.table.source = self.checks          # new data in its old one
 
     def _card(self):
         v = self.session.good["results"]["valves"][self.valve]
