@@ -100,3 +100,17 @@ def test_page_callbacks():
     assert d.report_text.text.startswith("<!DOCTYPE html>") and 'lang="ru"' in d.report_text.text
     d.on_toml()
     assert tomllib.loads(d.toml_text.text)["valves"]["intake"]["max_lift_mm"] == 10.5
+
+
+def test_serve_refuses_a_specification_that_does_not_validate(refused):
+    from valvetrain.specification import example_text
+
+    text = example_text().replace("bore_mm = 80.0", "bore_mm = 3.0")
+    assert "error: engine.bore_mm = 3.0: allowed [5, 2000] mm" in refused(text, "serve")
+
+
+def test_sessions_are_separate():
+    a, b = Session.start(), Session.start()
+    a.edit({"engine.rated_speed_rpm": 6000.0})
+    assert b.document["engine"]["rated_speed_rpm"] == 7000
+    assert b.good["results"]["engine"]["rated_speed_rpm"] == 7000
