@@ -15,11 +15,10 @@ from pydantic import BaseModel
 import tomli_w
 
 from .. import api
-from ..specification import REGISTRY, SpecError, set_keys
+from ..specification import REGISTRY, SpecError, example_text, set_keys
 from ..specification.cams import main_half_angle_deg
 from ..specification.fields import Range
 from ..specification.models import Drive, Dynamics, Engine, Masses, Spring, Valve
-from ..specification.validate import example_text
 
 HANDLE_STEP = {"deg": 0.01, "mm": 0.001}
 """A dragged handle is rounded to these steps [cam deg, mm]: a saved specification reads like a typed one."""
