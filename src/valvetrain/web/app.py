@@ -216,6 +216,9 @@ class Designer:
                               TableColumn(field="source", title="", width=380)]
         self.table = DataTable(source=self.checks, columns=self.check_columns, width=1100, height=360,
                                index_position=None, name="checks")
+        # the page's grid redraws when its view's rows change; new data of as many rows leaves them, and the old
+        # rows on screen: the view's change signal makes it take the new ones
+        self.checks.js_on_change("data", CustomJS(args={"table": self.table}, code="table.view.change.emit();"))
         self.card = Div(text="", name="card", width=300)
 
         # the sweep panel
@@ -302,8 +305,7 @@ class Designer:
             out["margin"].append("" if c["margin"] is None else f"{c['margin']:+.3g}")
             out["source"].append(translate(c["source"], self.lang))
             out["colour"].append(SEVERITY_COLOURS["pass" if c["pass"] or c["accepted"] else c["severity"]])
-        self.checks = ColumnDataSource(out)      # a new source: the page's grid redraws a replaced one, not
-        self.table.source = self.checks          # new data in its old one
+        self.checks.data = out
 
     def _card(self):
         v = self.session.good["results"]["valves"][self.valve]
