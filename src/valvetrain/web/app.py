@@ -4,7 +4,8 @@ The specification panel is generated from the specification's models (:func:`val
 plots are plain Bokeh figures fed by column data sources; the handles are points of a ``PointDrawTool`` whose
 release sends the new position to Python; the speed sweep runs in a worker thread and only the newest one is
 drawn (an older one is stopped at its next speed).  The page keeps its timings in ``window.vtTimes`` (release of a
-drag to the redrawn kinematics, ms) and ``window.vtSweepTimes`` (to the redrawn sweep panel).
+drag to the redrawn kinematics, ms) and ``window.vtSweepTimes`` (to the redrawn sweep panel), and in
+``window.vtTimesArrived`` and ``window.vtSweepTimesArrived`` the times to the arrival of the update (before drawing).
 """
 
 from concurrent.futures import ThreadPoolExecutor
@@ -70,7 +71,11 @@ const now = performance.now();
 requestAnimationFrame(() => requestAnimationFrame(() => {
   const t = performance.now();
   window[key] = window[key] || [];
-  if (window.vtRelease !== undefined) { window[key].push(t - window.vtRelease); }
+  window[key + 'Arrived'] = window[key + 'Arrived'] || [];
+  if (window.vtRelease !== undefined) {
+    window[key].push(t - window.vtRelease);
+    window[key + 'Arrived'].push(now - window.vtRelease);
+  }
   window[key + 'Done'] = (window[key + 'Done'] || 0) + 1;
 }));
 """
@@ -358,8 +363,8 @@ class Designer:
         self._card()
         self._texts()
         self.kinematic_stamp.text = str(int(self.kinematic_stamp.text) + 1)
-        if sweep:
-            self.start_sweep()
+        if sweep:       # after this change has gone to the page: the sweep's thread would hold it up
+            self.doc.add_next_tick_callback(self.start_sweep)
         elif self.sweep_result is not None:
             self.draw_sweep(self.generation, self.sweep_result)
 
