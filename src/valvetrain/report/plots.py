@@ -5,6 +5,7 @@ import itertools
 from matplotlib.figure import Figure
 import numpy as np
 
+from ..design.dynamics import event_window
 from ..units import MM, rad_to_deg, to_display
 from .i18n import TEXT
 from .names import value_text
@@ -310,21 +311,10 @@ def timing_figure(valves, t):
     return fig
 
 
-def _event_window(d, margin_deg=10.0):
-    """Camshaft angles of the sweep around the event (where any speed or the rigid lift is off the seat)."""
-    sw = d.sweep
-    open_ = (sw.kinematic_lift > 0.0) | np.any(sw.lift > 1e-6, axis=0)
-    idx = np.flatnonzero(open_)
-    if idx.size == 0:
-        return np.ones(sw.theta.size, dtype=bool)
-    lo, hi = sw.theta[idx[0]] - np.radians(margin_deg), sw.theta[idx[-1]] + np.radians(margin_deg)
-    return (sw.theta >= lo) & (sw.theta <= hi)
-
-
 def dynamics_map_figure(name, d, t):
     """Maps over camshaft angle and engine speed: valve lift minus the rigid lift, and the cam contact force."""
     sw = d.sweep
-    keep = _event_window(d)
+    keep = event_window(d)
     x = rad_to_deg(sw.theta[keep])
     y = to_display(np.asarray(d.per_speed.speed), "rpm")
     fig = Figure(figsize=(9, 8))
