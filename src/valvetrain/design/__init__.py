@@ -12,13 +12,16 @@ rpm) are converted to SI for the physics functions.  Stages:
   the acceptances of the specification (``[[accepted]]``) applied.
 """
 
+from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, replace
 import difflib
+from functools import cached_property
+from typing import Any, Optional
 
 import numpy as np
 
 from .. import flow
-from ..checks import SEVERITIES, apply_acceptances, check, failed, ranked, valve_of
+from ..checks import SEVERITIES, Check, apply_acceptances, check, failed, ranked, valve_of
 from ..crank.pressure import PressureFileError
 from ..files import TableFileError
 from ..specification import Spec, SpecError, crank_geometry, si, spec_document, validate
@@ -55,16 +58,16 @@ class EngineRecord:
     piston_area: float = quantity("piston_area_mm2", "mm2", "piston area F_p")
 
 
-@dataclass(repr=False)
+@dataclass(frozen=True, repr=False)
 class DesignResults:
     """Result of :func:`run`: the engine's derived figures, each valve's design, all warnings."""
 
-    spec: object
+    spec: Spec
     engine: EngineRecord
-    valves: dict
-    checks: list                  # every valvetrain.checks.Check of the design, passed or not
-    crank: CrankResults = None
-    two_stroke: TwoStrokeResults = None
+    valves: dict[str, ValveDesign]
+    checks: tuple[Check, ...]                  # every check of the design, passed or not
+    crank: Optional[CrankResults] = None
+    two_stroke: Optional[TwoStrokeResults] = None
 
     @property
     def warnings(self):
@@ -113,8 +116,14 @@ class DesignResults:
                 + ("<p>Accepted in the specification</p>" + table(("severity", "quantity", "value", "allowed",
                                                                    "reason"), accepted) if accepted else ""))
 
-    def to_dict(self):
-        """JSON-ready dictionary (engineering units, named in the keys)."""
+    def to_dict(self) -> dict[str, Any]:
+        """JSON-ready dictionary (engineering units, named in the keys): the projection of results.json, made once
+        (:attr:`projection`); read it, don't change it."""
+        return self.projection
+
+    @cached_property
+    def projection(self) -> dict[str, Any]:
+        """The results.json dictionary, made on first use and kept (the results are frozen)."""
         from .. import __version__
 
         out = {
@@ -197,12 +206,14 @@ def run(spec, laws=None, progress=None):
     for stage, tag in ((crank, "crank"), (ports, "two-stroke")):
         if stage is not None:
             found += [c.named(tag) for c in stage.checks]
-    found = accept(found, spec.accepted, valves)
-    return DesignResults(spec, engine_record(engine), valves, found, crank, ports)
+    found, valves = accept(found, spec.accepted, valves)
+    return DesignResults(spec, engine_record(engine), valves, tuple(found), crank, ports)
 
 
-def accept(found, acceptances, valves):
-    """The checks with the specification's acceptances applied (also to each valve's own list of checks).
+def accept(found: list[Check], acceptances: list, valves: dict[str, ValveDesign]
+           ) -> tuple[list[Check], dict[str, ValveDesign]]:
+    """The checks with the specification's acceptances applied, and the valves with them applied to each valve's
+    own checks.
 
     Raises
     ------
@@ -222,9 +233,8 @@ def accept(found, acceptances, valves):
                             + (f"; did you mean {' or '.join(repr(n) for n in near)}?" if near else
                                " (every check is listed in results.json, checks)"))
         raise SpecError(problems)
-    for v in valves.values():
-        v.checks = apply_acceptances(v.checks, acceptances, valves)[0]
-    return found
+    return found, {name: replace(v, checks=tuple(apply_acceptances(v.checks, acceptances, valves)[0]))
+                   for name, v in valves.items()}
 
 
 def engine_record(eng):

@@ -2,10 +2,12 @@
 torque (Power units manual (n.d.))."""
 
 from dataclasses import dataclass
+from functools import cached_property
+from typing import Any
 
 import numpy as np
 
-from ..checks import check, failed
+from ..checks import Check, check, failed
 from ..crank import dynamics, kinematics, pressure, torque
 from ..specification import SpecError
 from ..units import MPA
@@ -93,23 +95,23 @@ class CrankSummary:
     work: WorkRecord = quantity("work", flatten=True, omit_none=True)
 
 
-@dataclass(repr=False)
+@dataclass(frozen=True, repr=False)
 class CrankResults:
     """The crank chapter: per-angle arrays of one cylinder, the engine torque and the summary (SI)."""
 
     phi: np.ndarray                 # cycle angle of one cylinder [rad]
-    columns: dict                   # per-angle arrays of one cylinder (SI)
+    columns: dict[str, np.ndarray]  # per-angle arrays of one cylinder (SI)
     psi: np.ndarray                 # engine angle over one cycle [rad]
     cylinder_torques: np.ndarray    # (i, n) [N m]
     total_torque: np.ndarray        # (n,) [N m]
     firing: np.ndarray              # firing angles after cylinder 1 [rad]
     figures: CrankSummary
-    checks: list                    # every valvetrain.checks.Check of the chapter
+    checks: tuple[Check, ...]       # every check of the chapter
     pressure_source: str
 
-    @property
-    def summary(self):
-        """The chapter's record in results.json (engineering units)."""
+    @cached_property
+    def summary(self) -> dict[str, Any]:
+        """The chapter's record in results.json (engineering units), made once: read it, don't change it."""
         return record(self.figures)
 
     def __repr__(self):
@@ -271,4 +273,4 @@ def crank_stage(c, eng, timing=None):
     found = [check("crank lambda = R/L", lam, *LAMBDA_RANGE, source="Power units manual (n.d.), eq. (1.1)"),
              check("rod mass share at the piston pin", c.rod_pin_fraction, *ROD_PIN_FRACTION_RANGE,
                    source="Power units manual (n.d.), eq. (2.7)")]
-    return CrankResults(phi, columns, phi, each, total, firing, figures, found, source)
+    return CrankResults(phi, columns, phi, each, total, firing, figures, tuple(found), source)

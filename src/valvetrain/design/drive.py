@@ -15,7 +15,7 @@ from typing import Optional, Union
 import numpy as np
 
 from .. import flow, geometry, masses, springs, strength
-from ..checks import check
+from ..checks import Check, check
 from ..spring_materials import grade
 from ..specification.cams import layout, train_mass
 from ..specification.si import si_name
@@ -99,7 +99,7 @@ class SpringRecord:
     guide_sleeve_needed: bool = quantity("guide_sleeve_needed", label="free length / D > 2.5")
     passes_all_checks: bool = quantity("passes_all_checks", label="every check of the spring passes")
     binding_check: str = quantity("binding_check", label="the check with the smallest margin")
-    margins: dict = quantity("margins", label="relative margin of each check (>= 0 passes)")
+    margins: dict[str, float] = quantity("margins", label="relative margin of each check (>= 0 passes)")
 
 
 def spring_record(s):
@@ -188,8 +188,8 @@ class StrengthResult:
     side_force_speed: Optional[float] = quantity("roller_side_force_speed_rpm", "rpm",
                                                  "engine speed of the largest side force", omit_none=True)
     per_speed: StrengthPerSpeed = quantity("per_speed", label="the largest cam force and contact stress at each speed")
-    checks: tuple = ()             # the strength checks (valvetrain.checks.Check, quantity with underscores)
-    not_checked: tuple = ()        # the checks whose parts are not given, each with the keys missing
+    checks: tuple[Check, ...] = ()     # the strength checks (quantity with underscores)
+    not_checked: tuple[str, ...] = ()  # the checks whose parts are not given, each with the keys missing
     rated_speed: float = 0.0       # the engine's rated speed [rad/s] (for the plot)
 
 
@@ -220,11 +220,11 @@ class DriveResult:
     masses: MassResult
     spring: SpringResult
     strength: Optional[StrengthResult]             # set by :func:`strength_stage` (None from drive_stage alone)
-    checks: tuple                  # every valvetrain.checks.Check of the drive, passed or not
+    checks: tuple[Check, ...]      # every check of the drive, passed or not
     lift: np.ndarray = field(repr=False)             # valve lift along the open event [m]
     inertia_force: np.ndarray = field(repr=False)    # m_v |j_v| where j_v < 0 [N]
     required_force: np.ndarray = field(repr=False)   # K_z m_v |j_v| [N]
-    lines: dict = field(repr=False)                  # name -> springs.Characteristic (required, chosen, outer, inner)
+    lines: dict[str, springs.Characteristic] = field(repr=False)   # required, chosen, outer, inner
 
 
 def drive_record(drive):

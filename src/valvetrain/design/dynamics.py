@@ -21,7 +21,7 @@ from ..dynamics.models import (CoilSpring, camshaft_stiffness, direct_train, nat
                                pushrod_stiffness, pushrod_train, rocker_train, series)
 from ..dynamics.perturbation import perturbation_parameter
 from ..dynamics.resonance import resonance
-from ..dynamics.sweep import sweep, sweep_size
+from ..dynamics.sweep import SpeedResult, SweepResult, sweep, sweep_size
 from ..specification import SpecError
 from ..specification.cams import layout
 from ..units import DEG, MM, cam_per_crank, rpm_to_rad_s, to_display
@@ -160,7 +160,7 @@ class Mode:
     """One natural mode of the train with every contact closed (undamped)."""
 
     frequency: float = quantity("frequency_Hz", "Hz", "natural frequency")
-    shape: dict = quantity("shape", label="displacement of each node at the valve, the largest 1 (sign: same or "
+    shape: dict[str, float] = quantity("shape", label="displacement of each node at the valve, the largest 1 (sign: same or "
                            "opposite direction)")
 
 
@@ -194,9 +194,9 @@ class DynamicsResult:
     resonance: ResonanceRecord = quantity("resonance")
     per_speed: PerSpeed = quantity("per_speed")
     sweep_table: str = quantity("sweep_table", label="CSV with one row per speed, relative to the output folder")
-    sweep: object = field(default=None, repr=False, compare=False)       # dynamics.sweep.SweepResult
-    records: tuple = field(default=(), repr=False, compare=False)        # SpeedRecord of every speed
-    rated: object = field(default=None, repr=False, compare=False)       # dynamics.sweep.SpeedResult at rated speed
+    sweep: Optional[SweepResult] = field(default=None, repr=False, compare=False)
+    records: tuple[SpeedRecord, ...] = field(default=(), repr=False, compare=False)    # every speed
+    rated: Optional[SpeedResult] = field(default=None, repr=False, compare=False)      # at the rated speed
 
 
 def _link_estimates(valve, k):

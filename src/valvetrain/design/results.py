@@ -84,6 +84,9 @@ def _type_schema(annotation):
         return {"type": "null"}
     if origin in (tuple, list):
         return {"type": "array", "items": _type_schema(typing.get_args(annotation)[0])}
+    if origin is dict:
+        values = _type_schema(typing.get_args(annotation)[1])
+        return {"type": "object", **({"additionalProperties": values} if values else {})}
     if isinstance(annotation, type) and is_dataclass(annotation):
         return json_schema(annotation)
     if annotation in _JSON_TYPES:
@@ -101,8 +104,8 @@ def json_schema(cls):
             continue
         sub = _type_schema(hints[f.name])
         if meta["flatten"]:
-            nested = sub if "properties" in sub else next((o for o in sub.get("anyOf", []) if "properties" in o), {})
-            props.update(nested.get("properties", {}))
+            for nested in [sub, *sub.get("anyOf", [])]:
+                props.update(nested.get("properties", {}))
             continue
         text = meta["label"] + (f" [{meta['unit']}]" if meta["unit"] else "")
         props[meta["key"]] = {**sub, "description": text} if text else sub

@@ -8,13 +8,16 @@ caller's own.  Crank angles are measured from the gas-exchange TDC (the TDC that
 intake stroke) in (-360, 360]; camshaft angles from the cam nose.
 """
 
+from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
+from functools import cached_property
 import math
+from typing import Any, Optional, Union
 
 import numpy as np
 
 from .. import flow, geometry
-from ..checks import check, failed, ranked
+from ..checks import Check, check, failed, ranked
 from ..crank.kinematics import displacement
 from ..laws import LiftLaw
 from ..laws.base import Extremes
@@ -23,10 +26,10 @@ from ..specification import SpecError
 from ..specification.cams import layout
 from ..springs import NoSpringFits
 from ..units import DEG, MM
-from .drive import drive_record, drive_stage, strength_stage
-from .dynamics import dynamics_stage
-from .grinding import grinding_stage
-from .hydraulic import hydraulic_stage
+from .drive import DriveResult, drive_record, drive_stage, strength_stage
+from .dynamics import DynamicsResult, dynamics_stage
+from .grinding import GrindingResult, grinding_stage
+from .hydraulic import HydraulicResult, hydraulic_stage
 from .results import quantity, record
 
 ACCELERATION_LIMITS = (3500.0, -1500.0)
@@ -158,7 +161,7 @@ class CamResult:
     law: LiftLaw = field(repr=False)
     name: str = quantity("law", label="lift law")
     source: str = quantity("source", label="source of the law's formulas")
-    coefficients: dict = quantity("coefficients", label="the law's coefficients in its source's units")
+    coefficients: dict[str, Any] = quantity("coefficients", label="the law's coefficients in its source's units")
     extremes: Extremes = field(repr=False)
     max_velocity: float = quantity("max_velocity_m_s", "m/s", "largest tappet velocity")
     max_acceleration: float = quantity("max_acceleration_m_s2", "m/s2", "largest tappet acceleration")
@@ -255,7 +258,7 @@ class ProfileResult:
     rho_min_angle: float = quantity("rho_min_cam_deg", "cam deg", "where the radius is smallest")
     rho_max_angle: float = quantity("rho_max_cam_deg", "cam deg", "where the radius is largest")
     straight_flanks: bool = quantity("straight_flanks", label="the profile has straight flanks")
-    contact: object = quantity("contact", flatten=True)
+    contact: Union[FlatContact, RollerContact] = quantity("contact", flatten=True)
     undercut: bool = quantity("undercut", label="the profile is undercut (cannot be made)")
 
 
@@ -551,7 +554,7 @@ def mass_checks(valve, mass, throat_area):
     return [] if c is None else [c]
 
 
-@dataclass
+@dataclass(frozen=True, repr=False)
 class ValveDesign:
     """Everything computed for one valve: the stage results (SI), the law's own records and every check."""
 
@@ -561,13 +564,13 @@ class ValveDesign:
     cam: CamResult
     flow: FlowResult
     profile: ProfileResult
-    clearance: ClearanceResult
-    records: dict                  # the law's own results (seed formulas, a measured table's analysis)
-    drive: object                  # DriveResult: masses, spring curves, strength
-    checks: list = field(default_factory=list)   # every valvetrain.checks.Check of the valve, passed or not
-    dynamics: object = None        # DynamicsResult when the valve has a [dynamics] section
-    grinding: object = None        # GrindingResult when the valve has a [grinding] section
-    hydraulic: object = None       # HydraulicResult when the valve has a [hydraulic] section
+    clearance: Optional[ClearanceResult]
+    records: Mapping[str, Any]     # the law's own results (seed formulas, a measured table's analysis), as shown
+    drive: DriveResult             # masses, spring curves, strength
+    checks: tuple[Check, ...] = ()                  # every check of the valve, passed or not
+    dynamics: Optional[DynamicsResult] = None       # with a [dynamics] section
+    grinding: Optional[GrindingResult] = None       # with a [grinding] section
+    hydraulic: Optional[HydraulicResult] = None     # with a [hydraulic] section
 
     @property
     def warnings(self):
@@ -591,9 +594,10 @@ class ValveDesign:
     contour = property(lambda self: self.profile.contour)
     contour_angle = property(lambda self: self.profile.contour_angle)
 
-    @property
-    def summary(self):
-        """The valve's record in results.json (engineering units, named in the keys)."""
+    @cached_property
+    def summary(self) -> dict[str, Any]:
+        """The valve's record in results.json (engineering units, named in the keys), made once: read it, don't
+        change it."""
         out = {"kind": self.kind, "count": self.count, "rocker_ratio": self.rocker_ratio,
                "cam": {**record(self.cam), **record(self.profile), **self.records}, "flow": record(self.flow)}
         if self.clearance is not None:
@@ -674,7 +678,7 @@ def design_valve(name, valve, engine, gas, output, law=None, progress=None, cyli
             raise SpecError([f"{at}.grinding.{exc}"]) from None
         found += grinding_found
     design = ValveDesign(name, valve.kind, valve.count, cam, flow_result, profile, clearance, records, drive,
-                         [c.named(name) for c in found], dynamics, grinding)
+                         tuple(c.named(name) for c in found), dynamics, grinding)
     return with_hydraulic(design, valve, engine, gas, cylinder)
 
 
@@ -699,7 +703,7 @@ def with_hydraulic(design, valve, engine, gas, cylinder=None):
         hydraulic, found = hydraulic_stage(valve, design.cam.law, engine, gas, design.name, design.cam.nose, cylinder)
     except ValueError as exc:
         raise SpecError([f"valves.{design.name}.hydraulic.{exc}"]) from None
-    return replace(design, checks=design.checks + [c.named(design.name) for c in found], hydraulic=hydraulic)
+    return replace(design, checks=design.checks + tuple(c.named(design.name) for c in found), hydraulic=hydraulic)
 
 
 __all__ = ["CamResult", "ClearanceResult", "FlowResult", "LiftTable", "ProfileResult", "StepRecord", "ValveDesign",
