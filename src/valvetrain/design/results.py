@@ -10,6 +10,7 @@ from the same metadata.  Fields without the metadata (arrays, the law object) st
 
 from dataclasses import MISSING, field, fields, is_dataclass
 import typing
+from typing import Any
 
 import numpy as np
 
@@ -53,7 +54,7 @@ def _shown(value, unit):
     return float(to_display(float(value), unit))
 
 
-def record(result):
+def record(result: Any) -> dict[str, Any]:
     """The results.json dictionary of a stage result (engineering units, keys from the field metadata)."""
     out = {}
     for f in fields(result):
@@ -68,6 +69,25 @@ def record(result):
         else:
             out[meta["key"]] = _shown(value, meta["unit"])
     return out
+
+
+def shown(result: Any, *names: str) -> list[tuple[str, Any]]:
+    """``(key, value)`` of the named fields of a stage result as results.json shows them (the field's key, the value
+    in its display unit), read from the attributes in the order named; without names, every field's (its record).
+
+    >>> from valvetrain.design.valve import FlatContact
+    >>> shown(FlatContact(0.0125), "max_contact_offset")
+    [('max_contact_offset_mm', 12.5)]
+    """
+    if not names:
+        return list(record(result).items())
+    meta = {f.name: f.metadata for f in fields(result)}
+    return [(meta[n]["key"], _shown(getattr(result, n), meta[n]["unit"])) for n in names]
+
+
+def shown_value(result: Any, name: str) -> Any:
+    """The value of one field of a stage result as results.json shows it (:func:`shown`)."""
+    return shown(result, name)[0][1]
 
 
 _JSON_TYPES = {float: ["number", "null"], int: "integer", str: "string", bool: "boolean", dict: "object"}

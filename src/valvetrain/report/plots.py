@@ -3,6 +3,7 @@
 from matplotlib.figure import Figure
 import numpy as np
 
+from ..design.results import shown_value
 from ..units import MM, rad_to_deg, to_display
 from .i18n import TEXT
 from .names import value_text
@@ -127,7 +128,7 @@ def time_area_figure(valve, t):
     ax.plot(k, tab.curtain_area / MM**2, color="C0")
     ax.set_xlabel(t["crank_deg"])
     ax.set_ylabel(t["curtain"], color="C0")
-    lo, hi = valve.summary["flow"]["stroke_crank_deg"]
+    lo, hi = shown_value(valve.flow, "stroke")
     ax.axvspan(lo, hi, color="C2", alpha=0.1, label=t["stroke"])
     ax.legend(loc="upper left")
     ax.grid(alpha=0.3)
@@ -217,7 +218,7 @@ def crank_torque_figure(crank, t):
     for i, m in enumerate(crank.cylinder_torques, start=1):
         ax.plot(x, m, lw=0.8, alpha=0.7, label=f"{t['cylinder']} {i}")
     ax.plot(x, crank.total_torque, color="k", lw=1.8, label=t["total"])
-    ax.axhline(crank.summary["mean_torque_Nm"], color="C3", ls="--", lw=1.0, label=t["mean"])
+    ax.axhline(shown_value(crank.figures, "mean_torque"), color="C3", ls="--", lw=1.0, label=t["mean"])
     ax.set_xlabel(t["engine_deg"])
     ax.set_ylabel(t["torque"])
     ax.set_xticks(np.arange(0, x.max() + 1, 90))
