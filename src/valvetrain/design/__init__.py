@@ -12,7 +12,6 @@ rpm) are converted to SI for the physics functions.  Stages:
   the acceptances of the specification (``[[accepted]]``) applied.
 """
 
-from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, replace
 import difflib
 from functools import cached_property
@@ -141,7 +140,7 @@ class DesignResults:
         return out
 
 
-def run(spec, laws=None, progress=None):
+def run(spec, laws=None, progress=None) -> DesignResults:
     """Run the whole design of a validated specification.
 
     Parameters
@@ -237,7 +236,7 @@ def accept(found: list[Check], acceptances: list, valves: dict[str, ValveDesign]
                    for name, v in valves.items()}
 
 
-def engine_record(eng):
+def engine_record(eng) -> EngineRecord:
     """The engine's figures (SI view of [engine]): its data, the mean piston speed, swept volume and piston area."""
     swept = float(flow.swept_volume(eng.bore, eng.stroke))
     return EngineRecord(eng.name, eng.bore, eng.stroke, eng.rated_speed, eng.cylinders, eng.strokes,
@@ -258,7 +257,7 @@ STROKE_BORE_RANGE = (1.0 / 1.2, 2.0)
 slow-speed diesels (Heywood (1988), section 2.2)."""
 
 
-def engine_checks(spec):
+def engine_checks(spec) -> list[Check]:
     """Plausibility of the engine's keys: the stroke / bore ratio, the mean piston speed and the crank-rod ratio
     lambda, failures a factor of :data:`UNIT_SLIP_FACTOR` beyond their typical ranges (a unit slip, not an engine).
 
@@ -305,7 +304,7 @@ def _valve_view(name, valve, spec):
         raise SpecError([f"valves.{name}.cam.table_file: {exc}"]) from None
 
 
-def sweep_designs(spec, names=None, progress=None):
+def sweep_designs(spec, names=None, progress=None) -> dict[str, ValveDesign]:
     """The speed sweep alone: the named valves of a specification (default: those with a ``[dynamics]`` section, or
     every valve if none has one) designed with their section, or the default one where they have none.
 
@@ -347,7 +346,7 @@ def sweep_designs(spec, names=None, progress=None):
     return out
 
 
-def results_schema():
+def results_schema() -> dict[str, Any]:
     """JSON Schema (draft 2020-12) of results.json, generated from the stage results' field metadata.
 
     The law's own records (seed formulas, a measured table's analysis) and the strength checks are objects

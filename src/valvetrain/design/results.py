@@ -17,7 +17,7 @@ import numpy as np
 from ..units import to_display
 
 
-def quantity(key, unit="", label="", *, default=MISSING, flatten=False, omit_none=False):
+def quantity(key, unit="", label="", *, default=MISSING, flatten=False, omit_none=False) -> Any:
     """A result field shown in results.json as ``key`` in ``unit``.
 
     Parameters
@@ -114,7 +114,7 @@ def _type_schema(annotation):
     return {}
 
 
-def json_schema(cls):
+def json_schema(cls) -> dict[str, Any]:
     """JSON Schema (draft 2020-12) of the record of a result class: properties from the fields' metadata."""
     hints = typing.get_type_hints(cls)
     props, required = {}, []

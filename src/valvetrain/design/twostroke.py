@@ -88,7 +88,7 @@ def _skirt_opening(lower, piston_height, radius, lam, exact):
     return float(crank_angle_at(travel, radius, lam, exact=exact))
 
 
-def two_stroke_stage(ts, crank, eng):
+def two_stroke_stage(ts, crank, eng) -> TwoStrokeResults:
     """Run the [two_stroke] chapter from the SI views of [two_stroke], [crank] (or None) and [engine]; returns
     :class:`TwoStrokeResults`."""
     bore, stroke, rod, rated = crank_geometry(crank, eng) if crank is not None else \

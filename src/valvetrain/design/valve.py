@@ -85,7 +85,7 @@ side valves or overhead valves) is the combustion chamber's, ``[engine] chamber`
 (:data:`valvetrain.flow.THROAT_TO_BORE_RANGES`)."""
 
 
-def layout_check(quantity, value, layout, **kw):
+def layout_check(quantity, value, layout, **kw) -> Optional[Check]:
     """The check of ``quantity`` against the band of ``layout`` (:data:`LAYOUT_BANDS`), or None where the layout has
     no such band; the band's note, if any, becomes the check's note."""
     band = LAYOUT_BANDS[quantity].get(layout)
@@ -145,7 +145,7 @@ class StepRecord:
     on_ramp: bool = quantity("on_ramp", label="within a ramp: the clearance is being taken up, the valve at rest")
 
 
-def step_records(law, cam_speed):
+def step_records(law, cam_speed) -> tuple[StepRecord, ...]:
     """The acceleration steps of a law (:meth:`~valvetrain.laws.LiftLaw.acceleration_steps`) as tappet
     accelerations at the camshaft speed [rad/s], a tuple of :class:`StepRecord`."""
     w2 = cam_speed**2
@@ -207,7 +207,7 @@ class FlowResult:
     charge_velocity: float = quantity("mean_charge_velocity_m_s", "m/s", "v_vp, mean charge velocity (eq. 4.3)")
     fullness: float = quantity("fullness", label="fullness of the valve lift diagram (Shang Hanji (1988), eq. 2.3)")
     valve_lift: float = quantity("valve_lift_mm", "mm", "largest valve lift")
-    stroke: tuple = quantity("stroke_crank_deg", "crank deg", "the valve's own stroke, from and to")
+    stroke: tuple[float, float] = quantity("stroke_crank_deg", "crank deg", "the valve's own stroke, from and to")
 
 
 @dataclass(frozen=True)
@@ -280,7 +280,7 @@ class ClearanceResult:
         return float(self.gap[i]), float(self.crank[i])
 
 
-def clearance_check(kind, gap, angle, window=None):
+def clearance_check(kind, gap, angle, window=None) -> Check:
     """The check of a valve-to-piston gap [m] at a crank angle [rad] against :data:`PISTON_CLEARANCE_MIN`, over the
     open event or, with ``window`` (crank rad from the gas-exchange TDC), over the valve overlap."""
     where = "" if window is None else (f" over the overlap from {math.degrees(window[0]):.4g} to "
@@ -290,12 +290,12 @@ def clearance_check(kind, gap, angle, window=None):
                  note=f"smallest at {math.degrees(angle):.4g} crank deg from the gas-exchange TDC{where}")
 
 
-def wrap_crank(a):
+def wrap_crank(a) -> np.ndarray:
     """Crank angle wrapped into (-360, 360] deg (in rad)."""
     return np.where(a > 2 * np.pi, a - 4 * np.pi, np.where(a <= -2 * np.pi, a + 4 * np.pi, a))
 
 
-def law_stage(valve, engine, law=None):
+def law_stage(valve, engine, law=None) -> CamResult:
     """Build (or take) the lift law of a valve and find what the design needs of it.
 
     Parameters
@@ -349,7 +349,7 @@ def law_stage(valve, engine, law=None):
                      step_records(law, omega))
 
 
-def flow_stage(cam, valve, engine):
+def flow_stage(cam, valve, engine) -> FlowResult:
     """Flow sections, conditional velocities, time-area over the valve's stroke and opening, fullness.
 
     References
@@ -384,7 +384,7 @@ def _table_grid(law, step):
     return np.unique(np.concatenate([[law.start], k, [law.end]]))
 
 
-def profile_stage(cam, valve, output):
+def profile_stage(cam, valve, output) -> ProfileResult:
     """The lift table, the contour over a revolution, the profile's curvature extremes, contact and undercut.
 
     ``output`` is the SI view of ``[output]`` (table step, contour points).
@@ -447,7 +447,7 @@ def profile_stage(cam, valve, output):
                          None if straight else x_max, straight, contact, bool(undercut))
 
 
-def clearance_stage(cam, valve, engine):
+def clearance_stage(cam, valve, engine) -> Optional[ClearanceResult]:
     """The smallest valve-to-piston gap over the open event, or None without ``piston_gap_tdc_mm``.
 
     Raises
@@ -475,7 +475,7 @@ def clearance_stage(cam, valve, engine):
     return ClearanceResult(float(gap[i]), angle, wrap_crank(crank), gap)
 
 
-def overlap_clearance_checks(valves):
+def overlap_clearance_checks(valves) -> list[Check]:
     """The valve-to-piston gap of each valve over the overlap, from the first intake opening to the last exhaust
     closing (crank angles from the gas-exchange TDC), where the piston is nearest the open valves.
 
@@ -494,7 +494,7 @@ def overlap_clearance_checks(valves):
     return out
 
 
-def valve_checks(cam, flow_result, profile, valve, engine, timing):
+def valve_checks(cam, flow_result, profile, valve, engine, timing) -> list[Check]:
     """The recommended-range checks of the law, the flow, the timing and the profile (every check, passed or not).
 
     ``timing`` is the opening advance and closing lag [crank rad] of the main lift (None where not defined).  The
@@ -542,7 +542,7 @@ def valve_checks(cam, flow_result, profile, valve, engine, timing):
     return out
 
 
-def mass_checks(valve, mass, throat_area):
+def mass_checks(valve, mass, throat_area) -> list[Check]:
     """The specific mass of the drive m' = m_v / f_g [kg/m2] against the band of the valve's layout (Valve-train practical works (n.d.), work 5),
     an ``info`` check: only where the masses or m' are given (the default m' is this project's, not the source's,
     whose bands are 1.6-3.7 times the masses of the example's parts)."""
@@ -618,7 +618,7 @@ class ValveDesign:
                 f"{len(self.warnings)} of {len(self.checks)} checks fail)")
 
 
-def design_valve(name, valve, engine, gas, output, law=None, progress=None, cylinder=None):
+def design_valve(name, valve, engine, gas, output, law=None, progress=None, cylinder=None) -> ValveDesign:
     """All stages of one valve and its drive (masses, springs, strength).
 
     Parameters
@@ -682,7 +682,7 @@ def design_valve(name, valve, engine, gas, output, law=None, progress=None, cyli
     return with_hydraulic(design, valve, engine, gas, cylinder)
 
 
-def with_hydraulic(design, valve, engine, gas, cylinder=None):
+def with_hydraulic(design, valve, engine, gas, cylinder=None) -> ValveDesign:
     """The design with the hydraulic stage of the valve's ``[hydraulic]`` section (as it is without one).
 
     Parameters

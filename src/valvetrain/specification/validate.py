@@ -188,7 +188,7 @@ MAX_SPEC_CHARACTERS = 1_000_000
 indicator diagram belongs in a file of its own)."""
 
 
-def parse_spec(text, source="<string>", source_dir=None):
+def parse_spec(text, source="<string>", source_dir=None) -> Spec:
     """Parse and validate a specification: TOML text, or a document already parsed (a dict of its tables, as
     :func:`tomllib.loads` gives it); relative file names in it are read from ``source_dir``."""
     if isinstance(text, dict):
@@ -259,7 +259,7 @@ def spec_document(spec):
     return {**spec.model_dump(), "source_dir": spec.source_dir}
 
 
-def load_spec(path):
+def load_spec(path) -> Spec:
     """Read and validate a specification file."""
     try:
         text = Path(path).read_text(encoding="utf-8")
@@ -275,7 +275,7 @@ def example_text():
     return files("valvetrain").joinpath("data/example.toml").read_text(encoding="utf-8")
 
 
-def example_spec():
+def example_spec() -> Spec:
     """The built-in example, validated."""
     return parse_spec(example_text(), "built-in example")
 
