@@ -134,12 +134,14 @@ def _table(path):
 
 def fingerprint(folder):
     """The fingerprint of one example's outputs: results.json (:func:`_digest`), every CSV of tables/ and contour/
-    (:func:`_table`) and the SHA-256 of report.html (the package version left out)."""
+    (:func:`_table`) and the SHA-256 of report.html (the package version and the folder of the examples, which the
+    report names where a table file is read, left out: the same on every checkout)."""
     if (folder / "ERROR").exists():
         return {"ERROR": (folder / "ERROR").read_text(encoding="utf-8")}
     from valvetrain import __version__
 
     report = (folder / "report.html").read_text(encoding="utf-8").replace(f"valvetrain {__version__}", "valvetrain")
+    report = report.replace(str(EXAMPLES.resolve()), "examples")
     out = {"results.json": _digest(json.loads((folder / "results.json").read_text(encoding="utf-8"))),
            "report.html sha256": hashlib.sha256(report.encode()).hexdigest()}
     out["results.json"].pop("valvetrain_version")
