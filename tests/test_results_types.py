@@ -16,7 +16,7 @@ from valvetrain.specification import example_spec
 
 DESIGN_MODULES = ["valvetrain.design", "valvetrain.design.valve", "valvetrain.design.drive", "valvetrain.design.crank",
                   "valvetrain.design.twostroke", "valvetrain.design.dynamics", "valvetrain.design.grinding",
-                  "valvetrain.design.hydraulic", "valvetrain.design.results"]
+                  "valvetrain.design.hydraulic_actuation", "valvetrain.design.results"]
 
 
 def _defined(kind):
