@@ -32,7 +32,7 @@ Values and bounds are SI; ``unit`` names the unit they are shown in (see
 from dataclasses import dataclass, replace
 import math
 
-from .units import to_display
+from .units import to_display, without_noise
 
 SEVERITIES = ("info", "warning", "failure")
 """What a failed check means: ``info`` a remark, ``warning`` a value outside a recommended range,
@@ -163,10 +163,11 @@ class Check:
                 **({"accepted": True, "reason": self.reason} if self.accepted else {})}
 
     def as_dict(self):
-        """The full record, in :attr:`unit`: the warning record with the bounds, pass, accepted (and reason)."""
+        """The full record, in :attr:`unit`: the warning record with the bounds (without the noise of their
+        conversion, :func:`valvetrain.units.without_noise`), pass, accepted (and reason)."""
         return {**self.warning(),
-                "low": None if self.low is None else to_display(self.low, self.unit),
-                "high": None if self.high is None else to_display(self.high, self.unit),
+                "low": None if self.low is None else without_noise(to_display(self.low, self.unit)),
+                "high": None if self.high is None else without_noise(to_display(self.high, self.unit)),
                 "pass": self.passed, "accepted": self.accepted,
                 **({"note": self.note} if self.note else {})}
 

@@ -181,12 +181,14 @@ def run(file, out, force, lang, figures):
         if drawer is not None:
             drawer.stop()
     click.echo(f"wrote {out}/ (results.json, report.html, tables/, plots/, contour/)")
+    from .units import MM
+
     for name, v in results.valves.items():
-        if v.summary["cam"]["undercut"]:
-            click.echo(f"refused: valves.{name}: the cam profile is undercut (rho_min = {v.summary['cam']['rho_min_mm']:.4g}"
+        if v.profile.undercut:
+            click.echo(f"refused: valves.{name}: the cam profile is undercut (rho_min = {v.profile.rho_min / MM:.4g}"
                        " mm): no contour, DXF or manufacturing table was written for it")
-        if "measured" in v.summary["cam"]:
-            click.echo(f"note: valves.{name}: measured table fitted by the {v.summary['cam']['measured']['fit_reason']}")
+        if "measured" in v.records:
+            click.echo(f"note: valves.{name}: measured table fitted by the {v.records['measured']['fit_reason']}")
     _echo_checks(results)
 
 

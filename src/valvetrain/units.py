@@ -10,6 +10,7 @@ conversions take the number of strokes so that a two-stroke is handled too.
 """
 
 from functools import cache
+import math
 
 import numpy as np
 
@@ -86,6 +87,20 @@ def to_display(value, unit):
         return value / DISPLAY_UNITS[unit]
     except KeyError:
         raise ValueError(f"unit {unit!r}: allowed {sorted(DISPLAY_UNITS)}") from None
+
+
+def without_noise(value, digits=12):
+    """A value shown in a display unit without the float noise of its conversion: rounded to ``digits`` significant
+    digits where that moves it by four units in the last place at most (:func:`math.ulp`), kept otherwise.
+
+    A bound written as 60 deg in its source and kept in radians is shown as 60 again, not 59.99999999999999; a value
+    of more digits (8/3) is kept as it is.
+
+    >>> without_noise(to_display(60.0 * DEG, "deg")), without_noise(8.0 / 3.0)
+    (60.0, 2.6666666666666665)
+    """
+    rounded = float(f"{value:.{digits}g}")
+    return rounded if abs(rounded - value) <= 4.0 * math.ulp(value) else value
 
 
 UNIT_SUFFIXES = (

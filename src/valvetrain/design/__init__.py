@@ -14,11 +14,13 @@ rpm) are converted to SI for the physics functions.  Stages:
 
 from dataclasses import dataclass, replace
 import difflib
+from functools import cached_property
+from typing import Any, Optional
 
 import numpy as np
 
 from .. import flow
-from ..checks import SEVERITIES, apply_acceptances, check, failed, ranked, valve_of
+from ..checks import SEVERITIES, Check, apply_acceptances, check, failed, ranked, valve_of
 from ..crank.pressure import PressureFileError
 from ..files import TableFileError
 from ..specification import Spec, SpecError, crank_geometry, si, spec_document, validate
@@ -55,16 +57,16 @@ class EngineRecord:
     piston_area: float = quantity("piston_area_mm2", "mm2", "piston area F_p")
 
 
-@dataclass(repr=False)
+@dataclass(frozen=True, repr=False)
 class DesignResults:
     """Result of :func:`run`: the engine's derived figures, each valve's design, all warnings."""
 
-    spec: object
+    spec: Spec
     engine: EngineRecord
-    valves: dict
-    checks: list                  # every valvetrain.checks.Check of the design, passed or not
-    crank: CrankResults = None
-    two_stroke: TwoStrokeResults = None
+    valves: dict[str, ValveDesign]
+    checks: tuple[Check, ...]                  # every check of the design, passed or not
+    crank: Optional[CrankResults] = None
+    two_stroke: Optional[TwoStrokeResults] = None
 
     @property
     def warnings(self):
@@ -113,8 +115,14 @@ class DesignResults:
                 + ("<p>Accepted in the specification</p>" + table(("severity", "quantity", "value", "allowed",
                                                                    "reason"), accepted) if accepted else ""))
 
-    def to_dict(self):
-        """JSON-ready dictionary (engineering units, named in the keys)."""
+    def to_dict(self) -> dict[str, Any]:
+        """JSON-ready dictionary (engineering units, named in the keys): the projection of results.json, made once
+        (:attr:`projection`); read it, don't change it."""
+        return self.projection
+
+    @cached_property
+    def projection(self) -> dict[str, Any]:
+        """The results.json dictionary, made on first use and kept (the results are frozen)."""
         from .. import __version__
 
         out = {
@@ -132,7 +140,7 @@ class DesignResults:
         return out
 
 
-def run(spec, laws=None, progress=None):
+def run(spec, laws=None, progress=None) -> DesignResults:
     """Run the whole design of a validated specification.
 
     Parameters
@@ -197,12 +205,14 @@ def run(spec, laws=None, progress=None):
     for stage, tag in ((crank, "crank"), (ports, "two-stroke")):
         if stage is not None:
             found += [c.named(tag) for c in stage.checks]
-    found = accept(found, spec.accepted, valves)
-    return DesignResults(spec, engine_record(engine), valves, found, crank, ports)
+    found, valves = accept(found, spec.accepted, valves)
+    return DesignResults(spec, engine_record(engine), valves, tuple(found), crank, ports)
 
 
-def accept(found, acceptances, valves):
-    """The checks with the specification's acceptances applied (also to each valve's own list of checks).
+def accept(found: list[Check], acceptances: list, valves: dict[str, ValveDesign]
+           ) -> tuple[list[Check], dict[str, ValveDesign]]:
+    """The checks with the specification's acceptances applied, and the valves with them applied to each valve's
+    own checks.
 
     Raises
     ------
@@ -222,12 +232,11 @@ def accept(found, acceptances, valves):
                             + (f"; did you mean {' or '.join(repr(n) for n in near)}?" if near else
                                " (every check is listed in results.json, checks)"))
         raise SpecError(problems)
-    for v in valves.values():
-        v.checks = apply_acceptances(v.checks, acceptances, valves)[0]
-    return found
+    return found, {name: replace(v, checks=tuple(apply_acceptances(v.checks, acceptances, valves)[0]))
+                   for name, v in valves.items()}
 
 
-def engine_record(eng):
+def engine_record(eng) -> EngineRecord:
     """The engine's figures (SI view of [engine]): its data, the mean piston speed, swept volume and piston area."""
     swept = float(flow.swept_volume(eng.bore, eng.stroke))
     return EngineRecord(eng.name, eng.bore, eng.stroke, eng.rated_speed, eng.cylinders, eng.strokes,
@@ -248,7 +257,7 @@ STROKE_BORE_RANGE = (1.0 / 1.2, 2.0)
 slow-speed diesels (Heywood (1988), section 2.2)."""
 
 
-def engine_checks(spec):
+def engine_checks(spec) -> list[Check]:
     """Plausibility of the engine's keys: the stroke / bore ratio, the mean piston speed and the crank-rod ratio
     lambda, failures a factor of :data:`UNIT_SLIP_FACTOR` beyond their typical ranges (a unit slip, not an engine).
 
@@ -295,7 +304,7 @@ def _valve_view(name, valve, spec):
         raise SpecError([f"valves.{name}.cam.table_file: {exc}"]) from None
 
 
-def sweep_designs(spec, names=None, progress=None):
+def sweep_designs(spec, names=None, progress=None) -> dict[str, ValveDesign]:
     """The speed sweep alone: the named valves of a specification (default: those with a ``[dynamics]`` section, or
     every valve if none has one) designed with their section, or the default one where they have none.
 
@@ -337,7 +346,7 @@ def sweep_designs(spec, names=None, progress=None):
     return out
 
 
-def results_schema():
+def results_schema() -> dict[str, Any]:
     """JSON Schema (draft 2020-12) of results.json, generated from the stage results' field metadata.
 
     The law's own records (seed formulas, a measured table's analysis) and the strength checks are objects

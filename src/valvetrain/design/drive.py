@@ -10,12 +10,12 @@ results.json.
 """
 
 from dataclasses import dataclass, field, replace
-from typing import Optional, Union
+from typing import Any, Optional, Union
 
 import numpy as np
 
 from .. import flow, masses, springs, strength
-from ..checks import check
+from ..checks import Check, check
 from ..layouts import chain, layout, train_mass
 from ..report.wording import diagnosis_record, diagnosis_text
 from ..spring_materials import grade
@@ -100,10 +100,10 @@ class SpringRecord:
     guide_sleeve_needed: bool = quantity("guide_sleeve_needed", label="free length / D > 2.5")
     passes_all_checks: bool = quantity("passes_all_checks", label="every check of the spring passes")
     binding_check: str = quantity("binding_check", label="the check with the smallest margin")
-    margins: dict = quantity("margins", label="relative margin of each check (>= 0 passes)")
+    margins: dict[str, float] = quantity("margins", label="relative margin of each check (>= 0 passes)")
 
 
-def spring_record(s):
+def spring_record(s) -> SpringRecord:
     """The :class:`SpringRecord` of a :class:`valvetrain.springs.SpringDesign`."""
     c, n = s.characteristic, s.lengths
     return SpringRecord(
@@ -123,7 +123,7 @@ class SpringResult:
     """
 
     count: int = quantity("count", label="springs: 1 or a nested pair")
-    material: Union[str, tuple] = quantity("material", label="the grade (or grades) searched")
+    material: Union[str, tuple[str, ...]] = quantity("material", label="the grade (or grades) searched")
     preload: float = quantity("preload_N", "N", "preload of the chosen spring(s)")
     max_force: float = quantity("max_force_N", "N", "force at full lift of the chosen spring(s)")
     rate: float = quantity("rate_N_per_mm", "N/mm", "rate of the chosen spring(s)")
@@ -141,7 +141,7 @@ class SpringResult:
     spring_reserve: float = quantity("spring_reserve", label="spring reserve K_z")
     candidates_passing: int = quantity("candidates_passing", label="candidates that pass every check")
     candidates_tried: int = quantity("candidates_tried", label="candidates tried")
-    diagnosis: Optional[dict] = quantity("diagnosis", label="why no spring passes and what would help",
+    diagnosis: Optional[dict[str, Any]] = quantity("diagnosis", label="why no spring passes and what would help",
                                          omit_none=True)
     design: SpringRecord = quantity("design", flatten=True)
     outer: Optional[SpringRecord] = quantity("outer", label="outer spring of a pair", omit_none=True, default=None)
@@ -189,8 +189,8 @@ class StrengthResult:
     side_force_speed: Optional[float] = quantity("roller_side_force_speed_rpm", "rpm",
                                                  "engine speed of the largest side force", omit_none=True)
     per_speed: StrengthPerSpeed = quantity("per_speed", label="the largest cam force and contact stress at each speed")
-    checks: tuple = ()             # the strength checks (valvetrain.checks.Check, quantity with underscores)
-    not_checked: tuple = ()        # the checks whose parts are not given, each with the keys missing
+    checks: tuple[Check, ...] = ()     # the strength checks (quantity with underscores)
+    not_checked: tuple[str, ...] = ()  # the checks whose parts are not given, each with the keys missing
     rated_speed: float = 0.0       # the engine's rated speed [rad/s] (for the plot)
 
 
@@ -221,15 +221,15 @@ class DriveResult:
     masses: MassResult
     spring: SpringResult
     strength: Optional[StrengthResult]             # set by :func:`strength_stage` (None from drive_stage alone)
-    checks: tuple                  # every valvetrain.checks.Check of the drive, passed or not
+    checks: tuple[Check, ...]      # every check of the drive, passed or not
     lift: np.ndarray = field(repr=False)             # valve lift along the open event [m]
     inertia_force: np.ndarray = field(repr=False)    # m_v |j_v| where j_v < 0 [N]
     required_force: np.ndarray = field(repr=False)   # K_z m_v |j_v| [N]
-    lines: dict = field(repr=False)                  # name -> springs.Characteristic (required, chosen, outer, inner)
+    lines: dict[str, springs.Characteristic] = field(repr=False)   # required, chosen, outer, inner
     diagnosis: Optional[springs.Diagnosis] = None   # why no spring passes, where none does
 
 
-def drive_record(drive):
+def drive_record(drive) -> dict[str, Any]:
     """The ``masses``, ``spring`` and ``strength`` records of results.json (engineering units)."""
     st = drive.strength
     return {"masses": record(drive.masses), "spring": record(drive.spring),
@@ -237,7 +237,7 @@ def drive_record(drive):
                          "not_checked": list(st.not_checked)}}
 
 
-def spring_options(sp):
+def spring_options(sp) -> springs.SpringOptions:
     """The spring search of a spring section's SI view (grades, overrides, ranges, arrangement); the wire series
     is a catalogue grid in mm (:func:`valvetrain.springs.wire_series`)."""
     names = (sp.material,) if isinstance(sp.material, str) else sp.material
@@ -262,7 +262,7 @@ def _spring_checks(tag, s, note=""):
                        "free_length", "coil_gap_at_full_lift")]
 
 
-def drive_stage(valve, gas, cam):
+def drive_stage(valve, gas, cam) -> DriveResult:
     """Stage 6: reduced masses, spring characteristic and design (the strength is :func:`strength_stage`).
 
     Parameters
@@ -370,7 +370,7 @@ def drive_stage(valve, gas, cam):
     return DriveResult(mass_result, spring_result, None, tuple(found), y, inertia, required, lines, diagnosis)
 
 
-def strength_speed_range(engine, dynamics=None):
+def strength_speed_range(engine, dynamics=None) -> tuple[float, float, str]:
     """The engine speeds the strength is checked over [rad/s]: the lowest, the highest and where the lowest comes from.
 
     The highest is the over-speed, ``[engine] over_speed_ratio`` x the rated speed.  The lowest is ``[engine]
@@ -386,7 +386,7 @@ def strength_speed_range(engine, dynamics=None):
     return min(low, engine.rated_speed), engine.over_speed_ratio * engine.rated_speed, source
 
 
-def quasi_static_loads(law, rocker_ratio, theta, spring_force, mass, speeds, to_cam):
+def quasi_static_loads(law, rocker_ratio, theta, spring_force, mass, speeds, to_cam) -> LoadMap:
     """The quasi-static cam force over engine speeds x camshaft angles, :class:`LoadMap`.
 
     Parameters
@@ -420,7 +420,7 @@ def quasi_static_loads(law, rocker_ratio, theta, spring_force, mass, speeds, to_
     return LoadMap("quasi-static", np.asarray(speeds, dtype=float), theta, force)
 
 
-def dynamic_loads(dynamics, low, high):
+def dynamic_loads(dynamics, low, high) -> Optional[LoadMap]:
     """The dynamics stage's simulated cam force at its speeds within [low, high] (and the rated speed), a
     :class:`LoadMap`, or None where none of its speeds lies in the range."""
     speeds = np.append(np.asarray(dynamics.per_speed.speed, dtype=float), dynamics.at_rated_speed.speed)
@@ -432,7 +432,7 @@ def dynamic_loads(dynamics, low, high):
     return LoadMap("dynamic", speeds[keep][order], dynamics.sweep.theta, force[keep][order])
 
 
-def load_maps(valve, engine, cam, theta, spring_force, mass, dynamics=None):
+def load_maps(valve, engine, cam, theta, spring_force, mass, dynamics=None) -> tuple[list[LoadMap], tuple[float, float, str]]:
     """The cam force over the strength speed range, a list of :class:`LoadMap`, and the range (low, high, source).
 
     With the dynamics stage, its simulated force at its speeds in the range and the quasi-static force at the
@@ -462,7 +462,7 @@ def _worst(maps, values):
     return best
 
 
-def strength_stage(valve, gas, engine, cam, drive, dynamics=None):
+def strength_stage(valve, gas, engine, cam, drive, dynamics=None) -> tuple[StrengthResult, list[Check]]:
     """Work 7 over the speed range: every strength check the layout and the given dimensions allow, at its worst.
 
     Parameters

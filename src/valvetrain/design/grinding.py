@@ -15,7 +15,7 @@ from typing import Optional
 import numpy as np
 
 from .. import cam_grinding
-from ..checks import check
+from ..checks import Check, check
 from ..units import MM
 from .results import quantity
 
@@ -102,7 +102,7 @@ class GrindingResult:
     wear: Optional[WearTable] = field(default=None, repr=False)
 
 
-def grinding_stage(grinding, cam, name, export_step):
+def grinding_stage(grinding, cam, name, export_step) -> tuple[GrindingResult, list[Check]]:
     """The master cam and the wear error of one valve's cam.
 
     Parameters
@@ -204,7 +204,7 @@ WEAR_COLUMNS = [
 """Columns of ``tables/NAME_wear_error.csv``."""
 
 
-def wear_columns(g):
+def wear_columns(g) -> dict[str, np.ndarray]:
     """The wear-error table in the units of :data:`WEAR_COLUMNS`."""
     w = g.wear
     return {"cam_deg": np.degrees(w.cam_angle), "lift_mm": w.lift / MM, "worn_lift_mm": w.worn_lift / MM,
@@ -212,7 +212,7 @@ def wear_columns(g):
             "phase_shift_deg": np.degrees(w.phase_shift)}
 
 
-def master_polar_columns(g):
+def master_polar_columns(g) -> dict[str, np.ndarray]:
     """The master for manufacture against the spindle angle: wheel-centre radius, master follower lift, master
     polar radius and its flat-follower (surface grinder) lift [deg, mm]."""
     m = g.master
@@ -221,7 +221,7 @@ def master_polar_columns(g):
             "master_flat_lift_mm": m.flat_lift / MM}
 
 
-def master_cartesian_columns(g):
+def master_cartesian_columns(g) -> dict[str, np.ndarray]:
     """The master contour points [deg, mm] (the cam angle each point grinds)."""
     x, y = g.master_contour / MM
     return {"cam_deg": np.degrees(g.master_angle), "x_mm": x, "y_mm": y}

@@ -18,11 +18,11 @@ speed of the sweep up to the over-speed, as is a fill (supply) pressure that lif
 
 from dataclasses import dataclass, field, replace
 import math
-from typing import Optional
+from typing import Any, Optional
 
 import numpy as np
 
-from ..checks import check
+from ..checks import Check, check
 from ..crank.pressure import on_grid
 from ..dynamics.sweep import BOUNCE_TOLERANCE
 from ..flow import circle_area
@@ -184,7 +184,7 @@ def _drive(h):
         h.initial_pressure, h.back_pressure)
 
 
-def lift_off_pressure(drive, gas_force=0.0):
+def lift_off_pressure(drive, gas_force=0.0) -> float:
     """Absolute actuator pressure that lifts the valve off its seat [Pa].
 
     Parameters
@@ -204,14 +204,14 @@ def lift_off_pressure(drive, gas_force=0.0):
     return drive.back_pressure + (drive.valve.preload + gas_force) / drive.actuator.piston_area
 
 
-def cycle_angle(nose, cam_angle, strokes):
+def cycle_angle(nose, cam_angle, strokes) -> np.ndarray:
     """Cycle crank angle [rad from the gas-exchange TDC, 0...pi strokes] of camshaft angles [rad from the nose], the
     nose at the crank angle ``nose`` [rad]: crank = nose + camshaft angle / (camshaft revolutions per crank
     revolution), twice the camshaft angle for a four-stroke."""
     return np.mod(nose + np.asarray(cam_angle) / cam_per_crank(strokes), math.pi * strokes)
 
 
-def head_load(valve, gas):
+def head_load(valve, gas) -> tuple[float, float]:
     """The diameter the cylinder pressure acts on [m] (``parts.head_diameter_mm``, else the throat's, which is
     smaller) and the absolute pressure behind the valve head [Pa] (``[gas]``: the exhaust back pressure of an exhaust
     valve, the intake port pressure of an intake valve)."""
@@ -220,7 +220,7 @@ def head_load(valve, gas):
     return (valve.throat_diameter if head is None else head), port
 
 
-def speed_plan(hydraulic, engine):
+def speed_plan(hydraulic, engine) -> tuple[float, np.ndarray, list[str]]:
     """The engine speeds of the stage [rad/s]: (simulated speed, swept speeds, notes on the defaults taken)."""
     rpm = rpm_to_rad_s(1.0)
     notes = []
@@ -237,7 +237,7 @@ def speed_plan(hydraulic, engine):
     return speed, np.linspace(low, high, hydraulic.speeds), notes
 
 
-def hydraulic_stage(valve, law, engine, gas, name, nose, cylinder=None):
+def hydraulic_stage(valve, law, engine, gas, name, nose, cylinder=None) -> tuple[HydraulicResult, list[Check]]:
     """One camshaft revolution of one valve's hydraulic drive, and one at each speed of a sweep.
 
     Parameters
@@ -397,7 +397,7 @@ TABLE_COLUMNS = [
 """Columns of ``tables/NAME_hydraulic.csv``."""
 
 
-def table_columns(result, step=0.5 * DEG):
+def table_columns(result, step=0.5 * DEG) -> dict[str, np.ndarray]:
     """The hydraulic table in the units of :data:`TABLE_COLUMNS`: every k-th time step of the simulation, k the
     whole number of steps nearest to ``step`` [rad] of camshaft angle (at least 1); a cavitation between two rows
     is shown on the next row."""
@@ -429,7 +429,7 @@ SWEEP_COLUMNS = [
 """Columns of ``tables/NAME_hydraulic_sweep.csv``."""
 
 
-def sweep_columns(result):
+def sweep_columns(result) -> dict[str, Any]:
     """The per-speed table of a :class:`HydraulicResult` in the units of :data:`SWEEP_COLUMNS` (None: an empty
     cell)."""
     rec = record(result.per_speed)

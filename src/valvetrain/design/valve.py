@@ -8,13 +8,16 @@ caller's own.  Crank angles are measured from the gas-exchange TDC (the TDC that
 intake stroke) in (-360, 360]; camshaft angles from the cam nose.
 """
 
+from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
+from functools import cached_property
 import math
+from typing import Any, Optional, Union
 
 import numpy as np
 
 from .. import flow, geometry
-from ..checks import check, failed, ranked
+from ..checks import Check, check, failed, ranked
 from ..crank.kinematics import displacement
 from ..followers import follower_of
 from ..laws import LiftLaw
@@ -24,10 +27,10 @@ from ..numerics import extremum
 from ..specification import SpecError
 from ..springs import NoSpringFits
 from ..units import DEG, MM
-from .drive import drive_record, drive_stage, strength_stage
-from .dynamics import dynamics_stage
-from .grinding import grinding_stage
-from .hydraulic_actuation import hydraulic_stage
+from .drive import DriveResult, drive_record, drive_stage, strength_stage
+from .dynamics import DynamicsResult, dynamics_stage
+from .grinding import GrindingResult, grinding_stage
+from .hydraulic_actuation import HydraulicResult, hydraulic_stage
 from .results import quantity, record
 
 ACCELERATION_LIMITS = (3500.0, -1500.0)
@@ -78,7 +81,7 @@ side valves or overhead valves) is the combustion chamber's, ``[engine] chamber`
 (:data:`valvetrain.flow.THROAT_TO_BORE_RANGES`)."""
 
 
-def layout_check(quantity, value, layout, **kw):
+def layout_check(quantity, value, layout, **kw) -> Optional[Check]:
     """The check of ``quantity`` against the band of ``layout`` (:data:`LAYOUT_BANDS`), or None where the layout has
     no such band; the band's note, if any, becomes the check's note."""
     band = LAYOUT_BANDS[quantity].get(layout)
@@ -138,7 +141,7 @@ class StepRecord:
     on_ramp: bool = quantity("on_ramp", label="within a ramp: the clearance is being taken up, the valve at rest")
 
 
-def step_records(law, cam_speed):
+def step_records(law, cam_speed) -> tuple[StepRecord, ...]:
     """The acceleration steps of a law (:meth:`~valvetrain.laws.LiftLaw.acceleration_steps`) as tappet
     accelerations at the camshaft speed [rad/s], a tuple of :class:`StepRecord`."""
     w2 = cam_speed**2
@@ -154,7 +157,7 @@ class CamResult:
     law: LiftLaw = field(repr=False)
     name: str = quantity("law", label="lift law")
     source: str = quantity("source", label="source of the law's formulas")
-    coefficients: dict = quantity("coefficients", label="the law's coefficients in its source's units")
+    coefficients: dict[str, Any] = quantity("coefficients", label="the law's coefficients in its source's units")
     extremes: Extremes = field(repr=False)
     max_velocity: float = quantity("max_velocity_m_s", "m/s", "largest tappet velocity")
     max_acceleration: float = quantity("max_acceleration_m_s2", "m/s2", "largest tappet acceleration")
@@ -205,7 +208,7 @@ class FlowResult:
     charge_velocity: float = quantity("mean_charge_velocity_m_s", "m/s", "v_vp, mean charge velocity (eq. 4.3)")
     fullness: float = quantity("fullness", label="fullness of the valve lift diagram (Shang Hanji (1988), eq. 2.3)")
     valve_lift: float = quantity("valve_lift_mm", "mm", "largest valve lift")
-    stroke: tuple = quantity("stroke_crank_deg", "crank deg", "the valve's own stroke, from and to")
+    stroke: tuple[float, float] = quantity("stroke_crank_deg", "crank deg", "the valve's own stroke, from and to")
 
 
 @dataclass(frozen=True)
@@ -256,7 +259,7 @@ class ProfileResult:
     rho_min_angle: float = quantity("rho_min_cam_deg", "cam deg", "where the radius is smallest")
     rho_max_angle: float = quantity("rho_max_cam_deg", "cam deg", "where the radius is largest")
     straight_flanks: bool = quantity("straight_flanks", label="the profile has straight flanks")
-    contact: object = quantity("contact", flatten=True)
+    contact: Union[FlatContact, RollerContact] = quantity("contact", flatten=True)
     undercut: bool = quantity("undercut", label="the profile is undercut (cannot be made)")
 
 
@@ -278,7 +281,7 @@ class ClearanceResult:
         return float(self.gap[i]), float(self.crank[i])
 
 
-def clearance_check(kind, gap, angle, window=None):
+def clearance_check(kind, gap, angle, window=None) -> Check:
     """The check of a valve-to-piston gap [m] at a crank angle [rad] against :data:`PISTON_CLEARANCE_MIN`, over the
     open event or, with ``window`` (crank rad from the gas-exchange TDC), over the valve overlap."""
     where = "" if window is None else (f" over the overlap from {math.degrees(window[0]):.4g} to "
@@ -288,12 +291,12 @@ def clearance_check(kind, gap, angle, window=None):
                  note=f"smallest at {math.degrees(angle):.4g} crank deg from the gas-exchange TDC{where}")
 
 
-def wrap_crank(a):
+def wrap_crank(a) -> np.ndarray:
     """Crank angle wrapped into (-360, 360] deg (in rad)."""
     return np.where(a > 2 * np.pi, a - 4 * np.pi, np.where(a <= -2 * np.pi, a + 4 * np.pi, a))
 
 
-def law_stage(valve, engine, law=None):
+def law_stage(valve, engine, law=None) -> CamResult:
     """Build (or take) the lift law of a valve and find what the design needs of it.
 
     Parameters
@@ -347,7 +350,7 @@ def law_stage(valve, engine, law=None):
                      step_records(law, omega))
 
 
-def flow_stage(cam, valve, engine):
+def flow_stage(cam, valve, engine) -> FlowResult:
     """Flow sections, conditional velocities, time-area over the valve's stroke and opening, fullness.
 
     References
@@ -382,7 +385,7 @@ def _table_grid(law, step):
     return np.unique(np.concatenate([[law.start], k, [law.end]]))
 
 
-def profile_stage(cam, valve, output):
+def profile_stage(cam, valve, output) -> ProfileResult:
     """The lift table, the contour over a revolution, the profile's curvature extremes, contact and undercut.
 
     ``output`` is the SI view of ``[output]`` (table step, contour points).
@@ -442,7 +445,7 @@ def profile_stage(cam, valve, output):
                          None if straight else x_max, straight, contact, follower.undercut(rho_min))
 
 
-def clearance_stage(cam, valve, engine):
+def clearance_stage(cam, valve, engine) -> Optional[ClearanceResult]:
     """The smallest valve-to-piston gap over the open event, or None without ``piston_gap_tdc_mm``.
 
     Raises
@@ -470,7 +473,7 @@ def clearance_stage(cam, valve, engine):
     return ClearanceResult(float(gap[i]), angle, wrap_crank(crank), gap)
 
 
-def overlap_clearance_checks(valves):
+def overlap_clearance_checks(valves) -> list[Check]:
     """The valve-to-piston gap of each valve over the overlap, from the first intake opening to the last exhaust
     closing (crank angles from the gas-exchange TDC), where the piston is nearest the open valves.
 
@@ -489,7 +492,7 @@ def overlap_clearance_checks(valves):
     return out
 
 
-def valve_checks(cam, flow_result, profile, valve, engine, timing):
+def valve_checks(cam, flow_result, profile, valve, engine, timing) -> list[Check]:
     """The recommended-range checks of the law, the flow, the timing and the profile (every check, passed or not).
 
     ``timing`` is the opening advance and closing lag [crank rad] of the main lift (None where not defined).  The
@@ -535,7 +538,7 @@ def valve_checks(cam, flow_result, profile, valve, engine, timing):
     return out
 
 
-def mass_checks(valve, mass, throat_area):
+def mass_checks(valve, mass, throat_area) -> list[Check]:
     """The specific mass of the drive m' = m_v / f_g [kg/m2] against the band of the valve's layout (Valve-train practical works (n.d.), work 5),
     an ``info`` check: only where the masses or m' are given (the default m' is this project's, not the source's,
     whose bands are 1.6-3.7 times the masses of the example's parts)."""
@@ -547,7 +550,7 @@ def mass_checks(valve, mass, throat_area):
     return [] if c is None else [c]
 
 
-@dataclass
+@dataclass(frozen=True, repr=False)
 class ValveDesign:
     """Everything computed for one valve: the stage results (SI), the law's own records and every check."""
 
@@ -557,13 +560,13 @@ class ValveDesign:
     cam: CamResult
     flow: FlowResult
     profile: ProfileResult
-    clearance: ClearanceResult
-    records: dict                  # the law's own results (seed formulas, a measured table's analysis)
-    drive: object                  # DriveResult: masses, spring curves, strength
-    checks: list = field(default_factory=list)   # every valvetrain.checks.Check of the valve, passed or not
-    dynamics: object = None        # DynamicsResult when the valve has a [dynamics] section
-    grinding: object = None        # GrindingResult when the valve has a [grinding] section
-    hydraulic: object = None       # HydraulicResult when the valve has a [hydraulic] section
+    clearance: Optional[ClearanceResult]
+    records: Mapping[str, Any]     # the law's own results (seed formulas, a measured table's analysis), as shown
+    drive: DriveResult             # masses, spring curves, strength
+    checks: tuple[Check, ...] = ()                  # every check of the valve, passed or not
+    dynamics: Optional[DynamicsResult] = None       # with a [dynamics] section
+    grinding: Optional[GrindingResult] = None       # with a [grinding] section
+    hydraulic: Optional[HydraulicResult] = None     # with a [hydraulic] section
 
     @property
     def warnings(self):
@@ -588,9 +591,10 @@ class ValveDesign:
     contour = property(lambda self: self.profile.contour)
     contour_angle = property(lambda self: self.profile.contour_angle)
 
-    @property
-    def summary(self):
-        """The valve's record in results.json (engineering units, named in the keys)."""
+    @cached_property
+    def summary(self) -> dict[str, Any]:
+        """The valve's record in results.json (engineering units, named in the keys), made once: read it, don't
+        change it."""
         out = {"kind": self.kind, "count": self.count, "rocker_ratio": self.rocker_ratio,
                "cam": {**record(self.cam), **record(self.profile), **self.records}, "flow": record(self.flow)}
         if self.clearance is not None:
@@ -611,7 +615,7 @@ class ValveDesign:
                 f"{len(self.warnings)} of {len(self.checks)} checks fail)")
 
 
-def design_valve(name, valve, engine, gas, output, law=None, progress=None, cylinder=None):
+def design_valve(name, valve, engine, gas, output, law=None, progress=None, cylinder=None) -> ValveDesign:
     """All stages of one valve and its drive (masses, springs, strength).
 
     Parameters
@@ -671,11 +675,11 @@ def design_valve(name, valve, engine, gas, output, law=None, progress=None, cyli
             raise SpecError([f"{at}.grinding.{exc}"]) from None
         found += grinding_found
     design = ValveDesign(name, valve.kind, valve.count, cam, flow_result, profile, clearance, records, drive,
-                         [c.named(name) for c in found], dynamics, grinding)
+                         tuple(c.named(name) for c in found), dynamics, grinding)
     return with_hydraulic(design, valve, engine, gas, cylinder)
 
 
-def with_hydraulic(design, valve, engine, gas, cylinder=None):
+def with_hydraulic(design, valve, engine, gas, cylinder=None) -> ValveDesign:
     """The design with the hydraulic stage of the valve's ``[hydraulic]`` section (as it is without one).
 
     Parameters
@@ -696,7 +700,7 @@ def with_hydraulic(design, valve, engine, gas, cylinder=None):
         hydraulic, found = hydraulic_stage(valve, design.cam.law, engine, gas, design.name, design.cam.nose, cylinder)
     except ValueError as exc:
         raise SpecError([f"valves.{design.name}.hydraulic.{exc}"]) from None
-    return replace(design, checks=design.checks + [c.named(design.name) for c in found], hydraulic=hydraulic)
+    return replace(design, checks=design.checks + tuple(c.named(design.name) for c in found), hydraulic=hydraulic)
 
 
 __all__ = ["CamResult", "ClearanceResult", "FlowResult", "LiftTable", "ProfileResult", "StepRecord", "ValveDesign",
