@@ -17,6 +17,7 @@ from ..design.hydraulic import SOURCES as HYDRAULIC_SOURCES
 from ..design.results import record
 from ..tables import lift_table_columns
 from ..bibliography import WORKS, cited_in
+from ..locale import check_text
 from ..units import to_display
 from .i18n import SYMBOLS, TEXT
 from .names import has_name, label, link_names, quantity_text, translate, unevaluated_text, unit_text, value_text
@@ -103,7 +104,7 @@ def diagnosis_text(diagnosis, lang):
     if lang == "en":
         return diagnosis["text"]
     t = TEXT[lang]
-    words = [t["diag_conflict"].format(spring=t.get("line_" + x["spring"], ""), quantity=quantity_text(x["quantity"], lang),
+    words = [t["diag_conflict"].format(spring=t.get("line_" + x["spring"], ""), quantity=check_text(f"spring.{x['check']}", {}, lang),
                                        value=x["value"], limit=x["limit"], unit=unit_text(x["unit"], lang),
                                        shortfall=x["shortfall"]) for x in diagnosis.get("conflicts", [])]
     text = [t["diag_head"] + "; ".join(words) + "."]
@@ -113,9 +114,9 @@ def diagnosis_text(diagnosis, lang):
     return " ".join(text)
 
 
-def _quantity(quantity, lang, parts):
-    """A check quantity in ``lang``, the name of its part (a valve, a port) marked as a name."""
-    text = quantity_text(quantity, lang, parts)
+def _quantity(check, lang, parts):
+    """A check's quantity in ``lang``, the name of its part (a valve, a port) marked as a name."""
+    text = quantity_text(check, lang)
     head, sep, rest = text.partition(": ")
     if sep and head in parts:
         return Markup('<span class="name">{}</span>: {}').format(head, rest)
@@ -141,10 +142,17 @@ def symbol_legend(lang):
 INPUT_SYMBOLS = ("i", "dg", "phi_seat", "hv", "h0", "ik", "r0", "w1", "Phi123", "Kz")
 """Symbols of the valve's input table."""
 
-WARNING_SYMBOLS = {"V1": r"V' ", "V2": r"V'' ", "V3": r"V''' ", "vvp": r"v_vp", "aT": r"tappet acceleration",
-                   "dg": r"throat diameter", "hv": r"valve lift", "h0": r"h0", "ik": r"rocker ratio", "r0": r"r0",
-                   "rho": r"rho_min", "Kz": r"K_z", "Phi123": r"Phi", "w1": r"ramp end velocity", "lambda": r"lambda"}
-"""Symbols that a check quantity may use (a pattern of the English quantity)."""
+WARNING_SYMBOLS = {
+    "V1": ("flow.throat_velocity",), "V2": ("flow.curtain_velocity",), "V3": ("flow.time_area_velocity",),
+    "vvp": ("flow.charge_velocity",), "aT": ("tappet_acceleration.max", "tappet_acceleration.min"),
+    "dg": ("flow.throat_to_bore", "flow.equivalent_throat_to_bore", "flow.lift_to_throat"),
+    "hv": ("flow.lift_to_throat", "cam.base_radius_to_lift", "hydraulic.max_lift", "hydraulic.residual_lift"),
+    "h0": ("valve.clearance",), "ik": ("drive.rocker_ratio",), "r0": ("cam.base_radius_to_lift",),
+    "rho": ("profile.undercut_flat", "profile.rho_min"), "Kz": ("spring.reserve",),
+    "Phi123": ("law.kurz.phi2_to_phi3", "law.kurz.negative_to_positive"), "w1": ("ramp.end_velocity",),
+    "lambda": ("engine.rod_ratio", "crank.rod_ratio"),
+}
+"""Symbols of the legend that the checks of these codes use."""
 
 
 def _coefficient_symbols(coefficients):
@@ -301,7 +309,7 @@ def render_report(results, plots, lang="en", folder=None):
     env.globals["figure"] = lambda name, alt: _figure(image, name, alt, TEXT[lang])
     spec = results.spec.model_dump()
     parts = list(results.valves) + (list(results.two_stroke.summary["ports"]) if results.two_stroke is not None else [])
-    env.filters["quantity"] = lambda q: _quantity(q, lang, parts)
+    env.filters["quantity"] = lambda c: _quantity(c, lang, parts)
     env.filters["diagnosis"] = lambda d: diagnosis_text(d, lang)
     valves = []
     for name, v in results.valves.items():
@@ -342,8 +350,8 @@ def render_report(results, plots, lang="en", folder=None):
     if results.two_stroke is not None:
         ports = {"inputs": [(k, v) for k, v in _flatten(spec["two_stroke"]) if not k.startswith("ports.")],
                  "plots": plots.get("two_stroke", {}), "ports": results.two_stroke.summary["ports"]}
-    warning_symbols = [key for key, pattern in WARNING_SYMBOLS.items()
-                       if any(re.search(pattern, w.quantity) for w in (*results.warnings, *results.accepted))]
+    warning_symbols = [key for key, codes in WARNING_SYMBOLS.items()
+                       if any(w.code in codes for w in (*results.warnings, *results.accepted))]
     context = dict(
         t=TEXT[lang], warning_symbols=warning_symbols, lang=lang, version=__version__, engine=record(results.engine),
         engine_inputs=_flatten(spec["engine"]), valves=valves, warnings=results.warnings, accepted=results.accepted,

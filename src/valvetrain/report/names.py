@@ -17,6 +17,7 @@ Symbols: one symbol for one quantity throughout the report and the plots: ``h`` 
 import re
 
 from ..checks import UNEVALUATED
+from ..locale import catalogue, check_text, record_text, spring_text
 
 UNITS = {
     "": ("", ""), "mm": ("mm", "мм"), "mm2": ("mm²", "мм²"), "mm2 s": ("mm²·s", "мм²·с"), "m": ("m", "м"),
@@ -386,97 +387,6 @@ SEGMENTS = {
 }
 """Names of the lift-law segments (``"Phi1 opening"``) without their side."""
 
-QUANTITIES = {
-    "grinding wheel radius / concave radius": ("grinding wheel radius / concave radius",
-                                               "радиус шлифовального круга / вогнутый радиус профиля"),
-    "spring reserve against inertia": ("spring reserve against inertia", "коэффициент запаса пружины по силам инерции"),
-    "Hertz contact stress": ("Hertz contact stress", "контактное напряжение по Герцу"),
-    "valve seating velocity": ("valve seating velocity", "скорость посадки клапана"),
-    "power-polynomial exponent n": ("power-polynomial exponent n", "показатель степени n степенно-полиномиального кулачка"),
-    "power-polynomial exponent m": ("power-polynomial exponent m", "показатель степени m степенно-полиномиального кулачка"),
-    "power-polynomial exponent p": ("power-polynomial exponent p", "показатель степени p степенно-полиномиального кулачка"),
-    "power-polynomial exponent q": ("power-polynomial exponent q", "показатель степени q степенно-полиномиального кулачка"),
-    "power-polynomial exponent r": ("power-polynomial exponent r", "показатель степени r степенно-полиномиального кулачка"),
-    "power-polynomial exponent s": ("power-polynomial exponent s", "показатель степени s степенно-полиномиального кулачка"),
-    "power-polynomial exponent t": ("power-polynomial exponent t", "показатель степени t степенно-полиномиального кулачка"),
-    "power-polynomial exponent u": ("power-polynomial exponent u", "показатель степени u степенно-полиномиального кулачка"),
-    "V' (throat velocity)": ("V′ (throat velocity)", "V′ (условная скорость в горловине)"),
-    "V'' (curtain velocity at full lift)": ("V″ (curtain velocity at full lift)",
-                                            "V″ (условная скорость в проходном сечении при полном подъёме)"),
-    "V''' (time-area velocity)": ("V‴ (time-area velocity)", "V‴ (условная скорость по время-сечению)"),
-    "v_vp (mean charge velocity)": ("v_vp (mean charge velocity)", "v_вп (средняя скорость заряда)"),
-    "throat diameter / bore": ("throat diameter / bore d_g/D", "диаметр горловины / диаметр цилиндра d_г/D"),
-    "valve lift / throat diameter": ("valve lift / throat diameter h_v/d_g", "подъём клапана / диаметр горловины h_v/d_г"),
-    "max tappet acceleration": ("max tappet acceleration a_T max", "наибольшее ускорение толкателя a_T max"),
-    "min tappet acceleration": ("min tappet acceleration a_T min", "наименьшее ускорение толкателя a_T min"),
-    "opening advance": ("opening advance", "угол опережения открытия"),
-    "closing lag": ("closing lag", "угол запаздывания закрытия"),
-    "clearance taken up without a ramp: valve seating velocity": (
-        "clearance taken up without a ramp: valve seating velocity",
-        "зазор выбирается без участка сбега: скорость посадки клапана"),
-    "seat angle": ("seat angle φ", "угол фаски φ"), "clearance h0": ("clearance h0", "тепловой зазор h0"),
-    "rocker ratio": ("rocker ratio i_k", "передаточное отношение коромысла i_k"),
-    "base radius r0 / valve lift": ("base radius / valve lift r0/h_v", "радиус начальной окружности / подъём клапана r0/h_v"),
-    "cam profile undercut: rho_min (flat follower)": ("cam profile undercut: ρ_min (flat follower)",
-                                                      "подрез профиля кулачка: ρ_min (плоский толкатель)"),
-    "cam profile undercut: pitch radius of curvature - roller radius": (
-        "cam profile undercut: pitch radius of curvature − roller radius",
-        "подрез профиля кулачка: радиус кривизны центрового профиля − радиус ролика"),
-    "max pressure angle": ("max pressure angle", "наибольший угол давления"),
-    "rho_min (cam profile)": ("ρ_min (cam profile)", "ρ_min (профиль кулачка)"),
-    "ramp end velocity": ("ramp end velocity w′", "скорость в конце участка сбега w′"),
-    "Phi2/Phi3": ("Φ2/Φ3", "Φ2/Φ3"), "(Phi2+Phi3)/Phi1": ("(Φ2+Φ3)/Φ1", "(Φ2+Φ3)/Φ1"),
-    "polydyne exponent p": ("polydyne exponent p", "показатель степени p полидинамического кулачка"),
-    "harmonic order N of the cam": ("harmonic order N of the cam", "порядок гармоники N кулачка"),
-    "acceleration jump at the nose": ("acceleration jump at the nose", "скачок ускорения на вершине"),
-    "dynamic cam: fall of the lift before the nose": ("dynamic cam: fall of the lift before the nose",
-                                                      "динамический кулачок: спад подъёма до вершины"),
-    "measured table: rms residual of the N-harmonic fit": ("measured table: rms residual of the N-harmonic fit",
-                                                           "измеренная таблица: СКО гармонической аппроксимации"),
-    "opens_deg against the measured table": ("opening advance against the measured table",
-                                             "угол опережения открытия по измеренной таблице"),
-    "closes_deg against the measured table": ("closing lag against the measured table",
-                                              "угол запаздывания закрытия по измеренной таблице"),
-    "spring reserve K_z": ("spring reserve K_z", "коэффициент запаса пружины K_з"),
-    "spring f_max/f_min": ("spring f_max/f_min", "отношение деформаций пружины f_max/f_min"),
-    "inner spring share": ("share of the inner spring", "доля внутренней пружины"),
-    "sum of throat areas / piston area": ("sum of throat areas / piston area", "сумма площадей горловин / площадь поршня"),
-    "crank lambda = R/L": ("λ = R/L", "λ = R/L"),
-    "stroke / bore (stroke_mm / bore_mm)": ("stroke / bore S/D (stroke_mm / bore_mm)",
-                                            "отношение хода поршня к диаметру цилиндра S/D (stroke_mm / bore_mm)"),
-    "mean piston speed (stroke_mm x rated_speed_rpm / 30000)": (
-        "mean piston speed c_p (stroke_mm x rated_speed_rpm / 30000)",
-        "средняя скорость поршня c_p (stroke_mm x rated_speed_rpm / 30000)"),
-    "lambda = R / L (stroke_mm / 2 / rod_length_mm)": ("λ = R/L (stroke_mm / 2 / rod_length_mm)",
-                                                       "λ = R/L (stroke_mm / 2 / rod_length_mm)"),
-    "rod mass share at the piston pin": ("share of the rod mass at the piston pin", "доля массы шатуна на поршневом пальце"),
-    "coil gap at full lift / wire diameter": ("coil gap at full lift / wire diameter",
-                                              "зазор между витками при полном подъёме / диаметр проволоки"),
-    "f_max/f_min": ("f_max/f_min", "f_max/f_min"), "fatigue safety factor": ("fatigue safety factor n", "запас прочности n"),
-    "free length": ("free length", "длина в свободном состоянии"), "frequency difference": ("frequency difference", "разница частот"),
-    "installed length": ("installed length", "длина в установленном состоянии"),
-    "resonance ratio omega_c1/omega_cam": ("resonance ratio ω_c1/ω_cam", "отношение частот ω_c1/ω_р"),
-    "tau_max": ("τ_max", "τ_max"), "working coils": ("working coils", "число рабочих витков"),
-    "valve-piston clearance": ("valve-piston clearance", "зазор клапан-поршень"),
-    "dynamic seating velocity at the rated speed": ("dynamic seating velocity at the rated speed",
-                                                    "скорость посадки клапана на номинальной частоте (динамический расчёт)"),
-    "follower separation (jump) speed / rated speed": ("follower separation (jump) speed / rated speed",
-                                                       "частота отрыва толкателя / номинальная частота"),
-    "valve-piston clearance over the overlap": ("valve-piston clearance over the overlap",
-                                                "зазор клапан-поршень в период перекрытия клапанов"),
-    "gas force on the exhaust valve at opening": ("gas force on the exhaust valve at opening",
-                                                  "сила давления газов на выпускной клапан в момент открытия"),
-    "specific mass of the drive m' = m_v / f_g": ("specific mass of the drive m′ = m_v/f_g",
-                                                  "удельная масса привода m′ = m_кл/f_г"),
-    "flat follower contact reach (edge loading)": ("flat follower contact reach (edge loading)",
-                                                   "вылет точки контакта на плоском толкателе (кромочный контакт)"),
-    "roller follower side force": ("roller follower side force", "боковая сила на роликовом толкателе"),
-    "port height / stroke": ("port height / stroke", "высота окна / ход поршня"),
-    "port width / bore": ("port width / bore", "ширина окна / диаметр цилиндра"),
-}
-"""Names of the check quantities (without the ``"valve: "`` prefix): ``(en, ru)``; the strength checks are
-named by :data:`NAMES` of their key."""
-
 SKELETONS = {
     "coefficient {} (corrections note {}: not {})": "коэффициент {} (поправка {}: не {})",
     "along the profile with the instantaneous force and radius (Shang Hanji ({}), eq. {})":
@@ -671,20 +581,19 @@ def _by_skeleton(text):
     return None if ru is None else ru.format(*NUMBER.findall(text))
 
 
-def quantity_text(quantity, lang, prefixes=()):
-    """The quantity of a check in ``lang``: ``"intake: V' (throat velocity)"`` -> ``"intake: V′ (условная ..."``.
-
-    ``prefixes`` are the names of the parts (valves, ports) that may stand before the quantity.
-    """
-    prefix, rest = "", quantity
-    if ": " in quantity:
-        head, tail = quantity.split(": ", 1)
-        if head in prefixes:
-            prefix, rest = head + ": ", tail
-        elif head in CHAPTERS:
-            prefix, rest = CHAPTERS[head][LANGS.index(lang)] + ": ", tail
-    name = quantity_name(rest, lang, prefixes)
-    return prefix + (rest if name is None else name)
+def quantity_text(check, lang):
+    """The quantity of a check in ``lang``: its valve or chapter, then the text of its code in the catalogue
+    (:mod:`valvetrain.locale`): ``"intake: V′ (условная скорость в горловине)"``."""
+    params = dict(check.params)
+    text = check_text(check.code, params, lang)
+    if "spring" in params:
+        text = f"{spring_text(params['spring'], lang)}: {text}"
+    head = check.quantity.partition(": ")[0]
+    if check.valve is not None:
+        return f"{check.valve}: {text}"
+    if check.quantity != record_text(check.code, params) and head in catalogue(lang)["chapters"]:
+        return f"{catalogue(lang)['chapters'][head]}: {text}"
+    return text
 
 
 CANNOT_EVALUATE = ("cannot be evaluated", "не может быть вычислено")
@@ -695,32 +604,6 @@ def unevaluated_text(check, lang):
     """``"cannot be evaluated: REASON"`` of a check that cannot be evaluated, in ``lang`` (the reason by
     :func:`translate`)."""
     return f"{CANNOT_EVALUATE[LANGS.index(lang)]}: {translate(check.unevaluated, lang)}"
-
-
-CHAPTERS = {"crank": ("crank mechanism", "кривошипно-шатунный механизм"), "two-stroke": ("two-stroke", "двухтактный"),
-            "engine": ("engine", "двигатель")}
-"""Prefixes of the checks of a chapter (not of a valve)."""
-
-
-def quantity_name(quantity, lang, prefixes=()):
-    """The name of a check quantity without a part prefix, or None when it has none."""
-    if quantity in QUANTITIES:
-        return QUANTITIES[quantity][LANGS.index(lang)]
-    if quantity.replace(" ", "_") in NAMES:  # a strength check, "camshaft deflection"
-        return NAMES[quantity.replace(" ", "_")][LANGS.index(lang)]
-    for tag, en, ru in (("spring ", "spring", "пружина"), ("outer spring ", "outer spring", "наружная пружина"),
-                        ("inner spring ", "inner spring", "внутренняя пружина")):
-        if quantity.startswith(tag):
-            name = quantity_name(quantity[len(tag):], lang, prefixes)
-            return None if name is None else f"{en if lang == 'en' else ru}: {name}"
-    for name in prefixes:  # "<port> port height / stroke"
-        if quantity.startswith(name + " ") and quantity[len(name) + 1:] in QUANTITIES:
-            return f"{name}: {QUANTITIES[quantity[len(name) + 1:]][LANGS.index(lang)]}"
-    m = re.fullmatch(r"equivalent throat diameter sqrt\((\d+)\) d / bore", quantity)
-    if m:
-        return (f"equivalent throat diameter √{m[1]} d_g / bore" if lang == "en"
-                else f"приведённый диаметр горловины √{m[1]} d_г / диаметр цилиндра")
-    return None
 
 
 NAMES.update({
@@ -775,30 +658,6 @@ NAMES.update({
     "grinding.master_base_radius": ("heel circle radius of the master R_m0", "радиус начальной окружности копира R_m0"),
     "grinding.wheel_wear": ("wheel wear w", "износ шлифовального круга w"),
     "grinding.wear_compensation": ("wear compensation", "компенсация износа круга"),
-})
-
-QUANTITIES.update({
-    "cam concave radius |rho| against the grinding wheel radius": (
-        "concave radius of the cam |ρ| against the grinding wheel radius R_w",
-        "радиус вогнутого участка кулачка |ρ| и радиус шлифовального круга R_w"),
-    "hydraulic drive: smallest pressure above the vapour pressure": (
-        "hydraulic drive: smallest pressure above the vapour pressure",
-        "гидропривод: наименьшее давление выше давления насыщенных паров"),
-    "hydraulic drive: valve seating velocity at the simulated speed": (
-        "hydraulic drive: valve seating velocity at the simulated speed",
-        "гидропривод: скорость посадки клапана на расчётной частоте вращения"),
-    "hydraulic drive: largest valve lift within the stroke (below the stop)": (
-        "hydraulic drive: largest valve lift within the stroke (below the stop)",
-        "гидропривод: наибольший подъём клапана в пределах хода (ниже упора)"),
-    "hydraulic drive: valve lift left at the next opening": (
-        "hydraulic drive: valve lift left at the next opening",
-        "гидропривод: подъём клапана, оставшийся к следующему открытию"),
-    "hydraulic drive: fill pressure below the valve's lift-off pressure": (
-        "hydraulic drive: fill pressure below the valve's lift-off pressure",
-        "гидропривод: давление подпитки ниже давления подъёма клапана с седла"),
-    "master cam: smallest radius of curvature (master roller undercut)": (
-        "master cam: smallest radius of curvature (undercut by the master roller)",
-        "копир: наименьший радиус кривизны (подрез роликом копира)"),
 })
 
 SKELETONS.update({f"even firing, order {'{}' * n}": f"равномерное чередование вспышек, порядок работы {'{}' * n}"
