@@ -1214,7 +1214,7 @@ def _remedies(requirement, throat_diameter, camshaft_speed, options, conflicts, 
         tried.append({"change": "rated_speed_factor", "to": 0.3})
     else:
         helped.append({"change": "rated_speed_factor", "to": speed,
-                       **({} if engine_speed is None else {"rated_speed_rpm": speed * engine_speed * 30.0 / np.pi})})
+                       **({} if engine_speed is None else {"rated_speed_rpm": to_display(speed * engine_speed, "rpm")})})
     mass = _passing_factor(lambda f: passing(requirement.scaled(f)) is not None, 0.1)
     (tried if mass is None else helped).append({"change": "reduced_mass_factor", "to": 0.1 if mass is None else mass})
     return helped, tried

@@ -15,7 +15,6 @@ rpm) are converted to SI for the physics functions.  Stages:
 from dataclasses import dataclass, replace
 import difflib
 
-import numpy as np
 
 from .. import flow
 from ..checks import SEVERITIES, apply_acceptances, check, failed, ranked
@@ -23,7 +22,7 @@ from ..crank.pressure import PressureFileError
 from ..files import TableFileError
 from ..specification import Spec, SpecError, crank_geometry, si, spec_document, validate
 from ..specification.models import Dynamics
-from ..units import MM
+from ..units import MM, to_display
 from .crank import LAMBDA_RANGE, CrankResults, CrankSummary, crank_stage, valve_timing
 from .drive import MassResult, SpringResult, StrengthResult
 from .dynamics import DynamicsResult
@@ -231,7 +230,7 @@ def engine_record(eng):
     """The engine's figures (SI view of [engine]): its data, the mean piston speed, swept volume and piston area."""
     swept = float(flow.swept_volume(eng.bore, eng.stroke))
     return EngineRecord(eng.name, eng.bore, eng.stroke, eng.rated_speed, eng.cylinders, eng.strokes,
-                        flow.mean_piston_speed(eng.stroke, eng.rated_speed * 30.0 / np.pi), swept,
+                        flow.mean_piston_speed(eng.stroke, to_display(eng.rated_speed, "rpm")), swept,
                         swept * eng.cylinders, float(flow.circle_area(eng.bore)))
 
 

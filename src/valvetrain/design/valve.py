@@ -22,7 +22,7 @@ from ..numerics import extremum
 from ..specification import SpecError
 from ..specification.cams import layout
 from ..springs import NoSpringFits
-from ..units import DEG, MM
+from ..units import DEG, MM, to_display
 from .drive import drive_record, drive_stage, strength_stage
 from .dynamics import dynamics_stage
 from .grinding import grinding_stage
@@ -354,7 +354,7 @@ def flow_stage(cam, valve, engine):
     Valve-train practical works (n.d.), work 1, eqs. (1.1)-(1.4); work 4, eqs. (4.1), (4.3); Shang Hanji (1988), eqs. (2.1)-(2.3).
     """
     law, omega = cam.law, cam.cam_speed
-    c_p = flow.mean_piston_speed(engine.stroke, engine.rated_speed * 30.0 / np.pi)
+    c_p = flow.mean_piston_speed(engine.stroke, to_display(engine.rated_speed, "rpm"))
     swept = float(flow.swept_volume(engine.bore, engine.stroke))
     lift = law.lift_max * cam.rocker_ratio
     d_g, seat = valve.throat_diameter, valve.seat_angle

@@ -1,9 +1,11 @@
-"""Names a designer reads for the keys, units, values and check texts of a design, in English and Russian.
+"""Names a designer reads for the keys, units, values and texts of a design, in English and Russian.
 
 The records of a design (``results.json``, the specification, the CSV headers) keep their machine keys
 (``tappet_acceleration_m_s2``); the report shows :func:`label` of a key (``"tappet acceleration a_T, m/s²"``,
 ``"ускорение толкателя a_T, м/с²"``).  A key is looked up with the path of the table it belongs to
-(``spring.count`` before ``count``); the unit comes from the key's suffix (``_mm``, ``_m_s2``, ``_MPa``...).
+(``spring.count`` before ``count``); the unit comes from the key's suffix (``_mm``, ``_m_s2``, ``_MPa``...) and its
+symbol from the one unit table :data:`valvetrain.units.UNITS`.  The names of the checks are not here: they are
+renderings of their codes from the catalogue :mod:`valvetrain.locale`.
 
 Texts made with numbers (the notes of the checks, the cylinder-pressure model) are translated by their
 skeleton: the numbers are taken out, the Russian skeleton is looked up and the numbers put back
@@ -17,33 +19,8 @@ Symbols: one symbol for one quantity throughout the report and the plots: ``h`` 
 import re
 
 from ..checks import UNEVALUATED
-from ..locale import catalogue, check_text, record_text, spring_text
-
-UNITS = {
-    "": ("", ""), "mm": ("mm", "мм"), "mm2": ("mm²", "мм²"), "mm2 s": ("mm²·s", "мм²·с"), "m": ("m", "м"),
-    "m/s": ("m/s", "м/с"), "m/s2": ("m/s²", "м/с²"), "m/s3": ("m/s³", "м/с³"), "N": ("N", "Н"), "kN": ("kN", "кН"),
-    "cm3": ("cm³", "см³"), "N/mm": ("N/mm", "Н/мм"), "N m": ("N·m", "Н·м"), "kg": ("kg", "кг"),
-    "kg mm2": ("kg·mm²", "кг·мм²"), "kg/m2": ("kg/m²", "кг/м²"), "MPa": ("MPa", "МПа"), "Pa": ("Pa", "Па"),
-    "J": ("J", "Дж"), "deg": ("deg", "град"), "crank deg": ("crank deg", "град ПКВ"),
-    "cam deg": ("cam deg", "град ПРВ"), "rad/s": ("rad/s", "рад/с"), "Hz": ("Hz", "Гц"), "rpm": ("rpm", "об/мин"),
-    "mm/rad2": ("mm/rad²", "мм/рад²"), "mm/rad": ("mm/rad", "мм/рад"), "mm/deg": ("mm/deg", "мм/град"), "%": ("%", "%"),
-    "GPa": ("GPa", "ГПа"), "kg/m3": ("kg/m³", "кг/м³"), "N s/m": ("N·s/m", "Н·с/м"),
-    "cm3/(s MPa)": ("cm³/(s·MPa)", "см³/(с·МПа)"),
-}
-"""Display units of :data:`valvetrain.units.DISPLAY_UNITS` (and a few of the keys) as printed."""
-
-SUFFIXES = [
-    ("_cm3_per_s_MPa", "cm3/(s MPa)"), ("_N_s_per_m", "N s/m"), ("_kg_m3", "kg/m3"), ("_GPa", "GPa"),
-    ("_mm2_s", "mm2 s"), ("_N_per_mm", "N/mm"), ("_mm_per_rad2", "mm/rad2"), ("_mm_rad2", "mm/rad2"),
-    ("_mm_per_rad", "mm/rad"), ("_mm_rad", "mm/rad"), ("_mm_per_deg", "mm/deg"), ("_kg_mm2", "kg mm2"),
-    ("_kg_m2", "kg/m2"), ("_m_s2", "m/s2"), ("_m_s3", "m/s3"), ("_m_s", "m/s"), ("_rad_s", "rad/s"),
-    ("_crank_deg", "crank deg"), ("_cam_deg", "cam deg"), ("_deg", "deg"), ("_mm2", "mm2"), ("_mm", "mm"),
-    ("_MPa", "MPa"), ("_Nm", "N m"), ("_kN", "kN"), ("_N", "N"), ("_kg", "kg"), ("_Hz", "Hz"), ("_rpm", "rpm"),
-    ("_cm3", "cm3"), ("_J", "J"),
-]
-"""Unit suffixes of the keys, longest first."""
-
-LANGS = ("en", "ru")
+from ..locale import LANGS, catalogue, check_text, record_text, spring_text
+from ..units import SUFFIXES, symbol as unit_text
 
 NAMES = {
     # engine
@@ -504,12 +481,6 @@ def _named(path):
                 unit = _lookup(name_path, ANGLE_UNITS) or unit
             return found, unit
     return None, ""
-
-
-def unit_text(unit, lang):
-    """A display unit as printed (``"m/s2"`` -> ``"m/s²"``, ``"м/с²"``)."""
-    pair = UNITS.get(unit)
-    return unit if pair is None else pair[LANGS.index(lang)]
 
 
 def label(path, lang):

@@ -11,7 +11,7 @@ smallest margin.
 All values are SI; ``unit`` names how they are shown.
 """
 
-from dataclasses import dataclass, fields
+from dataclasses import dataclass
 import math
 
 import numpy as np
@@ -377,6 +377,3 @@ SINGLE_LIMITS = (("max_pressure_angle", pressure_angle), ("grinding_wheel_radius
                  ("min_spring_reserve", spring_reserve), ("min_rho", rho_min), ("ramp_velocity", ramp_velocity),
                  ("seating_velocity", seating_velocity), ("min_piston_gap", piston_gap), ("no_jump_factor", no_jump))
 """The limits of :class:`Limits` that one constraint function checks alone: (field, function)."""
-
-LIMIT_NAMES = tuple(f.name for f in fields(Limits))
-"""The fields of :class:`Limits`."""
