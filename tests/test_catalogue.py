@@ -163,3 +163,18 @@ def test_every_check_record_names_its_code_valve_and_parameters():
     pair = check("flow.equivalent_throat_to_bore", 0.5, 0.4, 0.45, source="s", params={"count": 2}).as_dict()
     assert pair["params"] == {"count": 2} and pair["quantity"] == "equivalent throat diameter sqrt(2) d / bore"
     assert {r["valve"] for r in records} == {"intake", None}
+
+
+def test_a_spring_checks_key_is_its_code():
+    """The spring diagnosis names a failing check by its key (``coil_gap_at_full_lift``) and the report names it by
+    the code ``spring.KEY``: every spring check's code is ``spring.`` and its key."""
+    tree = ast.parse((PACKAGE / "springs.py").read_text(encoding="utf-8"))
+    pairs = []
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Dict):
+            pairs += [(k.value, v.args[0].value) for k, v in zip(node.keys, node.values)
+                      if isinstance(v, ast.Call) and getattr(v.func, "id", None) == "_ArrayCheck"]
+        if (isinstance(node, ast.Assign) and isinstance(node.value, ast.Call)
+                and getattr(node.value.func, "id", None) == "_ArrayCheck"):
+            pairs.append((node.targets[0].slice.value, node.value.args[0].value))
+    assert len(pairs) >= 9 and all(code == f"spring.{key}" for key, code in pairs), pairs

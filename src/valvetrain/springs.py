@@ -648,7 +648,7 @@ def evaluate_springs(preload, rate, lift, mean_diameter, wire_diameter, material
         checks["free_length"] = _ArrayCheck("spring.free_length", lengths["free_length"], high=max_free_length, unit="mm",
                                             source="max_free_length_mm of the specification")
     if imposed is not None:
-        checks["coil_gap_at_full_lift"] = _ArrayCheck("spring.coil_gap",
+        checks["coil_gap_at_full_lift"] = _ArrayCheck("spring.coil_gap_at_full_lift",
                                                       lengths["min_pitch"] / d - 1.0, low=material.gap_factor,
                                                       source="Valve-train practical works (n.d.), eq. (6.3): Delta_min = 0.10-0.15 d")
     if partner_frequency is not None:
