@@ -178,3 +178,17 @@ def test_a_spring_checks_key_is_its_code():
                 and getattr(node.value.func, "id", None) == "_ArrayCheck"):
             pairs.append((node.targets[0].slice.value, node.value.args[0].value))
     assert len(pairs) >= 9 and all(code == f"spring.{key}" for key, code in pairs), pairs
+
+
+def test_every_text_made_with_numbers_takes_its_numbers():
+    """Each Russian skeleton of ``ru.toml [texts]`` is filled by as many numbers as its English has ``{}``; the
+    reason of a check that cannot be evaluated is one of them."""
+    texts = catalogue("ru")["texts"]
+    for en, ru in texts.items():
+        numbers = [str(i) for i in range(en.count("{}"))]
+        assert ru.format(*numbers) and en.format(*numbers), en
+    assert checks.UNEVALUATED in texts
+    from valvetrain.report.names import translate
+    assert translate("even firing, order 1-5-3-6-2-4", "ru") == "равномерное чередование вспышек, порядок работы 1-5-3-6-2-4"
+    assert translate("speed range 700-7700 rpm: 10% to 110% of the rated speed", "ru") == \
+        "диапазон частот 700-7700 мин⁻¹: от 10% до 110% номинальной"

@@ -8,8 +8,8 @@ symbol from the one unit table :data:`valvetrain.units.UNITS`.  The names of the
 renderings of their codes from the catalogue :mod:`valvetrain.locale`.
 
 Texts made with numbers (the notes of the checks, the cylinder-pressure model) are translated by their
-skeleton: the numbers are taken out, the Russian skeleton is looked up and the numbers put back
-(:func:`translate`).  A key, a value or a text without a Russian entry is shown as it is (in English):
+skeleton: the numbers are taken out, the Russian skeleton is looked up in the catalogue (``ru.toml`` ``[texts]``
+of :mod:`valvetrain.locale`) and the numbers put back (:func:`translate`).  A key, a value or a text without a Russian entry is shown as it is (in English):
 ``tests/test_report_i18n.py`` finds them.
 
 Symbols: one symbol for one quantity throughout the report and the plots: ``h`` lift, ``v`` velocity,
@@ -18,7 +18,6 @@ Symbols: one symbol for one quantity throughout the report and the plots: ``h`` 
 
 import re
 
-from ..checks import UNEVALUATED
 from ..locale import LANGS, catalogue, check_text, record_text, spring_text
 from ..units import SUFFIXES, symbol as unit_text
 
@@ -364,79 +363,9 @@ SEGMENTS = {
 }
 """Names of the lift-law segments (``"Phi1 opening"``) without their side."""
 
-SKELETONS = {
-    "coefficient {} (corrections note {}: not {})": "коэффициент {} (поправка {}: не {})",
-    "along the profile with the instantaneous force and radius (Shang Hanji ({}), eq. {})":
-        "по профилю, с мгновенными силой и радиусом кривизны (Shang Hanji ({}), ф. {})",
-    "offset b = {} mm = max dh/dphi ({})": "смещение b = {} мм = max dh/dφ ({})",
-    "Euler load {} N; E = {} MPa (corrections note {})": "критическая сила по Эйлеру {} Н; E = {} МПа (поправка {})",
-    "built-in beam ({}, corrections note {}); simply supported: {} MPa; load P_T max (corrections note {})":
-        "балка с заделкой ({}, поправка {}); на двух опорах: {} МПа; нагрузка P_T max (поправка {})",
-    "no ramp takes up clearance_mm = {}: the flank does": "участок сбега не выбирает зазор {} мм: его выбирает профиль",
-    "from the crank throws and cylinder axes": "по углам колен вала и осям цилиндров",
-    "{} N/mm at the valve from the part geometry in [parts]":
-        "{} Н/мм, приведённая к клапану, по геометрии деталей из исходных данных",
-    "{} N/mm each at the valve, the rest of c = {} N/mm":
-        "по {} Н/мм каждое звено, приведённая к клапану: остаток жёсткости c = {} Н/мм",
-    "{} N/mm each at the valve (assumed; give drive_stiffness_N_per_mm or the part geometry)":
-        "по {} Н/мм каждое звено, приведённая к клапану (принято; задайте жёсткость привода или геометрию деталей)",
-    "drive stiffness c = {} N/mm from [drive] stiffness_N_per_mm": "жёсткость привода c = {} Н/мм из исходных данных",
-    "M = {} kg: the reduced mass at the valve of the spring design (masses.at_valve_kg)":
-        "M = {} кг: приведённая к клапану масса из расчёта пружины",
-    "K = {} N/mm and F{} = {} N: the designed spring(s)": "K = {} Н/мм и F{} = {} Н: рассчитанная пружина (пружины)",
-    "M = {} kg given ([dynamics] mass_kg)": "M = {} кг задана в исходных данных динамики",
-    "K = {} N/mm given and F{} = {} N given ([dynamics])":
-        "K = {} Н/мм и F{} = {} Н заданы в исходных данных динамики",
-    "K = {} N/mm given and F{} = {} N the designed spring's ([dynamics])":
-        "K = {} Н/мм задана в исходных данных динамики, F{} = {} Н рассчитанной пружины",
-    "K = {} N/mm = (K_{} M |j_min| - F{}) / h_max with K_{} = {}, F{} = {} N given (Valve-train dynamics article "
-    "(n.d.), step {}a)":
-        "K = {} Н/мм = (K_{} M |j_min| − F{}) / h_max при K_{} = {}, F{} = {} Н задана (Valve-train dynamics article "
-        "(n.d.), этап {}а)",
-    "lash {} mm at the valve: the clearance the ramp takes up times the rocker ratio":
-        "зазор {} мм на клапане: зазор, выбираемый участком сбега, умноженный на передаточное отношение коромысла",
-    "coil masses: the designed spring's active coils in {} masses per spring, half a segment on the valve":
-        "массы витков: рабочие витки рассчитанной пружины как {} масс на пружину, половина участка на клапане",
-    "speed range {}{} rpm: {}% to {}% of the rated speed (idle to over-speed)":
-        "диапазон частот {}{} мин⁻¹: от {}% до {}% номинальной (от холостого хода до заброса оборотов)",
-    "m_v x {} m/s{} ({} g, a stated default)": "m_кл × {0} м/с² ({2} g, принято по умолчанию)",
-    "part masses, Valve-train practical works (n.d.), eq. ({}); spring mass of the design":
-        "массы деталей, практические работы по расчёту ГРМ, ф. ({}); масса рассчитанной пружины",
-    "part masses, Valve-train practical works (n.d.), eq. ({})": "массы деталей, практические работы по расчёту ГРМ, ф. ({})",
-    "specific mass {} kg/m2 (given), Valve-train practical works (n.d.), work {}":
-        "удельная масса {} кг/м² (задана), практические работы по расчёту ГРМ, работа {}",
-    "specific mass {} kg/m2 (default for a pushrod drive), Valve-train practical works (n.d.), work {}":
-        "удельная масса {} кг/м² (по умолчанию для привода со штангой), практические работы по расчёту ГРМ, работа {}",
-    "specific mass {} kg/m2 (default for a rocker drive), Valve-train practical works (n.d.), work {}":
-        "удельная масса {} кг/м² (по умолчанию для привода с коромыслом), практические работы по расчёту ГРМ, работа {}",
-    "specific mass {} kg/m2 (default for a direct drive), Valve-train practical works (n.d.), work {}":
-        "удельная масса {} кг/м² (по умолчанию для непосредственного привода), практические работы по расчёту ГРМ, работа {}",
-}
-"""Russian skeletons of the texts made with numbers (notes, models): ``{}`` stands for each number in turn."""
-
-_WIEBE = ("Wiebe cycle model: compression ratio {}, heat input {} J, start {} deg from firing TDC, duration {} deg, "
-          "a = {}, m = {}, gamma = {}, no wall heat loss, gas exchange at {}/{} MPa, ",
-          "модель цикла по Вибе: степень сжатия {}, подведённая теплота {} Дж, начало сгорания {} град от ВМТ "
-          "сгорания, продолжительность {} град, a = {}, m = {}, γ = {}, без теплоотдачи в стенки, газообмен при "
-          "{}/{} МПа, ")
-_WIEBE_VALVES = ("compression from the intake valve's closing, a blowdown of {} deg from the exhaust valve's opening ({})",
-                 "сжатие с момента закрытия впускного клапана, выпуск за {} град с момента открытия выпускного "
-                 "клапана ({})")
-_WIEBE_WHERE = [
-    ("valves at the dead centres", "клапаны в мёртвых точках"),
-    ("intake valve {}...{} crank deg from the gas-exchange TDC", "впускной клапан {}...{} град ПКВ от ВМТ газообмена"),
-    ("exhaust valve {}...{} crank deg from the gas-exchange TDC", "выпускной клапан {}...{} град ПКВ от ВМТ газообмена"),
-    ("intake valve {}...{} and exhaust valve {}...{} crank deg from the gas-exchange TDC",
-     "впускной клапан {}...{} и выпускной клапан {}...{} град ПКВ от ВМТ газообмена"),
-]
-SKELETONS.update({
-    _WIEBE[0] + _WIEBE_VALVES[0].replace("({})", "(" + en + ")") + " (Heywood ({}))":
-        _WIEBE[1] + _WIEBE_VALVES[1].replace("({})", "(" + ru + ")") + " (Heywood ({}))"
-    for en, ru in _WIEBE_WHERE})
-SKELETONS[_WIEBE[0] + "the ports at the dead centres (Heywood ({}))"] = \
-    _WIEBE[1] + "окна в мёртвых точках (Heywood ({}))"
-
-NUMBER = re.compile(r"[-+]?\d+(?:\.\d+)?(?:e[-+]?\d+)?")
+NUMBER = re.compile(r"(?:[-+]?\d+(?:\.\d+)?(?:e[-+]?\d+)?)+")
+"""A number, or a run of numbers without a blank between them (``1-5-3-6-2-4``, ``700-7700``): one ``{}`` of a
+skeleton."""
 
 
 def _candidates(path):
@@ -527,7 +456,7 @@ def link_names(names, lang):
 
 
 def translate(text, lang):
-    """A text made with numbers in ``lang`` by its skeleton (:data:`SKELETONS`); as it is without one.  A text that
+    """A text made with numbers in ``lang`` by its skeleton (the catalogue's ``[texts]``); as it is without one.  A text that
     starts with drive links (``"pushrod: ..."``, :data:`LINKS`) has them translated and the rest by its skeleton; a
     text of parts joined by ``"; "`` without a skeleton of its own, part by part (the longest head with one first)."""
     if lang == "en" or not text:
@@ -547,8 +476,9 @@ def translate(text, lang):
 
 
 def _by_skeleton(text):
-    """The Russian of a text made with numbers by its skeleton (:data:`SKELETONS`), or None."""
-    ru = SKELETONS.get(NUMBER.sub("{}", text))
+    """The Russian of a text made with numbers by its skeleton (``ru.toml`` ``[texts]`` of the catalogue
+    :mod:`valvetrain.locale`), or None."""
+    ru = catalogue("ru")["texts"].get(NUMBER.sub("{}", text))
     return None if ru is None else ru.format(*NUMBER.findall(text))
 
 
@@ -629,43 +559,4 @@ NAMES.update({
     "grinding.master_base_radius": ("heel circle radius of the master R_m0", "радиус начальной окружности копира R_m0"),
     "grinding.wheel_wear": ("wheel wear w", "износ шлифовального круга w"),
     "grinding.wear_compensation": ("wear compensation", "компенсация износа круга"),
-})
-
-SKELETONS.update({f"even firing, order {'{}' * n}": f"равномерное чередование вспышек, порядок работы {'{}' * n}"
-                  for n in range(1, 25)})   # the order of any number of cylinders, "1-5-3-6-2-4"
-SKELETONS.update({
-    UNEVALUATED: "значение не удалось вычислить",
-    "a factor of {} beyond Heywood ({}), section {}": "в {} раза шире диапазона Heywood ({}), раздел {}",
-    "a factor of {} beyond Power units manual (n.d.), eq. ({})":
-        "в {} раза шире диапазона Power units manual (n.d.), ф. ({})",
-    "a wheel of radius {} mm cannot grind a concave stretch of smaller radius":
-        "круг радиусом {} мм не может шлифовать вогнутый участок меньшего радиуса",
-    "master roller r_m = {} mm, bar ratio {}": "ролик копира r_m = {} мм, передаточное отношение {}",
-    "min_preload_N of the specification": "наименьшая сила затяжки, заданная в исходных данных",
-    "engine speed of the simulation {} rpm: the rated speed": "частота вращения расчёта {} мин⁻¹: номинальная",
-    "speed range {}{} rpm: {}% to {}% of the rated speed": "диапазон частот {}{} мин⁻¹: от {}% до {}% номинальной",
-    "at {} rpm, {} cam deg from the nose (quasi-static force)":
-        "при {} мин⁻¹, {} град ПРВ от вершины кулачка (квазистатическая сила)",
-    "at {} rpm, {} cam deg from the nose (dynamic force)":
-        "при {} мин⁻¹, {} град ПРВ от вершины кулачка (сила динамического расчёта)",
-    "engine.idle_speed_rpm": "частота холостого хода из исходных данных",
-    "the low end of the dynamics speed range": "нижняя граница диапазона частот динамического расчёта",
-    "{} x the rated speed (the default idle)": "{} номинальной частоты (холостой ход по умолчанию)",
-    "the liquid column separates (cavitation) where the pressure falls to the vapour pressure":
-        "столб жидкости разрывается (кавитация), где давление падает до давления насыщенных паров",
-    "valve stop {} mm: {}% above the rigid drive's largest lift":
-        "упор клапана {} мм: на {}% выше наибольшего подъёма жёсткого привода",
-    "no gas force on the valve head: the specification gives no engine cycle ([crank] with its pressure_file or "
-    "[crank.cycle])":
-        "сила давления газов на тарелку клапана не учтена: в исходных данных нет рабочего цикла двигателя "
-        "(индикаторной диаграммы или модели Вибе)",
-    "largest at {} rpm": "наибольший при {} мин⁻¹",
-    "the valve reaches its stop at {} rpm: it travels further than its stroke":
-        "клапан доходит до упора при {} мин⁻¹: его перемещение больше хода",
-    "at {} rpm the valve is not back on its seat when the plunger is about to lift again: it has not closed before "
-    "its next opening":
-        "при {} мин⁻¹ клапан не вернулся на седло к началу следующего подъёма плунжера: он не закрылся до "
-        "следующего открытия",
-    "above it the supply alone lifts the valve off its seat (F_0 / A_a above the back pressure)":
-        "выше него подпитка сама поднимает клапан с седла (на F_0 / A_a выше противодавления)",
 })
