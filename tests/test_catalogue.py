@@ -168,7 +168,7 @@ def test_every_check_record_names_its_code_valve_and_parameters():
 def test_a_spring_checks_key_is_its_code():
     """The spring diagnosis names a failing check by its key (``coil_gap_at_full_lift``) and the report names it by
     the code ``spring.KEY``: every spring check's code is ``spring.`` and its key."""
-    tree = ast.parse((PACKAGE / "springs.py").read_text(encoding="utf-8"))
+    tree = ast.parse((PACKAGE / "springs" / "candidates.py").read_text(encoding="utf-8"))
     pairs = []
     for node in ast.walk(tree):
         if isinstance(node, ast.Dict):
