@@ -566,6 +566,17 @@ SWEEP_COLUMNS = [
 surge but still goes solid)."""
 
 
+def event_window(d, margin_deg=10.0):
+    """Camshaft angles of the sweep around the event (where any speed or the rigid lift is off the seat)."""
+    sw = d.sweep
+    open_ = (sw.kinematic_lift > 0.0) | np.any(sw.lift > 1e-6, axis=0)
+    idx = np.flatnonzero(open_)
+    if idx.size == 0:
+        return np.ones(sw.theta.size, dtype=bool)
+    lo, hi = sw.theta[idx[0]] - np.radians(margin_deg), sw.theta[idx[-1]] + np.radians(margin_deg)
+    return (sw.theta >= lo) & (sw.theta <= hi)
+
+
 def sweep_columns(d):
     """The per-speed table of a :class:`DynamicsResult` as named columns (engineering units)."""
     rows = [record(r) for r in d.records]

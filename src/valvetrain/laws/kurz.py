@@ -154,6 +154,10 @@ class KurzLaw(RampedLaw, SymmetricLaw):
         self.phi0 = float(self.ramp.length)
         self.c = kurz_coefficients(self._lift, self.ramp_velocity, self.phi1, self.phi2, self.phi3, self.shape_factor)
         self._edges = np.cumsum([0.0, self.phi0, self.phi1, self.phi2, self.phi3])
+        c = self.c
+        self._kernel_arguments = (self.half_angle, self._edges, self.ramp.parameters,
+                                  (self.clearance, c.c11, c.c12, c.c21, c.c22, c.c31, c.c32, c.c33, self.phi1,
+                                   self.phi2, self.phi3))
 
     @property
     def main_half_angle(self):
@@ -169,9 +173,7 @@ class KurzLaw(RampedLaw, SymmetricLaw):
         return [("ramp", e[0], e[1]), ("Phi1", e[1], e[2]), ("Phi2", e[2], e[3]), ("Phi3", e[3], e[4])]
 
     def _mirrored(self, theta, out):
-        c = self.c
-        _kurz_kernel(theta, out, self.half_angle, self._edges, self.ramp.parameters,
-                     (self.clearance, c.c11, c.c12, c.c21, c.c22, c.c31, c.c32, c.c33, self.phi1, self.phi2, self.phi3))
+        _kurz_kernel(theta, out, *self._kernel_arguments)
 
     def coefficients(self):
         """Coefficients and auxiliaries in the manual's units (mm, rad), keys as in Valve-train practical works (n.d.)."""

@@ -485,14 +485,20 @@ def _by_skeleton(text):
 def quantity_text(check, lang):
     """The quantity of a check in ``lang``: its valve or chapter, then the text of its code in the catalogue
     (:mod:`valvetrain.locale`): ``"intake: V′ (условная скорость в горловине)"``."""
-    params = dict(check.params)
-    text = check_text(check.code, params, lang)
+    return record_quantity_text({"code": check.code, "params": dict(check.params), "quantity": check.quantity,
+                                 "valve": check.valve}, lang)
+
+
+def record_quantity_text(record, lang):
+    """:func:`quantity_text` of a check record of results.json (``code``, ``params``, ``quantity``, ``valve``)."""
+    params = record["params"]
+    text = check_text(record["code"], params, lang)
     if "spring" in params:
         text = f"{spring_text(params['spring'], lang)}: {text}"
-    head = check.quantity.partition(": ")[0]
-    if check.valve is not None:
-        return f"{check.valve}: {text}"
-    if check.quantity != record_text(check.code, params) and head in catalogue(lang)["chapters"]:
+    head = record["quantity"].partition(": ")[0]
+    if record["valve"] is not None:
+        return f"{record['valve']}: {text}"
+    if record["quantity"] != record_text(record["code"], params) and head in catalogue(lang)["chapters"]:
         return f"{catalogue(lang)['chapters'][head]}: {text}"
     return text
 

@@ -1,8 +1,11 @@
 """Plots of every stage of a valve design (matplotlib, written as PNG files)."""
 
+import itertools
+
 from matplotlib.figure import Figure
 import numpy as np
 
+from ..design.dynamics import event_window
 from ..units import MM, rad_to_deg, to_display
 from .i18n import TEXT
 from .names import value_text
@@ -308,21 +311,10 @@ def timing_figure(valves, t):
     return fig
 
 
-def _event_window(d, margin_deg=10.0):
-    """Camshaft angles of the sweep around the event (where any speed or the rigid lift is off the seat)."""
-    sw = d.sweep
-    open_ = (sw.kinematic_lift > 0.0) | np.any(sw.lift > 1e-6, axis=0)
-    idx = np.flatnonzero(open_)
-    if idx.size == 0:
-        return np.ones(sw.theta.size, dtype=bool)
-    lo, hi = sw.theta[idx[0]] - np.radians(margin_deg), sw.theta[idx[-1]] + np.radians(margin_deg)
-    return (sw.theta >= lo) & (sw.theta <= hi)
-
-
 def dynamics_map_figure(name, d, t):
     """Maps over camshaft angle and engine speed: valve lift minus the rigid lift, and the cam contact force."""
     sw = d.sweep
-    keep = _event_window(d)
+    keep = event_window(d)
     x = rad_to_deg(sw.theta[keep])
     y = to_display(np.asarray(d.per_speed.speed), "rpm")
     fig = Figure(figsize=(9, 8))
@@ -472,15 +464,24 @@ def hydraulic_sweep_figure(valve, t):
 DYNAMICS_FIGURES = {"dynamics_map": dynamics_map_figure, "dynamics_speed": dynamics_speed_figure}
 
 
-def write_dynamics_plots(name, d, folder, t):
-    """Write the dynamics figures of one valve as PNG; return ``{kind: filename}``."""
-    out = {}
-    for kind, make in DYNAMICS_FIGURES.items():
-        fname = f"{name}_{kind}.png"
-        make(name, d, t).savefig(folder / fname, dpi=110)
-        out[kind] = fname
-    return out
+def write_dynamics_plots(name, d, folder, t, save=None):
+    """Write the dynamics figures of one valve as PNG; return ``{kind: filename}``.  ``save(draw, filename)`` draws
+    and writes one figure (``draw()`` makes it), by default at once (:func:`write_plots` passes its own)."""
+    save = save or _saver(folder)
+    return {kind: save(lambda make=make: make(name, d, t), f"{name}_{kind}.png")
+            for kind, make in DYNAMICS_FIGURES.items()}
 
+
+def _saver(folder, share=(0, 1)):
+    """``save(draw, filename)``: draw the figure and write it into ``folder`` if it is this share's (the figures are
+    dealt round in turn to ``share[1]`` drawers, this one ``share[0]``); return the filename either way."""
+    turn = itertools.count()
+
+    def save(draw, fname):
+        if next(turn) % share[1] == share[0]:
+            draw().savefig(folder / fname, dpi=110)
+        return fname
+    return save
 
 ENGINE_FIGURES = {"crank": {"crank_forces": crank_forces_figure, "crank_torque": crank_torque_figure,
                             "crank_pin_polar": crank_pin_figure},
@@ -501,39 +502,39 @@ give (the time-area, the radius of curvature, the crank forces and pin load, the
 costs about 0.1 s, a design's numbers a few milliseconds."""
 
 
-def write_plots(results, folder, lang="en", figures="main"):
+def write_plots(results, folder, lang="en", figures="main", share=(0, 1)):
     """Write the figures of ``figures`` (one of :data:`FIGURE_SETS`) as PNG; return ``{valve name or
-    "crank"/"two_stroke": {kind: filename}}`` (and ``"(timing)"``: the timing diagram's filename) of those written."""
+    "crank"/"two_stroke": {kind: filename}}`` (and ``"(timing)"``: the timing diagram's filename) of those written.
+
+    ``share = (k, n)`` draws only every n-th figure from the k-th (of those in the order drawn): n drawers, each
+    with its own k, write them all between them and each returns the whole dict."""
     if figures not in FIGURE_SETS:
         raise ValueError(f"figures = {figures!r}; allowed: {', '.join(FIGURE_SETS)}")
     t = TEXT[lang]
     written = {}
+    save = _saver(folder, share)
 
     def wanted(kind):
         return figures == "all" or (figures == "main" and kind not in FIGURES_ON_REQUEST)
 
-    def save(fig, fname):
-        fig.savefig(folder / fname, dpi=110)
-        return fname
-
     for name, valve in results.valves.items():
-        written[name] = {kind: save(make(valve, t), f"{name}_{kind}.png") for kind, make in FIGURES.items()
-                         if wanted(kind)}
+        written[name] = {kind: save(lambda make=make: make(valve, t), f"{name}_{kind}.png")
+                         for kind, make in FIGURES.items() if wanted(kind)}
         if valve.dynamics is not None and figures != "none":
-            written[name].update(write_dynamics_plots(name, valve.dynamics, folder, t))
+            written[name].update(write_dynamics_plots(name, valve.dynamics, folder, t, save))
         if valve.grinding is not None and wanted("grinding"):
-            written[name]["grinding"] = save(grinding_figure(valve, t), f"{name}_grinding.png")
+            written[name]["grinding"] = save(lambda: grinding_figure(valve, t), f"{name}_grinding.png")
         if valve.hydraulic is not None:
             if wanted("hydraulic"):
-                written[name]["hydraulic"] = save(hydraulic_figure(valve, t), f"{name}_hydraulic.png")
+                written[name]["hydraulic"] = save(lambda: hydraulic_figure(valve, t), f"{name}_hydraulic.png")
             if wanted("hydraulic_sweep"):
-                written[name]["hydraulic_sweep"] = save(hydraulic_sweep_figure(valve, t),
+                written[name]["hydraulic_sweep"] = save(lambda: hydraulic_sweep_figure(valve, t),
                                                         f"{name}_hydraulic_sweep.png")
     if results.valves and wanted("timing"):
-        written["(timing)"] = save(timing_figure(results.valves, t), "valve_timing.png")
+        written["(timing)"] = save(lambda: timing_figure(results.valves, t), "valve_timing.png")
     for stage, figures_of_stage in ENGINE_FIGURES.items():
         data = getattr(results, stage)
         if data is not None:
-            written[stage] = {kind: save(make(data, t), f"{kind}.png") for kind, make in figures_of_stage.items()
-                              if wanted(kind)}
+            written[stage] = {kind: save(lambda make=make: make(data, t), f"{kind}.png")
+                              for kind, make in figures_of_stage.items() if wanted(kind)}
     return written

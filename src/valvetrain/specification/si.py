@@ -34,6 +34,12 @@ def _convert(value, factor, root):
 
 
 @cache
+def _keys(model):
+    """``(key, SI field, factor to SI)`` of each key of a section's model."""
+    return tuple((key, *si_name(key)) for key in model.model_fields)
+
+
+@cache
 def _view_class(model):
     fields = [(si_name(key)[0], object) for key in model.model_fields]
     fields += [(name, object) for name in getattr(model, "si_extras", ())]
@@ -58,8 +64,7 @@ def si(section, root=None):
     >>> valve.throat_diameter, round(valve.opens, 6), valve.cam.law
     (0.0368, 0.453786, 'kurz')
     """
-    values = {si_name(key)[0]: _convert(getattr(section, key), si_name(key)[1], root)
-              for key in type(section).model_fields}
+    values = {name: _convert(getattr(section, key), factor, root) for key, name, factor in _keys(type(section))}
     if getattr(section, "si_extras", ()):
         values.update(section.read_extras(root))
     return _view_class(type(section))(**values, section=section)
