@@ -206,7 +206,7 @@ def sweep(file, out, valves, force, lang):
     multi-mass train, every speed of the range, jump, bounce and seating. Writes dynamics.json,
     tables/NAME_dynamics.csv and plots/NAME_dynamics_map.png, NAME_dynamics_speed.png."""
     from .design import sweep_designs
-    from .design.dynamics import CHECK_QUANTITIES
+    from .design.dynamics import CHECK_CODES
     from .export import write_sweep
 
     spec = _load(file)
@@ -229,7 +229,7 @@ def sweep(file, out, valves, force, lang):
         d = v.dynamics
         click.echo(f"{name}: {_headline(d)}")
         for w in v.warnings:
-            if w.quantity.endswith(CHECK_QUANTITIES):
+            if w.code in CHECK_CODES:
                 click.echo(f"{w.severity}: {w.statement}, {_BOUND[w.severity]} {w.range} ({w.source})")
     click.echo(f"wrote {out}/ (dynamics.json, tables/, plots/)")
 

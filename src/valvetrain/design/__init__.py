@@ -17,15 +17,14 @@ import difflib
 from functools import cached_property
 from typing import Any, Optional
 
-import numpy as np
 
 from .. import flow
-from ..checks import SEVERITIES, Check, apply_acceptances, check, failed, ranked, valve_of
+from ..checks import SEVERITIES, Check, apply_acceptances, check, failed, ranked
 from ..crank.pressure import PressureFileError
 from ..files import TableFileError
 from ..specification import Spec, SpecError, crank_geometry, si, spec_document, validate
 from ..specification.models import Dynamics
-from ..units import MM
+from ..units import MM, to_display
 from .crank import LAMBDA_RANGE, CrankResults, CrankSummary, crank_stage, valve_timing
 from .drive import MassResult, SpringResult, StrengthResult
 from .dynamics import DynamicsResult
@@ -199,7 +198,7 @@ def run(spec, laws=None, progress=None) -> DesignResults:
     found = [c for v in valves.values() for c in v.checks] + overlap_clearance_checks(valves) + engine_checks(spec)
     if {v.kind for v in valves.values()} == {"intake", "exhaust"}:
         share = sum(v.count * v.flow.throat_area for v in valves.values())
-        found.append(check("sum of throat areas / piston area", share / float(flow.circle_area(engine.bore)),
+        found.append(check("engine.throat_area_share", share / float(flow.circle_area(engine.bore)),
                            *THROAT_AREA_SHARE_RANGE, source="Valve-train practical works (n.d.), work 1"))
     ports = two_stroke_stage(si(spec.two_stroke), crank_view, engine) if spec.two_stroke is not None else None
     for stage, tag in ((crank, "crank"), (ports, "two-stroke")):
@@ -221,8 +220,8 @@ def accept(found: list[Check], acceptances: list, valves: dict[str, ValveDesign]
     """
     found, unmatched = apply_acceptances(found, acceptances, valves)
     if unmatched:
-        names = sorted({c.quantity for c in found} | {c.quantity.partition(": ")[2] for c in found
-                                                      if valve_of(c.quantity, valves)})
+        names = sorted({c.quantity for c in found} | {c.quantity.partition(": ")[2] for c in found if c.valve}
+                       | {c.code for c in found})
         problems = []
         for i in unmatched:
             a = acceptances[i]
@@ -240,7 +239,7 @@ def engine_record(eng) -> EngineRecord:
     """The engine's figures (SI view of [engine]): its data, the mean piston speed, swept volume and piston area."""
     swept = float(flow.swept_volume(eng.bore, eng.stroke))
     return EngineRecord(eng.name, eng.bore, eng.stroke, eng.rated_speed, eng.cylinders, eng.strokes,
-                        flow.mean_piston_speed(eng.stroke, eng.rated_speed * 30.0 / np.pi), swept,
+                        flow.mean_piston_speed(eng.stroke, to_display(eng.rated_speed, "rpm")), swept,
                         swept * eng.cylinders, float(flow.circle_area(eng.bore)))
 
 
@@ -281,17 +280,17 @@ def engine_checks(spec) -> list[Check]:
     """
     bore, stroke, rod, speed = crank_geometry(spec)
     k = UNIT_SLIP_FACTOR
-    found = [check("engine: stroke / bore (stroke_mm / bore_mm)", stroke / bore, STROKE_BORE_RANGE[0] / k,
+    found = [check("engine.stroke_to_bore", stroke / bore, STROKE_BORE_RANGE[0] / k,
                    STROKE_BORE_RANGE[1] * k, source=f"a factor of {k:g} beyond Heywood (1988), section 2.2",
-                   severity="failure"),
-             check("engine: mean piston speed (stroke_mm x rated_speed_rpm / 30000)",
+                   severity="failure").named("engine"),
+             check("engine.mean_piston_speed",
                    flow.mean_piston_speed(stroke * MM, speed), MEAN_PISTON_SPEED_RANGE[0] / k,
                    MEAN_PISTON_SPEED_RANGE[1] * k, unit="m/s",
-                   source=f"a factor of {k:g} beyond Heywood (1988), section 2.2", severity="failure")]
+                   source=f"a factor of {k:g} beyond Heywood (1988), section 2.2", severity="failure").named("engine")]
     if rod is not None:
-        found.append(check("engine: lambda = R / L (stroke_mm / 2 / rod_length_mm)", stroke / 2.0 / rod, LAMBDA_RANGE[0] / k,
+        found.append(check("engine.rod_ratio", stroke / 2.0 / rod, LAMBDA_RANGE[0] / k,
                            min(LAMBDA_RANGE[1] * k, 1.0), source=f"a factor of {k:g} beyond Power units manual (n.d.), "
-                           "eq. (1.1)", severity="failure"))
+                           "eq. (1.1)", severity="failure").named("engine"))
     return found
 
 
@@ -359,8 +358,11 @@ def results_schema() -> dict[str, Any]:
         props.update({k: {"type": "object", "description": text} for k, text in extra.items()})
         return {"type": "object", "properties": props, "required": [k for sch in schemas for k in sch["required"]]}
 
-    check_record = {"type": "object", "required": ["quantity", "value", "range", "source", "unit", "severity", "margin"],
-                    "properties": {k: {"type": t} for k, t in (("quantity", "string"), ("range", "string"),
+    check_record = {"type": "object", "required": ["quantity", "code", "valve", "params", "value", "range", "source",
+                                                   "unit", "severity", "margin"],
+                    "properties": {k: {"type": t} for k, t in (("quantity", "string"), ("code", "string"),
+                                                                ("valve", ["string", "null"]), ("params", "object"),
+                                                                ("range", "string"),
                                                                 ("source", "string"), ("unit", "string"),
                                                                 ("accepted", "boolean"), ("reason", "string"),
                                                                 ("unevaluated", "string"))}

@@ -270,7 +270,7 @@ def crank_stage(c, eng, timing=None) -> CrankResults:
         float(phi[int(np.argmax(p_abs))]), source, stats["mean"], stats["max"], stats["min"], stats["nonuniformity"],
         float(np.mean(forces["torque"])), period, even, tuple(float(a) for a in firing), firing_how, eng.layout,
         eng.cylinders, strokes, work)
-    found = [check("crank lambda = R/L", lam, *LAMBDA_RANGE, source="Power units manual (n.d.), eq. (1.1)"),
-             check("rod mass share at the piston pin", c.rod_pin_fraction, *ROD_PIN_FRACTION_RANGE,
+    found = [check("crank.rod_ratio", lam, *LAMBDA_RANGE, source="Power units manual (n.d.), eq. (1.1)"),
+             check("crank.rod_pin_share", c.rod_pin_fraction, *ROD_PIN_FRACTION_RANGE,
                    source="Power units manual (n.d.), eq. (2.7)")]
     return CrankResults(phi, columns, phi, each, total, firing, figures, tuple(found), source)

@@ -17,6 +17,7 @@ import numpy as np
 from .. import flow, masses, springs, strength
 from ..checks import Check, check
 from ..layouts import chain, layout, train_mass
+from ..locale import record_text
 from ..report.wording import diagnosis_record, diagnosis_text
 from ..spring_materials import grade
 from ..specification.si import si_name
@@ -233,7 +234,7 @@ def drive_record(drive) -> dict[str, Any]:
     """The ``masses``, ``spring`` and ``strength`` records of results.json (engineering units)."""
     st = drive.strength
     return {"masses": record(drive.masses), "spring": record(drive.spring),
-            "strength": {**record(st), "checks": {c.quantity: _strength_record(c) for c in st.checks},
+            "strength": {**record(st), "checks": {c.code.removeprefix("strength."): _strength_record(c) for c in st.checks},
                          "not_checked": list(st.not_checked)}}
 
 
@@ -257,7 +258,7 @@ def spring_options(sp) -> springs.SpringOptions:
 def _spring_checks(tag, s, note=""):
     """A designed spring's own checks, named after the spring (``spring``, ``outer``, ``inner``); a failed one
     carries ``note`` (the diagnosis)."""
-    return [replace(c, quantity=f"{tag} {c.quantity}", note=c.note if c.passed else note) for key, c in s.checks.items()
+    return [replace(c.of_spring(tag), note=c.note if c.passed else note) for key, c in s.checks.items()
             if key in ("tau_max", "fatigue_safety", "resonance_ratio", "working_coils", "installed_length",
                        "free_length", "coil_gap_at_full_lift")]
 
@@ -332,17 +333,18 @@ def drive_stage(valve, gas, cam) -> DriveResult:
                                          sum(d.characteristic.rate for d in designs.values()), lift)
     lines["chosen"] = chosen_line
     ratio = chosen_line.max_deflection / chosen_line.preload_deflection
-    found.append(check("spring reserve K_z", drive.spring_reserve, *springs.SPRING_RESERVE_RANGE,
+    found.append(check("spring.reserve", drive.spring_reserve, *springs.SPRING_RESERVE_RANGE,
                        source="Valve-train practical works (n.d.), eq. (5.3)"))
-    found.append(check("spring f_max/f_min", ratio, *springs.DEFLECTION_RATIO_RANGE, source="Valve-train practical works (n.d.), work 5 "
+    found.append(check("spring.chosen_deflection_ratio", ratio, *springs.DEFLECTION_RATIO_RANGE, source="Valve-train practical works (n.d.), work 5 "
                        "(the chosen springs' rounded coils can move it off the required line's ratio)"))
     if sp.count == 2:
-        found.append(check("inner spring share", sp.inner_share, *springs.INNER_SHARE_RANGE, source="Valve-train practical works (n.d.), work 5"))
+        found.append(check("spring.inner_share", sp.inner_share, *springs.INNER_SHARE_RANGE, source="Valve-train practical works (n.d.), work 5"))
     for tag, d in designs.items():
         found += _spring_checks(tag, d, diagnosis_text(diagnosis, "en") if diagnosis else "")
     if sp.count == 2:
-        found.append(replace(designs["inner"].checks["frequency_difference"],
-                             quantity="inner/outer spring frequency difference"))
+        difference = designs["inner"].checks["frequency_difference"]
+        found.append(replace(difference, quantity=record_text("spring.pair_frequency_difference"),
+                             code="spring.pair_frequency_difference"))
 
     if sp.count == 1:
         design, pair = spring_record(designs["spring"]), {}
@@ -509,7 +511,7 @@ def strength_stage(valve, gas, engine, cam, drive, dynamics=None) -> tuple[Stren
     result, checks = _strength(valve, cam, theta, maps, p_open)
     result = replace(result, speed_range=(float(low), float(high)), lowest_speed_source=source,
                      rated_speed=engine.rated_speed)
-    return result, [replace(c, quantity=c.quantity.replace("_", " ")) for c in result.checks] + found + checks
+    return result, list(result.checks) + found + checks
 
 
 def _where(w):
@@ -633,7 +635,7 @@ def _exhaust_gas_force(valve, gas):
     note = (f"on the head diameter d_n = {to_display(head, 'mm'):g} mm" if head is not None else
             "parts.head_diameter_mm not given: computed on the throat diameter "
             f"{to_display(diameter, 'mm'):g} mm, a lower bound (the head is larger than the throat)")
-    return force, check("gas force on the exhaust valve at opening", force, unit="N", severity="info",
+    return force, check("gas_force.exhaust_opening", force, unit="N", severity="info",
                         source=WORKS_7_1, note=note)
 
 
@@ -664,7 +666,7 @@ def _edge_loading(parts, drive, cam, follower, maps, width, notes):
     offset = abs(float(cam.law.derivatives(np.array([w.angle]))[1, 0]))
     band = ("with the Hertz half-width " f"{to_display(w.value - offset, 'mm'):.3g} mm" if width is not None
             else "without the Hertz half-width (parts.cam_width_mm not given)")
-    return [check("flat follower contact reach (edge loading)", w.value, high=face / 2.0, unit="mm",
+    return [check("follower.edge_loading", w.value, high=face / 2.0, unit="mm",
                   severity="failure", source=f"{SHANG_2_1}, eq. (2.15); {NORTON} (flat-faced follower face width)",
                   note=f"contact offset |dh/dphi| {to_display(offset, 'mm'):.4g} mm {_where(w)} {band}; face radius "
                        f"from parts.{key}")]
@@ -682,7 +684,7 @@ def _roller_side_force(cam, follower, maps, drive):
     beta = abs(float(follower.pressure_angle(cam.heel_radius, h, dh)[0]))
     carrier = "the tappet guide" if drive.tappet else "the rocker and its shaft"
     return w, check(
-        "roller follower side force", w.value, unit="N", severity="info",
+        "follower.roller_side_force", w.value, unit="N", severity="info",
         source=f"{NORTON} (pressure angle: side load F_n sin(alpha)); no source gives an allowable",
         note=f"{_where(w)}, pressure angle {to_display(beta, 'deg'):.3g} deg; carried by {carrier}")
 

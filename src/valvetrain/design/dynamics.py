@@ -528,9 +528,8 @@ def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, 
     return out, dynamics_checks(out, engine)
 
 
-CHECK_QUANTITIES = ("dynamic seating velocity at the rated speed",
-                    "follower separation (jump) speed / rated speed")
-"""The quantities of the dynamics checks."""
+CHECK_CODES = ("dynamics.seating_velocity", "dynamics.jump_speed")
+"""The codes of the dynamics checks."""
 
 
 def dynamics_checks(d, engine) -> list[Check]:
@@ -544,9 +543,9 @@ def dynamics_checks(d, engine) -> list[Check]:
     jump = d.jump_speed if np.isfinite(d.jump_speed) else top
     note = "" if np.isfinite(d.jump_speed) else (f"no separation up to the top of the range swept, "
                                                   f"{to_display(top, 'rpm'):.0f} rpm")
-    return [check(CHECK_QUANTITIES[0], abs(d.at_rated_speed.seating_velocity),
+    return [check(CHECK_CODES[0], abs(d.at_rated_speed.seating_velocity),
                   high=SEATING_VELOCITY_MAX, unit="m/s", source=CHECK_SOURCE + "; 0.3-0.5 m/s usual"),
-            check(CHECK_QUANTITIES[1], jump / engine.rated_speed, low=engine.over_speed_ratio, severity="failure",
+            check(CHECK_CODES[1], jump / engine.rated_speed, low=engine.over_speed_ratio, severity="failure",
                   note=note, source=CHECK_SOURCE + ": no separation below [engine] over_speed_ratio x the rated "
                   "speed")]
 
@@ -601,7 +600,7 @@ def sweep_columns(d) -> dict[str, np.ndarray]:
     return out
 
 
-__all__ = ["CHECK_QUANTITIES", "DynamicsParameters", "DynamicsResult", "Mode", "PerSpeed", "ResonanceRecord", "SWEEP_COLUMNS",
+__all__ = ["CHECK_CODES", "DynamicsParameters", "DynamicsResult", "Mode", "PerSpeed", "ResonanceRecord", "SWEEP_COLUMNS",
            "SpeedRecord", "build_train", "drive_links", "dynamics_checks", "dynamics_stage", "finite_or_none", "rated_contact",
            "speed_record",
            "sweep_columns"]

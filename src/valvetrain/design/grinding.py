@@ -143,7 +143,7 @@ def grinding_stage(grinding, cam, name, export_step) -> tuple[GrindingResult, li
     concave_radius = float(np.max(concave)) if concave.size else None
     found = []
     if concave_radius is not None:
-        found.append(check("cam concave radius |rho| against the grinding wheel radius", -concave_radius, low=r_w,
+        found.append(check("grinding.concave_radius", -concave_radius, low=r_w,
                            strict_low=True, source=CONCAVE_SOURCE, unit="mm", severity="failure",
                            note=f"a wheel of radius {r_w / MM:g} mm cannot grind a concave stretch of smaller radius"))
     path, length, _ = cam_grinding.wheel_centre_path(derivs, theta, heel, r_w, follower)
@@ -155,7 +155,7 @@ def grinding_stage(grinding, cam, name, export_step) -> tuple[GrindingResult, li
         convex = bool(np.all(pitch_rho > r_m))
         master_rho = float(np.min(np.where(pitch_rho > 0.0, pitch_rho, np.inf)) - r_m)
         master_ok = master_rho > 0.0
-        found.append(check("master cam: smallest radius of curvature (master roller undercut)", master_rho, low=0.0,
+        found.append(check("grinding.master_undercut", master_rho, low=0.0,
                            strict_low=True, source=MASTER_SOURCE, unit="mm", severity="failure",
                            note=f"master roller r_m = {r_m / MM:g} mm, bar ratio {i:g}"))
     result = dict(wheel_radius=r_w, master_follower_radius=r_m, bar_ratio=i, master_base_radius=base,

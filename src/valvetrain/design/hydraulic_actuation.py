@@ -53,9 +53,6 @@ STOP_MARGIN = 0.1
 FAILURE_SOURCE = "Shang Hanji (1988), ch. 7"
 """Source of the failure checks of the drive (the valve's stroke, its closing and its rest)."""
 
-SEATING_QUANTITY = "hydraulic drive: valve seating velocity at the simulated speed"
-"""The quantity of the seating-velocity check."""
-
 SEATING_SOURCE = "Shang Hanji (1988), ch. 3 and ch. 7; 0.3-0.5 m/s usual"
 """Source of the seating-velocity check (the dynamics stage's limit)."""
 
@@ -329,12 +326,12 @@ def hydraulic_stage(valve, law, engine, gas, name, nose, cylinder=None) -> tuple
         speed_range=(float(speeds[0]), float(speeds[-1])), speeds=int(speeds.size), per_speed=per_speed,
         notes=tuple(notes), table_file=f"tables/{name}_hydraulic.csv",
         sweep_table=f"tables/{name}_hydraulic_sweep.csv", response=r, sweep=sw, nose=nose, strokes=engine.strokes)
-    found = [check("hydraulic drive: smallest pressure above the vapour pressure", result.min_pressure,
+    found = [check("hydraulic.min_pressure", result.min_pressure,
                    low=hydraulic.vapour_pressure, strict_low=True, source=SOURCES, unit="MPa",
                    note="the liquid column separates (cavitation) where the pressure falls to the vapour pressure")]
     found += _failure_checks(r, sw, speed, speeds, engine, drive, hydraulic)
     if result.seating_velocity is not None:
-        found.append(check(SEATING_QUANTITY, abs(result.seating_velocity), high=SEATING_VELOCITY_MAX, unit="m/s",
+        found.append(check("hydraulic.seating_velocity", abs(result.seating_velocity), high=SEATING_VELOCITY_MAX, unit="m/s",
                            source=SEATING_SOURCE))
     return result, found
 
@@ -365,17 +362,17 @@ def _failure_checks(r, sw, speed, speeds, engine, drive, hydraulic):
     stop = drive.valve.stop
     reached = lift[k] >= stop
     found = [
-        check("hydraulic drive: largest valve lift within the stroke (below the stop)", lift[k], high=stop, unit="mm",
+        check("hydraulic.max_lift", lift[k], high=stop, unit="mm",
               severity="failure", source=FAILURE_SOURCE,
               note=(f"the valve reaches its stop at {at[k] / rpm:.0f} rpm: it travels further than its stroke"
                     if reached else f"largest at {at[k] / rpm:.0f} rpm")),
-        check("hydraulic drive: valve lift left at the next opening", left[m], high=BOUNCE_TOLERANCE, unit="mm",
+        check("hydraulic.residual_lift", left[m], high=BOUNCE_TOLERANCE, unit="mm",
               severity="failure", source=FAILURE_SOURCE,
               note=(f"at {at[m] / rpm:.0f} rpm the valve is not back on its seat when the plunger is about to lift "
                     "again: it has not closed before its next opening"
                     if left[m] > BOUNCE_TOLERANCE else ""))]
     if hydraulic.fill_pressure is not None:
-        found.append(check("hydraulic drive: fill pressure below the valve's lift-off pressure",
+        found.append(check("hydraulic.fill_pressure",
                            hydraulic.fill_pressure, high=lift_off_pressure(drive), unit="MPa", severity="failure",
                            source=FAILURE_SOURCE,
                            note="above it the supply alone lifts the valve off its seat (F_0 / A_a above the back "

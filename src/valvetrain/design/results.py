@@ -2,7 +2,7 @@
 
 A stage result is a frozen dataclass.  A field declared with :func:`quantity` is part of the
 results: ``key`` is its name in ``results.json`` (engineering units in the name, as in the
-specification: ``rho_min_mm``), ``unit`` the unit it is shown in (:data:`valvetrain.units.DISPLAY_UNITS`),
+specification: ``rho_min_mm``), ``unit`` the unit it is shown in (:data:`valvetrain.units.UNITS`),
 ``label`` what it is.  :func:`record` converts a result to that dictionary, the one place where
 a result leaves SI; :func:`json_schema` describes the same dictionary as a JSON Schema, generated
 from the same metadata.  Fields without the metadata (arrays, the law object) stay inside.
@@ -25,7 +25,7 @@ def quantity(key, unit="", label="", *, default=MISSING, flatten=False, omit_non
     key : str
         Name in results.json.
     unit : str
-        Display unit of the value (a key of :data:`valvetrain.units.DISPLAY_UNITS`); numbers,
+        Display unit of the value (a key of :data:`valvetrain.units.UNITS`); numbers,
         tuples and arrays of numbers are converted, other values kept.
     label : str
         What the quantity is, for the schema and the report.

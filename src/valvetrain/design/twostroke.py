@@ -124,9 +124,10 @@ def two_stroke_stage(ts, crank, eng) -> TwoStrokeResults:
                           twostroke.time_area_analytic(bore, stroke, sigma, lam, port.width / (np.pi * bore), speed),
                           float(area.max()), z)
             (h_lo, h_hi), (w_lo, w_hi) = twostroke.PORT_SIZE_RANGES[port.kind]
-            found.append(check(f"{name} port height / stroke", sigma, h_lo, h_hi, source="Valve-train practical works (n.d.), Table 8.1"))
-            found.append(check(f"{name} port width / bore", port.width / bore, w_lo, w_hi,
-                               source="Valve-train practical works (n.d.), Table 8.1"))
+            found.append(check("ports.height_to_stroke", sigma, h_lo, h_hi, source="Valve-train practical works (n.d.), Table 8.1",
+                               params={"port": name}))
+            found.append(check("ports.width_to_bore", port.width / bore, w_lo, w_hi,
+                               source="Valve-train practical works (n.d.), Table 8.1", params={"port": name}))
         areas[name], ports[name] = area, rec
         curves[name] = z * speed / speeds                       # Z = K / n (8.6)
     figures = TwoStrokeSummary(speed, lam, ts.kinematics, ports, (float(low), float(high)))

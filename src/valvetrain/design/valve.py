@@ -26,7 +26,7 @@ from ..layouts import LAYOUTS, layout
 from ..numerics import extremum
 from ..specification import SpecError
 from ..springs import NoSpringFits
-from ..units import DEG, MM
+from ..units import DEG, MM, to_display
 from .drive import DriveResult, drive_record, drive_stage, strength_stage
 from .dynamics import DynamicsResult, dynamics_stage
 from .grinding import GrindingResult, grinding_stage
@@ -55,17 +55,17 @@ _FOR_DIRECT = ("the source states this band in work 2 for the shock-free cam, wh
 _ACCELERATION_SOURCE = "Valve-train practical works (n.d.), work 2 ({sign} {band} m/s2)"
 
 LAYOUT_BANDS = {
-    "max tappet acceleration": {
+    "tappet_acceleration.max": {
         layout: Band(high=ACCELERATION_LIMITS[0], source=_ACCELERATION_SOURCE.format(sign="positive", band="1500...3500"),
                      note="" if layout == "direct" else _FOR_DIRECT.format(layout=layout)) for layout in LAYOUTS},
-    "min tappet acceleration": {
+    "tappet_acceleration.min": {
         layout: Band(low=ACCELERATION_LIMITS[1], source=_ACCELERATION_SOURCE.format(sign="negative", band="500...1500"),
                      note="" if layout == "direct" else _FOR_DIRECT.format(layout=layout)) for layout in LAYOUTS},
-    "rocker ratio": {
+    "drive.rocker_ratio": {
         "rocker": Band(1.4, 1.75, "Valve-train practical works (n.d.), work 2 (i_k = 1 for direct drive, 1.4-1.75 with a rocker or lever)"),
         "pushrod": Band(1.4, 1.75, "Valve-train practical works (n.d.), work 2 (i_k = 1 for direct drive, 1.4-1.75 with a rocker or lever)"),
     },
-    "specific mass of the drive m' = m_v / f_g": {
+    "drive.specific_mass": {
         "direct": Band(200.0, 300.0, "Valve-train practical works (n.d.), work 5 (direct drive 200-300 kg/m2)"),
         "rocker": Band(200.0, 300.0, "Valve-train practical works (n.d.), work 5 (direct drive 200-300 kg/m2)",
                        "the source gives 200-300 kg/m2 for direct drive and 400-500 kg/m2 for a tappet, pushrod and "
@@ -74,20 +74,20 @@ LAYOUT_BANDS = {
         "pushrod": Band(400.0, 500.0, "Valve-train practical works (n.d.), work 5 (tappet, pushrod and rocker 400-500 kg/m2)"),
     },
 }
-"""The recommended ranges that depend on the drive layout, ``quantity -> {layout: Band}``; a layout missing from a
-quantity's table has no such check (direct drive has no rocker: its ratio 1 is refused otherwise at validation).
+"""The recommended ranges that depend on the drive layout, ``check code -> {layout: Band}``; a layout missing from a
+code's table has no such check (direct drive has no rocker: its ratio 1 is refused otherwise at validation).
 The valve arrangement of Valve-train practical works (n.d.), work 1 (throat diameter / bore "при нижнем/верхнем расположении клапанов",
 side valves or overhead valves) is the combustion chamber's, ``[engine] chamber``
 (:data:`valvetrain.flow.THROAT_TO_BORE_RANGES`)."""
 
 
-def layout_check(quantity, value, layout, **kw) -> Optional[Check]:
-    """The check of ``quantity`` against the band of ``layout`` (:data:`LAYOUT_BANDS`), or None where the layout has
+def layout_check(code, value, layout, **kw) -> Optional[Check]:
+    """The check ``code`` against the band of ``layout`` (:data:`LAYOUT_BANDS`), or None where the layout has
     no such band; the band's note, if any, becomes the check's note."""
-    band = LAYOUT_BANDS[quantity].get(layout)
+    band = LAYOUT_BANDS[code].get(layout)
     if band is None:
         return None
-    return check(quantity, value, band.low, band.high, source=band.source, note=band.note, **kw)
+    return check(code, value, band.low, band.high, source=band.source, note=band.note, **kw)
 
 TIMING_RANGES = {"intake": ((20.0 * DEG, 30.0 * DEG), (40.0 * DEG, 60.0 * DEG))}
 """Recommended inlet opening advance and closing lag [crank rad] (Valve-train practical works (n.d.), work 2: 20-30 and 40-60 crank deg)."""
@@ -286,7 +286,7 @@ def clearance_check(kind, gap, angle, window=None) -> Check:
     open event or, with ``window`` (crank rad from the gas-exchange TDC), over the valve overlap."""
     where = "" if window is None else (f" over the overlap from {math.degrees(window[0]):.4g} to "
                                        f"{math.degrees(window[1]):.4g} crank deg")
-    return check("valve-piston clearance" + ("" if window is None else " over the overlap"), gap,
+    return check("piston.clearance" if window is None else "piston.clearance_overlap", gap,
                  low=PISTON_CLEARANCE_MIN[kind], unit="mm", source=PISTON_CLEARANCE_SOURCE,
                  note=f"smallest at {math.degrees(angle):.4g} crank deg from the gas-exchange TDC{where}")
 
@@ -358,7 +358,7 @@ def flow_stage(cam, valve, engine) -> FlowResult:
     Valve-train practical works (n.d.), work 1, eqs. (1.1)-(1.4); work 4, eqs. (4.1), (4.3); Shang Hanji (1988), eqs. (2.1)-(2.3).
     """
     law, omega = cam.law, cam.cam_speed
-    c_p = flow.mean_piston_speed(engine.stroke, engine.rated_speed * 30.0 / np.pi)
+    c_p = flow.mean_piston_speed(engine.stroke, to_display(engine.rated_speed, "rpm"))
     swept = float(flow.swept_volume(engine.bore, engine.stroke))
     lift = law.lift_max * cam.rocker_ratio
     d_g, seat = valve.throat_diameter, valve.seat_angle
@@ -488,7 +488,7 @@ def overlap_clearance_checks(valves) -> list[Check]:
     for name, v in valves.items():
         found = None if v.clearance is None else v.clearance.within(*window)
         if found is not None:
-            out.append(clearance_check(v.kind, *found, window).named(name))
+            out.append(clearance_check(v.kind, *found, window).of_valve(name))
     return out
 
 
@@ -505,35 +505,35 @@ def valve_checks(cam, flow_result, profile, valve, engine, timing) -> list[Check
                            charge_velocity=flow_result.charge_velocity, engine_type=engine.type,
                            chamber=engine.chamber, count=valve.count)
     drive = layout(valve)
-    out.append(layout_check("max tappet acceleration", cam.max_acceleration, drive, unit="m/s2"))
-    out.append(layout_check("min tappet acceleration", cam.min_acceleration, drive, unit="m/s2"))
+    out.append(layout_check("tappet_acceleration.max", cam.max_acceleration, drive, unit="m/s2"))
+    out.append(layout_check("tappet_acceleration.min", cam.min_acceleration, drive, unit="m/s2"))
     if valve.kind in TIMING_RANGES:
-        for label, angle, (lo, hi) in zip(("opening advance", "closing lag"), timing, TIMING_RANGES[valve.kind],
+        for label, angle, (lo, hi) in zip(("timing.opening_advance", "timing.closing_lag"), timing, TIMING_RANGES[valve.kind],
                                           strict=True):
             if angle is not None:
                 out.append(check(label, angle, lo, hi, source="Valve-train practical works (n.d.), work 2", unit="crank deg"))
     if law.clearance_on_flank:
-        out.append(check("clearance taken up without a ramp: valve seating velocity", cam.seating_velocity,
+        out.append(check("seating_velocity.without_ramp", cam.seating_velocity,
                          high=SEATING_VELOCITY_MAX, source=SEATING_VELOCITY_SOURCE, unit="m/s",
                          note=f"no ramp takes up clearance_mm = {valve.clearance / MM:g}: the flank does"))
-    out.append(check("seat angle", valve.seat_angle, *SEAT_ANGLE_USUAL[valve.kind],
+    out.append(check("valve.seat_angle", valve.seat_angle, *SEAT_ANGLE_USUAL[valve.kind],
                      source="Valve-train practical works (n.d.), work 1 (usually 30 deg inlet, 45 deg exhaust)", unit="deg", severity="info"))
-    out.append(check("clearance h0", valve.clearance, *CLEARANCE_RANGES[valve.kind], source="Valve-train practical works (n.d.), work 2",
+    out.append(check("valve.clearance", valve.clearance, *CLEARANCE_RANGES[valve.kind], source="Valve-train practical works (n.d.), work 2",
                      unit="mm"))
-    ratio = layout_check("rocker ratio", i_k, drive)
+    ratio = layout_check("drive.rocker_ratio", i_k, drive)
     if ratio is not None:
         out.append(ratio)
-    out.append(check("base radius r0 / valve lift", cam.base_radius / flow_result.valve_lift, *BASE_RADIUS_TO_LIFT_RANGE,
+    out.append(check("cam.base_radius_to_lift", cam.base_radius / flow_result.valve_lift, *BASE_RADIUS_TO_LIFT_RANGE,
                      source="Valve-train practical works (n.d.), work 2 (1.5-2.0; supercharged 3.0-4.0)"))
     follower = cam.follower_model
     if profile.undercut:
-        out.append(check(follower.undercut_quantity, profile.rho_min, low=0.0, strict_low=True,
+        out.append(check(follower.undercut_code, profile.rho_min, low=0.0, strict_low=True,
                          source=follower.undercut_source, unit="mm", severity="failure"))
     if follower.rolling:
-        out.append(check("max pressure angle", profile.contact.max_pressure_angle, high=PRESSURE_ANGLE_MAX,
+        out.append(check("profile.pressure_angle.max", profile.contact.max_pressure_angle, high=PRESSURE_ANGLE_MAX,
                          source="UkrSURT Proceedings (2019)", unit="deg"))
     if not profile.undercut:
-        out.append(check("rho_min (cam profile)", profile.rho_min, low=RHO_MIN, source="Shang Hanji (1988), section 2.1",
+        out.append(check("profile.rho_min", profile.rho_min, low=RHO_MIN, source="Shang Hanji (1988), section 2.1",
                          unit="mm"))
     return out
 
@@ -545,7 +545,7 @@ def mass_checks(valve, mass, throat_area) -> list[Check]:
     d = valve.drive
     if d.masses is None and d.specific_mass_kg_m2 is None:
         return []
-    c = layout_check("specific mass of the drive m' = m_v / f_g", mass / throat_area, layout(valve), unit="kg/m2",
+    c = layout_check("drive.specific_mass", mass / throat_area, layout(valve), unit="kg/m2",
                      severity="info")
     return [] if c is None else [c]
 
@@ -675,7 +675,7 @@ def design_valve(name, valve, engine, gas, output, law=None, progress=None, cyli
             raise SpecError([f"{at}.grinding.{exc}"]) from None
         found += grinding_found
     design = ValveDesign(name, valve.kind, valve.count, cam, flow_result, profile, clearance, records, drive,
-                         tuple(c.named(name) for c in found), dynamics, grinding)
+                         tuple(c.of_valve(name) for c in found), dynamics, grinding)
     return with_hydraulic(design, valve, engine, gas, cylinder)
 
 
@@ -700,7 +700,7 @@ def with_hydraulic(design, valve, engine, gas, cylinder=None) -> ValveDesign:
         hydraulic, found = hydraulic_stage(valve, design.cam.law, engine, gas, design.name, design.cam.nose, cylinder)
     except ValueError as exc:
         raise SpecError([f"valves.{design.name}.hydraulic.{exc}"]) from None
-    return replace(design, checks=design.checks + tuple(c.named(design.name) for c in found), hydraulic=hydraulic)
+    return replace(design, checks=design.checks + tuple(c.of_valve(design.name) for c in found), hydraulic=hydraulic)
 
 
 __all__ = ["CamResult", "ClearanceResult", "FlowResult", "LiftTable", "ProfileResult", "StepRecord", "ValveDesign",

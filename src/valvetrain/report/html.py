@@ -98,9 +98,9 @@ def not_checked(note, lang):
     return TEXT[lang]["not_checked_note"].format(check=label(m[1], lang), parts=parts)
 
 
-def _quantity(quantity, lang, parts):
-    """A check quantity in ``lang``, the name of its part (a valve, a port) marked as a name."""
-    text = quantity_text(quantity, lang, parts)
+def _quantity(check, lang, parts):
+    """A check's quantity in ``lang``, the name of its part (a valve, a port) marked as a name."""
+    text = quantity_text(check, lang)
     head, sep, rest = text.partition(": ")
     if sep and head in parts:
         return Markup('<span class="name">{}</span>: {}').format(head, rest)
@@ -126,10 +126,17 @@ def symbol_legend(lang):
 INPUT_SYMBOLS = ("i", "dg", "phi_seat", "hv", "h0", "ik", "r0", "w1", "Phi123", "Kz")
 """Symbols of the valve's input table."""
 
-WARNING_SYMBOLS = {"V1": r"V' ", "V2": r"V'' ", "V3": r"V''' ", "vvp": r"v_vp", "aT": r"tappet acceleration",
-                   "dg": r"throat diameter", "hv": r"valve lift", "h0": r"h0", "ik": r"rocker ratio", "r0": r"r0",
-                   "rho": r"rho_min", "Kz": r"K_z", "Phi123": r"Phi", "w1": r"ramp end velocity", "lambda": r"lambda"}
-"""Symbols that a check quantity may use (a pattern of the English quantity)."""
+WARNING_SYMBOLS = {
+    "V1": ("flow.throat_velocity",), "V2": ("flow.curtain_velocity",), "V3": ("flow.time_area_velocity",),
+    "vvp": ("flow.charge_velocity",), "aT": ("tappet_acceleration.max", "tappet_acceleration.min"),
+    "dg": ("flow.throat_to_bore", "flow.equivalent_throat_to_bore", "flow.lift_to_throat"),
+    "hv": ("flow.lift_to_throat", "cam.base_radius_to_lift", "hydraulic.max_lift", "hydraulic.residual_lift"),
+    "h0": ("valve.clearance",), "ik": ("drive.rocker_ratio",), "r0": ("cam.base_radius_to_lift",),
+    "rho": ("profile.undercut_flat", "profile.rho_min"), "Kz": ("spring.reserve",),
+    "Phi123": ("law.kurz.phi2_to_phi3", "law.kurz.negative_to_positive"), "w1": ("ramp.end_velocity",),
+    "lambda": ("engine.rod_ratio", "crank.rod_ratio"),
+}
+"""Symbols of the legend that the checks of these codes use."""
 
 
 def _coefficient_symbols(coefficients):
@@ -300,7 +307,7 @@ def render_report(results, plots, lang="en", folder=None):
     env.globals["figure"] = lambda name, alt: _figure(image, name, alt, TEXT[lang])
     spec = results.spec.model_dump()
     parts = list(results.valves) + (list(results.two_stroke.figures.ports) if results.two_stroke is not None else [])
-    env.filters["quantity"] = lambda q: _quantity(q, lang, parts)
+    env.filters["quantity"] = lambda c: _quantity(c, lang, parts)
     env.filters["diagnosis"] = lambda d: diagnosis_text(d, lang)
     valves = []
     for name, v in results.valves.items():
@@ -345,8 +352,8 @@ def render_report(results, plots, lang="en", folder=None):
         ports = {"inputs": [(k, v) for k, v in _flatten(spec["two_stroke"]) if not k.startswith("ports.")],
                  "plots": plots.get("two_stroke", {}),
                  "ports": {name: record(port) for name, port in results.two_stroke.figures.ports.items()}}
-    warning_symbols = [key for key, pattern in WARNING_SYMBOLS.items()
-                       if any(re.search(pattern, w.quantity) for w in (*results.warnings, *results.accepted))]
+    warning_symbols = [key for key, codes in WARNING_SYMBOLS.items()
+                       if any(w.code in codes for w in (*results.warnings, *results.accepted))]
     context = dict(
         t=TEXT[lang], warning_symbols=warning_symbols, lang=lang, version=__version__, engine=record(results.engine),
         engine_inputs=_flatten(spec["engine"]), valves=valves, warnings=results.warnings, accepted=results.accepted,

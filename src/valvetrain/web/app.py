@@ -21,7 +21,7 @@ import numpy as np
 from .. import api
 from ..report.html import check_range
 from ..report.i18n import TEXT
-from ..report.names import label, quantity_text, translate
+from ..report.names import label, record_quantity_text, translate
 from .session import form, parse_value, value_text, without_nones
 
 WORDS = {
@@ -301,7 +301,7 @@ class Designer:
         for c in sorted(results["checks"], key=lambda c: (c["pass"], {"failure": 0, "warning": 1}.get(c["severity"], 2),
                                                           c["margin"] if c["margin"] is not None else 1e300)):
             out["key"].append(c["quantity"])
-            out["quantity"].append(quantity_text(c["quantity"], self.lang, self.names))
+            out["quantity"].append(record_quantity_text(c, self.lang))
             out["value"].append("-" if c["value"] is None else f"{c['value']:.5g} {c['unit']}".rstrip())
             b = base.get(c["quantity"])
             out["baseline"].append("" if b is None or b["value"] is None else f"{b['value']:.5g}"
