@@ -9,7 +9,7 @@ import numpy as np
 
 from .. import lash_adjuster as hla
 from ..bibliography import cite
-from ..checks import check
+from ..checks import Check, check
 from .drive import event_load_maps
 from .dynamics import adjuster_reference_force
 from .results import quantity
@@ -59,14 +59,15 @@ class LashAdjusterResult:
     per_speed: LashAdjusterPerSpeed = quantity("per_speed", label="the lash adjuster at each speed")
 
 
-def _leak_rate(la, force, area):
+def _leak_rate(la, force, area) -> np.ndarray:
     """Plunger sink velocity [m/s] under ``force`` on the adjuster [N]."""
     pressure = (force - la.plunger_spring_N) / area - la.supply_pressure
     return hla.annular_leakage(pressure, la.plunger_diameter, la.radial_clearance, la.leak_length,
                                la.oil_viscosity) / area
 
 
-def lash_adjuster_stage(la, valve, engine, cam, drive, dynamics=None, name="valve"):
+def lash_adjuster_stage(la, valve, engine, cam, drive, dynamics=None,
+                        name="valve") -> tuple[LashAdjusterResult, list[Check]]:
     """The lash adjuster over the speed range (leak-down, refill, pump-up), with its checks.
 
     Parameters
@@ -126,20 +127,21 @@ def lash_adjuster_stage(la, valve, engine, cam, drive, dynamics=None, name="valv
         per.valve_lash[rated], max(per.refill_share), max(pumps) if pumps else None, max(helds) if helds else None,
         per)
     where = f"{at}.lash_adjuster"
-    found = [check("lash adjuster: refill time of the leak-down / base-circle time", result.max_refill_share,
+    found = [check("lash_adjuster.refill", result.max_refill_share,
                    high=1.0, source=f"{cite('merritt1967')}: annular leakage and the check valve's orifice flow; "
                    f"{where}", note="largest over the speeds up to the over-speed")]
     if pumps:
-        found.append(check("lash adjuster: pump-up during a float, up to the over-speed", result.max_pump_up,
+        found.append(check("lash_adjuster.pump_up", result.max_pump_up,
                            high=0.0, unit="um", source=f"{cite('merritt1967')}: the check valve's orifice flow; {where}"))
-        found.append(check("lash adjuster: valve held off its seat after a float, up to the over-speed",
+        found.append(check("lash_adjuster.held_open",
                            result.max_held_open, high=0.0, unit="um", severity="failure",
                            source=f"{cite('merritt1967')}: leak-down under the valve spring's preload over one base "
                                   f"circle; {where}"))
     return result, found
 
 
-def _pump_up(la, dynamics, ratio, refill, area, preload, base, low, high):
+def _pump_up(la, dynamics, ratio, refill, area, preload, base, low,
+             high) -> dict[float, tuple[float, float]]:
     """Pump-up [m] and valve held open [m] at each simulated speed in [low, high] [rad/s]: {speed: (pump, held)}."""
     if dynamics is None:
         return {}

@@ -8,7 +8,7 @@ import numpy as np
 
 from .. import tribology
 from ..bibliography import cite
-from ..checks import check
+from ..checks import Check, check
 from ..specification.messages import SpecError
 from ..strength import hertz_half_width
 from ..units import to_display
@@ -82,13 +82,13 @@ class UndercutError(ValueError):
     """The cam profile has no line contact with its follower somewhere."""
 
 
-def _weights(theta):
+def _weights(theta) -> np.ndarray:
     """Trapezoid weights of a sorted angle grid [rad]."""
     edges = np.concatenate([[theta[0]], (theta[1:] + theta[:-1]) / 2.0, [theta[-1]]])
     return np.diff(edges)
 
 
-def _zero_entrainment(cam, theta):
+def _zero_entrainment(cam, theta) -> tuple[float, ...]:
     """Camshaft angles [rad] where the entraining velocity changes sign (a sliding face's nose; none for a roller)."""
     follower, heel = cam.follower_model, cam.heel_radius
     h, dh, d2h = cam.law.derivatives(theta)[:3]
@@ -97,7 +97,7 @@ def _zero_entrainment(cam, theta):
     return tuple(float(t) for t in theta[1:][e[1:] * e[:-1] < 0.0])
 
 
-def contact_map(lub, cam, width, modulus, theta, force, omega):
+def contact_map(lub, cam, width, modulus, theta, force, omega) -> dict[str, np.ndarray]:
     """Film, regime, friction and temperature of the cam contact over speeds x camshaft angles.
 
     Parameters
@@ -151,7 +151,8 @@ def contact_map(lub, cam, width, modulus, theta, force, omega):
             "entraining": entraining}
 
 
-def lubrication_stage(lub, valve, engine, cam, drive, dynamics=None, name="valve"):
+def lubrication_stage(lub, valve, engine, cam, drive, dynamics=None,
+                      name="valve") -> tuple[LubricationResult, list[Check]]:
     """The lubrication of the cam contact from the lowest speed to the over-speed, with its checks.
 
     Parameters
@@ -218,11 +219,11 @@ def lubrication_stage(lub, valve, engine, cam, drive, dynamics=None, name="valve
     where = (f"at {to_display(worst[1], 'rpm'):.0f} rpm, {to_display(worst[2], 'cam deg'):.4g} cam deg from the nose"
              + ("; the film vanishes where the entraining velocity changes sign (squeeze film not modelled)"
                 if result.zero_entrainment else ""))
-    found = [check("cam contact: smallest film parameter lambda = h_min / sqrt(Rq1^2 + Rq2^2)", worst[0],
+    found = [check("lubrication.film_parameter", worst[0],
                    low=lub.min_film_parameter,
                    source=f"{cite('hamrock2004', 'ch. 1')}: boundary lubrication below lambda = 1; "
                           f"{at}.lubrication.min_film_parameter", severity="warning", note=where),
-               check("cam contact: largest contact temperature (oil + Blok's flash temperature)",
+               check("lubrication.contact_temperature",
                      result.max_contact_temperature, high=lub.max_contact_temperature_C, unit="degC",
                      source=f"{cite('blok1937')}: scuffing at a critical temperature of the oil; "
                             f"{at}.lubrication.max_contact_temperature_C", severity="failure",
