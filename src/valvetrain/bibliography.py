@@ -254,6 +254,13 @@ WORKS = {
         title="Hydraulic Control Systems", kind="book", publisher="John Wiley & Sons", place="New York", year="1967",
         note="The leakage of an annular clearance, the orifice equation, the effective bulk modulus of a liquid with "
              "entrained air."),
+    "sae_j300": Work(
+        short="SAE J300 (2015)",
+        authors="SAE International",
+        title="J300: Engine Oil Viscosity Classification", kind="standard", publisher="SAE International",
+        place="Warrendale, PA", year="2015",
+        note="The viscosity grades of engine oils: SAE 30 (and xW-30) has a kinematic viscosity at 100 degC from 9.3 "
+             "to below 12.5 mm^2/s."),
     "dowson1986": Work(
         short="Dowson, Harrison and Taylor (1986)",
         authors="Dowson, D.; Harrison, P.; Taylor, C. M.",

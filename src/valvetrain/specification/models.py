@@ -364,8 +364,17 @@ class Lubrication(_Model):
     The oil is taken at the inlet of the contact at ``oil_temperature_C``; roughnesses are RMS (R_q).  The friction
     coefficient falls linearly in the film parameter from ``boundary_friction`` (lambda <= 1) to
     ``full_film_friction`` (lambda >= 3); a roller adds ``roller_rolling_friction`` x load on its rolling velocity
-    and slides with ``roller_slip`` of the cam's surface velocity.  The defaults are this package's: an SAE 5W-30
-    engine oil near 100 degC, a ground cam, a polished follower."""
+    and slides with ``roller_slip`` of the cam's surface velocity.
+
+    Defaults: ``oil_viscosity_mPa_s`` = 10 at ``oil_temperature_C`` = 100 is an SAE 30 (or xW-30) oil of SAE J300
+    (2015), whose kinematic viscosity at 100 degC is 9.3 to below 12.5 mm^2/s: 10 mPa s is inside that range for an
+    oil density of 0.80 to 1.07 g/cm^3 (an engine oil's density near 100 degC, about 0.8 to 0.85 g/cm^3, is a typical
+    value, not from J300).  The other defaults are typical values chosen without a cited source:
+    ``pressure_viscosity_per_GPa`` = 20 (a mineral oil), the roughnesses of a ground cam (0.2 um) and a polished
+    follower (0.1 um), ``boundary_friction`` = 0.12, ``full_film_friction`` = 0.04, ``roller_rolling_friction`` =
+    0.005 and the limits ``min_film_parameter`` = 1 (where Hamrock, Schmid and Jacobson (2004) put the start of
+    boundary lubrication) and ``max_contact_temperature_C`` = 150 (the critical temperature of Blok (1937) is a property
+    of each oil; 150 is a typical value)."""
 
     oil_viscosity_mPa_s: _bounded(0.1, 2000.0, "mPa s") = 10.0
     pressure_viscosity_per_GPa: _bounded(1.0, 60.0, "1/GPa") = 20.0
@@ -400,7 +409,12 @@ class LashAdjuster(_Model):
 
     ``location``: ``"pivot"`` (the pivot of an end-pivot finger follower: it moves the valve by (i - 1) times its own
     motion and carries (i - 1) times the valve force) or ``"tappet"`` (in the tappet or bucket: i times its motion,
-    the cam force).  The defaults are this package's, of a lash adjuster of a passenger-car engine."""
+    the cam force).
+
+    Defaults: ``oil_viscosity_mPa_s`` = 10 is an SAE 30 (or xW-30) oil near 100 degC (SAE J300 (2015), as in
+    ``[lubrication]``).  The other defaults are typical values of a passenger-car adjuster chosen without a cited
+    source (its dimensions, the supply pressure, the plunger spring, the oil's bulk modulus of 1.5 GPa and its 2 %
+    free air); Merritt (1967) gives the formulas they enter, not these values."""
 
     location: Literal["pivot", "tappet"] = "pivot"
     plunger_diameter_mm: Length(2.0, 50.0, low_open=False) = 9.0
