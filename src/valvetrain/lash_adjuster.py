@@ -11,18 +11,20 @@ ATMOSPHERE = 1.013e5
 pressure (vacuum, -1 atm gauge)."""
 
 OIL_DENSITY = 850.0
-"""Density of an engine oil at its working temperature [kg/m^3] (the check valve's orifice flow)."""
+"""Density of an engine oil at its working temperature [kg/m^3] (the check valve's orifice flow): a typical value,
+not from a cited source."""
 
 DISCHARGE_COEFFICIENT = 0.6
-"""Discharge coefficient of the check valve's seat, a sharp-edged orifice (Merritt (1967), the orifice equation)."""
+"""Discharge coefficient of the check valve's seat, a sharp-edged orifice: a typical value (Merritt (1967) gives the
+orifice equation it enters)."""
 
 
-def plunger_area(diameter):
+def plunger_area(diameter: float) -> float:
     """pi d^2 / 4 [m^2] of a plunger of diameter ``diameter`` [m]."""
     return np.pi * diameter**2 / 4.0
 
 
-def annular_leakage(pressure_drop, diameter, clearance, length, viscosity):
+def annular_leakage(pressure_drop, diameter, clearance, length, viscosity) -> np.ndarray:
     """Laminar leakage through the plunger's concentric annular clearance [m^3/s].
 
     Parameters
@@ -51,7 +53,7 @@ def annular_leakage(pressure_drop, diameter, clearance, length, viscosity):
     return np.pi * diameter * clearance**3 * np.clip(pressure_drop, 0.0, None) / (12.0 * viscosity * length)
 
 
-def leak_down_time(force, stroke, diameter, clearance, length, viscosity):
+def leak_down_time(force, stroke, diameter, clearance, length, viscosity) -> np.ndarray:
     """Time [s] a plunger takes to sink by ``stroke`` [m] under a constant ``force`` [N], supply pressure zero.
 
     Notes
@@ -66,7 +68,7 @@ def leak_down_time(force, stroke, diameter, clearance, length, viscosity):
     return 12.0 * viscosity * length * area**2 * stroke / (np.pi * diameter * clearance**3 * force)
 
 
-def chamber_compression(pressure, supply, volume, bulk_modulus, air_content):
+def chamber_compression(pressure, supply, volume, bulk_modulus, air_content) -> np.ndarray:
     """Volume [m^3] the oil of the high-pressure chamber loses when its pressure rises from ``supply`` to
     ``pressure`` (gauge) [Pa].
 
@@ -95,7 +97,7 @@ def chamber_compression(pressure, supply, volume, bulk_modulus, air_content):
     return volume * ((pressure - supply) / bulk_modulus + air_content * ATMOSPHERE * (1.0 / supply_abs - 1.0 / absolute))
 
 
-def check_valve_flow(pressure_drop, diameter):
+def check_valve_flow(pressure_drop, diameter: float) -> np.ndarray:
     """Flow through the open check valve [m^3/s]: C_d (pi d^2 / 4) sqrt(2 dp / rho).
 
     Parameters
@@ -113,13 +115,13 @@ def check_valve_flow(pressure_drop, diameter):
                                                                      / OIL_DENSITY)
 
 
-def refill_pressure(supply, plunger_spring, area):
+def refill_pressure(supply: float, plunger_spring: float, area: float) -> float:
     """Pressure drop across the check valve [Pa] while the unloaded plunger extends: the supply less the chamber,
     whose pressure its spring draws to -F_s / A (no lower than a vacuum)."""
     return supply + min(plunger_spring / area, ATMOSPHERE)
 
 
-def motion_ratio(location, rocker_ratio):
+def motion_ratio(location: str, rocker_ratio: float) -> float:
     """Valve motion per adjuster motion, and the adjuster's force per valve force (virtual work).
 
     At the pivot of an end-pivot finger (``"pivot"``; pivot, roller at a, valve at L = i a): with the roller held on
@@ -131,7 +133,8 @@ def motion_ratio(location, rocker_ratio):
     return rocker_ratio - 1.0 if location == "pivot" else rocker_ratio
 
 
-def secant_stiffness(force, plunger_spring, area, supply, volume, bulk_modulus, air_content):
+def secant_stiffness(force: float, plunger_spring: float, area: float, supply: float, volume: float,
+                     bulk_modulus: float, air_content: float) -> tuple[float, float, float]:
     """Secant stiffness [N/m] of the oil column under ``force`` [N] on the plunger, its compression [m] and the chamber
     pressure [Pa, gauge] (the plunger spring ``plunger_spring`` [N] carries its share; no less than ``supply``).
 
@@ -145,7 +148,7 @@ def secant_stiffness(force, plunger_spring, area, supply, volume, bulk_modulus, 
     return (force / sink if sink > 0.0 else np.inf), sink, pressure
 
 
-def pump_up(gap, dt, rate):
+def pump_up(gap, dt: float, rate: float) -> float:
     """Extension [m] the plunger keeps after a float: it follows the opened gap at most at ``rate`` [m/s] and locks
     once the follower lands on it.
 

@@ -26,7 +26,7 @@ BLOK_LINE = 1.11
 over the full contact width 2b, both Peclet numbers large (Blok (1937))."""
 
 
-def reduced_modulus(contact_modulus):
+def reduced_modulus(contact_modulus: float) -> float:
     """E' = E_m / (1 - nu^2) [Pa], the reduced modulus of the elastohydrodynamic formulas.
 
     Parameters
@@ -45,7 +45,7 @@ def reduced_modulus(contact_modulus):
     return contact_modulus / (1.0 - POISSON**2)
 
 
-def flat_follower_velocities(omega, base_radius, h, d2h):
+def flat_follower_velocities(omega, base_radius, h, d2h) -> tuple[np.ndarray, np.ndarray]:
     """Surface velocities of cam and flat-faced follower relative to the contact point [m/s].
 
     Parameters
@@ -81,7 +81,8 @@ def flat_follower_velocities(omega, base_radius, h, d2h):
     return omega * (base_radius + h + d2h), omega * d2h
 
 
-def roller_follower_velocities(omega, base_radius, roller_radius, h, dh, rho, slip=0.0):
+def roller_follower_velocities(omega, base_radius, roller_radius, h, dh, rho,
+                               slip=0.0) -> tuple[np.ndarray, np.ndarray]:
     """Surface velocities of cam and roller relative to the contact point [m/s], with the roller's slip.
 
     Parameters
@@ -118,7 +119,8 @@ def roller_follower_velocities(omega, base_radius, roller_radius, h, dh, rho, sl
     return u_cam, (1.0 - slip) * u_cam
 
 
-def film_thickness_line(entraining, radius, load_per_width, viscosity, pressure_viscosity, reduced):
+def film_thickness_line(entraining, radius, load_per_width, viscosity, pressure_viscosity,
+                        reduced) -> np.ndarray:
     """Minimum film thickness of a lubricated line contact, Dowson and Higginson [m].
 
     Parameters
@@ -153,7 +155,7 @@ def film_thickness_line(entraining, radius, load_per_width, viscosity, pressure_
     return 2.65 * radius * u**0.70 * (pressure_viscosity * reduced) ** 0.54 * w ** -0.13
 
 
-def film_parameter(film, roughness_1, roughness_2):
+def film_parameter(film, roughness_1, roughness_2) -> np.ndarray:
     """lambda = h_min / sqrt(R_q1^2 + R_q2^2), the film thickness over the composite roughness.
 
     Parameters
@@ -170,7 +172,7 @@ def film_parameter(film, roughness_1, roughness_2):
     return film / np.hypot(roughness_1, roughness_2)
 
 
-def regime(lam):
+def regime(lam) -> np.ndarray:
     """The lubrication regime of film parameters ``lam``: 0 boundary, 1 mixed, 2 full film (:data:`REGIME_BANDS`).
 
     >>> regime(np.array([0.5, 1.0, 2.9, 3.0])).tolist()
@@ -179,7 +181,7 @@ def regime(lam):
     return np.searchsorted(np.asarray(REGIME_BANDS), lam, side="right")
 
 
-def friction_coefficient(lam, boundary, full_film):
+def friction_coefficient(lam, boundary, full_film) -> np.ndarray:
     """A Stribeck-type friction coefficient of the film parameter lambda.
 
     Parameters
@@ -207,7 +209,8 @@ def friction_coefficient(lam, boundary, full_film):
     return boundary + (full_film - boundary) * share
 
 
-def flash_temperature(friction, load_per_width, u_1, u_2, half_width, effusivity_1, effusivity_2):
+def flash_temperature(friction, load_per_width, u_1, u_2, half_width, effusivity_1,
+                      effusivity_2) -> np.ndarray:
     """Largest flash temperature rise of a sliding line contact, Blok [K].
 
     Parameters
@@ -240,7 +243,7 @@ def flash_temperature(friction, load_per_width, u_1, u_2, half_width, effusivity
     return np.divide(heat, sink, out=np.zeros(np.broadcast(heat, sink).shape), where=sink > 0.0)
 
 
-def friction_torque(force, friction, sliding, rolling_friction, rolling, omega):
+def friction_torque(force, friction, sliding, rolling_friction, rolling, omega) -> np.ndarray:
     """Camshaft torque of the contact's friction [N m]: the power it dissipates over the camshaft speed.
 
     Parameters
