@@ -12,9 +12,9 @@ command's own and cannot disagree with it.  Printed for each case, beside its ba
   it), as the command measured it (wall time, what a loaded machine stretches);
 * the processor time of one evaluation without the dynamics (:meth:`Problem.evaluate` with ``dynamics=False``, the
   cache emptied) at the search's own points, against its baseline, the processor time of one evaluation of the
-  start's law on the search's grid of angles (:data:`GRID`): the two are timed alternately, :data:`CHUNK` of each
-  in turn over :data:`PAIRED` of the search's points, so that both see the same load; the goal is at most 3 law
-  evaluations per evaluation.  Printed: the ratio of the summed times and the spread of the ratios of the chunks;
+  start's law on the search's grid of angles (:data:`GRID`): each evaluation at :data:`PAIRED` of the search's
+  points is followed by one of the law, so that both see the same load, in :data:`PASSES` passes; the goal is at
+  most 3 law evaluations per evaluation.  Printed: the ratio of the summed times and that of each pass;
 * the angles at which the law was sampled per evaluation, and the dynamics simulations of the search;
 * the objective at the start and at the optimum, and whether every limit is met (exit status 0).
 
@@ -26,7 +26,6 @@ Proceedings (2019)) with the 170 mm wheel and the command's defaults (no jump up
 import argparse
 import json
 from pathlib import Path
-import statistics
 import tempfile
 import time
 
@@ -42,8 +41,8 @@ from valvetrain.synthesis.optimize import GRID
 UKRSURT = Path(__file__).parents[1] / "examples" / "ukrsurt2019-diesel.toml"
 PAIRED = 600
 """Points of the search (evenly spread over it) at which an evaluation is timed against the law's."""
-CHUNK = 20
-"""Evaluations timed in one go, then as many law evaluations, alternately."""
+PASSES = 3
+"""Passes over the points; each gives a ratio."""
 
 
 class _Recorded(optimize.Problem):
@@ -58,25 +57,25 @@ PROBLEMS = []
 
 
 def paired(problem, law):
-    """(ratios of the chunks, summed evaluation time [s], summed law time [s], points): processor time of
-    :meth:`Problem.evaluate` without the dynamics at the search's points, alternately with the start's law on the
-    search's grid."""
+    """(ratio of each pass, summed evaluation time [s], summed law time [s], points): processor time of
+    :meth:`Problem.evaluate` without the dynamics at the search's points, each followed by an evaluation of the start's
+    law on the search's grid, over :data:`PASSES` passes."""
     theta = np.linspace(law.start, 0.0, GRID)
     points = [problem.points[i] for i in np.linspace(0, len(problem.points) - 1, PAIRED).astype(int)]
     ratios, total_eval, total_law = [], 0.0, 0.0
-    for k in range(0, len(points), CHUNK):
-        chunk = points[k:k + CHUNK]
+    for _ in range(PASSES):
         problem._cache.clear()
-        t0 = time.process_time()
-        for x in chunk:
+        evaluation = base = 0.0
+        for x in points:
+            t0 = time.process_time()
             problem.evaluate(x, dynamics=False)
-        t1 = time.process_time()
-        for _ in chunk:
+            t1 = time.process_time()
             law.derivatives(theta)
-        t2 = time.process_time()
-        ratios.append((t1 - t0) / (t2 - t1))
-        total_eval, total_law = total_eval + t1 - t0, total_law + t2 - t1
-    return ratios, total_eval, total_law, len(points)
+            t2 = time.process_time()
+            evaluation, base = evaluation + t1 - t0, base + t2 - t1
+        ratios.append(evaluation / base)
+        total_eval, total_law = total_eval + evaluation, total_law + base
+    return ratios, total_eval, total_law, PASSES * len(points)
 
 
 def case(name, path, *args):
@@ -103,9 +102,8 @@ def case(name, path, *args):
     ratios, evaluation, law, points = paired(PROBLEMS[0], run(load_spec(path)).valves[PROBLEMS[0].name].law)
     print(f"  processor time, paired: one evaluation without the dynamics {evaluation / points * 1e3:.3f} ms = "
           f"{evaluation / law:.2f} law evaluations (goal: <= 3; the baseline, one law evaluation on {GRID} angles: "
-          f"{law / points * 1e3:.3f} ms, timed alternately in chunks of {CHUNK} over {points} of the search's "
-          f"points); chunks' ratios {min(ratios):.2f} / {statistics.median(ratios):.2f} / {max(ratios):.2f} "
-          "(least / median / largest)")
+          f"{law / points * 1e3:.3f} ms, timed after each evaluation, {PAIRED} of the search's points, {PASSES} "
+          f"passes); the passes' ratios {', '.join(f'{r:.2f}' for r in ratios)}")
     print(f"  {record['objective']} {record['start_value']:.6g} -> {record['value']:.6g}; every limit met: "
           f"{record['feasible']}")
 
