@@ -214,7 +214,7 @@ def write_outputs(results, out, lang="en", inputs=(), force=False, figures="main
             if v.hydraulic is not None:
                 write_csv(tmp / v.hydraulic.table_file, hydraulic_columns(v.hydraulic))
                 write_csv(tmp / v.hydraulic.sweep_table, hydraulic_sweep_columns(v.hydraulic))
-            if v.summary["cam"]["undercut"]:
+            if v.profile.undercut:
                 continue  # no follower can trace an undercut profile: nothing is written for its manufacture
             g = v.grinding
             if g is not None and g.wear is not None:

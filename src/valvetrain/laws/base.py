@@ -100,7 +100,7 @@ class LiftLaw(ABC):
     @classmethod
     def from_mm_deg(cls, **keywords):
         """The law from keywords in the units of a specification file: a keyword ending in a unit (``lift_mm``,
-        ``phi1_deg``, ``ramp_velocity_mm_per_deg``; :data:`valvetrain.units.UNIT_SUFFIXES`) is the constructor's SI
+        ``phi1_deg``, ``ramp_velocity_mm_per_deg``; :data:`valvetrain.units.SUFFIXES`) is the constructor's SI
         parameter without the unit (``lift`` [m], ``phi1`` [rad], ``ramp_velocity`` [m/rad]); the others pass as
         they are.  The angles are the law's own: camshaft degrees.
 

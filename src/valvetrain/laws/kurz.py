@@ -230,11 +230,11 @@ class KurzLaw(RampedLaw, SymmetricLaw):
     def checks(self):
         """Recommended ranges of (2.1), (2.3) and (2.4)."""
         return [
-            check("ramp end velocity", self.ramp_velocity, *(w * 1e-3 / np.radians(1.0)
+            check("ramp.end_velocity", self.ramp_velocity, *(w * 1e-3 / np.radians(1.0)
                                                              for w in RAMP_VELOCITY_RANGE_MM_PER_DEG),
                   source="Valve-train practical works (n.d.), work 2, eq. (2.1)", unit="mm/deg"),
-            check("Phi2/Phi3", self.phi2 / self.phi3, *PHI2_TO_PHI3_RANGE, source="Valve-train practical works (n.d.), work 2, eq. (2.3)"),
-            check("(Phi2+Phi3)/Phi1", (self.phi2 + self.phi3) / self.phi1, *NEGATIVE_TO_POSITIVE_RANGE,
+            check("law.kurz.phi2_to_phi3", self.phi2 / self.phi3, *PHI2_TO_PHI3_RANGE, source="Valve-train practical works (n.d.), work 2, eq. (2.3)"),
+            check("law.kurz.negative_to_positive", (self.phi2 + self.phi3) / self.phi1, *NEGATIVE_TO_POSITIVE_RANGE,
                   source="Valve-train practical works (n.d.), work 2, eq. (2.4)"),
         ]
 

@@ -369,6 +369,7 @@ class PowerPolynomialLaw(SymmetricLaw):
         if self.reconstruction != "R2":
             return []
         src = "UkrSURT Proceedings (2019): exponent ranges from the authors' search studies"
-        return [check(f"power-polynomial exponent {k}", self.exponents[k], lo, hi, source=src, severity="info")
+        return [check("law.power_polynomial.exponent", self.exponents[k], lo, hi, source=src, severity="info",
+                      params={"exponent": k})
                 for k, (lo, hi) in EXPONENT_RANGES.items()]
 

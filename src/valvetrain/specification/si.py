@@ -13,6 +13,7 @@ angle a camshaft angle (the spec says which in its key documentation).
 
 from dataclasses import field, make_dataclass
 from functools import cache
+from typing import Any
 
 import numpy as np
 from pydantic import BaseModel
@@ -49,7 +50,7 @@ def _view_class(model):
                                                 "without the unit, in SI; ``section`` is the section itself)."})
 
 
-def si(section, root=None):
+def si(section, root=None) -> Any:
     """The SI view of a specification section (a pydantic model of :mod:`valvetrain.specification`).
 
     A section may name data it brings along in ``si_extras`` and provide them with
