@@ -38,7 +38,7 @@ import time
 import tomllib
 
 import numpy as np
-from pydantic import ValidationError
+from pydantic import BaseModel, ValidationError
 from scipy import optimize
 
 from .. import flow, springs
@@ -373,6 +373,7 @@ class Problem:
         self.mass = design.drive.masses.at_valve
         self.spring = design.drive.lines["chosen"]
         self.valve = si(self.section, self.spec)
+        self.parts = {v.path.split(".")[0] for v in self.variables}
         self.spring_inputs = (self.valve.throat_diameter, spring_options(self.valve.spring),
                               max(design.drive.spring.gas_force, design.drive.spring.seat_load))
         self.law0, self.frontier = design.law, None
@@ -427,8 +428,9 @@ class Problem:
         return names + ["spring design"]
 
     def point(self, x):
-        """The valve section's data with the variables ``x``."""
-        data = copy.deepcopy(self.data)
+        """The valve section's data with the variables ``x`` (the start's data, the parts the variables change
+        copied)."""
+        data = {**self.data, **{p: copy.deepcopy(self.data[p]) for p in self.parts if p in self.data}}
         for v, value in zip(self.variables, x, strict=True):
             v.put(data, float(value))
         cam = data["cam"]
@@ -447,7 +449,7 @@ class Problem:
         if section.cam.problems(f"valves.{self.name}", section, self.spec.engine):
             return None
         try:
-            valve = si(section, self.spec)
+            valve = self._si(section)
             law = valve.cam.section.build(valve, self.engine)
         except ValueError:
             return None
@@ -455,6 +457,13 @@ class Problem:
                 MAX_LIFT_TO_THROAT * valve.throat_diameter):
             return None
         return law, valve, section.drive.spring_reserve / self.reserve0
+
+    def _si(self, section):
+        """The SI view of a point's valve section: the start's, with the sections that the variables change made
+        anew (the whole view where a variable is a key of the valve itself)."""
+        if any(not isinstance(getattr(section, p), BaseModel) for p in self.parts):
+            return si(section, self.spec)
+        return replace(self.valve, section=section, **{p: si(getattr(section, p), self.spec) for p in self.parts})
 
     def _angles(self, law):
         """The grid of one evaluation and the law's junctions on it [rad from the nose]."""
