@@ -18,7 +18,7 @@ import difflib
 import numpy as np
 
 from .. import flow
-from ..checks import SEVERITIES, apply_acceptances, check, failed, ranked, valve_of
+from ..checks import SEVERITIES, apply_acceptances, check, failed, ranked, tally, valve_of
 from ..crank.pressure import PressureFileError
 from ..files import TableFileError
 from ..specification import Spec, SpecError, crank_geometry, si, spec_document, validate
@@ -78,20 +78,22 @@ class DesignResults:
         return ranked(c for c in failed(self.checks) if c.accepted)
 
     def _rows(self):
-        """One line of figures per valve: name, law, valve lift, time-area, fullness, spring, failed checks."""
+        """One line of figures per valve: name, law, valve lift, time-area, fullness, spring, open checks."""
         for name, v in self.valves.items():
             spring = v.drive.spring.design
             yield (name, v.law.name, f"{v.flow.valve_lift / MM:.4g}", f"{v.flow.time_area / MM**2:.4g}",
                    f"{v.flow.fullness:.4g}", f"{spring.wire_diameter / MM:g} x {spring.mean_diameter / MM:g}",
-                   f"{len(v.warnings)} of {len(v.checks)}")
+                   "{failure}, {warning}, {info} of {checks}".format(**tally(v.checks)))
 
-    _HEADS = ("valve", "law", "lift, mm", "time-area, mm2 s", "fullness", "spring wire x D, mm", "checks failed")
+    _HEADS = ("valve", "law", "lift, mm", "time-area, mm2 s", "fullness", "spring wire x D, mm",
+              "open failures, warnings, info")
 
     def __repr__(self):
+        from ..report.i18n import verdict
+
         e = record(self.engine)
         lines = [f"DesignResults: {e['name']} ({e['cylinders']} cyl., {e['bore_mm']:g} x {e['stroke_mm']:g} mm, "
-                 f"{e['rated_speed_rpm']:g} rpm), {len(self.warnings)} of {len(self.checks)} checks fail"
-                 + (f" ({len(self.accepted)} more accepted)" if self.accepted else "")]
+                 f"{e['rated_speed_rpm']:g} rpm)", *("  " + line for line in verdict(tally(self.checks)))]
         lines += ["  " + ", ".join(f"{h} {c}" for h, c in zip(self._HEADS, row, strict=True)) for row in self._rows()]
         if self.crank is not None:
             lines.append(f"  crank: mean torque {self.crank.figures.mean_torque:.4g} N m")
@@ -106,9 +108,13 @@ class DesignResults:
             body = "".join("<tr>" + "".join(f"<td>{escape(str(c))}</td>" for c in r) + "</tr>" for r in rows)
             return f"<table><tr>{head}</tr>{body}</table>"
 
+        from ..report.i18n import verdict
+
         warnings = [(w.severity, w.quantity, w.value_text, w.range, w.source) for w in self.warnings]
         accepted = [(w.severity, w.quantity, w.value_text, w.range, w.reason) for w in self.accepted]
-        return (f"<p><b>{escape(self.engine.name)}</b></p>" + table(self._HEADS, self._rows())
+        sentence, counts = verdict(tally(self.checks))
+        return (f"<p><b>{escape(self.engine.name)}</b></p><p>{escape(sentence)} {escape(counts)}</p>"
+                + table(self._HEADS, self._rows())
                 + "<p>Checks that fail</p>" + table(("severity", "quantity", "value", "allowed", "source"), warnings)
                 + ("<p>Accepted in the specification</p>" + table(("severity", "quantity", "value", "allowed",
                                                                    "reason"), accepted) if accepted else ""))

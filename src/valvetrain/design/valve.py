@@ -14,7 +14,7 @@ import math
 import numpy as np
 
 from .. import flow, geometry
-from ..checks import check, failed, ranked
+from ..checks import check, failed, ranked, tally
 from ..crank.kinematics import displacement
 from ..laws import LiftLaw
 from ..laws.base import Extremes
@@ -611,7 +611,7 @@ class ValveDesign:
         f = self.flow
         return (f"ValveDesign({self.name!r}: {self.kind}, {self.law.name} law, valve lift {f.valve_lift / MM:.4g} mm, "
                 f"time-area {f.time_area / MM**2:.4g} mm2 s, fullness {f.fullness:.4g}, "
-                f"{len(self.warnings)} of {len(self.checks)} checks fail)")
+                "open failures {failure}, warnings {warning}, info {info} of {checks} checks)".format(**tally(self.checks)))
 
 
 def design_valve(name, valve, engine, gas, output, law=None, progress=None, cylinder=None):

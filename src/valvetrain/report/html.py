@@ -10,7 +10,7 @@ from markupsafe import Markup
 import numpy as np
 
 from .. import __version__
-from ..checks import describe_range
+from ..checks import describe_range, tally
 from ..design.dynamics import SOURCES as DYNAMICS_SOURCES
 from ..design.grinding import SOURCES as GRINDING_SOURCES
 from ..design.hydraulic import SOURCES as HYDRAULIC_SOURCES
@@ -18,7 +18,7 @@ from ..design.results import record
 from ..tables import lift_table_columns
 from ..bibliography import WORKS, cited_in
 from ..units import to_display
-from .i18n import SYMBOLS, TEXT
+from .i18n import SYMBOLS, TEXT, verdict
 from .names import has_name, label, link_names, quantity_text, translate, unevaluated_text, unit_text, value_text
 
 TABLE_COLUMNS = ["cam_deg", "crank_deg", "segment", "tappet_lift_mm", "tappet_velocity_m_s",
@@ -261,7 +261,9 @@ def _summary(results, t):
                      **{key: sum(c.severity == level for c in v.warnings) for key, level in
                         (("failures", "failure"), ("warnings", "warning"), ("info", "info"))},
                      "accepted": len(v.accepted)})
-    return {"valves": rows, "failures": [c for c in results.warnings if c.severity == "failure"],
+    counts = tally(results.checks)
+    return {"verdict": verdict(counts, t["lang"]), "open_failures": counts["failure"],
+            "valves": rows, "failures": [c for c in results.warnings if c.severity == "failure"],
             "accepted_failures": [c for c in results.accepted if c.severity == "failure"]}
 
 
