@@ -29,6 +29,7 @@ class Engine(_Model):
     cylinders: Annotated[int, Field(ge=1, le=64)]
     strokes: Literal[2, 4]
     type: Literal["si", "si_injected", "diesel"] = "si"
+    engine_class: Optional[Literal["automotive_petrol", "automotive_diesel", "heavy_duty"]] = None
     chamber: Literal["side_valve", "overhead", "prechamber_diesel", "direct_injection_diesel", "wedge",
                      "hemispherical"] = "overhead"
     rod_length_mm: Optional[Length(5.0, 10000.0, low_open=False)] = None
