@@ -70,7 +70,7 @@ DISPLAY_UNITS = {
     "": 1.0, "mm": MM, "mm2": MM**2, "mm2 s": MM**2, "m": 1.0, "m/s": 1.0, "m/s2": 1.0, "m/s3": 1.0, "N": 1.0,
     "kN": 1e3, "cm3": 1e-6, "N/mm": 1.0 / MM, "N m": 1.0, "kg": 1.0, "kg/m2": 1.0, "kg mm2": MM**2, "MPa": MPA, "Pa": 1.0, "J": 1.0,
     "deg": DEG, "crank deg": DEG, "cam deg": DEG, "rad/s": 1.0, "Hz": 1.0, "rpm": np.pi / 30.0,
-    "mm/rad2": MM, "mm/rad": MM, "mm/deg": MM / DEG, "GPa": 1e3 * MPA, "us": 1e-6,
+    "mm/rad2": MM, "mm/rad": MM, "mm/deg": MM / DEG, "mm crank deg": MM * DEG, "GPa": 1e3 * MPA, "us": 1e-6,
 }
 """SI value of one display unit: a quantity of ``x`` SI is shown as ``x / DISPLAY_UNITS[unit]`` (tables,
 reports, check records); ``rpm`` is shown from rad/s."""

@@ -24,6 +24,7 @@ from ..files import TableFileError
 from ..specification import Spec, SpecError, crank_geometry, si, spec_document, validate
 from ..specification.models import Dynamics
 from ..units import MM
+from .camcard import CamCard, CamCardValve, cam_card_stage
 from .crank import LAMBDA_RANGE, CrankResults, CrankSummary, crank_stage, valve_timing
 from .drive import MassResult, SpringResult, StrengthResult
 from .dynamics import DynamicsResult
@@ -65,6 +66,7 @@ class DesignResults:
     checks: list                  # every valvetrain.checks.Check of the design, passed or not
     crank: CrankResults = None
     two_stroke: TwoStrokeResults = None
+    cam_card: CamCard = None      # a four-stroke's (valvetrain.camcard)
 
     @property
     def warnings(self):
@@ -132,6 +134,8 @@ class DesignResults:
             out["crank"] = self.crank.summary
         if self.two_stroke is not None:
             out["two_stroke"] = self.two_stroke.summary
+        if self.cam_card is not None:
+            out["cam_card"] = record(self.cam_card)
         out["warnings"] = [w.warning() for w in self.warnings]
         out["accepted"] = [w.warning() for w in self.accepted]
         out["checks"] = [c.as_dict() for c in self.checks]
@@ -204,7 +208,8 @@ def run(spec, laws=None, progress=None):
         if stage is not None:
             found += [c.named(tag) for c in stage.checks]
     found = accept(found, spec.accepted, valves)
-    return DesignResults(spec, engine_record(engine), valves, found, crank, ports)
+    card = cam_card_stage(valves) if valves and engine.strokes == 4 else None
+    return DesignResults(spec, engine_record(engine), valves, found, crank, ports, card)
 
 
 def accept(found, acceptances, valves):
@@ -390,6 +395,8 @@ def results_schema():
             "valvetrain_version": {"type": "string"}, "engine": json_schema(EngineRecord),
             "valves": {"type": "object", "additionalProperties": valve},
             "crank": json_schema(CrankSummary), "two_stroke": json_schema(TwoStrokeSummary),
+            "cam_card": json_schema(CamCard) | {"properties": json_schema(CamCard)["properties"] | {
+                "valves": {"type": "object", "additionalProperties": json_schema(CamCardValve)}}},
             "warnings": {"type": "array", "items": check_record,
                          "description": "the checks that fail and are not accepted, ranked: failures, warnings, info, "
                                         "the farthest outside (smallest margin) first"},

@@ -394,6 +394,7 @@ def render_report(results, plots, lang="en", folder=None):
         t=TEXT[lang], warning_symbols=warning_symbols, lang=lang, version=__version__, engine=record(results.engine),
         engine_inputs=_flatten(spec["engine"]), valves=valves, warnings=results.warnings, accepted=results.accepted,
         first_page=first_page, timing=plots.get("(timing)"), table_columns=TABLE_COLUMNS,
+        cam_card=None if results.cam_card is None else record(results.cam_card),
         dynamics_sources=DYNAMICS_SOURCES, grinding_sources=GRINDING_SOURCES,
         hydraulic_sources=HYDRAULIC_SOURCES,
         step=REPORT_STEP_DEG, output=_flatten(spec["output"]), crank=crank, ports=ports,

@@ -5,6 +5,14 @@ from ..laws.measured import FIT_REASONS, SMOOTHINGS
 TEXT = {
     "en": {
         "summary": "Summary", "summary_valves": "Valves", "timing_diagram": "Valve timing diagram",
+        "cam_card": "Cam card", "cc_at_seat": "seat to seat", "cc_at_1mm": "at 1 mm valve lift",
+        "cc_at_050": "at 0.050 in (1.27 mm) tappet lift", "cc_opens": "opens", "cc_closes": "closes",
+        "cc_duration": "duration", "cc_centre": "lobe centre", "cc_lift_tdc": "lift at TDC, mm",
+        "cc_separation": "lobe separation angle", "cc_overlap": "overlap seat to seat",
+        "cc_overlap_050": "overlap at 0.050 in", "cc_overlap_area": "overlap area",
+        "cc_note": "Crank degrees from the gas-exchange TDC (negative before it); a negative overlap is none. The "
+                   "checking heights are the cam trade's: 1 mm of valve lift, 0.050 in of tappet lift above the heel "
+                   "circle.",
         "figure_on_request": "The figure “{}” is drawn on request:",
         "intake": "intake", "exhaust": "exhaust", "overlap": "overlap", "tdc": "TDC", "bdc": "BDC",
         "valve_lift_mm": "valve lift, mm",
@@ -157,6 +165,14 @@ TEXT = {
     },
     "ru": {
         "summary": "Сводка", "summary_valves": "Клапаны", "timing_diagram": "Диаграмма фаз газораспределения",
+        "cam_card": "Паспорт кулачков", "cc_at_seat": "от седла до седла", "cc_at_1mm": "при подъёме клапана 1 мм",
+        "cc_at_050": "при подъёме толкателя 0,050 дюйма (1,27 мм)", "cc_opens": "открытие", "cc_closes": "закрытие",
+        "cc_duration": "продолжительность", "cc_centre": "ось кулачка", "cc_lift_tdc": "подъём в ВМТ, мм",
+        "cc_separation": "угол между осями кулачков", "cc_overlap": "перекрытие клапанов от седла до седла",
+        "cc_overlap_050": "перекрытие при 0,050 дюйма", "cc_overlap_area": "площадь перекрытия",
+        "cc_note": "Углы поворота коленчатого вала от ВМТ газообмена (до неё отрицательные); отрицательное "
+                   "перекрытие означает, что перекрытия нет. Контрольные подъёмы приняты по отраслевой практике: 1 мм "
+                   "подъёма клапана и 0,050 дюйма подъёма толкателя над цилиндрической частью кулачка.",
         "figure_on_request": "Рисунок «{}» строится по запросу:",
         "intake": "впускной", "exhaust": "выпускной", "overlap": "перекрытие", "tdc": "ВМТ", "bdc": "НМТ",
         "valve_lift_mm": "подъём клапана, мм",
