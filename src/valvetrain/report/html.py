@@ -19,6 +19,7 @@ from ..tables import lift_table_columns
 from ..bibliography import WORKS, cited_in
 from ..units import to_display
 from .i18n import SYMBOLS, TEXT, verdict
+from .russian import russian_citations
 from .names import has_name, label, link_names, quantity_text, translate, unevaluated_text, unit_text, value_text
 
 TABLE_COLUMNS = ["cam_deg", "crank_deg", "segment", "tappet_lift_mm", "tappet_velocity_m_s",
@@ -402,7 +403,8 @@ def render_report(results, plots, lang="en", folder=None):
     template = env.get_template("report.html")
     # the bibliography lists the works the report actually cites: found by their short form in a first rendering
     cited = cited_in(unescape(template.render(sources=[], **context)))
-    return template.render(sources=[(WORKS[k].short, WORKS[k].reference()) for k in cited], **context)
+    page = template.render(sources=[(WORKS[k].short, WORKS[k].reference()) for k in cited], **context)
+    return russian_citations(page) if lang == "ru" else page
 
 
 def _figure(image, name, alt, t):
