@@ -312,6 +312,37 @@ def _summary(results, t):
             "accepted_failures": [c for c in results.accepted if c.severity == "failure"]}
 
 
+def _conclusions(results, t):
+    """Per valve: the open checks in the verdict's words, the binding spring check and the three allowable limits
+    met with the least margin (what binds the design)."""
+    lang, out = t["lang"], []
+    for name, v in results.valves.items():
+        spring = v.summary["spring"]
+        binding = spring["binding_check"]
+        met = sorted((c for c in v.checks if c.passed and c.severity == "failure" and c.evaluated),
+                     key=lambda c: c.margin)[:3]
+        out.append({"name": name, "counts": verdict(tally(v.checks), lang)[1],
+                    "binding": f"{label('spring.' + binding, lang)} ({percent(spring['margins'][binding], lang)})",
+                    "closest": [(c.quantity, percent(c.margin, lang)) for c in met]})
+    return out
+
+
+TOC_HEADING = re.compile(r"<h2( class=\"[^\"]*\")?>(.*?)</h2>", re.S)
+
+
+def with_contents(page, title):
+    """The report with a numbered anchor on every chapter (``h2``) and a table of contents at ``<!--toc-->``."""
+    entries = []
+
+    def anchor(m):
+        entries.append(m.group(2))
+        return f'<h2 id="ch{len(entries)}"{m.group(1) or ""}>{m.group(2)}</h2>'
+
+    page = TOC_HEADING.sub(anchor, page)
+    items = "".join(f'<li><a href="#ch{i}">{text}</a></li>' for i, text in enumerate(entries, 1))
+    return page.replace("<!--toc-->", f'<nav id="toc"><h2 class="toc">{title}</h2><ol>{items}</ol></nav>', 1)
+
+
 def render_report(results, plots, lang="en", folder=None):
     """The report as HTML text.
 
@@ -396,6 +427,7 @@ def render_report(results, plots, lang="en", folder=None):
         engine_inputs=_flatten(spec["engine"]), valves=valves, warnings=results.warnings, accepted=results.accepted,
         first_page=first_page, timing=plots.get("(timing)"), table_columns=TABLE_COLUMNS,
         cam_card=None if results.cam_card is None else record(results.cam_card),
+        conclusions=_conclusions(results, TEXT[lang]), document=spec.get("document", {}),
         dynamics_sources=DYNAMICS_SOURCES, grinding_sources=GRINDING_SOURCES,
         hydraulic_sources=HYDRAULIC_SOURCES,
         step=REPORT_STEP_DEG, output=_flatten(spec["output"]), crank=crank, ports=ports,
@@ -404,6 +436,7 @@ def render_report(results, plots, lang="en", folder=None):
     # the bibliography lists the works the report actually cites: found by their short form in a first rendering
     cited = cited_in(unescape(template.render(sources=[], **context)))
     page = template.render(sources=[(WORKS[k].short, WORKS[k].reference()) for k in cited], **context)
+    page = with_contents(page, TEXT[lang]["toc"])
     return russian_citations(page) if lang == "ru" else page
 
 

@@ -5,6 +5,13 @@ from ..laws.measured import FIT_REASONS, SMOOTHINGS
 TEXT = {
     "en": {
         "summary": "Summary", "summary_valves": "Valves", "timing_diagram": "Valve timing diagram",
+        "toc": "Contents", "conclusions": "Conclusions", "appendix": "Appendix: input data and lift tables",
+        "cn_open": "checks", "cn_closest": "allowable limits met with the least margin",
+        "cn_closest_note": "What binds the design: the allowable limits (failure checks) it meets with the smallest "
+                           "margin, per valve, and the spring's binding check.",
+        "cn_accepted": "Accepted in the specification, with the reason given:",
+        "doc_number": "Document", "doc_engine": "Engine", "doc_date": "Date", "doc_author": "Calculated by",
+        "doc_checker": "Checked by", "doc_signature": "signature", "doc_organisation": "Organisation",
         "cam_card": "Cam card", "cc_at_seat": "seat to seat", "cc_at_1mm": "at 1 mm valve lift",
         "cc_at_050": "at 0.050 in (1.27 mm) tappet lift", "cc_opens": "opens", "cc_closes": "closes",
         "cc_duration": "duration", "cc_centre": "lobe centre", "cc_lift_tdc": "lift at TDC, mm",
@@ -165,6 +172,13 @@ TEXT = {
     },
     "ru": {
         "summary": "Сводка", "summary_valves": "Клапаны", "timing_diagram": "Диаграмма фаз газораспределения",
+        "toc": "Содержание", "conclusions": "Заключение", "appendix": "Приложение: исходные данные и таблицы подъёма",
+        "cn_open": "проверки", "cn_closest": "допускаемые пределы с наименьшим запасом",
+        "cn_closest_note": "Что ограничивает конструкцию: допускаемые пределы (проверки уровня «нарушение»), "
+                           "выполненные с наименьшим запасом, по каждому клапану, и определяющая проверка пружины.",
+        "cn_accepted": "Принято в исходных данных с указанным обоснованием:",
+        "doc_number": "Документ", "doc_engine": "Двигатель", "doc_date": "Дата", "doc_author": "Разработал",
+        "doc_checker": "Проверил", "doc_signature": "подпись", "doc_organisation": "Организация",
         "cam_card": "Паспорт кулачков", "cc_at_seat": "от седла до седла", "cc_at_1mm": "при подъёме клапана 1 мм",
         "cc_at_050": "при подъёме толкателя 0,050 дюйма (1,27 мм)", "cc_opens": "открытие", "cc_closes": "закрытие",
         "cc_duration": "продолжительность", "cc_centre": "ось кулачка", "cc_lift_tdc": "подъём в ВМТ, мм",

@@ -495,6 +495,20 @@ class Output(_Model):
     export_step_deg: _bounded(0.1, 10.0, "deg", low_open=False) = 1.0
 
 
+_TEXT = Annotated[str, Field(max_length=200)]
+
+
+class Document(_Model):
+    """[document]: the title block of the calculation note (report.html); every key optional, printed as given."""
+
+    number: Optional[_TEXT] = None
+    title: Optional[_TEXT] = None
+    organisation: Optional[_TEXT] = None
+    author: Optional[_TEXT] = None
+    checker: Optional[_TEXT] = None
+    date: Optional[_TEXT] = None
+
+
 _NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_-]{0,31}$")
 
 
@@ -526,6 +540,7 @@ class Spec(_Model):
     crank: Optional[CrankSpec] = None
     two_stroke: Optional[TwoStroke] = None
     output: Output = Output()
+    document: Document = Document()
     accepted: list[Acceptance] = []
     source_dir: Optional[str] = Field(default=None, exclude=True)
     """Folder of the specification file: relative file names (pressure_file) are read from there."""
