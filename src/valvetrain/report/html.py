@@ -357,6 +357,8 @@ def render_report(results, plots, lang="en", folder=None):
         The output folder holding ``plots/``: the figures are embedded in the report (one file to mail); without
         it they are linked.
     """
+    from .worked import flow_lines, spring_lines
+
     env = Environment(loader=PackageLoader("valvetrain", "report/templates"), autoescape=select_autoescape())
     env.filters["fmt"] = lambda x: fmt(x, lang)
     env.filters["label"] = lambda key: label(key, lang)
@@ -387,6 +389,8 @@ def render_report(results, plots, lang="en", folder=None):
         valves.append({
             "name": name, "valve": v, "summary": s, "plots": plots.get(name, {}),
             "inputs": _flatten(spec["valves"][name]),
+            "worked_flow": flow_lines(spec["valves"][name], s["flow"], record(results.engine), lang),
+            "worked_spring": spring_lines(s["spring"], lang) if "wire_mm" in s["spring"] else [],
             "flow": [(k, s["flow"][k]) for k in FLOW_KEYS],
             "time_area": [(k, s["flow"][k]) for k in TIME_AREA_KEYS],
             "cam": [(k, s["cam"][k]) for k in CAM_KEYS],

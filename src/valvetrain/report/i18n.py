@@ -5,7 +5,7 @@ from ..laws.measured import FIT_REASONS, SMOOTHINGS
 TEXT = {
     "en": {
         "summary": "Summary", "summary_valves": "Valves", "timing_diagram": "Valve timing diagram",
-        "toc": "Contents", "conclusions": "Conclusions", "appendix": "Appendix: input data and lift tables",
+        "worked": "Worked substitution", "toc": "Contents", "conclusions": "Conclusions", "appendix": "Appendix: input data and lift tables",
         "cn_open": "checks", "cn_closest": "allowable limits met with the least margin",
         "cn_closest_note": "What binds the design: the allowable limits (failure checks) it meets with the smallest "
                            "margin, per valve, and the spring's binding check.",
@@ -172,7 +172,7 @@ TEXT = {
     },
     "ru": {
         "summary": "Сводка", "summary_valves": "Клапаны", "timing_diagram": "Диаграмма фаз газораспределения",
-        "toc": "Содержание", "conclusions": "Заключение", "appendix": "Приложение: исходные данные и таблицы подъёма",
+        "worked": "Подстановка чисел в расчётные формулы", "toc": "Содержание", "conclusions": "Заключение", "appendix": "Приложение: исходные данные и таблицы подъёма",
         "cn_open": "проверки", "cn_closest": "допускаемые пределы с наименьшим запасом",
         "cn_closest_note": "Что ограничивает конструкцию: допускаемые пределы (проверки уровня «нарушение»), "
                            "выполненные с наименьшим запасом, по каждому клапану, и определяющая проверка пружины.",
