@@ -3,7 +3,7 @@
 from matplotlib.figure import Figure
 import numpy as np
 
-from ..units import MM, rad_to_deg, to_display
+from ..units import DEG, MM, rad_to_deg, to_display
 from .i18n import TEXT
 from .names import value_text
 
@@ -43,10 +43,18 @@ def kinematics_figure(valve, t):
     axes[0].plot(x, tab.lift / MM, label=t["tappet_lift"])
     axes[0].plot(x, tab.valve_lift / MM, label=t["valve_lift"])
     axes[0].legend(loc="upper right")
-    for ax, y, label in zip(axes, (None, tab.velocity, tab.acceleration, tab.jerk),
-                            ("lift", "velocity", "acceleration", "jerk"), strict=True):
+    moving = tab.valve_lift > 0.0
+    w = valve.omega_cam
+    per_deg = MM / DEG    # a speed-independent derivative in mm/deg^n from m/rad^n: divide by MM / DEG^n
+    for n, (ax, y, label) in enumerate(zip(axes, (None, tab.velocity, tab.acceleration, tab.jerk / 1e3),
+                                           ("lift", "velocity", "acceleration", "jerk"), strict=True)):
         if y is not None:
-            ax.plot(x, y, color="C0")
+            ax.plot(x, y, color="C0", label=t["k_tappet"])
+            ax.plot(x, np.where(moving, valve.rocker_ratio * y, np.nan), color="C1", ls="--", lw=1.0,
+                    label=t["k_valve"])
+            scale = (1e3 if n == 3 else 1.0) / w**n * DEG ** (n - 1) / per_deg
+            right = ax.secondary_yaxis("right", functions=(lambda v, s=scale: v * s, lambda v, s=scale: v / s))
+            right.set_ylabel(t[f"per_deg{n}"])
         ax.set_ylabel(t[label])
         ax.grid(alpha=0.3)
         ax.axhline(0.0, color="0.5", lw=0.5)
@@ -54,6 +62,7 @@ def kinematics_figure(valve, t):
     if valve.law.acceleration_steps():
         jerk_impulses(axes[-1], valve.law, valve.omega_cam)
         axes[-1].set_title(t["jerk_impulse"], fontsize=8, color="C3", loc="right")
+    axes[1].legend(loc="upper right", fontsize=8)
     axes[-1].set_xlabel(t["cam_deg"])
     top = axes[0].secondary_xaxis("top", functions=(lambda c: 2 * c + rad_to_deg(valve.nose_crank),
                                                      lambda k: (k - rad_to_deg(valve.nose_crank)) / 2))
