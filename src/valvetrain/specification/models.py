@@ -492,7 +492,7 @@ class Output(_Model):
 
     table_step_cam_deg: _bounded(0.05, 10.0, "deg", low_open=False) = 0.5
     contour_points: Annotated[int, Field(ge=36, le=100000)] = 721
-    export_step_deg: _bounded(0.1, 10.0, "deg", low_open=False) = 1.0
+    export_step_deg: _bounded(0.1, 10.0, "deg", low_open=False) = 0.25
 
 
 _TEXT = Annotated[str, Field(max_length=200)]
