@@ -19,7 +19,7 @@ from reference_dynamics import seat_crossings  # noqa: E402  the tests' independ
 from valvetrain.design import sweep_designs
 from valvetrain.dynamics.models import one_mass_train
 from valvetrain.dynamics.sweep import sweep
-from valvetrain.specification.validate import load_spec
+from valvetrain.specification.reading import load_spec
 
 
 def main():

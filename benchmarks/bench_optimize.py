@@ -30,7 +30,7 @@ import numpy as np
 from valvetrain.cli import main as cli
 from valvetrain.design import run
 from valvetrain.specification import example_text
-from valvetrain.specification.validate import load_spec
+from valvetrain.specification.reading import load_spec
 from valvetrain.synthesis.optimize import GRID
 
 from timing import best_time

@@ -14,8 +14,9 @@ import time
 import numpy as np
 
 from valvetrain import springs
-from valvetrain.design.drive import drive_stage, spring_options, strength_stage, train_mass
+from valvetrain.design.drive import drive_stage, spring_options, strength_stage
 from valvetrain.design.valve import design_valve, flow_stage, law_stage, profile_stage, valve_checks
+from valvetrain.layouts import train_mass
 from valvetrain.specification import example_spec, si
 
 from timing import best_time

@@ -68,7 +68,7 @@ def test_contour_csv_and_dxf(written):
     assert len(msp.query("LINE[layer=='SEGMENT_BOUNDARIES']")) == len(law.breakpoints) - 2
     ends = sorted((line.dxf.end.x, line.dxf.end.y) for line in ramps)
     a = law.end - law.ramp_angle
-    expected = sorted(map(tuple, (law.profile(np.array([-a, a]), 19.75e-3, "flat", 0.0)[0] * 1e3).T))
+    expected = sorted(map(tuple, (law.profile(np.array([-a, a]), 19.75e-3)[0] * 1e3).T))
     assert np.allclose(ends, expected, atol=0.05)  # the contour point nearest the ramp end (0.5 deg sampling)
 
 
@@ -103,7 +103,7 @@ def test_manufacturing_tables(written):
     radius = np.array([float(r[1]) for r in rows])
     assert np.allclose(np.diff(psi), 0.25)  # [output] export_step_deg = 0.25 (issue 24: 0.1-0.25 deg for manufacture)
     theta = np.linspace(-np.pi, np.pi, 400001)
-    x, y = v.law.profile(theta, v.heel_radius, "flat", 0.0)[0] * 1e3
+    x, y = v.law.profile(theta, v.heel_radius)[0] * 1e3
     ang = np.degrees(np.arctan2(x, y))
     order = np.argsort(ang)
     assert np.allclose(radius, np.interp(psi, ang[order], np.hypot(x, y)[order]), atol=1e-6)
@@ -113,7 +113,7 @@ def test_manufacturing_tables(written):
     assert header == ["cam_deg", "x_mm", "y_mm"]
     cam = np.radians([float(r[0]) for r in rows])
     xy = np.array([[float(r[1]), float(r[2])] for r in rows]).T
-    assert np.allclose(xy, v.law.profile(cam, v.heel_radius, "flat", 0.0)[0] * 1e3, atol=1e-9)
+    assert np.allclose(xy, v.law.profile(cam, v.heel_radius)[0] * 1e3, atol=1e-9)
 
 
 def test_exported_lift_table_reads_back(written):

@@ -1,4 +1,4 @@
-"""The grinding geometry (valvetrain.manufacture): the wheel-centre path, the master cam and the lift error of wheel
+"""The grinding geometry (valvetrain.cam_grinding): the wheel-centre path, the master cam and the lift error of wheel
 wear (issue 13, "Tests": the wheel-centre path of a circle-arc cam is a circle; zero wear gives zero lift error; the
 first-order wear error agrees with re-enveloping for small wear; and the master reproduces the cam lift through the
 master follower and the bar ratio)."""
@@ -9,8 +9,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from valvetrain import geometry, manufacture as mf
+from valvetrain import cam_grinding as mf, geometry
 from valvetrain.design import run
+from valvetrain.followers import FLAT, RollerFollower
 from valvetrain.specification import load_spec
 from valvetrain.laws.convex import ThreeArcLaw
 
@@ -21,6 +22,11 @@ TOL = 1e-6
 """Lift tolerance of the simulated grinder [m]: its master and its wheel positions are sampled (30001 and 4000
 points), the error of a roller on a polygon."""
 THETA = np.linspace(-np.pi, np.pi, 721)
+
+
+def follower_of(name, radius):
+    """The follower object of a test parameter."""
+    return RollerFollower(radius) if name == "roller" else FLAT
 
 
 def disc_flat(theta):
@@ -45,7 +51,7 @@ def disc_roller(theta, radius=A):
 @pytest.mark.parametrize("wheel", [0.05, 0.3])
 def test_the_wheel_centre_path_of_a_disc_cam_is_a_circle(follower, derivs, wheel):
     """The offset of a circle is a concentric circle: radius a + R_w about the disc centre, exactly."""
-    c, length, psi = mf.wheel_centre_path(derivs, THETA, HEEL, wheel, follower, R_ROLLER)
+    c, length, psi = mf.wheel_centre_path(derivs, THETA, HEEL, wheel, follower_of(follower, R_ROLLER))
     assert np.hypot(c[0], c[1] - E) == pytest.approx(A + wheel, abs=1e-15)
     assert length == pytest.approx(np.hypot(*c), abs=0)
     # the flat-follower closed form of the method: L = sqrt((R0 + h + R_w)^2 + h'^2), psi = theta + atan(h'/(...))
@@ -72,9 +78,9 @@ def test_the_wheel_centre_path_of_a_three_arc_cam_is_made_of_circle_arcs():
 
 @pytest.mark.parametrize("follower, derivs", [("flat", disc_flat), ("roller", disc_roller)])
 def test_zero_wear_gives_zero_lift_error(follower, derivs):
-    worn = mf.worn_wheel_lift(derivs, THETA, HEEL, 0.3, 0.0, follower, R_ROLLER)
+    worn = mf.worn_wheel_lift(derivs, THETA, HEEL, 0.3, 0.0, follower_of(follower, R_ROLLER))
     assert worn - derivs(THETA)[0] == pytest.approx(0.0, abs=1e-15)
-    first, phase = mf.wear_error_first_order(derivs, THETA, HEEL, 0.0, follower, R_ROLLER)
+    first, phase = mf.wear_error_first_order(derivs, THETA, HEEL, 0.0, follower_of(follower, R_ROLLER))
     assert not first.any() and not phase.any()
 
 
@@ -89,7 +95,7 @@ def test_a_worn_wheel_on_a_flat_follower_cam_gives_no_lift_error():
 def test_re_enveloping_is_exact_on_a_disc_cam_with_a_roller(wear):
     """A worn wheel on the design path grinds a disc larger by the wear; the roller's lift on it is known in closed
     form, and the re-enveloped lift equals it to round-off at any wear."""
-    worn = mf.worn_wheel_lift(disc_roller, THETA, HEEL, 0.3, wear, "roller", R_ROLLER)
+    worn = mf.worn_wheel_lift(disc_roller, THETA, HEEL, 0.3, wear, RollerFollower(R_ROLLER))
     exact = disc_roller(THETA, A + wear)[0] - wear
     assert worn == pytest.approx(exact, abs=1e-15)
 
@@ -99,8 +105,9 @@ def test_the_first_order_wear_error_agrees_with_re_enveloping_for_small_wear():
     O(w^2), so the difference falls a hundredfold when the wear falls tenfold."""
     misses = []
     for wear in (1e-4, 1e-5):
-        exact = mf.worn_wheel_lift(disc_roller, THETA, HEEL, 0.3, wear, "roller", R_ROLLER) - disc_roller(THETA)[0]
-        first, phase = mf.wear_error_first_order(disc_roller, THETA, HEEL, wear, "roller", R_ROLLER)
+        roller = RollerFollower(R_ROLLER)
+        exact = mf.worn_wheel_lift(disc_roller, THETA, HEEL, 0.3, wear, roller) - disc_roller(THETA)[0]
+        first, phase = mf.wear_error_first_order(disc_roller, THETA, HEEL, wear, roller)
         assert np.max(np.abs(first)) > 0.005 * wear   # a real error: the pressure angle reaches 7.7 deg
         misses.append(np.max(np.abs(exact - first)))
         assert misses[-1] < 0.01 * np.max(np.abs(first))
@@ -159,7 +166,7 @@ def test_the_master_reproduces_the_cam_lift_through_its_follower_and_the_bar_rat
     i, r_m = 2.5, 0.03
     base = 0.4   # not the default: the master's own heel circle
     dense = np.linspace(-np.pi, np.pi, 30001)
-    master = mf.master_contour(law.derivatives, dense, heel, wheel, i, base, r_m, follower, roller)
+    master = mf.master_contour(law.derivatives, dense, heel, wheel, i, base, r_m, follower_of(follower, roller))
     assert np.min(np.hypot(*master)) == pytest.approx(base, abs=1e-12)
     # the master follower on the sampled contour, at every spindle angle psi
     psi = np.linspace(-np.pi, np.pi, 4000, endpoint=False)
@@ -170,7 +177,7 @@ def test_the_master_reproduces_the_cam_lift_through_its_follower_and_the_bar_rat
         near = np.abs(across) < r_m
         s[k] = np.max(along[near] + np.sqrt(r_m**2 - across[near] ** 2))
     assert np.min(s) == pytest.approx(base + r_m, abs=1e-7)   # a roller on a polygon of the master
-    lift = mf.master_follower_lift(law.derivatives, psi, heel, wheel, i, follower, roller)
+    lift = mf.master_follower_lift(law.derivatives, psi, heel, wheel, i, follower_of(follower, roller))
     assert s - (base + r_m) == pytest.approx(lift, abs=1e-7)
     # the wheel centre from the head's travel, its envelope, and the follower on the ground cam
     length = heel + wheel + (s - (base + r_m)) / i
@@ -220,7 +227,7 @@ def test_a_concave_stretch_smaller_than_the_wheel_cannot_be_ground():
     concave = -v.grinding.concave_radius
     assert 0.05 < concave < 0.1
     for wheel, ok in ((0.9 * concave, True), (1.1 * concave, False)):
-        assert mf.grindable(v.law.derivatives, theta, v.heel_radius, wheel, "roller", v.roller_radius)[0] is ok
+        assert mf.grindable(v.law.derivatives, theta, v.heel_radius, wheel, v.follower_model)[0] is ok
 
 
 @pytest.mark.parametrize("follower", ["flat", "roller"])
@@ -229,14 +236,15 @@ def test_infeed_keeps_the_base_circle_and_its_first_order_error_agrees_with_re_e
     w (1 - cos gamma) (times sec beta for a roller) differs from the re-enveloped one by O(w^2)."""
     law, heel, wheel, roller = cam_for(follower, 0.3)
     theta = np.linspace(-np.pi, np.pi, 721)
-    zero = mf.worn_wheel_lift(law.derivatives, theta, heel, wheel, 0.0, follower, roller, infeed=True)
+    kind = follower_of(follower, roller)
+    zero = mf.worn_wheel_lift(law.derivatives, theta, heel, wheel, 0.0, kind, infeed=True)
     assert zero == pytest.approx(law.lift(theta), abs=1e-15)
     misses = []
     for wear in (1e-3, 1e-4):
-        exact = mf.worn_wheel_lift(law.derivatives, theta, heel, wheel, wear, follower, roller, infeed=True)
+        exact = mf.worn_wheel_lift(law.derivatives, theta, heel, wheel, wear, kind, infeed=True)
         error = exact - law.lift(theta)
         assert error[0] == pytest.approx(0.0, abs=1e-15)           # on the base circle: restored
-        first = mf.wear_error_first_order(law.derivatives, theta, heel, wear, follower, roller, wheel, True)[0]
+        first = mf.wear_error_first_order(law.derivatives, theta, heel, wear, kind, wheel, True)[0]
         assert np.max(np.abs(error)) > 1e-3 * wear                 # a flat follower sees an error too
         misses.append(np.max(np.abs(error - first)))
         assert misses[-1] < 0.05 * np.max(np.abs(error))

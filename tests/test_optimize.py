@@ -16,7 +16,7 @@ import pytest
 from valvetrain.cli import main
 from valvetrain.design import run
 from valvetrain.specification import example_spec, example_text
-from valvetrain.specification.validate import load_spec, parse_spec
+from valvetrain.specification.reading import load_spec, parse_spec
 from valvetrain.synthesis.constraints import Limits, contact_stress_value
 from valvetrain.synthesis.optimize import (Problem, Variable, default_variables, design_limits, optimize_valve,
                                            parse_variables)

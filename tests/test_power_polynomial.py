@@ -155,7 +155,7 @@ def _spec_text(**keys):
 def test_specification_refusals(keys, words):
     """Keys out of their bounds or that admit no cam are refused with a message that names them."""
     from valvetrain.specification.messages import SpecError
-    from valvetrain.specification.validate import parse_spec
+    from valvetrain.specification.reading import parse_spec
     with pytest.raises(SpecError) as err:
         parse_spec(_spec_text(**keys))
     assert words in str(err.value)
@@ -165,14 +165,14 @@ def test_no_room_for_the_dwell_is_refused_at_the_design():
     """A weak positive part needs a phi_2 beyond the half angle: the design refuses it naming the keys."""
     from valvetrain.design import run
     from valvetrain.specification.messages import SpecError
-    from valvetrain.specification.validate import parse_spec
+    from valvetrain.specification.reading import parse_spec
     with pytest.raises(SpecError, match="peak_acceleration_mm_per_rad2"):
         run(parse_spec(_spec_text(peak_acceleration_mm_per_rad2=20.0)))
 
 
 def test_the_spec_builds_the_article_law():
     from valvetrain.design import run
-    from valvetrain.specification.validate import parse_spec
+    from valvetrain.specification.reading import parse_spec
     law = run(parse_spec(_spec_text())).valves["intake"].law
     assert isinstance(law, PowerPolynomialLaw)
     assert np.degrees(law.phi2) == pytest.approx(39.40, abs=0.01)

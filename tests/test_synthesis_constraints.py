@@ -10,7 +10,7 @@ import pytest
 from valvetrain.checks import Check
 from valvetrain.design import run
 from valvetrain.laws import PolydyneLaw
-from valvetrain.specification.validate import load_spec, parse_spec
+from valvetrain.specification.reading import load_spec, parse_spec
 from valvetrain.synthesis.constraints import (Limits, concave_radius, constraints, contact_stress_value, rho_min,
                                               spring_reserve_value, worst_margin)
 

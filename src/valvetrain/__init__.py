@@ -3,9 +3,11 @@
 Three layers:
 
 * physics functions: :mod:`valvetrain.flow`, :mod:`valvetrain.geometry`, :mod:`valvetrain.springs`,
-  :mod:`valvetrain.strength`, :mod:`valvetrain.crank`, :mod:`valvetrain.dynamics`, :mod:`valvetrain.manufacture`
-  (pure, vectorised, SI units);
-* objects: the lift laws of :mod:`valvetrain.laws` (:class:`KurzLaw`, :class:`PolydyneLaw`, ...);
+  :mod:`valvetrain.strength`, :mod:`valvetrain.crank`, :mod:`valvetrain.dynamics`,
+  :mod:`valvetrain.cam_grinding`, :mod:`valvetrain.hydraulic_actuation`, :mod:`valvetrain.layouts` (pure,
+  vectorised, SI units);
+* objects: the lift laws of :mod:`valvetrain.laws` (:class:`KurzLaw`, :class:`PolydyneLaw`, ...) and the followers
+  of :mod:`valvetrain.followers` (flat, roller);
 * orchestration and edges: :mod:`valvetrain.specification` (the validated TOML specification and its SI
   view), :mod:`valvetrain.design` (the stages and :func:`run`), :mod:`valvetrain.export`,
   :mod:`valvetrain.report`, :mod:`valvetrain.cli`.
@@ -25,7 +27,7 @@ _PUBLIC = {
     **dict.fromkeys(["DesignResults", "ValveDesign", "clearance_stage", "design_valve", "flow_stage", "law_stage",
                      "profile_stage", "run", "valve_checks"], "design"),
     "grinding_stage": "design.grinding",
-    "hydraulic_stage": "design.hydraulic",
+    "hydraulic_stage": "design.hydraulic_actuation",
     **dict.fromkeys(["AsymmetricLaw", "CombinedLaw", "ConstantAccelerationLaw", "DynamicLaw", "HarmonicLaw", "KurzLaw",
                      "LiftLaw", "PolydyneLaw", "PolynomialLaw", "TangentLaw", "ThreeArcLaw"], "laws"),
     **dict.fromkeys(["SpecError", "example_spec", "load_spec", "parse_spec", "si"], "specification"),

@@ -8,7 +8,7 @@ import numpy as np
 
 from .design.dynamics import sweep_columns
 from .design.grinding import master_cartesian_columns, master_polar_columns, wear_columns
-from .design.hydraulic import sweep_columns as hydraulic_sweep_columns, table_columns as hydraulic_columns
+from .design.hydraulic_actuation import sweep_columns as hydraulic_sweep_columns, table_columns as hydraulic_columns
 from .outfolder import atomic_folder
 from .specification import spec_toml
 from .tables import (cartesian_contour_columns, contour_columns, crank_columns, engine_torque_columns,

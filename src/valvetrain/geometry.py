@@ -14,7 +14,8 @@ Lengths in m, angles in rad.
 import numpy as np
 
 
-def _axes(theta):
+def axes(theta):
+    """The follower axis u = (sin theta, cos theta) and t = du/dtheta = (cos theta, -sin theta), each (2, n)."""
     s, c = np.sin(theta), np.cos(theta)
     return np.stack([s, c]), np.stack([c, -s])
 
@@ -47,7 +48,7 @@ def flat_follower_contour(theta, base_radius, h, dh):
     ----------
     Shang Hanji (1988), section 2.1, eq. (2.15) (same curve, rotated so that the nose is on +y).
     """
-    u, t = _axes(theta)
+    u, t = axes(theta)
     return (base_radius + h) * u + dh * t
 
 
@@ -105,7 +106,7 @@ def roller_follower_contour(theta, base_radius, roller_radius, h, dh):
     Shang Hanji (1988), section 2.1, eq. (2.16) (with R00 the roller radius, corrections
     note 33).
     """
-    u, t = _axes(theta)
+    u, t = axes(theta)
     g = roller_pitch_radius(base_radius, roller_radius, h)
     n = (g * u - dh * t) / np.hypot(g, dh)
     return g * u - roller_radius * n

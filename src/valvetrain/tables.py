@@ -137,14 +137,14 @@ def polar_contour_columns(valve, step_deg):
     interpolated, so the table is exact at any step.
     """
     targets = np.radians(np.arange(-180.0, 180.0, step_deg))
-    radii = valve.law.polar_radius(targets, valve.heel_radius, valve.follower, valve.roller_radius)
+    radii = valve.law.polar_radius(targets, valve.heel_radius, valve.follower_model)
     return {"polar_angle_deg": np.degrees(targets), "radius_mm": radii / MM}
 
 
 def cartesian_contour_columns(valve, step_deg):
     """Contour points every ``step_deg`` of camshaft angle [deg, mm] (follower angle from the nose)."""
     theta = np.radians(np.arange(-180.0, 180.0, step_deg))
-    x, y = valve.law.profile(theta, valve.heel_radius, valve.follower, valve.roller_radius)[0] / MM
+    x, y = valve.law.profile(theta, valve.heel_radius, valve.follower_model)[0] / MM
     return {"cam_deg": np.degrees(theta), "x_mm": x, "y_mm": y}
 
 

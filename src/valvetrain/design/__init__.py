@@ -29,7 +29,7 @@ from .crank import LAMBDA_RANGE, CrankResults, CrankSummary, crank_stage, valve_
 from .drive import MassResult, SpringResult, StrengthResult
 from .dynamics import DynamicsResult
 from .grinding import GrindingResult
-from .hydraulic import CylinderPressure, HydraulicResult
+from .hydraulic_actuation import CylinderPressure, HydraulicResult
 from .results import json_schema, quantity, record
 from .twostroke import TwoStrokeResults, TwoStrokeSummary, two_stroke_stage
 from .valve import (THROAT_AREA_SHARE_RANGE, CamResult, ClearanceResult, FlowResult, ProfileResult, ValveDesign,

@@ -14,10 +14,10 @@ from typing import Optional, Union
 
 import numpy as np
 
-from .. import flow, geometry, masses, springs, strength
+from .. import flow, masses, springs, strength
 from ..checks import check
+from ..layouts import chain, layout, train_mass
 from ..spring_materials import grade
-from ..specification.cams import layout, train_mass
 from ..specification.si import si_name
 from ..units import to_display
 from .dynamics import SPEED_RANGE
@@ -459,16 +459,6 @@ def _worst(maps, values):
     return best
 
 
-def _radius(cam, theta):
-    """Radius of curvature of the cam profile at camshaft angles [m] (Shang Hanji (1988), eqs. (2.6)-(2.7))."""
-    return cam.law.curvature(theta, cam.heel_radius, cam.follower, cam.roller_radius)
-
-
-def _curvature(cam, theta):
-    """1/rho_1 + 1/rho_2 of the cam contact at camshaft angles [1/m] (Shang Hanji (1988), eq. (2.11))."""
-    return 1.0 / _radius(cam, theta) + (1.0 / cam.roller_radius if cam.follower == "roller" else 0.0)
-
-
 def strength_stage(valve, gas, engine, cam, drive, dynamics=None):
     """Work 7 over the speed range: every strength check the layout and the given dimensions allow, at its worst.
 
@@ -528,7 +518,7 @@ def _where(w):
 def _strength(valve, cam, theta, maps, p_open):
     """Work 7 on the load maps: every check the layout and the given dimensions allow, at its worst point."""
     i_k = cam.rocker_ratio
-    parts, drive_layout, flat = valve.parts, layout(valve), cam.follower == "flat"
+    parts, drive, follower = valve.parts, chain(valve), cam.follower_model
     notes, verdicts = [], []
     load = _worst(maps, [m.force for m in maps])
     p_max, at_load = load.value, _where(load)
@@ -553,24 +543,24 @@ def _strength(valve, cam, theta, maps, p_open):
         verdicts.append(strength.verdict("camshaft_deflection", f, joined(
             at_load, f"coefficient {parts.camshaft_deflection_coefficient:.4g} (corrections note 20: not 0.8)")))
     if need(["cam_width_mm"], "cam_contact_stress"):
-        rho = _radius(cam, theta)
-        # line contact needs a convex profile (flat) or a concave one wider than the roller
-        if not np.all((rho > 0.0) if flat else (rho > 0.0) | (rho < -cam.roller_radius)):
+        # Shang Hanji (1988), eqs. (2.6)-(2.7): the profile's radius of curvature along the open event
+        if not np.all(follower.line_contact(cam.law.curvature(theta, cam.heel_radius, follower))):
             notes.append("cam_contact_stress: not checked, the profile is undercut (no line contact)")
         else:
             width = parts.cam_width
-            stresses = [strength.hertz_line_stress(m.force, width, _curvature(cam, m.theta), e_contact) for m in maps]
+            stresses = [follower.contact_stress(m.force, cam.law.curvature(m.theta, cam.heel_radius, follower), width,
+                                                e_contact) for m in maps]
             stress = _worst(maps, stresses)
             verdicts.append(strength.verdict("cam_contact_stress", stress.value, joined(
                 _where(stress), "along the profile with the instantaneous force and radius (Shang Hanji (1988), "
                 "eq. 2.5)")))
-    if drive_layout in ("direct", "pushrod") and flat and \
+    if drive.tappet and not follower.rolling and \
             need(["tappet_diameter_mm", "tappet_guide_length_mm"], "tappet_side_pressure"):
         b = float(np.max(np.abs(cam.law.derivatives(theta)[1])))
         q = strength.tappet_side_pressure(p_max, b, parts.tappet_diameter, parts.tappet_guide_length)
         verdicts.append(strength.verdict("tappet_side_pressure", q, joined(
             at_load, f"offset b = {to_display(b, 'mm'):.4g} mm = max dh/dphi (7.7)")))
-    if drive_layout == "pushrod":
+    if drive.pushrod:
         if need(["pushrod_length_mm", "pushrod_diameter_mm"], "pushrod_buckling_margin"):
             inertia = strength.second_moment(parts.pushrod_diameter, parts.pushrod_bore)
             p_cr = strength.euler_load(parts.pushrod_modulus, inertia, parts.pushrod_length)
@@ -582,7 +572,7 @@ def _strength(valve, cam, theta, maps, p_open):
                 p_max, e_contact, parts.ball_radius, parts.socket_radius), at_load))
         if need(["pushrod_head_area_mm2"], "pushrod_head_pressure"):
             verdicts.append(strength.verdict("pushrod_head_pressure", p_max / parts.pushrod_head_area, at_load))
-    if drive_layout in ("rocker", "pushrod"):
+    if drive.rocker:
         if need(["rocker_pad_width_mm", "rocker_pad_radius_mm"], "rocker_pad_stress"):
             verdicts.append(strength.verdict("rocker_pad_stress", strength.rocker_pad_stress(
                 p_max / i_k, e_contact, parts.rocker_pad_width, parts.rocker_pad_radius), at_load))
@@ -595,11 +585,11 @@ def _strength(valve, cam, theta, maps, p_open):
             verdicts.append(strength.verdict("rocker_shaft_shear", st["shear"], at_load))
             verdicts.append(strength.verdict("rocker_shaft_bearing", st["bearing"], at_load))
     side, found = None, []
-    if flat:
-        found += _edge_loading(parts, drive_layout, cam, maps, width, notes)
-    else:
-        side, side_check = _roller_side_force(cam, maps, drive_layout)
+    if follower.rolling:
+        side, side_check = _roller_side_force(cam, follower, maps, drive)
         found.append(side_check)
+    else:
+        found += _edge_loading(parts, drive, cam, follower, maps, width, notes)
     return StrengthResult(
         (0.0, 0.0), "", load.value, load.angle, load.speed, p_max / i_k, p_open,
         None if stress is None else stress.angle, None if stress is None else stress.speed,
@@ -644,7 +634,7 @@ def _exhaust_gas_force(valve, gas):
                         source=WORKS_7_1, note=note)
 
 
-def _edge_loading(parts, drive_layout, cam, maps, width, notes):
+def _edge_loading(parts, drive, cam, follower, maps, width, notes):
     """The flat follower's contact against the edge of its face: max(|dh/dphi| + Hertz half-width) <= face radius.
 
     The contact point of a flat follower lies dh/dphi from its axis (Shang's contour, eq. 2.15); the contact
@@ -654,7 +644,7 @@ def _edge_loading(parts, drive_layout, cam, maps, width, notes):
     """
     if parts.tappet_face_diameter is not None:
         face, key = parts.tappet_face_diameter, "tappet_face_diameter_mm"
-    elif drive_layout in ("direct", "pushrod") and parts.tappet_diameter is not None:
+    elif drive.tappet and parts.tappet_diameter is not None:
         face, key = parts.tappet_diameter, "tappet_diameter_mm (no tappet_face_diameter_mm: a bucket tappet)"
     else:
         notes.append("flat_follower_edge_loading: not checked, parts.tappet_face_diameter_mm not given")
@@ -664,7 +654,8 @@ def _edge_loading(parts, drive_layout, cam, maps, width, notes):
         offset = np.abs(cam.law.derivatives(m.theta)[1])
         if width is None:
             return np.broadcast_to(offset, m.force.shape)
-        return offset + strength.hertz_half_width(m.force, width, _curvature(cam, m.theta), parts.contact_modulus)
+        curvature = follower.contact_curvature(cam.law.curvature(m.theta, cam.heel_radius, follower))
+        return offset + strength.hertz_half_width(m.force, width, curvature, parts.contact_modulus)
 
     w = _worst(maps, [reach(m) for m in maps])
     offset = abs(float(cam.law.derivatives(np.array([w.angle]))[1, 0]))
@@ -676,18 +667,17 @@ def _edge_loading(parts, drive_layout, cam, maps, width, notes):
                        f"from parts.{key}")]
 
 
-def _roller_side_force(cam, maps, drive_layout):
+def _roller_side_force(cam, follower, maps, drive):
     """The largest side force of a roller follower over the speeds, P_T tan(alpha): a :class:`Worst` and its (info)
     record."""
     def side(m):
         h, dh = cam.law.derivatives(m.theta)[:2]
-        return strength.roller_side_force(m.force, geometry.roller_pressure_angle(cam.heel_radius, cam.roller_radius,
-                                                                                   h, dh))
+        return strength.roller_side_force(m.force, follower.pressure_angle(cam.heel_radius, h, dh))
 
     w = _worst(maps, [side(m) for m in maps])
     h, dh = cam.law.derivatives(np.array([w.angle]))[:2]
-    beta = abs(float(geometry.roller_pressure_angle(cam.heel_radius, cam.roller_radius, h, dh)[0]))
-    carrier = "the tappet guide" if drive_layout in ("direct", "pushrod") else "the rocker and its shaft"
+    beta = abs(float(follower.pressure_angle(cam.heel_radius, h, dh)[0]))
+    carrier = "the tappet guide" if drive.tappet else "the rocker and its shaft"
     return w, check(
         "roller follower side force", w.value, unit="N", severity="info",
         source=f"{NORTON} (pressure angle: side load F_n sin(alpha)); no source gives an allowable",

@@ -22,8 +22,8 @@ from ..dynamics.models import (CoilSpring, camshaft_stiffness, direct_train, nat
 from ..dynamics.perturbation import perturbation_parameter
 from ..dynamics.resonance import resonance
 from ..dynamics.sweep import sweep, sweep_size
+from ..layouts import chain, layout
 from ..specification import SpecError
-from ..specification.cams import layout
 from ..units import DEG, MM, cam_per_crank, rpm_to_rad_s, to_display
 from .results import quantity, record
 
@@ -207,13 +207,14 @@ def _link_estimates(valve, k):
         cam = camshaft_stiffness(parts.cam_to_bearing, parts.camshaft_span - parts.cam_to_bearing,
                                  parts.camshaft_diameter, parts.camshaft_bore, parts.camshaft_modulus) / k**2
     links = [("camshaft and cam contact", cam)]
-    if layout(valve) == "pushrod":
+    drive = chain(valve)
+    if drive.pushrod:
         rod = None
         if None not in (parts.pushrod_length, parts.pushrod_diameter):
             rod = pushrod_stiffness(parts.pushrod_length, parts.pushrod_diameter, parts.pushrod_bore,
                                     parts.pushrod_modulus) / k**2
         links.append(("pushrod", rod))
-    links.append(("valve stem and tappet" if layout(valve) == "direct" else "rocker and valve joint", None))
+    links.append(("rocker and valve joint" if drive.rocker else "valve stem and tappet", None))
     return links
 
 
@@ -345,26 +346,25 @@ def build_train(dyn, valve, law, drive, at, cam_speed=None):
 
 def _multi_train(valve, links, springs, lash, kw, at):
     """A pushrod, rocker or direct multi-mass train from the part masses of [drive.masses]."""
-    m = valve.drive.masses
-    need = {"pushrod": ("tappet_kg", "pushrod_kg", "rocker_inertia_kg_mm2"), "rocker": ("rocker_inertia_kg_mm2",),
-            "direct": ("tappet_kg",)}[layout(valve)]
+    m, drive = valve.drive.masses, chain(valve)
+    need = drive.train_masses
     if m is None:
         raise SpecError([f"{at}.dynamics.model = \"multi\" needs [{at}.drive.masses] with valve_kg, "
                          f"{', '.join(need)} (the masses of the drive parts)"])
     si_keys = {"tappet_kg": "tappet_kg", "pushrod_kg": "pushrod_kg", "rocker_inertia_kg_mm2": "rocker_inertia"}
     missing = [key for key in need if getattr(m, si_keys[key]) <= 0.0]
-    if layout(valve) != "direct" and valve.drive.valve_arm is None:
+    if drive.rocker and valve.drive.valve_arm is None:
         missing.append("valve_arm_mm (in [drive])")
     if missing:
-        raise SpecError([f"{at}.dynamics.model = \"multi\" with layout \"{layout(valve)}\" needs positive "
+        raise SpecError([f"{at}.dynamics.model = \"multi\" with layout \"{drive.name}\" needs positive "
                          f"drive.masses.{', '.join(missing)}"])
     k = valve.rocker_ratio
     valve_mass = m.valve_kg + m.retainer_kg + m.cotters_kg
     inf = math.inf
-    if layout(valve) == "pushrod":
+    if drive.pushrod:
         return pushrod_train(m.tappet_kg, m.pushrod_kg, m.rocker_inertia, valve_mass, valve.drive.valve_arm, k,
                              links[0] * k**2, links[1] * k**2, links[2], inf, springs, lash, **kw)
-    if layout(valve) == "rocker":
+    if drive.rocker:
         return rocker_train(m.rocker_inertia, valve_mass, valve.drive.valve_arm, k, links[0] * k**2, links[1], inf,
                             springs, lash, **kw)
     return direct_train(m.tappet_kg, valve_mass, links[0], links[1], springs, lash, **kw)
@@ -391,7 +391,7 @@ POOR_FILM_BAND = (0.4, 0.6)
 h_min vanishes at gamma = 0.5); the width of the band is this package's choice."""
 
 
-def rated_contact(r, law, heel_radius, roller_radius, width, modulus):
+def rated_contact(r, law, heel_radius, follower, width, modulus):
     """The cam contact at one speed under the simulated force: Hertz stress, lubrication characteristic, drive torque.
 
     Parameters
@@ -400,8 +400,8 @@ def rated_contact(r, law, heel_radius, roller_radius, width, modulus):
     law : LiftLaw
     heel_radius : float
         Circle the law's lift starts from [m].
-    roller_radius : float or None
-        [m]; None for a flat follower (then the lubrication characteristic too).
+    follower : valvetrain.followers.Follower
+        The cam's follower (the lubrication characteristic where it has one).
     width : float or None
         Cam width [m]; None: no stress.
     modulus : float
@@ -426,11 +426,11 @@ def rated_contact(r, law, heel_radius, roller_radius, width, modulus):
            "mean_drive_torque": float(r.torque.mean())}
     j = None
     if width is not None:
-        sigma = dynamic_contact_stress(law, theta, force, heel_radius, width, modulus, roller_radius)
+        sigma = dynamic_contact_stress(law, theta, force, heel_radius, width, modulus, follower)
         j = int(np.argmax(sigma))
         out.update(max_contact_stress=float(sigma[j]), max_contact_stress_angle=float(theta[j]))
-    if roller_radius is None:
-        gamma = lubrication_characteristic(law, theta, heel_radius)
+    gamma = lubrication_characteristic(law, theta, heel_radius, follower)
+    if gamma is not None:
         loaded = (force > 0.0) & (law.lift(theta) > 0.0)
         poor = loaded & (gamma >= POOR_FILM_BAND[0]) & (gamma <= POOR_FILM_BAND[1])
         step = float(theta[1] - theta[0])
@@ -516,9 +516,8 @@ def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, 
     eps_rated = float(perturbation_parameter(m, c, kk, engine.rated_speed * to_cam))
     rated_record = speed_record(rated, engine.rated_speed, eps_rated)
     if cam is not None:
-        roller = cam.roller_radius if cam.follower == "roller" else None
-        rated_record = replace(rated_record, **rated_contact(rated, law, cam.heel_radius, roller, valve.parts.cam_width,
-                                                             valve.parts.contact_modulus))
+        rated_record = replace(rated_record, **rated_contact(rated, law, cam.heel_radius, cam.follower_model,
+                                                             valve.parts.cam_width, valve.parts.contact_modulus))
     out = DynamicsResult(
         dyn.model, params, (float(low), float(high)), int(dyn.speeds), crank(head["jump_speed"]),
         crank(head["bounce_onset_speed"]), head["max_seating_velocity"], crank(head["max_seating_velocity_speed"]),

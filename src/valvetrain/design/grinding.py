@@ -4,9 +4,9 @@
 From the cam's law and follower (the law stage) and the SI view of the grinding section, the stage gives
 the wheel-centre path, the master follower's lift, the master contour (for the master's own manufacture,
 also its flat-follower lift for a surface grinder) and the follower lift error of a cam ground by a worn
-wheel, exact and first order (:mod:`valvetrain.manufacture`).  A wheel that cannot grind a concave
+wheel, exact and first order (:mod:`valvetrain.cam_grinding`).  A wheel that cannot grind a concave
 stretch of the cam, or a master its roller cannot follow, is a failure check, and nothing of that
-master is written for manufacture.
+master is written for cam_grinding.
 """
 
 from dataclasses import dataclass, field
@@ -14,7 +14,7 @@ from typing import Optional
 
 import numpy as np
 
-from .. import manufacture
+from .. import cam_grinding
 from ..checks import check
 from ..units import MM
 from .results import quantity
@@ -121,37 +121,37 @@ def grinding_stage(grinding, cam, name, export_step):
 
     References
     ----------
-    Shang Hanji (1988), ch. 6; :mod:`valvetrain.manufacture`.
+    Shang Hanji (1988), ch. 6; :mod:`valvetrain.cam_grinding`.
     """
-    law, heel, follower, roller = cam.law, cam.heel_radius, cam.follower, cam.roller_radius
+    law, heel, follower = cam.law, cam.heel_radius, cam.follower_model
     derivs = law.derivatives
     r_w, r_m, i = grinding.wheel_radius, grinding.master_follower_radius, grinding.bar_ratio
     base = grinding.master_base_radius
     if base is None:
-        base = manufacture.default_master_base_radius(heel, r_w, i, r_m)
+        base = cam_grinding.default_master_base_radius(heel, r_w, i, r_m)
         if base <= 0.0:
             raise ValueError(f"master_follower_radius_mm = {r_m / MM:g}: the master's heel radius bar_ratio x (cam heel "
                              f"radius + wheel_radius_mm) - master_follower_radius_mm = {base / MM:.4g} mm is not "
                              f"positive; allowed master_follower_radius_mm < {i * (heel + r_w) / MM:.4g} mm, or give "
                              "master_base_radius_mm")
     theta = np.unique(np.concatenate([np.linspace(-np.pi, np.pi, DENSE, endpoint=False), law.breakpoints]))
-    ok, factor = manufacture.grindable(derivs, theta, heel, r_w, follower, roller)
-    cam_contour, rho = law.profile(theta, heel, follower, roller)[:2]
+    ok, factor = cam_grinding.grindable(derivs, theta, heel, r_w, follower)
+    cam_contour, rho = law.profile(theta, heel, follower)[:2]
     # a roller cam is concave where its pitch curve is (rho + R_r < 0); a flat follower's cam is never concave (its
     # rho <= 0 is an undercut, a failure of the profile stage)
-    concave = rho[rho + roller < 0.0] if follower == "roller" else rho[:0]
+    concave = rho[follower.concave(rho)]
     concave_radius = float(np.max(concave)) if concave.size else None
     found = []
     if concave_radius is not None:
         found.append(check("cam concave radius |rho| against the grinding wheel radius", -concave_radius, low=r_w,
                            strict_low=True, source=CONCAVE_SOURCE, unit="mm", severity="failure",
                            note=f"a wheel of radius {r_w / MM:g} mm cannot grind a concave stretch of smaller radius"))
-    path, length, _ = manufacture.wheel_centre_path(derivs, theta, heel, r_w, follower, roller)
+    path, length, _ = cam_grinding.wheel_centre_path(derivs, theta, heel, r_w, follower)
     l_min, l_max = heel + r_w, float(np.max(length))
-    args = (heel, r_w, i, base, r_m, follower, roller)
+    args = (heel, r_w, i, base, r_m, follower)
     master_ok, master_rho, convex = False, None, False
     if ok:   # a looped wheel path has no master
-        pitch_rho = manufacture.master_pitch_curvature(derivs, theta, *args)
+        pitch_rho = cam_grinding.master_pitch_curvature(derivs, theta, *args)
         convex = bool(np.all(pitch_rho > r_m))
         master_rho = float(np.min(np.where(pitch_rho > 0.0, pitch_rho, np.inf)) - r_m)
         master_ok = master_rho > 0.0
@@ -169,20 +169,20 @@ def grinding_stage(grinding, cam, name, export_step):
         return GrindingResult(**result), found
     if master_ok:
         psi = np.radians(np.arange(-180.0, 180.0, np.degrees(export_step)))
-        wheel = manufacture.wheel_centre_radius(derivs, psi, heel, r_w, follower, roller)
-        contour = manufacture.master_contour(derivs, theta, *args)
-        radius = manufacture.master_polar_radius(derivs, psi, *args)
+        wheel = cam_grinding.wheel_centre_radius(derivs, psi, heel, r_w, follower)
+        contour = cam_grinding.master_contour(derivs, theta, *args)
+        radius = cam_grinding.master_polar_radius(derivs, psi, *args)
         flat = np.full_like(psi, np.nan)
         if convex:
-            flat = manufacture.master_flat_lift(derivs, psi, *args)
+            flat = cam_grinding.master_flat_lift(derivs, psi, *args)
             result["master_flat_lift"] = float(np.max(flat))
         result.update(master=MasterTable(psi, wheel, i * (wheel - l_min), radius, flat), master_contour=contour,
                       master_angle=theta)
     t = np.arange(law.start, law.end + 0.5 * WEAR_STEP, WEAR_STEP)
     lift = law.lift(t)
     infeed = grinding.wear_compensation == "infeed"
-    worn = manufacture.worn_wheel_lift(derivs, t, heel, r_w, grinding.wheel_wear, follower, roller, infeed)
-    first, phase = manufacture.wear_error_first_order(derivs, t, heel, grinding.wheel_wear, follower, roller, r_w,
+    worn = cam_grinding.worn_wheel_lift(derivs, t, heel, r_w, grinding.wheel_wear, follower, infeed)
+    first, phase = cam_grinding.wear_error_first_order(derivs, t, heel, grinding.wheel_wear, follower, r_w,
                                                       infeed)
     error = worn - lift
     k = int(np.argmax(np.abs(error)))

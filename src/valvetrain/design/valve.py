@@ -16,27 +16,23 @@ import numpy as np
 from .. import flow, geometry
 from ..checks import check, failed, ranked, tally
 from ..crank.kinematics import displacement
+from ..followers import follower_of
 from ..laws import LiftLaw
 from ..laws.base import Extremes
+from ..layouts import LAYOUTS, layout
 from ..numerics import extremum
 from ..specification import SpecError
-from ..specification.cams import layout
 from ..springs import NoSpringFits
 from ..units import DEG, MM
 from .drive import drive_record, drive_stage, strength_stage
 from .dynamics import dynamics_stage
 from .grinding import grinding_stage
-from .hydraulic import hydraulic_stage
+from .hydraulic_actuation import hydraulic_stage
 from .results import quantity, record
 
 ACCELERATION_LIMITS = (3500.0, -1500.0)
 """Upper ends of the recommended bands of positive (1500-3500) and negative (500-1500) tappet
 acceleration [m/s^2] (Valve-train practical works (n.d.), work 2)."""
-
-LAYOUTS = ("direct", "rocker", "pushrod")
-"""Drive layouts (``[valves.NAME.drive] layout``): ``direct``, the cam acts on the valve through a tappet (an overhead
-camshaft on a bucket tappet, or the lower camshaft of a side-valve engine); ``rocker``, an overhead camshaft on a
-rocker or finger follower; ``pushrod``, a lower camshaft moving tappet, pushrod and rocker of overhead valves (OHV)."""
 
 
 @dataclass(frozen=True)
@@ -219,7 +215,12 @@ class CamResult:
 
     def valve_lift(self, theta):
         """Valve lift [m] at camshaft angles theta."""
-        return self.law.valve_lift(theta, self.rocker_ratio)
+        return self.law.valve_lift(theta, self.rocker_ratio, self.follower_model)
+
+    @property
+    def follower_model(self):
+        """The cam's :class:`~valvetrain.followers.Follower` (from ``follower`` and its dimensions)."""
+        return follower_of(self)
 
 
 @dataclass(frozen=True)
@@ -423,11 +424,11 @@ def profile_stage(cam, valve, output):
     ----------
     Shang Hanji (1988), section 2.1, eqs. (2.6)-(2.7), (2.15)-(2.16); Valve-train practical works (n.d.), work 2 (rho_min, corrections note 2, corrections note 26).
     """
-    law, omega, heel, follower, roller = cam.law, cam.cam_speed, cam.heel_radius, cam.follower, cam.roller_radius
+    law, omega, heel, follower = cam.law, cam.cam_speed, cam.heel_radius, cam.follower_model
     bp = law.breakpoints
     theta = _table_grid(law, output.table_step)
     d = law.derivatives(theta)
-    _, rho, beta, offset = law.profile(theta, heel, follower, roller)
+    _, rho, beta, offset = law.profile(theta, heel, follower)
 
     def area(t):
         return flow.curtain_area(cam.valve_lift(t), valve.throat_diameter, valve.seat_angle)
@@ -439,18 +440,17 @@ def profile_stage(cam, valve, output):
         time_area=flow.cumulative_time_area(area, theta, omega, bp), rho=rho, pressure_angle=beta,
         contact_offset=offset)
     ctheta = np.unique(np.concatenate([np.linspace(-np.pi, np.pi, output.contour_points, endpoint=False), bp]))
-    contour = law.profile(ctheta, heel, follower, roller)[0]
+    contour = law.profile(ctheta, heel, follower)[0]
 
     def convex(t):
         """Profile radius where the profile is convex, +inf where it is concave (a concave stretch of a roller
         cam is not an undercut; its radius is reported on its own)."""
-        r = law.curvature(t, heel, follower, roller)
-        return r if follower == "flat" else np.where(r + roller > 0.0, r, np.inf)
+        return follower.convex_radius(law.curvature(t, heel, follower))
 
     # the base circle (radius = heel radius for both followers) closes the profile; the smallest radius is refined
     # on the contour around the least sample of each piece and around the table's least, so that a dip between the
     # table's points (an undercut) is found
-    i = int(np.argmin(rho if follower == "flat" else np.where(rho + roller > 0.0, rho, np.inf)))
+    i = int(np.argmin(follower.convex_radius(rho)))
     near = theta[[max(i - 1, 0), min(i + 1, theta.size - 1)]]
     x_min, rho_min = min(extremum(convex, bp, "min"), extremum(convex, near, "min"), (np.pi, heel),
                          key=lambda p: p[1])
@@ -462,19 +462,17 @@ def profile_stage(cam, valve, output):
 
     x_max, rho_max = max(extremum(convex_or_low, bp, "max"), (np.pi, heel), key=lambda p: p[1])
     straight = bool(np.any(np.isposinf(rho)))   # straight flanks (tangent cam): the largest radius is infinite
-    if follower == "flat":
-        contact = FlatContact(cam.max_velocity / omega)
-        undercut = geometry.undercut_flat(rho_min)
-    else:
-        beta_max = extremum(lambda t: np.abs(law.profile(t, heel, "roller", roller)[2]), bp, "max")[1]
+    if follower.rolling:
+        beta_max = extremum(lambda t: np.abs(law.profile(t, heel, follower)[2]), bp, "max")[1]
         # the concave radius closest to zero is the most negative curvature (the radius itself passes through
         # -inf at the inflections, where its minimum would be found)
-        curvature = extremum(lambda t: 1.0 / law.curvature(t, heel, "roller", roller), bp, "min")[1]
+        curvature = extremum(lambda t: 1.0 / law.curvature(t, heel, follower), bp, "min")[1]
         concave = 1.0 / curvature if curvature < 0.0 else 0.0
-        contact = RollerContact(roller, beta_max, concave if concave + roller < 0.0 else None)
-        undercut = geometry.undercut_roller(rho_min + roller, roller)
+        contact = RollerContact(follower.radius, beta_max, concave if concave + follower.radius < 0.0 else None)
+    else:
+        contact = FlatContact(cam.max_velocity / omega)
     return ProfileResult(table, contour, ctheta, rho_min, None if straight else rho_max, x_min,
-                         None if straight else x_max, straight, contact, bool(undercut))
+                         None if straight else x_max, straight, contact, follower.undercut(rho_min))
 
 
 def clearance_stage(cam, valve, engine):
@@ -558,13 +556,11 @@ def valve_checks(cam, flow_result, profile, valve, engine, timing):
         out.append(ratio)
     out.append(check("base radius r0 / valve lift", cam.base_radius / flow_result.valve_lift, *BASE_RADIUS_TO_LIFT_RANGE,
                      source="Valve-train practical works (n.d.), work 2 (1.5-2.0; supercharged 3.0-4.0)"))
-    if cam.follower == "flat" and profile.undercut:
-        out.append(check("cam profile undercut: rho_min (flat follower)", profile.rho_min, low=0.0, strict_low=True,
-                         source="Shang Hanji (1988), eq. (2.6); Valve-train practical works (n.d.), corrections note 26", unit="mm", severity="failure"))
-    elif profile.undercut:
-        out.append(check("cam profile undercut: pitch radius of curvature - roller radius", profile.rho_min, low=0.0,
-                         strict_low=True, source="Shang Hanji (1988), eq. (2.7)", unit="mm", severity="failure"))
-    if cam.follower == "roller":
+    follower = cam.follower_model
+    if profile.undercut:
+        out.append(check(follower.undercut_quantity, profile.rho_min, low=0.0, strict_low=True,
+                         source=follower.undercut_source, unit="mm", severity="failure"))
+    if follower.rolling:
         out.append(check("max pressure angle", profile.contact.max_pressure_angle, high=PRESSURE_ANGLE_MAX,
                          source="UkrSURT Proceedings (2019)", unit="deg"))
     if not profile.undercut:
@@ -619,6 +615,7 @@ class ValveDesign:
     rocker_ratio = property(lambda self: self.cam.rocker_ratio)
     heel_radius = property(lambda self: self.cam.heel_radius)
     follower = property(lambda self: self.cam.follower)
+    follower_model = property(lambda self: self.cam.follower_model)
     roller_radius = property(lambda self: self.cam.roller_radius)
     nose_crank = property(lambda self: self.cam.nose)
     table = property(lambda self: self.profile.table)
@@ -660,7 +657,7 @@ def design_valve(name, valve, engine, gas, output, law=None, progress=None, cyli
         Enter the design with a law of the caller's own (the cam section's ``build`` is skipped).
     progress : callable, optional
         ``progress(done, total)`` during the speed sweep of a ``[dynamics]`` section.
-    cylinder : valvetrain.design.hydraulic.CylinderPressure, optional
+    cylinder : valvetrain.design.hydraulic_actuation.CylinderPressure, optional
         The engine's cycle, whose pressure on the valve head a ``[hydraulic]`` section's valve opens against.
 
     Returns
@@ -719,7 +716,7 @@ def with_hydraulic(design, valve, engine, gas, cylinder=None):
     ----------
     design : ValveDesign
     valve, engine, gas : SI views of the valve, the engine and ``[gas]``.
-    cylinder : valvetrain.design.hydraulic.CylinderPressure, optional
+    cylinder : valvetrain.design.hydraulic_actuation.CylinderPressure, optional
         The engine's cycle (no gas force on the valve head without it).
 
     Raises

@@ -3,14 +3,14 @@
 Shang Hanji (1988), section 3.4, computes the contact stress (2.5) with the force of the elastic train
 instead of the kinetostatic one; the curvature comes from the law's profile (2.6)/(2.7) and the
 lubrication characteristic gamma = rho / (R0 + h) from (2.12).  The formulas live in
-:mod:`valvetrain.strength` and :mod:`valvetrain.geometry`; this module only feeds them the
+:mod:`valvetrain.followers`; this module only feeds them the
 simulated force.
 """
 
-from ..strength import hertz_line_stress
+from ..followers import FLAT
 
 
-def dynamic_contact_stress(law, theta, force, base_radius, width, modulus, roller_radius=None):
+def dynamic_contact_stress(law, theta, force, base_radius, width, modulus, follower=FLAT):
     """Hertz stress between cam and follower under the dynamic contact force [Pa].
 
     Parameters
@@ -24,8 +24,8 @@ def dynamic_contact_stress(law, theta, force, base_radius, width, modulus, rolle
         Heel-circle radius and cam width [m].
     modulus : float
         Effective modulus E_m [Pa] (:func:`valvetrain.strength.effective_modulus`).
-    roller_radius : float, optional
-        Roller radius [m]; None for a flat follower (1/rho_2 = 0, eq. 2.11).
+    follower : valvetrain.followers.Follower
+        The follower (default flat: 1/rho_2 = 0, eq. 2.11).
 
     Notes
     -----
@@ -35,14 +35,12 @@ def dynamic_contact_stress(law, theta, force, base_radius, width, modulus, rolle
     ----------
     Shang Hanji (1988), eqs. (2.5), (2.11) and section 3.4 (the force of the dynamic calculation).
     """
-    follower = "flat" if roller_radius is None else "roller"
-    rho = law.profile(theta, base_radius, follower, roller_radius or 0.0)[1]
-    curvature = 1.0 / rho + (0.0 if roller_radius is None else 1.0 / roller_radius)
-    return hertz_line_stress(force, width, curvature, modulus)
+    return follower.contact_stress(force, law.curvature(theta, base_radius, follower), width, modulus)
 
 
-def lubrication_characteristic(law, theta, base_radius):
-    """gamma = rho / (R0 + h), the hydrodynamic lubrication characteristic of a flat follower.
+def lubrication_characteristic(law, theta, base_radius, follower=FLAT):
+    """gamma = rho / (R0 + h), the hydrodynamic lubrication characteristic of a flat follower; None for a follower
+    without one (:meth:`valvetrain.followers.Follower.lubrication`).
 
     Parameters
     ----------
@@ -51,6 +49,8 @@ def lubrication_characteristic(law, theta, base_radius):
         Camshaft angle [rad from the nose].
     base_radius : float
         Heel-circle radius [m].
+    follower : valvetrain.followers.Follower
+        Default flat.
 
     Notes
     -----
@@ -63,4 +63,4 @@ def lubrication_characteristic(law, theta, base_radius):
     ----------
     Shang Hanji (1988), eq. (2.12) (corrections note 34).
     """
-    return law.profile(theta, base_radius)[1] / (base_radius + law.lift(theta))
+    return follower.lubrication(base_radius, law.lift(theta), law.curvature(theta, base_radius, follower))

@@ -21,7 +21,7 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit
 
-from .. import geometry
+from ..followers import FLAT
 from ..numerics import bracketed_roots, invert_angle, level_span
 from ..units import si_name
 
@@ -230,9 +230,12 @@ class LiftLaw(ABC):
         """Follower jerk omega^3 d3h/dtheta3 [m/s^3]."""
         return omega**3 * self.derivatives(theta)[3]
 
-    def valve_lift(self, theta, rocker_ratio=1.0):
-        """Valve lift i_k (h - h0) for h > h0, else 0 [m] (Valve-train practical works (n.d.), work 2: valve = tappet x l_v/l_t)."""
-        return rocker_ratio * np.clip(self.lift(theta) - self.ramp_height, 0.0, None)
+    def valve_lift(self, theta, rocker_ratio=1.0, follower=FLAT):
+        """Valve lift i_k i_f(h) (h - h0) for h > h0, else 0 [m] (Valve-train practical works (n.d.), work 2: valve =
+        tappet x l_v/l_t), with i_f the follower's own lever ratio (:meth:`valvetrain.followers.Follower.ratio`, 1 for
+        a translating follower)."""
+        h = self.lift(theta)
+        return rocker_ratio * follower.ratio(h) * np.clip(h - self.ramp_height, 0.0, None)
 
     def crossings(self, height):
         """Camshaft angles [rad from the nose] where the lift first rises above and last falls below ``height``
@@ -244,16 +247,15 @@ class LiftLaw(ABC):
         rise, fall = self.crossings(height)
         return fall - rise
 
-    def profile(self, theta, heel_radius, follower="flat", roller_radius=0.0):
+    def profile(self, theta, heel_radius, follower=FLAT):
         """The cam profile at camshaft angles ``theta`` [rad from the nose].
 
         Parameters
         ----------
         heel_radius : float
             Radius of the circle the law's lift starts from [m] (r0 - h0 with a ramp).
-        follower : {"flat", "roller"}
-        roller_radius : float
-            [m], for a roller follower.
+        follower : valvetrain.followers.Follower
+            The follower the cam drives (default flat).
 
         Returns
         -------
@@ -268,34 +270,24 @@ class LiftLaw(ABC):
         """
         theta = np.asarray(theta, dtype=float)
         h, dh, d2h, _ = self.derivatives(theta)
-        rho = self._curvature(heel_radius, follower, roller_radius, h, dh, d2h)
-        if follower == "flat":
-            return geometry.flat_follower_contour(theta, heel_radius, h, dh), rho, np.zeros_like(theta), dh
-        return (geometry.roller_follower_contour(theta, heel_radius, roller_radius, h, dh), rho,
-                geometry.roller_pressure_angle(heel_radius, roller_radius, h, dh), np.zeros_like(theta))
+        return (follower.contour(theta, heel_radius, h, dh), follower.curvature(heel_radius, h, dh, d2h),
+                follower.pressure_angle(heel_radius, h, dh), follower.contact_offset(dh))
 
-    def curvature(self, theta, heel_radius, follower="flat", roller_radius=0.0):
+    def curvature(self, theta, heel_radius, follower=FLAT):
         """The profile's radius of curvature [m] at camshaft angles ``theta`` [rad from the nose], that of
         :meth:`profile` without the contour (the arguments of :meth:`profile`)."""
         h, dh, d2h, _ = self.derivatives(np.asarray(theta, dtype=float))
-        return self._curvature(heel_radius, follower, roller_radius, h, dh, d2h)
+        return follower.curvature(heel_radius, h, dh, d2h)
 
-    @staticmethod
-    def _curvature(heel_radius, follower, roller_radius, h, dh, d2h):
-        if follower == "flat":
-            return geometry.flat_follower_curvature(heel_radius, h, d2h)
-        return geometry.roller_follower_curvature(heel_radius, roller_radius, h, dh, d2h)
-
-    def polar_radius(self, polar_angle, heel_radius, follower="flat", roller_radius=0.0, samples=7201):
+    def polar_radius(self, polar_angle, heel_radius, follower=FLAT, samples=7201):
         """Radius of the cam contour at polar angles from the nose direction (+y towards +x) [m].
 
         Each radius is found on the analytic contour: the contour point's polar angle is
         bracketed on ``samples`` camshaft angles and the bracket bisected, all angles at once,
         to the round-off of the angle (not interpolated), so a table of any step is exact.
         """
-        theta = invert_angle(lambda t: np.arctan2(*self.profile(t, heel_radius, follower, roller_radius)[0]),
-                             polar_angle, samples)
-        return np.hypot(*self.profile(theta, heel_radius, follower, roller_radius)[0])
+        theta = invert_angle(lambda t: np.arctan2(*self.profile(t, heel_radius, follower)[0]), polar_angle, samples)
+        return np.hypot(*self.profile(theta, heel_radius, follower)[0])
 
     def extremes(self, omega):
         """Extreme velocity and accelerations at camshaft speed omega [rad/s], found on the analytic law.

@@ -13,7 +13,7 @@ from .. import __version__
 from ..checks import describe_range, tally
 from ..design.dynamics import SOURCES as DYNAMICS_SOURCES
 from ..design.grinding import SOURCES as GRINDING_SOURCES
-from ..design.hydraulic import SOURCES as HYDRAULIC_SOURCES
+from ..design.hydraulic_actuation import SOURCES as HYDRAULIC_SOURCES
 from ..design.results import record
 from ..tables import lift_table_columns
 from ..bibliography import WORKS, cited_in

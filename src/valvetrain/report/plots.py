@@ -110,11 +110,11 @@ def contour_figure(valve, t):
     phi = np.linspace(0, 2 * np.pi, 361)
     r = valve.heel_radius / MM
     ax.plot(r * np.cos(phi), r * np.sin(phi), ls="--", color="C2", lw=0.8, label=t["heel_circle"])
-    if valve.follower == "roller":
-        h = valve.law.lift(valve.contour_angle)
-        g = (valve.heel_radius + valve.roller_radius + h) / MM
-        ax.plot(g * np.sin(valve.contour_angle), g * np.cos(valve.contour_angle), color="C1", lw=0.8,
-                label=t["pitch_curve"])
+    follower = valve.follower_model
+    if follower.rolling:
+        h, dh, d2h = valve.law.derivatives(valve.contour_angle)[:3]
+        px, py = follower.pitch_curve(valve.contour_angle, valve.heel_radius, h, dh, d2h)[0] / MM
+        ax.plot(px, py, color="C1", lw=0.8, label=t["pitch_curve"])
     ax.axhline(0, color="0.6", lw=0.5)
     ax.axvline(0, color="0.6", lw=0.5)
     ax.set_aspect("equal")
@@ -160,7 +160,7 @@ def curvature_figure(valve, t):
     ax.axhline(0.0, color="0.5", lw=0.5)
     ax.grid(alpha=0.3)
     _segment_lines(ax, valve.law)
-    if valve.follower == "roller":
+    if valve.follower_model.rolling:
         ax2 = ax.twinx()
         ax2.plot(x, rad_to_deg(tab.pressure_angle), color="C1")
         ax2.set_ylabel(t["pressure_angle"], color="C1")
@@ -296,7 +296,7 @@ def timing_figure(valves, t):
     open_by_kind = {}
     for name, v in valves.items():
         theta = (crank - v.nose_crank) / 2.0
-        lift = v.law.valve_lift(theta, v.rocker_ratio)
+        lift = v.law.valve_lift(theta, v.rocker_ratio, v.follower_model)
         ax.plot(rad_to_deg(crank), lift / MM, label=name if name == v.kind else f"{name} ({t[v.kind]})",
                 color="C0" if v.kind == "intake" else "C3")
         open_by_kind[v.kind] = open_by_kind.get(v.kind, np.zeros_like(crank, dtype=bool)) | (lift > 0.0)

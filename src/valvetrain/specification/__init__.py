@@ -6,10 +6,10 @@ the design never does.  Timing angles are crank degrees, cam segment angles cams
 
 from .cams import LAWS, REGISTRY, Cam, main_half_angle_deg
 from .messages import SpecError
-from .models import Engine, Spec, Valve
+from .models import Engine, Spec, Valve, resolve_path, validate
+from .reading import example_spec, example_text, input_files, load_spec, parse_spec, spec_toml
 from .si import si
-from .validate import (crank_geometry, example_spec, example_text, input_files, load_spec, parse_spec, resolve_path,
-                       set_keys, spec_document, spec_toml, validate)
+from .validate import crank_geometry, set_keys, spec_document
 
 __all__ = ["Cam", "Engine", "LAWS", "REGISTRY", "Spec", "SpecError", "Valve", "crank_geometry", "example_spec",
            "example_text", "input_files", "load_spec", "main_half_angle_deg", "parse_spec", "resolve_path", "set_keys", "si",

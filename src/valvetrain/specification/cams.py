@@ -18,14 +18,15 @@ from typing import Annotated, ClassVar, Literal, Optional, Union
 import numpy as np
 from pydantic import Field, ValidationError, model_validator
 
-from .. import flow, masses
 from ..checks import check
 from ..files import read_lift_table, shown_path
+from ..followers import REGISTRY as FOLLOWERS
 from ..laws import (AsymmetricLaw, CombinedLaw, ConstantAccelerationLaw, DynamicLaw, HarmonicLaw, KurzLaw, PolydyneLaw,
                     PolynomialLaw, PowerPolynomialLaw, TangentLaw, ThreeArcLaw)
 from ..laws.power_polynomial import ARTICLE_EXPONENTS
 from ..laws.measured import CHECKING_HEIGHTS_MM, MIN_VALVE_LIFT_MM, TableLaw, fit_reason, lobe_table, table_accuracy
 from ..laws.takeup import ClearanceTakeUp
+from ..layouts import train_mass
 from ..units import DEG, MM, cam_per_crank, rad_to_deg
 from .fields import RAMP_VELOCITY, SEGMENT_ANGLE, Length, _bounded, _Model
 from .messages import message, shown
@@ -63,22 +64,6 @@ def symmetric_nose(valve):
     return (valve.closes - np.pi - valve.opens) / 2.0
 
 
-def layout(valve):
-    """Drive layout of a valve (SI view or section): as given, else direct for rocker ratio 1 and pushrod otherwise."""
-    if valve.drive.layout is not None:
-        return valve.drive.layout
-    return "direct" if valve.rocker_ratio == 1.0 else "pushrod"
-
-
-def train_mass(valve, spring_mass):
-    """Reduced mass of a valve's train at the valve [kg] and how it was obtained (SI view; Valve-train practical works (n.d.), eq. 5.2 or the
-    specific mass of work 5); ``spring_mass`` [kg] where the part masses leave it to the designed spring."""
-    d = valve.drive
-    return masses.reduced_mass(float(flow.circle_area(valve.throat_diameter)), layout(valve), valve.rocker_ratio,
-                               parts=d.masses, specific_mass=d.specific_mass_kg_m2, valve_arm=d.valve_arm,
-                               spring_mass=spring_mass)
-
-
 def _finite(x):
     """A float, or None where it is not defined (a checking height the lift never reaches)."""
     return float(x) if np.isfinite(x) else None
@@ -86,13 +71,14 @@ def _finite(x):
 
 class _CamBase(_Model):
     base_radius_mm: Length(2.0, 500.0, low_open=False)
-    follower: Literal["flat", "roller"] = "flat"
+    follower: Literal[tuple(FOLLOWERS)] = "flat"
     roller_radius_mm: Optional[Length(1.0, 200.0, low_open=False)] = None
 
     @model_validator(mode="after")
-    def _roller_needs_radius(self):
-        if self.follower == "roller" and self.roller_radius_mm is None:
-            raise ValueError("roller_radius_mm is required when follower = \"roller\" (allowed [1, 200] mm)")
+    def _follower_keys(self):
+        missing = FOLLOWERS[self.follower].missing_key(self)
+        if missing:
+            raise ValueError(missing)
         return self
 
     needs_timing: ClassVar[bool] = True
@@ -131,6 +117,26 @@ class _CamBase(_Model):
         """Opening advance and closing lag [crank rad] of the main lift for the recommended ranges (SI view; a
         measured table's from its ``record``); None where not defined."""
         return valve.opens, valve.closes
+
+    varies_ramp_and_spring: ClassVar[bool] = True
+    """Whether a cam synthesis varies the ramp end velocity and the spring reserve beside :meth:`search_variables`."""
+
+    derived_keys: ClassVar[dict] = {}
+    """Keys of the cam derived from others when absent: ``key -> the dotted variables it follows``; a synthesis that
+    varies one of those drops the key."""
+
+    def search_variables(self, valve, engine):
+        """The law's default design variables of a cam synthesis: ``[(dotted key under [valves.NAME], low, high)]`` in
+        the keys' units, or None where the law has none (the synthesis then asks for them by name).
+
+        ``valve`` and ``engine`` are the specification's sections.
+
+        Raises
+        ------
+        ValueError
+            The cam's keys leave nothing to vary; the message says what to name instead.
+        """
+        return None
 
 
 def _tappet_lift(valve):
@@ -219,6 +225,13 @@ class _SegmentAngles(_ClosingSide):
     def flank_angle_deg(self):
         return self.phi1_deg + self.phi2_deg + (self.phi3_deg or 0.0)
 
+    derived_keys: ClassVar[dict] = {"phi3_deg": ("cam.phi1_deg", "cam.phi2_deg")}
+
+    def segment_variables(self, valve, engine):
+        """phi1, phi2 of the synthesis (phi3 the remainder) [cam deg]."""
+        half = main_half_angle_deg(valve, engine.strokes)
+        return [("cam.phi1_deg", 0.15 * half, 0.75 * half), ("cam.phi2_deg", 0.02 * half, 0.45 * half)]
+
     def _phi3(self, valve, engine):
         """Phi3 [rad]: given, or the remainder of the half angle (SI view)."""
         cam = valve.cam
@@ -249,6 +262,10 @@ class KurzCam(_SegmentAngles, _CamBase, _RampKeys):
     phi2_deg: SEGMENT_ANGLE
     phi3_deg: Optional[SEGMENT_ANGLE] = None
     shape_factor: _bounded(0.05, 1.0, low_open=False, high_open=True) = 0.625
+
+    def search_variables(self, valve, engine):
+        """phi1, phi2 and the shape factor Z."""
+        return self.segment_variables(valve, engine) + [("cam.shape_factor", 0.05, 0.99)]
 
     def build_flank(self, valve, engine):
         c = valve.cam
@@ -296,6 +313,10 @@ class PolydyneCam(_CamBase, _RampKeys):
         if self.ramp and self.ramp_end_velocity_mm_per_deg is None:
             raise ValueError("ramp = true needs ramp_end_velocity_mm_per_deg (allowed [0.001, 1] mm/deg)")
         return self
+
+    def search_variables(self, valve, engine):
+        """The exponents the cam gives, each from 3 to four times its value."""
+        return [(f"cam.{k}", 3.0, 4.0 * getattr(self, k)) for k in ("p", "q", "r", "s") if getattr(self, k) is not None]
 
     def law_of(self, cam, lift, half, r0, **ramp):
         return PolydyneLaw(lift, half, cam.p, cam.q, cam.r, cam.s, **ramp)
@@ -361,6 +382,10 @@ class ConstantAccelerationCam(_SegmentAngles, _CamBase, _RampKeys):
     phi3_deg: Optional[_bounded(0.0, 180.0, "deg", low_open=False)] = None
     kappa: _bounded(0.01, 10.0, low_open=False) = 0.6
 
+    def search_variables(self, valve, engine):
+        """phi1, phi2 and kappa."""
+        return self.segment_variables(valve, engine) + [("cam.kappa", 0.1, 5.0)]
+
     def build_flank(self, valve, engine):
         c = valve.cam
         return ConstantAccelerationLaw(_tappet_lift(valve), valve.clearance, c.ramp_end_velocity, c.phi1, c.phi2,
@@ -399,6 +424,13 @@ class CombinedCam(_ClosingSide, _CamBase, _RampKeys):
 
     def flank_angle_deg(self):
         return sum(seg.length_deg for seg in self.segments)
+
+    def search_variables(self, valve, engine):
+        """The ratios' values, each within five times its size plus one either side."""
+        if not self.ratios:
+            raise ValueError("optimize: the combined cam has no [[cam.ratios]]; name the variables with --vary")
+        return [(f"cam.ratios.{i}.value", -5.0 * abs(r.value) - 1.0, 5.0 * abs(r.value) + 1.0)
+                for i, r in enumerate(self.ratios, 1)]
 
     def build_flank(self, valve, engine):
         c = valve.cam
@@ -472,6 +504,15 @@ class PowerPolynomialCam(_CamBase):
     t: _EXPONENT = ARTICLE_EXPONENTS["t"]
     u: _EXPONENT = ARTICLE_EXPONENTS["u"]
     sharpness: _bounded(1.0, 50.0, low_open=False) = 10.0
+
+    varies_ramp_and_spring: ClassVar[bool] = False   # its article holds the spring and the ramp
+
+    def search_variables(self, valve, engine):
+        """a_qd, phi_1, x_d, x_g (UkrSURT Proceedings (2019))."""
+        half = main_half_angle_deg(valve, engine.strokes)
+        return [("cam.peak_acceleration_mm_per_rad2", 10.0, 600.0),
+                ("cam.phi1_deg", 2.0, 0.9 * (half - self.ramp_angle_deg)),
+                ("cam.peak_position", 0.02, 0.98), ("cam.trough_position", 0.02, 0.98)]
 
     @model_validator(mode="after")
     def _distinct_pairs(self):
@@ -584,7 +625,7 @@ class TangentCam(_CamBase):
 
     @model_validator(mode="after")
     def _roller(self):
-        if self.follower != "roller":
+        if not FOLLOWERS[self.follower].rolling:
             raise ValueError("law = \"tangent\" needs follower = \"roller\" (a flat follower on straight flanks is "
                              "degenerate) and roller_radius_mm")
         return self

@@ -10,13 +10,15 @@ from pathlib import Path
 import re
 from typing import Annotated, ClassVar, Literal, Optional, Union
 
-from pydantic import Field, field_validator, model_validator
+from pydantic import Field, ValidationError, field_validator, model_validator
 
 from ..files import read_indicator
+from ..layouts import LAYOUTS, layout
 from ..spring_materials import GRADES, grade
-from .cams import Cam, layout
+from .cams import LAWS, Cam
 from .fields import Length, Pair, _bounded, _Model, _zero_or
-from .messages import SpecError, shown
+from .messages import SpecError, message, shown
+from .validate import problems, set_keys, spec_document
 
 
 class Engine(_Model):
@@ -85,7 +87,7 @@ class Masses(_Model):
 class Drive(_Model):
     """[valves.NAME.drive]: drive layout, masses and spring reserve (Valve-train practical works (n.d.), works 5 and 7)."""
 
-    layout: Optional[Literal["direct", "rocker", "pushrod"]] = None
+    layout: Optional[Literal[tuple(LAYOUTS)]] = None
     spring_reserve: _bounded(1.0, 5.0) = 1.8
     stiffness_N_per_mm: Optional[_bounded(10.0, 1e7, "N/mm", low_open=False)] = None
     specific_mass_kg_m2: Optional[_bounded(10.0, 5000.0, "kg/m2", low_open=False)] = None
@@ -576,8 +578,6 @@ class Spec(_Model):
         valvetrain.specification.SpecError
             One message per problem, naming the key, the value and what is allowed.
         """
-        from .validate import set_keys, spec_document, validate
-
         try:
             document = set_keys(spec_document(self), values)
         except ValueError as exc:
@@ -595,3 +595,32 @@ def resolve_path(spec, name):
     """A file named in the specification, relative to the specification file's folder."""
     path = Path(name)
     return path if path.is_absolute() or spec.source_dir is None else Path(spec.source_dir) / path
+
+
+def _resolve_tables(spec):
+    """Make every valve's table_file absolute (relative to the specification file's folder)."""
+    valves = {}
+    for name, v in spec.valves.items():
+        if v.cam.law == "table":
+            cam = v.cam.model_copy(update={"table_file": str(resolve_path(spec, v.cam.table_file))})
+            v = v.model_copy(update={"cam": cam})
+        valves[name] = v
+    return spec.model_copy(update={"valves": valves})
+
+
+def validate(data):
+    """Validate a parsed TOML document; return a :class:`Spec` or raise :class:`SpecError`.
+
+    Field problems (missing keys, wrong types, values outside physical bounds) are
+    reported first; the cross-checks between keys (angles that must add up, a throat
+    smaller than the bore, ...) run once every field is valid.
+    """
+    try:
+        spec = Spec.model_validate(data)
+    except ValidationError as exc:
+        raise SpecError([message(err, LAWS) for err in exc.errors()]) from None
+    spec = _resolve_tables(spec)
+    found = problems(spec)
+    if found:
+        raise SpecError(found)
+    return spec

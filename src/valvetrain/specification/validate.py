@@ -1,26 +1,19 @@
-"""Reading and validating a specification: TOML text, the sections' models, the checks across sections.
+"""The checks across the sections of a specification, and its document's dotted keys.
 
-Every problem in a file becomes one message naming the key, the value and what is allowed;
-:func:`load_spec` raises :class:`SpecError` carrying them all.  What needs a computation (a cam
+Every problem becomes one message naming the key, the value and what is allowed (:func:`problems`, which
+:func:`valvetrain.specification.validate` runs once every field is valid).  What needs a computation (a cam
 that the angles admit but the law cannot make, a spring that does not fit) is the design's to
-find (:func:`valvetrain.design.run`); ``valvetrain validate`` runs it.
+find (:func:`valvetrain.design.run`); ``valvetrain validate`` runs it.  :func:`set_keys` and :func:`spec_document`
+are the dotted keys that :meth:`Spec.replace` and ``study --grid`` change.
 """
 
 import copy
-from importlib.resources import files
-from pathlib import Path
-import tomllib
 
-import tomli_w
-
-from pydantic import ValidationError
-
-from ..files import shown_path
+from ..layouts import LAYOUTS
 from ..springs import feasible_mean_diameters
 from ..units import MM
-from .cams import LAWS, main_half_angle_deg
-from .messages import SpecError, message, shown
-from .models import Spec, resolve_path
+from .cams import main_half_angle_deg
+from .messages import shown
 
 
 def _valve_problems(name, v, engine):
@@ -51,8 +44,8 @@ def _valve_problems(name, v, engine):
     if installed is not None and v.max_lift_mm is not None and installed[1] <= v.max_lift_mm:
         out.append(f"{at}.spring.installed_length_mm = {list(installed)}: the spring must be longer than the valve "
                    f"lift max_lift_mm = {v.max_lift_mm:g} (it is compressed by it, Valve-train practical works (n.d.), eq. 6.5)")
-    if v.drive.layout == "direct" and v.rocker_ratio != 1.0:
-        out.append(f"{at}.drive.layout = \"direct\" needs rocker_ratio = 1 (got {v.rocker_ratio:g})")
+    if v.drive.layout is not None and not LAYOUTS[v.drive.layout].rocker and v.rocker_ratio != 1.0:
+        out.append(f"{at}.drive.layout = \"{v.drive.layout}\" needs rocker_ratio = 1 (got {v.rocker_ratio:g})")
     if v.piston_gap_tdc_mm is not None and engine.rod_length_mm is None:
         out.append(f"{at}.piston_gap_tdc_mm needs engine.rod_length_mm for the piston kinematics")
     if not {"opens_deg", "closes_deg"} & set(missing):
@@ -105,22 +98,6 @@ def _crank_problems(spec):
     return out
 
 
-def input_files(spec):
-    """Every file the specification names (each ``..._file`` key: lift tables, indicator diagrams), resolved."""
-    def named(node):
-        if isinstance(node, dict):
-            for key, value in node.items():
-                if key.endswith("_file") and isinstance(value, str):
-                    yield resolve_path(spec, value)
-                else:
-                    yield from named(value)
-        elif isinstance(node, list):
-            for value in node:
-                yield from named(value)
-
-    return sorted(set(named(spec.model_dump())))
-
-
 def _two_stroke_problems(spec):
     ts = spec.two_stroke
     if ts is None:
@@ -149,65 +126,16 @@ def _acceptance_problems(spec):
             for i, a in enumerate(spec.accepted) if a.valve is not None and a.valve not in spec.valves]
 
 
-def _resolve_tables(spec):
-    """Make every valve's table_file absolute (relative to the specification file's folder)."""
-    valves = {}
-    for name, v in spec.valves.items():
-        if v.cam.law == "table":
-            cam = v.cam.model_copy(update={"table_file": str(resolve_path(spec, v.cam.table_file))})
-            v = v.model_copy(update={"cam": cam})
-        valves[name] = v
-    return spec.model_copy(update={"valves": valves})
-
-
-def validate(data):
-    """Validate a parsed TOML document; return a :class:`Spec` or raise :class:`SpecError`.
-
-    Field problems (missing keys, wrong types, values outside physical bounds) are
-    reported first; the cross-checks between keys (angles that must add up, a throat
-    smaller than the bore, ...) run once every field is valid.
-    """
-    try:
-        spec = Spec.model_validate(data)
-    except ValidationError as exc:
-        raise SpecError([message(err, LAWS) for err in exc.errors()]) from None
-    spec = _resolve_tables(spec)
-    problems = [p for name, v in spec.valves.items() for p in _valve_problems(name, v, spec.engine)]
-    problems += _crank_problems(spec) + _two_stroke_problems(spec) + _acceptance_problems(spec)
+def problems(spec):
+    """The problems across the sections of a specification whose every field is valid, one message each ([] if
+    none): angles that must add up, a throat smaller than the bore, files and keys that must agree, ...."""
+    out = [p for name, v in spec.valves.items() for p in _valve_problems(name, v, spec.engine)]
+    out += _crank_problems(spec) + _two_stroke_problems(spec) + _acceptance_problems(spec)
     if spec.engine.strokes != 4 and spec.valves:
-        problems.insert(0, f"engine.strokes = {spec.engine.strokes}: the valve timing (opens_deg/closes_deg before and "
-                           "after TDC/BDC of the gas-exchange strokes) is defined for four-stroke engines; allowed 4 "
-                           "with [valves.NAME] sections")
-    if problems:
-        raise SpecError(problems)
-    return spec
-
-
-MAX_SPEC_CHARACTERS = 1_000_000
-"""Largest specification text read (the largest shipped example has about 6,000 characters; a lift table or an
-indicator diagram belongs in a file of its own)."""
-
-
-def parse_spec(text, source="<string>", source_dir=None):
-    """Parse and validate a specification: TOML text, or a document already parsed (a dict of its tables, as
-    :func:`tomllib.loads` gives it); relative file names in it are read from ``source_dir``."""
-    if isinstance(text, dict):
-        return validate(text if source_dir is None else {**text, "source_dir": str(source_dir)})
-    if not isinstance(text, str):
-        raise SpecError([f"{source}: a specification is TOML text or a dict of its tables, not a "
-                         f"{type(text).__name__}"])
-    if len(text) > MAX_SPEC_CHARACTERS:
-        raise SpecError([f"{source}: {len(text):,} characters; allowed at most {MAX_SPEC_CHARACTERS:,} for a "
-                         "specification (put long tables in a CSV file: cam.table_file, crank.pressure_file)"])
-    try:
-        data = tomllib.loads(text.removeprefix("\ufeff"))
-    except tomllib.TOMLDecodeError as exc:
-        raise SpecError([f"{source}: not valid TOML: {exc}"]) from None
-    except RecursionError:
-        raise SpecError([f"{source}: arrays or tables nested too deeply to be a specification"]) from None
-    if source_dir is not None and isinstance(data, dict):
-        data["source_dir"] = str(source_dir)
-    return validate(data)
+        out.insert(0, f"engine.strokes = {spec.engine.strokes}: the valve timing (opens_deg/closes_deg before and "
+                      "after TDC/BDC of the gas-exchange strokes) is defined for four-stroke engines; allowed 4 "
+                      "with [valves.NAME] sections")
+    return out
 
 
 def set_keys(document, values):
@@ -257,42 +185,3 @@ def spec_document(spec):
     """The document of a :class:`Spec` (a dict of its tables, every default written out) that :func:`validate`
     turns back into the same specification."""
     return {**spec.model_dump(), "source_dir": spec.source_dir}
-
-
-def load_spec(path):
-    """Read and validate a specification file."""
-    try:
-        text = Path(path).read_text(encoding="utf-8")
-    except OSError as exc:
-        raise SpecError([f"{shown_path(path)}: cannot read the file: {exc.strerror or exc}"]) from None
-    except UnicodeDecodeError as exc:
-        raise SpecError([f"{shown_path(path)}: cannot read the file: not UTF-8 text ({exc.reason})"]) from None
-    return parse_spec(text, shown_path(path), Path(path).resolve().parent)
-
-
-def example_text():
-    """The built-in example specification (the engine of the appendix of Valve-train practical works (n.d.)), as TOML text."""
-    return files("valvetrain").joinpath("data/example.toml").read_text(encoding="utf-8")
-
-
-def example_spec():
-    """The built-in example, validated."""
-    return parse_spec(example_text(), "built-in example")
-
-
-def spec_toml(spec):
-    """The specification as TOML text with every default written out and every file named by its absolute path:
-    what a run used, saved beside its results (``spec.toml``), which ``valvetrain run`` reads back."""
-    def absolute(node):
-        if isinstance(node, dict):
-            return {k: str(resolve_path(spec, v).resolve()) if k.endswith("_file") and isinstance(v, str)
-                    else absolute(v) for k, v in node.items()}
-        if isinstance(node, list):
-            return [absolute(v) for v in node]
-        return node
-
-    from .. import __version__
-
-    header = (f"# The specification of a valvetrain {__version__} run, every default written out and every file "
-              "named by its\n# absolute path: `valvetrain run spec.toml` repeats the run.\n\n")
-    return header + tomli_w.dumps(absolute(spec.model_dump(exclude_none=True, exclude={"source_dir"})))

@@ -97,7 +97,7 @@ def pressure_angle(design, limit):
     ----------
     Shang Hanji (1988), section 2.1; UkrSURT Proceedings (2019) (beta_max <= 30 deg).
     """
-    if design.follower != "roller":
+    if not design.follower_model.rolling:
         return None
     return check("max pressure angle", design.profile.contact.max_pressure_angle, high=limit, unit="deg",
                  source=SOURCE_SYNTHESIS, severity="failure")
@@ -122,7 +122,7 @@ def concave_radius(design, wheel_radius):
     R_min is the concave profile radius closest to zero (Shang Hanji (1988), eq. 2.7); the wheel fits into the
     concave stretch when |R_min| >= its radius, UkrSURT Proceedings (2019) (R_min <= -170 mm).
     """
-    if design.follower != "roller":
+    if not design.follower_model.rolling:
         return None
     radius = design.profile.contact.min_concave_radius
     ratio = 0.0 if radius is None else wheel_radius / abs(radius)
@@ -177,16 +177,6 @@ def acceleration_band(design, low=None, high=None):
     return out
 
 
-def convex_radius(rho, follower, roller_radius=0.0):
-    """The profile radius where the profile is convex to the follower, +inf elsewhere [m].
-
-    A concave stretch of a roller cam (pitch radius of curvature < 0) is not convex; a flat follower's cam is convex
-    wherever it is not undercut, so its radius is kept as it is (rho <= 0 is its undercut).
-    """
-    rho = np.asarray(rho, dtype=float)
-    return rho if follower == "flat" else np.where(rho + roller_radius > 0.0, rho, np.inf)
-
-
 def worst_cam_force(spring_force, mass, rocker_ratio, top_acceleration):
     """The largest cam force over the engine speeds from standstill up to a top speed [N].
 
@@ -210,33 +200,6 @@ def worst_cam_force(spring_force, mass, rocker_ratio, top_acceleration):
     return strength.cam_force(spring_force, mass * rocker_ratio * np.clip(top_acceleration, 0.0, None), rocker_ratio)
 
 
-def hertz_stress(force, rho, follower, roller_radius, width, modulus):
-    """Hertz line stress between cam and follower [Pa]; 0 where the profile gives no line contact.
-
-    Parameters
-    ----------
-    force : ndarray
-        Cam force [N].
-    rho : ndarray
-        Profile radius of curvature [m].
-    follower : {"flat", "roller"}
-    roller_radius, width, modulus : float
-        [m], [m], [Pa].
-
-    Notes
-    -----
-    sigma = 0.418 sqrt(P_T E / b (1/rho + 1/r_p)) (Valve-train practical works (n.d.), eqs. 7.4-7.5).  Line contact
-    needs a convex profile, or a concave one wider than the roller; elsewhere (an undercut) the smallest-radius
-    constraint fails instead.
-    """
-    rho = np.asarray(rho, dtype=float)
-    roller = follower == "roller"
-    contact = (rho > 0.0) | (roller & (rho < -roller_radius))
-    curvature = 1.0 / np.where(contact, rho, 1.0) + (1.0 / roller_radius if roller else 0.0)
-    sigma = strength.hertz_line_stress(np.clip(force, 0.0, None), width, np.where(contact, curvature, 1.0), modulus)
-    return np.where(contact, sigma, 0.0)
-
-
 def contact_stress_value(design, width, modulus=strength.STEEL_MODULUS, top=1.0):
     """Largest Hertz stress between cam and follower along the open event [Pa], refined on the contour.
 
@@ -253,19 +216,19 @@ def contact_stress_value(design, width, modulus=strength.STEEL_MODULUS, top=1.0)
     Notes
     -----
     The cam force of :func:`worst_cam_force` with the design's chosen spring and the instantaneous profile radius at
-    each camshaft angle of the open event (:func:`hertz_stress`; Shang Hanji (1988), eqs. 2.4-2.5); its largest value
+    each camshaft angle of the open event (:meth:`valvetrain.followers.Follower.contact_stress`; Shang Hanji (1988),
+    eqs. 2.4-2.5); its largest value
     is refined between the samples of each piece of the law (:func:`valvetrain.numerics.extremum`), so that a sharp
     nose between the table's angles is not missed.
     """
     law, cam, drive = design.law, design.cam, design.drive
-    line, omega, roller = drive.lines["chosen"], cam.cam_speed * top, cam.roller_radius
+    line, omega, follower = drive.lines["chosen"], cam.cam_speed * top, cam.follower_model
 
     def stress(theta):
         _, _, d2h, _ = law.derivatives(theta)
         force = worst_cam_force(line.force(cam.valve_lift(theta)), drive.masses.at_valve, cam.rocker_ratio,
                                 omega**2 * d2h)
-        rho = law.profile(theta, cam.heel_radius, cam.follower, roller)[1]
-        return hertz_stress(force, rho, cam.follower, roller, width, modulus)
+        return follower.contact_stress(force, law.curvature(theta, cam.heel_radius, follower), width, modulus)
 
     bp = law.breakpoints
     edges = np.unique(np.concatenate([[law.valve_opens], bp[(bp > law.valve_opens) & (bp < law.valve_closes)],

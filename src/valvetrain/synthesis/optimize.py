@@ -41,7 +41,7 @@ import numpy as np
 from pydantic import ValidationError
 from scipy import optimize
 
-from .. import flow, geometry, springs
+from .. import flow, springs
 from ..design import run as run_design
 from ..design.drive import spring_options
 from ..design.dynamics import SPEED_RANGE, build_train, dynamics_stage
@@ -51,11 +51,11 @@ from ..dynamics.sweep import sweep
 from ..laws import PolydyneLaw
 from ..laws.kurz import RAMP_VELOCITY_RANGE_MM_PER_DEG
 from ..specification import SpecError
-from ..specification.cams import train_mass
+from ..layouts import train_mass
 from ..specification.models import Dynamics, Valve
 from ..specification.si import si
 from ..units import DEG, cam_per_crank, to_display
-from .constraints import Limits, constraints, convex_radius, hertz_stress, spring_reserve, worst_cam_force
+from .constraints import Limits, constraints, spring_reserve, worst_cam_force
 
 OBJECTIVES = {
     "fullness": ("fullness", "", "fullness of the valve lift diagram (Shang Hanji (1988), eq. 2.3)"),
@@ -157,11 +157,6 @@ class Variable:
             node[last] = value
 
 
-def _segment_angle_variables(half):
-    """phi1, phi2 of a Kurz or constant-acceleration cam (phi3 the remainder)."""
-    return [Variable("cam.phi1_deg", 0.15 * half, 0.75 * half), Variable("cam.phi2_deg", 0.02 * half, 0.45 * half)]
-
-
 def _ramp_and_spring(cam):
     """The ramp end velocity within its band (Valve-train practical works (n.d.), eq. 2.1) and the spring reserve
     K_z within its band (eq. 5.3)."""
@@ -190,34 +185,20 @@ def default_variables(valve, engine):
     ------
     ValueError
         A law without parameters to vary (a measured table, three arcs), or an asymmetric cam.
-    """
-    from ..specification.cams import main_half_angle_deg
 
+    Notes
+    -----
+    Each cam model gives its law's own (:meth:`search_variables` of :mod:`valvetrain.specification.cams`).
+    """
     cam = valve.cam
     if getattr(cam, "closing", None) is not None:
         raise ValueError("optimize: the cam has a [cam.closing] flank of its own; name the variables with --vary")
-    law = cam.law
-    if law not in ("kurz", "constant_acceleration", "polydyne", "combined", "power_polynomial"):
-        raise ValueError(f"optimize: law = {law!r} has no default variables; name them with --vary KEY=LOW,HIGH "
+    own = cam.search_variables(valve, engine)
+    if own is None:
+        raise ValueError(f"optimize: law = {cam.law!r} has no default variables; name them with --vary KEY=LOW,HIGH "
                          "(e.g. --vary cam.nose_radius_mm=5,12)")
-    half = main_half_angle_deg(valve, engine.strokes) if cam.needs_timing else None
-    if law == "kurz":
-        out = _segment_angle_variables(half) + [Variable("cam.shape_factor", 0.05, 0.99)]
-    elif law == "constant_acceleration":
-        out = _segment_angle_variables(half) + [Variable("cam.kappa", 0.1, 5.0)]
-    elif law == "polydyne":
-        given = [k for k in ("p", "q", "r", "s") if getattr(cam, k) is not None]
-        out = [Variable(f"cam.{k}", 3.0, 4.0 * getattr(cam, k)) for k in given]
-    elif law == "combined":
-        out = [Variable(f"cam.ratios.{i}.value", -5.0 * abs(r.value) - 1.0, 5.0 * abs(r.value) + 1.0)
-               for i, r in enumerate(cam.ratios, 1)]
-        if not out:
-            raise ValueError("optimize: the combined cam has no [[cam.ratios]]; name the variables with --vary")
-    elif law == "power_polynomial":
-        return [Variable("cam.peak_acceleration_mm_per_rad2", 10.0, 600.0),
-                Variable("cam.phi1_deg", 2.0, 0.9 * (half - cam.ramp_angle_deg)),
-                Variable("cam.peak_position", 0.02, 0.98), Variable("cam.trough_position", 0.02, 0.98)]
-    return out + _ramp_and_spring(cam)
+    out = [Variable(*v) for v in own]
+    return out + _ramp_and_spring(cam) if cam.varies_ramp_and_spring else out
 
 
 def parse_variables(items):
@@ -386,7 +367,7 @@ class Problem:
         self.x0 = np.array([self._value(v) for v in self.variables], dtype=float)
         self.bounds = [(v.low, v.high) for v in self.variables]
         self.reserve0 = self.section.drive.spring_reserve
-        self.follower, self.roller = design.cam.follower, design.cam.roller_radius
+        self.follower = design.cam.follower_model
         self.heel, self.i_k, self.omega = design.cam.heel_radius, design.cam.rocker_ratio, design.cam.cam_speed
         self.whole_event = getattr(self.section.cam, "closing", None) is not None
         self.mass = design.drive.masses.at_valve
@@ -436,7 +417,7 @@ class Problem:
         """Names of the entries of :meth:`evaluate`'s margins."""
         L = self.limits
         names = ["spring reserve"]
-        if self.follower == "roller":
+        if self.follower.rolling:
             names += ["pressure angle"] + (["concave radius"] if L.grinding_wheel_radius else [])
         names += [n for n, lim in (("rho_min", L.min_rho), ("contact stress", L.cam_width),
                                    ("max acceleration", L.max_acceleration), ("min acceleration", L.min_acceleration),
@@ -451,9 +432,9 @@ class Problem:
         for v, value in zip(self.variables, x, strict=True):
             v.put(data, float(value))
         cam = data["cam"]
-        if cam.get("law") in ("kurz", "constant_acceleration") and any(
-                v.path in ("cam.phi1_deg", "cam.phi2_deg") for v in self.variables):
-            cam.pop("phi3_deg", None)
+        for key, sources in self.section.cam.derived_keys.items():
+            if any(v.path in sources for v in self.variables):
+                cam.pop(key, None)
         return data
 
     def law(self, x):
@@ -495,17 +476,14 @@ class Problem:
         q = {"spring reserve": np.where(loaded, spring / np.where(loaded, inertia, 1.0), np.inf),
              "lift": h / nose, "overshoot": -h / nose,
              "max acceleration": -d2h, "min acceleration": d2h}
-        if self.follower == "roller":
-            rho = geometry.roller_follower_curvature(self.heel, self.roller, h, dh, d2h)
-            q["pressure angle"] = -np.abs(geometry.roller_pressure_angle(self.heel, self.roller, h, dh))
+        rho = self.follower.curvature(self.heel, h, dh, d2h)
+        if self.follower.rolling:
+            q["pressure angle"] = -np.abs(self.follower.pressure_angle(self.heel, h, dh))
             q["concave radius"] = np.where(rho < 0.0, 1.0 / np.where(rho < 0.0, rho, -1.0), 0.0)
-        else:
-            rho = geometry.flat_follower_curvature(self.heel, h, d2h)
-        q["rho_min"] = convex_radius(rho, self.follower, self.roller)
+        q["rho_min"] = self.follower.convex_radius(rho)
         if L.cam_width is not None:
             force = worst_cam_force(spring, self.mass, self.i_k, (self.omega * L.top_speed)**2 * d2h)
-            q["contact stress"] = -hertz_stress(force, rho, self.follower, self.roller, L.cam_width,
-                                                L.contact_modulus)
+            q["contact stress"] = -self.follower.contact_stress(force, rho, L.cam_width, L.contact_modulus)
         return q, h, dh, d2h
 
     def _extremes(self, law, scale):
@@ -526,11 +504,12 @@ class Problem:
         """The objective of :data:`OBJECTIVES` as the flow stage computes it."""
         lift = valve.rocker_ratio * law.lift_max
         bp = law.breakpoints
+        def valve_lift(t):
+            return law.valve_lift(t, valve.rocker_ratio, self.follower)
+
         if self.objective == "fullness":
-            return flow.fullness(lambda t: law.valve_lift(t, valve.rocker_ratio), law.valve_opens, law.valve_closes,
-                                 lift, bp)
-        return flow.time_area(lambda t: flow.curtain_area(law.valve_lift(t, valve.rocker_ratio),
-                                                          valve.throat_diameter, valve.seat_angle),
+            return flow.fullness(valve_lift, law.valve_opens, law.valve_closes, lift, bp)
+        return flow.time_area(lambda t: flow.curtain_area(valve_lift(t), valve.throat_diameter, valve.seat_angle),
                               law.valve_opens, law.valve_closes, self.omega, bp)
 
     def evaluate(self, x, dynamics=None):
@@ -582,7 +561,7 @@ class Problem:
         reserve = least["spring reserve"] if np.isfinite(least["spring reserve"]) else 10.0
         target = L.min_spring_reserve * scale
         out = [(reserve - target) / target]
-        if self.follower == "roller":
+        if self.follower.rolling:
             out.append((L.max_pressure_angle + least["pressure angle"]) / L.max_pressure_angle)
             if L.grinding_wheel_radius:
                 out.append(1.0 - L.grinding_wheel_radius * max(-least["concave radius"], 0.0))
@@ -950,7 +929,7 @@ def _passed(checks):
 def _designed(problem, spec, valve, limits, spring, x):
     """(x, specification, full design, final checks, specification text) of a point, or None where the point admits
     no full design (no spring fits, a law the design refuses)."""
-    from ..specification.validate import parse_spec
+    from ..specification.reading import parse_spec
 
     values = {v.path: float(value) for v, value in zip(problem.variables, x, strict=True)}
     text = optimum_spec_text(spec, valve, problem.point(x), values)

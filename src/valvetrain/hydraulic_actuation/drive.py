@@ -1,7 +1,7 @@
 """Simulation of a hydraulic valve drive over camshaft angle: plunger chamber, pipe, actuator chamber, valve.
 
 The method is that of Shang Hanji (1988), ch. 7; the pipe is solved by the method of characteristics of
-Wylie and Streeter (1978) (:mod:`valvetrain.hydraulic.moc`) and the two chambers and the valve are
+Wylie and Streeter (1978) (:mod:`valvetrain.hydraulic_actuation.moc`) and the two chambers and the valve are
 implicit (backward Euler) boundary conditions of it, solved with the end characteristic in one linear
 step, so that a stiff (nearly incompressible) liquid is stable.
 
@@ -20,7 +20,7 @@ the reaction that keeps it there; the seating velocity is the valve's velocity o
 stops it.  The stop ends the valve's travel at y_stop: a spring of rate K_stop (the stop and the valve's stem)
 that acts only beyond it.  The chamber volumes are held at their rest values (linear
 compressibility).  Pressures below the vapour pressure are clamped to it (see
-:mod:`valvetrain.hydraulic.moc`).
+:mod:`valvetrain.hydraulic_actuation.moc`).
 """
 
 from dataclasses import dataclass
@@ -297,7 +297,7 @@ def simulate(law, drive, cam_speed, start=None, span=2.0 * math.pi, gas_force=No
     ----------
     law : valvetrain.laws.LiftLaw
         The plunger (follower) lift h(theta) [m] against camshaft angle [rad].
-    drive : valvetrain.hydraulic.HydraulicDrive
+    drive : valvetrain.hydraulic_actuation.HydraulicDrive
     cam_speed : float
         Camshaft speed omega [rad/s].
     start : float, optional

@@ -24,30 +24,18 @@ from the contour geometry of its section 2.1, eqs. (2.6)-(2.7), (2.15)-(2.16)).
 
 import numpy as np
 
-from . import geometry
+from .followers import FLAT
 from .numerics import invert_angle
 
 
-def _axes(theta):
-    s, c = np.sin(theta), np.cos(theta)
-    return np.stack([s, c]), np.stack([c, -s])
-
-
-def _base_curve(derivs, theta, heel, follower, roller):
-    """The curve a follower's contour is an offset of: the contour itself (flat follower, depth 0) or the roller
-    centre's pitch curve (depth -R_r); its points, derivative d/dtheta, radius of curvature and outward normal."""
+def _pitch_curve(derivs, theta, heel, follower):
+    """The follower's pitch curve of the law ``derivs`` (:meth:`valvetrain.followers.Follower.pitch_curve`)."""
     theta = np.asarray(theta, dtype=float)
     h, dh, d2h = derivs(theta)[:3]
-    u, t = _axes(theta)
-    if follower == "flat":
-        rho = geometry.flat_follower_curvature(heel, h, d2h)
-        return geometry.flat_follower_contour(theta, heel, h, dh), rho * t, rho, u, 0.0
-    g = geometry.roller_pitch_radius(heel, roller, h)
-    rho = geometry.roller_pitch_curvature(heel, roller, h, dh, d2h)
-    return g * u, dh * u + g * t, rho, (g * u - dh * t) / np.hypot(g, dh), -roller
+    return follower.pitch_curve(theta, heel, h, dh, d2h)
 
 
-def offset_curve(derivs, theta, heel, distance, follower="flat", roller=0.0):
+def offset_curve(derivs, theta, heel, distance, follower=FLAT):
     """The offset of the cam contour by ``distance`` along its outward normal [m].
 
     Parameters
@@ -60,9 +48,8 @@ def offset_curve(derivs, theta, heel, distance, follower="flat", roller=0.0):
         Heel circle radius of the cam [m].
     distance : float
         Offset along the outward normal [m] (the wheel radius gives the wheel-centre path).
-    follower : {"flat", "roller"}
-    roller : float
-        Roller radius [m].
+    follower : valvetrain.followers.Follower
+        The cam's follower (default flat).
 
     Returns
     -------
@@ -88,12 +75,12 @@ def offset_curve(derivs, theta, heel, distance, follower="flat", roller=0.0):
     Shang Hanji (1988), section 2.1, eqs. (2.6)-(2.7), (2.15)-(2.16), for the contour, its normal and
     curvature.
     """
-    base, dbase, rho, normal, depth = _base_curve(derivs, theta, heel, follower, roller)
+    base, dbase, rho, normal, depth = _pitch_curve(derivs, theta, heel, follower)
     d = depth + distance
     return base + d * normal, dbase * (1.0 + d / rho), normal, rho + d
 
 
-def wheel_centre_path(derivs, theta, heel, wheel_radius, follower="flat", roller=0.0):
+def wheel_centre_path(derivs, theta, heel, wheel_radius, follower=FLAT):
     """The grinding-wheel centre in the cam frame while the wheel grinds the contour point of ``theta``.
 
     Returns
@@ -126,11 +113,11 @@ def wheel_centre_path(derivs, theta, heel, wheel_radius, follower="flat", roller
     >>> L.tolist()
     [320.0, 320.0]
     """
-    c = offset_curve(derivs, theta, heel, wheel_radius, follower, roller)[0]
+    c = offset_curve(derivs, theta, heel, wheel_radius, follower)[0]
     return c, np.hypot(*c), np.arctan2(*c)
 
 
-def wheel_centre_radius(derivs, psi, heel, wheel_radius, follower="flat", roller=0.0):
+def wheel_centre_radius(derivs, psi, heel, wheel_radius, follower=FLAT):
     """The wheel centre's polar radius L [m] at polar angles ``psi`` of the cam frame [rad from the nose].
 
     This is the motion the master must give the wheel head while the spindle turns: at spindle angle
@@ -141,11 +128,11 @@ def wheel_centre_radius(derivs, psi, heel, wheel_radius, follower="flat", roller
     ----------
     Shang Hanji (1988), ch. 6.
     """
-    theta = invert_angle(lambda t: wheel_centre_path(derivs, t, heel, wheel_radius, follower, roller)[2], psi)
-    return wheel_centre_path(derivs, theta, heel, wheel_radius, follower, roller)[1]
+    theta = invert_angle(lambda t: wheel_centre_path(derivs, t, heel, wheel_radius, follower)[2], psi)
+    return wheel_centre_path(derivs, theta, heel, wheel_radius, follower)[1]
 
 
-def master_follower_lift(derivs, psi, heel, wheel_radius, bar_ratio, follower="flat", roller=0.0):
+def master_follower_lift(derivs, psi, heel, wheel_radius, bar_ratio, follower=FLAT):
     """Lift of the master follower at spindle angles ``psi`` [rad from the nose], s_m = i (L - L_min) [m].
 
     Notes
@@ -158,7 +145,7 @@ def master_follower_lift(derivs, psi, heel, wheel_radius, bar_ratio, follower="f
     ----------
     Shang Hanji (1988), ch. 6 (master follower lift).
     """
-    return bar_ratio * (wheel_centre_radius(derivs, psi, heel, wheel_radius, follower, roller) - (heel + wheel_radius))
+    return bar_ratio * (wheel_centre_radius(derivs, psi, heel, wheel_radius, follower) - (heel + wheel_radius))
 
 
 def default_master_base_radius(heel, wheel_radius, bar_ratio, master_roller):
@@ -167,7 +154,7 @@ def default_master_base_radius(heel, wheel_radius, bar_ratio, master_roller):
     return bar_ratio * (heel + wheel_radius) - master_roller
 
 
-def master_pitch(derivs, theta, heel, wheel_radius, bar_ratio, master_base, master_roller, follower="flat", roller=0.0):
+def master_pitch(derivs, theta, heel, wheel_radius, bar_ratio, master_base, master_roller, follower=FLAT):
     """The master follower's centre curve (master pitch curve) in the master frame, parametrised by the cam angle.
 
     Returns
@@ -188,7 +175,7 @@ def master_pitch(derivs, theta, heel, wheel_radius, bar_ratio, master_base, mast
     ----------
     Shang Hanji (1988), ch. 6 (master cam) and eq. (2.16) (contour from the pitch radius).
     """
-    c, dc = offset_curve(derivs, theta, heel, wheel_radius, follower, roller)[:2]
+    c, dc = offset_curve(derivs, theta, heel, wheel_radius, follower)[:2]
     length = np.hypot(*c)
     unit = c / length
     dl = np.sum(unit * dc, axis=0)
@@ -198,32 +185,29 @@ def master_pitch(derivs, theta, heel, wheel_radius, bar_ratio, master_base, mast
     return g * unit, dm, np.stack([-dm[1], dm[0]]) / speed
 
 
-def master_contour(derivs, theta, heel, wheel_radius, bar_ratio, master_base, master_roller, follower="flat",
-                   roller=0.0):
+def master_contour(derivs, theta, heel, wheel_radius, bar_ratio, master_base, master_roller, follower=FLAT):
     """The master cam's contour [m], shape (2, n): the pitch curve offset inwards by the master roller radius.
 
     References
     ----------
     Shang Hanji (1988), ch. 6, with eq. (2.16) for a roller follower.
     """
-    m, _, n = master_pitch(derivs, theta, heel, wheel_radius, bar_ratio, master_base, master_roller, follower, roller)
+    m, _, n = master_pitch(derivs, theta, heel, wheel_radius, bar_ratio, master_base, master_roller, follower)
     return m - master_roller * n
 
 
-def master_pitch_curvature(derivs, theta, heel, wheel_radius, bar_ratio, master_base, master_roller, follower="flat",
-                           roller=0.0):
+def master_pitch_curvature(derivs, theta, heel, wheel_radius, bar_ratio, master_base, master_roller, follower=FLAT):
     """Radius of curvature of the master pitch curve [m] (positive convex) on the angles ``theta``, by
     differentiating the analytic derivative numerically (second-order differences on the given angles, which
     should be dense and include the law's breakpoints). The master contour's radius is this minus r_m."""
-    dm = master_pitch(derivs, theta, heel, wheel_radius, bar_ratio, master_base, master_roller, follower, roller)[1]
+    dm = master_pitch(derivs, theta, heel, wheel_radius, bar_ratio, master_base, master_roller, follower)[1]
     d2m = np.gradient(dm, theta, axis=1)
     cross = dm[0] * d2m[1] - dm[1] * d2m[0]
     with np.errstate(divide="ignore"):
         return np.where(cross == 0.0, np.inf, -np.hypot(*dm) ** 3 / np.where(cross == 0.0, 1.0, cross))
 
 
-def master_polar_radius(derivs, psi, heel, wheel_radius, bar_ratio, master_base, master_roller, follower="flat",
-                        roller=0.0):
+def master_polar_radius(derivs, psi, heel, wheel_radius, bar_ratio, master_base, master_roller, follower=FLAT):
     """Polar radius of the master contour [m] at polar angles ``psi`` of the master frame [rad from the nose
     direction], solved on the analytic contour (the contour point's polar angle inverted to round-off).
 
@@ -231,13 +215,12 @@ def master_polar_radius(derivs, psi, heel, wheel_radius, bar_ratio, master_base,
     ----------
     Shang Hanji (1988), ch. 6 (master cam).
     """
-    args = (heel, wheel_radius, bar_ratio, master_base, master_roller, follower, roller)
+    args = (heel, wheel_radius, bar_ratio, master_base, master_roller, follower)
     theta = invert_angle(lambda t: np.arctan2(*master_contour(derivs, t, *args)), psi)
     return np.hypot(*master_contour(derivs, theta, *args))
 
 
-def master_flat_lift(derivs, phi, heel, wheel_radius, bar_ratio, master_base, master_roller, follower="flat",
-                     roller=0.0):
+def master_flat_lift(derivs, phi, heel, wheel_radius, bar_ratio, master_base, master_roller, follower=FLAT):
     """Flat-follower lift of a convex master [m] in the directions ``phi`` [rad from the nose direction]: its support
     function less its heel radius, for making the master on a surface grinder.
 
@@ -253,13 +236,13 @@ def master_flat_lift(derivs, phi, heel, wheel_radius, bar_ratio, master_base, ma
     Shang Hanji (1988), eq. (2.15) (the flat follower's contact) and ch. 6 (machining the master on a surface
     grinder, whose wheel face acts as a flat follower).
     """
-    args = (heel, wheel_radius, bar_ratio, master_base, master_roller, follower, roller)
+    args = (heel, wheel_radius, bar_ratio, master_base, master_roller, follower)
     theta = invert_angle(lambda t: np.arctan2(*master_pitch(derivs, t, *args)[2]), phi)
     normal = master_pitch(derivs, theta, *args)[2]
     return np.sum(master_contour(derivs, theta, *args) * normal, axis=0) - master_base
 
 
-def grindable(derivs, theta, heel, wheel_radius, follower="flat", roller=0.0):
+def grindable(derivs, theta, heel, wheel_radius, follower=FLAT):
     """Whether a wheel of ``wheel_radius`` [m] grinds the contour without cutting into it, and the smallest
     factor 1 + R_w / rho of the contour (the wheel path's regularity) on ``theta``.
 
@@ -271,13 +254,13 @@ def grindable(derivs, theta, heel, wheel_radius, follower="flat", roller=0.0):
     UkrSURT Proceedings (2019) (the wheel radius must not exceed the concave radius of the cam); Shang Hanji
     (1988), ch. 6.
     """
-    base, dbase, rho, normal, depth = _base_curve(derivs, theta, heel, follower, roller)
+    base, dbase, rho, normal, depth = _pitch_curve(derivs, theta, heel, follower)
     factor = 1.0 + (depth + wheel_radius) / rho
     worst = float(np.min(factor))
     return worst > 0.0, worst
 
 
-def worn_wheel_lift(derivs, theta, heel, wheel_radius, wear, follower="flat", roller=0.0, infeed=False):
+def worn_wheel_lift(derivs, theta, heel, wheel_radius, wear, follower=FLAT, infeed=False):
     """Follower lift [m] of the cam ground by a worn wheel (radius R_w - w) on the design wheel-centre path,
     from the cam's own base circle (R_0 + w), exactly: by re-enveloping the path with the worn wheel.
 
@@ -310,7 +293,7 @@ def worn_wheel_lift(derivs, theta, heel, wheel_radius, wear, follower="flat", ro
     Shang Hanji (1988), ch. 6 (the effect of the wheel radius on the cam profile), derived here.
     """
     def path(tau):
-        c, dc = offset_curve(derivs, tau, heel, wheel_radius, follower, roller)[:2]
+        c, dc = offset_curve(derivs, tau, heel, wheel_radius, follower)[:2]
         if infeed:
             length = np.hypot(*c)
             unit = c / length
@@ -320,21 +303,10 @@ def worn_wheel_lift(derivs, theta, heel, wheel_radius, wear, follower="flat", ro
         return c - (wheel_radius - wear) * n, n
 
     base = heel if infeed else heel + wear
-    theta = np.asarray(theta, dtype=float)
-    if follower == "flat":
-        tau = invert_angle(lambda t: np.arctan2(*path(t)[1]), theta)
-        e, _ = path(tau)
-        return np.sum(e * _axes(theta)[0], axis=0) - base
-
-    def centre(t):
-        e, n = path(t)
-        return e + roller * n
-
-    tau = invert_angle(lambda t: np.arctan2(*centre(t)), theta)
-    return np.hypot(*centre(tau)) - (base + roller)
+    return follower.lift_on_path(path, np.asarray(theta, dtype=float), base)
 
 
-def wear_error_first_order(derivs, theta, heel, wear, follower="flat", roller=0.0, wheel_radius=None, infeed=False):
+def wear_error_first_order(derivs, theta, heel, wear, follower=FLAT, wheel_radius=None, infeed=False):
     """First-order lift error and phase shift of a cam ground by a wheel worn by ``wear`` [m].
 
     Returns
@@ -368,14 +340,10 @@ def wear_error_first_order(derivs, theta, heel, wear, follower="flat", roller=0.
     theta = np.asarray(theta, dtype=float)
     offset, base = np.full_like(theta, wear), wear
     if infeed:
-        c, _, n, _ = offset_curve(derivs, theta, heel, wheel_radius, follower, roller)
+        c, _, n, _ = offset_curve(derivs, theta, heel, wheel_radius, follower)
         offset, base = wear * (1.0 - np.sum(c * n, axis=0) / np.hypot(*c)), 0.0
-    if follower == "flat":
-        return offset - base, np.zeros_like(theta)
     h, dh = derivs(theta)[:2]
-    g = geometry.roller_pitch_radius(heel, roller, h)
-    beta = geometry.roller_pressure_angle(heel, roller, h, dh)
-    return offset / np.cos(beta) - base, offset * np.sin(beta) / g
+    return follower.wear_error(offset, base, heel, h, dh)
 
 
 __all__ = ["default_master_base_radius", "grindable", "master_contour", "master_follower_lift", "master_pitch",

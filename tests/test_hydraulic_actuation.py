@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 from scipy.optimize import brentq
 
-from valvetrain.hydraulic import (PRESSURE, VELOCITY, Actuator, Fluid, HydraulicDrive, Pipe, Pump, Valve,
+from valvetrain.hydraulic_actuation import (PRESSURE, VELOCITY, Actuator, Fluid, HydraulicDrive, Pipe, Pump, Valve,
                                   pipe_transient, simulate, speed_sweep, wave_speed)
 from valvetrain.laws import KurzLaw
 

@@ -1,7 +1,7 @@
 """The hydraulic stage of a valve design: the valve driven through a liquid column ([valves.NAME.hydraulic]).
 
 The valve's cam drives a plunger; the stage simulates one camshaft revolution of the drive of
-:mod:`valvetrain.hydraulic` at the given engine speed and reports the pressures at both ends of the pipe, the
+:mod:`valvetrain.hydraulic_actuation` at the given engine speed and reports the pressures at both ends of the pipe, the
 valve lift against the rigid drive (plunger lift times the area ratio), the delays and lift loss, the largest
 pressure, the cavitation (a pressure held at the vapour pressure, a warning), the seating velocity (a warning
 above the dynamics stage's limit) and the bounce; then it sweeps the engine speed (one revolution per speed) and
@@ -26,7 +26,7 @@ from ..checks import check
 from ..crank.pressure import on_grid
 from ..dynamics.sweep import BOUNCE_TOLERANCE
 from ..flow import circle_area
-from ..hydraulic import (Actuator, DriveResult, Fluid, HydraulicDrive, Pipe, Pump, SpeedSweep, Valve, simulate,
+from ..hydraulic_actuation import (Actuator, DriveResult, Fluid, HydraulicDrive, Pipe, Pump, SpeedSweep, Valve, simulate,
                          speed_sweep)
 from ..units import DEG, MM, cam_per_crank, rpm_to_rad_s, to_display
 from .dynamics import SEATING_VELOCITY_MAX, finite_or_none
@@ -169,7 +169,7 @@ class HydraulicResult:
 
 
 def _drive(h):
-    """The :class:`~valvetrain.hydraulic.HydraulicDrive` of the SI view of a hydraulic section (the valve's stop not yet
+    """The :class:`~valvetrain.hydraulic_actuation.HydraulicDrive` of the SI view of a hydraulic section (the valve's stop not yet
     placed)."""
     area = lambda d: math.pi * d**2 / 4.0  # noqa: E731
     wall = math.inf if h.pipe_wall is None else h.pipe_wall
@@ -189,7 +189,7 @@ def lift_off_pressure(drive, gas_force=0.0):
 
     Parameters
     ----------
-    drive : valvetrain.hydraulic.HydraulicDrive
+    drive : valvetrain.hydraulic_actuation.HydraulicDrive
     gas_force : float
         Force of the cylinder pressure that holds the valve on its seat [N].
 
@@ -277,7 +277,7 @@ def hydraulic_stage(valve, law, engine, gas, name, nose, cylinder=None):
 
     References
     ----------
-    Shang Hanji (1988), ch. 7 (the drive) and ch. 3 (seating velocity and bounce); :mod:`valvetrain.hydraulic`.
+    Shang Hanji (1988), ch. 7 (the drive) and ch. 3 (seating velocity and bounce); :mod:`valvetrain.hydraulic_actuation`.
     """
     hydraulic = valve.hydraulic
     drive = _drive(hydraulic)

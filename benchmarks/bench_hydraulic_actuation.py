@@ -1,6 +1,6 @@
 """Benchmark: ``valvetrain run examples/marine-hydraulic-exhaust.toml`` and where its time goes.
 
-Run on demand: ``python benchmarks/bench_hydraulic.py``.  Prints, best of several repeats:
+Run on demand: ``python benchmarks/bench_hydraulic_actuation.py``.  Prints, best of several repeats:
 
 * the command itself (a subprocess, as a user types it): wall time and CPU time (user + system);
 * the same command on the example without its ``[valves.exhaust.hydraulic]`` section, the baseline measured in the
@@ -58,7 +58,7 @@ def _in_process(tmp):
         return clock[-1][0] - clock[-2][0], clock[-1][1] - clock[-2][1]
 
     from valvetrain.design import run
-    from valvetrain.design.hydraulic import CylinderPressure, hydraulic_stage
+    from valvetrain.design.hydraulic_actuation import CylinderPressure, hydraulic_stage
     from valvetrain.export import write_outputs
     from valvetrain.specification import load_spec, si
     imports = lap()

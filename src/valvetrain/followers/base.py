@@ -1,0 +1,222 @@
+"""The follower interface: what a cam follower is to the rest of the package, and the registry by name.
+
+A follower is the part that touches the cam and turns its lift into the motion of the train.  Every place
+that depends on the kind of follower (the contour and its curvature in the profile stage, the undercut and
+pressure-angle checks, the Hertz stress in the strength stage, the synthesis and the dynamics, the grinding of
+the cam, the figures) asks the follower object through the methods of :class:`Follower`, never its name.  The
+specification's ``[valves.NAME.cam] follower = "NAME"`` selects the class registered under that name
+(:data:`REGISTRY`, :func:`register`), and :func:`follower_of` builds it from the cam's SI view (or the law
+stage's ``CamResult``).
+
+For the author of a new follower (a finger follower, a follower on a lash adjuster)
+-------------------------------------------------------------------------------------
+Write one module in this package with a subclass of :class:`Follower` decorated ``@register``, import it in
+``followers/__init__.py``, and give it:
+
+- ``name`` (the ``follower`` value of the specification) and the class attributes below;
+- :meth:`from_cam`: the instance from the cam's SI view (SI lengths; a key the follower needs that the cam
+  section lacks is a new pydantic field of ``specification/cams.py`` and a README row, and :meth:`missing_key`
+  names it when it is absent);
+- the geometry, each a pure function of SI arrays of equal shape: camshaft angle ``theta`` [rad from the nose,
+  camshaft], the law's lift ``h`` [m] and its derivatives ``dh`` [m/rad], ``d2h`` [m/rad^2] at those angles,
+  and the cam's heel radius ``heel`` [m] (the radius the law's lift starts from).  The cam frame is that of
+  :mod:`valvetrain.geometry`: the follower's line of action along ``u = (sin theta, cos theta)``, nose on +y.
+
+  ============================  =======================================================================
+  :meth:`contour`               contact points, shape (2, n) [m]
+  :meth:`curvature`             radius of curvature of the cam profile rho [m] (negative: concave)
+  :meth:`pitch_curve`           the curve the contour is an offset of, for grinding and the figure
+  :meth:`pressure_angle`        angle between the contact normal and the line of action [rad]
+  :meth:`contact_offset`        distance of the contact point from the line of action [m]
+  :meth:`convex_radius`         rho where the profile is convex to the follower, +inf elsewhere [m]
+  :meth:`concave`               mask of the concave stretches it follows
+  :meth:`undercut`              whether the smallest convex radius makes the profile unfollowable
+  :meth:`line_contact`          mask of the angles with Hertz line contact
+  :meth:`contact_curvature`     1/rho_1 + 1/rho_2 of the contact [1/m] (the follower's own radius in it)
+  :meth:`contact_stress`        Hertz line stress under a cam force [Pa]
+  :meth:`lift_on_path`          the follower's lift read off a cam given by a wheel-centre path (grinding)
+  :meth:`wear_error`            first-order lift error of a cam ground by a worn wheel
+  :meth:`lubrication`           the film characteristic of the contact, or None where none is defined
+  :meth:`ratio`                 the follower's own lever ratio as a function of the lift [-]
+  ============================  =======================================================================
+
+  A follower whose lever ratio varies with the lift (a finger follower: valve lift / cam lift depends on the
+  finger's angle) returns it from :meth:`ratio`; ``LiftLaw.valve_lift`` multiplies the valve's rocker ratio by it
+  (the law stage's ``CamResult.valve_lift``, hence the flow, the tables and the figures, and the synthesis'
+  objective).  The forces and masses reduced through the drive (drive, strength and dynamics stages, the
+  synthesis' spring reserve) still take the constant rocker ratio: a follower with a varying ratio must bring
+  them the ratio at each lift too.  Today's followers translate on their line of action: ratio 1, contact on the
+  line u.  A finger follower's contact point and pressure angle follow from its pivot and pad geometry; its
+  contour and curvature must still be those of the cam seen in the frame above.
+
+- in the dynamics network the follower contributes its contact (the stress under the simulated force,
+  :meth:`contact_stress`, and the film, :meth:`lubrication`); its mass is today the tappet's of the layout's
+  train (``[drive.masses] tappet_kg``, :mod:`valvetrain.layouts`).  A follower with an inertia of its own (a
+  finger about its pivot) adds its node where the layout's train is built (``design/dynamics.py``,
+  ``_multi_train``), reading its mass from ``[drive.masses]``.
+
+- ``rolling`` selects, beside the geometry, what the stages report: a rolling follower's profile record (roller
+  radius, largest pressure angle, concave radius) and its side-force record and the pressure-angle checks; a
+  sliding one's contact-offset record, its face's edge loading and the tappet's side pressure.  A tangent cam
+  admits only a rolling follower.
+
+Methods return numpy arrays (floats where the argument is a scalar); none of them mutates its arguments or
+the follower, and they hold no state beyond the follower's dimensions.  ``tests/test_followers.py`` checks the two
+followers against hand calculations; a new follower's tests go beside them.
+"""
+
+from typing import ClassVar
+
+import numpy as np
+
+from .. import strength
+
+REGISTRY = {}
+"""``follower`` name -> its :class:`Follower` subclass, in the order of registration."""
+
+
+def register(cls):
+    """Class decorator: add a follower class to :data:`REGISTRY` under its ``name``."""
+    REGISTRY[cls.name] = cls
+    return cls
+
+
+def follower_of(cam):
+    """The follower of a cam: the class registered under ``cam.follower`` built by its :meth:`Follower.from_cam`.
+
+    ``cam`` is the cam's SI view or the law stage's ``CamResult`` (attributes ``follower`` and the follower's
+    dimensions in SI, e.g. ``roller_radius`` [m])."""
+    return REGISTRY[cam.follower].from_cam(cam)
+
+
+class Follower:
+    """A cam follower: the geometry and contact of the cam as this follower sees it (SI throughout).
+
+    Class attributes
+    ----------------
+    name : str
+        The specification's ``follower`` value.
+    rolling : bool
+        True where a roller touches the cam: a pitch curve apart from the contour, a pressure angle, concave
+        stretches the roller can follow (and a side force on its carrier); False for a sliding face.
+    radius : float
+        The follower's own radius of curvature at the contact [m] (inf for a flat face).
+    undercut_quantity, undercut_source : str
+        The name and the source of the undercut check of the profile (a failure where :meth:`undercut`).
+    """
+
+    name: ClassVar[str]
+    rolling: ClassVar[bool] = False
+    radius: float = np.inf
+    undercut_quantity: ClassVar[str]
+    undercut_source: ClassVar[str]
+
+    @classmethod
+    def from_cam(cls, cam):
+        """The follower of a cam's SI view (or ``CamResult``)."""
+        return cls()
+
+    @classmethod
+    def missing_key(cls, cam):
+        """The message for a key of the cam section (``[valves.NAME.cam]``, in its units) that this follower needs
+        and that is not given, or None."""
+        return None
+
+    def contour(self, theta, heel, h, dh):
+        """Contact points of the cam contour, shape (2, n) [m], at camshaft angles ``theta`` [rad]."""
+        raise NotImplementedError
+
+    def curvature(self, heel, h, dh, d2h):
+        """Radius of curvature of the cam profile [m]: positive convex, negative concave, inf straight."""
+        raise NotImplementedError
+
+    def pitch_curve(self, theta, heel, h, dh, d2h):
+        """The curve the contour is the inner offset of by ``depth``: ``(points (2, n) [m], d points / d theta
+        (2, n) [m/rad], its radius of curvature [m], outward unit normal (2, n), depth [m])`` (for a roller its
+        centre's path, depth -R_r; for a flat face the contour itself, depth 0)."""
+        raise NotImplementedError
+
+    def pressure_angle(self, heel, h, dh):
+        """Angle between the contact normal and the follower's line of action [rad]."""
+        raise NotImplementedError
+
+    def contact_offset(self, dh):
+        """Distance of the contact point from the follower's line of action [m]."""
+        raise NotImplementedError
+
+    def convex_radius(self, rho):
+        """The profile radius ``rho`` [m] where the profile is convex to the follower, +inf elsewhere."""
+        raise NotImplementedError
+
+    def concave(self, rho):
+        """Mask of the profile radii ``rho`` [m] of concave stretches the follower follows (not an undercut)."""
+        raise NotImplementedError
+
+    def undercut(self, rho_min):
+        """Whether a profile whose smallest convex radius is ``rho_min`` [m] cannot be followed (bool)."""
+        raise NotImplementedError
+
+    def line_contact(self, rho):
+        """Mask of the profile radii ``rho`` [m] at which cam and follower touch along a line (Hertz)."""
+        raise NotImplementedError
+
+    def contact_curvature(self, rho):
+        """1/rho_1 + 1/rho_2 of the contact [1/m]: the profile's curvature and the follower's own.
+
+        References
+        ----------
+        Shang Hanji (1988), eq. (2.11); Valve-train practical works (n.d.), eqs. (7.4)-(7.5).
+        """
+        return 1.0 / rho + (0.0 if np.isinf(self.radius) else 1.0 / self.radius)
+
+    def contact_stress(self, force, rho, width, modulus):
+        """Hertz line stress between cam and follower [Pa]; 0 where the profile gives no line contact.
+
+        Parameters
+        ----------
+        force : ndarray
+            Cam force [N] (a negative force is no load).
+        rho : ndarray
+            Profile radius of curvature [m], broadcastable against ``force``.
+        width, modulus : float
+            Contact (cam) width b [m] and effective modulus E_m [Pa].
+
+        Notes
+        -----
+        .. math:: \\sigma = 0.418\\sqrt{\\frac{P E_m}{b}\\left(\\frac1{\\rho_1} + \\frac1{\\rho_2}\\right)}
+
+        Line contact needs a convex profile, or a concave one wider than a roller (:meth:`line_contact`);
+        elsewhere (an undercut) the smallest-radius check fails instead.
+
+        References
+        ----------
+        Shang Hanji (1988), eqs. (2.5), (2.11); Valve-train practical works (n.d.), eqs. (7.4)-(7.5).
+        """
+        rho = np.asarray(rho, dtype=float)
+        contact = self.line_contact(rho)
+        curvature = self.contact_curvature(np.where(contact, rho, 1.0))
+        sigma = strength.hertz_line_stress(np.clip(force, 0.0, None), width, np.where(contact, curvature, 1.0),
+                                           modulus)
+        return np.where(contact, sigma, 0.0)
+
+    def lift_on_path(self, path, theta, base):
+        """The follower's lift [m] at camshaft angles ``theta`` [rad] on a cam enveloped by a wheel.
+
+        ``path(tau) -> (E, n)`` gives, at the path parameter tau (the design cam's angle), the envelope's point E
+        (2, n) [m] and its outward unit normal n; ``base`` [m] is the heel radius the lift is measured from.
+        Solved on the path (by inverting an angle of it), not interpolated."""
+        raise NotImplementedError
+
+    def wear_error(self, offset, base, heel, h, dh):
+        """First-order lift error [m] and phase shift [rad] of a cam offset outwards by ``offset`` [m] (a worn
+        wheel's cam) whose heel circle grew by ``base`` [m], at the design lift ``h``, ``dh``."""
+        raise NotImplementedError
+
+    def lubrication(self, heel, h, rho):
+        """The hydrodynamic lubrication characteristic of the contact [-], or None where no source defines one."""
+        return None
+
+    def ratio(self, h):
+        """The follower's own lever ratio (valve-side motion / cam lift) at the lifts ``h`` [m]: 1 for a
+        follower translating on its line of action."""
+        return np.ones_like(np.asarray(h, dtype=float))

@@ -1,0 +1,97 @@
+"""The central translating roller follower: its centre runs on the pitch curve, the contour is the inner offset.
+
+References
+----------
+Shang Hanji (1988), section 2.1, eqs. (2.7), (2.16) (corrections note 33); UkrSURT Proceedings (2019) (pressure
+angle).
+"""
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .. import geometry
+from ..numerics import invert_angle
+from .base import Follower, register
+
+
+@register
+@dataclass(frozen=True)
+class RollerFollower(Follower):
+    """A roller of radius ``radius`` [m] whose axis line passes through the cam centre (SI)."""
+
+    radius: float
+    name = "roller"
+    rolling = True
+    undercut_quantity = "cam profile undercut: pitch radius of curvature - roller radius"
+    undercut_source = "Shang Hanji (1988), eq. (2.7)"
+
+    @classmethod
+    def from_cam(cls, cam):
+        """The roller of ``cam.roller_radius`` [m]."""
+        return cls(cam.roller_radius)
+
+    @classmethod
+    def missing_key(cls, cam):
+        """``roller_radius_mm`` when the cam section does not give it."""
+        if cam.roller_radius_mm is None:
+            return "roller_radius_mm is required when follower = \"roller\" (allowed [1, 200] mm)"
+        return None
+
+    def contour(self, theta, heel, h, dh):
+        """The pitch curve offset inwards by the roller radius (:func:`valvetrain.geometry.roller_follower_contour`)."""
+        return geometry.roller_follower_contour(theta, heel, self.radius, h, dh)
+
+    def curvature(self, heel, h, dh, d2h):
+        """rho = rho_pitch - R_r [m] (:func:`valvetrain.geometry.roller_follower_curvature`)."""
+        return geometry.roller_follower_curvature(heel, self.radius, h, dh, d2h)
+
+    def pitch_curve(self, theta, heel, h, dh, d2h):
+        """The roller centre's curve g u, g = R0 + R_r + h (depth -R_r): derivative h' u + g t, its radius, normal
+        (g u - h' t) / sqrt(g^2 + h'^2)."""
+        u, t = geometry.axes(theta)
+        g = geometry.roller_pitch_radius(heel, self.radius, h)
+        rho = geometry.roller_pitch_curvature(heel, self.radius, h, dh, d2h)
+        return g * u, dh * u + g * t, rho, (g * u - dh * t) / np.hypot(g, dh), -self.radius
+
+    def pressure_angle(self, heel, h, dh):
+        """tan beta = h' / g (:func:`valvetrain.geometry.roller_pressure_angle`)."""
+        return geometry.roller_pressure_angle(heel, self.radius, h, dh)
+
+    def contact_offset(self, dh):
+        """Zero: the roller touches on its centre's normal, reported as no offset from the axis."""
+        return np.zeros_like(np.asarray(dh, dtype=float))
+
+    def convex_radius(self, rho):
+        """rho where the pitch curve is convex (rho + R_r > 0), +inf on a concave stretch (which the roller
+        follows, not an undercut)."""
+        rho = np.asarray(rho, dtype=float)
+        return np.where(rho + self.radius > 0.0, rho, np.inf)
+
+    def concave(self, rho):
+        """Where the pitch curve is concave, rho + R_r < 0."""
+        return np.asarray(rho, dtype=float) + self.radius < 0.0
+
+    def undercut(self, rho_min):
+        """0 < rho_pitch <= R_r at the smallest convex radius (:func:`valvetrain.geometry.undercut_roller`)."""
+        return bool(geometry.undercut_roller(rho_min + self.radius, self.radius))
+
+    def line_contact(self, rho):
+        """A convex profile, or a concave one wider than the roller (rho < -R_r)."""
+        rho = np.asarray(rho, dtype=float)
+        return (rho > 0.0) | (rho < -self.radius)
+
+    def lift_on_path(self, path, theta, base):
+        """The roller centre on the envelope's offset by R_r, at the point on the follower axis: |Q| - (base + R_r)."""
+        def centre(t):
+            e, n = path(t)
+            return e + self.radius * n
+
+        tau = invert_angle(lambda t: np.arctan2(*centre(t)), theta)
+        return np.hypot(*centre(tau)) - (base + self.radius)
+
+    def wear_error(self, offset, base, heel, h, dh):
+        """d sec(beta) - base and the phase shift d sin(beta) / g (the pitch curve offset by d)."""
+        g = geometry.roller_pitch_radius(heel, self.radius, h)
+        beta = self.pressure_angle(heel, h, dh)
+        return offset / np.cos(beta) - base, offset * np.sin(beta) / g

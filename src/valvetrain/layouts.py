@@ -1,0 +1,68 @@
+"""Drive layouts: the chain of parts between the cam and the valve, and the train's mass reduced to the valve.
+
+``direct``: the cam acts on the valve through a tappet (an overhead camshaft on a bucket tappet, or the lower
+camshaft of a side-valve engine); ``rocker``: an overhead camshaft on a rocker or finger follower; ``pushrod``: a
+lower camshaft moving tappet, pushrod and rocker of overhead valves (OHV).  The functions take a valve's SI view (or
+its ``[valves.NAME]`` section where said): anything with ``drive`` and ``rocker_ratio``.
+
+References
+----------
+Valve-train practical works (n.d.), works 5 and 7.
+"""
+
+from dataclasses import dataclass
+
+from . import flow, masses
+
+
+@dataclass(frozen=True)
+class Layout:
+    """A drive layout: its name and the chain of parts from the cam to the valve.
+
+    Attributes
+    ----------
+    name : str
+        The ``[valves.NAME.drive] layout`` value.
+    parts : tuple of str
+        The moving parts between cam and valve in order from the cam: ``"tappet"`` (in a guide, under the cam),
+        ``"pushrod"``, ``"rocker"`` (on its shaft, the valve arm at the valve).
+    """
+
+    name: str
+    parts: tuple
+
+    tappet = property(lambda self: "tappet" in self.parts)
+    pushrod = property(lambda self: "pushrod" in self.parts)
+    rocker = property(lambda self: "rocker" in self.parts)
+
+    @property
+    def train_masses(self):
+        """The ``[drive.masses]`` keys of the parts a multi-mass train of this layout needs, from the cam."""
+        return tuple({"tappet": "tappet_kg", "pushrod": "pushrod_kg", "rocker": "rocker_inertia_kg_mm2"}[p]
+                     for p in self.parts)
+
+
+LAYOUTS = {"direct": Layout("direct", ("tappet",)), "rocker": Layout("rocker", ("rocker",)),
+           "pushrod": Layout("pushrod", ("tappet", "pushrod", "rocker"))}
+"""Drive layouts by name (``[valves.NAME.drive] layout``), see the module's text."""
+
+
+def layout(valve):
+    """Drive layout of a valve (SI view or section): as given, else direct for rocker ratio 1 and pushrod otherwise."""
+    if valve.drive.layout is not None:
+        return valve.drive.layout
+    return "direct" if valve.rocker_ratio == 1.0 else "pushrod"
+
+
+def chain(valve):
+    """The :class:`Layout` of a valve (SI view or section), by :func:`layout`."""
+    return LAYOUTS[layout(valve)]
+
+
+def train_mass(valve, spring_mass):
+    """Reduced mass of a valve's train at the valve [kg] and how it was obtained (SI view; Valve-train practical works (n.d.), eq. 5.2 or the
+    specific mass of work 5); ``spring_mass`` [kg] where the part masses leave it to the designed spring."""
+    d = valve.drive
+    return masses.reduced_mass(float(flow.circle_area(valve.throat_diameter)), layout(valve), valve.rocker_ratio,
+                               parts=d.masses, specific_mass=d.specific_mass_kg_m2, valve_arm=d.valve_arm,
+                               spring_mass=spring_mass)

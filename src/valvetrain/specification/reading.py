@@ -1,0 +1,97 @@
+"""Reading a specification: TOML text or a parsed document, a file, the built-in example; and writing it back.
+
+Every problem in a file becomes one message naming the key, the value and what is allowed;
+:func:`load_spec` raises :class:`SpecError` carrying them all.
+"""
+
+from importlib.resources import files
+from pathlib import Path
+import tomllib
+
+import tomli_w
+
+from ..files import shown_path
+from .messages import SpecError
+from .models import resolve_path, validate
+
+
+def input_files(spec):
+    """Every file the specification names (each ``..._file`` key: lift tables, indicator diagrams), resolved."""
+    def named(node):
+        if isinstance(node, dict):
+            for key, value in node.items():
+                if key.endswith("_file") and isinstance(value, str):
+                    yield resolve_path(spec, value)
+                else:
+                    yield from named(value)
+        elif isinstance(node, list):
+            for value in node:
+                yield from named(value)
+
+    return sorted(set(named(spec.model_dump())))
+
+
+MAX_SPEC_CHARACTERS = 1_000_000
+"""Largest specification text read (the largest shipped example has about 6,000 characters; a lift table or an
+indicator diagram belongs in a file of its own)."""
+
+
+def parse_spec(text, source="<string>", source_dir=None):
+    """Parse and validate a specification: TOML text, or a document already parsed (a dict of its tables, as
+    :func:`tomllib.loads` gives it); relative file names in it are read from ``source_dir``."""
+    if isinstance(text, dict):
+        return validate(text if source_dir is None else {**text, "source_dir": str(source_dir)})
+    if not isinstance(text, str):
+        raise SpecError([f"{source}: a specification is TOML text or a dict of its tables, not a "
+                         f"{type(text).__name__}"])
+    if len(text) > MAX_SPEC_CHARACTERS:
+        raise SpecError([f"{source}: {len(text):,} characters; allowed at most {MAX_SPEC_CHARACTERS:,} for a "
+                         "specification (put long tables in a CSV file: cam.table_file, crank.pressure_file)"])
+    try:
+        data = tomllib.loads(text.removeprefix("\ufeff"))
+    except tomllib.TOMLDecodeError as exc:
+        raise SpecError([f"{source}: not valid TOML: {exc}"]) from None
+    except RecursionError:
+        raise SpecError([f"{source}: arrays or tables nested too deeply to be a specification"]) from None
+    if source_dir is not None and isinstance(data, dict):
+        data["source_dir"] = str(source_dir)
+    return validate(data)
+
+
+def load_spec(path):
+    """Read and validate a specification file."""
+    try:
+        text = Path(path).read_text(encoding="utf-8")
+    except OSError as exc:
+        raise SpecError([f"{shown_path(path)}: cannot read the file: {exc.strerror or exc}"]) from None
+    except UnicodeDecodeError as exc:
+        raise SpecError([f"{shown_path(path)}: cannot read the file: not UTF-8 text ({exc.reason})"]) from None
+    return parse_spec(text, shown_path(path), Path(path).resolve().parent)
+
+
+def example_text():
+    """The built-in example specification (the engine of the appendix of Valve-train practical works (n.d.)), as TOML text."""
+    return files("valvetrain").joinpath("data/example.toml").read_text(encoding="utf-8")
+
+
+def example_spec():
+    """The built-in example, validated."""
+    return parse_spec(example_text(), "built-in example")
+
+
+def spec_toml(spec):
+    """The specification as TOML text with every default written out and every file named by its absolute path:
+    what a run used, saved beside its results (``spec.toml``), which ``valvetrain run`` reads back."""
+    def absolute(node):
+        if isinstance(node, dict):
+            return {k: str(resolve_path(spec, v).resolve()) if k.endswith("_file") and isinstance(v, str)
+                    else absolute(v) for k, v in node.items()}
+        if isinstance(node, list):
+            return [absolute(v) for v in node]
+        return node
+
+    from .. import __version__
+
+    header = (f"# The specification of a valvetrain {__version__} run, every default written out and every file "
+              "named by its\n# absolute path: `valvetrain run spec.toml` repeats the run.\n\n")
+    return header + tomli_w.dumps(absolute(spec.model_dump(exclude_none=True, exclude={"source_dir"})))

@@ -1,0 +1,108 @@
+"""The follower interface (valvetrain.followers): the registry behind the specification's ``follower`` key, the Hertz
+contact of each follower against hand calculations, the undercut and concave-contact rules, and a follower of the
+caller's own (a lever ratio) reaching the valve lift."""
+
+import numpy as np
+import pytest
+
+from valvetrain.followers import FLAT, REGISTRY, FlatFollower, Follower, RollerFollower, follower_of
+from valvetrain.specification.cams import _CamBase
+
+from conftest import seed000_law
+
+E = 2.1e11
+"""Steel on steel [Pa]."""
+
+
+def test_the_specification_offers_the_registered_followers():
+    """The ``follower`` key allows exactly the registry's names, each mapped to its class."""
+    assert set(_CamBase.model_fields["follower"].annotation.__args__) == set(REGISTRY) == {"flat", "roller"}
+    assert REGISTRY["flat"] is FlatFollower and REGISTRY["roller"] is RollerFollower
+
+
+def test_a_follower_is_built_from_the_cam():
+    class Cam:
+        follower, roller_radius = "roller", 0.012
+
+    built = follower_of(Cam())
+    assert isinstance(built, RollerFollower) and built.radius == 0.012
+    Cam.follower = "flat"
+    assert isinstance(follower_of(Cam()), FlatFollower)
+
+
+def test_hertz_stress_on_the_heel_circle_by_hand():
+    """On the heel circle (R0 = 20 mm: rho = R0 for either follower) under F = 1000 N, b = 10 mm, E = 210 GPa (Hertz
+    line contact, 0.418 for Poisson 0.3, Valve-train practical works (n.d.), eq. 7.4), written out:
+    F E / b = 1000 x 2.1e11 / 0.01 = 2.1e16 N/m^2 per m;
+    flat:                 x (1/0.020)           = 1.05e18, sigma = 0.418 x 1.0247e9 = 428.3 MPa;
+    roller (R_r = 10 mm): x (1/0.020 + 1/0.010) = 3.15e18, sigma = 0.418 x 1.7748e9 = 741.9 MPa."""
+    law = seed000_law()
+    rho_flat = law.curvature(np.array([np.pi]), 0.020, FLAT)
+    rho_roller = law.curvature(np.array([np.pi]), 0.020, RollerFollower(0.010))
+    assert rho_flat == pytest.approx(0.020, abs=1e-15) and rho_roller == pytest.approx(0.020, abs=1e-15)
+    flat = FLAT.contact_stress(1000.0, rho_flat, 0.010, E)
+    roller = RollerFollower(0.010).contact_stress(1000.0, rho_roller, 0.010, E)
+    assert flat == pytest.approx(0.418 * np.sqrt(1.05e18), rel=1e-12)
+    assert roller == pytest.approx(0.418 * np.sqrt(3.15e18), rel=1e-12)
+    assert float(flat[0]) == pytest.approx(428.3e6, rel=1e-4) and float(roller[0]) == pytest.approx(741.9e6, rel=1e-4)
+
+
+def test_a_roller_in_a_concave_stretch_is_internal_hertz_contact():
+    """A roller of 10 mm in a hollow of 30 mm: the relative radius of internal contact is R1 R2 / (R1 - R2) =
+    30 x 10 / 20 = 15 mm (Hertz), the stress of a flat face on a 15 mm convex radius; a hollow narrower than the
+    roller gives no line contact (zero) and is no concave stretch it follows."""
+    roller = RollerFollower(0.010)
+    assert roller.contact_stress(800.0, -0.030, 0.012, E) == pytest.approx(FLAT.contact_stress(800.0, 0.015, 0.012, E),
+                                                                         rel=1e-12)
+    assert roller.contact_stress(800.0, -0.005, 0.012, E) == 0.0
+    assert roller.concave(np.array([-0.030, -0.005, 0.02])).tolist() == [True, False, False]
+    assert FLAT.concave(np.array([-0.030, 0.02])).tolist() == [False, False]
+
+
+def test_undercut_rules():
+    """Flat: undercut at rho_min <= 0; roller: where the pitch curve's radius rho_min + R_r is positive but at most
+    the roller's (Shang Hanji (1988), section 2.1)."""
+    assert FLAT.undercut(0.0) and FLAT.undercut(-1e-3) and not FLAT.undercut(1e-3)
+    roller = RollerFollower(0.010)
+    assert roller.undercut(-0.002) and roller.undercut(0.0) and not roller.undercut(0.001)
+
+
+def test_the_roller_pitch_curve_radius_against_its_sampled_points():
+    """The pitch curve's radius of curvature against the curvature of its points, by second differences."""
+    law = seed000_law()
+    roller = RollerFollower(0.012)
+    theta = np.linspace(-0.5, -0.2, 2001)
+    h, dh, d2h, _ = law.derivatives(theta)
+    points, _, rho, _, depth = roller.pitch_curve(theta, 0.01975, h, dh, d2h)
+    x, y = points
+    dx, dy = np.gradient(x, theta), np.gradient(y, theta)
+    ddx, ddy = np.gradient(dx, theta), np.gradient(dy, theta)
+    numeric = (dx**2 + dy**2) ** 1.5 / (dx * ddy - dy * ddx)
+    inner = slice(2, -2)
+    assert depth == -0.012
+    assert np.allclose(np.abs(numeric[inner]), np.abs(rho[inner]), rtol=1e-5)
+
+
+class _Lever(FlatFollower):
+    """A flat pad on a lever of constant ratio 1.5 (a follower of the caller's own)."""
+
+    def ratio(self, h):
+        return np.full_like(np.asarray(h, dtype=float), 1.5)
+
+
+def test_a_followers_own_ratio_reaches_the_valve_lift():
+    """Valve lift = i_k x i_f x (h - h0): with i_k = 1.2 and i_f = 1.5, 1.8 (h - h0) (hand calculation)."""
+    law = seed000_law()
+    theta = np.linspace(-0.6, 0.0, 7)
+    expected = 1.8 * np.clip(law.lift(theta) - law.ramp_height, 0.0, None)
+    assert law.valve_lift(theta, 1.2, _Lever()) == pytest.approx(expected, rel=1e-15, abs=1e-18)
+    assert law.valve_lift(theta, 1.2) == pytest.approx(expected / 1.5, rel=1e-15, abs=1e-18)
+
+
+def test_the_interface_leaves_nothing_silently_flat():
+    """A follower that does not give its geometry fails loudly rather than being taken for a flat face."""
+    bare = Follower()
+    with pytest.raises(NotImplementedError):
+        bare.curvature(0.02, 0.0, 0.0, 0.0)
+    with pytest.raises(NotImplementedError):
+        bare.line_contact(0.02)
