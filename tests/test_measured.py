@@ -12,7 +12,7 @@ from scipy.optimize import brentq
 from valvetrain.cli import main
 from valvetrain.checks import failed
 from valvetrain.design import run
-from valvetrain.report.html import number
+from valvetrain.report.numbers import number
 from valvetrain.laws import measured
 from valvetrain import files
 from valvetrain.files import TableFileError, read_lift_table

@@ -6,7 +6,8 @@ import re
 
 import pytest
 
-from valvetrain.report.html import fmt, number, percent
+from valvetrain.report.html import fmt
+from valvetrain.report.numbers import number, percent
 
 
 @pytest.mark.parametrize("x, text", [

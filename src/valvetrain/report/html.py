@@ -19,7 +19,9 @@ from ..tables import lift_table_columns
 from ..bibliography import WORKS, cited_in
 from ..units import to_display
 from .i18n import SYMBOLS, TEXT, verdict
+from .numbers import number, percent
 from .russian import russian_citations
+from .worked import flow_lines, spring_lines
 from .names import has_name, label, link_names, quantity_text, translate, unevaluated_text, unit_text, value_text
 
 TABLE_COLUMNS = ["cam_deg", "crank_deg", "segment", "tappet_lift_mm", "tappet_velocity_m_s",
@@ -35,49 +37,6 @@ GEOMETRY_KEYS = ["follower", "base_radius_mm", "heel_radius_mm", "rho_min_mm", "
 FLOW_KEYS = ["throat_area_mm2", "valve_lift_mm", "max_curtain_area_mm2", "V1_m_s", "V2_m_s"]
 TIME_AREA_KEYS = ["stroke_crank_deg", "time_area_mm2_s", "time_area_open_mm2_s", "V3_m_s",
                   "mean_charge_velocity_m_s", "fullness"]
-
-
-ZERO_BELOW = 1e-6
-"""Numbers of the report smaller than this in their unit print as 0: the noise of a computation about a zero (a cam
-angle of 3.2e-7 deg, a residual of 1e-15)."""
-
-SUPERSCRIPTS = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
-
-
-def number(x, lang="en"):
-    """A number in the report's one rule: 4 significant figures; an integer and a number of 10,000 or more in whole
-    units; a number below :data:`ZERO_BELOW` as 0; below 0.0001 with a power of ten; a decimal comma in Russian.
-
-    >>> [number(x) for x in (1.30337, 3.19142e-07, 57834.0, 0.000322464, 6.79592e-05, -0.0, 250)]
-    ['1.303', '0', '57834', '0.0003225', '6.796·10⁻⁵', '0', '250']
-    >>> number(1.30337, "ru")
-    '1,303'
-    """
-    if isinstance(x, (int, np.integer)):
-        return str(int(x))
-    x = float(x)
-    if x != x or abs(x) == float("inf"):
-        return str(x)
-    if abs(x) < ZERO_BELOW:
-        return "0"
-    if abs(x) >= 1e4:
-        text = f"{x:.0f}"
-    elif abs(x) < 1e-4:
-        mantissa, exponent = f"{x:.3e}".split("e")
-        text = f"{mantissa.rstrip('0').rstrip('.')}·10{str(int(exponent)).translate(SUPERSCRIPTS)}"
-    else:
-        text = f"{x:.4g}"
-    return text.replace(".", ",") if lang == "ru" else text
-
-
-def percent(x, lang="en"):
-    """A relative margin in per cent by :func:`number`'s rule, signed: ``0.0004`` -> ``"+0.04 %"`` (not "+0%").
-
-    >>> percent(0.0004), percent(-0.26), percent(0.0026, "ru")
-    ('+0.04 %', '-26 %', '+0,26 %')
-    """
-    text = number(100.0 * x, lang)
-    return f"{'' if text.startswith('-') or text == '0' else '+'}{text} %"
 
 
 def fmt(x, lang="en"):
@@ -357,8 +316,6 @@ def render_report(results, plots, lang="en", folder=None):
         The output folder holding ``plots/``: the figures are embedded in the report (one file to mail); without
         it they are linked.
     """
-    from .worked import flow_lines, spring_lines
-
     env = Environment(loader=PackageLoader("valvetrain", "report/templates"), autoescape=select_autoescape())
     env.filters["fmt"] = lambda x: fmt(x, lang)
     env.filters["label"] = lambda key: label(key, lang)

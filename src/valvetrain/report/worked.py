@@ -6,7 +6,7 @@ the substituted expression evaluates to it (``tests/test_worked.py`` evaluates e
 (n.d.), works 1 and 6.
 """
 
-from .html import number
+from .numbers import number
 from .names import unit_text
 
 
