@@ -57,8 +57,8 @@ def _requirement(valve, engine):
 def _exhaustive(requirement, throat, speed, options):
     """The lightest passing spring of every candidate designed (no screen): (D, d, coils, passing, tried)."""
     preloads, rates = requirement.lines(options.ratio_range)
-    big_d, d = springs._grid(throat, options.diameter_range, options.diameter_step,
-                             springs.wire_series(options.wire_range_mm, options.wire_step_mm))
+    big_d, d = springs.search._grid(throat, options.diameter_range, options.diameter_step,
+                                    springs.wire_series(options.wire_range_mm, options.wire_step_mm))
     lift = requirement.max_lift
     found = springs.evaluate_springs(preloads[:, None], rates[:, None], lift, big_d[None, :], d[None, :],
                                      options.materials[0], speed, ratio_range=options.ratio_range,

@@ -7,6 +7,8 @@ import pytest
 from hypothesis import given, settings, strategies as st
 
 from valvetrain import masses, spring_materials, springs
+from valvetrain.report.wording import diagnosis_text
+from valvetrain.springs import diagnosis
 
 from conftest import SEED000_OMEGA_EXACT, seed000_law
 
@@ -202,7 +204,7 @@ def test_vectorised_search_equals_brute_force(grade):
 def _every_candidate(preloads, rates, lift, throat, omega, options, material, **limits):
     """The exhaustive search the screen shortens: every line x D x d of the grid designed
     (:func:`valvetrain.springs.evaluate_springs` over the whole grid), as a (lines, grid) array of passes."""
-    big_d, d = springs._grid(throat, options.diameter_range, options.diameter_step,
+    big_d, d = springs.search._grid(throat, options.diameter_range, options.diameter_step,
                              springs.wire_series(options.wire_range_mm, options.wire_step_mm))
     found = springs.evaluate_springs(np.asarray(preloads)[:, None], np.asarray(rates)[:, None], lift, big_d[None, :],
                                      d[None, :], material, omega, ratio_range=options.ratio_range, **limits)
@@ -215,7 +217,7 @@ def _every_candidate(preloads, rates, lift, throat, omega, options, material, **
        grade=st.sampled_from(["60S2A", "VDSiCr", "VDCrV"]), longest=st.sampled_from([None, 4.0, 6.0]),
        safety=st.sampled_from([0.0, 1.1, 1.3, 1.6]))
 def test_the_screen_keeps_every_passing_spring(preload, lift, throat, rpm, resonance, grade, longest, safety):
-    """The bounds of the screen (:func:`valvetrain.springs._may_pass`) never drop a spring that passes: every
+    """The bounds of the screen (:func:`valvetrain.springs.search._may_pass`) never drop a spring that passes: every
     candidate of the exhaustive search that passes every check lies inside the screen, for lines of every ratio,
     grades with and without the resonance and fatigue checks and installed-length limits."""
     omega = np.pi * rpm / 60.0
@@ -227,7 +229,7 @@ def test_the_screen_keeps_every_passing_spring(preload, lift, throat, rpm, reson
     found, big_d, d = _every_candidate(preloads, rates, lift, throat, omega, options, material,
                                        max_installed_length=high)
     passed = found.passed.reshape(ratios.size, d.size)
-    keep = springs._may_pass(preloads, rates, lift, big_d, d, material, omega, high)
+    keep = springs.search._may_pass(preloads, rates, lift, big_d, d, material, omega, high)
     assert not np.any(passed & ~keep)
 
 
@@ -253,7 +255,7 @@ def test_the_screened_search_finds_what_the_exhaustive_one_finds(scale, passing)
     assert (chosen.mean_diameter, chosen.wire_diameter, chosen.coils, chosen.characteristic.preload) == (
         found.mean_diameter[i], found.wire_diameter[i], found.coils[i], found.preload[i])
     assert chosen.passes == passing
-    designed = sum(len(c) for c in springs._search(preloads, rates, requirement.max_lift, 0.0368, omega, options)[0])
+    designed = sum(len(c) for c in springs.search._search(preloads, rates, requirement.max_lift, 0.0368, omega, options)[0])
     assert designed < len(found) / 10 if passing else designed == len(found)   # the screen's point
 
 
@@ -314,10 +316,10 @@ def test_resonance_needs_more_stress_than_60s2a_allows_at_7000_rpm():
     10 x 366.52 x 1.1 x 0.014545 x sqrt(2 x 7850 x 8e10) / pi = 661.5 MPa, above [tau] = 500 MPa of 60S2A
     (seed 000, work 6): no spring of the manual's steel can pass."""
     w = springs.stress_window(springs.SpringMaterial(), 0.010, SEED000_OMEGA_EXACT)
-    assert w["ratio"] == pytest.approx(3.2)
-    assert w["max_deflection"] == pytest.approx(0.010 * 3.2 / 2.2)
-    assert w["needed"] / 1e6 == pytest.approx(661.5, abs=0.1)
-    assert w["allowed"] == pytest.approx(500e6)
+    assert w.deflection_ratio == pytest.approx(3.2)
+    assert w.max_deflection == pytest.approx(0.010 * 3.2 / 2.2)
+    assert w.needed / 1e6 == pytest.approx(661.5, abs=0.1)
+    assert w.allowed == pytest.approx(500e6)
     tau = springs.fatigue_stress_limit(370e6, 0.2, 3.2, 1.3)
     assert tau / 1e6 == pytest.approx(2 * 370 / (1.3 * (1 - 1 / 3.2 + 0.2 * (1 + 1 / 3.2))), rel=1e-12)
 
@@ -334,19 +336,22 @@ def test_diagnosis_of_the_example_in_60s2a():
     search = springs.design_springs(requirement, 0.0368, SEED000_OMEGA_EXACT, options)
     assert not search.passes and search.passing == 0
     d = springs.diagnose(requirement, 0.0368, SEED000_OMEGA_EXACT, options, search, np.pi * 7000 / 30)
-    checks = {x["check"] for x in d["conflicts"]}
+    checks = {x.check for x in d.conflicts}
     assert {"tau_max", "resonance_ratio"} <= checks
-    assert d["resonance"]["stress_needed_MPa"] > d["resonance"]["stress_allowed_MPa"] == pytest.approx(500.0)
-    remedies = {x["change"]: x for x in d["remedies"]}
-    assert remedies["material"]["to"] == "VDSiCr"
+    assert d.kind == diagnosis.RESONANCE_STRESS
+    assert d.window.needed > d.window.allowed == pytest.approx(500e6)
+    remedies = {x.change: x for x in d.helped}
+    assert remedies["material"].value == "VDSiCr" and remedies["material"].key == "material"
     vdsicr = replace(options, materials=(springs.SpringMaterial("VDSiCr"),))
     assert springs.design_springs(requirement, 0.0368, SEED000_OMEGA_EXACT, vdsicr).passes
-    f = remedies["rated_speed_factor"]["to"]
-    assert 0.3 < f < 1.0 and remedies["rated_speed_factor"]["rated_speed_rpm"] == pytest.approx(7000 * f)
+    f = remedies["rated_speed_factor"].value
+    assert 0.3 < f < 1.0 and remedies["rated_speed_factor"].rated_speed == pytest.approx(np.pi * 7000 / 30 * f)
+    assert remedies["rated_speed_factor"].key == "rated_speed_rpm"
     slower = springs.design_springs(requirement.scaled(f**2), 0.0368, SEED000_OMEGA_EXACT * f, options)
     assert slower.passes
-    assert {"change": "reduced_mass_factor", "to": 0.1} in d["tried"]
-    assert "needs tau_max >= 662 MPa" in d["text"] and 'material = "VDSiCr"' in d["text"]
+    assert springs.Remedy("reduced_mass_factor", 0.1, False) in d.tried
+    text = diagnosis_text(d, "en")
+    assert "needs tau_max >= 662 MPa" in text and 'material = "VDSiCr"' in text
 
 
 def test_the_seat_load_holds_a_slow_engine_s_valve():

@@ -17,6 +17,7 @@ import numpy as np
 from .. import flow, masses, springs, strength
 from ..checks import check
 from ..layouts import chain, layout, train_mass
+from ..report.wording import diagnosis_record, diagnosis_text
 from ..spring_materials import grade
 from ..specification.si import si_name
 from ..units import to_display
@@ -225,6 +226,7 @@ class DriveResult:
     inertia_force: np.ndarray = field(repr=False)    # m_v |j_v| where j_v < 0 [N]
     required_force: np.ndarray = field(repr=False)   # K_z m_v |j_v| [N]
     lines: dict = field(repr=False)                  # name -> springs.Characteristic (required, chosen, outer, inner)
+    diagnosis: Optional[springs.Diagnosis] = None   # why no spring passes, where none does
 
 
 def drive_record(drive):
@@ -337,7 +339,7 @@ def drive_stage(valve, gas, cam):
     if sp.count == 2:
         found.append(check("inner spring share", sp.inner_share, *springs.INNER_SHARE_RANGE, source="Valve-train practical works (n.d.), work 5"))
     for tag, d in designs.items():
-        found += _spring_checks(tag, d, diagnosis["text"] if diagnosis else "")
+        found += _spring_checks(tag, d, diagnosis_text(diagnosis, "en") if diagnosis else "")
     if sp.count == 2:
         found.append(replace(designs["inner"].checks["frequency_difference"],
                              quantity="inner/outer spring frequency difference"))
@@ -355,7 +357,8 @@ def drive_stage(valve, gas, cam):
         gas_source, bool(raised and seat > p_gas), seat,
         "min_preload_N of the specification" if sp.min_preload_N is not None else
         f"m_v x {springs.SEAT_ACCELERATION:.5g} m/s2 (100 g, a stated default)",
-        ratio, drive.spring_reserve, n_pass, search.tried, diagnosis, design, **pair)
+        ratio, drive.spring_reserve, n_pass, search.tried, None if diagnosis is None else diagnosis_record(diagnosis),
+        design, **pair)
 
     train = None
     if drive.stiffness is not None:
@@ -364,7 +367,7 @@ def drive_stage(valve, gas, cam):
     mass_result = MassResult(m_v, masses.reduced_mass_at_tappet(m_v, i_k), mass_source, layout(valve), train)
 
     inertia = m_v * np.clip(-a_v, 0.0, None)
-    return DriveResult(mass_result, spring_result, None, tuple(found), y, inertia, required, lines)
+    return DriveResult(mass_result, spring_result, None, tuple(found), y, inertia, required, lines, diagnosis)
 
 
 def strength_speed_range(engine, dynamics=None):

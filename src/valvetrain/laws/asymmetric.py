@@ -10,6 +10,7 @@ import numpy as np
 
 from ..checks import check
 from .base import LiftLaw
+from .errors import LawError
 
 
 class AsymmetricLaw(LiftLaw):
@@ -23,8 +24,7 @@ class AsymmetricLaw(LiftLaw):
 
     def __init__(self, opening, closing):
         if not np.isclose(opening.lift_max, closing.lift_max, rtol=1e-9, atol=0.0):
-            raise ValueError(f"asymmetric cam: the flanks reach different lifts ({opening.lift_max * 1e3:.6g} and "
-                             f"{closing.lift_max * 1e3:.6g} mm)")
+            raise LawError("flanks_lift_differ", opening=opening.lift_max, closing=closing.lift_max)
         if not np.isclose(opening.ramp_height, closing.ramp_height, rtol=1e-9, atol=1e-15):
             raise ValueError("asymmetric cam: the flanks have different ramp heights")
         self.opening, self.closing = opening, closing

@@ -9,6 +9,7 @@ import numpy as np
 from ..checks import check
 
 from .base import RampedLaw, SymmetricLaw
+from .errors import LawError
 from .polydyne import _falling, polynomial_junction_coefficients
 from .ramps import make_ramp
 
@@ -77,10 +78,7 @@ class DynamicLaw(RampedLaw, SymmetricLaw):
                               (1.0 + self.K / self.c) * self.v_y / self.ratio, ramp_fraction)
         self._nose = float(self._cam(np.zeros(1))[0, 0])
         if self.lift_max <= 0.0:
-            raise ValueError(f"dynamic law: the cam would not rise above its ramp (nose {self.lift_max * 1e3:.4g} mm "
-                             f"above it): the inertia term M omega^2 y'' outweighs the drive's deflection (M omega^2 "
-                             f"= {self.m * self.omega**2 * 1e-3:.4g} N/mm against c = {self.c * 1e-3:.4g} N/mm); "
-                             "stiffen the drive, lighten the train or lower the design speed")
+            raise LawError("nose_below_ramp", nose=self.lift_max, inertia_rate=self.m * self.omega**2, stiffness=self.c)
 
     def valve_motion(self, u):
         """Design valve motion y and its first five derivatives with respect to the cam angle from the nose u [rad]."""

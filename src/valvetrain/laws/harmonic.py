@@ -14,6 +14,7 @@ import numpy as np
 from ..checks import check
 from ..numerics import level_span
 from .base import LiftLaw, Segment
+from .errors import LawError
 
 
 def harmonic_limit(half_angle, natural_frequency, cam_speed):
@@ -120,9 +121,8 @@ class HarmonicLaw(LiftLaw):
         self.a = constrained_least_squares(a, b, *_junction_conditions(self.w, m, float(target.lift(0.0))))
         self.deviation = float(np.abs(a @ self.a - b).max())
         if not self.deviation <= MAX_DEVIATION * float(target.lift(0.0)):
-            raise ValueError(f"harmonic law: N = {n} harmonics with junction_order = {m} follow the target only to "
-                             f"{self.deviation * 1e3:.3g} mm of its {float(target.lift(0.0)) * 1e3:.4g} mm lift; allowed "
-                             f"{MAX_DEVIATION:.0%} of the lift: lower junction_order or change harmonics")
+            raise LawError("harmonics_deviate", harmonics=n, junction_order=m, deviation=self.deviation,
+                           lift=float(target.lift(0.0)), most=MAX_DEVIATION)
         self._ramp_height = float(target.ramp_height)
         self._opening = self._valve_opening()
 

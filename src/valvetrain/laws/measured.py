@@ -13,7 +13,9 @@ import numpy as np
 
 from ..checks import check
 from ..numerics import extremum, level_span
+from ..units import DEG, MM
 from .base import RampedLaw, Segment
+from .errors import LawError
 
 CHECKING_HEIGHTS_MM = (0.1, 0.5, 1.0, 1.27)
 """Standard checking heights [mm]: 0.1, 0.5, 1.0 mm and 0.050 in = 1.27 mm."""
@@ -241,14 +243,12 @@ def lobe_table(angle_deg, lift_mm, angle="crank", zero="gas_exchange_tdc", accur
     band = BASE_CIRCLE_ACCURACIES * accuracy_mm
     low, top = int(np.argmin(h)), int(np.argmax(h))
     if h[low] < -band:
-        raise ValueError(f"lift_mm = {h[low]:g} at angle_deg = {a[low]:g} lies below the base circle; allowed "
-                         f">= {-band:g} mm (3 x accuracy_mm of measurement noise)")
+        raise LawError("below_base_circle", lift=h[low] * MM, angle=a[low] * DEG, least=-band * MM)
     if h[top] < min_lift_mm:
-        raise ValueError(f"the largest lift is {h[top]:g} mm (angle_deg = {a[top]:g}); a cam lobe lifts the valve "
-                         f"at least {MIN_VALVE_LIFT_MM:g} mm: allowed >= {min_lift_mm:.4g} mm in this table")
+        raise LawError("lift_too_small", lift=h[top] * MM, angle=a[top] * DEG, valve_least=MIN_VALVE_LIFT_MM * MM,
+                       least=min_lift_mm * MM)
     if h[top] > MAX_LIFT_MM:
-        raise ValueError(f"the largest lift is {h[top]:g} mm (angle_deg = {a[top]:g}); allowed at most "
-                         f"{MAX_LIFT_MM:g} mm (is the table in millimetres?)")
+        raise LawError("lift_too_large", lift=h[top] * MM, angle=a[top] * DEG, most=MAX_LIFT_MM * MM)
     a, h = _whole_lobe(a, h, band, revolution, unit)
     first, last = _one_lobe(a, h, band)
     cam = (a + (0.5 * revolution if zero == "firing_tdc" else 0.0)) * (360.0 / revolution)
@@ -256,9 +256,8 @@ def lobe_table(angle_deg, lift_mm, angle="crank", zero="gas_exchange_tdc", accur
     margin = LOBE_MARGIN * (cam[last] - cam[first])
     keep = (cam >= cam[first] - margin) & (cam <= cam[last] + margin)
     if keep.sum() < MIN_LOBE_POINTS:
-        raise ValueError(f"the lobe (lift above {band:g} mm from angle_deg = {a[first]:g} to {a[last]:g}) has "
-                         f"{keep.sum()} rows with its margin of base circle; at least {MIN_LOBE_POINTS} are needed "
-                         "to fit it")
+        raise LawError("too_few_rows", band=band * MM, start=a[first] * DEG, end=a[last] * DEG, rows=int(keep.sum()),
+                       least=MIN_LOBE_POINTS)
     x, y, per_point = binned(cam[keep], h[keep], FIT_POINTS)
     return np.radians(x), y, per_point
 
@@ -277,9 +276,8 @@ def _whole_lobe(a, h, band, revolution, unit):
         m = base[base.size // 2]
         return np.concatenate([a[m:], a[:m] + revolution]), np.concatenate([h[m:], h[:m]])
     end, i = ("first", 0) if lifted[0] else ("last", -1)
-    raise ValueError(f"the {end} row, angle_deg = {a[i]:g}, lifts {h[i]:g} mm: a table starts and ends on the base "
-                     f"circle, allowed |lift| <= {band:g} mm (3 x accuracy_mm), or covers a whole revolution "
-                     f"({revolution:g} {unit}) around the lobe")
+    raise LawError("end_row_lifted", end=end, angle=a[i] * DEG, lift=h[i] * MM, band=band * MM,
+                   revolution=revolution * DEG, unit=unit)
 
 
 def _one_lobe(a, h, band):
@@ -291,9 +289,8 @@ def _one_lobe(a, h, band):
     lobe = next(r for r in regions if r[0] <= top <= r[-1])
     for r in regions:
         if r is not lobe and h[r].max() > 2.0 * band:
-            raise ValueError(f"a second lift region, angle_deg = {a[r[0]]:g} to {a[r[-1]]:g} (up to {h[r].max():g} "
-                             f"mm), besides the lobe at {a[lobe[0]]:g} to {a[lobe[-1]]:g}, separated by base-circle "
-                             "rows; a table holds one lobe")
+            raise LawError("second_lobe", start=a[r[0]] * DEG, end=a[r[-1]] * DEG, lift=h[r].max() * MM,
+                           lobe_start=a[lobe[0]] * DEG, lobe_end=a[lobe[-1]] * DEG)
     return int(lobe[0]), int(lobe[-1])
 
 
@@ -528,7 +525,7 @@ class TableLaw(RampedLaw):
     fit : str
         The fit the law evaluates, ``"spline"`` or ``"harmonic"``.
     choice : (str, float)
-        Why: a code of :data:`FIT_REASONS` and the ratio of the generalised cross-validation scores.
+        Why: a code of :func:`choose_fit` and the ratio of the generalised cross-validation scores.
     smoothing : str
         How the spline's smoothing was chosen, ``"accuracy"`` or ``"gcv"`` (:func:`smoothing_spline`).
 
@@ -551,9 +548,7 @@ class TableLaw(RampedLaw):
         x, y = np.asarray(angles, dtype=float), np.asarray(lift, dtype=float)
         scatter = noise_level(y)
         if scatter > MOST_SCATTER * y.max():
-            raise ValueError(f"the rows scatter by {scatter / 1e-3:.3g} mm (third differences), "
-                             f"{100 * scatter / y.max():.3g} % of the largest lift; allowed up to "
-                             f"{100 * MOST_SCATTER:g} %: no smooth lobe (a step, a flat top, too few rows?)")
+            raise LawError("rows_scatter", scatter=scatter, share=scatter / y.max(), most=MOST_SCATTER)
         self.angles, self.values, self.accuracy = x, y, float(accuracy)
         self.rows_per_point, self.accuracy_stated = float(rows_per_point), bool(accuracy_stated)
         # N-harmonic fit about the highest point, the smallest N meeting the accuracy
@@ -574,11 +569,8 @@ class TableLaw(RampedLaw):
         swing = self.fitted(np.linspace(*window, 8001), "harmonic")[0]
         bounded = swing.min() >= -(band + below) and swing.max() <= y.max() + band + above
         if fit == "harmonic" and not bounded:
-            raise ValueError(f"the N-harmonic fit (N = {n}) swings from {swing.min() / 1e-3:.4g} to "
-                             f"{swing.max() / 1e-3:.4g} mm of tappet lift between the rows; allowed "
-                             f"{-(band + below) / 1e-3:.4g} to {(y.max() + band + above) / 1e-3:.4g} mm (the table's "
-                             "range, 3 x accuracy_mm and the interpolation error of the angle step): use "
-                             "fit = \"spline\"")
+            raise LawError("harmonic_fit_swings", harmonics=n, low=swing.min(), high=swing.max(), least=-(band + below),
+                           most=y.max() + band + above)
         self.gcv = {"harmonic": gcv_score(self.harmonic_rms, 2 * n + 1, x.size),
                     "spline": gcv_score(self.spline_rms, spline_dof(x - self.centre, lam), x.size)}
         self.fit, self.choice = choose_fit(fit, bounded, self.harmonic_rms <= self.accuracy, self.gcv)
@@ -592,11 +584,8 @@ class TableLaw(RampedLaw):
         # above the highest row only the noise and the nose's parabola: a smoothing fit may flatten the nose by its
         # residual, but a lift above what the rows and a smooth nose allow is not what was measured
         if swing.min() < -(tol + below) or y.max() - swing.max() > tol or swing.max() - y.max() > noise + above:
-            raise ValueError(f"the {fit} fit runs from {swing.min() / 1e-3:.4g} to {swing.max() / 1e-3:.4g} mm "
-                             f"against the table's 0 to {y.max() / 1e-3:.4g} mm; allowed {-(tol + below) / 1e-3:.3g} "
-                             f"to +{(noise + above) / 1e-3:.3g} mm beyond them (3 x "
-                             "the noise, the fit's largest residual and the interpolation error of the angle step): "
-                             "no smooth lobe (a flat top, a step, too few rows?)")
+            raise LawError("fit_leaves_table", fit=fit, low=swing.min(), high=swing.max(), top=y.max(),
+                           below=-(tol + below), above=noise + above)
         self.start_angle, self.end_angle = lift_event(lambda t: self.fitted(t)[0], *window, band)
         self._top = extremum(lambda t: self.fitted(t)[0], [self.start_angle, 0.0, self.end_angle], "max")[1]
         self._ramp_height = float(ramp_height)
@@ -604,8 +593,7 @@ class TableLaw(RampedLaw):
         if ramp_height > 0.0:
             self._valve_span = level_span(lambda t: self.fitted(t)[0], self.start_angle, self.end_angle, ramp_height)
             if not np.isfinite(self._valve_span[0]):
-                raise ValueError(f"the fitted lift never exceeds the clearance taken up by the ramp, "
-                                 f"{ramp_height / 1e-3:.4g} mm: the valve does not open")
+                raise LawError("valve_never_opens", ramp=ramp_height)
 
     def _harmonic_derivatives(self, t):
         a, b, w = self._harmonic
@@ -797,27 +785,13 @@ def gcv_score(rms, dof, points):
     return points * points * rms**2 / (points - dof) ** 2
 
 
-FIT_REASONS = {
-    "given": "fit = \"{fit}\" in the specification",
-    "harmonic_gcv": "the N-harmonic fit meets accuracy_mm and predicts left-out rows better than the smoothing "
-                    "spline (generalised cross-validation score {ratio:.3g} x the spline's)",
-    "spline_gcv": "the smoothing spline predicts left-out rows better than the N-harmonic fit, which also meets "
-                  "accuracy_mm (generalised cross-validation score {ratio:.3g} x the N-harmonic fit's)",
-    "harmonic_misses": "the N-harmonic fit does not meet accuracy_mm by its highest order",
-    "harmonic_swings": "the N-harmonic fit swings outside the table's range between the rows",
-}
-"""Why a fit was chosen, by the code of :func:`choose_fit` (the report translates the same codes)."""
-
-SMOOTHINGS = {
-    "accuracy": "the smoothing spline is smoothed to an RMS residual of accuracy_mm (Reinsch 1967)",
-    "gcv": "the smoothing spline is smoothed by generalised cross-validation, whose residual exceeds accuracy_mm: the "
-           "table is noisier than accuracy_mm or bends more sharply than its rows resolve (the foot of a valve lift)",
-}
-"""How the spline's smoothing was chosen (:func:`smoothing_spline`)."""
-
-
 def choose_fit(fit, bounded, meets, gcv):
-    """The fit a law evaluates and why: ``(fit, (code, ratio))``, a code of :data:`FIT_REASONS`.
+    """The fit a law evaluates and why: ``(fit, (code, ratio))``.
+
+    The codes: ``"given"`` (``fit`` is not ``"auto"``), ``"harmonic_swings"`` (the N-harmonic fit leaves the table's
+    range), ``"harmonic_misses"`` (it does not meet the accuracy), ``"harmonic_gcv"`` and ``"spline_gcv"`` (the one
+    with the smaller score, ``ratio`` its score / the other's); the report words them
+    (:func:`valvetrain.report.wording.fit_reason`).
 
     ``"auto"`` compares the two fits where both are admissible, the N-harmonic fit meeting the stated accuracy and
     staying within the table's range, by their generalised cross-validation scores (``gcv``, :func:`gcv_score`):
@@ -834,13 +808,3 @@ def choose_fit(fit, bounded, meets, gcv):
     if not np.isfinite(ratio) or ratio <= 1.0:
         return "harmonic", ("harmonic_gcv", ratio)
     return "spline", ("spline_gcv", 1.0 / ratio)
-
-
-def fit_reason(law):
-    """One sentence: the fit a :class:`TableLaw` evaluates and why (results.json, the CLI)."""
-    code, ratio = law.choice
-    used = f"N-harmonic fit (N = {law.harmonics})" if law.fit == "harmonic" else "smoothing spline"
-    text = f"{used}: " + FIT_REASONS[code].format(fit=law.fit, ratio=ratio)
-    if law.fit == "spline":
-        text += "; " + SMOOTHINGS[law.smoothing]
-    return text

@@ -28,6 +28,7 @@ import numpy as np
 
 from ..checks import check
 from .base import SymmetricLaw
+from .errors import LawError
 
 ARTICLE_EXPONENTS = dict(n=1.0, m=4.0, p=0.5, q=4.5, r=0.3, s=2.5, t=4.0, u=7.0)
 """Exponents of the article's optimum.  n, m, p, q are printed (UkrSURT Proceedings (2019), 'n=1; m=4;
@@ -268,8 +269,7 @@ class PowerPolynomialLaw(SymmetricLaw):
             vrel -= frac * F / sumF
         need = self.nose_lift - self.S_e
         if need <= 0.0 or gain <= 0.0:
-            raise ValueError(f"power_polynomial law: the lift {self.nose_lift * 1e3:.4g} mm is reached within the "
-                             f"positive part (S_e = {self.S_e * 1e3:.4g} mm); lower peak_acceleration or phi1")
+            raise LawError("lift_within_positive_part", lift=self.nose_lift, positive_lift=self.S_e)
         self.phi2 = need / (self.v_e * gain)
         self.dwell = 2.0 * (self.phi_p0 - self.phi1 - self.phi2)
         if self.dwell < -1e-12:

@@ -13,6 +13,7 @@ import numpy as np
 
 from ..numerics import level_span
 from .base import LiftLaw, Segment
+from .errors import LawError
 
 
 class ClearanceTakeUp(LiftLaw):
@@ -50,8 +51,7 @@ class ClearanceTakeUp(LiftLaw):
         if law.ramp_height > 0.0:
             raise ValueError(f"{law.name} law: it has a ramp, which takes up the clearance itself")
         if not 0.0 < clearance < law.lift_max:
-            raise ValueError(f"{law.name} law: a clearance of {clearance * 1e3:.4g} mm cannot be taken up by a lift of "
-                             f"{law.lift_max * 1e3:.4g} mm")
+            raise LawError("clearance_exceeds_lift", law=law.name, clearance=clearance, lift=law.lift_max)
         self.law, self.clearance = law, float(clearance)
         self._opens, self._closes = level_span(law.lift, law.start, law.end, self.clearance)
         self.name, self.continuity = law.name, law.continuity

@@ -23,6 +23,7 @@ from .numbers import number, percent
 from .russian import russian_citations
 from .worked import flow_lines, spring_lines
 from .names import has_name, label, link_names, quantity_text, translate, unevaluated_text, unit_text, value_text
+from .wording import diagnosis_text, fit_reason
 
 TABLE_COLUMNS = ["cam_deg", "crank_deg", "segment", "tappet_lift_mm", "tappet_velocity_m_s",
                  "tappet_acceleration_m_s2", "valve_lift_mm", "curtain_area_mm2", "time_area_mm2_s", "rho_mm"]
@@ -102,21 +103,6 @@ def not_checked(note, lang):
     return TEXT[lang]["not_checked_note"].format(check=label(m[1], lang), parts=parts)
 
 
-def diagnosis_text(diagnosis, lang):
-    """The spring diagnosis: the English text as it is; in Russian the conflicts and the resonance window."""
-    if lang == "en":
-        return diagnosis["text"]
-    t = TEXT[lang]
-    words = [t["diag_conflict"].format(spring=t.get("line_" + x["spring"], ""), quantity=quantity_text(x["quantity"], lang),
-                                       value=x["value"], limit=x["limit"], unit=unit_text(x["unit"], lang),
-                                       shortfall=x["shortfall"]) for x in diagnosis.get("conflicts", [])]
-    text = [t["diag_head"] + "; ".join(words) + "."]
-    if "resonance" in diagnosis:
-        text.append(t["diag_resonance"].format(**diagnosis["resonance"]))
-    text.append(t["diag_remedies"])
-    return " ".join(text)
-
-
 def _quantity(quantity, lang, parts):
     """A check quantity in ``lang``, the name of its part (a valve, a port) marked as a name."""
     text = quantity_text(quantity, lang, parts)
@@ -179,24 +165,22 @@ def _abridged_table(valve, lang):
     return [[fmt(cols[c][i], lang) for c in TABLE_COLUMNS] for i in np.flatnonzero(keep)]
 
 
-def _measured(rec, t):
+def _measured(rec, lang):
     """The measured-table analysis for the report: scalars (the fit's reason in the report's language),
     durations at the checking heights, fit quality."""
     if rec is None:
         return None
     hidden = ("fit_reason_code", "spline_smoothing", "gcv_ratio_harmonic_to_spline")
-    scalars = [(k, _fit_reason(rec, t) if k == "fit_reason" else val) for k, val in rec.items()
+    scalars = [(k, _fit_reason(rec, lang) if k == "fit_reason" else val) for k, val in rec.items()
                if not isinstance(val, (list, dict)) and k not in hidden]
     return {"summary": scalars, "durations": rec["durations_deg"], "quality": list(rec["fit_quality"].items())}
 
 
-def _fit_reason(rec, t):
+def _fit_reason(rec, lang):
     """The fit a measured table used and why, from the codes of results.json in the report's language."""
     ratio = rec.get("gcv_ratio_harmonic_to_spline")
     ratio = float("nan") if ratio is None else ratio if rec["fit"] == "harmonic" else 1.0 / ratio
-    text = (t["fit_used"][rec["fit"]].format(n=rec["harmonics"]) + ": "
-            + t["fit_reasons"][rec["fit_reason_code"]].format(fit=rec["fit"], ratio=ratio))
-    return text + ("; " + t["smoothings"][rec["spline_smoothing"]] if rec["fit"] == "spline" else "")
+    return fit_reason(rec["fit"], rec["harmonics"], rec["fit_reason_code"], ratio, rec["spline_smoothing"], lang)
 
 
 DYNAMICS_HEADLINE = ["speed_range_rpm", "speeds", "jump_speed_rpm", "bounce_speed_rpm", "max_seating_velocity_m_s",
@@ -357,7 +341,7 @@ def render_report(results, plots, lang="en", folder=None):
             "input_symbols": INPUT_SYMBOLS,
             "seed": [(k, val, s["cam"][k]) for k, val in s["cam"].get("seed_formulas", {}).items()],
             "residuals": list(s["cam"].get("residuals", {}).items()),
-            "measured": _measured(s["cam"].get("measured"), TEXT[lang]),
+            "measured": _measured(s["cam"].get("measured"), lang),
             "clearance": list(s.get("piston_clearance", {}).items()),
             "masses": list(s["masses"].items()),
             "spring": [(k, val) for k, val in s["spring"].items() if not isinstance(val, dict)],

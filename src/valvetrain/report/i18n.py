@@ -1,7 +1,5 @@
 """Texts of the report and the plots in English and Russian."""
 
-from ..laws.measured import FIT_REASONS, SMOOTHINGS
-
 TEXT = {
     "en": {
         "summary": "Summary", "summary_valves": "Valves", "timing_diagram": "Valve timing diagram",
@@ -52,8 +50,21 @@ TEXT = {
         "rms_residual": "rms residual, mm", "max_residual": "max residual, mm",
         "jerk_sign_changes": "sign changes of the jerk",
         "fit_used": {"harmonic": "N-harmonic fit (N = {n})", "spline": "smoothing spline"},
-        "fit_reasons": FIT_REASONS,
-        "smoothings": SMOOTHINGS,
+        "fit_reasons": {
+            "given": "fit = \"{fit}\" in the specification",
+            "harmonic_gcv": "the N-harmonic fit meets accuracy_mm and predicts left-out rows better than the smoothing "
+                            "spline (generalised cross-validation score {ratio:.3g} x the spline's)",
+            "spline_gcv": "the smoothing spline predicts left-out rows better than the N-harmonic fit, which also meets "
+                          "accuracy_mm (generalised cross-validation score {ratio:.3g} x the N-harmonic fit's)",
+            "harmonic_misses": "the N-harmonic fit does not meet accuracy_mm by its highest order",
+            "harmonic_swings": "the N-harmonic fit swings outside the table's range between the rows",
+        },
+        "smoothings": {
+            "accuracy": "the smoothing spline is smoothed to an RMS residual of accuracy_mm (Reinsch 1967)",
+            "gcv": "the smoothing spline is smoothed by generalised cross-validation, whose residual exceeds accuracy_mm: "
+                   "the table is noisier than accuracy_mm or bends more sharply than its rows resolve (the foot of a "
+                   "valve lift)",
+        },
         "table": "Lift table (every {step:g} cam deg; the full table is tables/{name}_lift.csv)",
         "plots": "Plots",
         "files": "Files",
@@ -429,9 +440,6 @@ def verdict(counts, lang="en"):
 TEXT["en"].update({
     "lang": "en", "any": "any", "where": "Symbols",
     "not_checked_note": "{check}: not checked, not given: {parts}",
-    "diag_head": "No spring passes every check; the best: ",
-    "diag_conflict": "{spring} {quantity} {value:.4g} {unit} against {limit:.4g} {unit} (short by {shortfall:.1%})",
-    "diag_resonance": "", "diag_remedies": "",
     "tappet_side": "Lifts, velocities and accelerations h_T, v_T, a_T are on the tappet side; the valve's (h_v, v_v, "
                    "a_v) are i_k = {ik} times larger.",
     "kinematics_alt": "lift, velocity, acceleration and jerk", "time_area_alt": "time-area",
@@ -479,11 +487,6 @@ TEXT["en"].update({
 TEXT["ru"].update({
     "lang": "ru", "any": "любое", "where": "Обозначения",
     "not_checked_note": "{check}: не проверено, не задано: {parts}",
-    "diag_head": "Ни одна пружина не проходит все проверки; лучший вариант: ",
-    "diag_conflict": "{spring} {quantity} {value:.4g} {unit} при допустимом {limit:.4g} {unit} (не хватает {shortfall:.1%})",
-    "diag_resonance": "Для отношения частот нужно касательное напряжение τ_max не менее {stress_needed_MPa:.0f} МПа, "
-                      "а сталь допускает не более {stress_allowed_MPa:.0f} МПа.",
-    "diag_remedies": "Изменения, при которых пружина проходит, перечислены в results.json (spring.diagnosis.remedies).",
     "tappet_side": "Подъём, скорость и ускорение h_T, v_T, a_T даны на толкателе; на клапане (h_v, v_v, a_v) они "
                    "в i_k = {ik} раза больше.",
     "kinematics_alt": "подъём, скорость, ускорение и рывок", "time_area_alt": "время-сечение",

@@ -24,9 +24,10 @@ from ..followers import REGISTRY as FOLLOWERS
 from ..laws import (AsymmetricLaw, CombinedLaw, ConstantAccelerationLaw, DynamicLaw, HarmonicLaw, KurzLaw, PolydyneLaw,
                     PolynomialLaw, PowerPolynomialLaw, TangentLaw, ThreeArcLaw)
 from ..laws.power_polynomial import ARTICLE_EXPONENTS
-from ..laws.measured import CHECKING_HEIGHTS_MM, MIN_VALVE_LIFT_MM, TableLaw, fit_reason, lobe_table, table_accuracy
+from ..laws.measured import CHECKING_HEIGHTS_MM, MIN_VALVE_LIFT_MM, TableLaw, lobe_table, table_accuracy
 from ..laws.takeup import ClearanceTakeUp
 from ..layouts import train_mass
+from ..report.wording import fit_reason
 from ..units import DEG, MM, cam_per_crank, rad_to_deg
 from .fields import RAMP_VELOCITY, SEGMENT_ANGLE, Length, _bounded, _Model
 from .messages import message, shown
@@ -707,7 +708,7 @@ class TableCam(_CamBase):
                    for kind in ("spline", "harmonic") for q in [law.quality(kind)]}
         rec = {"max_lift_mm": (law.lift_max + law.ramp_height) * at_valve / MM,
                "lobe_centre_deg": rad_to_deg(law.centre) * to_table, "durations_deg": durations, "fit": law.fit,
-               "fit_reason": fit_reason(law), "fit_reason_code": law.choice[0], "spline_smoothing": law.smoothing,
+               "fit_reason": fit_reason(law.fit, law.harmonics, *law.choice, law.smoothing), "fit_reason_code": law.choice[0], "spline_smoothing": law.smoothing,
                "gcv_ratio_harmonic_to_spline": _finite(law.gcv["harmonic"] / law.gcv["spline"]),
                "harmonics": law.harmonics, "asymmetry_rms_mm": law.asymmetry_rms * at_valve / MM,
                "accuracy_mm": law.accuracy * at_valve / MM,

@@ -1,0 +1,147 @@
+"""The words for the data the physics returns, in English and Russian: the spring diagnosis
+(:class:`valvetrain.springs.Diagnosis`) and the fit a measured table uses and why
+(:class:`valvetrain.laws.measured.TableLaw`).
+
+The physics returns codes and values in SI; this module alone turns them into sentences, into the units a reader
+reads and into the specification's key names.  results.json and the CLI take the English (``lang="en"``), the
+report its own language.
+"""
+
+from ..units import to_display
+from .i18n import TEXT
+from .names import quantity_text, unit_text
+
+DIAGNOSIS_WORDS = {
+    "en": {
+        "head": "No spring passes; the best candidate: ", "head_pair": "No nested pair passes; the best pair: ",
+        "conflict": "{tag}{quantity} {value:.4g}{spaced_unit} against {limit:.4g}{spaced_unit} (short by {shortfall:.1%})",
+        "window": "",
+        "where": "at D/d = 12 and f_max/f_min = {deflection_ratio:.3g} (f_max = {max_deflection_mm:.3g} mm), while "
+                 "{material} allows at most {stress_allowed_MPa:.0f} MPa there ([tau] and the fatigue safety)",
+        "resonance_stress": "The resonance ratio {resonance_ratio:g} needs tau_max >= {stress_needed_MPa:.0f} MPa even "
+                            "{where}: no wire and no diameter of this grade can pass at this speed and lift.",
+        "pair_frequencies": "The two springs of a pair share f_max, so their frequencies stand as tau_max / chi: "
+                            "frequencies {frequency_difference:.0%} apart with both resonance ratios >= "
+                            "{resonance_ratio:g} need tau_max up to {stress_pair_MPa:.0f} MPa even {where}: no nested "
+                            "pair of this grade can pass at this speed and lift.",
+        "helped": "A spring passes with {}.", "helped_join": "; or ", "tried": "None passes with {}.",
+        "tried_join": ", ", "remedies": "",
+        "grams": " ({grams:.0f} g)",
+        "material": "{key} = \"{value}\"{grams}",
+        "count": {"1": "one spring ({key} = 1){grams}", "2": "a nested pair ({key} = 2){grams}"},
+        "max_installed_length": ("an installed length up to {mm:.1f} mm", "no installed length limit"),
+        "rated_speed_factor": ("a rated speed lowered to {value:.1%}{rpm}", "a rated speed down to {percent:g} %"),
+        "rpm": " ({rpm:.0f} rpm)",
+        "reduced_mass_factor": ("a reduced mass lowered by {saved:.0%}", "a reduced mass down to {percent:g} %"),
+    },
+    "ru": {
+        "head": "Ни одна пружина не проходит все проверки; лучший вариант: ",
+        "head_pair": "Ни одна пружина не проходит все проверки; лучший вариант: ",
+        "conflict": "{spring} {quantity} {value:.4g} {unit} при допустимом {limit:.4g} {unit} (не хватает {shortfall:.1%})",
+        "window": "Для отношения частот нужно касательное напряжение τ_max не менее {stress_needed_MPa:.0f} МПа, "
+                  "а сталь допускает не более {stress_allowed_MPa:.0f} МПа.",
+        "resonance_stress": "", "pair_frequencies": "", "helped": "", "tried": "",
+        "remedies": "Изменения, при которых пружина проходит, перечислены в results.json (spring.diagnosis.remedies).",
+    },
+}
+"""The words of the spring diagnosis; an empty text is not said in that language (the Russian report states the
+stress window and points to the remedies in results.json)."""
+
+
+def _window_record(w):
+    """The stress window of results.json (MPa, mm)."""
+    return {"material": w.material, "deflection_ratio": w.deflection_ratio,
+            "max_deflection_mm": to_display(w.max_deflection, "mm"), "stress_needed_MPa": to_display(w.needed, "MPa"),
+            "stress_allowed_MPa": to_display(w.allowed, "MPa")}
+
+
+def _remedy_record(r):
+    """A remedy as results.json gives it: the change, the value in the specification's units, the spring mass."""
+    if r.change == "max_installed_length":
+        out = {"change": "max_installed_length_mm", **({} if r.value is None else {"to": to_display(r.value, "mm")})}
+    else:
+        out = {"change": r.change, "to": r.value}
+    if r.spring_mass is not None:
+        out["spring_mass_kg"] = r.spring_mass
+    if r.rated_speed is not None:
+        out["rated_speed_rpm"] = to_display(r.rated_speed, "rpm")
+    return out
+
+
+def diagnosis_record(d):
+    """The ``spring.diagnosis`` record of results.json: the conflicts and the stress window in display units, the
+    remedies that help and those tried in vain, and the English text (:func:`diagnosis_text`)."""
+    out = {"conflicts": [{"spring": x.spring, "check": x.check, "quantity": x.quantity,
+                          "value": to_display(x.value, x.unit), "limit": to_display(x.limit, x.unit), "unit": x.unit,
+                          "shortfall": x.shortfall} for x in d.conflicts]}
+    if d.window is not None:
+        out["resonance"] = _window_record(d.window)
+    out["remedies"] = [_remedy_record(r) for r in d.helped]
+    out["tried"] = [_remedy_record(r) for r in d.tried]
+    out["text"] = diagnosis_text(d, "en")
+    return out
+
+
+def _remedy_text(r, words):
+    """One remedy in English words."""
+    grams = words["grams"].format(grams=r.spring_mass * 1e3) if r.passes and r.spring_mass is not None else ""
+    if r.change == "material":
+        return words["material"].format(key=r.key, value=r.value, grams=grams)
+    if r.change == "count":
+        return words["count"][str(r.value)].format(key=r.key, grams=grams)
+    helped, tried = words[r.change]
+    if not r.passes:
+        return tried.format(percent=None if r.value is None else r.value * 100.0)
+    rpm = "" if r.rated_speed is None else words["rpm"].format(rpm=to_display(r.rated_speed, "rpm"))
+    mm = None if r.value is None else to_display(r.value, "mm")
+    return helped.format(value=r.value, mm=mm, rpm=rpm, saved=1.0 - r.value)
+
+
+def diagnosis_text(d, lang):
+    """The spring diagnosis (:class:`valvetrain.springs.Diagnosis`) in words of ``lang``: the conflicts, what the
+    stress window proves, the remedies."""
+    words, t = DIAGNOSIS_WORDS[lang], TEXT[lang]
+    said = []
+    for x in d.conflicts:
+        unit = unit_text(x.unit, lang) if lang != "en" else x.unit
+        said.append(words["conflict"].format(
+            tag=f"{x.spring} " if d.pair else "", spring=t.get("line_" + x.spring, ""),
+            quantity=x.quantity if lang == "en" else quantity_text(x.quantity, lang),
+            value=to_display(x.value, x.unit), limit=to_display(x.limit, x.unit), unit=unit,
+            spaced_unit=f" {unit}" if unit else "", shortfall=x.shortfall))
+    text = [words["head_pair" if d.pair else "head"] + "; ".join(said) + "."]
+    if d.window is not None:
+        w = d.window
+        values = {**_window_record(w), "resonance_ratio": w.resonance_ratio,
+                  "frequency_difference": d.frequency_difference,
+                  "stress_pair_MPa": to_display(w.needed * (1.0 + d.frequency_difference), "MPa")}
+        values["where"] = words.get("where", "").format(**values)
+        text += [words[key].format(**values) for key in ("window", d.kind) if key and words[key]]
+    if d.helped and words["helped"]:
+        text.append(words["helped"].format(words["helped_join"].join(_remedy_text(r, words) for r in d.helped)))
+    if d.tried and words["tried"]:
+        text.append(words["tried"].format(words["tried_join"].join(_remedy_text(r, words) for r in d.tried)))
+    if words["remedies"]:
+        text.append(words["remedies"])
+    return " ".join(text)
+
+
+def fit_reason(fit, harmonics, code, ratio, smoothing, lang="en"):
+    """The fit a measured table uses and why, in ``lang``: one sentence.
+
+    Parameters
+    ----------
+    fit : {"spline", "harmonic"}
+        The fit used.
+    harmonics : int
+        Its harmonic order N.
+    code : str
+        Why (a code of :func:`valvetrain.laws.measured.choose_fit`).
+    ratio : float
+        The generalised cross-validation score of the fit used / the other's (NaN where not compared).
+    smoothing : {"accuracy", "gcv"}
+        How the spline's smoothing was chosen (:func:`valvetrain.laws.measured.smoothing_spline`).
+    """
+    t = TEXT[lang]
+    text = t["fit_used"][fit].format(n=harmonics) + ": " + t["fit_reasons"][code].format(fit=fit, ratio=ratio)
+    return text + ("; " + t["smoothings"][smoothing] if fit == "spline" else "")
