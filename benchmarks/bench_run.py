@@ -4,7 +4,9 @@ Run on demand: ``python benchmarks/bench_run.py``.  Times, best of several repea
 
 * in this process, the calculation (``design.run``) and the writing of every artefact (JSON, CSV, DXF, plots,
   report) with the default figures (``figures="main"``) and, as the baseline in the same run, with every figure
-  (``figures="all"``, what a run wrote before ``--figures``); and the peak Python memory of one full run;
+  (``figures="all"``, what a run wrote before ``--figures``); the default figures drawn in other processes
+  (:class:`valvetrain.report.drawing.FigureProcess`, as the command draws them on Linux) against those drawn here;
+  and the peak Python memory of one full run;
 * the command itself, ``python -m valvetrain run --out ...`` in a new process (imports included), with the default
   figures and with ``--figures all`` and ``--figures none``, alternately: wall time and the processor time of the
   process (on a machine that others use the wall time is the processor time plus the wait).
@@ -21,6 +23,7 @@ from pathlib import Path
 
 from valvetrain.design import run
 from valvetrain.export import write_outputs
+from valvetrain.report.drawing import FigureProcess
 from valvetrain.specification import example_spec
 
 REPEATS = 5
@@ -41,7 +44,7 @@ def _command(out, figures):
 
 def main():
     spec = example_spec()
-    calc, write = [], {"main": [], "all": []}
+    calc, write, forked = [], {"main": [], "all": []}, []
     with tempfile.TemporaryDirectory() as tmp:
         for i in range(REPEATS):
             for figures in write:
@@ -52,6 +55,10 @@ def main():
                 t2 = time.perf_counter()
                 calc.append(t1 - t0)
                 write[figures].append(t2 - t1)
+            if sys.platform.startswith("linux"):
+                t0 = time.perf_counter()
+                write_outputs(results, Path(tmp) / f"forked{i}", drawer=FigureProcess())
+                forked.append(time.perf_counter() - t0)
         tracemalloc.start()
         write_outputs(run(spec), Path(tmp) / "mem")
         peak = tracemalloc.get_traced_memory()[1]
@@ -63,6 +70,9 @@ def main():
     print(f"design.run (calculation):                          best {min(calc) * 1e3:7.1f} ms")
     print(f"write_outputs, default figures (main):             best {min(write['main']) * 1e3:7.1f} ms")
     print(f"write_outputs, every figure (all; the baseline):   best {min(write['all']) * 1e3:7.1f} ms")
+    if forked:
+        print(f"write_outputs, default figures drawn in other processes: best {min(forked) * 1e3:7.1f} ms wall "
+              f"(drawn here: {min(write['main']) * 1e3:7.1f} ms, the baseline)")
     print(f"peak traced Python memory of one run: {peak / 2**20:.1f} MiB")
     for figures, label in (("main", "default figures (main)"), ("all", "--figures all (the baseline)"),
                            ("none", "--figures none")):

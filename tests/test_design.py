@@ -65,7 +65,8 @@ def test_example_warnings_are_those_of_e8(example):
                      # the example's part masses against the source's 400-500 kg/m2 of a pushrod train (issue 10)
                      "intake: specific mass of the drive m' = m_v / f_g": "info"}
     for w in example["warnings"]:
-        assert set(w) == {"quantity", "value", "range", "source", "unit", "severity", "margin"}
+        assert set(w) == {"quantity", "code", "valve", "params", "value", "range", "source", "unit", "severity",
+                          "margin"}
         assert w["source"].startswith(("Valve-train practical works (n.d.)", "Shang Hanji (1988)"))
 
 

@@ -2,6 +2,7 @@
 
 import csv
 import json
+import sys
 
 import ezdxf
 import numpy as np
@@ -9,6 +10,7 @@ import pytest
 
 from valvetrain.design import run
 from valvetrain.export import json_text, write_outputs
+from valvetrain.report.drawing import FigureProcess
 from valvetrain.tables import LIFT_COLUMNS
 from valvetrain.specification import example_spec
 
@@ -173,3 +175,29 @@ def test_a_saved_specification_names_its_files_absolutely(tmp_path):
     assert Path(again.valves["intake"].cam.table_file).is_absolute()
     assert run(again).valves["intake"].flow.valve_lift == pytest.approx(
         run(spec).valves["intake"].flow.valve_lift, rel=1e-12)
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="the figures are drawn in a forked process on Linux")
+def test_figures_drawn_in_a_second_process_are_those_drawn_here(tmp_path):
+    """The reference is the same run's figures drawn in this process (no drawer): every file, the PNGs and the report
+    that embeds them included, is the same byte for byte (but the DXF, written by this process either way, which
+    holds its time of writing in $TDCREATE)."""
+    results = run(example_spec())
+    here = write_outputs(results, tmp_path / "here")
+    there = write_outputs(results, tmp_path / "there", drawer=FigureProcess())
+    files = sorted(p.relative_to(here) for p in here.rglob("*") if p.is_file() and p.name != ".valvetrain-output")
+    assert [p for p in files if p.suffix == ".png"]
+    assert files == sorted(p.relative_to(there) for p in there.rglob("*")
+                           if p.is_file() and p.name != ".valvetrain-output")
+    assert all((here / p).read_bytes() == (there / p).read_bytes() for p in files if p.suffix != ".dxf")
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="the figures are drawn in a forked process on Linux")
+def test_an_error_in_the_drawing_process_is_raised_and_nothing_is_written(tmp_path):
+    """write_plots refuses an unknown figure set (ValueError naming the allowed ones); raised in the drawing process,
+    it must reach the caller, leave no folder and end the drawing processes."""
+    drawer = FigureProcess()
+    with pytest.raises(ValueError, match="allowed: main, all, none"):
+        write_outputs(run(example_spec()), tmp_path / "d", figures="some", drawer=drawer)
+    assert not (tmp_path / "d").exists()
+    assert not any(p.is_alive() for p in drawer._processes)

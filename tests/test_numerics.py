@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from valvetrain.numerics import bracketed_roots, extremum
+from valvetrain.numerics import bounded_minimum, bracketed_roots, extremum
 
 
 def test_extremum_refines_a_smooth_maximum():
@@ -38,3 +38,29 @@ def test_bracketed_roots_of_several_brackets_at_once():
     assert abs(x[0]) < 1e-18 and x[1] == pytest.approx(np.sqrt(1e-3), rel=1e-15)
     x = bracketed_roots(lambda t: np.where(t < 0.3, -1.0, 2.0), [0.0], [1.0], [-1.0], [2.0])
     assert x[0] == pytest.approx(0.3, rel=1e-15)
+
+
+@pytest.mark.parametrize("fn, a, b", [
+    (lambda x: (x - 0.3) ** 2, 0.0, 1.0),                 # a parabola: the interpolation steps
+    (lambda x: abs(x - 0.7), 0.0, 1.0),                     # a kink: golden-section steps
+    (lambda x: -np.sin(x), 0.0, 3.0),                       # a smooth maximum
+    (lambda x: x, -2.0, 5.0),                               # the minimum at a bound
+    (lambda x: np.cos(40.0 * x) + 0.1 * x, -0.2, 0.3),      # several minima
+    (lambda x: 1e-9 * (x - 0.013) ** 4, 0.0125, 0.0135),    # a flat bottom on a narrow bracket
+])
+def test_bounded_minimum_takes_scipys_steps(fn, a, b):
+    """The reference is SciPy's own bounded Brent iteration (``minimize_scalar(method="bounded")``): the same
+    minimum and the same value, to the bit, and the same number of calls."""
+    from scipy.optimize import minimize_scalar
+
+    xatol = 1e-13 * max(1.0, abs(b))
+    calls = []
+
+    def counted(x):
+        calls.append(x)
+        return float(fn(x))
+
+    x, fx = bounded_minimum(counted, a, b, xatol)
+    ref = minimize_scalar(fn, bounds=(a, b), method="bounded", options={"xatol": xatol})
+    assert (x, fx) == (float(ref.x), float(ref.fun))
+    assert len(calls) == ref.nfev

@@ -46,10 +46,10 @@ NARROW_CAM = {"valves__intake__parts__cam_width_mm": 1.0}
 # 1. severity and ranking ------------------------------------------------------------------------------------------
 
 def test_ranked_puts_failures_first_then_the_farthest_outside():
-    info = check("seat", 45.0, 30.0, 30.0, source="s", severity="info")            # 50 % off, but info
-    near = check("V'", 85.0, 50.0, 80.0, source="s")                               # 6 % over
-    far = check("j_min", -1930.0, low=-1500.0, source="s")                         # 29 % under
-    stress = check("stress", 1300.0, high=1200.0, source="s", severity="failure")  # 8 % over
+    info = check("valve.seat_angle", 45.0, 30.0, 30.0, source="s", severity="info")                # 50 % off, but info
+    near = check("flow.throat_velocity", 85.0, 50.0, 80.0, source="s")                            # 6 % over
+    far = check("tappet_acceleration.min", -1930.0, low=-1500.0, source="s")                      # 29 % under
+    stress = check("strength.cam_contact_stress", 1300.0, high=1200.0, source="s", severity="failure")  # 8 % over
     assert ranked([info, near, far, stress]) == [stress, far, near, info]
 
 
@@ -93,7 +93,7 @@ def test_an_acceptance_names_the_quantity_with_or_without_its_valve(table):
 
 def test_an_acceptance_names_a_valve_check_of_one_valve_only():
     a = Acceptance(quantity="closing lag", reason="r", valve="intake")
-    checks = [check("intake: closing lag", 78, 40, 60, source="s"), check("exhaust: closing lag", 78, 40, 60, source="s")]
+    checks = [check("timing.closing_lag", 78, 40, 60, source="s").of_valve(name) for name in ("intake", "exhaust")]
     out, unmatched = apply_acceptances(checks, [a], {"intake", "exhaust"})
     assert [c.accepted for c in out] == [True, False] and unmatched == []
 
@@ -257,9 +257,9 @@ def test_a_check_that_cannot_be_evaluated_says_so_and_fails(tmp_path, monkeypatc
 
     def with_nan(*args, **kwargs):
         return given(*args, **kwargs) + [
-            check("valve seating velocity", float("nan"), high=0.5, unit="m/s", source="s",
+            check("synthesis.seating_velocity", float("nan"), high=0.5, unit="m/s", source="s",
                   unevaluated="the valve has not reseated"),
-            check("closing lag", float("nan"), 40.0, 60.0, source="s", severity="info")]
+            check("timing.closing_lag", float("nan"), 40.0, 60.0, source="s", severity="info")]
 
     monkeypatch.setattr(flow, "check_flow", with_nan)
     out = tmp_path / "out"

@@ -30,10 +30,9 @@ def evaluate(line, lang="en"):
 
 def _lines(lang):
     results = run(example_spec())
-    rec = results.to_dict()
     valve = results.spec.model_dump()["valves"]["intake"]
-    v = rec["valves"]["intake"]
-    return flow_lines(valve, v["flow"], rec["engine"], lang) + spring_lines(v["spring"], lang)
+    v = results.valves["intake"]
+    return flow_lines(valve, v.flow, results.engine, lang) + spring_lines(v.drive.spring.design, lang)
 
 
 @pytest.mark.parametrize("lang", ["en", "ru"])

@@ -997,6 +997,7 @@ DOCUMENTED_NULLS = {
     "opens_deg_at_0.1mm": "a measured lift that never reaches 0.1 mm", "closes_deg_at_0.1mm": "the same",
     "nonuniformity": "a mean torque that is not positive", "torque_work_balance": "no indicated work",
     "low": "a check open below", "high": "a check open above",
+    "valve": "a check of the engine or of a chapter",
     "jump_speed_rpm": "no follower separation in the speed range", "bounce_speed_rpm": "no bounce in the range",
     "coil_clash_speed_rpm": "no coil clash in the range",
     "cam_min_concave_radius_mm": "no concave stretch", "master_flat_lift_max_mm": "a master that is not convex",

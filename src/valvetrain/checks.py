@@ -1,7 +1,7 @@
 """Design checks as data: one record for every check, passed or failed.
 
 Every computed design is compared with the recommended ranges and the allowable limits of
-the sources.  Each comparison is a :class:`Check`: the quantity, its value, the bounds, the
+the sources.  Each comparison is a :class:`Check`: its code, the quantity, its value, the bounds, the
 unit they are shown in, the source of the bounds, the severity of a failure and the margin.
 A check that fails is not an exception: the report lists every check, ``results.json``
 carries them, the failed ones are the design's warnings, and an optimiser takes its
@@ -25,6 +25,11 @@ negative relative :attr:`Check.margin`).  A failed check the user accepted in th
 with a reason) keeps its severity and its record and carries ``accepted`` and ``reason``
 (:func:`apply_acceptances`): the report lists it apart, with the reason, and it is no longer an open warning.
 
+A check is identified by its stable code (``tappet_acceleration.max``) and its parameters (the exponent of a
+power-polynomial cam: ``{"exponent": "n"}``), never by its text: the English and Russian texts are renderings of the
+code from the message catalogue :mod:`valvetrain.locale` (``quantity`` is the English record text, with the valve
+or chapter in front).  ``[[accepted]]`` names a check by its code or by that text.
+
 Values and bounds are SI; ``unit`` names the unit they are shown in (see
 :func:`valvetrain.units.to_display`), so that conversion happens only when a check is shown.
 """
@@ -32,7 +37,8 @@ Values and bounds are SI; ``unit`` names the unit they are shown in (see
 from dataclasses import dataclass, replace
 import math
 
-from .units import to_display
+from .locale import catalogue, code_of, record_text
+from .units import to_display, without_noise
 
 SEVERITIES = ("info", "warning", "failure")
 """What a failed check means: ``info`` a remark, ``warning`` a value outside a recommended range,
@@ -52,7 +58,8 @@ class Check:
     Attributes
     ----------
     quantity : str
-        What was checked, with the part it belongs to (e.g. ``"intake: V' (throat velocity)"``).
+        What was checked in English, with the part it belongs to (e.g. ``"intake: V' (throat velocity)"``): the
+        record text of :attr:`code` (:func:`valvetrain.locale.record_text`).
     value : float
         The computed value, SI.
     low, high : float or None
@@ -74,6 +81,12 @@ class Check:
     unevaluated : str
         Why the value cannot be had, for a value that is not a finite number (:func:`check` makes such a check a
         failure and gives :data:`UNEVALUATED` where no reason is given); empty otherwise.
+    code : str
+        The stable code of the check (``"tappet_acceleration.max"``, :mod:`valvetrain.locale`).
+    params : tuple of (str, object)
+        The parameters of the code's texts (``(("exponent", "n"),)``).
+    valve : str or None
+        The valve the check belongs to (None: the engine's, a chapter's).
     """
 
     quantity: str
@@ -88,6 +101,9 @@ class Check:
     accepted: bool = False
     reason: str = ""
     unevaluated: str = ""
+    code: str = ""
+    params: tuple = ()
+    valve: str = None
 
     @property
     def passed(self):
@@ -146,8 +162,17 @@ class Check:
         return describe_range(low, high, self.unit, self.strict_low)
 
     def named(self, prefix):
-        """The same check with ``prefix: `` before its quantity (the valve or chapter it belongs to)."""
+        """The same check with ``prefix: `` before its quantity (the chapter it belongs to: ``crank``)."""
         return replace(self, quantity=f"{prefix}: {self.quantity}")
+
+    def of_valve(self, name):
+        """The same check as a check of the valve ``name`` (``name: `` before its quantity)."""
+        return replace(self.named(name), valve=name)
+
+    def of_spring(self, spring):
+        """The same check of a spring's own as the check of the drive's ``spring`` (``spring``, ``outer``,
+        ``inner``: its name before the quantity)."""
+        return replace(self, quantity=f"{spring} {self.quantity}", params=(*self.params, ("spring", spring)))
 
     @property
     def open(self):
@@ -155,18 +180,20 @@ class Check:
         return not self.passed and not self.accepted
 
     def warning(self):
-        """The record of a failed check in ``results.json`` ``warnings``: quantity, value, range, source, unit,
-        severity and margin (and the reason of an acceptance)."""
-        return {"quantity": self.quantity, "value": self.shown_value if self.evaluated else None, "range": self.range,
+        """The record of a failed check in ``results.json`` ``warnings``: quantity, code, valve, parameters, value,
+        range, source, unit, severity and margin (and the reason of an acceptance)."""
+        return {"quantity": self.quantity, "code": self.code, "valve": self.valve, "params": dict(self.params),
+                "value": self.shown_value if self.evaluated else None, "range": self.range,
                 "source": self.source, "unit": self.unit, "severity": self.severity, "margin": self.margin,
                 **({} if self.evaluated else {"unevaluated": self.unevaluated or UNEVALUATED}),
                 **({"accepted": True, "reason": self.reason} if self.accepted else {})}
 
     def as_dict(self):
-        """The full record, in :attr:`unit`: the warning record with the bounds, pass, accepted (and reason)."""
+        """The full record, in :attr:`unit`: the warning record with the bounds (without the noise of their
+        conversion, :func:`valvetrain.units.without_noise`), pass, accepted (and reason)."""
         return {**self.warning(),
-                "low": None if self.low is None else to_display(self.low, self.unit),
-                "high": None if self.high is None else to_display(self.high, self.unit),
+                "low": None if self.low is None else without_noise(to_display(self.low, self.unit)),
+                "high": None if self.high is None else without_noise(to_display(self.high, self.unit)),
                 "pass": self.passed, "accepted": self.accepted,
                 **({"note": self.note} if self.note else {})}
 
@@ -193,24 +220,28 @@ def describe_range(low=None, high=None, unit="", strict_low=False):
     return "any"
 
 
-def check(quantity, value, low=None, high=None, *, source, unit="", severity="warning", strict_low=False, note="",
-          unevaluated=""):
+def check(code, value, low=None, high=None, *, source, unit="", severity="warning", strict_low=False, note="",
+          unevaluated="", params=None):
     """A :class:`Check` of ``value`` (SI) against ``low``/``high`` (SI); see :class:`Check` for the fields.
+
+    ``code`` is the check's code in the catalogue (:mod:`valvetrain.locale`; a code without texts is refused),
+    ``params`` the values of its parameters (a dict), from which the quantity's text is made.
 
     A ``value`` that is None or not a finite number makes a check that cannot be evaluated: a failure, whatever
     ``severity`` says, with ``unevaluated`` (why the value cannot be had; :data:`UNEVALUATED` if empty) in words.
 
     Examples
     --------
-    >>> c = check("V'", 85.07, 50, 80, source="Valve-train practical works (n.d.), work 1", unit="m/s")
-    >>> c.passed, c.range, round(c.margin, 4)
-    (False, '50...80 m/s', -0.0634)
-    >>> check("rho_min", 11.885e-3, low=2e-3, source="Shang Hanji (1988)", unit="mm").warning()["range"]
+    >>> c = check("flow.throat_velocity", 85.07, 50, 80, source="Valve-train practical works (n.d.), work 1",
+    ...           unit="m/s")
+    >>> c.quantity, c.passed, c.range, round(c.margin, 4)
+    ("V' (throat velocity)", False, '50...80 m/s', -0.0634)
+    >>> check("profile.rho_min", 11.885e-3, low=2e-3, source="Shang Hanji (1988)", unit="mm").warning()["range"]
     '>= 2 mm'
-    >>> c = check("seating velocity", float("nan"), high=0.5, source="s", unit="m/s",
+    >>> c = check("dynamics.seating_velocity", float("nan"), high=0.5, source="s", unit="m/s",
     ...           unevaluated="the valve has not reseated")
     >>> c.severity, c.passed, c.statement
-    ('failure', False, 'seating velocity cannot be evaluated: the valve has not reseated')
+    ('failure', False, 'dynamic seating velocity at the rated speed cannot be evaluated: the valve has not reseated')
     """
     if severity not in SEVERITIES:
         raise ValueError(f"severity = {severity!r}: allowed {SEVERITIES}")
@@ -219,8 +250,10 @@ def check(quantity, value, low=None, high=None, *, source, unit="", severity="wa
         unevaluated = ""
     else:
         severity, unevaluated = "failure", unevaluated or UNEVALUATED
-    return Check(quantity, value, None if low is None else float(low), None if high is None else float(high),
-                 unit, source, severity, strict_low, note, unevaluated=unevaluated)
+    params = tuple((params or {}).items())
+    return Check(record_text(code, params), value, None if low is None else float(low),
+                 None if high is None else float(high), unit, source, severity, strict_low, note,
+                 unevaluated=unevaluated, code=code, params=params)
 
 
 def failed(checks):
@@ -232,17 +265,17 @@ def ranked(checks):
     """Checks in the order a reader needs them: failures, warnings, info; within a severity the farthest outside its
     range first (smallest :attr:`Check.margin`), then in the given order.
 
-    >>> a = check("a", 85.0, 50, 80, source="s")                      # 6 % over: a warning
-    >>> b = check("b", 120.0, 50, 80, source="s")                     # 50 % over: a warning
-    >>> c = check("c", 1.0, high=0.9, source="s", severity="failure")  # 11 % over: a failure
-    >>> [x.quantity for x in ranked([a, b, c])]
-    ['c', 'b', 'a']
+    >>> a = check("flow.throat_velocity", 85.0, 50, 80, source="s")              # 6 % over: a warning
+    >>> b = check("flow.curtain_velocity", 120.0, 50, 80, source="s")            # 50 % over: a warning
+    >>> c = check("spring.tau_max", 1.0, high=0.9, source="s", severity="failure")  # 11 % over: a failure
+    >>> [x.code for x in ranked([a, b, c])]
+    ['spring.tau_max', 'flow.curtain_velocity', 'flow.throat_velocity']
     """
     order = {s: i for i, s in enumerate(reversed(SEVERITIES))}
     return sorted(checks, key=lambda c: (order[c.severity], c.margin))
 
 
-def tally(checks):
+def tally(checks) -> dict[str, int]:
     """The verdict of a design in counts: every check, the open ones by severity, the accepted ones.
 
     One tally for the command line, the report and ``repr`` (the same words everywhere, see
@@ -258,9 +291,9 @@ def tally(checks):
         ``checks`` (all), ``failure``, ``warning``, ``info`` (failed and not accepted), ``accepted`` (failed and
         accepted in the specification).
 
-    >>> a = check("a", 85.0, 50, 80, source="s")
-    >>> b = check("b", 1.0, high=0.9, source="s", severity="failure")
-    >>> tally([a, b, check("c", 60.0, 50, 80, source="s")])
+    >>> a = check("flow.throat_velocity", 85.0, 50, 80, source="s")
+    >>> b = check("dynamics.seating_velocity", 1.0, high=0.9, source="s", severity="failure")
+    >>> tally([a, b, check("flow.throat_velocity", 60.0, 50, 80, source="s")])
     {'checks': 3, 'failure': 1, 'warning': 1, 'info': 0, 'accepted': 0}
     """
     out = {"checks": len(checks), **{s: 0 for s in reversed(SEVERITIES)}, "accepted": 0}
@@ -269,27 +302,50 @@ def tally(checks):
     return out
 
 
-def valve_of(quantity, valves):
-    """The valve a check's quantity names in its prefix (``"intake: V'"`` -> ``"intake"``), or None."""
-    prefix, sep, _ = quantity.partition(": ")
-    return prefix if sep and prefix in valves else None
+def _norm(text):
+    return " ".join(text.split()).casefold()
 
 
-def matches(acceptance, quantity, valves):
-    """True when an acceptance (``quantity`` and an optional ``valve``) names a check's quantity.
+def resolve(acceptance, valves):
+    """What an acceptance names: ``(valve, code, params)``, ``params`` None for every check of the code; None when
+    its ``quantity`` is neither a code nor the English text of a check.
 
-    The acceptance's quantity is the check's quantity as printed (``"intake: Phi2/Phi3"``) or, for a valve's check,
-    without the valve's prefix (``"Phi2/Phi3"``: every valve, or the one ``valve`` names); case and surrounding
-    blanks do not matter.
+    ``quantity`` is a check code (``"law.kurz.phi2_to_phi3"``) or, as printed before the codes, the check's text
+    (``"intake: Phi2/Phi3"``, or without the valve ``"Phi2/Phi3"``): the text is mapped to its code and
+    parameters (:func:`valvetrain.locale.code_of`).  ``valve`` (None: any) limits it to one valve's checks.
     """
-    def norm(text):
-        return " ".join(text.split()).casefold()
+    wanted = _norm(acceptance.quantity)
+    found = {c.casefold(): c for c in catalogue("en")["record"]}.get(wanted)
+    if found is not None:
+        return acceptance.valve, found, None
+    head, sep, rest = acceptance.quantity.partition(": ")
+    valve = head.strip() if sep and head.strip() in valves else None
+    if valve is not None and acceptance.valve not in (None, valve):
+        return None
+    for text in (acceptance.quantity, rest) if sep else (acceptance.quantity,):
+        named = code_of(text) or _spring_code(text)
+        if named is not None:
+            return valve or acceptance.valve, named[0], named[1]
+    return None
 
-    valve = valve_of(quantity, valves)
-    if acceptance.valve is not None and acceptance.valve != valve:
-        return False
-    wanted = norm(acceptance.quantity)
-    return wanted == norm(quantity) or (valve is not None and wanted == norm(quantity.partition(": ")[2]))
+
+def _spring_code(text):
+    """The code and parameters of a spring's own check named after its spring (``"spring tau_max"``), or None."""
+    spring, _, rest = " ".join(text.split()).partition(" ")
+    if spring.casefold() not in {s.casefold() for s in catalogue("en")["springs"]}:
+        return None
+    named = code_of(rest)
+    if named is None or not named[0].startswith("spring."):
+        return None
+    return named[0], {**named[1], "spring": spring.casefold()}
+
+
+def matches(target, c):
+    """True when a resolved acceptance ``(valve, code, params)`` (:func:`resolve`) names the check ``c``."""
+    valve, code, params = target
+    return (c.code == code and (valve is None or c.valve == valve)
+            and (params is None or {k: str(v).casefold() for k, v in c.params}
+                 == {k: str(v).casefold() for k, v in params.items()}))
 
 
 def apply_acceptances(checks, acceptances, valves=()):
@@ -300,23 +356,24 @@ def apply_acceptances(checks, acceptances, valves=()):
     ----------
     checks : sequence of Check
     acceptances : sequence
-        Objects with ``quantity``, ``valve`` (None: any) and ``reason`` (the ``[[accepted]]`` tables); the first that
-        names a check gives its reason.
+        Objects with ``quantity`` (a check code or text, :func:`resolve`), ``valve`` (None: any) and ``reason`` (the
+        ``[[accepted]]`` tables); the first that names a check gives its reason.
     valves : collection of str
-        The valve names (the prefixes of the valves' checks).
+        The valve names.
 
     Returns
     -------
     checks : list of Check
     unmatched : list of int
     """
+    targets = [resolve(a, valves) for a in acceptances]
     used = set()
     out = []
     for c in checks:
-        hit = next((i for i, a in enumerate(acceptances) if matches(a, c.quantity, valves)), None)
-        if hit is None:
+        hits = [i for i, t in enumerate(targets) if t is not None and matches(t, c)]
+        if not hits:
             out.append(c)
         else:
-            used.update(i for i, a in enumerate(acceptances) if matches(a, c.quantity, valves))
-            out.append(replace(c, accepted=True, reason=acceptances[hit].reason))
+            used.update(hits)
+            out.append(replace(c, accepted=True, reason=acceptances[hits[0]].reason))
     return out, [i for i in range(len(acceptances)) if i not in used]

@@ -1,4 +1,4 @@
-"""Command line: ``valvetrain run | sweep | optimize | study | validate | compare | example``.
+"""Command line: ``valvetrain run | sweep | optimize | study | validate | compare | serve | example``.
 
 Exit status: 0 on success, 2 for a specification or an output folder that cannot be used
 (one message per problem on standard error; nothing is written), 130 when interrupted
@@ -184,21 +184,28 @@ def main():
 def run(file, out, force, lang, figures, strict):
     """Run the design of FILE (default: the built-in example) and write it to --out."""
     from .export import write_outputs
+    from .report.drawing import start
 
     spec = _load(file)
     inputs = _check_out(out, [file] if file else [], [spec], force)
-    results = _design(spec, _Progress())
+    drawer = start() if figures != "none" else None   # imports matplotlib while this process designs
     try:
-        write_outputs(results, out, lang, inputs, force, figures)
+        results = _design(spec, _Progress())
+        write_outputs(results, out, lang, inputs, force, figures, drawer)
     except OutFolderError as err:
         _fail_out(err)
+    finally:
+        if drawer is not None:
+            drawer.stop()
     click.echo(f"wrote {out}/ (results.json, report.html, tables/, plots/, contour/)")
+    from .units import MM
+
     for name, v in results.valves.items():
-        if v.summary["cam"]["undercut"]:
-            click.echo(f"refused: valves.{name}: the cam profile is undercut (rho_min = {v.summary['cam']['rho_min_mm']:.4g}"
+        if v.profile.undercut:
+            click.echo(f"refused: valves.{name}: the cam profile is undercut (rho_min = {v.profile.rho_min / MM:.4g}"
                        " mm): no contour, DXF or manufacturing table was written for it")
-        if "measured" in v.summary["cam"]:
-            click.echo(f"note: valves.{name}: measured table fitted by the {v.summary['cam']['measured']['fit_reason']}")
+        if "measured" in v.records:
+            click.echo(f"note: valves.{name}: measured table fitted by the {v.records['measured']['fit_reason']}")
     _strict_exit(_echo_checks(results), strict)
 
 
@@ -216,7 +223,7 @@ def sweep(file, out, valves, force, lang):
     multi-mass train, every speed of the range, jump, bounce and seating. Writes dynamics.json,
     tables/NAME_dynamics.csv and plots/NAME_dynamics_map.png, NAME_dynamics_speed.png."""
     from .design import sweep_designs
-    from .design.dynamics import CHECK_QUANTITIES
+    from .design.dynamics import CHECK_CODES
     from .export import write_sweep
 
     spec = _load(file)
@@ -239,7 +246,7 @@ def sweep(file, out, valves, force, lang):
         d = v.dynamics
         click.echo(f"{name}: {_headline(d)}")
         for w in v.warnings:
-            if w.quantity.endswith(CHECK_QUANTITIES):
+            if w.code in CHECK_CODES:
                 click.echo(f"{w.severity}: {w.statement}, {_BOUND[w.severity]} {w.range} ({w.source})")
     click.echo(f"wrote {out}/ (dynamics.json, tables/, plots/)")
 
@@ -547,6 +554,43 @@ def schema():
     from .export import json_text
 
     click.echo(json_text(results_schema()))
+
+
+@main.command()
+@click.argument("file", required=False, type=click.Path(dir_okay=False))
+@click.option("--port", default=5006, show_default=True, type=click.IntRange(0, 65535),
+              help="Port of the designer (0: any free port).")
+@click.option("--host", default="127.0.0.1", show_default=True,
+              help="Address to listen on; anything but 127.0.0.1 exposes the designer to the network.")
+@click.option("--show/--no-show", default=True, help="Open the page in the browser.")
+def serve(file, port, host, show):
+    """The designer in the browser: edit FILE (default: the built-in example), drag the cam's handles and watch the
+    checks and the speed sweep answer.  Needs the extra `pip install "valvetrain[web]"`; works offline; writes
+    nothing but what you download.  Ctrl-C stops it."""
+    from pathlib import Path
+
+    try:
+        from .web import server
+    except ImportError as exc:
+        click.echo(f"error: the designer needs the web extra: pip install \"valvetrain[web]\" ({exc})", err=True)
+        sys.exit(2)
+    text, folder = None, None
+    if file:
+        _load(file)
+        text, folder = Path(file).read_text(encoding="utf-8"), Path(file).resolve().parent
+    if host != "127.0.0.1":
+        click.echo(f"warning: --host {host}: the designer is open to every machine that reaches this address; it "
+                   "has no login", err=True)
+    try:
+        app = server(text, folder, host, port)
+    except SpecError as err:
+        _fail_spec(err)
+    app.start()
+    url = f"http://{'127.0.0.1' if host in ('127.0.0.1', '0.0.0.0') else host}:{app.port}/"
+    click.echo(f"valvetrain designer at {url} (Ctrl-C stops it)")
+    if show:
+        app.io_loop.add_callback(app.show, "/")
+    app.io_loop.start()
 
 
 @main.command()

@@ -1,5 +1,6 @@
 """Writing results: JSON, CSV tables, contour CSV and DXF, and the whole output folder atomically."""
 
+from contextlib import nullcontext
 import csv
 import json
 from pathlib import Path
@@ -159,12 +160,13 @@ MASTER_COMMENTS = [
 """Comment lines of ``contour/NAME_master.csv``."""
 
 
-def write_outputs(results, out, lang="en", inputs=(), force=False, figures="main"):
+def write_outputs(results, out, lang="en", inputs=(), force=False, figures="main", drawer=None):
     """Write every artefact of a design into the folder ``out``, atomically.
 
     ``figures`` says which plots are drawn (:data:`valvetrain.report.plots.FIGURE_SETS`): ``main`` (every one but
     :data:`valvetrain.report.plots.FIGURES_ON_REQUEST`), ``all`` or ``none``; the report embeds those drawn and
-    names the command that draws the others.
+    names the command that draws the others.  ``drawer``, a :class:`valvetrain.report.drawing.FigureProcess`, draws
+    them in its process while this one writes the rest (it is ended on leaving); without it they are drawn here.
 
     Everything is written into a temporary sibling folder first and put in place only
     when complete (:func:`valvetrain.outfolder.atomic_folder`, which also says which
@@ -197,9 +199,11 @@ def write_outputs(results, out, lang="en", inputs=(), force=False, figures="main
     """
     from .report import write_report
 
-    with atomic_folder(out, inputs, force) as tmp:
+    with atomic_folder(out, inputs, force) as tmp, (drawer or nullcontext()):
         for sub in ("tables", "contour", "plots"):
             (tmp / sub).mkdir()
+        if drawer is not None and figures != "none":
+            drawer.submit(results, tmp / "plots", lang, figures)
         (tmp / "results.json").write_text(results_json(results), encoding="utf-8")
         (tmp / "spec.toml").write_text(spec_toml(results.spec), encoding="utf-8")
         for name, v in results.valves.items():
@@ -210,7 +214,7 @@ def write_outputs(results, out, lang="en", inputs=(), force=False, figures="main
             if v.hydraulic is not None:
                 write_csv(tmp / v.hydraulic.table_file, hydraulic_columns(v.hydraulic))
                 write_csv(tmp / v.hydraulic.sweep_table, hydraulic_sweep_columns(v.hydraulic))
-            if v.summary["cam"]["undercut"]:
+            if v.profile.undercut:
                 continue  # no follower can trace an undercut profile: nothing is written for its manufacture
             g = v.grinding
             if g is not None and g.wear is not None:
@@ -232,7 +236,9 @@ def write_outputs(results, out, lang="en", inputs=(), force=False, figures="main
             write_csv(tmp / "tables" / "two_stroke_ports.csv", two_stroke_columns(results.two_stroke))
             write_csv(tmp / "tables" / "two_stroke_time_area.csv", two_stroke_speed_columns(results.two_stroke))
         plots = {}
-        if figures != "none":   # the plots import matplotlib
+        if figures != "none" and drawer is not None:
+            plots = drawer.result()
+        elif figures != "none":   # the plots import matplotlib
             from .report import write_plots
 
             plots = write_plots(results, tmp / "plots", lang, figures)

@@ -299,18 +299,19 @@ def check_flow(kind, *, bore, throat_diameter, max_lift, v1, v2, v3, charge_velo
     """
     out = []
     if kind == "intake":
-        label = "throat diameter / bore" if count == 1 else f"equivalent throat diameter sqrt({count}) d / bore"
-        out.append(check(label, np.sqrt(count) * throat_diameter / bore, *THROAT_TO_BORE_RANGES[chamber],
-                         source=f"Valve-train practical works (n.d.), work 1 ({chamber} chamber)"))
-    out.append(check("valve lift / throat diameter", max_lift / throat_diameter, *LIFT_TO_THROAT_RANGE,
+        code = "flow.throat_to_bore" if count == 1 else "flow.equivalent_throat_to_bore"
+        out.append(check(code, np.sqrt(count) * throat_diameter / bore, *THROAT_TO_BORE_RANGES[chamber],
+                         source=f"Valve-train practical works (n.d.), work 1 ({chamber} chamber)",
+                         params={} if count == 1 else {"count": count}))
+    out.append(check("flow.lift_to_throat", max_lift / throat_diameter, *LIFT_TO_THROAT_RANGE,
                      source="Valve-train practical works (n.d.), work 2 (automotive engines)"))
-    out.append(check("V' (throat velocity)", v1, *THROAT_VELOCITY_RANGE[kind], source="Valve-train practical works (n.d.), work 1, eq. (1.1)",
+    out.append(check("flow.throat_velocity", v1, *THROAT_VELOCITY_RANGE[kind], source="Valve-train practical works (n.d.), work 1, eq. (1.1)",
                      unit="m/s"))
     if kind == "intake":
-        out.append(check("V'' (curtain velocity at full lift)", v2, *CURTAIN_VELOCITY_RANGE[kind],
+        out.append(check("flow.curtain_velocity", v2, *CURTAIN_VELOCITY_RANGE[kind],
                          source="Valve-train practical works (n.d.), work 1, eq. (1.2)", unit="m/s"))
         v3_range = TIME_AREA_VELOCITY_RANGE["diesel" if engine_type == "diesel" else "si"]
-        out.append(check("V''' (time-area velocity)", v3, *v3_range, source="Valve-train practical works (n.d.), work 1, eq. (1.4)", unit="m/s"))
-        out.append(check("v_vp (mean charge velocity)", charge_velocity, *MEAN_CHARGE_VELOCITY_RANGE[engine_type],
+        out.append(check("flow.time_area_velocity", v3, *v3_range, source="Valve-train practical works (n.d.), work 1, eq. (1.4)", unit="m/s"))
+        out.append(check("flow.charge_velocity", charge_velocity, *MEAN_CHARGE_VELOCITY_RANGE[engine_type],
                          source="Valve-train practical works (n.d.), work 4, eq. (4.3)", unit="m/s"))
     return out

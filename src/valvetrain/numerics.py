@@ -3,6 +3,8 @@
 Only what numpy and scipy do not offer directly lives here.
 """
 
+import math
+
 import numpy as np
 
 _GAUSS_ORDER = 16
@@ -62,7 +64,7 @@ def extremum(fn, edges, kind="max", samples=65):
 
     Each piece between consecutive ``edges`` is sampled at ``samples`` points (its
     ends included); the best sample is then refined with bounded Brent iteration
-    (:func:`scipy.optimize.minimize_scalar`) between its neighbours, and the better of
+    (:func:`bounded_minimum`) between its neighbours, and the better of
     the sample and the refined point is returned.  An extremum at a junction (a kink)
     is found exactly because the junctions are sampled.  Where the function is not
     finite next to the best sample (a masked region), the sample itself is returned.
@@ -88,8 +90,6 @@ def extremum(fn, edges, kind="max", samples=65):
     >>> round(x, 6), round(y, 12)  # a smooth extremum's place is fixed only to ~sqrt(eps)
     (1.570796, 1.0)
     """
-    from scipy.optimize import minimize_scalar
-
     sign = 1.0 if kind == "max" else -1.0
     edges = np.asarray(edges, dtype=float)
     t = np.linspace(0.0, 1.0, samples)
@@ -106,11 +106,109 @@ def extremum(fn, edges, kind="max", samples=65):
             y = sign * float(fn(np.array([x]))[0])
             return -y if np.isfinite(y) else worst
 
-        res = minimize_scalar(objective, bounds=(lo, hi), method="bounded",
-                              options={"xatol": 1e-13 * max(1.0, abs(hi))})
-        if -res.fun > best_y:
-            best_x, best_y = float(res.x), -float(res.fun)
+        x, fx = bounded_minimum(objective, lo, hi, 1e-13 * max(1.0, abs(hi)))
+        if -fx > best_y:
+            best_x, best_y = x, -fx
     return float(best_x), float(sign * best_y)
+
+
+def bounded_minimum(fn, a, b, xatol, max_evaluations=500):
+    """A local minimum of a scalar function on ``[a, b]`` by Brent's method (golden section and parabolic
+    interpolation), the iteration of :func:`scipy.optimize.minimize_scalar` ``method="bounded"``, step for step.
+
+    Parameters
+    ----------
+    fn : callable
+        ``fn(x) -> float`` of one float.
+    a, b : float
+        Bounds, ``a <= b`` (finite).
+    xatol : float
+        Absolute tolerance of the abscissa (the unit of ``a``).
+    max_evaluations : int
+        Bound on the calls of ``fn``.
+
+    Returns
+    -------
+    (float, float)
+        ``(x, fn(x))`` at the best point found.
+
+    Notes
+    -----
+    The same arithmetic as SciPy's ``_minimize_scalar_bounded`` on plain floats (``abs`` and ``max``
+    instead of numpy's scalar functions, which cost a microsecond each), so the points and the result are the same
+    to the bit; a refinement of :func:`extremum` calls ``fn`` some 45 times.
+
+    References
+    ----------
+    SciPy, ``scipy/optimize/_optimize.py``, ``_minimize_scalar_bounded``: Brent's minimisation without derivatives
+    in the form of the procedure fmin of Forsythe, Malcolm and Moler.
+    """
+    sqrt_eps = math.sqrt(2.2e-16)
+    golden_mean = 0.5 * (3.0 - math.sqrt(5.0))
+    fulc = a + golden_mean * (b - a)
+    nfc, xf = fulc, fulc
+    rat = e = 0.0
+    fx = fn(xf)
+    num = 1
+    ffulc = fnfc = fx
+    xm = 0.5 * (a + b)
+    tol1 = sqrt_eps * abs(xf) + xatol / 3.0
+    tol2 = 2.0 * tol1
+    while abs(xf - xm) > tol2 - 0.5 * (b - a):
+        golden = True
+        if abs(e) > tol1:   # a parabola through the three best points
+            golden = False
+            r = (xf - nfc) * (fx - ffulc)
+            q = (xf - fulc) * (fx - fnfc)
+            p = (xf - fulc) * q - (xf - nfc) * r
+            q = 2.0 * (q - r)
+            if q > 0.0:
+                p = -p
+            q = abs(q)
+            r = e
+            e = rat
+            if abs(p) < abs(0.5 * q * r) and p > q * (a - xf) and p < q * (b - xf):
+                rat = (p + 0.0) / q
+                x = xf + rat
+                if (x - a) < tol2 or (b - x) < tol2:
+                    rat = tol1 * _sign_or_one(xm - xf)
+            else:
+                golden = True
+        if golden:
+            e = (a - xf) if xf >= xm else (b - xf)
+            rat = golden_mean * e
+        x = xf + _sign_or_one(rat) * max(abs(rat), tol1)
+        fu = fn(x)
+        num += 1
+        if fu <= fx:
+            if x >= xf:
+                a = xf
+            else:
+                b = xf
+            fulc, ffulc = nfc, fnfc
+            nfc, fnfc = xf, fx
+            xf, fx = x, fu
+        else:
+            if x < xf:
+                a = x
+            else:
+                b = x
+            if fu <= fnfc or nfc == xf:
+                fulc, ffulc = nfc, fnfc
+                nfc, fnfc = x, fu
+            elif fu <= ffulc or fulc == xf or fulc == nfc:
+                fulc, ffulc = x, fu
+        xm = 0.5 * (a + b)
+        tol1 = sqrt_eps * abs(xf) + xatol / 3.0
+        tol2 = 2.0 * tol1
+        if num >= max_evaluations:
+            break
+    return float(xf), float(fx)
+
+
+def _sign_or_one(x):
+    """The sign of ``x``, 1 for zero (SciPy's ``np.sign(x) + (x == 0)``)."""
+    return 1.0 if x >= 0.0 else -1.0
 
 
 def bracketed_roots(fn, a, b, fa, fb, max_iterations=100):

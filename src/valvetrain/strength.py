@@ -35,7 +35,7 @@ def verdict(check_name, value, note=""):
     part cannot carry the load), its value SI."""
     limit, kind, unit, source = LIMITS[check_name]
     bounds = {"high": limit} if kind == "max" else {"low": limit}
-    return check(check_name, value, **bounds, unit=unit, source=source, severity="failure", note=note)
+    return check(f"strength.{check_name}", value, **bounds, unit=unit, source=source, severity="failure", note=note)
 
 
 def cam_force(spring_force, valve_inertia_force, rocker_ratio):

@@ -10,8 +10,11 @@ conversions take the number of strokes so that a two-stroke is handled too.
 """
 
 from functools import cache
+import math
 
 import numpy as np
+
+from .locale import LANGS
 
 MM = 1e-3
 """metres per millimetre"""
@@ -22,21 +25,6 @@ MPA = 1e6
 
 DEG = np.pi / 180.0
 """radians per degree"""
-
-
-def mm_to_m(x):
-    """Millimetres to metres."""
-    return x * MM
-
-
-def m_to_mm(x):
-    """Metres to millimetres."""
-    return x / MM
-
-
-def deg_to_rad(x):
-    """Degrees to radians (any angle, crank or camshaft: the kind is kept)."""
-    return x * DEG
 
 
 def rad_to_deg(x):
@@ -56,54 +44,100 @@ def cam_per_crank(strokes):
     return 2.0 / strokes
 
 
-def crank_to_cam(angle, strokes=4):
-    """Crank angle to camshaft angle (same unit in and out)."""
-    return angle * cam_per_crank(strokes)
-
-
-def cam_to_crank(angle, strokes=4):
-    """Camshaft angle to crank angle (same unit in and out)."""
-    return angle / cam_per_crank(strokes)
-
-
-DISPLAY_UNITS = {
-    "": 1.0, "mm": MM, "mm2": MM**2, "mm2 s": MM**2, "m": 1.0, "m/s": 1.0, "m/s2": 1.0, "m/s3": 1.0, "N": 1.0,
-    "kN": 1e3, "cm3": 1e-6, "N/mm": 1.0 / MM, "N m": 1.0, "kg": 1.0, "kg/m2": 1.0, "kg mm2": MM**2, "MPa": MPA, "Pa": 1.0, "J": 1.0,
-    "deg": DEG, "crank deg": DEG, "cam deg": DEG, "rad/s": 1.0, "Hz": 1.0, "rpm": np.pi / 30.0,
-    "mm/rad2": MM, "mm/rad": MM, "mm/deg": MM / DEG, "mm crank deg": MM * DEG, "GPa": 1e3 * MPA, "us": 1e-6,
+UNITS = {
+    # unit: SI value of one unit, the key suffixes that name it, its symbol in English and in Russian
+    "": (1.0, (), "", ""),
+    "mm": (MM, ("_mm",), "mm", "мм"),
+    "mm2": (MM**2, ("_mm2",), "mm²", "мм²"),
+    "mm2 s": (MM**2, ("_mm2_s",), "mm²·s", "мм²·с"),
+    "m": (1.0, (), "m", "м"),
+    "m/s": (1.0, ("_m_s",), "m/s", "м/с"),
+    "m/s2": (1.0, ("_m_s2",), "m/s²", "м/с²"),
+    "m/s3": (1.0, ("_m_s3",), "m/s³", "м/с³"),
+    "N": (1.0, ("_N",), "N", "Н"),
+    "kN": (1e3, ("_kN",), "kN", "кН"),
+    "N/mm": (1.0 / MM, ("_N_per_mm",), "N/mm", "Н/мм"),
+    "N m": (1.0, ("_Nm",), "N·m", "Н·м"),
+    "N s/m": (1.0, ("_N_s_per_m",), "N·s/m", "Н·с/м"),
+    "cm3": (1e-6, ("_cm3",), "cm³", "см³"),
+    "cm3/(s MPa)": (1e-6 / MPA, ("_cm3_per_s_MPa",), "cm³/(s·MPa)", "см³/(с·МПа)"),
+    "kg": (1.0, ("_kg",), "kg", "кг"),
+    "kg mm2": (MM**2, ("_kg_mm2",), "kg·mm²", "кг·мм²"),
+    "kg/m2": (1.0, ("_kg_m2",), "kg/m²", "кг/м²"),
+    "kg/m3": (1.0, ("_kg_m3",), "kg/m³", "кг/м³"),
+    "Pa": (1.0, (), "Pa", "Па"),
+    "MPa": (MPA, ("_MPa",), "MPa", "МПа"),
+    "GPa": (1e3 * MPA, ("_GPa",), "GPa", "ГПа"),
+    "J": (1.0, ("_J",), "J", "Дж"),
+    "deg": (DEG, ("_deg",), "deg", "град"),
+    "crank deg": (DEG, ("_crank_deg",), "crank deg", "град ПКВ"),
+    "cam deg": (DEG, ("_cam_deg",), "cam deg", "град ПРВ"),
+    "rad/s": (1.0, ("_rad_s",), "rad/s", "рад/с"),
+    "rpm": (np.pi / 30.0, ("_rpm",), "rpm", "об/мин"),
+    "Hz": (1.0, ("_Hz",), "Hz", "Гц"),
+    "us": (1e-6, ("_us",), "µs", "мкс"),
+    "mm/rad2": (MM, ("_mm_per_rad2", "_mm_rad2"), "mm/rad²", "мм/рад²"),
+    "mm/rad": (MM, ("_mm_per_rad", "_mm_rad"), "mm/rad", "мм/рад"),
+    "mm/deg": (MM / DEG, ("_mm_per_deg",), "mm/deg", "мм/град"),
+    "mm crank deg": (MM * DEG, ("_mm_crank_deg",), "mm·crank deg", "мм·град ПКВ"),
+    "%": (0.01, (), "%", "%"),
 }
-"""SI value of one display unit: a quantity of ``x`` SI is shown as ``x / DISPLAY_UNITS[unit]`` (tables,
-reports, check records); ``rpm`` is shown from rad/s."""
+"""The one unit table: every unit a key, a table, a record or the report shows, the SI value of one unit (a quantity
+of ``x`` SI is shown as ``x / value``; ``rpm`` is shown from rad/s), the key suffixes that name it (``_N_per_mm``)
+and its symbol in each language of the report (``LANGS`` of :mod:`valvetrain.locale`).  The SI view of a
+specification (:func:`si_name`), the display of the records (:func:`to_display`) and the report's units
+(:func:`symbol`, :data:`SUFFIXES`) derive from it."""
+
+SUFFIXES = tuple(sorted(((suffix, unit) for unit, (_, suffixes, *_) in UNITS.items() for suffix in suffixes),
+                        key=lambda pair: -len(pair[0])))
+"""``(key suffix, unit)`` of every suffix of :data:`UNITS`, the longest first."""
 
 
 def to_display(value, unit):
-    """An SI value (or array) in the display ``unit`` of :data:`DISPLAY_UNITS`.
+    """An SI value (or array) in the display ``unit`` of :data:`UNITS`.
 
     >>> round(to_display(0.0118, "mm"), 9), round(to_display(np.pi, "crank deg"), 9)
     (11.8, 180.0)
     """
     try:
-        return value / DISPLAY_UNITS[unit]
+        return value / UNITS[unit][0]
     except KeyError:
-        raise ValueError(f"unit {unit!r}: allowed {sorted(DISPLAY_UNITS)}") from None
+        raise ValueError(f"unit {unit!r}: allowed {sorted(UNITS)}") from None
 
 
-UNIT_SUFFIXES = (
-    ("_cm3_per_s_MPa", 1e-6 / MPA), ("_cm3", 1e-6), ("_GPa", 1e3 * MPA),
-    ("_mm_per_rad2", MM), ("_mm_per_rad", MM), ("_mm_per_deg", MM / DEG), ("_N_per_mm", 1.0 / MM), ("_kg_mm2", MM**2), ("_mm2", MM**2), ("_mm", MM),
-    ("_cam_deg", DEG), ("_deg", DEG), ("_rpm", rpm_to_rad_s(1.0)), ("_MPa", MPA),
-)
-"""Key suffixes of non-SI units and the SI value of one unit; the first suffix that ends a key applies."""
+def without_noise(value, digits=12):
+    """A value shown in a display unit without the float noise of its conversion: rounded to ``digits`` significant
+    digits where that moves it by four units in the last place at most (:func:`math.ulp`), kept otherwise.
+
+    A bound written as 60 deg in its source and kept in radians is shown as 60 again, not 59.99999999999999; a value
+    of more digits (8/3) is kept as it is.
+
+    >>> without_noise(to_display(60.0 * DEG, "deg")), without_noise(8.0 / 3.0)
+    (60.0, 2.6666666666666665)
+    """
+    rounded = float(f"{value:.{digits}g}")
+    return rounded if abs(rounded - value) <= 4.0 * math.ulp(value) else value
 
 
 @cache
 def si_name(key):
     """The SI field of a key and the factor to SI: ``("throat_diameter", 1e-3)`` for ``throat_diameter_mm``.
 
+    The longest suffix of :data:`SUFFIXES` that ends the key names its unit; a key in a unit other than SI loses the
+    suffix, a key in SI (``valve_kg``, ``min_preload_N``) keeps its name.
+
     >>> si_name("rated_speed_rpm")[0], si_name("valve_kg")
     ('rated_speed', ('valve_kg', 1.0))
     """
-    for suffix, factor in UNIT_SUFFIXES:
+    for suffix, unit in SUFFIXES:
         if key.endswith(suffix):
-            return key[: -len(suffix)], factor
+            factor = UNITS[unit][0]
+            return (key, 1.0) if factor == 1.0 else (key[: -len(suffix)], factor)
     return key, 1.0
+
+
+def symbol(unit, lang):
+    """A unit as the report in ``lang`` prints it (``"m/s2"`` -> ``"m/s²"``, ``"м/с²"``); a unit not in
+    :data:`UNITS` as it is."""
+    row = UNITS.get(unit)
+    return unit if row is None else row[2 + LANGS.index(lang)]

@@ -13,16 +13,6 @@ import numpy as np
 
 from .kinematics import acceleration, rod_angle
 
-SPECIFIC_MASS_RANGES = {
-    "piston_light_alloy": (80.0, 150.0),
-    "piston_cast_iron": (150.0, 250.0),
-    "rod": (100.0, 200.0),
-    "crank_unbalanced": (150.0, 200.0),
-}
-"""Typical specific masses m' [kg/m^2] of Kolchin & Demidov's table, which Table 2.1 of Power units manual (n.d.) follows
-(design data: the extracted copy of the table is too damaged to transcribe; the ranges are stated as
-engineering literature)."""
-
 
 @dataclass(frozen=True)
 class ReducedMasses:

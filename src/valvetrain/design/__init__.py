@@ -14,16 +14,17 @@ rpm) are converted to SI for the physics functions.  Stages:
 
 from dataclasses import dataclass, replace
 import difflib
+from functools import cached_property
+from typing import Any, Optional
 
-import numpy as np
 
 from .. import flow
-from ..checks import SEVERITIES, apply_acceptances, check, failed, ranked, tally, valve_of
+from ..checks import SEVERITIES, Check, apply_acceptances, check, failed, ranked, tally
 from ..crank.pressure import PressureFileError
 from ..files import TableFileError
 from ..specification import Spec, SpecError, crank_geometry, si, spec_document, validate
 from ..specification.models import Dynamics
-from ..units import MM
+from ..units import MM, to_display
 from .camcard import CamCard, CamCardValve, cam_card_stage
 from .crank import LAMBDA_RANGE, CrankResults, CrankSummary, crank_stage, valve_timing
 from .drive import MassResult, SpringResult, StrengthResult
@@ -56,17 +57,17 @@ class EngineRecord:
     piston_area: float = quantity("piston_area_mm2", "mm2", "piston area F_p")
 
 
-@dataclass(repr=False)
+@dataclass(frozen=True, repr=False)
 class DesignResults:
     """Result of :func:`run`: the engine's derived figures, each valve's design, all warnings."""
 
-    spec: object
+    spec: Spec
     engine: EngineRecord
-    valves: dict
-    checks: list                  # every valvetrain.checks.Check of the design, passed or not
-    crank: CrankResults = None
-    two_stroke: TwoStrokeResults = None
-    cam_card: CamCard = None      # a four-stroke's (valvetrain.camcard)
+    valves: dict[str, ValveDesign]
+    checks: tuple[Check, ...]                  # every check of the design, passed or not
+    crank: Optional[CrankResults] = None
+    two_stroke: Optional[TwoStrokeResults] = None
+    cam_card: Optional[CamCard] = None         # a four-stroke's (valvetrain.camcard)
 
     @property
     def warnings(self):
@@ -121,8 +122,14 @@ class DesignResults:
                 + ("<p>Accepted in the specification</p>" + table(("severity", "quantity", "value", "allowed",
                                                                    "reason"), accepted) if accepted else ""))
 
-    def to_dict(self):
-        """JSON-ready dictionary (engineering units, named in the keys)."""
+    def to_dict(self) -> dict[str, Any]:
+        """JSON-ready dictionary (engineering units, named in the keys): the projection of results.json, made once
+        (:attr:`projection`); read it, don't change it."""
+        return self.projection
+
+    @cached_property
+    def projection(self) -> dict[str, Any]:
+        """The results.json dictionary, made on first use and kept (the results are frozen)."""
         from .. import __version__
 
         out = {
@@ -142,7 +149,7 @@ class DesignResults:
         return out
 
 
-def run(spec, laws=None, progress=None):
+def run(spec, laws=None, progress=None) -> DesignResults:
     """Run the whole design of a validated specification.
 
     Parameters
@@ -201,19 +208,21 @@ def run(spec, laws=None, progress=None):
     found = [c for v in valves.values() for c in v.checks] + overlap_clearance_checks(valves) + engine_checks(spec)
     if {v.kind for v in valves.values()} == {"intake", "exhaust"}:
         share = sum(v.count * v.flow.throat_area for v in valves.values())
-        found.append(check("sum of throat areas / piston area", share / float(flow.circle_area(engine.bore)),
+        found.append(check("engine.throat_area_share", share / float(flow.circle_area(engine.bore)),
                            *THROAT_AREA_SHARE_RANGE, source="Valve-train practical works (n.d.), work 1"))
     ports = two_stroke_stage(si(spec.two_stroke), crank_view, engine) if spec.two_stroke is not None else None
     for stage, tag in ((crank, "crank"), (ports, "two-stroke")):
         if stage is not None:
             found += [c.named(tag) for c in stage.checks]
-    found = accept(found, spec.accepted, valves)
+    found, valves = accept(found, spec.accepted, valves)
     card = cam_card_stage(valves) if valves and engine.strokes == 4 else None
-    return DesignResults(spec, engine_record(engine), valves, found, crank, ports, card)
+    return DesignResults(spec, engine_record(engine), valves, tuple(found), crank, ports, card)
 
 
-def accept(found, acceptances, valves):
-    """The checks with the specification's acceptances applied (also to each valve's own list of checks).
+def accept(found: list[Check], acceptances: list, valves: dict[str, ValveDesign]
+           ) -> tuple[list[Check], dict[str, ValveDesign]]:
+    """The checks with the specification's acceptances applied, and the valves with them applied to each valve's
+    own checks.
 
     Raises
     ------
@@ -222,8 +231,8 @@ def accept(found, acceptances, valves):
     """
     found, unmatched = apply_acceptances(found, acceptances, valves)
     if unmatched:
-        names = sorted({c.quantity for c in found} | {c.quantity.partition(": ")[2] for c in found
-                                                      if valve_of(c.quantity, valves)})
+        names = sorted({c.quantity for c in found} | {c.quantity.partition(": ")[2] for c in found if c.valve}
+                       | {c.code for c in found})
         problems = []
         for i in unmatched:
             a = acceptances[i]
@@ -233,16 +242,15 @@ def accept(found, acceptances, valves):
                             + (f"; did you mean {' or '.join(repr(n) for n in near)}?" if near else
                                " (every check is listed in results.json, checks)"))
         raise SpecError(problems)
-    for v in valves.values():
-        v.checks = apply_acceptances(v.checks, acceptances, valves)[0]
-    return found
+    return found, {name: replace(v, checks=tuple(apply_acceptances(v.checks, acceptances, valves)[0]))
+                   for name, v in valves.items()}
 
 
-def engine_record(eng):
+def engine_record(eng) -> EngineRecord:
     """The engine's figures (SI view of [engine]): its data, the mean piston speed, swept volume and piston area."""
     swept = float(flow.swept_volume(eng.bore, eng.stroke))
     return EngineRecord(eng.name, eng.bore, eng.stroke, eng.rated_speed, eng.cylinders, eng.strokes,
-                        flow.mean_piston_speed(eng.stroke, eng.rated_speed * 30.0 / np.pi), swept,
+                        flow.mean_piston_speed(eng.stroke, to_display(eng.rated_speed, "rpm")), swept,
                         swept * eng.cylinders, float(flow.circle_area(eng.bore)))
 
 
@@ -259,7 +267,7 @@ STROKE_BORE_RANGE = (1.0 / 1.2, 2.0)
 slow-speed diesels (Heywood (1988), section 2.2)."""
 
 
-def engine_checks(spec):
+def engine_checks(spec) -> list[Check]:
     """Plausibility of the engine's keys: the stroke / bore ratio, the mean piston speed and the crank-rod ratio
     lambda, failures a factor of :data:`UNIT_SLIP_FACTOR` beyond their typical ranges (a unit slip, not an engine).
 
@@ -283,17 +291,17 @@ def engine_checks(spec):
     """
     bore, stroke, rod, speed = crank_geometry(spec)
     k = UNIT_SLIP_FACTOR
-    found = [check("engine: stroke / bore (stroke_mm / bore_mm)", stroke / bore, STROKE_BORE_RANGE[0] / k,
+    found = [check("engine.stroke_to_bore", stroke / bore, STROKE_BORE_RANGE[0] / k,
                    STROKE_BORE_RANGE[1] * k, source=f"a factor of {k:g} beyond Heywood (1988), section 2.2",
-                   severity="failure"),
-             check("engine: mean piston speed (stroke_mm x rated_speed_rpm / 30000)",
+                   severity="failure").named("engine"),
+             check("engine.mean_piston_speed",
                    flow.mean_piston_speed(stroke * MM, speed), MEAN_PISTON_SPEED_RANGE[0] / k,
                    MEAN_PISTON_SPEED_RANGE[1] * k, unit="m/s",
-                   source=f"a factor of {k:g} beyond Heywood (1988), section 2.2", severity="failure")]
+                   source=f"a factor of {k:g} beyond Heywood (1988), section 2.2", severity="failure").named("engine")]
     if rod is not None:
-        found.append(check("engine: lambda = R / L (stroke_mm / 2 / rod_length_mm)", stroke / 2.0 / rod, LAMBDA_RANGE[0] / k,
+        found.append(check("engine.rod_ratio", stroke / 2.0 / rod, LAMBDA_RANGE[0] / k,
                            min(LAMBDA_RANGE[1] * k, 1.0), source=f"a factor of {k:g} beyond Power units manual (n.d.), "
-                           "eq. (1.1)", severity="failure"))
+                           "eq. (1.1)", severity="failure").named("engine"))
     return found
 
 
@@ -306,7 +314,7 @@ def _valve_view(name, valve, spec):
         raise SpecError([f"valves.{name}.cam.table_file: {exc}"]) from None
 
 
-def sweep_designs(spec, names=None, progress=None):
+def sweep_designs(spec, names=None, progress=None) -> dict[str, ValveDesign]:
     """The speed sweep alone: the named valves of a specification (default: those with a ``[dynamics]`` section, or
     every valve if none has one) designed with their section, or the default one where they have none.
 
@@ -348,7 +356,7 @@ def sweep_designs(spec, names=None, progress=None):
     return out
 
 
-def results_schema():
+def results_schema() -> dict[str, Any]:
     """JSON Schema (draft 2020-12) of results.json, generated from the stage results' field metadata.
 
     The law's own records (seed formulas, a measured table's analysis) and the strength checks are objects
@@ -361,8 +369,11 @@ def results_schema():
         props.update({k: {"type": "object", "description": text} for k, text in extra.items()})
         return {"type": "object", "properties": props, "required": [k for sch in schemas for k in sch["required"]]}
 
-    check_record = {"type": "object", "required": ["quantity", "value", "range", "source", "unit", "severity", "margin"],
-                    "properties": {k: {"type": t} for k, t in (("quantity", "string"), ("range", "string"),
+    check_record = {"type": "object", "required": ["quantity", "code", "valve", "params", "value", "range", "source",
+                                                   "unit", "severity", "margin"],
+                    "properties": {k: {"type": t} for k, t in (("quantity", "string"), ("code", "string"),
+                                                                ("valve", ["string", "null"]), ("params", "object"),
+                                                                ("range", "string"),
                                                                 ("source", "string"), ("unit", "string"),
                                                                 ("accepted", "boolean"), ("reason", "string"),
                                                                 ("unevaluated", "string"))}

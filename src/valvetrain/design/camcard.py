@@ -2,6 +2,7 @@
 pair's lobe separation and overlap (:mod:`valvetrain.camcard`)."""
 
 from dataclasses import dataclass
+from typing import Optional
 
 from .. import camcard
 from .results import quantity
@@ -29,18 +30,18 @@ class CamCard:
     """The cam card: a line per valve and, with an intake and an exhaust valve, the pair's figures (the first valve
     of each kind)."""
 
-    valves: dict = quantity("valves", label="a line per valve")
-    separation: float = quantity("lobe_separation_cam_deg", "cam deg", "lobe separation angle", default=None,
+    valves: dict[str, CamCardValve] = quantity("valves", label="a line per valve")
+    separation: Optional[float] = quantity("lobe_separation_cam_deg", "cam deg", "lobe separation angle", default=None,
                                  omit_none=True)
-    overlap: float = quantity("overlap_crank_deg", "crank deg", "overlap seat to seat (negative: none)",
+    overlap: Optional[float] = quantity("overlap_crank_deg", "crank deg", "overlap seat to seat (negative: none)",
                               default=None, omit_none=True)
-    overlap_050: float = quantity("overlap_at_0_050in_crank_deg", "crank deg",
+    overlap_050: Optional[float] = quantity("overlap_at_0_050in_crank_deg", "crank deg",
                                   "overlap at 0.050 in tappet lift (negative: none)", default=None, omit_none=True)
-    overlap_area: float = quantity("overlap_area_mm_crank_deg", "mm crank deg",
+    overlap_area: Optional[float] = quantity("overlap_area_mm_crank_deg", "mm crank deg",
                                    "area under the lower valve lift over the overlap", default=None, omit_none=True)
 
 
-def valve_line(cam):
+def valve_line(cam) -> CamCardValve:
     """The cam card line of a valve's cam stage (:class:`~valvetrain.design.valve.CamResult`)."""
     law, ik, nose = cam.law, cam.rocker_ratio, cam.nose
     opens, closes = (float(c) for c in camcard.crank_events((law.valve_opens, law.valve_closes), nose))
@@ -50,7 +51,7 @@ def valve_line(cam):
                         float(camcard.lift_at(law, ik, nose, 0.0)))
 
 
-def cam_card_stage(valves):
+def cam_card_stage(valves) -> CamCard:
     """The cam card of the designed valves (``name -> ValveDesign``) of a four-stroke."""
     lines = {name: valve_line(v.cam) for name, v in valves.items()}
     first = {kind: next((name for name, v in valves.items() if v.kind == kind), None) for kind in ("intake", "exhaust")}

@@ -2,10 +2,12 @@
 torque (Power units manual (n.d.))."""
 
 from dataclasses import dataclass
+from functools import cached_property
+from typing import Any
 
 import numpy as np
 
-from ..checks import check, tally
+from ..checks import Check, check, tally
 from ..crank import dynamics, kinematics, pressure, torque
 from ..specification import SpecError
 from ..units import MPA
@@ -85,7 +87,7 @@ class CrankSummary:
     cylinder_mean_torque: float = quantity("cylinder_mean_torque_Nm", "N m", "mean torque of one cylinder")
     torque_period: float = quantity("torque_period_deg", "crank deg", "period of the engine torque")
     even_firing: bool = quantity("even_firing", label="the cylinders fire at equal intervals")
-    firing_angles: tuple = quantity("firing_angles_deg", "crank deg", "firing angles after cylinder 1")
+    firing_angles: tuple[float, ...] = quantity("firing_angles_deg", "crank deg", "firing angles after cylinder 1")
     firing: str = quantity("firing", label="how the firing angles were found")
     layout: str = quantity("layout", label="inline or v")
     cylinders: int = quantity("cylinders", label="cylinders")
@@ -93,23 +95,23 @@ class CrankSummary:
     work: WorkRecord = quantity("work", flatten=True, omit_none=True)
 
 
-@dataclass(repr=False)
+@dataclass(frozen=True, repr=False)
 class CrankResults:
     """The crank chapter: per-angle arrays of one cylinder, the engine torque and the summary (SI)."""
 
     phi: np.ndarray                 # cycle angle of one cylinder [rad]
-    columns: dict                   # per-angle arrays of one cylinder (SI)
+    columns: dict[str, np.ndarray]  # per-angle arrays of one cylinder (SI)
     psi: np.ndarray                 # engine angle over one cycle [rad]
     cylinder_torques: np.ndarray    # (i, n) [N m]
     total_torque: np.ndarray        # (n,) [N m]
     firing: np.ndarray              # firing angles after cylinder 1 [rad]
     figures: CrankSummary
-    checks: list                    # every valvetrain.checks.Check of the chapter
+    checks: tuple[Check, ...]       # every check of the chapter
     pressure_source: str
 
-    @property
-    def summary(self):
-        """The chapter's record in results.json (engineering units)."""
+    @cached_property
+    def summary(self) -> dict[str, Any]:
+        """The chapter's record in results.json (engineering units), made once: read it, don't change it."""
         return record(self.figures)
 
     def __repr__(self):
@@ -119,7 +121,7 @@ class CrankResults:
                 + "open failures {failure}, warnings {warning}, info {info} of {checks} checks)".format(**tally(self.checks)))
 
 
-def crank_geometry(crank, engine):
+def crank_geometry(crank, engine) -> tuple[float, float, float, float]:
     """Bore, stroke, rod length [m] and speed [rad/s] of the crank mechanism: [crank]'s, else [engine]'s (SI
     views; the specification refuses values given in both that differ)."""
     def either(a, b):
@@ -137,7 +139,7 @@ def _masses(c, area, rods_per_pin):
     return dynamics.reduced_masses(mass("piston"), mass("rod"), mass("crank"), c.rod_pin_fraction, rods_per_pin)
 
 
-def valve_timing(valves):
+def valve_timing(valves) -> dict[str, float]:
     """The gas-exchange angles of the Wiebe model from the designed valves [rad, crank angle from the gas-exchange
     TDC]: ``intake_opens``/``intake_closes`` of the intake valves (the earliest opening, the latest closing),
     ``exhaust_opens``/``exhaust_closes`` of the exhaust valves; a kind without valves is left out."""
@@ -150,7 +152,7 @@ def valve_timing(valves):
     return out
 
 
-def wiebe_timing(timing):
+def wiebe_timing(timing) -> tuple[dict[str, float], str]:
     """Keyword arguments of :class:`~valvetrain.crank.pressure.WiebeCycle` from :func:`valve_timing` (angles
     moved to the model's frames: the closed cycle's from the firing TDC, the overlap's from the gas-exchange TDC),
     and the words of the pressure source naming them."""
@@ -218,7 +220,7 @@ def _firing(eng):
     return torque.even_firing(list(order), eng.strokes), f"even firing, order {'-'.join(map(str, order))}"
 
 
-def crank_stage(c, eng, timing=None):
+def crank_stage(c, eng, timing=None) -> CrankResults:
     """Run the crank chapter: ``c`` and ``eng`` are the SI views of [crank] and [engine], ``timing`` the valves'
     angles for the Wiebe model (:func:`valve_timing`); returns :class:`CrankResults`."""
     bore, stroke, rod, omega = crank_geometry(c, eng)
@@ -269,7 +271,7 @@ def crank_stage(c, eng, timing=None):
         float(phi[int(np.argmax(p_abs))]), source, stats["mean"], stats["max"], stats["min"], stats["nonuniformity"],
         float(np.mean(forces["torque"])), period, even, tuple(float(a) for a in firing), firing_how, eng.layout,
         eng.cylinders, strokes, work)
-    found = [check("crank lambda = R/L", lam, *LAMBDA_RANGE, source="Power units manual (n.d.), eq. (1.1)"),
-             check("rod mass share at the piston pin", c.rod_pin_fraction, *ROD_PIN_FRACTION_RANGE,
+    found = [check("crank.rod_ratio", lam, *LAMBDA_RANGE, source="Power units manual (n.d.), eq. (1.1)"),
+             check("crank.rod_pin_share", c.rod_pin_fraction, *ROD_PIN_FRACTION_RANGE,
                    source="Power units manual (n.d.), eq. (2.7)")]
-    return CrankResults(phi, columns, phi, each, total, firing, figures, found, source)
+    return CrankResults(phi, columns, phi, each, total, firing, figures, tuple(found), source)

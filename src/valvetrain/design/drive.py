@@ -10,13 +10,14 @@ results.json.
 """
 
 from dataclasses import dataclass, field, replace
-from typing import Optional, Union
+from typing import Any, Optional, Union
 
 import numpy as np
 
 from .. import flow, masses, springs, strength
-from ..checks import check
+from ..checks import Check, check
 from ..layouts import chain, layout, train_mass
+from ..locale import record_text
 from ..report.wording import diagnosis_record, diagnosis_text
 from ..spring_materials import grade
 from ..specification.si import si_name
@@ -100,10 +101,10 @@ class SpringRecord:
     guide_sleeve_needed: bool = quantity("guide_sleeve_needed", label="free length / D > 2.5")
     passes_all_checks: bool = quantity("passes_all_checks", label="every check of the spring passes")
     binding_check: str = quantity("binding_check", label="the check with the smallest margin")
-    margins: dict = quantity("margins", label="relative margin of each check (>= 0 passes)")
+    margins: dict[str, float] = quantity("margins", label="relative margin of each check (>= 0 passes)")
 
 
-def spring_record(s):
+def spring_record(s) -> SpringRecord:
     """The :class:`SpringRecord` of a :class:`valvetrain.springs.SpringDesign`."""
     c, n = s.characteristic, s.lengths
     return SpringRecord(
@@ -123,7 +124,7 @@ class SpringResult:
     """
 
     count: int = quantity("count", label="springs: 1 or a nested pair")
-    material: Union[str, tuple] = quantity("material", label="the grade (or grades) searched")
+    material: Union[str, tuple[str, ...]] = quantity("material", label="the grade (or grades) searched")
     preload: float = quantity("preload_N", "N", "preload of the chosen spring(s)")
     max_force: float = quantity("max_force_N", "N", "force at full lift of the chosen spring(s)")
     rate: float = quantity("rate_N_per_mm", "N/mm", "rate of the chosen spring(s)")
@@ -141,7 +142,7 @@ class SpringResult:
     spring_reserve: float = quantity("spring_reserve", label="spring reserve K_z")
     candidates_passing: int = quantity("candidates_passing", label="candidates that pass every check")
     candidates_tried: int = quantity("candidates_tried", label="candidates tried")
-    diagnosis: Optional[dict] = quantity("diagnosis", label="why no spring passes and what would help",
+    diagnosis: Optional[dict[str, Any]] = quantity("diagnosis", label="why no spring passes and what would help",
                                          omit_none=True)
     design: SpringRecord = quantity("design", flatten=True)
     outer: Optional[SpringRecord] = quantity("outer", label="outer spring of a pair", omit_none=True, default=None)
@@ -189,8 +190,8 @@ class StrengthResult:
     side_force_speed: Optional[float] = quantity("roller_side_force_speed_rpm", "rpm",
                                                  "engine speed of the largest side force", omit_none=True)
     per_speed: StrengthPerSpeed = quantity("per_speed", label="the largest cam force and contact stress at each speed")
-    checks: tuple = ()             # the strength checks (valvetrain.checks.Check, quantity with underscores)
-    not_checked: tuple = ()        # the checks whose parts are not given, each with the keys missing
+    checks: tuple[Check, ...] = ()     # the strength checks (quantity with underscores)
+    not_checked: tuple[str, ...] = ()  # the checks whose parts are not given, each with the keys missing
     rated_speed: float = 0.0       # the engine's rated speed [rad/s] (for the plot)
 
 
@@ -221,23 +222,23 @@ class DriveResult:
     masses: MassResult
     spring: SpringResult
     strength: Optional[StrengthResult]             # set by :func:`strength_stage` (None from drive_stage alone)
-    checks: tuple                  # every valvetrain.checks.Check of the drive, passed or not
+    checks: tuple[Check, ...]      # every check of the drive, passed or not
     lift: np.ndarray = field(repr=False)             # valve lift along the open event [m]
     inertia_force: np.ndarray = field(repr=False)    # m_v |j_v| where j_v < 0 [N]
     required_force: np.ndarray = field(repr=False)   # K_z m_v |j_v| [N]
-    lines: dict = field(repr=False)                  # name -> springs.Characteristic (required, chosen, outer, inner)
+    lines: dict[str, springs.Characteristic] = field(repr=False)   # required, chosen, outer, inner
     diagnosis: Optional[springs.Diagnosis] = None   # why no spring passes, where none does
 
 
-def drive_record(drive):
+def drive_record(drive) -> dict[str, Any]:
     """The ``masses``, ``spring`` and ``strength`` records of results.json (engineering units)."""
     st = drive.strength
     return {"masses": record(drive.masses), "spring": record(drive.spring),
-            "strength": {**record(st), "checks": {c.quantity: _strength_record(c) for c in st.checks},
+            "strength": {**record(st), "checks": {c.code.removeprefix("strength."): _strength_record(c) for c in st.checks},
                          "not_checked": list(st.not_checked)}}
 
 
-def spring_options(sp):
+def spring_options(sp) -> springs.SpringOptions:
     """The spring search of a spring section's SI view (grades, overrides, ranges, arrangement); the wire series
     is a catalogue grid in mm (:func:`valvetrain.springs.wire_series`)."""
     names = (sp.material,) if isinstance(sp.material, str) else sp.material
@@ -257,12 +258,12 @@ def spring_options(sp):
 def _spring_checks(tag, s, note=""):
     """A designed spring's own checks, named after the spring (``spring``, ``outer``, ``inner``); a failed one
     carries ``note`` (the diagnosis)."""
-    return [replace(c, quantity=f"{tag} {c.quantity}", note=c.note if c.passed else note) for key, c in s.checks.items()
+    return [replace(c.of_spring(tag), note=c.note if c.passed else note) for key, c in s.checks.items()
             if key in ("tau_max", "fatigue_safety", "resonance_ratio", "working_coils", "installed_length",
                        "free_length", "coil_gap_at_full_lift")]
 
 
-def drive_stage(valve, gas, cam):
+def drive_stage(valve, gas, cam) -> DriveResult:
     """Stage 6: reduced masses, spring characteristic and design (the strength is :func:`strength_stage`).
 
     Parameters
@@ -332,17 +333,18 @@ def drive_stage(valve, gas, cam):
                                          sum(d.characteristic.rate for d in designs.values()), lift)
     lines["chosen"] = chosen_line
     ratio = chosen_line.max_deflection / chosen_line.preload_deflection
-    found.append(check("spring reserve K_z", drive.spring_reserve, *springs.SPRING_RESERVE_RANGE,
+    found.append(check("spring.reserve", drive.spring_reserve, *springs.SPRING_RESERVE_RANGE,
                        source="Valve-train practical works (n.d.), eq. (5.3)"))
-    found.append(check("spring f_max/f_min", ratio, *springs.DEFLECTION_RATIO_RANGE, source="Valve-train practical works (n.d.), work 5 "
+    found.append(check("spring.chosen_deflection_ratio", ratio, *springs.DEFLECTION_RATIO_RANGE, source="Valve-train practical works (n.d.), work 5 "
                        "(the chosen springs' rounded coils can move it off the required line's ratio)"))
     if sp.count == 2:
-        found.append(check("inner spring share", sp.inner_share, *springs.INNER_SHARE_RANGE, source="Valve-train practical works (n.d.), work 5"))
+        found.append(check("spring.inner_share", sp.inner_share, *springs.INNER_SHARE_RANGE, source="Valve-train practical works (n.d.), work 5"))
     for tag, d in designs.items():
         found += _spring_checks(tag, d, diagnosis_text(diagnosis, "en") if diagnosis else "")
     if sp.count == 2:
-        found.append(replace(designs["inner"].checks["frequency_difference"],
-                             quantity="inner/outer spring frequency difference"))
+        difference = designs["inner"].checks["frequency_difference"]
+        found.append(replace(difference, quantity=record_text("spring.pair_frequency_difference"),
+                             code="spring.pair_frequency_difference"))
 
     if sp.count == 1:
         design, pair = spring_record(designs["spring"]), {}
@@ -370,7 +372,7 @@ def drive_stage(valve, gas, cam):
     return DriveResult(mass_result, spring_result, None, tuple(found), y, inertia, required, lines, diagnosis)
 
 
-def strength_speed_range(engine, dynamics=None):
+def strength_speed_range(engine, dynamics=None) -> tuple[float, float, str]:
     """The engine speeds the strength is checked over [rad/s]: the lowest, the highest and where the lowest comes from.
 
     The highest is the over-speed, ``[engine] over_speed_ratio`` x the rated speed.  The lowest is ``[engine]
@@ -386,7 +388,7 @@ def strength_speed_range(engine, dynamics=None):
     return min(low, engine.rated_speed), engine.over_speed_ratio * engine.rated_speed, source
 
 
-def quasi_static_loads(law, rocker_ratio, theta, spring_force, mass, speeds, to_cam):
+def quasi_static_loads(law, rocker_ratio, theta, spring_force, mass, speeds, to_cam) -> LoadMap:
     """The quasi-static cam force over engine speeds x camshaft angles, :class:`LoadMap`.
 
     Parameters
@@ -420,7 +422,7 @@ def quasi_static_loads(law, rocker_ratio, theta, spring_force, mass, speeds, to_
     return LoadMap("quasi-static", np.asarray(speeds, dtype=float), theta, force)
 
 
-def dynamic_loads(dynamics, low, high):
+def dynamic_loads(dynamics, low, high) -> Optional[LoadMap]:
     """The dynamics stage's simulated cam force at its speeds within [low, high] (and the rated speed), a
     :class:`LoadMap`, or None where none of its speeds lies in the range."""
     speeds = np.append(np.asarray(dynamics.per_speed.speed, dtype=float), dynamics.at_rated_speed.speed)
@@ -432,7 +434,7 @@ def dynamic_loads(dynamics, low, high):
     return LoadMap("dynamic", speeds[keep][order], dynamics.sweep.theta, force[keep][order])
 
 
-def load_maps(valve, engine, cam, theta, spring_force, mass, dynamics=None):
+def load_maps(valve, engine, cam, theta, spring_force, mass, dynamics=None) -> tuple[list[LoadMap], tuple[float, float, str]]:
     """The cam force over the strength speed range, a list of :class:`LoadMap`, and the range (low, high, source).
 
     With the dynamics stage, its simulated force at its speeds in the range and the quasi-static force at the
@@ -462,7 +464,7 @@ def _worst(maps, values):
     return best
 
 
-def strength_stage(valve, gas, engine, cam, drive, dynamics=None):
+def strength_stage(valve, gas, engine, cam, drive, dynamics=None) -> tuple[StrengthResult, list[Check]]:
     """Work 7 over the speed range: every strength check the layout and the given dimensions allow, at its worst.
 
     Parameters
@@ -509,7 +511,7 @@ def strength_stage(valve, gas, engine, cam, drive, dynamics=None):
     result, checks = _strength(valve, cam, theta, maps, p_open)
     result = replace(result, speed_range=(float(low), float(high)), lowest_speed_source=source,
                      rated_speed=engine.rated_speed)
-    return result, [replace(c, quantity=c.quantity.replace("_", " ")) for c in result.checks] + found + checks
+    return result, list(result.checks) + found + checks
 
 
 def _where(w):
@@ -633,7 +635,7 @@ def _exhaust_gas_force(valve, gas):
     note = (f"on the head diameter d_n = {to_display(head, 'mm'):g} mm" if head is not None else
             "parts.head_diameter_mm not given: computed on the throat diameter "
             f"{to_display(diameter, 'mm'):g} mm, a lower bound (the head is larger than the throat)")
-    return force, check("gas force on the exhaust valve at opening", force, unit="N", severity="info",
+    return force, check("gas_force.exhaust_opening", force, unit="N", severity="info",
                         source=WORKS_7_1, note=note)
 
 
@@ -664,7 +666,7 @@ def _edge_loading(parts, drive, cam, follower, maps, width, notes):
     offset = abs(float(cam.law.derivatives(np.array([w.angle]))[1, 0]))
     band = ("with the Hertz half-width " f"{to_display(w.value - offset, 'mm'):.3g} mm" if width is not None
             else "without the Hertz half-width (parts.cam_width_mm not given)")
-    return [check("flat follower contact reach (edge loading)", w.value, high=face / 2.0, unit="mm",
+    return [check("follower.edge_loading", w.value, high=face / 2.0, unit="mm",
                   severity="failure", source=f"{SHANG_2_1}, eq. (2.15); {NORTON} (flat-faced follower face width)",
                   note=f"contact offset |dh/dphi| {to_display(offset, 'mm'):.4g} mm {_where(w)} {band}; face radius "
                        f"from parts.{key}")]
@@ -682,7 +684,7 @@ def _roller_side_force(cam, follower, maps, drive):
     beta = abs(float(follower.pressure_angle(cam.heel_radius, h, dh)[0]))
     carrier = "the tappet guide" if drive.tappet else "the rocker and its shaft"
     return w, check(
-        "roller follower side force", w.value, unit="N", severity="info",
+        "follower.roller_side_force", w.value, unit="N", severity="info",
         source=f"{NORTON} (pressure angle: side load F_n sin(alpha)); no source gives an allowable",
         note=f"{_where(w)}, pressure angle {to_display(beta, 'deg'):.3g} deg; carried by {carrier}")
 

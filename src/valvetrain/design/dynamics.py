@@ -12,16 +12,16 @@ Speeds in the results are engine (crank) speeds; the camshaft of a four-stroke t
 
 from dataclasses import dataclass, field, replace
 import math
-from typing import Optional
+from typing import Optional, Union
 
 import numpy as np
 
-from ..checks import check
-from ..dynamics.models import (CoilSpring, camshaft_stiffness, direct_train, natural_modes, one_mass_train,
-                               pushrod_stiffness, pushrod_train, rocker_train, series)
+from ..checks import Check, check
+from ..dynamics.models import (CoilSpring, MultiMassTrain, OneMassTrain, camshaft_stiffness, direct_train,
+                               natural_modes, one_mass_train, pushrod_stiffness, pushrod_train, rocker_train, series)
 from ..dynamics.perturbation import perturbation_parameter
 from ..dynamics.resonance import resonance
-from ..dynamics.sweep import sweep, sweep_size
+from ..dynamics.sweep import SpeedResult, SweepResult, sweep, sweep_size
 from ..layouts import chain, layout
 from ..specification import SpecError
 from ..units import DEG, MM, cam_per_crank, rpm_to_rad_s, to_display
@@ -76,7 +76,7 @@ class DynamicsParameters:
     links: tuple[float, ...] = quantity("link_stiffnesses_N_per_mm", "N/mm", "drive links from the cam to the valve, "
                                         "at the valve")
     link_names: tuple[str, ...] = quantity("link_names", label="what each link is")
-    node_masses: Optional[dict] = quantity("node_masses_kg", "kg", "multi: masses of the nodes at the valve",
+    node_masses: Optional[dict[str, float]] = quantity("node_masses_kg", "kg", "multi: masses of the nodes at the valve",
                                            omit_none=True)
     estimates: tuple[str, ...] = quantity("estimates", label="how each value the specification does not give was "
                                           "obtained")
@@ -160,7 +160,7 @@ class Mode:
     """One natural mode of the train with every contact closed (undamped)."""
 
     frequency: float = quantity("frequency_Hz", "Hz", "natural frequency")
-    shape: dict = quantity("shape", label="displacement of each node at the valve, the largest 1 (sign: same or "
+    shape: dict[str, float] = quantity("shape", label="displacement of each node at the valve, the largest 1 (sign: same or "
                            "opposite direction)")
 
 
@@ -194,9 +194,9 @@ class DynamicsResult:
     resonance: ResonanceRecord = quantity("resonance")
     per_speed: PerSpeed = quantity("per_speed")
     sweep_table: str = quantity("sweep_table", label="CSV with one row per speed, relative to the output folder")
-    sweep: object = field(default=None, repr=False, compare=False)       # dynamics.sweep.SweepResult
-    records: tuple = field(default=(), repr=False, compare=False)        # SpeedRecord of every speed
-    rated: object = field(default=None, repr=False, compare=False)       # dynamics.sweep.SpeedResult at rated speed
+    sweep: Optional[SweepResult] = field(default=None, repr=False, compare=False)
+    records: tuple[SpeedRecord, ...] = field(default=(), repr=False, compare=False)    # every speed
+    rated: Optional[SpeedResult] = field(default=None, repr=False, compare=False)      # at the rated speed
 
 
 def _link_estimates(valve, k):
@@ -218,7 +218,7 @@ def _link_estimates(valve, k):
     return links
 
 
-def drive_links(dyn, valve, k, at):
+def drive_links(dyn, valve, k, at) -> tuple[tuple[Optional[float], ...], tuple[str, ...], list[str]]:
     """Link stiffnesses at the valve [N/m], their names, and the estimates stated.
 
     The total drive stiffness c is ``dynamics.drive_stiffness_N_per_mm``, else ``drive.stiffness_N_per_mm``;
@@ -257,7 +257,7 @@ def _coil_springs(spring_record, coils):
             for r in recs]
 
 
-def multi_springs(dyn, spring_record, rate, preload):
+def multi_springs(dyn, spring_record, rate, preload) -> tuple[list[CoilSpring], list[str]]:
     """The springs of the multi-mass train and the notes on them: the designed spring(s), or one spring of the rate
     K [N/m] and preload F0 [N] of :func:`train_spring` when [dynamics] gives any of the spring's keys (its active-coil
     mass ``spring_mass_kg``, else the designed springs' together; its coil clash is then not monitored)."""
@@ -273,14 +273,14 @@ def multi_springs(dyn, spring_record, rate, preload):
         f"{dyn.coils_per_spring} masses, half a segment on the valve; its coil clash is not monitored"]
 
 
-def nose_acceleration(law, cam_speed, rocker_ratio, points=3601):
+def nose_acceleration(law, cam_speed, rocker_ratio, points=3601) -> float:
     """Smallest valve acceleration of the lift event j_min = i_k omega_cam^2 min h''(theta) [m/s^2] (at the nose for
     a symmetric law), on ``points`` evenly spaced angles of the event."""
     theta = np.linspace(law.start, law.end, points)
     return float(rocker_ratio * cam_speed**2 * law.derivatives(theta)[2].min())
 
 
-def train_spring(dyn, valve, law, line, mass, cam_speed, at):
+def train_spring(dyn, valve, law, line, mass, cam_speed, at) -> tuple[float, float, str]:
     """Rate K [N/m] and preload F0 [N] of the train (the spring of the one-mass train, or of the multi-mass train when
     [dynamics] gives it), and the note on where they come from.
 
@@ -308,7 +308,7 @@ def train_spring(dyn, valve, law, line, mass, cam_speed, at):
                            f"{preload:.5g} N given (Valve-train dynamics article (n.d.), step 4a)")
 
 
-def build_train(dyn, valve, law, drive, at, cam_speed=None):
+def build_train(dyn, valve, law, drive, at, cam_speed=None) -> tuple[Union[OneMassTrain, MultiMassTrain], DynamicsParameters]:
     """The train of a valve: (train, DynamicsParameters).  ``drive`` is the drive stage's DriveResults.
 
     ``cam_speed`` (rated camshaft speed [rad/s]) is needed when [dynamics] gives a preload without a rate.
@@ -370,12 +370,12 @@ def _multi_train(valve, links, springs, lash, kw, at):
     return direct_train(m.tappet_kg, valve_mass, links[0], links[1], springs, lash, **kw)
 
 
-def finite_or_none(x):
+def finite_or_none(x) -> Optional[float]:
     """``x``, or None where it is not finite (a speed whose recorded revolution has no seating)."""
     return float(x) if np.isfinite(x) else None
 
 
-def speed_record(r, speed, epsilon):
+def speed_record(r, speed, epsilon) -> SpeedRecord:
     """A :class:`SpeedRecord` of a :class:`~valvetrain.dynamics.sweep.SpeedResult` at engine speed [rad/s]."""
     surge = float(r.surge_amplitude.max()) if r.surge_amplitude.size else None
     clash = float(r.clash_margin) if np.isfinite(r.clash_margin) else None
@@ -391,7 +391,7 @@ POOR_FILM_BAND = (0.4, 0.6)
 h_min vanishes at gamma = 0.5); the width of the band is this package's choice."""
 
 
-def rated_contact(r, law, heel_radius, follower, width, modulus):
+def rated_contact(r, law, heel_radius, follower, width, modulus) -> dict[str, float]:
     """The cam contact at one speed under the simulated force: Hertz stress, lubrication characteristic, drive torque.
 
     Parameters
@@ -441,7 +441,7 @@ def rated_contact(r, law, heel_radius, follower, width, modulus):
     return out
 
 
-def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, cam=None):
+def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, cam=None) -> tuple[DynamicsResult, list[Check]]:
     """Sweep the elastic train of a valve over its speed range and simulate the rated speed.
 
     Parameters
@@ -528,12 +528,11 @@ def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, 
     return out, dynamics_checks(out, engine)
 
 
-CHECK_QUANTITIES = ("dynamic seating velocity at the rated speed",
-                    "follower separation (jump) speed / rated speed")
-"""The quantities of the dynamics checks."""
+CHECK_CODES = ("dynamics.seating_velocity", "dynamics.jump_speed")
+"""The codes of the dynamics checks."""
 
 
-def dynamics_checks(d, engine):
+def dynamics_checks(d, engine) -> list[Check]:
     """The seating velocity at the rated speed (a warning above its band) and the follower separation: a failure
     below ``[engine] over_speed_ratio`` x the rated speed.
 
@@ -544,9 +543,9 @@ def dynamics_checks(d, engine):
     jump = d.jump_speed if np.isfinite(d.jump_speed) else top
     note = "" if np.isfinite(d.jump_speed) else (f"no separation up to the top of the range swept, "
                                                   f"{to_display(top, 'rpm'):.0f} rpm")
-    return [check(CHECK_QUANTITIES[0], abs(d.at_rated_speed.seating_velocity),
+    return [check(CHECK_CODES[0], abs(d.at_rated_speed.seating_velocity),
                   high=SEATING_VELOCITY_MAX, unit="m/s", source=CHECK_SOURCE + "; 0.3-0.5 m/s usual"),
-            check(CHECK_QUANTITIES[1], jump / engine.rated_speed, low=engine.over_speed_ratio, severity="failure",
+            check(CHECK_CODES[1], jump / engine.rated_speed, low=engine.over_speed_ratio, severity="failure",
                   note=note, source=CHECK_SOURCE + ": no separation below [engine] over_speed_ratio x the rated "
                   "speed")]
 
@@ -567,7 +566,18 @@ SWEEP_COLUMNS = [
 surge but still goes solid)."""
 
 
-def sweep_columns(d):
+def event_window(d, margin_deg: float = 10.0) -> np.ndarray:
+    """Camshaft angles of the sweep around the event (where any speed or the rigid lift is off the seat)."""
+    sw = d.sweep
+    open_ = (sw.kinematic_lift > 0.0) | np.any(sw.lift > 1e-6, axis=0)
+    idx = np.flatnonzero(open_)
+    if idx.size == 0:
+        return np.ones(sw.theta.size, dtype=bool)
+    lo, hi = sw.theta[idx[0]] - np.radians(margin_deg), sw.theta[idx[-1]] + np.radians(margin_deg)
+    return (sw.theta >= lo) & (sw.theta <= hi)
+
+
+def sweep_columns(d) -> dict[str, np.ndarray]:
     """The per-speed table of a :class:`DynamicsResult` as named columns (engineering units)."""
     rows = [record(r) for r in d.records]
     to_cam = d.sweep.cam_speeds[0] / d.per_speed.speed[0]
@@ -590,7 +600,7 @@ def sweep_columns(d):
     return out
 
 
-__all__ = ["CHECK_QUANTITIES", "DynamicsParameters", "DynamicsResult", "Mode", "PerSpeed", "ResonanceRecord", "SWEEP_COLUMNS",
+__all__ = ["CHECK_CODES", "DynamicsParameters", "DynamicsResult", "Mode", "PerSpeed", "ResonanceRecord", "SWEEP_COLUMNS",
            "SpeedRecord", "build_train", "drive_links", "dynamics_checks", "dynamics_stage", "finite_or_none", "rated_contact",
            "speed_record",
            "sweep_columns"]

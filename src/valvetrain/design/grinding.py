@@ -15,7 +15,7 @@ from typing import Optional
 import numpy as np
 
 from .. import cam_grinding
-from ..checks import check
+from ..checks import Check, check
 from ..units import MM
 from .results import quantity
 
@@ -102,7 +102,7 @@ class GrindingResult:
     wear: Optional[WearTable] = field(default=None, repr=False)
 
 
-def grinding_stage(grinding, cam, name, export_step):
+def grinding_stage(grinding, cam, name, export_step) -> tuple[GrindingResult, list[Check]]:
     """The master cam and the wear error of one valve's cam.
 
     Parameters
@@ -143,7 +143,7 @@ def grinding_stage(grinding, cam, name, export_step):
     concave_radius = float(np.max(concave)) if concave.size else None
     found = []
     if concave_radius is not None:
-        found.append(check("cam concave radius |rho| against the grinding wheel radius", -concave_radius, low=r_w,
+        found.append(check("grinding.concave_radius", -concave_radius, low=r_w,
                            strict_low=True, source=CONCAVE_SOURCE, unit="mm", severity="failure",
                            note=f"a wheel of radius {r_w / MM:g} mm cannot grind a concave stretch of smaller radius"))
     path, length, _ = cam_grinding.wheel_centre_path(derivs, theta, heel, r_w, follower)
@@ -155,7 +155,7 @@ def grinding_stage(grinding, cam, name, export_step):
         convex = bool(np.all(pitch_rho > r_m))
         master_rho = float(np.min(np.where(pitch_rho > 0.0, pitch_rho, np.inf)) - r_m)
         master_ok = master_rho > 0.0
-        found.append(check("master cam: smallest radius of curvature (master roller undercut)", master_rho, low=0.0,
+        found.append(check("grinding.master_undercut", master_rho, low=0.0,
                            strict_low=True, source=MASTER_SOURCE, unit="mm", severity="failure",
                            note=f"master roller r_m = {r_m / MM:g} mm, bar ratio {i:g}"))
     result = dict(wheel_radius=r_w, master_follower_radius=r_m, bar_ratio=i, master_base_radius=base,
@@ -204,7 +204,7 @@ WEAR_COLUMNS = [
 """Columns of ``tables/NAME_wear_error.csv``."""
 
 
-def wear_columns(g):
+def wear_columns(g) -> dict[str, np.ndarray]:
     """The wear-error table in the units of :data:`WEAR_COLUMNS`."""
     w = g.wear
     return {"cam_deg": np.degrees(w.cam_angle), "lift_mm": w.lift / MM, "worn_lift_mm": w.worn_lift / MM,
@@ -212,7 +212,7 @@ def wear_columns(g):
             "phase_shift_deg": np.degrees(w.phase_shift)}
 
 
-def master_polar_columns(g):
+def master_polar_columns(g) -> dict[str, np.ndarray]:
     """The master for manufacture against the spindle angle: wheel-centre radius, master follower lift, master
     polar radius and its flat-follower (surface grinder) lift [deg, mm]."""
     m = g.master
@@ -221,7 +221,7 @@ def master_polar_columns(g):
             "master_flat_lift_mm": m.flat_lift / MM}
 
 
-def master_cartesian_columns(g):
+def master_cartesian_columns(g) -> dict[str, np.ndarray]:
     """The master contour points [deg, mm] (the cam angle each point grinds)."""
     x, y = g.master_contour / MM
     return {"cam_deg": np.degrees(g.master_angle), "x_mm": x, "y_mm": y}

@@ -18,11 +18,11 @@ speed of the sweep up to the over-speed, as is a fill (supply) pressure that lif
 
 from dataclasses import dataclass, field, replace
 import math
-from typing import Optional
+from typing import Any, Optional
 
 import numpy as np
 
-from ..checks import check
+from ..checks import Check, check
 from ..crank.pressure import on_grid
 from ..dynamics.sweep import BOUNCE_TOLERANCE
 from ..flow import circle_area
@@ -52,9 +52,6 @@ STOP_MARGIN = 0.1
 
 FAILURE_SOURCE = "Shang Hanji (1988), ch. 7"
 """Source of the failure checks of the drive (the valve's stroke, its closing and its rest)."""
-
-SEATING_QUANTITY = "hydraulic drive: valve seating velocity at the simulated speed"
-"""The quantity of the seating-velocity check."""
 
 SEATING_SOURCE = "Shang Hanji (1988), ch. 3 and ch. 7; 0.3-0.5 m/s usual"
 """Source of the seating-velocity check (the dynamics stage's limit)."""
@@ -184,7 +181,7 @@ def _drive(h):
         h.initial_pressure, h.back_pressure)
 
 
-def lift_off_pressure(drive, gas_force=0.0):
+def lift_off_pressure(drive, gas_force=0.0) -> float:
     """Absolute actuator pressure that lifts the valve off its seat [Pa].
 
     Parameters
@@ -204,14 +201,14 @@ def lift_off_pressure(drive, gas_force=0.0):
     return drive.back_pressure + (drive.valve.preload + gas_force) / drive.actuator.piston_area
 
 
-def cycle_angle(nose, cam_angle, strokes):
+def cycle_angle(nose, cam_angle, strokes) -> np.ndarray:
     """Cycle crank angle [rad from the gas-exchange TDC, 0...pi strokes] of camshaft angles [rad from the nose], the
     nose at the crank angle ``nose`` [rad]: crank = nose + camshaft angle / (camshaft revolutions per crank
     revolution), twice the camshaft angle for a four-stroke."""
     return np.mod(nose + np.asarray(cam_angle) / cam_per_crank(strokes), math.pi * strokes)
 
 
-def head_load(valve, gas):
+def head_load(valve, gas) -> tuple[float, float]:
     """The diameter the cylinder pressure acts on [m] (``parts.head_diameter_mm``, else the throat's, which is
     smaller) and the absolute pressure behind the valve head [Pa] (``[gas]``: the exhaust back pressure of an exhaust
     valve, the intake port pressure of an intake valve)."""
@@ -220,7 +217,7 @@ def head_load(valve, gas):
     return (valve.throat_diameter if head is None else head), port
 
 
-def speed_plan(hydraulic, engine):
+def speed_plan(hydraulic, engine) -> tuple[float, np.ndarray, list[str]]:
     """The engine speeds of the stage [rad/s]: (simulated speed, swept speeds, notes on the defaults taken)."""
     rpm = rpm_to_rad_s(1.0)
     notes = []
@@ -237,7 +234,7 @@ def speed_plan(hydraulic, engine):
     return speed, np.linspace(low, high, hydraulic.speeds), notes
 
 
-def hydraulic_stage(valve, law, engine, gas, name, nose, cylinder=None):
+def hydraulic_stage(valve, law, engine, gas, name, nose, cylinder=None) -> tuple[HydraulicResult, list[Check]]:
     """One camshaft revolution of one valve's hydraulic drive, and one at each speed of a sweep.
 
     Parameters
@@ -329,12 +326,12 @@ def hydraulic_stage(valve, law, engine, gas, name, nose, cylinder=None):
         speed_range=(float(speeds[0]), float(speeds[-1])), speeds=int(speeds.size), per_speed=per_speed,
         notes=tuple(notes), table_file=f"tables/{name}_hydraulic.csv",
         sweep_table=f"tables/{name}_hydraulic_sweep.csv", response=r, sweep=sw, nose=nose, strokes=engine.strokes)
-    found = [check("hydraulic drive: smallest pressure above the vapour pressure", result.min_pressure,
+    found = [check("hydraulic.min_pressure", result.min_pressure,
                    low=hydraulic.vapour_pressure, strict_low=True, source=SOURCES, unit="MPa",
                    note="the liquid column separates (cavitation) where the pressure falls to the vapour pressure")]
     found += _failure_checks(r, sw, speed, speeds, engine, drive, hydraulic)
     if result.seating_velocity is not None:
-        found.append(check(SEATING_QUANTITY, abs(result.seating_velocity), high=SEATING_VELOCITY_MAX, unit="m/s",
+        found.append(check("hydraulic.seating_velocity", abs(result.seating_velocity), high=SEATING_VELOCITY_MAX, unit="m/s",
                            source=SEATING_SOURCE))
     return result, found
 
@@ -365,17 +362,17 @@ def _failure_checks(r, sw, speed, speeds, engine, drive, hydraulic):
     stop = drive.valve.stop
     reached = lift[k] >= stop
     found = [
-        check("hydraulic drive: largest valve lift within the stroke (below the stop)", lift[k], high=stop, unit="mm",
+        check("hydraulic.max_lift", lift[k], high=stop, unit="mm",
               severity="failure", source=FAILURE_SOURCE,
               note=(f"the valve reaches its stop at {at[k] / rpm:.0f} rpm: it travels further than its stroke"
                     if reached else f"largest at {at[k] / rpm:.0f} rpm")),
-        check("hydraulic drive: valve lift left at the next opening", left[m], high=BOUNCE_TOLERANCE, unit="mm",
+        check("hydraulic.residual_lift", left[m], high=BOUNCE_TOLERANCE, unit="mm",
               severity="failure", source=FAILURE_SOURCE,
               note=(f"at {at[m] / rpm:.0f} rpm the valve is not back on its seat when the plunger is about to lift "
                     "again: it has not closed before its next opening"
                     if left[m] > BOUNCE_TOLERANCE else ""))]
     if hydraulic.fill_pressure is not None:
-        found.append(check("hydraulic drive: fill pressure below the valve's lift-off pressure",
+        found.append(check("hydraulic.fill_pressure",
                            hydraulic.fill_pressure, high=lift_off_pressure(drive), unit="MPa", severity="failure",
                            source=FAILURE_SOURCE,
                            note="above it the supply alone lifts the valve off its seat (F_0 / A_a above the back "
@@ -397,7 +394,7 @@ TABLE_COLUMNS = [
 """Columns of ``tables/NAME_hydraulic.csv``."""
 
 
-def table_columns(result, step=0.5 * DEG):
+def table_columns(result, step=0.5 * DEG) -> dict[str, np.ndarray]:
     """The hydraulic table in the units of :data:`TABLE_COLUMNS`: every k-th time step of the simulation, k the
     whole number of steps nearest to ``step`` [rad] of camshaft angle (at least 1); a cavitation between two rows
     is shown on the next row."""
@@ -429,7 +426,7 @@ SWEEP_COLUMNS = [
 """Columns of ``tables/NAME_hydraulic_sweep.csv``."""
 
 
-def sweep_columns(result):
+def sweep_columns(result) -> dict[str, Any]:
     """The per-speed table of a :class:`HydraulicResult` in the units of :data:`SWEEP_COLUMNS` (None: an empty
     cell)."""
     rec = record(result.per_speed)

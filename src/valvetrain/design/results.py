@@ -2,7 +2,7 @@
 
 A stage result is a frozen dataclass.  A field declared with :func:`quantity` is part of the
 results: ``key`` is its name in ``results.json`` (engineering units in the name, as in the
-specification: ``rho_min_mm``), ``unit`` the unit it is shown in (:data:`valvetrain.units.DISPLAY_UNITS`),
+specification: ``rho_min_mm``), ``unit`` the unit it is shown in (:data:`valvetrain.units.UNITS`),
 ``label`` what it is.  :func:`record` converts a result to that dictionary, the one place where
 a result leaves SI; :func:`json_schema` describes the same dictionary as a JSON Schema, generated
 from the same metadata.  Fields without the metadata (arrays, the law object) stay inside.
@@ -10,13 +10,14 @@ from the same metadata.  Fields without the metadata (arrays, the law object) st
 
 from dataclasses import MISSING, field, fields, is_dataclass
 import typing
+from typing import Any
 
 import numpy as np
 
 from ..units import to_display
 
 
-def quantity(key, unit="", label="", *, default=MISSING, flatten=False, omit_none=False):
+def quantity(key, unit="", label="", *, default=MISSING, flatten=False, omit_none=False) -> Any:
     """A result field shown in results.json as ``key`` in ``unit``.
 
     Parameters
@@ -24,7 +25,7 @@ def quantity(key, unit="", label="", *, default=MISSING, flatten=False, omit_non
     key : str
         Name in results.json.
     unit : str
-        Display unit of the value (a key of :data:`valvetrain.units.DISPLAY_UNITS`); numbers,
+        Display unit of the value (a key of :data:`valvetrain.units.UNITS`); numbers,
         tuples and arrays of numbers are converted, other values kept.
     label : str
         What the quantity is, for the schema and the report.
@@ -53,7 +54,7 @@ def _shown(value, unit):
     return float(to_display(float(value), unit))
 
 
-def record(result):
+def record(result: Any) -> dict[str, Any]:
     """The results.json dictionary of a stage result (engineering units, keys from the field metadata)."""
     out = {}
     for f in fields(result):
@@ -70,6 +71,25 @@ def record(result):
     return out
 
 
+def shown(result: Any, *names: str) -> list[tuple[str, Any]]:
+    """``(key, value)`` of the named fields of a stage result as results.json shows them (the field's key, the value
+    in its display unit), read from the attributes in the order named; without names, every field's (its record).
+
+    >>> from valvetrain.design.valve import FlatContact
+    >>> shown(FlatContact(0.0125), "max_contact_offset")
+    [('max_contact_offset_mm', 12.5)]
+    """
+    if not names:
+        return list(record(result).items())
+    meta = {f.name: f.metadata for f in fields(result)}
+    return [(meta[n]["key"], _shown(getattr(result, n), meta[n]["unit"])) for n in names]
+
+
+def shown_value(result: Any, name: str) -> Any:
+    """The value of one field of a stage result as results.json shows it (:func:`shown`)."""
+    return shown(result, name)[0][1]
+
+
 _JSON_TYPES = {float: ["number", "null"], int: "integer", str: "string", bool: "boolean", dict: "object"}
 """JSON types of the field annotations; a float may be null, which is how results.json writes a quantity that is
 not finite or not defined (see :func:`valvetrain.export.json_text`)."""
@@ -84,6 +104,9 @@ def _type_schema(annotation):
         return {"type": "null"}
     if origin in (tuple, list):
         return {"type": "array", "items": _type_schema(typing.get_args(annotation)[0])}
+    if origin is dict:
+        values = _type_schema(typing.get_args(annotation)[1])
+        return {"type": "object", **({"additionalProperties": values} if values else {})}
     if isinstance(annotation, type) and is_dataclass(annotation):
         return json_schema(annotation)
     if annotation in _JSON_TYPES:
@@ -91,7 +114,7 @@ def _type_schema(annotation):
     return {}
 
 
-def json_schema(cls):
+def json_schema(cls) -> dict[str, Any]:
     """JSON Schema (draft 2020-12) of the record of a result class: properties from the fields' metadata."""
     hints = typing.get_type_hints(cls)
     props, required = {}, []
@@ -101,8 +124,8 @@ def json_schema(cls):
             continue
         sub = _type_schema(hints[f.name])
         if meta["flatten"]:
-            nested = sub if "properties" in sub else next((o for o in sub.get("anyOf", []) if "properties" in o), {})
-            props.update(nested.get("properties", {}))
+            for nested in [sub, *sub.get("anyOf", [])]:
+                props.update(nested.get("properties", {}))
             continue
         text = meta["label"] + (f" [{meta['unit']}]" if meta["unit"] else "")
         props[meta["key"]] = {**sub, "description": text} if text else sub

@@ -1,11 +1,13 @@
 """Two-stroke port stage: timing, areas and time-area of the piston-controlled ports (Valve-train practical works (n.d.), work 8)."""
 
 from dataclasses import dataclass
+from functools import cached_property
+from typing import Any, Union
 
 import numpy as np
 
 from .. import twostroke
-from ..checks import check
+from ..checks import Check, check
 from ..crank.kinematics import crank_angle_at
 from .crank import crank_geometry
 from .results import quantity, record
@@ -52,24 +54,24 @@ class TwoStrokeSummary:
     speed: float = quantity("speed_rpm", "rpm", "crank speed")
     lam: float = quantity("lambda", label="lambda = R / L")
     kinematics: str = quantity("kinematics", label="exact or approximate")
-    ports: dict = quantity("ports", label="each port")
-    speed_range: tuple = quantity("speed_range_rpm", "rpm", "speeds of Z(n)")
+    ports: dict[str, Union[TopPort, SkirtPort]] = quantity("ports", label="each port")
+    speed_range: tuple[float, float] = quantity("speed_range_rpm", "rpm", "speeds of Z(n)")
 
 
-@dataclass(repr=False)
+@dataclass(frozen=True, repr=False)
 class TwoStrokeResults:
     """Port areas over a revolution, the time-area against speed, and the summary (SI)."""
 
-    phi: np.ndarray          # crank angle from TDC [rad]
-    areas: dict              # port name -> area [m^2]
-    speeds: np.ndarray       # [rad/s]
-    time_areas: dict         # port name -> Z(n) [m^2 s]
+    phi: np.ndarray                  # crank angle from TDC [rad]
+    areas: dict[str, np.ndarray]     # port name -> area [m^2]
+    speeds: np.ndarray               # [rad/s]
+    time_areas: dict[str, np.ndarray]  # port name -> Z(n) [m^2 s]
     figures: TwoStrokeSummary
-    checks: list             # every valvetrain.checks.Check of the chapter
+    checks: tuple[Check, ...]        # every check of the chapter
 
-    @property
-    def summary(self):
-        """The chapter's record in results.json (engineering units)."""
+    @cached_property
+    def summary(self) -> dict[str, Any]:
+        """The chapter's record in results.json (engineering units), made once: read it, don't change it."""
         return record(self.figures)
 
     def __repr__(self):
@@ -86,7 +88,7 @@ def _skirt_opening(lower, piston_height, radius, lam, exact):
     return float(crank_angle_at(travel, radius, lam, exact=exact))
 
 
-def two_stroke_stage(ts, crank, eng):
+def two_stroke_stage(ts, crank, eng) -> TwoStrokeResults:
     """Run the [two_stroke] chapter from the SI views of [two_stroke], [crank] (or None) and [engine]; returns
     :class:`TwoStrokeResults`."""
     bore, stroke, rod, rated = crank_geometry(crank, eng) if crank is not None else \
@@ -122,10 +124,11 @@ def two_stroke_stage(ts, crank, eng):
                           twostroke.time_area_analytic(bore, stroke, sigma, lam, port.width / (np.pi * bore), speed),
                           float(area.max()), z)
             (h_lo, h_hi), (w_lo, w_hi) = twostroke.PORT_SIZE_RANGES[port.kind]
-            found.append(check(f"{name} port height / stroke", sigma, h_lo, h_hi, source="Valve-train practical works (n.d.), Table 8.1"))
-            found.append(check(f"{name} port width / bore", port.width / bore, w_lo, w_hi,
-                               source="Valve-train practical works (n.d.), Table 8.1"))
+            found.append(check("ports.height_to_stroke", sigma, h_lo, h_hi, source="Valve-train practical works (n.d.), Table 8.1",
+                               params={"port": name}))
+            found.append(check("ports.width_to_bore", port.width / bore, w_lo, w_hi,
+                               source="Valve-train practical works (n.d.), Table 8.1", params={"port": name}))
         areas[name], ports[name] = area, rec
         curves[name] = z * speed / speeds                       # Z = K / n (8.6)
     figures = TwoStrokeSummary(speed, lam, ts.kinematics, ports, (float(low), float(high)))
-    return TwoStrokeResults(phi, areas, speeds, curves, figures, found)
+    return TwoStrokeResults(phi, areas, speeds, curves, figures, tuple(found))

@@ -8,13 +8,16 @@ caller's own.  Crank angles are measured from the gas-exchange TDC (the TDC that
 intake stroke) in (-360, 360]; camshaft angles from the cam nose.
 """
 
+from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
+from functools import cached_property
 import math
+from typing import Any, Optional, Union
 
 import numpy as np
 
 from .. import flow, geometry
-from ..checks import check, failed, ranked, tally
+from ..checks import Check, check, failed, ranked, tally
 from ..crank.kinematics import displacement
 from ..followers import follower_of
 from ..laws import LiftLaw
@@ -23,11 +26,11 @@ from ..layouts import LAYOUTS, layout
 from ..numerics import extremum
 from ..specification import SpecError
 from ..springs import NoSpringFits
-from ..units import DEG, MM
-from .drive import drive_record, drive_stage, strength_stage
-from .dynamics import dynamics_stage
-from .grinding import grinding_stage
-from .hydraulic_actuation import hydraulic_stage
+from ..units import DEG, MM, to_display
+from .drive import DriveResult, drive_record, drive_stage, strength_stage
+from .dynamics import DynamicsResult, dynamics_stage
+from .grinding import GrindingResult, grinding_stage
+from .hydraulic_actuation import HydraulicResult, hydraulic_stage
 from .results import quantity, record
 
 ACCELERATION_LIMITS = (3500.0, -1500.0)
@@ -52,17 +55,17 @@ _FOR_DIRECT = ("the source states this band in work 2 for the shock-free cam, wh
 _ACCELERATION_SOURCE = "Valve-train practical works (n.d.), work 2 ({sign} {band} m/s2)"
 
 LAYOUT_BANDS = {
-    "max tappet acceleration": {
+    "tappet_acceleration.max": {
         layout: Band(high=ACCELERATION_LIMITS[0], source=_ACCELERATION_SOURCE.format(sign="positive", band="1500...3500"),
                      note="" if layout == "direct" else _FOR_DIRECT.format(layout=layout)) for layout in LAYOUTS},
-    "min tappet acceleration": {
+    "tappet_acceleration.min": {
         layout: Band(low=ACCELERATION_LIMITS[1], source=_ACCELERATION_SOURCE.format(sign="negative", band="500...1500"),
                      note="" if layout == "direct" else _FOR_DIRECT.format(layout=layout)) for layout in LAYOUTS},
-    "rocker ratio": {
+    "drive.rocker_ratio": {
         "rocker": Band(1.4, 1.75, "Valve-train practical works (n.d.), work 2 (i_k = 1 for direct drive, 1.4-1.75 with a rocker or lever)"),
         "pushrod": Band(1.4, 1.75, "Valve-train practical works (n.d.), work 2 (i_k = 1 for direct drive, 1.4-1.75 with a rocker or lever)"),
     },
-    "specific mass of the drive m' = m_v / f_g": {
+    "drive.specific_mass": {
         "direct": Band(200.0, 300.0, "Valve-train practical works (n.d.), work 5 (direct drive 200-300 kg/m2)"),
         "rocker": Band(200.0, 300.0, "Valve-train practical works (n.d.), work 5 (direct drive 200-300 kg/m2)",
                        "the source gives 200-300 kg/m2 for direct drive and 400-500 kg/m2 for a tappet, pushrod and "
@@ -71,26 +74,27 @@ LAYOUT_BANDS = {
         "pushrod": Band(400.0, 500.0, "Valve-train practical works (n.d.), work 5 (tappet, pushrod and rocker 400-500 kg/m2)"),
     },
 }
-"""The recommended ranges that depend on the drive layout, ``quantity -> {layout: Band}``; a layout missing from a
-quantity's table has no such check (direct drive has no rocker: its ratio 1 is refused otherwise at validation).
+"""The recommended ranges that depend on the drive layout, ``check code -> {layout: Band}``; a layout missing from a
+code's table has no such check (direct drive has no rocker: its ratio 1 is refused otherwise at validation).
 The valve arrangement of Valve-train practical works (n.d.), work 1 (throat diameter / bore "при нижнем/верхнем расположении клапанов",
 side valves or overhead valves) is the combustion chamber's, ``[engine] chamber``
 (:data:`valvetrain.flow.THROAT_TO_BORE_RANGES`)."""
 
 
-def layout_check(quantity, value, layout, **kw):
-    """The check of ``quantity`` against the band of ``layout`` (:data:`LAYOUT_BANDS`), or None where the layout has
+def layout_check(code, value, layout, **kw) -> Optional[Check]:
+    """The check ``code`` against the band of ``layout`` (:data:`LAYOUT_BANDS`), or None where the layout has
     no such band; the band's note, if any, becomes the check's note."""
-    band = LAYOUT_BANDS[quantity].get(layout)
+    band = LAYOUT_BANDS[code].get(layout)
     if band is None:
         return None
-    return check(quantity, value, band.low, band.high, source=band.source, note=band.note, **kw)
+    return check(code, value, band.low, band.high, source=band.source, note=band.note, **kw)
 
 ENGINE_CLASSES = ("automotive_petrol", "automotive_diesel", "heavy_duty")
 """The engine classes of ``[engine] engine_class``: a car or motorcycle petrol engine, a car, truck or tractor diesel,
 and a heavy-duty engine (locomotive, marine, stationary)."""
 
-PETROL_BANDS = ("opening advance", "closing lag", "seat angle", "clearance h0", "rocker ratio")
+PETROL_BANDS = ("timing.opening_advance", "timing.closing_lag", "valve.seat_angle", "valve.clearance",
+                "drive.rocker_ratio")
 """The checks whose recommended bands are those of a petrol engine (Valve-train practical works (n.d.), works 1 and 2:
 the manual designs a petrol engine's valve train, its appendix a Kurz cam for one)."""
 
@@ -98,7 +102,7 @@ OTHER_CLASS_NOTE = ("the band is a petrol engine's (Valve-train practical works 
                     "for this engine class ({engine_class}): a remark, not a warning")
 
 
-def engine_class(engine):
+def engine_class(engine) -> str:
     """The engine class whose recommended bands apply: ``[engine] engine_class``, else an automotive diesel for
     ``type = "diesel"`` and an automotive petrol engine otherwise (:data:`ENGINE_CLASSES`)."""
     if engine.engine_class is not None:
@@ -106,7 +110,7 @@ def engine_class(engine):
     return "automotive_diesel" if engine.type == "diesel" else "automotive_petrol"
 
 
-def for_engine_class(checks, engine):
+def for_engine_class(checks, engine) -> list[Check]:
     """The checks with the petrol engine's bands (:data:`PETROL_BANDS`) made remarks (info) with a note where the
     engine is of another class: a rocker ratio of 1 or a 40 crank deg advance of a locomotive diesel is no warning
     against a petrol engine's band."""
@@ -115,7 +119,7 @@ def for_engine_class(checks, engine):
         return checks
     note = OTHER_CLASS_NOTE.format(engine_class=cls.replace("_", " "))
     return [replace(c, severity="info", note="; ".join(filter(None, (c.note, note))))
-            if c.quantity in PETROL_BANDS and c.severity == "warning" else c for c in checks]
+            if c.code in PETROL_BANDS and c.severity == "warning" else c for c in checks]
 
 
 TIMING_RANGES = {"intake": ((20.0 * DEG, 30.0 * DEG), (40.0 * DEG, 60.0 * DEG))}
@@ -170,7 +174,7 @@ class StepRecord:
     on_ramp: bool = quantity("on_ramp", label="within a ramp: the clearance is being taken up, the valve at rest")
 
 
-def step_records(law, cam_speed):
+def step_records(law, cam_speed) -> tuple[StepRecord, ...]:
     """The acceleration steps of a law (:meth:`~valvetrain.laws.LiftLaw.acceleration_steps`) as tappet
     accelerations at the camshaft speed [rad/s], a tuple of :class:`StepRecord`."""
     w2 = cam_speed**2
@@ -186,7 +190,7 @@ class CamResult:
     law: LiftLaw = field(repr=False)
     name: str = quantity("law", label="lift law")
     source: str = quantity("source", label="source of the law's formulas")
-    coefficients: dict = quantity("coefficients", label="the law's coefficients in its source's units")
+    coefficients: dict[str, Any] = quantity("coefficients", label="the law's coefficients in its source's units")
     extremes: Extremes = field(repr=False)
     max_velocity: float = quantity("max_velocity_m_s", "m/s", "largest tappet velocity")
     max_acceleration: float = quantity("max_acceleration_m_s2", "m/s2", "largest tappet acceleration")
@@ -237,7 +241,7 @@ class FlowResult:
     charge_velocity: float = quantity("mean_charge_velocity_m_s", "m/s", "v_vp, mean charge velocity (eq. 4.3)")
     fullness: float = quantity("fullness", label="fullness of the valve lift diagram (Shang Hanji (1988), eq. 2.3)")
     valve_lift: float = quantity("valve_lift_mm", "mm", "largest valve lift")
-    stroke: tuple = quantity("stroke_crank_deg", "crank deg", "the valve's own stroke, from and to")
+    stroke: tuple[float, float] = quantity("stroke_crank_deg", "crank deg", "the valve's own stroke, from and to")
 
 
 @dataclass(frozen=True)
@@ -288,7 +292,7 @@ class ProfileResult:
     rho_min_angle: float = quantity("rho_min_cam_deg", "cam deg", "where the radius is smallest")
     rho_max_angle: float = quantity("rho_max_cam_deg", "cam deg", "where the radius is largest")
     straight_flanks: bool = quantity("straight_flanks", label="the profile has straight flanks")
-    contact: object = quantity("contact", flatten=True)
+    contact: Union[FlatContact, RollerContact] = quantity("contact", flatten=True)
     undercut: bool = quantity("undercut", label="the profile is undercut (cannot be made)")
 
 
@@ -310,23 +314,23 @@ class ClearanceResult:
         return float(self.gap[i]), float(self.crank[i])
 
 
-def clearance_check(kind, gap, angle, window=None):
+def clearance_check(kind, gap, angle, window=None) -> Check:
     """The check of a valve-to-piston gap [m] at a crank angle [rad] against :data:`PISTON_CLEARANCE_MIN`, over the
     open event or, with ``window`` (crank rad from the gas-exchange TDC), over the valve overlap.  A gap below the
     minimum is a failure: the valve may touch the piston at over-speed, with lash or with valve float."""
     where = "" if window is None else (f" over the overlap from {math.degrees(window[0]):.4g} to "
                                        f"{math.degrees(window[1]):.4g} crank deg")
-    return check("valve-piston clearance" + ("" if window is None else " over the overlap"), gap,
+    return check("piston.clearance" if window is None else "piston.clearance_overlap", gap,
                  low=PISTON_CLEARANCE_MIN[kind], unit="mm", source=PISTON_CLEARANCE_SOURCE, severity="failure",
                  note=f"smallest at {math.degrees(angle):.4g} crank deg from the gas-exchange TDC{where}")
 
 
-def wrap_crank(a):
+def wrap_crank(a) -> np.ndarray:
     """Crank angle wrapped into (-360, 360] deg (in rad)."""
     return np.where(a > 2 * np.pi, a - 4 * np.pi, np.where(a <= -2 * np.pi, a + 4 * np.pi, a))
 
 
-def law_stage(valve, engine, law=None):
+def law_stage(valve, engine, law=None) -> CamResult:
     """Build (or take) the lift law of a valve and find what the design needs of it.
 
     Parameters
@@ -380,7 +384,7 @@ def law_stage(valve, engine, law=None):
                      step_records(law, omega))
 
 
-def flow_stage(cam, valve, engine):
+def flow_stage(cam, valve, engine) -> FlowResult:
     """Flow sections, conditional velocities, time-area over the valve's stroke and opening, fullness.
 
     References
@@ -388,7 +392,7 @@ def flow_stage(cam, valve, engine):
     Valve-train practical works (n.d.), work 1, eqs. (1.1)-(1.4); work 4, eqs. (4.1), (4.3); Shang Hanji (1988), eqs. (2.1)-(2.3).
     """
     law, omega = cam.law, cam.cam_speed
-    c_p = flow.mean_piston_speed(engine.stroke, engine.rated_speed * 30.0 / np.pi)
+    c_p = flow.mean_piston_speed(engine.stroke, to_display(engine.rated_speed, "rpm"))
     swept = float(flow.swept_volume(engine.bore, engine.stroke))
     lift = law.lift_max * cam.rocker_ratio
     d_g, seat = valve.throat_diameter, valve.seat_angle
@@ -415,7 +419,7 @@ def _table_grid(law, step):
     return np.unique(np.concatenate([[law.start], k, [law.end]]))
 
 
-def profile_stage(cam, valve, output):
+def profile_stage(cam, valve, output) -> ProfileResult:
     """The lift table, the contour over a revolution, the profile's curvature extremes, contact and undercut.
 
     ``output`` is the SI view of ``[output]`` (table step, contour points).
@@ -475,7 +479,7 @@ def profile_stage(cam, valve, output):
                          None if straight else x_max, straight, contact, follower.undercut(rho_min))
 
 
-def clearance_stage(cam, valve, engine):
+def clearance_stage(cam, valve, engine) -> Optional[ClearanceResult]:
     """The smallest valve-to-piston gap over the open event, or None without ``piston_gap_tdc_mm``.
 
     Raises
@@ -503,7 +507,7 @@ def clearance_stage(cam, valve, engine):
     return ClearanceResult(float(gap[i]), angle, wrap_crank(crank), gap)
 
 
-def overlap_clearance_checks(valves):
+def overlap_clearance_checks(valves) -> list[Check]:
     """The valve-to-piston gap of each valve over the overlap, from the first intake opening to the last exhaust
     closing (crank angles from the gas-exchange TDC), where the piston is nearest the open valves.
 
@@ -518,11 +522,11 @@ def overlap_clearance_checks(valves):
     for name, v in valves.items():
         found = None if v.clearance is None else v.clearance.within(*window)
         if found is not None:
-            out.append(clearance_check(v.kind, *found, window).named(name))
+            out.append(clearance_check(v.kind, *found, window).of_valve(name))
     return out
 
 
-def valve_checks(cam, flow_result, profile, valve, engine, timing):
+def valve_checks(cam, flow_result, profile, valve, engine, timing) -> list[Check]:
     """The recommended-range checks of the law, the flow, the timing and the profile (every check, passed or not).
 
     ``timing`` is the opening advance and closing lag [crank rad] of the main lift (None where not defined).  The
@@ -536,52 +540,52 @@ def valve_checks(cam, flow_result, profile, valve, engine, timing):
                            charge_velocity=flow_result.charge_velocity, engine_type=engine.type,
                            chamber=engine.chamber, count=valve.count)
     drive = layout(valve)
-    out.append(layout_check("max tappet acceleration", cam.max_acceleration, drive, unit="m/s2"))
-    out.append(layout_check("min tappet acceleration", cam.min_acceleration, drive, unit="m/s2"))
+    out.append(layout_check("tappet_acceleration.max", cam.max_acceleration, drive, unit="m/s2"))
+    out.append(layout_check("tappet_acceleration.min", cam.min_acceleration, drive, unit="m/s2"))
     if valve.kind in TIMING_RANGES:
-        for label, angle, (lo, hi) in zip(("opening advance", "closing lag"), timing, TIMING_RANGES[valve.kind],
+        for label, angle, (lo, hi) in zip(("timing.opening_advance", "timing.closing_lag"), timing, TIMING_RANGES[valve.kind],
                                           strict=True):
             if angle is not None:
                 out.append(check(label, angle, lo, hi, source="Valve-train practical works (n.d.), work 2", unit="crank deg"))
     if law.clearance_on_flank:
-        out.append(check("clearance taken up without a ramp: valve seating velocity", cam.seating_velocity,
+        out.append(check("seating_velocity.without_ramp", cam.seating_velocity,
                          high=SEATING_VELOCITY_MAX, source=SEATING_VELOCITY_SOURCE, unit="m/s",
                          note=f"no ramp takes up clearance_mm = {valve.clearance / MM:g}: the flank does"))
-    out.append(check("seat angle", valve.seat_angle, *SEAT_ANGLE_USUAL[valve.kind],
+    out.append(check("valve.seat_angle", valve.seat_angle, *SEAT_ANGLE_USUAL[valve.kind],
                      source="Valve-train practical works (n.d.), work 1 (usually 30 deg inlet, 45 deg exhaust)", unit="deg", severity="info"))
-    out.append(check("clearance h0", valve.clearance, *CLEARANCE_RANGES[valve.kind], source="Valve-train practical works (n.d.), work 2",
+    out.append(check("valve.clearance", valve.clearance, *CLEARANCE_RANGES[valve.kind], source="Valve-train practical works (n.d.), work 2",
                      unit="mm"))
-    ratio = layout_check("rocker ratio", i_k, drive)
+    ratio = layout_check("drive.rocker_ratio", i_k, drive)
     if ratio is not None:
         out.append(ratio)
-    out.append(check("base radius r0 / valve lift", cam.base_radius / flow_result.valve_lift, *BASE_RADIUS_TO_LIFT_RANGE,
+    out.append(check("cam.base_radius_to_lift", cam.base_radius / flow_result.valve_lift, *BASE_RADIUS_TO_LIFT_RANGE,
                      source="Valve-train practical works (n.d.), work 2 (1.5-2.0; supercharged 3.0-4.0)"))
     follower = cam.follower_model
     if profile.undercut:
-        out.append(check(follower.undercut_quantity, profile.rho_min, low=0.0, strict_low=True,
+        out.append(check(follower.undercut_code, profile.rho_min, low=0.0, strict_low=True,
                          source=follower.undercut_source, unit="mm", severity="failure"))
     if follower.rolling:
-        out.append(check("max pressure angle", profile.contact.max_pressure_angle, high=PRESSURE_ANGLE_MAX,
+        out.append(check("profile.pressure_angle.max", profile.contact.max_pressure_angle, high=PRESSURE_ANGLE_MAX,
                          source="UkrSURT Proceedings (2019)", unit="deg"))
     if not profile.undercut:
-        out.append(check("rho_min (cam profile)", profile.rho_min, low=RHO_MIN, source="Shang Hanji (1988), section 2.1",
+        out.append(check("profile.rho_min", profile.rho_min, low=RHO_MIN, source="Shang Hanji (1988), section 2.1",
                          unit="mm"))
     return for_engine_class(out, engine)
 
 
-def mass_checks(valve, mass, throat_area):
+def mass_checks(valve, mass, throat_area) -> list[Check]:
     """The specific mass of the drive m' = m_v / f_g [kg/m2] against the band of the valve's layout (Valve-train practical works (n.d.), work 5),
     an ``info`` check: only where the masses or m' are given (the default m' is this project's, not the source's,
     whose bands are 1.6-3.7 times the masses of the example's parts)."""
     d = valve.drive
     if d.masses is None and d.specific_mass_kg_m2 is None:
         return []
-    c = layout_check("specific mass of the drive m' = m_v / f_g", mass / throat_area, layout(valve), unit="kg/m2",
+    c = layout_check("drive.specific_mass", mass / throat_area, layout(valve), unit="kg/m2",
                      severity="info")
     return [] if c is None else [c]
 
 
-@dataclass
+@dataclass(frozen=True, repr=False)
 class ValveDesign:
     """Everything computed for one valve: the stage results (SI), the law's own records and every check."""
 
@@ -591,13 +595,13 @@ class ValveDesign:
     cam: CamResult
     flow: FlowResult
     profile: ProfileResult
-    clearance: ClearanceResult
-    records: dict                  # the law's own results (seed formulas, a measured table's analysis)
-    drive: object                  # DriveResult: masses, spring curves, strength
-    checks: list = field(default_factory=list)   # every valvetrain.checks.Check of the valve, passed or not
-    dynamics: object = None        # DynamicsResult when the valve has a [dynamics] section
-    grinding: object = None        # GrindingResult when the valve has a [grinding] section
-    hydraulic: object = None       # HydraulicResult when the valve has a [hydraulic] section
+    clearance: Optional[ClearanceResult]
+    records: Mapping[str, Any]     # the law's own results (seed formulas, a measured table's analysis), as shown
+    drive: DriveResult             # masses, spring curves, strength
+    checks: tuple[Check, ...] = ()                  # every check of the valve, passed or not
+    dynamics: Optional[DynamicsResult] = None       # with a [dynamics] section
+    grinding: Optional[GrindingResult] = None       # with a [grinding] section
+    hydraulic: Optional[HydraulicResult] = None     # with a [hydraulic] section
 
     @property
     def warnings(self):
@@ -622,9 +626,10 @@ class ValveDesign:
     contour = property(lambda self: self.profile.contour)
     contour_angle = property(lambda self: self.profile.contour_angle)
 
-    @property
-    def summary(self):
-        """The valve's record in results.json (engineering units, named in the keys)."""
+    @cached_property
+    def summary(self) -> dict[str, Any]:
+        """The valve's record in results.json (engineering units, named in the keys), made once: read it, don't
+        change it."""
         out = {"kind": self.kind, "count": self.count, "rocker_ratio": self.rocker_ratio,
                "cam": {**record(self.cam), **record(self.profile), **self.records}, "flow": record(self.flow)}
         if self.clearance is not None:
@@ -645,7 +650,7 @@ class ValveDesign:
                 "open failures {failure}, warnings {warning}, info {info} of {checks} checks)".format(**tally(self.checks)))
 
 
-def design_valve(name, valve, engine, gas, output, law=None, progress=None, cylinder=None):
+def design_valve(name, valve, engine, gas, output, law=None, progress=None, cylinder=None) -> ValveDesign:
     """All stages of one valve and its drive (masses, springs, strength).
 
     Parameters
@@ -705,11 +710,11 @@ def design_valve(name, valve, engine, gas, output, law=None, progress=None, cyli
             raise SpecError([f"{at}.grinding.{exc}"]) from None
         found += grinding_found
     design = ValveDesign(name, valve.kind, valve.count, cam, flow_result, profile, clearance, records, drive,
-                         [c.named(name) for c in found], dynamics, grinding)
+                         tuple(c.of_valve(name) for c in found), dynamics, grinding)
     return with_hydraulic(design, valve, engine, gas, cylinder)
 
 
-def with_hydraulic(design, valve, engine, gas, cylinder=None):
+def with_hydraulic(design, valve, engine, gas, cylinder=None) -> ValveDesign:
     """The design with the hydraulic stage of the valve's ``[hydraulic]`` section (as it is without one).
 
     Parameters
@@ -730,7 +735,7 @@ def with_hydraulic(design, valve, engine, gas, cylinder=None):
         hydraulic, found = hydraulic_stage(valve, design.cam.law, engine, gas, design.name, design.cam.nose, cylinder)
     except ValueError as exc:
         raise SpecError([f"valves.{design.name}.hydraulic.{exc}"]) from None
-    return replace(design, checks=design.checks + [c.named(design.name) for c in found], hydraulic=hydraulic)
+    return replace(design, checks=design.checks + tuple(c.of_valve(design.name) for c in found), hydraulic=hydraulic)
 
 
 __all__ = ["CamResult", "ClearanceResult", "FlowResult", "LiftTable", "ProfileResult", "StepRecord", "ValveDesign",

@@ -101,14 +101,15 @@ class Follower:
         stretches the roller can follow (and a side force on its carrier); False for a sliding face.
     radius : float
         The follower's own radius of curvature at the contact [m] (inf for a flat face).
-    undercut_quantity, undercut_source : str
-        The name and the source of the undercut check of the profile (a failure where :meth:`undercut`).
+    undercut_code, undercut_source : str
+        The code (:mod:`valvetrain.locale`) and the source of the undercut check of the profile (a failure where
+        :meth:`undercut`).
     """
 
     name: ClassVar[str]
     rolling: ClassVar[bool] = False
     radius: float = np.inf
-    undercut_quantity: ClassVar[str]
+    undercut_code: ClassVar[str]
     undercut_source: ClassVar[str]
 
     @classmethod

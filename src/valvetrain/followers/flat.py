@@ -17,7 +17,7 @@ class FlatFollower(Follower):
     """A flat face square to its line of action, touching the cam h' off the axis (SI)."""
 
     name = "flat"
-    undercut_quantity = "cam profile undercut: rho_min (flat follower)"
+    undercut_code = "profile.undercut_flat"
     undercut_source = "Shang Hanji (1988), eq. (2.6); Valve-train practical works (n.d.), corrections note 26"
 
     def contour(self, theta, heel, h, dh):

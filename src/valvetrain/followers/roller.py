@@ -23,7 +23,7 @@ class RollerFollower(Follower):
     radius: float
     name = "roller"
     rolling = True
-    undercut_quantity = "cam profile undercut: pitch radius of curvature - roller radius"
+    undercut_code = "profile.undercut_roller"
     undercut_source = "Shang Hanji (1988), eq. (2.7)"
 
     @classmethod

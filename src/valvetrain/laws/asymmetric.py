@@ -81,7 +81,7 @@ class AsymmetricLaw(LiftLaw):
 
     def checks(self):
         """Both flanks' checks, and the acceleration jump at the nose (a jerk impulse on the train)."""
-        jump = [check("acceleration jump at the nose", self.nose_acceleration_jump, 0.0, 0.0,
+        jump = [check("law.asymmetric.nose_jump", self.nose_acceleration_jump, 0.0, 0.0,
                       source="continuous acceleration of a shock-free cam (Valve-train practical works (n.d.), work 2)",
                       unit="mm/rad2")] if self.continuity < 2 else []
         return self.opening.checks() + self.closing.checks() + jump

@@ -17,6 +17,7 @@ derivatives at a constant camshaft speed omega [rad/s] are ``v = omega h'``,
 
 from abc import ABC, abstractmethod
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 from numba import njit
@@ -99,7 +100,7 @@ class LiftLaw(ABC):
     @classmethod
     def from_mm_deg(cls, **keywords):
         """The law from keywords in the units of a specification file: a keyword ending in a unit (``lift_mm``,
-        ``phi1_deg``, ``ramp_velocity_mm_per_deg``; :data:`valvetrain.units.UNIT_SUFFIXES`) is the constructor's SI
+        ``phi1_deg``, ``ramp_velocity_mm_per_deg``; :data:`valvetrain.units.SUFFIXES`) is the constructor's SI
         parameter without the unit (``lift`` [m], ``phi1`` [rad], ``ramp_velocity`` [m/rad]); the others pass as
         they are.  The angles are the law's own: camshaft degrees.
 
@@ -294,6 +295,8 @@ class LiftLaw(ABC):
 
         Notes
         -----
+        The search does not depend on omega: it runs once per law (:meth:`_extreme_points`), and each call scales
+        its dh/dtheta and d2h/dtheta2 by omega and omega^2.
         A velocity extreme lies where d2h/dtheta2 = 0 or at a segment end, an acceleration
         extreme where d3h/dtheta3 = 0 or at a segment end (a kink, or the jump of a law with
         continuity 1, where either side may hold the extreme).  Every segment is sampled at
@@ -304,6 +307,13 @@ class LiftLaw(ABC):
         breakpoints, the samples and the roots.  The largest velocity is searched on the opening
         flank, up to the nose (theta = 0, a breakpoint of every law).
         """
+        (xv, v), (xa, amax), (xn, amin) = self._extreme_points
+        return Extremes(omega * v, omega**2 * amax, omega**2 * amin, xv, xa, xn)
+
+    @cached_property
+    def _extreme_points(self):
+        """``((theta, dh/dtheta), (theta, d2h/dtheta2), (theta, d2h/dtheta2))`` at the largest velocity, the largest
+        and the smallest acceleration [rad, m/rad, m/rad^2] (:meth:`extremes`)."""
         edges = self.breakpoints
         t = np.linspace(0.0, 1.0, EXTREME_SAMPLES)
         t[[0, -1]] = EDGE_INSET, 1.0 - EDGE_INSET
@@ -326,8 +336,7 @@ class LiftLaw(ABC):
             ys = np.concatenate([at_edges[row][ends], d[row][m].ravel(), at_roots[row][which == n]])
             i = int(np.argmax(sign * ys))
             found.append((float(xs[i]), float(ys[i])))
-        (xv, v), (xa, amax), (xn, amin) = found
-        return Extremes(omega * v, omega**2 * amax, omega**2 * amin, xv, xa, xn)
+        return tuple(found)
 
 
 EXTREME_SAMPLES = 65
@@ -387,8 +396,10 @@ class SymmetricLaw(LiftLaw):
         """Rise and its derivatives with respect to phi, shape (4, n) (for :meth:`_mirrored`)."""
         raise NotImplementedError
 
-    @property
+    @cached_property
     def segments(self):
+        """The opening flank's segments and their mirror images, made once per law (a law is not changed once
+        made)."""
         T = self.half_angle
         rise = self._rise_segments()
         opening = [Segment(f"{n} opening", a - T, b - T) for n, a, b in rise]

@@ -134,7 +134,7 @@ class DynamicLaw(RampedLaw, SymmetricLaw):
 
     def checks(self):
         """The cam lift must rise monotonically to the nose (a dip means the drive is too compliant)."""
-        return [check("dynamic cam: fall of the lift before the nose", self.fall_before_nose(), high=0.0,
+        return [check("law.dynamic.fall_before_nose", self.fall_before_nose(), high=0.0,
                       source="Rothbart (2004), section 13.7: the cam lift rises to the nose", unit="mm")]
 
     def coefficients(self):

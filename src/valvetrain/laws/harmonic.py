@@ -169,7 +169,7 @@ class HarmonicLaw(LiftLaw):
 
     def train_checks(self, natural_frequency, cam_speed):
         """The harmonic order against the train: N < alpha_W omega_n / (pi omega) (:func:`harmonic_limit`)."""
-        return [check("harmonic order N of the cam", self.harmonics,
+        return [check("law.harmonic.order", self.harmonics,
                       high=harmonic_limit(self.alpha, natural_frequency, cam_speed),
                       source="Shang Hanji (1988), section 4.2 (reconstructed): N < alpha_W omega_n/(pi omega)")]
 

@@ -154,6 +154,10 @@ class KurzLaw(RampedLaw, SymmetricLaw):
         self.phi0 = float(self.ramp.length)
         self.c = kurz_coefficients(self._lift, self.ramp_velocity, self.phi1, self.phi2, self.phi3, self.shape_factor)
         self._edges = np.cumsum([0.0, self.phi0, self.phi1, self.phi2, self.phi3])
+        c = self.c
+        self._kernel_arguments = (self.half_angle, self._edges, self.ramp.parameters,
+                                  (self.clearance, c.c11, c.c12, c.c21, c.c22, c.c31, c.c32, c.c33, self.phi1,
+                                   self.phi2, self.phi3))
 
     @property
     def main_half_angle(self):
@@ -169,9 +173,7 @@ class KurzLaw(RampedLaw, SymmetricLaw):
         return [("ramp", e[0], e[1]), ("Phi1", e[1], e[2]), ("Phi2", e[2], e[3]), ("Phi3", e[3], e[4])]
 
     def _mirrored(self, theta, out):
-        c = self.c
-        _kurz_kernel(theta, out, self.half_angle, self._edges, self.ramp.parameters,
-                     (self.clearance, c.c11, c.c12, c.c21, c.c22, c.c31, c.c32, c.c33, self.phi1, self.phi2, self.phi3))
+        _kurz_kernel(theta, out, *self._kernel_arguments)
 
     def coefficients(self):
         """Coefficients and auxiliaries in the manual's units (mm, rad), keys as in Valve-train practical works (n.d.)."""
@@ -228,11 +230,11 @@ class KurzLaw(RampedLaw, SymmetricLaw):
     def checks(self):
         """Recommended ranges of (2.1), (2.3) and (2.4)."""
         return [
-            check("ramp end velocity", self.ramp_velocity, *(w * 1e-3 / np.radians(1.0)
+            check("ramp.end_velocity", self.ramp_velocity, *(w * 1e-3 / np.radians(1.0)
                                                              for w in RAMP_VELOCITY_RANGE_MM_PER_DEG),
                   source="Valve-train practical works (n.d.), work 2, eq. (2.1)", unit="mm/deg"),
-            check("Phi2/Phi3", self.phi2 / self.phi3, *PHI2_TO_PHI3_RANGE, source="Valve-train practical works (n.d.), work 2, eq. (2.3)"),
-            check("(Phi2+Phi3)/Phi1", (self.phi2 + self.phi3) / self.phi1, *NEGATIVE_TO_POSITIVE_RANGE,
+            check("law.kurz.phi2_to_phi3", self.phi2 / self.phi3, *PHI2_TO_PHI3_RANGE, source="Valve-train practical works (n.d.), work 2, eq. (2.3)"),
+            check("law.kurz.negative_to_positive", (self.phi2 + self.phi3) / self.phi1, *NEGATIVE_TO_POSITIVE_RANGE,
                   source="Valve-train practical works (n.d.), work 2, eq. (2.4)"),
         ]
 

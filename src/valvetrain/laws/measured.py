@@ -674,7 +674,7 @@ class TableLaw(RampedLaw):
         the lobe (a kink at the valve's foot), which matters only where that fit is the one used."""
         if not (self.accuracy_stated or self.fit == "harmonic"):
             return []
-        return [check("measured table: rms residual of the N-harmonic fit", self.harmonic_rms, high=self.accuracy,
+        return [check("law.measured.residual", self.harmonic_rms, high=self.accuracy,
                       unit="mm", source=f"Shang Hanji (1988), section 5.2: accuracy_mm, met by N <= {self.harmonics} harmonics "
                                         "(N by the residual against the accuracy, 0.002-0.01 mm)")]
 

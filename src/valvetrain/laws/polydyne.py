@@ -261,7 +261,7 @@ class PolydyneLaw(PolynomialLaw):
 
     def checks(self):
         """The recommended range of p (Valve-train practical works (n.d.), work 3)."""
-        return [check("polydyne exponent p", self._k[1], *EXPONENT_P_RANGE, source="Valve-train practical works (n.d.), work 3")]
+        return [check("law.polydyne.exponent_p", self._k[1], *EXPONENT_P_RANGE, source="Valve-train practical works (n.d.), work 3")]
 
 
 @njit(cache=True)

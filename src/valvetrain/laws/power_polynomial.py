@@ -24,6 +24,8 @@ and is infinite at a junction where an exponent below 1 meets it (p and r of the
 The ramp starts with the finite acceleration A_0 (three coefficients, three conditions).
 """
 
+from functools import cached_property
+
 import numpy as np
 
 from ..checks import check
@@ -60,6 +62,11 @@ class _Piece:
 
     def totals(self):
         """F(1), G(1)."""
+        return self._totals
+
+    @cached_property
+    def _totals(self):
+        """F(1), G(1), evaluated once per piece (a law's construction asks for them up to three times)."""
         _, F, G, _ = self.values(np.array([1.0]))
         return float(F[0]), float(G[0])
 
@@ -362,6 +369,7 @@ class PowerPolynomialLaw(SymmetricLaw):
         if self.reconstruction != "R2":
             return []
         src = "UkrSURT Proceedings (2019): exponent ranges from the authors' search studies"
-        return [check(f"power-polynomial exponent {k}", self.exponents[k], lo, hi, source=src, severity="info")
+        return [check("law.power_polynomial.exponent", self.exponents[k], lo, hi, source=src, severity="info",
+                      params={"exponent": k})
                 for k, (lo, hi) in EXPONENT_RANGES.items()]
 

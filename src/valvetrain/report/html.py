@@ -14,7 +14,7 @@ from ..checks import describe_range, tally
 from ..design.dynamics import SOURCES as DYNAMICS_SOURCES
 from ..design.grinding import SOURCES as GRINDING_SOURCES
 from ..design.hydraulic_actuation import SOURCES as HYDRAULIC_SOURCES
-from ..design.results import record
+from ..design.results import record, shown, shown_value
 from ..tables import lift_table_columns
 from ..bibliography import WORKS, cited_in
 from ..units import to_display
@@ -30,14 +30,13 @@ TABLE_COLUMNS = ["cam_deg", "crank_deg", "segment", "tappet_lift_mm", "tappet_ve
 REPORT_STEP_DEG = 5.0
 """Step of the abridged lift table in the report [cam deg]."""
 
-CAM_KEYS = ["phi_p0_deg", "ramp_deg", "ramp_height_mm", "tappet_lift_mm", "event_cam_deg", "nose_crank_deg",
-            "camshaft_speed_rad_s", "max_velocity_m_s", "max_acceleration_m_s2", "min_acceleration_m_s2"]
-GEOMETRY_KEYS = ["follower", "base_radius_mm", "heel_radius_mm", "rho_min_mm", "rho_min_cam_deg", "rho_max_mm",
-                 "rho_max_cam_deg", "max_contact_offset_mm", "roller_radius_mm", "max_pressure_angle_deg",
-                 "min_concave_radius_mm", "undercut"]
-FLOW_KEYS = ["throat_area_mm2", "valve_lift_mm", "max_curtain_area_mm2", "V1_m_s", "V2_m_s"]
-TIME_AREA_KEYS = ["stroke_crank_deg", "time_area_mm2_s", "time_area_open_mm2_s", "V3_m_s",
-                  "mean_charge_velocity_m_s", "fullness"]
+CAM_FIELDS = ("main_half_angle", "ramp_angle", "ramp_height", "tappet_lift", "event", "nose", "cam_speed",
+              "max_velocity", "max_acceleration", "min_acceleration")
+"""The law stage's figures in the report's law table (:class:`valvetrain.design.valve.CamResult`)."""
+
+FLOW_FIELDS = ("throat_area", "valve_lift", "max_curtain_area", "v1", "v2")
+TIME_AREA_FIELDS = ("stroke", "time_area", "time_area_open", "v3", "charge_velocity", "fullness")
+"""The flow stage's figures in the report's flow and time-area tables (:class:`valvetrain.design.valve.FlowResult`)."""
 
 
 def fmt(x, lang="en"):
@@ -103,9 +102,9 @@ def not_checked(note, lang):
     return TEXT[lang]["not_checked_note"].format(check=label(m[1], lang), parts=parts)
 
 
-def _quantity(quantity, lang, parts):
-    """A check quantity in ``lang``, the name of its part (a valve, a port) marked as a name."""
-    text = quantity_text(quantity, lang, parts)
+def _quantity(check, lang, parts):
+    """A check's quantity in ``lang``, the name of its part (a valve, a port) marked as a name."""
+    text = quantity_text(check, lang)
     head, sep, rest = text.partition(": ")
     if sep and head in parts:
         return Markup('<span class="name">{}</span>: {}').format(head, rest)
@@ -131,10 +130,17 @@ def symbol_legend(lang):
 INPUT_SYMBOLS = ("i", "dg", "phi_seat", "hv", "h0", "ik", "r0", "w1", "Phi123", "Kz")
 """Symbols of the valve's input table."""
 
-WARNING_SYMBOLS = {"V1": r"V' ", "V2": r"V'' ", "V3": r"V''' ", "vvp": r"v_vp", "aT": r"tappet acceleration",
-                   "dg": r"throat diameter", "hv": r"valve lift", "h0": r"h0", "ik": r"rocker ratio", "r0": r"r0",
-                   "rho": r"rho_min", "Kz": r"K_z", "Phi123": r"Phi", "w1": r"ramp end velocity", "lambda": r"lambda"}
-"""Symbols that a check quantity may use (a pattern of the English quantity)."""
+WARNING_SYMBOLS = {
+    "V1": ("flow.throat_velocity",), "V2": ("flow.curtain_velocity",), "V3": ("flow.time_area_velocity",),
+    "vvp": ("flow.charge_velocity",), "aT": ("tappet_acceleration.max", "tappet_acceleration.min"),
+    "dg": ("flow.throat_to_bore", "flow.equivalent_throat_to_bore", "flow.lift_to_throat"),
+    "hv": ("flow.lift_to_throat", "cam.base_radius_to_lift", "hydraulic.max_lift", "hydraulic.residual_lift"),
+    "h0": ("valve.clearance",), "ik": ("drive.rocker_ratio",), "r0": ("cam.base_radius_to_lift",),
+    "rho": ("profile.undercut_flat", "profile.rho_min"), "Kz": ("spring.reserve",),
+    "Phi123": ("law.kurz.phi2_to_phi3", "law.kurz.negative_to_positive"), "w1": ("ramp.end_velocity",),
+    "lambda": ("engine.rod_ratio", "crank.rod_ratio"),
+}
+"""Symbols of the legend that the checks of these codes use."""
 
 
 def _coefficient_symbols(coefficients):
@@ -163,6 +169,22 @@ def _abridged_table(valve, lang):
                                                                         REPORT_STEP_DEG)
     keep[[0, -1]] = True
     return [[fmt(cols[c][i], lang) for c in TABLE_COLUMNS] for i in np.flatnonzero(keep)]
+
+
+def _geometry(v):
+    """The rows of the report's geometry table: the follower and the radii of the cam, the curvature, the contact
+    (flat or roller) and the undercut, those that exist."""
+    rows = (shown(v.cam, "follower", "base_radius", "heel_radius")
+            + shown(v.profile, "rho_min", "rho_min_angle", "rho_max", "rho_max_angle") + shown(v.profile.contact)
+            + shown(v.profile, "undercut"))
+    return [(k, val) for k, val in rows if val is not None]
+
+
+def _seed(v):
+    """The appendix formulas of a Kurz cam beside the profile's exact figures: ``(key, formula, exact)``."""
+    exact = dict(shown(v.cam, "max_velocity", "max_acceleration", "min_acceleration")
+                 + shown(v.profile, "rho_min", "rho_max"))
+    return [(k, val, exact[k]) for k, val in v.records.get("seed_formulas", {}).items()]
 
 
 def _measured(rec, lang):
@@ -209,8 +231,8 @@ def _grinding(name, v):
     if v.grinding is None:
         return None
     rec = record(v.grinding)
-    files = [] if v.summary["cam"]["undercut"] else ([rec["wear_table"]] if "wear_table" in rec else [])
-    if v.grinding.master_makeable and not v.summary["cam"]["undercut"]:
+    files = [] if v.profile.undercut else ([rec["wear_table"]] if "wear_table" in rec else [])
+    if v.grinding.master_makeable and not v.profile.undercut:
         files += [f"contour/{name}_master.csv", f"contour/{name}_master_cartesian.csv", f"contour/{name}_master.dxf"]
     return {"rows": [(k, val) for k, val in rec.items() if k != "wear_table"], "files": files}
 
@@ -234,18 +256,18 @@ def _summary(results, t):
     the limits not met (ranked) and the failures the specification accepts."""
     rows = []
     for name, v in results.valves.items():
-        s = v.summary
-        spring = s["spring"]
-        text = t["spring_text"].format(count=spring["count"], wire_mm=spring["wire_mm"],
-                                       mean_diameter_mm=spring["mean_diameter_mm"],
-                                       active_coils=spring["active_coils"], material=spring["material"])
-        binding = spring["binding_check"]
+        spring = v.drive.spring.design
+        wire, mean, coils = (shown_value(spring, k) for k in ("wire_diameter", "mean_diameter", "active_coils"))
+        text = t["spring_text"].format(count=v.drive.spring.count, wire_mm=wire, mean_diameter_mm=mean,
+                                       active_coils=coils, material=spring.material)
+        binding = spring.binding_check
         lang = t["lang"]
-        rows.append({"name": name, "kind": t[v.kind], "law": value_text(v.law.name, lang), "lift": s["flow"]["valve_lift_mm"],
-                     "opens": s["cam"]["valve_opens_crank_deg"], "closes": s["cam"]["valve_closes_crank_deg"],
-                     "duration": s["cam"]["valve_closes_crank_deg"] - s["cam"]["valve_opens_crank_deg"],
-                     "time_area": s["flow"]["time_area_mm2_s"], "fullness": s["flow"]["fullness"], "spring": text,
-                     "binding": f"{label('spring.' + binding, lang)} ({percent(spring['margins'][binding], lang)})",
+        opens, closes = shown_value(v.cam, "valve_opens"), shown_value(v.cam, "valve_closes")
+        rows.append({"name": name, "kind": t[v.kind], "law": value_text(v.law.name, lang),
+                     "lift": shown_value(v.flow, "valve_lift"), "opens": opens, "closes": closes,
+                     "duration": closes - opens, "time_area": shown_value(v.flow, "time_area"),
+                     "fullness": v.flow.fullness, "spring": text,
+                     "binding": f"{label('spring.' + binding, lang)} ({percent(spring.margins[binding], lang)})",
                      **{key: sum(c.severity == level for c in v.warnings) for key, level in
                         (("failures", "failure"), ("warnings", "warning"), ("info", "info"))},
                      "accepted": len(v.accepted)})
@@ -260,13 +282,13 @@ def _conclusions(results, t):
     met with the least margin (what binds the design)."""
     lang, out = t["lang"], []
     for name, v in results.valves.items():
-        spring = v.summary["spring"]
-        binding = spring["binding_check"]
+        spring = v.drive.spring.design
+        binding = spring.binding_check
         met = sorted((c for c in v.checks if c.passed and c.severity == "failure" and c.evaluated),
                      key=lambda c: c.margin)[:3]
         out.append({"name": name, "counts": verdict(tally(v.checks), lang)[1],
-                    "binding": f"{label('spring.' + binding, lang)} ({percent(spring['margins'][binding], lang)})",
-                    "closest": [(c.quantity, percent(c.margin, lang)) for c in met]})
+                    "binding": f"{label('spring.' + binding, lang)} ({percent(spring.margins[binding], lang)})",
+                    "closest": [(c, percent(c.margin, lang)) for c in met]})
     return out
 
 
@@ -321,52 +343,56 @@ def render_report(results, plots, lang="en", folder=None):
     env.filters["image"] = image
     env.globals["figure"] = lambda name, alt: _figure(image, name, alt, TEXT[lang])
     spec = results.spec.model_dump()
-    parts = list(results.valves) + (list(results.two_stroke.summary["ports"]) if results.two_stroke is not None else [])
-    env.filters["quantity"] = lambda q: _quantity(q, lang, parts)
+    parts = list(results.valves) + (list(results.two_stroke.figures.ports) if results.two_stroke is not None else [])
+    env.filters["quantity"] = lambda c: _quantity(c, lang, parts)
     env.filters["diagnosis"] = lambda d: diagnosis_text(d, lang)
     valves = []
     for name, v in results.valves.items():
-        s = v.summary
+        spring = v.drive.spring
+        coefficients = shown_value(v.cam, "coefficients")
         valves.append({
-            "name": name, "valve": v, "summary": s, "plots": plots.get(name, {}),
+            "name": name, "valve": v, "plots": plots.get(name, {}),
             "inputs": _flatten(spec["valves"][name]),
-            "worked_flow": flow_lines(spec["valves"][name], s["flow"], record(results.engine), lang),
-            "worked_spring": spring_lines(s["spring"], lang) if "wire_mm" in s["spring"] else [],
-            "flow": [(k, s["flow"][k]) for k in FLOW_KEYS],
-            "time_area": [(k, s["flow"][k]) for k in TIME_AREA_KEYS],
-            "cam": [(k, s["cam"][k]) for k in CAM_KEYS],
-            "geometry": [(k, s["cam"][k]) for k in GEOMETRY_KEYS if s["cam"].get(k) is not None],
-            "coefficients": list(s["cam"]["coefficients"].items()),
-            "coefficient_symbols": _coefficient_symbols(s["cam"]["coefficients"]),
+            "worked_flow": flow_lines(spec["valves"][name], v.flow, results.engine, lang),
+            "worked_spring": spring_lines(spring.design, lang),
+            "flow": shown(v.flow, *FLOW_FIELDS),
+            "time_area": shown(v.flow, *TIME_AREA_FIELDS),
+            "cam": shown(v.cam, *CAM_FIELDS),
+            "steps": [record(st) for st in v.cam.acceleration_steps],
+            "geometry": _geometry(v),
+            "coefficients": list(coefficients.items()),
+            "coefficient_symbols": _coefficient_symbols(coefficients),
             "input_symbols": INPUT_SYMBOLS,
-            "seed": [(k, val, s["cam"][k]) for k, val in s["cam"].get("seed_formulas", {}).items()],
-            "residuals": list(s["cam"].get("residuals", {}).items()),
-            "measured": _measured(s["cam"].get("measured"), lang),
-            "clearance": list(s.get("piston_clearance", {}).items()),
-            "masses": list(s["masses"].items()),
-            "spring": [(k, val) for k, val in s["spring"].items() if not isinstance(val, dict)],
-            "pair": [(t, s["spring"][k]) for k, t in (("outer", "outer_spring"), ("inner", "inner_spring"))
-                     if k in s["spring"]],
-            "strength": s["strength"],
+            "seed": _seed(v),
+            "residuals": list(v.records.get("residuals", {}).items()),
+            "measured": _measured(v.records.get("measured"), lang),
+            "clearance": [] if v.clearance is None else shown(v.clearance),
+            "masses": shown(v.drive.masses),
+            "spring": [(k, val) for k, val in shown(spring) if not isinstance(val, dict)],
+            "pair": [(t, record(pair)) for pair, t in ((spring.outer, "outer_spring"), (spring.inner, "inner_spring"))
+                     if pair is not None],
+            "no_spring_passes": not spring.design.passes_all_checks and spring.candidates_passing == 0,
+            "strength": v.summary["strength"],
             "table": _abridged_table(v, lang),
             "warnings": v.warnings,
-            "dynamics": _dynamics(s.get("dynamics")),
+            "dynamics": None if v.dynamics is None else _dynamics(record(v.dynamics)),
             "grinding": _grinding(name, v),
             "hydraulic": _hydraulic(v),
         })
     first_page = _summary(results, TEXT[lang])
     crank = None
     if results.crank is not None:
-        summary = results.crank.summary
+        figures = results.crank.figures
         crank = {"inputs": _flatten(spec["crank"]), "plots": plots.get("crank", {}),
-                 "summary": [(k, v) for k, v in _flatten(summary) if k != "pressure_source"],
-                 "pressure_source": summary["pressure_source"]}
+                 "summary": [(k, v) for k, v in _flatten(record(figures)) if k != "pressure_source"],
+                 "pressure_source": figures.pressure_source}
     ports = None
     if results.two_stroke is not None:
         ports = {"inputs": [(k, v) for k, v in _flatten(spec["two_stroke"]) if not k.startswith("ports.")],
-                 "plots": plots.get("two_stroke", {}), "ports": results.two_stroke.summary["ports"]}
-    warning_symbols = [key for key, pattern in WARNING_SYMBOLS.items()
-                       if any(re.search(pattern, w.quantity) for w in (*results.warnings, *results.accepted))]
+                 "plots": plots.get("two_stroke", {}),
+                 "ports": {name: record(port) for name, port in results.two_stroke.figures.ports.items()}}
+    warning_symbols = [key for key, codes in WARNING_SYMBOLS.items()
+                       if any(w.code in codes for w in (*results.warnings, *results.accepted))]
     context = dict(
         t=TEXT[lang], warning_symbols=warning_symbols, lang=lang, version=__version__, engine=record(results.engine),
         engine_inputs=_flatten(spec["engine"]), valves=valves, warnings=results.warnings, accepted=results.accepted,

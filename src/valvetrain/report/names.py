@@ -1,13 +1,15 @@
-"""Names a designer reads for the keys, units, values and check texts of a design, in English and Russian.
+"""Names a designer reads for the keys, units, values and texts of a design, in English and Russian.
 
 The records of a design (``results.json``, the specification, the CSV headers) keep their machine keys
 (``tappet_acceleration_m_s2``); the report shows :func:`label` of a key (``"tappet acceleration a_T, m/s²"``,
 ``"ускорение толкателя a_T, м/с²"``).  A key is looked up with the path of the table it belongs to
-(``spring.count`` before ``count``); the unit comes from the key's suffix (``_mm``, ``_m_s2``, ``_MPa``...).
+(``spring.count`` before ``count``); the unit comes from the key's suffix (``_mm``, ``_m_s2``, ``_MPa``...) and its
+symbol from the one unit table :data:`valvetrain.units.UNITS`.  The names of the checks are not here: they are
+renderings of their codes from the catalogue :mod:`valvetrain.locale`.
 
 Texts made with numbers (the notes of the checks, the cylinder-pressure model) are translated by their
-skeleton: the numbers are taken out, the Russian skeleton is looked up and the numbers put back
-(:func:`translate`).  A key, a value or a text without a Russian entry is shown as it is (in English):
+skeleton: the numbers are taken out, the Russian skeleton is looked up in the catalogue (``ru.toml`` ``[texts]``
+of :mod:`valvetrain.locale`) and the numbers put back (:func:`translate`).  A key, a value or a text without a Russian entry is shown as it is (in English):
 ``tests/test_report_i18n.py`` finds them.
 
 Symbols: one symbol for one quantity throughout the report and the plots: ``h`` lift, ``v`` velocity,
@@ -16,33 +18,8 @@ Symbols: one symbol for one quantity throughout the report and the plots: ``h`` 
 
 import re
 
-from ..checks import UNEVALUATED
-
-UNITS = {
-    "": ("", ""), "mm": ("mm", "мм"), "mm2": ("mm²", "мм²"), "mm2 s": ("mm²·s", "мм²·с"), "m": ("m", "м"),
-    "m/s": ("m/s", "м/с"), "m/s2": ("m/s²", "м/с²"), "m/s3": ("m/s³", "м/с³"), "N": ("N", "Н"), "kN": ("kN", "кН"),
-    "cm3": ("cm³", "см³"), "N/mm": ("N/mm", "Н/мм"), "N m": ("N·m", "Н·м"), "kg": ("kg", "кг"),
-    "kg mm2": ("kg·mm²", "кг·мм²"), "kg/m2": ("kg/m²", "кг/м²"), "MPa": ("MPa", "МПа"), "Pa": ("Pa", "Па"),
-    "J": ("J", "Дж"), "deg": ("deg", "град"), "crank deg": ("crank deg", "град ПКВ"),
-    "cam deg": ("cam deg", "град ПРВ"), "rad/s": ("rad/s", "рад/с"), "Hz": ("Hz", "Гц"), "rpm": ("rpm", "об/мин"),
-    "mm/rad2": ("mm/rad²", "мм/рад²"), "mm/rad": ("mm/rad", "мм/рад"), "mm/deg": ("mm/deg", "мм/град"), "mm crank deg": ("mm·crank deg", "мм·град ПКВ"), "%": ("%", "%"),
-    "GPa": ("GPa", "ГПа"), "kg/m3": ("kg/m³", "кг/м³"), "N s/m": ("N·s/m", "Н·с/м"),
-    "cm3/(s MPa)": ("cm³/(s·MPa)", "см³/(с·МПа)"),
-}
-"""Display units of :data:`valvetrain.units.DISPLAY_UNITS` (and a few of the keys) as printed."""
-
-SUFFIXES = [
-    ("_cm3_per_s_MPa", "cm3/(s MPa)"), ("_N_s_per_m", "N s/m"), ("_kg_m3", "kg/m3"), ("_GPa", "GPa"),
-    ("_mm2_s", "mm2 s"), ("_N_per_mm", "N/mm"), ("_mm_per_rad2", "mm/rad2"), ("_mm_rad2", "mm/rad2"),
-    ("_mm_per_rad", "mm/rad"), ("_mm_rad", "mm/rad"), ("_mm_per_deg", "mm/deg"), ("_kg_mm2", "kg mm2"),
-    ("_kg_m2", "kg/m2"), ("_m_s2", "m/s2"), ("_m_s3", "m/s3"), ("_m_s", "m/s"), ("_rad_s", "rad/s"),
-    ("_crank_deg", "crank deg"), ("_cam_deg", "cam deg"), ("_deg", "deg"), ("_mm2", "mm2"), ("_mm", "mm"),
-    ("_MPa", "MPa"), ("_Nm", "N m"), ("_kN", "kN"), ("_N", "N"), ("_kg", "kg"), ("_Hz", "Hz"), ("_rpm", "rpm"),
-    ("_cm3", "cm3"), ("_J", "J"),
-]
-"""Unit suffixes of the keys, longest first."""
-
-LANGS = ("en", "ru")
+from ..locale import LANGS, catalogue, check_text, record_text, spring_text
+from ..units import SUFFIXES, symbol as unit_text
 
 NAMES = {
     # engine
@@ -52,8 +29,8 @@ NAMES = {
                    "частота холостого хода (наименьшая в расчёте на прочность)"),
     "cylinders": ("number of cylinders", "число цилиндров"), "strokes": ("strokes of the cycle", "тактность"),
     "over_speed_ratio": ("over-speed / rated speed", "отношение максимальной частоты вращения к номинальной"),
-    "type": ("engine type", "тип двигателя"), "chamber": ("combustion chamber", "камера сгорания"),
     "engine_class": ("engine class (of the recommended bands)", "класс двигателя (для рекомендуемых пределов)"),
+    "type": ("engine type", "тип двигателя"), "chamber": ("combustion chamber", "камера сгорания"),
     "layout": ("layout", "компоновка"), "bank_angle": ("bank angle", "угол развала"),
     "firing_order": ("firing order", "порядок работы цилиндров"),
     "mean_piston_speed": ("mean piston speed c_p", "средняя скорость поршня c_p"),
@@ -389,170 +366,9 @@ SEGMENTS = {
 }
 """Names of the lift-law segments (``"Phi1 opening"``) without their side."""
 
-QUANTITIES = {
-    "grinding wheel radius / concave radius": ("grinding wheel radius / concave radius",
-                                               "радиус шлифовального круга / вогнутый радиус профиля"),
-    "spring reserve against inertia": ("spring reserve against inertia", "коэффициент запаса пружины по силам инерции"),
-    "Hertz contact stress": ("Hertz contact stress", "контактное напряжение по Герцу"),
-    "valve seating velocity": ("valve seating velocity", "скорость посадки клапана"),
-    "power-polynomial exponent n": ("power-polynomial exponent n", "показатель степени n степенно-полиномиального кулачка"),
-    "power-polynomial exponent m": ("power-polynomial exponent m", "показатель степени m степенно-полиномиального кулачка"),
-    "power-polynomial exponent p": ("power-polynomial exponent p", "показатель степени p степенно-полиномиального кулачка"),
-    "power-polynomial exponent q": ("power-polynomial exponent q", "показатель степени q степенно-полиномиального кулачка"),
-    "power-polynomial exponent r": ("power-polynomial exponent r", "показатель степени r степенно-полиномиального кулачка"),
-    "power-polynomial exponent s": ("power-polynomial exponent s", "показатель степени s степенно-полиномиального кулачка"),
-    "power-polynomial exponent t": ("power-polynomial exponent t", "показатель степени t степенно-полиномиального кулачка"),
-    "power-polynomial exponent u": ("power-polynomial exponent u", "показатель степени u степенно-полиномиального кулачка"),
-    "V' (throat velocity)": ("V′ (throat velocity)", "V′ (условная скорость в горловине)"),
-    "V'' (curtain velocity at full lift)": ("V″ (curtain velocity at full lift)",
-                                            "V″ (условная скорость в проходном сечении при полном подъёме)"),
-    "V''' (time-area velocity)": ("V‴ (time-area velocity)", "V‴ (условная скорость по время-сечению)"),
-    "v_vp (mean charge velocity)": ("v_vp (mean charge velocity)", "v_вп (средняя скорость заряда)"),
-    "throat diameter / bore": ("throat diameter / bore d_g/D", "диаметр горловины / диаметр цилиндра d_г/D"),
-    "valve lift / throat diameter": ("valve lift / throat diameter h_v/d_g", "подъём клапана / диаметр горловины h_v/d_г"),
-    "max tappet acceleration": ("max tappet acceleration a_T max", "наибольшее ускорение толкателя a_T max"),
-    "min tappet acceleration": ("min tappet acceleration a_T min", "наименьшее ускорение толкателя a_T min"),
-    "opening advance": ("opening advance", "угол опережения открытия"),
-    "closing lag": ("closing lag", "угол запаздывания закрытия"),
-    "clearance taken up without a ramp: valve seating velocity": (
-        "clearance taken up without a ramp: valve seating velocity",
-        "зазор выбирается без участка сбега: скорость посадки клапана"),
-    "seat angle": ("seat angle φ", "угол фаски φ"), "clearance h0": ("clearance h0", "тепловой зазор h0"),
-    "rocker ratio": ("rocker ratio i_k", "передаточное отношение коромысла i_k"),
-    "base radius r0 / valve lift": ("base radius / valve lift r0/h_v", "радиус начальной окружности / подъём клапана r0/h_v"),
-    "cam profile undercut: rho_min (flat follower)": ("cam profile undercut: ρ_min (flat follower)",
-                                                      "подрез профиля кулачка: ρ_min (плоский толкатель)"),
-    "cam profile undercut: pitch radius of curvature - roller radius": (
-        "cam profile undercut: pitch radius of curvature − roller radius",
-        "подрез профиля кулачка: радиус кривизны центрового профиля − радиус ролика"),
-    "max pressure angle": ("max pressure angle", "наибольший угол давления"),
-    "rho_min (cam profile)": ("ρ_min (cam profile)", "ρ_min (профиль кулачка)"),
-    "ramp end velocity": ("ramp end velocity w′", "скорость в конце участка сбега w′"),
-    "Phi2/Phi3": ("Φ2/Φ3", "Φ2/Φ3"), "(Phi2+Phi3)/Phi1": ("(Φ2+Φ3)/Φ1", "(Φ2+Φ3)/Φ1"),
-    "polydyne exponent p": ("polydyne exponent p", "показатель степени p полидинамического кулачка"),
-    "harmonic order N of the cam": ("harmonic order N of the cam", "порядок гармоники N кулачка"),
-    "acceleration jump at the nose": ("acceleration jump at the nose", "скачок ускорения на вершине"),
-    "dynamic cam: fall of the lift before the nose": ("dynamic cam: fall of the lift before the nose",
-                                                      "динамический кулачок: спад подъёма до вершины"),
-    "measured table: rms residual of the N-harmonic fit": ("measured table: rms residual of the N-harmonic fit",
-                                                           "измеренная таблица: СКО гармонической аппроксимации"),
-    "opens_deg against the measured table": ("opening advance against the measured table",
-                                             "угол опережения открытия по измеренной таблице"),
-    "closes_deg against the measured table": ("closing lag against the measured table",
-                                              "угол запаздывания закрытия по измеренной таблице"),
-    "spring reserve K_z": ("spring reserve K_z", "коэффициент запаса пружины K_з"),
-    "spring f_max/f_min": ("spring f_max/f_min", "отношение деформаций пружины f_max/f_min"),
-    "inner spring share": ("share of the inner spring", "доля внутренней пружины"),
-    "sum of throat areas / piston area": ("sum of throat areas / piston area", "сумма площадей горловин / площадь поршня"),
-    "crank lambda = R/L": ("λ = R/L", "λ = R/L"),
-    "stroke / bore (stroke_mm / bore_mm)": ("stroke / bore S/D (stroke_mm / bore_mm)",
-                                            "отношение хода поршня к диаметру цилиндра S/D (stroke_mm / bore_mm)"),
-    "mean piston speed (stroke_mm x rated_speed_rpm / 30000)": (
-        "mean piston speed c_p (stroke_mm x rated_speed_rpm / 30000)",
-        "средняя скорость поршня c_p (stroke_mm x rated_speed_rpm / 30000)"),
-    "lambda = R / L (stroke_mm / 2 / rod_length_mm)": ("λ = R/L (stroke_mm / 2 / rod_length_mm)",
-                                                       "λ = R/L (stroke_mm / 2 / rod_length_mm)"),
-    "rod mass share at the piston pin": ("share of the rod mass at the piston pin", "доля массы шатуна на поршневом пальце"),
-    "coil gap at full lift / wire diameter": ("coil gap at full lift / wire diameter",
-                                              "зазор между витками при полном подъёме / диаметр проволоки"),
-    "f_max/f_min": ("f_max/f_min", "f_max/f_min"), "fatigue safety factor": ("fatigue safety factor n", "запас прочности n"),
-    "free length": ("free length", "длина в свободном состоянии"), "frequency difference": ("frequency difference", "разница частот"),
-    "installed length": ("installed length", "длина в установленном состоянии"),
-    "resonance ratio omega_c1/omega_cam": ("resonance ratio ω_c1/ω_cam", "отношение частот ω_c1/ω_р"),
-    "tau_max": ("τ_max", "τ_max"), "working coils": ("working coils", "число рабочих витков"),
-    "valve-piston clearance": ("valve-piston clearance", "зазор клапан-поршень"),
-    "dynamic seating velocity at the rated speed": ("dynamic seating velocity at the rated speed",
-                                                    "скорость посадки клапана на номинальной частоте (динамический расчёт)"),
-    "follower separation (jump) speed / rated speed": ("follower separation (jump) speed / rated speed",
-                                                       "частота отрыва толкателя / номинальная частота"),
-    "valve-piston clearance over the overlap": ("valve-piston clearance over the overlap",
-                                                "зазор клапан-поршень в период перекрытия клапанов"),
-    "gas force on the exhaust valve at opening": ("gas force on the exhaust valve at opening",
-                                                  "сила давления газов на выпускной клапан в момент открытия"),
-    "specific mass of the drive m' = m_v / f_g": ("specific mass of the drive m′ = m_v/f_g",
-                                                  "удельная масса привода m′ = m_кл/f_г"),
-    "flat follower contact reach (edge loading)": ("flat follower contact reach (edge loading)",
-                                                   "вылет точки контакта на плоском толкателе (кромочный контакт)"),
-    "roller follower side force": ("roller follower side force", "боковая сила на роликовом толкателе"),
-    "port height / stroke": ("port height / stroke", "высота окна / ход поршня"),
-    "port width / bore": ("port width / bore", "ширина окна / диаметр цилиндра"),
-}
-"""Names of the check quantities (without the ``"valve: "`` prefix): ``(en, ru)``; the strength checks are
-named by :data:`NAMES` of their key."""
-
-SKELETONS = {
-    "coefficient {} (corrections note {}: not {})": "коэффициент {} (поправка {}: не {})",
-    "along the profile with the instantaneous force and radius (Shang Hanji ({}), eq. {})":
-        "по профилю, с мгновенными силой и радиусом кривизны (Shang Hanji ({}), ф. {})",
-    "offset b = {} mm = max dh/dphi ({})": "смещение b = {} мм = max dh/dφ ({})",
-    "Euler load {} N; E = {} MPa (corrections note {})": "критическая сила по Эйлеру {} Н; E = {} МПа (поправка {})",
-    "built-in beam ({}, corrections note {}); simply supported: {} MPa; load P_T max (corrections note {})":
-        "балка с заделкой ({}, поправка {}); на двух опорах: {} МПа; нагрузка P_T max (поправка {})",
-    "no ramp takes up clearance_mm = {}: the flank does": "участок сбега не выбирает зазор {} мм: его выбирает профиль",
-    "from the crank throws and cylinder axes": "по углам колен вала и осям цилиндров",
-    "{} N/mm at the valve from the part geometry in [parts]":
-        "{} Н/мм, приведённая к клапану, по геометрии деталей из исходных данных",
-    "{} N/mm each at the valve, the rest of c = {} N/mm":
-        "по {} Н/мм каждое звено, приведённая к клапану: остаток жёсткости c = {} Н/мм",
-    "{} N/mm each at the valve (assumed; give drive_stiffness_N_per_mm or the part geometry)":
-        "по {} Н/мм каждое звено, приведённая к клапану (принято; задайте жёсткость привода или геометрию деталей)",
-    "drive stiffness c = {} N/mm from [drive] stiffness_N_per_mm": "жёсткость привода c = {} Н/мм из исходных данных",
-    "M = {} kg: the reduced mass at the valve of the spring design (masses.at_valve_kg)":
-        "M = {} кг: приведённая к клапану масса из расчёта пружины",
-    "K = {} N/mm and F{} = {} N: the designed spring(s)": "K = {} Н/мм и F{} = {} Н: рассчитанная пружина (пружины)",
-    "M = {} kg given ([dynamics] mass_kg)": "M = {} кг задана в исходных данных динамики",
-    "K = {} N/mm given and F{} = {} N given ([dynamics])":
-        "K = {} Н/мм и F{} = {} Н заданы в исходных данных динамики",
-    "K = {} N/mm given and F{} = {} N the designed spring's ([dynamics])":
-        "K = {} Н/мм задана в исходных данных динамики, F{} = {} Н рассчитанной пружины",
-    "K = {} N/mm = (K_{} M |j_min| - F{}) / h_max with K_{} = {}, F{} = {} N given (Valve-train dynamics article "
-    "(n.d.), step {}a)":
-        "K = {} Н/мм = (K_{} M |j_min| − F{}) / h_max при K_{} = {}, F{} = {} Н задана (Valve-train dynamics article "
-        "(n.d.), этап {}а)",
-    "lash {} mm at the valve: the clearance the ramp takes up times the rocker ratio":
-        "зазор {} мм на клапане: зазор, выбираемый участком сбега, умноженный на передаточное отношение коромысла",
-    "coil masses: the designed spring's active coils in {} masses per spring, half a segment on the valve":
-        "массы витков: рабочие витки рассчитанной пружины как {} масс на пружину, половина участка на клапане",
-    "speed range {}{} rpm: {}% to {}% of the rated speed (idle to over-speed)":
-        "диапазон частот {}{} мин⁻¹: от {}% до {}% номинальной (от холостого хода до заброса оборотов)",
-    "m_v x {} m/s{} ({} g, a stated default)": "m_кл × {0} м/с² ({2} g, принято по умолчанию)",
-    "part masses, Valve-train practical works (n.d.), eq. ({}); spring mass of the design":
-        "массы деталей, практические работы по расчёту ГРМ, ф. ({}); масса рассчитанной пружины",
-    "part masses, Valve-train practical works (n.d.), eq. ({})": "массы деталей, практические работы по расчёту ГРМ, ф. ({})",
-    "specific mass {} kg/m2 (given), Valve-train practical works (n.d.), work {}":
-        "удельная масса {} кг/м² (задана), практические работы по расчёту ГРМ, работа {}",
-    "specific mass {} kg/m2 (default for a pushrod drive), Valve-train practical works (n.d.), work {}":
-        "удельная масса {} кг/м² (по умолчанию для привода со штангой), практические работы по расчёту ГРМ, работа {}",
-    "specific mass {} kg/m2 (default for a rocker drive), Valve-train practical works (n.d.), work {}":
-        "удельная масса {} кг/м² (по умолчанию для привода с коромыслом), практические работы по расчёту ГРМ, работа {}",
-    "specific mass {} kg/m2 (default for a direct drive), Valve-train practical works (n.d.), work {}":
-        "удельная масса {} кг/м² (по умолчанию для непосредственного привода), практические работы по расчёту ГРМ, работа {}",
-}
-"""Russian skeletons of the texts made with numbers (notes, models): ``{}`` stands for each number in turn."""
-
-_WIEBE = ("Wiebe cycle model: compression ratio {}, heat input {} J, start {} deg from firing TDC, duration {} deg, "
-          "a = {}, m = {}, gamma = {}, no wall heat loss, gas exchange at {}/{} MPa, ",
-          "модель цикла по Вибе: степень сжатия {}, подведённая теплота {} Дж, начало сгорания {} град от ВМТ "
-          "сгорания, продолжительность {} град, a = {}, m = {}, γ = {}, без теплоотдачи в стенки, газообмен при "
-          "{}/{} МПа, ")
-_WIEBE_VALVES = ("compression from the intake valve's closing, a blowdown of {} deg from the exhaust valve's opening ({})",
-                 "сжатие с момента закрытия впускного клапана, выпуск за {} град с момента открытия выпускного "
-                 "клапана ({})")
-_WIEBE_WHERE = [
-    ("valves at the dead centres", "клапаны в мёртвых точках"),
-    ("intake valve {}...{} crank deg from the gas-exchange TDC", "впускной клапан {}...{} град ПКВ от ВМТ газообмена"),
-    ("exhaust valve {}...{} crank deg from the gas-exchange TDC", "выпускной клапан {}...{} град ПКВ от ВМТ газообмена"),
-    ("intake valve {}...{} and exhaust valve {}...{} crank deg from the gas-exchange TDC",
-     "впускной клапан {}...{} и выпускной клапан {}...{} град ПКВ от ВМТ газообмена"),
-]
-SKELETONS.update({
-    _WIEBE[0] + _WIEBE_VALVES[0].replace("({})", "(" + en + ")") + " (Heywood ({}))":
-        _WIEBE[1] + _WIEBE_VALVES[1].replace("({})", "(" + ru + ")") + " (Heywood ({}))"
-    for en, ru in _WIEBE_WHERE})
-SKELETONS[_WIEBE[0] + "the ports at the dead centres (Heywood ({}))"] = \
-    _WIEBE[1] + "окна в мёртвых точках (Heywood ({}))"
-
-NUMBER = re.compile(r"[-+]?\d+(?:\.\d+)?(?:e[-+]?\d+)?")
+NUMBER = re.compile(r"(?:[-+]?\d+(?:\.\d+)?(?:e[-+]?\d+)?)+")
+"""A number, or a run of numbers without a blank between them (``1-5-3-6-2-4``, ``700-7700``): one ``{}`` of a
+skeleton."""
 
 
 def _candidates(path):
@@ -599,12 +415,6 @@ def _named(path):
     return None, ""
 
 
-def unit_text(unit, lang):
-    """A display unit as printed (``"m/s2"`` -> ``"m/s²"``, ``"м/с²"``)."""
-    pair = UNITS.get(unit)
-    return unit if pair is None else pair[LANGS.index(lang)]
-
-
 def label(path, lang):
     """The name of a key of a record with its unit: ``"cam.max_velocity_m_s"`` -> ``"max tappet velocity
     v_T max, m/s"``.
@@ -649,7 +459,7 @@ def link_names(names, lang):
 
 
 def translate(text, lang):
-    """A text made with numbers in ``lang`` by its skeleton (:data:`SKELETONS`); as it is without one.  A text that
+    """A text made with numbers in ``lang`` by its skeleton (the catalogue's ``[texts]``); as it is without one.  A text that
     starts with drive links (``"pushrod: ..."``, :data:`LINKS`) has them translated and the rest by its skeleton; a
     text of parts joined by ``"; "`` without a skeleton of its own, part by part (the longest head with one first)."""
     if lang == "en" or not text:
@@ -669,25 +479,31 @@ def translate(text, lang):
 
 
 def _by_skeleton(text):
-    """The Russian of a text made with numbers by its skeleton (:data:`SKELETONS`), or None."""
-    ru = SKELETONS.get(NUMBER.sub("{}", text))
+    """The Russian of a text made with numbers by its skeleton (``ru.toml`` ``[texts]`` of the catalogue
+    :mod:`valvetrain.locale`), or None."""
+    ru = catalogue("ru")["texts"].get(NUMBER.sub("{}", text))
     return None if ru is None else ru.format(*NUMBER.findall(text))
 
 
-def quantity_text(quantity, lang, prefixes=()):
-    """The quantity of a check in ``lang``: ``"intake: V' (throat velocity)"`` -> ``"intake: V′ (условная ..."``.
+def quantity_text(check, lang):
+    """The quantity of a check in ``lang``: its valve or chapter, then the text of its code in the catalogue
+    (:mod:`valvetrain.locale`): ``"intake: V′ (условная скорость в горловине)"``."""
+    return record_quantity_text({"code": check.code, "params": dict(check.params), "quantity": check.quantity,
+                                 "valve": check.valve}, lang)
 
-    ``prefixes`` are the names of the parts (valves, ports) that may stand before the quantity.
-    """
-    prefix, rest = "", quantity
-    if ": " in quantity:
-        head, tail = quantity.split(": ", 1)
-        if head in prefixes:
-            prefix, rest = head + ": ", tail
-        elif head in CHAPTERS:
-            prefix, rest = CHAPTERS[head][LANGS.index(lang)] + ": ", tail
-    name = quantity_name(rest, lang, prefixes)
-    return prefix + (rest if name is None else name)
+
+def record_quantity_text(record, lang):
+    """:func:`quantity_text` of a check record of results.json (``code``, ``params``, ``quantity``, ``valve``)."""
+    params = record["params"]
+    text = check_text(record["code"], params, lang)
+    if "spring" in params:
+        text = f"{spring_text(params['spring'], lang)}: {text}"
+    head = record["quantity"].partition(": ")[0]
+    if record["valve"] is not None:
+        return f"{record['valve']}: {text}"
+    if record["quantity"] != record_text(record["code"], params) and head in catalogue(lang)["chapters"]:
+        return f"{catalogue(lang)['chapters'][head]}: {text}"
+    return text
 
 
 CANNOT_EVALUATE = ("cannot be evaluated", "не может быть вычислено")
@@ -698,32 +514,6 @@ def unevaluated_text(check, lang):
     """``"cannot be evaluated: REASON"`` of a check that cannot be evaluated, in ``lang`` (the reason by
     :func:`translate`)."""
     return f"{CANNOT_EVALUATE[LANGS.index(lang)]}: {translate(check.unevaluated, lang)}"
-
-
-CHAPTERS = {"crank": ("crank mechanism", "кривошипно-шатунный механизм"), "two-stroke": ("two-stroke", "двухтактный"),
-            "engine": ("engine", "двигатель")}
-"""Prefixes of the checks of a chapter (not of a valve)."""
-
-
-def quantity_name(quantity, lang, prefixes=()):
-    """The name of a check quantity without a part prefix, or None when it has none."""
-    if quantity in QUANTITIES:
-        return QUANTITIES[quantity][LANGS.index(lang)]
-    if quantity.replace(" ", "_") in NAMES:  # a strength check, "camshaft deflection"
-        return NAMES[quantity.replace(" ", "_")][LANGS.index(lang)]
-    for tag, en, ru in (("spring ", "spring", "пружина"), ("outer spring ", "outer spring", "наружная пружина"),
-                        ("inner spring ", "inner spring", "внутренняя пружина")):
-        if quantity.startswith(tag):
-            name = quantity_name(quantity[len(tag):], lang, prefixes)
-            return None if name is None else f"{en if lang == 'en' else ru}: {name}"
-    for name in prefixes:  # "<port> port height / stroke"
-        if quantity.startswith(name + " ") and quantity[len(name) + 1:] in QUANTITIES:
-            return f"{name}: {QUANTITIES[quantity[len(name) + 1:]][LANGS.index(lang)]}"
-    m = re.fullmatch(r"equivalent throat diameter sqrt\((\d+)\) d / bore", quantity)
-    if m:
-        return (f"equivalent throat diameter √{m[1]} d_g / bore" if lang == "en"
-                else f"приведённый диаметр горловины √{m[1]} d_г / диаметр цилиндра")
-    return None
 
 
 NAMES.update({
@@ -778,67 +568,4 @@ NAMES.update({
     "grinding.master_base_radius": ("heel circle radius of the master R_m0", "радиус начальной окружности копира R_m0"),
     "grinding.wheel_wear": ("wheel wear w", "износ шлифовального круга w"),
     "grinding.wear_compensation": ("wear compensation", "компенсация износа круга"),
-})
-
-QUANTITIES.update({
-    "cam concave radius |rho| against the grinding wheel radius": (
-        "concave radius of the cam |ρ| against the grinding wheel radius R_w",
-        "радиус вогнутого участка кулачка |ρ| и радиус шлифовального круга R_w"),
-    "hydraulic drive: smallest pressure above the vapour pressure": (
-        "hydraulic drive: smallest pressure above the vapour pressure",
-        "гидропривод: наименьшее давление выше давления насыщенных паров"),
-    "hydraulic drive: valve seating velocity at the simulated speed": (
-        "hydraulic drive: valve seating velocity at the simulated speed",
-        "гидропривод: скорость посадки клапана на расчётной частоте вращения"),
-    "hydraulic drive: largest valve lift within the stroke (below the stop)": (
-        "hydraulic drive: largest valve lift within the stroke (below the stop)",
-        "гидропривод: наибольший подъём клапана в пределах хода (ниже упора)"),
-    "hydraulic drive: valve lift left at the next opening": (
-        "hydraulic drive: valve lift left at the next opening",
-        "гидропривод: подъём клапана, оставшийся к следующему открытию"),
-    "hydraulic drive: fill pressure below the valve's lift-off pressure": (
-        "hydraulic drive: fill pressure below the valve's lift-off pressure",
-        "гидропривод: давление подпитки ниже давления подъёма клапана с седла"),
-    "master cam: smallest radius of curvature (master roller undercut)": (
-        "master cam: smallest radius of curvature (undercut by the master roller)",
-        "копир: наименьший радиус кривизны (подрез роликом копира)"),
-})
-
-SKELETONS.update({f"even firing, order {'{}' * n}": f"равномерное чередование вспышек, порядок работы {'{}' * n}"
-                  for n in range(1, 25)})   # the order of any number of cylinders, "1-5-3-6-2-4"
-SKELETONS.update({
-    UNEVALUATED: "значение не удалось вычислить",
-    "a factor of {} beyond Heywood ({}), section {}": "в {} раза шире диапазона Heywood ({}), раздел {}",
-    "a factor of {} beyond Power units manual (n.d.), eq. ({})":
-        "в {} раза шире диапазона Power units manual (n.d.), ф. ({})",
-    "a wheel of radius {} mm cannot grind a concave stretch of smaller radius":
-        "круг радиусом {} мм не может шлифовать вогнутый участок меньшего радиуса",
-    "master roller r_m = {} mm, bar ratio {}": "ролик копира r_m = {} мм, передаточное отношение {}",
-    "min_preload_N of the specification": "наименьшая сила затяжки, заданная в исходных данных",
-    "engine speed of the simulation {} rpm: the rated speed": "частота вращения расчёта {} мин⁻¹: номинальная",
-    "speed range {}{} rpm: {}% to {}% of the rated speed": "диапазон частот {}{} мин⁻¹: от {}% до {}% номинальной",
-    "at {} rpm, {} cam deg from the nose (quasi-static force)":
-        "при {} мин⁻¹, {} град ПРВ от вершины кулачка (квазистатическая сила)",
-    "at {} rpm, {} cam deg from the nose (dynamic force)":
-        "при {} мин⁻¹, {} град ПРВ от вершины кулачка (сила динамического расчёта)",
-    "engine.idle_speed_rpm": "частота холостого хода из исходных данных",
-    "the low end of the dynamics speed range": "нижняя граница диапазона частот динамического расчёта",
-    "{} x the rated speed (the default idle)": "{} номинальной частоты (холостой ход по умолчанию)",
-    "the liquid column separates (cavitation) where the pressure falls to the vapour pressure":
-        "столб жидкости разрывается (кавитация), где давление падает до давления насыщенных паров",
-    "valve stop {} mm: {}% above the rigid drive's largest lift":
-        "упор клапана {} мм: на {}% выше наибольшего подъёма жёсткого привода",
-    "no gas force on the valve head: the specification gives no engine cycle ([crank] with its pressure_file or "
-    "[crank.cycle])":
-        "сила давления газов на тарелку клапана не учтена: в исходных данных нет рабочего цикла двигателя "
-        "(индикаторной диаграммы или модели Вибе)",
-    "largest at {} rpm": "наибольший при {} мин⁻¹",
-    "the valve reaches its stop at {} rpm: it travels further than its stroke":
-        "клапан доходит до упора при {} мин⁻¹: его перемещение больше хода",
-    "at {} rpm the valve is not back on its seat when the plunger is about to lift again: it has not closed before "
-    "its next opening":
-        "при {} мин⁻¹ клапан не вернулся на седло к началу следующего подъёма плунжера: он не закрылся до "
-        "следующего открытия",
-    "above it the supply alone lifts the valve off its seat (F_0 / A_a above the back pressure)":
-        "выше него подпитка сама поднимает клапан с седла (на F_0 / A_a выше противодавления)",
 })

@@ -11,6 +11,7 @@ from ..bibliography import WORKS, cited_in
 from ..laws.power_polynomial import ARTICLE_FULLNESS
 from ..synthesis.optimize import BINDING, START_SPRING, shown_objective
 from .i18n import OPTIMIZE_TEXT
+from ..locale import check_text
 from .names import quantity_text, unevaluated_text, unit_text
 
 
@@ -89,7 +90,6 @@ def _checked(c, lang):
 def report_html(result, lang="en"):
     """The optimisation's report in ``lang`` (HTML text): method, variables, comparison, constraints, history."""
     t = OPTIMIZE_TEXT[lang]
-    prefixes = (result.valve,)
     start = {c.quantity: c for c in result.checks_start}
     parts = [f"<h1>{escape(t['title'])}: {escape(result.valve)}</h1>",
              f"<p>{escape(t['method'].format(objective=t[f'objective_{result.objective}']))}</p>"]
@@ -108,13 +108,13 @@ def report_html(result, lang="en"):
         state = t["fails"] if not c.passed else t["binds"] if c.margin < BINDING else t["holds"]
         note = c.note if lang == "en" else t["start_spring"] if c.note.startswith(START_SPRING) else ""
         shown_range = c.range.replace(c.unit, unit_text(c.unit, lang)) if c.unit else c.range
-        rows.append((quantity_text(c.quantity, lang, prefixes) + (f" ({note})" if note else ""),
+        rows.append((quantity_text(c, lang) + (f" ({note})" if note else ""),
                      _checked(s, lang) if s else "", _checked(c, lang), shown_range, f"{c.margin:.4f}", state))
     parts.append(_table([t["quantity"], t["start"], t["optimum"], t["range"], t["margin"], t["state"]], rows))
-    binding = [quantity_text(c.quantity, lang, prefixes) for c in result.binding]
+    binding = [quantity_text(c, lang) for c in result.binding]
     parts.append(f"<p>{escape(t['binding'])}: {escape(', '.join(binding) if binding else t['none'])}.</p>")
     for note in result.limit_notes:
-        shown = {**note, "quantity": quantity_text(note["quantity"], lang), "unit": unit_text(note["unit"], lang)}
+        shown = {**note, "quantity": check_text(note["code"], {}, lang), "unit": unit_text(note["unit"], lang)}
         parts.append(f"<p>{escape(t['relaxed'].format(**shown))}</p>")
     if result.polydyne_fullness is not None:
         tappet = next(r for r in result.comparison if r[0].startswith("tappet fullness"))

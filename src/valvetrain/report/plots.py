@@ -1,56 +1,96 @@
-"""Plots of every stage of a valve design (matplotlib, written as PNG files)."""
+"""Plots of every stage of a valve design (matplotlib, written as PNG files).
+
+A figure is its data and its drawing: ``X_data(result)`` gives the series a figure shows (plain arrays in the
+units of its axes, names and angles), ``draw_X(data, t)`` draws them with the texts ``t`` of a language, and
+``X_figure(result, t)`` is the two in turn (the contour, curvature, dynamics, grinding and hydraulic figures still
+read the design as they draw).
+"""
+
+from typing import Any
+
+import itertools
 
 from matplotlib.figure import Figure
 import numpy as np
 
+from ..design.dynamics import event_window
+from ..design.results import shown_value
 from ..units import DEG, MM, rad_to_deg, to_display
 from .i18n import TEXT
 from .names import value_text
 
 
 def _segment_lines(ax, law):
-    for a in law.breakpoints[1:-1]:
-        ax.axvline(rad_to_deg(a), color="0.75", lw=0.6, ls=":")
+    _boundary_lines(ax, segment_boundaries(law))
 
 
-def jerk_impulses(ax, law, cam_speed, color="C3", label=None):
-    """Mark the jerk impulses of a law on a jerk axis: an arrow at each acceleration step, up for a rise of the
-    acceleration and down for a fall, reaching the edge of the axis (an impulse has no finite height), with the step
-    written beside it [m/s^2].  Call it after the curves are drawn (the arrows take the axis' extent)."""
-    steps = law.acceleration_steps()
+def segment_boundaries(law) -> np.ndarray:
+    """Camshaft angles of the inner junctions of a law's segments [deg from the nose]."""
+    return rad_to_deg(np.asarray(law.breakpoints[1:-1]))
+
+
+def _boundary_lines(ax, angles_deg):
+    for a in angles_deg:
+        ax.axvline(a, color="0.75", lw=0.6, ls=":")
+
+
+def impulse_steps(law, cam_speed) -> list[tuple[float, float]]:
+    """The jerk impulses of a law at a camshaft speed [rad/s]: ``(camshaft angle [deg from the nose], step of the
+    tappet acceleration [m/s^2])`` at each acceleration step."""
+    return [(rad_to_deg(st.angle), cam_speed**2 * st.size) for st in law.acceleration_steps()]
+
+
+def jerk_impulses(ax, law, cam_speed, color="C3", label=None) -> None:
+    """Mark the jerk impulses of a law on a jerk axis (:func:`draw_jerk_impulses` of :func:`impulse_steps`)."""
+    draw_jerk_impulses(ax, impulse_steps(law, cam_speed), color, label)
+
+
+def draw_jerk_impulses(ax, steps, color="C3", label=None) -> None:
+    """Mark jerk impulses on a jerk axis: an arrow at each acceleration step ``(angle [deg], step [m/s^2])``, up for
+    a rise of the acceleration and down for a fall, reaching the edge of the axis (an impulse has no finite height),
+    with the step written beside it.  Call it after the curves are drawn (the arrows take the axis' extent)."""
     if not steps:
         return
     low, high = ax.get_ylim()
     reach = max(abs(low), abs(high))
     ax.set_ylim(min(low, -0.15 * reach), max(high, 0.15 * reach))
     low, high = ax.get_ylim()
-    for n, st in enumerate(steps):
-        size = cam_speed**2 * st.size
+    for n, (x, size) in enumerate(steps):
         tip = 0.92 * (high if size > 0.0 else low)
-        x = rad_to_deg(st.angle)
         ax.annotate("", xy=(x, tip), xytext=(x, 0.0), arrowprops={"arrowstyle": "-|>", "color": color, "lw": 1.2})
         ax.plot([x], [0.0], marker="o", color=color, ms=4, label=label if n == 0 else None)
         ax.annotate(f"{size:+.4g}", xy=(x, tip), xytext=(3, 0), textcoords="offset points", fontsize=7, color=color,
                     va="top" if size > 0.0 else "bottom")
 
 
-def kinematics_figure(valve, t):
-    """Tappet lift (and valve lift), velocity, acceleration and jerk against camshaft angle."""
+def kinematics_data(valve) -> dict[str, Any]:
+    """The series of :func:`draw_kinematics`: camshaft angle [deg], tappet and valve lift [mm], tappet velocity
+    [m/s], acceleration [m/s^2] and jerk [m/s^3], the segment junctions and jerk impulses, the nose's crank angle
+    [deg], the rocker ratio, the camshaft speed [rad/s], the valve's and the law's names."""
     tab = valve.table
-    x = rad_to_deg(tab.cam_angle)
+    return {"name": valve.name, "law": valve.law.name, "cam_deg": rad_to_deg(tab.cam_angle),
+            "tappet_lift_mm": tab.lift / MM, "valve_lift_mm": tab.valve_lift / MM, "velocity": tab.velocity,
+            "acceleration": tab.acceleration, "jerk": tab.jerk, "boundaries_deg": segment_boundaries(valve.law),
+            "impulses": impulse_steps(valve.law, valve.omega_cam), "nose_crank_deg": rad_to_deg(valve.nose_crank),
+            "rocker_ratio": valve.rocker_ratio, "cam_speed": valve.omega_cam}
+
+
+def draw_kinematics(d, t) -> Figure:
+    """Tappet lift (and valve lift), velocity, acceleration and jerk against camshaft angle."""
+    x = d["cam_deg"]
     fig = Figure(figsize=(8, 10))
     axes = fig.subplots(4, 1, sharex=True)
-    axes[0].plot(x, tab.lift / MM, label=t["tappet_lift"])
-    axes[0].plot(x, tab.valve_lift / MM, label=t["valve_lift"])
+    axes[0].plot(x, d["tappet_lift_mm"], label=t["tappet_lift"])
+    axes[0].plot(x, d["valve_lift_mm"], label=t["valve_lift"])
     axes[0].legend(loc="upper right")
-    moving = tab.valve_lift > 0.0
-    w = valve.omega_cam
+    moving = d["valve_lift_mm"] > 0.0
+    w = d["cam_speed"]
     per_deg = MM / DEG    # a speed-independent derivative in mm/deg^n from m/rad^n: divide by MM / DEG^n
-    for n, (ax, y, label) in enumerate(zip(axes, (None, tab.velocity, tab.acceleration, tab.jerk / 1e3),
+    for n, (ax, y, label) in enumerate(zip(axes, (None, d["velocity"], d["acceleration"], d["jerk"] / 1e3),
                                            ("lift", "velocity", "acceleration", "jerk"), strict=True)):
         if y is not None:
             ax.plot(x, y, color="C0", label=t["k_tappet"])
-            ax.plot(x, np.where(moving, valve.rocker_ratio * y, np.nan), color="C1", ls="--", lw=1.0,
+            ax.plot(x, np.where(moving, d["rocker_ratio"] * y, np.nan), color="C1", ls="--", lw=1.0,
                     label=t["k_valve"])
             scale = (1e3 if n == 3 else 1.0) / w**n * DEG ** (n - 1) / per_deg
             right = ax.secondary_yaxis("right", functions=(lambda v, s=scale: v * s, lambda v, s=scale: v / s))
@@ -58,47 +98,68 @@ def kinematics_figure(valve, t):
         ax.set_ylabel(t[label])
         ax.grid(alpha=0.3)
         ax.axhline(0.0, color="0.5", lw=0.5)
-        _segment_lines(ax, valve.law)
-    if valve.law.acceleration_steps():
-        jerk_impulses(axes[-1], valve.law, valve.omega_cam)
+        _boundary_lines(ax, d["boundaries_deg"])
+    if d["impulses"]:
+        draw_jerk_impulses(axes[-1], d["impulses"])
         axes[-1].set_title(t["jerk_impulse"], fontsize=8, color="C3", loc="right")
     axes[1].legend(loc="upper right", fontsize=8)
     axes[-1].set_xlabel(t["cam_deg"])
-    top = axes[0].secondary_xaxis("top", functions=(lambda c: 2 * c + rad_to_deg(valve.nose_crank),
-                                                     lambda k: (k - rad_to_deg(valve.nose_crank)) / 2))
+    nose = d["nose_crank_deg"]
+    top = axes[0].secondary_xaxis("top", functions=(lambda c: 2 * c + nose, lambda k: (k - nose) / 2))
     top.set_xlabel(t["crank_deg"])
-    fig.suptitle(f"{valve.name}: {value_text(valve.law.name, t['lang'])}")
+    fig.suptitle(f"{d['name']}: {value_text(d['law'], t['lang'])}")
     fig.tight_layout()
     return fig
 
 
-def strength_speed_figure(valve, t):
-    """The largest cam load and contact stress at each engine speed of the strength checks, the worst points marked."""
+def kinematics_figure(valve, t) -> Figure:
+    """:func:`draw_kinematics` of :func:`kinematics_data`."""
+    return draw_kinematics(kinematics_data(valve), t)
+
+
+def strength_speed_data(valve) -> dict[str, Any]:
+    """The series of :func:`draw_strength_speed`: engine speed [rpm], the load kind at each, the largest cam force
+    [N] and contact stress [MPa] (None without the cam width) with their worst points ``(rpm, value)``, the rated
+    speed [rpm] and the valve's name."""
     st = valve.drive.strength
     per = st.per_speed
-    rpm = to_display(np.asarray(per.speed), "rpm")
-    kinds = np.asarray(per.load)
+    stress = None if per.contact_stress is None else to_display(np.asarray(per.contact_stress), "MPa")
+    return {"name": valve.name, "rpm": to_display(np.asarray(per.speed), "rpm"), "load": np.asarray(per.load),
+            "cam_force_N": np.asarray(per.cam_force_max),
+            "cam_force_worst": (to_display(st.cam_force_max_speed, "rpm"), st.cam_force_max), "stress_MPa": stress,
+            "stress_worst": None if stress is None else (to_display(st.contact_stress_speed, "rpm"),
+                                                         float(stress.max())),
+            "rated_rpm": to_display(st.rated_speed, "rpm")}
+
+
+def draw_strength_speed(d, t) -> Figure:
+    """The largest cam load and contact stress at each engine speed of the strength checks, the worst points marked."""
+    rpm, kinds = d["rpm"], d["load"]
     fig = Figure(figsize=(8, 6.5))
-    axes = fig.subplots(2 if per.contact_stress is not None else 1, 1, sharex=True, squeeze=False)[:, 0]
-    rows = [(axes[0], np.asarray(per.cam_force_max), t["cam_force_axis"], st.cam_force_max_speed, st.cam_force_max)]
-    if per.contact_stress is not None:
-        stress = to_display(np.asarray(per.contact_stress), "MPa")
-        rows.append((axes[1], stress, t["contact_stress_axis"], st.contact_stress_speed, float(stress.max())))
-    for ax, y, ylabel, worst_speed, worst in rows:
+    axes = fig.subplots(2 if d["stress_MPa"] is not None else 1, 1, sharex=True, squeeze=False)[:, 0]
+    rows = [(axes[0], d["cam_force_N"], t["cam_force_axis"], d["cam_force_worst"])]
+    if d["stress_MPa"] is not None:
+        rows.append((axes[1], d["stress_MPa"], t["contact_stress_axis"], d["stress_worst"]))
+    for ax, y, ylabel, (worst_rpm, worst) in rows:
         for kind, marker in (("quasi-static", "."), ("dynamic", "x")):
             on = kinds == kind
             if on.any():
                 ax.plot(rpm[on], y[on], ls="-" if kind == "quasi-static" else "none", marker=marker,
                         label=t["load_" + kind.replace("-", "_")])
-        ax.plot([to_display(worst_speed, "rpm")], [worst], "o", mfc="none", mec="C3", ms=10)
-        ax.axvline(to_display(st.rated_speed, "rpm"), color="0.5", lw=0.8, ls="--", label=t["rated_speed"])
+        ax.plot([worst_rpm], [worst], "o", mfc="none", mec="C3", ms=10)
+        ax.axvline(d["rated_rpm"], color="0.5", lw=0.8, ls="--", label=t["rated_speed"])
         ax.set_ylabel(ylabel)
         ax.grid(alpha=0.3)
     axes[0].legend(fontsize=8)
     axes[-1].set_xlabel(t["engine_speed"])
-    fig.suptitle(f"{valve.name}: {t['strength_speed_title']}")
+    fig.suptitle(f"{d['name']}: {t['strength_speed_title']}")
     fig.tight_layout()
     return fig
+
+
+def strength_speed_figure(valve, t) -> Figure:
+    """:func:`draw_strength_speed` of :func:`strength_speed_data`."""
+    return draw_strength_speed(strength_speed_data(valve), t)
 
 
 def contour_figure(valve, t):
@@ -127,25 +188,38 @@ def contour_figure(valve, t):
     return fig
 
 
-def time_area_figure(valve, t):
-    """Curtain area and running time-area against crank angle; the valve's own stroke shaded."""
+def time_area_data(valve) -> dict[str, Any]:
+    """The series of :func:`draw_time_area`: crank angle [deg from the gas-exchange TDC], curtain area [mm2], running
+    time-area [mm2 s], the valve's own stroke (from, to) [crank deg] and the valve's name."""
     tab = valve.table
-    k = rad_to_deg(valve.nose_crank + 2.0 * tab.cam_angle)
+    return {"name": valve.name, "crank_deg": rad_to_deg(valve.nose_crank + 2.0 * tab.cam_angle),
+            "curtain_mm2": tab.curtain_area / MM**2, "time_area_mm2_s": tab.time_area / MM**2,
+            "stroke_crank_deg": shown_value(valve.flow, "stroke")}
+
+
+def draw_time_area(d, t) -> Figure:
+    """Curtain area and running time-area against crank angle; the valve's own stroke shaded."""
+    k = d["crank_deg"]
     fig = Figure(figsize=(8, 5))
     ax = fig.subplots()
-    ax.plot(k, tab.curtain_area / MM**2, color="C0")
+    ax.plot(k, d["curtain_mm2"], color="C0")
     ax.set_xlabel(t["crank_deg"])
     ax.set_ylabel(t["curtain"], color="C0")
-    lo, hi = valve.summary["flow"]["stroke_crank_deg"]
+    lo, hi = d["stroke_crank_deg"]
     ax.axvspan(lo, hi, color="C2", alpha=0.1, label=t["stroke"])
     ax.legend(loc="upper left")
     ax.grid(alpha=0.3)
     ax2 = ax.twinx()
-    ax2.plot(k, tab.time_area / MM**2, color="C3")
+    ax2.plot(k, d["time_area_mm2_s"], color="C3")
     ax2.set_ylabel(t["running_ta"], color="C3")
-    ax.set_title(f"{valve.name}: {t['time_area'].split('. ', 1)[-1]}")
+    ax.set_title(f"{d['name']}: {t['time_area'].split('. ', 1)[-1]}")
     fig.tight_layout()
     return fig
+
+
+def time_area_figure(valve, t) -> Figure:
+    """:func:`draw_time_area` of :func:`time_area_data`."""
+    return draw_time_area(time_area_data(valve), t)
 
 
 def curvature_figure(valve, t):
@@ -169,21 +243,30 @@ def curvature_figure(valve, t):
     return fig
 
 
-def spring_figure(valve, t):
-    """Spring characteristic as Fig. 5.1 of Valve-train practical works (n.d.): inertia force, required force and the chosen lines
-    against valve lift."""
+def spring_data(valve) -> dict[str, Any]:
+    """The series of :func:`draw_spring`: valve lift [mm, ascending], the inertia force and the required force [N]
+    there, each spring line's force [N] at no lift and at full lift, and the valve's name."""
     drive = valve.drive
     y = drive.lift / MM
     order = np.argsort(y)
+    ends = np.array([0.0, y.max()])
+    return {"name": valve.name, "lift_mm": y[order], "inertia_force_N": drive.inertia_force[order],
+            "required_force_N": drive.required_force[order], "line_ends_mm": ends,
+            "lines_N": {name: line.force(ends * MM) for name, line in drive.lines.items()}}
+
+
+def draw_spring(d, t) -> Figure:
+    """Spring characteristic as Fig. 5.1 of Valve-train practical works (n.d.): inertia force, required force and the chosen lines
+    against valve lift."""
+    y = d["lift_mm"]
     fig = Figure(figsize=(8, 5))
     ax = fig.subplots()
-    ax.plot(y[order], drive.inertia_force[order], color="0.5", ls=":", label=t["inertia_force"])
-    ax.plot(y[order], drive.required_force[order], color="C3", label=t["required_force"])
-    yy = np.array([0.0, y.max()])
+    ax.plot(y, d["inertia_force_N"], color="0.5", ls=":", label=t["inertia_force"])
+    ax.plot(y, d["required_force_N"], color="C3", label=t["required_force"])
     styles = {"required": ("C3", "--"), "chosen": ("k", "-"), "outer": ("C0", "-."), "inner": ("C2", "-.")}
-    for name, line in drive.lines.items():
+    for name, force in d["lines_N"].items():
         color, ls = styles[name]
-        ax.plot(yy, line.force(yy * MM), color=color, ls=ls, lw=1.5 if name == "chosen" else 1.0,
+        ax.plot(d["line_ends_mm"], force, color=color, ls=ls, lw=1.5 if name == "chosen" else 1.0,
                 label=t["line_" + name])
     ax.set_xlabel(t["valve_lift_axis"])
     ax.set_ylabel(t["force"])
@@ -191,21 +274,35 @@ def spring_figure(valve, t):
     ax.set_ylim(0.0, None)
     ax.grid(alpha=0.3)
     ax.legend(loc="upper left")
-    ax.set_title(f"{valve.name}: {t['spring_title']}")
+    ax.set_title(f"{d['name']}: {t['spring_title']}")
     fig.tight_layout()
     return fig
 
 
-def crank_forces_figure(crank, t):
+def spring_figure(valve, t) -> Figure:
+    """:func:`draw_spring` of :func:`spring_data`."""
+    return draw_spring(spring_data(valve), t)
+
+
+CRANK_FORCES = ("p_gas", "p_j", "p", "p_N", "p_S", "p_K", "p_T")
+"""The specific forces of :func:`draw_crank_forces` (keys of :attr:`valvetrain.design.crank.CrankResults.columns`)."""
+
+
+def crank_forces_data(crank) -> dict[str, Any]:
+    """The series of :func:`draw_crank_forces`: the cycle angle [deg] and the specific forces of
+    :data:`CRANK_FORCES` [MPa]."""
+    return {"crank_deg": rad_to_deg(crank.phi), **{key: crank.columns[key] * 1e-6 for key in CRANK_FORCES}}
+
+
+def draw_crank_forces(d, t) -> Figure:
     """Specific forces against the crank angle, as Fig. 2.6 of Power units manual (n.d.): gas, inertia and total; N, S, K, T."""
-    c = crank.columns
-    x = rad_to_deg(crank.phi)
+    x = d["crank_deg"]
     fig = Figure(figsize=(9, 8))
     axes = fig.subplots(2, 1, sharex=True)
     for key, label in (("p_gas", t["p_gas"]), ("p_j", t["p_in"]), ("p", t["p_total"])):
-        axes[0].plot(x, c[key] * 1e-6, label=label)
+        axes[0].plot(x, d[key], label=label)
     for key, label in (("p_N", "p_N"), ("p_S", "p_S"), ("p_K", "p_K"), ("p_T", "p_T")):
-        axes[1].plot(x, c[key] * 1e-6, label=label)
+        axes[1].plot(x, d[key], label=label)
     for ax in axes:
         ax.axhline(0, color="0.5", lw=0.5)
         ax.grid(alpha=0.3)
@@ -218,15 +315,27 @@ def crank_forces_figure(crank, t):
     return fig
 
 
-def crank_torque_figure(crank, t):
+def crank_forces_figure(crank, t) -> Figure:
+    """:func:`draw_crank_forces` of :func:`crank_forces_data`."""
+    return draw_crank_forces(crank_forces_data(crank), t)
+
+
+def crank_torque_data(crank) -> dict[str, Any]:
+    """The series of :func:`draw_crank_torque`: the engine angle over one cycle [deg], each cylinder's torque, the
+    total and the mean torque [N m]."""
+    return {"engine_deg": rad_to_deg(crank.psi), "cylinders_Nm": crank.cylinder_torques,
+            "total_Nm": crank.total_torque, "mean_Nm": shown_value(crank.figures, "mean_torque")}
+
+
+def draw_crank_torque(d, t) -> Figure:
     """Torque of every cylinder and the total over one cycle (Fig. 2.7 of Power units manual (n.d.))."""
-    x = rad_to_deg(crank.psi)
+    x = d["engine_deg"]
     fig = Figure(figsize=(9, 5))
     ax = fig.subplots()
-    for i, m in enumerate(crank.cylinder_torques, start=1):
+    for i, m in enumerate(d["cylinders_Nm"], start=1):
         ax.plot(x, m, lw=0.8, alpha=0.7, label=f"{t['cylinder']} {i}")
-    ax.plot(x, crank.total_torque, color="k", lw=1.8, label=t["total"])
-    ax.axhline(crank.summary["mean_torque_Nm"], color="C3", ls="--", lw=1.0, label=t["mean"])
+    ax.plot(x, d["total_Nm"], color="k", lw=1.8, label=t["total"])
+    ax.axhline(d["mean_Nm"], color="C3", ls="--", lw=1.0, label=t["mean"])
     ax.set_xlabel(t["engine_deg"])
     ax.set_ylabel(t["torque"])
     ax.set_xticks(np.arange(0, x.max() + 1, 90))
@@ -236,15 +345,27 @@ def crank_torque_figure(crank, t):
     return fig
 
 
-def crank_pin_figure(crank, t):
-    """Polar diagram of the crank-pin load in the crank's frame (tangential against radial, kN)."""
+def crank_torque_figure(crank, t) -> Figure:
+    """:func:`draw_crank_torque` of :func:`crank_torque_data`."""
+    return draw_crank_torque(crank_torque_data(crank), t)
+
+
+def crank_pin_data(crank) -> dict[str, Any]:
+    """The series of :func:`draw_crank_pin`: the crank-pin load, tangential and radial (outwards negative) [kN], and
+    the cycle angle [deg]."""
     c = crank.columns
-    tang, rad = c["pin_tangential"] * 1e-3, -c["pin_radial"] * 1e-3
+    return {"tangential_kN": c["pin_tangential"] * 1e-3, "radial_kN": -c["pin_radial"] * 1e-3,
+            "crank_deg": rad_to_deg(crank.phi)}
+
+
+def draw_crank_pin(d, t) -> Figure:
+    """Polar diagram of the crank-pin load in the crank's frame (tangential against radial, kN)."""
+    tang, rad, angle = d["tangential_kN"], d["radial_kN"], d["crank_deg"]
     fig = Figure(figsize=(7, 7))
     ax = fig.subplots()
     ax.plot(tang, rad, color="C0")
-    for deg in range(0, int(rad_to_deg(crank.phi[-1])) + 1, 180):
-        k = int(np.argmin(np.abs(rad_to_deg(crank.phi) - deg)))
+    for deg in range(0, int(angle[-1]) + 1, 180):
+        k = int(np.argmin(np.abs(angle - deg)))
         ax.annotate(f"{deg}", (tang[k], rad[k]), fontsize=8)
     ax.axhline(0, color="0.5", lw=0.5)
     ax.axvline(0, color="0.5", lw=0.5)
@@ -257,13 +378,23 @@ def crank_pin_figure(crank, t):
     return fig
 
 
-def two_stroke_ports_figure(ports, t):
+def crank_pin_figure(crank, t) -> Figure:
+    """:func:`draw_crank_pin` of :func:`crank_pin_data`."""
+    return draw_crank_pin(crank_pin_data(crank), t)
+
+
+def two_stroke_ports_data(ports) -> dict[str, Any]:
+    """The series of :func:`draw_two_stroke_ports`: crank angle from TDC [deg] and each port's area [mm2]."""
+    return {"crank_deg": rad_to_deg(ports.phi), "areas_mm2": {name: a / MM**2 for name, a in ports.areas.items()}}
+
+
+def draw_two_stroke_ports(d, t) -> Figure:
     """Port areas against the crank angle (Valve-train practical works (n.d.), Fig. 8.1 b)."""
     fig = Figure(figsize=(8, 4.5))
     ax = fig.subplots()
-    x = rad_to_deg(ports.phi)
-    for name, a in ports.areas.items():
-        ax.plot(x, a / MM**2, label=name)
+    x = d["crank_deg"]
+    for name, a in d["areas_mm2"].items():
+        ax.plot(x, a, label=name)
     ax.set_xlabel(t["crank_from_tdc"])
     ax.set_ylabel(t["port_area"])
     ax.set_xticks(np.arange(0, 361, 45))
@@ -273,12 +404,23 @@ def two_stroke_ports_figure(ports, t):
     return fig
 
 
-def two_stroke_speed_figure(ports, t):
+def two_stroke_ports_figure(ports, t) -> Figure:
+    """:func:`draw_two_stroke_ports` of :func:`two_stroke_ports_data`."""
+    return draw_two_stroke_ports(two_stroke_ports_data(ports), t)
+
+
+def two_stroke_speed_data(ports) -> dict[str, Any]:
+    """The series of :func:`draw_two_stroke_speed`: crank speed [rpm] and each port's time-area [mm2 s]."""
+    return {"rpm": to_display(ports.speeds, "rpm"),
+            "time_areas_mm2_s": {name: z / MM**2 for name, z in ports.time_areas.items()}}
+
+
+def draw_two_stroke_speed(d, t) -> Figure:
     """Time-area of each port against the crank speed, Z = f(n) (Valve-train practical works (n.d.), work 8)."""
     fig = Figure(figsize=(8, 4.5))
     ax = fig.subplots()
-    for name, z in ports.time_areas.items():
-        ax.plot(to_display(ports.speeds, "rpm"), z / MM**2, label=name)
+    for name, z in d["time_areas_mm2_s"].items():
+        ax.plot(d["rpm"], z, label=name)
     ax.set_xlabel(t["speed"])
     ax.set_ylabel(t["port_time_area"])
     ax.grid(alpha=0.3)
@@ -287,22 +429,34 @@ def two_stroke_speed_figure(ports, t):
     return fig
 
 
-def timing_figure(valves, t):
+def two_stroke_speed_figure(ports, t) -> Figure:
+    """:func:`draw_two_stroke_speed` of :func:`two_stroke_speed_data`."""
+    return draw_two_stroke_speed(two_stroke_speed_data(ports), t)
+
+
+def timing_data(valves) -> dict[str, Any]:
+    """The series of :func:`draw_timing`: crank angle [deg from the gas-exchange TDC], each valve's kind and lift
+    [mm] there, and where intake and exhaust are open together (None without both kinds)."""
+    crank = np.radians(np.linspace(-360.0, 360.0, 2881))
+    lifts, open_by_kind = {}, {}
+    for name, v in valves.items():
+        lift = v.law.valve_lift((crank - v.nose_crank) / 2.0, v.rocker_ratio, v.follower_model)
+        lifts[name] = (v.kind, lift / MM)
+        open_by_kind[v.kind] = open_by_kind.get(v.kind, np.zeros_like(crank, dtype=bool)) | (lift > 0.0)
+    overlap = open_by_kind["intake"] & open_by_kind["exhaust"] if len(open_by_kind) == 2 else None
+    return {"crank_deg": rad_to_deg(crank), "lifts_mm": lifts, "overlap": overlap}
+
+
+def draw_timing(d, t) -> Figure:
     """The valve timing diagram: every valve's lift against the crank angle from the gas-exchange TDC on one axis,
     the overlap of intake and exhaust shaded."""
     fig = Figure(figsize=(9, 4))
     ax = fig.subplots()
-    crank = np.radians(np.linspace(-360.0, 360.0, 2881))
-    open_by_kind = {}
-    for name, v in valves.items():
-        theta = (crank - v.nose_crank) / 2.0
-        lift = v.law.valve_lift(theta, v.rocker_ratio, v.follower_model)
-        ax.plot(rad_to_deg(crank), lift / MM, label=name if name == v.kind else f"{name} ({t[v.kind]})",
-                color="C0" if v.kind == "intake" else "C3")
-        open_by_kind[v.kind] = open_by_kind.get(v.kind, np.zeros_like(crank, dtype=bool)) | (lift > 0.0)
-    if len(open_by_kind) == 2:
-        overlap = open_by_kind["intake"] & open_by_kind["exhaust"]
-        ax.fill_between(rad_to_deg(crank), 0.0, 1.0, where=overlap, transform=ax.get_xaxis_transform(),
+    for name, (kind, lift) in d["lifts_mm"].items():
+        ax.plot(d["crank_deg"], lift, label=name if name == kind else f"{name} ({t[kind]})",
+                color="C0" if kind == "intake" else "C3")
+    if d["overlap"] is not None:
+        ax.fill_between(d["crank_deg"], 0.0, 1.0, where=d["overlap"], transform=ax.get_xaxis_transform(),
                         color="0.85", label=t["overlap"])
     for angle, label in ((-180, t["bdc"]), (0, t["tdc"]), (180, t["bdc"])):
         ax.axvline(angle, color="0.5", lw=0.6, ls="--")
@@ -317,21 +471,15 @@ def timing_figure(valves, t):
     return fig
 
 
-def _event_window(d, margin_deg=10.0):
-    """Camshaft angles of the sweep around the event (where any speed or the rigid lift is off the seat)."""
-    sw = d.sweep
-    open_ = (sw.kinematic_lift > 0.0) | np.any(sw.lift > 1e-6, axis=0)
-    idx = np.flatnonzero(open_)
-    if idx.size == 0:
-        return np.ones(sw.theta.size, dtype=bool)
-    lo, hi = sw.theta[idx[0]] - np.radians(margin_deg), sw.theta[idx[-1]] + np.radians(margin_deg)
-    return (sw.theta >= lo) & (sw.theta <= hi)
+def timing_figure(valves, t) -> Figure:
+    """:func:`draw_timing` of :func:`timing_data`."""
+    return draw_timing(timing_data(valves), t)
 
 
 def dynamics_map_figure(name, d, t):
     """Maps over camshaft angle and engine speed: valve lift minus the rigid lift, and the cam contact force."""
     sw = d.sweep
-    keep = _event_window(d)
+    keep = event_window(d)
     x = rad_to_deg(sw.theta[keep])
     y = to_display(np.asarray(d.per_speed.speed), "rpm")
     fig = Figure(figsize=(9, 8))
@@ -481,15 +629,24 @@ def hydraulic_sweep_figure(valve, t):
 DYNAMICS_FIGURES = {"dynamics_map": dynamics_map_figure, "dynamics_speed": dynamics_speed_figure}
 
 
-def write_dynamics_plots(name, d, folder, t):
-    """Write the dynamics figures of one valve as PNG; return ``{kind: filename}``."""
-    out = {}
-    for kind, make in DYNAMICS_FIGURES.items():
-        fname = f"{name}_{kind}.png"
-        make(name, d, t).savefig(folder / fname, dpi=110)
-        out[kind] = fname
-    return out
+def write_dynamics_plots(name, d, folder, t, save=None):
+    """Write the dynamics figures of one valve as PNG; return ``{kind: filename}``.  ``save(draw, filename)`` draws
+    and writes one figure (``draw()`` makes it), by default at once (:func:`write_plots` passes its own)."""
+    save = save or _saver(folder)
+    return {kind: save(lambda make=make: make(name, d, t), f"{name}_{kind}.png")
+            for kind, make in DYNAMICS_FIGURES.items()}
 
+
+def _saver(folder, share=(0, 1)):
+    """``save(draw, filename)``: draw the figure and write it into ``folder`` if it is this share's (the figures are
+    dealt round in turn to ``share[1]`` drawers, this one ``share[0]``); return the filename either way."""
+    turn = itertools.count()
+
+    def save(draw, fname):
+        if next(turn) % share[1] == share[0]:
+            draw().savefig(folder / fname, dpi=110)
+        return fname
+    return save
 
 ENGINE_FIGURES = {"crank": {"crank_forces": crank_forces_figure, "crank_torque": crank_torque_figure,
                             "crank_pin_polar": crank_pin_figure},
@@ -510,39 +667,39 @@ give (the time-area, the radius of curvature, the crank forces and pin load, the
 costs about 0.1 s, a design's numbers a few milliseconds."""
 
 
-def write_plots(results, folder, lang="en", figures="main"):
+def write_plots(results, folder, lang="en", figures="main", share=(0, 1)):
     """Write the figures of ``figures`` (one of :data:`FIGURE_SETS`) as PNG; return ``{valve name or
-    "crank"/"two_stroke": {kind: filename}}`` (and ``"(timing)"``: the timing diagram's filename) of those written."""
+    "crank"/"two_stroke": {kind: filename}}`` (and ``"(timing)"``: the timing diagram's filename) of those written.
+
+    ``share = (k, n)`` draws only every n-th figure from the k-th (of those in the order drawn): n drawers, each
+    with its own k, write them all between them and each returns the whole dict."""
     if figures not in FIGURE_SETS:
         raise ValueError(f"figures = {figures!r}; allowed: {', '.join(FIGURE_SETS)}")
     t = TEXT[lang]
     written = {}
+    save = _saver(folder, share)
 
     def wanted(kind):
         return figures == "all" or (figures == "main" and kind not in FIGURES_ON_REQUEST)
 
-    def save(fig, fname):
-        fig.savefig(folder / fname, dpi=110)
-        return fname
-
     for name, valve in results.valves.items():
-        written[name] = {kind: save(make(valve, t), f"{name}_{kind}.png") for kind, make in FIGURES.items()
-                         if wanted(kind)}
+        written[name] = {kind: save(lambda make=make: make(valve, t), f"{name}_{kind}.png")
+                         for kind, make in FIGURES.items() if wanted(kind)}
         if valve.dynamics is not None and figures != "none":
-            written[name].update(write_dynamics_plots(name, valve.dynamics, folder, t))
+            written[name].update(write_dynamics_plots(name, valve.dynamics, folder, t, save))
         if valve.grinding is not None and wanted("grinding"):
-            written[name]["grinding"] = save(grinding_figure(valve, t), f"{name}_grinding.png")
+            written[name]["grinding"] = save(lambda: grinding_figure(valve, t), f"{name}_grinding.png")
         if valve.hydraulic is not None:
             if wanted("hydraulic"):
-                written[name]["hydraulic"] = save(hydraulic_figure(valve, t), f"{name}_hydraulic.png")
+                written[name]["hydraulic"] = save(lambda: hydraulic_figure(valve, t), f"{name}_hydraulic.png")
             if wanted("hydraulic_sweep"):
-                written[name]["hydraulic_sweep"] = save(hydraulic_sweep_figure(valve, t),
+                written[name]["hydraulic_sweep"] = save(lambda: hydraulic_sweep_figure(valve, t),
                                                         f"{name}_hydraulic_sweep.png")
     if results.valves and wanted("timing"):
-        written["(timing)"] = save(timing_figure(results.valves, t), "valve_timing.png")
+        written["(timing)"] = save(lambda: timing_figure(results.valves, t), "valve_timing.png")
     for stage, figures_of_stage in ENGINE_FIGURES.items():
         data = getattr(results, stage)
         if data is not None:
-            written[stage] = {kind: save(make(data, t), f"{kind}.png") for kind, make in figures_of_stage.items()
-                              if wanted(kind)}
+            written[stage] = {kind: save(lambda make=make: make(data, t), f"{kind}.png")
+                              for kind, make in figures_of_stage.items() if wanted(kind)}
     return written

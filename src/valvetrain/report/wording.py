@@ -7,9 +7,10 @@ reads and into the specification's key names.  results.json and the CLI take the
 report its own language.
 """
 
+from ..locale import check_text
 from ..units import to_display
 from .i18n import TEXT
-from .names import quantity_text, unit_text
+from .names import unit_text
 
 DIAGNOSIS_WORDS = {
     "en": {
@@ -106,7 +107,7 @@ def diagnosis_text(d, lang):
         unit = unit_text(x.unit, lang) if lang != "en" else x.unit
         said.append(words["conflict"].format(
             tag=f"{x.spring} " if d.pair else "", spring=t.get("line_" + x.spring, ""),
-            quantity=x.quantity if lang == "en" else quantity_text(x.quantity, lang),
+            quantity=x.quantity if lang == "en" else check_text(f"spring.{x.check}", {}, lang),
             value=to_display(x.value, x.unit), limit=to_display(x.limit, x.unit), unit=unit,
             spaced_unit=f" {unit}" if unit else "", shortfall=x.shortfall))
     text = [words["head_pair" if d.pair else "head"] + "; ".join(said) + "."]

@@ -720,9 +720,10 @@ class TableCam(_CamBase):
         closes = (nose + 2.0 * fall) - (np.pi if valve.kind == "intake" else 0.0)
         rec["opens_deg_at_0.1mm"], rec["closes_deg_at_0.1mm"] = _finite(rad_to_deg(opens)), _finite(rad_to_deg(closes))
         found = []
-        for key, given, derived in (("opens_deg", valve.opens, opens), ("closes_deg", valve.closes, closes)):
+        for code, given, derived in (("law.measured.opens", valve.opens, opens),
+                                     ("law.measured.closes", valve.closes, closes)):
             if given is not None and np.isfinite(derived):
-                found.append(check(f"{key} against the measured table", given, derived - 2.0 * DEG,
+                found.append(check(code, given, derived - 2.0 * DEG,
                                    derived + 2.0 * DEG, unit="crank deg",
                                    source="the table's timing at 0.1 mm valve lift (+-2 crank deg)"))
         return {"measured": rec}, found

@@ -3,10 +3,23 @@
 Units are in the key names (``_mm``, ``_deg``, ``_rpm``, ``_MPa``); :mod:`.si` converts them to SI.
 """
 
+from dataclasses import dataclass
 import math
 from typing import Annotated
 
 from pydantic import AfterValidator, BaseModel, ConfigDict, Field
+
+
+@dataclass(frozen=True)
+class Range:
+    """The bounds of a bounded field, kept in its annotation for the editors that draw an input for it (the
+    designer in the browser): pydantic ignores it, the field's validator enforces it."""
+
+    low: float
+    high: float
+    unit: str = ""
+    low_open: bool = True
+    high_open: bool = False
 
 
 def _bounded(low, high, unit="", low_open=True, high_open=False):
@@ -23,7 +36,7 @@ def _bounded(low, high, unit="", low_open=True, high_open=False):
             raise ValueError(text)
         return v
 
-    return Annotated[float, AfterValidator(check)]
+    return Annotated[float, AfterValidator(check), Range(low, high, unit, low_open, high_open)]
 
 
 Length = lambda low, high, **kw: _bounded(low, high, "mm", **kw)  # noqa: E731

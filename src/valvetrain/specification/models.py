@@ -517,8 +517,9 @@ _NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_-]{0,31}$")
 class Acceptance(_Model):
     """[[accepted]]: a check the user accepts outside its range, with the reason (see :mod:`valvetrain.checks`).
 
-    ``quantity`` is the check's quantity as printed (``"intake: Phi2/Phi3"``) or, for a valve's check, without the
-    valve (``"Phi2/Phi3"``: every valve, or the one ``valve`` names).  A failure (a strength or spring limit) can be
+    ``quantity`` is the check's code (``"law.kurz.phi2_to_phi3"``, docs/checks.md) or its quantity as printed
+    (``"intake: Phi2/Phi3"``) or, for a valve's check, without the valve (``"Phi2/Phi3"``: every valve, or the one
+    ``valve`` names); :func:`valvetrain.checks.resolve` maps a text to its code.  A failure (a strength or spring limit) can be
     accepted like a warning; it stays marked as a failure."""
 
     quantity: Annotated[str, Field(min_length=1, max_length=200)]

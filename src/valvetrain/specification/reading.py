@@ -12,7 +12,7 @@ import tomli_w
 
 from ..files import shown_path
 from .messages import SpecError
-from .models import resolve_path, validate
+from .models import Spec, resolve_path, validate
 
 
 def input_files(spec):
@@ -36,7 +36,7 @@ MAX_SPEC_CHARACTERS = 1_000_000
 indicator diagram belongs in a file of its own)."""
 
 
-def parse_spec(text, source="<string>", source_dir=None):
+def parse_spec(text, source="<string>", source_dir=None) -> Spec:
     """Parse and validate a specification: TOML text, or a document already parsed (a dict of its tables, as
     :func:`tomllib.loads` gives it); relative file names in it are read from ``source_dir``."""
     if isinstance(text, dict):
@@ -58,7 +58,7 @@ def parse_spec(text, source="<string>", source_dir=None):
     return validate(data)
 
 
-def load_spec(path):
+def load_spec(path) -> Spec:
     """Read and validate a specification file."""
     try:
         text = Path(path).read_text(encoding="utf-8")
@@ -74,7 +74,7 @@ def example_text():
     return files("valvetrain").joinpath("data/example.toml").read_text(encoding="utf-8")
 
 
-def example_spec():
+def example_spec() -> Spec:
     """The built-in example, validated."""
     return parse_spec(example_text(), "built-in example")
 

@@ -13,6 +13,7 @@ angle a camshaft angle (the spec says which in its key documentation).
 
 from dataclasses import field, make_dataclass
 from functools import cache
+from typing import Any
 
 import numpy as np
 from pydantic import BaseModel
@@ -34,6 +35,12 @@ def _convert(value, factor, root):
 
 
 @cache
+def _keys(model):
+    """``(key, SI field, factor to SI)`` of each key of a section's model."""
+    return tuple((key, *si_name(key)) for key in model.model_fields)
+
+
+@cache
 def _view_class(model):
     fields = [(si_name(key)[0], object) for key in model.model_fields]
     fields += [(name, object) for name in getattr(model, "si_extras", ())]
@@ -43,7 +50,7 @@ def _view_class(model):
                                                 "without the unit, in SI; ``section`` is the section itself)."})
 
 
-def si(section, root=None):
+def si(section, root=None) -> Any:
     """The SI view of a specification section (a pydantic model of :mod:`valvetrain.specification`).
 
     A section may name data it brings along in ``si_extras`` and provide them with
@@ -58,8 +65,7 @@ def si(section, root=None):
     >>> valve.throat_diameter, round(valve.opens, 6), valve.cam.law
     (0.0368, 0.453786, 'kurz')
     """
-    values = {si_name(key)[0]: _convert(getattr(section, key), si_name(key)[1], root)
-              for key in type(section).model_fields}
+    values = {name: _convert(getattr(section, key), factor, root) for key, name, factor in _keys(type(section))}
     if getattr(section, "si_extras", ()):
         values.update(section.read_extras(root))
     return _view_class(type(section))(**values, section=section)

@@ -114,7 +114,7 @@ class _ArrayCheck:
     """A check of many candidates at once: the arguments of :func:`valvetrain.checks.check` with array
     values and bounds; ``passed`` and ``margin`` follow :class:`valvetrain.checks.Check` element by element."""
 
-    quantity: str
+    code: str
     value: np.ndarray
     low: object = None
     high: object = None
@@ -148,7 +148,7 @@ class _ArrayCheck:
         def pick(x):
             return None if x is None else float(np.broadcast_to(x, self.value.shape)[i])
 
-        return check(self.quantity, float(self.value[i]), pick(self.low), pick(self.high), unit=self.unit,
+        return check(self.code, float(self.value[i]), pick(self.low), pick(self.high), unit=self.unit,
                      source=self.source, severity=self.severity)
 
 
@@ -275,33 +275,33 @@ def evaluate_springs(preload, rate, lift, mean_diameter, wire_diameter, material
     mass = spring_mass(big_d, d, coils + material.end_coils, rho)
     grade_note = f"{material.grade}: {material.source}"
     checks = {
-        "tau_max": _ArrayCheck("tau_max", tau_max, high=allowable, unit="MPa", severity="failure",
+        "tau_max": _ArrayCheck("spring.tau_max", tau_max, high=allowable, unit="MPa", severity="failure",
                                source=f"Valve-train practical works (n.d.), eq. (6.1) with [tau] of {grade_note}"),
-        "fatigue_safety": _ArrayCheck("fatigue safety factor", safety, low=_minimum(material.min_safety),
+        "fatigue_safety": _ArrayCheck("spring.fatigue_safety", safety, low=_minimum(material.min_safety),
                                       severity="failure", source=f"Valve-train practical works (n.d.), eq. (6.12): n >= 1.2-1.4; tau_-1 "
                                                                  f"and psi_tau of {grade_note}"),
-        "resonance_ratio": _ArrayCheck("resonance ratio omega_c1/omega_cam", omega / camshaft_speed,
+        "resonance_ratio": _ArrayCheck("spring.resonance_ratio", omega / camshaft_speed,
                                        low=_minimum(material.min_resonance_ratio),
                                        source="Valve-train practical works (n.d.), eq. (6.14): >= 10 (hard to meet at high speed, corrections note 27)"),
-        "working_coils": _ArrayCheck("working coils", exact, low=2.0, source="Valve-train practical works (n.d.), eq. (6.2)"),
-        "deflection_ratio": _ArrayCheck("f_max/f_min", (p0 + actual * lift) / p0, *ratio_range,
+        "working_coils": _ArrayCheck("spring.working_coils", exact, low=2.0, source="Valve-train practical works (n.d.), eq. (6.2)"),
+        "deflection_ratio": _ArrayCheck("spring.deflection_ratio", (p0 + actual * lift) / p0, *ratio_range,
                                         source="Valve-train practical works (n.d.), work 5 (with the rounded coils)"),
     }
     if max_installed_length is not None:
-        checks["installed_length"] = _ArrayCheck("installed length", lengths["installed_length"],
+        checks["installed_length"] = _ArrayCheck("spring.installed_length", lengths["installed_length"],
                                                  high=max_installed_length, unit="mm",
                                                  source="installed_length_mm of the specification, or "
                                                         f"{INSTALLED_TO_LIFT_MAX:g} x lift (a stated default)")
     if max_free_length is not None:
-        checks["free_length"] = _ArrayCheck("free length", lengths["free_length"], high=max_free_length, unit="mm",
+        checks["free_length"] = _ArrayCheck("spring.free_length", lengths["free_length"], high=max_free_length, unit="mm",
                                             source="max_free_length_mm of the specification")
     if imposed is not None:
-        checks["coil_gap_at_full_lift"] = _ArrayCheck("coil gap at full lift / wire diameter",
+        checks["coil_gap_at_full_lift"] = _ArrayCheck("spring.coil_gap_at_full_lift",
                                                       lengths["min_pitch"] / d - 1.0, low=material.gap_factor,
                                                       source="Valve-train practical works (n.d.), eq. (6.3): Delta_min = 0.10-0.15 d")
     if partner_frequency is not None:
         difference = np.abs(omega - partner_frequency) / partner_frequency
-        checks["frequency_difference"] = _ArrayCheck("frequency difference", difference,
+        checks["frequency_difference"] = _ArrayCheck("spring.frequency_difference", difference,
                                                      low=_minimum(min_frequency_difference),
                                                      source="Valve-train practical works (n.d.), eq. (6.14): the two ratios must differ "
                                                             f"({min_frequency_difference:.0%} assumed)")

@@ -11,7 +11,7 @@ smallest margin.
 All values are SI; ``unit`` names how they are shown.
 """
 
-from dataclasses import dataclass, fields
+from dataclasses import dataclass
 import math
 
 import numpy as np
@@ -99,7 +99,7 @@ def pressure_angle(design, limit):
     """
     if not design.follower_model.rolling:
         return None
-    return check("max pressure angle", design.profile.contact.max_pressure_angle, high=limit, unit="deg",
+    return check("profile.pressure_angle.max", design.profile.contact.max_pressure_angle, high=limit, unit="deg",
                  source=SOURCE_SYNTHESIS, severity="failure")
 
 
@@ -126,7 +126,7 @@ def concave_radius(design, wheel_radius):
         return None
     radius = design.profile.contact.min_concave_radius
     ratio = 0.0 if radius is None else wheel_radius / abs(radius)
-    return check("grinding wheel radius / concave radius", ratio, high=1.0, source=SOURCE_SYNTHESIS,
+    return check("synthesis.concave_radius", ratio, high=1.0, source=SOURCE_SYNTHESIS,
                  severity="failure", note="no concave stretch" if radius is None else "")
 
 
@@ -161,7 +161,7 @@ def spring_reserve_value(design, preload=None, rate=None):
 
 def spring_reserve(design, low, preload=None, rate=None):
     """:func:`spring_reserve_value` against the smallest reserve ``low``."""
-    return check("spring reserve against inertia", spring_reserve_value(design, preload, rate), low=low,
+    return check("synthesis.spring_reserve", spring_reserve_value(design, preload, rate), low=low,
                  source=SOURCE_SYNTHESIS, severity="failure")
 
 
@@ -170,10 +170,10 @@ def acceleration_band(design, low=None, high=None):
     cam = design.cam
     out = []
     if high is not None:
-        out.append(check("max tappet acceleration", cam.max_acceleration, high=high, unit="m/s2",
+        out.append(check("tappet_acceleration.max", cam.max_acceleration, high=high, unit="m/s2",
                          source=SOURCE_MANUAL))
     if low is not None:
-        out.append(check("min tappet acceleration", cam.min_acceleration, low=low, unit="m/s2", source=SOURCE_MANUAL))
+        out.append(check("tappet_acceleration.min", cam.min_acceleration, low=low, unit="m/s2", source=SOURCE_MANUAL))
     return out
 
 
@@ -238,7 +238,7 @@ def contact_stress_value(design, width, modulus=strength.STEEL_MODULUS, top=1.0)
 
 def contact_stress(design, high, width, modulus=strength.STEEL_MODULUS, top=1.0):
     """:func:`contact_stress_value` against the allowable ``high`` [Pa]."""
-    return check("Hertz contact stress", contact_stress_value(design, width, modulus, top), high=high, unit="MPa",
+    return check("synthesis.contact_stress", contact_stress_value(design, width, modulus, top), high=high, unit="MPa",
                  source=SOURCE_MANUAL + ", eqs. (7.4)-(7.5)", severity="failure",
                  note=f"cam width {width / MM:.4g} mm, from standstill to {top:.4g} x the rated speed")
 
@@ -253,7 +253,7 @@ def rho_min(design, low):
     ----------
     Shang Hanji (1988), section 2.1 (rho_min >= 2 mm).
     """
-    return check("rho_min (cam profile)", design.profile.rho_min, low=low, unit="mm", source=SOURCE_CRITERIA,
+    return check("profile.rho_min", design.profile.rho_min, low=low, unit="mm", source=SOURCE_CRITERIA,
                  severity="failure")
 
 
@@ -264,12 +264,12 @@ def ramp_velocity(design, band):
     if law.ramp_angle <= 0.0:
         return None
     v = float(abs(law.derivatives(np.array([law.valve_opens]))[1][0]))
-    return check("ramp end velocity", v, *band, unit="mm/deg", source=SOURCE_MANUAL + ", eq. (2.1)")
+    return check("ramp.end_velocity", v, *band, unit="mm/deg", source=SOURCE_MANUAL + ", eq. (2.1)")
 
 
 def seating_velocity(design, band):
     """The valve's seating velocity at the rated speed against ``band`` [m/s] (a configurable default)."""
-    return check("valve seating velocity", design.cam.seating_velocity, *band, unit="m/s",
+    return check("synthesis.seating_velocity", design.cam.seating_velocity, *band, unit="m/s",
                  source="a configurable default (no primary source)")
 
 
@@ -282,7 +282,7 @@ def piston_gap(design, low):
     """
     if design.clearance is None:
         return None
-    return check("valve-piston clearance", design.clearance.min_gap, low=low, unit="mm",
+    return check("piston.clearance", design.clearance.min_gap, low=low, unit="mm",
                  source="Shang Hanji (1988), eqs. (2.13)-(2.14)", severity="failure", strict_low=True)
 
 
@@ -307,7 +307,7 @@ def no_jump(design, factor):
     rated = d.at_rated_speed.speed
     jumps = np.isfinite(d.jump_speed)
     value = (d.jump_speed if jumps else d.speed_range[1]) / rated
-    return check("follower separation (jump) speed / rated speed", value, low=factor,
+    return check("dynamics.jump_speed", value, low=factor,
                  source="Shang Hanji (1988), chapter 3",
                  note="" if jumps else "no separation in the swept range: its top speed")
 
@@ -340,6 +340,3 @@ SINGLE_LIMITS = (("max_pressure_angle", pressure_angle), ("grinding_wheel_radius
                  ("min_spring_reserve", spring_reserve), ("min_rho", rho_min), ("ramp_velocity", ramp_velocity),
                  ("seating_velocity", seating_velocity), ("min_piston_gap", piston_gap), ("no_jump_factor", no_jump))
 """The limits of :class:`Limits` that one constraint function checks alone: (field, function)."""
-
-LIMIT_NAMES = tuple(f.name for f in fields(Limits))
-"""The fields of :class:`Limits`."""

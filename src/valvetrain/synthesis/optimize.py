@@ -48,6 +48,7 @@ from ..design.dynamics import SPEED_RANGE, build_train, dynamics_stage
 from ..design.valve import MAX_LIFT_TO_THROAT
 from ..dynamics.models import one_mass_train
 from ..dynamics.sweep import sweep
+from ..locale import record_text
 from ..laws import PolydyneLaw
 from ..laws.kurz import RAMP_VELOCITY_RANGE_MM_PER_DEG
 from ..specification import SpecError
@@ -275,13 +276,13 @@ def check_bounds(section, name, variables):
                                          f"the range of valves.{name}.{v.path}: {reason}") from None
 
 
-def _relaxed(c, quantity, notes):
+def _relaxed(c, notes):
     """The band of a start check, widened to the start's value where the start lies outside it (noted)."""
     if c is None:
         return None, None
     low, high = c.low, c.high
     if not c.passed:
-        notes.append({"quantity": quantity, "value": c.shown_value, "unit": c.unit, "range": c.range})
+        notes.append({"quantity": record_text(c.code), "code": c.code, "value": c.shown_value, "unit": c.unit, "range": c.range})
         low = None if low is None else min(low, c.value - RELAXED * abs(c.value))
         high = None if high is None else max(high, c.value + RELAXED * abs(c.value))
     return low, high
@@ -320,23 +321,22 @@ def design_limits(design, wheel_radius=None, no_jump_factor=None, ramp_varied=Tr
         i_k omega times it).
     """
     notes = []
-    by_name = {c.quantity.split(": ", 1)[-1]: c for c in design.checks}
-    high, low = (_relaxed(by_name.get(q), q, notes)[i] for q, i in (("max tappet acceleration", 1),
-                                                                     ("min tappet acceleration", 0)))
+    by_code = {c.code: c for c in design.checks}
+    high, low = (_relaxed(by_code.get(code), notes)[i] for code, i in (("tappet_acceleration.max", 1),
+                                                                        ("tappet_acceleration.min", 0)))
     if wheel_radius is None and design.grinding is not None:
         wheel_radius = design.grinding.wheel_radius
     limits = Limits(max_acceleration=high, min_acceleration=low, grinding_wheel_radius=wheel_radius,
                     min_spring_reserve=design.drive.spring.spring_reserve, no_jump_factor=no_jump_factor,
                     cam_width=cam_width or CAM_WIDTH_TO_BASE_RADIUS * design.cam.base_radius, top_speed=top_speed,
                     seating_velocity=None if seating_velocity is None else (0.0, seating_velocity))
-    start = {c.quantity: c for c in constraints(design, replace(limits, no_jump_factor=None))}
-    limits = replace(limits, max_contact_stress=_relaxed(start["Hertz contact stress"], "Hertz contact stress",
-                                                         notes)[1])
-    c = start.get("ramp end velocity")
+    start = {c.code: c for c in constraints(design, replace(limits, no_jump_factor=None))}
+    limits = replace(limits, max_contact_stress=_relaxed(start["synthesis.contact_stress"], notes)[1])
+    c = start.get("ramp.end_velocity")
     if not ramp_varied:
         limits = replace(limits, ramp_velocity=None)
     elif c is not None:
-        limits = replace(limits, ramp_velocity=_relaxed(c, "ramp end velocity", notes))
+        limits = replace(limits, ramp_velocity=_relaxed(c, notes))
     return limits, notes
 
 
@@ -778,8 +778,8 @@ def final_checks(design, spec, limits, scale=1.0, search_spring=None):
         out.append(replace(spring_reserve(design, limits.min_spring_reserve * scale, search_spring.preload * scale,
                                           search_spring.rate * scale),
                            note=START_SPRING + (f" x {scale:.4g}" if scale != 1.0 else "")))
-    quantities = {c.quantity for c in out}
-    own = [c for c in design.checks if c.severity == "failure" and c.quantity.split(": ", 1)[-1] not in quantities]
+    codes = {c.code for c in out}
+    own = [c for c in design.checks if c.severity == "failure" and c.code not in codes]
     return out + own
 
 

@@ -1,0 +1,89 @@
+"""The designer's speed in the browser (issue 25): release of a drag -> redrawn kinematic plots and checks, and ->
+redrawn sweep panel, measured by the page itself (``window.vtTimes``, ``window.vtSweepTimes``: performance.now()
+at the plot's pan end to the second animation frame after the update arrived).
+
+Run on demand: ``python benchmarks/bench_web.py [drags]`` (default 20) with `valvetrain serve` started by the script
+on a free port of 127.0.0.1 and Debian's chromium (headless) driven by Playwright, both on this machine.  Each
+drag moves the nose handle of the built-in example by about 1 mm towards 9.5 mm (below the 10 mm of the example, where the spring passes: above it the design diagnoses the spring, about 1 s) and waits for both redraws.  Printed beside
+each median: the target of the issue and the server's share measured in the same run (``valvetrain.api.design`` and
+``valvetrain.api.sweep`` of the same specification in this process).
+"""
+
+import re
+import shutil
+import statistics
+import subprocess
+import sys
+import time
+import tomllib
+
+from playwright.sync_api import sync_playwright
+
+from valvetrain import api
+from valvetrain.specification import example_text
+
+PIXELS = """() => {
+    const m = Bokeh.documents[0].get_model_by_name('plot-lift');
+    const v = Bokeh.index.find_one(m);
+    const r = v.canvas_view.el.getBoundingClientRect();
+    const src = Bokeh.documents[0].get_model_by_name('handles-lift').data;
+    const y = Array.from(src instanceof Map ? src.get('y') : src.y)[0];
+    return [r.left + v.frame.x_scale.compute(0), r.top + v.frame.y_scale.compute(y), y,
+            Math.abs(v.frame.y_scale.compute(1) - v.frame.y_scale.compute(0))];
+}"""
+
+
+def server_share(repeats=10):
+    document = tomllib.loads(example_text())
+    api.sweep(document)
+    out = []
+    for call in (api.design, api.sweep):
+        times = []
+        for _ in range(repeats):
+            t = time.perf_counter()
+            call(document)
+            times.append(1e3 * (time.perf_counter() - t))
+        out.append(statistics.median(times))
+    return out
+
+
+def main(drags=20):
+    proc = subprocess.Popen([sys.executable, "-u", "-m", "valvetrain", "serve", "--port", "0", "--no-show"],
+                            stdout=subprocess.PIPE, text=True)
+    url = re.search(r"http://127\.0\.0\.1:\d+/", proc.stdout.readline())[0]
+    try:
+        with sync_playwright() as p:
+            browser = p.chromium.launch(executable_path=shutil.which("chromium"), args=["--no-sandbox"])
+            page = browser.new_page(viewport={"width": 1700, "height": 1300})
+            page.goto(url)
+            page.wait_for_function("() => window.Bokeh && Bokeh.documents.length > 0 && Bokeh.documents[0]"
+                                   ".get_model_by_name('checks').source.get_length() > 0", timeout=60_000)
+            page.wait_for_timeout(3000)
+            for _ in range(drags):
+                x, y, lift, per_mm = page.evaluate(PIXELS)
+                done = page.evaluate("() => [window.vtTimesDone || 0, window.vtSweepTimesDone || 0]")
+                step = (1 if lift < 9.5 else -1) * per_mm
+                page.mouse.move(x, y)
+                page.mouse.down()
+                page.mouse.move(x, y - step / 2, steps=4)
+                page.mouse.move(x, y - step, steps=4)
+                page.mouse.up()
+                page.wait_for_function(f"() => (window.vtTimesDone || 0) > {done[0]} && "
+                                       f"(window.vtSweepTimesDone || 0) > {done[1]}", timeout=60_000)
+            kinematic, sweep, arrived = page.evaluate("() => [window.vtTimes, window.vtSweepTimes, "
+                                                      "window.vtTimesArrived]")
+            browser.close()
+    finally:
+        proc.terminate()
+        proc.wait(timeout=20)
+    design_ms, sweep_ms = server_share()
+    print(f"drags: {len(kinematic)}")
+    print(f"release -> kinematic plots and checks redrawn: median {statistics.median(kinematic):.0f} ms "
+          f"(max {max(kinematic):.0f}); target <= 150 ms; api.design alone {design_ms:.0f} ms; the update arrived "
+          f"in the page after a median {statistics.median(arrived):.0f} ms (the rest is drawing)")
+    print(f"release -> sweep panel redrawn: median {statistics.median(sweep):.0f} ms (max {max(sweep):.0f}); "
+          f"target <= 1000 ms; api.sweep alone {sweep_ms:.0f} ms")
+
+
+if __name__ == "__main__":
+    main(int(sys.argv[1]) if len(sys.argv) > 1 else 20)

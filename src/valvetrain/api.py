@@ -1,0 +1,229 @@
+"""The JSON-in, JSON-out entry point: a specification as a plain dict in, results and plot series as plain data out.
+
+Notebooks, scripts in other languages (through a JSON pipe) and the browser designer (:mod:`valvetrain.web`) call
+these functions instead of the batch program's files: nothing is read or written on disk (a lift table or an
+indicator diagram named in the specification is read from its ``source_dir``, as ``valvetrain run`` reads it).
+
+* :func:`design` ``(spec) -> {"ok", "errors", "results", "series"}``: the design of ``valvetrain run``;
+* :func:`sweep` ``(spec) -> {"ok", "errors", "sweeps"}``: the speed sweep of ``valvetrain sweep`` (jump and bounce
+  speeds, seating velocity, contact force and the map of the lift error over angle and speed);
+* :func:`toml_text` ``(spec) -> str``: the specification as the TOML that ``valvetrain run`` reads back;
+* :func:`report_html` ``(spec, lang) -> str``: the design report (tables and checks) as HTML text.
+
+The dict is the structure of the TOML file (``{"engine": {...}, "valves": {"intake": {...}}, ...}``, as
+:func:`tomllib.loads` gives it).  Every number out is a plain float in the display unit named in its key (mm, deg,
+rpm, m/s, N); a value that is not finite is ``None``.  A specification that cannot be designed is no exception
+here: ``ok`` is false and ``errors`` holds one record per problem, ``{"path", "value", "message", "text"}`` (the
+dotted key, the value given as the message shows it or ``None``, what is allowed, and the whole line as the
+command line prints it).
+"""
+
+import json
+import math
+import re
+
+import numpy as np
+
+from .export import json_text
+from .specification import SpecError, spec_toml, validate
+from .units import MM, rad_to_deg, to_display
+
+_PROBLEM = re.compile(r"(?P<path>[^\s=:]+)(?: = (?P<value>.+?))?: (?P<message>.+)", re.DOTALL)
+"""A message of :class:`~valvetrain.specification.SpecError`: ``key.path = value: what is allowed`` or ``key.path:
+what is wrong``."""
+
+
+def error_records(err):
+    """The problems of a :class:`~valvetrain.specification.SpecError` as records ``{"path", "value", "message",
+    "text"}``; a line that names no key has the path ``""``."""
+    out = []
+    for text in err.problems:
+        m = _PROBLEM.fullmatch(text)
+        out.append({"path": m["path"], "value": m["value"], "message": m["message"], "text": text} if m
+                   else {"path": "", "value": None, "message": text, "text": text})
+    return out
+
+
+def plain(data):
+    """Nested dicts, lists, numpy arrays and numbers as strict JSON data (a value that is not finite is None)."""
+    if isinstance(data, dict):
+        return {k: plain(v) for k, v in data.items()}
+    if isinstance(data, np.ndarray) and data.dtype.kind == "f":
+        out = data.astype(object)
+        out[~np.isfinite(data)] = None
+        return out.tolist()
+    if isinstance(data, (list, tuple, np.ndarray)):
+        return [plain(v) for v in data]
+    if isinstance(data, np.generic):
+        data = data.item()
+    if isinstance(data, float):
+        return data if math.isfinite(data) else None
+    if data is None or isinstance(data, (str, bool, int)):
+        return data
+    return json.loads(json_text(data))
+
+
+def _column(x, unit=None):
+    return np.asarray(x if unit is None else to_display(np.asarray(x), unit), dtype=float)
+
+
+def valve_series(v):
+    """The plot series of one :class:`~valvetrain.design.ValveDesign` (display units in the keys).
+
+    Kinematics against the camshaft angle from the nose (the tappet's lift and the valve's; the tappet's
+    velocity, acceleration and jerk at the rated speed times the rocker ratio: the valve's while it is off its
+    seat, on a ramp the motion that closes the clearance), the law's segment boundaries, the radius of
+    curvature, the curtain area and the running time-area against the crank angle from the gas-exchange TDC, the
+    contour (cam frame, nose on +y) with its heel circle, and the spring's required force and chosen line against
+    the valve lift.
+    """
+    tab, drive = v.table, v.drive
+    i = v.rocker_ratio
+    order = np.argsort(drive.lift)
+    lift = np.asarray(drive.lift)[order]
+    top = np.array([0.0, float(lift.max())])
+    chosen = drive.lines["chosen"]
+    return {
+        "cam_deg": rad_to_deg(tab.cam_angle),
+        "crank_deg": rad_to_deg(v.nose_crank + 2.0 * tab.cam_angle),
+        "tappet_lift_mm": _column(tab.lift) / MM,
+        "valve_lift_mm": _column(tab.valve_lift) / MM,
+        "valve_velocity_m_s": i * _column(tab.velocity),
+        "valve_acceleration_m_s2": i * _column(tab.acceleration),
+        "valve_jerk_m_s3": i * _column(tab.jerk),
+        "segments_cam_deg": rad_to_deg(np.asarray(v.law.breakpoints)),
+        "rho_mm": _column(tab.rho) / MM,
+        "curtain_area_mm2": _column(tab.curtain_area) / MM**2,
+        "time_area_mm2_s": _column(tab.time_area) / MM**2,
+        "contour_x_mm": _column(v.contour[0]) / MM,
+        "contour_y_mm": _column(v.contour[1]) / MM,
+        "heel_radius_mm": v.heel_radius / MM,
+        "spring_lift_mm": lift / MM,
+        "required_force_N": _column(drive.required_force)[order],
+        "spring_line_lift_mm": top / MM,
+        "spring_line_force_N": _column(chosen.force(top)),
+    }
+
+
+def _parsed(spec):
+    """The validated :class:`~valvetrain.specification.Spec` of a dict, or the error records."""
+    if not isinstance(spec, dict):
+        return None, [{"path": "", "value": None, "message": f"a dict of the specification's tables is needed, not a "
+                       f"{type(spec).__name__}", "text": ""}]
+    try:
+        return validate(spec), []
+    except SpecError as err:
+        return None, error_records(err)
+
+
+def design(spec):
+    """Design a specification given as a dict: what ``valvetrain run`` computes, as plain data.
+
+    Parameters
+    ----------
+    spec : dict
+        The tables of a specification, as :func:`tomllib.loads` gives them (lengths in mm, angles in deg, speeds
+        in rpm, as the keys say).
+
+    Returns
+    -------
+    dict
+        ``ok`` (bool); ``errors`` (list of ``{"path", "value", "message", "text"}``, empty when ok); ``results``
+        (the dictionary of results.json, None when not ok); ``series`` (``valve name -> plot series``, see
+        :func:`valve_series`; None when not ok).
+    """
+    from .design import run
+
+    parsed, errors = _parsed(spec)
+    if parsed is None:
+        return {"ok": False, "errors": errors, "results": None, "series": None}
+    try:
+        results = run(parsed)
+    except SpecError as err:
+        return {"ok": False, "errors": error_records(err), "results": None, "series": None}
+    return {"ok": True, "errors": [], "results": plain(results.to_dict()),
+            "series": plain({name: valve_series(v) for name, v in results.valves.items()})}
+
+
+MAP_COLUMNS = 400
+"""About how many camshaft angles the map of the lift error keeps (every k-th of the sweep's grid): a picture's width."""
+
+
+def sweep_series(d):
+    """The speed-sweep series of one valve's :class:`~valvetrain.design.dynamics.DynamicsResult`: per speed the
+    smallest contact force, the seating velocity (None where the valve did not seat), the bounce; the headline
+    speeds; the map of the valve-lift error (valve lift minus the rigid lift, mm) over the camshaft angles of the
+    event (every speed's open stretch and 10 cam deg either side, thinned to about :data:`MAP_COLUMNS`) and the
+    speeds."""
+    from .design.dynamics import event_window
+
+    sw, keep = d.sweep, event_window(d)
+    step = max(1, int(np.count_nonzero(keep)) // MAP_COLUMNS)
+    p = d.per_speed
+    return {
+        "speed_rpm": to_display(np.asarray(p.speed), "rpm"),
+        "min_contact_force_N": list(p.min_contact_force),
+        "seating_velocity_m_s": list(p.seating_velocity),
+        "bounce_mm": np.asarray(p.bounce) / MM,
+        "jump_speed_rpm": to_display(d.jump_speed, "rpm"),
+        "bounce_speed_rpm": to_display(d.bounce_speed, "rpm"),
+        "rated_speed_rpm": to_display(d.at_rated_speed.speed, "rpm"),
+        "map_cam_deg": rad_to_deg(sw.theta[keep][::step]),
+        "map_lift_error_mm": sw.lift_error[:, keep][:, ::step] / MM,
+    }
+
+
+def sweep(spec, progress=None):
+    """The speed sweep of a specification given as a dict: what ``valvetrain sweep`` computes, as plain data.
+
+    Parameters
+    ----------
+    spec : dict
+        As for :func:`design`.  The valves with a ``[dynamics]`` section are swept (every valve with the default
+        section where none has one).
+    progress : callable, optional
+        ``progress(valve name, done, total)`` between speeds; an exception it raises ends the sweep (the
+        designer's way of dropping a sweep that a newer change made stale).
+
+    Returns
+    -------
+    dict
+        ``ok``, ``errors`` as for :func:`design`; ``sweeps``: ``valve name -> series`` (:func:`sweep_series`).
+    """
+    from .design import sweep_designs
+
+    parsed, errors = _parsed(spec)
+    if parsed is None:
+        return {"ok": False, "errors": errors, "sweeps": None}
+    try:
+        valves = sweep_designs(parsed, progress=progress)
+    except SpecError as err:
+        return {"ok": False, "errors": error_records(err), "sweeps": None}
+    return {"ok": True, "errors": [], "sweeps": plain({n: sweep_series(v.dynamics) for n, v in valves.items()})}
+
+
+def report_html(spec, lang="en"):
+    """The design report of a specification (a dict) as HTML text, in ``lang`` ("en" or "ru"): the report that
+    ``valvetrain run`` writes, its tables and checks, without figures (it names the command that draws them).
+
+    Raises
+    ------
+    SpecError
+        The specification does not validate or does not design.
+    """
+    from .design import run
+    from .report.html import render_report
+
+    return render_report(run(validate(spec)), {}, lang)
+
+
+def toml_text(spec):
+    """The specification (a dict) as TOML text, every default written out: ``valvetrain run`` reads it back to the
+    same design.
+
+    Raises
+    ------
+    SpecError
+        The specification does not validate.
+    """
+    return spec_toml(validate(spec))

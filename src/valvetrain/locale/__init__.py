@@ -1,0 +1,107 @@
+"""The message catalogue: the texts of the design checks in every language, kept as data.
+
+Every check of a design has a stable code (``tappet_acceleration.max``) and may have parameters (the exponent of a
+power-polynomial cam, the port of a two-stroke).  Its texts are renderings of the code from one file per language
+in this folder, loaded once:
+
+* ``en.toml`` ``[record]``: the check's English text in ``results.json``, the console and ``[[accepted]]``;
+* ``LANG.toml`` ``[checks]``: the check as the report in ``LANG`` names it;
+* ``LANG.toml`` ``[springs]``: the springs whose own checks are named after them.
+
+``{name}`` in a text stands for the parameter ``name``.  ``tests/test_catalogue.py`` fails when a code lacks a
+text in a language or a text names no code the package uses; docs/checks.md lists every code.
+"""
+
+from functools import cache
+from importlib.resources import files
+import re
+import string
+import tomllib
+
+LANGS = ("en", "ru")
+"""The languages of the catalogue (one ``LANG.toml`` each)."""
+
+
+@cache
+def catalogue(lang):
+    """The catalogue of ``lang`` as read from ``LANG.toml``."""
+    if lang not in LANGS:
+        raise ValueError(f"language {lang!r}: allowed {LANGS}")
+    return tomllib.loads(files("valvetrain.locale").joinpath(f"{lang}.toml").read_text(encoding="utf-8"))
+
+
+def codes():
+    """Every check code of the catalogue, in its order."""
+    return tuple(catalogue("en")["record"])
+
+
+def _template(section, code, lang="en"):
+    try:
+        return catalogue(lang)[section][code]
+    except KeyError:
+        raise ValueError(f"check code {code!r} has no text in src/valvetrain/locale/{lang}.toml [{section}]: "
+                         "add it (docs/architecture.md, Checks)") from None
+
+
+def parameters(code):
+    """The names of the parameters of a check code, in the order its English record names them."""
+    return tuple(name for _, name, _, _ in string.Formatter().parse(_template("record", code)) if name)
+
+
+def record_text(code, params=()):
+    """The English text of a check in the records (``results.json``, console, ``[[accepted]]``).
+
+    >>> record_text("law.power_polynomial.exponent", {"exponent": "n"})
+    'power-polynomial exponent n'
+    """
+    return _template("record", code).format(**dict(params))
+
+
+def check_text(code, params, lang):
+    """The name of a check in the report in ``lang`` (without the valve or chapter it belongs to).
+
+    >>> check_text("tappet_acceleration.max", {}, "ru")
+    'наибольшее ускорение толкателя a_T max'
+    """
+    return _template("checks", code, lang).format(**dict(params))
+
+
+def spring_text(spring, lang):
+    """The name of a spring of a drive (``spring``, ``outer``, ``inner``) in ``lang``."""
+    return catalogue(lang)["springs"][spring]
+
+
+@cache
+def _patterns():
+    out = []
+    for code in codes():
+        parts = [re.escape(lit) + ("" if name is None else f"(?P<{name}>.+?)")
+                 for lit, name, _, _ in string.Formatter().parse(_template("record", code))]
+        out.append((code, re.compile("".join(parts), re.IGNORECASE)))
+    return tuple(out)
+
+
+def code_of(text):
+    """The code and the parameters of a check's English record text (case and blanks as written), or None: the
+    texts printed before the codes stay valid names of their checks.
+
+    >>> code_of("Power-polynomial exponent  n")
+    ('law.power_polynomial.exponent', {'exponent': 'n'})
+    """
+    text = " ".join(text.split())
+    for code, pattern in _patterns():
+        m = pattern.fullmatch(text)
+        if m:
+            return code, m.groupdict()
+    return None
+
+
+def code_table():
+    """The Markdown table of every check code: its parameters and its texts in every language (docs/checks.md,
+    written by ``python tools/check_codes.py``)."""
+    head = ["code", "parameters", "record text (results.json, [[accepted]])", *(f"report ({lang})" for lang in LANGS)]
+    rows = [[f"`{code}`", ", ".join(parameters(code)), _template("record", code),
+             *(_template("checks", code, lang) for lang in LANGS)] for code in codes()]
+    lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
+    lines += ["| " + " | ".join(cell.replace("|", "\\|") for cell in row) + " |" for row in rows]
+    return "\n".join(lines)

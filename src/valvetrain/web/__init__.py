@@ -1,0 +1,43 @@
+"""The designer in the browser: ``valvetrain serve [FILE]`` (the optional extra ``valvetrain[web]``: Bokeh).
+
+A Bokeh server in this process serves one page; every browser tab is a session of its own
+(:class:`valvetrain.web.session.Session`) on the JSON-in/JSON-out entry point :mod:`valvetrain.api`.  The page's
+scripts and styles come from the installed Bokeh package (no CDN, no web fonts): the designer works offline.
+Nothing is written to disk except what the user downloads.
+"""
+
+LOOPBACK = "127.0.0.1"
+
+
+def make_document(text, source_dir):
+    """The function that builds the page of one tab: a :class:`~valvetrain.web.app.Designer` on a new session."""
+    from .app import Designer
+    from .session import Session
+
+    def build(doc):
+        doc.title = "valvetrain designer"
+        Designer(doc, Session.start(text, source_dir))
+
+    return build
+
+
+def server(text=None, source_dir=None, host=LOOPBACK, port=5006):
+    """A Bokeh server of the designer (not started), on TOML text (the built-in example without it).
+
+    Raises
+    ------
+    valvetrain.specification.SpecError
+        The specification does not design.
+    """
+    from bokeh.application import Application
+    from bokeh.application.handlers.function import FunctionHandler
+    from bokeh.server.server import Server
+
+    from .session import Session
+
+    Session.start(text, source_dir)
+    origins = [f"{name}:{port}" for name in ("127.0.0.1", "localhost")] + ([f"{host}:{port}"] if host != LOOPBACK
+                                                                           else [])
+    return Server({"/": Application(FunctionHandler(make_document(text, source_dir)))}, address=host, port=port,
+                  allow_websocket_origin=origins, use_index=False, redirect_root=True)
+

@@ -1,0 +1,513 @@
+"""The page of the designer: a Bokeh document per browser tab, on a :class:`~valvetrain.web.session.Session`.
+
+The specification panel is generated from the specification's models (:func:`valvetrain.web.session.form`); the
+plots are plain Bokeh figures fed by column data sources; the handles are points of a ``PointDrawTool`` whose
+release sends the new position to Python; the speed sweep runs in a worker thread and only the newest one is
+drawn (an older one is stopped at its next speed).  The page keeps its timings in ``window.vtTimes`` (release of a
+drag to the redrawn kinematics, ms) and ``window.vtSweepTimes`` (to the redrawn sweep panel), and in
+``window.vtTimesArrived`` and ``window.vtSweepTimesArrived`` the times to the arrival of the update (before drawing).
+"""
+
+from concurrent.futures import ThreadPoolExecutor
+from dataclasses import replace
+from functools import partial
+
+from bokeh.layouts import column, row
+from bokeh.models import (Button, ColumnDataSource, CustomJS, DataRange1d, DataTable, LinearAxis, Div, HTMLTemplateFormatter, LinearColorMapper,
+                          NumericInput, PointDrawTool, Select, TableColumn, TabPanel, Tabs, TextInput)
+from bokeh.plotting import figure
+import numpy as np
+
+from .. import api
+from ..report.html import check_range
+from ..report.i18n import TEXT
+from ..report.names import label, record_quantity_text, translate
+from .session import form, parse_value, value_text, without_nones
+
+WORDS = {
+    "en": {"language": "Language", "valve": "Valve", "pin": "Pin as baseline", "toml": "Download TOML",
+           "report": "Download report", "checks": "Checks", "baseline": "baseline", "current": "current",
+           "margin": "Margin", "card": "Cam card", "kept": "not designed; the last good design stays on screen",
+           "sweep": "At speed: the dynamics sweep", "sweeping": "sweeping...", "min_force": "min contact force, N",
+           "seating": "|seating velocity|, m/s", "map": "valve lift - rigid lift, mm", "spec": "Specification",
+           "velocity_valve": "valve velocity, m/s", "acceleration_valve": "valve acceleration, m/s²",
+           "jerk_valve": "valve jerk, m/s³", "velocity_valve_deg": "valve velocity, mm/deg",
+           "acceleration_valve_deg": "valve acceleration, mm/deg²", "jerk_valve_deg": "valve jerk, mm/deg³",
+           "units": "Derivatives", "rated": "at the rated speed", "deg": "per cam degree", "lift_mm": "lift, mm", "jump": "jump speed", "bounce": "bounce onset"},
+    "ru": {"language": "Язык", "valve": "Клапан", "pin": "Закрепить как базовый", "toml": "Скачать TOML",
+           "report": "Скачать отчёт", "checks": "Проверки", "baseline": "базовый", "current": "текущий",
+           "margin": "Запас", "card": "Карта кулачка", "kept": "не рассчитано; на экране последний годный вариант",
+           "sweep": "На режимах: динамика по частоте вращения", "sweeping": "расчёт...",
+           "min_force": "мин. сила в контакте, Н", "seating": "|скорость посадки|, м/с",
+           "map": "подъём клапана - кинематический подъём, мм", "spec": "Исходные данные",
+           "velocity_valve": "скорость клапана, м/с", "acceleration_valve": "ускорение клапана, м/с²",
+           "jerk_valve": "рывок клапана, м/с³", "velocity_valve_deg": "скорость клапана, мм/град",
+           "acceleration_valve_deg": "ускорение клапана, мм/град²", "jerk_valve_deg": "рывок клапана, мм/град³",
+           "units": "Производные", "rated": "на номинальной частоте", "deg": "на градус ПРВ", "lift_mm": "подъём, мм", "jump": "частота отрыва",
+           "bounce": "начало отскока"},
+}
+"""The designer's own words in English and Russian (the plots' and the checks' come from the report's)."""
+
+CARD_KEYS = ("cam.valve_opens_crank_deg", "cam.valve_closes_crank_deg", "cam.event_cam_deg", "cam.nose_crank_deg",
+             "cam.phi_p0_deg", "flow.valve_lift_mm", "flow.time_area_mm2_s", "flow.fullness",
+             "cam.max_acceleration_m_s2", "cam.min_acceleration_m_s2", "cam.rho_min_mm")
+"""The keys of a valve's results shown on the cam card."""
+
+KINEMATIC_PLOTS = (("lift", "valve_lift_mm", "lift_mm", 0), ("velocity", "valve_velocity_m_s", "velocity_valve", 1),
+                   ("acceleration", "valve_acceleration_m_s2", "acceleration_valve", 2),
+                   ("jerk", "valve_jerk_m_s3", "jerk_valve", 3))
+"""The plots against the camshaft angle: name, series, axis words, order of the derivative."""
+
+
+def per_degree(values, order, omega):
+    """A derivative of the lift at the rated speed (m/s, m/s², m/s³) in mm per camshaft degree to the ``order``:
+    divided by omega_cam^order [rad/s] and converted (1000 mm/m, pi/180 rad/deg per order)."""
+    return np.array(values, dtype=float) * 1e3 * (np.pi / 180.0 / omega) ** order
+
+SEVERITY_COLOURS = {"failure": "#f4c7c3", "warning": "#fce8b2", "info": "#e8eaf6", "pass": "#d9ead3"}
+
+STAMP_JS = """
+const now = performance.now();
+requestAnimationFrame(() => requestAnimationFrame(() => {
+  const t = performance.now();
+  window[key] = window[key] || [];
+  window[key + 'Arrived'] = window[key + 'Arrived'] || [];
+  if (window.vtRelease !== undefined) {
+    window[key].push(t - window.vtRelease);
+    window[key + 'Arrived'].push(now - window.vtRelease);
+  }
+  window[key + 'Done'] = (window[key + 'Done'] || 0) + 1;
+}));
+"""
+
+DOWNLOAD_JS = """
+const blob = new Blob([div.text], {type: mime});
+const a = document.createElement('a');
+a.href = URL.createObjectURL(blob);
+a.download = name;
+document.body.appendChild(a);
+a.click();
+a.remove();
+"""
+
+SWEEP_WORKERS = ThreadPoolExecutor(max_workers=1, thread_name_prefix="valvetrain-sweep")
+"""One thread for the speed sweeps of every tab (2 cores: the kinematics keep the other)."""
+
+
+class Stale(Exception):
+    """Raised into a speed sweep that a newer change made stale."""
+
+
+def _xy(series, key, x="cam_deg"):
+    return {"x": series[x], "y": series[key]}
+
+
+class Designer:
+    """The widgets, plots and callbacks of one browser tab."""
+
+    def __init__(self, doc, session):
+        self.doc, self.session, self.lang = doc, session, "en"
+        self.names = list(session.document["valves"])
+        self.valve = self.names[0]
+        self.generation = 0
+        self._syncing = False
+        self.downloads = 0
+        self.per_degree = False
+        self.sweep_result, self.base_sweep = None, None
+        self.fields = {}
+        self.errors = {}
+        self._build()
+        self.redraw()
+
+    # --- building --------------------------------------------------------------------------------------------------
+    def _widget(self, f):
+        title = f"{f.path.rsplit('.', 1)[-1]}" + (f" [{f.bounds_text}]" if f.bounds_text else "")
+        if f.kind in ("float", "int"):
+            w = NumericInput(title=title, value=f.value, mode=f.kind, width=230)
+        elif f.kind == "choice":
+            w = Select(title=title, value=str(f.value), options=[str(o) for o in f.options], width=230)
+        else:
+            w = TextInput(title=title, value=value_text(f.value), width=230)
+        w.name = f.path
+        w.on_change("value", partial(self.on_field, f))
+        self.fields[f.path] = w
+        err = Div(text="", styles={"color": "#b00020", "font-size": "85%"}, width=230, name="error:" + f.path)
+        self.errors[f.path] = err
+        return column(w, err)
+
+    def _build(self):
+        t = WORDS["en"]
+        self.language = Select(title=t["language"], value="en", options=[("en", "English"), ("ru", "Русский")],
+                               name="language", width=120)
+        self.language.on_change("value", self.on_language)
+        self.valve_select = Select(title=t["valve"], value=self.valve, options=self.names, width=120)
+        self.valve_select.on_change("value", self.on_valve)
+        self.units = Select(title=t["units"], value="rated", options=[("rated", t["rated"]), ("deg", t["deg"])],
+                            name="units", width=170)
+        self.units.on_change("value", self.on_units)
+        self.pin_button = Button(label=t["pin"], name="pin", width=160)
+        self.pin_button.on_click(self.on_pin)
+        self.toml_text = Div(text="", visible=False)
+        self.toml_button = Button(label=t["toml"], name="download-toml", width=160)
+        self.toml_text.js_on_change("text", CustomJS(args={"div": self.toml_text, "mime": "application/toml",
+                                                           "name": "valvetrain.toml"}, code=DOWNLOAD_JS))
+        self.toml_button.on_click(self.on_toml)
+        self.report_text = Div(text="", visible=False)
+        self.report_text.js_on_change("text", CustomJS(args={"div": self.report_text, "mime": "text/html",
+                                                             "name": "report.html"}, code=DOWNLOAD_JS))
+        self.report_button = Button(label=t["report"], name="download-report", width=160)
+        self.report_button.on_click(self.on_report)
+        self.status = Div(text="", name="status", styles={"color": "#b00020"})
+        self.section_errors = Div(text="", name="section-errors", styles={"color": "#b00020"})
+        panels = [TabPanel(title=path, child=column(*[self._widget(f) for f in fields], height=700,
+                                                    styles={"overflow-y": "auto"}))
+                  for path, fields in form(self.session.document)]
+        self.spec_tabs = Tabs(tabs=panels, width=270)
+
+        tools = "pan,wheel_zoom,box_zoom,reset,save"
+        self.sources, self.base_sources, self.figures = {}, {}, {}
+        for name, *_ in KINEMATIC_PLOTS:
+            p = figure(height=210, width=520, tools=tools, name=f"plot-{name}")
+            self.sources[name] = ColumnDataSource({"x": [], "y": []})
+            self.base_sources[name] = ColumnDataSource({"x": [], "y": []})
+            p.line("x", "y", source=self.base_sources[name], color="#999999", line_dash="dashed", line_width=1.5)
+            p.line("x", "y", source=self.sources[name], color="#1f77b4", line_width=2)
+            self.figures[name] = p
+        self.sources["tappet"] = ColumnDataSource({"x": [], "y": []})
+        self.figures["lift"].line("x", "y", source=self.sources["tappet"], color="#2ca02c", line_width=1)
+        self.segments = ColumnDataSource({"x": [], "y0": [], "y1": []})
+        self.figures["acceleration"].segment("x", "y0", "x", "y1", source=self.segments, color="#bbbbbb",
+                                             line_dash="dotted")
+        self.handles = {}
+        for plot in ("lift", "acceleration"):
+            src = ColumnDataSource({"x": [], "y": [], "name": []}, name=f"handles-{plot}")
+            r = self.figures[plot].scatter("x", "y", source=src, size=13, color="#d62728", marker="circle")
+            tool = PointDrawTool(renderers=[r], add=False, drag=True)
+            self.figures[plot].add_tools(tool)
+            self.figures[plot].toolbar.active_drag = tool
+            self.figures[plot].js_on_event("panend", CustomJS(code="window.vtRelease = performance.now();"))
+            src.on_change("data", partial(self.on_handles, plot))
+            self.handles[plot] = src
+        for name in ("lift", "velocity", "acceleration"):
+            self.figures[name].x_range = self.figures["jerk"].x_range
+
+        self.extra = {}
+        for name, kw in (("contour", {"match_aspect": True}), ("curvature", {}), ("time_area", {}), ("spring", {})):
+            p = figure(height=260, width=520 if name != "contour" else 300, tools=tools, name=f"plot-{name}", **kw)
+            self.sources[name] = ColumnDataSource({"x": [], "y": []})
+            self.base_sources[name] = ColumnDataSource({"x": [], "y": []})
+            p.line("x", "y", source=self.base_sources[name], color="#999999", line_dash="dashed", line_width=1.5)
+            p.line("x", "y", source=self.sources[name], color="#1f77b4", line_width=2)
+            self.figures[name] = p
+        self.sources["heel"] = ColumnDataSource({"x": [], "y": []})
+        self.figures["contour"].line("x", "y", source=self.sources["heel"], color="#2ca02c", line_dash="dashed")
+        self.sources["spring_line"] = ColumnDataSource({"x": [], "y": []})
+        self.figures["spring"].line("x", "y", source=self.sources["spring_line"], color="black", line_width=2)
+        self.sources["curtain"] = ColumnDataSource({"x": [], "y": []})
+        ta = self.figures["time_area"]
+        curtain = ta.line("x", "y", source=self.sources["curtain"], color="#ff7f0e", y_range_name="curtain")
+        ta.extra_y_ranges = {"curtain": DataRange1d(renderers=[curtain])}
+        self.curtain_axis = LinearAxis(y_range_name="curtain", axis_label_text_color="#ff7f0e")
+        ta.add_layout(self.curtain_axis, "right")
+
+        self.checks = ColumnDataSource({k: [] for k in ("key", "quantity", "value", "allowed", "margin", "source",
+                                                        "colour", "baseline")})
+        fmt = HTMLTemplateFormatter(template='<div style="background:<%= colour %>; padding-left:3px"><%= value %></div>')
+        self.check_columns = [TableColumn(field="quantity", title="", width=330),
+                              TableColumn(field="value", title="", formatter=fmt, width=120),
+                              TableColumn(field="baseline", title="", width=110),
+                              TableColumn(field="allowed", title="", width=120),
+                              TableColumn(field="margin", title="", width=70),
+                              TableColumn(field="source", title="", width=380)]
+        self.table = DataTable(source=self.checks, columns=self.check_columns, width=1100, height=360,
+                               index_position=None, name="checks")
+        # the page's grid redraws when its view's rows change; new data of as many rows leaves them, and the old
+        # rows on screen: the view's change signal makes it take the new ones
+        self.checks.js_on_change("data", CustomJS(args={"table": self.table}, code="table.view.change.emit();"))
+        self.card = Div(text="", name="card", width=300)
+
+        # the sweep panel
+        self.sweep_status = Div(text="", name="sweep-status")
+        self.sweep_sources = {k: ColumnDataSource({"x": [], "y": []}) for k in ("force", "seating")}
+        self.base_sweep_sources = {k: ColumnDataSource({"x": [], "y": []}) for k in ("force", "seating")}
+        self.sweep_marks = ColumnDataSource({"x": [], "y0": [], "y1": []})
+        for key in ("force", "seating"):
+            p = figure(height=220, width=420, tools=tools, name=f"plot-sweep-{key}")
+            p.line("x", "y", source=self.base_sweep_sources[key], color="#999999", line_dash="dashed", line_width=1.5)
+            p.line("x", "y", source=self.sweep_sources[key], color="#1f77b4", line_width=2)
+            p.segment("x", "y0", "x", "y1", source=self.sweep_marks, color="#d62728", line_dash="dashed")
+            self.figures["sweep_" + key] = p
+        self.map_source = ColumnDataSource({"image": [], "x": [], "y": [], "dw": [], "dh": []})
+        self.mapper = LinearColorMapper(palette="RdBu11", low=-1.0, high=1.0)
+        p = figure(height=220, width=420, tools=tools, name="plot-sweep-map")
+        p.image("image", x="x", y="y", dw="dw", dh="dh", source=self.map_source, color_mapper=self.mapper)
+        self.figures["sweep_map"] = p
+
+        self.kinematic_stamp = Div(text="0", visible=False, name="kinematic-stamp")
+        self.kinematic_stamp.js_on_change("text", CustomJS(args={"key": "vtTimes"}, code=STAMP_JS))
+        self.sweep_stamp = Div(text="0", visible=False, name="sweep-stamp")
+        self.sweep_stamp.js_on_change("text", CustomJS(args={"key": "vtSweepTimes"}, code=STAMP_JS))
+
+        f = self.figures
+        plots = row(column(f["lift"], f["velocity"], f["acceleration"], f["jerk"]),
+                    column(f["contour"], f["curvature"], f["time_area"], f["spring"]))
+        self.sweep_title = Div(text="")
+        sweep = column(self.sweep_title, self.sweep_status,
+                       row(f["sweep_force"], f["sweep_seating"], f["sweep_map"]))
+        top = row(self.language, self.valve_select, self.units, self.pin_button, self.toml_button, self.report_button,
+                  self.status)
+        self.checks_title = Div(text="")
+        self.doc.add_root(column(top, row(column(self.section_errors, self.spec_tabs), column(row(plots, self.card),
+                                 self.checks_title, self.table, sweep)), self.toml_text, self.report_text, self.kinematic_stamp,
+                                 self.sweep_stamp))
+
+    # --- drawing ---------------------------------------------------------------------------------------------------
+    def _texts(self):
+        t, w = TEXT[self.lang], WORDS[self.lang]
+        unit = "_deg" if self.per_degree else ""
+        axes = {"lift": w["lift_mm"], "velocity": w["velocity_valve" + unit],
+                "acceleration": w["acceleration_valve" + unit], "jerk": w["jerk_valve" + unit]}
+        for name, words in axes.items():
+            self.figures[name].yaxis.axis_label = words
+            self.figures[name].title.text = words
+        self.figures["jerk"].xaxis.axis_label = t["cam_deg"]
+        self.figures["contour"].title.text = t["contour"]
+        self.figures["curvature"].title.text = t["rho"]
+        self.figures["curvature"].xaxis.axis_label = t["cam_deg"]
+        self.figures["time_area"].xaxis.axis_label = t["crank_deg"]
+        self.curtain_axis.axis_label = t["curtain"]
+        self.figures["spring"].title.text = t["spring_title"]
+        self.figures["spring"].xaxis.axis_label = t["valve_lift_axis"]
+        self.figures["spring"].yaxis.axis_label = t["force"]
+        self.figures["sweep_force"].title.text = w["min_force"]
+        self.figures["sweep_seating"].title.text = w["seating"]
+        self.figures["sweep_map"].title.text = w["map"]
+        for key in ("sweep_force", "sweep_seating", "sweep_map"):
+            self.figures[key].xaxis.axis_label = t["speed"] if key != "sweep_map" else t["cam_deg"]
+        self.sweep_title.text = f"<h3>{w['sweep']}</h3>"
+        self.checks_title.text = f"<h3>{w['checks']}</h3>"
+        for c, key in zip(self.check_columns, ("quantity", "value", "baseline", "allowed", "margin", "source"),
+                          strict=True):
+            c.title = {"value": t["value"] + f" ({w['current']})", "baseline": w["baseline"],
+                       "margin": w["margin"]}.get(key) or t[key]
+        self.language.title, self.valve_select.title, self.units.title = w["language"], w["valve"], w["units"]
+        self.units.options = [("rated", w["rated"]), ("deg", w["deg"])]
+        self.pin_button.label, self.toml_button.label, self.report_button.label = w["pin"], w["toml"], w["report"]
+
+    def _checks(self):
+        results = self.session.good["results"]
+        base = {c["quantity"]: c for c in (self.session.baseline or {"results": {"checks": []}})["results"]["checks"]}
+        out = {k: [] for k in self.checks.data}
+        for c in sorted(results["checks"], key=lambda c: (c["pass"], {"failure": 0, "warning": 1}.get(c["severity"], 2),
+                                                          c["margin"] if c["margin"] is not None else 1e300)):
+            out["key"].append(c["quantity"])
+            out["quantity"].append(record_quantity_text(c, self.lang))
+            out["value"].append("-" if c["value"] is None else f"{c['value']:.5g} {c['unit']}".rstrip())
+            b = base.get(c["quantity"])
+            out["baseline"].append("" if b is None or b["value"] is None else f"{b['value']:.5g}"
+                                   + ("" if b["pass"] else " ✗"))
+            out["allowed"].append(check_range(c, self.lang))
+            out["margin"].append("" if c["margin"] is None else f"{c['margin']:+.3g}")
+            out["source"].append(translate(c["source"], self.lang))
+            out["colour"].append(SEVERITY_COLOURS["pass" if c["pass"] or c["accepted"] else c["severity"]])
+        self.checks.data = out
+
+    def _card(self):
+        v = self.session.good["results"]["valves"][self.valve]
+        rows = []
+        for key in CARD_KEYS:
+            group, leaf = key.split(".")
+            value = v.get(group, {}).get(leaf)
+            if value is not None:
+                rows.append(f"<tr><td>{label(key, self.lang)}</td><td>{value:.5g}</td></tr>")
+        self.card.text = f"<h3>{WORDS[self.lang]['card']}</h3><table>{''.join(rows)}</table>"
+
+    def _omega(self, result):
+        """The camshaft speed of a design [rad/s] when the plots are per degree, else None."""
+        return result["results"]["valves"][self.valve]["cam"]["camshaft_speed_rad_s"] if self.per_degree else None
+
+    def _curves(self, series, sources, omega=None):
+        for name, key, _, order in KINEMATIC_PLOTS:
+            y = series[key] if omega is None or order == 0 else per_degree(series[key], order, omega)
+            sources[name].data = {"x": series["cam_deg"], "y": y}
+        sources["contour"].data = {"x": series["contour_x_mm"] + series["contour_x_mm"][:1],
+                                   "y": series["contour_y_mm"] + series["contour_y_mm"][:1]}
+        sources["curvature"].data = _xy(series, "rho_mm")
+        sources["time_area"].data = _xy(series, "time_area_mm2_s", "crank_deg")
+        sources["spring"].data = {"x": series["spring_lift_mm"], "y": series["required_force_N"]}
+
+    def redraw(self, sweep=True):
+        """Draw the good design (and the baseline), its checks, card and handles; start its speed sweep (``sweep``)
+        or draw the last one again."""
+        s = self.session
+        series = s.good["series"][self.valve]
+        omega = self._omega(s.good)
+        self._curves(series, self.sources, omega)
+        self.sources["tappet"].data = _xy(series, "tappet_lift_mm")
+        phi = np.linspace(0.0, 2.0 * np.pi, 181)
+        r = series["heel_radius_mm"]
+        self.sources["heel"].data = {"x": r * np.cos(phi), "y": r * np.sin(phi)}
+        self.sources["spring_line"].data = {"x": series["spring_line_lift_mm"], "y": series["spring_line_force_N"]}
+        self.sources["curtain"].data = _xy(series, "curtain_area_mm2", "crank_deg")
+        acc = self.sources["acceleration"].data["y"]
+        acc = [a for a in acc if a is not None and np.isfinite(a)]
+        edges = series["segments_cam_deg"]
+        self.segments.data = {"x": edges, "y0": [min(acc)] * len(edges), "y1": [max(acc)] * len(edges)}
+        base = s.baseline["series"].get(self.valve) if s.baseline else None
+        if base is not None:
+            self._curves(base, self.base_sources, self._omega(s.baseline))
+        self.figures["time_area"].title.text = (f"{TEXT[self.lang]['running_ta']}; "
+                                                f"fullness {s.good['results']['valves'][self.valve]['flow']['fullness']:.4g}")
+        self._handles(omega)
+        self._checks()
+        self._card()
+        self._texts()
+        self.kinematic_stamp.text = str(int(self.kinematic_stamp.text) + 1)
+        if sweep:       # after this change has gone to the page: the sweep's thread would hold it up
+            self.doc.add_next_tick_callback(self.start_sweep)
+        elif self.sweep_result is not None:
+            self.draw_sweep(self.generation, self.sweep_result)
+
+    def _handles(self, omega=None):
+        self._placed = {}
+        found = self.session.handles(self.valve)
+        for plot, src in self.handles.items():
+            mine = [h if omega is None or plot == "lift" else replace(h, y=float(per_degree(h.y, 2, omega)))
+                    for h in found if h.plot == plot]
+            self._placed[plot] = [(h.name, h.x, h.y) for h in mine]
+            src.data = {"x": [h.x for h in mine], "y": [h.y for h in mine], "name": [h.name for h in mine]}
+
+    def show_problems(self):
+        """Each problem at its field (or above the panel when it names no field); the status line says the last
+        good design stays."""
+        for err in self.errors.values():
+            err.text = ""
+        loose = []
+        for p in self.session.problems:
+            if p["path"] in self.errors:
+                self.errors[p["path"]].text = p["message"]
+            else:
+                loose.append(p["text"])
+        self.section_errors.text = "<br>".join(loose)
+        self.status.text = WORDS[self.lang]["kept"] if self.session.problems else ""
+
+    # --- the speed sweep -------------------------------------------------------------------------------------------
+    def start_sweep(self):
+        self.generation += 1
+        generation = self.generation
+        self.sweep_status.text = WORDS[self.lang]["sweeping"]
+        document = self.session.good_document
+
+        def progress(name, done, total):
+            if generation != self.generation:
+                raise Stale
+
+        def work():
+            try:
+                result = api.sweep(without_nones(document), progress=progress)
+            except Stale:
+                return
+            self.doc.add_next_tick_callback(partial(self.draw_sweep, generation, result))
+
+        SWEEP_WORKERS.submit(work)
+
+    def _sweep_of(self, result):
+        return result["sweeps"].get(self.valve) or next(iter(result["sweeps"].values()))
+
+    @staticmethod
+    def _sweep_curves(sw, sources):
+        sources["force"].data = {"x": sw["speed_rpm"], "y": sw["min_contact_force_N"]}
+        sources["seating"].data = {"x": sw["speed_rpm"],
+                                   "y": [None if v is None else abs(v) for v in sw["seating_velocity_m_s"]]}
+
+    def draw_sweep(self, generation, result):
+        if generation != self.generation:
+            return
+        if not result["ok"]:
+            self.sweep_status.text = "<br>".join(p["text"] for p in result["errors"])
+            return
+        self.sweep_result = result
+        sw = self._sweep_of(result)
+        self._sweep_curves(sw, self.sweep_sources)
+        if self.base_sweep is not None:
+            self._sweep_curves(self._sweep_of(self.base_sweep), self.base_sweep_sources)
+        marks = [v for v in (sw["jump_speed_rpm"], sw["bounce_speed_rpm"]) if v is not None]
+        forces = [v for v in sw["min_contact_force_N"] if v is not None]
+        self.sweep_marks.data = {"x": marks, "y0": [min(forces)] * len(marks), "y1": [max(forces)] * len(marks)}
+        err = np.array(sw["map_lift_error_mm"], dtype=float)
+        bound = float(np.nanmax(np.abs(err))) or 1.0
+        self.mapper.low, self.mapper.high = -bound, bound
+        x, n = sw["map_cam_deg"], sw["speed_rpm"]
+        self.map_source.data = {"image": [err], "x": [x[0]], "y": [n[0]], "dw": [x[-1] - x[0]], "dh": [n[-1] - n[0]]}
+        t = WORDS[self.lang]
+        self.sweep_status.text = ", ".join(f"{t[k]} {v:.5g} rpm" for k, v in (("jump", sw["jump_speed_rpm"]),
+                                                                               ("bounce", sw["bounce_speed_rpm"]))
+                                           if v is not None) or "-"
+        self.sweep_stamp.text = str(int(self.sweep_stamp.text) + 1)
+
+    # --- callbacks -------------------------------------------------------------------------------------------------
+    def on_field(self, f, attr, old, new):
+        if self._syncing:
+            return
+        try:
+            value = parse_value(f, new)
+        except ValueError as exc:
+            self.errors[f.path].text = str(exc)
+            return
+        if self.session.edit({f.path: value}):
+            self.redraw()
+        self.show_problems()
+
+    def on_handles(self, plot, attr, old, new):
+        placed = getattr(self, "_placed", {}).get(plot, [])
+        if len(new["x"]) != len(placed):      # a point deleted: put the handles back
+            self._handles(self._omega(self.session.good))
+            return
+        for (name, x, y), nx, ny in zip(placed, new["x"], new["y"], strict=True):
+            if abs(nx - x) > 1e-9 or abs(ny - y) > 1e-9:
+                if self.session.drag(self.valve, name, nx, ny):
+                    self.redraw()
+                else:
+                    self._handles(self._omega(self.session.good))
+                self.show_problems()
+                self._sync_fields()
+                return
+
+    def _sync_fields(self):
+        """The panel's inputs show the document after a drag."""
+        for path, fields in form(self.session.document):
+            for f in fields:
+                w = self.fields.get(f.path)
+                if isinstance(w, NumericInput) and w.value != f.value:
+                    self._syncing = True
+                    w.value = f.value
+                    self._syncing = False
+
+    def on_language(self, attr, old, new):
+        self.lang = new
+        self.redraw(sweep=False)
+        self.show_problems()
+
+    def on_units(self, attr, old, new):
+        self.per_degree = new == "deg"
+        self.redraw(sweep=False)
+
+    def on_valve(self, attr, old, new):
+        self.valve = new
+        self.redraw()
+
+    def on_report(self):
+        """The report of the good design, to the page, which saves it (a comment makes every one a change)."""
+        self.downloads += 1
+        self.report_text.text = self.session.report(self.lang) + f"<!-- download {self.downloads} -->\n"
+
+    def on_toml(self):
+        """The specification of the good design, to the page, which saves it (a comment makes every one a change)."""
+        self.downloads += 1
+        self.toml_text.text = self.session.toml() + f"# download {self.downloads}\n"
+
+    def on_pin(self):
+        self.session.pin()
+        self.base_sweep = self.sweep_result
+        self.redraw(sweep=False)
+

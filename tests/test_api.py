@@ -1,0 +1,120 @@
+"""The JSON-in/JSON-out entry point valvetrain.api, against the batch program's files and closed forms."""
+
+import json
+from pathlib import Path
+import subprocess
+import sys
+import tomllib
+
+import numpy as np
+import pytest
+
+from valvetrain import api
+from valvetrain.specification import example_text, parse_spec
+
+EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
+
+
+def _document(path):
+    document = tomllib.loads(path.read_text(encoding="utf-8"))
+    document["source_dir"] = str(path.parent)
+    return document
+
+
+def _close(a, b, path=""):
+    """Nested data equal, numbers to 1e-12 relative."""
+    if isinstance(a, dict):
+        assert set(a) == set(b), path
+        for k in a:
+            _close(a[k], b[k], f"{path}.{k}")
+    elif isinstance(a, list):
+        assert len(a) == len(b), path
+        for i, (x, y) in enumerate(zip(a, b, strict=True)):
+            _close(x, y, f"{path}[{i}]")
+    elif isinstance(a, float) and isinstance(b, (int, float)):
+        assert a == pytest.approx(b, rel=1e-12, abs=1e-300), path
+    else:
+        assert a == b, path
+
+
+def test_dict_route_gives_the_numbers_of_valvetrain_run(tmp_path):
+    # the independent route: the command line writes results.json from the file; the dict route reads nothing
+    path = EXAMPLES / "seed000-appendix-kurz.toml"
+    done = subprocess.run([sys.executable, "-m", "valvetrain", "run", str(path), "--out", str(tmp_path / "out"),
+                           "--figures", "none"], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    batch = json.loads((tmp_path / "out" / "results.json").read_text(encoding="utf-8"))
+    out = api.design(_document(path))
+    assert out["ok"] and out["errors"] == []
+    _close(out["results"], batch)
+    json.dumps(out, allow_nan=False)          # plain, strict JSON
+
+
+def test_series_against_finite_differences_and_the_inputs():
+    document = tomllib.loads(example_text())
+    out = api.design(document)
+    s = out["series"]["intake"]
+    # the nose lifts the valve by max_lift_mm of the specification (10 mm)
+    assert max(s["valve_lift_mm"]) == pytest.approx(10.0, rel=1e-9)
+    # valve lift = rocker ratio (1.6) x the tappet lift above the ramp, whose height is the clearance (0.25 mm)
+    valve = 1.6 * np.maximum(np.array(s["tappet_lift_mm"]) - 0.25, 0.0)
+    assert np.allclose(np.array(s["valve_lift_mm"]), valve, rtol=1e-9, atol=1e-9)
+    # velocity at the valve side = i omega_cam dh_T/dphi, omega_cam = pi n / 60 at 7000 rpm; central differences of
+    # the sampled tappet lift (0.5 cam deg) agree to 1 % of the peak velocity
+    omega = np.pi * 7000.0 / 60.0
+    v = 1.6 * np.gradient(np.array(s["tappet_lift_mm"]) * 1e-3, np.radians(s["cam_deg"])) * omega
+    assert np.max(np.abs(v - np.array(s["valve_velocity_m_s"]))) < 0.01 * np.max(np.abs(v))
+    # the crank angle is the nose's plus twice the cam angle (four-stroke)
+    nose = out["results"]["valves"]["intake"]["cam"]["nose_crank_deg"]
+    assert np.allclose(np.array(s["crank_deg"]) - 2.0 * np.array(s["cam_deg"]), nose)
+
+
+def test_errors_are_records_with_key_value_and_range():
+    document = tomllib.loads(example_text())
+    document["engine"]["bore_mm"] = -3.0
+    out = api.design(document)
+    assert not out["ok"] and out["results"] is None
+    # [engine] bore_mm is declared in 5 ... 2000 mm (specification/models.py)
+    assert out["errors"] == [{"path": "engine.bore_mm", "value": "-3.0", "message": "allowed [5, 2000] mm",
+                              "text": "engine.bore_mm = -3.0: allowed [5, 2000] mm"}]
+
+
+def test_not_a_dict_is_an_error_record():
+    out = api.design("bore = 80")
+    assert not out["ok"] and "not a str" in out["errors"][0]["message"]
+
+
+def test_toml_text_reproduces_the_design():
+    document = tomllib.loads(example_text())
+    document["valves"]["intake"]["max_lift_mm"] = 10.5
+    again = api.design(tomllib.loads(api.toml_text(document)))
+    _close(again["results"], api.design(document)["results"])
+    assert parse_spec(api.toml_text(document)).valves["intake"].max_lift_mm == 10.5
+
+
+def test_sweep_gives_the_numbers_of_valvetrain_sweep(tmp_path):
+    path = EXAMPLES / "seed000-appendix-kurz.toml"
+    done = subprocess.run([sys.executable, "-m", "valvetrain", "sweep", str(path), "--out", str(tmp_path / "out")],
+                          capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    batch = json.loads((tmp_path / "out" / "dynamics.json").read_text(encoding="utf-8"))
+    out = api.sweep(_document(path))
+    assert out["ok"]
+    for name, series in out["sweeps"].items():
+        rec = batch["valves"][name]
+        for key in ("jump_speed_rpm", "bounce_speed_rpm"):
+            assert series[key] == pytest.approx(rec[key], rel=1e-12)
+        assert series["speed_rpm"] == pytest.approx(rec["per_speed"]["speed_rpm"], rel=1e-12)
+        assert series["min_contact_force_N"] == pytest.approx(rec["per_speed"]["min_contact_force_N"], rel=1e-12)
+        assert len(series["map_lift_error_mm"]) == len(series["speed_rpm"])
+
+
+def test_a_sweep_is_stopped_by_its_progress_callback():
+    class Stop(Exception):
+        pass
+
+    def progress(name, done, total):
+        raise Stop
+
+    with pytest.raises(Stop):
+        api.sweep(tomllib.loads(example_text()), progress=progress)

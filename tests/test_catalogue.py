@@ -1,0 +1,194 @@
+"""Issue 23, item 1: checks identified by a stable code, their texts rendered from a catalogue kept as data
+(src/valvetrain/locale/LANG.toml), ``[[accepted]]`` by code or by the printed text, and check records that name
+their code, valve and parameters."""
+
+import ast
+import copy
+import importlib.util
+from pathlib import Path
+import string
+
+import pytest
+
+from valvetrain import checks, locale, strength
+from valvetrain.checks import apply_acceptances, check
+from valvetrain.design import run
+from valvetrain.design.valve import LAYOUT_BANDS
+from valvetrain.locale import LANGS, catalogue, code_of, codes, parameters
+from valvetrain.report.html import WARNING_SYMBOLS
+from valvetrain.report.names import quantity_text
+from valvetrain.specification import SpecError, example_spec
+from valvetrain.specification.models import Acceptance
+
+ROOT = Path(__file__).resolve().parents[1]
+PACKAGE = ROOT / "src" / "valvetrain"
+
+
+def _fields(template):
+    return {name for _, name, _, _ in string.Formatter().parse(template) if name}
+
+
+def _literals():
+    """Every string constant of the package's source, and the first arguments of its ``check`` calls."""
+    found, first = set(), []
+    for path in PACKAGE.rglob("*.py"):
+        tree = ast.parse(path.read_text(encoding="utf-8"))
+        for node in ast.walk(tree):
+            if isinstance(node, ast.Constant) and isinstance(node.value, str):
+                found.add(node.value)
+            if (isinstance(node, ast.Call) and getattr(node.func, "id", None) in ("check", "_ArrayCheck", "layout_check")
+                    and node.args):
+                first.append((path.name, node.args[0]))
+    return found, first
+
+
+def test_every_code_has_a_text_in_every_language_with_the_same_parameters():
+    record = catalogue("en")["record"]
+    for lang in LANGS:
+        assert set(catalogue(lang)["checks"]) == set(record), lang
+        assert set(catalogue(lang)["springs"]) == set(catalogue("en")["springs"]), lang
+        assert set(catalogue(lang)["chapters"]) == set(catalogue("en")["chapters"]), lang
+        for code, template in catalogue(lang)["checks"].items():
+            assert _fields(template) == _fields(record[code]), (lang, code)
+
+
+def test_every_code_is_used_and_every_check_names_a_code():
+    """A catalogue entry no check makes is dead text; a check made with a literal that is no code is refused at
+    run time, and found here before it runs.  The strength checks are made by their key of ``strength.LIMITS``."""
+    found, first = _literals()
+    made = found | {f"strength.{key}" for key in strength.LIMITS}
+    assert [c for c in codes() if c not in made] == []
+    literal = [(f, a.value) for f, a in first if isinstance(a, ast.Constant)]
+    assert literal and [(f, c) for f, c in literal if c not in codes()] == []
+    assert set(LAYOUT_BANDS) <= set(codes())
+    assert {c for group in WARNING_SYMBOLS.values() for c in group} <= set(codes())
+
+
+def test_a_check_without_a_text_is_refused_naming_the_catalogue():
+    with pytest.raises(ValueError, match=r"'lash_adjuster\.collapse' has no text in src/valvetrain/locale/en\.toml"):
+        check("lash_adjuster.collapse", 1.0, high=2.0, source="s")
+
+
+def test_the_table_of_codes_in_the_docs_is_the_catalogues():
+    spec = importlib.util.spec_from_file_location("check_codes", ROOT / "tools" / "check_codes.py")
+    tool = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(tool)
+    assert (ROOT / "docs" / "checks.md").read_text(encoding="utf-8") == tool.text()
+    assert all(f"`{code}`" in tool.text() for code in codes())
+
+
+def test_a_record_text_maps_to_its_code_and_parameters():
+    """Hand-written: the texts printed before the codes, as a user typed them in [[accepted]]."""
+    assert code_of("closing lag") == ("timing.closing_lag", {})
+    assert code_of("Power-polynomial exponent   q") == ("law.power_polynomial.exponent", {"exponent": "q"})
+    assert code_of("equivalent throat diameter sqrt(2) d / bore") == ("flow.equivalent_throat_to_bore",
+                                                                       {"count": "2"})
+    assert code_of("lash adjuster collapse") is None
+    assert parameters("ports.width_to_bore") == ("port",)
+
+
+def _exponents():
+    return [check("law.power_polynomial.exponent", 9.0, 2.0, 3.0, source="s", params={"exponent": k}).of_valve("intake")
+            for k in "nm"]
+
+
+@pytest.mark.parametrize("quantity, accepted", [
+    ("law.power_polynomial.exponent", [True, True]),            # the code: every exponent
+    ("intake: power-polynomial exponent m", [False, True]),     # the printed text: that exponent only
+    ("power-polynomial exponent n", [True, False]),
+])
+def test_an_acceptance_names_a_check_by_its_code_or_by_its_printed_text(quantity, accepted):
+    out, unmatched = apply_acceptances(_exponents(), [Acceptance(quantity=quantity, reason="r")], {"intake"})
+    assert [c.accepted for c in out] == accepted and unmatched == []
+
+
+def test_an_acceptance_by_code_keeps_to_its_valve():
+    out, unmatched = apply_acceptances(_exponents(), [Acceptance(quantity="law.power_polynomial.exponent",
+                                                                 reason="r", valve="exhaust")], {"intake", "exhaust"})
+    assert not any(c.accepted for c in out) and unmatched == [0]
+
+
+def test_a_spring_check_is_accepted_by_its_printed_text_and_by_its_code():
+    tau = check("spring.tau_max", 2.0, high=1.0, source="s", severity="failure").of_spring("outer").of_valve("intake")
+    assert tau.quantity == "intake: outer tau_max"
+    for quantity in ("intake: outer tau_max", "spring.tau_max"):
+        (out,), unmatched = apply_acceptances([tau], [Acceptance(quantity=quantity, reason="r")], {"intake"})
+        assert out.accepted and unmatched == [], quantity
+    assert quantity_text(tau, "ru") == "intake: наружная пружина: τ_max"
+
+
+def test_an_acceptance_by_code_survives_a_reworded_check(monkeypatch):
+    """Before, a check was named by its text: rewording it broke its acceptance silently.  A code does not change
+    with the wording; the old text then names no check, and the design refuses it (not silently)."""
+    reworded = copy.deepcopy(catalogue("en"))
+    reworded["record"]["timing.closing_lag"] = "closing-lag angle"
+    original = locale.catalogue
+    monkeypatch.setattr(locale, "catalogue", lambda lang: reworded if lang == "en" else original(lang))
+    monkeypatch.setattr(checks, "catalogue", locale.catalogue)
+    locale._patterns.cache_clear()
+    try:
+        lag = check("timing.closing_lag", 78.0, 40.0, 60.0, source="s").of_valve("intake")
+        assert lag.quantity == "intake: closing-lag angle"
+        (out,), unmatched = apply_acceptances([lag], [Acceptance(quantity="timing.closing_lag", reason="r")],
+                                              {"intake"})
+        assert out.accepted and unmatched == []
+        (out,), unmatched = apply_acceptances([lag], [Acceptance(quantity="closing lag", reason="r")], {"intake"})
+        assert not out.accepted and unmatched == [0]
+    finally:
+        locale._patterns.cache_clear()
+
+
+def test_the_design_accepts_by_code_and_by_the_old_text_and_refuses_an_unknown_name():
+    spec = example_spec()
+    for quantity in ("timing.closing_lag", "intake: closing lag"):
+        accepted = spec.model_copy(update={"accepted": [Acceptance(quantity=quantity, reason="as printed")]})
+        assert [c.quantity for c in run(accepted).accepted] == ["intake: closing lag"], quantity
+    wrong = spec.model_copy(update={"accepted": [Acceptance(quantity="timing.closing", reason="r")]})
+    with pytest.raises(SpecError, match="did you mean 'timing.closing_lag'"):
+        run(wrong)
+
+
+def test_every_check_record_names_its_code_valve_and_parameters():
+    records = run(example_spec()).to_dict()["checks"]
+    for r in records:
+        assert r["code"] in codes()
+        head, _, rest = r["quantity"].partition(": ")
+        if r["valve"] is not None:
+            assert head == r["valve"]
+            assert r["code"].startswith("spring.") or code_of(rest)[0] == r["code"], r
+    by_code = {r["code"]: r for r in records}
+    assert by_code["engine.stroke_to_bore"]["valve"] is None
+    assert by_code["spring.tau_max"]["params"] == {"spring": "spring"}
+    assert by_code["spring.tau_max"]["quantity"] == "intake: spring tau_max"
+    pair = check("flow.equivalent_throat_to_bore", 0.5, 0.4, 0.45, source="s", params={"count": 2}).as_dict()
+    assert pair["params"] == {"count": 2} and pair["quantity"] == "equivalent throat diameter sqrt(2) d / bore"
+    assert {r["valve"] for r in records} == {"intake", None}
+
+
+def test_a_spring_checks_key_is_its_code():
+    """The spring diagnosis names a failing check by its key (``coil_gap_at_full_lift``) and the report names it by
+    the code ``spring.KEY``: every spring check's code is ``spring.`` and its key."""
+    tree = ast.parse((PACKAGE / "springs" / "candidates.py").read_text(encoding="utf-8"))
+    pairs = []
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Dict):
+            pairs += [(k.value, v.args[0].value) for k, v in zip(node.keys, node.values)
+                      if isinstance(v, ast.Call) and getattr(v.func, "id", None) == "_ArrayCheck"]
+        if (isinstance(node, ast.Assign) and isinstance(node.value, ast.Call)
+                and getattr(node.value.func, "id", None) == "_ArrayCheck"):
+            pairs.append((node.targets[0].slice.value, node.value.args[0].value))
+    assert len(pairs) >= 9 and all(code == f"spring.{key}" for key, code in pairs), pairs
+
+
+def test_every_text_made_with_numbers_takes_its_numbers():
+    """Each Russian skeleton of ``ru.toml [texts]`` is filled by as many numbers as its English has ``{}``; the
+    reason of a check that cannot be evaluated is one of them."""
+    texts = catalogue("ru")["texts"]
+    for en, ru in texts.items():
+        numbers = [str(i) for i in range(en.count("{}"))]
+        assert ru.format(*numbers) and en.format(*numbers), en
+    assert checks.UNEVALUATED in texts
+    from valvetrain.report.names import translate
+    assert translate("even firing, order 1-5-3-6-2-4", "ru") == "равномерное чередование вспышек, порядок работы 1-5-3-6-2-4"
+    assert translate("speed range 700-7700 rpm: 10% to 110% of the rated speed", "ru") == \
+        "диапазон частот 700-7700 мин⁻¹: от 10% до 110% номинальной"

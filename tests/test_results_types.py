@@ -1,0 +1,106 @@
+"""The results are frozen and typed: no stage result can be changed after :func:`valvetrain.run`, results.json's
+dictionary is made once, every field has a precise type, and the public functions and the stages say what they
+return."""
+
+import dataclasses
+import importlib
+import inspect
+import typing
+
+import numpy as np
+import pytest
+
+import valvetrain
+from valvetrain.design import run
+from valvetrain.specification import example_spec
+
+DESIGN_MODULES = ["valvetrain.design", "valvetrain.design.valve", "valvetrain.design.drive", "valvetrain.design.crank",
+                  "valvetrain.design.twostroke", "valvetrain.design.dynamics", "valvetrain.design.grinding",
+                  "valvetrain.design.hydraulic_actuation", "valvetrain.design.results", "valvetrain.design.camcard"]
+
+
+def _defined(kind):
+    for name in DESIGN_MODULES:
+        module = importlib.import_module(name)
+        for attr, obj in vars(module).items():
+            if kind(obj) and obj.__module__ == name and not attr.startswith("_"):
+                yield f"{name}.{attr}", obj
+
+
+def _public_functions():
+    public = {f"valvetrain.{n}": getattr(valvetrain, n) for n in valvetrain.__all__}
+    return {**{k: f for k, f in public.items() if inspect.isfunction(f)}, **dict(_defined(inspect.isfunction))}
+
+
+@pytest.fixture(scope="module")
+def results():
+    return run(example_spec())
+
+
+def test_the_public_functions_and_the_stages_say_what_they_return():
+    missing = [name for name, f in _public_functions().items()
+               if inspect.signature(f).return_annotation is inspect.Signature.empty]
+    assert not missing, missing
+    for f in _public_functions().values():
+        typing.get_type_hints(f)            # every annotation names a type that exists
+
+
+def _loose(t):
+    """A type that says nothing of what it holds: object, or a bare dict, list or tuple (also inside Optional)."""
+    return t in (object, dict, list, tuple) or any(_loose(a) for a in typing.get_args(t))
+
+
+def test_every_result_is_frozen_and_precisely_typed():
+    for name, cls in _defined(lambda o: inspect.isclass(o) and dataclasses.is_dataclass(o)):
+        assert cls.__dataclass_params__.frozen, name
+        loose = {f: t for f, t in typing.get_type_hints(cls).items() if _loose(t)}
+        assert not loose, (name, loose)
+
+
+def test_results_cannot_be_changed(results):
+    """run() used to assign each valve's checks after the acceptances (ValveDesign was mutable)."""
+    v = results.valves["intake"]
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        v.checks = ()
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        results.checks = ()
+    assert isinstance(results.checks, tuple) and isinstance(v.checks, tuple)
+
+
+def test_the_json_projection_is_made_once(results):
+    assert results.to_dict() is results.to_dict()
+    v = results.valves["intake"]
+    assert v.summary is v.summary
+    assert results.to_dict()["valves"]["intake"] is v.summary
+
+
+def _plain(x):
+    """Numbers, text, arrays and containers of them: what a figure's data may hold (no design object)."""
+    if isinstance(x, dict):
+        return all(isinstance(k, str) and _plain(v) for k, v in x.items())
+    if isinstance(x, (list, tuple)):
+        return all(_plain(v) for v in x)
+    if isinstance(x, np.ndarray):
+        return x.dtype.kind in "biufU"
+    return x is None or isinstance(x, (str, bool, int, float, np.floating))
+
+
+def test_figure_data_are_plain_series(results):
+    """The data of each separated figure are numbers and arrays, and its drawing takes them alone."""
+    from matplotlib.figure import Figure
+
+    from valvetrain.report import plots
+    from valvetrain.report.i18n import TEXT
+
+    v = results.valves["intake"]
+    made = [(plots.kinematics_data(v), plots.draw_kinematics), (plots.time_area_data(v), plots.draw_time_area),
+            (plots.spring_data(v), plots.draw_spring), (plots.strength_speed_data(v), plots.draw_strength_speed),
+            (plots.timing_data(results.valves), plots.draw_timing),
+            (plots.crank_forces_data(results.crank), plots.draw_crank_forces),
+            (plots.crank_torque_data(results.crank), plots.draw_crank_torque),
+            (plots.crank_pin_data(results.crank), plots.draw_crank_pin)]
+    for data, draw in made:
+        assert _plain(data), draw.__name__
+        assert isinstance(draw(data, TEXT["en"]), Figure)
+    # the series are those of the results: the time-area plot's stroke is results.json's
+    assert plots.time_area_data(v)["stroke_crank_deg"] == results.to_dict()["valves"]["intake"]["flow"]["stroke_crank_deg"]

@@ -1,0 +1,116 @@
+"""The designer's callbacks without a browser: the session (edits, drags, baseline, TOML) and the page's handlers
+on a Bokeh document."""
+
+import tomllib
+
+import numpy as np
+import pytest
+
+pytest.importorskip("bokeh")
+
+from bokeh.document import Document  # noqa: E402
+
+from valvetrain.specification import parse_spec  # noqa: E402
+from valvetrain.web.app import SEVERITY_COLOURS, Designer  # noqa: E402
+from valvetrain.web.session import Session, form, parse_value  # noqa: E402
+
+
+def test_panel_fields_carry_the_models_bounds():
+    fields = {f.path: f for _, group in form(Session.start().document) for f in group}
+    # declared in specification/models.py: bore 5...2000 mm, cylinders 1...64, strokes 2 or 4
+    assert (fields["engine.bore_mm"].low, fields["engine.bore_mm"].high) == (5.0, 2000.0)
+    assert (fields["engine.cylinders"].kind, fields["engine.cylinders"].low, fields["engine.cylinders"].high) == \
+        ("int", 1, 64)
+    assert fields["engine.strokes"].options == (2, 4)
+    assert fields["valves.intake.cam.phi1_deg"].value == 27.0      # the example's value
+    assert parse_value(fields["engine.strokes"], "4") == 4
+    assert parse_value(fields["valves.intake.spring.wire_diameter_range_mm"], "[2.0, 6.0]") == [2.0, 6.0]
+
+
+def test_bad_value_keeps_the_last_good_design():
+    s = Session.start()
+    good = s.good
+    assert not s.edit({"engine.bore_mm": 3.0})
+    assert s.good is good
+    assert [p["path"] for p in s.problems] == ["engine.bore_mm"]
+    assert s.edit({"engine.bore_mm": 80.0}) and s.problems == []
+
+
+def test_drag_of_a_segment_boundary_keeps_the_others():
+    s = Session.start()
+    # half-angle phi_p0 = (26 + 180 + 78) / 2 crank deg / 2 = 71 cam deg; phi1 = 27 puts the first boundary at
+    # -71 + 27 = -44 cam deg, the second at -44 + 6 = -38
+    h = {x.name: x for x in s.handles("intake")}
+    assert (h["phi1"].x, h["phi2"].x) == (pytest.approx(-44.0), pytest.approx(-38.0))
+    assert s.drag("intake", "phi1", -46.0, 0.0)
+    cam = s.document["valves"]["intake"]["cam"]
+    # phi1 = 71 - 46 = 25, phi2 = 27 + 6 - 25 = 8 (the second boundary stays), phi3 = 38 as given
+    assert (cam["phi1_deg"], cam["phi2_deg"], cam["phi3_deg"]) == (25.0, 8.0, 38.0)
+
+
+def test_drag_of_the_nose_sets_the_valve_lift():
+    s = Session.start()
+    assert s.drag("intake", "nose", 0.0, 10.8)
+    assert max(s.good["series"]["intake"]["valve_lift_mm"]) == pytest.approx(10.8, rel=1e-9)
+
+
+def test_toml_reads_back_to_the_edited_design():
+    s = Session.start()
+    s.edit({"engine.rated_speed_rpm": 6500.0})
+    assert parse_spec(s.toml()).engine.rated_speed_rpm == 6500.0
+
+
+def _colour(designer, quantity):
+    data = designer.checks.data
+    return data["colour"][data["key"].index(quantity)]
+
+
+def test_page_callbacks():
+    doc = Document()
+    d = Designer(doc, Session.start())
+    quantity = "intake: V' (throat velocity)"
+    # V' = 85.07 m/s at 7000 rpm, above 80; 72.9 m/s at 6000 rpm (c_p S n / 30 scaled by 6/7)
+    assert _colour(d, quantity) != SEVERITY_COLOURS["pass"]
+    f = next(f for _, group in form(d.session.document) for f in group if f.path == "engine.rated_speed_rpm")
+    d.on_field(f, "value", 7000, 6000)
+    assert _colour(d, quantity) == SEVERITY_COLOURS["pass"]
+    d.on_pin()
+    assert d.checks.data["baseline"][d.checks.data["key"].index(quantity)].startswith("72.9")
+    bore = next(f for _, group in form(d.session.document) for f in group if f.path == "engine.bore_mm")
+    d.on_field(bore, "value", 80, 3)
+    assert d.errors["engine.bore_mm"].text == "allowed [5, 2000] mm"
+    assert _colour(d, quantity) == SEVERITY_COLOURS["pass"]       # the last good design stays
+    d.on_field(bore, "value", 3, 80)
+    assert d.errors["engine.bore_mm"].text == ""
+    lift = dict(d.handles["lift"].data)
+    d.on_handles("lift", "data", lift, {**lift, "y": [10.5]})
+    assert d.session.document["valves"]["intake"]["max_lift_mm"] == 10.5
+    assert d.fields["valves.intake.max_lift_mm"].value == 10.5
+    d.on_language("value", "en", "ru")
+    assert d.check_columns[0].title == "Величина"
+    d.on_units("value", "rated", "deg")
+    # per cam degree: the velocity is the slope of the valve lift in mm/deg; central differences of the lift series
+    # (0.5 cam deg apart) agree to 1 % of the peak where the valve is off its seat
+    x, v = np.array(d.sources["velocity"].data["x"]), np.array(d.sources["velocity"].data["y"])
+    lift = np.array(d.sources["lift"].data["y"])
+    slope = np.gradient(lift, x)
+    off = lift > 0.5
+    assert np.max(np.abs(v[off] - slope[off])) < 0.01 * np.max(np.abs(slope))
+    d.on_report()
+    assert d.report_text.text.startswith("<!DOCTYPE html>") and 'lang="ru"' in d.report_text.text
+    d.on_toml()
+    assert tomllib.loads(d.toml_text.text)["valves"]["intake"]["max_lift_mm"] == 10.5
+
+
+def test_serve_refuses_a_specification_that_does_not_validate(refused):
+    from valvetrain.specification import example_text
+
+    text = example_text().replace("bore_mm = 80.0", "bore_mm = 3.0")
+    assert "error: engine.bore_mm = 3.0: allowed [5, 2000] mm" in refused(text, "serve")
+
+
+def test_sessions_are_separate():
+    a, b = Session.start(), Session.start()
+    a.edit({"engine.rated_speed_rpm": 6000.0})
+    assert b.document["engine"]["rated_speed_rpm"] == 7000
+    assert b.good["results"]["engine"]["rated_speed_rpm"] == 7000
