@@ -7,7 +7,7 @@ import pytest
 from hypothesis import given, settings, strategies as st
 
 from valvetrain import masses, spring_materials, springs
-from valvetrain.report.wording import diagnosis_text
+from valvetrain.locale.wording import diagnosis_text
 from valvetrain.springs import diagnosis
 
 from conftest import SEED000_OMEGA_EXACT, seed000_law

@@ -6,7 +6,7 @@ import pytest
 
 from valvetrain.laws.errors import LawError
 from valvetrain.laws.measured import lobe_table
-from valvetrain.report.wording import diagnosis_record, diagnosis_text
+from valvetrain.locale.wording import diagnosis_record, diagnosis_text
 from valvetrain.springs import Conflict, Diagnosis, Remedy, StressWindow
 from valvetrain.springs.diagnosis import PAIR_FREQUENCIES
 

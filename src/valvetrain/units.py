@@ -14,7 +14,7 @@ import math
 
 import numpy as np
 
-from .locale import LANGS
+from .languages import LANGS
 
 MM = 1e-3
 """metres per millimetre"""
@@ -84,7 +84,7 @@ UNITS = {
 }
 """The one unit table: every unit a key, a table, a record or the report shows, the SI value of one unit (a quantity
 of ``x`` SI is shown as ``x / value``; ``rpm`` is shown from rad/s), the key suffixes that name it (``_N_per_mm``)
-and its symbol in each language of the report (``LANGS`` of :mod:`valvetrain.locale`).  The SI view of a
+and its symbol in each language of the report (:data:`valvetrain.languages.LANGS`).  The SI view of a
 specification (:func:`si_name`), the display of the records (:func:`to_display`) and the report's units
 (:func:`symbol`, :data:`SUFFIXES`) derive from it."""
 

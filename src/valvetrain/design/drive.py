@@ -18,7 +18,7 @@ from .. import flow, masses, springs, strength
 from ..checks import Check, check
 from ..layouts import chain, layout, train_mass
 from ..locale import record_text
-from ..report.wording import diagnosis_record, diagnosis_text
+from ..locale.wording import diagnosis_record, diagnosis_text
 from ..spring_materials import grade
 from ..specification.si import si_name
 from ..units import to_display

@@ -791,7 +791,7 @@ def choose_fit(fit, bounded, meets, gcv):
     The codes: ``"given"`` (``fit`` is not ``"auto"``), ``"harmonic_swings"`` (the N-harmonic fit leaves the table's
     range), ``"harmonic_misses"`` (it does not meet the accuracy), ``"harmonic_gcv"`` and ``"spline_gcv"`` (the one
     with the smaller score, ``ratio`` its score / the other's); the report words them
-    (:func:`valvetrain.report.wording.fit_reason`).
+    (:func:`valvetrain.locale.wording.fit_reason`).
 
     ``"auto"`` compares the two fits where both are admissible, the N-harmonic fit meeting the stated accuracy and
     staying within the table's range, by their generalised cross-validation scores (``gcv``, :func:`gcv_score`):

@@ -18,8 +18,7 @@ import re
 import string
 import tomllib
 
-LANGS = ("en", "ru")
-"""The languages of the catalogue (one ``LANG.toml`` each)."""
+from ..languages import LANGS
 
 
 @cache

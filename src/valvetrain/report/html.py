@@ -23,7 +23,7 @@ from .numbers import number, percent
 from .russian import russian_citations
 from .worked import flow_lines, spring_lines
 from .names import has_name, label, link_names, quantity_text, translate, unevaluated_text, unit_text, value_text
-from .wording import diagnosis_text, fit_reason
+from ..locale.wording import diagnosis_text, fit_reason
 
 TABLE_COLUMNS = ["cam_deg", "crank_deg", "segment", "tappet_lift_mm", "tappet_velocity_m_s",
                  "tappet_acceleration_m_s2", "valve_lift_mm", "curtain_area_mm2", "time_area_mm2_s", "rho_mm"]

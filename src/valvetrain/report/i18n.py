@@ -49,22 +49,6 @@ TEXT = {
         "checking_height": "checking height, mm", "duration": "duration, deg", "fit": "fit",
         "rms_residual": "rms residual, mm", "max_residual": "max residual, mm",
         "jerk_sign_changes": "sign changes of the jerk",
-        "fit_used": {"harmonic": "N-harmonic fit (N = {n})", "spline": "smoothing spline"},
-        "fit_reasons": {
-            "given": "fit = \"{fit}\" in the specification",
-            "harmonic_gcv": "the N-harmonic fit meets accuracy_mm and predicts left-out rows better than the smoothing "
-                            "spline (generalised cross-validation score {ratio:.3g} x the spline's)",
-            "spline_gcv": "the smoothing spline predicts left-out rows better than the N-harmonic fit, which also meets "
-                          "accuracy_mm (generalised cross-validation score {ratio:.3g} x the N-harmonic fit's)",
-            "harmonic_misses": "the N-harmonic fit does not meet accuracy_mm by its highest order",
-            "harmonic_swings": "the N-harmonic fit swings outside the table's range between the rows",
-        },
-        "smoothings": {
-            "accuracy": "the smoothing spline is smoothed to an RMS residual of accuracy_mm (Reinsch 1967)",
-            "gcv": "the smoothing spline is smoothed by generalised cross-validation, whose residual exceeds accuracy_mm: "
-                   "the table is noisier than accuracy_mm or bends more sharply than its rows resolve (the foot of a "
-                   "valve lift)",
-        },
         "table": "Lift table (every {step:g} cam deg; the full table is tables/{name}_lift.csv)",
         "plots": "Plots",
         "files": "Files",
@@ -232,22 +216,6 @@ TEXT = {
         "checking_height": "контрольная высота, мм", "duration": "продолжительность, град", "fit": "аппроксимация",
         "rms_residual": "СКО отклонения, мм", "max_residual": "наибольшее отклонение, мм",
         "jerk_sign_changes": "перемены знака третьей производной",
-        "fit_used": {"harmonic": "N-гармоническая аппроксимация (N = {n})", "spline": "сглаживающий сплайн"},
-        "fit_reasons": {
-            "given": "способ аппроксимации задан в исходных данных",
-            "harmonic_gcv": "N-гармоническая аппроксимация укладывается в заданную точность измерения и лучше предсказывает "
-                            "исключённые точки, чем сглаживающий сплайн (критерий обобщённой перекрёстной проверки "
-                            "{ratio:.3g} от критерия сплайна)",
-            "spline_gcv": "сглаживающий сплайн лучше предсказывает исключённые точки, чем N-гармоническая "
-                          "аппроксимация, тоже укладывающаяся в заданную точность измерения (критерий обобщённой перекрёстной "
-                          "проверки {ratio:.3g} от критерия гармонической аппроксимации)",
-            "harmonic_misses": "N-гармоническая аппроксимация не укладывается в заданную точность измерения и при наибольшем порядке",
-            "harmonic_swings": "N-гармоническая аппроксимация выходит между точками за пределы подъёмов таблицы"},
-        "smoothings": {
-            "accuracy": "сплайн сглажен до СКО отклонения, равного заданной точности измерения (Reinsch (1967))",
-            "gcv": "сплайн сглажен по обобщённой перекрёстной проверке, СКО отклонения которой больше точности измерения: "
-                   "шум таблицы больше точности измерения или таблица изгибается круче, чем разрешают её точки "
-                   "(начало подъёма клапана)"},
         "table": "Таблица подъёма (через {step:g}° ПРВ; полная таблица: tables/{name}_lift.csv)",
         "plots": "Графики",
         "files": "Файлы",

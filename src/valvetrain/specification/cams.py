@@ -27,7 +27,7 @@ from ..laws.power_polynomial import ARTICLE_EXPONENTS
 from ..laws.measured import CHECKING_HEIGHTS_MM, MIN_VALVE_LIFT_MM, TableLaw, lobe_table, table_accuracy
 from ..laws.takeup import ClearanceTakeUp
 from ..layouts import train_mass
-from ..report.wording import fit_reason
+from ..locale.wording import fit_reason
 from ..units import DEG, MM, cam_per_crank, rad_to_deg
 from .fields import RAMP_VELOCITY, SEGMENT_ANGLE, Length, _bounded, _Model
 from .messages import message, shown

@@ -10,7 +10,7 @@ SI units inside: N, m, Pa, kg, rad/s.  One module per job:
 * :mod:`~valvetrain.springs.search`: the vectorised search for the lightest spring or nested pair and its
   screening bounds;
 * :mod:`~valvetrain.springs.diagnosis`: why no spring passes and what would make one pass, as frozen data (the
-  report words it, :mod:`valvetrain.report.wording`).
+  report words it, :mod:`valvetrain.locale.wording`).
 
 Conical (beehive) and progressive-rate springs are not designed: the sources give no formulas for them.
 """

@@ -3,7 +3,7 @@
 :func:`diagnose` returns a frozen :class:`Diagnosis`: the failing checks of the best candidate
 (:class:`Conflict`), the room the resonance check leaves between stress limits (:class:`StressWindow`) and the
 kind of conflict it proves, and the remedies, each tried by a new search (:class:`Remedy`: the specification key
-it changes and the value suggested).  The words are the report's (:mod:`valvetrain.report.wording`).
+it changes and the value suggested).  The words are the report's (:mod:`valvetrain.locale.wording`).
 """
 
 from dataclasses import dataclass, replace

@@ -7,10 +7,49 @@ reads and into the specification's key names.  results.json and the CLI take the
 report its own language.
 """
 
-from ..locale import check_text
-from ..units import to_display
-from .i18n import TEXT
-from .names import unit_text
+from ..units import symbol as unit_text, to_display
+from . import catalogue, check_text
+
+FIT_WORDS = {
+    "en": {
+            "fit_used": {"harmonic": "N-harmonic fit (N = {n})", "spline": "smoothing spline"},
+            "fit_reasons": {
+                "given": "fit = \"{fit}\" in the specification",
+                "harmonic_gcv": "the N-harmonic fit meets accuracy_mm and predicts left-out rows better than the smoothing "
+                                "spline (generalised cross-validation score {ratio:.3g} x the spline's)",
+                "spline_gcv": "the smoothing spline predicts left-out rows better than the N-harmonic fit, which also meets "
+                              "accuracy_mm (generalised cross-validation score {ratio:.3g} x the N-harmonic fit's)",
+                "harmonic_misses": "the N-harmonic fit does not meet accuracy_mm by its highest order",
+                "harmonic_swings": "the N-harmonic fit swings outside the table's range between the rows",
+            },
+            "smoothings": {
+                "accuracy": "the smoothing spline is smoothed to an RMS residual of accuracy_mm (Reinsch 1967)",
+                "gcv": "the smoothing spline is smoothed by generalised cross-validation, whose residual exceeds accuracy_mm: "
+                       "the table is noisier than accuracy_mm or bends more sharply than its rows resolve (the foot of a "
+                       "valve lift)",
+            },
+    },
+    "ru": {
+            "fit_used": {"harmonic": "N-гармоническая аппроксимация (N = {n})", "spline": "сглаживающий сплайн"},
+            "fit_reasons": {
+                "given": "способ аппроксимации задан в исходных данных",
+                "harmonic_gcv": "N-гармоническая аппроксимация укладывается в заданную точность измерения и лучше предсказывает "
+                                "исключённые точки, чем сглаживающий сплайн (критерий обобщённой перекрёстной проверки "
+                                "{ratio:.3g} от критерия сплайна)",
+                "spline_gcv": "сглаживающий сплайн лучше предсказывает исключённые точки, чем N-гармоническая "
+                              "аппроксимация, тоже укладывающаяся в заданную точность измерения (критерий обобщённой перекрёстной "
+                              "проверки {ratio:.3g} от критерия гармонической аппроксимации)",
+                "harmonic_misses": "N-гармоническая аппроксимация не укладывается в заданную точность измерения и при наибольшем порядке",
+                "harmonic_swings": "N-гармоническая аппроксимация выходит между точками за пределы подъёмов таблицы"},
+            "smoothings": {
+                "accuracy": "сплайн сглажен до СКО отклонения, равного заданной точности измерения (Reinsch (1967))",
+                "gcv": "сплайн сглажен по обобщённой перекрёстной проверке, СКО отклонения которой больше точности измерения: "
+                       "шум таблицы больше точности измерения или таблица изгибается круче, чем разрешают её точки "
+                       "(начало подъёма клапана)"},
+    },
+}
+"""The fit a measured table uses (``fit_used``), why (``fit_reasons``, by the code of
+:func:`valvetrain.laws.measured.choose_fit`) and how a spline is smoothed (``smoothings``), per language."""
 
 DIAGNOSIS_WORDS = {
     "en": {
@@ -101,12 +140,12 @@ def _remedy_text(r, words):
 def diagnosis_text(d, lang):
     """The spring diagnosis (:class:`valvetrain.springs.Diagnosis`) in words of ``lang``: the conflicts, what the
     stress window proves, the remedies."""
-    words, t = DIAGNOSIS_WORDS[lang], TEXT[lang]
+    words, springs = DIAGNOSIS_WORDS[lang], catalogue(lang)["springs"]
     said = []
     for x in d.conflicts:
         unit = unit_text(x.unit, lang) if lang != "en" else x.unit
         said.append(words["conflict"].format(
-            tag=f"{x.spring} " if d.pair else "", spring=t.get("line_" + x.spring, ""),
+            tag=f"{x.spring} " if d.pair else "", spring=springs[x.spring] if x.spring in ("outer", "inner") else "",
             quantity=x.quantity if lang == "en" else check_text(f"spring.{x.check}", {}, lang),
             value=to_display(x.value, x.unit), limit=to_display(x.limit, x.unit), unit=unit,
             spaced_unit=f" {unit}" if unit else "", shortfall=x.shortfall))
@@ -143,6 +182,6 @@ def fit_reason(fit, harmonics, code, ratio, smoothing, lang="en"):
     smoothing : {"accuracy", "gcv"}
         How the spline's smoothing was chosen (:func:`valvetrain.laws.measured.smoothing_spline`).
     """
-    t = TEXT[lang]
+    t = FIT_WORDS[lang]
     text = t["fit_used"][fit].format(n=harmonics) + ": " + t["fit_reasons"][code].format(fit=fit, ratio=ratio)
     return text + ("; " + t["smoothings"][smoothing] if fit == "spline" else "")
