@@ -103,7 +103,7 @@ def test_manufacturing_tables(written):
     assert header == ["polar_angle_deg", "radius_mm"]
     psi = np.array([float(r[0]) for r in rows])
     radius = np.array([float(r[1]) for r in rows])
-    assert np.allclose(np.diff(psi), 1.0)  # [output] export_step_deg = 1
+    assert np.allclose(np.diff(psi), 0.25)  # [output] export_step_deg = 0.25 (issue 24: 0.1-0.25 deg for manufacture)
     theta = np.linspace(-np.pi, np.pi, 400001)
     x, y = v.law.profile(theta, v.heel_radius)[0] * 1e3
     ang = np.degrees(np.arctan2(x, y))

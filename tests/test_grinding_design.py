@@ -59,10 +59,10 @@ def test_a_flat_follower_cam_gets_a_master_and_no_wear_error(tmp_path):
     (heel,) = msp.query('CIRCLE[layer=="MASTER_BASE_CIRCLE"]')
     assert heel.dxf.radius == pytest.approx(g["master_base_radius_mm"])
     rows = list(csv.DictReader(line for line in open(out / "contour/intake_master.csv") if not line.startswith("#")))
-    assert len(rows) == 360 and float(rows[180]["spindle_deg"]) == 0.0
+    assert len(rows) == 1440 and float(rows[720]["spindle_deg"]) == 0.0   # every 0.25 deg (export_step_deg)
     # at the nose the master follower is at its full lift, and so is the surface grinder's flat face
-    assert float(rows[180]["master_follower_lift_mm"]) == pytest.approx(g["master_follower_lift_mm"], rel=1e-9)
-    assert float(rows[180]["master_flat_lift_mm"]) == pytest.approx(g["master_follower_lift_mm"], rel=1e-6)
+    assert float(rows[720]["master_follower_lift_mm"]) == pytest.approx(g["master_follower_lift_mm"], rel=1e-9)
+    assert float(rows[720]["master_flat_lift_mm"]) == pytest.approx(g["master_follower_lift_mm"], rel=1e-6)
     wear = list(csv.DictReader(open(out / "tables/intake_wear_error.csv")))
     assert list(wear[0]) == ["cam_deg", "lift_mm", "worn_lift_mm", "error_mm", "error_first_order_mm",
                              "phase_shift_deg"]
@@ -86,7 +86,8 @@ def test_a_roller_cam_with_a_concave_flank_refuses_a_larger_wheel(tmp_path):
     v = results.valves["exhaust"]
     g = json.loads(results_json(results))["valves"]["exhaust"]["grinding"]
     assert not g["grindable"] and not g["master_makeable"] and g["max_wear_lift_error_mm"] is None
-    failing = [c for c in v.warnings if c.severity == "failure"]
+    # the example's valve-piston gap (0.70 mm against 2.54 mm) is a failure of its own since issue 24
+    failing = [c for c in v.warnings if c.severity == "failure" and "valve-piston clearance" not in c.quantity]
     assert [c.quantity for c in failing] == ["exhaust: cam concave radius |rho| against the grinding wheel radius"]
     assert failing[0].value == pytest.approx(-g["cam_min_concave_radius_mm"] * 1e-3)
     out = write_outputs(results, tmp_path / "out")

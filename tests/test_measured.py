@@ -12,6 +12,7 @@ from scipy.optimize import brentq
 from valvetrain.cli import main
 from valvetrain.checks import failed
 from valvetrain.design import run
+from valvetrain.report.numbers import number
 from valvetrain.laws import measured
 from valvetrain import files
 from valvetrain.files import TableFileError, read_lift_table
@@ -187,7 +188,7 @@ def test_report_shows_the_measured_analysis(tmp_path):
     data = json.loads((out / "results.json").read_text())["valves"]["intake"]["cam"]
     assert "Measured lift table" in html and "sign changes of the jerk" in html
     for d in data["measured"]["durations_deg"]:
-        assert f'<td class="n">{d["height_mm"]:.6g}</td><td class="n">{d["duration_deg"]:.6g}</td>' in html
+            assert f'<td class="n">{number(d["height_mm"])}</td><td class="n">{number(d["duration_deg"])}</td>' in html
     assert "Shang Hanji (1988), sections 5.1-5.3; smoothing spline to the measurement accuracy" in html
     assert "fit used and why" in html and "N-harmonic fit (N = 9): the N-harmonic fit meets accuracy_mm" in html
 

@@ -17,7 +17,8 @@ from valvetrain.specification import example_spec
 DESIGN_MODULES = ["valvetrain.design", "valvetrain.design.valve", "valvetrain.design.drive", "valvetrain.design.crank",
                   "valvetrain.design.twostroke", "valvetrain.design.dynamics", "valvetrain.design.grinding",
                   "valvetrain.design.hydraulic_actuation", "valvetrain.design.results",
-                  "valvetrain.design.lubrication", "valvetrain.design.lash_adjuster"]
+                  "valvetrain.design.lubrication", "valvetrain.design.lash_adjuster",
+                  "valvetrain.design.camcard"]
 
 
 def _defined(kind):

@@ -125,7 +125,7 @@ def test_the_report_lists_accepted_checks_apart_with_the_reason(tmp_path):
     assert "</span>: closing lag" not in open_table and "</span>: V′ (throat velocity)" in open_table
     assert "</span>: closing lag" in accepted_table and "the appendix&#39;s timing, as printed" in accepted_table
     # the CLI's count leaves the accepted check out, and the rerun of spec.toml keeps the acceptance
-    assert "checks: 0 failure(s), 3 warning(s), 2 info of" in result.output and "1 accepted" in result.output
+    assert "open: failures 0, warnings 3, info 2; accepted in the specification: 1" in result.output
     saved = json.loads((out / "results.json").read_text())
     assert [a["quantity"] for a in saved["accepted"]] == ["intake: closing lag"]
     assert tomllib.loads((out / "spec.toml").read_text())["accepted"] == data["accepted"]
@@ -199,15 +199,50 @@ def test_validate_prints_the_ranked_checks(tmp_path):
     lines = result.output.splitlines()
     assert lines[0].endswith("valid (1 valve(s): intake)")
     assert lines[1].startswith("warning: intake: closing lag = 78 crank deg")     # -30 %, the farthest outside
-    assert lines[-2].startswith("info: intake: seat angle")
-    assert lines[-1].startswith("checks: 0 failure(s), 4 warning(s), 2 info of")
+    assert lines[-3].startswith("info: intake: seat angle")
+    assert lines[-2].endswith("checks; open: failures 0, warnings 4, info 2; accepted in the specification: 0")
+    assert lines[-1] == "verdict: No failure is open: every allowable and physical limit is met."
 
 
 def test_validate_exits_0_with_a_failure_and_prints_it_first(tmp_path):
     result = CliRunner().invoke(main, ["validate", str(write(tmp_path, example(**NARROW_CAM)))])
     assert result.exit_code == 0, result.output
     assert result.output.splitlines()[1].startswith("failure: intake: cam contact stress")
-    assert "checks: 1 failure(s)" in result.output
+    assert "open: failures 1," in result.output
+    assert "verdict: Failures open: 1; the design does not meet its limits." in result.output
+
+
+def test_strict_exits_1_while_a_failure_is_open_and_0_once_it_is_accepted(tmp_path):
+    """Issue 24: `--strict` for CI.  The narrow cam fails its contact stress (one open failure): exit 1 from
+    `validate --strict` and `run --strict` (which still writes its outputs); the same failure accepted in the file
+    with a reason is no longer open: exit 0."""
+    failing = write(tmp_path, example(**NARROW_CAM))
+    result = CliRunner().invoke(main, ["validate", "--strict", str(failing)])
+    assert result.exit_code == 1, result.output
+    out = tmp_path / "design"
+    result = CliRunner().invoke(main, ["run", str(failing), "--out", str(out), "--strict"])
+    assert result.exit_code == 1 and (out / "report.html").is_file(), result.output
+    accepted = example(**NARROW_CAM)
+    accepted["accepted"] = [{"quantity": "cam contact stress", "reason": "a narrow test cam"}]
+    result = CliRunner().invoke(main, ["validate", "--strict", str(write(tmp_path, accepted))])
+    assert result.exit_code == 0, result.output
+    assert "open: failures 0," in result.output and "accepted in the specification: 1" in result.output
+
+
+def test_one_verdict_in_the_command_line_the_report_and_repr(tmp_path):
+    """Issue 24: the command line said "0 failure(s), 4 warning(s), 2 info", the report "Every strength and spring
+    limit is met" and ``repr`` "6 of 39 checks fail" for one design.  Now all three give the same counts in the
+    same words; the counts are those of the open checks listed on the command line (counted here from its lines)."""
+    out = tmp_path / "design"
+    result = CliRunner().invoke(main, ["run", str(write(tmp_path, example())), "--out", str(out)])
+    lines = result.output.splitlines()
+    listed = {s: sum(line.startswith(f"{s}: intake: ") for line in lines) for s in ("failure", "warning", "info")}
+    counts = lines[-2]
+    assert f"open: failures {listed['failure']}, warnings {listed['warning']}, info {listed['info']};" in counts
+    html = (out / "report.html").read_text(encoding="utf-8")
+    assert counts in html and lines[-1].removeprefix("verdict: ") in html
+    shown = repr(run(validate(example())))
+    assert counts in shown and lines[-1].removeprefix("verdict: ") in shown
 
 
 def test_a_check_that_cannot_be_evaluated_says_so_and_fails(tmp_path, monkeypatch):
@@ -236,7 +271,7 @@ def test_a_check_that_cannot_be_evaluated_says_so_and_fails(tmp_path, monkeypatc
             "<= 0.5 m/s (s)") in lines
     assert "failure: intake: closing lag cannot be evaluated: its value could not be computed, allowed 40...60 (s)" \
         in lines
-    assert "checks: 2 failure(s)" in result.output
+    assert "open: failures 2," in result.output
     records = json.loads((out / "results.json").read_text())["warnings"]
     seating = next(w for w in records if w["quantity"] == "intake: valve seating velocity")
     assert seating["severity"] == "failure" and seating["value"] is None

@@ -275,6 +275,33 @@ def ranked(checks):
     return sorted(checks, key=lambda c: (order[c.severity], c.margin))
 
 
+def tally(checks) -> dict[str, int]:
+    """The verdict of a design in counts: every check, the open ones by severity, the accepted ones.
+
+    One tally for the command line, the report and ``repr`` (the same words everywhere, see
+    ``valvetrain.report.i18n`` ``verdict``).
+
+    Parameters
+    ----------
+    checks : sequence of Check
+
+    Returns
+    -------
+    dict
+        ``checks`` (all), ``failure``, ``warning``, ``info`` (failed and not accepted), ``accepted`` (failed and
+        accepted in the specification).
+
+    >>> a = check("flow.throat_velocity", 85.0, 50, 80, source="s")
+    >>> b = check("dynamics.seating_velocity", 1.0, high=0.9, source="s", severity="failure")
+    >>> tally([a, b, check("flow.throat_velocity", 60.0, 50, 80, source="s")])
+    {'checks': 3, 'failure': 1, 'warning': 1, 'info': 0, 'accepted': 0}
+    """
+    out = {"checks": len(checks), **{s: 0 for s in reversed(SEVERITIES)}, "accepted": 0}
+    for c in failed(checks):
+        out["accepted" if c.accepted else c.severity] += 1
+    return out
+
+
 def _norm(text):
     return " ".join(text.split()).casefold()
 

@@ -4,7 +4,8 @@ Exit status: 0 on success, 2 for a specification or an output folder that cannot
 (one message per problem on standard error; nothing is written), 130 when interrupted
 (Ctrl-C), 1 for any other failure.  A design whose checks fail -- warnings, and failures
 such as a stress above its allowable -- is a result, not an error: ``run`` and ``validate``
-print the open checks, ranked, and exit 0.
+print the open checks, ranked, and the verdict, and exit 0; with ``--strict`` they exit 1
+when a failure is open (not accepted in the specification).
 """
 
 import itertools
@@ -67,7 +68,8 @@ _BOUND = {"failure": "allowed", "warning": "recommended", "info": "usual"}
 
 def _echo_checks(results):
     """The failed checks, ranked (failures, warnings, info; the farthest outside first), one line each; the accepted
-    failures marked as such with their reasons; then a count that leaves the accepted checks out."""
+    failures marked as such with their reasons; then the counts and the verdict (the report's words); returns the
+    number of open failures."""
     for w in results.warnings:
         click.echo(f"{w.severity}: {w.statement}, {_BOUND[w.severity]} {w.range} "
                    f"({w.source})".replace("  ", " "))
@@ -76,10 +78,24 @@ def _echo_checks(results):
         if w.severity == "failure":
             click.echo(f"accepted failure: {w.statement}, allowed {w.range} "
                        f"({w.source}); reason: {w.reason}".replace("  ", " "))
-    counts = {s: sum(w.severity == s for w in results.warnings) for s in _BOUND}
-    click.echo(f"checks: {counts['failure']} failure(s), {counts['warning']} warning(s), {counts['info']} info of "
-               f"{len(results.checks)}" + (f"; {len(accepted)} accepted in the specification, not counted"
-                                           if accepted else ""))
+    from .checks import tally
+    from .report.i18n import verdict
+
+    counts = tally(results.checks)
+    sentence, numbers = verdict(counts)
+    click.echo(numbers)
+    click.echo(f"verdict: {sentence}")
+    return counts["failure"]
+
+
+def _strict_exit(open_failures, strict):
+    """``--strict``: exit status 1 where a failure is open (not accepted in the specification)."""
+    if strict and open_failures:
+        sys.exit(1)
+
+
+STRICT_HELP = ("Exit with status 1 when a failure is open (a failed limit not accepted in the specification), for "
+               "use in CI; the outputs are written all the same.")
 
 
 class _Progress:
@@ -164,7 +180,8 @@ def main():
 @click.option("--figures", type=click.Choice(["main", "all", "none"]), default="main", show_default=True,
               help="Plots to draw: main (all but the time-area, curvature, crank-force, crank-pin and port "
                    "time-area figures), all, or none; the report embeds those drawn.")
-def run(file, out, force, lang, figures):
+@click.option("--strict", is_flag=True, help=STRICT_HELP)
+def run(file, out, force, lang, figures, strict):
     """Run the design of FILE (default: the built-in example) and write it to --out."""
     from .export import write_outputs
     from .report.drawing import start
@@ -189,7 +206,7 @@ def run(file, out, force, lang, figures):
                        " mm): no contour, DXF or manufacturing table was written for it")
         if "measured" in v.records:
             click.echo(f"note: valves.{name}: measured table fitted by the {v.records['measured']['fit_reason']}")
-    _echo_checks(results)
+    _strict_exit(_echo_checks(results), strict)
 
 
 @main.command()
@@ -466,18 +483,19 @@ def _duration(seconds):
 
 @main.command()
 @click.argument("file", type=click.Path(dir_okay=False))
-def validate(file):
+@click.option("--strict", is_flag=True, help=STRICT_HELP)
+def validate(file, strict):
     """Check a specification FILE; exit status 2 and one message per problem if it is not valid.
 
     The design is computed (nothing is written), so a file that validates also runs, and its
     failed checks are printed as `run` prints them: ranked, failures first, those accepted in
     the file's [[accepted]] tables left out.  Exit status 0 whatever the checks say (failures
     are results of the design, not errors of the input); 2 also for an [[accepted]] table that
-    names no check."""
+    names no check; with --strict, 1 when a failure is open."""
     spec = _load(file)
     results = _design(spec)
     click.echo(f"{file}: valid ({len(spec.valves)} valve(s): {', '.join(spec.valves)})")
-    _echo_checks(results)
+    _strict_exit(_echo_checks(results), strict)
 
 
 @main.command()

@@ -79,6 +79,7 @@ UNITS = {
     "mm/rad2": (MM, ("_mm_per_rad2", "_mm_rad2"), "mm/rad²", "мм/рад²"),
     "mm/rad": (MM, ("_mm_per_rad", "_mm_rad"), "mm/rad", "мм/рад"),
     "mm/deg": (MM / DEG, ("_mm_per_deg",), "mm/deg", "мм/град"),
+    "mm crank deg": (MM * DEG, ("_mm_crank_deg",), "mm·crank deg", "мм·град ПКВ"),
     "%": (0.01, (), "%", "%"),
     "um": (1e-6, ("_um",), "µm", "мкм"),
     "mPa s": (1e-3, ("_mPa_s",), "mPa·s", "мПа·с"),

@@ -19,12 +19,13 @@ from typing import Any, Optional
 
 
 from .. import flow
-from ..checks import SEVERITIES, Check, apply_acceptances, check, failed, ranked
+from ..checks import SEVERITIES, Check, apply_acceptances, check, failed, ranked, tally
 from ..crank.pressure import PressureFileError
 from ..files import TableFileError
 from ..specification import Spec, SpecError, crank_geometry, si, spec_document, validate
 from ..specification.models import Dynamics
 from ..units import MM, to_display
+from .camcard import CamCard, CamCardValve, cam_card_stage
 from .crank import LAMBDA_RANGE, CrankResults, CrankSummary, crank_stage, valve_timing
 from .drive import MassResult, SpringResult, StrengthResult
 from .dynamics import DynamicsResult
@@ -68,6 +69,7 @@ class DesignResults:
     checks: tuple[Check, ...]                  # every check of the design, passed or not
     crank: Optional[CrankResults] = None
     two_stroke: Optional[TwoStrokeResults] = None
+    cam_card: Optional[CamCard] = None         # a four-stroke's (valvetrain.camcard)
 
     @property
     def warnings(self):
@@ -81,20 +83,22 @@ class DesignResults:
         return ranked(c for c in failed(self.checks) if c.accepted)
 
     def _rows(self):
-        """One line of figures per valve: name, law, valve lift, time-area, fullness, spring, failed checks."""
+        """One line of figures per valve: name, law, valve lift, time-area, fullness, spring, open checks."""
         for name, v in self.valves.items():
             spring = v.drive.spring.design
             yield (name, v.law.name, f"{v.flow.valve_lift / MM:.4g}", f"{v.flow.time_area / MM**2:.4g}",
                    f"{v.flow.fullness:.4g}", f"{spring.wire_diameter / MM:g} x {spring.mean_diameter / MM:g}",
-                   f"{len(v.warnings)} of {len(v.checks)}")
+                   "{failure}, {warning}, {info} of {checks}".format(**tally(v.checks)))
 
-    _HEADS = ("valve", "law", "lift, mm", "time-area, mm2 s", "fullness", "spring wire x D, mm", "checks failed")
+    _HEADS = ("valve", "law", "lift, mm", "time-area, mm2 s", "fullness", "spring wire x D, mm",
+              "open failures, warnings, info")
 
     def __repr__(self):
+        from ..report.i18n import verdict
+
         e = record(self.engine)
         lines = [f"DesignResults: {e['name']} ({e['cylinders']} cyl., {e['bore_mm']:g} x {e['stroke_mm']:g} mm, "
-                 f"{e['rated_speed_rpm']:g} rpm), {len(self.warnings)} of {len(self.checks)} checks fail"
-                 + (f" ({len(self.accepted)} more accepted)" if self.accepted else "")]
+                 f"{e['rated_speed_rpm']:g} rpm)", *("  " + line for line in verdict(tally(self.checks)))]
         lines += ["  " + ", ".join(f"{h} {c}" for h, c in zip(self._HEADS, row, strict=True)) for row in self._rows()]
         if self.crank is not None:
             lines.append(f"  crank: mean torque {self.crank.figures.mean_torque:.4g} N m")
@@ -109,9 +113,13 @@ class DesignResults:
             body = "".join("<tr>" + "".join(f"<td>{escape(str(c))}</td>" for c in r) + "</tr>" for r in rows)
             return f"<table><tr>{head}</tr>{body}</table>"
 
+        from ..report.i18n import verdict
+
         warnings = [(w.severity, w.quantity, w.value_text, w.range, w.source) for w in self.warnings]
         accepted = [(w.severity, w.quantity, w.value_text, w.range, w.reason) for w in self.accepted]
-        return (f"<p><b>{escape(self.engine.name)}</b></p>" + table(self._HEADS, self._rows())
+        sentence, counts = verdict(tally(self.checks))
+        return (f"<p><b>{escape(self.engine.name)}</b></p><p>{escape(sentence)} {escape(counts)}</p>"
+                + table(self._HEADS, self._rows())
                 + "<p>Checks that fail</p>" + table(("severity", "quantity", "value", "allowed", "source"), warnings)
                 + ("<p>Accepted in the specification</p>" + table(("severity", "quantity", "value", "allowed",
                                                                    "reason"), accepted) if accepted else ""))
@@ -135,6 +143,8 @@ class DesignResults:
             out["crank"] = self.crank.summary
         if self.two_stroke is not None:
             out["two_stroke"] = self.two_stroke.summary
+        if self.cam_card is not None:
+            out["cam_card"] = record(self.cam_card)
         out["warnings"] = [w.warning() for w in self.warnings]
         out["accepted"] = [w.warning() for w in self.accepted]
         out["checks"] = [c.as_dict() for c in self.checks]
@@ -207,7 +217,8 @@ def run(spec, laws=None, progress=None) -> DesignResults:
         if stage is not None:
             found += [c.named(tag) for c in stage.checks]
     found, valves = accept(found, spec.accepted, valves)
-    return DesignResults(spec, engine_record(engine), valves, tuple(found), crank, ports)
+    card = cam_card_stage(valves) if valves and engine.strokes == 4 else None
+    return DesignResults(spec, engine_record(engine), valves, tuple(found), crank, ports, card)
 
 
 def accept(found: list[Check], acceptances: list, valves: dict[str, ValveDesign]
@@ -398,6 +409,8 @@ def results_schema() -> dict[str, Any]:
             "valvetrain_version": {"type": "string"}, "engine": json_schema(EngineRecord),
             "valves": {"type": "object", "additionalProperties": valve},
             "crank": json_schema(CrankSummary), "two_stroke": json_schema(TwoStrokeSummary),
+            "cam_card": json_schema(CamCard) | {"properties": json_schema(CamCard)["properties"] | {
+                "valves": {"type": "object", "additionalProperties": json_schema(CamCardValve)}}},
             "warnings": {"type": "array", "items": check_record,
                          "description": "the checks that fail and are not accepted, ranked: failures, warnings, info, "
                                         "the farthest outside (smallest margin) first"},

@@ -7,7 +7,7 @@ from typing import Any
 
 import numpy as np
 
-from ..checks import Check, check, failed
+from ..checks import Check, check, tally
 from ..crank import dynamics, kinematics, pressure, torque
 from ..specification import SpecError
 from ..units import MPA
@@ -117,7 +117,8 @@ class CrankResults:
     def __repr__(self):
         f = self.figures
         return (f"CrankResults({f.cylinders} cyl. {f.layout}, mean torque {f.mean_torque:.4g} N m, peak pressure "
-                f"{f.max_gas_pressure / MPA:.4g} MPa, {len(failed(self.checks))} of {len(self.checks)} checks fail)")
+                f"{f.max_gas_pressure / MPA:.4g} MPa, "
+                + "open failures {failure}, warnings {warning}, info {info} of {checks} checks)".format(**tally(self.checks)))
 
 
 def crank_geometry(crank, engine) -> tuple[float, float, float, float]:

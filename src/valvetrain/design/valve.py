@@ -17,7 +17,7 @@ from typing import Any, Optional, Union
 import numpy as np
 
 from .. import flow, geometry
-from ..checks import Check, check, failed, ranked
+from ..checks import Check, check, failed, ranked, tally
 from ..crank.kinematics import displacement
 from ..followers import follower_of
 from ..laws import LiftLaw
@@ -90,6 +90,39 @@ def layout_check(code, value, layout, **kw) -> Optional[Check]:
     if band is None:
         return None
     return check(code, value, band.low, band.high, source=band.source, note=band.note, **kw)
+
+ENGINE_CLASSES = ("automotive_petrol", "automotive_diesel", "heavy_duty")
+"""The engine classes of ``[engine] engine_class``: a car or motorcycle petrol engine, a car, truck or tractor diesel,
+and a heavy-duty engine (locomotive, marine, stationary)."""
+
+PETROL_BANDS = ("timing.opening_advance", "timing.closing_lag", "valve.seat_angle", "valve.clearance",
+                "drive.rocker_ratio")
+"""The checks whose recommended bands are those of a petrol engine (Valve-train practical works (n.d.), works 1 and 2:
+the manual designs a petrol engine's valve train, its appendix a Kurz cam for one)."""
+
+OTHER_CLASS_NOTE = ("the band is a petrol engine's (Valve-train practical works (n.d.)) and the cited works give none "
+                    "for this engine class ({engine_class}): a remark, not a warning")
+
+
+def engine_class(engine) -> str:
+    """The engine class whose recommended bands apply: ``[engine] engine_class``, else an automotive diesel for
+    ``type = "diesel"`` and an automotive petrol engine otherwise (:data:`ENGINE_CLASSES`)."""
+    if engine.engine_class is not None:
+        return engine.engine_class
+    return "automotive_diesel" if engine.type == "diesel" else "automotive_petrol"
+
+
+def for_engine_class(checks, engine) -> list[Check]:
+    """The checks with the petrol engine's bands (:data:`PETROL_BANDS`) made remarks (info) with a note where the
+    engine is of another class: a rocker ratio of 1 or a 40 crank deg advance of a locomotive diesel is no warning
+    against a petrol engine's band."""
+    cls = engine_class(engine)
+    if cls == "automotive_petrol":
+        return checks
+    note = OTHER_CLASS_NOTE.format(engine_class=cls.replace("_", " "))
+    return [replace(c, severity="info", note="; ".join(filter(None, (c.note, note))))
+            if c.code in PETROL_BANDS and c.severity == "warning" else c for c in checks]
+
 
 TIMING_RANGES = {"intake": ((20.0 * DEG, 30.0 * DEG), (40.0 * DEG, 60.0 * DEG))}
 """Recommended inlet opening advance and closing lag [crank rad] (Valve-train practical works (n.d.), work 2: 20-30 and 40-60 crank deg)."""
@@ -285,11 +318,12 @@ class ClearanceResult:
 
 def clearance_check(kind, gap, angle, window=None) -> Check:
     """The check of a valve-to-piston gap [m] at a crank angle [rad] against :data:`PISTON_CLEARANCE_MIN`, over the
-    open event or, with ``window`` (crank rad from the gas-exchange TDC), over the valve overlap."""
+    open event or, with ``window`` (crank rad from the gas-exchange TDC), over the valve overlap.  A gap below the
+    minimum is a failure: the valve may touch the piston at over-speed, with lash or with valve float."""
     where = "" if window is None else (f" over the overlap from {math.degrees(window[0]):.4g} to "
                                        f"{math.degrees(window[1]):.4g} crank deg")
     return check("piston.clearance" if window is None else "piston.clearance_overlap", gap,
-                 low=PISTON_CLEARANCE_MIN[kind], unit="mm", source=PISTON_CLEARANCE_SOURCE,
+                 low=PISTON_CLEARANCE_MIN[kind], unit="mm", source=PISTON_CLEARANCE_SOURCE, severity="failure",
                  note=f"smallest at {math.degrees(angle):.4g} crank deg from the gas-exchange TDC{where}")
 
 
@@ -498,7 +532,8 @@ def valve_checks(cam, flow_result, profile, valve, engine, timing) -> list[Check
     """The recommended-range checks of the law, the flow, the timing and the profile (every check, passed or not).
 
     ``timing`` is the opening advance and closing lag [crank rad] of the main lift (None where not defined).  The
-    acceleration and rocker-ratio bands are those of the valve's drive layout (:data:`LAYOUT_BANDS`).
+    acceleration and rocker-ratio bands are those of the valve's drive layout (:data:`LAYOUT_BANDS`); the petrol
+    engine's bands are remarks for an engine of another class (:func:`for_engine_class`).
     """
     law, i_k = cam.law, cam.rocker_ratio
     out = law.checks()
@@ -538,7 +573,7 @@ def valve_checks(cam, flow_result, profile, valve, engine, timing) -> list[Check
     if not profile.undercut:
         out.append(check("profile.rho_min", profile.rho_min, low=RHO_MIN, source="Shang Hanji (1988), section 2.1",
                          unit="mm"))
-    return out
+    return for_engine_class(out, engine)
 
 
 def mass_checks(valve, mass, throat_area) -> list[Check]:
@@ -621,7 +656,7 @@ class ValveDesign:
         f = self.flow
         return (f"ValveDesign({self.name!r}: {self.kind}, {self.law.name} law, valve lift {f.valve_lift / MM:.4g} mm, "
                 f"time-area {f.time_area / MM**2:.4g} mm2 s, fullness {f.fullness:.4g}, "
-                f"{len(self.warnings)} of {len(self.checks)} checks fail)")
+                "open failures {failure}, warnings {warning}, info {info} of {checks} checks)".format(**tally(self.checks)))
 
 
 def design_valve(name, valve, engine, gas, output, law=None, progress=None, cylinder=None) -> ValveDesign:

@@ -10,7 +10,7 @@ from markupsafe import Markup
 import numpy as np
 
 from .. import __version__
-from ..checks import describe_range
+from ..checks import describe_range, tally
 from ..design.dynamics import SOURCES as DYNAMICS_SOURCES
 from ..design.grinding import SOURCES as GRINDING_SOURCES
 from ..design.hydraulic_actuation import SOURCES as HYDRAULIC_SOURCES
@@ -20,7 +20,10 @@ from ..design.results import record, shown, shown_value
 from ..tables import lift_table_columns
 from ..bibliography import WORKS, cited_in
 from ..units import to_display
-from .i18n import SYMBOLS, TEXT
+from .i18n import SYMBOLS, TEXT, verdict
+from .numbers import number, percent
+from .russian import russian_citations
+from .worked import flow_lines, spring_lines
 from .names import has_name, label, link_names, quantity_text, translate, unevaluated_text, unit_text, value_text
 from ..locale.wording import diagnosis_text, fit_reason
 
@@ -39,14 +42,15 @@ TIME_AREA_FIELDS = ("stroke", "time_area", "time_area_open", "v3", "charge_veloc
 
 
 def fmt(x, lang="en"):
-    """A number for a human: 6 significant digits; a list with commas; yes/no; a text value in ``lang``; "-" for
-    no value (None, or a number that is not finite: results.json's null)."""
+    """A number for a human by :func:`number`'s rule; a list with commas (semicolons in Russian, whose decimal
+    separator is the comma); yes/no; a text value in ``lang``; "-" for no value (None, or a number that is not
+    finite: results.json's null)."""
     if isinstance(x, bool):
         return TEXT[lang]["yes" if x else "no"]
-    if isinstance(x, (int, float, np.floating)):
-        return f"{float(x):.6g}" if np.isfinite(x) else "-"
+    if isinstance(x, (int, float, np.floating, np.integer)):
+        return number(x, lang) if np.isfinite(x) else "-"
     if isinstance(x, (list, tuple)):
-        return ", ".join(fmt(v, lang) for v in x)
+        return ("; " if lang == "ru" else ", ").join(fmt(v, lang) for v in x)
     return "-" if x is None else str(value_text(x, lang))
 
 
@@ -298,12 +302,45 @@ def _summary(results, t):
                      "lift": shown_value(v.flow, "valve_lift"), "opens": opens, "closes": closes,
                      "duration": closes - opens, "time_area": shown_value(v.flow, "time_area"),
                      "fullness": v.flow.fullness, "spring": text,
-                     "binding": f"{label('spring.' + binding, lang)} ({spring.margins[binding]:+.0%})",
+                     "binding": f"{label('spring.' + binding, lang)} ({percent(spring.margins[binding], lang)})",
                      **{key: sum(c.severity == level for c in v.warnings) for key, level in
                         (("failures", "failure"), ("warnings", "warning"), ("info", "info"))},
                      "accepted": len(v.accepted)})
-    return {"valves": rows, "failures": [c for c in results.warnings if c.severity == "failure"],
+    counts = tally(results.checks)
+    return {"verdict": verdict(counts, t["lang"]), "open_failures": counts["failure"],
+            "valves": rows, "failures": [c for c in results.warnings if c.severity == "failure"],
             "accepted_failures": [c for c in results.accepted if c.severity == "failure"]}
+
+
+def _conclusions(results, t):
+    """Per valve: the open checks in the verdict's words, the binding spring check and the three allowable limits
+    met with the least margin (what binds the design)."""
+    lang, out = t["lang"], []
+    for name, v in results.valves.items():
+        spring = v.drive.spring.design
+        binding = spring.binding_check
+        met = sorted((c for c in v.checks if c.passed and c.severity == "failure" and c.evaluated),
+                     key=lambda c: c.margin)[:3]
+        out.append({"name": name, "counts": verdict(tally(v.checks), lang)[1],
+                    "binding": f"{label('spring.' + binding, lang)} ({percent(spring.margins[binding], lang)})",
+                    "closest": [(c, percent(c.margin, lang)) for c in met]})
+    return out
+
+
+TOC_HEADING = re.compile(r"<h2( class=\"[^\"]*\")?>(.*?)</h2>", re.S)
+
+
+def with_contents(page, title):
+    """The report with a numbered anchor on every chapter (``h2``) and a table of contents at ``<!--toc-->``."""
+    entries = []
+
+    def anchor(m):
+        entries.append(m.group(2))
+        return f'<h2 id="ch{len(entries)}"{m.group(1) or ""}>{m.group(2)}</h2>'
+
+    page = TOC_HEADING.sub(anchor, page)
+    items = "".join(f'<li><a href="#ch{i}">{text}</a></li>' for i, text in enumerate(entries, 1))
+    return page.replace("<!--toc-->", f'<nav id="toc"><h2 class="toc">{title}</h2><ol>{items}</ol></nav>', 1)
 
 
 def render_report(results, plots, lang="en", folder=None):
@@ -351,6 +388,8 @@ def render_report(results, plots, lang="en", folder=None):
         valves.append({
             "name": name, "valve": v, "plots": plots.get(name, {}),
             "inputs": _flatten(spec["valves"][name]),
+            "worked_flow": flow_lines(spec["valves"][name], v.flow, results.engine, lang),
+            "worked_spring": spring_lines(spring.design, lang),
             "flow": shown(v.flow, *FLOW_FIELDS),
             "time_area": shown(v.flow, *TIME_AREA_FIELDS),
             "cam": shown(v.cam, *CAM_FIELDS),
@@ -395,6 +434,8 @@ def render_report(results, plots, lang="en", folder=None):
         t=TEXT[lang], warning_symbols=warning_symbols, lang=lang, version=__version__, engine=record(results.engine),
         engine_inputs=_flatten(spec["engine"]), valves=valves, warnings=results.warnings, accepted=results.accepted,
         first_page=first_page, timing=plots.get("(timing)"), table_columns=TABLE_COLUMNS,
+        cam_card=None if results.cam_card is None else record(results.cam_card),
+        conclusions=_conclusions(results, TEXT[lang]), document=spec.get("document", {}),
         dynamics_sources=DYNAMICS_SOURCES, grinding_sources=GRINDING_SOURCES,
         hydraulic_sources=HYDRAULIC_SOURCES, lubrication_sources=LUBRICATION_SOURCES,
         adjuster_sources=ADJUSTER_SOURCES,
@@ -403,7 +444,9 @@ def render_report(results, plots, lang="en", folder=None):
     template = env.get_template("report.html")
     # the bibliography lists the works the report actually cites: found by their short form in a first rendering
     cited = cited_in(unescape(template.render(sources=[], **context)))
-    return template.render(sources=[(WORKS[k].short, WORKS[k].reference()) for k in cited], **context)
+    page = template.render(sources=[(WORKS[k].short, WORKS[k].reference()) for k in cited], **context)
+    page = with_contents(page, TEXT[lang]["toc"])
+    return russian_citations(page) if lang == "ru" else page
 
 
 def _figure(image, name, alt, t):

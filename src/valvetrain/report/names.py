@@ -29,6 +29,7 @@ NAMES = {
                    "частота холостого хода (наименьшая в расчёте на прочность)"),
     "cylinders": ("number of cylinders", "число цилиндров"), "strokes": ("strokes of the cycle", "тактность"),
     "over_speed_ratio": ("over-speed / rated speed", "отношение максимальной частоты вращения к номинальной"),
+    "engine_class": ("engine class (of the recommended bands)", "класс двигателя (для рекомендуемых пределов)"),
     "type": ("engine type", "тип двигателя"), "chamber": ("combustion chamber", "камера сгорания"),
     "layout": ("layout", "компоновка"), "bank_angle": ("bank angle", "угол развала"),
     "firing_order": ("firing order", "порядок работы цилиндров"),
@@ -334,13 +335,15 @@ NAMES = {
 """Names of the keys without their unit suffix (or a whole key where the suffix is no unit): ``(en, ru)``."""
 
 VALUES = {
-    "pivot": "опора рычага", "tappet": "в толкателе",
+    "pivot": "опора рычага",
     "intake": "впускной", "exhaust": "выпускной", "inlet": "впускное", "transfer": "продувочное",
     "flat": "плоский", "roller": "роликовый", "direct": "непосредственный", "rocker": "с коромыслом",
     "pushrod": "со штангой и коромыслом", "inline": "рядный", "v": "V-образный", "si": "с искровым зажиганием",
     "si_injected": "с искровым зажиганием и впрыском", "diesel": "дизель", "side_valve": "нижнеклапанная",
     "overhead": "верхнеклапанная", "prechamber_diesel": "предкамерная (дизель)",
     "direct_injection_diesel": "неразделённая (дизель)", "wedge": "клиновая", "hemispherical": "полусферическая",
+    "automotive_petrol": "автомобильный бензиновый", "automotive_diesel": "автомобильный дизель",
+    "heavy_duty": "тяжёлого класса (тепловозный, судовой, стационарный)",
     "exact": "точная", "approximate": "приближённая", "brix": "по методу Брикса", "cosine": "косинусоидальный",
     "constant_velocity": "с постоянной скоростью", "constant_acceleration": "с постоянным ускорением",
     "kurz": "безударный кулачок Курца", "polydyne": "полидинамический кулачок", "polynomial": "полиномиальный",

@@ -19,7 +19,7 @@ import numpy as np
 
 from ..design.dynamics import event_window
 from ..design.results import shown_value
-from ..units import MM, rad_to_deg, to_display
+from ..units import DEG, MM, rad_to_deg, to_display
 from .i18n import TEXT
 from .names import value_text
 
@@ -70,12 +70,13 @@ def draw_jerk_impulses(ax, steps, color="C3", label=None) -> None:
 def kinematics_data(valve) -> dict[str, Any]:
     """The series of :func:`draw_kinematics`: camshaft angle [deg], tappet and valve lift [mm], tappet velocity
     [m/s], acceleration [m/s^2] and jerk [m/s^3], the segment junctions and jerk impulses, the nose's crank angle
-    [deg], the valve's and the law's names."""
+    [deg], the rocker ratio, the camshaft speed [rad/s], the valve's and the law's names."""
     tab = valve.table
     return {"name": valve.name, "law": valve.law.name, "cam_deg": rad_to_deg(tab.cam_angle),
             "tappet_lift_mm": tab.lift / MM, "valve_lift_mm": tab.valve_lift / MM, "velocity": tab.velocity,
             "acceleration": tab.acceleration, "jerk": tab.jerk, "boundaries_deg": segment_boundaries(valve.law),
-            "impulses": impulse_steps(valve.law, valve.omega_cam), "nose_crank_deg": rad_to_deg(valve.nose_crank)}
+            "impulses": impulse_steps(valve.law, valve.omega_cam), "nose_crank_deg": rad_to_deg(valve.nose_crank),
+            "rocker_ratio": valve.rocker_ratio, "cam_speed": valve.omega_cam}
 
 
 def draw_kinematics(d, t) -> Figure:
@@ -86,10 +87,18 @@ def draw_kinematics(d, t) -> Figure:
     axes[0].plot(x, d["tappet_lift_mm"], label=t["tappet_lift"])
     axes[0].plot(x, d["valve_lift_mm"], label=t["valve_lift"])
     axes[0].legend(loc="upper right")
-    for ax, y, label in zip(axes, (None, d["velocity"], d["acceleration"], d["jerk"]),
-                            ("lift", "velocity", "acceleration", "jerk"), strict=True):
+    moving = d["valve_lift_mm"] > 0.0
+    w = d["cam_speed"]
+    per_deg = MM / DEG    # a speed-independent derivative in mm/deg^n from m/rad^n: divide by MM / DEG^n
+    for n, (ax, y, label) in enumerate(zip(axes, (None, d["velocity"], d["acceleration"], d["jerk"] / 1e3),
+                                           ("lift", "velocity", "acceleration", "jerk"), strict=True)):
         if y is not None:
-            ax.plot(x, y, color="C0")
+            ax.plot(x, y, color="C0", label=t["k_tappet"])
+            ax.plot(x, np.where(moving, d["rocker_ratio"] * y, np.nan), color="C1", ls="--", lw=1.0,
+                    label=t["k_valve"])
+            scale = (1e3 if n == 3 else 1.0) / w**n * DEG ** (n - 1) / per_deg
+            right = ax.secondary_yaxis("right", functions=(lambda v, s=scale: v * s, lambda v, s=scale: v / s))
+            right.set_ylabel(t[f"per_deg{n}"])
         ax.set_ylabel(t[label])
         ax.grid(alpha=0.3)
         ax.axhline(0.0, color="0.5", lw=0.5)
@@ -97,6 +106,7 @@ def draw_kinematics(d, t) -> Figure:
     if d["impulses"]:
         draw_jerk_impulses(axes[-1], d["impulses"])
         axes[-1].set_title(t["jerk_impulse"], fontsize=8, color="C3", loc="right")
+    axes[1].legend(loc="upper right", fontsize=8)
     axes[-1].set_xlabel(t["cam_deg"])
     nose = d["nose_crank_deg"]
     top = axes[0].secondary_xaxis("top", functions=(lambda c: 2 * c + nose, lambda k: (k - nose) / 2))

@@ -31,6 +31,7 @@ class Engine(_Model):
     cylinders: Annotated[int, Field(ge=1, le=64)]
     strokes: Literal[2, 4]
     type: Literal["si", "si_injected", "diesel"] = "si"
+    engine_class: Optional[Literal["automotive_petrol", "automotive_diesel", "heavy_duty"]] = None
     chamber: Literal["side_valve", "overhead", "prechamber_diesel", "direct_injection_diesel", "wedge",
                      "hemispherical"] = "overhead"
     rod_length_mm: Optional[Length(5.0, 10000.0, low_open=False)] = None
@@ -567,7 +568,21 @@ class Output(_Model):
 
     table_step_cam_deg: _bounded(0.05, 10.0, "deg", low_open=False) = 0.5
     contour_points: Annotated[int, Field(ge=36, le=100000)] = 721
-    export_step_deg: _bounded(0.1, 10.0, "deg", low_open=False) = 1.0
+    export_step_deg: _bounded(0.1, 10.0, "deg", low_open=False) = 0.25
+
+
+_TEXT = Annotated[str, Field(max_length=200)]
+
+
+class Document(_Model):
+    """[document]: the title block of the calculation note (report.html); every key optional, printed as given."""
+
+    number: Optional[_TEXT] = None
+    title: Optional[_TEXT] = None
+    organisation: Optional[_TEXT] = None
+    author: Optional[_TEXT] = None
+    checker: Optional[_TEXT] = None
+    date: Optional[_TEXT] = None
 
 
 _NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_-]{0,31}$")
@@ -602,6 +617,7 @@ class Spec(_Model):
     crank: Optional[CrankSpec] = None
     two_stroke: Optional[TwoStroke] = None
     output: Output = Output()
+    document: Document = Document()
     accepted: list[Acceptance] = []
     source_dir: Optional[str] = Field(default=None, exclude=True)
     """Folder of the specification file: relative file names (pressure_file) are read from there."""

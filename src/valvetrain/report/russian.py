@@ -1,0 +1,118 @@
+"""The Russian report's citations: Russian works cited in Russian, the locators (work, eq., section) and the notes
+of the sources in Russian, and the Russian works' references in the list of sources in Russian.
+
+The English report cites every work by :mod:`valvetrain.bibliography`'s short form; a Russian engineer cites a
+Russian work by its Russian name.  :func:`russian_citations` turns the rendered Russian report's citations into
+Russian; works in other languages keep their authors and titles (proper names).
+"""
+
+from html import escape, unescape
+import re
+
+SHORT = {
+    "Valve-train practical works (n.d.)": "Практические работы по расчёту ГРМ (б. г.)",
+    "Power units manual (n.d.)": "Методические указания «Силовые агрегаты» (б. г.)",
+    "Valve-train dynamics article (n.d.)": "Исследование динамики МГР (б. г.)",
+    "Kolchin and Demidov (1980)": "Колчин, Демидов (1980)",
+}
+"""The in-text form of each Russian work in Russian (б. г.: без года, no year)."""
+
+REFERENCES = {
+    "Valve-train practical works (n.d.)":
+        "Практические работы № 1-8 по расчёту газораспределительного механизма двигателя внутреннего сгорания "
+        "(описательное заглавие: в использованном экземпляре нет титульного листа). Учебное пособие вуза: "
+        "практические работы 1-8 с приложением (безударный кулачок Курца для газораспределительного механизма "
+        "бензинового двигателя, таблица П1). Авторы и организация в использованном экземпляре не указаны; "
+        "издательство и год не указаны. На русском языке. Работы: (1) проходные сечения клапана, (2) безударный "
+        "кулачок Курца, (3) полидинамический кулачок, (4) время-сечение, (5) характеристика пружины, (6) расчёт "
+        "пружины, (7) прочность деталей привода, (8) окна двухтактного двигателя.",
+    "Power units manual (n.d.)":
+        "Методические указания к расчётно-графической работе по дисциплине «Силовые агрегаты»: кинематика поршня "
+        "и динамика кривошипно-шатунного механизма (описательное заглавие: в использованном экземпляре нет "
+        "титульного листа). Учебное пособие вуза. Авторы и организация не указаны; издательство и год не указаны. "
+        "На русском языке. Пример расчёта (раздел 2.6) в использованном экземпляре отсутствует.",
+    "Valve-train dynamics article (n.d.)":
+        "Исследование динамики МГР с кулачками различного профиля (заглавие раздела; в использованном экземпляре "
+        "нет титульного листа). Статья в журнале. Авторы и организация не указаны; издательство и год не указаны. "
+        "На русском языке.",
+    "Kolchin and Demidov (1980)":
+        "Колчин А. И., Демидов В. П. Расчёт автомобильных и тракторных двигателей. 2-е изд. М.: Высшая школа, "
+        "1980. На русском языке.",
+}
+"""The full reference of each Russian work in Russian, as a Russian list of sources gives it."""
+
+LOCATORS = (
+    (r"corrections notes? (\d+)", r"поправка \1"), (r"\bworks (\d)", r"работы \1"), (r"\bwork (\d)", r"работа \1"),
+    (r"\beqs\. ", "формулы "), (r"\beq\. ", "формула "), (r"\bsections (\d)", r"разделы \1"),
+    (r"\bsection (\d)", r"раздел \1"), (r"\bchapter (\d)", r"глава \1"), (r"\bch\. (\d)", r"гл. \1"),
+    (r"\bTable (\S)", r"таблица \1"),
+    (r"\bappendix\b", "приложение"), (r"\bp\. (\d)", r"с. \1"),
+)
+"""Locators of a citation in Russian (regular expression, replacement)."""
+
+NOTES = {
+    "usually 30 deg inlet, 45 deg exhaust": "обычно 30° у впускного, 45° у выпускного клапана",
+    "i_k = 1 for direct drive, 1.4-1.75 with a rocker or lever":
+        "i_к = 1 при непосредственном приводе, 1,4-1,75 с коромыслом или рычагом",
+    "tappet, pushrod and rocker 400-500 kg/m2": "толкатель, штанга и коромысло 400-500 кг/м²",
+    "direct drive 200-300 kg/m2": "непосредственный привод 200-300 кг/м²",
+    "negative 500...1500 m/s2": "отрицательное 500...1500 м/с²",
+    "positive 1500...3500 m/s2": "положительное 1500...3500 м/с²",
+    "1.5-2.0; supercharged 3.0-4.0": "1,5-2,0; с наддувом 3,0-4,0",
+    "automotive engines": "автомобильные двигатели",
+    "with the rounded coils": "с округлённым числом витков",
+    "hard to meet at high speed": "трудно выполнимо при высокой частоте вращения",
+    "the two ratios must differ": "два отношения должны различаться",
+    "central mechanism": "центральный механизм",
+    "corrected": "исправлено",
+    "engine builders' rule of at least 0.080 in intake, 0.100 in exhaust (HP Academy, "
+    "'Measuring piston to valve clearance'); gap": "правило мотористов: не менее 0,080 дюйма у впускного и 0,100 "
+    "дюйма у выпускного клапана (HP Academy, «Measuring piston to valve clearance»); зазор",
+    "with a ramp derived in this package": "с рампой, выведенной в этой программе",
+    "specific mass ": "удельная масса ", "default for a pushrod drive": "по умолчанию для привода со штангой",
+    "default for a rocker drive": "по умолчанию для привода с коромыслом",
+    "default for a direct drive": "по умолчанию для непосредственного привода",
+    "the master cam of a cam grinder and the effect of the wheel radius on the cam profile; the formulas are derived "
+    "in this package from the contour geometry of": "копир кулачкового шлифовального станка и влияние радиуса круга "
+                                                   "на профиль кулачка; формулы выведены в этой программе из "
+                                                   "геометрии контура,",
+    "ramp (": "рампа (", "segments (": "участки (", "coefficients (": "коэффициенты (", "extremes (": "экстремумы (",
+}
+"""The notes the sources of the checks carry, in Russian."""
+
+UNITS = ((r"(\d) kg/m2\b", r"\1 кг/м²"), (r"(\d) MPa\b", r"\1 МПа"), (r"(\d) mm\b", r"\1 мм"), (r"(\d) deg\b", r"\1°"))
+"""Units inside a citation's note."""
+
+_CITE = re.compile(r'(<span class="cite">)(.*?)(</span>)', re.S)
+_ITEM = re.compile(r'<li class="cite"><b>(.*?)</b>: (.*?)</li>', re.S)
+
+
+def citation(text):
+    """One citation in Russian: the Russian works' short forms, the locators, the notes and their units.
+
+    >>> citation("Valve-train practical works (n.d.), work 1, eq. (1.1)")
+    'Практические работы по расчёту ГРМ (б. г.), работа 1, формула (1.1)'
+    >>> citation("Shang Hanji (1988), section 2.1, eqs. (2.13)-(2.14)")
+    'Shang Hanji (1988), раздел 2.1, формулы (2.13)-(2.14)'
+    """
+    for en, ru in SHORT.items():
+        text = text.replace(en, ru)
+    for en, ru in NOTES.items():
+        text = text.replace(en, ru)
+    for pattern, ru in LOCATORS + UNITS:
+        text = re.sub(pattern, ru, text)
+    return text
+
+
+def russian_citations(page):
+    """The rendered Russian report with its citations in Russian (:func:`citation` on every ``span.cite``) and the
+    Russian works' entries of the list of sources in Russian (other works keep their reference, marked as English
+    text with ``lang="en"``)."""
+    def item(m):
+        short, text = m.group(1), m.group(2)
+        if short in REFERENCES:
+            return f'<li class="cite"><b>{SHORT[short]}</b>: {REFERENCES[short]}</li>'
+        return f'<li class="cite" lang="en"><b>{short}</b>: {text}</li>'
+
+    page = _ITEM.sub(item, page)
+    return _CITE.sub(lambda m: m.group(1) + escape(citation(unescape(m.group(2))), quote=False) + m.group(3), page)

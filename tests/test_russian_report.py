@@ -1,0 +1,52 @@
+"""Issue 24: the Russian report is Russian.  Every Latin word of its text fails this test unless it is a symbol
+(a word joined to a subscript by "_", or max, min, cos, sin), a proper name (a name the designer gave, marked
+``class="name"``; the authors of the works in other languages; a spring steel's grade; the program's name) or a
+reference of a work in another language in the list of sources (``lang="en"``).  Before: 438 Latin words in the
+built-in example's Russian report ("Valve-train practical works (n.d.), work 1, eq. (1.1)", "(usually 30 deg inlet,
+45 deg exhaust)", the English list of sources)."""
+
+import html
+from pathlib import Path
+import re
+
+from click.testing import CliRunner
+import pytest
+
+from valvetrain.bibliography import WORKS
+from valvetrain.cli import main
+from valvetrain.report.russian import SHORT
+from valvetrain.spring_materials import GRADES
+
+EXAMPLES = Path(__file__).parents[1] / "examples"
+
+SYMBOLS = {"max", "min", "cos", "sin", "tan", "arccos", "zap"}
+PROPER = ({"valvetrain", "HP", "Academy"} | {w for grade in GRADES for w in re.findall(r"[A-Za-z]+", grade)}
+          | {w for work in WORKS.values() if work.short not in SHORT for w in re.findall(r"[A-Za-z]+", work.short)})
+
+
+def latin_words(page):
+    page = re.sub(r"<style.*?</style>", "", page, flags=re.S)
+    page = re.sub(r'<li class="cite" lang="en">.*?</li>', "", page, flags=re.S)
+    page = re.sub(r'<(span|a) class="name"[^>]*>.*?</\1>', "", page, flags=re.S)
+    text = html.unescape(re.sub(r"<[^>]+>", " ", page))
+    text = re.sub(r"\w*_\w*", " ", text)                     # symbols with a subscript: phi_p0, a_T
+    text = re.sub(r"«[A-Za-z0-9 ,.:'-]+»", " ", text)          # a title in another language, quoted: a proper name
+    return [w for w in re.findall(r"[A-Za-z]{3,}", text) if w not in SYMBOLS | PROPER]
+
+
+@pytest.mark.parametrize("spec", [None, "seed000-polydyne.toml"], ids=["built-in", "polydyne"])
+def test_the_russian_report_has_no_latin_words(tmp_path, spec):
+    out = tmp_path / "ru"
+    args = ["run", *([str(EXAMPLES / spec)] if spec else []), "--out", str(out), "--lang", "ru", "--figures", "none"]
+    assert CliRunner().invoke(main, args).exit_code == 0
+    page = (out / "report.html").read_text(encoding="utf-8")
+    assert latin_words(page) == []
+    # the Russian manual is cited in Russian, its locators too
+    assert "Практические работы по расчёту ГРМ (б. г.), работа 1, формула (1.1)" in page
+    assert "Valve-train practical works" not in re.sub(r'<span class="name">.*?</span>', "", page)   # but the name
+
+
+def test_a_russian_valve_heading_names_the_valve_in_russian(tmp_path):
+    out = tmp_path / "ru"
+    assert CliRunner().invoke(main, ["run", "--out", str(out), "--lang", "ru", "--figures", "none"]).exit_code == 0
+    assert re.search(r'<h2 id="ch\d+">Впускной клапан «<span class="name">intake</span>»', (out / "report.html").read_text())
