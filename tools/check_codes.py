@@ -2,7 +2,7 @@
 """The table of check codes and the entries of the message catalogue (src/valvetrain/locale/LANG.toml).
 
 ``python tools/check_codes.py`` writes docs/checks.md, the table of every design check's code and texts;
-tests/test_catalogue.py fails when the file is not the catalogue's table.  ``add`` puts a new check's texts into
+tests/locale/test_catalogue.py fails when the file is not the catalogue's table.  ``add`` puts a new check's texts into
 every language's file and rewrites the table (a check added the old way, by its English text, is converted so)::
 
     PYTHONPATH=src python tools/check_codes.py

@@ -150,7 +150,7 @@ def toml_dumps(doc):
 # Base specifications
 
 LAW_CAMS = {
-    # valid cam sections of every law: those of tests/test_laws_in_design.py (CAMS), tests/test_asymmetric.py and
+    # valid cam sections of every law: those of tests/design/test_laws_in_design.py (CAMS), tests/laws/test_asymmetric.py and
     # examples/seed000-polydyne.toml; base_radius_mm and follower come from the example's cam
     "kurz": {"law": "kurz", "ramp_end_velocity_mm_per_deg": 0.02, "phi1_deg": 27.0, "phi2_deg": 6.0,
              "phi3_deg": 38.0, "shape_factor": 0.625},
@@ -176,7 +176,7 @@ LAW_CAMS = {
 }
 
 ASYMMETRIC_CAMS = {
-    # Kurz: tests/test_asymmetric.py, opening 21/5/30 cam deg, closing 30/7/49 (the flanks add up to 2 phi_p0 = 142);
+    # Kurz: tests/laws/test_asymmetric.py, opening 21/5/30 cam deg, closing 30/7/49 (the flanks add up to 2 phi_p0 = 142);
     # the others: flanks of the same sum whose profile is not undercut
     "kurz": {**LAW_CAMS["kurz"], "phi1_deg": 21.0, "phi2_deg": 5.0, "phi3_deg": 30.0,
              "closing": {"phi1_deg": 30.0, "phi2_deg": 7.0, "phi3_deg": 49.0, "ramp_end_velocity_mm_per_deg": 0.015}},

@@ -8,7 +8,7 @@ in this folder, loaded once:
 * ``LANG.toml`` ``[checks]``: the check as the report in ``LANG`` names it;
 * ``LANG.toml`` ``[springs]``: the springs whose own checks are named after them.
 
-``{name}`` in a text stands for the parameter ``name``.  ``tests/test_catalogue.py`` fails when a code lacks a
+``{name}`` in a text stands for the parameter ``name``.  ``tests/locale/test_catalogue.py`` fails when a code lacks a
 text in a language or a text names no code the package uses; docs/checks.md lists every code.
 """
 

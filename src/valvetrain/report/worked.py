@@ -2,7 +2,7 @@
 result, so that a checker can follow a line with a pocket calculator.
 
 The numbers are the design's own (its inputs and its typed results, as results.json shows them); the result printed is the design's, and
-the substituted expression evaluates to it (``tests/test_worked.py`` evaluates every line).  Formulas: Valve-train practical works
+the substituted expression evaluates to it (``tests/report/test_worked.py`` evaluates every line).  Formulas: Valve-train practical works
 (n.d.), works 1 and 6.
 """
 

@@ -80,7 +80,7 @@ def test_the_russian_report_has_the_grinding_chapter(tmp_path):
 def test_a_roller_cam_with_a_concave_flank_refuses_a_larger_wheel(tmp_path):
     """The roller exhaust of the polydyne example has concave flanks of 72 mm: a 300 mm wheel cannot grind them; the
     run says so as a failure check and writes no master and no wear table; a 60 mm wheel grinds it."""
-    text = (Path(__file__).parents[1] / "examples" / "seed000-polydyne.toml").read_text()
+    text = (Path(__file__).parents[2] / "examples" / "seed000-polydyne.toml").read_text()
     assert "wheel_radius_mm = 60.0" in text
     results = run(parse_spec(text.replace("wheel_radius_mm = 60.0", "wheel_radius_mm = 300.0")))
     v = results.valves["exhaust"]

@@ -16,7 +16,7 @@ from valvetrain.report.i18n import TEXT
 from valvetrain.report.names import label, quantity_text, value_text
 from valvetrain.specification import example_spec, load_spec
 
-EXAMPLES = sorted((Path(__file__).parents[1] / "examples").glob("*.toml"))
+EXAMPLES = sorted((Path(__file__).parents[2] / "examples").glob("*.toml"))
 
 ALLOWED = {
     # symbols of the sources (the report explains each where it is first used)
@@ -124,7 +124,7 @@ def test_english_report_shows_names_not_keys(designs):
 
 def test_every_check_of_the_examples_has_a_russian_name(designs):
     """Every check the examples make is named in Russian from the catalogue, by its code: a check that has none is
-    refused when it is made (tests/test_catalogue.py)."""
+    refused when it is made (tests/locale/test_catalogue.py)."""
     for results in designs.values():
         for c in results.checks:
             text = quantity_text(c, "ru")

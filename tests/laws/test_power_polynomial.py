@@ -140,7 +140,7 @@ def test_refusals():
 
 def _spec_text(**keys):
     from pathlib import Path
-    text = (Path(__file__).parents[1] / "examples" / "ukrsurt2019-diesel.toml").read_text()
+    text = (Path(__file__).parents[2] / "examples" / "ukrsurt2019-diesel.toml").read_text()
     for k, v in keys.items():
         text = "\n".join(f"{k} = {v}" if line.split("=")[0].strip() == k else line for line in text.splitlines())
     return text

@@ -177,7 +177,7 @@ def test_the_report_has_the_hydraulic_chapter(tmp_path, lang, heading):
     assert (out / "plots" / "intake_hydraulic_sweep.png").is_file() and "tables/intake_hydraulic_sweep.csv" in html
 
 
-MARINE = (Path(__file__).parents[1] / "examples" / "marine-hydraulic-exhaust.toml").read_text(encoding="utf-8")
+MARINE = (Path(__file__).parents[2] / "examples" / "marine-hydraulic-exhaust.toml").read_text(encoding="utf-8")
 """The shipped marine example: a 36 mm rigid lift (plunger 23.04 mm x A_p / A_a = 1.5625), 4000 N preload, 70 mm
 actuator, back pressure 0.1 MPa, its engine cycle in [crank]."""
 

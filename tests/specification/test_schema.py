@@ -11,7 +11,7 @@ from valvetrain.design import results_schema, run
 from valvetrain.export import json_text, results_json
 from valvetrain.specification import example_spec, load_spec
 
-EXAMPLES = sorted((Path(__file__).parents[1] / "examples").glob("*.toml"))
+EXAMPLES = sorted((Path(__file__).parents[2] / "examples").glob("*.toml"))
 
 
 def test_the_shipped_schema_is_the_generated_one():

@@ -17,7 +17,7 @@ from valvetrain.cli import main
 from valvetrain.report.russian import SHORT
 from valvetrain.spring_materials import GRADES
 
-EXAMPLES = Path(__file__).parents[1] / "examples"
+EXAMPLES = Path(__file__).parents[2] / "examples"
 
 SYMBOLS = {"max", "min", "cos", "sin", "tan", "arccos", "zap"}
 PROPER = ({"valvetrain", "HP", "Academy"} | {w for grade in GRADES for w in re.findall(r"[A-Za-z]+", grade)}

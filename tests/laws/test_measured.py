@@ -23,7 +23,7 @@ from valvetrain.specification import load_spec
 
 from conftest import seed000_law
 
-EXAMPLE = Path(__file__).parents[1] / "examples" / "measured-lobe.toml"
+EXAMPLE = Path(__file__).parents[2] / "examples" / "measured-lobe.toml"
 EXAMPLE_TABLE = EXAMPLE.parent / "data" / "measured-intake-lobe.csv"
 """Valve lift every 2 crank deg from -70 to 300: the seed 000 appendix lobe x 1.6, 3 crank deg late, 2 um noise."""
 

@@ -239,7 +239,7 @@ def test_results_agree_with_independent_computation(opens, closes, f1_share, w, 
     assert out["flow"]["time_area_mm2_s"] == pytest.approx(ta * 1e6, rel=1e-4)
 
 
-@pytest.mark.parametrize("path", sorted((__import__("pathlib").Path(__file__).parents[1] / "examples").glob("*.toml")),
+@pytest.mark.parametrize("path", sorted((__import__("pathlib").Path(__file__).parents[2] / "examples").glob("*.toml")),
                          ids=lambda p: p.name)
 def test_shipped_examples_run(path):
     from valvetrain.specification import load_spec
@@ -403,7 +403,7 @@ def test_valve_piston_clearance_is_a_check_with_its_crank_angle():
     c = _check(res, "intake: valve-piston clearance")
     assert c.value * 1e3 == pytest.approx(pc["min_clearance_mm"]) and c.low == pytest.approx(2.032e-3)
     assert f"{pc['crank_deg']:.4g} crank deg" in c.note
-    both = run(load_spec(Path(__file__).parents[1] / "examples" / "seed000-polydyne.toml"))
+    both = run(load_spec(Path(__file__).parents[2] / "examples" / "seed000-polydyne.toml"))
     for name, low in (("intake", 2.032e-3), ("exhaust", 2.54e-3)):
         whole = _check(both, f"{name}: valve-piston clearance")
         over = [c for c in both.checks if c.quantity.startswith(f"{name}: valve-piston clearance over the overlap")]

@@ -12,7 +12,7 @@ import pytest
 from valvetrain.design import run
 from valvetrain.specification import load_spec, validate
 
-EXAMPLES = Path(__file__).parents[1] / "examples"
+EXAMPLES = Path(__file__).parents[2] / "examples"
 
 
 def _levels(spec):

@@ -20,7 +20,7 @@ from valvetrain.report.names import quantity_text
 from valvetrain.specification import SpecError, example_spec
 from valvetrain.specification.models import Acceptance
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 PACKAGE = ROOT / "src" / "valvetrain"
 
 

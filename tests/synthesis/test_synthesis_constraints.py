@@ -14,7 +14,7 @@ from valvetrain.specification.reading import load_spec, parse_spec
 from valvetrain.synthesis.constraints import (Limits, concave_radius, constraints, contact_stress_value, rho_min,
                                               spring_reserve_value, worst_margin)
 
-EXAMPLE = Path(__file__).parents[1] / "examples" / "ukrsurt2019-diesel.toml"
+EXAMPLE = Path(__file__).parents[2] / "examples" / "ukrsurt2019-diesel.toml"
 MM, DEG = 1e-3, np.pi / 180.0
 
 

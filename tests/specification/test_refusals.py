@@ -56,8 +56,8 @@ def test_timing_of_a_table_needs_both_angles_or_none(tmp_path, refused):
     import shutil
     from pathlib import Path
 
-    shutil.copytree(Path(__file__).parent.parent / "examples" / "data", tmp_path / "data")
-    text = (Path(__file__).parent.parent / "examples" / "measured-lobe.toml").read_text()
+    shutil.copytree(Path(__file__).parents[2] / "examples" / "data", tmp_path / "data")
+    text = (Path(__file__).parents[2] / "examples" / "measured-lobe.toml").read_text()
     out = refused(text.replace("# max_lift_mm may be given", "opens_deg = 20.0\n# max_lift_mm may be given"))
     assert "valves.intake.opens_deg = 20 needs closes_deg too" in out
 
@@ -173,8 +173,8 @@ def test_a_long_file_name_is_cut_in_the_message(tmp_path, refused):
     import shutil
     from pathlib import Path
 
-    shutil.copytree(Path(__file__).parent.parent / "examples" / "data", tmp_path / "data")
-    text = (Path(__file__).parent.parent / "examples" / "measured-lobe.toml").read_text()
+    shutil.copytree(Path(__file__).parents[2] / "examples" / "data", tmp_path / "data")
+    text = (Path(__file__).parents[2] / "examples" / "measured-lobe.toml").read_text()
     out = refused(text.replace('"data/measured-intake-lobe.csv"', '"' + "x" * 5000 + '.csv"'))
     line = next(ln for ln in out.splitlines() if "table_file" in ln)
     assert "cannot read the file" in line and len(line) < 300

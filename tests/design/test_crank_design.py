@@ -95,7 +95,7 @@ def test_missing_pressure_source_is_refused(refused):
 
 
 def test_v8_example():
-    res = run(load_spec(__import__("pathlib").Path(__file__).parents[1] / "examples" / "v8-crank.toml"))
+    res = run(load_spec(__import__("pathlib").Path(__file__).parents[2] / "examples" / "v8-crank.toml"))
     c = res.crank.summary
     assert c["even_firing"] is True
     assert c["torque_period_deg"] == pytest.approx(90.0)
@@ -106,7 +106,7 @@ def test_v8_example():
 
 
 def test_two_stroke_example(tmp_path):
-    path = __import__("pathlib").Path(__file__).parents[1] / "examples" / "two-stroke-ports.toml"
+    path = __import__("pathlib").Path(__file__).parents[2] / "examples" / "two-stroke-ports.toml"
     out = tmp_path / "ts"
     result = CliRunner().invoke(main, ["run", str(path), "--out", str(out)])
     assert result.exit_code == 0, result.output

@@ -9,7 +9,7 @@ import pytest
 from valvetrain import twostroke
 from valvetrain.crank import dynamics, kinematics, pressure, torque
 
-TABLES = Path(__file__).parent / "data" / "seed001_factor_tables.csv"
+TABLES = Path(__file__).parents[1] / "data" / "seed001_factor_tables.csv"
 
 
 def _table(name):

@@ -24,7 +24,7 @@ from test_synthesis_constraints import pitch_radius_by_differences
 
 MM, DEG = 1e-3, np.pi / 180.0
 
-EXAMPLES = Path(__file__).parents[1] / "examples"
+EXAMPLES = Path(__file__).parents[2] / "examples"
 UKRSURT = EXAMPLES / "ukrsurt2019-diesel.toml"
 
 
@@ -42,7 +42,7 @@ def test_fast_margins_agree_with_the_design():
     assert named["rho_min"] == pytest.approx((design.profile.rho_min - 2 * MM) / (2 * MM), abs=1e-6)
     assert named["contact stress"] == pytest.approx(1 - contact_stress_value(design, 40 * MM, top=1.1) / 1200e6,
                                                     abs=1e-6)
-    # the design's own concave radius -102.43 mm and pressure angle 26.8165 deg (tests/test_power_polynomial.py)
+    # the design's own concave radius -102.43 mm and pressure angle 26.8165 deg (tests/laws/test_power_polynomial.py)
     assert named["concave radius"] == pytest.approx(1 - 170 / 102.43, abs=2e-3)
     assert named["pressure angle"] == pytest.approx((30 - 26.8165) / 30, abs=1e-4)
     # a_qd = 5 mm/rad2 over phi_1 = 3 deg never reaches the lift within the angle: no cam
@@ -115,7 +115,7 @@ def test_a_short_search_on_the_article_case_is_feasible_and_fuller():
         result.optimum["cam.peak_acceleration_mm_per_rad2"], rel=1e-12)
     assert run(optimum).valves["intake"].flow.fullness == pytest.approx(result.value, rel=1e-12)
     assert len(result.history) == result.evaluations
-    # no pointed cam: the optimum's pitch curve by central differences (tests/test_synthesis_constraints.py), less the
+    # no pointed cam: the optimum's pitch curve by central differences (tests/synthesis/test_synthesis_constraints.py), less the
     # 27 mm roller, is nowhere a convex radius below 2 mm (Shang Hanji (1988), section 2.1)
     law = run(optimum).valves["intake"].law
     convex = pitch_radius_by_differences(law, 40.3 * MM - law.ramp_height, 27 * MM, law.start, 0.0, 20001) - 27 * MM

@@ -18,7 +18,7 @@ from valvetrain.laws.polydyne import PolydyneLaw
 from valvetrain.report.plots import jerk_impulses
 from valvetrain.specification import load_spec
 
-THREE_ARC = Path(__file__).parents[1] / "examples" / "dynamics-comparison" / "three-arc.toml"
+THREE_ARC = Path(__file__).parents[2] / "examples" / "dynamics-comparison" / "three-arc.toml"
 
 
 def steps_mm(law):
