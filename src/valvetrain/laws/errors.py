@@ -72,12 +72,8 @@ MESSAGES = {
         "the fitted lift never exceeds the clearance taken up by the ramp, {ramp:.4g} mm: the valve does not open",
         {"ramp": "mm"}),
 }
-"""The message of each reason code and the display unit of each of its values (``"%"``: a fraction in per cent;
-a value without a unit is shown as it is)."""
-
-
-def _shown(value, unit):
-    return 100.0 * value if unit == "%" else to_display(value, unit)
+"""The message of each reason code and the display unit of each of its values (:data:`valvetrain.units.UNITS`;
+``"%"``: a fraction in per cent; a value without a unit is shown as it is)."""
 
 
 class LawError(ValueError):
@@ -86,4 +82,4 @@ class LawError(ValueError):
     def __init__(self, code, **values):
         self.code, self.values = code, values
         template, units = MESSAGES[code]
-        super().__init__(template.format(**{k: _shown(v, units[k]) if k in units else v for k, v in values.items()}))
+        super().__init__(template.format(**{k: to_display(v, units[k]) if k in units else v for k, v in values.items()}))
