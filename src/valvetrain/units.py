@@ -111,6 +111,20 @@ def to_display(value, unit):
         raise ValueError(f"unit {unit!r}: allowed {sorted(UNITS)}") from None
 
 
+def per_cam_degree(value, order, omega):
+    """A derivative of a lift at the camshaft speed ``omega`` [rad/s] (m/s, m/s2, m/s3 for ``order`` 1, 2, 3) as
+    the speed-independent derivative in mm per camshaft degree to the ``order``.
+
+    Notes
+    -----
+    d^n h / d phi^n = (d^n h / d t^n) / omega^n, as d phi = omega d t; then m -> mm and rad -> deg.
+
+    >>> round(per_cam_degree(1.0, 1, 180.0), 12)      # 1 m/s at 180 rad/s: 1/180 m/rad = 1000/180 x pi/180 mm/deg
+    0.096962736222
+    """
+    return value * (DEG / omega) ** order / MM
+
+
 def without_noise(value, digits=12):
     """A value shown in a display unit without the float noise of its conversion: rounded to ``digits`` significant
     digits where that moves it by four units in the last place at most (:func:`math.ulp`), kept otherwise.

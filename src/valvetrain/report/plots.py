@@ -19,7 +19,7 @@ import numpy as np
 
 from ..design.dynamics import event_window
 from ..design.results import shown_value
-from ..units import DEG, MM, rad_to_deg, to_display
+from ..units import MM, per_cam_degree, rad_to_deg, to_display
 from .i18n import TEXT
 from .names import value_text
 
@@ -89,14 +89,13 @@ def draw_kinematics(d, t) -> Figure:
     axes[0].legend(loc="upper right")
     moving = d["valve_lift_mm"] > 0.0
     w = d["cam_speed"]
-    per_deg = MM / DEG    # a speed-independent derivative in mm/deg^n from m/rad^n: divide by MM / DEG^n
     for n, (ax, y, label) in enumerate(zip(axes, (None, d["velocity"], d["acceleration"], d["jerk"] / 1e3),
                                            ("lift", "velocity", "acceleration", "jerk"), strict=True)):
         if y is not None:
             ax.plot(x, y, color="C0", label=t["k_tappet"])
             ax.plot(x, np.where(moving, d["rocker_ratio"] * y, np.nan), color="C1", ls="--", lw=1.0,
                     label=t["k_valve"])
-            scale = (1e3 if n == 3 else 1.0) / w**n * DEG ** (n - 1) / per_deg
+            scale = per_cam_degree(1e3 if n == 3 else 1.0, n, w)    # jerk drawn in km/s3
             right = ax.secondary_yaxis("right", functions=(lambda v, s=scale: v * s, lambda v, s=scale: v / s))
             right.set_ylabel(t[f"per_deg{n}"])
         ax.set_ylabel(t[label])

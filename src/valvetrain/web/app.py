@@ -22,6 +22,7 @@ from .. import api
 from ..report.html import check_range
 from ..report.i18n import TEXT
 from ..report.names import label, record_quantity_text, translate
+from ..units import per_cam_degree
 from .session import form, parse_value, value_text, without_nones
 
 WORDS = {
@@ -60,9 +61,9 @@ KINEMATIC_PLOTS = (("lift", "valve_lift_mm", "lift_mm", 0), ("velocity", "valve_
 
 
 def per_degree(values, order, omega):
-    """A derivative of the lift at the rated speed (m/s, m/s², m/s³) in mm per camshaft degree to the ``order``:
-    divided by omega_cam^order [rad/s] and converted (1000 mm/m, pi/180 rad/deg per order)."""
-    return np.array(values, dtype=float) * 1e3 * (np.pi / 180.0 / omega) ** order
+    """A derivative of the lift at the rated speed (m/s, m/s², m/s³) in mm per camshaft degree to the ``order``
+    (:func:`valvetrain.units.per_cam_degree`), from the series' list."""
+    return per_cam_degree(np.array(values, dtype=float), order, omega)
 
 SEVERITY_COLOURS = {"failure": "#f4c7c3", "warning": "#fce8b2", "info": "#e8eaf6", "pass": "#d9ead3"}
 
