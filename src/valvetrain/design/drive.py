@@ -246,7 +246,8 @@ def spring_options(sp) -> springs.SpringOptions:
         grade=grade(name).name, shear_modulus=sp.shear_modulus, density=sp.density_kg_m3,
         allowable_stress=sp.allowable_stress, endurance_limit=sp.endurance_limit,
         mean_stress_factor=sp.mean_stress_factor, min_safety=sp.min_safety_factor,
-        min_resonance_ratio=sp.min_resonance_ratio, gap_factor=sp.coil_gap_factor) for name in names)
+        min_resonance_ratio=sp.min_resonance_ratio, design_margin=sp.min_margin, gap_factor=sp.coil_gap_factor)
+        for name in names)
     return springs.SpringOptions(
         materials=materials, count=sp.count, inner_share=sp.inner_share, diameter_range=sp.mean_diameter_ratio,
         wire_range_mm=tuple(to_display(x, "mm") for x in sp.wire_diameter_range),
@@ -341,6 +342,9 @@ def drive_stage(valve, gas, cam) -> DriveResult:
         found.append(check("spring.inner_share", sp.inner_share, *springs.INNER_SHARE_RANGE, source="Valve-train practical works (n.d.), work 5"))
     for tag, d in designs.items():
         found += _spring_checks(tag, d, diagnosis_text(diagnosis, "en") if diagnosis else "")
+        found.append(check("spring.design_margin", d.design_margin, low=sp.min_margin, unit="%",
+                           source="min_margin_percent of the specification: the smaller margin of the fatigue safety "
+                                  "and the resonance ratio above their minima (eqs. 6.12, 6.14)").of_spring(tag))
     if sp.count == 2:
         difference = designs["inner"].checks["frequency_difference"]
         found.append(replace(difference, quantity=record_text("spring.pair_frequency_difference"),

@@ -89,6 +89,7 @@ NAMES = {
     "spring.count": ("number of springs", "число пружин"), "inner_share": ("share of the inner spring", "доля внутренней пружины"),
     "material": ("spring steel", "материал пружины"), "min_safety_factor": ("minimum fatigue safety factor", "наименьший запас прочности"),
     "min_resonance_ratio": ("minimum resonance ratio", "наименьшее отношение частот"),
+    "min_margin": ("design margin sought on fatigue and resonance", "запас проектирования по усталости и резонансу"),
     "coil_gap_factor": ("coil gap at full lift / wire diameter", "зазор между витками при полном подъёме / диаметр проволоки"),
     "mean_diameter_ratio": ("mean diameter / throat diameter", "средний диаметр / диаметр горловины"),
     "wire_diameter_range": ("wire diameters", "диаметры проволоки"), "wire_step": ("wire step", "шаг диаметра проволоки"),
