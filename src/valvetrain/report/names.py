@@ -90,6 +90,8 @@ NAMES = {
     "material": ("spring steel", "материал пружины"), "min_safety_factor": ("minimum fatigue safety factor", "наименьший запас прочности"),
     "min_resonance_ratio": ("minimum resonance ratio", "наименьшее отношение частот"),
     "min_margin": ("design margin sought on fatigue and resonance", "запас проектирования по усталости и резонансу"),
+    "design_margin": ("design margin achieved on fatigue and resonance",
+                      "достигнутый запас проектирования по усталости и резонансу"),
     "coil_gap_factor": ("coil gap at full lift / wire diameter", "зазор между витками при полном подъёме / диаметр проволоки"),
     "mean_diameter_ratio": ("mean diameter / throat diameter", "средний диаметр / диаметр горловины"),
     "wire_diameter_range": ("wire diameters", "диаметры проволоки"), "wire_step": ("wire step", "шаг диаметра проволоки"),
