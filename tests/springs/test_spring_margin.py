@@ -53,6 +53,7 @@ def test_the_built_in_intake_spring_meets_five_per_cent_by_hand():
     margin = _check(results, "intake")
     assert margin["low"] == 5.0 and margin["pass"]
     assert margin["value"] == pytest.approx(100.0 * min(safety / 1.3 - 1.0, ratio / 10.0 - 1.0), rel=1e-6)
+    assert spring["min_margin_percent"] == 5.0 and spring["design_margin_percent"] == pytest.approx(margin["value"])
 
 
 def test_the_search_trades_the_lightest_spring_for_the_margin():
