@@ -5,7 +5,7 @@ and every check, as numpy arrays over the candidates.
 SI units: N, m, Pa, kg, rad/s.
 """
 
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 from functools import cached_property
 
 import numpy as np
@@ -71,13 +71,6 @@ class SpringMaterial:
     def source(self):
         """Where the grade's figures come from."""
         return GRADES[self.grade].source
-
-    @property
-    def with_margin(self):
-        """The same material whose minimum fatigue safety and resonance ratio include :attr:`design_margin`."""
-        factor = 1.0 + self.design_margin
-        return replace(self, min_safety=self.min_safety * factor, min_resonance_ratio=self.min_resonance_ratio * factor,
-                       design_margin=0.0)
 
 
 @dataclass

@@ -197,11 +197,10 @@ def _search(preloads, rates, lift, throat_diameter, camshaft_speed, options, *, 
     tried.  ``free_lengths``: no limit on the lengths (the inner springs of a pair, installed at the outer one's
     length).
 
-    Only the candidates that may pass with the design margin (:func:`_may_pass` of
-    :attr:`SpringMaterial.with_margin`) are designed, in the order of the grid (line by line); when none of them
-    meets the margin, those that may pass without it are, and when none of them passes, every candidate is, so
-    that the best worst margin is found among all.  The lightest spring meeting the margin, the passing count and
-    the margins of every spring designed are those of the exhaustive search."""
+    Only the candidates that may pass (:func:`_may_pass`) are designed, in the order of the grid (line by line);
+    when none of them passes, every candidate is, so that the best worst margin is found among all.  The
+    lightest passing spring (with the design margin or without), the passing count and the margins of every spring
+    designed are those of the exhaustive search: a spring with the margin passes."""
     wires = wire_series(options.wire_range_mm, options.wire_step_mm)
     big_d, d = _grid(throat_diameter, diameter_range or options.diameter_range, options.diameter_step, wires,
                      max_outer)
@@ -219,14 +218,9 @@ def _search(preloads, rates, lift, throat_diameter, camshaft_speed, options, *, 
         found.line = line
         return found
 
-    def screened(material, margin):
-        return designed(material, *divmod(np.flatnonzero(_may_pass(
-            preloads, rates, lift, big_d, d, material.with_margin if margin else material, camshaft_speed,
-            high if installed_length is None else None)), len(d)))
-
-    found = [screened(m, True) for m in options.materials]
-    if not any(c.margin_met.any() for c in found) and any(m.design_margin > 0.0 for m in options.materials):
-        found = [screened(m, False) for m in options.materials]
+    found = [designed(m, *divmod(np.flatnonzero(_may_pass(preloads, rates, lift, big_d, d, m, camshaft_speed,
+                                                         high if installed_length is None else None)), len(d)))
+             for m in options.materials]
     if not any(c.passed.any() for c in found):
         line, grid = (a.ravel() for a in np.meshgrid(lines, np.arange(len(d)), indexing="ij"))
         found = [designed(m, line, grid) for m in options.materials]
