@@ -10,7 +10,9 @@ import numpy as np
 import pytest
 
 from valvetrain import api
-from valvetrain.specification import example_text, parse_spec
+from valvetrain.specification import parse_spec
+
+from appendix import appendix_text
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 
@@ -51,7 +53,7 @@ def test_dict_route_gives_the_numbers_of_valvetrain_run(tmp_path):
 
 
 def test_series_against_finite_differences_and_the_inputs():
-    document = tomllib.loads(example_text())
+    document = tomllib.loads(appendix_text())
     out = api.design(document)
     s = out["series"]["intake"]
     # the nose lifts the valve by max_lift_mm of the specification (10 mm)
@@ -70,7 +72,7 @@ def test_series_against_finite_differences_and_the_inputs():
 
 
 def test_errors_are_records_with_key_value_and_range():
-    document = tomllib.loads(example_text())
+    document = tomllib.loads(appendix_text())
     document["engine"]["bore_mm"] = -3.0
     out = api.design(document)
     assert not out["ok"] and out["results"] is None
@@ -85,7 +87,7 @@ def test_not_a_dict_is_an_error_record():
 
 
 def test_toml_text_reproduces_the_design():
-    document = tomllib.loads(example_text())
+    document = tomllib.loads(appendix_text())
     document["valves"]["intake"]["max_lift_mm"] = 10.5
     again = api.design(tomllib.loads(api.toml_text(document)))
     _close(again["results"], api.design(document)["results"])
@@ -117,4 +119,4 @@ def test_a_sweep_is_stopped_by_its_progress_callback():
         raise Stop
 
     with pytest.raises(Stop):
-        api.sweep(tomllib.loads(example_text()), progress=progress)
+        api.sweep(tomllib.loads(appendix_text()), progress=progress)
