@@ -473,8 +473,7 @@ def valve_lift_of(h, ramp_height, rocker_ratio=1.0, follower=FLAT):
 def member_values(values, member):
     """Per-law ``values`` (a sequence, one a law) at each sample of a batch: ``values[member]``, or the one law's value
     where ``member`` is None (:func:`batch_derivatives`)."""
-    values = np.asarray(values, dtype=float)
-    return values[0] if member is None else values[member]
+    return values[0] if member is None else np.asarray(values, dtype=float)[member]
 
 
 def batch_derivatives(laws, theta, member):

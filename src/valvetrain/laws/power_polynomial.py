@@ -354,17 +354,17 @@ class PowerPolynomialLaw(SymmetricLaw):
         """The rise of ``laws[member[k]]`` at ``phi[k]`` (``member`` None: the one law), shape (4, n): on each piece
         S = S_0 + v_0 L xi + A L^2 G(xi), v = v_0 + A L F(xi), a = A f(xi), a' = A f'(xi) / L, the lift S_h over
         the dwell."""
-        table = np.array([law._table for law in laws]).transpose(1, 2, 0)
+        table = None if member is None else np.array([law._table for law in laws]).transpose(1, 2, 0)
         out = np.zeros((4, phi.size))
         out[0] = member_values([law.S_h for law in laws], member)
-        for piece, column in zip(laws[0]._pieces, table, strict=True):
+        for k, piece in enumerate(laws[0]._pieces):
             if member is None:
-                start, L, A, S0, v0 = column[:, 0]
+                _, start, L, A, _, S0, v0 = piece
                 m = (phi >= start) & (phi <= start + L)
             else:
-                start, L = column[0][member], column[1][member]
+                start, L = table[k, 0][member], table[k, 1][member]
                 m = (phi >= start) & (phi <= start + L)
-                start, L, A, S0, v0 = column[:, member[m]]
+                start, L, A, S0, v0 = table[k][:, member[m]]
             xi = np.clip((phi[m] - start) / L, 0.0, 1.0)
             f, F, G, df = piece[4].values(xi)
             out[:, m] = (S0 + v0 * L * xi + A * L**2 * G, v0 + A * L * F, A * f, A * df / L)
