@@ -87,3 +87,22 @@ def test_flow_checks_flag_the_appendix():
     names = [f.quantity for f in failed(found)]
     assert names == ["V' (throat velocity)", "V'' (curtain velocity at full lift)"]
     assert failed(found)[0].range == "50...80 m/s"
+
+
+def test_several_diagrams_at_once():
+    """fullnesses and time_areas take each diagram's own interval and breakpoints in one quadrature: a rectangle 1,
+    a half-sine 2/pi, a triangle 1/2 (as test_fullness_identities); the time-area of a constant area f over
+    [a, b] at omega is f (b - a) / omega."""
+    shapes = [lambda t: np.ones_like(t), np.sin, lambda t: 1.0 - np.abs(t)]
+
+    def lift(t, member):
+        out = np.empty_like(t)
+        for i, shape in enumerate(shapes):
+            out[member == i] = shape(t[member == i])
+        return out
+
+    got = flow.fullnesses(lift, [0.0, 0.0, -1.0], [2.0, np.pi, 1.0], [1.0, 1.0, 1.0], [[], [], [0.0]])
+    np.testing.assert_allclose(got, [1.0, 2.0 / np.pi, 0.5], rtol=1e-14)
+    areas = np.array([2e-4, 3e-4])
+    got = flow.time_areas(lambda t, member: areas[member] * np.ones_like(t), [0.0, -0.5], [1.0, 0.7], 50.0, [[], [0.1]])
+    np.testing.assert_allclose(got, areas * np.array([1.0, 1.2]) / 50.0, rtol=1e-14)
