@@ -156,8 +156,7 @@ class LiftLaw(ABC):
     def _batch_derivatives(cls, laws, theta, member):
         """The derivatives of ``laws[member[k]]`` at ``theta[k]``, shape (4, n): each law at its own angles."""
         out = np.empty((4, theta.size))
-        for i, law in enumerate(laws):
-            at = member == i
+        for law, at in zip(laws, _members(member, len(laws)), strict=True):
             out[:, at] = law.derivatives(theta[at])
         return out
 
@@ -458,10 +457,16 @@ class SymmetricLaw(LiftLaw):
         if member is None:
             return laws[0]._rise(phi)
         out = np.empty((4, phi.size))
-        for i, law in enumerate(laws):
-            at = member == i
+        for law, at in zip(laws, _members(member, len(laws)), strict=True):
             out[:, at] = law._rise(phi[at])
         return out
+
+
+def _members(member, count):
+    """The positions of each law's samples in a batch, in order (``member[k]`` the law of sample k), for laws 0 to
+    ``count`` - 1."""
+    order = np.argsort(member, kind="stable")
+    return np.split(order, np.searchsorted(member[order], np.arange(1, count)))
 
 
 def valve_lift_of(h, ramp_height, rocker_ratio=1.0, follower=FLAT):
