@@ -357,7 +357,11 @@ class Problem:
     -----
     One evaluation samples the law twice (:data:`GRID` angles, then :data:`REFINE` around each extreme) and
     integrates the objective by the flow module's quadrature; ``evaluations``, ``seconds`` and ``law_samples`` (the
-    angles at which the law was evaluated, the quadrature's nodes not counted) measure its cost.
+    angles at which the law was evaluated, the quadrature's nodes not counted) measure its cost.  A population is
+    evaluated as one batch (:meth:`evaluate_many`): each point's law is built on its own, then all are sampled on
+    their own grids in one call (:func:`~valvetrain.laws.base.batch_derivatives`), their quantities and least values
+    found together and their objectives integrated in one quadrature; each point's numbers are those of evaluating it
+    alone.
     """
 
     def __init__(self, spec, design, variables, limits, objective="fullness"):
