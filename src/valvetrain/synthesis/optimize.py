@@ -387,7 +387,7 @@ class Problem:
         self.jump = self.names.index("no jump") if "no jump" in self.names else None
         self.evaluations, self.seconds, self.law_samples, self.simulations, self.best = 0, 0.0, 0, 0, -math.inf
         self.history, self.points = [], []
-        self._cache = {}
+        self._cache, self._grid_kept = {}, (None, None, None)
 
     def _value(self, v):
         """The variable's value in the specification (given or the key's default).
@@ -474,8 +474,15 @@ class Problem:
         """The grid of one evaluation and the law's junctions on it [rad from the nose]."""
         end = law.end if self.whole_event else 0.0
         bp = law.breakpoints
-        return np.unique(np.concatenate([np.linspace(law.start, end, GRID), bp[(bp > law.start) & (bp < end)],
+        return np.unique(np.concatenate([self._grid(law.start, end), bp[(bp > law.start) & (bp < end)],
                                          [law.valve_opens], [law.valve_closes] if self.whole_event else []]))
+
+    def _grid(self, start, end):
+        """:data:`GRID` angles from ``start`` to ``end`` [rad], kept for the next law with the same event (the laws of
+        a search share it where no variable changes the event's angles)."""
+        if self._grid_kept[:2] != (start, end):
+            self._grid_kept = (start, end, np.linspace(start, end, GRID))
+        return self._grid_kept[2]
 
     def _quantities(self, laws, theta, member, scales):
         """Each sampled quantity as one to minimise at the angles ``theta`` of the laws ``laws[member]`` at K_z =
