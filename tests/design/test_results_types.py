@@ -18,7 +18,7 @@ DESIGN_MODULES = ["valvetrain.design", "valvetrain.design.valve", "valvetrain.de
                   "valvetrain.design.twostroke", "valvetrain.design.dynamics", "valvetrain.design.grinding",
                   "valvetrain.design.hydraulic_actuation", "valvetrain.design.results",
                   "valvetrain.design.lubrication", "valvetrain.design.lash_adjuster",
-                  "valvetrain.design.camcard"]
+                  "valvetrain.design.camcard", "valvetrain.results", "valvetrain.laws.records"]
 
 
 def _defined(kind):

@@ -22,6 +22,7 @@ from .. import flow
 from ..checks import SEVERITIES, Check, apply_acceptances, check, failed, ranked, tally
 from ..crank.pressure import PressureFileError
 from ..files import TableFileError
+from ..laws.records import LawRecord
 from ..specification import Spec, SpecError, crank_geometry, si, spec_document, validate
 from ..specification.models import Dynamics
 from ..units import MM, to_display
@@ -361,8 +362,7 @@ def sweep_designs(spec, names=None, progress=None) -> dict[str, ValveDesign]:
 def results_schema() -> dict[str, Any]:
     """JSON Schema (draft 2020-12) of results.json, generated from the stage results' field metadata.
 
-    The law's own records (seed formulas, a measured table's analysis) and the strength checks are objects
-    described in the README.
+    The strength checks are objects described in the README.
     """
     from .. import __version__
 
@@ -391,10 +391,7 @@ def results_schema() -> dict[str, Any]:
                                              "description": "the checks whose parts are not given"}
     valve = {"type": "object", "properties": {
         "kind": {"type": "string"}, "count": {"type": "integer"}, "rocker_ratio": {"type": "number"},
-        "cam": merged(json_schema(CamResult), json_schema(ProfileResult),
-                      seed_formulas="the appendix formulas of Valve-train practical works (n.d.) beside the exact extremes (Kurz cams)",
-                      residuals="residuals of the junction conditions (Kurz cams)",
-                      measured="a measured table's analysis: durations, lobe centre, fit quality"),
+        "cam": merged(json_schema(CamResult), json_schema(ProfileResult), json_schema(LawRecord)),
         "flow": json_schema(FlowResult), "piston_clearance": json_schema(ClearanceResult),
         "masses": json_schema(MassResult), "spring": json_schema(SpringResult),
         "strength": strength, "dynamics": json_schema(DynamicsResult),

@@ -8,7 +8,6 @@ caller's own.  Crank angles are measured from the gas-exchange TDC (the TDC that
 intake stroke) in (-360, 360]; camshaft angles from the cam nose.
 """
 
-from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
 from functools import cached_property
 import math
@@ -22,6 +21,7 @@ from ..crank.kinematics import displacement
 from ..followers import follower_of
 from ..laws import LiftLaw
 from ..laws.base import Extremes
+from ..laws.records import LawRecord
 from ..layouts import LAYOUTS, layout
 from ..numerics import extremum
 from ..specification import SpecError
@@ -33,7 +33,7 @@ from .grinding import GrindingResult, grinding_stage
 from .hydraulic_actuation import HydraulicResult, hydraulic_stage
 from .lash_adjuster import LashAdjusterResult, lash_adjuster_stage
 from .lubrication import LubricationResult, lubrication_stage
-from .results import quantity, record
+from .results import NamedValues, quantity, record
 
 ACCELERATION_LIMITS = (3500.0, -1500.0)
 """Upper ends of the recommended bands of positive (1500-3500) and negative (500-1500) tappet
@@ -192,7 +192,7 @@ class CamResult:
     law: LiftLaw = field(repr=False)
     name: str = quantity("law", label="lift law")
     source: str = quantity("source", label="source of the law's formulas")
-    coefficients: dict[str, Any] = quantity("coefficients", label="the law's coefficients in its source's units")
+    coefficients: NamedValues = quantity("coefficients", label="the law's coefficients in its source's units")
     extremes: Extremes = field(repr=False)
     max_velocity: float = quantity("max_velocity_m_s", "m/s", "largest tappet velocity")
     max_acceleration: float = quantity("max_acceleration_m_s2", "m/s2", "largest tappet acceleration")
@@ -378,7 +378,7 @@ def law_stage(valve, engine, law=None) -> CamResult:
     ext = law.extremes(omega)
     seat = valve.rocker_ratio * omega * np.abs(law.derivatives(np.array([law.valve_opens, law.valve_closes]))[1])
     nose = cam.section.nose_crank(valve, law)
-    return CamResult(law, law.name, law.source, law.coefficients(), ext, ext.max_velocity, ext.max_acceleration,
+    return CamResult(law, law.name, law.source, NamedValues.of(law.coefficients()), ext, ext.max_velocity, ext.max_acceleration,
                      ext.min_acceleration, law.main_half_angle, law.ramp_angle, law.ramp_height, law.lift_max,
                      float(seat[0]), float(seat[1]), event, nose, nose + 2.0 * law.valve_opens,
                      nose + 2.0 * law.valve_closes, omega, cam.follower, cam.base_radius,
@@ -599,7 +599,7 @@ class ValveDesign:
     flow: FlowResult
     profile: ProfileResult
     clearance: Optional[ClearanceResult]
-    records: Mapping[str, Any]     # the law's own results (seed formulas, a measured table's analysis), as shown
+    records: LawRecord             # the law's own results (seed formulas, a measured table's analysis)
     drive: DriveResult             # masses, spring curves, strength
     checks: tuple[Check, ...] = ()                  # every check of the valve, passed or not
     dynamics: Optional[DynamicsResult] = None       # with a [dynamics] section
@@ -636,7 +636,7 @@ class ValveDesign:
         """The valve's record in results.json (engineering units, named in the keys), made once: read it, don't
         change it."""
         out = {"kind": self.kind, "count": self.count, "rocker_ratio": self.rocker_ratio,
-               "cam": {**record(self.cam), **record(self.profile), **self.records}, "flow": record(self.flow)}
+               "cam": {**record(self.cam), **record(self.profile), **record(self.records)}, "flow": record(self.flow)}
         if self.clearance is not None:
             out["piston_clearance"] = record(self.clearance)
         out.update(drive_record(self.drive))

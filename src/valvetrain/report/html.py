@@ -1,6 +1,7 @@
 """The HTML design report (Jinja2 template ``templates/report.html``): one file, its figures embedded."""
 
 import base64
+from dataclasses import fields
 from html import unescape
 
 import re
@@ -16,7 +17,7 @@ from ..design.grinding import SOURCES as GRINDING_SOURCES
 from ..design.hydraulic_actuation import SOURCES as HYDRAULIC_SOURCES
 from ..design.lash_adjuster import SOURCES as ADJUSTER_SOURCES
 from ..design.lubrication import SOURCES as LUBRICATION_SOURCES
-from ..design.results import record, shown, shown_value
+from ..design.results import NamedValues, record, shown, shown_value
 from ..tables import lift_table_columns
 from ..bibliography import WORKS, cited_in
 from ..units import to_display
@@ -147,12 +148,20 @@ WARNING_SYMBOLS = {
 
 
 def _coefficient_symbols(coefficients):
-    """The symbols of a lift law's coefficient table."""
+    """The symbols of a lift law's coefficient table (:class:`~valvetrain.results.NamedValues`)."""
     if "c11" in coefficients:
         return ["c_ij", "k_i", "K12"]
     if "C2" in coefficients:
         return ["h_max", "C_poly", "pqrs"]
     return ["coefficients"]
+
+
+def _coefficients(coefficients, prefix=""):
+    """The rows of a lift law's coefficient table: ``(name, value)``, a flank's own coefficients under its name."""
+    rows = []
+    for k, val in coefficients.items():
+        rows += _coefficients(val, f"{prefix}{k}.") if isinstance(val, NamedValues) else [(f"{prefix}{k}", val)]
+    return rows
 
 
 def _flatten(d, prefix=""):
@@ -185,27 +194,30 @@ def _geometry(v):
 
 def _seed(v):
     """The appendix formulas of a Kurz cam beside the profile's exact figures: ``(key, formula, exact)``."""
+    formulas = v.records.seed_formulas
+    if formulas is None:
+        return []
     exact = dict(shown(v.cam, "max_velocity", "max_acceleration", "min_acceleration")
                  + shown(v.profile, "rho_min", "rho_max"))
-    return [(k, val, exact[k]) for k, val in v.records.get("seed_formulas", {}).items()]
+    return [(k, val, exact[k]) for k, val in shown(formulas)]
 
 
 def _measured(rec, lang):
-    """The measured-table analysis for the report: scalars (the fit's reason in the report's language),
-    durations at the checking heights, fit quality."""
+    """The measured-table analysis (:class:`~valvetrain.laws.records.MeasuredRecord`) for the report: scalars (the
+    fit's reason in the report's language), durations at the checking heights, fit quality."""
     if rec is None:
         return None
-    hidden = ("fit_reason_code", "spline_smoothing", "gcv_ratio_harmonic_to_spline")
-    scalars = [(k, _fit_reason(rec, lang) if k == "fit_reason" else val) for k, val in rec.items()
-               if not isinstance(val, (list, dict)) and k not in hidden]
-    return {"summary": scalars, "durations": rec["durations_deg"], "quality": list(rec["fit_quality"].items())}
+    hidden = ("durations", "fit_reason_code", "spline_smoothing", "gcv_ratio", "fit_quality")
+    scalars = [(k, _fit_reason(rec, lang) if k == "fit_reason" else val)
+               for k, val in shown(rec, *(f.name for f in fields(rec) if f.name not in hidden))]
+    return {"summary": scalars, "durations": [dict(shown(d)) for d in rec.durations],
+            "quality": [(kind, dict(shown(q))) for kind, q in rec.fit_quality.items()]}
 
 
 def _fit_reason(rec, lang):
-    """The fit a measured table used and why, from the codes of results.json in the report's language."""
-    ratio = rec.get("gcv_ratio_harmonic_to_spline")
-    ratio = float("nan") if ratio is None else ratio if rec["fit"] == "harmonic" else 1.0 / ratio
-    return fit_reason(rec["fit"], rec["harmonics"], rec["fit_reason_code"], ratio, rec["spline_smoothing"], lang)
+    """The fit a measured table used and why, from its codes in the report's language."""
+    ratio = float("nan") if rec.gcv_ratio is None else rec.gcv_ratio if rec.fit == "harmonic" else 1.0 / rec.gcv_ratio
+    return fit_reason(rec.fit, rec.harmonics, rec.fit_reason_code, ratio, rec.spline_smoothing, lang)
 
 
 DYNAMICS_HEADLINE = ["speed_range_rpm", "speeds", "jump_speed_rpm", "bounce_speed_rpm", "max_seating_velocity_m_s",
@@ -384,7 +396,6 @@ def render_report(results, plots, lang="en", folder=None):
     valves = []
     for name, v in results.valves.items():
         spring = v.drive.spring
-        coefficients = shown_value(v.cam, "coefficients")
         valves.append({
             "name": name, "valve": v, "plots": plots.get(name, {}),
             "inputs": _flatten(spec["valves"][name]),
@@ -395,12 +406,12 @@ def render_report(results, plots, lang="en", folder=None):
             "cam": shown(v.cam, *CAM_FIELDS),
             "steps": [record(st) for st in v.cam.acceleration_steps],
             "geometry": _geometry(v),
-            "coefficients": list(coefficients.items()),
-            "coefficient_symbols": _coefficient_symbols(coefficients),
+            "coefficients": _coefficients(v.cam.coefficients),
+            "coefficient_symbols": _coefficient_symbols(v.cam.coefficients),
             "input_symbols": INPUT_SYMBOLS,
             "seed": _seed(v),
-            "residuals": list(v.records.get("residuals", {}).items()),
-            "measured": _measured(v.records.get("measured"), lang),
+            "residuals": list((v.records.residuals or {}).items()),
+            "measured": _measured(v.records.measured, lang),
             "clearance": [] if v.clearance is None else shown(v.clearance),
             "masses": shown(v.drive.masses),
             "spring": [(k, val) for k, val in shown(spring) if not isinstance(val, dict)],

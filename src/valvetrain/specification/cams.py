@@ -25,6 +25,7 @@ from ..laws import (AsymmetricLaw, CombinedLaw, ConstantAccelerationLaw, Dynamic
                     PolynomialLaw, PowerPolynomialLaw, TangentLaw, ThreeArcLaw)
 from ..laws.power_polynomial import ARTICLE_EXPONENTS
 from ..laws.measured import CHECKING_HEIGHTS_MM, MIN_VALVE_LIFT_MM, TableLaw, lobe_table, table_accuracy
+from ..laws.records import Duration, FitQuality, LawRecord, MeasuredRecord, PowerPolynomialRecord, SeedFormulas
 from ..laws.takeup import ClearanceTakeUp
 from ..layouts import train_mass
 from ..locale.wording import fit_reason
@@ -111,8 +112,8 @@ class _CamBase(_Model):
         return symmetric_nose(valve)
 
     def records(self, law, valve, engine, nose):
-        """What the law adds to the cam's results: ``(dict, list of Check)`` (SI views)."""
-        return {}, []
+        """What the law adds to the cam's results: ``(LawRecord, list of Check)`` (SI views)."""
+        return LawRecord(), []
 
     def timing(self, valve, record):
         """Opening advance and closing lag [crank rad] of the main lift for the recommended ranges (SI view; a
@@ -282,12 +283,9 @@ class KurzCam(_SegmentAngles, _CamBase, _RampKeys):
         """The appendix formulas of Valve-train practical works (n.d.) (2.35)-(2.39) beside the exact extremes, and the residuals of the
         junction conditions (2.10)-(2.20), for a symmetric cam."""
         if self.closing is not None:
-            return {}, []
+            return LawRecord(), []
         sf = law.seed_formulas(valve.cam.base_radius, engine.rated_speed / 2.0)
-        return {"seed_formulas": {"max_velocity_m_s": sf["max_velocity"], "max_acceleration_m_s2": sf["max_acceleration"],
-                                  "min_acceleration_m_s2": sf["min_acceleration"], "rho_min_mm": sf["rho_min"] / MM,
-                                  "rho_max_mm": sf["rho_max"] / MM},
-                "residuals": law.residuals()}, []
+        return LawRecord(seed_formulas=SeedFormulas(**sf), residuals=law.residuals()), []
 
 
 @register
@@ -545,9 +543,8 @@ class PowerPolynomialCam(_CamBase):
 
     def records(self, law, valve, engine, nose):
         """The responses of the synthesis: phi_2, the dwell, S_e, v_e and the fullness of the tappet lift."""
-        return {"power_polynomial": {"phi2_deg": float(np.degrees(law.phi2)), "dwell_deg": float(np.degrees(law.dwell)),
-                                     "S_e_mm": law.S_e / MM, "v_e_mm_per_rad": law.v_e / MM,
-                                     "tappet_fullness": float(law.fullness())}}, []
+        return LawRecord(power_polynomial=PowerPolynomialRecord(float(law.phi2), float(law.dwell), law.S_e, law.v_e,
+                                                                float(law.fullness()))), []
 
 
 @register
@@ -701,24 +698,23 @@ class TableCam(_CamBase):
         """The measured-table record of results.json and its timing checks (Shang Hanji (1988), sections 5.1-5.3)."""
         to_table = 2.0 if self.table_angle == "crank" else 1.0        # table angle units per cam angle
         at_valve = valve.rocker_ratio if self.table_lift_at == "valve" else 1.0
-        durations = [{"height_mm": h, "duration_deg": _finite(rad_to_deg(law.duration(h * MM / at_valve)) * to_table)}
-                     for h in CHECKING_HEIGHTS_MM]
-        quality = {kind: {"rms_residual_mm": q.rms_residual * at_valve / MM, "max_residual_mm": q.max_residual * at_valve / MM,
-                          "jerk_sign_changes": q.jerk_sign_changes}
+        durations = tuple(Duration(h * MM, _finite(law.duration(h * MM / at_valve) * to_table))
+                          for h in CHECKING_HEIGHTS_MM)
+        quality = {kind: FitQuality(q.rms_residual * at_valve, q.max_residual * at_valve, q.jerk_sign_changes)
                    for kind in ("spline", "harmonic") for q in [law.quality(kind)]}
-        rec = {"max_lift_mm": (law.lift_max + law.ramp_height) * at_valve / MM,
-               "lobe_centre_deg": rad_to_deg(law.centre) * to_table, "durations_deg": durations, "fit": law.fit,
-               "fit_reason": fit_reason(law.fit, law.harmonics, *law.choice, law.smoothing), "fit_reason_code": law.choice[0], "spline_smoothing": law.smoothing,
-               "gcv_ratio_harmonic_to_spline": _finite(law.gcv["harmonic"] / law.gcv["spline"]),
-               "harmonics": law.harmonics, "asymmetry_rms_mm": law.asymmetry_rms * at_valve / MM,
-               "accuracy_mm": law.accuracy * at_valve / MM,
-               "accuracy_from": "stated" if law.accuracy_stated else "table", "fit_quality": quality, "table_angle": self.table_angle, "table_lift_at": self.table_lift_at,
-               "table_zero": self.table_zero}
         # the timing the table implies, where the valve lift crosses the first checking height (0.1 mm)
         rise, fall = law.crossings(law.ramp_height + CHECKING_HEIGHTS_MM[0] * MM / valve.rocker_ratio)
         opens = -(nose + 2.0 * rise) if valve.kind == "intake" else -np.pi - (nose + 2.0 * rise)
         closes = (nose + 2.0 * fall) - (np.pi if valve.kind == "intake" else 0.0)
-        rec["opens_deg_at_0.1mm"], rec["closes_deg_at_0.1mm"] = _finite(rad_to_deg(opens)), _finite(rad_to_deg(closes))
+        rec = MeasuredRecord(
+            max_lift=(law.lift_max + law.ramp_height) * at_valve, lobe_centre=law.centre * to_table,
+            durations=durations, fit=law.fit, fit_reason=fit_reason(law.fit, law.harmonics, *law.choice, law.smoothing),
+            fit_reason_code=law.choice[0], spline_smoothing=law.smoothing,
+            gcv_ratio=_finite(law.gcv["harmonic"] / law.gcv["spline"]), harmonics=law.harmonics,
+            asymmetry_rms=law.asymmetry_rms * at_valve, accuracy=law.accuracy * at_valve,
+            accuracy_from="stated" if law.accuracy_stated else "table", fit_quality=quality,
+            table_angle=self.table_angle, table_lift_at=self.table_lift_at, table_zero=self.table_zero,
+            opens=_finite(opens), closes=_finite(closes))
         found = []
         for code, given, derived in (("law.measured.opens", valve.opens, opens),
                                      ("law.measured.closes", valve.closes, closes)):
@@ -726,11 +722,10 @@ class TableCam(_CamBase):
                 found.append(check(code, given, derived - 2.0 * DEG,
                                    derived + 2.0 * DEG, unit="crank deg",
                                    source="the table's timing at 0.1 mm valve lift (+-2 crank deg)"))
-        return {"measured": rec}, found
+        return LawRecord(measured=rec), found
 
     def timing(self, valve, record):
-        return tuple(None if a is None else a * DEG for a in (record["measured"]["opens_deg_at_0.1mm"],
-                                                             record["measured"]["closes_deg_at_0.1mm"]))
+        return record.measured.opens, record.measured.closes
 
 
 Cam = Annotated[Union[tuple(REGISTRY.values())], Field(discriminator="law")]
