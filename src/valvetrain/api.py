@@ -20,7 +20,7 @@ command line prints it).
 
 import json
 import math
-import re
+from typing import Any
 
 import numpy as np
 
@@ -28,20 +28,11 @@ from .export import json_text
 from .specification import SpecError, spec_toml, validate
 from .units import MM, rad_to_deg, to_display
 
-_PROBLEM = re.compile(r"(?P<path>[^\s=:]+)(?: = (?P<value>.+?))?: (?P<message>.+)", re.DOTALL)
-"""A message of :class:`~valvetrain.specification.SpecError`: ``key.path = value: what is allowed`` or ``key.path:
-what is wrong``."""
-
-
-def error_records(err):
+def error_records(err) -> list[dict[str, Any]]:
     """The problems of a :class:`~valvetrain.specification.SpecError` as records ``{"path", "value", "message",
-    "text"}``; a line that names no key has the path ``""``."""
-    out = []
-    for text in err.problems:
-        m = _PROBLEM.fullmatch(text)
-        out.append({"path": m["path"], "value": m["value"], "message": m["message"], "text": text} if m
-                   else {"path": "", "value": None, "message": text, "text": text})
-    return out
+    "text"}`` (each :class:`~valvetrain.specification.messages.Problem`'s parts, made where it was found); a problem
+    that names no key has the path ``""``."""
+    return [{"path": p.path, "value": p.value, "message": p.message, "text": str(p)} for p in err.problems]
 
 
 def plain(data):

@@ -24,6 +24,7 @@ from ..crank.pressure import PressureFileError
 from ..files import TableFileError
 from ..laws.records import LawRecord
 from ..specification import Spec, SpecError, crank_geometry, si, spec_document, validate
+from ..specification.messages import Problem
 from ..specification.models import Dynamics
 from ..units import MM, to_display
 from .camcard import CamCard, CamCardValve, cam_card_stage
@@ -202,7 +203,7 @@ def run(spec, laws=None, progress=None) -> DesignResults:
         try:
             crank_view = si(spec.crank, spec)
         except PressureFileError as exc:
-            raise SpecError([f"crank.pressure_file: {exc}"]) from None
+            raise SpecError([Problem("crank.pressure_file", str(exc))]) from None
     crank = crank_stage(crank_view, engine, valve_timing(valves)) if crank_view is not None else None
     if waiting:
         cylinder = CylinderPressure(crank.phi, crank.columns["p_abs"], crank.pressure_source)
@@ -314,7 +315,7 @@ def _valve_view(name, valve, spec):
     try:
         return si(valve, spec)
     except (TableFileError, PressureFileError) as exc:
-        raise SpecError([f"valves.{name}.cam.table_file: {exc}"]) from None
+        raise SpecError([Problem(f"valves.{name}.cam.table_file", str(exc))]) from None
 
 
 def sweep_designs(spec, names=None, progress=None) -> dict[str, ValveDesign]:

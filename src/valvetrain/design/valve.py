@@ -25,6 +25,7 @@ from ..laws.records import LawRecord
 from ..layouts import LAYOUTS, layout
 from ..numerics import extremum
 from ..specification import SpecError
+from ..specification.messages import Problem
 from ..springs import NoSpringFits
 from ..units import DEG, MM, to_display
 from .drive import DriveResult, drive_record, drive_stage, strength_stage
@@ -350,30 +351,33 @@ def law_stage(valve, engine, law=None) -> CamResult:
     ValueError
         The inputs admit no law that can be made: the law's own rules, a lift that overshoots the nose or dips
         below the base circle, an event of a whole revolution or more, a valve lift beyond half the throat; the
-        message starts with the key within the valve (``cam: ...``, ``max_lift_mm = ...``).
+        argument is a :class:`~valvetrain.specification.messages.Problem` naming the key within the valve (``cam``,
+        ``max_lift_mm``).
     """
     cam = valve.cam
     try:
         law = cam.section.build(valve, engine) if law is None else law
     except ValueError as exc:
-        raise ValueError(f"cam: {exc}") from None
+        raise ValueError(Problem("cam", str(exc))) from None
     nose_lift = law.lift_max + law.ramp_height
     low, high = (extremum(law.lift, law.breakpoints, kind)[1] for kind in ("min", "max"))
     if high > nose_lift * (1.0 + 1e-6) or low < -1e-6 * nose_lift:
-        raise ValueError(f"cam: the lift runs from {low / MM:.4g} to {high / MM:.4g} mm; allowed 0 to the nose lift "
-                         f"{nose_lift / MM:.4g} mm (the law's angles and ramp velocity do not fit together)")
+        raise ValueError(Problem("cam", f"the lift runs from {low / MM:.4g} to {high / MM:.4g} mm; allowed 0 to the nose "
+                                 f"lift {nose_lift / MM:.4g} mm (the law's angles and ramp velocity do not fit together)"))
     event = law.end - law.start
     if not event < 2.0 * np.pi:
         ramp = math.degrees(law.ramp_angle)
-        raise ValueError(f"cam: the cam event lasts {math.degrees(event):.4g} cam deg; allowed < 360" + (
+        raise ValueError(Problem("cam", f"the cam event lasts {math.degrees(event):.4g} cam deg; allowed < 360" + (
             f" (a ramp of {ramp:.4g} cam deg on each flank: raise ramp_end_velocity_mm_per_deg or lower "
-            "clearance_mm)" if ramp > 0.0 else ""))
+            "clearance_mm)" if ramp > 0.0 else "")))
     lift = law.lift_max * valve.rocker_ratio
     if lift > MAX_LIFT_TO_THROAT * valve.throat_diameter:
-        key = "cam.table_file: the measured valve lift" if cam.law == "table" else "max_lift_mm"
-        raise ValueError(f"{key} = {lift / MM:.4g} mm: allowed at most {MAX_LIFT_TO_THROAT:g} x throat_diameter_mm = "
-                         f"{MAX_LIFT_TO_THROAT * valve.throat_diameter / MM:.4g} mm (the curtain area already equals "
-                         "the throat area at a quarter of the diameter)")
+        allowed = (f"allowed at most {MAX_LIFT_TO_THROAT:g} x throat_diameter_mm = "
+                   f"{MAX_LIFT_TO_THROAT * valve.throat_diameter / MM:.4g} mm (the curtain area already equals the "
+                   "throat area at a quarter of the diameter)")
+        if cam.law == "table":
+            raise ValueError(Problem("cam.table_file", f"the measured valve lift = {lift / MM:.4g} mm: {allowed}"))
+        raise ValueError(Problem("max_lift_mm", allowed, f"{lift / MM:.4g} mm"))
     omega = engine.rated_speed / 2.0
     ext = law.extremes(omega)
     seat = valve.rocker_ratio * omega * np.abs(law.derivatives(np.array([law.valve_opens, law.valve_closes]))[1])
@@ -687,19 +691,19 @@ def design_valve(name, valve, engine, gas, output, law=None, progress=None, cyli
     try:
         cam = law_stage(valve, engine, law)
     except ValueError as exc:
-        raise SpecError([f"{at}.{exc}"]) from None
+        raise SpecError([exc.args[0].within(at)]) from None
     flow_result = flow_stage(cam, valve, engine)
     profile = profile_stage(cam, valve, output)
     try:
         clearance = clearance_stage(cam, valve, engine)
     except ValueError as exc:
-        raise SpecError([f"{at}: {exc}"]) from None
+        raise SpecError([Problem(at, str(exc))]) from None
     section = valve.cam.section
     records, found = section.records(cam.law, valve, engine, cam.nose)
     try:
         drive = drive_stage(valve, gas, cam)
     except NoSpringFits as exc:
-        raise SpecError([f"{at}.spring: {exc}"]) from None
+        raise SpecError([Problem(f"{at}.spring", str(exc))]) from None
     found += valve_checks(cam, flow_result, profile, valve, engine, section.timing(valve, records)) + list(drive.checks)
     found += mass_checks(valve, drive.masses.at_valve, flow_result.throat_area)
     if clearance is not None:

@@ -31,7 +31,7 @@ from ..layouts import train_mass
 from ..locale.wording import fit_reason
 from ..units import DEG, MM, cam_per_crank, rad_to_deg
 from .fields import RAMP_VELOCITY, SEGMENT_ANGLE, Length, _bounded, _Model
-from .messages import message, shown
+from .messages import Problem, message, shown
 from .si import si
 
 REGISTRY = {}
@@ -149,8 +149,14 @@ def _ramp(cam):
     return dict(ramp_kind=cam.ramp_type, ramp_fraction=cam.ramp_acceleration_fraction)
 
 
+def _closing_problem(at, problem):
+    """A problem of the closing flank's own table, its key under ``{at}.cam.closing``."""
+    return Problem(f"{at}.cam.closing.{problem.path}", problem.message, problem.value,
+                   text=f"{at}.cam.closing: {problem}")
+
+
 def _clearance_problem(at, valve, what="the cam's ramp takes up the clearance"):
-    return [f"{at}.clearance_mm = {valve.clearance_mm:g}: {what}, allowed [0.01, 5] mm"] \
+    return [Problem(f"{at}.clearance_mm", f"{what}, allowed [0.01, 5] mm", f"{valve.clearance_mm:g}")] \
         if valve.clearance_mm <= 0.0 else []
 
 
@@ -191,12 +197,12 @@ class _ClosingSide(_Model):
         try:
             closing = self.closing_cam()
         except ValidationError as exc:
-            return out + [f"{at}.cam.closing: {message(err)}" for err in exc.errors()]
+            return out + [_closing_problem(at, message(err)) for err in exc.errors()]
         total = self.flank_angle_deg() + closing.flank_angle_deg()
         event = 2.0 * main_half_angle_deg(valve, engine.strokes)
         if abs(total - event) > 1e-6:
-            out.append(f"{at}.cam: the opening and closing flanks add up to {total:g} cam deg; they must equal the main "
-                       f"event (opens_deg + 180 + closes_deg)/2 = {event:g} cam deg")
+            out.append(Problem(f"{at}.cam", f"the opening and closing flanks add up to {total:g} cam deg; they must "
+                               f"equal the main event (opens_deg + 180 + closes_deg)/2 = {event:g} cam deg"))
         return out + self.asymmetric_problems(at, closing)
 
     def asymmetric_problems(self, at, closing):
@@ -537,8 +543,8 @@ class PowerPolynomialCam(_CamBase):
         out = _clearance_problem(at, valve)
         half = main_half_angle_deg(valve, engine.strokes)
         if self.phi1_deg >= half:
-            out.append(f"{at}.cam.phi1_deg = {self.phi1_deg:g} leaves no room for the negative part in the half-angle "
-                       f"phi_p0 = {half:g} cam deg; allowed phi1_deg < {half:g}")
+            out.append(Problem(f"{at}.cam.phi1_deg", f"leaves no room for the negative part in the half-angle phi_p0 = "
+                               f"{half:g} cam deg; allowed phi1_deg < {half:g}", f"{self.phi1_deg:g}", " "))
         return out
 
     def records(self, law, valve, engine, nose):

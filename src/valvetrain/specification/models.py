@@ -656,7 +656,7 @@ class Spec(_Model):
         try:
             document = set_keys(spec_document(self), values)
         except ValueError as exc:
-            raise SpecError([str(exc)]) from None
+            raise SpecError([exc.args[0]]) from None
         return validate(document)
 
     @model_validator(mode="after")
