@@ -54,11 +54,6 @@ def cumulative_integral(fn, grid, breakpoints=()):
     return running[np.searchsorted(edges, grid)]
 
 
-def integral(fn, a, b, breakpoints=()):
-    """Integral of a piecewise-smooth function from ``a`` to ``b`` (see :func:`cumulative_integral`)."""
-    return float(cumulative_integral(fn, [a, b], breakpoints)[-1])
-
-
 def extremum(fn, edges, kind="max", samples=65):
     """Global extremum of a piecewise-smooth scalar function on an interval.
 

@@ -92,10 +92,6 @@ def layout_check(code, value, layout, **kw) -> Optional[Check]:
         return None
     return check(code, value, band.low, band.high, source=band.source, note=band.note, **kw)
 
-ENGINE_CLASSES = ("automotive_petrol", "automotive_diesel", "heavy_duty")
-"""The engine classes of ``[engine] engine_class``: a car or motorcycle petrol engine, a car, truck or tractor diesel,
-and a heavy-duty engine (locomotive, marine, stationary)."""
-
 PETROL_BANDS = ("timing.opening_advance", "timing.closing_lag", "valve.seat_angle", "valve.clearance",
                 "drive.rocker_ratio")
 """The checks whose recommended bands are those of a petrol engine (Valve-train practical works (n.d.), works 1 and 2:
@@ -107,7 +103,7 @@ OTHER_CLASS_NOTE = ("the band is a petrol engine's (Valve-train practical works 
 
 def engine_class(engine) -> str:
     """The engine class whose recommended bands apply: ``[engine] engine_class``, else an automotive diesel for
-    ``type = "diesel"`` and an automotive petrol engine otherwise (:data:`ENGINE_CLASSES`)."""
+    ``type = "diesel"`` and an automotive petrol engine otherwise."""
     if engine.engine_class is not None:
         return engine.engine_class
     return "automotive_diesel" if engine.type == "diesel" else "automotive_petrol"
