@@ -21,8 +21,15 @@ DESIGN_MODULES = ["valvetrain.design", "valvetrain.design.valve", "valvetrain.de
                   "valvetrain.design.camcard", "valvetrain.results", "valvetrain.laws.records"]
 
 
-def _defined(kind):
-    for name in DESIGN_MODULES:
+EDGE_MODULES = ["valvetrain.api", "valvetrain.export", "valvetrain.specification.reading",
+                "valvetrain.specification.validate", "valvetrain.specification.models",
+                "valvetrain.specification.messages", "valvetrain.specification.cams"]
+"""The public modules beside the design's whose functions a caller uses: the JSON entry point, the writers, the
+specification."""
+
+
+def _defined(kind, modules=DESIGN_MODULES):
+    for name in modules:
         module = importlib.import_module(name)
         for attr, obj in vars(module).items():
             if kind(obj) and obj.__module__ == name and not attr.startswith("_"):
@@ -31,7 +38,8 @@ def _defined(kind):
 
 def _public_functions():
     public = {f"valvetrain.{n}": getattr(valvetrain, n) for n in valvetrain.__all__}
-    return {**{k: f for k, f in public.items() if inspect.isfunction(f)}, **dict(_defined(inspect.isfunction))}
+    return {**{k: f for k, f in public.items() if inspect.isfunction(f)},
+            **dict(_defined(inspect.isfunction, DESIGN_MODULES + EDGE_MODULES))}
 
 
 @pytest.fixture(scope="module")

@@ -38,24 +38,24 @@ REGISTRY = {}
 """``law`` name -> its cam model, in the order of registration."""
 
 
-def register(model):
+def register(model) -> type:
     """Class decorator: add a cam model to :data:`REGISTRY` under its ``law`` literal."""
     REGISTRY[model.model_fields["law"].annotation.__args__[0]] = model
     return model
 
 
-def main_half_angle(valve, strokes):
+def main_half_angle(valve, strokes) -> float:
     """phi_p0 [rad camshaft]: half the main event (ramps excluded), (opens + pi + closes)/2 crank angle on the
     camshaft (Valve-train practical works (n.d.), work 2, corrected phi_p0 formula, corrections note 1); ``valve`` is an SI view."""
     return (valve.opens + np.pi + valve.closes) / 2.0 * cam_per_crank(strokes)
 
 
-def main_half_angle_deg(valve, strokes):
+def main_half_angle_deg(valve, strokes) -> float:
     """phi_p0 [cam deg] from a valve section in degrees (see :func:`main_half_angle`)."""
     return (valve.opens_deg + 180.0 + valve.closes_deg) / 2.0 * cam_per_crank(strokes)
 
 
-def symmetric_nose(valve):
+def symmetric_nose(valve) -> float:
     """Crank angle of the nose of a symmetric lobe from the gas-exchange TDC [rad] (four-stroke), SI view.
 
     Intake: the main lift opens ``opens`` before TDC (crank 0) and closes ``closes`` after BDC (crank pi).

@@ -46,13 +46,13 @@ class SpecError(Exception):
         super().__init__("\n".join(self.problems))
 
 
-def shown(value, limit=60):
+def shown(value, limit=60) -> str:
     """A value as echoed in a message: its repr, cut to ``limit`` characters."""
     text = repr(value)
     return text if len(text) <= limit else f"{text[:limit - 5]}...{text[-2:]}"
 
 
-def location(err, laws=()):
+def location(err, laws=()) -> str:
     """The key path of a pydantic error without the law tags pydantic inserts after a cam (``cam.kurz.phi1_deg``);
     long keys are cut."""
     loc = err["loc"]

@@ -8,6 +8,7 @@ are the dotted keys that :meth:`Spec.replace` and ``study --grid`` change.
 """
 
 import copy
+from typing import Any, Optional
 
 from ..layouts import LAYOUTS
 from ..springs import feasible_mean_diameters
@@ -76,7 +77,7 @@ def _same(spec, key_crank, key_engine):
     return (a if a is not None else b), []
 
 
-def crank_geometry(spec):
+def crank_geometry(spec) -> tuple[Optional[float], ...]:
     """Effective bore, stroke, rod length [mm] and speed [rpm] of the crank mechanism."""
     return tuple(_same(spec, kc, ke)[0] for kc, ke in (("bore_mm", "bore_mm"), ("stroke_mm", "stroke_mm"),
                                                       ("rod_length_mm", "rod_length_mm"),
@@ -141,7 +142,7 @@ def _acceptance_problems(spec):
             for i, a in enumerate(spec.accepted) if a.valve is not None and a.valve not in spec.valves]
 
 
-def problems(spec):
+def problems(spec) -> list[Problem]:
     """The problems across the sections of a specification whose every field is valid, one message each ([] if
     none): angles that must add up, a throat smaller than the bore, files and keys that must agree, ...."""
     out = [p for name, v in spec.valves.items() for p in _valve_problems(name, v, spec.engine)]
@@ -153,7 +154,7 @@ def problems(spec):
     return out
 
 
-def set_keys(document, values):
+def set_keys(document, values) -> dict[str, Any]:
     """A deep copy of a specification ``document`` (a dict of TOML tables) with the dotted keys of ``values`` set.
 
     A key is the path of TOML tables, then the key (``engine.bore_mm``, ``valves.intake.cam.shape_factor``); tables
@@ -196,7 +197,7 @@ def set_keys(document, values):
     return out
 
 
-def spec_document(spec):
+def spec_document(spec) -> dict[str, Any]:
     """The document of a :class:`Spec` (a dict of its tables, every default written out) that :func:`validate`
     turns back into the same specification."""
     return {**spec.model_dump(), "source_dir": spec.source_dir}
