@@ -38,3 +38,14 @@ def refused(tmp_path):
         assert not out.exists()
         return result.output
     return check
+
+
+def plain(x):
+    """Numbers, text, arrays and containers of them: what a figure's data may hold (no design object)."""
+    if isinstance(x, dict):
+        return all(isinstance(k, str) and plain(v) for k, v in x.items())
+    if isinstance(x, (list, tuple)):
+        return all(plain(v) for v in x)
+    if isinstance(x, np.ndarray):
+        return x.dtype.kind in "biufU"
+    return x is None or isinstance(x, (str, bool, int, float, np.floating))

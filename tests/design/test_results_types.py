@@ -7,9 +7,9 @@ import importlib
 import inspect
 import typing
 
-import numpy as np
 import pytest
 
+from conftest import plain
 import valvetrain
 from valvetrain.design import run
 from valvetrain.specification import example_spec
@@ -84,17 +84,6 @@ def test_the_json_projection_is_made_once(results):
     assert results.to_dict()["valves"]["intake"] is v.summary
 
 
-def _plain(x):
-    """Numbers, text, arrays and containers of them: what a figure's data may hold (no design object)."""
-    if isinstance(x, dict):
-        return all(isinstance(k, str) and _plain(v) for k, v in x.items())
-    if isinstance(x, (list, tuple)):
-        return all(_plain(v) for v in x)
-    if isinstance(x, np.ndarray):
-        return x.dtype.kind in "biufU"
-    return x is None or isinstance(x, (str, bool, int, float, np.floating))
-
-
 def test_figure_data_are_plain_series(results):
     """The data of each separated figure are numbers and arrays, and its drawing takes them alone."""
     from matplotlib.figure import Figure
@@ -110,7 +99,7 @@ def test_figure_data_are_plain_series(results):
             (plots.crank_torque_data(results.crank), plots.draw_crank_torque),
             (plots.crank_pin_data(results.crank), plots.draw_crank_pin)]
     for data, draw in made:
-        assert _plain(data), draw.__name__
+        assert plain(data), draw.__name__
         assert isinstance(draw(data, TEXT["en"]), Figure)
     # the series are those of the results: the time-area plot's stroke is results.json's
     assert plots.time_area_data(v)["stroke_crank_deg"] == results.to_dict()["valves"]["intake"]["flow"]["stroke_crank_deg"]

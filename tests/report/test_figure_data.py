@@ -4,9 +4,9 @@ are plain numbers and arrays, the same as results.json's, and the drawing takes 
 from pathlib import Path
 
 from matplotlib.figure import Figure
-import numpy as np
 import pytest
 
+from conftest import plain
 from valvetrain.design import run
 from valvetrain.report import plots
 from valvetrain.report.i18n import TEXT
@@ -15,19 +15,8 @@ from valvetrain.specification import load_spec
 EXAMPLES = Path(__file__).parents[2] / "examples"
 
 
-def _plain(x):
-    """Numbers, text, arrays and containers of them (no design object)."""
-    if isinstance(x, dict):
-        return all(isinstance(k, str) and _plain(v) for k, v in x.items())
-    if isinstance(x, (list, tuple)):
-        return all(_plain(v) for v in x)
-    if isinstance(x, np.ndarray):
-        return x.dtype.kind in "biufU"
-    return x is None or isinstance(x, (str, bool, int, float, np.floating))
-
-
 def _drawn(data, draw):
-    assert _plain(data), draw.__name__
+    assert plain(data), draw.__name__
     assert isinstance(draw(data, TEXT["en"]), Figure)
 
 
