@@ -252,11 +252,13 @@ class _SegmentAngles(_ClosingSide):
         total = self.phi1_deg + self.phi2_deg + phi3
         empty = phi3 < 0.0 or (self.law == "kurz" and phi3 == 0.0)
         if self.phi3_deg is None and empty:
-            out.append(f"{at}.cam: phi1_deg + phi2_deg = {self.phi1_deg + self.phi2_deg:g} leaves no room for phi3 "
-                       f"in the half-angle phi_p0 = {half:g} cam deg; allowed phi1_deg + phi2_deg < {half:g}")
+            out.append(Problem(f"{at}.cam", f"phi1_deg + phi2_deg = {self.phi1_deg + self.phi2_deg:g} leaves no room "
+                               f"for phi3 in the half-angle phi_p0 = {half:g} cam deg; allowed phi1_deg + phi2_deg < "
+                               f"{half:g}"))
         elif abs(total - half) > 1e-6:
-            out.append(f"{at}.cam: phi1_deg + phi2_deg + phi3_deg = {total:g} cam deg must equal the half-angle "
-                       f"phi_p0 = (opens_deg + 180 + closes_deg)/2 crank deg = {half:g} cam deg (Valve-train practical works (n.d.), eq. 2.2)")
+            out.append(Problem(f"{at}.cam", f"phi1_deg + phi2_deg + phi3_deg = {total:g} cam deg must equal the "
+                               f"half-angle phi_p0 = (opens_deg + 180 + closes_deg)/2 crank deg = {half:g} cam deg "
+                               "(Valve-train practical works (n.d.), eq. 2.2)"))
         return out
 
 
@@ -282,7 +284,7 @@ class KurzCam(_SegmentAngles, _CamBase, _RampKeys):
 
     def asymmetric_problems(self, at, closing):
         if self.phi3_deg is None or closing.phi3_deg is None:
-            return [f"{at}.cam: an asymmetric Kurz cam needs phi3_deg on both flanks"]
+            return [Problem(f"{at}.cam", "an asymmetric Kurz cam needs phi3_deg on both flanks")]
         return []
 
     def records(self, law, valve, engine, nose):
@@ -447,8 +449,8 @@ class CombinedCam(_ClosingSide, _CamBase, _RampKeys):
         out = []
         total, half = self.flank_angle_deg(), main_half_angle_deg(valve, engine.strokes)
         if abs(total - half) > 1e-6:
-            out.append(f"{at}.cam.segments: the lengths add up to {total:g} cam deg; they must equal the half-angle "
-                       f"phi_p0 = {half:g} cam deg")
+            out.append(Problem(f"{at}.cam.segments", f"the lengths add up to {total:g} cam deg; they must equal the "
+                               f"half-angle phi_p0 = {half:g} cam deg"))
         return out + _clearance_problem(at, valve)
 
 
