@@ -188,7 +188,7 @@ SEED_TAG = re.compile(r"\b[Ss]eeds? (00[0-4])(?:\s*(?:-|–|\.\.\.|and|,)\s*(00[
 def _texts(source):
     """The comments (a run of comment lines as one) and the strings of Python ``source``: ``(line, text)``."""
     tokens = tokenize.generate_tokens(io.StringIO(source).readline)
-    block, last = [], None
+    block, first, last = [], None, None
     for tok in tokens:
         if tok.type == tokenize.COMMENT and block and tok.start[0] == last + 1:
             block.append(tok.string)
