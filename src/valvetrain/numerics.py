@@ -91,11 +91,6 @@ def integrals(fn, starts, ends, breakpoints):
                      for v, (grid, edges, half, nodes) in zip(parts, pieces, strict=True)])
 
 
-def integral(fn, a, b, breakpoints=()):
-    """Integral of a piecewise-smooth function from ``a`` to ``b`` (see :func:`cumulative_integral`)."""
-    return float(cumulative_integral(fn, [a, b], breakpoints)[-1])
-
-
 def extremum(fn, edges, kind="max", samples=65):
     """Global extremum of a piecewise-smooth scalar function on an interval.
 

@@ -3,7 +3,7 @@
 The power-polynomial cam of the 26/27 diesel example (UkrSURT Proceedings (2019)) and the Kurz cam of the built-in
 example (Valve-train practical works (n.d.), appendix), short searches; the full ones are the command's defaults
 (figures in the README and benchmarks/bench_optimize.py)."""
-# seed 004 (the article's case) and seed 000 (the appendix engine)
+# UkrSURT Proceedings (2019) (the article's case) and Valve-train practical works (n.d.) (the appendix engine)
 
 import csv
 import json

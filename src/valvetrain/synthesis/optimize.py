@@ -885,9 +885,8 @@ def _comparison(start, end):
                ("spring reserve K_z", "", d.drive.spring.spring_reserve)]
         if d.profile.rho_min is not None:
             out.append(("rho_min", "mm", d.profile.rho_min))
-        fullness = d.records.get("power_polynomial", {}).get("tappet_fullness")
-        if fullness is not None:
-            out.insert(1, ("tappet fullness (UkrSURT Proceedings (2019))", "", fullness))
+        if d.records.power_polynomial is not None:
+            out.insert(1, ("tappet fullness (UkrSURT Proceedings (2019))", "", d.records.power_polynomial.tappet_fullness))
         return out
     return [(q, u, to_display(a, u), to_display(b, u)) for (q, u, a), (_, _, b) in zip(rows(start), rows(end),
                                                                                       strict=True)]
