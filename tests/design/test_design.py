@@ -9,11 +9,13 @@ from scipy.integrate import quad
 
 from valvetrain import flow
 from valvetrain.design import run
-from valvetrain.specification import SpecError, example_spec, example_text, load_spec, parse_spec
+from valvetrain.specification import SpecError, load_spec, parse_spec
+
+from appendix import appendix_text, appendix_spec
 
 
 def _variant(replacements):
-    text = example_text()
+    text = appendix_text()
     for old, new in replacements:
         assert old in text, old
         text = text.replace(old, new)
@@ -27,7 +29,7 @@ POLYDYNE = [('law = "kurz"                 # "kurz" or "polydyne"', 'law = "poly
 
 @pytest.fixture(scope="module")
 def example():
-    return run(example_spec()).to_dict()
+    return run(appendix_spec()).to_dict()
 
 
 def test_example_reproduces_the_appendix(example):
@@ -154,7 +156,7 @@ def test_roller_follower():
 
 
 def test_exhaust_valve_timing_and_stroke():
-    text = example_text().replace("[valves.intake", "[valves.exhaust").replace('kind = "intake"', 'kind = "exhaust"')
+    text = appendix_text().replace("[valves.intake", "[valves.exhaust").replace('kind = "intake"', 'kind = "exhaust"')
     res = run(parse_spec(text.replace("clearance_mm = 0.25", "clearance_mm = 0.40")))
     ex = res.to_dict()["valves"]["exhaust"]
     # exhaust: opens 26 before BDC (-180), closes 78 after TDC: nose at (78 - 180 - 26)/2 = -64 crank deg
@@ -204,7 +206,7 @@ def test_an_undercut_profile_is_not_exported_for_manufacture(tmp_path):
     from valvetrain.cli import main
 
     f = tmp_path / "e.toml"
-    f.write_text(example_text().replace("base_radius_mm = 20.0", "base_radius_mm = 8.0"))
+    f.write_text(appendix_text().replace("base_radius_mm = 20.0", "base_radius_mm = 8.0"))
     result = CliRunner().invoke(main, ["run", str(f), "--out", str(tmp_path / "d")])
     assert result.exit_code == 0, result.output
     assert "refused: valves.intake: the cam profile is undercut (rho_min = -" in result.output
@@ -300,7 +302,7 @@ def test_nested_pair():
 
 
 def test_parts_not_given_are_listed_not_checked():
-    text = example_text()
+    text = appendix_text()
     start = text.index("[valves.intake.parts]")
     res = run(parse_spec(text[:start] + text[text.index("[gas]"):]))
     st = res.to_dict()["valves"]["intake"]["strength"]
@@ -310,7 +312,7 @@ def test_parts_not_given_are_listed_not_checked():
 
 def test_specific_mass_estimate():
     """Valve-train practical works (n.d.), work 5: m_v = m' f_g with m' = 450 kg/m2 for a pushrod drive: 0.4786 kg for d_g = 36.8 mm."""
-    text = example_text()
+    text = appendix_text()
     start, end = text.index("[valves.intake.drive.masses]"), text.index("[valves.intake.spring]")
     text = text[:start] + text[end:]
     res = run(parse_spec(text.replace("# specific_mass_kg_m2 = 135", "specific_mass_kg_m2 = 450")))
@@ -322,7 +324,7 @@ def test_specific_mass_estimate():
 def test_the_default_specific_mass_is_that_of_the_example_s_parts(example):
     """Issue 10: without part masses the example's engine gets the reduced mass of its own parts (the default
     m' = 135 kg/m2 of a pushrod drive is derived from them, masses.py) within 1 %, not 3 times it."""
-    text = example_text()
+    text = appendix_text()
     start, end = text.index("[valves.intake.drive.masses]"), text.index("[valves.intake.spring]")
     estimated = run(parse_spec(text[:start] + text[end:])).to_dict()["valves"]["intake"]
     from_parts = example["valves"]["intake"]
@@ -335,7 +337,7 @@ def test_the_default_specific_mass_is_that_of_the_example_s_parts(example):
 def test_two_valves_per_cylinder():
     """count = 2: the charge passes two curtains, so V''' (Valve-train practical works (n.d.), eq. 1.4) and v_vp (eq. 4.3) are half those of one
     valve, and the throat/bore range of one inlet valve (work 1) is applied to the equivalent diameter sqrt(2) d."""
-    one = run(example_spec())
+    one = run(appendix_spec())
     two = run(_variant([("count = 1                    # same", "count = 2 # same")]))
     f1, f2 = one.to_dict()["valves"]["intake"]["flow"], two.to_dict()["valves"]["intake"]["flow"]
     assert f2["V3_m_s"] == pytest.approx(f1["V3_m_s"] / 2.0, rel=1e-12)
@@ -356,7 +358,7 @@ def _check(res, quantity):
 def test_flat_follower_edge_loading():
     """The contact of a flat tappet lies dh/dphi from its axis (Shang Hanji 1988, eq. 2.15); the appendix gives
     omega_T max / omega_K = 8.935 mm, and the Hertz band reaches a half-width further (< 0.2 mm at these loads)."""
-    res = run(example_spec())
+    res = run(appendix_spec())
     c = _check(res, "intake: flat follower contact reach (edge loading)")
     assert c.passed and c.severity == "failure" and c.high == pytest.approx(12.5e-3)   # tappet_diameter_mm / 2
     assert 8.935e-3 < c.value < 8.935e-3 + 0.2e-3 and "bucket tappet" in c.note
@@ -383,7 +385,7 @@ def test_roller_side_force_is_reported():
 def test_exhaust_gas_load_without_the_head_diameter():
     """(7.1): the gas load at exhaust opening is pi d_n^2 / 4 (p_b - p_r); without head_diameter_mm the throat
     (36.8 mm) stands in, a lower bound, and the record says so (before: silently 0 N)."""
-    text = example_text().replace("[valves.intake", "[valves.exhaust").replace('kind = "intake"', 'kind = "exhaust"')
+    text = appendix_text().replace("[valves.intake", "[valves.exhaust").replace('kind = "intake"', 'kind = "exhaust"')
     text = text.replace("clearance_mm = 0.25", "clearance_mm = 0.40")
     dp = (0.5 - 0.106) * 1e6                      # [gas] defaults: exhaust_opening and exhaust_back pressures
     for head, diameter in (("head_diameter_mm = 40.0", 40e-3), ("", 36.8e-3)):

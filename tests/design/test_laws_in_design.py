@@ -8,7 +8,9 @@ import pytest
 
 from valvetrain.cli import main
 from valvetrain.design import run
-from valvetrain.specification import example_text, parse_spec
+from valvetrain.specification import parse_spec
+
+from appendix import appendix_text
 
 KURZ_KEYS = '''law = "kurz"                 # "kurz" or "polydyne"'''
 KURZ_BLOCK = ["ramp_end_velocity_mm_per_deg = 0.02\n", "phi1_deg = 27.0", "phi2_deg = 6.0", "phi3_deg = 38.0",
@@ -33,7 +35,7 @@ CAMS = {
 
 def _text(cam_keys):
     """The example with its Kurz keys replaced by ``cam_keys``."""
-    text = example_text()
+    text = appendix_text()
     for line in KURZ_BLOCK:
         text = text.replace(line, "", 1)
     return text.replace(KURZ_KEYS, cam_keys)

@@ -12,7 +12,8 @@ import pytest
 from conftest import plain
 import valvetrain
 from valvetrain.design import run
-from valvetrain.specification import example_spec
+
+from appendix import appendix_spec
 
 DESIGN_MODULES = ["valvetrain.design", "valvetrain.design.valve", "valvetrain.design.drive", "valvetrain.design.crank",
                   "valvetrain.design.twostroke", "valvetrain.design.dynamics", "valvetrain.design.grinding",
@@ -44,7 +45,7 @@ def _public_functions():
 
 @pytest.fixture(scope="module")
 def results():
-    return run(example_spec())
+    return run(appendix_spec())
 
 
 def test_the_public_functions_and_the_stages_say_what_they_return():

@@ -10,6 +10,8 @@ from valvetrain import masses, spring_materials, springs
 from valvetrain.locale.wording import diagnosis_text
 from valvetrain.springs import diagnosis
 
+from appendix import appendix_text
+
 from conftest import SEED000_OMEGA_EXACT, seed000_law
 
 
@@ -451,9 +453,9 @@ def test_a_property_given_replaces_the_grade_s():
 
 def _with_spring(section):
     """The built-in example with ``section`` as its [valves.intake.spring] table."""
-    from valvetrain.specification import example_text, parse_spec
+    from valvetrain.specification import parse_spec
 
-    text = example_text()
+    text = appendix_text()
     start, end = text.index("[valves.intake.spring]"), text.index("[valves.intake.parts]")
     return parse_spec(text[:start] + "[valves.intake.spring]\n" + section + "\n\n" + text[end:])
 

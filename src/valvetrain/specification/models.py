@@ -120,6 +120,7 @@ class Spring(_Model):
     mean_stress_factor: Optional[_bounded(0.0, 1.0, low_open=False)] = None
     min_safety_factor: _bounded(0.1, 10.0, low_open=False) = 1.3
     min_resonance_ratio: _zero_or(1.0, 100.0, zero="the check switched off") = 10.0
+    min_margin_percent: _bounded(0.0, 50.0, "%", low_open=False) = 5.0
     coil_gap_factor: _bounded(0.01, 1.0, low_open=False) = 0.12
     mean_diameter_ratio: Pair(0.0, 5.0) = (0.7, 0.9)
     wire_diameter_range_mm: Pair(0.1, 30.0, "mm") = (2.0, 7.0)
