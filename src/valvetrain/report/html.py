@@ -16,14 +16,16 @@ from ..design.grinding import SOURCES as GRINDING_SOURCES
 from ..design.hydraulic_actuation import SOURCES as HYDRAULIC_SOURCES
 from ..design.lash_adjuster import SOURCES as ADJUSTER_SOURCES
 from ..design.lubrication import SOURCES as LUBRICATION_SOURCES
+from ..design.drive import spring_options
 from ..design.results import record, shown, shown_value
+from ..specification.si import si
 from ..tables import lift_table_columns
 from ..bibliography import WORKS, cited_in
 from ..units import to_display
 from .i18n import SYMBOLS, TEXT, verdict
 from .numbers import number, percent
 from .russian import russian_citations
-from .worked import flow_lines, spring_lines
+from .worked import crank_lines, flow_lines, law_lines, spring_lines, strength_lines, time_area_lines
 from .names import has_name, label, link_names, quantity_text, translate, unevaluated_text, unit_text, value_text
 from ..locale.wording import diagnosis_text, fit_reason
 
@@ -172,6 +174,12 @@ def _abridged_table(valve, lang):
                                                                         REPORT_STEP_DEG)
     keep[[0, -1]] = True
     return [[fmt(cols[c][i], lang) for c in TABLE_COLUMNS] for i in np.flatnonzero(keep)]
+
+
+def _material(valve, spring):
+    """The grade of a designed spring with the specification's overrides (G, rho, tau_-1, psi_tau) for its worked
+    lines."""
+    return next(m for m in spring_options(si(valve).spring).materials if m.grade == spring.material)
 
 
 def _geometry(v):
@@ -385,11 +393,17 @@ def render_report(results, plots, lang="en", folder=None):
     for name, v in results.valves.items():
         spring = v.drive.spring
         coefficients = shown_value(v.cam, "coefficients")
+        lift = lift_table_columns(v.table)
         valves.append({
             "name": name, "valve": v, "plots": plots.get(name, {}),
             "inputs": _flatten(spec["valves"][name]),
             "worked_flow": flow_lines(spec["valves"][name], v.flow, results.engine, lang),
-            "worked_spring": spring_lines(spring.design, lang),
+            "worked_time_area": time_area_lines(v.flow, v.cam, results.engine, spec["valves"][name]["count"], lift, lang),
+            "worked_law": law_lines(v.law, v.cam, lang),
+            "worked_spring": spring_lines(spring.design, _material(results.spec.valves[name], spring.design),
+                                          shown_value(v.cam, "cam_speed"), lang),
+            "worked_strength": strength_lines(spec["valves"][name]["parts"], v.summary["strength"], lift,
+                                              shown_value(v.cam, "follower"), lang),
             "flow": shown(v.flow, *FLOW_FIELDS),
             "time_area": shown(v.flow, *TIME_AREA_FIELDS),
             "cam": shown(v.cam, *CAM_FIELDS),
@@ -422,6 +436,7 @@ def render_report(results, plots, lang="en", folder=None):
         figures = results.crank.figures
         crank = {"inputs": _flatten(spec["crank"]), "plots": plots.get("crank", {}),
                  "summary": [(k, v) for k, v in _flatten(record(figures)) if k != "pressure_source"],
+                 "worked": crank_lines(figures, lang),
                  "pressure_source": figures.pressure_source}
     ports = None
     if results.two_stroke is not None:
