@@ -449,6 +449,10 @@ TEXT["en"].update({
     "p_gas": "gas Δp_g", "p_in": "inertia p_in", "p_total": "total p", "speed": "crank speed n, rpm",
     "cam_deg": "camshaft angle from the nose φ, cam deg", "crank_deg": "crank angle from the gas-exchange TDC, crank deg",
     "rho": "radius of curvature ρ, mm", "pressure_angle": "pressure angle, deg",
+    "ray_nose": "nose, {crank}° crank", "ray_opens": "opens, {crank}° crank", "ray_closes": "closes, {crank}° crank",
+    "ray_tdc": "gas-exchange TDC ({crank}° crank)", "rotation": "rotation",
+    "undercut_limit": "undercut: ρ ≤ 0", "rho_min_limit": "recommended minimum ρ = {rho} mm",
+    "rho_min_point": "smallest ρ = {rho} mm at {angle}°",
     "curtain": "curtain area f, mm²", "running_ta": "running time-area ∫f dt, mm²·s",
 })
 
@@ -502,6 +506,10 @@ TEXT["ru"].update({
     "cam_deg": "угол поворота распределительного вала от вершины φ, град ПРВ",
     "crank_deg": "угол поворота коленчатого вала от ВМТ газообмена, град ПКВ",
     "rho": "радиус кривизны ρ, мм", "pressure_angle": "угол давления, град",
+    "ray_nose": "вершина, {crank}° ПКВ", "ray_opens": "открытие, {crank}° ПКВ", "ray_closes": "закрытие, {crank}° ПКВ",
+    "ray_tdc": "ВМТ газообмена ({crank}° ПКВ)", "rotation": "вращение",
+    "undercut_limit": "подрез: ρ ≤ 0", "rho_min_limit": "рекомендуемый минимум ρ = {rho} мм",
+    "rho_min_point": "наименьший ρ = {rho} мм при {angle}°",
     "curtain": "проходное сечение f, мм²", "running_ta": "время-сечение нарастающим итогом ∫f dt, мм²·с",
     "s_opens": "клапан открывается, град ПКВ от ВМТ", "s_closes": "клапан закрывается, град ПКВ от ВМТ",
     "s_duration": "клапан открыт, град ПКВ", "duration": "продолжительность, град",
