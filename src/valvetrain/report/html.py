@@ -24,7 +24,7 @@ from ..bibliography import WORKS, cited_in
 from ..units import to_display
 from .i18n import SYMBOLS, TEXT, verdict
 from .numbers import number, percent
-from .russian import russian_citations
+from .russian import russian_citations, russian_typography
 from .worked import crank_lines, flow_lines, law_lines, spring_lines, strength_lines, time_area_lines
 from .names import has_name, label, link_names, quantity_text, translate, unevaluated_text, unit_text, value_text
 from ..locale.wording import diagnosis_text, fit_reason
@@ -461,7 +461,7 @@ def render_report(results, plots, lang="en", folder=None):
     cited = cited_in(unescape(template.render(sources=[], **context)))
     page = template.render(sources=[(WORKS[k].short, WORKS[k].reference()) for k in cited], **context)
     page = with_contents(page, TEXT[lang]["toc"])
-    return russian_citations(page) if lang == "ru" else page
+    return russian_typography(russian_citations(page)) if lang == "ru" else page
 
 
 def _figure(image, name, alt, t):

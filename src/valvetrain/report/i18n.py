@@ -192,7 +192,7 @@ TEXT = {
         "s_time_area": "время-сечение за такт, мм²·с", "s_fullness": "коэффициент полноты", "s_spring": "пружина",
         "s_binding": "определяющая проверка пружины (запас)", "s_failures": "не выполнены пределы",
         "s_warnings": "предупреждения",
-        "spring_text": "{count} x проволока {wire_mm:.3g} мм, D {mean_diameter_mm:.3g} мм, {active_coils:g} витков, {material}",
+        "spring_text": "{count} × проволока {wire_mm:.3g} мм, D {mean_diameter_mm:.3g} мм, {active_coils:g} витков, {material}",
         "failures_list": "Не выполненные пределы",
         "title": "Расчёт газораспределительного механизма",
         "generated": "Выполнено программой valvetrain",
@@ -515,7 +515,7 @@ TEXT["ru"].update({
     "s_duration": "клапан открыт, град ПКВ", "duration": "продолжительность, град",
     "cycle_deg": "угол поворота коленчатого вала в цикле, град", "engine_deg": "угол поворота (цикл цилиндра 1), град",
     "crank_from_tdc": "угол поворота коленчатого вала от ВМТ, град", "pressure_angle_deg": "угол давления, град",
-    "spring_text": "{count} x проволока {wire_mm:.3g} мм, D {mean_diameter_mm:.3g} мм, {active_coils:g} рабочих витков, {material}",
+    "spring_text": "{count} × проволока {wire_mm:.3g} мм, D {mean_diameter_mm:.3g} мм, {active_coils:g} рабочих витков, {material}",
     "jerk_sign_changes": "перемены знака рывка j",
 })
 
