@@ -15,7 +15,8 @@ import pytest
 
 import valvetrain
 from valvetrain import bibliography
-from valvetrain.bibliography import NO_AUTHORS, UNKNOWN, WORKS, cite, cited_in, corrections_text, entry
+from valvetrain.bibliography import (NO_AUTHORS, UNKNOWN, WORKS, cite, cited_in, corrections_notes, corrections_text,
+                                    entry)
 from valvetrain.cli import main
 from valvetrain.report.russian import REFERENCES, SHORT
 
@@ -169,3 +170,13 @@ def test_corrections_notes_ship_with_the_package():
             cited |= set(range(int(a), int(b or a) + 1))
     assert cited and cited <= set(numbers), cited - set(numbers)
     assert bibliography.corrections_text is corrections_text
+
+
+def test_the_russian_corrections_notes_are_the_same_items():
+    """Issue 24: the Russian report shows the corrections notes it cites in Russian: data/corrections.ru.md has every
+    item of the English file under its number, and each Russian item is Cyrillic text."""
+    english, russian = corrections_notes("en"), corrections_notes("ru")
+    assert list(russian) == list(english) == list(range(1, 52))
+    assert all(re.search("[а-яё]{4,}", title + text) for title, text in russian.values())
+    assert russian[20][0] == "Прогиб распределительного вала, формула (7.3)."
+    assert english[45] == ("Table 2.6, 60 deg, lambda = 0.26.", "Printed 0.978. Correct: 0.9816.")

@@ -20,7 +20,7 @@ from ..design.drive import spring_options
 from ..design.results import record, shown, shown_value
 from ..specification.si import si
 from ..tables import lift_table_columns
-from ..bibliography import WORKS, cited_in
+from ..bibliography import WORKS, cited_in, corrections_notes
 from ..units import to_display
 from .i18n import SYMBOLS, TEXT, verdict
 from .numbers import number, percent
@@ -458,10 +458,24 @@ def render_report(results, plots, lang="en", folder=None):
     )
     template = env.get_template("report.html")
     # the bibliography lists the works the report actually cites: found by their short form in a first rendering
-    cited = cited_in(unescape(template.render(sources=[], **context)))
-    page = template.render(sources=[(WORKS[k].short, WORKS[k].reference()) for k in cited], **context)
+    first = unescape(template.render(sources=[], corrections=[], **context))
+    page = template.render(sources=[(WORKS[k].short, WORKS[k].reference()) for k in cited_in(first)],
+                           corrections=cited_corrections(first, lang), **context)
     page = with_contents(page, TEXT[lang]["toc"])
     return russian_typography(russian_citations(page)) if lang == "ru" else page
+
+
+CORRECTIONS_CITED = re.compile(r"(?:corrections notes?|поправк[аи]) (\d+)(?:-(\d+))?")
+
+
+def cited_corrections(text, lang):
+    """The corrections notes ``text`` cites ("corrections note 20", "поправка 20", "corrections notes 42-45"), in
+    ``lang``: ``[(N, title, text)]`` by number."""
+    numbers = set()
+    for a, b in CORRECTIONS_CITED.findall(text):
+        numbers.update(range(int(a), int(b or a) + 1))
+    notes = corrections_notes(lang)
+    return [(n, *notes[n]) for n in sorted(numbers) if n in notes]
 
 
 def _figure(image, name, alt, t):

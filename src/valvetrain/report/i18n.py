@@ -55,6 +55,7 @@ TEXT = {
         "sources": "Sources",
         "corrections_note": "Misprints of these works and what valvetrain uses instead: the corrections notes shipped "
                             "with the package, cited as \"corrections note N\":",
+        "corrections_cited": "Corrections notes cited in this report", "corrections_file": "data/corrections.md",
         "cam_deg": "camshaft angle from the nose, deg",
         "crank_deg": "crank angle from gas-exchange TDC, deg",
         "lift": "lift, mm", "tappet_lift": "tappet lift", "valve_lift": "valve lift",
@@ -220,8 +221,9 @@ TEXT = {
         "plots": "Графики",
         "files": "Файлы",
         "sources": "Источники",
-        "corrections_note": "Опечатки этих работ и то, что valvetrain использует вместо них: заметки об исправлениях "
-                            "в составе пакета (на английском языке), ссылки вида «поправка N»:",
+        "corrections_note": "Опечатки этих работ и то, что valvetrain использует вместо них, — поправки в составе "
+                            "программы, ссылки вида «поправка N»:",
+        "corrections_cited": "Поправки, на которые ссылается отчёт", "corrections_file": "data/corrections.ru.md",
         "cam_deg": "угол поворота распредвала от вершины, °",
         "crank_deg": "угол поворота коленвала от ВМТ газообмена, °",
         "lift": "подъём, мм", "tappet_lift": "подъём толкателя", "valve_lift": "подъём клапана",
