@@ -1,0 +1,65 @@
+"""Issue 24: the report in a real browser (Debian's chromium driven by Playwright, as tests/web/test_web_browser.py):
+at 1000 and 1400 px wide and in print (A4, 186 mm between the margins of its @page rule = 703 CSS px) no table, figure
+or line of the English and Russian reports of the built-in example is wider than its container: nothing is cut off
+at the right edge or needs a horizontal scroll bar.  Before: the Russian summary table ran past the right edge at
+1000 px."""
+
+import os
+import shutil
+
+from click.testing import CliRunner
+import pytest
+
+from valvetrain.cli import main
+
+pytest.importorskip("playwright")
+
+BROWSER = shutil.which("chromium") or shutil.which("chromium-headless-shell")
+PRINT_WIDTH_PX = round((210 - 24) / 25.4 * 96)
+"""The width of an A4 page between the report's @page margins (12 mm each side) in CSS px (96 per inch)."""
+
+
+@pytest.fixture(scope="session")
+def browser_type_launch_args(browser_type_launch_args):
+    if BROWSER is None:
+        if os.environ.get("CI") == "true":
+            pytest.fail("no chromium on this machine: .ci/run installs the Debian package `chromium`")
+        pytest.skip("no chromium on this machine (apt-get install -y chromium)")
+    return {**browser_type_launch_args, "executable_path": BROWSER, "args": ["--no-sandbox"]}
+
+
+@pytest.fixture(scope="module")
+def reports(tmp_path_factory):
+    """The built-in example's report in English and in Russian, with the default figures."""
+    found = {}
+    for lang in ("en", "ru"):
+        out = tmp_path_factory.mktemp("layout") / lang
+        result = CliRunner().invoke(main, ["run", "--out", str(out), "--lang", lang])
+        assert result.exit_code == 0, result.output
+        found[lang] = (out / "report.html").as_uri()
+    return found
+
+
+OVERFLOWS = """() => {
+    const out = [];
+    const page = document.documentElement;
+    if (page.scrollWidth > page.clientWidth + 1) out.push(`page ${page.scrollWidth} > ${page.clientWidth}`);
+    for (const el of document.querySelectorAll("table, img, p, h1, h2, h3, h4, ol, ul")) {
+        const box = el.getBoundingClientRect(), parent = el.parentElement.getBoundingClientRect();
+        if (box.right > parent.right + 1 || el.scrollWidth > el.clientWidth + 1 && el.tagName !== "IMG") {
+            out.push(`${el.tagName}#${el.id} "${el.textContent.slice(0, 60)}": ${Math.round(box.right)} > `
+                     + `${Math.round(parent.right)}`);
+        }
+    }
+    return out;
+}"""
+
+
+@pytest.mark.parametrize("lang", ["en", "ru"])
+@pytest.mark.parametrize("media,width", [("screen", 1000), ("screen", 1400), ("print", PRINT_WIDTH_PX)])
+def test_nothing_is_wider_than_its_container(page, reports, lang, media, width):
+    page.emulate_media(media=media)
+    page.set_viewport_size({"width": width, "height": 1000})
+    page.goto(reports[lang])
+    found = page.evaluate(OVERFLOWS)
+    assert not found, "\n".join(found)
