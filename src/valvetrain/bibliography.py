@@ -298,11 +298,12 @@ def corrections_text(lang="en"):
 
 def corrections_notes(lang="en"):
     """The numbered items of :func:`corrections_text` in ``lang``: ``{N: (title, text)}``, the Markdown's line breaks
-    and emphasis removed (the title is the item's bold opening)."""
+    and emphasis removed (the title is the item's bold opening), a key in backquotes written in words."""
     notes = {}
     for m in re.finditer(r"^(\d+)\. (.*?)(?=^\d+\. |^#|^\S|\Z)", corrections_text(lang), flags=re.M | re.S):
         text = " ".join(m.group(2).split())
         bold = re.match(r"(.*?)\*\*(.+?)\*\*\s*(.*)", text)
         title, rest = (bold.group(1) + bold.group(2), bold.group(3)) if bold else ("", text)
-        notes[int(m.group(1))] = (title.strip(), re.sub(r"\*\*(.+?)\*\*", r"\1", rest).replace("`", ""))
+        rest = re.sub(r"`([^`]*)`", lambda code: code.group(1).replace("_", " "), rest)   # a key, in words
+        notes[int(m.group(1))] = (title.strip(), re.sub(r"\*\*(.+?)\*\*", r"\1", rest))
     return notes

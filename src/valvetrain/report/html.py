@@ -31,7 +31,7 @@ from ..locale.wording import diagnosis_text, fit_reason
 
 TABLE_COLUMNS = ["cam_deg", "crank_deg", "segment", "tappet_lift_mm", "tappet_velocity_m_s",
                  "tappet_acceleration_m_s2", "valve_lift_mm", "curtain_area_mm2", "time_area_mm2_s", "rho_mm"]
-REPORT_STEP_DEG = 5.0
+REPORT_STEP_DEG = 10.0
 """Step of the abridged lift table in the report [cam deg]."""
 
 CAM_FIELDS = ("main_half_angle", "ramp_angle", "ramp_height", "tappet_lift", "event", "nose", "cam_speed",
@@ -478,13 +478,18 @@ def cited_corrections(text, lang):
     return [(n, *notes[n]) for n in sorted(numbers) if n in notes]
 
 
+TALL_FIGURES = ("_kinematics.png",)
+"""Figures of several stacked axes: printed taller than the others (the print style's ``img.tall``)."""
+
+
 def _figure(image, name, alt, t):
     """The ``<img>`` of a figure of ``plots/`` (``image(name)`` its source), or where it was not drawn (``name``
     undefined: not asked for, :data:`valvetrain.report.plots.FIGURES_ON_REQUEST`) the command that draws it."""
     if not name:
         return Markup('<p class="src">{} <span class="name">valvetrain run --figures all</span></p>').format(
             t["figure_on_request"].format(alt))
-    return Markup('<img src="{}" alt="{}">').format(image(name), alt)
+    return Markup('<img src="{}" alt="{}"{}>').format(image(name), alt,
+                                                   Markup(' class="tall"') if name.endswith(TALL_FIGURES) else "")
 
 
 def _image(folder, name):
