@@ -8,7 +8,7 @@ printed, to 4 significant figures) to its printed result, and the lines give the
   kurz_coefficients, the manual's appendix);
 - pushrod 8/5 mm, 220 mm, E = 210000 MPa: J = pi (8^4 - 5^4)/64 = 170.41 mm4, P_E = pi^2 210000 170.41 / 220^2
   = 7297 N;
-- crank R = 38.571 mm, n = 7000 rpm: omega = 733.04 rad/s, m_j = 0.38 + 0.1375 = 0.5175 kg, m_R = 0.45 + 0.3625
+- crank R = 38.571 mm, n = 7000 rpm: omega = 733.04 rad/s, m_j = 0.38 + 0.1375 = 0.5175 kg, m_r = 0.45 + 0.3625
   = 0.8125 kg, K_R = -0.8125 x 0.038571 x 733.04^2 = -16840 N.
 """
 
@@ -95,4 +95,4 @@ def test_the_lines_give_the_hand_calculation(results):
     assert by_symbol["k_1"]["result"] == "0.005556 rad²" and by_symbol["c_11"]["result"] == "5.04 mm/rad"
     assert by_symbol["J"]["result"] == "170.4 mm⁴" and _value(by_symbol["P_E"]["result"]) == pytest.approx(7297, abs=1)
     assert by_symbol["ω"]["result"] == "733 rad/s" and by_symbol["m_j"]["result"] == "0.5175 kg"
-    assert by_symbol["m_R"]["result"] == "0.8125 kg" and by_symbol["K_R"]["result"] == "-16840 N"
+    assert by_symbol["m_r"]["result"] == "0.8125 kg" and by_symbol["K_R"]["result"] == "-16840 N"

@@ -196,7 +196,7 @@ def spring_lines(spring, material=None, cam_speed=None, lang="en") -> list[dict[
                                                     (material.density, "kg/m3")]), omega, "rad/s", lang),
     ]
     if cam_speed is not None:
-        lines.append(_line("ω_c1 / ω_" + ("к" if lang == "ru" else "cam"), "",
+        lines.append(_line("ω_c1 / ω_" + ("р" if lang == "ru" else "cam"), "",
                            ("{} / {}", [(omega, "rad/s"), (cam_speed, "rad/s")]), ratio, "", lang))
     return lines
 
@@ -253,8 +253,8 @@ def strength_lines(parts, record, lift_table, follower, lang="en") -> list[dict[
 def crank_lines(figures, lang="en") -> list[dict[str, Any]]:
     """The crank's reduced masses, its angular speed, the piston's largest acceleration and the inertia and
     centrifugal forces (Power units manual (n.d.), eqs. (1.10), (2.6)-(2.10)): m_j = m_p + m_rod,p,
-    m_R = m_c + m_rod,c, omega = pi n / 30, j_max = R omega^2 (1 + lambda) (a central mechanism, at the TDC),
-    P_j = -m_j j_max, K_R = -m_R R omega^2.
+    m_r = m_c + m_rod,c, omega = pi n / 30, j_max = R omega^2 (1 + lambda) (a central mechanism, at the TDC),
+    P_j = -m_j j_max, K_R = -m_r R omega^2.
 
     Parameters
     ----------
@@ -271,7 +271,7 @@ def crank_lines(figures, lang="en") -> list[dict[str, Any]]:
     lines = [
         _line("m_j", "m_п + m_ш.п" if lang == "ru" else "m_p + m_rod,p", ("{} + {}", [(mp, "kg"), (mrp, "kg")]), mj,
               "kg", lang),
-        _line("m_R", "m_к + m_ш.к" if lang == "ru" else "m_c + m_rod,c", ("{} + {}", [(mc, "kg"), (mrc, "kg")]), mr,
+        _line("m_r", "m_к + m_ш.к" if lang == "ru" else "m_c + m_rod,c", ("{} + {}", [(mc, "kg"), (mrc, "kg")]), mr,
               "kg", lang),
         _line("ω", "π n / 30", ("π × {} / 30", [(n, "rpm")]), omega, "rad/s", lang),
     ]
@@ -280,5 +280,5 @@ def crank_lines(figures, lang="en") -> list[dict[str, Any]]:
                            j, "m/s2", lang))
     return lines + [
         _line("P_j", "−m_j j_max", ("−{} × {}", [(mj, "kg"), (j, "m/s2")]), -mj * j, "N", lang),
-        _line("K_R", "−m_R R ω²", ("−{} × {} × ({})²", [(mr, "kg"), (r, "m"), (omega, "rad/s")]), k_r, "N", lang),
+        _line("K_R", "−m_r R ω²", ("−{} × {} × ({})²", [(mr, "kg"), (r, "m"), (omega, "rad/s")]), k_r, "N", lang),
     ]
