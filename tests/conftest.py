@@ -1,4 +1,8 @@
-"""Shared fixtures: the seed 000 appendix cam; a specification refused by the command line."""
+"""Shared fixtures: the seed 000 appendix cam; a specification refused by the command line; the system's chromium
+for the browser tests (pytest-playwright)."""
+
+import os
+import shutil
 
 from click.testing import CliRunner
 import numpy as np
@@ -38,3 +42,19 @@ def refused(tmp_path):
         assert not out.exists()
         return result.output
     return check
+
+
+BROWSER = shutil.which("chromium") or shutil.which("chromium-headless-shell")
+"""The browser of the browser tests: Debian's chromium (``executable_path``: a downloaded browser build cannot be had
+here)."""
+
+
+@pytest.fixture(scope="session")
+def browser_type_launch_args(browser_type_launch_args):
+    """pytest-playwright's launch arguments with the system's chromium; without one the browser tests are skipped,
+    except in CI (``CI=true``), where a missing browser fails them."""
+    if BROWSER is None:
+        if os.environ.get("CI") == "true":
+            pytest.fail("no chromium on this machine: .ci/run installs the Debian package `chromium`")
+        pytest.skip("no chromium on this machine (apt-get install -y chromium)")
+    return {**browser_type_launch_args, "executable_path": BROWSER, "args": ["--no-sandbox"]}

@@ -8,10 +8,8 @@ And the length of the printed note: one valve (the textbook's appendix example: 
 the crank chapter, with the default figures) prints on 10 A4 pages or fewer in either language.  Before: 16 pages.
 """
 
-import os
 from pathlib import Path
 import re
-import shutil
 
 from click.testing import CliRunner
 import pytest
@@ -20,18 +18,8 @@ from valvetrain.cli import main
 
 pytest.importorskip("playwright")
 
-BROWSER = shutil.which("chromium") or shutil.which("chromium-headless-shell")
 PRINT_WIDTH_PX = round((210 - 24) / 25.4 * 96)
 """The width of an A4 page between the report's @page margins (12 mm each side) in CSS px (96 per inch)."""
-
-
-@pytest.fixture(scope="session")
-def browser_type_launch_args(browser_type_launch_args):
-    if BROWSER is None:
-        if os.environ.get("CI") == "true":
-            pytest.fail("no chromium on this machine: .ci/run installs the Debian package `chromium`")
-        pytest.skip("no chromium on this machine (apt-get install -y chromium)")
-    return {**browser_type_launch_args, "executable_path": BROWSER, "args": ["--no-sandbox"]}
 
 
 ONE_VALVE = Path(__file__).parents[2] / "examples" / "seed000-appendix-kurz.toml"

@@ -535,8 +535,8 @@ def draw_timing(d, t) -> Figure:
         for angle in d["events_crank_deg"][name]:
             shown = (angle + 360.0) % 720.0 - 360.0
             ax.plot([shown], [0.0], marker="|", ms=10, color=colour)
-            ax.annotate(f"{number(angle, t['lang'])}°", (shown, 0.0), xytext=(0, 6), textcoords="offset points", rotation=90,
-                        fontsize=7, color=colour, ha="center", va="bottom")
+            ax.annotate(f"{number(angle, t['lang'])}°", (shown, 0.0), xytext=(0, 6), textcoords="offset points",
+                        rotation=90, fontsize=7, color=colour, ha="center", va="bottom")
     if d["overlap"] is not None:
         ax.fill_between(d["crank_deg"], 0.0, 1.0, where=d["overlap"], transform=ax.get_xaxis_transform(),
                         color="0.85", label=t["overlap"])

@@ -1,9 +1,10 @@
 """Worked substitution for the calculation note: each main formula, the numbers put into it with their units, and the
 result, so that a checker can follow a line with a pocket calculator.
 
-The numbers are the design's own (its inputs and its typed results, as results.json shows them); the result printed is the
-design's, and the substituted expression evaluates to it (``tests/report/test_worked.py`` evaluates every line).  Formulas:
-Valve-train practical works (n.d.), works 1, 2, 4, 6 and 7; Shang Hanji (1988); Power units manual (n.d.).
+The numbers are the design's own (its inputs and its typed results, as results.json shows them); the result printed
+is the design's, and the substituted expression evaluates to it (``tests/report/test_worked.py`` evaluates every
+line).  Formulas: Valve-train practical works (n.d.), works 1, 2, 4, 6 and 7; Shang Hanji (1988); Power units manual
+(n.d.).
 """
 
 from typing import Any
@@ -229,14 +230,15 @@ def strength_lines(parts, record, lift_table, follower, lang="en") -> list[dict[
         i = int(np.argmin(np.abs(np.asarray(per["speed_rpm"]) - record["cam_contact_stress_speed_rpm"])))
         if np.isclose(per["cam_force_max_cam_deg"][i], record["cam_contact_stress_cam_deg"], atol=1e-6):
             rho = float(np.interp(record["cam_contact_stress_cam_deg"], lift_table["cam_deg"], lift_table["rho_mm"]))
-            lines.append(_line("σ_к" if lang == "ru" else "σ_c", f"{number(strength.HERTZ_LINE, lang)} √(P E / (b ρ))", (
+            factor = strength.HERTZ_LINE
+            lines.append(_line("σ_к" if lang == "ru" else "σ_c", f"{number(factor, lang)} √(P E / (b ρ))", (
                 "{} × √({} × {} / ({} × {}))",
-                [(strength.HERTZ_LINE, ""), (per["cam_force_max_N"][i], "N"), (parts["contact_modulus_MPa"], "MPa"), (parts["cam_width_mm"], "mm"),
-                 (rho, "mm")]), contact["value"], "MPa", lang))
+                [(factor, ""), (per["cam_force_max_N"][i], "N"), (parts["contact_modulus_MPa"], "MPa"),
+                 (parts["cam_width_mm"], "mm"), (rho, "mm")]), contact["value"], "MPa", lang))
     buckling = checks.get("pushrod_buckling_margin")
     if buckling is not None:
-        big, bore, e, length = (parts[k] or 0.0 for k in ("pushrod_diameter_mm", "pushrod_bore_mm", "pushrod_modulus_MPa",
-                                                          "pushrod_length_mm"))
+        big, bore, e, length = (parts[k] or 0.0 for k in (
+            "pushrod_diameter_mm", "pushrod_bore_mm", "pushrod_modulus_MPa", "pushrod_length_mm"))
         second = float(strength.second_moment(big, bore))
         euler = float(strength.euler_load(e, second, length))
         lines += [
