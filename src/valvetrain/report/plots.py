@@ -198,12 +198,14 @@ def draw_contour(d, t) -> Figure:
     ax.plot(r * np.cos(phi), r * np.sin(phi), ls="--", color="C2", lw=0.8, label=t["heel_circle"])
     if d["pitch_mm"] is not None:
         ax.plot(*d["pitch_mm"], color="C1", lw=0.8, label=t["pitch_curve"])
-    reach = 1.12 * float(np.max(np.hypot(x, y)))
+    outline = (x, y) if d["pitch_mm"] is None else d["pitch_mm"]
+    reach = 1.12 * float(max(np.max(np.hypot(x, y)), np.max(np.hypot(*outline))))
     for key, cam_deg, crank_deg in d["rays"]:
         u = np.array([np.sin(np.radians(cam_deg)), np.cos(np.radians(cam_deg))])
         colour = "C3" if key == "tdc" else "C0"
-        ax.plot([0.0, reach * u[0]], [0.0, reach * u[1]], color=colour, lw=0.7, ls="-." if key == "tdc" else "-")
-        ax.annotate(t["ray_" + key].format(crank=number(crank_deg, t["lang"])), reach * u, xytext=(4 * u[0], 4 * u[1]),
+        end = (1.2 if key == "tdc" else 1.0) * reach * u        # the reference beyond the events: no label on another
+        ax.plot([0.0, end[0]], [0.0, end[1]], color=colour, lw=0.7, ls="-." if key == "tdc" else "-")
+        ax.annotate(t["ray_" + key].format(crank=number(crank_deg, t["lang"])), end, xytext=(4 * u[0], 4 * u[1]),
                     textcoords="offset points", fontsize=8, color=colour,
                     ha="left" if u[0] > 0.2 else "right" if u[0] < -0.2 else "center",
                     va="bottom" if u[1] > 0.2 else "top" if u[1] < -0.2 else "center")
@@ -217,8 +219,8 @@ def draw_contour(d, t) -> Figure:
     ax.axhline(0, color="0.6", lw=0.5)
     ax.axvline(0, color="0.6", lw=0.5)
     ax.set_aspect("equal")
-    ax.set_xlim(-1.6 * reach, 1.6 * reach)
-    ax.set_ylim(-1.2 * reach, 1.3 * reach)
+    ax.set_xlim(-1.7 * reach, 1.7 * reach)
+    ax.set_ylim(-1.25 * reach, 1.4 * reach)
     ax.set_xlabel(t["x_mm"])
     ax.set_ylabel(t["y_mm"])
     ax.legend(loc="lower right", fontsize=8)
