@@ -19,19 +19,21 @@ from ..design.hydraulic_actuation import SOURCES as HYDRAULIC_SOURCES
 from ..design.lash_adjuster import SOURCES as ADJUSTER_SOURCES
 from ..design.lubrication import SOURCES as LUBRICATION_SOURCES
 from ..design.results import NamedValues, record, shown, shown_value
+from ..design.drive import spring_options
+from ..specification.si import si
 from ..tables import lift_table_columns
-from ..bibliography import WORKS, cited_in
+from ..bibliography import WORKS, cited_in, corrections_notes
 from ..units import to_display
 from .i18n import SYMBOLS, TEXT, verdict
 from .numbers import number, percent
-from .russian import russian_citations
-from .worked import flow_lines, spring_lines
+from .russian import russian_citations, russian_typography
+from .worked import crank_lines, flow_lines, law_lines, spring_lines, strength_lines, time_area_lines
 from .names import has_name, label, link_names, quantity_text, translate, unevaluated_text, unit_text, value_text
 from ..locale.wording import diagnosis_text, fit_reason
 
 TABLE_COLUMNS = ["cam_deg", "crank_deg", "segment", "tappet_lift_mm", "tappet_velocity_m_s",
                  "tappet_acceleration_m_s2", "valve_lift_mm", "curtain_area_mm2", "time_area_mm2_s", "rho_mm"]
-REPORT_STEP_DEG = 5.0
+REPORT_STEP_DEG = 10.0
 """Step of the abridged lift table in the report [cam deg]."""
 
 CAM_FIELDS = ("main_half_angle", "ramp_angle", "ramp_height", "tappet_lift", "event", "nose", "cam_speed",
@@ -182,6 +184,12 @@ def _abridged_table(valve, lang):
                                                                         REPORT_STEP_DEG)
     keep[[0, -1]] = True
     return [[fmt(cols[c][i], lang) for c in TABLE_COLUMNS] for i in np.flatnonzero(keep)]
+
+
+def _material(valve, spring):
+    """The grade of a designed spring with the specification's overrides (G, rho, tau_-1, psi_tau) for its worked
+    lines."""
+    return next(m for m in spring_options(si(valve).spring).materials if m.grade == spring.material)
 
 
 def _geometry(v):
@@ -422,11 +430,18 @@ def render_report(results, plots, lang="en", folder=None):
     valves = []
     for name, v in results.valves.items():
         spring = v.drive.spring
+        lift = lift_table_columns(v.table)
         valves.append({
             "name": name, "valve": v, "plots": plots.get(name, {}),
             "inputs": _flatten(spec["valves"][name]),
             "worked_flow": flow_lines(spec["valves"][name], v.flow, results.engine, lang),
-            "worked_spring": spring_lines(spring.design, lang),
+            "worked_time_area": time_area_lines(v.flow, v.cam, results.engine, spec["valves"][name]["count"], lift,
+                                                lang),
+            "worked_law": law_lines(v.law, v.cam, lang),
+            "worked_spring": spring_lines(spring.design, _material(results.spec.valves[name], spring.design),
+                                          shown_value(v.cam, "cam_speed"), lang),
+            "worked_strength": strength_lines(spec["valves"][name]["parts"], v.summary["strength"], lift,
+                                              shown_value(v.cam, "follower"), lang),
             "flow": shown(v.flow, *FLOW_FIELDS),
             "time_area": shown(v.flow, *TIME_AREA_FIELDS),
             "cam": shown(v.cam, *CAM_FIELDS),
@@ -459,6 +474,7 @@ def render_report(results, plots, lang="en", folder=None):
         figures = results.crank.figures
         crank = {"inputs": _flatten(spec["crank"]), "plots": plots.get("crank", {}),
                  "summary": [(k, v) for k, v in _flatten(record(figures)) if k != "pressure_source"],
+                 "worked": crank_lines(figures, lang),
                  "pressure_source": figures.pressure_source}
     ports = None
     if results.two_stroke is not None:
@@ -480,10 +496,28 @@ def render_report(results, plots, lang="en", folder=None):
     )
     template = env.get_template("report.html")
     # the bibliography lists the works the report actually cites: found by their short form in a first rendering
-    cited = cited_in(unescape(template.render(sources=[], **context)))
-    page = template.render(sources=[(WORKS[k].short, WORKS[k].reference()) for k in cited], **context)
+    first = unescape(template.render(sources=[], corrections=[], **context))
+    page = template.render(sources=[(WORKS[k].short, WORKS[k].reference()) for k in cited_in(first)],
+                           corrections=cited_corrections(first, lang), **context)
     page = with_contents(page, TEXT[lang]["toc"])
-    return russian_citations(page) if lang == "ru" else page
+    return russian_typography(russian_citations(page)) if lang == "ru" else page
+
+
+CORRECTIONS_CITED = re.compile(r"(?:corrections notes?|поправк[аи]) (\d+)(?:-(\d+))?")
+
+
+def cited_corrections(text, lang):
+    """The corrections notes ``text`` cites ("corrections note 20", "поправка 20", "corrections notes 42-45"), in
+    ``lang``: ``[(N, title, text)]`` by number."""
+    numbers = set()
+    for a, b in CORRECTIONS_CITED.findall(text):
+        numbers.update(range(int(a), int(b or a) + 1))
+    notes = corrections_notes(lang)
+    return [(n, *notes[n]) for n in sorted(numbers) if n in notes]
+
+
+TALL_FIGURES = ("_kinematics.png",)
+"""Figures of several stacked axes: printed taller than the others (the print style's ``img.tall``)."""
 
 
 def _figure(image, name, alt, t):
@@ -492,7 +526,8 @@ def _figure(image, name, alt, t):
     if not name:
         return Markup('<p class="src">{} <span class="name">valvetrain run --figures all</span></p>').format(
             t["figure_on_request"].format(alt))
-    return Markup('<img src="{}" alt="{}">').format(image(name), alt)
+    return Markup('<img src="{}" alt="{}"{}>').format(image(name), alt,
+                                                   Markup(' class="tall"') if name.endswith(TALL_FIGURES) else "")
 
 
 def _image(folder, name):
