@@ -45,7 +45,7 @@ def test_example_runs_and_writes_every_artefact(example_run):
 
 
 def test_the_appendix_example_prints_its_warnings(tmp_path):
-    """The manual's own example (seed 000 appendix: V' = 18 x (80/36.8)^2 m/s, closing lag 78 crank deg, seat 45 deg)
+    """The manual's own example (appendix of Valve-train practical works (n.d.): V' = 18 x (80/36.8)^2 m/s, closing lag 78 crank deg, seat 45 deg)
     prints its warnings, each value in the unit of its range."""
     result = CliRunner().invoke(main, ["run", str(APPENDIX), "--out", str(tmp_path / "d"), "--figures", "none"])
     assert result.exit_code == 0, result.output
@@ -185,7 +185,7 @@ def test_array_keys_are_accepted(tmp_path, refused):
 
 
 def test_a_throat_no_spring_can_serve_is_refused(refused):
-    """D = 0.7...0.9 d_g must meet the wire range's 3 x 2.0 ... 12 x 7.0 = 6...84 mm (index 3...12, seed 000,
+    """D = 0.7...0.9 d_g must meet the wire range's 3 x 2.0 ... 12 x 7.0 = 6...84 mm (index 3...12, Valve-train practical works (n.d.),
     work 6): a 5 mm throat (D 3.5...4.5 mm) is refused at validation, not by a failure in the middle of the run."""
     assert "valves.intake.spring.mean_diameter_ratio = [0.7, 0.9] with throat_diameter_mm = 5 gives spring mean " \
            "diameters 3.5...4.5 mm; wire of 2...7 mm makes 6...84 mm" in \
@@ -193,9 +193,9 @@ def test_a_throat_no_spring_can_serve_is_refused(refused):
 
 
 def test_a_pair_without_room_for_the_inner_spring_exits_2(refused):
-    """Seed 000's polydyne example as a nested pair with an 11.04 mm throat and 5 mm lift: the outer springs (D
+    """The polydyne example of Valve-train practical works (n.d.) as a nested pair with an 11.04 mm throat and 5 mm lift: the outer springs (D
     = 0.7...0.9 d_g = 7.7...9.9 mm) leave an outside diameter of at most 9.9 - 2.0 - 2 x 1 = 5.9 mm for the
-    inner one, less than the smallest spring of the wire range (D + d = 4 x 2.0 = 8 mm at index 3, seed 000
+    inner one, less than the smallest spring of the wire range (D + d = 4 x 2.0 = 8 mm at index 3, Valve-train practical works (n.d.)
     work 6); the run stops with exit 2 and one message, writing nothing."""
     from pathlib import Path
 

@@ -4,9 +4,7 @@ The browser is the system's (``executable_path``): a downloaded browser build ca
 tests are skipped, except in CI (``CI=true``), where a missing browser fails them.
 """
 
-import os
 import re
-import shutil
 import subprocess
 import sys
 
@@ -16,17 +14,6 @@ pytest.importorskip("bokeh")
 pytest.importorskip("playwright")
 
 from appendix import PATH as APPENDIX  # noqa: E402
-
-BROWSER = shutil.which("chromium") or shutil.which("chromium-headless-shell")
-
-
-@pytest.fixture(scope="session")
-def browser_type_launch_args(browser_type_launch_args):
-    if BROWSER is None:
-        if os.environ.get("CI") == "true":
-            pytest.fail("no chromium on this machine: .ci/run installs the Debian package `chromium`")
-        pytest.skip("no chromium on this machine (apt-get install -y chromium)")
-    return {**browser_type_launch_args, "executable_path": BROWSER, "args": ["--no-sandbox"]}
 
 
 @pytest.fixture(scope="module")

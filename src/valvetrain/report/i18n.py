@@ -55,6 +55,7 @@ TEXT = {
         "sources": "Sources",
         "corrections_note": "Misprints of these works and what valvetrain uses instead: the corrections notes shipped "
                             "with the package, cited as \"corrections note N\":",
+        "corrections_cited": "Corrections notes cited in this report", "corrections_file": "data/corrections.md",
         "cam_deg": "camshaft angle from the nose, deg",
         "crank_deg": "crank angle from gas-exchange TDC, deg",
         "lift": "lift, mm", "tappet_lift": "tappet lift", "valve_lift": "valve lift",
@@ -192,7 +193,7 @@ TEXT = {
         "s_time_area": "время-сечение за такт, мм²·с", "s_fullness": "коэффициент полноты", "s_spring": "пружина",
         "s_binding": "определяющая проверка пружины (запас)", "s_failures": "не выполнены пределы",
         "s_warnings": "предупреждения",
-        "spring_text": "{count} x проволока {wire_mm:.3g} мм, D {mean_diameter_mm:.3g} мм, {active_coils:g} витков, {material}",
+        "spring_text": "{count} × проволока {wire_mm:.3g} мм, D {mean_diameter_mm:.3g} мм, {active_coils:g} витков, {material}",
         "failures_list": "Не выполненные пределы",
         "title": "Расчёт газораспределительного механизма",
         "generated": "Выполнено программой valvetrain",
@@ -220,8 +221,9 @@ TEXT = {
         "plots": "Графики",
         "files": "Файлы",
         "sources": "Источники",
-        "corrections_note": "Опечатки этих работ и то, что valvetrain использует вместо них: заметки об исправлениях "
-                            "в составе пакета (на английском языке), ссылки вида «поправка N»:",
+        "corrections_note": "Опечатки этих работ и то, что valvetrain использует вместо них, — поправки в составе "
+                            "программы, ссылки вида «поправка N»:",
+        "corrections_cited": "Поправки, на которые ссылается отчёт", "corrections_file": "data/corrections.ru.md",
         "cam_deg": "угол поворота распредвала от вершины, °",
         "crank_deg": "угол поворота коленвала от ВМТ газообмена, °",
         "lift": "подъём, мм", "tappet_lift": "подъём толкателя", "valve_lift": "подъём клапана",
@@ -449,6 +451,13 @@ TEXT["en"].update({
     "p_gas": "gas Δp_g", "p_in": "inertia p_in", "p_total": "total p", "speed": "crank speed n, rpm",
     "cam_deg": "camshaft angle from the nose φ, cam deg", "crank_deg": "crank angle from the gas-exchange TDC, crank deg",
     "rho": "radius of curvature ρ, mm", "pressure_angle": "pressure angle, deg",
+    "lift_heads": {"cam_deg": "φ, cam deg", "crank_deg": "crank deg", "segment": "segment", "tappet_lift_mm": "h_T, mm",
+                   "tappet_velocity_m_s": "v_T, m/s", "tappet_acceleration_m_s2": "a_T, m/s²", "valve_lift_mm": "h_v, mm",
+                   "curtain_area_mm2": "f, mm²", "time_area_mm2_s": "∫f dt, mm²·s", "rho_mm": "ρ, mm"},
+    "ray_nose": "nose, {crank}° crank", "ray_opens": "opens, {crank}° crank", "ray_closes": "closes, {crank}° crank",
+    "ray_tdc": "gas-exchange TDC", "rotation": "rotation",
+    "undercut_limit": "undercut: ρ ≤ 0", "rho_min_limit": "recommended minimum ρ = {rho} mm",
+    "rho_min_point": "smallest ρ = {rho} mm at {angle}°",
     "curtain": "curtain area f, mm²", "running_ta": "running time-area ∫f dt, mm²·s",
 })
 
@@ -502,12 +511,19 @@ TEXT["ru"].update({
     "cam_deg": "угол поворота распределительного вала от вершины φ, град ПРВ",
     "crank_deg": "угол поворота коленчатого вала от ВМТ газообмена, град ПКВ",
     "rho": "радиус кривизны ρ, мм", "pressure_angle": "угол давления, град",
+    "lift_heads": {"cam_deg": "φ, град ПРВ", "crank_deg": "град ПКВ", "segment": "участок", "tappet_lift_mm": "h_T, мм",
+                   "tappet_velocity_m_s": "v_T, м/с", "tappet_acceleration_m_s2": "a_T, м/с²", "valve_lift_mm": "h_v, мм",
+                   "curtain_area_mm2": "f, мм²", "time_area_mm2_s": "∫f dt, мм²·с", "rho_mm": "ρ, мм"},
+    "ray_nose": "вершина, {crank}° ПКВ", "ray_opens": "открытие, {crank}° ПКВ", "ray_closes": "закрытие, {crank}° ПКВ",
+    "ray_tdc": "ВМТ газообмена", "rotation": "вращение",
+    "undercut_limit": "подрез: ρ ≤ 0", "rho_min_limit": "рекомендуемый минимум ρ = {rho} мм",
+    "rho_min_point": "наименьший ρ = {rho} мм при {angle}°",
     "curtain": "проходное сечение f, мм²", "running_ta": "время-сечение нарастающим итогом ∫f dt, мм²·с",
     "s_opens": "клапан открывается, град ПКВ от ВМТ", "s_closes": "клапан закрывается, град ПКВ от ВМТ",
     "s_duration": "клапан открыт, град ПКВ", "duration": "продолжительность, град",
     "cycle_deg": "угол поворота коленчатого вала в цикле, град", "engine_deg": "угол поворота (цикл цилиндра 1), град",
     "crank_from_tdc": "угол поворота коленчатого вала от ВМТ, град", "pressure_angle_deg": "угол давления, град",
-    "spring_text": "{count} x проволока {wire_mm:.3g} мм, D {mean_diameter_mm:.3g} мм, {active_coils:g} рабочих витков, {material}",
+    "spring_text": "{count} × проволока {wire_mm:.3g} мм, D {mean_diameter_mm:.3g} мм, {active_coils:g} рабочих витков, {material}",
     "jerk_sign_changes": "перемены знака рывка j",
 })
 
