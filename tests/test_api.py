@@ -12,6 +12,8 @@ import pytest
 from valvetrain import api
 from valvetrain.specification import SpecError, example_text, parse_spec
 
+from appendix import appendix_text
+
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 
 
@@ -51,7 +53,7 @@ def test_dict_route_gives_the_numbers_of_valvetrain_run(tmp_path):
 
 
 def test_series_against_finite_differences_and_the_inputs():
-    document = tomllib.loads(example_text())
+    document = tomllib.loads(appendix_text())
     out = api.design(document)
     s = out["series"]["intake"]
     # the nose lifts the valve by max_lift_mm of the specification (10 mm)
