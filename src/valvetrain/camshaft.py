@@ -164,7 +164,7 @@ def shaft_compliance(x, lengths, diameters, bores, shear_modulus) -> np.ndarray:
 
     References
     ----------
-    Shigley's Mechanical Engineering Design, 9th ed. (2011), section 3-12 (angle of twist of a round bar).
+    Shigley's Mechanical Engineering Design, 9th ed. (2011), chapter 3 (the angle of twist of a round bar in torsion).
     """
     return piecewise_integral(x, lengths, 1.0 / (shear_modulus * polar_moment(diameters, bores)))
 

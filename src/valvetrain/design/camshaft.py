@@ -33,7 +33,7 @@ ORDERS = 60
 MODES = 3
 """Torsional natural frequencies reported (the lowest)."""
 
-WORKS = f"{cite('shigley2011', 'section 3-12, table A-9')}; {cite('denhartog1956')}; {cite('vt_works', 'eq. (7.3)')}"
+WORKS = f"{cite('shigley2011', 'chapter 3 (torsion), table A-9')}; {cite('denhartog1956')}; {cite('vt_works', 'eq. (7.3)')}"
 """The works of the chapter, for the report."""
 
 
@@ -212,7 +212,7 @@ def camshaft_checks(r, c, engine) -> list[Check]:
     over = to_display(engine.over_speed_ratio * engine.rated_speed, "rpm")
     return [
         check("camshaft.twist_timing_error", r.twist_max, high=c.max_twist, unit="cam deg", severity="warning",
-              source=f"{cite('shigley2011', 'section 3-12')}; camshaft.max_twist_cam_deg",
+              source=f"{cite('shigley2011', 'chapter 3 (torsion)')}; camshaft.max_twist_cam_deg",
               note=f"{to_display(r.twist_crank, 'crank deg'):.3g} crank deg; quasi-static, the drive end held"),
         check("camshaft.torsional_resonance", r.frequency_ratio, low=c.min_frequency_ratio, severity="warning",
               source=f"{cite('denhartog1956')}; camshaft.min_frequency_ratio",
