@@ -208,7 +208,7 @@ def _gas_pressure(c, strokes, phi, bore, radius, lam, k, timing=None):
     return pressure.on_grid(angle, p, phi, strokes), f"p-V diagram {table.source}, placed on the crank angle by {how}"
 
 
-def firing_angles(eng):
+def firing_angles(eng) -> tuple[np.ndarray, str]:
     """Firing angles of the cylinders after cylinder 1 [rad] (SI view of [engine]) and how they were found: given,
     from the crank throws and cylinder axes, or even firing in the firing order."""
     order = eng.firing_order or tuple(range(1, eng.cylinders + 1))
