@@ -94,7 +94,7 @@ def test_results_json_has_the_chapter_and_its_checks(pushrod):
 @pytest.mark.parametrize("extra, words", [
     ("valves = [\"exhaust\"]", "camshaft.valves = ['exhaust']: allowed a non-empty list of the valves ['intake']"),
     ("cylinders = [1, 5]", "camshaft.cylinders = [1, 5]: allowed distinct cylinders 1...4"),
-    ("section_diameters_mm = [25.0]", "camshaft.section_diameters_mm has 1 entries"),
+    ("section_diameters_mm = [25.0]", "camshaft: section_diameters_mm has 1 entries"),
 ])
 def test_bad_sections_are_refused_naming_the_key(extra, words):
     key = extra.split(" = ")[0]

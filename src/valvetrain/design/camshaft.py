@@ -101,8 +101,8 @@ class CamshaftResults:
     psi: np.ndarray = field(repr=False)          # camshaft angles over a revolution [rad]
     torque: np.ndarray = field(repr=False)       # total drive torque [N m]
     twist: np.ndarray = field(repr=False)        # (L, n) lag of each station [rad]
-    figures: CamshaftRecord = None
-    checks: tuple[Check, ...] = ()
+    figures: CamshaftRecord
+    checks: tuple[Check, ...]                    # the chapter's checks
 
     @cached_property
     def summary(self) -> dict[str, Any]:

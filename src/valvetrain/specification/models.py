@@ -490,30 +490,30 @@ class Camshaft(_Model):
         for key in ("section_diameters_mm", "section_bores_mm"):
             value = getattr(self, key)
             if value is not None and len(value) != n:
-                problems.append(f"camshaft.{key} has {len(value)} entries: one per section of section_lengths_mm "
+                problems.append(f"{key} has {len(value)} entries: one per section of section_lengths_mm "
                                 f"({n}) is needed")
         if self.section_bores_mm is not None and len(self.section_bores_mm) == n:
-            problems += [f"camshaft.section_bores_mm[{i}] = {b:g} must be smaller than section_diameters_mm[{i}] = "
+            problems += [f"section_bores_mm[{i}] = {b:g} must be smaller than section_diameters_mm[{i}] = "
                          f"{d:g}" for i, (b, d) in enumerate(zip(self.section_bores_mm, self.section_diameters_mm))
                          if b >= d]
         length = sum(self.section_lengths_mm)
         positions = self.cylinder_positions_mm
         if sorted(positions) != positions or len(set(positions)) != len(positions):
-            problems.append(f"camshaft.cylinder_positions_mm = {positions}: allowed increasing positions from the "
+            problems.append(f"cylinder_positions_mm = {positions}: allowed increasing positions from the "
                             "drive end")
         journals = self.journal_positions_mm
         if len(journals) < 2 or sorted(journals) != journals or len(set(journals)) != len(journals):
-            problems.append(f"camshaft.journal_positions_mm = {journals}: at least two journals, increasing from the "
+            problems.append(f"journal_positions_mm = {journals}: at least two journals, increasing from the "
                             "drive end")
         elif positions and (positions[0] <= journals[0] or positions[-1] >= journals[-1]):
-            problems.append(f"camshaft.cylinder_positions_mm = {positions}: every lobe lies between the first and the "
+            problems.append(f"cylinder_positions_mm = {positions}: every lobe lies between the first and the "
                             f"last journal ({journals[0]:g} ... {journals[-1]:g} mm)")
         if max(positions + journals, default=0.0) > length:
-            problems.append(f"camshaft: a lobe or journal lies beyond the shaft's length sum(section_lengths_mm) = "
+            problems.append(f"a lobe or journal lies beyond the shaft's length sum(section_lengths_mm) = "
                             f"{length:g} mm")
         if self.cylinders is not None and len(self.cylinders) != len(positions):
-            problems.append(f"camshaft.cylinder_positions_mm has {len(positions)} entries: one per cylinder of "
-                            f"camshaft.cylinders ({len(self.cylinders)}) is needed")
+            problems.append(f"cylinder_positions_mm has {len(positions)} entries: one per cylinder of "
+                            f"cylinders ({len(self.cylinders)}) is needed")
         if problems:
             raise ValueError("; ".join(problems))
         return self
