@@ -34,7 +34,7 @@ def test_example_runs_and_writes_every_artefact(example_run):
     for rel in ARTEFACTS:
         assert (out / rel).is_file() and (out / rel).stat().st_size > 0, rel
     assert "warning: intake: V' (throat velocity) = 85.0662 m/s, recommended 50...80 m/s" in result.output
-    # values are shown in the unit of their range (seed 000 appendix: closing lag 78 crank deg, seat 45 deg)
+    # values are shown in the unit of their range (appendix of Valve-train practical works (n.d.): closing lag 78 crank deg, seat 45 deg)
     assert "warning: intake: closing lag = 78 crank deg, recommended 40...60 crank deg" in result.output
     assert "info: intake: seat angle = 45 deg, usual 30 deg" in result.output   # an informative comparison
     data = json.loads((out / "results.json").read_text())
@@ -173,7 +173,7 @@ def test_array_keys_are_accepted(tmp_path, refused):
 
 
 def test_a_throat_no_spring_can_serve_is_refused(refused):
-    """D = 0.7...0.9 d_g must meet the wire range's 3 x 2.0 ... 12 x 7.0 = 6...84 mm (index 3...12, seed 000,
+    """D = 0.7...0.9 d_g must meet the wire range's 3 x 2.0 ... 12 x 7.0 = 6...84 mm (index 3...12, Valve-train practical works (n.d.),
     work 6): a 5 mm throat (D 3.5...4.5 mm) is refused at validation, not by a failure in the middle of the run."""
     assert "valves.intake.spring.mean_diameter_ratio = [0.7, 0.9] with throat_diameter_mm = 5 gives spring mean " \
            "diameters 3.5...4.5 mm; wire of 2...7 mm makes 6...84 mm" in \
@@ -181,9 +181,9 @@ def test_a_throat_no_spring_can_serve_is_refused(refused):
 
 
 def test_a_pair_without_room_for_the_inner_spring_exits_2(refused):
-    """Seed 000's polydyne example as a nested pair with an 11.04 mm throat and 5 mm lift: the outer springs (D
+    """The polydyne example of Valve-train practical works (n.d.) as a nested pair with an 11.04 mm throat and 5 mm lift: the outer springs (D
     = 0.7...0.9 d_g = 7.7...9.9 mm) leave an outside diameter of at most 9.9 - 2.0 - 2 x 1 = 5.9 mm for the
-    inner one, less than the smallest spring of the wire range (D + d = 4 x 2.0 = 8 mm at index 3, seed 000
+    inner one, less than the smallest spring of the wire range (D + d = 4 x 2.0 = 8 mm at index 3, Valve-train practical works (n.d.)
     work 6); the run stops with exit 2 and one message, writing nothing."""
     from pathlib import Path
 

@@ -44,7 +44,7 @@ def test_crank_tables(tmp_path):
     s_mm, p_t, t_n = (rows[:, header.index(c)] for c in ("s_mm", "p_T_MPa", "T_N"))
     # the piston travels the example's stroke, 77.142857 mm (central mechanism: s(180 deg) = 2R)
     assert s_mm.max() == pytest.approx(77.142857, rel=1e-6)
-    # T = p_T x piston area (seed 001), in N from MPa and mm2
+    # T = p_T x piston area (Power units manual (n.d.)), in N from MPa and mm2
     assert t_n == pytest.approx(p_t * np.pi * 80.0**2 / 4.0, rel=1e-9, abs=1e-6)
     torque_header = (out / "tables" / "engine_torque.csv").read_text().splitlines()[0].split(",")
     assert torque_header == ["crank_deg", "M_total_Nm", "M_cyl1_Nm", "M_cyl2_Nm", "M_cyl3_Nm", "M_cyl4_Nm"]

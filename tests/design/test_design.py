@@ -34,17 +34,17 @@ def test_example_reproduces_the_appendix(example):
     cam = example["valves"]["intake"]["cam"]
     fl = example["valves"]["intake"]["flow"]
     assert cam["law"] == "kurz"
-    # seed 000 appendix, printed coefficients (truncated, spec E10)
+    # appendix of Valve-train practical works (n.d.), printed coefficients (truncated, corrections note 10)
     for key, printed in {"c11": 5.040, "c12": 0.584, "c21": 8.336, "c22": 0.039, "c31": 1.020, "c32": -7.182,
                          "c33": 2.961}.items():
         assert np.trunc(cam["coefficients"][key] * 1000) / 1000 == pytest.approx(printed, abs=1e-12)
     assert cam["max_acceleration_m_s2"] == pytest.approx(3487.80, abs=0.01)   # printed 3487 (truncated)
     assert cam["min_acceleration_m_s2"] == pytest.approx(-1929.74, abs=0.01)  # printed -1930
     assert cam["max_velocity_m_s"] == pytest.approx(3.27480, abs=1e-5)        # spec 4.1
-    assert cam["rho_min_mm"] == pytest.approx(11.885, abs=5e-4)               # eq. (2.38), E2
-    assert cam["rho_max_mm"] == pytest.approx(46.578, abs=5e-4)               # true maximum, E16
+    assert cam["rho_min_mm"] == pytest.approx(11.885, abs=5e-4)               # eq. (2.38), Valve-train practical works (n.d.), corrections note 2
+    assert cam["rho_max_mm"] == pytest.approx(46.578, abs=5e-4)               # true maximum, Valve-train practical works (n.d.), corrections note 16
     assert cam["seed_formulas"]["rho_max_mm"] == pytest.approx(46.5666, abs=1e-4)  # (2.39), printed 46.566
-    assert cam["phi_p0_deg"] == pytest.approx(71.0)                           # E1
+    assert cam["phi_p0_deg"] == pytest.approx(71.0)                           # Valve-train practical works (n.d.), corrections note 1
     assert cam["ramp_deg"] == pytest.approx(19.63495, abs=1e-5)               # 19 deg 38 min
     assert cam["nose_crank_deg"] == pytest.approx(116.0)                      # Table P1
     assert fl["V1_m_s"] == pytest.approx(85.07, abs=0.01)                     # spec 4.4
@@ -56,8 +56,8 @@ def test_example_reproduces_the_appendix(example):
 
 
 def test_example_warnings_are_those_of_e8(example):
-    """E8: V' above 50-80, phi_zap 78 above 40-60, |j_min| above 1500, 45 deg inlet seat (usually 30);
-    and V'' = 97.4 above 80-95 (E7)."""
+    """Valve-train practical works (n.d.), corrections note 8: V' above 50-80, phi_zap 78 above 40-60, |j_min| above 1500, 45 deg inlet seat (usually 30);
+    and V'' = 97.4 above 80-95 (Valve-train practical works (n.d.), corrections note 7)."""
     names = {w["quantity"]: w["severity"] for w in example["warnings"]}
     assert names == {"intake: V' (throat velocity)": "warning", "intake: V'' (curtain velocity at full lift)": "warning",
                      "intake: min tappet acceleration": "warning", "intake: closing lag": "warning",
@@ -80,7 +80,7 @@ def test_the_example_spring_passes_every_check(example):
 
 
 def test_e27_the_manual_s_steel_cannot_reach_the_resonance_ratio_at_7000_rpm():
-    """E27 (omega_c1/omega_cam >= 10 is hard to meet at high speed): with the manual's 60S2A ([tau] = 500 MPa)
+    """Valve-train practical works (n.d.), corrections note 27 (omega_c1/omega_cam >= 10 is hard to meet at high speed): with the manual's 60S2A ([tau] = 500 MPa)
     the example's best spring fails the resonance ratio and tau_max; the run explains why in spring.diagnosis
     and in the notes of the failed checks, and names the VDSiCr wire and a lower speed as remedies."""
     res = run(_variant([('material = "VDSiCr"', 'material = "60S2A"')]))
@@ -97,7 +97,7 @@ def test_e27_the_manual_s_steel_cannot_reach_the_resonance_ratio_at_7000_rpm():
 
 
 def test_polydyne_on_the_appendix_inputs():
-    """Spec 4.5: p = 8, no ramp and no clearance (seed 000 work 3 lifts the valve from the base circle): rho_min
+    """Spec 4.5: p = 8, no ramp and no clearance (Valve-train practical works (n.d.), work 3 lifts the valve from the base circle): rho_min
     10.262 mm, time-area 2.7657 mm2 s, V''' 140.20 m/s."""
     res = run(_variant(POLYDYNE + [("clearance_mm = 0.25", "clearance_mm = 0.0")])).to_dict()["valves"]["intake"]
     assert res["cam"]["law"] == "polydyne"
@@ -160,7 +160,7 @@ def test_exhaust_valve_timing_and_stroke():
     # exhaust: opens 26 before BDC (-180), closes 78 after TDC: nose at (78 - 180 - 26)/2 = -64 crank deg
     assert ex["cam"]["nose_crank_deg"] == pytest.approx(-64.0)
     assert ex["flow"]["stroke_crank_deg"] == [-180.0, 0.0]
-    # V'' and V''' ranges are stated for inlet valves only (seed 000, work 1)
+    # V'' and V''' ranges are stated for inlet valves only (Valve-train practical works (n.d.), work 1)
     assert not any("V''" in w.quantity for w in res.warnings)
 
 
@@ -169,7 +169,7 @@ def test_piston_clearance():
                         ("# piston_gap_tdc_mm = 1.5", "piston_gap_tdc_mm = 1.5")]))
     pc = res.to_dict()["valves"]["intake"]["piston_clearance"]
     # independent computation: gap = y0 + s(phi) - y(phi) with the exact slider-crank displacement
-    # s = r (1 - cos phi) + L (1 - sqrt(1 - lambda^2 sin^2 phi)) (seed 001, eq. 1.2) on a fine grid
+    # s = r (1 - cos phi) + L (1 - sqrt(1 - lambda^2 sin^2 phi)) (Power units manual (n.d.), eq. 1.2) on a fine grid
     v = res.valves["intake"]
     theta = np.linspace(v.law.valve_opens, v.law.valve_closes, 200001)
     phi = v.nose_crank + 2.0 * theta
@@ -180,7 +180,7 @@ def test_piston_clearance():
 
 
 def test_a_valve_that_hits_the_piston_is_refused():
-    """A negative valve-piston gap (seed 002, eqs. 2.13-2.14) cannot be built: the design is refused."""
+    """A negative valve-piston gap (Shang Hanji (1988), eqs. 2.13-2.14) cannot be built: the design is refused."""
     with pytest.raises(SpecError, match="valves.intake: the valve hits the piston: the valve-piston gap falls to -"):
         run(_variant([("# rod_length_mm = 135.0", "rod_length_mm = 135.0"),
                       ("# piston_gap_tdc_mm = 1.5", "piston_gap_tdc_mm = 0.1"),
@@ -188,7 +188,7 @@ def test_a_valve_that_hits_the_piston_is_refused():
 
 
 def test_undercut_is_a_warning_not_an_error():
-    """E26: a small base circle gives rho_min <= 0; the design reports it."""
+    """Valve-train practical works (n.d.), corrections note 26: a small base circle gives rho_min <= 0; the design reports it."""
     res = run(_variant([("base_radius_mm = 20.0", "base_radius_mm = 8.0")]))
     cam = res.to_dict()["valves"]["intake"]["cam"]
     assert cam["undercut"] is True
@@ -309,7 +309,7 @@ def test_parts_not_given_are_listed_not_checked():
 
 
 def test_specific_mass_estimate():
-    """Seed 000 work 5: m_v = m' f_g with m' = 450 kg/m2 for a pushrod drive: 0.4786 kg for d_g = 36.8 mm."""
+    """Valve-train practical works (n.d.), work 5: m_v = m' f_g with m' = 450 kg/m2 for a pushrod drive: 0.4786 kg for d_g = 36.8 mm."""
     text = example_text()
     start, end = text.index("[valves.intake.drive.masses]"), text.index("[valves.intake.spring]")
     text = text[:start] + text[end:]
@@ -333,7 +333,7 @@ def test_the_default_specific_mass_is_that_of_the_example_s_parts(example):
 
 
 def test_two_valves_per_cylinder():
-    """count = 2: the charge passes two curtains, so V''' (seed 000 eq. 1.4) and v_vp (eq. 4.3) are half those of one
+    """count = 2: the charge passes two curtains, so V''' (Valve-train practical works (n.d.), eq. 1.4) and v_vp (eq. 4.3) are half those of one
     valve, and the throat/bore range of one inlet valve (work 1) is applied to the equivalent diameter sqrt(2) d."""
     one = run(example_spec())
     two = run(_variant([("count = 1                    # same", "count = 2 # same")]))

@@ -62,7 +62,7 @@ def test_section_messages(text, expected):
 
 
 def kinetostatic_cam_force(valve, cam_speed, theta):
-    """k (F0 + K y + M a_v) at the cam for the rigid train (seed 000 eqs. 5.1, 7.1), independent of the stage."""
+    """k (F0 + K y + M a_v) at the cam for the rigid train (Valve-train practical works (n.d.), eqs. 5.1, 7.1), independent of the stage."""
     law, k = valve.law, valve.rocker_ratio
     d = law.derivatives(theta)
     y = k * np.clip(d[0] - law.ramp_height, 0.0, None)
@@ -129,7 +129,7 @@ def test_given_stiffness_shared_by_the_links_without_geometry():
 
 
 def test_multi_with_massless_coils_has_the_reduced_mass():
-    """The multi-mass pushrod train with coils_per_spring = 0 (m_s/3 on the valve) has the nodes of seed 000 eq. 5.2:
+    """The multi-mass pushrod train with coils_per_spring = 0 (m_s/3 on the valve) has the nodes of Valve-train practical works (n.d.), eq. 5.2:
     their masses add up to the reduced mass the one-mass train uses; with coils the CSV has the surge columns."""
     d = run(spec("model = \"multi\"\ncoils_per_spring = 0\n" + FEW)).valves["intake"].dynamics
     assert sum(d.parameters.node_masses.values()) == pytest.approx(d.parameters.mass, rel=1e-9)

@@ -107,7 +107,7 @@ def test_report_for_an_arc_cam(tmp_path):
     assert json.loads((out / "results.json").read_text())["valves"]["intake"]["cam"]["law"] == "three_arc"
     html = (out / "report.html").read_text()
     assert "three_arc" in html
-    # the report names the three-arc cam's own source, not the polydyne formula of seed 000 work 3
+    # the report names the three-arc cam's own source, not the polydyne formula of Valve-train practical works (n.d.), work 3
     assert "three-arc convex cam for a flat follower (Kolchin and Demidov (1980); Valve-train dynamics article (n.d.))" in html
     assert "Valve-train practical works (n.d.), work 3" not in html
 

@@ -157,7 +157,7 @@ def test_every_layout_band_names_its_source_and_covers_the_layouts():
 
 
 def test_a_rocker_layout_checks_the_rocker_ratio_even_at_one():
-    """Before, a rocker ratio of 1 was never checked: a rocker or lever wants 1.4-1.75 (seed 000, work 2)."""
+    """Before, a rocker ratio of 1 was never checked: a rocker or lever wants 1.4-1.75 (Valve-train practical works (n.d.), work 2)."""
     checks = {c.quantity: c for c in design(valves__intake__rocker_ratio=1.0,
                                              valves__intake__drive__layout="rocker").checks}
     ratio = checks["intake: rocker ratio"]

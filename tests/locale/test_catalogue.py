@@ -48,6 +48,7 @@ def test_every_code_has_a_text_in_every_language_with_the_same_parameters():
         assert set(catalogue(lang)["checks"]) == set(record), lang
         assert set(catalogue(lang)["springs"]) == set(catalogue("en")["springs"]), lang
         assert set(catalogue(lang)["chapters"]) == set(catalogue("en")["chapters"]), lang
+        assert set(catalogue(lang)["designer"]) == set(catalogue("en")["designer"]), lang
         for code, template in catalogue(lang)["checks"].items():
             assert _fields(template) == _fields(record[code]), (lang, code)
 

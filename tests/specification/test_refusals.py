@@ -63,7 +63,7 @@ def test_timing_of_a_table_needs_both_angles_or_none(tmp_path, refused):
 
 
 @pytest.mark.parametrize("old,new,message", [
-    # seed 000 work 2 recommends 0.008-0.022 mm/deg: 2e-8 would make a ramp of millions of degrees
+    # Valve-train practical works (n.d.), work 2 recommends 0.008-0.022 mm/deg: 2e-8 would make a ramp of millions of degrees
     ("ramp_end_velocity_mm_per_deg = 0.02", "ramp_end_velocity_mm_per_deg = 2e-8",
      "valves.intake.cam.ramp_end_velocity_mm_per_deg = 2e-08: allowed [0.001, 1] mm/deg"),
     # a table step of 1e-9 deg would allocate terabytes
@@ -77,7 +77,7 @@ def test_values_below_physical_bounds(refused, old, new, message):
 
 
 def test_a_cam_event_over_a_revolution_is_refused(refused):
-    """Clearance 1.5 mm taken up at 0.002 mm/deg: the cosine ramp of seed 000 eq. (2.1), Phi0 = pi h0 / (2 w'),
+    """Clearance 1.5 mm taken up at 0.002 mm/deg: the cosine ramp of Valve-train practical works (n.d.), eq. (2.1), Phi0 = pi h0 / (2 w'),
     lasts 1178 cam deg on each flank (spec/valvetrain-works-1-8.md, work 2)."""
     out = refused(_with(("clearance_mm = 0.25", "clearance_mm = 1.5"),
                         ("ramp_end_velocity_mm_per_deg = 0.02", "ramp_end_velocity_mm_per_deg = 0.002")))
@@ -107,7 +107,7 @@ phi3_deg = 38.0
 
 def test_high_harmonic_and_junction_orders_fit(tmp_path):
     """N = 400, m = 10 made the KKT system singular (a lift of 1.5e10 mm); the null-space solution follows the
-    seed 000 appendix Kurz target (10 mm valve lift) within 2 um."""
+    Kurz target of the appendix of Valve-train practical works (n.d.) (10 mm valve lift) within 2 um."""
     from valvetrain.design import run
     from valvetrain.specification import parse_spec
 

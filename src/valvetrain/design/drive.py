@@ -698,11 +698,21 @@ def _roller_side_force(cam, follower, maps, drive):
         note=f"{_where(w)}, pressure angle {to_display(beta, 'deg'):.3g} deg; carried by {carrier}")
 
 
+def strength_limit(c) -> tuple[str, float]:
+    """The side and the bound of a strength check in its display unit: ``("<=", high)`` or ``(">=", low)``."""
+    return ("<=", to_display(c.high, c.unit)) if c.high is not None else (">=", to_display(c.low, c.unit))
+
+
+def strength_allowed(c) -> str:
+    """The allowed range of a strength check as results.json and the report write it (``"<= 1200"``)."""
+    side, limit = strength_limit(c)
+    return f"{side} {limit:g}"
+
+
 def _strength_record(c):
     """results.json record of a strength check: value and limit in its unit, pass, source (and a note)."""
-    limit = c.high if c.high is not None else c.low
-    out = {"value": c.shown_value, "allowed": f"{'<=' if c.high is not None else '>='} {to_display(limit, c.unit):g}",
-           "limit": to_display(limit, c.unit), "unit": c.unit, "pass": c.passed, "source": c.source}
+    out = {"value": c.shown_value, "allowed": strength_allowed(c), "limit": strength_limit(c)[1], "unit": c.unit,
+           "pass": c.passed, "source": c.source}
     if c.note:
         out["note"] = c.note
     return out

@@ -717,7 +717,7 @@ class Spec(_Model):
         try:
             document = set_keys(spec_document(self), values)
         except ValueError as exc:
-            raise SpecError([str(exc)]) from None
+            raise SpecError([exc.args[0]]) from None
         return validate(document)
 
     @model_validator(mode="after")
@@ -727,7 +727,7 @@ class Spec(_Model):
         return self
 
 
-def resolve_path(spec, name):
+def resolve_path(spec, name) -> Path:
     """A file named in the specification, relative to the specification file's folder."""
     path = Path(name)
     return path if path.is_absolute() or spec.source_dir is None else Path(spec.source_dir) / path
@@ -744,7 +744,7 @@ def _resolve_tables(spec):
     return spec.model_copy(update={"valves": valves})
 
 
-def validate(data):
+def validate(data) -> Spec:
     """Validate a parsed TOML document; return a :class:`Spec` or raise :class:`SpecError`.
 
     Field problems (missing keys, wrong types, values outside physical bounds) are
