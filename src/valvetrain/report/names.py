@@ -338,7 +338,7 @@ NAMES = {
 """Names of the keys without their unit suffix (or a whole key where the suffix is no unit): ``(en, ru)``."""
 
 VALUES = {
-    "pivot": "опора рычага",
+    "pivot": "опора рычага", "chain": "цепь", "belt": "зубчатый ремень", "gears": "шестерни",
     "intake": "впускной", "exhaust": "выпускной", "inlet": "впускное", "transfer": "продувочное",
     "flat": "плоский", "roller": "роликовый", "direct": "непосредственный", "rocker": "с коромыслом",
     "pushrod": "со штангой и коромыслом", "inline": "рядный", "v": "V-образный", "si": "с искровым зажиганием",
@@ -549,6 +549,28 @@ NAMES.update({
     "lash_adjuster.supply_pressure": ("oil supply pressure", "давление подачи масла"),
     "lash_adjuster.plunger_spring": ("plunger spring force", "сила пружины плунжера"),
     "lash_adjuster.check_valve_diameter": ("check valve bore", "диаметр седла обратного клапана"),
+})
+
+NAMES.update({
+    "camshaft.cylinders": ("cylinders of the camshaft", "цилиндры распределительного вала"),
+    "camshaft.cylinder_positions": ("cylinder positions from the drive end", "положения цилиндров от приводного конца"),
+    "camshaft.section_lengths": ("shaft section lengths", "длины участков вала"),
+    "camshaft.section_diameters": ("shaft section diameters", "диаметры участков вала"),
+    "camshaft.section_bores": ("shaft section bores", "диаметры отверстий участков вала"),
+    "camshaft.journal_positions": ("journal positions from the drive end", "положения опорных шеек от приводного конца"),
+    "camshaft.shear_modulus": ("shear modulus G", "модуль сдвига G"),
+    "camshaft.modulus": ("Young's modulus E", "модуль упругости E"),
+    "camshaft.density": ("density of the shaft", "плотность материала вала"),
+    "camshaft.lobe_inertia": ("polar inertia of one lobe", "момент инерции одного кулачка"),
+    "camshaft.max_twist": ("largest twist allowed", "наибольшая допустимая закрутка"),
+    "camshaft.max_deflection": ("largest deflection allowed", "наибольший допустимый прогиб"),
+    "camshaft.min_frequency_ratio": ("smallest frequency ratio allowed", "наименьшее допустимое отношение частот"),
+    "camshaft.significant_order_share": ("share of the largest order that is significant",
+                                         "доля наибольшей гармоники, с которой гармоника значима"),
+    "camshaft.drive": ("timing drive", "привод распределительного вала"),
+    "camshaft.drive_pitch_radius": ("pitch radius of the sprocket, pulley or gear",
+                                    "радиус начальной окружности звёздочки, шкива или шестерни"),
+    "camshaft.drive_allowable_force": ("allowable force of the timing drive", "допустимая сила привода"),
 })
 
 NAMES.update({
