@@ -467,6 +467,18 @@ def event_load_maps(valve, engine, cam, drive, dynamics=None) -> tuple[np.ndarra
     return theta, maps, span
 
 
+def contact_loads(cam, maps) -> list[LoadMap]:
+    """The load maps as the force between cam and follower: each map's force (along the law's lift) times the
+    follower's :meth:`~valvetrain.followers.Follower.force_ratio` at its angles (1 for a translating follower; a
+    finger's cam carries G / (L_r cos beta) of the force at the valve, Norton (2009))."""
+    follower = cam.follower_model
+    out = []
+    for m in maps:
+        h, dh = cam.law.derivatives(m.theta)[:2]
+        out.append(replace(m, force=m.force * follower.force_ratio(cam.heel_radius, h, dh)))
+    return out
+
+
 def _worst(maps, values):
     """The largest of ``values`` (one array (S, n) per load map) over every map: a :class:`Worst`."""
     best = None
@@ -517,7 +529,7 @@ def strength_stage(valve, gas, engine, cam, drive, dynamics=None) -> tuple[Stren
         found.append(gas_check)
         for m in maps:
             m.force[:, int(np.argmin(np.abs(m.theta - law.valve_opens)))] += cam.rocker_ratio * p_open
-    result, checks = _strength(valve, cam, theta, maps, p_open)
+    result, checks = _strength(valve, cam, theta, contact_loads(cam, maps), p_open)
     result = replace(result, speed_range=(float(low), float(high)), lowest_speed_source=source,
                      rated_speed=engine.rated_speed)
     return result, list(result.checks) + found + checks

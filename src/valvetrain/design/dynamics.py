@@ -23,6 +23,7 @@ from ..dynamics.models import (CoilSpring, MultiMassTrain, OneMassTrain, camshaf
 from ..dynamics.perturbation import perturbation_parameter
 from ..dynamics.resonance import resonance
 from ..dynamics.sweep import SpeedResult, SweepResult, sweep, sweep_size
+from ..followers import follower_of
 from ..layouts import chain, layout
 from ..specification import SpecError
 from ..strength import cam_force
@@ -321,11 +322,18 @@ def adjuster_reference_force(valve, law, drive, cam_speed: float, ratio: float) 
     return float(force.max()) / k * ratio
 
 
+def adjuster_ratio(valve, law) -> float:
+    """The lash adjuster's motion ratio (:func:`valvetrain.lash_adjuster.motion_ratio`) with the lever ratio
+    i = rocker_ratio x the follower's own on the heel circle (a finger's G(psi_0) / L_r from its geometry)."""
+    i = valve.rocker_ratio * follower_of(valve.cam).rest_ratio(valve.cam.base_radius - law.ramp_height)
+    return hla.motion_ratio(valve.lash_adjuster.location, i)
+
+
 def adjuster_link(valve, law, drive, cam_speed: float, at: str) -> tuple[float, str]:
     """The lash adjuster's oil column reduced to the valve [N/m] (in series with the cam contact) and the note that
     says so: its secant stiffness under :func:`adjuster_reference_force` over the square of the motion ratio."""
     la = valve.lash_adjuster
-    ratio = hla.motion_ratio(la.location, valve.rocker_ratio)
+    ratio = adjuster_ratio(valve, law)
     if ratio <= 0.0:
         raise SpecError([f"{at}.lash_adjuster.location = \"pivot\" needs rocker_ratio > 1 (an end-pivot finger); "
                          f"rocker_ratio = {valve.rocker_ratio:g}"])

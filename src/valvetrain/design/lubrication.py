@@ -12,7 +12,7 @@ from ..checks import Check, check
 from ..specification.messages import SpecError
 from ..strength import hertz_half_width
 from ..units import to_display
-from .drive import event_load_maps
+from .drive import contact_loads, event_load_maps
 from .results import quantity
 
 STEEL_EFFUSIVITY = float(np.sqrt(46.6 * 7850.0 * 460.0))
@@ -179,7 +179,7 @@ def lubrication_stage(lub, valve, engine, cam, drive, dynamics=None,
     at = f"valves.{name}"
     if valve.parts.cam_width is None:
         raise SpecError([f"{at}.lubrication needs {at}.parts.cam_width_mm (the load per unit width of the contact)"])
-    maps = event_load_maps(valve, engine, cam, drive, dynamics)[1]
+    maps = contact_loads(cam, event_load_maps(valve, engine, cam, drive, dynamics)[1])
     to_cam = cam.cam_speed / engine.rated_speed
     rows, worst = [], None
     for m in maps:

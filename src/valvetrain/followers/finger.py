@@ -54,7 +54,12 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..numerics import bracketed_roots
+from .base import register
 from .roller import RollerFollower
+
+KEYS = ("finger_pivot_x_mm", "finger_pivot_y_mm", "finger_roller_arm_mm", "finger_pad_arm_mm", "finger_pad_radius_mm")
+"""The cam section's keys a finger needs beside ``roller_radius_mm`` (``finger_pad_drop_mm``,
+``finger_valve_angle_deg`` and ``finger_tip_offset_mm`` default to 0)."""
 
 
 def _e(psi):
@@ -79,6 +84,7 @@ def _cross(a, b):
     return a[0] * b[1] - a[1] * b[0]
 
 
+@register
 @dataclass(frozen=True)
 class PivotedFollower(RollerFollower):
     """An end-pivot finger or centre-pivot rocker on the cam through a roller (or curved pad) of radius ``radius``.
@@ -111,7 +117,32 @@ class PivotedFollower(RollerFollower):
     valve_angle: float = 0.0
     tip_offset: float = 0.0
     name = "finger"
+    law_at_valve = True
     undercut_source = "Shang Hanji (1988), eq. (2.7); Norton (2009)"
+
+    @classmethod
+    def from_cam(cls, cam):
+        """The finger of the cam's SI view (``roller_radius`` and the ``finger_*`` keys in SI)."""
+        return cls(cam.roller_radius, cam.finger_pivot_x, cam.finger_pivot_y, cam.finger_roller_arm,
+                   cam.finger_pad_arm, cam.finger_pad_drop, cam.finger_pad_radius, cam.finger_valve_angle,
+                   cam.finger_tip_offset)
+
+    @classmethod
+    def missing_key(cls, cam):
+        """The first of ``roller_radius_mm`` and :data:`KEYS` the cam section does not give."""
+        missing = [k for k in ("roller_radius_mm",) + KEYS if getattr(cam, k) is None]
+        if missing:
+            return (f"{missing[0]} is required when follower = \"finger\" (the finger's geometry: "
+                    f"{', '.join(('roller_radius_mm',) + KEYS)})")
+        return None
+
+    def rest_ratio(self, heel):
+        """The lever ratio i_0 = G(psi_0) / L_r with the roller on the heel circle of radius ``heel`` [m]."""
+        return float(self.lever_ratio(np.array(self.base_angle(heel))))
+
+    def force_ratio(self, heel, h, dh):
+        """N / F = G / (L_r cos beta): the cam's normal force per unit force at the valve (:meth:`contact_force`)."""
+        return self.contact_force(1.0, heel, h, dh)
 
     @property
     def _pivot(self):
@@ -181,6 +212,10 @@ class PivotedFollower(RollerFollower):
         d1 = dh / arm
         d2 = (d2h + lb * np.sin(psi + self.valve_angle + beta) * d1 ** 2) / arm
         return psi, d1, d2
+
+    def travel_acceleration(self, heel, h, dh, d2h):
+        """L_r psi'' [m/rad^2]: the roller centre's acceleration along its arc per camshaft angle squared."""
+        return self.roller_arm * self.angle_derivatives(heel, h, dh, d2h)[2]
 
     def centre(self, psi):
         """The roller centre C(psi) in the fixed frame (2, n) [m]."""

@@ -74,6 +74,14 @@ class _CamBase(_Model):
     base_radius_mm: Length(2.0, 500.0, low_open=False)
     follower: Literal[tuple(FOLLOWERS)] = "flat"
     roller_radius_mm: Optional[Length(1.0, 200.0, low_open=False)] = None
+    finger_pivot_x_mm: Optional[Length(-500.0, 500.0, low_open=False)] = None
+    finger_pivot_y_mm: Optional[Length(-500.0, 500.0, low_open=False)] = None
+    finger_roller_arm_mm: Optional[Length(2.0, 500.0, low_open=False)] = None
+    finger_pad_arm_mm: Optional[Length(-500.0, 500.0, low_open=False)] = None
+    finger_pad_drop_mm: Length(-200.0, 200.0, low_open=False) = 0.0
+    finger_pad_radius_mm: Optional[Length(1.0, 1000.0, low_open=False)] = None
+    finger_valve_angle_deg: _bounded(-180.0, 180.0, "deg", low_open=False) = 0.0
+    finger_tip_offset_mm: Length(-50.0, 50.0, low_open=False) = 0.0
 
     @model_validator(mode="after")
     def _follower_keys(self):

@@ -9,6 +9,7 @@ are the dotted keys that :meth:`Spec.replace` and ``study --grid`` change.
 
 import copy
 
+from ..followers import REGISTRY as FOLLOWERS
 from ..layouts import LAYOUTS
 from ..springs import feasible_mean_diameters
 from ..units import MM
@@ -49,6 +50,13 @@ def _valve_problems(name, v, engine):
                    f"lift max_lift_mm = {v.max_lift_mm:g} (it is compressed by it, Valve-train practical works (n.d.), eq. 6.5)")
     if v.drive.layout is not None and not LAYOUTS[v.drive.layout].rocker and v.rocker_ratio != 1.0:
         out.append(f"{at}.drive.layout = \"{v.drive.layout}\" needs rocker_ratio = 1 (got {v.rocker_ratio:g})")
+    if FOLLOWERS[v.cam.follower].law_at_valve:
+        if v.rocker_ratio != 1.0:
+            out.append(f"{at}.rocker_ratio = {v.rocker_ratio:g}: allowed 1 with cam.follower = \"{v.cam.follower}\" "
+                       "(the law is the valve's; the finger's ratio follows from its geometry)")
+        if v.drive.layout != "rocker":
+            out.append(f"{at}.drive.layout = {shown(v.drive.layout)}: allowed \"rocker\" with cam.follower = "
+                       f"\"{v.cam.follower}\" (the finger's inertia about its pivot, drive.valve_arm_mm)")
     if v.piston_gap_tdc_mm is not None and engine.rod_length_mm is None:
         out.append(f"{at}.piston_gap_tdc_mm needs engine.rod_length_mm for the piston kinematics")
     if not {"opens_deg", "closes_deg"} & set(missing):
