@@ -59,7 +59,7 @@ from .roller import RollerFollower
 
 KEYS = ("finger_pivot_x_mm", "finger_pivot_y_mm", "finger_roller_arm_mm", "finger_pad_arm_mm", "finger_pad_radius_mm")
 """The cam section's keys a finger needs beside ``roller_radius_mm`` (``finger_pad_drop_mm``,
-``finger_valve_angle_deg`` and ``finger_tip_offset_mm`` default to 0)."""
+``finger_valve_angle_deg`` and ``finger_tip_offset_mm`` are 0 where not given)."""
 
 
 def _e(psi):
@@ -124,8 +124,8 @@ class PivotedFollower(RollerFollower):
     def from_cam(cls, cam):
         """The finger of the cam's SI view (``roller_radius`` and the ``finger_*`` keys in SI)."""
         return cls(cam.roller_radius, cam.finger_pivot_x, cam.finger_pivot_y, cam.finger_roller_arm,
-                   cam.finger_pad_arm, cam.finger_pad_drop, cam.finger_pad_radius, cam.finger_valve_angle,
-                   cam.finger_tip_offset)
+                   cam.finger_pad_arm, cam.finger_pad_drop or 0.0, cam.finger_pad_radius, cam.finger_valve_angle or 0.0,
+                   cam.finger_tip_offset or 0.0)
 
     @classmethod
     def missing_key(cls, cam):

@@ -78,10 +78,10 @@ class _CamBase(_Model):
     finger_pivot_y_mm: Optional[Length(-500.0, 500.0, low_open=False)] = None
     finger_roller_arm_mm: Optional[Length(2.0, 500.0, low_open=False)] = None
     finger_pad_arm_mm: Optional[Length(-500.0, 500.0, low_open=False)] = None
-    finger_pad_drop_mm: Length(-200.0, 200.0, low_open=False) = 0.0
+    finger_pad_drop_mm: Optional[Length(-200.0, 200.0, low_open=False)] = None
     finger_pad_radius_mm: Optional[Length(1.0, 1000.0, low_open=False)] = None
-    finger_valve_angle_deg: _bounded(-180.0, 180.0, "deg", low_open=False) = 0.0
-    finger_tip_offset_mm: Length(-50.0, 50.0, low_open=False) = 0.0
+    finger_valve_angle_deg: Optional[_bounded(-180.0, 180.0, "deg", low_open=False)] = None
+    finger_tip_offset_mm: Optional[Length(-50.0, 50.0, low_open=False)] = None
 
     @model_validator(mode="after")
     def _follower_keys(self):
@@ -634,9 +634,10 @@ class TangentCam(_CamBase):
 
     @model_validator(mode="after")
     def _roller(self):
-        if not FOLLOWERS[self.follower].rolling:
+        follower = FOLLOWERS[self.follower]
+        if not follower.rolling or follower.law_at_valve:
             raise ValueError("law = \"tangent\" needs follower = \"roller\" (a flat follower on straight flanks is "
-                             "degenerate) and roller_radius_mm")
+                             "degenerate; a finger's law is the valve's, not the cam's) and roller_radius_mm")
         return self
 
     def law_of(self, cam, lift, half, r0):
