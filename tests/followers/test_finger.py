@@ -186,3 +186,32 @@ def test_the_contact_force_from_the_virtual_work():
 def test_an_arm_that_cannot_reach_the_heel_circle_is_refused():
     with pytest.raises(ValueError, match="cannot reach"):
         PivotedFollower(radius=ROLLER, pivot_x=-0.1, pivot_y=0.1, roller_arm=0.02, pad_arm=0.036).base_angle(HEEL)
+
+
+def cross(u, w):
+    """The z component of u x w, written out."""
+    return u[0] * w[1] - u[1] * w[0]
+
+
+def test_loads_hold_the_finger_in_equilibrium():
+    """Under F = 1000 N at the valve: the moments about the pivot of the cam's force N n at the roller centre and the
+    valve tip's -F a at the pad's contact cancel (the hand-built linkage: B = P + R(psi) (L_p, d_p), X = B + rho_p a,
+    n the pitch curve's normal turned into the fixed frame); the pivot's load is |F a - N n|, and the moment of the
+    pivot's reaction about the roller centre is the bending moment there."""
+    theta = np.array([-0.8, -0.4, 0.0, 0.35, 0.7])
+    h, dh, d2h = valve_law(theta)
+    n_cam = FINGER.pitch_curve(theta, HEEL, h, dh, d2h)[3]
+    normal, pivot, moment = FINGER.loads(1000.0, HEEL, h, dh)
+    a = np.array([np.sin(FINGER.valve_angle), np.cos(FINGER.valve_angle)])
+    p = np.array([FINGER.pivot_x, FINGER.pivot_y])
+    for k, t in enumerate(theta):
+        psi = FINGER.angle_of(h[k], HEEL)
+        c = p + turn(np.array([FINGER.roller_arm, 0.0]), psi)
+        x = p + turn(np.array([FINGER.pad_arm, FINGER.pad_drop]), psi) + FINGER.pad_radius * a
+        n = turn(n_cam[:, k], t)
+        cam_force, tip_force = normal[k] * n, -1000.0 * a
+        torque = cross(c - p, cam_force) + cross(x - p, tip_force)
+        assert abs(torque) < 1e-9 * 1000.0 * FINGER.pad_arm
+        reaction = -(cam_force + tip_force)
+        assert pivot[k] == pytest.approx(np.hypot(*reaction), rel=1e-12)
+        assert moment[k] == pytest.approx(abs(cross(p - c, reaction)), rel=1e-9)

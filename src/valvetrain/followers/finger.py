@@ -269,6 +269,32 @@ class PivotedFollower(RollerFollower):
         psi = self.angle_of(h, heel)
         return force * self.valve_arm(psi) / (self.roller_arm * np.cos(self.pressure_angle(heel, h, dh)))
 
+    def loads(self, force, heel, h, dh):
+        """The finger's loads under a force ``force`` [N] at the valve (along its axis), at the valve lifts ``h`` [m],
+        ``dh`` [m/rad] (``force`` broadcasts against them): the roller's (its bearing's) load N [N], the pivot's
+        load |R| [N] and the bending moment at the roller's section M [N m].
+
+        Notes
+        -----
+        The finger in equilibrium under the cam's force N n at the roller centre C (n the contact normal, from the cam
+        to the roller), the valve tip's -F a at the pad's contact X = B + rho_p a and the pivot's reaction R:
+
+        .. math:: N = \\frac{F G}{L_r\\cos\\beta}, \\qquad \\mathbf R = F\\mathbf a - N\\mathbf n, \\qquad
+                  M = F\\,|(\\mathbf B - \\mathbf C)\\times\\mathbf a|
+
+        (the moment of the pad's force about the roller centre; that of the pivot's reaction is equal and opposite).
+        """
+        psi = self.angle_of(h, heel)
+        _, w, _, _ = self._w(heel, h, dh, np.zeros_like(h))
+        n = _quarter(w) / np.hypot(*w)
+        a = np.array([np.sin(self.valve_angle), np.cos(self.valve_angle)])
+        normal = self.contact_force(force, heel, h, dh)
+        pivot = np.hypot(force * a[0] - normal * n[0], force * a[1] - normal * n[1])
+        lb, beta = self._pad
+        arm = self.centre(psi) - self._pivot.reshape((2,) + (1,) * np.ndim(psi))
+        pad = lb * np.stack([np.cos(psi + beta), np.sin(psi + beta)])
+        return normal, pivot, np.abs(force * _cross(pad - arm, a))
+
     def surface_velocities(self, omega, heel, h, dh, d2h, rho):
         """Both surfaces at the contact point's speed along the profile, omega |q'| rho / (rho + R_r): pure rolling
         (as :func:`valvetrain.tribology.roller_follower_velocities`, the pitch speed |q'| of this linkage)."""
