@@ -89,3 +89,24 @@ def test_refusals_name_the_key(old, new, words):
     assert old in text
     with pytest.raises(SpecError, match=words.replace("(", r"\(")):
         run(parse_spec(text.replace(old, new, 1)))
+
+
+def test_the_camshaft_link_is_reduced_to_the_valve_by_the_finger_s_ratio(design):
+    """The camshaft's stiffness under the cam, k_cam = 1 / (its deflection under 1 N, eq. 7.3 of Valve-train practical
+    works (n.d.)), reaches the valve divided by i_0^2, i_0 = 1.6492 the finger's ratio on the heel circle (central
+    difference of the hand-built linkage as above), not by rocker_ratio^2 = 1; in series with the lash adjuster's
+    oil column (its own stage's stiffness at the valve)."""
+    from valvetrain.design.dynamics import adjuster_link, build_train
+    from valvetrain.strength import camshaft_deflection
+
+    spec = parse_spec(example_text(drop_dynamics=False))
+    valve = si(spec).valves["intake"]
+    v = design.valves["intake"]
+    params = build_train(valve.dynamics, valve, v.law, v.drive, "valves.intake", v.cam.cam_speed)[1]
+    p = valve.parts
+    k_cam = 1.0 / camshaft_deflection(1.0, p.cam_to_bearing, p.camshaft_span - p.cam_to_bearing, p.camshaft_diameter,
+                                      p.camshaft_bore, p.camshaft_modulus)
+    i0 = adjuster_ratio(valve, v.law) + 1.0   # checked against the hand-built linkage above
+    assert i0 == pytest.approx(1.6492, abs=1e-4)
+    oil = adjuster_link(valve, v.law, v.drive, v.cam.cam_speed, "valves.intake")[0]
+    assert params.links[0] == pytest.approx(1.0 / (i0**2 / k_cam + 1.0 / oil), rel=1e-12)

@@ -322,11 +322,15 @@ def adjuster_reference_force(valve, law, drive, cam_speed: float, ratio: float) 
     return float(force.max()) / k * ratio
 
 
+def lever_ratio(valve, law) -> float:
+    """The valve's lever ratio on the heel circle: rocker_ratio x the follower's own there (a finger's G(psi_0) / L_r
+    from its geometry, whose law is the valve's and rocker_ratio 1)."""
+    return valve.rocker_ratio * follower_of(valve.cam).rest_ratio(valve.cam.base_radius - law.ramp_height)
+
+
 def adjuster_ratio(valve, law) -> float:
-    """The lash adjuster's motion ratio (:func:`valvetrain.lash_adjuster.motion_ratio`) with the lever ratio
-    i = rocker_ratio x the follower's own on the heel circle (a finger's G(psi_0) / L_r from its geometry)."""
-    i = valve.rocker_ratio * follower_of(valve.cam).rest_ratio(valve.cam.base_radius - law.ramp_height)
-    return hla.motion_ratio(valve.lash_adjuster.location, i)
+    """The lash adjuster's motion ratio (:func:`valvetrain.lash_adjuster.motion_ratio`) with the :func:`lever_ratio`."""
+    return hla.motion_ratio(valve.lash_adjuster.location, lever_ratio(valve, law))
 
 
 def adjuster_link(valve, law, drive, cam_speed: float, at: str) -> tuple[float, str]:
@@ -353,7 +357,7 @@ def build_train(dyn, valve, law, drive, at, cam_speed=None) -> tuple[Union[OneMa
     k = valve.rocker_ratio
     lash = k * law.ramp_height
     line = drive.lines["chosen"]
-    links, names, notes = drive_links(dyn, valve, k, at)
+    links, names, notes = drive_links(dyn, valve, lever_ratio(valve, law), at)
     if valve.lash_adjuster is not None:
         adjuster, note = adjuster_link(valve, law, drive, cam_speed, at)
         links = (float(series(links[0], adjuster)),) + links[1:]
