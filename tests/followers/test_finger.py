@@ -137,13 +137,18 @@ def test_pressure_angle_against_the_contact_normal_of_the_loop_closure():
         assert got[0] == pytest.approx(want, abs=1e-7)
 
 
-def synthesised_path(f):
-    """The synthesised cam as a path for the forward problem: contour points and the pitch curve's outward normals
-    at the design cam angle tau."""
+def synthesised_path(f, step=1e-6):
+    """The synthesised cam as a path for the forward problem: its contour points at the design cam angle tau and the
+    contour's own outward normals, from its tangent by a central difference of the points (step ``step`` rad), not
+    the synthesis' normal: the roller circles must touch the envelope the contour really is."""
+    def contour(tau):
+        h, dh, _ = valve_law(tau)
+        return f.contour(tau, HEEL, h, dh)
+
     def path(tau):
-        h, dh, d2h = valve_law(tau)
-        n = f.pitch_curve(tau, HEEL, h, dh, d2h)[3]
-        return f.contour(tau, HEEL, h, dh), n
+        tangent = (contour(tau + step) - contour(tau - step)) / (2 * step)
+        n = np.stack([-tangent[1], tangent[0]]) / np.hypot(*tangent)   # clockwise contour: J t points outward
+        return contour(tau), n
     return path
 
 
@@ -155,7 +160,7 @@ def test_synthesised_cam_gives_the_valve_law_back(f):
     gives the valve law back to 1e-9 m over the turn (an end-pivot finger; a centre-pivot rocker with its valve end
     moving the other way, alpha = 180 deg)."""
     theta = np.linspace(-np.pi, np.pi, 721)
-    got = f.lift_on_path(synthesised_path(f), theta, HEEL)
+    got = f.lift_on_path(synthesised_path(f), theta, HEEL)   # the contour's normal by differences: ~1e-12 m
     np.testing.assert_allclose(got, valve_law(theta)[0], rtol=0, atol=1e-9)
 
 
