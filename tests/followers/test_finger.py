@@ -220,3 +220,18 @@ def test_loads_hold_the_finger_in_equilibrium():
         reaction = -(cam_force + tip_force)
         assert pivot[k] == pytest.approx(np.hypot(*reaction), rel=1e-12)
         assert moment[k] == pytest.approx(abs(cross(p - c, reaction)), rel=1e-9)
+
+
+def test_the_mid_lift_rule_brings_the_contact_back():
+    """The practice of rocker geometry (the arm square to the valve stem at mid-lift, Miller's mid-lift rule) in closed
+    form: with the pad centre's line square to the valve axis at half the lift V, sin chi_0 = -V / (2 L_b) and
+    sin chi_full = +V / (2 L_b), so cos chi_full = cos chi_0 and the contact at full lift is where it was with the valve
+    shut; in between it runs out to L_b (1 - cos chi_0) = 36 (1 - sqrt(1 - (4.5/36)^2)) = 0.2823 mm (hand calculation)
+    at mid-lift.  The pad on the finger's line (d_p = 0), valve angle chosen so that chi = 0 at v = 4.5 mm."""
+    f0 = PivotedFollower(radius=ROLLER, pivot_x=-0.0225, pivot_y=HEEL + ROLLER, roller_arm=0.0225, pad_arm=0.036)
+    f = PivotedFollower(radius=ROLLER, pivot_x=-0.0225, pivot_y=HEEL + ROLLER, roller_arm=0.0225, pad_arm=0.036,
+                        valve_angle=np.arcsin(-0.0045 / 0.036) - f0.base_angle(HEEL))
+    psi = f.angle_of(np.array([0.0, 0.0045, 0.009]), HEEL)
+    tip = f.tip_contact(psi, HEEL)
+    assert tip[2] == pytest.approx(tip[0], abs=1e-15)
+    assert abs(tip[1] - tip[0]) == pytest.approx(0.036 * (1.0 - np.sqrt(1.0 - (4.5 / 36.0) ** 2)), rel=1e-12)

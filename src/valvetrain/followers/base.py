@@ -43,14 +43,13 @@ Write one module in this package with a subclass of :class:`Follower` decorated 
   :meth:`force_ratio`           the cam's force per unit force along the law's lift [-]
   ============================  =======================================================================
 
-  A follower whose lever ratio varies with the lift (a finger follower: valve lift / cam lift depends on the
-  finger's angle) returns it from :meth:`ratio`; ``LiftLaw.valve_lift`` multiplies the valve's rocker ratio by it
-  (the law stage's ``CamResult.valve_lift``, hence the flow, the tables and the figures, and the synthesis'
-  objective).  The forces and masses reduced through the drive (drive, strength and dynamics stages, the
-  synthesis' spring reserve) still take the constant rocker ratio: a follower with a varying ratio must bring
-  them the ratio at each lift too.  Today's followers translate on their line of action: ratio 1, contact on the
-  line u.  A finger follower's contact point and pressure angle follow from its pivot and pad geometry; its
-  contour and curvature must still be those of the cam seen in the frame above.
+  A follower whose lever ratio varies with the lift may return it from :meth:`ratio`; ``LiftLaw.valve_lift``
+  multiplies the valve's rocker ratio by it.  The finger (:mod:`.finger`) takes the other way: its law is the
+  valve's (``law_at_valve``, rocker ratio 1), its geometry methods synthesise the cam through its linkage, and it
+  brings the stages its ratio where they reduce through the drive: :meth:`force_ratio` (the cam's normal force per
+  unit force at the valve, for the strength and lubrication loads) and :meth:`rest_ratio` (the lash adjuster's motion
+  ratio, the dynamics' camshaft link, the rocker-ratio band).  Today's other followers translate on their line of
+  action: ratio 1, contact on the line u.
 
 - in the dynamics network the follower contributes its contact (the stress under the simulated force,
   :meth:`contact_stress`, and the film, :meth:`lubrication`); its mass is today the tappet's of the layout's
