@@ -110,3 +110,19 @@ def test_the_camshaft_link_is_reduced_to_the_valve_by_the_finger_s_ratio(design)
     assert i0 == pytest.approx(1.6492, abs=1e-4)
     oil = adjuster_link(valve, v.law, v.drive, v.cam.cam_speed, "valves.intake")[0]
     assert params.links[0] == pytest.approx(1.0 / (i0**2 / k_cam + 1.0 / oil), rel=1e-12)
+
+
+def test_the_camshaft_drive_torque_is_the_valve_force_s_power(design):
+    """Without friction the camshaft's torque is the power at the valve over its speed, T = F dv/dtheta (virtual
+    work): the lubrication stage's drive torque less its friction torque, under the cam's normal force of F = 1000 N at
+    the valve (contact_loads), against 1000 N x dv/dtheta."""
+    from valvetrain.design.lubrication import contact_map
+
+    valve = si(parse_spec(example_text())).valves["intake"]
+    v = design.valves["intake"]
+    theta = np.array([-0.6, -0.3, 0.0, 0.2, 0.5])
+    normal = contact_loads(v.cam, [LoadMap("quasi-static", np.array([1.0]), theta, np.full((1, 5), 1000.0))])[0]
+    c = contact_map(valve.lubrication, v.cam, valve.parts.cam_width, valve.parts.contact_modulus, theta,
+                    normal.force, np.array([[300.0]]))
+    dv = v.law.derivatives(theta)[1]
+    np.testing.assert_allclose(c["drive_torque"][0] - c["friction_torque"][0], 1000.0 * dv, rtol=1e-12, atol=1e-12)
