@@ -83,6 +83,8 @@ def test_the_lash_adjuster_at_the_pivot_moves_by_the_finger_s_ratio_less_one(des
     ('layout = "rocker"\nvalve_arm_mm = 37.1            #', 'layout = "direct"\nvalve_arm_mm = 37.1            #',
      "drive.layout = 'direct': allowed \"rocker\""),
     ("finger_roller_arm_mm = 22.5    # pivot to roller centre\n", "", "finger_roller_arm_mm is required"),
+    ("finger_roller_arm_mm = 22.5", "finger_roller_arm_mm = 2.5", "cam.finger_roller_arm_mm = 2.5 from the pivot"),
+    ("finger_valve_angle_deg = 12.0", "finger_valve_angle_deg = 80.0", "cam.finger_valve_angle_deg = 80: the valve pad"),
 ])
 def test_refusals_name_the_key(old, new, words):
     text = example_text()

@@ -70,6 +70,10 @@ def _finite(x):
     return float(x) if np.isfinite(x) else None
 
 
+FINGER_VALVE_ANGLE = _bounded(-180.0, 180.0, "deg", low_open=False)
+"""The bounds of ``finger_valve_angle_deg``: the direction the valve opens, from the follower's (+y) clockwise."""
+
+
 class _CamBase(_Model):
     base_radius_mm: Length(2.0, 500.0, low_open=False)
     follower: Literal[tuple(FOLLOWERS)] = "flat"
@@ -80,7 +84,7 @@ class _CamBase(_Model):
     finger_pad_arm_mm: Optional[Length(-500.0, 500.0, low_open=False)] = None
     finger_pad_drop_mm: Optional[Length(-200.0, 200.0, low_open=False)] = None
     finger_pad_radius_mm: Optional[Length(1.0, 1000.0, low_open=False)] = None
-    finger_valve_angle_deg: Optional[_bounded(-180.0, 180.0, "deg", low_open=False)] = None
+    finger_valve_angle_deg: Optional[FINGER_VALVE_ANGLE] = None
     finger_tip_offset_mm: Optional[Length(-50.0, 50.0, low_open=False)] = None
 
     @model_validator(mode="after")

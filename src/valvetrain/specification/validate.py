@@ -14,6 +14,7 @@ from ..layouts import LAYOUTS
 from ..springs import feasible_mean_diameters
 from ..units import MM
 from .cams import main_half_angle_deg
+from .si import si
 from .messages import shown
 
 
@@ -54,6 +55,11 @@ def _valve_problems(name, v, engine):
         if v.rocker_ratio != 1.0:
             out.append(f"{at}.rocker_ratio = {v.rocker_ratio:g}: allowed 1 with cam.follower = \"{v.cam.follower}\" "
                        "(the law is the valve's; the finger's ratio follows from its geometry)")
+        if v.max_lift_mm is not None:
+            problem = FOLLOWERS[v.cam.follower].from_cam(si(v.cam)).geometry_problem(
+                (v.cam.base_radius_mm - v.clearance_mm) * MM, v.max_lift_mm * MM + v.clearance_mm * MM)
+            if problem:
+                out.append(f"{at}.cam.{problem}")
         if v.drive.layout != "rocker":
             out.append(f"{at}.drive.layout = {shown(v.drive.layout)}: allowed \"rocker\" with cam.follower = "
                        f"\"{v.cam.follower}\" (the finger's inertia about its pivot, drive.valve_arm_mm)")
