@@ -137,21 +137,23 @@ class PivotedFollower(RollerFollower):
         return None
 
     def geometry_problem(self, heel, lift):
-        """The message (keys of the cam section, in mm) when the finger cannot sit on the heel circle of radius
-        ``heel`` [m] or cannot give the valve lift ``lift`` [m], else None."""
+        """Where the finger cannot sit on the heel circle of radius ``heel`` [m] or cannot give the valve lift ``lift``
+        [m]: ``(key of the cam section, its value as given, what is wrong (lengths in mm), joiner)`` for a
+        :class:`~valvetrain.specification.messages.Problem`; else None."""
         p = np.hypot(self.pivot_x, self.pivot_y)
         g0 = heel + self.radius
         if not abs(p - self.roller_arm) <= g0 <= p + self.roller_arm:
-            return (f"finger_roller_arm_mm = {self.roller_arm * 1e3:g} from the pivot (finger_pivot_x_mm, "
-                    f"finger_pivot_y_mm) {p * 1e3:g} mm from the cam centre cannot reach the roller centre's heel "
-                    f"circle, base_radius_mm + roller_radius_mm = {g0 * 1e3:g} mm")
+            return ("finger_roller_arm_mm", f"{self.roller_arm * 1e3:g}",
+                    f"from the pivot (finger_pivot_x_mm, finger_pivot_y_mm) {p * 1e3:g} mm from the cam centre "
+                    f"cannot reach the roller centre's heel circle, base_radius_mm + roller_radius_mm = "
+                    f"{g0 * 1e3:g} mm", " ")
         lb = self._pad[0]
         reach = lb * (1.0 - np.sin(self._chi0(heel))) if self.valve_arm(np.array(self.base_angle(heel))) > 0.0 \
             else lb * (1.0 + np.sin(self._chi0(heel)))
         if lift > reach:
-            return (f"finger_valve_angle_deg = {np.degrees(self.valve_angle):g}: the valve pad {lb * 1e3:g} mm from "
-                    f"the pivot (finger_pad_arm_mm, finger_pad_drop_mm) reaches a valve lift of {reach * 1e3:.4g} mm "
-                    f"at most; max_lift_mm + clearance_mm = {lift * 1e3:g}")
+            return ("finger_valve_angle_deg", f"{np.degrees(self.valve_angle):g}",
+                    f"the valve pad {lb * 1e3:g} mm from the pivot (finger_pad_arm_mm, finger_pad_drop_mm) reaches a "
+                    f"valve lift of {reach * 1e3:.4g} mm at most; max_lift_mm + clearance_mm = {lift * 1e3:g}", ": ")
         return None
 
     def rest_ratio(self, heel):
