@@ -168,6 +168,11 @@ WORKS = {
         authors="Norton, R. L.",
         title="Cam Design and Manufacturing Handbook, 2nd ed.", kind="book", publisher="Industrial Press",
         place="New York", year="2009"),
+    "wang2007": Work(
+        short="Wang (2007)",
+        authors="Wang, Y.",
+        title="Introduction to Engine Valvetrains", kind="book", publisher="SAE International", place="Warrendale, PA",
+        year="2007"),
     "johnson1985": Work(
         short="Johnson (1985)",
         authors="Johnson, K. L.",

@@ -195,10 +195,10 @@ def _material(valve, spring):
 
 def _geometry(v):
     """The rows of the report's geometry table: the follower and the radii of the cam, the curvature, the contact
-    (flat or roller) and the undercut, those that exist."""
+    (flat or roller), the undercut and a finger's linkage, those that exist."""
     rows = (shown(v.cam, "follower", "base_radius", "heel_radius")
             + shown(v.profile, "rho_min", "rho_min_angle", "rho_max", "rho_max_angle") + shown(v.profile.contact)
-            + shown(v.profile, "undercut"))
+            + shown(v.profile, "undercut") + (shown(v.profile.finger) if v.profile.finger is not None else []))
     return [(k, val) for k, val in rows if val is not None]
 
 

@@ -10,11 +10,13 @@ are the dotted keys that :meth:`Spec.replace` and ``study --grid`` change.
 import copy
 from typing import Any, Optional
 
+from ..followers import REGISTRY as FOLLOWERS
 from ..layouts import LAYOUTS
 from ..springs import feasible_mean_diameters
 from ..units import MM
 from .cams import main_half_angle_deg
 from .messages import Problem, shown
+from .si import si
 
 
 def _valve_problems(name, v, engine):
@@ -54,6 +56,19 @@ def _valve_problems(name, v, engine):
     if v.drive.layout is not None and not LAYOUTS[v.drive.layout].rocker and v.rocker_ratio != 1.0:
         out.append(Problem(f"{at}.drive.layout", f"needs rocker_ratio = 1 (got {v.rocker_ratio:g})",
                            f"\"{v.drive.layout}\"", " "))
+    if FOLLOWERS[v.cam.follower].law_at_valve:
+        if v.rocker_ratio != 1.0:
+            out.append(Problem(f"{at}.rocker_ratio", f"allowed 1 with cam.follower = \"{v.cam.follower}\" (the law is "
+                               "the valve's; the finger's ratio follows from its geometry)", f"{v.rocker_ratio:g}"))
+        if v.max_lift_mm is not None:
+            problem = FOLLOWERS[v.cam.follower].from_cam(si(v.cam)).geometry_problem(
+                (v.cam.base_radius_mm - v.clearance_mm) * MM, v.max_lift_mm * MM + v.clearance_mm * MM)
+            if problem:
+                key, value, message, joiner = problem
+                out.append(Problem(f"{at}.cam.{key}", message, value, joiner))
+        if v.drive.layout != "rocker":
+            out.append(Problem(f"{at}.drive.layout", f"allowed \"rocker\" with cam.follower = \"{v.cam.follower}\" "
+                               "(the finger's inertia about its pivot, drive.valve_arm_mm)", shown(v.drive.layout)))
     if v.piston_gap_tdc_mm is not None and engine.rod_length_mm is None:
         out.append(Problem(f"{at}.piston_gap_tdc_mm", "needs engine.rod_length_mm for the piston kinematics",
                            joiner=" "))
