@@ -5,15 +5,19 @@ about 0.1-0.2 s a figure), and it needs nothing but the results: a process forke
 matplotlib meanwhile and draws one figure (its fonts loaded, the PNG writer imported), receives the results once they
 are there, forks :data:`PROCESSES` - 1 more from itself (which find matplotlib imported) and draws the figures dealt
 round between them (:func:`valvetrain.report.plots.write_plots`'s ``share``) while the first process writes the
-tables, the contours and the DXF files.  Where processes cannot be forked (Windows, macOS), :func:`start` gives None
-and the figures are drawn in the process itself, as before.
+tables, the contours and the DXF files.  The first process loads numba's compiled code (the first call of any kernel
+loads it for all, 0.3-0.5 s) before it forks: the drawers evaluate laws too (the timing diagram), and inherit it.
+Where processes cannot be forked (Windows, macOS), :func:`start` gives None and the figures are drawn in the process
+itself, as before.
 """
 
 import io
 import multiprocessing
+from multiprocessing.reduction import ForkingPickler
 import os
 import signal
 import sys
+import threading
 
 PROCESSES = 2
 """Drawing processes: the figures and the first process's writing share two cores (this machine's, and a laptop's
@@ -29,15 +33,31 @@ class FigureProcess:
     """
 
     def __init__(self, processes=PROCESSES):
+        from ..laws.base import mirror
+
+        mirror(0.0, 1.0)   # numba's compiled code loaded (0.3-0.5 s, once): the drawers evaluate laws too
         context = multiprocessing.get_context("fork")
         self._conn, child = context.Pipe()
         self._process = context.Process(target=_serve, args=(child, self._conn, processes), daemon=True)
         self._process.start()
         child.close()
+        self._sending = None
 
     def submit(self, results, folder, lang, figures):
-        """Draw the figures ``figures`` of ``results`` into ``folder`` (the arguments of ``write_plots``)."""
-        self._conn.send((results, folder, lang, figures))
+        """Draw the figures ``figures`` of ``results`` into ``folder`` (the arguments of ``write_plots``).
+
+        The request, larger than a pipe holds, is pickled here (the results are not to be read while this process
+        goes on with them) and sent by a thread: this process writes its files meanwhile, rather than wait for the
+        drawer to finish importing matplotlib."""
+        request = ForkingPickler.dumps((results, folder, lang, figures))
+        self._sending = threading.Thread(target=self._send, args=(request,), daemon=True)
+        self._sending.start()
+
+    def _send(self, request):
+        try:
+            self._conn.send_bytes(request)
+        except OSError:      # the drawer has ended (stop): result() says so
+            pass
 
     def result(self):
         """``write_plots``'s return value, once every process has drawn its figures; an exception of one, raised
@@ -56,6 +76,8 @@ class FigureProcess:
         if self._process.is_alive():
             self._process.terminate()
         self._process.join()
+        if self._sending is not None:
+            self._sending.join()
         self._conn.close()
 
     def __enter__(self):
