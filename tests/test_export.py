@@ -12,12 +12,13 @@ from valvetrain.design import run
 from valvetrain.export import json_text, write_outputs
 from valvetrain.report.drawing import FigureProcess
 from valvetrain.tables import LIFT_COLUMNS
-from valvetrain.specification import example_spec
+
+from appendix import appendix_spec
 
 
 @pytest.fixture(scope="module")
 def written(tmp_path_factory):
-    results = run(example_spec())
+    results = run(appendix_spec())
     out = write_outputs(results, tmp_path_factory.mktemp("x") / "design")
     return results, out
 
@@ -51,7 +52,7 @@ def test_contour_csv_and_dxf(written):
     header, rows = _read_csv(out / "contour" / "intake.csv")
     assert header == ["cam_deg", "x_mm", "y_mm", "radius_mm", "polar_angle_deg"]
     xy = np.array([[float(r[1]), float(r[2])] for r in rows])
-    # the nose: r0 + h_T max = 26.25 mm on +y (spec E2: rho at the nose; contour radius = r_k + h)
+    # the nose: r0 + h_T max = 26.25 mm on +y (Valve-train practical works (n.d.), corrections note 2: rho at the nose; contour radius = r_k + h)
     assert xy[:, 1].max() == pytest.approx(26.25, abs=1e-6)
     doc = ezdxf.readfile(out / "contour" / "intake.dxf")
     msp = doc.modelspace()
@@ -62,7 +63,7 @@ def test_contour_csv_and_dxf(written):
     pts = np.array([p[:2] for p in poly.get_points()])
     assert np.allclose(pts, xy, atol=1e-9)
     circle = msp.query("CIRCLE").first
-    assert circle.dxf.radius == pytest.approx(19.75)  # heel radius r0 - h0 (seed 000)
+    assert circle.dxf.radius == pytest.approx(19.75)  # heel radius r0 - h0 (Valve-train practical works (n.d.))
     law = results.valves["intake"].law
     # the two ramp ends of the Kurz cam on their own layer, the other junctions (and the event ends) on another
     ramps = msp.query("LINE[layer=='RAMP_BOUNDARIES']")
@@ -153,7 +154,7 @@ def test_dxf_is_reproducible(tmp_path):
 
 
 def test_the_specification_is_saved_with_the_results(written):
-    """spec.toml beside results.json reads back to the same specification and so to the same design (seed 000
+    """spec.toml beside results.json reads back to the same specification and so to the same design (Valve-train practical works (n.d.)
     appendix: time-area 2.8564 mm2 s)."""
     from valvetrain.specification import load_spec
 
@@ -182,7 +183,7 @@ def test_figures_drawn_in_a_second_process_are_those_drawn_here(tmp_path):
     """The reference is the same run's figures drawn in this process (no drawer): every file, the PNGs and the report
     that embeds them included, is the same byte for byte (but the DXF, written by this process either way, which
     holds its time of writing in $TDCREATE)."""
-    results = run(example_spec())
+    results = run(appendix_spec())
     here = write_outputs(results, tmp_path / "here")
     there = write_outputs(results, tmp_path / "there", drawer=FigureProcess())
     files = sorted(p.relative_to(here) for p in here.rglob("*") if p.is_file() and p.name != ".valvetrain-output")
@@ -198,7 +199,7 @@ def test_an_error_in_the_drawing_process_is_raised_and_nothing_is_written(tmp_pa
     it must reach the caller, leave no folder and end the drawing processes."""
     drawer = FigureProcess()
     with pytest.raises(ValueError, match="allowed: main, all, none"):
-        write_outputs(run(example_spec()), tmp_path / "d", figures="some", drawer=drawer)
+        write_outputs(run(appendix_spec()), tmp_path / "d", figures="some", drawer=drawer)
     assert not (tmp_path / "d").exists()
     assert not drawer._process.is_alive()
 

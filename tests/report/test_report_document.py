@@ -7,12 +7,13 @@ import tomllib
 from click.testing import CliRunner
 
 from valvetrain.cli import main
-from valvetrain.specification import example_text
+
+from appendix import appendix_text
 
 
 def _report(tmp_path, extra=""):
     spec = tmp_path / "spec.toml"
-    spec.write_text(example_text() + extra, encoding="utf-8")
+    spec.write_text(appendix_text() + extra, encoding="utf-8")
     out = tmp_path / "out"
     result = CliRunner().invoke(main, ["run", str(spec), "--out", str(out), "--figures", "none"])
     assert result.exit_code == 0, result.output
@@ -31,8 +32,9 @@ def test_title_block_contents_conclusions_and_appendix(tmp_path):
     assert links == [f"ch{i}" for i in range(1, len(links) + 1)] and len(links) >= 5
     assert all(f'<h2 id="{a}"' in page for a in links)
     chapters = re.findall(r'<h2 id="ch\d+"[^>]*>(.*?)</h2>', page)
-    assert chapters.index("Conclusions") < chapters.index("Appendix: input data and lift tables") < \
-        chapters.index("Sources")
+    # GOST 7.32's order: the conclusions, the list of sources, then the appendices
+    assert chapters.index("Conclusions") < chapters.index("Sources") < \
+        chapters.index("Appendix: input data and lift tables")
     # the lift table and the input dump are in the appendix, after the conclusions
     appendix = page.index("Appendix: input data and lift tables</h2>")
     assert page.index("Lift table (every") > appendix and page.index("<h3>Input data</h3>") > appendix
@@ -49,6 +51,6 @@ def test_without_a_document_section_the_block_has_empty_fields_to_fill(tmp_path)
 
 def test_a_too_long_document_field_is_refused(tmp_path):
     spec = tmp_path / "spec.toml"
-    spec.write_text(example_text() + f'\n[document]\nauthor = "{"x" * 201}"\n', encoding="utf-8")
+    spec.write_text(appendix_text() + f'\n[document]\nauthor = "{"x" * 201}"\n', encoding="utf-8")
     result = CliRunner().invoke(main, ["validate", str(spec)])
     assert result.exit_code == 2 and "document.author" in result.output

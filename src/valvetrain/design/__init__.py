@@ -22,10 +22,13 @@ from .. import flow
 from ..checks import SEVERITIES, Check, apply_acceptances, check, failed, ranked, tally
 from ..crank.pressure import PressureFileError
 from ..files import TableFileError
+from ..laws.records import LawRecord
 from ..specification import Spec, SpecError, crank_geometry, si, spec_document, validate
+from ..specification.messages import Problem
 from ..specification.models import Dynamics
 from ..units import MM, to_display
 from .camcard import CamCard, CamCardValve, cam_card_stage
+from .camshaft import CamshaftRecord, CamshaftResults, camshaft_stage
 from .crank import LAMBDA_RANGE, CrankResults, CrankSummary, crank_stage, valve_timing
 from .drive import MassResult, SpringResult, StrengthResult
 from .dynamics import DynamicsResult
@@ -70,6 +73,7 @@ class DesignResults:
     crank: Optional[CrankResults] = None
     two_stroke: Optional[TwoStrokeResults] = None
     cam_card: Optional[CamCard] = None         # a four-stroke's (valvetrain.camcard)
+    camshaft: Optional[CamshaftResults] = None  # with a [camshaft] section
 
     @property
     def warnings(self):
@@ -145,6 +149,8 @@ class DesignResults:
             out["two_stroke"] = self.two_stroke.summary
         if self.cam_card is not None:
             out["cam_card"] = record(self.cam_card)
+        if self.camshaft is not None:
+            out["camshaft"] = self.camshaft.summary
         out["warnings"] = [w.warning() for w in self.warnings]
         out["accepted"] = [w.warning() for w in self.accepted]
         out["checks"] = [c.as_dict() for c in self.checks]
@@ -180,10 +186,10 @@ def run(spec, laws=None, progress=None) -> DesignResults:
                          f"dict of its tables is needed, not a {type(spec).__name__}"])
     spec = validate(spec if isinstance(spec, dict) else spec_document(spec))
     engine, gas, output = si(spec.engine), si(spec.gas), si(spec.output)
-    valves, problems, waiting = {}, [], {}
+    valves, problems, waiting, views = {}, [], {}, {}
     for name, v in spec.valves.items():
         try:
-            valve = _valve_view(name, v, spec)
+            valve = views[name] = _valve_view(name, v, spec)
         except SpecError as err:
             problems += err.problems
             continue
@@ -201,7 +207,7 @@ def run(spec, laws=None, progress=None) -> DesignResults:
         try:
             crank_view = si(spec.crank, spec)
         except PressureFileError as exc:
-            raise SpecError([f"crank.pressure_file: {exc}"]) from None
+            raise SpecError([Problem("crank.pressure_file", str(exc))]) from None
     crank = crank_stage(crank_view, engine, valve_timing(valves)) if crank_view is not None else None
     if waiting:
         cylinder = CylinderPressure(crank.phi, crank.columns["p_abs"], crank.pressure_source)
@@ -213,12 +219,13 @@ def run(spec, laws=None, progress=None) -> DesignResults:
         found.append(check("engine.throat_area_share", share / float(flow.circle_area(engine.bore)),
                            *THROAT_AREA_SHARE_RANGE, source="Valve-train practical works (n.d.), work 1"))
     ports = two_stroke_stage(si(spec.two_stroke), crank_view, engine) if spec.two_stroke is not None else None
-    for stage, tag in ((crank, "crank"), (ports, "two-stroke")):
+    shaft = camshaft_stage(si(spec.camshaft), engine, views, valves) if spec.camshaft is not None else None
+    for stage, tag in ((crank, "crank"), (ports, "two-stroke"), (shaft, "camshaft")):
         if stage is not None:
             found += [c.named(tag) for c in stage.checks]
     found, valves = accept(found, spec.accepted, valves)
     card = cam_card_stage(valves) if valves and engine.strokes == 4 else None
-    return DesignResults(spec, engine_record(engine), valves, tuple(found), crank, ports, card)
+    return DesignResults(spec, engine_record(engine), valves, tuple(found), crank, ports, card, shaft)
 
 
 def accept(found: list[Check], acceptances: list, valves: dict[str, ValveDesign]
@@ -313,7 +320,7 @@ def _valve_view(name, valve, spec):
     try:
         return si(valve, spec)
     except (TableFileError, PressureFileError) as exc:
-        raise SpecError([f"valves.{name}.cam.table_file: {exc}"]) from None
+        raise SpecError([Problem(f"valves.{name}.cam.table_file", str(exc))]) from None
 
 
 def sweep_designs(spec, names=None, progress=None) -> dict[str, ValveDesign]:
@@ -361,8 +368,7 @@ def sweep_designs(spec, names=None, progress=None) -> dict[str, ValveDesign]:
 def results_schema() -> dict[str, Any]:
     """JSON Schema (draft 2020-12) of results.json, generated from the stage results' field metadata.
 
-    The law's own records (seed formulas, a measured table's analysis) and the strength checks are objects
-    described in the README.
+    The strength checks are objects described in the README.
     """
     from .. import __version__
 
@@ -391,10 +397,7 @@ def results_schema() -> dict[str, Any]:
                                              "description": "the checks whose parts are not given"}
     valve = {"type": "object", "properties": {
         "kind": {"type": "string"}, "count": {"type": "integer"}, "rocker_ratio": {"type": "number"},
-        "cam": merged(json_schema(CamResult), json_schema(ProfileResult),
-                      seed_formulas="the appendix formulas of Valve-train practical works (n.d.) beside the exact extremes (Kurz cams)",
-                      residuals="residuals of the junction conditions (Kurz cams)",
-                      measured="a measured table's analysis: durations, lobe centre, fit quality"),
+        "cam": merged(json_schema(CamResult), json_schema(ProfileResult), json_schema(LawRecord)),
         "flow": json_schema(FlowResult), "piston_clearance": json_schema(ClearanceResult),
         "masses": json_schema(MassResult), "spring": json_schema(SpringResult),
         "strength": strength, "dynamics": json_schema(DynamicsResult),
@@ -409,6 +412,7 @@ def results_schema() -> dict[str, Any]:
             "valvetrain_version": {"type": "string"}, "engine": json_schema(EngineRecord),
             "valves": {"type": "object", "additionalProperties": valve},
             "crank": json_schema(CrankSummary), "two_stroke": json_schema(TwoStrokeSummary),
+            "camshaft": json_schema(CamshaftRecord),
             "cam_card": json_schema(CamCard) | {"properties": json_schema(CamCard)["properties"] | {
                 "valves": {"type": "object", "additionalProperties": json_schema(CamCardValve)}}},
             "warnings": {"type": "array", "items": check_record,

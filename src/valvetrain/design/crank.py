@@ -10,6 +10,7 @@ import numpy as np
 from ..checks import Check, check, tally
 from ..crank import dynamics, kinematics, pressure, torque
 from ..specification import SpecError
+from ..specification.messages import Problem
 from ..units import MPA
 from .results import quantity, record
 
@@ -183,7 +184,7 @@ def _gas_pressure(c, strokes, phi, bore, radius, lam, k, timing=None):
             try:
                 pressure.check_timing(model)
             except ValueError as exc:
-                raise SpecError([f"crank.cycle: {exc}"]) from None
+                raise SpecError([Problem("crank.cycle", str(exc))]) from None
             valves = (f"compression from the intake valve's closing, a blowdown of {pressure.BLOWDOWN_DEG:g} deg "
                       f"from the exhaust valve's opening ({where or 'valves at the dead centres'})")
         else:
@@ -208,7 +209,9 @@ def _gas_pressure(c, strokes, phi, bore, radius, lam, k, timing=None):
     return pressure.on_grid(angle, p, phi, strokes), f"p-V diagram {table.source}, placed on the crank angle by {how}"
 
 
-def _firing(eng):
+def firing_angles(eng) -> tuple[np.ndarray, str]:
+    """Firing angles of the cylinders after cylinder 1 [rad] (SI view of [engine]) and how they were found: given,
+    from the crank throws and cylinder axes, or even firing in the firing order."""
     order = eng.firing_order or tuple(range(1, eng.cylinders + 1))
     if eng.firing_angles is not None:
         return np.asarray(eng.firing_angles), "given firing angles"
@@ -235,7 +238,7 @@ def crank_stage(c, eng, timing=None) -> CrankResults:
     try:
         p_abs, source = _gas_pressure(c, strokes, phi, bore, radius, lam, k, timing)
     except pressure.PressureFileError as exc:
-        raise SpecError([f"crank.pressure_file: {exc}"]) from None
+        raise SpecError([Problem("crank.pressure_file", str(exc))]) from None
     masses = _masses(c, area, 2 if eng.layout == "v" else 1)
     forces = dynamics.cylinder_dynamics(phi, p_abs, c.ambient_pressure, bore, radius, lam, omega, masses, k, exact)
     beta = kinematics.rod_angle(phi, lam, k)
@@ -243,7 +246,7 @@ def crank_stage(c, eng, timing=None) -> CrankResults:
                "v": kinematics.velocity(phi, radius, lam, omega, k, exact),
                "j": kinematics.acceleration(phi, radius, lam, omega, k, exact), "beta": beta, "p_abs": p_abs, **forces}
 
-    firing, firing_how = _firing(eng)
+    firing, firing_how = firing_angles(eng)
     each, total = torque.engine_torque(phi, (phi, forces["torque"]), firing, strokes)
     even = torque.is_even(firing, strokes)
     period = torque.firing_interval(strokes, eng.cylinders) if even else np.pi * strokes

@@ -89,6 +89,9 @@ NAMES = {
     "spring.count": ("number of springs", "число пружин"), "inner_share": ("share of the inner spring", "доля внутренней пружины"),
     "material": ("spring steel", "материал пружины"), "min_safety_factor": ("minimum fatigue safety factor", "наименьший запас прочности"),
     "min_resonance_ratio": ("minimum resonance ratio", "наименьшее отношение частот"),
+    "min_margin": ("design margin sought on fatigue and resonance", "запас проектирования по усталости и резонансу"),
+    "design_margin": ("design margin achieved on fatigue and resonance",
+                      "достигнутый запас проектирования по усталости и резонансу"),
     "coil_gap_factor": ("coil gap at full lift / wire diameter", "зазор между витками при полном подъёме / диаметр проволоки"),
     "mean_diameter_ratio": ("mean diameter / throat diameter", "средний диаметр / диаметр горловины"),
     "wire_diameter_range": ("wire diameters", "диаметры проволоки"), "wire_step": ("wire step", "шаг диаметра проволоки"),
@@ -121,7 +124,7 @@ NAMES = {
     "rocker_shaft_bore": ("rocker shaft bore", "диаметр отверстия оси коромысла"),
     "rocker_width": ("rocker bearing width", "ширина втулки коромысла"),
     "table_file": ("lift table file", "файл таблицы подъёма"), "table_angle": ("angles of the table", "углы таблицы"),
-    "table_lift_at": ("lift of the table at", "подъём в таблице на"), "table_zero": ("table angles from", "углы таблицы от"),
+    "table_lift_at": ("lift of the table at", "подъём в таблице на"), "table_zero": ("table angles from", "начало отсчёта углов таблицы"),
     "fit": ("fit", "аппроксимация"), "accuracy": ("accuracy of the fit", "точность аппроксимации"),
     "accuracy_from": ("accuracy of the fit from", "точность аппроксимации"),
     "max_harmonics": ("max number of harmonics", "наибольшее число гармоник"),
@@ -191,9 +194,9 @@ NAMES = {
     "required_deflection_ratio": ("f_max/f_min of the required line", "f_max/f_min необходимой характеристики"),
     "preload_set_by_gas_force": ("preload set by the gas force", "затяжка определена силой давления газов"),
     "gas_force": ("gas force on the valve head P_gas", "сила давления газов на клапан P_г"),
-    "gas_force_source": ("gas force from", "сила давления газов по"),
+    "gas_force_source": ("gas force from", "источник силы давления газов"),
     "preload_set_by_seat_load": ("preload set by the seat load", "затяжка определена посадочным усилием"),
-    "seat_load": ("seat load", "посадочное усилие"), "seat_load_source": ("seat load from", "посадочное усилие по"),
+    "seat_load": ("seat load", "посадочное усилие"), "seat_load_source": ("seat load from", "источник посадочного усилия"),
     "deflection_ratio": ("ratio f_max/f_min", "отношение f_max/f_min"),
     "candidates_passing": ("candidates passing every check", "вариантов, прошедших все проверки"),
     "candidates_tried": ("candidates tried", "рассмотрено вариантов"),
@@ -297,7 +300,7 @@ NAMES = {
     "textbook.max_acceleration": ("max piston acceleration, approximate formula", "наибольшее ускорение поршня по приближённой формуле"),
     "textbook.min_acceleration": ("min piston acceleration, approximate formula", "наименьшее ускорение поршня по приближённой формуле"),
     "textbook.min_acceleration_crank": ("its crank angle, approximate formula", "его угол ПКВ по приближённой формуле"),
-    "textbook.source": ("approximate formulas from", "приближённые формулы по"),
+    "textbook.source": ("approximate formulas from", "источник приближённых формул"),
     "max_rod_angle": ("max connecting-rod angle β", "наибольший угол отклонения шатуна β"),
     "tdc_crank": ("TDC at crank angle", "ВМТ при угле ПКВ"), "bdc_crank": ("BDC at crank angle", "НМТ при угле ПКВ"),
     "masses.piston": ("piston mass", "масса поршня"), "masses.rod": ("connecting-rod mass", "масса шатуна"),
@@ -335,7 +338,7 @@ NAMES = {
 """Names of the keys without their unit suffix (or a whole key where the suffix is no unit): ``(en, ru)``."""
 
 VALUES = {
-    "pivot": "опора рычага",
+    "pivot": "опора рычага", "chain": "цепь", "belt": "зубчатый ремень", "gears": "шестерни",
     "intake": "впускной", "exhaust": "выпускной", "inlet": "впускное", "transfer": "продувочное",
     "flat": "плоский", "roller": "роликовый", "direct": "непосредственный", "rocker": "с коромыслом",
     "pushrod": "со штангой и коромыслом", "inline": "рядный", "v": "V-образный", "si": "с искровым зажиганием",
@@ -546,6 +549,28 @@ NAMES.update({
     "lash_adjuster.supply_pressure": ("oil supply pressure", "давление подачи масла"),
     "lash_adjuster.plunger_spring": ("plunger spring force", "сила пружины плунжера"),
     "lash_adjuster.check_valve_diameter": ("check valve bore", "диаметр седла обратного клапана"),
+})
+
+NAMES.update({
+    "camshaft.cylinders": ("cylinders of the camshaft", "цилиндры распределительного вала"),
+    "camshaft.cylinder_positions": ("cylinder positions from the drive end", "положения цилиндров от приводного конца"),
+    "camshaft.section_lengths": ("shaft section lengths", "длины участков вала"),
+    "camshaft.section_diameters": ("shaft section diameters", "диаметры участков вала"),
+    "camshaft.section_bores": ("shaft section bores", "диаметры отверстий участков вала"),
+    "camshaft.journal_positions": ("journal positions from the drive end", "положения опорных шеек от приводного конца"),
+    "camshaft.shear_modulus": ("shear modulus G", "модуль сдвига G"),
+    "camshaft.modulus": ("Young's modulus E", "модуль упругости E"),
+    "camshaft.density": ("density of the shaft", "плотность материала вала"),
+    "camshaft.lobe_inertia": ("polar inertia of one lobe", "момент инерции одного кулачка"),
+    "camshaft.max_twist": ("largest twist allowed", "наибольшая допустимая закрутка"),
+    "camshaft.max_deflection": ("largest deflection allowed", "наибольший допустимый прогиб"),
+    "camshaft.min_frequency_ratio": ("smallest frequency ratio allowed", "наименьшее допустимое отношение частот"),
+    "camshaft.significant_order_share": ("share of the largest order that is significant",
+                                         "доля наибольшей гармоники, с которой гармоника значима"),
+    "camshaft.drive": ("timing drive", "привод распределительного вала"),
+    "camshaft.drive_pitch_radius": ("pitch radius of the sprocket, pulley or gear",
+                                    "радиус начальной окружности звёздочки, шкива или шестерни"),
+    "camshaft.drive_allowable_force": ("allowable force of the timing drive", "допустимая сила привода"),
 })
 
 NAMES.update({

@@ -2,8 +2,7 @@
 
 A figure is its data and its drawing: ``X_data(result)`` gives the series a figure shows (plain arrays in the
 units of its axes, names and angles), ``draw_X(data, t)`` draws them with the texts ``t`` of a language, and
-``X_figure(result, t)`` is the two in turn (the contour, curvature, dynamics, grinding and hydraulic figures still
-read the design as they draw).
+``X_figure(result, t)`` is the two in turn.
 
 Each figure has fixed margins (``subplots_adjust``): those that ``tight_layout`` chose for the widest labels of the
 shipped examples in English and Russian, rounded outwards; ``tight_layout`` measured every text of a figure before
@@ -18,10 +17,12 @@ from matplotlib.figure import Figure
 import numpy as np
 
 from ..design.dynamics import event_window
+from ..design.valve import RHO_MIN
 from ..design.results import shown_value
 from ..units import MM, per_cam_degree, rad_to_deg, to_display
 from .i18n import TEXT
 from .names import value_text
+from .numbers import number
 
 
 def _segment_lines(ax, law):
@@ -166,30 +167,72 @@ def strength_speed_figure(valve, t) -> Figure:
     return draw_strength_speed(strength_speed_data(valve), t)
 
 
-def contour_figure(valve, t):
-    """The cam contour to scale, with the heel circle (and the pitch curve of a roller)."""
+def contour_data(valve) -> dict[str, Any]:
+    """The series of :func:`draw_contour`: the contour and, for a roller, its pitch curve [mm, in the cam's frame:
+    nose on +y, the cam turning counter-clockwise (:mod:`valvetrain.geometry`)], the heel radius [mm], and the rays
+    of the nose, the valve's opening and closing and the gas-exchange TDC: ``(name, camshaft angle [deg from the
+    nose], crank angle [deg from the gas-exchange TDC])``."""
+    x, y = valve.contour / MM
+    pitch = None
+    if valve.follower_model.rolling:
+        h, dh, d2h = valve.law.derivatives(valve.contour_angle)[:3]
+        pitch = valve.follower_model.pitch_curve(valve.contour_angle, valve.heel_radius, h, dh, d2h)[0] / MM
+    nose = shown_value(valve.cam, "nose")
+    rays = [(key, (crank - nose) / 2.0, crank) for key, crank in (
+        ("nose", nose), ("opens", shown_value(valve.cam, "valve_opens")),
+        ("closes", shown_value(valve.cam, "valve_closes")), ("tdc", 0.0))]
+    return {"name": valve.name, "x_mm": x, "y_mm": y, "pitch_mm": pitch, "heel_mm": valve.heel_radius / MM,
+            "rays": rays}
+
+
+def draw_contour(d, t) -> Figure:
+    """The cam contour to scale, with the heel circle (and the pitch curve of a roller), the direction of rotation,
+    and rays from the centre to the nose, the valve's opening and closing and the gas-exchange TDC (the timing
+    reference), each with its crank angle."""
     fig = Figure(figsize=(7, 7))
     ax = fig.subplots()
-    x, y = valve.contour / MM
+    x, y = d["x_mm"], d["y_mm"]
     ax.plot(np.append(x, x[0]), np.append(y, y[0]), color="k", lw=1.5, label=t["contour"])
     phi = np.linspace(0, 2 * np.pi, 361)
-    r = valve.heel_radius / MM
+    r = d["heel_mm"]
     ax.plot(r * np.cos(phi), r * np.sin(phi), ls="--", color="C2", lw=0.8, label=t["heel_circle"])
-    follower = valve.follower_model
-    if follower.rolling:
-        h, dh, d2h = valve.law.derivatives(valve.contour_angle)[:3]
-        px, py = follower.pitch_curve(valve.contour_angle, valve.heel_radius, h, dh, d2h)[0] / MM
-        ax.plot(px, py, color="C1", lw=0.8, label=t["pitch_curve"])
+    if d["pitch_mm"] is not None:
+        ax.plot(*d["pitch_mm"], color="C1", lw=0.8, label=t["pitch_curve"])
+    outline = (x, y) if d["pitch_mm"] is None else d["pitch_mm"]
+    reach = 1.12 * float(max(np.max(np.hypot(x, y)), np.max(np.hypot(*outline))))
+    for key, cam_deg, crank_deg in d["rays"]:
+        u = np.array([np.sin(np.radians(cam_deg)), np.cos(np.radians(cam_deg))])
+        colour = "C3" if key == "tdc" else "C0"
+        end = (1.2 if key == "tdc" else 1.0) * reach * u        # the reference beyond the events: no label on another
+        ax.plot([0.0, end[0]], [0.0, end[1]], color=colour, lw=0.7, ls="-." if key == "tdc" else "-")
+        ax.annotate(t["ray_" + key].format(crank=number(crank_deg, t["lang"])), end, xytext=(4 * u[0], 4 * u[1]),
+                    textcoords="offset points", fontsize=8, color=colour,
+                    ha="left" if u[0] > 0.2 else "right" if u[0] < -0.2 else "center",
+                    va="bottom" if u[1] > 0.2 else "top" if u[1] < -0.2 else "center")
+    arc = np.radians(np.linspace(200.0, 250.0, 30))
+    ax.plot(0.8 * reach * np.cos(arc), 0.8 * reach * np.sin(arc), color="0.3", lw=1.0)
+    ax.annotate("", xy=(0.8 * reach * np.cos(arc[-1] + 0.08), 0.8 * reach * np.sin(arc[-1] + 0.08)),
+                xytext=(0.8 * reach * np.cos(arc[-1]), 0.8 * reach * np.sin(arc[-1])),
+                arrowprops={"arrowstyle": "-|>", "color": "0.3", "lw": 1.0})
+    ax.annotate(t["rotation"], (0.8 * reach * np.cos(arc[0]), 0.8 * reach * np.sin(arc[0])), xytext=(-4, 4),
+                textcoords="offset points", fontsize=8, color="0.3", ha="right", va="bottom")
     ax.axhline(0, color="0.6", lw=0.5)
     ax.axvline(0, color="0.6", lw=0.5)
     ax.set_aspect("equal")
+    ax.set_xlim(-1.7 * reach, 1.7 * reach)
+    ax.set_ylim(-1.25 * reach, 1.4 * reach)
     ax.set_xlabel(t["x_mm"])
     ax.set_ylabel(t["y_mm"])
-    ax.legend(loc="lower right")
+    ax.legend(loc="lower right", fontsize=8)
     ax.grid(alpha=0.3)
-    ax.set_title(f"{valve.name}: {t['contour']}")
+    ax.set_title(f"{d['name']}: {t['contour']}")
     fig.subplots_adjust(left=0.1, right=0.97, bottom=0.09, top=0.94)
     return fig
+
+
+def contour_figure(valve, t) -> Figure:
+    """:func:`draw_contour` of :func:`contour_data`."""
+    return draw_contour(contour_data(valve), t)
 
 
 def time_area_data(valve) -> dict[str, Any]:
@@ -226,25 +269,55 @@ def time_area_figure(valve, t) -> Figure:
     return draw_time_area(time_area_data(valve), t)
 
 
-def curvature_figure(valve, t):
-    """Radius of curvature of the profile (and the pressure angle of a roller) against camshaft angle."""
+def curvature_data(valve) -> dict[str, Any]:
+    """The series of :func:`draw_curvature`: camshaft angle [deg from the nose], the profile's radius of curvature
+    [mm] (and a roller's pressure angle [deg], else None), the junctions of the law's segments [deg], the limits the
+    checks apply [mm]: the smallest recommended radius and the undercut (a radius at or below 0: a flat face
+    cannot follow it, a roller's pitch curve is then no wider than the roller), and the smallest radius (angle [deg],
+    radius [mm])."""
     tab = valve.table
-    x = rad_to_deg(tab.cam_angle)
+    beta = rad_to_deg(tab.pressure_angle) if valve.follower_model.rolling else None
+    return {"name": valve.name, "cam_deg": rad_to_deg(tab.cam_angle), "rho_mm": tab.rho / MM, "pressure_deg": beta,
+            "boundaries_deg": segment_boundaries(valve.law), "rho_min_limit_mm": RHO_MIN / MM,
+            "undercut_mm": 0.0, "rho_min": (shown_value(valve.profile, "rho_min_angle"),
+                                            shown_value(valve.profile, "rho_min"))}
+
+
+def draw_curvature(d, t) -> Figure:
+    """Radius of curvature of the profile (and the pressure angle of a roller) against camshaft angle, with the
+    recommended minimum radius and the undercut limit as lines and the smallest radius marked."""
+    x = d["cam_deg"]
     fig = Figure(figsize=(8, 4.5))
     ax = fig.subplots()
-    ax.plot(x, tab.rho / MM, color="C0")
+    ax.plot(x, d["rho_mm"], color="C0")
     ax.set_xlabel(t["cam_deg"])
     ax.set_ylabel(t["rho"])
-    ax.axhline(0.0, color="0.5", lw=0.5)
+    ax.axhline(d["undercut_mm"], color="C3", lw=1.0, label=t["undercut_limit"])
+    ax.axhline(d["rho_min_limit_mm"], color="C1", lw=1.0, ls="--",
+               label=t["rho_min_limit"].format(rho=number(d["rho_min_limit_mm"], t["lang"])))
+    angle, rho = d["rho_min"]
+    if rho is not None and angle is not None:
+        ax.plot([angle], [rho], marker="o", color="C0", ms=5, ls="none",
+                label=t["rho_min_point"].format(rho=number(rho, t["lang"]), angle=number(angle, t["lang"])))
+    finite = d["rho_mm"][np.isfinite(d["rho_mm"])]
+    if finite.size:
+        top = max(float(np.percentile(finite, 98)), 2.0 * d["rho_min_limit_mm"])
+        ax.set_ylim(min(float(finite.min()), 0.0) - 0.08 * top, 1.1 * top)
     ax.grid(alpha=0.3)
-    _segment_lines(ax, valve.law)
-    if valve.follower_model.rolling:
+    _boundary_lines(ax, d["boundaries_deg"])
+    ax.legend(loc="best", fontsize=8)
+    if d["pressure_deg"] is not None:
         ax2 = ax.twinx()
-        ax2.plot(x, rad_to_deg(tab.pressure_angle), color="C1")
-        ax2.set_ylabel(t["pressure_angle"], color="C1")
-    ax.set_title(f"{valve.name}: {t['rho']}")
+        ax2.plot(x, d["pressure_deg"], color="C2")
+        ax2.set_ylabel(t["pressure_angle"], color="C2")
+    ax.set_title(f"{d['name']}: {t['rho']}")
     fig.subplots_adjust(left=0.13, right=0.9, bottom=0.14, top=0.91)
     return fig
+
+
+def curvature_figure(valve, t) -> Figure:
+    """:func:`draw_curvature` of :func:`curvature_data`."""
+    return draw_curvature(curvature_data(valve), t)
 
 
 def spring_data(valve) -> dict[str, Any]:
@@ -440,25 +513,32 @@ def two_stroke_speed_figure(ports, t) -> Figure:
 
 def timing_data(valves) -> dict[str, Any]:
     """The series of :func:`draw_timing`: crank angle [deg from the gas-exchange TDC], each valve's kind and lift
-    [mm] there, and where intake and exhaust are open together (None without both kinds)."""
+    [mm] there, its opening and closing [crank deg], and where intake and exhaust are open together (None without
+    both kinds)."""
     crank = np.radians(np.linspace(-360.0, 360.0, 2881))
-    lifts, open_by_kind = {}, {}
+    lifts, events, open_by_kind = {}, {}, {}
     for name, v in valves.items():
         lift = v.law.valve_lift((crank - v.nose_crank) / 2.0, v.rocker_ratio, v.follower_model)
         lifts[name] = (v.kind, lift / MM)
+        events[name] = (shown_value(v.cam, "valve_opens"), shown_value(v.cam, "valve_closes"))
         open_by_kind[v.kind] = open_by_kind.get(v.kind, np.zeros_like(crank, dtype=bool)) | (lift > 0.0)
     overlap = open_by_kind["intake"] & open_by_kind["exhaust"] if len(open_by_kind) == 2 else None
-    return {"crank_deg": rad_to_deg(crank), "lifts_mm": lifts, "overlap": overlap}
+    return {"crank_deg": rad_to_deg(crank), "lifts_mm": lifts, "events_crank_deg": events, "overlap": overlap}
 
 
 def draw_timing(d, t) -> Figure:
     """The valve timing diagram: every valve's lift against the crank angle from the gas-exchange TDC on one axis,
-    the overlap of intake and exhaust shaded."""
+    its opening and closing angles written at the axis, the overlap of intake and exhaust shaded."""
     fig = Figure(figsize=(9, 4))
     ax = fig.subplots()
     for name, (kind, lift) in d["lifts_mm"].items():
-        ax.plot(d["crank_deg"], lift, label=name if name == kind else f"{name} ({t[kind]})",
-                color="C0" if kind == "intake" else "C3")
+        colour = "C0" if kind == "intake" else "C3"
+        ax.plot(d["crank_deg"], lift, label=name if name == kind else f"{name} ({t[kind]})", color=colour)
+        for angle in d["events_crank_deg"][name]:
+            shown = (angle + 360.0) % 720.0 - 360.0
+            ax.plot([shown], [0.0], marker="|", ms=10, color=colour)
+            ax.annotate(f"{number(angle, t['lang'])}°", (shown, 0.0), xytext=(0, 6), textcoords="offset points",
+                        rotation=90, fontsize=7, color=colour, ha="center", va="bottom")
     if d["overlap"] is not None:
         ax.fill_between(d["crank_deg"], 0.0, 1.0, where=d["overlap"], transform=ax.get_xaxis_transform(),
                         color="0.85", label=t["overlap"])
@@ -480,81 +560,132 @@ def timing_figure(valves, t) -> Figure:
     return draw_timing(timing_data(valves), t)
 
 
-def dynamics_map_figure(name, d, t):
-    """Maps over camshaft angle and engine speed: valve lift minus the rigid lift, and the cam contact force."""
+def _speed_marks(values) -> list[Any]:
+    """Engine speeds [rad/s] in rpm for the marks of a figure, None where not defined (not finite)."""
+    return [to_display(v, "rpm") if np.isfinite(v) else None for v in values]
+
+
+def dynamics_map_data(name, d) -> dict[str, Any]:
+    """The series of :func:`draw_dynamics_map`: camshaft angles of the event window [deg from the nose], engine
+    speeds [rpm], the maps of valve lift minus the rigid lift [mm] and of the cam contact force [N] (speeds x
+    angles), the jump and bounce speeds [rpm] (None: none) and the valve's name."""
     sw = d.sweep
     keep = event_window(d)
-    x = rad_to_deg(sw.theta[keep])
-    y = to_display(np.asarray(d.per_speed.speed), "rpm")
+    return {"name": name, "cam_deg": rad_to_deg(sw.theta[keep]), "rpm": to_display(np.asarray(d.per_speed.speed), "rpm"),
+            "lift_error_mm": sw.lift_error[:, keep] / MM, "contact_force_N": sw.contact_force[:, keep],
+            "jump_rpm": _speed_marks([d.jump_speed])[0], "bounce_rpm": _speed_marks([d.bounce_speed])[0]}
+
+
+def draw_dynamics_map(d, t) -> Figure:
+    """Maps over camshaft angle and engine speed: valve lift minus the rigid lift, and the cam contact force."""
+    x, y, err = d["cam_deg"], d["rpm"], d["lift_error_mm"]
     fig = Figure(figsize=(9, 8))
     axes = fig.subplots(2, 1, sharex=True)
-    err = sw.lift_error[:, keep] / MM
     bound = float(np.abs(err).max()) or 1.0
     for ax, z, label, cmap, kw in ((axes[0], err, t["dyn_lift_error"], "RdBu_r", dict(vmin=-bound, vmax=bound)),
-                                   (axes[1], sw.contact_force[:, keep], t["dyn_contact_force"], "viridis", {})):
+                                   (axes[1], d["contact_force_N"], t["dyn_contact_force"], "viridis", {})):
         mesh = ax.pcolormesh(x, y, z, cmap=cmap, shading="auto", rasterized=True, **kw)
         fig.colorbar(mesh, ax=ax, label=label)
         ax.set_ylabel(t["speed"])
-        for value, style in ((d.jump_speed, "--"), (d.bounce_speed, ":")):
-            if np.isfinite(value):
-                ax.axhline(to_display(value, "rpm"), color="k", lw=0.8, ls=style)
-    axes[0].set_title(f"{name}: {t['dyn_lift_error']}")
+        for value, style in ((d["jump_rpm"], "--"), (d["bounce_rpm"], ":")):
+            if value is not None:
+                ax.axhline(value, color="k", lw=0.8, ls=style)
+    axes[0].set_title(f"{d['name']}: {t['dyn_lift_error']}")
     axes[1].set_title(t["dyn_contact_force"] + " (" + t["dyn_zero_is_jump"] + ")")
     axes[1].set_xlabel(t["cam_deg"])
     fig.subplots_adjust(left=0.1, right=0.97, bottom=0.08, top=0.94, hspace=0.13)
     return fig
 
 
-def dynamics_speed_figure(name, d, t):
+def dynamics_map_figure(name, d, t) -> Figure:
+    """:func:`draw_dynamics_map` of :func:`dynamics_map_data`."""
+    return draw_dynamics_map(dynamics_map_data(name, d), t)
+
+
+def dynamics_speed_data(name, d) -> dict[str, Any]:
+    """The series of :func:`draw_dynamics_speed`: engine speed [rpm], |seating velocity| [m/s] (NaN: no seating),
+    bounce [mm], the smallest contact force [N], the jump, bounce and rated speeds [rpm] (None: none) and the
+    valve's name."""
+    p = d.per_speed
+    jump, bounce, rated = _speed_marks([d.jump_speed, d.bounce_speed, d.at_rated_speed.speed])
+    return {"name": name, "rpm": to_display(np.asarray(p.speed), "rpm"),
+            "seating_velocity_m_s": np.abs(np.array(p.seating_velocity, dtype=float)),
+            "bounce_mm": np.asarray(p.bounce) / MM, "min_contact_force_N": np.asarray(p.min_contact_force),
+            "jump_rpm": jump, "bounce_rpm": bounce, "rated_rpm": rated}
+
+
+def draw_dynamics_speed(d, t) -> Figure:
     """Seating velocity, bounce and the smallest contact force against the engine speed, the headline speeds
     marked."""
-    p = d.per_speed
-    n = to_display(np.asarray(p.speed), "rpm")
+    n = d["rpm"]
     fig = Figure(figsize=(9, 8))
     axes = fig.subplots(3, 1, sharex=True)
-    axes[0].plot(n, np.abs(np.array(p.seating_velocity, dtype=float)), color="C3")   # None (no seating): a gap
+    axes[0].plot(n, d["seating_velocity_m_s"], color="C3")   # NaN (no seating): a gap
     axes[0].set_ylabel(t["dyn_seating_velocity"])
-    axes[1].plot(n, np.asarray(p.bounce) / MM, color="C1")
+    axes[1].plot(n, d["bounce_mm"], color="C1")
     axes[1].set_ylabel(t["dyn_bounce"])
-    axes[2].plot(n, p.min_contact_force, color="C0")
+    axes[2].plot(n, d["min_contact_force_N"], color="C0")
     axes[2].set_ylabel(t["dyn_min_force"])
     axes[2].set_xlabel(t["speed"])
     for ax in axes:
         ax.grid(alpha=0.3)
-        marks = ((d.jump_speed, t["dyn_jump_speed"], "--"), (d.bounce_speed, t["dyn_bounce_speed"], ":"),
-                 (d.at_rated_speed.speed, t["dyn_rated"], "-."))
+        marks = ((d["jump_rpm"], t["dyn_jump_speed"], "--"), (d["bounce_rpm"], t["dyn_bounce_speed"], ":"),
+                 (d["rated_rpm"], t["dyn_rated"], "-."))
         for value, label, style in marks:
-            if np.isfinite(value):
-                ax.axvline(to_display(value, "rpm"), color="0.3", lw=0.8, ls=style, label=label)
+            if value is not None:
+                ax.axvline(value, color="0.3", lw=0.8, ls=style, label=label)
     axes[0].legend(fontsize=8)
-    axes[0].set_title(f"{name}: {t['dyn_title']}")
+    axes[0].set_title(f"{d['name']}: {t['dyn_title']}")
     fig.subplots_adjust(left=0.1, right=0.97, bottom=0.08, top=0.94, hspace=0.1)
     return fig
 
 
-def grinding_figure(valve, t):
-    """The cam, the wheel-centre path and the master to scale; the lift error of the worn wheel against cam angle."""
+def dynamics_speed_figure(name, d, t) -> Figure:
+    """:func:`draw_dynamics_speed` of :func:`dynamics_speed_data`."""
+    return draw_dynamics_speed(dynamics_speed_data(name, d), t)
+
+
+def grinding_data(valve) -> dict[str, Any]:
+    """The series of :func:`draw_grinding`: the cam contour, the wheel-centre path and the master contour [mm]
+    (``(x, y)``, None where there is none), the lift error of the worn wheel exact and to first order [um] against
+    the camshaft angle [deg from the nose] (None where the cam cannot be ground), the law's segment boundaries
+    [deg], the wheel wear [mm] and the valve's name."""
     g = valve.grinding
+    w = g.wear
+    return {"name": valve.name,
+            "contours": [(kind, None if pts is None else pts / MM) for kind, pts in
+                         (("cam", g.cam_contour), ("wheel_path", g.wheel_path), ("master", g.master_contour))],
+            "cam_deg": None if w is None else rad_to_deg(w.cam_angle),
+            "error_um": None if w is None else w.error / MM * 1e3,
+            "error_first_order_um": None if w is None else w.error_first_order / MM * 1e3,
+            "boundaries_deg": segment_boundaries(valve.law), "wheel_wear_mm": g.wheel_wear / MM}
+
+
+GRINDING_STYLES = {"cam": ("gr_cam", dict(color="k", lw=1.5)), "wheel_path": ("gr_wheel_path", dict(color="C1", lw=0.8, ls="--")),
+                   "master": ("gr_master", dict(color="C0", lw=1.2))}
+"""The text key and line style of each contour of the grinding figure."""
+
+
+def draw_grinding(d, t) -> Figure:
+    """The cam, the wheel-centre path and the master to scale; the lift error of the worn wheel against cam angle."""
     fig = Figure(figsize=(12, 5.5))
     left, right = fig.subplots(1, 2, gridspec_kw={"width_ratios": [1, 1.3]})
-    for pts, label, style in ((g.cam_contour, t["gr_cam"], dict(color="k", lw=1.5)),
-                              (g.wheel_path, t["gr_wheel_path"], dict(color="C1", lw=0.8, ls="--")),
-                              (g.master_contour, t["gr_master"], dict(color="C0", lw=1.2))):
+    for kind, pts in d["contours"]:
         if pts is not None:
-            x, y = pts / MM
-            left.plot(np.append(x, x[0]), np.append(y, y[0]), label=label, **style)
+            x, y = pts
+            label, style = GRINDING_STYLES[kind]
+            left.plot(np.append(x, x[0]), np.append(y, y[0]), label=t[label], **style)
     left.set_aspect("equal")
     left.set_xlabel(t["x_mm"])
     left.set_ylabel(t["y_mm"])
     left.grid(alpha=0.3)
     left.legend(loc="lower right", fontsize=8)
     left.set_title(t["gr_contours"])
-    w = g.wear
-    if w is not None:
-        x = rad_to_deg(w.cam_angle)
-        right.plot(x, w.error / MM * 1e3, color="C3", label=t["gr_exact"])
-        right.plot(x, w.error_first_order / MM * 1e3, color="C0", ls="--", label=t["gr_first_order"])
-        _segment_lines(right, valve.law)
+    if d["cam_deg"] is not None:
+        x = d["cam_deg"]
+        right.plot(x, d["error_um"], color="C3", label=t["gr_exact"])
+        right.plot(x, d["error_first_order_um"], color="C0", ls="--", label=t["gr_first_order"])
+        _boundary_lines(right, d["boundaries_deg"])
         right.legend(loc="upper right", fontsize=8)
     else:
         right.text(0.5, 0.5, t["gr_not_grindable"], ha="center", va="center", transform=right.transAxes, wrap=True)
@@ -562,72 +693,113 @@ def grinding_figure(valve, t):
     right.set_xlabel(t["cam_deg"])
     right.set_ylabel(t["gr_error_um"])
     right.grid(alpha=0.3)
-    right.set_title(t["gr_error_title"].format(wear=g.wheel_wear / MM))
-    fig.suptitle(f"{valve.name}: {t['gr_title']}")
+    right.set_title(t["gr_error_title"].format(wear=d["wheel_wear_mm"]))
+    fig.suptitle(f"{d['name']}: {t['gr_title']}")
     fig.subplots_adjust(left=0.08, right=0.98, bottom=0.12, top=0.87, wspace=0.16)
     return fig
 
 
-def hydraulic_figure(valve, t):
+def grinding_figure(valve, t) -> Figure:
+    """:func:`draw_grinding` of :func:`grinding_data`."""
+    return draw_grinding(grinding_data(valve), t)
+
+
+def hydraulic_data(valve) -> dict[str, Any]:
+    """The series of :func:`draw_hydraulic` against the camshaft angle [deg from the nose]: the pressures at the pump
+    and the actuator [MPa], where the liquid cavitates, the valve lift and the rigid drive's [mm]; the vapour pressure
+    [MPa], the stop [mm], the lift-off point ``(angle [deg], pressure [MPa], gas force [kN])`` (None where the gas
+    force is not simulated or the valve does not lift off) and the valve's name."""
+    h = valve.hydraulic
+    r = h.response
+    x = rad_to_deg(r.angle)
+    off = r.lift_off()
+    lift_off = None
+    if h.gas_force is not None and off < r.angle.size:
+        lift_off = (float(x[off]), float(r.actuator_pressure[off] / 1e6), float(r.gas_force[off] / 1e3))
+    return {"name": valve.name, "cam_deg": x, "pump_MPa": r.pump_pressure / 1e6,
+            "actuator_MPa": r.actuator_pressure / 1e6, "cavitation": np.asarray(r.cavitation),
+            "vapour_MPa": h.vapour_pressure / 1e6, "lift_off": lift_off, "valve_lift_mm": r.valve_lift / MM,
+            "rigid_lift_mm": r.rigid_lift / MM, "stop_mm": h.stop / MM}
+
+
+def draw_hydraulic(d, t) -> Figure:
     """The pressures at both ends of the pipe and the valve lift against the rigid drive's, against camshaft angle."""
-    r = valve.hydraulic.response
     fig = Figure(figsize=(10, 7))
     top, bottom = fig.subplots(2, 1, sharex=True)
-    x = rad_to_deg(r.angle)
-    top.plot(x, r.pump_pressure / 1e6, color="C0", lw=1.0, label=t["hy_pump"])
-    top.plot(x, r.actuator_pressure / 1e6, color="C3", lw=1.0, label=t["hy_actuator"])
-    top.axhline(valve.hydraulic.vapour_pressure / 1e6, color="0.5", lw=0.6, ls=":", label=t["hy_vapour"])
-    cav = r.cavitation
+    x = d["cam_deg"]
+    top.plot(x, d["pump_MPa"], color="C0", lw=1.0, label=t["hy_pump"])
+    top.plot(x, d["actuator_MPa"], color="C3", lw=1.0, label=t["hy_actuator"])
+    top.axhline(d["vapour_MPa"], color="0.5", lw=0.6, ls=":", label=t["hy_vapour"])
+    cav = d["cavitation"]
     if cav.any():
-        top.plot(x[cav], np.full(int(cav.sum()), valve.hydraulic.vapour_pressure / 1e6), "x", color="k", ms=3,
-                 label=t["hy_cavitation"])
-    off = r.lift_off()
-    if valve.hydraulic.gas_force is not None and off < r.angle.size:
-        top.plot(x[off], r.actuator_pressure[off] / 1e6, "o", color="k", ms=5,
-                 label=t["hy_lift_off"].format(force=r.gas_force[off] / 1e3))
+        top.plot(x[cav], np.full(int(cav.sum()), d["vapour_MPa"]), "x", color="k", ms=3, label=t["hy_cavitation"])
+    if d["lift_off"] is not None:
+        angle, pressure, force = d["lift_off"]
+        top.plot(angle, pressure, "o", color="k", ms=5, label=t["hy_lift_off"].format(force=force))
     top.set_ylabel(t["hy_pressure"])
     top.grid(alpha=0.3)
     top.legend(loc="upper right", fontsize=8)
-    bottom.plot(x, r.valve_lift / MM, color="C2", label=t["hy_valve"])
-    bottom.plot(x, r.rigid_lift / MM, color="k", ls="--", lw=0.8, label=t["hy_rigid"])
-    bottom.axhline(valve.hydraulic.stop / MM, color="C3", ls=":", lw=1.0, label=t["hy_stop"])
+    bottom.plot(x, d["valve_lift_mm"], color="C2", label=t["hy_valve"])
+    bottom.plot(x, d["rigid_lift_mm"], color="k", ls="--", lw=0.8, label=t["hy_rigid"])
+    bottom.axhline(d["stop_mm"], color="C3", ls=":", lw=1.0, label=t["hy_stop"])
     bottom.set_xlabel(t["cam_deg"])
     bottom.set_ylabel(t["hy_lift"])
     bottom.grid(alpha=0.3)
     bottom.legend(loc="upper right", fontsize=8)
-    fig.suptitle(f"{valve.name}: {t['hy_title']}")
+    fig.suptitle(f"{d['name']}: {t['hy_title']}")
     fig.subplots_adjust(left=0.07, right=0.98, bottom=0.09, top=0.92, hspace=0.08)
     return fig
 
 
-def hydraulic_sweep_figure(valve, t):
-    """The largest pressure, the lift loss and the delays of the hydraulic drive against the engine speed, the
-    simulated speed marked."""
+def hydraulic_figure(valve, t) -> Figure:
+    """:func:`draw_hydraulic` of :func:`hydraulic_data`."""
+    return draw_hydraulic(hydraulic_data(valve), t)
+
+
+def hydraulic_sweep_data(valve) -> dict[str, Any]:
+    """The series of :func:`draw_hydraulic_sweep` against the engine speed [rpm]: the largest pressure [MPa], the
+    lift loss [mm], the opening and closing delays [cam deg] (NaN: not defined), where the liquid cavitates; the
+    simulated speed [rpm] and the valve's name."""
     h = valve.hydraulic
     p = h.per_speed
-    n = to_display(np.asarray(p.speed), "rpm")
+    return {"name": valve.name, "rpm": to_display(np.asarray(p.speed), "rpm"),
+            "max_pressure_MPa": np.asarray(p.max_pressure) / 1e6, "lift_loss_mm": np.asarray(p.lift_loss) / MM,
+            "opening_delay_deg": rad_to_deg(np.array(p.opening_delay, dtype=float)),
+            "closing_delay_deg": rad_to_deg(np.array(p.closing_delay, dtype=float)),
+            "cavitation": np.asarray(p.cavitation), "simulated_rpm": to_display(h.speed, "rpm")}
+
+
+def draw_hydraulic_sweep(d, t) -> Figure:
+    """The largest pressure, the lift loss and the delays of the hydraulic drive against the engine speed, the
+    simulated speed marked."""
+    n = d["rpm"]
     fig = Figure(figsize=(9, 8))
     axes = fig.subplots(3, 1, sharex=True)
-    axes[0].plot(n, np.asarray(p.max_pressure) / 1e6, "o-", color="C3", ms=3)
+    axes[0].plot(n, d["max_pressure_MPa"], "o-", color="C3", ms=3)
     axes[0].set_ylabel(t["hy_max_pressure"])
-    axes[1].plot(n, np.asarray(p.lift_loss) / MM, "o-", color="C1", ms=3)
+    axes[1].plot(n, d["lift_loss_mm"], "o-", color="C1", ms=3)
     axes[1].set_ylabel(t["hy_lift_loss"])
-    for values, label, color in ((p.opening_delay, t["hy_opening_delay"], "C0"),
-                                 (p.closing_delay, t["hy_closing_delay"], "C2")):
-        axes[2].plot(n, rad_to_deg(np.array(values, dtype=float)), "o-", color=color, ms=3, label=label)  # None: a gap
+    for values, label, color in ((d["opening_delay_deg"], t["hy_opening_delay"], "C0"),
+                                 (d["closing_delay_deg"], t["hy_closing_delay"], "C2")):
+        axes[2].plot(n, values, "o-", color=color, ms=3, label=label)  # NaN: a gap
     axes[2].set_ylabel(t["hy_delay"])
     axes[2].legend(fontsize=8)
     axes[2].set_xlabel(t["speed"])
     for ax in axes:
         ax.grid(alpha=0.3)
-        ax.axvline(to_display(h.speed, "rpm"), color="0.3", lw=0.8, ls="-.")
-    cav = np.asarray(p.cavitation)
+        ax.axvline(d["simulated_rpm"], color="0.3", lw=0.8, ls="-.")
+    cav = d["cavitation"]
     if cav.any():
-        axes[0].plot(n[cav], np.asarray(p.max_pressure)[cav] / 1e6, "x", color="k", ms=6, label=t["hy_cavitation"])
+        axes[0].plot(n[cav], d["max_pressure_MPa"][cav], "x", color="k", ms=6, label=t["hy_cavitation"])
         axes[0].legend(fontsize=8)
-    axes[0].set_title(f"{valve.name}: {t['hy_sweep_title']}")
+    axes[0].set_title(f"{d['name']}: {t['hy_sweep_title']}")
     fig.subplots_adjust(left=0.08, right=0.97, bottom=0.08, top=0.94, hspace=0.12)
     return fig
+
+
+def hydraulic_sweep_figure(valve, t) -> Figure:
+    """:func:`draw_hydraulic_sweep` of :func:`hydraulic_sweep_data`."""
+    return draw_hydraulic_sweep(hydraulic_sweep_data(valve), t)
 
 
 DYNAMICS_FIGURES = {"dynamics_map": dynamics_map_figure, "dynamics_speed": dynamics_speed_figure}
@@ -652,10 +824,45 @@ def _saver(folder, share=(0, 1)):
         return fname
     return save
 
+def camshaft_torque_data(shaft) -> dict[str, Any]:
+    """The series of :func:`draw_camshaft_torque`: the camshaft angle [cam deg from cylinder 1's gas-exchange TDC],
+    the drive torque of the whole camshaft and its mean [N m], the orders 1, 2, ... and their amplitudes [N m]."""
+    orders = np.asarray(shaft.figures.orders)
+    return {"cam_deg": rad_to_deg(shaft.psi), "torque_Nm": shaft.torque, "mean_Nm": shaft.figures.mean,
+            "orders": np.arange(1, orders.size), "amplitudes_Nm": orders[1:]}
+
+
+def draw_camshaft_torque(d, t) -> Figure:
+    """The camshaft's drive torque over a revolution and its orders of the camshaft speed."""
+    fig = Figure(figsize=(9, 7))
+    top, bottom = fig.subplots(2, 1)
+    top.plot(d["cam_deg"], d["torque_Nm"], color="k", lw=1.2, label=t["total"])
+    top.axhline(d["mean_Nm"], color="C3", ls="--", lw=1.0, label=t["mean"])
+    top.axhline(0, color="0.5", lw=0.5)
+    top.set_xlabel(t["cs_cam_deg"])
+    top.set_ylabel(t["torque"])
+    top.set_xticks(np.arange(0, 361, 45))
+    top.grid(alpha=0.3)
+    top.legend(loc="upper right", fontsize=8)
+    bottom.bar(d["orders"], d["amplitudes_Nm"], color="C0")
+    bottom.set_xlabel(t["cs_order"])
+    bottom.set_ylabel(t["cs_amplitude"])
+    bottom.grid(alpha=0.3, axis="y")
+    fig.suptitle(t["cs_torque_title"])
+    fig.subplots_adjust(left=0.1, right=0.97, bottom=0.08, top=0.93, hspace=0.3)
+    return fig
+
+
+def camshaft_torque_figure(shaft, t) -> Figure:
+    """:func:`draw_camshaft_torque` of :func:`camshaft_torque_data`."""
+    return draw_camshaft_torque(camshaft_torque_data(shaft), t)
+
+
 ENGINE_FIGURES = {"crank": {"crank_forces": crank_forces_figure, "crank_torque": crank_torque_figure,
                             "crank_pin_polar": crank_pin_figure},
                   "two_stroke": {"two_stroke_ports": two_stroke_ports_figure,
-                                 "two_stroke_time_area": two_stroke_speed_figure}}
+                                 "two_stroke_time_area": two_stroke_speed_figure},
+                  "camshaft": {"camshaft_torque": camshaft_torque_figure}}
 
 
 FIGURES = {"kinematics": kinematics_figure, "contour": contour_figure, "time_area": time_area_figure,
