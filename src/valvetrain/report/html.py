@@ -6,7 +6,7 @@ from html import unescape
 
 import re
 
-from jinja2 import Environment, PackageLoader, select_autoescape
+from jinja2 import Environment, FileSystemBytecodeCache, PackageLoader, select_autoescape
 from markupsafe import Markup
 import numpy as np
 
@@ -17,6 +17,7 @@ from ..design.dynamics import SOURCES as DYNAMICS_SOURCES
 from ..design.grinding import SOURCES as GRINDING_SOURCES
 from ..design.hydraulic_actuation import SOURCES as HYDRAULIC_SOURCES
 from ..design.lash_adjuster import SOURCES as ADJUSTER_SOURCES
+from ..design.camshaft import WORKS as CAMSHAFT_SOURCES
 from ..design.lubrication import SOURCES as LUBRICATION_SOURCES
 from ..design.results import NamedValues, record, shown, shown_value
 from ..design.drive import spring_options
@@ -39,6 +40,12 @@ REPORT_STEP_DEG = 10.0
 CAM_FIELDS = ("main_half_angle", "ramp_angle", "ramp_height", "tappet_lift", "event", "nose", "cam_speed",
               "max_velocity", "max_acceleration", "min_acceleration")
 """The law stage's figures in the report's law table (:class:`valvetrain.design.valve.CamResult`)."""
+
+BYTECODE_CACHES = {lang: FileSystemBytecodeCache(pattern=f"__jinja2_valvetrain_{lang}_%s.cache") for lang in TEXT}
+"""The compiled template of each language, kept between runs in Jinja2's folder of the temporary directory
+(compiling it is a fifth of a second of every run; a changed template is compiled again).  One per language: Jinja2
+applies a filter to a literal when it compiles (``{{ "mm" | unit }}``), so a filter applied to a literal must depend
+on the language alone (``fmt``, ``unit``), never on the run."""
 
 FLOW_FIELDS = ("throat_area", "valve_lift", "max_curtain_area", "v1", "v2")
 TIME_AREA_FIELDS = ("stroke", "time_area", "time_area_open", "v3", "charge_velocity", "fullness")
@@ -194,10 +201,10 @@ def _material(valve, spring):
 
 def _geometry(v):
     """The rows of the report's geometry table: the follower and the radii of the cam, the curvature, the contact
-    (flat or roller) and the undercut, those that exist."""
+    (flat or roller), the undercut and a finger's linkage, those that exist."""
     rows = (shown(v.cam, "follower", "base_radius", "heel_radius")
             + shown(v.profile, "rho_min", "rho_min_angle", "rho_max", "rho_max_angle") + shown(v.profile.contact)
-            + shown(v.profile, "undercut"))
+            + shown(v.profile, "undercut") + (shown(v.profile.finger) if v.profile.finger is not None else []))
     return [(k, val) for k, val in rows if val is not None]
 
 
@@ -319,6 +326,30 @@ def _lubrication(v):
             "table": _table(lub.per_speed, LUBRICATION_COLUMNS)}
 
 
+CAMSHAFT_ROWS = ["lobes", "camshaft_per_crank_revolution", "peak_torque_Nm", "peak_torque_cam_deg",
+                 "lowest_torque_Nm", "mean_torque_Nm", "fluctuating_torque_Nm", "rms_fluctuating_torque_Nm", "power_W",
+                 "natural_frequencies_Hz", "frequency_ratio", "largest_twist_cam_deg", "largest_twist_crank_deg",
+                 "largest_deflection_mm", "drive_force_max_N", "drive_force_mean_N", "drive_allowable_force_N"]
+"""The rows of the report's table of the camshaft's figures (results.json keys)."""
+
+CAMSHAFT_STATIONS = ["station_positions_mm", "station_inertias_kg_mm2", "max_twist_cam_deg", "deflection_mm"]
+"""The columns of the report's table of the lobe stations."""
+
+
+def _camshaft(results, spec, plots):
+    """The camshaft chapter for the report: its inputs, figures, stations and significant orders."""
+    if results.camshaft is None:
+        return None
+    rec = record(results.camshaft.figures)
+    amplitudes = rec["order_amplitudes_Nm"]
+    return {"inputs": [(k, v) for k, v in _flatten(spec["camshaft"]) if k != "valves"], "valves": rec["valves"],
+            "rows": [(k, rec[k]) for k in CAMSHAFT_ROWS], "columns": CAMSHAFT_STATIONS,
+            "stations": list(zip(rec["cylinders"], *(rec[c] for c in CAMSHAFT_STATIONS), strict=True)),
+            "orders": [(k, amplitudes[k], n) for k, n in zip(rec["significant_orders"], rec["resonance_speeds_rpm"],
+                                                              strict=True)],
+            "plots": plots.get("camshaft", {})}
+
+
 ADJUSTER_COLUMNS = ["speed_rpm", "leak_down_um", "valve_lash_um", "refill_share", "pump_up_um", "held_open_um"]
 """The columns of the report's table of the lash adjuster against engine speed."""
 
@@ -403,7 +434,8 @@ def render_report(results, plots, lang="en", folder=None):
         The output folder holding ``plots/``: the figures are embedded in the report (one file to mail); without
         it they are linked.
     """
-    env = Environment(loader=PackageLoader("valvetrain", "report/templates"), autoescape=select_autoescape())
+    env = Environment(loader=PackageLoader("valvetrain", "report/templates"), autoescape=select_autoescape(),
+                      bytecode_cache=BYTECODE_CACHES[lang])
     env.filters["fmt"] = lambda x: fmt(x, lang)
     env.filters["label"] = lambda key: label(key, lang)
     env.filters["named"] = lambda key: has_name(key)
@@ -493,6 +525,7 @@ def render_report(results, plots, lang="en", folder=None):
         hydraulic_sources=HYDRAULIC_SOURCES, lubrication_sources=LUBRICATION_SOURCES,
         adjuster_sources=ADJUSTER_SOURCES,
         step=REPORT_STEP_DEG, output=_flatten(spec["output"]), crank=crank, ports=ports,
+        camshaft=_camshaft(results, spec, plots), camshaft_sources=CAMSHAFT_SOURCES,
     )
     template = env.get_template("report.html")
     # the bibliography lists the works the report actually cites: found by their short form in a first rendering
