@@ -168,6 +168,11 @@ WORKS = {
         authors="Norton, R. L.",
         title="Cam Design and Manufacturing Handbook, 2nd ed.", kind="book", publisher="Industrial Press",
         place="New York", year="2009"),
+    "wang2007": Work(
+        short="Wang (2007)",
+        authors="Wang, Y.",
+        title="Introduction to Engine Valvetrains", kind="book", publisher="SAE International", place="Warrendale, PA",
+        year="2007"),
     "johnson1985": Work(
         short="Johnson (1985)",
         authors="Johnson, K. L.",
@@ -269,6 +274,11 @@ WORKS = {
         publisher="Mechanisms and Surface Distress, Proceedings of the 12th Leeds-Lyon Symposium on Tribology, "
                   "Butterworths, pp. 305-322", place="London", year="1986",
         note="The kinematics and the film of a cam and flat follower."),
+    "denhartog1956": Work(
+        short="Den Hartog (1956)",
+        authors="Den Hartog, J. P.",
+        title="Mechanical Vibrations, 4th ed.", kind="book", publisher="McGraw-Hill", place="New York", year="1956",
+        note="The natural frequencies of torsional systems of several masses on an elastic shaft."),
 }
 """Every cited work by its key."""
 

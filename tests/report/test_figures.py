@@ -1,4 +1,4 @@
-"""Issue 24: the contour drawing, the curvature plot and the timing diagram of the built-in example (the appendix of
+"""Issue 24: the contour drawing, the curvature plot and the timing diagram of the appendix example (the appendix of
 Valve-train practical works (n.d.): intake opens 26 deg before the TDC and closes 78 deg after the BDC, Phi = 27 + 6
 + 38 = 71 cam deg from the end of the ramp to the nose)."""
 
@@ -8,12 +8,13 @@ import pytest
 from valvetrain.design import run
 from valvetrain.report import plots
 from valvetrain.report.i18n import TEXT
-from valvetrain.specification import example_spec
+
+from appendix import appendix_spec
 
 
 @pytest.fixture(scope="module")
 def results():
-    return run(example_spec())
+    return run(appendix_spec())
 
 
 def test_the_contour_turns_the_way_its_arrow_shows(results):

@@ -17,6 +17,7 @@ from ..design.dynamics import SOURCES as DYNAMICS_SOURCES
 from ..design.grinding import SOURCES as GRINDING_SOURCES
 from ..design.hydraulic_actuation import SOURCES as HYDRAULIC_SOURCES
 from ..design.lash_adjuster import SOURCES as ADJUSTER_SOURCES
+from ..design.camshaft import WORKS as CAMSHAFT_SOURCES
 from ..design.lubrication import SOURCES as LUBRICATION_SOURCES
 from ..design.results import NamedValues, record, shown, shown_value
 from ..design.drive import spring_options
@@ -194,10 +195,10 @@ def _material(valve, spring):
 
 def _geometry(v):
     """The rows of the report's geometry table: the follower and the radii of the cam, the curvature, the contact
-    (flat or roller) and the undercut, those that exist."""
+    (flat or roller), the undercut and a finger's linkage, those that exist."""
     rows = (shown(v.cam, "follower", "base_radius", "heel_radius")
             + shown(v.profile, "rho_min", "rho_min_angle", "rho_max", "rho_max_angle") + shown(v.profile.contact)
-            + shown(v.profile, "undercut"))
+            + shown(v.profile, "undercut") + (shown(v.profile.finger) if v.profile.finger is not None else []))
     return [(k, val) for k, val in rows if val is not None]
 
 
@@ -317,6 +318,30 @@ def _lubrication(v):
     return {"rows": _present(lub, *_except(lub, "per_speed", "follower", "zero_entrainment")),
             "zero": shown_value(lub, "zero_entrainment"), "columns": LUBRICATION_COLUMNS,
             "table": _table(lub.per_speed, LUBRICATION_COLUMNS)}
+
+
+CAMSHAFT_ROWS = ["lobes", "camshaft_per_crank_revolution", "peak_torque_Nm", "peak_torque_cam_deg",
+                 "lowest_torque_Nm", "mean_torque_Nm", "fluctuating_torque_Nm", "rms_fluctuating_torque_Nm", "power_W",
+                 "natural_frequencies_Hz", "frequency_ratio", "largest_twist_cam_deg", "largest_twist_crank_deg",
+                 "largest_deflection_mm", "drive_force_max_N", "drive_force_mean_N", "drive_allowable_force_N"]
+"""The rows of the report's table of the camshaft's figures (results.json keys)."""
+
+CAMSHAFT_STATIONS = ["station_positions_mm", "station_inertias_kg_mm2", "max_twist_cam_deg", "deflection_mm"]
+"""The columns of the report's table of the lobe stations."""
+
+
+def _camshaft(results, spec, plots):
+    """The camshaft chapter for the report: its inputs, figures, stations and significant orders."""
+    if results.camshaft is None:
+        return None
+    rec = record(results.camshaft.figures)
+    amplitudes = rec["order_amplitudes_Nm"]
+    return {"inputs": [(k, v) for k, v in _flatten(spec["camshaft"]) if k != "valves"], "valves": rec["valves"],
+            "rows": [(k, rec[k]) for k in CAMSHAFT_ROWS], "columns": CAMSHAFT_STATIONS,
+            "stations": list(zip(rec["cylinders"], *(rec[c] for c in CAMSHAFT_STATIONS), strict=True)),
+            "orders": [(k, amplitudes[k], n) for k, n in zip(rec["significant_orders"], rec["resonance_speeds_rpm"],
+                                                              strict=True)],
+            "plots": plots.get("camshaft", {})}
 
 
 ADJUSTER_COLUMNS = ["speed_rpm", "leak_down_um", "valve_lash_um", "refill_share", "pump_up_um", "held_open_um"]
@@ -493,6 +518,7 @@ def render_report(results, plots, lang="en", folder=None):
         hydraulic_sources=HYDRAULIC_SOURCES, lubrication_sources=LUBRICATION_SOURCES,
         adjuster_sources=ADJUSTER_SOURCES,
         step=REPORT_STEP_DEG, output=_flatten(spec["output"]), crank=crank, ports=ports,
+        camshaft=_camshaft(results, spec, plots), camshaft_sources=CAMSHAFT_SOURCES,
     )
     template = env.get_template("report.html")
     # the bibliography lists the works the report actually cites: found by their short form in a first rendering

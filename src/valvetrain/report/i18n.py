@@ -757,6 +757,89 @@ TEXT["ru"].update({
 })
 
 
+TEXT["en"].update({
+    "cs_chapter": "The whole camshaft: drive torque, torsion, bending and the timing drive",
+    "cs_method": "Every lobe of the camshaft's valves on every cylinder of the shaft, each at its nose's camshaft "
+                 "angle from the engine's firing order (the camshaft turns at half the crank angle of a "
+                 "four-stroke); one lobe's torque at the rated speed is its valve's drive torque F dh/dθ under the "
+                 "cam force of the valve's stages (the simulated force where the dynamics ran), with the friction "
+                 "torque of the cam contact where the lubrication was computed. The orders of the camshaft speed by "
+                 "the discrete Fourier transform of a revolution; the twist of each lobe station behind the drive "
+                 "end under the instantaneous torque, quasi-static, the shaft's sections in series (T l / G J); the "
+                 "torsional natural frequencies of the stations' inertias (lobes, the valve train reduced to the "
+                 "camshaft, the shaft) on the shaft held at its drive end; the bending deflection of each station "
+                 "under its largest cam force on a simply supported span between its journals; the force of the "
+                 "timing drive, the torque over the pitch radius",
+    "cs_valves": "Lobes of the valves",
+    "cs_angle": "camshaft angle from the gas-exchange TDC of cylinder 1",
+    "cs_cam_deg": "camshaft angle from the gas-exchange TDC of cylinder 1, deg",
+    "cs_order": "order of the camshaft speed", "cs_amplitude": "amplitude, N·m",
+    "cs_torque_title": "drive torque of the camshaft and its orders",
+    "cs_stations": "Lobe stations", "cs_cylinder": "cylinder",
+    "cs_orders": "Significant orders of the camshaft speed",
+    "cs_names": {
+        "lobes": "lobes", "camshaft_per_crank_revolution": "camshaft revolutions per crank revolution",
+        "peak_torque_Nm": "largest drive torque, N·m", "peak_torque_cam_deg": "where, cam deg",
+        "lowest_torque_Nm": "smallest drive torque, N·m", "mean_torque_Nm": "mean drive torque, N·m",
+        "fluctuating_torque_Nm": "fluctuating torque (largest − smallest), N·m",
+        "rms_fluctuating_torque_Nm": "root mean square of the fluctuation, N·m",
+        "power_W": "power taken at the rated speed, W",
+        "natural_frequencies_Hz": "torsional natural frequencies, Hz",
+        "frequency_ratio": "first natural frequency / highest significant order at the over-speed",
+        "largest_twist_cam_deg": "largest twist behind the drive end, cam deg",
+        "largest_twist_crank_deg": "the same, crank deg", "largest_deflection_mm": "largest bending deflection, mm",
+        "drive_force_max_N": "largest force of the timing drive, N", "drive_force_mean_N": "mean force, N",
+        "drive_allowable_force_N": "allowable force, N",
+        "station_positions_mm": "position from the drive end, mm",
+        "station_inertias_kg_mm2": "inertia, kg·mm²", "max_twist_cam_deg": "largest twist, cam deg",
+        "deflection_mm": "bending deflection, mm", "order": "order", "order_amplitudes_Nm": "amplitude, N·m",
+        "resonance_speeds_rpm": "resonant engine speed, rpm",
+    },
+})
+
+TEXT["ru"].update({
+    "cs_chapter": "Распределительный вал в целом: момент привода, кручение, изгиб, привод вала",
+    "cs_method": "Все кулачки клапанов вала на всех его цилиндрах, каждый при угле поворота распределительного вала "
+                 "своей вершины по порядку работы цилиндров (распределительный вал четырёхтактного двигателя "
+                 "поворачивается на половину угла коленчатого вала); момент одного кулачка на номинальной частоте — "
+                 "момент привода его клапана F dh/dθ от силы на кулачке, найденной расчётом клапана (рассчитанной "
+                 "динамикой силы, где она считалась), с моментом трения в контакте кулачка, где рассчитана смазка. "
+                 "Гармоники частоты вращения распределительного вала — дискретным преобразованием Фурье за оборот; "
+                 "закрутка каждого сечения кулачков относительно приводного конца под мгновенным моментом, "
+                 "квазистатически, участки вала последовательно (T l / G J); собственные частоты крутильных колебаний "
+                 "моментов инерции сечений (кулачки, привод клапана, приведённый к валу, сам вал) на валу, "
+                 "закреплённом у приводного конца; прогиб вала у каждого сечения под наибольшей силой на кулачке как "
+                 "балки на двух опорах между его шейками; окружная сила привода — момент, делённый на радиус "
+                 "начальной окружности",
+    "cs_valves": "Кулачки клапанов",
+    "cs_angle": "угол поворота распределительного вала от ВМТ газообмена цилиндра 1",
+    "cs_cam_deg": "угол поворота распределительного вала от ВМТ газообмена цилиндра 1, °",
+    "cs_order": "порядок гармоники частоты вращения распределительного вала", "cs_amplitude": "амплитуда, Н·м",
+    "cs_torque_title": "момент привода распределительного вала и его гармоники",
+    "cs_stations": "Сечения кулачков", "cs_cylinder": "цилиндр",
+    "cs_orders": "Значимые гармоники частоты вращения распределительного вала",
+    "cs_names": {
+        "lobes": "число кулачков", "camshaft_per_crank_revolution": "оборотов распределительного вала за оборот "
+                                                                    "коленчатого вала",
+        "peak_torque_Nm": "наибольший момент привода, Н·м", "peak_torque_cam_deg": "где, град ПРВ",
+        "lowest_torque_Nm": "наименьший момент привода, Н·м", "mean_torque_Nm": "средний момент привода, Н·м",
+        "fluctuating_torque_Nm": "размах момента (наибольший − наименьший), Н·м",
+        "rms_fluctuating_torque_Nm": "среднеквадратичное колебание момента, Н·м",
+        "power_W": "мощность привода на номинальной частоте, Вт",
+        "natural_frequencies_Hz": "собственные частоты крутильных колебаний, Гц",
+        "frequency_ratio": "первая собственная частота / наивысшая значимая гармоника на максимальной частоте",
+        "largest_twist_cam_deg": "наибольшая закрутка относительно приводного конца, град ПРВ",
+        "largest_twist_crank_deg": "то же, град ПКВ", "largest_deflection_mm": "наибольший прогиб, мм",
+        "drive_force_max_N": "наибольшая окружная сила привода, Н", "drive_force_mean_N": "средняя окружная сила, Н",
+        "drive_allowable_force_N": "допустимая сила, Н",
+        "station_positions_mm": "расстояние от приводного конца, мм",
+        "station_inertias_kg_mm2": "момент инерции, кг·мм²", "max_twist_cam_deg": "наибольшая закрутка, град ПРВ",
+        "deflection_mm": "прогиб, мм", "order": "порядок", "order_amplitudes_Nm": "амплитуда, Н·м",
+        "resonance_speeds_rpm": "резонансная частота вращения двигателя, об/мин",
+    },
+})
+
+
 SYMBOLS = {
     "D": ("D", "bore, mm", "диаметр цилиндра, мм"), "S": ("S", "piston stroke, mm", "ход поршня, мм"),
     "ic": ("i<sub>c</sub>", "number of cylinders", "число цилиндров"),

@@ -823,10 +823,45 @@ def _saver(folder, share=(0, 1)):
         return fname
     return save
 
+def camshaft_torque_data(shaft) -> dict[str, Any]:
+    """The series of :func:`draw_camshaft_torque`: the camshaft angle [cam deg from cylinder 1's gas-exchange TDC],
+    the drive torque of the whole camshaft and its mean [N m], the orders 1, 2, ... and their amplitudes [N m]."""
+    orders = np.asarray(shaft.figures.orders)
+    return {"cam_deg": rad_to_deg(shaft.psi), "torque_Nm": shaft.torque, "mean_Nm": shaft.figures.mean,
+            "orders": np.arange(1, orders.size), "amplitudes_Nm": orders[1:]}
+
+
+def draw_camshaft_torque(d, t) -> Figure:
+    """The camshaft's drive torque over a revolution and its orders of the camshaft speed."""
+    fig = Figure(figsize=(9, 7))
+    top, bottom = fig.subplots(2, 1)
+    top.plot(d["cam_deg"], d["torque_Nm"], color="k", lw=1.2, label=t["total"])
+    top.axhline(d["mean_Nm"], color="C3", ls="--", lw=1.0, label=t["mean"])
+    top.axhline(0, color="0.5", lw=0.5)
+    top.set_xlabel(t["cs_cam_deg"])
+    top.set_ylabel(t["torque"])
+    top.set_xticks(np.arange(0, 361, 45))
+    top.grid(alpha=0.3)
+    top.legend(loc="upper right", fontsize=8)
+    bottom.bar(d["orders"], d["amplitudes_Nm"], color="C0")
+    bottom.set_xlabel(t["cs_order"])
+    bottom.set_ylabel(t["cs_amplitude"])
+    bottom.grid(alpha=0.3, axis="y")
+    fig.suptitle(t["cs_torque_title"])
+    fig.subplots_adjust(left=0.1, right=0.97, bottom=0.08, top=0.93, hspace=0.3)
+    return fig
+
+
+def camshaft_torque_figure(shaft, t) -> Figure:
+    """:func:`draw_camshaft_torque` of :func:`camshaft_torque_data`."""
+    return draw_camshaft_torque(camshaft_torque_data(shaft), t)
+
+
 ENGINE_FIGURES = {"crank": {"crank_forces": crank_forces_figure, "crank_torque": crank_torque_figure,
                             "crank_pin_polar": crank_pin_figure},
                   "two_stroke": {"two_stroke_ports": two_stroke_ports_figure,
-                                 "two_stroke_time_area": two_stroke_speed_figure}}
+                                 "two_stroke_time_area": two_stroke_speed_figure},
+                  "camshaft": {"camshaft_torque": camshaft_torque_figure}}
 
 
 FIGURES = {"kinematics": kinematics_figure, "contour": contour_figure, "time_area": time_area_figure,
