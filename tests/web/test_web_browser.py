@@ -80,7 +80,11 @@ def table_shows_its_source(page):
     """The checks table's first rendered rows show the first values of its source (a grid that kept the old rows
     after new data came was a bug)."""
     values = model_data(page, "checks")["value"][:4]
-    rows = [r.split("\n") for r in page.locator(".slick-row").all_inner_texts()[:4]]
+    texts = page.evaluate("""() => {
+        const v = Bokeh.index.find_one(Bokeh.documents[0].get_model_by_name('checks'));
+        return Array.from(v.shadow_el.querySelectorAll('.slick-row')).map(r => r.innerText);
+    }""")
+    rows = [r.split("\n") for r in texts[:4]]
     return [r[1] for r in rows] == values
 
 

@@ -258,8 +258,10 @@ class Session:
         return handles(self.good_document, self.spec, name, self.good["series"][name])
 
     def drag(self, name, handle, x, y):
-        """Move a handle of valve ``name`` to (x, y) and design (:func:`moved`, :meth:`edit`)."""
-        return self.edit(moved(self.good_document, self.spec, name, handle, x, y))
+        """Move a handle of valve ``name`` to (x, y) and design (:func:`moved`, :meth:`edit`).  Returns the keys set
+        (``{dotted key: value}``) when it designed, else an empty dict."""
+        values = moved(self.good_document, self.spec, name, handle, x, y)
+        return values if self.edit(values) else {}
 
     def pin(self):
         """Pin the good design as the baseline that the plots and the checks table compare with."""
