@@ -174,4 +174,7 @@ def test_downloaded_toml_validates(designer, tmp_path):
         designer.get_by_text("Download report").click()
     report = tmp_path / "report.html"
     info.value.save_as(report)
-    assert report.read_text(encoding="utf-8").startswith("<!DOCTYPE html>")
+    text = report.read_text(encoding="utf-8")
+    assert text.startswith("<!DOCTYPE html>")
+    # the figures of `valvetrain run` (--figures main) embedded, among them the kinematics
+    assert re.search(r'<img src="data:image/png;base64,[^"]+" alt="lift, velocity, acceleration and jerk">', text)

@@ -1,6 +1,7 @@
 """The designer's callbacks without a browser: the session (edits, drags, baseline, TOML) and the page's handlers
 on a Bokeh document."""
 
+import re
 import tomllib
 
 import numpy as np
@@ -98,6 +99,9 @@ def test_page_callbacks():
     assert np.max(np.abs(v[off] - slope[off])) < 0.01 * np.max(np.abs(slope))
     d.on_report()
     assert d.report_text.text.startswith("<!DOCTYPE html>") and 'lang="ru"' in d.report_text.text
+    # the figures of `valvetrain run --figures main` (README: the kinematics among them) embedded, drawn in memory
+    assert re.search(r'<img src="data:image/png;base64,[^"]+" alt="подъём, скорость, ускорение и рывок">',
+                     d.report_text.text)
     d.on_toml()
     assert tomllib.loads(d.toml_text.text)["valves"]["intake"]["max_lift_mm"] == 10.5
 

@@ -269,7 +269,7 @@ class Session:
 
     def report(self, lang):
         """The report of the good design as HTML text in ``lang``."""
-        return api.report_html(without_nones(self.good_document), lang)
+        return api.report_html(without_nones(self.good_document), lang, "main")
 
     def toml(self):
         """The specification of the good design as TOML text (every default written out)."""
