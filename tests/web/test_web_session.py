@@ -118,3 +118,58 @@ def test_sessions_are_separate():
     a.edit({"engine.rated_speed_rpm": 6000.0})
     assert b.document["engine"]["rated_speed_rpm"] == 7000
     assert b.good["results"]["engine"]["rated_speed_rpm"] == 7000
+
+
+def test_power_polynomial_handles_follow_its_keys():
+    from pathlib import Path
+
+    examples = Path(__file__).parents[2] / "examples"
+    s = Session.start((examples / "ukrsurt2019-diesel.toml").read_text(encoding="utf-8"), examples)
+    h = {x.name: x for x in s.handles("intake")}
+    # phi_p0 = (40 + 180 + 55) / 2 crank deg / 2 = 68.75 cam deg: the ramp (12 deg) starts at -80.75, the positive
+    # part (phi1 = 19.3) ends at -68.75 + 19.3 = -49.45, its peak at -68.75 + 0.2 x 19.3 = -64.89
+    assert (h["ramp"].x, h["peak"].x, h["phi1"].x) == (pytest.approx(-80.75), pytest.approx(-64.89),
+                                                        pytest.approx(-49.45))
+    # the peak of the valve acceleration: a_qd x i x omega^2 = 0.1352 m/rad² x 1 x (1000 rpm x pi/30 / 2)² = 370.66
+    # m/s² (the series is sampled every 0.5 cam deg)
+    assert h["peak"].y == pytest.approx(370.66, rel=5e-3)
+    assert s.drag("intake", "peak", -62.89, 1.2 * h["peak"].y)
+    cam = s.document["valves"]["intake"]["cam"]
+    # x_d = (-62.89 + 68.75) / 19.3 = 0.3036 (to 3 digits); a_qd = 1.2 x 135.2 mm/rad²
+    assert (cam["peak_position"], cam["peak_acceleration_mm_per_rad2"]) == (0.304, pytest.approx(162.24, rel=5e-3))
+    peak = next(x for x in s.handles("intake") if x.name == "peak")
+    assert peak.x == pytest.approx(-68.75 + 0.304 * 19.3)
+    assert peak.y == pytest.approx(1.2 * 370.66, rel=5e-3)
+    assert s.drag("intake", "ramp", -82.0, 0.0)
+    assert s.document["valves"]["intake"]["cam"]["ramp_angle_deg"] == 82.0 - 68.75
+    assert s.good["series"]["intake"]["segments_cam_deg"][0] == pytest.approx(-82.0)
+    assert s.drag("intake", "phi1", -48.0, 0.0)
+    assert s.document["valves"]["intake"]["cam"]["phi1_deg"] == 68.75 - 48.0
+    assert s.drag("intake", "trough", -30.0, 0.0)
+    assert 0.02 <= s.document["valves"]["intake"]["cam"]["trough_position"] <= 0.98
+
+
+def test_combined_cam_segment_ends_set_lengths_and_ratios():
+    s = Session.start()
+    doc = s.document
+    doc["valves"]["intake"]["cam"] = {"law": "combined", "base_radius_mm": 20.0, "ramp_end_velocity_mm_per_deg": 0.02,
+                                      "segments": [{"shape": "half_sine", "length_deg": 25.0},
+                                                   {"shape": "quarter_sine", "length_deg": 8.0},
+                                                   {"shape": "parabola_to_nose", "length_deg": 38.0}],
+                                      "ratios": [{"segment": 2, "value": 0.625}]}
+    assert s.apply(doc), s.problems
+    h = {x.name: x for x in s.handles("intake")}
+    # phi_p0 = 71 cam deg: segment 1 ends at -71 + 25 = -46, segment 2 at -46 + 8 = -38; the last ends at the nose
+    assert sorted(h) == ["end.1", "end.2", "nose"]
+    assert (h["end.1"].x, h["end.2"].x) == (pytest.approx(-46.0), pytest.approx(-38.0))
+    assert s.drag("intake", "end.1", -48.0, 0.0)
+    # segment 1: -48 + 71 = 23 deg, segment 2: 25 + 8 - 23 = 10 deg (segment 2's end stays)
+    assert [seg["length_deg"] for seg in s.document["valves"]["intake"]["cam"]["segments"]] == [23.0, 10.0, 38.0]
+    series = s.good["series"]["intake"]
+    nose = float(np.interp(0.0, series["cam_deg"], series["valve_acceleration_m_s2"]))
+    assert s.drag("intake", "end.2", -38.0, 0.5 * nose)
+    # the ratio's definition: a(end of segment 2) = value x a(nose), the value 0.5 where the handle was put
+    assert s.document["valves"]["intake"]["cam"]["ratios"] == [{"segment": 2, "value": 0.5}]
+    series = s.good["series"]["intake"]
+    a = np.interp([-38.0, 0.0], series["cam_deg"], series["valve_acceleration_m_s2"])
+    assert a[0] / a[1] == pytest.approx(0.5, rel=1e-6)

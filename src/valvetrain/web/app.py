@@ -512,8 +512,11 @@ class Designer:
         if len(new["x"]) != len(placed):      # a point deleted: put the handles back
             self._handles(self._omega(self.session.good))
             return
+        omega = self._omega(self.session.good)
         for (name, x, y), nx, ny in zip(placed, new["x"], new["y"], strict=True):
             if abs(nx - x) > 1e-9 or abs(ny - y) > 1e-9:
+                if plot == "acceleration" and omega is not None:     # to m/s², as the session takes it
+                    ny = ny / float(per_degree(1.0, 2, omega))
                 keys = self.session.drag(self.valve, name, nx, ny)
                 if keys:
                     self.redraw()
@@ -527,8 +530,9 @@ class Designer:
         """The panel's inputs show the values a drag set (``{dotted key: value}``)."""
         self._syncing = True
         for path, value in values.items():
-            if path in self.fields:
-                self.fields[path].value = value
+            w = self.fields.get(path)
+            if w is not None:
+                w.value = value if isinstance(w, NumericInput) else value_text(value)
         self._syncing = False
 
     def on_language(self, attr, old, new):
