@@ -173,3 +173,19 @@ def test_combined_cam_segment_ends_set_lengths_and_ratios():
     series = s.good["series"]["intake"]
     a = np.interp([-38.0, 0.0], series["cam_deg"], series["valve_acceleration_m_s2"])
     assert a[0] / a[1] == pytest.approx(0.5, rel=1e-6)
+
+
+def test_sweep_starts_when_the_page_has_drawn_the_newest_kinematics():
+    d = Designer(Document(), Session.start())
+    started = []
+    d.start_sweep = lambda: started.append(d.kinematic_stamp.data["n"][0])
+    d.redraw()
+    newest = d.kinematic_stamp.data["n"][0]
+    d.on_drawn("data", None, {"n": [newest - 1]})         # an older redraw drawn: its sweep would be stale
+    assert started == []
+    d.on_drawn("data", None, {"n": [newest]})
+    d.on_drawn("data", None, {"n": [newest]})             # once per redraw
+    assert started == [newest]
+    d.redraw(sweep=False)                                 # a language or unit switch: no new sweep
+    d.on_drawn("data", None, {"n": [newest + 1]})
+    assert started == [newest]
