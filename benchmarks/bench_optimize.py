@@ -10,11 +10,12 @@ command's own and cannot disagree with it.  Printed for each case, beside its ba
   the outputs), against the goal of 10 s for the article's case;
 * the evaluations of the search and the time of one (law, objective, margins, and the dynamics where a point needs
   it), as the command measured it (wall time, what a loaded machine stretches);
-* the processor time of one evaluation without the dynamics (:meth:`Problem.evaluate` with ``dynamics=False``, the
-  cache emptied) at the search's own points, against its baseline, the processor time of one evaluation of the
-  start's law on the search's grid of angles (:data:`GRID`): each evaluation at :data:`PAIRED` of the search's
-  points is followed by one of the law, so that both see the same load, in :data:`PASSES` passes; the goal is at
-  most 3 law evaluations per evaluation.  Printed: the ratio of the summed times and that of each pass;
+* the processor time of one evaluation without the dynamics, against its baseline, the processor time of one
+  evaluation of the start's law on the search's grid of angles (:data:`GRID`): the search's calls are replayed as it
+  made them (:meth:`Problem.evaluate_many` with ``dynamics=False``, the cache emptied: each generation's population
+  as one batch, each point of the polish on its own), each call followed by as many evaluations of the law as it
+  evaluated points, so that both see the same load, in :data:`PASSES` passes; the goal is at most 3 law evaluations
+  per evaluation.  Printed: the ratio of the summed times and that of each pass;
 * the angles at which the law was sampled per evaluation, and the dynamics simulations of the search;
 * the objective at the start and at the optimum, and whether every limit is met (exit status 0).
 
@@ -39,43 +40,51 @@ from valvetrain.synthesis import optimize
 from valvetrain.synthesis.optimize import GRID
 
 UKRSURT = Path(__file__).parents[1] / "examples" / "ukrsurt2019-diesel.toml"
-PAIRED = 600
-"""Points of the search (evenly spread over it) at which an evaluation is timed against the law's."""
 PASSES = 3
-"""Passes over the points; each gives a ratio."""
+"""Passes over the search's calls; each gives a ratio."""
 
 
 class _Recorded(optimize.Problem):
-    """The command's problem, kept (:data:`PROBLEMS`) to time its evaluations again at its own points."""
+    """The command's problem, kept (:data:`PROBLEMS`) with the points each of its calls evaluated (``calls``), to
+    time its evaluations again as the search made them."""
 
     def __init__(self, *args, **kwargs):
         super().__init__(*args, **kwargs)
+        self.calls = []
         PROBLEMS.append(self)
+
+    def evaluate_many(self, xs, dynamics=None):
+        before = len(self.points)
+        out = super().evaluate_many(xs, dynamics)
+        if len(self.points) > before:
+            self.calls.append(self.points[before:])
+        return out
 
 
 PROBLEMS = []
 
 
 def paired(problem, law):
-    """(ratio of each pass, summed evaluation time [s], summed law time [s], points): processor time of
-    :meth:`Problem.evaluate` without the dynamics at the search's points, each followed by an evaluation of the start's
-    law on the search's grid, over :data:`PASSES` passes."""
+    """(ratio of each pass, summed evaluation time [s], summed law time [s], evaluations, calls): processor time of
+    the search's calls of :meth:`Problem.evaluate_many` replayed without the dynamics, each followed by as many
+    evaluations of the start's law on the search's grid as it evaluated points, over :data:`PASSES` passes."""
     theta = np.linspace(law.start, 0.0, GRID)
-    points = [problem.points[i] for i in np.linspace(0, len(problem.points) - 1, PAIRED).astype(int)]
+    calls = list(problem.calls)
     ratios, total_eval, total_law = [], 0.0, 0.0
     for _ in range(PASSES):
         problem._cache.clear()
         evaluation = base = 0.0
-        for x in points:
+        for points in calls:
             t0 = time.process_time()
-            problem.evaluate(x, dynamics=False)
+            problem.evaluate_many(points, dynamics=False)
             t1 = time.process_time()
-            law.derivatives(theta)
+            for _ in points:
+                law.derivatives(theta)
             t2 = time.process_time()
             evaluation, base = evaluation + t1 - t0, base + t2 - t1
         ratios.append(evaluation / base)
         total_eval, total_law = total_eval + evaluation, total_law + base
-    return ratios, total_eval, total_law, PASSES * len(points)
+    return ratios, total_eval, total_law, PASSES * sum(len(points) for points in calls), len(calls)
 
 
 def case(name, path, *args):
@@ -99,11 +108,11 @@ def case(name, path, *args):
     print(f"  {n} evaluations of {per * 1e3:.2f} ms wall (the dynamics included); {record['law_samples'] / n:.0f} "
           f"law angles per evaluation; {record['simulations']} dynamics simulations; search {record['seconds']:.1f} s "
           f"of the command's {wall:.1f} s")
-    ratios, evaluation, law, points = paired(PROBLEMS[0], run(load_spec(path)).valves[PROBLEMS[0].name].law)
+    ratios, evaluation, law, points, calls = paired(PROBLEMS[0], run(load_spec(path)).valves[PROBLEMS[0].name].law)
     print(f"  processor time, paired: one evaluation without the dynamics {evaluation / points * 1e3:.3f} ms = "
           f"{evaluation / law:.2f} law evaluations (goal: <= 3; the baseline, one law evaluation on {GRID} angles: "
-          f"{law / points * 1e3:.3f} ms, timed after each evaluation, {PAIRED} of the search's points, {PASSES} "
-          f"passes); the passes' ratios {', '.join(f'{r:.2f}' for r in ratios)}")
+          f"{law / points * 1e3:.3f} ms, timed after each call; the search's {calls} calls, {points // PASSES} "
+          f"evaluations, replayed in {PASSES} passes); the passes' ratios {', '.join(f'{r:.2f}' for r in ratios)}")
     print(f"  {record['objective']} {record['start_value']:.6g} -> {record['value']:.6g}; every limit met: "
           f"{record['feasible']}")
 

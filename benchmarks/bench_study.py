@@ -1,9 +1,9 @@
 """Benchmark: a design study of 1,000 points (issue 12 item 4) in local processes and on a Dask LocalCluster.
 
-Run on demand: ``python benchmarks/bench_study.py [--points-per-key N]``.  The grid is the built-in example's
-cam shape factor (40 values) times its rated speed (25 values); ``valvetrain study`` runs it with
-``--workers 2`` and with ``--scheduler`` on a ``dask.distributed.LocalCluster(n_workers=2, processes=True)``
-started here, each as a whole command (start-up, validation, the points, the writing), and the two
+Run on demand: ``python benchmarks/bench_study.py [--points-per-key N]``.  The grid is the appendix example's
+(examples/seed000-appendix-kurz.toml: one valve, no dynamics) cam shape factor (40 values) times its rated speed
+(25 values); ``valvetrain study`` runs it with ``--workers 2`` and with ``--scheduler`` on a
+``dask.distributed.LocalCluster(n_workers=2, processes=True)`` started here, each as a whole command (start-up, validation, the points, the writing), and the two
 ``study.csv`` files are compared byte for byte; the ratio of their throughputs is printed beside the goal of
 issue 22 (>= 0.8).  Before the study, the thread CPU time of one design (which the other jobs of a shared machine
 do not change) in this process and in the cluster's two workers, one as its nanny starts it and one after
@@ -19,7 +19,7 @@ from pathlib import Path
 
 import numpy as np
 
-from valvetrain.specification import example_text
+APPENDIX = Path(__file__).parents[1] / "examples" / "seed000-appendix-kurz.toml"
 
 
 def study(spec, out, *backend):
@@ -56,7 +56,7 @@ def main():
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)
         spec = tmp / "engine.toml"
-        spec.write_text(example_text(), encoding="utf-8")
+        spec.write_text(APPENDIX.read_text(encoding="utf-8"), encoding="utf-8")
         n = ARGS.shape_factors * ARGS.speeds
         local, table_local = study(spec, tmp / "local", "--workers", "2")
         print(f"{n} points, --workers 2: {local:.1f} s ({local / n * 1e3:.1f} ms a point)")

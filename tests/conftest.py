@@ -1,4 +1,4 @@
-"""Shared fixtures: the seed 000 appendix cam; a specification refused by the command line."""
+"""Shared fixtures: the cam of the appendix of Valve-train practical works (n.d.); a specification refused by the command line."""
 
 from click.testing import CliRunner
 import numpy as np
@@ -9,14 +9,14 @@ from valvetrain.cli import main
 from valvetrain.laws import KurzLaw
 
 SEED000_OMEGA_EXACT = np.pi * 3500 / 30
-"""Camshaft speed of the seed 000 appendix, pi n_cam / 30 [rad/s]."""
+"""Camshaft speed of the appendix of Valve-train practical works (n.d.), pi n_cam / 30 [rad/s]."""
 
 SEED000_OMEGA_TABLE = 366.5
-"""The rounded camshaft speed with which Table P1 of seed 000 was computed (spec, section 4)."""
+"""The rounded camshaft speed with which Table P1 of Valve-train practical works (n.d.) was computed (spec, section 4)."""
 
 
 def seed000_law():
-    """The Kurz cam of the seed 000 appendix: h_T max 6.25 mm, h0 0.25 mm, w' 0.02 mm/deg, 27/6/38 deg."""
+    """The Kurz cam of the appendix of Valve-train practical works (n.d.): h_T max 6.25 mm, h0 0.25 mm, w' 0.02 mm/deg, 27/6/38 deg."""
     return KurzLaw(6.25e-3, 0.25e-3, 0.02e-3 * 180 / np.pi, *np.deg2rad([27.0, 6.0, 38.0]), 0.625)
 
 
@@ -38,3 +38,14 @@ def refused(tmp_path):
         assert not out.exists()
         return result.output
     return check
+
+
+def plain(x):
+    """Numbers, text, arrays and containers of them: what a figure's data may hold (no design object)."""
+    if isinstance(x, dict):
+        return all(isinstance(k, str) and plain(v) for k, v in x.items())
+    if isinstance(x, (list, tuple)):
+        return all(plain(v) for v in x)
+    if isinstance(x, np.ndarray):
+        return x.dtype.kind in "biufU"
+    return x is None or isinstance(x, (str, bool, int, float, np.floating))

@@ -11,7 +11,7 @@ DEG = np.pi / 180
 
 @st.composite
 def kurz_params(draw):
-    """Kurz inputs inside seed 000 work 2's recommended ranges.
+    """Kurz inputs inside Valve-train practical works (n.d.), work 2's recommended ranges.
 
     h_T max 4-8 mm; h0 0.25-0.50 mm; w' 0.008-0.022 mm/deg; phi_p0 = (phi_op + 180 + phi_zap)/4 with
     phi_op 20-30, phi_zap 40-78 crank deg (78: the appendix); (Phi2+Phi3)/Phi1 1.5-3.0 (2.4);
@@ -31,7 +31,7 @@ def kurz_params(draw):
 
 @st.composite
 def polydyne_params(draw):
-    """Polydyne inputs: p 6-16 (seed 000 work 3), phi_p0 as for Kurz, with or without a cosine ramp."""
+    """Polydyne inputs: p 6-16 (Valve-train practical works (n.d.), work 3), phi_p0 as for Kurz, with or without a cosine ramp."""
     ramp = draw(st.booleans())
     return dict(lift=draw(st.floats(4.0, 8.0)) * 1e-3,
                 main_half_angle=(draw(st.floats(20.0, 30.0)) + 180.0 + draw(st.floats(40.0, 78.0))) / 4.0 * DEG,

@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from valvetrain import api
-from valvetrain.specification import example_text, parse_spec
+from valvetrain.specification import SpecError, example_text, parse_spec
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 
@@ -77,6 +77,39 @@ def test_errors_are_records_with_key_value_and_range():
     # [engine] bore_mm is declared in 5 ... 2000 mm (specification/models.py)
     assert out["errors"] == [{"path": "engine.bore_mm", "value": "-3.0", "message": "allowed [5, 2000] mm",
                               "text": "engine.bore_mm = -3.0: allowed [5, 2000] mm"}]
+
+
+def test_a_cross_check_error_is_a_record_of_its_key_and_value():
+    """The records are the parts of the problem as found, not read back from its text: a cross-check's line
+    "KEY = VALUE must be smaller than ..." has no ": " after the value, and parsing the text gave no key at all."""
+    document = tomllib.loads(example_text())
+    bore = document["engine"]["bore_mm"]
+    document["valves"]["intake"]["throat_diameter_mm"] = bore + 10.0
+    out = api.design(document)
+    # the line the command line prints, written out by hand from specification/validate.py's rule
+    text = f"valves.intake.throat_diameter_mm = {bore + 10.0:g} must be smaller than engine.bore_mm = {bore:g}"
+    assert out["errors"] == [{"path": "valves.intake.throat_diameter_mm", "value": f"{bore + 10.0:g}",
+                              "message": f"must be smaller than engine.bore_mm = {bore:g}", "text": text}]
+
+
+def test_a_design_stage_error_is_a_record_of_its_key():
+    """A lift beyond half the throat is refused by the law stage (design/valve.py, MAX_LIFT_TO_THROAT = 0.5), its
+    problem naming the valve's key: 0.6 x the throat against the limit 0.5 x the throat, by hand."""
+    document = tomllib.loads(example_text())
+    throat = document["valves"]["intake"]["throat_diameter_mm"]
+    document["valves"]["intake"]["max_lift_mm"] = 0.6 * throat
+    (error,) = api.design(document)["errors"]
+    assert (error["path"], error["value"]) == ("valves.intake.max_lift_mm", f"{0.6 * throat:.4g} mm")
+    assert error["message"].startswith(f"allowed at most 0.5 x throat_diameter_mm = {0.5 * throat:.4g} mm")
+
+
+def test_a_changed_key_that_is_no_table_is_a_record_of_the_key():
+    """Spec.replace's problems name the dotted key they were given."""
+    with pytest.raises(SpecError) as err:
+        parse_spec(example_text()).replace({"engine.bore_mm.x": 1.0})
+    (problem,) = api.error_records(err.value)
+    assert problem["path"] == "engine.bore_mm.x" and problem["value"] is None
+    assert problem["message"] == "engine.bore_mm is a value, not a table"
 
 
 def test_not_a_dict_is_an_error_record():

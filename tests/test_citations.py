@@ -31,12 +31,17 @@ CITATION = re.compile(r"[A-Z][\w'’.-]*(?: [\w'’.-]+){0,5} \((?:1[89]\d\d|20\
 """A short in-text citation: words before ``(year)`` or ``(n.d.)``."""
 
 
+def _modulus(text, m):
+    """Whether the match ``m`` of an ``E1``-like tag in ``text`` is a modulus in arithmetic (``E1 E2 / (E1 + E2)``)."""
+    around = text[max(m.start() - 3, 0):m.end() + 3]
+    return bool(re.search(r"[+*/=^]", around) or re.search(r"E\d+\s+E\d", around))
+
+
 def tags(text):
     """The internal tags in ``text`` (with some context), arithmetic with E1, E2, ... (moduli) excepted."""
     found = []
     for m in TAG.finditer(text):
-        around = text[max(m.start() - 3, 0):m.end() + 3]
-        if m.group().startswith("E") and (re.search(r"[+*/=^]", around) or re.search(r"E\d+\s+E\d", around)):
+        if m.group().startswith("E") and _modulus(text, m):
             continue
         found.append(text[max(m.start() - 40, 0):m.end() + 40])
     return found
@@ -164,8 +169,65 @@ def test_corrections_notes_ship_with_the_package():
     assert numbers == list(range(1, len(numbers) + 1)) and len(numbers) >= 40
     # every "corrections note N" the package cites exists
     cited = set()
-    for path in [*SRC.rglob("*.py"), *SRC.rglob("*.html"), *SRC.rglob("*.toml"), ROOT / "README.md"]:
+    for path in [*SRC.rglob("*.py"), *SRC.rglob("*.html"), *SRC.rglob("*.toml"), ROOT / "README.md",
+                 *(ROOT / "tests").rglob("*.py")]:
         for a, b in re.findall(r"corrections notes? (\d+)(?:-(\d+))?", path.read_text(encoding="utf-8")):
             cited |= set(range(int(a), int(b or a) + 1))
     assert cited and cited <= set(numbers), cited - set(numbers)
     assert bibliography.corrections_text is corrections_text
+
+
+SEED_WORKS = {"000": "vt_works", "001": "power_units", "002": "shang1988", "003": "valve_dynamics_article",
+              "004": "ukrsurt2019"}
+"""The work each seed document of the project is (tests/README-style tags ``seed 000`` ... ``seed 004``); the
+``E1``-``E29`` misprint tags are the corrections notes 1-29 of Valve-train practical works (n.d.)."""
+
+SEED_TAG = re.compile(r"\b[Ss]eeds? (00[0-4])(?:\s*(?:-|–|\.\.\.|and|,)\s*(00[0-4]))?")
+
+
+def _texts(source):
+    """The comments (a run of comment lines as one) and the strings of Python ``source``: ``(line, text)``."""
+    tokens = tokenize.generate_tokens(io.StringIO(source).readline)
+    block, first, last = [], None, None
+    for tok in tokens:
+        if tok.type == tokenize.COMMENT and block and tok.start[0] == last + 1:
+            block.append(tok.string)
+        elif tok.type == tokenize.COMMENT:
+            if block:
+                yield first, " ".join(block)
+            block, first = [tok.string], tok.start[0]
+        elif tok.type == tokenize.STRING:
+            yield tok.start[0], tok.string
+        else:
+            continue
+        last = tok.start[0]
+    if block:
+        yield first, " ".join(block)
+
+
+def uncited_tags(source):
+    """The comments and strings of test ``source`` that carry a seed tag or a misprint tag without the short form
+    of the work the tag stands for: ``(line, tag, short form)``."""
+    found = []
+    for line, text in _texts(source):
+        needed = [(m.group(), SEED_WORKS[g]) for m in SEED_TAG.finditer(text) for g in m.groups() if g]
+        needed += [(m.group(), "vt_works") for m in re.finditer(r"\bE\d{1,2}\b", text) if not _modulus(text, m)]
+        found += [(line, tag, WORKS[key].short) for tag, key in needed if WORKS[key].short not in text]
+    return found
+
+
+def test_the_tag_finder_of_the_tests():
+    """A seed tag or a misprint tag without its work's short form is found; beside it, or a modulus, is not."""
+    assert uncited_tags('"""The appendix of seed 000 (E2)."""') == [
+        (1, "seed 000", "Valve-train practical works (n.d.)"), (1, "E2", "Valve-train practical works (n.d.)")]
+    assert uncited_tags("# seed 004, eq. 7\n") == [(1, "seed 004", "UkrSURT Proceedings (2019)")]
+    assert uncited_tags("# Shang Hanji (1988), eq. 2.6 (seed 002)\n# E_m = 2 E1 E2 / (E1 + E2)\n") == []
+    assert uncited_tags('x = "Valve-train practical works (n.d.), corrections note 2 (E2)"\n') == []
+
+
+def test_tests_cite_their_sources_by_the_short_form():
+    """Every test that cites a source document by its internal tag names the work by the bibliography's short form
+    in the same comment or string, as the code does (this file, which defines the tags, excepted)."""
+    found = [(str(path.relative_to(ROOT)), *hit) for path in sorted((ROOT / "tests").rglob("*.py"))
+             if path != Path(__file__) for hit in uncited_tags(path.read_text(encoding="utf-8"))]
+    assert not found, found

@@ -10,12 +10,14 @@ import pytest
 from valvetrain.cli import main
 from valvetrain.specification import example_text
 
+from appendix import PATH as APPENDIX, appendix_text
+
 ARTEFACTS = ["results.json", "report.html", "tables/intake_lift.csv", "contour/intake.csv", "contour/intake.dxf",
              "plots/intake_kinematics.png", "plots/intake_contour.png", "plots/intake_spring.png"]
 
 MAIN_FIGURES = {"intake_kinematics.png", "intake_contour.png", "intake_spring.png", "intake_strength_speed.png",
                 "valve_timing.png", "crank_torque.png"}
-"""The figures of the built-in example that a run draws by default (README, ``--figures``)."""
+"""The figures of the appendix example that a run draws by default (README, ``--figures``)."""
 
 ON_REQUEST = {"intake_time_area.png", "intake_curvature.png", "crank_forces.png", "crank_pin_polar.png"}
 """Those drawn only with ``--figures all``."""
@@ -30,16 +32,26 @@ def example_run(tmp_path_factory):
 
 
 def test_example_runs_and_writes_every_artefact(example_run):
+    """`valvetrain run` without FILE designs the built-in example: both valves, every warning accepted in the file."""
     out, result = example_run
-    for rel in ARTEFACTS:
-        assert (out / rel).is_file() and (out / rel).stat().st_size > 0, rel
+    for valve in ("intake", "exhaust"):
+        for rel in ARTEFACTS:
+            rel = rel.replace("intake", valve)
+            assert (out / rel).is_file() and (out / rel).stat().st_size > 0, rel
+    assert "open: failures 0, warnings 0, info 0; accepted in the specification: 6" in result.output
+    data = json.loads((out / "results.json").read_text())
+    assert {v["cam"]["law"] for v in data["valves"].values()} == {"kurz"}
+    assert not list(out.parent.glob(".design.*"))  # no temporary folder left behind
+
+
+def test_the_appendix_example_prints_its_warnings(tmp_path):
+    """The manual's own example (appendix of Valve-train practical works (n.d.): V' = 18 x (80/36.8)^2 m/s, closing lag 78 crank deg, seat 45 deg)
+    prints its warnings, each value in the unit of its range."""
+    result = CliRunner().invoke(main, ["run", str(APPENDIX), "--out", str(tmp_path / "d"), "--figures", "none"])
+    assert result.exit_code == 0, result.output
     assert "warning: intake: V' (throat velocity) = 85.0662 m/s, recommended 50...80 m/s" in result.output
-    # values are shown in the unit of their range (seed 000 appendix: closing lag 78 crank deg, seat 45 deg)
     assert "warning: intake: closing lag = 78 crank deg, recommended 40...60 crank deg" in result.output
     assert "info: intake: seat angle = 45 deg, usual 30 deg" in result.output   # an informative comparison
-    data = json.loads((out / "results.json").read_text())
-    assert data["valves"]["intake"]["cam"]["law"] == "kurz"
-    assert not list(out.parent.glob(".design.*"))  # no temporary folder left behind
 
 
 def test_russian_report(tmp_path):
@@ -82,15 +94,15 @@ BAD = [
 
 
 def test_a_valve_named_like_a_law_keeps_its_name(refused):
-    text = example_text().replace("valves.intake", "valves.kurz").replace("phi1_deg = 27.0", "phi1_deg = -1.0")
+    text = appendix_text().replace("valves.intake", "valves.kurz").replace("phi1_deg = 27.0", "phi1_deg = -1.0")
     assert "valves.kurz.cam.phi1_deg = -1.0: allowed" in refused(text)
 
 
 def test_phi3_omitted_needs_room(tmp_path, refused):
-    assert "leaves no room for phi3" in refused(example_text().replace("phi3_deg = 38.0", "")
+    assert "leaves no room for phi3" in refused(appendix_text().replace("phi3_deg = 38.0", "")
                                                 .replace("phi1_deg = 27.0", "phi1_deg = 66.0"))
     f = tmp_path / "ok.toml"
-    f.write_text(example_text().replace("phi3_deg = 38.0", ""))
+    f.write_text(appendix_text().replace("phi3_deg = 38.0", ""))
     assert CliRunner().invoke(main, ["validate", str(f)]).exit_code == 0
 
 
@@ -98,7 +110,7 @@ def test_phi3_omitted_needs_room(tmp_path, refused):
 @pytest.mark.parametrize("command", ["validate", "run"])
 def test_bad_files_are_refused(tmp_path, old, new, messages, command):
     f = tmp_path / "bad.toml"
-    f.write_text(example_text().replace(old, new, 1))
+    f.write_text(appendix_text().replace(old, new, 1))
     out = tmp_path / "out"
     args = [command, str(f)] + (["--out", str(out)] if command == "run" else [])
     result = CliRunner().invoke(main, args)
@@ -111,7 +123,7 @@ def test_bad_files_are_refused(tmp_path, old, new, messages, command):
 
 def test_several_problems_each_get_a_message(tmp_path):
     f = tmp_path / "bad.toml"
-    f.write_text(example_text().replace("bore_mm = 80.0", "bore_mm = 0").replace("count = 1                    # same", "count = 0 # same")
+    f.write_text(appendix_text().replace("bore_mm = 80.0", "bore_mm = 0").replace("count = 1                    # same", "count = 0 # same")
                  .replace("throat_diameter_mm = 36.8", ""))
     result = CliRunner().invoke(main, ["validate", str(f)])
     assert result.exit_code == 2
@@ -164,26 +176,26 @@ def test_module_entry_point():
 
 def test_array_keys_are_accepted(tmp_path, refused):
     f = tmp_path / "e.toml"
-    f.write_text(example_text().replace("min_resonance_ratio = 10.0", "min_resonance_ratio = 10.0\n"
+    f.write_text(appendix_text().replace("min_resonance_ratio = 10.0", "min_resonance_ratio = 10.0\n"
                                         "mean_diameter_ratio = [0.75, 0.85]"))
     assert CliRunner().invoke(main, ["validate", str(f)]).exit_code == 0
-    assert "mean_diameter_ratio" in refused(example_text().replace("min_resonance_ratio = 10.0",
+    assert "mean_diameter_ratio" in refused(appendix_text().replace("min_resonance_ratio = 10.0",
                                                                    "min_resonance_ratio = 10.0\n"
                                                                    "mean_diameter_ratio = [0.85, 0.75]"))
 
 
 def test_a_throat_no_spring_can_serve_is_refused(refused):
-    """D = 0.7...0.9 d_g must meet the wire range's 3 x 2.0 ... 12 x 7.0 = 6...84 mm (index 3...12, seed 000,
+    """D = 0.7...0.9 d_g must meet the wire range's 3 x 2.0 ... 12 x 7.0 = 6...84 mm (index 3...12, Valve-train practical works (n.d.),
     work 6): a 5 mm throat (D 3.5...4.5 mm) is refused at validation, not by a failure in the middle of the run."""
     assert "valves.intake.spring.mean_diameter_ratio = [0.7, 0.9] with throat_diameter_mm = 5 gives spring mean " \
            "diameters 3.5...4.5 mm; wire of 2...7 mm makes 6...84 mm" in \
-           refused(example_text().replace("throat_diameter_mm = 36.8", "throat_diameter_mm = 5.0"))
+           refused(appendix_text().replace("throat_diameter_mm = 36.8", "throat_diameter_mm = 5.0"))
 
 
 def test_a_pair_without_room_for_the_inner_spring_exits_2(refused):
-    """Seed 000's polydyne example as a nested pair with an 11.04 mm throat and 5 mm lift: the outer springs (D
+    """The polydyne example of Valve-train practical works (n.d.) as a nested pair with an 11.04 mm throat and 5 mm lift: the outer springs (D
     = 0.7...0.9 d_g = 7.7...9.9 mm) leave an outside diameter of at most 9.9 - 2.0 - 2 x 1 = 5.9 mm for the
-    inner one, less than the smallest spring of the wire range (D + d = 4 x 2.0 = 8 mm at index 3, seed 000
+    inner one, less than the smallest spring of the wire range (D + d = 4 x 2.0 = 8 mm at index 3, Valve-train practical works (n.d.)
     work 6); the run stops with exit 2 and one message, writing nothing."""
     from pathlib import Path
 
@@ -202,7 +214,7 @@ def test_the_figures_drawn_are_those_asked_for(tmp_path, figures, drawn):
     each of them and names the command that draws each of the others."""
     out = tmp_path / "d"
     option = [] if figures is None else ["--figures", figures]
-    assert CliRunner().invoke(main, ["run", "--out", str(out), *option]).exit_code == 0
+    assert CliRunner().invoke(main, ["run", str(APPENDIX), "--out", str(out), *option]).exit_code == 0
     assert {p.name for p in (out / "plots").iterdir()} == drawn
     html = (out / "report.html").read_text(encoding="utf-8")
     assert html.count('src="data:image/png;base64,') == len(drawn)
@@ -284,6 +296,8 @@ def test_ctrl_c_while_importing_is_one_line_and_status_130():
 SIGINT_IN_A_CALLBACK = """
 import signal, sys, time, weakref
 from valvetrain.interruption import Interruption
+
+from appendix import appendix_text
 Interruption.install(Interruption.interrupt)
 class Part:
     pass

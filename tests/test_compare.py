@@ -36,7 +36,7 @@ def test_compare_two_files(tmp_path):
 
 
 def test_duration_at_1mm_against_the_analytic_law(tmp_path):
-    """The duration at 1 mm valve lift of the seed 000 Kurz cam, from an independent root finding on (2.5)-(2.8)."""
+    """The duration at 1 mm valve lift of the Kurz cam of Valve-train practical works (n.d.), from an independent root finding on (2.5)-(2.8)."""
     from conftest import seed000_law
 
     law = seed000_law()

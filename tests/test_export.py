@@ -51,7 +51,7 @@ def test_contour_csv_and_dxf(written):
     header, rows = _read_csv(out / "contour" / "intake.csv")
     assert header == ["cam_deg", "x_mm", "y_mm", "radius_mm", "polar_angle_deg"]
     xy = np.array([[float(r[1]), float(r[2])] for r in rows])
-    # the nose: r0 + h_T max = 26.25 mm on +y (spec E2: rho at the nose; contour radius = r_k + h)
+    # the nose: r0 + h_T max = 26.25 mm on +y (Valve-train practical works (n.d.), corrections note 2: rho at the nose; contour radius = r_k + h)
     assert xy[:, 1].max() == pytest.approx(26.25, abs=1e-6)
     doc = ezdxf.readfile(out / "contour" / "intake.dxf")
     msp = doc.modelspace()
@@ -62,7 +62,7 @@ def test_contour_csv_and_dxf(written):
     pts = np.array([p[:2] for p in poly.get_points()])
     assert np.allclose(pts, xy, atol=1e-9)
     circle = msp.query("CIRCLE").first
-    assert circle.dxf.radius == pytest.approx(19.75)  # heel radius r0 - h0 (seed 000)
+    assert circle.dxf.radius == pytest.approx(19.75)  # heel radius r0 - h0 (Valve-train practical works (n.d.))
     law = results.valves["intake"].law
     # the two ramp ends of the Kurz cam on their own layer, the other junctions (and the event ends) on another
     ramps = msp.query("LINE[layer=='RAMP_BOUNDARIES']")
@@ -153,7 +153,7 @@ def test_dxf_is_reproducible(tmp_path):
 
 
 def test_the_specification_is_saved_with_the_results(written):
-    """spec.toml beside results.json reads back to the same specification and so to the same design (seed 000
+    """spec.toml beside results.json reads back to the same specification and so to the same design (Valve-train practical works (n.d.)
     appendix: time-area 2.8564 mm2 s)."""
     from valvetrain.specification import load_spec
 

@@ -1,4 +1,4 @@
-"""Flow sections, conditional velocities, time-area and fullness (seed 000 works 1 and 4, seed 002)."""
+"""Flow sections, conditional velocities, time-area and fullness (Valve-train practical works (n.d.), works 1 and 4, Shang Hanji (1988))."""
 
 import numpy as np
 import pytest
@@ -10,18 +10,18 @@ from valvetrain.numerics import cumulative_integral
 
 from conftest import SEED000_OMEGA_EXACT, seed000_law
 
-D, S, N = 0.080, 30.0 * 18.0 / 7000.0, 7000.0  # S = 30 c_p / n (seed 000 appendix)
+D, S, N = 0.080, 30.0 * 18.0 / 7000.0, 7000.0  # S = 30 c_p / n (appendix of Valve-train practical works (n.d.))
 D_THROAT, SEAT, I_K = 0.0368, np.pi / 4, 1.6
 
 
 def test_seed000_flow_sections():
     cp = flow.mean_piston_speed(S, N)
-    assert cp == pytest.approx(18.0, rel=1e-12)  # seed 000 appendix: c_p = 18 m/s
+    assert cp == pytest.approx(18.0, rel=1e-12)  # appendix of Valve-train practical works (n.d.): c_p = 18 m/s
     f_max = flow.curtain_area(0.010, D_THROAT, SEAT)
     assert f_max * 1e6 == pytest.approx(928.56, abs=0.01)  # spec 4.4 / E7: 9.2856 cm2 from (1.3)
     assert flow.throat_velocity(cp, D, D_THROAT, 1) == pytest.approx(85.07, abs=0.005)  # spec 4.4
     assert flow.curtain_velocity(cp, D, f_max, 1) == pytest.approx(97.44, abs=0.005)   # spec 4.4
-    # E7: the appendix's 9.5 cm2 is c_p F_p / (i * 95 m/s) = 9.524 cm2
+    # Valve-train practical works (n.d.), corrections note 7: the appendix's 9.5 cm2 is c_p F_p / (i * 95 m/s) = 9.524 cm2
     assert flow.curtain_velocity(cp, D, 952.4e-6, 1) == pytest.approx(95.0, abs=0.01)
 
 
@@ -47,7 +47,7 @@ def test_seed000_time_area():
 
 
 def test_linearised_time_area_of_work4():
-    """Work 4's M_F linearises (1.3) (drops h sin cos^2): 2.5665 mm2 s and v_vp = 151.08 m/s (spec 4.4, E29)."""
+    """Work 4's M_F linearises (1.3) (drops h sin cos^2): 2.5665 mm2 s and v_vp = 151.08 m/s (spec 4.4, Valve-train practical works (n.d.), corrections note 29)."""
     law = seed000_law()
     nose = np.deg2rad(116.0)
     a, b = -nose / 2, (np.pi - nose) / 2
@@ -63,7 +63,7 @@ def test_swept_volume():
 
 
 def test_fullness_identities():
-    # a rectangle has fullness 1, a half-sine 2/pi, a triangle 1/2 (definition of seed 002, eq. 2.3)
+    # a rectangle has fullness 1, a half-sine 2/pi, a triangle 1/2 (definition of Shang Hanji (1988), eq. 2.3)
     assert flow.fullness(lambda t: np.ones_like(t), 0.0, 2.0, 1.0) == pytest.approx(1.0, rel=1e-14)
     assert flow.fullness(np.sin, 0.0, np.pi, 1.0) == pytest.approx(2 / np.pi, rel=1e-14)
     tri = lambda t: 1.0 - np.abs(t)  # noqa: E731
@@ -81,9 +81,28 @@ def test_curtain_area_closed_valve_is_zero():
 
 
 def test_flow_checks_flag_the_appendix():
-    """E8: V' = 85.1 m/s above 50-80 and V'' = 97.4 above 80-95."""
+    """Valve-train practical works (n.d.), corrections note 8: V' = 85.1 m/s above 50-80 and V'' = 97.4 above 80-95."""
     found = flow.check_flow("intake", bore=D, throat_diameter=D_THROAT, max_lift=0.010, v1=85.07, v2=97.44,
                             v3=135.75, charge_velocity=135.75, engine_type="si", chamber="hemispherical")
     names = [f.quantity for f in failed(found)]
     assert names == ["V' (throat velocity)", "V'' (curtain velocity at full lift)"]
     assert failed(found)[0].range == "50...80 m/s"
+
+
+def test_several_diagrams_at_once():
+    """fullnesses and time_areas take each diagram's own interval and breakpoints in one quadrature: a rectangle 1,
+    a half-sine 2/pi, a triangle 1/2 (as test_fullness_identities); the time-area of a constant area f over
+    [a, b] at omega is f (b - a) / omega."""
+    shapes = [lambda t: np.ones_like(t), np.sin, lambda t: 1.0 - np.abs(t)]
+
+    def lift(t, member):
+        out = np.empty_like(t)
+        for i, shape in enumerate(shapes):
+            out[member == i] = shape(t[member == i])
+        return out
+
+    got = flow.fullnesses(lift, [0.0, 0.0, -1.0], [2.0, np.pi, 1.0], [1.0, 1.0, 1.0], [[], [], [0.0]])
+    np.testing.assert_allclose(got, [1.0, 2.0 / np.pi, 0.5], rtol=1e-14)
+    areas = np.array([2e-4, 3e-4])
+    got = flow.time_areas(lambda t, member: areas[member] * np.ones_like(t), [0.0, -0.5], [1.0, 0.7], 50.0, [[], [0.1]])
+    np.testing.assert_allclose(got, areas * np.array([1.0, 1.2]) / 50.0, rtol=1e-14)

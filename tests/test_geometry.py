@@ -1,4 +1,4 @@
-"""Cam contours: independent geometric checks of seed 002 section 2.1 formulas."""
+"""Cam contours: independent geometric checks of Shang Hanji (1988), section 2.1 formulas."""
 
 import numpy as np
 import pytest
@@ -30,7 +30,7 @@ def test_flat_contour_support_function_is_the_lift():
 
 
 def test_flat_curvature_matches_contour():
-    """rho = R0 + h + h'' (seed 002, eq. 2.6) against the curvature of the sampled contour."""
+    """rho = R0 + h + h'' (Shang Hanji (1988), eq. 2.6) against the curvature of the sampled contour."""
     law = seed000_law()
     theta = np.linspace(-1.2, 1.2, 200001)
     h, dh, d2h, _ = law.derivatives(theta)
@@ -60,7 +60,7 @@ def test_roller_contour_is_at_roller_radius_from_pitch_curve():
 def test_roller_curvature_and_pressure_angle_of_circle_offset():
     """An eccentric circle cam (h = e(1 - cos)) has pitch radius R + R_r everywhere... for e = 0 it is the circle."""
     assert geometry.roller_follower_curvature(20.0, 10.0, 0.0, 0.0, 0.0) == pytest.approx(20.0)
-    # tan(beta) = h'/g: h' = g gives 45 deg (definition, seed 004 via spec section 2)
+    # tan(beta) = h'/g: h' = g gives 45 deg (definition, UkrSURT Proceedings (2019) via spec section 2)
     assert np.rad2deg(geometry.roller_pressure_angle(20.0, 10.0, 0.0, 30.0)) == pytest.approx(45.0)
 
 
@@ -86,7 +86,7 @@ def test_undercut_masks():
 
 
 def test_valve_piston_clearance_identity():
-    """D_s = s + y0 - y (seed 002, eqs. 2.13-2.14): at TDC with the valve closed the gap is y0."""
+    """D_s = s + y0 - y (Shang Hanji (1988), eqs. 2.13-2.14): at TDC with the valve closed the gap is y0."""
     s = displacement(np.array([0.0, np.pi]), 0.04, 0.04 / 0.14)
     assert geometry.valve_piston_clearance(s, np.array([0.0, 0.01]), 0.002).tolist() == pytest.approx([0.002, 0.072])
 

@@ -64,3 +64,18 @@ def test_bounded_minimum_takes_scipys_steps(fn, a, b):
     ref = minimize_scalar(fn, bounds=(a, b), method="bounded", options={"xatol": xatol})
     assert (x, fx) == (float(ref.x), float(ref.fun))
     assert len(calls) == ref.nfev
+
+
+def test_integrals_of_several_functions_each_over_its_interval():
+    """numerics.integrals: f_i = sin(k_i x) over [a_i, b_i] with breakpoints inside is (cos k a - cos k b) / k
+    (closed form), and each equals cumulative_integral's on [a_i, b_i] (the same pieces and nodes)."""
+    from valvetrain.numerics import cumulative_integral, integrals
+
+    k = np.array([1.0, 2.0, 3.0])
+    a, b = np.array([0.0, -1.0, 0.5]), np.array([np.pi, 2.0, 0.9])
+    breakpoints = [[], [0.0, 1.0], [0.7, 5.0]]
+    got = integrals(lambda x, member: np.sin(k[member] * x), a, b, breakpoints)
+    np.testing.assert_allclose(got, (np.cos(k * a) - np.cos(k * b)) / k, rtol=1e-14)
+    for i in range(3):
+        one = cumulative_integral(lambda x, i=i: np.sin(k[i] * x), [a[i], b[i]], breakpoints[i])[-1]
+        assert got[i] == pytest.approx(one, rel=1e-15)

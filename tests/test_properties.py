@@ -38,7 +38,7 @@ def test_closure(law):
 @given(laws())
 def test_continuity_at_junctions(law):
     """h and its derivatives up to the law's continuity order are continuous across every junction (C2 laws:
-    seed 000 (2.11)-(2.19); constant-acceleration and arc cams: C1, spec sections 3-5)."""
+    Valve-train practical works (n.d.), (2.11)-(2.19); constant-acceleration and arc cams: C1, spec sections 3-5)."""
     eps = 1e-10
     inner = law.breakpoints[1:-1]
     left, right = law.derivatives(inner - eps), law.derivatives(inner + eps)
@@ -73,11 +73,11 @@ def test_symmetry(law):
 @SETTINGS
 @given(laws(), st.floats(1.5, 2.5))
 def test_flat_contour_reproduces_lift(law, r0_over_lift):
-    """The support function of the flat-follower contour equals R0 + h (seed 002, eq. 2.15)."""
+    """The support function of the flat-follower contour equals R0 + h (Shang Hanji (1988), eq. 2.15)."""
     heel = r0_over_lift * law.lift_max * 1.6 - law.ramp_height
     theta = np.linspace(-np.pi, np.pi, 20001)
     h, dh, d2h, _ = law.derivatives(theta)
-    assume(geometry.flat_follower_curvature(heel, h, d2h).min() > 0)  # convex profile (E26: not always)
+    assume(geometry.flat_follower_curvature(heel, h, d2h).min() > 0)  # convex profile (Valve-train practical works (n.d.), corrections note 26: not always)
     p = geometry.flat_follower_contour(theta, heel, h, dh)
     probe = np.linspace(law.start, law.end, 41)
     u = np.stack([np.sin(probe), np.cos(probe)])

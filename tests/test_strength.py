@@ -1,4 +1,4 @@
-"""Strength of the drive parts (seed 000 work 7) against analytic identities."""
+"""Strength of the drive parts (Valve-train practical works (n.d.), work 7) against analytic identities."""
 
 import numpy as np
 import pytest
@@ -9,7 +9,7 @@ from valvetrain import strength
 
 def test_camshaft_deflection_is_beam_theory():
     """(7.3) with 64/(3 pi) equals the deflection under the load of a simply supported beam, obtained here
-    independently by integrating EI w'' = -M(x) with scipy's boundary-value solver (E20)."""
+    independently by integrating EI w'' = -M(x) with scipy's boundary-value solver (Valve-train practical works (n.d.), corrections note 20)."""
     P, a, b, d, E = 6000.0, 0.03, 0.07, 0.026, 2.1e11
     L = a + b
     EI = E * np.pi * d**4 / 64
@@ -20,12 +20,12 @@ def test_camshaft_deflection_is_beam_theory():
     sol = solve_bvp(lambda x, w: np.vstack([w[1], -moment(x) / EI]), lambda wa, wb: np.array([wa[0], wb[0]]),
                     np.linspace(0, L, 401), np.zeros((2, 401)), tol=1e-10, max_nodes=100000)
     assert strength.camshaft_deflection(P, a, b, d) == pytest.approx(float(sol.sol(a)[0]), rel=1e-5)
-    # the printed coefficient 0.8 underestimates by 64/(3 pi)/0.8 = 8.5 (E20)
+    # the printed coefficient 0.8 underestimates by 64/(3 pi)/0.8 = 8.5 (Valve-train practical works (n.d.), corrections note 20)
     assert strength.DEFLECTION_COEFFICIENT / 0.8 == pytest.approx(8.49, abs=0.01)
 
 
 def test_hertz_constant():
-    """0.418 = sqrt(1 / (2 pi (1 - 0.3^2))) for equal moduli with E_m = 2E1E2/(E1+E2) (seed 002, eq. 2.5)."""
+    """0.418 = sqrt(1 / (2 pi (1 - 0.3^2))) for equal moduli with E_m = 2E1E2/(E1+E2) (Shang Hanji (1988), eq. 2.5)."""
     assert np.sqrt(1.0 / (2 * np.pi * (1 - 0.3**2))) == pytest.approx(0.418, abs=5e-4)
     assert strength.effective_modulus(2.1e11, 2.1e11) == pytest.approx(2.1e11)
     # Hertz for two cylinders: sigma = sqrt(F E* / (pi b R)) with 1/E* = 2 (1 - nu^2)/E and 1/R = 1/r1 + 1/r2
@@ -68,7 +68,7 @@ def test_sphere_socket_and_pad():
 
 
 def test_verdict_records():
-    """A strength verdict is a Check against the limit of seed 000 work 7, shown in its unit."""
+    """A strength verdict is a Check against the limit of Valve-train practical works (n.d.), work 7, shown in its unit."""
     v = strength.verdict("pushrod_buckling_margin", 1.5)
     assert not v.passed and v.range == ">= 2" and v.severity == "failure"
     assert v.margin == pytest.approx(1.5 / 2.0 - 1.0)
@@ -78,7 +78,7 @@ def test_verdict_records():
 
 def test_hertz_half_width_is_johnson_s_line_contact_band():
     """a = sqrt(4 F R / (pi b E*)) with 1/E* = 2 (1 - 0.3^2) / E (K. L. Johnson, Contact Mechanics, 1985, ch. 4),
-    an independent computation; the 0.418 of seed 002's stress rounds the constant by 0.05 %."""
+    an independent computation; the 0.418 of Shang Hanji (1988)'s stress rounds the constant by 0.05 %."""
     force, width, radius, modulus = 1500.0, 0.016, 0.012, 2.1e11
     e_star = modulus / (2.0 * (1.0 - 0.3**2))
     a = np.sqrt(4.0 * force * radius / (np.pi * width * e_star))

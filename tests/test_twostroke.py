@@ -1,4 +1,4 @@
-"""Two-stroke port timing, areas and time-area (seed 000, work 8)."""
+"""Two-stroke port timing, areas and time-area (Valve-train practical works (n.d.), work 8)."""
 
 import numpy as np
 import pytest

@@ -20,7 +20,7 @@ command line prints it).
 
 import json
 import math
-import re
+from typing import Any
 
 import numpy as np
 
@@ -28,23 +28,14 @@ from .export import json_text
 from .specification import SpecError, spec_toml, validate
 from .units import MM, rad_to_deg, to_display
 
-_PROBLEM = re.compile(r"(?P<path>[^\s=:]+)(?: = (?P<value>.+?))?: (?P<message>.+)", re.DOTALL)
-"""A message of :class:`~valvetrain.specification.SpecError`: ``key.path = value: what is allowed`` or ``key.path:
-what is wrong``."""
-
-
-def error_records(err):
+def error_records(err) -> list[dict[str, Any]]:
     """The problems of a :class:`~valvetrain.specification.SpecError` as records ``{"path", "value", "message",
-    "text"}``; a line that names no key has the path ``""``."""
-    out = []
-    for text in err.problems:
-        m = _PROBLEM.fullmatch(text)
-        out.append({"path": m["path"], "value": m["value"], "message": m["message"], "text": text} if m
-                   else {"path": "", "value": None, "message": text, "text": text})
-    return out
+    "text"}`` (each :class:`~valvetrain.specification.messages.Problem`'s parts, made where it was found); a problem
+    that names no key has the path ``""``."""
+    return [{"path": p.path, "value": p.value, "message": p.message, "text": str(p)} for p in err.problems]
 
 
-def plain(data):
+def plain(data) -> Any:
     """Nested dicts, lists, numpy arrays and numbers as strict JSON data (a value that is not finite is None)."""
     if isinstance(data, dict):
         return {k: plain(v) for k, v in data.items()}
@@ -67,7 +58,7 @@ def _column(x, unit=None):
     return np.asarray(x if unit is None else to_display(np.asarray(x), unit), dtype=float)
 
 
-def valve_series(v):
+def valve_series(v) -> dict[str, Any]:
     """The plot series of one :class:`~valvetrain.design.ValveDesign` (display units in the keys).
 
     Kinematics against the camshaft angle from the nose (the tappet's lift and the valve's; the tappet's
@@ -116,7 +107,7 @@ def _parsed(spec):
         return None, error_records(err)
 
 
-def design(spec):
+def design(spec) -> dict[str, Any]:
     """Design a specification given as a dict: what ``valvetrain run`` computes, as plain data.
 
     Parameters
@@ -149,7 +140,7 @@ MAP_COLUMNS = 400
 """About how many camshaft angles the map of the lift error keeps (every k-th of the sweep's grid): a picture's width."""
 
 
-def sweep_series(d):
+def sweep_series(d) -> dict[str, Any]:
     """The speed-sweep series of one valve's :class:`~valvetrain.design.dynamics.DynamicsResult`: per speed the
     smallest contact force, the seating velocity (None where the valve did not seat), the bounce; the headline
     speeds; the map of the valve-lift error (valve lift minus the rigid lift, mm) over the camshaft angles of the
@@ -173,7 +164,7 @@ def sweep_series(d):
     }
 
 
-def sweep(spec, progress=None):
+def sweep(spec, progress=None) -> dict[str, Any]:
     """The speed sweep of a specification given as a dict: what ``valvetrain sweep`` computes, as plain data.
 
     Parameters
@@ -202,7 +193,7 @@ def sweep(spec, progress=None):
     return {"ok": True, "errors": [], "sweeps": plain({n: sweep_series(v.dynamics) for n, v in valves.items()})}
 
 
-def report_html(spec, lang="en", figures="none"):
+def report_html(spec, lang="en", figures="none") -> str:
     """The design report of a specification (a dict) as HTML text, in ``lang`` ("en" or "ru"): the report that
     ``valvetrain run`` writes, its tables and checks, with the figures of ``figures`` (as ``valvetrain run
     --figures``: "main", "all" or "none") drawn in memory and embedded (nothing is written to disk; without them the
@@ -222,7 +213,7 @@ def report_html(spec, lang="en", figures="none"):
     return render_report(results, write_plots(results, images, lang, figures), lang, images)
 
 
-def toml_text(spec):
+def toml_text(spec) -> str:
     """The specification (a dict) as TOML text, every default written out: ``valvetrain run`` reads it back to the
     same design.
 

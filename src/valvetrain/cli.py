@@ -204,8 +204,8 @@ def run(file, out, force, lang, figures, strict):
         if v.profile.undercut:
             click.echo(f"refused: valves.{name}: the cam profile is undercut (rho_min = {v.profile.rho_min / MM:.4g}"
                        " mm): no contour, DXF or manufacturing table was written for it")
-        if "measured" in v.records:
-            click.echo(f"note: valves.{name}: measured table fitted by the {v.records['measured']['fit_reason']}")
+        if v.records.measured is not None:
+            click.echo(f"note: valves.{name}: measured table fitted by the {v.records.measured.fit_reason}")
     _strict_exit(_echo_checks(results), strict)
 
 

@@ -28,7 +28,7 @@ def _cell(x):
     return f"{x:.10g}" if np.isfinite(x) else ""
 
 
-def write_csv(path, columns, comments=()):
+def write_csv(path, columns, comments=()) -> None:
     """Write equal-length columns (a dict name -> sequence) as a CSV file with a header row, after ``comments``
     (lines written with a leading ``# ``).
 
@@ -44,7 +44,7 @@ def write_csv(path, columns, comments=()):
             w.writerow([_cell(x) for x in row])
 
 
-def write_dxf(path, valve):
+def write_dxf(path, valve) -> None:
     """Write the cam contour as DXF (millimetres).
 
     Layers: ``CAM_PROFILE`` (closed polyline of the contour), ``BASE_CIRCLE`` (the heel
@@ -79,7 +79,7 @@ def _save_dxf(build, path):
         ezdxf.options.write_fixed_meta_data_for_testing = fixed
 
 
-def write_master_dxf(path, grinding):
+def write_master_dxf(path, grinding) -> None:
     """Write the master cam of a valve's grinder as DXF (millimetres).
 
     Layers: ``MASTER_PROFILE`` (closed polyline of the master contour), ``MASTER_BASE_CIRCLE`` (its heel
@@ -126,12 +126,12 @@ def _dxf_document(valve):
     return doc
 
 
-def results_json(results):
+def results_json(results) -> str:
     """results.json text."""
     return json_text(results.to_dict())
 
 
-def json_text(data):
+def json_text(data) -> str:
     """Strict JSON (RFC 8259) of nested dicts, lists, numbers and numpy values: a quantity that is not finite
     (an infinite margin of a check that is switched off, an undefined ratio) is written as null."""
     return json.dumps(_plain(data), indent=2, ensure_ascii=False, allow_nan=False)
@@ -160,7 +160,7 @@ MASTER_COMMENTS = [
 """Comment lines of ``contour/NAME_master.csv``."""
 
 
-def write_outputs(results, out, lang="en", inputs=(), force=False, figures="main", drawer=None):
+def write_outputs(results, out, lang="en", inputs=(), force=False, figures="main", drawer=None) -> Path:
     """Write every artefact of a design into the folder ``out``, atomically.
 
     ``figures`` says which plots are drawn (:data:`valvetrain.report.plots.FIGURE_SETS`): ``main`` (every one but
@@ -246,7 +246,7 @@ def write_outputs(results, out, lang="en", inputs=(), force=False, figures="main
     return Path(out)
 
 
-def write_sweep(designs, out, lang="en", inputs=(), force=False):
+def write_sweep(designs, out, lang="en", inputs=(), force=False) -> Path:
     """Write the speed sweeps of ``designs`` (name -> ValveDesign with dynamics) into ``out``, atomically.
 
     Layout::

@@ -7,7 +7,7 @@ lengths in m, areas in m^2, time-area in m^2*s, velocities in m/s, angles in rad
 import numpy as np
 
 from .checks import check
-from .numerics import cumulative_integral
+from .numerics import cumulative_integral, integrals
 
 THROAT_TO_BORE_RANGES = {
     "side_valve": (0.38, 0.42),
@@ -227,7 +227,29 @@ def cumulative_time_area(area, cam_angle, cam_speed, breakpoints=()):
 
 def time_area(area, start, end, cam_speed, breakpoints=()):
     """Time-area integral of f dt between two camshaft angles [m^2*s] (Valve-train practical works (n.d.), eq. 4.1)."""
-    return float(cumulative_time_area(area, [start, end], cam_speed, breakpoints)[-1])
+    return float(time_areas(lambda x, _: area(x), [start], [end], cam_speed, [breakpoints])[0])
+
+
+def time_areas(area, starts, ends, cam_speed, breakpoints):
+    """Time-areas of several valves at once, each between its own camshaft angles [m^2*s] (:func:`time_area`).
+
+    Parameters
+    ----------
+    area : callable
+        ``area(cam_angle, member) -> curtain area [m^2]`` of valve ``member[k]`` at ``cam_angle[k]``.
+    starts, ends : array_like
+        Camshaft angles [rad] between which each valve's time-area is taken, shape (n,).
+    cam_speed : float
+        Camshaft angular velocity omega_cam [rad/s].
+    breakpoints : sequence of array_like
+        Each valve's segment junctions [rad].
+
+    Returns
+    -------
+    ndarray
+        Shape (n,) [m^2*s]: the quadrature of :func:`cumulative_time_area` for each valve, all nodes in one call.
+    """
+    return integrals(area, starts, ends, breakpoints) / cam_speed
 
 
 def fullness(lift, start, end, max_lift, breakpoints=()):
@@ -264,8 +286,30 @@ def fullness(lift, start, end, max_lift, breakpoints=()):
     >>> round(fullness(np.sin, 0.0, np.pi, 1.0), 6)
     0.63662
     """
-    area = float(cumulative_integral(lift, [start, end], breakpoints)[-1])
-    return area / (max_lift * (end - start))
+    return float(fullnesses(lambda x, _: lift(x), [start], [end], [max_lift], [breakpoints])[0])
+
+
+def fullnesses(lift, starts, ends, max_lifts, breakpoints):
+    """Fullness coefficients of several lift diagrams at once (:func:`fullness`).
+
+    Parameters
+    ----------
+    lift : callable
+        ``lift(angle, member) -> valve lift [m]`` of diagram ``member[k]`` at ``angle[k]``.
+    starts, ends : array_like
+        Angles [rad] where each valve opens and closes, shape (n,).
+    max_lifts : array_like
+        Maximum valve lift of each [m].
+    breakpoints : sequence of array_like
+        Each diagram's angles where its law changes segment.
+
+    Returns
+    -------
+    ndarray
+        Shape (n,): xi of each diagram, its area by the quadrature of :func:`fullness` (all nodes in one call).
+    """
+    starts, ends = np.asarray(starts, dtype=float), np.asarray(ends, dtype=float)
+    return integrals(lift, starts, ends, breakpoints) / (np.asarray(max_lifts, dtype=float) * (ends - starts))
 
 
 def check_flow(kind, *, bore, throat_diameter, max_lift, v1, v2, v3, charge_velocity, engine_type, chamber, count=1):

@@ -39,6 +39,13 @@ def cumulative_integral(fn, grid, breakpoints=()):
     >>> float(cumulative_integral(np.sin, [0.0, np.pi])[-1])  # doctest: +ELLIPSIS
     2.0000000000...
     """
+    grid, edges, half, nodes = _gauss_pieces(grid, breakpoints)
+    values = np.asarray(fn(nodes.ravel()), dtype=float).reshape(nodes.shape)
+    return _running(values, half, edges, grid)
+
+
+def _gauss_pieces(grid, breakpoints):
+    """(grid, edges, half widths, nodes shape (pieces, order)) of :func:`cumulative_integral`'s pieces."""
     grid = np.asarray(grid, dtype=float)
     if grid.ndim != 1 or grid.size < 2 or np.any(np.diff(grid) <= 0):
         raise ValueError("grid must be a strictly increasing 1-D array of at least two points")
@@ -47,16 +54,41 @@ def cumulative_integral(fn, grid, breakpoints=()):
     edges = np.unique(np.concatenate([grid, bp]))
     a, b = edges[:-1], edges[1:]
     half = 0.5 * (b - a)
-    nodes = (0.5 * (a + b))[:, None] + half[:, None] * _NODES[None, :]
-    values = np.asarray(fn(nodes.ravel()), dtype=float).reshape(nodes.shape)
+    return grid, edges, half, (0.5 * (a + b))[:, None] + half[:, None] * _NODES[None, :]
+
+
+def _running(values, half, edges, grid):
+    """The running integral at ``grid`` from the function's ``values`` at the nodes of :func:`_gauss_pieces`."""
     pieces = half * (values @ _WEIGHTS)
     running = np.concatenate([[0.0], np.cumsum(pieces)])
     return running[np.searchsorted(edges, grid)]
 
 
-def integral(fn, a, b, breakpoints=()):
-    """Integral of a piecewise-smooth function from ``a`` to ``b`` (see :func:`cumulative_integral`)."""
-    return float(cumulative_integral(fn, [a, b], breakpoints)[-1])
+def integrals(fn, starts, ends, breakpoints):
+    """Integrals of several piecewise-smooth functions, each over its own interval, all nodes in one call of ``fn``.
+
+    Parameters
+    ----------
+    fn : callable
+        ``fn(x, member) -> ndarray``: function ``member[k]`` at ``x[k]`` (1-D arrays).
+    starts, ends : array_like
+        The interval of each function, shape (n,).
+    breakpoints : sequence of array_like
+        Each function's abscissae where it is not smooth.
+
+    Returns
+    -------
+    ndarray
+        Shape (n,): the integral of function i from ``starts[i]`` to ``ends[i]``, that of :func:`cumulative_integral`
+        on the grid ``[starts[i], ends[i]]`` (the same pieces and nodes, so the same number).
+    """
+    pieces = [_gauss_pieces([a, b], bp) for a, b, bp in zip(starts, ends, breakpoints, strict=True)]
+    sizes = [p[3].size for p in pieces]
+    values = np.asarray(fn(np.concatenate([p[3].ravel() for p in pieces]), np.repeat(np.arange(len(pieces)), sizes)),
+                        dtype=float)
+    parts = np.split(values, np.cumsum(sizes)[:-1])
+    return np.array([_running(v.reshape(nodes.shape), half, edges, grid)[-1]
+                     for v, (grid, edges, half, nodes) in zip(parts, pieces, strict=True)])
 
 
 def extremum(fn, edges, kind="max", samples=65):

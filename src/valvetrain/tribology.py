@@ -18,9 +18,6 @@ REGIME_BANDS = (1.0, 3.0)
 """Film parameter lambda below which the contact runs in boundary lubrication and above which in full film
 (Hamrock, Schmid and Jacobson (2004), ch. 1: mixed between)."""
 
-REGIMES = ("boundary", "mixed", "full film")
-"""The names of the regimes of :data:`REGIME_BANDS`, in increasing lambda."""
-
 BLOK_LINE = 1.11
 """Blok's constant of the largest flash temperature of a line contact under a semi-elliptic (Hertzian) heat source
 over the full contact width 2b, both Peclet numbers large (Blok (1937))."""

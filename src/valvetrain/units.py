@@ -80,7 +80,7 @@ UNITS = {
     "mm/rad": (MM, ("_mm_per_rad", "_mm_rad"), "mm/rad", "мм/рад"),
     "mm/deg": (MM / DEG, ("_mm_per_deg",), "mm/deg", "мм/град"),
     "mm crank deg": (MM * DEG, ("_mm_crank_deg",), "mm·crank deg", "мм·град ПКВ"),
-    "%": (0.01, (), "%", "%"),
+    "%": (0.01, ("_percent",), "%", "%"),
     "um": (1e-6, ("_um",), "µm", "мкм"),
     "mPa s": (1e-3, ("_mPa_s",), "mPa·s", "мПа·с"),
     "1/GPa": (1e-9, ("_per_GPa",), "1/GPa", "1/ГПа"),

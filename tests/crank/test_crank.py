@@ -1,4 +1,4 @@
-"""Crank mechanism (seed 001): factor tables, kinematic identities, forces, torque, multi-cylinder."""
+"""Crank mechanism (Power units manual (n.d.)): factor tables, kinematic identities, forces, torque, multi-cylinder."""
 
 import csv
 from pathlib import Path
@@ -160,7 +160,7 @@ def test_crank_angle_at_inverts_displacement(lam, k):
 @pytest.mark.parametrize("lam", [0.24, 0.31])
 def test_crank_angle_at_series_and_brix(lam):
     """The series (1.2) and Brix's construction (2.1) invert in closed form too: round trip to 1e-12 of the stroke
-    on both halves of the revolution; the series inverse is (8.1) of seed 000, work 8 (phi from BDC,
+    on both halves of the revolution; the series inverse is (8.1) of Valve-train practical works (n.d.), work 8 (phi from BDC,
     s = S (1 - sigma))."""
     R = 0.04
     s = np.linspace(0.0, 2 * R, 2001)

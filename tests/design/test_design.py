@@ -9,11 +9,13 @@ from scipy.integrate import quad
 
 from valvetrain import flow
 from valvetrain.design import run
-from valvetrain.specification import SpecError, example_spec, example_text, load_spec, parse_spec
+from valvetrain.specification import SpecError, load_spec, parse_spec
+
+from appendix import appendix_text, appendix_spec
 
 
 def _variant(replacements):
-    text = example_text()
+    text = appendix_text()
     for old, new in replacements:
         assert old in text, old
         text = text.replace(old, new)
@@ -27,24 +29,24 @@ POLYDYNE = [('law = "kurz"                 # "kurz" or "polydyne"', 'law = "poly
 
 @pytest.fixture(scope="module")
 def example():
-    return run(example_spec()).to_dict()
+    return run(appendix_spec()).to_dict()
 
 
 def test_example_reproduces_the_appendix(example):
     cam = example["valves"]["intake"]["cam"]
     fl = example["valves"]["intake"]["flow"]
     assert cam["law"] == "kurz"
-    # seed 000 appendix, printed coefficients (truncated, spec E10)
+    # appendix of Valve-train practical works (n.d.), printed coefficients (truncated, corrections note 10)
     for key, printed in {"c11": 5.040, "c12": 0.584, "c21": 8.336, "c22": 0.039, "c31": 1.020, "c32": -7.182,
                          "c33": 2.961}.items():
         assert np.trunc(cam["coefficients"][key] * 1000) / 1000 == pytest.approx(printed, abs=1e-12)
     assert cam["max_acceleration_m_s2"] == pytest.approx(3487.80, abs=0.01)   # printed 3487 (truncated)
     assert cam["min_acceleration_m_s2"] == pytest.approx(-1929.74, abs=0.01)  # printed -1930
     assert cam["max_velocity_m_s"] == pytest.approx(3.27480, abs=1e-5)        # spec 4.1
-    assert cam["rho_min_mm"] == pytest.approx(11.885, abs=5e-4)               # eq. (2.38), E2
-    assert cam["rho_max_mm"] == pytest.approx(46.578, abs=5e-4)               # true maximum, E16
+    assert cam["rho_min_mm"] == pytest.approx(11.885, abs=5e-4)               # eq. (2.38), Valve-train practical works (n.d.), corrections note 2
+    assert cam["rho_max_mm"] == pytest.approx(46.578, abs=5e-4)               # true maximum, Valve-train practical works (n.d.), corrections note 16
     assert cam["seed_formulas"]["rho_max_mm"] == pytest.approx(46.5666, abs=1e-4)  # (2.39), printed 46.566
-    assert cam["phi_p0_deg"] == pytest.approx(71.0)                           # E1
+    assert cam["phi_p0_deg"] == pytest.approx(71.0)                           # Valve-train practical works (n.d.), corrections note 1
     assert cam["ramp_deg"] == pytest.approx(19.63495, abs=1e-5)               # 19 deg 38 min
     assert cam["nose_crank_deg"] == pytest.approx(116.0)                      # Table P1
     assert fl["V1_m_s"] == pytest.approx(85.07, abs=0.01)                     # spec 4.4
@@ -56,8 +58,8 @@ def test_example_reproduces_the_appendix(example):
 
 
 def test_example_warnings_are_those_of_e8(example):
-    """E8: V' above 50-80, phi_zap 78 above 40-60, |j_min| above 1500, 45 deg inlet seat (usually 30);
-    and V'' = 97.4 above 80-95 (E7)."""
+    """Valve-train practical works (n.d.), corrections note 8: V' above 50-80, phi_zap 78 above 40-60, |j_min| above 1500, 45 deg inlet seat (usually 30);
+    and V'' = 97.4 above 80-95 (Valve-train practical works (n.d.), corrections note 7)."""
     names = {w["quantity"]: w["severity"] for w in example["warnings"]}
     assert names == {"intake: V' (throat velocity)": "warning", "intake: V'' (curtain velocity at full lift)": "warning",
                      "intake: min tappet acceleration": "warning", "intake: closing lag": "warning",
@@ -80,7 +82,7 @@ def test_the_example_spring_passes_every_check(example):
 
 
 def test_e27_the_manual_s_steel_cannot_reach_the_resonance_ratio_at_7000_rpm():
-    """E27 (omega_c1/omega_cam >= 10 is hard to meet at high speed): with the manual's 60S2A ([tau] = 500 MPa)
+    """Valve-train practical works (n.d.), corrections note 27 (omega_c1/omega_cam >= 10 is hard to meet at high speed): with the manual's 60S2A ([tau] = 500 MPa)
     the example's best spring fails the resonance ratio and tau_max; the run explains why in spring.diagnosis
     and in the notes of the failed checks, and names the VDSiCr wire and a lower speed as remedies."""
     res = run(_variant([('material = "VDSiCr"', 'material = "60S2A"')]))
@@ -97,7 +99,7 @@ def test_e27_the_manual_s_steel_cannot_reach_the_resonance_ratio_at_7000_rpm():
 
 
 def test_polydyne_on_the_appendix_inputs():
-    """Spec 4.5: p = 8, no ramp and no clearance (seed 000 work 3 lifts the valve from the base circle): rho_min
+    """Spec 4.5: p = 8, no ramp and no clearance (Valve-train practical works (n.d.), work 3 lifts the valve from the base circle): rho_min
     10.262 mm, time-area 2.7657 mm2 s, V''' 140.20 m/s."""
     res = run(_variant(POLYDYNE + [("clearance_mm = 0.25", "clearance_mm = 0.0")])).to_dict()["valves"]["intake"]
     assert res["cam"]["law"] == "polydyne"
@@ -154,13 +156,13 @@ def test_roller_follower():
 
 
 def test_exhaust_valve_timing_and_stroke():
-    text = example_text().replace("[valves.intake", "[valves.exhaust").replace('kind = "intake"', 'kind = "exhaust"')
+    text = appendix_text().replace("[valves.intake", "[valves.exhaust").replace('kind = "intake"', 'kind = "exhaust"')
     res = run(parse_spec(text.replace("clearance_mm = 0.25", "clearance_mm = 0.40")))
     ex = res.to_dict()["valves"]["exhaust"]
     # exhaust: opens 26 before BDC (-180), closes 78 after TDC: nose at (78 - 180 - 26)/2 = -64 crank deg
     assert ex["cam"]["nose_crank_deg"] == pytest.approx(-64.0)
     assert ex["flow"]["stroke_crank_deg"] == [-180.0, 0.0]
-    # V'' and V''' ranges are stated for inlet valves only (seed 000, work 1)
+    # V'' and V''' ranges are stated for inlet valves only (Valve-train practical works (n.d.), work 1)
     assert not any("V''" in w.quantity for w in res.warnings)
 
 
@@ -169,7 +171,7 @@ def test_piston_clearance():
                         ("# piston_gap_tdc_mm = 1.5", "piston_gap_tdc_mm = 1.5")]))
     pc = res.to_dict()["valves"]["intake"]["piston_clearance"]
     # independent computation: gap = y0 + s(phi) - y(phi) with the exact slider-crank displacement
-    # s = r (1 - cos phi) + L (1 - sqrt(1 - lambda^2 sin^2 phi)) (seed 001, eq. 1.2) on a fine grid
+    # s = r (1 - cos phi) + L (1 - sqrt(1 - lambda^2 sin^2 phi)) (Power units manual (n.d.), eq. 1.2) on a fine grid
     v = res.valves["intake"]
     theta = np.linspace(v.law.valve_opens, v.law.valve_closes, 200001)
     phi = v.nose_crank + 2.0 * theta
@@ -180,7 +182,7 @@ def test_piston_clearance():
 
 
 def test_a_valve_that_hits_the_piston_is_refused():
-    """A negative valve-piston gap (seed 002, eqs. 2.13-2.14) cannot be built: the design is refused."""
+    """A negative valve-piston gap (Shang Hanji (1988), eqs. 2.13-2.14) cannot be built: the design is refused."""
     with pytest.raises(SpecError, match="valves.intake: the valve hits the piston: the valve-piston gap falls to -"):
         run(_variant([("# rod_length_mm = 135.0", "rod_length_mm = 135.0"),
                       ("# piston_gap_tdc_mm = 1.5", "piston_gap_tdc_mm = 0.1"),
@@ -188,7 +190,7 @@ def test_a_valve_that_hits_the_piston_is_refused():
 
 
 def test_undercut_is_a_warning_not_an_error():
-    """E26: a small base circle gives rho_min <= 0; the design reports it."""
+    """Valve-train practical works (n.d.), corrections note 26: a small base circle gives rho_min <= 0; the design reports it."""
     res = run(_variant([("base_radius_mm = 20.0", "base_radius_mm = 8.0")]))
     cam = res.to_dict()["valves"]["intake"]["cam"]
     assert cam["undercut"] is True
@@ -204,7 +206,7 @@ def test_an_undercut_profile_is_not_exported_for_manufacture(tmp_path):
     from valvetrain.cli import main
 
     f = tmp_path / "e.toml"
-    f.write_text(example_text().replace("base_radius_mm = 20.0", "base_radius_mm = 8.0"))
+    f.write_text(appendix_text().replace("base_radius_mm = 20.0", "base_radius_mm = 8.0"))
     result = CliRunner().invoke(main, ["run", str(f), "--out", str(tmp_path / "d")])
     assert result.exit_code == 0, result.output
     assert "refused: valves.intake: the cam profile is undercut (rho_min = -" in result.output
@@ -300,7 +302,7 @@ def test_nested_pair():
 
 
 def test_parts_not_given_are_listed_not_checked():
-    text = example_text()
+    text = appendix_text()
     start = text.index("[valves.intake.parts]")
     res = run(parse_spec(text[:start] + text[text.index("[gas]"):]))
     st = res.to_dict()["valves"]["intake"]["strength"]
@@ -309,8 +311,8 @@ def test_parts_not_given_are_listed_not_checked():
 
 
 def test_specific_mass_estimate():
-    """Seed 000 work 5: m_v = m' f_g with m' = 450 kg/m2 for a pushrod drive: 0.4786 kg for d_g = 36.8 mm."""
-    text = example_text()
+    """Valve-train practical works (n.d.), work 5: m_v = m' f_g with m' = 450 kg/m2 for a pushrod drive: 0.4786 kg for d_g = 36.8 mm."""
+    text = appendix_text()
     start, end = text.index("[valves.intake.drive.masses]"), text.index("[valves.intake.spring]")
     text = text[:start] + text[end:]
     res = run(parse_spec(text.replace("# specific_mass_kg_m2 = 135", "specific_mass_kg_m2 = 450")))
@@ -322,7 +324,7 @@ def test_specific_mass_estimate():
 def test_the_default_specific_mass_is_that_of_the_example_s_parts(example):
     """Issue 10: without part masses the example's engine gets the reduced mass of its own parts (the default
     m' = 135 kg/m2 of a pushrod drive is derived from them, masses.py) within 1 %, not 3 times it."""
-    text = example_text()
+    text = appendix_text()
     start, end = text.index("[valves.intake.drive.masses]"), text.index("[valves.intake.spring]")
     estimated = run(parse_spec(text[:start] + text[end:])).to_dict()["valves"]["intake"]
     from_parts = example["valves"]["intake"]
@@ -333,9 +335,9 @@ def test_the_default_specific_mass_is_that_of_the_example_s_parts(example):
 
 
 def test_two_valves_per_cylinder():
-    """count = 2: the charge passes two curtains, so V''' (seed 000 eq. 1.4) and v_vp (eq. 4.3) are half those of one
+    """count = 2: the charge passes two curtains, so V''' (Valve-train practical works (n.d.), eq. 1.4) and v_vp (eq. 4.3) are half those of one
     valve, and the throat/bore range of one inlet valve (work 1) is applied to the equivalent diameter sqrt(2) d."""
-    one = run(example_spec())
+    one = run(appendix_spec())
     two = run(_variant([("count = 1                    # same", "count = 2 # same")]))
     f1, f2 = one.to_dict()["valves"]["intake"]["flow"], two.to_dict()["valves"]["intake"]["flow"]
     assert f2["V3_m_s"] == pytest.approx(f1["V3_m_s"] / 2.0, rel=1e-12)
@@ -356,7 +358,7 @@ def _check(res, quantity):
 def test_flat_follower_edge_loading():
     """The contact of a flat tappet lies dh/dphi from its axis (Shang Hanji 1988, eq. 2.15); the appendix gives
     omega_T max / omega_K = 8.935 mm, and the Hertz band reaches a half-width further (< 0.2 mm at these loads)."""
-    res = run(example_spec())
+    res = run(appendix_spec())
     c = _check(res, "intake: flat follower contact reach (edge loading)")
     assert c.passed and c.severity == "failure" and c.high == pytest.approx(12.5e-3)   # tappet_diameter_mm / 2
     assert 8.935e-3 < c.value < 8.935e-3 + 0.2e-3 and "bucket tappet" in c.note
@@ -383,7 +385,7 @@ def test_roller_side_force_is_reported():
 def test_exhaust_gas_load_without_the_head_diameter():
     """(7.1): the gas load at exhaust opening is pi d_n^2 / 4 (p_b - p_r); without head_diameter_mm the throat
     (36.8 mm) stands in, a lower bound, and the record says so (before: silently 0 N)."""
-    text = example_text().replace("[valves.intake", "[valves.exhaust").replace('kind = "intake"', 'kind = "exhaust"')
+    text = appendix_text().replace("[valves.intake", "[valves.exhaust").replace('kind = "intake"', 'kind = "exhaust"')
     text = text.replace("clearance_mm = 0.25", "clearance_mm = 0.40")
     dp = (0.5 - 0.106) * 1e6                      # [gas] defaults: exhaust_opening and exhaust_back pressures
     for head, diameter in (("head_diameter_mm = 40.0", 40e-3), ("", 36.8e-3)):

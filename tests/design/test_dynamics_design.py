@@ -10,15 +10,17 @@ import pytest
 
 from valvetrain.design import results_schema, run
 from valvetrain.export import results_json, write_outputs
-from valvetrain.specification import SpecError, example_text, parse_spec
+from valvetrain.specification import SpecError, parse_spec
 from valvetrain.units import MM
+
+from appendix import appendix_text
 
 FEW = "speeds = 3\nrevolutions = 2\nstep_cam_deg = 0.5\n"
 
 
 def with_section(dynamics):
     """The built-in example's text with a [valves.intake.dynamics] section."""
-    return example_text().replace("[valves.intake.parts]", f"[valves.intake.dynamics]\n{dynamics}\n[valves.intake.parts]")
+    return appendix_text().replace("[valves.intake.parts]", f"[valves.intake.dynamics]\n{dynamics}\n[valves.intake.parts]")
 
 
 def spec(dynamics, geometry=True):
@@ -38,7 +40,7 @@ def problems(dynamics):
 
 def test_no_section_no_dynamics():
     """Without the section the results are as before: no dynamics key, no dynamics check."""
-    results = json.loads(results_json(run(parse_spec(example_text()))))
+    results = json.loads(results_json(run(parse_spec(appendix_text()))))
     assert "dynamics" not in results["valves"]["intake"]
     assert not [c for c in results["checks"] if "seating velocity at the rated" in c["quantity"]]
 
@@ -62,7 +64,7 @@ def test_section_messages(text, expected):
 
 
 def kinetostatic_cam_force(valve, cam_speed, theta):
-    """k (F0 + K y + M a_v) at the cam for the rigid train (seed 000 eqs. 5.1, 7.1), independent of the stage."""
+    """k (F0 + K y + M a_v) at the cam for the rigid train (Valve-train practical works (n.d.), eqs. 5.1, 7.1), independent of the stage."""
     law, k = valve.law, valve.rocker_ratio
     d = law.derivatives(theta)
     y = k * np.clip(d[0] - law.ramp_height, 0.0, None)
@@ -129,7 +131,7 @@ def test_given_stiffness_shared_by_the_links_without_geometry():
 
 
 def test_multi_with_massless_coils_has_the_reduced_mass():
-    """The multi-mass pushrod train with coils_per_spring = 0 (m_s/3 on the valve) has the nodes of seed 000 eq. 5.2:
+    """The multi-mass pushrod train with coils_per_spring = 0 (m_s/3 on the valve) has the nodes of Valve-train practical works (n.d.), eq. 5.2:
     their masses add up to the reduced mass the one-mass train uses; with coils the CSV has the surge columns."""
     d = run(spec("model = \"multi\"\ncoils_per_spring = 0\n" + FEW)).valves["intake"].dynamics
     assert sum(d.parameters.node_masses.values()) == pytest.approx(d.parameters.mass, rel=1e-9)
@@ -137,7 +139,7 @@ def test_multi_with_massless_coils_has_the_reduced_mass():
 
 
 def test_multi_needs_the_part_masses():
-    text = example_text().replace("[valves.intake.drive.masses]", "[valves.intake.unused]")
+    text = appendix_text().replace("[valves.intake.drive.masses]", "[valves.intake.unused]")
     text = text[:text.index("[valves.intake.unused]")] + text[text.index("[valves.intake.spring]"):]
     text = text.replace("[valves.intake.parts]", "[valves.intake.dynamics]\nmodel = \"multi\"\n" + FEW
                         + "\n[valves.intake.parts]")

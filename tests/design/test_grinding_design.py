@@ -11,14 +11,16 @@ import pytest
 
 from valvetrain.design import results_schema, run
 from valvetrain.export import results_json, write_outputs
-from valvetrain.specification import SpecError, example_text, parse_spec
+from valvetrain.specification import SpecError, parse_spec
+
+from appendix import appendix_text
 
 SECTION = "wheel_radius_mm = 300.0\nmaster_follower_radius_mm = 20.0\nbar_ratio = 2.0\n"
 
 
 def with_section(grinding):
     """The built-in example's text (a flat-follower Kurz cam) with a [valves.intake.grinding] section."""
-    return example_text().replace("[valves.intake.parts]", f"[valves.intake.grinding]\n{grinding}\n[valves.intake.parts]")
+    return appendix_text().replace("[valves.intake.parts]", f"[valves.intake.grinding]\n{grinding}\n[valves.intake.parts]")
 
 
 def problems(grinding):
@@ -28,7 +30,7 @@ def problems(grinding):
 
 
 def test_no_section_no_grinding(tmp_path):
-    results = run(parse_spec(example_text()))
+    results = run(parse_spec(appendix_text()))
     assert all("grinding" not in v for v in json.loads(results_json(results))["valves"].values())
     write_outputs(results, tmp_path / "out")
     assert not list((tmp_path / "out").rglob("*master*")) and not list((tmp_path / "out").rglob("*wear_error*"))

@@ -11,7 +11,9 @@ import pytest
 
 from valvetrain.design import results_schema, run
 from valvetrain.export import results_json, write_outputs
-from valvetrain.specification import SpecError, example_text, parse_spec
+from valvetrain.specification import SpecError, parse_spec
+
+from appendix import appendix_text
 
 SECTION = """speed_rpm = 1500.0
 plunger_diameter_mm = 20.0
@@ -33,12 +35,12 @@ fill_pressure_MPa = 0.3
 
 def with_section(hydraulic):
     """The built-in example's text with a [valves.intake.hydraulic] section."""
-    return example_text().replace("[valves.intake.parts]",
+    return appendix_text().replace("[valves.intake.parts]",
                                   f"[valves.intake.hydraulic]\n{hydraulic}\n[valves.intake.parts]")
 
 
 def test_no_section_no_hydraulic(tmp_path):
-    results = run(parse_spec(example_text()))
+    results = run(parse_spec(appendix_text()))
     assert all("hydraulic" not in v for v in json.loads(results_json(results))["valves"].values())
     write_outputs(results, tmp_path / "out")
     assert not list((tmp_path / "out").rglob("*hydraulic*"))

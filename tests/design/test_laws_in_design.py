@@ -8,7 +8,9 @@ import pytest
 
 from valvetrain.cli import main
 from valvetrain.design import run
-from valvetrain.specification import example_text, parse_spec
+from valvetrain.specification import parse_spec
+
+from appendix import appendix_text
 
 KURZ_KEYS = '''law = "kurz"                 # "kurz" or "polydyne"'''
 KURZ_BLOCK = ["ramp_end_velocity_mm_per_deg = 0.02\n", "phi1_deg = 27.0", "phi2_deg = 6.0", "phi3_deg = 38.0",
@@ -33,7 +35,7 @@ CAMS = {
 
 def _text(cam_keys):
     """The example with its Kurz keys replaced by ``cam_keys``."""
-    text = example_text()
+    text = appendix_text()
     for line in KURZ_BLOCK:
         text = text.replace(line, "", 1)
     return text.replace(KURZ_KEYS, cam_keys)
@@ -107,7 +109,7 @@ def test_report_for_an_arc_cam(tmp_path):
     assert json.loads((out / "results.json").read_text())["valves"]["intake"]["cam"]["law"] == "three_arc"
     html = (out / "report.html").read_text()
     assert "three_arc" in html
-    # the report names the three-arc cam's own source, not the polydyne formula of seed 000 work 3
+    # the report names the three-arc cam's own source, not the polydyne formula of Valve-train practical works (n.d.), work 3
     assert "three-arc convex cam for a flat follower (Kolchin and Demidov (1980); Valve-train dynamics article (n.d.))" in html
     assert "Valve-train practical works (n.d.), work 3" not in html
 

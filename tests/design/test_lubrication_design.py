@@ -9,12 +9,14 @@ import pytest
 
 from valvetrain.design import run
 from valvetrain.export import results_json
-from valvetrain.specification import SpecError, example_text, parse_spec
+from valvetrain.specification import SpecError, parse_spec
+
+from appendix import appendix_text
 
 
 def example(lubrication="", parts=True):
     """The built-in example (pushrod intake valve, flat follower, 7000 rpm) with a [lubrication] section."""
-    text = example_text() + f"\n[valves.intake.lubrication]\n{lubrication}\n"
+    text = appendix_text() + f"\n[valves.intake.lubrication]\n{lubrication}\n"
     if not parts:
         text = text.replace("cam_width_mm = 16.0\n", "")
     return parse_spec(text)
@@ -77,7 +79,7 @@ def test_checks_and_their_limits():
 
 
 def test_without_a_section_there_is_no_lubrication_record():
-    assert "lubrication" not in json.loads(results_json(run(parse_spec(example_text()))))["valves"]["intake"]
+    assert "lubrication" not in json.loads(results_json(run(parse_spec(appendix_text()))))["valves"]["intake"]
 
 
 @pytest.mark.parametrize("lubrication, parts, words", [

@@ -10,7 +10,9 @@ from scipy.optimize import minimize_scalar
 
 from valvetrain.design import run
 from valvetrain.export import results_json, write_outputs
-from valvetrain.specification import SpecError, example_text, parse_spec
+from valvetrain.specification import SpecError, parse_spec
+
+from appendix import appendix_text
 
 RPM = np.pi / 30.0
 
@@ -18,7 +20,7 @@ RPM = np.pi / 30.0
 def example(engine_extra="", dynamics=None):
     """The built-in example (one pushrod intake valve, flat follower, 7000 rpm), with keys added to [engine] and
     an optional [dynamics] section."""
-    text = example_text().replace("strokes = 4\n", f"strokes = 4\n{engine_extra}\n", 1)
+    text = appendix_text().replace("strokes = 4\n", f"strokes = 4\n{engine_extra}\n", 1)
     if dynamics is not None:
         text = text.replace("[valves.intake.parts]", f"[valves.intake.dynamics]\n{dynamics}\n[valves.intake.parts]")
     return parse_spec(text)

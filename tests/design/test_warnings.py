@@ -12,14 +12,16 @@ from valvetrain.checks import apply_acceptances, check, ranked
 from valvetrain.cli import main
 from valvetrain.design import run
 from valvetrain.design.valve import LAYOUT_BANDS, LAYOUTS
-from valvetrain.specification import example_text, validate
+from valvetrain.specification import validate
 from valvetrain.specification.models import Acceptance
+
+from appendix import appendix_text
 
 
 def example(**changes):
     """The built-in example as a dict, with ``changes`` applied: ``{"valves.intake.parts.cam_width_mm": 3.0}``;
     ``accepted`` is a list of tables."""
-    data = tomllib.loads(example_text())
+    data = tomllib.loads(appendix_text())
     for path, value in changes.items():
         *keys, last = path.split("__")
         node = data
@@ -141,7 +143,7 @@ def test_the_report_lists_accepted_checks_apart_with_the_reason(tmp_path):
      "accepted.0.valve = 'exhaust': allowed 'intake'"),
 ])
 def test_a_wrong_acceptance_is_refused_naming_the_key(refused, table, message):
-    text = example_text() + "\n[[accepted]]\n" + tomli_w.dumps(table)
+    text = appendix_text() + "\n[[accepted]]\n" + tomli_w.dumps(table)
     assert message in refused(text)
     assert message in refused(text, "run")
 
@@ -157,7 +159,7 @@ def test_every_layout_band_names_its_source_and_covers_the_layouts():
 
 
 def test_a_rocker_layout_checks_the_rocker_ratio_even_at_one():
-    """Before, a rocker ratio of 1 was never checked: a rocker or lever wants 1.4-1.75 (seed 000, work 2)."""
+    """Before, a rocker ratio of 1 was never checked: a rocker or lever wants 1.4-1.75 (Valve-train practical works (n.d.), work 2)."""
     checks = {c.quantity: c for c in design(valves__intake__rocker_ratio=1.0,
                                              valves__intake__drive__layout="rocker").checks}
     ratio = checks["intake: rocker ratio"]

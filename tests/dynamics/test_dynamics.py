@@ -212,7 +212,7 @@ def test_runs():
 
 
 def test_dynamic_contact_stress_and_lubrication():
-    """Seed 002 (2.5) with the dynamic force (section 3.4): at the nose sigma = 0.418 sqrt(F E / (b rho)) with
+    """Shang Hanji (1988), (2.5) with the dynamic force (section 3.4): at the nose sigma = 0.418 sqrt(F E / (b rho)) with
     rho = R0 + h + h'' (2.6).  The lubrication characteristic (2.12) gamma = rho / (R0 + h) is 1 on the base
     circle.  Hand computations on a simulated force."""
     from valvetrain.dynamics.contact import dynamic_contact_stress, lubrication_characteristic

@@ -27,7 +27,7 @@ def spec8_law():
 
 def test_pushrod_masses_are_seed000_reduced_mass():
     """With massless-coil springs (N = 0, m_s/3 on the valve) the node masses of the pushrod train add up to
-    seed 000 eq. (5.2), valvetrain.masses.reduced_mass_at_valve."""
+    Valve-train practical works (n.d.), eq. (5.2), valvetrain.masses.reduced_mass_at_valve."""
     spring = CoilSpring(67.5e3, 400.0, 0.05, coils=0)
     train = pushrod_train(**PARTS, cam_stiffness=5e7, pushrod_stiffness=4e7, rocker_stiffness=3e7,
                           valve_stiffness=2e8, springs=[spring])
@@ -61,7 +61,7 @@ def test_rigid_links_reduce_to_one_mass():
 @pytest.mark.parametrize("coils", [4, 8, 16, 32])
 def test_first_surge_frequency_tends_to_the_spring_formula(coils):
     """Coil-mass model with the valve held: its first mode is that of a uniform fixed-fixed chain,
-    2 (N + 1) sqrt(K/m_s) sin(pi / (2 (N + 1))), which tends from below to seed 000 eq. (6.13),
+    2 (N + 1) sqrt(K/m_s) sin(pi / (2 (N + 1))), which tends from below to Valve-train practical works (n.d.), eq. (6.13),
     omega_c1 = d / (D^2 i_p) sqrt(G / (2 rho)) = pi sqrt(K / m_s) of the continuous spring."""
     d, big_d, i_p = 4e-3, 30e-3, 6.0
     spring = coil_spring_from_geometry(d, big_d, i_p, 300.0, installed_pitch=7e-3, coils=coils)
@@ -90,7 +90,7 @@ def test_coil_clash_margin():
 
 
 def test_surge_grows_at_resonance():
-    """A cam harmonic on the first surge frequency (omega_c1 = 13 omega_cam, seed 000 eq. 6.14's ratio below
+    """A cam harmonic on the first surge frequency (omega_c1 = 13 omega_cam, Valve-train practical works (n.d.), eq. 6.14's ratio below
     its limit of 10 is the resonant case) makes the coils swing more than off resonance (omega_c1 = 13.5)."""
     law = spec8_law()
     spring = CoilSpring(45e3, 400.0, 0.05, coils=8, damping_ratio=0.01)
@@ -118,7 +118,7 @@ def test_layouts_and_lash_position():
 def test_geometry_estimates():
     """Stiffness and inertia estimates from part geometry against hand formulas: a steel tube E pi (D^2 - d^2)/4/L;
     a rectangular cantilever 3 E b h^3 / (12 l^3); the camshaft between bearings 3 E I l / (l1^2 l2^2) (simply
-    supported beam, the force over the deflection of seed 000 eq. 7.3); a rocker of two equal slender arms
+    supported beam, the force over the deflection of Valve-train practical works (n.d.), eq. 7.3); a rocker of two equal slender arms
     m l^2 / 3."""
     from valvetrain.dynamics.models import camshaft_stiffness, pushrod_stiffness, rocker_arm_inertia, rocker_stiffness
 

@@ -1,4 +1,4 @@
-"""Seed 003 resonance analysis: the worked example and table of spec section 16."""
+"""Valve-train dynamics article (n.d.) resonance analysis: the worked example and table of spec section 16."""
 
 import numpy as np
 import pytest
@@ -7,7 +7,7 @@ from valvetrain.dynamics.resonance import drive_stiffness, reduced_mass, resonan
 from valvetrain.laws import PolydyneLaw, ThreeArcLaw
 
 N_CRANK = 5000.0
-CAM_SPEED = np.pi * N_CRANK / 60.0        # omega_cam = pi n / 60 (seed 003, step 2)
+CAM_SPEED = np.pi * N_CRANK / 60.0        # omega_cam = pi n / 60 (Valve-train dynamics article (n.d.), step 2)
 MASS, RATIO = 0.2458, 1.5
 
 
@@ -74,7 +74,7 @@ def test_event_period_reading():
 
 
 def test_reduced_mass_terms():
-    """Seed 003 step 4c: m_kl + m_pr/3 + J/l_k^2 + m_sht/(3 (i_k + C_sht/(i_k C_kor))^2); the rigid option
+    """Valve-train dynamics article (n.d.), step 4c: m_kl + m_pr/3 + J/l_k^2 + m_sht/(3 (i_k + C_sht/(i_k C_kor))^2); the rigid option
     m_sht/i_k^2 (hand computation)."""
     m = reduced_mass(0.1, 0.06, 5e-5, 0.04, 0.09, 1.5, 8000e3, 12000e3)
     assert m == pytest.approx(0.1 + 0.02 + 5e-5 / 0.04**2 + 0.09 / (3 * (1.5 + 8 / 18) ** 2))

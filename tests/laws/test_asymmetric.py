@@ -6,7 +6,9 @@ import pytest
 from valvetrain.design import run
 from valvetrain.checks import failed
 from valvetrain.laws import AsymmetricLaw, KurzLaw
-from valvetrain.specification import example_text, parse_spec
+from valvetrain.specification import parse_spec
+
+from appendix import appendix_text
 
 W = 0.02e-3 * 180 / np.pi
 
@@ -37,7 +39,7 @@ def test_different_flanks():
 
 
 def _spec(closing, phis=("21.0", "5.0", "30.0")):
-    t = example_text().replace('follower = "flat"            # "flat" or "roller" (then roller_radius_mm)',
+    t = appendix_text().replace('follower = "flat"            # "flat" or "roller" (then roller_radius_mm)',
                                f'follower = "flat"\nclosing = {closing}')
     for key, new in zip(("phi1_deg = 27.0", "phi2_deg = 6.0", "phi3_deg = 38.0"), phis, strict=True):
         t = t.replace(key, key.split("=")[0] + "= " + new)

@@ -1,4 +1,4 @@
-"""Kurz cam against the appendix of seed 000 (coefficients, Table P1, extremes)."""
+"""Kurz cam against the appendix of Valve-train practical works (n.d.) (coefficients, Table P1, extremes)."""
 
 import numpy as np
 import pytest
@@ -7,8 +7,8 @@ from valvetrain.laws.kurz import kurz_coefficients
 
 from conftest import SEED000_OMEGA_EXACT, SEED000_OMEGA_TABLE
 
-# Printed coefficients of the seed 000 appendix, truncated (not rounded) to the printed
-# digits (spec/valvetrain-works-1-8.md, 4.1 and E10).
+# Printed coefficients of the appendix of Valve-train practical works (n.d.), truncated (not rounded) to the printed
+# digits (spec/valvetrain-works-1-8.md, 4.1 and Valve-train practical works (n.d.), corrections note 10).
 PRINTED = {"k1": 0.0055, "k2": 0.412, "k3": 1.160, "K1": 0.539, "K2": 1.243, "c11": 5.040, "c12": 0.584,
            "c32": -7.182, "c21": 8.336, "c22": 0.039, "c31": 1.020, "c33": 2.961}
 
@@ -27,7 +27,7 @@ def _decimals(x):
 def test_coefficients_match_printed_digits(kurz_appendix, key):
     value = kurz_appendix.coefficients()[key]
     d = _decimals(PRINTED[key])
-    # seed 000 appendix: coefficients printed truncated to d decimals (spec E10)
+    # appendix of Valve-train practical works (n.d.): coefficients printed truncated to d decimals (corrections note 10)
     assert np.trunc(value * 10**d) / 10**d == pytest.approx(PRINTED[key], abs=1e-12)
 
 
@@ -39,20 +39,20 @@ def test_coefficients_match_reconstruction(kurz_appendix, key):
 
 def test_continuity_residuals_vanish(kurz_appendix):
     # (2.10)-(2.22) with the exact coefficients: residuals <= 2e-15 (spec 4.1; the printed
-    # 8.19e-5 comes from rounded coefficients, E11)
+    # 8.19e-5 comes from rounded coefficients, Valve-train practical works (n.d.), corrections note 11)
     for key, r in kurz_appendix.residuals().items():
         assert abs(r) < 1e-12, key
 
 
 def test_ramp_length(kurz_appendix):
-    # seed 000 appendix: Phi0 = 19.63 deg (19 deg 38 min in Table P1), eq. (2.1) with exact pi
+    # appendix of Valve-train practical works (n.d.): Phi0 = 19.63 deg (19 deg 38 min in Table P1), eq. (2.1) with exact pi
     assert np.rad2deg(kurz_appendix.phi0) == pytest.approx(19.63495, abs=1e-5)
     assert round(np.rad2deg(kurz_appendix.phi0) * 60) == 19 * 60 + 38
 
 
 def test_extremes_against_appendix(kurz_appendix):
     e = kurz_appendix.extremes(SEED000_OMEGA_EXACT)
-    # seed 000 appendix: j_max printed 3487 (truncated; exact 3487.80, spec 4.1)
+    # appendix of Valve-train practical works (n.d.): j_max printed 3487 (truncated; exact 3487.80, spec 4.1)
     assert np.trunc(e.max_acceleration) == 3487
     assert e.max_acceleration == pytest.approx(3487.80, abs=0.01)
     # j_min printed -1930 (spec 4.1: -1929.74 with the exact omega)
@@ -74,14 +74,14 @@ def test_seed_formulas_equal_profile_extremes(kurz_appendix):
 
 def test_rho_formulas(kurz_appendix):
     f = kurz_appendix.seed_formulas(20e-3, SEED000_OMEGA_EXACT)
-    # (2.38): 20 + 6.25 - 14.365 = 11.885 mm; the printed 19.75 is the heel radius (spec E2)
+    # (2.38): 20 + 6.25 - 14.365 = 11.885 mm; the printed 19.75 is the heel radius (Valve-train practical works (n.d.), corrections note 2)
     assert f["rho_min"] * 1e3 == pytest.approx(11.885, abs=5e-4)
     # (2.39): printed 46.566 mm (spec 4.1: 46.56662)
     assert np.trunc(f["rho_max"] * 1e6) / 1e3 == pytest.approx(46.566, abs=1e-9)
 
 
 def test_phase_angles_are_the_corrected_formula(kurz_appendix):
-    # phi_p0 = (26 + 180 + 78)/4 = 71 deg = Phi1 + Phi2 + Phi3 (spec E1, eq. 2.2)
+    # phi_p0 = (26 + 180 + 78)/4 = 71 deg = Phi1 + Phi2 + Phi3 (Valve-train practical works (n.d.), corrections note 1, eq. 2.2)
     assert np.rad2deg(kurz_appendix.main_half_angle) == pytest.approx(71.0, abs=1e-12)
 
 
@@ -93,7 +93,7 @@ def test_coefficients_scale_with_length_unit():
     assert b.K2 == pytest.approx(a.K2, rel=1e-12)
 
 
-# Table P1 of seed 000 (46 rows): (crank angle printed [deg, min], segment, phi_k [deg, min], direction,
+# Table P1 of Valve-train practical works (n.d.) (46 rows): (crank angle printed [deg, min], segment, phi_k [deg, min], direction,
 # h = h_T + h0 printed [mm], omega_T printed [m/s], j_T printed [m/s2]).  Transcribed from
 # spec/valvetrain-works-1-8.md, section 4.3.
 TABLE_P1 = [
@@ -126,16 +126,16 @@ TABLE_P1 = [
 # Misprinted cells (spec/valvetrain-works-1-8.md, section 5) and their corrected values
 # (section 4.3, "calc" columns with omega = 366.5 for omega_T and j_T).
 MISPRINTS = {
-    11: {"h": 2.0112, "j": 1565.2}, 34: {"h": 2.0112, "j": 1565.2},       # E3
-    20: {"v": 1.17706, "j": -1844.9}, 25: {"v": -1.17706, "j": -1844.9},  # E5
-    21: {"h": 6.4803}, 24: {"h": 6.4803},                                 # E4
-    27: {"crank": (182, 0)},                                              # E6
+    11: {"h": 2.0112, "j": 1565.2}, 34: {"h": 2.0112, "j": 1565.2},       # Valve-train practical works (n.d.), corrections note 3
+    20: {"v": 1.17706, "j": -1844.9}, 25: {"v": -1.17706, "j": -1844.9},  # Valve-train practical works (n.d.), corrections note 5
+    21: {"h": 6.4803}, 24: {"h": 6.4803},                                 # Valve-train practical works (n.d.), corrections note 4
+    27: {"crank": (182, 0)},                                              # Valve-train practical works (n.d.), corrections note 6
 }
 
 
 def _theta(law, segment, phi_k_deg, direction):
     """Camshaft angle from the nose of a Table P1 row (phi_k counted from the start of the segment on the
-    opening flank, back from its end on the closing flank: spec E14)."""
+    opening flank, back from its end on the closing flank: Valve-train practical works (n.d.), corrections note 14)."""
     starts = np.cumsum([0.0, law.phi0, law.phi1, law.phi2])
     theta = -law.half_angle + starts[segment] + np.deg2rad(phi_k_deg)
     return theta if direction > 0 else -theta

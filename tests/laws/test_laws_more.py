@@ -24,7 +24,7 @@ def test_ramps_end_on_height_velocity_and_zero_acceleration(kind):
 
 
 def test_kurz_with_another_ramp_keeps_its_coefficients():
-    """(2.28)-(2.34) depend on the ramp's end velocity only (seed 000): a constant-velocity ramp changes Phi0 only."""
+    """(2.28)-(2.34) depend on the ramp's end velocity only (Valve-train practical works (n.d.)): a constant-velocity ramp changes Phi0 only."""
     args = (6.25e-3, 0.25e-3, 0.02e-3 / DEG, *np.radians([27, 6, 38]))
     a, b = KurzLaw(*args), KurzLaw(*args, ramp_kind="constant_velocity")
     assert a.coefficients() == b.coefficients()
@@ -78,7 +78,7 @@ def test_three_arc_worked_example_and_support_function():
     u = np.stack([np.sin(probe), np.cos(probe)])
     support = (pts.T @ u).max(axis=0)
     assert np.abs(support - (20.0 + law.lift(probe))).max() < 1e-5
-    # radius of curvature from seed 002 eq. (2.6): r1 on the flank, r2 on the nose
+    # radius of curvature from Shang Hanji (1988), eq. (2.6): r1 on the flank, r2 on the nose
     rho = geometry.flat_follower_curvature(20.0, law.lift(np.radians([-50.0, -5.0])), law.derivatives(
         np.radians([-50.0, -5.0]))[2])
     assert rho == pytest.approx([law.r1, law.r2], rel=1e-12)
@@ -167,7 +167,7 @@ def test_polynomial_generalises_polydyne():
 
 def test_combined_rebuilds_kurz():
     """The combined-function mechanism with Kurz's segments (half-sine, quarter-sine, parabola to the nose,
-    Z = 5/8) is the Kurz law of seed 000 to round-off (spec section 6: Kurz is a combined-function cam)."""
+    Z = 5/8) is the Kurz law of Valve-train practical works (n.d.) to round-off (spec section 6: Kurz is a combined-function cam)."""
     w = 0.02e-3 / DEG
     kurz = KurzLaw(6.25e-3, 0.25e-3, w, *np.radians([27, 6, 38]))
     combined = CombinedLaw(6.25e-3, 0.25e-3, w, [("half_sine", np.radians(27)), ("quarter_sine", np.radians(6)),

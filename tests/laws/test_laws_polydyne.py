@@ -1,4 +1,4 @@
-"""Polydyne cam: closed forms of seed 000 work 3, end conditions, the ramp junction."""
+"""Polydyne cam: closed forms of Valve-train practical works (n.d.), work 3, end conditions, the ramp junction."""
 
 import numpy as np
 import pytest
@@ -11,13 +11,13 @@ from conftest import SEED000_OMEGA_EXACT
 
 @pytest.mark.parametrize("p", [6, 8, 10, 12, 14, 16, 7.5])
 def test_end_conditions_and_sum(p):
-    """h(1) = h'(1) = h''(1) = h'''(1) = h''''(1) = 0 and 1 + sum C = 0 (seed 000, (3.4)-(3.8))."""
+    """h(1) = h'(1) = h''(1) = h'''(1) = h''''(1) = 0 and 1 + sum C = 0 (Valve-train practical works (n.d.), (3.4)-(3.8))."""
     k = np.array((2.0,) + default_exponents(p))
     c = np.array(polydyne_coefficients(*default_exponents(p)))
     assert 1.0 + c.sum() == pytest.approx(0.0, abs=1e-12)
     for j in range(1, 5):
         assert float((c * _falling(k, j)).sum()) == pytest.approx(0.0, abs=1e-9 * float(np.abs(c * _falling(k, j)).max()))
-    # alternating signs: C2 < 0, Cp > 0, Cq < 0, Cr > 0, Cs < 0 (seed 000, work 3)
+    # alternating signs: C2 < 0, Cp > 0, Cq < 0, Cr > 0, Cs < 0 (Valve-train practical works (n.d.), work 3)
     assert list(np.sign(c)) == [-1, 1, -1, 1, -1]
 
 
@@ -41,7 +41,7 @@ def test_seed000_inputs():
     # at x = 0.809 measured from the nose
     assert abs(e.max_acceleration_angle) / law.main_half_angle == pytest.approx(0.809, abs=1e-3)
     assert e.min_acceleration == pytest.approx(-2047.6, abs=0.1)
-    # closed form at the nose: j = 2 C2 h omega^2 / phi_p0^2 (seed 000, eq. 3.3 at x = 0)
+    # closed form at the nose: j = 2 C2 h omega^2 / phi_p0^2 (Valve-train practical works (n.d.), eq. 3.3 at x = 0)
     assert e.min_acceleration == pytest.approx(2 * c["C2"] * 6.25e-3 * SEED000_OMEGA_EXACT**2 / np.deg2rad(71.0) ** 2,
                                                rel=1e-9)
 
@@ -88,7 +88,7 @@ def test_bad_exponents_refused():
 def test_law_against_an_independent_polynomial_evaluation(exponents):
     """Independent computation: h = h_nose + sum a_k x^k and its theta-derivatives term by term (x = |theta| /
     phi_p0, odd derivatives odd in theta) in 80-bit arithmetic, for integer and fractional exponent steps, and the
-    cosine ramp (2.5) of seed 000; the compiled law agrees to 1e-13 of each row's scale (the round-off of the
+    cosine ramp (2.5) of Valve-train practical works (n.d.); the compiled law agrees to 1e-13 of each row's scale (the round-off of the
     alternating sum)."""
     law = PolynomialLaw(6.0e-3, np.deg2rad(65.0), exponents, ramp_height=0.3e-3, ramp_velocity=0.015e-3 * 180 / np.pi)
     theta = np.linspace(-law.main_half_angle, law.main_half_angle, 4001)[1:-1]  # the jerk jumps at the ramp

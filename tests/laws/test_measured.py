@@ -1,4 +1,4 @@
-"""Measured lift tables (seed 002 sections 5.1-5.3; spec/methods-seeds-002-004.md sections 9-11)."""
+"""Measured lift tables (Shang Hanji (1988), sections 5.1-5.3; spec/methods-seeds-002-004.md sections 9-11)."""
 
 import json
 from pathlib import Path
@@ -25,7 +25,7 @@ from conftest import seed000_law
 
 EXAMPLE = Path(__file__).parents[2] / "examples" / "measured-lobe.toml"
 EXAMPLE_TABLE = EXAMPLE.parent / "data" / "measured-intake-lobe.csv"
-"""Valve lift every 2 crank deg from -70 to 300: the seed 000 appendix lobe x 1.6, 3 crank deg late, 2 um noise."""
+"""Valve lift every 2 crank deg from -70 to 300: the lobe of the appendix of Valve-train practical works (n.d.) x 1.6, 3 crank deg late, 2 um noise."""
 
 
 def _spec_text(table, valve="", **cam):
@@ -53,7 +53,7 @@ def _sampled(shift_deg=0.0, noise=0.0, step_deg=1.0):
 
 
 def test_harmonic_fit_residual_on_a_smooth_law():
-    """An N-harmonic approximation of the seed 000 Kurz lift: the residual falls with N, below 1 um by N = 30."""
+    """An N-harmonic approximation of the Kurz lift of Valve-train practical works (n.d.): the residual falls with N, below 1 um by N = 30."""
     _, theta, lift = _sampled()
     rms = []
     for n in (8, 16, 30):
@@ -133,7 +133,7 @@ def test_bad_tables(tmp_path, text, message):
 
 
 def test_measured_example_runs():
-    """The synthetic measurement of the seed 000 lobe (3 crank deg late): the table sets the timing."""
+    """The synthetic measurement of the lobe of Valve-train practical works (n.d.) (3 crank deg late): the table sets the timing."""
     res = run(load_spec(EXAMPLE))
     m = res.to_dict()["valves"]["intake"]["cam"]["measured"]
     assert m["lobe_centre_deg"] == pytest.approx(119.0, abs=0.05)      # nose at 116 + 3 crank deg
@@ -251,7 +251,7 @@ def test_zero_rows_around_the_lobe_change_nothing(tmp_path):
 
 def test_a_lobe_that_misses_the_stroke_is_refused(tmp_path, refused):
     """Issue 9: a table from the firing TDC read as if from the gas-exchange TDC puts the nose at 119 + 360 - 720 =
-    -241 crank deg, the valve open over -241 -+ 142 (the seed 000 lobe's main event, 2 x 71 cam deg); it is refused
+    -241 crank deg, the valve open over -241 -+ 142 (the main event of the lobe of Valve-train practical works (n.d.), 2 x 71 cam deg); it is refused
     at validation (it divided by a zero time-area before), naming the file, the lobe's span and the stroke window.
     The fit rounds the lobe's foot: its ends lie within 5 crank deg of the law's."""
     angle, lift = read_lift_table(EXAMPLE_TABLE)
@@ -264,7 +264,7 @@ def test_a_lobe_that_misses_the_stroke_is_refused(tmp_path, refused):
 
 
 def _kurz_rows():
-    """Valve lift of the seed 000 lobe x 1.6 with the nose at 120 crank deg, exact, every 2 crank deg over -70...648
+    """Valve lift of the lobe of Valve-train practical works (n.d.) x 1.6 with the nose at 120 crank deg, exact, every 2 crank deg over -70...648
     (718 crank deg, room for a second lobe)."""
     angle = np.arange(-70.0, 649.0, 2.0)
     return angle, seed000_law().valve_lift(np.radians(angle - 120.0) / 2.0, 1.6) * 1e3
@@ -367,7 +367,7 @@ def test_the_harmonic_fit_stays_within_the_table(sigma, seed):
 def test_the_fitted_lift_never_dips_below_the_base_circle(fit):
     """Issue 9: the example's spline dipped 1.5 um below the base circle.  The event is where the fit leaves zero:
     the lift inside is positive, zero outside; at the event's ends the lift is zero and the velocity below half
-    the lobe's own seating velocity (the valve lift starts at the end of the seed 000 ramp, 0.02 mm/cam deg at the
+    the lobe's own seating velocity (the valve lift starts at the end of the ramp of Valve-train practical works (n.d.), 0.02 mm/cam deg at the
     tappet: the fit meets the base circle more gently than the lobe it smooths)."""
     angle, lift = read_lift_table(EXAMPLE_TABLE)
     theta, rows, _ = lobe_table(angle, lift, "crank", accuracy_mm=0.005)
@@ -382,7 +382,7 @@ def test_the_fitted_lift_never_dips_below_the_base_circle(fit):
 
 
 def _dense_kurz_table(path, rows):
-    """``rows`` rows over -70...300 crank deg of the example's true lobe (seed 000 Kurz x 1.6, nose at 119 crank
+    """``rows`` rows over -70...300 crank deg of the example's true lobe (Kurz x 1.6 of Valve-train practical works (n.d.), nose at 119 crank
     deg) with 2 um noise on the lobe."""
     angle = np.linspace(-70.0, 300.0, rows)
     lift = seed000_law().valve_lift(np.radians(angle - 119.0) / 2.0, 1.6) * 1e3
@@ -397,7 +397,7 @@ def _dense_kurz_table(path, rows):
 def test_a_dense_table(tmp_path, rows):
     """Issue 9: a table of 15,000 rows of a 10 mm lobe was reported as 3.97 mm and never closed; 10^5 rows took
     minutes.  The lobe is averaged into at most 1000 points: its lift, nose and durations are the law's (the
-    durations at 0.1...1.27 mm by root finding on the seed 000 law)."""
+    durations at 0.1...1.27 mm by root finding on the law of Valve-train practical works (n.d.))."""
     _dense_kurz_table(tmp_path / "t.csv", rows)
     v = _example_results(_spec_text("t.csv"), tmp_path)
     m = v.summary["cam"]["measured"]
@@ -456,7 +456,7 @@ def test_no_library_message_reaches_the_user():
 
 def test_the_example_table_is_the_built_in_valve_lift_with_noise():
     """The independent reference of the tests below: examples/data/measured-intake-lobe.csv is the built-in
-    example's valve lift (the seed 000 appendix Kurz cam, 1.6 x the tappet lift above the 0.25 mm clearance,
+    example's valve lift (the Kurz cam of the appendix of Valve-train practical works (n.d.), 1.6 x the tappet lift above the 0.25 mm clearance,
     nose at 116 crank deg) 3 crank deg late, with about 2 um of noise: the rows differ from the Kurz law by 2 um RMS
     and never more than 10 um."""
     law = seed000_law()
@@ -595,7 +595,7 @@ def test_durations_do_not_depend_on_the_base_circle_around_the_lobe(tmp_path, st
 
 
 def _published_table(path, squeeze=0.8):
-    """A published valve-lift table of a known lobe: the seed 000 Kurz cam with its angles x ``squeeze`` (a lobe
+    """A published valve-lift table of a known lobe: the Kurz cam of Valve-train practical works (n.d.) with its angles x ``squeeze`` (a lobe
     of 0.8 x its durations: a sharper foot), valve lift 1.6 x (tappet lift - 0.25 mm clearance), nose at 116 crank
     deg after the gas-exchange TDC; the whole cycle every 2 crank deg from the firing TDC, rounded to 1 um as a
     data sheet prints it (no other noise).  Returns the known lobe's valve lift [m] of the cam angle [rad] from

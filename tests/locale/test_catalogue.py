@@ -17,8 +17,10 @@ from valvetrain.design.valve import LAYOUT_BANDS
 from valvetrain.locale import LANGS, catalogue, code_of, codes, parameters
 from valvetrain.report.html import WARNING_SYMBOLS
 from valvetrain.report.names import quantity_text
-from valvetrain.specification import SpecError, example_spec
+from valvetrain.specification import SpecError
 from valvetrain.specification.models import Acceptance
+
+from appendix import appendix_spec
 
 ROOT = Path(__file__).resolve().parents[2]
 PACKAGE = ROOT / "src" / "valvetrain"
@@ -48,6 +50,7 @@ def test_every_code_has_a_text_in_every_language_with_the_same_parameters():
         assert set(catalogue(lang)["checks"]) == set(record), lang
         assert set(catalogue(lang)["springs"]) == set(catalogue("en")["springs"]), lang
         assert set(catalogue(lang)["chapters"]) == set(catalogue("en")["chapters"]), lang
+        assert set(catalogue(lang)["designer"]) == set(catalogue("en")["designer"]), lang
         for code, template in catalogue(lang)["checks"].items():
             assert _fields(template) == _fields(record[code]), (lang, code)
 
@@ -139,7 +142,7 @@ def test_an_acceptance_by_code_survives_a_reworded_check(monkeypatch):
 
 
 def test_the_design_accepts_by_code_and_by_the_old_text_and_refuses_an_unknown_name():
-    spec = example_spec()
+    spec = appendix_spec()
     for quantity in ("timing.closing_lag", "intake: closing lag"):
         accepted = spec.model_copy(update={"accepted": [Acceptance(quantity=quantity, reason="as printed")]})
         assert [c.quantity for c in run(accepted).accepted] == ["intake: closing lag"], quantity
@@ -149,7 +152,7 @@ def test_the_design_accepts_by_code_and_by_the_old_text_and_refuses_an_unknown_n
 
 
 def test_every_check_record_names_its_code_valve_and_parameters():
-    records = run(example_spec()).to_dict()["checks"]
+    records = run(appendix_spec()).to_dict()["checks"]
     for r in records:
         assert r["code"] in codes()
         head, _, rest = r["quantity"].partition(": ")

@@ -7,12 +7,13 @@ import tomllib
 from click.testing import CliRunner
 
 from valvetrain.cli import main
-from valvetrain.specification import example_text
+
+from appendix import appendix_text
 
 
 def _report(tmp_path, extra=""):
     spec = tmp_path / "spec.toml"
-    spec.write_text(example_text() + extra, encoding="utf-8")
+    spec.write_text(appendix_text() + extra, encoding="utf-8")
     out = tmp_path / "out"
     result = CliRunner().invoke(main, ["run", str(spec), "--out", str(out), "--figures", "none"])
     assert result.exit_code == 0, result.output
@@ -49,6 +50,6 @@ def test_without_a_document_section_the_block_has_empty_fields_to_fill(tmp_path)
 
 def test_a_too_long_document_field_is_refused(tmp_path):
     spec = tmp_path / "spec.toml"
-    spec.write_text(example_text() + f'\n[document]\nauthor = "{"x" * 201}"\n', encoding="utf-8")
+    spec.write_text(appendix_text() + f'\n[document]\nauthor = "{"x" * 201}"\n', encoding="utf-8")
     result = CliRunner().invoke(main, ["validate", str(spec)])
     assert result.exit_code == 2 and "document.author" in result.output

@@ -108,7 +108,7 @@ def test_russian_report_has_no_english_words(designs):
 
 def test_the_extractor_finds_english():
     parser = _Visible()
-    parser.feed('<p>подъём <span class="cite">seed 000, work 1</span> tappet_lift_mm</p><img alt="lift">'
+    parser.feed('<p>подъём <span class="cite">Valve-train practical works (n.d.), work 1</span> tappet_lift_mm</p><img alt="lift">'
                 '<style>p { color: red }</style>')
     assert [w for w, _ in english_words(parser.texts)] == ["tappet", "lift", "mm", "lift"]
 

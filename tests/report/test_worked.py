@@ -12,7 +12,8 @@ import pytest
 
 from valvetrain.design import run
 from valvetrain.report.worked import flow_lines, spring_lines
-from valvetrain.specification import example_spec
+
+from appendix import appendix_spec
 
 
 def evaluate(line, lang="en"):
@@ -29,7 +30,7 @@ def evaluate(line, lang="en"):
 
 
 def _lines(lang):
-    results = run(example_spec())
+    results = run(appendix_spec())
     valve = results.spec.model_dump()["valves"]["intake"]
     v = results.valves["intake"]
     return flow_lines(valve, v.flow, results.engine, lang) + spring_lines(v.drive.spring.design, lang)

@@ -9,11 +9,13 @@ from valvetrain.cli import main
 from valvetrain.crank import pressure
 from valvetrain.specification import example_text
 
-CAM = example_text()[example_text().index("[valves.intake.cam]"):example_text().index("# Drive, springs")]
+from appendix import appendix_text, appendix_spec
+
+CAM = appendix_text()[appendix_text().index("[valves.intake.cam]"):appendix_text().index("# Drive, springs")]
 
 
 def _with(*replacements):
-    text = example_text()
+    text = appendix_text()
     for old, new in replacements:
         assert old in text, old
         text = text.replace(old, new, 1)
@@ -22,7 +24,7 @@ def _with(*replacements):
 
 def test_a_utf8_bom_is_accepted(tmp_path):
     f = tmp_path / "bom.toml"
-    f.write_bytes(b"\xef\xbb\xbf" + example_text().encode("utf-8"))
+    f.write_bytes(b"\xef\xbb\xbf" + appendix_text().encode("utf-8"))
     result = CliRunner().invoke(main, ["validate", str(f)])
     assert result.exit_code == 0, result.output
 
@@ -63,7 +65,7 @@ def test_timing_of_a_table_needs_both_angles_or_none(tmp_path, refused):
 
 
 @pytest.mark.parametrize("old,new,message", [
-    # seed 000 work 2 recommends 0.008-0.022 mm/deg: 2e-8 would make a ramp of millions of degrees
+    # Valve-train practical works (n.d.), work 2 recommends 0.008-0.022 mm/deg: 2e-8 would make a ramp of millions of degrees
     ("ramp_end_velocity_mm_per_deg = 0.02", "ramp_end_velocity_mm_per_deg = 2e-8",
      "valves.intake.cam.ramp_end_velocity_mm_per_deg = 2e-08: allowed [0.001, 1] mm/deg"),
     # a table step of 1e-9 deg would allocate terabytes
@@ -77,7 +79,7 @@ def test_values_below_physical_bounds(refused, old, new, message):
 
 
 def test_a_cam_event_over_a_revolution_is_refused(refused):
-    """Clearance 1.5 mm taken up at 0.002 mm/deg: the cosine ramp of seed 000 eq. (2.1), Phi0 = pi h0 / (2 w'),
+    """Clearance 1.5 mm taken up at 0.002 mm/deg: the cosine ramp of Valve-train practical works (n.d.), eq. (2.1), Phi0 = pi h0 / (2 w'),
     lasts 1178 cam deg on each flank (spec/valvetrain-works-1-8.md, work 2)."""
     out = refused(_with(("clearance_mm = 0.25", "clearance_mm = 1.5"),
                         ("ramp_end_velocity_mm_per_deg = 0.02", "ramp_end_velocity_mm_per_deg = 0.002")))
@@ -107,7 +109,7 @@ phi3_deg = 38.0
 
 def test_high_harmonic_and_junction_orders_fit(tmp_path):
     """N = 400, m = 10 made the KKT system singular (a lift of 1.5e10 mm); the null-space solution follows the
-    seed 000 appendix Kurz target (10 mm valve lift) within 2 um."""
+    Kurz target of the appendix of Valve-train practical works (n.d.) (10 mm valve lift) within 2 um."""
     from valvetrain.design import run
     from valvetrain.specification import parse_spec
 
@@ -126,7 +128,7 @@ def _indicator(tmp_path, phi_deg, p):
     """The example with its Wiebe cycle replaced by an indicator file of p(phi_deg) [Pa]."""
     (tmp_path / "ind.csv").write_text("crank_deg,pressure_MPa\n" + "".join(f"{a:.6f},{b / 1e6:.9f}\n"
                                                                            for a, b in zip(phi_deg, p)))
-    text = example_text()
+    text = appendix_text()
     text = text.replace(text[text.index("# Without a pressure_file"):text.index("[output]")], "")
     return text.replace('# pressure_file = "indicator.csv"', 'pressure_file = "ind.csv"')
 
@@ -222,7 +224,7 @@ def test_replace_takes_the_dotted_keys_of_a_study_grid():
     original is unchanged, and a value outside its bounds, an unknown key and a missing valve are SpecErrors."""
     import valvetrain as vt
 
-    spec = vt.example_spec()
+    spec = appendix_spec()
     new = spec.replace({"engine.bore_mm": 85.0, "valves.intake.cam.shape_factor": 0.6})
     assert (new.engine.bore_mm, new.valves["intake"].cam.shape_factor) == (85.0, 0.6)
     assert spec.engine.bore_mm == 80.0 and new.engine.stroke_mm == spec.engine.stroke_mm
@@ -261,7 +263,7 @@ def test_unit_slips_of_the_engine_are_failures(key, value, failing):
     itself (S/D 0.96, c_p 18 m/s, lambda 0.29) passes all three."""
     import valvetrain as vt
 
-    spec = vt.example_spec()
+    spec = appendix_spec()
     engine = {c.quantity.removeprefix("engine: "): c for c in vt.run(spec).checks if c.quantity.startswith("engine: ")}
     assert len(engine) == 3 and all(c.passed for c in engine.values())
     checks = vt.run(spec.replace({key: value})).checks

@@ -1,4 +1,4 @@
-"""Valve springs: characteristic (seed 000 work 5) and design (work 6), with a textbook spring example."""
+"""Valve springs: characteristic (Valve-train practical works (n.d.), work 5) and design (work 6), with a textbook spring example."""
 
 from dataclasses import replace
 
@@ -9,6 +9,8 @@ from hypothesis import given, settings, strategies as st
 from valvetrain import masses, spring_materials, springs
 from valvetrain.locale.wording import diagnosis_text
 from valvetrain.springs import diagnosis
+
+from appendix import appendix_text
 
 from conftest import SEED000_OMEGA_EXACT, seed000_law
 
@@ -51,7 +53,7 @@ def test_natural_frequency_reading():
 
 
 def test_fatigue_without_mean_stress_factor():
-    """E24: without a mean-stress reduction (psi_tau = 1) n = tau_-1/(tau_a + tau_m) = tau_-1/tau_max, below 1.2
+    """Valve-train practical works (n.d.), corrections note 24: without a mean-stress reduction (psi_tau = 1) n = tau_-1/(tau_a + tau_m) = tau_-1/tau_max, below 1.2
     for tau_max > 333 MPa at tau_-1 = 400 MPa; psi_tau = 0.2 gives tau_-1/(tau_a + 0.2 tau_m)."""
     assert springs.fatigue_safety(340e6, 100e6, 400e6, 1.0) == pytest.approx(400 / 340)
     assert springs.fatigue_safety(340e6, 100e6, 400e6, 1.0) < 1.2
@@ -111,7 +113,7 @@ def test_envelope_is_steepest_line_through_full_lift_when_ratio_allows():
 def test_closed_form_envelope_is_the_linear_programme():
     """The closed-form line of enveloping_line is the optimum of the linear programme of its docstring, solved
     independently with scipy's HiGHS: the same smallest P_max and, of the optimal lines, the steepest (largest
-    C at that P_max).  Requirements of the seed 000 appendix cam at random masses, reserves and gas forces."""
+    C at that P_max).  Requirements of the cam of the appendix of Valve-train practical works (n.d.) at random masses, reserves and gas forces."""
     from scipy.optimize import linprog
 
     rng = np.random.default_rng(10)
@@ -150,7 +152,7 @@ def test_lines_of_every_ratio_envelop_the_requirement():
 
 
 def _brute_force(line, throat, omega, options):
-    """Every candidate of the search, one at a time with the scalar formulas of seed 000 (6.1), (6.2), (6.9)-(6.14)
+    """Every candidate of the search, one at a time with the scalar formulas of Valve-train practical works (n.d.), (6.1), (6.2), (6.9)-(6.14)
     and the wire limits written out (Shigley Table 10-4: R_m = A/d^m; [tau] = 0.5 R_m; Goodman through Zimmerli's
     peened point, S_su = 0.67 R_m): (passing springs as (mass, D, d), number of candidates)."""
     material = options.materials[0]
@@ -187,7 +189,7 @@ def _brute_force(line, throat, omega, options):
 @pytest.mark.parametrize("grade", ["VDSiCr", "VDCrV"])
 def test_vectorised_search_equals_brute_force(grade):
     """The array search picks the lightest of the candidates a Python loop over the same grid finds passing,
-    and counts the same ones (a seed 000 appendix-sized line, 260 N + 52 N/mm over 10 mm, at 6000 rpm)."""
+    and counts the same ones (a line the size of that of the appendix of Valve-train practical works (n.d.): 260 N + 52 N/mm over 10 mm, at 6000 rpm)."""
     line = springs.Characteristic(260.0, 52e3, 0.010)
     omega = SEED000_OMEGA_EXACT * 6000 / 7000
     options = springs.SpringOptions(materials=(springs.SpringMaterial(grade),), wire_range_mm=(3.0, 6.0),
@@ -311,10 +313,10 @@ def test_surge_frequency_is_bought_with_stress():
 
 
 def test_resonance_needs_more_stress_than_60s2a_allows_at_7000_rpm():
-    """E27 in numbers: at the seed 000 appendix speed (omega_cam = 366.5 rad/s) and lift (10 mm) a line of
+    """Valve-train practical works (n.d.), corrections note 27 in numbers: at the speed (omega_cam = 366.5 rad/s) and lift (10 mm) of the appendix of Valve-train practical works (n.d.) a line of
     f_max/f_min <= 3.2 has f_max >= 14.545 mm; with chi >= 1.1 (D/d <= 12) the ratio 10 needs, by hand,
     10 x 366.52 x 1.1 x 0.014545 x sqrt(2 x 7850 x 8e10) / pi = 661.5 MPa, above [tau] = 500 MPa of 60S2A
-    (seed 000, work 6): no spring of the manual's steel can pass."""
+    (Valve-train practical works (n.d.), work 6): no spring of the manual's steel can pass."""
     w = springs.stress_window(springs.SpringMaterial(), 0.010, SEED000_OMEGA_EXACT)
     assert w.deflection_ratio == pytest.approx(3.2)
     assert w.max_deflection == pytest.approx(0.010 * 3.2 / 2.2)
@@ -326,7 +328,7 @@ def test_resonance_needs_more_stress_than_60s2a_allows_at_7000_rpm():
 
 def test_diagnosis_of_the_example_in_60s2a():
     """The appendix requirement (m_v 0.147 kg: the example's parts with its spring) with the manual's steel:
-    no spring passes; the diagnosis names tau_max and the resonance ratio, shows the stress window of E27, and
+    no spring passes; the diagnosis names tau_max and the resonance ratio, shows the stress window of Valve-train practical works (n.d.), corrections note 27, and
     each remedy it proposes passes when tried (VDSiCr; a lower speed), while a lower mass does not help (the
     resonance ratio does not depend on the force)."""
     law = seed000_law()
@@ -417,7 +419,7 @@ def test_spring_mass_and_reduced_masses():
 
 
 def test_wire_grades():
-    """60S2A is the manual's steel with the middle of its ranges (seed 000, work 6); the VD grades follow
+    """60S2A is the manual's steel with the middle of its ranges (Valve-train practical works (n.d.), work 6); the VD grades follow
     Shigley Table 10-4 (R_m = A/d^m), Table 10-6 ([tau] = 0.5 R_m) and section 10-9 (S_su = 0.67 R_m, Goodman
     line through Zimmerli's peened point): the manual's n of eq. (6.12) is 1 exactly at that point
     (tau_m = 534 MPa, tau_a = 398 MPa, i.e. tau_max = 932 MPa, tau_min = 136 MPa) for every wire."""
@@ -451,9 +453,9 @@ def test_a_property_given_replaces_the_grade_s():
 
 def _with_spring(section):
     """The built-in example with ``section`` as its [valves.intake.spring] table."""
-    from valvetrain.specification import example_text, parse_spec
+    from valvetrain.specification import parse_spec
 
-    text = example_text()
+    text = appendix_text()
     start, end = text.index("[valves.intake.spring]"), text.index("[valves.intake.parts]")
     return parse_spec(text[:start] + "[valves.intake.spring]\n" + section + "\n\n" + text[end:])
 

@@ -3,7 +3,7 @@
 The power-polynomial cam of the 26/27 diesel example (UkrSURT Proceedings (2019)) and the Kurz cam of the built-in
 example (Valve-train practical works (n.d.), appendix), short searches; the full ones are the command's defaults
 (figures in the README and benchmarks/bench_optimize.py)."""
-# seed 004 (the article's case) and seed 000 (the appendix engine)
+# UkrSURT Proceedings (2019) (the article's case) and Valve-train practical works (n.d.) (the appendix engine)
 
 import csv
 import json
@@ -241,3 +241,38 @@ def test_a_file_without_valves_is_refused(tmp_path):
     r = CliRunner().invoke(main, ["optimize", str(EXAMPLES / "v8-crank.toml"), "--out", str(tmp_path / "o")])
     assert r.exit_code == 2 and "no [valves.NAME] section" in r.output, r.output
     assert isinstance(r.exception, SystemExit)
+
+
+def test_a_population_evaluated_at_once_equals_each_point_on_its_own():
+    """Problem.evaluate_many of a population (points with and without a cam, one twice) gives each point's objective
+    and margins as evaluating it on its own, to 1e-12, and records the same history in the same order."""
+    spec = load_spec(UKRSURT)
+    design = run(spec).valves["intake"]
+    variables = default_variables(spec.valves["intake"], spec.engine)
+
+    def problem():
+        return Problem(spec, design, variables, design_limits(design, 170 * MM, ramp_varied=False)[0])
+
+    rng = np.random.default_rng(5)
+    low, high = np.array([(v.low, v.high) for v in variables]).T
+    together, alone = problem(), problem()
+    near = together.x0 * (0.8 + 0.4 * rng.random((20, len(variables))))
+    xs = [*(low + (high - low) * rng.random((20, len(variables)))), *near, np.array([5.0, 3.0, 0.5, 0.5])]
+    xs.insert(7, xs[3])
+    batch = together.evaluate_many(xs, dynamics=False)
+    one_by_one = [alone.evaluate(x, dynamics=False) for x in xs]
+    assert sum(objective > 0 for objective, _ in batch) >= 10  # cams among them
+    for (o1, m1), (o2, m2) in zip(batch, one_by_one, strict=True):
+        assert o1 == pytest.approx(o2, rel=1e-12)
+        np.testing.assert_allclose(m1, m2, rtol=1e-12, atol=1e-15)
+    assert together.evaluations == alone.evaluations == len(xs) - 1
+    assert together.law_samples == alone.law_samples
+    np.testing.assert_array_equal(np.array(together.points), np.array(alone.points))
+    # the batch's refined extremes are the contour's: the concave radius margin against the law's own curvature
+    # (LiftLaw.curvature) on a grid 256 times finer than the search's, its junctions among them
+    at = together.names.index("concave radius")
+    for x, (objective, margins) in [(x, r) for x, r in zip(xs, batch, strict=True) if r[0] > 0][-5:]:
+        law = together.law(x)[0]
+        theta = np.union1d(np.linspace(law.start, 0.0, 1200 * 256 + 1), law.breakpoints[law.breakpoints < 0.0])
+        rho = law.curvature(theta, together.heel, together.follower)
+        assert margins[at] == pytest.approx(1.0 - 170 * MM / -rho[rho < 0.0].max(), rel=2e-6)

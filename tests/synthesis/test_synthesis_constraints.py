@@ -52,7 +52,7 @@ def test_the_article_cam_against_the_article_limits(article):
     reconstruction cannot make the article's optimum meet its own concave-radius limit (the discrepancy the
     reconstruction states; the follower type of the article is not known)."""
     c = by_name(constraints(article, Limits.article()))
-    assert article.records["power_polynomial"]["tappet_fullness"] == pytest.approx(0.667, abs=2e-3)
+    assert article.records.power_polynomial.tappet_fullness == pytest.approx(0.667, abs=2e-3)
     assert c["max pressure angle"].value / DEG == pytest.approx(26.8, abs=0.05) and c["max pressure angle"].passed
     assert article.profile.contact.min_concave_radius / MM == pytest.approx(-102.4, abs=0.1)
     assert c["grinding wheel radius / concave radius"].value == pytest.approx(170 / 102.4, rel=1e-3)
@@ -68,7 +68,7 @@ def test_the_reconstruction_optimum_meets_every_limit():
     found = constraints(d, Limits.article())
     assert worst_margin(found) > -2e-3
     assert by_name(found)["grinding wheel radius / concave radius"].margin == pytest.approx(0.0, abs=2e-3)
-    eta = d.records["power_polynomial"]["tappet_fullness"]
+    eta = d.records.power_polynomial.tappet_fullness
     assert eta == pytest.approx(0.660, abs=1e-3)
     poly = PolydyneLaw(20.3 * MM, 68.75 * DEG, 10, ramp_height=0.8 * MM, ramp_velocity=6 * MM)
     phi = np.linspace(poly.valve_opens, poly.valve_closes, 200001)

@@ -15,6 +15,8 @@ from valvetrain.specification import parse_spec  # noqa: E402
 from valvetrain.web.app import SEVERITY_COLOURS, Designer  # noqa: E402
 from valvetrain.web.session import Session, form, parse_value  # noqa: E402
 
+from appendix import appendix_text  # noqa: E402
+
 
 def test_panel_fields_carry_the_models_bounds():
     fields = {f.path: f for _, group in form(Session.start().document) for f in group}
@@ -68,9 +70,9 @@ def _colour(designer, quantity):
 
 def test_page_callbacks():
     doc = Document()
-    d = Designer(doc, Session.start())
+    d = Designer(doc, Session.start(appendix_text()))
     quantity = "intake: V' (throat velocity)"
-    # V' = 85.07 m/s at 7000 rpm, above 80; 72.9 m/s at 6000 rpm (c_p S n / 30 scaled by 6/7)
+    # the appendix example: V' = 85.07 m/s at 7000 rpm, above 80; 72.9 m/s at 6000 rpm (c_p S n / 30 scaled by 6/7)
     assert _colour(d, quantity) != SEVERITY_COLOURS["pass"]
     f = next(f for _, group in form(d.session.document) for f in group if f.path == "engine.rated_speed_rpm")
     d.on_field(f, "value", 7000, 6000)

@@ -22,7 +22,9 @@ from .. import flow
 from ..checks import SEVERITIES, Check, apply_acceptances, check, failed, ranked, tally
 from ..crank.pressure import PressureFileError
 from ..files import TableFileError
+from ..laws.records import LawRecord
 from ..specification import Spec, SpecError, crank_geometry, si, spec_document, validate
+from ..specification.messages import Problem
 from ..specification.models import Dynamics
 from ..units import MM, to_display
 from .camcard import CamCard, CamCardValve, cam_card_stage
@@ -201,7 +203,7 @@ def run(spec, laws=None, progress=None) -> DesignResults:
         try:
             crank_view = si(spec.crank, spec)
         except PressureFileError as exc:
-            raise SpecError([f"crank.pressure_file: {exc}"]) from None
+            raise SpecError([Problem("crank.pressure_file", str(exc))]) from None
     crank = crank_stage(crank_view, engine, valve_timing(valves)) if crank_view is not None else None
     if waiting:
         cylinder = CylinderPressure(crank.phi, crank.columns["p_abs"], crank.pressure_source)
@@ -313,7 +315,7 @@ def _valve_view(name, valve, spec):
     try:
         return si(valve, spec)
     except (TableFileError, PressureFileError) as exc:
-        raise SpecError([f"valves.{name}.cam.table_file: {exc}"]) from None
+        raise SpecError([Problem(f"valves.{name}.cam.table_file", str(exc))]) from None
 
 
 def sweep_designs(spec, names=None, progress=None) -> dict[str, ValveDesign]:
@@ -361,8 +363,7 @@ def sweep_designs(spec, names=None, progress=None) -> dict[str, ValveDesign]:
 def results_schema() -> dict[str, Any]:
     """JSON Schema (draft 2020-12) of results.json, generated from the stage results' field metadata.
 
-    The law's own records (seed formulas, a measured table's analysis) and the strength checks are objects
-    described in the README.
+    The strength checks are objects described in the README.
     """
     from .. import __version__
 
@@ -391,10 +392,7 @@ def results_schema() -> dict[str, Any]:
                                              "description": "the checks whose parts are not given"}
     valve = {"type": "object", "properties": {
         "kind": {"type": "string"}, "count": {"type": "integer"}, "rocker_ratio": {"type": "number"},
-        "cam": merged(json_schema(CamResult), json_schema(ProfileResult),
-                      seed_formulas="the appendix formulas of Valve-train practical works (n.d.) beside the exact extremes (Kurz cams)",
-                      residuals="residuals of the junction conditions (Kurz cams)",
-                      measured="a measured table's analysis: durations, lobe centre, fit quality"),
+        "cam": merged(json_schema(CamResult), json_schema(ProfileResult), json_schema(LawRecord)),
         "flow": json_schema(FlowResult), "piston_clearance": json_schema(ClearanceResult),
         "masses": json_schema(MassResult), "spring": json_schema(SpringResult),
         "strength": strength, "dynamics": json_schema(DynamicsResult),

@@ -10,6 +10,7 @@ import numpy as np
 from ..checks import Check, check, tally
 from ..crank import dynamics, kinematics, pressure, torque
 from ..specification import SpecError
+from ..specification.messages import Problem
 from ..units import MPA
 from .results import quantity, record
 
@@ -183,7 +184,7 @@ def _gas_pressure(c, strokes, phi, bore, radius, lam, k, timing=None):
             try:
                 pressure.check_timing(model)
             except ValueError as exc:
-                raise SpecError([f"crank.cycle: {exc}"]) from None
+                raise SpecError([Problem("crank.cycle", str(exc))]) from None
             valves = (f"compression from the intake valve's closing, a blowdown of {pressure.BLOWDOWN_DEG:g} deg "
                       f"from the exhaust valve's opening ({where or 'valves at the dead centres'})")
         else:
@@ -235,7 +236,7 @@ def crank_stage(c, eng, timing=None) -> CrankResults:
     try:
         p_abs, source = _gas_pressure(c, strokes, phi, bore, radius, lam, k, timing)
     except pressure.PressureFileError as exc:
-        raise SpecError([f"crank.pressure_file: {exc}"]) from None
+        raise SpecError([Problem("crank.pressure_file", str(exc))]) from None
     masses = _masses(c, area, 2 if eng.layout == "v" else 1)
     forces = dynamics.cylinder_dynamics(phi, p_abs, c.ambient_pressure, bore, radius, lam, omega, masses, k, exact)
     beta = kinematics.rod_angle(phi, lam, k)

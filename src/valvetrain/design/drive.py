@@ -102,6 +102,8 @@ class SpringRecord:
     passes_all_checks: bool = quantity("passes_all_checks", label="every check of the spring passes")
     binding_check: str = quantity("binding_check", label="the check with the smallest margin")
     margins: dict[str, float] = quantity("margins", label="relative margin of each check (>= 0 passes)")
+    design_margin: float = quantity("design_margin_percent", "%", "the smaller margin of the fatigue safety and the "
+                                    "resonance ratio above their minima")
 
 
 def spring_record(s) -> SpringRecord:
@@ -113,7 +115,7 @@ def spring_record(s) -> SpringRecord:
         n["free_pitch"], c.preload_deflection, c.max_deflection, s.mean_diameter / s.wire_diameter, s.shape_factor,
         s.wahl, s.tau_max, s.tau_min, s.safety, s.natural_frequency / (2 * np.pi), s.resonance_ratio, s.mass,
         s.material, s.target_ratio, bool(n["free_length"] / s.mean_diameter > 2.5), s.passes, s.binding_check,
-        s.margins)
+        s.margins, s.design_margin)
 
 
 @dataclass(frozen=True)
@@ -140,6 +142,8 @@ class SpringResult:
     seat_load_source: str = quantity("seat_load_source", label="source of the seat load")
     deflection_ratio: float = quantity("deflection_ratio", label="f_max / f_min of the chosen spring(s)")
     spring_reserve: float = quantity("spring_reserve", label="spring reserve K_z")
+    min_margin: float = quantity("min_margin_percent", "%", "design margin asked of the fatigue safety and the "
+                                 "resonance ratio")
     candidates_passing: int = quantity("candidates_passing", label="candidates that pass every check")
     candidates_tried: int = quantity("candidates_tried", label="candidates tried")
     diagnosis: Optional[dict[str, Any]] = quantity("diagnosis", label="why no spring passes and what would help",
@@ -246,7 +250,8 @@ def spring_options(sp) -> springs.SpringOptions:
         grade=grade(name).name, shear_modulus=sp.shear_modulus, density=sp.density_kg_m3,
         allowable_stress=sp.allowable_stress, endurance_limit=sp.endurance_limit,
         mean_stress_factor=sp.mean_stress_factor, min_safety=sp.min_safety_factor,
-        min_resonance_ratio=sp.min_resonance_ratio, gap_factor=sp.coil_gap_factor) for name in names)
+        min_resonance_ratio=sp.min_resonance_ratio, design_margin=sp.min_margin, gap_factor=sp.coil_gap_factor)
+        for name in names)
     return springs.SpringOptions(
         materials=materials, count=sp.count, inner_share=sp.inner_share, diameter_range=sp.mean_diameter_ratio,
         wire_range_mm=tuple(to_display(x, "mm") for x in sp.wire_diameter_range),
@@ -341,6 +346,9 @@ def drive_stage(valve, gas, cam) -> DriveResult:
         found.append(check("spring.inner_share", sp.inner_share, *springs.INNER_SHARE_RANGE, source="Valve-train practical works (n.d.), work 5"))
     for tag, d in designs.items():
         found += _spring_checks(tag, d, diagnosis_text(diagnosis, "en") if diagnosis else "")
+        found.append(check("spring.design_margin", d.design_margin, low=sp.min_margin, unit="%",
+                           source="min_margin_percent of the specification: the smaller margin of the fatigue safety "
+                                  "and the resonance ratio above their minima (eqs. 6.12, 6.14)").of_spring(tag))
     if sp.count == 2:
         difference = designs["inner"].checks["frequency_difference"]
         found.append(replace(difference, quantity=record_text("spring.pair_frequency_difference"),
@@ -359,7 +367,7 @@ def drive_stage(valve, gas, cam) -> DriveResult:
         gas_source, bool(raised and seat > p_gas), seat,
         "min_preload_N of the specification" if sp.min_preload_N is not None else
         f"m_v x {springs.SEAT_ACCELERATION:.5g} m/s2 (100 g, a stated default)",
-        ratio, drive.spring_reserve, n_pass, search.tried, None if diagnosis is None else diagnosis_record(diagnosis),
+        ratio, drive.spring_reserve, sp.min_margin, n_pass, search.tried, None if diagnosis is None else diagnosis_record(diagnosis),
         design, **pair)
 
     train = None
@@ -698,11 +706,21 @@ def _roller_side_force(cam, follower, maps, drive):
         note=f"{_where(w)}, pressure angle {to_display(beta, 'deg'):.3g} deg; carried by {carrier}")
 
 
+def strength_limit(c) -> tuple[str, float]:
+    """The side and the bound of a strength check in its display unit: ``("<=", high)`` or ``(">=", low)``."""
+    return ("<=", to_display(c.high, c.unit)) if c.high is not None else (">=", to_display(c.low, c.unit))
+
+
+def strength_allowed(c) -> str:
+    """The allowed range of a strength check as results.json and the report write it (``"<= 1200"``)."""
+    side, limit = strength_limit(c)
+    return f"{side} {limit:g}"
+
+
 def _strength_record(c):
     """results.json record of a strength check: value and limit in its unit, pass, source (and a note)."""
-    limit = c.high if c.high is not None else c.low
-    out = {"value": c.shown_value, "allowed": f"{'<=' if c.high is not None else '>='} {to_display(limit, c.unit):g}",
-           "limit": to_display(limit, c.unit), "unit": c.unit, "pass": c.passed, "source": c.source}
+    out = {"value": c.shown_value, "allowed": strength_allowed(c), "limit": strength_limit(c)[1], "unit": c.unit,
+           "pass": c.passed, "source": c.source}
     if c.note:
         out["note"] = c.note
     return out

@@ -25,6 +25,7 @@ from ..dynamics.resonance import resonance
 from ..dynamics.sweep import SpeedResult, SweepResult, sweep, sweep_size
 from ..layouts import chain, layout
 from ..specification import SpecError
+from ..specification.messages import Problem
 from ..strength import cam_force
 from ..units import DEG, MM, cam_per_crank, rpm_to_rad_s, to_display
 from .results import quantity, record
@@ -239,8 +240,8 @@ def drive_links(dyn, valve, k, at) -> tuple[tuple[Optional[float], ...], tuple[s
     if total is not None:
         rest = 1.0 / total - known
         if rest <= 0.0:
-            raise SpecError([f"{at}.{key} = {total * MM:g}: stiffer than the links estimated from [parts] alone "
-                             f"({1.0 / known * MM:.5g} N/mm in series); allowed below that"])
+            raise SpecError([Problem(f"{at}.{key}", f"stiffer than the links estimated from [parts] alone "
+                                     f"({1.0 / known * MM:.5g} N/mm in series); allowed below that", f"{total * MM:g}")])
         share = len(unknown) / rest
         notes.append(", ".join(links[i][0] for i in unknown) + f": {share * MM:.5g} N/mm each at the valve, the "
                      f"rest of c = {total * MM:.5g} N/mm")
@@ -304,8 +305,8 @@ def train_spring(dyn, valve, law, line, mass, cam_speed, at) -> tuple[float, flo
     lift = valve.rocker_ratio * law.lift_max
     rate = spring_rate(mass, nose_acceleration(law, cam_speed, valve.rocker_ratio), reserve, preload, lift)
     if rate <= 0.0:
-        raise SpecError([f"{at}.dynamics.spring_preload_N = {preload:g}: above the spring force K_3 M |j_min| the "
-                         "rated speed needs, so no positive rate follows; give spring_rate_N_per_mm"])
+        raise SpecError([Problem(f"{at}.dynamics.spring_preload_N", "above the spring force K_3 M |j_min| the rated "
+                                 "speed needs, so no positive rate follows; give spring_rate_N_per_mm", f"{preload:g}")])
     return rate, preload, (f"K = {rate * MM:.5g} N/mm = (K_3 M |j_min| - F0) / h_max with K_3 = {reserve:g}, F0 = "
                            f"{preload:.5g} N given (Valve-train dynamics article (n.d.), step 4a)")
 
@@ -327,8 +328,8 @@ def adjuster_link(valve, law, drive, cam_speed: float, at: str) -> tuple[float, 
     la = valve.lash_adjuster
     ratio = hla.motion_ratio(la.location, valve.rocker_ratio)
     if ratio <= 0.0:
-        raise SpecError([f"{at}.lash_adjuster.location = \"pivot\" needs rocker_ratio > 1 (an end-pivot finger); "
-                         f"rocker_ratio = {valve.rocker_ratio:g}"])
+        raise SpecError([Problem(f"{at}.lash_adjuster.location", "needs rocker_ratio > 1 (an end-pivot finger); "
+                                 f"rocker_ratio = {valve.rocker_ratio:g}", '"pivot"', " ")])
     force = adjuster_reference_force(valve, law, drive, cam_speed, ratio)
     stiffness = hla.secant_stiffness(force, la.plunger_spring_N, hla.plunger_area(la.plunger_diameter),
                                      la.supply_pressure, la.chamber_volume, la.bulk_modulus, la.air_content)[0]
@@ -382,15 +383,15 @@ def _multi_train(valve, links, springs, lash, kw, at):
     m, drive = valve.drive.masses, chain(valve)
     need = drive.train_masses
     if m is None:
-        raise SpecError([f"{at}.dynamics.model = \"multi\" needs [{at}.drive.masses] with valve_kg, "
-                         f"{', '.join(need)} (the masses of the drive parts)"])
+        raise SpecError([Problem(f"{at}.dynamics.model", f"needs [{at}.drive.masses] with valve_kg, "
+                                 f"{', '.join(need)} (the masses of the drive parts)", '"multi"', " ")])
     si_keys = {"tappet_kg": "tappet_kg", "pushrod_kg": "pushrod_kg", "rocker_inertia_kg_mm2": "rocker_inertia"}
     missing = [key for key in need if getattr(m, si_keys[key]) <= 0.0]
     if drive.rocker and valve.drive.valve_arm is None:
         missing.append("valve_arm_mm (in [drive])")
     if missing:
-        raise SpecError([f"{at}.dynamics.model = \"multi\" with layout \"{drive.name}\" needs positive "
-                         f"drive.masses.{', '.join(missing)}"])
+        raise SpecError([Problem(f"{at}.dynamics.model", f"with layout \"{drive.name}\" needs positive "
+                                 f"drive.masses.{', '.join(missing)}", '"multi"', " ")])
     k = valve.rocker_ratio
     valve_mass = m.valve_kg + m.retainer_kg + m.cotters_kg
     inf = math.inf
@@ -518,10 +519,11 @@ def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, 
     step_deg = dyn.step / DEG
     work, size = sweep_size(train.network(), speeds * to_cam, dyn.revolutions, step_deg)
     if not dyn.allow_large_sweep and (work > MAX_SWEEP_WORK or size > MAX_SWEEP_BYTES):
-        raise SpecError([f"{at}.dynamics: speeds = {dyn.speeds} x revolutions = {dyn.revolutions} at step_cam_deg = "
-                         f"{step_deg:g} is about {work:.3g} integrator steps x elements (allowed {MAX_SWEEP_WORK:.3g}) "
-                         f"and {size / 1e6:.0f} MB of recorded revolutions (allowed {MAX_SWEEP_BYTES / 1e6:.0f} MB); "
-                         "fewer speeds or revolutions or a larger step, or allow_large_sweep = true to run it"])
+        raise SpecError([Problem(f"{at}.dynamics", f"speeds = {dyn.speeds} x revolutions = {dyn.revolutions} at "
+                                 f"step_cam_deg = {step_deg:g} is about {work:.3g} integrator steps x elements (allowed "
+                                 f"{MAX_SWEEP_WORK:.3g}) and {size / 1e6:.0f} MB of recorded revolutions (allowed "
+                                 f"{MAX_SWEEP_BYTES / 1e6:.0f} MB); fewer speeds or revolutions or a larger step, or "
+                                 "allow_large_sweep = true to run it")])
     if progress is not None:
         progress(0, dyn.speeds)
     result = sweep(law, train, speeds * to_cam, dyn.revolutions, step_deg, progress=progress)

@@ -9,7 +9,7 @@ import numpy as np
 from .. import tribology
 from ..bibliography import cite
 from ..checks import Check, check
-from ..specification.messages import SpecError
+from ..specification.messages import Problem, SpecError
 from ..strength import hertz_half_width
 from ..units import to_display
 from .drive import event_load_maps
@@ -178,7 +178,8 @@ def lubrication_stage(lub, valve, engine, cam, drive, dynamics=None,
     """
     at = f"valves.{name}"
     if valve.parts.cam_width is None:
-        raise SpecError([f"{at}.lubrication needs {at}.parts.cam_width_mm (the load per unit width of the contact)"])
+        raise SpecError([Problem(f"{at}.lubrication", f"needs {at}.parts.cam_width_mm (the load per unit width of the "
+                                 "contact)", joiner=" ")])
     maps = event_load_maps(valve, engine, cam, drive, dynamics)[1]
     to_cam = cam.cam_speed / engine.rated_speed
     rows, worst = [], None
@@ -187,7 +188,7 @@ def lubrication_stage(lub, valve, engine, cam, drive, dynamics=None,
         try:
             c = contact_map(lub, cam, valve.parts.cam_width, valve.parts.contact_modulus, theta, m.force, omega)
         except UndercutError as exc:
-            raise SpecError([f"{at}.lubrication: {exc}"]) from None
+            raise SpecError([Problem(f"{at}.lubrication", str(exc))]) from None
         for i, speed in enumerate(m.speeds):
             lam = c["lam"][i]
             if not np.any(np.isfinite(lam)):
@@ -205,7 +206,8 @@ def lubrication_stage(lub, valve, engine, cam, drive, dynamics=None,
             if worst is None or lam[j] < worst[0]:
                 worst = (float(lam[j]), float(speed), float(theta[j]))
     if worst is None:
-        raise SpecError([f"{at}.lubrication: the follower never touches the cam under load over the speed range"])
+        raise SpecError([Problem(f"{at}.lubrication", "the follower never touches the cam under load over the speed "
+                                 "range")])
     rows.sort(key=lambda row: row[0])
     per = LubricationPerSpeed(*(tuple(col) for col in zip(*rows, strict=True)))
     hot = int(np.argmax(per.max_contact_temperature))

@@ -8,7 +8,6 @@ caller's own.  Crank angles are measured from the gas-exchange TDC (the TDC that
 intake stroke) in (-360, 360]; camshaft angles from the cam nose.
 """
 
-from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
 from functools import cached_property
 import math
@@ -22,9 +21,11 @@ from ..crank.kinematics import displacement
 from ..followers import follower_of
 from ..laws import LiftLaw
 from ..laws.base import Extremes
+from ..laws.records import LawRecord
 from ..layouts import LAYOUTS, layout
 from ..numerics import extremum
 from ..specification import SpecError
+from ..specification.messages import Problem
 from ..springs import NoSpringFits
 from ..units import DEG, MM, to_display
 from .drive import DriveResult, drive_record, drive_stage, strength_stage
@@ -33,7 +34,7 @@ from .grinding import GrindingResult, grinding_stage
 from .hydraulic_actuation import HydraulicResult, hydraulic_stage
 from .lash_adjuster import LashAdjusterResult, lash_adjuster_stage
 from .lubrication import LubricationResult, lubrication_stage
-from .results import quantity, record
+from .results import NamedValues, quantity, record
 
 ACCELERATION_LIMITS = (3500.0, -1500.0)
 """Upper ends of the recommended bands of positive (1500-3500) and negative (500-1500) tappet
@@ -91,10 +92,6 @@ def layout_check(code, value, layout, **kw) -> Optional[Check]:
         return None
     return check(code, value, band.low, band.high, source=band.source, note=band.note, **kw)
 
-ENGINE_CLASSES = ("automotive_petrol", "automotive_diesel", "heavy_duty")
-"""The engine classes of ``[engine] engine_class``: a car or motorcycle petrol engine, a car, truck or tractor diesel,
-and a heavy-duty engine (locomotive, marine, stationary)."""
-
 PETROL_BANDS = ("timing.opening_advance", "timing.closing_lag", "valve.seat_angle", "valve.clearance",
                 "drive.rocker_ratio")
 """The checks whose recommended bands are those of a petrol engine (Valve-train practical works (n.d.), works 1 and 2:
@@ -106,7 +103,7 @@ OTHER_CLASS_NOTE = ("the band is a petrol engine's (Valve-train practical works 
 
 def engine_class(engine) -> str:
     """The engine class whose recommended bands apply: ``[engine] engine_class``, else an automotive diesel for
-    ``type = "diesel"`` and an automotive petrol engine otherwise (:data:`ENGINE_CLASSES`)."""
+    ``type = "diesel"`` and an automotive petrol engine otherwise."""
     if engine.engine_class is not None:
         return engine.engine_class
     return "automotive_diesel" if engine.type == "diesel" else "automotive_petrol"
@@ -192,7 +189,7 @@ class CamResult:
     law: LiftLaw = field(repr=False)
     name: str = quantity("law", label="lift law")
     source: str = quantity("source", label="source of the law's formulas")
-    coefficients: dict[str, Any] = quantity("coefficients", label="the law's coefficients in its source's units")
+    coefficients: NamedValues = quantity("coefficients", label="the law's coefficients in its source's units")
     extremes: Extremes = field(repr=False)
     max_velocity: float = quantity("max_velocity_m_s", "m/s", "largest tappet velocity")
     max_acceleration: float = quantity("max_acceleration_m_s2", "m/s2", "largest tappet acceleration")
@@ -350,35 +347,38 @@ def law_stage(valve, engine, law=None) -> CamResult:
     ValueError
         The inputs admit no law that can be made: the law's own rules, a lift that overshoots the nose or dips
         below the base circle, an event of a whole revolution or more, a valve lift beyond half the throat; the
-        message starts with the key within the valve (``cam: ...``, ``max_lift_mm = ...``).
+        argument is a :class:`~valvetrain.specification.messages.Problem` naming the key within the valve (``cam``,
+        ``max_lift_mm``).
     """
     cam = valve.cam
     try:
         law = cam.section.build(valve, engine) if law is None else law
     except ValueError as exc:
-        raise ValueError(f"cam: {exc}") from None
+        raise ValueError(Problem("cam", str(exc))) from None
     nose_lift = law.lift_max + law.ramp_height
     low, high = (extremum(law.lift, law.breakpoints, kind)[1] for kind in ("min", "max"))
     if high > nose_lift * (1.0 + 1e-6) or low < -1e-6 * nose_lift:
-        raise ValueError(f"cam: the lift runs from {low / MM:.4g} to {high / MM:.4g} mm; allowed 0 to the nose lift "
-                         f"{nose_lift / MM:.4g} mm (the law's angles and ramp velocity do not fit together)")
+        raise ValueError(Problem("cam", f"the lift runs from {low / MM:.4g} to {high / MM:.4g} mm; allowed 0 to the nose "
+                                 f"lift {nose_lift / MM:.4g} mm (the law's angles and ramp velocity do not fit together)"))
     event = law.end - law.start
     if not event < 2.0 * np.pi:
         ramp = math.degrees(law.ramp_angle)
-        raise ValueError(f"cam: the cam event lasts {math.degrees(event):.4g} cam deg; allowed < 360" + (
+        raise ValueError(Problem("cam", f"the cam event lasts {math.degrees(event):.4g} cam deg; allowed < 360" + (
             f" (a ramp of {ramp:.4g} cam deg on each flank: raise ramp_end_velocity_mm_per_deg or lower "
-            "clearance_mm)" if ramp > 0.0 else ""))
+            "clearance_mm)" if ramp > 0.0 else "")))
     lift = law.lift_max * valve.rocker_ratio
     if lift > MAX_LIFT_TO_THROAT * valve.throat_diameter:
-        key = "cam.table_file: the measured valve lift" if cam.law == "table" else "max_lift_mm"
-        raise ValueError(f"{key} = {lift / MM:.4g} mm: allowed at most {MAX_LIFT_TO_THROAT:g} x throat_diameter_mm = "
-                         f"{MAX_LIFT_TO_THROAT * valve.throat_diameter / MM:.4g} mm (the curtain area already equals "
-                         "the throat area at a quarter of the diameter)")
+        allowed = (f"allowed at most {MAX_LIFT_TO_THROAT:g} x throat_diameter_mm = "
+                   f"{MAX_LIFT_TO_THROAT * valve.throat_diameter / MM:.4g} mm (the curtain area already equals the "
+                   "throat area at a quarter of the diameter)")
+        if cam.law == "table":
+            raise ValueError(Problem("cam.table_file", f"the measured valve lift = {lift / MM:.4g} mm: {allowed}"))
+        raise ValueError(Problem("max_lift_mm", allowed, f"{lift / MM:.4g} mm"))
     omega = engine.rated_speed / 2.0
     ext = law.extremes(omega)
     seat = valve.rocker_ratio * omega * np.abs(law.derivatives(np.array([law.valve_opens, law.valve_closes]))[1])
     nose = cam.section.nose_crank(valve, law)
-    return CamResult(law, law.name, law.source, law.coefficients(), ext, ext.max_velocity, ext.max_acceleration,
+    return CamResult(law, law.name, law.source, NamedValues.of(law.coefficients()), ext, ext.max_velocity, ext.max_acceleration,
                      ext.min_acceleration, law.main_half_angle, law.ramp_angle, law.ramp_height, law.lift_max,
                      float(seat[0]), float(seat[1]), event, nose, nose + 2.0 * law.valve_opens,
                      nose + 2.0 * law.valve_closes, omega, cam.follower, cam.base_radius,
@@ -599,7 +599,7 @@ class ValveDesign:
     flow: FlowResult
     profile: ProfileResult
     clearance: Optional[ClearanceResult]
-    records: Mapping[str, Any]     # the law's own results (seed formulas, a measured table's analysis), as shown
+    records: LawRecord             # the law's own results (seed formulas, a measured table's analysis)
     drive: DriveResult             # masses, spring curves, strength
     checks: tuple[Check, ...] = ()                  # every check of the valve, passed or not
     dynamics: Optional[DynamicsResult] = None       # with a [dynamics] section
@@ -636,7 +636,7 @@ class ValveDesign:
         """The valve's record in results.json (engineering units, named in the keys), made once: read it, don't
         change it."""
         out = {"kind": self.kind, "count": self.count, "rocker_ratio": self.rocker_ratio,
-               "cam": {**record(self.cam), **record(self.profile), **self.records}, "flow": record(self.flow)}
+               "cam": {**record(self.cam), **record(self.profile), **record(self.records)}, "flow": record(self.flow)}
         if self.clearance is not None:
             out["piston_clearance"] = record(self.clearance)
         out.update(drive_record(self.drive))
@@ -687,19 +687,19 @@ def design_valve(name, valve, engine, gas, output, law=None, progress=None, cyli
     try:
         cam = law_stage(valve, engine, law)
     except ValueError as exc:
-        raise SpecError([f"{at}.{exc}"]) from None
+        raise SpecError([exc.args[0].within(at)]) from None
     flow_result = flow_stage(cam, valve, engine)
     profile = profile_stage(cam, valve, output)
     try:
         clearance = clearance_stage(cam, valve, engine)
     except ValueError as exc:
-        raise SpecError([f"{at}: {exc}"]) from None
+        raise SpecError([Problem(at, str(exc))]) from None
     section = valve.cam.section
     records, found = section.records(cam.law, valve, engine, cam.nose)
     try:
         drive = drive_stage(valve, gas, cam)
     except NoSpringFits as exc:
-        raise SpecError([f"{at}.spring: {exc}"]) from None
+        raise SpecError([Problem(f"{at}.spring", str(exc))]) from None
     found += valve_checks(cam, flow_result, profile, valve, engine, section.timing(valve, records)) + list(drive.checks)
     found += mass_checks(valve, drive.masses.at_valve, flow_result.throat_area)
     if clearance is not None:

@@ -4,16 +4,11 @@ elastic pipe.
 
 The drive is the one of Shang Hanji (1988), ch. 7: a cam-driven plunger feeds a pipe that drives an
 actuator piston on the valve.  Pressures are absolute [Pa]; forces on the valve are taken from the
-pressure above the back (drain) pressure.
+pressure above the back (drain) pressure.  The liquid and pipe formulas are those of Wylie and Streeter (1978).
 """
 
 from dataclasses import dataclass
 import math
-
-from ..bibliography import cite
-
-SOURCE = cite("wylie1978")
-"""The work the liquid and pipe formulas come from."""
 
 
 def wave_speed(bulk_modulus, density, diameter=0.0, wall_thickness=math.inf, wall_modulus=math.inf,

@@ -29,12 +29,8 @@ import math
 import numpy as np
 from numba import njit
 
-from ..bibliography import cite
 from ..dynamics.sweep import BOUNCE_TOLERANCE, bounce, seating
 from .moc import characteristics, interior
-
-SOURCE = cite("shang1988", "ch. 7") + "; " + cite("wylie1978", "method of characteristics")
-"""Where the model comes from."""
 
 
 @njit(cache=True)

@@ -9,16 +9,12 @@ one, so that a frictionless pipe is solved without numerical error):
 
 where A and B are the neighbouring nodes at the previous time step (friction taken there, first order).
 Pressures below the vapour pressure are clamped to it: a simple column-separation model that flags the
-cavitation but does not track the cavity volume (mass is not conserved while a node is clamped).
+cavitation but does not track the cavity volume (mass is not conserved while a node is clamped).  The scheme is
+the method of characteristics of Wylie and Streeter (1978).
 """
 
 import numpy as np
 from numba import njit
-
-from ..bibliography import cite
-
-SOURCE = cite("wylie1978", "method of characteristics")
-"""Where the scheme comes from."""
 
 PRESSURE = 0
 """Boundary kind: the pressure at the pipe end is prescribed."""

@@ -147,6 +147,19 @@ class LiftLaw(ABC):
     def derivatives(self, theta):
         """Lift and its first three derivatives, shape (4, n) [m, m/rad, m/rad^2, m/rad^3]."""
 
+    def batch_key(self):
+        """Laws of one class with equal keys (not None) are sampled together by the class's
+        :meth:`_batch_derivatives` (:func:`batch_derivatives`); None (the default): each on its own."""
+        return None
+
+    @classmethod
+    def _batch_derivatives(cls, laws, theta, member):
+        """The derivatives of ``laws[member[k]]`` at ``theta[k]``, shape (4, n): each law at its own angles."""
+        out = np.empty((4, theta.size))
+        for law, at in zip(laws, _members(member, len(laws)), strict=True):
+            out[:, at] = law.derivatives(theta[at])
+        return out
+
     @abstractmethod
     def coefficients(self):
         """The law's coefficients as a dict in the units of its source (for results and reports)."""
@@ -235,8 +248,7 @@ class LiftLaw(ABC):
         """Valve lift i_k i_f(h) (h - h0) for h > h0, else 0 [m] (Valve-train practical works (n.d.), work 2: valve =
         tappet x l_v/l_t), with i_f the follower's own lever ratio (:meth:`valvetrain.followers.Follower.ratio`, 1 for
         a translating follower)."""
-        h = self.lift(theta)
-        return rocker_ratio * follower.ratio(h) * np.clip(h - self.ramp_height, 0.0, None)
+        return valve_lift_of(self.lift(theta), self.ramp_height, rocker_ratio, follower)
 
     def crossings(self, height):
         """Camshaft angles [rad from the nose] where the lift first rises above and last falls below ``height``
@@ -413,12 +425,99 @@ class SymmetricLaw(LiftLaw):
         return out.reshape((4,) + theta.shape)
 
     def _mirrored(self, theta, out):
-        """Write the law at the angles ``theta`` (1-D) into ``out`` (zeros, shape (4, n)) by mirroring :meth:`_rise`."""
-        inside = np.abs(theta) <= self.half_angle
+        """Write the law at the angles ``theta`` (1-D) into ``out`` (zeros, shape (4, n)) by mirroring :meth:`_rise`:
+        the batch of one law (:meth:`_mirror`)."""
+        self._mirror([self], theta, None, out)
+
+    @classmethod
+    def _batch_derivatives(cls, laws, theta, member):
+        if laws[0].batch_key() is None:  # no batch of its own (a compiled kernel): each law on its own
+            return super()._batch_derivatives(laws, theta, member)
+        out = np.zeros((4, theta.size))
+        cls._mirror(laws, theta, member, out)
+        return out
+
+    @classmethod
+    def _mirror(cls, laws, theta, member, out):
+        """Write ``laws[member[k]]`` at ``theta[k]`` (``member`` None: the one law at every angle) into ``out`` (zeros,
+        shape (4, n)) by mirroring :meth:`_batch_rise`."""
+        half = member_values([law.half_angle for law in laws], member)
+        inside = np.abs(theta) <= half
         t = theta[inside]
-        r = self._rise(self.half_angle - np.abs(t))
+        if member is not None:
+            half, member = half[inside], member[inside]
+        r = cls._batch_rise(laws, half - np.abs(t), member)
         r[1::2] *= -np.sign(t)
         out[:, inside] = r
+
+    @classmethod
+    def _batch_rise(cls, laws, phi, member):
+        """The rise of ``laws[member[k]]`` at ``phi[k]`` (``member`` None: the one law), shape (4, n): each law's
+        :meth:`_rise` (a law with a batch of its own overrides this)."""
+        if member is None:
+            return laws[0]._rise(phi)
+        out = np.empty((4, phi.size))
+        for law, at in zip(laws, _members(member, len(laws)), strict=True):
+            out[:, at] = law._rise(phi[at])
+        return out
+
+
+def _members(member, count):
+    """The positions of each law's samples in a batch, in order (``member[k]`` the law of sample k), for laws 0 to
+    ``count`` - 1."""
+    order = np.argsort(member, kind="stable")
+    return np.split(order, np.searchsorted(member[order], np.arange(1, count)))
+
+
+def valve_lift_of(h, ramp_height, rocker_ratio=1.0, follower=FLAT):
+    """Valve lift i_k i_f(h) (h - h0) for h > h0, else 0 [m], of the follower lifts ``h`` [m] (:meth:`LiftLaw.valve_lift`;
+    ``ramp_height`` h0 [m] and ``rocker_ratio`` i_k scalars or one an angle)."""
+    return rocker_ratio * follower.ratio(h) * np.clip(h - ramp_height, 0.0, None)
+
+
+def member_values(values, member):
+    """Per-law ``values`` (a sequence, one a law) at each sample of a batch: ``values[member]``, or the one law's value
+    where ``member`` is None (:func:`batch_derivatives`)."""
+    return values[0] if member is None else np.asarray(values, dtype=float)[member]
+
+
+def batch_derivatives(laws, theta, member):
+    """Lift and its first three derivatives of several laws, each at its own angles.
+
+    Parameters
+    ----------
+    laws : sequence of LiftLaw
+    theta : array_like
+        Camshaft angles [rad from the nose], shape (n,).
+    member : array_like of int
+        The law of each angle, an index into ``laws``, shape (n,).
+
+    Returns
+    -------
+    ndarray
+        Shape (4, n): h, dh/dtheta, d2h/dtheta2, d3h/dtheta3 of ``laws[member[k]]`` at ``theta[k]`` [m, m/rad, m/rad^2,
+        m/rad^3], the numbers of each law's :meth:`LiftLaw.derivatives`.
+
+    Notes
+    -----
+    Laws of one class with equal :meth:`LiftLaw.batch_key` are sampled together, their coefficients gathered per
+    angle, one pass over the pieces for all of them; the others each on its own.
+    """
+    theta, member = np.asarray(theta, dtype=float), np.asarray(member)
+    groups = {}
+    for i, law in enumerate(laws):
+        key = law.batch_key()
+        groups.setdefault(i if key is None else (type(law), key), []).append(i)
+    if len(groups) == 1:
+        return type(laws[0])._batch_derivatives(laws, theta, member)
+    out = np.empty((4, theta.size))
+    position = np.empty(len(laws), dtype=int)
+    for indices in groups.values():
+        position[indices] = np.arange(len(indices))
+        at = np.isin(member, indices)
+        out[:, at] = type(laws[indices[0]])._batch_derivatives([laws[i] for i in indices], theta[at],
+                                                               position[member[at]])
+    return out
 
 
 @njit(cache=True)

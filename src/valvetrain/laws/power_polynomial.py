@@ -24,12 +24,12 @@ and is infinite at a junction where an exponent below 1 meets it (p and r of the
 The ramp starts with the finite acceleration A_0 (three coefficients, three conditions).
 """
 
-from functools import cached_property
+from functools import cached_property, lru_cache
 
 import numpy as np
 
 from ..checks import check
-from .base import SymmetricLaw
+from .base import SymmetricLaw, member_values
 from .errors import LawError
 
 ARTICLE_EXPONENTS = dict(n=1.0, m=4.0, p=0.5, q=4.5, r=0.3, s=2.5, t=4.0, u=7.0)
@@ -130,6 +130,19 @@ def flat_extremum(e1, e2):
 def plateau(chi):
     """Terms of 1 - x^chi: 1 with zero slope at x = 0, 0 at x = 1 (R1)."""
     return ((1.0, 0.0), (-1.0, chi))
+
+
+@lru_cache(maxsize=64)
+def _shape(kind, terms):
+    """The piece ``kind(terms)`` (:class:`_PowerRise` or :class:`_PowerFall`), made once for each set of terms: the
+    laws of a search share their pieces' shapes, and with them the totals F(1), G(1)."""
+    return kind(terms)
+
+
+@lru_cache(maxsize=64)
+def _ramp(height, angle, velocity):
+    """The ramp piece of :func:`ramp_coefficients`, solved once for each ramp (the laws of a search share it)."""
+    return _Quadratic(*ramp_coefficients(height, angle, velocity))
 
 
 def ramp_coefficients(height, angle, velocity):
@@ -247,18 +260,18 @@ class PowerPolynomialLaw(SymmetricLaw):
     def _shapes(self):
         e = self.exponents
         if self.reconstruction == "R2":
-            pos = [(self.x_d, _PowerRise(flat_extremum(e["n"], e["m"]))),
-                   (1.0 - self.x_d, _PowerFall(flat_extremum(e["p"], e["q"])))]
-            neg = [(self.x_g, _PowerRise(flat_extremum(e["r"], e["s"]))),
-                   (1.0 - self.x_g, _PowerFall(flat_extremum(e["t"], e["u"])))]
+            pos = [(self.x_d, _shape(_PowerRise, flat_extremum(e["n"], e["m"]))),
+                   (1.0 - self.x_d, _shape(_PowerFall, flat_extremum(e["p"], e["q"])))]
+            neg = [(self.x_g, _shape(_PowerRise, flat_extremum(e["r"], e["s"]))),
+                   (1.0 - self.x_g, _shape(_PowerFall, flat_extremum(e["t"], e["u"])))]
         else:
             chi = self.sharpness
-            pos = [(self.x_d, _PowerFall(plateau(chi))), (1.0 - self.x_d, _PowerRise(plateau(chi)))]
-            neg = [(self.x_g, _PowerFall(plateau(chi))), (1.0 - self.x_g, _PowerRise(plateau(chi)))]
+            pos = [(self.x_d, _shape(_PowerFall, plateau(chi))), (1.0 - self.x_d, _shape(_PowerRise, plateau(chi)))]
+            neg = [(self.x_g, _shape(_PowerFall, plateau(chi))), (1.0 - self.x_g, _shape(_PowerRise, plateau(chi)))]
         return pos, neg
 
     def _build(self):
-        ramp = _Quadratic(*ramp_coefficients(self._h0, self._phi0, self.v_qb))
+        ramp = _ramp(self._h0, self._phi0, self.v_qb)
         pos, neg = self._shapes()
         pieces = [("ramp", self._phi0, 1.0, ramp)]
         pieces += [(name, frac * self.phi1, self.a_qd, shape) for name, (frac, shape) in zip(("b-d", "d-e"), pos)]
@@ -292,6 +305,7 @@ class PowerPolynomialLaw(SymmetricLaw):
             F, G = shape.totals()
             S, v, start = S + v * L + A * L**2 * G, v + A * L * F, start + L
         self.S_h, self.v_h = S, v
+        self._table = np.array([(start, L, A, S0, v0) for _, start, L, A, _, S0, v0 in self._pieces])
 
     @property
     def nose_lift(self):
@@ -327,13 +341,32 @@ class PowerPolynomialLaw(SymmetricLaw):
             out[-1] = (out[-1][0], out[-1][1], self.half_angle)
         return out
 
+    def batch_key(self):
+        """The shapes of the pieces: laws with the same reconstruction, exponents and sharpness are sampled together
+        (their pieces differ in length, amplitude and start values only)."""
+        return self.reconstruction, tuple(self.exponents.values()), self.sharpness
+
     def _rise(self, phi):
+        return self._batch_rise([self], phi, None)
+
+    @classmethod
+    def _batch_rise(cls, laws, phi, member):
+        """The rise of ``laws[member[k]]`` at ``phi[k]`` (``member`` None: the one law), shape (4, n): on each piece
+        S = S_0 + v_0 L xi + A L^2 G(xi), v = v_0 + A L F(xi), a = A f(xi), a' = A f'(xi) / L, the lift S_h over
+        the dwell."""
+        table = None if member is None else np.array([law._table for law in laws]).transpose(1, 2, 0)
         out = np.zeros((4, phi.size))
-        out[0] = self.S_h
-        for _, start, L, A, shape, S0, v0 in self._pieces:
-            m = (phi >= start) & (phi <= start + L)
+        out[0] = member_values([law.S_h for law in laws], member)
+        for k, piece in enumerate(laws[0]._pieces):
+            if member is None:
+                _, start, L, A, _, S0, v0 = piece
+                m = (phi >= start) & (phi <= start + L)
+            else:
+                start, L = table[k, 0][member], table[k, 1][member]
+                m = (phi >= start) & (phi <= start + L)
+                start, L, A, S0, v0 = table[k][:, member[m]]
             xi = np.clip((phi[m] - start) / L, 0.0, 1.0)
-            f, F, G, df = shape.values(xi)
+            f, F, G, df = piece[4].values(xi)
             out[:, m] = (S0 + v0 * L * xi + A * L**2 * G, v0 + A * L * F, A * f, A * df / L)
         return out
 

@@ -6,7 +6,8 @@ in this folder, loaded once:
 
 * ``en.toml`` ``[record]``: the check's English text in ``results.json``, the console and ``[[accepted]]``;
 * ``LANG.toml`` ``[checks]``: the check as the report in ``LANG`` names it;
-* ``LANG.toml`` ``[springs]``: the springs whose own checks are named after them.
+* ``LANG.toml`` ``[springs]``: the springs whose own checks are named after them;
+* ``LANG.toml`` ``[designer]``: the words of the designer in the browser (``valvetrain serve``, :mod:`valvetrain.web`).
 
 ``{name}`` in a text stands for the parameter ``name``.  ``tests/locale/test_catalogue.py`` fails when a code lacks a
 text in a language or a text names no code the package uses; docs/checks.md lists every code.

@@ -1,6 +1,7 @@
 """The HTML design report (Jinja2 template ``templates/report.html``): one file, its figures embedded."""
 
 import base64
+from dataclasses import fields
 from html import unescape
 
 import re
@@ -11,12 +12,13 @@ import numpy as np
 
 from .. import __version__
 from ..checks import describe_range, tally
+from ..design.drive import strength_allowed
 from ..design.dynamics import SOURCES as DYNAMICS_SOURCES
 from ..design.grinding import SOURCES as GRINDING_SOURCES
 from ..design.hydraulic_actuation import SOURCES as HYDRAULIC_SOURCES
 from ..design.lash_adjuster import SOURCES as ADJUSTER_SOURCES
 from ..design.lubrication import SOURCES as LUBRICATION_SOURCES
-from ..design.results import record, shown, shown_value
+from ..design.results import NamedValues, record, shown, shown_value
 from ..tables import lift_table_columns
 from ..bibliography import WORKS, cited_in
 from ..units import to_display
@@ -147,12 +149,20 @@ WARNING_SYMBOLS = {
 
 
 def _coefficient_symbols(coefficients):
-    """The symbols of a lift law's coefficient table."""
+    """The symbols of a lift law's coefficient table (:class:`~valvetrain.results.NamedValues`)."""
     if "c11" in coefficients:
         return ["c_ij", "k_i", "K12"]
     if "C2" in coefficients:
         return ["h_max", "C_poly", "pqrs"]
     return ["coefficients"]
+
+
+def _coefficients(coefficients, prefix=""):
+    """The rows of a lift law's coefficient table: ``(name, value)``, a flank's own coefficients under its name."""
+    rows = []
+    for k, val in coefficients.items():
+        rows += _coefficients(val, f"{prefix}{k}.") if isinstance(val, NamedValues) else [(f"{prefix}{k}", val)]
+    return rows
 
 
 def _flatten(d, prefix=""):
@@ -185,73 +195,98 @@ def _geometry(v):
 
 def _seed(v):
     """The appendix formulas of a Kurz cam beside the profile's exact figures: ``(key, formula, exact)``."""
+    formulas = v.records.seed_formulas
+    if formulas is None:
+        return []
     exact = dict(shown(v.cam, "max_velocity", "max_acceleration", "min_acceleration")
                  + shown(v.profile, "rho_min", "rho_max"))
-    return [(k, val, exact[k]) for k, val in v.records.get("seed_formulas", {}).items()]
+    return [(k, val, exact[k]) for k, val in shown(formulas)]
 
 
 def _measured(rec, lang):
-    """The measured-table analysis for the report: scalars (the fit's reason in the report's language),
-    durations at the checking heights, fit quality."""
+    """The measured-table analysis (:class:`~valvetrain.laws.records.MeasuredRecord`) for the report: scalars (the
+    fit's reason in the report's language), durations at the checking heights, fit quality."""
     if rec is None:
         return None
-    hidden = ("fit_reason_code", "spline_smoothing", "gcv_ratio_harmonic_to_spline")
-    scalars = [(k, _fit_reason(rec, lang) if k == "fit_reason" else val) for k, val in rec.items()
-               if not isinstance(val, (list, dict)) and k not in hidden]
-    return {"summary": scalars, "durations": rec["durations_deg"], "quality": list(rec["fit_quality"].items())}
+    hidden = ("durations", "fit_reason_code", "spline_smoothing", "gcv_ratio", "fit_quality")
+    scalars = [(k, _fit_reason(rec, lang) if k == "fit_reason" else val)
+               for k, val in shown(rec, *(f.name for f in fields(rec) if f.name not in hidden))]
+    return {"summary": scalars, "durations": [dict(shown(d)) for d in rec.durations],
+            "quality": [(kind, dict(shown(q))) for kind, q in rec.fit_quality.items()]}
 
 
 def _fit_reason(rec, lang):
-    """The fit a measured table used and why, from the codes of results.json in the report's language."""
-    ratio = rec.get("gcv_ratio_harmonic_to_spline")
-    ratio = float("nan") if ratio is None else ratio if rec["fit"] == "harmonic" else 1.0 / ratio
-    return fit_reason(rec["fit"], rec["harmonics"], rec["fit_reason_code"], ratio, rec["spline_smoothing"], lang)
+    """The fit a measured table used and why, from its codes in the report's language."""
+    ratio = float("nan") if rec.gcv_ratio is None else rec.gcv_ratio if rec.fit == "harmonic" else 1.0 / rec.gcv_ratio
+    return fit_reason(rec.fit, rec.harmonics, rec.fit_reason_code, ratio, rec.spline_smoothing, lang)
 
 
-DYNAMICS_HEADLINE = ["speed_range_rpm", "speeds", "jump_speed_rpm", "bounce_speed_rpm", "max_seating_velocity_m_s",
-                     "max_seating_velocity_speed_rpm", "coil_clash_speed_rpm", "epsilon", "natural_frequency_Hz",
-                     "natural_frequencies_Hz", "max_revolutions", "unsettled_speeds"]
+def _strength(st):
+    """The strength chapter of a valve from its :class:`~valvetrain.design.drive.StrengthResult`: the rows, each
+    check (its code without ``strength.``, the check, its allowed range) and the checks whose parts are not given."""
+    return {"rows": [(k, val) for k, val in shown(st) if k != "per_speed"],
+            "checks": [(c.code.removeprefix("strength."), c, strength_allowed(c)) for c in st.checks],
+            "not_checked": st.not_checked}
 
 
-def _dynamics(rec):
-    """The dynamics record for the report: headline rows, the train, the estimates, the rated speed, resonance."""
-    if rec is None:
+DYNAMICS_HEADLINE = ("speed_range", "speeds", "jump_speed", "bounce_speed", "max_seating_velocity",
+                     "max_seating_velocity_speed", "coil_clash_speed", "epsilon", "natural_frequency",
+                     "natural_frequencies", "max_revolutions", "unsettled_speeds")
+"""The fields of :class:`~valvetrain.design.dynamics.DynamicsResult` in the head of the report's dynamics chapter."""
+
+
+def _present(result, *names):
+    """:func:`~valvetrain.design.results.shown` of the named fields of a result (every field without names), less
+    those that results.json leaves out where they are None."""
+    names = names or tuple(f.name for f in fields(result) if "key" in f.metadata)
+    omitted = {f.name for f in fields(result) if f.metadata.get("omit_none") and getattr(result, f.name) is None}
+    return [row for row, name in zip(shown(result, *names), names, strict=True) if name not in omitted]
+
+
+def _except(result, *names):
+    """The names of a result's fields in results.json less the named."""
+    return tuple(f.name for f in fields(result) if "key" in f.metadata and f.name not in names)
+
+
+def _dynamics(d):
+    """The dynamics chapter of a valve from its :class:`~valvetrain.design.dynamics.DynamicsResult`: headline rows,
+    the train, the estimates, the rated speed, resonance."""
+    if d is None:
         return None
-    params = rec["parameters"]
-    return {"headline": [(k, rec[k]) for k in DYNAMICS_HEADLINE if k in rec],
-            "parameters": [(k, val) for k, val in params.items() if k != "estimates" and not isinstance(val, dict)],
-            "nodes": list(params.get("node_masses_kg", {}).items()), "estimates": params["estimates"],
-            "rated": list(rec["at_rated_speed"].items()),
-            "resonance": [(k, val) for k, val in rec["resonance"].items() if not k.startswith("spectrum")],
-            "spectrum": list(zip(rec["resonance"]["spectrum_k"], rec["resonance"]["spectrum_distortion_percent"],
-                                 strict=True)),
-            "table": rec["sweep_table"], "revolutions": params["revolutions"]}
+    p, res = d.parameters, d.resonance
+    return {"headline": _present(d, *DYNAMICS_HEADLINE),
+            "parameters": _present(p, *_except(p, "estimates", "node_masses")),
+            "nodes": [] if p.node_masses is None else list(shown_value(p, "node_masses").items()),
+            "estimates": p.estimates, "rated": _present(d.at_rated_speed),
+            "resonance": _present(res, *_except(res, "orders", "spectrum")),
+            "spectrum": list(zip(res.orders, shown_value(res, "spectrum"), strict=True)),
+            "table": d.sweep_table, "revolutions": p.revolutions}
 
 
 def _grinding(name, v):
-    """The grinding record for the report: its rows (booleans and numbers; the table's file is listed with the
+    """The grinding chapter of a valve: its rows (booleans and numbers; the table's file is listed with the
     master's files) and the files written for manufacture."""
-    if v.grinding is None:
+    g = v.grinding
+    if g is None:
         return None
-    rec = record(v.grinding)
-    files = [] if v.profile.undercut else ([rec["wear_table"]] if "wear_table" in rec else [])
-    if v.grinding.master_makeable and not v.profile.undercut:
+    files = [] if v.profile.undercut or g.wear_table_file is None else [g.wear_table_file]
+    if g.master_makeable and not v.profile.undercut:
         files += [f"contour/{name}_master.csv", f"contour/{name}_master_cartesian.csv", f"contour/{name}_master.dxf"]
-    return {"rows": [(k, val) for k, val in rec.items() if k != "wear_table"], "files": files}
+    return {"rows": _present(g, *_except(g, "wear_table_file")), "files": files}
 
 
 def _hydraulic(v):
-    """The hydraulic record for the report: its rows (the simulated speed), the notes on the defaults taken and the
+    """The hydraulic chapter of a valve: its rows (the simulated speed), the notes on the defaults taken and the
     tables' files (the sweep is shown in its figure)."""
-    if v.hydraulic is None:
+    h = v.hydraulic
+    if h is None:
         return None
-    rec = record(v.hydraulic)
-    gas = dict(rec.get("gas_force", {}))
-    source = gas.pop("pressure_source", None)
-    return {"rows": [(k, val) for k, val in rec.items()
-                     if k not in ("table", "sweep_table", "notes") and not isinstance(val, (list, dict))],
-            "gas_rows": [(f"gas_force.{k}", val) for k, val in gas.items()], "gas_source": source,
-            "notes": rec["notes"], "table": rec["table"], "sweep_table": rec["sweep_table"]}
+    gas = h.gas_force
+    return {"rows": [(k, val) for k, val in _present(h, *_except(h, "table_file", "sweep_table", "notes", "gas_force"))
+                     if not isinstance(val, (list, dict))],
+            "gas_rows": [] if gas is None else [(f"gas_force.{k}", val) for k, val in _present(gas, *_except(gas, "source"))],
+            "gas_source": None if gas is None else gas.source,
+            "notes": h.notes, "table": h.table_file, "sweep_table": h.sweep_table}
 
 
 LUBRICATION_COLUMNS = ["speed_rpm", "min_film_um", "min_film_parameter", "boundary_cam_deg", "mixed_cam_deg",
@@ -260,15 +295,20 @@ LUBRICATION_COLUMNS = ["speed_rpm", "min_film_um", "min_film_parameter", "bounda
 """The columns of the report's table of the cam contact against engine speed."""
 
 
+def _table(per_speed, columns):
+    """The rows of a per-speed result (its columns named by their results.json keys)."""
+    shown_columns = dict(_present(per_speed))
+    return list(zip(*(shown_columns[c] for c in columns), strict=True))
+
+
 def _lubrication(v):
-    """The lubrication record for the report: its headline rows and its table against engine speed."""
-    if v.lubrication is None:
+    """The lubrication chapter of a valve: its headline rows and its table against engine speed."""
+    lub = v.lubrication
+    if lub is None:
         return None
-    rec = record(v.lubrication)
-    per = rec["per_speed"]
-    return {"rows": [(k, val) for k, val in rec.items() if k not in ("per_speed", "follower", "zero_entrainment_cam_deg")],
-            "zero": rec["zero_entrainment_cam_deg"], "columns": LUBRICATION_COLUMNS,
-            "table": list(zip(*(per[c] for c in LUBRICATION_COLUMNS), strict=True))}
+    return {"rows": _present(lub, *_except(lub, "per_speed", "follower", "zero_entrainment")),
+            "zero": shown_value(lub, "zero_entrainment"), "columns": LUBRICATION_COLUMNS,
+            "table": _table(lub.per_speed, LUBRICATION_COLUMNS)}
 
 
 ADJUSTER_COLUMNS = ["speed_rpm", "leak_down_um", "valve_lash_um", "refill_share", "pump_up_um", "held_open_um"]
@@ -276,14 +316,12 @@ ADJUSTER_COLUMNS = ["speed_rpm", "leak_down_um", "valve_lash_um", "refill_share"
 
 
 def _lash_adjuster(v):
-    """The lash-adjuster record for the report: its headline rows and its table against engine speed."""
-    if v.lash_adjuster is None:
+    """The lash-adjuster chapter of a valve: its headline rows and its table against engine speed."""
+    adj = v.lash_adjuster
+    if adj is None:
         return None
-    rec = record(v.lash_adjuster)
-    per = rec["per_speed"]
-    return {"rows": [(k, val) for k, val in rec.items() if k not in ("per_speed", "location")],
-            "location": rec["location"], "columns": ADJUSTER_COLUMNS,
-            "table": list(zip(*(per[c] for c in ADJUSTER_COLUMNS), strict=True))}
+    return {"rows": _present(adj, *_except(adj, "per_speed", "location")), "location": adj.location,
+            "columns": ADJUSTER_COLUMNS, "table": _table(adj.per_speed, ADJUSTER_COLUMNS)}
 
 
 def _summary(results, t):
@@ -385,7 +423,6 @@ def render_report(results, plots, lang="en", folder=None):
     valves = []
     for name, v in results.valves.items():
         spring = v.drive.spring
-        coefficients = shown_value(v.cam, "coefficients")
         valves.append({
             "name": name, "valve": v, "plots": plots.get(name, {}),
             "inputs": _flatten(spec["valves"][name]),
@@ -396,22 +433,22 @@ def render_report(results, plots, lang="en", folder=None):
             "cam": shown(v.cam, *CAM_FIELDS),
             "steps": [record(st) for st in v.cam.acceleration_steps],
             "geometry": _geometry(v),
-            "coefficients": list(coefficients.items()),
-            "coefficient_symbols": _coefficient_symbols(coefficients),
+            "coefficients": _coefficients(v.cam.coefficients),
+            "coefficient_symbols": _coefficient_symbols(v.cam.coefficients),
             "input_symbols": INPUT_SYMBOLS,
             "seed": _seed(v),
-            "residuals": list(v.records.get("residuals", {}).items()),
-            "measured": _measured(v.records.get("measured"), lang),
+            "residuals": list((v.records.residuals or {}).items()),
+            "measured": _measured(v.records.measured, lang),
             "clearance": [] if v.clearance is None else shown(v.clearance),
             "masses": shown(v.drive.masses),
             "spring": [(k, val) for k, val in shown(spring) if not isinstance(val, dict)],
             "pair": [(t, record(pair)) for pair, t in ((spring.outer, "outer_spring"), (spring.inner, "inner_spring"))
                      if pair is not None],
             "no_spring_passes": not spring.design.passes_all_checks and spring.candidates_passing == 0,
-            "strength": v.summary["strength"],
+            "strength": _strength(v.drive.strength),
             "table": _abridged_table(v, lang),
             "warnings": v.warnings,
-            "dynamics": None if v.dynamics is None else _dynamics(record(v.dynamics)),
+            "dynamics": _dynamics(v.dynamics),
             "grinding": _grinding(name, v),
             "hydraulic": _hydraulic(v),
             "lubrication": _lubrication(v),

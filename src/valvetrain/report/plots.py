@@ -2,8 +2,8 @@
 
 A figure is its data and its drawing: ``X_data(result)`` gives the series a figure shows (plain arrays in the
 units of its axes, names and angles), ``draw_X(data, t)`` draws them with the texts ``t`` of a language, and
-``X_figure(result, t)`` is the two in turn (the contour, curvature, dynamics, grinding and hydraulic figures still
-read the design as they draw).
+``X_figure(result, t)`` is the two in turn (the contour and curvature figures still read the design as they
+draw).
 
 Each figure has fixed margins (``subplots_adjust``): those that ``tight_layout`` chose for the widest labels of the
 shipped examples in English and Russian, rounded outwards; ``tight_layout`` measured every text of a figure before
@@ -480,81 +480,132 @@ def timing_figure(valves, t) -> Figure:
     return draw_timing(timing_data(valves), t)
 
 
-def dynamics_map_figure(name, d, t):
-    """Maps over camshaft angle and engine speed: valve lift minus the rigid lift, and the cam contact force."""
+def _speed_marks(values) -> list[Any]:
+    """Engine speeds [rad/s] in rpm for the marks of a figure, None where not defined (not finite)."""
+    return [to_display(v, "rpm") if np.isfinite(v) else None for v in values]
+
+
+def dynamics_map_data(name, d) -> dict[str, Any]:
+    """The series of :func:`draw_dynamics_map`: camshaft angles of the event window [deg from the nose], engine
+    speeds [rpm], the maps of valve lift minus the rigid lift [mm] and of the cam contact force [N] (speeds x
+    angles), the jump and bounce speeds [rpm] (None: none) and the valve's name."""
     sw = d.sweep
     keep = event_window(d)
-    x = rad_to_deg(sw.theta[keep])
-    y = to_display(np.asarray(d.per_speed.speed), "rpm")
+    return {"name": name, "cam_deg": rad_to_deg(sw.theta[keep]), "rpm": to_display(np.asarray(d.per_speed.speed), "rpm"),
+            "lift_error_mm": sw.lift_error[:, keep] / MM, "contact_force_N": sw.contact_force[:, keep],
+            "jump_rpm": _speed_marks([d.jump_speed])[0], "bounce_rpm": _speed_marks([d.bounce_speed])[0]}
+
+
+def draw_dynamics_map(d, t) -> Figure:
+    """Maps over camshaft angle and engine speed: valve lift minus the rigid lift, and the cam contact force."""
+    x, y, err = d["cam_deg"], d["rpm"], d["lift_error_mm"]
     fig = Figure(figsize=(9, 8))
     axes = fig.subplots(2, 1, sharex=True)
-    err = sw.lift_error[:, keep] / MM
     bound = float(np.abs(err).max()) or 1.0
     for ax, z, label, cmap, kw in ((axes[0], err, t["dyn_lift_error"], "RdBu_r", dict(vmin=-bound, vmax=bound)),
-                                   (axes[1], sw.contact_force[:, keep], t["dyn_contact_force"], "viridis", {})):
+                                   (axes[1], d["contact_force_N"], t["dyn_contact_force"], "viridis", {})):
         mesh = ax.pcolormesh(x, y, z, cmap=cmap, shading="auto", rasterized=True, **kw)
         fig.colorbar(mesh, ax=ax, label=label)
         ax.set_ylabel(t["speed"])
-        for value, style in ((d.jump_speed, "--"), (d.bounce_speed, ":")):
-            if np.isfinite(value):
-                ax.axhline(to_display(value, "rpm"), color="k", lw=0.8, ls=style)
-    axes[0].set_title(f"{name}: {t['dyn_lift_error']}")
+        for value, style in ((d["jump_rpm"], "--"), (d["bounce_rpm"], ":")):
+            if value is not None:
+                ax.axhline(value, color="k", lw=0.8, ls=style)
+    axes[0].set_title(f"{d['name']}: {t['dyn_lift_error']}")
     axes[1].set_title(t["dyn_contact_force"] + " (" + t["dyn_zero_is_jump"] + ")")
     axes[1].set_xlabel(t["cam_deg"])
     fig.subplots_adjust(left=0.1, right=0.97, bottom=0.08, top=0.94, hspace=0.13)
     return fig
 
 
-def dynamics_speed_figure(name, d, t):
+def dynamics_map_figure(name, d, t) -> Figure:
+    """:func:`draw_dynamics_map` of :func:`dynamics_map_data`."""
+    return draw_dynamics_map(dynamics_map_data(name, d), t)
+
+
+def dynamics_speed_data(name, d) -> dict[str, Any]:
+    """The series of :func:`draw_dynamics_speed`: engine speed [rpm], |seating velocity| [m/s] (NaN: no seating),
+    bounce [mm], the smallest contact force [N], the jump, bounce and rated speeds [rpm] (None: none) and the
+    valve's name."""
+    p = d.per_speed
+    jump, bounce, rated = _speed_marks([d.jump_speed, d.bounce_speed, d.at_rated_speed.speed])
+    return {"name": name, "rpm": to_display(np.asarray(p.speed), "rpm"),
+            "seating_velocity_m_s": np.abs(np.array(p.seating_velocity, dtype=float)),
+            "bounce_mm": np.asarray(p.bounce) / MM, "min_contact_force_N": np.asarray(p.min_contact_force),
+            "jump_rpm": jump, "bounce_rpm": bounce, "rated_rpm": rated}
+
+
+def draw_dynamics_speed(d, t) -> Figure:
     """Seating velocity, bounce and the smallest contact force against the engine speed, the headline speeds
     marked."""
-    p = d.per_speed
-    n = to_display(np.asarray(p.speed), "rpm")
+    n = d["rpm"]
     fig = Figure(figsize=(9, 8))
     axes = fig.subplots(3, 1, sharex=True)
-    axes[0].plot(n, np.abs(np.array(p.seating_velocity, dtype=float)), color="C3")   # None (no seating): a gap
+    axes[0].plot(n, d["seating_velocity_m_s"], color="C3")   # NaN (no seating): a gap
     axes[0].set_ylabel(t["dyn_seating_velocity"])
-    axes[1].plot(n, np.asarray(p.bounce) / MM, color="C1")
+    axes[1].plot(n, d["bounce_mm"], color="C1")
     axes[1].set_ylabel(t["dyn_bounce"])
-    axes[2].plot(n, p.min_contact_force, color="C0")
+    axes[2].plot(n, d["min_contact_force_N"], color="C0")
     axes[2].set_ylabel(t["dyn_min_force"])
     axes[2].set_xlabel(t["speed"])
     for ax in axes:
         ax.grid(alpha=0.3)
-        marks = ((d.jump_speed, t["dyn_jump_speed"], "--"), (d.bounce_speed, t["dyn_bounce_speed"], ":"),
-                 (d.at_rated_speed.speed, t["dyn_rated"], "-."))
+        marks = ((d["jump_rpm"], t["dyn_jump_speed"], "--"), (d["bounce_rpm"], t["dyn_bounce_speed"], ":"),
+                 (d["rated_rpm"], t["dyn_rated"], "-."))
         for value, label, style in marks:
-            if np.isfinite(value):
-                ax.axvline(to_display(value, "rpm"), color="0.3", lw=0.8, ls=style, label=label)
+            if value is not None:
+                ax.axvline(value, color="0.3", lw=0.8, ls=style, label=label)
     axes[0].legend(fontsize=8)
-    axes[0].set_title(f"{name}: {t['dyn_title']}")
+    axes[0].set_title(f"{d['name']}: {t['dyn_title']}")
     fig.subplots_adjust(left=0.1, right=0.97, bottom=0.08, top=0.94, hspace=0.1)
     return fig
 
 
-def grinding_figure(valve, t):
-    """The cam, the wheel-centre path and the master to scale; the lift error of the worn wheel against cam angle."""
+def dynamics_speed_figure(name, d, t) -> Figure:
+    """:func:`draw_dynamics_speed` of :func:`dynamics_speed_data`."""
+    return draw_dynamics_speed(dynamics_speed_data(name, d), t)
+
+
+def grinding_data(valve) -> dict[str, Any]:
+    """The series of :func:`draw_grinding`: the cam contour, the wheel-centre path and the master contour [mm]
+    (``(x, y)``, None where there is none), the lift error of the worn wheel exact and to first order [um] against
+    the camshaft angle [deg from the nose] (None where the cam cannot be ground), the law's segment boundaries
+    [deg], the wheel wear [mm] and the valve's name."""
     g = valve.grinding
+    w = g.wear
+    return {"name": valve.name,
+            "contours": [(kind, None if pts is None else pts / MM) for kind, pts in
+                         (("cam", g.cam_contour), ("wheel_path", g.wheel_path), ("master", g.master_contour))],
+            "cam_deg": None if w is None else rad_to_deg(w.cam_angle),
+            "error_um": None if w is None else w.error / MM * 1e3,
+            "error_first_order_um": None if w is None else w.error_first_order / MM * 1e3,
+            "boundaries_deg": segment_boundaries(valve.law), "wheel_wear_mm": g.wheel_wear / MM}
+
+
+GRINDING_STYLES = {"cam": ("gr_cam", dict(color="k", lw=1.5)), "wheel_path": ("gr_wheel_path", dict(color="C1", lw=0.8, ls="--")),
+                   "master": ("gr_master", dict(color="C0", lw=1.2))}
+"""The text key and line style of each contour of the grinding figure."""
+
+
+def draw_grinding(d, t) -> Figure:
+    """The cam, the wheel-centre path and the master to scale; the lift error of the worn wheel against cam angle."""
     fig = Figure(figsize=(12, 5.5))
     left, right = fig.subplots(1, 2, gridspec_kw={"width_ratios": [1, 1.3]})
-    for pts, label, style in ((g.cam_contour, t["gr_cam"], dict(color="k", lw=1.5)),
-                              (g.wheel_path, t["gr_wheel_path"], dict(color="C1", lw=0.8, ls="--")),
-                              (g.master_contour, t["gr_master"], dict(color="C0", lw=1.2))):
+    for kind, pts in d["contours"]:
         if pts is not None:
-            x, y = pts / MM
-            left.plot(np.append(x, x[0]), np.append(y, y[0]), label=label, **style)
+            x, y = pts
+            label, style = GRINDING_STYLES[kind]
+            left.plot(np.append(x, x[0]), np.append(y, y[0]), label=t[label], **style)
     left.set_aspect("equal")
     left.set_xlabel(t["x_mm"])
     left.set_ylabel(t["y_mm"])
     left.grid(alpha=0.3)
     left.legend(loc="lower right", fontsize=8)
     left.set_title(t["gr_contours"])
-    w = g.wear
-    if w is not None:
-        x = rad_to_deg(w.cam_angle)
-        right.plot(x, w.error / MM * 1e3, color="C3", label=t["gr_exact"])
-        right.plot(x, w.error_first_order / MM * 1e3, color="C0", ls="--", label=t["gr_first_order"])
-        _segment_lines(right, valve.law)
+    if d["cam_deg"] is not None:
+        x = d["cam_deg"]
+        right.plot(x, d["error_um"], color="C3", label=t["gr_exact"])
+        right.plot(x, d["error_first_order_um"], color="C0", ls="--", label=t["gr_first_order"])
+        _boundary_lines(right, d["boundaries_deg"])
         right.legend(loc="upper right", fontsize=8)
     else:
         right.text(0.5, 0.5, t["gr_not_grindable"], ha="center", va="center", transform=right.transAxes, wrap=True)
@@ -562,72 +613,113 @@ def grinding_figure(valve, t):
     right.set_xlabel(t["cam_deg"])
     right.set_ylabel(t["gr_error_um"])
     right.grid(alpha=0.3)
-    right.set_title(t["gr_error_title"].format(wear=g.wheel_wear / MM))
-    fig.suptitle(f"{valve.name}: {t['gr_title']}")
+    right.set_title(t["gr_error_title"].format(wear=d["wheel_wear_mm"]))
+    fig.suptitle(f"{d['name']}: {t['gr_title']}")
     fig.subplots_adjust(left=0.08, right=0.98, bottom=0.12, top=0.87, wspace=0.16)
     return fig
 
 
-def hydraulic_figure(valve, t):
+def grinding_figure(valve, t) -> Figure:
+    """:func:`draw_grinding` of :func:`grinding_data`."""
+    return draw_grinding(grinding_data(valve), t)
+
+
+def hydraulic_data(valve) -> dict[str, Any]:
+    """The series of :func:`draw_hydraulic` against the camshaft angle [deg from the nose]: the pressures at the pump
+    and the actuator [MPa], where the liquid cavitates, the valve lift and the rigid drive's [mm]; the vapour pressure
+    [MPa], the stop [mm], the lift-off point ``(angle [deg], pressure [MPa], gas force [kN])`` (None where the gas
+    force is not simulated or the valve does not lift off) and the valve's name."""
+    h = valve.hydraulic
+    r = h.response
+    x = rad_to_deg(r.angle)
+    off = r.lift_off()
+    lift_off = None
+    if h.gas_force is not None and off < r.angle.size:
+        lift_off = (float(x[off]), float(r.actuator_pressure[off] / 1e6), float(r.gas_force[off] / 1e3))
+    return {"name": valve.name, "cam_deg": x, "pump_MPa": r.pump_pressure / 1e6,
+            "actuator_MPa": r.actuator_pressure / 1e6, "cavitation": np.asarray(r.cavitation),
+            "vapour_MPa": h.vapour_pressure / 1e6, "lift_off": lift_off, "valve_lift_mm": r.valve_lift / MM,
+            "rigid_lift_mm": r.rigid_lift / MM, "stop_mm": h.stop / MM}
+
+
+def draw_hydraulic(d, t) -> Figure:
     """The pressures at both ends of the pipe and the valve lift against the rigid drive's, against camshaft angle."""
-    r = valve.hydraulic.response
     fig = Figure(figsize=(10, 7))
     top, bottom = fig.subplots(2, 1, sharex=True)
-    x = rad_to_deg(r.angle)
-    top.plot(x, r.pump_pressure / 1e6, color="C0", lw=1.0, label=t["hy_pump"])
-    top.plot(x, r.actuator_pressure / 1e6, color="C3", lw=1.0, label=t["hy_actuator"])
-    top.axhline(valve.hydraulic.vapour_pressure / 1e6, color="0.5", lw=0.6, ls=":", label=t["hy_vapour"])
-    cav = r.cavitation
+    x = d["cam_deg"]
+    top.plot(x, d["pump_MPa"], color="C0", lw=1.0, label=t["hy_pump"])
+    top.plot(x, d["actuator_MPa"], color="C3", lw=1.0, label=t["hy_actuator"])
+    top.axhline(d["vapour_MPa"], color="0.5", lw=0.6, ls=":", label=t["hy_vapour"])
+    cav = d["cavitation"]
     if cav.any():
-        top.plot(x[cav], np.full(int(cav.sum()), valve.hydraulic.vapour_pressure / 1e6), "x", color="k", ms=3,
-                 label=t["hy_cavitation"])
-    off = r.lift_off()
-    if valve.hydraulic.gas_force is not None and off < r.angle.size:
-        top.plot(x[off], r.actuator_pressure[off] / 1e6, "o", color="k", ms=5,
-                 label=t["hy_lift_off"].format(force=r.gas_force[off] / 1e3))
+        top.plot(x[cav], np.full(int(cav.sum()), d["vapour_MPa"]), "x", color="k", ms=3, label=t["hy_cavitation"])
+    if d["lift_off"] is not None:
+        angle, pressure, force = d["lift_off"]
+        top.plot(angle, pressure, "o", color="k", ms=5, label=t["hy_lift_off"].format(force=force))
     top.set_ylabel(t["hy_pressure"])
     top.grid(alpha=0.3)
     top.legend(loc="upper right", fontsize=8)
-    bottom.plot(x, r.valve_lift / MM, color="C2", label=t["hy_valve"])
-    bottom.plot(x, r.rigid_lift / MM, color="k", ls="--", lw=0.8, label=t["hy_rigid"])
-    bottom.axhline(valve.hydraulic.stop / MM, color="C3", ls=":", lw=1.0, label=t["hy_stop"])
+    bottom.plot(x, d["valve_lift_mm"], color="C2", label=t["hy_valve"])
+    bottom.plot(x, d["rigid_lift_mm"], color="k", ls="--", lw=0.8, label=t["hy_rigid"])
+    bottom.axhline(d["stop_mm"], color="C3", ls=":", lw=1.0, label=t["hy_stop"])
     bottom.set_xlabel(t["cam_deg"])
     bottom.set_ylabel(t["hy_lift"])
     bottom.grid(alpha=0.3)
     bottom.legend(loc="upper right", fontsize=8)
-    fig.suptitle(f"{valve.name}: {t['hy_title']}")
+    fig.suptitle(f"{d['name']}: {t['hy_title']}")
     fig.subplots_adjust(left=0.07, right=0.98, bottom=0.09, top=0.92, hspace=0.08)
     return fig
 
 
-def hydraulic_sweep_figure(valve, t):
-    """The largest pressure, the lift loss and the delays of the hydraulic drive against the engine speed, the
-    simulated speed marked."""
+def hydraulic_figure(valve, t) -> Figure:
+    """:func:`draw_hydraulic` of :func:`hydraulic_data`."""
+    return draw_hydraulic(hydraulic_data(valve), t)
+
+
+def hydraulic_sweep_data(valve) -> dict[str, Any]:
+    """The series of :func:`draw_hydraulic_sweep` against the engine speed [rpm]: the largest pressure [MPa], the
+    lift loss [mm], the opening and closing delays [cam deg] (NaN: not defined), where the liquid cavitates; the
+    simulated speed [rpm] and the valve's name."""
     h = valve.hydraulic
     p = h.per_speed
-    n = to_display(np.asarray(p.speed), "rpm")
+    return {"name": valve.name, "rpm": to_display(np.asarray(p.speed), "rpm"),
+            "max_pressure_MPa": np.asarray(p.max_pressure) / 1e6, "lift_loss_mm": np.asarray(p.lift_loss) / MM,
+            "opening_delay_deg": rad_to_deg(np.array(p.opening_delay, dtype=float)),
+            "closing_delay_deg": rad_to_deg(np.array(p.closing_delay, dtype=float)),
+            "cavitation": np.asarray(p.cavitation), "simulated_rpm": to_display(h.speed, "rpm")}
+
+
+def draw_hydraulic_sweep(d, t) -> Figure:
+    """The largest pressure, the lift loss and the delays of the hydraulic drive against the engine speed, the
+    simulated speed marked."""
+    n = d["rpm"]
     fig = Figure(figsize=(9, 8))
     axes = fig.subplots(3, 1, sharex=True)
-    axes[0].plot(n, np.asarray(p.max_pressure) / 1e6, "o-", color="C3", ms=3)
+    axes[0].plot(n, d["max_pressure_MPa"], "o-", color="C3", ms=3)
     axes[0].set_ylabel(t["hy_max_pressure"])
-    axes[1].plot(n, np.asarray(p.lift_loss) / MM, "o-", color="C1", ms=3)
+    axes[1].plot(n, d["lift_loss_mm"], "o-", color="C1", ms=3)
     axes[1].set_ylabel(t["hy_lift_loss"])
-    for values, label, color in ((p.opening_delay, t["hy_opening_delay"], "C0"),
-                                 (p.closing_delay, t["hy_closing_delay"], "C2")):
-        axes[2].plot(n, rad_to_deg(np.array(values, dtype=float)), "o-", color=color, ms=3, label=label)  # None: a gap
+    for values, label, color in ((d["opening_delay_deg"], t["hy_opening_delay"], "C0"),
+                                 (d["closing_delay_deg"], t["hy_closing_delay"], "C2")):
+        axes[2].plot(n, values, "o-", color=color, ms=3, label=label)  # NaN: a gap
     axes[2].set_ylabel(t["hy_delay"])
     axes[2].legend(fontsize=8)
     axes[2].set_xlabel(t["speed"])
     for ax in axes:
         ax.grid(alpha=0.3)
-        ax.axvline(to_display(h.speed, "rpm"), color="0.3", lw=0.8, ls="-.")
-    cav = np.asarray(p.cavitation)
+        ax.axvline(d["simulated_rpm"], color="0.3", lw=0.8, ls="-.")
+    cav = d["cavitation"]
     if cav.any():
-        axes[0].plot(n[cav], np.asarray(p.max_pressure)[cav] / 1e6, "x", color="k", ms=6, label=t["hy_cavitation"])
+        axes[0].plot(n[cav], d["max_pressure_MPa"][cav], "x", color="k", ms=6, label=t["hy_cavitation"])
         axes[0].legend(fontsize=8)
-    axes[0].set_title(f"{valve.name}: {t['hy_sweep_title']}")
+    axes[0].set_title(f"{d['name']}: {t['hy_sweep_title']}")
     fig.subplots_adjust(left=0.08, right=0.97, bottom=0.08, top=0.94, hspace=0.12)
     return fig
+
+
+def hydraulic_sweep_figure(valve, t) -> Figure:
+    """:func:`draw_hydraulic_sweep` of :func:`hydraulic_sweep_data`."""
+    return draw_hydraulic_sweep(hydraulic_sweep_data(valve), t)
 
 
 DYNAMICS_FIGURES = {"dynamics_map": dynamics_map_figure, "dynamics_speed": dynamics_speed_figure}

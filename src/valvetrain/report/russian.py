@@ -77,6 +77,11 @@ NOTES = {
                                                    "на профиль кулачка; формулы выведены в этой программе из "
                                                    "геометрии контура,",
     "ramp (": "рампа (", "segments (": "участки (", "coefficients (": "коэффициенты (", "extremes (": "экстремумы (",
+    "one-mass and multi-mass trains, jump, seating, bounce":
+        "одномассовая и многомассовая модели привода, отрыв, посадка, отскок",
+    "resonant harmonic and distortion": "резонансная гармоника и искажение",
+    "of the specification: the smaller margin of the fatigue safety and the resonance ratio above their minima":
+        "задания: меньший из запасов по усталости и по отношению частот сверх их наименьших значений",
 }
 """The notes the sources of the checks carry, in Russian."""
 

@@ -25,36 +25,37 @@ from ..laws import (AsymmetricLaw, CombinedLaw, ConstantAccelerationLaw, Dynamic
                     PolynomialLaw, PowerPolynomialLaw, TangentLaw, ThreeArcLaw)
 from ..laws.power_polynomial import ARTICLE_EXPONENTS
 from ..laws.measured import CHECKING_HEIGHTS_MM, MIN_VALVE_LIFT_MM, TableLaw, lobe_table, table_accuracy
+from ..laws.records import Duration, FitQuality, LawRecord, MeasuredRecord, PowerPolynomialRecord, SeedFormulas
 from ..laws.takeup import ClearanceTakeUp
 from ..layouts import train_mass
 from ..locale.wording import fit_reason
 from ..units import DEG, MM, cam_per_crank, rad_to_deg
 from .fields import RAMP_VELOCITY, SEGMENT_ANGLE, Length, _bounded, _Model
-from .messages import message, shown
+from .messages import Problem, message, shown
 from .si import si
 
 REGISTRY = {}
 """``law`` name -> its cam model, in the order of registration."""
 
 
-def register(model):
+def register(model) -> type:
     """Class decorator: add a cam model to :data:`REGISTRY` under its ``law`` literal."""
     REGISTRY[model.model_fields["law"].annotation.__args__[0]] = model
     return model
 
 
-def main_half_angle(valve, strokes):
+def main_half_angle(valve, strokes) -> float:
     """phi_p0 [rad camshaft]: half the main event (ramps excluded), (opens + pi + closes)/2 crank angle on the
     camshaft (Valve-train practical works (n.d.), work 2, corrected phi_p0 formula, corrections note 1); ``valve`` is an SI view."""
     return (valve.opens + np.pi + valve.closes) / 2.0 * cam_per_crank(strokes)
 
 
-def main_half_angle_deg(valve, strokes):
+def main_half_angle_deg(valve, strokes) -> float:
     """phi_p0 [cam deg] from a valve section in degrees (see :func:`main_half_angle`)."""
     return (valve.opens_deg + 180.0 + valve.closes_deg) / 2.0 * cam_per_crank(strokes)
 
 
-def symmetric_nose(valve):
+def symmetric_nose(valve) -> float:
     """Crank angle of the nose of a symmetric lobe from the gas-exchange TDC [rad] (four-stroke), SI view.
 
     Intake: the main lift opens ``opens`` before TDC (crank 0) and closes ``closes`` after BDC (crank pi).
@@ -111,8 +112,8 @@ class _CamBase(_Model):
         return symmetric_nose(valve)
 
     def records(self, law, valve, engine, nose):
-        """What the law adds to the cam's results: ``(dict, list of Check)`` (SI views)."""
-        return {}, []
+        """What the law adds to the cam's results: ``(LawRecord, list of Check)`` (SI views)."""
+        return LawRecord(), []
 
     def timing(self, valve, record):
         """Opening advance and closing lag [crank rad] of the main lift for the recommended ranges (SI view; a
@@ -148,8 +149,14 @@ def _ramp(cam):
     return dict(ramp_kind=cam.ramp_type, ramp_fraction=cam.ramp_acceleration_fraction)
 
 
+def _closing_problem(at, problem):
+    """A problem of the closing flank's own table, its key under ``{at}.cam.closing``."""
+    return Problem(f"{at}.cam.closing.{problem.path}", problem.message, problem.value,
+                   text=f"{at}.cam.closing: {problem}")
+
+
 def _clearance_problem(at, valve, what="the cam's ramp takes up the clearance"):
-    return [f"{at}.clearance_mm = {valve.clearance_mm:g}: {what}, allowed [0.01, 5] mm"] \
+    return [Problem(f"{at}.clearance_mm", f"{what}, allowed [0.01, 5] mm", f"{valve.clearance_mm:g}")] \
         if valve.clearance_mm <= 0.0 else []
 
 
@@ -190,12 +197,12 @@ class _ClosingSide(_Model):
         try:
             closing = self.closing_cam()
         except ValidationError as exc:
-            return out + [f"{at}.cam.closing: {message(err)}" for err in exc.errors()]
+            return out + [_closing_problem(at, message(err)) for err in exc.errors()]
         total = self.flank_angle_deg() + closing.flank_angle_deg()
         event = 2.0 * main_half_angle_deg(valve, engine.strokes)
         if abs(total - event) > 1e-6:
-            out.append(f"{at}.cam: the opening and closing flanks add up to {total:g} cam deg; they must equal the main "
-                       f"event (opens_deg + 180 + closes_deg)/2 = {event:g} cam deg")
+            out.append(Problem(f"{at}.cam", f"the opening and closing flanks add up to {total:g} cam deg; they must "
+                               f"equal the main event (opens_deg + 180 + closes_deg)/2 = {event:g} cam deg"))
         return out + self.asymmetric_problems(at, closing)
 
     def asymmetric_problems(self, at, closing):
@@ -245,11 +252,13 @@ class _SegmentAngles(_ClosingSide):
         total = self.phi1_deg + self.phi2_deg + phi3
         empty = phi3 < 0.0 or (self.law == "kurz" and phi3 == 0.0)
         if self.phi3_deg is None and empty:
-            out.append(f"{at}.cam: phi1_deg + phi2_deg = {self.phi1_deg + self.phi2_deg:g} leaves no room for phi3 "
-                       f"in the half-angle phi_p0 = {half:g} cam deg; allowed phi1_deg + phi2_deg < {half:g}")
+            out.append(Problem(f"{at}.cam", f"phi1_deg + phi2_deg = {self.phi1_deg + self.phi2_deg:g} leaves no room "
+                               f"for phi3 in the half-angle phi_p0 = {half:g} cam deg; allowed phi1_deg + phi2_deg < "
+                               f"{half:g}"))
         elif abs(total - half) > 1e-6:
-            out.append(f"{at}.cam: phi1_deg + phi2_deg + phi3_deg = {total:g} cam deg must equal the half-angle "
-                       f"phi_p0 = (opens_deg + 180 + closes_deg)/2 crank deg = {half:g} cam deg (Valve-train practical works (n.d.), eq. 2.2)")
+            out.append(Problem(f"{at}.cam", f"phi1_deg + phi2_deg + phi3_deg = {total:g} cam deg must equal the "
+                               f"half-angle phi_p0 = (opens_deg + 180 + closes_deg)/2 crank deg = {half:g} cam deg "
+                               "(Valve-train practical works (n.d.), eq. 2.2)"))
         return out
 
 
@@ -275,19 +284,16 @@ class KurzCam(_SegmentAngles, _CamBase, _RampKeys):
 
     def asymmetric_problems(self, at, closing):
         if self.phi3_deg is None or closing.phi3_deg is None:
-            return [f"{at}.cam: an asymmetric Kurz cam needs phi3_deg on both flanks"]
+            return [Problem(f"{at}.cam", "an asymmetric Kurz cam needs phi3_deg on both flanks")]
         return []
 
     def records(self, law, valve, engine, nose):
         """The appendix formulas of Valve-train practical works (n.d.) (2.35)-(2.39) beside the exact extremes, and the residuals of the
         junction conditions (2.10)-(2.20), for a symmetric cam."""
         if self.closing is not None:
-            return {}, []
+            return LawRecord(), []
         sf = law.seed_formulas(valve.cam.base_radius, engine.rated_speed / 2.0)
-        return {"seed_formulas": {"max_velocity_m_s": sf["max_velocity"], "max_acceleration_m_s2": sf["max_acceleration"],
-                                  "min_acceleration_m_s2": sf["min_acceleration"], "rho_min_mm": sf["rho_min"] / MM,
-                                  "rho_max_mm": sf["rho_max"] / MM},
-                "residuals": law.residuals()}, []
+        return LawRecord(seed_formulas=SeedFormulas(**sf), residuals=law.residuals()), []
 
 
 @register
@@ -443,8 +449,8 @@ class CombinedCam(_ClosingSide, _CamBase, _RampKeys):
         out = []
         total, half = self.flank_angle_deg(), main_half_angle_deg(valve, engine.strokes)
         if abs(total - half) > 1e-6:
-            out.append(f"{at}.cam.segments: the lengths add up to {total:g} cam deg; they must equal the half-angle "
-                       f"phi_p0 = {half:g} cam deg")
+            out.append(Problem(f"{at}.cam.segments", f"the lengths add up to {total:g} cam deg; they must equal the "
+                               f"half-angle phi_p0 = {half:g} cam deg"))
         return out + _clearance_problem(at, valve)
 
 
@@ -539,15 +545,14 @@ class PowerPolynomialCam(_CamBase):
         out = _clearance_problem(at, valve)
         half = main_half_angle_deg(valve, engine.strokes)
         if self.phi1_deg >= half:
-            out.append(f"{at}.cam.phi1_deg = {self.phi1_deg:g} leaves no room for the negative part in the half-angle "
-                       f"phi_p0 = {half:g} cam deg; allowed phi1_deg < {half:g}")
+            out.append(Problem(f"{at}.cam.phi1_deg", f"leaves no room for the negative part in the half-angle phi_p0 = "
+                               f"{half:g} cam deg; allowed phi1_deg < {half:g}", f"{self.phi1_deg:g}", " "))
         return out
 
     def records(self, law, valve, engine, nose):
         """The responses of the synthesis: phi_2, the dwell, S_e, v_e and the fullness of the tappet lift."""
-        return {"power_polynomial": {"phi2_deg": float(np.degrees(law.phi2)), "dwell_deg": float(np.degrees(law.dwell)),
-                                     "S_e_mm": law.S_e / MM, "v_e_mm_per_rad": law.v_e / MM,
-                                     "tappet_fullness": float(law.fullness())}}, []
+        return LawRecord(power_polynomial=PowerPolynomialRecord(float(law.phi2), float(law.dwell), law.S_e, law.v_e,
+                                                                float(law.fullness()))), []
 
 
 @register
@@ -701,24 +706,23 @@ class TableCam(_CamBase):
         """The measured-table record of results.json and its timing checks (Shang Hanji (1988), sections 5.1-5.3)."""
         to_table = 2.0 if self.table_angle == "crank" else 1.0        # table angle units per cam angle
         at_valve = valve.rocker_ratio if self.table_lift_at == "valve" else 1.0
-        durations = [{"height_mm": h, "duration_deg": _finite(rad_to_deg(law.duration(h * MM / at_valve)) * to_table)}
-                     for h in CHECKING_HEIGHTS_MM]
-        quality = {kind: {"rms_residual_mm": q.rms_residual * at_valve / MM, "max_residual_mm": q.max_residual * at_valve / MM,
-                          "jerk_sign_changes": q.jerk_sign_changes}
+        durations = tuple(Duration(h * MM, _finite(law.duration(h * MM / at_valve) * to_table))
+                          for h in CHECKING_HEIGHTS_MM)
+        quality = {kind: FitQuality(q.rms_residual * at_valve, q.max_residual * at_valve, q.jerk_sign_changes)
                    for kind in ("spline", "harmonic") for q in [law.quality(kind)]}
-        rec = {"max_lift_mm": (law.lift_max + law.ramp_height) * at_valve / MM,
-               "lobe_centre_deg": rad_to_deg(law.centre) * to_table, "durations_deg": durations, "fit": law.fit,
-               "fit_reason": fit_reason(law.fit, law.harmonics, *law.choice, law.smoothing), "fit_reason_code": law.choice[0], "spline_smoothing": law.smoothing,
-               "gcv_ratio_harmonic_to_spline": _finite(law.gcv["harmonic"] / law.gcv["spline"]),
-               "harmonics": law.harmonics, "asymmetry_rms_mm": law.asymmetry_rms * at_valve / MM,
-               "accuracy_mm": law.accuracy * at_valve / MM,
-               "accuracy_from": "stated" if law.accuracy_stated else "table", "fit_quality": quality, "table_angle": self.table_angle, "table_lift_at": self.table_lift_at,
-               "table_zero": self.table_zero}
         # the timing the table implies, where the valve lift crosses the first checking height (0.1 mm)
         rise, fall = law.crossings(law.ramp_height + CHECKING_HEIGHTS_MM[0] * MM / valve.rocker_ratio)
         opens = -(nose + 2.0 * rise) if valve.kind == "intake" else -np.pi - (nose + 2.0 * rise)
         closes = (nose + 2.0 * fall) - (np.pi if valve.kind == "intake" else 0.0)
-        rec["opens_deg_at_0.1mm"], rec["closes_deg_at_0.1mm"] = _finite(rad_to_deg(opens)), _finite(rad_to_deg(closes))
+        rec = MeasuredRecord(
+            max_lift=(law.lift_max + law.ramp_height) * at_valve, lobe_centre=law.centre * to_table,
+            durations=durations, fit=law.fit, fit_reason=fit_reason(law.fit, law.harmonics, *law.choice, law.smoothing),
+            fit_reason_code=law.choice[0], spline_smoothing=law.smoothing,
+            gcv_ratio=_finite(law.gcv["harmonic"] / law.gcv["spline"]), harmonics=law.harmonics,
+            asymmetry_rms=law.asymmetry_rms * at_valve, accuracy=law.accuracy * at_valve,
+            accuracy_from="stated" if law.accuracy_stated else "table", fit_quality=quality,
+            table_angle=self.table_angle, table_lift_at=self.table_lift_at, table_zero=self.table_zero,
+            opens=_finite(opens), closes=_finite(closes))
         found = []
         for code, given, derived in (("law.measured.opens", valve.opens, opens),
                                      ("law.measured.closes", valve.closes, closes)):
@@ -726,11 +730,10 @@ class TableCam(_CamBase):
                 found.append(check(code, given, derived - 2.0 * DEG,
                                    derived + 2.0 * DEG, unit="crank deg",
                                    source="the table's timing at 0.1 mm valve lift (+-2 crank deg)"))
-        return {"measured": rec}, found
+        return LawRecord(measured=rec), found
 
     def timing(self, valve, record):
-        return tuple(None if a is None else a * DEG for a in (record["measured"]["opens_deg_at_0.1mm"],
-                                                             record["measured"]["closes_deg_at_0.1mm"]))
+        return record.measured.opens, record.measured.closes
 
 
 Cam = Annotated[Union[tuple(REGISTRY.values())], Field(discriminator="law")]

@@ -1,21 +1,58 @@
 """Messages of a specification that cannot be used: one per problem, naming the key, the value and what is allowed."""
 
+from typing import Optional
+
+
+class Problem(str):
+    """One problem of a specification: the line printed (the string itself) and its parts, made where the problem is
+    found: ``path`` the dotted key (``""`` where the problem names none), ``value`` the value given as echoed (None
+    where none is echoed), ``message`` what is wrong or what is allowed.
+
+    >>> p = Problem("engine.bore_mm", "allowed [5, 2000] mm", "-3.0")
+    >>> p, p.path, p.value, p.message
+    ('engine.bore_mm = -3.0: allowed [5, 2000] mm', 'engine.bore_mm', '-3.0', 'allowed [5, 2000] mm')
+    >>> Problem("crank.step_deg", "must divide the 720 deg cycle into whole steps", "7", joiner=" ")
+    'crank.step_deg = 7 must divide the 720 deg cycle into whole steps'
+    """
+
+    path: str
+    value: Optional[str]
+    message: str
+
+    def __new__(cls, path, message, value=None, joiner=": ", text=None):
+        """The line is ``path = value`` (or ``path``), ``joiner``, ``message``; or ``text`` where it reads otherwise."""
+        if text is None:
+            head = path if value is None else f"{path} = {value}"
+            text = f"{head}{joiner}{message}" if head else message
+        self = super().__new__(cls, text)
+        self.path, self.value, self.message = path, value, message
+        return self
+
+    def within(self, prefix) -> "Problem":
+        """The problem with its key under ``prefix`` (a valve's ``valves.NAME``), its line led by ``prefix.``."""
+        return Problem(f"{prefix}.{self.path}" if self.path else prefix, self.message, self.value,
+                       text=f"{prefix}.{self}")
+
+    def __reduce__(self):
+        return Problem, (self.path, self.message, self.value, "", str(self))
+
 
 class SpecError(Exception):
-    """A specification that cannot be used; ``problems`` holds one message per problem."""
+    """A specification that cannot be used; ``problems`` holds one :class:`Problem` per problem (a line given as
+    plain text is a problem that names no key)."""
 
     def __init__(self, problems):
-        self.problems = list(problems)
+        self.problems = [p if isinstance(p, Problem) else Problem("", p) for p in problems]
         super().__init__("\n".join(self.problems))
 
 
-def shown(value, limit=60):
+def shown(value, limit=60) -> str:
     """A value as echoed in a message: its repr, cut to ``limit`` characters."""
     text = repr(value)
     return text if len(text) <= limit else f"{text[:limit - 5]}...{text[-2:]}"
 
 
-def location(err, laws=()):
+def location(err, laws=()) -> str:
     """The key path of a pydantic error without the law tags pydantic inserts after a cam (``cam.kurz.phi1_deg``);
     long keys are cut."""
     loc = err["loc"]
@@ -24,19 +61,19 @@ def location(err, laws=()):
     return ".".join(parts) if parts else "(file)"
 
 
-def message(err, laws=()):
-    """One line for one pydantic error: the key path, the value given and what is allowed."""
+def message(err, laws=()) -> Problem:
+    """One problem for one pydantic error: the key path, the value given and what is allowed."""
     loc = location(err, laws)
     kind = err["type"]
     if kind == "missing":
-        return f"{loc}: required key is missing"
+        return Problem(loc, "required key is missing")
     if kind == "extra_forbidden":
-        return f"{loc}: unknown key (value {shown(err['input'])}); check the spelling against `valvetrain example`"
+        return Problem(loc, f"unknown key (value {shown(err['input'])}); check the spelling against `valvetrain example`")
     if kind == "union_tag_invalid":
-        return f"{loc}.law = {shown(err['ctx']['tag'])}: allowed {err['ctx']['expected_tags']}"
+        return Problem(f"{loc}.law", f"allowed {err['ctx']['expected_tags']}", shown(err['ctx']['tag']))
     if kind == "union_tag_not_found":
-        return f"{loc}.law: required key is missing; allowed {', '.join(repr(law) for law in laws)}"
+        return Problem(f"{loc}.law", f"required key is missing; allowed {', '.join(repr(law) for law in laws)}")
     msg = err["msg"].removeprefix("Value error, ")
     if isinstance(err["input"], dict):
-        return f"{loc}: {msg}"
-    return f"{loc} = {shown(err['input'])}: {msg}"
+        return Problem(loc, msg)
+    return Problem(loc, msg, shown(err["input"]))

@@ -120,6 +120,7 @@ class Spring(_Model):
     mean_stress_factor: Optional[_bounded(0.0, 1.0, low_open=False)] = None
     min_safety_factor: _bounded(0.1, 10.0, low_open=False) = 1.3
     min_resonance_ratio: _zero_or(1.0, 100.0, zero="the check switched off") = 10.0
+    min_margin_percent: _bounded(0.0, 50.0, "%", low_open=False) = 5.0
     coil_gap_factor: _bounded(0.01, 1.0, low_open=False) = 0.12
     mean_diameter_ratio: Pair(0.0, 5.0) = (0.7, 0.9)
     wire_diameter_range_mm: Pair(0.1, 30.0, "mm") = (2.0, 7.0)
@@ -656,7 +657,7 @@ class Spec(_Model):
         try:
             document = set_keys(spec_document(self), values)
         except ValueError as exc:
-            raise SpecError([str(exc)]) from None
+            raise SpecError([exc.args[0]]) from None
         return validate(document)
 
     @model_validator(mode="after")
@@ -666,7 +667,7 @@ class Spec(_Model):
         return self
 
 
-def resolve_path(spec, name):
+def resolve_path(spec, name) -> Path:
     """A file named in the specification, relative to the specification file's folder."""
     path = Path(name)
     return path if path.is_absolute() or spec.source_dir is None else Path(spec.source_dir) / path
@@ -683,7 +684,7 @@ def _resolve_tables(spec):
     return spec.model_copy(update={"valves": valves})
 
 
-def validate(data):
+def validate(data) -> Spec:
     """Validate a parsed TOML document; return a :class:`Spec` or raise :class:`SpecError`.
 
     Field problems (missing keys, wrong types, values outside physical bounds) are

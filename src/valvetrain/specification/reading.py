@@ -15,7 +15,7 @@ from .messages import SpecError
 from .models import Spec, resolve_path, validate
 
 
-def input_files(spec):
+def input_files(spec) -> list[Path]:
     """Every file the specification names (each ``..._file`` key: lift tables, indicator diagrams), resolved."""
     def named(node):
         if isinstance(node, dict):
@@ -69,7 +69,7 @@ def load_spec(path) -> Spec:
     return parse_spec(text, shown_path(path), Path(path).resolve().parent)
 
 
-def example_text():
+def example_text() -> str:
     """The built-in example specification (the engine of the appendix of Valve-train practical works (n.d.)), as TOML text."""
     return files("valvetrain").joinpath("data/example.toml").read_text(encoding="utf-8")
 
@@ -79,7 +79,7 @@ def example_spec() -> Spec:
     return parse_spec(example_text(), "built-in example")
 
 
-def spec_toml(spec):
+def spec_toml(spec) -> str:
     """The specification as TOML text with every default written out and every file named by its absolute path:
     what a run used, saved beside its results (``spec.toml``), which ``valvetrain run`` reads back."""
     def absolute(node):

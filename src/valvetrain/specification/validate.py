@@ -8,54 +8,62 @@ are the dotted keys that :meth:`Spec.replace` and ``study --grid`` change.
 """
 
 import copy
+from typing import Any, Optional
 
 from ..layouts import LAYOUTS
 from ..springs import feasible_mean_diameters
 from ..units import MM
 from .cams import main_half_angle_deg
-from .messages import shown
+from .messages import Problem, shown
 
 
 def _valve_problems(name, v, engine):
     at = f"valves.{name}"
     missing = [k for k in ("max_lift_mm", "opens_deg", "closes_deg") if getattr(v, k) is None]
     if missing and v.cam.needs_timing:
-        return [f"{at}.{k}: required key is missing (only a measured table, law = \"table\", sets its own lift "
-                "and timing)" for k in missing]
+        return [Problem(f"{at}.{k}", "required key is missing (only a measured table, law = \"table\", sets its own "
+                        "lift and timing)") for k in missing]
     out = []
     if len({"opens_deg", "closes_deg"} & set(missing)) == 1:
         given, other = ("opens_deg", "closes_deg") if v.closes_deg is None else ("closes_deg", "opens_deg")
-        return [f"{at}.{given} = {getattr(v, given):g} needs {other} too: the timing is given by both or, for a "
-                "measured table, by neither"]
+        return [Problem(f"{at}.{given}", f"needs {other} too: the timing is given by both or, for a measured table, "
+                        "by neither", f"{getattr(v, given):g}", " ")]
     if v.throat_diameter_mm >= engine.bore_mm:
-        out.append(f"{at}.throat_diameter_mm = {v.throat_diameter_mm:g} must be smaller than engine.bore_mm = "
-                   f"{engine.bore_mm:g}")
+        out.append(Problem(f"{at}.throat_diameter_mm", f"must be smaller than engine.bore_mm = {engine.bore_mm:g}",
+                           f"{v.throat_diameter_mm:g}", " "))
     if v.cam.base_radius_mm <= v.clearance_mm:
-        out.append(f"{at}.cam.base_radius_mm = {v.cam.base_radius_mm:g} must exceed clearance_mm = {v.clearance_mm:g}")
+        out.append(Problem(f"{at}.cam.base_radius_mm", f"must exceed clearance_mm = {v.clearance_mm:g}",
+                           f"{v.cam.base_radius_mm:g}", " "))
     if v.lash_adjuster is not None and v.clearance_mm != 0.0:
-        out.append(f"{at}.clearance_mm = {v.clearance_mm:g}: allowed 0 with a lash_adjuster section (it leaves no lash "
-                   "on the base circle for a ramp to take up)")
+        out.append(Problem(f"{at}.clearance_mm", "allowed 0 with a lash_adjuster section (it leaves no lash on the "
+                           "base circle for a ramp to take up)", f"{v.clearance_mm:g}"))
     ratio = v.spring.mean_diameter_ratio
     wires = v.spring.wire_diameter_range_mm
     low, high = (x / MM for x in feasible_mean_diameters(wires))
     if ratio[1] * v.throat_diameter_mm < low or ratio[0] * v.throat_diameter_mm > high:
-        out.append(f"{at}.spring.mean_diameter_ratio = {list(ratio)} with throat_diameter_mm = "
+        out.append(Problem(f"{at}.spring.mean_diameter_ratio", f"with throat_diameter_mm = "
                    f"{v.throat_diameter_mm:g} gives spring mean diameters {ratio[0] * v.throat_diameter_mm:g}..."
                    f"{ratio[1] * v.throat_diameter_mm:g} mm; wire of {wires[0]:g}...{wires[1]:g} mm makes "
-                   f"{low:g}...{high:g} mm (index D/d = 3...12, Valve-train practical works (n.d.), work 6)")
+                   f"{low:g}...{high:g} mm (index D/d = 3...12, Valve-train practical works (n.d.), work 6)",
+                           f"{list(ratio)}", " "))
     installed = v.spring.installed_length_mm
     if installed is not None and v.max_lift_mm is not None and installed[1] <= v.max_lift_mm:
-        out.append(f"{at}.spring.installed_length_mm = {list(installed)}: the spring must be longer than the valve "
-                   f"lift max_lift_mm = {v.max_lift_mm:g} (it is compressed by it, Valve-train practical works (n.d.), eq. 6.5)")
+        out.append(Problem(f"{at}.spring.installed_length_mm", f"the spring must be longer than the valve lift "
+                           f"max_lift_mm = {v.max_lift_mm:g} (it is compressed by it, Valve-train practical works "
+                           "(n.d.), eq. 6.5)", f"{list(installed)}"))
     if v.drive.layout is not None and not LAYOUTS[v.drive.layout].rocker and v.rocker_ratio != 1.0:
-        out.append(f"{at}.drive.layout = \"{v.drive.layout}\" needs rocker_ratio = 1 (got {v.rocker_ratio:g})")
+        out.append(Problem(f"{at}.drive.layout", f"needs rocker_ratio = 1 (got {v.rocker_ratio:g})",
+                           f"\"{v.drive.layout}\"", " "))
     if v.piston_gap_tdc_mm is not None and engine.rod_length_mm is None:
-        out.append(f"{at}.piston_gap_tdc_mm needs engine.rod_length_mm for the piston kinematics")
+        out.append(Problem(f"{at}.piston_gap_tdc_mm", "needs engine.rod_length_mm for the piston kinematics",
+                           joiner=" "))
     if not {"opens_deg", "closes_deg"} & set(missing):
         half = main_half_angle_deg(v, engine.strokes)
         if not 0.0 < half < 180.0:
-            out.append(f"{at}.opens_deg + closes_deg = {v.opens_deg + v.closes_deg:g}: the valve event "
-                       f"opens_deg + 180 + closes_deg must lie in (0, 360) crank deg")
+            out.append(Problem(f"{at}.opens_deg", "the valve event opens_deg + 180 + closes_deg must lie in (0, 360) "
+                               "crank deg", f"{v.opens_deg + v.closes_deg:g}",
+                               text=f"{at}.opens_deg + closes_deg = {v.opens_deg + v.closes_deg:g}: the valve event "
+                               "opens_deg + 180 + closes_deg must lie in (0, 360) crank deg"))
         out += v.cam.problems(at, v, engine)
     return out
 
@@ -64,11 +72,12 @@ def _same(spec, key_crank, key_engine):
     """A [crank] value that defaults to [engine]'s; a problem message when both are given and differ."""
     a, b = getattr(spec.crank, key_crank) if spec.crank else None, getattr(spec.engine, key_engine)
     if a is not None and b is not None and abs(a - b) > 1e-9 * max(abs(a), abs(b)):
-        return a, [f"crank.{key_crank} = {a:g} differs from engine.{key_engine} = {b:g}; give it in one place"]
+        return a, [Problem(f"crank.{key_crank}", f"differs from engine.{key_engine} = {b:g}; give it in one place",
+                           f"{a:g}", " ")]
     return (a if a is not None else b), []
 
 
-def crank_geometry(spec):
+def crank_geometry(spec) -> tuple[Optional[float], ...]:
     """Effective bore, stroke, rod length [mm] and speed [rpm] of the crank mechanism."""
     return tuple(_same(spec, kc, ke)[0] for kc, ke in (("bore_mm", "bore_mm"), ("stroke_mm", "stroke_mm"),
                                                       ("rod_length_mm", "rod_length_mm"),
@@ -84,20 +93,21 @@ def _crank_problems(spec):
         out += _same(spec, kc, ke)[1]
     bore, stroke, rod, _ = crank_geometry(spec)
     if rod is None:
-        out.append("crank.rod_length_mm (or engine.rod_length_mm) is required for the crank mechanism and the "
-                   "two-stroke ports")
+        out.append(Problem("crank.rod_length_mm", "(or engine.rod_length_mm) is required for the crank mechanism and "
+                           "the two-stroke ports", joiner=" "))
     elif rod <= stroke / 2.0:
-        out.append(f"crank.rod_length_mm = {rod:g} must exceed the crank radius {stroke / 2.0:g} mm")
+        out.append(Problem("crank.rod_length_mm", f"must exceed the crank radius {stroke / 2.0:g} mm", f"{rod:g}", " "))
     c = spec.crank
     if c is None:
         return out
     if rod is not None and rod > stroke / 2.0 and abs(c.offset_mm) >= rod - stroke / 2.0:
-        out.append(f"crank.offset_mm = {c.offset_mm:g}: allowed |offset| < rod length - crank radius = "
-                   f"{rod - stroke / 2.0:g} mm")
+        out.append(Problem("crank.offset_mm", f"allowed |offset| < rod length - crank radius = "
+                           f"{rod - stroke / 2.0:g} mm", f"{c.offset_mm:g}"))
     cycle = 180.0 * spec.engine.strokes
     n = cycle / c.step_deg
     if abs(n - round(n)) > 1e-9:
-        out.append(f"crank.step_deg = {c.step_deg:g} must divide the {cycle:g} deg cycle into whole steps")
+        out.append(Problem("crank.step_deg", f"must divide the {cycle:g} deg cycle into whole steps", f"{c.step_deg:g}",
+                           " "))
     return out
 
 
@@ -107,41 +117,44 @@ def _two_stroke_problems(spec):
         return []
     out = []
     if spec.engine.strokes != 2:
-        out.append(f"[two_stroke] needs engine.strokes = 2 (got {spec.engine.strokes})")
+        out.append(Problem("engine.strokes", "allowed 2 with a [two_stroke] section", f"{spec.engine.strokes}",
+                           text=f"[two_stroke] needs engine.strokes = 2 (got {spec.engine.strokes})"))
     if not ts.ports:
-        out.append("[two_stroke] needs at least one [two_stroke.ports.NAME]")
+        out.append(Problem("two_stroke.ports", "needs at least one [two_stroke.ports.NAME]",
+                           text="[two_stroke] needs at least one [two_stroke.ports.NAME]"))
     stroke = crank_geometry(spec)[1]
     for name, port in ts.ports.items():
         if port.height_mm is not None and port.kind != "inlet" and port.height_mm >= stroke:
-            out.append(f"two_stroke.ports.{name}.height_mm = {port.height_mm:g} must be smaller than the stroke "
-                       f"{stroke:g} mm")
+            out.append(Problem(f"two_stroke.ports.{name}.height_mm", f"must be smaller than the stroke {stroke:g} mm",
+                               f"{port.height_mm:g}", " "))
         if port.kind == "inlet" and ts.piston_height_mm is None:
-            out.append(f"two_stroke.ports.{name}: an inlet port needs two_stroke.piston_height_mm")
+            out.append(Problem(f"two_stroke.ports.{name}", "an inlet port needs two_stroke.piston_height_mm"))
     if ts.speed_range_rpm is not None and ts.speed_range_rpm[0] >= ts.speed_range_rpm[1]:
-        out.append(f"two_stroke.speed_range_rpm = {list(ts.speed_range_rpm)} must be [low, high] with low < high")
+        out.append(Problem("two_stroke.speed_range_rpm", "must be [low, high] with low < high",
+                           f"{list(ts.speed_range_rpm)}", " "))
     return out
 
 
 def _acceptance_problems(spec):
     """An [[accepted]] table naming a valve the specification does not have."""
     names = ", ".join(repr(n) for n in spec.valves) or "none: the specification has no valves"
-    return [f"accepted.{i}.valve = {shown(a.valve, 40)}: allowed {names}"
+    return [Problem(f"accepted.{i}.valve", f"allowed {names}", shown(a.valve, 40))
             for i, a in enumerate(spec.accepted) if a.valve is not None and a.valve not in spec.valves]
 
 
-def problems(spec):
+def problems(spec) -> list[Problem]:
     """The problems across the sections of a specification whose every field is valid, one message each ([] if
     none): angles that must add up, a throat smaller than the bore, files and keys that must agree, ...."""
     out = [p for name, v in spec.valves.items() for p in _valve_problems(name, v, spec.engine)]
     out += _crank_problems(spec) + _two_stroke_problems(spec) + _acceptance_problems(spec)
     if spec.engine.strokes != 4 and spec.valves:
-        out.insert(0, f"engine.strokes = {spec.engine.strokes}: the valve timing (opens_deg/closes_deg before and "
-                      "after TDC/BDC of the gas-exchange strokes) is defined for four-stroke engines; allowed 4 "
-                      "with [valves.NAME] sections")
+        out.insert(0, Problem("engine.strokes", "the valve timing (opens_deg/closes_deg before and after TDC/BDC of "
+                              "the gas-exchange strokes) is defined for four-stroke engines; allowed 4 with "
+                              "[valves.NAME] sections", f"{spec.engine.strokes}"))
     return out
 
 
-def set_keys(document, values):
+def set_keys(document, values) -> dict[str, Any]:
     """A deep copy of a specification ``document`` (a dict of TOML tables) with the dotted keys of ``values`` set.
 
     A key is the path of TOML tables, then the key (``engine.bore_mm``, ``valves.intake.cam.shape_factor``); tables
@@ -167,24 +180,24 @@ def set_keys(document, values):
     for key, value in values.items():
         parts = key.split(".")
         if not all(parts):
-            raise ValueError(f"{key}: an empty name in the dotted key")
+            raise ValueError(Problem(key, "an empty name in the dotted key"))
         node = out
         for i, part in enumerate(parts[:-1]):
             if part not in node:
                 if i == 1 and parts[0] == "valves":
-                    raise ValueError(f"{key}: the specification has no valve {part!r} (valves: "
-                                     f"{', '.join(node) or 'none'})")
+                    raise ValueError(Problem(key, f"the specification has no valve {part!r} (valves: "
+                                             f"{', '.join(node) or 'none'})"))
                 node[part] = {}
             node = node[part]
             if not isinstance(node, dict):
-                raise ValueError(f"{key}: {'.'.join(parts[:i + 1])} is a value, not a table")
+                raise ValueError(Problem(key, f"{'.'.join(parts[:i + 1])} is a value, not a table"))
         if isinstance(node.get(parts[-1]), dict):
-            raise ValueError(f"{key}: a table, not a value; give one of its keys")
+            raise ValueError(Problem(key, "a table, not a value; give one of its keys"))
         node[parts[-1]] = value
     return out
 
 
-def spec_document(spec):
+def spec_document(spec) -> dict[str, Any]:
     """The document of a :class:`Spec` (a dict of its tables, every default written out) that :func:`validate`
     turns back into the same specification."""
     return {**spec.model_dump(), "source_dir": spec.source_dir}

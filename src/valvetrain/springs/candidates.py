@@ -44,6 +44,7 @@ class SpringMaterial:
     mean_stress_factor: float = None     # psi_tau of eq. (6.12)
     min_safety: float = 1.3              # n >= 1.2-1.4
     min_resonance_ratio: float = RESONANCE_RATIO_MIN
+    design_margin: float = 0.0           # sought on n and omega_c1 / omega_cam above their minima, 0.05 = 5 %
     gap_factor: float = 0.12             # Delta_min / d, 0.10-0.15
     end_coils: float = 2.0               # i_0
 
@@ -107,6 +108,11 @@ class SpringDesign:
     def binding_check(self):
         """The check with the smallest margin."""
         return min(self.margins, key=self.margins.get)
+
+    @property
+    def design_margin(self):
+        """The smaller relative margin of the fatigue safety and the resonance ratio (+inf where both are off)."""
+        return min(self.checks["fatigue_safety"].margin, self.checks["resonance_ratio"].margin)
 
 
 @dataclass(frozen=True)
@@ -190,6 +196,17 @@ class Candidates:
         for c in self.checks.values():
             ok &= c.passed
         return ok
+
+    @cached_property
+    def design_margin(self):
+        """The smaller relative margin of each candidate's fatigue safety and resonance ratio."""
+        return np.minimum(self.checks["fatigue_safety"].margin, self.checks["resonance_ratio"].margin)
+
+    @cached_property
+    def margin_met(self):
+        """Candidates passing every check with :attr:`SpringMaterial.design_margin` on the fatigue safety and the
+        resonance ratio."""
+        return self.passed & (self.design_margin >= self.material.design_margin - _TOL)
 
     @cached_property
     def worst_margin(self):

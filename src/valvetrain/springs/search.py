@@ -199,8 +199,8 @@ def _search(preloads, rates, lift, throat_diameter, camshaft_speed, options, *, 
 
     Only the candidates that may pass (:func:`_may_pass`) are designed, in the order of the grid (line by line);
     when none of them passes, every candidate is, so that the best worst margin is found among all.  The
-    lightest passing spring, the passing count and the margins of every spring designed are those of the
-    exhaustive search."""
+    lightest passing spring (with the design margin or without), the passing count and the margins of every spring
+    designed are those of the exhaustive search: a spring with the margin passes."""
     wires = wire_series(options.wire_range_mm, options.wire_step_mm)
     big_d, d = _grid(throat_diameter, diameter_range or options.diameter_range, options.diameter_step, wires,
                      max_outer)
@@ -228,12 +228,17 @@ def _search(preloads, rates, lift, throat_diameter, camshaft_speed, options, *, 
 
 
 def _best(found):
-    """(candidates, index, passing count): the lightest passing candidate, else the best worst margin."""
+    """(candidates, index, passing count): the lightest candidate meeting the design margin, else the passing one
+    of the largest design margin, else the best worst margin."""
     passing = sum(int(np.count_nonzero(c.passed)) for c in found)
-    if passing:
-        key = [np.where(c.passed, c.mass, np.inf) for c in found]
+    if any(c.margin_met.any() for c in found):
+        key = [np.where(c.margin_met, c.mass, np.inf) for c in found]
         k = int(np.argmin([np.min(m, initial=np.inf) for m in key]))
         return found[k], int(np.argmin(key[k])), passing
+    if passing:
+        key = [np.where(c.passed, c.design_margin, -np.inf) for c in found]
+        k = int(np.argmax([np.max(m) for m in key]))
+        return found[k], int(np.argmax(key[k])), passing
     key = [c.worst_margin for c in found]
     k = int(np.argmax([np.max(m) for m in key]))
     return found[k], int(np.argmax(key[k])), 0
@@ -300,17 +305,18 @@ def _inner_design(outer, inner_found, i, camshaft_speed, options):
                            min_frequency_difference=options.min_frequency_difference)
 
 
-def _joined(outer, inner, options, lift):
+def _joined(outer, inner, options, lift, chosen="passed"):
     """(outer index, inner index, count) of the lightest compatible pair of two grades' candidates, or None.
 
-    Per line: the :data:`PAIR_CANDIDATES` lightest passing springs of each kind, compatible when the inner
+    Per line: the :data:`PAIR_CANDIDATES` lightest springs of each kind that pass (``chosen = "passed"``) or also
+    meet the design margin (``"margin_met"``), compatible when the inner
     one fits inside the outer one with ``options.radial_gap``, its own length at full lift is not longer
     than the outer one's (the coil gap at the common installed length), its natural frequency differs by
     ``options.min_frequency_difference`` and its free length at that installed length is allowed."""
     best, count = None, 0
     for line in np.unique(outer.line):
-        o = np.flatnonzero(outer.passed & (outer.line == line))
-        n = np.flatnonzero(inner.passed & (inner.line == line))
+        o = np.flatnonzero(getattr(outer, chosen) & (outer.line == line))
+        n = np.flatnonzero(getattr(inner, chosen) & (inner.line == line))
         o, n = o[np.argsort(outer.mass[o])][:PAIR_CANDIDATES], n[np.argsort(inner.mass[n])][:PAIR_CANDIDATES]
         if not len(o) or not len(n):
             continue
@@ -362,19 +368,14 @@ def design_pair(preloads, rates, lift, throat_diameter, camshaft_speed, options)
     inner_found, inner_tried = _search(p * share, c * share, lift, throat_diameter, camshaft_speed, options,
                                        diameter_range=inner_range, free_lengths=True)
     tried = outer_tried + inner_tried
-    best, passing = None, 0
-    for outer in outer_found:
-        for inner in inner_found:
-            joined = _joined(outer, inner, options, lift)
-            if joined is None:
-                continue
-            a, b, count = joined
-            passing += count
-            total = outer.mass[a] + inner.mass[b]
-            if best is None or total < best[0]:
-                best = (total, outer, a, inner, b)
+    joined = {chosen: [(o, n, _joined(o, n, options, lift, chosen)) for o in outer_found for n in inner_found]
+              for chosen in ("margin_met", "passed")}
+    passing = sum(j[2] for _, _, j in joined["passed"] if j is not None)
+    pairs = ([(o.mass[j[0]] + n.mass[j[1]], k, o, j[0], n, j[1]) for k, (o, n, j) in enumerate(found) if j is not None]
+             for found in joined.values())
+    best = next((min(found) for found in pairs if found), None)
     if best is not None:
-        _, outer, a, inner, b = best
+        _, _, outer, a, inner, b = best
         chosen = outer.design(a)
         return {"outer": chosen, "inner": _inner_design(chosen, inner, b, camshaft_speed, options)}, passing, tried
     found, a, _ = _best(outer_found)

@@ -50,6 +50,7 @@ from ..dynamics.models import one_mass_train
 from ..dynamics.sweep import sweep
 from ..locale import record_text
 from ..laws import PolydyneLaw
+from ..laws.base import batch_derivatives, member_values, valve_lift_of
 from ..laws.kurz import RAMP_VELOCITY_RANGE_MM_PER_DEG
 from ..specification import SpecError
 from ..layouts import train_mass
@@ -356,7 +357,11 @@ class Problem:
     -----
     One evaluation samples the law twice (:data:`GRID` angles, then :data:`REFINE` around each extreme) and
     integrates the objective by the flow module's quadrature; ``evaluations``, ``seconds`` and ``law_samples`` (the
-    angles at which the law was evaluated, the quadrature's nodes not counted) measure its cost.
+    angles at which the law was evaluated, the quadrature's nodes not counted) measure its cost.  A population is
+    evaluated as one batch (:meth:`evaluate_many`): each point's law is built on its own, then all are sampled on
+    their own grids in one call (:func:`~valvetrain.laws.base.batch_derivatives`), their quantities and least values
+    found together and their objectives integrated in one quadrature; each point's numbers are those of evaluating it
+    alone.
     """
 
     def __init__(self, spec, design, variables, limits, objective="fullness"):
@@ -382,7 +387,7 @@ class Problem:
         self.jump = self.names.index("no jump") if "no jump" in self.names else None
         self.evaluations, self.seconds, self.law_samples, self.simulations, self.best = 0, 0.0, 0, 0, -math.inf
         self.history, self.points = [], []
-        self._cache = {}
+        self._cache, self._grid_kept = {}, (None, None, None)
 
     def _value(self, v):
         """The variable's value in the specification (given or the key's default).
@@ -430,7 +435,7 @@ class Problem:
     def point(self, x):
         """The valve section's data with the variables ``x`` (the start's data, the parts the variables change
         copied)."""
-        data = {**self.data, **{p: copy.deepcopy(self.data[p]) for p in self.parts if p in self.data}}
+        data = {**self.data, **{p: _copied(self.data[p]) for p in self.parts if p in self.data}}
         for v, value in zip(self.variables, x, strict=True):
             v.put(data, float(value))
         cam = data["cam"]
@@ -469,19 +474,28 @@ class Problem:
         """The grid of one evaluation and the law's junctions on it [rad from the nose]."""
         end = law.end if self.whole_event else 0.0
         bp = law.breakpoints
-        return np.unique(np.concatenate([np.linspace(law.start, end, GRID), bp[(bp > law.start) & (bp < end)],
+        return np.unique(np.concatenate([self._grid(law.start, end), bp[(bp > law.start) & (bp < end)],
                                          [law.valve_opens], [law.valve_closes] if self.whole_event else []]))
 
-    def _quantities(self, law, theta, scale):
-        """Each sampled quantity as one to minimise at the angles ``theta``, and (h, dh, d2h) there."""
+    def _grid(self, start, end):
+        """:data:`GRID` angles from ``start`` to ``end`` [rad], kept for the next law with the same event (the laws of
+        a search share it where no variable changes the event's angles)."""
+        if self._grid_kept[:2] != (start, end):
+            self._grid_kept = (start, end, np.linspace(start, end, GRID))
+        return self._grid_kept[2]
+
+    def _quantities(self, laws, theta, member, scales):
+        """Each sampled quantity as one to minimise at the angles ``theta`` of the laws ``laws[member]`` at K_z =
+        ``scales[member]`` x K_z,0, and (h, dh, d2h) there."""
         L = self.limits
-        h, dh, d2h, _ = law.derivatives(theta)
+        h, dh, d2h, _ = batch_derivatives(laws, theta, member)
         self.law_samples += theta.size
-        y = self.i_k * np.clip(h - law.ramp_height, 0.0, None)
-        spring = scale * self.spring.force(y)
+        ramp = member_values([law.ramp_height for law in laws], member)
+        y = self.i_k * np.clip(h - ramp, 0.0, None)
+        spring = scales[member] * self.spring.force(y)
         inertia = self.mass * self.i_k * self.omega**2 * np.clip(-d2h, 0.0, None)
         loaded = (inertia > 0.0) & (y > 0.0)
-        nose = law.lift_max + law.ramp_height
+        nose = member_values([law.lift_max + law.ramp_height for law in laws], member)
         q = {"spring reserve": np.where(loaded, spring / np.where(loaded, inertia, 1.0), np.inf),
              "lift": h / nose, "overshoot": -h / nose,
              "max acceleration": -d2h, "min acceleration": d2h}
@@ -495,31 +509,46 @@ class Problem:
             q["contact stress"] = -self.follower.contact_stress(force, rho, L.cam_width, L.contact_modulus)
         return q, h, dh, d2h
 
-    def _extremes(self, law, scale):
-        """The least value of each quantity of :meth:`_quantities` on the grid refined around its least sample
-        (:data:`REFINE` angles between the neighbours), the grid's (theta, h, d2h) and |dh/dtheta| [m/rad] at the
-        valve's opening and closing."""
-        theta = self._angles(law)
-        q, h, dh, d2h = self._quantities(law, theta, scale)
-        last = theta.size - 1
-        windows = [np.linspace(theta[max(i - 1, 0)], theta[min(i + 1, last)], REFINE)
-                   for i in sorted({int(np.argmin(v)) for v in q.values()})]
-        fine = self._quantities(law, np.concatenate(windows), scale)[0]
-        seat = np.abs(dh[np.searchsorted(theta, [law.valve_opens, law.valve_closes if self.whole_event else
-                                                 law.valve_opens])])
-        return {k: min(float(np.min(v)), float(np.min(fine[k]))) for k, v in q.items()}, theta, h, d2h, seat
+    def _extremes(self, laws, scales):
+        """Per law of ``laws`` (at K_z = ``scales`` x K_z,0): the least value of each quantity of :meth:`_quantities`
+        on the grid refined around its least sample (:data:`REFINE` angles between the neighbours), the grid's
+        (theta, h, d2h) and |dh/dtheta| [m/rad] at the valve's opening and closing; all laws sampled together."""
+        theta, member, starts = _ragged([self._angles(law) for law in laws])
+        q, h, dh, d2h = self._quantities(laws, theta, member, scales)
+        least = {k: _least(v, starts) for k, v in q.items()}
+        ends = np.append(starts[1:], theta.size)
+        windows = []
+        for i, (a, b) in enumerate(zip(starts, ends, strict=True)):
+            at = a + np.array(sorted({int(first[i]) for _, first in least.values()}))
+            windows.append(np.linspace(theta[np.maximum(at - 1, a)], theta[np.minimum(at + 1, b - 1)], REFINE,
+                                       axis=1).ravel())
+        fine, fine_member, fine_starts = _ragged(windows)
+        fine_least = {k: _least(v, fine_starts)[0] for k, v in self._quantities(laws, fine, fine_member,
+                                                                                  scales)[0].items()}
+        out = []
+        for i, (law, a, b) in enumerate(zip(laws, starts, ends, strict=True)):
+            t = theta[a:b]
+            seat = np.abs(dh[a:b][np.searchsorted(t, [law.valve_opens, law.valve_closes if self.whole_event else
+                                                      law.valve_opens])])
+            out.append(({k: min(float(least[k][0][i]), float(fine_least[k][i])) for k in q}, t, h[a:b], d2h[a:b],
+                        seat))
+        return out
 
-    def _objective(self, law, valve):
-        """The objective of :data:`OBJECTIVES` as the flow stage computes it."""
-        lift = valve.rocker_ratio * law.lift_max
-        bp = law.breakpoints
-        def valve_lift(t):
-            return law.valve_lift(t, valve.rocker_ratio, self.follower)
+    def _objectives(self, laws, valves):
+        """The objective of :data:`OBJECTIVES` of each law as the flow stage computes it, all quadratures at once."""
+        ramp = np.array([law.ramp_height for law in laws])
+        rocker = np.array([valve.rocker_ratio for valve in valves])
+        opens, closes = (np.array([getattr(law, k) for law in laws]) for k in ("valve_opens", "valve_closes"))
+        bp = [law.breakpoints for law in laws]
+
+        def valve_lift(t, member):
+            return valve_lift_of(batch_derivatives(laws, t, member)[0], ramp[member], rocker[member], self.follower)
 
         if self.objective == "fullness":
-            return flow.fullness(valve_lift, law.valve_opens, law.valve_closes, lift, bp)
-        return flow.time_area(lambda t: flow.curtain_area(valve_lift(t), valve.throat_diameter, valve.seat_angle),
-                              law.valve_opens, law.valve_closes, self.omega, bp)
+            return flow.fullnesses(valve_lift, opens, closes, rocker * np.array([law.lift_max for law in laws]), bp)
+        throat, seat = (np.array([getattr(valve, k) for valve in valves]) for k in ("throat_diameter", "seat_angle"))
+        return flow.time_areas(lambda t, member: flow.curtain_area(valve_lift(t, member), throat[member], seat[member]),
+                               opens, closes, self.omega, bp)
 
     def evaluate(self, x, dynamics=None):
         """(objective, margins) of the variables; a point that admits no design has objective 0 and margins -1.
@@ -528,43 +557,71 @@ class Problem:
         (:meth:`acceptable`) at every point, to rank the infeasible ones; then where the objective beats the best
         candidate's and the other margins are violated by at most :data:`NEAR` in all (a point farther out is ranked
         below every candidate by its penalty alone); with ``dynamics`` True always, with False never.  Where it is
-        not simulated its margin is NaN.
+        not simulated its margin is NaN.  The evaluation of one point is the batch of one (:meth:`evaluate_many`).
         """
-        key = tuple(float(v) for v in x)
-        entry = self._cache.get(key)
+        return self.evaluate_many([x], dynamics)[0]
+
+    def evaluate_many(self, xs, dynamics=None):
+        """(objective, margins) of each point of ``xs`` (a sequence of variable vectors) as :meth:`evaluate` gives it,
+        in order: the points not evaluated before have their laws built one by one and sampled, checked and integrated
+        together (:meth:`_entries`); the separation is then decided point by point, in order."""
         t0 = time.perf_counter()
-        if entry is None:
+        keys = [tuple(float(v) for v in x) for x in xs]
+        new = list(dict.fromkeys(key for key in keys if key not in self._cache))
+        for key, entry in zip(new, self._entries([self.law(np.array(key)) for key in new]), strict=True):
             self.evaluations += 1
-            found = self.law(x)
-            entry = [0.0, -np.ones(len(self.names)), None]
-            if found is not None:
-                law, valve, scale = found
-                margins = self._margins(law, valve, scale)
-                if margins is not None:
-                    entry = [self._objective(law, valve), margins, (law, scale)]
             self._cache[key] = entry
             self.history.append((entry[0], entry[1]))
             self.points.append(np.array(key))
-        objective, margins, kept = entry
-        if self.jump is not None and kept is not None and np.isnan(margins[self.jump]) and (
-                dynamics or (dynamics is None and objective > self.best and (
-                    self.best == -math.inf or self.violation(margins) <= NEAR))):
-            margins[self.jump] = self._separation(*kept)
-            self.simulations += 1
-        if self.acceptable(margins):
-            self.best = max(self.best, objective)
+        out = []
+        for key in keys:
+            objective, margins, kept = self._cache[key]
+            if self.jump is not None and kept is not None and np.isnan(margins[self.jump]) and (
+                    dynamics or (dynamics is None and objective > self.best and (
+                        self.best == -math.inf or self.violation(margins) <= NEAR))):
+                margins[self.jump] = self._separation(*kept)
+                self.simulations += 1
+            if self.acceptable(margins):
+                self.best = max(self.best, objective)
+            out.append((objective, margins))
         self.seconds += time.perf_counter() - t0
-        return objective, margins
+        return out
+
+    def _entries(self, found):
+        """[objective, margins, (law, scale) or None] of each of :meth:`law`'s results ``found``: objective 0 and
+        margins -1 where there is no law or no cam."""
+        out = [[0.0, -np.ones(len(self.names)), None] for _ in found]
+        built = [(i, f) for i, f in enumerate(found) if f is not None]
+        if not built:
+            return out
+        index, (laws, valves, scales) = [i for i, _ in built], zip(*(f for _, f in built), strict=True)
+        margins = self._margins(laws, valves, np.array(scales))
+        cams = [k for k, m in enumerate(margins) if m is not None]
+        if cams:
+            objectives = self._objectives([laws[k] for k in cams], [valves[k] for k in cams])
+            for k, objective in zip(cams, objectives, strict=True):
+                out[index[k]] = [float(objective), margins[k], (laws[k], scales[k])]
+        return out
 
     def penalised(self, x, scale):
         """The objective over ``scale``, negated, plus :data:`PENALTY` times the summed violations."""
-        objective, margins = self.evaluate(x)
-        return -objective / scale + PENALTY * float(np.nansum(np.clip(-margins, 0.0, None)))
+        return self.penalised_many([x], scale)[0]
 
-    def _margins(self, law, valve, scale):
-        """The margins of the limits, or None where the lift leaves 0...the nose lift (no cam)."""
+    def penalised_many(self, xs, scale):
+        """:meth:`penalised` of each point of ``xs``, evaluated together (:meth:`evaluate_many`)."""
+        return np.array([-objective / scale + PENALTY * float(np.nansum(np.clip(-margins, 0.0, None)))
+                         for objective, margins in self.evaluate_many(xs)])
+
+    def _margins(self, laws, valves, scales):
+        """The margins of the limits of each law, or None where its lift leaves 0...the nose lift (no cam)."""
+        return [self._margins_of(law, valve, scale, extremes)
+                for law, valve, scale, extremes in zip(laws, valves, scales, self._extremes(laws, scales),
+                                                       strict=True)]
+
+    def _margins_of(self, law, valve, scale, extremes):
+        """The margins of one law from its :meth:`_extremes`, or None where the lift leaves 0...the nose lift."""
         L = self.limits
-        least, theta, h, d2h, seat = self._extremes(law, scale)
+        least, theta, h, d2h, seat = extremes
         if least["lift"] < -1e-6 or least["overshoot"] < -1.0 - 1e-6:
             return None
         reserve = least["spring reserve"] if np.isfinite(least["spring reserve"]) else 10.0
@@ -736,6 +793,29 @@ class Result:
         return [c for c in self.checks if c.passed and c.margin < BINDING]
 
 
+def _copied(node):
+    """A copy of specification data (dicts and lists of numbers, texts and booleans), each dict and list new."""
+    if isinstance(node, dict):
+        return {k: _copied(v) for k, v in node.items()}
+    return [_copied(v) for v in node] if isinstance(node, list) else node
+
+
+def _ragged(arrays):
+    """(concatenation, index of the array of each entry, start of each array in it) of 1-D arrays."""
+    sizes = [a.size for a in arrays]
+    return (np.concatenate(arrays), np.repeat(np.arange(len(arrays)), sizes),
+            np.concatenate([[0], np.cumsum(sizes)[:-1]]).astype(int))
+
+
+def _least(values, starts):
+    """(least value, index of its first occurrence from the start) of each run of ``values`` beginning at ``starts``
+    (``np.min`` and ``np.argmin`` of each run: a run holding NaN gives NaN at its first NaN)."""
+    least = np.minimum.reduceat(values, starts)
+    sizes = np.diff(np.append(starts, values.size))
+    hits = np.flatnonzero((values == np.repeat(least, sizes)) | np.isnan(values))
+    return least, hits[np.searchsorted(hits, starts)] - starts
+
+
 def polydyne_fullness(law, exponents=(10, 18, 26, 34)):
     """Fullness of the polydyne (2, p, q, r, s) with the same lift, cosine ramp of the same height and end velocity
     and the same main angle as a power-polynomial ``law``, on the same definition (tappet lift over the valve-open
@@ -805,9 +885,8 @@ def _comparison(start, end):
                ("spring reserve K_z", "", d.drive.spring.spring_reserve)]
         if d.profile.rho_min is not None:
             out.append(("rho_min", "mm", d.profile.rho_min))
-        fullness = d.records.get("power_polynomial", {}).get("tappet_fullness")
-        if fullness is not None:
-            out.insert(1, ("tappet fullness (UkrSURT Proceedings (2019))", "", fullness))
+        if d.records.power_polynomial is not None:
+            out.insert(1, ("tappet fullness (UkrSURT Proceedings (2019))", "", d.records.power_polynomial.tappet_fullness))
         return out
     return [(q, u, to_display(a, u), to_display(b, u)) for (q, u, a), (_, _, b) in zip(rows(start), rows(end),
                                                                                       strict=True)]
@@ -884,7 +963,7 @@ def optimize_valve(spec, valve=None, variables=None, objective="fullness", wheel
     generation = [0]
 
     def population(xs):
-        return np.array([problem.penalised(x, scale0) for x in np.asarray(xs).T])
+        return problem.penalised_many(np.asarray(xs).T, scale0)
 
     def callback(xk, convergence=None):
         generation[0] += 1

@@ -19,35 +19,17 @@ from bokeh.plotting import figure
 import numpy as np
 
 from .. import api
+from ..languages import LANGS
+from ..locale import catalogue
 from ..report.html import check_range
 from ..report.i18n import TEXT
 from ..report.names import label, record_quantity_text, translate
 from ..units import per_cam_degree
 from .session import form, parse_value, value_text, without_nones
 
-WORDS = {
-    "en": {"language": "Language", "valve": "Valve", "pin": "Pin as baseline", "toml": "Download TOML",
-           "report": "Download report", "checks": "Checks", "baseline": "baseline", "current": "current",
-           "margin": "Margin", "card": "Cam card", "kept": "not designed; the last good design stays on screen",
-           "sweep": "At speed: the dynamics sweep", "sweeping": "sweeping...", "min_force": "min contact force, N",
-           "seating": "|seating velocity|, m/s", "map": "valve lift - rigid lift, mm", "spec": "Specification",
-           "velocity_valve": "valve velocity, m/s", "acceleration_valve": "valve acceleration, m/s²",
-           "jerk_valve": "valve jerk, m/s³", "velocity_valve_deg": "valve velocity, mm/deg",
-           "acceleration_valve_deg": "valve acceleration, mm/deg²", "jerk_valve_deg": "valve jerk, mm/deg³",
-           "units": "Derivatives", "rated": "at the rated speed", "deg": "per cam degree", "lift_mm": "lift, mm", "jump": "jump speed", "bounce": "bounce onset"},
-    "ru": {"language": "Язык", "valve": "Клапан", "pin": "Закрепить как базовый", "toml": "Скачать TOML",
-           "report": "Скачать отчёт", "checks": "Проверки", "baseline": "базовый", "current": "текущий",
-           "margin": "Запас", "card": "Карта кулачка", "kept": "не рассчитано; на экране последний годный вариант",
-           "sweep": "На режимах: динамика по частоте вращения", "sweeping": "расчёт...",
-           "min_force": "мин. сила в контакте, Н", "seating": "|скорость посадки|, м/с",
-           "map": "подъём клапана - кинематический подъём, мм", "spec": "Исходные данные",
-           "velocity_valve": "скорость клапана, м/с", "acceleration_valve": "ускорение клапана, м/с²",
-           "jerk_valve": "рывок клапана, м/с³", "velocity_valve_deg": "скорость клапана, мм/град",
-           "acceleration_valve_deg": "ускорение клапана, мм/град²", "jerk_valve_deg": "рывок клапана, мм/град³",
-           "units": "Производные", "rated": "на номинальной частоте", "deg": "на градус ПРВ", "lift_mm": "подъём, мм", "jump": "частота отрыва",
-           "bounce": "начало отскока"},
-}
-"""The designer's own words in English and Russian (the plots' and the checks' come from the report's)."""
+WORDS = {lang: catalogue(lang)["designer"] for lang in LANGS}
+"""The designer's own words in each language, from the catalogue's ``[designer]`` (the plots' and the checks' come from
+the report's)."""
 
 CARD_KEYS = ("cam.valve_opens_crank_deg", "cam.valve_closes_crank_deg", "cam.event_cam_deg", "cam.nose_crank_deg",
              "cam.phi_p0_deg", "flow.valve_lift_mm", "flow.time_area_mm2_s", "flow.fullness",
