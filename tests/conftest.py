@@ -1,4 +1,8 @@
-"""Shared fixtures: the cam of the appendix of Valve-train practical works (n.d.); a specification refused by the command line."""
+"""Shared fixtures: the cam of the appendix of Valve-train practical works (n.d.); a specification refused by the
+command line; the system's chromium for the browser tests (pytest-playwright)."""
+
+import os
+import shutil
 
 from click.testing import CliRunner
 import numpy as np
@@ -49,3 +53,19 @@ def plain(x):
     if isinstance(x, np.ndarray):
         return x.dtype.kind in "biufU"
     return x is None or isinstance(x, (str, bool, int, float, np.floating))
+
+
+BROWSER = shutil.which("chromium") or shutil.which("chromium-headless-shell")
+"""The browser of the browser tests: Debian's chromium (``executable_path``: a downloaded browser build cannot be had
+here)."""
+
+
+@pytest.fixture(scope="session")
+def browser_type_launch_args(browser_type_launch_args):
+    """pytest-playwright's launch arguments with the system's chromium; without one the browser tests are skipped,
+    except in CI (``CI=true``), where a missing browser fails them."""
+    if BROWSER is None:
+        if os.environ.get("CI") == "true":
+            pytest.fail("no chromium on this machine: .ci/run installs the Debian package `chromium`")
+        pytest.skip("no chromium on this machine (apt-get install -y chromium)")
+    return {**browser_type_launch_args, "executable_path": BROWSER, "args": ["--no-sandbox"]}

@@ -10,7 +10,9 @@ import numpy as np
 import pytest
 
 from valvetrain import api
-from valvetrain.specification import SpecError, example_text, parse_spec
+from valvetrain.specification import SpecError, parse_spec
+
+from appendix import appendix_text
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 
@@ -51,7 +53,7 @@ def test_dict_route_gives_the_numbers_of_valvetrain_run(tmp_path):
 
 
 def test_series_against_finite_differences_and_the_inputs():
-    document = tomllib.loads(example_text())
+    document = tomllib.loads(appendix_text())
     out = api.design(document)
     s = out["series"]["intake"]
     # the nose lifts the valve by max_lift_mm of the specification (10 mm)
@@ -70,7 +72,7 @@ def test_series_against_finite_differences_and_the_inputs():
 
 
 def test_errors_are_records_with_key_value_and_range():
-    document = tomllib.loads(example_text())
+    document = tomllib.loads(appendix_text())
     document["engine"]["bore_mm"] = -3.0
     out = api.design(document)
     assert not out["ok"] and out["results"] is None
@@ -82,7 +84,7 @@ def test_errors_are_records_with_key_value_and_range():
 def test_a_cross_check_error_is_a_record_of_its_key_and_value():
     """The records are the parts of the problem as found, not read back from its text: a cross-check's line
     "KEY = VALUE must be smaller than ..." has no ": " after the value, and parsing the text gave no key at all."""
-    document = tomllib.loads(example_text())
+    document = tomllib.loads(appendix_text())
     bore = document["engine"]["bore_mm"]
     document["valves"]["intake"]["throat_diameter_mm"] = bore + 10.0
     out = api.design(document)
@@ -95,7 +97,7 @@ def test_a_cross_check_error_is_a_record_of_its_key_and_value():
 def test_a_design_stage_error_is_a_record_of_its_key():
     """A lift beyond half the throat is refused by the law stage (design/valve.py, MAX_LIFT_TO_THROAT = 0.5), its
     problem naming the valve's key: 0.6 x the throat against the limit 0.5 x the throat, by hand."""
-    document = tomllib.loads(example_text())
+    document = tomllib.loads(appendix_text())
     throat = document["valves"]["intake"]["throat_diameter_mm"]
     document["valves"]["intake"]["max_lift_mm"] = 0.6 * throat
     (error,) = api.design(document)["errors"]
@@ -106,7 +108,7 @@ def test_a_design_stage_error_is_a_record_of_its_key():
 def test_a_changed_key_that_is_no_table_is_a_record_of_the_key():
     """Spec.replace's problems name the dotted key they were given."""
     with pytest.raises(SpecError) as err:
-        parse_spec(example_text()).replace({"engine.bore_mm.x": 1.0})
+        parse_spec(appendix_text()).replace({"engine.bore_mm.x": 1.0})
     (problem,) = api.error_records(err.value)
     assert problem["path"] == "engine.bore_mm.x" and problem["value"] is None
     assert problem["message"] == "engine.bore_mm is a value, not a table"
@@ -118,7 +120,7 @@ def test_not_a_dict_is_an_error_record():
 
 
 def test_toml_text_reproduces_the_design():
-    document = tomllib.loads(example_text())
+    document = tomllib.loads(appendix_text())
     document["valves"]["intake"]["max_lift_mm"] = 10.5
     again = api.design(tomllib.loads(api.toml_text(document)))
     _close(again["results"], api.design(document)["results"])
@@ -150,4 +152,4 @@ def test_a_sweep_is_stopped_by_its_progress_callback():
         raise Stop
 
     with pytest.raises(Stop):
-        api.sweep(tomllib.loads(example_text()), progress=progress)
+        api.sweep(tomllib.loads(appendix_text()), progress=progress)

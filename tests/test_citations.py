@@ -15,7 +15,8 @@ import pytest
 
 import valvetrain
 from valvetrain import bibliography
-from valvetrain.bibliography import NO_AUTHORS, UNKNOWN, WORKS, cite, cited_in, corrections_text, entry
+from valvetrain.bibliography import (NO_AUTHORS, UNKNOWN, WORKS, cite, cited_in, corrections_notes, corrections_text,
+                                    entry)
 from valvetrain.cli import main
 from valvetrain.report.russian import REFERENCES, SHORT
 
@@ -231,3 +232,13 @@ def test_tests_cite_their_sources_by_the_short_form():
     found = [(str(path.relative_to(ROOT)), *hit) for path in sorted((ROOT / "tests").rglob("*.py"))
              if path != Path(__file__) for hit in uncited_tags(path.read_text(encoding="utf-8"))]
     assert not found, found
+
+
+def test_the_russian_corrections_notes_are_the_same_items():
+    """Issue 24: the Russian report shows the corrections notes it cites in Russian: data/corrections.ru.md has every
+    item of the English file under its number, and each Russian item is Cyrillic text."""
+    english, russian = corrections_notes("en"), corrections_notes("ru")
+    assert list(russian) == list(english) == list(range(1, 52))
+    assert all(re.search("[а-яё]{4,}", title + text) for title, text in russian.values())
+    assert russian[20][0] == "Прогиб распределительного вала, формула (7.3)."
+    assert english[45] == ("Table 2.6, 60 deg, lambda = 0.26.", "Printed 0.978. Correct: 0.9816.")

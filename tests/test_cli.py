@@ -296,8 +296,6 @@ def test_ctrl_c_while_importing_is_one_line_and_status_130():
 SIGINT_IN_A_CALLBACK = """
 import signal, sys, time, weakref
 from valvetrain.interruption import Interruption
-
-from appendix import appendix_text
 Interruption.install(Interruption.interrupt)
 class Part:
     pass

@@ -12,12 +12,13 @@ from valvetrain.design import run
 from valvetrain.export import json_text, write_outputs
 from valvetrain.report.drawing import FigureProcess
 from valvetrain.tables import LIFT_COLUMNS
-from valvetrain.specification import example_spec
+
+from appendix import appendix_spec
 
 
 @pytest.fixture(scope="module")
 def written(tmp_path_factory):
-    results = run(example_spec())
+    results = run(appendix_spec())
     out = write_outputs(results, tmp_path_factory.mktemp("x") / "design")
     return results, out
 
@@ -182,7 +183,7 @@ def test_figures_drawn_in_a_second_process_are_those_drawn_here(tmp_path):
     """The reference is the same run's figures drawn in this process (no drawer): every file, the PNGs and the report
     that embeds them included, is the same byte for byte (but the DXF, written by this process either way, which
     holds its time of writing in $TDCREATE)."""
-    results = run(example_spec())
+    results = run(appendix_spec())
     here = write_outputs(results, tmp_path / "here")
     there = write_outputs(results, tmp_path / "there", drawer=FigureProcess())
     files = sorted(p.relative_to(here) for p in here.rglob("*") if p.is_file() and p.name != ".valvetrain-output")
@@ -198,6 +199,6 @@ def test_an_error_in_the_drawing_process_is_raised_and_nothing_is_written(tmp_pa
     it must reach the caller, leave no folder and end the drawing processes."""
     drawer = FigureProcess()
     with pytest.raises(ValueError, match="allowed: main, all, none"):
-        write_outputs(run(example_spec()), tmp_path / "d", figures="some", drawer=drawer)
+        write_outputs(run(appendix_spec()), tmp_path / "d", figures="some", drawer=drawer)
     assert not (tmp_path / "d").exists()
     assert not any(p.is_alive() for p in drawer._processes)

@@ -20,6 +20,7 @@ from valvetrain.outfolder import MARKER, OutFolderError, atomic_folder, check_ou
 from valvetrain.specification import example_text
 
 EXAMPLES = Path(__file__).parents[1] / "examples"
+APPENDIX = EXAMPLES / "seed000-appendix-kurz.toml"
 SRC = str(Path(valvetrain.__file__).parents[1])
 """The package under test, for the command run as a separate process."""
 
@@ -32,10 +33,10 @@ def command(tmp_path, *args):
 
 @pytest.fixture(scope="module")
 def previous_run(tmp_path_factory):
-    """A previous output of the built-in example (English report), and how long the command took to write it [s]."""
+    """A previous output of the appendix example (English report), and how long the command took to write it [s]."""
     folder = tmp_path_factory.mktemp("previous")
     start = time.monotonic()
-    proc = command(folder, "run", "--out", "design")
+    proc = command(folder, "run", str(APPENDIX), "--out", "design")
     _, err = proc.communicate(timeout=120)
     assert proc.returncode == 0, err
     return folder / "design", time.monotonic() - start
@@ -43,7 +44,7 @@ def previous_run(tmp_path_factory):
 
 @pytest.fixture(scope="module")
 def previous(previous_run):
-    """A previous output of the built-in example (English report)."""
+    """A previous output of the appendix example (English report)."""
     return previous_run[0]
 
 
@@ -253,7 +254,7 @@ def test_a_rerun_replaces_a_previous_output(tmp_path, previous):
     (out / "tables" / "exhaust_lift.csv").write_text("written by a previous run with an exhaust valve")
     with (out / MARKER).open("a", encoding="utf-8") as fh:
         fh.write("tables/exhaust_lift.csv\n")
-    result = CliRunner().invoke(main, ["run", "--out", str(out), "--lang", "ru"])
+    result = CliRunner().invoke(main, ["run", str(APPENDIX), "--out", str(out), "--lang", "ru"])
     assert result.exit_code == 0, result.output
     assert not (out / "tables" / "exhaust_lift.csv").exists()
     assert 'lang="ru"' in (out / "report.html").read_text(encoding="utf-8")
@@ -298,7 +299,7 @@ def test_an_interrupted_run_keeps_a_whole_output(tmp_path, previous_run, sig):
     shutil.copytree(previous, out)
     moments = random.Random(9).sample(range(100, int(seconds * 1000)), 5)
     for ms in moments:
-        proc = command(tmp_path, "run", "--out", "design", "--lang", "ru")
+        proc = command(tmp_path, "run", str(APPENDIX), "--out", "design", "--lang", "ru")
         time.sleep(ms / 1000)
         proc.send_signal(sig)
         _, err = proc.communicate(timeout=120)
@@ -309,7 +310,7 @@ def test_an_interrupted_run_keeps_a_whole_output(tmp_path, previous_run, sig):
             assert hidden(tmp_path, "design") == [], ms
         else:
             assert proc.returncode in (-signal.SIGKILL, 0), (ms, err)
-    proc = command(tmp_path, "run", "--out", "design")
+    proc = command(tmp_path, "run", str(APPENDIX), "--out", "design")
     _, err = proc.communicate(timeout=120)
     assert proc.returncode == 0, err
     complete(out)

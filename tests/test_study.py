@@ -10,8 +10,9 @@ import pytest
 
 from valvetrain import study as study_module
 from valvetrain.cli import main
-from valvetrain.specification import example_text
 from valvetrain.study import evaluate_point, parse_grid, toml_text
+
+from appendix import appendix_text
 
 ROOT = Path(__file__).resolve().parents[1]
 GRID = ["--grid", "valves.intake.cam.shape_factor=0.55,0.6,0.65", "--grid", "engine.rated_speed_rpm=6000,7000"]
@@ -92,7 +93,7 @@ def test_scheduler_without_dask_is_an_error(spec_file, tmp_path, monkeypatch):
 ])
 def test_invalid_grid_is_refused(tmp_path, grid, said):
     f = tmp_path / "engine.toml"
-    f.write_text(example_text(), encoding="utf-8")
+    f.write_text(appendix_text(), encoding="utf-8")
     result = CliRunner().invoke(main, ["study", str(f), "--grid", grid, "--out", str(tmp_path / "o")])
     assert result.exit_code == 2
     (line,) = result.output.splitlines()
@@ -102,7 +103,7 @@ def test_invalid_grid_is_refused(tmp_path, grid, said):
 
 def test_invalid_point_is_a_row(tmp_path):
     f = tmp_path / "engine.toml"
-    f.write_text(example_text(), encoding="utf-8")
+    f.write_text(appendix_text(), encoding="utf-8")
     out = tmp_path / "o"
     result = CliRunner().invoke(main, ["study", str(f), "--grid", "valves.intake.cam.phi1_deg=27,40", "--out", str(out)])
     assert result.exit_code == 0, result.output
@@ -135,7 +136,7 @@ def test_a_worker_that_dies_stops_the_study_keeping_the_points_done(tmp_path, mo
     one the other process was designing then), exit 1, and the table with every other point designed (two points
     are in progress at a time, so all but those two were done when point 6 started)."""
     f = tmp_path / "engine.toml"
-    f.write_text(example_text(), encoding="utf-8")
+    f.write_text(appendix_text(), encoding="utf-8")
     monkeypatch.setattr(study_module, "evaluate_point", _dies_at_the_last_point)
     out = tmp_path / "o"
     result = CliRunner().invoke(main, ["study", str(f), *GRID, "--out", str(out), "--workers", "2"])
@@ -156,7 +157,7 @@ def test_a_toml_array_grid_value_is_one_value_written_as_toml(tmp_path):
     """Issue 21 traceback 1: a grid value that is a TOML array (a spring's list of materials) is one value, designed,
     and written to study.csv as its TOML text."""
     f = tmp_path / "engine.toml"
-    f.write_text(example_text(), encoding="utf-8")
+    f.write_text(appendix_text(), encoding="utf-8")
     out = tmp_path / "o"
     result = CliRunner().invoke(main, ["study", str(f), "--grid",
                                        'valves.intake.spring.material=["VDSiCr", "60S2A"],"60S2A"', "--out", str(out)])
@@ -178,7 +179,7 @@ def test_a_huge_grid_is_refused_before_any_point_is_built(tmp_path, monkeypatch)
     """Issue 21 traceback 6: 1000 x 1000 points are counted, not made: refused with exit 2, the count and an estimate,
     in about the time of two designs; --max-points allows a grid above the default limit."""
     f = tmp_path / "engine.toml"
-    f.write_text(example_text(), encoding="utf-8")
+    f.write_text(appendix_text(), encoding="utf-8")
     made = []
     monkeypatch.setattr(study_module, "with_values", lambda d, v: made.append(v) or d)
     shape = ",".join(f"{0.5 + i * 1e-4:.4f}" for i in range(1000))

@@ -952,7 +952,7 @@ def _alarm(signum, frame):
 
 
 MAX_MESSAGE = 300
-KEY_PATH = re.compile(r"(?<![\w.])\[?(engine|valves|gas|crank|two_stroke|output|accepted)\b")
+KEY_PATH = re.compile(r"(?<![\w.])\[?(engine|valves|gas|crank|camshaft|two_stroke|output|accepted)\b")
 INTERNAL_TEXT = ("ill-posed", "ill-conditioned", "singular matrix", "traceback", "numpy", "scipy", "ndarray",
                  "dtype", "object has no attribute", "nonetype", "index out of", "division by zero",
                  "math domain", "not enough values", "too many values", "recursion", "operands could not",

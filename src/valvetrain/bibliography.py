@@ -18,6 +18,7 @@ True
 
 from dataclasses import dataclass
 from importlib import resources
+import re
 
 UNKNOWN = "publisher and year not given in the copy used"
 """Said of a work whose copy has no title page."""
@@ -167,6 +168,11 @@ WORKS = {
         authors="Norton, R. L.",
         title="Cam Design and Manufacturing Handbook, 2nd ed.", kind="book", publisher="Industrial Press",
         place="New York", year="2009"),
+    "wang2007": Work(
+        short="Wang (2007)",
+        authors="Wang, Y.",
+        title="Introduction to Engine Valvetrains", kind="book", publisher="SAE International", place="Warrendale, PA",
+        year="2007"),
     "johnson1985": Work(
         short="Johnson (1985)",
         authors="Johnson, K. L.",
@@ -268,6 +274,11 @@ WORKS = {
         publisher="Mechanisms and Surface Distress, Proceedings of the 12th Leeds-Lyon Symposium on Tribology, "
                   "Butterworths, pp. 305-322", place="London", year="1986",
         note="The kinematics and the film of a cam and flat follower."),
+    "denhartog1956": Work(
+        short="Den Hartog (1956)",
+        authors="Den Hartog, J. P.",
+        title="Mechanical Vibrations, 4th ed.", kind="book", publisher="McGraw-Hill", place="New York", year="1956",
+        note="The natural frequencies of torsional systems of several masses on an elastic shaft."),
 }
 """Every cited work by its key."""
 
@@ -288,6 +299,21 @@ def cited_in(text):
     return [key for key, work in WORKS.items() if work.short in text]
 
 
-def corrections_text():
-    """The corrections notes shipped with the package (Markdown): each misprint of a source and what is used."""
-    return resources.files("valvetrain").joinpath("data/corrections.md").read_text(encoding="utf-8")
+def corrections_text(lang="en"):
+    """The corrections notes shipped with the package (Markdown): each misprint of a source and what is used, in
+    English (``data/corrections.md``) or Russian (``data/corrections.ru.md``, the same items by the same numbers)."""
+    name = "data/corrections.md" if lang == "en" else f"data/corrections.{lang}.md"
+    return resources.files("valvetrain").joinpath(name).read_text(encoding="utf-8")
+
+
+def corrections_notes(lang="en"):
+    """The numbered items of :func:`corrections_text` in ``lang``: ``{N: (title, text)}``, the Markdown's line breaks
+    and emphasis removed (the title is the item's bold opening), a key in backquotes written in words."""
+    notes = {}
+    for m in re.finditer(r"^(\d+)\. (.*?)(?=^\d+\. |^#|^\S|\Z)", corrections_text(lang), flags=re.M | re.S):
+        text = " ".join(m.group(2).split())
+        bold = re.match(r"(.*?)\*\*(.+?)\*\*\s*(.*)", text)
+        title, rest = (bold.group(1) + bold.group(2), bold.group(3)) if bold else ("", text)
+        rest = re.sub(r"`([^`]*)`", lambda code: code.group(1).replace("_", " "), rest)   # a key, in words
+        notes[int(m.group(1))] = (title.strip(), re.sub(r"\*\*(.+?)\*\*", r"\1", rest))
+    return notes

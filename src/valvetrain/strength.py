@@ -30,6 +30,10 @@ LIMITS = {
 and its source."""
 
 
+HERTZ_LINE = 0.418
+"""The factor of Hertz's line-contact stress, sqrt(1 / (2 pi (1 - mu^2))) with Poisson's ratio mu = 0.3."""
+
+
 def verdict(check_name, value, note=""):
     """The :class:`~valvetrain.checks.Check` of one of the checks of :data:`LIMITS` (severity ``failure``: the
     part cannot carry the load), its value SI."""
@@ -133,7 +137,7 @@ def hertz_line_stress(force, width, curvature_sum, modulus):
     curvature = np.clip(curvature_sum, 0.0, None)
     # an unloaded point carries no stress, even where the profile has a cusp (infinite curvature)
     loaded = np.multiply(load, curvature, out=np.zeros(np.broadcast(load, curvature).shape), where=load > 0.0)
-    return 0.418 * np.sqrt(loaded * modulus / width)
+    return HERTZ_LINE * np.sqrt(loaded * modulus / width)
 
 
 def hertz_half_width(force, width, curvature_sum, modulus):
@@ -173,7 +177,7 @@ def hertz_half_width(force, width, curvature_sum, modulus):
     0.1051
     """
     load = np.clip(force, 0.0, None)
-    return 2.0 / (0.418 * np.pi) * np.sqrt(load / (width * modulus * np.asarray(curvature_sum)))
+    return 2.0 / (HERTZ_LINE * np.pi) * np.sqrt(load / (width * modulus * np.asarray(curvature_sum)))
 
 
 def roller_side_force(axial_force, pressure_angle):
@@ -234,7 +238,7 @@ def sphere_socket_stress(force, modulus, ball_radius, socket_radius):
 
 def rocker_pad_stress(force, modulus, width, radius):
     """Contact stress of the rocker pad on the valve stem, 0.418 sqrt(P E / (b r)) [Pa] (Valve-train practical works (n.d.), eq. 7.13)."""
-    return 0.418 * np.sqrt(force * modulus / (width * radius))
+    return HERTZ_LINE * np.sqrt(force * modulus / (width * radius))
 
 
 def section_modulus(diameter, bore=0.0):

@@ -95,7 +95,8 @@ def test_figure_data_are_plain_series(results):
     v = results.valves["intake"]
     made = [(plots.kinematics_data(v), plots.draw_kinematics), (plots.time_area_data(v), plots.draw_time_area),
             (plots.spring_data(v), plots.draw_spring), (plots.strength_speed_data(v), plots.draw_strength_speed),
-            (plots.timing_data(results.valves), plots.draw_timing),
+            (plots.timing_data(results.valves), plots.draw_timing), (plots.contour_data(v), plots.draw_contour),
+            (plots.curvature_data(v), plots.draw_curvature),
             (plots.crank_forces_data(results.crank), plots.draw_crank_forces),
             (plots.crank_torque_data(results.crank), plots.draw_crank_torque),
             (plots.crank_pin_data(results.crank), plots.draw_crank_pin)]

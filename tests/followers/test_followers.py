@@ -5,7 +5,7 @@ caller's own (a lever ratio) reaching the valve lift."""
 import numpy as np
 import pytest
 
-from valvetrain.followers import FLAT, REGISTRY, FlatFollower, Follower, RollerFollower, follower_of
+from valvetrain.followers import FLAT, REGISTRY, FlatFollower, Follower, PivotedFollower, RollerFollower, follower_of
 from valvetrain.specification.cams import _CamBase
 
 from conftest import seed000_law
@@ -16,8 +16,9 @@ E = 2.1e11
 
 def test_the_specification_offers_the_registered_followers():
     """The ``follower`` key allows exactly the registry's names, each mapped to its class."""
-    assert set(_CamBase.model_fields["follower"].annotation.__args__) == set(REGISTRY) == {"flat", "roller"}
+    assert set(_CamBase.model_fields["follower"].annotation.__args__) == set(REGISTRY) == {"flat", "roller", "finger"}
     assert REGISTRY["flat"] is FlatFollower and REGISTRY["roller"] is RollerFollower
+    assert REGISTRY["finger"] is PivotedFollower
 
 
 def test_a_follower_is_built_from_the_cam():

@@ -21,6 +21,8 @@ from valvetrain.laws.measured import (TableLaw, harmonic_fit, lobe_table,
 from valvetrain.numerics import level_span
 from valvetrain.specification import load_spec
 
+from appendix import PATH as APPENDIX, appendix_text, appendix_spec
+
 from conftest import seed000_law
 
 EXAMPLE = Path(__file__).parents[2] / "examples" / "measured-lobe.toml"
@@ -163,9 +165,8 @@ def test_bad_table_file_exits_2(tmp_path, refused, command):
 
 
 def test_lift_and_timing_keys_required_for_other_laws(refused):
-    from valvetrain.specification import example_text
 
-    output = refused(example_text().replace("opens_deg = 26.0", "").replace("max_lift_mm = 10.0", ""))
+    output = refused(appendix_text().replace("opens_deg = 26.0", "").replace("max_lift_mm = 10.0", ""))
     assert "valves.intake.opens_deg: required key is missing" in output
     assert "valves.intake.max_lift_mm: required key is missing" in output
 
@@ -516,10 +517,9 @@ def test_the_exported_lift_table_reads_back(tmp_path):
     cam deg from the gas-exchange TDC); read back as law = "table" it gives the example's valve lift (10 mm, not
     10.4: the ramp takes up the clearance) and timing: the nose at 116 crank deg, the valve lift of 0.1 mm at the
     crank angles where the Kurz law reaches it (root finding on the law)."""
-    from valvetrain.specification import example_spec, example_text
 
     out = tmp_path / "design"
-    assert CliRunner().invoke(main, ["run", "--out", str(out)]).exit_code == 0
+    assert CliRunner().invoke(main, ["run", str(APPENDIX), "--out", str(out)]).exit_code == 0
     declared = next(line for line in (out / "contour" / "intake_lift.csv").read_text().splitlines()
                     if line.startswith("# read back with: "))[len("# read back with: "):]
     keys = dict(kv.split(" = ") for kv in declared.split(", "))
@@ -527,10 +527,10 @@ def test_the_exported_lift_table_reads_back(tmp_path):
                     "table_zero": '"gas_exchange_tdc"', "clearance_mm": "0.25", "rocker_ratio": "1.6"}
     cam = ("[valves.intake.cam]\n" + "".join(f"{k} = {v}\n" for k, v in keys.items() if k.startswith(("law", "table")))
            + 'table_file = "design/contour/intake_lift.csv"\nbase_radius_mm = 20.0\n')
-    text = re.sub(r"\[valves\.intake\.cam\]\n(.*\n)*?(?=follower)", cam, example_text(), count=1)
+    text = re.sub(r"\[valves\.intake\.cam\]\n(.*\n)*?(?=follower)", cam, appendix_text(), count=1)
     text = re.sub(r"^(max_lift_mm|opens_deg|closes_deg) = .*\n", "", text, count=3, flags=re.MULTILINE)
     back = run(load_spec(_write(tmp_path / "back.toml", text))).to_dict()["valves"]["intake"]
-    kurz = run(example_spec()).valves["intake"]
+    kurz = run(appendix_spec()).valves["intake"]
     assert back["cam"]["law"] == "table"
     assert back["flow"]["valve_lift_mm"] == pytest.approx(10.0, abs=0.01)
     assert back["cam"]["nose_crank_deg"] == pytest.approx(116.0, abs=0.01)

@@ -32,8 +32,9 @@ def test_title_block_contents_conclusions_and_appendix(tmp_path):
     assert links == [f"ch{i}" for i in range(1, len(links) + 1)] and len(links) >= 5
     assert all(f'<h2 id="{a}"' in page for a in links)
     chapters = re.findall(r'<h2 id="ch\d+"[^>]*>(.*?)</h2>', page)
-    assert chapters.index("Conclusions") < chapters.index("Appendix: input data and lift tables") < \
-        chapters.index("Sources")
+    # GOST 7.32's order: the conclusions, the list of sources, then the appendices
+    assert chapters.index("Conclusions") < chapters.index("Sources") < \
+        chapters.index("Appendix: input data and lift tables")
     # the lift table and the input dump are in the appendix, after the conclusions
     appendix = page.index("Appendix: input data and lift tables</h2>")
     assert page.index("Lift table (every") > appendix and page.index("<h3>Input data</h3>") > appendix

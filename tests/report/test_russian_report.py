@@ -44,9 +44,52 @@ def test_the_russian_report_has_no_latin_words(tmp_path, spec):
     # the Russian manual is cited in Russian, its locators too
     assert "Практические работы по расчёту ГРМ (б. г.), работа 4, формула (4.1)" in page
     assert "Valve-train practical works" not in re.sub(r'<span class="name">.*?</span>', "", page)   # but the name
+    # the corrections notes the report cites, in Russian (the built-in example's camshaft cites note 20)
+    assert spec or "<b>Прогиб распределительного вала, формула (7.3).</b> Напечатан коэффициент 0,8." in page
 
 
 def test_a_russian_valve_heading_names_the_valve_in_russian(tmp_path):
     out = tmp_path / "ru"
     assert CliRunner().invoke(main, ["run", "--out", str(out), "--lang", "ru", "--figures", "none"]).exit_code == 0
     assert re.search(r'<h2 id="ch\d+">Впускной клапан «<span class="name">intake</span>»', (out / "report.html").read_text())
+
+
+LOCATOR = re.compile(r"\(\d+\.\d+[^)]*\)|(?:ф\.|рис\.|раздел|разделы|гл\.|глава|формула|формулы|таблица) \d+\.\d+"
+                     r"|valvetrain \d+\.\d+\.\d+")
+"""Numbers that are not quantities: equation numbers in brackets "(7.4)", "(7.15, поправка 48)", sections, figures,
+the program's version."""
+
+
+def report_text(page):
+    """The report's text as a reader sees it: the designer's names, links and works in other languages left out."""
+    page = re.sub(r"<style.*?</style>", "", page, flags=re.S)
+    page = re.sub(r'<li class="cite" lang="en">.*?</li>', "", page, flags=re.S)
+    page = re.sub(r'<(span|a) class="name"[^>]*>.*?</\1>', "", page, flags=re.S)
+    page = re.sub(r"<a [^>]*>.*?</a>", "", page, flags=re.S)
+    return html.unescape(re.sub(r"<[^>]+>", " ", page))
+
+
+@pytest.mark.parametrize("spec", [None, "seed000-polydyne.toml"], ids=["built-in", "polydyne"])
+def test_the_russian_report_writes_a_decimal_comma_and_russian_quotes(tmp_path, spec):
+    """GOST 8.417 and Russian typography: 0,5 not 0.5 in every number of the text (tables, notes of the checks, the
+    sources' notes, the worked substitution); «» for quotation marks.  Before: "-56.87 град ПРВ", "<= 0.05",
+    "проволока 4.6 мм", "0.418 ×" in the built-in example's Russian report."""
+    out = tmp_path / "ru"
+    args = ["run", *([str(EXAMPLES / spec)] if spec else []), "--out", str(out), "--lang", "ru", "--figures", "none"]
+    assert CliRunner().invoke(main, args).exit_code == 0
+    text = LOCATOR.sub(" ", report_text((out / "report.html").read_text(encoding="utf-8")))
+    assert re.findall(r".{0,30}\d\.\d.{0,10}", text) == []
+    assert re.findall(r'.{0,30}["“”„].{0,30}', text) == []
+    assert "«" in text
+    # the machine-readable files keep the decimal point
+    assert re.search(r"\d\.\d", (out / "tables" / "intake_lift.csv").read_text())
+
+
+def test_no_russian_label_ends_in_a_dangling_preposition():
+    """A label followed by a citation reads "источник силы давления газов: <work>", not "сила давления газов по
+    <work>" (a work's name in the nominative after "по").  Before: three labels of names.NAMES ended in "по"."""
+    from valvetrain.report.i18n import TEXT
+    from valvetrain.report.names import NAMES
+
+    texts = [ru for _, ru in NAMES.values()] + [v for v in TEXT["ru"].values() if isinstance(v, str)]
+    assert [t for t in texts if re.search(r"\s(по|из|от|для|с)$", t.strip())] == []

@@ -2,7 +2,14 @@
 printed, to 4 significant figures) to its printed result, and the lines give the numbers of a hand calculation:
 
 - f_g = pi 36.8^2 / 4 = 1063.6 mm2;  f_max = pi 10 (36.8 cos 45 + 10 sin 45 cos^2 45) = 928.56 mm2;
-- V' = 18 x 5026.5 / 1063.6 = 85.07 m/s;  V'' = 18 x 5026.5 / 928.56 = 97.44 m/s (the example's c_p = 18 m/s).
+- V' = 18 x 5026.5 / 1063.6 = 85.07 m/s;  V'' = 18 x 5026.5 / 928.56 = 97.44 m/s (the example's c_p = 18 m/s);
+- Kurz coefficients of the appendix (h = 6.25 mm, w' = 0.02 mm/deg = 1.1459 mm/rad, Phi = 27/6/38 deg, Z = 5/8),
+  by hand: k1 = 8 x 0.625 x (6/180)^2 = 0.0055556 rad2;  c11 = 5.0404 mm/rad (the docstring example of
+  kurz_coefficients, the manual's appendix);
+- pushrod 8/5 mm, 220 mm, E = 210000 MPa: J = pi (8^4 - 5^4)/64 = 170.41 mm4, P_E = pi^2 210000 170.41 / 220^2
+  = 7297 N;
+- crank R = 38.571 mm, n = 7000 rpm: omega = 733.04 rad/s, m_j = 0.38 + 0.1375 = 0.5175 kg, m_r = 0.45 + 0.3625
+  = 0.8125 kg, K_R = -0.8125 x 0.038571 x 733.04^2 = -16840 N.
 """
 
 import math
@@ -11,9 +18,17 @@ import re
 import pytest
 
 from valvetrain.design import run
-from valvetrain.report.worked import flow_lines, spring_lines
+from valvetrain.report.html import _material
+from valvetrain.report.worked import crank_lines, flow_lines, law_lines, spring_lines, strength_lines, time_area_lines
+from valvetrain.tables import lift_table_columns
+from valvetrain.units import UNITS
 
 from appendix import appendix_spec
+
+UNIT_SYMBOLS = sorted({row[i] for row in UNITS.values() for i in (2, 3) if row[i]}, key=len, reverse=True)
+"""Every unit symbol the report prints, longest first (``mm²·s`` before ``mm²`` before ``mm``)."""
+
+POWERS = str.maketrans("⁻⁰¹²³⁴⁵⁶⁷⁸⁹", "-0123456789")
 
 
 def evaluate(line, lang="en"):
@@ -21,31 +36,64 @@ def evaluate(line, lang="en"):
     text = line["substituted"]
     if lang == "ru":
         text = text.replace(",", ".")
-    text = text.replace("π", "pi").replace("×", "*").replace("cos² ", "cos2 ").replace("²", "**2").replace("³", "**3")
+    text = re.sub(r"·10([⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+)", lambda m: "e" + m[1].translate(POWERS), text)
+    units = "|".join(re.escape(u) for u in UNIT_SYMBOLS)
+    text = re.sub(rf"(?<=[\d.])\s(?:{units})(?=[\s)]|$)", "", text)
+    text = text.replace("π", "pi").replace("×", "*").replace("−", "-").replace("cos² ", "cos2 ").replace("√", "sqrt")
+    text = text.replace("²", "**2").replace("³", "**3").replace("⁴", "**4")
     text = re.sub(r"(\d)°", r"\1", text)
-    text = re.sub(r"\s(mm\*\*2|mm|m/s|N/mm|N|MPa|мм\*\*2|мм|м/с|Н/мм|Н|МПа)(?=[\s)*+/]|$)", " ", text)
     text = re.sub(r"(sin|cos2|cos) ([\d.]+)", r"\1(\2)", text)
-    return eval(text, {"pi": math.pi, "sin": lambda x: math.sin(math.radians(x)),
+    return eval(text, {"pi": math.pi, "sqrt": math.sqrt, "sin": lambda x: math.sin(math.radians(x)),
                        "cos": lambda x: math.cos(math.radians(x)), "cos2": lambda x: math.cos(math.radians(x)) ** 2})
 
 
-def _lines(lang):
-    results = run(appendix_spec())
-    valve = results.spec.model_dump()["valves"]["intake"]
+@pytest.fixture(scope="module")
+def results():
+    return run(appendix_spec())
+
+
+def _lines(results, lang):
+    spec = results.spec.model_dump()
+    valve = spec["valves"]["intake"]
     v = results.valves["intake"]
-    return flow_lines(valve, v.flow, results.engine, lang) + spring_lines(v.drive.spring.design, lang)
+    table = lift_table_columns(v.table)
+    spring = v.drive.spring.design
+    return (flow_lines(valve, v.flow, results.engine, lang)
+            + time_area_lines(v.flow, v.cam, results.engine, valve["count"], table, lang) + law_lines(v.law, v.cam, lang)
+            + spring_lines(spring, _material(results.spec.valves["intake"], spring), v.cam.cam_speed, lang)
+            + strength_lines(valve["parts"], v.summary["strength"], table, "flat", lang)
+            + crank_lines(results.crank.figures, lang))
+
+
+def _value(text):
+    mantissa, _, power = text.split()[0].replace(",", ".").partition("·10")
+    return float(mantissa) * 10.0 ** int(power.translate(POWERS) or 0)
 
 
 @pytest.mark.parametrize("lang", ["en", "ru"])
-def test_every_line_evaluates_to_its_result(lang):
-    for line in _lines(lang):
-        result = float(line["result"].split()[0].replace(",", "."))
-        assert evaluate(line, lang) == pytest.approx(result, rel=3e-3), line     # 4 figures in, 4 figures out
+def test_every_line_evaluates_to_its_result(results, lang):
+    lines = _lines(results, lang)
+    assert len(lines) >= 30
+    for line in lines:
+        assert evaluate(line, lang) == pytest.approx(_value(line["result"]), rel=3e-3), line  # 4 figures in and out
 
 
-def test_the_flow_lines_give_the_hand_calculation():
-    by_symbol = {line["symbol"]: line for line in _lines("en")}
+def test_a_wrong_line_does_not_evaluate_to_its_result(results):
+    """The evaluation reads the printed numbers: a line whose substitution is off by 1 % fails."""
+    line = dict(_lines(results, "en")[0])
+    line["substituted"] = line["substituted"].replace("36.8", "37.0")
+    assert evaluate(line) != pytest.approx(_value(line["result"]), rel=3e-3)
+
+
+def test_the_lines_give_the_hand_calculation(results):
+    by_symbol = {}
+    for line in _lines(results, "en"):
+        by_symbol.setdefault(line["symbol"], line)
     assert by_symbol["f_g"]["result"] == "1064 mm²" and math.pi * 36.8**2 / 4 == pytest.approx(1063.6, abs=0.05)
     assert by_symbol["f_max"]["result"] == "928.6 mm²"
     assert by_symbol["V′"]["result"] == "85.07 m/s" and by_symbol["V″"]["result"] == "97.44 m/s"
     assert by_symbol["f_max"]["substituted"] == "π × 10 mm × (36.8 mm × cos 45° + 10 mm × sin 45° × cos² 45°)"
+    assert by_symbol["k_1"]["result"] == "0.005556 rad²" and by_symbol["c_11"]["result"] == "5.04 mm/rad"
+    assert by_symbol["J"]["result"] == "170.4 mm⁴" and _value(by_symbol["P_E"]["result"]) == pytest.approx(7297, abs=1)
+    assert by_symbol["ω"]["result"] == "733 rad/s" and by_symbol["m_j"]["result"] == "0.5175 kg"
+    assert by_symbol["m_r"]["result"] == "0.8125 kg" and by_symbol["K_R"]["result"] == "-16840 N"

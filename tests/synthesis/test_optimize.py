@@ -1,6 +1,6 @@
 """valvetrain optimize: cam synthesis by optimisation under the design's limits.
 
-The power-polynomial cam of the 26/27 diesel example (UkrSURT Proceedings (2019)) and the Kurz cam of the built-in
+The power-polynomial cam of the 26/27 diesel example (UkrSURT Proceedings (2019)) and the Kurz cam of the appendix
 example (Valve-train practical works (n.d.), appendix), short searches; the full ones are the command's defaults
 (figures in the README and benchmarks/bench_optimize.py)."""
 # UkrSURT Proceedings (2019) (the article's case) and Valve-train practical works (n.d.) (the appendix engine)
@@ -15,11 +15,12 @@ import pytest
 
 from valvetrain.cli import main
 from valvetrain.design import run
-from valvetrain.specification import example_spec, example_text
 from valvetrain.specification.reading import load_spec, parse_spec
 from valvetrain.synthesis.constraints import Limits, contact_stress_value
 from valvetrain.synthesis.optimize import (Problem, Variable, default_variables, design_limits, optimize_valve,
                                            parse_variables)
+
+from appendix import appendix_text, appendix_spec
 from test_synthesis_constraints import pitch_radius_by_differences
 
 MM, DEG = 1e-3, np.pi / 180.0
@@ -50,7 +51,7 @@ def test_fast_margins_agree_with_the_design():
 
 
 def test_the_objective_is_the_design_time_area():
-    spec = example_spec()
+    spec = appendix_spec()
     design = run(spec).valves["intake"]
     variables = default_variables(spec.valves["intake"], spec.engine)
     problem = Problem(spec, design, variables, design_limits(design)[0], objective="time_area")
@@ -63,7 +64,7 @@ def test_the_objective_is_the_design_time_area():
 
 
 def test_default_variables_per_law():
-    kurz = example_spec()
+    kurz = appendix_spec()
     paths = [v.path for v in default_variables(kurz.valves["intake"], kurz.engine)]
     assert paths == ["cam.phi1_deg", "cam.phi2_deg", "cam.shape_factor", "cam.ramp_end_velocity_mm_per_deg",
                      "drive.spring_reserve"]
@@ -83,16 +84,16 @@ def test_parse_variables_refuses_bad_bounds():
 
 
 def test_a_variable_must_be_a_numeric_key():
-    spec = example_spec()
+    spec = appendix_spec()
     design = run(spec).valves["intake"]
     with pytest.raises(ValueError, match="cam.follower is not a numeric key"):
         Problem(spec, design, [Variable("cam.follower", 0, 1)], design_limits(design)[0])
 
 
 def test_relaxed_limits_state_the_start():
-    """The built-in example's min tappet acceleration -1930 m/s2 is outside the band >= -1500 m/s2 of its own check:
+    """The appendix example's min tappet acceleration -1930 m/s2 is outside the band >= -1500 m/s2 of its own check:
     the limit becomes the start's value, and the note says so."""
-    design = run(example_spec()).valves["intake"]
+    design = run(appendix_spec()).valves["intake"]
     limits, notes = design_limits(design)
     assert limits.min_acceleration == pytest.approx(design.cam.min_acceleration * (1 + 1e-6), rel=1e-12)  # RELAXED
     # the start's 3488 m/s2 is inside its band <= 3500 m/s2 (Valve-train practical works (n.d.), work 2): kept
@@ -123,14 +124,14 @@ def test_a_short_search_on_the_article_case_is_feasible_and_fuller():
 
 
 def test_the_kurz_cam_with_the_dynamics():
-    """The built-in Kurz cam, time-area under its limits and no jump up to 1.1 x rated speed: the start separates below
+    """The appendix example's Kurz cam, time-area under its limits and no jump up to 1.1 x rated speed: the start separates below
     the rated speed with the estimated train (its check fails); a short search in a small box around the optimum of
     the full search (README: 3.2772 -> 3.2970 mm2 s) meets every limit of its full design, the spring design and the
     dynamics sweep included, and raises the time-area."""
     box = [Variable("cam.phi1_deg", 25.2, 25.5), Variable("cam.phi2_deg", 21.8, 22.6),
            Variable("cam.shape_factor", 0.85, 0.87), Variable("cam.ramp_end_velocity_mm_per_deg", 0.0219, 0.022),
            Variable("drive.spring_reserve", 2.24, 2.25)]
-    result = optimize_valve(example_spec(), variables=box, objective="time_area", no_jump_factor=1.1, maxiter=3,
+    result = optimize_valve(appendix_spec(), variables=box, objective="time_area", no_jump_factor=1.1, maxiter=3,
                             popsize=4)
     jump = "follower separation (jump) speed / rated speed"
     assert not {c.quantity: c for c in result.checks_start}[jump].passed
@@ -170,11 +171,11 @@ def test_cli_refuses_a_law_without_variables(tmp_path):
 
 
 def test_no_point_within_the_limits_exits_1_and_writes_nothing(tmp_path):
-    """The built-in example, time-area, 5 generations: the start separates from the cam below the over-speed (its own
+    """The appendix example, time-area, 5 generations: the start separates from the cam below the over-speed (its own
     check fails) and no point of so short a search meets every limit.  Before, a worse and infeasible "optimum" was
     written with exit status 0."""
     out, path = tmp_path / "o", tmp_path / "example.toml"
-    path.write_text(example_text(), encoding="utf-8")
+    path.write_text(appendix_text(), encoding="utf-8")
     r = CliRunner().invoke(main, ["optimize", str(path), "--objective", "time_area", "--maxiter", "5", "--out",
                                   str(out)])
     assert r.exit_code == 1, r.output
@@ -186,7 +187,7 @@ def test_the_optimum_is_never_worse_than_a_feasible_start():
     """A box of the shape factor Z away from the start's (0.625: Valve-train practical works (n.d.), appendix), where
     every point is less full: the start, which meets every limit, is the optimum.  Reference: the start's fullness from
     its own design run.  Before, the best point of the box was returned, worse than the start."""
-    spec = example_spec()
+    spec = appendix_spec()
     start = run(spec).valves["intake"]
     result = optimize_valve(spec, variables=[Variable("cam.shape_factor", 0.05, 0.1)], no_jump_factor=None, maxiter=2,
                             popsize=4)
@@ -197,11 +198,11 @@ def test_the_optimum_is_never_worse_than_a_feasible_start():
 
 
 def test_no_jump_defaults_to_the_over_speed_ratio(tmp_path):
-    """--no-jump takes [engine] over_speed_ratio when not given (the brief's shared key).  The built-in example's
+    """--no-jump takes [engine] over_speed_ratio when not given (the brief's shared key).  The appendix example's
     train separates at 0.955 x the rated speed; in a hair-wide box around its shape factor every point does, so the
     search fails on that limit, stated against the key's 1.05."""
     path = tmp_path / "example.toml"
-    path.write_text(example_text().replace("rated_speed_rpm", "over_speed_ratio = 1.05\nrated_speed_rpm", 1),
+    path.write_text(appendix_text().replace("rated_speed_rpm", "over_speed_ratio = 1.05\nrated_speed_rpm", 1),
                     encoding="utf-8")
     r = CliRunner().invoke(main, ["optimize", str(path), "--out", str(tmp_path / "o"), "--maxiter", "1",
                                   "--vary", "cam.shape_factor=0.6249,0.6251"])
@@ -213,7 +214,7 @@ def test_no_jump_defaults_to_the_over_speed_ratio(tmp_path):
 def test_a_seating_velocity_limit():
     """--seating-velocity: the kinematic seating velocity i_k omega |dh/dphi| at the valve's closing, which the law
     stage reports (design.cam.seating_velocity), against the limit."""
-    spec = example_spec()
+    spec = appendix_spec()
     design = run(spec).valves["intake"]
     limits, _ = design_limits(design, seating_velocity=0.3)
     assert limits.seating_velocity == (0.0, 0.3)

@@ -101,9 +101,8 @@ def test_page_callbacks():
     assert np.max(np.abs(v[off] - slope[off])) < 0.01 * np.max(np.abs(slope))
     d.on_report()
     assert d.report_text.text.startswith("<!DOCTYPE html>") and 'lang="ru"' in d.report_text.text
-    # the figures of `valvetrain run --figures main` (README: the kinematics among them) embedded, drawn in memory
-    assert re.search(r'<img src="data:image/png;base64,[^"]+" alt="подъём, скорость, ускорение и рывок">',
-                     d.report_text.text)
+    # the figures of `valvetrain run --figures main` (README: the cam contour among them) embedded, drawn in memory
+    assert re.search(r'<img src="data:image/png;base64,[^"]+" alt="профиль кулачка">', d.report_text.text)
     d.on_toml()
     assert tomllib.loads(d.toml_text.text)["valves"]["intake"]["max_lift_mm"] == 10.5
 
@@ -152,7 +151,7 @@ def test_power_polynomial_handles_follow_its_keys():
 
 
 def test_combined_cam_segment_ends_set_lengths_and_ratios():
-    s = Session.start()
+    s = Session.start(appendix_text())
     doc = s.document
     doc["valves"]["intake"]["cam"] = {"law": "combined", "base_radius_mm": 20.0, "ramp_end_velocity_mm_per_deg": 0.02,
                                       "segments": [{"shape": "half_sine", "length_deg": 25.0},

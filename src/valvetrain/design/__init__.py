@@ -28,6 +28,7 @@ from ..specification.messages import Problem
 from ..specification.models import Dynamics
 from ..units import MM, to_display
 from .camcard import CamCard, CamCardValve, cam_card_stage
+from .camshaft import CamshaftRecord, CamshaftResults, camshaft_stage
 from .crank import LAMBDA_RANGE, CrankResults, CrankSummary, crank_stage, valve_timing
 from .drive import MassResult, SpringResult, StrengthResult
 from .dynamics import DynamicsResult
@@ -72,6 +73,7 @@ class DesignResults:
     crank: Optional[CrankResults] = None
     two_stroke: Optional[TwoStrokeResults] = None
     cam_card: Optional[CamCard] = None         # a four-stroke's (valvetrain.camcard)
+    camshaft: Optional[CamshaftResults] = None  # with a [camshaft] section
 
     @property
     def warnings(self):
@@ -147,6 +149,8 @@ class DesignResults:
             out["two_stroke"] = self.two_stroke.summary
         if self.cam_card is not None:
             out["cam_card"] = record(self.cam_card)
+        if self.camshaft is not None:
+            out["camshaft"] = self.camshaft.summary
         out["warnings"] = [w.warning() for w in self.warnings]
         out["accepted"] = [w.warning() for w in self.accepted]
         out["checks"] = [c.as_dict() for c in self.checks]
@@ -182,10 +186,10 @@ def run(spec, laws=None, progress=None) -> DesignResults:
                          f"dict of its tables is needed, not a {type(spec).__name__}"])
     spec = validate(spec if isinstance(spec, dict) else spec_document(spec))
     engine, gas, output = si(spec.engine), si(spec.gas), si(spec.output)
-    valves, problems, waiting = {}, [], {}
+    valves, problems, waiting, views = {}, [], {}, {}
     for name, v in spec.valves.items():
         try:
-            valve = _valve_view(name, v, spec)
+            valve = views[name] = _valve_view(name, v, spec)
         except SpecError as err:
             problems += err.problems
             continue
@@ -215,12 +219,13 @@ def run(spec, laws=None, progress=None) -> DesignResults:
         found.append(check("engine.throat_area_share", share / float(flow.circle_area(engine.bore)),
                            *THROAT_AREA_SHARE_RANGE, source="Valve-train practical works (n.d.), work 1"))
     ports = two_stroke_stage(si(spec.two_stroke), crank_view, engine) if spec.two_stroke is not None else None
-    for stage, tag in ((crank, "crank"), (ports, "two-stroke")):
+    shaft = camshaft_stage(si(spec.camshaft), engine, views, valves) if spec.camshaft is not None else None
+    for stage, tag in ((crank, "crank"), (ports, "two-stroke"), (shaft, "camshaft")):
         if stage is not None:
             found += [c.named(tag) for c in stage.checks]
     found, valves = accept(found, spec.accepted, valves)
     card = cam_card_stage(valves) if valves and engine.strokes == 4 else None
-    return DesignResults(spec, engine_record(engine), valves, tuple(found), crank, ports, card)
+    return DesignResults(spec, engine_record(engine), valves, tuple(found), crank, ports, card, shaft)
 
 
 def accept(found: list[Check], acceptances: list, valves: dict[str, ValveDesign]
@@ -407,6 +412,7 @@ def results_schema() -> dict[str, Any]:
             "valvetrain_version": {"type": "string"}, "engine": json_schema(EngineRecord),
             "valves": {"type": "object", "additionalProperties": valve},
             "crank": json_schema(CrankSummary), "two_stroke": json_schema(TwoStrokeSummary),
+            "camshaft": json_schema(CamshaftRecord),
             "cam_card": json_schema(CamCard) | {"properties": json_schema(CamCard)["properties"] | {
                 "valves": {"type": "object", "additionalProperties": json_schema(CamCardValve)}}},
             "warnings": {"type": "array", "items": check_record,

@@ -209,7 +209,9 @@ def _gas_pressure(c, strokes, phi, bore, radius, lam, k, timing=None):
     return pressure.on_grid(angle, p, phi, strokes), f"p-V diagram {table.source}, placed on the crank angle by {how}"
 
 
-def _firing(eng):
+def firing_angles(eng) -> tuple[np.ndarray, str]:
+    """Firing angles of the cylinders after cylinder 1 [rad] (SI view of [engine]) and how they were found: given,
+    from the crank throws and cylinder axes, or even firing in the firing order."""
     order = eng.firing_order or tuple(range(1, eng.cylinders + 1))
     if eng.firing_angles is not None:
         return np.asarray(eng.firing_angles), "given firing angles"
@@ -244,7 +246,7 @@ def crank_stage(c, eng, timing=None) -> CrankResults:
                "v": kinematics.velocity(phi, radius, lam, omega, k, exact),
                "j": kinematics.acceleration(phi, radius, lam, omega, k, exact), "beta": beta, "p_abs": p_abs, **forces}
 
-    firing, firing_how = _firing(eng)
+    firing, firing_how = firing_angles(eng)
     each, total = torque.engine_torque(phi, (phi, forces["torque"]), firing, strokes)
     even = torque.is_even(firing, strokes)
     period = torque.firing_interval(strokes, eng.cylinders) if even else np.pi * strokes

@@ -170,6 +170,17 @@ class StrengthPerSpeed:
 
 
 @dataclass(frozen=True)
+class FingerLoads:
+    """The largest loads of a finger follower over the speed range (:meth:`valvetrain.followers.PivotedFollower.loads`;
+    Norton (2009))."""
+
+    roller_load_max: float = quantity("finger_roller_load_max_N", "N", "largest load on the roller and its bearing")
+    pivot_load_max: float = quantity("finger_pivot_load_max_N", "N", "largest load on the pivot (the lash adjuster)")
+    bending_moment_max: float = quantity("finger_bending_moment_max_Nm", "N m",
+                                         "largest bending moment of the finger at the roller's section")
+
+
+@dataclass(frozen=True)
 class StrengthResult:
     """The cam load over the speed range and the strength checks of the drive parts at their worst (Valve-train
     practical works (n.d.), work 7)."""
@@ -197,6 +208,7 @@ class StrengthResult:
     checks: tuple[Check, ...] = ()     # the strength checks (quantity with underscores)
     not_checked: tuple[str, ...] = ()  # the checks whose parts are not given, each with the keys missing
     rated_speed: float = 0.0       # the engine's rated speed [rad/s] (for the plot)
+    finger: Optional[FingerLoads] = quantity("finger", flatten=True, default=None)
 
 
 @dataclass(frozen=True)
@@ -475,6 +487,18 @@ def event_load_maps(valve, engine, cam, drive, dynamics=None) -> tuple[np.ndarra
     return theta, maps, span
 
 
+def contact_loads(cam, maps) -> list[LoadMap]:
+    """The load maps as the force between cam and follower: each map's force (along the law's lift) times the
+    follower's :meth:`~valvetrain.followers.Follower.force_ratio` at its angles (1 for a translating follower; a
+    finger's cam carries G / (L_r cos beta) of the force at the valve, Norton (2009))."""
+    follower = cam.follower_model
+    out = []
+    for m in maps:
+        h, dh = cam.law.derivatives(m.theta)[:2]
+        out.append(replace(m, force=m.force * follower.force_ratio(cam.heel_radius, h, dh)))
+    return out
+
+
 def _worst(maps, values):
     """The largest of ``values`` (one array (S, n) per load map) over every map: a :class:`Worst`."""
     best = None
@@ -525,7 +549,9 @@ def strength_stage(valve, gas, engine, cam, drive, dynamics=None) -> tuple[Stren
         found.append(gas_check)
         for m in maps:
             m.force[:, int(np.argmin(np.abs(m.theta - law.valve_opens)))] += cam.rocker_ratio * p_open
-    result, checks = _strength(valve, cam, theta, maps, p_open)
+    result, checks = _strength(valve, cam, theta, contact_loads(cam, maps), p_open, _worst(maps, [m.force for m in maps]))
+    if cam.follower_model.law_at_valve:
+        result = replace(result, finger=finger_loads(cam, maps))
     result = replace(result, speed_range=(float(low), float(high)), lowest_speed_source=source,
                      rated_speed=engine.rated_speed)
     return result, list(result.checks) + found + checks
@@ -537,8 +563,21 @@ def _where(w):
             f"({w.kind} force)")
 
 
-def _strength(valve, cam, theta, maps, p_open):
-    """Work 7 on the load maps: every check the layout and the given dimensions allow, at its worst point."""
+def finger_loads(cam, maps) -> FingerLoads:
+    """The :class:`FingerLoads` of a finger under the force at the valve of the load maps (before
+    :func:`contact_loads`), at their worst."""
+    follower, heel = cam.follower_model, cam.heel_radius
+    found = []
+    for m in maps:
+        h, dh = cam.law.derivatives(m.theta)[:2]
+        found.append(follower.loads(m.force, heel, h, dh))
+    return FingerLoads(*(max(float(np.max(f[k])) for f in found) for k in range(3)))
+
+
+def _strength(valve, cam, theta, maps, p_open, valve_load):
+    """Work 7 on the load maps (the force at the cam): every check the layout and the given dimensions allow, at its
+    worst point; ``valve_load`` is the largest force along the law's lift (:class:`Worst`), which i_k takes to the
+    valve."""
     i_k = cam.rocker_ratio
     parts, drive, follower = valve.parts, chain(valve), cam.follower_model
     notes, verdicts = [], []
@@ -597,7 +636,7 @@ def _strength(valve, cam, theta, maps, p_open):
     if drive.rocker:
         if need(["rocker_pad_width_mm", "rocker_pad_radius_mm"], "rocker_pad_stress"):
             verdicts.append(strength.verdict("rocker_pad_stress", strength.rocker_pad_stress(
-                p_max / i_k, e_contact, parts.rocker_pad_width, parts.rocker_pad_radius), at_load))
+                valve_load.value / i_k, e_contact, parts.rocker_pad_width, parts.rocker_pad_radius), at_load))
         if need(["rocker_shaft_span_mm", "rocker_shaft_diameter_mm", "rocker_width_mm"], "rocker_shaft"):
             st = strength.rocker_shaft_stresses(p_max, parts.rocker_shaft_span, parts.rocker_width,
                                                 parts.rocker_shaft_diameter, parts.rocker_shaft_bore)
@@ -607,13 +646,13 @@ def _strength(valve, cam, theta, maps, p_open):
             verdicts.append(strength.verdict("rocker_shaft_shear", st["shear"], at_load))
             verdicts.append(strength.verdict("rocker_shaft_bearing", st["bearing"], at_load))
     side, found = None, []
-    if follower.rolling:
+    if follower.rolling and not follower.law_at_valve:   # a finger has no guide: its pivot carries the side load
         side, side_check = _roller_side_force(cam, follower, maps, drive)
         found.append(side_check)
     else:
         found += _edge_loading(parts, drive, cam, follower, maps, width, notes)
     return StrengthResult(
-        (0.0, 0.0), "", load.value, load.angle, load.speed, p_max / i_k, p_open,
+        (0.0, 0.0), "", load.value, load.angle, load.speed, valve_load.value / i_k, p_open,
         None if stress is None else stress.angle, None if stress is None else stress.speed,
         None if side is None else side.value, None if side is None else side.angle,
         None if side is None else side.speed, _per_speed(maps, stresses),

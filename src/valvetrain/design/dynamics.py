@@ -23,6 +23,7 @@ from ..dynamics.models import (CoilSpring, MultiMassTrain, OneMassTrain, camshaf
 from ..dynamics.perturbation import perturbation_parameter
 from ..dynamics.resonance import resonance
 from ..dynamics.sweep import SpeedResult, SweepResult, sweep, sweep_size
+from ..followers import follower_of
 from ..layouts import chain, layout
 from ..specification import SpecError
 from ..specification.messages import Problem
@@ -322,11 +323,22 @@ def adjuster_reference_force(valve, law, drive, cam_speed: float, ratio: float) 
     return float(force.max()) / k * ratio
 
 
+def lever_ratio(valve, law) -> float:
+    """The valve's lever ratio on the heel circle: rocker_ratio x the follower's own there (a finger's G(psi_0) / L_r
+    from its geometry, whose law is the valve's and rocker_ratio 1)."""
+    return valve.rocker_ratio * follower_of(valve.cam).rest_ratio(valve.cam.base_radius - law.ramp_height)
+
+
+def adjuster_ratio(valve, law) -> float:
+    """The lash adjuster's motion ratio (:func:`valvetrain.lash_adjuster.motion_ratio`) with the :func:`lever_ratio`."""
+    return hla.motion_ratio(valve.lash_adjuster.location, lever_ratio(valve, law))
+
+
 def adjuster_link(valve, law, drive, cam_speed: float, at: str) -> tuple[float, str]:
     """The lash adjuster's oil column reduced to the valve [N/m] (in series with the cam contact) and the note that
     says so: its secant stiffness under :func:`adjuster_reference_force` over the square of the motion ratio."""
     la = valve.lash_adjuster
-    ratio = hla.motion_ratio(la.location, valve.rocker_ratio)
+    ratio = adjuster_ratio(valve, law)
     if ratio <= 0.0:
         raise SpecError([Problem(f"{at}.lash_adjuster.location", "needs rocker_ratio > 1 (an end-pivot finger); "
                                  f"rocker_ratio = {valve.rocker_ratio:g}", '"pivot"', " ")])
@@ -346,7 +358,7 @@ def build_train(dyn, valve, law, drive, at, cam_speed=None) -> tuple[Union[OneMa
     k = valve.rocker_ratio
     lash = k * law.ramp_height
     line = drive.lines["chosen"]
-    links, names, notes = drive_links(dyn, valve, k, at)
+    links, names, notes = drive_links(dyn, valve, lever_ratio(valve, law), at)
     if valve.lash_adjuster is not None:
         adjuster, note = adjuster_link(valve, law, drive, cam_speed, at)
         links = (float(series(links[0], adjuster)),) + links[1:]

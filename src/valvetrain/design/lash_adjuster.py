@@ -11,7 +11,7 @@ from .. import lash_adjuster as hla
 from ..bibliography import cite
 from ..checks import Check, check
 from .drive import event_load_maps
-from .dynamics import adjuster_reference_force
+from .dynamics import adjuster_ratio, adjuster_reference_force
 from .results import quantity
 
 SOURCES = cite("merritt1967")
@@ -97,7 +97,7 @@ def lash_adjuster_stage(la, valve, engine, cam, drive, dynamics=None,
     """
     at = f"valves.{name}"
     law, k = cam.law, valve.rocker_ratio
-    ratio = hla.motion_ratio(la.location, k)
+    ratio = adjuster_ratio(valve, law)
     area = hla.plunger_area(la.plunger_diameter)
     refill = hla.check_valve_flow(hla.refill_pressure(la.supply_pressure, la.plunger_spring_N, area),
                                   la.check_valve_diameter) / area

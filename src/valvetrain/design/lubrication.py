@@ -12,7 +12,7 @@ from ..checks import Check, check
 from ..specification.messages import Problem, SpecError
 from ..strength import hertz_half_width
 from ..units import to_display
-from .drive import event_load_maps
+from .drive import contact_loads, event_load_maps
 from .results import quantity
 
 STEEL_EFFUSIVITY = float(np.sqrt(46.6 * 7850.0 * 460.0))
@@ -120,6 +120,12 @@ def contact_map(lub, cam, width, modulus, theta, force, omega) -> dict[str, np.n
     dict of ndarray (S, n)
         ``film`` [m], ``lam``, ``friction_force`` [N], ``friction_torque`` [N m], ``flash`` [K], ``drive_torque``
         [N m] (NaN where there is no contact, except the torques, 0 there) and ``entraining`` [m/s].
+
+    Notes
+    -----
+    The frictionless drive torque is the power of the force along the law's lift over the camshaft speed, the normal
+    force over the follower's :meth:`~valvetrain.followers.Follower.force_ratio` times dh/dtheta (a finger's law is
+    the valve's: F_valve dv/dtheta).
     """
     follower, heel = cam.follower_model, cam.heel_radius
     h, dh, d2h = cam.law.derivatives(theta)[:3]
@@ -147,7 +153,8 @@ def contact_map(lub, cam, width, modulus, theta, force, omega) -> dict[str, np.n
     friction_force = np.where(loaded, load * (mu * (np.abs(sliding) > 0.0) + rolling_friction), np.nan)
     none = np.where(loaded, 1.0, np.nan)
     return {"film": film * none, "lam": lam * none, "friction_force": friction_force, "friction_torque": torque,
-            "flash": flash * none, "drive_torque": np.where(loaded, force, 0.0) * dh + torque,
+            "flash": flash * none,
+            "drive_torque": np.where(loaded, force, 0.0) * dh / follower.force_ratio(heel, h, dh) + torque,
             "entraining": entraining}
 
 
@@ -180,7 +187,7 @@ def lubrication_stage(lub, valve, engine, cam, drive, dynamics=None,
     if valve.parts.cam_width is None:
         raise SpecError([Problem(f"{at}.lubrication", f"needs {at}.parts.cam_width_mm (the load per unit width of the "
                                  "contact)", joiner=" ")])
-    maps = event_load_maps(valve, engine, cam, drive, dynamics)[1]
+    maps = contact_loads(cam, event_load_maps(valve, engine, cam, drive, dynamics)[1])
     to_cam = cam.cam_speed / engine.rated_speed
     rows, worst = [], None
     for m in maps:

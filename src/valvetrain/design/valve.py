@@ -207,7 +207,7 @@ class CamResult:
     valve_closes: float = quantity("valve_closes_crank_deg", "crank deg",
                                    "where the valve meets its seat, from the gas-exchange TDC")
     cam_speed: float = quantity("camshaft_speed_rad_s", "rad/s", "camshaft speed omega_cam at the rated speed")
-    follower: str = quantity("follower", label="follower: flat or roller")
+    follower: str = quantity("follower", label="follower: flat, roller or finger")
     base_radius: float = quantity("base_radius_mm", "mm", "r0, where the main lift starts")
     heel_radius: float = quantity("heel_radius_mm", "mm", "heel (base) circle of the cam, r0 - ramp height")
     roller_radius: float = 0.0
@@ -215,15 +215,12 @@ class CamResult:
     acceleration_steps: tuple[StepRecord, ...] = quantity(
         "acceleration_steps", label="steps of the tappet acceleration at the rated speed (the jerk is an impulse "
         "there): cam angle, before, after, step, on a ramp", default=())
+    follower_model: Any = field(default=None, repr=False)
+    """The cam's :class:`~valvetrain.followers.Follower` (:func:`~valvetrain.followers.follower_of` the cam section)."""
 
     def valve_lift(self, theta):
         """Valve lift [m] at camshaft angles theta."""
         return self.law.valve_lift(theta, self.rocker_ratio, self.follower_model)
-
-    @property
-    def follower_model(self):
-        """The cam's :class:`~valvetrain.followers.Follower` (from ``follower`` and its dimensions)."""
-        return follower_of(self)
 
 
 @dataclass(frozen=True)
@@ -280,6 +277,39 @@ class RollerContact:
 
 
 @dataclass(frozen=True)
+class FingerKinematics:
+    """The linkage of a finger follower over the valve's lift (:mod:`valvetrain.followers.finger`; Norton (2009),
+    Wang (2007)).  The ratio is the valve lift per unit travel of the roller centre on its arc about the pivot."""
+
+    rest_ratio: float = quantity("ratio_at_rest", label="lever ratio on the heel circle")
+    min_ratio: float = quantity("ratio_min", label="smallest instantaneous lever ratio over the lift")
+    max_ratio: float = quantity("ratio_max", label="largest instantaneous lever ratio over the lift")
+    nose_ratio: float = quantity("ratio_at_full_lift", label="lever ratio at the full valve lift")
+    swing: float = quantity("swing_deg", "deg", "the finger's turn from the heel circle to the full lift")
+    roller_lift: float = quantity("roller_lift_mm", "mm",
+                                  "lift of the roller centre from the cam centre (the synthesised cam's lift)")
+    tip_contact: tuple[float, float] = quantity("tip_contact_mm", "mm",
+                                                "where the pad touches the valve tip across its axis: shut, full lift")
+    scrub: float = quantity("tip_scrub_mm", "mm", "travel of the contact point across the valve tip over the lift")
+    rest_pressure_angle: float = quantity("pressure_angle_at_rest_deg", "deg",
+                                          "pressure angle on the heel circle (the pivot's offset)")
+
+
+def finger_kinematics(follower, heel, lift, samples=2001) -> FingerKinematics:
+    """The :class:`FingerKinematics` of a finger (:class:`~valvetrain.followers.PivotedFollower`) on the heel circle
+    ``heel`` [m] up to the valve lift ``lift`` [m]: its ratio, contact and roller centre are functions of the finger's
+    angle alone, sampled at ``samples`` angles from psi_0 to the full lift's."""
+    psi0, top = follower.base_angle(heel), float(follower.angle_of(np.array(lift), heel))
+    psi = np.linspace(psi0, top, samples)
+    ratio, tip = follower.lever_ratio(psi), follower.tip_contact(psi, heel)
+    zero = np.zeros(1)
+    return FingerKinematics(follower.rest_ratio(heel), float(ratio.min()), float(ratio.max()), float(ratio[-1]),
+                            abs(top - psi0), float(np.hypot(*follower.centre(psi)).max() - heel - follower.radius),
+                            (float(tip[0]), float(tip[-1])), float(tip.max() - tip.min()),
+                            float(follower.pressure_angle(heel, zero, zero)[0]))
+
+
+@dataclass(frozen=True)
 class ProfileResult:
     """The profile stage: lift table, contour, curvature and contact of the cam (Shang Hanji (1988), section 2.1)."""
 
@@ -293,6 +323,8 @@ class ProfileResult:
     straight_flanks: bool = quantity("straight_flanks", label="the profile has straight flanks")
     contact: Union[FlatContact, RollerContact] = quantity("contact", flatten=True)
     undercut: bool = quantity("undercut", label="the profile is undercut (cannot be made)")
+    finger: Optional[FingerKinematics] = quantity("finger", label="the finger follower's linkage over the lift",
+                                                  omit_none=True, default=None)
 
 
 @dataclass(frozen=True)
@@ -383,7 +415,7 @@ def law_stage(valve, engine, law=None) -> CamResult:
                      float(seat[0]), float(seat[1]), event, nose, nose + 2.0 * law.valve_opens,
                      nose + 2.0 * law.valve_closes, omega, cam.follower, cam.base_radius,
                      cam.base_radius - law.ramp_height, cam.roller_radius or 0.0, valve.rocker_ratio,
-                     step_records(law, omega))
+                     step_records(law, omega), follower_of(cam))
 
 
 def flow_stage(cam, valve, engine) -> FlowResult:
@@ -477,8 +509,9 @@ def profile_stage(cam, valve, output) -> ProfileResult:
         contact = RollerContact(follower.radius, beta_max, concave if concave + follower.radius < 0.0 else None)
     else:
         contact = FlatContact(cam.max_velocity / omega)
+    finger = finger_kinematics(follower, heel, law.lift_max + law.ramp_height) if follower.law_at_valve else None
     return ProfileResult(table, contour, ctheta, rho_min, None if straight else rho_max, x_min,
-                         None if straight else x_max, straight, contact, follower.undercut(rho_min))
+                         None if straight else x_max, straight, contact, follower.undercut(rho_min), finger)
 
 
 def clearance_stage(cam, valve, engine) -> Optional[ClearanceResult]:
@@ -528,6 +561,18 @@ def overlap_clearance_checks(valves) -> list[Check]:
     return out
 
 
+def follower_accelerations(cam, samples=4001) -> tuple[float, float]:
+    """The smallest and largest acceleration of the follower on the cam at the rated speed [m/s^2]: the law's
+    extremes (:class:`CamResult`), or for a law at the valve (a finger) the roller centre's on its arc,
+    omega^2 :meth:`~valvetrain.followers.PivotedFollower.travel_acceleration`, over ``samples`` angles of the event."""
+    follower, law = cam.follower_model, cam.law
+    if not follower.law_at_valve:
+        return cam.min_acceleration, cam.max_acceleration
+    theta = np.unique(np.concatenate([np.linspace(law.start, law.end, samples), law.breakpoints]))
+    acc = cam.cam_speed ** 2 * follower.travel_acceleration(cam.heel_radius, *law.derivatives(theta)[:3])
+    return float(acc.min()), float(acc.max())
+
+
 def valve_checks(cam, flow_result, profile, valve, engine, timing) -> list[Check]:
     """The recommended-range checks of the law, the flow, the timing and the profile (every check, passed or not).
 
@@ -541,9 +586,10 @@ def valve_checks(cam, flow_result, profile, valve, engine, timing) -> list[Check
                            max_lift=flow_result.valve_lift, v1=flow_result.v1, v2=flow_result.v2, v3=flow_result.v3,
                            charge_velocity=flow_result.charge_velocity, engine_type=engine.type,
                            chamber=engine.chamber, count=valve.count)
-    drive = layout(valve)
-    out.append(layout_check("tappet_acceleration.max", cam.max_acceleration, drive, unit="m/s2"))
-    out.append(layout_check("tappet_acceleration.min", cam.min_acceleration, drive, unit="m/s2"))
+    drive, follower = layout(valve), cam.follower_model
+    low, high = follower_accelerations(cam)
+    out.append(layout_check("tappet_acceleration.max", high, drive, unit="m/s2"))
+    out.append(layout_check("tappet_acceleration.min", low, drive, unit="m/s2"))
     if valve.kind in TIMING_RANGES:
         for label, angle, (lo, hi) in zip(("timing.opening_advance", "timing.closing_lag"), timing, TIMING_RANGES[valve.kind],
                                           strict=True):
@@ -558,12 +604,11 @@ def valve_checks(cam, flow_result, profile, valve, engine, timing) -> list[Check
     if valve.lash_adjuster is None:  # a hydraulic lash adjuster leaves no clearance (validated: clearance_mm = 0)
         out.append(check("valve.clearance", valve.clearance, *CLEARANCE_RANGES[valve.kind],
                          source="Valve-train practical works (n.d.), work 2", unit="mm"))
-    ratio = layout_check("drive.rocker_ratio", i_k, drive)
+    ratio = layout_check("drive.rocker_ratio", i_k * follower.rest_ratio(cam.heel_radius), drive)
     if ratio is not None:
         out.append(ratio)
     out.append(check("cam.base_radius_to_lift", cam.base_radius / flow_result.valve_lift, *BASE_RADIUS_TO_LIFT_RANGE,
                      source="Valve-train practical works (n.d.), work 2 (1.5-2.0; supercharged 3.0-4.0)"))
-    follower = cam.follower_model
     if profile.undercut:
         out.append(check(follower.undercut_code, profile.rho_min, low=0.0, strict_low=True,
                          source=follower.undercut_source, unit="mm", severity="failure"))
@@ -756,6 +801,6 @@ def with_hydraulic(design, valve, engine, gas, cylinder=None) -> ValveDesign:
     return replace(design, checks=design.checks + tuple(c.of_valve(design.name) for c in found), hydraulic=hydraulic)
 
 
-__all__ = ["CamResult", "ClearanceResult", "FlowResult", "LiftTable", "ProfileResult", "StepRecord", "ValveDesign",
-           "clearance_check", "clearance_stage", "design_valve", "flow_stage", "law_stage", "layout_check", "mass_checks",
+__all__ = ["CamResult", "ClearanceResult", "FingerKinematics", "FlowResult", "LiftTable", "ProfileResult", "StepRecord", "ValveDesign",
+           "clearance_check", "clearance_stage", "design_valve", "finger_kinematics", "flow_stage", "follower_accelerations", "law_stage", "layout_check", "mass_checks",
            "overlap_clearance_checks", "profile_stage", "step_records", "valve_checks", "with_hydraulic", "wrap_crank"]

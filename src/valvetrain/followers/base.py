@@ -39,16 +39,17 @@ Write one module in this package with a subclass of :class:`Follower` decorated 
   :meth:`lubrication`           the film characteristic of the contact, or None where none is defined
   :meth:`surface_velocities`    the velocities of cam and follower surfaces relative to the contact [m/s]
   :meth:`ratio`                 the follower's own lever ratio as a function of the lift [-]
+  :meth:`rest_ratio`            its lever ratio on the heel circle [-] (a lash adjuster's motion ratio)
+  :meth:`force_ratio`           the cam's force per unit force along the law's lift [-]
   ============================  =======================================================================
 
-  A follower whose lever ratio varies with the lift (a finger follower: valve lift / cam lift depends on the
-  finger's angle) returns it from :meth:`ratio`; ``LiftLaw.valve_lift`` multiplies the valve's rocker ratio by it
-  (the law stage's ``CamResult.valve_lift``, hence the flow, the tables and the figures, and the synthesis'
-  objective).  The forces and masses reduced through the drive (drive, strength and dynamics stages, the
-  synthesis' spring reserve) still take the constant rocker ratio: a follower with a varying ratio must bring
-  them the ratio at each lift too.  Today's followers translate on their line of action: ratio 1, contact on the
-  line u.  A finger follower's contact point and pressure angle follow from its pivot and pad geometry; its
-  contour and curvature must still be those of the cam seen in the frame above.
+  A follower whose lever ratio varies with the lift may return it from :meth:`ratio`; ``LiftLaw.valve_lift``
+  multiplies the valve's rocker ratio by it.  The finger (:mod:`.finger`) takes the other way: its law is the
+  valve's (``law_at_valve``, rocker ratio 1), its geometry methods synthesise the cam through its linkage, and it
+  brings the stages its ratio where they reduce through the drive: :meth:`force_ratio` (the cam's normal force per
+  unit force at the valve, for the strength and lubrication loads) and :meth:`rest_ratio` (the lash adjuster's motion
+  ratio, the dynamics' camshaft link, the rocker-ratio band).  Today's other followers translate on their line of
+  action: ratio 1, contact on the line u.
 
 - in the dynamics network the follower contributes its contact (the stress under the simulated force,
   :meth:`contact_stress`, and the film, :meth:`lubrication`); its mass is today the tappet's of the layout's
@@ -105,6 +106,10 @@ class Follower:
     undercut_code, undercut_source : str
         The code (:mod:`valvetrain.locale`) and the source of the undercut check of the profile (a failure where
         :meth:`undercut`).
+    law_at_valve : bool
+        True where the law is the valve's lift and the cam is synthesised through the follower's linkage (a
+        finger: ``rocker_ratio`` 1, the drive layout ``rocker`` for its inertia); False where the law is the
+        follower's own lift.
     """
 
     name: ClassVar[str]
@@ -112,6 +117,7 @@ class Follower:
     radius: float = np.inf
     undercut_code: ClassVar[str]
     undercut_source: ClassVar[str]
+    law_at_valve: ClassVar[bool] = False
 
     @classmethod
     def from_cam(cls, cam):
@@ -223,6 +229,16 @@ class Follower:
         tangent [m/s], at camshaft speed ``omega`` [rad/s] and the profile radius ``rho`` [m] (:meth:`curvature`):
         their mean entrains the oil film, their difference slides (:mod:`valvetrain.tribology`)."""
         raise NotImplementedError
+
+    def rest_ratio(self, heel):
+        """The follower's own lever ratio with the follower on the heel circle of radius ``heel`` [m] [-]: 1 for a
+        follower translating on its line of action."""
+        return 1.0
+
+    def force_ratio(self, heel, h, dh):
+        """The force the cam carries per unit force along the law's lift [-] (1 for a translating follower, whose law
+        is its own lift; a finger's law is the valve's, and its cam carries G / (L_r cos beta) of the valve force)."""
+        return np.ones_like(np.asarray(h, dtype=float))
 
     def ratio(self, h):
         """The follower's own lever ratio (valve-side motion / cam lift) at the lifts ``h`` [m]: 1 for a

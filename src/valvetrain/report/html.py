@@ -17,21 +17,24 @@ from ..design.dynamics import SOURCES as DYNAMICS_SOURCES
 from ..design.grinding import SOURCES as GRINDING_SOURCES
 from ..design.hydraulic_actuation import SOURCES as HYDRAULIC_SOURCES
 from ..design.lash_adjuster import SOURCES as ADJUSTER_SOURCES
+from ..design.camshaft import WORKS as CAMSHAFT_SOURCES
 from ..design.lubrication import SOURCES as LUBRICATION_SOURCES
 from ..design.results import NamedValues, record, shown, shown_value
+from ..design.drive import spring_options
+from ..specification.si import si
 from ..tables import lift_table_columns
-from ..bibliography import WORKS, cited_in
+from ..bibliography import WORKS, cited_in, corrections_notes
 from ..units import to_display
 from .i18n import SYMBOLS, TEXT, verdict
 from .numbers import number, percent
-from .russian import russian_citations
-from .worked import flow_lines, spring_lines
+from .russian import russian_citations, russian_typography
+from .worked import crank_lines, flow_lines, law_lines, spring_lines, strength_lines, time_area_lines
 from .names import has_name, label, link_names, quantity_text, translate, unevaluated_text, unit_text, value_text
 from ..locale.wording import diagnosis_text, fit_reason
 
 TABLE_COLUMNS = ["cam_deg", "crank_deg", "segment", "tappet_lift_mm", "tappet_velocity_m_s",
                  "tappet_acceleration_m_s2", "valve_lift_mm", "curtain_area_mm2", "time_area_mm2_s", "rho_mm"]
-REPORT_STEP_DEG = 5.0
+REPORT_STEP_DEG = 10.0
 """Step of the abridged lift table in the report [cam deg]."""
 
 CAM_FIELDS = ("main_half_angle", "ramp_angle", "ramp_height", "tappet_lift", "event", "nose", "cam_speed",
@@ -184,12 +187,18 @@ def _abridged_table(valve, lang):
     return [[fmt(cols[c][i], lang) for c in TABLE_COLUMNS] for i in np.flatnonzero(keep)]
 
 
+def _material(valve, spring):
+    """The grade of a designed spring with the specification's overrides (G, rho, tau_-1, psi_tau) for its worked
+    lines."""
+    return next(m for m in spring_options(si(valve).spring).materials if m.grade == spring.material)
+
+
 def _geometry(v):
     """The rows of the report's geometry table: the follower and the radii of the cam, the curvature, the contact
-    (flat or roller) and the undercut, those that exist."""
+    (flat or roller), the undercut and a finger's linkage, those that exist."""
     rows = (shown(v.cam, "follower", "base_radius", "heel_radius")
             + shown(v.profile, "rho_min", "rho_min_angle", "rho_max", "rho_max_angle") + shown(v.profile.contact)
-            + shown(v.profile, "undercut"))
+            + shown(v.profile, "undercut") + (shown(v.profile.finger) if v.profile.finger is not None else []))
     return [(k, val) for k, val in rows if val is not None]
 
 
@@ -311,6 +320,30 @@ def _lubrication(v):
             "table": _table(lub.per_speed, LUBRICATION_COLUMNS)}
 
 
+CAMSHAFT_ROWS = ["lobes", "camshaft_per_crank_revolution", "peak_torque_Nm", "peak_torque_cam_deg",
+                 "lowest_torque_Nm", "mean_torque_Nm", "fluctuating_torque_Nm", "rms_fluctuating_torque_Nm", "power_W",
+                 "natural_frequencies_Hz", "frequency_ratio", "largest_twist_cam_deg", "largest_twist_crank_deg",
+                 "largest_deflection_mm", "drive_force_max_N", "drive_force_mean_N", "drive_allowable_force_N"]
+"""The rows of the report's table of the camshaft's figures (results.json keys)."""
+
+CAMSHAFT_STATIONS = ["station_positions_mm", "station_inertias_kg_mm2", "max_twist_cam_deg", "deflection_mm"]
+"""The columns of the report's table of the lobe stations."""
+
+
+def _camshaft(results, spec, plots):
+    """The camshaft chapter for the report: its inputs, figures, stations and significant orders."""
+    if results.camshaft is None:
+        return None
+    rec = record(results.camshaft.figures)
+    amplitudes = rec["order_amplitudes_Nm"]
+    return {"inputs": [(k, v) for k, v in _flatten(spec["camshaft"]) if k != "valves"], "valves": rec["valves"],
+            "rows": [(k, rec[k]) for k in CAMSHAFT_ROWS], "columns": CAMSHAFT_STATIONS,
+            "stations": list(zip(rec["cylinders"], *(rec[c] for c in CAMSHAFT_STATIONS), strict=True)),
+            "orders": [(k, amplitudes[k], n) for k, n in zip(rec["significant_orders"], rec["resonance_speeds_rpm"],
+                                                              strict=True)],
+            "plots": plots.get("camshaft", {})}
+
+
 ADJUSTER_COLUMNS = ["speed_rpm", "leak_down_um", "valve_lash_um", "refill_share", "pump_up_um", "held_open_um"]
 """The columns of the report's table of the lash adjuster against engine speed."""
 
@@ -423,11 +456,18 @@ def render_report(results, plots, lang="en", folder=None):
     valves = []
     for name, v in results.valves.items():
         spring = v.drive.spring
+        lift = lift_table_columns(v.table)
         valves.append({
             "name": name, "valve": v, "plots": plots.get(name, {}),
             "inputs": _flatten(spec["valves"][name]),
             "worked_flow": flow_lines(spec["valves"][name], v.flow, results.engine, lang),
-            "worked_spring": spring_lines(spring.design, lang),
+            "worked_time_area": time_area_lines(v.flow, v.cam, results.engine, spec["valves"][name]["count"], lift,
+                                                lang),
+            "worked_law": law_lines(v.law, v.cam, lang),
+            "worked_spring": spring_lines(spring.design, _material(results.spec.valves[name], spring.design),
+                                          shown_value(v.cam, "cam_speed"), lang),
+            "worked_strength": strength_lines(spec["valves"][name]["parts"], v.summary["strength"], lift,
+                                              shown_value(v.cam, "follower"), lang),
             "flow": shown(v.flow, *FLOW_FIELDS),
             "time_area": shown(v.flow, *TIME_AREA_FIELDS),
             "cam": shown(v.cam, *CAM_FIELDS),
@@ -460,6 +500,7 @@ def render_report(results, plots, lang="en", folder=None):
         figures = results.crank.figures
         crank = {"inputs": _flatten(spec["crank"]), "plots": plots.get("crank", {}),
                  "summary": [(k, v) for k, v in _flatten(record(figures)) if k != "pressure_source"],
+                 "worked": crank_lines(figures, lang),
                  "pressure_source": figures.pressure_source}
     ports = None
     if results.two_stroke is not None:
@@ -478,13 +519,32 @@ def render_report(results, plots, lang="en", folder=None):
         hydraulic_sources=HYDRAULIC_SOURCES, lubrication_sources=LUBRICATION_SOURCES,
         adjuster_sources=ADJUSTER_SOURCES,
         step=REPORT_STEP_DEG, output=_flatten(spec["output"]), crank=crank, ports=ports,
+        camshaft=_camshaft(results, spec, plots), camshaft_sources=CAMSHAFT_SOURCES,
     )
     template = env.get_template("report.html")
     # the bibliography lists the works the report actually cites: found by their short form in a first rendering
-    cited = cited_in(unescape(template.render(sources=[], **context)))
-    page = template.render(sources=[(WORKS[k].short, WORKS[k].reference()) for k in cited], **context)
+    first = unescape(template.render(sources=[], corrections=[], **context))
+    page = template.render(sources=[(WORKS[k].short, WORKS[k].reference()) for k in cited_in(first)],
+                           corrections=cited_corrections(first, lang), **context)
     page = with_contents(page, TEXT[lang]["toc"])
-    return russian_citations(page) if lang == "ru" else page
+    return russian_typography(russian_citations(page)) if lang == "ru" else page
+
+
+CORRECTIONS_CITED = re.compile(r"(?:corrections notes?|поправк[аи]) (\d+)(?:-(\d+))?")
+
+
+def cited_corrections(text, lang):
+    """The corrections notes ``text`` cites ("corrections note 20", "поправка 20", "corrections notes 42-45"), in
+    ``lang``: ``[(N, title, text)]`` by number."""
+    numbers = set()
+    for a, b in CORRECTIONS_CITED.findall(text):
+        numbers.update(range(int(a), int(b or a) + 1))
+    notes = corrections_notes(lang)
+    return [(n, *notes[n]) for n in sorted(numbers) if n in notes]
+
+
+TALL_FIGURES = ("_kinematics.png",)
+"""Figures of several stacked axes: printed taller than the others (the print style's ``img.tall``)."""
 
 
 def _figure(image, name, alt, t):
@@ -493,7 +553,8 @@ def _figure(image, name, alt, t):
     if not name:
         return Markup('<p class="src">{} <span class="name">valvetrain run --figures all</span></p>').format(
             t["figure_on_request"].format(alt))
-    return Markup('<img src="{}" alt="{}">').format(image(name), alt)
+    return Markup('<img src="{}" alt="{}"{}>').format(image(name), alt,
+                                                   Markup(' class="tall"') if name.endswith(TALL_FIGURES) else "")
 
 
 def _image(folder, name):

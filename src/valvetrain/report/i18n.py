@@ -55,6 +55,7 @@ TEXT = {
         "sources": "Sources",
         "corrections_note": "Misprints of these works and what valvetrain uses instead: the corrections notes shipped "
                             "with the package, cited as \"corrections note N\":",
+        "corrections_cited": "Corrections notes cited in this report", "corrections_file": "data/corrections.md",
         "cam_deg": "camshaft angle from the nose, deg",
         "crank_deg": "crank angle from gas-exchange TDC, deg",
         "lift": "lift, mm", "tappet_lift": "tappet lift", "valve_lift": "valve lift",
@@ -192,7 +193,7 @@ TEXT = {
         "s_time_area": "время-сечение за такт, мм²·с", "s_fullness": "коэффициент полноты", "s_spring": "пружина",
         "s_binding": "определяющая проверка пружины (запас)", "s_failures": "не выполнены пределы",
         "s_warnings": "предупреждения",
-        "spring_text": "{count} x проволока {wire_mm:.3g} мм, D {mean_diameter_mm:.3g} мм, {active_coils:g} витков, {material}",
+        "spring_text": "{count} × проволока {wire_mm:.3g} мм, D {mean_diameter_mm:.3g} мм, {active_coils:g} витков, {material}",
         "failures_list": "Не выполненные пределы",
         "title": "Расчёт газораспределительного механизма",
         "generated": "Выполнено программой valvetrain",
@@ -220,8 +221,9 @@ TEXT = {
         "plots": "Графики",
         "files": "Файлы",
         "sources": "Источники",
-        "corrections_note": "Опечатки этих работ и то, что valvetrain использует вместо них: заметки об исправлениях "
-                            "в составе пакета (на английском языке), ссылки вида «поправка N»:",
+        "corrections_note": "Опечатки этих работ и то, что valvetrain использует вместо них, — поправки в составе "
+                            "программы, ссылки вида «поправка N»:",
+        "corrections_cited": "Поправки, на которые ссылается отчёт", "corrections_file": "data/corrections.ru.md",
         "cam_deg": "угол поворота распредвала от вершины, °",
         "crank_deg": "угол поворота коленвала от ВМТ газообмена, °",
         "lift": "подъём, мм", "tappet_lift": "подъём толкателя", "valve_lift": "подъём клапана",
@@ -449,6 +451,13 @@ TEXT["en"].update({
     "p_gas": "gas Δp_g", "p_in": "inertia p_in", "p_total": "total p", "speed": "crank speed n, rpm",
     "cam_deg": "camshaft angle from the nose φ, cam deg", "crank_deg": "crank angle from the gas-exchange TDC, crank deg",
     "rho": "radius of curvature ρ, mm", "pressure_angle": "pressure angle, deg",
+    "lift_heads": {"cam_deg": "φ, cam deg", "crank_deg": "crank deg", "segment": "segment", "tappet_lift_mm": "h_T, mm",
+                   "tappet_velocity_m_s": "v_T, m/s", "tappet_acceleration_m_s2": "a_T, m/s²", "valve_lift_mm": "h_v, mm",
+                   "curtain_area_mm2": "f, mm²", "time_area_mm2_s": "∫f dt, mm²·s", "rho_mm": "ρ, mm"},
+    "ray_nose": "nose, {crank}° crank", "ray_opens": "opens, {crank}° crank", "ray_closes": "closes, {crank}° crank",
+    "ray_tdc": "gas-exchange TDC", "rotation": "rotation",
+    "undercut_limit": "undercut: ρ ≤ 0", "rho_min_limit": "recommended minimum ρ = {rho} mm",
+    "rho_min_point": "smallest ρ = {rho} mm at {angle}°",
     "curtain": "curtain area f, mm²", "running_ta": "running time-area ∫f dt, mm²·s",
 })
 
@@ -502,12 +511,19 @@ TEXT["ru"].update({
     "cam_deg": "угол поворота распределительного вала от вершины φ, град ПРВ",
     "crank_deg": "угол поворота коленчатого вала от ВМТ газообмена, град ПКВ",
     "rho": "радиус кривизны ρ, мм", "pressure_angle": "угол давления, град",
+    "lift_heads": {"cam_deg": "φ, град ПРВ", "crank_deg": "град ПКВ", "segment": "участок", "tappet_lift_mm": "h_T, мм",
+                   "tappet_velocity_m_s": "v_T, м/с", "tappet_acceleration_m_s2": "a_T, м/с²", "valve_lift_mm": "h_v, мм",
+                   "curtain_area_mm2": "f, мм²", "time_area_mm2_s": "∫f dt, мм²·с", "rho_mm": "ρ, мм"},
+    "ray_nose": "вершина, {crank}° ПКВ", "ray_opens": "открытие, {crank}° ПКВ", "ray_closes": "закрытие, {crank}° ПКВ",
+    "ray_tdc": "ВМТ газообмена", "rotation": "вращение",
+    "undercut_limit": "подрез: ρ ≤ 0", "rho_min_limit": "рекомендуемый минимум ρ = {rho} мм",
+    "rho_min_point": "наименьший ρ = {rho} мм при {angle}°",
     "curtain": "проходное сечение f, мм²", "running_ta": "время-сечение нарастающим итогом ∫f dt, мм²·с",
     "s_opens": "клапан открывается, град ПКВ от ВМТ", "s_closes": "клапан закрывается, град ПКВ от ВМТ",
     "s_duration": "клапан открыт, град ПКВ", "duration": "продолжительность, град",
     "cycle_deg": "угол поворота коленчатого вала в цикле, град", "engine_deg": "угол поворота (цикл цилиндра 1), град",
     "crank_from_tdc": "угол поворота коленчатого вала от ВМТ, град", "pressure_angle_deg": "угол давления, град",
-    "spring_text": "{count} x проволока {wire_mm:.3g} мм, D {mean_diameter_mm:.3g} мм, {active_coils:g} рабочих витков, {material}",
+    "spring_text": "{count} × проволока {wire_mm:.3g} мм, D {mean_diameter_mm:.3g} мм, {active_coils:g} рабочих витков, {material}",
     "jerk_sign_changes": "перемены знака рывка j",
 })
 
@@ -737,6 +753,89 @@ TEXT["ru"].update({
         "speed_rpm": "частота вращения, об/мин", "leak_down_um": "проседание за оборот, мкм",
         "valve_lash_um": "зазор у клапана, мкм", "refill_share": "время заполнения / время на цилиндрической части",
         "pump_up_um": "выдвижение при отрыве, мкм", "held_open_um": "клапан удерживается открытым, мкм",
+    },
+})
+
+
+TEXT["en"].update({
+    "cs_chapter": "The whole camshaft: drive torque, torsion, bending and the timing drive",
+    "cs_method": "Every lobe of the camshaft's valves on every cylinder of the shaft, each at its nose's camshaft "
+                 "angle from the engine's firing order (the camshaft turns at half the crank angle of a "
+                 "four-stroke); one lobe's torque at the rated speed is its valve's drive torque F dh/dθ under the "
+                 "cam force of the valve's stages (the simulated force where the dynamics ran), with the friction "
+                 "torque of the cam contact where the lubrication was computed. The orders of the camshaft speed by "
+                 "the discrete Fourier transform of a revolution; the twist of each lobe station behind the drive "
+                 "end under the instantaneous torque, quasi-static, the shaft's sections in series (T l / G J); the "
+                 "torsional natural frequencies of the stations' inertias (lobes, the valve train reduced to the "
+                 "camshaft, the shaft) on the shaft held at its drive end; the bending deflection of each station "
+                 "under its largest cam force on a simply supported span between its journals; the force of the "
+                 "timing drive, the torque over the pitch radius",
+    "cs_valves": "Lobes of the valves",
+    "cs_angle": "camshaft angle from the gas-exchange TDC of cylinder 1",
+    "cs_cam_deg": "camshaft angle from the gas-exchange TDC of cylinder 1, deg",
+    "cs_order": "order of the camshaft speed", "cs_amplitude": "amplitude, N·m",
+    "cs_torque_title": "drive torque of the camshaft and its orders",
+    "cs_stations": "Lobe stations", "cs_cylinder": "cylinder",
+    "cs_orders": "Significant orders of the camshaft speed",
+    "cs_names": {
+        "lobes": "lobes", "camshaft_per_crank_revolution": "camshaft revolutions per crank revolution",
+        "peak_torque_Nm": "largest drive torque, N·m", "peak_torque_cam_deg": "where, cam deg",
+        "lowest_torque_Nm": "smallest drive torque, N·m", "mean_torque_Nm": "mean drive torque, N·m",
+        "fluctuating_torque_Nm": "fluctuating torque (largest − smallest), N·m",
+        "rms_fluctuating_torque_Nm": "root mean square of the fluctuation, N·m",
+        "power_W": "power taken at the rated speed, W",
+        "natural_frequencies_Hz": "torsional natural frequencies, Hz",
+        "frequency_ratio": "first natural frequency / highest significant order at the over-speed",
+        "largest_twist_cam_deg": "largest twist behind the drive end, cam deg",
+        "largest_twist_crank_deg": "the same, crank deg", "largest_deflection_mm": "largest bending deflection, mm",
+        "drive_force_max_N": "largest force of the timing drive, N", "drive_force_mean_N": "mean force, N",
+        "drive_allowable_force_N": "allowable force, N",
+        "station_positions_mm": "position from the drive end, mm",
+        "station_inertias_kg_mm2": "inertia, kg·mm²", "max_twist_cam_deg": "largest twist, cam deg",
+        "deflection_mm": "bending deflection, mm", "order": "order", "order_amplitudes_Nm": "amplitude, N·m",
+        "resonance_speeds_rpm": "resonant engine speed, rpm",
+    },
+})
+
+TEXT["ru"].update({
+    "cs_chapter": "Распределительный вал в целом: момент привода, кручение, изгиб, привод вала",
+    "cs_method": "Все кулачки клапанов вала на всех его цилиндрах, каждый при угле поворота распределительного вала "
+                 "своей вершины по порядку работы цилиндров (распределительный вал четырёхтактного двигателя "
+                 "поворачивается на половину угла коленчатого вала); момент одного кулачка на номинальной частоте — "
+                 "момент привода его клапана F dh/dθ от силы на кулачке, найденной расчётом клапана (рассчитанной "
+                 "динамикой силы, где она считалась), с моментом трения в контакте кулачка, где рассчитана смазка. "
+                 "Гармоники частоты вращения распределительного вала — дискретным преобразованием Фурье за оборот; "
+                 "закрутка каждого сечения кулачков относительно приводного конца под мгновенным моментом, "
+                 "квазистатически, участки вала последовательно (T l / G J); собственные частоты крутильных колебаний "
+                 "моментов инерции сечений (кулачки, привод клапана, приведённый к валу, сам вал) на валу, "
+                 "закреплённом у приводного конца; прогиб вала у каждого сечения под наибольшей силой на кулачке как "
+                 "балки на двух опорах между его шейками; окружная сила привода — момент, делённый на радиус "
+                 "начальной окружности",
+    "cs_valves": "Кулачки клапанов",
+    "cs_angle": "угол поворота распределительного вала от ВМТ газообмена цилиндра 1",
+    "cs_cam_deg": "угол поворота распределительного вала от ВМТ газообмена цилиндра 1, °",
+    "cs_order": "порядок гармоники частоты вращения распределительного вала", "cs_amplitude": "амплитуда, Н·м",
+    "cs_torque_title": "момент привода распределительного вала и его гармоники",
+    "cs_stations": "Сечения кулачков", "cs_cylinder": "цилиндр",
+    "cs_orders": "Значимые гармоники частоты вращения распределительного вала",
+    "cs_names": {
+        "lobes": "число кулачков", "camshaft_per_crank_revolution": "оборотов распределительного вала за оборот "
+                                                                    "коленчатого вала",
+        "peak_torque_Nm": "наибольший момент привода, Н·м", "peak_torque_cam_deg": "где, град ПРВ",
+        "lowest_torque_Nm": "наименьший момент привода, Н·м", "mean_torque_Nm": "средний момент привода, Н·м",
+        "fluctuating_torque_Nm": "размах момента (наибольший − наименьший), Н·м",
+        "rms_fluctuating_torque_Nm": "среднеквадратичное колебание момента, Н·м",
+        "power_W": "мощность привода на номинальной частоте, Вт",
+        "natural_frequencies_Hz": "собственные частоты крутильных колебаний, Гц",
+        "frequency_ratio": "первая собственная частота / наивысшая значимая гармоника на максимальной частоте",
+        "largest_twist_cam_deg": "наибольшая закрутка относительно приводного конца, град ПРВ",
+        "largest_twist_crank_deg": "то же, град ПКВ", "largest_deflection_mm": "наибольший прогиб, мм",
+        "drive_force_max_N": "наибольшая окружная сила привода, Н", "drive_force_mean_N": "средняя окружная сила, Н",
+        "drive_allowable_force_N": "допустимая сила, Н",
+        "station_positions_mm": "расстояние от приводного конца, мм",
+        "station_inertias_kg_mm2": "момент инерции, кг·мм²", "max_twist_cam_deg": "наибольшая закрутка, град ПРВ",
+        "deflection_mm": "прогиб, мм", "order": "порядок", "order_amplitudes_Nm": "амплитуда, Н·м",
+        "resonance_speeds_rpm": "резонансная частота вращения двигателя, об/мин",
     },
 })
 

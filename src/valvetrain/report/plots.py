@@ -2,8 +2,7 @@
 
 A figure is its data and its drawing: ``X_data(result)`` gives the series a figure shows (plain arrays in the
 units of its axes, names and angles), ``draw_X(data, t)`` draws them with the texts ``t`` of a language, and
-``X_figure(result, t)`` is the two in turn (the contour and curvature figures still read the design as they
-draw).
+``X_figure(result, t)`` is the two in turn.
 
 Each figure has fixed margins (``subplots_adjust``): those that ``tight_layout`` chose for the widest labels of the
 shipped examples in English and Russian, rounded outwards; ``tight_layout`` measured every text of a figure before
@@ -19,10 +18,12 @@ from matplotlib.figure import Figure
 import numpy as np
 
 from ..design.dynamics import event_window
+from ..design.valve import RHO_MIN
 from ..design.results import shown_value
 from ..units import MM, per_cam_degree, rad_to_deg, to_display
 from .i18n import TEXT
 from .names import value_text
+from .numbers import number
 
 
 def _segment_lines(ax, law):
@@ -166,30 +167,72 @@ def strength_speed_figure(valve, t) -> Figure:
     return draw_strength_speed(strength_speed_data(valve), t)
 
 
-def contour_figure(valve, t):
-    """The cam contour to scale, with the heel circle (and the pitch curve of a roller)."""
+def contour_data(valve) -> dict[str, Any]:
+    """The series of :func:`draw_contour`: the contour and, for a roller, its pitch curve [mm, in the cam's frame:
+    nose on +y, the cam turning counter-clockwise (:mod:`valvetrain.geometry`)], the heel radius [mm], and the rays
+    of the nose, the valve's opening and closing and the gas-exchange TDC: ``(name, camshaft angle [deg from the
+    nose], crank angle [deg from the gas-exchange TDC])``."""
+    x, y = valve.contour / MM
+    pitch = None
+    if valve.follower_model.rolling:
+        h, dh, d2h = valve.law.derivatives(valve.contour_angle)[:3]
+        pitch = valve.follower_model.pitch_curve(valve.contour_angle, valve.heel_radius, h, dh, d2h)[0] / MM
+    nose = shown_value(valve.cam, "nose")
+    rays = [(key, (crank - nose) / 2.0, crank) for key, crank in (
+        ("nose", nose), ("opens", shown_value(valve.cam, "valve_opens")),
+        ("closes", shown_value(valve.cam, "valve_closes")), ("tdc", 0.0))]
+    return {"name": valve.name, "x_mm": x, "y_mm": y, "pitch_mm": pitch, "heel_mm": valve.heel_radius / MM,
+            "rays": rays}
+
+
+def draw_contour(d, t) -> Figure:
+    """The cam contour to scale, with the heel circle (and the pitch curve of a roller), the direction of rotation,
+    and rays from the centre to the nose, the valve's opening and closing and the gas-exchange TDC (the timing
+    reference), each with its crank angle."""
     fig = Figure(figsize=(7, 7))
     ax = fig.subplots()
-    x, y = valve.contour / MM
+    x, y = d["x_mm"], d["y_mm"]
     ax.plot(np.append(x, x[0]), np.append(y, y[0]), color="k", lw=1.5, label=t["contour"])
     phi = np.linspace(0, 2 * np.pi, 361)
-    r = valve.heel_radius / MM
+    r = d["heel_mm"]
     ax.plot(r * np.cos(phi), r * np.sin(phi), ls="--", color="C2", lw=0.8, label=t["heel_circle"])
-    follower = valve.follower_model
-    if follower.rolling:
-        h, dh, d2h = valve.law.derivatives(valve.contour_angle)[:3]
-        px, py = follower.pitch_curve(valve.contour_angle, valve.heel_radius, h, dh, d2h)[0] / MM
-        ax.plot(px, py, color="C1", lw=0.8, label=t["pitch_curve"])
+    if d["pitch_mm"] is not None:
+        ax.plot(*d["pitch_mm"], color="C1", lw=0.8, label=t["pitch_curve"])
+    outline = (x, y) if d["pitch_mm"] is None else d["pitch_mm"]
+    reach = 1.12 * float(max(np.max(np.hypot(x, y)), np.max(np.hypot(*outline))))
+    for key, cam_deg, crank_deg in d["rays"]:
+        u = np.array([np.sin(np.radians(cam_deg)), np.cos(np.radians(cam_deg))])
+        colour = "C3" if key == "tdc" else "C0"
+        end = (1.2 if key == "tdc" else 1.0) * reach * u        # the reference beyond the events: no label on another
+        ax.plot([0.0, end[0]], [0.0, end[1]], color=colour, lw=0.7, ls="-." if key == "tdc" else "-")
+        ax.annotate(t["ray_" + key].format(crank=number(crank_deg, t["lang"])), end, xytext=(4 * u[0], 4 * u[1]),
+                    textcoords="offset points", fontsize=8, color=colour,
+                    ha="left" if u[0] > 0.2 else "right" if u[0] < -0.2 else "center",
+                    va="bottom" if u[1] > 0.2 else "top" if u[1] < -0.2 else "center")
+    arc = np.radians(np.linspace(200.0, 250.0, 30))
+    ax.plot(0.8 * reach * np.cos(arc), 0.8 * reach * np.sin(arc), color="0.3", lw=1.0)
+    ax.annotate("", xy=(0.8 * reach * np.cos(arc[-1] + 0.08), 0.8 * reach * np.sin(arc[-1] + 0.08)),
+                xytext=(0.8 * reach * np.cos(arc[-1]), 0.8 * reach * np.sin(arc[-1])),
+                arrowprops={"arrowstyle": "-|>", "color": "0.3", "lw": 1.0})
+    ax.annotate(t["rotation"], (0.8 * reach * np.cos(arc[0]), 0.8 * reach * np.sin(arc[0])), xytext=(-4, 4),
+                textcoords="offset points", fontsize=8, color="0.3", ha="right", va="bottom")
     ax.axhline(0, color="0.6", lw=0.5)
     ax.axvline(0, color="0.6", lw=0.5)
     ax.set_aspect("equal")
+    ax.set_xlim(-1.7 * reach, 1.7 * reach)
+    ax.set_ylim(-1.25 * reach, 1.4 * reach)
     ax.set_xlabel(t["x_mm"])
     ax.set_ylabel(t["y_mm"])
-    ax.legend(loc="lower right")
+    ax.legend(loc="lower right", fontsize=8)
     ax.grid(alpha=0.3)
-    ax.set_title(f"{valve.name}: {t['contour']}")
+    ax.set_title(f"{d['name']}: {t['contour']}")
     fig.subplots_adjust(left=0.1, right=0.97, bottom=0.09, top=0.94)
     return fig
+
+
+def contour_figure(valve, t) -> Figure:
+    """:func:`draw_contour` of :func:`contour_data`."""
+    return draw_contour(contour_data(valve), t)
 
 
 def time_area_data(valve) -> dict[str, Any]:
@@ -226,25 +269,55 @@ def time_area_figure(valve, t) -> Figure:
     return draw_time_area(time_area_data(valve), t)
 
 
-def curvature_figure(valve, t):
-    """Radius of curvature of the profile (and the pressure angle of a roller) against camshaft angle."""
+def curvature_data(valve) -> dict[str, Any]:
+    """The series of :func:`draw_curvature`: camshaft angle [deg from the nose], the profile's radius of curvature
+    [mm] (and a roller's pressure angle [deg], else None), the junctions of the law's segments [deg], the limits the
+    checks apply [mm]: the smallest recommended radius and the undercut (a radius at or below 0: a flat face
+    cannot follow it, a roller's pitch curve is then no wider than the roller), and the smallest radius (angle [deg],
+    radius [mm])."""
     tab = valve.table
-    x = rad_to_deg(tab.cam_angle)
+    beta = rad_to_deg(tab.pressure_angle) if valve.follower_model.rolling else None
+    return {"name": valve.name, "cam_deg": rad_to_deg(tab.cam_angle), "rho_mm": tab.rho / MM, "pressure_deg": beta,
+            "boundaries_deg": segment_boundaries(valve.law), "rho_min_limit_mm": RHO_MIN / MM,
+            "undercut_mm": 0.0, "rho_min": (shown_value(valve.profile, "rho_min_angle"),
+                                            shown_value(valve.profile, "rho_min"))}
+
+
+def draw_curvature(d, t) -> Figure:
+    """Radius of curvature of the profile (and the pressure angle of a roller) against camshaft angle, with the
+    recommended minimum radius and the undercut limit as lines and the smallest radius marked."""
+    x = d["cam_deg"]
     fig = Figure(figsize=(8, 4.5))
     ax = fig.subplots()
-    ax.plot(x, tab.rho / MM, color="C0")
+    ax.plot(x, d["rho_mm"], color="C0")
     ax.set_xlabel(t["cam_deg"])
     ax.set_ylabel(t["rho"])
-    ax.axhline(0.0, color="0.5", lw=0.5)
+    ax.axhline(d["undercut_mm"], color="C3", lw=1.0, label=t["undercut_limit"])
+    ax.axhline(d["rho_min_limit_mm"], color="C1", lw=1.0, ls="--",
+               label=t["rho_min_limit"].format(rho=number(d["rho_min_limit_mm"], t["lang"])))
+    angle, rho = d["rho_min"]
+    if rho is not None and angle is not None:
+        ax.plot([angle], [rho], marker="o", color="C0", ms=5, ls="none",
+                label=t["rho_min_point"].format(rho=number(rho, t["lang"]), angle=number(angle, t["lang"])))
+    finite = d["rho_mm"][np.isfinite(d["rho_mm"])]
+    if finite.size:
+        top = max(float(np.percentile(finite, 98)), 2.0 * d["rho_min_limit_mm"])
+        ax.set_ylim(min(float(finite.min()), 0.0) - 0.08 * top, 1.1 * top)
     ax.grid(alpha=0.3)
-    _segment_lines(ax, valve.law)
-    if valve.follower_model.rolling:
+    _boundary_lines(ax, d["boundaries_deg"])
+    ax.legend(loc="best", fontsize=8)
+    if d["pressure_deg"] is not None:
         ax2 = ax.twinx()
-        ax2.plot(x, rad_to_deg(tab.pressure_angle), color="C1")
-        ax2.set_ylabel(t["pressure_angle"], color="C1")
-    ax.set_title(f"{valve.name}: {t['rho']}")
+        ax2.plot(x, d["pressure_deg"], color="C2")
+        ax2.set_ylabel(t["pressure_angle"], color="C2")
+    ax.set_title(f"{d['name']}: {t['rho']}")
     fig.subplots_adjust(left=0.13, right=0.9, bottom=0.14, top=0.91)
     return fig
+
+
+def curvature_figure(valve, t) -> Figure:
+    """:func:`draw_curvature` of :func:`curvature_data`."""
+    return draw_curvature(curvature_data(valve), t)
 
 
 def spring_data(valve) -> dict[str, Any]:
@@ -440,25 +513,32 @@ def two_stroke_speed_figure(ports, t) -> Figure:
 
 def timing_data(valves) -> dict[str, Any]:
     """The series of :func:`draw_timing`: crank angle [deg from the gas-exchange TDC], each valve's kind and lift
-    [mm] there, and where intake and exhaust are open together (None without both kinds)."""
+    [mm] there, its opening and closing [crank deg], and where intake and exhaust are open together (None without
+    both kinds)."""
     crank = np.radians(np.linspace(-360.0, 360.0, 2881))
-    lifts, open_by_kind = {}, {}
+    lifts, events, open_by_kind = {}, {}, {}
     for name, v in valves.items():
         lift = v.law.valve_lift((crank - v.nose_crank) / 2.0, v.rocker_ratio, v.follower_model)
         lifts[name] = (v.kind, lift / MM)
+        events[name] = (shown_value(v.cam, "valve_opens"), shown_value(v.cam, "valve_closes"))
         open_by_kind[v.kind] = open_by_kind.get(v.kind, np.zeros_like(crank, dtype=bool)) | (lift > 0.0)
     overlap = open_by_kind["intake"] & open_by_kind["exhaust"] if len(open_by_kind) == 2 else None
-    return {"crank_deg": rad_to_deg(crank), "lifts_mm": lifts, "overlap": overlap}
+    return {"crank_deg": rad_to_deg(crank), "lifts_mm": lifts, "events_crank_deg": events, "overlap": overlap}
 
 
 def draw_timing(d, t) -> Figure:
     """The valve timing diagram: every valve's lift against the crank angle from the gas-exchange TDC on one axis,
-    the overlap of intake and exhaust shaded."""
+    its opening and closing angles written at the axis, the overlap of intake and exhaust shaded."""
     fig = Figure(figsize=(9, 4))
     ax = fig.subplots()
     for name, (kind, lift) in d["lifts_mm"].items():
-        ax.plot(d["crank_deg"], lift, label=name if name == kind else f"{name} ({t[kind]})",
-                color="C0" if kind == "intake" else "C3")
+        colour = "C0" if kind == "intake" else "C3"
+        ax.plot(d["crank_deg"], lift, label=name if name == kind else f"{name} ({t[kind]})", color=colour)
+        for angle in d["events_crank_deg"][name]:
+            shown = (angle + 360.0) % 720.0 - 360.0
+            ax.plot([shown], [0.0], marker="|", ms=10, color=colour)
+            ax.annotate(f"{number(angle, t['lang'])}°", (shown, 0.0), xytext=(0, 6), textcoords="offset points",
+                        rotation=90, fontsize=7, color=colour, ha="center", va="bottom")
     if d["overlap"] is not None:
         ax.fill_between(d["crank_deg"], 0.0, 1.0, where=d["overlap"], transform=ax.get_xaxis_transform(),
                         color="0.85", label=t["overlap"])
@@ -750,10 +830,46 @@ def _saver(folder, share=(0, 1)):
         return fname
     return save
 
+
+def camshaft_torque_data(shaft) -> dict[str, Any]:
+    """The series of :func:`draw_camshaft_torque`: the camshaft angle [cam deg from cylinder 1's gas-exchange TDC],
+    the drive torque of the whole camshaft and its mean [N m], the orders 1, 2, ... and their amplitudes [N m]."""
+    orders = np.asarray(shaft.figures.orders)
+    return {"cam_deg": rad_to_deg(shaft.psi), "torque_Nm": shaft.torque, "mean_Nm": shaft.figures.mean,
+            "orders": np.arange(1, orders.size), "amplitudes_Nm": orders[1:]}
+
+
+def draw_camshaft_torque(d, t) -> Figure:
+    """The camshaft's drive torque over a revolution and its orders of the camshaft speed."""
+    fig = Figure(figsize=(9, 7))
+    top, bottom = fig.subplots(2, 1)
+    top.plot(d["cam_deg"], d["torque_Nm"], color="k", lw=1.2, label=t["total"])
+    top.axhline(d["mean_Nm"], color="C3", ls="--", lw=1.0, label=t["mean"])
+    top.axhline(0, color="0.5", lw=0.5)
+    top.set_xlabel(t["cs_cam_deg"])
+    top.set_ylabel(t["torque"])
+    top.set_xticks(np.arange(0, 361, 45))
+    top.grid(alpha=0.3)
+    top.legend(loc="upper right", fontsize=8)
+    bottom.bar(d["orders"], d["amplitudes_Nm"], color="C0")
+    bottom.set_xlabel(t["cs_order"])
+    bottom.set_ylabel(t["cs_amplitude"])
+    bottom.grid(alpha=0.3, axis="y")
+    fig.suptitle(t["cs_torque_title"])
+    fig.subplots_adjust(left=0.1, right=0.97, bottom=0.08, top=0.93, hspace=0.3)
+    return fig
+
+
+def camshaft_torque_figure(shaft, t) -> Figure:
+    """:func:`draw_camshaft_torque` of :func:`camshaft_torque_data`."""
+    return draw_camshaft_torque(camshaft_torque_data(shaft), t)
+
+
 ENGINE_FIGURES = {"crank": {"crank_forces": crank_forces_figure, "crank_torque": crank_torque_figure,
                             "crank_pin_polar": crank_pin_figure},
                   "two_stroke": {"two_stroke_ports": two_stroke_ports_figure,
-                                 "two_stroke_time_area": two_stroke_speed_figure}}
+                                 "two_stroke_time_area": two_stroke_speed_figure},
+                  "camshaft": {"camshaft_torque": camshaft_torque_figure}}
 
 
 FIGURES = {"kinematics": kinematics_figure, "contour": contour_figure, "time_area": time_area_figure,

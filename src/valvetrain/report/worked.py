@@ -1,28 +1,44 @@
 """Worked substitution for the calculation note: each main formula, the numbers put into it with their units, and the
 result, so that a checker can follow a line with a pocket calculator.
 
-The numbers are the design's own (its inputs and its typed results, as results.json shows them); the result printed is the design's, and
-the substituted expression evaluates to it (``tests/report/test_worked.py`` evaluates every line).  Formulas: Valve-train practical works
-(n.d.), works 1 and 6.
+The numbers are the design's own (its inputs and its typed results, as results.json shows them); the result printed
+is the design's, and the substituted expression evaluates to it (``tests/report/test_worked.py`` evaluates every
+line).  Formulas: Valve-train practical works (n.d.), works 1, 2, 4, 6 and 7; Shang Hanji (1988); Power units manual
+(n.d.).
 """
 
 from typing import Any
 
+import numpy as np
+
+from .. import strength
 from ..design.results import shown_value
-from .numbers import number
+from ..units import to_display
+from .numbers import SUPERSCRIPTS, number
 from .names import unit_text
+
+LARGE = 1e6
+"""A substituted number of this size or more prints as a power of ten (a modulus in Pa), not in whole units."""
+
+
+def _number(x, lang):
+    """:func:`number`, a number of :data:`LARGE` or more as ``7.95·10¹⁰``."""
+    if abs(x) < LARGE:
+        return number(x, lang)
+    mantissa, exponent = f"{x:.3e}".split("e")
+    return number(float(mantissa), lang) + "·10" + str(int(exponent)).translate(SUPERSCRIPTS)
 
 
 def _line(symbol, formula, values, result, unit, lang):
     """One worked line: ``symbol = formula = values = result unit`` (values: (number, unit) pairs joined by the
     formula's operators, given as a format string with ``{}`` per number)."""
     def quantity(x, u):
-        return number(x, lang) + ("°" if u == "deg" else f" {unit_text(u, lang)}" if u else "")
+        return _number(x, lang) + ("°" if u == "deg" else f" {unit_text(u, lang)}" if u else "")
 
     text, numbers = values
     shown = text.format(*(quantity(x, u) for x, u in numbers))
     return {"symbol": symbol, "formula": formula, "substituted": shown,
-            "result": f"{number(result, lang)} {unit_text(unit, lang)}".strip()}
+            "result": f"{_number(result, lang)} {unit_text(unit, lang)}".strip()}
 
 
 def flow_lines(valve, flow, engine, lang="en") -> list[dict[str, Any]]:
@@ -58,22 +74,213 @@ def flow_lines(valve, flow, engine, lang="en") -> list[dict[str, Any]]:
     ]
 
 
-def spring_lines(spring, lang="en") -> list[dict[str, Any]]:
-    """The spring's force at full lift, index and largest shear stress (Valve-train practical works (n.d.), works 5
-    and 6): P_max = P_min + c f, C = D/d, tau_max = k 8 P_max D / (pi d^3), with k the shape factor of the design.
+def time_area_lines(flow, cam, engine, count, lift_table, lang="en") -> list[dict[str, Any]]:
+    """The gas velocity over the time-area, the mean charge velocity and the fullness of the lift diagram
+    (Valve-train practical works (n.d.), work 1, eq. (1.4), work 4, eq. (4.3); Shang Hanji (1988), eq. 2.3).
+
+    Parameters
+    ----------
+    flow : valvetrain.design.valve.FlowResult
+        The valve's flow stage (time-area [mm^2 s], the velocities [m/s], fullness, valve lift [mm]).
+    cam : valvetrain.design.valve.CamResult
+        The law stage: the valve's opening and closing [crank deg], Phi their distance in cam degrees.
+    engine : valvetrain.design.EngineRecord
+        The engine's swept volume V_h [cm^3].
+    count : int
+        Valves of this kind per cylinder, i.
+    lift_table : dict
+        The valve's lift table (``cam_deg`` [cam deg], ``valve_lift_mm`` [mm]), for the integral of the lift over the
+        opening.
+
+    Notes
+    -----
+    cm^3 / (mm^2 s) is m/s: the velocities need no factor.  The integral of h_v over the opening is the trapezoidal
+    sum of the lift table from the last closed row before the opening to the first closed row after it.
+    """
+    vh = shown_value(engine, "swept_volume")
+    ta, v3, vvp, fullness, lift = (shown_value(flow, n) for n in ("time_area", "v3", "charge_velocity", "fullness",
+                                                                  "valve_lift"))
+    angle, h = np.asarray(lift_table["cam_deg"]), np.asarray(lift_table["valve_lift_mm"])
+    opened = np.flatnonzero(h > 0.0)
+    start, end = opened[0] - 1, opened[-1] + 1
+    area = float(np.trapezoid(h[start:end + 1], angle[start:end + 1]))
+    event = (shown_value(cam, "valve_closes") - shown_value(cam, "valve_opens")) / 2.0
+    return [
+        _line("V‴", "V_h / (i ∫f dt)", ("{} / ({} × {})", [(vh, "cm3"), (count, ""), (ta, "mm2 s")]), v3, "m/s", lang),
+        _line("v_вп" if lang == "ru" else "v_vp", "V_h / ∫f dt", ("{} / {}", [(vh, "cm3"), (ta, "mm2 s")]), vvp, "m/s",
+              lang),
+        _line("ξ", "∫h_v dφ / (h_v max Φ)", ("{} / ({} × {})", [(area, "mm cam deg"), (lift, "mm"),
+                                                               (event, "cam deg")]),
+              fullness, "", lang),
+    ]
+
+
+def law_lines(law, cam, lang="en") -> list[dict[str, Any]]:
+    """The coefficients of a Kurz law from its segments (Valve-train practical works (n.d.), work 2, eqs.
+    (2.23)-(2.34)); no lines for another law (its coefficients are the table's).
+
+    Parameters
+    ----------
+    law : valvetrain.laws.base.LiftLaw
+        The valve's law: a Kurz law's Phi1, Phi2, Phi3 [rad camshaft], Z and w' [m/rad].
+    cam : valvetrain.design.valve.CamResult
+        The law stage (tappet lift h_T max [mm], the coefficients [mm, rad]).
+    """
+    if getattr(law, "name", None) != "kurz":
+        return []
+    c = shown_value(cam, "coefficients")
+    h = shown_value(cam, "tappet_lift")
+    w = to_display(law.ramp_velocity, "mm/rad")
+    z, f1, f2, f3 = law.shape_factor, law.phi1, law.phi2, law.phi3
+    return [
+        _line("k_1", "8 Z (Φ_2 / π)²", ("8 × {} × ({} / π)²", [(z, ""), (f2, "rad")]), c["k1"], "rad2", lang),
+        _line("k_2", "(5 + Z) Φ_3² / 6", ("(5 + {}) × ({})² / 6", [(z, ""), (f3, "rad")]), c["k2"], "rad2", lang),
+        _line("k_3", "(4 + 2 Z) Φ_3 / 3", ("(4 + 2 × {}) × {} / 3", [(z, ""), (f3, "rad")]), c["k3"], "rad", lang),
+        _line("K_1", "k_1 + k_2 + k_3 Φ_2", ("{} + {} + {} × {}", [(c["k1"], "rad2"), (c["k2"], "rad2"),
+                                                                (c["k3"], "rad"), (f2, "rad")]), c["K1"], "rad2", lang),
+        _line("K_2", "k_3 + 4 Z Φ_2 / π", ("{} + 4 × {} × {} / π", [(c["k3"], "rad"), (z, ""), (f2, "rad")]),
+              c["K2"], "rad", lang),
+        _line("c_11", "(K_1 w′ + K_2 h_T max) / (2 K_1 + K_2 Φ_1)",
+              ("({} × {} + {} × {}) / (2 × {} + {} × {})",
+               [(c["K1"], "rad2"), (w, "mm/rad"), (c["K2"], "rad"), (h, "mm"), (c["K1"], "rad2"), (c["K2"], "rad"),
+                (f1, "rad")]), c["c11"], "mm/rad", lang),
+        _line("c_12", "(c_11 − w′) Φ_1 / π", ("({} − {}) × {} / π", [(c["c11"], "mm/rad"), (w, "mm/rad"), (f1, "rad")]),
+              c["c12"], "mm", lang),
+        _line("c_32", "−(2 c_11 − w′) / K_2", ("−(2 × {} − {}) / {}", [(c["c11"], "mm/rad"), (w, "mm/rad"),
+                                                                      (c["K2"], "rad")]), c["c32"], "mm/rad2", lang),
+    ]
+
+
+def spring_lines(spring, material=None, cam_speed=None, lang="en") -> list[dict[str, Any]]:
+    """The spring's force at full lift, index, largest shear stress, rate, fatigue safety, first natural frequency and
+    resonance ratio (Valve-train practical works (n.d.), works 5 and 6): P_max = P_min + c f, C = D/d,
+    tau_max = k 8 P_max D / (pi d^3), c = G d^4 / (8 D^3 i_p), n = tau_-1 / (tau_a + psi_tau tau_m) (6.12),
+    omega_c1 = d / (D^2 i_p) sqrt(G / (2 rho)) (6.14), with k the shape factor of the design.
 
     Parameters
     ----------
     spring : valvetrain.design.drive.SpringRecord
         The designed spring (for a nested pair the outer spring's record with the pair's loads).
+    material : valvetrain.springs.SpringMaterial, optional
+        Its grade with the specification's overrides (G [Pa], rho [kg/m^3], tau_-1 and psi_tau of its wire): without
+        it only the force, index and stress lines.
+    cam_speed : float, optional
+        omega_cam [rad/s] of the resonance ratio.
     """
-    p0, c, fmax, fmin, pmax, d, dm, k, index, tau = (shown_value(spring, n) for n in (
-        "preload", "rate", "max_deflection", "preload_deflection", "max_force", "wire_diameter", "mean_diameter",
-        "shape_factor", "spring_index", "tau_max"))
-    return [
+    p0, c, fmax, fmin, pmax, d, dm, k, index, tau, tau_min, coils, safety, freq, ratio = (
+        shown_value(spring, n) for n in (
+            "preload", "rate", "max_deflection", "preload_deflection", "max_force", "wire_diameter", "mean_diameter",
+            "shape_factor", "spring_index", "tau_max", "tau_min", "active_coils", "safety_factor",
+            "natural_frequency", "resonance_ratio"))
+    lines = [
         _line("P_max", "P_min + c h", ("{} + {} × {}", [(p0, "N"), (c, "N/mm"), (fmax - fmin, "mm")]), pmax, "N", lang),
         _line("C", "D / d", ("{} / {}", [(dm, "mm"), (d, "mm")]), index, "", lang),
         _line("τ_max", "k 8 P_max D / (π d³)", ("{} × 8 × {} × {} / (π × ({})³)",
                                                 [(k, ""), (pmax, "N"), (dm, "mm"), (d, "mm")]),
               tau, "MPa", lang),
+    ]
+    if material is None:
+        return lines
+    g = material.shear_modulus
+    _, endurance, psi = (float(x) for x in material.limits(spring.wire_diameter))
+    omega = 2.0 * np.pi * freq
+    lines += [
+        _line("c", "G d⁴ / (8 D³ i_p)", ("{} × ({})⁴ / (8 × ({})³ × {})",
+                                         [(to_display(g, "MPa"), "MPa"), (d, "mm"), (dm, "mm"), (coils, "")]),
+              c, "N/mm", lang),
+        _line("n", "τ₋₁ / ((τ_max − τ_min) / 2 + ψ_τ (τ_max + τ_min) / 2)",
+              ("{} / (({} − {}) / 2 + {} × ({} + {}) / 2)",
+               [(to_display(endurance, "MPa"), "MPa"), (tau, "MPa"), (tau_min, "MPa"), (psi, ""), (tau, "MPa"),
+                (tau_min, "MPa")]), safety, "", lang),
+        _line("ω_c1", "d / (D² i_p) √(G / (2 ρ))", ("{} / (({})² × {}) × √({} / (2 × {}))",
+                                                   [(d / 1e3, "m"), (dm / 1e3, "m"), (coils, ""), (g, "Pa"),
+                                                    (material.density, "kg/m3")]), omega, "rad/s", lang),
+    ]
+    if cam_speed is not None:
+        lines.append(_line("ω_c1 / ω_" + ("р" if lang == "ru" else "cam"), "",
+                           ("{} / {}", [(omega, "rad/s"), (cam_speed, "rad/s")]), ratio, "", lang))
+    return lines
+
+
+def strength_lines(parts, record, lift_table, follower, lang="en") -> list[dict[str, Any]]:
+    """The cam's contact stress at its worst point and the pushrod's buckling margin (Valve-train practical works
+    (n.d.), eqs. (7.4)-(7.5), (7.8)-(7.10); Shang Hanji (1988), eq. 2.5), those the design checked.
+
+    Parameters
+    ----------
+    parts : dict
+        The valve's ``[parts]`` inputs (cam width [mm], contact modulus [MPa], pushrod diameter, bore and length
+        [mm] and modulus [MPa]).
+    record : dict
+        The strength record (its checks, the worst speed [rpm] and angle [cam deg] of the contact stress, the
+        largest cam force per speed [N] and its angle [cam deg]).
+    lift_table : dict
+        The valve's lift table (``cam_deg`` [cam deg], ``rho_mm`` [mm]): the cam's radius at the worst point.
+    follower : str
+        ``flat`` or ``roller``: the contact stress is worked for a flat follower (1/rho_2 = 0).
+
+    Notes
+    -----
+    The contact line is shown where the worst contact stress is at the angle of the largest cam force of its
+    speed (the only force the record holds): the case of a flat follower loaded hardest at the nose.
+    """
+    checks, lines = record["checks"], []
+    contact, per = checks.get("cam_contact_stress"), record["per_speed"]
+    if contact is not None and follower == "flat":
+        i = int(np.argmin(np.abs(np.asarray(per["speed_rpm"]) - record["cam_contact_stress_speed_rpm"])))
+        if np.isclose(per["cam_force_max_cam_deg"][i], record["cam_contact_stress_cam_deg"], atol=1e-6):
+            rho = float(np.interp(record["cam_contact_stress_cam_deg"], lift_table["cam_deg"], lift_table["rho_mm"]))
+            factor = strength.HERTZ_LINE
+            lines.append(_line("σ_к" if lang == "ru" else "σ_c", f"{number(factor, lang)} √(P E / (b ρ))", (
+                "{} × √({} × {} / ({} × {}))",
+                [(factor, ""), (per["cam_force_max_N"][i], "N"), (parts["contact_modulus_MPa"], "MPa"),
+                 (parts["cam_width_mm"], "mm"), (rho, "mm")]), contact["value"], "MPa", lang))
+    buckling = checks.get("pushrod_buckling_margin")
+    if buckling is not None:
+        big, bore, e, length = (parts[k] or 0.0 for k in (
+            "pushrod_diameter_mm", "pushrod_bore_mm", "pushrod_modulus_MPa", "pushrod_length_mm"))
+        second = float(strength.second_moment(big, bore))
+        euler = float(strength.euler_load(e, second, length))
+        lines += [
+            _line("J", "π (D⁴ − d⁴) / 64", ("π × (({})⁴ − ({})⁴) / 64", [(big, "mm"), (bore, "mm")]), second, "mm4",
+                  lang),
+            _line("P_E", "π² E J / l²", ("π² × {} × {} / ({})²", [(e, "MPa"), (second, "mm4"), (length, "mm")]),
+                  euler, "N", lang),
+            _line("n", "P_E / P_T max", ("{} / {}", [(euler, "N"), (record["cam_force_max_N"], "N")]),
+                  buckling["value"], "", lang),
+        ]
+    return lines
+
+
+def crank_lines(figures, lang="en") -> list[dict[str, Any]]:
+    """The crank's reduced masses, its angular speed, the piston's largest acceleration and the inertia and
+    centrifugal forces (Power units manual (n.d.), eqs. (1.10), (2.6)-(2.10)): m_j = m_p + m_rod,p,
+    m_r = m_c + m_rod,c, omega = pi n / 30, j_max = R omega^2 (1 + lambda) (a central mechanism, at the TDC),
+    P_j = -m_j j_max, K_R = -m_r R omega^2.
+
+    Parameters
+    ----------
+    figures : valvetrain.design.crank.CrankSummary
+        The crank's figures (masses [kg], stroke [mm], speed [rpm], lambda, offset [mm], the largest acceleration
+        [m/s^2], the centrifugal force [N]).
+    """
+    m = figures.masses
+    mp, mrp, mc, mrc, mj, mr = (shown_value(m, k) for k in ("piston", "rod_pin", "crank", "rod_crank", "reciprocating",
+                                                             "rotating"))
+    stroke, n, lam, offset, j, k_r = (shown_value(figures, k) for k in (
+        "stroke", "speed", "lam", "offset", "max_acceleration", "centrifugal_force"))
+    r, omega = stroke / 2e3, np.pi * n / 30.0
+    lines = [
+        _line("m_j", "m_п + m_ш.п" if lang == "ru" else "m_p + m_rod,p", ("{} + {}", [(mp, "kg"), (mrp, "kg")]), mj,
+              "kg", lang),
+        _line("m_r", "m_к + m_ш.к" if lang == "ru" else "m_c + m_rod,c", ("{} + {}", [(mc, "kg"), (mrc, "kg")]), mr,
+              "kg", lang),
+        _line("ω", "π n / 30", ("π × {} / 30", [(n, "rpm")]), omega, "rad/s", lang),
+    ]
+    if offset == 0.0:
+        lines.append(_line("j_max", "R ω² (1 + λ)", ("{} × ({})² × (1 + {})", [(r, "m"), (omega, "rad/s"), (lam, "")]),
+                           j, "m/s2", lang))
+    return lines + [
+        _line("P_j", "−m_j j_max", ("−{} × {}", [(mj, "kg"), (j, "m/s2")]), -mj * j, "N", lang),
+        _line("K_R", "−m_r R ω²", ("−{} × {} × ({})²", [(mr, "kg"), (r, "m"), (omega, "rad/s")]), k_r, "N", lang),
     ]

@@ -71,10 +71,22 @@ def _finite(x):
     return float(x) if np.isfinite(x) else None
 
 
+FINGER_VALVE_ANGLE = _bounded(-180.0, 180.0, "deg", low_open=False)
+"""The bounds of ``finger_valve_angle_deg``: the direction the valve opens, from the follower's (+y) clockwise."""
+
+
 class _CamBase(_Model):
     base_radius_mm: Length(2.0, 500.0, low_open=False)
     follower: Literal[tuple(FOLLOWERS)] = "flat"
     roller_radius_mm: Optional[Length(1.0, 200.0, low_open=False)] = None
+    finger_pivot_x_mm: Optional[Length(-500.0, 500.0, low_open=False)] = None
+    finger_pivot_y_mm: Optional[Length(-500.0, 500.0, low_open=False)] = None
+    finger_roller_arm_mm: Optional[Length(2.0, 500.0, low_open=False)] = None
+    finger_pad_arm_mm: Optional[Length(-500.0, 500.0, low_open=False)] = None
+    finger_pad_drop_mm: Optional[Length(-200.0, 200.0, low_open=False)] = None
+    finger_pad_radius_mm: Optional[Length(1.0, 1000.0, low_open=False)] = None
+    finger_valve_angle_deg: Optional[FINGER_VALVE_ANGLE] = None
+    finger_tip_offset_mm: Optional[Length(-50.0, 50.0, low_open=False)] = None
 
     @model_validator(mode="after")
     def _follower_keys(self):
@@ -631,9 +643,10 @@ class TangentCam(_CamBase):
 
     @model_validator(mode="after")
     def _roller(self):
-        if not FOLLOWERS[self.follower].rolling:
+        follower = FOLLOWERS[self.follower]
+        if not follower.rolling or follower.law_at_valve:
             raise ValueError("law = \"tangent\" needs follower = \"roller\" (a flat follower on straight flanks is "
-                             "degenerate) and roller_radius_mm")
+                             "degenerate; a finger's law is the valve's, not the cam's) and roller_radius_mm")
         return self
 
     def law_of(self, cam, lift, half, r0):

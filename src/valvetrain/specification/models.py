@@ -460,6 +460,66 @@ class Valve(_Model):
         return layout(self)
 
 
+class Camshaft(_Model):
+    """[camshaft]: the whole camshaft, its shaft and its timing drive (positions from the drive end, where the
+    sprocket, pulley or gear sits); the lobes of the named valves of the named cylinders, in the engine's firing
+    order."""
+
+    valves: Optional[list[str]] = None
+    cylinders: Optional[list[Annotated[int, Field(ge=1, le=64)]]] = None
+    cylinder_positions_mm: list[Length(0.0, 10000.0)]
+    section_lengths_mm: list[Length(0.5, 10000.0, low_open=False)]
+    section_diameters_mm: list[Length(2.0, 500.0, low_open=False)]
+    section_bores_mm: Optional[list[Length(0.0, 500.0, low_open=False)]] = None
+    journal_positions_mm: list[Length(0.0, 10000.0, low_open=False)]
+    shear_modulus_MPa: _bounded(1e3, 1e6, "MPa") = 8.1e4
+    modulus_MPa: _bounded(1e3, 1e6, "MPa") = 2.1e5
+    density_kg_m3: _bounded(500.0, 25000.0, "kg/m3") = 7850.0
+    lobe_inertia_kg_mm2: _bounded(0.0, 1e6, "kg mm2", low_open=False) = 20.0
+    max_twist_cam_deg: _bounded(0.01, 10.0, "deg") = 0.5
+    max_deflection_mm: Length(0.001, 1.0) = 0.05
+    min_frequency_ratio: _bounded(1.0, 10.0, low_open=False) = 1.25
+    significant_order_share: _bounded(0.001, 1.0) = 0.05
+    drive: Literal["chain", "belt", "gears"] = "chain"
+    drive_pitch_radius_mm: Length(2.0, 1000.0, low_open=False)
+    drive_allowable_force_N: _bounded(1.0, 1e8, "N")
+
+    @model_validator(mode="after")
+    def _consistent(self):
+        problems = []
+        n = len(self.section_lengths_mm)
+        for key in ("section_diameters_mm", "section_bores_mm"):
+            value = getattr(self, key)
+            if value is not None and len(value) != n:
+                problems.append(f"{key} has {len(value)} entries: one per section of section_lengths_mm "
+                                f"({n}) is needed")
+        if self.section_bores_mm is not None and len(self.section_bores_mm) == n:
+            problems += [f"section_bores_mm[{i}] = {b:g} must be smaller than section_diameters_mm[{i}] = "
+                         f"{d:g}" for i, (b, d) in enumerate(zip(self.section_bores_mm, self.section_diameters_mm))
+                         if b >= d]
+        length = sum(self.section_lengths_mm)
+        positions = self.cylinder_positions_mm
+        if sorted(positions) != positions or len(set(positions)) != len(positions):
+            problems.append(f"cylinder_positions_mm = {positions}: allowed increasing positions from the "
+                            "drive end")
+        journals = self.journal_positions_mm
+        if len(journals) < 2 or sorted(journals) != journals or len(set(journals)) != len(journals):
+            problems.append(f"journal_positions_mm = {journals}: at least two journals, increasing from the "
+                            "drive end")
+        elif positions and (positions[0] <= journals[0] or positions[-1] >= journals[-1]):
+            problems.append(f"cylinder_positions_mm = {positions}: every lobe lies between the first and the "
+                            f"last journal ({journals[0]:g} ... {journals[-1]:g} mm)")
+        if max(positions + journals, default=0.0) > length:
+            problems.append(f"a lobe or journal lies beyond the shaft's length sum(section_lengths_mm) = "
+                            f"{length:g} mm")
+        if self.cylinders is not None and len(self.cylinders) != len(positions):
+            problems.append(f"cylinder_positions_mm has {len(positions)} entries: one per cylinder of "
+                            f"cylinders ({len(self.cylinders)}) is needed")
+        if problems:
+            raise ValueError("; ".join(problems))
+        return self
+
+
 class Gas(_Model):
     """[gas]: absolute pressures for the closed-valve spring check and the cam load (Valve-train practical works (n.d.), works 5, 7)."""
 
@@ -616,6 +676,7 @@ class Spec(_Model):
     valves: dict[str, Valve] = {}
     gas: Gas = Gas()
     crank: Optional[CrankSpec] = None
+    camshaft: Optional[Camshaft] = None
     two_stroke: Optional[TwoStroke] = None
     output: Output = Output()
     document: Document = Document()

@@ -63,7 +63,7 @@ def si(section, root=None) -> Any:
     >>> from valvetrain.specification import example_spec
     >>> valve = si(example_spec().valves["intake"])
     >>> valve.throat_diameter, round(valve.opens, 6), valve.cam.law
-    (0.0368, 0.453786, 'kurz')
+    (0.038, 0.453786, 'kurz')
     """
     values = {name: _convert(getattr(section, key), factor, root) for key, name, factor in _keys(type(section))}
     if getattr(section, "si_extras", ()):

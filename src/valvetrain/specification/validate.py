@@ -10,11 +10,13 @@ are the dotted keys that :meth:`Spec.replace` and ``study --grid`` change.
 import copy
 from typing import Any, Optional
 
+from ..followers import REGISTRY as FOLLOWERS
 from ..layouts import LAYOUTS
 from ..springs import feasible_mean_diameters
 from ..units import MM
 from .cams import main_half_angle_deg
 from .messages import Problem, shown
+from .si import si
 
 
 def _valve_problems(name, v, engine):
@@ -54,6 +56,19 @@ def _valve_problems(name, v, engine):
     if v.drive.layout is not None and not LAYOUTS[v.drive.layout].rocker and v.rocker_ratio != 1.0:
         out.append(Problem(f"{at}.drive.layout", f"needs rocker_ratio = 1 (got {v.rocker_ratio:g})",
                            f"\"{v.drive.layout}\"", " "))
+    if FOLLOWERS[v.cam.follower].law_at_valve:
+        if v.rocker_ratio != 1.0:
+            out.append(Problem(f"{at}.rocker_ratio", f"allowed 1 with cam.follower = \"{v.cam.follower}\" (the law is "
+                               "the valve's; the finger's ratio follows from its geometry)", f"{v.rocker_ratio:g}"))
+        if v.max_lift_mm is not None:
+            problem = FOLLOWERS[v.cam.follower].from_cam(si(v.cam)).geometry_problem(
+                (v.cam.base_radius_mm - v.clearance_mm) * MM, v.max_lift_mm * MM + v.clearance_mm * MM)
+            if problem:
+                key, value, message, joiner = problem
+                out.append(Problem(f"{at}.cam.{key}", message, value, joiner))
+        if v.drive.layout != "rocker":
+            out.append(Problem(f"{at}.drive.layout", f"allowed \"rocker\" with cam.follower = \"{v.cam.follower}\" "
+                               "(the finger's inertia about its pivot, drive.valve_arm_mm)", shown(v.drive.layout)))
     if v.piston_gap_tdc_mm is not None and engine.rod_length_mm is None:
         out.append(Problem(f"{at}.piston_gap_tdc_mm", "needs engine.rod_length_mm for the piston kinematics",
                            joiner=" "))
@@ -142,11 +157,35 @@ def _acceptance_problems(spec):
             for i, a in enumerate(spec.accepted) if a.valve is not None and a.valve not in spec.valves]
 
 
+def _camshaft_problems(spec):
+    """[camshaft] against the engine and the valves: the valves it names exist, its cylinders are the engine's,
+    one position per cylinder."""
+    c = spec.camshaft
+    if c is None:
+        return []
+    out = []
+    if not spec.valves:
+        out.append(Problem("camshaft", "the camshaft needs at least one [valves.NAME] section (its lobes)"))
+    missing = [n for n in (c.valves or []) if n not in spec.valves]
+    if missing or c.valves == []:
+        out.append(Problem("camshaft.valves", f"allowed a non-empty list of the valves {sorted(spec.valves)}",
+                           f"{c.valves}"))
+    n = spec.engine.cylinders
+    cylinders = c.cylinders if c.cylinders is not None else list(range(1, n + 1))
+    if not cylinders or len(set(cylinders)) != len(cylinders) or max(cylinders) > n:
+        out.append(Problem("camshaft.cylinders", f"allowed distinct cylinders 1...{n} (engine.cylinders)",
+                           f"{c.cylinders}"))
+    elif c.cylinders is None and len(c.cylinder_positions_mm) != n:
+        out.append(Problem("camshaft.cylinder_positions_mm", f"has {len(c.cylinder_positions_mm)} entries: one per "
+                           f"cylinder (engine.cylinders = {n}) is needed", joiner=" "))
+    return out
+
+
 def problems(spec) -> list[Problem]:
     """The problems across the sections of a specification whose every field is valid, one message each ([] if
     none): angles that must add up, a throat smaller than the bore, files and keys that must agree, ...."""
     out = [p for name, v in spec.valves.items() for p in _valve_problems(name, v, spec.engine)]
-    out += _crank_problems(spec) + _two_stroke_problems(spec) + _acceptance_problems(spec)
+    out += _crank_problems(spec) + _two_stroke_problems(spec) + _camshaft_problems(spec) + _acceptance_problems(spec)
     if spec.engine.strokes != 4 and spec.valves:
         out.insert(0, Problem("engine.strokes", "the valve timing (opens_deg/closes_deg before and after TDC/BDC of "
                               "the gas-exchange strokes) is defined for four-stroke engines; allowed 4 with "

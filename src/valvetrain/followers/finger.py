@@ -1,0 +1,376 @@
+"""A pivoted follower: an end-pivot finger or a centre-pivot rocker whose roller (or curved sliding pad) rides on
+the cam and whose curved pad pushes the valve's flat tip.  Its lever ratio changes with the lift.
+
+The follower's law is the VALVE lift law: the cam is synthesised through the linkage (the inverse problem,
+:meth:`PivotedFollower.pitch_points`), and the valve lift of a given cam is found by the loop closure
+(the forward problem, :meth:`PivotedFollower.lift_on_path`).
+
+Frame and geometry (SI).  The fixed frame has the cam centre at the origin and the follower on +y, as
+:mod:`valvetrain.geometry`'s cam frame at theta = 0; a point X of the fixed frame is ``R(-theta) X`` in the cam
+frame at camshaft angle theta (the cam turns counter-clockwise as theta grows).  The finger is a rigid body turning
+about its pivot P by the angle psi (counter-clockwise, from the +x axis to the pivot-to-roller line); in its own
+frame (x from the pivot to the roller centre, y 90 deg counter-clockwise) the roller (or the cam pad's centre of
+curvature) is at ``(L_r, 0)`` and the centre of the valve pad's arc at ``(L_p, d_p)``.  The valve opens along
+``a = (sin alpha, cos alpha)``; its tip is a plane square to a, touched by the pad of radius rho_p.  With zero lash
+(a hydraulic adjuster) the roller sits on the heel circle, ``|C(psi_0)| = R_0 + R_r``.
+
+Notes
+-----
+Roller centre and pad centre, with :math:`\\mathbf e = (\\cos\\psi, \\sin\\psi)`,
+:math:`\\mathbf e_\\perp = (-\\sin\\psi, \\cos\\psi)`:
+
+.. math:: \\mathbf C = \\mathbf P + L_r\\mathbf e, \\qquad \\mathbf B = \\mathbf P + L_p\\mathbf e + d_p\\mathbf e_\\perp
+
+The tip plane is where the pad touches it, :math:`t = \\mathbf B\\cdot\\mathbf a + \\rho_p`, so the valve lift and
+the effective valve arm are, with :math:`L_b = \\sqrt{L_p^2 + d_p^2}`, :math:`\\chi = \\psi + \\alpha +
+\\operatorname{atan2}(d_p, L_p)`:
+
+.. math:: v = L_b(\\sin\\chi - \\sin\\chi_0), \\qquad G = \\frac{dv}{d\\psi} = L_b\\cos\\chi
+
+(the pad's radius moves the contact point across the tip, not the lift).  The instantaneous ratio of the valve lift
+to the roller centre's travel on its arc is :math:`i = G / L_r`; the contact point on the tip is
+:math:`\\mathbf B\\cdot\\mathbf a_\\perp` across the valve axis.  The roller centre in the cam frame is the pitch
+curve :math:`\\mathbf q(\\theta) = R(-\\theta)\\,\\mathbf C(\\psi(\\theta))`, with :math:`J` the quarter turn:
+
+.. math:: \\mathbf q' = R(-\\theta)\\mathbf W,\\quad \\mathbf W = -J\\mathbf C + \\mathbf C_\\psi\\psi', \\qquad
+          \\mathbf q'' = R(-\\theta)(-J\\mathbf W + \\mathbf W'),\\quad
+          \\mathbf W' = -J\\mathbf C_\\psi\\psi' + \\mathbf C_{\\psi\\psi}\\psi'^2 + \\mathbf C_\\psi\\psi''
+
+with :math:`\\psi' = v'/G`, :math:`\\psi'' = (v'' + L_b\\sin\\chi\\,\\psi'^2)/G`.  The cam contour is the envelope
+of the roller circles, the pitch curve offset inwards by R_r along :math:`\\mathbf n = J\\mathbf q'/|\\mathbf q'|`.
+The pressure angle is the angle between the contact normal :math:`J\\mathbf W/|\\mathbf W|` (fixed frame) and the
+roller centre's velocity :math:`\\mathbf e_\\perp`; the contact force N that a force F at the valve needs follows from
+the virtual work, :math:`N L_r \\cos\\beta = F G`.
+
+References
+----------
+Norton (2009), the chapter on follower trains (the pivoted roller follower, its loop closure and pressure angle);
+Wang (2007), the chapter on valvetrain kinematics (the instantaneous rocker ratio of a finger follower, the contact
+travel on the valve tip).
+"""
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..numerics import bracketed_roots
+from .base import register
+from .roller import RollerFollower
+
+KEYS = ("finger_pivot_x_mm", "finger_pivot_y_mm", "finger_roller_arm_mm", "finger_pad_arm_mm", "finger_pad_radius_mm")
+"""The cam section's keys a finger needs beside ``roller_radius_mm`` (``finger_pad_drop_mm``,
+``finger_valve_angle_deg`` and ``finger_tip_offset_mm`` are 0 where not given)."""
+
+
+def _e(psi):
+    """e = (cos psi, sin psi) and e_perp = (-sin psi, cos psi), each (2, n)."""
+    c, s = np.cos(psi), np.sin(psi)
+    return np.stack([c, s]), np.stack([-s, c])
+
+
+def _quarter(w):
+    """J w: w turned by 90 deg counter-clockwise."""
+    return np.stack([-w[1], w[0]])
+
+
+def _turn(w, angle):
+    """R(angle) w: w turned by ``angle`` [rad] counter-clockwise."""
+    c, s = np.cos(angle), np.sin(angle)
+    return np.stack([c * w[0] - s * w[1], s * w[0] + c * w[1]])
+
+
+def _cross(a, b):
+    """The z component of a x b."""
+    return a[0] * b[1] - a[1] * b[0]
+
+
+@register
+@dataclass(frozen=True)
+class PivotedFollower(RollerFollower):
+    """An end-pivot finger or centre-pivot rocker on the cam through a roller (or curved pad) of radius ``radius``.
+
+    Attributes (SI)
+    ---------------
+    radius : float
+        Radius R_r of the roller, or of the sliding pad's arc on the cam [m].
+    pivot_x, pivot_y : float
+        The pivot P relative to the cam centre [m] (the follower on +y).
+    roller_arm : float
+        L_r, pivot to roller centre [m].
+    pad_arm, pad_drop : float
+        L_p, d_p: the valve pad's centre of curvature in the finger's frame [m] (L_p > L_r: an end-pivot finger;
+        L_p < 0: a centre-pivot rocker).
+    pad_radius : float
+        rho_p, the valve pad's radius [m].
+    valve_angle : float
+        alpha, the direction the valve opens, from +y clockwise [rad].
+    tip_offset : float
+        Where the pad touches the valve tip with the valve shut, across the valve axis [m].
+    """
+
+    pivot_x: float = 0.0
+    pivot_y: float = 0.0
+    roller_arm: float = 0.0
+    pad_arm: float = 0.0
+    pad_drop: float = 0.0
+    pad_radius: float = 0.0
+    valve_angle: float = 0.0
+    tip_offset: float = 0.0
+    name = "finger"
+    law_at_valve = True
+    undercut_source = "Shang Hanji (1988), eq. (2.7); Norton (2009)"
+
+    @classmethod
+    def from_cam(cls, cam):
+        """The finger of the cam's SI view (``roller_radius`` and the ``finger_*`` keys in SI)."""
+        return cls(cam.roller_radius, cam.finger_pivot_x, cam.finger_pivot_y, cam.finger_roller_arm,
+                   cam.finger_pad_arm, cam.finger_pad_drop or 0.0, cam.finger_pad_radius, cam.finger_valve_angle or 0.0,
+                   cam.finger_tip_offset or 0.0)
+
+    @classmethod
+    def missing_key(cls, cam):
+        """The first of ``roller_radius_mm`` and :data:`KEYS` the cam section does not give."""
+        missing = [k for k in ("roller_radius_mm",) + KEYS if getattr(cam, k) is None]
+        if missing:
+            return (f"{missing[0]} is required when follower = \"finger\" (the finger's geometry: "
+                    f"{', '.join(('roller_radius_mm',) + KEYS)})")
+        return None
+
+    def geometry_problem(self, heel, lift):
+        """Where the finger cannot sit on the heel circle of radius ``heel`` [m] or cannot give the valve lift ``lift``
+        [m]: ``(key of the cam section, its value as given, what is wrong (lengths in mm), joiner)`` for a
+        :class:`~valvetrain.specification.messages.Problem`; else None."""
+        p = np.hypot(self.pivot_x, self.pivot_y)
+        g0 = heel + self.radius
+        if not abs(p - self.roller_arm) <= g0 <= p + self.roller_arm:
+            return ("finger_roller_arm_mm", f"{self.roller_arm * 1e3:g}",
+                    f"from the pivot (finger_pivot_x_mm, finger_pivot_y_mm) {p * 1e3:g} mm from the cam centre "
+                    f"cannot reach the roller centre's heel circle, base_radius_mm + roller_radius_mm = "
+                    f"{g0 * 1e3:g} mm", " ")
+        lb = self._pad[0]
+        reach = lb * (1.0 - np.sin(self._chi0(heel))) if self.valve_arm(np.array(self.base_angle(heel))) > 0.0 \
+            else lb * (1.0 + np.sin(self._chi0(heel)))
+        if lift > reach:
+            return ("finger_valve_angle_deg", f"{np.degrees(self.valve_angle):g}",
+                    f"the valve pad {lb * 1e3:g} mm from the pivot (finger_pad_arm_mm, finger_pad_drop_mm) reaches a "
+                    f"valve lift of {reach * 1e3:.4g} mm at most; max_lift_mm + clearance_mm = {lift * 1e3:g}", ": ")
+        return None
+
+    def rest_ratio(self, heel):
+        """The lever ratio i_0 = G(psi_0) / L_r with the roller on the heel circle of radius ``heel`` [m]."""
+        return float(self.lever_ratio(np.array(self.base_angle(heel))))
+
+    def force_ratio(self, heel, h, dh):
+        """N / F = G / (L_r cos beta): the cam's normal force per unit force at the valve (:meth:`contact_force`)."""
+        return self.contact_force(1.0, heel, h, dh)
+
+    @property
+    def _pivot(self):
+        return np.array([self.pivot_x, self.pivot_y])
+
+    @property
+    def _pad(self):
+        """L_b and the angle of the pad centre from the pivot-to-roller line, atan2(d_p, L_p)."""
+        return np.hypot(self.pad_arm, self.pad_drop), np.arctan2(self.pad_drop, self.pad_arm)
+
+    def base_angle(self, heel):
+        """psi_0 [rad]: the finger's angle with the roller on the heel circle of radius ``heel`` [m].
+
+        ``P.e(psi) = (g_0^2 - |P|^2 - L_r^2) / (2 L_r)`` with g_0 = R_0 + R_r; of its two roots the one whose roller
+        centre lies higher (on the follower's side, +y).  Refused (ValueError) where the arm cannot reach the circle.
+        """
+        p = np.hypot(self.pivot_x, self.pivot_y)
+        g0 = heel + self.radius
+        k = (g0 ** 2 - p ** 2 - self.roller_arm ** 2) / (2.0 * self.roller_arm * p)
+        if abs(k) > 1.0:
+            raise ValueError(f"the finger's roller arm {self.roller_arm:g} m from the pivot at {p:g} m from the cam "
+                             f"centre cannot reach the heel circle of the roller centre, radius {g0:g} m")
+        roots = np.arctan2(self.pivot_y, self.pivot_x) + np.array([1.0, -1.0]) * np.arccos(k)
+        return float(roots[np.argmax(self.pivot_y + self.roller_arm * np.sin(roots))])
+
+    def _chi0(self, heel):
+        return self.base_angle(heel) + self.valve_angle + self._pad[1]
+
+    def valve_lift_of(self, psi, heel):
+        """Valve lift v [m] at the finger angles ``psi`` [rad]: L_b (sin chi - sin chi_0)."""
+        lb, beta = self._pad
+        return lb * (np.sin(psi + self.valve_angle + beta) - np.sin(self._chi0(heel)))
+
+    def angle_of(self, v, heel):
+        """The finger angle psi [rad] at the valve lifts ``v`` [m] (:meth:`valve_lift_of` inverted on the branch of
+        psi_0); ValueError where the pad cannot reach the lift (|sin chi| > 1)."""
+        lb, beta = self._pad
+        chi0 = self._chi0(heel)
+        s = np.sin(chi0) + np.asarray(v, dtype=float) / lb
+        if np.any(np.abs(s) > 1.0):
+            raise ValueError(f"the valve pad at {lb:g} m from the pivot cannot give a valve lift of "
+                             f"{float(np.max(v)):g} m")
+        chi = np.arcsin(s)
+        return np.where(np.cos(chi0) >= 0.0, chi, np.pi - chi) - self.valve_angle - beta
+
+    def valve_arm(self, psi):
+        """G = dv/dpsi = L_b cos chi [m/rad]: the effective valve arm."""
+        lb, beta = self._pad
+        return lb * np.cos(psi + self.valve_angle + beta)
+
+    def lever_ratio(self, psi):
+        """i = G / L_r [-]: valve lift per unit travel of the roller centre on its arc."""
+        return self.valve_arm(psi) / self.roller_arm
+
+    def tip_contact(self, psi, heel):
+        """The pad's contact point on the valve tip across the valve axis [m], ``tip_offset`` with the valve shut:
+        (B(psi) - B(psi_0)) . a_perp + tip_offset = L_b (cos chi - cos chi_0) + tip_offset, a_perp = (cos alpha,
+        -sin alpha)."""
+        lb, beta = self._pad
+        return lb * (np.cos(psi + self.valve_angle + beta) - np.cos(self._chi0(heel))) + self.tip_offset
+
+    def angle_derivatives(self, heel, h, dh, d2h):
+        """psi, psi' [rad/rad], psi'' [rad/rad^2] from the valve law's h, h', h'' (camshaft angle)."""
+        lb, beta = self._pad
+        psi = self.angle_of(h, heel)
+        arm = self.valve_arm(psi)
+        d1 = dh / arm
+        d2 = (d2h + lb * np.sin(psi + self.valve_angle + beta) * d1 ** 2) / arm
+        return psi, d1, d2
+
+    def travel_acceleration(self, heel, h, dh, d2h):
+        """L_r psi'' [m/rad^2]: the roller centre's acceleration along its arc per camshaft angle squared."""
+        return self.roller_arm * self.angle_derivatives(heel, h, dh, d2h)[2]
+
+    def centre(self, psi):
+        """The roller centre C(psi) in the fixed frame (2, n) [m]."""
+        e, _ = _e(psi)
+        return self._pivot.reshape((2,) + (1,) * np.ndim(psi)) + self.roller_arm * e
+
+    def _w(self, heel, h, dh, d2h):
+        """C, W = -J C + C_psi psi' and W' in the fixed frame, and e_perp."""
+        psi, d1, d2 = self.angle_derivatives(heel, h, dh, d2h)
+        e, ep = _e(psi)
+        c = self.centre(psi)
+        c_psi = self.roller_arm * ep
+        w = -_quarter(c) + c_psi * d1
+        dw = -_quarter(c_psi) * d1 - self.roller_arm * e * d1 ** 2 + c_psi * d2
+        return c, w, dw, ep
+
+    def pitch_points(self, theta, heel, h, dh, d2h=None):
+        """The roller centre's path in the cam frame: q (2, n) [m] and q' = dq/dtheta (2, n) [m/rad]."""
+        c, w, _, _ = self._w(heel, h, dh, np.zeros_like(h) if d2h is None else d2h)
+        return _turn(c, -theta), _turn(w, -theta)
+
+    def pitch_radius(self, heel, h, dh, d2h):
+        """Radius of curvature of the pitch curve [m], positive convex: -|W|^3 / (W x W_theta), W_theta = -J W + W'
+        (the curve runs clockwise as theta grows)."""
+        _, w, dw, _ = self._w(heel, h, dh, d2h)
+        return -np.hypot(*w) ** 3 / _cross(w, -_quarter(w) + dw)
+
+    def contour(self, theta, heel, h, dh):
+        """The envelope of the roller circles: q - R_r n, n = J q' / |q'| (2, n) [m]."""
+        q, dq = self.pitch_points(theta, heel, h, dh)
+        return q - self.radius * _quarter(dq) / np.hypot(*dq)
+
+    def curvature(self, heel, h, dh, d2h):
+        """rho = rho_pitch - R_r [m] (:meth:`pitch_radius`)."""
+        return self.pitch_radius(heel, h, dh, d2h) - self.radius
+
+    def pitch_curve(self, theta, heel, h, dh, d2h):
+        """The roller centre's path, its derivative, radius of curvature and outward normal; depth -R_r."""
+        q, dq = self.pitch_points(theta, heel, h, dh, d2h)
+        return q, dq, self.pitch_radius(heel, h, dh, d2h), _quarter(dq) / np.hypot(*dq), -self.radius
+
+    def pressure_angle(self, heel, h, dh):
+        """beta [rad]: the contact normal J W / |W| against the roller centre's velocity e_perp (Norton (2009))."""
+        _, w, _, ep = self._w(heel, h, dh, np.zeros_like(h))
+        n = _quarter(w)
+        dot = np.sum(ep * n, axis=0)
+        return np.arctan2(_cross(ep, n) * np.sign(dot), np.abs(dot))
+
+    def contact_force(self, force, heel, h, dh):
+        """The cam's normal force N [N] that a force ``force`` [N] at the valve needs: F G / (L_r cos beta)."""
+        psi = self.angle_of(h, heel)
+        return force * self.valve_arm(psi) / (self.roller_arm * np.cos(self.pressure_angle(heel, h, dh)))
+
+    def loads(self, force, heel, h, dh):
+        """The finger's loads under a force ``force`` [N] at the valve (along its axis), at the valve lifts ``h`` [m],
+        ``dh`` [m/rad] (``force`` broadcasts against them): the roller's (its bearing's) load N [N], the pivot's
+        load |R| [N] and the bending moment at the roller's section M [N m].
+
+        Notes
+        -----
+        The finger in equilibrium under the cam's force N n at the roller centre C (n the contact normal, from the cam
+        to the roller), the valve tip's -F a at the pad's contact X = B + rho_p a and the pivot's reaction R:
+
+        .. math:: N = \\frac{F G}{L_r\\cos\\beta}, \\qquad \\mathbf R = F\\mathbf a - N\\mathbf n, \\qquad
+                  M = F\\,|(\\mathbf B - \\mathbf C)\\times\\mathbf a|
+
+        (the moment of the pad's force about the roller centre; that of the pivot's reaction is equal and opposite).
+        """
+        psi = self.angle_of(h, heel)
+        _, w, _, _ = self._w(heel, h, dh, np.zeros_like(h))
+        n = _quarter(w) / np.hypot(*w)
+        a = np.array([np.sin(self.valve_angle), np.cos(self.valve_angle)])
+        normal = self.contact_force(force, heel, h, dh)
+        pivot = np.hypot(force * a[0] - normal * n[0], force * a[1] - normal * n[1])
+        lb, beta = self._pad
+        arm = self.centre(psi) - self._pivot.reshape((2,) + (1,) * np.ndim(psi))
+        pad = lb * np.stack([np.cos(psi + beta), np.sin(psi + beta)])
+        return normal, pivot, np.abs(force * _cross(pad - arm, a))
+
+    def surface_velocities(self, omega, heel, h, dh, d2h, rho):
+        """Both surfaces at the contact point's speed along the profile, omega |q'| rho / (rho + R_r): pure rolling
+        (as :func:`valvetrain.tribology.roller_follower_velocities`, the pitch speed |q'| of this linkage)."""
+        _, w, _, _ = self._w(heel, h, dh, d2h)
+        u = omega * np.hypot(*w) * rho / (rho + self.radius)
+        return u, u
+
+    def lift_on_path(self, path, theta, base, samples=721):
+        """The forward problem: the valve lift [m] at camshaft angles ``theta`` [rad] of a cam given by its contour.
+
+        ``path(tau) -> (E, n)``: contour points and outward unit normals in the cam frame (2, m); the roller centre
+        Q = E + R_r n runs on the pitch curve.  At each theta the roller centre is the point of that curve at L_r
+        from the pivot R(-theta) P: the root of |Q(tau) - R(-theta) P|^2 - L_r^2 bracketed on ``samples``
+        parameters over the turn and a little beyond (``path`` is periodic; of the two roots, the one on the side of
+        the line from the pivot through the cam centre where the roller sits on the heel circle, nearest psi_0) and
+        refined by :func:`valvetrain.numerics.bracketed_roots`; then psi = angle of R(theta) Q - P and the lift
+        from ``base`` [m], the heel radius of the cam (:meth:`valve_lift_of`).
+        """
+        theta = np.asarray(theta, dtype=float)
+        flat = theta.ravel()
+        pivot = _turn(self._pivot[:, None] * np.ones_like(flat), -flat)
+
+        def centre(tau):
+            e, n = path(tau)
+            return e + self.radius * n
+
+        def miss(tau):
+            q = centre(tau)
+            return np.sum((q - pivot) ** 2, axis=0) - self.roller_arm ** 2
+
+        grid = np.linspace(-np.pi, np.pi, samples)
+        grid = np.concatenate([grid[-3:-1] - 2.0 * np.pi, grid, grid[1:3] + 2.0 * np.pi])
+        q = centre(grid)
+        f = np.sum((q[:, None, :] - pivot[:, :, None]) ** 2, axis=0) - self.roller_arm ** 2
+        arm = q[:, None, :] - pivot[:, :, None]
+        side = _cross(-pivot[:, :, None], arm)
+        psi0 = self.base_angle(base)
+        side0 = np.sign(_cross(-self._pivot, self.centre(np.array(psi0)) - self._pivot))
+        swing = np.abs(np.angle(np.exp(1j * (np.arctan2(arm[1], arm[0]) + flat[:, None] - psi0))))
+        change = (np.sign(f[:, :-1]) != np.sign(f[:, 1:])) & (np.sign(side[:, :-1]) == side0)
+        k = np.argmax(np.where(change, -swing[:, :-1], -np.inf), axis=1)
+        lo, hi = grid[k], grid[k + 1]
+        tau = bracketed_roots(miss, lo, hi, miss(lo), miss(hi))
+        c = _turn(centre(tau), flat) - self._pivot[:, None]
+        psi = np.arctan2(c[1], c[0])
+        psi = psi0 + np.angle(np.exp(1j * (psi - psi0)))
+        return self.valve_lift_of(psi, base).reshape(theta.shape)
+
+    def wear_error(self, offset, base, heel, h, dh):
+        """A pitch curve offset outwards by d moves the roller centre d / cos beta along its arc: lift error
+        G d / (L_r cos beta) less that of the heel circle grown by ``base``; phase shift d tan beta / |q'|."""
+        beta = self.pressure_angle(heel, h, dh)
+        psi = self.angle_of(h, heel)
+        beta0 = self.pressure_angle(heel, np.zeros(1), np.zeros(1))
+        arm0 = self.valve_arm(np.array([self.base_angle(heel)]))
+        error = self.valve_arm(psi) * offset / (self.roller_arm * np.cos(beta))
+        error0 = arm0 * base / (self.roller_arm * np.cos(beta0))
+        _, w, _, _ = self._w(heel, h, dh, np.zeros_like(h))
+        return error - error0, offset * np.tan(beta) / np.hypot(*w)

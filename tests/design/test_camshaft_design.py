@@ -1,0 +1,109 @@
+"""The camshaft chapter ([camshaft]): the torque of one lobe against the valve's own drive torque, the orders of a
+symmetric engine, the record and checks in results.json, and the refusals of bad sections."""
+
+import json
+import re
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from valvetrain.design import run
+from valvetrain.design.camshaft import camshaft_torque, lobe_set
+from valvetrain.design.crank import firing_angles
+from valvetrain.export import results_json
+from valvetrain.specification import SpecError, example_text, load_spec, parse_spec, si
+
+EXAMPLES = Path(__file__).parents[2] / "examples"
+
+SHAFT = """
+[camshaft]
+cylinder_positions_mm = {positions}
+{cylinders}
+section_lengths_mm = [20.0, 380.0]
+section_diameters_mm = [25.0, 32.0]
+journal_positions_mm = [20.0, 110.0, 200.0, 290.0, 380.0]
+drive_pitch_radius_mm = 60.0
+drive_allowable_force_N = 1100.0
+"""
+
+
+def with_shaft(text, positions="[65.0]", cylinders="cylinders = [1]"):
+    return parse_spec(text + SHAFT.format(positions=positions, cylinders=cylinders))
+
+
+@pytest.fixture(scope="module")
+def pushrod():
+    """The pushrod example: the dynamics stage's simulated force at the rated speed, four intake lobes."""
+    return run(load_spec(EXAMPLES / "pushrod-dynamics.toml"))
+
+
+def test_one_lobe_is_the_valves_own_drive_torque_from_its_dynamics(pushrod):
+    """Issue 27: the camshaft torque of a single lobe equals the per-valve drive torque.  Reference: the dynamics
+    stage's torque F dh/dtheta of the rated speed (valvetrain.dynamics.sweep), at its own angles placed at the lobe's
+    nose; and its largest and mean values in results.json (max_drive_torque_N_m, mean_drive_torque_N_m), to the
+    0.05 cam deg grid of the camshaft revolution."""
+    spec = pushrod.spec
+    engine = si(spec.engine)
+    valve = pushrod.valves["intake"]
+    rated = valve.dynamics.rated
+    lobes = lobe_set("intake", si(spec.valves["intake"], spec), engine, valve, firing_angles(engine)[0][:1])
+    assert np.allclose(camshaft_torque(lobes.noses[0] + rated.theta, [lobes])[0], rated.torque, rtol=0, atol=1e-9)
+    single = run(spec.replace({"camshaft.cylinders": [1], "camshaft.cylinder_positions_mm": [65.0]}))
+    figures, own = single.camshaft.figures, valve.dynamics.at_rated_speed
+    assert figures.lobes == 1
+    assert figures.peak == pytest.approx(own.max_drive_torque, rel=1e-3)
+    assert figures.lowest == pytest.approx(own.min_drive_torque, rel=1e-3)
+    assert figures.mean == pytest.approx(own.mean_drive_torque, abs=1e-3 * own.max_drive_torque)
+
+
+def test_one_lobe_with_friction_is_the_lubrication_stages_drive_torque():
+    """The built-in example with a lubrication section (quasi-static force, flat follower): one lobe's peak and mean
+    torque are the lubrication stage's largest and mean drive torque with friction at the rated speed."""
+    design = run(with_shaft(example_text() + "\n[valves.intake.lubrication]\n"))
+    lub = design.valves["intake"].lubrication
+    rated = int(np.argmin(np.abs(np.asarray(lub.per_speed.speed) - design.spec.engine.rated_speed_rpm * np.pi / 30)))
+    figures = design.camshaft.figures
+    assert figures.load == ("intake: quasi-static, with friction",)
+    assert figures.peak == pytest.approx(lub.rated_max_drive_torque, rel=1e-3)
+    assert figures.mean == pytest.approx(lub.per_speed.mean_drive_torque[rated], rel=1e-3)
+    assert figures.power == pytest.approx(figures.mean * design.valves["intake"].omega_cam, rel=1e-12)
+
+
+def test_the_inline_four_shows_only_the_orders_multiple_of_4(pushrod):
+    """Even firing 1-3-4-2 of four equal lobes 90 cam deg apart: the torque repeats every quarter revolution, so
+    the orders not divisible by 4 vanish (to 1e-9 of the largest)."""
+    a = np.asarray(pushrod.camshaft.figures.orders)
+    others = np.delete(a[1:], np.arange(3, a.size - 1, 4))
+    assert np.max(others) < 1e-9 * np.max(a[1:])
+    assert all(k % 4 == 0 for k in pushrod.camshaft.figures.significant_orders)
+
+
+def test_results_json_has_the_chapter_and_its_checks(pushrod):
+    out = json.loads(results_json(pushrod))
+    shaft = out["camshaft"]
+    assert shaft["lobes"] == 4 and shaft["camshaft_per_crank_revolution"] == 0.5
+    assert len(shaft["order_amplitudes_Nm"]) == 61
+    assert shaft["drive_force_max_N"] == pytest.approx(shaft["peak_torque_Nm"] / 0.060, rel=1e-12)
+    assert shaft["largest_twist_crank_deg"] == pytest.approx(2 * shaft["largest_twist_cam_deg"], rel=1e-12)
+    codes = {c["code"] for c in out["checks"] if c["code"].startswith("camshaft.")}
+    assert codes == {"camshaft.twist_timing_error", "camshaft.torsional_resonance", "camshaft.bending_deflection",
+                     "camshaft.timing_drive_force"}
+
+
+@pytest.mark.parametrize("extra, words", [
+    ("valves = [\"exhaust\"]", "camshaft.valves = ['exhaust']: allowed a non-empty list of the valves ['intake']"),
+    ("cylinders = [1, 5]", "camshaft.cylinders = [1, 5]: allowed distinct cylinders 1...4"),
+    ("section_diameters_mm = [25.0]", "camshaft: section_diameters_mm has 1 entries"),
+])
+def test_bad_sections_are_refused_naming_the_key(extra, words):
+    key = extra.split(" = ")[0]
+    shaft = [line for line in SHAFT.format(positions="[65.0, 155.0]", cylinders="").split("\n")
+             if not line.startswith(key + " ")]
+    with pytest.raises(SpecError, match=re.escape(words)):
+        parse_spec(example_text() + "\n".join(shaft) + "\n" + extra + "\n")
+
+
+def test_positions_outside_the_journals_are_refused():
+    with pytest.raises(SpecError, match="every lobe lies between the first and the last journal"):
+        with_shaft(example_text(), positions="[10.0]")

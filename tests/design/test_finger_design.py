@@ -1,0 +1,130 @@
+"""A finger follower in the design chain (follower = "finger"): the valve law through the linkage, the cam's normal
+force by the power balance, the lash adjuster's motion ratio from the geometry, and the refusals that name the key."""
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from valvetrain.design import run
+from valvetrain.design.drive import LoadMap, contact_loads
+from valvetrain.design.dynamics import adjuster_ratio
+from valvetrain.followers import PivotedFollower
+from valvetrain.specification import SpecError, parse_spec, si
+
+EXAMPLE = Path(__file__).parents[2] / "examples" / "modern-dohc-roller-finger.toml"
+
+
+def example_text(drop_dynamics=True):
+    """The shipped modern example, without its dynamics sweeps (the stages under test do not need them)."""
+    text = EXAMPLE.read_text(encoding="utf-8")
+    return text.replace("[valves.intake.dynamics]\nspeeds = 40\n", "").replace(
+        "[valves.exhaust.dynamics]\nspeeds = 40\n", "") if drop_dynamics else text
+
+
+@pytest.fixture(scope="module")
+def design():
+    return run(parse_spec(example_text()))
+
+
+def test_the_valve_lift_is_the_law_and_the_cam_is_the_finger_s(design):
+    """The law is the valve's (rocker ratio 1): the valve lift is the law's lift; the follower is the finger of the
+    example's keys."""
+    v = design.valves["intake"]
+    theta = np.linspace(-1.0, 1.0, 9)
+    np.testing.assert_array_equal(v.cam.valve_lift(theta), v.law.lift(theta))
+    f = v.cam.follower_model
+    assert isinstance(f, PivotedFollower) and f.roller_arm == pytest.approx(0.0225) and f.pad_arm == pytest.approx(0.036)
+    assert v.profile.finger is not None and v.profile.finger.min_ratio <= v.profile.finger.rest_ratio
+
+
+def test_contact_force_by_the_power_balance(design):
+    """The cam's normal force N of a valve force F by the power balance N (dC/dtheta . n) = F dv/dtheta, with the
+    roller centre's velocity dC/dtheta by central differences (step 1e-6 rad) of its position in the fixed frame and n
+    the contact normal (the pitch curve's outward normal turned back into the fixed frame): contact_loads against it
+    to 1e-6 relative."""
+    v = design.valves["intake"]
+    cam, f, heel = v.cam, v.cam.follower_model, v.cam.heel_radius
+    theta = np.array([-0.6, -0.4, -0.15, 0.1, 0.3, 0.55])   # open, off the nose (dv/dtheta != 0)
+    force = np.full((1, theta.size), 1000.0)
+    got = contact_loads(cam, [LoadMap("quasi-static", np.array([1.0]), theta, force)])[0].force[0]
+    step = 1e-6
+
+    def centre(t):
+        return f.centre(f.angle_of(cam.law.lift(t), heel))
+    velocity = (centre(theta + step) - centre(theta - step)) / (2 * step)
+    h, dh, d2h = cam.law.derivatives(theta)[:3]
+    n = f.pitch_curve(theta, heel, h, dh, d2h)[3]
+    c, s = np.cos(theta), np.sin(theta)
+    normal = np.stack([c * n[0] - s * n[1], s * n[0] + c * n[1]])
+    assert np.all(np.abs(dh) > 1e-4)
+    want = 1000.0 * dh / np.sum(velocity * normal, axis=0)
+    np.testing.assert_allclose(got, want, rtol=1e-6)
+
+
+def test_the_lash_adjuster_at_the_pivot_moves_by_the_finger_s_ratio_less_one(design):
+    """(i_0 - 1) with i_0 = dv/d(L_r psi) on the heel circle, by a central difference (step 1e-7 rad) of the valve lift
+    of the hand-built linkage: the pad centre B = P + R(psi) (L_p, d_p), tip at B . a + rho_p."""
+    spec = parse_spec(example_text())
+    valve = si(spec).valves["intake"]
+    f = design.valves["intake"].cam.follower_model
+    psi0 = f.base_angle(valve.cam.base_radius)
+    a = np.array([np.sin(f.valve_angle), np.cos(f.valve_angle)])
+
+    def tip(p):
+        turn = np.array([[np.cos(p), -np.sin(p)], [np.sin(p), np.cos(p)]])
+        return (np.array([f.pivot_x, f.pivot_y]) + turn @ np.array([f.pad_arm, f.pad_drop])) @ a
+    i0 = (tip(psi0 + 1e-7) - tip(psi0 - 1e-7)) / (2e-7 * f.roller_arm)
+    assert adjuster_ratio(valve, design.valves["intake"].law) == pytest.approx(i0 - 1.0, rel=1e-7)
+
+
+@pytest.mark.parametrize("old, new, words", [
+    ("opens_deg = 8.0\n", "opens_deg = 8.0\nrocker_ratio = 1.6\n", "rocker_ratio = 1.6: allowed 1 with cam.follower"),
+    ('layout = "rocker"\nvalve_arm_mm = 37.1            #', 'layout = "direct"\nvalve_arm_mm = 37.1            #',
+     "drive.layout = 'direct': allowed \"rocker\""),
+    ("finger_roller_arm_mm = 22.5    # pivot to roller centre\n", "", "finger_roller_arm_mm is required"),
+    ("finger_roller_arm_mm = 22.5", "finger_roller_arm_mm = 2.5", "cam.finger_roller_arm_mm = 2.5 from the pivot"),
+    ("finger_valve_angle_deg = 12.0", "finger_valve_angle_deg = 80.0", "cam.finger_valve_angle_deg = 80: the valve pad"),
+])
+def test_refusals_name_the_key(old, new, words):
+    text = example_text()
+    assert old in text
+    with pytest.raises(SpecError, match=words.replace("(", r"\(")):
+        run(parse_spec(text.replace(old, new, 1)))
+
+
+def test_the_camshaft_link_is_reduced_to_the_valve_by_the_finger_s_ratio(design):
+    """The camshaft's stiffness under the cam, k_cam = 1 / (its deflection under 1 N, eq. 7.3 of Valve-train practical
+    works (n.d.)), reaches the valve divided by i_0^2, i_0 = 1.6492 the finger's ratio on the heel circle (central
+    difference of the hand-built linkage as above), not by rocker_ratio^2 = 1; in series with the lash adjuster's
+    oil column (its own stage's stiffness at the valve)."""
+    from valvetrain.design.dynamics import adjuster_link, build_train
+    from valvetrain.strength import camshaft_deflection
+
+    spec = parse_spec(example_text(drop_dynamics=False))
+    valve = si(spec).valves["intake"]
+    v = design.valves["intake"]
+    params = build_train(valve.dynamics, valve, v.law, v.drive, "valves.intake", v.cam.cam_speed)[1]
+    p = valve.parts
+    k_cam = 1.0 / camshaft_deflection(1.0, p.cam_to_bearing, p.camshaft_span - p.cam_to_bearing, p.camshaft_diameter,
+                                      p.camshaft_bore, p.camshaft_modulus)
+    i0 = adjuster_ratio(valve, v.law) + 1.0   # checked against the hand-built linkage above
+    assert i0 == pytest.approx(1.6492, abs=1e-4)
+    oil = adjuster_link(valve, v.law, v.drive, v.cam.cam_speed, "valves.intake")[0]
+    assert params.links[0] == pytest.approx(1.0 / (i0**2 / k_cam + 1.0 / oil), rel=1e-12)
+
+
+def test_the_camshaft_drive_torque_is_the_valve_force_s_power(design):
+    """Without friction the camshaft's torque is the power at the valve over its speed, T = F dv/dtheta (virtual
+    work): the lubrication stage's drive torque less its friction torque, under the cam's normal force of F = 1000 N at
+    the valve (contact_loads), against 1000 N x dv/dtheta."""
+    from valvetrain.design.lubrication import contact_map
+
+    valve = si(parse_spec(example_text())).valves["intake"]
+    v = design.valves["intake"]
+    theta = np.array([-0.6, -0.3, 0.0, 0.2, 0.5])
+    normal = contact_loads(v.cam, [LoadMap("quasi-static", np.array([1.0]), theta, np.full((1, 5), 1000.0))])[0]
+    c = contact_map(valve.lubrication, v.cam, valve.parts.cam_width, valve.parts.contact_modulus, theta,
+                    normal.force, np.array([[300.0]]))
+    dv = v.law.derivatives(theta)[1]
+    np.testing.assert_allclose(c["drive_torque"][0] - c["friction_torque"][0], 1000.0 * dv, rtol=1e-12, atol=1e-12)

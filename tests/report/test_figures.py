@@ -1,0 +1,66 @@
+"""Issue 24: the contour drawing, the curvature plot and the timing diagram of the appendix example (the appendix of
+Valve-train practical works (n.d.): intake opens 26 deg before the TDC and closes 78 deg after the BDC, Phi = 27 + 6
++ 38 = 71 cam deg from the end of the ramp to the nose)."""
+
+import numpy as np
+import pytest
+
+from valvetrain.design import run
+from valvetrain.report import plots
+from valvetrain.report.i18n import TEXT
+
+from appendix import appendix_spec
+
+
+@pytest.fixture(scope="module")
+def results():
+    return run(appendix_spec())
+
+
+def test_the_contour_turns_the_way_its_arrow_shows(results):
+    """Turned counter-clockwise (the drawn arrow) by its camshaft angle theta, the contour point of theta lies at the
+    height r_heel + h_T(theta) above the centre: the follower's face, where the law puts it (Shang Hanji (1988), eq.
+    (2.15): p = (r + h) u + h' t, u = (sin theta, cos theta)).  Turned the other way it does not."""
+    v = results.valves["intake"]
+    d = plots.contour_data(v)
+    theta = v.contour_angle
+    k = np.flatnonzero((theta > -1.2) & (theta < -0.3))        # the opening flank, before the nose
+    x, y = d["x_mm"][k], d["y_mm"][k]
+    face = d["heel_mm"] + 1e3 * v.law.lift(theta[k])
+
+    def height(turn):
+        return x * np.sin(turn) + y * np.cos(turn)              # y after a counter-clockwise turn by ``turn``
+
+    assert height(theta[k]) == pytest.approx(face, abs=1e-6)
+    assert np.max(np.abs(height(-theta[k]) - face)) > 1.0
+    assert np.all(x < 0.0)                                      # the opening flank is drawn on the left
+
+
+def test_the_contour_marks_the_nose_the_events_and_the_tdc(results):
+    rays = {key: (cam, crank) for key, cam, crank in plots.contour_data(results.valves["intake"])["rays"]}
+    assert rays["opens"] == pytest.approx((-71.0, -26.0))       # the appendix: 26 deg before TDC, Phi = 71 cam deg
+    assert rays["closes"] == pytest.approx((71.0, 180.0 + 78.0))
+    assert rays["nose"] == pytest.approx((0.0, (258.0 - 26.0) / 2.0))
+    assert rays["tdc"] == pytest.approx((-58.0, 0.0))           # (0 - 116) / 2: the timing reference
+    fig = plots.draw_contour(plots.contour_data(results.valves["intake"]), TEXT["ru"])
+    texts = [t.get_text() for t in fig.axes[0].texts]
+    assert "открытие, -26° ПКВ" in texts and TEXT["ru"]["rotation"] in texts
+
+
+def test_the_curvature_plot_draws_the_limits_the_checks_use(results):
+    """The recommended minimum radius 2 mm (Shang Hanji (1988), section 2.1) and the undercut at rho <= 0, as lines;
+    the smallest radius marked where the profile has it (11.885 mm at the nose: r0 + h_T max + h'' of the appendix)."""
+    d = plots.curvature_data(results.valves["intake"])
+    assert d["rho_min_limit_mm"] == 2.0 and d["undercut_mm"] == 0.0
+    assert d["rho_min"][1] == pytest.approx(11.885, abs=1e-3) and d["rho_min"][0] == pytest.approx(0.0, abs=1e-6)
+    ax = plots.draw_curvature(d, TEXT["en"]).axes[0]
+    levels = sorted(line.get_ydata()[0] for line in ax.get_lines() if len(set(line.get_ydata())) == 1
+                    and line.get_xdata()[0] == 0 and line.get_xdata()[1] == 1)
+    assert levels == [0.0, 2.0]
+
+
+def test_the_timing_diagram_writes_the_events(results):
+    d = plots.timing_data(results.valves)
+    assert d["events_crank_deg"]["intake"] == pytest.approx((-26.0, 258.0))
+    texts = [t.get_text() for t in plots.draw_timing(d, TEXT["en"]).axes[0].texts]
+    assert "-26°" in texts and "258°" in texts

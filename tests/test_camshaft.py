@@ -1,0 +1,101 @@
+"""The whole camshaft's physics (valvetrain.camshaft): torque of the lobes, orders, torsion, frequencies, bending."""
+
+import numpy as np
+import pytest
+
+from valvetrain import camshaft as shaft
+
+N = 3600
+PSI = 2.0 * np.pi * np.arange(N) / N
+
+
+def test_four_equal_lobes_at_90_cam_deg_keep_only_the_orders_multiple_of_4():
+    """An inline four (firing 1-3-4-2, even: 0, 180, 540, 360 crank deg) puts its four lobes 90 cam deg apart, so the
+    sum repeats every quarter revolution: only orders 4, 8, ... survive (Fourier series of a function of period
+    2 pi / 4).  The lobe: an arbitrary smooth torque over +-60 cam deg."""
+    noses = shaft.lobe_noses(np.radians(107.0), np.radians([0.0, 180.0, 540.0, 360.0]), 4)
+    theta = np.linspace(-np.pi / 3, np.pi / 3, 801)
+    torque = 12.0 * np.sin(3 * theta) * np.cos(1.5 * theta) ** 2 + 2.0 * np.cos(1.5 * theta)
+    total = shaft.lobe_torques(PSI, theta, torque, noses).sum(axis=0)
+    a = shaft.harmonic_orders(total, 40)
+    others = np.delete(a[1:], np.arange(3, 40, 4))
+    assert a[4] > 1.0
+    assert np.max(others) < 1e-9 * np.max(a)
+
+
+def test_single_lobe_of_a_harmonic_law_has_the_closed_form_orders():
+    """A lobe h = H/2 (1 + cos theta) over the whole revolution with a spring F0 + k h and a mass m at the camshaft
+    speed omega: T = (F0 + k h + m omega^2 h'') h'.  By hand, with h' = -(H/2) sin theta, h'' = -(H/2) cos theta:
+    T = -(H/2)(F0 + kH/2) sin theta + (m omega^2 - k) H^2/8 sin 2 theta, so order 1 has (H/2)(F0 + kH/2), order 2
+    |m omega^2 - k| H^2 / 8, every other order and the mean (the work of conservative forces) nothing."""
+    H, F0, k, m, omega = 0.01, 300.0, 3.0e4, 0.4, 400.0
+    theta = np.linspace(-np.pi, np.pi, 20001)
+    h, dh, d2h = H / 2 * (1 + np.cos(theta)), -H / 2 * np.sin(theta), -H / 2 * np.cos(theta)
+    torque = (F0 + k * h + m * omega**2 * d2h) * dh
+    total = shaft.lobe_torques(PSI, theta, torque, np.array([0.7])).sum(axis=0)
+    a = shaft.harmonic_orders(total, 10)
+    assert a[1] == pytest.approx(H / 2 * (F0 + k * H / 2), rel=1e-6)      # 1.65 N m
+    assert a[2] == pytest.approx(abs(m * omega**2 - k) * H**2 / 8, rel=1e-6)   # 0.1625 N m
+    assert a[0] < 1e-6 * a[1]
+    assert np.max(a[3:]) < 1e-6 * a[1]
+
+
+def test_twist_of_two_sections_in_series_against_a_hand_calculation():
+    """Sections 100 mm of d 20 mm and 200 mm of d 30 mm (bore 10 mm), G = 80 GPa; stations at 150 mm (T1 = 10 N m)
+    and 300 mm (T2 = 4 N m).  J1 = pi 0.02^4 / 32 = 1.5707963e-8 m^4, J2 = pi (0.03^4 - 0.01^4) / 32 = 7.8539816e-8
+    m^4.  The shaft up to 150 mm carries T1 + T2 = 14 N m: 14 (0.1 / (G J1) + 0.05 / (G J2)) = 14 (7.9577472e-5 +
+    7.9577472e-6) = 1.2254931e-3 rad; beyond it T2 alone: + 4 x 0.15 / (G J2) = 4 x 2.3873241e-5 = 9.5492966e-5,
+    1.3209861e-3 rad at 300 mm."""
+    c = shaft.shaft_compliance(np.array([0.15, 0.3]), [0.1, 0.2], [0.02, 0.03], [0.0, 0.01], 80e9)
+    phi = shaft.twist(c, np.array([[10.0], [4.0]]))[:, 0]
+    assert phi == pytest.approx([1.2254931e-3, 1.3209861e-3], rel=1e-7)
+
+
+def test_one_grounded_mass_and_two_free_masses_against_their_closed_forms():
+    """sqrt(k / J) (Den Hartog (1956)): k = 5e4 N m/rad, J = 2e-4 kg m^2 -> 15811.388 rad/s; two free masses
+    J1 = 1e-4, J2 = 3e-4 on k = 5e4: sqrt(k (J1 + J2) / (J1 J2)) = sqrt(5e4 x 4e-4 / 3e-8) = 25819.889 rad/s."""
+    assert shaft.torsional_frequencies([5e4], [2e-4])[0] == pytest.approx(15811.388, rel=1e-7)
+    free = shaft.torsional_frequencies([5e4], [1e-4, 3e-4], grounded=False)
+    assert free.size == 1 and free[0] == pytest.approx(25819.889, rel=1e-7)
+
+
+def test_two_equal_grounded_masses_against_the_characteristic_equation():
+    """Ground -k- J -k- J: det [[2k - w^2 J, -k], [-k, k - w^2 J]] = 0 gives w^2 = (3 -+ sqrt 5)/2 k/J; with k = 1e4,
+    J = 1e-4: w = 6180.3399 and 16180.340 rad/s."""
+    w = shaft.torsional_frequencies([1e4, 1e4], [1e-4, 1e-4])
+    assert w == pytest.approx([6180.3399, 16180.340], rel=1e-7)
+
+
+def test_stations_stiffness_from_the_compliance_of_the_pieces_between_them():
+    """A uniform shaft d 25 mm, G = 81 GPa: the piece of 40 mm to the first station k = G J / l = 81e9 x 3.8349520e-8
+    / 0.04 = 77657.78 N m/rad, the next piece of 90 mm 34514.57 N m/rad."""
+    c = shaft.shaft_compliance(np.array([0.04, 0.13]), [0.3], [0.025], [0.0], 81e9)
+    assert shaft.station_stiffness(c) == pytest.approx([77657.78, 34514.57], rel=1e-6)
+
+
+def test_lumped_shaft_inertia_of_a_uniform_shaft():
+    """Uniform shaft 300 mm, d 20 mm, rho 7850: rho J = 7850 x 1.5707963e-8 = 1.2330751e-4 kg m^2 per m.  Stations
+    at 100 and 200 mm: the first gets half of 0-100 and half of 100-200 (100 mm: 1.2330751e-5), the second half of
+    100-200 and all of 200-300 (150 mm: 1.8496127e-5); the half of 0-100 at the held drive end is left out."""
+    inertia = shaft.lumped_shaft_inertia(np.array([0.1, 0.2]), [0.3], [0.02], [0.0], 7850.0)
+    assert inertia == pytest.approx([1.2330751e-5, 1.8496127e-5], rel=1e-7)
+
+
+def test_bending_deflection_on_the_span_between_its_journals():
+    """Journals at 0, 100, 250 mm; a lobe at 160 mm lies on the span 100-250 mm: a = 60, b = 90 mm, l = 150 mm.
+    P = 3000 N, d = 30 mm solid, E = 210 GPa, I = pi 0.03^4 / 64 = 3.9760782e-8 m^4: f = P a^2 b^2 / (3 E I l) =
+    3000 x 0.0036 x 0.0081 / (3 x 210e9 x 3.9760782e-8 x 0.15) = 2.3280e-5 m (Shigley (2011), table A-9, case 6)."""
+    f = shaft.lobe_deflection(np.array([3000.0]), np.array([0.16]), np.array([0.0, 0.1, 0.25]), np.array([0.03]),
+                              np.array([0.0]), 210e9)
+    assert f[0] == pytest.approx(3000 * 0.0036 * 0.0081 / (3 * 210e9 * 3.9760782e-8 * 0.15), rel=1e-7)
+    assert f[0] == pytest.approx(2.3280e-5, rel=1e-4)
+
+
+def test_lobe_noses_of_a_four_stroke_turn_at_half_the_crank_angle():
+    """Crank 100 deg + firing 540 deg = 640 crank deg -> 320 cam deg."""
+    assert np.degrees(shaft.lobe_noses(np.radians(100.0), np.radians([540.0]), 4)) == pytest.approx([320.0])
+
+
+def test_too_many_orders_are_refused():
+    with pytest.raises(ValueError, match="orders = 8: allowed 0 ... 7"):
+        shaft.harmonic_orders(np.zeros(16), 8)
