@@ -1,85 +1,84 @@
-"""Benchmark: a whole ``valvetrain run`` of the built-in example.
+"""Benchmark: a whole ``valvetrain run``, the command itself, beside the same command of a baseline tree.
 
-Run on demand: ``python benchmarks/bench_run.py``.  Times, best of several repeats:
+Run on demand: ``python benchmarks/bench_run.py [--baseline REF] [--repeats N]``.
 
-* in this process, the calculation (``design.run``) and the writing of every artefact (JSON, CSV, DXF, plots,
-  report) with the default figures (``figures="main"``) and, as the baseline in the same run, with every figure
-  (``figures="all"``, what a run wrote before ``--figures``); the default figures drawn in other processes
-  (:class:`valvetrain.report.drawing.FigureProcess`, as the command draws them on Linux) against those drawn here;
-  and the peak Python memory of one full run;
-* the command itself, ``python -m valvetrain run --out ...`` in a new process (imports included), with the default
-  figures and with ``--figures all`` and ``--figures none``, alternately: wall time and the processor time of the
-  process (on a machine that others use the wall time is the processor time plus the wait).
+The baseline is the package of the commit ``REF`` (default :data:`BASELINE`, the tree before the work on the run's
+speed), unpacked into a temporary folder (``git archive``); each case runs ``python -m valvetrain run ... --out DIR``
+in a new process, imports included, alternately with this tree's ``src`` and the baseline's on ``PYTHONPATH``, after
+one run of each that is not counted (it fills numba's on-disk cache of the unpacked baseline, and the page cache):
+the times are those of warm runs.  Cases: the built-in example with the default figures and with ``--figures none``,
+and ``examples/pushrod-dynamics.toml`` (a ``[dynamics]`` section) with the default figures.  For each: the best and
+the median wall time and processor time (the process and its children: the drawing processes) of ``--repeats``
+runs, and the load average of the machine while they ran (on a machine that others use the wall time is the
+processor time plus the wait, and a core that another process holds stretches it).
 """
 
+import argparse
 import os
+from pathlib import Path
 import resource
+import statistics
 import subprocess
 import sys
 import tempfile
 import time
-import tracemalloc
-from pathlib import Path
 
-from valvetrain.design import run
-from valvetrain.export import write_outputs
-from valvetrain.report.drawing import FigureProcess
-from valvetrain.specification import example_spec
-
-REPEATS = 5
-COMMAND_REPEATS = 3
+ROOT = Path(__file__).parents[1]
+BASELINE = "7cf5134"
+"""The commit before the work on the speed of ``valvetrain run`` (issue 22)."""
 GOAL_S = 2.0
+"""Wall time of ``valvetrain run`` of the built-in example with the default figures, on a 2-core machine [s]."""
+CASES = (("built-in example, default figures", []),
+         ("built-in example, --figures none", ["--figures", "none"]),
+         ("examples/pushrod-dynamics.toml, default figures", [str(ROOT / "examples" / "pushrod-dynamics.toml")]))
 
 
-def _command(out, figures):
-    """(wall, processor) time [s] of one ``valvetrain run`` in a new process."""
+def command(src, args, out):
+    """(wall, processor) time [s] of one ``valvetrain run`` of the package in ``src``, in a new process."""
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     t0 = time.perf_counter()
-    subprocess.run([sys.executable, "-m", "valvetrain", "run", "--out", str(out), "--figures", figures],
-                   check=True, stdout=subprocess.DEVNULL, env=os.environ.copy())
+    subprocess.run([sys.executable, "-m", "valvetrain", "run", *args, "--out", str(out)], check=True,
+                   stdout=subprocess.DEVNULL, env={**os.environ, "PYTHONPATH": str(src)})
     wall = time.perf_counter() - t0
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     return wall, (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
 
 
+def baseline_tree(ref, folder):
+    """The ``src`` folder of commit ``ref``, unpacked into ``folder``."""
+    archive = subprocess.run(["git", "-C", str(ROOT), "archive", ref, "src"], check=True, capture_output=True).stdout
+    subprocess.run(["tar", "-x", "-C", str(folder)], input=archive, check=True)
+    return folder / "src"
+
+
+def _line(label, times):
+    walls, cpus = [w for w, _ in times], [c for _, c in times]
+    return (f"  {label:10s} wall best {min(walls):5.2f} s, median {statistics.median(walls):5.2f} s; "
+            f"processor best {min(cpus):5.2f} s, median {statistics.median(cpus):5.2f} s")
+
+
 def main():
-    spec = example_spec()
-    calc, write, forked = [], {"main": [], "all": []}, []
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--baseline", default=BASELINE, help=f"commit of the baseline (default {BASELINE})")
+    parser.add_argument("--repeats", type=int, default=5, help="counted runs of each case and tree (default 5)")
+    options = parser.parse_args()
     with tempfile.TemporaryDirectory() as tmp:
-        for i in range(REPEATS):
-            for figures in write:
-                t0 = time.perf_counter()
-                results = run(spec)
-                t1 = time.perf_counter()
-                write_outputs(results, Path(tmp) / f"{figures}{i}", figures=figures)
-                t2 = time.perf_counter()
-                calc.append(t1 - t0)
-                write[figures].append(t2 - t1)
-            if sys.platform.startswith("linux"):
-                t0 = time.perf_counter()
-                write_outputs(results, Path(tmp) / f"forked{i}", drawer=FigureProcess())
-                forked.append(time.perf_counter() - t0)
-        tracemalloc.start()
-        write_outputs(run(spec), Path(tmp) / "mem")
-        peak = tracemalloc.get_traced_memory()[1]
-        tracemalloc.stop()
-        commands = {"main": [], "all": [], "none": []}
-        for i in range(COMMAND_REPEATS):
-            for figures in commands:
-                commands[figures].append(_command(Path(tmp) / f"cmd-{figures}{i}", figures))
-    print(f"design.run (calculation):                          best {min(calc) * 1e3:7.1f} ms")
-    print(f"write_outputs, default figures (main):             best {min(write['main']) * 1e3:7.1f} ms")
-    print(f"write_outputs, every figure (all; the baseline):   best {min(write['all']) * 1e3:7.1f} ms")
-    if forked:
-        print(f"write_outputs, default figures drawn in other processes: best {min(forked) * 1e3:7.1f} ms wall "
-              f"(drawn here: {min(write['main']) * 1e3:7.1f} ms, the baseline)")
-    print(f"peak traced Python memory of one run: {peak / 2**20:.1f} MiB")
-    for figures, label in (("main", "default figures (main)"), ("all", "--figures all (the baseline)"),
-                           ("none", "--figures none")):
-        wall, cpu = min(w for w, _ in commands[figures]), min(c for _, c in commands[figures])
-        print(f"valvetrain run, {label + ':':31s} best wall {wall:5.2f} s, best processor {cpu:5.2f} s "
-              f"(goal <= {GOAL_S:g} s)")
-    print(f"load average during the run: {os.getloadavg()[0]:.1f} on {os.cpu_count()} cores")
+        tmp = Path(tmp)
+        trees = {"this tree": ROOT / "src", f"{options.baseline}": baseline_tree(options.baseline, tmp)}
+        for title, args in CASES:
+            times = {label: [] for label in trees}
+            for label, src in trees.items():
+                command(src, args, tmp / "warm")
+            load = [os.getloadavg()[0]]
+            for i in range(options.repeats):
+                for label, src in trees.items():
+                    times[label].append(command(src, args, tmp / "out"))
+                load.append(os.getloadavg()[0])
+            goal = f" (goal <= {GOAL_S:g} s wall on 2 cores)" if not args else ""
+            print(f"valvetrain run, {title}{goal}: {options.repeats} warm runs each, load average "
+                  f"{min(load):.1f}-{max(load):.1f} on {os.cpu_count()} cores")
+            for label, t in times.items():
+                print(_line(label, t))
 
 
 if __name__ == "__main__":

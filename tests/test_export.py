@@ -201,4 +201,56 @@ def test_an_error_in_the_drawing_process_is_raised_and_nothing_is_written(tmp_pa
     with pytest.raises(ValueError, match="allowed: main, all, none"):
         write_outputs(run(appendix_spec()), tmp_path / "d", figures="some", drawer=drawer)
     assert not (tmp_path / "d").exists()
-    assert not any(p.is_alive() for p in drawer._processes)
+    assert not drawer._process.is_alive()
+
+
+def _second_drawer(monkeypatch, act):
+    """Make the second drawer's share of write_plots (share (1, 2), drawn in the process the first drawer forks) run
+    ``act(folder)`` instead; the first drawer's share is drawn as usual."""
+    from valvetrain.report import plots
+
+    draw = plots.write_plots
+
+    def write_plots(results, folder, lang="en", figures="main", share=(0, 1)):
+        if share == (1, 2):
+            act(folder)
+        return draw(results, folder, lang, figures, share)
+
+    monkeypatch.setattr(plots, "write_plots", write_plots)
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="the figures are drawn in a forked process on Linux")
+def test_an_error_in_the_second_drawing_process_is_raised(tmp_path, monkeypatch):
+    """The second drawer is forked by the first after the request: its error, too, reaches the caller."""
+    def fail(folder):
+        raise OSError("disk full (made by the test)")
+
+    _second_drawer(monkeypatch, fail)
+    with pytest.raises(OSError, match="made by the test"):
+        write_outputs(run(appendix_spec()), tmp_path / "d", drawer=FigureProcess(processes=2))
+    assert not (tmp_path / "d").exists()
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="the figures are drawn in a forked process on Linux")
+def test_stopping_the_drawing_ends_the_drawer_the_first_forked(tmp_path, monkeypatch):
+    """stop() while the second drawer still draws ends it too (the first drawer ends it before it ends itself): no
+    process is left to write into a folder the caller removes."""
+    import os
+    import time
+
+    def hang(folder):
+        (tmp_path / "pid").write_text(str(os.getpid()))
+        time.sleep(60)
+
+    _second_drawer(monkeypatch, hang)
+    drawer = FigureProcess(processes=2)
+    drawer.submit(run(appendix_spec()), tmp_path, "en", "main")
+    for _ in range(600):
+        if (tmp_path / "pid").exists() and (tmp_path / "pid").read_text():
+            break
+        time.sleep(0.1)
+    pid = int((tmp_path / "pid").read_text())
+    drawer.stop()
+    assert not drawer._process.is_alive()
+    with pytest.raises(ProcessLookupError):
+        os.kill(pid, 0)

@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from valvetrain.numerics import bounded_minimum, bracketed_roots, extremum
+from valvetrain.numerics import bounded_minimum, bracketed_roots, extremum, level_span
 
 
 def test_extremum_refines_a_smooth_maximum():
@@ -79,3 +79,22 @@ def test_integrals_of_several_functions_each_over_its_interval():
     for i in range(3):
         one = cumulative_integral(lambda x, i=i: np.sin(k[i] * x), [a[i], b[i]], breakpoints[i])[-1]
         assert got[i] == pytest.approx(one, rel=1e-15)
+
+
+def test_level_span_solves_both_crossings_to_round_off():
+    """sin x = 0.5 on [0, pi]: x = arcsin 0.5 = pi/6 and pi - pi/6 (closed form), to a few units in the last place."""
+    rise, fall = level_span(np.sin, 0.0, np.pi, 0.5)
+    assert rise == pytest.approx(np.pi / 6.0, rel=4e-16)
+    assert fall == pytest.approx(5.0 * np.pi / 6.0, rel=4e-16)
+
+
+def test_level_span_takes_a_sample_on_the_level():
+    """1 - |x| = 0.5 at x = -0.5 and 0.5 (closed form), both of them samples of the five on [-1, 1]: the crossing is
+    the sample itself (no bracket with a sign change to refine)."""
+    assert level_span(lambda x: 1.0 - np.abs(x), -1.0, 1.0, 0.5, samples=5) == (-0.5, 0.5)
+
+
+def test_level_span_is_nan_where_the_level_is_not_crossed_twice():
+    """Never above the level, or above it at an end of the interval: no span."""
+    assert np.isnan(level_span(np.sin, 0.0, np.pi, 2.0)).all()
+    assert np.isnan(level_span(np.cos, 0.0, np.pi, 0.5)).all()

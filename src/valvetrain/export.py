@@ -3,6 +3,7 @@
 from contextlib import nullcontext
 import csv
 import json
+import math
 from pathlib import Path
 
 import numpy as np
@@ -24,8 +25,19 @@ def _cell(x):
         return ""
     if isinstance(x, bool):
         return str(x).lower()
-    x = float(x)
-    return f"{x:.10g}" if np.isfinite(x) else ""
+    return _number(float(x))
+
+
+def _number(x):
+    """A float's cell: 10 significant digits, empty where it is not finite."""
+    return f"{x:.10g}" if math.isfinite(x) else ""
+
+
+def _cells(column):
+    """The cells of a column (:func:`_cell` of each value); an array of floats converted to Python floats at once."""
+    if isinstance(column, np.ndarray) and column.dtype.kind == "f":
+        return [_number(x) for x in column.tolist()]
+    return [_cell(x) for x in column]
 
 
 def write_csv(path, columns, comments=()) -> None:
@@ -40,8 +52,7 @@ def write_csv(path, columns, comments=()) -> None:
         fh.writelines(f"# {line}\n" for line in comments)
         w = csv.writer(fh)
         w.writerow(names)
-        for row in zip(*(columns[n] for n in names), strict=True):
-            w.writerow([_cell(x) for x in row])
+        w.writerows(zip(*(_cells(columns[n]) for n in names), strict=True))
 
 
 def write_dxf(path, valve) -> None:

@@ -311,8 +311,9 @@ def bracketed_roots(fn, a, b, fa, fb, max_iterations=100):
 def level_span(fn, a, b, level, samples=4001):
     """First upward and last downward crossing of ``level`` by a function on [a, b].
 
-    ``fn`` is sampled at ``samples`` points; each crossing is then solved with
-    :func:`scipy.optimize.brentq` between its neighbouring samples.
+    ``fn`` is sampled at ``samples`` points; both crossings are then refined together by
+    :func:`bracketed_roots` between their neighbouring samples, to round-off (no SciPy import on the path of a
+    design).
 
     Parameters
     ----------
@@ -334,19 +335,18 @@ def level_span(fn, a, b, level, samples=4001):
     >>> [round(x, 9) for x in level_span(np.sin, 0.0, np.pi, 0.5)]
     [0.523598776, 2.617993878]
     """
-    from scipy.optimize import brentq
-
     x = np.linspace(a, b, samples)
-    above = np.flatnonzero(np.asarray(fn(x)) > level)
+    f = np.asarray(fn(x), dtype=float) - level
+    above = np.flatnonzero(f > 0.0)
     if above.size == 0 or above[0] == 0 or above[-1] == x.size - 1:
         return float("nan"), float("nan")
-
-    def f(t):
-        return float(fn(np.array([t]))[0]) - level
-
-    rise = brentq(f, x[above[0] - 1], x[above[0]], xtol=1e-14)
-    fall = brentq(f, x[above[-1]], x[above[-1] + 1], xtol=1e-14)
-    return rise, fall
+    lo, hi = np.array([above[0] - 1, above[-1]]), np.array([above[0], above[-1] + 1])
+    roots = np.where(f[lo] == 0.0, x[lo], x[hi])      # a sample on the level is the crossing itself
+    inside = (f[lo] != 0.0) & (f[hi] != 0.0)
+    if inside.any():
+        roots[inside] = bracketed_roots(lambda t: np.asarray(fn(t), dtype=float) - level, x[lo][inside],
+                                        x[hi][inside], f[lo][inside], f[hi][inside])
+    return float(roots[0]), float(roots[1])
 
 
 def invert_angle(angle_of, target, samples=4097):

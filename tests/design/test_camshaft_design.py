@@ -12,7 +12,9 @@ from valvetrain.design import run
 from valvetrain.design.camshaft import camshaft_torque, lobe_set
 from valvetrain.design.crank import firing_angles
 from valvetrain.export import results_json
-from valvetrain.specification import SpecError, example_text, load_spec, parse_spec, si
+from valvetrain.specification import SpecError, load_spec, parse_spec, si
+
+from appendix import appendix_text
 
 EXAMPLES = Path(__file__).parents[2] / "examples"
 
@@ -58,9 +60,9 @@ def test_one_lobe_is_the_valves_own_drive_torque_from_its_dynamics(pushrod):
 
 
 def test_one_lobe_with_friction_is_the_lubrication_stages_drive_torque():
-    """The built-in example with a lubrication section (quasi-static force, flat follower): one lobe's peak and mean
+    """The appendix example with a lubrication section (quasi-static force, flat follower): one lobe's peak and mean
     torque are the lubrication stage's largest and mean drive torque with friction at the rated speed."""
-    design = run(with_shaft(example_text() + "\n[valves.intake.lubrication]\n"))
+    design = run(with_shaft(appendix_text() + "\n[valves.intake.lubrication]\n"))
     lub = design.valves["intake"].lubrication
     rated = int(np.argmin(np.abs(np.asarray(lub.per_speed.speed) - design.spec.engine.rated_speed_rpm * np.pi / 30)))
     figures = design.camshaft.figures
@@ -101,9 +103,9 @@ def test_bad_sections_are_refused_naming_the_key(extra, words):
     shaft = [line for line in SHAFT.format(positions="[65.0, 155.0]", cylinders="").split("\n")
              if not line.startswith(key + " ")]
     with pytest.raises(SpecError, match=re.escape(words)):
-        parse_spec(example_text() + "\n".join(shaft) + "\n" + extra + "\n")
+        parse_spec(appendix_text() + "\n".join(shaft) + "\n" + extra + "\n")
 
 
 def test_positions_outside_the_journals_are_refused():
     with pytest.raises(SpecError, match="every lobe lies between the first and the last journal"):
-        with_shaft(example_text(), positions="[10.0]")
+        with_shaft(appendix_text(), positions="[10.0]")

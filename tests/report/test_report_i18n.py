@@ -180,3 +180,15 @@ def test_one_symbol_for_one_quantity():
         assert "a_T" in t["acceleration"] and "j_T" in t["jerk"] and "v_T" in t["velocity"]
         assert "a_v" in t["inertia_force"] and "j_" not in t["inertia_force"] + t["required_force"]
         assert "a_T" in label("lift.tappet_acceleration_m_s2", lang)
+
+
+def test_a_kept_compiled_template_is_that_of_its_language(monkeypatch):
+    """Jinja2 applies a filter to a literal when it compiles the template (``{{ "mm" | unit }}``): the compiled
+    template kept between runs must be that of the report's language.  The reference is each report rendered from a
+    template compiled afresh (no bytecode cache), after the other language's was compiled and kept."""
+    import valvetrain.report.html as html
+
+    results = run(example_spec())
+    kept = {lang: render_report(results, {}, lang) for lang in ("en", "ru", "en")}
+    monkeypatch.setattr(html, "BYTECODE_CACHES", dict.fromkeys(TEXT))
+    assert kept == {lang: render_report(results, {}, lang) for lang in ("ru", "en")}

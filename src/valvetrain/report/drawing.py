@@ -1,16 +1,23 @@
 """The figures of a run drawn in other processes, which import matplotlib while the first one designs.
 
 Drawing is most of what ``valvetrain run`` costs after the design (importing matplotlib, a third of a second, then
-about 0.1-0.2 s a figure), and it needs nothing but the results: :data:`PROCESSES` processes forked before the design
-import matplotlib meanwhile, receive the results once they are there, and draw the figures dealt round between them
-(:func:`valvetrain.report.plots.write_plots`'s ``share``) while the first process writes the tables, the contours
-and the DXF files.  Where processes cannot be forked (Windows, macOS), :func:`start` gives None and the figures are
-drawn in the process itself, as before.
+about 0.1-0.2 s a figure), and it needs nothing but the results: a process forked before the design imports
+matplotlib meanwhile and draws one figure (its fonts loaded, the PNG writer imported), receives the results once they
+are there, forks :data:`PROCESSES` - 1 more from itself (which find matplotlib imported) and draws the figures dealt
+round between them (:func:`valvetrain.report.plots.write_plots`'s ``share``) while the first process writes the
+tables, the contours and the DXF files.  The first process loads numba's compiled code (the first call of any kernel
+loads it for all, 0.3-0.5 s) before it forks: the drawers evaluate laws too (the timing diagram), and inherit it.
+Where processes cannot be forked (Windows, macOS), :func:`start` gives None and the figures are drawn in the process
+itself, as before.
 """
 
+import io
 import multiprocessing
+from multiprocessing.reduction import ForkingPickler
+import os
 import signal
 import sys
+import threading
 
 PROCESSES = 2
 """Drawing processes: the figures and the first process's writing share two cores (this machine's, and a laptop's
@@ -18,53 +25,60 @@ least); more would only wait for a core."""
 
 
 class FigureProcess:
-    """Forked processes that draw the figures of one run between them (:func:`valvetrain.report.plots.write_plots`).
+    """A forked process that draws the figures of one run, with those it forks (:func:`_serve`).
 
-    :meth:`submit` sends them the results and the folder, :meth:`result` waits for the files they wrote (and raises
-    what one raised).  As a context manager it ends the processes on leaving, so that nothing is written into a
-    folder the caller removes after an error.
+    :meth:`submit` sends it the results and the folder, :meth:`result` waits for the files written (and raises what a
+    drawing process raised).  As a context manager it ends the processes on leaving (:meth:`stop`), so that nothing
+    is written into a folder the caller removes after an error.
     """
 
     def __init__(self, processes=PROCESSES):
+        from ..laws.base import mirror
+
+        mirror(0.0, 1.0)   # numba's compiled code loaded (0.3-0.5 s, once): the drawers evaluate laws too
         context = multiprocessing.get_context("fork")
-        self._conns, self._processes = [], []
-        for _ in range(processes):
-            conn, child = context.Pipe()
-            process = context.Process(target=_serve, args=(child, [conn, *self._conns]), daemon=True)
-            process.start()
-            child.close()
-            self._conns.append(conn)
-            self._processes.append(process)
+        self._conn, child = context.Pipe()
+        self._process = context.Process(target=_serve, args=(child, self._conn, processes), daemon=True)
+        self._process.start()
+        child.close()
+        self._sending = None
 
     def submit(self, results, folder, lang, figures):
-        """Draw the figures ``figures`` of ``results`` into ``folder`` (the arguments of ``write_plots``)."""
-        n = len(self._conns)
-        for k, conn in enumerate(self._conns):
-            conn.send((results, folder, lang, figures, (k, n)))
+        """Draw the figures ``figures`` of ``results`` into ``folder`` (the arguments of ``write_plots``).
+
+        The request, larger than a pipe holds, is pickled here (the results are not to be read while this process
+        goes on with them) and sent by a thread: this process writes its files meanwhile, rather than wait for the
+        drawer to finish importing matplotlib."""
+        request = ForkingPickler.dumps((results, folder, lang, figures))
+        self._sending = threading.Thread(target=self._send, args=(request,), daemon=True)
+        self._sending.start()
+
+    def _send(self, request):
+        try:
+            self._conn.send_bytes(request)
+        except OSError:      # the drawer has ended (stop): result() says so
+            pass
 
     def result(self):
         """``write_plots``'s return value, once every process has drawn its figures; an exception of one, raised
         here."""
-        answers = []
-        for conn, process in zip(self._conns, self._processes, strict=True):
-            try:
-                answers.append(conn.recv())
-            except EOFError:
-                raise RuntimeError("a process drawing the figures ended without them") from None
-            process.join()
-        for ok, value in answers:
-            if not ok:
-                raise value
-        return answers[0][1]
+        try:
+            ok, value = self._conn.recv()
+        except EOFError:
+            raise RuntimeError("a process drawing the figures ended without them") from None
+        self._process.join()
+        if not ok:
+            raise value
+        return value
 
     def stop(self):
-        """End the processes (at once, where one still draws) and close the pipes."""
-        for process in self._processes:
-            if process.is_alive():
-                process.terminate()
-            process.join()
-        for conn in self._conns:
-            conn.close()
+        """End the processes (at once, where one still draws: the first ends those it forked) and close the pipe."""
+        if self._process.is_alive():
+            self._process.terminate()
+        self._process.join()
+        if self._sending is not None:
+            self._sending.join()
+        self._conn.close()
 
     def __enter__(self):
         return self
@@ -78,30 +92,81 @@ def start():
     return FigureProcess() if sys.platform.startswith("linux") else None
 
 
-def _serve(conn, others):
-    """A forked process: import the plots, wait for one request, draw its share, send back the files or the error.
+def _serve(conn, other, processes):
+    """The forked process: import the plots and draw one figure, wait for one request, fork the other drawers, draw
+    its share, send back the files or the first error.
 
-    A Ctrl-C is the first process's to handle (it ends this one); the ends of the pipes that process keeps (``others``,
-    its end of this one's and of those forked before) are closed here, so that the process ending without a request
-    is an end of file, not a wait for ever."""
+    A Ctrl-C is the first process's to handle (it ends this one); the end of the pipe that process keeps (``other``)
+    is closed here, so that the process ending without a request is an end of file, not a wait for ever.  Ended
+    (SIGTERM, :meth:`FigureProcess.stop`), it ends the drawers it forked first."""
     signal.signal(signal.SIGINT, signal.SIG_IGN)
-    for other in others:
-        other.close()
+    other.close()
     try:
-        from . import plots  # noqa: F401 - matplotlib imported while the first process designs
+        _warm_up()           # matplotlib imported, its fonts loaded, while the first process designs
     except ImportError:
         pass                 # raised again with the request, in the first process
     try:
         request = conn.recv()
     except EOFError:
         return
-    try:
-        from .plots import write_plots
+    drawers = []
 
-        answer = (True, write_plots(*request))
-    except Exception as exc:  # noqa: BLE001 - raised again in the first process (FigureProcess.result)
-        answer = (False, exc)
+    def end(*_):
+        for pid, _conn in drawers:
+            os.kill(pid, signal.SIGTERM)
+            os.waitpid(pid, 0)
+        os._exit(1)
+
+    signal.signal(signal.SIGTERM, end)
+    for k in range(1, processes):
+        mine, theirs = multiprocessing.Pipe(duplex=False)
+        pid = os.fork()
+        if pid == 0:                                  # a drawer: its share, its answer, its end
+            try:
+                signal.signal(signal.SIGTERM, signal.SIG_DFL)
+                conn.close()
+                mine.close()
+                _send(theirs, _draw(request, (k, processes)))
+            finally:
+                os._exit(0)
+        theirs.close()
+        drawers.append((pid, mine))
+    answers = [_draw(request, (0, processes))]
+    for pid, mine in drawers:
+        try:
+            answers.append(mine.recv())
+        except EOFError:
+            answers.append((False, RuntimeError("a process drawing the figures ended without them")))
+        os.waitpid(pid, 0)
+    _send(conn, next((a for a in answers if not a[0]), answers[0]))
+
+
+def _send(conn, answer):
+    """Send an answer of :func:`_draw`; an exception that cannot be pickled as a RuntimeError that names it."""
     try:
         conn.send(answer)
     except Exception:  # noqa: BLE001 - an exception that cannot be pickled
         conn.send((False, RuntimeError(f"drawing the figures: {answer[1]!r}")))
+
+
+def _draw(request, share):
+    """``(True, write_plots's files)`` of this drawer's ``share`` of the figures, or ``(False, the exception)``."""
+    try:
+        from .plots import write_plots
+
+        return True, write_plots(*request, share=share)
+    except Exception as exc:  # noqa: BLE001 - raised again in the first process (FigureProcess.result)
+        return False, exc
+
+
+def _warm_up():
+    """Import matplotlib and draw a small figure with text into memory: what the first figure of a process costs
+    beyond the others (fonts found and loaded, the PNG writer imported) is paid once, before the drawers fork."""
+    from . import plots
+
+    fig = plots.Figure(figsize=(1, 1))
+    ax = fig.subplots()
+    ax.plot([0.0, 1.0], label="0")
+    ax.legend()
+    ax.set_title("0")
+    fig.savefig(io.BytesIO(), format="png", dpi=20)

@@ -77,7 +77,8 @@ def kinematics_data(valve) -> dict[str, Any]:
     return {"name": valve.name, "law": valve.law.name, "cam_deg": rad_to_deg(tab.cam_angle),
             "tappet_lift_mm": tab.lift / MM, "valve_lift_mm": tab.valve_lift / MM, "velocity": tab.velocity,
             "acceleration": tab.acceleration, "jerk": tab.jerk, "boundaries_deg": segment_boundaries(valve.law),
-            "impulses": impulse_steps(valve.law, valve.omega_cam), "nose_crank_deg": rad_to_deg(valve.nose_crank),
+            "impulses": [(rad_to_deg(st.angle), st.size) for st in valve.cam.acceleration_steps],
+            "nose_crank_deg": rad_to_deg(valve.nose_crank),
             "rocker_ratio": valve.rocker_ratio, "cam_speed": valve.omega_cam}
 
 
