@@ -69,7 +69,7 @@ def test_failure_probability_of_a_linear_margin(tmp_path):
 
 
 def test_wilson_interval_against_newcombe():
-    """Newcombe (1998), Statistics in Medicine 17, 857-872, Table I, method 3 (score interval): 81/263 ->
+    """Newcombe (1998), Table I, method 3 (the score interval): 81/263 ->
     0.2553-0.3662, 15/148 -> 0.0624-0.1605, 0/20 -> 0-0.1611."""
     for k, n, expected in ((81, 263, (0.2553, 0.3662)), (15, 148, (0.0624, 0.1605)), (0, 20, (0.0, 0.1611))):
         assert wilson(k, n) == pytest.approx(expected, abs=5e-5)
@@ -77,7 +77,7 @@ def test_wilson_interval_against_newcombe():
 
 def test_latin_hypercube_strata():
     """A Latin hypercube of n points has exactly one point in each of the n equal strata of every coordinate
-    (McKay, Beckman & Conover 1979); Monte Carlo samples in general do not."""
+    (McKay, Beckman and Conover (1979)); Monte Carlo samples in general do not."""
     n = 50
     u = unit_samples(n, 3, "lhs", seed=3)
     for j in range(3):

@@ -106,7 +106,8 @@ def check_tolerances(document, spec):
 
 def unit_samples(n, dimensions, method, seed):
     """``n`` points of the unit hypercube, ``(n, dimensions)``: independent uniform numbers (``"mc"``) or a Latin
-    hypercube (``"lhs"``), from :class:`numpy.random.Generator` seeded with ``seed``."""
+    hypercube (``"lhs"``, McKay, Beckman and Conover (1979)), from :class:`numpy.random.Generator` seeded with
+    ``seed``."""
     rng = np.random.default_rng(seed)
     if method == "lhs":
         return qmc.LatinHypercube(dimensions, seed=rng).random(n)
@@ -124,7 +125,7 @@ def inverse_cdf(u, tolerance, centre):
 
     References
     ----------
-    Devroye, L. (1986). Non-Uniform Random Variate Generation, section II.2 (the inversion method).
+    Devroye (1986), section II.2 (the inversion method).
     """
     low, high = sample_range(tolerance, centre)
     if tolerance.distribution == "uniform":
@@ -261,8 +262,7 @@ def wilson(failures, n, z=CONFIDENCE_Z):
 
     References
     ----------
-    Wilson, E. B. (1927). Probable inference, the law of succession, and statistical inference. Journal of the
-    American Statistical Association 22, 209-212.
+    Wilson (1927); Newcombe (1998), method 3.
     """
     if n == 0:
         return 0.0, 1.0
