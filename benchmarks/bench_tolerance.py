@@ -6,7 +6,8 @@ a [dynamics] sweep) gets four tolerances (both clearances, uniform +-0.03 mm; bo
 ``valvetrain tolerance`` runs N Latin-hypercube samples as a whole command (start-up, validation, the samples, the
 writing) serially and with ``--workers 2``.  Printed: samples per second of each, beside the baseline measured in the
 same run, one ``valvetrain run``-like design of the example in this process (:func:`valvetrain.study.evaluate_point`
-after a warm-up); the two results compared; the time 10^4 samples take at the measured rate, and what a Dask cluster
+after a warm-up); the CPU time of one sample (which the other jobs of a shared machine do not change) and the time
+10^4 samples would take at it on two idle cores; the two results compared; the time 10^4 samples take at the measured rate, and what a Dask cluster
 of K machines of C cores each would do at the measured rate per process (the tasks are independent: the rate scales
 with the processes, less the scheduler's 3-6 ms a task of up to 32 samples).
 """
@@ -51,6 +52,7 @@ def tolerance(spec, out, *backend):
 def main():
     from valvetrain.specification import example_text
     from valvetrain.study import evaluate_point, read_document
+    from valvetrain.tolerance import evaluate_sample
 
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)
@@ -61,6 +63,11 @@ def main():
         t0 = time.perf_counter()
         evaluate_point(document)
         one = time.perf_counter() - t0
+        evaluate_sample(document)
+        c0 = time.process_time()
+        for _ in range(3):
+            evaluate_sample(document)
+        cpu = (time.process_time() - c0) / 3
         serial, result1 = tolerance(spec, tmp / "serial")
         workers, result2 = tolerance(spec, tmp / "workers", "--workers", "2")
     n = ARGS.samples
@@ -69,6 +76,8 @@ def main():
     print(f"tolerance, {n} samples, serial:      {serial:.1f} s, {n / serial:.2f} samples/s")
     print(f"tolerance, {n} samples, --workers 2: {workers:.1f} s, {n / workers:.2f} samples/s")
     print(f"same results: {result1.replace('serial', 'X') == result2.replace('workers', 'X')}")
+    print(f"CPU time of one sample (all threads of this process; the other jobs of a shared machine do not change "
+          f"it): {cpu:.3f} s; 10^4 samples on an otherwise idle 2-core machine: {1e4 * cpu / 2 / 60:.1f} min")
     rate = n / workers
     print(f"10^4 samples at the --workers 2 rate: {1e4 / rate / 60:.1f} min")
     per_process = rate / 2
