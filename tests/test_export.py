@@ -227,7 +227,7 @@ def test_an_error_in_the_second_drawing_process_is_raised(tmp_path, monkeypatch)
 
     _second_drawer(monkeypatch, fail)
     with pytest.raises(OSError, match="made by the test"):
-        write_outputs(run(example_spec()), tmp_path / "d", drawer=FigureProcess(processes=2))
+        write_outputs(run(appendix_spec()), tmp_path / "d", drawer=FigureProcess(processes=2))
     assert not (tmp_path / "d").exists()
 
 
@@ -244,7 +244,7 @@ def test_stopping_the_drawing_ends_the_drawer_the_first_forked(tmp_path, monkeyp
 
     _second_drawer(monkeypatch, hang)
     drawer = FigureProcess(processes=2)
-    drawer.submit(run(example_spec()), tmp_path, "en", "main")
+    drawer.submit(run(appendix_spec()), tmp_path, "en", "main")
     for _ in range(600):
         if (tmp_path / "pid").exists() and (tmp_path / "pid").read_text():
             break
