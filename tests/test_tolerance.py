@@ -194,3 +194,21 @@ def test_distribution_parameters_are_checked(tmp_path):
                     'half_range = 1.0\n', encoding="utf-8")
     result = tolerance(path, tmp_path / "out", "--samples", "4", code=2)
     assert "engine.bore_mm: a normal distribution takes sigma" in result.output
+
+
+@pytest.mark.parametrize("lang, word", [("en", "Tolerance study"), ("ru", "Расчёт влияния допусков")])
+def test_report_has_a_row_and_a_histogram_per_failing_check(serial, lang, word):
+    """One table row and one margin histogram per check that fails in some sample, one histogram per dynamics
+    headline with values; the check named in the report's language from the catalogue."""
+    from valvetrain.locale import check_text
+    from valvetrain.report.tolerance import report_html
+
+    results = serial[1]
+    html = report_html(results, lang)
+    failing = [c for c in results["checks"].values() if c["failures"]]
+    heads = [d for hs in results["headlines"].values() for d in hs.values() if d is not None]
+    assert word in html
+    assert html.count("<svg") == len(failing) + len(heads) and html.count("<tr>") == 1 + len(
+        results["tolerances"]) + 1 + len(failing)
+    for c in failing:
+        assert check_text(c["code"], c["params"], lang) in html

@@ -487,16 +487,20 @@ def study(file, grid_items, out, workers, scheduler, max_points, force):
 @click.option("--scheduler", default=None, metavar="ADDRESS",
               help="Evaluate the samples on the Dask distributed cluster of this scheduler (tcp://host:8786); "
                    "needs pip install 'valvetrain[dask]'.")
-def tolerance(file, samples, method, seed, out, workers, scheduler):
+@click.option("--lang", type=click.Choice(["en", "ru"]), default="en", show_default=True,
+              help="Language of the report.")
+def tolerance(file, samples, method, seed, out, workers, scheduler, lang):
     """Sample FILE's [[tolerances]] and design every sample; per check the distribution of its margin, its
     probability of failure and the tolerances that drive it.
 
     The samples are the same for the same FILE, --samples, --method and --seed, whatever --workers or --scheduler.
     The records are written to --out/records.jsonl as they arrive: run the same command again after an
-    interruption and only the samples missing are designed. Writes tolerance.json when every sample is designed."""
+    interruption and only the samples missing are designed. Writes tolerance.json and the report tolerance.html
+    (tables and histograms) when every sample is designed."""
     from pathlib import Path
 
     from .export import json_text
+    from .report.tolerance import report_html
     from .study import StudyStopped, evaluate, read_document, with_values
     from .tolerance import (RECORDS, RecordFile, ToleranceError, check_tolerances, draw, evaluate_sample,
                             fingerprint, summary)
@@ -506,7 +510,7 @@ def tolerance(file, samples, method, seed, out, workers, scheduler):
         click.echo("error: --workers and --scheduler: give one (the cluster's workers evaluate the samples)", err=True)
         sys.exit(2)
     folder = Path(out)
-    ours = {RECORDS, "records.tmp", "tolerance.json", "tolerance.json.tmp"}
+    ours = {RECORDS, "records.tmp", *(f"tolerance.{x}{t}" for x in ("json", "html") for t in ("", ".tmp"))}
     if folder.exists() and (not folder.is_dir() or any(p.name not in ours for p in folder.iterdir())):
         _fail_out(OutFolderError(f"{out}: holds files that valvetrain tolerance did not write; give a new or empty "
                                  "folder"))
@@ -540,9 +544,11 @@ def tolerance(file, samples, method, seed, out, workers, scheduler):
         records_file.close()
     done.update(zip(todo, records, strict=True))
     result = summary(spec, centres, values, [done[i] for i in range(samples)], method, seed)
-    tmp = folder / "tolerance.json.tmp"
-    tmp.write_text(json_text({"file": file, **result}) + "\n", encoding="utf-8")
-    tmp.replace(folder / "tolerance.json")
+    for name, text in (("tolerance.json", json_text({"file": file, **result}) + "\n"),
+                       ("tolerance.html", report_html(result, lang))):
+        tmp = folder / f"{name}.tmp"
+        tmp.write_text(text, encoding="utf-8")
+        tmp.replace(folder / name)
     backend = f"on {scheduler}" if scheduler else f"in {workers} processes" if workers > 1 else "in this process"
     click.echo(f"{len(todo)} samples designed ({samples - len(todo)} kept from before) {backend}, "
                f"{time.monotonic() - start:.1f} s; {result['refused']['samples']} refused")
@@ -550,7 +556,7 @@ def tolerance(file, samples, method, seed, out, workers, scheduler):
     for p, cid in failing:
         low, high = result["checks"][cid]["confidence_95"]
         click.echo(f"  {result['checks'][cid]['quantity']}: P(fail) = {p:.4g} (95 %: {low:.4g}...{high:.4g})")
-    click.echo(f"wrote {out}/ ({RECORDS}, tolerance.json)")
+    click.echo(f"wrote {out}/ ({RECORDS}, tolerance.json, tolerance.html)")
 
 
 def _duration(seconds):

@@ -151,6 +151,14 @@ def check_id(c):
     return f"{c.valve + ':' if c.valve else ''}{c.code}{f'[{params}]' if params else ''}"
 
 
+def split_id(cid):
+    """The ``valve`` (None: the engine's), ``code`` and ``params`` (dict) of a :func:`check_id`."""
+    valve, _, rest = cid.rpartition(":")
+    code, _, params = rest.partition("[")
+    return {"valve": valve or None, "code": code,
+            "params": dict(p.split("=", 1) for p in params.rstrip("]").split(",") if p)}
+
+
 def _finite(x):
     return float(x) if math.isfinite(x) else None
 
@@ -316,7 +324,8 @@ def summary(spec, centres, samples, records, method, seed):
         failures = sum(1 for row in rows if row is not None and not row[1])
         first = next(row for row in rows if row is not None)
         margins = [None if row is None else row[0] for row in rows]
-        checks[cid] = {"quantity": first[2], "severity": first[3], "samples": sum(row is not None for row in rows),
+        checks[cid] = {"quantity": first[2], **split_id(cid), "severity": first[3],
+                       "samples": sum(row is not None for row in rows),
                        "failures": failures, "probability": failures / len(ok),
                        "confidence_95": list(wilson(failures, len(ok))), "margin": distribution(margins),
                        "sensitivities": sensitivities(okx, margins, keys)}
