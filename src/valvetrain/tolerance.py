@@ -131,8 +131,6 @@ def inverse_cdf(u, tolerance, centre):
     if tolerance.distribution == "uniform":
         return low + u * (high - low)
     s = tolerance.sigma
-    if s == 0.0:
-        return np.full_like(u, centre)
     a, b = stats.norm.cdf([(low - centre) / s, (high - centre) / s])
     return centre + s * stats.norm.ppf(a + u * (b - a))
 
