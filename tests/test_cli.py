@@ -84,6 +84,8 @@ BAD = [
                                           "equal the half-angle phi_p0"]),
     ('law = "kurz"', 'law = "cosine"', ["valves.intake.cam.law = 'cosine': allowed 'kurz', 'polydyne'"]),
     ("seat_angle_deg = 45.0", "seat_angle_deg = 45.0\nseat_angel = 30", ["valves.intake.seat_angel: unknown key"]),
+    # an empty key is named as TOML writes it (the fuzzer's "" key: the line began ': unknown key', then with no path)
+    ("[engine]", '"" = 1\n[engine]', ['"": unknown key (value 1)']),
     ("[engine]", "[engine", ["not valid TOML"]),
     ("clearance_mm = 0.25", "clearance_mm = 0.0", ["valves.intake.clearance_mm = 0: the cam's ramp"]),
     ("strokes = 4", "strokes = 2", ["engine.strokes = 2: the valve timing"]),

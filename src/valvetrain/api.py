@@ -193,9 +193,11 @@ def sweep(spec, progress=None) -> dict[str, Any]:
     return {"ok": True, "errors": [], "sweeps": plain({n: sweep_series(v.dynamics) for n, v in valves.items()})}
 
 
-def report_html(spec, lang="en") -> str:
+def report_html(spec, lang="en", figures="none") -> str:
     """The design report of a specification (a dict) as HTML text, in ``lang`` ("en" or "ru"): the report that
-    ``valvetrain run`` writes, its tables and checks, without figures (it names the command that draws them).
+    ``valvetrain run`` writes, its tables and checks, with the figures of ``figures`` (as ``valvetrain run
+    --figures``: "main", "all" or "none") drawn in memory and embedded (nothing is written to disk; without them the
+    report names the command that draws them).
 
     Raises
     ------
@@ -204,8 +206,11 @@ def report_html(spec, lang="en") -> str:
     """
     from .design import run
     from .report.html import render_report
+    from .report.plots import write_plots
 
-    return render_report(run(validate(spec)), {}, lang)
+    results = run(validate(spec))
+    images = {}
+    return render_report(results, write_plots(results, images, lang, figures), lang, images)
 
 
 def toml_text(spec) -> str:

@@ -4,6 +4,7 @@ The browser is the system's (``executable_path``): a downloaded browser build ca
 tests are skipped, except in CI (``CI=true``), where a missing browser fails them.
 """
 
+from pathlib import Path
 import re
 import subprocess
 import sys
@@ -16,11 +17,9 @@ pytest.importorskip("playwright")
 from appendix import PATH as APPENDIX  # noqa: E402
 
 
-@pytest.fixture(scope="module")
-def url():
-    """`valvetrain serve` on a free port of 127.0.0.1 (the appendix example, whose V' fails at 7000 rpm), its page's
-    address."""
-    proc = subprocess.Popen([sys.executable, "-u", "-m", "valvetrain", "serve", str(APPENDIX), "--port", "0", "--no-show"],
+def _served(*files):
+    """`valvetrain serve [FILE]` on a free port of 127.0.0.1, its page's address."""
+    proc = subprocess.Popen([sys.executable, "-u", "-m", "valvetrain", "serve", *files, "--port", "0", "--no-show"],
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     line = proc.stdout.readline()
     found = re.search(r"http://127\.0\.0\.1:\d+/", line)
@@ -32,9 +31,27 @@ def url():
         proc.wait(timeout=20)
 
 
+@pytest.fixture(scope="module")
+def url():
+    """The designer on the appendix example (whose V' fails at 7000 rpm)."""
+    yield from _served(str(APPENDIX))
+
+
+@pytest.fixture(scope="module")
+def diesel_url():
+    """The designer on the power-polynomial cam of examples/ukrsurt2019-diesel.toml."""
+    yield from _served(str(Path(__file__).parents[2] / "examples" / "ukrsurt2019-diesel.toml"))
+
+
 @pytest.fixture
 def designer(page, url):
     """A tab on the designer, loaded (the checks drawn), with its console errors and requests recorded."""
+    return opened(page, url)
+
+
+def opened(page, url):
+    """``page`` on the designer at ``url``, loaded (the checks drawn), with its console errors and requests
+    recorded."""
     page.errors, page.requests = [], []
     page.on("console", lambda m: page.errors.append(m.text) if m.type == "error" else None)
     page.on("pageerror", lambda e: page.errors.append(str(e)))
@@ -70,7 +87,11 @@ def table_shows_its_source(page):
     """The checks table's first rendered rows show the first values of its source (a grid that kept the old rows
     after new data came was a bug)."""
     values = model_data(page, "checks")["value"][:4]
-    rows = [r.split("\n") for r in page.locator(".slick-row").all_inner_texts()[:4]]
+    texts = page.evaluate("""() => {
+        const v = Bokeh.index.find_one(Bokeh.documents[0].get_model_by_name('checks'));
+        return Array.from(v.shadow_el.querySelectorAll('.slick-row')).map(r => r.innerText);
+    }""")
+    rows = [r.split("\n") for r in texts[:4]]
     return [r[1] for r in rows] == values
 
 
@@ -80,6 +101,18 @@ def wait_redrawn(page, done):
 
 def redrawn_count(page):
     return page.evaluate("() => window.vtTimesDone || 0")
+
+
+def drag(page, start, end):
+    """Press at ``start`` (page pixels), move to ``end`` in two halves of 4 steps, release; wait for the redraw."""
+    done = redrawn_count(page)
+    (x0, y0), (x1, y1) = start, end
+    page.mouse.move(x0, y0)
+    page.mouse.down()
+    page.mouse.move((x0 + x1) / 2, (y0 + y1) / 2, steps=4)
+    page.mouse.move(x1, y1, steps=4)
+    page.mouse.up()
+    wait_redrawn(page, done)
 
 
 def fill(page, key, text):
@@ -120,14 +153,7 @@ def test_drag_of_the_nose_changes_the_lift_and_a_check(designer):
         const px = (x, y) => [r.left + v.frame.x_scale.compute(x), r.top + v.frame.y_scale.compute(y)];
         return [px(0, 10), px(0, 11)];
     }""")
-    done = redrawn_count(designer)
-    (x0, y0), (x1, y1) = start
-    designer.mouse.move(x0, y0)
-    designer.mouse.down()
-    designer.mouse.move(x0, (y0 + y1) / 2, steps=4)
-    designer.mouse.move(x1, y1, steps=4)
-    designer.mouse.up()
-    wait_redrawn(designer, done)
+    drag(designer, *start)
     lift = model_data(designer, "handles-lift")
     assert lift["y"][0] > 10.3                # the pointer went to 11 mm; the pan's first steps are not followed
     assert check_passes(designer, quantity)
@@ -160,4 +186,32 @@ def test_downloaded_toml_validates(designer, tmp_path):
         designer.get_by_text("Download report").click()
     report = tmp_path / "report.html"
     info.value.save_as(report)
-    assert report.read_text(encoding="utf-8").startswith("<!DOCTYPE html>")
+    text = report.read_text(encoding="utf-8")
+    assert text.startswith("<!DOCTYPE html>")
+    # the figures of `valvetrain run` (--figures main) embedded, among them the cam contour
+    assert re.search(r'<img src="data:image/png;base64,[^"]+" alt="cam contour">', text)
+
+
+def test_drag_of_a_peak_raises_the_acceleration_and_changes_the_checks(page, diesel_url):
+    page = opened(page, diesel_url)
+    before = model_data(page, "checks")["value"]
+    handles = model_data(page, "handles-acceleration")
+    i = handles["name"].index("peak")
+    x, y = handles["x"][i], handles["y"][i]
+    px, py0, py1 = page.evaluate("""([x, y0, y1]) => {
+        const v = Bokeh.index.find_one(Bokeh.documents[0].get_model_by_name('plot-acceleration'));
+        const r = v.canvas_view.el.getBoundingClientRect();
+        return [r.left + v.frame.x_scale.compute(x), r.top + v.frame.y_scale.compute(y0),
+                r.top + v.frame.y_scale.compute(y1)];
+    }""", [x, y, 1.6 * y])
+    drag(page, (px, py0), (px, py1))
+    # the valve's peak acceleration is a_qd x i x omega^2 (a flat extremum of the positive part, UkrSURT Proceedings
+    # (2019) reconstruction R2): proportional to peak_acceleration_mm_per_rad2 (135.2 in the example), which the
+    # drag scales by the new height over the old (the pointer went up to 1.6 times the height, short of where the
+    # valve would hit the piston; headless chromium's drag follows only its first steps)
+    after = model_data(page, "handles-acceleration")
+    rise = after["y"][after["name"].index("peak")] / y
+    assert rise > 1.01
+    a_qd = float(page.get_by_label(re.compile(r"^peak_acceleration_mm_per_rad2\b")).input_value())
+    assert a_qd / 135.2 == pytest.approx(rise, rel=5e-3)
+    assert model_data(page, "checks")["value"] != before

@@ -1,6 +1,7 @@
 """The designer's callbacks without a browser: the session (edits, drags, baseline, TOML) and the page's handlers
 on a Bokeh document."""
 
+import re
 import tomllib
 
 import numpy as np
@@ -93,13 +94,15 @@ def test_page_callbacks():
     d.on_units("value", "rated", "deg")
     # per cam degree: the velocity is the slope of the valve lift in mm/deg; central differences of the lift series
     # (0.5 cam deg apart) agree to 1 % of the peak where the valve is off its seat
-    x, v = np.array(d.sources["velocity"].data["x"]), np.array(d.sources["velocity"].data["y"])
-    lift = np.array(d.sources["lift"].data["y"])
+    angle = d.sources["angle"].data
+    x, v, lift = (np.array(angle[k]) for k in ("x", "velocity", "lift"))
     slope = np.gradient(lift, x)
     off = lift > 0.5
     assert np.max(np.abs(v[off] - slope[off])) < 0.01 * np.max(np.abs(slope))
     d.on_report()
     assert d.report_text.text.startswith("<!DOCTYPE html>") and 'lang="ru"' in d.report_text.text
+    # the figures of `valvetrain run --figures main` (README: the cam contour among them) embedded, drawn in memory
+    assert re.search(r'<img src="data:image/png;base64,[^"]+" alt="профиль кулачка">', d.report_text.text)
     d.on_toml()
     assert tomllib.loads(d.toml_text.text)["valves"]["intake"]["max_lift_mm"] == 10.5
 
@@ -116,3 +119,74 @@ def test_sessions_are_separate():
     a.edit({"engine.rated_speed_rpm": 6000.0})
     assert b.document["engine"]["rated_speed_rpm"] == 7000
     assert b.good["results"]["engine"]["rated_speed_rpm"] == 7000
+
+
+def test_power_polynomial_handles_follow_its_keys():
+    from pathlib import Path
+
+    examples = Path(__file__).parents[2] / "examples"
+    s = Session.start((examples / "ukrsurt2019-diesel.toml").read_text(encoding="utf-8"), examples)
+    h = {x.name: x for x in s.handles("intake")}
+    # phi_p0 = (40 + 180 + 55) / 2 crank deg / 2 = 68.75 cam deg: the ramp (12 deg) starts at -80.75, the positive
+    # part (phi1 = 19.3) ends at -68.75 + 19.3 = -49.45, its peak at -68.75 + 0.2 x 19.3 = -64.89
+    assert (h["ramp"].x, h["peak"].x, h["phi1"].x) == (pytest.approx(-80.75), pytest.approx(-64.89),
+                                                        pytest.approx(-49.45))
+    # the peak of the valve acceleration: a_qd x i x omega^2 = 0.1352 m/rad² x 1 x (1000 rpm x pi/30 / 2)² = 370.66
+    # m/s² (the series is sampled every 0.5 cam deg)
+    assert h["peak"].y == pytest.approx(370.66, rel=5e-3)
+    assert s.drag("intake", "peak", -62.89, 1.2 * h["peak"].y)
+    cam = s.document["valves"]["intake"]["cam"]
+    # x_d = (-62.89 + 68.75) / 19.3 = 0.3036 (to 3 digits); a_qd = 1.2 x 135.2 mm/rad²
+    assert (cam["peak_position"], cam["peak_acceleration_mm_per_rad2"]) == (0.304, pytest.approx(162.24, rel=5e-3))
+    peak = next(x for x in s.handles("intake") if x.name == "peak")
+    assert peak.x == pytest.approx(-68.75 + 0.304 * 19.3)
+    assert peak.y == pytest.approx(1.2 * 370.66, rel=5e-3)
+    assert s.drag("intake", "ramp", -82.0, 0.0)
+    assert s.document["valves"]["intake"]["cam"]["ramp_angle_deg"] == 82.0 - 68.75
+    assert s.good["series"]["intake"]["segments_cam_deg"][0] == pytest.approx(-82.0)
+    assert s.drag("intake", "phi1", -48.0, 0.0)
+    assert s.document["valves"]["intake"]["cam"]["phi1_deg"] == 68.75 - 48.0
+    assert s.drag("intake", "trough", -30.0, 0.0)
+    assert 0.02 <= s.document["valves"]["intake"]["cam"]["trough_position"] <= 0.98
+
+
+def test_combined_cam_segment_ends_set_lengths_and_ratios():
+    s = Session.start(appendix_text())
+    doc = s.document
+    doc["valves"]["intake"]["cam"] = {"law": "combined", "base_radius_mm": 20.0, "ramp_end_velocity_mm_per_deg": 0.02,
+                                      "segments": [{"shape": "half_sine", "length_deg": 25.0},
+                                                   {"shape": "quarter_sine", "length_deg": 8.0},
+                                                   {"shape": "parabola_to_nose", "length_deg": 38.0}],
+                                      "ratios": [{"segment": 2, "value": 0.625}]}
+    assert s.apply(doc), s.problems
+    h = {x.name: x for x in s.handles("intake")}
+    # phi_p0 = 71 cam deg: segment 1 ends at -71 + 25 = -46, segment 2 at -46 + 8 = -38; the last ends at the nose
+    assert sorted(h) == ["end.1", "end.2", "nose"]
+    assert (h["end.1"].x, h["end.2"].x) == (pytest.approx(-46.0), pytest.approx(-38.0))
+    assert s.drag("intake", "end.1", -48.0, 0.0)
+    # segment 1: -48 + 71 = 23 deg, segment 2: 25 + 8 - 23 = 10 deg (segment 2's end stays)
+    assert [seg["length_deg"] for seg in s.document["valves"]["intake"]["cam"]["segments"]] == [23.0, 10.0, 38.0]
+    series = s.good["series"]["intake"]
+    nose = float(np.interp(0.0, series["cam_deg"], series["valve_acceleration_m_s2"]))
+    assert s.drag("intake", "end.2", -38.0, 0.5 * nose)
+    # the ratio's definition: a(end of segment 2) = value x a(nose), the value 0.5 where the handle was put
+    assert s.document["valves"]["intake"]["cam"]["ratios"] == [{"segment": 2, "value": 0.5}]
+    series = s.good["series"]["intake"]
+    a = np.interp([-38.0, 0.0], series["cam_deg"], series["valve_acceleration_m_s2"])
+    assert a[0] / a[1] == pytest.approx(0.5, rel=1e-6)
+
+
+def test_sweep_starts_when_the_page_has_drawn_the_newest_kinematics():
+    d = Designer(Document(), Session.start())
+    started = []
+    d.start_sweep = lambda: started.append(d.kinematic_stamp.data["n"][0])
+    d.redraw()
+    newest = d.kinematic_stamp.data["n"][0]
+    d.on_drawn("data", None, {"n": [newest - 1]})         # an older redraw drawn: its sweep would be stale
+    assert started == []
+    d.on_drawn("data", None, {"n": [newest]})
+    d.on_drawn("data", None, {"n": [newest]})             # once per redraw
+    assert started == [newest]
+    d.redraw(sweep=False)                                 # a language or unit switch: no new sweep
+    d.on_drawn("data", None, {"n": [newest + 1]})
+    assert started == [newest]

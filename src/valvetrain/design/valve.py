@@ -732,7 +732,8 @@ def design_valve(name, valve, engine, gas, output, law=None, progress=None, cyli
     try:
         cam = law_stage(valve, engine, law)
     except ValueError as exc:
-        raise SpecError([exc.args[0].within(at)]) from None
+        found = exc.args[0] if exc.args and isinstance(exc.args[0], Problem) else Problem("", str(exc))
+        raise SpecError([found.within(at)]) from None
     flow_result = flow_stage(cam, valve, engine)
     profile = profile_stage(cam, valve, output)
     try:

@@ -430,9 +430,10 @@ def render_report(results, plots, lang="en", folder=None):
         ``{valve name: {figure kind: file name relative to plots/}}`` of the figures drawn (the report names the
         command that draws the others).
     lang : {"en", "ru"}
-    folder : Path, optional
-        The output folder holding ``plots/``: the figures are embedded in the report (one file to mail); without
-        it they are linked.
+    folder : Path or dict, optional
+        The output folder holding ``plots/``, or the figures drawn in memory (``{filename: PNG bytes}``,
+        :func:`valvetrain.report.plots.write_plots` into a dict): the figures are embedded in the report (one file
+        to mail); without it they are linked.
     """
     env = Environment(loader=PackageLoader("valvetrain", "report/templates"), autoescape=select_autoescape(),
                       bytecode_cache=BYTECODE_CACHES[lang])
@@ -564,10 +565,12 @@ def _figure(image, name, alt, t):
 
 
 def _image(folder, name):
-    """A figure of ``plots/`` as a data URI (PNG, base64) or, without a folder, as a relative link."""
+    """A figure of ``plots/`` (or of a dict ``{filename: PNG bytes}``) as a data URI (PNG, base64) or, without a
+    folder, as a relative link."""
     if folder is None:
         return f"plots/{name}"
-    return "data:image/png;base64," + base64.b64encode((folder / "plots" / name).read_bytes()).decode("ascii")
+    png = folder[name] if isinstance(folder, dict) else (folder / "plots" / name).read_bytes()
+    return "data:image/png;base64," + base64.b64encode(png).decode("ascii")
 
 
 def write_report(results, path, plots, lang="en"):

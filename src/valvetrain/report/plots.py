@@ -11,6 +11,7 @@ drawing it, about a third of the drawing time.
 
 from typing import Any
 
+import io
 import itertools
 
 from matplotlib.figure import Figure
@@ -815,14 +816,21 @@ def write_dynamics_plots(name, d, folder, t, save=None):
 
 def _saver(folder, share=(0, 1)):
     """``save(draw, filename)``: draw the figure and write it into ``folder`` if it is this share's (the figures are
-    dealt round in turn to ``share[1]`` drawers, this one ``share[0]``); return the filename either way."""
+    dealt round in turn to ``share[1]`` drawers, this one ``share[0]``); return the filename either way.  A dict as
+    ``folder`` receives ``{filename: PNG bytes}`` (nothing written to disk)."""
     turn = itertools.count()
 
     def save(draw, fname):
         if next(turn) % share[1] == share[0]:
-            draw().savefig(folder / fname, dpi=110)
+            if isinstance(folder, dict):
+                png = io.BytesIO()
+                draw().savefig(png, format="png", dpi=110)
+                folder[fname] = png.getvalue()
+            else:
+                draw().savefig(folder / fname, dpi=110)
         return fname
     return save
+
 
 def camshaft_torque_data(shaft) -> dict[str, Any]:
     """The series of :func:`draw_camshaft_torque`: the camshaft angle [cam deg from cylinder 1's gas-exchange TDC],

@@ -14,7 +14,7 @@ from functools import partial
 
 from bokeh.layouts import column, row
 from bokeh.models import (Button, ColumnDataSource, CustomJS, DataRange1d, DataTable, LinearAxis, Div, HTMLTemplateFormatter, LinearColorMapper,
-                          NumericInput, PointDrawTool, Select, TableColumn, TabPanel, Tabs, TextInput)
+                          NumericInput, PointDrawTool, Select, TableColumn, TabPanel, Tabs, TextInput, Title)
 from bokeh.plotting import figure
 import numpy as np
 
@@ -41,6 +41,17 @@ KINEMATIC_PLOTS = (("lift", "valve_lift_mm", "lift_mm", 0), ("velocity", "valve_
                    ("jerk", "valve_jerk_m_s3", "jerk_valve", 3))
 """The plots against the camshaft angle: name, series, axis words, order of the derivative."""
 
+SOURCES = {"angle": ("x", "lift", "velocity", "acceleration", "jerk", "curvature", "tappet"),
+           "crank": ("x", "time_area", "curtain"), "contour": ("x", "y"), "spring": ("x", "y")}
+"""The data sources of a design's curves (the current and the baseline each have theirs) and their columns: one
+source per abscissa, so that a redraw sends four changes, not one per curve (each change is a message to the page,
+and the page may paint between two)."""
+
+PLOTS = {"lift": ("angle", "lift"), "velocity": ("angle", "velocity"), "acceleration": ("angle", "acceleration"),
+         "jerk": ("angle", "jerk"), "contour": ("contour", "y"), "curvature": ("angle", "curvature"),
+         "time_area": ("crank", "time_area"), "spring": ("spring", "y")}
+"""Each plot's source and column of ordinates."""
+
 
 def per_degree(values, order, omega):
     """A derivative of the lift at the rated speed (m/s, m/s², m/s³) in mm per camshaft degree to the ``order``
@@ -63,6 +74,10 @@ requestAnimationFrame(() => requestAnimationFrame(() => {
 }));
 """
 
+DRAWN_JS = """
+requestAnimationFrame(() => requestAnimationFrame(() => { drawn.data = {n: [stamp.data.n[0]]}; }));
+"""
+
 DOWNLOAD_JS = """
 const blob = new Blob([div.text], {type: mime});
 const a = document.createElement('a');
@@ -81,8 +96,21 @@ class Stale(Exception):
     """Raised into a speed sweep that a newer change made stale."""
 
 
-def _xy(series, key, x="cam_deg"):
-    return {"x": series[x], "y": series[key]}
+def _array(values):
+    """A series as a float array (None a gap, NaN): sent to the page as binary, not as JSON numbers."""
+    return np.asarray(values, dtype=float)
+
+
+def _rows_follow(table):
+    """The page's grid of ``table`` redraws when its source's data change: its grid redraws when its view's rows
+    change; new data of as many rows leaves them, and the old rows on screen: the view's change signal makes it
+    take the new ones."""
+    table.source.js_on_change("data", CustomJS(args={"table": table}, code="table.view.change.emit();"))
+
+
+def _count(stamp):
+    """One more redraw on a stamp's source (its change in the page stamps the time)."""
+    stamp.data = {"n": [stamp.data["n"][0] + 1]}
 
 
 class Designer:
@@ -97,9 +125,12 @@ class Designer:
         self.downloads = 0
         self.per_degree = False
         self.sweep_result, self.base_sweep = None, None
+        self.sweep_due = False
         self.fields = {}
         self.errors = {}
+        self.erring = set()
         self._build()
+        self._texts()
         self.redraw()
 
     # --- building --------------------------------------------------------------------------------------------------
@@ -148,16 +179,12 @@ class Designer:
         self.spec_tabs = Tabs(tabs=panels, width=270)
 
         tools = "pan,wheel_zoom,box_zoom,reset,save"
-        self.sources, self.base_sources, self.figures = {}, {}, {}
+        self.sources = {k: ColumnDataSource({c: [] for c in columns}) for k, columns in SOURCES.items()}
+        self.base_sources = {k: ColumnDataSource({c: [] for c in columns}) for k, columns in SOURCES.items()}
+        self.figures = {}
         for name, *_ in KINEMATIC_PLOTS:
-            p = figure(height=210, width=520, tools=tools, name=f"plot-{name}")
-            self.sources[name] = ColumnDataSource({"x": [], "y": []})
-            self.base_sources[name] = ColumnDataSource({"x": [], "y": []})
-            p.line("x", "y", source=self.base_sources[name], color="#999999", line_dash="dashed", line_width=1.5)
-            p.line("x", "y", source=self.sources[name], color="#1f77b4", line_width=2)
-            self.figures[name] = p
-        self.sources["tappet"] = ColumnDataSource({"x": [], "y": []})
-        self.figures["lift"].line("x", "y", source=self.sources["tappet"], color="#2ca02c", line_width=1)
+            self.figures[name] = self._plot(figure(height=210, width=520, tools=tools, name=f"plot-{name}"), name)
+        self.figures["lift"].line("x", "tappet", source=self.sources["angle"], color="#2ca02c", line_width=1)
         self.segments = ColumnDataSource({"x": [], "y0": [], "y1": []})
         self.figures["acceleration"].segment("x", "y0", "x", "y1", source=self.segments, color="#bbbbbb",
                                              line_dash="dotted")
@@ -174,21 +201,15 @@ class Designer:
         for name in ("lift", "velocity", "acceleration"):
             self.figures[name].x_range = self.figures["jerk"].x_range
 
-        self.extra = {}
         for name, kw in (("contour", {"match_aspect": True}), ("curvature", {}), ("time_area", {}), ("spring", {})):
-            p = figure(height=260, width=520 if name != "contour" else 300, tools=tools, name=f"plot-{name}", **kw)
-            self.sources[name] = ColumnDataSource({"x": [], "y": []})
-            self.base_sources[name] = ColumnDataSource({"x": [], "y": []})
-            p.line("x", "y", source=self.base_sources[name], color="#999999", line_dash="dashed", line_width=1.5)
-            p.line("x", "y", source=self.sources[name], color="#1f77b4", line_width=2)
-            self.figures[name] = p
-        self.sources["heel"] = ColumnDataSource({"x": [], "y": []})
-        self.figures["contour"].line("x", "y", source=self.sources["heel"], color="#2ca02c", line_dash="dashed")
-        self.sources["spring_line"] = ColumnDataSource({"x": [], "y": []})
-        self.figures["spring"].line("x", "y", source=self.sources["spring_line"], color="black", line_width=2)
-        self.sources["curtain"] = ColumnDataSource({"x": [], "y": []})
+            self.figures[name] = self._plot(figure(height=260, width=520 if name != "contour" else 300, tools=tools,
+                                                   name=f"plot-{name}", **kw), name)
+        self.heel = ColumnDataSource({"x": [], "y": []})
+        self.figures["contour"].line("x", "y", source=self.heel, color="#2ca02c", line_dash="dashed")
+        self.spring_line = ColumnDataSource({"x": [], "y": []})
+        self.figures["spring"].line("x", "y", source=self.spring_line, color="black", line_width=2)
         ta = self.figures["time_area"]
-        curtain = ta.line("x", "y", source=self.sources["curtain"], color="#ff7f0e", y_range_name="curtain")
+        curtain = ta.line("x", "curtain", source=self.sources["crank"], color="#ff7f0e", y_range_name="curtain")
         ta.extra_y_ranges = {"curtain": DataRange1d(renderers=[curtain])}
         self.curtain_axis = LinearAxis(y_range_name="curtain", axis_label_text_color="#ff7f0e")
         ta.add_layout(self.curtain_axis, "right")
@@ -204,13 +225,18 @@ class Designer:
                               TableColumn(field="source", title="", width=380)]
         self.table = DataTable(source=self.checks, columns=self.check_columns, width=1100, height=360,
                                index_position=None, name="checks")
-        # the page's grid redraws when its view's rows change; new data of as many rows leaves them, and the old
-        # rows on screen: the view's change signal makes it take the new ones
-        self.checks.js_on_change("data", CustomJS(args={"table": self.table}, code="table.view.change.emit();"))
-        self.card = Div(text="", name="card", width=300)
+        _rows_follow(self.table)
+        # the cam card is a table: new rows leave the page's layout (a Div's new text lays the page out again)
+        self.card = ColumnDataSource({"quantity": [], "value": []}, name="card")
+        self.card_columns = [TableColumn(field="quantity", title="", width=210),
+                             TableColumn(field="value", title="", width=90)]
+        self.card_title = Div(text="")
+        self.card_table = DataTable(source=self.card, columns=self.card_columns, width=300, height=300,
+                                   index_position=None)
+        _rows_follow(self.card_table)
 
         # the sweep panel
-        self.sweep_status = Div(text="", name="sweep-status")
+        self.sweep_status = Title(text="", name="sweep-status", text_font_style="normal")
         self.sweep_sources = {k: ColumnDataSource({"x": [], "y": []}) for k in ("force", "seating")}
         self.base_sweep_sources = {k: ColumnDataSource({"x": [], "y": []}) for k in ("force", "seating")}
         self.sweep_marks = ColumnDataSource({"x": [], "y0": [], "y1": []})
@@ -220,29 +246,44 @@ class Designer:
             p.line("x", "y", source=self.sweep_sources[key], color="#1f77b4", line_width=2)
             p.segment("x", "y0", "x", "y1", source=self.sweep_marks, color="#d62728", line_dash="dashed")
             self.figures["sweep_" + key] = p
+        self.figures["sweep_force"].add_layout(self.sweep_status, "above")
         self.map_source = ColumnDataSource({"image": [], "x": [], "y": [], "dw": [], "dh": []})
         self.mapper = LinearColorMapper(palette="RdBu11", low=-1.0, high=1.0)
         p = figure(height=220, width=420, tools=tools, name="plot-sweep-map")
         p.image("image", x="x", y="y", dw="dw", dh="dh", source=self.map_source, color_mapper=self.mapper)
         self.figures["sweep_map"] = p
 
-        self.kinematic_stamp = Div(text="0", visible=False, name="kinematic-stamp")
-        self.kinematic_stamp.js_on_change("text", CustomJS(args={"key": "vtTimes"}, code=STAMP_JS))
-        self.sweep_stamp = Div(text="0", visible=False, name="sweep-stamp")
-        self.sweep_stamp.js_on_change("text", CustomJS(args={"key": "vtSweepTimes"}, code=STAMP_JS))
+        # the stamps are data sources, not widgets: a widget's change lays the whole page out again (~100 ms)
+        self.kinematic_stamp = ColumnDataSource({"n": [0]}, name="kinematic-stamp")
+        self.kinematic_stamp.js_on_change("data", CustomJS(args={"key": "vtTimes"}, code=STAMP_JS))
+        # the page says when it has drawn the kinematics: the sweep starts then, not to hold their drawing up
+        self.drawn = ColumnDataSource({"n": [0]}, name="drawn")
+        self.drawn.on_change("data", self.on_drawn)
+        self.kinematic_stamp.js_on_change("data", CustomJS(args={"stamp": self.kinematic_stamp, "drawn": self.drawn},
+                                                           code=DRAWN_JS))
+        self.sweep_stamp = ColumnDataSource({"n": [0]}, name="sweep-stamp")
+        self.sweep_stamp.js_on_change("data", CustomJS(args={"key": "vtSweepTimes"}, code=STAMP_JS))
 
         f = self.figures
         plots = row(column(f["lift"], f["velocity"], f["acceleration"], f["jerk"]),
                     column(f["contour"], f["curvature"], f["time_area"], f["spring"]))
         self.sweep_title = Div(text="")
-        sweep = column(self.sweep_title, self.sweep_status,
-                       row(f["sweep_force"], f["sweep_seating"], f["sweep_map"]))
+        sweep = column(self.sweep_title, row(f["sweep_force"], f["sweep_seating"], f["sweep_map"]))
         top = row(self.language, self.valve_select, self.units, self.pin_button, self.toml_button, self.report_button,
                   self.status)
         self.checks_title = Div(text="")
-        self.doc.add_root(column(top, row(column(self.section_errors, self.spec_tabs), column(row(plots, self.card),
-                                 self.checks_title, self.table, sweep)), self.toml_text, self.report_text, self.kinematic_stamp,
-                                 self.sweep_stamp))
+        self.doc.add_root(column(top, row(column(self.section_errors, self.spec_tabs), column(row(plots, column(self.card_title, self.card_table)),
+                                 self.checks_title, self.table, sweep)), self.toml_text, self.report_text))
+        self.doc.add_root(self.kinematic_stamp)
+        self.doc.add_root(self.sweep_stamp)
+        self.doc.add_root(self.drawn)
+
+    def _plot(self, p, name):
+        """Plot ``name`` on figure ``p``: the baseline dashed under the current design."""
+        source, y = PLOTS[name]
+        p.line("x", y, source=self.base_sources[source], color="#999999", line_dash="dashed", line_width=1.5)
+        p.line("x", y, source=self.sources[source], color="#1f77b4", line_width=2)
+        return p
 
     # --- drawing ---------------------------------------------------------------------------------------------------
     def _texts(self):
@@ -269,10 +310,13 @@ class Designer:
             self.figures[key].xaxis.axis_label = t["speed"] if key != "sweep_map" else t["cam_deg"]
         self.sweep_title.text = f"<h3>{w['sweep']}</h3>"
         self.checks_title.text = f"<h3>{w['checks']}</h3>"
+        self.card_title.text = f"<h3>{w['card']}</h3>"
         for c, key in zip(self.check_columns, ("quantity", "value", "baseline", "allowed", "margin", "source"),
                           strict=True):
             c.title = {"value": t["value"] + f" ({w['current']})", "baseline": w["baseline"],
                        "margin": w["margin"]}.get(key) or t[key]
+        for c, key in zip(self.card_columns, ("quantity", "value"), strict=True):
+            c.title = t[key]
         self.language.title, self.valve_select.title, self.units.title = w["language"], w["valve"], w["units"]
         self.units.options = [("rated", w["rated"]), ("deg", w["deg"])]
         self.pin_button.label, self.toml_button.label, self.report_button.label = w["pin"], w["toml"], w["report"]
@@ -297,27 +341,31 @@ class Designer:
 
     def _card(self):
         v = self.session.good["results"]["valves"][self.valve]
-        rows = []
+        rows = {"quantity": [], "value": []}
         for key in CARD_KEYS:
             group, leaf = key.split(".")
             value = v.get(group, {}).get(leaf)
             if value is not None:
-                rows.append(f"<tr><td>{label(key, self.lang)}</td><td>{value:.5g}</td></tr>")
-        self.card.text = f"<h3>{WORDS[self.lang]['card']}</h3><table>{''.join(rows)}</table>"
+                rows["quantity"].append(label(key, self.lang))
+                rows["value"].append(f"{value:.5g}")
+        self.card.data = rows
 
     def _omega(self, result):
         """The camshaft speed of a design [rad/s] when the plots are per degree, else None."""
         return result["results"]["valves"][self.valve]["cam"]["camshaft_speed_rad_s"] if self.per_degree else None
 
-    def _curves(self, series, sources, omega=None):
+    @staticmethod
+    def _curves(series, sources, omega=None):
+        angle = {"x": _array(series["cam_deg"]), "curvature": _array(series["rho_mm"]),
+                 "tappet": _array(series["tappet_lift_mm"])}
         for name, key, _, order in KINEMATIC_PLOTS:
-            y = series[key] if omega is None or order == 0 else per_degree(series[key], order, omega)
-            sources[name].data = {"x": series["cam_deg"], "y": y}
-        sources["contour"].data = {"x": series["contour_x_mm"] + series["contour_x_mm"][:1],
-                                   "y": series["contour_y_mm"] + series["contour_y_mm"][:1]}
-        sources["curvature"].data = _xy(series, "rho_mm")
-        sources["time_area"].data = _xy(series, "time_area_mm2_s", "crank_deg")
-        sources["spring"].data = {"x": series["spring_lift_mm"], "y": series["required_force_N"]}
+            angle[name] = _array(series[key]) if omega is None or order == 0 else per_degree(series[key], order, omega)
+        sources["angle"].data = angle
+        sources["crank"].data = {"x": _array(series["crank_deg"]), "time_area": _array(series["time_area_mm2_s"]),
+                                 "curtain": _array(series["curtain_area_mm2"])}
+        sources["contour"].data = {"x": _array(series["contour_x_mm"] + series["contour_x_mm"][:1]),
+                                   "y": _array(series["contour_y_mm"] + series["contour_y_mm"][:1])}
+        sources["spring"].data = {"x": _array(series["spring_lift_mm"]), "y": _array(series["required_force_N"])}
 
     def redraw(self, sweep=True):
         """Draw the good design (and the baseline), its checks, card and handles; start its speed sweep (``sweep``)
@@ -326,16 +374,13 @@ class Designer:
         series = s.good["series"][self.valve]
         omega = self._omega(s.good)
         self._curves(series, self.sources, omega)
-        self.sources["tappet"].data = _xy(series, "tappet_lift_mm")
         phi = np.linspace(0.0, 2.0 * np.pi, 181)
         r = series["heel_radius_mm"]
-        self.sources["heel"].data = {"x": r * np.cos(phi), "y": r * np.sin(phi)}
-        self.sources["spring_line"].data = {"x": series["spring_line_lift_mm"], "y": series["spring_line_force_N"]}
-        self.sources["curtain"].data = _xy(series, "curtain_area_mm2", "crank_deg")
-        acc = self.sources["acceleration"].data["y"]
-        acc = [a for a in acc if a is not None and np.isfinite(a)]
+        self.heel.data = {"x": r * np.cos(phi), "y": r * np.sin(phi)}         # the same circle sends nothing
+        self.spring_line.data = {"x": series["spring_line_lift_mm"], "y": series["spring_line_force_N"]}
+        acc = self.sources["angle"].data["acceleration"]
         edges = series["segments_cam_deg"]
-        self.segments.data = {"x": edges, "y0": [min(acc)] * len(edges), "y1": [max(acc)] * len(edges)}
+        self.segments.data = {"x": edges, "y0": [np.nanmin(acc)] * len(edges), "y1": [np.nanmax(acc)] * len(edges)}
         base = s.baseline["series"].get(self.valve) if s.baseline else None
         if base is not None:
             self._curves(base, self.base_sources, self._omega(s.baseline))
@@ -344,11 +389,9 @@ class Designer:
         self._handles(omega)
         self._checks()
         self._card()
-        self._texts()
-        self.kinematic_stamp.text = str(int(self.kinematic_stamp.text) + 1)
-        if sweep:       # after this change has gone to the page: the sweep's thread would hold it up
-            self.doc.add_next_tick_callback(self.start_sweep)
-        elif self.sweep_result is not None:
+        _count(self.kinematic_stamp)
+        self.sweep_due = sweep
+        if not sweep and self.sweep_result is not None:
             self.draw_sweep(self.generation, self.sweep_result)
 
     def _handles(self, omega=None):
@@ -363,18 +406,22 @@ class Designer:
     def show_problems(self):
         """Each problem at its field (or above the panel when it names no field); the status line says the last
         good design stays."""
-        for err in self.errors.values():
-            err.text = ""
-        loose = []
-        for p in self.session.problems:
-            if p["path"] in self.errors:
-                self.errors[p["path"]].text = p["message"]
-            else:
-                loose.append(p["text"])
+        shown = {p["path"]: p["message"] for p in self.session.problems if p["path"] in self.errors}
+        for path in set(shown) | self.erring:
+            self.errors[path].text = shown.get(path, "")
+        self.erring = set(shown)
+        loose = [p["text"] for p in self.session.problems if p["path"] not in self.errors]
         self.section_errors.text = "<br>".join(loose)
         self.status.text = WORDS[self.lang]["kept"] if self.session.problems else ""
 
     # --- the speed sweep -------------------------------------------------------------------------------------------
+    def on_drawn(self, attr, old, new):
+        """The page has drawn the kinematics of redraw ``new["n"]``: the sweep of the newest one starts (its thread
+        would have held up the sending of the kinematics, and the page's drawing of them)."""
+        if self.sweep_due and new["n"][0] == self.kinematic_stamp.data["n"][0]:
+            self.sweep_due = False
+            self.start_sweep()
+
     def start_sweep(self):
         self.generation += 1
         generation = self.generation
@@ -407,7 +454,7 @@ class Designer:
         if generation != self.generation:
             return
         if not result["ok"]:
-            self.sweep_status.text = "<br>".join(p["text"] for p in result["errors"])
+            self.sweep_status.text = "; ".join(p["text"] for p in result["errors"])
             return
         self.sweep_result = result
         sw = self._sweep_of(result)
@@ -426,7 +473,7 @@ class Designer:
         self.sweep_status.text = ", ".join(f"{t[k]} {v:.5g} rpm" for k, v in (("jump", sw["jump_speed_rpm"]),
                                                                                ("bounce", sw["bounce_speed_rpm"]))
                                            if v is not None) or "-"
-        self.sweep_stamp.text = str(int(self.sweep_stamp.text) + 1)
+        _count(self.sweep_stamp)
 
     # --- callbacks -------------------------------------------------------------------------------------------------
     def on_field(self, f, attr, old, new):
@@ -436,6 +483,7 @@ class Designer:
             value = parse_value(f, new)
         except ValueError as exc:
             self.errors[f.path].text = str(exc)
+            self.erring.add(f.path)
             return
         if self.session.edit({f.path: value}):
             self.redraw()
@@ -446,33 +494,38 @@ class Designer:
         if len(new["x"]) != len(placed):      # a point deleted: put the handles back
             self._handles(self._omega(self.session.good))
             return
+        omega = self._omega(self.session.good)
         for (name, x, y), nx, ny in zip(placed, new["x"], new["y"], strict=True):
             if abs(nx - x) > 1e-9 or abs(ny - y) > 1e-9:
-                if self.session.drag(self.valve, name, nx, ny):
+                if plot == "acceleration" and omega is not None:     # to m/s², as the session takes it
+                    ny = ny / float(per_degree(1.0, 2, omega))
+                keys = self.session.drag(self.valve, name, nx, ny)
+                if keys:
                     self.redraw()
                 else:
                     self._handles(self._omega(self.session.good))
                 self.show_problems()
-                self._sync_fields()
+                self._sync_fields(keys)
                 return
 
-    def _sync_fields(self):
-        """The panel's inputs show the document after a drag."""
-        for path, fields in form(self.session.document):
-            for f in fields:
-                w = self.fields.get(f.path)
-                if isinstance(w, NumericInput) and w.value != f.value:
-                    self._syncing = True
-                    w.value = f.value
-                    self._syncing = False
+    def _sync_fields(self, values):
+        """The panel's inputs show the values a drag set (``{dotted key: value}``)."""
+        self._syncing = True
+        for path, value in values.items():
+            w = self.fields.get(path)
+            if w is not None:
+                w.value = value if isinstance(w, NumericInput) else value_text(value)
+        self._syncing = False
 
     def on_language(self, attr, old, new):
         self.lang = new
+        self._texts()
         self.redraw(sweep=False)
         self.show_problems()
 
     def on_units(self, attr, old, new):
         self.per_degree = new == "deg"
+        self._texts()
         self.redraw(sweep=False)
 
     def on_valve(self, attr, old, new):

@@ -160,44 +160,112 @@ def _interp(series, key, x):
 
 
 def handles(document, spec, name, series):
-    """The handles of valve ``name``: the nose lift (on the lift plot, at the nose) and, for a cam of segment
-    angles (``phi1_deg``, ``phi2_deg``), the two boundaries between its segments on the opening flank (on the
-    acceleration plot); the closing flank of a symmetric cam follows by the law."""
+    """The handles of valve ``name``: the nose lift (on the lift plot, at the nose) and, on the acceleration plot,
+    the points of its law's shape on the opening flank (the closing flank of a symmetric cam follows by the law):
+
+    - a cam of segment angles (``phi1_deg``, ``phi2_deg``: Kurz, constant acceleration): the two boundaries between
+      its segments, ``phi1`` and ``phi2``;
+    - a power-polynomial cam: the start of the ramp (``ramp``), the positive peak (``peak``, where
+      ``peak_position`` puts it and as high as ``peak_acceleration_mm_per_rad2`` makes it), the end of the positive
+      part (``phi1``) and the negative peak (``trough``, ``trough_position``);
+    - a combined cam: the end of each segment but the last (``end.K``, segment K counted from 1), whose height sets
+      a ratio that names that segment.
+    """
     valve = document["valves"][name]
     out = []
     if valve.get("max_lift_mm") is not None:
         out.append(Handle("nose", "lift", 0.0, _interp(series, "valve_lift_mm", 0.0)))
     cam = valve.get("cam", {})
-    if {"phi1_deg", "phi2_deg"} <= set(cam):
-        half = main_half_angle_deg(spec.valves[name], spec.engine.strokes)
-        for key, x in (("phi1", -half + cam["phi1_deg"]), ("phi2", -half + cam["phi1_deg"] + cam["phi2_deg"])):
-            out.append(Handle(key, "acceleration", x, _interp(series, "valve_acceleration_m_s2", x)))
+    half = main_half_angle_deg(spec.valves[name], spec.engine.strokes)
+    for key, x in _shape_points(cam, half, series["segments_cam_deg"]):
+        out.append(Handle(key, "acceleration", x, _interp(series, "valve_acceleration_m_s2", x)))
     return out
 
 
-def moved(document, spec, name, handle, x, y):
-    """The keys a drag of ``handle`` to (x, y) sets: ``{dotted key: value}``.
+def _shape_points(cam, half, edges):
+    """``[(handle name, cam deg from the nose), ...]`` of a cam's shape on the opening flank (:func:`handles`);
+    ``edges`` are the law's piece boundaries [cam deg] (the design's ``segments_cam_deg``)."""
+    law = cam.get("law")
+    if law == "power_polynomial":
+        # the pieces: ramp a-b, positive part b-d-e (peak d), negative part e-g-h (trough g), dwell
+        return list(zip(("ramp", "peak", "phi1", "trough"), (edges[0], edges[2], edges[3], edges[4]), strict=True))
+    if law == "combined":
+        ends = -half + np.cumsum([seg["length_deg"] for seg in cam["segments"]])
+        return [(f"end.{k}", float(x)) for k, x in enumerate(ends[:-1], 1)]
+    if {"phi1_deg", "phi2_deg"} <= set(cam):
+        return [("phi1", -half + cam["phi1_deg"]), ("phi2", -half + cam["phi1_deg"] + cam["phi2_deg"])]
+    return []
 
-    The nose sets the valve lift ``max_lift_mm`` to y [mm]; a segment boundary at x [cam deg from the nose] sets
-    the angles on either side of it (phi1_deg and phi2_deg for the first, phi2_deg and, where it is given,
-    phi3_deg for the second), so that the other boundaries stay and the flank still adds up to the half-angle.
+
+def _split(start, a, b, x):
+    """Two adjacent angles ``a``, ``b`` [cam deg] (the first from ``start``) with their boundary dragged to ``x``:
+    the new pair, rounded to :data:`HANDLE_STEP`, each at least :data:`MIN_SEGMENT_DEG`, adding up as before."""
+    new = round(min(max(x - start, MIN_SEGMENT_DEG), a + b - MIN_SEGMENT_DEG), 2)
+    return new, round(a + b - new, 2)
+
+
+def _position(x, start, length):
+    """Where ``x`` lies in a part from ``start`` of ``length`` [cam deg], as a fraction within
+    :data:`POSITION_RANGE`, to 3 digits."""
+    return round(min(max((x - start) / length, POSITION_RANGE[0]), POSITION_RANGE[1]), 3)
+
+
+POSITION_RANGE = (0.02, 0.98)
+"""The range a peak position (a fraction of its part) is dragged in: at 0 or 1 the two pieces of a part become one."""
+
+
+def moved(document, spec, name, handle, x, y, series):
+    """The keys a drag of ``handle`` to (x, y) sets: ``{dotted key: value}``; x [cam deg from the nose], y [mm] on
+    the lift plot, [m/s²] (valve side, at the rated speed) on the acceleration plot; ``series`` the design's.
+
+    The nose sets the valve lift ``max_lift_mm`` to y.  A boundary between two angles sets both so that the other
+    boundaries stay and the flank still adds up to the half-angle (phi1_deg and phi2_deg for ``phi1`` of a cam of
+    segment angles, phi2_deg and, where it is given, phi3_deg for ``phi2``; the lengths of segments K and K+1 for
+    ``end.K`` of a combined cam, and the value of a ratio naming segment K, y over the acceleration at the nose).
+    Of a power-polynomial cam, ``ramp`` sets ramp_angle_deg (the ramp ends where the main event starts), ``phi1``
+    the positive part phi1_deg, ``peak`` the peak_position in it and peak_acceleration_mm_per_rad2 in the ratio of
+    y to the peak's present height (the valve's acceleration is the tappet's analogue times the rocker ratio and the
+    camshaft speed squared), ``trough`` the trough_position in the negative part.
     """
     at = f"valves.{name}"
     if handle == "nose":
         return {f"{at}.max_lift_mm": round(max(y, HANDLE_STEP["mm"]), 3)}
     cam = document["valves"][name]["cam"]
     half = main_half_angle_deg(spec.valves[name], spec.engine.strokes)
+    edges = series["segments_cam_deg"]
+    if cam["law"] == "power_polynomial":
+        if handle == "ramp":
+            return {f"{at}.cam.ramp_angle_deg": round(max(-x - half, MIN_SEGMENT_DEG), 2)}
+        if handle == "phi1":
+            return {f"{at}.cam.phi1_deg": round(min(max(x - edges[1], MIN_SEGMENT_DEG), half - MIN_SEGMENT_DEG), 2)}
+        if handle == "trough":
+            return {f"{at}.cam.trough_position": _position(x, edges[3], edges[5] - edges[3])}
+        old = _interp(series, "valve_acceleration_m_s2", edges[2])
+        return {f"{at}.cam.peak_position": _position(x, edges[1], edges[3] - edges[1]),
+                f"{at}.cam.peak_acceleration_mm_per_rad2": round(cam["peak_acceleration_mm_per_rad2"] * max(y, 0.0)
+                                                                 / old, 2)}
+    if cam["law"] == "combined":
+        k = int(handle.split(".")[1])
+        segments = [dict(seg) for seg in cam["segments"]]
+        start = -half + sum(seg["length_deg"] for seg in segments[:k - 1])
+        segments[k - 1]["length_deg"], segments[k]["length_deg"] = _split(
+            start, segments[k - 1]["length_deg"], segments[k]["length_deg"], x)
+        out = {f"{at}.cam.segments": segments}
+        ratios = cam.get("ratios", [])
+        if any(r["segment"] == k for r in ratios):
+            nose = _interp(series, "valve_acceleration_m_s2", 0.0)
+            out[f"{at}.cam.ratios"] = [{**r, "value": round(y / nose, 3)} if r["segment"] == k else dict(r)
+                                       for r in ratios]
+        return out
     phi1, phi2 = cam["phi1_deg"], cam["phi2_deg"]
     phi3 = cam.get("phi3_deg")
-    third = half - phi1 - phi2 if phi3 is None else phi3
     if handle == "phi1":
-        new1 = min(max(x + half, MIN_SEGMENT_DEG), phi1 + phi2 - MIN_SEGMENT_DEG)
-        new1 = round(new1, 2)
-        return {f"{at}.cam.phi1_deg": new1, f"{at}.cam.phi2_deg": round(phi1 + phi2 - new1, 2)}
-    new2 = round(min(max(x + half - phi1, MIN_SEGMENT_DEG), phi2 + third - MIN_SEGMENT_DEG), 2)
+        new1, new2 = _split(-half, phi1, phi2, x)
+        return {f"{at}.cam.phi1_deg": new1, f"{at}.cam.phi2_deg": new2}
+    new2, new3 = _split(-half + phi1, phi2, half - phi1 - phi2 if phi3 is None else phi3, x)
     out = {f"{at}.cam.phi2_deg": new2}
     if phi3 is not None:
-        out[f"{at}.cam.phi3_deg"] = round(phi2 + phi3 - new2, 2)
+        out[f"{at}.cam.phi3_deg"] = new3
     return out
 
 
@@ -258,8 +326,10 @@ class Session:
         return handles(self.good_document, self.spec, name, self.good["series"][name])
 
     def drag(self, name, handle, x, y):
-        """Move a handle of valve ``name`` to (x, y) and design (:func:`moved`, :meth:`edit`)."""
-        return self.edit(moved(self.good_document, self.spec, name, handle, x, y))
+        """Move a handle of valve ``name`` to (x, y) and design (:func:`moved`, :meth:`edit`).  Returns the keys set
+        (``{dotted key: value}``) when it designed, else an empty dict."""
+        values = moved(self.good_document, self.spec, name, handle, x, y, self.good["series"][name])
+        return values if self.edit(values) else {}
 
     def pin(self):
         """Pin the good design as the baseline that the plots and the checks table compare with."""
@@ -267,7 +337,7 @@ class Session:
 
     def report(self, lang):
         """The report of the good design as HTML text in ``lang``."""
-        return api.report_html(without_nones(self.good_document), lang)
+        return api.report_html(without_nones(self.good_document), lang, "main")
 
     def toml(self):
         """The specification of the good design as TOML text (every default written out)."""
