@@ -299,11 +299,11 @@ def heap_arrays():
     libc.mallopt(m_mmap_threshold, MMAP_THRESHOLD_BYTES)
 
 
-def evaluate_points(documents, point=evaluate_point):
+def evaluate_points(documents, point=None):
     """``point`` (:func:`evaluate_point`) of each document of a list (one Dask task, :func:`heap_arrays` first): the
     list of records."""
     heap_arrays()
-    return [point(d) for d in documents]
+    return [(point or evaluate_point)(d) for d in documents]
 
 
 def dask_chunk(total, threads):
@@ -311,8 +311,7 @@ def dask_chunk(total, threads):
     return max(1, min(DASK_MAX_CHUNK, math.ceil(total / (DASK_TASKS_PER_THREAD * max(threads, 1)))))
 
 
-def evaluate(documents, total, workers=None, scheduler=None, progress=None, describe=str, point=evaluate_point,
-             keep=None):
+def evaluate(documents, total, workers=None, scheduler=None, progress=None, describe=str, point=None, keep=None):
     """Evaluate documents with :func:`evaluate_point`: serially, in local processes, or on a Dask cluster.
 
     The documents are taken from the iterable as they are needed (a few per worker at a time), so a large study
@@ -334,7 +333,7 @@ def evaluate(documents, total, workers=None, scheduler=None, progress=None, desc
     describe : callable, optional
         ``describe(index)``: a point as a message names it.
     point : callable, optional
-        The pure function document -> record (a module-level function, so that processes can be given it):
+        The pure function document -> record (default :func:`evaluate_point`) (a module-level function, so that processes can be given it):
         :func:`evaluate_point`, or another record of the design (:func:`valvetrain.tolerance.evaluate_sample`).
     keep : callable, optional
         ``keep(index, record)`` as each record arrives (to write it at once, so that an interrupted run keeps it).
@@ -353,6 +352,7 @@ def evaluate(documents, total, workers=None, scheduler=None, progress=None, desc
     StudyStopped
         A worker process died (killed, out of memory); the records designed before it are kept.
     """
+    point = point or evaluate_point   # looked up at the call, so that a test can replace it
     records = _Records(total, keep)
     tick = progress or (lambda done, total: None)
     tick(0, total)
