@@ -6,9 +6,10 @@ The baseline is the package of the commit ``REF`` (default :data:`BASELINE`, the
 speed), unpacked into a temporary folder (``git archive``); each case runs ``python -m valvetrain run ... --out DIR``
 in a new process, imports included, alternately with this tree's ``src`` and the baseline's on ``PYTHONPATH``, after
 one run of each that is not counted (it fills numba's on-disk cache of the unpacked baseline, and the page cache):
-the times are those of warm runs.  Cases: the built-in example with the default figures and with ``--figures none``,
-and ``examples/pushrod-dynamics.toml`` (a ``[dynamics]`` section) with the default figures.  For each: the best and
-the median wall time and processor time (the process and its children: the drawing processes) of ``--repeats``
+the times are those of warm runs.  Cases (:data:`CASES`): the built-in example with the default figures and with
+``--figures none``, the textbook's appendix (the built-in example of the baseline) and
+``examples/pushrod-dynamics.toml`` (a ``[dynamics]`` section) with the default figures.  For each: the best and the
+median wall time and processor time (the process and its children: the drawing processes) of ``--repeats``
 runs, and the load average of the machine while they ran (on a machine that others use the wall time is the
 processor time plus the wait, and a core that another process holds stretches it).
 """
@@ -28,9 +29,14 @@ BASELINE = "7cf5134"
 """The commit before the work on the speed of ``valvetrain run`` (issue 22)."""
 GOAL_S = 2.0
 """Wall time of ``valvetrain run`` of the built-in example with the default figures, on a 2-core machine [s]."""
-CASES = (("built-in example, default figures", []),
-         ("built-in example, --figures none", ["--figures", "none"]),
-         ("examples/pushrod-dynamics.toml, default figures", [str(ROOT / "examples" / "pushrod-dynamics.toml")]))
+CASES = (("built-in example, default figures (the baseline's own built-in example)", [], None),
+         ("the textbook's appendix, default figures (the built-in example until 7cf5134)",
+          ["{examples}/seed000-appendix-kurz.toml"], []),
+         ("built-in example, --figures none (the baseline's own built-in example)", ["--figures", "none"], None),
+         ("examples/pushrod-dynamics.toml, default figures (each tree's own file)",
+          ["{examples}/pushrod-dynamics.toml"], None))
+"""Each case: its title, the arguments of this tree's run and those of the baseline's (None: the same); ``{examples}``
+is the tree's own examples folder, whose files match its package's keys."""
 
 
 def command(src, args, out):
@@ -45,10 +51,11 @@ def command(src, args, out):
 
 
 def baseline_tree(ref, folder):
-    """The ``src`` folder of commit ``ref``, unpacked into ``folder``."""
-    archive = subprocess.run(["git", "-C", str(ROOT), "archive", ref, "src"], check=True, capture_output=True).stdout
+    """The root of commit ``ref``'s ``src`` and ``examples`` folders, unpacked into ``folder``."""
+    archive = subprocess.run(["git", "-C", str(ROOT), "archive", ref, "src", "examples"], check=True,
+                             capture_output=True).stdout
     subprocess.run(["tar", "-x", "-C", str(folder)], input=archive, check=True)
-    return folder / "src"
+    return folder
 
 
 def _line(label, times):
@@ -64,15 +71,18 @@ def main():
     options = parser.parse_args()
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)
-        trees = {"this tree": ROOT / "src", f"{options.baseline}": baseline_tree(options.baseline, tmp)}
-        for title, args in CASES:
+        trees = {"this tree": ROOT, f"{options.baseline}": baseline_tree(options.baseline, tmp)}
+        for title, args, baseline_args in CASES:
+            runs = {label: ([a.format(examples=root / "examples") for a in
+                             (args if label == "this tree" or baseline_args is None else baseline_args)], root / "src")
+                    for label, root in trees.items()}
             times = {label: [] for label in trees}
-            for label, src in trees.items():
-                command(src, args, tmp / "warm")
+            for label, (run_args, src) in runs.items():
+                command(src, run_args, tmp / "warm")
             load = [os.getloadavg()[0]]
             for i in range(options.repeats):
-                for label, src in trees.items():
-                    times[label].append(command(src, args, tmp / "out"))
+                for label, (run_args, src) in runs.items():
+                    times[label].append(command(src, run_args, tmp / "out"))
                 load.append(os.getloadavg()[0])
             goal = f" (goal <= {GOAL_S:g} s wall on 2 cores)" if not args else ""
             print(f"valvetrain run, {title}{goal}: {options.repeats} warm runs each, load average "
