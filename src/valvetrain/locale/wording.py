@@ -7,6 +7,8 @@ reads and into the specification's key names.  results.json and the CLI take the
 report its own language.
 """
 
+from typing import Any
+
 from ..units import symbol as unit_text, to_display
 from . import catalogue, check_text
 
@@ -108,7 +110,7 @@ def _remedy_record(r):
     return out
 
 
-def diagnosis_record(d):
+def diagnosis_record(d) -> dict[str, Any]:
     """The ``spring.diagnosis`` record of results.json: the conflicts and the stress window in display units, the
     remedies that help and those tried in vain, and the English text (:func:`diagnosis_text`)."""
     out = {"conflicts": [{"spring": x.spring, "check": x.check, "quantity": x.quantity,
@@ -137,7 +139,7 @@ def _remedy_text(r, words):
     return helped.format(value=r.value, mm=mm, rpm=rpm, saved=1.0 - r.value)
 
 
-def diagnosis_text(d, lang):
+def diagnosis_text(d, lang) -> str:
     """The spring diagnosis (:class:`valvetrain.springs.Diagnosis`) in words of ``lang``: the conflicts, what the
     stress window proves, the remedies."""
     words, springs = DIAGNOSIS_WORDS[lang], catalogue(lang)["springs"]
@@ -166,7 +168,7 @@ def diagnosis_text(d, lang):
     return " ".join(text)
 
 
-def fit_reason(fit, harmonics, code, ratio, smoothing, lang="en"):
+def fit_reason(fit, harmonics, code, ratio, smoothing, lang="en") -> str:
     """The fit a measured table uses and why, in ``lang``: one sentence.
 
     Parameters
