@@ -7,8 +7,6 @@ reads and into the specification's key names.  results.json and the CLI take the
 report its own language.
 """
 
-from typing import Any
-
 from ..units import symbol as unit_text, to_display
 from . import catalogue, check_text
 
@@ -95,33 +93,6 @@ def _window_record(w):
     return {"material": w.material, "deflection_ratio": w.deflection_ratio,
             "max_deflection_mm": to_display(w.max_deflection, "mm"), "stress_needed_MPa": to_display(w.needed, "MPa"),
             "stress_allowed_MPa": to_display(w.allowed, "MPa")}
-
-
-def _remedy_record(r):
-    """A remedy as results.json gives it: the change, the value in the specification's units, the spring mass."""
-    if r.change == "max_installed_length":
-        out = {"change": "max_installed_length_mm", **({} if r.value is None else {"to": to_display(r.value, "mm")})}
-    else:
-        out = {"change": r.change, "to": r.value}
-    if r.spring_mass is not None:
-        out["spring_mass_kg"] = r.spring_mass
-    if r.rated_speed is not None:
-        out["rated_speed_rpm"] = to_display(r.rated_speed, "rpm")
-    return out
-
-
-def diagnosis_record(d) -> dict[str, Any]:
-    """The ``spring.diagnosis`` record of results.json: the conflicts and the stress window in display units, the
-    remedies that help and those tried in vain, and the English text (:func:`diagnosis_text`)."""
-    out = {"conflicts": [{"spring": x.spring, "check": x.check, "quantity": x.quantity,
-                          "value": to_display(x.value, x.unit), "limit": to_display(x.limit, x.unit), "unit": x.unit,
-                          "shortfall": x.shortfall} for x in d.conflicts]}
-    if d.window is not None:
-        out["resonance"] = _window_record(d.window)
-    out["remedies"] = [_remedy_record(r) for r in d.helped]
-    out["tried"] = [_remedy_record(r) for r in d.tried]
-    out["text"] = diagnosis_text(d, "en")
-    return out
 
 
 def _remedy_text(r, words):
