@@ -304,30 +304,30 @@ WORKS = {
 """Every cited work by its key."""
 
 
-def entry(key):
+def entry(key) -> str:
     """The full reference of ``key`` (see :data:`WORKS`)."""
     return WORKS[key].reference()
 
 
-def cite(key, where=""):
+def cite(key, where="") -> str:
     """A short in-text citation: ``cite("shang1988", "eq. (2.6)")`` -> ``"Shang Hanji (1988), eq. (2.6)"``."""
     short = WORKS[key].short
     return f"{short}, {where}" if where else short
 
 
-def cited_in(text):
+def cited_in(text) -> list[str]:
     """Keys of the works whose in-text form occurs in ``text``, in the order of :data:`WORKS`."""
     return [key for key, work in WORKS.items() if work.short in text]
 
 
-def corrections_text(lang="en"):
+def corrections_text(lang="en") -> str:
     """The corrections notes shipped with the package (Markdown): each misprint of a source and what is used, in
     English (``data/corrections.md``) or Russian (``data/corrections.ru.md``, the same items by the same numbers)."""
     name = "data/corrections.md" if lang == "en" else f"data/corrections.{lang}.md"
     return resources.files("valvetrain").joinpath(name).read_text(encoding="utf-8")
 
 
-def corrections_notes(lang="en"):
+def corrections_notes(lang="en") -> dict[int, tuple[str, str]]:
     """The numbered items of :func:`corrections_text` in ``lang``: ``{N: (title, text)}``, the Markdown's line breaks
     and emphasis removed (the title is the item's bold opening), a key in backquotes written in words."""
     notes = {}

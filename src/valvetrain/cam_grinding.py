@@ -35,7 +35,7 @@ def _pitch_curve(derivs, theta, heel, follower):
     return follower.pitch_curve(theta, heel, h, dh, d2h)
 
 
-def offset_curve(derivs, theta, heel, distance, follower=FLAT):
+def offset_curve(derivs, theta, heel, distance, follower=FLAT) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """The offset of the cam contour by ``distance`` along its outward normal [m].
 
     Parameters
@@ -80,7 +80,7 @@ def offset_curve(derivs, theta, heel, distance, follower=FLAT):
     return base + d * normal, dbase * (1.0 + d / rho), normal, rho + d
 
 
-def wheel_centre_path(derivs, theta, heel, wheel_radius, follower=FLAT):
+def wheel_centre_path(derivs, theta, heel, wheel_radius, follower=FLAT) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """The grinding-wheel centre in the cam frame while the wheel grinds the contour point of ``theta``.
 
     Returns
@@ -117,7 +117,7 @@ def wheel_centre_path(derivs, theta, heel, wheel_radius, follower=FLAT):
     return c, np.hypot(*c), np.arctan2(*c)
 
 
-def wheel_centre_radius(derivs, psi, heel, wheel_radius, follower=FLAT):
+def wheel_centre_radius(derivs, psi, heel, wheel_radius, follower=FLAT) -> np.ndarray:
     """The wheel centre's polar radius L [m] at polar angles ``psi`` of the cam frame [rad from the nose].
 
     This is the motion the master must give the wheel head while the spindle turns: at spindle angle
@@ -132,7 +132,7 @@ def wheel_centre_radius(derivs, psi, heel, wheel_radius, follower=FLAT):
     return wheel_centre_path(derivs, theta, heel, wheel_radius, follower)[1]
 
 
-def master_follower_lift(derivs, psi, heel, wheel_radius, bar_ratio, follower=FLAT):
+def master_follower_lift(derivs, psi, heel, wheel_radius, bar_ratio, follower=FLAT) -> np.ndarray:
     """Lift of the master follower at spindle angles ``psi`` [rad from the nose], s_m = i (L - L_min) [m].
 
     Notes
@@ -148,13 +148,13 @@ def master_follower_lift(derivs, psi, heel, wheel_radius, bar_ratio, follower=FL
     return bar_ratio * (wheel_centre_radius(derivs, psi, heel, wheel_radius, follower) - (heel + wheel_radius))
 
 
-def default_master_base_radius(heel, wheel_radius, bar_ratio, master_roller):
+def default_master_base_radius(heel, wheel_radius, bar_ratio, master_roller) -> float:
     """The master's heel radius that makes its pitch curve the wheel-centre path scaled by the bar ratio,
     R_m0 = i (R_0 + R_w) - r_m [m]; with i = 1 and r_m = R_w the master is the cam itself."""
     return bar_ratio * (heel + wheel_radius) - master_roller
 
 
-def master_pitch(derivs, theta, heel, wheel_radius, bar_ratio, master_base, master_roller, follower=FLAT):
+def master_pitch(derivs, theta, heel, wheel_radius, bar_ratio, master_base, master_roller, follower=FLAT) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """The master follower's centre curve (master pitch curve) in the master frame, parametrised by the cam angle.
 
     Returns
@@ -185,7 +185,7 @@ def master_pitch(derivs, theta, heel, wheel_radius, bar_ratio, master_base, mast
     return g * unit, dm, np.stack([-dm[1], dm[0]]) / speed
 
 
-def master_contour(derivs, theta, heel, wheel_radius, bar_ratio, master_base, master_roller, follower=FLAT):
+def master_contour(derivs, theta, heel, wheel_radius, bar_ratio, master_base, master_roller, follower=FLAT) -> np.ndarray:
     """The master cam's contour [m], shape (2, n): the pitch curve offset inwards by the master roller radius.
 
     References
@@ -196,7 +196,7 @@ def master_contour(derivs, theta, heel, wheel_radius, bar_ratio, master_base, ma
     return m - master_roller * n
 
 
-def master_pitch_curvature(derivs, theta, heel, wheel_radius, bar_ratio, master_base, master_roller, follower=FLAT):
+def master_pitch_curvature(derivs, theta, heel, wheel_radius, bar_ratio, master_base, master_roller, follower=FLAT) -> np.ndarray:
     """Radius of curvature of the master pitch curve [m] (positive convex) on the angles ``theta``, by
     differentiating the analytic derivative numerically (second-order differences on the given angles, which
     should be dense and include the law's breakpoints). The master contour's radius is this minus r_m."""
@@ -207,7 +207,7 @@ def master_pitch_curvature(derivs, theta, heel, wheel_radius, bar_ratio, master_
         return np.where(cross == 0.0, np.inf, -np.hypot(*dm) ** 3 / np.where(cross == 0.0, 1.0, cross))
 
 
-def master_polar_radius(derivs, psi, heel, wheel_radius, bar_ratio, master_base, master_roller, follower=FLAT):
+def master_polar_radius(derivs, psi, heel, wheel_radius, bar_ratio, master_base, master_roller, follower=FLAT) -> np.ndarray:
     """Polar radius of the master contour [m] at polar angles ``psi`` of the master frame [rad from the nose
     direction], solved on the analytic contour (the contour point's polar angle inverted to round-off).
 
@@ -220,7 +220,7 @@ def master_polar_radius(derivs, psi, heel, wheel_radius, bar_ratio, master_base,
     return np.hypot(*master_contour(derivs, theta, *args))
 
 
-def master_flat_lift(derivs, phi, heel, wheel_radius, bar_ratio, master_base, master_roller, follower=FLAT):
+def master_flat_lift(derivs, phi, heel, wheel_radius, bar_ratio, master_base, master_roller, follower=FLAT) -> np.ndarray:
     """Flat-follower lift of a convex master [m] in the directions ``phi`` [rad from the nose direction]: its support
     function less its heel radius, for making the master on a surface grinder.
 
@@ -242,7 +242,7 @@ def master_flat_lift(derivs, phi, heel, wheel_radius, bar_ratio, master_base, ma
     return np.sum(master_contour(derivs, theta, *args) * normal, axis=0) - master_base
 
 
-def grindable(derivs, theta, heel, wheel_radius, follower=FLAT):
+def grindable(derivs, theta, heel, wheel_radius, follower=FLAT) -> tuple[bool, float]:
     """Whether a wheel of ``wheel_radius`` [m] grinds the contour without cutting into it, and the smallest
     factor 1 + R_w / rho of the contour (the wheel path's regularity) on ``theta``.
 
@@ -260,7 +260,7 @@ def grindable(derivs, theta, heel, wheel_radius, follower=FLAT):
     return worst > 0.0, worst
 
 
-def worn_wheel_lift(derivs, theta, heel, wheel_radius, wear, follower=FLAT, infeed=False):
+def worn_wheel_lift(derivs, theta, heel, wheel_radius, wear, follower=FLAT, infeed=False) -> np.ndarray:
     """Follower lift [m] of the cam ground by a worn wheel (radius R_w - w) on the design wheel-centre path,
     from the cam's own base circle (R_0 + w), exactly: by re-enveloping the path with the worn wheel.
 
@@ -306,7 +306,7 @@ def worn_wheel_lift(derivs, theta, heel, wheel_radius, wear, follower=FLAT, infe
     return follower.lift_on_path(path, np.asarray(theta, dtype=float), base)
 
 
-def wear_error_first_order(derivs, theta, heel, wear, follower=FLAT, wheel_radius=None, infeed=False):
+def wear_error_first_order(derivs, theta, heel, wear, follower=FLAT, wheel_radius=None, infeed=False) -> tuple[np.ndarray, np.ndarray]:
     """First-order lift error and phase shift of a cam ground by a wheel worn by ``wear`` [m].
 
     Returns

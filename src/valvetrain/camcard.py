@@ -23,32 +23,32 @@ VALVE_CHECKING_HEIGHT = 1.0e-3
 """Valve lift at which the European cam card gives its events and durations [m]."""
 
 
-def crank_events(cam_angles, nose):
+def crank_events(cam_angles, nose) -> float | np.ndarray:
     """Crank angles [rad from the gas-exchange TDC] of camshaft angles [rad from the nose] of a lobe whose nose is
     at crank angle ``nose`` [rad]: ``nose + 2 theta``."""
     return nose + 2.0 * np.asarray(cam_angles, dtype=float)
 
 
-def tappet_events(law, nose, height=TAPPET_CHECKING_HEIGHT):
+def tappet_events(law, nose, height=TAPPET_CHECKING_HEIGHT) -> tuple[float, float]:
     """Opening and closing crank angles [rad] where the tappet lift passes ``height`` [m] above the heel circle
     (the law's lift, ramp included); ``(nan, nan)`` where it never reaches it."""
     return tuple(float(c) for c in crank_events(law.crossings(height), nose))
 
 
-def valve_events(law, rocker_ratio, nose, height=VALVE_CHECKING_HEIGHT):
+def valve_events(law, rocker_ratio, nose, height=VALVE_CHECKING_HEIGHT) -> tuple[float, float]:
     """Opening and closing crank angles [rad] where the valve lift i_k (h - h0) passes ``height`` [m], i.e. the
     tappet lift passes h0 + height / i_k; ``(nan, nan)`` where it never reaches it."""
     return tappet_events(law, nose, law.ramp_height + height / rocker_ratio)
 
 
-def lift_at(law, rocker_ratio, nose, crank):
+def lift_at(law, rocker_ratio, nose, crank) -> np.ndarray:
     """Valve lift [m] at crank angles ``crank`` [rad from the gas-exchange TDC] (0 off the lobe)."""
     theta = (np.asarray(crank, dtype=float) - nose) / 2.0
     inside = (theta >= law.start) & (theta <= law.end)
     return np.where(inside, law.valve_lift(np.clip(theta, law.start, law.end), rocker_ratio), 0.0)
 
 
-def lobe_separation(intake_nose, exhaust_nose):
+def lobe_separation(intake_nose, exhaust_nose) -> float:
     """Lobe separation angle [rad, camshaft]: the camshaft angle between the exhaust lobe's centre and the intake's,
     (nose_in - nose_ex) / 2 (crank angles halved).
 
@@ -58,13 +58,13 @@ def lobe_separation(intake_nose, exhaust_nose):
     return (intake_nose - exhaust_nose) / 2.0
 
 
-def overlap(intake_opens, exhaust_closes):
+def overlap(intake_opens, exhaust_closes) -> float:
     """Overlap [crank rad]: exhaust closing less intake opening (negative where the intake opens after the exhaust
     closes: no overlap at that height)."""
     return exhaust_closes - intake_opens
 
 
-def overlap_area(intake, exhaust, samples=2001):
+def overlap_area(intake, exhaust, samples=2001) -> float:
     """The area under the lower of the two valve lifts over the overlap [m rad, crank]: the overlap's lift-angle
     area, trapezoidal on ``samples`` points.
 

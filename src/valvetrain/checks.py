@@ -36,6 +36,7 @@ Values and bounds are SI; ``unit`` names the unit they are shown in (see
 
 from dataclasses import dataclass, replace
 import math
+from typing import Any
 
 from .locale import catalogue, code_of, record_text
 from .units import to_display, without_noise
@@ -202,7 +203,7 @@ def _fmt(x):
     return f"{x:g}"
 
 
-def describe_range(low=None, high=None, unit="", strict_low=False):
+def describe_range(low=None, high=None, unit="", strict_low=False) -> str:
     """Text of a range ``low...high`` (either side may be open) with its unit.
 
     >>> describe_range(50, 80, "m/s"), describe_range(low=0, unit="mm", strict_low=True)
@@ -221,7 +222,7 @@ def describe_range(low=None, high=None, unit="", strict_low=False):
 
 
 def check(code, value, low=None, high=None, *, source, unit="", severity="warning", strict_low=False, note="",
-          unevaluated="", params=None):
+          unevaluated="", params=None) -> Check:
     """A :class:`Check` of ``value`` (SI) against ``low``/``high`` (SI); see :class:`Check` for the fields.
 
     ``code`` is the check's code in the catalogue (:mod:`valvetrain.locale`; a code without texts is refused),
@@ -256,12 +257,12 @@ def check(code, value, low=None, high=None, *, source, unit="", severity="warnin
                  unevaluated=unevaluated, code=code, params=params)
 
 
-def failed(checks):
+def failed(checks) -> list[Check]:
     """The checks of a sequence that fail, in order."""
     return [c for c in checks if not c.passed]
 
 
-def ranked(checks):
+def ranked(checks) -> list[Check]:
     """Checks in the order a reader needs them: failures, warnings, info; within a severity the farthest outside its
     range first (smallest :attr:`Check.margin`), then in the given order.
 
@@ -306,7 +307,7 @@ def _norm(text):
     return " ".join(text.split()).casefold()
 
 
-def resolve(acceptance, valves):
+def resolve(acceptance, valves) -> tuple[str | None, str, dict[str, Any] | None]:
     """What an acceptance names: ``(valve, code, params)``, ``params`` None for every check of the code; None when
     its ``quantity`` is neither a code nor the English text of a check.
 
@@ -340,7 +341,7 @@ def _spring_code(text):
     return named[0], {**named[1], "spring": spring.casefold()}
 
 
-def matches(target, c):
+def matches(target, c) -> bool:
     """True when a resolved acceptance ``(valve, code, params)`` (:func:`resolve`) names the check ``c``."""
     valve, code, params = target
     return (c.code == code and (valve is None or c.valve == valve)
@@ -348,7 +349,7 @@ def matches(target, c):
                  == {k: str(v).casefold() for k, v in params.items()}))
 
 
-def apply_acceptances(checks, acceptances, valves=()):
+def apply_acceptances(checks, acceptances, valves=()) -> tuple[list[Check], list[int]]:
     """The checks with ``accepted`` and ``reason`` set where an acceptance of the specification names them, and the
     indices of the acceptances that name no check.
 

@@ -685,7 +685,7 @@ def example():
     click.echo(example_text(), nl=False)
 
 
-def program():
+def program() -> None:
     """The ``valvetrain`` program: :func:`main`, then Ctrl-C ignored while Python shuts down.
 
     The command is done by then (its exit status is set); Python's shutdown restores the

@@ -15,8 +15,11 @@ and the jump speed of a short one-mass sweep (:data:`COMPARE_SPEEDS` speeds over
 ``[dynamics]`` range, or the default range).  :func:`with_dynamics` sets that sweep up.
 """
 
+from typing import Any
+
 import numpy as np
 
+from .specification.models import Spec
 from .units import MM, rad_to_deg, rpm_to_rad_s
 
 METRICS = [
@@ -61,18 +64,18 @@ COMPARE_SPEEDS = 40
 """Speeds of the one-mass sweep of each compared valve (fewer if its [dynamics] section asks fewer)."""
 
 
-def duration_at(valve, height):
+def duration_at(valve, height) -> float:
     """Camshaft angle [rad] over which the valve lift exceeds ``height`` [m], by root finding on the law."""
     return valve.law.duration(valve.law.ramp_height + height / valve.rocker_ratio)
 
 
-def step_text(step):
+def step_text(step) -> str:
     """An acceleration step (:class:`valvetrain.design.valve.StepRecord`) for the comparison table."""
     ramp = ", on the ramp" if step.on_ramp else ""
     return f"{step.size:+.4g} m/s2 at {rad_to_deg(step.angle):.4g} cam deg{ramp}"
 
 
-def max_jerk(valve, theta):
+def max_jerk(valve, theta) -> float | str:
     """The largest |tappet jerk| [m/s^3] on the angles ``theta`` [rad]; where the acceleration steps, the jerk is an
     impulse: ``"∞ (step of ...)"`` with the largest step (the valve's ``cam.acceleration_steps``)."""
     steps = valve.cam.acceleration_steps
@@ -81,7 +84,7 @@ def max_jerk(valve, theta):
     return float(np.abs(valve.law.jerk(theta, valve.omega_cam)).max())
 
 
-def entry(valve):
+def entry(valve) -> dict[str, Any]:
     """The comparison figures of one designed valve (a :class:`valvetrain.design.ValveDesign`)."""
     s = valve.summary
     law = valve.law
@@ -108,7 +111,7 @@ def entry(valve):
     }
 
 
-def with_dynamics(spec, speeds=COMPARE_SPEEDS):
+def with_dynamics(spec, speeds=COMPARE_SPEEDS) -> Spec:
     """The specification with every valve's ``[dynamics]`` section (or the default one) turned into a short
     one-mass sweep of at most ``speeds`` speeds, for the dynamics rows of the comparison."""
     from .specification.models import Dynamics
@@ -121,7 +124,7 @@ def with_dynamics(spec, speeds=COMPARE_SPEEDS):
     return spec.model_copy(update={"valves": valves})
 
 
-def max_drive_load(law, cam_speed, rocker_ratio, mass, rate, preload, points=3601):
+def max_drive_load(law, cam_speed, rocker_ratio, mass, rate, preload, points=3601) -> float:
     """Largest kinetostatic load of the drive at the valve over the event, max(F0 + K y + M j) [N].
 
     Parameters
@@ -155,7 +158,7 @@ def max_drive_load(law, cam_speed, rocker_ratio, mass, rate, preload, points=360
     return float(np.max(preload + rate * rocker_ratio * h + mass * rocker_ratio * cam_speed**2 * d2h))
 
 
-def dynamics_entry(valve):
+def dynamics_entry(valve) -> dict[str, Any]:
     """The comparative-dynamics figures of one designed valve whose ``dynamics`` is set (SI in, display units out)."""
     d = valve.dynamics
     p = d.parameters
@@ -179,7 +182,7 @@ def dynamics_entry(valve):
     }
 
 
-def comparison(designs):
+def comparison(designs) -> tuple[dict[str, dict[str, Any]], list[str]]:
     """Compare designed valves.
 
     Parameters
@@ -206,7 +209,7 @@ def comparison(designs):
     return rows, notes
 
 
-def write_comparison(designs, out, inputs=(), force=False):
+def write_comparison(designs, out, inputs=(), force=False) -> tuple[dict[str, dict[str, Any]], list[str]]:
     """Write ``compare.csv``, ``compare.json`` and the overlaid plots into ``out`` atomically.
 
     ``inputs`` (the files read) and ``force`` are those of :func:`valvetrain.outfolder.atomic_folder`.
@@ -251,12 +254,12 @@ def write_comparison(designs, out, inputs=(), force=False):
     return rows, notes
 
 
-def shown_metrics(rows):
+def shown_metrics(rows) -> list[tuple[str, str]]:
     """The rows of :data:`METRICS` and of :data:`DYNAMICS_METRICS` that some entry has."""
     return METRICS + [(key, label) for key, label in DYNAMICS_METRICS if any(key in r for r in rows.values())]
 
 
-def table_cell(value):
+def table_cell(value) -> str | float:
     """A table cell: a text as it is, a number as a float, a missing value (None) empty."""
     return "" if value is None else value if isinstance(value, str) else float(value)
 

@@ -12,7 +12,7 @@ the top.
 from .interruption import Interruption, interrupted_while_starting
 
 
-def program():
+def program() -> None:
     """Import the command line with the SIGINT recorded, end if it came, and run it (:func:`valvetrain.cli.program`)."""
     Interruption.install(Interruption.record)
     from .cli import program as command

@@ -24,7 +24,7 @@ def _short(text):
     return text if len(text) <= ECHO_CHARS else text[:ECHO_CHARS] + "..."
 
 
-def shown_path(path, limit=120):
+def shown_path(path, limit=120) -> str:
     """A file name as shown in a message: whole, or its start and end around '...' when longer than ``limit``."""
     text = str(path)
     return text if len(text) <= limit else f"{text[:40]}...{text[-(limit - 43):]}"
@@ -39,7 +39,7 @@ def _text(path, error):
         raise error(f"{shown_path(path)}: cannot read the file: not UTF-8 text ({exc.reason})") from None
 
 
-def read_two_columns(path, headers, error):
+def read_two_columns(path, headers, error) -> tuple[tuple[str, str], list[tuple[int, float, float]]]:
     """Read a CSV file of a header row and rows of two finite numbers; ``#`` lines are comments.
 
     Parameters
@@ -89,7 +89,7 @@ _SKIPPED_LINE = re.compile(r"^[ \t]*(#|$)", re.MULTILINE)
 """A comment or blank line."""
 
 
-def read_two_column_arrays(path, headers, error):
+def read_two_column_arrays(path, headers, error) -> tuple[tuple[str, str], np.ndarray, np.ndarray]:
     """Read a file like :func:`read_two_columns`, returning the header and the two columns as arrays.
 
     A plain file (ASCII, no quotes, no comment or blank line after the header) is parsed by one call of
@@ -119,7 +119,7 @@ def read_two_column_arrays(path, headers, error):
     return key, values[:, 0], values[:, 1]
 
 
-def check_ranges(path, columns, ranges, line_of, error):
+def check_ranges(path, columns, ranges, line_of, error) -> None:
     """Refuse the first value of a file outside its column's range, naming the file, the line, the value and the range.
 
     Parameters
@@ -162,7 +162,7 @@ class TableFileError(ValueError):
     """A lift-table file that cannot be used; the message names the file and the line."""
 
 
-def read_lift_table(path):
+def read_lift_table(path) -> tuple[np.ndarray, np.ndarray]:
     """Read a CSV lift table with the header ``angle_deg,lift_mm``; ``#`` lines are comments.
 
     Returns
@@ -213,7 +213,7 @@ MAX_VOLUME_CM3 = 1e8
 (bore 2000 mm x stroke 4000 mm: 1.26e7 cm3)."""
 
 
-def read_indicator(path, strokes):
+def read_indicator(path, strokes) -> IndicatorTable:
     """Read an indicator diagram from a CSV file.
 
     The header is ``crank_deg,pressure_MPa`` (absolute pressure against the cycle angle,

@@ -6,7 +6,7 @@ lengths in m, areas in m^2, time-area in m^2*s, velocities in m/s, angles in rad
 
 import numpy as np
 
-from .checks import check
+from .checks import Check, check
 from .numerics import cumulative_integral, integrals
 
 THROAT_TO_BORE_RANGES = {
@@ -35,22 +35,22 @@ LIFT_TO_THROAT_RANGE = (0.18, 0.30)
 """Recommended valve lift / throat diameter (Valve-train practical works (n.d.), work 2, automotive; work 1 gives 0.23-0.30, corrections note 17)."""
 
 
-def circle_area(diameter):
+def circle_area(diameter) -> float | np.ndarray:
     """Area of a circle of the given diameter, pi d^2 / 4 [m^2] (piston area F_p, throat area f_g)."""
     return np.pi * np.asarray(diameter) ** 2 / 4.0
 
 
-def mean_piston_speed(stroke, speed_rpm):
+def mean_piston_speed(stroke, speed_rpm) -> float:
     """Mean piston speed c_p = S n / 30 [m/s], stroke in m, speed in min^-1 (Valve-train practical works (n.d.), appendix)."""
     return stroke * speed_rpm / 30.0
 
 
-def swept_volume(bore, stroke):
+def swept_volume(bore, stroke) -> float:
     """Swept volume of one cylinder V_h = pi D^2 S / 4 [m^3]."""
     return circle_area(bore) * stroke
 
 
-def curtain_area(lift, throat_diameter, seat_angle):
+def curtain_area(lift, throat_diameter, seat_angle) -> float | np.ndarray:
     """Valve curtain (flow) area as the lateral area of the frustum.
 
     Parameters
@@ -87,7 +87,7 @@ def curtain_area(lift, throat_diameter, seat_angle):
     return np.pi * y * (throat_diameter * c + y * np.sin(seat_angle) * c * c)
 
 
-def throat_velocity(piston_speed, bore, throat_diameter, count):
+def throat_velocity(piston_speed, bore, throat_diameter, count) -> float:
     """First conditional gas velocity in the throat, V' = c_p F_p / (i f_g) [m/s].
 
     Parameters
@@ -115,7 +115,7 @@ def throat_velocity(piston_speed, bore, throat_diameter, count):
     return float(piston_speed * circle_area(bore) / (count * circle_area(throat_diameter)))
 
 
-def curtain_velocity(piston_speed, bore, max_curtain_area, count):
+def curtain_velocity(piston_speed, bore, max_curtain_area, count) -> float:
     """Second conditional gas velocity at full lift, V'' = c_p F_p / (i f_max) [m/s].
 
     References
@@ -132,7 +132,7 @@ def curtain_velocity(piston_speed, bore, max_curtain_area, count):
     return float(piston_speed * circle_area(bore) / (count * max_curtain_area))
 
 
-def time_area_velocity(swept, time_area, count):
+def time_area_velocity(swept, time_area, count) -> float:
     """Third conditional gas velocity V''' = V_h / (i * integral f dt) [m/s].
 
     Parameters
@@ -159,7 +159,7 @@ def time_area_velocity(swept, time_area, count):
     return float(swept / (count * time_area))
 
 
-def mean_charge_velocity(swept, time_area, count=1):
+def mean_charge_velocity(swept, time_area, count=1) -> float:
     """Mean charge velocity from the time-area, v_vp = V_h / (i integral F dt) [m/s].
 
     Parameters
@@ -191,7 +191,7 @@ def mean_charge_velocity(swept, time_area, count=1):
     return float(swept / (count * time_area))
 
 
-def cumulative_time_area(area, cam_angle, cam_speed, breakpoints=()):
+def cumulative_time_area(area, cam_angle, cam_speed, breakpoints=()) -> np.ndarray:
     """Running time-area of a valve, integral of f dt with dt = d(cam angle) / omega_cam.
 
     Parameters
@@ -225,12 +225,12 @@ def cumulative_time_area(area, cam_angle, cam_speed, breakpoints=()):
     return cumulative_integral(area, cam_angle, breakpoints) / cam_speed
 
 
-def time_area(area, start, end, cam_speed, breakpoints=()):
+def time_area(area, start, end, cam_speed, breakpoints=()) -> float:
     """Time-area integral of f dt between two camshaft angles [m^2*s] (Valve-train practical works (n.d.), eq. 4.1)."""
     return float(time_areas(lambda x, _: area(x), [start], [end], cam_speed, [breakpoints])[0])
 
 
-def time_areas(area, starts, ends, cam_speed, breakpoints):
+def time_areas(area, starts, ends, cam_speed, breakpoints) -> np.ndarray:
     """Time-areas of several valves at once, each between its own camshaft angles [m^2*s] (:func:`time_area`).
 
     Parameters
@@ -252,7 +252,7 @@ def time_areas(area, starts, ends, cam_speed, breakpoints):
     return integrals(area, starts, ends, breakpoints) / cam_speed
 
 
-def fullness(lift, start, end, max_lift, breakpoints=()):
+def fullness(lift, start, end, max_lift, breakpoints=()) -> float:
     """Fullness (filling) coefficient of a lift diagram.
 
     Parameters
@@ -289,7 +289,7 @@ def fullness(lift, start, end, max_lift, breakpoints=()):
     return float(fullnesses(lambda x, _: lift(x), [start], [end], [max_lift], [breakpoints])[0])
 
 
-def fullnesses(lift, starts, ends, max_lifts, breakpoints):
+def fullnesses(lift, starts, ends, max_lifts, breakpoints) -> np.ndarray:
     """Fullness coefficients of several lift diagrams at once (:func:`fullness`).
 
     Parameters
@@ -312,7 +312,7 @@ def fullnesses(lift, starts, ends, max_lifts, breakpoints):
     return integrals(lift, starts, ends, breakpoints) / (np.asarray(max_lifts, dtype=float) * (ends - starts))
 
 
-def check_flow(kind, *, bore, throat_diameter, max_lift, v1, v2, v3, charge_velocity, engine_type, chamber, count=1):
+def check_flow(kind, *, bore, throat_diameter, max_lift, v1, v2, v3, charge_velocity, engine_type, chamber, count=1) -> list[Check]:
     """Compare a valve's flow figures with the recommended ranges of Valve-train practical works (n.d.), works 1 and 4.
 
     Parameters

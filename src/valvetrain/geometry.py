@@ -14,13 +14,13 @@ Lengths in m, angles in rad.
 import numpy as np
 
 
-def axes(theta):
+def axes(theta) -> tuple[np.ndarray, np.ndarray]:
     """The follower axis u = (sin theta, cos theta) and t = du/dtheta = (cos theta, -sin theta), each (2, n)."""
     s, c = np.sin(theta), np.cos(theta)
     return np.stack([s, c]), np.stack([c, -s])
 
 
-def flat_follower_contour(theta, base_radius, h, dh):
+def flat_follower_contour(theta, base_radius, h, dh) -> np.ndarray:
     """Cam contour for a flat-faced translating follower.
 
     Parameters
@@ -52,7 +52,7 @@ def flat_follower_contour(theta, base_radius, h, dh):
     return (base_radius + h) * u + dh * t
 
 
-def flat_follower_curvature(base_radius, h, d2h):
+def flat_follower_curvature(base_radius, h, d2h) -> np.ndarray:
     """Radius of curvature of the cam for a flat-faced follower, rho = R0 + h + h'' [m].
 
     Negative or zero rho means the profile is undercut (a flat follower cannot follow it).
@@ -72,12 +72,12 @@ def flat_follower_curvature(base_radius, h, d2h):
     return base_radius + h + d2h
 
 
-def roller_pitch_radius(base_radius, roller_radius, h):
+def roller_pitch_radius(base_radius, roller_radius, h) -> np.ndarray:
     """Polar radius of the roller-centre (pitch) curve, g = R0 + R_r + h [m] (Shang Hanji (1988), eq. 2.7)."""
     return base_radius + roller_radius + h
 
 
-def roller_follower_contour(theta, base_radius, roller_radius, h, dh):
+def roller_follower_contour(theta, base_radius, roller_radius, h, dh) -> np.ndarray:
     """Cam contour for a translating roller follower whose axis passes through the cam centre.
 
     Parameters
@@ -116,7 +116,7 @@ STRAIGHT_TOLERANCE = 1e-10
 """Relative size of the curvature terms' difference below which the pitch curve counts as straight."""
 
 
-def roller_pitch_curvature(base_radius, roller_radius, h, dh, d2h):
+def roller_pitch_curvature(base_radius, roller_radius, h, dh, d2h) -> np.ndarray:
     """Radius of curvature of the pitch curve [m]; the cam profile's is this minus the roller radius.
 
     Notes
@@ -146,12 +146,12 @@ def roller_pitch_curvature(base_radius, roller_radius, h, dh, d2h):
     return np.where(straight, np.inf, (g * g + dh * dh) ** 1.5 / np.where(straight, 1.0, den))
 
 
-def roller_follower_curvature(base_radius, roller_radius, h, dh, d2h):
+def roller_follower_curvature(base_radius, roller_radius, h, dh, d2h) -> np.ndarray:
     """Radius of curvature of the cam profile for a roller follower, rho = rho_p - R_r [m] (Shang Hanji (1988), eq. 2.7)."""
     return roller_pitch_curvature(base_radius, roller_radius, h, dh, d2h) - roller_radius
 
 
-def roller_pressure_angle(base_radius, roller_radius, h, dh):
+def roller_pressure_angle(base_radius, roller_radius, h, dh) -> np.ndarray:
     """Pressure angle of a central translating roller follower, tan beta = h' / g [rad].
 
     The angle between the contact normal and the follower axis; UkrSURT Proceedings (2019) limits it to
@@ -165,7 +165,7 @@ def roller_pressure_angle(base_radius, roller_radius, h, dh):
     return np.arctan2(dh, roller_pitch_radius(base_radius, roller_radius, h))
 
 
-def undercut_flat(rho):
+def undercut_flat(rho) -> bool:
     """Mask of the angles where a flat follower's cam is undercut: rho <= 0 (Shang Hanji (1988), section 2.1).
 
     Judge a profile by its smallest radius refined on the contour (the profile stage's ``rho_min``), not by the
@@ -174,7 +174,7 @@ def undercut_flat(rho):
     return np.asarray(rho) <= 0.0
 
 
-def undercut_roller(pitch_rho, roller_radius):
+def undercut_roller(pitch_rho, roller_radius) -> bool:
     """Mask of the angles where a roller follower's cam is undercut: 0 < rho_pitch <= R_r (Shang Hanji (1988), 2.1).
 
     Judge a profile by its smallest convex radius refined on the contour (the profile stage's ``rho_min`` plus R_r),
@@ -184,7 +184,7 @@ def undercut_roller(pitch_rho, roller_radius):
     return (pitch_rho > 0.0) & (pitch_rho <= roller_radius)
 
 
-def valve_piston_clearance(piston_displacement, valve_lift, tdc_gap):
+def valve_piston_clearance(piston_displacement, valve_lift, tdc_gap) -> np.ndarray:
     """Distance between valve head and piston crown, D_s = s + y0 - y [m].
 
     Parameters

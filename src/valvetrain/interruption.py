@@ -10,6 +10,7 @@ import _thread
 import os
 import signal
 import sys
+from typing import NoReturn
 
 
 class Interruption:
@@ -48,7 +49,7 @@ class Interruption:
                 sys.unraisablehook = cls.redeliver
 
 
-def interrupted_while_starting():
+def interrupted_while_starting() -> NoReturn:
     """End a program interrupted before it did anything: the message, then exit status 130 at once.
 
     :func:`os._exit` because a KeyboardInterrupt may have passed through an ``exec`` of a string in an imported

@@ -47,19 +47,19 @@ LAYOUTS = {"direct": Layout("direct", ("tappet",)), "rocker": Layout("rocker", (
 """Drive layouts by name (``[valves.NAME.drive] layout``), see the module's text."""
 
 
-def layout(valve):
+def layout(valve) -> str:
     """Drive layout of a valve (SI view or section): as given, else direct for rocker ratio 1 and pushrod otherwise."""
     if valve.drive.layout is not None:
         return valve.drive.layout
     return "direct" if valve.rocker_ratio == 1.0 else "pushrod"
 
 
-def chain(valve):
+def chain(valve) -> Layout:
     """The :class:`Layout` of a valve (SI view or section), by :func:`layout`."""
     return LAYOUTS[layout(valve)]
 
 
-def train_mass(valve, spring_mass):
+def train_mass(valve, spring_mass) -> tuple[float, str]:
     """Reduced mass of a valve's train at the valve [kg] and how it was obtained (SI view; Valve-train practical works (n.d.), eq. 5.2 or the
     specific mass of work 5); ``spring_mass`` [kg] where the part masses leave it to the designed spring."""
     d = valve.drive

@@ -25,7 +25,7 @@ figure."""
 
 
 def reduced_mass_at_valve(valve, retainer, cotters, spring, pushrod=0.0, tappet=0.0, rocker_inertia=0.0,
-                          valve_arm=1.0, rocker_ratio=1.0):
+                          valve_arm=1.0, rocker_ratio=1.0) -> float:
     """Mass of the valve train reduced to the valve axis [kg].
 
     Parameters
@@ -57,7 +57,7 @@ def reduced_mass_at_valve(valve, retainer, cotters, spring, pushrod=0.0, tappet=
     return valve + retainer + cotters + spring / 3.0 + rocker + (pushrod + tappet) / rocker_ratio**2
 
 
-def reduced_mass_at_tappet(mass_at_valve, rocker_ratio=1.0):
+def reduced_mass_at_tappet(mass_at_valve, rocker_ratio=1.0) -> float:
     """Mass reduced to the tappet, m_t = m_v i_k^2 [kg].
 
     Equal term by term to Valve-train practical works (n.d.) eq. (7.2) written from the parts, since every part of
@@ -70,7 +70,7 @@ def reduced_mass_at_tappet(mass_at_valve, rocker_ratio=1.0):
     return mass_at_valve * rocker_ratio**2
 
 
-def mass_from_specific(specific_mass, throat_area):
+def mass_from_specific(specific_mass, throat_area) -> float:
     """Reduced mass at the valve estimated from the specific (constructive) mass, m_v = m' f_g [kg].
 
     References
@@ -88,12 +88,12 @@ def mass_from_specific(specific_mass, throat_area):
     return specific_mass * throat_area
 
 
-def spring_mass(mean_diameter, wire_diameter, total_coils, density):
+def spring_mass(mean_diameter, wire_diameter, total_coils, density) -> np.ndarray:
     """Mass of a helical spring, m = rho (pi d^2/4) pi D i_total [kg] (Valve-train dynamics article (n.d.), step 3)."""
     return density * np.pi * wire_diameter**2 / 4.0 * np.pi * mean_diameter * total_coils
 
 
-def reduced_mass(throat_area, layout, rocker_ratio, parts=None, specific_mass=None, valve_arm=None, spring_mass=0.0):
+def reduced_mass(throat_area, layout, rocker_ratio, parts=None, specific_mass=None, valve_arm=None, spring_mass=0.0) -> tuple[float, str]:
     """Reduced mass of a valve train at the valve [kg], from its parts or from a specific mass, and how.
 
     Parameters

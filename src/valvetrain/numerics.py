@@ -11,7 +11,7 @@ _GAUSS_ORDER = 16
 _NODES, _WEIGHTS = np.polynomial.legendre.leggauss(_GAUSS_ORDER)
 
 
-def cumulative_integral(fn, grid, breakpoints=()):
+def cumulative_integral(fn, grid, breakpoints=()) -> np.ndarray:
     """Running integral of a piecewise-smooth function, exact to round-off for smooth pieces.
 
     The interval ``[grid[0], grid[-1]]`` is cut at every grid point and at every
@@ -64,7 +64,7 @@ def _running(values, half, edges, grid):
     return running[np.searchsorted(edges, grid)]
 
 
-def integrals(fn, starts, ends, breakpoints):
+def integrals(fn, starts, ends, breakpoints) -> np.ndarray:
     """Integrals of several piecewise-smooth functions, each over its own interval, all nodes in one call of ``fn``.
 
     Parameters
@@ -91,7 +91,7 @@ def integrals(fn, starts, ends, breakpoints):
                      for v, (grid, edges, half, nodes) in zip(parts, pieces, strict=True)])
 
 
-def extremum(fn, edges, kind="max", samples=65):
+def extremum(fn, edges, kind="max", samples=65) -> tuple[float, float]:
     """Global extremum of a piecewise-smooth scalar function on an interval.
 
     Each piece between consecutive ``edges`` is sampled at ``samples`` points (its
@@ -144,7 +144,7 @@ def extremum(fn, edges, kind="max", samples=65):
     return float(best_x), float(sign * best_y)
 
 
-def bounded_minimum(fn, a, b, xatol, max_evaluations=500):
+def bounded_minimum(fn, a, b, xatol, max_evaluations=500) -> tuple[float, float]:
     """A local minimum of a scalar function on ``[a, b]`` by Brent's method (golden section and parabolic
     interpolation), the iteration of :func:`scipy.optimize.minimize_scalar` ``method="bounded"``, step for step.
 
@@ -243,7 +243,7 @@ def _sign_or_one(x):
     return 1.0 if x >= 0.0 else -1.0
 
 
-def bracketed_roots(fn, a, b, fa, fb, max_iterations=100):
+def bracketed_roots(fn, a, b, fa, fb, max_iterations=100) -> np.ndarray:
     """Roots of a function in many brackets at once, by the Illinois variant of regula falsi.
 
     Every bracket is refined in the same vectorised call of ``fn`` per iteration until it
@@ -308,7 +308,7 @@ def bracketed_roots(fn, a, b, fa, fb, max_iterations=100):
     return x
 
 
-def level_span(fn, a, b, level, samples=4001):
+def level_span(fn, a, b, level, samples=4001) -> tuple[float, float]:
     """First upward and last downward crossing of ``level`` by a function on [a, b].
 
     ``fn`` is sampled at ``samples`` points; both crossings are then refined together by
@@ -349,7 +349,7 @@ def level_span(fn, a, b, level, samples=4001):
     return float(roots[0]), float(roots[1])
 
 
-def invert_angle(angle_of, target, samples=4097):
+def invert_angle(angle_of, target, samples=4097) -> np.ndarray:
     """The parameters theta in [-pi, pi] at which an angle ``angle_of(theta)`` [rad] that grows by 2 pi over the
     revolution equals each ``target`` [rad], all at once.
 

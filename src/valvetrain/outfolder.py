@@ -13,6 +13,7 @@ renames do it, with a moment in which ``out`` is absent.  Temporary folders are 
 was killed) are removed by the next run into ``NAME``.
 """
 
+from collections.abc import Iterator
 from contextlib import contextmanager
 import ctypes
 import errno
@@ -43,7 +44,7 @@ class OutFolderError(ValueError):
     """An output folder that a run may not write; the message is one line naming the folder."""
 
 
-def check_out(out, inputs=(), force=False):
+def check_out(out, inputs=(), force=False) -> Path:
     """Check that ``out`` may become an output folder, before anything is computed or written.
 
     Parameters
@@ -74,7 +75,7 @@ def check_out(out, inputs=(), force=False):
     return path
 
 
-def location_problem(path):
+def location_problem(path) -> str | None:
     """Why a folder cannot be made at the absolute ``path``, or None."""
     cwd = Path.cwd().resolve()
     if path == cwd or path in cwd.parents:
@@ -90,7 +91,7 @@ def location_problem(path):
     return None
 
 
-def kind_problem(path):
+def kind_problem(path) -> str | None:
     """Why what exists at ``path`` cannot be replaced by a folder (a file, a mount point), or None."""
     if os.path.lexists(path) and not path.is_dir():
         return "is a file; allowed: a folder (new, empty or a previous valvetrain output)"
@@ -99,7 +100,7 @@ def kind_problem(path):
     return None
 
 
-def input_problem(path, inputs):
+def input_problem(path, inputs) -> str | None:
     """Why replacing ``path`` would delete an input file, or None."""
     for f in inputs:
         real = Path(f).resolve()
@@ -109,7 +110,7 @@ def input_problem(path, inputs):
     return None
 
 
-def foreign_problem(path):
+def foreign_problem(path) -> str | None:
     """Why replacing the folder ``path`` would delete files no valvetrain run wrote, or None."""
     if not path.is_dir():
         return None
@@ -123,7 +124,7 @@ def foreign_problem(path):
             "output; choose another folder or pass --force to replace this one and everything in it")
 
 
-def first_foreign_file(folder):
+def first_foreign_file(folder) -> str | None:
     """The first file (or link) under ``folder`` that its :data:`MARKER` does not list, as a relative path, or None.
 
     Folders are not files: a folder that holds only empty folders has no foreign file.
@@ -144,7 +145,7 @@ def _raise(exc):
     raise exc
 
 
-def written_files(folder):
+def written_files(folder) -> set[str]:
     """The relative paths that ``folder``'s :data:`MARKER` lists (empty if it has none)."""
     try:
         text = (Path(folder) / MARKER).read_text(encoding="utf-8")
@@ -153,7 +154,7 @@ def written_files(folder):
     return {line for line in text.splitlines() if line and not line.startswith("#")}
 
 
-def marker_text(folder):
+def marker_text(folder) -> str:
     """The :data:`MARKER` of a completed ``folder``: every file under it, relative, sorted."""
     paths = sorted(Path(root, name).relative_to(folder).as_posix()
                    for root, _, files in os.walk(folder) for name in files)
@@ -162,7 +163,7 @@ def marker_text(folder):
 
 
 @contextmanager
-def atomic_folder(out, inputs=(), force=False):
+def atomic_folder(out, inputs=(), force=False) -> Iterator[Path]:
     """Yield a new temporary sibling folder of ``out`` and put it in place of ``out`` when the block completes.
 
     ``out`` is checked by :func:`check_out` (with ``inputs`` and ``force``) before the
@@ -193,12 +194,12 @@ def atomic_folder(out, inputs=(), force=False):
                 shutil.rmtree(tmp, ignore_errors=True)
 
 
-def temp_name(out):
+def temp_name(out) -> Path:
     """A fresh name for a temporary sibling of ``out``, carrying this process's id."""
     return out.parent / f".{out.name}.valvetrain-{os.getpid()}.{secrets.token_hex(4)}.tmp"
 
 
-def make_temp(out):
+def make_temp(out) -> Path:
     """Create a temporary sibling folder of ``out`` (mode 0777 less the umask, as ``mkdir`` makes it)."""
     while True:
         path = temp_name(out)
@@ -209,7 +210,7 @@ def make_temp(out):
             continue
 
 
-def remove_stale_temps(out):
+def remove_stale_temps(out) -> None:
     """Remove the temporary siblings of ``out`` that runs which no longer run left behind (killed runs).
 
     Only folders named ``.NAME.valvetrain-PID.XXXXXXXX.tmp`` for this ``out``, whose process
@@ -223,7 +224,7 @@ def remove_stale_temps(out):
                 shutil.rmtree(entry.path, ignore_errors=True)
 
 
-def process_alive(pid):
+def process_alive(pid) -> bool:
     """Whether a process ``pid`` exists (signal 0 tests that and sends nothing)."""
     try:
         os.kill(pid, 0)
@@ -234,7 +235,7 @@ def process_alive(pid):
     return True
 
 
-def swap(new, out):
+def swap(new, out) -> None:
     """Put the folder ``new`` at ``out``; what was at ``out`` (if anything) is then at ``new``, to be removed."""
     if not os.path.lexists(out):
         os.rename(new, out)
@@ -249,7 +250,7 @@ def swap(new, out):
         os.rename(aside, new)
 
 
-def exchange(a, b):
+def exchange(a, b) -> bool:
     """Swap the paths ``a`` and ``b`` atomically; False where the system cannot.
 
     Linux's ``renameat2(..., RENAME_EXCHANGE)`` (kernel 3.15, glibc 2.28) through ctypes:
@@ -280,7 +281,7 @@ def _renameat2():
 
 
 @contextmanager
-def sigint_deferred():
+def sigint_deferred() -> Iterator[None]:
     """Hold SIGINT (Ctrl-C) back during the block, so that it cannot stop an exchange or a removal half-way;
     a SIGINT that came meanwhile is raised as :class:`KeyboardInterrupt` right after the block."""
     if not hasattr(signal, "pthread_sigmask"):

@@ -58,7 +58,7 @@ ZIMMERLI_PEENED = (398e6, 534e6)
 """Zimmerli's endurance point of shot-peened springs (S_sa, S_sm) [Pa], d < 10 mm (Shigley section 10-9)."""
 
 
-def tensile_strength(wire_diameter, a, m):
+def tensile_strength(wire_diameter, a, m) -> float | np.ndarray:
     """Minimum tensile strength R_m = A / d^m of spring wire [Pa].
 
     Parameters
@@ -84,7 +84,7 @@ def tensile_strength(wire_diameter, a, m):
     return a * MPA / (np.asarray(wire_diameter, dtype=float) * 1e3) ** m
 
 
-def goodman_endurance(amplitude, mean, ultimate):
+def goodman_endurance(amplitude, mean, ultimate) -> float | np.ndarray:
     """Fully reversed torsional endurance limit from one point of a Goodman line, S_sa / (1 - S_sm / S_su) [Pa].
 
     References
@@ -155,7 +155,7 @@ GRADES = {
 """The wire grades a specification can name, by name."""
 
 
-def grade(name):
+def grade(name) -> WireGrade:
     """The grade of a name, ignoring case, spaces and hyphens (``"VD-SiCr"`` is ``"VDSiCr"``).
 
     Raises

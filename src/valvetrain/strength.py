@@ -6,7 +6,7 @@ SI units: N, m, Pa.  Each check is a pure function; :func:`verdict` makes its va
 
 import numpy as np
 
-from .checks import check
+from .checks import Check, check
 
 DEFLECTION_COEFFICIENT = 64.0 / (3.0 * np.pi)
 """Camshaft deflection coefficient of (7.3): 64/(3 pi) = 6.79 from beam theory; the printed 0.8 is wrong (corrections note 20)."""
@@ -34,7 +34,7 @@ HERTZ_LINE = 0.418
 """The factor of Hertz's line-contact stress, sqrt(1 / (2 pi (1 - mu^2))) with Poisson's ratio mu = 0.3."""
 
 
-def verdict(check_name, value, note=""):
+def verdict(check_name, value, note="") -> Check:
     """The :class:`~valvetrain.checks.Check` of one of the checks of :data:`LIMITS` (severity ``failure``: the
     part cannot carry the load), its value SI."""
     limit, kind, unit, source = LIMITS[check_name]
@@ -42,7 +42,7 @@ def verdict(check_name, value, note=""):
     return check(f"strength.{check_name}", value, **bounds, unit=unit, source=source, severity="failure", note=note)
 
 
-def cam_force(spring_force, valve_inertia_force, rocker_ratio):
+def cam_force(spring_force, valve_inertia_force, rocker_ratio) -> np.ndarray:
     """Force between cam and follower, reduced to the tappet [N].
 
     Parameters
@@ -68,7 +68,7 @@ def cam_force(spring_force, valve_inertia_force, rocker_ratio):
     return rocker_ratio * (np.asarray(spring_force) + np.asarray(valve_inertia_force))
 
 
-def camshaft_deflection(force, l1, l2, diameter, bore=0.0, modulus=STEEL_MODULUS, coefficient=DEFLECTION_COEFFICIENT):
+def camshaft_deflection(force, l1, l2, diameter, bore=0.0, modulus=STEEL_MODULUS, coefficient=DEFLECTION_COEFFICIENT) -> float | np.ndarray:
     """Deflection of the camshaft under the cam load between two bearings [m].
 
     Parameters
@@ -104,12 +104,12 @@ def camshaft_deflection(force, l1, l2, diameter, bore=0.0, modulus=STEEL_MODULUS
     return coefficient * force * l1**2 * l2**2 / (modulus * (l1 + l2) * (diameter**4 - bore**4))
 
 
-def effective_modulus(e1, e2):
+def effective_modulus(e1, e2) -> float:
     """E_m = 2 E_1 E_2 / (E_1 + E_2) [Pa] (Shang Hanji (1988), eq. 2.5)."""
     return 2.0 * e1 * e2 / (e1 + e2)
 
 
-def hertz_line_stress(force, width, curvature_sum, modulus):
+def hertz_line_stress(force, width, curvature_sum, modulus) -> np.ndarray:
     """Hertz contact stress of two cylinders in line contact [Pa] (Hertz (1882)).
 
     Parameters
@@ -140,7 +140,7 @@ def hertz_line_stress(force, width, curvature_sum, modulus):
     return HERTZ_LINE * np.sqrt(loaded * modulus / width)
 
 
-def hertz_half_width(force, width, curvature_sum, modulus):
+def hertz_half_width(force, width, curvature_sum, modulus) -> np.ndarray:
     """Half-width of the Hertz contact band of two cylinders in line contact [m].
 
     Parameters
@@ -180,7 +180,7 @@ def hertz_half_width(force, width, curvature_sum, modulus):
     return 2.0 / (HERTZ_LINE * np.pi) * np.sqrt(load / (width * modulus * np.asarray(curvature_sum)))
 
 
-def roller_side_force(axial_force, pressure_angle):
+def roller_side_force(axial_force, pressure_angle) -> np.ndarray:
     """Side (lateral) force of a roller follower on its guide, F_n sin(alpha) = F_a tan(alpha) [N].
 
     Parameters
@@ -208,7 +208,7 @@ def roller_side_force(axial_force, pressure_angle):
     return np.clip(axial_force, 0.0, None) * np.tan(np.abs(pressure_angle))
 
 
-def tappet_side_pressure(force, offset, tappet_diameter, guide_length):
+def tappet_side_pressure(force, offset, tappet_diameter, guide_length) -> float:
     """Side pressure of a flat tappet in its guide, q = 6 P b / (d l^2) [Pa] (Valve-train practical works (n.d.), eqs. 7.6-7.7).
 
     ``offset`` b is the largest distance of the contact point from the tappet axis,
@@ -217,12 +217,12 @@ def tappet_side_pressure(force, offset, tappet_diameter, guide_length):
     return 6.0 * force * offset / (tappet_diameter * guide_length**2)
 
 
-def second_moment(diameter, bore=0.0):
+def second_moment(diameter, bore=0.0) -> float:
     """Second moment of area of a solid or tubular round section, pi (D^4 - d^4)/64 [m^4] (eqs. 7.9-7.10)."""
     return np.pi * (diameter**4 - bore**4) / 64.0
 
 
-def euler_load(modulus, second_moment_area, length):
+def euler_load(modulus, second_moment_area, length) -> float:
     """Euler critical load of a pin-ended strut, pi^2 E J / l^2 [N] (Valve-train practical works (n.d.), eq. 7.8).
 
     >>> round(euler_load(2.1e11, second_moment(0.008), 0.25) / 1e3, 2)  # 8 mm steel rod, 250 mm
@@ -231,22 +231,22 @@ def euler_load(modulus, second_moment_area, length):
     return np.pi**2 * modulus * second_moment_area / length**2
 
 
-def sphere_socket_stress(force, modulus, ball_radius, socket_radius):
+def sphere_socket_stress(force, modulus, ball_radius, socket_radius) -> float:
     """Contact stress of a ball in a concave socket, 0.388 (P E^2 (1/r1 - 1/r2)^2)^(1/3) [Pa] (Valve-train practical works (n.d.), 7.11/7.14)."""
     return 0.388 * np.cbrt(force * modulus**2 * (1.0 / ball_radius - 1.0 / socket_radius) ** 2)
 
 
-def rocker_pad_stress(force, modulus, width, radius):
+def rocker_pad_stress(force, modulus, width, radius) -> float:
     """Contact stress of the rocker pad on the valve stem, 0.418 sqrt(P E / (b r)) [Pa] (Valve-train practical works (n.d.), eq. 7.13)."""
     return HERTZ_LINE * np.sqrt(force * modulus / (width * radius))
 
 
-def section_modulus(diameter, bore=0.0):
+def section_modulus(diameter, bore=0.0) -> float:
     """Bending section modulus of a tube, W = pi (D^4 - d^4)/(32 D) [m^3] (Valve-train practical works (n.d.), eq. 7.16)."""
     return np.pi * (diameter**4 - bore**4) / (32.0 * diameter)
 
 
-def rocker_shaft_stresses(force, span, rocker_width, diameter, bore=0.0):
+def rocker_shaft_stresses(force, span, rocker_width, diameter, bore=0.0) -> dict[str, float]:
     """Stresses of the rocker shaft under the rocker load [Pa].
 
     Returns

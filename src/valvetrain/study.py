@@ -16,6 +16,7 @@ This module is part of the orchestration: it imports :mod:`valvetrain.design` an
 and only the command line imports it.
 """
 
+from collections.abc import Iterator
 from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 from concurrent.futures.process import BrokenProcessPool
 import ctypes
@@ -27,6 +28,7 @@ import os
 from pathlib import Path
 import re
 import tomllib
+from typing import Any
 
 import pydantic
 import tomli_w
@@ -69,7 +71,7 @@ class GridError(ValueError):
     """A grid that cannot be studied; the message is one line naming the key or the value."""
 
 
-def split_values(text):
+def split_values(text) -> list[str]:
     """The values of ``V1,V2,...``: split at the commas outside brackets, braces and quotes, so that a TOML array or
     inline table is one value (``["VDSiCr", "60S2A"],"60S2A"`` is two values)."""
     parts, depth, quote, start = [], 0, None, 0
@@ -88,7 +90,7 @@ def split_values(text):
     return [*parts, text[start:]]
 
 
-def toml_text(value):
+def toml_text(value) -> str:
     """A value as TOML text, an array or inline table on one line: how a grid value is written in study.csv.
 
     >>> toml_text(["VDSiCr", "60S2A"]), toml_text({"a": 1, "b c": [0.5, True]}), toml_text(6000)
@@ -106,7 +108,7 @@ _BARE_KEY = re.compile(r"^[A-Za-z0-9_-]+$")
 """A TOML key written without quotes."""
 
 
-def parse_value(text):
+def parse_value(text) -> Any:
     """A grid value: a TOML value (``6000``, ``0.5``, ``true``, ``"kurz"``), or else the text itself as a string."""
     try:
         return tomllib.loads(f"v = {text}")["v"]
@@ -114,7 +116,7 @@ def parse_value(text):
         return text
 
 
-def parse_grid(items):
+def parse_grid(items) -> list[tuple[str, list[Any]]]:
     """Parse ``KEY=V1,V2,...`` items (the ``--grid`` options) into ``[(key, [values])]``.
 
     Parameters
@@ -148,14 +150,14 @@ def parse_grid(items):
     return grid
 
 
-def read_document(path):
+def read_document(path) -> dict[str, Any]:
     """The TOML document of a specification file (already validated by
     :func:`valvetrain.specification.load_spec`), with ``source_dir`` set to its folder for the files it names."""
     text = Path(path).read_text(encoding="utf-8").removeprefix("\ufeff")
     return {**tomllib.loads(text), "source_dir": str(Path(path).resolve().parent)}
 
 
-def with_values(document, values):
+def with_values(document, values) -> dict[str, Any]:
     """The TOML ``document`` with the dotted keys of ``values`` (a dict) set
     (:func:`valvetrain.specification.set_keys`, which :meth:`Spec.replace` uses too).
 
@@ -170,7 +172,7 @@ def with_values(document, values):
         raise GridError(f"--grid {exc}") from None
 
 
-def check_grid(document, grid):
+def check_grid(document, grid) -> None:
     """Refuse a grid whose keys the specification does not know or whose values a key refuses on its own.
 
     Each value is set alone in the ``document`` and the document's fields are validated; a problem located at the
@@ -190,19 +192,19 @@ def check_grid(document, grid):
                         raise GridError(f"--grid {message(err, LAWS)}") from None
 
 
-def count_points(grid):
+def count_points(grid) -> int:
     """The number of design points of a grid (the product of its numbers of values), without making them."""
     return math.prod(len(values) for _, values in grid)
 
 
-def points(grid):
+def points(grid) -> Iterator[dict[str, Any]]:
     """The design points of a grid, made one at a time: dicts ``key -> value``, the cartesian product, the first key
     varying slowest."""
     keys = [k for k, _ in grid]
     return (dict(zip(keys, combo, strict=True)) for combo in itertools.product(*(v for _, v in grid)))
 
 
-def point_text(point):
+def point_text(point) -> str:
     """A point as shown in a message: ``key = value, ...`` (values as TOML text)."""
     return ", ".join(f"{key} = {toml_text(value)}" for key, value in point.items())
 
@@ -229,7 +231,7 @@ def _rpm(speed):
     return None if speed != speed else speed / rpm_to_rad_s(1.0)
 
 
-def evaluate_point(document):
+def evaluate_point(document) -> dict[str, Any]:
     """Validate and design one point; the record of its figures, or of its refusal.
 
     Parameters
@@ -299,19 +301,20 @@ def heap_arrays():
     libc.mallopt(m_mmap_threshold, MMAP_THRESHOLD_BYTES)
 
 
-def evaluate_points(documents, point=None):
+def evaluate_points(documents, point=None) -> list[dict[str, Any]]:
     """``point`` (:func:`evaluate_point`) of each document of a list (one Dask task, :func:`heap_arrays` first): the
     list of records."""
     heap_arrays()
     return [(point or evaluate_point)(d) for d in documents]
 
 
-def dask_chunk(total, threads):
+def dask_chunk(total, threads) -> int:
     """Points per Dask task: :data:`DASK_TASKS_PER_THREAD` tasks per worker thread, at most :data:`DASK_MAX_CHUNK`."""
     return max(1, min(DASK_MAX_CHUNK, math.ceil(total / (DASK_TASKS_PER_THREAD * max(threads, 1)))))
 
 
-def evaluate(documents, total, workers=None, scheduler=None, progress=None, describe=str, point=None, keep=None):
+def evaluate(documents, total, workers=None, scheduler=None, progress=None, describe=str, point=None,
+             keep=None) -> list[dict[str, Any]]:
     """Evaluate documents with :func:`evaluate_point`: serially, in local processes, or on a Dask cluster.
 
     The documents are taken from the iterable as they are needed (a few per worker at a time), so a large study
@@ -451,7 +454,7 @@ NOT_DESIGNED = {"status": "not designed", "valves": {}, "failures": None, "warni
 """The record of a point that a stopped study did not design."""
 
 
-def table(grid, records):
+def table(grid, records) -> dict[str, list[Any]]:
     """The study's rows: the grid values, the valves' figures (``VALVE.KEY``) and the point columns.
 
     A grid value that is a TOML array or inline table is its TOML text (:func:`toml_text`); a record that is None

@@ -23,7 +23,7 @@ LIFT_COLUMNS = [
 """Columns of ``tables/NAME_lift.csv`` with their meaning and unit."""
 
 
-def lift_table_columns(table):
+def lift_table_columns(table) -> dict[str, np.ndarray]:
     """The lift table of a valve as ordered columns in the units of :data:`LIFT_COLUMNS`."""
     return {
         "cam_deg": rad_to_deg(table.cam_angle),
@@ -54,7 +54,7 @@ STRENGTH_COLUMNS = [
 columns only where the cam width is given and the profile is not undercut)."""
 
 
-def strength_speed_columns(strength):
+def strength_speed_columns(strength) -> dict[str, list[str]|np.ndarray]:
     """The per-speed table of a :class:`~valvetrain.design.drive.StrengthResult` in the units of
     :data:`STRENGTH_COLUMNS`."""
     p = strength.per_speed
@@ -82,7 +82,7 @@ CRANK_COLUMNS = [
 every table: mm, deg, m/s, m/s2, MPa, N, N m."""
 
 
-def crank_columns(crank):
+def crank_columns(crank) -> dict[str, np.ndarray]:
     """The crank table of one cylinder in the units of :data:`CRANK_COLUMNS`."""
     c = crank.columns
     mpa = 1e-6
@@ -95,7 +95,7 @@ def crank_columns(crank):
     }
 
 
-def engine_torque_columns(crank):
+def engine_torque_columns(crank) -> dict[str, np.ndarray]:
     """``crank_deg, M_total_Nm`` and one column per cylinder over one cycle."""
     out = {"crank_deg": rad_to_deg(crank.psi), "M_total_Nm": crank.total_torque}
     for i, m in enumerate(crank.cylinder_torques, start=1):
@@ -103,21 +103,21 @@ def engine_torque_columns(crank):
     return out
 
 
-def two_stroke_columns(ports):
+def two_stroke_columns(ports) -> dict[str, np.ndarray]:
     """Port areas against the crank angle from TDC [deg, mm2]."""
     out = {"crank_deg": rad_to_deg(ports.phi)}
     out.update({f"{name}_area_mm2": a / MM**2 for name, a in ports.areas.items()})
     return out
 
 
-def two_stroke_speed_columns(ports):
+def two_stroke_speed_columns(ports) -> dict[str, np.ndarray]:
     """Time-area of every port against the crank speed [rpm, mm2 s] (Z = K1 K2 / n, Valve-train practical works (n.d.) eq. 8.6)."""
     out = {"speed_rpm": to_display(ports.speeds, "rpm")}
     out.update({f"{name}_time_area_mm2_s": z / MM**2 for name, z in ports.time_areas.items()})
     return out
 
 
-def contour_columns(valve):
+def contour_columns(valve) -> dict[str, np.ndarray]:
     """Cam contour of a valve for manufacture: cam angle, x, y, polar radius and angle [mm, deg]."""
     x, y = valve.contour / MM
     return {
@@ -129,7 +129,7 @@ def contour_columns(valve):
     }
 
 
-def polar_contour_columns(valve, step_deg):
+def polar_contour_columns(valve, step_deg) -> dict[str, np.ndarray]:
     """The contour's polar radius at polar angles every ``step_deg`` [deg, mm], for manufacture.
 
     The polar angle is measured from the nose direction (+y) towards +x; each radius is
@@ -141,14 +141,14 @@ def polar_contour_columns(valve, step_deg):
     return {"polar_angle_deg": np.degrees(targets), "radius_mm": radii / MM}
 
 
-def cartesian_contour_columns(valve, step_deg):
+def cartesian_contour_columns(valve, step_deg) -> dict[str, np.ndarray]:
     """Contour points every ``step_deg`` of camshaft angle [deg, mm] (follower angle from the nose)."""
     theta = np.radians(np.arange(-180.0, 180.0, step_deg))
     x, y = valve.law.profile(theta, valve.heel_radius, valve.follower_model)[0] / MM
     return {"cam_deg": np.degrees(theta), "x_mm": x, "y_mm": y}
 
 
-def lift_export_columns(valve, step_deg):
+def lift_export_columns(valve, step_deg) -> dict[str, np.ndarray]:
     """Tappet lift every ``step_deg`` cam degrees in the measured-table format ``angle_deg,lift_mm``.
 
     The angles are camshaft degrees in the engine's cam frame (crank angle from the
@@ -163,7 +163,7 @@ def lift_export_columns(valve, step_deg):
     return {"angle_deg": np.degrees(theta + valve.nose_crank / 2.0), "lift_mm": law.lift(theta) / MM}
 
 
-def lift_export_comments(valve):
+def lift_export_comments(valve) -> list[str]:
     """The comment lines of ``contour/NAME_lift.csv``: what its columns measure, from where, in which units, and the
     keys of a ``law = "table"`` cam that read it back to the same valve lift and timing."""
     return [f"{valve.kind} valve cam: tappet (cam) lift including the ramps [mm] against the camshaft angle [deg]",

@@ -14,7 +14,7 @@ PORT_SIZE_RANGES = {"exhaust": ((0.26, 0.28), (0.20, 0.24)), "transfer": ((0.18,
 """Recommended port height / stroke and width / bore (Valve-train practical works (n.d.), Table 8.1)."""
 
 
-def port_angle_series(sigma, lam):
+def port_angle_series(sigma, lam) -> float | np.ndarray:
     """Opening (= closing) angle of a port from BDC for the lambda/4 kinematics [rad].
 
     Parameters
@@ -40,7 +40,7 @@ def port_angle_series(sigma, lam):
     return np.arccos((1.0 - np.sqrt(1.0 - 2.0 * lam + lam**2 + 4.0 * lam * sigma)) / lam)
 
 
-def port_angle(sigma, lam, exact=True):
+def port_angle(sigma, lam, exact=True) -> float:
     """Port opening angle from BDC [rad]: the piston's top edge is at the port's upper edge.
 
     With ``exact=True`` the exact slider-crank is solved in closed form
@@ -62,12 +62,12 @@ def port_angle(sigma, lam, exact=True):
     return np.pi - float(crank_angle_at(1.0 - sigma, 0.5, lam))
 
 
-def port_height(angle_from_bdc, lam, exact=True):
+def port_height(angle_from_bdc, lam, exact=True) -> float:
     """Relative port height sigma = h / S that opens at ``angle_from_bdc`` (the inverse of :func:`port_angle`)."""
     return 1.0 - float(displacement(np.pi - angle_from_bdc, 0.5, lam, exact=exact))
 
 
-def top_port_area(phi, height, width, stroke, lam, exact=True):
+def top_port_area(phi, height, width, stroke, lam, exact=True) -> np.ndarray:
     """Open area of an exhaust or transfer port uncovered by the piston crown [m^2].
 
     Notes
@@ -82,7 +82,7 @@ def top_port_area(phi, height, width, stroke, lam, exact=True):
     return np.clip(height - stroke + s, 0.0, height) * width
 
 
-def skirt_port_area(phi, lower_edge, height, piston_height, width, stroke, lam, exact=True):
+def skirt_port_area(phi, lower_edge, height, piston_height, width, stroke, lam, exact=True) -> np.ndarray:
     """Open area of an inlet port controlled by the piston skirt [m^2].
 
     Parameters
@@ -107,13 +107,13 @@ def skirt_port_area(phi, lower_edge, height, piston_height, width, stroke, lam, 
     return np.clip(lower_edge - s - piston_height, 0.0, height) * width
 
 
-def time_area_numeric(phi, area, speed):
+def time_area_numeric(phi, area, speed) -> float:
     """Time-area Z = integral of F dt = (1/omega) integral of F dphi [m^2 s] by the trapezoidal rule, crank speed
     omega [rad/s] (Valve-train practical works (n.d.), eq. 8.5: (1/(6 n)) integral of F d(phi in deg), n in min^-1)."""
     return float(np.trapezoid(area, phi) / speed)
 
 
-def time_area_analytic(bore, stroke, sigma, lam, width_share, speed):
+def time_area_analytic(bore, stroke, sigma, lam, width_share, speed) -> float:
     """Time-area of a top port in closed form, Z = K1 K2 / n [m^2 s], at the crank speed omega [rad/s].
 
     Parameters

@@ -27,17 +27,17 @@ DEG = np.pi / 180.0
 """radians per degree"""
 
 
-def rad_to_deg(x):
+def rad_to_deg(x) -> float | np.ndarray:
     """Radians to degrees (any angle, crank or camshaft: the kind is kept)."""
     return x / DEG
 
 
-def rpm_to_rad_s(n):
+def rpm_to_rad_s(n) -> float | np.ndarray:
     """Rotational speed in min^-1 to angular velocity in rad/s, omega = pi n / 30."""
     return np.pi * n / 30.0
 
 
-def cam_per_crank(strokes):
+def cam_per_crank(strokes) -> float:
     """Camshaft revolutions per crank revolution: 1/2 for a four-stroke, 1 for a two-stroke."""
     if strokes not in (2, 4):
         raise ValueError(f"strokes = {strokes!r}: allowed values are 2 and 4")
@@ -103,7 +103,7 @@ SUFFIXES = tuple(sorted(((suffix, unit) for unit, (_, suffixes, *_) in UNITS.ite
 """``(key suffix, unit)`` of every suffix of :data:`UNITS`, the longest first."""
 
 
-def to_display(value, unit):
+def to_display(value, unit) -> float | np.ndarray:
     """An SI value (or array) in the display ``unit`` of :data:`UNITS`.
 
     >>> round(to_display(0.0118, "mm"), 9), round(to_display(np.pi, "crank deg"), 9)
@@ -115,7 +115,7 @@ def to_display(value, unit):
         raise ValueError(f"unit {unit!r}: allowed {sorted(UNITS)}") from None
 
 
-def per_cam_degree(value, order, omega):
+def per_cam_degree(value, order, omega) -> float | np.ndarray:
     """A derivative of a lift at the camshaft speed ``omega`` [rad/s] (m/s, m/s2, m/s3 for ``order`` 1, 2, 3) as
     the speed-independent derivative in mm per camshaft degree to the ``order``.
 
@@ -129,7 +129,7 @@ def per_cam_degree(value, order, omega):
     return value * (DEG / omega) ** order / MM
 
 
-def without_noise(value, digits=12):
+def without_noise(value, digits=12) -> float:
     """A value shown in a display unit without the float noise of its conversion: rounded to ``digits`` significant
     digits where that moves it by four units in the last place at most (:func:`math.ulp`), kept otherwise.
 
@@ -160,7 +160,7 @@ def si_name(key):
     return key, 1.0
 
 
-def symbol(unit, lang):
+def symbol(unit, lang) -> str:
     """A unit as the report in ``lang`` prints it (``"m/s2"`` -> ``"m/s²"``, ``"м/с²"``); a unit not in
     :data:`UNITS` as it is."""
     row = UNITS.get(unit)

@@ -6,7 +6,9 @@ import pytest
 
 from valvetrain.laws.errors import LawError
 from valvetrain.laws.measured import lobe_table
-from valvetrain.locale.wording import diagnosis_record, diagnosis_text
+from valvetrain.design.drive import diagnosis_record
+from valvetrain.design.results import record as json_record
+from valvetrain.locale.wording import diagnosis_text
 from valvetrain.springs import Conflict, Diagnosis, Remedy, StressWindow
 from valvetrain.springs.diagnosis import PAIR_FREQUENCIES
 
@@ -51,8 +53,10 @@ def test_the_diagnosis_in_russian_from_its_data():
 
 def test_the_diagnosis_record_of_results_json():
     """results.json: values in the check's display unit, the window in MPa and mm, the remedies that help apart from
-    those tried in vain, a length tried in vain without a value."""
-    record = diagnosis_record(PAIR)
+    those tried in vain, a length tried in vain without a value; a frozen typed record read by attribute."""
+    typed = diagnosis_record(PAIR)
+    assert typed.resonance.needed == 720e6 and typed.tried[1].to is None
+    record = json_record(typed)
     assert [(x["value"], x["limit"], x["unit"]) for x in record["conflicts"]] == [
         (600.0, 500.0, "MPa"), (pytest.approx(36.0), pytest.approx(30.0), "mm")]
     assert record["resonance"] == {"material": "VDSiCr", "deflection_ratio": 3.2,

@@ -182,6 +182,27 @@ def test_a_long_file_name_is_cut_in_the_message(tmp_path, refused):
     assert "cannot read the file" in line and len(line) < 300
 
 
+def test_a_file_reading_error_names_the_file_as_its_path(tmp_path):
+    """The problem of a file that cannot be read or parsed carries the file name as its key path (records of the
+    JSON entry point); the refactoring to structured problems had left it empty.  The printed line is the one
+    written by hand here."""
+    from valvetrain.api import error_records
+    from valvetrain.specification import SpecError, load_spec
+
+    missing, latin, broken = tmp_path / "missing.toml", tmp_path / "latin.toml", tmp_path / "broken.toml"
+    latin.write_bytes("# \xe9\n".encode("latin-1"))
+    broken.write_text("[engine\n", encoding="utf-8")
+    for path, line in [(missing, f"{missing}: cannot read the file: No such file or directory"),
+                       (latin, f"{latin}: cannot read the file: not UTF-8 text (invalid continuation byte)"),
+                       (broken, None)]:
+        with pytest.raises(SpecError) as err:
+            load_spec(path)
+        (record,) = error_records(err.value)
+        assert record["path"] == str(path) and record["value"] is None
+        assert record["text"] == (line or f"{broken}: {record['message']}")
+    assert record["message"].startswith("not valid TOML: ")
+
+
 def test_a_long_spring_material_is_cut_in_the_message(refused):
     """A 5000-character material name (found by the fuzzer) is shown cut, with the grades allowed."""
     out = refused(_with(('material = "VDSiCr"', 'material = "' + "x" * 5000 + '"')))

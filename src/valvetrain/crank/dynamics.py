@@ -27,7 +27,7 @@ class ReducedMasses:
     rotating: float       # m_R = m_k + m_sh.k (x2 rods per pin in a V engine)
 
 
-def reduced_masses(piston, rod, crank, rod_pin_fraction=0.275, rods_per_pin=1):
+def reduced_masses(piston, rod, crank, rod_pin_fraction=0.275, rods_per_pin=1) -> ReducedMasses:
     """Split the connecting rod into two point masses and form m_j and m_R.
 
     Parameters
@@ -58,17 +58,17 @@ def reduced_masses(piston, rod, crank, rod_pin_fraction=0.275, rods_per_pin=1):
     return ReducedMasses(piston, rod, crank, rod_pin, rod_crank, piston + rod_pin, crank + rods_per_pin * rod_crank)
 
 
-def inertia_force(reciprocating_mass, piston_acceleration):
+def inertia_force(reciprocating_mass, piston_acceleration) -> np.ndarray:
     """Reciprocating inertia force P_j = -m_j j [N] (Power units manual (n.d.), eq. 2.11)."""
     return -reciprocating_mass * np.asarray(piston_acceleration)
 
 
-def centrifugal_force(rotating_mass, radius, omega):
+def centrifugal_force(rotating_mass, radius, omega) -> float | np.ndarray:
     """Centrifugal force K_R = -m_R R omega^2 [N] (Power units manual (n.d.), eqs. 2.12-2.13; negative: away from the axis)."""
     return -rotating_mass * radius * omega**2
 
 
-def force_factors(phi, lam, k=0.0):
+def force_factors(phi, lam, k=0.0) -> dict[str, np.ndarray]:
     """The factors of Tables 2.3-2.6 with the exact rod angle.
 
     Returns
@@ -95,7 +95,7 @@ def force_factors(phi, lam, k=0.0):
             "tangential": np.sin(phi + beta) / cb}
 
 
-def specific_forces(gas_gauge, inertia_specific, phi, lam, k=0.0):
+def specific_forces(gas_gauge, inertia_specific, phi, lam, k=0.0) -> dict[str, np.ndarray]:
     """Specific forces on the piston pin and their components [Pa].
 
     Parameters
@@ -122,7 +122,7 @@ def specific_forces(gas_gauge, inertia_specific, phi, lam, k=0.0):
             "p_T": p * f["tangential"]}
 
 
-def cylinder_dynamics(phi, gas_pressure, ambient, bore, radius, lam, omega, masses, k=0.0, exact=True):
+def cylinder_dynamics(phi, gas_pressure, ambient, bore, radius, lam, omega, masses, k=0.0, exact=True) -> dict[str, np.ndarray]:
     """Forces and torque of one cylinder over its cycle.
 
     Parameters

@@ -16,12 +16,12 @@ import numpy as np
 from ..numerics import extremum
 
 
-def rod_angle(phi, lam, k=0.0):
+def rod_angle(phi, lam, k=0.0) -> float | np.ndarray:
     """Connecting-rod angle beta = arcsin(lambda (sin phi - k)) [rad] (Power units manual (n.d.), section 2, exact)."""
     return np.arcsin(lam * (np.sin(phi) - k))
 
 
-def displacement(phi, radius, lam, k=0.0, exact=True):
+def displacement(phi, radius, lam, k=0.0, exact=True) -> float | np.ndarray:
     """Piston displacement s [m].
 
     Parameters
@@ -62,7 +62,7 @@ def displacement(phi, radius, lam, k=0.0, exact=True):
     return top - radius * np.cos(phi) - rod * np.sqrt(1.0 - (lam * (np.sin(phi) - k)) ** 2)
 
 
-def velocity(phi, radius, lam, omega, k=0.0, exact=True):
+def velocity(phi, radius, lam, omega, k=0.0, exact=True) -> float | np.ndarray:
     """Piston velocity v [m/s] at crank speed omega [rad/s].
 
     Notes
@@ -81,7 +81,7 @@ def velocity(phi, radius, lam, omega, k=0.0, exact=True):
     return omega * radius * (np.sin(phi) + lam * u * np.cos(phi) / np.sqrt(1.0 - (lam * u) ** 2))
 
 
-def acceleration(phi, radius, lam, omega, k=0.0, exact=True):
+def acceleration(phi, radius, lam, omega, k=0.0, exact=True) -> float | np.ndarray:
     """Piston acceleration j [m/s^2] at constant crank speed omega [rad/s].
 
     Notes
@@ -109,7 +109,7 @@ def acceleration(phi, radius, lam, omega, k=0.0, exact=True):
     return omega**2 * radius * (c + lam * (c * c - u * s + lam**2 * u**3 * s) / (1.0 - (lam * u) ** 2) ** 1.5)
 
 
-def textbook_extremes(radius, lam, omega):
+def textbook_extremes(radius, lam, omega) -> dict[str, float]:
     """The manual's closed forms for a central mechanism: (1.7) v_max, (1.10) j_max, (1.11) j_min and its angle.
 
     Returns
@@ -132,7 +132,7 @@ def textbook_extremes(radius, lam, omega):
     return out
 
 
-def extremes(radius, lam, omega, k=0.0, exact=True):
+def extremes(radius, lam, omega, k=0.0, exact=True) -> dict[str, float]:
     """Extremes of the piston velocity and acceleration found on the chosen formulas over a revolution.
 
     Returns
@@ -149,7 +149,7 @@ def extremes(radius, lam, omega, k=0.0, exact=True):
             "j_min": a_min, "j_min_angle": xn % (2 * np.pi)}
 
 
-def piston_stroke(radius, lam, k=0.0):
+def piston_stroke(radius, lam, k=0.0) -> float:
     """Piston stroke of the exact slider-crank, sqrt((L+R)^2 - a^2) - sqrt((L-R)^2 - a^2) [m] (2R for k = 0).
 
     References
@@ -167,7 +167,7 @@ def piston_stroke(radius, lam, k=0.0):
     return np.sqrt((rod + radius) ** 2 - a**2) - np.sqrt((rod - radius) ** 2 - a**2)
 
 
-def crank_angle_at(travel, radius, lam, k=0.0, exact=True, upstroke=False):
+def crank_angle_at(travel, radius, lam, k=0.0, exact=True, upstroke=False) -> float | np.ndarray:
     """Crank angle at which the piston has travelled ``travel`` from TDC: the inverse of :func:`displacement`.
 
     Parameters
@@ -260,13 +260,13 @@ def crank_angle_at(travel, radius, lam, k=0.0, exact=True, upstroke=False):
     return 2.0 * np.pi + delta - psi if upstroke else delta + psi
 
 
-def dead_centres(lam, k=0.0):
+def dead_centres(lam, k=0.0) -> tuple[float, float]:
     """Crank angles of TDC and BDC of an offset mechanism [rad]: arcsin(k lambda/(1+lambda)),
     pi + arcsin(k lambda/(1-lambda)) (exact slider-crank geometry)."""
     return np.arcsin(k * lam / (1.0 + lam)), np.pi + np.arcsin(k * lam / (1.0 - lam))
 
 
-def brix_displacement(phi, radius, lam):
+def brix_displacement(phi, radius, lam) -> float | np.ndarray:
     """Piston displacement of Brix's graphical construction [m].
 
     Notes
@@ -286,7 +286,7 @@ def brix_displacement(phi, radius, lam):
     return radius + e * np.sin(phi) ** 2 - np.cos(phi) * np.sqrt(radius**2 - (e * np.sin(phi)) ** 2)
 
 
-def brix_crank_angle(travel, radius, lam, upstroke=False):
+def brix_crank_angle(travel, radius, lam, upstroke=False) -> float | np.ndarray:
     """Crank angle at which Brix's construction puts the piston at ``travel`` from TDC [rad]: the inverse
     of :func:`brix_displacement`.
 

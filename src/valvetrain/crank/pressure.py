@@ -21,12 +21,12 @@ class PressureFileError(ValueError):
     """An indicator-diagram file that cannot be used; the message names the file and the line."""
 
 
-def cycle_length(strokes):
+def cycle_length(strokes) -> float:
     """Length of the cycle in crank angle [rad]: 4 pi for a four-stroke, 2 pi for a two-stroke (C = 180 tau)."""
     return np.pi * strokes
 
 
-def cylinder_volume(phi, bore, radius, lam, compression_ratio, k=0.0, exact=True):
+def cylinder_volume(phi, bore, radius, lam, compression_ratio, k=0.0, exact=True) -> float | np.ndarray:
     """Cylinder volume V = V_c + F_p s(phi) with V_c = V_h / (epsilon - 1) [m^3]."""
     area = np.pi * bore**2 / 4.0
     clearance = area * 2.0 * radius / (compression_ratio - 1.0)
@@ -46,7 +46,7 @@ FIRING_WINDOW_DEG = 90.0
 """The peak pressure of a fired cycle lies within this many crank degrees of the firing TDC."""
 
 
-def check_cycle(angle, pressure, strokes, source="indicator diagram"):
+def check_cycle(angle, pressure, strokes, source="indicator diagram") -> None:
     """Refuse a p(phi) diagram that does not describe one whole fired cycle in the cycle-angle convention.
 
     Parameters
@@ -90,13 +90,13 @@ def check_cycle(angle, pressure, strokes, source="indicator diagram"):
             "firing TDC")
 
 
-def on_grid(angle, pressure, grid, strokes):
+def on_grid(angle, pressure, grid, strokes) -> float | np.ndarray:
     """Periodic linear interpolation of p(phi) onto the calculation grid [Pa]."""
     return np.interp(np.asarray(grid), angle, pressure, period=cycle_length(strokes))
 
 
 def pv_to_angle(volume, pressure, bore, radius, lam, compression_ratio, strokes, k=0.0, method="exact",
-                source="p-V table"):
+                source="p-V table") -> tuple[np.ndarray, np.ndarray]:
     """Convert a p-V diagram to p(phi) through the piston kinematics.
 
     The rows follow the cycle from its first TDC; the volume rises and falls once per
@@ -158,7 +158,7 @@ OVERLAP_DEG = 20.0
 when the valves' timing is not known [deg]."""
 
 
-def blend(phi, start, length):
+def blend(phi, start, length) -> np.ndarray:
     """Weight rising smoothly from 0 at ``start`` to 1 at ``start + length`` (half a cosine wave; 0 before, 1
     after), continuous with its first derivative; a step where ``length`` is 0."""
     if length <= 0.0:
@@ -199,7 +199,7 @@ class WiebeCycle:
     exhaust_closes: float = np.radians(OVERLAP_DEG / 2.0)  # from the gas-exchange TDC [rad] (four-stroke)
 
 
-def wiebe_fraction(phi, cycle, firing):
+def wiebe_fraction(phi, cycle, firing) -> float | np.ndarray:
     """Wiebe mass fraction burnt x at cycle angles ``phi`` for the firing TDC at ``firing`` [rad].
 
     Notes
@@ -216,7 +216,7 @@ def wiebe_fraction(phi, cycle, firing):
     return -np.expm1(-cycle.a * z ** (cycle.m + 1.0))
 
 
-def wiebe_rate(phi, cycle, firing):
+def wiebe_rate(phi, cycle, firing) -> np.ndarray:
     """Wiebe burn rate dx/dphi [1/rad] at cycle angles ``phi`` for the firing TDC at ``firing`` [rad].
 
     Notes
@@ -246,7 +246,7 @@ WIEBE_GRADING = 50
 integrand behaves like z^(m+1) there, smooth only for an integer m."""
 
 
-def wiebe_pressure(phi, cycle, bore, radius, lam, strokes, k=0.0):
+def wiebe_pressure(phi, cycle, bore, radius, lam, strokes, k=0.0) -> np.ndarray:
     """Cylinder pressure of the Wiebe cycle model at cycle angles ``phi`` [Pa].
 
     Notes
@@ -326,7 +326,7 @@ def wiebe_pressure(phi, cycle, bore, radius, lam, strokes, k=0.0):
     return p
 
 
-def check_timing(cycle):
+def check_timing(cycle) -> None:
     """Refuse valve angles the four-stroke model cannot place: the closed cycle must start before the firing TDC
     and the blowdown end before the intake valve opens, the overlap after it.
 
@@ -348,7 +348,7 @@ def check_timing(cycle):
                          "closed before the intake valve closes")
 
 
-def indicated_work(phi, pressure, volume):
+def indicated_work(phi, pressure, volume) -> float:
     """Indicated work of one cycle, W_i = closed integral of p dV [J] (trapezoidal rule over the closed cycle)."""
     v = np.append(volume, volume[0])
     p = np.append(pressure, pressure[0])

@@ -9,7 +9,7 @@ cylinder 1) is (psi - firing[c]) mod C.
 import numpy as np
 
 
-def firing_interval(strokes, cylinders):
+def firing_interval(strokes, cylinders) -> float:
     """Even firing interval theta = 180 tau / i [rad] (Power units manual (n.d.), eq. 2.22).
 
     >>> round(float(np.degrees(firing_interval(4, 4))), 9)
@@ -18,7 +18,7 @@ def firing_interval(strokes, cylinders):
     return np.pi * strokes / cylinders
 
 
-def even_firing(order, strokes):
+def even_firing(order, strokes) -> np.ndarray:
     """Firing angles of an even-firing engine: the m-th cylinder of ``order`` fires (m - 1) theta after the first.
 
     Parameters
@@ -40,7 +40,7 @@ def even_firing(order, strokes):
     return out - out[order[0] - 1]
 
 
-def layout_firing(order, throws, banks, strokes):
+def layout_firing(order, throws, banks, strokes) -> np.ndarray:
     """Firing angles from the crank-throw and cylinder-axis angles of any layout (inline, V, W, boxer).
 
     Parameters
@@ -88,7 +88,7 @@ def layout_firing(order, throws, banks, strokes):
     return out
 
 
-def engine_torque(psi, cylinder_torque, firing, strokes):
+def engine_torque(psi, cylinder_torque, firing, strokes) -> tuple[np.ndarray, np.ndarray]:
     """Torque of every cylinder and their sum at engine angles psi.
 
     Parameters
@@ -126,7 +126,7 @@ def engine_torque(psi, cylinder_torque, firing, strokes):
     return each, each.sum(axis=0)
 
 
-def torque_statistics(total):
+def torque_statistics(total) -> dict[str, float | None]:
     """Mean, max, min and the non-uniformity mu = (M_max - M_min) / M_mean of samples over one period.
 
     The samples must cover exactly one period, uniformly, without a duplicated end point.  The
@@ -143,7 +143,7 @@ def torque_statistics(total):
     return {"mean": mean, "max": mx, "min": mn, "nonuniformity": (mx - mn) / mean if defined else None}
 
 
-def is_even(firing, strokes, tol=1e-9):
+def is_even(firing, strokes, tol=1e-9) -> bool:
     """True when the firing angles are equally spaced over the cycle."""
     f = np.sort(np.mod(firing, np.pi * strokes))
     gaps = np.diff(np.append(f, f[0] + np.pi * strokes))

@@ -18,7 +18,7 @@ from .. import flow, masses, springs, strength
 from ..checks import Check, check
 from ..layouts import chain, layout, train_mass
 from ..locale import record_text
-from ..locale.wording import diagnosis_record, diagnosis_text
+from ..locale.wording import diagnosis_text
 from ..spring_materials import grade
 from ..specification.si import si_name
 from ..units import to_display
@@ -119,6 +119,76 @@ def spring_record(s) -> SpringRecord:
 
 
 @dataclass(frozen=True)
+class ConflictRecord:
+    """A failing check of the best spring candidate (:class:`valvetrain.springs.Conflict`) as results.json gives it:
+    value and bound in the check's own display unit."""
+
+    spring: str = quantity("spring", label="spring, or outer / inner of a pair")
+    check: str = quantity("check", label="the check's key")
+    name: str = quantity("quantity", label="the check's quantity")
+    value: float = quantity("value", label="the candidate's value, in unit")
+    limit: float = quantity("limit", label="the bound it misses, in unit")
+    unit: str = quantity("unit", label="the display unit of value and limit")
+    shortfall: float = quantity("shortfall", label="relative distance beyond the bound")
+
+
+@dataclass(frozen=True)
+class StressWindowRecord:
+    """The room the resonance check leaves between stress limits (:class:`valvetrain.springs.StressWindow`, SI)."""
+
+    material: str = quantity("material", label="the grade")
+    deflection_ratio: float = quantity("deflection_ratio", label="f_max / f_min where the room is largest")
+    max_deflection: float = quantity("max_deflection_mm", "mm", "f_max = h r / (r - 1)")
+    needed: float = quantity("stress_needed_MPa", "MPa", "tau_max the resonance ratio needs at D/d = 12")
+    allowed: float = quantity("stress_allowed_MPa", "MPa", "the largest tau_max the grade allows at the thinnest wire")
+
+
+@dataclass(frozen=True)
+class RemedyRecord:
+    """A change tried by a new search (:class:`valvetrain.springs.Remedy`) as results.json gives it: ``to`` in the
+    specification's units (the installed length in mm; none where no length was found)."""
+
+    change: str = quantity("change", label="what the remedy changes")
+    to: Union[str, int, float, None] = quantity("to", label="the value suggested or the furthest tried",
+                                                  omit_none=True)
+    spring_mass: Optional[float] = quantity("spring_mass_kg", "kg", "mass of the passing spring(s)", omit_none=True)
+    rated_speed: Optional[float] = quantity("rated_speed_rpm", "rpm", "the lowered rated crank speed", omit_none=True)
+
+
+@dataclass(frozen=True)
+class DiagnosisRecord:
+    """Why no spring passes and what would help (:class:`valvetrain.springs.Diagnosis`), with its English text."""
+
+    conflicts: tuple[ConflictRecord, ...] = quantity("conflicts", label="failing checks of the best candidate")
+    resonance: Optional[StressWindowRecord] = quantity("resonance", label="the stress window of the resonance check",
+                                                       omit_none=True)
+    remedies: tuple[RemedyRecord, ...] = quantity("remedies", label="changes with which a spring passes")
+    tried: tuple[RemedyRecord, ...] = quantity("tried", label="changes tried in vain")
+    text: str = quantity("text", label="the diagnosis in English")
+
+
+def _remedy_record(r) -> RemedyRecord:
+    """A remedy as results.json gives it: the value in the specification's units, the spring mass, the speed."""
+    to = r.value if r.change != springs.diagnosis.INSTALLED_LENGTH or r.value is None else to_display(r.value, "mm")
+    change = "max_installed_length_mm" if r.change == springs.diagnosis.INSTALLED_LENGTH else r.change
+    return RemedyRecord(change, to, r.spring_mass, r.rated_speed)
+
+
+def diagnosis_record(d) -> DiagnosisRecord:
+    """The ``spring.diagnosis`` record of results.json of a :class:`valvetrain.springs.Diagnosis`: the conflicts in
+    their display units, the stress window, the remedies that help and those tried in vain, the English text
+    (:func:`valvetrain.locale.wording.diagnosis_text`)."""
+    w = d.window
+    return DiagnosisRecord(
+        tuple(ConflictRecord(x.spring, x.check, x.quantity, to_display(x.value, x.unit), to_display(x.limit, x.unit),
+                             x.unit, x.shortfall) for x in d.conflicts),
+        None if w is None else StressWindowRecord(w.material, w.deflection_ratio, w.max_deflection, w.needed,
+                                                  w.allowed),
+        tuple(_remedy_record(r) for r in d.helped), tuple(_remedy_record(r) for r in d.tried),
+        diagnosis_text(d, "en"))
+
+
+@dataclass(frozen=True)
 class SpringResult:
     """The required spring line and the designed spring (or nested pair) (Valve-train practical works (n.d.), works 5-6).
 
@@ -146,8 +216,8 @@ class SpringResult:
                                  "resonance ratio")
     candidates_passing: int = quantity("candidates_passing", label="candidates that pass every check")
     candidates_tried: int = quantity("candidates_tried", label="candidates tried")
-    diagnosis: Optional[dict[str, Any]] = quantity("diagnosis", label="why no spring passes and what would help",
-                                         omit_none=True)
+    diagnosis: Optional[DiagnosisRecord] = quantity("diagnosis", label="why no spring passes and what would help",
+                                                    omit_none=True)
     design: SpringRecord = quantity("design", flatten=True)
     outer: Optional[SpringRecord] = quantity("outer", label="outer spring of a pair", omit_none=True, default=None)
     inner: Optional[SpringRecord] = quantity("inner", label="inner spring of a pair", omit_none=True, default=None)

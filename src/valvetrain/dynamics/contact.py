@@ -7,10 +7,12 @@ lubrication characteristic gamma = rho / (R0 + h) from (2.12).  The formulas liv
 simulated force.
 """
 
+import numpy as np
+
 from ..followers import FLAT
 
 
-def dynamic_contact_stress(law, theta, force, base_radius, width, modulus, follower=FLAT):
+def dynamic_contact_stress(law, theta, force, base_radius, width, modulus, follower=FLAT) -> np.ndarray:
     """Hertz stress between cam and follower under the dynamic contact force [Pa].
 
     Parameters
@@ -38,7 +40,7 @@ def dynamic_contact_stress(law, theta, force, base_radius, width, modulus, follo
     return follower.contact_stress(force, law.curvature(theta, base_radius, follower), width, modulus)
 
 
-def lubrication_characteristic(law, theta, base_radius, follower=FLAT):
+def lubrication_characteristic(law, theta, base_radius, follower=FLAT) -> np.ndarray:
     """gamma = rho / (R0 + h), the hydrodynamic lubrication characteristic of a flat follower; None for a follower
     without one (:meth:`valvetrain.followers.Follower.lubrication`).
 

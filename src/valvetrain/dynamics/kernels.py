@@ -404,7 +404,7 @@ the time per speed falls by half from 8 to 64 speeds a block and no further beyo
 of 64-bit floats used); 64 still leaves several blocks per thread on a sweep of 200 speeds."""
 
 
-def blocks(n_sub, workers=2):
+def blocks(n_sub, workers=2) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Speeds grouped into blocks of equal sub-step count, the blocks in the order of decreasing cost.
 
     Returns (order, start, seq): the speeds ``order[start[j]:start[j + 1]]`` form block j; ``seq`` lists the
@@ -432,7 +432,7 @@ def blocks(n_sub, workers=2):
     return order, np.array(start), seq
 
 
-def rows(a, b, n):
+def rows(a, b, n) -> tuple[np.ndarray, np.ndarray]:
     """Element end rows of a block's state: the node, or row n for the ground and n + 1 for the cam.
 
     >>> [r.tolist() for r in rows(np.array([CAM, 0]), np.array([0, GROUND]), 1)]

@@ -208,7 +208,7 @@ class CoilSpring:
 
 
 def coil_spring_from_geometry(wire_diameter, mean_diameter, active_coils, preload, installed_pitch, coils=8,
-                              shear_modulus=8.0e10, density=7850.0, damping_ratio=COIL_DAMPING_RATIO):
+                              shear_modulus=8.0e10, density=7850.0, damping_ratio=COIL_DAMPING_RATIO) -> CoilSpring:
     """A :class:`CoilSpring` from the wire and coil geometry.
 
     Parameters
@@ -352,7 +352,7 @@ class OneMassTrain:
 
 
 def one_mass_train(mass, stiffness, spring_rate, preload, rocker_ratio=1.0, lash=0.0, damping_ratio=DAMPING_RATIO,
-                   seat_stiffness=SEAT_STIFFNESS, seat_damping_ratio=SEAT_DAMPING_RATIO):
+                   seat_stiffness=SEAT_STIFFNESS, seat_damping_ratio=SEAT_DAMPING_RATIO) -> OneMassTrain:
     """A :class:`OneMassTrain` with the damping given by damping ratios.
 
     Parameters
@@ -443,7 +443,7 @@ class MultiMassTrain:
         return net.build(x_valve, valve, self.rocker_ratio, self.adjuster)
 
 
-def natural_modes(network, held=(), opened=()):
+def natural_modes(network, held=(), opened=()) -> tuple[np.ndarray, np.ndarray]:
     r"""Natural frequencies [rad/s, ascending] and mode shapes of a network without damping.
 
     Parameters
@@ -476,7 +476,7 @@ def natural_modes(network, held=(), opened=()):
     return np.sqrt(np.clip(values, 0.0, None)), shapes / peak
 
 
-def natural_frequencies(network, held=()):
+def natural_frequencies(network, held=()) -> np.ndarray:
     """Natural frequencies of a network with every contact closed and no damping [rad/s], ascending
     (:func:`natural_modes`).
 
@@ -491,29 +491,29 @@ def natural_frequencies(network, held=()):
     return natural_modes(network, held)[0]
 
 
-def pushrod_stiffness(length, diameter, bore=0.0, modulus=STEEL_MODULUS):
+def pushrod_stiffness(length, diameter, bore=0.0, modulus=STEEL_MODULUS) -> float:
     """Axial stiffness of a pushrod, E A / L [N/m] (a tube of outer ``diameter`` and inner ``bore``)."""
     return modulus * np.pi * (diameter**2 - bore**2) / 4.0 / length
 
 
-def rocker_stiffness(arm, width, height, modulus=STEEL_MODULUS):
+def rocker_stiffness(arm, width, height, modulus=STEEL_MODULUS) -> float:
     """Bending stiffness of a rocker arm at its tip, 3 E I / l^3 with I = b h^3 / 12 [N/m] (a cantilever
     from the shaft; engineering estimate, the sources give none)."""
     return 3.0 * modulus * width * height**3 / 12.0 / arm**3
 
 
-def camshaft_stiffness(l1, l2, diameter, bore=0.0, modulus=STEEL_MODULUS):
+def camshaft_stiffness(l1, l2, diameter, bore=0.0, modulus=STEEL_MODULUS) -> float:
     """Stiffness of the camshaft under its cam, force / deflection of Valve-train practical works (n.d.) eq. (7.3) [N/m]."""
     return 1.0 / camshaft_deflection(1.0, l1, l2, diameter, bore, modulus)
 
 
-def series(*stiffnesses):
+def series(*stiffnesses) -> float:
     """Stiffness of springs in series, 1 / sum(1/c_i) [N/m]."""
     return 1.0 / sum(1.0 / c for c in stiffnesses)
 
 
 def pushrod_train(tappet_mass, pushrod_mass, rocker_inertia, valve_mass, valve_arm, rocker_ratio, cam_stiffness,
-                  pushrod_stiffness, rocker_stiffness, valve_stiffness, springs, lash=0.0, **kw):
+                  pushrod_stiffness, rocker_stiffness, valve_stiffness, springs, lash=0.0, **kw) -> MultiMassTrain:
     """A pushrod (cam-in-block) :class:`MultiMassTrain`: cam - tappet - pushrod - rocker - valve.
 
     Parameters
@@ -558,7 +558,7 @@ def pushrod_train(tappet_mass, pushrod_mass, rocker_inertia, valve_mass, valve_a
 
 
 def rocker_train(rocker_inertia, valve_mass, valve_arm, rocker_ratio, cam_stiffness, rocker_stiffness,
-                 valve_stiffness, springs, lash=0.0, **kw):
+                 valve_stiffness, springs, lash=0.0, **kw) -> MultiMassTrain:
     """An overhead-cam rocker (finger follower) :class:`MultiMassTrain`: cam - rocker - valve.
 
     The rocker inertia about its pivot gives J / l_v^2 at the valve; the cam stiffness (camshaft and contact,
@@ -571,7 +571,7 @@ def rocker_train(rocker_inertia, valve_mass, valve_arm, rocker_ratio, cam_stiffn
                           notes=notes, **kw)
 
 
-def direct_train(tappet_mass, valve_mass, cam_stiffness, valve_stiffness, springs, lash=0.0, **kw):
+def direct_train(tappet_mass, valve_mass, cam_stiffness, valve_stiffness, springs, lash=0.0, **kw) -> MultiMassTrain:
     """A direct-acting overhead-cam :class:`MultiMassTrain`: cam - bucket tappet - valve (k = 1).
 
     The clearance is between the cam and the bucket (shim), so the lash sits at the cam contact.
@@ -582,7 +582,7 @@ def direct_train(tappet_mass, valve_mass, cam_stiffness, valve_stiffness, spring
     return MultiMassTrain("direct", drive, links, tuple(springs), 1.0, float(lash), 0, notes=notes, **kw)
 
 
-def rocker_arm_inertia(mass, arm_valve, arm_tappet):
+def rocker_arm_inertia(mass, arm_valve, arm_tappet) -> float:
     """Moment of inertia of a rocker about its shaft [kg m^2], two slender arms of total mass ``mass`` split in
     proportion to their lengths: J = m (l_v^3 + l_t^3) / (3 (l_v + l_t)) (engineering estimate)."""
     return mass * (arm_valve**3 + arm_tappet**3) / (3.0 * (arm_valve + arm_tappet))

@@ -11,7 +11,7 @@ derivatives of G from elsewhere (:func:`outer_solution` sums any given list).
 import numpy as np
 
 
-def perturbation_parameter(mass, stiffness, spring_rate, cam_speed):
+def perturbation_parameter(mass, stiffness, spring_rate, cam_speed) -> float | np.ndarray:
     """epsilon = M omega^2 / (c + K), dimensionless.
 
     Parameters
@@ -42,7 +42,7 @@ def perturbation_parameter(mass, stiffness, spring_rate, cam_speed):
     return mass * np.asarray(cam_speed, dtype=float) ** 2 / (stiffness + spring_rate)
 
 
-def quasi_static_lift(cam_lift, train):
+def quasi_static_lift(cam_lift, train) -> np.ndarray:
     """G = (c (k h - x0) - F0) / (c + K) and its angle derivatives [m, m/rad^n].
 
     Parameters
@@ -69,7 +69,7 @@ def quasi_static_lift(cam_lift, train):
     return g
 
 
-def outer_solution(even_derivatives, epsilon):
+def outer_solution(even_derivatives, epsilon) -> np.ndarray:
     """Outer solution y = sum_j (-epsilon)^j G^(2j) [m].
 
     Parameters
@@ -99,7 +99,7 @@ def outer_solution(even_derivatives, epsilon):
     return sum((-epsilon) ** j * np.asarray(g, dtype=float) for j, g in enumerate(even_derivatives))
 
 
-def outer_lift(law, train, theta, cam_speed):
+def outer_lift(law, train, theta, cam_speed) -> np.ndarray:
     """First-order outer solution of a train on a law, G - epsilon G'', clipped at the seat [m].
 
     Parameters
@@ -116,7 +116,7 @@ def outer_lift(law, train, theta, cam_speed):
     return np.maximum(outer_solution([g[0], g[2]], eps), 0.0)
 
 
-def kinetostatic_force(law, train, theta, cam_speed):
+def kinetostatic_force(law, train, theta, cam_speed) -> np.ndarray:
     """Kinetostatic cam contact force at the valve, F0 + K G + M omega^2 G'' where G > 0, else nan [N].
 
     The rigid-train criterion (jump when negative) written with the quasi-static lift G,

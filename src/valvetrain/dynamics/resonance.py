@@ -21,7 +21,7 @@ DAMPING_FACTOR = 0.107
 
 
 def reduced_mass(valve_mass, spring_mass, rocker_inertia, valve_arm, pushrod_mass, rocker_ratio, pushrod_stiffness,
-                 rocker_stiffness, rigid_pushrod=False):
+                 rocker_stiffness, rigid_pushrod=False) -> float:
     """Reduced mass of the train at the valve, Valve-train dynamics article (n.d.) step 4c [kg].
 
     Parameters
@@ -57,7 +57,7 @@ def reduced_mass(valve_mass, spring_mass, rocker_inertia, valve_arm, pushrod_mas
     return valve_mass + spring_mass / 3.0 + rocker_inertia / valve_arm**2 + pushrod
 
 
-def drive_stiffness(pushrod_stiffness, rocker_stiffness, rocker_ratio):
+def drive_stiffness(pushrod_stiffness, rocker_stiffness, rocker_ratio) -> float:
     """C_mgr = C_sht C_kor / (i_k^2 C_kor + C_sht) [N/m] (Valve-train dynamics article (n.d.), step 4e).
 
     Examples
@@ -70,7 +70,7 @@ def drive_stiffness(pushrod_stiffness, rocker_stiffness, rocker_ratio):
     return pushrod_stiffness * rocker_stiffness / (rocker_ratio**2 * rocker_stiffness + pushrod_stiffness)
 
 
-def spring_rate(mass, min_valve_acceleration, reserve, preload, valve_lift):
+def spring_rate(mass, min_valve_acceleration, reserve, preload, valve_lift) -> float:
     """Spring rate of Valve-train dynamics article (n.d.) step 4a/4e, C_pr = (K_3 m |j_min| - P_0) / h_kl max [N/m].
 
     Parameters
@@ -89,12 +89,12 @@ def spring_rate(mass, min_valve_acceleration, reserve, preload, valve_lift):
     return (float(required_spring_force(mass, min_valve_acceleration, reserve)) - preload) / valve_lift
 
 
-def natural_frequency(spring_rate, drive_stiffness, mass):
+def natural_frequency(spring_rate, drive_stiffness, mass) -> float:
     """omega_0 = sqrt((C_pr + C_mgr) / m) [rad/s] (Valve-train dynamics article (n.d.), step 4e)."""
     return np.sqrt((spring_rate + drive_stiffness) / mass)
 
 
-def resonant_harmonic(omega0, cam_speed):
+def resonant_harmonic(omega0, cam_speed) -> int:
     """k = int(omega_0 / omega_cam), the harmonic of the camshaft revolution nearest below omega_0 (step 4zh).
 
     The printed 0.5 omega is the camshaft speed when omega is the crankshaft's (corrections note 36).
@@ -102,7 +102,7 @@ def resonant_harmonic(omega0, cam_speed):
     return int(omega0 / cam_speed)
 
 
-def harmonic_force(tappet_lift, drive_stiffness, rocker_ratio, orders):
+def harmonic_force(tappet_lift, drive_stiffness, rocker_ratio, orders) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Amplitudes of harmonics of the excitation C_mgr i_k h_T over one period of N samples (Valve-train dynamics article (n.d.), step 4z).
 
     Parameters
@@ -140,12 +140,12 @@ def harmonic_force(tappet_lift, drive_stiffness, rocker_ratio, orders):
     return a, b, np.hypot(a, b)
 
 
-def elastic_amplitude(force, mass, omega0, damping_factor=DAMPING_FACTOR):
+def elastic_amplitude(force, mass, omega0, damping_factor=DAMPING_FACTOR) -> np.ndarray:
     """Delta = F / (xi omega_0) with xi = 0.107 m omega_0 [m] (Valve-train dynamics article (n.d.), step 4i; xi in N s/m, corrections note 38)."""
     return force / (damping_factor * mass * omega0**2)
 
 
-def distortion(amplitude, valve_lift):
+def distortion(amplitude, valve_lift) -> np.ndarray:
     """delta = Delta / (sqrt(2) h_rms), h_rms the RMS valve lift over the event (step 4k), a fraction (x 100: %).
 
     Parameters
@@ -191,7 +191,7 @@ class Resonance:
 
 
 def resonance(law, cam_speed, mass, spring_rate, drive_stiffness, rocker_ratio, samples=3600, period="revolution",
-              span=2, damping_factor=DAMPING_FACTOR):
+              span=2, damping_factor=DAMPING_FACTOR) -> Resonance:
     """Resonance analysis of the Valve-train dynamics article (n.d.) for a lift law (steps 4e-4k).
 
     Parameters

@@ -46,7 +46,7 @@ by no more than 1 nm in every position (and 1 nm times the spectral radius of th
 thousandth of the 1 um lift accuracy of the integrator, and 0.015 N of force on a 15000 N/mm drive."""
 
 
-def substeps(highest_frequency, cam_speeds, step):
+def substeps(highest_frequency, cam_speeds, step) -> np.ndarray:
     """Sub-steps per angle step for each speed, the smallest power of two with |lambda|_max dt <= STEP_LIMIT.
 
     Parameters
@@ -67,7 +67,7 @@ def substeps(highest_frequency, cam_speeds, step):
     return (2 ** np.ceil(np.log2(np.maximum(need, 1.0)))).astype(np.int64)
 
 
-def cam_excitation(law, rocker_ratio, steps_per_rev, per_step, start=-np.pi):
+def cam_excitation(law, rocker_ratio, steps_per_rev, per_step, start=-np.pi) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Cam displacement and its slope at the valve on one camshaft revolution.
 
     Returns
@@ -152,7 +152,7 @@ class SpeedResult:
         return lift_error(self.lift, self.kinematic_lift)
 
 
-def lift_error(lift, kinematic_lift):
+def lift_error(lift, kinematic_lift) -> np.ndarray:
     """Valve lift y minus the rigid lift max(k h - x0, 0) where either is open, else 0 [m].
 
     >>> (lift_error(np.array([-1e-6, 2e-3, 0.0]), np.array([-1e-4, 2.1e-3, 1e-5])) * 1e6).round(6).tolist()
@@ -162,7 +162,7 @@ def lift_error(lift, kinematic_lift):
     return np.where((lift > 0) | (rigid > 0), lift - rigid, 0.0)
 
 
-def runs(mask):
+def runs(mask) -> np.ndarray:
     """Start and end (exclusive) indices of the runs of True in a boolean array, shape (m, 2).
 
     >>> runs(np.array([0, 1, 1, 0, 1], dtype=bool)).tolist()
@@ -172,7 +172,7 @@ def runs(mask):
     return np.column_stack([np.flatnonzero(edges == 1), np.flatnonzero(edges == -1)])
 
 
-def seating(theta, lift, velocity, acceleration=None, step_time=None):
+def seating(theta, lift, velocity, acceleration=None, step_time=None) -> tuple[int, float, float]:
     """First downward crossing of y = 0 after the largest lift: (index, angle [rad], velocity [m/s]).
 
     ``index`` is the first sample at or below the seat.  With ``acceleration`` [m/s^2] and ``step_time`` (the time
@@ -214,7 +214,7 @@ def seating(theta, lift, velocity, acceleration=None, step_time=None):
     return i, float(theta[i - 1] + t / h * (theta[i] - theta[i - 1])), float(v + a * t + 0.5 * jerk * t * t)
 
 
-def bounce(lift, first_seating, tolerance=BOUNCE_TOLERANCE):
+def bounce(lift, first_seating, tolerance=BOUNCE_TOLERANCE) -> tuple[float, int]:
     """The bounce after the first seating: (largest lift after it [m], returns above ``tolerance``); (0, 0) without one.
 
     ``first_seating`` is the index :func:`seating` returns (the record's length: no seating, no bounce).
@@ -227,7 +227,7 @@ def bounce(lift, first_seating, tolerance=BOUNCE_TOLERANCE):
     return (float(max(after.max(), 0.0)) if returns.size else 0.0), len(returns)
 
 
-def lift_event(kinematic, lift):
+def lift_event(kinematic, lift) -> np.ndarray:
     """Mask of the cam's lift event as the valve lives it: from the first angle where the cam's lift is positive to
     the valve's first return to its seat after it (a downward crossing of y = 0), or to the end of the record.
 
@@ -246,7 +246,7 @@ def lift_event(kinematic, lift):
     return (index >= start) & (index < end)
 
 
-def separation_mask(contact, kinematic, lift):
+def separation_mask(contact, kinematic, lift) -> np.ndarray:
     """Follower separation (jump): no contact force, and the valve at or above the cam, while the cam's lift is
     positive during the lift event (:func:`lift_event`).
 
@@ -262,7 +262,7 @@ def separation_mask(contact, kinematic, lift):
     return (contact <= 0.0) & (kinematic > 0.0) & (lift >= kinematic) & lift_event(kinematic, lift)
 
 
-def lowest_lifting_force(contact, kinematic, lift, separated):
+def lowest_lifting_force(contact, kinematic, lift, separated) -> float:
     """Smallest cam contact force while the cam carries the open valve [N]: 0 with a separation, else the least where
     the cam's lift is positive and the valve is off its seat during the lift event (:func:`lift_event`; after it
     the cam lowers the seated valve to its base circle and the force falls to 0 without a separation); nan if the
@@ -279,7 +279,7 @@ def lowest_lifting_force(contact, kinematic, lift, separated):
 
 
 def speed_result(cam_speed, theta, lift, velocity, kinematic, contact, seat, spring, slope, surge, clash,
-                 bounce_tolerance=BOUNCE_TOLERANCE, acceleration=None, revolutions=1, converged=True):
+                 bounce_tolerance=BOUNCE_TOLERANCE, acceleration=None, revolutions=1, converged=True) -> SpeedResult:
     """Events of one speed from its recorded revolution (see the module docstring for the definitions)."""
     step_time = float(theta[1] - theta[0]) / cam_speed
     i_seat, seat_angle, seat_velocity = seating(theta, lift, velocity, acceleration, step_time)
@@ -295,7 +295,7 @@ def speed_result(cam_speed, theta, lift, velocity, kinematic, contact, seat, spr
                        int(revolutions), bool(converged))
 
 
-def zero_crossing(speeds, values, hit):
+def zero_crossing(speeds, values, hit) -> float:
     """The speed where a quantity reaches its limit, interpolated between the speeds of a sweep.
 
     Parameters
@@ -341,7 +341,7 @@ def zero_crossing(speeds, values, hit):
     return float(inside.min()) if inside.size else float(speeds[i])
 
 
-def level_crossing(speeds, values, level):
+def level_crossing(speeds, values, level) -> float:
     """The lowest speed where ``values`` rises above ``level``, linear between the two speeds around it (nan: none;
     the lowest speed if it is already above).
 
@@ -479,7 +479,7 @@ def _notify_compile():
 _COMPILE_NOTIFIED = False
 
 
-def sweep_size(network, cam_speeds, revolutions, step_deg):
+def sweep_size(network, cam_speeds, revolutions, step_deg) -> tuple[int, int]:
     """Work and memory of a sweep before it runs: (integrator steps x elements, bytes of the recorded maps).
 
     The work counts every sub-step of every speed for ``revolutions`` (the cap: a speed that repeats stops
@@ -499,7 +499,7 @@ def sweep_size(network, cam_speeds, revolutions, step_deg):
 
 
 def sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, progress=None, bounce_tolerance=BOUNCE_TOLERANCE,
-          tolerance=STATE_TOLERANCE):
+          tolerance=STATE_TOLERANCE) -> SweepResult:
     """Simulate an elastic train on a lift law at every camshaft speed of a sweep.
 
     Parameters
@@ -585,12 +585,12 @@ def sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, progress=None, bo
                        np.where(out_revs > 0, out_revs, int(revolutions)), out_revs > 0, bounce_tolerance, out_z)
 
 
-def simulate(law, train, cam_speed, revolutions=3, step_deg=0.1, bounce_tolerance=BOUNCE_TOLERANCE):
+def simulate(law, train, cam_speed, revolutions=3, step_deg=0.1, bounce_tolerance=BOUNCE_TOLERANCE) -> SpeedResult:
     """Simulate one camshaft speed [rad/s]; a :class:`SpeedResult` of the last revolution (see :func:`sweep`)."""
     return sweep(law, train, [cam_speed], revolutions, step_deg, bounce_tolerance=bounce_tolerance).speed(0)
 
 
-def speed_range(low, high, count=200):
+def speed_range(low, high, count=200) -> np.ndarray:
     """``count`` camshaft speeds evenly spaced from ``low`` (idle) to ``high`` (over-speed) [rad/s].
 
     The issue's default sweep is 200 speeds; an engine speed n [rpm] of a four-stroke turns the camshaft at

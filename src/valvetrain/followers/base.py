@@ -77,13 +77,13 @@ REGISTRY = {}
 """``follower`` name -> its :class:`Follower` subclass, in the order of registration."""
 
 
-def register(cls):
+def register(cls) -> type:
     """Class decorator: add a follower class to :data:`REGISTRY` under its ``name``."""
     REGISTRY[cls.name] = cls
     return cls
 
 
-def follower_of(cam):
+def follower_of(cam) -> "Follower":
     """The follower of a cam: the class registered under ``cam.follower`` built by its :meth:`Follower.from_cam`.
 
     ``cam`` is the cam's SI view or the law stage's ``CamResult`` (attributes ``follower`` and the follower's

@@ -12,7 +12,7 @@ import math
 
 
 def wave_speed(bulk_modulus, density, diameter=0.0, wall_thickness=math.inf, wall_modulus=math.inf,
-               restraint=1.0):
+               restraint=1.0) -> float:
     """Speed of a pressure wave in a liquid-filled pipe [m/s].
 
     Parameters

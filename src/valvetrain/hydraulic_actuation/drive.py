@@ -286,7 +286,7 @@ class DriveResult:
         return open_v - open_r, close_v - close_r
 
 
-def simulate(law, drive, cam_speed, start=None, span=2.0 * math.pi, gas_force=None):
+def simulate(law, drive, cam_speed, start=None, span=2.0 * math.pi, gas_force=None) -> DriveResult:
     """Response of a hydraulic valve drive to a cam lift law at a constant camshaft speed.
 
     Parameters
@@ -385,7 +385,7 @@ class SpeedSweep:
     stop_reached: np.ndarray
 
 
-def speed_sweep(law, drive, cam_speeds, fraction=0.05, **kwargs):
+def speed_sweep(law, drive, cam_speeds, fraction=0.05, **kwargs) -> SpeedSweep:
     """One revolution of the drive (:func:`simulate`) at each camshaft speed of ``cam_speeds`` [rad/s].
 
     ``fraction`` is the lift level of the delays (:meth:`DriveResult.delays`); ``kwargs`` go to :func:`simulate`.

@@ -96,7 +96,7 @@ def _pipe_kernel(p, u, impedance, friction, vapour_pressure, left_kind, left, ri
 
 
 def pipe_transient(pressure, velocity, density, wave_speed, diameter, friction_factor, time_step,
-                   left, right, left_kind=PRESSURE, right_kind=VELOCITY, vapour_pressure=-np.inf):
+                   left, right, left_kind=PRESSURE, right_kind=VELOCITY, vapour_pressure=-np.inf) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Transient flow in a single pipe with prescribed end conditions, by the method of characteristics.
 
     Parameters

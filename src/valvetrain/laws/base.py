@@ -469,19 +469,19 @@ def _members(member, count):
     return np.split(order, np.searchsorted(member[order], np.arange(1, count)))
 
 
-def valve_lift_of(h, ramp_height, rocker_ratio=1.0, follower=FLAT):
+def valve_lift_of(h, ramp_height, rocker_ratio=1.0, follower=FLAT) -> float | np.ndarray:
     """Valve lift i_k i_f(h) (h - h0) for h > h0, else 0 [m], of the follower lifts ``h`` [m] (:meth:`LiftLaw.valve_lift`;
     ``ramp_height`` h0 [m] and ``rocker_ratio`` i_k scalars or one an angle)."""
     return rocker_ratio * follower.ratio(h) * np.clip(h - ramp_height, 0.0, None)
 
 
-def member_values(values, member):
+def member_values(values, member) -> float | np.ndarray:
     """Per-law ``values`` (a sequence, one a law) at each sample of a batch: ``values[member]``, or the one law's value
     where ``member`` is None (:func:`batch_derivatives`)."""
     return values[0] if member is None else np.asarray(values, dtype=float)[member]
 
 
-def batch_derivatives(laws, theta, member):
+def batch_derivatives(laws, theta, member) -> np.ndarray:
     """Lift and its first three derivatives of several laws, each at its own angles.
 
     Parameters
@@ -534,6 +534,6 @@ def mirror(theta, half):
     return half - abs(theta), flip
 
 
-def segment_index(x, edges):
+def segment_index(x, edges) -> int | np.ndarray:
     """Index of the piece of ``edges`` that holds each ``x`` (ends clipped to the first/last piece)."""
     return np.clip(np.searchsorted(edges, x, side="right") - 1, 0, len(edges) - 2)

@@ -13,7 +13,7 @@ from .base import RampedLaw, SymmetricLaw, segment_index
 from .ramps import make_ramp
 
 
-def constant_acceleration_levels(nose_lift, ramp_height, ramp_velocity, phi1, phi2, phi3=0.0, kappa=1.0):
+def constant_acceleration_levels(nose_lift, ramp_height, ramp_velocity, phi1, phi2, phi3=0.0, kappa=1.0) -> tuple[float, float]:
     """A1 and A2 [L/rad^2] of the constant-acceleration cam.
 
     Notes

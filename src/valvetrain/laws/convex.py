@@ -9,7 +9,7 @@ import numpy as np
 from .base import RampedLaw, SymmetricLaw
 
 
-def three_arc_geometry(base_radius, lift, half_angle, nose_radius):
+def three_arc_geometry(base_radius, lift, half_angle, nose_radius) -> tuple[float, float, float]:
     """Flank radius r1, flank angle phi1 and nose angle phi2 of a three-arc convex cam.
 
     Parameters

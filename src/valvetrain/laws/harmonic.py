@@ -17,7 +17,7 @@ from .base import LiftLaw, Segment
 from .errors import LawError
 
 
-def harmonic_limit(half_angle, natural_frequency, cam_speed):
+def harmonic_limit(half_angle, natural_frequency, cam_speed) -> float:
     """Largest harmonic order whose frequency stays below the natural frequency, N < alpha_W omega_n / (pi omega).
 
     Parameters
@@ -61,7 +61,7 @@ def _junction_conditions(w, order, nose_lift):
     return c, d
 
 
-def constrained_least_squares(a, b, c, d):
+def constrained_least_squares(a, b, c, d) -> np.ndarray:
     """Minimise ||a x - b|| subject to c x = d, by the null-space method.
 
     ``x = x_p + Z y`` with ``x_p`` the minimum-norm solution of ``c x = d`` and ``Z`` an orthonormal

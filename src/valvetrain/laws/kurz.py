@@ -47,7 +47,7 @@ class KurzCoefficients:
     K2: float
 
 
-def kurz_coefficients(lift, ramp_velocity, phi1, phi2, phi3, shape_factor=0.625):
+def kurz_coefficients(lift, ramp_velocity, phi1, phi2, phi3, shape_factor=0.625) -> KurzCoefficients:
     """Closed-form coefficients of the Kurz cam.
 
     Parameters

@@ -7,6 +7,7 @@ table measured against the crank angle is halved, and one measured from the firi
 crank deg.  Lifts are follower (tappet) lifts [m]; a table of valve lift is divided by the rocker ratio.
 """
 
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
@@ -69,7 +70,7 @@ SMOOTHING_XTOL = 1e-3
 target to about 0.1 %."""
 
 
-def noise_level(lift):
+def noise_level(lift) -> float:
     """Robust estimate of the random error of a table's rows, measurement noise and rounding [same unit as ``lift``].
 
     The third differences of a smooth curve sampled every 1-2 crank deg are small (its third derivative times the
@@ -95,7 +96,7 @@ def noise_level(lift):
     return float(1.4826 * np.median(np.abs(d3 - np.median(d3))) / np.sqrt(20.0))
 
 
-def interpolation_error(x, y, per_step=8):
+def interpolation_error(x, y, per_step=8) -> tuple[float, float]:
     """How far the lift between a table's rows may leave the range of the rows, below and above [same unit as
     ``y``]: the interpolation error of the angle step, as the rows show it.
 
@@ -140,7 +141,7 @@ def interpolation_error(x, y, per_step=8):
     return float(max(y.min() - between.min(), 0.0)), float(min(max(between.max() - y.max(), 0.0), nose))
 
 
-def lift_resolution(lift_mm, most_decimals=6):
+def lift_resolution(lift_mm, most_decimals=6) -> float:
     """The step to which a table's lifts are rounded [mm]: the largest q = n x 10^-k mm (k <= ``most_decimals``)
     of which every lift is a whole multiple; 0 where there is none (the lifts are not rounded).
 
@@ -158,7 +159,7 @@ def lift_resolution(lift_mm, most_decimals=6):
     return 0.0
 
 
-def table_accuracy(lift_mm):
+def table_accuracy(lift_mm) -> float:
     """The accuracy of a table's lifts as its rows show it [mm]: the default of ``accuracy_mm``.
 
     A table is no more accurate than its resolution and its noise.  Its rows differ from the true lift by the
@@ -193,7 +194,7 @@ def table_accuracy(lift_mm):
 
 
 def lobe_table(angle_deg, lift_mm, angle="crank", zero="gas_exchange_tdc", accuracy_mm=0.005,
-               min_lift_mm=MIN_VALVE_LIFT_MM):
+               min_lift_mm=MIN_VALVE_LIFT_MM) -> tuple[np.ndarray, np.ndarray, float]:
     """The lobe of a lift table in the engine's cam frame: checked, trimmed and bounded in size for the fits.
 
     The table must cover at most one camshaft revolution, rise from the base circle (within
@@ -294,7 +295,7 @@ def _one_lobe(a, h, band):
     return int(lobe[0]), int(lobe[-1])
 
 
-def binned(x, y, points):
+def binned(x, y, points) -> tuple[np.ndarray, np.ndarray, float]:
     """Rows averaged in at most ``points`` bins of equal width in x; empty bins are dropped.
 
     Averaging the angle with the lift keeps the points on the curve to second order (the bias is h'' w^2 / 24
@@ -316,7 +317,7 @@ def binned(x, y, points):
             x.size / full.sum())
 
 
-def harmonic_fit(theta, lift, harmonics, period_half):
+def harmonic_fit(theta, lift, harmonics, period_half) -> tuple[np.ndarray, np.ndarray, float]:
     """Least-squares N-harmonic approximation h = a0 + sum a_k cos(k w t) + b_k sin(k w t), w = pi / L.
 
     Parameters
@@ -346,13 +347,13 @@ def harmonic_fit(theta, lift, harmonics, period_half):
     return coef[: harmonics + 1], np.concatenate([[0.0], coef[harmonics + 1:]]), w
 
 
-def harmonic_lift(theta, a, b, w):
+def harmonic_lift(theta, a, b, w) -> np.ndarray:
     """The N-harmonic series sum a_k cos(k w t) + b_k sin(k w t) at angles theta [rad]."""
     k = np.arange(a.size) * w
     return np.cos(np.outer(theta, k)) @ a + np.sin(np.outer(theta, k)) @ b
 
 
-def harmonic_order(theta, lift, accuracy, most, period_half):
+def harmonic_order(theta, lift, accuracy, most, period_half) -> tuple[int, np.ndarray, np.ndarray, float, float]:
     """The smallest order N <= ``most`` whose N-harmonic fit meets the accuracy, and its fit (
     choose N by the residual against the measurement accuracy, not the largest N that fits).
 
@@ -381,7 +382,7 @@ def harmonic_order(theta, lift, accuracy, most, period_half):
     return best
 
 
-def lift_event(fn, a, b, level, samples=4001):
+def lift_event(fn, a, b, level, samples=4001) -> tuple[float, float]:
     """Where a fitted lift leaves the base circle and returns to it, within [a, b].
 
     The lobe is the stretch around the fit's highest point that stays above ``level`` (the noise band of the
@@ -426,7 +427,7 @@ def lift_event(fn, a, b, level, samples=4001):
     return float(start), float(end)
 
 
-def symmetry_shift(a, b, w, half_width, search=0.2, samples=801):
+def symmetry_shift(a, b, w, half_width, search=0.2, samples=801) -> tuple[float, float]:
     """Origin shift delta [rad] that best removes the odd part of a harmonic fit, and the odd part left.
 
     Shifting the origin by delta turns the sine coefficients into b_k(delta) = b_k cos(k w delta) -
@@ -697,7 +698,7 @@ def _spline_rms(x, y, lam):
     return spline, float(np.sqrt(np.mean((spline(x) - y) ** 2)))
 
 
-def smoothing_spline(x, y, accuracy, stated=True):
+def smoothing_spline(x, y, accuracy, stated=True) -> tuple[Callable[[np.ndarray], np.ndarray], str, float, float]:
     """Reinsch's smoothing spline whose RMS residual is the measurement accuracy, or the GCV spline's if that is
     larger and the accuracy was stated (the table is noisier than stated).
 
@@ -763,7 +764,7 @@ def smoothing_spline(x, y, accuracy, stated=True):
     return spline, how, rms, lam
 
 
-def spline_dof(x, lam):
+def spline_dof(x, lam) -> float:
     """Degrees of freedom of the smoothing spline with parameter ``lam``: the trace of its hat matrix, from the
     splines of the unit vectors (one banded solve with n right-hand sides).  NaN for an unknown lambda."""
     from scipy.interpolate import make_smoothing_spline
@@ -773,7 +774,7 @@ def spline_dof(x, lam):
     return float(np.trace(make_smoothing_spline(x, np.eye(x.size), lam=lam)(x)))
 
 
-def gcv_score(rms, dof, points):
+def gcv_score(rms, dof, points) -> float:
     """Generalised cross-validation score n RSS / (n - dof)^2 [m^2] of a linear fit with RMS residual ``rms``.
 
     The mean squared error with which the fit predicts a row left out of it, to first order (Craven and Wahba
@@ -785,7 +786,7 @@ def gcv_score(rms, dof, points):
     return points * points * rms**2 / (points - dof) ** 2
 
 
-def choose_fit(fit, bounded, meets, gcv):
+def choose_fit(fit, bounded, meets, gcv) -> tuple[str, tuple[str, float]]:
     """The fit a law evaluates and why: ``(fit, (code, ratio))``.
 
     The codes: ``"given"`` (``fit`` is not ``"auto"``), ``"harmonic_swings"`` (the N-harmonic fit leaves the table's

@@ -21,7 +21,7 @@ EXPONENT_P_RANGE = (6, 16)
 """Recommended first exponent p: 6-10 for fast passenger-car engines, 12-16 for trucks (Valve-train practical works (n.d.), work 3)."""
 
 
-def default_exponents(p):
+def default_exponents(p) -> tuple[float, float, float, float]:
     """The progression of Valve-train practical works (n.d.), work 3: q = 2p - 2, r = 3p - 4, s = 4p - 6 (difference p - 2).
 
     >>> default_exponents(12)
@@ -30,7 +30,7 @@ def default_exponents(p):
     return (p, 2 * p - 2, 3 * p - 4, 4 * p - 6)
 
 
-def polydyne_coefficients(p, q, r, s):
+def polydyne_coefficients(p, q, r, s) -> tuple[float, float, float, float, float]:
     """Closed-form polydyne coefficients C2, Cp, Cq, Cr, Cs (dimensionless).
 
     Parameters
@@ -82,7 +82,7 @@ def _falling(k, j):
     return out
 
 
-def polynomial_junction_coefficients(exponents, nose_lift, end_lift, end_slope):
+def polynomial_junction_coefficients(exponents, nose_lift, end_lift, end_slope) -> np.ndarray:
     """Coefficients of h = nose_lift + sum a_k x^k meeting a ramp (or the base circle) at x = 1.
 
     Conditions: h(1) = ``end_lift``, dh/dx(1) = ``end_slope`` and the 2nd to (N-1)-th

@@ -122,12 +122,12 @@ class _PowerFall(_PowerRise):
         return sum(c * (0.5 - (1.0 - 1.0 / (e + 3)) / (e + 2)) / (e + 1) for c, e in self.terms)
 
 
-def flat_extremum(e1, e2):
+def flat_extremum(e1, e2) -> tuple[tuple[float, float], tuple[float, float]]:
     """Terms of (e2 x^e1 - e1 x^e2)/(e2 - e1): 0 at x = 0, 1 with zero slope at x = 1 (R2)."""
     return ((e2 / (e2 - e1), e1), (-e1 / (e2 - e1), e2))
 
 
-def plateau(chi):
+def plateau(chi) -> tuple[tuple[float, float], tuple[float, float]]:
     """Terms of 1 - x^chi: 1 with zero slope at x = 0, 0 at x = 1 (R1)."""
     return ((1.0, 0.0), (-1.0, chi))
 
@@ -145,7 +145,7 @@ def _ramp(height, angle, velocity):
     return _Quadratic(*ramp_coefficients(height, angle, velocity))
 
 
-def ramp_coefficients(height, angle, velocity):
+def ramp_coefficients(height, angle, velocity) -> tuple[float, float, float]:
     """A_0, B_0, C_0 of the ramp a = A_0 + B_0 x + C_0 x^2, x = psi/phi_0 [length/rad^2].
 
     Parameters

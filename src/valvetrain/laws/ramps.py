@@ -8,7 +8,7 @@ import numpy as np
 from numba import njit
 
 
-def cosine_ramp_length(height, end_velocity):
+def cosine_ramp_length(height, end_velocity) -> float:
     """Length of a cosine ramp, Phi_0 = pi h0 / (2 w') [rad].
 
     Parameters
@@ -218,7 +218,7 @@ RAMPS = {"cosine": CosineRamp, "constant_velocity": ConstantVelocityRamp,
          "constant_acceleration": ConstantAccelerationRamp}
 
 
-def make_ramp(kind, height, end_velocity, fraction=0.5):
+def make_ramp(kind, height, end_velocity, fraction=0.5) -> Ramp:
     """A ramp of the named kind (``cosine``, ``constant_velocity``, ``constant_acceleration``)."""
     if kind == "constant_acceleration":
         return ConstantAccelerationRamp(height, end_velocity, fraction)

@@ -30,7 +30,7 @@ def catalogue(lang):
     return tomllib.loads(files("valvetrain.locale").joinpath(f"{lang}.toml").read_text(encoding="utf-8"))
 
 
-def codes():
+def codes() -> tuple[str, ...]:
     """Every check code of the catalogue, in its order."""
     return tuple(catalogue("en")["record"])
 
@@ -43,12 +43,12 @@ def _template(section, code, lang="en"):
                          "add it (docs/architecture.md, Checks)") from None
 
 
-def parameters(code):
+def parameters(code) -> tuple[str, ...]:
     """The names of the parameters of a check code, in the order its English record names them."""
     return tuple(name for _, name, _, _ in string.Formatter().parse(_template("record", code)) if name)
 
 
-def record_text(code, params=()):
+def record_text(code, params=()) -> str:
     """The English text of a check in the records (``results.json``, console, ``[[accepted]]``).
 
     >>> record_text("law.power_polynomial.exponent", {"exponent": "n"})
@@ -57,7 +57,7 @@ def record_text(code, params=()):
     return _template("record", code).format(**dict(params))
 
 
-def check_text(code, params, lang):
+def check_text(code, params, lang) -> str:
     """The name of a check in the report in ``lang`` (without the valve or chapter it belongs to).
 
     >>> check_text("tappet_acceleration.max", {}, "ru")
@@ -66,7 +66,7 @@ def check_text(code, params, lang):
     return _template("checks", code, lang).format(**dict(params))
 
 
-def spring_text(spring, lang):
+def spring_text(spring, lang) -> str:
     """The name of a spring of a drive (``spring``, ``outer``, ``inner``) in ``lang``."""
     return catalogue(lang)["springs"][spring]
 
@@ -81,7 +81,7 @@ def _patterns():
     return tuple(out)
 
 
-def code_of(text):
+def code_of(text) -> tuple[str, dict[str, str]] | None:
     """The code and the parameters of a check's English record text (case and blanks as written), or None: the
     texts printed before the codes stay valid names of their checks.
 
@@ -96,7 +96,7 @@ def code_of(text):
     return None
 
 
-def code_table():
+def code_table() -> str:
     """The Markdown table of every check code: its parameters and its texts in every language (docs/checks.md,
     written by ``python tools/check_codes.py``)."""
     head = ["code", "parameters", "record text (results.json, [[accepted]])", *(f"report ({lang})" for lang in LANGS)]

@@ -95,33 +95,6 @@ def _window_record(w):
             "stress_allowed_MPa": to_display(w.allowed, "MPa")}
 
 
-def _remedy_record(r):
-    """A remedy as results.json gives it: the change, the value in the specification's units, the spring mass."""
-    if r.change == "max_installed_length":
-        out = {"change": "max_installed_length_mm", **({} if r.value is None else {"to": to_display(r.value, "mm")})}
-    else:
-        out = {"change": r.change, "to": r.value}
-    if r.spring_mass is not None:
-        out["spring_mass_kg"] = r.spring_mass
-    if r.rated_speed is not None:
-        out["rated_speed_rpm"] = to_display(r.rated_speed, "rpm")
-    return out
-
-
-def diagnosis_record(d):
-    """The ``spring.diagnosis`` record of results.json: the conflicts and the stress window in display units, the
-    remedies that help and those tried in vain, and the English text (:func:`diagnosis_text`)."""
-    out = {"conflicts": [{"spring": x.spring, "check": x.check, "quantity": x.quantity,
-                          "value": to_display(x.value, x.unit), "limit": to_display(x.limit, x.unit), "unit": x.unit,
-                          "shortfall": x.shortfall} for x in d.conflicts]}
-    if d.window is not None:
-        out["resonance"] = _window_record(d.window)
-    out["remedies"] = [_remedy_record(r) for r in d.helped]
-    out["tried"] = [_remedy_record(r) for r in d.tried]
-    out["text"] = diagnosis_text(d, "en")
-    return out
-
-
 def _remedy_text(r, words):
     """One remedy in English words."""
     grams = words["grams"].format(grams=r.spring_mass * 1e3) if r.passes and r.spring_mass is not None else ""
@@ -137,7 +110,7 @@ def _remedy_text(r, words):
     return helped.format(value=r.value, mm=mm, rpm=rpm, saved=1.0 - r.value)
 
 
-def diagnosis_text(d, lang):
+def diagnosis_text(d, lang) -> str:
     """The spring diagnosis (:class:`valvetrain.springs.Diagnosis`) in words of ``lang``: the conflicts, what the
     stress window proves, the remedies."""
     words, springs = DIAGNOSIS_WORDS[lang], catalogue(lang)["springs"]
@@ -166,7 +139,7 @@ def diagnosis_text(d, lang):
     return " ".join(text)
 
 
-def fit_reason(fit, harmonics, code, ratio, smoothing, lang="en"):
+def fit_reason(fit, harmonics, code, ratio, smoothing, lang="en") -> str:
     """The fit a measured table uses and why, in ``lang``: one sentence.
 
     Parameters

@@ -87,7 +87,7 @@ class FigureProcess:
         self.stop()
 
 
-def start():
+def start() -> FigureProcess | None:
     """A :class:`FigureProcess`, or None where processes are not forked (only Linux forks safely here)."""
     return FigureProcess() if sys.platform.startswith("linux") else None
 

@@ -1,6 +1,7 @@
 """The HTML design report (Jinja2 template ``templates/report.html``): one file, its figures embedded."""
 
 import base64
+from collections.abc import Callable
 from dataclasses import fields
 from html import unescape
 
@@ -52,7 +53,7 @@ TIME_AREA_FIELDS = ("stroke", "time_area", "time_area_open", "v3", "charge_veloc
 """The flow stage's figures in the report's flow and time-area tables (:class:`valvetrain.design.valve.FlowResult`)."""
 
 
-def fmt(x, lang="en"):
+def fmt(x, lang="en") -> str:
     """A number for a human by :func:`number`'s rule; a list with commas (semicolons in Russian, whose decimal
     separator is the comma); yes/no; a text value in ``lang``; "-" for no value (None, or a number that is not
     finite: results.json's null)."""
@@ -72,7 +73,7 @@ CITE_KEYS = ("source", "gas_force_source")
 """Keys whose values cite a source (shown as they are: the bibliography's)."""
 
 
-def cell(key, value, lang):
+def cell(key, value, lang) -> str:
     """The value of a key for a table cell: names and citations as they are (marked), the rest by :func:`fmt`."""
     leaf = key.rsplit(".", 1)[-1]
     if leaf == "link_names":
@@ -85,7 +86,7 @@ def cell(key, value, lang):
     return fmt(value, lang)
 
 
-def check_range(c, lang):
+def check_range(c, lang) -> str:
     """The allowed range of a check record or :class:`~valvetrain.checks.Check` with its unit in ``lang``."""
     get = c.get if isinstance(c, dict) else lambda k: getattr(c, k)
     unit = get("unit")
@@ -96,7 +97,7 @@ def check_range(c, lang):
     return TEXT[lang]["any"] if text == "any" else text
 
 
-def check_value(c, lang):
+def check_value(c, lang) -> str:
     """The value of a :class:`~valvetrain.checks.Check` with its unit in ``lang``, or that it cannot be evaluated
     and why (:func:`~valvetrain.report.names.unevaluated_text`)."""
     if not c.evaluated:
@@ -107,7 +108,7 @@ def check_value(c, lang):
 NOT_CHECKED = re.compile(r"(\w+): not checked, (.*) not given")
 
 
-def not_checked(note, lang):
+def not_checked(note, lang) -> str:
     """``"camshaft_deflection: not checked, parts.cam_width_mm not given"`` in ``lang``."""
     m = NOT_CHECKED.fullmatch(note)
     if not m:
@@ -125,7 +126,7 @@ def _quantity(check, lang, parts):
     return text
 
 
-def symbol_legend(lang):
+def symbol_legend(lang) -> Callable[..., str]:
     """A Jinja function ``legend(*symbols)``: the symbols not yet explained in this report, each with its meaning
     and unit (every symbol is explained where it is first used)."""
     seen = set()
@@ -407,7 +408,7 @@ def _conclusions(results, t):
 TOC_HEADING = re.compile(r"<h2( class=\"[^\"]*\")?>(.*?)</h2>", re.S)
 
 
-def with_contents(page, title):
+def with_contents(page, title) -> str:
     """The report with a numbered anchor on every chapter (``h2``) and a table of contents at ``<!--toc-->``."""
     entries = []
 
@@ -420,7 +421,7 @@ def with_contents(page, title):
     return page.replace("<!--toc-->", f'<nav id="toc"><h2 class="toc">{title}</h2><ol>{items}</ol></nav>', 1)
 
 
-def render_report(results, plots, lang="en", folder=None):
+def render_report(results, plots, lang="en", folder=None) -> str:
     """The report as HTML text.
 
     Parameters
@@ -540,7 +541,7 @@ def render_report(results, plots, lang="en", folder=None):
 CORRECTIONS_CITED = re.compile(r"(?:corrections notes?|поправк[аи]) (\d+)(?:-(\d+))?")
 
 
-def cited_corrections(text, lang):
+def cited_corrections(text, lang) -> list[tuple[int, str, str]]:
     """The corrections notes ``text`` cites ("corrections note 20", "поправка 20", "corrections notes 42-45"), in
     ``lang``: ``[(N, title, text)]`` by number."""
     numbers = set()
@@ -573,6 +574,6 @@ def _image(folder, name):
     return "data:image/png;base64," + base64.b64encode(png).decode("ascii")
 
 
-def write_report(results, path, plots, lang="en"):
+def write_report(results, path, plots, lang="en") -> None:
     """Write ``report.html`` with its figures embedded (``path``'s folder holds ``plots/``)."""
     path.write_text(render_report(results, plots, lang, path.parent), encoding="utf-8")

@@ -393,7 +393,7 @@ for _lang, _texts in CHECK_TEXT.items():
     TEXT[_lang].update(_texts)
 
 
-def verdict(counts, lang="en"):
+def verdict(counts, lang="en") -> tuple[str, str]:
     """The verdict of a design in words: ``(sentence, counts)``, the same on the command line, in the report and in
     ``repr``.
 

@@ -445,7 +445,7 @@ def _named(path):
     return None, ""
 
 
-def label(path, lang):
+def label(path, lang) -> str:
     """The name of a key of a record with its unit: ``"cam.max_velocity_m_s"`` -> ``"max tappet velocity
     v_T max, m/s"``.
 
@@ -459,12 +459,12 @@ def label(path, lang):
     return f"{name}, {unit_text(unit, lang)}" if unit else name
 
 
-def has_name(path):
+def has_name(path) -> bool:
     """True when :func:`label` has a name for ``path`` (not the key itself)."""
     return _named(path)[0] is not None
 
 
-def value_text(value, lang):
+def value_text(value, lang) -> str:
     """A text value of a record (``"flat"``, ``"pushrod"``, a segment ``"Phi1 opening"``) in ``lang``."""
     if lang == "en" or not isinstance(value, str):
         return value
@@ -483,12 +483,12 @@ LINKS = {
 """Russian of the drive links of the dynamics chapter (their English is the name itself)."""
 
 
-def link_names(names, lang):
+def link_names(names, lang) -> str:
     """The drive links of a dynamics record, comma-separated, in ``lang``."""
     return ", ".join(name if lang == "en" else LINKS.get(name, name) for name in names)
 
 
-def translate(text, lang):
+def translate(text, lang) -> str:
     """A text made with numbers in ``lang`` by its skeleton (the catalogue's ``[texts]``); as it is without one.  A text that
     starts with drive links (``"pushrod: ..."``, :data:`LINKS`) has them translated and the rest by its skeleton; a
     text of parts joined by ``"; "`` without a skeleton of its own, part by part (the longest head with one first)."""
@@ -515,14 +515,14 @@ def _by_skeleton(text):
     return None if ru is None else ru.format(*NUMBER.findall(text))
 
 
-def quantity_text(check, lang):
+def quantity_text(check, lang) -> str:
     """The quantity of a check in ``lang``: its valve or chapter, then the text of its code in the catalogue
     (:mod:`valvetrain.locale`): ``"intake: V′ (условная скорость в горловине)"``."""
     return record_quantity_text({"code": check.code, "params": dict(check.params), "quantity": check.quantity,
                                  "valve": check.valve}, lang)
 
 
-def record_quantity_text(record, lang):
+def record_quantity_text(record, lang) -> str:
     """:func:`quantity_text` of a check record of results.json (``code``, ``params``, ``quantity``, ``valve``)."""
     params = record["params"]
     text = check_text(record["code"], params, lang)
@@ -540,7 +540,7 @@ CANNOT_EVALUATE = ("cannot be evaluated", "не может быть вычисл
 """Said of a check whose value is not a finite number, before its reason."""
 
 
-def unevaluated_text(check, lang):
+def unevaluated_text(check, lang) -> str:
     """``"cannot be evaluated: REASON"`` of a check that cannot be evaluated, in ``lang`` (the reason by
     :func:`translate`)."""
     return f"{CANNOT_EVALUATE[LANGS.index(lang)]}: {translate(check.unevaluated, lang)}"

@@ -10,7 +10,7 @@ angle of 3.2e-7 deg, a residual of 1e-15)."""
 SUPERSCRIPTS = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
 
 
-def number(x, lang="en"):
+def number(x, lang="en") -> str:
     """A number in the report's one rule: 4 significant figures; an integer and a number of 10,000 or more in whole
     units; a number below :data:`ZERO_BELOW` as 0; below 0.0001 with a power of ten; a decimal comma in Russian.
 
@@ -36,7 +36,7 @@ def number(x, lang="en"):
     return text.replace(".", ",") if lang == "ru" else text
 
 
-def percent(x, lang="en"):
+def percent(x, lang="en") -> str:
     """A relative margin in per cent by :func:`number`'s rule, signed: ``0.0004`` -> ``"+0.04 %"`` (not "+0%").
 
     >>> percent(0.0004), percent(-0.26), percent(0.0026, "ru")

@@ -3,6 +3,7 @@ plot), the side-by-side comparison of the starting design and the optimum (table
 the constraints that bind and, for the power-polynomial cam, compares the optimum with its article."""
 
 from html import escape
+from typing import Any
 
 from matplotlib.figure import Figure
 import numpy as np
@@ -15,7 +16,7 @@ from ..locale import check_text
 from .names import quantity_text, unevaluated_text, unit_text
 
 
-def history_columns(result):
+def history_columns(result) -> dict[str, np.ndarray]:
     """The history as named columns: evaluation, objective, feasible (every margin >= 0), and each margin."""
     objective = np.array([h[0] for h in result.history])
     margins = np.array([h[1] for h in result.history]).reshape(len(result.history), len(result.margin_names))
@@ -35,14 +36,14 @@ HISTORY_COMMENTS = ("valvetrain optimize: one row per evaluation of the search, 
                     "limit, >= 0 when it holds")
 
 
-def comparison_columns(result):
+def comparison_columns(result) -> dict[str, list[Any]]:
     """The side-by-side comparison as named columns."""
     rows = result.comparison
     return {"quantity": [r[0] for r in rows], "unit": [r[1] for r in rows], "start": [r[2] for r in rows],
             "optimum": [r[3] for r in rows]}
 
 
-def history_figure(result, lang="en"):
+def history_figure(result, lang="en") -> Figure:
     """Objective (every evaluation, and the best feasible so far) and the constraints' margins against evaluations."""
     t = OPTIMIZE_TEXT[lang]
     cols = history_columns(result)
@@ -87,7 +88,7 @@ def _checked(c, lang):
     return _g(c.shown_value) if c.evaluated else unevaluated_text(c, lang)
 
 
-def report_html(result, lang="en"):
+def report_html(result, lang="en") -> str:
     """The optimisation's report in ``lang`` (HTML text): method, variables, comparison, constraints, history."""
     t = OPTIMIZE_TEXT[lang]
     start = {c.quantity: c for c in result.checks_start}

@@ -806,7 +806,7 @@ def hydraulic_sweep_figure(valve, t) -> Figure:
 DYNAMICS_FIGURES = {"dynamics_map": dynamics_map_figure, "dynamics_speed": dynamics_speed_figure}
 
 
-def write_dynamics_plots(name, d, folder, t, save=None):
+def write_dynamics_plots(name, d, folder, t, save=None) -> dict[str, str]:
     """Write the dynamics figures of one valve as PNG; return ``{kind: filename}``.  ``save(draw, filename)`` draws
     and writes one figure (``draw()`` makes it), by default at once (:func:`write_plots` passes its own)."""
     save = save or _saver(folder)
@@ -886,7 +886,7 @@ give (the time-area, the radius of curvature, the crank forces and pin load, the
 costs about 0.1 s, a design's numbers a few milliseconds."""
 
 
-def write_plots(results, folder, lang="en", figures="main", share=(0, 1)):
+def write_plots(results, folder, lang="en", figures="main", share=(0, 1)) -> dict[str, Any]:
     """Write the figures of ``figures`` (one of :data:`FIGURE_SETS`) as PNG; return ``{valve name or
     "crank"/"two_stroke": {kind: filename}}`` (and ``"(timing)"``: the timing diagram's filename) of those written.
 

@@ -92,7 +92,7 @@ _CITE = re.compile(r'(<span class="cite">)(.*?)(</span>)', re.S)
 _ITEM = re.compile(r'<li class="cite"><b>(.*?)</b>: (.*?)</li>', re.S)
 
 
-def citation(text):
+def citation(text) -> str:
     """One citation in Russian: the Russian works' short forms, the locators, the notes and their units.
 
     >>> citation("Valve-train practical works (n.d.), work 1, eq. (1.1)")
@@ -109,7 +109,7 @@ def citation(text):
     return text
 
 
-def russian_citations(page):
+def russian_citations(page) -> str:
     """The rendered Russian report with its citations in Russian (:func:`citation` on every ``span.cite``) and the
     Russian works' entries of the list of sources in Russian (other works keep their reference, marked as English
     text with ``lang="en"``)."""
@@ -135,7 +135,7 @@ version (``0.1.0``)."""
 _QUOTED = re.compile(r'"([^"<>]*)"')
 
 
-def russian_typography(page):
+def russian_typography(page) -> str:
     """The rendered Russian report with a decimal comma in every number of its text and «» for quotation marks
     (:data:`_DECIMAL`; the designer's names, links, the file's head and works in other languages as they are).
 

@@ -5,7 +5,7 @@ Units are in the key names (``_mm``, ``_deg``, ``_rpm``, ``_MPa``); :mod:`.si` c
 
 from dataclasses import dataclass
 import math
-from typing import Annotated
+from typing import Annotated, Any
 
 from pydantic import AfterValidator, BaseModel, ConfigDict, Field
 
@@ -39,7 +39,9 @@ def _bounded(low, high, unit="", low_open=True, high_open=False):
     return Annotated[float, AfterValidator(check), Range(low, high, unit, low_open, high_open)]
 
 
-Length = lambda low, high, **kw: _bounded(low, high, "mm", **kw)  # noqa: E731
+def Length(low, high, **kw) -> Any:  # noqa: N802 (a type factory)
+    """A float bounded to [low, high] in mm (:func:`_bounded`)."""
+    return _bounded(low, high, "mm", **kw)
 
 
 def _zero_or(low, high, unit="", zero="none"):
@@ -54,7 +56,7 @@ def _zero_or(low, high, unit="", zero="none"):
     return Annotated[float, AfterValidator(check)]
 
 
-def Pair(low, high, unit=""):  # noqa: N802 (a type factory, like Length)
+def Pair(low, high, unit="") -> Any:  # noqa: N802 (a type factory, like Length)
     """Two bounded numbers, written as a TOML array ``[a, b]``."""
     return Annotated[tuple[_bounded(low, high, unit), _bounded(low, high, unit)], Field(strict=False)]
 

@@ -11,7 +11,7 @@ import tomllib
 import tomli_w
 
 from ..files import shown_path
-from .messages import SpecError
+from .messages import Problem, SpecError
 from .models import Spec, resolve_path, validate
 
 
@@ -42,17 +42,17 @@ def parse_spec(text, source="<string>", source_dir=None) -> Spec:
     if isinstance(text, dict):
         return validate(text if source_dir is None else {**text, "source_dir": str(source_dir)})
     if not isinstance(text, str):
-        raise SpecError([f"{source}: a specification is TOML text or a dict of its tables, not a "
-                         f"{type(text).__name__}"])
+        raise SpecError([Problem(source, "a specification is TOML text or a dict of its tables, not a "
+                                 f"{type(text).__name__}")])
     if len(text) > MAX_SPEC_CHARACTERS:
-        raise SpecError([f"{source}: {len(text):,} characters; allowed at most {MAX_SPEC_CHARACTERS:,} for a "
-                         "specification (put long tables in a CSV file: cam.table_file, crank.pressure_file)"])
+        raise SpecError([Problem(source, f"{len(text):,} characters; allowed at most {MAX_SPEC_CHARACTERS:,} for a "
+                                 "specification (put long tables in a CSV file: cam.table_file, crank.pressure_file)")])
     try:
         data = tomllib.loads(text.removeprefix("\ufeff"))
     except tomllib.TOMLDecodeError as exc:
-        raise SpecError([f"{source}: not valid TOML: {exc}"]) from None
+        raise SpecError([Problem(source, f"not valid TOML: {exc}")]) from None
     except RecursionError:
-        raise SpecError([f"{source}: arrays or tables nested too deeply to be a specification"]) from None
+        raise SpecError([Problem(source, "arrays or tables nested too deeply to be a specification")]) from None
     if source_dir is not None and isinstance(data, dict):
         data["source_dir"] = str(source_dir)
     return validate(data)
@@ -63,9 +63,9 @@ def load_spec(path) -> Spec:
     try:
         text = Path(path).read_text(encoding="utf-8")
     except OSError as exc:
-        raise SpecError([f"{shown_path(path)}: cannot read the file: {exc.strerror or exc}"]) from None
+        raise SpecError([Problem(shown_path(path), f"cannot read the file: {exc.strerror or exc}")]) from None
     except UnicodeDecodeError as exc:
-        raise SpecError([f"{shown_path(path)}: cannot read the file: not UTF-8 text ({exc.reason})"]) from None
+        raise SpecError([Problem(shown_path(path), f"cannot read the file: not UTF-8 text ({exc.reason})")]) from None
     return parse_spec(text, shown_path(path), Path(path).resolve().parent)
 
 

@@ -228,7 +228,7 @@ class Candidates:
 def evaluate_springs(preload, rate, lift, mean_diameter, wire_diameter, material, camshaft_speed, *,
                      ratio_range=DEFLECTION_RATIO_RANGE, installed_length=None, min_installed_length=None,
                      max_installed_length=None, max_free_length=None, partner_frequency=None,
-                     min_frequency_difference=0.0):
+                     min_frequency_difference=0.0) -> Candidates:
     """Design many springs at once, each for its own straight characteristic (Valve-train practical works (n.d.), work 6).
 
     Parameters
@@ -327,7 +327,7 @@ def evaluate_springs(preload, rate, lift, mean_diameter, wire_diameter, material
                       omega, omega / camshaft_speed, lengths, mass, checks)
 
 
-def evaluate_spring(required, mean_diameter, wire_diameter, material, camshaft_speed, **limits):
+def evaluate_spring(required, mean_diameter, wire_diameter, material, camshaft_speed, **limits) -> SpringDesign | None:
     """Design one spring of given diameters for a line (:func:`evaluate_springs` of one candidate).
 
     Returns

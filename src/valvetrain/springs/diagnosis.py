@@ -112,7 +112,7 @@ def _passing_factor(trial, floor, tolerance=0.01):
     return float(good)
 
 
-def stress_window(material, lift, camshaft_speed, ratio_range=DEFLECTION_RATIO_RANGE, wire_range_mm=WIRE_RANGE_MM):
+def stress_window(material, lift, camshaft_speed, ratio_range=DEFLECTION_RATIO_RANGE, wire_range_mm=WIRE_RANGE_MM) -> StressWindow:
     """The room the resonance check leaves between stress limits, at the best deflection ratio (SI).
 
     For each ratio r of ``ratio_range`` (every :data:`~valvetrain.springs.requirement.DEFLECTION_RATIO_STEP`): the
@@ -182,7 +182,7 @@ def _remedies(requirement, throat_diameter, camshaft_speed, options, conflicts, 
     return tuple(out)
 
 
-def diagnose(requirement, throat_diameter, camshaft_speed, options, search, engine_speed=None):
+def diagnose(requirement, throat_diameter, camshaft_speed, options, search, engine_speed=None) -> Diagnosis:
     """Why no spring of a search passes, by how much, and what would make one pass (each remedy computed).
 
     Parameters

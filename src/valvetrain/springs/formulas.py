@@ -12,7 +12,7 @@ SHAPE_FACTOR_TABLE = (np.array([3, 4, 5, 6, 7, 8, 9, 10, 11, 12], dtype=float),
 """Spring index D/d and shape factor chi (Valve-train practical works (n.d.), work 6, table of eq. 6.1)."""
 
 
-def shape_factor_table(index):
+def shape_factor_table(index) -> np.ndarray:
     """Shape factor chi from the manual's table, linear interpolation in D/d (Valve-train practical works (n.d.), work 6, eq. 6.1).
 
     >>> round(float(shape_factor_table(5.5)), 6)
@@ -21,7 +21,7 @@ def shape_factor_table(index):
     return np.interp(index, *SHAPE_FACTOR_TABLE, left=np.nan, right=np.nan)
 
 
-def wahl_factor(index):
+def wahl_factor(index) -> float | np.ndarray:
     """Wahl's curvature and direct-shear factor, (4c - 1)/(4c - 4) + 0.615/c.
 
     Engineering literature (Wahl (1944)); printed beside the
@@ -34,12 +34,12 @@ def wahl_factor(index):
     return (4.0 * c - 1.0) / (4.0 * c - 4.0) + 0.615 / c
 
 
-def shear_stress(force, mean_diameter, wire_diameter, factor):
+def shear_stress(force, mean_diameter, wire_diameter, factor) -> np.ndarray:
     """Maximum shear stress in the wire, tau = 8 chi P D / (pi d^3) [Pa] (Valve-train practical works (n.d.), eq. 6.1)."""
     return 8.0 * factor * force * mean_diameter / (np.pi * wire_diameter**3)
 
 
-def active_coils(shear_modulus, wire_diameter, max_deflection, max_force, mean_diameter):
+def active_coils(shear_modulus, wire_diameter, max_deflection, max_force, mean_diameter) -> np.ndarray:
     """Working coils i_p = G d^4 f_max / (8 P_max D^3) (Valve-train practical works (n.d.), eq. 6.2).
 
     Examples
@@ -53,12 +53,12 @@ def active_coils(shear_modulus, wire_diameter, max_deflection, max_force, mean_d
     return shear_modulus * wire_diameter**4 * max_deflection / (8.0 * max_force * mean_diameter**3)
 
 
-def spring_rate(shear_modulus, wire_diameter, mean_diameter, coils):
+def spring_rate(shear_modulus, wire_diameter, mean_diameter, coils) -> np.ndarray:
     """Rate of a helical spring, C = G d^4 / (8 D^3 i_p) [N/m] (inverse of eq. 6.2)."""
     return shear_modulus * wire_diameter**4 / (8.0 * mean_diameter**3 * coils)
 
 
-def natural_frequency(wire_diameter, mean_diameter, coils, shear_modulus, density):
+def natural_frequency(wire_diameter, mean_diameter, coils, shear_modulus, density) -> np.ndarray:
     """First natural (surge) frequency of a spring fixed at both ends, omega_c1 [rad/s].
 
     Notes
@@ -76,7 +76,7 @@ def natural_frequency(wire_diameter, mean_diameter, coils, shear_modulus, densit
     return wire_diameter / (mean_diameter**2 * coils) * np.sqrt(shear_modulus / (2.0 * density))
 
 
-def fatigue_safety(tau_max, tau_min, endurance, mean_stress_factor):
+def fatigue_safety(tau_max, tau_min, endurance, mean_stress_factor) -> np.ndarray:
     """Fatigue safety factor n = tau_-1 / (tau_a + psi_tau tau_m) (Valve-train practical works (n.d.), eqs. 6.9-6.12).
 
     The manual defines no mean-stress coefficient psi_tau (corrections note 24); 0.1-0.2 is usual in the
@@ -87,7 +87,7 @@ def fatigue_safety(tau_max, tau_min, endurance, mean_stress_factor):
     return endurance / (tau_a + mean_stress_factor * tau_m)
 
 
-def spring_lengths(wire_diameter, coils, lift, preload_deflection, gap_factor, end_coils=2, installed_length=None):
+def spring_lengths(wire_diameter, coils, lift, preload_deflection, gap_factor, end_coils=2, installed_length=None) -> dict[str, np.ndarray]:
     """Pitches and lengths of a valve spring (Valve-train practical works (n.d.), eqs. 6.3-6.8).
 
     Parameters
@@ -118,7 +118,7 @@ def spring_lengths(wire_diameter, coils, lift, preload_deflection, gap_factor, e
             "installed_pitch": (l_0 - d * (end_coils - 1.0)) / (coils + 2.0), "free_length": l_free,
             "free_pitch": (l_free - d * (end_coils - 1.0)) / (coils + 2.0)}
 
-def resonance_stress(ratio, camshaft_speed, max_deflection, shape_factor, shear_modulus, density):
+def resonance_stress(ratio, camshaft_speed, max_deflection, shape_factor, shear_modulus, density) -> np.ndarray:
     """Shear stress at full lift of a spring whose surge frequency is ``ratio`` x omega_cam [Pa].
 
     Notes
@@ -147,7 +147,7 @@ def resonance_stress(ratio, camshaft_speed, max_deflection, shape_factor, shear_
     return ratio * camshaft_speed * shape_factor * max_deflection * np.sqrt(2.0 * density * shear_modulus) / np.pi
 
 
-def fatigue_stress_limit(endurance, mean_stress_factor, ratio, min_safety):
+def fatigue_stress_limit(endurance, mean_stress_factor, ratio, min_safety) -> np.ndarray:
     """Largest tau_max with a fatigue safety of ``min_safety`` when tau_min = tau_max / ratio [Pa].
 
     Notes

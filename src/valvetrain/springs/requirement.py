@@ -27,7 +27,7 @@ m_v x 100 g.  A stated default of this package, not from the sources (they ask o
 eqs. 5.4-5.5): without it a slow engine gets a spring of a few newtons.  A valve that leaves its seat at
 0.5 m/s is returned by it within v^2 / (2 a) = 0.13 mm, less than the usual clearance at the valve."""
 
-def deflection_ratios(ratio_range=DEFLECTION_RATIO_RANGE, step=DEFLECTION_RATIO_STEP):
+def deflection_ratios(ratio_range=DEFLECTION_RATIO_RANGE, step=DEFLECTION_RATIO_STEP) -> np.ndarray:
     """The deflection ratios f_max / f_min the search tries: ``ratio_range`` every ``step`` and its upper end.
 
     >>> [round(float(r), 2) for r in deflection_ratios((1.6, 2.0), 0.15)]
@@ -37,7 +37,7 @@ def deflection_ratios(ratio_range=DEFLECTION_RATIO_RANGE, step=DEFLECTION_RATIO_
     return np.unique(np.append(low + step * np.arange(int(np.floor((high - low) / step + 1e-9)) + 1), high))
 
 
-def seat_load(mass_at_valve, acceleration=SEAT_ACCELERATION):
+def seat_load(mass_at_valve, acceleration=SEAT_ACCELERATION) -> float:
     """Smallest preload that holds the closed valve on its seat, m_v a [N] (a stated default, see
     :data:`SEAT_ACCELERATION`).
 
@@ -47,7 +47,7 @@ def seat_load(mass_at_valve, acceleration=SEAT_ACCELERATION):
     return mass_at_valve * acceleration
 
 
-def required_spring_force(mass_at_valve, valve_acceleration, reserve):
+def required_spring_force(mass_at_valve, valve_acceleration, reserve) -> np.ndarray:
     """Spring force that keeps the train on the cam, K_z m_v |j_v| where j_v < 0, else 0 [N].
 
     Parameters
@@ -70,7 +70,7 @@ def required_spring_force(mass_at_valve, valve_acceleration, reserve):
     return reserve * mass_at_valve * np.clip(-np.asarray(valve_acceleration, dtype=float), 0.0, None)
 
 
-def enveloping_line(lift, required, ratio_range=DEFLECTION_RATIO_RANGE, min_preload=0.0):
+def enveloping_line(lift, required, ratio_range=DEFLECTION_RATIO_RANGE, min_preload=0.0) -> tuple[float, float]:
     """The tightest straight spring characteristic above a required spring-force curve.
 
     Parameters
@@ -143,7 +143,7 @@ def enveloping_line(lift, required, ratio_range=DEFLECTION_RATIO_RANGE, min_prel
     return float(preload), float((ratio - 1.0) * preload / h)
 
 
-def gas_opening_force(throat_diameter, port_pressure, cylinder_pressure):
+def gas_opening_force(throat_diameter, port_pressure, cylinder_pressure) -> float:
     """Gas force that tends to open a closed valve, f_g (p_port - p_cyl), zero if negative [N].
 
     Parameters
@@ -204,7 +204,7 @@ class Characteristic:
         outer = Characteristic(self.preload - inner.preload, self.rate - inner.rate, self.lift)
         return outer, inner
 
-def enveloping_lines(lift, required, ratios, min_preload=0.0):
+def enveloping_lines(lift, required, ratios, min_preload=0.0) -> tuple[np.ndarray, np.ndarray]:
     """For each deflection ratio r = f_max / f_min the lowest straight line of that ratio above a requirement.
 
     Parameters

@@ -14,7 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .candidates import INSTALLED_TO_LIFT_MAX, SpringMaterial, evaluate_spring, evaluate_springs
+from .candidates import INSTALLED_TO_LIFT_MAX, SpringDesign, SpringMaterial, evaluate_spring, evaluate_springs
 from .formulas import SHAPE_FACTOR_TABLE, natural_frequency, shape_factor_table
 from .requirement import DEFLECTION_RATIO_RANGE, Characteristic
 
@@ -65,7 +65,7 @@ class NoSpringFits(ValueError):
                 f"mm; the range makes D = {low * 1e3:g}...{high * 1e3:g} mm (index 3...12)")
 
 
-def wire_series(wire_range_mm=WIRE_RANGE_MM, step_mm=WIRE_STEP_MM):
+def wire_series(wire_range_mm=WIRE_RANGE_MM, step_mm=WIRE_STEP_MM) -> np.ndarray:
     """Wire diameters [m] from ``wire_range_mm[0]`` to ``wire_range_mm[1]`` every ``step_mm``.
 
     >>> [round(float(d) * 1e3, 1) for d in wire_series((2.8, 3.2))]
@@ -76,7 +76,7 @@ def wire_series(wire_range_mm=WIRE_RANGE_MM, step_mm=WIRE_STEP_MM):
     return np.round(low + step_mm * np.arange(count + 1), 9) * 1e-3
 
 
-def feasible_mean_diameters(wire_range_mm=WIRE_RANGE_MM):
+def feasible_mean_diameters(wire_range_mm=WIRE_RANGE_MM) -> tuple[float, float]:
     """Mean diameters D [m] some wire of the range can make: D/d within the shape-factor table (3...12)."""
     index = SHAPE_FACTOR_TABLE[0]
     return index[0] * min(wire_range_mm) * 1e-3, index[-1] * max(wire_range_mm) * 1e-3
@@ -244,7 +244,7 @@ def _best(found):
     return found[k], int(np.argmax(key[k])), 0
 
 
-def design_spring(required, throat_diameter, camshaft_speed, options=SpringOptions(), **limits):
+def design_spring(required, throat_diameter, camshaft_speed, options=SpringOptions(), **limits) -> tuple[SpringDesign, int, int]:
     """The lightest spring that passes every check for the lines ``required``.
 
     Parameters
@@ -337,7 +337,7 @@ def _joined(outer, inner, options, lift, chosen="passed"):
     return None if best is None else (best[1], best[2], count)
 
 
-def design_pair(preloads, rates, lift, throat_diameter, camshaft_speed, options):
+def design_pair(preloads, rates, lift, throat_diameter, camshaft_speed, options) -> tuple[dict[str, SpringDesign], int, int]:
     """The lightest nested pair: the outer spring takes 1 - s of each line, the inner spring s (eqs. 5.10-5.14).
 
     Both kinds are searched over the whole grid (the inner one over D = 0.3...0.9 d_g), each
@@ -389,7 +389,7 @@ def design_pair(preloads, rates, lift, throat_diameter, camshaft_speed, options)
     return {"outer": chosen, "inner": inner}, 0, tried + n_tried
 
 
-def design_springs(requirement, throat_diameter, camshaft_speed, options=SpringOptions()):
+def design_springs(requirement, throat_diameter, camshaft_speed, options=SpringOptions()) -> Search:
     """The lightest spring (or nested pair) of ``options`` for a requirement, over the lines of every allowed
     deflection ratio (:meth:`Requirement.lines`).
 

@@ -17,7 +17,7 @@ import math
 import numpy as np
 
 from .. import strength
-from ..checks import check
+from ..checks import Check, check
 from ..numerics import extremum
 from ..units import DEG, MM
 
@@ -90,7 +90,7 @@ class Limits:
         return cls(**{**base, **kw})
 
 
-def pressure_angle(design, limit):
+def pressure_angle(design, limit) -> Check | None:
     """Largest pressure angle of a roller follower against ``limit`` [rad]; None for a flat follower.
 
     References
@@ -103,7 +103,7 @@ def pressure_angle(design, limit):
                  source=SOURCE_SYNTHESIS, severity="failure")
 
 
-def concave_radius(design, wheel_radius):
+def concave_radius(design, wheel_radius) -> Check | None:
     """The grinding wheel against the concave stretches of a roller follower's cam: wheel radius / |R_min| <= 1.
 
     Parameters
@@ -130,7 +130,7 @@ def concave_radius(design, wheel_radius):
                  severity="failure", note="no concave stretch" if radius is None else "")
 
 
-def spring_reserve_value(design, preload=None, rate=None):
+def spring_reserve_value(design, preload=None, rate=None) -> float:
     """Smallest ratio of the spring force to the train's inertia force where the valve decelerates.
 
     Parameters
@@ -159,13 +159,13 @@ def spring_reserve_value(design, preload=None, rate=None):
     return float(np.min(force[loaded] / inertia[loaded]))
 
 
-def spring_reserve(design, low, preload=None, rate=None):
+def spring_reserve(design, low, preload=None, rate=None) -> Check:
     """:func:`spring_reserve_value` against the smallest reserve ``low``."""
     return check("synthesis.spring_reserve", spring_reserve_value(design, preload, rate), low=low,
                  source=SOURCE_SYNTHESIS, severity="failure")
 
 
-def acceleration_band(design, low=None, high=None):
+def acceleration_band(design, low=None, high=None) -> list[Check]:
     """Largest and smallest tappet acceleration at the rated speed against a band [m/s^2]: two checks."""
     cam = design.cam
     out = []
@@ -177,7 +177,7 @@ def acceleration_band(design, low=None, high=None):
     return out
 
 
-def worst_cam_force(spring_force, mass, rocker_ratio, top_acceleration):
+def worst_cam_force(spring_force, mass, rocker_ratio, top_acceleration) -> np.ndarray:
     """The largest cam force over the engine speeds from standstill up to a top speed [N].
 
     Parameters
@@ -200,7 +200,7 @@ def worst_cam_force(spring_force, mass, rocker_ratio, top_acceleration):
     return strength.cam_force(spring_force, mass * rocker_ratio * np.clip(top_acceleration, 0.0, None), rocker_ratio)
 
 
-def contact_stress_value(design, width, modulus=strength.STEEL_MODULUS, top=1.0):
+def contact_stress_value(design, width, modulus=strength.STEEL_MODULUS, top=1.0) -> float | np.ndarray:
     """Largest Hertz stress between cam and follower along the open event [Pa], refined on the contour.
 
     Parameters
@@ -236,14 +236,14 @@ def contact_stress_value(design, width, modulus=strength.STEEL_MODULUS, top=1.0)
     return extremum(stress, edges, "max")[1]
 
 
-def contact_stress(design, high, width, modulus=strength.STEEL_MODULUS, top=1.0):
+def contact_stress(design, high, width, modulus=strength.STEEL_MODULUS, top=1.0) -> Check:
     """:func:`contact_stress_value` against the allowable ``high`` [Pa]."""
     return check("synthesis.contact_stress", contact_stress_value(design, width, modulus, top), high=high, unit="MPa",
                  source=SOURCE_MANUAL + ", eqs. (7.4)-(7.5)", severity="failure",
                  note=f"cam width {width / MM:.4g} mm, from standstill to {top:.4g} x the rated speed")
 
 
-def rho_min(design, low):
+def rho_min(design, low) -> Check:
     """Smallest convex profile radius of the cam against ``low`` [m], refined on the contour (the profile stage's).
 
     A roller follower's cam needs it as a flat follower's does: at a radius near zero the cam is pointed (and at zero
@@ -257,7 +257,7 @@ def rho_min(design, low):
                  severity="failure")
 
 
-def ramp_velocity(design, band):
+def ramp_velocity(design, band) -> Check | None:
     """Tappet velocity analogue at the end of the ramp dh/dphi [m/rad] against ``band`` (shown in mm/deg);
     None for a law without a ramp."""
     law = design.law
@@ -267,13 +267,13 @@ def ramp_velocity(design, band):
     return check("ramp.end_velocity", v, *band, unit="mm/deg", source=SOURCE_MANUAL + ", eq. (2.1)")
 
 
-def seating_velocity(design, band):
+def seating_velocity(design, band) -> Check:
     """The valve's seating velocity at the rated speed against ``band`` [m/s] (a configurable default)."""
     return check("synthesis.seating_velocity", design.cam.seating_velocity, *band, unit="m/s",
                  source="a configurable default (no primary source)")
 
 
-def piston_gap(design, low):
+def piston_gap(design, low) -> Check | None:
     """Smallest valve-piston gap over the open event against ``low`` [m]; None without ``piston_gap_tdc_mm``.
 
     References
@@ -286,7 +286,7 @@ def piston_gap(design, low):
                  source="Shang Hanji (1988), eqs. (2.13)-(2.14)", severity="failure", strict_low=True)
 
 
-def no_jump(design, factor):
+def no_jump(design, factor) -> Check | None:
     """No follower separation up to ``factor`` x the rated speed, from the design's ``[dynamics]`` speed sweep.
 
     Returns
@@ -312,7 +312,7 @@ def no_jump(design, factor):
                  note="" if jumps else "no separation in the swept range: its top speed")
 
 
-def constraints(design, limits=Limits()):
+def constraints(design, limits=Limits()) -> list[Check]:
     """Every constraint of ``limits`` that applies to ``design``: a list of :class:`~valvetrain.checks.Check`.
 
     Examples
@@ -331,7 +331,7 @@ def constraints(design, limits=Limits()):
     return [c for c in out if c is not None]
 
 
-def worst_margin(checks):
+def worst_margin(checks) -> float:
     """The smallest :attr:`~valvetrain.checks.Check.margin` of ``checks`` (+inf for none)."""
     return min((c.margin for c in checks), default=math.inf)
 

@@ -42,6 +42,7 @@ from pydantic import BaseModel, ValidationError
 from scipy import optimize
 
 from .. import flow, springs
+from ..checks import Check
 from ..design import run as run_design
 from ..design.drive import spring_options
 from ..design.dynamics import SPEED_RANGE, build_train, dynamics_stage
@@ -66,7 +67,7 @@ OBJECTIVES = {
 """Objective name -> (field of the flow stage's result, display unit, what it is)."""
 
 
-def shown_objective(objective, value):
+def shown_objective(objective, value) -> float:
     """An objective's value (SI) in its display unit (:data:`OBJECTIVES`)."""
     return to_display(value, OBJECTIVES[objective][1])
 
@@ -168,7 +169,7 @@ def _ramp_and_spring(cam):
     return out
 
 
-def default_variables(valve, engine):
+def default_variables(valve, engine) -> list[Variable]:
     """The default design variables of a valve's cam law (a list of :class:`Variable`).
 
     Parameters
@@ -203,7 +204,7 @@ def default_variables(valve, engine):
     return out + _ramp_and_spring(cam) if cam.varies_ramp_and_spring else out
 
 
-def parse_variables(items):
+def parse_variables(items) -> list[Variable]:
     """Variables from ``KEY=LOW,HIGH`` texts (``cam.phi1_deg=20,35``).
 
     Raises
@@ -226,7 +227,7 @@ def parse_variables(items):
     return unique_variables(out)
 
 
-def unique_variables(variables):
+def unique_variables(variables) -> list[Variable]:
     """``variables`` (a list of :class:`Variable`) with each key once.
 
     Raises
@@ -242,7 +243,7 @@ def unique_variables(variables):
     return list(variables)
 
 
-def check_bounds(section, name, variables):
+def check_bounds(section, name, variables) -> None:
     """Refuse bounds of a variable outside the allowed range of its key.
 
     Parameters
@@ -290,7 +291,7 @@ def _relaxed(c, notes):
 
 
 def design_limits(design, wheel_radius=None, no_jump_factor=None, ramp_varied=True, cam_width=None,
-                  seating_velocity=None, top_speed=1.0):
+                  seating_velocity=None, top_speed=1.0) -> tuple[Limits, list[str]]:
     """The limits of a design's own checks and of the synthesis, and notes on how they were set.
 
     Parameters
@@ -816,7 +817,7 @@ def _least(values, starts):
     return least, hits[np.searchsorted(hits, starts)] - starts
 
 
-def polydyne_fullness(law, exponents=(10, 18, 26, 34)):
+def polydyne_fullness(law, exponents=(10, 18, 26, 34)) -> float:
     """Fullness of the polydyne (2, p, q, r, s) with the same lift, cosine ramp of the same height and end velocity
     and the same main angle as a power-polynomial ``law``, on the same definition (tappet lift over the valve-open
     part): the serial-type reference of the comparison.
@@ -831,7 +832,7 @@ def polydyne_fullness(law, exponents=(10, 18, 26, 34)):
                          poly.breakpoints)
 
 
-def final_checks(design, spec, limits, scale=1.0, search_spring=None):
+def final_checks(design, spec, limits, scale=1.0, search_spring=None) -> list[Check]:
     """Every constraint of ``limits`` on a full design, and the design's own failures.
 
     Parameters
@@ -899,7 +900,7 @@ def _inside(x, bounds):
 
 
 def optimize_valve(spec, valve=None, variables=None, objective="fullness", wheel_radius=None, no_jump_factor=None,
-                   seed=1, maxiter=60, popsize=12, progress=None, cam_width=None, seating_velocity=None):
+                   seed=1, maxiter=60, popsize=12, progress=None, cam_width=None, seating_velocity=None) -> Result:
     """Maximise the fullness or the time-area of one valve's cam under its limits.
 
     Parameters
@@ -1049,7 +1050,7 @@ def _best_designed(problem, spec, valve, limits, spring, floor):
     return None, nearest
 
 
-def optimum_spec_text(spec, valve, section, values):
+def optimum_spec_text(spec, valve, section, values) -> str:
     """The specification file of ``spec`` with the valve section ``section`` (dict) of the optimum (TOML text).
 
     The specification is written back from its validated keys (those the user gave), so ``valvetrain run``

@@ -6,10 +6,13 @@ scripts and styles come from the installed Bokeh package (no CDN, no web fonts):
 Nothing is written to disk except what the user downloads.
 """
 
+from collections.abc import Callable
+from typing import Any
+
 LOOPBACK = "127.0.0.1"
 
 
-def make_document(text, source_dir):
+def make_document(text, source_dir) -> Callable[[Any], None]:
     """The function that builds the page of one tab: a :class:`~valvetrain.web.app.Designer` on a new session."""
     from .app import Designer
     from .session import Session
@@ -21,7 +24,7 @@ def make_document(text, source_dir):
     return build
 
 
-def server(text=None, source_dir=None, host=LOOPBACK, port=5006):
+def server(text=None, source_dir=None, host=LOOPBACK, port=5006) -> Any:
     """A Bokeh server of the designer (not started), on TOML text (the built-in example without it).
 
     Raises

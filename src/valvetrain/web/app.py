@@ -53,7 +53,7 @@ PLOTS = {"lift": ("angle", "lift"), "velocity": ("angle", "velocity"), "accelera
 """Each plot's source and column of ordinates."""
 
 
-def per_degree(values, order, omega):
+def per_degree(values, order, omega) -> np.ndarray:
     """A derivative of the lift at the rated speed (m/s, m/s², m/s³) in mm per camshaft degree to the ``order``
     (:func:`valvetrain.units.per_cam_degree`), from the series' list."""
     return per_cam_degree(np.array(values, dtype=float), order, omega)

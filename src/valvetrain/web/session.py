@@ -9,6 +9,7 @@ import copy
 from dataclasses import dataclass, field
 import tomllib
 import typing
+from typing import Any
 
 import numpy as np
 from pydantic import BaseModel
@@ -57,7 +58,7 @@ def _unwrapped(annotation):
     return annotation, False
 
 
-def field_of(path, info, value):
+def field_of(path, info, value) -> Field:
     """The :class:`Field` of a pydantic model field (its FieldInfo) at a dotted key, with the document's value."""
     annotation, optional = _unwrapped(info.annotation)
     metadata = list(info.metadata)
@@ -101,7 +102,7 @@ def _section_fields(document, path, model):
     return out
 
 
-def form(document):
+def form(document) -> list[tuple[str, list[Field]]]:
     """The specification panel of a document: ``[(section path, [Field, ...]), ...]``, every scalar key of the
     engine and of each valve's sections, with the document's values (a key it lacks shows the model's default)."""
     out = []
@@ -114,7 +115,7 @@ def form(document):
     return out
 
 
-def parse_value(f, text):
+def parse_value(f, text) -> Any:
     """The value of a :class:`Field` from what the page sent: a number, an option, or TOML value text; an empty
     input of an optional key is ``None`` (the key removed)."""
     if f.kind in ("float", "int"):
@@ -131,14 +132,14 @@ def parse_value(f, text):
         return str(text)
 
 
-def value_text(value):
+def value_text(value) -> str:
     """A value as the text of an input: a TOML value (``"VDSiCr"``, ``[2.0, 7.0]``), empty for None."""
     if value is None:
         return ""
     return tomli_w.dumps({"v": value}).removeprefix("v = ").strip()
 
 
-def without_nones(node):
+def without_nones(node) -> Any:
     """A document with the keys whose value is None removed (an optional key left empty)."""
     if isinstance(node, dict):
         return {k: without_nones(v) for k, v in node.items() if v is not None}
@@ -159,7 +160,7 @@ def _interp(series, key, x):
     return float(np.interp(x, series["cam_deg"], series[key]))
 
 
-def handles(document, spec, name, series):
+def handles(document, spec, name, series) -> list[Handle]:
     """The handles of valve ``name``: the nose lift (on the lift plot, at the nose) and, on the acceleration plot,
     the points of its law's shape on the opening flank (the closing flank of a symmetric cam follows by the law):
 
@@ -214,7 +215,7 @@ POSITION_RANGE = (0.02, 0.98)
 """The range a peak position (a fraction of its part) is dragged in: at 0 or 1 the two pieces of a part become one."""
 
 
-def moved(document, spec, name, handle, x, y, series):
+def moved(document, spec, name, handle, x, y, series) -> dict[str, Any]:
     """The keys a drag of ``handle`` to (x, y) sets: ``{dotted key: value}``; x [cam deg from the nose], y [mm] on
     the lift plot, [m/s²] (valve side, at the rated speed) on the acceleration plot; ``series`` the design's.
 
