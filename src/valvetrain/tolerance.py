@@ -16,6 +16,7 @@ import hashlib
 import json
 import math
 from pathlib import Path
+from typing import Any, Optional
 
 import numpy as np
 from scipy import stats
@@ -44,7 +45,7 @@ class ToleranceError(ValueError):
     """A tolerance that cannot be sampled; the message is one line naming the key."""
 
 
-def nominal(spec, key):
+def nominal(spec, key) -> float:
     """The value of a dotted ``key`` in a validated specification (its default where the file leaves it out).
 
     Raises
@@ -63,7 +64,7 @@ def nominal(spec, key):
     return float(node)
 
 
-def sample_range(tolerance, centre):
+def sample_range(tolerance, centre) -> tuple[float, float]:
     """The values a tolerance can take, ``(low, high)`` in the key's unit, about its nominal ``centre``.
 
     Uniform: ``centre -+ half_range`` or [``low``, ``high``]; normal: [``low``, ``high``] where given, else
@@ -75,7 +76,7 @@ def sample_range(tolerance, centre):
             centre + cut if tolerance.high is None else tolerance.high)
 
 
-def check_tolerances(document, spec):
+def check_tolerances(document, spec) -> list[float]:
     """The nominal values of the tolerances of ``spec``; refuse a key the specification does not know, a key given
     twice, and a sample range whose ends the key refuses (:func:`valvetrain.study.check_grid`).
 
@@ -104,7 +105,7 @@ def check_tolerances(document, spec):
     return centres
 
 
-def unit_samples(n, dimensions, method, seed):
+def unit_samples(n, dimensions, method, seed) -> np.ndarray:
     """``n`` points of the unit hypercube, ``(n, dimensions)``: independent uniform numbers (``"mc"``) or a Latin
     hypercube (``"lhs"``, McKay, Beckman and Conover (1979)), from :class:`numpy.random.Generator` seeded with
     ``seed``."""
@@ -114,7 +115,7 @@ def unit_samples(n, dimensions, method, seed):
     return rng.random((n, dimensions))
 
 
-def inverse_cdf(u, tolerance, centre):
+def inverse_cdf(u, tolerance, centre) -> np.ndarray:
     """The values of a tolerance at the probabilities ``u`` (its inverse distribution function), key's unit.
 
     Notes
@@ -135,21 +136,21 @@ def inverse_cdf(u, tolerance, centre):
     return centre + s * stats.norm.ppf(a + u * (b - a))
 
 
-def draw(spec, centres, n, method, seed):
+def draw(spec, centres, n, method, seed) -> np.ndarray:
     """The samples of a study, ``(n, tolerances)`` in the keys' units, the same for the same arguments."""
     u = unit_samples(n, len(centres), method, seed)
     return np.column_stack([inverse_cdf(u[:, j], t, c)
                             for j, (t, c) in enumerate(zip(spec.tolerances, centres, strict=True))])
 
 
-def check_id(c):
+def check_id(c) -> str:
     """The name of a check in a tolerance study: ``VALVE:CODE`` (or ``CODE`` of the engine's), its parameters after
     it in brackets (``intake:spring.safety_factor[spring=outer]``)."""
     params = ",".join(f"{k}={v}" for k, v in c.params)
     return f"{c.valve + ':' if c.valve else ''}{c.code}{f'[{params}]' if params else ''}"
 
 
-def split_id(cid):
+def split_id(cid) -> dict[str, Any]:
     """The ``valve`` (None: the engine's), ``code`` and ``params`` (dict) of a :func:`check_id`."""
     valve, _, rest = cid.rpartition(":")
     code, _, params = rest.partition("[")
@@ -161,7 +162,7 @@ def _finite(x):
     return float(x) if math.isfinite(x) else None
 
 
-def evaluate_sample(document):
+def evaluate_sample(document) -> dict[str, Any]:
     """Validate and design one sample; its record.
 
     Returns
@@ -183,7 +184,7 @@ def evaluate_sample(document):
     return {"status": "ok", "message": "", "checks": checks, "headlines": headlines}
 
 
-def fingerprint(document, method, seed, samples):
+def fingerprint(document, method, seed, samples) -> str:
     """What makes a study's records: the document (its tolerances too), the method, the seed and the samples (a
     hash, hex)."""
     text = json.dumps({"document": document, "method": method, "seed": seed, "samples": samples.tolist()},
@@ -258,7 +259,7 @@ def _line(index, record):
     return json.dumps({"index": index, "record": record}, allow_nan=False) + "\n"
 
 
-def wilson(failures, n, z=CONFIDENCE_Z):
+def wilson(failures, n, z=CONFIDENCE_Z) -> tuple[float, float]:
     """The Wilson score interval of a binomial proportion, ``(low, high)``.
 
     Notes
@@ -279,7 +280,7 @@ def wilson(failures, n, z=CONFIDENCE_Z):
     return max(0.0, centre - half), min(1.0, centre + half)
 
 
-def distribution(values):
+def distribution(values) -> Optional[dict[str, Any]]:
     """Quantiles, mean, standard deviation and histogram of the finite ``values`` (None where none)."""
     x = np.asarray([v for v in values if v is not None], dtype=float)
     if x.size == 0:
@@ -294,7 +295,7 @@ def distribution(values):
             "histogram": {"edges": edges.tolist(), "counts": counts.tolist()}}
 
 
-def sensitivities(samples, values, keys):
+def sensitivities(samples, values, keys) -> dict[str, Optional[float]]:
     """Spearman's rank correlation of each tolerance with ``values`` (None where the values do not vary or are
     missing), over the samples whose value is a number."""
     ok = np.array([v is not None for v in values])
@@ -307,7 +308,7 @@ def sensitivities(samples, values, keys):
     return out
 
 
-def summary(spec, centres, samples, records, method, seed):
+def summary(spec, centres, samples, records, method, seed) -> dict[str, Any]:
     """The results of a study (``tolerance.json``): the tolerances, per check its margin's distribution, its
     failures, probability of failure with the Wilson 95 % interval and the rank correlations of the tolerances with
     its margin; per valve with dynamics the distribution of the headlines; the refused samples."""

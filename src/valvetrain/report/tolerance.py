@@ -11,7 +11,7 @@ WIDTH, HEIGHT = 320, 120
 """Size of a histogram, SVG pixels."""
 
 
-def histogram_svg(histogram, mark=None):
+def histogram_svg(histogram, mark=None) -> str:
     """An SVG bar chart of a histogram (``edges``, ``counts``), with a vertical line at ``mark`` (the bound: margin
     0) where it lies in the range."""
     edges, counts = histogram["edges"], histogram["counts"]
@@ -31,13 +31,13 @@ def histogram_svg(histogram, mark=None):
     return f'<svg width="{WIDTH}" height="{HEIGHT}" viewBox="0 0 {WIDTH} {HEIGHT}">{bars}{line}{labels}</svg>'
 
 
-def check_name(entry, lang):
+def check_name(entry, lang) -> str:
     """A check of the study in ``lang``: the valve, then the check's text from the catalogue."""
     name = check_text(entry["code"], entry["params"], lang)
     return f"{entry['valve']}: {name}" if entry["valve"] else name
 
 
-def report_html(result, lang="en"):
+def report_html(result, lang="en") -> str:
     """The HTML text of the report of a tolerance study's ``result`` (:func:`valvetrain.tolerance.summary`)."""
     t = TOLERANCE_TEXT[lang]
     rows = [f"<tr><td>{escape(x['key'])}</td><td>{t[x['distribution']]}</td><td>{x['nominal']:.6g}</td>"
