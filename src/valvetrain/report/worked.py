@@ -116,17 +116,25 @@ def time_area_lines(flow, cam, engine, count, lift_table, lang="en") -> list[dic
 
 
 def law_lines(law, cam, lang="en") -> list[dict[str, Any]]:
-    """The coefficients of a Kurz law from its segments (Valve-train practical works (n.d.), work 2, eqs.
-    (2.23)-(2.34)); no lines for another law (its coefficients are the table's).
+    """The coefficients of the valve's law with its numbers: a Kurz law's from its segments (Valve-train practical
+    works (n.d.), work 2, eqs. (2.23)-(2.34)), a polydyne's from its exponents (work 3, eqs. (3.4)-(3.8)), a
+    power-polynomial law's ramp and negative amplitude (UkrSURT Proceedings (2019), reconstructed); no lines for
+    another law (its coefficients are the table's).
 
     Parameters
     ----------
     law : valvetrain.laws.base.LiftLaw
-        The valve's law: a Kurz law's Phi1, Phi2, Phi3 [rad camshaft], Z and w' [m/rad].
+        The valve's law: a Kurz law's Phi1, Phi2, Phi3 [rad camshaft], Z and w' [m/rad]; a polydyne's ramp height
+        h_0 [m].
     cam : valvetrain.design.valve.CamResult
-        The law stage (tappet lift h_T max [mm], the coefficients [mm, rad]).
+        The law stage (tappet lift h_T max [mm], the coefficients [mm, rad, deg; dimensionless C of a polydyne]).
     """
-    if getattr(law, "name", None) != "kurz":
+    name = getattr(law, "name", None)
+    if name == "polydyne":
+        return _polydyne_lines(law, cam, lang)
+    if name == "power_polynomial":
+        return _power_polynomial_lines(law, cam, lang)
+    if name != "kurz":
         return []
     c = shown_value(cam, "coefficients")
     h = shown_value(cam, "tappet_lift")
@@ -149,6 +157,65 @@ def law_lines(law, cam, lang="en") -> list[dict[str, Any]]:
         _line("c_32", "−(2 c_11 − w′) / K_2", ("−(2 × {} − {}) / {}", [(c["c11"], "mm/rad"), (w, "mm/rad"),
                                                                       (c["K2"], "rad")]), c["c32"], "mm/rad2", lang),
     ]
+
+
+def _polydyne_lines(law, cam, lang):
+    """C_2 ... C_s of a polydyne from p, q, r, s (work 3, eqs. (3.4)-(3.8)) without a ramp; none with a ramp (the
+    coefficients solve a 5x5 system, no closed form; their check h_0 = h_nose (1 + sum C) loses its figures to the
+    cancellation of the sum about -1)."""
+    if law.ramp_height > 0.0:
+        return []
+    c = shown_value(cam, "coefficients")
+    p, q, r, s = (c[k] for k in "pqrs")
+    return [
+        _line("C_2", "−p q r s / ((p − 2)(q − 2)(r − 2)(s − 2))",
+              ("−{} × {} × {} × {} / (({} − 2) × ({} − 2) × ({} − 2) × ({} − 2))",
+               [(x, "") for x in (p, q, r, s, p, q, r, s)]), c["C2"], "", lang),
+        _line("C_p", "2 q r s / ((p − 2)(q − p)(r − p)(s − p))",
+              ("2 × {} × {} × {} / (({} − 2) × ({} − {}) × ({} − {}) × ({} − {}))",
+               [(x, "") for x in (q, r, s, p, q, p, r, p, s, p)]), c["Cp"], "", lang),
+        _line("C_q", "−2 p r s / ((q − 2)(q − p)(r − q)(s − q))",
+              ("−2 × {} × {} × {} / (({} − 2) × ({} − {}) × ({} − {}) × ({} − {}))",
+               [(x, "") for x in (p, r, s, q, q, p, r, q, s, q)]), c["Cq"], "", lang),
+        _line("C_r", "2 p q s / ((r − 2)(r − p)(r − q)(s − r))",
+              ("2 × {} × {} × {} / (({} − 2) × ({} − {}) × ({} − {}) × ({} − {}))",
+               [(x, "") for x in (p, q, s, r, r, p, r, q, s, r)]), c["Cr"], "", lang),
+        _line("C_s", "−2 p q r / ((s − 2)(s − p)(s − q)(s − r))",
+              ("−2 × {} × {} × {} / (({} − 2) × ({} − {}) × ({} − {}) × ({} − {}))",
+               [(x, "") for x in (p, q, r, s, s, p, s, q, s, r)]), c["Cs"], "", lang),
+    ]
+
+
+def _power_polynomial_lines(law, cam, lang):
+    """The ramp's A_0, B_0, C_0 from a(b) = 0, v(b) = v_qb, S(b) = S_b solved in closed form (A_0 = 12 S_b/phi_0^2
+    - 6 v_qb/phi_0, B_0 = 30 v_qb/phi_0 - 48 S_b/phi_0^2, C_0 = 36 S_b/phi_0^2 - 24 v_qb/phi_0) and, for the R2
+    reconstruction, the negative amplitude a_g = -v_e / (phi_2 (x_g I(r, s) + (1 - x_g) I(t, u))),
+    I(a, b) = (b/(a + 1) - a/(b + 1)) / (b - a) (UkrSURT Proceedings (2019), reconstructed in
+    :mod:`valvetrain.laws.power_polynomial`).  phi_0 is substituted in degrees times pi/180: the terms of B_0 nearly
+    cancel, and a 4-figure radian would not give its result."""
+    c = shown_value(cam, "coefficients")
+    sb, vqb, phi0 = shown_value(cam, "ramp_height"), to_display(law.v_qb, "mm/rad"), shown_value(cam, "ramp_angle")
+    lines = [
+        _line("A_0", "12 S_b / φ_0² − 6 v_qb / φ_0", ("12 × {} / ({} × π/180)² − 6 × {} / ({} × π/180)",
+                                                   [(sb, "mm"), (phi0, "deg"), (vqb, "mm/rad"), (phi0, "deg")]),
+              c["A0_mm_rad2"], "mm/rad2", lang),
+        _line("B_0", "30 v_qb / φ_0 − 48 S_b / φ_0²", ("30 × {} / ({} × π/180) − 48 × {} / ({} × π/180)²",
+                                                    [(vqb, "mm/rad"), (phi0, "deg"), (sb, "mm"), (phi0, "deg")]),
+              c["B0_mm_rad2"], "mm/rad2", lang),
+        _line("C_0", "36 S_b / φ_0² − 24 v_qb / φ_0", ("36 × {} / ({} × π/180)² − 24 × {} / ({} × π/180)",
+                                                    [(sb, "mm"), (phi0, "deg"), (vqb, "mm/rad"), (phi0, "deg")]),
+              c["C0_mm_rad2"], "mm/rad2", lang),
+    ]
+    if c["reconstruction"] != "R2":
+        return lines
+
+    integral = "({} / ({} + 1) − {} / ({} + 1)) / ({} − {})"
+    return lines + [_line(
+        "a_g", "−v_e / (φ_2 (x_g I(r, s) + (1 − x_g) I(t, u))), I(a, b) = (b/(a + 1) − a/(b + 1)) / (b − a)",
+        (f"−{{}} / ({{}} × ({{}} × {integral} + (1 − {{}}) × {integral}))", [
+            (c["v_e_mm_rad"], "mm/rad"), (law.phi2, "rad"), (c["x_g"], ""),
+            *((c[k], "") for k in ("s", "r", "r", "s", "s", "r")), (c["x_g"], ""),
+            *((c[k], "") for k in ("u", "t", "t", "u", "u", "t"))]), c["a_g_mm_rad2"], "mm/rad2", lang)]
 
 
 def spring_lines(spring, material=None, cam_speed=None, lang="en") -> list[dict[str, Any]]:
