@@ -269,7 +269,7 @@ def spring_lines(spring, material=None, cam_speed=None, lang="en") -> list[dict[
     return lines
 
 
-def strength_lines(parts, record, lift_table, follower, lang="en") -> list[dict[str, Any]]:
+def strength_lines(parts, record, lift_table, follower, lang="en", roller_radius=None) -> list[dict[str, Any]]:
     """The cam's contact stress at its worst point and the pushrod's buckling margin (Valve-train practical works
     (n.d.), eqs. (7.4)-(7.5), (7.8)-(7.10); Shang Hanji (1988), eq. 2.5), those the design checked.
 
@@ -279,29 +279,36 @@ def strength_lines(parts, record, lift_table, follower, lang="en") -> list[dict[
         The valve's ``[parts]`` inputs (cam width [mm], contact modulus [MPa], pushrod diameter, bore and length
         [mm] and modulus [MPa]).
     record : dict
-        The strength record (its checks, the worst speed [rpm] and angle [cam deg] of the contact stress, the
-        largest cam force per speed [N] and its angle [cam deg]).
+        The strength record (its checks, the angle [cam deg] of the largest contact stress and the cam force there
+        [N], the largest cam force [N]).
     lift_table : dict
         The valve's lift table (``cam_deg`` [cam deg], ``rho_mm`` [mm]): the cam's radius at the worst point.
     follower : str
-        ``flat`` or ``roller``: the contact stress is worked for a flat follower (1/rho_2 = 0).
+        ``flat`` (1/rho_2 = 0) or ``roller`` (1/rho_2 = 1/r_r); no contact line for another follower.
+    roller_radius : float, optional
+        r_r, the roller's radius [mm] of a roller follower.
 
     Notes
     -----
-    The contact line is shown where the worst contact stress is at the angle of the largest cam force of its
-    speed (the only force the record holds): the case of a flat follower loaded hardest at the nose.
+    The contact line is worked at the angle of the largest contact stress with the cam force there; the profile's
+    radius is the lift table's interpolated to that angle (negative on a concave flank).
     """
     checks, lines = record["checks"], []
-    contact, per = checks.get("cam_contact_stress"), record["per_speed"]
-    if contact is not None and follower == "flat":
-        i = int(np.argmin(np.abs(np.asarray(per["speed_rpm"]) - record["cam_contact_stress_speed_rpm"])))
-        if np.isclose(per["cam_force_max_cam_deg"][i], record["cam_contact_stress_cam_deg"], atol=1e-6):
-            rho = float(np.interp(record["cam_contact_stress_cam_deg"], lift_table["cam_deg"], lift_table["rho_mm"]))
-            factor = strength.HERTZ_LINE
-            lines.append(_line("σ_к" if lang == "ru" else "σ_c", f"{number(factor, lang)} √(P E / (b ρ))", (
+    contact, force = checks.get("cam_contact_stress"), record.get("cam_contact_force_N")
+    if contact is not None and force is not None:
+        rho = float(np.interp(record["cam_contact_stress_cam_deg"], lift_table["cam_deg"], lift_table["rho_mm"]))
+        factor, symbol = strength.HERTZ_LINE, "σ_к" if lang == "ru" else "σ_c"
+        if follower == "flat":
+            lines.append(_line(symbol, f"{number(factor, lang)} √(P E / (b ρ))", (
                 "{} × √({} × {} / ({} × {}))",
-                [(factor, ""), (per["cam_force_max_N"][i], "N"), (parts["contact_modulus_MPa"], "MPa"),
-                 (parts["cam_width_mm"], "mm"), (rho, "mm")]), contact["value"], "MPa", lang))
+                [(factor, ""), (force, "N"), (parts["contact_modulus_MPa"], "MPa"), (parts["cam_width_mm"], "mm"),
+                 (rho, "mm")]), contact["value"], "MPa", lang))
+        elif follower in ("roller", "finger") and roller_radius:
+            lines.append(_line(symbol, f"{number(factor, lang)} √(P E (1/ρ + 1/r_рол) / b)" if lang == "ru" else
+                               f"{number(factor, lang)} √(P E (1/ρ + 1/r_r) / b)", (
+                "{} × √({} × {} × (1/{} + 1/{}) / {})",
+                [(factor, ""), (force, "N"), (parts["contact_modulus_MPa"], "MPa"), (rho, "mm"),
+                 (roller_radius, "mm"), (parts["cam_width_mm"], "mm")]), contact["value"], "MPa", lang))
     buckling = checks.get("pushrod_buckling_margin")
     if buckling is not None:
         big, bore, e, length = (parts[k] or 0.0 for k in (
