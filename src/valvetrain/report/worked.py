@@ -196,13 +196,13 @@ def _power_polynomial_lines(law, cam, lang):
     c = shown_value(cam, "coefficients")
     sb, vqb, phi0 = shown_value(cam, "ramp_height"), to_display(law.v_qb, "mm/rad"), shown_value(cam, "ramp_angle")
     lines = [
-        _line("A_0", "12 S_b / φ_0² − 6 v_qb / φ_0", ("12 × {} / ({} × π/180)² − 6 × {} / ({} × π/180)",
+        _line("A_0", "12 S_b / φ_0² − 6 v_b / φ_0", ("12 × {} / ({} × π/180)² − 6 × {} / ({} × π/180)",
                                                    [(sb, "mm"), (phi0, "deg"), (vqb, "mm/rad"), (phi0, "deg")]),
               c["A0_mm_rad2"], "mm/rad2", lang),
-        _line("B_0", "30 v_qb / φ_0 − 48 S_b / φ_0²", ("30 × {} / ({} × π/180) − 48 × {} / ({} × π/180)²",
+        _line("B_0", "30 v_b / φ_0 − 48 S_b / φ_0²", ("30 × {} / ({} × π/180) − 48 × {} / ({} × π/180)²",
                                                     [(vqb, "mm/rad"), (phi0, "deg"), (sb, "mm"), (phi0, "deg")]),
               c["B0_mm_rad2"], "mm/rad2", lang),
-        _line("C_0", "36 S_b / φ_0² − 24 v_qb / φ_0", ("36 × {} / ({} × π/180)² − 24 × {} / ({} × π/180)",
+        _line("C_0", "36 S_b / φ_0² − 24 v_b / φ_0", ("36 × {} / ({} × π/180)² − 24 × {} / ({} × π/180)",
                                                     [(sb, "mm"), (phi0, "deg"), (vqb, "mm/rad"), (phi0, "deg")]),
               c["C0_mm_rad2"], "mm/rad2", lang),
     ]
