@@ -167,23 +167,18 @@ def _polydyne_lines(law, cam, lang):
         return []
     c = shown_value(cam, "coefficients")
     p, q, r, s = (c[k] for k in "pqrs")
-    return [
-        _line("C_2", "−p q r s / ((p − 2)(q − 2)(r − 2)(s − 2))",
-              ("−{} × {} × {} × {} / (({} − 2) × ({} − 2) × ({} − 2) × ({} − 2))",
-               [(x, "") for x in (p, q, r, s, p, q, r, s)]), c["C2"], "", lang),
-        _line("C_p", "2 q r s / ((p − 2)(q − p)(r − p)(s − p))",
-              ("2 × {} × {} × {} / (({} − 2) × ({} − {}) × ({} − {}) × ({} − {}))",
-               [(x, "") for x in (q, r, s, p, q, p, r, p, s, p)]), c["Cp"], "", lang),
-        _line("C_q", "−2 p r s / ((q − 2)(q − p)(r − q)(s − q))",
-              ("−2 × {} × {} × {} / (({} − 2) × ({} − {}) × ({} − {}) × ({} − {}))",
-               [(x, "") for x in (p, r, s, q, q, p, r, q, s, q)]), c["Cq"], "", lang),
-        _line("C_r", "2 p q s / ((r − 2)(r − p)(r − q)(s − r))",
-              ("2 × {} × {} × {} / (({} − 2) × ({} − {}) × ({} − {}) × ({} − {}))",
-               [(x, "") for x in (p, q, s, r, r, p, r, q, s, r)]), c["Cr"], "", lang),
-        _line("C_s", "−2 p q r / ((s − 2)(s − p)(s − q)(s − r))",
-              ("−2 × {} × {} × {} / (({} − 2) × ({} − {}) × ({} − {}) × ({} − {}))",
-               [(x, "") for x in (p, q, r, s, s, p, s, q, s, r)]), c["Cs"], "", lang),
-    ]
+    lines = [_line("C_2", "−p q r s / ((p − 2)(q − 2)(r − 2)(s − 2))",
+                   ("−{} × {} × {} × {} / (({} − 2) × ({} − 2) × ({} − 2) × ({} − 2))",
+                    [(x, "") for x in (p, q, r, s, p, q, r, s)]), c["C2"], "", lang)]
+    for k in "pqrs":   # C_k = (-1)^(k's place + 1) 2 (product of the others) / ((k - 2) product of the differences)
+        others = [o for o in "pqrs" if o != k]
+        pairs = [(max(o, k), min(o, k)) for o in others]
+        sign = "−" if k in "qs" else ""
+        lines.append(_line(
+            f"C_{k}", f"{sign}2 {' '.join(others)} / (({k} − 2)" + "".join(f"({a} − {b})" for a, b in pairs) + ")",
+            (f"{sign}2 × {{}} × {{}} × {{}} / (({{}} − 2)" + " × ({} − {})" * 3 + ")",
+             [(c[x], "") for x in (*others, k, *(x for pair in pairs for x in pair))]), c[f"C{k}"], "", lang))
+    return lines
 
 
 def _power_polynomial_lines(law, cam, lang):
