@@ -38,11 +38,16 @@ class DecimalComma(ScalarFormatter):
         return super().get_offset().replace(".", ",")
 
 
+def every_axes(fig) -> list[Any]:
+    """The axes of ``fig`` and their secondary axes (``secondary_xaxis``: children of an axes, not in ``fig.axes``)."""
+    return [*fig.axes, *(child for ax in fig.axes for child in ax.child_axes)]
+
+
 def _localised(fig, t) -> Figure:
     """``fig`` with a :class:`DecimalComma` on every axis of plain numbers when ``t`` is the Russian texts (an axis of
     angles of a polar plot or a logarithmic one keeps its own formatter); the English figures keep the point."""
     if t["lang"] == "ru":
-        for ax in fig.axes:
+        for ax in every_axes(fig):
             for axis in (ax.xaxis, ax.yaxis):
                 if type(axis.get_major_formatter()) is ScalarFormatter:
                     axis.set_major_formatter(DecimalComma())
@@ -74,10 +79,10 @@ def jerk_impulses(ax, law, cam_speed, color="C3", label=None) -> None:
     draw_jerk_impulses(ax, impulse_steps(law, cam_speed), color, label)
 
 
-def draw_jerk_impulses(ax, steps, color="C3", label=None) -> None:
+def draw_jerk_impulses(ax, steps, color="C3", label=None, lang="en") -> None:
     """Mark jerk impulses on a jerk axis: an arrow at each acceleration step ``(angle [deg], step [m/s^2])``, up for
     a rise of the acceleration and down for a fall, reaching the edge of the axis (an impulse has no finite height),
-    with the step written beside it.  Call it after the curves are drawn (the arrows take the axis' extent)."""
+    with the step written beside it (by :func:`number`'s rule in ``lang``).  Call it after the curves are drawn (the arrows take the axis' extent)."""
     if not steps:
         return
     low, high = ax.get_ylim()
@@ -88,7 +93,7 @@ def draw_jerk_impulses(ax, steps, color="C3", label=None) -> None:
         tip = 0.92 * (high if size > 0.0 else low)
         ax.annotate("", xy=(x, tip), xytext=(x, 0.0), arrowprops={"arrowstyle": "-|>", "color": color, "lw": 1.2})
         ax.plot([x], [0.0], marker="o", color=color, ms=4, label=label if n == 0 else None)
-        ax.annotate(f"{size:+.4g}", xy=(x, tip), xytext=(3, 0), textcoords="offset points", fontsize=7, color=color,
+        ax.annotate(("+" if size > 0.0 else "") + number(size, lang), xy=(x, tip), xytext=(3, 0), textcoords="offset points", fontsize=7, color=color,
                     va="top" if size > 0.0 else "bottom")
 
 
@@ -129,7 +134,7 @@ def draw_kinematics(d, t) -> Figure:
         ax.axhline(0.0, color="0.5", lw=0.5)
         _boundary_lines(ax, d["boundaries_deg"])
     if d["impulses"]:
-        draw_jerk_impulses(axes[-1], d["impulses"])
+        draw_jerk_impulses(axes[-1], d["impulses"], lang=t["lang"])
         axes[-1].set_title(t["jerk_impulse"], fontsize=8, color="C3", loc="right")
     axes[1].legend(loc="upper right", fontsize=8)
     axes[-1].set_xlabel(t["cam_deg"])
@@ -717,7 +722,7 @@ def draw_grinding(d, t) -> Figure:
     right.set_xlabel(t["cam_deg"])
     right.set_ylabel(t["gr_error_um"])
     right.grid(alpha=0.3)
-    right.set_title(t["gr_error_title"].format(wear=d["wheel_wear_mm"]))
+    right.set_title(t["gr_error_title"].format(wear=number(d["wheel_wear_mm"], t["lang"])))
     fig.suptitle(f"{d['name']}: {t['gr_title']}")
     fig.subplots_adjust(left=0.08, right=0.98, bottom=0.12, top=0.87, wspace=0.16)
     return _localised(fig, t)
@@ -759,7 +764,7 @@ def draw_hydraulic(d, t) -> Figure:
         top.plot(x[cav], np.full(int(cav.sum()), d["vapour_MPa"]), "x", color="k", ms=3, label=t["hy_cavitation"])
     if d["lift_off"] is not None:
         angle, pressure, force = d["lift_off"]
-        top.plot(angle, pressure, "o", color="k", ms=5, label=t["hy_lift_off"].format(force=force))
+        top.plot(angle, pressure, "o", color="k", ms=5, label=t["hy_lift_off"].format(force=number(force, t["lang"])))
     top.set_ylabel(t["hy_pressure"])
     top.grid(alpha=0.3)
     top.legend(loc="upper right", fontsize=8)
