@@ -161,8 +161,36 @@ def test_a_pivot_needs_a_finger():
     text = EXAMPLE.read_text().replace("rocker_ratio = 1.6", "rocker_ratio = 1.0").replace(
         "[valves.intake.spring]", "[valves.intake.dynamics]\nspeeds = 4\n\n[valves.intake.lash_adjuster]\n\n"
         "[valves.intake.spring]")
-    with pytest.raises(SpecError, match="needs rocker_ratio > 1"):
+    with pytest.raises(SpecError, match="needs a lever ratio > 1"):
         run(parse_spec(text))
+
+
+FINGER = Path(__file__).resolve().parent.parent / "examples" / "modern-dohc-roller-finger.toml"
+
+
+@pytest.mark.parametrize("change, drop", [
+    # roller arm = pad arm: lever ratio ~1.016, motion ratio ~0.016, ~12 N on the adjuster (fuzz: stiffness inf)
+    (("finger_roller_arm_mm = 22.5", "finger_roller_arm_mm = 36.0"), None),
+    (("finger_roller_arm_mm = 22.5", "finger_roller_arm_mm = 36.0"), "[valves.intake.dynamics]\nspeeds = 40\n"),
+    # pad arm 18 mm < roller arm 22.5 mm: lever ratio < 1, the pivot moves against the valve; without [dynamics]
+    # the lash-adjuster stage alone met it (fuzz: stiffness inf)
+    (("finger_pad_arm_mm = 36.0", "finger_pad_arm_mm = 18.0"), "[valves.intake.dynamics]\nspeeds = 40\n"),
+])
+def test_an_adjuster_that_would_hold_the_valve_open_is_refused(change, drop):
+    """An adjuster whose own push F_s + p_s A is not below the largest force on it leaves its oil column uncompressed
+    (the secant stiffness F / sink was inf, found by tools/fuzz_specs.py) and would hold the valve open; a motion ratio
+    <= 0 cannot work at all.  By hand: F_s + p_s A = 15 + 0.3e6 x pi 0.009^2 / 4 = 15 + 19.085 = 34.085 N of the
+    example's adjuster, its supply's share 19.09 N."""
+    text = FINGER.read_text().replace(*change, 1)
+    if drop is not None:
+        text = text.replace(drop, "", 1)
+    with pytest.raises(SpecError) as err:
+        run(parse_spec(text))
+    words = str(err.value)
+    if "pad_arm" in change[0]:
+        assert 'valves.intake.lash_adjuster.location = "pivot" needs a lever ratio > 1' in words
+    else:
+        assert "valves.intake.lash_adjuster.plunger_spring_N = 15: with the supply's 19.09 N" in words
 
 
 def test_no_mechanical_clearance_band_with_an_adjuster():

@@ -183,6 +183,27 @@ WORKS = {
         authors="Heywood, J. B.",
         title="Internal Combustion Engine Fundamentals", kind="book", publisher="McGraw-Hill", place="New York",
         year="1988"),
+    "wilson1927": Work(
+        short="Wilson (1927)",
+        authors="Wilson, E. B.",
+        title="Probable inference, the law of succession, and statistical inference", kind="article",
+        publisher="Journal of the American Statistical Association, vol. 22, no. 158, pp. 209-212", year="1927"),
+    "newcombe1998": Work(
+        short="Newcombe (1998)",
+        authors="Newcombe, R. G.",
+        title="Two-sided confidence intervals for the single proportion: comparison of seven methods",
+        kind="article", publisher="Statistics in Medicine, vol. 17, no. 8, pp. 857-872", year="1998"),
+    "devroye1986": Work(
+        short="Devroye (1986)",
+        authors="Devroye, L.",
+        title="Non-Uniform Random Variate Generation", kind="book", publisher="Springer", place="New York",
+        year="1986"),
+    "mckay1979": Work(
+        short="McKay, Beckman and Conover (1979)",
+        authors="McKay, M. D.; Beckman, R. J.; Conover, W. J.",
+        title="A comparison of three methods for selecting values of input variables in the analysis of output "
+              "from a computer code", kind="article", publisher="Technometrics, vol. 21, no. 2, pp. 239-245",
+        year="1979"),
     "reinsch1967": Work(
         short="Reinsch (1967)",
         authors="Reinsch, C. H.",

@@ -1,4 +1,4 @@
-"""Command line: ``valvetrain run | sweep | optimize | study | validate | compare | serve | example``.
+"""Command line: ``valvetrain run | sweep | optimize | study | tolerance | validate | compare | serve | example``.
 
 Exit status: 0 on success, 2 for a specification or an output folder that cannot be used
 (one message per problem on standard error; nothing is written), 130 when interrupted
@@ -471,6 +471,92 @@ def study(file, grid_items, out, workers, scheduler, max_points, force):
     if stopped is not None:
         click.echo(f"error: {stopped}; the rows of the points not designed say 'not designed'", err=True)
         sys.exit(1)
+
+
+@main.command()
+@click.argument("file", type=click.Path(dir_okay=False))
+@click.option("--samples", required=True, type=click.IntRange(2, 10_000_000), help="Number of samples.")
+@click.option("--method", type=click.Choice(["mc", "lhs"]), default="mc", show_default=True,
+              help="Monte Carlo (mc) or Latin hypercube (lhs) sampling.")
+@click.option("--seed", default=0, show_default=True, type=click.IntRange(0), help="Seed of the samples.")
+@click.option("--out", "out", default="tolerance", show_default=True, type=click.Path(file_okay=False),
+              help="Folder of the study: new or empty, or the folder of an interrupted run of the same study, "
+                   "which is continued.")
+@click.option("--workers", default=1, show_default=True, type=click.IntRange(1, 1024),
+              help="Local processes evaluating the samples.")
+@click.option("--scheduler", default=None, metavar="ADDRESS",
+              help="Evaluate the samples on the Dask distributed cluster of this scheduler (tcp://host:8786); "
+                   "needs pip install 'valvetrain[dask]'.")
+@click.option("--lang", type=click.Choice(["en", "ru"]), default="en", show_default=True,
+              help="Language of the report.")
+def tolerance(file, samples, method, seed, out, workers, scheduler, lang):
+    """Sample FILE's [[tolerances]] and design every sample; per check the distribution of its margin, its
+    probability of failure and the tolerances that drive it.
+
+    The samples are the same for the same FILE, --samples, --method and --seed, whatever --workers or --scheduler.
+    The records are written to --out/records.jsonl as they arrive: run the same command again after an
+    interruption and only the samples missing are designed. Writes tolerance.json and the report tolerance.html
+    (tables and histograms) when every sample is designed."""
+    from pathlib import Path
+
+    from .export import json_text
+    from .report.tolerance import report_html
+    from .study import StudyStopped, evaluate, read_document, with_values
+    from .tolerance import (RECORDS, RecordFile, ToleranceError, check_tolerances, draw, evaluate_sample,
+                            fingerprint, summary)
+
+    spec = _load(file)
+    if scheduler is not None and workers > 1:
+        click.echo("error: --workers and --scheduler: give one (the cluster's workers evaluate the samples)", err=True)
+        sys.exit(2)
+    folder = Path(out)
+    ours = {RECORDS, "records.tmp", *(f"tolerance.{x}{t}" for x in ("json", "html") for t in ("", ".tmp"))}
+    if folder.exists() and (not folder.is_dir() or any(p.name not in ours for p in folder.iterdir())):
+        _fail_out(OutFolderError(f"{out}: holds files that valvetrain tolerance did not write; give a new or empty "
+                                 "folder"))
+    try:
+        document = read_document(file)
+        centres = check_tolerances(document, spec)
+        values = draw(spec, centres, samples, method, seed)
+        records_file = RecordFile(folder, fingerprint(document, method, seed, values))
+        done = records_file.read()
+    except ToleranceError as err:
+        click.echo(f"error: {err}", err=True)
+        sys.exit(2)
+    keys = [t.key for t in spec.tolerances]
+    todo = [i for i in range(samples) if i not in done]
+    progress = _Progress("samples")
+    start = time.monotonic()
+    records_file.open(done)
+    try:
+        records = evaluate((with_values(document, dict(zip(keys, map(float, values[i]), strict=True))) for i in todo),
+                           len(todo), workers, scheduler, lambda d, total: progress("tolerance", d, total),
+                           lambda j: f"sample {todo[j]}", evaluate_sample,
+                           lambda j, record: records_file.keep(todo[j], record))
+    except (ImportError, ConnectionError) as err:
+        click.echo(f"error: {err}", err=True)
+        sys.exit(2)
+    except StudyStopped as err:
+        click.echo(f"error: {err}; run the same command again to continue", err=True)
+        sys.exit(1)
+    finally:
+        progress.close()
+        records_file.close()
+    done.update(zip(todo, records, strict=True))
+    result = summary(spec, centres, values, [done[i] for i in range(samples)], method, seed)
+    for name, text in (("tolerance.json", json_text({"file": file, **result}) + "\n"),
+                       ("tolerance.html", report_html(result, lang))):
+        tmp = folder / f"{name}.tmp"
+        tmp.write_text(text, encoding="utf-8")
+        tmp.replace(folder / name)
+    backend = f"on {scheduler}" if scheduler else f"in {workers} processes" if workers > 1 else "in this process"
+    click.echo(f"{len(todo)} samples designed ({samples - len(todo)} kept from before) {backend}, "
+               f"{time.monotonic() - start:.1f} s; {result['refused']['samples']} refused")
+    failing = sorted(((c["probability"], cid) for cid, c in result["checks"].items() if c["failures"]), reverse=True)
+    for p, cid in failing:
+        low, high = result["checks"][cid]["confidence_95"]
+        click.echo(f"  {result['checks'][cid]['quantity']}: P(fail) = {p:.4g} (95 %: {low:.4g}...{high:.4g})")
+    click.echo(f"wrote {out}/ ({RECORDS}, tolerance.json, tolerance.html)")
 
 
 def _duration(seconds):

@@ -299,11 +299,11 @@ def heap_arrays():
     libc.mallopt(m_mmap_threshold, MMAP_THRESHOLD_BYTES)
 
 
-def evaluate_points(documents):
-    """:func:`evaluate_point` of each document of a list (one Dask task, :func:`heap_arrays` first): the list of
-    records."""
+def evaluate_points(documents, point=None):
+    """``point`` (:func:`evaluate_point`) of each document of a list (one Dask task, :func:`heap_arrays` first): the
+    list of records."""
     heap_arrays()
-    return [evaluate_point(d) for d in documents]
+    return [(point or evaluate_point)(d) for d in documents]
 
 
 def dask_chunk(total, threads):
@@ -311,7 +311,7 @@ def dask_chunk(total, threads):
     return max(1, min(DASK_MAX_CHUNK, math.ceil(total / (DASK_TASKS_PER_THREAD * max(threads, 1)))))
 
 
-def evaluate(documents, total, workers=None, scheduler=None, progress=None, describe=str):
+def evaluate(documents, total, workers=None, scheduler=None, progress=None, describe=str, point=None, keep=None):
     """Evaluate documents with :func:`evaluate_point`: serially, in local processes, or on a Dask cluster.
 
     The documents are taken from the iterable as they are needed (a few per worker at a time), so a large study
@@ -332,6 +332,11 @@ def evaluate(documents, total, workers=None, scheduler=None, progress=None, desc
         ``progress(done, total)`` after each point or task (and ``progress(0, total)`` first).
     describe : callable, optional
         ``describe(index)``: a point as a message names it.
+    point : callable, optional
+        The pure function document -> record (default :func:`evaluate_point`) (a module-level function, so that processes can be given it):
+        :func:`evaluate_point`, or another record of the design (:func:`valvetrain.tolerance.evaluate_sample`).
+    keep : callable, optional
+        ``keep(index, record)`` as each record arrives (to write it at once, so that an interrupted run keeps it).
 
     Returns
     -------
@@ -347,18 +352,32 @@ def evaluate(documents, total, workers=None, scheduler=None, progress=None, desc
     StudyStopped
         A worker process died (killed, out of memory); the records designed before it are kept.
     """
-    records = [None] * total
+    point = point or evaluate_point   # looked up at the call, so that a test can replace it
+    records = _Records(total, keep)
     tick = progress or (lambda done, total: None)
     tick(0, total)
     if scheduler is not None:
-        _on_dask(enumerate(documents), total, scheduler, records, tick, describe)
+        _on_dask(enumerate(documents), total, scheduler, records, tick, describe, point)
     elif workers and workers > 1:
-        _in_processes(enumerate(documents), workers, records, tick, describe)
+        _in_processes(enumerate(documents), workers, records, tick, describe, point)
     else:
         for i, d in enumerate(documents):
-            records[i] = evaluate_point(d)
+            records[i] = point(d)
             tick(i + 1, total)
-    return records
+    return list(records)
+
+
+class _Records(list):
+    """The records of a study, None until designed; ``keep(index, record)`` is told of each as it is set."""
+
+    def __init__(self, total, keep):
+        super().__init__([None] * total)
+        self.keep = keep
+
+    def __setitem__(self, index, record):
+        super().__setitem__(index, record)
+        if self.keep is not None:
+            self.keep(index, record)
 
 
 def _stopped(records, lost, describe, why):
@@ -370,14 +389,14 @@ def _stopped(records, lost, describe, why):
                         f"with {done} of {len(records)} points designed", records, lost)
 
 
-def _in_processes(numbered, workers, records, tick, describe):
+def _in_processes(numbered, workers, records, tick, describe, point):
     """Local processes, each with one point at a time: when one dies, the points in progress are known."""
     # fresh interpreters: a fork of a process whose compiled kernels run OpenMP threads is unsafe
     with ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context("spawn")) as pool:
         running, done = {}, 0
         while True:
             for i, d in itertools.islice(numbered, workers - len(running)):
-                running[pool.submit(evaluate_point, d)] = i
+                running[pool.submit(point, d)] = i
             if not running:
                 return
             finished, _ = wait(running, return_when=FIRST_COMPLETED)
@@ -390,7 +409,7 @@ def _in_processes(numbered, workers, records, tick, describe):
             tick(done, len(records))
 
 
-def _on_dask(numbered, total, scheduler, records, tick, describe):
+def _on_dask(numbered, total, scheduler, records, tick, describe, point):
     """A Dask cluster: tasks of :func:`dask_chunk` points, two tasks per worker thread submitted at a time."""
     try:
         from distributed import Client, KilledWorker, as_completed as dask_completed
@@ -408,7 +427,7 @@ def _on_dask(numbered, total, scheduler, records, tick, describe):
 
         def submit():
             for chunk in itertools.islice(chunks, 1):
-                future = client.submit(evaluate_points, [d for _, d in chunk], pure=False)
+                future = client.submit(evaluate_points, [d for _, d in chunk], point, pure=False)
                 indices[future] = [i for i, _ in chunk]
                 queue.add(future)
 

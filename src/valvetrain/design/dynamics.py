@@ -334,15 +334,30 @@ def adjuster_ratio(valve, law) -> float:
     return hla.motion_ratio(valve.lash_adjuster.location, lever_ratio(valve, law))
 
 
+def adjuster_load(valve, law, drive, cam_speed: float, at: str) -> tuple[float, float]:
+    """The lash adjuster's motion ratio and :func:`adjuster_reference_force` [N], refused where the adjuster cannot
+    work: a motion ratio <= 0 (at the pivot of a lever ratio <= 1), or a largest force on it no more than its own push
+    F_s + p_s A, which would hold the valve open and leave the oil column uncompressed (no finite stiffness)."""
+    la = valve.lash_adjuster
+    ratio = adjuster_ratio(valve, law)
+    if ratio <= 0.0:
+        raise SpecError([Problem(f"{at}.lash_adjuster.location", "needs a lever ratio > 1 (an end-pivot finger): "
+                                 f"rocker_ratio x the follower's own = {lever_ratio(valve, law):.4g}", '"pivot"', " ")])
+    force = adjuster_reference_force(valve, law, drive, cam_speed, ratio)
+    supply = la.supply_pressure * hla.plunger_area(la.plunger_diameter)
+    if force <= la.plunger_spring_N + supply:
+        raise SpecError([Problem(f"{at}.lash_adjuster.plunger_spring_N",
+                                 f"with the supply's {supply:.4g} N the adjuster pushes harder than the largest force on "
+                                 f"it, {force:.4g} N (motion ratio {ratio:.4g}): it would hold the valve open; allowed "
+                                 f"below {max(force - supply, 0.0):.4g} N", f"{la.plunger_spring_N:g}")])
+    return ratio, force
+
+
 def adjuster_link(valve, law, drive, cam_speed: float, at: str) -> tuple[float, str]:
     """The lash adjuster's oil column reduced to the valve [N/m] (in series with the cam contact) and the note that
     says so: its secant stiffness under :func:`adjuster_reference_force` over the square of the motion ratio."""
     la = valve.lash_adjuster
-    ratio = adjuster_ratio(valve, law)
-    if ratio <= 0.0:
-        raise SpecError([Problem(f"{at}.lash_adjuster.location", "needs rocker_ratio > 1 (an end-pivot finger); "
-                                 f"rocker_ratio = {valve.rocker_ratio:g}", '"pivot"', " ")])
-    force = adjuster_reference_force(valve, law, drive, cam_speed, ratio)
+    ratio, force = adjuster_load(valve, law, drive, cam_speed, at)
     stiffness = hla.secant_stiffness(force, la.plunger_spring_N, hla.plunger_area(la.plunger_diameter),
                                      la.supply_pressure, la.chamber_volume, la.bulk_modulus, la.air_content)[0]
     at_valve = stiffness / ratio**2

@@ -11,7 +11,7 @@ from .. import lash_adjuster as hla
 from ..bibliography import cite
 from ..checks import Check, check
 from .drive import event_load_maps
-from .dynamics import adjuster_ratio, adjuster_reference_force
+from .dynamics import adjuster_load
 from .results import quantity
 
 SOURCES = cite("merritt1967")
@@ -97,11 +97,10 @@ def lash_adjuster_stage(la, valve, engine, cam, drive, dynamics=None,
     """
     at = f"valves.{name}"
     law, k = cam.law, valve.rocker_ratio
-    ratio = adjuster_ratio(valve, law)
+    ratio, ref = adjuster_load(valve, law, drive, cam.cam_speed, at)
     area = hla.plunger_area(la.plunger_diameter)
     refill = hla.check_valve_flow(hla.refill_pressure(la.supply_pressure, la.plunger_spring_N, area),
                                   la.check_valve_diameter) / area
-    ref = adjuster_reference_force(valve, law, drive, cam.cam_speed, ratio)
     stiffness, sink, pressure = hla.secant_stiffness(ref, la.plunger_spring_N, area, la.supply_pressure,
                                                      la.chamber_volume, la.bulk_modulus, la.air_content)
     _, maps, (low, high, _) = event_load_maps(valve, engine, cam, drive, dynamics)

@@ -87,11 +87,12 @@ def _forces(x, v, inv_mass, ra, rb, k, d, gap, pre, uni, acc, force):
 
 
 @njit(cache=True, nogil=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
-def _rk4(x, v, h, cam_x, cam_v, im, ra, rb, k, d, gap, pre, uni, xs, vs, kx, acc, scratch):
+def _rk4(x, v, h, cam_x, cam_v, off, im, ra, rb, k, d, gap, pre, uni, xs, vs, kx, acc, scratch):
     """One classical RK4 step of every column of a block's state ``x``, ``v`` (rows, B), updated in place.
 
     Column s advances by ``h[s]`` [s]; at stage q (0-3: start, middle twice, end) the cam row is ``cam_x[q]`` [m]
-    and ``cam_v[q, s]`` [m/s].  ``acc[0]`` holds the accelerations at the start (the caller has evaluated them,
+    and ``cam_v[q, s]`` [m/s], shifted by the lash adjuster's extension ``off[s]`` [m].  ``acc[0]`` holds the
+    accelerations at the start (the caller has evaluated them,
     :func:`_forces`, for its record).  ``xs``, ``vs`` (rows, B), ``kx``, ``acc`` (4, rows, B) and ``scratch``
     (E, B) are work arrays, the ground row of ``xs`` zero.  The one RK4 body serves the lockstep steps of a block
     and the split step of one speed (:func:`_split_step`), so that it is compiled once.
@@ -108,7 +109,7 @@ def _rk4(x, v, h, cam_x, cam_v, im, ra, rb, k, d, gap, pre, uni, xs, vs, kx, acc
                 xs[i, s] = x[i, s] + hs * kp[i, s]
                 vs[i, s] = v[i, s] + hs * ap[i, s]
         for s in range(bsize):
-            xs[cam, s] = cam_x[q]
+            xs[cam, s] = cam_x[q] + off[s]
             vs[cam, s] = cam_v[q, s]
         kq = kx[q]
         for i in range(n):
@@ -124,7 +125,8 @@ def _rk4(x, v, h, cam_x, cam_v, im, ra, rb, k, d, gap, pre, uni, xs, vs, kx, acc
 @njit(cache=True, nogil=True)
 def integrate_block(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_per_rev, max_revolutions, tolerance,
                     rate, inv_mass, x_init, ra, rb, k, d, gap, pre, uni, closing, rec_nodes, rec_elems, clash_gap,
-                    surge_ref, surge_w, out_x, out_v, out_a, out_f, out_clash, out_surge, out_revs):
+                    surge_ref, surge_w, adjuster, contact, out_x, out_v, out_a, out_f, out_clash, out_surge, out_revs,
+                    out_z):
     """Integrate the speeds ``idx`` of one block (all with ``n_sub`` sub-steps) in lockstep until each repeats.
 
     Every revolution is recorded over the previous one; after each revolution the state of every speed is compared
@@ -180,6 +182,17 @@ def integrate_block(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_p
         Largest deviation of each coil node from its quasi-static share of the valve motion [m].
     out_revs : ndarray (S,) of int64
         The revolution after which the speed repeated (0: not within ``max_revolutions``).
+    adjuster : ndarray (6,)
+        A hydraulic lash adjuster in series with the cam contact (:func:`_adjust`): its motion ratio (0: none), plunger
+        spring [N], plunger area [m^2], supply pressure [Pa], leak coefficient pi d c^3 / (12 mu L) [m^3/(s Pa)] and
+        largest refill velocity [m/s].
+    contact : int
+        The cam-follower contact element (the adjuster's extension shifts its cam end).
+    out_z : ndarray (S, steps_per_rev)
+        The adjuster's plunger extension over the recorded revolution [m, at the adjuster] (0 without one).
+
+    Its plunger extension z is a state of each speed carried from revolution to revolution, compared with the rest
+    of the state for the repetition.
     """
     n = x_init.size
     rows = n + 2
@@ -195,6 +208,8 @@ def integrate_block(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_p
     force, scratch = np.zeros((ne, bsize)), np.zeros((ne, bsize))
     cam_x, cam_v = np.zeros(4), np.zeros((4, bsize))
     om, dt = np.empty(bsize), np.empty(bsize)
+    z, z0, off = np.zeros(bsize), np.zeros(bsize), np.zeros(bsize)
+    ratio = adjuster[0]
     im = np.zeros(rows)
     for i in range(n):
         im[i] = inv_mass[i]
@@ -214,6 +229,7 @@ def integrate_block(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_p
                 out_surge[idx[s], i] = 0.0
                 x0[i, s] = x[i, s]
                 v0[i, s] = v[i, s]
+            z0[s] = z[s]
         j0 = 0
         for step in range(steps_per_rev * n_sub):
             j1 = j0 + half
@@ -227,9 +243,14 @@ def integrate_block(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_p
                 cam_v[1, s] = om[s] * cam_du[j1]
                 cam_v[2, s] = cam_v[1, s]
                 cam_v[3, s] = om[s] * d2
-                x[cam, s] = u0
+                x[cam, s] = u0 + off[s]
                 v[cam, s] = cam_v[0, s]
             _forces(x, v, im, ra, rb, k, d, gap, pre, uni, acc[0], force)
+            if ratio > 0.0:
+                _adjust(z, off, x, force[contact], cam, rb[contact], k[contact], gap[contact], adjuster, dt)
+                for s in range(bsize):
+                    x[cam, s] = u0 + off[s]
+                _forces(x, v, im, ra, rb, k, d, gap, pre, uni, acc[0], force)
             if closing >= 0:
                 for i in range(rows):
                     for s in range(bsize):
@@ -238,13 +259,15 @@ def integrate_block(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_p
             if step % n_sub == 0:
                 _record(step // n_sub, idx, x, v, acc[0], force, ra, rb, rec_nodes, rec_elems, clash_gap, surge_ref,
                         surge_w, out_x, out_v, out_a, out_f, out_clash, out_surge)
-            _rk4(x, v, dt, cam_x, cam_v, im, ra, rb, k, d, gap, pre, uni, xs, vs, kx, acc, scratch)
+                for s in range(bsize):
+                    out_z[idx[s], step // n_sub] = z[s]
+            _rk4(x, v, dt, cam_x, cam_v, off, im, ra, rb, k, d, gap, pre, uni, xs, vs, kx, acc, scratch)
             if closing >= 0:
                 ia, ib, ge = ra[closing], rb[closing], gap[closing]
                 for s in range(bsize):
                     if xb[ia, s] - xb[ib, s] - ge <= 0.0 and x[ia, s] - x[ib, s] - ge > 0.0:
-                        _split_step(s, xb, vb, acc[0], x, v, dt[s], om[s], dtheta / n_sub, u0, d0, u2, d2, closing,
-                                    im, ra, rb, k, d, gap, pre, uni)
+                        _split_step(s, xb, vb, acc[0], x, v, dt[s], om[s], dtheta / n_sub, u0, d0, u2, d2, off[s],
+                                    closing, im, ra, rb, k, d, gap, pre, uni)
             j0 = j2
         done = True
         for s in range(bsize):
@@ -252,6 +275,7 @@ def integrate_block(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_p
                 dev = 0.0
                 for i in range(n):
                     dev = max(dev, abs(x[i, s] - x0[i, s]), abs(v[i, s] - v0[i, s]) / rate)
+                dev = max(dev, ratio * abs(z[s] - z0[s]))
                 if dev <= tolerance:
                     out_revs[idx[s]] = rev
                 else:
@@ -261,13 +285,13 @@ def integrate_block(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_p
 
 
 @njit(cache=True, nogil=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
-def _split_step(s, xb, vb, acc, x, v, dt, om, step_angle, u0, d0, u2, d2, e, im, ra, rb, k, d, gap, pre, uni):
+def _split_step(s, xb, vb, acc, x, v, dt, om, step_angle, u0, d0, u2, d2, shift, e, im, ra, rb, k, d, gap, pre, uni):
     """Redo the step of speed ``s`` in which element ``e`` closed: RK4 from the start (``xb``, ``vb``, acceleration
     ``acc``) to the closing, located by the Taylor series of the element's gap, then RK4 from it to the step's end;
     the result replaces column ``s`` of ``x``, ``v``.  A contact law that switches inside a step (the seat's damping
     force jumps from 0 at the closing) costs a fixed-step scheme its order; split there, each part is smooth.  The
     cam runs on the cubic Hermite of its samples ``u0``, ``u2`` [m] and slopes ``d0``, ``d2`` [m/rad] at both ends
-    of the step (``step_angle`` [rad]); both parts are :func:`_rk4` steps of a block of one speed."""
+    of the step (``step_angle`` [rad]), shifted by the lash adjuster's extension ``shift`` [m]; both parts are :func:`_rk4` steps of a block of one speed."""
     rows = xb.shape[0]
     ia, ib = ra[e], rb[e]
     g0 = xb[ia, s] - xb[ib, s] - gap[e]
@@ -283,7 +307,7 @@ def _split_step(s, xb, vb, acc, x, v, dt, om, step_angle, u0, d0, u2, d2, e, im,
     xl, vl, xs, vs = np.zeros((rows, 1)), np.zeros((rows, 1)), np.zeros((rows, 1)), np.zeros((rows, 1))
     kx, kv = np.zeros((4, rows, 1)), np.zeros((4, rows, 1))
     force, scratch = np.zeros((ne, 1)), np.zeros((ne, 1))
-    h, cam_x, cam_v = np.zeros(1), np.zeros(4), np.zeros((4, 1))
+    h, cam_x, cam_v, off = np.zeros(1), np.zeros(4), np.zeros((4, 1)), np.full(1, shift)
     for i in range(rows):
         xl[i, 0] = xb[i, s]
         vl[i, 0] = vb[i, s]
@@ -298,13 +322,50 @@ def _split_step(s, xb, vb, acc, x, v, dt, om, step_angle, u0, d0, u2, d2, e, im,
                         + (f3 - f2) * step_angle * d2)
             cam_v[q, 0] = om * ((6 * f2 - 6 * f) * u0 / step_angle + (3 * f2 - 4 * f + 1) * d0
                                 + (-6 * f2 + 6 * f) * u2 / step_angle + (3 * f2 - 2 * f) * d2)
-        xl[rows - 1, 0] = cam_x[0]
+        xl[rows - 1, 0] = cam_x[0] + shift
         vl[rows - 1, 0] = cam_v[0, 0]
         _forces(xl, vl, im, ra, rb, k, d, gap, pre, uni, kv[0], force)
-        _rk4(xl, vl, h, cam_x, cam_v, im, ra, rb, k, d, gap, pre, uni, xs, vs, kx, kv, scratch)
+        _rk4(xl, vl, h, cam_x, cam_v, off, im, ra, rb, k, d, gap, pre, uni, xs, vs, kx, kv, scratch)
     for i in range(rows - 2):
         x[i, s] = xl[i, 0]
         v[i, s] = vl[i, 0]
+
+
+@njit(cache=True, nogil=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+def _adjust(z, off, x, force, cam, b, stiffness, gap, adjuster, dt):
+    """Advance the plunger extension ``z`` [m, at the adjuster] of every speed of a block over its step ``dt`` [s]
+    and set the cam row's shift ``off`` = i_a z [m, at the valve] (i_a the adjuster's motion ratio).
+
+    ``force`` (B,) is the cam contact's force at the valve [N] at the step's start, ``x`` the block's positions,
+    ``cam``, ``b`` the contact's rows, ``stiffness`` [N/m] and ``gap`` [m] its own; ``adjuster`` as in
+    :func:`integrate_block`.
+
+    Notes
+    -----
+    The chamber pressure of a massless plunger is p = (i_a F - F_s) / A.  Above the supply p_s the chamber leaks
+    through the annular clearance (:func:`valvetrain.lash_adjuster.annular_leakage`) and the plunger sinks,
+
+    .. math:: \\dot z = -\\frac{\\pi d c^3}{12 \\mu L}\\,\\frac{p - p_s}{A}
+
+    (explicit Euler: its rate is far below 1 / dt); at or below it the check valve opens and the plunger extends at
+    the refill velocity, no further than to the contact force (F_s + p_s A) / i_a at which the valve closes again:
+    a float lets it follow the opened gap (pump-up), and on the base circle it takes up the lash.  The oil column's
+    compliance is in the contact's stiffness (its secant stiffness in series).
+    """
+    ratio, spring, area, supply, leak, refill = (adjuster[0], adjuster[1], adjuster[2], adjuster[3], adjuster[4],
+                                                 adjuster[5])
+    push = (spring + supply * area) / ratio
+    for s in range(z.size):
+        f = force[s]
+        pressure = (ratio * f - spring) / area
+        if pressure > supply:
+            dz = -leak * (pressure - supply) / area * dt[s]
+        else:
+            delta = x[cam, s] - x[b, s] - gap
+            need = (push - f) / stiffness if (delta > 0.0) & (f > 0.0) else push / stiffness - delta
+            dz = min(refill * dt[s], need / ratio)
+        z[s] += dz
+        off[s] = ratio * z[s]
 
 
 @njit(cache=True, nogil=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)

@@ -11,6 +11,7 @@ unilateral contacts with a gap (cam contact with the lash, drive joints, valve s
 """
 
 from dataclasses import dataclass, field
+from typing import Optional
 
 import numpy as np
 
@@ -40,6 +41,44 @@ COIL_DAMPING_RATIO = 0.02
 
 
 @dataclass(frozen=True)
+class Adjuster:
+    """A hydraulic lash adjuster in series with the cam contact, its plunger extension a state of the integration
+    carried from revolution to revolution (:func:`~valvetrain.dynamics.kernels.integrate_block`).  SI units.
+
+    Attributes
+    ----------
+    motion_ratio : float
+        Valve motion per plunger motion i_a (> 0), also the adjuster's force per valve force.
+    plunger_spring : float
+        Plunger spring force F_s [N].
+    area : float
+        Plunger area A [m^2].
+    supply : float
+        Oil supply pressure p_s [Pa, gauge].
+    leak : float
+        Leak coefficient of the annular clearance, pi d c^3 / (12 mu L) [m^3/(s Pa)]
+        (:func:`valvetrain.lash_adjuster.annular_leakage` per pascal).
+    refill : float
+        Largest extension velocity through the open check valve [m/s].
+    """
+
+    motion_ratio: float
+    plunger_spring: float
+    area: float
+    supply: float
+    leak: float
+    refill: float
+
+    def array(self):
+        """The kernel's parameter array (6,)."""
+        return np.array([self.motion_ratio, self.plunger_spring, self.area, self.supply, self.leak, self.refill])
+
+
+NO_ADJUSTER = np.zeros(6)
+"""The kernel's parameter array of a train without a lash adjuster (motion ratio 0)."""
+
+
+@dataclass(frozen=True)
 class Network:
     """A lumped train ready for :func:`~valvetrain.dynamics.kernels.integrate_block` (SI, valve side).
 
@@ -65,6 +104,8 @@ class Network:
         Quasi-static share of the valve motion of each coil node (0: not a coil node).
     rocker_ratio : float
         k, to turn the valve-side cam force into the force at the cam.
+    adjuster : ndarray (6,)
+        :meth:`Adjuster.array` of a hydraulic lash adjuster in series with the cam contact (:data:`NO_ADJUSTER`).
     """
 
     names: tuple
@@ -81,6 +122,7 @@ class Network:
     clash_gap: np.ndarray
     surge_weight: np.ndarray
     rocker_ratio: float
+    adjuster: np.ndarray = field(default_factory=NO_ADJUSTER.copy)
 
     @property
     def valve(self):
@@ -245,14 +287,15 @@ class _Builder:
         self.damped("seat", GROUND, valve, stiffness, ratio, unilateral=True)
         return -springs_preload / stiffness
 
-    def build(self, x_valve, valve, rocker_ratio):
+    def build(self, x_valve, valve, rocker_ratio, adjuster=None):
         rows = list(zip(*self.rows, strict=True))
         weight = np.array(self.weight)
         x_init = x_valve * np.where(weight > 0.0, weight, 1.0)   # drive parts resting on the seated valve
         return Network(tuple(self.names), np.array(self.mass), x_init, tuple(self.elements),
                        np.array(rows[0], dtype=np.int64), np.array(rows[1], dtype=np.int64), np.array(rows[2]),
                        np.array(rows[3]), np.array(rows[4]), np.array(rows[5]), np.array(rows[6], dtype=np.bool_),
-                       np.array(rows[7]), np.array(self.weight), float(rocker_ratio))
+                       np.array(rows[7]), np.array(self.weight), float(rocker_ratio),
+                       NO_ADJUSTER.copy() if adjuster is None else adjuster.array())
 
 
 @dataclass(frozen=True)
@@ -296,6 +339,7 @@ class OneMassTrain:
     seat_stiffness: float = SEAT_STIFFNESS
     seat_damping: float = 0.0
     notes: tuple = ()
+    adjuster: Optional[Adjuster] = None
 
     def network(self):
         """The train as a :class:`Network`: one node, cam contact with the lash, spring, seat."""
@@ -304,7 +348,7 @@ class OneMassTrain:
         net.element("cam contact", CAM, valve, self.stiffness, self.damping, gap=self.lash, unilateral=True)
         net.element("spring at valve", valve, GROUND, self.spring_rate, 0.0, preload=self.preload)
         net.element("seat", GROUND, valve, self.seat_stiffness, self.seat_damping, unilateral=True)
-        return net.build(-self.preload / self.seat_stiffness, valve, self.rocker_ratio)
+        return net.build(-self.preload / self.seat_stiffness, valve, self.rocker_ratio, self.adjuster)
 
 
 def one_mass_train(mass, stiffness, spring_rate, preload, rocker_ratio=1.0, lash=0.0, damping_ratio=DAMPING_RATIO,
@@ -381,6 +425,7 @@ class MultiMassTrain:
     seat_stiffness: float = SEAT_STIFFNESS
     seat_damping_ratio: float = SEAT_DAMPING_RATIO
     notes: tuple = field(default=())
+    adjuster: Optional[Adjuster] = None
 
     def network(self):
         """The train as a :class:`Network`."""
@@ -395,7 +440,7 @@ class MultiMassTrain:
             net.damped(name, ends[i], ends[i + 1], c, self.damping_ratio, unilateral=True,
                        gap=self.lash if i == self.lash_link else 0.0)
         x_valve = net.seat(valve, self.seat_stiffness, self.seat_damping_ratio, sum(s.preload for s in self.springs))
-        return net.build(x_valve, valve, self.rocker_ratio)
+        return net.build(x_valve, valve, self.rocker_ratio, self.adjuster)
 
 
 def natural_modes(network, held=(), opened=()):

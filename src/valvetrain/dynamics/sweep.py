@@ -25,6 +25,7 @@ Events (Shang Hanji (1988), sections 3.1-3.2):
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 import sys
+from typing import Optional
 
 import numpy as np
 from numba import get_num_threads
@@ -383,6 +384,9 @@ class SweepResult:
         Camshaft revolutions after which each speed repeated (the cap where it did not).
     converged : ndarray (S,) of bool
         The speed repeated within :data:`STATE_TOLERANCE` before the cap.
+    adjuster_extension : ndarray (S, n) or None
+        Plunger extension of the train's hydraulic lash adjuster over the recorded revolution [m, at the adjuster]
+        (zeros without one).
     """
 
     cam_speeds: np.ndarray
@@ -401,6 +405,7 @@ class SweepResult:
     revolutions: np.ndarray
     converged: np.ndarray
     bounce_tolerance: float = BOUNCE_TOLERANCE
+    adjuster_extension: Optional[np.ndarray] = None
 
     def speed(self, i):
         """The :class:`SpeedResult` of the i-th speed."""
@@ -544,6 +549,7 @@ def sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, progress=None, bo
     out_clash = np.empty((s_count, n_elems))
     out_surge = np.empty((s_count, n_nodes))
     out_revs = np.zeros(s_count, dtype=np.int64)
+    out_z = np.zeros((s_count, steps))
     ra, rb = rows(net.a, net.b, n_nodes)
     workers = get_num_threads()
     order, start, seq = blocks(n_sub, workers)
@@ -554,8 +560,8 @@ def sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, progress=None, bo
         integrate_block(idx, speeds, int(n_sub[idx[0]]), dtheta, u, du, per_step, steps, int(revolutions),
                         float(tolerance), float(rate), inv_mass, net.x_init, ra, rb, net.stiffness, net.damping,
                         net.gap, net.preload, net.unilateral, int(net.seat_element), rec_nodes, rec_elems,
-                        net.clash_gap, int(net.valve), net.surge_weight, out_x, out_v, out_a, out_f, out_clash,
-                        out_surge, out_revs)
+                        net.clash_gap, int(net.valve), net.surge_weight, net.adjuster, int(net.cam_element), out_x,
+                        out_v, out_a, out_f, out_clash, out_surge, out_revs, out_z)
         return idx.size
 
     _notify_compile()
@@ -576,7 +582,7 @@ def sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, progress=None, bo
     return SweepResult(speeds, theta[::per_step], u[::per_step] - net.lash, out_x[:, 0], out_v[:, 0], out_a[:, 0],
                        net.rocker_ratio * out_f[:, 0], out_f[:, 1], -out_f[:, 2:].sum(axis=1),
                        du[::per_step] / net.rocker_ratio, out_surge[:, coils], out_clash.min(axis=1), n_sub,
-                       np.where(out_revs > 0, out_revs, int(revolutions)), out_revs > 0, bounce_tolerance)
+                       np.where(out_revs > 0, out_revs, int(revolutions)), out_revs > 0, bounce_tolerance, out_z)
 
 
 def simulate(law, train, cam_speed, revolutions=3, step_deg=0.1, bounce_tolerance=BOUNCE_TOLERANCE):

@@ -1013,3 +1013,47 @@ OPTIMIZE_TEXT = {
     },
 }
 """Texts of the optimisation's report (``valvetrain optimize``) and its history plot."""
+
+
+TOLERANCE_TEXT = {
+    "en": {
+        "title": "Tolerance study", "tolerances": "Tolerances", "key": "key", "distribution": "distribution",
+        "uniform": "uniform", "normal": "normal", "nominal": "nominal", "spread": "half-range or sigma",
+        "range": "truncated to", "failures": "Checks that fail in some sample", "check": "check",
+        "severity": "severity", "failed": "failed samples", "probability": "probability of failure",
+        "confidence": "95 % interval (Wilson)", "driver": "drives it most (rank correlation with the margin)",
+        "none": "none", "no_failures": "No check fails in any sample.", "margin": "relative margin (0: the bound)",
+        "dynamics": "Dynamics", "mc": "Monte Carlo", "lhs": "Latin hypercube",
+        "severities": {"failure": "failure", "warning": "warning", "info": "remark"},
+        "headlines": {"jump_speed_rpm": "jump speed, engine rpm",
+                      "max_seating_velocity_m_s": "largest seating velocity, m/s"},
+        "summary": "{n} samples ({method}, random seed = {seed}); {refused} refused (probability {p:.4g}).",
+        "method_text": ("Each sample is the specification with the tolerances drawn from their distributions "
+                        "(inverse distribution function, Devroye (1986)), designed in full. The probability of "
+                        "failure of a check is the share of the designed samples that fail it, with the Wilson "
+                        "score interval (Wilson (1927)); a tolerance drives a check by Spearman's rank correlation "
+                        "of its values with the check's margin."),
+    },
+    "ru": {
+        "title": "Расчёт влияния допусков", "tolerances": "Допуски", "key": "параметр",
+        "distribution": "распределение", "uniform": "равномерное", "normal": "нормальное",
+        "nominal": "номинал", "spread": "полуширина или σ", "range": "усечено до",
+        "failures": "Проверки, не выполненные хотя бы в одном варианте", "check": "проверка",
+        "severity": "значимость", "failed": "не выполнено в вариантах", "probability": "вероятность отказа",
+        "confidence": "95 % интервал (Уилсон)",
+        "driver": "наибольшее влияние (ранговая корреляция с запасом)", "none": "нет",
+        "no_failures": "Все проверки выполнены во всех вариантах.",
+        "margin": "относительный запас (0 — граница)", "dynamics": "Динамика", "mc": "Монте-Карло",
+        "lhs": "латинский гиперкуб",
+        "severities": {"failure": "отказ", "warning": "предупреждение", "info": "замечание"},
+        "headlines": {"jump_speed_rpm": "частота отрыва, мин⁻¹ коленчатого вала",
+                      "max_seating_velocity_m_s": "наибольшая скорость посадки, м/с"},
+        "summary": "{n} вариантов ({method}, начальное число = {seed}); отклонено {refused} (вероятность {p:.4g}).",
+        "method_text": ("Каждый вариант — спецификация с параметрами, взятыми из их распределений (метод обратной "
+                        "функции распределения, Devroye (1986)), рассчитанная полностью. Вероятность отказа "
+                        "проверки — доля рассчитанных вариантов, в которых она не выполнена, с интервалом Уилсона "
+                        "(Wilson (1927)); влияние допуска — ранговая корреляция Спирмена его значений с запасом "
+                        "проверки."),
+    },
+}
+"""Words of the report of a tolerance study (:mod:`valvetrain.report.tolerance`)."""

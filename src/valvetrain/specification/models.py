@@ -669,6 +669,41 @@ class Acceptance(_Model):
         return text
 
 
+class Tolerance(_Model):
+    """[[tolerances]]: the distribution of one key of the file for ``valvetrain tolerance`` (a Monte Carlo or Latin
+    hypercube study over the tolerances; ``valvetrain run`` ignores them).
+
+    ``key`` is a dotted key of the file as ``valvetrain study --grid`` names it (``valves.intake.clearance_mm``), in
+    the key's unit; the file's value of the key is the nominal.  ``uniform``: nominal +- ``half_range``, or
+    [``low``, ``high``]; ``normal``: mean the nominal, standard deviation ``sigma``, truncated to [``low``,
+    ``high``] where they are given (else at +-6 sigma).  Every value of the range must be a value the key
+    allows (checked before any sample is drawn)."""
+
+    key: Annotated[str, Field(min_length=3, max_length=200)]
+    distribution: Literal["uniform", "normal"]
+    half_range: Optional[_bounded(0.0, 1e6)] = None
+    sigma: Optional[_bounded(0.0, 1e6)] = None
+    low: Optional[float] = None
+    high: Optional[float] = None
+
+    @model_validator(mode="after")
+    def _parameters(self):
+        bounds = self.low is not None, self.high is not None
+        if self.distribution == "uniform":
+            if self.sigma is not None:
+                raise ValueError(f"{self.key}: sigma is for a normal distribution; a uniform one takes half_range "
+                                 "or low and high")
+            if not ((self.half_range is None and all(bounds)) or (self.half_range is not None and not any(bounds))):
+                raise ValueError(f"{self.key}: a uniform distribution takes half_range, or low and high")
+        else:
+            if self.sigma is None or self.half_range is not None:
+                raise ValueError(f"{self.key}: a normal distribution takes sigma (and optionally low, high to "
+                                 "truncate it), not half_range")
+        if all(bounds) and self.low >= self.high:
+            raise ValueError(f"{self.key}: low = {self.low:g} must be below high = {self.high:g}")
+        return self
+
+
 class Spec(_Model):
     """A whole design specification."""
 
@@ -681,6 +716,7 @@ class Spec(_Model):
     output: Output = Output()
     document: Document = Document()
     accepted: list[Acceptance] = []
+    tolerances: list[Tolerance] = []
     source_dir: Optional[str] = Field(default=None, exclude=True)
     """Folder of the specification file: relative file names (pressure_file) are read from there."""
 

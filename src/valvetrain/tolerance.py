@@ -1,0 +1,340 @@
+"""Tolerance studies (``valvetrain tolerance``): the file's ``[[tolerances]]`` sampled, one design per sample, per
+check the distribution of its margin, its probability of failure and the tolerances that drive it.
+
+The samples are drawn in this process before any design (Monte Carlo: independent uniform numbers; Latin
+hypercube: :class:`scipy.stats.qmc.LatinHypercube`), from one seed, and mapped to each tolerance's distribution by
+its inverse distribution function; each sample is the file's TOML document with its keys replaced, designed by
+:func:`evaluate_sample` (a pure function, document in, record out) through :func:`valvetrain.study.evaluate`, so the
+records are the same serially, in local processes and on a Dask cluster.  The records are written one a line as they
+arrive (:class:`RecordFile`), so that a study interrupted and run again with the same inputs designs only the samples
+it lacks.
+
+This module is part of the orchestration, like :mod:`valvetrain.study`.
+"""
+
+import hashlib
+import json
+import math
+from pathlib import Path
+
+import numpy as np
+from scipy import stats
+from scipy.stats import qmc
+
+from .design import run
+from .specification import SpecError, validate
+from .specification.validate import spec_document
+from .study import GridError, check_grid
+from .units import rpm_to_rad_s
+
+NORMAL_TRUNCATION_SIGMA = 6.0
+"""Where an untruncated normal tolerance is cut, in standard deviations (2e-9 of its probability lies outside)."""
+
+CONFIDENCE_Z = 1.959963984540054
+"""The standard normal quantile of the two-sided 95 % confidence interval of a failure probability."""
+
+METHODS = ("mc", "lhs")
+"""Sampling methods: Monte Carlo, Latin hypercube."""
+
+HISTOGRAM_BINS = 20
+"""Bins of the histogram of a margin or a headline."""
+
+
+class ToleranceError(ValueError):
+    """A tolerance that cannot be sampled; the message is one line naming the key."""
+
+
+def nominal(spec, key):
+    """The value of a dotted ``key`` in a validated specification (its default where the file leaves it out).
+
+    Raises
+    ------
+    ToleranceError
+        A key the specification does not have, naming a table, or without a number.
+    """
+    node = spec_document(spec)
+    for part in key.split("."):
+        if not isinstance(node, dict) or part not in node:
+            raise ToleranceError(f"tolerances: {key}: no such key in the specification")
+        node = node[part]
+    if isinstance(node, bool) or not isinstance(node, (int, float)):
+        raise ToleranceError(f"tolerances: {key}: a tolerance needs a number; the file's value is {node!r} (give "
+                             "the key a value)")
+    return float(node)
+
+
+def sample_range(tolerance, centre):
+    """The values a tolerance can take, ``(low, high)`` in the key's unit, about its nominal ``centre``.
+
+    Uniform: ``centre -+ half_range`` or [``low``, ``high``]; normal: [``low``, ``high``] where given, else
+    ``centre -+ 6 sigma`` (:data:`NORMAL_TRUNCATION_SIGMA`)."""
+    if tolerance.distribution == "uniform" and tolerance.half_range is not None:
+        return centre - tolerance.half_range, centre + tolerance.half_range
+    cut = NORMAL_TRUNCATION_SIGMA * (tolerance.sigma or 0.0)
+    return (centre - cut if tolerance.low is None else tolerance.low,
+            centre + cut if tolerance.high is None else tolerance.high)
+
+
+def check_tolerances(document, spec):
+    """The nominal values of the tolerances of ``spec``; refuse a key the specification does not know, a key given
+    twice, and a sample range whose ends the key refuses (:func:`valvetrain.study.check_grid`).
+
+    Returns
+    -------
+    list of float
+
+    Raises
+    ------
+    ToleranceError
+    """
+    if not spec.tolerances:
+        raise ToleranceError("tolerances: the file has no [[tolerances]]; give at least one (key, distribution)")
+    keys = [t.key for t in spec.tolerances]
+    twice = sorted({k for k in keys if keys.count(k) > 1})
+    if twice:
+        raise ToleranceError(f"tolerances: {', '.join(twice)} given twice; give one distribution per key")
+    centres = [nominal(spec, t.key) for t in spec.tolerances]
+    for t, centre in zip(spec.tolerances, centres, strict=True):
+        low, high = sample_range(t, centre)
+        try:
+            check_grid(document, [(t.key, [low, high])])
+        except GridError as err:
+            raise ToleranceError(f"tolerances: the sample range [{low:g}, {high:g}] of {t.key} leaves the key's "
+                                 f"bounds: {str(err).removeprefix('--grid ')}") from None
+    return centres
+
+
+def unit_samples(n, dimensions, method, seed):
+    """``n`` points of the unit hypercube, ``(n, dimensions)``: independent uniform numbers (``"mc"``) or a Latin
+    hypercube (``"lhs"``, McKay, Beckman and Conover (1979)), from :class:`numpy.random.Generator` seeded with
+    ``seed``."""
+    rng = np.random.default_rng(seed)
+    if method == "lhs":
+        return qmc.LatinHypercube(dimensions, seed=rng).random(n)
+    return rng.random((n, dimensions))
+
+
+def inverse_cdf(u, tolerance, centre):
+    """The values of a tolerance at the probabilities ``u`` (its inverse distribution function), key's unit.
+
+    Notes
+    -----
+    Uniform on [a, b]: x = a + u (b - a).  Normal N(mu, sigma) truncated to [a, b]:
+    x = mu + sigma Phi^-1(Phi(alpha) + u (Phi(beta) - Phi(alpha))), alpha = (a - mu)/sigma, beta = (b - mu)/sigma
+    (the inverse transform of the truncated normal).
+
+    References
+    ----------
+    Devroye (1986), section II.2 (the inversion method).
+    """
+    low, high = sample_range(tolerance, centre)
+    if tolerance.distribution == "uniform":
+        return low + u * (high - low)
+    s = tolerance.sigma
+    a, b = stats.norm.cdf([(low - centre) / s, (high - centre) / s])
+    return centre + s * stats.norm.ppf(a + u * (b - a))
+
+
+def draw(spec, centres, n, method, seed):
+    """The samples of a study, ``(n, tolerances)`` in the keys' units, the same for the same arguments."""
+    u = unit_samples(n, len(centres), method, seed)
+    return np.column_stack([inverse_cdf(u[:, j], t, c)
+                            for j, (t, c) in enumerate(zip(spec.tolerances, centres, strict=True))])
+
+
+def check_id(c):
+    """The name of a check in a tolerance study: ``VALVE:CODE`` (or ``CODE`` of the engine's), its parameters after
+    it in brackets (``intake:spring.safety_factor[spring=outer]``)."""
+    params = ",".join(f"{k}={v}" for k, v in c.params)
+    return f"{c.valve + ':' if c.valve else ''}{c.code}{f'[{params}]' if params else ''}"
+
+
+def split_id(cid):
+    """The ``valve`` (None: the engine's), ``code`` and ``params`` (dict) of a :func:`check_id`."""
+    valve, _, rest = cid.rpartition(":")
+    code, _, params = rest.partition("[")
+    return {"valve": valve or None, "code": code,
+            "params": dict(p.split("=", 1) for p in params.rstrip("]").split(",") if p)}
+
+
+def _finite(x):
+    return float(x) if math.isfinite(x) else None
+
+
+def evaluate_sample(document):
+    """Validate and design one sample; its record.
+
+    Returns
+    -------
+    dict
+        ``status`` ('ok' or 'refused'), ``message`` (the refusal's problems, one a line), ``checks`` (check id ->
+        ``[margin, passed, quantity, severity]``, the margin None where the value cannot be evaluated) and
+        ``headlines`` (valve -> ``jump_speed_rpm`` (engine rpm, None: no separation in the range swept) and
+        ``max_seating_velocity_m_s``) of the valves with a [dynamics] section.
+    """
+    try:
+        results = run(validate(document))
+    except SpecError as err:
+        return {"status": "refused", "message": "\n".join(err.problems), "checks": {}, "headlines": {}}
+    checks = {check_id(c): [_finite(c.margin), c.passed, c.quantity, c.severity] for c in results.checks}
+    headlines = {name: {"jump_speed_rpm": _finite(v.dynamics.jump_speed / rpm_to_rad_s(1.0)),
+                        "max_seating_velocity_m_s": _finite(v.dynamics.max_seating_velocity)}
+                 for name, v in results.valves.items() if v.dynamics is not None}
+    return {"status": "ok", "message": "", "checks": checks, "headlines": headlines}
+
+
+def fingerprint(document, method, seed, samples):
+    """What makes a study's records: the document (its tolerances too), the method, the seed and the samples (a
+    hash, hex)."""
+    text = json.dumps({"document": document, "method": method, "seed": seed, "samples": samples.tolist()},
+                      sort_keys=True, default=str)
+    return hashlib.sha256(text.encode("utf-8")).hexdigest()
+
+
+RECORDS = "records.jsonl"
+"""The records of a study in its folder: a header line, then one ``{"index": i, "record": {...}}`` a line."""
+
+
+class RecordFile:
+    """The records of a study, appended one a line as they arrive; read back to resume.
+
+    The first line is ``{"fingerprint": ...}`` (:func:`fingerprint`); a file of other inputs is refused.  A last
+    line cut short (the process killed while writing it) is ignored and written again.
+    """
+
+    def __init__(self, folder, stamp):
+        self.path = Path(folder) / RECORDS
+        self.stamp = stamp
+
+    def read(self):
+        """The records written before, index -> record (empty for a new file).
+
+        Raises
+        ------
+        ToleranceError
+            A file written for other inputs.
+        """
+        if not self.path.exists():
+            return {}
+        lines = self.path.read_text(encoding="utf-8").split("\n")
+        try:
+            header = json.loads(lines[0])
+        except json.JSONDecodeError:
+            header = {}
+        if header.get("fingerprint") != self.stamp:
+            raise ToleranceError(f"{self.path} holds the records of another study (another file, tolerances, "
+                                 "method, seed or number of samples); give another --out")
+        done = {}
+        for line in lines[1:]:
+            try:
+                item = json.loads(line)
+            except json.JSONDecodeError:
+                continue
+            done[item["index"]] = item["record"]
+        return done
+
+    def open(self, done):
+        """Start appending after the ``done`` records (the file rewritten with them, so a line cut short goes)."""
+        self.path.parent.mkdir(parents=True, exist_ok=True)
+        tmp = self.path.with_suffix(".tmp")
+        with tmp.open("w", encoding="utf-8") as f:
+            f.write(json.dumps({"fingerprint": self.stamp}) + "\n")
+            for i in sorted(done):
+                f.write(_line(i, done[i]))
+        tmp.replace(self.path)
+        self.file = self.path.open("a", encoding="utf-8")
+        return self
+
+    def keep(self, index, record):
+        """Append one record and flush it to the disk."""
+        self.file.write(_line(index, record))
+        self.file.flush()
+
+    def close(self):
+        self.file.close()
+
+
+def _line(index, record):
+    return json.dumps({"index": index, "record": record}, allow_nan=False) + "\n"
+
+
+def wilson(failures, n, z=CONFIDENCE_Z):
+    """The Wilson score interval of a binomial proportion, ``(low, high)``.
+
+    Notes
+    -----
+    p_hat = k/n; centre (p_hat + z^2/(2n)) / (1 + z^2/n), half-width
+    z sqrt(p_hat (1 - p_hat)/n + z^2/(4 n^2)) / (1 + z^2/n).
+
+    References
+    ----------
+    Wilson (1927); Newcombe (1998), method 3.
+    """
+    if n == 0:
+        return 0.0, 1.0
+    p = failures / n
+    d = 1.0 + z * z / n
+    centre = (p + z * z / (2 * n)) / d
+    half = z * math.sqrt(p * (1.0 - p) / n + z * z / (4.0 * n * n)) / d
+    return max(0.0, centre - half), min(1.0, centre + half)
+
+
+def distribution(values):
+    """Quantiles, mean, standard deviation and histogram of the finite ``values`` (None where none)."""
+    x = np.asarray([v for v in values if v is not None], dtype=float)
+    if x.size == 0:
+        return None
+    low, high = x.min(), x.max()
+    if high - low <= 1e-9 * max(1.0, abs(high)):   # one value (to rounding): one bin about it
+        low, high = low - 1e-6 * max(1.0, abs(low)), high + 1e-6 * max(1.0, abs(high))
+    counts, edges = np.histogram(x, bins=HISTOGRAM_BINS, range=(low, high))
+    q = np.quantile(x, [0.0, 0.01, 0.05, 0.5, 0.95, 0.99, 1.0])
+    return {"n": int(x.size), "mean": float(x.mean()), "std": float(x.std()),
+            "quantiles": dict(zip(("min", "p01", "p05", "p50", "p95", "p99", "max"), map(float, q), strict=True)),
+            "histogram": {"edges": edges.tolist(), "counts": counts.tolist()}}
+
+
+def sensitivities(samples, values, keys):
+    """Spearman's rank correlation of each tolerance with ``values`` (None where the values do not vary or are
+    missing), over the samples whose value is a number."""
+    ok = np.array([v is not None for v in values])
+    y = np.array([v for v in values if v is not None], dtype=float)
+    out = {}
+    for j, key in enumerate(keys):
+        x = samples[ok, j]
+        varies = y.size > 2 and np.ptp(y) > 0.0 and np.ptp(x) > 0.0
+        out[key] = float(stats.spearmanr(x, y).statistic) if varies else None
+    return out
+
+
+def summary(spec, centres, samples, records, method, seed):
+    """The results of a study (``tolerance.json``): the tolerances, per check its margin's distribution, its
+    failures, probability of failure with the Wilson 95 % interval and the rank correlations of the tolerances with
+    its margin; per valve with dynamics the distribution of the headlines; the refused samples."""
+    keys = [t.key for t in spec.tolerances]
+    n = len(records)
+    ok = [r for r in records if r["status"] == "ok"]
+    okx = samples[[r["status"] == "ok" for r in records]]
+    ids = list(dict.fromkeys(c for r in ok for c in r["checks"]))
+    checks = {}
+    for cid in ids:
+        rows = [r["checks"].get(cid) for r in ok]
+        failures = sum(1 for row in rows if row is not None and not row[1])
+        first = next(row for row in rows if row is not None)
+        margins = [None if row is None else row[0] for row in rows]
+        checks[cid] = {"quantity": first[2], **split_id(cid), "severity": first[3],
+                       "samples": sum(row is not None for row in rows),
+                       "failures": failures, "probability": failures / len(ok),
+                       "confidence_95": list(wilson(failures, len(ok))), "margin": distribution(margins),
+                       "sensitivities": sensitivities(okx, margins, keys)}
+    valves = list(dict.fromkeys(v for r in ok for v in r["headlines"]))
+    headlines = {v: {h: distribution([r["headlines"].get(v, {}).get(h) for r in ok])
+                     for h in ("jump_speed_rpm", "max_seating_velocity_m_s")} for v in valves}
+    refused = n - len(ok)
+    return {"method": method, "seed": seed, "samples": n,
+            "tolerances": [{**t.model_dump(exclude_none=True), "nominal": c}
+                           for t, c in zip(spec.tolerances, centres, strict=True)],
+            "refused": {"samples": refused, "probability": refused / n if n else 0.0,
+                        "confidence_95": list(wilson(refused, n)),
+                        "messages": sorted({r["message"] for r in records if r["status"] != "ok"})[:10]},
+            "checks": checks, "headlines": headlines}

@@ -1,0 +1,72 @@
+"""The hydraulic lash adjuster as a state of the dynamics (valvetrain.dynamics.models.Adjuster and the kernels'
+plunger extension carried from revolution to revolution), each against an independent reference: the train without
+the adjuster (no leak: it reduces to a rigid element), the laminar leakage of an annular clearance integrated by hand
+over the simulated force, the adjuster's push by hand, and the float of the train without it (pump-up)."""
+
+from dataclasses import replace
+
+import numpy as np
+
+from test_dynamics import RPM, spec12
+from valvetrain.dynamics.models import Adjuster, one_mass_train
+from valvetrain.dynamics.sweep import sweep
+
+RATIO = 0.6
+"""Motion ratio of an end-pivot finger of lever ratio 1.6 (valve motion per plunger motion i - 1)."""
+AREA = np.pi * 0.009**2 / 4.0
+"""Plunger area of a 9 mm plunger, 6.3617e-5 m^2."""
+LEAK = np.pi * 0.009 * (4e-6)**3 / (12.0 * 0.010 * 0.008)
+"""pi d c^3 / (12 mu L) of d = 9 mm, c = 4 um, mu = 10 mPa s, L = 8 mm: 1.8850e-15 m^3/(s Pa)."""
+PUSH = (15.0 + 0.3e6 * AREA) / RATIO
+"""The adjuster's push at the valve, (F_s + p_s A) / i_a = (15 + 0.3e6 x 6.3617e-5) / 0.6 = 56.809 N by hand."""
+
+
+def trains():
+    """spec12's law and one-mass train (c = 15 N/um at the valve, k = 1.5) without clearance, and the same with a
+    leak-free adjuster (F_s = 15 N, p_s = 0.3 MPa, refill 0.9 m/s)."""
+    law, _ = spec12()
+    train = one_mass_train(0.25, 15e6, 67.5e3, 400.0, 1.5, 0.0, damping_ratio=0.05)
+    return law, train, replace(train, adjuster=Adjuster(RATIO, 15.0, AREA, 0.3e6, 0.0, 0.9))
+
+
+def test_a_leak_free_adjuster_is_a_rigid_element_that_takes_up_the_lash():
+    """No leak: the plunger extends on the base circle until the contact carries the adjuster's push (56.809 N by
+    hand; the train without it, 27.9 N of seat compression), then holds: the valve lift equals the train's without
+    the adjuster within the push's deflection of the contact, 56.8 N / 15 N/um = 3.8 um, plus what a transient on the
+    base circle pumps (no leak returns it), under 5 um in all."""
+    law, rigid, hydraulic = trains()
+    speeds = np.array([100.0, 300.0, 1500.0]) * RPM
+    a, b = sweep(law, rigid, speeds, revolutions=4), sweep(law, hydraulic, speeds, revolutions=4)
+    base = b.contact_force[:, 0] / 1.5
+    assert np.all(np.abs(base - PUSH) < 0.02 * PUSH) and np.all(a.contact_force[:, 0] / 1.5 < 0.6 * PUSH)
+    assert np.abs(a.lift - b.lift).max() < 5e-6
+    assert b.converged.all() and np.all(b.adjuster_extension > 0.0)
+    assert np.all(a.adjuster_extension == 0.0)
+
+
+def test_leak_down_per_cycle_is_the_annular_leakage_integrated_by_hand():
+    """With the leak: over a revolution at 100 and 300 cam rpm the plunger sinks by the integral of the laminar
+    leakage Q = pi d c^3 (p - p_s) / (12 mu L) over A, p = (i_a F - F_s) / A from the simulated contact force F at the
+    valve, by the trapezoid rule over the recorded angles; the check valve refills it on the base circle (the state
+    repeats)."""
+    law, _, hydraulic = trains()
+    speeds = np.array([100.0, 300.0]) * RPM
+    r = sweep(law, replace(hydraulic, adjuster=replace(hydraulic.adjuster, leak=LEAK)), speeds, revolutions=4)
+    z = r.adjuster_extension
+    pressure = np.clip((r.contact_force / 1.5 * RATIO - 15.0) / AREA - 0.3e6, 0.0, None)
+    by_hand = np.trapezoid(LEAK * pressure / AREA, r.theta / speeds[:, None], axis=1)
+    assert np.allclose(z.max(axis=1) - z.min(axis=1), by_hand, rtol=1e-3)
+    assert by_hand[0] > 2.0 * by_hand[1] and r.converged.all()
+
+
+def test_a_float_pumps_the_adjuster_up_and_holds_the_valve_open():
+    """spec12 at 3600 cam rpm floats (its test_known_jump_case): the plunger follows the opened gap, the oil trapped
+    by the check valve holds it, and without leak the valve stays off its seat on the base circle; at 1500 rpm, no
+    float, it seats."""
+    law, rigid, hydraulic = trains()
+    speeds = np.array([1500.0, 3600.0]) * RPM
+    a, b = sweep(law, rigid, speeds, revolutions=6), sweep(law, hydraulic, speeds, revolutions=6)
+    assert a.speed(1).jump_intervals.size > 0 and a.speed(0).jump_intervals.size == 0
+    base = np.abs(b.theta) > np.radians(120.0)
+    assert b.lift[1, base].min() > 1e-4 and b.adjuster_extension[1].max() > 100.0 * b.adjuster_extension[0].max()
+    assert b.lift[0, base].max() < 1e-6

@@ -1,0 +1,214 @@
+"""valvetrain tolerance (issue 27 item 2): sampled tolerances, failure probabilities, the same on every backend."""
+
+import json
+from pathlib import Path
+
+from click.testing import CliRunner
+import numpy as np
+import pytest
+from scipy.stats import norm
+
+from valvetrain import study as study_module
+from valvetrain.cli import main
+from valvetrain.tolerance import draw, unit_samples, wilson
+from valvetrain.specification import load_spec
+
+from appendix import appendix_text
+
+ROOT = Path(__file__).resolve().parents[1]
+
+THROAT = """
+[[tolerances]]
+key = "valves.intake.throat_diameter_mm"
+distribution = "normal"
+sigma = 0.4
+"""
+
+DYNAMICS = """
+[[tolerances]]
+key = "valves.intake.clearance_mm"
+distribution = "uniform"
+half_range = 0.05
+
+[[tolerances]]
+key = "valves.intake.drive.masses.valve_kg"
+distribution = "normal"
+sigma = 0.002
+low = 0.05
+high = 0.06
+"""
+
+
+def tolerance(spec_file, out, *extra, code=0):
+    result = CliRunner().invoke(main, ["tolerance", str(spec_file), "--out", str(out), *extra])
+    assert result.exit_code == code, result.output
+    return result
+
+
+def outputs(out):
+    """The records (sorted by sample) and the results of a study folder."""
+    lines = (out / "records.jsonl").read_text(encoding="utf-8").splitlines()
+    records = sorted((json.loads(line) for line in lines[1:]), key=lambda r: r["index"])
+    return records, json.loads((out / "tolerance.json").read_text(encoding="utf-8"))
+
+
+def test_failure_probability_of_a_linear_margin(tmp_path):
+    """throat diameter / bore >= 0.46 (hemispherical chamber): with the throat d ~ N(37.0 mm, 0.4 mm) and the bore 80
+    mm, the check fails when d < 36.8 mm: P = Phi((36.8 - 37.0)/0.4) = Phi(-0.5) = 0.3085 (closed form); the
+    study's estimate must hold it within its 95 % Wilson interval.  The margin (d/80 - 0.46)/0.46 rises with d
+    alone: its rank correlation with the throat is 1."""
+    path = tmp_path / "engine.toml"
+    path.write_text(appendix_text().replace("throat_diameter_mm = 36.8", "throat_diameter_mm = 37.0") + THROAT,
+                    encoding="utf-8")
+    tolerance(path, tmp_path / "out", "--samples", "200", "--seed", "7")
+    c = outputs(tmp_path / "out")[1]["checks"]["intake:flow.throat_to_bore"]
+    exact = norm.cdf(-0.5)
+    low, high = c["confidence_95"]
+    assert c["samples"] == 200 and low <= exact <= high
+    assert c["sensitivities"]["valves.intake.throat_diameter_mm"] == pytest.approx(1.0)
+
+
+def test_wilson_interval_against_newcombe():
+    """Newcombe (1998), Table I, method 3 (the score interval): 81/263 ->
+    0.2553-0.3662, 15/148 -> 0.0624-0.1605, 0/20 -> 0-0.1611."""
+    for k, n, expected in ((81, 263, (0.2553, 0.3662)), (15, 148, (0.0624, 0.1605)), (0, 20, (0.0, 0.1611))):
+        assert wilson(k, n) == pytest.approx(expected, abs=5e-5)
+
+
+def test_latin_hypercube_strata():
+    """A Latin hypercube of n points has exactly one point in each of the n equal strata of every coordinate
+    (McKay, Beckman and Conover (1979)); Monte Carlo samples in general do not."""
+    n = 50
+    u = unit_samples(n, 3, "lhs", seed=3)
+    for j in range(3):
+        assert sorted(np.floor(u[:, j] * n).astype(int)) == list(range(n))
+    mc = unit_samples(n, 3, "mc", seed=3)
+    assert sorted(np.floor(mc[:, 0] * n).astype(int)) != list(range(n))
+
+
+def test_normal_tolerance_is_stratified_in_probability(tmp_path):
+    """A normal tolerance drawn by its inverse distribution function from a Latin hypercube: Phi((x - mu)/sigma)
+    has one value in each of the n strata of (0, 1)."""
+    path = tmp_path / "engine.toml"
+    path.write_text(appendix_text() + THROAT, encoding="utf-8")
+    x = draw(load_spec(path), [36.8], 40, "lhs", seed=1)[:, 0]
+    strata = np.floor(norm.cdf((x - 36.8) / 0.4) * 40).astype(int)
+    assert sorted(strata) == list(range(40))
+
+
+@pytest.fixture(scope="module")
+def spec_file(tmp_path_factory):
+    """The pushrod example with a short one-mass sweep (the dynamics headlines are in the records)."""
+    text = (ROOT / "examples" / "pushrod-dynamics.toml").read_text(encoding="utf-8").replace("speeds = 200", "speeds = 12")
+    path = tmp_path_factory.mktemp("tolerance") / "engine.toml"
+    path.write_text(text + DYNAMICS, encoding="utf-8")
+    return path
+
+
+ARGS = ["--samples", "6", "--method", "lhs", "--seed", "11"]
+
+
+@pytest.fixture(scope="module")
+def serial(spec_file, tmp_path_factory):
+    out = tmp_path_factory.mktemp("serial") / "out"
+    tolerance(spec_file, out, *ARGS)
+    return outputs(out)
+
+
+def test_serial_records(serial):
+    records, results = serial
+    assert [r["index"] for r in records] == list(range(6))
+    assert all(r["record"]["status"] == "ok" for r in records)
+    head = results["headlines"]["intake"]
+    assert head["jump_speed_rpm"]["n"] + head["max_seating_velocity_m_s"]["n"] > 0
+    assert {t["key"] for t in results["tolerances"]} == {"valves.intake.clearance_mm",
+                                                         "valves.intake.drive.masses.valve_kg"}
+
+
+def test_local_processes_give_the_same_records(spec_file, serial, tmp_path):
+    tolerance(spec_file, tmp_path / "out", *ARGS, "--workers", "2")
+    assert outputs(tmp_path / "out") == serial
+
+
+def test_dask_cluster_gives_the_same_records(spec_file, serial, tmp_path, monkeypatch):
+    """A threaded local cluster, tasks of 3 samples (one task per worker thread)."""
+    distributed = pytest.importorskip("distributed")
+    monkeypatch.setattr(study_module, "DASK_TASKS_PER_THREAD", 1)
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=False, dashboard_address=None) as c:
+        tolerance(spec_file, tmp_path / "out", *ARGS, "--scheduler", c.scheduler_address)
+    assert outputs(tmp_path / "out") == serial
+
+
+def test_resume_after_interruption(spec_file, serial, tmp_path):
+    """A records file cut after three samples and half a line (a run killed while writing): the run again designs
+    the three samples missing and gives the results of the uninterrupted run."""
+    out = tmp_path / "out"
+    tolerance(spec_file, out, *ARGS)
+    lines = (out / "records.jsonl").read_text(encoding="utf-8").splitlines()
+    (out / "records.jsonl").write_text("\n".join(lines[:4]) + "\n" + lines[4][:40], encoding="utf-8")
+    (out / "tolerance.json").unlink()
+    result = tolerance(spec_file, out, *ARGS)
+    assert "3 samples designed (3 kept from before)" in result.output
+    assert outputs(out) == serial
+
+
+def test_other_inputs_in_the_folder_are_refused(spec_file, serial, tmp_path):
+    out = tmp_path / "out"
+    tolerance(spec_file, out, *ARGS)
+    before = (out / "records.jsonl").read_text(encoding="utf-8")
+    result = tolerance(spec_file, out, "--samples", "6", "--method", "lhs", "--seed", "12", code=2)
+    assert "records of another study" in result.output
+    assert (out / "records.jsonl").read_text(encoding="utf-8") == before
+
+
+def test_a_folder_with_user_files_is_refused(spec_file, tmp_path):
+    out = tmp_path / "out"
+    out.mkdir()
+    (out / "notes.txt").write_text("mine", encoding="utf-8")
+    result = tolerance(spec_file, out, *ARGS, code=2)
+    assert "did not write" in result.output
+    assert sorted(p.name for p in out.iterdir()) == ["notes.txt"]
+
+
+@pytest.mark.parametrize("entry, said", [
+    ('key = "valves.intake.no_such_mm"\ndistribution = "uniform"\nhalf_range = 0.1',
+     "valves.intake.no_such_mm: no such key"),
+    ('key = "valves.intake.clearance_mm"\ndistribution = "uniform"\nhalf_range = 0.3',
+     "valves.intake.clearance_mm"),
+    ('key = "engine.bore_mm"\ndistribution = "normal"\nsigma = 1.0\nlow = 70.0\nhigh = 3000.0',
+     "engine.bore_mm"),
+])
+def test_bad_tolerances_are_refused_before_sampling(entry, said, tmp_path):
+    """Clearance 0.25 -+ 0.3 mm reaches -0.05 mm (allowed 0 or 0.01-5 mm); a bore truncated at 3000 mm leaves
+    5-2000 mm."""
+    path = tmp_path / "engine.toml"
+    path.write_text(appendix_text() + "\n[[tolerances]]\n" + entry + "\n", encoding="utf-8")
+    result = tolerance(path, tmp_path / "out", "--samples", "4", code=2)
+    assert said in result.output and "error: " in result.output
+    assert not (tmp_path / "out").exists()
+
+
+def test_distribution_parameters_are_checked(tmp_path):
+    path = tmp_path / "engine.toml"
+    path.write_text(appendix_text() + '\n[[tolerances]]\nkey = "engine.bore_mm"\ndistribution = "normal"\n'
+                    'half_range = 1.0\n', encoding="utf-8")
+    result = tolerance(path, tmp_path / "out", "--samples", "4", code=2)
+    assert "engine.bore_mm: a normal distribution takes sigma" in result.output
+
+
+@pytest.mark.parametrize("lang, word", [("en", "Tolerance study"), ("ru", "Расчёт влияния допусков")])
+def test_report_has_a_row_and_a_histogram_per_failing_check(serial, lang, word):
+    """One table row and one margin histogram per check that fails in some sample, one histogram per dynamics
+    headline with values; the check named in the report's language from the catalogue."""
+    from valvetrain.locale import check_text
+    from valvetrain.report.tolerance import report_html
+
+    results = serial[1]
+    html = report_html(results, lang)
+    failing = [c for c in results["checks"].values() if c["failures"]]
+    heads = [d for hs in results["headlines"].values() for d in hs.values() if d is not None]
+    assert word in html
+    assert html.count("<svg") == len(failing) + len(heads) and html.count("<tr>") == 1 + len(
+        results["tolerances"]) + 1 + len(failing)
+    for c in failing:
+        assert check_text(c["code"], c["params"], lang) in html
