@@ -2,6 +2,10 @@
 Valve-train practical works (n.d.): intake opens 26 deg before the TDC and closes 78 deg after the BDC, Phi = 27 + 6
 + 38 = 71 cam deg from the end of the ramp to the nose)."""
 
+import re
+
+from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.text import Text
 import numpy as np
 import pytest
 
@@ -64,3 +68,38 @@ def test_the_timing_diagram_writes_the_events(results):
     assert d["events_crank_deg"]["intake"] == pytest.approx((-26.0, 258.0))
     texts = [t.get_text() for t in plots.draw_timing(d, TEXT["en"]).axes[0].texts]
     assert "-26°" in texts and "258°" in texts
+
+
+def _tick_texts(fig):
+    """The tick labels and offsets of a drawn figure, as the PNG shows them (the secondary axes' too)."""
+    FigureCanvasAgg(fig).draw()
+    return [text for ax in plots.every_axes(fig)
+            for axis in (ax.xaxis, ax.yaxis)
+            for text in [label.get_text() for label in axis.get_ticklabels()] + [axis.get_offset_text().get_text()]]
+
+
+def test_the_russian_figures_number_their_ticks_with_a_decimal_comma(results):
+    """Russian writes decimals with a comma (0,5), English with a point (0.5): the time-area figure's ticks (steps of
+    0.5) in each language, and the comma set by the drawing, not by the process's locale."""
+    v = results.valves["intake"]
+    russian, english = (_tick_texts(plots.time_area_figure(v, TEXT[lang])) for lang in ("ru", "en"))
+    assert any("," in text for text in russian) and not any("." in text for text in russian), russian
+    assert any("." in text for text in english) and not any("," in text for text in english), english
+    for make in plots.FIGURES.values():                      # no Russian figure shows a decimal point
+        fig = make(v, TEXT["ru"])
+        assert not any("." in text for text in _tick_texts(fig)), make
+        ticks = {id(label) for ax in plots.every_axes(fig)
+                 for axis in (ax.xaxis, ax.yaxis)
+                 for tick in axis.get_major_ticks() + axis.get_minor_ticks() for label in (tick.label1, tick.label2)}
+        texts = [text.get_text() for text in fig.findobj(Text) if id(text) not in ticks]  # titles, legends, notes
+        assert not [text for text in texts if re.search(r"\d\.\d", text)], make
+
+
+def test_the_jerk_impulses_are_written_with_a_decimal_comma_in_russian(results):
+    """The kinematics figure writes each acceleration step of the Kurz law beside its arrow (the appendix's law has
+    steps): '+1234,5'-like in Russian, '+1234.5'-like in English."""
+    v = results.valves["intake"]
+    texts = {lang: [text.get_text() for text in plots.kinematics_figure(v, TEXT[lang]).findobj(Text)
+                    if re.fullmatch(r"[+-][\d.,·⁰¹²³⁴⁵⁶⁷⁸⁹⁻]+", text.get_text())] for lang in ("en", "ru")}
+    assert texts["en"] and len(texts["en"]) == len(texts["ru"])
+    assert [text.replace(".", ",") for text in texts["en"]] == texts["ru"]

@@ -8,17 +8,27 @@ printed, to 4 significant figures) to its printed result, and the lines give the
   kurz_coefficients, the manual's appendix);
 - pushrod 8/5 mm, 220 mm, E = 210000 MPa: J = pi (8^4 - 5^4)/64 = 170.41 mm4, P_E = pi^2 210000 170.41 / 220^2
   = 7297 N;
+- polydyne p = 8 (q, r, s = 14, 20, 26): C_2 = -8 x 14 x 20 x 26 / (6 x 12 x 18 x 24) = -58240 / 31104 = -1.872
+  (the closed form's docstring example, -1.87243); a polydyne with a ramp (no closed form) has no lines;
+- the diesel's power-polynomial ramp (S_b = 0.8 mm, phi_0 = 12 deg = 0.20944 rad, v_qb = 6 mm/rad), by hand from
+  A + B + C = 0, A + B/2 + C/3 = v/phi_0, A/2 + B/6 + C/12 = S/phi_0^2: A_0 = 12 x 18.238 - 6 x 28.648
+  = 46.97 mm/rad2 (the docstring example of ramp_coefficients: 46.966, -15.978, -30.988);
+- the roller finger of modern-dohc-roller-finger (r_r = 8.75 mm, b = 14 mm, E = 210000 MPa): sigma = 0.418
+  sqrt(P E (1/rho + 1/r_r) / b) with the force and the cam's radius at the worst angle; by hand for the intake,
+  0.418 x sqrt(891.8 x 210000 x (1/10.76 + 1/8.75) / 14) = 0.418 x 1664.9 = 695.9 MPa;
 - crank R = 38.571 mm, n = 7000 rpm: omega = 733.04 rad/s, m_j = 0.38 + 0.1375 = 0.5175 kg, m_r = 0.45 + 0.3625
   = 0.8125 kg, K_R = -0.8125 x 0.038571 x 733.04^2 = -16840 N.
 """
 
 import math
+from pathlib import Path
 import re
 
 import pytest
 
 from valvetrain.design import run
 from valvetrain.report.html import _material
+from valvetrain.specification import load_spec
 from valvetrain.report.worked import crank_lines, flow_lines, law_lines, spring_lines, strength_lines, time_area_lines
 from valvetrain.tables import lift_table_columns
 from valvetrain.units import UNITS
@@ -97,3 +107,65 @@ def test_the_lines_give_the_hand_calculation(results):
     assert by_symbol["J"]["result"] == "170.4 mm⁴" and _value(by_symbol["P_E"]["result"]) == pytest.approx(7297, abs=1)
     assert by_symbol["ω"]["result"] == "733 rad/s" and by_symbol["m_j"]["result"] == "0.5175 kg"
     assert by_symbol["m_r"]["result"] == "0.8125 kg" and by_symbol["K_R"]["result"] == "-16840 N"
+
+
+LAW_EXAMPLES = {"seed000-polydyne.toml": 5, "ukrsurt2019-diesel.toml": 4}
+"""Examples whose laws are not Kurz laws, and how many law lines they print (an unramped polydyne 5, a ramped one
+none; the power-polynomial law's ramp 3 and its negative amplitude 1)."""
+
+
+@pytest.fixture(scope="module")
+def law_examples():
+    examples = Path(__file__).parents[2] / "examples"
+    return {name: run(load_spec(examples / name)) for name in LAW_EXAMPLES}
+
+
+def _law_lines(results, lang):
+    return [line for v in results.valves.values() for line in law_lines(v.law, v.cam, lang)]
+
+
+@pytest.mark.parametrize("lang", ["en", "ru"])
+@pytest.mark.parametrize("example", sorted(LAW_EXAMPLES))
+def test_law_lines_of_other_laws_evaluate_to_their_results(law_examples, example, lang):
+    lines = _law_lines(law_examples[example], lang)
+    assert len(lines) == LAW_EXAMPLES[example]
+    for line in lines:
+        assert evaluate(line, lang) == pytest.approx(_value(line["result"]), rel=3e-3), line
+
+
+def test_law_lines_of_other_laws_give_the_hand_calculation(law_examples):
+    polydyne = {line["symbol"]: line for line in _law_lines(law_examples["seed000-polydyne.toml"], "en")}
+    assert polydyne["C_2"]["result"] == "-1.872" and -58240 / 31104 == pytest.approx(-1.87243, abs=5e-6)
+    assert polydyne["C_2"]["substituted"] == "−8 × 14 × 20 × 26 / ((8 − 2) × (14 − 2) × (20 − 2) × (26 − 2))"
+    diesel = {line["symbol"]: line for line in _law_lines(law_examples["ukrsurt2019-diesel.toml"], "en")}
+    assert diesel["A_0"]["result"] == "46.97 mm/rad²" and diesel["B_0"]["result"] == "-15.98 mm/rad²"
+    assert diesel["C_0"]["result"] == "-30.99 mm/rad²"
+    assert 12 * 0.8 / math.radians(12) ** 2 - 6 * 6 / math.radians(12) == pytest.approx(46.966, abs=1e-3)
+
+
+@pytest.fixture(scope="module")
+def roller_example():
+    return run(load_spec(Path(__file__).parents[2] / "examples" / "modern-dohc-roller-finger.toml"))
+
+
+def _contact_lines(results, lang):
+    spec = results.spec.model_dump()
+    return [line for name, v in results.valves.items()
+            for line in strength_lines(spec["valves"][name]["parts"], v.summary["strength"],
+                                       lift_table_columns(v.table), v.cam.follower, lang, v.cam.roller_radius * 1e3)
+            if line["symbol"] in ("σ_c", "σ_к")]
+
+
+@pytest.mark.parametrize("lang", ["en", "ru"])
+def test_the_roller_contact_line_evaluates_to_its_result(roller_example, lang):
+    lines = _contact_lines(roller_example, lang)
+    assert len(lines) == 2  # intake and exhaust, both on roller fingers
+    for line in lines:
+        assert "1/8" + (",75" if lang == "ru" else ".75") in line["substituted"]  # the roller's radius is in it
+        assert evaluate(line, lang) == pytest.approx(_value(line["result"]), rel=3e-3), line
+
+
+def test_the_roller_contact_line_gives_the_hand_calculation(roller_example):
+    intake = _contact_lines(roller_example, "en")[0]
+    assert intake["result"] == "695.9 MPa"
+    assert 0.418 * math.sqrt(891.8 * 210000 * (1 / 10.76 + 1 / 8.75) / 14) == pytest.approx(695.9, abs=0.2)

@@ -279,6 +279,8 @@ class StrengthResult:
     not_checked: tuple[str, ...] = ()  # the checks whose parts are not given, each with the keys missing
     rated_speed: float = 0.0       # the engine's rated speed [rad/s] (for the plot)
     finger: Optional[FingerLoads] = quantity("finger", flatten=True, default=None)
+    contact_force: Optional[float] = quantity("cam_contact_force_N", "N", "cam force where the contact stress is "
+                                              "largest", omit_none=True, default=None)
 
 
 @dataclass(frozen=True)
@@ -293,12 +295,14 @@ class LoadMap:
 
 @dataclass(frozen=True)
 class Worst:
-    """The largest value of a quantity over the load maps, and where: engine speed [rad/s], cam angle [rad]."""
+    """The largest value of a quantity over the load maps, and where: engine speed [rad/s], cam angle [rad]; the cam
+    force there [N]."""
 
     value: float
     speed: float
     angle: float
     kind: str
+    force: float
 
 
 @dataclass(frozen=True)
@@ -575,7 +579,7 @@ def _worst(maps, values):
     for m, q in zip(maps, values, strict=True):
         i, j = np.unravel_index(int(np.argmax(q)), q.shape)
         if best is None or q[i, j] > best.value:
-            best = Worst(float(q[i, j]), float(m.speeds[i]), float(m.theta[j]), m.kind)
+            best = Worst(float(q[i, j]), float(m.speeds[i]), float(m.theta[j]), m.kind, float(m.force[i, j]))
     return best
 
 
@@ -726,7 +730,7 @@ def _strength(valve, cam, theta, maps, p_open, valve_load):
         None if stress is None else stress.angle, None if stress is None else stress.speed,
         None if side is None else side.value, None if side is None else side.angle,
         None if side is None else side.speed, _per_speed(maps, stresses),
-        tuple(verdicts), tuple(notes)), found
+        tuple(verdicts), tuple(notes), contact_force=None if stress is None else stress.force), found
 
 
 def _per_speed(maps, stresses=None):

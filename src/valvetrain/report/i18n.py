@@ -96,7 +96,7 @@ TEXT = {
         "gr_title": "grinding: master cam and wheel wear", "gr_cam": "cam", "gr_wheel_path": "wheel-centre path",
         "gr_master": "master cam", "gr_contours": "cam, wheel-centre path and master to scale",
         "gr_exact": "exact (re-enveloped)", "gr_first_order": "first order", "gr_error_um": "lift error, µm",
-        "gr_error_title": "lift error of a wheel worn by {wear:g} mm",
+        "gr_error_title": "lift error of a wheel worn by {wear} mm",
         "gr_not_grindable": "the wheel cannot grind this cam: no wear error",
         "gr_files": "Files for manufacture", "gr_no_master": "No master is written: the wheel cannot grind the cam "
                     "or the master roller cannot follow the master (see the failure checks)",
@@ -271,7 +271,7 @@ TEXT = {
         "gr_title": "шлифование: копир и износ круга", "gr_cam": "кулачок", "gr_wheel_path": "траектория центра круга",
         "gr_master": "копир", "gr_contours": "кулачок, траектория центра круга и копир в масштабе",
         "gr_exact": "точно (огибающая)", "gr_first_order": "первое приближение", "gr_error_um": "погрешность подъёма, мкм",
-        "gr_error_title": "погрешность подъёма при износе круга {wear:g} мм",
+        "gr_error_title": "погрешность подъёма при износе круга {wear} мм",
         "gr_not_grindable": "круг не может шлифовать этот кулачок: погрешность от износа не считается",
         "gr_files": "Файлы для изготовления", "gr_no_master": "Копир не записан: круг не может шлифовать кулачок "
                     "или ролик копира не может обкатывать копир (см. недопустимые значения)",
@@ -571,7 +571,7 @@ TEXT["en"].update({
                      "cycle is the engine's as given (its blowdown does not wait for the valve), the effects are "
                      "against the same drive without the force",
     "hy_gas_source": "Cylinder pressure",
-    "hy_stop": "stop (end of the stroke)", "hy_lift_off": "valve leaves its seat (gas force {force:.3g} kN)",
+    "hy_stop": "stop (end of the stroke)", "hy_lift_off": "valve leaves its seat (gas force {force} kN)",
     "hy_sweep": "Speed sweep (one revolution per speed)",
     "hy_sweep_title": "hydraulic drive against engine speed", "hy_sweep_table": "Table against engine speed",
     "hy_max_pressure": "largest pressure, MPa", "hy_lift_loss": "lift loss, mm", "hy_delay": "delay, cam deg",
@@ -624,7 +624,7 @@ TEXT["ru"].update({
                      "заданный цикл двигателя (выпуск не ждёт открытия клапана), влияние силы — по сравнению с тем же "
                      "приводом без неё",
     "hy_gas_source": "Давление в цилиндре",
-    "hy_stop": "упор (конец хода)", "hy_lift_off": "клапан отходит от седла (сила газов {force:.3g} кН)",
+    "hy_stop": "упор (конец хода)", "hy_lift_off": "клапан отходит от седла (сила газов {force} кН)",
     "hy_sweep": "Расчёт по частоте вращения (один оборот на каждой частоте)",
     "hy_sweep_title": "гидропривод в зависимости от частоты вращения двигателя",
     "hy_sweep_table": "Таблица по частоте вращения двигателя",

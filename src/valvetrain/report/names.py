@@ -284,6 +284,8 @@ NAMES = {
     "valve_force_max": ("max force at the valve", "наибольшая сила на клапане"),
     "gas_force_at_opening": ("gas force at the valve's opening", "сила давления газов в момент открытия"),
     "cam_contact_stress_cam": ("cam angle of the max contact stress", "угол ПРВ наибольшего контактного напряжения"),
+    "cam_contact_force": ("cam load at the max contact stress",
+                          "нагрузка на кулачок при наибольшем контактном напряжении"),
     "camshaft_deflection": ("camshaft deflection", "стрела прогиба распределительного вала"),
     "cam_contact_stress": ("contact stress of the cam", "контактное напряжение кулачка"),
     "tappet_side_pressure": ("side pressure on the tappet", "удельное давление на боковую поверхность толкателя"),

@@ -15,6 +15,7 @@ import io
 import itertools
 
 from matplotlib.figure import Figure
+from matplotlib.ticker import ScalarFormatter
 import numpy as np
 
 from ..design.dynamics import event_window
@@ -24,6 +25,33 @@ from ..units import MM, per_cam_degree, rad_to_deg, to_display
 from .i18n import TEXT
 from .names import value_text
 from .numbers import number
+
+
+class DecimalComma(ScalarFormatter):
+    """Matplotlib's plain tick labels (and their offset, ``1e6``) with a decimal comma: the Russian figures'
+    numbers, set per axis, not through the process's locale."""
+
+    def __call__(self, x, pos=None):
+        return super().__call__(x, pos).replace(".", ",")
+
+    def get_offset(self):
+        return super().get_offset().replace(".", ",")
+
+
+def every_axes(fig) -> list[Any]:
+    """The axes of ``fig`` and their secondary axes (``secondary_xaxis``: children of an axes, not in ``fig.axes``)."""
+    return [*fig.axes, *(child for ax in fig.axes for child in ax.child_axes)]
+
+
+def _localised(fig, t) -> Figure:
+    """``fig`` with a :class:`DecimalComma` on every axis of plain numbers when ``t`` is the Russian texts (an axis of
+    angles of a polar plot or a logarithmic one keeps its own formatter); the English figures keep the point."""
+    if t["lang"] == "ru":
+        for ax in every_axes(fig):
+            for axis in (ax.xaxis, ax.yaxis):
+                if type(axis.get_major_formatter()) is ScalarFormatter:
+                    axis.set_major_formatter(DecimalComma())
+    return fig
 
 
 def _segment_lines(ax, law):
@@ -51,10 +79,10 @@ def jerk_impulses(ax, law, cam_speed, color="C3", label=None) -> None:
     draw_jerk_impulses(ax, impulse_steps(law, cam_speed), color, label)
 
 
-def draw_jerk_impulses(ax, steps, color="C3", label=None) -> None:
+def draw_jerk_impulses(ax, steps, color="C3", label=None, lang="en") -> None:
     """Mark jerk impulses on a jerk axis: an arrow at each acceleration step ``(angle [deg], step [m/s^2])``, up for
     a rise of the acceleration and down for a fall, reaching the edge of the axis (an impulse has no finite height),
-    with the step written beside it.  Call it after the curves are drawn (the arrows take the axis' extent)."""
+    with the step written beside it (by :func:`number`'s rule in ``lang``).  Call it after the curves are drawn (the arrows take the axis' extent)."""
     if not steps:
         return
     low, high = ax.get_ylim()
@@ -65,7 +93,7 @@ def draw_jerk_impulses(ax, steps, color="C3", label=None) -> None:
         tip = 0.92 * (high if size > 0.0 else low)
         ax.annotate("", xy=(x, tip), xytext=(x, 0.0), arrowprops={"arrowstyle": "-|>", "color": color, "lw": 1.2})
         ax.plot([x], [0.0], marker="o", color=color, ms=4, label=label if n == 0 else None)
-        ax.annotate(f"{size:+.4g}", xy=(x, tip), xytext=(3, 0), textcoords="offset points", fontsize=7, color=color,
+        ax.annotate(("+" if size > 0.0 else "") + number(size, lang), xy=(x, tip), xytext=(3, 0), textcoords="offset points", fontsize=7, color=color,
                     va="top" if size > 0.0 else "bottom")
 
 
@@ -106,7 +134,7 @@ def draw_kinematics(d, t) -> Figure:
         ax.axhline(0.0, color="0.5", lw=0.5)
         _boundary_lines(ax, d["boundaries_deg"])
     if d["impulses"]:
-        draw_jerk_impulses(axes[-1], d["impulses"])
+        draw_jerk_impulses(axes[-1], d["impulses"], lang=t["lang"])
         axes[-1].set_title(t["jerk_impulse"], fontsize=8, color="C3", loc="right")
     axes[1].legend(loc="upper right", fontsize=8)
     axes[-1].set_xlabel(t["cam_deg"])
@@ -115,7 +143,7 @@ def draw_kinematics(d, t) -> Figure:
     top.set_xlabel(t["crank_deg"])
     fig.suptitle(f"{d['name']}: {value_text(d['law'], t['lang'])}")
     fig.subplots_adjust(left=0.15, right=0.96, bottom=0.07, top=0.9, hspace=0.21)
-    return fig
+    return _localised(fig, t)
 
 
 def kinematics_figure(valve, t) -> Figure:
@@ -160,7 +188,7 @@ def draw_strength_speed(d, t) -> Figure:
     axes[-1].set_xlabel(t["engine_speed"])
     fig.suptitle(f"{d['name']}: {t['strength_speed_title']}")
     fig.subplots_adjust(left=0.12, right=0.95, bottom=0.1, top=0.91)
-    return fig
+    return _localised(fig, t)
 
 
 def strength_speed_figure(valve, t) -> Figure:
@@ -228,7 +256,7 @@ def draw_contour(d, t) -> Figure:
     ax.grid(alpha=0.3)
     ax.set_title(f"{d['name']}: {t['contour']}")
     fig.subplots_adjust(left=0.1, right=0.97, bottom=0.09, top=0.94)
-    return fig
+    return _localised(fig, t)
 
 
 def contour_figure(valve, t) -> Figure:
@@ -262,7 +290,7 @@ def draw_time_area(d, t) -> Figure:
     ax2.set_ylabel(t["running_ta"], color="C3")
     ax.set_title(f"{d['name']}: {t['time_area'].split('. ', 1)[-1]}")
     fig.subplots_adjust(left=0.12, right=0.9, bottom=0.13, top=0.92)
-    return fig
+    return _localised(fig, t)
 
 
 def time_area_figure(valve, t) -> Figure:
@@ -313,7 +341,7 @@ def draw_curvature(d, t) -> Figure:
         ax2.set_ylabel(t["pressure_angle"], color="C2")
     ax.set_title(f"{d['name']}: {t['rho']}")
     fig.subplots_adjust(left=0.13, right=0.9, bottom=0.14, top=0.91)
-    return fig
+    return _localised(fig, t)
 
 
 def curvature_figure(valve, t) -> Figure:
@@ -354,7 +382,7 @@ def draw_spring(d, t) -> Figure:
     ax.legend(loc="upper left")
     ax.set_title(f"{d['name']}: {t['spring_title']}")
     fig.subplots_adjust(left=0.11, right=0.96, bottom=0.13, top=0.92)
-    return fig
+    return _localised(fig, t)
 
 
 def spring_figure(valve, t) -> Figure:
@@ -390,7 +418,7 @@ def draw_crank_forces(d, t) -> Figure:
     axes[-1].set_xticks(np.arange(0, x.max() + 1, 90))
     fig.suptitle(t["crank_forces"])
     fig.subplots_adjust(left=0.08, right=0.97, bottom=0.08, top=0.93, hspace=0.08)
-    return fig
+    return _localised(fig, t)
 
 
 def crank_forces_figure(crank, t) -> Figure:
@@ -420,7 +448,7 @@ def draw_crank_torque(d, t) -> Figure:
     ax.grid(alpha=0.3)
     ax.legend(loc="upper right", fontsize=8)
     fig.subplots_adjust(left=0.13, right=0.97, bottom=0.13, top=0.96)
-    return fig
+    return _localised(fig, t)
 
 
 def crank_torque_figure(crank, t) -> Figure:
@@ -453,7 +481,7 @@ def draw_crank_pin(d, t) -> Figure:
     ax.grid(alpha=0.3)
     ax.set_title(t["pin_polar"])
     fig.subplots_adjust(left=0.14, right=0.95, bottom=0.09, top=0.94)
-    return fig
+    return _localised(fig, t)
 
 
 def crank_pin_figure(crank, t) -> Figure:
@@ -479,7 +507,7 @@ def draw_two_stroke_ports(d, t) -> Figure:
     ax.grid(alpha=0.3)
     ax.legend()
     fig.subplots_adjust(left=0.1, right=0.97, bottom=0.14, top=0.96)
-    return fig
+    return _localised(fig, t)
 
 
 def two_stroke_ports_figure(ports, t) -> Figure:
@@ -504,7 +532,7 @@ def draw_two_stroke_speed(d, t) -> Figure:
     ax.grid(alpha=0.3)
     ax.legend()
     fig.subplots_adjust(left=0.1, right=0.97, bottom=0.14, top=0.95)
-    return fig
+    return _localised(fig, t)
 
 
 def two_stroke_speed_figure(ports, t) -> Figure:
@@ -553,7 +581,7 @@ def draw_timing(d, t) -> Figure:
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8)
     fig.subplots_adjust(left=0.09, right=0.96, bottom=0.16, top=0.92)
-    return fig
+    return _localised(fig, t)
 
 
 def timing_figure(valves, t) -> Figure:
@@ -595,7 +623,7 @@ def draw_dynamics_map(d, t) -> Figure:
     axes[1].set_title(t["dyn_contact_force"] + " (" + t["dyn_zero_is_jump"] + ")")
     axes[1].set_xlabel(t["cam_deg"])
     fig.subplots_adjust(left=0.1, right=0.97, bottom=0.08, top=0.94, hspace=0.13)
-    return fig
+    return _localised(fig, t)
 
 
 def dynamics_map_figure(name, d, t) -> Figure:
@@ -638,7 +666,7 @@ def draw_dynamics_speed(d, t) -> Figure:
     axes[0].legend(fontsize=8)
     axes[0].set_title(f"{d['name']}: {t['dyn_title']}")
     fig.subplots_adjust(left=0.1, right=0.97, bottom=0.08, top=0.94, hspace=0.1)
-    return fig
+    return _localised(fig, t)
 
 
 def dynamics_speed_figure(name, d, t) -> Figure:
@@ -694,10 +722,10 @@ def draw_grinding(d, t) -> Figure:
     right.set_xlabel(t["cam_deg"])
     right.set_ylabel(t["gr_error_um"])
     right.grid(alpha=0.3)
-    right.set_title(t["gr_error_title"].format(wear=d["wheel_wear_mm"]))
+    right.set_title(t["gr_error_title"].format(wear=number(d["wheel_wear_mm"], t["lang"])))
     fig.suptitle(f"{d['name']}: {t['gr_title']}")
     fig.subplots_adjust(left=0.08, right=0.98, bottom=0.12, top=0.87, wspace=0.16)
-    return fig
+    return _localised(fig, t)
 
 
 def grinding_figure(valve, t) -> Figure:
@@ -736,7 +764,7 @@ def draw_hydraulic(d, t) -> Figure:
         top.plot(x[cav], np.full(int(cav.sum()), d["vapour_MPa"]), "x", color="k", ms=3, label=t["hy_cavitation"])
     if d["lift_off"] is not None:
         angle, pressure, force = d["lift_off"]
-        top.plot(angle, pressure, "o", color="k", ms=5, label=t["hy_lift_off"].format(force=force))
+        top.plot(angle, pressure, "o", color="k", ms=5, label=t["hy_lift_off"].format(force=number(force, t["lang"])))
     top.set_ylabel(t["hy_pressure"])
     top.grid(alpha=0.3)
     top.legend(loc="upper right", fontsize=8)
@@ -749,7 +777,7 @@ def draw_hydraulic(d, t) -> Figure:
     bottom.legend(loc="upper right", fontsize=8)
     fig.suptitle(f"{d['name']}: {t['hy_title']}")
     fig.subplots_adjust(left=0.07, right=0.98, bottom=0.09, top=0.92, hspace=0.08)
-    return fig
+    return _localised(fig, t)
 
 
 def hydraulic_figure(valve, t) -> Figure:
@@ -795,7 +823,7 @@ def draw_hydraulic_sweep(d, t) -> Figure:
         axes[0].legend(fontsize=8)
     axes[0].set_title(f"{d['name']}: {t['hy_sweep_title']}")
     fig.subplots_adjust(left=0.08, right=0.97, bottom=0.08, top=0.94, hspace=0.12)
-    return fig
+    return _localised(fig, t)
 
 
 def hydraulic_sweep_figure(valve, t) -> Figure:
@@ -858,7 +886,7 @@ def draw_camshaft_torque(d, t) -> Figure:
     bottom.grid(alpha=0.3, axis="y")
     fig.suptitle(t["cs_torque_title"])
     fig.subplots_adjust(left=0.1, right=0.97, bottom=0.08, top=0.93, hspace=0.3)
-    return fig
+    return _localised(fig, t)
 
 
 def camshaft_torque_figure(shaft, t) -> Figure:

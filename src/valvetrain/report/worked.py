@@ -116,17 +116,25 @@ def time_area_lines(flow, cam, engine, count, lift_table, lang="en") -> list[dic
 
 
 def law_lines(law, cam, lang="en") -> list[dict[str, Any]]:
-    """The coefficients of a Kurz law from its segments (Valve-train practical works (n.d.), work 2, eqs.
-    (2.23)-(2.34)); no lines for another law (its coefficients are the table's).
+    """The coefficients of the valve's law with its numbers: a Kurz law's from its segments (Valve-train practical
+    works (n.d.), work 2, eqs. (2.23)-(2.34)), a polydyne's from its exponents (work 3, eqs. (3.4)-(3.8)), a
+    power-polynomial law's ramp and negative amplitude (UkrSURT Proceedings (2019), reconstructed); no lines for
+    another law (its coefficients are the table's).
 
     Parameters
     ----------
     law : valvetrain.laws.base.LiftLaw
-        The valve's law: a Kurz law's Phi1, Phi2, Phi3 [rad camshaft], Z and w' [m/rad].
+        The valve's law: a Kurz law's Phi1, Phi2, Phi3 [rad camshaft], Z and w' [m/rad]; a polydyne's ramp height
+        h_0 [m].
     cam : valvetrain.design.valve.CamResult
-        The law stage (tappet lift h_T max [mm], the coefficients [mm, rad]).
+        The law stage (tappet lift h_T max [mm], the coefficients [mm, rad, deg; dimensionless C of a polydyne]).
     """
-    if getattr(law, "name", None) != "kurz":
+    name = getattr(law, "name", None)
+    if name == "polydyne":
+        return _polydyne_lines(law, cam, lang)
+    if name == "power_polynomial":
+        return _power_polynomial_lines(law, cam, lang)
+    if name != "kurz":
         return []
     c = shown_value(cam, "coefficients")
     h = shown_value(cam, "tappet_lift")
@@ -149,6 +157,60 @@ def law_lines(law, cam, lang="en") -> list[dict[str, Any]]:
         _line("c_32", "−(2 c_11 − w′) / K_2", ("−(2 × {} − {}) / {}", [(c["c11"], "mm/rad"), (w, "mm/rad"),
                                                                       (c["K2"], "rad")]), c["c32"], "mm/rad2", lang),
     ]
+
+
+def _polydyne_lines(law, cam, lang):
+    """C_2 ... C_s of a polydyne from p, q, r, s (work 3, eqs. (3.4)-(3.8)) without a ramp; none with a ramp (the
+    coefficients solve a 5x5 system, no closed form; their check h_0 = h_nose (1 + sum C) loses its figures to the
+    cancellation of the sum about -1)."""
+    if law.ramp_height > 0.0:
+        return []
+    c = shown_value(cam, "coefficients")
+    p, q, r, s = (c[k] for k in "pqrs")
+    lines = [_line("C_2", "−p q r s / ((p − 2)(q − 2)(r − 2)(s − 2))",
+                   ("−{} × {} × {} × {} / (({} − 2) × ({} − 2) × ({} − 2) × ({} − 2))",
+                    [(x, "") for x in (p, q, r, s, p, q, r, s)]), c["C2"], "", lang)]
+    for k in "pqrs":   # C_k = (-1)^(k's place + 1) 2 (product of the others) / ((k - 2) product of the differences)
+        others = [o for o in "pqrs" if o != k]
+        pairs = [(max(o, k), min(o, k)) for o in others]
+        sign = "−" if k in "qs" else ""
+        lines.append(_line(
+            f"C_{k}", f"{sign}2 {' '.join(others)} / (({k} − 2)" + "".join(f"({a} − {b})" for a, b in pairs) + ")",
+            (f"{sign}2 × {{}} × {{}} × {{}} / (({{}} − 2)" + " × ({} − {})" * 3 + ")",
+             [(c[x], "") for x in (*others, k, *(x for pair in pairs for x in pair))]), c[f"C{k}"], "", lang))
+    return lines
+
+
+def _power_polynomial_lines(law, cam, lang):
+    """The ramp's A_0, B_0, C_0 from a(b) = 0, v(b) = v_qb, S(b) = S_b solved in closed form (A_0 = 12 S_b/phi_0^2
+    - 6 v_qb/phi_0, B_0 = 30 v_qb/phi_0 - 48 S_b/phi_0^2, C_0 = 36 S_b/phi_0^2 - 24 v_qb/phi_0) and, for the R2
+    reconstruction, the negative amplitude a_g = -v_e / (phi_2 (x_g I(r, s) + (1 - x_g) I(t, u))),
+    I(a, b) = (b/(a + 1) - a/(b + 1)) / (b - a) (UkrSURT Proceedings (2019), reconstructed in
+    :mod:`valvetrain.laws.power_polynomial`).  phi_0 is substituted in degrees times pi/180: the terms of B_0 nearly
+    cancel, and a 4-figure radian would not give its result."""
+    c = shown_value(cam, "coefficients")
+    sb, vqb, phi0 = shown_value(cam, "ramp_height"), to_display(law.v_qb, "mm/rad"), shown_value(cam, "ramp_angle")
+    lines = [
+        _line("A_0", "12 S_b / φ_0² − 6 v_b / φ_0", ("12 × {} / ({} × π/180)² − 6 × {} / ({} × π/180)",
+                                                   [(sb, "mm"), (phi0, "deg"), (vqb, "mm/rad"), (phi0, "deg")]),
+              c["A0_mm_rad2"], "mm/rad2", lang),
+        _line("B_0", "30 v_b / φ_0 − 48 S_b / φ_0²", ("30 × {} / ({} × π/180) − 48 × {} / ({} × π/180)²",
+                                                    [(vqb, "mm/rad"), (phi0, "deg"), (sb, "mm"), (phi0, "deg")]),
+              c["B0_mm_rad2"], "mm/rad2", lang),
+        _line("C_0", "36 S_b / φ_0² − 24 v_b / φ_0", ("36 × {} / ({} × π/180)² − 24 × {} / ({} × π/180)",
+                                                    [(sb, "mm"), (phi0, "deg"), (vqb, "mm/rad"), (phi0, "deg")]),
+              c["C0_mm_rad2"], "mm/rad2", lang),
+    ]
+    if c["reconstruction"] != "R2":
+        return lines
+
+    integral = "({} / ({} + 1) − {} / ({} + 1)) / ({} − {})"
+    return lines + [_line(
+        "a_g", "−v_e / (φ_2 (x_g I(r, s) + (1 − x_g) I(t, u))), I(a, b) = (b/(a + 1) − a/(b + 1)) / (b − a)",
+        (f"−{{}} / ({{}} × ({{}} × {integral} + (1 − {{}}) × {integral}))", [
+            (c["v_e_mm_rad"], "mm/rad"), (law.phi2, "rad"), (c["x_g"], ""),
+            *((c[k], "") for k in ("s", "r", "r", "s", "s", "r")), (c["x_g"], ""),
+            *((c[k], "") for k in ("u", "t", "t", "u", "u", "t"))]), c["a_g_mm_rad2"], "mm/rad2", lang)]
 
 
 def spring_lines(spring, material=None, cam_speed=None, lang="en") -> list[dict[str, Any]]:
@@ -202,7 +264,7 @@ def spring_lines(spring, material=None, cam_speed=None, lang="en") -> list[dict[
     return lines
 
 
-def strength_lines(parts, record, lift_table, follower, lang="en") -> list[dict[str, Any]]:
+def strength_lines(parts, record, lift_table, follower, lang="en", roller_radius=None) -> list[dict[str, Any]]:
     """The cam's contact stress at its worst point and the pushrod's buckling margin (Valve-train practical works
     (n.d.), eqs. (7.4)-(7.5), (7.8)-(7.10); Shang Hanji (1988), eq. 2.5), those the design checked.
 
@@ -212,29 +274,36 @@ def strength_lines(parts, record, lift_table, follower, lang="en") -> list[dict[
         The valve's ``[parts]`` inputs (cam width [mm], contact modulus [MPa], pushrod diameter, bore and length
         [mm] and modulus [MPa]).
     record : dict
-        The strength record (its checks, the worst speed [rpm] and angle [cam deg] of the contact stress, the
-        largest cam force per speed [N] and its angle [cam deg]).
+        The strength record (its checks, the angle [cam deg] of the largest contact stress and the cam force there
+        [N], the largest cam force [N]).
     lift_table : dict
         The valve's lift table (``cam_deg`` [cam deg], ``rho_mm`` [mm]): the cam's radius at the worst point.
     follower : str
-        ``flat`` or ``roller``: the contact stress is worked for a flat follower (1/rho_2 = 0).
+        ``flat`` (1/rho_2 = 0) or ``roller`` (1/rho_2 = 1/r_r); no contact line for another follower.
+    roller_radius : float, optional
+        r_r, the roller's radius [mm] of a roller follower.
 
     Notes
     -----
-    The contact line is shown where the worst contact stress is at the angle of the largest cam force of its
-    speed (the only force the record holds): the case of a flat follower loaded hardest at the nose.
+    The contact line is worked at the angle of the largest contact stress with the cam force there; the profile's
+    radius is the lift table's interpolated to that angle (negative on a concave flank).
     """
     checks, lines = record["checks"], []
-    contact, per = checks.get("cam_contact_stress"), record["per_speed"]
-    if contact is not None and follower == "flat":
-        i = int(np.argmin(np.abs(np.asarray(per["speed_rpm"]) - record["cam_contact_stress_speed_rpm"])))
-        if np.isclose(per["cam_force_max_cam_deg"][i], record["cam_contact_stress_cam_deg"], atol=1e-6):
-            rho = float(np.interp(record["cam_contact_stress_cam_deg"], lift_table["cam_deg"], lift_table["rho_mm"]))
-            factor = strength.HERTZ_LINE
-            lines.append(_line("σ_к" if lang == "ru" else "σ_c", f"{number(factor, lang)} √(P E / (b ρ))", (
+    contact, force = checks.get("cam_contact_stress"), record.get("cam_contact_force_N")
+    if contact is not None and force is not None:
+        rho = float(np.interp(record["cam_contact_stress_cam_deg"], lift_table["cam_deg"], lift_table["rho_mm"]))
+        factor, symbol = strength.HERTZ_LINE, "σ_к" if lang == "ru" else "σ_c"
+        if follower == "flat":
+            lines.append(_line(symbol, f"{number(factor, lang)} √(P E / (b ρ))", (
                 "{} × √({} × {} / ({} × {}))",
-                [(factor, ""), (per["cam_force_max_N"][i], "N"), (parts["contact_modulus_MPa"], "MPa"),
-                 (parts["cam_width_mm"], "mm"), (rho, "mm")]), contact["value"], "MPa", lang))
+                [(factor, ""), (force, "N"), (parts["contact_modulus_MPa"], "MPa"), (parts["cam_width_mm"], "mm"),
+                 (rho, "mm")]), contact["value"], "MPa", lang))
+        elif follower in ("roller", "finger") and roller_radius:
+            lines.append(_line(symbol, f"{number(factor, lang)} √(P E (1/ρ + 1/r_рол) / b)" if lang == "ru" else
+                               f"{number(factor, lang)} √(P E (1/ρ + 1/r_r) / b)", (
+                "{} × √({} × {} × (1/{} + 1/{}) / {})",
+                [(factor, ""), (force, "N"), (parts["contact_modulus_MPa"], "MPa"), (rho, "mm"),
+                 (roller_radius, "mm"), (parts["cam_width_mm"], "mm")]), contact["value"], "MPa", lang))
     buckling = checks.get("pushrod_buckling_margin")
     if buckling is not None:
         big, bore, e, length = (parts[k] or 0.0 for k in (
