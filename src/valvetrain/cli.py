@@ -79,7 +79,7 @@ def _echo_checks(results):
             click.echo(f"accepted failure: {w.statement}, allowed {w.range} "
                        f"({w.source}); reason: {w.reason}".replace("  ", " "))
     from .checks import tally
-    from .report.i18n import verdict
+    from .locale import verdict
 
     counts = tally(results.checks)
     sentence, numbers = verdict(counts)

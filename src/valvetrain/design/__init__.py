@@ -23,6 +23,7 @@ from ..checks import SEVERITIES, Check, apply_acceptances, check, failed, ranked
 from ..crank.pressure import PressureFileError
 from ..files import TableFileError
 from ..laws.records import LawRecord
+from ..locale import verdict
 from ..specification import Spec, SpecError, crank_geometry, si, spec_document, validate
 from ..specification.messages import Problem
 from ..specification.models import Dynamics
@@ -98,8 +99,6 @@ class DesignResults:
               "open failures, warnings, info")
 
     def __repr__(self):
-        from ..report.i18n import verdict
-
         e = record(self.engine)
         lines = [f"DesignResults: {e['name']} ({e['cylinders']} cyl., {e['bore_mm']:g} x {e['stroke_mm']:g} mm, "
                  f"{e['rated_speed_rpm']:g} rpm)", *("  " + line for line in verdict(tally(self.checks)))]
@@ -116,8 +115,6 @@ class DesignResults:
             head = "".join(f"<th>{escape(h)}</th>" for h in heads)
             body = "".join("<tr>" + "".join(f"<td>{escape(str(c))}</td>" for c in r) + "</tr>" for r in rows)
             return f"<table><tr>{head}</tr>{body}</table>"
-
-        from ..report.i18n import verdict
 
         warnings = [(w.severity, w.quantity, w.value_text, w.range, w.source) for w in self.warnings]
         accepted = [(w.severity, w.quantity, w.value_text, w.range, w.reason) for w in self.accepted]

@@ -7,6 +7,7 @@ in this folder, loaded once:
 * ``en.toml`` ``[record]``: the check's English text in ``results.json``, the console and ``[[accepted]]``;
 * ``LANG.toml`` ``[checks]``: the check as the report in ``LANG`` names it;
 * ``LANG.toml`` ``[springs]``: the springs whose own checks are named after them;
+* ``LANG.toml`` ``[verdict]``: the verdict of a design, the same on the command line, in the report and in ``repr``;
 * ``LANG.toml`` ``[designer]``: the words of the designer in the browser (``valvetrain serve``, :mod:`valvetrain.web`).
 
 ``{name}`` in a text stands for the parameter ``name``.  ``tests/locale/test_catalogue.py`` fails when a code lacks a
@@ -105,3 +106,17 @@ def code_table() -> str:
     lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
     lines += ["| " + " | ".join(cell.replace("|", "\\|") for cell in row) + " |" for row in rows]
     return "\n".join(lines)
+
+
+def verdict(counts, lang="en") -> tuple[str, str]:
+    """The verdict of a design in words: ``(sentence, counts)``, the same on the command line, in the report and in
+    ``repr``.
+
+    Parameters
+    ----------
+    counts : dict
+        :func:`valvetrain.checks.tally` of the design's checks.
+    lang : {"en", "ru"}
+    """
+    t = catalogue(lang)["verdict"]
+    return t["fail" if counts["failure"] else "pass"].format(**counts), t["counts"].format(**counts)

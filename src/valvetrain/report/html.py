@@ -26,7 +26,8 @@ from ..specification.si import si
 from ..tables import lift_table_columns
 from ..bibliography import WORKS, cited_in, corrections_notes
 from ..units import to_display
-from .i18n import SYMBOLS, TEXT, verdict
+from ..locale import verdict
+from .i18n import SYMBOLS, TEXT
 from .numbers import number, percent
 from .russian import russian_citations, russian_typography
 from .worked import crank_lines, flow_lines, law_lines, spring_lines, strength_lines, time_area_lines

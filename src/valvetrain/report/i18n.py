@@ -364,10 +364,6 @@ CHECK_TEXT = {
                           "given; they are not counted among the open warnings. An accepted failure stays a failure.",
         "ranking": "Failures first (an allowable limit or a physical limit), then warnings (a recommended range), then "
                    "remarks (info); within each, the farthest outside its range first.",
-        "verdict_pass": "No failure is open: every allowable and physical limit is met.",
-        "verdict_fail": "Failures open: {failure}; the design does not meet its limits.",
-        "verdict_counts": "{checks} checks; open: failures {failure}, warnings {warning}, info {info}; "
-                          "accepted in the specification: {accepted}",
     },
     "ru": {
         "severity": "Уровень", "reason": "Обоснование",
@@ -381,10 +377,6 @@ CHECK_TEXT = {
                           "остаётся нарушением.",
         "ranking": "Сначала нарушения пределов (допускаемые значения и физические пределы), затем предупреждения "
                    "(рекомендуемые пределы), затем справки; внутри каждой группы сначала наиболее далёкие от пределов.",
-        "verdict_pass": "Открытых нарушений нет: все условия прочности и работоспособности выполнены.",
-        "verdict_fail": "Открытых нарушений: {failure}; условия прочности и работоспособности не выполнены.",
-        "verdict_counts": "проверок: {checks}; открыто нарушений: {failure}, предупреждений: {warning}, справок: "
-                          "{info}; принято в исходных данных: {accepted}",
     },
 }
 """Texts of the check levels and the accepted checks, merged into :data:`TEXT`."""
@@ -392,20 +384,6 @@ CHECK_TEXT = {
 for _lang, _texts in CHECK_TEXT.items():
     TEXT[_lang].update(_texts)
 
-
-def verdict(counts, lang="en") -> tuple[str, str]:
-    """The verdict of a design in words: ``(sentence, counts)``, the same on the command line, in the report and in
-    ``repr``.
-
-    Parameters
-    ----------
-    counts : dict
-        :func:`valvetrain.checks.tally` of the design's checks.
-    lang : {"en", "ru"}
-    """
-    t = CHECK_TEXT[lang]
-    return (t["verdict_fail" if counts["failure"] else "verdict_pass"].format(**counts),
-            t["verdict_counts"].format(**counts))
 
 TEXT["en"].update({
     "lang": "en", "any": "any", "where": "Symbols",
