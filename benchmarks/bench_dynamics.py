@@ -242,6 +242,7 @@ OLD_KERNELS = """
 sys.path.insert(0, {folder!r})
 import baseline_kernels
 module.integrate_block = lambda *a: baseline_kernels.integrate_block(*a[:26], *a[28:-1])  # without the adjuster's
+module.integrate_block.signatures = baseline_kernels.integrate_block.signatures  # read by the compile notice
 """
 
 
