@@ -155,7 +155,9 @@ def test_drag_of_the_nose_changes_the_lift_and_a_check(designer):
     }""")
     drag(designer, *start)
     lift = model_data(designer, "handles-lift")
-    assert lift["y"][0] > 10.3                # the pointer went to 11 mm; the pan's first steps are not followed
+    # the pointer went to 11 mm, above the curve's highest point: the plot leaves room there (an edit tool drops the
+    # moves outside the plot's frame; with a range fitted tight to the curve the handle stopped at its first step)
+    assert lift["y"][0] == pytest.approx(11.0, abs=0.05)
     assert check_passes(designer, quantity)
     assert designer.get_by_label(re.compile(r"^max_lift_mm\b")).input_value().startswith(str(lift["y"][0])[:4])
 
@@ -208,10 +210,10 @@ def test_drag_of_a_peak_raises_the_acceleration_and_changes_the_checks(page, die
     # the valve's peak acceleration is a_qd x i x omega^2 (a flat extremum of the positive part, UkrSURT Proceedings
     # (2019) reconstruction R2): proportional to peak_acceleration_mm_per_rad2 (135.2 in the example), which the
     # drag scales by the new height over the old (the pointer went up to 1.6 times the height, short of where the
-    # valve would hit the piston; headless chromium's drag follows only its first steps)
+    # valve would hit the piston, and the peak follows it to the pixel)
     after = model_data(page, "handles-acceleration")
     rise = after["y"][after["name"].index("peak")] / y
-    assert rise > 1.01
+    assert rise == pytest.approx(1.6, rel=0.02)
     a_qd = float(page.get_by_label(re.compile(r"^peak_acceleration_mm_per_rad2\b")).input_value())
     assert a_qd / 135.2 == pytest.approx(rise, rel=5e-3)
     assert model_data(page, "checks")["value"] != before

@@ -190,3 +190,34 @@ def test_sweep_starts_when_the_page_has_drawn_the_newest_kinematics():
     d.redraw(sweep=False)                                 # a language or unit switch: no new sweep
     d.on_drawn("data", None, {"n": [newest + 1]})
     assert started == [newest]
+
+
+def test_points_of_an_inline_table_are_handles_moved_added_and_removed():
+    from measured_lobe import EXAMPLE, EXAMPLE_TABLE, inline_text
+    from valvetrain import api
+    from valvetrain.files import read_lift_table
+
+    angle, lift = read_lift_table(EXAMPLE_TABLE)
+    s = Session.start(inline_text(angle[::6], lift[::6]), EXAMPLE.parent)
+    h = {x.name: x for x in s.handles("intake")}
+    assert sorted(h, key=lambda n: int(n.split(".")[1])) == [f"point.{k}" for k in range(31)]
+    # the table is the appendix's lobe with its nose 3 crank deg late, at 116 + 3 = 119 crank deg (tests/laws/
+    # test_measured.py): its highest point, 122 crank deg, lies (122 - 119) / 2 = 1.5 cam deg after the nose
+    assert (h["point.16"].x, h["point.16"].y) == (pytest.approx(1.5, abs=0.1), pytest.approx(9.991, abs=5e-4))
+    assert s.drag("intake", "point.16", h["point.16"].x, 10.5)
+    cam = s.document["valves"]["intake"]["cam"]
+    assert (cam["table_angles_deg"][16], cam["table_lifts_mm"][16]) == (122.0, 10.5)
+    # dragged past its neighbour (134 crank deg) it stops 0.01 deg before it
+    assert s.drag("intake", "point.16", 20.0, 10.5)
+    assert cam is not s.document["valves"]["intake"]["cam"]
+    assert s.document["valves"]["intake"]["cam"]["table_angles_deg"][16:18] == [133.99, 134.0]
+    x, y = zip(*[(p.x, p.y) for p in s.handles("intake")], strict=True)
+    # a point added at 1.5 cam deg from the nose, (119 + 2 x 1.5 =) 122 crank deg, and the last one removed
+    assert s.set_points("intake", [*x[:-1], h["point.16"].x], [*y[:-1], 10.2])
+    cam = s.document["valves"]["intake"]["cam"]
+    assert len(cam["table_angles_deg"]) == 31 and cam["table_angles_deg"][-1] == 278.0
+    k = cam["table_lifts_mm"].index(10.2)
+    assert cam["table_angles_deg"][k] == pytest.approx(122.0, abs=0.2)
+    # the TOML saved reads back to the same design
+    again = api.design(tomllib.loads(s.toml()), dynamics=False)
+    assert again["series"]["intake"]["valve_lift_mm"] == s.good["series"]["intake"]["valve_lift_mm"]
