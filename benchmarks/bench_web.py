@@ -19,7 +19,7 @@ import sys
 import time
 import tomllib
 
-from playwright.sync_api import sync_playwright
+from playwright.sync_api import TimeoutError as PlaywrightTimeout, sync_playwright
 
 from valvetrain import api
 from valvetrain.specification import example_text
@@ -64,17 +64,22 @@ def main(drags=20):
             page.wait_for_function("() => window.Bokeh && Bokeh.documents.length > 0 && Bokeh.documents[0]"
                                    ".get_model_by_name('checks').source.get_length() > 0", timeout=60_000)
             page.wait_for_timeout(3000)
-            for _ in range(drags):
+            for drag in range(drags):
                 x, y, lift, per_mm = page.evaluate(PIXELS)
                 done = page.evaluate("() => [window.vtTimesDone || 0, window.vtSweepTimesDone || 0]")
                 step = (1 if lift < 9.5 else -1) * per_mm
                 page.mouse.move(x, y)
                 page.mouse.down()
-                page.mouse.move(x, y - step / 2, steps=4)
+                page.mouse.move(x, y - step / 2)         # at once: 300 ms within 5 px is a press, not a drag
                 page.mouse.move(x, y - step, steps=4)
                 page.mouse.up()
-                page.wait_for_function(f"() => (window.vtTimesDone || 0) > {done[0]} && "
-                                       f"(window.vtSweepTimesDone || 0) > {done[1]}", timeout=60_000)
+                try:
+                    page.wait_for_function(f"() => (window.vtTimesDone || 0) > {done[0]} && "
+                                           f"(window.vtSweepTimesDone || 0) > {done[1]}", timeout=60_000)
+                except PlaywrightTimeout:
+                    now = page.evaluate("() => [window.vtTimesDone || 0, window.vtSweepTimesDone || 0]")
+                    sys.exit(f"no redraw within 60 s of drag {drag + 1}: redraws (kinematics, sweep) {done} before, "
+                             f"{now} after; the nose at {lift:.3f} mm, {per_mm:.1f} px/mm")
             kinematic, sweep, arrived, server = page.evaluate("() => [window.vtTimes, window.vtSweepTimes, "
                                                               "window.vtTimesArrived, window.vtTimesServer]")
             browser.close()

@@ -221,3 +221,74 @@ def test_points_of_an_inline_table_are_handles_moved_added_and_removed():
     # the TOML saved reads back to the same design
     again = api.design(tomllib.loads(s.toml()), dynamics=False)
     assert again["series"]["intake"]["valve_lift_mm"] == s.good["series"]["intake"]["valve_lift_mm"]
+
+
+def test_kurz_peak_and_shape_factor_handles():
+    s = Session.start()
+    h = {x.name: x for x in s.handles("intake")}
+    # the Kurz law's positive acceleration is a half sine over phi1 (Valve-train practical works (n.d.), work 2):
+    # its peak at -phi_p0 + phi1 / 2 = -71 + 27 / 2 = -57.5 cam deg
+    assert h["peak"].x == pytest.approx(-57.5)
+    assert s.drag("intake", "peak", -58.5, h["peak"].y)
+    cam = s.document["valves"]["intake"]["cam"]
+    # phi1 = 2 x (71 - 58.5) = 25 cam deg; phi2 = 27 + 6 - 25 = 8 (the phi2/phi3 boundary at -38 stays)
+    assert (cam["phi1_deg"], cam["phi2_deg"], cam["phi3_deg"]) == (25.0, 8.0, 38.0)
+    series = s.good["series"]["intake"]
+    nose = float(np.interp(0.0, series["cam_deg"], series["valve_acceleration_m_s2"]))
+    assert s.drag("intake", "phi2", -38.0, 0.5 * nose)
+    assert s.document["valves"]["intake"]["cam"]["shape_factor"] == 0.5
+    # Z = j_T2K / j_T3K, the accelerations at the phi2/phi3 junction and at the nose (the law's definition, work 2)
+    series = s.good["series"]["intake"]
+    a = np.interp([-38.0, 0.0], series["cam_deg"], series["valve_acceleration_m_s2"])
+    assert a[0] / a[1] == pytest.approx(0.5, rel=1e-3)
+
+
+def test_polydyne_peak_handle_sets_p():
+    from pathlib import Path
+
+    examples = Path(__file__).parents[2] / "examples"
+    s = Session.start((examples / "seed000-polydyne.toml").read_text(encoding="utf-8"), examples)
+    h = {x.name: x for x in s.handles("intake")}
+    # h = h_nose (1 + C2 x^2 + Cp x^p + ...), x = theta / phi_p0; p = 8, q, r, s = 14, 20, 26: the closed-form
+    # coefficients (3.4)-(3.8) of Valve-train practical works (n.d.), work 3; the acceleration peaks where the third
+    # derivative, sum C_k k (k-1) (k-2) x^(k-3), vanishes: x = 0.8088 (its root in (0, 1) but x = 1, the start of
+    # lift, where the law makes it vanish; numpy's roots below), on the opening flank at -71 x 0.8088 = -57.43 cam
+    # deg (phi_p0 = (26 + 180 + 78) / 4 = 71)
+    c = {8: 1.87243, 14: -1.60494, 20: 0.74897, 26: -0.14403}
+    third = np.zeros(24)
+    for k, ck in c.items():
+        third[26 - k] = ck * k * (k - 1) * (k - 2)         # highest power (x^23) first
+    roots = np.roots(third)
+    x = [r.real for r in roots if abs(r.imag) < 1e-9 and 0.1 < r.real < 0.99]
+    assert len(x) == 1 and h["peak"].x == pytest.approx(-71.0 * x[0], abs=71.0 / 2000)
+    assert s.drag("intake", "peak", -62.0, h["peak"].y)
+    p = s.document["valves"]["intake"]["cam"]["p"]
+    assert p > 8                           # a peak nearer the start of lift: a larger p
+    # the redrawn acceleration peaks under the pointer (the series every 0.5 cam deg)
+    series = s.good["series"]["intake"]
+    angle, acc = np.array(series["cam_deg"]), np.array(series["valve_acceleration_m_s2"], dtype=float)
+    opening = angle < 0.0
+    assert angle[opening][np.nanargmax(acc[opening])] == pytest.approx(-62.0, abs=0.5)
+
+
+def test_checks_of_the_sweeps_are_pending_until_the_whole_design_comes():
+    import time
+
+    d = Designer(Document(), Session.start())
+    # the built-in example: both valves with a [dynamics] section, two checks each (seating velocity, jump speed)
+    def dynamic():
+        return [k for k in d.checks.data["key"] if "dynamic seating velocity" in k or "(jump)" in k]
+
+    assert dynamic() == []
+    d.draw_sweep(d.generation, Session.settle(d.session.good_document), time.time())
+    found = dynamic()
+    assert len(found) == 4
+    f = next(f for _, group in form(d.session.document) for f in group if f.path == "engine.rated_speed_rpm")
+    d.on_field(f, "value", 7000, 6500)
+    data = d.checks.data
+    rows = [i for i, k in enumerate(data["key"]) if k in found]
+    assert len(rows) == 4
+    assert {data["value"][i] for i in rows} == {"…"}
+    assert {data["colour"][i] for i in rows} == {SEVERITY_COLOURS["pending"]}
+    d.draw_sweep(d.generation, Session.settle(d.session.good_document), time.time())
+    assert "…" not in d.checks.data["value"]

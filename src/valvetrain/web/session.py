@@ -17,6 +17,7 @@ import tomli_w
 
 from .. import api
 from ..specification import REGISTRY, SpecError, example_text, set_keys
+from ..laws import PolydyneLaw
 from ..specification.cams import main_half_angle_deg
 from ..specification.fields import Range
 from ..specification.models import Drive, Dynamics, Engine, Masses, Spring, Valve
@@ -165,7 +166,8 @@ def handles(document, spec, name, series) -> list[Handle]:
     the points of its law's shape on the opening flank (the closing flank of a symmetric cam follows by the law):
 
     - a cam of segment angles (``phi1_deg``, ``phi2_deg``: Kurz, constant acceleration): the two boundaries between
-      its segments, ``phi1`` and ``phi2``;
+      its segments, ``phi1`` and ``phi2``, and of a Kurz cam the positive peak (``peak``, in the middle of phi1);
+    - a polydyne cam: its positive peak (``peak``, where the exponents put it: :func:`polydyne_peak`);
     - a power-polynomial cam: the start of the ramp (``ramp``), the positive peak (``peak``, where
       ``peak_position`` puts it and as high as ``peak_acceleration_mm_per_rad2`` makes it), the end of the positive
       part (``phi1``) and the negative peak (``trough``, ``trough_position``);
@@ -250,9 +252,56 @@ def _shape_points(cam, half, edges):
     if law == "combined":
         ends = -half + np.cumsum([seg["length_deg"] for seg in cam["segments"]])
         return [(f"end.{k}", float(x)) for k, x in enumerate(ends[:-1], 1)]
+    if law == "polydyne":
+        return [("peak", -half * polydyne_peak(*_exponents(cam)))]
     if {"phi1_deg", "phi2_deg"} <= set(cam):
-        return [("phi1", -half + cam["phi1_deg"]), ("phi2", -half + cam["phi1_deg"] + cam["phi2_deg"])]
+        out = [("phi1", -half + cam["phi1_deg"]), ("phi2", -half + cam["phi1_deg"] + cam["phi2_deg"])]
+        # the Kurz law's positive acceleration is a half sine over phi1: its peak in the middle
+        return out + ([("peak", -half + 0.5 * cam["phi1_deg"])] if law == "kurz" else [])
     return []
+
+
+def _exponents(cam):
+    """A polydyne cam's exponents p, q, r, s (None: the law's progression)."""
+    return tuple(cam.get(k) for k in ("p", "q", "r", "s"))
+
+
+PEAK_GRID = np.linspace(0.0, 1.0, 2001)
+"""The fractions of the half-angle on which :func:`polydyne_peak` looks for the peak."""
+
+
+def polydyne_peak(p, q=None, r=None, s=None) -> float:
+    """Where the positive acceleration of a polydyne lift peaks on a flank: the fraction x of the half-angle phi_p0
+    from the nose (0 at the nose, 1 at the start of lift), to 1/2000.
+
+    Parameters
+    ----------
+    p, q, r, s : float
+        The exponents (q, r, s None: the progression of the law).
+
+    Notes
+    -----
+    h = h_nose (1 + C2 x^2 + Cp x^p + Cq x^q + Cr x^r + Cs x^s): the lift and the half-angle scale the acceleration
+    and its abscissa out, so the peak's x depends on the exponents alone.  Of the law without a ramp: a ramp joined
+    to the flank moves the peak of the cam by little.
+
+    References
+    ----------
+    Valve-train practical works (n.d.), work 3, eqs. (3.1)-(3.8).
+    """
+    acceleration = PolydyneLaw(1.0, 1.0, p, q, r, s).derivatives(-PEAK_GRID)[2]
+    return float(PEAK_GRID[np.argmax(acceleration)])
+
+
+def polydyne_p(x, q=None, r=None, s=None) -> float:
+    """The first exponent p (3 up to 200, below a given q) of a polydyne lift whose positive acceleration peaks at
+    the fraction ``x`` of the half-angle from the nose (:func:`polydyne_peak`, which grows with p: 0.40 at p = 3,
+    0.81 at 8, 0.99 at 200), by bisection, to 0.01."""
+    low, high = 3.0, min(200.0, q - 0.01) if q is not None else 200.0
+    while high - low > 0.005:
+        mid = 0.5 * (low + high)
+        low, high = (mid, high) if polydyne_peak(mid, q, r, s) < x else (low, mid)
+    return round(0.5 * (low + high), 2)
 
 
 def _split(start, a, b, x):
@@ -268,6 +317,9 @@ def _position(x, start, length):
     return round(min(max((x - start) / length, POSITION_RANGE[0]), POSITION_RANGE[1]), 3)
 
 
+SHAPE_FACTOR_RANGE = (0.05, 0.99)
+"""The range a Kurz cam's shape factor Z is dragged in (the specification allows [0.05, 1))."""
+
 POSITION_RANGE = (0.02, 0.98)
 """The range a peak position (a fraction of its part) is dragged in: at 0 or 1 the two pieces of a part become one."""
 
@@ -278,12 +330,15 @@ def moved(document, spec, name, handle, x, y, series) -> dict[str, Any]:
 
     The nose sets the valve lift ``max_lift_mm`` to y.  A boundary between two angles sets both so that the other
     boundaries stay and the flank still adds up to the half-angle (phi1_deg and phi2_deg for ``phi1`` of a cam of
-    segment angles, phi2_deg and, where it is given, phi3_deg for ``phi2``; the lengths of segments K and K+1 for
+    segment angles, and for the ``peak`` of a Kurz cam, which puts the middle of phi1 at x; phi2_deg and, where it is
+    given, phi3_deg for ``phi2``, whose height also sets a Kurz cam's shape factor Z, the ratio of the accelerations
+    at the phi2/phi3 junction and at the nose, y over the nose's; the lengths of segments K and K+1 for
     ``end.K`` of a combined cam, and the value of a ratio naming segment K, y over the acceleration at the nose).
     Of a power-polynomial cam, ``ramp`` sets ramp_angle_deg (the ramp ends where the main event starts), ``phi1``
     the positive part phi1_deg, ``peak`` the peak_position in it and peak_acceleration_mm_per_rad2 in the ratio of
     y to the peak's present height (the valve's acceleration is the tappet's analogue times the rocker ratio and the
-    camshaft speed squared), ``trough`` the trough_position in the negative part.  A point ``point.K`` of an inline
+    camshaft speed squared), ``trough`` the trough_position in the negative part.  The ``peak`` of a polydyne cam
+    sets p so that the peak lies at x (:func:`polydyne_p`; its height follows from the lift).  A point ``point.K`` of an inline
     lift table sets its angle (kept between its neighbours) and its lift (at least zero).
     """
     at = f"valves.{name}"
@@ -325,15 +380,22 @@ def moved(document, spec, name, handle, x, y, series) -> dict[str, Any]:
             out[f"{at}.cam.ratios"] = [{**r, "value": round(y / nose, 3)} if r["segment"] == k else dict(r)
                                        for r in ratios]
         return out
+    if cam["law"] == "polydyne":
+        _, q, r, s = _exponents(cam)
+        return {f"{at}.cam.p": polydyne_p(min(max(-x / half, 0.0), 1.0), q, r, s)}
     phi1, phi2 = cam["phi1_deg"], cam["phi2_deg"]
     phi3 = cam.get("phi3_deg")
-    if handle == "phi1":
-        new1, new2 = _split(-half, phi1, phi2, x)
+    if handle in ("phi1", "peak"):
+        new1, new2 = _split(-half, phi1, phi2, x if handle == "phi1" else -half + 2.0 * (x + half))
         return {f"{at}.cam.phi1_deg": new1, f"{at}.cam.phi2_deg": new2}
     new2, new3 = _split(-half + phi1, phi2, half - phi1 - phi2 if phi3 is None else phi3, x)
     out = {f"{at}.cam.phi2_deg": new2}
     if phi3 is not None:
         out[f"{at}.cam.phi3_deg"] = new3
+    if cam["law"] == "kurz":
+        nose = _interp(series, "valve_acceleration_m_s2", 0.0)
+        out[f"{at}.cam.shape_factor"] = round(float(min(max(y / nose, SHAPE_FACTOR_RANGE[0]),
+                                                        SHAPE_FACTOR_RANGE[1])), 3)
     return out
 
 
