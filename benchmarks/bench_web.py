@@ -70,8 +70,7 @@ def main(drags=20):
                 step = (1 if lift < 9.5 else -1) * per_mm
                 page.mouse.move(x, y)
                 page.mouse.down()
-                page.mouse.move(x, y - step / 2)         # at once: 300 ms within 5 px is a press, not a drag
-                page.mouse.move(x, y - step, steps=4)
+                page.mouse.move(x, y - step)             # at once: 300 ms within 5 px is a press, not a drag
                 page.mouse.up()
                 try:
                     page.wait_for_function(f"() => (window.vtTimesDone || 0) > {done[0]} && "

@@ -104,15 +104,14 @@ def redrawn_count(page):
 
 
 def drag(page, start, end):
-    """Press at ``start`` (page pixels), move to ``end`` in two halves, the second of 4 steps, release; wait for the
-    redraw.  The first half in one move: a pointer that stays within 5 px of where it was pressed for 300 ms is a
-    press to Bokeh, not a drag (its UIGestures thresholds), and on a loaded machine small steps take that long."""
+    """Press at ``start`` (page pixels), move to ``end`` in one move, release; wait for the redraw.  In one move: a
+    pointer that stays within 5 px of where it was pressed for 300 ms is a press to Bokeh, not a drag (its
+    UIGestures thresholds), and on a loaded machine small steps take that long."""
     done = redrawn_count(page)
     (x0, y0), (x1, y1) = start, end
     page.mouse.move(x0, y0)
     page.mouse.down()
-    page.mouse.move((x0 + x1) / 2, (y0 + y1) / 2)
-    page.mouse.move(x1, y1, steps=4)
+    page.mouse.move(x1, y1)
     page.mouse.up()
     wait_redrawn(page, done)
 
