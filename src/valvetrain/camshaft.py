@@ -276,8 +276,8 @@ def drive_torsional_stiffness(span_stiffness, pitch_radius) -> float:
     Parameters
     ----------
     span_stiffness : float
-        Tangential stiffness of the drive at the pitch radius [N/m]: the tight span of the chain or belt (its
-        stiffness per unit strain over the span's length) or the gear mesh; ``inf``: a rigid drive.
+        Tangential stiffness of the drive at the pitch radius [N/m]: the tight span of the chain or belt (its force
+        per unit strain over the span's length) or the gear mesh; ``inf``: a rigid drive.
     pitch_radius : float
         Pitch radius of the camshaft's sprocket, pulley or gear r_p [m].
 
