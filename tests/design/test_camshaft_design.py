@@ -97,6 +97,8 @@ def test_results_json_has_the_chapter_and_its_checks(pushrod):
     ("valves = [\"exhaust\"]", "camshaft.valves = ['exhaust']: allowed a non-empty list of the valves ['intake']"),
     ("cylinders = [1, 5]", "camshaft.cylinders = [1, 5]: allowed distinct cylinders 1...4"),
     ("section_diameters_mm = [25.0]", "camshaft: section_diameters_mm has 1 entries"),
+    ("drive_stiffness_N_per_mm = 5.0", "camshaft.drive_stiffness_N_per_mm = 5.0: allowed [10, 1e+07] N/mm"),
+    ("sprocket_inertia_kg_mm2 = -1.0", "camshaft.sprocket_inertia_kg_mm2 = -1.0: allowed [0, 1e+07] kg mm2"),
 ])
 def test_bad_sections_are_refused_naming_the_key(extra, words):
     key = extra.split(" = ")[0]
