@@ -286,8 +286,8 @@ def drive_torsional_stiffness(span_stiffness, pitch_radius) -> float:
     A turn delta of the sprocket against the crankshaft's stretches the span by r_p delta, which pulls with
     k r_p delta at the arm r_p.
 
-    >>> drive_torsional_stiffness(2.0e6, 0.05)
-    5000.0
+    >>> drive_torsional_stiffness(8.0e5, 0.25)
+    50000.0
     """
     return span_stiffness * pitch_radius**2
 
