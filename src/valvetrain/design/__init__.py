@@ -207,7 +207,7 @@ def run(spec, laws=None, progress=None) -> DesignResults:
             raise SpecError([Problem("crank.pressure_file", str(exc))]) from None
     crank = crank_stage(crank_view, engine, valve_timing(valves)) if crank_view is not None else None
     if waiting:
-        cylinder = CylinderPressure(crank.phi, crank.columns["p_abs"], crank.pressure_source)
+        cylinder = CylinderPressure(crank.phi, crank.columns.p_abs, crank.pressure_source)
         for name, valve in waiting.items():
             valves[name] = with_hydraulic(valves[name], valve, engine, gas, cylinder)
     found = [c for v in valves.values() for c in v.checks] + overlap_clearance_checks(valves) + engine_checks(spec)

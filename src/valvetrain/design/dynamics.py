@@ -318,7 +318,7 @@ def adjuster_reference_force(valve, law, drive, cam_speed: float, ratio: float) 
     :func:`valvetrain.strength.cam_force` reduced from the valve."""
     theta = np.linspace(law.valve_opens, law.valve_closes, 2001)
     k = valve.rocker_ratio
-    spring = drive.lines["chosen"].force(k * law.lift(theta))
+    spring = drive.lines.chosen.force(k * law.lift(theta))
     force = cam_force(spring, drive.masses.at_valve * k * cam_speed**2 * law.derivatives(theta)[2], k)
     return float(force.max()) / k * ratio
 
@@ -372,7 +372,7 @@ def build_train(dyn, valve, law, drive, at, cam_speed=None) -> tuple[Union[OneMa
     """
     k = valve.rocker_ratio
     lash = k * law.ramp_height
-    line = drive.lines["chosen"]
+    line = drive.lines.chosen
     links, names, notes = drive_links(dyn, valve, lever_ratio(valve, law), at)
     if valve.lash_adjuster is not None:
         adjuster, note = adjuster_link(valve, law, drive, cam_speed, at)
