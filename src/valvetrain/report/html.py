@@ -243,8 +243,7 @@ def _measured(rec, lang):
     hidden = ("durations", "fit_reason_code", "spline_smoothing", "gcv_ratio", "fit_quality")
     scalars = [(k, _fit_reason(rec, lang) if k == "fit_reason" else val)
                for k, val in shown(rec, *(f.name for f in fields(rec) if f.name not in hidden))]
-    return {"summary": scalars, "durations": [dict(shown(d)) for d in rec.durations],
-            "quality": [(kind, dict(shown(q))) for kind, q in rec.fit_quality.items()]}
+    return {"summary": scalars, "durations": rec.durations, "quality": rec.fit_quality.items()}
 
 
 def _fit_reason(rec, lang):
