@@ -54,10 +54,6 @@ def _localised(fig, t) -> Figure:
     return fig
 
 
-def _segment_lines(ax, law):
-    _boundary_lines(ax, segment_boundaries(law))
-
-
 def segment_boundaries(law) -> np.ndarray:
     """Camshaft angles of the inner junctions of a law's segments [deg from the nose]."""
     return rad_to_deg(np.asarray(law.breakpoints[1:-1]))
