@@ -34,9 +34,6 @@ NORMAL_TRUNCATION_SIGMA = 6.0
 CONFIDENCE_Z = 1.959963984540054
 """The standard normal quantile of the two-sided 95 % confidence interval of a failure probability."""
 
-METHODS = ("mc", "lhs")
-"""Sampling methods: Monte Carlo, Latin hypercube."""
-
 HISTOGRAM_BINS = 20
 """Bins of the histogram of a margin or a headline."""
 

@@ -10,7 +10,7 @@ specification leaves out is estimated and the estimate stated in ``parameters.es
 Speeds in the results are engine (crank) speeds; the camshaft of a four-stroke turns at half.
 """
 
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field, fields, replace
 import math
 from typing import Optional, Union
 
@@ -29,7 +29,7 @@ from ..specification import SpecError
 from ..specification.messages import Problem
 from ..strength import cam_force
 from ..units import DEG, MM, cam_per_crank, rpm_to_rad_s, to_display
-from .results import quantity, record
+from .results import quantity, shown_value
 
 SOURCES = ("Shang Hanji (1988), ch. 3 (one-mass and multi-mass trains, jump, seating, bounce); Valve-train dynamics "
            "article (n.d.) (resonant harmonic and distortion)")
@@ -318,7 +318,7 @@ def adjuster_reference_force(valve, law, drive, cam_speed: float, ratio: float) 
     :func:`valvetrain.strength.cam_force` reduced from the valve."""
     theta = np.linspace(law.valve_opens, law.valve_closes, 2001)
     k = valve.rocker_ratio
-    spring = drive.lines["chosen"].force(k * law.lift(theta))
+    spring = drive.lines.chosen.force(k * law.lift(theta))
     force = cam_force(spring, drive.masses.at_valve * k * cam_speed**2 * law.derivatives(theta)[2], k)
     return float(force.max()) / k * ratio
 
@@ -372,7 +372,7 @@ def build_train(dyn, valve, law, drive, at, cam_speed=None) -> tuple[Union[OneMa
     """
     k = valve.rocker_ratio
     lash = k * law.ramp_height
-    line = drive.lines["chosen"]
+    line = drive.lines.chosen
     links, names, notes = drive_links(dyn, valve, lever_ratio(valve, law), at)
     if valve.lash_adjuster is not None:
         adjuster, note = adjuster_link(valve, law, drive, cam_speed, at)
@@ -641,24 +641,26 @@ def event_window(d, margin_deg: float = 10.0) -> np.ndarray:
 
 def sweep_columns(d) -> dict[str, np.ndarray]:
     """The per-speed table of a :class:`DynamicsResult` as named columns (engineering units)."""
-    rows = [record(r) for r in d.records]
+    records = d.records
+    keys = {f.name: f.metadata["key"] for f in fields(SpeedRecord) if "key" in f.metadata}
+
+    def column(name, empty=None):
+        """``(key, values)``: one field of every speed's record as results.json shows it (``empty`` for None)."""
+        return keys[name], [empty if v is None else v for v in (shown_value(r, name) for r in records)]
+
     to_cam = d.sweep.cam_speeds[0] / d.per_speed.speed[0]
-    out = {"speed_rpm": [r["speed_rpm"] for r in rows],
-           "camshaft_rpm": [s * to_cam / rpm_to_rad_s(1.0) for s in d.per_speed.speed]}
-    for key in ("epsilon", "min_contact_force_N", "max_contact_force_N", "seating_velocity_m_s", "bounce_mm",
-                "bounce_count"):
-        out[key] = [r[key] for r in rows]
-    out["jump"] = [int(bool(r["jump_intervals_cam_deg"])) for r in rows]
-    out["jump_from_cam_deg"] = [r["jump_intervals_cam_deg"][0][0] if r["jump_intervals_cam_deg"] else np.nan
-                                for r in rows]
-    out["jump_to_cam_deg"] = [r["jump_intervals_cam_deg"][-1][1] if r["jump_intervals_cam_deg"] else np.nan
-                              for r in rows]
-    out["max_lift_error_mm"] = [r["max_lift_error_mm"] for r in rows]
-    out["revolutions"] = [r["revolutions"] for r in rows]
+    out = dict([column("speed"), ("camshaft_rpm", [s * to_cam / rpm_to_rad_s(1.0) for s in d.per_speed.speed])])
+    out.update(column(name) for name in ("epsilon", "min_contact_force", "max_contact_force", "seating_velocity",
+                                         "bounce", "bounce_count"))
+    jumps = column("jump_intervals")[1]
+    out["jump"] = [int(bool(j)) for j in jumps]
+    out["jump_from_cam_deg"] = [j[0][0] if j else np.nan for j in jumps]
+    out["jump_to_cam_deg"] = [j[-1][1] if j else np.nan for j in jumps]
+    out.update(column(name) for name in ("max_lift_error", "revolutions"))
     if d.model == "multi" and d.parameters.coils_per_spring > 0:
-        out["max_surge_mm"] = [r.get("max_surge_mm", np.nan) for r in rows]
-    if any("coil_clash_margin_mm" in r for r in rows):
-        out["coil_clash_margin_mm"] = [r.get("coil_clash_margin_mm", np.nan) for r in rows]
+        out.update([column("max_surge", np.nan)])
+    if any(r.clash_margin is not None for r in records):
+        out.update([column("clash_margin", np.nan)])
     return out
 
 

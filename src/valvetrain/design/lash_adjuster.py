@@ -106,7 +106,7 @@ def lash_adjuster_stage(la, valve, engine, cam, drive, dynamics=None,
     _, maps, (low, high, _) = event_load_maps(valve, engine, cam, drive, dynamics)
     to_cam = cam.cam_speed / engine.rated_speed
     base = 2.0 * np.pi - (law.valve_closes - law.valve_opens)
-    pumped = _pump_up(la, dynamics, ratio, refill, area, drive.lines["chosen"].preload, base, low, high)
+    pumped = _pump_up(la, dynamics, ratio, refill, area, drive.lines.chosen.preload, base, low, high)
     rows = []
     for m in maps:
         step = np.gradient(m.theta)
