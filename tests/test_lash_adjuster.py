@@ -219,3 +219,26 @@ def test_no_mechanical_clearance_band_with_an_adjuster():
     without = run(parse_spec(EXAMPLE.read_text())).valves["intake"].checks
     assert "intake: clearance h0" not in {c.quantity for c in with_adjuster}
     assert "intake: clearance h0" in {c.quantity for c in without}
+
+
+KURZ = Path(__file__).parents[1] / "examples" / "seed000-appendix-kurz.toml"
+
+
+@pytest.mark.parametrize("path, change, key", [
+    (KURZ, ("clearance_mm = 0.25", "clearance_mm = 0.0"), 'valves.intake.cam.law = "kurz"'),
+    (KURZ, ("clearance_mm = 0.25", "clearance_mm = 0.25"), 'valves.intake.cam.law = "kurz"'),
+    (EXAMPLE, ("clearance_mm = 0.40", "clearance_mm = 0.0"), "valves.exhaust.cam.ramp = true"),
+])
+def test_a_ramp_on_a_hydraulic_train_is_refused_naming_its_key(path, change, key):
+    """The ramps of this package take up a mechanical clearance (their height is clearance_mm) and a hydraulic train
+    leaves none: a law that always has a ramp, or a chosen ramp, is refused naming the cam's key.  Before, a Kurz cam
+    with an adjuster met two refusals that contradicted each other (clearance 0.25 mm: allowed 0 with the adjuster;
+    clearance 0: allowed [0.01, 5] mm for the ramp)."""
+    valve = key.split(".")[1]
+    text = path.read_text().split("[[accepted]]")[0].replace(*change, 1).replace(
+        f"[valves.{valve}.spring]", f'[valves.{valve}.lash_adjuster]\nlocation = "tappet"\n\n[valves.{valve}.spring]')
+    with pytest.raises(SpecError) as err:
+        run(parse_spec(text))
+    words = str(err.value)
+    assert f"{key}: its ramp takes up a mechanical clearance" in words
+    assert "allowed [0.01, 5] mm" not in words
