@@ -37,7 +37,7 @@ class LashAdjusterPerSpeed:
     refill_share: tuple[float, ...] = quantity("refill_share", label="time to refill it through the check valve / "
                                                "time on the base circle")
     stiffness_at_valve: tuple[Optional[float], ...] = quantity(
-        "stiffness_at_valve_N_per_mm", "N/mm", "secant stiffness of the oil column under the largest force at that "
+        "oil_stiffness_at_valve_N_per_mm", "N/mm", "secant stiffness of the oil column under the largest force at that "
         "speed, reduced to the valve (null: the force does not exceed the plunger's push)")
     pump_up: tuple[Optional[float], ...] = quantity("pump_up_um", "um", "plunger extension gained over one "
                                                     "revolution while the valve is off its seat (null: no simulated "

@@ -702,6 +702,7 @@ TEXT["en"].update({
         "speed_rpm": "engine speed, rpm", "leak_down_um": "leak-down per revolution, µm",
         "valve_lash_um": "lash at the valve, µm", "refill_share": "refill time / base-circle time",
         "pump_up_um": "pump-up per revolution, µm", "held_open_um": "valve held open, µm",
+        "oil_stiffness_at_valve_N_per_mm": "stiffness of the oil column at the valve, N/mm",
     },
 })
 
@@ -736,6 +737,7 @@ TEXT["ru"].update({
         "speed_rpm": "частота вращения, об/мин", "leak_down_um": "проседание за оборот, мкм",
         "valve_lash_um": "зазор у клапана, мкм", "refill_share": "время заполнения / время на цилиндрической части",
         "pump_up_um": "выдвижение при отрыве за оборот, мкм", "held_open_um": "клапан удерживается открытым, мкм",
+        "oil_stiffness_at_valve_N_per_mm": "жёсткость столба масла, приведённая к клапану, Н/мм",
     },
 })
 
