@@ -376,8 +376,7 @@ def adjuster_link(valve, law, drive, cam_speed: float, at: str) -> tuple[float, 
                                      la.supply_pressure, la.chamber_volume, la.bulk_modulus, la.air_content)[0]
     at_valve = stiffness / ratio**2
     return at_valve, (f"lash adjuster: {at_valve / 1e3:.5g} N/mm at the valve in series with the cam contact (the oil "
-                      f"column's secant stiffness under {force:.4g} N); its plunger leaks down under the load and "
-                      "refills through the check valve from revolution to revolution"), adjuster_element(la, ratio)
+                      f"column's secant stiffness under {force:.4g} N)"), adjuster_element(la, ratio)
 
 
 def build_train(dyn, valve, law, drive, at, cam_speed=None) -> tuple[Union[OneMassTrain, MultiMassTrain], DynamicsParameters]:
