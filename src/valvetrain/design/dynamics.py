@@ -18,7 +18,7 @@ import numpy as np
 
 from .. import lash_adjuster as hla
 from ..checks import Check, check
-from ..dynamics.models import (CoilSpring, MultiMassTrain, OneMassTrain, camshaft_stiffness, direct_train,
+from ..dynamics.models import (Adjuster, CoilSpring, MultiMassTrain, OneMassTrain, camshaft_stiffness, direct_train,
                                natural_modes, one_mass_train, pushrod_stiffness, pushrod_train, rocker_train, series)
 from ..dynamics.perturbation import perturbation_parameter
 from ..dynamics.resonance import resonance
@@ -353,16 +353,30 @@ def adjuster_load(valve, law, drive, cam_speed: float, at: str) -> tuple[float, 
     return ratio, force
 
 
-def adjuster_link(valve, law, drive, cam_speed: float, at: str) -> tuple[float, str]:
-    """The lash adjuster's oil column reduced to the valve [N/m] (in series with the cam contact) and the note that
-    says so: its secant stiffness under :func:`adjuster_reference_force` over the square of the motion ratio."""
+def adjuster_element(la, ratio: float) -> Adjuster:
+    """The kernels' :class:`~valvetrain.dynamics.models.Adjuster` of ``[lash_adjuster]`` (SI view ``la``) at the motion
+    ratio ``ratio``: its leak coefficient pi d c^3 / (12 mu L) [m^3/(s Pa)]
+    (:func:`valvetrain.lash_adjuster.annular_leakage` per pascal) and its largest extension velocity, the check valve's
+    flow under :func:`valvetrain.lash_adjuster.refill_pressure` over the plunger area [m/s]."""
+    area = hla.plunger_area(la.plunger_diameter)
+    leak = hla.annular_leakage(1.0, la.plunger_diameter, la.radial_clearance, la.leak_length, la.oil_viscosity)
+    refill = hla.check_valve_flow(hla.refill_pressure(la.supply_pressure, la.plunger_spring_N, area),
+                                  la.check_valve_diameter) / area
+    return Adjuster(float(ratio), float(la.plunger_spring_N), float(area), float(la.supply_pressure), float(leak),
+                    float(refill))
+
+
+def adjuster_link(valve, law, drive, cam_speed: float, at: str) -> tuple[float, str, Adjuster]:
+    """The lash adjuster's oil column reduced to the valve [N/m] (in series with the cam contact), the note that
+    says so (its secant stiffness under :func:`adjuster_reference_force` over the square of the motion ratio), and its
+    :func:`adjuster_element`, whose plunger extension the kernels carry from revolution to revolution."""
     la = valve.lash_adjuster
     ratio, force = adjuster_load(valve, law, drive, cam_speed, at)
     stiffness = hla.secant_stiffness(force, la.plunger_spring_N, hla.plunger_area(la.plunger_diameter),
                                      la.supply_pressure, la.chamber_volume, la.bulk_modulus, la.air_content)[0]
     at_valve = stiffness / ratio**2
     return at_valve, (f"lash adjuster: {at_valve / 1e3:.5g} N/mm at the valve in series with the cam contact (the oil "
-                      f"column's secant stiffness under {force:.4g} N)")
+                      f"column's secant stiffness under {force:.4g} N)"), adjuster_element(la, ratio)
 
 
 def build_train(dyn, valve, law, drive, at, cam_speed=None) -> tuple[Union[OneMassTrain, MultiMassTrain], DynamicsParameters]:
@@ -374,8 +388,9 @@ def build_train(dyn, valve, law, drive, at, cam_speed=None) -> tuple[Union[OneMa
     lash = k * law.ramp_height
     line = drive.lines.chosen
     links, names, notes = drive_links(dyn, valve, lever_ratio(valve, law), at)
+    element = None
     if valve.lash_adjuster is not None:
-        adjuster, note = adjuster_link(valve, law, drive, cam_speed, at)
+        adjuster, note, element = adjuster_link(valve, law, drive, cam_speed, at)
         links = (float(series(links[0], adjuster)),) + links[1:]
         notes.append(note)
     c = float(series(*links))
@@ -399,6 +414,7 @@ def build_train(dyn, valve, law, drive, at, cam_speed=None) -> tuple[Union[OneMa
         net = train.network()
         nodes = {n: float(m) for n, m in zip(net.names, net.mass, strict=True)}
         notes.extend(spring_notes)
+    train = replace(train, adjuster=element)
     params = DynamicsParameters(dyn.model, layout(valve), mass, c, dyn.damping_ratio, rate, preload, k, lash,
                                 dyn.seat_stiffness, dyn.seat_damping_ratio, dyn.revolutions, dyn.step,
                                 dyn.coils_per_spring, links, names, nodes, tuple(notes))

@@ -367,7 +367,8 @@ def _camshaft(results, spec, plots):
             "plots": plots.get("camshaft", {})}
 
 
-ADJUSTER_COLUMNS = ["speed_rpm", "leak_down_um", "valve_lash_um", "refill_share", "pump_up_um", "held_open_um"]
+ADJUSTER_COLUMNS = ["speed_rpm", "leak_down_um", "valve_lash_um", "refill_share",
+                    "oil_stiffness_at_valve_N_per_mm", "pump_up_um", "held_open_um"]
 """The columns of the report's table of the lash adjuster against engine speed."""
 
 
