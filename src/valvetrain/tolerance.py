@@ -18,6 +18,7 @@ import math
 from pathlib import Path
 from typing import Any, Optional
 
+from numba import get_num_threads, set_num_threads
 import numpy as np
 from scipy import stats
 from scipy.stats import qmc
@@ -165,6 +166,11 @@ def _finite(x):
 def evaluate_sample(document) -> dict[str, Any]:
     """Validate and design one sample; its record.
 
+    The design is :func:`valvetrain.design.run` with ``headlines_only``: each ``[dynamics]`` sweep simulates only the
+    speeds that decide its jump speed, its largest seating velocity and its largest cam force
+    (:func:`valvetrain.dynamics.sweep.headline_sweep`), on one thread of the compiled kernels: the samples are what
+    runs in parallel, and one thread splits a sweep into the same blocks of speeds in every backend.
+
     Returns
     -------
     dict
@@ -173,10 +179,14 @@ def evaluate_sample(document) -> dict[str, Any]:
         ``headlines`` (valve -> ``jump_speed_rpm`` (engine rpm, None: no separation in the range swept) and
         ``max_seating_velocity_m_s``) of the valves with a [dynamics] section.
     """
+    threads = get_num_threads()
+    set_num_threads(1)   # numba's setting is the calling thread's own
     try:
-        results = run(validate(document))
+        results = run(validate(document), headlines_only=True)
     except SpecError as err:
         return {"status": "refused", "message": "\n".join(err.problems), "checks": {}, "headlines": {}}
+    finally:
+        set_num_threads(threads)
     checks = {check_id(c): [_finite(c.margin), c.passed, c.quantity, c.severity] for c in results.checks}
     headlines = {name: {"jump_speed_rpm": _finite(v.dynamics.jump_speed / rpm_to_rad_s(1.0)),
                         "max_seating_velocity_m_s": _finite(v.dynamics.max_seating_velocity)}
