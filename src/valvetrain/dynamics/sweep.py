@@ -597,7 +597,8 @@ def merged(parts) -> SweepResult:
     """One :class:`SweepResult` of the speeds of several sweeps of the same train on the same law, by ascending speed.
 
     Each speed of a sweep is an independent problem integrated on the same excitation samples (:mod:`.kernels`), so a
-    speed's rows do not depend on the sweep it was simulated in."""
+    speed's rows do not depend on the sweep it was simulated in, but for the revolutions it runs: a block of speeds
+    runs until all of them repeat, so its last revolution may differ by up to :data:`STATE_TOLERANCE`."""
     if len(parts) == 1:
         return parts[0]
     rank = np.argsort(np.argsort(np.concatenate([p.cam_speeds for p in parts]), kind="stable"))
