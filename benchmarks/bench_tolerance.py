@@ -5,10 +5,11 @@ Run on demand: ``python benchmarks/bench_tolerance.py [--samples N]``.  The buil
 a [dynamics] sweep of 200 speeds) gets four tolerances (both clearances, uniform +-0.03 mm; both valve masses, normal
 sigma 1 g).  Printed:
 
-* the processor time of one sample (all threads of this process; the other jobs of a shared machine change it
-  little), :func:`valvetrain.tolerance.evaluate_sample`, beside its baseline measured in the same run: the same design
-  with the full sweep (:func:`valvetrain.design.run` as ``valvetrain run`` designs, the samples' design before the
-  headline sweep), and the time 10^4 samples take at it on two idle cores;
+* the processor time of one sample (all threads of this process, the median of 15; the other jobs of a shared machine
+  change it less than the wall time), :func:`valvetrain.tolerance.evaluate_sample`, beside its baseline measured in
+  the same run: the same design with the full sweep (:func:`valvetrain.design.run` as ``valvetrain run`` designs, the
+  samples' design before the headline sweep, measured first, before a sample keeps the heap), and the time 10^4
+  samples take at it on two idle cores;
 * ``valvetrain tolerance`` of N Latin-hypercube samples as a whole command (start-up, validation, the samples, the
   writing) serially, with ``--workers 2`` and on a Dask ``LocalCluster`` of two one-thread worker processes: samples
   per second of each, the load average of the machine beside them, and whether the three give the same results;
@@ -19,6 +20,7 @@ sigma 1 g).  Printed:
 
 import argparse
 import os
+import statistics
 import subprocess
 import sys
 import tempfile
@@ -59,12 +61,15 @@ def tolerance(spec, out, *backend):
 
 
 def cpu_per_call(function, document, repeat):
-    """Processor time of one call [s], after a warm-up call."""
+    """Processor time of one call [s]: the median of ``repeat`` calls after a warm-up call (the median, as the other
+    jobs of a shared machine slow some calls down)."""
     function(document)
-    c0 = time.process_time()
+    times = []
     for _ in range(repeat):
+        c0 = time.process_time()
         function(document)
-    return (time.process_time() - c0) / repeat
+        times.append(time.process_time() - c0)
+    return statistics.median(times)
 
 
 def main():
@@ -81,8 +86,8 @@ def main():
         spec.write_text(example_text() + TOLERANCES, encoding="utf-8")
         document = read_document(spec)
         load0 = os.getloadavg()[0]
-        full = cpu_per_call(lambda d: run(validate(d)), document, 3)
-        cpu = cpu_per_call(evaluate_sample, document, 10)
+        full = cpu_per_call(lambda d: run(validate(d)), document, 5)   # first: evaluate_sample keeps the heap
+        cpu = cpu_per_call(evaluate_sample, document, 15)
         serial, result1, load1 = tolerance(spec, tmp / "serial")
         workers, result2, load2 = tolerance(spec, tmp / "workers", "--workers", "2")
         with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster:
