@@ -243,3 +243,18 @@ def test_samples_have_the_full_designs_checks():
     assert [(c.code, c.valve, c.passed) for c in part.checks] == [(c.code, c.valve, c.passed) for c in full.checks]
     for a, b in zip(full.checks, part.checks, strict=True):
         assert b.margin == pytest.approx(a.margin, rel=1e-3, abs=1e-12, nan_ok=True), a.code
+
+
+def test_multi_mass_trains_are_swept_in_full():
+    """A multi-mass train's separations come and go with the speed (coil surge): a sample sweeps it at every speed
+    of its range, as valvetrain run does."""
+    import tomllib
+
+    from valvetrain.design import run
+    from valvetrain.specification import example_text
+
+    document = tomllib.loads(example_text())
+    for valve in document["valves"].values():
+        valve["dynamics"].update(model="multi", speeds=60)
+    part = run(document, headlines_only=True)
+    assert [len(v.dynamics.per_speed.speed) for v in part.valves.values()] == [60, 60]

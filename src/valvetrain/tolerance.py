@@ -191,8 +191,8 @@ def keep_heap():
 def evaluate_sample(document) -> dict[str, Any]:
     """Validate and design one sample; its record.
 
-    The design is :func:`valvetrain.design.run` with ``headlines_only``: each ``[dynamics]`` sweep simulates only the
-    speeds that decide its jump speed, its largest seating velocity and its largest cam force
+    The design is :func:`valvetrain.design.run` with ``headlines_only``: each one-mass ``[dynamics]`` sweep simulates
+    only the speeds that decide its jump speed, its largest seating velocity and its largest cam force
     (:func:`valvetrain.dynamics.sweep.headline_sweep`), on one thread of the compiled kernels: the samples are what
     runs in parallel, and one thread splits a sweep into the same blocks of speeds in every backend; the process
     keeps its freed arrays in the heap (:func:`keep_heap`).

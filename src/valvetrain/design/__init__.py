@@ -168,9 +168,10 @@ def run(spec, laws=None, progress=None, headlines_only=False) -> DesignResults:
     progress : callable, optional
         ``progress(valve name, done, total)`` during the speed sweep of a valve's ``[dynamics]`` section.
     headlines_only : bool
-        Each ``[dynamics]`` sweep simulates only the speeds that decide its jump speed and its largest seating
-        velocity (:func:`valvetrain.dynamics.sweep.headline_sweep`), for a tolerance study: its checks and
-        headlines as the full sweep's (within the accuracy that function states), its per-speed table sparse.
+        Each one-mass ``[dynamics]`` sweep simulates only the speeds that decide its jump speed, its largest seating
+        velocity and its largest cam force (:func:`valvetrain.dynamics.sweep.headline_sweep`), for a tolerance
+        study: its checks and headlines as the full sweep's (within the accuracy that function states), its
+        per-speed table sparse.
 
     Returns
     -------

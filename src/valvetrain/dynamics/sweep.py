@@ -614,16 +614,19 @@ def merged(parts) -> SweepResult:
     return replace(parts[0], **{f: joined(f) for f in PER_SPEED_FIELDS})
 
 
-def seating_events(result) -> tuple[np.ndarray, np.ndarray]:
-    """Per speed of a :class:`SweepResult`: whether the follower separates, and |dy/dt| at the first seating [m/s]
-    (nan: no seating); the two events of :func:`speed_result` that decide the sweep's jump speed and its largest
-    seating velocity."""
+def seating_events(result) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Per speed of a :class:`SweepResult`: whether the follower separates, the smallest contact force while the cam
+    lifts [N] (:func:`lowest_lifting_force`) and |dy/dt| at the first seating [m/s] (nan: no seating); the events of
+    :func:`speed_result` that decide the sweep's jump speed and its largest seating velocity."""
     step = float(result.theta[1] - result.theta[0])
-    jumped = np.array([separation_mask(c, result.kinematic_lift, y).any()
+    kinematic = result.kinematic_lift
+    jumped = np.array([separation_mask(c, kinematic, y).any()
                        for c, y in zip(result.contact_force, result.lift, strict=True)])
+    force = np.array([lowest_lifting_force(c, kinematic, y, j)
+                      for c, y, j in zip(result.contact_force, result.lift, jumped, strict=True)])
     seat = np.array([abs(seating(result.theta, y, v, a, step / w)[2]) for w, y, v, a in
                      zip(result.cam_speeds, result.lift, result.velocity, result.acceleration, strict=True)])
-    return jumped, seat
+    return jumped, force, seat
 
 
 def headline_sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, bounce_tolerance=BOUNCE_TOLERANCE,
@@ -643,11 +646,13 @@ def headline_sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, bounce_t
        inside ``load_range``;
     2. the speeds between the last coarse speed without a separation and the first with one, and the two below
        them: the first speed of the full grid with a separation and the speeds :func:`zero_crossing` fits below it;
+       the same below the first coarse speed whose contact force falls to zero while the cam lifts (a train whose
+       separations come and go with the speed, coil surge, separates first near it);
        the speeds within ``stride`` of the coarse speed with the largest seating velocity, and of the coarse speed
        inside ``load_range`` with the largest contact force.
 
     So :meth:`SweepResult.headline` gives the full sweep's jump speed unless a separation starts and ends between two
-    coarse speeds below the first coarse speed that separates; the largest seating velocity and the largest contact
+    coarse speeds below the first coarse speed that separates or loses its contact force; the largest seating velocity and the largest contact
     force (in ``load_range``) are the full sweep's where they lie within ``stride`` speeds of the coarse grid's
     largest (or at an end of ``load_range``).  The sweep's other headlines (the bounce onset, the coil clash) and its
     maps have the simulated speeds only.
@@ -668,13 +673,14 @@ def headline_sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, bounce_t
 
     ends = np.flatnonzero(inside)[[0, -1]] if inside.any() else []
     index, result = simulate(np.concatenate([np.arange(0, n, stride), [n - 1], ends]))
-    jumped, seat = seating_events(result)
+    jumped, force, seat = seating_events(result)
     more = [np.arange(c - stride + 1, c + stride) for c in (
         index[np.nanargmax(seat)] if np.isfinite(seat).any() else None,
         index[inside[index]][np.argmax(result.contact_force[inside[index]].max(axis=1))] if inside.any() else None)
         if c is not None]
-    if jumped.any() and jumped.argmax() > 0:
-        more.append(np.arange(index[jumped.argmax() - 1] - 2, index[jumped.argmax()]))
+    for hit in (jumped, jumped | (force <= 0.0)):
+        if hit.any() and hit.argmax() > 0:
+            more.append(np.arange(index[hit.argmax() - 1] - 2, index[hit.argmax()]))
     return simulate(np.concatenate(more or [[]]))[1]
 
 
