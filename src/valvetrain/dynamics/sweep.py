@@ -646,16 +646,15 @@ def headline_sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, bounce_t
        inside ``load_range``;
     2. the speeds between the last coarse speed without a separation and the first with one, and the two below
        them: the first speed of the full grid with a separation and the speeds :func:`zero_crossing` fits below it;
-       the same below the first coarse speed whose contact force falls to zero while the cam lifts (a train whose
-       separations come and go with the speed, coil surge, separates first near it);
-       the speeds within ``stride`` of the coarse speed with the largest seating velocity, and of the coarse speed
-       inside ``load_range`` with the largest contact force.
+       the same below the first coarse speed whose contact force falls to zero while the cam lifts (a separation
+       that comes and goes with the speed starts near it); the speeds within ``stride`` of the coarse speed with the
+       largest seating velocity, and of the coarse speed inside ``load_range`` with the largest contact force.
 
     So :meth:`SweepResult.headline` gives the full sweep's jump speed unless a separation starts and ends between two
-    coarse speeds below the first coarse speed that separates or loses its contact force; the largest seating velocity and the largest contact
-    force (in ``load_range``) are the full sweep's where they lie within ``stride`` speeds of the coarse grid's
-    largest (or at an end of ``load_range``).  The sweep's other headlines (the bounce onset, the coil clash) and its
-    maps have the simulated speeds only.
+    coarse speeds below the first coarse speed that separates or loses its contact force; the largest seating
+    velocity and the largest contact force (in ``load_range``) are the full sweep's where they lie within ``stride``
+    speeds of the coarse grid's largest (or at an end of ``load_range``).  The sweep's other headlines (the bounce
+    onset, the coil clash) and its maps have the simulated speeds only.
     """
     speeds = np.atleast_1d(np.asarray(cam_speeds, dtype=float))
     n = speeds.size
@@ -663,7 +662,7 @@ def headline_sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, bounce_t
     parts = []
     inside = (speeds >= load_range[0] * (1.0 - 1e-12)) & (speeds <= load_range[1] * (1.0 + 1e-12))
 
-    def simulate(indices):
+    def simulated(indices):
         idx = np.unique(np.clip(np.asarray(indices, dtype=np.int64), 0, n - 1))
         idx = idx[~done[idx]]
         if idx.size:
@@ -672,7 +671,7 @@ def headline_sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, bounce_t
         return np.flatnonzero(done), merged(parts)
 
     ends = np.flatnonzero(inside)[[0, -1]] if inside.any() else []
-    index, result = simulate(np.concatenate([np.arange(0, n, stride), [n - 1], ends]))
+    index, result = simulated(np.concatenate([np.arange(0, n, stride), [n - 1], ends]))
     jumped, force, seat = seating_events(result)
     more = [np.arange(c - stride + 1, c + stride) for c in (
         index[np.nanargmax(seat)] if np.isfinite(seat).any() else None,
@@ -681,7 +680,7 @@ def headline_sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, bounce_t
     for hit in (jumped, jumped | (force <= 0.0)):
         if hit.any() and hit.argmax() > 0:
             more.append(np.arange(index[hit.argmax() - 1] - 2, index[hit.argmax()]))
-    return simulate(np.concatenate(more or [[]]))[1]
+    return simulated(np.concatenate(more or [[]]))[1]
 
 
 def simulate(law, train, cam_speed, revolutions=3, step_deg=0.1, bounce_tolerance=BOUNCE_TOLERANCE) -> SpeedResult:
