@@ -155,7 +155,7 @@ class DesignResults:
         return out
 
 
-def run(spec, laws=None, progress=None) -> DesignResults:
+def run(spec, laws=None, progress=None, headlines_only=False) -> DesignResults:
     """Run the whole design of a validated specification.
 
     Parameters
@@ -168,6 +168,11 @@ def run(spec, laws=None, progress=None) -> DesignResults:
         ``valve name -> LiftLaw``: enter those valves' designs with a law of the caller's own.
     progress : callable, optional
         ``progress(valve name, done, total)`` during the speed sweep of a valve's ``[dynamics]`` section.
+    headlines_only : bool
+        Each one-mass ``[dynamics]`` sweep simulates only the speeds that decide its jump speed, its largest seating
+        velocity and its largest cam force (:func:`valvetrain.dynamics.sweep.headline_sweep`), for a tolerance
+        study: its checks and headlines as the full sweep's (within the accuracy that function states), its
+        per-speed table sparse.
 
     Returns
     -------
@@ -195,7 +200,8 @@ def run(spec, laws=None, progress=None) -> DesignResults:
             waiting[name], valve = valve, replace(valve, hydraulic=None)   # opens against the cycle: after the crank
         try:
             tick = None if progress is None else (lambda done, total, name=name: progress(name, done, total))
-            valves[name] = design_valve(name, valve, engine, gas, output, (laws or {}).get(name), tick)
+            valves[name] = design_valve(name, valve, engine, gas, output, (laws or {}).get(name), tick,
+                                        headlines_only=headlines_only)
         except SpecError as err:
             problems += err.problems
     if problems:

@@ -490,17 +490,18 @@ def drive_stage(valve, gas, cam) -> DriveResult:
     return DriveResult(mass_result, spring_result, None, tuple(found), y, inertia, required, lines, diagnosis)
 
 
-def strength_speed_range(engine, dynamics=None) -> tuple[float, float, str]:
+def strength_speed_range(engine, swept=None) -> tuple[float, float, str]:
     """The engine speeds the strength is checked over [rad/s]: the lowest, the highest and where the lowest comes from.
 
     The highest is the over-speed, ``[engine] over_speed_ratio`` x the rated speed.  The lowest is ``[engine]
-    idle_speed_rpm``; without it the low end of the valve's ``[dynamics]`` speed range, else
-    :data:`IDLE_SPEED_RATIO` x the rated speed (the dynamics stage's default idle).  Never above the rated speed.
+    idle_speed_rpm``; without it the low end of ``swept``, the valve's ``[dynamics]`` speed range (low, high)
+    [rad/s], else :data:`IDLE_SPEED_RATIO` x the rated speed (the dynamics stage's default idle).  Never above the
+    rated speed.
     """
     if engine.idle_speed is not None:
         low, source = engine.idle_speed, LOWEST_SPEED_SOURCES[0]
-    elif dynamics is not None:
-        low, source = dynamics.speed_range[0], LOWEST_SPEED_SOURCES[1]
+    elif swept is not None:
+        low, source = swept[0], LOWEST_SPEED_SOURCES[1]
     else:
         low, source = IDLE_SPEED_RATIO * engine.rated_speed, LOWEST_SPEED_SOURCES[2]
     return min(low, engine.rated_speed), engine.over_speed_ratio * engine.rated_speed, source
@@ -559,7 +560,7 @@ def load_maps(valve, engine, cam, theta, spring_force, mass, dynamics=None) -> t
     speeds of the range it does not sweep; without it, the quasi-static force at :data:`STRENGTH_SPEEDS` speeds
     and the rated speed.
     """
-    low, high, source = strength_speed_range(engine, dynamics)
+    low, high, source = strength_speed_range(engine, None if dynamics is None else dynamics.speed_range)
     speeds = np.unique(np.append(np.linspace(low, high, STRENGTH_SPEEDS), engine.rated_speed))
     maps = []
     if dynamics is not None:

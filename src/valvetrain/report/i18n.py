@@ -1022,9 +1022,11 @@ TOLERANCE_TEXT = {
                       "max_seating_velocity_m_s": "largest seating velocity, m/s"},
         "summary": "{n} samples ({method}, random seed = {seed}); {refused} refused (probability {p:.4g}).",
         "method_text": ("Each sample is the specification with the tolerances drawn from their distributions "
-                        "(inverse distribution function, Devroye (1986)), designed in full. The probability of "
+                        "(inverse distribution function, {devroye}), designed in full; its dynamics simulate the "
+                        "speeds of the range that decide the jump speed, the largest seating velocity and the "
+                        "largest cam force (every tenth speed, then the speeds about those). The probability of "
                         "failure of a check is the share of the designed samples that fail it, with the Wilson "
-                        "score interval (Wilson (1927)); a tolerance drives a check by Spearman's rank correlation "
+                        "score interval ({wilson}); a tolerance drives a check by Spearman's rank correlation "
                         "of its values with the check's margin."),
     },
     "ru": {
@@ -1043,9 +1045,11 @@ TOLERANCE_TEXT = {
                       "max_seating_velocity_m_s": "наибольшая скорость посадки, м/с"},
         "summary": "{n} вариантов ({method}, начальное число = {seed}); отклонено {refused} (вероятность {p:.4g}).",
         "method_text": ("Каждый вариант — спецификация с параметрами, взятыми из их распределений (метод обратной "
-                        "функции распределения, Devroye (1986)), рассчитанная полностью. Вероятность отказа "
+                        "функции распределения, {devroye}), рассчитанная полностью; динамика рассчитывается на "
+                        "частотах вращения, определяющих частоту отрыва, наибольшую скорость посадки и наибольшую "
+                        "силу на кулачке (каждая десятая частота, затем частоты около них). Вероятность отказа "
                         "проверки — доля рассчитанных вариантов, в которых она не выполнена, с интервалом Уилсона "
-                        "(Wilson (1927)); влияние допуска — ранговая корреляция Спирмена его значений с запасом "
+                        "({wilson}); влияние допуска — ранговая корреляция Спирмена его значений с запасом "
                         "проверки."),
     },
 }
