@@ -677,12 +677,15 @@ TEXT["en"].update({
     "la_chapter": "11. Hydraulic lash adjuster",
     "la_method": "The oil column of the adjuster's high-pressure chamber is compressed from the supply pressure with "
                  "its entrained air (isothermal); its secant stiffness under the largest quasi-static force at the "
-                 "rated speed joins the drive stiffness of the dynamics in series. Over each camshaft revolution the "
-                 "plunger leaks down through its annular clearance under the force it carries (laminar flow), and "
-                 "the lash this leaves at closing is refilled through the check valve on the base circle. Where the "
-                 "simulated follower floats, the plunger extends into the opened gap at the rate the check valve "
-                 "lets in and keeps that extension when the follower lands; less the leak-down under the valve "
-                 "spring's preload over one base circle, it holds the valve off its seat",
+                 "rated speed joins the drive stiffness of the dynamics in series, and under the largest force at "
+                 "each speed it is tabled against the speed. The plunger's extension is a state of the simulated "
+                 "train, carried from one camshaft revolution to the next: under the force it carries it leaks down "
+                 "through its annular clearance (laminar flow), and where that force falls to the adjuster's own "
+                 "push the check valve opens and the plunger extends, refilling the lash on the base circle. Its "
+                 "extension gained while the valve is off its seat before its first return (the follower floating) "
+                 "is the pump-up of a revolution, a failure up to the over-speed; the smallest valve lift on the "
+                 "base circle is the valve held off its seat. At the speeds the dynamics does not sweep, the "
+                 "leak-down is integrated over the quasi-static force",
     "la_location": "Location", "la_locations": {"pivot": "pivot of an end-pivot finger follower",
                                                 "tappet": "in the tappet, in series with the cam contact"},
     "la_names": {
@@ -694,11 +697,12 @@ TEXT["en"].update({
         "rated_leak_down_um": "leak-down per revolution at the rated speed, µm",
         "rated_valve_lash_um": "lash at the valve at closing, rated speed, µm",
         "max_refill_share": "largest refill time / base-circle time",
-        "max_pump_up_um": "largest pump-up of a float up to the over-speed, µm",
+        "max_pump_up_um": "largest pump-up per revolution up to the over-speed, µm",
         "max_held_open_um": "largest valve lift held on the base circle, µm",
         "speed_rpm": "engine speed, rpm", "leak_down_um": "leak-down per revolution, µm",
         "valve_lash_um": "lash at the valve, µm", "refill_share": "refill time / base-circle time",
-        "pump_up_um": "pump-up, µm", "held_open_um": "valve held open, µm",
+        "pump_up_um": "pump-up per revolution, µm", "held_open_um": "valve held open, µm",
+        "oil_stiffness_at_valve_N_per_mm": "stiffness of the oil column at the valve, N/mm",
     },
 })
 
@@ -706,14 +710,16 @@ TEXT["ru"].update({
     "la_chapter": "11. Гидрокомпенсатор зазора",
     "la_method": "Столб масла в камере высокого давления гидрокомпенсатора сжимается от давления подачи вместе с "
                  "нерастворённым воздухом (изотермически); его секущая жёсткость при наибольшей квазистатической "
-                 "силе на номинальной частоте включается последовательно в жёсткость привода в расчёте динамики. За "
-                 "каждый оборот распределительного вала плунжер проседает из-за утечки через кольцевой зазор под "
-                 "действующей на него силой (ламинарное течение), а оставленный этим зазор при посадке клапана "
-                 "восполняется через обратный клапан на цилиндрической части кулачка. Там, где в расчёте динамики "
-                 "толкатель отрывается от кулачка, плунжер выдвигается в открывшийся зазор со скоростью, которую "
-                 "допускает обратный клапан, и сохраняет это выдвижение после возврата толкателя; за вычетом "
-                 "проседания под силой предварительной затяжки пружины клапана за время одной цилиндрической части "
-                 "оно не даёт клапану сесть на седло",
+                 "силе на номинальной частоте включается последовательно в жёсткость привода в расчёте динамики, а "
+                 "при наибольшей силе на каждой частоте приведена в таблице по частотам. Выдвижение плунжера — "
+                 "переменная состояния рассчитываемого привода, переносимая с одного оборота распределительного вала "
+                 "на следующий: под действующей на него силой плунжер проседает из-за утечки через кольцевой зазор "
+                 "(ламинарное течение), а там, где эта сила падает до собственного усилия гидрокомпенсатора, "
+                 "открывается обратный клапан и плунжер выдвигается, выбирая зазор на цилиндрической части кулачка. "
+                 "Выдвижение, набранное, пока клапан не сел на седло в первый раз после открытия (толкатель "
+                 "оторвался от кулачка), — выдвижение плунжера за оборот, недопустимое до заброса оборотов; "
+                 "наименьший подъём клапана на цилиндрической части — клапан, не севший на седло. На частотах вне "
+                 "расчёта динамики проседание интегрируется по квазистатической силе",
     "la_location": "Расположение", "la_locations": {"pivot": "опора рычага с опорой на конце",
                                                     "tappet": "в толкателе, последовательно с контактом кулачка"},
     "la_names": {
@@ -726,11 +732,12 @@ TEXT["ru"].update({
         "rated_leak_down_um": "проседание за оборот на номинальной частоте, мкм",
         "rated_valve_lash_um": "зазор у клапана при посадке на номинальной частоте, мкм",
         "max_refill_share": "наибольшее отношение времени заполнения к времени на цилиндрической части",
-        "max_pump_up_um": "наибольшее выдвижение плунжера при отрыве до заброса оборотов, мкм",
+        "max_pump_up_um": "наибольшее выдвижение плунжера при отрыве за оборот до заброса оборотов, мкм",
         "max_held_open_um": "наибольший подъём клапана, удерживаемый на цилиндрической части, мкм",
         "speed_rpm": "частота вращения, об/мин", "leak_down_um": "проседание за оборот, мкм",
         "valve_lash_um": "зазор у клапана, мкм", "refill_share": "время заполнения / время на цилиндрической части",
-        "pump_up_um": "выдвижение при отрыве, мкм", "held_open_um": "клапан удерживается открытым, мкм",
+        "pump_up_um": "выдвижение при отрыве за оборот, мкм", "held_open_um": "клапан удерживается открытым, мкм",
+        "oil_stiffness_at_valve_N_per_mm": "жёсткость столба масла, приведённая к клапану, Н/мм",
     },
 })
 
@@ -1015,9 +1022,11 @@ TOLERANCE_TEXT = {
                       "max_seating_velocity_m_s": "largest seating velocity, m/s"},
         "summary": "{n} samples ({method}, random seed = {seed}); {refused} refused (probability {p:.4g}).",
         "method_text": ("Each sample is the specification with the tolerances drawn from their distributions "
-                        "(inverse distribution function, Devroye (1986)), designed in full. The probability of "
+                        "(inverse distribution function, {devroye}), designed in full; its dynamics simulate the "
+                        "speeds of the range that decide the jump speed, the largest seating velocity and the "
+                        "largest cam force (every tenth speed, then the speeds about those). The probability of "
                         "failure of a check is the share of the designed samples that fail it, with the Wilson "
-                        "score interval (Wilson (1927)); a tolerance drives a check by Spearman's rank correlation "
+                        "score interval ({wilson}); a tolerance drives a check by Spearman's rank correlation "
                         "of its values with the check's margin."),
     },
     "ru": {
@@ -1036,9 +1045,11 @@ TOLERANCE_TEXT = {
                       "max_seating_velocity_m_s": "наибольшая скорость посадки, м/с"},
         "summary": "{n} вариантов ({method}, начальное число = {seed}); отклонено {refused} (вероятность {p:.4g}).",
         "method_text": ("Каждый вариант — спецификация с параметрами, взятыми из их распределений (метод обратной "
-                        "функции распределения, Devroye (1986)), рассчитанная полностью. Вероятность отказа "
+                        "функции распределения, {devroye}), рассчитанная полностью; динамика рассчитывается на "
+                        "частотах вращения, определяющих частоту отрыва, наибольшую скорость посадки и наибольшую "
+                        "силу на кулачке (каждая десятая частота, затем частоты около них). Вероятность отказа "
                         "проверки — доля рассчитанных вариантов, в которых она не выполнена, с интервалом Уилсона "
-                        "(Wilson (1927)); влияние допуска — ранговая корреляция Спирмена его значений с запасом "
+                        "({wilson}); влияние допуска — ранговая корреляция Спирмена его значений с запасом "
                         "проверки."),
     },
 }
