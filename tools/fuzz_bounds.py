@@ -20,7 +20,6 @@ Usage (from the repository root)::
 
 import argparse
 from collections import Counter
-import copy
 import json
 import math
 from pathlib import Path
