@@ -766,7 +766,7 @@ def design_valve(name, valve, engine, gas, output, law=None, progress=None, cyli
     drive = replace(drive, strength=strength_result, checks=drive.checks + tuple(strength_found))
     found += strength_found
     lubrication = None
-    if valve.lubrication is not None:
+    if valve.lubrication is not None and not profile.undercut:  # an undercut has no line contact: graded above
         lubrication, lubrication_found = lubrication_stage(valve.lubrication, valve, engine, cam, drive, dynamics, name)
         found += lubrication_found
     adjuster = None
