@@ -236,7 +236,7 @@ def main(argv=None):
                   file=sys.stderr, flush=True)
 
     records = fuzz.run_cases(cases, args.workers, args.timeout, progress=progress)
-    counts = Counter((r["base"], r.get("command", ["run"])[0], r["outcome"]) for r in records)
+    counts = Counter((r["base"], "api" if r.get("api") else r.get("command", ["run"])[0], r["outcome"]) for r in records)
     for (base, command, outcome), n in sorted(counts.items()):
         print(f"{base:<45} {command:<10} {outcome:<12} {n:>5}")
     groups = {}
