@@ -1003,6 +1003,7 @@ DOCUMENTED_NULLS = {
     "valve": "a check of the engine or of a chapter",
     **dict.fromkeys(("pump_up_um", "held_open_um"), "a speed without a simulated force (no [dynamics])"),
     "min_contact_force_N": "the valve never leaves its seat (a drive too soft to overcome the preload)",
+    **dict.fromkeys(("max_seating_velocity_m_s", "max_seating_velocity_speed_rpm"), "the valve seats at no speed"),
     "jump_speed_rpm": "no follower separation in the speed range", "bounce_speed_rpm": "no bounce in the range",
     "coil_clash_speed_rpm": "no coil clash in the range",
     "cam_min_concave_radius_mm": "no concave stretch", "master_flat_lift_max_mm": "a master that is not convex",
