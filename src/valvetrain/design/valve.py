@@ -561,7 +561,7 @@ def overlap_clearance_checks(valves) -> list[Check]:
     return out
 
 
-def follower_travel_acceleration(follower, heel, h, dh, d2h):
+def follower_travel_acceleration(follower, heel, h, dh, d2h) -> np.ndarray:
     """The follower's acceleration on the cam per camshaft angle squared [m/rad^2]: the law's h'' (a tappet), or for
     a law at the valve (a finger) the roller centre's on its arc,
     :meth:`~valvetrain.followers.PivotedFollower.travel_acceleration`; ``heel`` [m], h [m], dh [m/rad], d2h
