@@ -27,6 +27,7 @@ from scipy.stats import qmc
 
 from .design import run
 from .specification import SpecError, validate
+from .specification.messages import shown
 from .specification.validate import spec_document
 from .study import MMAP_THRESHOLD_BYTES, GridError, check_grid
 from .units import rpm_to_rad_s
@@ -58,9 +59,11 @@ def nominal(spec, key) -> float:
         if not isinstance(node, dict) or part not in node:
             raise ToleranceError(f"tolerances: {key}: no such key in the specification")
         node = node[part]
+    if isinstance(node, dict):
+        raise ToleranceError(f"tolerances: {key}: a table, not a value; give one of its keys")
     if isinstance(node, bool) or not isinstance(node, (int, float)):
-        raise ToleranceError(f"tolerances: {key}: a tolerance needs a number; the file's value is {node!r} (give "
-                             "the key a value)")
+        raise ToleranceError(f"tolerances: {key}: a tolerance needs a number; the file's value is {shown(node)} "
+                             "(give the key a value)")
     return float(node)
 
 

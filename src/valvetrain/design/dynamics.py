@@ -182,8 +182,9 @@ class DynamicsResult:
     bounce_speed: float = quantity("bounce_speed_rpm", "rpm", "engine speed where the bounce height first exceeds "
                                    "1 um, interpolated between the speeds swept (null: none)")
     max_seating_velocity: float = quantity("max_seating_velocity_m_s", "m/s", "largest |seating velocity| of the "
-                                           "sweep")
-    max_seating_velocity_speed: float = quantity("max_seating_velocity_speed_rpm", "rpm", "where it occurs")
+                                           "sweep (null: the valve seats at no speed)")
+    max_seating_velocity_speed: float = quantity("max_seating_velocity_speed_rpm", "rpm", "where it occurs (null: "
+                                                 "the same)")
     coil_clash_speed: Optional[float] = quantity("coil_clash_speed_rpm", "rpm", "multi: lowest speed whose coils "
                                                  "meet (null: none)", omit_none=True)
     epsilon: float = quantity("epsilon", label="perturbation parameter at the rated speed")

@@ -46,7 +46,7 @@ from ..checks import Check
 from ..design import run as run_design
 from ..design.drive import spring_options
 from ..design.dynamics import SPEED_RANGE, build_train, dynamics_stage
-from ..design.valve import MAX_LIFT_TO_THROAT
+from ..design.valve import MAX_LIFT_TO_THROAT, follower_travel_acceleration
 from ..dynamics.models import one_mass_train
 from ..dynamics.sweep import sweep
 from ..locale import record_text
@@ -497,9 +497,10 @@ class Problem:
         inertia = self.mass * self.i_k * self.omega**2 * np.clip(-d2h, 0.0, None)
         loaded = (inertia > 0.0) & (y > 0.0)
         nose = member_values([law.lift_max + law.ramp_height for law in laws], member)
+        acc = follower_travel_acceleration(self.follower, self.heel, h, dh, d2h)
         q = {"spring reserve": np.where(loaded, spring / np.where(loaded, inertia, 1.0), np.inf),
              "lift": h / nose, "overshoot": -h / nose,
-             "max acceleration": -d2h, "min acceleration": d2h}
+             "max acceleration": -acc, "min acceleration": acc}
         rho = self.follower.curvature(self.heel, h, dh, d2h)
         if self.follower.rolling:
             q["pressure angle"] = -np.abs(self.follower.pressure_angle(self.heel, h, dh))
