@@ -233,6 +233,45 @@ class PivotedFollower(RollerFollower):
         d2 = (d2h + lb * np.sin(psi + self.valve_angle + beta) * d1 ** 2) / arm
         return psi, d1, d2
 
+    def reduced_inertia(self, inertia, heel, h):
+        """J / G(psi)^2 [kg]: the finger's moment of inertia ``inertia`` J [kg m^2] about its pivot reduced to the
+        valve at the valve lifts ``h`` [m] (the kinetic energy J psi_dot^2 / 2 = (J / G^2) v_dot^2 / 2; Norton (2009),
+        the chapter on the dynamics of follower trains)."""
+        return inertia / self.valve_arm(self.angle_of(h, heel)) ** 2
+
+    def inertia_force(self, inertia, heel, h, dh, d2h):
+        """The force at the valve that turns the finger, per camshaft speed squared [N s^2/rad^2 = kg m/rad^2]:
+        J psi'' / G, psi'' from the valve law's h, h', h'' (camshaft angle) by :meth:`angle_derivatives`.
+
+        Parameters
+        ----------
+        inertia : float
+            J, the finger's moment of inertia about its pivot [kg m^2].
+        heel : float
+            Heel radius of the cam [m].
+        h, dh, d2h : ndarray
+            Valve lift [m] and its first two derivatives [m/rad, m/rad^2] by the camshaft angle.
+
+        Notes
+        -----
+        The finger is a mass of the variable ratio: its kinetic energy at the valve is m_r(v) v_dot^2 / 2 with
+        m_r = J / G(psi(v))^2, and Lagrange's equation gives the force at the valve
+
+        .. math:: F = m_r(v)\\,\\ddot v + \\tfrac12\\,\\frac{dm_r}{dv}\\,\\dot v^2
+                    = \\frac{J}{G^2}\\ddot v - \\frac{J\\,G_\\psi}{G^4}\\dot v^2 = \\frac{J\\ddot\\psi}{G},
+                  \\qquad G_\\psi = \\frac{dG}{d\\psi} = -L_b\\sin\\chi
+
+        (the last form is the torque J psi_ddot about the pivot taken to the valve by the virtual work F G = T).  At a
+        constant camshaft speed omega, v_dot = omega v', v_ddot = omega^2 v'', so F = omega^2 J psi'' / G.
+
+        References
+        ----------
+        Norton (2009), the chapter on the dynamics of follower trains (the equivalent mass of a linkage of variable
+        ratio); Wang (2007), the chapter on valvetrain dynamics (the rocker's inertia at the valve).
+        """
+        psi, _, d2 = self.angle_derivatives(heel, h, dh, d2h)
+        return inertia * d2 / self.valve_arm(psi)
+
     def travel_acceleration(self, heel, h, dh, d2h):
         """L_r psi'' [m/rad^2]: the roller centre's acceleration along its arc per camshaft angle squared."""
         return self.roller_arm * self.angle_derivatives(heel, h, dh, d2h)[2]

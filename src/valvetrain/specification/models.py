@@ -98,8 +98,6 @@ class Drive(_Model):
     def _one_mass_model(self):
         if self.masses is not None and self.specific_mass_kg_m2 is not None:
             raise ValueError("give either specific_mass_kg_m2 or a [masses] table, not both")
-        if self.masses is not None and self.masses.rocker_inertia_kg_mm2 > 0 and self.valve_arm_mm is None:
-            raise ValueError("masses.rocker_inertia_kg_mm2 needs valve_arm_mm (the valve-side rocker arm)")
         return self
 
 

@@ -67,7 +67,21 @@ def required_spring_force(mass_at_valve, valve_acceleration, reserve) -> np.ndar
     ----------
     Valve-train practical works (n.d.), work 5, eqs. (5.1), (5.3).
     """
-    return reserve * mass_at_valve * np.clip(-np.asarray(valve_acceleration, dtype=float), 0.0, None)
+    return spring_force_over(mass_at_valve * np.asarray(valve_acceleration, dtype=float), reserve)
+
+
+def spring_force_over(inertia_force, reserve) -> np.ndarray:
+    """Spring force that keeps the train on the cam against its inertia force at the valve ``inertia_force`` P_j
+    [N] (any train, e.g. a finger's of variable ratio), K_z |P_j| where P_j < 0, else 0 [N] (``reserve`` K_z).
+
+    References
+    ----------
+    Valve-train practical works (n.d.), work 5, eq. (5.3).
+
+    >>> [float(f) for f in spring_force_over(np.array([-100.0, 50.0]), 1.8)]
+    [180.0, 0.0]
+    """
+    return reserve * np.clip(-np.asarray(inertia_force, dtype=float), 0.0, None)
 
 
 def enveloping_line(lift, required, ratio_range=DEFLECTION_RATIO_RANGE, min_preload=0.0) -> tuple[float, float]:
