@@ -189,3 +189,20 @@ def test_the_spring_requirement_and_the_dynamics_take_the_finger_s_inertia_by_it
     arm = hand_arm_and_force(f, v.cam.heel_radius, inertia, v.drive.lift[at:at + 1], np.zeros(1), np.zeros(1))[0][0]
     params = build_train(valve.dynamics, valve, law, v.drive, "valves.intake", omega)[1]
     assert params.mass == pytest.approx(rest + inertia / arm**2, rel=1e-9)
+
+
+def test_the_finger_s_bending_stress_by_hand(design):
+    """The example's finger: b x h = 5 x 12 mm (two cheeks of 2.5 mm beside the roller), W = b h^2 / 6 = 5 x 144 / 6
+    = 120 mm^3; sigma = M / W with M the largest bending moment at the roller's section (the middle of its three
+    forces, tested in tests/followers/test_finger.py), against 150 MPa; without the section keys the check is not run
+    and a note names them."""
+    st = design.valves["intake"].drive.strength
+    moment = st.finger.bending_moment_max
+    assert 10.0 < moment < 20.0
+    check = next(c for c in st.checks if c.code == "strength.finger_bending")
+    assert check.value == pytest.approx(moment / 120e-9, rel=1e-12)
+    assert st.finger.bending_stress_max == check.value and check.high == 150e6 and check.passed
+    text = example_text().replace("finger_section_height_mm = 12.0", "", 1)
+    bare = run(parse_spec(text)).valves["intake"].drive.strength
+    assert bare.finger.bending_stress_max is None
+    assert "finger_bending: not checked, parts.finger_section_height_mm not given" in bare.not_checked

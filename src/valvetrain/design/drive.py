@@ -247,7 +247,9 @@ class FingerLoads:
     roller_load_max: float = quantity("finger_roller_load_max_N", "N", "largest load on the roller and its bearing")
     pivot_load_max: float = quantity("finger_pivot_load_max_N", "N", "largest load on the pivot (the lash adjuster)")
     bending_moment_max: float = quantity("finger_bending_moment_max_Nm", "N m",
-                                         "largest bending moment of the finger at the roller's section")
+                                         "largest bending moment of the finger at its critical section")
+    bending_stress_max: Optional[float] = quantity("finger_bending_stress_max_MPa", "MPa", "largest bending stress of "
+                                                   "the finger at its critical section", omit_none=True, default=None)
 
 
 @dataclass(frozen=True)
@@ -642,7 +644,9 @@ def strength_stage(valve, gas, engine, cam, drive, dynamics=None) -> tuple[Stren
             m.force[:, int(np.argmin(np.abs(m.theta - law.valve_opens)))] += cam.rocker_ratio * p_open
     result, checks = _strength(valve, cam, theta, contact_loads(cam, maps), p_open, _worst(maps, [m.force for m in maps]))
     if cam.follower_model.law_at_valve:
-        result = replace(result, finger=finger_loads(cam, maps))
+        finger, bending = finger_bending(valve.parts, *finger_loads(cam, maps))
+        result = replace(result, finger=finger, checks=result.checks + bending[0], not_checked=result.not_checked
+                         + bending[1])
     result = replace(result, speed_range=(float(low), float(high)), lowest_speed_source=source,
                      rated_speed=engine.rated_speed)
     return result, list(result.checks) + found + checks
@@ -654,15 +658,33 @@ def _where(w):
             f"({w.kind} force)")
 
 
-def finger_loads(cam, maps) -> FingerLoads:
+def finger_loads(cam, maps) -> tuple[FingerLoads, Worst]:
     """The :class:`FingerLoads` of a finger under the force at the valve of the load maps (before
-    :func:`contact_loads`), at their worst."""
+    :func:`contact_loads`), at their worst, and where its bending moment is largest (:class:`Worst`)."""
     follower, heel = cam.follower_model, cam.heel_radius
     found = []
     for m in maps:
         h, dh = cam.law.derivatives(m.theta)[:2]
         found.append(follower.loads(m.force, heel, h, dh))
-    return FingerLoads(*(max(float(np.max(f[k])) for f in found) for k in range(3)))
+    return (FingerLoads(*(max(float(np.max(f[k])) for f in found) for k in range(3))),
+            _worst(maps, [f[2] for f in found]))
+
+
+def finger_bending(parts, loads, moment) -> tuple[FingerLoads, tuple[tuple[Check, ...], tuple[str, ...]]]:
+    """The finger's bending stress at its critical section under its largest bending moment ``moment``
+    (:class:`Worst`, :meth:`~valvetrain.followers.PivotedFollower.loads`) on the rectangular section of
+    ``parts.finger_section_width_mm`` x ``finger_section_height_mm`` (:func:`valvetrain.strength.rectangle_bending_stress`):
+    ``loads`` with the stress, and (its check,) or the note that the section is not given."""
+    keys = ("finger_section_width_mm", "finger_section_height_mm")
+    missing = [key for key in keys if getattr(parts, si_name(key)[0]) is None]
+    if missing:
+        return loads, ((), (f"finger_bending: not checked, parts.{', parts.'.join(missing)} not given",))
+    stress = strength.rectangle_bending_stress(moment.value, parts.finger_section_width, parts.finger_section_height)
+    note = (f"{_where(moment)}; M = {moment.value:.4g} N m on b x h = {to_display(parts.finger_section_width, 'mm'):g} x "
+            f"{to_display(parts.finger_section_height, 'mm'):g} mm, W = b h^2 / 6 (Shigley's Mechanical Engineering "
+            "Design, 9th ed. (2011))")
+    return (replace(loads, bending_stress_max=float(stress)),
+            ((strength.verdict("finger_bending", float(stress), note),), ()))
 
 
 def _strength(valve, cam, theta, maps, p_open, valve_load):

@@ -331,28 +331,41 @@ class PivotedFollower(RollerFollower):
     def loads(self, force, heel, h, dh):
         """The finger's loads under a force ``force`` [N] at the valve (along its axis), at the valve lifts ``h`` [m],
         ``dh`` [m/rad] (``force`` broadcasts against them): the roller's (its bearing's) load N [N], the pivot's
-        load |R| [N] and the bending moment at the roller's section M [N m].
+        load |R| [N] and the bending moment at the finger's critical section M [N m].
 
         Notes
         -----
         The finger in equilibrium under the cam's force N n at the roller centre C (n the contact normal, from the cam
         to the roller), the valve tip's -F a at the pad's contact X = B + rho_p a and the pivot's reaction R:
 
-        .. math:: N = \\frac{F G}{L_r\\cos\\beta}, \\qquad \\mathbf R = F\\mathbf a - N\\mathbf n, \\qquad
-                  M = F\\,|(\\mathbf B - \\mathbf C)\\times\\mathbf a|
+        .. math:: N = \\frac{F G}{L_r\\cos\\beta}, \\qquad \\mathbf R = F\\mathbf a - N\\mathbf n
 
-        (the moment of the pad's force about the roller centre; that of the pivot's reaction is equal and opposite).
+        A beam under three forces bends most at the middle one's point, where the moment is that of an end force
+        about it: at the roller centre of an end-pivot finger (0 < L_r < L_p), :math:`M = F|(\\mathbf B - \\mathbf
+        C)\\times\\mathbf a|`; at the pivot of a centre-pivot rocker (L_p < 0), :math:`M = F|(\\mathbf B - \\mathbf
+        P)\\times\\mathbf a| = F|G|`; at the pad of a finger whose valve lies between pivot and roller (0 < L_p <
+        L_r), the pivot's reaction about the pad's contact, :math:`M = |(\\mathbf P - \\mathbf X)\\times\\mathbf R|`.
+
+        References
+        ----------
+        Norton (2009), the chapter on follower trains (the forces of a pivoted follower).
         """
         psi = self.angle_of(h, heel)
         _, w, _, _ = self._w(heel, h, dh, np.zeros_like(h))
         n = _quarter(w) / np.hypot(*w)
         a = np.array([np.sin(self.valve_angle), np.cos(self.valve_angle)])
         normal = self.contact_force(force, heel, h, dh)
-        pivot = np.hypot(force * a[0] - normal * n[0], force * a[1] - normal * n[1])
+        reaction = np.stack([force * a[0] - normal * n[0], force * a[1] - normal * n[1]])
         lb, beta = self._pad
         arm = self.centre(psi) - self._pivot.reshape((2,) + (1,) * np.ndim(psi))
         pad = lb * np.stack([np.cos(psi + beta), np.sin(psi + beta)])
-        return normal, pivot, np.abs(force * _cross(pad - arm, a))
+        if self.pad_arm < 0.0:
+            moment = force * _cross(pad, a)
+        elif self.pad_arm < self.roller_arm:
+            moment = _cross(-(pad + self.pad_radius * a.reshape((2,) + (1,) * np.ndim(psi))), reaction)
+        else:
+            moment = force * _cross(pad - arm, a)
+        return normal, np.hypot(*reaction), np.abs(moment)
 
     def surface_velocities(self, omega, heel, h, dh, d2h, rho):
         """Both surfaces at the contact point's speed along the profile, omega |q'| rho / (rho + R_r): pure rolling

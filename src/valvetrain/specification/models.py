@@ -185,6 +185,8 @@ class Parts(_Model):
     rocker_shaft_diameter_mm: Optional[Length(1.0, 200.0, low_open=False)] = None
     rocker_shaft_bore_mm: Length(0.0, 200.0, low_open=False) = 0.0
     rocker_width_mm: Optional[Length(0.5, 200.0, low_open=False)] = None
+    finger_section_width_mm: Optional[Length(0.5, 100.0, low_open=False)] = None
+    finger_section_height_mm: Optional[Length(0.5, 100.0, low_open=False)] = None
 
     @model_validator(mode="after")
     def _consistent(self):
