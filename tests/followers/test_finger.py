@@ -292,7 +292,8 @@ def lagrangian_force(f, inertia, h, dh, d2h, step=2e-6):
 def test_the_finger_s_inertia_force_against_lagrange_s_equation_by_finite_differences():
     """J psi'' / G at five angles of the valve law against Lagrange's equation of the finger's kinetic energy, built by
     finite differences of the hand-built linkage (:func:`lagrangian_force`), to 1e-6 (found 2.2e-7); the
-    velocity-squared term is 0.27-5.5 % of the force here, so a constant-ratio J / G^2 v'' would fail (it is checked to)."""
+    velocity-squared term is 0.27-5.5 % of the force here, so a constant-ratio J / G^2 v'' would fail (it is checked
+    to)."""
     inertia = 12e-6
     theta = np.array([-0.8, -0.45, -0.2, 0.3, 0.7])
     h, dh, d2h = valve_law(theta)

@@ -16,7 +16,7 @@ import numpy as np
 
 from .. import flow, masses, springs, strength
 from ..checks import Check, check
-from ..layouts import chain, layout, train_mass, valve_arm
+from ..layouts import chain, layout, train_inertia, train_mass
 from ..locale import record_text
 from ..locale.wording import diagnosis_text
 from ..spring_materials import grade
@@ -405,7 +405,7 @@ def drive_stage(valve, gas, cam) -> DriveResult:
     spring_total_mass = 0.0
     for _ in range(20):
         m_v, mass_source = train_mass(valve, spring_total_mass)
-        p_j = omega**2 * train_inertia(valve, cam, theta, m_v)
+        p_j = omega**2 * train_inertia(valve, law, theta, m_v)
         required = springs.spring_force_over(p_j, drive.spring_reserve)
         seat = springs.seat_load(m_v) if sp.min_preload_N is None else sp.min_preload_N
         requirement = springs.Requirement(y, required, max(p_gas, seat))
@@ -468,21 +468,6 @@ def drive_stage(valve, gas, cam) -> DriveResult:
     return DriveResult(mass_result, spring_result, None, tuple(found), y, inertia, required, lines, diagnosis)
 
 
-def train_inertia(valve, cam, theta, mass) -> np.ndarray:
-    """The train's inertia force at the valve per camshaft speed squared at the camshaft angles ``theta`` [rad from the
-    nose] [N s^2/rad^2]: m_v i_k h'' (Valve-train practical works (n.d.), eq. 5.1) with ``mass`` m_v [kg]; a finger's
-    own inertia J by its variable ratio instead of J / G_0^2 in m_v, (m_v - J / G_0^2) h'' + J psi'' / G
-    (:meth:`~valvetrain.followers.PivotedFollower.inertia_force`; Norton (2009)), the rest at the valve."""
-    law, follower = cam.law, cam.follower_model
-    h, dh, d2h = law.derivatives(theta)[:3]
-    masses_given = valve.drive.masses
-    if not follower.law_at_valve or masses_given is None or masses_given.rocker_inertia == 0.0:
-        return mass * cam.rocker_ratio * d2h
-    inertia = masses_given.rocker_inertia
-    return ((mass - inertia / valve_arm(valve) ** 2) * d2h
-            + follower.inertia_force(inertia, cam.heel_radius, h, dh, d2h))
-
-
 def strength_speed_range(engine, dynamics=None) -> tuple[float, float, str]:
     """The engine speeds the strength is checked over [rad/s]: the lowest, the highest and where the lowest comes from.
 
@@ -511,8 +496,8 @@ def quasi_static_loads(rocker_ratio, theta, spring_force, inertia, speeds, to_ca
     spring_force : ndarray (n,)
         Spring force at the valve at those angles [N].
     inertia : ndarray (n,)
-        The train's inertia force at the valve per camshaft speed squared at those angles, :func:`train_inertia`
-        [N s^2/rad^2] (m_v i_k h'').
+        The train's inertia force at the valve per camshaft speed squared at those angles [N s^2/rad^2] (m_v i_k h'',
+        :func:`~valvetrain.layouts.train_inertia`).
     speeds : ndarray (S,)
         Engine speeds [rad/s].
     to_cam : float
@@ -521,9 +506,8 @@ def quasi_static_loads(rocker_ratio, theta, spring_force, inertia, speeds, to_ca
     Notes
     -----
     :math:`P_T(n, \\theta) = i_k\\,(P_{spr}(\\theta) + m_v\\,i_k\\,\\omega_{cam}(n)^2\\,h''(\\theta))`, (7.1) at every
-    speed (a finger's inertia by its variable ratio, :func:`train_inertia`): the inertia of the rigid train grows with
-    the square of the speed, so the spring carries the nose alone
-    at low speed.
+    speed (a finger's inertia by its variable ratio, :func:`~valvetrain.layouts.train_inertia`): the inertia of the
+    rigid train grows with the square of the speed, so the spring carries the nose alone at low speed.
 
     References
     ----------
@@ -562,8 +546,8 @@ def load_maps(valve, engine, cam, theta, spring_force, mass, dynamics=None) -> t
         speeds = speeds[(speeds < swept[0]) | (speeds > swept[1])]
     if speeds.size:
         to_cam = cam.cam_speed / engine.rated_speed
-        maps.append(quasi_static_loads(cam.rocker_ratio, theta, spring_force, train_inertia(valve, cam, theta, mass),
-                                       speeds, to_cam))
+        inertia = train_inertia(valve, cam.law, theta, mass)
+        maps.append(quasi_static_loads(cam.rocker_ratio, theta, spring_force, inertia, speeds, to_cam))
     return [m for m in maps if m is not None], (low, high, source)
 
 
@@ -673,15 +657,15 @@ def finger_loads(cam, maps) -> tuple[FingerLoads, Worst]:
 def finger_bending(parts, loads, moment) -> tuple[FingerLoads, tuple[tuple[Check, ...], tuple[str, ...]]]:
     """The finger's bending stress at its critical section under its largest bending moment ``moment``
     (:class:`Worst`, :meth:`~valvetrain.followers.PivotedFollower.loads`) on the rectangular section of
-    ``parts.finger_section_width_mm`` x ``finger_section_height_mm`` (:func:`valvetrain.strength.rectangle_bending_stress`):
-    ``loads`` with the stress, and (its check,) or the note that the section is not given."""
+    ``parts.finger_section_width_mm`` x ``finger_section_height_mm``
+    (:func:`valvetrain.strength.rectangle_bending_stress`): ``loads`` with the stress, and (its check,) or the note that the section is not given."""
     keys = ("finger_section_width_mm", "finger_section_height_mm")
     missing = [key for key in keys if getattr(parts, si_name(key)[0]) is None]
     if missing:
         return loads, ((), (f"finger_bending: not checked, parts.{', parts.'.join(missing)} not given",))
     stress = strength.rectangle_bending_stress(moment.value, parts.finger_section_width, parts.finger_section_height)
-    note = (f"{_where(moment)}; M = {moment.value:.4g} N m on b x h = {to_display(parts.finger_section_width, 'mm'):g} x "
-            f"{to_display(parts.finger_section_height, 'mm'):g} mm, W = b h^2 / 6 (Shigley's Mechanical Engineering "
+    width, height = (to_display(x, "mm") for x in (parts.finger_section_width, parts.finger_section_height))
+    note = (f"{_where(moment)}; M = {moment.value:.4g} N m on b x h = {width:g} x {height:g} mm, W = b h^2 / 6 (Shigley's Mechanical Engineering "
             "Design, 9th ed. (2011))")
     return (replace(loads, bending_stress_max=float(stress)),
             ((strength.verdict("finger_bending", float(stress), note),), ()))

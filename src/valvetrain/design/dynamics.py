@@ -24,7 +24,7 @@ from ..dynamics.perturbation import perturbation_parameter
 from ..dynamics.resonance import resonance
 from ..dynamics.sweep import SpeedResult, SweepResult, sweep, sweep_size
 from ..followers import follower_of
-from ..layouts import chain, layout, valve_arm
+from ..layouts import chain, layout, train_inertia, valve_arm
 from ..specification import SpecError
 from ..specification.messages import Problem
 from ..strength import cam_force
@@ -319,7 +319,7 @@ def adjuster_reference_force(valve, law, drive, cam_speed: float, ratio: float) 
     theta = np.linspace(law.valve_opens, law.valve_closes, 2001)
     k = valve.rocker_ratio
     spring = drive.lines["chosen"].force(k * law.lift(theta))
-    force = cam_force(spring, drive.masses.at_valve * k * cam_speed**2 * law.derivatives(theta)[2], k)
+    force = cam_force(spring, cam_speed**2 * train_inertia(valve, law, theta, drive.masses.at_valve), k)
     return float(force.max()) / k * ratio
 
 
@@ -384,10 +384,9 @@ def inertia_arm(valve, law, drive) -> tuple[Optional[float], Optional[str]]:
     at = int(np.argmax(drive.required_force))
     if parts is None or parts.rocker_inertia == 0.0:
         return float(arm[at]), None
-    reduced = parts.rocker_inertia / arm**2
+    reduced, heel_circle = parts.rocker_inertia / arm**2, parts.rocker_inertia / valve_arm(valve)**2
     return float(arm[at]), (f"finger: J / G^2 = {reduced[at] * 1e3:.5g} g at the valve lift {drive.lift[at] / MM:.4g} "
-                            f"mm of the largest required spring force ({parts.rocker_inertia / valve_arm(valve)**2 * 1e3:.5g} "
-                            f"g on the heel circle, {reduced.min() * 1e3:.5g}...{reduced.max() * 1e3:.5g} g over the "
+                            f"mm of the largest required spring force ({heel_circle * 1e3:.5g} g on the heel circle, {reduced.min() * 1e3:.5g}...{reduced.max() * 1e3:.5g} g over the "
                             "lift), held constant: its change with the lift and the velocity-squared force of the "
                             "variable ratio are left out")
 
