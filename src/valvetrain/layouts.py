@@ -82,17 +82,16 @@ def train_mass(valve, spring_mass) -> tuple[float, str]:
                                spring_mass=spring_mass)
 
 
-def train_inertia(valve, law, theta, mass) -> np.ndarray:
-    """The train's inertia force at the valve per camshaft speed squared at the camshaft angles ``theta`` [rad from the
-    nose] of the lift law ``law`` [N s^2/rad^2] (SI view of the valve): m_v i_k h'' (Valve-train practical works
-    (n.d.), eq. 5.1) with ``mass`` m_v [kg]; a finger's own inertia J by its variable ratio instead of the J / G_0^2
-    in m_v (:func:`train_mass`), (m_v - J / G_0^2) h'' + J psi'' / G
+def finger_inertia(valve, law, theta) -> np.ndarray:
+    """What a finger's inertia by its variable ratio adds to the train's m_v h'' (:func:`train_mass` counts its
+    J / G_0^2 at the ratio of the heel circle), per camshaft speed squared, at the camshaft angles ``theta`` [rad from
+    the nose] of the lift law ``law`` [N s^2/rad^2] (SI view of the valve): J psi'' / G - J h'' / G_0^2
     (:meth:`~valvetrain.followers.PivotedFollower.inertia_force`; Norton (2009)), on the heel circle r0 - the ramp
-    height."""
+    height; zero for another follower or without the finger's inertia."""
     follower, parts = follower_of(valve.cam), valve.drive.masses
     h, dh, d2h = law.derivatives(theta)[:3]
     if not follower.law_at_valve or parts is None or parts.rocker_inertia == 0.0:
-        return mass * valve.rocker_ratio * d2h
+        return np.zeros_like(d2h)
     inertia = parts.rocker_inertia
-    return ((mass - inertia / valve_arm(valve) ** 2) * d2h
-            + follower.inertia_force(inertia, valve.cam.base_radius - law.ramp_height, h, dh, d2h))
+    return (follower.inertia_force(inertia, valve.cam.base_radius - law.ramp_height, h, dh, d2h)
+            - inertia / valve_arm(valve) ** 2 * d2h)

@@ -16,7 +16,7 @@ import numpy as np
 
 from .. import flow, masses, springs, strength
 from ..checks import Check, check
-from ..layouts import chain, layout, train_inertia, train_mass
+from ..layouts import chain, finger_inertia, layout, train_mass
 from ..locale import record_text
 from ..locale.wording import diagnosis_text
 from ..spring_materials import grade
@@ -316,8 +316,8 @@ class DriveResult:
     strength: Optional[StrengthResult]             # set by :func:`strength_stage` (None from drive_stage alone)
     checks: tuple[Check, ...]      # every check of the drive, passed or not
     lift: np.ndarray = field(repr=False)             # valve lift along the open event [m]
-    inertia_force: np.ndarray = field(repr=False)    # |P_j| where P_j < 0: m_v |j_v| (a finger's, train_inertia) [N]
-    required_force: np.ndarray = field(repr=False)   # K_z |P_j| [N]
+    inertia_force: np.ndarray = field(repr=False)    # m_v |j_v| where j_v < 0 (a finger's by its variable ratio) [N]
+    required_force: np.ndarray = field(repr=False)   # K_z m_v |j_v| [N]
     lines: dict[str, springs.Characteristic] = field(repr=False)   # required, chosen, outer, inner
     diagnosis: Optional[springs.Diagnosis] = None   # why no spring passes, where none does
 
@@ -391,6 +391,8 @@ def drive_stage(valve, gas, cam) -> DriveResult:
     theta = np.unique(np.concatenate([np.linspace(law.valve_opens, law.valve_closes, 2001), law.breakpoints]))
     theta = theta[(theta >= law.valve_opens) & (theta <= law.valve_closes)]
     y = cam.valve_lift(theta)
+    a_v = i_k * omega**2 * law.derivatives(theta)[2]
+    finger = omega**2 * finger_inertia(valve, law, theta)
     lift = law.lift_max * i_k
 
     if valve.kind == "exhaust":
@@ -405,8 +407,8 @@ def drive_stage(valve, gas, cam) -> DriveResult:
     spring_total_mass = 0.0
     for _ in range(20):
         m_v, mass_source = train_mass(valve, spring_total_mass)
-        p_j = omega**2 * train_inertia(valve, law, theta, m_v)
-        required = springs.spring_force_over(p_j, drive.spring_reserve)
+        j_v = a_v + finger / m_v    # a finger's inertia by its variable ratio, as an acceleration of m_v
+        required = springs.required_spring_force(m_v, j_v, drive.spring_reserve)
         seat = springs.seat_load(m_v) if sp.min_preload_N is None else sp.min_preload_N
         requirement = springs.Requirement(y, required, max(p_gas, seat))
         search = springs.design_springs(requirement, d_g, omega, options)
@@ -464,7 +466,7 @@ def drive_stage(valve, gas, cam) -> DriveResult:
         found += train_checks
     mass_result = MassResult(m_v, masses.reduced_mass_at_tappet(m_v, i_k), mass_source, layout(valve), train)
 
-    inertia = np.clip(-p_j, 0.0, None)
+    inertia = m_v * np.clip(-j_v, 0.0, None)
     return DriveResult(mass_result, spring_result, None, tuple(found), y, inertia, required, lines, diagnosis)
 
 
@@ -484,20 +486,23 @@ def strength_speed_range(engine, dynamics=None) -> tuple[float, float, str]:
     return min(low, engine.rated_speed), engine.over_speed_ratio * engine.rated_speed, source
 
 
-def quasi_static_loads(rocker_ratio, theta, spring_force, inertia, speeds, to_cam) -> LoadMap:
+def quasi_static_loads(law, rocker_ratio, theta, spring_force, mass, speeds, to_cam, finger=0.0) -> LoadMap:
     """The quasi-static cam force over engine speeds x camshaft angles, :class:`LoadMap`.
 
     Parameters
     ----------
+    law : LiftLaw
     rocker_ratio : float
         i_k.
     theta : ndarray (n,)
         Camshaft angles of the open event [rad from the nose].
     spring_force : ndarray (n,)
         Spring force at the valve at those angles [N].
-    inertia : ndarray (n,)
-        The train's inertia force at the valve per camshaft speed squared at those angles [N s^2/rad^2] (m_v i_k h'',
-        :func:`~valvetrain.layouts.train_inertia`).
+    mass : float
+        Reduced mass at the valve m_v [kg].
+    finger : ndarray (n,) or float
+        What a finger's inertia by its variable ratio adds at those angles per camshaft speed squared
+        [N s^2/rad^2] (:func:`~valvetrain.layouts.finger_inertia`).
     speeds : ndarray (S,)
         Engine speeds [rad/s].
     to_cam : float
@@ -506,7 +511,7 @@ def quasi_static_loads(rocker_ratio, theta, spring_force, inertia, speeds, to_ca
     Notes
     -----
     :math:`P_T(n, \\theta) = i_k\\,(P_{spr}(\\theta) + m_v\\,i_k\\,\\omega_{cam}(n)^2\\,h''(\\theta))`, (7.1) at every
-    speed (a finger's inertia by its variable ratio, :func:`~valvetrain.layouts.train_inertia`): the inertia of the
+    speed (and a finger's ``finger`` omega_cam^2 at the valve, its inertia by its variable ratio): the inertia of the
     rigid train grows with the square of the speed, so the spring carries the nose alone at low speed.
 
     References
@@ -514,7 +519,8 @@ def quasi_static_loads(rocker_ratio, theta, spring_force, inertia, speeds, to_ca
     Valve-train practical works (n.d.), work 7, eqs. (7.1)-(7.2).
     """
     omega = np.asarray(speeds, dtype=float)[:, None] * to_cam
-    force = strength.cam_force(spring_force, omega**2 * inertia, rocker_ratio)
+    force = strength.cam_force(spring_force, mass * rocker_ratio * omega**2 * law.derivatives(theta)[2]
+                               + omega**2 * finger, rocker_ratio)
     return LoadMap("quasi-static", np.asarray(speeds, dtype=float), theta, force)
 
 
@@ -546,8 +552,8 @@ def load_maps(valve, engine, cam, theta, spring_force, mass, dynamics=None) -> t
         speeds = speeds[(speeds < swept[0]) | (speeds > swept[1])]
     if speeds.size:
         to_cam = cam.cam_speed / engine.rated_speed
-        inertia = train_inertia(valve, cam.law, theta, mass)
-        maps.append(quasi_static_loads(cam.rocker_ratio, theta, spring_force, inertia, speeds, to_cam))
+        maps.append(quasi_static_loads(cam.law, cam.rocker_ratio, theta, spring_force, mass, speeds, to_cam,
+                                       finger_inertia(valve, cam.law, theta)))
     return [m for m in maps if m is not None], (low, high, source)
 
 

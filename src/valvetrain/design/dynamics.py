@@ -24,7 +24,7 @@ from ..dynamics.perturbation import perturbation_parameter
 from ..dynamics.resonance import resonance
 from ..dynamics.sweep import SpeedResult, SweepResult, sweep, sweep_size
 from ..followers import follower_of
-from ..layouts import chain, layout, train_inertia, valve_arm
+from ..layouts import chain, finger_inertia, layout, valve_arm
 from ..specification import SpecError
 from ..specification.messages import Problem
 from ..strength import cam_force
@@ -319,7 +319,8 @@ def adjuster_reference_force(valve, law, drive, cam_speed: float, ratio: float) 
     theta = np.linspace(law.valve_opens, law.valve_closes, 2001)
     k = valve.rocker_ratio
     spring = drive.lines["chosen"].force(k * law.lift(theta))
-    force = cam_force(spring, cam_speed**2 * train_inertia(valve, law, theta, drive.masses.at_valve), k)
+    force = cam_force(spring, drive.masses.at_valve * k * cam_speed**2 * law.derivatives(theta)[2]
+                      + cam_speed**2 * finger_inertia(valve, law, theta), k)
     return float(force.max()) / k * ratio
 
 

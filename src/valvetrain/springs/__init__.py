@@ -22,8 +22,7 @@ from .formulas import (SHAPE_FACTOR_TABLE, active_coils, fatigue_safety, fatigue
                        resonance_stress, shape_factor_table, shear_stress, spring_lengths, spring_rate, wahl_factor)
 from .requirement import (DEFLECTION_RATIO_RANGE, DEFLECTION_RATIO_STEP, INNER_SHARE_RANGE, SEAT_ACCELERATION,
                           SPRING_RESERVE_RANGE, Characteristic, Requirement, deflection_ratios, enveloping_line,
-                          enveloping_lines, gas_opening_force, required_spring_force, seat_load,
-                          spring_force_over)
+                          enveloping_lines, gas_opening_force, required_spring_force, seat_load)
 from .search import (INNER_DIAMETER_RATIO_LOW, MEAN_DIAMETER_RANGE, MEAN_DIAMETER_STEP, WIRE_RANGE_MM, WIRE_STEP_MM,
                      NoSpringFits, Search, SpringOptions, design_pair, design_spring, design_springs,
                      feasible_mean_diameters, wire_series)
@@ -35,8 +34,7 @@ __all__ = [
     "resonance_stress", "shape_factor_table", "shear_stress", "spring_lengths", "spring_rate", "wahl_factor",
     "DEFLECTION_RATIO_RANGE", "DEFLECTION_RATIO_STEP", "INNER_SHARE_RANGE", "SEAT_ACCELERATION",
     "SPRING_RESERVE_RANGE", "Characteristic", "Requirement", "deflection_ratios", "enveloping_line",
-    "enveloping_lines", "gas_opening_force", "required_spring_force", "seat_load", "spring_force_over",
-    "INNER_DIAMETER_RATIO_LOW",
+    "enveloping_lines", "gas_opening_force", "required_spring_force", "seat_load", "INNER_DIAMETER_RATIO_LOW",
     "MEAN_DIAMETER_RANGE", "MEAN_DIAMETER_STEP", "WIRE_RANGE_MM", "WIRE_STEP_MM", "NoSpringFits", "Search",
     "SpringOptions", "design_pair", "design_spring", "design_springs", "feasible_mean_diameters", "wire_series",
 ]
