@@ -11,6 +11,7 @@ Valve-train practical works (n.d.), works 5 and 7.
 """
 
 from dataclasses import dataclass
+from typing import Optional
 
 import numpy as np
 
@@ -62,7 +63,7 @@ def chain(valve) -> Layout:
     return LAYOUTS[layout(valve)]
 
 
-def valve_arm(valve):
+def valve_arm(valve) -> Optional[float]:
     """The valve-side arm that reduces the rocker's inertia to the valve [m] (SI view): ``[drive] valve_arm_mm``, or
     a finger's effective arm G(psi_0) = dv/dpsi with its roller on the heel circle r0 - clearance, from its geometry
     (:meth:`~valvetrain.followers.PivotedFollower.valve_arm`; None where neither applies)."""
