@@ -26,7 +26,8 @@ LIMITS = {
     "rocker_shaft_shear": (90e6, "max", "MPa", "Valve-train practical works (n.d.), eq. (7.17): <= 90 MPa"),
     "rocker_shaft_bearing": (80e6, "max", "MPa", "Valve-train practical works (n.d.), eq. (7.18): <= 80 MPa"),
     "finger_bending": (150e6, "max", "MPa", "Valve-train practical works (n.d.), eq. (7.15): <= 150 MPa, the bending "
-                       "allowable of the rocker gear's steels 20Kh, 40Kh, 45, taken for the finger"),
+                       "allowable of the rocker gear's steels 20Kh, 40Kh, 45, taken for the finger; sigma = 6 M / (b h^2) "
+                       "of its rectangular section, Shigley's Mechanical Engineering Design, 9th ed. (2011)"),
 }
 """Allowable values: the limit SI (the less strict end of the source's range), its kind, the unit it is shown in
 and its source."""

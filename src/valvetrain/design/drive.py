@@ -671,8 +671,7 @@ def finger_bending(parts, loads, moment) -> tuple[FingerLoads, tuple[tuple[Check
         return loads, ((), (f"finger_bending: not checked, parts.{', parts.'.join(missing)} not given",))
     stress = strength.rectangle_bending_stress(moment.value, parts.finger_section_width, parts.finger_section_height)
     width, height = (to_display(x, "mm") for x in (parts.finger_section_width, parts.finger_section_height))
-    note = (f"{_where(moment)}; M = {moment.value:.4g} N m on b x h = {width:g} x {height:g} mm, W = b h^2 / 6 (Shigley's Mechanical Engineering "
-            "Design, 9th ed. (2011))")
+    note = f"{_where(moment)}; M = {moment.value:.4g} N m, b x h = {width:g} x {height:g} mm"
     return (replace(loads, bending_stress_max=float(stress)),
             ((strength.verdict("finger_bending", float(stress), note),), ()))
 

@@ -387,9 +387,9 @@ def inertia_arm(valve, law, drive) -> tuple[Optional[float], Optional[str]]:
         return float(arm[at]), None
     reduced, heel_circle = parts.rocker_inertia / arm**2, parts.rocker_inertia / valve_arm(valve)**2
     return float(arm[at]), (f"finger: J / G^2 = {reduced[at] * 1e3:.5g} g at the valve lift {drive.lift[at] / MM:.4g} "
-                            f"mm of the largest required spring force ({heel_circle * 1e3:.5g} g on the heel circle, {reduced.min() * 1e3:.5g}...{reduced.max() * 1e3:.5g} g over the "
-                            "lift), held constant: its change with the lift and the velocity-squared force of the "
-                            "variable ratio are left out")
+                            f"mm of the largest required spring force; {heel_circle * 1e3:.5g} g on the heel circle, "
+                            f"{reduced.min() * 1e3:.5g}...{reduced.max() * 1e3:.5g} g over the lift; held constant: its "
+                            "change with the lift and the velocity-squared force of the variable ratio are left out")
 
 
 def build_train(dyn, valve, law, drive, at, cam_speed=None) -> tuple[Union[OneMassTrain, MultiMassTrain], DynamicsParameters]:
