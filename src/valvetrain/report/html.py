@@ -331,7 +331,8 @@ def _lubrication(v):
 CAMSHAFT_ROWS = ["lobes", "camshaft_per_crank_revolution", "peak_torque_Nm", "peak_torque_cam_deg",
                  "lowest_torque_Nm", "mean_torque_Nm", "fluctuating_torque_Nm", "rms_fluctuating_torque_Nm", "power_W",
                  "natural_frequencies_Hz", "frequency_ratio", "largest_twist_cam_deg", "largest_twist_crank_deg",
-                 "largest_deflection_mm", "drive_force_max_N", "drive_force_mean_N", "drive_allowable_force_N"]
+                 "largest_deflection_mm", "drive_force_max_N", "drive_force_mean_N", "drive_allowable_force_N",
+                 "drive_windup_cam_deg", "drive_end_inertia_kg_mm2"]
 """The rows of the report's table of the camshaft's figures (results.json keys)."""
 
 CAMSHAFT_STATIONS = ["station_positions_mm", "station_inertias_kg_mm2", "max_twist_cam_deg", "deflection_mm"]

@@ -742,10 +742,12 @@ TEXT["en"].update({
                  "four-stroke); one lobe's torque at the rated speed is its valve's drive torque F dh/dθ under the "
                  "cam force of the valve's stages (the simulated force where the dynamics ran), with the friction "
                  "torque of the cam contact where the lubrication was computed. The orders of the camshaft speed by "
-                 "the discrete Fourier transform of a revolution; the twist of each lobe station behind the drive "
-                 "end under the instantaneous torque, quasi-static, the shaft's sections in series (T l / G J); the "
-                 "torsional natural frequencies of the stations' inertias (lobes, the valve train reduced to the "
-                 "camshaft, the shaft) on the shaft held at its drive end; the bending deflection of each station "
+                 "the discrete Fourier transform of a revolution; the lag of each lobe station behind the crankshaft "
+                 "under the instantaneous torque, quasi-static, the shaft's sections in series (T l / G J) after the "
+                 "timing drive's stretch (T / k r²; none with a rigid drive); the torsional natural frequencies of "
+                 "the stations' inertias (lobes, the valve train reduced to the camshaft, the shaft) and of the "
+                 "sprocket on the timing drive's stiffness (without it, the shaft held at its drive end); the "
+                 "bending deflection of each station "
                  "under its largest cam force on a simply supported span between its journals; the force of the "
                  "timing drive, the torque over the pitch radius",
     "cs_valves": "Lobes of the valves",
@@ -764,12 +766,14 @@ TEXT["en"].update({
         "power_W": "power taken at the rated speed, W",
         "natural_frequencies_Hz": "torsional natural frequencies, Hz",
         "frequency_ratio": "first natural frequency / highest significant order at the over-speed",
-        "largest_twist_cam_deg": "largest twist behind the drive end, cam deg",
+        "largest_twist_cam_deg": "largest lag behind the crankshaft, cam deg",
         "largest_twist_crank_deg": "the same, crank deg", "largest_deflection_mm": "largest bending deflection, mm",
         "drive_force_max_N": "largest force of the timing drive, N", "drive_force_mean_N": "mean force, N",
         "drive_allowable_force_N": "allowable force, N",
+        "drive_windup_cam_deg": "largest stretch of the timing drive, cam deg",
+        "drive_end_inertia_kg_mm2": "inertia at the drive end (sprocket and shaft), kg·mm²",
         "station_positions_mm": "position from the drive end, mm",
-        "station_inertias_kg_mm2": "inertia, kg·mm²", "max_twist_cam_deg": "largest twist, cam deg",
+        "station_inertias_kg_mm2": "inertia, kg·mm²", "max_twist_cam_deg": "largest lag, cam deg",
         "deflection_mm": "bending deflection, mm", "order": "order", "order_amplitudes_Nm": "amplitude, N·m",
         "resonance_speeds_rpm": "resonant engine speed, rpm",
     },
@@ -783,10 +787,12 @@ TEXT["ru"].update({
                  "момент привода его клапана F dh/dθ от силы на кулачке, найденной расчётом клапана (рассчитанной "
                  "динамикой силы, где она считалась), с моментом трения в контакте кулачка, где рассчитана смазка. "
                  "Гармоники частоты вращения распределительного вала — дискретным преобразованием Фурье за оборот; "
-                 "закрутка каждого сечения кулачков относительно приводного конца под мгновенным моментом, "
-                 "квазистатически, участки вала последовательно (T l / G J); собственные частоты крутильных колебаний "
-                 "моментов инерции сечений (кулачки, привод клапана, приведённый к валу, сам вал) на валу, "
-                 "закреплённом у приводного конца; прогиб вала у каждого сечения под наибольшей силой на кулачке как "
+                 "отставание каждого сечения кулачков от коленчатого вала под мгновенным моментом, "
+                 "квазистатически, участки вала последовательно (T l / G J) после растяжения привода "
+                 "(T / k r²; при жёстком приводе его нет); собственные частоты крутильных колебаний моментов инерции "
+                 "сечений (кулачки, привод клапана, приведённый к валу, сам вал) и звёздочки на жёсткости привода "
+                 "(без неё — на валу, закреплённом у приводного конца); прогиб вала у каждого сечения под "
+                 "наибольшей силой на кулачке как "
                  "балки на двух опорах между его шейками; окружная сила привода — момент, делённый на радиус "
                  "начальной окружности",
     "cs_valves": "Кулачки клапанов",
@@ -806,12 +812,14 @@ TEXT["ru"].update({
         "power_W": "мощность привода на номинальной частоте, Вт",
         "natural_frequencies_Hz": "собственные частоты крутильных колебаний, Гц",
         "frequency_ratio": "первая собственная частота / наивысшая значимая гармоника на максимальной частоте",
-        "largest_twist_cam_deg": "наибольшая закрутка относительно приводного конца, град ПРВ",
+        "largest_twist_cam_deg": "наибольшее отставание от коленчатого вала, град ПРВ",
         "largest_twist_crank_deg": "то же, град ПКВ", "largest_deflection_mm": "наибольший прогиб, мм",
         "drive_force_max_N": "наибольшая окружная сила привода, Н", "drive_force_mean_N": "средняя окружная сила, Н",
         "drive_allowable_force_N": "допустимая сила, Н",
+        "drive_windup_cam_deg": "наибольшее растяжение привода, град ПРВ",
+        "drive_end_inertia_kg_mm2": "момент инерции приводного конца (звёздочка и вал), кг·мм²",
         "station_positions_mm": "расстояние от приводного конца, мм",
-        "station_inertias_kg_mm2": "момент инерции, кг·мм²", "max_twist_cam_deg": "наибольшая закрутка, град ПРВ",
+        "station_inertias_kg_mm2": "момент инерции, кг·мм²", "max_twist_cam_deg": "наибольшее отставание, град ПРВ",
         "deflection_mm": "прогиб, мм", "order": "порядок", "order_amplitudes_Nm": "амплитуда, Н·м",
         "resonance_speeds_rpm": "резонансная частота вращения двигателя, об/мин",
     },

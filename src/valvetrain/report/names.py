@@ -606,6 +606,10 @@ NAMES.update({
     "camshaft.drive_pitch_radius": ("pitch radius of the sprocket, pulley or gear",
                                     "радиус начальной окружности звёздочки, шкива или шестерни"),
     "camshaft.drive_allowable_force": ("allowable force of the timing drive", "допустимая сила привода"),
+    "camshaft.drive_stiffness": ("stiffness of the timing drive at the pitch radius",
+                                 "жёсткость привода распределительного вала на радиусе начальной окружности"),
+    "camshaft.sprocket_inertia": ("polar inertia of the sprocket, pulley or gear",
+                                  "момент инерции звёздочки, шкива или шестерни"),
 })
 
 NAMES.update({
