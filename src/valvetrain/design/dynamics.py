@@ -24,7 +24,7 @@ from ..dynamics.perturbation import perturbation_parameter
 from ..dynamics.resonance import resonance
 from ..dynamics.sweep import SpeedResult, SweepResult, headline_sweep, sweep, sweep_size
 from ..followers import follower_of
-from ..layouts import chain, layout
+from ..layouts import chain, finger_inertia, layout, valve_arm
 from ..specification import SpecError
 from ..specification.messages import Problem
 from ..strength import cam_force
@@ -320,7 +320,8 @@ def adjuster_reference_force(valve, law, drive, cam_speed: float, ratio: float) 
     theta = np.linspace(law.valve_opens, law.valve_closes, 2001)
     k = valve.rocker_ratio
     spring = drive.lines.chosen.force(k * law.lift(theta))
-    force = cam_force(spring, drive.masses.at_valve * k * cam_speed**2 * law.derivatives(theta)[2], k)
+    force = cam_force(spring, drive.masses.at_valve * k * cam_speed**2 * law.derivatives(theta)[2]
+                      + cam_speed**2 * finger_inertia(valve, law, theta), k)
     return float(force.max()) / k * ratio
 
 
@@ -380,6 +381,32 @@ def adjuster_link(valve, law, drive, cam_speed: float, at: str) -> tuple[float, 
                       f"column's secant stiffness under {force:.4g} N)"), adjuster_element(la, ratio)
 
 
+def inertia_arm(valve, law, drive) -> tuple[Optional[float], Optional[str]]:
+    """The valve arm that reduces the rocker's inertia to the valve in the dynamics model [m], and a note (None but
+    for a finger of given inertia): ``[drive] valve_arm_mm``, or a finger's effective arm G(psi) = dv/dpsi at the valve
+    lift of the largest required spring force (:attr:`DriveResult.required_force`, where the train first leaves the
+    cam as the speed rises).
+
+    The lumped masses of the dynamics are constant: the finger's J / G(psi)^2 is taken at that lift, and its change
+    over the lift with the velocity-squared force of the variable ratio, (1/2) d(J/G^2)/dv v_dot^2
+    (:meth:`~valvetrain.followers.PivotedFollower.inertia_force`, which the spring requirement and the quasi-static
+    loads use), are left out; the note gives the range of J / G^2 over the lift.
+    """
+    follower, parts = follower_of(valve.cam), valve.drive.masses
+    if not follower.law_at_valve:
+        return valve.drive.valve_arm, None
+    heel = valve.cam.base_radius - law.ramp_height
+    arm = follower.valve_arm(follower.angle_of(drive.lift, heel))
+    at = int(np.argmax(drive.required_force))
+    if parts is None or parts.rocker_inertia == 0.0:
+        return float(arm[at]), None
+    reduced, heel_circle = parts.rocker_inertia / arm**2, parts.rocker_inertia / valve_arm(valve)**2
+    return float(arm[at]), (f"finger: J / G^2 = {reduced[at] * 1e3:.5g} g at the valve lift {drive.lift[at] / MM:.4g} "
+                            f"mm of the largest required spring force; {heel_circle * 1e3:.5g} g on the heel circle, "
+                            f"{reduced.min() * 1e3:.5g}...{reduced.max() * 1e3:.5g} g over the lift; held constant: its "
+                            "change with the lift and the velocity-squared force of the variable ratio are left out")
+
+
 def build_train(dyn, valve, law, drive, at, cam_speed=None) -> tuple[Union[OneMassTrain, MultiMassTrain], DynamicsParameters]:
     """The train of a valve: (train, DynamicsParameters).  ``drive`` is the drive stage's DriveResults.
 
@@ -395,12 +422,19 @@ def build_train(dyn, valve, law, drive, at, cam_speed=None) -> tuple[Union[OneMa
         links = (float(series(links[0], adjuster)),) + links[1:]
         notes.append(note)
     c = float(series(*links))
+    arm, arm_note = inertia_arm(valve, law, drive)
     if dyn.mass_kg is None:
         mass = float(drive.masses.at_valve)
-        notes.insert(0, f"M = {mass:.5g} kg: the reduced mass at the valve of the spring design (masses.at_valve_kg)")
+        if arm_note:
+            inertia = valve.drive.masses.rocker_inertia
+            mass += inertia / arm**2 - inertia / valve_arm(valve)**2
+        notes.insert(0, f"M = {mass:.5g} kg: the reduced mass at the valve of the spring design (masses.at_valve_kg)"
+                     + (", the finger's at the lift below" if arm_note else ""))
     else:
         mass = float(dyn.mass_kg)
         notes.insert(0, f"M = {mass:.5g} kg given ([dynamics] mass_kg)")
+    if arm_note:
+        notes.insert(1, arm_note)
     rate, preload, spring_note = train_spring(dyn, valve, law, line, mass, cam_speed, at)
     notes.append(spring_note)
     notes.append(f"lash {lash / MM:.4g} mm at the valve: the clearance the ramp takes up times the rocker ratio")
@@ -411,7 +445,7 @@ def build_train(dyn, valve, law, drive, at, cam_speed=None) -> tuple[Union[OneMa
         train = one_mass_train(mass, c, rate, preload, k, lash, **kw)
     else:
         springs, spring_notes = multi_springs(dyn, drive.spring, rate, preload)
-        train = _multi_train(valve, links, springs, lash, kw, at)
+        train = _multi_train(valve, links, springs, lash, kw, at, arm)
         net = train.network()
         nodes = {n: float(m) for n, m in zip(net.names, net.mass, strict=True)}
         notes.extend(spring_notes)
@@ -422,8 +456,9 @@ def build_train(dyn, valve, law, drive, at, cam_speed=None) -> tuple[Union[OneMa
     return train, params
 
 
-def _multi_train(valve, links, springs, lash, kw, at):
-    """A pushrod, rocker or direct multi-mass train from the part masses of [drive.masses]."""
+def _multi_train(valve, links, springs, lash, kw, at, arm):
+    """A pushrod, rocker or direct multi-mass train from the part masses of [drive.masses], the rocker's inertia on the
+    valve arm ``arm`` [m] (:func:`inertia_arm`)."""
     m, drive = valve.drive.masses, chain(valve)
     need = drive.train_masses
     if m is None:
@@ -431,7 +466,7 @@ def _multi_train(valve, links, springs, lash, kw, at):
                                  f"{', '.join(need)} (the masses of the drive parts)", '"multi"', " ")])
     si_keys = {"tappet_kg": "tappet_kg", "pushrod_kg": "pushrod_kg", "rocker_inertia_kg_mm2": "rocker_inertia"}
     missing = [key for key in need if getattr(m, si_keys[key]) <= 0.0]
-    if drive.rocker and valve.drive.valve_arm is None:
+    if drive.rocker and arm is None:
         missing.append("valve_arm_mm (in [drive])")
     if missing:
         raise SpecError([Problem(f"{at}.dynamics.model", f"with layout \"{drive.name}\" needs positive "
@@ -440,10 +475,10 @@ def _multi_train(valve, links, springs, lash, kw, at):
     valve_mass = m.valve_kg + m.retainer_kg + m.cotters_kg
     inf = math.inf
     if drive.pushrod:
-        return pushrod_train(m.tappet_kg, m.pushrod_kg, m.rocker_inertia, valve_mass, valve.drive.valve_arm, k,
+        return pushrod_train(m.tappet_kg, m.pushrod_kg, m.rocker_inertia, valve_mass, arm, k,
                              links[0] * k**2, links[1] * k**2, links[2], inf, springs, lash, **kw)
     if drive.rocker:
-        return rocker_train(m.rocker_inertia, valve_mass, valve.drive.valve_arm, k, links[0] * k**2, links[1], inf,
+        return rocker_train(m.rocker_inertia, valve_mass, arm, k, links[0] * k**2, links[1], inf,
                             springs, lash, **kw)
     return direct_train(m.tappet_kg, valve_mass, links[0], links[1], springs, lash, **kw)
 

@@ -98,8 +98,6 @@ class Drive(_Model):
     def _one_mass_model(self):
         if self.masses is not None and self.specific_mass_kg_m2 is not None:
             raise ValueError("give either specific_mass_kg_m2 or a [masses] table, not both")
-        if self.masses is not None and self.masses.rocker_inertia_kg_mm2 > 0 and self.valve_arm_mm is None:
-            raise ValueError("masses.rocker_inertia_kg_mm2 needs valve_arm_mm (the valve-side rocker arm)")
         return self
 
 
@@ -187,6 +185,8 @@ class Parts(_Model):
     rocker_shaft_diameter_mm: Optional[Length(1.0, 200.0, low_open=False)] = None
     rocker_shaft_bore_mm: Length(0.0, 200.0, low_open=False) = 0.0
     rocker_width_mm: Optional[Length(0.5, 200.0, low_open=False)] = None
+    finger_section_width_mm: Optional[Length(0.5, 100.0, low_open=False)] = None
+    finger_section_height_mm: Optional[Length(0.5, 100.0, low_open=False)] = None
 
     @model_validator(mode="after")
     def _consistent(self):
