@@ -70,7 +70,8 @@ def main(drags=20):
                 step = (1 if lift < 9.5 else -1) * per_mm
                 page.mouse.move(x, y)
                 page.mouse.down()
-                page.mouse.move(x, y - step)             # at once: 300 ms within 5 px is a press, not a drag
+                page.mouse.move(x, y - 6.0 * (1 if step > 0 else -1))   # at once: 300 ms within 5 px is a press
+                page.mouse.move(x, y - step, steps=4)
                 page.mouse.up()
                 try:
                     page.wait_for_function(f"() => (window.vtTimesDone || 0) > {done[0]} && "

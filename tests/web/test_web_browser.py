@@ -104,14 +104,16 @@ def redrawn_count(page):
 
 
 def drag(page, start, end):
-    """Press at ``start`` (page pixels), move to ``end`` in one move, release; wait for the redraw.  In one move: a
-    pointer that stays within 5 px of where it was pressed for 300 ms is a press to Bokeh, not a drag (its
-    UIGestures thresholds), and on a loaded machine small steps take that long."""
+    """Press at ``start`` (page pixels), move 6 px towards ``end`` at once, then to ``end`` in 4 steps, release; wait
+    for the redraw.  The first 6 px at once: a pointer that stays within 5 px of where it was pressed for 300 ms is a
+    press to Bokeh, not a drag (its UIGestures thresholds), and on a loaded machine small steps take that long."""
     done = redrawn_count(page)
     (x0, y0), (x1, y1) = start, end
+    length = max(((x1 - x0) ** 2 + (y1 - y0) ** 2) ** 0.5, 6.0)
     page.mouse.move(x0, y0)
     page.mouse.down()
-    page.mouse.move(x1, y1)
+    page.mouse.move(x0 + 6.0 * (x1 - x0) / length, y0 + 6.0 * (y1 - y0) / length)
+    page.mouse.move(x1, y1, steps=4)
     page.mouse.up()
     wait_redrawn(page, done)
 
