@@ -178,6 +178,8 @@ def test_a_folder_with_user_files_is_refused(spec_file, tmp_path):
      "valves.intake.clearance_mm"),
     ('key = "engine.bore_mm"\ndistribution = "normal"\nsigma = 1.0\nlow = 70.0\nhigh = 3000.0',
      "engine.bore_mm"),
+    ('key = "valves.intake.spring"\ndistribution = "uniform"\nhalf_range = 0.1',
+     "valves.intake.spring: a table, not a value; give one of its keys\n"),
 ])
 def test_bad_tolerances_are_refused_before_sampling(entry, said, tmp_path):
     """Clearance 0.25 -+ 0.3 mm reaches -0.05 mm (allowed 0 or 0.01-5 mm); a bore truncated at 3000 mm leaves

@@ -494,7 +494,10 @@ def dotted(path):
 
 
 def _show(v):
-    text = _value(_swap_nested(v))            # a nested array may sit anywhere in v (a list of tables copied)
+    try:
+        text = _value(_swap_nested(v))        # a nested array may sit anywhere in v (a list of tables copied)
+    except TypeError:                         # a Python value of an api case (None, bytes, numpy numbers)
+        text = repr(v)
     return text if len(text) <= 60 else text[:40] + f"... ({len(text)} chars)"
 
 
@@ -807,7 +810,7 @@ COMMAND_BASES = ("example", "examples/pushrod-dynamics.toml", "examples/marine-h
 """The base specifications each command runs on unmutated: the built-in example, the dynamics and hydraulic
 examples, a measured lobe and a file without valves."""
 
-COMMAND_TIMEOUT = {"optimize": 4.0, "study": 2.0, "compare": 2.0, "sweep": 2.0}
+COMMAND_TIMEOUT = {"optimize": 4.0, "study": 2.0, "compare": 2.0, "sweep": 2.0, "tolerance": 4.0}
 """Multiples of ``--timeout`` a command's case may take (an optimisation designs dozens of cams)."""
 
 GRID_VALUES = ["{a},{b}", "{a}", "{a},{a},{a}", '["VDSiCr"]', "{{x = 1}}", "nan,{a}", "inf", "abc", "", "1e300,{a}",
@@ -998,6 +1001,9 @@ DOCUMENTED_NULLS = {
     "nonuniformity": "a mean torque that is not positive", "torque_work_balance": "no indicated work",
     "low": "a check open below", "high": "a check open above",
     "valve": "a check of the engine or of a chapter",
+    **dict.fromkeys(("pump_up_um", "held_open_um"), "a speed without a simulated force (no [dynamics])"),
+    "min_contact_force_N": "the valve never leaves its seat (a drive too soft to overcome the preload)",
+    **dict.fromkeys(("max_seating_velocity_m_s", "max_seating_velocity_speed_rpm"), "the valve seats at no speed"),
     "jump_speed_rpm": "no follower separation in the speed range", "bounce_speed_rpm": "no bounce in the range",
     "coil_clash_speed_rpm": "no coil clash in the range",
     "cam_min_concave_radius_mm": "no concave stretch", "master_flat_lift_max_mm": "a master that is not convex",
@@ -1043,10 +1049,20 @@ def _generic(path, valve_names):
     return ".".join(parts).replace(".[]", "[]")
 
 
+def _unevaluated_check(data, path):
+    """Whether ``path`` is the value or margin of a check record (``checks``, ``warnings``) that carries the reason
+    its value cannot be had (valvetrain.checks: such a check is a failure)."""
+    if len(path) != 3 or path[0] not in ("checks", "warnings") or path[2] not in ("value", "margin"):
+        return False
+    return bool(data[path[0]][path[1]].get("unevaluated"))
+
+
 def null_problems(data, valve_names):
     """Non-finite numbers and nulls of ``results.to_dict()`` that are not documented: ``[(generic path, text)]``."""
     out = []
     for path, v in _walk(data):
+        if _unevaluated_check(data, path):
+            continue          # a check whose value cannot be had: null with its reason, margin -inf, a failure
         if v is None or (isinstance(v, (float, np.floating)) and not math.isfinite(v)):
             # the key of a list's item is the list's own (its entries share its documentation)
             key = next((str(p) for p in reversed(path) if not isinstance(p, int)), "")
@@ -1117,6 +1133,56 @@ def plausibility(results):
         fullness = s["flow"]["fullness"]
         if not 0.0 < fullness <= 1.0:
             out.append((f"fullness outside (0, 1] [law={law}]", f"valves.{name}.flow.fullness = {fullness:.6g}"))
+        out += _negative_magnitudes(name, s)
+    return out + _unfailed(results)
+
+
+NON_NEGATIVE = {
+    # section of a valve's results -> keys that are magnitudes (a film, a roughness, a stiffness, a power, a leak)
+    "lubrication": ("reduced_modulus_GPa", "composite_roughness_um", "min_film_parameter", "min_film_um",
+                    "rated_friction_power_W", "rated_mean_friction_torque_N_m"),
+    "lash_adjuster": ("chamber_pressure_MPa", "compression_um", "stiffness_N_per_mm", "stiffness_at_valve_N_per_mm",
+                      "drive_stiffness_with_adjuster_N_per_mm", "rated_leak_down_um", "max_refill_share",
+                      "max_pump_up_um", "max_held_open_um"),
+    "spring": ("preload_N", "max_force_N", "rate_N_per_mm", "wire_mm", "free_length_mm", "installed_length_mm",
+               "min_length_mm", "natural_frequency_Hz", "mass_kg"),
+}
+"""Results that cannot be negative: a negative film thickness or stiffness is no physical result."""
+
+
+def _negative_magnitudes(name, summary):
+    out = []
+    for section, keys in NON_NEGATIVE.items():
+        record = summary.get(section) or {}
+        for key in keys:
+            value = record.get(key)
+            if isinstance(value, (int, float)) and not value >= 0.0:
+                out.append((f"negative {section}.{key}", f"valves.{name}.{section}.{key} = {value:.6g}"))
+    return out
+
+
+def _unfailed(results):
+    """Physically impossible designs that must be graded failures: an undercut profile, a spring whose coils touch
+    before full lift, a follower separating below over_speed_ratio x the rated speed."""
+    out = []
+    engine = results.spec.engine
+    failing = {(c.valve, c.code) for c in results.checks if c.severity == "failure" and not c.passed}
+    for name, v in results.valves.items():
+        s = v.summary
+        if s["cam"].get("undercut") and not any(valve == name and code.startswith("profile.undercut")
+                                                 for valve, code in failing):
+            out.append(("undercut not a failure", f"valves.{name}.cam.undercut = true without a failing check"))
+        spring = s.get("spring") or {}
+        if isinstance(spring.get("min_pitch_mm"), float) and not spring["min_pitch_mm"] > spring["wire_mm"] \
+                and not any(valve == name and code.startswith("spring.") for valve, code in failing):
+            out.append(("coil bind not a failure", f"valves.{name}.spring.min_pitch_mm = {spring['min_pitch_mm']:.6g} "
+                                                   f"<= wire_mm = {spring['wire_mm']:.6g} without a failing check"))
+        jump = (s.get("dynamics") or {}).get("jump_speed_rpm")
+        if jump is not None and jump < engine.over_speed_ratio * engine.rated_speed_rpm * (1.0 - 1e-9) \
+                and (name, "dynamics.jump_speed") not in failing:
+            out.append(("separation below the over-speed not a failure",
+                        f"valves.{name}.dynamics.jump_speed_rpm = {jump:.6g} below over_speed_ratio x rated = "
+                        f"{engine.over_speed_ratio * engine.rated_speed_rpm:.6g} rpm without a failing check"))
     return out
 
 
@@ -1202,8 +1268,65 @@ def _signatures(pairs):
     return [g for g in out if g != "warnings.value"] or out
 
 
+API_FUNCTIONS = ("design", "sweep")
+"""The functions of :mod:`valvetrain.api` an ``api`` case calls with the mutated dictionary."""
+
+
+def run_api_case(case, bases, timeout=60.0):
+    """Run one case through ``valvetrain.api.design`` and ``api.sweep`` with the mutated document as a dictionary
+    (Python values TOML cannot hold, None, tuples, numpy numbers, reach the functions as they are) and classify it:
+    an exception is a traceback, an error record without a key path or with library text a bad message, a result
+    that is not strict JSON nan_output."""
+    from valvetrain import api
+
+    doc, files = copy.deepcopy(bases[case["base"]][0]), {}
+    described = [d for d in (_apply(doc, files, op) for op in case["ops"]) if d is not None]
+    rec = {"base": case["base"], "ops": case["ops"], "mutation": described + ["api: design, sweep"], "api": True}
+    t0 = time.monotonic()
+    old = signal.signal(signal.SIGALRM, _alarm)
+    signal.setitimer(signal.ITIMER_REAL, timeout * len(API_FUNCTIONS))
+    outcome, detail = "ok", []
+    try:
+        for name in API_FUNCTIONS:
+            with warnings.catch_warnings():
+                warnings.simplefilter("error", RuntimeWarning)
+                out = getattr(api, name)(doc)
+            if not out["ok"]:
+                bad = [(e["text"] or e["message"], e["path"], message_problem(e["text"] or e["message"], ""))
+                       for e in out["errors"]]
+                bad = [(m, why) for m, path, why in bad if why and not (why == "no key path" and path)]
+                if not out["errors"] or bad:
+                    outcome = "bad_message"
+                    rec["signature"] = f"api.{name}: " + (f"{bad[0][1]}: {_message_key(bad[0][0])}" if bad
+                                                          else "not ok without an error record")
+                    detail = [_clip(m) for m, _ in bad[:5]]
+                    break
+                outcome, detail = "refused", [_clip(e["text"] or e["message"]) for e in out["errors"][:5]]
+                break
+            try:
+                json.dumps(out, allow_nan=False)
+            except (TypeError, ValueError) as exc:
+                outcome, rec["signature"], detail = "nan_output", f"api.{name}: not strict JSON", [_clip(str(exc))]
+                break
+    except CaseTimeout:
+        outcome, rec["signature"] = "hang", f"api: timeout after {timeout * len(API_FUNCTIONS):g} s"
+    except Exception as exc:  # noqa: BLE001 (every other exception is the finding)
+        own, inner = _frame(traceback.extract_tb(exc.__traceback__))
+        outcome, rec["signature"] = "traceback", f"api: {type(exc).__name__} at {own}"
+        detail = [f"{type(exc).__name__}: {_clip(str(exc))}", f"innermost frame {inner}"]
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, old)
+    rec.update(outcome=outcome, detail=detail, seconds=round(time.monotonic() - t0, 3))
+    rec["signatures"] = [rec["signature"]] if "signature" in rec else []
+    return rec
+
+
 def run_case(case, bases, timeout=60.0, write=False):
-    """Run one case through load_spec -> design.run (-> write_outputs) and classify it; a JSON-ready record."""
+    """Run one case through load_spec -> design.run (-> write_outputs) and classify it; a JSON-ready record (an
+    ``api`` case through :func:`run_api_case`)."""
+    if case.get("api"):
+        return run_api_case(case, bases, timeout)
     text, files, described = materialize(case, bases)
     rec = {"base": case["base"], "ops": case["ops"], "mutation": described, "outcome": None}
     if case.get("command"):

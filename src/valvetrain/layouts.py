@@ -11,8 +11,12 @@ Valve-train practical works (n.d.), works 5 and 7.
 """
 
 from dataclasses import dataclass
+from typing import Optional
+
+import numpy as np
 
 from . import flow, masses
+from .followers import follower_of
 
 
 @dataclass(frozen=True)
@@ -59,10 +63,36 @@ def chain(valve) -> Layout:
     return LAYOUTS[layout(valve)]
 
 
+def valve_arm(valve) -> Optional[float]:
+    """The valve-side arm that reduces the rocker's inertia to the valve [m] (SI view): ``[drive] valve_arm_mm``, or
+    a finger's effective arm G(psi_0) = dv/dpsi with its roller on the heel circle r0 - clearance, from its geometry
+    (:meth:`~valvetrain.followers.PivotedFollower.valve_arm`; None where neither applies)."""
+    follower = follower_of(valve.cam)
+    if follower.law_at_valve:
+        return float(follower.valve_arm(np.array(follower.base_angle(valve.cam.base_radius - valve.clearance))))
+    return valve.drive.valve_arm
+
+
 def train_mass(valve, spring_mass) -> tuple[float, str]:
     """Reduced mass of a valve's train at the valve [kg] and how it was obtained (SI view; Valve-train practical works (n.d.), eq. 5.2 or the
-    specific mass of work 5); ``spring_mass`` [kg] where the part masses leave it to the designed spring."""
+    specific mass of work 5); ``spring_mass`` [kg] where the part masses leave it to the designed spring.  A finger's
+    inertia counts J / G(psi_0)^2, its value on the heel circle (:func:`valve_arm`)."""
     d = valve.drive
     return masses.reduced_mass(float(flow.circle_area(valve.throat_diameter)), layout(valve), valve.rocker_ratio,
-                               parts=d.masses, specific_mass=d.specific_mass_kg_m2, valve_arm=d.valve_arm,
+                               parts=d.masses, specific_mass=d.specific_mass_kg_m2, valve_arm=valve_arm(valve),
                                spring_mass=spring_mass)
+
+
+def finger_inertia(valve, law, theta) -> np.ndarray:
+    """What a finger's inertia by its variable ratio adds to the train's m_v h'' (:func:`train_mass` counts its
+    J / G_0^2 at the ratio of the heel circle), per camshaft speed squared, at the camshaft angles ``theta`` [rad from
+    the nose] of the lift law ``law`` [N s^2/rad^2] (SI view of the valve): J psi'' / G - J h'' / G_0^2
+    (:meth:`~valvetrain.followers.PivotedFollower.inertia_force`; Norton (2009)), on the heel circle r0 - the ramp
+    height; zero for another follower or without the finger's inertia."""
+    follower, parts = follower_of(valve.cam), valve.drive.masses
+    h, dh, d2h = law.derivatives(theta)[:3]
+    if not follower.law_at_valve or parts is None or parts.rocker_inertia == 0.0:
+        return np.zeros_like(d2h)
+    inertia = parts.rocker_inertia
+    return (follower.inertia_force(inertia, valve.cam.base_radius - law.ramp_height, h, dh, d2h)
+            - inertia / valve_arm(valve) ** 2 * d2h)

@@ -25,6 +25,9 @@ LIMITS = {
     "rocker_shaft_bending": (150e6, "max", "MPa", "Valve-train practical works (n.d.), eq. (7.15): <= 150 MPa"),
     "rocker_shaft_shear": (90e6, "max", "MPa", "Valve-train practical works (n.d.), eq. (7.17): <= 90 MPa"),
     "rocker_shaft_bearing": (80e6, "max", "MPa", "Valve-train practical works (n.d.), eq. (7.18): <= 80 MPa"),
+    "finger_bending": (150e6, "max", "MPa", "Valve-train practical works (n.d.), eq. (7.15): <= 150 MPa, the bending "
+                       "allowable of the rocker gear's steels 20Kh, 40Kh, 45, taken for the finger; sigma = 6 M / (b h^2) "
+                       "of its rectangular section, Shigley's Mechanical Engineering Design, 9th ed. (2011)"),
 }
 """Allowable values: the limit SI (the less strict end of the source's range), its kind, the unit it is shown in
 and its source."""
@@ -244,6 +247,20 @@ def rocker_pad_stress(force, modulus, width, radius) -> float:
 def section_modulus(diameter, bore=0.0) -> float:
     """Bending section modulus of a tube, W = pi (D^4 - d^4)/(32 D) [m^3] (Valve-train practical works (n.d.), eq. 7.16)."""
     return np.pi * (diameter**4 - bore**4) / (32.0 * diameter)
+
+
+def rectangle_bending_stress(moment, width, height) -> float | np.ndarray:
+    """Bending stress of a rectangular section, sigma = M / W, W = b h^2 / 6 [Pa], under the moment ``moment`` [N m],
+    ``width`` b and ``height`` h [m] (h in the plane of bending).
+
+    References
+    ----------
+    Shigley's Mechanical Engineering Design, 9th ed. (2011), the section on beams in bending (sigma = M c / I).
+
+    >>> round(rectangle_bending_stress(10.0, 0.006, 0.008) / 1e6, 4)
+    156.25
+    """
+    return 6.0 * moment / (width * height**2)
 
 
 def rocker_shaft_stresses(force, span, rocker_width, diameter, bore=0.0) -> dict[str, float]:

@@ -27,6 +27,7 @@ from scipy.stats import qmc
 
 from .design import run
 from .specification import SpecError, validate
+from .specification.messages import shown
 from .specification.validate import spec_document
 from .study import MMAP_THRESHOLD_BYTES, GridError, check_grid
 from .units import rpm_to_rad_s
@@ -36,9 +37,6 @@ NORMAL_TRUNCATION_SIGMA = 6.0
 
 CONFIDENCE_Z = 1.959963984540054
 """The standard normal quantile of the two-sided 95 % confidence interval of a failure probability."""
-
-METHODS = ("mc", "lhs")
-"""Sampling methods: Monte Carlo, Latin hypercube."""
 
 HISTOGRAM_BINS = 20
 """Bins of the histogram of a margin or a headline."""
@@ -61,9 +59,11 @@ def nominal(spec, key) -> float:
         if not isinstance(node, dict) or part not in node:
             raise ToleranceError(f"tolerances: {key}: no such key in the specification")
         node = node[part]
+    if isinstance(node, dict):
+        raise ToleranceError(f"tolerances: {key}: a table, not a value; give one of its keys")
     if isinstance(node, bool) or not isinstance(node, (int, float)):
-        raise ToleranceError(f"tolerances: {key}: a tolerance needs a number; the file's value is {node!r} (give "
-                             "the key a value)")
+        raise ToleranceError(f"tolerances: {key}: a tolerance needs a number; the file's value is {shown(node)} "
+                             "(give the key a value)")
     return float(node)
 
 

@@ -80,8 +80,10 @@ def test_the_lash_adjuster_at_the_pivot_moves_by_the_finger_s_ratio_less_one(des
 
 @pytest.mark.parametrize("old, new, words", [
     ("opens_deg = 8.0\n", "opens_deg = 8.0\nrocker_ratio = 1.6\n", "rocker_ratio = 1.6: allowed 1 with cam.follower"),
-    ('layout = "rocker"\nvalve_arm_mm = 37.1            #', 'layout = "direct"\nvalve_arm_mm = 37.1            #',
+    ('layout = "rocker"              #', 'layout = "direct"              #',
      "drive.layout = 'direct': allowed \"rocker\""),
+    ('layout = "rocker"              #', 'layout = "rocker"\nvalve_arm_mm = 37.1 #',
+     "drive.valve_arm_mm = 37.1: not allowed with cam.follower"),
     ("finger_roller_arm_mm = 22.5    # pivot to roller centre\n", "", "finger_roller_arm_mm is required"),
     ("finger_roller_arm_mm = 22.5", "finger_roller_arm_mm = 2.5", "cam.finger_roller_arm_mm = 2.5 from the pivot"),
     ("finger_valve_angle_deg = 12.0", "finger_valve_angle_deg = 80.0", "cam.finger_valve_angle_deg = 80: the valve pad"),
@@ -128,3 +130,79 @@ def test_the_camshaft_drive_torque_is_the_valve_force_s_power(design):
                     normal.force, np.array([[300.0]]))
     dv = v.law.derivatives(theta)[1]
     np.testing.assert_allclose(c["drive_torque"][0] - c["friction_torque"][0], 1000.0 * dv, rtol=1e-12, atol=1e-12)
+
+
+def hand_arm_and_force(f, heel, inertia, h, dh, d2h, step=2e-6):
+    """The finger's effective valve arm G = dv/dpsi and its inertia force at the valve per camshaft speed squared
+    (Lagrange's equation, F / omega^2 = m(v) v'' + (1/2) dm/dv v'^2 with m = J / G^2) by finite differences of the
+    hand-built linkage: the tip B(psi) . a from P + R(psi) (L_p, d_p), psi(v) by brentq."""
+    from scipy.optimize import brentq
+
+    a = np.array([np.sin(f.valve_angle), np.cos(f.valve_angle)])
+
+    def tip(p):
+        turn = np.array([[np.cos(p), -np.sin(p)], [np.sin(p), np.cos(p)]])
+        return (np.array([f.pivot_x, f.pivot_y]) + turn @ np.array([f.pad_arm, f.pad_drop])) @ a
+
+    psi0 = f.base_angle(heel)
+
+    def arm(v):
+        psi = brentq(lambda p: tip(p) - tip(psi0) - v, psi0 - 0.6, psi0 + 0.6, xtol=1e-15, rtol=1e-15)
+        return (tip(psi + 1e-6) - tip(psi - 1e-6)) / 2e-6
+
+    def mass(v):
+        return inertia / arm(v) ** 2
+
+    force = [mass(v) * acc + 0.5 * (mass(v + step) - mass(v - step)) / (2.0 * step) * w**2
+             for v, w, acc in zip(h, dh, d2h, strict=True)]
+    return np.array([arm(v) for v in h]), np.array(force)
+
+
+def test_the_spring_requirement_and_the_dynamics_take_the_finger_s_inertia_by_its_variable_ratio():
+    """The intake of the example: the reduced mass m_v = valve + retainer + cotters + spring / 3 + J / G_0^2 (eq. 5.2 of
+    Valve-train practical works (n.d.), G_0 the hand-built linkage's arm on the heel circle); the required spring
+    force at seven angles of the event K_z |P_j|, P_j = omega^2 ((m_v - J / G_0^2) h'' + F_J) with F_J from Lagrange's
+    equation by finite differences (:func:`hand_arm_and_force`), to 1e-6; the dynamics' mass M = m_v - J / G_0^2 +
+    J / G^2 at the lift of the largest required force."""
+    from valvetrain.design.dynamics import build_train
+
+    spec = parse_spec(example_text(drop_dynamics=False))
+    valve = si(spec).valves["intake"]
+    design = run(parse_spec(example_text()))
+    v = design.valves["intake"]
+    law, f, parts = v.law, v.cam.follower_model, valve.drive.masses
+    inertia, omega = parts.rocker_inertia, v.cam.cam_speed
+    assert inertia == pytest.approx(12e-6)
+    g0 = hand_arm_and_force(f, v.cam.heel_radius, inertia, np.zeros(1), np.zeros(1), np.zeros(1))[0][0]
+    spring = v.drive.spring.design.mass
+    rest = parts.valve_kg + parts.retainer_kg + parts.cotters_kg + spring / 3.0
+    assert v.drive.masses.at_valve == pytest.approx(rest + inertia / g0**2, rel=1e-9)
+    theta = np.unique(np.concatenate([np.linspace(law.valve_opens, law.valve_closes, 2001), law.breakpoints]))
+    theta = theta[(theta >= law.valve_opens) & (theta <= law.valve_closes)]
+    pick = np.linspace(0, theta.size - 1, 7).astype(int)
+    h, dh, d2h = law.derivatives(theta[pick])[:3]
+    force = omega**2 * (rest * d2h + hand_arm_and_force(f, v.cam.heel_radius, inertia, h, dh, d2h)[1])
+    expected = valve.drive.spring_reserve * np.clip(-force, 0.0, None)
+    assert np.count_nonzero(expected) >= 3
+    np.testing.assert_allclose(v.drive.required_force[pick], expected, rtol=1e-6, atol=1e-9)
+    at = int(np.argmax(v.drive.required_force))
+    arm = hand_arm_and_force(f, v.cam.heel_radius, inertia, v.drive.lift[at:at + 1], np.zeros(1), np.zeros(1))[0][0]
+    params = build_train(valve.dynamics, valve, law, v.drive, "valves.intake", omega)[1]
+    assert params.mass == pytest.approx(rest + inertia / arm**2, rel=1e-9)
+
+
+def test_the_finger_s_bending_stress_by_hand(design):
+    """The example's finger: b x h = 5 x 12 mm (two cheeks of 2.5 mm beside the roller), W = b h^2 / 6 = 5 x 144 / 6
+    = 120 mm^3; sigma = M / W with M the largest bending moment at the roller's section (the middle of its three
+    forces, tested in tests/followers/test_finger.py), against 150 MPa; without the section keys the check is not run
+    and a note names them."""
+    st = design.valves["intake"].drive.strength
+    moment = st.finger.bending_moment_max
+    assert 10.0 < moment < 20.0
+    check = next(c for c in st.checks if c.code == "strength.finger_bending")
+    assert check.value == pytest.approx(moment / 120e-9, rel=1e-12)
+    assert st.finger.bending_stress_max == check.value and check.high == 150e6 and check.passed
+    text = example_text().replace("finger_section_height_mm = 12.0", "", 1)
+    bare = run(parse_spec(text)).valves["intake"].drive.strength
+    assert bare.finger.bending_stress_max is None
+    assert "finger_bending: not checked, parts.finger_section_height_mm not given" in bare.not_checked

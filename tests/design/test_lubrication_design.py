@@ -91,3 +91,19 @@ def test_without_a_section_there_is_no_lubrication_record():
 def test_refusals_name_the_key(lubrication, parts, words):
     with pytest.raises(SpecError, match=words.replace("(", r"\(").replace(")", r"\)")):
         run(example(lubrication, parts))
+
+
+def test_an_undercut_cam_is_a_failure_not_a_refusal_of_its_lubrication():
+    """A polydyne exponent p = 3 on the shipped finger undercuts the intake cam.  The profile stage grades that a
+    failure (profile.undercut_roller; nothing for its manufacture is written): the cam has no line contact, so the
+    oil film is not computed, and the design still runs with every other check (before the fix the [lubrication]
+    section turned the whole design into a refusal naming valves.intake.lubrication, not the cam)."""
+    from pathlib import Path
+
+    path = Path(__file__).parents[2] / "examples" / "modern-dohc-roller-finger.toml"
+    text = path.read_text(encoding="utf-8").replace("p = 8\nfollower", "p = 3\nfollower", 1)
+    design = run(parse_spec(text)).valves["intake"]
+    undercut = [c for c in design.checks if c.code == "profile.undercut_roller"]
+    assert design.profile.undercut and len(undercut) == 1 and not undercut[0].passed
+    assert undercut[0].severity == "failure"
+    assert design.lubrication is None

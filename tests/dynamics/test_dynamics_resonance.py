@@ -80,3 +80,16 @@ def test_reduced_mass_terms():
     assert m == pytest.approx(0.1 + 0.02 + 5e-5 / 0.04**2 + 0.09 / (3 * (1.5 + 8 / 18) ** 2))
     assert reduced_mass(0.1, 0.06, 5e-5, 0.04, 0.09, 1.5, 8000e3, 12000e3, rigid_pushrod=True) == pytest.approx(
         0.1 + 0.02 + 5e-5 / 0.04**2 + 0.09 / 2.25)
+
+
+def test_a_train_slower_than_the_camshaft_takes_the_first_harmonic():
+    """A natural frequency below the camshaft speed has no harmonic below it: the analysis takes the first (orders
+    1...3), not k = int(omega_0 / omega_cam) = 0, which no order matched (an IndexError reached the user from a
+    finger of 1e7 kg mm2, tools/fuzz_bounds.py).  omega_0 = sqrt((C_pr + C_mgr) / m) = sqrt((1000 + 1000) N/m /
+    100 kg) = 4.472 rad/s (step 4e, by hand) against the camshaft's pi 5000 / 60 = 261.8 rad/s.  The amplitude is
+    then the first harmonic's, finite and positive."""
+    law = profiles()["polydyne"]
+    r = resonance(law, CAM_SPEED, 100.0, 1000.0, 1000.0, RATIO)
+    assert r.omega0 == pytest.approx(4.4721, abs=1e-4)
+    assert r.order == 1 and r.orders.tolist() == [1, 2, 3]
+    assert np.isfinite(r.amplitude) and r.amplitude > 0.0

@@ -292,3 +292,13 @@ def test_unit_slips_of_the_engine_are_failures(key, value, failing):
               if c.quantity.startswith("engine: ") and not c.passed}
     assert failed == failing
     assert all(c.severity == "failure" for c in checks if c.quantity.startswith("engine: "))
+
+
+def test_a_rocker_inertia_without_its_valve_arm_is_refused(refused):
+    """A rocker's moment of inertia is no mass at the valve without the arm that reduces it (J / l_v^2, eq. 5.2 of
+    Valve-train practical works (n.d.)); the message names the key (checked in validate.py, where the follower is
+    known: a finger's arm comes from its geometry)."""
+    text = example_text()
+    assert text.count("valve_arm_mm = 40.0") == 2
+    out = refused("\n".join(line for line in text.split("\n") if not line.startswith("valve_arm_mm")))
+    assert "valves.intake.drive.masses.rocker_inertia_kg_mm2 = 25: needs drive.valve_arm_mm" in out

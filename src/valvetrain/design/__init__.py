@@ -37,7 +37,7 @@ from .grinding import GrindingResult
 from .hydraulic_actuation import CylinderPressure, HydraulicResult
 from .lash_adjuster import LashAdjusterResult
 from .lubrication import LubricationResult
-from .results import json_schema, quantity, record
+from .results import json_schema, quantity, record, shown_value
 from .twostroke import TwoStrokeResults, TwoStrokeSummary, two_stroke_stage
 from .valve import (THROAT_AREA_SHARE_RANGE, CamResult, ClearanceResult, FlowResult, ProfileResult, ValveDesign,
                     clearance_stage, design_valve, flow_stage, law_stage, overlap_clearance_checks, profile_stage,
@@ -99,9 +99,10 @@ class DesignResults:
               "open failures, warnings, info")
 
     def __repr__(self):
-        e = record(self.engine)
-        lines = [f"DesignResults: {e['name']} ({e['cylinders']} cyl., {e['bore_mm']:g} x {e['stroke_mm']:g} mm, "
-                 f"{e['rated_speed_rpm']:g} rpm)", *("  " + line for line in verdict(tally(self.checks)))]
+        e = self.engine
+        bore, stroke, speed = (shown_value(e, k) for k in ("bore", "stroke", "rated_speed"))
+        lines = [f"DesignResults: {e.name} ({e.cylinders} cyl., {bore:g} x {stroke:g} mm, {speed:g} rpm)",
+                 *("  " + line for line in verdict(tally(self.checks)))]
         lines += ["  " + ", ".join(f"{h} {c}" for h, c in zip(self._HEADS, row, strict=True)) for row in self._rows()]
         if self.crank is not None:
             lines.append(f"  crank: mean torque {self.crank.figures.mean_torque:.4g} N m")
@@ -213,7 +214,7 @@ def run(spec, laws=None, progress=None, headlines_only=False) -> DesignResults:
             raise SpecError([Problem("crank.pressure_file", str(exc))]) from None
     crank = crank_stage(crank_view, engine, valve_timing(valves)) if crank_view is not None else None
     if waiting:
-        cylinder = CylinderPressure(crank.phi, crank.columns["p_abs"], crank.pressure_source)
+        cylinder = CylinderPressure(crank.phi, crank.columns.p_abs, crank.pressure_source)
         for name, valve in waiting.items():
             valves[name] = with_hydraulic(valves[name], valve, engine, gas, cylinder)
     found = [c for v in valves.values() for c in v.checks] + overlap_clearance_checks(valves) + engine_checks(spec)

@@ -16,7 +16,7 @@ import numpy as np
 
 from .. import flow, masses, springs, strength
 from ..checks import Check, check
-from ..layouts import chain, layout, train_mass
+from ..layouts import chain, finger_inertia, layout, train_mass
 from ..locale import record_text
 from ..locale.wording import diagnosis_text
 from ..spring_materials import grade
@@ -247,7 +247,9 @@ class FingerLoads:
     roller_load_max: float = quantity("finger_roller_load_max_N", "N", "largest load on the roller and its bearing")
     pivot_load_max: float = quantity("finger_pivot_load_max_N", "N", "largest load on the pivot (the lash adjuster)")
     bending_moment_max: float = quantity("finger_bending_moment_max_Nm", "N m",
-                                         "largest bending moment of the finger at the roller's section")
+                                         "largest bending moment of the finger at its critical section")
+    bending_stress_max: Optional[float] = quantity("finger_bending_stress_max_MPa", "MPa", "largest bending stress of "
+                                                   "the finger at its critical section", omit_none=True, default=None)
 
 
 @dataclass(frozen=True)
@@ -306,6 +308,32 @@ class Worst:
 
 
 @dataclass(frozen=True)
+class SpringLines:
+    """The spring characteristics at the valve, P(y) = P_min + C y (:class:`valvetrain.springs.Characteristic`:
+    preload [N], rate [N/m], valve lift [m]; Valve-train practical works (n.d.), eqs. 5.6-5.9).
+
+    Attributes
+    ----------
+    required : Characteristic
+        The required line: the least spring force over the lift with the reserve K_z.
+    chosen : Characteristic
+        The designed spring, or the pair's sum.
+    outer, inner : Characteristic or None
+        Each spring of a nested pair (None for one spring).
+    """
+
+    required: springs.Characteristic
+    chosen: springs.Characteristic
+    outer: Optional[springs.Characteristic] = None
+    inner: Optional[springs.Characteristic] = None
+
+    def named(self) -> tuple[tuple[str, springs.Characteristic], ...]:
+        """``(name, line)`` of the lines there are, in drawing order: required, outer, inner, chosen."""
+        lines = (("required", self.required), ("outer", self.outer), ("inner", self.inner), ("chosen", self.chosen))
+        return tuple((name, line) for name, line in lines if line is not None)
+
+
+@dataclass(frozen=True)
 class DriveResult:
     """The drive stage of one valve: masses, springs, strength (SI), every check and the curves for the report."""
 
@@ -314,9 +342,9 @@ class DriveResult:
     strength: Optional[StrengthResult]             # set by :func:`strength_stage` (None from drive_stage alone)
     checks: tuple[Check, ...]      # every check of the drive, passed or not
     lift: np.ndarray = field(repr=False)             # valve lift along the open event [m]
-    inertia_force: np.ndarray = field(repr=False)    # m_v |j_v| where j_v < 0 [N]
+    inertia_force: np.ndarray = field(repr=False)    # m_v |j_v| where j_v < 0 (a finger's by its variable ratio) [N]
     required_force: np.ndarray = field(repr=False)   # K_z m_v |j_v| [N]
-    lines: dict[str, springs.Characteristic] = field(repr=False)   # required, chosen, outer, inner
+    lines: SpringLines = field(repr=False)   # required, chosen and a pair's outer and inner spring lines
     diagnosis: Optional[springs.Diagnosis] = None   # why no spring passes, where none does
 
 
@@ -390,6 +418,7 @@ def drive_stage(valve, gas, cam) -> DriveResult:
     theta = theta[(theta >= law.valve_opens) & (theta <= law.valve_closes)]
     y = cam.valve_lift(theta)
     a_v = i_k * omega**2 * law.derivatives(theta)[2]
+    finger = omega**2 * finger_inertia(valve, law, theta)
     lift = law.lift_max * i_k
 
     if valve.kind == "exhaust":
@@ -404,15 +433,13 @@ def drive_stage(valve, gas, cam) -> DriveResult:
     spring_total_mass = 0.0
     for _ in range(20):
         m_v, mass_source = train_mass(valve, spring_total_mass)
-        required = springs.required_spring_force(m_v, a_v, drive.spring_reserve)
+        j_v = a_v + finger / m_v    # a finger's inertia by its variable ratio, as an acceleration of m_v
+        required = springs.required_spring_force(m_v, j_v, drive.spring_reserve)
         seat = springs.seat_load(m_v) if sp.min_preload_N is None else sp.min_preload_N
         requirement = springs.Requirement(y, required, max(p_gas, seat))
         search = springs.design_springs(requirement, d_g, omega, options)
         line, designs, n_pass = search.line, search.designs, search.passing
         raised = line.preload <= requirement.min_preload * (1.0 + 1e-9) and requirement.min_preload > 0.0
-        lines = {"required": line}
-        if sp.count == 2:
-            lines.update(outer=designs["outer"].characteristic, inner=designs["inner"].characteristic)
         new_mass = sum(d.mass for d in designs.values())
         if drive.masses is None or drive.masses.spring_kg is not None or abs(new_mass - spring_total_mass) < 1e-7:
             break
@@ -422,7 +449,8 @@ def drive_stage(valve, gas, cam) -> DriveResult:
 
     chosen_line = springs.Characteristic(sum(d.characteristic.preload for d in designs.values()),
                                          sum(d.characteristic.rate for d in designs.values()), lift)
-    lines["chosen"] = chosen_line
+    lines = SpringLines(line, chosen_line, *((designs["outer"].characteristic, designs["inner"].characteristic)
+                                             if sp.count == 2 else ()))
     ratio = chosen_line.max_deflection / chosen_line.preload_deflection
     found.append(check("spring.reserve", drive.spring_reserve, *springs.SPRING_RESERVE_RANGE,
                        source="Valve-train practical works (n.d.), eq. (5.3)"))
@@ -462,7 +490,7 @@ def drive_stage(valve, gas, cam) -> DriveResult:
         found += train_checks
     mass_result = MassResult(m_v, masses.reduced_mass_at_tappet(m_v, i_k), mass_source, layout(valve), train)
 
-    inertia = m_v * np.clip(-a_v, 0.0, None)
+    inertia = m_v * np.clip(-j_v, 0.0, None)
     return DriveResult(mass_result, spring_result, None, tuple(found), y, inertia, required, lines, diagnosis)
 
 
@@ -483,7 +511,7 @@ def strength_speed_range(engine, swept=None) -> tuple[float, float, str]:
     return min(low, engine.rated_speed), engine.over_speed_ratio * engine.rated_speed, source
 
 
-def quasi_static_loads(law, rocker_ratio, theta, spring_force, mass, speeds, to_cam) -> LoadMap:
+def quasi_static_loads(law, rocker_ratio, theta, spring_force, mass, speeds, to_cam, finger=0.0) -> LoadMap:
     """The quasi-static cam force over engine speeds x camshaft angles, :class:`LoadMap`.
 
     Parameters
@@ -497,6 +525,9 @@ def quasi_static_loads(law, rocker_ratio, theta, spring_force, mass, speeds, to_
         Spring force at the valve at those angles [N].
     mass : float
         Reduced mass at the valve m_v [kg].
+    finger : ndarray (n,) or float
+        What a finger's inertia by its variable ratio adds at those angles per camshaft speed squared
+        [N s^2/rad^2] (:func:`~valvetrain.layouts.finger_inertia`).
     speeds : ndarray (S,)
         Engine speeds [rad/s].
     to_cam : float
@@ -505,15 +536,16 @@ def quasi_static_loads(law, rocker_ratio, theta, spring_force, mass, speeds, to_
     Notes
     -----
     :math:`P_T(n, \\theta) = i_k\\,(P_{spr}(\\theta) + m_v\\,i_k\\,\\omega_{cam}(n)^2\\,h''(\\theta))`, (7.1) at every
-    speed: the inertia of the rigid train grows with the square of the speed, so the spring carries the nose alone
-    at low speed.
+    speed (and a finger's ``finger`` omega_cam^2 at the valve, its inertia by its variable ratio): the inertia of the
+    rigid train grows with the square of the speed, so the spring carries the nose alone at low speed.
 
     References
     ----------
     Valve-train practical works (n.d.), work 7, eqs. (7.1)-(7.2).
     """
     omega = np.asarray(speeds, dtype=float)[:, None] * to_cam
-    force = strength.cam_force(spring_force, mass * rocker_ratio * omega**2 * law.derivatives(theta)[2], rocker_ratio)
+    force = strength.cam_force(spring_force, mass * rocker_ratio * omega**2 * law.derivatives(theta)[2]
+                               + omega**2 * finger, rocker_ratio)
     return LoadMap("quasi-static", np.asarray(speeds, dtype=float), theta, force)
 
 
@@ -545,7 +577,8 @@ def load_maps(valve, engine, cam, theta, spring_force, mass, dynamics=None) -> t
         speeds = speeds[(speeds < swept[0]) | (speeds > swept[1])]
     if speeds.size:
         to_cam = cam.cam_speed / engine.rated_speed
-        maps.append(quasi_static_loads(cam.law, cam.rocker_ratio, theta, spring_force, mass, speeds, to_cam))
+        maps.append(quasi_static_loads(cam.law, cam.rocker_ratio, theta, spring_force, mass, speeds, to_cam,
+                                       finger_inertia(valve, cam.law, theta)))
     return [m for m in maps if m is not None], (low, high, source)
 
 
@@ -557,7 +590,7 @@ def event_load_maps(valve, engine, cam, drive, dynamics=None) -> tuple[np.ndarra
     law = cam.law
     theta = np.unique(np.concatenate([np.linspace(law.valve_opens, law.valve_closes, 2001), law.breakpoints]))
     theta = theta[(theta >= law.valve_opens) & (theta <= law.valve_closes)]
-    maps, span = load_maps(valve, engine, cam, theta, drive.lines["chosen"].force(cam.valve_lift(theta)),
+    maps, span = load_maps(valve, engine, cam, theta, drive.lines.chosen.force(cam.valve_lift(theta)),
                            drive.masses.at_valve, dynamics)
     return theta, maps, span
 
@@ -626,7 +659,9 @@ def strength_stage(valve, gas, engine, cam, drive, dynamics=None) -> tuple[Stren
             m.force[:, int(np.argmin(np.abs(m.theta - law.valve_opens)))] += cam.rocker_ratio * p_open
     result, checks = _strength(valve, cam, theta, contact_loads(cam, maps), p_open, _worst(maps, [m.force for m in maps]))
     if cam.follower_model.law_at_valve:
-        result = replace(result, finger=finger_loads(cam, maps))
+        finger, bending = finger_bending(valve.parts, *finger_loads(cam, maps))
+        result = replace(result, finger=finger, checks=result.checks + bending[0], not_checked=result.not_checked
+                         + bending[1])
     result = replace(result, speed_range=(float(low), float(high)), lowest_speed_source=source,
                      rated_speed=engine.rated_speed)
     return result, list(result.checks) + found + checks
@@ -638,15 +673,32 @@ def _where(w):
             f"({w.kind} force)")
 
 
-def finger_loads(cam, maps) -> FingerLoads:
+def finger_loads(cam, maps) -> tuple[FingerLoads, Worst]:
     """The :class:`FingerLoads` of a finger under the force at the valve of the load maps (before
-    :func:`contact_loads`), at their worst."""
+    :func:`contact_loads`), at their worst, and where its bending moment is largest (:class:`Worst`)."""
     follower, heel = cam.follower_model, cam.heel_radius
     found = []
     for m in maps:
         h, dh = cam.law.derivatives(m.theta)[:2]
         found.append(follower.loads(m.force, heel, h, dh))
-    return FingerLoads(*(max(float(np.max(f[k])) for f in found) for k in range(3)))
+    return (FingerLoads(*(max(float(np.max(f[k])) for f in found) for k in range(3))),
+            _worst(maps, [f[2] for f in found]))
+
+
+def finger_bending(parts, loads, moment) -> tuple[FingerLoads, tuple[tuple[Check, ...], tuple[str, ...]]]:
+    """The finger's bending stress at its critical section under its largest bending moment ``moment``
+    (:class:`Worst`, :meth:`~valvetrain.followers.PivotedFollower.loads`) on the rectangular section of
+    ``parts.finger_section_width_mm`` x ``finger_section_height_mm``
+    (:func:`valvetrain.strength.rectangle_bending_stress`): ``loads`` with the stress, and (its check,) or the note that the section is not given."""
+    keys = ("finger_section_width_mm", "finger_section_height_mm")
+    missing = [key for key in keys if getattr(parts, si_name(key)[0]) is None]
+    if missing:
+        return loads, ((), (f"finger_bending: not checked, parts.{', parts.'.join(missing)} not given",))
+    stress = strength.rectangle_bending_stress(moment.value, parts.finger_section_width, parts.finger_section_height)
+    width, height = (to_display(x, "mm") for x in (parts.finger_section_width, parts.finger_section_height))
+    note = f"{_where(moment)}; M = {moment.value:.4g} N m, b x h = {width:g} x {height:g} mm"
+    return (replace(loads, bending_stress_max=float(stress)),
+            ((strength.verdict("finger_bending", float(stress), note),), ()))
 
 
 def _strength(valve, cam, theta, maps, p_open, valve_load):

@@ -10,7 +10,7 @@ specification leaves out is estimated and the estimate stated in ``parameters.es
 Speeds in the results are engine (crank) speeds; the camshaft of a four-stroke turns at half.
 """
 
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field, fields, replace
 import math
 from typing import Optional, Union
 
@@ -18,18 +18,18 @@ import numpy as np
 
 from .. import lash_adjuster as hla
 from ..checks import Check, check
-from ..dynamics.models import (CoilSpring, MultiMassTrain, OneMassTrain, camshaft_stiffness, direct_train,
+from ..dynamics.models import (Adjuster, CoilSpring, MultiMassTrain, OneMassTrain, camshaft_stiffness, direct_train,
                                natural_modes, one_mass_train, pushrod_stiffness, pushrod_train, rocker_train, series)
 from ..dynamics.perturbation import perturbation_parameter
 from ..dynamics.resonance import resonance
 from ..dynamics.sweep import SpeedResult, SweepResult, headline_sweep, sweep, sweep_size
 from ..followers import follower_of
-from ..layouts import chain, layout
+from ..layouts import chain, finger_inertia, layout, valve_arm
 from ..specification import SpecError
 from ..specification.messages import Problem
 from ..strength import cam_force
 from ..units import DEG, MM, cam_per_crank, rpm_to_rad_s, to_display
-from .results import quantity, record
+from .results import quantity, shown_value
 
 SOURCES = ("Shang Hanji (1988), ch. 3 (one-mass and multi-mass trains, jump, seating, bounce); Valve-train dynamics "
            "article (n.d.) (resonant harmonic and distortion)")
@@ -182,8 +182,9 @@ class DynamicsResult:
     bounce_speed: float = quantity("bounce_speed_rpm", "rpm", "engine speed where the bounce height first exceeds "
                                    "1 um, interpolated between the speeds swept (null: none)")
     max_seating_velocity: float = quantity("max_seating_velocity_m_s", "m/s", "largest |seating velocity| of the "
-                                           "sweep")
-    max_seating_velocity_speed: float = quantity("max_seating_velocity_speed_rpm", "rpm", "where it occurs")
+                                           "sweep (null: the valve seats at no speed)")
+    max_seating_velocity_speed: float = quantity("max_seating_velocity_speed_rpm", "rpm", "where it occurs (null: "
+                                                 "the same)")
     coil_clash_speed: Optional[float] = quantity("coil_clash_speed_rpm", "rpm", "multi: lowest speed whose coils "
                                                  "meet (null: none)", omit_none=True)
     epsilon: float = quantity("epsilon", label="perturbation parameter at the rated speed")
@@ -318,8 +319,9 @@ def adjuster_reference_force(valve, law, drive, cam_speed: float, ratio: float) 
     :func:`valvetrain.strength.cam_force` reduced from the valve."""
     theta = np.linspace(law.valve_opens, law.valve_closes, 2001)
     k = valve.rocker_ratio
-    spring = drive.lines["chosen"].force(k * law.lift(theta))
-    force = cam_force(spring, drive.masses.at_valve * k * cam_speed**2 * law.derivatives(theta)[2], k)
+    spring = drive.lines.chosen.force(k * law.lift(theta))
+    force = cam_force(spring, drive.masses.at_valve * k * cam_speed**2 * law.derivatives(theta)[2]
+                      + cam_speed**2 * finger_inertia(valve, law, theta), k)
     return float(force.max()) / k * ratio
 
 
@@ -353,16 +355,56 @@ def adjuster_load(valve, law, drive, cam_speed: float, at: str) -> tuple[float, 
     return ratio, force
 
 
-def adjuster_link(valve, law, drive, cam_speed: float, at: str) -> tuple[float, str]:
-    """The lash adjuster's oil column reduced to the valve [N/m] (in series with the cam contact) and the note that
-    says so: its secant stiffness under :func:`adjuster_reference_force` over the square of the motion ratio."""
+def adjuster_element(la, ratio: float) -> Adjuster:
+    """The kernels' :class:`~valvetrain.dynamics.models.Adjuster` of ``[lash_adjuster]`` (SI view ``la``) at the motion
+    ratio ``ratio``: its leak coefficient pi d c^3 / (12 mu L) [m^3/(s Pa)]
+    (:func:`valvetrain.lash_adjuster.annular_leakage` per pascal) and its largest extension velocity, the check valve's
+    flow under :func:`valvetrain.lash_adjuster.refill_pressure` over the plunger area [m/s]."""
+    area = hla.plunger_area(la.plunger_diameter)
+    leak = hla.annular_leakage(1.0, la.plunger_diameter, la.radial_clearance, la.leak_length, la.oil_viscosity)
+    refill = hla.check_valve_flow(hla.refill_pressure(la.supply_pressure, la.plunger_spring_N, area),
+                                  la.check_valve_diameter) / area
+    return Adjuster(float(ratio), float(la.plunger_spring_N), float(area), float(la.supply_pressure), float(leak),
+                    float(refill))
+
+
+def adjuster_link(valve, law, drive, cam_speed: float, at: str) -> tuple[float, str, Adjuster]:
+    """The lash adjuster's oil column reduced to the valve [N/m] (in series with the cam contact), the note that
+    says so (its secant stiffness under :func:`adjuster_reference_force` over the square of the motion ratio), and its
+    :func:`adjuster_element`, whose plunger extension the kernels carry from revolution to revolution."""
     la = valve.lash_adjuster
     ratio, force = adjuster_load(valve, law, drive, cam_speed, at)
     stiffness = hla.secant_stiffness(force, la.plunger_spring_N, hla.plunger_area(la.plunger_diameter),
                                      la.supply_pressure, la.chamber_volume, la.bulk_modulus, la.air_content)[0]
     at_valve = stiffness / ratio**2
     return at_valve, (f"lash adjuster: {at_valve / 1e3:.5g} N/mm at the valve in series with the cam contact (the oil "
-                      f"column's secant stiffness under {force:.4g} N)")
+                      f"column's secant stiffness under {force:.4g} N)"), adjuster_element(la, ratio)
+
+
+def inertia_arm(valve, law, drive) -> tuple[Optional[float], Optional[str]]:
+    """The valve arm that reduces the rocker's inertia to the valve in the dynamics model [m], and a note (None but
+    for a finger of given inertia): ``[drive] valve_arm_mm``, or a finger's effective arm G(psi) = dv/dpsi at the valve
+    lift of the largest required spring force (:attr:`DriveResult.required_force`, where the train first leaves the
+    cam as the speed rises).
+
+    The lumped masses of the dynamics are constant: the finger's J / G(psi)^2 is taken at that lift, and its change
+    over the lift with the velocity-squared force of the variable ratio, (1/2) d(J/G^2)/dv v_dot^2
+    (:meth:`~valvetrain.followers.PivotedFollower.inertia_force`, which the spring requirement and the quasi-static
+    loads use), are left out; the note gives the range of J / G^2 over the lift.
+    """
+    follower, parts = follower_of(valve.cam), valve.drive.masses
+    if not follower.law_at_valve:
+        return valve.drive.valve_arm, None
+    heel = valve.cam.base_radius - law.ramp_height
+    arm = follower.valve_arm(follower.angle_of(drive.lift, heel))
+    at = int(np.argmax(drive.required_force))
+    if parts is None or parts.rocker_inertia == 0.0:
+        return float(arm[at]), None
+    reduced, heel_circle = parts.rocker_inertia / arm**2, parts.rocker_inertia / valve_arm(valve)**2
+    return float(arm[at]), (f"finger: J / G^2 = {reduced[at] * 1e3:.5g} g at the valve lift {drive.lift[at] / MM:.4g} "
+                            f"mm of the largest required spring force; {heel_circle * 1e3:.5g} g on the heel circle, "
+                            f"{reduced.min() * 1e3:.5g}...{reduced.max() * 1e3:.5g} g over the lift; held constant: its "
+                            "change with the lift and the velocity-squared force of the variable ratio are left out")
 
 
 def build_train(dyn, valve, law, drive, at, cam_speed=None) -> tuple[Union[OneMassTrain, MultiMassTrain], DynamicsParameters]:
@@ -372,19 +414,27 @@ def build_train(dyn, valve, law, drive, at, cam_speed=None) -> tuple[Union[OneMa
     """
     k = valve.rocker_ratio
     lash = k * law.ramp_height
-    line = drive.lines["chosen"]
+    line = drive.lines.chosen
     links, names, notes = drive_links(dyn, valve, lever_ratio(valve, law), at)
+    element = None
     if valve.lash_adjuster is not None:
-        adjuster, note = adjuster_link(valve, law, drive, cam_speed, at)
+        adjuster, note, element = adjuster_link(valve, law, drive, cam_speed, at)
         links = (float(series(links[0], adjuster)),) + links[1:]
         notes.append(note)
     c = float(series(*links))
+    arm, arm_note = inertia_arm(valve, law, drive)
     if dyn.mass_kg is None:
         mass = float(drive.masses.at_valve)
-        notes.insert(0, f"M = {mass:.5g} kg: the reduced mass at the valve of the spring design (masses.at_valve_kg)")
+        if arm_note:
+            inertia = valve.drive.masses.rocker_inertia
+            mass += inertia / arm**2 - inertia / valve_arm(valve)**2
+        notes.insert(0, f"M = {mass:.5g} kg: the reduced mass at the valve of the spring design (masses.at_valve_kg)"
+                     + (", the finger's at the lift below" if arm_note else ""))
     else:
         mass = float(dyn.mass_kg)
         notes.insert(0, f"M = {mass:.5g} kg given ([dynamics] mass_kg)")
+    if arm_note:
+        notes.insert(1, arm_note)
     rate, preload, spring_note = train_spring(dyn, valve, law, line, mass, cam_speed, at)
     notes.append(spring_note)
     notes.append(f"lash {lash / MM:.4g} mm at the valve: the clearance the ramp takes up times the rocker ratio")
@@ -395,18 +445,20 @@ def build_train(dyn, valve, law, drive, at, cam_speed=None) -> tuple[Union[OneMa
         train = one_mass_train(mass, c, rate, preload, k, lash, **kw)
     else:
         springs, spring_notes = multi_springs(dyn, drive.spring, rate, preload)
-        train = _multi_train(valve, links, springs, lash, kw, at)
+        train = _multi_train(valve, links, springs, lash, kw, at, arm)
         net = train.network()
         nodes = {n: float(m) for n, m in zip(net.names, net.mass, strict=True)}
         notes.extend(spring_notes)
+    train = replace(train, adjuster=element)
     params = DynamicsParameters(dyn.model, layout(valve), mass, c, dyn.damping_ratio, rate, preload, k, lash,
                                 dyn.seat_stiffness, dyn.seat_damping_ratio, dyn.revolutions, dyn.step,
                                 dyn.coils_per_spring, links, names, nodes, tuple(notes))
     return train, params
 
 
-def _multi_train(valve, links, springs, lash, kw, at):
-    """A pushrod, rocker or direct multi-mass train from the part masses of [drive.masses]."""
+def _multi_train(valve, links, springs, lash, kw, at, arm):
+    """A pushrod, rocker or direct multi-mass train from the part masses of [drive.masses], the rocker's inertia on the
+    valve arm ``arm`` [m] (:func:`inertia_arm`)."""
     m, drive = valve.drive.masses, chain(valve)
     need = drive.train_masses
     if m is None:
@@ -414,7 +466,7 @@ def _multi_train(valve, links, springs, lash, kw, at):
                                  f"{', '.join(need)} (the masses of the drive parts)", '"multi"', " ")])
     si_keys = {"tappet_kg": "tappet_kg", "pushrod_kg": "pushrod_kg", "rocker_inertia_kg_mm2": "rocker_inertia"}
     missing = [key for key in need if getattr(m, si_keys[key]) <= 0.0]
-    if drive.rocker and valve.drive.valve_arm is None:
+    if drive.rocker and arm is None:
         missing.append("valve_arm_mm (in [drive])")
     if missing:
         raise SpecError([Problem(f"{at}.dynamics.model", f"with layout \"{drive.name}\" needs positive "
@@ -423,10 +475,10 @@ def _multi_train(valve, links, springs, lash, kw, at):
     valve_mass = m.valve_kg + m.retainer_kg + m.cotters_kg
     inf = math.inf
     if drive.pushrod:
-        return pushrod_train(m.tappet_kg, m.pushrod_kg, m.rocker_inertia, valve_mass, valve.drive.valve_arm, k,
+        return pushrod_train(m.tappet_kg, m.pushrod_kg, m.rocker_inertia, valve_mass, arm, k,
                              links[0] * k**2, links[1] * k**2, links[2], inf, springs, lash, **kw)
     if drive.rocker:
-        return rocker_train(m.rocker_inertia, valve_mass, valve.drive.valve_arm, k, links[0] * k**2, links[1], inf,
+        return rocker_train(m.rocker_inertia, valve_mass, arm, k, links[0] * k**2, links[1], inf,
                             springs, lash, **kw)
     return direct_train(m.tappet_kg, valve_mass, links[0], links[1], springs, lash, **kw)
 
@@ -662,24 +714,26 @@ def event_window(d, margin_deg: float = 10.0) -> np.ndarray:
 
 def sweep_columns(d) -> dict[str, np.ndarray]:
     """The per-speed table of a :class:`DynamicsResult` as named columns (engineering units)."""
-    rows = [record(r) for r in d.records]
+    records = d.records
+    keys = {f.name: f.metadata["key"] for f in fields(SpeedRecord) if "key" in f.metadata}
+
+    def column(name, empty=None):
+        """``(key, values)``: one field of every speed's record as results.json shows it (``empty`` for None)."""
+        return keys[name], [empty if v is None else v for v in (shown_value(r, name) for r in records)]
+
     to_cam = d.sweep.cam_speeds[0] / d.per_speed.speed[0]
-    out = {"speed_rpm": [r["speed_rpm"] for r in rows],
-           "camshaft_rpm": [s * to_cam / rpm_to_rad_s(1.0) for s in d.per_speed.speed]}
-    for key in ("epsilon", "min_contact_force_N", "max_contact_force_N", "seating_velocity_m_s", "bounce_mm",
-                "bounce_count"):
-        out[key] = [r[key] for r in rows]
-    out["jump"] = [int(bool(r["jump_intervals_cam_deg"])) for r in rows]
-    out["jump_from_cam_deg"] = [r["jump_intervals_cam_deg"][0][0] if r["jump_intervals_cam_deg"] else np.nan
-                                for r in rows]
-    out["jump_to_cam_deg"] = [r["jump_intervals_cam_deg"][-1][1] if r["jump_intervals_cam_deg"] else np.nan
-                              for r in rows]
-    out["max_lift_error_mm"] = [r["max_lift_error_mm"] for r in rows]
-    out["revolutions"] = [r["revolutions"] for r in rows]
+    out = dict([column("speed"), ("camshaft_rpm", [s * to_cam / rpm_to_rad_s(1.0) for s in d.per_speed.speed])])
+    out.update(column(name) for name in ("epsilon", "min_contact_force", "max_contact_force", "seating_velocity",
+                                         "bounce", "bounce_count"))
+    jumps = column("jump_intervals")[1]
+    out["jump"] = [int(bool(j)) for j in jumps]
+    out["jump_from_cam_deg"] = [j[0][0] if j else np.nan for j in jumps]
+    out["jump_to_cam_deg"] = [j[-1][1] if j else np.nan for j in jumps]
+    out.update(column(name) for name in ("max_lift_error", "revolutions"))
     if d.model == "multi" and d.parameters.coils_per_spring > 0:
-        out["max_surge_mm"] = [r.get("max_surge_mm", np.nan) for r in rows]
-    if any("coil_clash_margin_mm" in r for r in rows):
-        out["coil_clash_margin_mm"] = [r.get("coil_clash_margin_mm", np.nan) for r in rows]
+        out.update([column("max_surge", np.nan)])
+    if any(r.clash_margin is not None for r in records):
+        out.update([column("clash_margin", np.nan)])
     return out
 
 

@@ -561,15 +561,23 @@ def overlap_clearance_checks(valves) -> list[Check]:
     return out
 
 
+def follower_travel_acceleration(follower, heel, h, dh, d2h) -> np.ndarray:
+    """The follower's acceleration on the cam per camshaft angle squared [m/rad^2]: the law's h'' (a tappet), or for
+    a law at the valve (a finger) the roller centre's on its arc,
+    :meth:`~valvetrain.followers.PivotedFollower.travel_acceleration`; ``heel`` [m], h [m], dh [m/rad], d2h
+    [m/rad^2] of the law."""
+    return follower.travel_acceleration(heel, h, dh, d2h) if follower.law_at_valve else d2h
+
+
 def follower_accelerations(cam, samples=4001) -> tuple[float, float]:
     """The smallest and largest acceleration of the follower on the cam at the rated speed [m/s^2]: the law's
-    extremes (:class:`CamResult`), or for a law at the valve (a finger) the roller centre's on its arc,
-    omega^2 :meth:`~valvetrain.followers.PivotedFollower.travel_acceleration`, over ``samples`` angles of the event."""
+    extremes (:class:`CamResult`), or for a law at the valve (a finger) omega^2
+    :func:`follower_travel_acceleration` over ``samples`` angles of the event."""
     follower, law = cam.follower_model, cam.law
     if not follower.law_at_valve:
         return cam.min_acceleration, cam.max_acceleration
     theta = np.unique(np.concatenate([np.linspace(law.start, law.end, samples), law.breakpoints]))
-    acc = cam.cam_speed ** 2 * follower.travel_acceleration(cam.heel_radius, *law.derivatives(theta)[:3])
+    acc = cam.cam_speed ** 2 * follower_travel_acceleration(follower, cam.heel_radius, *law.derivatives(theta)[:3])
     return float(acc.min()), float(acc.max())
 
 
@@ -763,7 +771,7 @@ def design_valve(name, valve, engine, gas, output, law=None, progress=None, cyli
     drive = replace(drive, strength=strength_result, checks=drive.checks + tuple(strength_found))
     found += strength_found
     lubrication = None
-    if valve.lubrication is not None:
+    if valve.lubrication is not None and not profile.undercut:  # an undercut has no line contact: graded above
         lubrication, lubrication_found = lubrication_stage(valve.lubrication, valve, engine, cam, drive, dynamics, name)
         found += lubrication_found
     adjuster = None
@@ -808,5 +816,5 @@ def with_hydraulic(design, valve, engine, gas, cylinder=None) -> ValveDesign:
 
 
 __all__ = ["CamResult", "ClearanceResult", "FingerKinematics", "FlowResult", "LiftTable", "ProfileResult", "StepRecord", "ValveDesign",
-           "clearance_check", "clearance_stage", "design_valve", "finger_kinematics", "flow_stage", "follower_accelerations", "law_stage", "layout_check", "mass_checks",
+           "clearance_check", "clearance_stage", "design_valve", "finger_kinematics", "flow_stage", "follower_accelerations", "follower_travel_acceleration", "law_stage", "layout_check", "mass_checks",
            "overlap_clearance_checks", "profile_stage", "step_records", "valve_checks", "with_hydraulic", "wrap_crank"]

@@ -95,11 +95,13 @@ def natural_frequency(spring_rate, drive_stiffness, mass) -> float:
 
 
 def resonant_harmonic(omega0, cam_speed) -> int:
-    """k = int(omega_0 / omega_cam), the harmonic of the camshaft revolution nearest below omega_0 (step 4zh).
+    """k = int(omega_0 / omega_cam), the harmonic of the camshaft revolution nearest below omega_0 (step 4zh); the
+    first where omega_0 lies below the camshaft speed itself (no harmonic lies below it: a train that slow is far
+    beyond its separation, which the dynamics grade).
 
     The printed 0.5 omega is the camshaft speed when omega is the crankshaft's (corrections note 36).
     """
-    return int(omega0 / cam_speed)
+    return max(int(omega0 / cam_speed), 1)
 
 
 def harmonic_force(tappet_lift, drive_stiffness, rocker_ratio, orders) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

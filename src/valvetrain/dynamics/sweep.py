@@ -123,6 +123,8 @@ class SpeedResult:
         Camshaft revolutions after which the motion repeated (the cap if it did not).
     converged : bool
         The motion repeated before the cap (:data:`STATE_TOLERANCE`).
+    adjuster_extension : ndarray (n,) or None
+        Plunger extension of the train's hydraulic lash adjuster [m, at the adjuster] (zeros without one).
     """
 
     cam_speed: float
@@ -145,6 +147,7 @@ class SpeedResult:
     min_contact_force: float = np.nan
     revolutions: int = 1
     converged: bool = True
+    adjuster_extension: Optional[np.ndarray] = None
 
     @property
     def lift_error(self):
@@ -279,7 +282,8 @@ def lowest_lifting_force(contact, kinematic, lift, separated) -> float:
 
 
 def speed_result(cam_speed, theta, lift, velocity, kinematic, contact, seat, spring, slope, surge, clash,
-                 bounce_tolerance=BOUNCE_TOLERANCE, acceleration=None, revolutions=1, converged=True) -> SpeedResult:
+                 bounce_tolerance=BOUNCE_TOLERANCE, acceleration=None, revolutions=1, converged=True,
+                 adjuster_extension=None) -> SpeedResult:
     """Events of one speed from its recorded revolution (see the module docstring for the definitions)."""
     step_time = float(theta[1] - theta[0]) / cam_speed
     i_seat, seat_angle, seat_velocity = seating(theta, lift, velocity, acceleration, step_time)
@@ -292,7 +296,7 @@ def speed_result(cam_speed, theta, lift, velocity, kinematic, contact, seat, spr
     return SpeedResult(float(cam_speed), theta, lift, velocity, kinematic, contact, seat, spring, contact * slope,
                        separation, jumps, seat_angle, seat_velocity, height, count, surge, clash,
                        lowest_lifting_force(contact, kinematic, lift, intervals.size > 0),
-                       int(revolutions), bool(converged))
+                       int(revolutions), bool(converged), adjuster_extension)
 
 
 def zero_crossing(speeds, values, hit) -> float:
@@ -412,7 +416,8 @@ class SweepResult:
         return speed_result(self.cam_speeds[i], self.theta, self.lift[i], self.velocity[i], self.kinematic_lift,
                             self.contact_force[i], self.seat_force[i], self.spring_force[i], self.slope,
                             self.surge_amplitude[i], float(self.clash_margin[i]), self.bounce_tolerance,
-                            self.acceleration[i], self.revolutions[i], self.converged[i])
+                            self.acceleration[i], self.revolutions[i], self.converged[i],
+                            None if self.adjuster_extension is None else self.adjuster_extension[i])
 
     def per_speed(self):
         """Every :class:`SpeedResult` of the sweep."""

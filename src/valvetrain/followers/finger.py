@@ -233,6 +233,45 @@ class PivotedFollower(RollerFollower):
         d2 = (d2h + lb * np.sin(psi + self.valve_angle + beta) * d1 ** 2) / arm
         return psi, d1, d2
 
+    def reduced_inertia(self, inertia, heel, h):
+        """J / G(psi)^2 [kg]: the finger's moment of inertia ``inertia`` J [kg m^2] about its pivot reduced to the
+        valve at the valve lifts ``h`` [m] (the kinetic energy J psi_dot^2 / 2 = (J / G^2) v_dot^2 / 2; Norton (2009),
+        the chapter on the dynamics of follower trains)."""
+        return inertia / self.valve_arm(self.angle_of(h, heel)) ** 2
+
+    def inertia_force(self, inertia, heel, h, dh, d2h):
+        """The force at the valve that turns the finger, per camshaft speed squared [N s^2/rad^2 = kg m/rad^2]:
+        J psi'' / G, psi'' from the valve law's h, h', h'' (camshaft angle) by :meth:`angle_derivatives`.
+
+        Parameters
+        ----------
+        inertia : float
+            J, the finger's moment of inertia about its pivot [kg m^2].
+        heel : float
+            Heel radius of the cam [m].
+        h, dh, d2h : ndarray
+            Valve lift [m] and its first two derivatives [m/rad, m/rad^2] by the camshaft angle.
+
+        Notes
+        -----
+        The finger is a mass of the variable ratio: its kinetic energy at the valve is m_r(v) v_dot^2 / 2 with
+        m_r = J / G(psi(v))^2, and Lagrange's equation gives the force at the valve
+
+        .. math:: F = m_r(v)\\,\\ddot v + \\tfrac12\\,\\frac{dm_r}{dv}\\,\\dot v^2
+                    = \\frac{J}{G^2}\\ddot v - \\frac{J\\,G_\\psi}{G^4}\\dot v^2 = \\frac{J\\ddot\\psi}{G},
+                  \\qquad G_\\psi = \\frac{dG}{d\\psi} = -L_b\\sin\\chi
+
+        (the last form is the torque J psi_ddot about the pivot taken to the valve by the virtual work F G = T).  At a
+        constant camshaft speed omega, v_dot = omega v', v_ddot = omega^2 v'', so F = omega^2 J psi'' / G.
+
+        References
+        ----------
+        Norton (2009), the chapter on the dynamics of follower trains (the equivalent mass of a linkage of variable
+        ratio); Wang (2007), the chapter on valvetrain dynamics (the rocker's inertia at the valve).
+        """
+        psi, _, d2 = self.angle_derivatives(heel, h, dh, d2h)
+        return inertia * d2 / self.valve_arm(psi)
+
     def travel_acceleration(self, heel, h, dh, d2h):
         """L_r psi'' [m/rad^2]: the roller centre's acceleration along its arc per camshaft angle squared."""
         return self.roller_arm * self.angle_derivatives(heel, h, dh, d2h)[2]
@@ -292,28 +331,41 @@ class PivotedFollower(RollerFollower):
     def loads(self, force, heel, h, dh):
         """The finger's loads under a force ``force`` [N] at the valve (along its axis), at the valve lifts ``h`` [m],
         ``dh`` [m/rad] (``force`` broadcasts against them): the roller's (its bearing's) load N [N], the pivot's
-        load |R| [N] and the bending moment at the roller's section M [N m].
+        load |R| [N] and the bending moment at the finger's critical section M [N m].
 
         Notes
         -----
         The finger in equilibrium under the cam's force N n at the roller centre C (n the contact normal, from the cam
         to the roller), the valve tip's -F a at the pad's contact X = B + rho_p a and the pivot's reaction R:
 
-        .. math:: N = \\frac{F G}{L_r\\cos\\beta}, \\qquad \\mathbf R = F\\mathbf a - N\\mathbf n, \\qquad
-                  M = F\\,|(\\mathbf B - \\mathbf C)\\times\\mathbf a|
+        .. math:: N = \\frac{F G}{L_r\\cos\\beta}, \\qquad \\mathbf R = F\\mathbf a - N\\mathbf n
 
-        (the moment of the pad's force about the roller centre; that of the pivot's reaction is equal and opposite).
+        A beam under three forces bends most at the middle one's point, where the moment is that of an end force
+        about it: at the roller centre of an end-pivot finger (0 < L_r < L_p), :math:`M = F|(\\mathbf B - \\mathbf
+        C)\\times\\mathbf a|`; at the pivot of a centre-pivot rocker (L_p < 0), :math:`M = F|(\\mathbf B - \\mathbf
+        P)\\times\\mathbf a| = F|G|`; at the pad of a finger whose valve lies between pivot and roller (0 < L_p <
+        L_r), the pivot's reaction about the pad's contact, :math:`M = |(\\mathbf P - \\mathbf X)\\times\\mathbf R|`.
+
+        References
+        ----------
+        Norton (2009), the chapter on follower trains (the forces of a pivoted follower).
         """
         psi = self.angle_of(h, heel)
         _, w, _, _ = self._w(heel, h, dh, np.zeros_like(h))
         n = _quarter(w) / np.hypot(*w)
         a = np.array([np.sin(self.valve_angle), np.cos(self.valve_angle)])
         normal = self.contact_force(force, heel, h, dh)
-        pivot = np.hypot(force * a[0] - normal * n[0], force * a[1] - normal * n[1])
+        reaction = np.stack([force * a[0] - normal * n[0], force * a[1] - normal * n[1]])
         lb, beta = self._pad
         arm = self.centre(psi) - self._pivot.reshape((2,) + (1,) * np.ndim(psi))
         pad = lb * np.stack([np.cos(psi + beta), np.sin(psi + beta)])
-        return normal, pivot, np.abs(force * _cross(pad - arm, a))
+        if self.pad_arm < 0.0:
+            moment = force * _cross(pad, a)
+        elif self.pad_arm < self.roller_arm:
+            moment = _cross(-(pad + self.pad_radius * a.reshape((2,) + (1,) * np.ndim(psi))), reaction)
+        else:
+            moment = force * _cross(pad - arm, a)
+        return normal, np.hypot(*reaction), np.abs(moment)
 
     def surface_velocities(self, omega, heel, h, dh, d2h, rho):
         """Both surfaces at the contact point's speed along the profile, omega |q'| rho / (rho + R_r): pure rolling

@@ -192,8 +192,13 @@ NAMES = {
     "finger_roller_load_max": ("largest load on the finger's roller and its bearing",
                                "наибольшая нагрузка на ролик рычага и его подшипник"),
     "finger_pivot_load_max": ("largest load on the finger's pivot", "наибольшая нагрузка на опору рычага"),
-    "finger_bending_moment_max": ("largest bending moment of the finger at the roller",
-                                  "наибольший изгибающий момент рычага в сечении ролика"),
+    "finger_bending_moment_max": ("largest bending moment of the finger at its critical section",
+                                  "наибольший изгибающий момент рычага в опасном сечении"),
+    "finger_bending_stress_max": ("largest bending stress of the finger at its critical section",
+                                  "наибольшее напряжение изгиба рычага в опасном сечении"),
+    "finger_section_width": ("finger's width at its critical section (material only)",
+                             "ширина рычага в опасном сечении (без выреза)"),
+    "finger_section_height": ("finger's height at its critical section", "высота рычага в опасном сечении"),
     "ratio_at_rest": ("finger's lever ratio on the heel circle", "передаточное отношение рычага на тыльной окружности"),
     "ratio_min": ("smallest lever ratio over the lift", "наименьшее передаточное отношение рычага за подъём"),
     "ratio_max": ("largest lever ratio over the lift", "наибольшее передаточное отношение рычага за подъём"),
@@ -313,6 +318,8 @@ NAMES = {
     "rocker_pad_stress": ("contact stress of the rocker pad", "контактное напряжение бойка коромысла"),
     "rocker_shaft": ("rocker shaft", "ось коромысла"),
     "rocker_shaft_bending": ("bending stress of the rocker shaft", "напряжение изгиба оси коромысла"),
+    "finger_bending": ("bending stress of the finger at its critical section",
+                       "напряжение изгиба рычага в опасном сечении"),
     "rocker_shaft_shear": ("shear stress of the rocker shaft", "касательное напряжение оси коромысла"),
     "rocker_shaft_bearing": ("bearing pressure of the rocker shaft", "напряжение смятия оси коромысла"),
     # crank
@@ -617,6 +624,10 @@ NAMES.update({
     "camshaft.drive_pitch_radius": ("pitch radius of the sprocket, pulley or gear",
                                     "радиус начальной окружности звёздочки, шкива или шестерни"),
     "camshaft.drive_allowable_force": ("allowable force of the timing drive", "допустимая сила привода"),
+    "camshaft.drive_stiffness": ("stiffness of the timing drive at the pitch radius",
+                                 "жёсткость привода распределительного вала на радиусе начальной окружности"),
+    "camshaft.sprocket_inertia": ("polar inertia of the sprocket, pulley or gear",
+                                  "момент инерции звёздочки, шкива или шестерни"),
 })
 
 NAMES.update({

@@ -68,7 +68,14 @@ def _valve_problems(name, v, engine):
                 out.append(Problem(f"{at}.cam.{key}", message, value, joiner))
         if v.drive.layout != "rocker":
             out.append(Problem(f"{at}.drive.layout", f"allowed \"rocker\" with cam.follower = \"{v.cam.follower}\" "
-                               "(the finger's inertia about its pivot, drive.valve_arm_mm)", shown(v.drive.layout)))
+                               "(the finger's inertia about its pivot)", shown(v.drive.layout)))
+        if v.drive.valve_arm_mm is not None:
+            out.append(Problem(f"{at}.drive.valve_arm_mm", f"not allowed with cam.follower = \"{v.cam.follower}\": "
+                               "the finger's valve arm G = dv/dpsi follows from its geometry at every lift",
+                               f"{v.drive.valve_arm_mm:g}"))
+    elif v.drive.masses is not None and v.drive.masses.rocker_inertia_kg_mm2 > 0 and v.drive.valve_arm_mm is None:
+        out.append(Problem(f"{at}.drive.masses.rocker_inertia_kg_mm2", "needs drive.valve_arm_mm (the valve-side "
+                           "rocker arm)", f"{v.drive.masses.rocker_inertia_kg_mm2:g}"))
     if v.piston_gap_tdc_mm is not None and engine.rod_length_mm is None:
         out.append(Problem(f"{at}.piston_gap_tdc_mm", "needs engine.rod_length_mm for the piston kinematics",
                            joiner=" "))

@@ -55,17 +55,22 @@ def required_spring_force(mass_at_valve, valve_acceleration, reserve) -> np.ndar
     mass_at_valve : float
         Reduced mass at the valve m_v [kg].
     valve_acceleration : ndarray
-        Valve acceleration j_v = i_k j_T [m/s^2].
+        Valve acceleration j_v = i_k j_T [m/s^2]; for a finger follower the equivalent acceleration P_j / m_v of its
+        train's inertia force by the variable ratio (:func:`valvetrain.layouts.finger_inertia`).
     reserve : float
         Spring reserve factor K_z.
 
     Notes
     -----
-    :math:`P_j = m_v j_v` (5.1), :math:`P_{spr} = K_z P_j` (5.3) over the negative-acceleration part.
+    :math:`P_j = m_v j_v` (5.1), :math:`P_{spr} = K_z P_j` (5.3) over the negative-acceleration part.  A linkage of
+    variable ratio (a finger of inertia J about its pivot, effective arm G(psi) = dv/dpsi) has a reduced mass
+    m(v) = m_0 + J / G^2 that changes with the lift, and Lagrange's equation gives
+    :math:`P_j = m(v)\\ddot v + \\tfrac12\\,m'(v)\\,\\dot v^2` (Norton (2009); Wang (2007)).
 
     References
     ----------
-    Valve-train practical works (n.d.), work 5, eqs. (5.1), (5.3).
+    Valve-train practical works (n.d.), work 5, eqs. (5.1), (5.3); Norton (2009), the chapter on the dynamics of
+    follower trains; Wang (2007), the chapter on valvetrain dynamics.
     """
     return reserve * mass_at_valve * np.clip(-np.asarray(valve_acceleration, dtype=float), 0.0, None)
 

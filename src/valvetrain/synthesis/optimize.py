@@ -46,7 +46,7 @@ from ..checks import Check
 from ..design import run as run_design
 from ..design.drive import spring_options
 from ..design.dynamics import SPEED_RANGE, build_train, dynamics_stage
-from ..design.valve import MAX_LIFT_TO_THROAT
+from ..design.valve import MAX_LIFT_TO_THROAT, follower_travel_acceleration
 from ..dynamics.models import one_mass_train
 from ..dynamics.sweep import sweep
 from ..locale import record_text
@@ -377,7 +377,7 @@ class Problem:
         self.heel, self.i_k, self.omega = design.cam.heel_radius, design.cam.rocker_ratio, design.cam.cam_speed
         self.whole_event = getattr(self.section.cam, "closing", None) is not None
         self.mass = design.drive.masses.at_valve
-        self.spring = design.drive.lines["chosen"]
+        self.spring = design.drive.lines.chosen
         self.valve = si(self.section, self.spec)
         self.parts = {v.path.split(".")[0] for v in self.variables}
         self.spring_inputs = (self.valve.throat_diameter, spring_options(self.valve.spring),
@@ -497,9 +497,10 @@ class Problem:
         inertia = self.mass * self.i_k * self.omega**2 * np.clip(-d2h, 0.0, None)
         loaded = (inertia > 0.0) & (y > 0.0)
         nose = member_values([law.lift_max + law.ramp_height for law in laws], member)
+        acc = follower_travel_acceleration(self.follower, self.heel, h, dh, d2h)
         q = {"spring reserve": np.where(loaded, spring / np.where(loaded, inertia, 1.0), np.inf),
              "lift": h / nose, "overshoot": -h / nose,
-             "max acceleration": -d2h, "min acceleration": d2h}
+             "max acceleration": -acc, "min acceleration": acc}
         rho = self.follower.curvature(self.heel, h, dh, d2h)
         if self.follower.rolling:
             q["pressure angle"] = -np.abs(self.follower.pressure_angle(self.heel, h, dh))
@@ -990,7 +991,7 @@ def optimize_valve(spec, valve=None, variables=None, objective="fullness", wheel
                                   constraints=({"type": "ineq", "fun": polish_margins},),
                                   options={"maxiter": POLISH_ITERATIONS, "ftol": 1e-10})
         problem.evaluate(local.x)
-    spring = None if any(v.path == "drive.spring_reserve" for v in problem.variables) else design.drive.lines["chosen"]
+    spring = None if any(v.path == "drive.spring_reserve" for v in problem.variables) else design.drive.lines.chosen
     checks_start = final_checks(design, spec, limits, 1.0, spring)
     start = (problem.x0, spec, design, checks_start,
              optimum_spec_text(spec, valve, problem.data, dict(zip((v.path for v in variables), problem.x0))))
