@@ -2,6 +2,7 @@
 
 import csv
 import json
+from multiprocessing.reduction import send_handle
 import os
 import sys
 
@@ -257,3 +258,29 @@ def test_stopping_the_drawing_ends_the_drawer_the_first_forked(tmp_path, monkeyp
     assert not drawer._process.is_alive()
     with pytest.raises(ProcessLookupError):
         os.kill(pid, 0)
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="the figures are drawn in a forked process on Linux")
+@pytest.mark.parametrize("arrays", [[], [np.arange(12.0).reshape(3, 4), np.ones((4, 3))[:, 1], np.zeros(0)]])
+def test_the_request_reaches_the_drawer_with_its_arrays_in_shared_memory(arrays):
+    """The request goes to the drawer pickled (protocol 5) with its contiguous arrays apart, in a shared memory file
+    whose descriptor travels over the pipe: unpickled from it (the sending and the receiving functions of
+    FigureProcess over a socket pair, the drawer's pipe) it equals what was sent, the arrays written by the sender
+    (the reference) value for value, a non-contiguous one (pickled with the rest) and none at all included."""
+    from multiprocessing import Pipe
+    import pickle
+
+    from valvetrain.report.drawing import _receive, _shared
+
+    request = {"arrays": arrays, "text": "x"}
+    buffers = []
+    pickled = pickle.dumps(request, 5, buffer_callback=buffers.append)
+    fd, sizes = _shared([b.raw() for b in buffers])
+    sending, receiving = Pipe()
+    sending.send_bytes(pickled)
+    sending.send(sizes)
+    send_handle(sending, fd, os.getpid())
+    os.close(fd)
+    got = _receive(receiving)
+    assert got["text"] == "x" and len(got["arrays"]) == len(arrays)
+    assert all(np.array_equal(a, b) and a.shape == b.shape for a, b in zip(got["arrays"], arrays, strict=True))

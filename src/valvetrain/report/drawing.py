@@ -16,9 +16,12 @@ before.
 
 import importlib
 import io
+import itertools
+import mmap
 import multiprocessing
-from multiprocessing.reduction import ForkingPickler
+from multiprocessing.reduction import recv_handle, send_handle
 import os
+import pickle
 import signal
 import sys
 import threading
@@ -52,18 +55,27 @@ class FigureProcess:
         call ``also()`` in the first drawer, if given (a picklable callable that writes other files of the results,
         with the modules of ``imports``).
 
-        The request, larger than a pipe holds, is pickled here (the results are not to be read while this process
-        goes on with them) and sent by a thread: this process writes its files meanwhile, rather than wait for the
-        drawer to finish importing matplotlib."""
-        request = ForkingPickler.dumps(((results, folder, lang, figures), also))
-        self._sending = threading.Thread(target=self._send, args=(request,), daemon=True)
+        The request is pickled here (the results are not to be read while this process goes on with them), its
+        arrays apart (pickle's protocol 5: out-of-band buffers, 80 MB of a sweep's recorded revolutions for two
+        valves), copied once into a shared memory file that the drawers map (:func:`_shared`, :func:`_receive`)
+        rather than pickled into the pipe, read from it and unpickled again (a fifth of a second of a run); the rest,
+        larger than a pipe holds, is sent by a thread with the file: this process writes its files meanwhile, rather
+        than wait for the drawer to finish importing matplotlib."""
+        buffers = []
+        request = pickle.dumps(((results, folder, lang, figures), also), 5, buffer_callback=buffers.append)
+        arrays, sizes = _shared([b.raw() for b in buffers])
+        self._sending = threading.Thread(target=self._send, args=(request, sizes, arrays), daemon=True)
         self._sending.start()
 
-    def _send(self, request):
+    def _send(self, request, sizes, arrays):
         try:
             self._conn.send_bytes(request)
+            self._conn.send(sizes)
+            send_handle(self._conn, arrays, self._process.pid)
         except OSError:      # the drawer has ended (stop): result() says so
             pass
+        finally:
+            os.close(arrays)
 
     def result(self):
         """``write_plots``'s return value, once every process has drawn its figures; an exception of one, raised
@@ -117,7 +129,7 @@ def _serve(conn, other, processes, imports):
     except ImportError:
         pass                 # raised again with the request, in the first process
     try:
-        request, also = conn.recv()
+        request, also = _receive(conn)
     except EOFError:
         return
     drawers = []
@@ -156,6 +168,29 @@ def _serve(conn, other, processes, imports):
             answers.append((False, RuntimeError("a process drawing the figures ended without them")))
         os.waitpid(pid, 0)
     _send(conn, next((a for a in answers if not a[0]), answers[0]))
+
+
+def _shared(buffers) -> tuple[int, list[int]]:
+    """A shared memory file (its descriptor, Linux's ``memfd_create``) holding ``buffers`` (byte views) one after
+    the other, and their sizes [bytes]."""
+    fd = os.memfd_create("valvetrain-figures")
+    for b in buffers:
+        while b.nbytes:
+            b = b[os.write(fd, b):]
+    return fd, [b.nbytes for b in buffers]
+
+
+def _receive(conn):
+    """The request of :meth:`FigureProcess.submit`, unpickled with its arrays in the shared memory file it sends
+    (mapped here, its pages at once: the drawers read the arrays where the first process wrote them)."""
+    request, sizes, fd = conn.recv_bytes(), conn.recv(), recv_handle(conn)
+    try:
+        memory = memoryview(mmap.mmap(fd, sum(sizes), flags=mmap.MAP_SHARED | mmap.MAP_POPULATE) if sum(sizes)
+                            else b"")
+    finally:
+        os.close(fd)
+    buffers = [memory[start:start + size] for start, size in zip(itertools.accumulate(sizes, initial=0), sizes)]
+    return pickle.loads(request, buffers=buffers)
 
 
 def _send(conn, answer):
