@@ -71,7 +71,7 @@ def _in_process(tmp):
     results = run(spec)
     design = lap()
     valve = results.valves["exhaust"]
-    cylinder = CylinderPressure(results.crank.phi, results.crank.columns["p_abs"], results.crank.pressure_source)
+    cylinder = CylinderPressure(results.crank.phi, results.crank.columns.p_abs, results.crank.pressure_source)
     args = (si(spec.valves["exhaust"], spec), valve.cam.law, si(spec.engine), si(spec.gas), "exhaust",
             valve.cam.nose, cylinder)
     stage = []

@@ -99,3 +99,66 @@ def test_lobe_noses_of_a_four_stroke_turn_at_half_the_crank_angle():
 def test_too_many_orders_are_refused():
     with pytest.raises(ValueError, match="orders = 8: allowed 0 ... 7"):
         shaft.harmonic_orders(np.zeros(16), 8)
+
+
+def test_drive_torsional_stiffness_is_the_span_stiffness_at_the_pitch_radius():
+    """A span of 2000 N/mm (2e6 N/m) at r_p = 60 mm: k r_p^2 = 2e6 x 0.0036 = 7200 N m/rad."""
+    assert shaft.drive_torsional_stiffness(2.0e6, 0.06) == pytest.approx(7200.0, rel=1e-12)
+
+
+def test_sprocket_on_the_drive_with_a_rigid_shaft_is_one_mass_on_the_drive_spring():
+    """Ground -k_d- J_s =rigid shaft= J_1: the sprocket and the shaft turn as one, sqrt(k_d / (J_s + J_1)) (Den Hartog
+    (1956)); k_d = 7200 N m/rad, J_s = 2.2e-3, J_1 = 1.0e-3 kg m^2: sqrt(7200 / 3.2e-3) = 1500 rad/s.  The shaft's
+    spring 1e12 N m/rad stands for rigid (its own mode near sqrt(1e12 / 6.875e-4), far above)."""
+    w = shaft.torsional_frequencies(*shaft.with_drive_end(np.array([1e12]), np.array([1.0e-3]), 7200.0, 2.2e-3))
+    assert w.size == 2
+    assert w[0] == pytest.approx(1500.0, rel=1e-6)
+
+
+def test_sprocket_drive_and_an_elastic_shaft_against_the_two_mass_characteristic_equation():
+    """Ground -k_d- J_s -k_1- J_1: det [[k_d + k_1 - w^2 J_s, -k_1], [-k_1, k_1 - w^2 J_1]] = 0, i.e.
+    J_s J_1 w^4 - (J_s k_1 + J_1 (k_d + k_1)) w^2 + k_d k_1 = 0.  k_d = 7200, k_1 = 1.3e5 N m/rad, J_s = 2.2e-3,
+    J_1 = 1.0e-3 kg m^2: b = 2.2e-3 x 1.3e5 + 1e-3 x 1.372e5 = 423.2, a = 2.2e-6, c = 9.36e8;
+    w^2 = (b -+ sqrt(b^2 - 4 a c)) / (2 a) = (423.2 -+ sqrt(179098.24 - 8236.8)) / 4.4e-6 = (423.2 -+ 413.353892)
+    / 4.4e-6 = 2.2377518e6 and 1.9012588e8 -> w = 1495.9117 and 13788.614 rad/s."""
+    w = shaft.torsional_frequencies(*shaft.with_drive_end(np.array([1.3e5]), np.array([1.0e-3]), 7200.0, 2.2e-3))
+    a, b, c = 2.2e-6, 2.2e-3 * 1.3e5 + 1.0e-3 * (7200.0 + 1.3e5), 7200.0 * 1.3e5
+    roots = np.sqrt((b + np.array([-1.0, 1.0]) * np.sqrt(b * b - 4 * a * c)) / (2 * a))
+    assert w == pytest.approx(roots, rel=1e-9)
+    assert w == pytest.approx([1495.9117, 13788.614], rel=1e-7)
+
+
+def test_three_masses_with_the_drive_against_numpys_eigenvalues_of_the_hand_written_matrices():
+    """Ground -k_d- J_s -k_1- J_1 -k_2- J_2, the matrices written out by hand: K = [[k_d + k_1, -k_1, 0],
+    [-k_1, k_1 + k_2, -k_2], [0, -k_2, k_2]], M = diag(J_s, J_1, J_2); w^2 are the eigenvalues of the symmetric
+    M^-1/2 K M^-1/2 (numpy.linalg.eigvalsh, a solver independent of scipy's generalised eigh)."""
+    kd, k1, k2 = 7200.0, 1.3e5, 9.0e4
+    js, j1, j2 = 2.2e-3, 1.0e-3, 1.4e-3
+    K = np.array([[kd + k1, -k1, 0.0], [-k1, k1 + k2, -k2], [0.0, -k2, k2]])
+    s = 1.0 / np.sqrt([js, j1, j2])
+    expected = np.sqrt(np.linalg.eigvalsh(s[:, None] * K * s[None, :]))
+    w = shaft.torsional_frequencies(*shaft.with_drive_end(np.array([k1, k2]), np.array([j1, j2]), kd, js))
+    assert w == pytest.approx(expected, rel=1e-10)
+
+
+def test_an_infinitely_stiff_drive_holds_the_drive_end():
+    """Limit: k_d = inf returns the shaft held at its drive end (the chain unchanged, the sprocket's inertia
+    irrelevant); a drive 1e6 times stiffer than the shaft gives the held shaft's two frequencies to 1e-6 with its
+    third, the sprocket's, far above (sqrt(1e10 / 5e-3) = 1.41e6 rad/s; Ground -k- J -k- J with k = 1e4, J = 1e-4: 6180.3399 and 16180.340 rad/s, as
+    test_two_equal_grounded_masses_against_the_characteristic_equation)."""
+    k, j = np.array([1e4, 1e4]), np.array([1e-4, 1e-4])
+    held = shaft.torsional_frequencies(k, j)
+    k_held, j_held = shaft.with_drive_end(k, j, np.inf, 5e-3)
+    assert np.array_equal(k_held, k) and np.array_equal(j_held, j)
+    stiff = shaft.torsional_frequencies(*shaft.with_drive_end(k, j, 1e10, 5e-3))
+    assert stiff[:2] == pytest.approx(held, rel=1e-6)
+    assert stiff[:2] == pytest.approx([6180.3399, 16180.340], rel=1e-6)
+    assert stiff[2] > 50.0 * held[1]
+
+
+def test_the_shaft_piece_before_the_first_station_goes_half_to_the_drive_end():
+    """A station at position 0 (the drive end) takes half the piece 0-100 mm: uniform d 20 mm, rho 7850,
+    rho J = 1.2330751e-4 kg m^2 per m: 0.05 m x 1.2330751e-4 = 6.1653755e-6 kg m^2; the stations keep their shares
+    (as test_lumped_shaft_inertia_of_a_uniform_shaft)."""
+    inertia = shaft.lumped_shaft_inertia(np.array([0.0, 0.1, 0.2]), [0.3], [0.02], [0.0], 7850.0)
+    assert inertia == pytest.approx([6.1653755e-6, 1.2330751e-5, 1.8496127e-5], rel=1e-7)

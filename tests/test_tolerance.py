@@ -14,6 +14,7 @@ from valvetrain.tolerance import draw, unit_samples, wilson
 from valvetrain.specification import load_spec
 
 from appendix import appendix_text
+from visible_text import Visible, english_words
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -212,3 +213,48 @@ def test_report_has_a_row_and_a_histogram_per_failing_check(serial, lang, word):
         results["tolerances"]) + 1 + len(failing)
     for c in failing:
         assert check_text(c["code"], c["params"], lang) in html
+
+
+def test_russian_report_has_no_english_words(serial):
+    """tolerance.html in Russian: the keys by their names (names.py), the headlines, the method; only the valves'
+    names, the keys as the file gives them and the citations stay as they are (tests/report/test_report_i18n.py)."""
+    from valvetrain.report.tolerance import report_html
+
+    parser = Visible()
+    parser.feed(report_html(serial[1], "ru"))
+    assert english_words(parser.texts) == []
+    text = " ".join(parser.texts)
+    assert "тепловой зазор h0, мм" in text and "масса клапана, кг" in text
+
+
+def test_samples_have_the_full_designs_checks():
+    """A sample's design simulates only the speeds that decide the dynamics headlines and loads (run with
+    headlines_only): on the built-in example its jump speed and largest seating velocity equal the full sweep's, every
+    check has the full design's verdict, and every margin is within 0.1 % of it (the strength checks read the cam
+    force at the speeds simulated)."""
+    from valvetrain.design import run
+    from valvetrain.specification import example_spec
+
+    full, part = run(example_spec()), run(example_spec(), headlines_only=True)
+    for name, v in full.valves.items():
+        d, p = v.dynamics, part.valves[name].dynamics
+        assert len(p.per_speed.speed) < len(d.per_speed.speed) / 3
+        assert (p.jump_speed, p.max_seating_velocity) == (d.jump_speed, d.max_seating_velocity)
+    assert [(c.code, c.valve, c.passed) for c in part.checks] == [(c.code, c.valve, c.passed) for c in full.checks]
+    for a, b in zip(full.checks, part.checks, strict=True):
+        assert b.margin == pytest.approx(a.margin, rel=1e-3, abs=1e-12, nan_ok=True), a.code
+
+
+def test_multi_mass_trains_are_swept_in_full():
+    """A multi-mass train's separations come and go with the speed (coil surge): a sample sweeps it at every speed
+    of its range, as valvetrain run does."""
+    import tomllib
+
+    from valvetrain.design import run
+    from valvetrain.specification import example_text
+
+    document = tomllib.loads(example_text())
+    for valve in document["valves"].values():
+        valve["dynamics"].update(model="multi", speeds=60)
+    part = run(document, headlines_only=True)
+    assert [len(v.dynamics.per_speed.speed) for v in part.valves.values()] == [60, 60]

@@ -73,7 +73,7 @@ def valve_series(v) -> dict[str, Any]:
     order = np.argsort(drive.lift)
     lift = np.asarray(drive.lift)[order]
     top = np.array([0.0, float(lift.max())])
-    chosen = drive.lines["chosen"]
+    chosen = drive.lines.chosen
     return {
         "cam_deg": rad_to_deg(tab.cam_angle),
         "crank_deg": rad_to_deg(v.nose_crank + 2.0 * tab.cam_angle),

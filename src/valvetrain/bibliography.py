@@ -300,6 +300,14 @@ WORKS = {
         authors="Den Hartog, J. P.",
         title="Mechanical Vibrations, 4th ed.", kind="book", publisher="McGraw-Hill", place="New York", year="1956",
         note="The natural frequencies of torsional systems of several masses on an elastic shaft."),
+    "diamondchain": Work(
+        short="Diamond Chain (n.d.)",
+        authors="Diamond Chain Company",
+        title="What is working load and what role does it play in selecting roller chain?",
+        kind="web page of the maker's frequently asked questions",
+        url="https://diamondchain.com/faq/what-is-working-load-and-what-role-does-it-play-in-selecting-roller-chain/",
+        note="The working load (chain pull) of a roller chain at most 1/6 of its tensile strength with press-fit "
+             "connecting links, 1/9 with slip-fit or offset links."),
 }
 """Every cited work by its key."""
 

@@ -198,7 +198,9 @@ def twist(compliance, station_torques) -> np.ndarray:
 
     Notes
     -----
-    phi_i = sum_j min(c_i, c_j) T_j (:func:`flexibility`); the shaft's inertia is left out (quasi-static).
+    phi_i = sum_j min(c_i, c_j) T_j (:func:`flexibility`); the shaft's inertia is left out (quasi-static).  A
+    compliant timing drive carries the torque of every station: its compliance 1 / k_t
+    (:func:`drive_torsional_stiffness`) added to every c_i gives the lag behind the crankshaft.
     """
     return flexibility(compliance) @ np.asarray(station_torques, dtype=float)
 
@@ -268,6 +270,63 @@ def station_stiffness(compliance) -> np.ndarray:
     return 1.0 / np.diff(np.concatenate([[0.0], np.asarray(compliance, dtype=float)]))
 
 
+def drive_torsional_stiffness(span_stiffness, pitch_radius) -> float:
+    """Torsional stiffness of the timing drive at the camshaft [N m / rad]: k_t = k r_p^2.
+
+    Parameters
+    ----------
+    span_stiffness : float
+        Tangential stiffness of the drive at the pitch radius [N/m]: the tight span of the chain or belt (its force
+        per unit strain over the span's length) or the gear mesh; ``inf``: a rigid drive.
+    pitch_radius : float
+        Pitch radius of the camshaft's sprocket, pulley or gear r_p [m].
+
+    Notes
+    -----
+    A turn delta of the sprocket against the crankshaft's stretches the span by r_p delta, which pulls with
+    k r_p delta at the arm r_p.
+
+    >>> drive_torsional_stiffness(2.0e6, 0.05)
+    5000.0
+    """
+    return span_stiffness * pitch_radius**2
+
+
+def with_drive_end(stiffness, inertias, drive_stiffness, sprocket_inertia) -> tuple[np.ndarray, np.ndarray]:
+    """The grounded chain of :func:`torsional_frequencies` with the timing drive at its head [N m / rad], [kg m^2].
+
+    Parameters
+    ----------
+    stiffness : ndarray (L,)
+        Spring rates of the shaft held at its drive end, :func:`station_stiffness`.
+    inertias : ndarray (L,)
+        Inertias of the stations [kg m^2].
+    drive_stiffness : float
+        Torsional stiffness of the timing drive [N m / rad], :func:`drive_torsional_stiffness`; ``inf``: the drive end
+        held (the chain returned as given).
+    sprocket_inertia : float
+        Inertia at the drive end [kg m^2], > 0: the sprocket, pulley or gear with its share of the shaft.
+
+    Returns
+    -------
+    stiffness, inertias : ndarray
+        The ground (the crankshaft, turning evenly) -k_d- J_s -k_1- J_1 ...
+
+    Notes
+    -----
+    The crankshaft's inertia is far larger than the camshaft's: it is taken as turning evenly, the drive's far end
+    held.
+
+    >>> k, j = with_drive_end(np.array([4.0, 2.0]), np.array([1.0, 1.0]), 3.0, 0.5)
+    >>> k.tolist(), j.tolist()
+    ([3.0, 4.0, 2.0], [0.5, 1.0, 1.0])
+    """
+    stiffness, inertias = np.asarray(stiffness, dtype=float), np.asarray(inertias, dtype=float)
+    if np.isinf(drive_stiffness):
+        return stiffness, inertias
+    return np.concatenate([[drive_stiffness], stiffness]), np.concatenate([[sprocket_inertia], inertias])
+
+
 def lumped_shaft_inertia(positions, lengths, diameters, bores, density) -> np.ndarray:
     """The shaft's own polar mass inertia lumped at stations [kg m^2], (L,).
 
@@ -283,7 +342,8 @@ def lumped_shaft_inertia(positions, lengths, diameters, bores, density) -> np.nd
     Notes
     -----
     The piece between two stations (rho int J dx) goes half to each; the piece before the first station half to it
-    (the other half to the drive end, held), the piece beyond the last station wholly to it.
+    (the other half to the drive end: a station at position 0 receives it), the piece beyond the last station wholly
+    to it.
     """
     ends = np.concatenate([[0.0], np.asarray(positions, dtype=float), [float(np.sum(lengths))]])
     pieces = np.diff(density * piecewise_integral(ends, lengths, polar_moment(diameters, bores)))

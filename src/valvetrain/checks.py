@@ -184,7 +184,7 @@ class Check:
         """The record of a failed check in ``results.json`` ``warnings``: quantity, code, valve, parameters, value,
         range, source, unit, severity and margin (and the reason of an acceptance)."""
         return {"quantity": self.quantity, "code": self.code, "valve": self.valve, "params": dict(self.params),
-                "value": self.shown_value if self.evaluated else None, "range": self.range,
+                "value": without_noise(self.shown_value) if self.evaluated else None, "range": self.range,
                 "source": self.source, "unit": self.unit, "severity": self.severity, "margin": self.margin,
                 **({} if self.evaluated else {"unevaluated": self.unevaluated or UNEVALUATED}),
                 **({"accepted": True, "reason": self.reason} if self.accepted else {})}

@@ -1,5 +1,6 @@
 """The hydraulic lash adjuster: leak-down through the plunger clearance, refill through the check valve, the
-compliance of the oil with entrained air, and the pump-up of a plunger that extends while the follower floats.
+compliance of the oil with entrained air (the plunger's motion over the cycle is a state of the dynamics,
+:class:`valvetrain.dynamics.models.Adjuster`).
 
 SI units: m, s, N, Pa (gauge pressures unless said absolute), Pa s, m^3.  Pure functions over numpy arrays.
 """
@@ -146,32 +147,3 @@ def secant_stiffness(force: float, plunger_spring: float, area: float, supply: f
     pressure = max((force - plunger_spring) / area, supply)
     sink = chamber_compression(pressure, supply, volume, bulk_modulus, air_content) / area
     return (force / sink if sink > 0.0 else np.inf), sink, pressure
-
-
-def pump_up(gap, dt: float, rate: float) -> float:
-    """Extension [m] the plunger keeps after a float: it follows the opened gap at most at ``rate`` [m/s] and locks
-    once the follower lands on it.
-
-    Parameters
-    ----------
-    gap : ndarray (n,)
-        Gap between follower and cam at the adjuster over the float, in time order [m] (0 where in contact).
-    dt : float
-        Time step of ``gap`` [s].
-    rate : float
-        Largest extension velocity [m/s] (check-valve flow / plunger area).
-
-    Notes
-    -----
-    :math:`s_k = \\min(g_k,\\ s_{k-1} + r\\,\\Delta t)` while :math:`g_k \\ge s_{k-1}`; the first :math:`g_k <
-    s_{k-1}` is the landing, and the oil trapped by the check valve holds :math:`s_{k-1}`.
-
-    >>> pump_up(np.array([0.0, 1.0, 2.0, 3.0, 1.0, 0.0]), 1.0, 0.5)
-    1.5
-    """
-    s = 0.0
-    for g in gap:
-        if g < s:
-            break
-        s = min(g, s + rate * dt)
-    return float(s)

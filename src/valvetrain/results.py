@@ -3,9 +3,12 @@
 A stage result is a frozen dataclass.  A field declared with :func:`quantity` is part of the
 results: ``key`` is its name in ``results.json`` (engineering units in the name, as in the
 specification: ``rho_min_mm``), ``unit`` the unit it is shown in (:data:`valvetrain.units.UNITS`),
-``label`` what it is.  :func:`record` converts a result to that dictionary, the one place where
-a result leaves SI; :func:`json_schema` describes the same dictionary as a JSON Schema, generated
-from the same metadata.  Fields without the metadata (arrays, the law object) stay inside.
+``label`` what it is.  :func:`shown` reads fields from a result's attributes as ``(key, value)`` rows in
+their display units, the one place where a result leaves SI (the report reads its tables so);
+:func:`record` is the dictionary of those rows, made once per design for results.json
+(:attr:`valvetrain.design.DesignResults.projection`); :func:`json_schema` describes the same
+dictionary as a JSON Schema, generated from the same metadata.  Fields without the metadata
+(arrays, the law object) stay inside.
 """
 
 from collections.abc import Iterator
@@ -15,7 +18,7 @@ from typing import Any, Union
 
 import numpy as np
 
-from .units import to_display
+from .units import to_display, without_noise
 
 
 def quantity(key, unit="", label="", *, default=MISSING, flatten=False, omit_none=False) -> Any:
@@ -87,38 +90,37 @@ def _shown(value, unit):
         return [_shown(v, unit) for v in value]
     if isinstance(value, (int, np.integer)) and not unit:
         return int(value)
-    return float(to_display(float(value), unit))
+    return without_noise(float(to_display(float(value), unit)))
 
 
 def record(result: Any) -> dict[str, Any]:
-    """The results.json dictionary of a stage result (engineering units, keys from the field metadata)."""
-    out = {}
-    for f in fields(result):
-        meta = f.metadata
-        if "key" not in meta:
-            continue
-        value = getattr(result, f.name)
-        if value is None and meta["omit_none"]:
-            continue
-        if meta["flatten"]:
-            out.update(record(value) if value is not None else {})
-        else:
-            out[meta["key"]] = _shown(value, meta["unit"])
-    return out
+    """The results.json dictionary of a stage result (engineering units, keys from the field metadata): the rows of
+    :func:`shown`."""
+    return dict(shown(result))
 
 
 def shown(result: Any, *names: str) -> list[tuple[str, Any]]:
     """``(key, value)`` of the named fields of a stage result as results.json shows them (the field's key, the value
-    in its display unit), read from the attributes in the order named; without names, every field's (its record).
+    in its display unit), read from the attributes in the order named.  Without names, every field's in the order
+    declared: a flattened result's rows in its place (a key it shares with the parent's keeps the parent's place and
+    takes its value), a field left out where it is None and results.json leaves it out (the rows of its
+    :func:`record`).
 
     >>> from valvetrain.design.valve import FlatContact
     >>> shown(FlatContact(0.0125), "max_contact_offset")
     [('max_contact_offset_mm', 12.5)]
     """
-    if not names:
-        return list(record(result).items())
-    meta = {f.name: f.metadata for f in fields(result)}
-    return [(meta[n]["key"], _shown(getattr(result, n), meta[n]["unit"])) for n in names]
+    if names:
+        meta = {f.name: f.metadata for f in fields(result)}
+        return [(meta[n]["key"], _shown(getattr(result, n), meta[n]["unit"])) for n in names]
+    rows = {}
+    for f in fields(result):
+        meta = f.metadata
+        value = getattr(result, f.name)
+        if "key" not in meta or value is None and (meta["omit_none"] or meta["flatten"]):
+            continue
+        rows.update(shown(value) if meta["flatten"] else [(meta["key"], _shown(value, meta["unit"]))])
+    return list(rows.items())
 
 
 def shown_value(result: Any, name: str) -> Any:

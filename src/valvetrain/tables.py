@@ -87,11 +87,11 @@ def crank_columns(crank) -> dict[str, np.ndarray]:
     c = crank.columns
     mpa = 1e-6
     return {
-        "crank_deg": rad_to_deg(crank.phi), "s_mm": c["s"] / MM, "v_m_s": c["v"], "j_m_s2": c["j"],
-        "beta_deg": rad_to_deg(c["beta"]), "p_abs_MPa": c["p_abs"] * mpa, "p_gas_MPa": c["p_gas"] * mpa,
-        "p_j_MPa": c["p_j"] * mpa, "p_MPa": c["p"] * mpa, "p_N_MPa": c["p_N"] * mpa, "p_S_MPa": c["p_S"] * mpa,
-        "p_K_MPa": c["p_K"] * mpa, "p_T_MPa": c["p_T"] * mpa, "T_N": c["T"], "M_cyl_Nm": c["torque"],
-        "pin_radial_N": c["pin_radial"], "pin_tangential_N": c["pin_tangential"],
+        "crank_deg": rad_to_deg(crank.phi), "s_mm": c.s / MM, "v_m_s": c.v, "j_m_s2": c.j,
+        "beta_deg": rad_to_deg(c.beta), "p_abs_MPa": c.p_abs * mpa, "p_gas_MPa": c.p_gas * mpa,
+        "p_j_MPa": c.p_j * mpa, "p_MPa": c.p * mpa, "p_N_MPa": c.p_N * mpa, "p_S_MPa": c.p_S * mpa,
+        "p_K_MPa": c.p_K * mpa, "p_T_MPa": c.p_T * mpa, "T_N": c.T, "M_cyl_Nm": c.torque,
+        "pin_radial_N": c.pin_radial, "pin_tangential_N": c.pin_tangential,
     }
 
 
@@ -106,14 +106,14 @@ def engine_torque_columns(crank) -> dict[str, np.ndarray]:
 def two_stroke_columns(ports) -> dict[str, np.ndarray]:
     """Port areas against the crank angle from TDC [deg, mm2]."""
     out = {"crank_deg": rad_to_deg(ports.phi)}
-    out.update({f"{name}_area_mm2": a / MM**2 for name, a in ports.areas.items()})
+    out.update({f"{name}_area_mm2": c.area / MM**2 for name, c in ports.curves.items()})
     return out
 
 
 def two_stroke_speed_columns(ports) -> dict[str, np.ndarray]:
     """Time-area of every port against the crank speed [rpm, mm2 s] (Z = K1 K2 / n, Valve-train practical works (n.d.) eq. 8.6)."""
     out = {"speed_rpm": to_display(ports.speeds, "rpm")}
-    out.update({f"{name}_time_area_mm2_s": z / MM**2 for name, z in ports.time_areas.items()})
+    out.update({f"{name}_time_area_mm2_s": c.time_area / MM**2 for name, c in ports.curves.items()})
     return out
 
 

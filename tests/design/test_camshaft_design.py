@@ -97,6 +97,8 @@ def test_results_json_has_the_chapter_and_its_checks(pushrod):
     ("valves = [\"exhaust\"]", "camshaft.valves = ['exhaust']: allowed a non-empty list of the valves ['intake']"),
     ("cylinders = [1, 5]", "camshaft.cylinders = [1, 5]: allowed distinct cylinders 1...4"),
     ("section_diameters_mm = [25.0]", "camshaft: section_diameters_mm has 1 entries"),
+    ("drive_stiffness_N_per_mm = 5.0", "camshaft.drive_stiffness_N_per_mm = 5.0: allowed [10, 1e+07] N/mm"),
+    ("sprocket_inertia_kg_mm2 = -1.0", "camshaft.sprocket_inertia_kg_mm2 = -1.0: allowed [0, 1e+07] kg mm2"),
 ])
 def test_bad_sections_are_refused_naming_the_key(extra, words):
     key = extra.split(" = ")[0]
@@ -109,3 +111,31 @@ def test_bad_sections_are_refused_naming_the_key(extra, words):
 def test_positions_outside_the_journals_are_refused():
     with pytest.raises(SpecError, match="every lobe lies between the first and the last journal"):
         with_shaft(appendix_text(), positions="[10.0]")
+
+
+def test_one_lobe_on_a_compliant_timing_drive_against_a_hand_calculation(pushrod):
+    """One lobe at 65 mm of the pushrod example's shaft (20 mm of d 25, then d 32; G = 81 GPa) on a chain of
+    2000 N/mm at r_p = 60 mm with a sprocket of 2000 kg mm^2.  By hand: the drive k_t = 2e6 x 0.06^2 = 7200 N m/rad;
+    the shaft to the lobe c_1 = 0.02 / (G J_25) + 0.045 / (G J_32), J_25 = pi 0.025^4 / 32 = 3.8349520e-8,
+    J_32 = pi 0.032^4 / 32 = 1.0294354e-7 m^4: c_1 = 6.4385e-6 + 5.3967e-6 = 1.18352e-5 rad/(N m).  The lobe lags the
+    crankshaft by (1 / k_t + c_1) T, largest at the largest |T|; the drive end by T / k_t.  The drive end's inertia:
+    the sprocket and half the shaft 0-65 mm, 2e-3 + rho (0.02 J_25 + 0.045 J_32) / 2; with the lobe station's inertia
+    J_1 (the record, SI) the two frequencies solve J_s J_1 w^4 - (J_s k_1 + J_1 (k_t + k_1)) w^2 + k_t k_1 = 0,
+    k_1 = 1 / c_1 (Den Hartog (1956))."""
+    spec = pushrod.spec.replace({"camshaft.cylinders": [1], "camshaft.cylinder_positions_mm": [65.0],
+                                 "camshaft.drive_stiffness_N_per_mm": 2000.0,
+                                 "camshaft.sprocket_inertia_kg_mm2": 2000.0})
+    f = run(spec).camshaft.figures
+    kt, G, rho = 7200.0, 81e9, 7850.0
+    j25, j32 = np.pi * 0.025**4 / 32, np.pi * 0.032**4 / 32
+    c1 = 0.02 / (G * j25) + 0.045 / (G * j32)
+    assert c1 == pytest.approx(1.18352e-5, rel=1e-5)
+    torque = max(f.peak, -f.lowest)
+    assert f.max_twist[0] == pytest.approx((1.0 / kt + c1) * torque, rel=1e-9)
+    assert f.drive_windup == pytest.approx(torque / kt, rel=1e-9)
+    js = 2e-3 + rho * (0.02 * j25 + 0.045 * j32) / 2
+    assert f.drive_end_inertia == pytest.approx(js, rel=1e-9)
+    j1, k1 = f.station_inertia[0], 1.0 / c1
+    a, b, c = js * j1, js * k1 + j1 * (kt + k1), kt * k1
+    w = np.sqrt((b + np.array([-1.0, 1.0]) * np.sqrt(b * b - 4 * a * c)) / (2 * a))
+    assert np.asarray(f.natural_frequencies) == pytest.approx(w / (2 * np.pi), rel=1e-8)

@@ -64,7 +64,7 @@ def _spec_with_pressure_file(tmp_path, rows, header="crank_deg,pressure_MPa"):
 
 def test_user_p_phi_file_is_used(tmp_path, example):
     phi = np.arange(0.0, 720.0, 2.0)
-    p = example.crank.columns["p_abs"][::2] / 1e6
+    p = example.crank.columns.p_abs[::2] / 1e6
     spec_file = _spec_with_pressure_file(tmp_path, zip(phi, p))
     res = run(load_spec(spec_file))
     assert "p-phi diagram" in res.crank.summary["pressure_source"]
@@ -75,7 +75,7 @@ def test_user_p_phi_file_is_used(tmp_path, example):
 def test_user_p_v_file_is_used(tmp_path, example):
     c = example.crank
     v = pressure.cylinder_volume(c.phi, 0.08, 0.077142857 / 2, 0.077142857 / 2 / 0.135, 10.0)
-    spec_file = _spec_with_pressure_file(tmp_path, zip(v * 1e6, c.columns["p_abs"] / 1e6), "volume_cm3,pressure_MPa")
+    spec_file = _spec_with_pressure_file(tmp_path, zip(v * 1e6, c.columns.p_abs / 1e6), "volume_cm3,pressure_MPa")
     res = run(load_spec(spec_file))
     assert "p-V diagram" in res.crank.summary["pressure_source"]
     assert res.crank.summary["indicated_work_J"] == pytest.approx(c.summary["indicated_work_J"], rel=5e-3)
@@ -202,7 +202,7 @@ def test_the_example_cycle_uses_its_valve_timing():
     """The built-in example's pressure: the intake pressure up to the intake valve's closing at 258 crank deg
     (compression starts there, not at BDC), and the source names the timing."""
     crank = run(appendix_spec()).crank
-    p = crank.columns["p_abs"]
+    p = crank.columns.p_abs
     deg = np.degrees(crank.phi)
     assert np.all(p[(deg > 30.0) & (deg <= 257.0)] == 0.09e6)
     assert p[deg == 270.0][0] > 0.1e6

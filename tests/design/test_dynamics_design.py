@@ -68,7 +68,7 @@ def kinetostatic_cam_force(valve, cam_speed, theta):
     law, k = valve.law, valve.rocker_ratio
     d = law.derivatives(theta)
     y = k * np.clip(d[0] - law.ramp_height, 0.0, None)
-    line = valve.drive.lines["chosen"]
+    line = valve.drive.lines.chosen
     return k * (line.preload + line.rate * y + valve.drive.masses.at_valve * k * cam_speed**2 * d[2])
 
 
@@ -78,7 +78,7 @@ def test_stiff_slow_train_follows_the_kinematics():
     r = run(spec("drive_stiffness_N_per_mm = 1e6\nspeed_range_rpm = [300.0, 600.0]\n" + FEW, geometry=False))
     v = r.valves["intake"]
     d = v.dynamics
-    c, line = d.parameters.drive_stiffness, v.drive.lines["chosen"]
+    c, line = d.parameters.drive_stiffness, v.drive.lines.chosen
     assert c == pytest.approx(1e9)
     deflection = (line.preload + line.rate * v.flow.valve_lift) / c
     assert max(d.per_speed.max_lift_error) < 1.2 * deflection + 1e-6

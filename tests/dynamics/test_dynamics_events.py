@@ -5,7 +5,7 @@ from types import SimpleNamespace
 import numpy as np
 
 from valvetrain.dynamics.models import one_mass_train
-from valvetrain.dynamics.sweep import seating, sweep
+from valvetrain.dynamics.sweep import headline_sweep, seating, sweep
 
 from reference_dynamics import seat_crossings
 from test_dynamics import RPM, spec12
@@ -44,6 +44,34 @@ def test_jump_speed_of_a_harmonic_cam_closed_form():
     assert abs(first / exact - 1) > 1e-3                            # the grid alone misses it: the test can fail
     below = r.speed(int(np.searchsorted(speeds, 0.99 * exact)) - 1)
     assert below.jump_intervals.size == 0 and below.min_contact_force > 0.0   # undamped seat: a bounce, no jump
+
+
+def test_headline_sweep_has_the_full_sweeps_headlines():
+    """The speeds a tolerance study simulates (headline_sweep, every 10th speed then the speeds about the events) give
+    the jump speed of the harmonic cam above: within 0.1 % of the closed form omega_j = 297.8 rad/s, and equal to the
+    full sweep's, whose interpolation it reproduces; the largest seating velocity, and the largest cam force inside a
+    load range that stops below the jump between two coarse speeds, equal the full sweep's; with under half of its
+    speeds simulated."""
+    lift, phi, mass, rate, preload = 8e-3, 1.0, 0.2, 50e3, 300.0
+    exact = np.sqrt(2 * (preload + rate * lift) / (mass * lift * (np.pi / phi) ** 2))
+    train = one_mass_train(mass, 3e8, rate, preload, damping_ratio=0.1, seat_damping_ratio=0.0)
+    speeds = np.linspace(0.5, 1.2, 141) * exact * 1.0013
+    load_range = (speeds[0], 0.9 * exact)
+    full = sweep(harmonic_cam(lift, phi), train, speeds)
+    part = headline_sweep(harmonic_cam(lift, phi), train, speeds, load_range=load_range)
+    assert part.cam_speeds.size < speeds.size / 2 and np.all(np.diff(part.cam_speeds) > 0)
+    head, expected = part.headline(), full.headline()
+    assert abs(head["jump_speed"] / exact - 1) < 1e-3
+    assert head["jump_speed"] == expected["jump_speed"]
+    assert head["max_seating_velocity"] == expected["max_seating_velocity"]
+
+    def largest_force(r):
+        inside = (r.cam_speeds >= load_range[0]) & (r.cam_speeds <= load_range[1])
+        return r.contact_force[inside].max()
+
+    assert largest_force(part) == largest_force(full)
+    top = np.flatnonzero(speeds <= load_range[1])[-1]
+    assert top % 10 != 0 and speeds[top] in part.cam_speeds        # the range's last speed, not a coarse one
 
 
 def test_seating_velocity_against_a_second_integrator():

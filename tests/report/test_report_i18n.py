@@ -2,7 +2,6 @@
 shipped example, every check quantity and every plot label (issue 10, "The report" and "Words")."""
 
 from collections import defaultdict
-from html.parser import HTMLParser
 from pathlib import Path
 import re
 
@@ -16,65 +15,9 @@ from valvetrain.report.i18n import TEXT
 from valvetrain.report.names import label, quantity_text, value_text
 from valvetrain.specification import example_spec, load_spec
 
+from visible_text import Visible, english_words
+
 EXAMPLES = sorted((Path(__file__).parents[2] / "examples").glob("*.toml"))
-
-ALLOWED = {
-    # symbols of the sources (the report explains each where it is first used)
-    "cp", "vp", "max", "min", "in", "spr", "gas", "cam", "sin", "cos", "ln", "dt", "dh", "dx", "ik", "hv", "mv",
-    "av", "aT", "hT", "vT", "jT", "Cp", "Cq", "Cr", "Cs", "Kr", "Wi", "fg", "Fp", "Vh", "ic", "pi", "pN", "pS",
-    "pK", "pT", "mT", "mj", "mr", "iw", "vv", "c1", "v0", "p0", "PD", "TR", "dp",
-    # unit-free names of formulas and proper names
-    "Kurz", "Wiebe", "Euler", "VDSiCr", "VDCrV", "valvetrain", "json", "csv", "dxf", "png",
-    # authors of cited works in the notes of a computation (the citations themselves are not translated)
-    "Shang", "Hanji", "Heywood", "Reinsch",
-}
-"""Latin words allowed in the Russian report: symbols, proper names and file types."""
-
-LATIN_WORD = re.compile(r"[A-Za-z]{2,}")
-
-
-class _Visible(HTMLParser):
-    """The visible text of an HTML page and its image descriptions, without styles, scripts, names given by the
-    designer (class ``name``) and citations (class ``cite``, the bibliography)."""
-
-    SKIP_CLASSES = {"name", "cite", "bibliography"}
-    VOID = {"img", "br", "meta", "hr", "input", "link"}
-
-    def __init__(self):
-        super().__init__()
-        self.stack, self.texts = [], []
-
-    def handle_starttag(self, tag, attrs):
-        attrs = dict(attrs)
-        if tag in self.VOID:
-            if not self._skipping() and attrs.get("alt"):
-                self.texts.append(attrs["alt"])
-            return
-        skip = tag in ("style", "script") or bool(self.SKIP_CLASSES & set((attrs.get("class") or "").split()))
-        self.stack.append((tag, skip))
-
-    def handle_endtag(self, tag):
-        while self.stack:
-            if self.stack.pop()[0] == tag:
-                break
-
-    def _skipping(self):
-        return any(skip for _, skip in self.stack)
-
-    def handle_data(self, data):
-        if not self._skipping() and data.strip():
-            self.texts.append(data)
-
-
-def english_words(texts):
-    """The Latin words of ``texts`` that are not in :data:`ALLOWED`, with the text each is in."""
-    found = []
-    for text in texts:
-        for word in LATIN_WORD.findall(text):
-            if word not in ALLOWED:
-                found.append((word, text.strip()[:120]))
-    return found
-
 
 def _plots():
     """Plot file names for a report rendered without its folder (the figures are linked, not embedded)."""
@@ -92,7 +35,7 @@ def designs():
 
 def test_russian_report_without_its_figures_has_no_english_words(designs):
     """A figure not drawn (``--figures``) is named in Russian, beside the command that draws it."""
-    parser = _Visible()
+    parser = Visible()
     parser.feed(render_report(designs["built-in"], {}, "ru"))
     notes = [text for text in parser.texts if "строится по запросу" in text]
     # the built-in example's 8 of each of its two valves (6, and 2 of its dynamics), the timing, 3 of the crank
@@ -101,14 +44,14 @@ def test_russian_report_without_its_figures_has_no_english_words(designs):
 
 def test_russian_report_has_no_english_words(designs):
     for name, results in designs.items():
-        parser = _Visible()
+        parser = Visible()
         parser.feed(render_report(results, _plots(), "ru"))
         assert parser.texts
         assert english_words(parser.texts) == [], name
 
 
 def test_the_extractor_finds_english():
-    parser = _Visible()
+    parser = Visible()
     parser.feed('<p>подъём <span class="cite">Valve-train practical works (n.d.), work 1</span> tappet_lift_mm</p><img alt="lift">'
                 '<style>p { color: red }</style>')
     assert [w for w, _ in english_words(parser.texts)] == ["tappet", "lift", "mm", "lift"]
@@ -116,7 +59,7 @@ def test_the_extractor_finds_english():
 
 def test_english_report_shows_names_not_keys(designs):
     html = render_report(designs["built-in"], _plots(), "en")
-    parser = _Visible()
+    parser = Visible()
     parser.feed(html)
     keys = [t for t in parser.texts if re.search(r"\b[a-z]+_[a-z_]+\b", t) and not re.search(r"[A-Za-z]_[A-Za-z]{1,3}\b", t)]
     assert keys == []

@@ -81,7 +81,7 @@ def test_the_reconstruction_optimum_meets_every_limit():
 def test_margins_follow_the_design(article):
     """A faster positive part raises the concave ratio; a weaker spring lowers the reserve in proportion."""
     base = spring_reserve_value(article)
-    line = article.drive.lines["chosen"]
+    line = article.drive.lines.chosen
     half = spring_reserve_value(article, line.preload / 2, line.rate / 2)
     assert half == pytest.approx(base / 2, rel=1e-9)
     assert concave_radius(article, 170 * MM).value > concave_radius(article, 100 * MM).value
@@ -131,7 +131,7 @@ def test_the_contact_stress_is_the_worst_of_standstill_and_the_over_speed(articl
     at the nose (cam angle 0, the largest lift): sigma = 0.418 sqrt(P E / b (1/rho + 1/r_p)), with P the spring
     force at standstill (the valve decelerates at the nose: the inertia unloads the cam at speed) and rho from the
     pitch curve by central differences; the refined largest stress along the open event is at least that."""
-    width, line = 40 * MM, article.drive.lines["chosen"]
+    width, line = 40 * MM, article.drive.lines.chosen
     rho = pitch_radius_by_differences(article.law, article.cam.heel_radius, article.cam.roller_radius, -0.05,
                                       0.05)[1000] - article.cam.roller_radius          # the middle angle: 0
     force = line.force(article.cam.valve_lift(np.array([0.0])))[0]          # i_k = 1

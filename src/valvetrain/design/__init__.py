@@ -37,7 +37,7 @@ from .grinding import GrindingResult
 from .hydraulic_actuation import CylinderPressure, HydraulicResult
 from .lash_adjuster import LashAdjusterResult
 from .lubrication import LubricationResult
-from .results import json_schema, quantity, record
+from .results import json_schema, quantity, record, shown_value
 from .twostroke import TwoStrokeResults, TwoStrokeSummary, two_stroke_stage
 from .valve import (THROAT_AREA_SHARE_RANGE, CamResult, ClearanceResult, FlowResult, ProfileResult, ValveDesign,
                     clearance_stage, design_valve, flow_stage, law_stage, overlap_clearance_checks, profile_stage,
@@ -99,9 +99,10 @@ class DesignResults:
               "open failures, warnings, info")
 
     def __repr__(self):
-        e = record(self.engine)
-        lines = [f"DesignResults: {e['name']} ({e['cylinders']} cyl., {e['bore_mm']:g} x {e['stroke_mm']:g} mm, "
-                 f"{e['rated_speed_rpm']:g} rpm)", *("  " + line for line in verdict(tally(self.checks)))]
+        e = self.engine
+        bore, stroke, speed = (shown_value(e, k) for k in ("bore", "stroke", "rated_speed"))
+        lines = [f"DesignResults: {e.name} ({e.cylinders} cyl., {bore:g} x {stroke:g} mm, {speed:g} rpm)",
+                 *("  " + line for line in verdict(tally(self.checks)))]
         lines += ["  " + ", ".join(f"{h} {c}" for h, c in zip(self._HEADS, row, strict=True)) for row in self._rows()]
         if self.crank is not None:
             lines.append(f"  crank: mean torque {self.crank.figures.mean_torque:.4g} N m")
@@ -154,7 +155,7 @@ class DesignResults:
         return out
 
 
-def run(spec, laws=None, progress=None) -> DesignResults:
+def run(spec, laws=None, progress=None, headlines_only=False) -> DesignResults:
     """Run the whole design of a validated specification.
 
     Parameters
@@ -167,6 +168,11 @@ def run(spec, laws=None, progress=None) -> DesignResults:
         ``valve name -> LiftLaw``: enter those valves' designs with a law of the caller's own.
     progress : callable, optional
         ``progress(valve name, done, total)`` during the speed sweep of a valve's ``[dynamics]`` section.
+    headlines_only : bool
+        Each one-mass ``[dynamics]`` sweep simulates only the speeds that decide its jump speed, its largest seating
+        velocity and its largest cam force (:func:`valvetrain.dynamics.sweep.headline_sweep`), for a tolerance
+        study: its checks and headlines as the full sweep's (within the accuracy that function states), its
+        per-speed table sparse.
 
     Returns
     -------
@@ -194,7 +200,8 @@ def run(spec, laws=None, progress=None) -> DesignResults:
             waiting[name], valve = valve, replace(valve, hydraulic=None)   # opens against the cycle: after the crank
         try:
             tick = None if progress is None else (lambda done, total, name=name: progress(name, done, total))
-            valves[name] = design_valve(name, valve, engine, gas, output, (laws or {}).get(name), tick)
+            valves[name] = design_valve(name, valve, engine, gas, output, (laws or {}).get(name), tick,
+                                        headlines_only=headlines_only)
         except SpecError as err:
             problems += err.problems
     if problems:
@@ -207,7 +214,7 @@ def run(spec, laws=None, progress=None) -> DesignResults:
             raise SpecError([Problem("crank.pressure_file", str(exc))]) from None
     crank = crank_stage(crank_view, engine, valve_timing(valves)) if crank_view is not None else None
     if waiting:
-        cylinder = CylinderPressure(crank.phi, crank.columns["p_abs"], crank.pressure_source)
+        cylinder = CylinderPressure(crank.phi, crank.columns.p_abs, crank.pressure_source)
         for name, valve in waiting.items():
             valves[name] = with_hydraulic(valves[name], valve, engine, gas, cylinder)
     found = [c for v in valves.values() for c in v.checks] + overlap_clearance_checks(valves) + engine_checks(spec)

@@ -72,7 +72,8 @@ class CamshaftRecord:
     significant_orders: tuple[int, ...] = quantity("significant_orders", label="orders of at least "
                                                    "significant_order_share x the largest")
     natural_frequencies: tuple[float, ...] = quantity("natural_frequencies_Hz", "Hz", "lowest torsional natural "
-                                                      "frequencies, the drive end held")
+                                                      "frequencies, through the timing drive's stiffness (absent: "
+                                                      "the drive end held)")
     frequency_ratio: float = quantity("frequency_ratio", label="first natural frequency / highest significant order x "
                                       "omega_cam at the over-speed")
     resonance_speeds: tuple[float, ...] = quantity("resonance_speeds_rpm", "rpm", "engine speed at which each "
@@ -81,7 +82,8 @@ class CamshaftRecord:
     station_inertia: tuple[float, ...] = quantity("station_inertias_kg_mm2", "kg mm2", "inertia of each station: "
                                                   "lobes, reduced train, shaft")
     max_twist: tuple[float, ...] = quantity("max_twist_cam_deg", "cam deg", "largest lag of each station behind the "
-                                            "drive end at the rated speed")
+                                            "crankshaft at the rated speed: the shaft's twist and the timing "
+                                            "drive's stretch")
     twist_max: float = quantity("largest_twist_cam_deg", "cam deg", "largest lag of any station")
     twist_crank: float = quantity("largest_twist_crank_deg", "crank deg", "the same in crank degrees")
     deflection: tuple[float, ...] = quantity("deflection_mm", "mm", "bending deflection at each station under its "
@@ -92,6 +94,10 @@ class CamshaftRecord:
                                   "peak torque / pitch radius")
     drive_force_mean: float = quantity("drive_force_mean_N", "N", "mean tangential force")
     drive_allowable: float = quantity("drive_allowable_force_N", "N", "allowable force of the timing drive")
+    drive_windup: float = quantity("drive_windup_cam_deg", "cam deg", "largest lag of the drive end behind the "
+                                   "crankshaft, the drive's stretch under the torque (0: a rigid drive)")
+    drive_end_inertia: float = quantity("drive_end_inertia_kg_mm2", "kg mm2", "inertia at the drive end: the "
+                                        "sprocket, pulley or gear and its share of the shaft")
 
 
 @dataclass(frozen=True, repr=False)
@@ -180,11 +186,15 @@ def camshaft_stage(c, engine, valves, designs) -> CamshaftResults:
     lengths, diameters = np.asarray(c.section_lengths), np.asarray(c.section_diameters)
     bores = np.asarray(c.section_bores) if c.section_bores is not None else np.zeros_like(diameters)
     compliance = shaft.shaft_compliance(x, lengths, diameters, bores, c.shear_modulus)
-    lag = shaft.twist(compliance, stations)
+    drive_k = np.inf if c.drive_stiffness is None else \
+        shaft.drive_torsional_stiffness(c.drive_stiffness, c.drive_pitch_radius)
+    lag = shaft.twist(compliance + 1.0 / drive_k, stations)
     lobe_count = sum(s.count for s in lobes)
-    inertia = (lobe_count * c.lobe_inertia + sum(s.count * s.train_inertia for s in lobes)
-               + shaft.lumped_shaft_inertia(x, lengths, diameters, bores, c.density_kg_m3))
-    omega_n = shaft.torsional_frequencies(shaft.station_stiffness(compliance), inertia)
+    lumped = shaft.lumped_shaft_inertia(np.concatenate([[0.0], x]), lengths, diameters, bores, c.density_kg_m3)
+    inertia = lobe_count * c.lobe_inertia + sum(s.count * s.train_inertia for s in lobes) + lumped[1:]
+    sprocket = c.sprocket_inertia + lumped[0]
+    omega_n = shaft.torsional_frequencies(*shaft.with_drive_end(shaft.station_stiffness(compliance), inertia,
+                                                                drive_k, sprocket))
     top = max(significant)
     ratio_n = float(omega_n[0] / (top * cam_speed * engine.over_speed_ratio))
     section = shaft.section_at(x, lengths)
@@ -202,20 +212,30 @@ def camshaft_stage(c, engine, valves, designs) -> CamshaftResults:
         tuple(float(n) for n in shaft.resonance_speeds(omega_n[0], significant, ratio)), tuple(float(p) for p in x),
         tuple(float(i) for i in inertia), tuple(float(t) for t in np.max(np.abs(lag), axis=1)), twist_max,
         twist_max / ratio, tuple(float(f) for f in bend), float(bend.max()), c.drive, float(drive_force[0]),
-        float(drive_force[1]), c.drive_allowable_force_N)
+        float(drive_force[1]), c.drive_allowable_force_N, float(np.max(np.abs(total)) / drive_k), float(sprocket))
     return CamshaftResults(psi, total, lag, record_, tuple(camshaft_checks(record_, c, engine)))
 
 
 def camshaft_checks(r, c, engine) -> list[Check]:
     """The camshaft's checks: the timing error of the twist, the torsional resonance margin, the bending deflection
-    at the lobes and the timing drive's load."""
+    at the lobes and the timing drive's load.
+
+    Notes
+    -----
+    The limits of the twist (``max_twist_cam_deg``) and of the frequency ratio (``min_frequency_ratio``) are
+    engineering assumptions, keys with bounded defaults: no published camshaft limit was found.  The allowable of the
+    timing drive is the maker's (``drive_allowable_force_N``); for a roller chain the working load is commonly at most
+    1/6 of its tensile strength (Diamond Chain (n.d.)).
+    """
     over = to_display(engine.over_speed_ratio * engine.rated_speed, "rpm")
+    held = "the drive end held" if c.drive_stiffness is None else "through the timing drive's stiffness"
     return [
         check("camshaft.twist_timing_error", r.twist_max, high=c.max_twist, unit="cam deg", severity="warning",
-              source=f"{cite('shigley2011', 'chapter 3 (torsion)')}; camshaft.max_twist_cam_deg",
-              note=f"{to_display(r.twist_crank, 'crank deg'):.3g} crank deg; quasi-static, the drive end held"),
+              source=f"{cite('shigley2011', 'chapter 3 (torsion)')}; camshaft.max_twist_cam_deg (an engineering "
+                     "assumption)",
+              note=f"{to_display(r.twist_crank, 'crank deg'):.3g} crank deg; quasi-static, {held}"),
         check("camshaft.torsional_resonance", r.frequency_ratio, low=c.min_frequency_ratio, severity="warning",
-              source=f"{cite('denhartog1956')}; camshaft.min_frequency_ratio",
+              source=f"{cite('denhartog1956')}; camshaft.min_frequency_ratio (an engineering assumption)",
               note=f"first natural frequency {r.natural_frequencies[0]:.4g} Hz against order {max(r.significant_orders)} "
                    f"at the over-speed {over:.0f} rpm"),
         check("camshaft.bending_deflection", r.deflection_max, high=c.max_deflection, unit="mm", severity="failure",
@@ -223,6 +243,6 @@ def camshaft_checks(r, c, engine) -> list[Check]:
               note="each lobe alone on a simply supported span between its journals"),
         check("camshaft.timing_drive_force", r.drive_force, high=c.drive_allowable_force_N, unit="N",
               severity="failure", source="camshaft.drive_allowable_force_N (the maker's allowable of the "
-                                         f"{c.drive})",
+                                         f"{c.drive}{'; ' + cite('diamondchain') if c.drive == 'chain' else ''})",
               note=f"peak torque {r.peak:.4g} N m at the pitch radius {to_display(c.drive_pitch_radius, 'mm'):g} mm"),
     ]

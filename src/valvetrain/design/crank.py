@@ -96,12 +96,55 @@ class CrankSummary:
     work: WorkRecord = quantity("work", flatten=True, omit_none=True)
 
 
+@dataclass(frozen=True)
+class CrankColumns:
+    """Per-angle arrays of one cylinder over its cycle, each of the length of :attr:`CrankResults.phi` (SI; Power
+    units manual (n.d.), eqs. (1.2)-(2.21)).
+
+    Attributes
+    ----------
+    s, v, j : ndarray
+        Piston displacement from the TDC [m], velocity [m/s], acceleration [m/s^2].
+    beta : ndarray
+        Connecting-rod angle [rad].
+    p_abs : ndarray
+        Absolute cylinder pressure [Pa].
+    p_gas, p_j, p : ndarray
+        Gauge gas pressure p_g - p_0, specific inertia force, total specific force on the pin axis [Pa].
+    p_N, p_S, p_K, p_T : ndarray
+        Specific normal (side), rod, radial and tangential forces [Pa].
+    T : ndarray
+        Tangential force [N].
+    torque : ndarray
+        Torque of the cylinder, M = T R [N m].
+    pin_radial, pin_tangential : ndarray
+        Crank-pin load in the crank's frame: radial (K + the rod's centrifugal force) and tangential [N].
+    """
+
+    s: np.ndarray
+    v: np.ndarray
+    j: np.ndarray
+    beta: np.ndarray
+    p_abs: np.ndarray
+    p_gas: np.ndarray
+    p_j: np.ndarray
+    p: np.ndarray
+    p_N: np.ndarray
+    p_S: np.ndarray
+    p_K: np.ndarray
+    p_T: np.ndarray
+    T: np.ndarray
+    torque: np.ndarray
+    pin_radial: np.ndarray
+    pin_tangential: np.ndarray
+
+
 @dataclass(frozen=True, repr=False)
 class CrankResults:
     """The crank chapter: per-angle arrays of one cylinder, the engine torque and the summary (SI)."""
 
     phi: np.ndarray                 # cycle angle of one cylinder [rad]
-    columns: dict[str, np.ndarray]  # per-angle arrays of one cylinder (SI)
+    columns: CrankColumns           # per-angle arrays of one cylinder (SI)
     psi: np.ndarray                 # engine angle over one cycle [rad]
     cylinder_torques: np.ndarray    # (i, n) [N m]
     total_torque: np.ndarray        # (n,) [N m]
@@ -242,9 +285,10 @@ def crank_stage(c, eng, timing=None) -> CrankResults:
     masses = _masses(c, area, 2 if eng.layout == "v" else 1)
     forces = dynamics.cylinder_dynamics(phi, p_abs, c.ambient_pressure, bore, radius, lam, omega, masses, k, exact)
     beta = kinematics.rod_angle(phi, lam, k)
-    columns = {"s": kinematics.displacement(phi, radius, lam, k, exact),
-               "v": kinematics.velocity(phi, radius, lam, omega, k, exact),
-               "j": kinematics.acceleration(phi, radius, lam, omega, k, exact), "beta": beta, "p_abs": p_abs, **forces}
+    columns = CrankColumns(s=kinematics.displacement(phi, radius, lam, k, exact),
+                           v=kinematics.velocity(phi, radius, lam, omega, k, exact),
+                           j=kinematics.acceleration(phi, radius, lam, omega, k, exact), beta=beta, p_abs=p_abs,
+                           **forces)
 
     firing, firing_how = firing_angles(eng)
     each, total = torque.engine_torque(phi, (phi, forces["torque"]), firing, strokes)

@@ -306,6 +306,32 @@ class Worst:
 
 
 @dataclass(frozen=True)
+class SpringLines:
+    """The spring characteristics at the valve, P(y) = P_min + C y (:class:`valvetrain.springs.Characteristic`:
+    preload [N], rate [N/m], valve lift [m]; Valve-train practical works (n.d.), eqs. 5.6-5.9).
+
+    Attributes
+    ----------
+    required : Characteristic
+        The required line: the least spring force over the lift with the reserve K_z.
+    chosen : Characteristic
+        The designed spring, or the pair's sum.
+    outer, inner : Characteristic or None
+        Each spring of a nested pair (None for one spring).
+    """
+
+    required: springs.Characteristic
+    chosen: springs.Characteristic
+    outer: Optional[springs.Characteristic] = None
+    inner: Optional[springs.Characteristic] = None
+
+    def named(self) -> tuple[tuple[str, springs.Characteristic], ...]:
+        """``(name, line)`` of the lines there are, in drawing order: required, outer, inner, chosen."""
+        lines = (("required", self.required), ("outer", self.outer), ("inner", self.inner), ("chosen", self.chosen))
+        return tuple((name, line) for name, line in lines if line is not None)
+
+
+@dataclass(frozen=True)
 class DriveResult:
     """The drive stage of one valve: masses, springs, strength (SI), every check and the curves for the report."""
 
@@ -316,7 +342,7 @@ class DriveResult:
     lift: np.ndarray = field(repr=False)             # valve lift along the open event [m]
     inertia_force: np.ndarray = field(repr=False)    # m_v |j_v| where j_v < 0 [N]
     required_force: np.ndarray = field(repr=False)   # K_z m_v |j_v| [N]
-    lines: dict[str, springs.Characteristic] = field(repr=False)   # required, chosen, outer, inner
+    lines: SpringLines = field(repr=False)   # required, chosen and a pair's outer and inner spring lines
     diagnosis: Optional[springs.Diagnosis] = None   # why no spring passes, where none does
 
 
@@ -410,9 +436,6 @@ def drive_stage(valve, gas, cam) -> DriveResult:
         search = springs.design_springs(requirement, d_g, omega, options)
         line, designs, n_pass = search.line, search.designs, search.passing
         raised = line.preload <= requirement.min_preload * (1.0 + 1e-9) and requirement.min_preload > 0.0
-        lines = {"required": line}
-        if sp.count == 2:
-            lines.update(outer=designs["outer"].characteristic, inner=designs["inner"].characteristic)
         new_mass = sum(d.mass for d in designs.values())
         if drive.masses is None or drive.masses.spring_kg is not None or abs(new_mass - spring_total_mass) < 1e-7:
             break
@@ -422,7 +445,8 @@ def drive_stage(valve, gas, cam) -> DriveResult:
 
     chosen_line = springs.Characteristic(sum(d.characteristic.preload for d in designs.values()),
                                          sum(d.characteristic.rate for d in designs.values()), lift)
-    lines["chosen"] = chosen_line
+    lines = SpringLines(line, chosen_line, *((designs["outer"].characteristic, designs["inner"].characteristic)
+                                             if sp.count == 2 else ()))
     ratio = chosen_line.max_deflection / chosen_line.preload_deflection
     found.append(check("spring.reserve", drive.spring_reserve, *springs.SPRING_RESERVE_RANGE,
                        source="Valve-train practical works (n.d.), eq. (5.3)"))
@@ -466,17 +490,18 @@ def drive_stage(valve, gas, cam) -> DriveResult:
     return DriveResult(mass_result, spring_result, None, tuple(found), y, inertia, required, lines, diagnosis)
 
 
-def strength_speed_range(engine, dynamics=None) -> tuple[float, float, str]:
+def strength_speed_range(engine, swept=None) -> tuple[float, float, str]:
     """The engine speeds the strength is checked over [rad/s]: the lowest, the highest and where the lowest comes from.
 
     The highest is the over-speed, ``[engine] over_speed_ratio`` x the rated speed.  The lowest is ``[engine]
-    idle_speed_rpm``; without it the low end of the valve's ``[dynamics]`` speed range, else
-    :data:`IDLE_SPEED_RATIO` x the rated speed (the dynamics stage's default idle).  Never above the rated speed.
+    idle_speed_rpm``; without it the low end of ``swept``, the valve's ``[dynamics]`` speed range (low, high)
+    [rad/s], else :data:`IDLE_SPEED_RATIO` x the rated speed (the dynamics stage's default idle).  Never above the
+    rated speed.
     """
     if engine.idle_speed is not None:
         low, source = engine.idle_speed, LOWEST_SPEED_SOURCES[0]
-    elif dynamics is not None:
-        low, source = dynamics.speed_range[0], LOWEST_SPEED_SOURCES[1]
+    elif swept is not None:
+        low, source = swept[0], LOWEST_SPEED_SOURCES[1]
     else:
         low, source = IDLE_SPEED_RATIO * engine.rated_speed, LOWEST_SPEED_SOURCES[2]
     return min(low, engine.rated_speed), engine.over_speed_ratio * engine.rated_speed, source
@@ -535,7 +560,7 @@ def load_maps(valve, engine, cam, theta, spring_force, mass, dynamics=None) -> t
     speeds of the range it does not sweep; without it, the quasi-static force at :data:`STRENGTH_SPEEDS` speeds
     and the rated speed.
     """
-    low, high, source = strength_speed_range(engine, dynamics)
+    low, high, source = strength_speed_range(engine, None if dynamics is None else dynamics.speed_range)
     speeds = np.unique(np.append(np.linspace(low, high, STRENGTH_SPEEDS), engine.rated_speed))
     maps = []
     if dynamics is not None:
@@ -556,7 +581,7 @@ def event_load_maps(valve, engine, cam, drive, dynamics=None) -> tuple[np.ndarra
     law = cam.law
     theta = np.unique(np.concatenate([np.linspace(law.valve_opens, law.valve_closes, 2001), law.breakpoints]))
     theta = theta[(theta >= law.valve_opens) & (theta <= law.valve_closes)]
-    maps, span = load_maps(valve, engine, cam, theta, drive.lines["chosen"].force(cam.valve_lift(theta)),
+    maps, span = load_maps(valve, engine, cam, theta, drive.lines.chosen.force(cam.valve_lift(theta)),
                            drive.masses.at_valve, dynamics)
     return theta, maps, span
 

@@ -10,7 +10,7 @@ specification leaves out is estimated and the estimate stated in ``parameters.es
 Speeds in the results are engine (crank) speeds; the camshaft of a four-stroke turns at half.
 """
 
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field, fields, replace
 import math
 from typing import Optional, Union
 
@@ -18,18 +18,18 @@ import numpy as np
 
 from .. import lash_adjuster as hla
 from ..checks import Check, check
-from ..dynamics.models import (CoilSpring, MultiMassTrain, OneMassTrain, camshaft_stiffness, direct_train,
+from ..dynamics.models import (Adjuster, CoilSpring, MultiMassTrain, OneMassTrain, camshaft_stiffness, direct_train,
                                natural_modes, one_mass_train, pushrod_stiffness, pushrod_train, rocker_train, series)
 from ..dynamics.perturbation import perturbation_parameter
 from ..dynamics.resonance import resonance
-from ..dynamics.sweep import SpeedResult, SweepResult, sweep, sweep_size
+from ..dynamics.sweep import SpeedResult, SweepResult, headline_sweep, sweep, sweep_size
 from ..followers import follower_of
 from ..layouts import chain, layout
 from ..specification import SpecError
 from ..specification.messages import Problem
 from ..strength import cam_force
 from ..units import DEG, MM, cam_per_crank, rpm_to_rad_s, to_display
-from .results import quantity, record
+from .results import quantity, shown_value
 
 SOURCES = ("Shang Hanji (1988), ch. 3 (one-mass and multi-mass trains, jump, seating, bounce); Valve-train dynamics "
            "article (n.d.) (resonant harmonic and distortion)")
@@ -318,7 +318,7 @@ def adjuster_reference_force(valve, law, drive, cam_speed: float, ratio: float) 
     :func:`valvetrain.strength.cam_force` reduced from the valve."""
     theta = np.linspace(law.valve_opens, law.valve_closes, 2001)
     k = valve.rocker_ratio
-    spring = drive.lines["chosen"].force(k * law.lift(theta))
+    spring = drive.lines.chosen.force(k * law.lift(theta))
     force = cam_force(spring, drive.masses.at_valve * k * cam_speed**2 * law.derivatives(theta)[2], k)
     return float(force.max()) / k * ratio
 
@@ -353,16 +353,30 @@ def adjuster_load(valve, law, drive, cam_speed: float, at: str) -> tuple[float, 
     return ratio, force
 
 
-def adjuster_link(valve, law, drive, cam_speed: float, at: str) -> tuple[float, str]:
-    """The lash adjuster's oil column reduced to the valve [N/m] (in series with the cam contact) and the note that
-    says so: its secant stiffness under :func:`adjuster_reference_force` over the square of the motion ratio."""
+def adjuster_element(la, ratio: float) -> Adjuster:
+    """The kernels' :class:`~valvetrain.dynamics.models.Adjuster` of ``[lash_adjuster]`` (SI view ``la``) at the motion
+    ratio ``ratio``: its leak coefficient pi d c^3 / (12 mu L) [m^3/(s Pa)]
+    (:func:`valvetrain.lash_adjuster.annular_leakage` per pascal) and its largest extension velocity, the check valve's
+    flow under :func:`valvetrain.lash_adjuster.refill_pressure` over the plunger area [m/s]."""
+    area = hla.plunger_area(la.plunger_diameter)
+    leak = hla.annular_leakage(1.0, la.plunger_diameter, la.radial_clearance, la.leak_length, la.oil_viscosity)
+    refill = hla.check_valve_flow(hla.refill_pressure(la.supply_pressure, la.plunger_spring_N, area),
+                                  la.check_valve_diameter) / area
+    return Adjuster(float(ratio), float(la.plunger_spring_N), float(area), float(la.supply_pressure), float(leak),
+                    float(refill))
+
+
+def adjuster_link(valve, law, drive, cam_speed: float, at: str) -> tuple[float, str, Adjuster]:
+    """The lash adjuster's oil column reduced to the valve [N/m] (in series with the cam contact), the note that
+    says so (its secant stiffness under :func:`adjuster_reference_force` over the square of the motion ratio), and its
+    :func:`adjuster_element`, whose plunger extension the kernels carry from revolution to revolution."""
     la = valve.lash_adjuster
     ratio, force = adjuster_load(valve, law, drive, cam_speed, at)
     stiffness = hla.secant_stiffness(force, la.plunger_spring_N, hla.plunger_area(la.plunger_diameter),
                                      la.supply_pressure, la.chamber_volume, la.bulk_modulus, la.air_content)[0]
     at_valve = stiffness / ratio**2
     return at_valve, (f"lash adjuster: {at_valve / 1e3:.5g} N/mm at the valve in series with the cam contact (the oil "
-                      f"column's secant stiffness under {force:.4g} N)")
+                      f"column's secant stiffness under {force:.4g} N)"), adjuster_element(la, ratio)
 
 
 def build_train(dyn, valve, law, drive, at, cam_speed=None) -> tuple[Union[OneMassTrain, MultiMassTrain], DynamicsParameters]:
@@ -372,10 +386,11 @@ def build_train(dyn, valve, law, drive, at, cam_speed=None) -> tuple[Union[OneMa
     """
     k = valve.rocker_ratio
     lash = k * law.ramp_height
-    line = drive.lines["chosen"]
+    line = drive.lines.chosen
     links, names, notes = drive_links(dyn, valve, lever_ratio(valve, law), at)
+    element = None
     if valve.lash_adjuster is not None:
-        adjuster, note = adjuster_link(valve, law, drive, cam_speed, at)
+        adjuster, note, element = adjuster_link(valve, law, drive, cam_speed, at)
         links = (float(series(links[0], adjuster)),) + links[1:]
         notes.append(note)
     c = float(series(*links))
@@ -399,6 +414,7 @@ def build_train(dyn, valve, law, drive, at, cam_speed=None) -> tuple[Union[OneMa
         net = train.network()
         nodes = {n: float(m) for n, m in zip(net.names, net.mass, strict=True)}
         notes.extend(spring_notes)
+    train = replace(train, adjuster=element)
     params = DynamicsParameters(dyn.model, layout(valve), mass, c, dyn.damping_ratio, rate, preload, k, lash,
                                 dyn.seat_stiffness, dyn.seat_damping_ratio, dyn.revolutions, dyn.step,
                                 dyn.coils_per_spring, links, names, nodes, tuple(notes))
@@ -502,7 +518,8 @@ def rated_contact(r, law, heel_radius, follower, width, modulus) -> dict[str, fl
     return out
 
 
-def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, cam=None) -> tuple[DynamicsResult, list[Check]]:
+def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, cam=None,
+                   headlines_only=False) -> tuple[DynamicsResult, list[Check]]:
     """Sweep the elastic train of a valve over its speed range and simulate the rated speed.
 
     Parameters
@@ -520,6 +537,13 @@ def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, 
     cam : CamResult, optional
         The law stage (heel and roller radii): with it the rated speed has the dynamic contact stress, the
         lubrication characteristic and the drive torque.
+    headlines_only : bool
+        A one-mass train simulates only the speeds of the range that decide the jump speed, the largest seating
+        velocity and the largest cam force (:func:`~valvetrain.dynamics.sweep.headline_sweep`; a tolerance study's
+        samples): the per-speed table and the maps then have those speeds alone, and ``progress`` is not called.  A
+        multi-mass train is swept in full: with coil surge its separations and forces come and go from one speed to
+        the next (the built-in example's, 200 speeds: a first separation 20 % below the one the coarse grid finds, a
+        cam stress 7 % above the largest it finds).
 
     Returns
     -------
@@ -551,9 +575,17 @@ def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, 
                                  f"{MAX_SWEEP_WORK:.3g}) and {size / 1e6:.0f} MB of recorded revolutions (allowed "
                                  f"{MAX_SWEEP_BYTES / 1e6:.0f} MB); fewer speeds or revolutions or a larger step, or "
                                  "allow_large_sweep = true to run it")])
-    if progress is not None:
-        progress(0, dyn.speeds)
-    result = sweep(law, train, speeds * to_cam, dyn.revolutions, step_deg, progress=progress)
+    if headlines_only and dyn.model == "1dof":
+        from .drive import strength_speed_range   # the drive stage imports this module
+
+        loads = strength_speed_range(engine, (low, high))[:2]
+        result = headline_sweep(law, train, speeds * to_cam, dyn.revolutions, step_deg,
+                                load_range=tuple(s * to_cam for s in loads))
+        speeds = result.cam_speeds / to_cam
+    else:
+        if progress is not None:
+            progress(0, dyn.speeds)
+        result = sweep(law, train, speeds * to_cam, dyn.revolutions, step_deg, progress=progress)
     rated = sweep(law, train, [engine.rated_speed * to_cam], dyn.revolutions, step_deg).speed(0)
     m, c, kk = params.mass, params.drive_stiffness, params.spring_rate
     eps = perturbation_parameter(m, c, kk, speeds * to_cam)
@@ -641,24 +673,26 @@ def event_window(d, margin_deg: float = 10.0) -> np.ndarray:
 
 def sweep_columns(d) -> dict[str, np.ndarray]:
     """The per-speed table of a :class:`DynamicsResult` as named columns (engineering units)."""
-    rows = [record(r) for r in d.records]
+    records = d.records
+    keys = {f.name: f.metadata["key"] for f in fields(SpeedRecord) if "key" in f.metadata}
+
+    def column(name, empty=None):
+        """``(key, values)``: one field of every speed's record as results.json shows it (``empty`` for None)."""
+        return keys[name], [empty if v is None else v for v in (shown_value(r, name) for r in records)]
+
     to_cam = d.sweep.cam_speeds[0] / d.per_speed.speed[0]
-    out = {"speed_rpm": [r["speed_rpm"] for r in rows],
-           "camshaft_rpm": [s * to_cam / rpm_to_rad_s(1.0) for s in d.per_speed.speed]}
-    for key in ("epsilon", "min_contact_force_N", "max_contact_force_N", "seating_velocity_m_s", "bounce_mm",
-                "bounce_count"):
-        out[key] = [r[key] for r in rows]
-    out["jump"] = [int(bool(r["jump_intervals_cam_deg"])) for r in rows]
-    out["jump_from_cam_deg"] = [r["jump_intervals_cam_deg"][0][0] if r["jump_intervals_cam_deg"] else np.nan
-                                for r in rows]
-    out["jump_to_cam_deg"] = [r["jump_intervals_cam_deg"][-1][1] if r["jump_intervals_cam_deg"] else np.nan
-                              for r in rows]
-    out["max_lift_error_mm"] = [r["max_lift_error_mm"] for r in rows]
-    out["revolutions"] = [r["revolutions"] for r in rows]
+    out = dict([column("speed"), ("camshaft_rpm", [s * to_cam / rpm_to_rad_s(1.0) for s in d.per_speed.speed])])
+    out.update(column(name) for name in ("epsilon", "min_contact_force", "max_contact_force", "seating_velocity",
+                                         "bounce", "bounce_count"))
+    jumps = column("jump_intervals")[1]
+    out["jump"] = [int(bool(j)) for j in jumps]
+    out["jump_from_cam_deg"] = [j[0][0] if j else np.nan for j in jumps]
+    out["jump_to_cam_deg"] = [j[-1][1] if j else np.nan for j in jumps]
+    out.update(column(name) for name in ("max_lift_error", "revolutions"))
     if d.model == "multi" and d.parameters.coils_per_spring > 0:
-        out["max_surge_mm"] = [r.get("max_surge_mm", np.nan) for r in rows]
-    if any("coil_clash_margin_mm" in r for r in rows):
-        out["coil_clash_margin_mm"] = [r.get("coil_clash_margin_mm", np.nan) for r in rows]
+        out.update([column("max_surge", np.nan)])
+    if any(r.clash_margin is not None for r in records):
+        out.update([column("clash_margin", np.nan)])
     return out
 
 

@@ -30,7 +30,7 @@ from ..hydraulic_actuation import (Actuator, DriveResult, Fluid, HydraulicDrive,
                          speed_sweep)
 from ..units import DEG, MM, cam_per_crank, rpm_to_rad_s, to_display
 from .dynamics import SEATING_VELOCITY_MAX, finite_or_none
-from .results import quantity, record
+from .results import quantity, shown, shown_value
 
 SOURCES = ("Shang Hanji (1988), ch. 7 (hydraulic valve actuation); Wylie and Streeter (1978) (wave speed, "
            "method of characteristics)")
@@ -429,11 +429,12 @@ SWEEP_COLUMNS = [
 def sweep_columns(result) -> dict[str, Any]:
     """The per-speed table of a :class:`HydraulicResult` in the units of :data:`SWEEP_COLUMNS` (None: an empty
     cell)."""
-    rec = record(result.per_speed)
-    out = {"speed_rpm": rec["speed_rpm"], "camshaft_rpm": (result.sweep.cam_speed / rpm_to_rad_s(1.0)).tolist()}
-    out.update((key, rec[key]) for key, _ in SWEEP_COLUMNS[2:])
-    out["cavitation"] = [int(c) for c in rec["cavitation"]]
-    out["stop_reached"] = [int(c) for c in rec["stop_reached"]]
+    p = result.per_speed
+    out = {"speed_rpm": shown_value(p, "speed"), "camshaft_rpm": (result.sweep.cam_speed / rpm_to_rad_s(1.0)).tolist()}
+    out.update(shown(p, "max_pressure", "valve_lift", "lift_loss", "opening_delay", "closing_delay"))
+    out["cavitation"] = [int(c) for c in p.cavitation]
+    out.update(shown(p, "seating_velocity", "bounce", "residual_lift"))
+    out["stop_reached"] = [int(c) for c in p.stop_reached]
     return out
 
 

@@ -1,5 +1,6 @@
-"""The lash-adjuster stage: the stiffness the oil column adds to the drive, the leak-down per camshaft revolution and
-its refill on the base circle over the speed range, and the pump-up of a float with the valve it holds off its seat
+"""The lash-adjuster stage: the stiffness the oil column adds to the drive, and over the speed range the leak-down per
+camshaft revolution and its refill on the base circle, the pump-up of the plunger while the valve is off its seat and
+the valve it holds off its seat, from the plunger extension the dynamics carries from revolution to revolution
 (Merritt (1967))."""
 
 from dataclasses import dataclass
@@ -10,12 +11,18 @@ import numpy as np
 from .. import lash_adjuster as hla
 from ..bibliography import cite
 from ..checks import Check, check
+from ..dynamics.sweep import lift_event
 from .drive import event_load_maps
-from .dynamics import adjuster_load
+from .dynamics import adjuster_element, adjuster_load
 from .results import quantity
 
 SOURCES = cite("merritt1967")
 """The work of the chapter, for the report."""
+
+PUMP_UP_TOLERANCE = 0.1e-6
+"""Plunger extension gained over a camshaft revolution while the valve is off its seat that counts as pump-up [m, at
+the adjuster]: a tenth of the dynamics' 1 um lift accuracy (:mod:`valvetrain.dynamics.kernels`); in a train that does
+not float the plunger only sinks while the valve is open, by leakage."""
 
 
 @dataclass(frozen=True)
@@ -23,15 +30,21 @@ class LashAdjusterPerSpeed:
     """The lash adjuster at each engine speed of the strength checks (SI)."""
 
     speed: tuple[float, ...] = quantity("speed_rpm", "rpm", "engine speed")
-    load: tuple[str, ...] = quantity("load", label="the cam force at that speed: quasi-static or dynamic")
+    load: tuple[str, ...] = quantity("load", label="the cam force at that speed: quasi-static or dynamic (the "
+                                     "plunger's motion simulated with the train)")
     leak_down: tuple[float, ...] = quantity("leak_down_um", "um", "plunger sink by leakage over one revolution")
     valve_lash: tuple[float, ...] = quantity("valve_lash_um", "um", "the lash it leaves at the valve at closing")
     refill_share: tuple[float, ...] = quantity("refill_share", label="time to refill it through the check valve / "
                                                "time on the base circle")
-    pump_up: tuple[Optional[float], ...] = quantity("pump_up_um", "um", "plunger extension kept after a float "
-                                                    "(null: no simulated force at that speed)")
-    held_open: tuple[Optional[float], ...] = quantity("held_open_um", "um", "valve lift it holds at the next opening "
-                                                      "(null: no simulated force at that speed)")
+    stiffness_at_valve: tuple[Optional[float], ...] = quantity(
+        "oil_stiffness_at_valve_N_per_mm", "N/mm", "secant stiffness of the oil column under the largest force at that "
+        "speed, reduced to the valve (null: the force does not exceed the plunger's push)")
+    pump_up: tuple[Optional[float], ...] = quantity("pump_up_um", "um", "plunger extension gained over one "
+                                                    "revolution while the valve is off its seat (null: no simulated "
+                                                    "motion at that speed)")
+    held_open: tuple[Optional[float], ...] = quantity("held_open_um", "um", "smallest valve lift on the base circle: "
+                                                      "the valve held off its seat (null: no simulated motion at "
+                                                      "that speed)")
 
 
 @dataclass(frozen=True)
@@ -52,23 +65,66 @@ class LashAdjusterResult:
     rated_leak_down: float = quantity("rated_leak_down_um", "um", "leak-down per revolution at the rated speed")
     rated_valve_lash: float = quantity("rated_valve_lash_um", "um", "lash at the valve at closing, rated speed")
     max_refill_share: float = quantity("max_refill_share", label="largest refill time / base-circle time")
-    max_pump_up: Optional[float] = quantity("max_pump_up_um", "um", "largest pump-up of a float up to the over-speed",
-                                            omit_none=True)
-    max_held_open: Optional[float] = quantity("max_held_open_um", "um", "largest valve lift held on the base circle "
-                                              "after a float, up to the over-speed", omit_none=True)
+    max_pump_up: Optional[float] = quantity("max_pump_up_um", "um", "largest pump-up per revolution up to the "
+                                            "over-speed", omit_none=True)
+    max_held_open: Optional[float] = quantity("max_held_open_um", "um", "largest valve lift held on the base circle, "
+                                              "up to the over-speed", omit_none=True)
     per_speed: LashAdjusterPerSpeed = quantity("per_speed", label="the lash adjuster at each speed")
 
 
-def _leak_rate(la, force, area) -> np.ndarray:
-    """Plunger sink velocity [m/s] under ``force`` on the adjuster [N]."""
-    pressure = (force - la.plunger_spring_N) / area - la.supply_pressure
-    return hla.annular_leakage(pressure, la.plunger_diameter, la.radial_clearance, la.leak_length,
-                               la.oil_viscosity) / area
+def _stiffness_at_valve(la, force, ratio, area) -> Optional[float]:
+    """Secant stiffness of the oil column under ``force`` on the adjuster [N], reduced to the valve [N/m]; None where
+    the force does not compress it (no more than the plunger's push)."""
+    stiffness = hla.secant_stiffness(force, la.plunger_spring_N, area, la.supply_pressure, la.chamber_volume,
+                                     la.bulk_modulus, la.air_content)[0]
+    return float(stiffness / ratio**2) if np.isfinite(stiffness) else None
+
+
+def plunger_motion(extension, lift, event, base) -> tuple[float, float, float]:
+    """Leak-down, pump-up [m, at the adjuster] and the valve held off its seat [m] over one simulated revolution.
+
+    Parameters
+    ----------
+    extension : ndarray (n,)
+        Plunger extension over the revolution, in time order [m, at the adjuster]
+        (:attr:`valvetrain.dynamics.sweep.SpeedResult.adjuster_extension`).
+    lift : ndarray (n,)
+        Valve lift at the same instants [m] (> 0: off its seat).
+    event : ndarray (n,) of bool
+        The cam's lift event up to the valve's first return to its seat
+        (:func:`valvetrain.dynamics.sweep.lift_event`).
+    base : ndarray (n,) of bool
+        The cam's base circle (no cam lift).
+
+    Returns
+    -------
+    (leak_down, pump_up, held_open)
+        The plunger's sink summed over the revolution; its extension gained while the valve is off its seat in the
+        lift event (the check valve opens only where the follower's force falls to the adjuster's own push, which a
+        valve carried by the cam never lets it: the follower floats; after the valve's first return the plunger
+        refills its leak-down, also while the valve bounces); the smallest valve lift on the base circle (0: the valve
+        seats).
+
+    Examples
+    --------
+    The plunger sinks 2 um with the valve open, extends 3 um while it floats, and refills 1 um after the valve's
+    return, in a bounce:
+
+    >>> z = np.array([5.0, 4.0, 3.0, 6.0, 6.0, 7.0, 7.0]) * 1e-6
+    >>> y = np.array([0.0, 1.0, 2.0, 1.0, -1e-3, 2e-3, -1e-3]) * 1e-3
+    >>> event = np.array([0, 1, 1, 1, 0, 0, 0], dtype=bool)
+    >>> [round(v * 1e6, 9) for v in plunger_motion(z, y, event, np.array([1, 0, 0, 0, 0, 0, 1], dtype=bool))]
+    [2.0, 3.0, 0.0]
+    """
+    step = np.diff(extension)
+    floating = event[1:] & (lift[1:] > 0.0)
+    return (float(-step[step < 0.0].sum()), float(step[(step > 0.0) & floating].sum()),
+            max(float(lift[base].min()), 0.0))
 
 
 def lash_adjuster_stage(la, valve, engine, cam, drive, dynamics=None,
                         name="valve") -> tuple[LashAdjusterResult, list[Check]]:
-    """The lash adjuster over the speed range (leak-down, refill, pump-up), with its checks.
+    """The lash adjuster over the speed range (leak-down, refill, stiffness, pump-up), with its checks.
 
     Parameters
     ----------
@@ -77,7 +133,7 @@ def lash_adjuster_stage(la, valve, engine, cam, drive, dynamics=None,
     cam : CamResult
     drive : DriveResult
     dynamics : DynamicsResult, optional
-        Its simulated motion gives the floats that pump the adjuster up (none evaluated without it).
+        Its simulated motion, the plunger's extension a state of it (none evaluated without it).
     name : str
         The valve's name (the messages' keys).
 
@@ -88,34 +144,43 @@ def lash_adjuster_stage(la, valve, engine, cam, drive, dynamics=None,
     Notes
     -----
     The oil column enters the dynamics as its secant stiffness in series with the drive
-    (:func:`valvetrain.design.dynamics.adjuster_link`); the
-    hydraulic state changes too slowly to matter within a revolution and is followed from one revolution to the
-    next: the leak-down under the force on the adjuster (:func:`valvetrain.lash_adjuster.annular_leakage`), the
-    time to refill it on the base circle through the check valve, and for a float of the simulated motion the
-    extension the plunger keeps (:func:`valvetrain.lash_adjuster.pump_up`) less the leak-down under the valve
-    spring's preload over one base circle: what remains holds the valve off its seat.
+    (:func:`valvetrain.design.dynamics.adjuster_link`) and its plunger as a state of the integration
+    (:func:`valvetrain.design.dynamics.adjuster_element`): it leaks down through the annular clearance under the
+    force it carries (:func:`valvetrain.lash_adjuster.annular_leakage`) and refills through the check valve where
+    that force falls to its own push.  At the simulated speeds the leak-down, the pump-up and the valve held off its
+    seat are read from that state (:func:`plunger_motion`); at a speed of the strength range the dynamics does not
+    sweep, the leak-down is the laminar leakage integrated over the quasi-static force.  The time to refill the
+    leak-down through the check valve is compared with the time on the base circle.
     """
     at = f"valves.{name}"
     law, k = cam.law, valve.rocker_ratio
     ratio, ref = adjuster_load(valve, law, drive, cam.cam_speed, at)
-    area = hla.plunger_area(la.plunger_diameter)
-    refill = hla.check_valve_flow(hla.refill_pressure(la.supply_pressure, la.plunger_spring_N, area),
-                                  la.check_valve_diameter) / area
+    element = adjuster_element(la, ratio)
+    area = element.area
     stiffness, sink, pressure = hla.secant_stiffness(ref, la.plunger_spring_N, area, la.supply_pressure,
                                                      la.chamber_volume, la.bulk_modulus, la.air_content)
     _, maps, (low, high, _) = event_load_maps(valve, engine, cam, drive, dynamics)
     to_cam = cam.cam_speed / engine.rated_speed
     base = 2.0 * np.pi - (law.valve_closes - law.valve_opens)
-    pumped = _pump_up(la, dynamics, ratio, refill, area, drive.lines["chosen"].preload, base, low, high)
     rows = []
+    for speed, r in _motions(dynamics, low, high):
+        leak, pump, held = plunger_motion(r.adjuster_extension, r.lift, lift_event(r.kinematic_lift, r.lift),
+                                          law.lift(r.theta) <= 0.0)
+        force = float(r.contact_force.max()) / k * ratio
+        rows.append((speed, "dynamic", leak, force, pump, held))
     for m in maps:
+        if m.kind == "dynamic":
+            continue
         step = np.gradient(m.theta)
         for i, speed in enumerate(m.speeds):
-            omega = speed * to_cam
-            leak = float(np.sum(_leak_rate(la, np.clip(m.force[i], 0.0, None) / k * ratio, area) * step) / omega)
-            pump = pumped.get(float(speed), (None, None)) if m.kind == "dynamic" else (None, None)
-            rows.append((float(speed), m.kind, leak, leak * ratio, leak / refill / (base / omega), *pump))
-    rows.sort(key=lambda row: row[0])
+            force = np.clip(m.force[i], 0.0, None) / k * ratio
+            pressure_drop = np.clip((force - la.plunger_spring_N) / area - la.supply_pressure, 0.0, None)
+            sinking = element.leak * pressure_drop / area
+            rows.append((float(speed), m.kind, float(np.sum(sinking * step)) / (speed * to_cam), float(force.max()),
+                         None, None))
+    rows = [(speed, kind, leak, leak * ratio, leak / element.refill / (base / (speed * to_cam)),
+             _stiffness_at_valve(la, force, ratio, area), pump, held)
+            for speed, kind, leak, force, pump, held in sorted(rows, key=lambda row: row[0])]
     per = LashAdjusterPerSpeed(*(tuple(col) for col in zip(*rows, strict=True)))
     rated = int(np.argmin(np.abs(np.asarray(per.speed) - engine.rated_speed)))
     pumps = [p for p in per.pump_up if p is not None]
@@ -130,29 +195,21 @@ def lash_adjuster_stage(la, valve, engine, cam, drive, dynamics=None,
                    high=1.0, source=f"{cite('merritt1967')}: annular leakage and the check valve's orifice flow; "
                    f"{where}", note="largest over the speeds up to the over-speed")]
     if pumps:
-        found.append(check("lash_adjuster.pump_up", result.max_pump_up,
-                           high=0.0, unit="um", source=f"{cite('merritt1967')}: the check valve's orifice flow; {where}"))
+        found.append(check("lash_adjuster.pump_up", result.max_pump_up, high=PUMP_UP_TOLERANCE, unit="um",
+                           severity="failure", source=f"{cite('merritt1967')}: the plunger's extension simulated with "
+                           f"the train up to [engine] over_speed_ratio x the rated speed; {where}"))
         found.append(check("lash_adjuster.held_open",
                            result.max_held_open, high=0.0, unit="um", severity="failure",
-                           source=f"{cite('merritt1967')}: leak-down under the valve spring's preload over one base "
-                                  f"circle; {where}"))
+                           source=f"{cite('merritt1967')}: the valve's lift on the base circle simulated with the "
+                                  f"plunger's extension; {where}"))
     return result, found
 
 
-def _pump_up(la, dynamics, ratio, refill, area, preload, base, low,
-             high) -> dict[float, tuple[float, float]]:
-    """Pump-up [m] and valve held open [m] at each simulated speed in [low, high] [rad/s]: {speed: (pump, held)}."""
+def _motions(dynamics, low, high) -> list:
+    """The simulated motions at the engine speeds in [low, high] [rad/s]: (speed, SpeedResult), the sweep's and the
+    rated speed's (none without the dynamics)."""
     if dynamics is None:
-        return {}
+        return []
     motions = [(float(s), dynamics.sweep.speed(i)) for i, s in enumerate(dynamics.per_speed.speed)]
     motions.append((float(dynamics.at_rated_speed.speed), dynamics.rated))
-    out = {}
-    for speed, r in motions:
-        if not low * (1.0 - 1e-12) <= speed <= high * (1.0 + 1e-12):
-            continue
-        gap = np.where(r.separation, np.clip(r.lift - r.kinematic_lift, 0.0, None), 0.0) / ratio
-        dt = float(r.theta[1] - r.theta[0]) / r.cam_speed
-        pump = hla.pump_up(gap, dt, refill)
-        relief = float(_leak_rate(la, preload * ratio, area)) * base / r.cam_speed
-        out[speed] = (pump, max(pump - relief, 0.0) * ratio)
-    return out
+    return [(s, r) for s, r in motions if low * (1.0 - 1e-12) <= s <= high * (1.0 + 1e-12)]

@@ -58,14 +58,29 @@ class TwoStrokeSummary:
     speed_range: tuple[float, float] = quantity("speed_range_rpm", "rpm", "speeds of Z(n)")
 
 
+@dataclass(frozen=True)
+class PortCurves:
+    """The curves of one port (SI; Valve-train practical works (n.d.), eqs. 8.1-8.6).
+
+    Attributes
+    ----------
+    area : ndarray
+        Open area of the port at each crank angle of :attr:`TwoStrokeResults.phi` [m^2].
+    time_area : ndarray
+        Time-area Z = K1 K2 / n at each crank speed of :attr:`TwoStrokeResults.speeds` [m^2 s].
+    """
+
+    area: np.ndarray
+    time_area: np.ndarray
+
+
 @dataclass(frozen=True, repr=False)
 class TwoStrokeResults:
     """Port areas over a revolution, the time-area against speed, and the summary (SI)."""
 
     phi: np.ndarray                  # crank angle from TDC [rad]
-    areas: dict[str, np.ndarray]     # port name -> area [m^2]
     speeds: np.ndarray               # [rad/s]
-    time_areas: dict[str, np.ndarray]  # port name -> Z(n) [m^2 s]
+    curves: dict[str, PortCurves]    # port name -> its area and time-area curves
     figures: TwoStrokeSummary
     checks: tuple[Check, ...]        # every check of the chapter
 
@@ -75,7 +90,7 @@ class TwoStrokeResults:
         return record(self.figures)
 
     def __repr__(self):
-        return f"TwoStrokeResults(ports {', '.join(self.areas)}, {len(self.checks)} checks)"
+        return f"TwoStrokeResults(ports {', '.join(self.curves)}, {len(self.checks)} checks)"
 
 
 def _skirt_opening(lower, piston_height, radius, lam, exact):
@@ -101,7 +116,7 @@ def two_stroke_stage(ts, crank, eng) -> TwoStrokeResults:
     phi = np.arange(n + 1) * ts.step
     low, high = ts.speed_range or (0.4 * speed, 1.2 * speed)
     speeds = np.linspace(low, high, 21)
-    areas, curves, ports, found = {}, {}, {}, []
+    curves, ports, found = {}, {}, []
     for name, port in ts.ports.items():
         if port.kind == "inlet":
             area = twostroke.skirt_port_area(phi, port.lower_edge, port.height, ts.piston_height, port.width,
@@ -128,7 +143,7 @@ def two_stroke_stage(ts, crank, eng) -> TwoStrokeResults:
                                params={"port": name}))
             found.append(check("ports.width_to_bore", port.width / bore, w_lo, w_hi,
                                source="Valve-train practical works (n.d.), Table 8.1", params={"port": name}))
-        areas[name], ports[name] = area, rec
-        curves[name] = z * speed / speeds                       # Z = K / n (8.6)
+        ports[name] = rec
+        curves[name] = PortCurves(area, z * speed / speeds)    # Z = K / n (8.6)
     figures = TwoStrokeSummary(speed, lam, ts.kinematics, ports, (float(low), float(high)))
-    return TwoStrokeResults(phi, areas, speeds, curves, figures, tuple(found))
+    return TwoStrokeResults(phi, speeds, curves, figures, tuple(found))

@@ -704,7 +704,8 @@ class ValveDesign:
                 "open failures {failure}, warnings {warning}, info {info} of {checks} checks)".format(**tally(self.checks)))
 
 
-def design_valve(name, valve, engine, gas, output, law=None, progress=None, cylinder=None) -> ValveDesign:
+def design_valve(name, valve, engine, gas, output, law=None, progress=None, cylinder=None,
+                 headlines_only=False) -> ValveDesign:
     """All stages of one valve and its drive (masses, springs, strength).
 
     Parameters
@@ -718,6 +719,8 @@ def design_valve(name, valve, engine, gas, output, law=None, progress=None, cyli
         ``progress(done, total)`` during the speed sweep of a ``[dynamics]`` section.
     cylinder : valvetrain.design.hydraulic_actuation.CylinderPressure, optional
         The engine's cycle, whose pressure on the valve head a ``[hydraulic]`` section's valve opens against.
+    headlines_only : bool
+        The ``[dynamics]`` sweep simulates only the speeds that decide its headlines (``dynamics_stage``).
 
     Returns
     -------
@@ -752,7 +755,8 @@ def design_valve(name, valve, engine, gas, output, law=None, progress=None, cyli
         found.append(clearance_check(valve.kind, clearance.min_gap, clearance.angle))
     dynamics = None
     if valve.dynamics is not None:
-        dynamics, dynamics_found = dynamics_stage(valve.dynamics, valve, engine, cam.law, drive, name, progress, cam)
+        dynamics, dynamics_found = dynamics_stage(valve.dynamics, valve, engine, cam.law, drive, name, progress, cam,
+                                                   headlines_only)
         found += dynamics_found
     strength_result, strength_found = strength_stage(valve, gas, engine, cam, drive, dynamics)
     drive = replace(drive, strength=strength_result, checks=drive.checks + tuple(strength_found))

@@ -23,7 +23,7 @@ Events (Shang Hanji (1988), sections 3.1-3.2):
 """
 
 from concurrent.futures import ThreadPoolExecutor
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 import sys
 from typing import Optional
 
@@ -123,6 +123,8 @@ class SpeedResult:
         Camshaft revolutions after which the motion repeated (the cap if it did not).
     converged : bool
         The motion repeated before the cap (:data:`STATE_TOLERANCE`).
+    adjuster_extension : ndarray (n,) or None
+        Plunger extension of the train's hydraulic lash adjuster [m, at the adjuster] (zeros without one).
     """
 
     cam_speed: float
@@ -145,6 +147,7 @@ class SpeedResult:
     min_contact_force: float = np.nan
     revolutions: int = 1
     converged: bool = True
+    adjuster_extension: Optional[np.ndarray] = None
 
     @property
     def lift_error(self):
@@ -279,7 +282,8 @@ def lowest_lifting_force(contact, kinematic, lift, separated) -> float:
 
 
 def speed_result(cam_speed, theta, lift, velocity, kinematic, contact, seat, spring, slope, surge, clash,
-                 bounce_tolerance=BOUNCE_TOLERANCE, acceleration=None, revolutions=1, converged=True) -> SpeedResult:
+                 bounce_tolerance=BOUNCE_TOLERANCE, acceleration=None, revolutions=1, converged=True,
+                 adjuster_extension=None) -> SpeedResult:
     """Events of one speed from its recorded revolution (see the module docstring for the definitions)."""
     step_time = float(theta[1] - theta[0]) / cam_speed
     i_seat, seat_angle, seat_velocity = seating(theta, lift, velocity, acceleration, step_time)
@@ -292,7 +296,7 @@ def speed_result(cam_speed, theta, lift, velocity, kinematic, contact, seat, spr
     return SpeedResult(float(cam_speed), theta, lift, velocity, kinematic, contact, seat, spring, contact * slope,
                        separation, jumps, seat_angle, seat_velocity, height, count, surge, clash,
                        lowest_lifting_force(contact, kinematic, lift, intervals.size > 0),
-                       int(revolutions), bool(converged))
+                       int(revolutions), bool(converged), adjuster_extension)
 
 
 def zero_crossing(speeds, values, hit) -> float:
@@ -412,7 +416,8 @@ class SweepResult:
         return speed_result(self.cam_speeds[i], self.theta, self.lift[i], self.velocity[i], self.kinematic_lift,
                             self.contact_force[i], self.seat_force[i], self.spring_force[i], self.slope,
                             self.surge_amplitude[i], float(self.clash_margin[i]), self.bounce_tolerance,
-                            self.acceleration[i], self.revolutions[i], self.converged[i])
+                            self.acceleration[i], self.revolutions[i], self.converged[i],
+                            None if self.adjuster_extension is None else self.adjuster_extension[i])
 
     def per_speed(self):
         """Every :class:`SpeedResult` of the sweep."""
@@ -583,6 +588,104 @@ def sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, progress=None, bo
                        net.rocker_ratio * out_f[:, 0], out_f[:, 1], -out_f[:, 2:].sum(axis=1),
                        du[::per_step] / net.rocker_ratio, out_surge[:, coils], out_clash.min(axis=1), n_sub,
                        np.where(out_revs > 0, out_revs, int(revolutions)), out_revs > 0, bounce_tolerance, out_z)
+
+
+HEADLINE_STRIDE = 10
+"""Every how many speeds of a sweep :func:`headline_sweep` simulates first (the coarse grid)."""
+
+PER_SPEED_FIELDS = ("cam_speeds", "lift", "velocity", "acceleration", "contact_force", "seat_force", "spring_force",
+                    "surge_amplitude", "clash_margin", "substeps", "revolutions", "converged", "adjuster_extension")
+"""The fields of a :class:`SweepResult` with one row per speed."""
+
+
+def merged(parts) -> SweepResult:
+    """One :class:`SweepResult` of the speeds of several sweeps of the same train on the same law, by ascending speed.
+
+    Each speed of a sweep is an independent problem integrated on the same excitation samples (:mod:`.kernels`), so a
+    speed's rows do not depend on the sweep it was simulated in, but for the revolutions it runs: a block of speeds
+    runs until all of them repeat, so its last revolution may differ by up to :data:`STATE_TOLERANCE`."""
+    if len(parts) == 1:
+        return parts[0]
+    rank = np.argsort(np.argsort(np.concatenate([p.cam_speeds for p in parts]), kind="stable"))
+    at = np.split(rank, np.cumsum([p.cam_speeds.size for p in parts])[:-1])
+
+    def joined(name):
+        first = getattr(parts[0], name)
+        out = np.empty((rank.size, *first.shape[1:]), dtype=first.dtype)
+        for p, where in zip(parts, at, strict=True):
+            out[where] = getattr(p, name)
+        return out
+
+    return replace(parts[0], **{f: joined(f) for f in PER_SPEED_FIELDS})
+
+
+def seating_events(result) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Per speed of a :class:`SweepResult`: whether the follower separates, the smallest contact force while the cam
+    lifts [N] (:func:`lowest_lifting_force`) and |dy/dt| at the first seating [m/s] (nan: no seating); the events of
+    :func:`speed_result` that decide the sweep's jump speed and its largest seating velocity."""
+    step = float(result.theta[1] - result.theta[0])
+    kinematic = result.kinematic_lift
+    jumped = np.array([separation_mask(c, kinematic, y).any()
+                       for c, y in zip(result.contact_force, result.lift, strict=True)])
+    force = np.array([lowest_lifting_force(c, kinematic, y, j)
+                      for c, y, j in zip(result.contact_force, result.lift, jumped, strict=True)])
+    seat = np.array([abs(seating(result.theta, y, v, a, step / w)[2]) for w, y, v, a in
+                     zip(result.cam_speeds, result.lift, result.velocity, result.acceleration, strict=True)])
+    return jumped, force, seat
+
+
+def headline_sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, bounce_tolerance=BOUNCE_TOLERANCE,
+                   load_range=(0.0, np.inf), stride=HEADLINE_STRIDE) -> SweepResult:
+    """The speeds of a sweep that decide its jump speed, its largest seating velocity and its largest loads, without
+    the others.
+
+    Parameters are those of :func:`sweep`; ``load_range`` is the speed range [rad/s camshaft] whose cam force loads
+    the parts (the strength stage's), ``stride`` spaces the coarse grid.  The result holds the speeds simulated, a
+    subset of ``cam_speeds``, by ascending speed.
+
+    Notes
+    -----
+    Simulated, in two sweeps:
+
+    1. the coarse grid: every ``stride``-th speed, the lowest and the highest, and the first and the last speed
+       inside ``load_range``;
+    2. the speeds between the last coarse speed without a separation and the first with one, and the two below
+       them: the first speed of the full grid with a separation and the speeds :func:`zero_crossing` fits below it;
+       the same below the first coarse speed whose contact force falls to zero while the cam lifts (a separation
+       that comes and goes with the speed starts near it); the speeds within ``stride`` of the coarse speed with the
+       largest seating velocity, and of the coarse speed inside ``load_range`` with the largest contact force.
+
+    So :meth:`SweepResult.headline` gives the full sweep's jump speed unless a separation starts and ends between two
+    coarse speeds below the first coarse speed that separates or loses its contact force; the largest seating
+    velocity and the largest contact force (in ``load_range``) are the full sweep's where they lie within ``stride``
+    speeds of the coarse grid's largest (or at an end of ``load_range``).  The sweep's other headlines (the bounce
+    onset, the coil clash) and its maps have the simulated speeds only.
+    """
+    speeds = np.atleast_1d(np.asarray(cam_speeds, dtype=float))
+    n = speeds.size
+    done = np.zeros(n, dtype=bool)
+    parts = []
+    inside = (speeds >= load_range[0] * (1.0 - 1e-12)) & (speeds <= load_range[1] * (1.0 + 1e-12))
+
+    def simulated(indices):
+        idx = np.unique(np.clip(np.asarray(indices, dtype=np.int64), 0, n - 1))
+        idx = idx[~done[idx]]
+        if idx.size:
+            parts.append(sweep(law, train, speeds[idx], revolutions, step_deg, bounce_tolerance=bounce_tolerance))
+            done[idx] = True
+        return np.flatnonzero(done), merged(parts)
+
+    ends = np.flatnonzero(inside)[[0, -1]] if inside.any() else []
+    index, result = simulated(np.concatenate([np.arange(0, n, stride), [n - 1], ends]))
+    jumped, force, seat = seating_events(result)
+    more = [np.arange(c - stride + 1, c + stride) for c in (
+        index[np.nanargmax(seat)] if np.isfinite(seat).any() else None,
+        index[inside[index]][np.argmax(result.contact_force[inside[index]].max(axis=1))] if inside.any() else None)
+        if c is not None]
+    for hit in (jumped, jumped | (force <= 0.0)):
+        if hit.any() and hit.argmax() > 0:
+            more.append(np.arange(index[hit.argmax() - 1] - 2, index[hit.argmax()]))
+    return simulated(np.concatenate(more or [[]]))[1]
 
 
 def simulate(law, train, cam_speed, revolutions=3, step_deg=0.1, bounce_tolerance=BOUNCE_TOLERANCE) -> SpeedResult:

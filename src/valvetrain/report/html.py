@@ -2,7 +2,7 @@
 
 import base64
 from collections.abc import Callable
-from dataclasses import fields
+from dataclasses import fields, is_dataclass
 from html import unescape
 
 import re
@@ -20,7 +20,7 @@ from ..design.hydraulic_actuation import SOURCES as HYDRAULIC_SOURCES
 from ..design.lash_adjuster import SOURCES as ADJUSTER_SOURCES
 from ..design.camshaft import WORKS as CAMSHAFT_SOURCES
 from ..design.lubrication import SOURCES as LUBRICATION_SOURCES
-from ..design.results import NamedValues, record, shown, shown_value
+from ..design.results import NamedValues, shown, shown_value
 from ..design.drive import spring_options
 from ..specification.si import si
 from ..tables import lift_table_columns
@@ -186,6 +186,21 @@ def _flatten(d, prefix=""):
     return rows
 
 
+def _rows(result, prefix=""):
+    """The rows of a result read from its attributes in the order declared (:func:`shown`), a nested result's rows
+    under its key (``textbook.max_velocity_m_s``), a flattened one's in its place; values that are None left out."""
+    rows = []
+    for f in fields(result):
+        value = getattr(result, f.name)
+        if "key" not in f.metadata or value is None:
+            continue
+        if is_dataclass(value):
+            rows += _rows(value, prefix if f.metadata["flatten"] else f"{prefix}{f.metadata['key']}.")
+        else:
+            rows.append((prefix + f.metadata["key"], shown_value(result, f.name)))
+    return rows
+
+
 def _abridged_table(valve, lang):
     cols = lift_table_columns(valve.table)
     cam = cols["cam_deg"]
@@ -228,8 +243,7 @@ def _measured(rec, lang):
     hidden = ("durations", "fit_reason_code", "spline_smoothing", "gcv_ratio", "fit_quality")
     scalars = [(k, _fit_reason(rec, lang) if k == "fit_reason" else val)
                for k, val in shown(rec, *(f.name for f in fields(rec) if f.name not in hidden))]
-    return {"summary": scalars, "durations": [dict(shown(d)) for d in rec.durations],
-            "quality": [(kind, dict(shown(q))) for kind, q in rec.fit_quality.items()]}
+    return {"summary": scalars, "durations": rec.durations, "quality": rec.fit_quality.items()}
 
 
 def _fit_reason(rec, lang):
@@ -328,31 +342,33 @@ def _lubrication(v):
             "table": _table(lub.per_speed, LUBRICATION_COLUMNS)}
 
 
-CAMSHAFT_ROWS = ["lobes", "camshaft_per_crank_revolution", "peak_torque_Nm", "peak_torque_cam_deg",
-                 "lowest_torque_Nm", "mean_torque_Nm", "fluctuating_torque_Nm", "rms_fluctuating_torque_Nm", "power_W",
-                 "natural_frequencies_Hz", "frequency_ratio", "largest_twist_cam_deg", "largest_twist_crank_deg",
-                 "largest_deflection_mm", "drive_force_max_N", "drive_force_mean_N", "drive_allowable_force_N"]
-"""The rows of the report's table of the camshaft's figures (results.json keys)."""
+CAMSHAFT_ROWS = ("lobes", "ratio", "peak", "peak_angle", "lowest", "mean", "fluctuation", "rms_fluctuation", "power",
+                 "natural_frequencies", "frequency_ratio", "twist_max", "twist_crank", "deflection_max", "drive_force",
+                 "drive_force_mean", "drive_allowable", "drive_windup", "drive_end_inertia")
+"""The rows of the report's table of the camshaft's figures (fields of
+:class:`~valvetrain.design.camshaft.CamshaftRecord`)."""
 
-CAMSHAFT_STATIONS = ["station_positions_mm", "station_inertias_kg_mm2", "max_twist_cam_deg", "deflection_mm"]
-"""The columns of the report's table of the lobe stations."""
+CAMSHAFT_STATIONS = ("positions", "station_inertia", "max_twist", "deflection")
+"""The columns of the report's table of the lobe stations (fields of
+:class:`~valvetrain.design.camshaft.CamshaftRecord`)."""
 
 
 def _camshaft(results, spec, plots):
     """The camshaft chapter for the report: its inputs, figures, stations and significant orders."""
     if results.camshaft is None:
         return None
-    rec = record(results.camshaft.figures)
-    amplitudes = rec["order_amplitudes_Nm"]
-    return {"inputs": [(k, v) for k, v in _flatten(spec["camshaft"]) if k != "valves"], "valves": rec["valves"],
-            "rows": [(k, rec[k]) for k in CAMSHAFT_ROWS], "columns": CAMSHAFT_STATIONS,
-            "stations": list(zip(rec["cylinders"], *(rec[c] for c in CAMSHAFT_STATIONS), strict=True)),
-            "orders": [(k, amplitudes[k], n) for k, n in zip(rec["significant_orders"], rec["resonance_speeds_rpm"],
-                                                              strict=True)],
+    figures = results.camshaft.figures
+    stations = shown(figures, *CAMSHAFT_STATIONS)
+    amplitudes, orders, speeds = (shown_value(figures, k) for k in ("orders", "significant_orders", "resonance_speeds"))
+    return {"inputs": [(k, v) for k, v in _flatten(spec["camshaft"]) if k != "valves"], "valves": figures.valves,
+            "rows": shown(figures, *CAMSHAFT_ROWS), "columns": [k for k, _ in stations],
+            "stations": list(zip(shown_value(figures, "cylinders"), *(c for _, c in stations), strict=True)),
+            "orders": [(k, amplitudes[k], n) for k, n in zip(orders, speeds, strict=True)],
             "plots": plots.get("camshaft", {})}
 
 
-ADJUSTER_COLUMNS = ["speed_rpm", "leak_down_um", "valve_lash_um", "refill_share", "pump_up_um", "held_open_um"]
+ADJUSTER_COLUMNS = ["speed_rpm", "leak_down_um", "valve_lash_um", "refill_share",
+                    "oil_stiffness_at_valve_N_per_mm", "pump_up_um", "held_open_um"]
 """The columns of the report's table of the lash adjuster against engine speed."""
 
 
@@ -457,6 +473,7 @@ def render_report(results, plots, lang="en", folder=None) -> str:
         return images[name]
 
     env.filters["image"] = image
+    env.filters["shown"] = shown_value
     env.globals["figure"] = lambda name, alt: _figure(image, name, alt, TEXT[lang])
     spec = results.spec.model_dump()
     parts = list(results.valves) + (list(results.two_stroke.figures.ports) if results.two_stroke is not None else [])
@@ -475,13 +492,13 @@ def render_report(results, plots, lang="en", folder=None) -> str:
             "worked_law": law_lines(v.law, v.cam, lang),
             "worked_spring": spring_lines(spring.design, _material(results.spec.valves[name], spring.design),
                                           shown_value(v.cam, "cam_speed"), lang),
-            "worked_strength": strength_lines(spec["valves"][name]["parts"], v.summary["strength"], lift,
+            "worked_strength": strength_lines(spec["valves"][name]["parts"], v.drive.strength, lift,
                                               shown_value(v.cam, "follower"), lang,
                                               to_display(v.cam.roller_radius, "mm")),
             "flow": shown(v.flow, *FLOW_FIELDS),
             "time_area": shown(v.flow, *TIME_AREA_FIELDS),
             "cam": shown(v.cam, *CAM_FIELDS),
-            "steps": [record(st) for st in v.cam.acceleration_steps],
+            "steps": v.cam.acceleration_steps,
             "geometry": _geometry(v),
             "coefficients": _coefficients(v.cam.coefficients),
             "coefficient_symbols": _coefficient_symbols(v.cam.coefficients),
@@ -492,8 +509,8 @@ def render_report(results, plots, lang="en", folder=None) -> str:
             "clearance": [] if v.clearance is None else shown(v.clearance),
             "masses": shown(v.drive.masses),
             "spring": [(k, val) for k, val in shown(spring) if not isinstance(val, dict)],
-            "pair": [(t, record(pair)) for pair, t in ((spring.outer, "outer_spring"), (spring.inner, "inner_spring"))
-                     if pair is not None],
+            "pair": [(t, _present(pair, *_except(pair, "margins")))
+                     for pair, t in ((spring.outer, "outer_spring"), (spring.inner, "inner_spring")) if pair is not None],
             "no_spring_passes": not spring.design.passes_all_checks and spring.candidates_passing == 0,
             "strength": _strength(v.drive.strength),
             "table": _abridged_table(v, lang),
@@ -509,21 +526,22 @@ def render_report(results, plots, lang="en", folder=None) -> str:
     if results.crank is not None:
         figures = results.crank.figures
         crank = {"inputs": _flatten(spec["crank"]), "plots": plots.get("crank", {}),
-                 "summary": [(k, v) for k, v in _flatten(record(figures)) if k != "pressure_source"],
+                 "summary": [(k, v) for k, v in _rows(figures) if k != "pressure_source"],
                  "worked": crank_lines(figures, lang),
                  "pressure_source": figures.pressure_source}
     ports = None
     if results.two_stroke is not None:
         ports = {"inputs": [(k, v) for k, v in _flatten(spec["two_stroke"]) if not k.startswith("ports.")],
                  "plots": plots.get("two_stroke", {}),
-                 "ports": {name: record(port) for name, port in results.two_stroke.figures.ports.items()}}
+                 "ports": {name: shown(port) for name, port in results.two_stroke.figures.ports.items()}}
     warning_symbols = [key for key, codes in WARNING_SYMBOLS.items()
                        if any(w.code in codes for w in (*results.warnings, *results.accepted))]
     context = dict(
-        t=TEXT[lang], warning_symbols=warning_symbols, lang=lang, version=__version__, engine=record(results.engine),
+        t=TEXT[lang], warning_symbols=warning_symbols, lang=lang, version=__version__, engine=results.engine,
         engine_inputs=_flatten(spec["engine"]), valves=valves, warnings=results.warnings, accepted=results.accepted,
         first_page=first_page, timing=plots.get("(timing)"), table_columns=TABLE_COLUMNS,
-        cam_card=None if results.cam_card is None else record(results.cam_card),
+        engine_rows=shown(results.engine, "mean_piston_speed", "swept_volume", "displacement", "piston_area"),
+        cam_card=results.cam_card,
         conclusions=_conclusions(results, TEXT[lang]), document=spec.get("document", {}),
         dynamics_sources=DYNAMICS_SOURCES, grinding_sources=GRINDING_SOURCES,
         hydraulic_sources=HYDRAULIC_SOURCES, lubrication_sources=LUBRICATION_SOURCES,

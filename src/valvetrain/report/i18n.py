@@ -677,12 +677,15 @@ TEXT["en"].update({
     "la_chapter": "11. Hydraulic lash adjuster",
     "la_method": "The oil column of the adjuster's high-pressure chamber is compressed from the supply pressure with "
                  "its entrained air (isothermal); its secant stiffness under the largest quasi-static force at the "
-                 "rated speed joins the drive stiffness of the dynamics in series. Over each camshaft revolution the "
-                 "plunger leaks down through its annular clearance under the force it carries (laminar flow), and "
-                 "the lash this leaves at closing is refilled through the check valve on the base circle. Where the "
-                 "simulated follower floats, the plunger extends into the opened gap at the rate the check valve "
-                 "lets in and keeps that extension when the follower lands; less the leak-down under the valve "
-                 "spring's preload over one base circle, it holds the valve off its seat",
+                 "rated speed joins the drive stiffness of the dynamics in series, and under the largest force at "
+                 "each speed it is tabled against the speed. The plunger's extension is a state of the simulated "
+                 "train, carried from one camshaft revolution to the next: under the force it carries it leaks down "
+                 "through its annular clearance (laminar flow), and where that force falls to the adjuster's own "
+                 "push the check valve opens and the plunger extends, refilling the lash on the base circle. Its "
+                 "extension gained while the valve is off its seat before its first return (the follower floating) "
+                 "is the pump-up of a revolution, a failure up to the over-speed; the smallest valve lift on the "
+                 "base circle is the valve held off its seat. At the speeds the dynamics does not sweep, the "
+                 "leak-down is integrated over the quasi-static force",
     "la_location": "Location", "la_locations": {"pivot": "pivot of an end-pivot finger follower",
                                                 "tappet": "in the tappet, in series with the cam contact"},
     "la_names": {
@@ -694,11 +697,12 @@ TEXT["en"].update({
         "rated_leak_down_um": "leak-down per revolution at the rated speed, µm",
         "rated_valve_lash_um": "lash at the valve at closing, rated speed, µm",
         "max_refill_share": "largest refill time / base-circle time",
-        "max_pump_up_um": "largest pump-up of a float up to the over-speed, µm",
+        "max_pump_up_um": "largest pump-up per revolution up to the over-speed, µm",
         "max_held_open_um": "largest valve lift held on the base circle, µm",
         "speed_rpm": "engine speed, rpm", "leak_down_um": "leak-down per revolution, µm",
         "valve_lash_um": "lash at the valve, µm", "refill_share": "refill time / base-circle time",
-        "pump_up_um": "pump-up, µm", "held_open_um": "valve held open, µm",
+        "pump_up_um": "pump-up per revolution, µm", "held_open_um": "valve held open, µm",
+        "oil_stiffness_at_valve_N_per_mm": "stiffness of the oil column at the valve, N/mm",
     },
 })
 
@@ -706,14 +710,16 @@ TEXT["ru"].update({
     "la_chapter": "11. Гидрокомпенсатор зазора",
     "la_method": "Столб масла в камере высокого давления гидрокомпенсатора сжимается от давления подачи вместе с "
                  "нерастворённым воздухом (изотермически); его секущая жёсткость при наибольшей квазистатической "
-                 "силе на номинальной частоте включается последовательно в жёсткость привода в расчёте динамики. За "
-                 "каждый оборот распределительного вала плунжер проседает из-за утечки через кольцевой зазор под "
-                 "действующей на него силой (ламинарное течение), а оставленный этим зазор при посадке клапана "
-                 "восполняется через обратный клапан на цилиндрической части кулачка. Там, где в расчёте динамики "
-                 "толкатель отрывается от кулачка, плунжер выдвигается в открывшийся зазор со скоростью, которую "
-                 "допускает обратный клапан, и сохраняет это выдвижение после возврата толкателя; за вычетом "
-                 "проседания под силой предварительной затяжки пружины клапана за время одной цилиндрической части "
-                 "оно не даёт клапану сесть на седло",
+                 "силе на номинальной частоте включается последовательно в жёсткость привода в расчёте динамики, а "
+                 "при наибольшей силе на каждой частоте приведена в таблице по частотам. Выдвижение плунжера — "
+                 "переменная состояния рассчитываемого привода, переносимая с одного оборота распределительного вала "
+                 "на следующий: под действующей на него силой плунжер проседает из-за утечки через кольцевой зазор "
+                 "(ламинарное течение), а там, где эта сила падает до собственного усилия гидрокомпенсатора, "
+                 "открывается обратный клапан и плунжер выдвигается, выбирая зазор на цилиндрической части кулачка. "
+                 "Выдвижение, набранное, пока клапан не сел на седло в первый раз после открытия (толкатель "
+                 "оторвался от кулачка), — выдвижение плунжера за оборот, недопустимое до заброса оборотов; "
+                 "наименьший подъём клапана на цилиндрической части — клапан, не севший на седло. На частотах вне "
+                 "расчёта динамики проседание интегрируется по квазистатической силе",
     "la_location": "Расположение", "la_locations": {"pivot": "опора рычага с опорой на конце",
                                                     "tappet": "в толкателе, последовательно с контактом кулачка"},
     "la_names": {
@@ -726,11 +732,12 @@ TEXT["ru"].update({
         "rated_leak_down_um": "проседание за оборот на номинальной частоте, мкм",
         "rated_valve_lash_um": "зазор у клапана при посадке на номинальной частоте, мкм",
         "max_refill_share": "наибольшее отношение времени заполнения к времени на цилиндрической части",
-        "max_pump_up_um": "наибольшее выдвижение плунжера при отрыве до заброса оборотов, мкм",
+        "max_pump_up_um": "наибольшее выдвижение плунжера при отрыве за оборот до заброса оборотов, мкм",
         "max_held_open_um": "наибольший подъём клапана, удерживаемый на цилиндрической части, мкм",
         "speed_rpm": "частота вращения, об/мин", "leak_down_um": "проседание за оборот, мкм",
         "valve_lash_um": "зазор у клапана, мкм", "refill_share": "время заполнения / время на цилиндрической части",
-        "pump_up_um": "выдвижение при отрыве, мкм", "held_open_um": "клапан удерживается открытым, мкм",
+        "pump_up_um": "выдвижение при отрыве за оборот, мкм", "held_open_um": "клапан удерживается открытым, мкм",
+        "oil_stiffness_at_valve_N_per_mm": "жёсткость столба масла, приведённая к клапану, Н/мм",
     },
 })
 
@@ -742,10 +749,12 @@ TEXT["en"].update({
                  "four-stroke); one lobe's torque at the rated speed is its valve's drive torque F dh/dθ under the "
                  "cam force of the valve's stages (the simulated force where the dynamics ran), with the friction "
                  "torque of the cam contact where the lubrication was computed. The orders of the camshaft speed by "
-                 "the discrete Fourier transform of a revolution; the twist of each lobe station behind the drive "
-                 "end under the instantaneous torque, quasi-static, the shaft's sections in series (T l / G J); the "
-                 "torsional natural frequencies of the stations' inertias (lobes, the valve train reduced to the "
-                 "camshaft, the shaft) on the shaft held at its drive end; the bending deflection of each station "
+                 "the discrete Fourier transform of a revolution; the lag of each lobe station behind the crankshaft "
+                 "under the instantaneous torque, quasi-static, the shaft's sections in series (T l / G J) after the "
+                 "timing drive's stretch (T / k r²; none with a rigid drive); the torsional natural frequencies of "
+                 "the stations' inertias (lobes, the valve train reduced to the camshaft, the shaft) and of the "
+                 "sprocket on the timing drive's stiffness (without it, the shaft held at its drive end); the "
+                 "bending deflection of each station "
                  "under its largest cam force on a simply supported span between its journals; the force of the "
                  "timing drive, the torque over the pitch radius",
     "cs_valves": "Lobes of the valves",
@@ -764,12 +773,14 @@ TEXT["en"].update({
         "power_W": "power taken at the rated speed, W",
         "natural_frequencies_Hz": "torsional natural frequencies, Hz",
         "frequency_ratio": "first natural frequency / highest significant order at the over-speed",
-        "largest_twist_cam_deg": "largest twist behind the drive end, cam deg",
+        "largest_twist_cam_deg": "largest lag behind the crankshaft, cam deg",
         "largest_twist_crank_deg": "the same, crank deg", "largest_deflection_mm": "largest bending deflection, mm",
         "drive_force_max_N": "largest force of the timing drive, N", "drive_force_mean_N": "mean force, N",
         "drive_allowable_force_N": "allowable force, N",
+        "drive_windup_cam_deg": "largest stretch of the timing drive, cam deg",
+        "drive_end_inertia_kg_mm2": "inertia at the drive end (sprocket and shaft), kg·mm²",
         "station_positions_mm": "position from the drive end, mm",
-        "station_inertias_kg_mm2": "inertia, kg·mm²", "max_twist_cam_deg": "largest twist, cam deg",
+        "station_inertias_kg_mm2": "inertia, kg·mm²", "max_twist_cam_deg": "largest lag, cam deg",
         "deflection_mm": "bending deflection, mm", "order": "order", "order_amplitudes_Nm": "amplitude, N·m",
         "resonance_speeds_rpm": "resonant engine speed, rpm",
     },
@@ -783,10 +794,12 @@ TEXT["ru"].update({
                  "момент привода его клапана F dh/dθ от силы на кулачке, найденной расчётом клапана (рассчитанной "
                  "динамикой силы, где она считалась), с моментом трения в контакте кулачка, где рассчитана смазка. "
                  "Гармоники частоты вращения распределительного вала — дискретным преобразованием Фурье за оборот; "
-                 "закрутка каждого сечения кулачков относительно приводного конца под мгновенным моментом, "
-                 "квазистатически, участки вала последовательно (T l / G J); собственные частоты крутильных колебаний "
-                 "моментов инерции сечений (кулачки, привод клапана, приведённый к валу, сам вал) на валу, "
-                 "закреплённом у приводного конца; прогиб вала у каждого сечения под наибольшей силой на кулачке как "
+                 "отставание каждого сечения кулачков от коленчатого вала под мгновенным моментом, "
+                 "квазистатически, участки вала последовательно (T l / G J) после растяжения привода "
+                 "(T / k r²; при жёстком приводе его нет); собственные частоты крутильных колебаний моментов инерции "
+                 "сечений (кулачки, привод клапана, приведённый к валу, сам вал) и звёздочки на жёсткости привода "
+                 "(без неё — на валу, закреплённом у приводного конца); прогиб вала у каждого сечения под "
+                 "наибольшей силой на кулачке как "
                  "балки на двух опорах между его шейками; окружная сила привода — момент, делённый на радиус "
                  "начальной окружности",
     "cs_valves": "Кулачки клапанов",
@@ -806,12 +819,14 @@ TEXT["ru"].update({
         "power_W": "мощность привода на номинальной частоте, Вт",
         "natural_frequencies_Hz": "собственные частоты крутильных колебаний, Гц",
         "frequency_ratio": "первая собственная частота / наивысшая значимая гармоника на максимальной частоте",
-        "largest_twist_cam_deg": "наибольшая закрутка относительно приводного конца, град ПРВ",
+        "largest_twist_cam_deg": "наибольшее отставание от коленчатого вала, град ПРВ",
         "largest_twist_crank_deg": "то же, град ПКВ", "largest_deflection_mm": "наибольший прогиб, мм",
         "drive_force_max_N": "наибольшая окружная сила привода, Н", "drive_force_mean_N": "средняя окружная сила, Н",
         "drive_allowable_force_N": "допустимая сила, Н",
+        "drive_windup_cam_deg": "наибольшее растяжение привода, град ПРВ",
+        "drive_end_inertia_kg_mm2": "момент инерции приводного конца (звёздочка и вал), кг·мм²",
         "station_positions_mm": "расстояние от приводного конца, мм",
-        "station_inertias_kg_mm2": "момент инерции, кг·мм²", "max_twist_cam_deg": "наибольшая закрутка, град ПРВ",
+        "station_inertias_kg_mm2": "момент инерции, кг·мм²", "max_twist_cam_deg": "наибольшее отставание, град ПРВ",
         "deflection_mm": "прогиб, мм", "order": "порядок", "order_amplitudes_Nm": "амплитуда, Н·м",
         "resonance_speeds_rpm": "резонансная частота вращения двигателя, об/мин",
     },
@@ -1007,9 +1022,11 @@ TOLERANCE_TEXT = {
                       "max_seating_velocity_m_s": "largest seating velocity, m/s"},
         "summary": "{n} samples ({method}, random seed = {seed}); {refused} refused (probability {p:.4g}).",
         "method_text": ("Each sample is the specification with the tolerances drawn from their distributions "
-                        "(inverse distribution function, Devroye (1986)), designed in full. The probability of "
+                        "(inverse distribution function, {devroye}), designed in full; its dynamics simulate the "
+                        "speeds of the range that decide the jump speed, the largest seating velocity and the "
+                        "largest cam force (every tenth speed, then the speeds about those). The probability of "
                         "failure of a check is the share of the designed samples that fail it, with the Wilson "
-                        "score interval (Wilson (1927)); a tolerance drives a check by Spearman's rank correlation "
+                        "score interval ({wilson}); a tolerance drives a check by Spearman's rank correlation "
                         "of its values with the check's margin."),
     },
     "ru": {
@@ -1028,9 +1045,11 @@ TOLERANCE_TEXT = {
                       "max_seating_velocity_m_s": "наибольшая скорость посадки, м/с"},
         "summary": "{n} вариантов ({method}, начальное число = {seed}); отклонено {refused} (вероятность {p:.4g}).",
         "method_text": ("Каждый вариант — спецификация с параметрами, взятыми из их распределений (метод обратной "
-                        "функции распределения, Devroye (1986)), рассчитанная полностью. Вероятность отказа "
+                        "функции распределения, {devroye}), рассчитанная полностью; динамика рассчитывается на "
+                        "частотах вращения, определяющих частоту отрыва, наибольшую скорость посадки и наибольшую "
+                        "силу на кулачке (каждая десятая частота, затем частоты около них). Вероятность отказа "
                         "проверки — доля рассчитанных вариантов, в которых она не выполнена, с интервалом Уилсона "
-                        "(Wilson (1927)); влияние допуска — ранговая корреляция Спирмена его значений с запасом "
+                        "({wilson}); влияние допуска — ранговая корреляция Спирмена его значений с запасом "
                         "проверки."),
     },
 }

@@ -54,10 +54,6 @@ def _localised(fig, t) -> Figure:
     return fig
 
 
-def _segment_lines(ax, law):
-    _boundary_lines(ax, segment_boundaries(law))
-
-
 def segment_boundaries(law) -> np.ndarray:
     """Camshaft angles of the inner junctions of a law's segments [deg from the nose]."""
     return rad_to_deg(np.asarray(law.breakpoints[1:-1]))
@@ -358,7 +354,7 @@ def spring_data(valve) -> dict[str, Any]:
     ends = np.array([0.0, y.max()])
     return {"name": valve.name, "lift_mm": y[order], "inertia_force_N": drive.inertia_force[order],
             "required_force_N": drive.required_force[order], "line_ends_mm": ends,
-            "lines_N": {name: line.force(ends * MM) for name, line in drive.lines.items()}}
+            "lines_N": {name: line.force(ends * MM) for name, line in drive.lines.named()}}
 
 
 def draw_spring(d, t) -> Figure:
@@ -390,14 +386,12 @@ def spring_figure(valve, t) -> Figure:
     return draw_spring(spring_data(valve), t)
 
 
-CRANK_FORCES = ("p_gas", "p_j", "p", "p_N", "p_S", "p_K", "p_T")
-"""The specific forces of :func:`draw_crank_forces` (keys of :attr:`valvetrain.design.crank.CrankResults.columns`)."""
-
-
 def crank_forces_data(crank) -> dict[str, Any]:
-    """The series of :func:`draw_crank_forces`: the cycle angle [deg] and the specific forces of
-    :data:`CRANK_FORCES` [MPa]."""
-    return {"crank_deg": rad_to_deg(crank.phi), **{key: crank.columns[key] * 1e-6 for key in CRANK_FORCES}}
+    """The series of :func:`draw_crank_forces`: the cycle angle [deg] and the specific forces [MPa] of
+    :class:`~valvetrain.design.crank.CrankColumns` (gas, inertia, total; N, S, K, T)."""
+    c = crank.columns
+    return {"crank_deg": rad_to_deg(crank.phi), "p_gas": c.p_gas * 1e-6, "p_j": c.p_j * 1e-6, "p": c.p * 1e-6,
+            "p_N": c.p_N * 1e-6, "p_S": c.p_S * 1e-6, "p_K": c.p_K * 1e-6, "p_T": c.p_T * 1e-6}
 
 
 def draw_crank_forces(d, t) -> Figure:
@@ -460,7 +454,7 @@ def crank_pin_data(crank) -> dict[str, Any]:
     """The series of :func:`draw_crank_pin`: the crank-pin load, tangential and radial (outwards negative) [kN], and
     the cycle angle [deg]."""
     c = crank.columns
-    return {"tangential_kN": c["pin_tangential"] * 1e-3, "radial_kN": -c["pin_radial"] * 1e-3,
+    return {"tangential_kN": c.pin_tangential * 1e-3, "radial_kN": -c.pin_radial * 1e-3,
             "crank_deg": rad_to_deg(crank.phi)}
 
 
@@ -491,7 +485,7 @@ def crank_pin_figure(crank, t) -> Figure:
 
 def two_stroke_ports_data(ports) -> dict[str, Any]:
     """The series of :func:`draw_two_stroke_ports`: crank angle from TDC [deg] and each port's area [mm2]."""
-    return {"crank_deg": rad_to_deg(ports.phi), "areas_mm2": {name: a / MM**2 for name, a in ports.areas.items()}}
+    return {"crank_deg": rad_to_deg(ports.phi), "areas_mm2": {name: c.area / MM**2 for name, c in ports.curves.items()}}
 
 
 def draw_two_stroke_ports(d, t) -> Figure:
@@ -518,7 +512,7 @@ def two_stroke_ports_figure(ports, t) -> Figure:
 def two_stroke_speed_data(ports) -> dict[str, Any]:
     """The series of :func:`draw_two_stroke_speed`: crank speed [rpm] and each port's time-area [mm2 s]."""
     return {"rpm": to_display(ports.speeds, "rpm"),
-            "time_areas_mm2_s": {name: z / MM**2 for name, z in ports.time_areas.items()}}
+            "time_areas_mm2_s": {name: c.time_area / MM**2 for name, c in ports.curves.items()}}
 
 
 def draw_two_stroke_speed(d, t) -> Figure:

@@ -264,7 +264,7 @@ def spring_lines(spring, material=None, cam_speed=None, lang="en") -> list[dict[
     return lines
 
 
-def strength_lines(parts, record, lift_table, follower, lang="en", roller_radius=None) -> list[dict[str, Any]]:
+def strength_lines(parts, result, lift_table, follower, lang="en", roller_radius=None) -> list[dict[str, Any]]:
     """The cam's contact stress at its worst point and the pushrod's buckling margin (Valve-train practical works
     (n.d.), eqs. (7.4)-(7.5), (7.8)-(7.10); Shang Hanji (1988), eq. 2.5), those the design checked.
 
@@ -273,9 +273,9 @@ def strength_lines(parts, record, lift_table, follower, lang="en", roller_radius
     parts : dict
         The valve's ``[parts]`` inputs (cam width [mm], contact modulus [MPa], pushrod diameter, bore and length
         [mm] and modulus [MPa]).
-    record : dict
-        The strength record (its checks, the angle [cam deg] of the largest contact stress and the cam force there
-        [N], the largest cam force [N]).
+    result : valvetrain.design.drive.StrengthResult
+        The strength stage's result (its checks, the angle of the largest contact stress and the cam force there,
+        the largest cam force), read in the units results.json shows them (cam deg, N).
     lift_table : dict
         The valve's lift table (``cam_deg`` [cam deg], ``rho_mm`` [mm]): the cam's radius at the worst point.
     follower : str
@@ -288,23 +288,23 @@ def strength_lines(parts, record, lift_table, follower, lang="en", roller_radius
     The contact line is worked at the angle of the largest contact stress with the cam force there; the profile's
     radius is the lift table's interpolated to that angle (negative on a concave flank).
     """
-    checks, lines = record["checks"], []
-    contact, force = checks.get("cam_contact_stress"), record.get("cam_contact_force_N")
+    checks, lines = {c.code: c for c in result.checks}, []
+    contact, force = checks.get("strength.cam_contact_stress"), shown_value(result, "contact_force")
     if contact is not None and force is not None:
-        rho = float(np.interp(record["cam_contact_stress_cam_deg"], lift_table["cam_deg"], lift_table["rho_mm"]))
+        rho = float(np.interp(shown_value(result, "contact_stress_angle"), lift_table["cam_deg"], lift_table["rho_mm"]))
         factor, symbol = strength.HERTZ_LINE, "σ_к" if lang == "ru" else "σ_c"
         if follower == "flat":
             lines.append(_line(symbol, f"{number(factor, lang)} √(P E / (b ρ))", (
                 "{} × √({} × {} / ({} × {}))",
                 [(factor, ""), (force, "N"), (parts["contact_modulus_MPa"], "MPa"), (parts["cam_width_mm"], "mm"),
-                 (rho, "mm")]), contact["value"], "MPa", lang))
+                 (rho, "mm")]), contact.shown_value, "MPa", lang))
         elif follower in ("roller", "finger") and roller_radius:
             lines.append(_line(symbol, f"{number(factor, lang)} √(P E (1/ρ + 1/r_рол) / b)" if lang == "ru" else
                                f"{number(factor, lang)} √(P E (1/ρ + 1/r_r) / b)", (
                 "{} × √({} × {} × (1/{} + 1/{}) / {})",
                 [(factor, ""), (force, "N"), (parts["contact_modulus_MPa"], "MPa"), (rho, "mm"),
-                 (roller_radius, "mm"), (parts["cam_width_mm"], "mm")]), contact["value"], "MPa", lang))
-    buckling = checks.get("pushrod_buckling_margin")
+                 (roller_radius, "mm"), (parts["cam_width_mm"], "mm")]), contact.shown_value, "MPa", lang))
+    buckling = checks.get("strength.pushrod_buckling_margin")
     if buckling is not None:
         big, bore, e, length = (parts[k] or 0.0 for k in (
             "pushrod_diameter_mm", "pushrod_bore_mm", "pushrod_modulus_MPa", "pushrod_length_mm"))
@@ -315,8 +315,8 @@ def strength_lines(parts, record, lift_table, follower, lang="en", roller_radius
                   lang),
             _line("P_E", "π² E J / l²", ("π² × {} × {} / ({})²", [(e, "MPa"), (second, "mm4"), (length, "mm")]),
                   euler, "N", lang),
-            _line("n", "P_E / P_T max", ("{} / {}", [(euler, "N"), (record["cam_force_max_N"], "N")]),
-                  buckling["value"], "", lang),
+            _line("n", "P_E / P_T max", ("{} / {}", [(euler, "N"), (shown_value(result, "cam_force_max"), "N")]),
+                  buckling.shown_value, "", lang),
         ]
     return lines
 

@@ -167,7 +167,20 @@ def _closing_problem(at, problem):
                    text=f"{at}.cam.closing: {problem}")
 
 
-def _clearance_problem(at, valve, what="the cam's ramp takes up the clearance"):
+HYDRAULIC_NO_RAMP = ("its ramp takes up a mechanical clearance, and a lash_adjuster section leaves none on the base "
+                     "circle (clearance_mm = 0): allowed with it a cam without a ramp (polydyne or polynomial with ramp "
+                     "= false, harmonic, three_arc, tangent, table)")
+"""Why a cam with a ramp is refused on a valve with a hydraulic lash adjuster: the ramps of this package take up a
+mechanical clearance (their height is ``clearance_mm``), and a hydraulic train has none to take up."""
+
+
+def _clearance_problem(at, valve, what="the cam's ramp takes up the clearance", key="law"):
+    """The problem of a cam whose ramp takes up the clearance ([] if none): a clearance not in [0.01, 5] mm, or any
+    ramp on a valve with a lash adjuster (named by the cam's ``key``: ``law`` where the law always has a ramp,
+    ``ramp`` where it is chosen)."""
+    if valve.lash_adjuster is not None:
+        value = f'"{valve.cam.law}"' if key == "law" else "true"
+        return [Problem(f"{at}.cam.{key}", HYDRAULIC_NO_RAMP, value)]
     return [Problem(f"{at}.clearance_mm", f"{what}, allowed [0.01, 5] mm", f"{valve.clearance_mm:g}")] \
         if valve.clearance_mm <= 0.0 else []
 
@@ -344,7 +357,7 @@ class PolydyneCam(_CamBase, _RampKeys):
         return _rampless_or_ramped(self, valve, engine, self.ramp)
 
     def problems(self, at, valve, engine):
-        return _clearance_problem(at, valve, "a ramp needs a clearance to take up") if self.ramp else []
+        return _clearance_problem(at, valve, "a ramp needs a clearance to take up", "ramp") if self.ramp else []
 
 
 def _rampless_or_ramped(model, valve, engine, ramped=False):
@@ -387,7 +400,7 @@ class PolynomialCam(_CamBase, _RampKeys):
         return _rampless_or_ramped(self, valve, engine, self.ramp)
 
     def problems(self, at, valve, engine):
-        return _clearance_problem(at, valve, "a ramp needs a clearance to take up") if self.ramp else []
+        return _clearance_problem(at, valve, "a ramp needs a clearance to take up", "ramp") if self.ramp else []
 
 
 @register

@@ -463,7 +463,10 @@ class Valve(_Model):
 class Camshaft(_Model):
     """[camshaft]: the whole camshaft, its shaft and its timing drive (positions from the drive end, where the
     sprocket, pulley or gear sits); the lobes of the named valves of the named cylinders, in the engine's firing
-    order."""
+    order.  ``drive_stiffness_N_per_mm`` (the drive's tangential stiffness at the pitch radius; absent: the drive
+    end held) and ``sprocket_inertia_kg_mm2`` put the timing drive into the torsion.  The limits
+    ``max_twist_cam_deg`` and ``min_frequency_ratio`` are engineering assumptions (no published camshaft limit was
+    found); ``drive_allowable_force_N`` is the maker's allowable of the chain, belt or gears."""
 
     valves: Optional[list[str]] = None
     cylinders: Optional[list[Annotated[int, Field(ge=1, le=64)]]] = None
@@ -483,6 +486,8 @@ class Camshaft(_Model):
     drive: Literal["chain", "belt", "gears"] = "chain"
     drive_pitch_radius_mm: Length(2.0, 1000.0, low_open=False)
     drive_allowable_force_N: _bounded(1.0, 1e8, "N")
+    drive_stiffness_N_per_mm: Optional[_bounded(10.0, 1e7, "N/mm", low_open=False)] = None
+    sprocket_inertia_kg_mm2: _bounded(0.0, 1e7, "kg mm2", low_open=False) = 0.0
 
     @model_validator(mode="after")
     def _consistent(self):

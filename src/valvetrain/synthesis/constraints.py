@@ -150,7 +150,7 @@ def spring_reserve_value(design, preload=None, rate=None) -> float:
     (n.d.), eq. 5.3 for the reserve K_z).
     """
     drive = design.drive
-    line = drive.lines["chosen"]
+    line = drive.lines.chosen
     force = line.force(drive.lift) if preload is None else preload + rate * drive.lift
     inertia = drive.inertia_force
     loaded = inertia > 0.0
@@ -222,7 +222,7 @@ def contact_stress_value(design, width, modulus=strength.STEEL_MODULUS, top=1.0)
     nose between the table's angles is not missed.
     """
     law, cam, drive = design.law, design.cam, design.drive
-    line, omega, follower = drive.lines["chosen"], cam.cam_speed * top, cam.follower_model
+    line, omega, follower = drive.lines.chosen, cam.cam_speed * top, cam.follower_model
 
     def stress(theta):
         _, _, d2h, _ = law.derivatives(theta)

@@ -377,7 +377,7 @@ class Problem:
         self.heel, self.i_k, self.omega = design.cam.heel_radius, design.cam.rocker_ratio, design.cam.cam_speed
         self.whole_event = getattr(self.section.cam, "closing", None) is not None
         self.mass = design.drive.masses.at_valve
-        self.spring = design.drive.lines["chosen"]
+        self.spring = design.drive.lines.chosen
         self.valve = si(self.section, self.spec)
         self.parts = {v.path.split(".")[0] for v in self.variables}
         self.spring_inputs = (self.valve.throat_diameter, spring_options(self.valve.spring),
@@ -990,7 +990,7 @@ def optimize_valve(spec, valve=None, variables=None, objective="fullness", wheel
                                   constraints=({"type": "ineq", "fun": polish_margins},),
                                   options={"maxiter": POLISH_ITERATIONS, "ftol": 1e-10})
         problem.evaluate(local.x)
-    spring = None if any(v.path == "drive.spring_reserve" for v in problem.variables) else design.drive.lines["chosen"]
+    spring = None if any(v.path == "drive.spring_reserve" for v in problem.variables) else design.drive.lines.chosen
     checks_start = final_checks(design, spec, limits, 1.0, spring)
     start = (problem.x0, spec, design, checks_start,
              optimum_spec_text(spec, valve, problem.data, dict(zip((v.path for v in variables), problem.x0))))
