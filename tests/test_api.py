@@ -153,3 +153,26 @@ def test_a_sweep_is_stopped_by_its_progress_callback():
 
     with pytest.raises(Stop):
         api.sweep(tomllib.loads(appendix_text()), progress=progress)
+
+
+def test_design_without_the_sweeps_and_with_them():
+    """Issue 25: the designer's two steps.  Without the sweeps the kinematics are those of the whole design (the
+    dynamics stage reads the law, never changes it) and no check of the dynamics is made; with ``sweeps`` the sweeps
+    are api.sweep's, the independent route (the sweep alone, design.sweep_designs)."""
+    from valvetrain.design.dynamics import CHECK_CODES
+    from valvetrain.specification import example_text
+
+    document = tomllib.loads(example_text())
+    document["accepted"].append({"quantity": "dynamics.jump_speed", "reason": "a test: accepted, named by its code"})
+    quick = api.design(document, dynamics=False)
+    whole = api.design(document, sweeps=True)
+    assert quick["ok"] and whole["ok"]
+    _close(quick["series"], whole["series"])
+    assert not {c["code"] for c in quick["results"]["checks"]} & set(CHECK_CODES)
+    assert {c["code"] for c in whole["results"]["checks"] if c["accepted"]} >= {"dynamics.jump_speed"}
+    _close(whole["sweeps"], api.sweep(document)["sweeps"])
+    assert "sweeps" not in api.design(document, dynamics=False)
+    # a key of a [dynamics] section is validated all the same
+    document["valves"]["intake"]["dynamics"]["damping_ratio"] = 5.0
+    (error,) = api.design(document, dynamics=False)["errors"]
+    assert error["path"] == "valves.intake.dynamics.damping_ratio"

@@ -107,7 +107,22 @@ def _parsed(spec):
         return None, error_records(err)
 
 
-def design(spec) -> dict[str, Any]:
+def without_dynamics(spec, parsed) -> dict[str, Any]:
+    """A specification dict without its valves' ``[dynamics]`` sections and without the acceptances of the dynamics
+    checks (which would name no check of it); ``parsed`` is its validated :class:`~valvetrain.specification.Spec`."""
+    from .checks import resolve
+    from .design.dynamics import CHECK_CODES
+
+    kept = [a for a, p in zip(spec.get("accepted", []), parsed.accepted, strict=True)
+            if (resolve(p, parsed.valves) or (None, None, None))[1] not in CHECK_CODES]
+    out = {**spec, "valves": {n: {k: v for k, v in valve.items() if k != "dynamics"}
+                              for n, valve in spec["valves"].items()}}
+    if "accepted" in spec:
+        out["accepted"] = kept
+    return out
+
+
+def design(spec, dynamics=True, sweeps=False, progress=None) -> dict[str, Any]:
     """Design a specification given as a dict: what ``valvetrain run`` computes, as plain data.
 
     Parameters
@@ -115,25 +130,40 @@ def design(spec) -> dict[str, Any]:
     spec : dict
         The tables of a specification, as :func:`tomllib.loads` gives them (lengths in mm, angles in deg, speeds
         in rpm, as the keys say).
+    dynamics : bool
+        False: validated whole, designed without the valves' ``[dynamics]`` sections (:func:`without_dynamics`):
+        the kinematics, springs and checks without the speed sweeps, whose time they spare (the strength then
+        rests on the quasi-static loads); the designer's first answer to an edit.
+    sweeps : bool
+        Add ``sweeps``: the speed-sweep series (:func:`sweep_series`) of each valve designed with its
+        ``[dynamics]`` section, the same as :func:`sweep` gives for it, from the same run.
+    progress : callable, optional
+        ``progress(valve name, done, total)`` between speeds of a sweep; an exception it raises ends the design.
 
     Returns
     -------
     dict
         ``ok`` (bool); ``errors`` (list of ``{"path", "value", "message", "text"}``, empty when ok); ``results``
         (the dictionary of results.json, None when not ok); ``series`` (``valve name -> plot series``, see
-        :func:`valve_series`; None when not ok).
+        :func:`valve_series`; None when not ok); with ``sweeps``, ``sweeps`` (None when not ok).
     """
     from .design import run
 
     parsed, errors = _parsed(spec)
+    if parsed is not None and not dynamics:
+        parsed, errors = _parsed(without_dynamics(spec, parsed))
+    extra = {"sweeps": None} if sweeps else {}
     if parsed is None:
-        return {"ok": False, "errors": errors, "results": None, "series": None}
+        return {"ok": False, "errors": errors, "results": None, "series": None, **extra}
     try:
-        results = run(parsed)
+        results = run(parsed, progress=progress)
     except SpecError as err:
-        return {"ok": False, "errors": error_records(err), "results": None, "series": None}
+        return {"ok": False, "errors": error_records(err), "results": None, "series": None, **extra}
+    if sweeps:
+        extra["sweeps"] = plain({n: sweep_series(v.dynamics) for n, v in results.valves.items()
+                                 if v.dynamics is not None})
     return {"ok": True, "errors": [], "results": plain(results.to_dict()),
-            "series": plain({name: valve_series(v) for name, v in results.valves.items()})}
+            "series": plain({name: valve_series(v) for name, v in results.valves.items()}), **extra}
 
 
 MAP_COLUMNS = 400

@@ -1,7 +1,6 @@
 """Measured lift tables (Shang Hanji (1988), sections 5.1-5.3; spec/methods-seeds-002-004.md sections 9-11)."""
 
 import json
-from pathlib import Path
 import re
 
 from click.testing import CliRunner
@@ -19,15 +18,12 @@ from valvetrain.files import TableFileError, read_lift_table
 from valvetrain.laws.measured import (TableLaw, harmonic_fit, lobe_table,
                                       symmetry_shift)
 from valvetrain.numerics import level_span
-from valvetrain.specification import load_spec
+from valvetrain.specification import load_spec, parse_spec
 
 from appendix import PATH as APPENDIX, appendix_text, appendix_spec
 
 from conftest import seed000_law
-
-EXAMPLE = Path(__file__).parents[2] / "examples" / "measured-lobe.toml"
-EXAMPLE_TABLE = EXAMPLE.parent / "data" / "measured-intake-lobe.csv"
-"""Valve lift every 2 crank deg from -70 to 300: the lobe of the appendix of Valve-train practical works (n.d.) x 1.6, 3 crank deg late, 2 um noise."""
+from measured_lobe import EXAMPLE, EXAMPLE_TABLE, inline_text
 
 
 def _spec_text(table, valve="", **cam):
@@ -649,3 +645,32 @@ def test_a_step_is_no_lobe_and_a_coarse_lobe_is():
     coarse = TableLaw(theta, law.derivatives(theta)[0], accuracy_stated=False)
     nose = law.derivatives(np.array([0.0]))[0, 0]
     assert coarse.derivatives(np.linspace(law.start, law.end, 2001))[0].max() <= nose + 1e-6
+
+
+def test_an_inline_table_designs_as_the_same_table_in_a_file(tmp_path):
+    """Issue 25: a table's points inline in the cam section (the browser designer's control points) are the same
+    table as those points in a file read by read_lift_table: the same lift, lobe and fit."""
+    angle, lift = read_lift_table(EXAMPLE_TABLE)
+    angle, lift = angle[::6], np.round(lift[::6], 4)
+    inline = run(parse_spec(inline_text(angle, lift))).valves["intake"]
+    f = tmp_path / "m.toml"
+    f.write_text(_spec_text(_write_table(tmp_path / "every-sixth.csv", angle, lift)))
+    filed = run(load_spec(f)).valves["intake"]
+    assert np.array_equal(inline.table.valve_lift, filed.table.valve_lift)
+    assert inline.summary["cam"]["measured"] == filed.summary["cam"]["measured"]
+    # the lobe of the file is 3 crank deg late on the appendix's nose at 116 (test above): its centre near 119
+    assert inline.summary["cam"]["measured"]["lobe_centre_deg"] == pytest.approx(119.0, abs=0.2)
+
+
+@pytest.mark.parametrize("change, message", [
+    (lambda t: t.replace('law = "table"\n', 'law = "table"\ntable_file = "data/measured-intake-lobe.csv"\n'),
+     "give the table as table_file or as table_angles_deg and table_lifts_mm, one of the two"),
+    (lambda t: re.sub(r"table_lifts_mm = \[0\.0000, ", "table_lifts_mm = [", t),
+     "table_angles_deg and table_lifts_mm need as many points each (got 31 and 30)"),
+    (lambda t: t.replace("[-70, -58, -46,", "[-70, -46, -58,"),
+     "table_angles_deg[2] = -58 must be larger than the previous -46"),
+    (lambda t: t.replace("[0.0000, ", "[600.0000, ", 1), "table_lifts_mm.0 = 600.0: allowed [-500, 500] mm"),
+])
+def test_bad_inline_tables_are_refused(refused, change, message):
+    angle, lift = read_lift_table(EXAMPLE_TABLE)
+    assert message in refused(change(inline_text(angle[::6], lift[::6])))

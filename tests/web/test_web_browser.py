@@ -104,13 +104,14 @@ def redrawn_count(page):
 
 
 def drag(page, start, end):
-    """Press at ``start`` (page pixels), move to ``end`` in two halves of 4 steps, release; wait for the redraw."""
+    """Press at ``start`` (page pixels), move to ``end`` in one move, release; wait for the redraw.  In one move: a
+    pointer that stays within 5 px of where it was pressed for 300 ms is a press to Bokeh, not a drag (its
+    UIGestures thresholds), and on a loaded machine small steps take that long."""
     done = redrawn_count(page)
     (x0, y0), (x1, y1) = start, end
     page.mouse.move(x0, y0)
     page.mouse.down()
-    page.mouse.move((x0 + x1) / 2, (y0 + y1) / 2, steps=4)
-    page.mouse.move(x1, y1, steps=4)
+    page.mouse.move(x1, y1)
     page.mouse.up()
     wait_redrawn(page, done)
 
@@ -155,7 +156,9 @@ def test_drag_of_the_nose_changes_the_lift_and_a_check(designer):
     }""")
     drag(designer, *start)
     lift = model_data(designer, "handles-lift")
-    assert lift["y"][0] > 10.3                # the pointer went to 11 mm; the pan's first steps are not followed
+    # the pointer went to 11 mm, above the curve's highest point: the plot leaves room there (an edit tool drops the
+    # moves outside the plot's frame; with a range fitted tight to the curve the handle stopped at its first step)
+    assert lift["y"][0] == pytest.approx(11.0, abs=0.05)
     assert check_passes(designer, quantity)
     assert designer.get_by_label(re.compile(r"^max_lift_mm\b")).input_value().startswith(str(lift["y"][0])[:4])
 
@@ -203,15 +206,15 @@ def test_drag_of_a_peak_raises_the_acceleration_and_changes_the_checks(page, die
         const r = v.canvas_view.el.getBoundingClientRect();
         return [r.left + v.frame.x_scale.compute(x), r.top + v.frame.y_scale.compute(y0),
                 r.top + v.frame.y_scale.compute(y1)];
-    }""", [x, y, 1.6 * y])
+    }""", [x, y, 1.2 * y])
     drag(page, (px, py0), (px, py1))
     # the valve's peak acceleration is a_qd x i x omega^2 (a flat extremum of the positive part, UkrSURT Proceedings
     # (2019) reconstruction R2): proportional to peak_acceleration_mm_per_rad2 (135.2 in the example), which the
-    # drag scales by the new height over the old (the pointer went up to 1.6 times the height, short of where the
-    # valve would hit the piston; headless chromium's drag follows only its first steps)
+    # drag scales by the new height over the old (the pointer went up to 1.2 times the height, within the room the
+    # plot leaves above its highest point, a quarter of its span, and the peak follows it to the pixel)
     after = model_data(page, "handles-acceleration")
     rise = after["y"][after["name"].index("peak")] / y
-    assert rise > 1.01
+    assert rise == pytest.approx(1.2, rel=0.01)
     a_qd = float(page.get_by_label(re.compile(r"^peak_acceleration_mm_per_rad2\b")).input_value())
     assert a_qd / 135.2 == pytest.approx(rise, rel=5e-3)
     assert model_data(page, "checks")["value"] != before

@@ -190,3 +190,105 @@ def test_sweep_starts_when_the_page_has_drawn_the_newest_kinematics():
     d.redraw(sweep=False)                                 # a language or unit switch: no new sweep
     d.on_drawn("data", None, {"n": [newest + 1]})
     assert started == [newest]
+
+
+def test_points_of_an_inline_table_are_handles_moved_added_and_removed():
+    from measured_lobe import EXAMPLE, EXAMPLE_TABLE, inline_text
+    from valvetrain import api
+    from valvetrain.files import read_lift_table
+
+    angle, lift = read_lift_table(EXAMPLE_TABLE)
+    s = Session.start(inline_text(angle[::6], lift[::6]), EXAMPLE.parent)
+    h = {x.name: x for x in s.handles("intake")}
+    assert sorted(h, key=lambda n: int(n.split(".")[1])) == [f"point.{k}" for k in range(31)]
+    # the table is the appendix's lobe with its nose 3 crank deg late, at 116 + 3 = 119 crank deg (tests/laws/
+    # test_measured.py): its highest point, 122 crank deg, lies (122 - 119) / 2 = 1.5 cam deg after the nose
+    assert (h["point.16"].x, h["point.16"].y) == (pytest.approx(1.5, abs=0.1), pytest.approx(9.991, abs=5e-4))
+    assert s.drag("intake", "point.16", h["point.16"].x, 10.5)
+    cam = s.document["valves"]["intake"]["cam"]
+    assert (cam["table_angles_deg"][16], cam["table_lifts_mm"][16]) == (122.0, 10.5)
+    # dragged past its neighbour (134 crank deg) it stops 0.01 deg before it
+    assert s.drag("intake", "point.16", 20.0, 10.5)
+    assert cam is not s.document["valves"]["intake"]["cam"]
+    assert s.document["valves"]["intake"]["cam"]["table_angles_deg"][16:18] == [133.99, 134.0]
+    x, y = zip(*[(p.x, p.y) for p in s.handles("intake")], strict=True)
+    # a point added at 1.5 cam deg from the nose, (119 + 2 x 1.5 =) 122 crank deg, and the last one removed
+    assert s.set_points("intake", [*x[:-1], h["point.16"].x], [*y[:-1], 10.2])
+    cam = s.document["valves"]["intake"]["cam"]
+    assert len(cam["table_angles_deg"]) == 31 and cam["table_angles_deg"][-1] == 278.0
+    k = cam["table_lifts_mm"].index(10.2)
+    assert cam["table_angles_deg"][k] == pytest.approx(122.0, abs=0.2)
+    # the TOML saved reads back to the same design
+    again = api.design(tomllib.loads(s.toml()), dynamics=False)
+    assert again["series"]["intake"]["valve_lift_mm"] == s.good["series"]["intake"]["valve_lift_mm"]
+
+
+def test_kurz_peak_and_shape_factor_handles():
+    s = Session.start()
+    h = {x.name: x for x in s.handles("intake")}
+    # the Kurz law's positive acceleration is a half sine over phi1 (Valve-train practical works (n.d.), work 2):
+    # its peak at -phi_p0 + phi1 / 2 = -71 + 27 / 2 = -57.5 cam deg
+    assert h["peak"].x == pytest.approx(-57.5)
+    assert s.drag("intake", "peak", -58.5, h["peak"].y)
+    cam = s.document["valves"]["intake"]["cam"]
+    # phi1 = 2 x (71 - 58.5) = 25 cam deg; phi2 = 27 + 6 - 25 = 8 (the phi2/phi3 boundary at -38 stays)
+    assert (cam["phi1_deg"], cam["phi2_deg"], cam["phi3_deg"]) == (25.0, 8.0, 38.0)
+    series = s.good["series"]["intake"]
+    nose = float(np.interp(0.0, series["cam_deg"], series["valve_acceleration_m_s2"]))
+    assert s.drag("intake", "phi2", -38.0, 0.5 * nose)
+    assert s.document["valves"]["intake"]["cam"]["shape_factor"] == 0.5
+    # Z = j_T2K / j_T3K, the accelerations at the phi2/phi3 junction and at the nose (the law's definition, work 2)
+    series = s.good["series"]["intake"]
+    a = np.interp([-38.0, 0.0], series["cam_deg"], series["valve_acceleration_m_s2"])
+    assert a[0] / a[1] == pytest.approx(0.5, rel=1e-3)
+
+
+def test_polydyne_peak_handle_sets_p():
+    from pathlib import Path
+
+    examples = Path(__file__).parents[2] / "examples"
+    s = Session.start((examples / "seed000-polydyne.toml").read_text(encoding="utf-8"), examples)
+    h = {x.name: x for x in s.handles("intake")}
+    # h = h_nose (1 + C2 x^2 + Cp x^p + ...), x = theta / phi_p0; p = 8, q, r, s = 14, 20, 26: the closed-form
+    # coefficients (3.4)-(3.8) of Valve-train practical works (n.d.), work 3; the acceleration peaks where the third
+    # derivative, sum C_k k (k-1) (k-2) x^(k-3), vanishes: x = 0.8088 (its root in (0, 1) but x = 1, the start of
+    # lift, where the law makes it vanish; numpy's roots below), on the opening flank at -71 x 0.8088 = -57.43 cam
+    # deg (phi_p0 = (26 + 180 + 78) / 4 = 71)
+    c = {8: 1.87243, 14: -1.60494, 20: 0.74897, 26: -0.14403}
+    third = np.zeros(24)
+    for k, ck in c.items():
+        third[26 - k] = ck * k * (k - 1) * (k - 2)         # highest power (x^23) first
+    roots = np.roots(third)
+    x = [r.real for r in roots if abs(r.imag) < 1e-9 and 0.1 < r.real < 0.99]
+    assert len(x) == 1 and h["peak"].x == pytest.approx(-71.0 * x[0], abs=71.0 / 2000)
+    assert s.drag("intake", "peak", -62.0, h["peak"].y)
+    p = s.document["valves"]["intake"]["cam"]["p"]
+    assert p > 8                           # a peak nearer the start of lift: a larger p
+    # the redrawn acceleration peaks under the pointer (the series every 0.5 cam deg)
+    series = s.good["series"]["intake"]
+    angle, acc = np.array(series["cam_deg"]), np.array(series["valve_acceleration_m_s2"], dtype=float)
+    opening = angle < 0.0
+    assert angle[opening][np.nanargmax(acc[opening])] == pytest.approx(-62.0, abs=0.5)
+
+
+def test_checks_of_the_sweeps_are_pending_until_the_whole_design_comes():
+    import time
+
+    d = Designer(Document(), Session.start())
+    # the built-in example: both valves with a [dynamics] section, two checks each (seating velocity, jump speed)
+    def dynamic():
+        return [k for k in d.checks.data["key"] if "dynamic seating velocity" in k or "(jump)" in k]
+
+    assert dynamic() == []
+    d.draw_sweep(d.generation, Session.settle(d.session.good_document), time.time())
+    found = dynamic()
+    assert len(found) == 4
+    f = next(f for _, group in form(d.session.document) for f in group if f.path == "engine.rated_speed_rpm")
+    d.on_field(f, "value", 7000, 6500)
+    data = d.checks.data
+    rows = [i for i, k in enumerate(data["key"]) if k in found]
+    assert len(rows) == 4
+    assert {data["value"][i] for i in rows} == {"…"}
+    assert {data["colour"][i] for i in rows} == {SEVERITY_COLOURS["pending"]}
+    d.draw_sweep(d.generation, Session.settle(d.session.good_document), time.time())
+    assert "…" not in d.checks.data["value"]

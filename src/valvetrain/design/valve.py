@@ -404,7 +404,8 @@ def law_stage(valve, engine, law=None) -> CamResult:
                    f"{MAX_LIFT_TO_THROAT * valve.throat_diameter / MM:.4g} mm (the curtain area already equals the "
                    "throat area at a quarter of the diameter)")
         if cam.law == "table":
-            raise ValueError(Problem("cam.table_file", f"the measured valve lift = {lift / MM:.4g} mm: {allowed}"))
+            key = "cam.table_file" if cam.table_file is not None else "cam.table_lifts_mm"
+            raise ValueError(Problem(key, f"the measured valve lift = {lift / MM:.4g} mm: {allowed}"))
         raise ValueError(Problem("max_lift_mm", allowed, f"{lift / MM:.4g} mm"))
     omega = engine.rated_speed / 2.0
     ext = law.extremes(omega)

@@ -19,7 +19,7 @@ import numpy as np
 from pydantic import Field, ValidationError, model_validator
 
 from ..checks import check
-from ..files import read_lift_table, shown_path
+from ..files import LIFT_TABLE_RANGES, read_lift_table, shown_path
 from ..followers import REGISTRY as FOLLOWERS
 from ..laws import (AsymmetricLaw, CombinedLaw, ConstantAccelerationLaw, DynamicLaw, HarmonicLaw, KurzLaw, PolydyneLaw,
                     PolynomialLaw, PowerPolynomialLaw, TangentLaw, ThreeArcLaw)
@@ -669,6 +669,19 @@ class TangentCam(_CamBase):
         return _rampless_or_ramped(self, valve, engine)
 
 
+MIN_TABLE_POINTS = 10
+"""Fewest points of an inline lift table, as of a table file (:func:`valvetrain.files.read_lift_table`)."""
+
+MAX_INLINE_POINTS = 10_000
+"""Most points of an inline lift table (a longer table goes in a file)."""
+
+TABLE_ANGLE = _bounded(*LIFT_TABLE_RANGES["angle_deg"][:2], "deg", low_open=False)
+"""An angle of an inline lift table, bounded as in a table file [crank or cam deg, as ``table_angle`` says]."""
+
+TABLE_LIFT = Length(*LIFT_TABLE_RANGES["lift_mm"][:2], low_open=False)
+"""A lift of an inline lift table, bounded as in a table file [mm]."""
+
+
 @register
 class TableCam(_CamBase):
     """[valves.NAME.cam] with law = "table": a measured lift table (Shang Hanji (1988), sections 5.1-5.3, reconstructed).
@@ -676,10 +689,15 @@ class TableCam(_CamBase):
     A table of valve lift is divided by the rocker ratio; a table of tappet lift is the cam's lift with its ramps,
     and the valve moves once the clearance is taken up.  The table sets the lift and the timing: a ``max_lift_mm``
     given beside it must agree with it to 1 %, ``opens_deg``/``closes_deg`` are checked against it.  The lobe must
-    open the valve during the valve's own stroke."""
+    open the valve during the valve's own stroke.  The table is a file (``table_file``) or its points inline
+    (``table_angles_deg``, ``table_lifts_mm``: the designer's control points)."""
 
     law: Literal["table"]
-    table_file: str
+    table_file: Optional[str] = None
+    table_angles_deg: Optional[Annotated[list[TABLE_ANGLE], Field(min_length=MIN_TABLE_POINTS,
+                                                                  max_length=MAX_INLINE_POINTS)]] = None
+    table_lifts_mm: Optional[Annotated[list[TABLE_LIFT], Field(min_length=MIN_TABLE_POINTS,
+                                                               max_length=MAX_INLINE_POINTS)]] = None
     table_angle: Literal["crank", "cam"]
     table_lift_at: Literal["valve", "tappet"]
     table_zero: Literal["gas_exchange_tdc", "firing_tdc"] = "gas_exchange_tdc"
@@ -690,15 +708,37 @@ class TableCam(_CamBase):
     needs_timing: ClassVar[bool] = False
     si_extras: ClassVar[tuple] = ("table",)
 
+    @model_validator(mode="after")
+    def _one_table(self):
+        inline = (self.table_angles_deg, self.table_lifts_mm)
+        if (self.table_file is None) == all(v is None for v in inline):
+            raise ValueError("give the table as table_file or as table_angles_deg and table_lifts_mm, one of the two")
+        if self.table_file is None:
+            if None in inline or len(inline[0]) != len(inline[1]):
+                sizes = [None if v is None else len(v) for v in inline]
+                raise ValueError(f"table_angles_deg and table_lifts_mm need as many points each (got {sizes[0]} and "
+                                 f"{sizes[1]})")
+            back = np.flatnonzero(np.diff(inline[0]) <= 0.0)
+            if back.size:
+                i = int(back[0]) + 1
+                raise ValueError(f"table_angles_deg[{i}] = {inline[0][i]:g} must be larger than the previous "
+                                 f"{inline[0][i - 1]:g}")
+        return self
+
     def read_extras(self, root):
-        """The table as read, ``(angle_deg, lift_mm)`` arrays (:func:`valvetrain.files.read_lift_table`)."""
+        """The table, ``(angle_deg, lift_mm)`` arrays: as read from ``table_file``
+        (:func:`valvetrain.files.read_lift_table`) or the inline points."""
+        if self.table_file is None:
+            return {"table": (np.asarray(self.table_angles_deg, dtype=float),
+                              np.asarray(self.table_lifts_mm, dtype=float))}
         return {"table": read_lift_table(self.table_file)}
 
     def build(self, valve, engine):
         try:
             return self._checked_law(valve, engine)
         except ValueError as exc:
-            raise ValueError(f"{shown_path(self.table_file)}: {exc}") from None
+            where = "table_angles_deg, table_lifts_mm" if self.table_file is None else shown_path(self.table_file)
+            raise ValueError(f"{where}: {exc}") from None
 
     def _checked_law(self, valve, engine):
         cam, i_k = valve.cam, valve.rocker_ratio

@@ -779,7 +779,7 @@ def _resolve_tables(spec):
     """Make every valve's table_file absolute (relative to the specification file's folder)."""
     valves = {}
     for name, v in spec.valves.items():
-        if v.cam.law == "table":
+        if v.cam.law == "table" and v.cam.table_file is not None:
             cam = v.cam.model_copy(update={"table_file": str(resolve_path(spec, v.cam.table_file))})
             v = v.model_copy(update={"cam": cam})
         valves[name] = v

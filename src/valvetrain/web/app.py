@@ -11,6 +11,7 @@ drag to the redrawn kinematics, ms) and ``window.vtSweepTimes`` (to the redrawn 
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import replace
 from functools import partial
+import time
 
 from bokeh.layouts import column, row
 from bokeh.models import (Button, ColumnDataSource, CustomJS, DataRange1d, DataTable, LinearAxis, Div, HTMLTemplateFormatter, LinearColorMapper,
@@ -18,14 +19,13 @@ from bokeh.models import (Button, ColumnDataSource, CustomJS, DataRange1d, DataT
 from bokeh.plotting import figure
 import numpy as np
 
-from .. import api
 from ..languages import LANGS
 from ..locale import catalogue
 from ..report.html import check_range
 from ..report.i18n import TEXT
 from ..report.names import label, record_quantity_text, translate
 from ..units import per_cam_degree
-from .session import form, parse_value, value_text, without_nones
+from .session import form, has_points, parse_value, value_text
 
 WORDS = {lang: catalogue(lang)["designer"] for lang in LANGS}
 """The designer's own words in each language, from the catalogue's ``[designer]`` (the plots' and the checks' come from
@@ -53,12 +53,20 @@ PLOTS = {"lift": ("angle", "lift"), "velocity": ("angle", "velocity"), "accelera
 """Each plot's source and column of ordinates."""
 
 
+HANDLE_ROOM = 0.5
+"""The kinematic plots' room around the curves, a fraction of their span (a quarter above, a quarter below): how
+far one drag takes a handle beyond the highest or lowest point."""
+
+
 def per_degree(values, order, omega) -> np.ndarray:
     """A derivative of the lift at the rated speed (m/s, m/s², m/s³) in mm per camshaft degree to the ``order``
     (:func:`valvetrain.units.per_cam_degree`), from the series' list."""
     return per_cam_degree(np.array(values, dtype=float), order, omega)
 
-SEVERITY_COLOURS = {"failure": "#f4c7c3", "warning": "#fce8b2", "info": "#e8eaf6", "pass": "#d9ead3"}
+SEVERITY_COLOURS = {"failure": "#f4c7c3", "warning": "#fce8b2", "info": "#e8eaf6", "pass": "#d9ead3",
+                    "pending": "#eeeeee"}
+"""The colours of the checks table's rows: by severity when failing, passing, and pending (its speed sweeps to
+come)."""
 
 STAMP_JS = """
 const now = performance.now();
@@ -66,9 +74,14 @@ requestAnimationFrame(() => requestAnimationFrame(() => {
   const t = performance.now();
   window[key] = window[key] || [];
   window[key + 'Arrived'] = window[key + 'Arrived'] || [];
+  window[key + 'Server'] = window[key + 'Server'] || [];
   if (window.vtRelease !== undefined) {
     window[key].push(t - window.vtRelease);
     window[key + 'Arrived'].push(now - window.vtRelease);
+    const data = cb_obj.data instanceof Map ? Object.fromEntries(cb_obj.data) : cb_obj.data;
+    const release = performance.timeOrigin + window.vtRelease;
+    window[key + 'Server'].push([data.began[0] - release, data.ended[0] - data.began[0],
+                                 performance.timeOrigin + now - data.ended[0]]);
   }
   window[key + 'Done'] = (window[key + 'Done'] || 0) + 1;
 }));
@@ -108,9 +121,11 @@ def _rows_follow(table):
     table.source.js_on_change("data", CustomJS(args={"table": table}, code="table.view.change.emit();"))
 
 
-def _count(stamp):
-    """One more redraw on a stamp's source (its change in the page stamps the time)."""
-    stamp.data = {"n": [stamp.data["n"][0] + 1]}
+def _count(stamp, began):
+    """One more redraw on a stamp's source (its change in the page stamps the time), with the server's times
+    ``began`` (``time.time()`` when the change came) and now, as ms since the epoch: the page, on the same clock,
+    parts its wait into the way up, the server and the way down."""
+    stamp.data = {"n": [stamp.data["n"][0] + 1], "began": [1e3 * began], "ended": [1e3 * time.time()]}
 
 
 class Designer:
@@ -124,7 +139,7 @@ class Designer:
         self._syncing = False
         self.downloads = 0
         self.per_degree = False
-        self.sweep_result, self.base_sweep = None, None
+        self.base_sweep = None
         self.sweep_due = False
         self.fields = {}
         self.errors = {}
@@ -183,16 +198,20 @@ class Designer:
         self.base_sources = {k: ColumnDataSource({c: [] for c in columns}) for k, columns in SOURCES.items()}
         self.figures = {}
         for name, *_ in KINEMATIC_PLOTS:
-            self.figures[name] = self._plot(figure(height=210, width=520, tools=tools, name=f"plot-{name}"), name)
+            # room above and below the curves for the handles: an edit tool drops the pointer's moves outside the
+            # plot's frame, so a handle at the top of a tight range could not be dragged higher
+            self.figures[name] = self._plot(figure(height=210, width=520, tools=tools, name=f"plot-{name}",
+                                                   y_range=DataRange1d(range_padding=HANDLE_ROOM)), name)
         self.figures["lift"].line("x", "tappet", source=self.sources["angle"], color="#2ca02c", line_width=1)
         self.segments = ColumnDataSource({"x": [], "y0": [], "y1": []})
         self.figures["acceleration"].segment("x", "y0", "x", "y1", source=self.segments, color="#bbbbbb",
                                              line_dash="dotted")
-        self.handles = {}
+        self.handles, self.draw_tools = {}, {}
         for plot in ("lift", "acceleration"):
             src = ColumnDataSource({"x": [], "y": [], "name": []}, name=f"handles-{plot}")
             r = self.figures[plot].scatter("x", "y", source=src, size=13, color="#d62728", marker="circle")
             tool = PointDrawTool(renderers=[r], add=False, drag=True)
+            self.draw_tools[plot] = tool
             self.figures[plot].add_tools(tool)
             self.figures[plot].toolbar.active_drag = tool
             self.figures[plot].js_on_event("panend", CustomJS(code="window.vtRelease = performance.now();"))
@@ -254,14 +273,14 @@ class Designer:
         self.figures["sweep_map"] = p
 
         # the stamps are data sources, not widgets: a widget's change lays the whole page out again (~100 ms)
-        self.kinematic_stamp = ColumnDataSource({"n": [0]}, name="kinematic-stamp")
+        self.kinematic_stamp = ColumnDataSource({"n": [0], "began": [0.0], "ended": [0.0]}, name="kinematic-stamp")
         self.kinematic_stamp.js_on_change("data", CustomJS(args={"key": "vtTimes"}, code=STAMP_JS))
         # the page says when it has drawn the kinematics: the sweep starts then, not to hold their drawing up
         self.drawn = ColumnDataSource({"n": [0]}, name="drawn")
         self.drawn.on_change("data", self.on_drawn)
         self.kinematic_stamp.js_on_change("data", CustomJS(args={"stamp": self.kinematic_stamp, "drawn": self.drawn},
                                                            code=DRAWN_JS))
-        self.sweep_stamp = ColumnDataSource({"n": [0]}, name="sweep-stamp")
+        self.sweep_stamp = ColumnDataSource({"n": [0], "began": [0.0], "ended": [0.0]}, name="sweep-stamp")
         self.sweep_stamp.js_on_change("data", CustomJS(args={"key": "vtSweepTimes"}, code=STAMP_JS))
 
         f = self.figures
@@ -322,22 +341,34 @@ class Designer:
         self.pin_button.label, self.toml_button.label, self.report_button.label = w["pin"], w["toml"], w["report"]
 
     def _checks(self):
-        results = self.session.good["results"]
-        base = {c["quantity"]: c for c in (self.session.baseline or {"results": {"checks": []}})["results"]["checks"]}
+        """The checks table: the whole design's checks when they have come, else the good design's and, pending, the
+        ones of the last whole design that only the speed sweeps give."""
+        s = self.session
+        base = {c["quantity"]: c for c in (s.baseline or {"results": {"checks": []}})["results"]["checks"]}
         out = {k: [] for k in self.checks.data}
-        for c in sorted(results["checks"], key=lambda c: (c["pass"], {"failure": 0, "warning": 1}.get(c["severity"], 2),
-                                                          c["margin"] if c["margin"] is not None else 1e300)):
-            out["key"].append(c["quantity"])
-            out["quantity"].append(record_quantity_text(c, self.lang))
+        for c in sorted(s.checked["checks"], key=lambda c: (c["pass"], {"failure": 0, "warning": 1}.get(c["severity"], 2),
+                                                            c["margin"] if c["margin"] is not None else 1e300)):
+            self._check_row(out, c, base)
             out["value"].append("-" if c["value"] is None else f"{c['value']:.5g} {c['unit']}".rstrip())
-            b = base.get(c["quantity"])
-            out["baseline"].append("" if b is None or b["value"] is None else f"{b['value']:.5g}"
-                                   + ("" if b["pass"] else " ✗"))
-            out["allowed"].append(check_range(c, self.lang))
             out["margin"].append("" if c["margin"] is None else f"{c['margin']:+.3g}")
-            out["source"].append(translate(c["source"], self.lang))
             out["colour"].append(SEVERITY_COLOURS["pass" if c["pass"] or c["accepted"] else c["severity"]])
+        for c in s.pending:
+            self._check_row(out, c, base)
+            out["value"].append("…")
+            out["margin"].append("")
+            out["colour"].append(SEVERITY_COLOURS["pending"])
         self.checks.data = out
+
+    def _check_row(self, out, c, base):
+        """The columns of a check's row that do not wait for its value: its name, the baseline, the range, the
+        source."""
+        out["key"].append(c["quantity"])
+        out["quantity"].append(record_quantity_text(c, self.lang))
+        b = base.get(c["quantity"])
+        out["baseline"].append("" if b is None or b["value"] is None else f"{b['value']:.5g}"
+                               + ("" if b["pass"] else " ✗"))
+        out["allowed"].append(check_range(c, self.lang))
+        out["source"].append(translate(c["source"], self.lang))
 
     def _card(self):
         v = self.session.good["results"]["valves"][self.valve]
@@ -367,9 +398,10 @@ class Designer:
                                    "y": _array(series["contour_y_mm"] + series["contour_y_mm"][:1])}
         sources["spring"].data = {"x": _array(series["spring_lift_mm"]), "y": _array(series["required_force_N"])}
 
-    def redraw(self, sweep=True):
+    def redraw(self, sweep=True, began=None):
         """Draw the good design (and the baseline), its checks, card and handles; start its speed sweep (``sweep``)
-        or draw the last one again."""
+        or draw the last one again.  ``began``: ``time.time()`` when the change came (default now)."""
+        began = time.time() if began is None else began
         s = self.session
         series = s.good["series"][self.valve]
         omega = self._omega(s.good)
@@ -389,12 +421,14 @@ class Designer:
         self._handles(omega)
         self._checks()
         self._card()
-        _count(self.kinematic_stamp)
-        self.sweep_due = sweep
-        if not sweep and self.sweep_result is not None:
-            self.draw_sweep(self.generation, self.sweep_result)
+        _count(self.kinematic_stamp, began)
+        self.sweep_due = self.sweep_due or sweep          # a switch of language before the page drew keeps it due
+        if self.session.full is not None:
+            self._sweep_panel()
 
     def _handles(self, omega=None):
+        # the points of an inline lift table are added (a tap) and removed (selected, Backspace) on the lift plot
+        self.draw_tools["lift"].add = has_points(self.session.good_document["valves"][self.valve].get("cam", {}))
         self._placed = {}
         found = self.session.handles(self.valve)
         for plot, src in self.handles.items():
@@ -423,6 +457,8 @@ class Designer:
             self.start_sweep()
 
     def start_sweep(self):
+        """The whole design of the good document, with its speed sweeps, in the worker thread
+        (:meth:`~valvetrain.web.session.Session.settle`); a newer change stops it at its next speed."""
         self.generation += 1
         generation = self.generation
         self.sweep_status.text = WORDS[self.lang]["sweeping"]
@@ -433,11 +469,12 @@ class Designer:
                 raise Stale
 
         def work():
+            began = time.time()
             try:
-                result = api.sweep(without_nones(document), progress=progress)
+                result = self.session.settle(document, progress=progress)
             except Stale:
                 return
-            self.doc.add_next_tick_callback(partial(self.draw_sweep, generation, result))
+            self.doc.add_next_tick_callback(partial(self.draw_sweep, generation, result, began))
 
         SWEEP_WORKERS.submit(work)
 
@@ -450,13 +487,23 @@ class Designer:
         sources["seating"].data = {"x": sw["speed_rpm"],
                                    "y": [None if v is None else abs(v) for v in sw["seating_velocity_m_s"]]}
 
-    def draw_sweep(self, generation, result):
+    def draw_sweep(self, generation, result, began):
+        """Keep the whole design of redraw ``generation`` if it is the newest: its checks to the table, its sweeps
+        to the sweep panel; ``began`` as for :meth:`redraw`, when the worker took it up."""
         if generation != self.generation:
             return
+        self.session.settled(result)
+        if result["ok"] and result["results"] is not None:
+            self._checks()
+        self._sweep_panel()
+        _count(self.sweep_stamp, began)
+
+    def _sweep_panel(self):
+        """The sweep panel of the whole design kept (its problems in the panel's title when it did not design)."""
+        result = self.session.full
         if not result["ok"]:
             self.sweep_status.text = "; ".join(p["text"] for p in result["errors"])
             return
-        self.sweep_result = result
         sw = self._sweep_of(result)
         self._sweep_curves(sw, self.sweep_sources)
         if self.base_sweep is not None:
@@ -473,10 +520,10 @@ class Designer:
         self.sweep_status.text = ", ".join(f"{t[k]} {v:.5g} rpm" for k, v in (("jump", sw["jump_speed_rpm"]),
                                                                                ("bounce", sw["bounce_speed_rpm"]))
                                            if v is not None) or "-"
-        _count(self.sweep_stamp)
 
     # --- callbacks -------------------------------------------------------------------------------------------------
     def on_field(self, f, attr, old, new):
+        began = time.time()
         if self._syncing:
             return
         try:
@@ -486,27 +533,33 @@ class Designer:
             self.erring.add(f.path)
             return
         if self.session.edit({f.path: value}):
-            self.redraw()
+            self.redraw(began=began)
         self.show_problems()
 
     def on_handles(self, plot, attr, old, new):
+        began = time.time()
         placed = getattr(self, "_placed", {}).get(plot, [])
-        if len(new["x"]) != len(placed):      # a point deleted: put the handles back
-            self._handles(self._omega(self.session.good))
+        if len(new["x"]) != len(placed):      # a point added or removed: a table's points, else put them back
+            keys = self.session.set_points(self.valve, new["x"], new["y"]) if self.draw_tools[plot].add else {}
+            self._answer(keys, began)
             return
         omega = self._omega(self.session.good)
         for (name, x, y), nx, ny in zip(placed, new["x"], new["y"], strict=True):
             if abs(nx - x) > 1e-9 or abs(ny - y) > 1e-9:
                 if plot == "acceleration" and omega is not None:     # to m/s², as the session takes it
                     ny = ny / float(per_degree(1.0, 2, omega))
-                keys = self.session.drag(self.valve, name, nx, ny)
-                if keys:
-                    self.redraw()
-                else:
-                    self._handles(self._omega(self.session.good))
-                self.show_problems()
-                self._sync_fields(keys)
+                self._answer(self.session.drag(self.valve, name, nx, ny), began)
                 return
+
+    def _answer(self, keys, began):
+        """After a change of the handles that set ``keys`` (none: it did not design): redraw, or put the handles
+        back; the problems and the panel's inputs follow."""
+        if keys:
+            self.redraw(began=began)
+        else:
+            self._handles(self._omega(self.session.good))
+        self.show_problems()
+        self._sync_fields(keys)
 
     def _sync_fields(self, values):
         """The panel's inputs show the values a drag set (``{dotted key: value}``)."""
@@ -544,6 +597,7 @@ class Designer:
 
     def on_pin(self):
         self.session.pin()
-        self.base_sweep = self.sweep_result
+        full = self.session.full
+        self.base_sweep = full if full is not None and full["ok"] else None
         self.redraw(sweep=False)
 

@@ -17,6 +17,7 @@ import tomli_w
 
 from .. import api
 from ..specification import REGISTRY, SpecError, example_text, set_keys
+from ..laws import PolydyneLaw
 from ..specification.cams import main_half_angle_deg
 from ..specification.fields import Range
 from ..specification.models import Drive, Dynamics, Engine, Masses, Spring, Valve
@@ -165,22 +166,80 @@ def handles(document, spec, name, series) -> list[Handle]:
     the points of its law's shape on the opening flank (the closing flank of a symmetric cam follows by the law):
 
     - a cam of segment angles (``phi1_deg``, ``phi2_deg``: Kurz, constant acceleration): the two boundaries between
-      its segments, ``phi1`` and ``phi2``;
+      its segments, ``phi1`` and ``phi2``, and of a Kurz cam the positive peak (``peak``, in the middle of phi1);
+    - a polydyne cam: its positive peak (``peak``, where the exponents put it: :func:`polydyne_peak`);
     - a power-polynomial cam: the start of the ramp (``ramp``), the positive peak (``peak``, where
       ``peak_position`` puts it and as high as ``peak_acceleration_mm_per_rad2`` makes it), the end of the positive
       part (``phi1``) and the negative peak (``trough``, ``trough_position``);
     - a combined cam: the end of each segment but the last (``end.K``, segment K counted from 1), whose height sets
       a ratio that names that segment.
+
+    A lift table given by its points inline (:func:`has_points`) has a handle on the lift plot at each point
+    (``point.K``, K counted from 0), and no other.
     """
     valve = document["valves"][name]
+    cam = valve.get("cam", {})
+    if has_points(cam):
+        x = TablePoints(cam, series).plot_x(cam["table_angles_deg"])
+        return [Handle(f"point.{k}", "lift", float(xk), float(yk))
+                for k, (xk, yk) in enumerate(zip(x, cam["table_lifts_mm"], strict=True))]
     out = []
     if valve.get("max_lift_mm") is not None:
         out.append(Handle("nose", "lift", 0.0, _interp(series, "valve_lift_mm", 0.0)))
-    cam = valve.get("cam", {})
     half = main_half_angle_deg(spec.valves[name], spec.engine.strokes)
     for key, x in _shape_points(cam, half, series["segments_cam_deg"]):
         out.append(Handle(key, "acceleration", x, _interp(series, "valve_acceleration_m_s2", x)))
     return out
+
+
+def has_points(cam) -> bool:
+    """Whether a cam section is a lift table given by its points inline (``table_angles_deg``,
+    ``table_lifts_mm``): the designer's control points, dragged, added and removed on the lift plot."""
+    return cam.get("law") == "table" and cam.get("table_angles_deg") is not None
+
+
+@dataclass(frozen=True)
+class TablePoints:
+    """The map between an inline lift table's angles and the lift plot's camshaft angle from the nose: the table's
+    angles in its frame (``table_angle`` crank or cam deg from ``table_zero``) are moved into the engine's cam frame
+    as the table law does it (:func:`valvetrain.laws.measured.lobe_table`: crank deg halved, the firing TDC 360
+    crank deg after the gas-exchange TDC, whole turns so that the highest point lies within (-180, 180] cam deg),
+    then measured from the nose, which the design's series give (crank deg = nose + 2 x cam deg)."""
+
+    scale: float          # cam deg per table deg
+    offset: float         # plot cam deg at table angle 0
+
+    def __init__(self, cam, series):
+        revolution = 720.0 if cam["table_angle"] == "crank" else 360.0
+        scale = 360.0 / revolution
+        start = 0.5 * revolution if cam.get("table_zero", "gas_exchange_tdc") == "firing_tdc" else 0.0
+        top = cam["table_angles_deg"][int(np.argmax(cam["table_lifts_mm"]))]
+        turns = np.ceil(((top + start) * scale - 180.0) / 360.0)
+        nose = 0.5 * (series["crank_deg"][0] - 2.0 * series["cam_deg"][0])
+        object.__setattr__(self, "scale", scale)
+        object.__setattr__(self, "offset", start * scale - 360.0 * turns - nose)
+
+    def plot_x(self, angles) -> np.ndarray:
+        """The lift plot's abscissae [cam deg from the nose] of table angles [table deg]."""
+        return self.scale * np.asarray(angles, dtype=float) + self.offset
+
+    def angles(self, x) -> np.ndarray:
+        """The table angles [table deg] of plot abscissae [cam deg from the nose], rounded to
+        :data:`HANDLE_STEP`."""
+        return np.round((np.asarray(x, dtype=float) - self.offset) / self.scale, 2)
+
+
+def _points_moved(at, cam, series, x, y):
+    """``{dotted key: value}`` of an inline table whose points are put at plot abscissae ``x`` [cam deg from the
+    nose] and lifts ``y`` [mm]: sorted by angle, two points closer than :data:`HANDLE_STEP` made one, no lift below
+    zero (the base circle), to :data:`HANDLE_STEP`."""
+    angles = TablePoints(cam, series).angles(x)
+    lifts = np.round(np.maximum(np.asarray(y, dtype=float), 0.0), 3)
+    order = np.argsort(angles, kind="stable")
+    angles, lifts = angles[order], lifts[order]
+    keep = np.concatenate([[True], np.diff(angles) > 0.0])
+    return {f"{at}.cam.table_angles_deg": [float(a) for a in angles[keep]],
+            f"{at}.cam.table_lifts_mm": [float(h) for h in lifts[keep]]}
 
 
 def _shape_points(cam, half, edges):
@@ -193,9 +252,56 @@ def _shape_points(cam, half, edges):
     if law == "combined":
         ends = -half + np.cumsum([seg["length_deg"] for seg in cam["segments"]])
         return [(f"end.{k}", float(x)) for k, x in enumerate(ends[:-1], 1)]
+    if law == "polydyne":
+        return [("peak", -half * polydyne_peak(*_exponents(cam)))]
     if {"phi1_deg", "phi2_deg"} <= set(cam):
-        return [("phi1", -half + cam["phi1_deg"]), ("phi2", -half + cam["phi1_deg"] + cam["phi2_deg"])]
+        out = [("phi1", -half + cam["phi1_deg"]), ("phi2", -half + cam["phi1_deg"] + cam["phi2_deg"])]
+        # the Kurz law's positive acceleration is a half sine over phi1: its peak in the middle
+        return out + ([("peak", -half + 0.5 * cam["phi1_deg"])] if law == "kurz" else [])
     return []
+
+
+def _exponents(cam):
+    """A polydyne cam's exponents p, q, r, s (None: the law's progression)."""
+    return tuple(cam.get(k) for k in ("p", "q", "r", "s"))
+
+
+PEAK_GRID = np.linspace(0.0, 1.0, 2001)
+"""The fractions of the half-angle on which :func:`polydyne_peak` looks for the peak."""
+
+
+def polydyne_peak(p, q=None, r=None, s=None) -> float:
+    """Where the positive acceleration of a polydyne lift peaks on a flank: the fraction x of the half-angle phi_p0
+    from the nose (0 at the nose, 1 at the start of lift), to 1/2000.
+
+    Parameters
+    ----------
+    p, q, r, s : float
+        The exponents (q, r, s None: the progression of the law).
+
+    Notes
+    -----
+    h = h_nose (1 + C2 x^2 + Cp x^p + Cq x^q + Cr x^r + Cs x^s): the lift and the half-angle scale the acceleration
+    and its abscissa out, so the peak's x depends on the exponents alone.  Of the law without a ramp: a ramp joined
+    to the flank moves the peak of the cam by little.
+
+    References
+    ----------
+    Valve-train practical works (n.d.), work 3, eqs. (3.1)-(3.8).
+    """
+    acceleration = PolydyneLaw(1.0, 1.0, p, q, r, s).derivatives(-PEAK_GRID)[2]
+    return float(PEAK_GRID[np.argmax(acceleration)])
+
+
+def polydyne_p(x, q=None, r=None, s=None) -> float:
+    """The first exponent p (3 up to 200, below a given q) of a polydyne lift whose positive acceleration peaks at
+    the fraction ``x`` of the half-angle from the nose (:func:`polydyne_peak`, which grows with p: 0.40 at p = 3,
+    0.81 at 8, 0.99 at 200), by bisection, to 0.01."""
+    low, high = 3.0, min(200.0, q - 0.01) if q is not None else 200.0
+    while high - low > 0.005:
+        mid = 0.5 * (low + high)
+        low, high = (mid, high) if polydyne_peak(mid, q, r, s) < x else (low, mid)
+    return round(0.5 * (low + high), 2)
 
 
 def _split(start, a, b, x):
@@ -211,6 +317,9 @@ def _position(x, start, length):
     return round(min(max((x - start) / length, POSITION_RANGE[0]), POSITION_RANGE[1]), 3)
 
 
+SHAPE_FACTOR_RANGE = (0.05, 0.99)
+"""The range a Kurz cam's shape factor Z is dragged in (the specification allows [0.05, 1))."""
+
 POSITION_RANGE = (0.02, 0.98)
 """The range a peak position (a fraction of its part) is dragged in: at 0 or 1 the two pieces of a part become one."""
 
@@ -221,17 +330,30 @@ def moved(document, spec, name, handle, x, y, series) -> dict[str, Any]:
 
     The nose sets the valve lift ``max_lift_mm`` to y.  A boundary between two angles sets both so that the other
     boundaries stay and the flank still adds up to the half-angle (phi1_deg and phi2_deg for ``phi1`` of a cam of
-    segment angles, phi2_deg and, where it is given, phi3_deg for ``phi2``; the lengths of segments K and K+1 for
+    segment angles, and for the ``peak`` of a Kurz cam, which puts the middle of phi1 at x; phi2_deg and, where it is
+    given, phi3_deg for ``phi2``, whose height also sets a Kurz cam's shape factor Z, the ratio of the accelerations
+    at the phi2/phi3 junction and at the nose, y over the nose's; the lengths of segments K and K+1 for
     ``end.K`` of a combined cam, and the value of a ratio naming segment K, y over the acceleration at the nose).
     Of a power-polynomial cam, ``ramp`` sets ramp_angle_deg (the ramp ends where the main event starts), ``phi1``
     the positive part phi1_deg, ``peak`` the peak_position in it and peak_acceleration_mm_per_rad2 in the ratio of
     y to the peak's present height (the valve's acceleration is the tappet's analogue times the rocker ratio and the
-    camshaft speed squared), ``trough`` the trough_position in the negative part.
+    camshaft speed squared), ``trough`` the trough_position in the negative part.  The ``peak`` of a polydyne cam
+    sets p so that the peak lies at x (:func:`polydyne_p`; its height follows from the lift).  A point ``point.K`` of an inline
+    lift table sets its angle (kept between its neighbours) and its lift (at least zero).
     """
     at = f"valves.{name}"
     if handle == "nose":
         return {f"{at}.max_lift_mm": round(max(y, HANDLE_STEP["mm"]), 3)}
     cam = document["valves"][name]["cam"]
+    if has_points(cam):
+        k = int(handle.split(".")[1])
+        x_all = TablePoints(cam, series).plot_x(cam["table_angles_deg"])
+        lifts = list(cam["table_lifts_mm"])
+        lo = x_all[k - 1] if k > 0 else -np.inf
+        hi = x_all[k + 1] if k + 1 < len(x_all) else np.inf
+        step = HANDLE_STEP["deg"] * TablePoints(cam, series).scale
+        x_all[k], lifts[k] = min(max(x, lo + step), hi - step), y        # a point stays between its neighbours
+        return _points_moved(at, cam, series, x_all, lifts)
     half = main_half_angle_deg(spec.valves[name], spec.engine.strokes)
     edges = series["segments_cam_deg"]
     if cam["law"] == "power_polynomial":
@@ -258,28 +380,41 @@ def moved(document, spec, name, handle, x, y, series) -> dict[str, Any]:
             out[f"{at}.cam.ratios"] = [{**r, "value": round(y / nose, 3)} if r["segment"] == k else dict(r)
                                        for r in ratios]
         return out
+    if cam["law"] == "polydyne":
+        _, q, r, s = _exponents(cam)
+        return {f"{at}.cam.p": polydyne_p(min(max(-x / half, 0.0), 1.0), q, r, s)}
     phi1, phi2 = cam["phi1_deg"], cam["phi2_deg"]
     phi3 = cam.get("phi3_deg")
-    if handle == "phi1":
-        new1, new2 = _split(-half, phi1, phi2, x)
+    if handle in ("phi1", "peak"):
+        new1, new2 = _split(-half, phi1, phi2, x if handle == "phi1" else -half + 2.0 * (x + half))
         return {f"{at}.cam.phi1_deg": new1, f"{at}.cam.phi2_deg": new2}
     new2, new3 = _split(-half + phi1, phi2, half - phi1 - phi2 if phi3 is None else phi3, x)
     out = {f"{at}.cam.phi2_deg": new2}
     if phi3 is not None:
         out[f"{at}.cam.phi3_deg"] = new3
+    if cam["law"] == "kurz":
+        nose = _interp(series, "valve_acceleration_m_s2", 0.0)
+        out[f"{at}.cam.shape_factor"] = round(float(min(max(y / nose, SHAPE_FACTOR_RANGE[0]),
+                                                        SHAPE_FACTOR_RANGE[1])), 3)
     return out
 
 
 @dataclass
 class Session:
     """The state of one tab: the document (a dict of TOML tables) edited, the result of its last good design,
-    the problems of the last edit (key -> message), the baseline pinned."""
+    the problems of the last edit (key -> message), the baseline pinned.
+
+    An edit is answered in two steps: :meth:`apply` designs without the speed sweeps of the ``[dynamics]``
+    sections (``good``: the kinematics, springs and checks in tens of ms); :meth:`settle` adds them (``full``: the
+    checks of the whole design and the sweeps), in the background, and :meth:`settled` keeps it."""
 
     document: dict
     good: dict = None
     good_document: dict = None
     problems: list = field(default_factory=list)
     baseline: dict = None
+    full: dict = None
+    last_full: dict = None
 
     @classmethod
     def start(cls, text=None, source_dir=None):
@@ -302,14 +437,45 @@ class Session:
         return s
 
     def apply(self, document):
-        """Design ``document``; keep it as the good design if it designs, else keep the last good one and the
-        problems.  Returns True when it designed."""
-        result = api.design(without_nones(document))
+        """Design ``document`` without its speed sweeps (:func:`valvetrain.api.design`, ``dynamics=False``; it is
+        validated whole); keep it as the good design if it designs, else keep the last good one and the problems.
+        Returns True when it designed."""
+        result = api.design(without_nones(document), dynamics=False)
         self.document = document
         self.problems = result["errors"]
         if result["ok"]:
             self.good, self.good_document = result, copy.deepcopy(document)
+            self.last_full, self.full = self.full or self.last_full, None
         return result["ok"]
+
+    @staticmethod
+    def settle(document, progress=None):
+        """The whole design of a good document, with its speed sweeps: :func:`valvetrain.api.design` with
+        ``sweeps``; a document without a ``[dynamics]`` section is swept with the default one
+        (:func:`valvetrain.api.sweep`) and its design is the good one (``results`` None).  ``progress`` as there.
+        Pure: called in a worker thread, kept by :meth:`settled`."""
+        plain = without_nones(document)
+        if any("dynamics" in v for v in plain["valves"].values()):
+            return api.design(plain, sweeps=True, progress=progress)
+        return {**api.sweep(plain, progress=progress), "results": None}
+
+    def settled(self, result):
+        """Keep the whole design (:meth:`settle`) of the good document."""
+        self.full = result
+
+    @property
+    def checked(self):
+        """The results whose checks the table shows: the whole design's when it has come, else the good one's."""
+        return (self.full or {}).get("results") or self.good["results"]
+
+    @property
+    def pending(self):
+        """The checks of the last whole design that the good design (without its sweeps) lacks, while its whole
+        design is to come: they are shown as pending."""
+        if self.full is not None or self.last_full is None or self.last_full.get("results") is None:
+            return []
+        have = {c["quantity"] for c in self.good["results"]["checks"]}
+        return [c for c in self.last_full["results"]["checks"] if c["quantity"] not in have]
 
     def edit(self, values):
         """Set dotted keys (``{"engine.rated_speed_rpm": 7500}``) and design; see :meth:`apply`."""
@@ -332,9 +498,17 @@ class Session:
         values = moved(self.good_document, self.spec, name, handle, x, y, self.good["series"][name])
         return values if self.edit(values) else {}
 
+    def set_points(self, name, x, y):
+        """Put the points of valve ``name``'s inline lift table at ``x`` [cam deg from the nose], ``y`` [mm] (points
+        added or removed on the lift plot) and design; see :meth:`drag`."""
+        cam = self.good_document["valves"][name]["cam"]
+        values = _points_moved(f"valves.{name}", cam, self.good["series"][name], x, y)
+        return values if self.edit(values) else {}
+
     def pin(self):
-        """Pin the good design as the baseline that the plots and the checks table compare with."""
-        self.baseline = self.good
+        """Pin the good design as the baseline that the plots and the checks table compare with (with the checks of
+        its whole design when it has come)."""
+        self.baseline = {**self.good, "results": self.checked}
 
     def report(self, lang):
         """The report of the good design as HTML text in ``lang``."""
