@@ -13,13 +13,14 @@ from valvetrain.specification import example_text
 from appendix import PATH as APPENDIX, appendix_text
 
 ARTEFACTS = ["results.json", "report.html", "tables/intake_lift.csv", "contour/intake.csv", "contour/intake.dxf",
-             "plots/intake_kinematics.png", "plots/intake_contour.png", "plots/intake_spring.png"]
+             "plots/intake_kinematics.png", "plots/intake_contour.png", "plots/intake_dynamics_speed.png",
+             "contour/exhaust.dxf", "plots/exhaust_kinematics.png", "plots/valve_timing.png"]
 
-MAIN_FIGURES = {"intake_kinematics.png", "intake_contour.png", "intake_spring.png", "intake_strength_speed.png",
-                "valve_timing.png", "crank_torque.png"}
+MAIN_FIGURES = {"intake_kinematics.png", "intake_contour.png", "valve_timing.png", "crank_torque.png"}
 """The figures of the appendix example that a run draws by default (README, ``--figures``)."""
 
-ON_REQUEST = {"intake_time_area.png", "intake_curvature.png", "crank_forces.png", "crank_pin_polar.png"}
+ON_REQUEST = {"intake_time_area.png", "intake_curvature.png", "intake_spring.png", "intake_strength_speed.png",
+              "crank_forces.png", "crank_pin_polar.png"}
 """Those drawn only with ``--figures all``."""
 
 

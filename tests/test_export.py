@@ -2,6 +2,8 @@
 
 import csv
 import json
+from multiprocessing.reduction import send_handle
+import os
 import sys
 
 import ezdxf
@@ -180,9 +182,9 @@ def test_a_saved_specification_names_its_files_absolutely(tmp_path):
 
 @pytest.mark.skipif(not sys.platform.startswith("linux"), reason="the figures are drawn in a forked process on Linux")
 def test_figures_drawn_in_a_second_process_are_those_drawn_here(tmp_path):
-    """The reference is the same run's figures drawn in this process (no drawer): every file, the PNGs and the report
-    that embeds them included, is the same byte for byte (but the DXF, written by this process either way, which
-    holds its time of writing in $TDCREATE)."""
+    """The reference is the same run's figures drawn and DXF files written in this process (no drawer): every file,
+    the PNGs, the DXF files (written by the drawer) and the report that embeds the figures included, is the same byte
+    for byte."""
     results = run(appendix_spec())
     here = write_outputs(results, tmp_path / "here")
     there = write_outputs(results, tmp_path / "there", drawer=FigureProcess())
@@ -190,7 +192,8 @@ def test_figures_drawn_in_a_second_process_are_those_drawn_here(tmp_path):
     assert [p for p in files if p.suffix == ".png"]
     assert files == sorted(p.relative_to(there) for p in there.rglob("*")
                            if p.is_file() and p.name != ".valvetrain-output")
-    assert all((here / p).read_bytes() == (there / p).read_bytes() for p in files if p.suffix != ".dxf")
+    assert [p for p in files if p.suffix == ".dxf"]
+    assert all((here / p).read_bytes() == (there / p).read_bytes() for p in files)
 
 
 @pytest.mark.skipif(not sys.platform.startswith("linux"), reason="the figures are drawn in a forked process on Linux")
@@ -205,16 +208,17 @@ def test_an_error_in_the_drawing_process_is_raised_and_nothing_is_written(tmp_pa
 
 
 def _second_drawer(monkeypatch, act):
-    """Make the second drawer's share of write_plots (share (1, 2), drawn in the process the first drawer forks) run
-    ``act(folder)`` instead; the first drawer's share is drawn as usual."""
+    """Make the second drawer (the process the first drawer forks) run ``act(folder)`` before it draws the figures it
+    claims; the first drawer draws as usual."""
     from valvetrain.report import plots
 
     draw = plots.write_plots
+    caller = os.getpid()
 
-    def write_plots(results, folder, lang="en", figures="main", share=(0, 1)):
-        if share == (1, 2):
+    def write_plots(results, folder, lang="en", figures="main", claim=None):
+        if os.getppid() != caller:    # not forked by the caller, but by the first drawer
             act(folder)
-        return draw(results, folder, lang, figures, share)
+        return draw(results, folder, lang, figures, claim)
 
     monkeypatch.setattr(plots, "write_plots", write_plots)
 
@@ -254,3 +258,29 @@ def test_stopping_the_drawing_ends_the_drawer_the_first_forked(tmp_path, monkeyp
     assert not drawer._process.is_alive()
     with pytest.raises(ProcessLookupError):
         os.kill(pid, 0)
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="the figures are drawn in a forked process on Linux")
+@pytest.mark.parametrize("arrays", [[], [np.arange(12.0).reshape(3, 4), np.ones((4, 3))[:, 1], np.zeros(0)]])
+def test_the_request_reaches_the_drawer_with_its_arrays_in_shared_memory(arrays):
+    """The request goes to the drawer pickled (protocol 5) with its contiguous arrays apart, in a shared memory file
+    whose descriptor travels over the pipe: unpickled from it (the sending and the receiving functions of
+    FigureProcess over a socket pair, the drawer's pipe) it equals what was sent, the arrays written by the sender
+    (the reference) value for value, a non-contiguous one (pickled with the rest) and none at all included."""
+    from multiprocessing import Pipe
+    import pickle
+
+    from valvetrain.report.drawing import _receive, _shared
+
+    request = {"arrays": arrays, "text": "x"}
+    buffers = []
+    pickled = pickle.dumps(request, 5, buffer_callback=buffers.append)
+    fd, sizes = _shared([b.raw() for b in buffers])
+    sending, receiving = Pipe()
+    sending.send_bytes(pickled)
+    sending.send(sizes)
+    send_handle(sending, fd, os.getpid())
+    os.close(fd)
+    got = _receive(receiving)
+    assert got["text"] == "x" and len(got["arrays"]) == len(arrays)
+    assert all(np.array_equal(a, b) and a.shape == b.shape for a, b in zip(got["arrays"], arrays, strict=True))

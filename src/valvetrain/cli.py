@@ -178,17 +178,20 @@ def main():
 @click.option("--lang", type=click.Choice(["en", "ru"]), default="en", show_default=True,
               help="Language of the report and plots.")
 @click.option("--figures", type=click.Choice(["main", "all", "none"]), default="main", show_default=True,
-              help="Plots to draw: main (all but the time-area, curvature, crank-force, crank-pin and port "
-                   "time-area figures), all, or none; the report embeds those drawn.")
+              help="Plots to draw: main (each valve's kinematics and cam contour, one figure of each further "
+                   "stage: dynamics against speed, grinding, hydraulic drive, crank, camshaft and port figures; and "
+                   "the timing diagram), all (also the time-area, curvature, spring, strength, dynamics maps, "
+                   "hydraulic sweep, crank-force, crank-pin and port time-area figures), or none; the report embeds "
+                   "those drawn.")
 @click.option("--strict", is_flag=True, help=STRICT_HELP)
 def run(file, out, force, lang, figures, strict):
     """Run the design of FILE (default: the built-in example) and write it to --out."""
-    from .export import write_outputs
+    from .export import DRAWER_IMPORTS, write_outputs
     from .report.drawing import start
 
     spec = _load(file)
     inputs = _check_out(out, [file] if file else [], [spec], force)
-    drawer = start() if figures != "none" else None   # imports matplotlib while this process designs
+    drawer = start(DRAWER_IMPORTS) if figures != "none" else None   # imports matplotlib while this process designs
     try:
         results = _design(spec, _Progress())
         write_outputs(results, out, lang, inputs, force, figures, drawer)

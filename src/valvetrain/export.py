@@ -2,6 +2,7 @@
 
 from contextlib import nullcontext
 import csv
+from functools import partial
 import json
 import math
 from pathlib import Path
@@ -171,13 +172,32 @@ MASTER_COMMENTS = [
 """Comment lines of ``contour/NAME_master.csv``."""
 
 
+def write_dxf_files(results, folder) -> None:
+    """Write the DXF files of ``results`` into ``folder`` (the output's ``contour/``): ``NAME.dxf``, the cam contour
+    of each valve whose profile is not undercut (:func:`write_dxf`), and ``NAME_master.dxf``, the master cam of a
+    ``[grinding]`` section whose wheel grinds the cam (:func:`write_master_dxf`)."""
+    for name, v in results.valves.items():
+        if v.profile.undercut:
+            continue  # no follower can trace an undercut profile: nothing is written for its manufacture
+        if v.grinding is not None and v.grinding.master_makeable:
+            write_master_dxf(folder / f"{name}_master.dxf", v.grinding)
+        write_dxf(folder / f"{name}.dxf", v)
+
+
+DRAWER_IMPORTS = ("ezdxf",)
+"""The modules that :func:`write_outputs` has the drawing process use beside matplotlib (it writes the DXF files,
+:func:`write_dxf_files`): imported there while the design runs (:func:`valvetrain.report.drawing.start`), a third of
+a second taken off the writing."""
+
+
 def write_outputs(results, out, lang="en", inputs=(), force=False, figures="main", drawer=None) -> Path:
     """Write every artefact of a design into the folder ``out``, atomically.
 
-    ``figures`` says which plots are drawn (:data:`valvetrain.report.plots.FIGURE_SETS`): ``main`` (every one but
-    :data:`valvetrain.report.plots.FIGURES_ON_REQUEST`), ``all`` or ``none``; the report embeds those drawn and
-    names the command that draws the others.  ``drawer``, a :class:`valvetrain.report.drawing.FigureProcess`, draws
-    them in its process while this one writes the rest (it is ended on leaving); without it they are drawn here.
+    ``figures`` says which plots are drawn (:data:`valvetrain.report.plots.FIGURE_SETS`): ``main`` (those of
+    :data:`valvetrain.report.plots.MAIN_FIGURES`), ``all`` or ``none``; the report embeds those drawn and names the
+    command that draws the others.  ``drawer``, a :class:`valvetrain.report.drawing.FigureProcess`, draws them and
+    writes the DXF files in its processes while this one writes the rest (it is ended on leaving); without it they
+    are drawn and written here.
 
     Everything is written into a temporary sibling folder first and put in place only
     when complete (:func:`valvetrain.outfolder.atomic_folder`, which also says which
@@ -199,10 +219,10 @@ def write_outputs(results, out, lang="en", inputs=(), force=False, figures="main
                     NAME_master.csv, NAME_master_cartesian.csv, NAME_master.dxf (a [grinding] section whose
                     wheel grinds the cam and whose master its roller follows)
         out/plots/NAME_kinematics.png, NAME_contour.png, NAME_time_area.png (figures="all"),
-                  NAME_curvature.png (all), NAME_spring.png, NAME_strength_speed.png,
-                  NAME_dynamics_map.png, NAME_dynamics_speed.png (a [dynamics] section),
+                  NAME_curvature.png (all), NAME_spring.png (all), NAME_strength_speed.png (all),
+                  NAME_dynamics_map.png (all), NAME_dynamics_speed.png (a [dynamics] section),
                   NAME_grinding.png (a [grinding] section),
-                  NAME_hydraulic.png, NAME_hydraulic_sweep.png (a [hydraulic] section),
+                  NAME_hydraulic.png, NAME_hydraulic_sweep.png (all) (a [hydraulic] section),
                   crank_forces.png (all), crank_torque.png, crank_pin_polar.png (all),
                   two_stroke_ports.png, two_stroke_time_area.png (all), valve_timing.png
         out/report.html
@@ -213,8 +233,11 @@ def write_outputs(results, out, lang="en", inputs=(), force=False, figures="main
     with atomic_folder(out, inputs, force) as tmp, (drawer or nullcontext()):
         for sub in ("tables", "contour", "plots"):
             (tmp / sub).mkdir()
+        dxf = partial(write_dxf_files, results, tmp / "contour")
         if drawer is not None and figures != "none":
-            drawer.submit(results, tmp / "plots", lang, figures)
+            drawer.submit(results, tmp / "plots", lang, figures, also=dxf)   # the drawer has imported ezdxf
+        else:
+            dxf()
         (tmp / "results.json").write_text(results_json(results), encoding="utf-8")
         (tmp / "spec.toml").write_text(spec_toml(results.spec), encoding="utf-8")
         for name, v in results.valves.items():
@@ -233,13 +256,11 @@ def write_outputs(results, out, lang="en", inputs=(), force=False, figures="main
             if g is not None and g.master_makeable:   # no master for a wheel that cannot grind the cam
                 write_csv(tmp / "contour" / f"{name}_master.csv", master_polar_columns(g), MASTER_COMMENTS)
                 write_csv(tmp / "contour" / f"{name}_master_cartesian.csv", master_cartesian_columns(g))
-                write_master_dxf(tmp / "contour" / f"{name}_master.dxf", g)
             write_csv(tmp / "contour" / f"{name}.csv", contour_columns(v))
             step = results.spec.output.export_step_deg
             write_csv(tmp / "contour" / f"{name}_polar.csv", polar_contour_columns(v, step))
             write_csv(tmp / "contour" / f"{name}_cartesian.csv", cartesian_contour_columns(v, step))
             write_csv(tmp / "contour" / f"{name}_lift.csv", lift_export_columns(v, step), lift_export_comments(v))
-            write_dxf(tmp / "contour" / f"{name}.dxf", v)
         if results.crank is not None:
             write_csv(tmp / "tables" / "crank.csv", crank_columns(results.crank))
             write_csv(tmp / "tables" / "engine_torque.csv", engine_torque_columns(results.crank))

@@ -151,7 +151,7 @@ def test_run_writes_chapter_csv_and_plots(tmp_path):
     """`run` with the section: the CSV has one row per speed, the plots exist, the report has the chapter (and its
     Russian one); the user-facing text cites the works, not internal tags."""
     r = run(spec("model = \"multi\"\ncoils_per_spring = 4\n" + FEW))
-    out = write_outputs(r, tmp_path / "out", "en")
+    out = write_outputs(r, tmp_path / "out", "en", figures="all")
     rows = list(csv.DictReader(open(out / "tables" / "intake_dynamics.csv", encoding="utf-8")))
     assert len(rows) == 3 and "coil_clash_margin_mm" in rows[0]
     assert float(rows[0]["speed_rpm"]) == pytest.approx(700.0)

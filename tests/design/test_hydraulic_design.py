@@ -171,7 +171,7 @@ def test_the_seating_velocity_is_checked_against_the_dynamics_limit():
                                            ("ru", "9. Гидравлический привод клапана")])
 def test_the_report_has_the_hydraulic_chapter(tmp_path, lang, heading):
     results = run(parse_spec(with_section(SECTION)))
-    out = write_outputs(results, tmp_path / "out", lang=lang)
+    out = write_outputs(results, tmp_path / "out", lang=lang, figures="all")
     html = (out / "report.html").read_text(encoding="utf-8")
     chapter = "Shang Hanji (1988), " + ("гл. 7" if lang == "ru" else "ch. 7")     # locators in Russian (issue 24)
     assert heading in html and chapter in html and "Wylie and Streeter (1978)" in html

@@ -2,6 +2,7 @@
 Valve-train practical works (n.d.): intake opens 26 deg before the TDC and closes 78 deg after the BDC, Phi = 27 + 6
 + 38 = 71 cam deg from the end of the ramp to the nose)."""
 
+import itertools
 import re
 
 from matplotlib.backends.backend_agg import FigureCanvasAgg
@@ -103,3 +104,44 @@ def test_the_jerk_impulses_are_written_with_a_decimal_comma_in_russian(results):
                     if re.fullmatch(r"[+-][\d.,·⁰¹²³⁴⁵⁶⁷⁸⁹⁻]+", text.get_text())] for lang in ("en", "ru")}
     assert texts["en"] and len(texts["en"]) == len(texts["ru"])
     assert [text.replace(".", ",") for text in texts["en"]] == texts["ru"]
+
+
+@pytest.mark.parametrize("x", [[0.0, 1.0, 2.0, 3.0, 4.0], [0.0, 1.0, 3.0, 4.0, 7.0]])
+def test_the_dynamics_maps_cells_are_those_of_pcolormesh(x):
+    """The dynamics map draws its grid with pcolorfast on the cell edges of ``_cell_edges``; matplotlib's own
+    pcolormesh(shading="auto"), which puts the edges between the centres itself, draws the same pixels (within one
+    level of 255: rounding) on equal cells (the sweep's speeds and angles), and on unequal ones but for a seam of
+    pixels where an edge falls between two (under 1 % of them).  Hand calculation: centres 0, 1, 3 have the edges
+    -0.5, 0.5, 2, 4."""
+    assert list(plots._cell_edges([0.0, 1.0, 3.0])) == [-0.5, 0.5, 2.0, 4.0]
+    x, y, z = np.array(x), np.array([10.0, 20.0, 30.0, 40.0]), np.arange(20.0).reshape(4, 5)
+
+    def pixels(draw):
+        fig = plots.Figure(figsize=(4, 3))
+        draw(fig.subplots())
+        canvas = FigureCanvasAgg(fig)
+        canvas.draw()
+        return np.asarray(canvas.buffer_rgba()).astype(int)
+
+    fast = pixels(lambda ax: ax.pcolorfast(plots._cell_edges(x), plots._cell_edges(y), z, cmap="viridis"))
+    mesh = pixels(lambda ax: ax.pcolormesh(x, y, z, cmap="viridis", shading="auto"))
+    apart = np.abs(fast - mesh).max(axis=2) > 1
+    assert not apart.any() if np.ptp(np.diff(x)) == 0.0 else apart.mean() < 0.01
+
+
+def test_a_drawer_draws_the_figures_it_claims(results):
+    """write_plots numbers the figures in the order drawn; a drawer draws those whose numbers its ``claim`` gives (the
+    drawers of a run share one counter): claiming 1 and 3 draws the second and the fourth figure of a drawer that draws
+    every one, byte for byte, and two drawers claiming the even and the odd numbers draw every figure once between
+    them; each returns the names of them all."""
+    every, odd, even = {}, {}, {}
+    names = plots.write_plots(results, every, figures="all")
+    order = list(every)
+    assert len(order) == 10
+    assert plots.write_plots(results, odd, figures="all", claim=iter([1, 3, 10**6]).__next__) == names
+    assert list(odd) == [order[1], order[3]] and all(odd[f] == every[f] for f in odd)
+    odd.clear()
+    plots.write_plots(results, odd, figures="all", claim=itertools.count(1, 2).__next__)
+    plots.write_plots(results, even, figures="all", claim=itertools.count(0, 2).__next__)
+    assert not set(odd) & set(even)
+    assert sorted([*odd, *even]) == sorted(order)

@@ -554,8 +554,16 @@ def rated_contact(r, law, heel_radius, follower, width, modulus) -> dict[str, fl
     return out
 
 
+def swept_range(dyn, engine) -> tuple[float, float]:
+    """The engine speeds [rad/s] a ``[dynamics]`` section sweeps, (low, high): its ``speed_range``, else
+    :data:`SPEED_RANGE` of the rated speed."""
+    if dyn.speed_range is None:
+        return tuple(f * engine.rated_speed for f in SPEED_RANGE)
+    return tuple(dyn.speed_range)
+
+
 def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, cam=None,
-                   headlines_only=False) -> tuple[DynamicsResult, list[Check]]:
+                   load_range=None) -> tuple[DynamicsResult, list[Check]]:
     """Sweep the elastic train of a valve over its speed range and simulate the rated speed.
 
     Parameters
@@ -573,10 +581,12 @@ def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, 
     cam : CamResult, optional
         The law stage (heel and roller radii): with it the rated speed has the dynamic contact stress, the
         lubrication characteristic and the drive torque.
-    headlines_only : bool
-        A one-mass train simulates only the speeds of the range that decide the jump speed, the largest seating
-        velocity and the largest cam force (:func:`~valvetrain.dynamics.sweep.headline_sweep`; a tolerance study's
-        samples): the per-speed table and the maps then have those speeds alone, and ``progress`` is not called.  A
+    load_range : (float, float), optional
+        The engine speeds [rad/s] whose cam force loads the parts (the strength stage's range).  Given, a one-mass
+        train simulates only the speeds of its range that decide the jump speed, the largest seating velocity and
+        the largest cam force in ``load_range`` (:func:`~valvetrain.dynamics.sweep.headline_sweep`; a tolerance
+        study's samples): the per-speed table and the maps then have those speeds alone, and ``progress`` is not
+        called.  A
         multi-mass train is swept in full: with coil surge its separations and forces come and go from one speed to
         the next (the built-in example's, 200 speeds: a first separation 20 % below the one the coarse grid finds, a
         cam stress 7 % above the largest it finds).
@@ -595,12 +605,10 @@ def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, 
     to_cam = cam_per_crank(engine.strokes)
     train, params = build_train(dyn, valve, law, drive, at, engine.rated_speed * to_cam)
     notes = list(params.estimates)
+    low, high = swept_range(dyn, engine)
     if dyn.speed_range is None:
-        low, high = (f * engine.rated_speed for f in SPEED_RANGE)
         notes.append(f"speed range {low / rpm_to_rad_s(1.0):.0f}-{high / rpm_to_rad_s(1.0):.0f} rpm: "
                      f"{SPEED_RANGE[0]:.0%} to {SPEED_RANGE[1]:.0%} of the rated speed (idle to over-speed)")
-    else:
-        low, high = dyn.speed_range
     params = replace(params, estimates=tuple(notes))
     speeds = np.linspace(low, high, dyn.speeds)
     step_deg = dyn.step / DEG
@@ -611,12 +619,9 @@ def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, 
                                  f"{MAX_SWEEP_WORK:.3g}) and {size / 1e6:.0f} MB of recorded revolutions (allowed "
                                  f"{MAX_SWEEP_BYTES / 1e6:.0f} MB); fewer speeds or revolutions or a larger step, or "
                                  "allow_large_sweep = true to run it")])
-    if headlines_only and dyn.model == "1dof":
-        from .drive import strength_speed_range   # the drive stage imports this module
-
-        loads = strength_speed_range(engine, (low, high))[:2]
+    if load_range is not None and dyn.model == "1dof":
         result = headline_sweep(law, train, speeds * to_cam, dyn.revolutions, step_deg,
-                                load_range=tuple(s * to_cam for s in loads))
+                                load_range=tuple(s * to_cam for s in load_range))
         speeds = result.cam_speeds / to_cam
     else:
         if progress is not None:
@@ -734,5 +739,5 @@ def sweep_columns(d) -> dict[str, np.ndarray]:
 
 __all__ = ["CHECK_CODES", "DynamicsParameters", "DynamicsResult", "Mode", "PerSpeed", "ResonanceRecord", "SWEEP_COLUMNS",
            "SpeedRecord", "build_train", "drive_links", "dynamics_checks", "dynamics_stage", "finite_or_none", "rated_contact",
-           "speed_record",
+           "speed_record", "swept_range",
            "sweep_columns"]

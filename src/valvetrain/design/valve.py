@@ -28,8 +28,8 @@ from ..specification import SpecError
 from ..specification.messages import Problem
 from ..springs import NoSpringFits
 from ..units import DEG, MM, to_display
-from .drive import DriveResult, drive_record, drive_stage, strength_stage
-from .dynamics import DynamicsResult, dynamics_stage
+from .drive import DriveResult, drive_record, drive_stage, strength_speed_range, strength_stage
+from .dynamics import DynamicsResult, dynamics_stage, swept_range
 from .grinding import GrindingResult, grinding_stage
 from .hydraulic_actuation import HydraulicResult, hydraulic_stage
 from .lash_adjuster import LashAdjusterResult, lash_adjuster_stage
@@ -764,8 +764,9 @@ def design_valve(name, valve, engine, gas, output, law=None, progress=None, cyli
         found.append(clearance_check(valve.kind, clearance.min_gap, clearance.angle))
     dynamics = None
     if valve.dynamics is not None:
+        loads = strength_speed_range(engine, swept_range(valve.dynamics, engine))[:2] if headlines_only else None
         dynamics, dynamics_found = dynamics_stage(valve.dynamics, valve, engine, cam.law, drive, name, progress, cam,
-                                                   headlines_only)
+                                                   loads)
         found += dynamics_found
     strength_result, strength_found = strength_stage(valve, gas, engine, cam, drive, dynamics)
     drive = replace(drive, strength=strength_result, checks=drive.checks + tuple(strength_found))

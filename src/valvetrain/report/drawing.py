@@ -1,20 +1,27 @@
 """The figures of a run drawn in other processes, which import matplotlib while the first one designs.
 
 Drawing is most of what ``valvetrain run`` costs after the design (importing matplotlib, a third of a second, then
-about 0.1-0.2 s a figure), and it needs nothing but the results: a process forked before the design imports
-matplotlib meanwhile and draws one figure (its fonts loaded, the PNG writer imported), receives the results once they
-are there, forks :data:`PROCESSES` - 1 more from itself (which find matplotlib imported) and draws the figures dealt
-round between them (:func:`valvetrain.report.plots.write_plots`'s ``share``) while the first process writes the
-tables, the contours and the DXF files.  The first process loads numba's compiled code (the first call of any kernel
-loads it for all, 0.3-0.5 s) before it forks: the drawers evaluate laws too (the timing diagram), and inherit it.
-Where processes cannot be forked (Windows, macOS), :func:`start` gives None and the figures are drawn in the process
-itself, as before.
+about 0.1-0.4 s a figure), and it needs nothing but the results: a process forked before the design imports
+matplotlib meanwhile and draws one figure (its fonts loaded, the PNG writer imported), and the modules of the other
+files it is to write (:class:`FigureProcess`'s ``imports``: the DXF writer); it receives the results once they are
+there, forks :data:`PROCESSES` - 1 more from itself (which find matplotlib imported), writes the other files it was
+given (``submit``'s ``also``: the DXF files of the contours) and draws the figures while the first process writes the
+tables and the report.  The drawers share the figures through a counter: each takes the next figure not yet taken
+(:func:`valvetrain.report.plots.write_plots`'s ``claim``), so that one drawing an expensive figure does not hold
+back the others.  The first process loads numba's compiled code (the first call of any kernel loads it for all,
+0.3-0.5 s) before it forks: the drawers evaluate laws too (the timing diagram), and inherit it.  Where processes
+cannot be forked (Windows, macOS), :func:`start` gives None and the figures are drawn in the process itself, as
+before.
 """
 
+import importlib
 import io
+import itertools
+import mmap
 import multiprocessing
-from multiprocessing.reduction import ForkingPickler
+from multiprocessing.reduction import recv_handle, send_handle
 import os
+import pickle
 import signal
 import sys
 import threading
@@ -32,32 +39,43 @@ class FigureProcess:
     is written into a folder the caller removes after an error.
     """
 
-    def __init__(self, processes=PROCESSES):
+    def __init__(self, processes=PROCESSES, imports=()):
         from ..laws.base import mirror
 
         mirror(0.0, 1.0)   # numba's compiled code loaded (0.3-0.5 s, once): the drawers evaluate laws too
         context = multiprocessing.get_context("fork")
         self._conn, child = context.Pipe()
-        self._process = context.Process(target=_serve, args=(child, self._conn, processes), daemon=True)
+        self._process = context.Process(target=_serve, args=(child, self._conn, processes, imports), daemon=True)
         self._process.start()
         child.close()
         self._sending = None
 
-    def submit(self, results, folder, lang, figures):
-        """Draw the figures ``figures`` of ``results`` into ``folder`` (the arguments of ``write_plots``).
+    def submit(self, results, folder, lang, figures, also=None):
+        """Draw the figures ``figures`` of ``results`` into ``folder`` (the arguments of ``write_plots``); first
+        call ``also()`` in the first drawer, if given (a picklable callable that writes other files of the results,
+        with the modules of ``imports``).
 
-        The request, larger than a pipe holds, is pickled here (the results are not to be read while this process
-        goes on with them) and sent by a thread: this process writes its files meanwhile, rather than wait for the
-        drawer to finish importing matplotlib."""
-        request = ForkingPickler.dumps((results, folder, lang, figures))
-        self._sending = threading.Thread(target=self._send, args=(request,), daemon=True)
+        The request is pickled here (the results are not to be read while this process goes on with them), its
+        arrays apart (pickle's protocol 5: out-of-band buffers, 80 MB of a sweep's recorded revolutions for two
+        valves), copied once into a shared memory file that the drawers map (:func:`_shared`, :func:`_receive`)
+        rather than pickled into the pipe, read from it and unpickled again (a fifth of a second of a run); the rest,
+        larger than a pipe holds, is sent by a thread with the file: this process writes its files meanwhile, rather
+        than wait for the drawer to finish importing matplotlib."""
+        buffers = []
+        request = pickle.dumps(((results, folder, lang, figures), also), 5, buffer_callback=buffers.append)
+        arrays, sizes = _shared([b.raw() for b in buffers])
+        self._sending = threading.Thread(target=self._send, args=(request, sizes, arrays), daemon=True)
         self._sending.start()
 
-    def _send(self, request):
+    def _send(self, request, sizes, arrays):
         try:
             self._conn.send_bytes(request)
+            self._conn.send(sizes)
+            send_handle(self._conn, arrays, self._process.pid)
         except OSError:      # the drawer has ended (stop): result() says so
             pass
+        finally:
+            os.close(arrays)
 
     def result(self):
         """``write_plots``'s return value, once every process has drawn its figures; an exception of one, raised
@@ -87,14 +105,16 @@ class FigureProcess:
         self.stop()
 
 
-def start() -> FigureProcess | None:
-    """A :class:`FigureProcess`, or None where processes are not forked (only Linux forks safely here)."""
-    return FigureProcess() if sys.platform.startswith("linux") else None
+def start(imports=()) -> FigureProcess | None:
+    """A :class:`FigureProcess` that imports ``imports`` too, or None where processes are not forked (only Linux
+    forks safely here)."""
+    return FigureProcess(imports=imports) if sys.platform.startswith("linux") else None
 
 
-def _serve(conn, other, processes):
-    """The forked process: import the plots and draw one figure, wait for one request, fork the other drawers, draw
-    its share, send back the files or the first error.
+def _serve(conn, other, processes, imports):
+    """The forked process: import the plots and draw one figure, import ``imports``, wait for one request, fork the
+    other drawers, write the request's other files, draw the figures it claims, send back the files or the first
+    error.
 
     A Ctrl-C is the first process's to handle (it ends this one); the end of the pipe that process keeps (``other``)
     is closed here, so that the process ending without a request is an end of file, not a wait for ever.  Ended
@@ -103,13 +123,22 @@ def _serve(conn, other, processes):
     other.close()
     try:
         _warm_up()           # matplotlib imported, its fonts loaded, while the first process designs
+        if not conn.poll():  # and the other modules while the request is not there yet (else: where they are used)
+            for name in imports:
+                importlib.import_module(name)
     except ImportError:
         pass                 # raised again with the request, in the first process
     try:
-        request = conn.recv()
+        request, also = _receive(conn)
     except EOFError:
         return
     drawers = []
+    taken = multiprocessing.Value("i", 0, lock=True)   # the number of the next figure no drawer has taken
+
+    def claim():
+        with taken.get_lock():
+            taken.value += 1
+            return taken.value - 1
 
     def end(*_):
         for pid, _conn in drawers:
@@ -118,7 +147,7 @@ def _serve(conn, other, processes):
         os._exit(1)
 
     signal.signal(signal.SIGTERM, end)
-    for k in range(1, processes):
+    for _ in range(1, processes):
         mine, theirs = multiprocessing.Pipe(duplex=False)
         pid = os.fork()
         if pid == 0:                                  # a drawer: its share, its answer, its end
@@ -126,12 +155,12 @@ def _serve(conn, other, processes):
                 signal.signal(signal.SIGTERM, signal.SIG_DFL)
                 conn.close()
                 mine.close()
-                _send(theirs, _draw(request, (k, processes)))
+                _send(theirs, _draw(request, claim))
             finally:
                 os._exit(0)
         theirs.close()
         drawers.append((pid, mine))
-    answers = [_draw(request, (0, processes))]
+    answers = [_draw(request, claim, also)]
     for pid, mine in drawers:
         try:
             answers.append(mine.recv())
@@ -139,6 +168,29 @@ def _serve(conn, other, processes):
             answers.append((False, RuntimeError("a process drawing the figures ended without them")))
         os.waitpid(pid, 0)
     _send(conn, next((a for a in answers if not a[0]), answers[0]))
+
+
+def _shared(buffers) -> tuple[int, list[int]]:
+    """A shared memory file (its descriptor, Linux's ``memfd_create``) holding ``buffers`` (byte views) one after
+    the other, and their sizes [bytes]."""
+    fd = os.memfd_create("valvetrain-figures")
+    for b in buffers:
+        while b.nbytes:
+            b = b[os.write(fd, b):]
+    return fd, [b.nbytes for b in buffers]
+
+
+def _receive(conn):
+    """The request of :meth:`FigureProcess.submit`, unpickled with its arrays in the shared memory file it sends
+    (mapped here, its pages at once: the drawers read the arrays where the first process wrote them)."""
+    request, sizes, fd = conn.recv_bytes(), conn.recv(), recv_handle(conn)
+    try:
+        memory = memoryview(mmap.mmap(fd, sum(sizes), flags=mmap.MAP_SHARED | mmap.MAP_POPULATE) if sum(sizes)
+                            else b"")
+    finally:
+        os.close(fd)
+    buffers = [memory[start:start + size] for start, size in zip(itertools.accumulate(sizes, initial=0), sizes)]
+    return pickle.loads(request, buffers=buffers)
 
 
 def _send(conn, answer):
@@ -149,12 +201,15 @@ def _send(conn, answer):
         conn.send((False, RuntimeError(f"drawing the figures: {answer[1]!r}")))
 
 
-def _draw(request, share):
-    """``(True, write_plots's files)`` of this drawer's ``share`` of the figures, or ``(False, the exception)``."""
+def _draw(request, claim, also=None):
+    """``(True, write_plots's files)`` of the figures that this drawer claims (``claim``), after ``also()`` if given,
+    or ``(False, the exception)``."""
     try:
         from .plots import write_plots
 
-        return True, write_plots(*request, share=share)
+        if also is not None:
+            also()
+        return True, write_plots(*request, claim=claim)
     except Exception as exc:  # noqa: BLE001 - raised again in the first process (FigureProcess.result)
         return False, exc
 

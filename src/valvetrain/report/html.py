@@ -577,7 +577,7 @@ TALL_FIGURES = ("_kinematics.png",)
 
 def _figure(image, name, alt, t):
     """The ``<img>`` of a figure of ``plots/`` (``image(name)`` its source), or where it was not drawn (``name``
-    undefined: not asked for, :data:`valvetrain.report.plots.FIGURES_ON_REQUEST`) the command that draws it."""
+    undefined: not asked for, not in :data:`valvetrain.report.plots.MAIN_FIGURES`) the command that draws it."""
     if not name:
         return Markup('<p class="src">{} <span class="name">valvetrain run --figures all</span></p>').format(
             t["figure_on_request"].format(alt))
