@@ -148,12 +148,25 @@ class PivotedFollower(RollerFollower):
                     f"cannot reach the roller centre's heel circle, base_radius_mm + roller_radius_mm = "
                     f"{g0 * 1e3:g} mm", " ")
         lb = self._pad[0]
-        reach = lb * (1.0 - np.sin(self._chi0(heel))) if self.valve_arm(np.array(self.base_angle(heel))) > 0.0 \
-            else lb * (1.0 + np.sin(self._chi0(heel)))
-        if lift > reach:
+        reach = lb * (1.0 - np.sin(self._chi0(heel)))
+        if lift >= reach:
             return ("finger_valve_angle_deg", f"{np.degrees(self.valve_angle):g}",
                     f"the valve pad {lb * 1e3:g} mm from the pivot (finger_pad_arm_mm, finger_pad_drop_mm) reaches a "
                     f"valve lift of {reach * 1e3:.4g} mm at most; max_lift_mm + clearance_mm = {lift * 1e3:g}", ": ")
+        psi = np.linspace(self.base_angle(heel), float(self.angle_of(lift, heel)), 201)
+        radius = np.hypot(*self.centre(psi))
+        if not np.all(np.diff(radius) > 0.0):
+            return ("finger_valve_angle_deg", f"{np.degrees(self.valve_angle):g}",
+                    "with the finger's geometry (finger_pivot_x_mm, finger_pivot_y_mm, finger_roller_arm_mm, "
+                    "finger_pad_arm_mm, finger_pad_drop_mm, finger_valve_angle_deg) the valve opens only if the roller "
+                    f"centre moves from {radius[0] * 1e3:.4g} to {radius[-1] * 1e3:.4g} mm from the cam centre, not "
+                    "steadily outwards: the cam cannot push it open", ": ")
+        ratio = self.lever_ratio(psi)
+        if not np.all(ratio > 0.0):
+            return ("finger_pivot_x_mm", f"{self.pivot_x * 1e3:g}",
+                    "with the finger's geometry the finger turns clockwise as the cam lifts it (lever ratio G / L_r "
+                    f"from {ratio[0]:.4g} to {ratio[-1]:.4g} over the lift); allowed: a finger whose angle grows as the "
+                    "cam lifts its roller (lever ratio > 0)", ": ")
         return None
 
     def rest_ratio(self, heel):
