@@ -320,16 +320,17 @@ def _hydraulic(v):
             "notes": h.notes, "table": h.table_file, "sweep_table": h.sweep_table}
 
 
-LUBRICATION_COLUMNS = ["speed_rpm", "min_film_um", "min_film_parameter", "boundary_cam_deg", "mixed_cam_deg",
-                       "full_film_cam_deg", "mean_friction_torque_N_m", "friction_power_W", "max_flash_temperature_K",
-                       "max_drive_torque_N_m"]
-"""The columns of the report's table of the cam contact against engine speed."""
+LUBRICATION_COLUMNS = ("speed", "min_film", "min_lambda", "boundary", "mixed", "full", "mean_friction_torque",
+                       "friction_power", "max_flash", "max_drive_torque")
+"""The columns of the report's table of the cam contact against engine speed (fields of
+:class:`~valvetrain.design.lubrication.LubricationPerSpeed`)."""
 
 
 def _table(per_speed, columns):
-    """The rows of a per-speed result (its columns named by their results.json keys)."""
-    shown_columns = dict(_present(per_speed))
-    return list(zip(*(shown_columns[c] for c in columns), strict=True))
+    """A per-speed result's table: {"columns": the fields' results.json keys (the headings), "table": its rows}."""
+    shown_columns = shown(per_speed, *columns)
+    return {"columns": [k for k, _ in shown_columns],
+            "table": list(zip(*(c for _, c in shown_columns), strict=True))}
 
 
 def _lubrication(v):
@@ -338,8 +339,7 @@ def _lubrication(v):
     if lub is None:
         return None
     return {"rows": _present(lub, *_except(lub, "per_speed", "follower", "zero_entrainment")),
-            "zero": shown_value(lub, "zero_entrainment"), "columns": LUBRICATION_COLUMNS,
-            "table": _table(lub.per_speed, LUBRICATION_COLUMNS)}
+            "zero": shown_value(lub, "zero_entrainment"), **_table(lub.per_speed, LUBRICATION_COLUMNS)}
 
 
 CAMSHAFT_ROWS = ("lobes", "ratio", "peak", "peak_angle", "lowest", "mean", "fluctuation", "rms_fluctuation", "power",
@@ -367,9 +367,9 @@ def _camshaft(results, spec, plots):
             "plots": plots.get("camshaft", {})}
 
 
-ADJUSTER_COLUMNS = ["speed_rpm", "leak_down_um", "valve_lash_um", "refill_share",
-                    "oil_stiffness_at_valve_N_per_mm", "pump_up_um", "held_open_um"]
-"""The columns of the report's table of the lash adjuster against engine speed."""
+ADJUSTER_COLUMNS = ("speed", "leak_down", "valve_lash", "refill_share", "stiffness_at_valve", "pump_up", "held_open")
+"""The columns of the report's table of the lash adjuster against engine speed (fields of
+:class:`~valvetrain.design.lash_adjuster.LashAdjusterPerSpeed`)."""
 
 
 def _lash_adjuster(v):
@@ -378,7 +378,7 @@ def _lash_adjuster(v):
     if adj is None:
         return None
     return {"rows": _present(adj, *_except(adj, "per_speed", "location")), "location": adj.location,
-            "columns": ADJUSTER_COLUMNS, "table": _table(adj.per_speed, ADJUSTER_COLUMNS)}
+            **_table(adj.per_speed, ADJUSTER_COLUMNS)}
 
 
 def _summary(results, t):
