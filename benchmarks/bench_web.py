@@ -11,6 +11,7 @@ the speed sweeps, and the whole design with them, of the same specification in t
 
 from functools import partial
 import os
+import argparse
 import re
 import shutil
 import statistics
@@ -98,4 +99,6 @@ def main(drags=20):
 
 
 if __name__ == "__main__":
-    main(int(sys.argv[1]) if len(sys.argv) > 1 else 20)
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("drags", nargs="?", type=int, default=20, help="drags of the nose handle (default 20)")
+    main(parser.parse_args().drags)
