@@ -63,15 +63,14 @@ def results():
 
 
 def _lines(results, lang):
-    spec = results.spec.model_dump()
-    valve = spec["valves"]["intake"]
+    valve = results.spec.valves["intake"]
     v = results.valves["intake"]
     table = lift_table_columns(v.table)
     spring = v.drive.spring.design
     return (flow_lines(valve, v.flow, results.engine, lang)
-            + time_area_lines(v.flow, v.cam, results.engine, valve["count"], table, lang) + law_lines(v.law, v.cam, lang)
+            + time_area_lines(v.flow, v.cam, results.engine, valve.count, table, lang) + law_lines(v.law, v.cam, lang)
             + spring_lines(spring, _material(results.spec.valves["intake"], spring), v.cam.cam_speed, lang)
-            + strength_lines(valve["parts"], v.drive.strength, table, "flat", lang)
+            + strength_lines(valve.parts, v.drive.strength, table, "flat", lang)
             + crank_lines(results.crank.figures, lang))
 
 
@@ -149,9 +148,8 @@ def roller_example():
 
 
 def _contact_lines(results, lang):
-    spec = results.spec.model_dump()
     return [line for name, v in results.valves.items()
-            for line in strength_lines(spec["valves"][name]["parts"], v.drive.strength,
+            for line in strength_lines(results.spec.valves[name].parts, v.drive.strength,
                                        lift_table_columns(v.table), v.cam.follower, lang, v.cam.roller_radius * 1e3)
             if line["symbol"] in ("σ_c", "σ_к")]
 

@@ -47,8 +47,8 @@ def flow_lines(valve, flow, engine, lang="en") -> list[dict[str, Any]]:
 
     Parameters
     ----------
-    valve : dict
-        The valve's inputs (``throat_diameter_mm`` [mm], ``seat_angle_deg`` [deg], ``count``).
+    valve : valvetrain.specification.models.Valve
+        The valve's inputs as given (``throat_diameter_mm`` [mm], ``seat_angle_deg`` [deg], ``count``).
     flow : valvetrain.design.valve.FlowResult
         The valve's flow stage (throat and curtain areas, V', V'', valve lift).
     engine : valvetrain.design.EngineRecord
@@ -57,7 +57,7 @@ def flow_lines(valve, flow, engine, lang="en") -> list[dict[str, Any]]:
     def shown(result, *names):
         return [shown_value(result, n) for n in names]
 
-    d, phi, i = valve["throat_diameter_mm"], valve["seat_angle_deg"], valve["count"]
+    d, phi, i = valve.throat_diameter_mm, valve.seat_angle_deg, valve.count
     h, fg, fmax, v1, v2 = shown(flow, "valve_lift", "throat_area", "max_curtain_area", "v1", "v2")
     cp, fp = shown(engine, "mean_piston_speed", "piston_area")
     return [
@@ -270,8 +270,8 @@ def strength_lines(parts, result, lift_table, follower, lang="en", roller_radius
 
     Parameters
     ----------
-    parts : dict
-        The valve's ``[parts]`` inputs (cam width [mm], contact modulus [MPa], pushrod diameter, bore and length
+    parts : valvetrain.specification.models.Parts
+        The valve's ``[parts]`` inputs as given (cam width [mm], contact modulus [MPa], pushrod diameter, bore and length
         [mm] and modulus [MPa]).
     result : valvetrain.design.drive.StrengthResult
         The strength stage's result (its checks, the angle of the largest contact stress and the cam force there,
@@ -296,17 +296,17 @@ def strength_lines(parts, result, lift_table, follower, lang="en", roller_radius
         if follower == "flat":
             lines.append(_line(symbol, f"{number(factor, lang)} √(P E / (b ρ))", (
                 "{} × √({} × {} / ({} × {}))",
-                [(factor, ""), (force, "N"), (parts["contact_modulus_MPa"], "MPa"), (parts["cam_width_mm"], "mm"),
+                [(factor, ""), (force, "N"), (parts.contact_modulus_MPa, "MPa"), (parts.cam_width_mm, "mm"),
                  (rho, "mm")]), contact.shown_value, "MPa", lang))
         elif follower in ("roller", "finger") and roller_radius:
             lines.append(_line(symbol, f"{number(factor, lang)} √(P E (1/ρ + 1/r_рол) / b)" if lang == "ru" else
                                f"{number(factor, lang)} √(P E (1/ρ + 1/r_r) / b)", (
                 "{} × √({} × {} × (1/{} + 1/{}) / {})",
-                [(factor, ""), (force, "N"), (parts["contact_modulus_MPa"], "MPa"), (rho, "mm"),
-                 (roller_radius, "mm"), (parts["cam_width_mm"], "mm")]), contact.shown_value, "MPa", lang))
+                [(factor, ""), (force, "N"), (parts.contact_modulus_MPa, "MPa"), (rho, "mm"),
+                 (roller_radius, "mm"), (parts.cam_width_mm, "mm")]), contact.shown_value, "MPa", lang))
     buckling = checks.get("strength.pushrod_buckling_margin")
     if buckling is not None:
-        big, bore, e, length = (parts[k] or 0.0 for k in (
+        big, bore, e, length = (getattr(parts, k) or 0.0 for k in (
             "pushrod_diameter_mm", "pushrod_bore_mm", "pushrod_modulus_MPa", "pushrod_length_mm"))
         second = float(strength.second_moment(big, bore))
         euler = float(strength.euler_load(e, second, length))
