@@ -5,17 +5,12 @@ refused with messages naming their keys.  A bounded draw here (a few seconds); `
 every case."""
 
 import math
-import sys
-from pathlib import Path
 
-from hypothesis import HealthCheck, Phase, given, note, settings, strategies as st
+from hypothesis import given, settings, strategies as st
 import pytest
 
-sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "tools"))
-import fuzz_bounds  # noqa: E402 (tools/, put on the path above)
+from fuzz_contract import BASES, FUZZ, assert_contract, fuzz_bounds
 
-FUZZ = fuzz_bounds.fuzz
-BASES = FUZZ.base_specs()
 FINGER = "examples/modern-dohc-roller-finger.toml"
 PUSHROD = "examples/pushrod-dynamics.toml"
 NEW_SECTIONS = ("lash_adjuster", "lubrication", "camshaft", "finger_pad_arm_mm", "finger_pivot_y_mm",
@@ -24,16 +19,10 @@ CASES = [c for part in NEW_SECTIONS for base in (FINGER, PUSHROD)
          for c in fuzz_bounds.bound_cases(base, BASES[base][0], part)]
 API_CASES = [c for part in ("lash_adjuster", "lubrication") for c in fuzz_bounds.api_cases(FINGER, BASES[FINGER][0],
                                                                                            part)]
-SETTINGS = settings(deadline=None, derandomize=True, database=None, phases=[Phase.explicit, Phase.generate],
-                    suppress_health_check=list(HealthCheck))
 
 
 def _assert_contract(case):
-    rec = FUZZ.run_case(case, BASES, timeout=120.0)
-    text = "\n".join([f"{rec['outcome']}: {rec.get('signature', '')}", f"base: {case['base']}"]
-                     + [f"mutation: {d}" for d in rec["mutation"]] + rec.get("detail", []))
-    note(text)
-    assert rec["outcome"] in ("ok", "refused"), text
+    assert_contract(case, timeout=120.0)
 
 
 def test_the_fields_carry_the_models_bounds():
@@ -62,13 +51,13 @@ def test_edge_values_reach_just_outside_the_bounds():
     assert has(fuzz_bounds.edge_values((0.1, 2000.0, True, False), "float", 8.0), 0.1001, 0.0999, 0.1)
 
 
-@settings(SETTINGS, max_examples=8)
+@settings(FUZZ, max_examples=8)
 @given(st.sampled_from(CASES))
 def test_a_key_at_its_bounds_runs_or_is_refused(case):
     _assert_contract(case)
 
 
-@settings(SETTINGS, max_examples=12)
+@settings(FUZZ, max_examples=12)
 @given(st.sampled_from(API_CASES))
 def test_the_api_takes_a_key_at_its_bounds_or_names_it(case):
     _assert_contract(case)
