@@ -291,14 +291,21 @@ def heap_arrays():
     design then takes about 1.5 times the CPU time of a plain process (measured: 57 against 38 ms for the built-in
     example).  ``mallopt(M_MMAP_THRESHOLD, ...)`` restores the threshold; the trimming the variable asks for stays.
     Elsewhere (no such variable, no glibc) nothing is done."""
-    if "MALLOC_TRIM_THRESHOLD_" not in os.environ:
-        return
+    if "MALLOC_TRIM_THRESHOLD_" in os.environ:
+        set_malloc(mmap_threshold=MMAP_THRESHOLD_BYTES)
+
+
+def set_malloc(mmap_threshold, trim_threshold=None) -> None:
+    """glibc's ``mallopt``: arrays up to ``mmap_threshold`` [bytes] from the heap, and up to ``trim_threshold``
+    [bytes] of freed memory kept at its top (None: left as it is).  Without glibc nothing is done."""
     try:
         libc = ctypes.CDLL("libc.so.6")
     except OSError:
         return
-    m_mmap_threshold = -3   # glibc's malloc.h
-    libc.mallopt(m_mmap_threshold, MMAP_THRESHOLD_BYTES)
+    m_trim_threshold, m_mmap_threshold = -1, -3   # glibc's malloc.h
+    libc.mallopt(m_mmap_threshold, mmap_threshold)
+    if trim_threshold is not None:
+        libc.mallopt(m_trim_threshold, trim_threshold)
 
 
 def evaluate_points(documents, point=None) -> list[dict[str, Any]]:
