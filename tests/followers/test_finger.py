@@ -2,6 +2,8 @@
 against a loop closure solved by scipy's brentq in the test, the pressure angle against the contact normal of that
 construction, and the cam synthesised for a valve law giving that law back through the forward problem."""
 
+from dataclasses import replace
+
 import numpy as np
 import pytest
 from scipy.optimize import brentq
@@ -303,17 +305,11 @@ def test_the_finger_s_inertia_force_against_lagrange_s_equation_by_finite_differ
     assert np.min(np.abs(frozen - hand) / np.abs(hand)) > 1e-3
 
 
-def _finger(**change):
-    keys = dict(radius=ROLLER, pivot_x=-0.022, pivot_y=0.027, roller_arm=0.0225, pad_arm=0.036, pad_drop=-0.010,
-                pad_radius=0.012, valve_angle=np.radians(4.0), tip_offset=0.0005)
-    return PivotedFollower(**(keys | change))
-
-
 def test_the_pad_s_reach_is_refused_as_a_geometry_problem_not_a_traceback():
     """Fuzz case (valve axis at 120 deg): the valve pad cannot give the lift.  Before the fix the reach of a pad whose
     valve arm is negative on the heel circle was taken as L_b (1 + sin chi_0), the check passed, and the design
     stopped on a ValueError.  Reference: the largest lift of the hand-built linkage over a full turn of the finger."""
-    f = _finger(valve_angle=np.radians(120.0))
+    f = replace(FINGER, valve_angle=np.radians(120.0))
     psi0 = f.base_angle(HEEL)
     reach = max(hand_valve_lift(f, p, psi0) for p in np.linspace(psi0 - np.pi, psi0 + np.pi, 20001))
     key, value, message, _ = f.geometry_problem(HEEL, 0.0085)
@@ -331,7 +327,7 @@ def test_a_finger_the_cam_cannot_open_is_refused(change, words):
     """Fuzz cases that ran with negative loads and a ratio changing sign, graded only a warning.  Reference: the
     roller centre's distance from the cam centre, |P + L_r e(psi)|, over the finger angles that give the lift on
     the hand-built linkage must grow (the cam pushes the roller out), and the finger of the example passes."""
-    f = _finger(**change)
+    f = replace(FINGER, **change)
     psi0 = f.base_angle(HEEL)
     psi = np.linspace(psi0, float(f.angle_of(0.008, HEEL)), 101)
     pivot = np.array([f.pivot_x, f.pivot_y])
@@ -340,4 +336,4 @@ def test_a_finger_the_cam_cannot_open_is_refused(change, words):
     outwards_and_opening = np.all(np.diff(radius) > 0) and np.all(np.diff(lift) * np.diff(psi) > 0)
     assert not outwards_and_opening
     assert words in f.geometry_problem(HEEL, 0.008)[2]
-    assert _finger().geometry_problem(HEEL, 0.008) is None
+    assert FINGER.geometry_problem(HEEL, 0.008) is None
