@@ -313,6 +313,21 @@ def train_spring(dyn, valve, law, line, mass, cam_speed, at) -> tuple[float, flo
                            f"{preload:.5g} N given (Valve-train dynamics article (n.d.), step 4a)")
 
 
+REVOLUTIONS = {False: 3, True: 20}
+"""The default of ``[dynamics] revolutions``, the most camshaft revolutions a speed runs, without and with a lash
+adjuster.  A mechanical train repeats within two revolutions from rest; the plunger of a hydraulic adjuster is a slow
+state: where the follower's force falls to the adjuster's push near the valve's closing (from about 0.85 x the rated
+speed of the modern example) the plunger extends and leaks the extension back under load over several revolutions,
+its periodic state approached by about a factor of 0.1-0.3 a revolution (the modern example: 4 to 10 revolutions
+between 0.87 and 1.22 x the rated speed, 14 of its 40 speeds unsettled at 3).  20 is the key's largest value."""
+
+
+def revolutions(dyn, valve) -> int:
+    """``[dynamics] revolutions`` as given, else :data:`REVOLUTIONS` of the valve (with or without a lash
+    adjuster)."""
+    return REVOLUTIONS[valve.lash_adjuster is not None] if dyn.revolutions is None else int(dyn.revolutions)
+
+
 def adjuster_reference_force(valve, law, drive, cam_speed: float, ratio: float) -> float:
     """The largest quasi-static force on a lash adjuster of motion ratio ``ratio`` at the camshaft speed
     ``cam_speed`` [rad/s] [N]: spring and inertia of the rigid train over the open event, (7.1) of
@@ -451,7 +466,7 @@ def build_train(dyn, valve, law, drive, at, cam_speed=None) -> tuple[Union[OneMa
         notes.extend(spring_notes)
     train = replace(train, adjuster=element)
     params = DynamicsParameters(dyn.model, layout(valve), mass, c, dyn.damping_ratio, rate, preload, k, lash,
-                                dyn.seat_stiffness, dyn.seat_damping_ratio, dyn.revolutions, dyn.step,
+                                dyn.seat_stiffness, dyn.seat_damping_ratio, revolutions(dyn, valve), dyn.step,
                                 dyn.coils_per_spring, links, names, nodes, tuple(notes))
     return train, params
 
@@ -612,22 +627,23 @@ def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, 
     params = replace(params, estimates=tuple(notes))
     speeds = np.linspace(low, high, dyn.speeds)
     step_deg = dyn.step / DEG
-    work, size = sweep_size(train.network(), speeds * to_cam, dyn.revolutions, step_deg)
+    revs = params.revolutions
+    work, size = sweep_size(train.network(), speeds * to_cam, revs, step_deg)
     if not dyn.allow_large_sweep and (work > MAX_SWEEP_WORK or size > MAX_SWEEP_BYTES):
-        raise SpecError([Problem(f"{at}.dynamics", f"speeds = {dyn.speeds} x revolutions = {dyn.revolutions} at "
+        raise SpecError([Problem(f"{at}.dynamics", f"speeds = {dyn.speeds} x revolutions = {revs} at "
                                  f"step_cam_deg = {step_deg:g} is about {work:.3g} integrator steps x elements (allowed "
                                  f"{MAX_SWEEP_WORK:.3g}) and {size / 1e6:.0f} MB of recorded revolutions (allowed "
                                  f"{MAX_SWEEP_BYTES / 1e6:.0f} MB); fewer speeds or revolutions or a larger step, or "
                                  "allow_large_sweep = true to run it")])
     if load_range is not None and dyn.model == "1dof":
-        result = headline_sweep(law, train, speeds * to_cam, dyn.revolutions, step_deg,
+        result = headline_sweep(law, train, speeds * to_cam, revs, step_deg,
                                 load_range=tuple(s * to_cam for s in load_range))
         speeds = result.cam_speeds / to_cam
     else:
         if progress is not None:
             progress(0, dyn.speeds)
-        result = sweep(law, train, speeds * to_cam, dyn.revolutions, step_deg, progress=progress)
-    rated = sweep(law, train, [engine.rated_speed * to_cam], dyn.revolutions, step_deg).speed(0)
+        result = sweep(law, train, speeds * to_cam, revs, step_deg, progress=progress)
+    rated = sweep(law, train, [engine.rated_speed * to_cam], revs, step_deg).speed(0)
     m, c, kk = params.mass, params.drive_stiffness, params.spring_rate
     eps = perturbation_parameter(m, c, kk, speeds * to_cam)
     results = result.per_speed()

@@ -220,7 +220,8 @@ class Dynamics(_Model):
     drive.spring_reserve at the rated speed.  ``mass_kg`` replaces the one-mass train's reduced mass; the
     multi-mass train takes its drive masses from [drive.masses] and, with ``spring_mass_kg``, a given
     mass of the active coils.  ``revolutions`` is the most camshaft revolutions a speed runs: it stops
-    once its motion repeats.  A sweep estimated above the limits of work or memory is refused unless
+    once its motion repeats (default 3; 20 with a ``[lash_adjuster]``,
+    whose plunger settles over several revolutions: :data:`valvetrain.design.dynamics.REVOLUTIONS`).  A sweep estimated above the limits of work or memory is refused unless
     ``allow_large_sweep = true``."""
 
     model: Literal["1dof", "multi"] = "1dof"
@@ -230,7 +231,7 @@ class Dynamics(_Model):
     seat_damping_ratio: _bounded(0.0, 1.0, low_open=False, high_open=True) = 0.4
     speed_range_rpm: Optional[Pair(10.0, 30000.0, "rpm")] = None
     speeds: Annotated[int, Field(ge=2, le=2000)] = 200
-    revolutions: Annotated[int, Field(ge=1, le=20)] = 3
+    revolutions: Optional[Annotated[int, Field(ge=1, le=20)]] = None
     coils_per_spring: Annotated[int, Field(ge=0, le=64)] = 8
     step_cam_deg: _bounded(0.01, 2.0, "deg", low_open=False) = 0.1
     mass_kg: Optional[_bounded(0.001, 50.0, "kg", low_open=False)] = None
