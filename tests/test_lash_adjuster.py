@@ -242,3 +242,31 @@ def test_a_ramp_on_a_hydraulic_train_is_refused_naming_its_key(path, change, key
     words = str(err.value)
     assert f"{key}: its ramp takes up a mechanical clearance" in words
     assert "allowed [0.01, 5] mm" not in words
+
+
+def test_a_float_the_plunger_follows_is_a_failure_below_the_over_speed(floating, rigid):
+    """The polydyne valve preloaded to 150 N: the follower's force falls to the adjuster's push while the cam lifts
+    below the over-speed, a failure as a separation is.  The push at the valve by hand, in the tappet (motion ratio
+    1.6): (F_s + p_s A) / 1.6 = (15 + 0.3e6 x pi 0.009^2 / 4) / 1.6 = 34.085 / 1.6 = 21.303 N; the float comes below
+    the separation of the train without the adjuster (the push unloads the spring)."""
+    rec = floating.lash_adjuster
+    assert rec.push_at_valve == pytest.approx(21.303, abs=1e-3)
+    check = {c.code: c for c in floating.checks}["lash_adjuster.float"]
+    assert check.severity == "failure" and not check.passed
+    assert rec.float_speed < rigid.dynamics.jump_speed
+
+
+def test_the_modern_example_s_adjuster_settles_at_the_speeds_where_its_plunger_extends():
+    """The modern example's intake between 5600 and 7900 rpm (0.86 to 1.22 x the rated speed), where the follower's
+    force falls to the adjuster's push near the closing and the plunger extends: with the adjuster's default cap of
+    revolutions every speed repeats (at the former cap of 3, 14 of the example's 40 speeds did not), more than 3
+    revolutions at some; in the repeating revolution the plunger refills what it leaks down, its extension back at its
+    start within the 1 nm of the repetition (at the adjuster, / 0.649 the motion ratio)."""
+    text = FINGER.read_text().replace("[valves.intake.dynamics]\nspeeds = 40\n", "[valves.intake.dynamics]\nspeeds = "
+                                      "6\nspeed_range_rpm = [5600.0, 7900.0]\n", 1).replace(
+        "[valves.exhaust.dynamics]\nspeeds = 40\n", "", 1)
+    valve = run(parse_spec(text)).valves["intake"]
+    d = valve.dynamics
+    assert d.parameters.revolutions == 20 and d.unsettled_speeds == 0 and d.max_revolutions > 3
+    z = d.sweep.adjuster_extension
+    assert np.abs(z[:, -1] - z[:, 0]).max() < 1e-9 / 0.649 and (z.max(axis=1) - z.min(axis=1)).min() > 5e-7

@@ -11,7 +11,8 @@ import numpy as np
 from .. import lash_adjuster as hla
 from ..bibliography import cite
 from ..checks import Check, check
-from ..dynamics.sweep import lift_event
+from ..dynamics.sweep import lift_event, zero_crossing
+from ..units import to_display
 from .drive import event_load_maps
 from .dynamics import adjuster_element, adjuster_load
 from .results import quantity
@@ -69,6 +70,12 @@ class LashAdjusterResult:
                                             "over-speed", omit_none=True)
     max_held_open: Optional[float] = quantity("max_held_open_um", "um", "largest valve lift held on the base circle, "
                                               "up to the over-speed", omit_none=True)
+    push_at_valve: float = quantity("push_at_valve_N", "N", "the adjuster's own push (F_s + p_s A) / i_a at the valve: "
+                                    "the follower's force at which the check valve opens")
+    float_speed: Optional[float] = quantity("float_speed_rpm", "rpm", "lowest engine speed where the follower's "
+                                            "force falls to that push while the cam lifts the open valve (a float the "
+                                            "plunger follows), interpolated; null: none in the range swept",
+                                            omit_none=True)
     per_speed: LashAdjusterPerSpeed = quantity("per_speed", label="the lash adjuster at each speed")
 
 
@@ -78,6 +85,45 @@ def _stiffness_at_valve(la, force, ratio, area) -> Optional[float]:
     stiffness = hla.secant_stiffness(force, la.plunger_spring_N, area, la.supply_pressure, la.chamber_volume,
                                      la.bulk_modulus, la.air_content)[0]
     return float(stiffness / ratio**2) if np.isfinite(stiffness) else None
+
+
+def float_speed(speeds, lifting_force, push) -> float:
+    """The lowest speed where the follower floats with a lash adjuster, interpolated between the speeds of a sweep.
+
+    Parameters
+    ----------
+    speeds : ndarray (S,)
+        Ascending speeds (any unit; the result is in it).
+    lifting_force : ndarray (S,)
+        Smallest contact force at the valve while the cam lifts the open valve in its lift event [N]
+        (:func:`valvetrain.dynamics.sweep.lowest_lifting_force`; nan: the valve does not open).
+    push : float
+        The adjuster's own push at the valve, (F_s + p_s A) / i_a [N].
+
+    Returns
+    -------
+    float
+        :func:`valvetrain.dynamics.sweep.zero_crossing` of the force less the push (nan: no float).
+
+    Notes
+    -----
+    A mechanical train separates where its contact force falls to 0 while the cam lifts the open valve
+    (:func:`valvetrain.dynamics.sweep.separation_mask`).  With a hydraulic lash adjuster the contact need not open:
+    where the follower's force falls to the adjuster's push (F_s + p_s A) / i_a the chamber pressure falls to the
+    supply, the check valve opens and the plunger extends after the follower (:func:`valvetrain.dynamics.kernels`'
+    ``_adjust``), holding the contact at that push, and the valve leaves the cam law by the plunger's extension.  The
+    engineering definition of the float used here: the cam no longer holds the valve against its spring, the oil
+    does, i.e. the follower's force at or below the push while the cam lifts the open valve (the check valve's opening
+    condition, Merritt (1967)); the same as a separation of the train without the adjuster whose spring preload is
+    less by the push.
+
+    >>> float(float_speed(np.array([1.0, 2.0, 3.0]), np.array([90.0, 70.0, 50.0]), 50.0))
+    3.0
+    >>> float(float_speed(np.array([1.0, 2.0]), np.array([90.0, 70.0]), 50.0))
+    nan
+    """
+    margin = np.asarray(lifting_force, dtype=float) - push
+    return zero_crossing(np.asarray(speeds, dtype=float), margin, margin <= 1e-9 * push)
 
 
 def plunger_motion(extension, lift, event, base) -> tuple[float, float, float]:
@@ -185,11 +231,15 @@ def lash_adjuster_stage(la, valve, engine, cam, drive, dynamics=None,
     rated = int(np.argmin(np.abs(np.asarray(per.speed) - engine.rated_speed)))
     pumps = [p for p in per.pump_up if p is not None]
     helds = [p for p in per.held_open if p is not None]
+    push = (la.plunger_spring_N + la.supply_pressure * area) / ratio
+    floats = np.nan
+    if dynamics is not None:
+        floats = float_speed(dynamics.per_speed.speed, np.asarray(dynamics.per_speed.min_contact_force) / k, push)
     result = LashAdjusterResult(
         la.location, ratio, ref, pressure, sink, stiffness, stiffness / ratio**2,
         None if dynamics is None else dynamics.parameters.drive_stiffness, per.leak_down[rated],
         per.valve_lash[rated], max(per.refill_share), max(pumps) if pumps else None, max(helds) if helds else None,
-        per)
+        push, floats if np.isfinite(floats) else None, per)
     where = f"{at}.lash_adjuster"
     found = [check("lash_adjuster.refill", result.max_refill_share,
                    high=1.0, source=f"{cite('merritt1967')}: annular leakage and the check valve's orifice flow; "
@@ -198,6 +248,14 @@ def lash_adjuster_stage(la, valve, engine, cam, drive, dynamics=None,
         found.append(check("lash_adjuster.pump_up", result.max_pump_up, high=PUMP_UP_TOLERANCE, unit="um",
                            severity="failure", source=f"{cite('merritt1967')}: the plunger's extension simulated with "
                            f"the train up to [engine] over_speed_ratio x the rated speed; {where}"))
+        top = dynamics.speed_range[1]
+        note = "" if np.isfinite(floats) else (f"no float up to the top of the range swept, "
+                                              f"{to_display(top, 'rpm'):.0f} rpm")
+        found.append(check("lash_adjuster.float", (floats if np.isfinite(floats) else top) / engine.rated_speed,
+                           low=engine.over_speed_ratio, severity="failure", note=note,
+                           source=f"the follower's force at the adjuster's push {push:.4g} N at the valve, where its "
+                           f"check valve opens ({cite('merritt1967')}), while the cam lifts the open valve: no float "
+                           f"below [engine] over_speed_ratio x the rated speed; {where}"))
         found.append(check("lash_adjuster.held_open",
                            result.max_held_open, high=0.0, unit="um", severity="failure",
                            source=f"{cite('merritt1967')}: the valve's lift on the base circle simulated with the "

@@ -684,7 +684,10 @@ TEXT["en"].update({
                  "push the check valve opens and the plunger extends, refilling the lash on the base circle. Its "
                  "extension gained while the valve is off its seat before its first return (the follower floating) "
                  "is the pump-up of a revolution, a failure up to the over-speed; the smallest valve lift on the "
-                 "base circle is the valve held off its seat. At the speeds the dynamics does not sweep, the "
+                 "base circle is the valve held off its seat. The follower floats where its force falls to that "
+                 "push while the cam lifts the open valve: the plunger follows it, so the contact need not open, "
+                 "and a float below the over-speed is a failure as a separation is. At the speeds the dynamics does "
+                 "not sweep, the "
                  "leak-down is integrated over the quasi-static force",
     "la_location": "Location", "la_locations": {"pivot": "pivot of an end-pivot finger follower",
                                                 "tappet": "in the tappet, in series with the cam contact"},
@@ -699,6 +702,8 @@ TEXT["en"].update({
         "max_refill_share": "largest refill time / base-circle time",
         "max_pump_up_um": "largest pump-up per revolution up to the over-speed, µm",
         "max_held_open_um": "largest valve lift held on the base circle, µm",
+        "push_at_valve_N": "the adjuster's push at the valve (check valve opens), N",
+        "float_speed_rpm": "float speed (the follower's force at that push while the cam lifts), rpm",
         "speed_rpm": "engine speed, rpm", "leak_down_um": "leak-down per revolution, µm",
         "valve_lash_um": "lash at the valve, µm", "refill_share": "refill time / base-circle time",
         "pump_up_um": "pump-up per revolution, µm", "held_open_um": "valve held open, µm",
@@ -718,7 +723,10 @@ TEXT["ru"].update({
                  "открывается обратный клапан и плунжер выдвигается, выбирая зазор на цилиндрической части кулачка. "
                  "Выдвижение, набранное, пока клапан не сел на седло в первый раз после открытия (толкатель "
                  "оторвался от кулачка), — выдвижение плунжера за оборот, недопустимое до заброса оборотов; "
-                 "наименьший подъём клапана на цилиндрической части — клапан, не севший на седло. На частотах вне "
+                 "наименьший подъём клапана на цилиндрической части — клапан, не севший на седло. Толкатель "
+                 "отрывается там, где его сила падает до этого усилия, пока кулачок поднимает открытый клапан: "
+                 "плунжер выдвигается за ним, контакт может не раскрыться, и отрыв ниже частоты заброса оборотов — "
+                 "отказ, как и отрыв толкателя без гидрокомпенсатора. На частотах вне "
                  "расчёта динамики проседание интегрируется по квазистатической силе",
     "la_location": "Расположение", "la_locations": {"pivot": "опора рычага с опорой на конце",
                                                     "tappet": "в толкателе, последовательно с контактом кулачка"},
@@ -734,6 +742,9 @@ TEXT["ru"].update({
         "max_refill_share": "наибольшее отношение времени заполнения к времени на цилиндрической части",
         "max_pump_up_um": "наибольшее выдвижение плунжера при отрыве за оборот до заброса оборотов, мкм",
         "max_held_open_um": "наибольший подъём клапана, удерживаемый на цилиндрической части, мкм",
+        "push_at_valve_N": "усилие гидрокомпенсатора, приведённое к клапану (открывается обратный клапан), Н",
+        "float_speed_rpm": "частота отрыва (сила толкателя падает до этого усилия, пока кулачок поднимает клапан), "
+                           "об/мин",
         "speed_rpm": "частота вращения, об/мин", "leak_down_um": "проседание за оборот, мкм",
         "valve_lash_um": "зазор у клапана, мкм", "refill_share": "время заполнения / время на цилиндрической части",
         "pump_up_um": "выдвижение при отрыве за оборот, мкм", "held_open_um": "клапан удерживается открытым, мкм",
