@@ -270,3 +270,23 @@ def test_the_modern_example_s_adjuster_settles_at_the_speeds_where_its_plunger_e
     assert d.parameters.revolutions == 20 and d.unsettled_speeds == 0 and d.max_revolutions > 3
     z = d.sweep.adjuster_extension
     assert np.abs(z[:, -1] - z[:, 0]).max() < 1e-9 / 0.649 and (z.max(axis=1) - z.min(axis=1)).min() > 5e-7
+
+
+def test_a_plunger_that_leaks_down_as_fast_as_the_cam_lifts_keeps_the_valve_shut():
+    """The modern example's intake adjuster with a 50 um clearance, a 0.5 mm land and an oil of 0.11 mPa s: its leak
+    coefficient pi d c^3 / (12 mu L) = pi 0.009 (50e-6)^3 / (12 x 0.11e-3 x 0.5e-3) = 5.355e-9 m^3/(s Pa) sinks the
+    plunger under the spring's preload alone (about 179 N at the valve, 116 N on the adjuster at i_a = 0.649:
+    (116 - 15) / 6.3617e-5 - 0.3e6 = 1.29 MPa above the supply) at Q / A = 5.355e-9 x 1.29e6 / 6.3617e-5 = 109 m/s,
+    while the cam lifts the valve at under 1 m/s at these speeds: the valve never leaves its seat.  The check
+    dynamics.valve_opens fails naming the plunger's sink; before, the design showed no failure that said so."""
+    text = FINGER.read_text().replace("radial_clearance_um = 4.0", "radial_clearance_um = 50.0", 1).replace(
+        "leak_length_mm = 8.0", "leak_length_mm = 0.5", 1).replace(
+        "[valves.intake.dynamics]\nspeeds = 40\n", "[valves.intake.dynamics]\nspeeds = 3\n", 1).replace(
+        "[valves.exhaust.dynamics]\nspeeds = 40\n", "", 1)
+    text = text.replace("oil_viscosity_mPa_s = 8.0\nair_content", "oil_viscosity_mPa_s = 0.11\nair_content", 1)
+    valve = run(parse_spec(text)).valves["intake"]
+    opens = {c.code: c for c in valve.checks}["dynamics.valve_opens"]
+    assert opens.severity == "failure" and not opens.passed and opens.value < 1e-6
+    assert "the lash adjuster's plunger sinks by" in opens.note and "the drive deflects" not in opens.note
+    sink = float(opens.note.split("sinks by ")[1].split(" mm")[0])
+    assert sink > 9.0

@@ -302,3 +302,19 @@ def test_sweep_estimated_above_the_limits_is_refused(monkeypatch):
     with pytest.raises(SpecError, match="allow_large_sweep"):
         run(spec(FEW))
     assert run(spec(FEW + "allow_large_sweep = true\n")).valves["intake"].dynamics.speeds == 3
+
+
+def test_a_valve_the_cam_cannot_lift_off_its_seat_fails_naming_the_reason():
+    """The built-in intake with a drive of 100 N/mm and a spring preload of 1500 N (rate 30 N/mm): the drive deflects
+    F0 / c = 1500 / 100 = 15 mm under the preload, more than the cam's lift at the valve (its
+    rigid lift, 10 mm), so the valve stays on its seat at every speed.  Before, only the seating velocity
+    failed, as a value that could not be computed; now the check dynamics.valve_opens fails naming the drive's
+    deflection, and the seating velocity says why it has none."""
+    valve = run(spec(FEW + "drive_stiffness_N_per_mm = 100\nspring_preload_N = 1500\nspring_rate_N_per_mm = 30\n"))
+    checks = {c.code: c for c in valve.valves["intake"].checks}
+    opens = checks["dynamics.valve_opens"]
+    assert opens.severity == "failure" and not opens.passed and opens.value < 1e-6
+    assert opens.note == ("at 700 rpm the cam lifts the valve by 10 mm without its drive's compliance; the drive "
+                          "deflects F0 / c = 15 mm under the spring preload 1500 N")
+    assert checks["dynamics.seating_velocity"].unevaluated == "the valve does not leave its seat at the rated speed"
+    assert "dynamics.valve_opens" not in {c.code for c in run(spec(FEW)).valves["intake"].checks}

@@ -22,7 +22,7 @@ from ..dynamics.models import (Adjuster, CoilSpring, MultiMassTrain, OneMassTrai
                                natural_modes, one_mass_train, pushrod_stiffness, pushrod_train, rocker_train, series)
 from ..dynamics.perturbation import perturbation_parameter
 from ..dynamics.resonance import resonance
-from ..dynamics.sweep import SpeedResult, SweepResult, headline_sweep, sweep, sweep_size
+from ..dynamics.sweep import BOUNCE_TOLERANCE, SpeedResult, SweepResult, headline_sweep, sweep, sweep_size
 from ..followers import follower_of
 from ..layouts import chain, finger_inertia, layout, valve_arm
 from ..specification import SpecError
@@ -676,16 +676,20 @@ def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, 
         float(np.sqrt((kk + c) / m) / (2 * np.pi)), tuple(mode.frequency for mode in modes), modes,
         int(result.revolutions.max()), int(np.count_nonzero(~result.converged)), rated_record, reson, table,
         f"tables/{name}_dynamics.csv", result, tuple(per), rated)
-    return out, dynamics_checks(out, engine)
+    return out, dynamics_checks(out, engine, 0.0 if train.adjuster is None else train.adjuster.motion_ratio)
 
 
-CHECK_CODES = ("dynamics.seating_velocity", "dynamics.jump_speed")
+CHECK_CODES = ("dynamics.seating_velocity", "dynamics.jump_speed", "dynamics.valve_opens")
 """The codes of the dynamics checks."""
 
+CLOSED = "the valve does not leave its seat at the rated speed"
+"""Why the seating velocity of a valve that stays on its seat cannot be had."""
 
-def dynamics_checks(d, engine) -> list[Check]:
+
+def dynamics_checks(d, engine, adjuster_ratio=0.0) -> list[Check]:
     """The seating velocity at the rated speed (a warning above its band) and the follower separation: a failure
-    below ``[engine] over_speed_ratio`` x the rated speed.
+    below ``[engine] over_speed_ratio`` x the rated speed; a valve that stays on its seat at a speed swept, a failure
+    (:func:`opening_check`; ``adjuster_ratio`` the lash adjuster's motion ratio, 0 without one).
 
     Without a separation in the range the check takes the top of the range: a range that stops below the over-speed
     has not shown the valve keeps its cam there, and fails.
@@ -694,11 +698,54 @@ def dynamics_checks(d, engine) -> list[Check]:
     jump = d.jump_speed if np.isfinite(d.jump_speed) else top
     note = "" if np.isfinite(d.jump_speed) else (f"no separation up to the top of the range swept, "
                                                   f"{to_display(top, 'rpm'):.0f} rpm")
+    opened = float(d.rated.lift.max()) > BOUNCE_TOLERANCE
     return [check(CHECK_CODES[0], abs(d.at_rated_speed.seating_velocity),
-                  high=SEATING_VELOCITY_MAX, unit="m/s", source=CHECK_SOURCE + "; 0.3-0.5 m/s usual"),
+                  high=SEATING_VELOCITY_MAX, unit="m/s", source=CHECK_SOURCE + "; 0.3-0.5 m/s usual",
+                  unevaluated="" if opened else CLOSED),
             check(CHECK_CODES[1], jump / engine.rated_speed, low=engine.over_speed_ratio, severity="failure",
                   note=note, source=CHECK_SOURCE + ": no separation below [engine] over_speed_ratio x the rated "
-                  "speed")]
+                  "speed")] + opening_check(d, adjuster_ratio)
+
+
+def opening_check(d, adjuster_ratio=0.0) -> list[Check]:
+    """The check of a valve that stays on its seat at a speed swept (none where it opens at every speed).
+
+    Parameters
+    ----------
+    d : DynamicsResult
+    adjuster_ratio : float
+        The lash adjuster's motion ratio i_a (valve motion per plunger motion; 0: none).
+
+    Returns
+    -------
+    list of Check
+        ``dynamics.valve_opens``: the smallest over the speeds swept of the valve's largest lift in the revolution
+        [m], a failure not above :data:`~valvetrain.dynamics.sweep.BOUNCE_TOLERANCE` (below it the valve rocks on the
+        seat's elasticity: it has not opened); its note names the speed and the reasons found: the drive's deflection
+        under the spring preload F0 / c no less than the cam's lift at the valve (quasi-statically the cam cannot lift
+        the valve off its seat), else with a lash adjuster its plunger's travel over the revolution at the valve,
+        i_a (z_max - z_min), where it takes up the cam's lift less that deflection (the leak-down sinks the plunger as
+        fast as the cam lifts).
+    """
+    lifts = d.sweep.lift.max(axis=1)
+    worst = int(np.argmin(lifts))
+    if lifts[worst] > BOUNCE_TOLERANCE:
+        return []
+    p = d.parameters
+    rigid = float(d.sweep.kinematic_lift.max())
+    reasons = [f"at {to_display(d.per_speed.speed[worst], 'rpm'):.0f} rpm the cam lifts the valve by {rigid / MM:.4g} "
+               f"mm without its drive's compliance"]
+    if p.preload / p.drive_stiffness >= rigid:
+        reasons.append(f"the drive deflects F0 / c = {p.preload / p.drive_stiffness / MM:.4g} mm under the spring "
+                       f"preload {p.preload:.4g} N")
+    elif adjuster_ratio > 0.0:
+        travel = adjuster_ratio * float(np.ptp(d.sweep.adjuster_extension[worst]))
+        if travel >= rigid - p.preload / p.drive_stiffness:
+            reasons.append(f"the lash adjuster's plunger sinks by {travel / MM:.4g} mm at the valve over the "
+                           "revolution (its leak-down)")
+    return [check(CHECK_CODES[2], float(lifts[worst]), low=BOUNCE_TOLERANCE, unit="mm", severity="failure",
+                  note="; ".join(reasons), source=CHECK_SOURCE + ": a valve that leaves its seat by less than 0.001 mm "
+                  "rocks on the seat's elasticity")]
 
 
 SWEEP_COLUMNS = [
