@@ -134,6 +134,49 @@ def motion_ratio(location: str, rocker_ratio: float) -> float:
     return rocker_ratio - 1.0 if location == "pivot" else rocker_ratio
 
 
+def pivot_motion_ratio(pivot, centre, valve_arm: float, roller_arm: float, valve_angle: float,
+                       axis_angle: float) -> float:
+    """Valve motion per plunger extension of a lash adjuster at the pivot of a finger, from its geometry on the heel
+    circle and the adjuster's axis (and the adjuster's force per valve force, by virtual work).
+
+    Parameters
+    ----------
+    pivot, centre : ndarray (2,)
+        The pivot P and the roller centre C on the heel circle, from the cam centre [m] (the follower on +y).
+    valve_arm : float
+        G = dv/dpsi of the finger on the heel circle [m/rad].
+    roller_arm : float
+        L_r = |C - P| [m].
+    valve_angle : float
+        alpha [rad]: the valve opens along a = (sin alpha, cos alpha).
+    axis_angle : float
+        phi [rad]: the adjuster's axis, from +y clockwise; the extending plunger moves the pivot along
+        u = -(sin phi, cos phi), towards the cam's side of the finger (the side that takes up the lash).
+
+    Notes
+    -----
+    The roller stays on the heel circle, |C| = R_0 + R_r, while the pivot moves by s u: C = P + L_r e(psi) and
+    d|C|^2 = 2 C . (s u + L_r e_perp dpsi) = 0 give dpsi = -s (C . u) / (L_r C . e_perp), e_perp the unit normal of
+    C - P (counter-clockwise).  The pad's centre B = P + L_b e(psi + beta) moves along the valve by
+    s u . a + G dpsi, so
+
+    .. math:: i_a = \\mathbf u\\cdot\\mathbf a - \\frac{G\\,(\\mathbf C\\cdot\\mathbf u)}{L_r\\,(\\mathbf C\\cdot
+              \\mathbf e_\\perp)}
+
+    With the axis along the valve and the roller's normal (u = -a, C along e_perp) it is G / L_r - 1 = i - 1, the
+    straight lever of :func:`motion_ratio`; a tilt of the axis or of the finger changes both terms.  The kinematics of
+    the finger: Norton (2009); Wang (2007).
+
+    >>> round(pivot_motion_ratio(np.array([-0.02, 0.025]), np.array([0.0, 0.025]), 0.032, 0.02, 0.0, 0.0), 12)
+    0.6
+    """
+    u = -np.array([np.sin(axis_angle), np.cos(axis_angle)])
+    a = np.array([np.sin(valve_angle), np.cos(valve_angle)])
+    e = (np.asarray(centre) - np.asarray(pivot)) / roller_arm
+    normal = np.array([-e[1], e[0]])
+    return float(u @ a - valve_arm * (centre @ u) / (roller_arm * (centre @ normal)))
+
+
 def secant_stiffness(force: float, plunger_spring: float, area: float, supply: float, volume: float,
                      bulk_modulus: float, air_content: float) -> tuple[float, float, float]:
     """Secant stiffness [N/m] of the oil column under ``force`` [N] on the plunger, its compression [m] and the chamber

@@ -347,8 +347,16 @@ def lever_ratio(valve, law) -> float:
 
 
 def adjuster_ratio(valve, law) -> float:
-    """The lash adjuster's motion ratio (:func:`valvetrain.lash_adjuster.motion_ratio`) with the :func:`lever_ratio`."""
-    return hla.motion_ratio(valve.lash_adjuster.location, lever_ratio(valve, law))
+    """The lash adjuster's motion ratio: at the pivot of a finger given by its geometry, its linkage on the heel circle
+    with the adjuster's axis (``axis_angle_deg``, default the valve's; :func:`valvetrain.lash_adjuster.pivot_motion_ratio`);
+    else :func:`valvetrain.lash_adjuster.motion_ratio` with the :func:`lever_ratio`."""
+    la, follower = valve.lash_adjuster, follower_of(valve.cam)
+    if la.location != "pivot" or not follower.law_at_valve:
+        return hla.motion_ratio(la.location, lever_ratio(valve, law))
+    psi = follower.base_angle(valve.cam.base_radius - law.ramp_height)
+    axis = follower.valve_angle if la.axis_angle is None else la.axis_angle
+    return hla.pivot_motion_ratio(np.array([follower.pivot_x, follower.pivot_y]), follower.centre(psi),
+                                  float(follower.valve_arm(psi)), follower.roller_arm, follower.valve_angle, axis)
 
 
 def adjuster_load(valve, law, drive, cam_speed: float, at: str) -> tuple[float, float]:
@@ -723,9 +731,10 @@ def opening_check(d, adjuster_ratio=0.0) -> list[Check]:
         [m], a failure not above :data:`~valvetrain.dynamics.sweep.BOUNCE_TOLERANCE` (below it the valve rocks on the
         seat's elasticity: it has not opened); its note names the speed and the reasons found: the drive's deflection
         under the spring preload F0 / c no less than the cam's lift at the valve (quasi-statically the cam cannot lift
-        the valve off its seat), else with a lash adjuster its plunger's travel over the revolution at the valve,
-        i_a (z_max - z_min), where it takes up the cam's lift less that deflection (the leak-down sinks the plunger as
-        fast as the cam lifts).
+        the valve off its seat), else with a lash adjuster its plunger giving way: a shut valve carries no more than
+        its preload, so the drive deflects no more than F0 / c and the plunger's sink takes the rest of the cam's
+        lift (the leak-down sinks it as fast as the cam lifts); its travel over the revolution at the valve,
+        i_a (z_max - z_min), is said.
     """
     lifts = d.sweep.lift.max(axis=1)
     worst = int(np.argmin(lifts))
@@ -740,9 +749,9 @@ def opening_check(d, adjuster_ratio=0.0) -> list[Check]:
                        f"preload {p.preload:.4g} N")
     elif adjuster_ratio > 0.0:
         travel = adjuster_ratio * float(np.ptp(d.sweep.adjuster_extension[worst]))
-        if travel >= rigid - p.preload / p.drive_stiffness:
-            reasons.append(f"the lash adjuster's plunger sinks by {travel / MM:.4g} mm at the valve over the "
-                           "revolution (its leak-down)")
+        reasons.append(f"the drive deflects F0 / c = {p.preload / p.drive_stiffness / MM:.4g} mm under the spring "
+                       f"preload at most, the rest is the lash adjuster's plunger giving way (its leak-down; it "
+                       f"travels {travel / MM:.4g} mm at the valve over the revolution)")
     return [check(CHECK_CODES[2], float(lifts[worst]), low=BOUNCE_TOLERANCE, unit="mm", severity="failure",
                   note="; ".join(reasons), source=CHECK_SOURCE + ": a valve that leaves its seat by less than 0.001 mm "
                   "rocks on the seat's elasticity")]

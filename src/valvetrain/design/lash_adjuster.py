@@ -53,7 +53,8 @@ class LashAdjusterResult:
     """The hydraulic lash adjuster of a valve (SI)."""
 
     location: str = quantity("location", label="pivot of an end-pivot finger, or in the tappet")
-    motion_ratio: float = quantity("motion_ratio", label="valve motion / adjuster motion (pivot i - 1, tappet i)")
+    motion_ratio: float = quantity("motion_ratio", label="valve motion / adjuster motion (pivot i - 1, of a "
+                                   "finger its linkage along the adjuster's axis; tappet i)")
     reference_force: float = quantity("reference_force_N", "N", "largest quasi-static force on the adjuster at the "
                                       "rated speed")
     chamber_pressure: float = quantity("chamber_pressure_MPa", "MPa", "chamber pressure under it")

@@ -412,7 +412,11 @@ class LashAdjuster(_Model):
 
     ``location``: ``"pivot"`` (the pivot of an end-pivot finger follower: it moves the valve by (i - 1) times its own
     motion and carries (i - 1) times the valve force) or ``"tappet"`` (in the tappet or bucket: i times its motion,
-    the cam force).
+    the cam force).  ``axis_angle_deg``: at the pivot of a finger given by its geometry (``follower = "finger"``), the
+    adjuster's axis from +y clockwise (default: the valve's, ``finger_valve_angle_deg``, the bore parallel to the valve
+    stem); its motion ratio is then the finger's linkage on the heel circle
+    (:func:`valvetrain.lash_adjuster.pivot_motion_ratio`), not the straight lever's i - 1.  A tappet's adjuster moves
+    along the tappet, a rocker's of a given ``rocker_ratio`` along the straight lever's normal: no axis to give.
 
     Defaults: ``oil_viscosity_mPa_s`` = 10 is an SAE 30 (or xW-30) oil near 100 degC (SAE J300 (2015), as in
     ``[lubrication]``).  The other defaults are typical values of a passenger-car adjuster chosen without a cited
@@ -420,6 +424,7 @@ class LashAdjuster(_Model):
     free air); Merritt (1967) gives the formulas they enter, not these values."""
 
     location: Literal["pivot", "tappet"] = "pivot"
+    axis_angle_deg: Optional[_bounded(-180.0, 180.0, "deg", low_open=False)] = None
     plunger_diameter_mm: Length(2.0, 50.0, low_open=False) = 9.0
     radial_clearance_um: _bounded(0.5, 50.0, "um", low_open=False) = 4.0
     leak_length_mm: Length(0.5, 100.0, low_open=False) = 8.0

@@ -39,6 +39,12 @@ def _valve_problems(name, v, engine):
     if v.lash_adjuster is not None and v.clearance_mm != 0.0:
         out.append(Problem(f"{at}.clearance_mm", "allowed 0 with a lash_adjuster section (it leaves no lash on the "
                            "base circle for a ramp to take up)", f"{v.clearance_mm:g}"))
+    axis = None if v.lash_adjuster is None else v.lash_adjuster.axis_angle_deg
+    if axis is not None and (v.lash_adjuster.location != "pivot" or not FOLLOWERS[v.cam.follower].law_at_valve):
+        out.append(Problem(f"{at}.lash_adjuster.axis_angle_deg", "allowed only at the pivot of a finger given by its "
+                           "geometry (location = \"pivot\", cam.follower = \"finger\"): a tappet's adjuster moves "
+                           "along the tappet, a rocker's of a given rocker_ratio along the straight lever's normal",
+                           f"{axis:g}", " "))
     ratio = v.spring.mean_diameter_ratio
     wires = v.spring.wire_diameter_range_mm
     low, high = (x / MM for x in feasible_mean_diameters(wires))
