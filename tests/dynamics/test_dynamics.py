@@ -6,24 +6,12 @@ from types import SimpleNamespace
 import numpy as np
 import pytest
 
-from valvetrain.dynamics.models import one_mass_train
 from valvetrain.dynamics.perturbation import (kinetostatic_force, outer_lift, outer_solution, perturbation_parameter,
                                               quasi_static_lift)
 from valvetrain.dynamics.sweep import runs, simulate, sweep
-from valvetrain.laws import DynamicLaw, KurzLaw
+from valvetrain.laws import KurzLaw
 
-RPM = np.pi / 30.0
-
-
-def spec12():
-    """The worked example of spec sections 2, 8 and 12: the dynamic cam of tests/laws/test_laws_more.py (c = 15000
-    N/mm, M = 0.25 kg, K = 67.5 N/mm, F0 = 400 N, k = 1.5, x0 = 0.30 mm, designed for 3000 cam rpm) and its
-    one-mass train with zeta = 0.05."""
-    omega = 3000 * RPM
-    law = DynamicLaw(8e-3, np.radians(55), [2, 10, 18, 26, 34], 0.3 / omega, 15e6, 0.25, 67.5e3, 400.0, omega,
-                     1.5, 0.3e-3, "constant_acceleration", 0.5)
-    return law, one_mass_train(0.25, 15e6, 67.5e3, 400.0, 1.5, 0.3e-3, damping_ratio=0.05)
-
+from reference_dynamics import RPM, spec12
 
 def test_quasi_static_limit():
     """Stiff, slow limit (spec section 12 check): at 10 cam rpm (epsilon = 1.8e-8) the valve follows

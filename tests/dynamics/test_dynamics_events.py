@@ -8,7 +8,7 @@ from valvetrain.dynamics.models import one_mass_train
 from valvetrain.dynamics.sweep import headline_sweep, seating, sweep
 
 from reference_dynamics import seat_crossings
-from test_dynamics import RPM, spec12
+from reference_dynamics import RPM, spec12
 
 
 def harmonic_cam(lift, half_angle):

@@ -6,7 +6,7 @@ import numpy as np
 from valvetrain.laws import KurzLaw, PowerPolynomialLaw
 from valvetrain.laws.base import batch_derivatives
 
-from test_power_polynomial import LAWS, MM, article
+from laws.test_power_polynomial import LAWS, MM, article
 
 
 def members(n=24, seed=3):

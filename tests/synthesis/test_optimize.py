@@ -21,7 +21,7 @@ from valvetrain.synthesis.optimize import (Problem, Variable, default_variables,
                                            parse_variables)
 
 from appendix import appendix_text, appendix_spec
-from test_synthesis_constraints import pitch_radius_by_differences
+from synthesis.test_synthesis_constraints import pitch_radius_by_differences
 
 MM, DEG = 1e-3, np.pi / 180.0
 
