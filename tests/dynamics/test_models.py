@@ -18,7 +18,7 @@ PARTS = dict(tappet_mass=0.06, pushrod_mass=0.09, rocker_inertia=6e-5, valve_mas
 
 
 def spec8_law():
-    """The dynamic cam of spec section 8 (see tests/dynamics/test_dynamics.py)."""
+    """The dynamic cam of spec section 8 (see tests/reference_dynamics.py)."""
     omega = 3000 * RPM
     law = DynamicLaw(8e-3, np.radians(55), [2, 10, 18, 26, 34], 0.3 / omega, 15e6, 0.25, 67.5e3, 400.0, omega,
                      1.5, 0.3e-3, "constant_acceleration", 0.5)

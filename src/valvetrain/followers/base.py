@@ -63,7 +63,7 @@ Write one module in this package with a subclass of :class:`Follower` decorated 
   admits only a rolling follower.
 
 Methods return numpy arrays (floats where the argument is a scalar); none of them mutates its arguments or
-the follower, and they hold no state beyond the follower's dimensions.  ``tests/followers/test_followers.py`` checks the two
+the follower, and they hold no state beyond the follower's dimensions.  ``tests/followers/test_base.py`` checks the two
 followers against hand calculations; a new follower's tests go beside them.
 """
 
