@@ -6,13 +6,16 @@ import itertools
 import re
 
 from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.figure import Figure
 from matplotlib.text import Text
 import numpy as np
 import pytest
 
 from valvetrain.design import run
+from valvetrain.laws.convex import ThreeArcLaw
 from valvetrain.report import plots
 from valvetrain.report.i18n import TEXT
+from valvetrain.report.plots import jerk_impulses
 
 from appendix import appendix_spec
 
@@ -145,3 +148,16 @@ def test_a_drawer_draws_the_figures_it_claims(results):
     plots.write_plots(results, even, figures="all", claim=itertools.count(0, 2).__next__)
     assert not set(odd) & set(even)
     assert sorted([*odd, *even]) == sorted(order)
+
+
+def test_jerk_plot_marks_each_impulse():
+    """The jerk plot draws an arrow and a marker at each step, pointing the way the acceleration jumps."""
+    law = ThreeArcLaw(20e-3, 8e-3, np.radians(60.0), 5e-3)
+    ax = Figure().subplots()
+    theta = np.linspace(law.start, law.end, 201)
+    ax.plot(np.degrees(theta), law.jerk(theta, 100.0))
+    jerk_impulses(ax, law, 100.0)
+    arrows = [a for a in ax.texts if a.arrow_patch is not None]
+    assert len(arrows) == 4
+    assert [np.sign(a.xy[1]) for a in arrows] == [1.0, -1.0, 1.0, -1.0]
+    assert [a.xy[0] for a in arrows] == pytest.approx([np.degrees(s.angle) for s in law.acceleration_steps()])
