@@ -7,7 +7,7 @@ from click.testing import CliRunner
 
 from valvetrain.cli import main
 from valvetrain.crank import pressure
-from valvetrain.specification import example_text
+from valvetrain.specification import SpecError, example_text, parse_spec
 
 from appendix import appendix_text, appendix_spec
 
@@ -302,3 +302,10 @@ def test_a_rocker_inertia_without_its_valve_arm_is_refused(refused):
     assert text.count("valve_arm_mm = 40.0") == 2
     out = refused("\n".join(line for line in text.split("\n") if not line.startswith("valve_arm_mm")))
     assert "valves.intake.drive.masses.rocker_inertia_kg_mm2 = 25: needs drive.valve_arm_mm" in out
+
+
+@pytest.mark.parametrize("value", [-1.0, 50.5])
+def test_a_margin_outside_its_range_is_refused(value):
+    text = appendix_text().replace("min_margin_percent = 0.0 ", f"min_margin_percent = {value} ")
+    with pytest.raises(SpecError, match=r"min_margin_percent = .*: allowed \[0, 50\] %"):
+        parse_spec(text)
