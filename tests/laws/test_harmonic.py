@@ -7,6 +7,8 @@ import pytest
 from valvetrain.laws.harmonic import HarmonicLaw, harmonic_limit
 from valvetrain.laws.polydyne import PolydyneLaw
 
+from appendix import appendix_cam, appendix_with
+
 
 def _polydyne_target():
     """The spec's section 7 cam: h_max 8, h0 0.3, v0 0.4 mm/rad, 55 deg, exponents 2, 10, 18, 26, 34."""
@@ -38,3 +40,30 @@ def test_harmonic_limit_rule():
     """N < alpha_W omega_n / (pi omega) (spec section 9): with epsilon = 0.00164 and alpha_W = 70 deg, N < 9.6."""
     eps = 0.00164
     assert harmonic_limit(np.radians(70), 1.0 / np.sqrt(eps), 1.0) == pytest.approx(9.6, abs=0.05)
+
+
+def test_high_harmonic_and_junction_orders_fit(tmp_path):
+    """N = 400, m = 10 made the KKT system singular (a lift of 1.5e10 mm); the null-space solution follows the
+    Kurz target of the appendix of Valve-train practical works (n.d.) (10 mm valve lift) within 2 um."""
+    from valvetrain.design import run
+    from valvetrain.specification import parse_spec
+
+    res = run(parse_spec(_harmonic(400, 10))).to_dict()["valves"]["intake"]
+    assert res["flow"]["valve_lift_mm"] == pytest.approx(10.0, rel=1e-9)
+    assert res["cam"]["coefficients"]["max_deviation_mm"] < 2e-3
+
+
+def _harmonic(n, m):
+    return appendix_with((appendix_cam(), f"""[valves.intake.cam]
+law = "harmonic"
+harmonics = {n}
+junction_order = {m}
+base_radius_mm = 20.0
+[valves.intake.cam.target]
+law = "kurz"
+ramp_end_velocity_mm_per_deg = 0.02
+phi1_deg = 27.0
+phi2_deg = 6.0
+phi3_deg = 38.0
+
+"""))
