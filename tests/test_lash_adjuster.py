@@ -342,3 +342,39 @@ def test_an_adjuster_axis_without_a_finger_s_geometry_is_refused():
     with pytest.raises(SpecError, match=r"valves.intake.lash_adjuster.axis_angle_deg = 10 allowed only at the pivot of "
                                         r"a finger given by its geometry"):
         parse_spec(text)
+
+
+def ramped_exhaust(ramp_height, dynamics="speeds = 4\nspeed_range_rpm = [1000.0, 4000.0]\n"):
+    """The polydyne example's exhaust (polydyne with cosine ramps ending at 0.015 mm/deg, rocker ratio 1.5) without
+    clearance, with a lash adjuster in the tappet and the quieting ramp ``ramp_height_mm`` (None: not given)."""
+    height = "" if ramp_height is None else f"ramp_height_mm = {ramp_height}\n"
+    text = EXAMPLE.read_text().split("[[accepted]]")[0].replace("clearance_mm = 0.40", "clearance_mm = 0.0", 1)
+    return text.replace("[valves.exhaust.spring]", f"[valves.exhaust.dynamics]\n{dynamics}\n[valves.exhaust.lash_"
+                        f'adjuster]\nlocation = "tappet"\n{height}\n[valves.exhaust.spring]', 1)
+
+
+@pytest.mark.parametrize("height, words", [
+    (0.1, "valves.exhaust.lash_adjuster.ramp_height_mm = 0.1: allowed (0, 0.05] mm"),
+    (0.0, "valves.exhaust.lash_adjuster.ramp_height_mm = 0.0: allowed (0, 0.05] mm"),
+    (None, "valves.exhaust.cam.ramp = true: its ramp takes up a mechanical clearance"),
+])
+def test_a_quieting_ramp_beyond_its_band_is_refused(height, words):
+    with pytest.raises(SpecError) as err:
+        run(parse_spec(ramped_exhaust(height)))
+    assert words in str(err.value)
+
+
+def test_a_quieting_ramp_lifts_the_valve_and_seats_it_at_the_ramp_s_velocity():
+    """A ramp of 0.03 mm at the cam with the adjuster: the law's ramp is 0.03 mm high and the dynamics simulate no lash
+    (the ramp lifts the valve; a mechanical train would have 1.5 x 0.03 = 0.045 mm).  The drive deflects under the
+    spring's preload by F0 / c (about 0.031 mm at the valve, under the ramp's 0.045 mm), so the valve leaves and meets
+    its seat near the ramp's end, at the ramp's end velocity: at 1000 engine rpm by hand
+    k omega v_r = 1.5 x (1000 pi / 60 / 2) x 0.015 x 180 / pi mm/rad = 1.5 x 52.360 x 0.85944e-3 = 0.06750 m/s, within 2 %;
+    the same cam without its ramp seats faster (the flank's velocity there)."""
+    valve = run(parse_spec(ramped_exhaust(0.03))).valves["exhaust"]
+    without = run(parse_spec(ramped_exhaust(None).replace("ramp = true\n", "ramp = false\n", 1))).valves["exhaust"]
+    d = valve.dynamics
+    assert valve.cam.law.ramp_height == pytest.approx(3e-5, rel=1e-12) and d.parameters.lash == 0.0
+    assert d.parameters.preload / d.parameters.drive_stiffness < 1.5 * 3e-5
+    assert abs(d.per_speed.seating_velocity[0]) == pytest.approx(0.06750, rel=0.02)
+    assert abs(without.dynamics.per_speed.seating_velocity[0]) > 1.3 * abs(d.per_speed.seating_velocity[0])

@@ -436,7 +436,7 @@ def build_train(dyn, valve, law, drive, at, cam_speed=None) -> tuple[Union[OneMa
     ``cam_speed`` (rated camshaft speed [rad/s]) is needed when [dynamics] gives a preload without a rate.
     """
     k = valve.rocker_ratio
-    lash = k * law.ramp_height
+    lash = 0.0 if valve.lash_adjuster is not None else k * law.ramp_height   # a hydraulic quieting ramp lifts the valve
     line = drive.lines.chosen
     links, names, notes = drive_links(dyn, valve, lever_ratio(valve, law), at)
     element = None
@@ -460,7 +460,9 @@ def build_train(dyn, valve, law, drive, at, cam_speed=None) -> tuple[Union[OneMa
         notes.insert(1, arm_note)
     rate, preload, spring_note = train_spring(dyn, valve, law, line, mass, cam_speed, at)
     notes.append(spring_note)
-    notes.append(f"lash {lash / MM:.4g} mm at the valve: the clearance the ramp takes up times the rocker ratio")
+    notes.append(f"lash {lash / MM:.4g} mm at the valve: the clearance the ramp takes up times the rocker ratio"
+                 if valve.lash_adjuster is None or law.ramp_height == 0.0 else
+                 f"no lash: the lash adjuster's quieting ramp of {law.ramp_height / MM:.4g} mm lifts the valve")
     kw = dict(damping_ratio=dyn.damping_ratio, seat_stiffness=dyn.seat_stiffness,
               seat_damping_ratio=dyn.seat_damping_ratio)
     nodes = None

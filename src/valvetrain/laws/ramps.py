@@ -1,7 +1,10 @@
 """Ramps (clearance take-up segments) of lift laws.
 
 A ramp lifts the follower through the valve clearance h0 at a small, controlled
-velocity so that the valve opens and seats softly.
+velocity so that the valve opens and seats softly.  On a valve with a hydraulic lash adjuster
+(no clearance) the same ramp, of the small height ``[lash_adjuster] ramp_height_mm``, is a
+quieting ramp: it lifts the valve itself at that velocity
+(:func:`valvetrain.specification.cams.ramp_height`).
 """
 
 import numpy as np

@@ -593,6 +593,7 @@ NAMES.update({
     "lash_adjuster.location": ("location of the lash adjuster", "расположение гидрокомпенсатора"),
     "lash_adjuster.axis_angle": ("axis of the lash adjuster from the follower's direction",
                                  "наклон оси гидрокомпенсатора к направлению толкателя"),
+    "lash_adjuster.ramp_height": ("height of the quieting ramps of the cam", "высота участков сбега кулачка"),
     "lash_adjuster.plunger_diameter": ("plunger diameter", "диаметр плунжера"),
     "lash_adjuster.radial_clearance": ("radial clearance of the plunger", "радиальный зазор плунжера"),
     "lash_adjuster.leak_length": ("sealing length of the plunger", "длина уплотняющего пояска плунжера"),

@@ -169,16 +169,30 @@ def _closing_problem(at, problem):
 
 HYDRAULIC_NO_RAMP = ("its ramp takes up a mechanical clearance, and a lash_adjuster section leaves none on the base "
                      "circle (clearance_mm = 0): allowed with it a cam without a ramp (polydyne or polynomial with ramp "
-                     "= false, harmonic, three_arc, tangent, table)")
-"""Why a cam with a ramp is refused on a valve with a hydraulic lash adjuster: the ramps of this package take up a
-mechanical clearance (their height is ``clearance_mm``), and a hydraulic train has none to take up."""
+                     "= false, harmonic, three_arc, tangent, table), or a small quieting ramp of lash_adjuster."
+                     "ramp_height_mm")
+"""Why a cam with a ramp is refused on a valve with a hydraulic lash adjuster without ``ramp_height_mm``: the ramps of
+this package take up a mechanical clearance (their height is ``clearance_mm``), and a hydraulic train has none to take
+up; its quieting ramp is given by ``[lash_adjuster] ramp_height_mm`` (:func:`ramp_height`)."""
+
+
+def ramp_height(valve) -> float:
+    """The height of the cam's ramps [m, at the cam] of a valve's SI view: the clearance they take up
+    (``clearance_mm``), or with a lash adjuster its quieting ramp (``[lash_adjuster] ramp_height_mm``, 0 without), which
+    lifts the valve (a hydraulic train has no clearance to take up)."""
+    la = valve.lash_adjuster
+    if la is None:
+        return valve.clearance
+    return 0.0 if la.ramp_height is None else la.ramp_height
 
 
 def _clearance_problem(at, valve, what="the cam's ramp takes up the clearance", key="law"):
-    """The problem of a cam whose ramp takes up the clearance ([] if none): a clearance not in [0.01, 5] mm, or any
-    ramp on a valve with a lash adjuster (named by the cam's ``key``: ``law`` where the law always has a ramp,
-    ``ramp`` where it is chosen)."""
+    """The problem of a cam whose ramp takes up the clearance ([] if none): a clearance not in [0.01, 5] mm, or a ramp
+    on a valve with a lash adjuster that gives no quieting ramp height ``ramp_height_mm`` (named by the cam's ``key``:
+    ``law`` where the law always has a ramp, ``ramp`` where it is chosen)."""
     if valve.lash_adjuster is not None:
+        if valve.lash_adjuster.ramp_height_mm is not None:
+            return []
         value = f'"{valve.cam.law}"' if key == "law" else "true"
         return [Problem(f"{at}.cam.{key}", HYDRAULIC_NO_RAMP, value)]
     return [Problem(f"{at}.clearance_mm", f"{what}, allowed [0.01, 5] mm", f"{valve.clearance_mm:g}")] \
@@ -304,7 +318,7 @@ class KurzCam(_SegmentAngles, _CamBase, _RampKeys):
 
     def build_flank(self, valve, engine):
         c = valve.cam
-        return KurzLaw(_tappet_lift(valve), valve.clearance, c.ramp_end_velocity, c.phi1, c.phi2,
+        return KurzLaw(_tappet_lift(valve), ramp_height(valve), c.ramp_end_velocity, c.phi1, c.phi2,
                        self._phi3(valve, engine), c.shape_factor, **_ramp(c))
 
     def asymmetric_problems(self, at, closing):
@@ -368,7 +382,8 @@ def _rampless_or_ramped(model, valve, engine, ramped=False):
     cam, lift, h0 = valve.cam, _tappet_lift(valve), valve.clearance
     half, r0 = main_half_angle(valve, engine.strokes), cam.base_radius
     if ramped:
-        return model.law_of(cam, lift, half, r0, ramp_height=h0, ramp_velocity=cam.ramp_end_velocity, **_ramp(cam))
+        return model.law_of(cam, lift, half, r0, ramp_height=ramp_height(valve), ramp_velocity=cam.ramp_end_velocity,
+                            **_ramp(cam))
     if h0 == 0.0:
         return model.law_of(cam, lift, half, r0)
     return ClearanceTakeUp(model.law_of(cam, lift + h0, half, r0 - h0), h0)
@@ -420,7 +435,7 @@ class ConstantAccelerationCam(_SegmentAngles, _CamBase, _RampKeys):
 
     def build_flank(self, valve, engine):
         c = valve.cam
-        return ConstantAccelerationLaw(_tappet_lift(valve), valve.clearance, c.ramp_end_velocity, c.phi1, c.phi2,
+        return ConstantAccelerationLaw(_tappet_lift(valve), ramp_height(valve), c.ramp_end_velocity, c.phi1, c.phi2,
                                        self._phi3(valve, engine), c.kappa, **_ramp(c))
 
 
@@ -466,7 +481,7 @@ class CombinedCam(_ClosingSide, _CamBase, _RampKeys):
 
     def build_flank(self, valve, engine):
         c = valve.cam
-        return CombinedLaw(_tappet_lift(valve), valve.clearance, c.ramp_end_velocity,
+        return CombinedLaw(_tappet_lift(valve), ramp_height(valve), c.ramp_end_velocity,
                            [(seg.shape, seg.length) for seg in c.segments], [(r.segment - 1, r.value) for r in c.ratios],
                            **_ramp(c))
 
@@ -558,8 +573,8 @@ class PowerPolynomialCam(_CamBase):
         c = valve.cam
         exponents = {k: getattr(c, k) for k in ARTICLE_EXPONENTS}
         try:
-            return PowerPolynomialLaw(_tappet_lift(valve), main_half_angle(valve, engine.strokes), valve.clearance,
-                                      c.ramp_angle, c.ramp_end_velocity, c.peak_acceleration,
+            return PowerPolynomialLaw(_tappet_lift(valve), main_half_angle(valve, engine.strokes),
+                                      ramp_height(valve), c.ramp_angle, c.ramp_end_velocity, c.peak_acceleration,
                                       c.phi1, c.peak_position, c.trough_position, exponents, c.reconstruction,
                                       c.sharpness)
         except ValueError as exc:

@@ -418,6 +418,14 @@ class LashAdjuster(_Model):
     (:func:`valvetrain.lash_adjuster.pivot_motion_ratio`), not the straight lever's i - 1.  A tappet's adjuster moves
     along the tappet, a rocker's of a given ``rocker_ratio`` along the straight lever's normal: no axis to give.
 
+    ``ramp_height_mm``: the height of the cam's quieting ramps at the cam (as ``clearance_mm``), allowed with a ramped
+    law (its ramp keys as for a mechanical train); absent, a ramp is refused.  A hydraulic train has no clearance for a
+    ramp to take up: the ramp lifts the valve at its small end velocity, so that it leaves and meets its seat slowly
+    (the dynamics simulate no lash; flow and timing count the valve's lift from the ramp's end, the ramp's lift
+    being at most 0.05 mm).  The band (0, 0.05] mm is an engineering assumption: no published band of the quieting
+    ramps of hydraulic cams was found; a mechanical clearance is 0.25-0.35 mm (Valve-train practical works (n.d.),
+    work 2), so a ramp of at most a fifth of the smallest of it is "small".
+
     Defaults: ``oil_viscosity_mPa_s`` = 10 is an SAE 30 (or xW-30) oil near 100 degC (SAE J300 (2015), as in
     ``[lubrication]``).  The other defaults are typical values of a passenger-car adjuster chosen without a cited
     source (its dimensions, the supply pressure, the plunger spring, the oil's bulk modulus of 1.5 GPa and its 2 %
@@ -425,6 +433,7 @@ class LashAdjuster(_Model):
 
     location: Literal["pivot", "tappet"] = "pivot"
     axis_angle_deg: Optional[_bounded(-180.0, 180.0, "deg", low_open=False)] = None
+    ramp_height_mm: Optional[Length(0.0, 0.05)] = None
     plunger_diameter_mm: Length(2.0, 50.0, low_open=False) = 9.0
     radial_clearance_um: _bounded(0.5, 50.0, "um", low_open=False) = 4.0
     leak_length_mm: Length(0.5, 100.0, low_open=False) = 8.0
