@@ -405,6 +405,10 @@ class Lubrication(_Model):
         return self
 
 
+AXIS_ANGLE = _bounded(-180.0, 180.0, "deg", low_open=False)
+"""The bounds of ``[lash_adjuster] axis_angle_deg``: a direction from the follower's (+y) clockwise."""
+
+
 class LashAdjuster(_Model):
     """[valves.NAME.lash_adjuster]: a hydraulic lash adjuster (zero lash on the base circle): its oil column's
     compliance joins the drive stiffness of the dynamics, its leak-down and refill are followed per camshaft
@@ -432,7 +436,7 @@ class LashAdjuster(_Model):
     free air); Merritt (1967) gives the formulas they enter, not these values."""
 
     location: Literal["pivot", "tappet"] = "pivot"
-    axis_angle_deg: Optional[_bounded(-180.0, 180.0, "deg", low_open=False)] = None
+    axis_angle_deg: Optional[AXIS_ANGLE] = None
     ramp_height_mm: Optional[Length(0.0, 0.05)] = None
     plunger_diameter_mm: Length(2.0, 50.0, low_open=False) = 9.0
     radial_clearance_um: _bounded(0.5, 50.0, "um", low_open=False) = 4.0
