@@ -318,8 +318,9 @@ REVOLUTIONS = {False: 3, True: 20}
 adjuster.  A mechanical train repeats within two revolutions from rest; the plunger of a hydraulic adjuster is a slow
 state: where the follower's force falls to the adjuster's push near the valve's closing (from about 0.85 x the rated
 speed of the modern example) the plunger extends and leaks the extension back under load over several revolutions,
-its periodic state approached by about a factor of 0.1-0.3 a revolution (the modern example: 4 to 10 revolutions
-between 0.87 and 1.22 x the rated speed, 14 of its 40 speeds unsettled at 3).  20 is the key's largest value."""
+its periodic state approached by about a factor of 0.1-0.3 a revolution (the modern example: 3 to 8 revolutions
+between 0.84 and 1.19 x the rated speed, 14 of its 40 speeds unsettled at 3; above its float speed, 1.2 x, the plunger
+pumps up at every revolution and the speed stays unsettled).  20 is the key's largest value."""
 
 
 def revolutions(dyn, valve) -> int:
