@@ -18,7 +18,7 @@ from typing import Any, Union
 
 import numpy as np
 
-from .units import to_display, without_noise
+from .units import displayed
 
 
 def quantity(key, unit="", label="", *, default=MISSING, flatten=False, omit_none=False) -> Any:
@@ -90,7 +90,7 @@ def _shown(value, unit):
         return [_shown(v, unit) for v in value]
     if isinstance(value, (int, np.integer)) and not unit:
         return int(value)
-    return without_noise(float(to_display(float(value), unit)))
+    return displayed(value, unit)
 
 
 def record(result: Any) -> dict[str, Any]:
