@@ -90,3 +90,16 @@ def test_an_angle_on_a_turn_is_shown_without_the_noise_of_the_turn():
     assert rec == {"angle_cam_deg": [-0.1, 0.1, -180.0], "opens_crank_deg": -26.0,
                    "twist_cam_deg": 0.11399658396381009}
 
+
+def test_shown_without_nested_records_reads_only_the_numbers():
+    """shown(result, nested=False) gives the rows of a table of numbers: a field holding a record of its own is left
+    out before it is made into an object, a flattened result's numbers stay.  Rows written out by hand."""
+    @dataclass(frozen=True)
+    class _WithNested:
+        preload: float = quantity("preload_N", "N", "preload")
+        nested: _Inner = quantity("nested", label="a record of its own")
+        inner: _Inner = quantity("inner", flatten=True)
+
+    result = _WithNested(100.0, _Inner(1.0, 1.0 * MM), _Inner(250.0, 4.0 * MM))
+    assert shown(result, nested=False) == [("preload_N", 250.0), ("wire_mm", 4.0)]
+    assert dict(shown(result))["nested"] == {"preload_N": 1.0, "wire_mm": 1.0}
