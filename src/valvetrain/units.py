@@ -172,7 +172,7 @@ def displayed(value, unit) -> float:
 
 
 @cache
-def si_name(key):
+def si_name(key) -> tuple[str, float]:
     """The SI field of a key and the factor to SI: ``("throat_diameter", 1e-3)`` for ``throat_diameter_mm``.
 
     The longest suffix of :data:`SUFFIXES` that ends the key names its unit; a key in a unit other than SI loses the
