@@ -402,9 +402,9 @@ def inertia_arm(valve, law, drive) -> tuple[Optional[float], Optional[str]]:
         return float(arm[at]), None
     reduced, heel_circle = parts.rocker_inertia / arm**2, parts.rocker_inertia / valve_arm(valve)**2
     return float(arm[at]), (f"finger: J / G^2 = {reduced[at] * 1e3:.5g} g at the valve lift {drive.lift[at] / MM:.4g} "
-                            f"mm of the largest required spring force (the reference mass of the modes and the "
-                            f"dampings); {heel_circle * 1e3:.5g} g on the heel circle, {reduced.min() * 1e3:.5g}..."
-                            f"{reduced.max() * 1e3:.5g} g over the lift")
+                            f"mm of the largest required spring force; {heel_circle * 1e3:.5g} g on the heel circle, "
+                            f"{reduced.min() * 1e3:.5g}...{reduced.max() * 1e3:.5g} g over the lift; the value at that "
+                            "lift is the reference mass of the modes and the dampings")
 
 
 FINGER_MASS_POINTS = 257
@@ -491,9 +491,10 @@ def build_train(dyn, valve, law, drive, at, cam_speed=None) -> tuple[Union[OneMa
         if dyn.model == "multi":
             variable = _finger_node(valve, law, "rocker")
         if variable is not None:
-            notes.insert(2, f"the {variable.node} node's mass changes with its lift ({variable.mass.min() * 1e3:.5g}..."
-                         f"{variable.mass.max() * 1e3:.5g} g over the table), with the velocity-squared force "
-                         "(1/2) dm/dv v_dot^2 of the finger's variable ratio (Lagrange's equation; Norton (2009))")
+            notes.insert(2, f"the mass of the node that carries the finger changes with its lift, "
+                         f"{variable.mass.min() * 1e3:.5g}...{variable.mass.max() * 1e3:.5g} g over the table, with the "
+                         "velocity-squared force (1/2) dm/dv v_dot^2 of the variable ratio (Lagrange's equation, "
+                         "Norton (2009))")
     rate, preload, spring_note = train_spring(dyn, valve, law, line, mass, cam_speed, at)
     notes.append(spring_note)
     notes.append(f"lash {lash / MM:.4g} mm at the valve: the clearance the ramp takes up times the rocker ratio")
