@@ -10,7 +10,7 @@ from types import SimpleNamespace
 import numpy as np
 import pytest
 
-from test_dynamics import RPM, spec12
+from reference_dynamics import RPM, spec12
 from valvetrain.design.dynamics import finger_mass
 from valvetrain.dynamics.models import one_mass_train
 from valvetrain.dynamics.sweep import simulate, sweep
@@ -64,7 +64,7 @@ def test_the_finger_s_mass_table_against_the_closed_form():
 def lagrange_reference(law, train, omega, velocity_term=True):
     """The valve lift of the one-mass train with the finger's mass by scipy's DOP853 at rtol 1e-10 over one revolution
     from rest: Lagrange's equation of T = m(y) y_dot^2 / 2, m(y) y_ddot + (1/2) m'(y) y_dot^2 = F_c - F_0 - K y + F_s,
-    written out here (the contact and seat laws of the one-mass train, tests/dynamics/test_dynamics.py)."""
+    written out here (the contact and seat laws of the one-mass train, tests/reference_dynamics.py)."""
     from scipy.integrate import solve_ivp
 
     def rhs(t, s):
