@@ -4,7 +4,6 @@ symmetric engine, the record and checks in results.json, and the refusals of bad
 import json
 import re
 from pathlib import Path
-from types import SimpleNamespace
 
 import numpy as np
 import pytest
@@ -16,6 +15,7 @@ from valvetrain.export import results_json
 from valvetrain.specification import SpecError, load_spec, parse_spec, si
 
 from appendix import appendix_text
+from finger_linkage import cross, hand_finger
 
 EXAMPLES = Path(__file__).parents[2] / "examples"
 
@@ -140,39 +140,6 @@ def test_one_lobe_on_a_compliant_timing_drive_against_a_hand_calculation(pushrod
     a, b, c = js * j1, js * k1 + j1 * (kt + k1), kt * k1
     w = np.sqrt((b + np.array([-1.0, 1.0]) * np.sqrt(b * b - 4 * a * c)) / (2 * a))
     assert np.asarray(f.natural_frequencies) == pytest.approx(w / (2 * np.pi), rel=1e-8)
-
-
-def cross(u, w):
-    """The z component of u x w of two plane vectors."""
-    return u[0] * w[1] - u[1] * w[0]
-
-
-def hand_finger(cam):
-    """The finger of a law stage's cam (its dimensions only, SI) as a hand-built linkage: the roller centre C(psi),
-    the valve pad's contact X(psi) = B + rho_p a with B = P + R(psi) (L_p, d_p), the valve axis a, the finger angle on
-    the heel circle (|C| = R0 + R_r, by brentq, the root on the follower's side) and psi at a valve lift (brentq on
-    the tip's rise (X - X_0) . a)."""
-    from scipy.optimize import brentq
-
-    f = cam.follower_model
-    pivot = np.array([f.pivot_x, f.pivot_y])
-    a = np.array([np.sin(f.valve_angle), np.cos(f.valve_angle)])
-
-    def turn(w, angle):
-        return np.array([[np.cos(angle), -np.sin(angle)], [np.sin(angle), np.cos(angle)]]) @ w
-
-    def centre(psi):
-        return pivot + turn(np.array([f.roller_arm, 0.0]), psi)
-
-    def pad(psi):
-        return pivot + turn(np.array([f.pad_arm, f.pad_drop]), psi) + f.pad_radius * a
-
-    psi0 = brentq(lambda p: np.hypot(*centre(p)) - (cam.heel_radius + f.radius), -0.5, 0.5, xtol=1e-15, rtol=1e-15)
-
-    def angle(v):
-        return brentq(lambda p: (pad(p) - pad(psi0)) @ a - v, psi0 - 0.6, psi0 + 0.6, xtol=1e-15, rtol=1e-15)
-
-    return SimpleNamespace(pivot=pivot, a=a, centre=centre, pad=pad, psi0=psi0, angle=angle, turn=turn)
 
 
 @pytest.fixture(scope="module")
