@@ -21,6 +21,26 @@ def spec12():
     return law, one_mass_train(0.25, 15e6, 67.5e3, 400.0, 1.5, 0.3e-3, damping_ratio=0.05)
 
 
+def one_mass_rhs(law, train, omega, mass=None):
+    """The one-mass train's equations of motion as scipy's ``rhs(t, (y, y_dot))``, at camshaft angle omega t - pi from
+    the nose: M y_ddot = F_c - (F_0 + K y) + F_s with the contact F_c = max(0, c delta + C delta_dot) where delta =
+    k h - x_0 - y > 0 and the seat F_s = max(0, -c_s y - C_s y_dot) where y < 0 (Shang Hanji (1988), section 3.1).
+    ``mass(y) -> (m, dm/dy)``: a mass that changes with the lift, m y_ddot + (1/2) m' y_dot^2 = F (Lagrange's equation
+    of T = m(y) y_dot^2 / 2); default the train's M."""
+    k = train.rocker_ratio
+
+    def rhs(t, s):
+        d = law.derivatives(np.array([(omega * t) % (2 * np.pi) - np.pi]))[:2, 0] * k
+        y, v = s
+        gap = d[0] - train.lash - y
+        fc = max(0.0, train.stiffness * gap + train.damping * (omega * d[1] - v)) if gap > 0 else 0.0
+        fs = max(0.0, -train.seat_stiffness * y - train.seat_damping * v) if y < 0 else 0.0
+        m, dm = (train.mass, 0.0) if mass is None else mass(y)
+        return [v, (fc - train.preload - train.spring_rate * y + fs - 0.5 * dm * v**2) / m]
+
+    return rhs
+
+
 def seat_crossings(law, train, omega, revolutions=1, steps_per_revolution=7200):
     """Every downward y = 0 crossing of the valve from rest on its seat, by DOP853 (rtol 1e-10, atol 1e-14, the
     largest step one revolution / ``steps_per_revolution``), located by the event finder.
@@ -32,15 +52,7 @@ def seat_crossings(law, train, omega, revolutions=1, steps_per_revolution=7200):
     states : ndarray (n, 2)
         Lift [m] and velocity [m/s] there.
     """
-    k = train.rocker_ratio
-
-    def rhs(t, s):
-        d = law.derivatives(np.array([(omega * t) % (2 * np.pi) - np.pi]))[:2, 0] * k
-        y, v = s
-        gap = d[0] - train.lash - y
-        fc = max(0.0, train.stiffness * gap + train.damping * (omega * d[1] - v)) if gap > 0 else 0.0
-        fs = max(0.0, -train.seat_stiffness * y - train.seat_damping * v) if y < 0 else 0.0
-        return [v, (fc - train.preload - train.spring_rate * y + fs) / train.mass]
+    rhs = one_mass_rhs(law, train, omega)
 
     def seat(t, s):
         return s[0]

@@ -10,7 +10,7 @@ from types import SimpleNamespace
 import numpy as np
 import pytest
 
-from reference_dynamics import RPM, spec12
+from reference_dynamics import RPM, one_mass_rhs, spec12
 from valvetrain.design.dynamics import finger_mass
 from valvetrain.dynamics.models import one_mass_train
 from valvetrain.dynamics.sweep import simulate, sweep
@@ -63,21 +63,18 @@ def test_the_finger_s_mass_table_against_the_closed_form():
 
 def lagrange_reference(law, train, omega, velocity_term=True):
     """The valve lift of the one-mass train with the finger's mass by scipy's DOP853 at rtol 1e-10 over one revolution
-    from rest: Lagrange's equation of T = m(y) y_dot^2 / 2, m(y) y_ddot + (1/2) m'(y) y_dot^2 = F_c - F_0 - K y + F_s,
-    written out here (the contact and seat laws of the one-mass train, tests/reference_dynamics.py)."""
+    from rest: Lagrange's equation of T = m(y) y_dot^2 / 2, m(y) y_ddot + (1/2) m'(y) y_dot^2 = F_c - F_0 - K y + F_s
+    (tests/reference_dynamics.py, the one-mass train's contact and seat laws) with m(y) = :func:`hand_mass` (y +
+    lash); without the velocity term, m(y) y_ddot = F."""
     from scipy.integrate import solve_ivp
 
-    def rhs(t, s):
-        d = law.derivatives(np.array([-np.pi + omega * t]))[:2, 0] * train.rocker_ratio
-        y, v = s
-        gap = d[0] - train.lash - y
-        fc = max(0.0, train.stiffness * gap + train.damping * (omega * d[1] - v)) if gap > 0 else 0.0
-        fs = max(0.0, -train.seat_stiffness * y - train.seat_damping * v) if y < 0 else 0.0
+    def mass(y):
         m, dm = hand_mass(y + train.lash)
-        return [v, (fc - train.preload - train.spring_rate * y + fs - (0.5 * dm * v**2 if velocity_term else 0.0)) / m]
+        return m, dm if velocity_term else 0.0
 
-    return solve_ivp(rhs, (0, 2 * np.pi / omega), [-train.preload / train.seat_stiffness, 0.0], method="DOP853",
-                     rtol=1e-10, atol=1e-13, dense_output=True)
+    return solve_ivp(one_mass_rhs(law, train, omega, mass), (0, 2 * np.pi / omega),
+                     [-train.preload / train.seat_stiffness, 0.0], method="DOP853", rtol=1e-10, atol=1e-13,
+                     dense_output=True)
 
 
 def contact_force(law, train, omega, t, state):
