@@ -180,10 +180,10 @@ def hand_finger_stress(design, valve, theta, width, modulus):
     the rated speed, by a direct geometric construction of its linkage (tests/finger_linkage.py): psi(theta) by
     brentq and its derivatives by central differences (step 1e-4 rad); the force at the valve F = P_spr + max(0,
     omega^2 (m_0 v'' + J psi'' / G)), m_0 the reduced mass at the valve less the finger's J / G_0^2 (its torque J
-    psi_ddot about the pivot carried to the valve by the virtual work F G = T, G = dv/dpsi of the pad); the cam's normal force
-    from the finger's moments about its pivot, N = F ((X - P) x a) / ((C - P) x n); the profile radius from the pitch
-    curve q = R(-theta) C by central differences, rho = -|q'|^3 / (q' x q'') - R_r (negative: concave; q runs
-    clockwise as the cam turns counter-clockwise); sigma = 0.418 sqrt(N E_m (1/rho + 1/R_r) / b) (Valve-train
+    psi_ddot about the pivot carried to the valve by the virtual work F G = T, G = dv/dpsi of the pad); the cam's
+    normal force from the finger's moments about its pivot, N = F ((X - P) x a) / ((C - P) x n); the profile radius
+    from the pitch curve q = R(-theta) C by central differences, rho = -|q'|^3 / (q' x q'') - R_r (negative: concave;
+    q runs clockwise as the cam turns counter-clockwise); sigma = 0.418 sqrt(N E_m (1/rho + 1/R_r) / b) (Valve-train
     practical works (n.d.), eqs. 7.4-7.5)."""
     cam, drive = design.cam, design.drive
     hand, f = hand_finger(cam), cam.follower_model

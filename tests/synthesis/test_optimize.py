@@ -304,7 +304,8 @@ def test_fast_margins_of_a_finger_take_its_variable_ratio():
     (spring_reserve_value: the chosen spring over m_v |j_v| with j_v of Lagrange's equation of the linkage,
     tests/followers/test_finger.py), to 1e-3 (the search's grid of the event against the drive stage's 2001 angles).
     Found: 0.311872 against 0.311860, 0.2010056 against 0.2010057.  Before the fix the margins took the valve's force
-    for the cam's (margin 0.4679: 532.1 MPa) and the finger's inertia at its ratio on the heel circle (margin 0.1985)."""
+    for the cam's (margin 0.4679: 532.1 MPa) and the finger's inertia at its ratio on the heel circle (margin
+    0.1985)."""
     spec = load_spec(EXAMPLES / "modern-dohc-roller-finger.toml")
     design = run(spec).valves["intake"]
     valve = si(spec.valves["intake"], spec)

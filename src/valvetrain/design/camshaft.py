@@ -137,7 +137,8 @@ def lobe_set(name, valve, engine, design, firing) -> LobeSet:
     is the valve's and P_T the force at the valve: P_T dv/dtheta is the torque of the cam's normal force N =
     P_T G / (L_r cos beta) about the cam centre (the virtual work of the linkage; Norton (2009)).  The train's inertia
     reduced to the camshaft J = (1/2 pi) int m_t(theta) h'^2 dtheta (its kinetic energy m_t (omega h')^2 / 2 averaged
-    over the revolution), m_t with a finger's J / G(psi)^2 at each angle (:func:`valvetrain.layouts.finger_mass_change`).
+    over the revolution), m_t with a finger's J / G(psi)^2 at each angle
+    (:func:`valvetrain.layouts.finger_mass_change`).
     """
     cam, drive = design.cam, design.drive
     maps = event_load_maps(valve, engine, cam, drive, design.dynamics)[1]

@@ -514,8 +514,8 @@ class Problem:
         if L.cam_width is not None:
             top = (self.omega * L.top_speed)**2
             force = worst_cam_force(spring, self.mass, self.i_k, top * d2h, top * finger)
-            q["contact stress"] = -self.follower.contact_stress(force * self.follower.force_ratio(self.heel, h, dh), rho,
-                                                                L.cam_width, L.contact_modulus)
+            at_cam = force * self.follower.force_ratio(self.heel, h, dh)
+            q["contact stress"] = -self.follower.contact_stress(at_cam, rho, L.cam_width, L.contact_modulus)
         return q, h, dh, d2h
 
     def _extremes(self, laws, scales):
