@@ -21,7 +21,7 @@ from valvetrain.laws.polydyne import PolydyneLaw
 from valvetrain.laws.power_polynomial import PowerPolynomialLaw
 from valvetrain.specification import load_spec
 
-from test_power_polynomial import LAWS, MM, article
+from laws.test_power_polynomial import LAWS, MM, article
 
 THREE_ARC = Path(__file__).parents[2] / "examples" / "dynamics-comparison" / "three-arc.toml"
 

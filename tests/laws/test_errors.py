@@ -1,6 +1,6 @@
 """Errors of the laws (laws/errors.py): a law that cannot be built is refused with its numbers."""
 
-from test_harmonic import _harmonic
+from laws.test_harmonic import _harmonic
 
 
 def test_a_harmonic_series_that_cannot_follow_its_target_is_refused(refused):

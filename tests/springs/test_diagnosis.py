@@ -11,7 +11,7 @@ from valvetrain.locale.wording import diagnosis_text
 from valvetrain.springs import diagnosis
 
 from conftest import SEED000_OMEGA_EXACT, seed000_law
-from test_requirement import _requirement
+from springs.test_requirement import _requirement
 
 
 def test_resonance_needs_more_stress_than_60s2a_allows_at_7000_rpm():

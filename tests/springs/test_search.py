@@ -16,7 +16,7 @@ from valvetrain.specification import SpecError, example_spec, parse_spec, si
 from appendix import appendix_text
 
 from conftest import SEED000_OMEGA_EXACT, seed000_law
-from test_requirement import _requirement
+from springs.test_requirement import _requirement
 
 
 def _brute_force(line, throat, omega, options):
