@@ -270,7 +270,7 @@ def test_spring_and_strength_contract(example):
                            "rocker_pad_stress", "rocker_shaft_bending", "rocker_shaft_shear", "rocker_shaft_bearing"}
     for rec in checks.values():
         assert set(rec) >= {"value", "allowed", "unit", "pass"}
-    # f_max / f_min of the required line inside the manual's 1.6...3.2 (work 5)
+    # f_max / f_min of the required line inside 1.6...3.2 (Valve-train practical works (n.d.), work 5)
     assert 1.6 - 1e-9 <= v["spring"]["required_deflection_ratio"] <= 3.2 + 1e-9
     # the spring mass feeds the reduced mass (5.2): m_v = parts + spring/3 + rocker + (pushrod + tappet)/i^2
     m_parts = 0.055 + 0.015 + 0.004 + 25e-6 / 0.04**2 + (0.045 + 0.040) / 1.6**2
@@ -372,7 +372,7 @@ def test_flat_follower_edge_loading():
 
 
 def test_roller_side_force_is_reported():
-    """F_side = P_T tan(alpha) (Norton): at most the largest cam force times tan of the largest pressure angle."""
+    """F_side = P_T tan(alpha) (Norton (2009)): at most the largest cam force times tan of the largest pressure angle."""
     res = run(_variant([('follower = "flat"', 'follower = "roller"\nroller_radius_mm = 12.0')]))
     c = _check(res, "intake: roller follower side force")
     rec = res.to_dict()["valves"]["intake"]
