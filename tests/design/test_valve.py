@@ -1,4 +1,5 @@
-"""The design run on the built-in example and on variants of it."""
+"""The valve's design (valvetrain.design.valve) in a run of the appendix example and of variants of it, and the
+ranges of its drive layout."""
 
 from pathlib import Path
 
@@ -9,9 +10,10 @@ from scipy.integrate import quad
 
 from valvetrain import flow
 from valvetrain.design import run
-from valvetrain.specification import SpecError, load_spec, parse_spec
+from valvetrain.design.valve import LAYOUT_BANDS, LAYOUTS
+from valvetrain.specification import SpecError, load_spec, parse_spec, validate
 
-from appendix import appendix_text, appendix_spec
+from appendix import appendix_data, appendix_design as design, appendix_spec, appendix_text
 
 
 def _variant(replacements):
@@ -411,3 +413,46 @@ def test_valve_piston_clearance_is_a_check_with_its_crank_angle():
         over = [c for c in both.checks if c.quantity.startswith(f"{name}: valve-piston clearance over the overlap")]
         assert len(over) == 1 and over[0].value >= whole.value - 1e-12 and over[0].low == pytest.approx(low)
         assert both.valves[name].clearance.min_gap == pytest.approx(whole.value)
+
+
+def test_every_layout_band_names_its_source_and_covers_the_layouts():
+    for quantity, bands in LAYOUT_BANDS.items():
+        assert set(bands) <= set(LAYOUTS), quantity
+        for layout, band in bands.items():
+            assert band.source and "SPEC" not in band.source, (quantity, layout)
+            assert "seed" not in band.note, (quantity, layout)     # notes are shown as they are
+
+
+def test_a_rocker_layout_checks_the_rocker_ratio_even_at_one():
+    """Before, a rocker ratio of 1 was never checked: a rocker or lever wants 1.4-1.75 (Valve-train practical works (n.d.), work 2)."""
+    checks = {c.quantity: c for c in design(valves__intake__rocker_ratio=1.0,
+                                             valves__intake__drive__layout="rocker").checks}
+    ratio = checks["intake: rocker ratio"]
+    assert not ratio.passed and ratio.range == "1.4...1.75"
+    direct = {c.quantity for c in design(valves__intake__rocker_ratio=1.0, valves__intake__drive__layout="direct").checks}
+    assert "intake: rocker ratio" not in direct
+
+
+def test_the_acceleration_band_says_for_which_layout_the_source_states_it():
+    pushrod = {c.quantity: c for c in design().checks}["intake: min tappet acceleration"]
+    assert "direct drive" in pushrod.note and "pushrod" in pushrod.note
+    direct = {c.quantity: c for c in design(valves__intake__rocker_ratio=1.0,
+                                            valves__intake__drive__layout="direct").checks}["intake: min tappet acceleration"]
+    assert direct.note == "" and direct.low == pushrod.low
+
+
+@pytest.mark.parametrize("layout, ratio, band", [("pushrod", 1.6, "400...500 kg/m2"), ("direct", 1.0, "200...300 kg/m2"),
+                                                 ("rocker", 1.6, "200...300 kg/m2")])
+def test_the_specific_mass_band_is_the_layouts(layout, ratio, band):
+    checks = {c.quantity: c for c in design(valves__intake__rocker_ratio=ratio,
+                                            valves__intake__drive__layout=layout).checks}
+    mass = checks["intake: specific mass of the drive m' = m_v / f_g"]
+    assert mass.range == band and mass.severity == "info"
+    assert ("compared with the direct drive's band" in mass.note) == (layout == "rocker")
+
+
+def test_no_specific_mass_check_against_the_default_mass():
+    data = appendix_data()
+    del data["valves"]["intake"]["drive"]["masses"]
+    quantities = {c.quantity for c in run(validate(data)).checks}
+    assert "intake: specific mass of the drive m' = m_v / f_g" not in quantities
