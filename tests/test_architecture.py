@@ -11,15 +11,8 @@ TEXT = (Path(__file__).parents[1] / "docs" / "architecture.md").read_text(encodi
 TESTS = Path(__file__).parent
 
 NO_TEST_FILE_YET = (
-    "laws/base.py", "laws/combined.py", "laws/constant_acceleration.py", "laws/convex.py", "laws/dynamic.py",
-    "laws/errors.py", "laws/harmonic.py", "laws/kurz.py", "laws/polydyne.py", "laws/ramps.py", "laws/records.py",
-    "laws/takeup.py", "layouts.py", "masses.py", "outfolder.py", "report/drawing.py", "report/html.py",
-    "report/i18n.py", "report/names.py", "report/optimization.py", "report/plots.py", "report/russian.py",
-    "report/tolerance.py", "specification/cams.py", "specification/fields.py", "specification/messages.py",
-    "specification/models.py", "specification/reading.py", "specification/si.py", "specification/validate.py",
-    "spring_materials.py", "springs/candidates.py", "springs/diagnosis.py", "springs/formulas.py",
-    "springs/requirement.py", "springs/search.py", "synthesis/constraints.py", "tables.py", "web/app.py",
-    "web/session.py",
+    "laws/records.py", "laws/takeup.py", "report/drawing.py", "report/optimization.py", "report/tolerance.py",
+    "specification/cams.py", "specification/si.py", "tables.py",
 )
 """Modules whose tests are not yet in the file named after them (issue 23): this allowance only shrinks; a new
 module comes with its test file."""
