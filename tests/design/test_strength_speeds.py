@@ -9,8 +9,10 @@ import pytest
 from scipy.optimize import minimize_scalar
 
 from valvetrain.design import run
+from valvetrain.design.drive import SpringLines
 from valvetrain.export import results_json, write_outputs
 from valvetrain.specification import SpecError, parse_spec
+from valvetrain.springs import Characteristic
 
 from appendix import appendix_text
 
@@ -143,3 +145,13 @@ def test_dynamic_force_replaces_the_quasi_static_one_and_agrees_at_idle(tmp_path
     assert [float(r["speed_rpm"]) for r in rows] == pytest.approx(st["per_speed"]["speed_rpm"])
     assert max(float(r["cam_contact_stress_MPa"]) for r in rows) == pytest.approx(
         st["checks"]["cam_contact_stress"]["value"])
+
+
+def test_spring_lines_name_the_lines_there_are_in_drawing_order():
+    """The spring figure draws the required line first and the chosen one last, over a pair's outer and inner springs
+    (the order of Valve-train practical works (n.d.), Fig. 5.1); one spring has no pair lines."""
+    required, chosen = Characteristic(200.0, 20e3, 0.01), Characteristic(220.0, 21e3, 0.01)
+    outer, inner = Characteristic(150.0, 14e3, 0.01), Characteristic(70.0, 7e3, 0.01)
+    assert SpringLines(required, chosen).named() == (("required", required), ("chosen", chosen))
+    assert [name for name, _ in SpringLines(required, chosen, outer, inner).named()] == ["required", "outer", "inner",
+                                                                                          "chosen"]
