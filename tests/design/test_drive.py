@@ -1,5 +1,6 @@
-"""Strength over the speed range (issue 20, item 2): every load-dependent check at its worst engine speed and cam
-angle, from the lowest speed to the over-speed, against hand calculations and an independent maximiser."""
+"""The drive stage (valvetrain.design.drive): strength over the speed range (issue 20, item 2), every load-dependent
+check at its worst engine speed and cam angle, from the lowest speed to the over-speed, against hand calculations and
+an independent maximiser; the stage's spring lines."""
 
 import csv
 import json
