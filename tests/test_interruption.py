@@ -63,7 +63,7 @@ except KeyboardInterrupt:
 
 def test_a_sigint_during_a_weakref_callback_still_interrupts():
     """A SIGINT that came while the garbage collector ran a weakref callback was printed as 'Exception ignored ...
-    KeyboardInterrupt' and lost: the run went on and ended with status 0 (seen in test_output_folder's interrupted
+    KeyboardInterrupt' and lost: the run went on and ended with status 0 (seen in test_outfolder's interrupted
     runs). Provoked deterministically here: the KeyboardInterrupt is delivered again and interrupts the work."""
     proc = subprocess.run([sys.executable, "-c", SIGINT_IN_A_CALLBACK], capture_output=True, text=True, timeout=60)
     assert (proc.returncode, proc.stdout, proc.stderr) == (0, "interrupted\n", "")
