@@ -12,7 +12,7 @@ RPM = np.pi / 30.0
 
 
 def spec12():
-    """The worked example of spec sections 2, 8 and 12: the dynamic cam of tests/laws/test_laws_more.py (c = 15000
+    """The worked example of spec sections 2, 8 and 12: the dynamic cam of tests/laws/test_dynamic.py (c = 15000
     N/mm, M = 0.25 kg, K = 67.5 N/mm, F0 = 400 N, k = 1.5, x0 = 0.30 mm, designed for 3000 cam rpm) and its
     one-mass train with zeta = 0.05."""
     omega = 3000 * RPM
