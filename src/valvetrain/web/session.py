@@ -405,8 +405,9 @@ class Session:
     the problems of the last edit (key -> message), the baseline pinned.
 
     An edit is answered in two steps: :meth:`apply` designs without the speed sweeps of the ``[dynamics]``
-    sections (``good``: the kinematics, springs and checks in tens of ms); :meth:`settle` adds them (``full``: the
-    checks of the whole design and the sweeps), in the background, and :meth:`settled` keeps it."""
+    sections and without the diagnosis of springs that do not pass (``good``: the kinematics, springs and checks in
+    tens of ms); :meth:`settle` adds them (``full``: the checks of the whole design and the sweeps), in the
+    background, and :meth:`settled` keeps it."""
 
     document: dict
     good: dict = None
@@ -437,10 +438,10 @@ class Session:
         return s
 
     def apply(self, document):
-        """Design ``document`` without its speed sweeps (:func:`valvetrain.api.design`, ``dynamics=False``; it is
-        validated whole); keep it as the good design if it designs, else keep the last good one and the problems.
-        Returns True when it designed."""
-        result = api.design(without_nones(document), dynamics=False)
+        """Design ``document`` without its speed sweeps and spring diagnosis (:func:`valvetrain.api.design`,
+        ``dynamics=False``, ``diagnose=False``; it is validated whole); keep it as the good design if it designs, else
+        keep the last good one and the problems.  Returns True when it designed."""
+        result = api.design(without_nones(document), dynamics=False, diagnose=False)
         self.document = document
         self.problems = result["errors"]
         if result["ok"]:
@@ -450,10 +451,10 @@ class Session:
 
     @staticmethod
     def settle(document, progress=None):
-        """The whole design of a good document, with its speed sweeps: :func:`valvetrain.api.design` with
-        ``sweeps``; a document without a ``[dynamics]`` section is swept with the default one
-        (:func:`valvetrain.api.sweep`) and its design is the good one (``results`` None).  ``progress`` as there.
-        Pure: called in a worker thread, kept by :meth:`settled`."""
+        """The whole design of a good document, with its speed sweeps (and the diagnosis of springs that do not
+        pass): :func:`valvetrain.api.design` with ``sweeps``; a document without a ``[dynamics]`` section is swept
+        with the default one (:func:`valvetrain.api.sweep`) and its design is the good one (``results`` None).
+        ``progress`` as there.  Pure: called in a worker thread, kept by :meth:`settled`."""
         plain = without_nones(document)
         if any("dynamics" in v for v in plain["valves"].values()):
             return api.design(plain, sweeps=True, progress=progress)
