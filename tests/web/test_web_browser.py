@@ -8,6 +8,7 @@ from pathlib import Path
 import re
 import subprocess
 import sys
+import tomllib
 
 import pytest
 
@@ -43,6 +44,18 @@ def url():
 def diesel_url():
     """The designer on the power-polynomial cam of examples/ukrsurt2019-diesel.toml."""
     yield from _served(str(Path(__file__).parents[2] / "examples" / "ukrsurt2019-diesel.toml"))
+
+
+@pytest.fixture(scope="module")
+def table_url(tmp_path_factory):
+    """The designer on the measured-lobe example with every sixth row of its table inline (31 control points)."""
+    from measured_lobe import EXAMPLE_TABLE, inline_text
+    from valvetrain.files import read_lift_table
+
+    angle, lift = read_lift_table(EXAMPLE_TABLE)
+    path = tmp_path_factory.mktemp("table") / "inline.toml"
+    path.write_text(inline_text(angle[::6], lift[::6]), encoding="utf-8")
+    yield from _served(str(path))
 
 
 @pytest.fixture
@@ -248,3 +261,29 @@ def test_drag_of_a_peak_raises_the_acceleration_and_changes_the_checks(page, die
     a_qd = float(box.input_value())
     assert a_qd / 135.2 == pytest.approx(rise, rel=5e-3)
     assert model_data(page, "checks")["value"] != before
+
+
+def test_drag_of_an_acceleration_point_moves_the_lift_of_its_table_point(page, table_url):
+    page = opened(page, table_url)
+    box = page.get_by_label(re.compile(r"^table_lifts_mm\b"))
+    text = box.input_value()
+    old = tomllib.loads("v = " + text)["v"]
+    handles = model_data(page, "handles-acceleration")
+    i = handles["name"].index("acceleration.10")
+    x, y = handles["x"][i], handles["y"][i]
+    px, py0, py1, dropped = page.evaluate("""([x, y0, y1]) => {
+        const v = Bokeh.index.find_one(Bokeh.documents[0].get_model_by_name('plot-acceleration'));
+        const r = v.canvas_view.el.getBoundingClientRect();
+        const py1 = Math.round(v.frame.y_scale.compute(y1));
+        return [r.left + v.frame.x_scale.compute(x), r.top + v.frame.y_scale.compute(y0), r.top + py1,
+                v.frame.y_scale.invert(py1)];
+    }""", [x, y, y + 2000.0])
+    drag(page, (px, py0), (px, py1))
+    expect(box).not_to_have_value(text, timeout=WAIT_MS)   # the panel follows the drag after the redraw
+    new = tomllib.loads("v = " + box.input_value())["v"]
+    # the point's lift moves by -(a rise) d^2 / (2 omega^2) (twice the second divided difference is h'', Burden and
+    # Faires, Numerical Analysis (2011), section 3.3), d = 12 crank deg = 0.104720 rad, omega = 7000 rpm / 2 =
+    # 366.519 rad/s: 4.0817e-5 mm per m/s^2 of the rise from the handle's height to where the pointer left it
+    assert new[10] == pytest.approx(old[10] - 4.0817e-5 * (dropped - y), abs=1.5e-3)
+    after = model_data(page, "handles-acceleration")
+    assert after["y"][after["name"].index("acceleration.10")] > y + 1000.0
