@@ -122,7 +122,7 @@ def without_dynamics(spec, parsed) -> dict[str, Any]:
     return out
 
 
-def design(spec, dynamics=True, sweeps=False, progress=None) -> dict[str, Any]:
+def design(spec, dynamics=True, sweeps=False, progress=None, diagnose=True) -> dict[str, Any]:
     """Design a specification given as a dict: what ``valvetrain run`` computes, as plain data.
 
     Parameters
@@ -139,6 +139,9 @@ def design(spec, dynamics=True, sweeps=False, progress=None) -> dict[str, Any]:
         ``[dynamics]`` section, the same as :func:`sweep` gives for it, from the same run.
     progress : callable, optional
         ``progress(valve name, done, total)`` between speeds of a sweep; an exception it raises ends the design.
+    diagnose : bool
+        False: springs that do not pass are not diagnosed (:func:`valvetrain.design.run`; their checks fail the
+        same, without the diagnosis and its remedies, each a new spring search: about a second).
 
     Returns
     -------
@@ -156,7 +159,7 @@ def design(spec, dynamics=True, sweeps=False, progress=None) -> dict[str, Any]:
     if parsed is None:
         return {"ok": False, "errors": errors, "results": None, "series": None, **extra}
     try:
-        results = run(parsed, progress=progress)
+        results = run(parsed, progress=progress, diagnose=diagnose)
     except SpecError as err:
         return {"ok": False, "errors": error_records(err), "results": None, "series": None, **extra}
     if sweeps:

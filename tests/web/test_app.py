@@ -11,7 +11,7 @@ pytest.importorskip("bokeh")
 
 from bokeh.document import Document  # noqa: E402
 
-from valvetrain.web.app import SEVERITY_COLOURS, Designer  # noqa: E402
+from valvetrain.web.app import SEVERITY_COLOURS, Designer, kept_range  # noqa: E402
 from valvetrain.web.session import Session, form  # noqa: E402
 
 from appendix import appendix_text  # noqa: E402
@@ -48,8 +48,8 @@ def test_page_callbacks():
     d.on_units("value", "rated", "deg")
     # per cam degree: the velocity is the slope of the valve lift in mm/deg; central differences of the lift series
     # (0.5 cam deg apart) agree to 1 % of the peak where the valve is off its seat
-    angle = d.sources["angle"].data
-    x, v, lift = (np.array(angle[k]) for k in ("x", "velocity", "lift"))
+    curves = d.curves.data
+    x, v, lift = (np.array(curves[k])[np.isfinite(curves["x"])] for k in ("x", "velocity", "lift"))
     slope = np.gradient(lift, x)
     off = lift > 0.5
     assert np.max(np.abs(v[off] - slope[off])) < 0.01 * np.max(np.abs(slope))
@@ -105,3 +105,22 @@ def test_checks_of_the_sweeps_are_pending_until_the_whole_design_comes():
     assert {data["colour"][i] for i in rows} == {SEVERITY_COLOURS["pending"]}
     d.draw_sweep(d.generation, Session.settle(d.session.good_document), time.time())
     assert "…" not in d.checks.data["value"]
+
+
+def test_plot_ranges_are_kept_while_the_curves_keep_half_their_room():
+    # a lift from 0 to 10 mm with a quarter of its span as room: (-2.5, 12.5) mm.  Raised to 11 mm it still has
+    # 12.5 - 11 = 1.5 mm >= 2.75 / 2 above it: kept (no new ticks, no new layout).  Raised to 12 mm, 0.5 mm < 3 / 2:
+    # refitted to (-3, 15).  Cut to 2 mm the range 18 mm wide is more than twice the 2 + 2 x 0.5 = 3 mm it wants:
+    # refitted to (-0.5, 2.5)
+    assert kept_range(0.0, 1.0, 0.0, 10.0, 0.25) == (-2.5, 12.5)
+    assert kept_range(-2.5, 12.5, 0.0, 11.0, 0.25) == (-2.5, 12.5)
+    assert kept_range(-2.5, 12.5, 0.0, 12.0, 0.25) == (-3.0, 15.0)
+    assert kept_range(-3.0, 15.0, 0.0, 2.0, 0.25) == (-0.5, 2.5)
+    # the redraws of a drag change a range only when it moves: the nose 0.1 mm higher leaves the lift plot's
+    d = Designer(Document(), Session.start())
+    lift = d.figures["lift"].y_range
+    before = (lift.start, lift.end)
+    handles = dict(d.handles["lift"].data)
+    d.on_handles("lift", "data", handles, {**handles, "y": [handles["y"][0] + 0.1]})
+    assert d.session.document["valves"]["intake"]["max_lift_mm"] == pytest.approx(handles["y"][0] + 0.1, abs=1e-3)
+    assert (lift.start, lift.end) == before

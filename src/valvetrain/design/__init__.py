@@ -155,7 +155,7 @@ class DesignResults:
         return out
 
 
-def run(spec, laws=None, progress=None, headlines_only=False) -> DesignResults:
+def run(spec, laws=None, progress=None, headlines_only=False, diagnose=True) -> DesignResults:
     """Run the whole design of a validated specification.
 
     Parameters
@@ -173,6 +173,9 @@ def run(spec, laws=None, progress=None, headlines_only=False) -> DesignResults:
         velocity and its largest cam force (:func:`valvetrain.dynamics.sweep.headline_sweep`), for a tolerance
         study: its checks and headlines as the full sweep's (within the accuracy that function states), its
         per-speed table sparse.
+    diagnose : bool
+        Where no spring passes, diagnose why (:func:`valvetrain.springs.diagnose`, about a second); False leaves
+        the diagnosis out of the springs' failing checks.
 
     Returns
     -------
@@ -201,7 +204,7 @@ def run(spec, laws=None, progress=None, headlines_only=False) -> DesignResults:
         try:
             tick = None if progress is None else (lambda done, total, name=name: progress(name, done, total))
             valves[name] = design_valve(name, valve, engine, gas, output, (laws or {}).get(name), tick,
-                                        headlines_only=headlines_only)
+                                        headlines_only=headlines_only, diagnose=diagnose)
         except SpecError as err:
             problems += err.problems
     if problems:

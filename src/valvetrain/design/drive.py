@@ -382,7 +382,7 @@ def _spring_checks(tag, s, note=""):
                        "free_length", "coil_gap_at_full_lift")]
 
 
-def drive_stage(valve, gas, cam) -> DriveResult:
+def drive_stage(valve, gas, cam, diagnose=True) -> DriveResult:
     """Stage 6: reduced masses, spring characteristic and design (the strength is :func:`strength_stage`).
 
     Parameters
@@ -390,6 +390,9 @@ def drive_stage(valve, gas, cam) -> DriveResult:
     valve, gas : SI views of the valve and ``[gas]`` (:func:`valvetrain.specification.si`).
     cam : CamResult
         The law stage: the law, the camshaft speed [rad/s], the heel and roller radii [m], the rocker ratio.
+    diagnose : bool
+        Where no spring passes, say why and what would make one pass (:func:`valvetrain.springs.diagnose`, a new
+        search per remedy: about a second); False leaves the diagnosis out (the designer's first answer to an edit).
 
     Returns
     -------
@@ -444,7 +447,7 @@ def drive_stage(valve, gas, cam) -> DriveResult:
         if drive.masses is None or drive.masses.spring_kg is not None or abs(new_mass - spring_total_mass) < 1e-7:
             break
         spring_total_mass = new_mass
-    diagnosis = None if search.passes else springs.diagnose(requirement, d_g, omega, options, search,
+    diagnosis = None if search.passes or not diagnose else springs.diagnose(requirement, d_g, omega, options, search,
                                                             2.0 * omega)
 
     chosen_line = springs.Characteristic(sum(d.characteristic.preload for d in designs.values()),

@@ -714,7 +714,7 @@ class ValveDesign:
 
 
 def design_valve(name, valve, engine, gas, output, law=None, progress=None, cylinder=None,
-                 headlines_only=False) -> ValveDesign:
+                 headlines_only=False, diagnose=True) -> ValveDesign:
     """All stages of one valve and its drive (masses, springs, strength).
 
     Parameters
@@ -730,6 +730,8 @@ def design_valve(name, valve, engine, gas, output, law=None, progress=None, cyli
         The engine's cycle, whose pressure on the valve head a ``[hydraulic]`` section's valve opens against.
     headlines_only : bool
         The ``[dynamics]`` sweep simulates only the speeds that decide its headlines (``dynamics_stage``).
+    diagnose : bool
+        Diagnose springs that do not pass (:func:`~valvetrain.design.drive.drive_stage`).
 
     Returns
     -------
@@ -755,7 +757,7 @@ def design_valve(name, valve, engine, gas, output, law=None, progress=None, cyli
     section = valve.cam.section
     records, found = section.records(cam.law, valve, engine, cam.nose)
     try:
-        drive = drive_stage(valve, gas, cam)
+        drive = drive_stage(valve, gas, cam, diagnose)
     except NoSpringFits as exc:
         raise SpecError([Problem(f"{at}.spring", str(exc))]) from None
     found += valve_checks(cam, flow_result, profile, valve, engine, section.timing(valve, records)) + list(drive.checks)

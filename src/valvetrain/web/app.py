@@ -14,8 +14,9 @@ from functools import partial
 import time
 
 from bokeh.layouts import column, row
-from bokeh.models import (Button, ColumnDataSource, CustomJS, DataRange1d, DataTable, LinearAxis, Div, HTMLTemplateFormatter, LinearColorMapper,
-                          NumericInput, PointDrawTool, Select, TableColumn, TabPanel, Tabs, TextInput, Title)
+from bokeh.models import (Button, ColumnDataSource, CustomJS, DataTable, LinearAxis, Div, HTMLTemplateFormatter, Label,
+                          LinearColorMapper, NumericInput, PointDrawTool, Range1d, Select, TableColumn, TabPanel, Tabs,
+                          TextInput)
 from bokeh.plotting import figure
 import numpy as np
 
@@ -41,21 +42,53 @@ KINEMATIC_PLOTS = (("lift", "valve_lift_mm", "lift_mm", 0), ("velocity", "valve_
                    ("jerk", "valve_jerk_m_s3", "jerk_valve", 3))
 """The plots against the camshaft angle: name, series, axis words, order of the derivative."""
 
-SOURCES = {"angle": ("x", "lift", "velocity", "acceleration", "jerk", "curvature", "tappet"),
-           "crank": ("x", "time_area", "curtain"), "contour": ("x", "y"), "spring": ("x", "y")}
-"""The data sources of a design's curves (the current and the baseline each have theirs) and their columns: one
-source per abscissa, so that a redraw sends four changes, not one per curve (each change is a message to the page,
-and the page may paint between two)."""
+CURVES = {"x": "cam_deg", "lift": "valve_lift_mm", "tappet": "tappet_lift_mm", "curvature": "rho_mm",
+          "crank_x": "crank_deg", "time_area": "time_area_mm2_s", "curtain": "curtain_area_mm2",
+          "spring_x": "spring_lift_mm", "spring_y": "required_force_N", "spring_line_x": "spring_line_lift_mm",
+          "spring_line_y": "spring_line_force_N"}
+"""The columns of a design's curves (the current and the baseline each have their source) and the series they hold,
+besides the derivatives of the lift (:data:`KINEMATIC_PLOTS`) and the closed contour.  One source for all, the shorter
+series padded with NaN (which a line leaves out): a redraw sends one change, not one per curve or abscissa (each
+change is a message to the page, and a message costs the server a walk over the document's models)."""
 
-PLOTS = {"lift": ("angle", "lift"), "velocity": ("angle", "velocity"), "acceleration": ("angle", "acceleration"),
-         "jerk": ("angle", "jerk"), "contour": ("contour", "y"), "curvature": ("angle", "curvature"),
-         "time_area": ("crank", "time_area"), "spring": ("spring", "y")}
-"""Each plot's source and column of ordinates."""
+PLOTS = {"lift": ("x", "lift"), "velocity": ("x", "velocity"), "acceleration": ("x", "acceleration"),
+         "jerk": ("x", "jerk"), "contour": ("contour_x", "contour_y"), "curvature": ("x", "curvature"),
+         "time_area": ("crank_x", "time_area"), "spring": ("spring_x", "spring_y")}
+"""Each plot's columns of abscissae and ordinates."""
 
 
-HANDLE_ROOM = 0.5
-"""The kinematic plots' room around the curves, a fraction of their span (a quarter above, a quarter below): how
-far one drag takes a handle beyond the highest or lowest point."""
+HANDLE_ROOM = 0.25
+"""The kinematic plots' room above and below the curves, a fraction of their span: how far one drag takes a handle
+beyond the highest or lowest point (an edit tool drops the pointer's moves outside the plot's frame).  A redraw keeps
+the range while at least half this room is left (:func:`kept_range`)."""
+
+PLOT_ROOM = 0.05
+"""The other plots' room around their curves, a fraction of their span (none kept: the curves only stay inside)."""
+
+RANGES = {"x": ("x", 0.0), "lift": ("lift", HANDLE_ROOM), "velocity": ("velocity", HANDLE_ROOM),
+          "acceleration": ("acceleration", HANDLE_ROOM), "jerk": ("jerk", HANDLE_ROOM), "curvature_x": ("x", 0.0),
+          "curvature": ("curvature", PLOT_ROOM), "crank_x": ("crank_x", 0.0), "time_area": ("time_area", PLOT_ROOM),
+          "curtain": ("curtain", PLOT_ROOM), "spring_x": ("spring_x", PLOT_ROOM), "spring": ("spring_y", PLOT_ROOM)}
+"""The plots' fixed ranges (the contour's follows its data, to keep its aspect): the column they hold, of the design
+and of the baseline, and their room (:func:`kept_range`)."""
+
+
+def kept_range(start, end, low, high, room) -> tuple[float, float]:
+    """The range [start, end] of a plot after a redraw whose curves span [low, high]: kept while the curves lie
+    inside it with at least half the ``room`` (a fraction of their span) on either side and it is less than twice
+    as wide as they want, else their span with the whole room on either side.
+
+    Notes
+    -----
+    A plot whose range follows its data (a data range) lays itself out again on every redraw, its tick labels
+    measured anew (about half the page's drawing time of a redraw); a range kept across small changes leaves the
+    ticks and the layout as they were.
+    """
+    span = high - low or abs(high) or 1.0
+    pad = room * span
+    if start <= low - 0.5 * pad and end >= high + 0.5 * pad and end - start <= 2.0 * (span + 2.0 * pad):
+        return start, end
+    return low - pad, high + pad
 
 
 def per_degree(values, order, omega) -> np.ndarray:
@@ -87,6 +120,19 @@ requestAnimationFrame(() => requestAnimationFrame(() => {
 }));
 """
 
+PAUSE_JS = """
+if (!window[key]) {
+  window[key] = plots.map((p) => Bokeh.index.find_one(p)).filter((v) => v != null);
+  window[key].forEach((v) => v.pause());
+}
+"""
+
+UNPAUSE_JS = """
+const views = window[key] || [];
+window[key] = null;
+views.forEach((v) => v.unpause());
+"""
+
 DRAWN_JS = """
 requestAnimationFrame(() => requestAnimationFrame(() => { drawn.data = {n: [stamp.data.n[0]]}; }));
 """
@@ -103,6 +149,21 @@ a.remove();
 
 SWEEP_WORKERS = ThreadPoolExecutor(max_workers=1, thread_name_prefix="valvetrain-sweep")
 """One thread for the speed sweeps of every tab (2 cores: the kinematics keep the other)."""
+
+
+def _held(plots, stamp, key):
+    """A data source whose change pauses the drawing of ``plots`` in the page until ``stamp`` changes: a redraw's
+    changes come to the page one message each, and the page would paint a plot once for each that reaches it in
+    another frame; held, it paints each plot once, in the frame after the last."""
+    hold = ColumnDataSource({"n": [0]})
+    hold.js_on_change("data", CustomJS(args={"plots": plots, "key": key}, code=PAUSE_JS))
+    stamp.js_on_change("data", CustomJS(args={"key": key}, code=UNPAUSE_JS))
+    return hold
+
+
+def _hold(hold):
+    """Pause the drawing of the plots of a :func:`_held` source (the stamp's change resumes it)."""
+    hold.data = {"n": [hold.data["n"][0] + 1]}
 
 
 class Stale(Exception):
@@ -194,15 +255,15 @@ class Designer:
         self.spec_tabs = Tabs(tabs=panels, width=270)
 
         tools = "pan,wheel_zoom,box_zoom,reset,save"
-        self.sources = {k: ColumnDataSource({c: [] for c in columns}) for k, columns in SOURCES.items()}
-        self.base_sources = {k: ColumnDataSource({c: [] for c in columns}) for k, columns in SOURCES.items()}
+        empty = {k: [] for k in [*CURVES, *(p[0] for p in KINEMATIC_PLOTS[1:]), "contour_x", "contour_y"]}
+        self.curves, self.base_curves = ColumnDataSource(empty, name="curves"), ColumnDataSource(empty)
         self.figures = {}
         for name, *_ in KINEMATIC_PLOTS:
             # room above and below the curves for the handles: an edit tool drops the pointer's moves outside the
             # plot's frame, so a handle at the top of a tight range could not be dragged higher
             self.figures[name] = self._plot(figure(height=210, width=520, tools=tools, name=f"plot-{name}",
-                                                   y_range=DataRange1d(range_padding=HANDLE_ROOM)), name)
-        self.figures["lift"].line("x", "tappet", source=self.sources["angle"], color="#2ca02c", line_width=1)
+                                                   x_range=Range1d(0, 1), y_range=Range1d(0, 1)), name)
+        self.figures["lift"].line("x", "tappet", source=self.curves, color="#2ca02c", line_width=1)
         self.segments = ColumnDataSource({"x": [], "y0": [], "y1": []})
         self.figures["acceleration"].segment("x", "y0", "x", "y1", source=self.segments, color="#bbbbbb",
                                              line_dash="dotted")
@@ -220,16 +281,24 @@ class Designer:
         for name in ("lift", "velocity", "acceleration"):
             self.figures[name].x_range = self.figures["jerk"].x_range
 
-        for name, kw in (("contour", {"match_aspect": True}), ("curvature", {}), ("time_area", {}), ("spring", {})):
+        for name in ("contour", "curvature", "time_area", "spring"):
+            kw = {"match_aspect": True} if name == "contour" else {"x_range": Range1d(0, 1), "y_range": Range1d(0, 1)}
             self.figures[name] = self._plot(figure(height=260, width=520 if name != "contour" else 300, tools=tools,
                                                    name=f"plot-{name}", **kw), name)
         self.heel = ColumnDataSource({"x": [], "y": []})
         self.figures["contour"].line("x", "y", source=self.heel, color="#2ca02c", line_dash="dashed")
-        self.spring_line = ColumnDataSource({"x": [], "y": []})
-        self.figures["spring"].line("x", "y", source=self.spring_line, color="black", line_width=2)
+        self.figures["spring"].line("spring_line_x", "spring_line_y", source=self.curves, color="black", line_width=2)
         ta = self.figures["time_area"]
-        curtain = ta.line("x", "curtain", source=self.sources["crank"], color="#ff7f0e", y_range_name="curtain")
-        ta.extra_y_ranges = {"curtain": DataRange1d(renderers=[curtain])}
+        ta.line("crank_x", "curtain", source=self.curves, color="#ff7f0e", y_range_name="curtain")
+        ta.extra_y_ranges = {"curtain": Range1d(0, 1)}
+        # the fullness in the plot, not in its title: a title's new text lays the plot out again
+        self.fullness = Label(x=0, y=0, text="", text_font_size="11px", text_baseline="top")
+        ta.add_layout(self.fullness)
+        f = self.figures
+        self.ranges = {"x": f["jerk"].x_range, "curvature_x": f["curvature"].x_range, "crank_x": ta.x_range,
+                       "spring_x": f["spring"].x_range, "curtain": ta.extra_y_ranges["curtain"],
+                       **{name: f[name].y_range for name in ("lift", "velocity", "acceleration", "jerk", "curvature",
+                                                             "time_area", "spring")}}
         self.curtain_axis = LinearAxis(y_range_name="curtain", axis_label_text_color="#ff7f0e")
         ta.add_layout(self.curtain_axis, "right")
 
@@ -255,7 +324,9 @@ class Designer:
         _rows_follow(self.card_table)
 
         # the sweep panel
-        self.sweep_status = Title(text="", name="sweep-status", text_font_style="normal")
+        # the sweep's state inside its plot, not in a title: a title's new text lays the plot out again
+        self.sweep_status = Label(x=6, y=6, x_units="screen", y_units="screen", text="", name="sweep-status",
+                                  text_font_size="11px", background_fill_color="white", background_fill_alpha=0.8)
         self.sweep_sources = {k: ColumnDataSource({"x": [], "y": []}) for k in ("force", "seating")}
         self.base_sweep_sources = {k: ColumnDataSource({"x": [], "y": []}) for k in ("force", "seating")}
         self.sweep_marks = ColumnDataSource({"x": [], "y0": [], "y1": []})
@@ -265,7 +336,7 @@ class Designer:
             p.line("x", "y", source=self.sweep_sources[key], color="#1f77b4", line_width=2)
             p.segment("x", "y0", "x", "y1", source=self.sweep_marks, color="#d62728", line_dash="dashed")
             self.figures["sweep_" + key] = p
-        self.figures["sweep_force"].add_layout(self.sweep_status, "above")
+        self.figures["sweep_force"].add_layout(self.sweep_status)
         self.map_source = ColumnDataSource({"image": [], "x": [], "y": [], "dw": [], "dh": []})
         self.mapper = LinearColorMapper(palette="RdBu11", low=-1.0, high=1.0)
         p = figure(height=220, width=420, tools=tools, name="plot-sweep-map")
@@ -274,6 +345,7 @@ class Designer:
 
         # the stamps are data sources, not widgets: a widget's change lays the whole page out again (~100 ms)
         self.kinematic_stamp = ColumnDataSource({"n": [0], "began": [0.0], "ended": [0.0]}, name="kinematic-stamp")
+        self.kinematic_hold = _held([self.figures[k] for k in PLOTS], self.kinematic_stamp, "vtPausedKinematics")
         self.kinematic_stamp.js_on_change("data", CustomJS(args={"key": "vtTimes"}, code=STAMP_JS))
         # the page says when it has drawn the kinematics: the sweep starts then, not to hold their drawing up
         self.drawn = ColumnDataSource({"n": [0]}, name="drawn")
@@ -281,6 +353,8 @@ class Designer:
         self.kinematic_stamp.js_on_change("data", CustomJS(args={"stamp": self.kinematic_stamp, "drawn": self.drawn},
                                                            code=DRAWN_JS))
         self.sweep_stamp = ColumnDataSource({"n": [0], "began": [0.0], "ended": [0.0]}, name="sweep-stamp")
+        self.sweep_hold = _held([self.figures[k] for k in ("sweep_force", "sweep_seating", "sweep_map")],
+                                self.sweep_stamp, "vtPausedSweep")
         self.sweep_stamp.js_on_change("data", CustomJS(args={"key": "vtSweepTimes"}, code=STAMP_JS))
 
         f = self.figures
@@ -296,12 +370,14 @@ class Designer:
         self.doc.add_root(self.kinematic_stamp)
         self.doc.add_root(self.sweep_stamp)
         self.doc.add_root(self.drawn)
+        self.doc.add_root(self.kinematic_hold)
+        self.doc.add_root(self.sweep_hold)
 
     def _plot(self, p, name):
         """Plot ``name`` on figure ``p``: the baseline dashed under the current design."""
-        source, y = PLOTS[name]
-        p.line("x", y, source=self.base_sources[source], color="#999999", line_dash="dashed", line_width=1.5)
-        p.line("x", y, source=self.sources[source], color="#1f77b4", line_width=2)
+        x, y = PLOTS[name]
+        p.line(x, y, source=self.base_curves, color="#999999", line_dash="dashed", line_width=1.5)
+        p.line(x, y, source=self.curves, color="#1f77b4", line_width=2)
         return p
 
     # --- drawing ---------------------------------------------------------------------------------------------------
@@ -318,6 +394,7 @@ class Designer:
         self.figures["curvature"].title.text = t["rho"]
         self.figures["curvature"].xaxis.axis_label = t["cam_deg"]
         self.figures["time_area"].xaxis.axis_label = t["crank_deg"]
+        self.figures["time_area"].title.text = t["running_ta"]
         self.curtain_axis.axis_label = t["curtain"]
         self.figures["spring"].title.text = t["spring_title"]
         self.figures["spring"].xaxis.axis_label = t["valve_lift_axis"]
@@ -386,42 +463,58 @@ class Designer:
         return result["results"]["valves"][self.valve]["cam"]["camshaft_speed_rad_s"] if self.per_degree else None
 
     @staticmethod
-    def _curves(series, sources, omega=None):
-        angle = {"x": _array(series["cam_deg"]), "curvature": _array(series["rho_mm"]),
-                 "tappet": _array(series["tappet_lift_mm"])}
+    def _curves(series, omega=None) -> dict:
+        """The columns of a design's curves (:data:`CURVES`), NaN-padded to one length."""
+        out = {key: _array(series[name]) for key, name in CURVES.items()}
         for name, key, _, order in KINEMATIC_PLOTS:
-            angle[name] = _array(series[key]) if omega is None or order == 0 else per_degree(series[key], order, omega)
-        sources["angle"].data = angle
-        sources["crank"].data = {"x": _array(series["crank_deg"]), "time_area": _array(series["time_area_mm2_s"]),
-                                 "curtain": _array(series["curtain_area_mm2"])}
-        sources["contour"].data = {"x": _array(series["contour_x_mm"] + series["contour_x_mm"][:1]),
-                                   "y": _array(series["contour_y_mm"] + series["contour_y_mm"][:1])}
-        sources["spring"].data = {"x": _array(series["spring_lift_mm"]), "y": _array(series["required_force_N"])}
+            out[name] = _array(series[key]) if omega is None or order == 0 else per_degree(series[key], order, omega)
+        out["contour_x"] = _array(series["contour_x_mm"] + series["contour_x_mm"][:1])
+        out["contour_y"] = _array(series["contour_y_mm"] + series["contour_y_mm"][:1])
+        n = max(len(v) for v in out.values())
+        return {k: np.pad(v, (0, n - len(v)), constant_values=np.nan) for k, v in out.items()}
+
+    def _ranges(self, with_base):
+        """Each fixed range of the plots kept or fitted to the curves of the design and the baseline
+        (:func:`kept_range`); a range changed only when it moves (a change lays its plot out again)."""
+        for key, (name, room) in RANGES.items():
+            values = np.concatenate([source.data[name] for source in (self.curves, self.base_curves)[:1 + with_base]])
+            values = values[np.isfinite(values)]
+            if values.size == 0:
+                continue
+            rng = self.ranges[key]
+            start, end = kept_range(rng.start, rng.end, float(values.min()), float(values.max()), room)
+            if (start, end) != (rng.start, rng.end):
+                rng.update(start=start, end=end)
 
     def redraw(self, sweep=True, began=None):
         """Draw the good design (and the baseline), its checks, card and handles; start its speed sweep (``sweep``)
         or draw the last one again.  ``began``: ``time.time()`` when the change came (default now)."""
         began = time.time() if began is None else began
-        s = self.session
-        series = s.good["series"][self.valve]
-        omega = self._omega(s.good)
-        self._curves(series, self.sources, omega)
-        phi = np.linspace(0.0, 2.0 * np.pi, 181)
-        r = series["heel_radius_mm"]
-        self.heel.data = {"x": r * np.cos(phi), "y": r * np.sin(phi)}         # the same circle sends nothing
-        self.spring_line.data = {"x": series["spring_line_lift_mm"], "y": series["spring_line_force_N"]}
-        acc = self.sources["angle"].data["acceleration"]
-        edges = series["segments_cam_deg"]
-        self.segments.data = {"x": edges, "y0": [np.nanmin(acc)] * len(edges), "y1": [np.nanmax(acc)] * len(edges)}
-        base = s.baseline["series"].get(self.valve) if s.baseline else None
-        if base is not None:
-            self._curves(base, self.base_sources, self._omega(s.baseline))
-        self.figures["time_area"].title.text = (f"{TEXT[self.lang]['running_ta']}; "
-                                                f"fullness {s.good['results']['valves'][self.valve]['flow']['fullness']:.4g}")
-        self._handles(omega)
-        self._checks()
-        self._card()
-        _count(self.kinematic_stamp, began)
+        _hold(self.kinematic_hold)
+        try:
+            s = self.session
+            series = s.good["series"][self.valve]
+            omega = self._omega(s.good)
+            self.curves.data = self._curves(series, omega)
+            phi = np.linspace(0.0, 2.0 * np.pi, 181)
+            r = series["heel_radius_mm"]
+            self.heel.data = {"x": r * np.cos(phi), "y": r * np.sin(phi)}         # the same circle sends nothing
+            base = s.baseline["series"].get(self.valve) if s.baseline else None
+            if base is not None:
+                self.base_curves.data = self._curves(base, self._omega(s.baseline))
+            self._ranges(base is not None)
+            edges = series["segments_cam_deg"]
+            acc = self.ranges["acceleration"]
+            self.segments.data = {"x": edges, "y0": [acc.start] * len(edges), "y1": [acc.end] * len(edges)}
+            ta = self.ranges["time_area"]
+            self.fullness.update(x=self.ranges["crank_x"].start, y=ta.end - 0.02 * (ta.end - ta.start),
+                                 text=f"{TEXT[self.lang]['s_fullness']} "
+                                      f"{s.good['results']['valves'][self.valve]['flow']['fullness']:.4g}")
+            self._handles(omega)
+            self._checks()
+            self._card()
+        finally:
+            _count(self.kinematic_stamp, began)
         self.sweep_due = self.sweep_due or sweep          # a switch of language before the page drew keeps it due
         if self.session.full is not None:
             self._sweep_panel()
@@ -493,10 +586,13 @@ class Designer:
         if generation != self.generation:
             return
         self.session.settled(result)
-        if result["ok"] and result["results"] is not None:
-            self._checks()
-        self._sweep_panel()
-        _count(self.sweep_stamp, began)
+        _hold(self.sweep_hold)
+        try:
+            if result["ok"] and result["results"] is not None:
+                self._checks()
+            self._sweep_panel()
+        finally:
+            _count(self.sweep_stamp, began)
 
     def _sweep_panel(self):
         """The sweep panel of the whole design kept (its problems in the panel's title when it did not design)."""

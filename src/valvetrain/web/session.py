@@ -21,6 +21,7 @@ from ..laws import PolydyneLaw
 from ..specification.cams import main_half_angle_deg
 from ..specification.fields import Range
 from ..specification.models import Drive, Dynamics, Engine, Masses, Spring, Valve
+from ..units import MM
 
 HANDLE_STEP = {"deg": 0.01, "mm": 0.001}
 """A dragged handle is rounded to these steps [cam deg, mm]: a saved specification reads like a typed one."""
@@ -175,14 +176,18 @@ def handles(document, spec, name, series) -> list[Handle]:
       a ratio that names that segment.
 
     A lift table given by its points inline (:func:`has_points`) has a handle on the lift plot at each point
-    (``point.K``, K counted from 0), and no other.
+    (``point.K``, K counted from 0) and one on the acceleration plot at each point off the base circle but the first
+    and the last (``acceleration.K``, :func:`acceleration_step`), and no other.
     """
     valve = document["valves"][name]
     cam = valve.get("cam", {})
     if has_points(cam):
-        x = TablePoints(cam, series).plot_x(cam["table_angles_deg"])
-        return [Handle(f"point.{k}", "lift", float(xk), float(yk))
-                for k, (xk, yk) in enumerate(zip(x, cam["table_lifts_mm"], strict=True))]
+        x, lifts = TablePoints(cam, series).plot_x(cam["table_angles_deg"]), cam["table_lifts_mm"]
+        return ([Handle(f"point.{k}", "lift", float(xk), float(yk))
+                 for k, (xk, yk) in enumerate(zip(x, lifts, strict=True))]
+                + [Handle(f"acceleration.{k}", "acceleration", float(x[k]),
+                          _interp(series, "valve_acceleration_m_s2", x[k]))
+                   for k in range(1, len(x) - 1) if lifts[k] > 0.0])
     out = []
     if valve.get("max_lift_mm") is not None:
         out.append(Handle("nose", "lift", 0.0, _interp(series, "valve_lift_mm", 0.0)))
@@ -240,6 +245,40 @@ def _points_moved(at, cam, series, x, y):
     keep = np.concatenate([[True], np.diff(angles) > 0.0])
     return {f"{at}.cam.table_angles_deg": [float(a) for a in angles[keep]],
             f"{at}.cam.table_lifts_mm": [float(h) for h in lifts[keep]]}
+
+
+def acceleration_step(x, k, change, omega, ratio=1.0) -> float:
+    """The change of the lift [mm] of point ``k`` of a lift table that changes the table's acceleration at it by
+    ``change``, its neighbours kept.
+
+    Parameters
+    ----------
+    x : array_like
+        The table's points as camshaft angles [cam deg] (from the nose: only their steps count).
+    k : int
+        The point, neither the first nor the last.
+    change : float
+        The change of the valve's acceleration at the point [m/s²] at the camshaft speed ``omega`` [rad/s].
+    ratio : float
+        Valve lift per table lift: 1 for a table of valve lift, the rocker ratio for one of tappet lift.
+
+    Notes
+    -----
+    The valve's acceleration is a = i omega² h'' (h'' = d²h/dθ² of the table's lift h [m] against the camshaft
+    angle θ [rad], i = ``ratio``).  A table's h'' at a point is twice the second divided difference of the point and
+    its neighbours (the parabola through the three), h''_k = 2 ((h_{k+1} - h_k)/d2 - (h_k - h_{k-1})/d1) / (d1 + d2),
+    d1 and d2 the angle steps before and after it; its derivative in h_k is -2 / (d1 d2), so the step of the lift
+    is Δh_k = -Δh'' d1 d2 / 2 with Δh'' = change / (i omega²).  The neighbours' h'' answer by (d1 + d2)-weighted
+    shares of the opposite sign, the table's ends stay where they were, and the law closes the lobe and keeps the
+    lift's continuity as for any table (its smoothing spline follows the moved point as far as the table's accuracy
+    lets it, so the fitted acceleration moves by about the change, not exactly).
+
+    References
+    ----------
+    R. L. Burden and J. D. Faires, Numerical Analysis, 9th ed. (2011), section 3.3: f[x0, x1, x2] = f''(ξ) / 2.
+    """
+    d1, d2 = np.deg2rad(np.diff(np.asarray(x, dtype=float)[k - 1:k + 2]))
+    return float(-change / (ratio * omega**2) * d1 * d2 / 2.0 / MM)
 
 
 def _shape_points(cam, half, edges):
@@ -324,9 +363,10 @@ POSITION_RANGE = (0.02, 0.98)
 """The range a peak position (a fraction of its part) is dragged in: at 0 or 1 the two pieces of a part become one."""
 
 
-def moved(document, spec, name, handle, x, y, series) -> dict[str, Any]:
+def moved(document, spec, name, handle, x, y, series, valve=None) -> dict[str, Any]:
     """The keys a drag of ``handle`` to (x, y) sets: ``{dotted key: value}``; x [cam deg from the nose], y [mm] on
-    the lift plot, [m/s²] (valve side, at the rated speed) on the acceleration plot; ``series`` the design's.
+    the lift plot, [m/s²] (valve side, at the rated speed) on the acceleration plot; ``series`` and ``valve`` (its
+    results) the design's.
 
     The nose sets the valve lift ``max_lift_mm`` to y.  A boundary between two angles sets both so that the other
     boundaries stay and the flank still adds up to the half-angle (phi1_deg and phi2_deg for ``phi1`` of a cam of
@@ -339,7 +379,9 @@ def moved(document, spec, name, handle, x, y, series) -> dict[str, Any]:
     y to the peak's present height (the valve's acceleration is the tappet's analogue times the rocker ratio and the
     camshaft speed squared), ``trough`` the trough_position in the negative part.  The ``peak`` of a polydyne cam
     sets p so that the peak lies at x (:func:`polydyne_p`; its height follows from the lift).  A point ``point.K`` of an inline
-    lift table sets its angle (kept between its neighbours) and its lift (at least zero).
+    lift table sets its angle (kept between its neighbours) and its lift (at least zero); a point
+    ``acceleration.K`` sets the lift of point K so that the table's acceleration there changes by the drag's height
+    (:func:`acceleration_step`, at the camshaft speed and rocker ratio of ``valve``; its angle stays).
     """
     at = f"valves.{name}"
     if handle == "nose":
@@ -349,6 +391,11 @@ def moved(document, spec, name, handle, x, y, series) -> dict[str, Any]:
         k = int(handle.split(".")[1])
         x_all = TablePoints(cam, series).plot_x(cam["table_angles_deg"])
         lifts = list(cam["table_lifts_mm"])
+        if handle.startswith("acceleration."):
+            ratio = valve["rocker_ratio"] if cam["table_lift_at"] == "tappet" else 1.0
+            lifts[k] += acceleration_step(x_all, k, y - _interp(series, "valve_acceleration_m_s2", x_all[k]),
+                                          valve["cam"]["camshaft_speed_rad_s"], ratio)
+            return _points_moved(at, cam, series, x_all, lifts)
         lo = x_all[k - 1] if k > 0 else -np.inf
         hi = x_all[k + 1] if k + 1 < len(x_all) else np.inf
         step = HANDLE_STEP["deg"] * TablePoints(cam, series).scale
@@ -405,8 +452,9 @@ class Session:
     the problems of the last edit (key -> message), the baseline pinned.
 
     An edit is answered in two steps: :meth:`apply` designs without the speed sweeps of the ``[dynamics]``
-    sections (``good``: the kinematics, springs and checks in tens of ms); :meth:`settle` adds them (``full``: the
-    checks of the whole design and the sweeps), in the background, and :meth:`settled` keeps it."""
+    sections and without the diagnosis of springs that do not pass (``good``: the kinematics, springs and checks in
+    tens of ms); :meth:`settle` adds them (``full``: the checks of the whole design and the sweeps), in the
+    background, and :meth:`settled` keeps it."""
 
     document: dict
     good: dict = None
@@ -437,10 +485,10 @@ class Session:
         return s
 
     def apply(self, document):
-        """Design ``document`` without its speed sweeps (:func:`valvetrain.api.design`, ``dynamics=False``; it is
-        validated whole); keep it as the good design if it designs, else keep the last good one and the problems.
-        Returns True when it designed."""
-        result = api.design(without_nones(document), dynamics=False)
+        """Design ``document`` without its speed sweeps and spring diagnosis (:func:`valvetrain.api.design`,
+        ``dynamics=False``, ``diagnose=False``; it is validated whole); keep it as the good design if it designs, else
+        keep the last good one and the problems.  Returns True when it designed."""
+        result = api.design(without_nones(document), dynamics=False, diagnose=False)
         self.document = document
         self.problems = result["errors"]
         if result["ok"]:
@@ -450,10 +498,10 @@ class Session:
 
     @staticmethod
     def settle(document, progress=None):
-        """The whole design of a good document, with its speed sweeps: :func:`valvetrain.api.design` with
-        ``sweeps``; a document without a ``[dynamics]`` section is swept with the default one
-        (:func:`valvetrain.api.sweep`) and its design is the good one (``results`` None).  ``progress`` as there.
-        Pure: called in a worker thread, kept by :meth:`settled`."""
+        """The whole design of a good document, with its speed sweeps (and the diagnosis of springs that do not
+        pass): :func:`valvetrain.api.design` with ``sweeps``; a document without a ``[dynamics]`` section is swept
+        with the default one (:func:`valvetrain.api.sweep`) and its design is the good one (``results`` None).
+        ``progress`` as there.  Pure: called in a worker thread, kept by :meth:`settled`."""
         plain = without_nones(document)
         if any("dynamics" in v for v in plain["valves"].values()):
             return api.design(plain, sweeps=True, progress=progress)
@@ -495,7 +543,8 @@ class Session:
     def drag(self, name, handle, x, y):
         """Move a handle of valve ``name`` to (x, y) and design (:func:`moved`, :meth:`edit`).  Returns the keys set
         (``{dotted key: value}``) when it designed, else an empty dict."""
-        values = moved(self.good_document, self.spec, name, handle, x, y, self.good["series"][name])
+        values = moved(self.good_document, self.spec, name, handle, x, y, self.good["series"][name],
+                       self.good["results"]["valves"][name])
         return values if self.edit(values) else {}
 
     def set_points(self, name, x, y):
