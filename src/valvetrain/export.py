@@ -229,15 +229,17 @@ def write_outputs(results, out, lang="en", inputs=(), force=False, figures="main
         out/.valvetrain-output (the files the run wrote)
     """
     from .report import write_report
+    from .report.drawing import figure_inputs
 
     with atomic_folder(out, inputs, force) as tmp, (drawer or nullcontext()):
         for sub in ("tables", "contour", "plots"):
             (tmp / sub).mkdir()
-        dxf = partial(write_dxf_files, results, tmp / "contour")
         if drawer is not None and figures != "none":
-            drawer.submit(results, tmp / "plots", lang, figures, also=dxf)   # the drawer has imported ezdxf
+            drawn = figure_inputs(results, figures)
+            drawer.submit(drawn, tmp / "plots", lang, figures,
+                          also=partial(write_dxf_files, drawn, tmp / "contour"))   # the drawer has imported ezdxf
         else:
-            dxf()
+            write_dxf_files(results, tmp / "contour")
         (tmp / "results.json").write_text(results_json(results), encoding="utf-8")
         (tmp / "spec.toml").write_text(spec_toml(results.spec), encoding="utf-8")
         for name, v in results.valves.items():
