@@ -228,7 +228,6 @@ def write_outputs(results, out, lang="en", inputs=(), force=False, figures="main
         out/report.html
         out/.valvetrain-output (the files the run wrote)
     """
-    from .report import write_report
     from .report.drawing import figure_inputs
 
     with atomic_folder(out, inputs, force) as tmp, (drawer or nullcontext()):
@@ -269,14 +268,19 @@ def write_outputs(results, out, lang="en", inputs=(), force=False, figures="main
         if results.two_stroke is not None:
             write_csv(tmp / "tables" / "two_stroke_ports.csv", two_stroke_columns(results.two_stroke))
             write_csv(tmp / "tables" / "two_stroke_time_area.csv", two_stroke_speed_columns(results.two_stroke))
-        plots = {}
-        if figures != "none" and drawer is not None:
-            plots = drawer.result()
-        elif figures != "none":   # the plots import matplotlib
-            from .report import write_plots
+        from .report.html import embedded, render_report, write_report
 
-            plots = write_plots(results, tmp / "plots", lang, figures)
-        write_report(results, tmp / "report.html", plots, lang)
+        if figures != "none" and drawer is not None:
+            page = render_report(results, drawer.names(), lang)   # while the drawers draw, the figures linked
+            drawer.result()
+            (tmp / "report.html").write_text(embedded(page, tmp), encoding="utf-8")
+        else:
+            plots = {}
+            if figures != "none":   # the plots import matplotlib
+                from .report import write_plots
+
+                plots = write_plots(results, tmp / "plots", lang, figures)
+            write_report(results, tmp / "report.html", plots, lang)
     return Path(out)
 
 

@@ -54,3 +54,21 @@ def test_a_too_long_document_field_is_refused(tmp_path):
     spec.write_text(appendix_text() + f'\n[document]\nauthor = "{"x" * 201}"\n', encoding="utf-8")
     result = CliRunner().invoke(main, ["validate", str(spec)])
     assert result.exit_code == 2 and "document.author" in result.output
+
+
+def test_a_linked_figure_is_embedded_from_its_file():
+    """embedded() puts each figure a page links (``<img src="plots/NAME"``) into the page as a data URI; the reference
+    is the file's bytes, read back from the page by the standard library's base64 decoder; the text around it and a
+    mention of ``plots/`` outside an image stay as they were."""
+    import base64
+
+    from valvetrain.report.html import embedded
+
+    images = {"a.png": b"\x89PNG first", "b&c.png": bytes(range(256))}
+    page = ('<p>see plots/a.png</p><img src="plots/a.png" alt="A" class="tall">'
+            '<img src="plots/b&amp;c.png" alt="B">')
+    got = embedded(page, images)
+    uris = re.findall(r'<img src="data:image/png;base64,([^"]*)"', got)
+    assert [base64.b64decode(u, validate=True) for u in uris] == [images["a.png"], images["b&c.png"]]
+    assert re.sub(r'data:image/png;base64,[^"]*', "X", got) == (
+        '<p>see plots/a.png</p><img src="X" alt="A" class="tall"><img src="X" alt="B">')

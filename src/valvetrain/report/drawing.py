@@ -2,17 +2,19 @@
 
 Drawing is most of what ``valvetrain run`` costs after the design (importing matplotlib, a third of a second, then
 about 0.1-0.4 s a figure), and it needs nothing but the results: a process forked before the design imports
-matplotlib meanwhile and draws one figure (its fonts loaded, the PNG writer imported), forks :data:`PROCESSES` - 1
-more from itself (which find matplotlib imported), then imports the modules of the other files it is to write
-(:class:`FigureProcess`'s ``imports``: the DXF writer); each drawer receives the results once they are there (only
-what the figures asked for read, :func:`figure_inputs`), the first writes the other files it was given (``submit``'s
-``also``: the DXF files of the contours), and they draw the figures while the first process writes the tables and
-the report.  The drawers share the figures through a counter: each takes the next figure not yet taken
+matplotlib meanwhile and draws one figure (its fonts loaded, the PNG writer imported), loads numba's compiled code
+(the first call of any kernel loads it for all, 0.2-0.5 s: the timing diagram evaluates the laws) while the request
+is not there yet, forks :data:`PROCESSES` - 1 more from itself (which find both loaded), then imports the modules of
+the other files it is to write (:class:`FigureProcess`'s ``imports``: the DXF writer).  The first process forks it
+before loading numba's code for its own design, so that a design quicker than the drawer's imports (the textbook's
+appendix) does not wait for them.  Each drawer receives the results once they are there (what the figures asked for
+read, :func:`figure_inputs`) from its own pipe; the first sends back the files of the figures (which the report
+names), writes the other files it was given (``submit``'s ``also``: the DXF files of the contours), and they draw
+the figures while the first process writes the tables and renders the report, which embeds them once drawn.  The
+drawers share the figures through a counter: each takes the next figure not yet taken
 (:func:`valvetrain.report.plots.write_plots`'s ``claim``), so that one drawing an expensive figure does not hold
-back the others.  The first process loads numba's compiled code (the first call of any kernel loads it for all,
-0.3-0.5 s) before it forks: the drawers evaluate laws too (the timing diagram), and inherit it.  Where processes
-cannot be forked (Windows, macOS), :func:`start` gives None and the figures are drawn in the process itself, as
-before.
+back the others.  Where processes cannot be forked (Windows, macOS), :func:`start` gives None and the figures are
+drawn in the process itself, as before.
 """
 
 from dataclasses import replace
@@ -42,9 +44,6 @@ class FigureProcess:
     """
 
     def __init__(self, processes=PROCESSES, imports=()):
-        from ..laws.base import mirror
-
-        mirror(0.0, 1.0)   # numba's compiled code loaded (0.3-0.5 s, once): the drawers evaluate laws too
         context = multiprocessing.get_context("fork")
         pipes = [context.Pipe() for _ in range(processes)]     # one a drawer: its request (the first's: its answer)
         self._conns = [mine for mine, _ in pipes]
@@ -54,7 +53,7 @@ class FigureProcess:
         for _, child in pipes:
             child.close()
         self._conn = self._conns[0]
-        self._sending = None
+        self._sending = self._names = None
 
     def submit(self, results, folder, lang, figures, also=None):
         """Draw the figures ``figures`` of ``results`` into ``folder`` (the arguments of ``write_plots``); first
@@ -85,14 +84,26 @@ class FigureProcess:
         finally:
             os.close(arrays)
 
+    def names(self):
+        """``write_plots``'s return value (the files of the figures, which the report names) as soon as the first
+        drawer has the request, before the figures are drawn; its exception (figures not known), raised here."""
+        if self._names is None:
+            self._names = self._answer()
+        return self._names
+
     def result(self):
         """``write_plots``'s return value, once every process has drawn its figures; an exception of one, raised
         here."""
+        self.names()
+        value = self._answer()
+        self._process.join()
+        return value
+
+    def _answer(self):
         try:
             ok, value = self._conn.recv()
         except EOFError:
             raise RuntimeError("a process drawing the figures ended without them") from None
-        self._process.join()
         if not ok:
             raise value
         return value
@@ -149,6 +160,8 @@ def _serve(conns, others, imports):
     conn = conns[0]
     try:
         _warm_up()           # matplotlib imported, its fonts loaded, while the first process designs
+        if not conn.poll():  # and numba's compiled code for the drawers to inherit (else: where a figure needs it)
+            _load_kernels()
     except ImportError:
         pass                 # raised again with the request, in the first process
     drawers = []
@@ -196,6 +209,7 @@ def _serve(conns, others, imports):
         request, also = _receive(conn)
     except EOFError:
         end()
+    _send(conn, _draw(request, lambda: -1))          # the names alone (a claim of no figure): the report's
     answers = [_draw(request, claim, also)]
     for pid, mine in drawers:
         try:
@@ -238,8 +252,8 @@ def _send(conn, answer):
 
 
 def _draw(request, claim, also=None):
-    """``(True, write_plots's files)`` of the figures that this drawer claims (``claim``), after ``also()`` if given,
-    or ``(False, the exception)``."""
+    """``(True, write_plots's files)`` of the figures that this drawer claims (``claim``; one that gives -1 claims
+    none), after ``also()`` if given, or ``(False, the exception)``."""
     try:
         from .plots import write_plots
 
@@ -248,6 +262,14 @@ def _draw(request, claim, also=None):
         return True, write_plots(*request, claim=claim)
     except Exception as exc:  # noqa: BLE001 - raised again in the first process (FigureProcess.result)
         return False, exc
+
+
+def _load_kernels():
+    """Load numba's compiled code (the first call of any kernel loads it for all, 0.2-0.5 s): the timing diagram
+    evaluates the laws."""
+    from ..laws.base import mirror
+
+    mirror(0.0, 1.0)
 
 
 def _warm_up():
