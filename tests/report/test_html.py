@@ -1,5 +1,6 @@
-"""Issue 24: the report is a document one signs: a title block from the optional [document] section, a table of
-contents linking every chapter, a Conclusions chapter, the long tables in an appendix, page numbers in print."""
+"""The HTML report (report/html.py).  Issue 24: the report is a document one signs: a title block from the optional
+[document] section, a table of contents linking every chapter, a Conclusions chapter, the long tables in an appendix,
+page numbers in print.  A compiled template kept between runs is that of the report's language."""
 
 import re
 import tomllib
@@ -7,6 +8,10 @@ import tomllib
 from click.testing import CliRunner
 
 from valvetrain.cli import main
+from valvetrain.design import run
+from valvetrain.report.html import embedded, render_report
+from valvetrain.report.i18n import TEXT
+from valvetrain.specification import example_spec
 
 from appendix import appendix_text
 
@@ -56,13 +61,23 @@ def test_a_too_long_document_field_is_refused(tmp_path):
     assert result.exit_code == 2 and "document.author" in result.output
 
 
+def test_a_kept_compiled_template_is_that_of_its_language(monkeypatch):
+    """Jinja2 applies a filter to a literal when it compiles the template (``{{ "mm" | unit }}``): the compiled
+    template kept between runs must be that of the report's language.  The reference is each report rendered from a
+    template compiled afresh (no bytecode cache), after the other language's was compiled and kept."""
+    import valvetrain.report.html as html
+
+    results = run(example_spec())
+    kept = {lang: render_report(results, {}, lang) for lang in ("en", "ru", "en")}
+    monkeypatch.setattr(html, "BYTECODE_CACHES", dict.fromkeys(TEXT))
+    assert kept == {lang: render_report(results, {}, lang) for lang in ("ru", "en")}
+
+
 def test_a_linked_figure_is_embedded_from_its_file():
     """embedded() puts each figure a page links (``<img src="plots/NAME"``) into the page as a data URI; the reference
     is the file's bytes, read back from the page by the standard library's base64 decoder; the text around it and a
     mention of ``plots/`` outside an image stay as they were."""
     import base64
-
-    from valvetrain.report.html import embedded
 
     images = {"a.png": b"\x89PNG first", "b&c.png": bytes(range(256))}
     page = ('<p>see plots/a.png</p><img src="plots/a.png" alt="A" class="tall">'
