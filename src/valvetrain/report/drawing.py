@@ -2,12 +2,11 @@
 
 Drawing is most of what ``valvetrain run`` costs after the design (importing matplotlib, a third of a second, then
 about 0.1-0.4 s a figure), and it needs nothing but the results: a process forked before the design imports
-matplotlib meanwhile and draws one figure (its fonts loaded, the PNG writer imported), loads numba's compiled code
-(the first call of any kernel loads it for all, 0.2-0.5 s: the timing diagram evaluates the laws) while the request
-is not there yet, forks :data:`PROCESSES` - 1 more from itself (which find both loaded), then imports the modules of
-the other files it is to write (:class:`FigureProcess`'s ``imports``: the DXF writer).  The first process forks it
-before loading numba's code for its own design, so that a design quicker than the drawer's imports (the textbook's
-appendix) does not wait for them.  Each drawer receives the results once they are there (what the figures asked for
+matplotlib meanwhile and draws one figure (its fonts loaded, the PNG writer imported), forks :data:`PROCESSES` - 1
+more from itself (which find matplotlib imported), then imports the modules of the other files it is to write
+(:class:`FigureProcess`'s ``imports``: the DXF writer).  The first process loads numba's compiled code (the first
+call of any kernel loads it for all, 0.2-0.5 s) before it forks: the drawers evaluate laws too (the timing diagram),
+and inherit it.  Each drawer receives the results once they are there (what the figures asked for
 read, :func:`figure_inputs`) from its own pipe; the first sends back the files of the figures (which the report
 names), writes the other files it was given (``submit``'s ``also``: the DXF files of the contours), and they draw
 the figures while the first process writes the tables and renders the report, which embeds them once drawn.  The
@@ -44,6 +43,9 @@ class FigureProcess:
     """
 
     def __init__(self, processes=PROCESSES, imports=()):
+        from ..laws.base import mirror
+
+        mirror(0.0, 1.0)   # numba's compiled code loaded (0.2-0.5 s, once): the drawers evaluate laws too
         context = multiprocessing.get_context("fork")
         pipes = [context.Pipe() for _ in range(processes)]     # one a drawer: its request (the first's: its answer)
         self._conns = [mine for mine, _ in pipes]
@@ -160,8 +162,6 @@ def _serve(conns, others, imports):
     conn = conns[0]
     try:
         _warm_up()           # matplotlib imported, its fonts loaded, while the first process designs
-        if not conn.poll():  # and numba's compiled code for the drawers to inherit (else: where a figure needs it)
-            _load_kernels()
     except ImportError:
         pass                 # raised again with the request, in the first process
     drawers = []
@@ -262,14 +262,6 @@ def _draw(request, claim, also=None):
         return True, write_plots(*request, claim=claim)
     except Exception as exc:  # noqa: BLE001 - raised again in the first process (FigureProcess.result)
         return False, exc
-
-
-def _load_kernels():
-    """Load numba's compiled code (the first call of any kernel loads it for all, 0.2-0.5 s): the timing diagram
-    evaluates the laws."""
-    from ..laws.base import mirror
-
-    mirror(0.0, 1.0)
 
 
 def _warm_up():
