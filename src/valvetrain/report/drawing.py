@@ -29,6 +29,8 @@ import signal
 import sys
 import threading
 
+from ..design import DesignResults
+
 PROCESSES = 2
 """Drawing processes: the figures and the first process's writing share two cores (this machine's, and a laptop's
 least); more would only wait for a core."""
@@ -133,7 +135,7 @@ def start(imports=()) -> FigureProcess | None:
     return FigureProcess(imports=imports) if sys.platform.startswith("linux") else None
 
 
-def figure_inputs(results, figures):
+def figure_inputs(results, figures) -> DesignResults:
     """``results`` as the figures of ``figures`` (``write_plots``'s) read them: without the recorded revolutions of
     the speed sweeps (``dynamics.sweep``) but where ``figures`` is ``"all"``, the only set that draws the dynamics
     maps, which alone show them (not in :data:`valvetrain.report.plots.MAIN_FIGURES`).  Those are most of what
