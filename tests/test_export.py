@@ -196,6 +196,24 @@ def test_figures_drawn_in_a_second_process_are_those_drawn_here(tmp_path):
     assert all((here / p).read_bytes() == (there / p).read_bytes() for p in files)
 
 
+def test_the_drawers_get_the_results_without_the_sweeps_only_the_maps_show():
+    """The reference is the built-in example's default figures drawn from the whole results (its two valves' sweeps
+    recorded): drawn from figure_inputs (the sweeps left out, what the drawers are sent) they are the same PNG bytes;
+    figures="all" (the dynamics maps, which draw the sweeps) gets the whole results."""
+    from valvetrain.report.drawing import figure_inputs
+    from valvetrain.report.plots import write_plots
+    from valvetrain.specification import example_spec
+
+    results = run(example_spec())
+    sent = figure_inputs(results, "main")
+    assert all(v.dynamics.sweep is not None for v in results.valves.values())
+    assert all(v.dynamics.sweep is None for v in sent.valves.values())
+    assert figure_inputs(results, "all") is results
+    whole, drawn = {}, {}
+    assert write_plots(results, whole) == write_plots(sent, drawn)
+    assert len(whole) == 8 and drawn == whole
+
+
 @pytest.mark.skipif(not sys.platform.startswith("linux"), reason="the figures are drawn in a forked process on Linux")
 def test_an_error_in_the_drawing_process_is_raised_and_nothing_is_written(tmp_path):
     """write_plots refuses an unknown figure set (ValueError naming the allowed ones); raised in the drawing process,

@@ -228,16 +228,17 @@ def write_outputs(results, out, lang="en", inputs=(), force=False, figures="main
         out/report.html
         out/.valvetrain-output (the files the run wrote)
     """
-    from .report import write_report
+    from .report.drawing import figure_inputs
 
     with atomic_folder(out, inputs, force) as tmp, (drawer or nullcontext()):
         for sub in ("tables", "contour", "plots"):
             (tmp / sub).mkdir()
-        dxf = partial(write_dxf_files, results, tmp / "contour")
         if drawer is not None and figures != "none":
-            drawer.submit(results, tmp / "plots", lang, figures, also=dxf)   # the drawer has imported ezdxf
+            drawn = figure_inputs(results, figures)
+            drawer.submit(drawn, tmp / "plots", lang, figures,
+                          also=partial(write_dxf_files, drawn, tmp / "contour"))   # the drawer has imported ezdxf
         else:
-            dxf()
+            write_dxf_files(results, tmp / "contour")
         (tmp / "results.json").write_text(results_json(results), encoding="utf-8")
         (tmp / "spec.toml").write_text(spec_toml(results.spec), encoding="utf-8")
         for name, v in results.valves.items():
@@ -267,14 +268,19 @@ def write_outputs(results, out, lang="en", inputs=(), force=False, figures="main
         if results.two_stroke is not None:
             write_csv(tmp / "tables" / "two_stroke_ports.csv", two_stroke_columns(results.two_stroke))
             write_csv(tmp / "tables" / "two_stroke_time_area.csv", two_stroke_speed_columns(results.two_stroke))
-        plots = {}
-        if figures != "none" and drawer is not None:
-            plots = drawer.result()
-        elif figures != "none":   # the plots import matplotlib
-            from .report import write_plots
+        from .report.html import embedded, render_report, write_report
 
-            plots = write_plots(results, tmp / "plots", lang, figures)
-        write_report(results, tmp / "report.html", plots, lang)
+        if figures != "none" and drawer is not None:
+            page = render_report(results, drawer.names(), lang)   # while the drawers draw, the figures linked
+            drawer.result()
+            (tmp / "report.html").write_text(embedded(page, tmp), encoding="utf-8")
+        else:
+            plots = {}
+            if figures != "none":   # the plots import matplotlib
+                from .report import write_plots
+
+                plots = write_plots(results, tmp / "plots", lang, figures)
+            write_report(results, tmp / "report.html", plots, lang)
     return Path(out)
 
 

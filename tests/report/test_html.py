@@ -9,7 +9,7 @@ from click.testing import CliRunner
 
 from valvetrain.cli import main
 from valvetrain.design import run
-from valvetrain.report.html import render_report
+from valvetrain.report.html import embedded, render_report
 from valvetrain.report.i18n import TEXT
 from valvetrain.specification import example_spec
 
@@ -71,3 +71,19 @@ def test_a_kept_compiled_template_is_that_of_its_language(monkeypatch):
     kept = {lang: render_report(results, {}, lang) for lang in ("en", "ru", "en")}
     monkeypatch.setattr(html, "BYTECODE_CACHES", dict.fromkeys(TEXT))
     assert kept == {lang: render_report(results, {}, lang) for lang in ("ru", "en")}
+
+
+def test_a_linked_figure_is_embedded_from_its_file():
+    """embedded() puts each figure a page links (``<img src="plots/NAME"``) into the page as a data URI; the reference
+    is the file's bytes, read back from the page by the standard library's base64 decoder; the text around it and a
+    mention of ``plots/`` outside an image stay as they were."""
+    import base64
+
+    images = {"a.png": b"\x89PNG first", "b&c.png": bytes(range(256))}
+    page = ('<p>see plots/a.png</p><img src="plots/a.png" alt="A" class="tall">'
+            '<img src="plots/b&amp;c.png" alt="B">')
+    got = embedded(page, images)
+    uris = re.findall(r'<img src="data:image/png;base64,([^"]*)"', got)
+    assert [base64.b64decode(u, validate=True) for u in uris] == [images["a.png"], images["b&c.png"]]
+    assert re.sub(r'data:image/png;base64,[^"]*', "X", got) == (
+        '<p>see plots/a.png</p><img src="X" alt="A" class="tall"><img src="X" alt="B">')

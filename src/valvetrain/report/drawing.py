@@ -2,18 +2,21 @@
 
 Drawing is most of what ``valvetrain run`` costs after the design (importing matplotlib, a third of a second, then
 about 0.1-0.4 s a figure), and it needs nothing but the results: a process forked before the design imports
-matplotlib meanwhile and draws one figure (its fonts loaded, the PNG writer imported), and the modules of the other
-files it is to write (:class:`FigureProcess`'s ``imports``: the DXF writer); it receives the results once they are
-there, forks :data:`PROCESSES` - 1 more from itself (which find matplotlib imported), writes the other files it was
-given (``submit``'s ``also``: the DXF files of the contours) and draws the figures while the first process writes the
-tables and the report.  The drawers share the figures through a counter: each takes the next figure not yet taken
+matplotlib meanwhile and draws one figure (its fonts loaded, the PNG writer imported), forks :data:`PROCESSES` - 1
+more from itself (which find matplotlib imported), then imports the modules of the other files it is to write
+(:class:`FigureProcess`'s ``imports``: the DXF writer).  The first process loads numba's compiled code (the first
+call of any kernel loads it for all, 0.2-0.5 s) before it forks: the drawers evaluate laws too (the timing diagram),
+and inherit it.  Each drawer receives the results once they are there (what the figures asked for
+read, :func:`figure_inputs`) from its own pipe; the first sends back the files of the figures (which the report
+names), writes the other files it was given (``submit``'s ``also``: the DXF files of the contours), and they draw
+the figures while the first process writes the tables and renders the report, which embeds them once drawn.  The
+drawers share the figures through a counter: each takes the next figure not yet taken
 (:func:`valvetrain.report.plots.write_plots`'s ``claim``), so that one drawing an expensive figure does not hold
-back the others.  The first process loads numba's compiled code (the first call of any kernel loads it for all,
-0.3-0.5 s) before it forks: the drawers evaluate laws too (the timing diagram), and inherit it.  Where processes
-cannot be forked (Windows, macOS), :func:`start` gives None and the figures are drawn in the process itself, as
-before.
+back the others.  Where processes cannot be forked (Windows, macOS), :func:`start` gives None and the figures are
+drawn in the process itself, as before.
 """
 
+from dataclasses import replace
 import importlib
 import io
 import itertools
@@ -25,6 +28,8 @@ import pickle
 import signal
 import sys
 import threading
+
+from ..design import DesignResults
 
 PROCESSES = 2
 """Drawing processes: the figures and the first process's writing share two cores (this machine's, and a laptop's
@@ -42,13 +47,17 @@ class FigureProcess:
     def __init__(self, processes=PROCESSES, imports=()):
         from ..laws.base import mirror
 
-        mirror(0.0, 1.0)   # numba's compiled code loaded (0.3-0.5 s, once): the drawers evaluate laws too
+        mirror(0.0, 1.0)   # numba's compiled code loaded (0.2-0.5 s, once): the drawers evaluate laws too
         context = multiprocessing.get_context("fork")
-        self._conn, child = context.Pipe()
-        self._process = context.Process(target=_serve, args=(child, self._conn, processes, imports), daemon=True)
+        pipes = [context.Pipe() for _ in range(processes)]     # one a drawer: its request (the first's: its answer)
+        self._conns = [mine for mine, _ in pipes]
+        self._process = context.Process(target=_serve, args=([child for _, child in pipes], self._conns, imports),
+                                        daemon=True)
         self._process.start()
-        child.close()
-        self._sending = None
+        for _, child in pipes:
+            child.close()
+        self._conn = self._conns[0]
+        self._sending = self._names = None
 
     def submit(self, results, folder, lang, figures, also=None):
         """Draw the figures ``figures`` of ``results`` into ``folder`` (the arguments of ``write_plots``); first
@@ -56,11 +65,12 @@ class FigureProcess:
         with the modules of ``imports``).
 
         The request is pickled here (the results are not to be read while this process goes on with them), its
-        arrays apart (pickle's protocol 5: out-of-band buffers, 80 MB of a sweep's recorded revolutions for two
-        valves), copied once into a shared memory file that the drawers map (:func:`_shared`, :func:`_receive`)
-        rather than pickled into the pipe, read from it and unpickled again (a fifth of a second of a run); the rest,
-        larger than a pipe holds, is sent by a thread with the file: this process writes its files meanwhile, rather
-        than wait for the drawer to finish importing matplotlib."""
+        arrays apart (pickle's protocol 5: out-of-band buffers, 70 MB of a sweep's recorded revolutions for two
+        valves where the dynamics maps are drawn), copied once into a shared memory file that the drawers map
+        (:func:`_shared`, :func:`_receive`) rather than pickled into the pipe, read from it and unpickled again (a
+        fifth of a second of a run); the rest, larger than a pipe holds, is sent to each drawer by a thread with the
+        file: this process writes its files meanwhile, rather than wait for the drawers to finish importing
+        matplotlib."""
         buffers = []
         request = pickle.dumps(((results, folder, lang, figures), also), 5, buffer_callback=buffers.append)
         arrays, sizes = _shared([b.raw() for b in buffers])
@@ -69,22 +79,35 @@ class FigureProcess:
 
     def _send(self, request, sizes, arrays):
         try:
-            self._conn.send_bytes(request)
-            self._conn.send(sizes)
-            send_handle(self._conn, arrays, self._process.pid)
-        except OSError:      # the drawer has ended (stop): result() says so
+            for conn in self._conns:
+                conn.send_bytes(request)
+                conn.send(sizes)
+                send_handle(conn, arrays, self._process.pid)
+        except OSError:      # the drawers have ended (stop): result() says so
             pass
         finally:
             os.close(arrays)
 
+    def names(self):
+        """``write_plots``'s return value (the files of the figures, which the report names) as soon as the first
+        drawer has the request, before the figures are drawn; its exception (figures not known), raised here."""
+        if self._names is None:
+            self._names = self._answer()
+        return self._names
+
     def result(self):
         """``write_plots``'s return value, once every process has drawn its figures; an exception of one, raised
         here."""
+        self.names()
+        value = self._answer()
+        self._process.join()
+        return value
+
+    def _answer(self):
         try:
             ok, value = self._conn.recv()
         except EOFError:
             raise RuntimeError("a process drawing the figures ended without them") from None
-        self._process.join()
         if not ok:
             raise value
         return value
@@ -96,7 +119,8 @@ class FigureProcess:
         self._process.join()
         if self._sending is not None:
             self._sending.join()
-        self._conn.close()
+        for conn in self._conns:
+            conn.close()
 
     def __enter__(self):
         return self
@@ -111,27 +135,37 @@ def start(imports=()) -> FigureProcess | None:
     return FigureProcess(imports=imports) if sys.platform.startswith("linux") else None
 
 
-def _serve(conn, other, processes, imports):
-    """The forked process: import the plots and draw one figure, import ``imports``, wait for one request, fork the
-    other drawers, write the request's other files, draw the figures it claims, send back the files or the first
-    error.
+def figure_inputs(results, figures) -> DesignResults:
+    """``results`` as the figures of ``figures`` (``write_plots``'s) read them: without the recorded revolutions of
+    the speed sweeps (``dynamics.sweep``) but where ``figures`` is ``"all"``, the only set that draws the dynamics
+    maps, which alone show them (not in :data:`valvetrain.report.plots.MAIN_FIGURES`).  Those are most of what
+    :meth:`FigureProcess.submit` would copy to the drawers (the built-in example's two valves: 70 MB of arrays and
+    12 MB pickled), and copied in vain."""
+    if figures == "all":
+        return results
+    return replace(results, valves={name: v if v.dynamics is None or v.dynamics.sweep is None else
+                                    replace(v, dynamics=replace(v.dynamics, sweep=None))
+                                    for name, v in results.valves.items()})
 
-    A Ctrl-C is the first process's to handle (it ends this one); the end of the pipe that process keeps (``other``)
-    is closed here, so that the process ending without a request is an end of file, not a wait for ever.  Ended
-    (SIGTERM, :meth:`FigureProcess.stop`), it ends the drawers it forked first."""
+
+def _serve(conns, others, imports):
+    """The forked process: import the plots and draw one figure, fork the other drawers (one a pipe of ``conns``
+    after the first, this one's), import ``imports``, wait for the request, write its other files, draw the figures
+    it claims, send back the files or the first error.
+
+    The drawers are forked before the request comes, each to read it from its own pipe: none waits for this one to
+    finish importing ``imports`` (the DXF writer, a fifth of a second) when the request comes meanwhile.  A Ctrl-C is
+    the first process's to handle (it ends this one); the ends of the pipes that process keeps (``others``) are closed
+    here, so that the process ending without a request is an end of file, not a wait for ever.  Ended (SIGTERM,
+    :meth:`FigureProcess.stop`), it ends the drawers it forked first."""
     signal.signal(signal.SIGINT, signal.SIG_IGN)
-    other.close()
+    for other in others:
+        other.close()
+    conn = conns[0]
     try:
         _warm_up()           # matplotlib imported, its fonts loaded, while the first process designs
-        if not conn.poll():  # and the other modules while the request is not there yet (else: where they are used)
-            for name in imports:
-                importlib.import_module(name)
     except ImportError:
         pass                 # raised again with the request, in the first process
-    try:
-        request, also = _receive(conn)
-    except EOFError:
-        return
     drawers = []
     taken = multiprocessing.Value("i", 0, lock=True)   # the number of the next figure no drawer has taken
 
@@ -147,19 +181,37 @@ def _serve(conn, other, processes, imports):
         os._exit(1)
 
     signal.signal(signal.SIGTERM, end)
-    for _ in range(1, processes):
+    for own in conns[1:]:
         mine, theirs = multiprocessing.Pipe(duplex=False)
         pid = os.fork()
-        if pid == 0:                                  # a drawer: its share, its answer, its end
+        if pid == 0:                                  # a drawer: its request, its share, its answer, its end
             try:
                 signal.signal(signal.SIGTERM, signal.SIG_DFL)
-                conn.close()
+                for c in conns:
+                    if c is not own:
+                        c.close()
                 mine.close()
+                try:
+                    request, _ = _receive(own)
+                except EOFError:
+                    return
                 _send(theirs, _draw(request, claim))
             finally:
                 os._exit(0)
+        own.close()
         theirs.close()
         drawers.append((pid, mine))
+    try:
+        if not conn.poll():  # the other modules while the request is not there yet (else: where they are used)
+            for name in imports:
+                importlib.import_module(name)
+    except ImportError:
+        pass                 # raised again with the request, in the first process
+    try:
+        request, also = _receive(conn)
+    except EOFError:
+        end()
+    _send(conn, _draw(request, lambda: -1))          # the names alone (a claim of no figure): the report's
     answers = [_draw(request, claim, also)]
     for pid, mine in drawers:
         try:
@@ -202,8 +254,8 @@ def _send(conn, answer):
 
 
 def _draw(request, claim, also=None):
-    """``(True, write_plots's files)`` of the figures that this drawer claims (``claim``), after ``also()`` if given,
-    or ``(False, the exception)``."""
+    """``(True, write_plots's files)`` of the figures that this drawer claims (``claim``; one that gives -1 claims
+    none), after ``also()`` if given, or ``(False, the exception)``."""
     try:
         from .plots import write_plots
 

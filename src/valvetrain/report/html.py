@@ -451,7 +451,8 @@ def render_report(results, plots, lang="en", folder=None) -> str:
     folder : Path or dict, optional
         The output folder holding ``plots/``, or the figures drawn in memory (``{filename: PNG bytes}``,
         :func:`valvetrain.report.plots.write_plots` into a dict): the figures are embedded in the report (one file
-        to mail); without it they are linked.
+        to mail, :func:`embedded`); without it they are linked (``plots/NAME``), and the page rendered before they
+        are drawn.
     """
     env = Environment(loader=PackageLoader("valvetrain", "report/templates"), autoescape=select_autoescape(),
                       bytecode_cache=BYTECODE_CACHES[lang])
@@ -465,16 +466,8 @@ def render_report(results, plots, lang="en", folder=None) -> str:
     env.filters["not_checked"] = lambda note: not_checked(note, lang)
     env.globals["cell"] = lambda key, value: cell(key, value, lang)
     env.globals["legend"] = symbol_legend(lang)
-    images = {}
-
-    def image(name):
-        if name not in images:
-            images[name] = _image(folder, name)
-        return images[name]
-
-    env.filters["image"] = image
     env.filters["shown"] = shown_value
-    env.globals["figure"] = lambda name, alt: _figure(image, name, alt, TEXT[lang])
+    env.globals["figure"] = lambda name, alt: _figure(name, alt, TEXT[lang])
     spec = results.spec.model_dump()
     parts = list(results.valves) + (list(results.two_stroke.figures.ports) if results.two_stroke is not None else [])
     env.filters["quantity"] = lambda c: _quantity(c, lang, parts)
@@ -555,7 +548,8 @@ def render_report(results, plots, lang="en", folder=None) -> str:
     page = template.render(sources=[(WORKS[k].short, WORKS[k].reference()) for k in cited_in(first)],
                            corrections=cited_corrections(first, lang), **context)
     page = with_contents(page, TEXT[lang]["toc"])
-    return russian_typography(russian_citations(page)) if lang == "ru" else page
+    page = russian_typography(russian_citations(page)) if lang == "ru" else page
+    return page if folder is None else embedded(page, folder)
 
 
 CORRECTIONS_CITED = re.compile(r"(?:corrections notes?|поправк[аи]) (\d+)(?:-(\d+))?")
@@ -575,23 +569,30 @@ TALL_FIGURES = ("_kinematics.png",)
 """Figures of several stacked axes: printed taller than the others (the print style's ``img.tall``)."""
 
 
-def _figure(image, name, alt, t):
-    """The ``<img>`` of a figure of ``plots/`` (``image(name)`` its source), or where it was not drawn (``name``
-    undefined: not asked for, not in :data:`valvetrain.report.plots.MAIN_FIGURES`) the command that draws it."""
+def _figure(name, alt, t):
+    """The ``<img>`` of a figure of ``plots/``, linked (:func:`embedded` embeds it), or where it was not drawn
+    (``name`` undefined: not asked for, not in :data:`valvetrain.report.plots.MAIN_FIGURES`) the command that draws
+    it."""
     if not name:
         return Markup('<p class="src">{} <span class="name">valvetrain run --figures all</span></p>').format(
             t["figure_on_request"].format(alt))
-    return Markup('<img src="{}" alt="{}"{}>').format(image(name), alt,
-                                                   Markup(' class="tall"') if name.endswith(TALL_FIGURES) else "")
+    return Markup('<img src="plots/{}" alt="{}"{}>').format(name, alt,
+                                                         Markup(' class="tall"') if name.endswith(TALL_FIGURES) else "")
 
 
-def _image(folder, name):
-    """A figure of ``plots/`` (or of a dict ``{filename: PNG bytes}``) as a data URI (PNG, base64) or, without a
-    folder, as a relative link."""
-    if folder is None:
-        return f"plots/{name}"
-    png = folder[name] if isinstance(folder, dict) else (folder / "plots" / name).read_bytes()
-    return "data:image/png;base64," + base64.b64encode(png).decode("ascii")
+FIGURE_LINK = re.compile(r'<img src="plots/([^"]*)"')
+"""The source of a figure's ``<img>`` linked by :func:`_figure`: the file's name in ``plots/`` (HTML-escaped)."""
+
+
+def embedded(page, folder) -> str:
+    """``page`` (:func:`render_report` without a folder) with each figure it links embedded as a data URI (PNG,
+    base64) from ``folder``: the output folder holding ``plots/``, or a dict ``{filename: PNG bytes}``."""
+    def image(m):
+        name = unescape(m.group(1))
+        png = folder[name] if isinstance(folder, dict) else (folder / "plots" / name).read_bytes()
+        return '<img src="data:image/png;base64,' + base64.b64encode(png).decode("ascii") + '"'
+
+    return FIGURE_LINK.sub(image, page)
 
 
 def write_report(results, path, plots, lang="en") -> None:
