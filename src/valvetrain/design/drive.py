@@ -544,8 +544,9 @@ def quasi_static_loads(law, rocker_ratio, theta, spring_force, mass, speeds, to_
     Valve-train practical works (n.d.), work 7, eqs. (7.1)-(7.2).
     """
     omega = np.asarray(speeds, dtype=float)[:, None] * to_cam
-    force = strength.cam_force(spring_force, mass * rocker_ratio * omega**2 * law.derivatives(theta)[2]
-                               + omega**2 * finger, rocker_ratio)
+    inertia = mass * rocker_ratio * omega**2 * law.derivatives(theta)[2]
+    inertia += omega**2 * finger     # in place: a load map's array is large (strength.hertz_line_stress)
+    force = strength.cam_force(spring_force, inertia, rocker_ratio)
     return LoadMap("quasi-static", np.asarray(speeds, dtype=float), theta, force)
 
 
@@ -843,7 +844,9 @@ def _edge_loading(parts, drive, cam, follower, maps, width, notes):
         if width is None:
             return np.broadcast_to(offset, m.force.shape)
         curvature = follower.contact_curvature(cam.law.curvature(m.theta, cam.heel_radius, follower))
-        return offset + strength.hertz_half_width(m.force, width, curvature, parts.contact_modulus)
+        reach = strength.hertz_half_width(m.force, width, curvature, parts.contact_modulus)
+        reach += offset     # in place: a load map's array is large (strength.hertz_line_stress)
+        return reach
 
     w = _worst(maps, [reach(m) for m in maps])
     offset = abs(float(cam.law.derivatives(np.array([w.angle]))[1, 0]))
