@@ -205,13 +205,12 @@ def seating(theta, lift, velocity, acceleration=None, step_time=None) -> tuple[i
 
 def seatings(theta, lift, velocity, acceleration=None, step_time=None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """:func:`seating` of every row of (S, n) records (one a speed) at once: (index, angle [rad], velocity [m/s]),
-    arrays (S,); ``step_time`` [s] a scalar or one per row.  The Taylor series' root is found row by row (numpy's
-    ``roots``), the rest over the rows at once."""
+    arrays (S,); ``step_time`` [s] a scalar or one per row (the Taylor series' roots of :func:`_seat_times`)."""
     n = lift.shape[-1]
-    rows = np.arange(lift.shape[0])
+    every = np.arange(lift.shape[0])
     top = np.argmax(lift, axis=-1)
     down = (lift <= 0.0) & (np.arange(n) >= top[:, None])
-    seated = (lift[rows, top] > 0.0) & down.any(axis=-1)
+    seated = (lift[every, top] > 0.0) & down.any(axis=-1)
     i = np.where(seated, np.argmax(down, axis=-1), n)
     k = np.flatnonzero(seated)
     index, angle, vel = i, np.full(i.shape, np.nan), np.full(i.shape, np.nan)
@@ -229,15 +228,38 @@ def seatings(theta, lift, velocity, acceleration=None, step_time=None) -> tuple[
     v, a = velocity[k, i - 1], acceleration[k, i - 1]
     free = (i >= 2) & (lift[k, np.maximum(i - 2, 0)] > 0.0)
     jerk = np.where(free, (a - acceleration[k, np.maximum(i - 2, 0)]) / h, 0.0)
-    t = np.array([_seat_time(*x) for x in zip(y0.tolist(), v.tolist(), a.tolist(), jerk.tolist(), h.tolist(),
-                                                (w * h).tolist(), strict=True)])
+    t = _seat_times(y0, v, a, jerk, h, w * h)
     angle[k], vel[k] = t0 + t / h * (t1 - t0), v + a * t + 0.5 * jerk * t * t
     return index, angle, vel
 
 
-def _seat_time(y, v, a, jerk, h, fallback) -> float:
-    """The first time in (0, 2 h] [s] at which y + v t + a t^2/2 + jerk t^3/6 [m] reaches 0, else ``fallback``."""
-    roots = np.roots([jerk / 6.0, a / 2.0, v, y]) if jerk else np.roots([a / 2.0, v, y])
+def _seat_times(y, v, a, jerk, h, fallback) -> np.ndarray:
+    """For each row the first time in (0, 2 h] [s] at which y + v t + a t^2/2 + jerk t^3/6 [m] reaches 0, else
+    ``fallback`` (arrays (K,)): the real roots of the cubic (of the quadratic where jerk = 0) as numpy's ``roots``
+    finds them, the eigenvalues of its companion matrix, of every row's matrix in one call."""
+    out = np.array(fallback, dtype=float)
+    cubic = jerk != 0.0
+    for members, p in ((np.flatnonzero(cubic), np.stack([jerk / 6.0, a / 2.0, v, y], axis=1)),
+                       (np.flatnonzero(~cubic), np.stack([a / 2.0, v, y], axis=1))):
+        p = p[members]
+        whole = (p[:, 0] != 0.0) & (p[:, -1] != 0.0) & np.isfinite(p).all(axis=1)   # roots() would trim the others
+        for i in members[~whole]:
+            out[i] = _first_root(np.roots(p[members == i][0]), h[i], out[i])
+        members, p = members[whole], p[whole]
+        if not members.size:
+            continue
+        companion = np.zeros((members.size, p.shape[1] - 1, p.shape[1] - 1))
+        companion[:, 0, :] = -p[:, 1:] / p[:, :1]
+        companion[:, np.arange(1, p.shape[1] - 1), np.arange(p.shape[1] - 2)] = 1.0
+        roots = np.linalg.eigvals(companion)
+        inside = (np.imag(roots) == 0.0) & (roots.real > 0.0) & (roots.real <= 2.0 * h[members, None])
+        first = np.min(roots.real, axis=1, where=inside, initial=np.inf)
+        out[members] = np.where(inside.any(axis=1), first, out[members])
+    return out
+
+
+def _first_root(roots, h, fallback) -> float:
+    """The smallest real one of ``roots`` in (0, 2 h], else ``fallback``."""
     real = np.sort(roots[np.isreal(roots)].real)
     real = real[(real > 0.0) & (real <= 2.0 * h)]
     return real[0] if real.size else fallback
@@ -286,7 +308,7 @@ def lift_event(kinematic, lift) -> np.ndarray:
     return (index >= start) & (index < np.expand_dims(end, -1))
 
 
-def separation_mask(contact, kinematic, lift) -> np.ndarray:
+def separation_mask(contact, kinematic, lift, event=None) -> np.ndarray:
     """Follower separation (jump): no contact force, and the valve at or above the cam, while the cam's lift is
     positive during the lift event (:func:`lift_event`).
 
@@ -294,27 +316,28 @@ def separation_mask(contact, kinematic, lift) -> np.ndarray:
     that never comes down to it while the cam lifts, has jumped; a valve that rebounds from its seat after the event
     has returned it there bounces, it does not jump.  The valve must be at or above the cam's rigid lift (the
     contact's gap open): a contact whose damping releases it an instant before the gap opens has not separated.
-    ``contact`` and ``lift`` may hold a record per row (S, n).
+    ``contact`` and ``lift`` may hold a record per row (S, n); ``event``: their :func:`lift_event`, if found.
 
     >>> separation_mask(np.array([0.0, 0.0, 5.0, 0.0, 0.0]), np.array([-1e-4, 1e-3, 1e-3, 3e-6, 2e-6]),
     ...                 np.array([1e-4, 2e-3, 1e-3, -1e-7, 4e-6])).tolist()
     [False, True, False, False, False]
     """
-    return (contact <= 0.0) & (kinematic > 0.0) & (lift >= kinematic) & lift_event(kinematic, lift)
+    return (contact <= 0.0) & (kinematic > 0.0) & (lift >= kinematic) & (lift_event(kinematic, lift) if event is None
+                                                                           else event)
 
 
-def lowest_lifting_force(contact, kinematic, lift, separated) -> np.ndarray:
+def lowest_lifting_force(contact, kinematic, lift, separated, event=None) -> np.ndarray:
     """Smallest cam contact force while the cam carries the open valve [N]: 0 with a separation, else the least where
     the cam's lift is positive and the valve is off its seat during the lift event (:func:`lift_event`; after it
     the cam lowers the seated valve to its base circle and the force falls to 0 without a separation); nan if the
     valve never leaves its seat while the cam lifts.  ``contact`` and ``lift`` may hold a record per row (S, n),
-    ``separated`` one flag per row: one force per row.
+    ``separated`` one flag per row (and ``event``, :func:`lift_event`, if found): one force per row.
 
     >>> float(lowest_lifting_force(np.array([300.0, 50.0, 80.0, 2.0, 1.0]), np.array([-1e-4, 1e-3, 2e-3, 2e-6, 1e-6]),
     ...                            np.array([0.0, 1e-3, 2e-3, -1e-7, 1e-7]), False))
     50.0
     """
-    lifting = (kinematic > 0.0) & (lift > 0.0) & lift_event(kinematic, lift)
+    lifting = (kinematic > 0.0) & (lift > 0.0) & (lift_event(kinematic, lift) if event is None else event)
     least = np.min(contact, axis=-1, where=lifting, initial=np.inf)
     return np.where(separated, 0.0, np.where(lifting.any(axis=-1), least, np.nan))
 
@@ -375,14 +398,15 @@ def sweep_events(result) -> SweepEvents:
     theta, kinematic, lift = result.theta, result.kinematic_lift, result.lift
     index, angle, velocity = seatings(theta, lift, result.velocity, result.acceleration,
                                       float(theta[1] - theta[0]) / result.cam_speeds)
-    separation = separation_mask(result.contact_force, kinematic, lift)
+    event = lift_event(kinematic, lift)
+    separation = separation_mask(result.contact_force, kinematic, lift, event)
     jumped = separation.any(axis=-1)
     last = lift.shape[-1] - 1 - np.argmax(separation[:, ::-1], axis=-1)
     height, count = bounces(lift, index, result.bounce_tolerance)
     return SweepEvents(index, angle, velocity, height, count, jumped,
                        np.where(jumped, theta[np.argmax(separation, axis=-1)], np.nan),
                        np.where(jumped, theta[last], np.nan),
-                       lowest_lifting_force(result.contact_force, kinematic, lift, jumped))
+                       lowest_lifting_force(result.contact_force, kinematic, lift, jumped, event))
 
 
 def zero_crossing(speeds, values, hit) -> float:
