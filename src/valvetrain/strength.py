@@ -154,7 +154,8 @@ def hertz_line_stress(force, width, curvature_sum, modulus) -> np.ndarray:
 
 
 def _clipped(force, other):
-    """A new float array of the shape of ``force`` and ``other`` broadcast together: the force where positive, else 0."""
+    """A new float array of the shape of ``force`` and ``other`` broadcast together: the force where positive, else
+    0 [N]."""
     out = np.empty(np.broadcast_shapes(np.shape(force), np.shape(other)))
     return np.clip(force, 0.0, None, out=out)
 

@@ -772,6 +772,7 @@ def sweep_columns(d) -> dict[str, list]:
 
 
 __all__ = ["CHECK_CODES", "DynamicsParameters", "DynamicsResult", "Mode", "PerSpeed", "ResonanceRecord", "SWEEP_COLUMNS",
-           "SpeedRecord", "SpeedRecords", "build_train", "drive_links", "dynamics_checks", "dynamics_stage", "finite_or_none", "rated_contact",
+           "SpeedRecord", "SpeedRecords", "build_train", "drive_links", "dynamics_checks", "dynamics_stage",
+           "finite_or_none", "rated_contact",
            "speed_record", "speed_records", "swept_range",
            "sweep_columns"]

@@ -155,7 +155,8 @@ class _Grid:
     def of(cls, big_d, d, material):
         g, rho = material.shear_modulus, material.density
         arrays = (big_d, d, g * d**4 / (8.0 * big_d**3), *material.limits(d),
-                  8.0 * shape_factor_table(big_d / d) * big_d / (np.pi * d**3), natural_frequency(d, big_d, 1.0, g, rho))
+                  8.0 * shape_factor_table(big_d / d) * big_d / (np.pi * d**3),
+                  natural_frequency(d, big_d, 1.0, g, rho))
         for a in arrays:
             a.flags.writeable = False
         return cls(*arrays)
