@@ -202,7 +202,7 @@ void integrate_block(int B, const long *idx, const double *omegas, long ns, doub
 
 
 def spec_law():
-    """The dynamic cam of spec sections 8 and 12 (tests/dynamics/test_dynamics.py)."""
+    """The dynamic cam of spec sections 8 and 12 (tests/reference_dynamics.py)."""
     omega = 3000 * RPM
     return DynamicLaw(8e-3, np.radians(55), [2, 10, 18, 26, 34], 0.3 / omega, 15e6, 0.25, 67.5e3, 400.0, omega,
                       1.5, 0.3e-3, "constant_acceleration", 0.5)

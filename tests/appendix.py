@@ -17,3 +17,18 @@ def appendix_text():
 def appendix_spec():
     """The appendix example's specification."""
     return load_spec(PATH)
+
+
+def appendix_with(*replacements):
+    """The appendix example's text with each (old, new) replaced once; each old text must be there."""
+    text = appendix_text()
+    for old, new in replacements:
+        assert old in text, old
+        text = text.replace(old, new, 1)
+    return text
+
+
+def appendix_cam():
+    """The appendix example's [valves.intake.cam] table, as its text."""
+    text = appendix_text()
+    return text[text.index("[valves.intake.cam]"):text.index("# Drive, springs")]

@@ -1,9 +1,24 @@
-"""An independent reference for the one-mass train: scipy's DOP853 on the same equations of motion, written out here
-from the model's definition (Shang Hanji (1988), section 3.1), not from the package's kernel.  The tests and
-benchmarks/accuracy_dynamics.py use it."""
+"""The one-mass train's worked example (spec sections 2, 8 and 12) and an independent reference for it: scipy's DOP853
+on the same equations of motion, written out here from the model's definition (Shang Hanji (1988), section 3.1), not
+from the package's kernel.  The tests and benchmarks/accuracy_dynamics.py use it."""
 
 import numpy as np
 from scipy.integrate import solve_ivp
+
+from valvetrain.dynamics.models import one_mass_train
+from valvetrain.laws import DynamicLaw
+
+RPM = np.pi / 30.0
+
+
+def spec12():
+    """The worked example of spec sections 2, 8 and 12: the dynamic cam of tests/laws/test_laws_more.py (c = 15000
+    N/mm, M = 0.25 kg, K = 67.5 N/mm, F0 = 400 N, k = 1.5, x0 = 0.30 mm, designed for 3000 cam rpm) and its
+    one-mass train with zeta = 0.05."""
+    omega = 3000 * RPM
+    law = DynamicLaw(8e-3, np.radians(55), [2, 10, 18, 26, 34], 0.3 / omega, 15e6, 0.25, 67.5e3, 400.0, omega,
+                     1.5, 0.3e-3, "constant_acceleration", 0.5)
+    return law, one_mass_train(0.25, 15e6, 67.5e3, 400.0, 1.5, 0.3e-3, damping_ratio=0.05)
 
 
 def seat_crossings(law, train, omega, revolutions=1, steps_per_revolution=7200):

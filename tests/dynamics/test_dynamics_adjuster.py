@@ -10,7 +10,7 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from test_dynamics import RPM, spec12
+from reference_dynamics import RPM, spec12
 from valvetrain.design.lash_adjuster import plunger_motion
 from valvetrain.dynamics.models import Adjuster, one_mass_train
 from valvetrain.dynamics.sweep import lift_event, sweep

@@ -21,7 +21,7 @@ from valvetrain.synthesis.optimize import (Problem, Variable, default_variables,
                                            parse_variables)
 
 from appendix import appendix_text, appendix_spec
-from test_synthesis_constraints import pitch_radius_by_differences
+from synthesis.test_constraints import pitch_radius_by_differences
 
 MM, DEG = 1e-3, np.pi / 180.0
 
@@ -116,7 +116,7 @@ def test_a_short_search_on_the_article_case_is_feasible_and_fuller():
         result.optimum["cam.peak_acceleration_mm_per_rad2"], rel=1e-12)
     assert run(optimum).valves["intake"].flow.fullness == pytest.approx(result.value, rel=1e-12)
     assert len(result.history) == result.evaluations
-    # no pointed cam: the optimum's pitch curve by central differences (tests/synthesis/test_synthesis_constraints.py), less the
+    # no pointed cam: the optimum's pitch curve by central differences (tests/synthesis/test_constraints.py), less the
     # 27 mm roller, is nowhere a convex radius below 2 mm (Shang Hanji (1988), section 2.1)
     law = run(optimum).valves["intake"].law
     convex = pitch_radius_by_differences(law, 40.3 * MM - law.ramp_height, 27 * MM, law.start, 0.0, 20001) - 27 * MM
@@ -283,7 +283,7 @@ def test_fast_acceleration_margins_of_a_finger_are_the_roller_s():
     """The optimiser's fast margins of the tappet acceleration band on a finger follower use the roller centre's
     acceleration along its arc, as the design's checks: on the shipped finger (intake) 4899.75 and -2196.90 m/s2 at
     the rated speed, from psi(theta) of the linkage differentiated twice numerically (np.gradient, 200001 angles;
-    tests/synthesis/test_synthesis_constraints.py), so against a band of -3000...6000 m/s2 the margins are
+    tests/synthesis/test_constraints.py), so against a band of -3000...6000 m/s2 the margins are
     (6000 - 4899.75)/6000 = 0.18337 and (3000 - 2196.90)/3000 = 0.26770.  Before the fix they were the valve law's
     (8107 m/s2: margin -0.351), and the search judged every finger cam 1.65 x too hard."""
     spec = load_spec(EXAMPLES / "modern-dohc-roller-finger.toml")

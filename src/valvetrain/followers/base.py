@@ -63,8 +63,9 @@ Write one module in this package with a subclass of :class:`Follower` decorated 
   admits only a rolling follower.
 
 Methods return numpy arrays (floats where the argument is a scalar); none of them mutates its arguments or
-the follower, and they hold no state beyond the follower's dimensions.  ``tests/followers/test_followers.py`` checks the two
-followers against hand calculations; a new follower's tests go beside them.
+the follower, and they hold no state beyond the follower's dimensions.  Each follower's module has its tests,
+against hand calculations, in the file of its name under ``tests/followers/`` (``test_flat.py``,
+``test_roller.py``); a new follower's tests go beside them.
 """
 
 from typing import ClassVar

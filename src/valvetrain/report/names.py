@@ -10,7 +10,7 @@ renderings of their codes from the catalogue :mod:`valvetrain.locale`.
 Texts made with numbers (the notes of the checks, the cylinder-pressure model) are translated by their
 skeleton: the numbers are taken out, the Russian skeleton is looked up in the catalogue (``ru.toml`` ``[texts]``
 of :mod:`valvetrain.locale`) and the numbers put back (:func:`translate`).  A key, a value or a text without a Russian entry is shown as it is (in English):
-``tests/report/test_report_i18n.py`` finds them.
+``tests/report/test_i18n.py`` finds them.
 
 Symbols: one symbol for one quantity throughout the report and the plots: ``h`` lift, ``v`` velocity,
 ``a`` acceleration, ``j`` jerk (index ``T`` tappet side, ``v`` valve side).

@@ -12,7 +12,7 @@ from valvetrain.design import run
 from valvetrain.report import plots as report_plots
 from valvetrain.report.html import render_report
 from valvetrain.report.i18n import TEXT
-from valvetrain.report.names import label, quantity_text, value_text
+from valvetrain.report.names import label, quantity_text
 from valvetrain.specification import example_spec, load_spec
 
 from visible_text import Visible, english_words
@@ -75,16 +75,6 @@ def test_every_check_of_the_examples_has_a_russian_name(designs):
             assert text != c.quantity and not re.search(r"\b(?:the|of|at|and)\b", text), (c.code, text)
 
 
-def test_labels_and_values():
-    assert label("tappet_acceleration_m_s2", "ru") == "tappet acceleration m s2"  # no name: shown as the key
-    assert label("lift.tappet_acceleration_m_s2", "ru") == "ускорение толкателя a_T, м/с²"
-    assert label("lift.tappet_acceleration_m_s2", "en") == "tappet acceleration a_T, m/s²"
-    assert label("spring.count", "ru") == "число пружин" and label("count", "ru") == "число клапанов i"
-    assert label("crank.max_velocity_crank_deg", "ru") == "угол ПКВ наибольшей скорости поршня, град"
-    assert label("phi1_deg", "ru").endswith("град ПРВ") and label("opens_deg", "en").endswith("crank deg")
-    assert value_text("Phi1 opening", "ru") == "Φ1, подъём" and value_text("pushrod", "en") == "pushrod"
-
-
 FIGURE_TEXT = (Text,)
 
 
@@ -123,15 +113,3 @@ def test_one_symbol_for_one_quantity():
         assert "a_T" in t["acceleration"] and "j_T" in t["jerk"] and "v_T" in t["velocity"]
         assert "a_v" in t["inertia_force"] and "j_" not in t["inertia_force"] + t["required_force"]
         assert "a_T" in label("lift.tappet_acceleration_m_s2", lang)
-
-
-def test_a_kept_compiled_template_is_that_of_its_language(monkeypatch):
-    """Jinja2 applies a filter to a literal when it compiles the template (``{{ "mm" | unit }}``): the compiled
-    template kept between runs must be that of the report's language.  The reference is each report rendered from a
-    template compiled afresh (no bytecode cache), after the other language's was compiled and kept."""
-    import valvetrain.report.html as html
-
-    results = run(example_spec())
-    kept = {lang: render_report(results, {}, lang) for lang in ("en", "ru", "en")}
-    monkeypatch.setattr(html, "BYTECODE_CACHES", dict.fromkeys(TEXT))
-    assert kept == {lang: render_report(results, {}, lang) for lang in ("ru", "en")}

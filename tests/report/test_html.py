@@ -1,5 +1,6 @@
-"""Issue 24: the report is a document one signs: a title block from the optional [document] section, a table of
-contents linking every chapter, a Conclusions chapter, the long tables in an appendix, page numbers in print."""
+"""The HTML report (report/html.py).  Issue 24: the report is a document one signs: a title block from the optional
+[document] section, a table of contents linking every chapter, a Conclusions chapter, the long tables in an appendix,
+page numbers in print.  A compiled template kept between runs is that of the report's language."""
 
 import re
 import tomllib
@@ -7,6 +8,10 @@ import tomllib
 from click.testing import CliRunner
 
 from valvetrain.cli import main
+from valvetrain.design import run
+from valvetrain.report.html import render_report
+from valvetrain.report.i18n import TEXT
+from valvetrain.specification import example_spec
 
 from appendix import appendix_text
 
@@ -54,3 +59,15 @@ def test_a_too_long_document_field_is_refused(tmp_path):
     spec.write_text(appendix_text() + f'\n[document]\nauthor = "{"x" * 201}"\n', encoding="utf-8")
     result = CliRunner().invoke(main, ["validate", str(spec)])
     assert result.exit_code == 2 and "document.author" in result.output
+
+
+def test_a_kept_compiled_template_is_that_of_its_language(monkeypatch):
+    """Jinja2 applies a filter to a literal when it compiles the template (``{{ "mm" | unit }}``): the compiled
+    template kept between runs must be that of the report's language.  The reference is each report rendered from a
+    template compiled afresh (no bytecode cache), after the other language's was compiled and kept."""
+    import valvetrain.report.html as html
+
+    results = run(example_spec())
+    kept = {lang: render_report(results, {}, lang) for lang in ("en", "ru", "en")}
+    monkeypatch.setattr(html, "BYTECODE_CACHES", dict.fromkeys(TEXT))
+    assert kept == {lang: render_report(results, {}, lang) for lang in ("ru", "en")}

@@ -106,3 +106,17 @@ def test_law_against_an_independent_polynomial_evaluation(exponents):
     k = np.pi / (2.0 * law.ramp_angle)
     h0, s, c = law.ramp_height, np.sin(0.3 * np.pi / 2), np.cos(0.3 * np.pi / 2)
     assert ramp == pytest.approx([h0 * (1 - c), h0 * k * s, h0 * k**2 * c, -h0 * k**3 * s], rel=1e-14)
+
+
+def test_polynomial_generalises_polydyne():
+    """The 5-exponent polynomial law with (2, p, q, r, s) is the polydyne law (spec section 7)."""
+    a = PolynomialLaw(6.25e-3, np.radians(71), [2, 8, 14, 20, 26])
+    b = PolydyneLaw(6.25e-3, np.radians(71), 8)
+    theta = np.linspace(-1.3, 1.3, 101)
+    assert np.allclose(a.derivatives(theta), b.derivatives(theta), rtol=1e-9, atol=1e-15)
+    # seven exponents: lift, slope and five more derivatives vanish at the start
+    c = PolynomialLaw(6e-3, np.radians(65), [2, 6, 10, 14, 18, 22, 26])
+    scale = np.abs(c.derivatives(np.linspace(c.start, c.end, 721))).max(axis=1)
+    assert np.all(np.abs(c.derivatives(np.array([c.start]))[:, 0]) < 1e-10 * scale)
+    with pytest.raises(ValueError, match="each 2 or >= 3"):
+        PolynomialLaw(6e-3, 1.0, [2, 2.5, 8])

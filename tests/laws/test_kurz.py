@@ -3,9 +3,11 @@
 import numpy as np
 import pytest
 
-from valvetrain.laws.kurz import kurz_coefficients
+from valvetrain.laws.kurz import KurzLaw, kurz_coefficients
 
 from conftest import SEED000_OMEGA_EXACT, SEED000_OMEGA_TABLE
+
+DEG = np.pi / 180
 
 # Printed coefficients of the appendix of Valve-train practical works (n.d.), truncated (not rounded) to the printed
 # digits (spec/valvetrain-works-1-8.md, 4.1 and Valve-train practical works (n.d.), corrections note 10).
@@ -174,3 +176,14 @@ def test_table_p1_has_every_row():
     # spec/valvetrain-works-1-8.md, 4.3: 46 rows, 0-22 opening flank, 23-45 closing flank
     assert len(TABLE_P1) == 46
     assert [r[3] for r in TABLE_P1].count(+1) == 23
+
+
+def test_kurz_with_another_ramp_keeps_its_coefficients():
+    """(2.28)-(2.34) depend on the ramp's end velocity only (Valve-train practical works (n.d.)): a constant-velocity ramp changes Phi0 only."""
+    args = (6.25e-3, 0.25e-3, 0.02e-3 / DEG, *np.radians([27, 6, 38]))
+    a, b = KurzLaw(*args), KurzLaw(*args, ramp_kind="constant_velocity")
+    assert a.coefficients() == b.coefficients()
+    assert b.ramp_angle == pytest.approx(0.25e-3 / (0.02e-3 / DEG))
+    j = b.start + b.ramp_angle
+    d = b.derivatives(np.array([j - 1e-12, j + 1e-12]))
+    assert np.allclose(d[:3, 0], d[:3, 1], atol=1e-9)

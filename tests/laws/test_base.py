@@ -1,11 +1,12 @@
-"""Steps of the acceleration (issue 20, item 3): laws whose acceleration jumps at a segment boundary report each
-step (angle, size) from the one-sided limits of their segments; the jerk is an impulse there, and the comparison,
-the results and the plots say so instead of a finite, flat jerk."""
+"""The law base (laws/base.py).  Steps of the acceleration (issue 20, item 3): laws whose acceleration jumps at a
+segment boundary report each step (angle, size) from the one-sided limits of their segments; the jerk is an impulse
+there, and the comparison and the results say so instead of a finite, flat jerk.  The extremes of a law with such a
+step.  Several laws sampled as one batch (batch_derivatives) equal each law sampled on its own, and each member keeps
+its own closed-form values."""
 
 import json
 from pathlib import Path
 
-from matplotlib.figure import Figure
 import numpy as np
 import pytest
 
@@ -14,9 +15,13 @@ from valvetrain.design import run
 from valvetrain.export import results_json
 from valvetrain.laws.constant_acceleration import ConstantAccelerationLaw
 from valvetrain.laws.convex import TangentLaw, ThreeArcLaw
+from valvetrain.laws.base import batch_derivatives
+from valvetrain.laws.kurz import KurzLaw
 from valvetrain.laws.polydyne import PolydyneLaw
-from valvetrain.report.plots import jerk_impulses
+from valvetrain.laws.power_polynomial import PowerPolynomialLaw
 from valvetrain.specification import load_spec
+
+from laws.test_power_polynomial import LAWS, MM, article
 
 THREE_ARC = Path(__file__).parents[2] / "examples" / "dynamics-comparison" / "three-arc.toml"
 
@@ -113,14 +118,71 @@ def test_three_arc_design_reports_its_steps_and_compare_an_infinite_jerk():
     assert row["acceleration_steps"].count("m/s2 at") == 4
 
 
-def test_jerk_plot_marks_each_impulse():
-    """The jerk plot draws an arrow and a marker at each step, pointing the way the acceleration jumps."""
-    law = ThreeArcLaw(20e-3, 8e-3, np.radians(60.0), 5e-3)
-    ax = Figure().subplots()
-    theta = np.linspace(law.start, law.end, 201)
-    ax.plot(np.degrees(theta), law.jerk(theta, 100.0))
-    jerk_impulses(ax, law, 100.0)
-    arrows = [a for a in ax.texts if a.arrow_patch is not None]
-    assert len(arrows) == 4
-    assert [np.sign(a.xy[1]) for a in arrows] == [1.0, -1.0, 1.0, -1.0]
-    assert [a.xy[0] for a in arrows] == pytest.approx([np.degrees(s.angle) for s in law.acceleration_steps()])
+def test_extremes_of_a_law_with_an_acceleration_jump():
+    """A tangent cam's acceleration jumps at the flank-nose junction (continuity 1) from its largest value (flank
+    side) to its smallest (nose side) for r0 20, h 10, phi_p0 50 deg, r_r 10 mm: both are found, as the one-sided
+    limits.  Independent computation: the law sampled on 200001 angles and 1e-9 rad either side of the junction
+    (1e-8 of the values there); no sample beats the extremes, and they lie within 1e-7 of the samples'."""
+    law = TangentLaw(20e-3, 10e-3, np.radians(50), 10e-3)
+    e = law.extremes(1.0)
+    junction = -law.half_angle + law.junction
+    sides = law.derivatives(junction + np.array([-1e-9, 1e-9]))[2]
+    theta = np.concatenate([np.linspace(law.start, law.end, 200001), junction + np.array([-1e-9, 1e-9])])
+    _, v, a, _ = law.derivatives(theta)
+    assert v[theta <= 0].max() <= e.max_velocity <= v[theta <= 0].max() * (1 + 1e-7)
+    assert a.max() <= e.max_acceleration <= a.max() * (1 + 1e-7)
+    assert a.min() * (1 + 1e-7) <= e.min_acceleration <= a.min()
+    assert (e.max_acceleration, e.min_acceleration) == pytest.approx(sides, rel=1e-7)
+    # on the flank side of a junction and on the nose side (the law is symmetric: either junction)
+    assert abs(junction) <= abs(e.max_acceleration_angle) < abs(junction) + 1e-12
+    assert abs(junction) - 1e-12 < abs(e.min_acceleration_angle) < abs(junction)
+
+
+def members(n=24, seed=3):
+    """n power-polynomial cams of the 26/27 diesel with a_qd, phi_1, x_d, x_g drawn in the optimiser's box (the
+    parameters that admit no cam skipped): one batch key, pieces of different lengths and amplitudes."""
+    rng = np.random.default_rng(seed)
+    out = []
+    while len(out) < n:
+        try:
+            out.append(article(rng.uniform(60.0, 400.0), rng.uniform(8.0, 45.0), rng.uniform(0.02, 0.98),
+                               rng.uniform(0.02, 0.98)))
+        except ValueError:
+            continue
+    return out
+
+
+def sampled_both_ways(laws, seed=4):
+    """(batch, one by one) of the laws each at its own angles: a random count of random angles over and beyond the
+    event, the junctions and the nose among them."""
+    rng = np.random.default_rng(seed)
+    thetas = [np.concatenate([np.sort(rng.uniform(law.start - 0.1, law.end + 0.1, rng.integers(50, 900))),
+                              law.breakpoints, [0.0]]) for law in laws]
+    member = np.repeat(np.arange(len(laws)), [t.size for t in thetas])
+    return (batch_derivatives(laws, np.concatenate(thetas), member),
+            np.concatenate([law.derivatives(t) for law, t in zip(laws, thetas, strict=True)], axis=1))
+
+
+def test_a_batch_of_power_polynomial_cams_equals_each_cam():
+    laws = members()
+    assert len({law.batch_key() for law in laws}) == 1
+    batch, single = sampled_both_ways(laws)
+    np.testing.assert_allclose(batch, single, rtol=1e-12, atol=0.0)
+    # each member's own closed-form values: the nose lift S_max = lift + S_b with zero velocity, the ramp's end at
+    # S_b with the velocity analogue v_qb on the opening flank (the law's parameters, not its pieces)
+    d = batch_derivatives(laws, np.array([t for law in laws for t in (0.0, law.valve_opens)]),
+                          np.repeat(np.arange(len(laws)), 2))
+    np.testing.assert_allclose(d[0, ::2], 21.1 * MM, rtol=1e-12)
+    np.testing.assert_allclose(d[1, ::2], 0.0, atol=0.0)
+    np.testing.assert_allclose(d[0, 1::2], 0.8 * MM, rtol=1e-12)
+    np.testing.assert_allclose(d[1, 1::2], 6.0 * MM, rtol=1e-12)
+
+
+def test_a_batch_of_mixed_laws_samples_each_group_together():
+    """The R2 and R1 readings, other exponents and a Kurz cam (no batch of its own) in one batch."""
+    kurz = KurzLaw(6.25e-3, 0.25e-3, 0.02e-3 * 180 / np.pi, *np.deg2rad([27.0, 6.0, 38.0]), 0.625)
+    laws = [*LAWS, kurz, *members(4), LAWS[3]]
+    assert len({(type(law), law.batch_key()) for law in laws}) == 5
+    batch, single = sampled_both_ways(laws)
+    np.testing.assert_allclose(batch, single, rtol=1e-12, atol=0.0)
+    assert isinstance(laws[0], PowerPolynomialLaw)

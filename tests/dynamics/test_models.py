@@ -1,4 +1,5 @@
-"""Multi-mass (4 + N1 + N2) trains: reduction to one mass, spring surge, coil clash, layouts (spec section 12)."""
+"""The train models (valvetrain.dynamics.models): multi-mass (4 + N1 + N2) trains reduced to one mass, spring surge,
+coil clash, layouts and the parts' stiffness estimates (spec section 12)."""
 
 from dataclasses import replace
 
@@ -8,21 +9,13 @@ import pytest
 from valvetrain.dynamics.models import (CoilSpring, OneMassTrain, coil_spring_from_geometry, direct_train,
                                         natural_frequencies, pushrod_train, rocker_train)
 from valvetrain.dynamics.sweep import simulate, sweep
-from valvetrain.laws import DynamicLaw
 from valvetrain.masses import reduced_mass_at_valve
 from valvetrain.springs import natural_frequency
 
-RPM = np.pi / 30.0
+from reference_dynamics import RPM, spec12
+
 PARTS = dict(tappet_mass=0.06, pushrod_mass=0.09, rocker_inertia=6e-5, valve_mass=0.12, valve_arm=0.045,
              rocker_ratio=1.5)
-
-
-def spec8_law():
-    """The dynamic cam of spec section 8 (see tests/dynamics/test_dynamics.py)."""
-    omega = 3000 * RPM
-    law = DynamicLaw(8e-3, np.radians(55), [2, 10, 18, 26, 34], 0.3 / omega, 15e6, 0.25, 67.5e3, 400.0, omega,
-                     1.5, 0.3e-3, "constant_acceleration", 0.5)
-    return law
 
 
 def test_pushrod_masses_are_seed000_reduced_mass():
@@ -40,7 +33,7 @@ def test_rigid_links_reduce_to_one_mass():
     and the cam force equal those of the one-mass train with M = their sum, c and C = the cam link's and the same
     seat (spec section 12).  No lash: a clearance at a rigid joint would be a hard impact the one-mass train
     cannot have."""
-    law = spec8_law()
+    law, _ = spec12()
     spring = CoilSpring(67.5e3, 400.0, 0.05, coils=0)
     k2 = PARTS["rocker_ratio"] ** 2
     c = 15e6
@@ -76,7 +69,7 @@ def test_first_surge_frequency_tends_to_the_spring_formula(coils):
 def test_coil_clash_margin():
     """Slow cam: the coils share the valve lift evenly, so the closing margin of each segment is
     (closing gap - valve lift) / (N + 1); a gap below the lift makes the coils clash."""
-    law = spec8_law()
+    law, _ = spec12()
     springs = [CoilSpring(45e3, 250.0, 0.04, closing_gap=gap, coils=8) for gap in (10e-3, 6e-3)]
     trains = [pushrod_train(**PARTS, cam_stiffness=4e7, pushrod_stiffness=3e7, rocker_stiffness=3e7,
                             valve_stiffness=2e8, springs=[s, CoilSpring(22.5e3, 150.0, 0.02, coils=4)], lash=0.3e-3)
@@ -92,7 +85,7 @@ def test_coil_clash_margin():
 def test_surge_grows_at_resonance():
     """A cam harmonic on the first surge frequency (omega_c1 = 13 omega_cam, Valve-train practical works (n.d.), eq. 6.14's ratio below
     its limit of 10 is the resonant case) makes the coils swing more than off resonance (omega_c1 = 13.5)."""
-    law = spec8_law()
+    law, _ = spec12()
     spring = CoilSpring(45e3, 400.0, 0.05, coils=8, damping_ratio=0.01)
     train = rocker_train(3e-5, 0.12, 0.04, 1.5, 1e8, 3e7, 2e8, [spring], lash=0.3e-3)
     omega_c1 = natural_frequencies(train.network(), held=("valve", "rocker"))[0]

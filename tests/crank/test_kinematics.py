@@ -1,25 +1,13 @@
-"""Crank mechanism (Power units manual (n.d.)): factor tables, kinematic identities, forces, torque, multi-cylinder."""
-
-import csv
-from pathlib import Path
+"""Crank mechanism kinematics (Power units manual (n.d.)): the displacement factor tables, the kinematic identities,
+the extremes, the offset mechanism, Brix's construction and the crank angle at a piston travel."""
 
 import numpy as np
 import pytest
 
 from valvetrain import twostroke
-from valvetrain.crank import dynamics, kinematics, pressure, torque
+from valvetrain.crank import kinematics
 
-TABLES = Path(__file__).parents[1] / "data" / "seed001_factor_tables.csv"
-
-
-def _table(name):
-    with open(TABLES, newline="") as fh:
-        rows = [r for r in csv.reader(line for line in fh if not line.startswith("#"))][1:]
-    out = [(float(r[1]), float(r[2]), float(r[3]), r[4]) for r in rows if r[0] == name]
-    phi, lam, val, sign = (np.array(c) for c in zip(*out))
-    signed = np.where(sign == "-", -val, val)
-    return np.radians(phi), lam, val, signed
-
+from factor_tables import table as _table
 
 SERIES = {  # the manual's tables 1.1-1.3 tabulate the 2-term series (spec section 6)
     "1.1": lambda p, lam: (1 - np.cos(p)) + lam / 4 * (1 - np.cos(2 * p)),
@@ -44,33 +32,6 @@ def test_tables_1_1_to_1_3(name):
     if name == "1.1":
         exact = kinematics.displacement(phi, 1.0, lam)
         assert 0.003 < np.abs(exact - formula).max() < 0.004
-
-
-EXACT = {  # Tables 2.3-2.6 are meant to be exact (sin beta = lambda sin phi) with a small bias (spec section 6)
-    "2.3": ("tan_beta", 0.0047), "2.4": ("sec_beta", 0.0019), "2.5": ("radial", 0.0045), "2.6": ("tangential", 0.0017),
-}
-
-
-@pytest.mark.parametrize("name", sorted(EXACT))
-def test_tables_2_3_to_2_6(name):
-    key, tol = EXACT[name]
-    phi, lam, val, signed = _table(name)
-    exact = dynamics.force_factors(phi, lam)[key]
-    printed = signed if name == "2.5" else val
-    typo = (name == "2.6") & np.isclose(np.degrees(phi), 60) & np.isclose(lam, 0.26)
-    assert np.abs(printed - exact)[~typo].max() <= tol
-    if name == "2.3":  # systematically low: mean -0.0012 (spec section 6)
-        assert np.mean(printed - exact) == pytest.approx(-0.0012, abs=3e-4)
-    if typo.any():  # 60 deg, lambda 0.26: printed 0.978, exact 0.9816 (spec section 8)
-        assert exact[typo][0] == pytest.approx(0.9816, abs=1e-4)
-        assert abs(printed[typo][0] - exact[typo][0]) > 0.003
-
-
-def test_tangential_factor_is_velocity():
-    """sin(phi+beta)/cos(beta) = v/(omega R) exactly (virtual work, spec section 3)."""
-    phi = np.linspace(0, 2 * np.pi, 361)
-    f = dynamics.force_factors(phi, 0.3, 0.1)["tangential"]
-    assert np.allclose(f, kinematics.velocity(phi, 1.0, 0.3, 1.0, 0.1), atol=1e-14)
 
 
 @pytest.mark.parametrize("exact", [True, False])
@@ -183,74 +144,3 @@ def test_crank_angle_at_refuses_travel_outside_the_stroke():
         kinematics.crank_angle_at(0.01, 0.04, 0.25, 0.1, exact=False)
     with pytest.raises(ValueError, match="allowed 0 ... 0.08"):
         kinematics.brix_crank_angle(-1e-9, 0.04, 0.25)
-
-
-def test_force_decomposition_identities():
-    """S^2 = p^2 + N^2 and K^2 + T^2 = S^2 (the rod force splits into N with p, and into K with T)."""
-    phi = np.linspace(0, 4 * np.pi, 721)
-    f = dynamics.specific_forces(np.sin(phi) * 3e6, np.cos(3 * phi) * 1e6, phi, 0.28, 0.05)
-    assert np.allclose(f["p_S"] ** 2, f["p"] ** 2 + f["p_N"] ** 2, rtol=1e-12)
-    assert np.allclose(f["p_K"] ** 2 + f["p_T"] ** 2, f["p_S"] ** 2, rtol=1e-12)
-
-
-def _cylinder(step_deg=0.25, exact=True):
-    phi = np.radians(np.arange(0, 720, step_deg))
-    R, lam, D = 0.0385, 0.285, 0.080
-    cyc = pressure.WiebeCycle(10.0, 950.0)
-    p = pressure.wiebe_pressure(phi, cyc, D, R, lam, 4)
-    m = dynamics.reduced_masses(0.38, 0.5, 0.45, 0.275)
-    return phi, p, dynamics.cylinder_dynamics(phi, p, 0.1e6, D, R, lam, 733.0, m, exact=exact), (D, R, lam)
-
-
-def test_work_balance():
-    """Mean torque of a cylinder = W_i / (4 pi) (spec section 5); the inertia torque averages to zero."""
-    phi, p, out, (D, R, lam) = _cylinder()
-    v = pressure.cylinder_volume(phi, D, R, lam, 10.0)
-    w = pressure.indicated_work(phi, p, v)
-    assert np.mean(out["torque"]) == pytest.approx(w / (4 * np.pi), rel=1e-5)
-    inertia_torque = out["p_j"] * np.pi * D**2 / 4 * dynamics.force_factors(phi, lam)["tangential"] * R
-    assert abs(np.mean(inertia_torque)) < 1e-9 * np.abs(inertia_torque).max()
-
-
-def test_torque_by_virtual_work():
-    """Independent computation: M = F_axis ds/dphi with ds/dphi from the piston positions of the linkage
-    geometry (no rod angle formula); forces and torque agree to 0.1 % of their range (issue 4)."""
-    phi, p, out, (D, R, lam) = _cylinder(1.0)
-    L = R / lam
-    pin = lambda a: R * np.cos(a) + np.sqrt(L**2 - (R * np.sin(a)) ** 2)  # noqa: E731 distance crank axis - piston pin
-    h = 1e-6
-    ds = -(pin(phi + h) - pin(phi - h)) / (2 * h)
-    omega = 733.0
-    h2 = 1e-4  # second difference: a larger step keeps the round-off (eps x / h^2) small
-    j = -(pin(phi + h2) - 2 * pin(phi) + pin(phi - h2)) / h2**2 * omega**2
-    force = (p - 0.1e6) * np.pi * D**2 / 4 - (0.38 + 0.275 * 0.5) * j
-    m_ref = force * ds
-    assert np.abs(out["torque"] - m_ref).max() < 1e-3 * np.ptp(m_ref)
-
-
-def test_multicylinder_layouts():
-    """Spec section 5: inline 4 even at 180; cross-plane V8 even at 90; 90-deg V6 with shared pins 90/150;
-    90-deg V-twin 90/630."""
-    f4 = torque.even_firing([1, 3, 4, 2], 4)
-    assert np.degrees(f4).tolist() == [0, 540, 180, 360]
-    v8 = torque.layout_firing([1, 5, 4, 2, 6, 3, 7, 8], np.radians([0, 90, 270, 180] * 2),
-                              np.radians([0] * 4 + [90] * 4), 4)
-    assert torque.is_even(v8, 4)
-    assert np.allclose(np.diff(np.sort(np.degrees(v8))), 90)
-    v6 = torque.layout_firing([1, 4, 2, 5, 3, 6], np.radians([0, 120, 240] * 2), np.radians([0] * 3 + [90] * 3), 4)
-    assert np.diff(np.sort(np.degrees(v6))).tolist() == pytest.approx([90, 150, 90, 150, 90])
-    vt = torque.layout_firing([1, 2], [0, 0], [0, np.pi / 2], 4)
-    assert np.degrees(vt).tolist() == pytest.approx([0, 90])
-
-
-def test_total_torque_sum_and_period():
-    phi, p, out, _ = _cylinder(1.0)
-    firing = torque.even_firing([1, 3, 4, 2], 4)
-    each, total = torque.engine_torque(phi, (phi, out["torque"]), firing, 4)
-    assert np.mean(total) == pytest.approx(4 * np.mean(out["torque"]), rel=1e-12)
-    # even firing: the total repeats every 180 deg
-    assert np.allclose(total[:180], total[180:360], atol=1e-9 * np.abs(total).max())
-    # cylinder 3 fires 180 deg after cylinder 1: its curve is cylinder 1's shifted by 180 deg
-    assert np.allclose(each[2], np.roll(each[0], 180))
-    stats = torque.torque_statistics(total[:180])
-    assert stats["nonuniformity"] == pytest.approx((total.max() - total.min()) / np.mean(total))

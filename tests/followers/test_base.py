@@ -1,6 +1,6 @@
-"""The follower interface (valvetrain.followers): the registry behind the specification's ``follower`` key, the Hertz
-contact of each follower against hand calculations, the undercut and concave-contact rules, and a follower of the
-caller's own (a lever ratio) reaching the valve lift."""
+"""The follower interface (valvetrain.followers.base): the registry behind the specification's ``follower`` key, the
+Hertz contact of the interface against hand calculations, and a follower of the caller's own (a lever ratio) reaching
+the valve lift (each follower's own geometry: tests/followers/test_flat.py, test_roller.py, test_finger.py)."""
 
 import numpy as np
 import pytest
@@ -46,42 +46,6 @@ def test_hertz_stress_on_the_heel_circle_by_hand():
     assert flat == pytest.approx(0.418 * np.sqrt(1.05e18), rel=1e-12)
     assert roller == pytest.approx(0.418 * np.sqrt(3.15e18), rel=1e-12)
     assert float(flat[0]) == pytest.approx(428.3e6, rel=1e-4) and float(roller[0]) == pytest.approx(741.9e6, rel=1e-4)
-
-
-def test_a_roller_in_a_concave_stretch_is_internal_hertz_contact():
-    """A roller of 10 mm in a hollow of 30 mm: the relative radius of internal contact is R1 R2 / (R1 - R2) =
-    30 x 10 / 20 = 15 mm (Hertz), the stress of a flat face on a 15 mm convex radius; a hollow narrower than the
-    roller gives no line contact (zero) and is no concave stretch it follows."""
-    roller = RollerFollower(0.010)
-    assert roller.contact_stress(800.0, -0.030, 0.012, E) == pytest.approx(FLAT.contact_stress(800.0, 0.015, 0.012, E),
-                                                                         rel=1e-12)
-    assert roller.contact_stress(800.0, -0.005, 0.012, E) == 0.0
-    assert roller.concave(np.array([-0.030, -0.005, 0.02])).tolist() == [True, False, False]
-    assert FLAT.concave(np.array([-0.030, 0.02])).tolist() == [False, False]
-
-
-def test_undercut_rules():
-    """Flat: undercut at rho_min <= 0; roller: where the pitch curve's radius rho_min + R_r is positive but at most
-    the roller's (Shang Hanji (1988), section 2.1)."""
-    assert FLAT.undercut(0.0) and FLAT.undercut(-1e-3) and not FLAT.undercut(1e-3)
-    roller = RollerFollower(0.010)
-    assert roller.undercut(-0.002) and roller.undercut(0.0) and not roller.undercut(0.001)
-
-
-def test_the_roller_pitch_curve_radius_against_its_sampled_points():
-    """The pitch curve's radius of curvature against the curvature of its points, by second differences."""
-    law = seed000_law()
-    roller = RollerFollower(0.012)
-    theta = np.linspace(-0.5, -0.2, 2001)
-    h, dh, d2h, _ = law.derivatives(theta)
-    points, _, rho, _, depth = roller.pitch_curve(theta, 0.01975, h, dh, d2h)
-    x, y = points
-    dx, dy = np.gradient(x, theta), np.gradient(y, theta)
-    ddx, ddy = np.gradient(dx, theta), np.gradient(dy, theta)
-    numeric = (dx**2 + dy**2) ** 1.5 / (dx * ddy - dy * ddx)
-    inner = slice(2, -2)
-    assert depth == -0.012
-    assert np.allclose(np.abs(numeric[inner]), np.abs(rho[inner]), rtol=1e-5)
 
 
 class _Lever(FlatFollower):

@@ -1,20 +1,30 @@
-"""Issue 24: the contour drawing, the curvature plot and the timing diagram of the appendix example (the appendix of
-Valve-train practical works (n.d.): intake opens 26 deg before the TDC and closes 78 deg after the BDC, Phi = 27 + 6
-+ 38 = 71 cam deg from the end of the ramp to the nose)."""
+"""The report's figures (report/plots.py).  Issue 24: the contour drawing, the curvature plot and the timing diagram
+of the appendix example (the appendix of Valve-train practical works (n.d.): intake opens 26 deg before the TDC and
+closes 78 deg after the BDC, Phi = 27 + 6 + 38 = 71 cam deg from the end of the ramp to the nose).  The jerk plot's
+impulses.  The dynamics, grinding and hydraulic-actuation figures are their data and their drawing: the data are plain
+numbers and arrays, the same as results.json's, and the drawing takes them alone."""
 
 import itertools
+from pathlib import Path
 import re
 
 from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.figure import Figure
 from matplotlib.text import Text
 import numpy as np
 import pytest
 
 from valvetrain.design import run
+from valvetrain.laws.convex import ThreeArcLaw
 from valvetrain.report import plots
 from valvetrain.report.i18n import TEXT
+from valvetrain.report.plots import jerk_impulses
+from valvetrain.specification import load_spec
 
 from appendix import appendix_spec
+from conftest import plain
+
+EXAMPLES = Path(__file__).parents[2] / "examples"
 
 
 @pytest.fixture(scope="module")
@@ -145,3 +155,57 @@ def test_a_drawer_draws_the_figures_it_claims(results):
     plots.write_plots(results, even, figures="all", claim=itertools.count(0, 2).__next__)
     assert not set(odd) & set(even)
     assert sorted([*odd, *even]) == sorted(order)
+
+
+def test_jerk_plot_marks_each_impulse():
+    """The jerk plot draws an arrow and a marker at each step, pointing the way the acceleration jumps."""
+    law = ThreeArcLaw(20e-3, 8e-3, np.radians(60.0), 5e-3)
+    ax = Figure().subplots()
+    theta = np.linspace(law.start, law.end, 201)
+    ax.plot(np.degrees(theta), law.jerk(theta, 100.0))
+    jerk_impulses(ax, law, 100.0)
+    arrows = [a for a in ax.texts if a.arrow_patch is not None]
+    assert len(arrows) == 4
+    assert [np.sign(a.xy[1]) for a in arrows] == [1.0, -1.0, 1.0, -1.0]
+    assert [a.xy[0] for a in arrows] == pytest.approx([np.degrees(s.angle) for s in law.acceleration_steps()])
+
+
+def _drawn(data, draw):
+    assert plain(data), draw.__name__
+    assert isinstance(draw(data, TEXT["en"]), Figure)
+
+
+@pytest.fixture(scope="module")
+def designs():
+    return {name: run(load_spec(EXAMPLES / name)) for name in
+            ("pushrod-dynamics.toml", "seed000-polydyne.toml", "marine-hydraulic-exhaust.toml")}
+
+
+def test_dynamics_figures(designs):
+    v = designs["pushrod-dynamics.toml"].valves["intake"]
+    record = v.summary["dynamics"]
+    speed = plots.dynamics_speed_data(v.name, v.dynamics)
+    _drawn(speed, plots.draw_dynamics_speed)
+    _drawn(plots.dynamics_map_data(v.name, v.dynamics), plots.draw_dynamics_map)
+    # the marked speeds are results.json's (a speed not reached is null there and no mark here)
+    assert [speed["jump_rpm"], speed["bounce_rpm"]] == pytest.approx(
+        [record["jump_speed_rpm"], record["bounce_speed_rpm"]], rel=1e-12, nan_ok=True)
+    assert speed["rpm"] == pytest.approx(record["per_speed"]["speed_rpm"], rel=1e-12)
+
+
+def test_grinding_figure(designs):
+    v = designs["seed000-polydyne.toml"].valves["intake"]
+    data = plots.grinding_data(v)
+    _drawn(data, plots.draw_grinding)
+    assert data["wheel_wear_mm"] == pytest.approx(v.summary["grinding"]["wheel_wear_mm"], rel=1e-12)
+
+
+def test_hydraulic_figures(designs):
+    v = designs["marine-hydraulic-exhaust.toml"].valves["exhaust"]
+    record = v.summary["hydraulic"]
+    data = plots.hydraulic_data(v)
+    _drawn(data, plots.draw_hydraulic)
+    sweep = plots.hydraulic_sweep_data(v)
+    _drawn(sweep, plots.draw_hydraulic_sweep)
+    assert data["stop_mm"] == pytest.approx(record["stop_mm"], rel=1e-12)
+    assert sweep["simulated_rpm"] == pytest.approx(record["speed_rpm"], rel=1e-12)

@@ -1,0 +1,292 @@
+"""Simulating the valve train over speeds (valvetrain.dynamics.sweep): the one-mass train against closed forms (the
+quasi-static limit, a free vibration, the energy balance), its jumps, the sweep table of spec section 12, the
+headline numbers, the seating and the events."""
+
+from dataclasses import replace
+from types import SimpleNamespace
+
+import numpy as np
+import pytest
+
+from valvetrain.dynamics.models import one_mass_train
+from valvetrain.dynamics.perturbation import kinetostatic_force, perturbation_parameter, quasi_static_lift
+from valvetrain.dynamics.sweep import headline_sweep, runs, seating, simulate, sweep
+from valvetrain.laws import KurzLaw
+
+from reference_dynamics import RPM, seat_crossings, spec12
+
+
+def test_quasi_static_limit():
+    """Stiff, slow limit (spec section 12 check): at 10 cam rpm (epsilon = 1.8e-8) the valve follows
+    G = (c (k h - x0) - F0)/(c + K), the rigid lift less the static deflection, within 0.01 um away from the
+    opening and closing transients."""
+    law, train = spec12()
+    r = simulate(law, train, 10 * RPM, revolutions=1)
+    g = quasi_static_lift(law.derivatives(r.theta)[:1], train)[0]
+    inner = np.abs(r.theta) < np.radians(45)
+    assert np.abs(r.lift - g)[inner].max() < 1e-8
+    # the static deflection itself is far above the tolerance: the test sees it
+    assert np.abs(r.lift - r.kinematic_lift)[inner].min() > 1e-5
+
+
+def test_free_vibration_frequency_and_decay():
+    """A mass on a damped spring released from rest: y = A e^(-zeta wn t)(cos wd t + zeta/sqrt(1 - zeta^2)
+    sin wd t) about its equilibrium (analytic solution), wn = sqrt(K/M), wd = wn sqrt(1 - zeta^2)."""
+    _, train = spec12()
+    net = train.network()
+    m, k, zeta, y_eq, amp = net.mass[0], 67.5e3, 0.03, 2e-3, 1e-3
+    spring = net.elements.index("spring at valve")
+    damping = net.damping.copy()
+    damping[spring] = 2 * zeta * np.sqrt(k * m)
+    gap = net.gap.copy()
+    gap[net.cam_element] = 1.0                        # the cam never reaches the valve
+    free = replace(net, damping=damping, gap=gap, preload=np.where(np.arange(3) == spring, -k * y_eq, 0.0),
+                   x_init=np.array([y_eq + amp]))
+    omega = 50 * RPM
+    r = sweep(KurzLaw(6.25e-3, 0.25e-3, 1.146e-3, *np.radians([27.0, 6.0, 38.0])),
+              SimpleNamespace(network=lambda: free), [omega], revolutions=1)
+    t = (r.theta + np.pi) / omega
+    wn = np.sqrt(k / m)
+    wd = wn * np.sqrt(1 - zeta**2)
+    exact = y_eq + amp * np.exp(-zeta * wn * t) * (np.cos(wd * t) + zeta / np.sqrt(1 - zeta**2) * np.sin(wd * t))
+    assert np.abs(r.lift[0] - exact).max() < 1e-6 * amp
+    assert r.lift[0].max() > y_eq + 0.9 * amp and r.lift[0][-100:].max() < y_eq + 0.01 * amp
+
+
+def test_energy_balance_without_damping():
+    """Without damping every element is conservative, so the train's energy (kinetic, spring F0 y + K y^2/2,
+    drive c delta^2/2, seat c_s y^2/2) changes by the work of the cam, the integral of F du (first law)."""
+    law, train = spec12()
+    train = replace(train, damping=0.0, seat_damping=0.0)
+    omega = 1500 * RPM
+    r = sweep(law, train, [omega], revolutions=1)
+    y, v, f = r.lift[0], r.velocity[0], r.contact_force[0] / train.rocker_ratio
+    u = train.rocker_ratio * law.lift(r.theta)
+    delta = np.maximum(u - train.lash - y, 0.0)
+    energy = (0.5 * train.mass * v**2 + train.preload * y + 0.5 * train.spring_rate * y**2
+              + 0.5 * train.stiffness * delta**2 + 0.5 * train.seat_stiffness * np.minimum(y, 0.0) ** 2)
+    work = np.concatenate([[0.0], np.cumsum(0.5 * (f[1:] + f[:-1]) * np.diff(u))])
+    swing = np.ptp(energy)
+    assert swing > 1.0                                   # the valve opens: joules go in and come back
+    assert np.abs(energy - energy[0] - work).max() < 1e-4 * swing
+
+
+def test_known_jump_case():
+    """Spec section 12 at 3600 cam rpm: the kinetostatic force goes negative on the nose, so the follower must
+    separate there; at 1500 rpm it stays positive (its minimum is F0 at the opening) and nothing separates."""
+    law, train = spec12()
+    theta = np.concatenate([[law.valve_opens + 1e-7], np.radians(np.linspace(-80, 80, 3201))])
+    slow, fast = (kinetostatic_force(law, train, theta, n * RPM) for n in (1500, 3600))
+    assert slow[0] == pytest.approx(400.0, abs=0.5) and np.nanmin(slow) > 399.5 and np.nanmin(fast) < -100.0
+    negative = theta[fast < 0]
+    r = sweep(law, train, np.array([1500, 3600]) * RPM)
+    assert r.speed(0).jump_intervals.size == 0
+    (start, end), = r.speed(1).jump_intervals
+    assert start < negative.min() and end > negative.max()
+
+
+def test_spec12_sweep_table():
+    """Spec section 12, speed sweep of the section 8 cam (single event from rest, as the reference ran it).
+
+    Reproduced: epsilon (to the printed digits); no jump at 1500 rpm; a dynamic jump at 3000 rpm on the opening
+    flank (the table: -36...-18 deg; here -32...-11 deg) although the kinetostatic force is positive; the
+    float at 3600 and 4500 rpm starting near -37/-38 deg; seating velocity at 1500-3000 rpm near the design
+    -0.3 m/s; no bounce at 3000 rpm; millimetre bounces once the valve floats.  Not reproduced exactly: the
+    spec's reference train is not fully given (K and the seat are not stated; K = 67.5 N/mm of
+    tests/laws/test_laws_more.py gives a kinetostatic minimum of 143 N at 3000 rpm against the table's 163 N), so
+    the angles and the float-regime velocities differ by a few degrees and tens of per cent."""
+    law, train = spec12()
+    rpm = np.array([1500, 3000, 3600, 4500])
+    eps = perturbation_parameter(train.mass, train.stiffness, train.spring_rate, rpm * RPM)
+    # the printed digits; 4500 rpm gives 0.003685 against the printed 0.00369 (the reference's K was 24-65 N/mm)
+    assert eps == pytest.approx([0.00041, 0.00164, 0.00236, 0.00369], abs=6e-6)
+    r = sweep(law, train, rpm * RPM, revolutions=1).per_speed()
+    assert r[0].jump_intervals.size == 0
+    assert r[1].jump_intervals.size and all(-40 < a < b < -10 for a, b in np.degrees(r[1].jump_intervals))
+    for row, start in ((r[2], -37.3), (r[3], -38.4)):
+        assert np.degrees(row.jump_intervals[0, 0]) == pytest.approx(start, abs=5.0)
+        assert np.degrees(row.jump_intervals[-1, 1]) > 45
+    assert -0.30 < r[0].seating_velocity < -0.2 and r[1].seating_velocity == pytest.approx(-0.295, abs=0.015)
+    assert r[0].bounce_height < 10e-6 and r[1].bounce_count == 0 and r[1].bounce_height < 1e-6
+    assert r[2].seating_velocity < -4 and r[3].seating_velocity < -8
+    assert 1e-3 < r[2].bounce_height < 3.5e-3 and 1e-3 < r[3].bounce_height < 3.5e-3
+
+
+def test_sweep_progress_and_blocks():
+    """The progress hook counts up to every speed; the blocking and the threads do not change the results (speeds are
+    independent: each speed alone gives the same lift to the bit)."""
+    law, train = spec12()
+    calls = []
+    speeds = np.linspace(1000, 3000, 20) * RPM
+    a = sweep(law, train, speeds, revolutions=1, progress=lambda done, total: calls.append((done, total)))
+    assert calls[-1] == (20, 20) and all(x[0] < y[0] for x, y in zip(calls, calls[1:]))
+    for i in (0, 7, 19):
+        assert np.array_equal(a.lift[i], sweep(law, train, speeds[i:i + 1], revolutions=1).lift[0])
+
+
+def test_headline_numbers():
+    """Jump speed and bounce onset are the lowest speeds showing them; the largest seating velocity is the
+    largest |dy/dt| at seating among the speeds."""
+    law, train = spec12()
+    speeds = np.array([1500, 3000, 3600, 4500]) * RPM
+    r = sweep(law, train, speeds, revolutions=1)
+    head = r.headline()
+    per = r.per_speed()
+    assert head["jump_speed"] == speeds[1]
+    assert head["bounce_onset_speed"] == speeds[0]
+    assert head["max_seating_velocity"] == pytest.approx(max(abs(p.seating_velocity) for p in per))
+    assert np.isnan(head["coil_clash_speed"])
+
+
+def test_torque_is_force_times_slope():
+    """Camshaft torque from the power balance F v_tappet = T omega: T = F dh/dtheta; over a revolution the
+    undamped train returns the energy, so the mean torque is small against its peak."""
+    law, train = spec12()
+    r = simulate(law, train, 1500 * RPM)
+    slope = law.derivatives(r.theta)[1]
+    assert np.allclose(r.torque, r.contact_force * slope)
+    assert abs(r.torque.mean()) < 0.05 * np.abs(r.torque).max()
+
+
+def test_runs():
+    """Runs of a mask: none, one at each end, the whole array."""
+    assert runs(np.zeros(4, dtype=bool)).shape == (0, 2)
+    assert runs(np.array([1, 0, 0, 1], dtype=bool)).tolist() == [[0, 1], [3, 4]]
+    assert runs(np.ones(3, dtype=bool)).tolist() == [[0, 3]]
+
+
+def harmonic_cam(lift, half_angle):
+    """A harmonic (1 - cos) cam: h = L/2 (1 + cos(pi theta / phi)) for |theta| < phi, 0 on the base circle."""
+    def derivatives(theta):
+        on = np.abs(theta) < half_angle
+        w = np.pi / half_angle
+        return np.array([np.where(on, 0.5 * lift * (1 + np.cos(w * theta)), 0.0),
+                         np.where(on, -0.5 * lift * w * np.sin(w * theta), 0.0),
+                         np.where(on, -0.5 * lift * w * w * np.cos(w * theta), 0.0)])
+    return SimpleNamespace(derivatives=derivatives)
+
+
+def test_jump_speed_of_a_harmonic_cam_closed_form():
+    """A flat follower on a harmonic cam with a stiff drive (c = 3e8 N/m, zeta = 0.1) and an undamped seat.
+
+    Closed form (rigid drive): the contact force is F = F0 + K h + M h'' omega^2, with h = L/2 (1 + cos x),
+    h'' = -L/2 (pi/phi)^2 cos x.  Its least value is at the nose (x = 0) once M omega^2 (pi/phi)^2 > K:
+    F_min = F0 + K L - M omega^2 L/2 (pi/phi)^2, zero at omega_j = sqrt(2 (F0 + K L) / (M L (pi/phi)^2)).
+    With L = 8 mm, phi = 1 rad, M = 0.2 kg, K = 50 N/mm, F0 = 300 N: omega_j = sqrt(1400 / 0.01579) = 297.8 rad/s.
+    The drive's compliance shifts it by about (omega / omega_n)^2 = 6e-5 (omega_n = sqrt(c / M) = 38700 rad/s); the
+    vibration the acceleration steps of the cam excite at its start has decayed by exp(-zeta omega_n phi / omega)
+    = 2e-6 at the nose.  The sweep's speeds are 0.5 % apart; the jump speed must be within 0.1 % (the first speed
+    with a separation alone is up to 0.5 % off)."""
+    lift, phi, mass, rate, preload = 8e-3, 1.0, 0.2, 50e3, 300.0
+    exact = np.sqrt(2 * (preload + rate * lift) / (mass * lift * (np.pi / phi) ** 2))
+    train = one_mass_train(mass, 3e8, rate, preload, damping_ratio=0.1, seat_damping_ratio=0.0)
+    speeds = np.linspace(0.8, 1.2, 81) * exact * 1.0013           # the grid does not fall on the exact speed
+    r = sweep(harmonic_cam(lift, phi), train, speeds)
+    jump = r.headline()["jump_speed"]
+    assert abs(jump / exact - 1) < 1e-3
+    first = speeds[[s.jump_intervals.size > 0 for s in r.per_speed()]][0]
+    assert abs(first / exact - 1) > 1e-3                            # the grid alone misses it: the test can fail
+    below = r.speed(int(np.searchsorted(speeds, 0.99 * exact)) - 1)
+    assert below.jump_intervals.size == 0 and below.min_contact_force > 0.0   # undamped seat: a bounce, no jump
+
+
+def test_the_events_of_a_sweep_at_once_are_each_speeds_own():
+    """SweepResult.events finds every speed's events over the speeds at once (numpy over the rows, as the design's
+    per-speed table reads them): the same numbers, bit for bit, as speed_result's of each speed alone (the record
+    of one speed, SweepResult.speed), over speeds that separate, bounce on an undamped seat and neither (the harmonic
+    cam above, 0.6-1.2 x its jump speed)."""
+    lift, phi, mass, rate, preload = 8e-3, 1.0, 0.2, 50e3, 300.0
+    exact = np.sqrt(2 * (preload + rate * lift) / (mass * lift * (np.pi / phi) ** 2))
+    train = one_mass_train(mass, 3e8, rate, preload, damping_ratio=0.1, seat_damping_ratio=0.0)
+    r = sweep(harmonic_cam(lift, phi), train, np.linspace(0.6, 1.2, 25) * exact)
+    each = r.per_speed()
+    e = r.events
+    assert e.jumped.any() and not e.jumped.all() and (e.bounce_count > 0).any() and np.isfinite(e.seating_angle).all()
+    pairs = {"seating_angle": [s.seating_angle for s in each], "seating_velocity": [s.seating_velocity for s in each],
+             "bounce_height": [s.bounce_height for s in each], "bounce_count": [s.bounce_count for s in each],
+             "min_contact_force": [s.min_contact_force for s in each],
+             "jumped": [s.jump_intervals.size > 0 for s in each],
+             "jump_from": [s.jump_intervals[0, 0] if s.jump_intervals.size else np.nan for s in each],
+             "jump_to": [s.jump_intervals[-1, 1] if s.jump_intervals.size else np.nan for s in each]}
+    for name, expected in pairs.items():
+        np.testing.assert_array_equal(getattr(e, name), expected, err_msg=name)
+
+
+def test_headline_sweep_has_the_full_sweeps_headlines():
+    """The speeds a tolerance study simulates (headline_sweep, every 10th speed then the speeds about the events) give
+    the jump speed of the harmonic cam above: within 0.1 % of the closed form omega_j = 297.8 rad/s, and equal to the
+    full sweep's, whose interpolation it reproduces; the largest seating velocity, and the largest cam force inside a
+    load range that stops below the jump between two coarse speeds, equal the full sweep's; with under half of its
+    speeds simulated."""
+    lift, phi, mass, rate, preload = 8e-3, 1.0, 0.2, 50e3, 300.0
+    exact = np.sqrt(2 * (preload + rate * lift) / (mass * lift * (np.pi / phi) ** 2))
+    train = one_mass_train(mass, 3e8, rate, preload, damping_ratio=0.1, seat_damping_ratio=0.0)
+    speeds = np.linspace(0.5, 1.2, 141) * exact * 1.0013
+    load_range = (speeds[0], 0.9 * exact)
+    full = sweep(harmonic_cam(lift, phi), train, speeds)
+    part = headline_sweep(harmonic_cam(lift, phi), train, speeds, load_range=load_range)
+    assert part.cam_speeds.size < speeds.size / 2 and np.all(np.diff(part.cam_speeds) > 0)
+    head, expected = part.headline(), full.headline()
+    assert abs(head["jump_speed"] / exact - 1) < 1e-3
+    assert head["jump_speed"] == expected["jump_speed"]
+    assert head["max_seating_velocity"] == expected["max_seating_velocity"]
+
+    def largest_force(r):
+        inside = (r.cam_speeds >= load_range[0]) & (r.cam_speeds <= load_range[1])
+        return r.contact_force[inside].max()
+
+    assert largest_force(part) == largest_force(full)
+    top = np.flatnonzero(speeds <= load_range[1])[-1]
+    assert top % 10 != 0 and speeds[top] in part.cam_speeds        # the range's last speed, not a coarse one
+
+
+def test_seating_velocity_against_a_second_integrator():
+    """At the default 0.1 cam deg the seating velocity is within 1 % of scipy's DOP853 (rtol 1e-10, largest step 0.05
+    cam deg) at every speed; interpolating between the sample above the seat and the one inside it (the former
+    method) is several per cent off at some of them."""
+    law, train = spec12()
+    worst_linear = 0.0
+    for rpm in (1000, 3000):
+        omega = rpm * RPM
+        r = sweep(law, train, [omega], revolutions=1)
+        s = r.speed(0)
+        times, states = seat_crossings(law, train, omega)       # 0.05 cam deg largest step
+        exact = states[np.argmin(np.abs(times * omega - np.pi - s.seating_angle)), 1]
+        assert exact < -0.1
+        assert abs(s.seating_velocity / exact - 1) < 0.01
+        linear = seating(r.theta, r.lift[0], r.velocity[0])[2]
+        worst_linear = max(worst_linear, abs(linear / exact - 1))
+    assert worst_linear > 0.01
+
+
+def test_a_follower_that_never_touches_the_lifting_cam_has_jumped():
+    """A valve hopping on an undamped seat, 25 mm high, with no spring rate and a 15.4 N preload on 0.1 kg (154 m/s^2
+    down): it lands first at t1 = sqrt(2 h / a) = 18 ms, before the cam's lift begins (about 22 ms at 100 rad/s),
+    and is in its second flight, far above the cam's 12 mm, until after the cam's lift ends.  The cam never touches
+    it while it lifts: a jump, although the valve's first seating after its largest lift (the start) came before the
+    cam's lift (hand calculation of the free flight; the former definition, separation only before that seating,
+    missed it)."""
+    law, _ = spec12()
+    train = one_mass_train(0.1, 15e6, 0.0, 15.4, 1.5, 0.3e-3, seat_damping_ratio=0.0)
+    net = replace(train.network(), x_init=np.array([0.025]))
+    omega = 100.0
+    r = sweep(law, SimpleNamespace(network=lambda: net), [omega], revolutions=1, tolerance=-1.0).speed(0)
+    lifting = r.kinematic_lift > 0.0
+    assert lifting.any() and np.all(r.contact_force[lifting] == 0.0)
+    assert np.all(r.lift[lifting] > r.kinematic_lift[lifting])
+    first_seat = seating(r.theta, r.lift, r.velocity)[0]
+    assert first_seat < np.flatnonzero(lifting)[0]
+    assert r.jump_intervals.size and r.min_contact_force == 0.0
+
+
+def test_bounce_onset_does_not_move_with_the_step():
+    """The bounce onset speed is where the bounce height, continuous in the speed, crosses 1 um; the seat's closing is
+    located inside the step, so the height converges with the step and halving the step moves the onset by much
+    less than the 40 cam rpm between the speeds of the sweep (the first speed with a counted bounce moves by whole
+    speed steps).  Reference: the same sweep at half the step, 0.05 cam deg."""
+    law, train = spec12()
+    speeds = np.linspace(600, 1600, 26) * RPM
+    coarse, fine = (sweep(law, train, speeds, revolutions=2, step_deg=step).headline()["bounce_onset_speed"]
+                    for step in (0.1, 0.05))
+    assert np.isfinite(coarse) and speeds[0] < coarse < speeds[-1]
+    assert abs(coarse - fine) < 0.1 * (speeds[1] - speeds[0])

@@ -1,0 +1,61 @@
+"""Reading a specification (specification/reading.py): TOML text, a parsed document or a file; what cannot be read
+or parsed is refused with the file or key it concerns."""
+
+from click.testing import CliRunner
+import pytest
+
+from valvetrain.cli import main
+from valvetrain.specification import example_text
+
+from appendix import appendix_text, appendix_with
+
+
+def test_a_utf8_bom_is_accepted(tmp_path):
+    f = tmp_path / "bom.toml"
+    f.write_bytes(b"\xef\xbb\xbf" + appendix_text().encode("utf-8"))
+    result = CliRunner().invoke(main, ["validate", str(f)])
+    assert result.exit_code == 0, result.output
+
+
+def test_deeply_nested_arrays_are_refused(refused):
+    deep = "[" * 5000 + "]" * 5000
+    assert "nested too deeply" in refused(appendix_with(("contour_points = 721", f"contour_points = 721\nx = {deep}")))
+
+
+def test_a_huge_specification_is_refused_before_parsing(refused):
+    """A fuzz case: 100,000 tables of deeply nested arrays (83 MB) kept tomllib busy for over a minute."""
+    filler = "\n".join(f"[extra{i}]\nx = [[[1]]]" for i in range(60_000))
+    out = refused(appendix_with(("contour_points = 721", f"contour_points = 721\n{filler}")))
+    assert "allowed at most 1,000,000" in out
+
+
+def test_a_file_reading_error_names_the_file_as_its_path(tmp_path):
+    """The problem of a file that cannot be read or parsed carries the file name as its key path (records of the
+    JSON entry point); the refactoring to structured problems had left it empty.  The printed line is the one
+    written by hand here."""
+    from valvetrain.api import error_records
+    from valvetrain.specification import SpecError, load_spec
+
+    missing, latin, broken = tmp_path / "missing.toml", tmp_path / "latin.toml", tmp_path / "broken.toml"
+    latin.write_bytes("# \xe9\n".encode("latin-1"))
+    broken.write_text("[engine\n", encoding="utf-8")
+    for path, line in [(missing, f"{missing}: cannot read the file: No such file or directory"),
+                       (latin, f"{latin}: cannot read the file: not UTF-8 text (invalid continuation byte)"),
+                       (broken, None)]:
+        with pytest.raises(SpecError) as err:
+            load_spec(path)
+        (record,) = error_records(err.value)
+        assert record["path"] == str(path) and record["value"] is None
+        assert record["text"] == (line or f"{broken}: {record['message']}")
+    assert record["message"].startswith("not valid TOML: ")
+
+
+def test_parse_spec_takes_a_parsed_document():
+    """parse_spec of the example's tables (as tomllib gives them) is the example; something else is a SpecError."""
+    import tomllib
+
+    import valvetrain as vt
+
+    assert vt.parse_spec(tomllib.loads(example_text())) == vt.example_spec()
+    with pytest.raises(vt.SpecError, match="TOML text or a dict of its tables, not a list"):
+        vt.parse_spec([1, 2])

@@ -1,0 +1,107 @@
+"""The designer's page (web/app.py) without a browser: its handlers on a Bokeh document, the check table's colours, the
+sweeps it starts, and `valvetrain serve` refusing a specification that does not validate."""
+
+import re
+import tomllib
+
+import numpy as np
+import pytest
+
+pytest.importorskip("bokeh")
+
+from bokeh.document import Document  # noqa: E402
+
+from valvetrain.web.app import SEVERITY_COLOURS, Designer  # noqa: E402
+from valvetrain.web.session import Session, form  # noqa: E402
+
+from appendix import appendix_text  # noqa: E402
+
+
+def _colour(designer, quantity):
+    data = designer.checks.data
+    return data["colour"][data["key"].index(quantity)]
+
+
+def test_page_callbacks():
+    doc = Document()
+    d = Designer(doc, Session.start(appendix_text()))
+    quantity = "intake: V' (throat velocity)"
+    # the appendix example: V' = 85.07 m/s at 7000 rpm, above 80; 72.9 m/s at 6000 rpm (c_p S n / 30 scaled by 6/7)
+    assert _colour(d, quantity) != SEVERITY_COLOURS["pass"]
+    f = next(f for _, group in form(d.session.document) for f in group if f.path == "engine.rated_speed_rpm")
+    d.on_field(f, "value", 7000, 6000)
+    assert _colour(d, quantity) == SEVERITY_COLOURS["pass"]
+    d.on_pin()
+    assert d.checks.data["baseline"][d.checks.data["key"].index(quantity)].startswith("72.9")
+    bore = next(f for _, group in form(d.session.document) for f in group if f.path == "engine.bore_mm")
+    d.on_field(bore, "value", 80, 3)
+    assert d.errors["engine.bore_mm"].text == "allowed [5, 2000] mm"
+    assert _colour(d, quantity) == SEVERITY_COLOURS["pass"]       # the last good design stays
+    d.on_field(bore, "value", 3, 80)
+    assert d.errors["engine.bore_mm"].text == ""
+    lift = dict(d.handles["lift"].data)
+    d.on_handles("lift", "data", lift, {**lift, "y": [10.5]})
+    assert d.session.document["valves"]["intake"]["max_lift_mm"] == 10.5
+    assert d.fields["valves.intake.max_lift_mm"].value == 10.5
+    d.on_language("value", "en", "ru")
+    assert d.check_columns[0].title == "Величина"
+    d.on_units("value", "rated", "deg")
+    # per cam degree: the velocity is the slope of the valve lift in mm/deg; central differences of the lift series
+    # (0.5 cam deg apart) agree to 1 % of the peak where the valve is off its seat
+    angle = d.sources["angle"].data
+    x, v, lift = (np.array(angle[k]) for k in ("x", "velocity", "lift"))
+    slope = np.gradient(lift, x)
+    off = lift > 0.5
+    assert np.max(np.abs(v[off] - slope[off])) < 0.01 * np.max(np.abs(slope))
+    d.on_report()
+    assert d.report_text.text.startswith("<!DOCTYPE html>") and 'lang="ru"' in d.report_text.text
+    # the figures of `valvetrain run --figures main` (README: the cam contour among them) embedded, drawn in memory
+    assert re.search(r'<img src="data:image/png;base64,[^"]+" alt="профиль кулачка">', d.report_text.text)
+    d.on_toml()
+    assert tomllib.loads(d.toml_text.text)["valves"]["intake"]["max_lift_mm"] == 10.5
+
+
+def test_serve_refuses_a_specification_that_does_not_validate(refused):
+    from valvetrain.specification import example_text
+
+    text = example_text().replace("bore_mm = 80.0", "bore_mm = 3.0")
+    assert "error: engine.bore_mm = 3.0: allowed [5, 2000] mm" in refused(text, "serve")
+
+
+def test_sweep_starts_when_the_page_has_drawn_the_newest_kinematics():
+    d = Designer(Document(), Session.start())
+    started = []
+    d.start_sweep = lambda: started.append(d.kinematic_stamp.data["n"][0])
+    d.redraw()
+    newest = d.kinematic_stamp.data["n"][0]
+    d.on_drawn("data", None, {"n": [newest - 1]})         # an older redraw drawn: its sweep would be stale
+    assert started == []
+    d.on_drawn("data", None, {"n": [newest]})
+    d.on_drawn("data", None, {"n": [newest]})             # once per redraw
+    assert started == [newest]
+    d.redraw(sweep=False)                                 # a language or unit switch: no new sweep
+    d.on_drawn("data", None, {"n": [newest + 1]})
+    assert started == [newest]
+
+
+def test_checks_of_the_sweeps_are_pending_until_the_whole_design_comes():
+    import time
+
+    d = Designer(Document(), Session.start())
+    # the built-in example: both valves with a [dynamics] section, two checks each (seating velocity, jump speed)
+    def dynamic():
+        return [k for k in d.checks.data["key"] if "dynamic seating velocity" in k or "(jump)" in k]
+
+    assert dynamic() == []
+    d.draw_sweep(d.generation, Session.settle(d.session.good_document), time.time())
+    found = dynamic()
+    assert len(found) == 4
+    f = next(f for _, group in form(d.session.document) for f in group if f.path == "engine.rated_speed_rpm")
+    d.on_field(f, "value", 7000, 6500)
+    data = d.checks.data
+    rows = [i for i, k in enumerate(data["key"]) if k in found]
+    assert len(rows) == 4
+    assert {data["value"][i] for i in rows} == {"…"}
+    assert {data["colour"][i] for i in rows} == {SEVERITY_COLOURS["pending"]}
+    d.draw_sweep(d.generation, Session.settle(d.session.good_document), time.time())
+    assert "…" not in d.checks.data["value"]
