@@ -558,8 +558,8 @@ def dynamic_loads(dynamics, low, high) -> Optional[LoadMap]:
     keep = (speeds >= low * (1.0 - 1e-12)) & (speeds <= high * (1.0 + 1e-12))
     if not keep.any():
         return None
-    order = np.argsort(speeds[keep], kind="stable")
-    return LoadMap("dynamic", speeds[keep][order], dynamics.sweep.theta, force[keep][order])
+    rows = np.flatnonzero(keep)[np.argsort(speeds[keep], kind="stable")]    # one copy of the large force map
+    return LoadMap("dynamic", speeds[rows], dynamics.sweep.theta, force[rows])
 
 
 def load_maps(valve, engine, cam, theta, spring_force, mass, dynamics=None) -> tuple[list[LoadMap], tuple[float, float, str]]:

@@ -162,10 +162,12 @@ def speed_records(result, speeds, epsilon) -> SpeedRecords:
     with the perturbation parameters (S,): :func:`speed_record` of every speed, over the speeds at once."""
     events = result.events
     surge = result.surge_amplitude.max(axis=1) if result.surge_amplitude.shape[1] else None
+    error = result.lift_error
+    np.abs(error, out=error)     # in place: a map of speeds x angles
     return SpeedRecords(np.asarray(speeds, dtype=float), np.asarray(epsilon, dtype=float), events.min_contact_force,
                         result.contact_force.max(axis=1), events.seating_velocity, events.bounce_height,
                         events.bounce_count, events.jumped, events.jump_from, events.jump_to,
-                        np.abs(result.lift_error).max(axis=1), surge,
+                        error.max(axis=1), surge,
                         np.where(np.isfinite(result.clash_margin), result.clash_margin, np.nan), result.revolutions)
 
 
