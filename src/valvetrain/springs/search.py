@@ -140,7 +140,7 @@ class Search:
 @dataclass(frozen=True)
 class _Grid:
     """The candidates' diameters of a search (:func:`_grid`) and what the screen's bounds (:func:`_may_pass`) need of
-    each grid point alone, for one grade (SI; read-only arrays, shared by the searches of :func:`_grid_of`)."""
+    each grid point alone, for one grade (SI; read-only arrays where :func:`_grid_of` shares them between searches)."""
 
     mean_diameter: np.ndarray
     wire_diameter: np.ndarray
@@ -154,12 +154,9 @@ class _Grid:
     @classmethod
     def of(cls, big_d, d, material):
         g, rho = material.shear_modulus, material.density
-        arrays = (big_d, d, g * d**4 / (8.0 * big_d**3), *material.limits(d),
-                  8.0 * shape_factor_table(big_d / d) * big_d / (np.pi * d**3),
-                  natural_frequency(d, big_d, 1.0, g, rho))
-        for a in arrays:
-            a.flags.writeable = False
-        return cls(*arrays)
+        return cls(big_d, d, g * d**4 / (8.0 * big_d**3), *material.limits(d),
+                   8.0 * shape_factor_table(big_d / d) * big_d / (np.pi * d**3),
+                   natural_frequency(d, big_d, 1.0, g, rho))
 
 
 @lru_cache(maxsize=32)
@@ -168,7 +165,10 @@ def _grid_of(throat_diameter, diameter_range, diameter_step, wire_range_mm, wire
     stage repeats its search until the spring's mass settles) and of an optimisation or a drag share it."""
     big_d, d = _grid(throat_diameter, diameter_range, diameter_step, wire_series(wire_range_mm, wire_step_mm),
                      max_outer)
-    return _Grid.of(big_d, d, material)
+    grid = _Grid.of(big_d, d, material)
+    for a in vars(grid).values():
+        a.flags.writeable = False
+    return grid
 
 
 SCREEN_SLACK = 1e-6
