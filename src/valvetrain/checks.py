@@ -35,11 +35,12 @@ Values and bounds are SI; ``unit`` names the unit they are shown in (see
 """
 
 from dataclasses import dataclass, replace
+from decimal import Decimal
 import math
 from typing import Any
 
 from .locale import catalogue, code_of, record_text
-from .units import to_display, without_noise
+from .units import displayed, to_display
 
 SEVERITIES = ("info", "warning", "failure")
 """What a failed check means: ``info`` a remark, ``warning`` a value outside a recommended range,
@@ -133,6 +134,24 @@ class Check:
         return min(sides, default=math.inf)
 
     @property
+    def shown_margin(self):
+        """:attr:`margin` of the value and the bounds as the record shows them (:func:`valvetrain.units.displayed`),
+        in exact decimal arithmetic: a seat angle of 45 deg against 30 deg has the margin -0.5, not the
+        -0.5000000000000001 of its radians.  A bound of 0 keeps the SI side (the value itself), whose computation has
+        no difference to round."""
+        if not self.evaluated:
+            return self.margin
+        value = Decimal(repr(displayed(self.value, self.unit)))
+        sides = []
+        for bound, sign in ((self.low, 1), (self.high, -1)):
+            if bound is None:
+                continue
+            shown = Decimal(repr(displayed(bound, self.unit)))
+            side = sign * (float(self.value) if bound == 0.0 else float((value - shown) / abs(shown)))
+            sides.append(side + 0.0)   # 0.0, not -0.0, at the upper bound
+        return min(sides, default=math.inf)
+
+    @property
     def shown_value(self):
         """The value in :attr:`unit`."""
         return to_display(self.value, self.unit)
@@ -185,17 +204,17 @@ class Check:
         """The record of a failed check in ``results.json`` ``warnings``: quantity, code, valve, parameters, value,
         range, source, unit, severity and margin (and the reason of an acceptance)."""
         return {"quantity": self.quantity, "code": self.code, "valve": self.valve, "params": dict(self.params),
-                "value": without_noise(self.shown_value) if self.evaluated else None, "range": self.range,
-                "source": self.source, "unit": self.unit, "severity": self.severity, "margin": self.margin,
+                "value": displayed(self.value, self.unit) if self.evaluated else None, "range": self.range,
+                "source": self.source, "unit": self.unit, "severity": self.severity, "margin": self.shown_margin,
                 **({} if self.evaluated else {"unevaluated": self.unevaluated or UNEVALUATED}),
                 **({"accepted": True, "reason": self.reason} if self.accepted else {})}
 
     def as_dict(self):
         """The full record, in :attr:`unit`: the warning record with the bounds (without the noise of their
-        conversion, :func:`valvetrain.units.without_noise`), pass, accepted (and reason)."""
+        conversion, :func:`valvetrain.units.displayed`), pass, accepted (and reason)."""
         return {**self.warning(),
-                "low": None if self.low is None else without_noise(to_display(self.low, self.unit)),
-                "high": None if self.high is None else without_noise(to_display(self.high, self.unit)),
+                "low": None if self.low is None else displayed(self.low, self.unit),
+                "high": None if self.high is None else displayed(self.high, self.unit),
                 "pass": self.passed, "accepted": self.accepted,
                 **({"note": self.note} if self.note else {})}
 

@@ -162,7 +162,7 @@ class _Main(click.Group):
 
 @click.group(cls=_Main, context_settings={"help_option_names": ["-h", "--help"]})
 @click.version_option(__version__, prog_name="valvetrain")
-def main():
+def main() -> None:
     """Design calculation of engine valve trains.
 
     Start with `valvetrain example > my-engine.toml`, edit it, check it with
@@ -184,7 +184,7 @@ def main():
                    "hydraulic sweep, crank-force, crank-pin and port time-area figures), or none; the report embeds "
                    "those drawn.")
 @click.option("--strict", is_flag=True, help=STRICT_HELP)
-def run(file, out, force, lang, figures, strict):
+def run(file, out, force, lang, figures, strict) -> None:
     """Run the design of FILE (default: the built-in example) and write it to --out."""
     from .export import DRAWER_IMPORTS, write_outputs
     from .report.drawing import start
@@ -219,7 +219,7 @@ def run(file, out, force, lang, figures, strict):
               help="A valve to sweep (repeatable); default: the valves with a [dynamics] section, or all.")
 @click.option("--force", is_flag=True, help=FORCE_HELP)
 @click.option("--lang", type=click.Choice(["en", "ru"]), default="en", show_default=True, help="Language of the plots.")
-def sweep(file, out, valves, force, lang):
+def sweep(file, out, valves, force, lang) -> None:
     """Run only the speed sweep of the elastic valve train of FILE and write it to --out.
 
     Each valve's [valves.NAME.dynamics] section is used (its defaults where it has none): one-mass or
@@ -297,7 +297,7 @@ def _headline(d):
               help="Language of the report and the plot.")
 @click.option("--force", is_flag=True, help=FORCE_HELP)
 def optimize(file, out, valve, objective, vary, no_jump, cam_width, seating_velocity, wheel_radius, seed, maxiter,
-             lang, force):
+             lang, force) -> None:
     """Maximise the fullness or time-area of a valve's cam of FILE under its limits and write the optimum to --out.
 
     Varies the law's parameters (Kurz: phi1, phi2, Z; constant acceleration: phi1, phi2, kappa; polydyne: the
@@ -402,7 +402,7 @@ def optimize(file, out, valve, objective, vary, no_jump, cam_width, seating_velo
               help="Allow a grid of up to N points (default 10,000; a larger grid is refused with an estimate of "
                    "its time).")
 @click.option("--force", is_flag=True, help=FORCE_HELP)
-def study(file, grid_items, out, workers, scheduler, max_points, force):
+def study(file, grid_items, out, workers, scheduler, max_points, force) -> None:
     """Design every point of a grid of FILE's keys and write one table of results to --out.
 
     Each point is FILE with the grid's values, validated and designed like `valvetrain run`; a point that is
@@ -492,7 +492,7 @@ def study(file, grid_items, out, workers, scheduler, max_points, force):
                    "needs pip install 'valvetrain[dask]'.")
 @click.option("--lang", type=click.Choice(["en", "ru"]), default="en", show_default=True,
               help="Language of the report.")
-def tolerance(file, samples, method, seed, out, workers, scheduler, lang):
+def tolerance(file, samples, method, seed, out, workers, scheduler, lang) -> None:
     """Sample FILE's [[tolerances]] and design every sample; per check the distribution of its margin, its
     probability of failure and the tolerances that drive it.
 
@@ -573,7 +573,7 @@ def _duration(seconds):
 @main.command()
 @click.argument("file", type=click.Path(dir_okay=False))
 @click.option("--strict", is_flag=True, help=STRICT_HELP)
-def validate(file, strict):
+def validate(file, strict) -> None:
     """Check a specification FILE; exit status 2 and one message per problem if it is not valid.
 
     The design is computed (nothing is written), so a file that validates also runs, and its
@@ -591,7 +591,7 @@ def validate(file, strict):
 @click.argument("files", nargs=-1, required=True, type=click.Path(dir_okay=False))
 @click.option("--out", "out", default="compare", show_default=True, type=click.Path(), help=OUT_HELP)
 @click.option("--force", is_flag=True, help=FORCE_HELP)
-def compare(files, out, force):
+def compare(files, out, force) -> None:
     """Compare the cams of every valve of FILES side by side (time-area, fullness, kinematics, curvature,
     contact stress, required spring) and their trains' dynamics (drive load, spring, reduced mass, drive stiffness,
     natural frequency, resonant harmonic, distortion, and the jump speed of a 40-speed one-mass sweep over each
@@ -637,7 +637,7 @@ def _file_labels(files):
 
 
 @main.command()
-def schema():
+def schema() -> None:
     """Print the JSON Schema of results.json (generated from the design's result types)."""
     from .design import results_schema
     from .export import json_text
@@ -652,7 +652,7 @@ def schema():
 @click.option("--host", default="127.0.0.1", show_default=True,
               help="Address to listen on; anything but 127.0.0.1 exposes the designer to the network.")
 @click.option("--show/--no-show", default=True, help="Open the page in the browser.")
-def serve(file, port, host, show):
+def serve(file, port, host, show) -> None:
     """The designer in the browser: edit FILE (default: the built-in example), drag the cam's handles and watch the
     checks and the speed sweep answer.  Needs the extra `pip install "valvetrain[web]"`; works offline; writes
     nothing but what you download.  Ctrl-C stops it."""
@@ -683,7 +683,7 @@ def serve(file, port, host, show):
 
 
 @main.command()
-def example():
+def example() -> None:
     """Print the built-in example specification (the appendix of Valve-train practical works (n.d.) engine) as TOML."""
     click.echo(example_text(), nl=False)
 

@@ -18,7 +18,7 @@ from typing import Any, Union
 
 import numpy as np
 
-from .units import to_display, without_noise
+from .units import displayed
 
 
 def quantity(key, unit="", label="", *, default=MISSING, flatten=False, omit_none=False) -> Any:
@@ -90,7 +90,7 @@ def _shown(value, unit):
         return [_shown(v, unit) for v in value]
     if isinstance(value, (int, np.integer)) and not unit:
         return int(value)
-    return without_noise(float(to_display(float(value), unit)))
+    return displayed(value, unit)
 
 
 def record(result: Any) -> dict[str, Any]:
@@ -99,12 +99,13 @@ def record(result: Any) -> dict[str, Any]:
     return dict(shown(result))
 
 
-def shown(result: Any, *names: str) -> list[tuple[str, Any]]:
+def shown(result: Any, *names: str, nested: bool = True) -> list[tuple[str, Any]]:
     """``(key, value)`` of the named fields of a stage result as results.json shows them (the field's key, the value
     in its display unit), read from the attributes in the order named.  Without names, every field's in the order
     declared: a flattened result's rows in its place (a key it shares with the parent's keeps the parent's place and
     takes its value), a field left out where it is None and results.json leaves it out (the rows of its
-    :func:`record`).
+    :func:`record`).  ``nested`` False leaves out the fields whose value is a record of its own (a nested result,
+    named values, a mapping), which results.json shows as an object: the rows of a table of numbers.
 
     >>> from valvetrain.design.valve import FlatContact
     >>> shown(FlatContact(0.0125), "max_contact_offset")
@@ -119,7 +120,10 @@ def shown(result: Any, *names: str) -> list[tuple[str, Any]]:
         value = getattr(result, f.name)
         if "key" not in meta or value is None and (meta["omit_none"] or meta["flatten"]):
             continue
-        rows.update(shown(value) if meta["flatten"] else [(meta["key"], _shown(value, meta["unit"]))])
+        if meta["flatten"]:
+            rows.update(shown(value, nested=nested))
+        elif nested or not (is_dataclass(value) or isinstance(value, (NamedValues, dict))):
+            rows[meta["key"]] = _shown(value, meta["unit"])
     return list(rows.items())
 
 

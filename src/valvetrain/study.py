@@ -282,7 +282,7 @@ MMAP_THRESHOLD_BYTES = 32 * 2**20
 
 
 @functools.cache
-def heap_arrays():
+def heap_arrays() -> None:
     """Let glibc serve arrays below :data:`MMAP_THRESHOLD_BYTES` from the heap again, in a process whose environment
     sets ``MALLOC_TRIM_THRESHOLD_`` (a Dask nanny starts its workers so); once per process.
 

@@ -169,7 +169,7 @@ TRIM_THRESHOLD_BYTES = 128 * 2**20
 
 
 @functools.cache
-def keep_heap():
+def keep_heap() -> None:
     """Let glibc keep the arrays of a sample's design in the heap when they are freed, once per process: arrays up
     to :data:`~valvetrain.study.MMAP_THRESHOLD_BYTES` come from the heap, and up to :data:`TRIM_THRESHOLD_BYTES` of
     freed memory stays there for the next sample.

@@ -129,22 +129,50 @@ def per_cam_degree(value, order, omega) -> float | np.ndarray:
     return value * (DEG / omega) ** order / MM
 
 
-def without_noise(value, digits=12) -> float:
+TURNS = {"deg": 360.0, "cam deg": 360.0, "crank deg": 720.0}
+"""A full turn (a cycle) of each angle unit of :data:`UNITS`: an angle computed in radians on a revolution or a cycle
+carries the round-off of the turn (a few units in the last place of 2 pi, 4 pi), not of its own size."""
+
+
+def without_noise(value, digits=12, scale=0.0) -> float:
     """A value shown in a display unit without the float noise of its conversion: rounded to ``digits`` significant
-    digits where that moves it by four units in the last place at most (:func:`math.ulp`), kept otherwise.
+    digits where that moves it by four units in the last place at most (:func:`math.ulp`), kept otherwise.  A value
+    smaller than ``scale`` (the magnitude its computation passed through: a turn for an angle) is rounded to the
+    ``digits`` of the scale, and may move by four units in the last place of the scale.
 
     A bound written as 60 deg in its source and kept in radians is shown as 60 again, not 59.99999999999999; a value
-    of more digits (8/3) is kept as it is.
+    of more digits (8/3) is kept as it is; the grid angle -0.1 deg of a revolution from -180 deg is shown as -0.1
+    with the scale 360 deg, not -0.10000000000001923, while a twist of 0.11399658396381009 deg keeps its digits.
 
     >>> without_noise(to_display(60.0 * DEG, "deg")), without_noise(8.0 / 3.0)
     (60.0, 2.6666666666666665)
+    >>> without_noise(-0.10000000000001923), without_noise(-0.10000000000001923, scale=360.0)
+    (-0.10000000000001923, -0.1)
+    >>> without_noise(0.11399658396381009, scale=360.0)
+    0.11399658396381009
     """
-    rounded = float(f"{value:.{digits}g}")
-    return rounded if abs(rounded - value) <= 4.0 * math.ulp(value) else value
+    if abs(value) < scale:
+        rounded = round(value, digits - 1 - math.floor(math.log10(scale)))
+    else:
+        rounded = float(f"{value:.{digits}g}")
+    return rounded if abs(rounded - value) <= 4.0 * math.ulp(max(abs(value), scale)) else value
+
+
+def displayed(value, unit) -> float:
+    """An SI number as the results show it in the display ``unit`` of :data:`UNITS`: :func:`to_display` without the
+    noise of the conversion (:func:`without_noise`), and for an angle without the noise of its computation on the
+    turn (:data:`TURNS`).
+
+    >>> float(to_display(np.radians(250.0) - np.radians(276.0), "crank deg"))   # an event: 250 - 2 x 138
+    -25.99999999999996
+    >>> displayed(np.radians(250.0) - np.radians(276.0), "crank deg"), displayed(0.0118, "mm")
+    (-26.0, 11.8)
+    """
+    return without_noise(float(to_display(float(value), unit)), scale=TURNS.get(unit, 0.0))
 
 
 @cache
-def si_name(key):
+def si_name(key) -> tuple[str, float]:
     """The SI field of a key and the factor to SI: ``("throat_diameter", 1e-3)`` for ``throat_diameter_mm``.
 
     The longest suffix of :data:`SUFFIXES` that ends the key names its unit; a key in a unit other than SI loses the

@@ -251,6 +251,11 @@ def test_rated_speed_contact_stress_lubrication_and_torque():
     rec = json.loads(results_json(run(spec(FEW))))["valves"]["intake"]["dynamics"]["at_rated_speed"]
     assert rec["max_contact_stress_MPa"] == pytest.approx(sigma.max() / 1e6, rel=1e-9)
     assert {"lubrication_gamma_at_max_stress", "lubrication_poor_film_cam_deg", "max_drive_torque_N_m"} <= set(rec)
+    # the poor-film angle: its grid points times the step 0.5 cam deg (step_cam_deg) by hand, without the noise of
+    # the step taken as theta[1] - theta[0] at -180 deg
+    gamma = rho / (heel + h)
+    poor = (r.contact_force > 0.0) & (h > 0.0) & (gamma >= 0.4) & (gamma <= 0.6)   # 0.4 <= gamma <= 0.6, the band
+    assert poor.sum() > 0 and rec["lubrication_poor_film_cam_deg"] == 0.5 * poor.sum()
 
 
 @pytest.mark.parametrize("text, expected", [

@@ -48,6 +48,10 @@ def test_a_flat_follower_cam_gets_a_master_and_no_wear_error(tmp_path):
                                                                - g["wheel_centre_min_radius_mm"]))
     assert g["max_wear_lift_error_mm"] < 1e-9 and g["max_wear_lift_error_first_order_mm"] == 0.0
     assert g["wheel_wear_mm"] == 0.5 and g["wear_table"] == "tables/intake_wear_error.csv"
+    # the wear table's angles: the law's start and every 0.5 cam deg after it (written out in degrees), to the round-off
+    # of one angle (1e-13 deg), not arange's step summed over the table (2e-12 deg)
+    law, angle = results.valves["intake"].law, np.degrees(results.valves["intake"].grinding.wear.cam_angle)
+    assert np.abs(angle - (np.degrees(law.start) + 0.5 * np.arange(angle.size))).max() < 1e-13
     out = write_outputs(results, tmp_path / "out")
     for f in ("contour/intake_master.csv", "contour/intake_master_cartesian.csv", "contour/intake_master.dxf",
               "tables/intake_wear_error.csv", "plots/intake_grinding.png"):

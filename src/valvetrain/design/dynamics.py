@@ -587,7 +587,7 @@ def rated_contact(r, law, heel_radius, follower, width, modulus) -> dict[str, fl
     if gamma is not None:
         loaded = (force > 0.0) & (law.lift(theta) > 0.0)
         poor = loaded & (gamma >= POOR_FILM_BAND[0]) & (gamma <= POOR_FILM_BAND[1])
-        step = float(theta[1] - theta[0])
+        step = float(theta[-1] - theta[0]) / (theta.size - 1)   # not theta[1] - theta[0], the difference at -pi
         out.update(lubrication_gamma_nose=float(gamma[int(np.argmin(np.abs(theta)))]),
                    lubrication_near_half=float(poor.sum() * step))
         if j is not None:

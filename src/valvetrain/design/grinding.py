@@ -178,7 +178,8 @@ def grinding_stage(grinding, cam, name, export_step) -> tuple[GrindingResult, li
             result["master_flat_lift"] = float(np.max(flat))
         result.update(master=MasterTable(psi, wheel, i * (wheel - l_min), radius, flat), master_contour=contour,
                       master_angle=theta)
-    t = np.arange(law.start, law.end + 0.5 * WEAR_STEP, WEAR_STEP)
+    # start + k step: np.arange would step by (start + step) - start, 2e-12 deg off after a few hundred steps
+    t = law.start + WEAR_STEP * np.arange(int(np.ceil((law.end - law.start) / WEAR_STEP + 0.5)))
     lift = law.lift(t)
     infeed = grinding.wear_compensation == "infeed"
     worn = cam_grinding.worn_wheel_lift(derivs, t, heel, r_w, grinding.wheel_wear, follower, infeed)

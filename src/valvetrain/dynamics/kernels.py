@@ -126,7 +126,7 @@ def _rk4(x, v, h, cam_x, cam_v, off, im, ra, rb, k, d, gap, pre, uni, xs, vs, kx
 def integrate_block(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_per_rev, max_revolutions, tolerance,
                     rate, inv_mass, x_init, ra, rb, k, d, gap, pre, uni, closing, rec_nodes, rec_elems, clash_gap,
                     surge_ref, surge_w, adjuster, contact, out_x, out_v, out_a, out_f, out_clash, out_surge, out_revs,
-                    out_z):
+                    out_z) -> None:
     """Integrate the speeds ``idx`` of one block (all with ``n_sub`` sub-steps) in lockstep until each repeats.
 
     Every revolution is recorded over the previous one; after each revolution the state of every speed is compared

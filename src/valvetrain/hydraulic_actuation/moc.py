@@ -24,7 +24,7 @@ VELOCITY = 1
 
 
 @njit(cache=True)
-def characteristics(p, u, impedance, friction):
+def characteristics(p, u, impedance, friction) -> tuple[np.ndarray, np.ndarray]:
     """The right-hand sides C+ (from the left neighbour) and C- (from the right neighbour) of every node.
 
     Parameters
@@ -56,7 +56,7 @@ def characteristics(p, u, impedance, friction):
 
 
 @njit(cache=True)
-def interior(p, u, cp, cm, impedance, vapour_pressure):
+def interior(p, u, cp, cm, impedance, vapour_pressure) -> bool:
     """Update the interior nodes in place from C+ and C-; returns True where a node was clamped."""
     clamped = False
     for i in range(1, p.size - 1):

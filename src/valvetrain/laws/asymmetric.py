@@ -65,11 +65,6 @@ class AsymmetricLaw(LiftLaw):
         """Opening flank's angle from the end of its ramp to the nose [rad]."""
         return self.opening.main_half_angle
 
-    @property
-    def closing_half_angle(self):
-        """Closing flank's angle from the nose to the start of its ramp [rad]."""
-        return self.closing.main_half_angle
-
     def derivatives(self, theta):
         theta = np.asarray(theta, dtype=float)
         return np.where(theta < 0.0, self.opening.derivatives(theta), self.closing.derivatives(theta))

@@ -521,7 +521,7 @@ def batch_derivatives(laws, theta, member) -> np.ndarray:
 
 
 @njit(cache=True)
-def mirror(theta, half):
+def mirror(theta, half) -> tuple[float, float]:
     """The rise coordinate of a symmetric law at one angle (compiled kernels; see :class:`SymmetricLaw`).
 
     Returns

@@ -663,11 +663,6 @@ class TableLaw(RampedLaw):
     def main_half_angle(self):
         return 0.5 * (self.end_angle - self.start_angle)
 
-    @property
-    def nose_cam_angle(self):
-        """Camshaft angle of the lobe centre in the engine's cam frame [rad]: the table sets the timing."""
-        return self.centre
-
     def checks(self):
         """The N-harmonic fit must meet the stated measurement accuracy by ``max_harmonics``; if it does not, the
         table is noisier than stated (or the accuracy finer than the instrument's).  An accuracy derived from the

@@ -39,7 +39,7 @@ def cosine_ramp_length(height, end_velocity) -> float:
 
 
 @njit(cache=True)
-def cosine_ramp_at(phi, height, length):
+def cosine_ramp_at(phi, height, length) -> tuple[float, float, float, float]:
     """Cosine ramp at one angle: lift and its first three derivatives with respect to camshaft angle.
 
     Parameters
@@ -72,14 +72,14 @@ def cosine_ramp_at(phi, height, length):
 
 
 @njit(cache=True)
-def constant_velocity_ramp_at(phi, end_velocity):
+def constant_velocity_ramp_at(phi, end_velocity) -> tuple[float, float, float, float]:
     """Constant-velocity ramp h = w' phi at one angle: h [m] and its three derivatives (see
     :class:`ConstantVelocityRamp`)."""
     return end_velocity * phi, end_velocity, 0.0, 0.0
 
 
 @njit(cache=True)
-def constant_acceleration_ramp_at(phi, end_velocity, accelerating):
+def constant_acceleration_ramp_at(phi, end_velocity, accelerating) -> tuple[float, float, float, float]:
     """Constant-acceleration ramp at one angle: h [m] and its three derivatives (see
     :class:`ConstantAccelerationRamp`; ``accelerating`` = f alpha_r [rad], the accelerating stretch)."""
     if phi < accelerating:
@@ -93,7 +93,7 @@ COSINE, CONSTANT_VELOCITY, CONSTANT_ACCELERATION = 0, 1, 2
 
 
 @njit(cache=True)
-def ramp_at(code, phi, height, end_velocity, length, fraction):
+def ramp_at(code, phi, height, end_velocity, length, fraction) -> tuple[float, float, float, float]:
     """A ramp of kind ``code`` at one angle phi [rad from its start]: h and its three derivatives (the
     compiled laws' ramp; the arguments are :attr:`Ramp.parameters`)."""
     if code == COSINE:

@@ -19,12 +19,13 @@ from importlib.resources import files
 import re
 import string
 import tomllib
+from typing import Any
 
 from ..languages import LANGS
 
 
 @cache
-def catalogue(lang):
+def catalogue(lang) -> dict[str, Any]:
     """The catalogue of ``lang`` as read from ``LANG.toml``."""
     if lang not in LANGS:
         raise ValueError(f"language {lang!r}: allowed {LANGS}")

@@ -255,7 +255,7 @@ def _fit_reason(rec, lang):
 def _strength(st):
     """The strength chapter of a valve from its :class:`~valvetrain.design.drive.StrengthResult`: the rows, each
     check (its code without ``strength.``, the check, its allowed range) and the checks whose parts are not given."""
-    return {"rows": [(k, val) for k, val in shown(st) if k != "per_speed"],
+    return {"rows": shown(st, nested=False),
             "checks": [(c.code.removeprefix("strength."), c, strength_allowed(c)) for c in st.checks],
             "not_checked": st.not_checked}
 
@@ -313,8 +313,8 @@ def _hydraulic(v):
     if h is None:
         return None
     gas = h.gas_force
-    return {"rows": [(k, val) for k, val in _present(h, *_except(h, "table_file", "sweep_table", "notes", "gas_force"))
-                     if not isinstance(val, (list, dict))],
+    return {"rows": _present(h, *_except(h, "table_file", "sweep_table", "notes", "gas_force", "speed_range",
+                                         "per_speed")),
             "gas_rows": [] if gas is None else [(f"gas_force.{k}", val) for k, val in _present(gas, *_except(gas, "source"))],
             "gas_source": None if gas is None else gas.source,
             "notes": h.notes, "table": h.table_file, "sweep_table": h.sweep_table}
@@ -508,7 +508,7 @@ def render_report(results, plots, lang="en", folder=None) -> str:
             "measured": _measured(v.records.measured, lang),
             "clearance": [] if v.clearance is None else shown(v.clearance),
             "masses": shown(v.drive.masses),
-            "spring": [(k, val) for k, val in shown(spring) if not isinstance(val, dict)],
+            "spring": shown(spring, nested=False),
             "pair": [(t, _present(pair, *_except(pair, "margins")))
                      for pair, t in ((spring.outer, "outer_spring"), (spring.inner, "inner_spring")) if pair is not None],
             "no_spring_passes": not spring.design.passes_all_checks and spring.candidates_passing == 0,

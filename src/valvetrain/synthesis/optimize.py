@@ -605,12 +605,9 @@ class Problem:
                 out[index[k]] = [float(objective), margins[k], (laws[k], scales[k])]
         return out
 
-    def penalised(self, x, scale):
-        """The objective over ``scale``, negated, plus :data:`PENALTY` times the summed violations."""
-        return self.penalised_many([x], scale)[0]
-
     def penalised_many(self, xs, scale):
-        """:meth:`penalised` of each point of ``xs``, evaluated together (:meth:`evaluate_many`)."""
+        """The objective over ``scale``, negated, plus :data:`PENALTY` times the summed violations, of each point of
+        ``xs``, evaluated together (:meth:`evaluate_many`)."""
         return np.array([-objective / scale + PENALTY * float(np.nansum(np.clip(-margins, 0.0, None)))
                          for objective, margins in self.evaluate_many(xs)])
 
