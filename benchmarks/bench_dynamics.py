@@ -241,7 +241,7 @@ print(c1 - c0 - (c2 - c1), t1 - t0 - (t2 - t1))
 OLD_KERNELS = """
 sys.path.insert(0, {folder!r})
 import baseline_kernels
-module.integrate_block = lambda *a: baseline_kernels.integrate_block(*a[:26], *a[28:-1])  # without the adjuster's
+module.integrate_block = lambda *a: baseline_kernels.integrate_block(*a[:26], *a[30:-1])  # no adjuster, variable mass
 module.integrate_block.signatures = baseline_kernels.integrate_block.signatures  # read by the compile notice
 """
 

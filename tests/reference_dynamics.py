@@ -12,13 +12,33 @@ RPM = np.pi / 30.0
 
 
 def spec12():
-    """The worked example of spec sections 2, 8 and 12: the dynamic cam of tests/laws/test_laws_more.py (c = 15000
+    """The worked example of spec sections 2, 8 and 12: the dynamic cam of tests/laws/test_dynamic.py (c = 15000
     N/mm, M = 0.25 kg, K = 67.5 N/mm, F0 = 400 N, k = 1.5, x0 = 0.30 mm, designed for 3000 cam rpm) and its
     one-mass train with zeta = 0.05."""
     omega = 3000 * RPM
     law = DynamicLaw(8e-3, np.radians(55), [2, 10, 18, 26, 34], 0.3 / omega, 15e6, 0.25, 67.5e3, 400.0, omega,
                      1.5, 0.3e-3, "constant_acceleration", 0.5)
     return law, one_mass_train(0.25, 15e6, 67.5e3, 400.0, 1.5, 0.3e-3, damping_ratio=0.05)
+
+
+def one_mass_rhs(law, train, omega, mass=None):
+    """The one-mass train's equations of motion as scipy's ``rhs(t, (y, y_dot))``, at camshaft angle omega t - pi from
+    the nose: M y_ddot = F_c - (F_0 + K y) + F_s with the contact F_c = max(0, c delta + C delta_dot) where delta =
+    k h - x_0 - y > 0 and the seat F_s = max(0, -c_s y - C_s y_dot) where y < 0 (Shang Hanji (1988), section 3.1).
+    ``mass(y) -> (m, dm/dy)``: a mass that changes with the lift, m y_ddot + (1/2) m' y_dot^2 = F (Lagrange's equation
+    of T = m(y) y_dot^2 / 2); default the train's M."""
+    k = train.rocker_ratio
+
+    def rhs(t, s):
+        d = law.derivatives(np.array([(omega * t) % (2 * np.pi) - np.pi]))[:2, 0] * k
+        y, v = s
+        gap = d[0] - train.lash - y
+        fc = max(0.0, train.stiffness * gap + train.damping * (omega * d[1] - v)) if gap > 0 else 0.0
+        fs = max(0.0, -train.seat_stiffness * y - train.seat_damping * v) if y < 0 else 0.0
+        m, dm = (train.mass, 0.0) if mass is None else mass(y)
+        return [v, (fc - train.preload - train.spring_rate * y + fs - 0.5 * dm * v**2) / m]
+
+    return rhs
 
 
 def seat_crossings(law, train, omega, revolutions=1, steps_per_revolution=7200):
@@ -32,15 +52,7 @@ def seat_crossings(law, train, omega, revolutions=1, steps_per_revolution=7200):
     states : ndarray (n, 2)
         Lift [m] and velocity [m/s] there.
     """
-    k = train.rocker_ratio
-
-    def rhs(t, s):
-        d = law.derivatives(np.array([(omega * t) % (2 * np.pi) - np.pi]))[:2, 0] * k
-        y, v = s
-        gap = d[0] - train.lash - y
-        fc = max(0.0, train.stiffness * gap + train.damping * (omega * d[1] - v)) if gap > 0 else 0.0
-        fs = max(0.0, -train.seat_stiffness * y - train.seat_damping * v) if y < 0 else 0.0
-        return [v, (fc - train.preload - train.spring_rate * y + fs) / train.mass]
+    rhs = one_mass_rhs(law, train, omega)
 
     def seat(t, s):
         return s[0]

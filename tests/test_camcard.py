@@ -16,30 +16,11 @@ from the gas-exchange TDC.  By hand:
 
 import math
 
-import numpy as np
 import pytest
 
 from valvetrain import camcard
 
-H, PHI = 10e-3, math.radians(60.0)
-
-
-class CosineLobe:
-    """The duck-typed part of a LiftLaw that the cam card reads, written in closed form."""
-
-    ramp_height = 0.0
-    start, end = -PHI, PHI
-    valve_opens, valve_closes = -PHI, PHI
-
-    def valve_lift(self, theta, rocker_ratio=1.0):
-        return rocker_ratio * H / 2.0 * (1.0 + np.cos(np.pi * np.asarray(theta) / PHI))
-
-    def crossings(self, height):
-        theta = PHI / np.pi * math.acos(2.0 * height / H - 1.0)
-        return (-theta, theta)
-
-
-NOSE_IN, NOSE_EX = math.radians(110.0), math.radians(-110.0)
+from cosine_lobe import NOSE_EX, NOSE_IN, CosineLobe
 
 
 def test_events_and_durations_by_hand():
@@ -79,19 +60,3 @@ def test_no_overlap_gives_a_negative_overlap_and_no_area():
     assert math.degrees(camcard.overlap(camcard.crank_events(lobe.valve_opens, late),
                                         camcard.crank_events(lobe.valve_closes, NOSE_EX))) == pytest.approx(-10.0)
     assert camcard.overlap_area((lobe, 1.0, late), (lobe, 1.0, NOSE_EX)) == 0.0
-
-
-def test_the_card_of_a_design_is_in_results_json():
-    """seed000-polydyne.toml (intake 26 before TDC to 78 after BDC, exhaust 50 before BDC to 20 after TDC: the
-    file's own timing): seat-to-seat events as given, overlap 26 + 20 = 46 crank deg."""
-    from pathlib import Path
-
-    from valvetrain.design import run
-    from valvetrain.specification import load_spec
-
-    card = run(load_spec(Path(__file__).parents[1] / "examples" / "seed000-polydyne.toml")).to_dict()["cam_card"]
-    assert card["valves"]["intake"]["seat_opens_crank_deg"] == pytest.approx(-26.0)
-    assert card["valves"]["intake"]["seat_closes_crank_deg"] == pytest.approx(180.0 + 78.0)
-    assert card["valves"]["exhaust"]["seat_opens_crank_deg"] == pytest.approx(-180.0 - 50.0)
-    assert card["overlap_crank_deg"] == pytest.approx(46.0)
-    assert card["overlap_area_mm_crank_deg"] > 0.0

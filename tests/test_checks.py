@@ -1,5 +1,5 @@
-"""Issue 10, "Warnings": severity and ranking of the checks, acceptances in the specification, the ranges of the
-drive layout, and `validate` printing the checks."""
+"""The checks (valvetrain.checks; issue 10, "Warnings"): severity and ranking, acceptances in the specification, and
+`validate` printing the checks (the ranges of the drive layout: tests/design/test_valve.py)."""
 
 import json
 import tomllib
@@ -11,28 +11,10 @@ import tomli_w
 from valvetrain.checks import apply_acceptances, check, ranked
 from valvetrain.cli import main
 from valvetrain.design import run
-from valvetrain.design.valve import LAYOUT_BANDS, LAYOUTS
 from valvetrain.specification import validate
 from valvetrain.specification.models import Acceptance
 
-from appendix import appendix_text
-
-
-def example(**changes):
-    """The built-in example as a dict, with ``changes`` applied: ``{"valves.intake.parts.cam_width_mm": 3.0}``;
-    ``accepted`` is a list of tables."""
-    data = tomllib.loads(appendix_text())
-    for path, value in changes.items():
-        *keys, last = path.split("__")
-        node = data
-        for k in keys:
-            node = node.setdefault(k, {})
-        node[last] = value
-    return data
-
-
-def design(**changes):
-    return run(validate(example(**changes)))
+from appendix import appendix_data as example, appendix_design as design, appendix_text
 
 
 def write(tmp_path, data):
@@ -148,52 +130,7 @@ def test_a_wrong_acceptance_is_refused_naming_the_key(refused, table, message):
     assert message in refused(text, "run")
 
 
-# 3. the ranges of the drive layout --------------------------------------------------------------------------------
-
-def test_every_layout_band_names_its_source_and_covers_the_layouts():
-    for quantity, bands in LAYOUT_BANDS.items():
-        assert set(bands) <= set(LAYOUTS), quantity
-        for layout, band in bands.items():
-            assert band.source and "SPEC" not in band.source, (quantity, layout)
-            assert "seed" not in band.note, (quantity, layout)     # notes are shown as they are
-
-
-def test_a_rocker_layout_checks_the_rocker_ratio_even_at_one():
-    """Before, a rocker ratio of 1 was never checked: a rocker or lever wants 1.4-1.75 (Valve-train practical works (n.d.), work 2)."""
-    checks = {c.quantity: c for c in design(valves__intake__rocker_ratio=1.0,
-                                             valves__intake__drive__layout="rocker").checks}
-    ratio = checks["intake: rocker ratio"]
-    assert not ratio.passed and ratio.range == "1.4...1.75"
-    direct = {c.quantity for c in design(valves__intake__rocker_ratio=1.0, valves__intake__drive__layout="direct").checks}
-    assert "intake: rocker ratio" not in direct
-
-
-def test_the_acceleration_band_says_for_which_layout_the_source_states_it():
-    pushrod = {c.quantity: c for c in design().checks}["intake: min tappet acceleration"]
-    assert "direct drive" in pushrod.note and "pushrod" in pushrod.note
-    direct = {c.quantity: c for c in design(valves__intake__rocker_ratio=1.0,
-                                            valves__intake__drive__layout="direct").checks}["intake: min tappet acceleration"]
-    assert direct.note == "" and direct.low == pushrod.low
-
-
-@pytest.mark.parametrize("layout, ratio, band", [("pushrod", 1.6, "400...500 kg/m2"), ("direct", 1.0, "200...300 kg/m2"),
-                                                 ("rocker", 1.6, "200...300 kg/m2")])
-def test_the_specific_mass_band_is_the_layouts(layout, ratio, band):
-    checks = {c.quantity: c for c in design(valves__intake__rocker_ratio=ratio,
-                                            valves__intake__drive__layout=layout).checks}
-    mass = checks["intake: specific mass of the drive m' = m_v / f_g"]
-    assert mass.range == band and mass.severity == "info"
-    assert ("compared with the direct drive's band" in mass.note) == (layout == "rocker")
-
-
-def test_no_specific_mass_check_against_the_default_mass():
-    data = example()
-    del data["valves"]["intake"]["drive"]["masses"]
-    quantities = {c.quantity for c in run(validate(data)).checks}
-    assert "intake: specific mass of the drive m' = m_v / f_g" not in quantities
-
-
-# 4. validate prints the checks ------------------------------------------------------------------------------------
+# 3. validate prints the checks ------------------------------------------------------------------------------------
 
 def test_validate_prints_the_ranked_checks(tmp_path):
     result = CliRunner().invoke(main, ["validate", str(write(tmp_path, example()))])

@@ -23,7 +23,8 @@ def test_a_layout_not_given_follows_the_rocker_ratio():
     assert layouts.layout(_intake()) == "pushrod"                      # given in the example
     assert layouts.layout(_intake(layout=None)) == "pushrod"           # rocker_ratio 1.6
     valve = example_spec().valves["intake"]
-    direct = si(valve.model_copy(update={"rocker_ratio": 1.0, "drive": valve.drive.model_copy(update={"layout": None})}))
+    drive = valve.drive.model_copy(update={"layout": None})
+    direct = si(valve.model_copy(update={"rocker_ratio": 1.0, "drive": drive}))
     assert layouts.layout(direct) == "direct"
 
 

@@ -8,10 +8,11 @@ from valvetrain import spring_materials, springs
 
 
 def test_wire_grades():
-    """60S2A is the manual's steel with the middle of its ranges (Valve-train practical works (n.d.), work 6); the VD grades follow
-    Shigley Table 10-4 (R_m = A/d^m), Table 10-6 ([tau] = 0.5 R_m) and section 10-9 (S_su = 0.67 R_m, Goodman
-    line through Zimmerli's peened point): the manual's n of eq. (6.12) is 1 exactly at that point
-    (tau_m = 534 MPa, tau_a = 398 MPa, i.e. tau_max = 932 MPa, tau_min = 136 MPa) for every wire."""
+    """60S2A is the manual's steel with the middle of its ranges (Valve-train practical works (n.d.), work 6); the VD
+    grades follow Shigley's Mechanical Engineering Design, 9th ed. (2011), Table 10-4 (R_m = A/d^m), Table 10-6 ([tau] =
+    0.5 R_m) and section 10-9 (S_su = 0.67 R_m, Goodman line through Zimmerli's peened point): the manual's n of eq.
+    (6.12) is 1 exactly at that point (tau_m = 534 MPa, tau_a = 398 MPa, i.e. tau_max = 932 MPa, tau_min = 136 MPa) for
+    every wire."""
     seed = springs.SpringMaterial()
     allowable, endurance, psi = seed.limits(np.array([2.8e-3, 6e-3]))
     assert (seed.shear_modulus, seed.density) == (8e10, 7850.0)

@@ -219,7 +219,7 @@ def test_report_has_a_row_and_a_histogram_per_failing_check(serial, lang, word):
 
 def test_russian_report_has_no_english_words(serial):
     """tolerance.html in Russian: the keys by their names (names.py), the headlines, the method; only the valves'
-    names, the keys as the file gives them and the citations stay as they are (tests/report/test_report_i18n.py)."""
+    names, the keys as the file gives them and the citations stay as they are (tests/report/test_i18n.py)."""
     from valvetrain.report.tolerance import report_html
 
     parser = Visible()

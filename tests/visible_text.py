@@ -1,4 +1,4 @@
-"""The visible text of an HTML report and the English words in it (the Russian reports: tests/report/test_report_i18n.py,
+"""The visible text of an HTML report and the English words in it (the Russian reports: tests/report/test_i18n.py,
 the tolerance study's report: tests/test_tolerance.py)."""
 
 from html.parser import HTMLParser

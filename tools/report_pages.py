@@ -6,7 +6,7 @@ the report's own @page margins), its pages counted.  Needs the Debian package ``
     PYTHONPATH=src valvetrain run examples/seed000-appendix-kurz.toml --out /tmp/ru --lang ru
     python tools/report_pages.py /tmp/en/report.html /tmp/ru/report.html
 
-``tests/report/test_report_layout.py`` checks that one valve prints on 10 pages or fewer.
+``tests/report/test_html_browser.py`` checks that one valve prints on 10 pages or fewer.
 """
 
 import argparse

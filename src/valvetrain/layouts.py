@@ -83,16 +83,43 @@ def train_mass(valve, spring_mass) -> tuple[float, str]:
                                spring_mass=spring_mass)
 
 
+def _finger(valve):
+    """(follower, J [kg m^2]) of a valve's finger of given inertia (SI view), or None for another follower or without
+    the finger's inertia."""
+    follower, parts = follower_of(valve.cam), valve.drive.masses
+    if not follower.law_at_valve or parts is None or parts.rocker_inertia == 0.0:
+        return None
+    return follower, parts.rocker_inertia
+
+
 def finger_inertia(valve, law, theta) -> np.ndarray:
     """What a finger's inertia by its variable ratio adds to the train's m_v h'' (:func:`train_mass` counts its
     J / G_0^2 at the ratio of the heel circle), per camshaft speed squared, at the camshaft angles ``theta`` [rad from
-    the nose] of the lift law ``law`` [N s^2/rad^2] (SI view of the valve): J psi'' / G - J h'' / G_0^2
-    (:meth:`~valvetrain.followers.PivotedFollower.inertia_force`; Norton (2009)), on the heel circle r0 - the ramp
-    height; zero for another follower or without the finger's inertia."""
-    follower, parts = follower_of(valve.cam), valve.drive.masses
-    h, dh, d2h = law.derivatives(theta)[:3]
-    if not follower.law_at_valve or parts is None or parts.rocker_inertia == 0.0:
+    the nose] of the lift law ``law`` [N s^2/rad^2] (SI view of the valve): :func:`finger_inertia_force` on the heel
+    circle r0 - the ramp height."""
+    return finger_inertia_force(valve, valve.cam.base_radius - law.ramp_height, *law.derivatives(theta)[:3])
+
+
+def finger_inertia_force(valve, heel, h, dh, d2h) -> np.ndarray:
+    """:func:`finger_inertia` at the valve lifts ``h`` [m], ``dh`` [m/rad], ``d2h`` [m/rad^2] of a law on the heel
+    circle ``heel`` [m]: J psi'' / G - J h'' / G_0^2 (:meth:`~valvetrain.followers.PivotedFollower.inertia_force`;
+    Norton (2009)); zero for another follower or without the finger's inertia."""
+    found = _finger(valve)
+    if found is None:
         return np.zeros_like(d2h)
-    inertia = parts.rocker_inertia
-    return (follower.inertia_force(inertia, valve.cam.base_radius - law.ramp_height, h, dh, d2h)
-            - inertia / valve_arm(valve) ** 2 * d2h)
+    follower, inertia = found
+    return follower.inertia_force(inertia, heel, h, dh, d2h) - inertia / valve_arm(valve) ** 2 * d2h
+
+
+def finger_mass_change(valve, law, theta) -> np.ndarray:
+    """What a finger's inertia by its variable ratio adds to the train's mass at the valve [kg] at the camshaft angles
+    ``theta`` [rad from the nose] of the lift law ``law`` (SI view of the valve): J / G(psi)^2 - J / G_0^2
+    (:meth:`~valvetrain.followers.PivotedFollower.reduced_inertia`; :func:`train_mass` counts J / G_0^2; Norton
+    (2009)), on the heel circle r0 - the ramp height; zero for another follower or without the finger's inertia."""
+    h = law.lift(theta)
+    found = _finger(valve)
+    if found is None:
+        return np.zeros_like(h)
+    follower, inertia = found
+    heel = valve.cam.base_radius - law.ramp_height
+    return follower.reduced_inertia(inertia, heel, h) - inertia / valve_arm(valve) ** 2

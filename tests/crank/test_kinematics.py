@@ -9,7 +9,7 @@ from valvetrain.crank import kinematics
 
 from factor_tables import table as _table
 
-SERIES = {  # the manual's tables 1.1-1.3 tabulate the 2-term series (spec section 6)
+SERIES = {  # tables 1.1-1.3 of the Power units manual (n.d.) tabulate the 2-term series (spec section 6)
     "1.1": lambda p, lam: (1 - np.cos(p)) + lam / 4 * (1 - np.cos(2 * p)),
     "1.2": lambda p, lam: np.sin(p) + lam / 2 * np.sin(2 * p),
     "1.3": lambda p, lam: np.cos(p) + lam * np.cos(2 * p),

@@ -1,6 +1,5 @@
-"""The crank and two-stroke chapters of a design run, and user pressure files through the CLI."""
-
-import json
+"""The crank chapter of a design run (valvetrain.design.crank), the two-stroke crank torque, and user pressure files
+through the CLI (the two-stroke ports: tests/design/test_twostroke.py)."""
 
 from click.testing import CliRunner
 import numpy as np
@@ -105,30 +104,6 @@ def test_v8_example():
     m = c["masses"]
     assert m["rotating_kg"] == pytest.approx(m["crank_kg"] + 2 * m["rod_at_crank_kg"])
     assert abs(c["torque_work_balance"]) < 2e-4
-
-
-def test_two_stroke_example(tmp_path):
-    path = __import__("pathlib").Path(__file__).parents[2] / "examples" / "two-stroke-ports.toml"
-    out = tmp_path / "ts"
-    result = CliRunner().invoke(main, ["run", str(path), "--out", str(out)])
-    assert result.exit_code == 0, result.output
-    data = json.loads((out / "results.json").read_text())
-    ports = data["two_stroke"]["ports"]
-    ex = ports["exhaust"]
-    # height 16.2 mm = 0.27 S, lambda = 30/120 = 0.25: opens 69.60 deg before BDC exactly (spec, work 8)
-    assert ex["opens_before_bdc_deg"] == pytest.approx(69.60, abs=0.005)
-    assert ex["opens_before_bdc_series_deg"] == pytest.approx(69.49, abs=0.005)
-    # numerical time-area (exact kinematics) against K1 K2 / n (series kinematics): close, not equal
-    assert ex["time_area_mm2_s"] == pytest.approx(ex["time_area_analytic_mm2_s"], rel=0.02)
-    assert ports["transfer"]["opens_before_bdc_deg"] == pytest.approx(58.0)
-    # inlet (8.4): the skirt edge (50 mm below the crown) passes the port's lower edge (73 mm) at s = 23 mm
-    inlet = ports["inlet"]
-    from valvetrain.crank.kinematics import displacement
-    assert displacement(np.radians(inlet["closes_crank_deg"]), 0.030, 0.25) == pytest.approx(0.023, abs=1e-9)
-    assert inlet["opens_crank_deg"] == pytest.approx(-inlet["closes_crank_deg"])
-    for f in ("two_stroke_ports.csv", "two_stroke_time_area.csv"):
-        assert (out / "tables" / f).is_file()
-    assert "valves" in data and data["valves"] == {}
 
 
 def test_two_stroke_crank_torque(tmp_path):

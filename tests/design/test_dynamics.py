@@ -330,3 +330,39 @@ def test_the_per_speed_records_at_once_are_each_speeds_own(dynamics):
     surge = [np.nan if x.max_surge is None else x.max_surge for x in each]
     np.testing.assert_array_equal(np.full(len(each), np.nan) if r.max_surge is None else r.max_surge, surge)
     np.testing.assert_array_equal(r.clash_margin, [np.nan if x.clash_margin is None else x.clash_margin for x in each])
+
+
+@pytest.mark.parametrize("model, node", [("1dof", "valve"), ("multi", "rocker")])
+def test_a_finger_s_node_has_its_reduced_mass_over_the_lift(model, node):
+    """The modern finger example's train: the node that carries the finger (the one-mass train's valve, the multi-mass
+    train's rocker) has the mass m_0 + J / G(v)^2 over its table, G = dv/dpsi of the hand-built linkage
+    (tests/finger_linkage.py, central differences at psi(v) by brentq), m_0 the node's reference mass less J / G^2
+    at the lift of the largest required spring force (the one-mass valve's mass beside the finger; 0 for the rocker),
+    at 9 positions of the table (the valve's lift plus the lash), to 1e-9."""
+    from pathlib import Path
+
+    from finger_linkage import hand_finger
+    from valvetrain.design.dynamics import build_train
+    from valvetrain.specification import load_spec, si
+
+    spec = load_spec(Path(__file__).parents[2] / "examples" / "modern-dohc-roller-finger.toml")
+    spec = spec.replace({"valves.intake.dynamics.model": model})
+    design = run(spec).valves["intake"]
+    valve = si(spec.valves["intake"], spec)
+    train, params = build_train(si(spec.valves["intake"].dynamics), valve, design.law, design.drive, "valves.intake",
+                                design.cam.cam_speed)
+    table, net = train.variable_mass, train.network()
+    assert table.node == node and net.variable_node == net.names.index(node)
+    hand, inertia = hand_finger(design.cam), valve.drive.masses.rocker_inertia
+
+    def reduced(v):
+        psi = hand.angle(v)
+        return inertia / (((hand.pad(psi + 1e-6) - hand.pad(psi - 1e-6)) @ hand.a) / 2e-6) ** 2
+
+    reference = net.mass[net.variable_node]
+    rest = reference - reduced(design.drive.lift[int(np.argmax(design.drive.required_force))])
+    if node == "rocker":
+        assert rest == pytest.approx(0.0, abs=1e-11)           # the rocker node is the finger alone
+    offset = params.lash if node == "valve" else 0.0
+    for i in np.linspace(0, table.position.size - 1, 9).astype(int):
+        assert table.mass[i] == pytest.approx(rest + reduced(table.position[i] + offset), rel=1e-9)

@@ -93,7 +93,7 @@ def test_spec12_sweep_table():
     float at 3600 and 4500 rpm starting near -37/-38 deg; seating velocity at 1500-3000 rpm near the design
     -0.3 m/s; no bounce at 3000 rpm; millimetre bounces once the valve floats.  Not reproduced exactly: the
     spec's reference train is not fully given (K and the seat are not stated; K = 67.5 N/mm of
-    tests/laws/test_laws_more.py gives a kinetostatic minimum of 143 N at 3000 rpm against the table's 163 N), so
+    tests/laws/test_dynamic.py gives a kinetostatic minimum of 143 N at 3000 rpm against the table's 163 N), so
     the angles and the float-regime velocities differ by a few degrees and tens of per cent."""
     law, train = spec12()
     rpm = np.array([1500, 3000, 3600, 4500])

@@ -11,8 +11,9 @@ DEG = np.pi / 180
 
 
 def test_combined_rebuilds_kurz():
-    """The combined-function mechanism with Kurz's segments (half-sine, quarter-sine, parabola to the nose,
-    Z = 5/8) is the Kurz law of Valve-train practical works (n.d.) to round-off (spec section 6: Kurz is a combined-function cam)."""
+    """The combined-function mechanism with Kurz's segments (half-sine, quarter-sine, parabola to the nose, Z = 5/8) is
+    the Kurz law of Valve-train practical works (n.d.) to round-off (Shang Hanji (1988), section 2.5: Kurz is a
+    combined-function cam; spec section 6)."""
     w = 0.02e-3 / DEG
     kurz = KurzLaw(6.25e-3, 0.25e-3, w, *np.radians([27, 6, 38]))
     combined = CombinedLaw(6.25e-3, 0.25e-3, w, [("half_sine", np.radians(27)), ("quarter_sine", np.radians(6)),

@@ -25,8 +25,8 @@ def _arcs(law, n=20001):
 
 
 def test_three_arc_worked_example_and_support_function():
-    """spec section 3: r0 20, h 8, phi_p0 60 deg, r2 5: a 23, r1 63.4286, phi1 19.9320 deg; the flat follower's lift is
-    the support function of the arc contour (spec: max error 6e-8 mm)."""
+    """Kolchin and Demidov (1980), worked example (spec section 3): r0 20, h 8, phi_p0 60 deg, r2 5: a 23, r1 63.4286,
+    phi1 19.9320 deg; the flat follower's lift is the support function of the arc contour (spec: max error 6e-8 mm)."""
     law = ThreeArcLaw(20.0, 8.0, np.radians(60), 5.0)
     assert (law.a, law.r1) == pytest.approx((23.0, 63.4286), abs=1e-4)
     assert np.degrees(law.phi1) == pytest.approx(19.9320, abs=1e-4)
@@ -44,7 +44,8 @@ def test_three_arc_worked_example_and_support_function():
 
 
 def test_three_arc_from_flank_angle_and_radius():
-    """spec section 3: from_phi1(25 deg) gives r2 2.02655, r1 55.2511; from the flank radius back to the same cam."""
+    """Kolchin and Demidov (1980), worked example (spec section 3): from_phi1(25 deg) gives r2 2.02655, r1 55.2511; from
+    the flank radius back to the same cam."""
     law = ThreeArcLaw.from_flank_angle(20.0, 8.0, np.radians(60), np.radians(25))
     assert (law.r2, law.r1) == pytest.approx((2.02655, 55.2511), abs=1e-4)
     again = ThreeArcLaw.from_flank_radius(20.0, 8.0, np.radians(60), law.r1)
@@ -52,9 +53,9 @@ def test_three_arc_from_flank_angle_and_radius():
 
 
 def test_tangent_cam_roller_centre_distance():
-    """spec section 4: r0 20, h 8, phi_p0 60 deg, r_r 10: r2 12, junction 24.7913 deg, h there 3.04542; the roller
-    centre stays one roller radius from the profile built of base circle, tangent lines and nose arc
-    (spec: max error 4.3e-7 mm)."""
+    """Kolchin and Demidov (1980), worked example (spec section 4): r0 20, h 8, phi_p0 60 deg, r_r 10: r2 12, junction
+    24.7913 deg, h there 3.04542; the roller centre stays one roller radius from the profile built of base circle,
+    tangent lines and nose arc (spec: max error 4.3e-7 mm)."""
     law = TangentLaw(20.0, 8.0, np.radians(60), 10.0)
     assert law.r2 == pytest.approx(12.0, abs=1e-12)
     assert np.degrees(law.junction) == pytest.approx(24.7913, abs=1e-4)
@@ -76,8 +77,9 @@ def test_tangent_cam_roller_centre_distance():
 
 
 def test_tangent_cam_flanks_are_straight():
-    """On the flank the pitch curve is a straight line offset by the roller radius, so rho_p is infinite (spec
-    section 4); round-off must not turn it into a huge radius of either sign (which read as a concave flank)."""
+    """On the flank the pitch curve is a straight line offset by the roller radius, so rho_p is infinite (Kolchin and
+    Demidov (1980); spec section 4); round-off must not turn it into a huge radius of either sign (which read as a
+    concave flank)."""
     law = TangentLaw(20.0, 8.0, np.radians(60), 10.0)
     flank = np.linspace(-law.half_angle + 1e-3, -law.half_angle + law.junction - 1e-3, 2001)
     h, dh, d2h, _ = law.derivatives(flank)

@@ -11,9 +11,9 @@ DEG = np.pi / 180
 
 
 def _dynamic():
-    """spec sections 2 and 8: c = 15000 N/mm, F0 = 400 N, k = 1.5, x0 = 0.30 mm, design seating velocity 0.3 m/s at
-    3000 rpm (camshaft); K = 67.5 N/mm and a constant-acceleration ramp (f = 0.5) reproduce the spec's ramp of
-    26.03 deg at 11.16 um/deg."""
+    """Shang Hanji (1988), section 4.1, and Stoddart (1953), worked example (spec sections 2 and 8): c = 15000 N/mm, F0
+    = 400 N, k = 1.5, x0 = 0.30 mm, design seating velocity 0.3 m/s at 3000 rpm (camshaft); K = 67.5 N/mm and a
+    constant-acceleration ramp (f = 0.5) reproduce the spec's ramp of 26.03 deg at 11.16 um/deg."""
     omega = 3000 * np.pi / 30
     return DynamicLaw(8e-3, np.radians(55), [2, 10, 18, 26, 34], 0.3 / omega, 15e6, 0.25, 67.5e3, 400.0, omega,
                       1.5, 0.3e-3, "constant_acceleration", 0.5), omega
@@ -31,9 +31,9 @@ def test_dynamic_cam_ramp():
 
 
 def test_dynamic_cam_needs_a_stiff_enough_drive():
-    """k h = x0 + y + (M omega^2 y'' + K y + F0)/c (spec section 8): the spec's drive gives a cam that rises to the
-    nose; with c 100 times softer the negative y'' near the nose makes the cam dip (a warning); with c 10^4 times
-    softer the nose falls below the ramp's end (no cam: an error naming the remedy)."""
+    """k h = x0 + y + (M omega^2 y'' + K y + F0)/c (Stoddart (1953); spec section 8): the spec's drive gives a cam that
+    rises to the nose; with c 100 times softer the negative y'' near the nose makes the cam dip (a warning); with c 10^4
+    times softer the nose falls below the ramp's end (no cam: an error naming the remedy)."""
     law, omega = _dynamic()
     assert law.fall_before_nose() == 0.0 and failed(law.checks()) == []
     args = (8e-3, np.radians(55), [2, 10, 18, 26, 34], 0.3 / omega)
@@ -49,7 +49,7 @@ def test_dynamic_cam_needs_a_stiff_enough_drive():
 
 def test_dynamic_cam_gives_the_design_valve_motion():
     """Simulated one-mass elastic train, M y'' = c(k h - x0 - y) - (F0 + K y), integrated with scipy's LSODA from the
-    valve's opening at the design speed: the valve follows the design polynomial (spec section 8)."""
+    valve's opening at the design speed: the valve follows the design polynomial (Stoddart (1953); spec section 8)."""
     from scipy.integrate import solve_ivp
 
     law, omega = _dynamic()

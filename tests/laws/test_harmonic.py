@@ -17,8 +17,8 @@ def _polydyne_target():
 
 @pytest.mark.parametrize("n,m", [(12, 1), (20, 2), (30, 2)])
 def test_harmonic_cam_constraints(n, m):
-    """spec section 9: h(0) = h_max and the even derivatives up to 2m vanish at +-alpha_W (odd ones by
-    construction), the fit residual small against the lift."""
+    """Shang Hanji (1988), section 4.2 (spec section 9): h(0) = h_max and the even derivatives up to 2m vanish at
+    +-alpha_W (odd ones by construction), the fit residual small against the lift."""
     target = _polydyne_target()
     law = HarmonicLaw(target, n, m)
     assert law.lift(0.0) == pytest.approx(8e-3, abs=1e-15)
@@ -37,7 +37,8 @@ def test_harmonic_fit_improves_with_n():
 
 
 def test_harmonic_limit_rule():
-    """N < alpha_W omega_n / (pi omega) (spec section 9): with epsilon = 0.00164 and alpha_W = 70 deg, N < 9.6."""
+    """N < alpha_W omega_n / (pi omega) (Shang Hanji (1988), section 4.2; spec section 9): with epsilon = 0.00164 and
+    alpha_W = 70 deg, N < 9.6."""
     eps = 0.00164
     assert harmonic_limit(np.radians(70), 1.0 / np.sqrt(eps), 1.0) == pytest.approx(9.6, abs=0.05)
 

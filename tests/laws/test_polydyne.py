@@ -28,7 +28,8 @@ def test_law_closes_at_the_ends():
 
 
 def test_seed000_inputs():
-    """Polydyne p = 8 on the appendix inputs (spec/valvetrain-works-1-8.md, 4.5)."""
+    """Polydyne p = 8 on the appendix inputs (Valve-train practical works (n.d.), work 3; spec/valvetrain-works-1-8.md,
+    4.5)."""
     law = PolydyneLaw(6.25e-3, np.deg2rad(71.0), 8)
     c = law.coefficients()
     expected = {"C2": -1.87243, "Cp": 1.87243, "Cq": -1.60494, "Cr": 0.74897, "Cs": -0.14403}
@@ -64,8 +65,8 @@ def test_junction_solver_reduces_to_closed_form():
 
 
 def test_ramp_junction_worked_example():
-    """spec/methods-seeds-002-004.md, section 7: h_max 8, h0 0.3, v0 0.4 mm/rad, alpha_B 55 deg, exponents
-    2, 10, 18, 26, 34: junction values (0.3, -0.4, 0, 0, 0), h'' in [-26.77, 80.59] mm/rad^2."""
+    """Shang Hanji (1988), section 2.6, worked example (spec section 7): h_max 8, h0 0.3, v0 0.4 mm/rad, alpha_B 55 deg,
+    exponents 2, 10, 18, 26, 34: junction values (0.3, -0.4, 0, 0, 0), h'' in [-26.77, 80.59] mm/rad^2."""
     law = PolydyneLaw(7.7e-3, np.deg2rad(55.0), 10, 18, 26, 34, ramp_height=0.3e-3, ramp_velocity=0.4e-3)
     junction = law.end - law.ramp_angle
     h, dh, d2h, _ = law.derivatives(np.array([junction - 1e-12, junction + 1e-12])) * 1e3
@@ -109,7 +110,8 @@ def test_law_against_an_independent_polynomial_evaluation(exponents):
 
 
 def test_polynomial_generalises_polydyne():
-    """The 5-exponent polynomial law with (2, p, q, r, s) is the polydyne law (spec section 7)."""
+    """The 5-exponent polynomial law with (2, p, q, r, s) is the polydyne law (Shang Hanji (1988), section 2.6; spec
+    section 7)."""
     a = PolynomialLaw(6.25e-3, np.radians(71), [2, 8, 14, 20, 26])
     b = PolydyneLaw(6.25e-3, np.radians(71), 8)
     theta = np.linspace(-1.3, 1.3, 101)

@@ -14,7 +14,7 @@ import pytest
 
 from valvetrain.bibliography import WORKS
 from valvetrain.cli import main
-from valvetrain.report.russian import SHORT
+from valvetrain.report.russian import REFERENCES, SHORT, citation, russian_citations, russian_typography
 from valvetrain.spring_materials import GRADES
 
 EXAMPLES = Path(__file__).parents[2] / "examples"
@@ -93,3 +93,29 @@ def test_no_russian_label_ends_in_a_dangling_preposition():
 
     texts = [ru for _, ru in NAMES.values()] + [v for v in TEXT["ru"].values() if isinstance(v, str)]
     assert [t for t in texts if re.search(r"\s(по|из|от|для|с)$", t.strip())] == []
+
+
+def test_a_citation_in_russian_word_by_word():
+    """The locators, a note and its units of one citation, translated by hand: "corrections note 27" -> "поправка
+    27", "work 6" -> "работа 6", "eq." -> "формула", "Table 10-4" -> "таблица 10-4", 80 MPa -> 80 МПа; a work in
+    another language keeps its short form."""
+    assert citation("Valve-train practical works (n.d.), work 6, eq. (6.14), corrections note 27") == \
+        "Практические работы по расчёту ГРМ (б. г.), работа 6, формула (6.14), поправка 27"
+    assert citation("Kolchin and Demidov (1980) (usually 30 deg inlet, 45 deg exhaust)") == \
+        "Колчин, Демидов (1980) (обычно 30° у впускного, 45° у выпускного клапана)"
+    assert citation("Shigley's Mechanical Engineering Design, 9th ed. (2011), Table 10-4: 80 MPa") == \
+        "Shigley's Mechanical Engineering Design, 9th ed. (2011), таблица 10-4: 80 МПа"
+
+
+def test_the_list_of_sources_and_the_decimal_comma():
+    """A Russian work's entry is written in Russian, another work's kept and marked English; numbers take a decimal
+    comma except in locators (таблица 2.3) and inside a designer's name, nested elements of it included."""
+    page = ('<li class="cite"><b>Kolchin and Demidov (1980)</b>: Kolchin, A. I. ...</li>'
+            '<li class="cite"><b>Wahl (1944)</b>: Wahl, A. M. Mechanical Springs.</li>'
+            '<p><span class="cite">Kolchin and Demidov (1980), eq. (2.5)</span></p>')
+    out = russian_citations(page)
+    assert '<li class="cite" lang="en"><b>Wahl (1944)</b>: Wahl, A. M. Mechanical Springs.</li>' in out
+    assert f'<li class="cite"><b>Колчин, Демидов (1980)</b>: {REFERENCES["Kolchin and Demidov (1980)"]}</li>' in out
+    assert '<span class="cite">Колчин, Демидов (1980), формула (2.5)</span>' in out
+    typed = russian_typography('<p>таблица 2.3: 0.25 мм <span class="name">v<span>1.5</span> 2.5</span> 3.75</p>')
+    assert typed == '<p>таблица 2.3: 0,25 мм <span class="name">v<span>1.5</span> 2.5</span> 3,75</p>'

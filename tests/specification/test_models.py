@@ -3,6 +3,7 @@ that cannot give a physically meaningful design are refused (exit 2, one message
 allowed), never a traceback or a result that cannot be true (issue 9)."""
 
 import numpy as np
+from pydantic import ValidationError
 import pytest
 from click.testing import CliRunner
 
@@ -11,6 +12,24 @@ from valvetrain.crank import pressure
 from valvetrain.specification import SpecError, parse_spec
 
 from appendix import appendix_spec, appendix_text, appendix_with
+
+
+def test_the_over_speed_ratio_key_as_the_readme_states_it():
+    """README, the keys' table: `[engine] over_speed_ratio`, default 1.1, allowed 1-2 (both ends allowed)."""
+    assert appendix_spec().engine.over_speed_ratio == 1.1          # not in the appendix file: the default
+    for value in (1.0, 2.0):
+        assert appendix_spec().replace({"engine.over_speed_ratio": value}).engine.over_speed_ratio == value
+    for value in (0.99, 2.01):
+        with pytest.raises(SpecError, match=rf"engine.over_speed_ratio = {value}: allowed \[1, 2\]"):
+            appendix_spec().replace({"engine.over_speed_ratio": value})
+
+
+def test_an_unknown_key_is_refused_by_its_name_and_a_section_is_frozen():
+    """A misspelt key is no silent default: it is refused by its path; a validated section cannot be changed."""
+    with pytest.raises(SpecError, match=r"engine.rated_speed_rmp: unknown key"):
+        parse_spec(appendix_with(("rated_speed_rpm = ", "rated_speed_rmp = 1.0\nrated_speed_rpm = ")))
+    with pytest.raises(ValidationError):
+        appendix_spec().engine.bore_mm = 90.0
 
 
 def test_a_cam_event_over_a_revolution_is_refused(refused):

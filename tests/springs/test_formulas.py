@@ -27,8 +27,8 @@ def test_bhandari_example_11_1():
 
 
 def test_shape_factor_table_is_close_to_wahl():
-    """The manual's chi table (eq. 6.1) lies below Wahl's formula: by 5.1 % at D/d = 3, by under 1.9 % from 4 to 12
-    (independent evaluation of both)."""
+    """The manual's chi table (eq. 6.1) lies below the formula of Wahl (1944): by 5.1 % at D/d = 3, by under 1.9 % from
+    4 to 12 (independent evaluation of both)."""
     c, chi = springs.SHAPE_FACTOR_TABLE
     rel = chi / springs.wahl_factor(c) - 1.0
     assert np.all(rel < 0)
@@ -39,7 +39,8 @@ def test_shape_factor_table_is_close_to_wahl():
 
 
 def test_natural_frequency_reading():
-    """(6.13) reading [A] agrees within 1.2 % with Kolchin's n_c = 2.17e7 d/(i D^2) min^-1 (spec work 6)."""
+    """(6.13) reading [A] agrees within 1.2 % with Kolchin and Demidov (1980)'s n_c = 2.17e7 d/(i D^2) min^-1 (spec work
+    6)."""
     d, D, i = 4e-3, 30e-3, 6.0
     w = springs.natural_frequency(d, D, i, 8.0e10, 7850.0)
     kolchin = 2.17e7 * 4.0 / (i * 30.0**2) * np.pi / 30.0

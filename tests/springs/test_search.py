@@ -20,9 +20,10 @@ from springs.test_requirement import _requirement
 
 
 def _brute_force(line, throat, omega, options):
-    """Every candidate of the search, one at a time with the scalar formulas of Valve-train practical works (n.d.), (6.1), (6.2), (6.9)-(6.14)
-    and the wire limits written out (Shigley Table 10-4: R_m = A/d^m; [tau] = 0.5 R_m; Goodman through Zimmerli's
-    peened point, S_su = 0.67 R_m): (passing springs as (mass, D, d), number of candidates)."""
+    """Every candidate of the search, one at a time with the scalar formulas of Valve-train practical works (n.d.),
+    (6.1), (6.2), (6.9)-(6.14) and the wire limits written out (Shigley's Mechanical Engineering Design, 9th ed. (2011),
+    Table 10-4: R_m = A/d^m; [tau] = 0.5 R_m; Goodman through Zimmerli's peened point, S_su = 0.67 R_m): (passing
+    springs as (mass, D, d), number of candidates)."""
     material = options.materials[0]
     a, m = {"VDSiCr": (1974.0, 0.108), "VDCrV": (2005.0, 0.168)}[material.grade]
     g, rho, h = material.shear_modulus, material.density, line.lift

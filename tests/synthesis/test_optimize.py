@@ -16,12 +16,13 @@ import pytest
 from valvetrain.cli import main
 from valvetrain.design import run
 from valvetrain.specification.reading import load_spec, parse_spec
-from valvetrain.synthesis.constraints import Limits, contact_stress_value
+from valvetrain.specification.si import si
+from valvetrain.synthesis.constraints import Limits, contact_stress_value, spring_reserve_value
 from valvetrain.synthesis.optimize import (Problem, Variable, default_variables, design_limits, optimize_valve,
                                            parse_variables)
 
 from appendix import appendix_text, appendix_spec
-from synthesis.test_constraints import pitch_radius_by_differences
+from synthesis.test_constraints import hand_finger_stress, pitch_radius_by_differences
 
 MM, DEG = 1e-3, np.pi / 180.0
 
@@ -293,3 +294,31 @@ def test_fast_acceleration_margins_of_a_finger_are_the_roller_s():
     named = dict(zip(problem.margin_names(), problem.evaluate(problem.x0)[1], strict=True))
     assert named["max acceleration"] == pytest.approx((6000 - 4899.75) / 6000, abs=2e-4)
     assert named["min acceleration"] == pytest.approx((3000 - 2196.90) / 3000, abs=2e-4)
+
+
+def test_fast_margins_of_a_finger_take_its_variable_ratio():
+    """The optimiser's fast margins on the shipped finger (intake): the contact stress under the cam's force, the
+    force at the valve carried through the linkage, against the direct geometric construction of
+    synthesis/test_constraints.py (hand_finger_stress, its largest on 201 angles refined on 201, 688.140 MPa), to
+    1e-4; and the spring reserve with the finger's inertia force by its variable ratio, against the drive stage's
+    (spring_reserve_value: the chosen spring over m_v |j_v| with j_v of Lagrange's equation of the linkage,
+    tests/followers/test_finger.py), to 1e-3 (the search's grid of the event against the drive stage's 2001 angles).
+    Found: 0.311872 against 0.311860, 0.2010056 against 0.2010057.  Before the fix the margins took the valve's force
+    for the cam's (margin 0.4679: 532.1 MPa) and the finger's inertia at its ratio on the heel circle (margin
+    0.1985)."""
+    spec = load_spec(EXAMPLES / "modern-dohc-roller-finger.toml")
+    design = run(spec).valves["intake"]
+    valve = si(spec.valves["intake"], spec)
+    limit, width, modulus = 1e9, 0.014, 2.1e11
+    problem = Problem(spec, design, default_variables(spec.valves["intake"], spec.engine),
+                      Limits(cam_width=width, max_contact_stress=limit, contact_modulus=modulus))
+    named = dict(zip(problem.margin_names(), problem.evaluate(problem.x0)[1], strict=True))
+    law = design.law
+    coarse = np.linspace(law.valve_opens, law.valve_closes, 201)
+    at = coarse[int(np.argmax(hand_finger_stress(design, valve, coarse, width, modulus)))]
+    step = coarse[1] - coarse[0]
+    fine = np.linspace(max(at - step, law.valve_opens), min(at + step, law.valve_closes), 201)
+    hand = hand_finger_stress(design, valve, fine, width, modulus).max()
+    assert named["contact stress"] == pytest.approx((limit - hand) / limit, rel=1e-4)
+    reserve, target = spring_reserve_value(design), problem.limits.min_spring_reserve
+    assert named["spring reserve"] == pytest.approx((reserve - target) / target, rel=1e-3)

@@ -19,8 +19,9 @@ from .. import camshaft as shaft
 from ..bibliography import cite
 from ..checks import Check, check
 from ..units import to_display
+from ..layouts import finger_mass_change
 from .crank import firing_angles
-from .drive import event_load_maps
+from .drive import contact_loads, event_load_maps
 from .lubrication import contact_map
 from .results import quantity, record
 
@@ -131,9 +132,13 @@ def lobe_set(name, valve, engine, design, firing) -> LobeSet:
     -----
     T(theta) = P_T(theta) dh/dtheta (+ T_f): the cam force at the rated speed from the strength stage's load maps
     (:func:`valvetrain.design.drive.event_load_maps`: the dynamics' simulated force where it ran), the friction torque
-    from :func:`valvetrain.design.lubrication.contact_map` where the valve has a lubrication section.  The train's
-    inertia reduced to the camshaft J = m_t (1/2 pi) int h'^2 dtheta (its kinetic energy m_t (omega h')^2 / 2 averaged
-    over the revolution).
+    from :func:`valvetrain.design.lubrication.contact_map` under the cam's normal force
+    (:func:`valvetrain.design.drive.contact_loads`) where the valve has a lubrication section.  For a finger the law
+    is the valve's and P_T the force at the valve: P_T dv/dtheta is the torque of the cam's normal force N =
+    P_T G / (L_r cos beta) about the cam centre (the virtual work of the linkage; Norton (2009)).  The train's inertia
+    reduced to the camshaft J = (1/2 pi) int m_t(theta) h'^2 dtheta (its kinetic energy m_t (omega h')^2 / 2 averaged
+    over the revolution), m_t with a finger's J / G(psi)^2 at each angle
+    (:func:`valvetrain.layouts.finger_mass_change`).
     """
     cam, drive = design.cam, design.drive
     maps = event_load_maps(valve, engine, cam, drive, design.dynamics)[1]
@@ -144,12 +149,14 @@ def lobe_set(name, valve, engine, design, firing) -> LobeSet:
     load = m.kind
     if design.lubrication is not None:
         omega = np.array([[cam.cam_speed]])
+        normal = contact_loads(cam, [m])[0].force[row]
         torque = contact_map(valve.lubrication, cam, valve.parts.cam_width, valve.parts.contact_modulus, theta,
-                             force[None, :], omega)["drive_torque"][0]
+                             normal[None, :], omega)["drive_torque"][0]
         load += ", with friction"
     else:
         torque = np.where(force > 0.0, force, 0.0) * dh
-    inertia = drive.masses.at_tappet * float(np.trapezoid(dh**2, theta)) / (2.0 * np.pi)
+    inertia = (drive.masses.at_tappet * float(np.trapezoid(dh**2, theta))
+               + float(np.trapezoid(finger_mass_change(valve, cam.law, theta) * dh**2, theta))) / (2.0 * np.pi)
     return LobeSet(name, valve.count, theta, torque, shaft.lobe_noses(cam.nose, firing, engine.strokes),
                    drive.strength.cam_force_max, inertia, load)
 

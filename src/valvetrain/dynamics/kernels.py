@@ -49,13 +49,15 @@ CAM = -2
 
 
 @njit(cache=True, nogil=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
-def _forces(x, v, inv_mass, ra, rb, k, d, gap, pre, uni, acc, force):
+def _forces(x, v, inv_mass, ra, rb, k, d, gap, pre, uni, vnode, vtab, acc, force):
     """Element forces (compression positive, +f on row rb, -f on row ra) and row accelerations of a block.
 
     ``x``, ``v`` and ``acc`` are (rows, B): one column per speed of the block, the node rows first, then a
     row of the ground (always 0) and a row of the cam excitation; ``inv_mass`` is 0 on those two rows, so
     their accelerations stay 0.  The element's case (contact or spring) is decided once per element, and the
     loop over the block's speeds has no branch the compiler cannot turn into a select: it runs in SIMD lanes.
+    The node ``vnode`` (-1: none) has the mass of the table ``vtab`` (its ``inv_mass`` 1, so that its row sums
+    the force; :func:`_variable_mass`).
     """
     rows, bsize = x.shape
     for i in range(rows):
@@ -82,12 +84,42 @@ def _forces(x, v, inv_mass, ra, rb, k, d, gap, pre, uni, acc, force):
                 fe[s] = f
                 fb[s] += f * mb
                 fa[s] -= f * ma
-
-
+    if vnode >= 0:
+        _variable_mass(x[vnode], v[vnode], acc[vnode], vtab)
 
 
 @njit(cache=True, nogil=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
-def _rk4(x, v, h, cam_x, cam_v, off, im, ra, rb, k, d, gap, pre, uni, xs, vs, kx, acc, scratch):
+def _variable_mass(x, v, acc, table):
+    """The acceleration of a node of mass m(x) under the force ``acc`` (B,) [N] at positions ``x`` [m] and velocities
+    ``v`` [m/s], in place: (F - m'(x) v^2 / 2) / m(x) (:class:`~valvetrain.dynamics.models.VariableMass`).
+
+    ``table`` (3, K): evenly spaced positions [m], m [kg] and m' [kg/m] there; between them the cubic Hermite of m
+    and m' (its derivative the m' used), beyond the ends m at the end and m' = 0.
+    """
+    x0 = table[0, 0]
+    dx = table[0, 1] - x0
+    last = table.shape[1] - 1
+    for s in range(x.size):
+        u = (x[s] - x0) / dx
+        if u <= 0.0:
+            m, dm = table[1, 0], 0.0
+        elif u >= last:
+            m, dm = table[1, last], 0.0
+        else:
+            j = min(int(u), last - 1)
+            t = u - j
+            t2 = t * t
+            t3 = t2 * t
+            m0, m1 = table[1, j], table[1, j + 1]
+            s0, s1 = table[2, j] * dx, table[2, j + 1] * dx
+            m = ((2.0 * t3 - 3.0 * t2 + 1.0) * m0 + (t3 - 2.0 * t2 + t) * s0 + (3.0 * t2 - 2.0 * t3) * m1
+                 + (t3 - t2) * s1)
+            dm = ((6.0 * t2 - 6.0 * t) * (m0 - m1) + (3.0 * t2 - 4.0 * t + 1.0) * s0 + (3.0 * t2 - 2.0 * t) * s1) / dx
+        acc[s] = (acc[s] - 0.5 * dm * v[s] * v[s]) / m
+
+
+@njit(cache=True, nogil=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+def _rk4(x, v, h, cam_x, cam_v, off, im, ra, rb, k, d, gap, pre, uni, vnode, vtab, xs, vs, kx, acc, scratch):
     """One classical RK4 step of every column of a block's state ``x``, ``v`` (rows, B), updated in place.
 
     Column s advances by ``h[s]`` [s]; at stage q (0-3: start, middle twice, end) the cam row is ``cam_x[q]`` [m]
@@ -115,7 +147,7 @@ def _rk4(x, v, h, cam_x, cam_v, off, im, ra, rb, k, d, gap, pre, uni, xs, vs, kx
         for i in range(n):
             for s in range(bsize):
                 kq[i, s] = vs[i, s]
-        _forces(xs, vs, im, ra, rb, k, d, gap, pre, uni, acc[q], scratch)
+        _forces(xs, vs, im, ra, rb, k, d, gap, pre, uni, vnode, vtab, acc[q], scratch)
     for i in range(n):
         for s in range(bsize):
             x[i, s] += h[s] / 6.0 * (v[i, s] + 2.0 * kx[1, i, s] + 2.0 * kx[2, i, s] + kx[3, i, s])
@@ -125,8 +157,8 @@ def _rk4(x, v, h, cam_x, cam_v, off, im, ra, rb, k, d, gap, pre, uni, xs, vs, kx
 @njit(cache=True, nogil=True)
 def integrate_block(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_per_rev, max_revolutions, tolerance,
                     rate, inv_mass, x_init, ra, rb, k, d, gap, pre, uni, closing, rec_nodes, rec_elems, clash_gap,
-                    surge_ref, surge_w, adjuster, contact, out_x, out_v, out_a, out_f, out_clash, out_surge, out_revs,
-                    out_z) -> None:
+                    surge_ref, surge_w, adjuster, contact, vnode, vtab, out_x, out_v, out_a, out_f, out_clash,
+                    out_surge, out_revs, out_z) -> None:
     """Integrate the speeds ``idx`` of one block (all with ``n_sub`` sub-steps) in lockstep until each repeats.
 
     Every revolution is recorded over the previous one; after each revolution the state of every speed is compared
@@ -188,6 +220,10 @@ def integrate_block(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_p
         largest refill velocity [m/s].
     contact : int
         The cam-follower contact element (the adjuster's extension shifts its cam end).
+    vnode : int
+        The node whose mass changes with its position (-1: none), its ``inv_mass`` entry unused.
+    vtab : ndarray (3, K)
+        Its mass table (:func:`_variable_mass`, :meth:`~valvetrain.dynamics.models.VariableMass.array`).
     out_z : ndarray (S, steps_per_rev)
         The adjuster's plunger extension over the recorded revolution [m, at the adjuster] (0 without one).
 
@@ -213,6 +249,8 @@ def integrate_block(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_p
     im = np.zeros(rows)
     for i in range(n):
         im[i] = inv_mass[i]
+    if vnode >= 0:
+        im[vnode] = 1.0
     for s in range(bsize):
         om[s] = omegas[idx[s]]
         dt[s] = dtheta / (n_sub * om[s])
@@ -245,12 +283,12 @@ def integrate_block(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_p
                 cam_v[3, s] = om[s] * d2
                 x[cam, s] = u0 + off[s]
                 v[cam, s] = cam_v[0, s]
-            _forces(x, v, im, ra, rb, k, d, gap, pre, uni, acc[0], force)
+            _forces(x, v, im, ra, rb, k, d, gap, pre, uni, vnode, vtab, acc[0], force)
             if ratio > 0.0:
                 _adjust(z, off, x, force[contact], cam, rb[contact], k[contact], gap[contact], adjuster, dt)
                 for s in range(bsize):
                     x[cam, s] = u0 + off[s]
-                _forces(x, v, im, ra, rb, k, d, gap, pre, uni, acc[0], force)
+                _forces(x, v, im, ra, rb, k, d, gap, pre, uni, vnode, vtab, acc[0], force)
             if closing >= 0:
                 for i in range(rows):
                     for s in range(bsize):
@@ -261,13 +299,13 @@ def integrate_block(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_p
                         surge_w, out_x, out_v, out_a, out_f, out_clash, out_surge)
                 for s in range(bsize):
                     out_z[idx[s], step // n_sub] = z[s]
-            _rk4(x, v, dt, cam_x, cam_v, off, im, ra, rb, k, d, gap, pre, uni, xs, vs, kx, acc, scratch)
+            _rk4(x, v, dt, cam_x, cam_v, off, im, ra, rb, k, d, gap, pre, uni, vnode, vtab, xs, vs, kx, acc, scratch)
             if closing >= 0:
                 ia, ib, ge = ra[closing], rb[closing], gap[closing]
                 for s in range(bsize):
                     if xb[ia, s] - xb[ib, s] - ge <= 0.0 and x[ia, s] - x[ib, s] - ge > 0.0:
                         _split_step(s, xb, vb, acc[0], x, v, dt[s], om[s], dtheta / n_sub, u0, d0, u2, d2, off[s],
-                                    closing, im, ra, rb, k, d, gap, pre, uni)
+                                    closing, im, ra, rb, k, d, gap, pre, uni, vnode, vtab)
             j0 = j2
         done = True
         for s in range(bsize):
@@ -285,7 +323,8 @@ def integrate_block(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_p
 
 
 @njit(cache=True, nogil=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
-def _split_step(s, xb, vb, acc, x, v, dt, om, step_angle, u0, d0, u2, d2, shift, e, im, ra, rb, k, d, gap, pre, uni):
+def _split_step(s, xb, vb, acc, x, v, dt, om, step_angle, u0, d0, u2, d2, shift, e, im, ra, rb, k, d, gap, pre, uni,
+                vnode, vtab):
     """Redo the step of speed ``s`` in which element ``e`` closed: RK4 from the start (``xb``, ``vb``, acceleration
     ``acc``) to the closing, located by the Taylor series of the element's gap, then RK4 from it to the step's end;
     the result replaces column ``s`` of ``x``, ``v``.  A contact law that switches inside a step (the seat's damping
@@ -324,8 +363,8 @@ def _split_step(s, xb, vb, acc, x, v, dt, om, step_angle, u0, d0, u2, d2, shift,
                                 + (-6 * f2 + 6 * f) * u2 / step_angle + (3 * f2 - 2 * f) * d2)
         xl[rows - 1, 0] = cam_x[0] + shift
         vl[rows - 1, 0] = cam_v[0, 0]
-        _forces(xl, vl, im, ra, rb, k, d, gap, pre, uni, kv[0], force)
-        _rk4(xl, vl, h, cam_x, cam_v, off, im, ra, rb, k, d, gap, pre, uni, xs, vs, kx, kv, scratch)
+        _forces(xl, vl, im, ra, rb, k, d, gap, pre, uni, vnode, vtab, kv[0], force)
+        _rk4(xl, vl, h, cam_x, cam_v, off, im, ra, rb, k, d, gap, pre, uni, vnode, vtab, xs, vs, kx, kv, scratch)
     for i in range(rows - 2):
         x[i, s] = xl[i, 0]
         v[i, s] = vl[i, 0]

@@ -79,6 +79,53 @@ NO_ADJUSTER = np.zeros(6)
 
 
 @dataclass(frozen=True)
+class VariableMass:
+    """A node whose mass changes with its own position: a finger follower's inertia about its pivot reduced to the
+    valve through its variable ratio (:func:`~valvetrain.dynamics.kernels.integrate_block`).  SI units.
+
+    Attributes
+    ----------
+    node : str
+        The node's name (``"valve"`` of a one-mass train, ``"rocker"`` of a multi-mass one).
+    position : ndarray (K,)
+        The node's positions x [m], evenly spaced and ascending (K >= 2).
+    mass : ndarray (K,)
+        The node's whole mass m(x) there [kg].
+    slope : ndarray (K,)
+        dm/dx [kg/m] there.
+
+    Notes
+    -----
+    The node's kinetic energy is m(x) x_dot^2 / 2, and Lagrange's equation with the generalised force F of the
+    elements on the node gives
+
+    .. math:: m(x)\\,\\ddot x + \\tfrac12\\,m'(x)\\,\\dot x^2 = F
+
+    (the velocity-squared term of a configuration-dependent inertia; with a conservative F it keeps m x_dot^2 / 2 +
+    V(x) constant).  Between the positions the kernel takes the cubic Hermite interpolant of m and m', whose slope is
+    the interpolated m'; beyond the ends m is held at the end value and m' = 0.
+
+    References
+    ----------
+    Norton (2009), the chapter on the dynamics of follower trains (the equivalent mass of a linkage of variable
+    ratio, its kinetic energy in Lagrange's equation); Wang (2007), the chapter on valvetrain dynamics.
+    """
+
+    node: str
+    position: np.ndarray
+    mass: np.ndarray
+    slope: np.ndarray
+
+    def array(self):
+        """The kernel's table (3, K): positions, masses and slopes."""
+        return np.stack([self.position, self.mass, self.slope]).astype(float)
+
+
+NO_VARIABLE_MASS = np.zeros((3, 0))
+"""The kernel's table of a train whose masses are all constant."""
+
+
+@dataclass(frozen=True)
 class Network:
     """A lumped train ready for :func:`~valvetrain.dynamics.kernels.integrate_block` (SI, valve side).
 
@@ -106,6 +153,11 @@ class Network:
         k, to turn the valve-side cam force into the force at the cam.
     adjuster : ndarray (6,)
         :meth:`Adjuster.array` of a hydraulic lash adjuster in series with the cam contact (:data:`NO_ADJUSTER`).
+    variable_node : int
+        The node whose mass changes with its position (-1: none); ``mass`` holds its reference value (the modes, the
+        element dampings, the perturbation parameter).
+    variable_mass : ndarray (3, K)
+        :meth:`VariableMass.array` of that node (:data:`NO_VARIABLE_MASS`).
     """
 
     names: tuple
@@ -123,6 +175,8 @@ class Network:
     surge_weight: np.ndarray
     rocker_ratio: float
     adjuster: np.ndarray = field(default_factory=NO_ADJUSTER.copy)
+    variable_node: int = -1
+    variable_mass: np.ndarray = field(default_factory=NO_VARIABLE_MASS.copy)
 
     @property
     def valve(self):
@@ -172,7 +226,10 @@ class Network:
         inside the stability region of RK4.
         """
         n = self.mass.size
-        inv = (1.0 / self.mass)[:, None]
+        mass = self.mass.copy()
+        if self.variable_node >= 0:
+            mass[self.variable_node] = min(mass[self.variable_node], self.variable_mass[1].min())
+        inv = (1.0 / mass)[:, None]
         state = np.block([[np.zeros((n, n)), np.eye(n)],
                           [-inv * self.matrix(self.stiffness), -inv * self.matrix(self.damping)]])
         return float(np.abs(np.linalg.eigvals(state)).max())
@@ -287,7 +344,7 @@ class _Builder:
         self.damped("seat", GROUND, valve, stiffness, ratio, unilateral=True)
         return -springs_preload / stiffness
 
-    def build(self, x_valve, valve, rocker_ratio, adjuster=None):
+    def build(self, x_valve, valve, rocker_ratio, adjuster=None, variable=None):
         rows = list(zip(*self.rows, strict=True))
         weight = np.array(self.weight)
         x_init = x_valve * np.where(weight > 0.0, weight, 1.0)   # drive parts resting on the seated valve
@@ -295,7 +352,9 @@ class _Builder:
                        np.array(rows[0], dtype=np.int64), np.array(rows[1], dtype=np.int64), np.array(rows[2]),
                        np.array(rows[3]), np.array(rows[4]), np.array(rows[5]), np.array(rows[6], dtype=np.bool_),
                        np.array(rows[7]), np.array(self.weight), float(rocker_ratio),
-                       NO_ADJUSTER.copy() if adjuster is None else adjuster.array())
+                       NO_ADJUSTER.copy() if adjuster is None else adjuster.array(),
+                       -1 if variable is None else self.names.index(variable.node),
+                       NO_VARIABLE_MASS.copy() if variable is None else variable.array())
 
 
 @dataclass(frozen=True)
@@ -320,6 +379,11 @@ class OneMassTrain:
         Valve seat contact c_s [N/m], C_s [N s/m].
     notes : tuple of str
         How each value was obtained.
+    adjuster : Adjuster, optional
+        A hydraulic lash adjuster in series with the cam contact.
+    variable_mass : VariableMass, optional
+        The valve node's mass as a function of its lift (a finger follower's inertia by its variable ratio); M is
+        then its reference value.
 
     Notes
     -----
@@ -340,6 +404,7 @@ class OneMassTrain:
     seat_damping: float = 0.0
     notes: tuple = ()
     adjuster: Optional[Adjuster] = None
+    variable_mass: Optional[VariableMass] = None
 
     def network(self):
         """The train as a :class:`Network`: one node, cam contact with the lash, spring, seat."""
@@ -348,7 +413,8 @@ class OneMassTrain:
         net.element("cam contact", CAM, valve, self.stiffness, self.damping, gap=self.lash, unilateral=True)
         net.element("spring at valve", valve, GROUND, self.spring_rate, 0.0, preload=self.preload)
         net.element("seat", GROUND, valve, self.seat_stiffness, self.seat_damping, unilateral=True)
-        return net.build(-self.preload / self.seat_stiffness, valve, self.rocker_ratio, self.adjuster)
+        return net.build(-self.preload / self.seat_stiffness, valve, self.rocker_ratio, self.adjuster,
+                         self.variable_mass)
 
 
 def one_mass_train(mass, stiffness, spring_rate, preload, rocker_ratio=1.0, lash=0.0, damping_ratio=DAMPING_RATIO,
@@ -403,6 +469,11 @@ class MultiMassTrain:
         Valve seat contact.
     notes : tuple of str
         How each value was obtained.
+    adjuster : Adjuster, optional
+        A hydraulic lash adjuster in series with the cam contact.
+    variable_mass : VariableMass, optional
+        A drive node's mass as a function of its position (a finger's inertia by its variable ratio); ``drive``
+        holds its reference value.
 
     Notes
     -----
@@ -426,6 +497,7 @@ class MultiMassTrain:
     seat_damping_ratio: float = SEAT_DAMPING_RATIO
     notes: tuple = field(default=())
     adjuster: Optional[Adjuster] = None
+    variable_mass: Optional[VariableMass] = None
 
     def network(self):
         """The train as a :class:`Network`."""
@@ -440,7 +512,7 @@ class MultiMassTrain:
             net.damped(name, ends[i], ends[i + 1], c, self.damping_ratio, unilateral=True,
                        gap=self.lash if i == self.lash_link else 0.0)
         x_valve = net.seat(valve, self.seat_stiffness, self.seat_damping_ratio, sum(s.preload for s in self.springs))
-        return net.build(x_valve, valve, self.rocker_ratio, self.adjuster)
+        return net.build(x_valve, valve, self.rocker_ratio, self.adjuster, self.variable_mass)
 
 
 def natural_modes(network, held=(), opened=()) -> tuple[np.ndarray, np.ndarray]:

@@ -672,8 +672,9 @@ def sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, progress=None, bo
         integrate_block(idx, speeds, int(n_sub[idx[0]]), dtheta, u, du, per_step, steps, int(revolutions),
                         float(tolerance), float(rate), inv_mass, net.x_init, ra, rb, net.stiffness, net.damping,
                         net.gap, net.preload, net.unilateral, int(net.seat_element), rec_nodes, rec_elems,
-                        net.clash_gap, int(net.valve), net.surge_weight, net.adjuster, int(net.cam_element), out_x,
-                        out_v, out_a, out_f, out_clash, out_surge, out_revs, out_z)
+                        net.clash_gap, int(net.valve), net.surge_weight, net.adjuster, int(net.cam_element),
+                        int(net.variable_node), net.variable_mass, out_x, out_v, out_a, out_f, out_clash, out_surge,
+                        out_revs, out_z)
         return idx.size
 
     _notify_compile()

@@ -55,7 +55,8 @@ Write one module in this package with a subclass of :class:`Follower` decorated 
   :meth:`contact_stress`, and the film, :meth:`lubrication`); its mass is today the tappet's of the layout's
   train (``[drive.masses] tappet_kg``, :mod:`valvetrain.layouts`).  A follower with an inertia of its own (a
   finger about its pivot) adds its node where the layout's train is built (``design/dynamics.py``,
-  ``_multi_train``), reading its mass from ``[drive.masses]``.
+  ``_multi_train``), reading its mass from ``[drive.masses]``; a reduced inertia that changes with the lift is
+  that node's :class:`~valvetrain.dynamics.models.VariableMass` (``design/dynamics.py``, ``finger_mass``).
 
 - ``rolling`` selects, beside the geometry, what the stages report: a rolling follower's profile record (roller
   radius, largest pressure angle, concave radius) and its side-force record and the pressure-angle checks; a

@@ -148,7 +148,7 @@ class PivotedFollower(RollerFollower):
                     f"cannot reach the roller centre's heel circle, base_radius_mm + roller_radius_mm = "
                     f"{g0 * 1e3:g} mm", " ")
         lb = self._pad[0]
-        reach = lb * (1.0 - np.sin(self._chi0(heel)))
+        reach = self.reach(heel)
         if lift >= reach:
             return ("finger_valve_angle_deg", f"{np.degrees(self.valve_angle):g}",
                     f"the valve pad {lb * 1e3:g} mm from the pivot (finger_pad_arm_mm, finger_pad_drop_mm) reaches a "
@@ -168,6 +168,11 @@ class PivotedFollower(RollerFollower):
                     f"from {ratio[0]:.4g} to {ratio[-1]:.4g} over the lift); allowed: a finger whose angle grows as the "
                     "cam lifts its roller (lever ratio > 0)", ": ")
         return None
+
+    def reach(self, heel):
+        """The largest valve lift the pad gives [m], L_b (1 - sin chi_0) (the pad's centre square to the valve axis
+        from the pivot), with the roller on the heel circle of radius ``heel`` [m]."""
+        return self._pad[0] * (1.0 - np.sin(self._chi0(heel)))
 
     def rest_ratio(self, heel):
         """The lever ratio i_0 = G(psi_0) / L_r with the roller on the heel circle of radius ``heel`` [m]."""
@@ -251,6 +256,14 @@ class PivotedFollower(RollerFollower):
         valve at the valve lifts ``h`` [m] (the kinetic energy J psi_dot^2 / 2 = (J / G^2) v_dot^2 / 2; Norton (2009),
         the chapter on the dynamics of follower trains)."""
         return inertia / self.valve_arm(self.angle_of(h, heel)) ** 2
+
+    def reduced_inertia_slope(self, inertia, heel, h):
+        """d(J / G^2)/dv = 2 J L_b sin(chi) / G^4 [kg/m]: how the reduced inertia (:meth:`reduced_inertia`) changes
+        with the valve lift at the lifts ``h`` [m] (G_psi = dG/dpsi = -L_b sin chi and dpsi/dv = 1 / G; Norton (2009),
+        the chapter on the dynamics of follower trains)."""
+        lb, beta = self._pad
+        psi = self.angle_of(h, heel)
+        return 2.0 * inertia * lb * np.sin(psi + self.valve_angle + beta) / self.valve_arm(psi) ** 4
 
     def inertia_force(self, inertia, heel, h, dh, d2h):
         """The force at the valve that turns the finger, per camshaft speed squared [N s^2/rad^2 = kg m/rad^2]:

@@ -61,11 +61,6 @@ def Pair(low, high, unit="") -> Any:  # noqa: N802 (a type factory, like Length)
     return Annotated[tuple[_bounded(low, high, unit), _bounded(low, high, unit)], Field(strict=False)]
 
 
-MAX_LIFT_TO_THROAT = 0.5
-"""Largest valve lift / throat diameter accepted.  The curtain area pi d y equals the throat area at y = d/4
-(Valve-train practical works (n.d.), eq. 1.3 with the seat cone neglected), the recommended lift is 0.18-0.30 d (Valve-train practical works (n.d.), work 2); a
-lift of more than half the throat is no valve design."""
-
 RAMP_VELOCITY = _bounded(0.001, 1.0, "mm/deg", low_open=False)
 """Tappet velocity at the end of a ramp; Valve-train practical works (n.d.), work 2 recommends 0.008-0.022 mm/deg, and below 0.001 mm/deg
 a ramp of the usual clearance would outlast the whole cam revolution."""

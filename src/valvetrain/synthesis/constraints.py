@@ -19,6 +19,7 @@ import numpy as np
 from .. import strength
 from ..checks import Check, check
 from ..design.valve import follower_accelerations
+from ..layouts import finger_inertia_force
 from ..numerics import extremum
 from ..units import DEG, MM
 
@@ -178,7 +179,7 @@ def acceleration_band(design, low=None, high=None) -> list[Check]:
     return out
 
 
-def worst_cam_force(spring_force, mass, rocker_ratio, top_acceleration) -> np.ndarray:
+def worst_cam_force(spring_force, mass, rocker_ratio, top_acceleration, finger=0.0) -> np.ndarray:
     """The largest cam force over the engine speeds from standstill up to a top speed [N].
 
     Parameters
@@ -191,17 +192,21 @@ def worst_cam_force(spring_force, mass, rocker_ratio, top_acceleration) -> np.nd
         i_k.
     top_acceleration : ndarray
         Tappet acceleration at the top speed [m/s^2].
+    finger : ndarray or float
+        What a finger's inertia by its variable ratio adds at the valve at the top speed [N]
+        (:func:`~valvetrain.layouts.finger_inertia_force` times omega^2; 0 for another follower).
 
     Notes
     -----
     P_T = i_k (P_spr + m_v i_k j) (Valve-train practical works (n.d.), eq. 7.1) is linear in omega^2: its largest
     value over the speeds is the standstill's (j = 0) where the tappet decelerates and the top speed's where it
-    accelerates.
+    accelerates (a finger's inertia force by its variable ratio counted with m_v i_k j).
     """
-    return strength.cam_force(spring_force, mass * rocker_ratio * np.clip(top_acceleration, 0.0, None), rocker_ratio)
+    return strength.cam_force(spring_force, np.clip(mass * rocker_ratio * top_acceleration + finger, 0.0, None),
+                              rocker_ratio)
 
 
-def contact_stress_value(design, width, modulus=strength.STEEL_MODULUS, top=1.0) -> float | np.ndarray:
+def contact_stress_value(design, width, modulus=strength.STEEL_MODULUS, top=1.0, valve=None) -> float | np.ndarray:
     """Largest Hertz stress between cam and follower along the open event [Pa], refined on the contour.
 
     Parameters
@@ -213,12 +218,16 @@ def contact_stress_value(design, width, modulus=strength.STEEL_MODULUS, top=1.0)
         Effective modulus E_m [Pa].
     top : float
         Highest engine speed over the rated speed: the stress is the largest from standstill up to it.
+    valve : SI view of the valve, optional
+        With it a finger's inertia by its variable ratio counts in the force
+        (:func:`~valvetrain.layouts.finger_inertia_force`).
 
     Notes
     -----
-    The cam force of :func:`worst_cam_force` with the design's chosen spring and the instantaneous profile radius at
-    each camshaft angle of the open event (:meth:`valvetrain.followers.Follower.contact_stress`; Shang Hanji (1988),
-    eqs. 2.4-2.5); its largest value
+    The cam force of :func:`worst_cam_force` with the design's chosen spring, carried to the cam by the follower
+    (:meth:`~valvetrain.followers.Follower.force_ratio`: a finger's cam carries G / (L_r cos beta) of the force at
+    the valve, Norton (2009)), and the instantaneous profile radius at each camshaft angle of the open event
+    (:meth:`valvetrain.followers.Follower.contact_stress`; Shang Hanji (1988), eqs. 2.4-2.5); its largest value
     is refined between the samples of each piece of the law (:func:`valvetrain.numerics.extremum`), so that a sharp
     nose between the table's angles is not missed.
     """
@@ -226,9 +235,10 @@ def contact_stress_value(design, width, modulus=strength.STEEL_MODULUS, top=1.0)
     line, omega, follower = drive.lines.chosen, cam.cam_speed * top, cam.follower_model
 
     def stress(theta):
-        _, _, d2h, _ = law.derivatives(theta)
+        h, dh, d2h, _ = law.derivatives(theta)
+        finger = 0.0 if valve is None else omega**2 * finger_inertia_force(valve, cam.heel_radius, h, dh, d2h)
         force = worst_cam_force(line.force(cam.valve_lift(theta)), drive.masses.at_valve, cam.rocker_ratio,
-                                omega**2 * d2h)
+                                omega**2 * d2h, finger) * follower.force_ratio(cam.heel_radius, h, dh)
         return follower.contact_stress(force, law.curvature(theta, cam.heel_radius, follower), width, modulus)
 
     bp = law.breakpoints
@@ -237,9 +247,10 @@ def contact_stress_value(design, width, modulus=strength.STEEL_MODULUS, top=1.0)
     return extremum(stress, edges, "max")[1]
 
 
-def contact_stress(design, high, width, modulus=strength.STEEL_MODULUS, top=1.0) -> Check:
+def contact_stress(design, high, width, modulus=strength.STEEL_MODULUS, top=1.0, valve=None) -> Check:
     """:func:`contact_stress_value` against the allowable ``high`` [Pa]."""
-    return check("synthesis.contact_stress", contact_stress_value(design, width, modulus, top), high=high, unit="MPa",
+    return check("synthesis.contact_stress", contact_stress_value(design, width, modulus, top, valve), high=high,
+                 unit="MPa",
                  source=SOURCE_MANUAL + ", eqs. (7.4)-(7.5)", severity="failure",
                  note=f"cam width {width / MM:.4g} mm, from standstill to {top:.4g} x the rated speed")
 
@@ -313,8 +324,10 @@ def no_jump(design, factor) -> Check | None:
                  note="" if jumps else "no separation in the swept range: its top speed")
 
 
-def constraints(design, limits=Limits()) -> list[Check]:
-    """Every constraint of ``limits`` that applies to ``design``: a list of :class:`~valvetrain.checks.Check`.
+def constraints(design, limits=Limits(), valve=None) -> list[Check]:
+    """Every constraint of ``limits`` that applies to ``design``: a list of :class:`~valvetrain.checks.Check`
+    (``valve``, the valve's SI view: a finger's inertia by its variable ratio in the contact stress,
+    :func:`contact_stress_value`).
 
     Examples
     --------
@@ -325,7 +338,7 @@ def constraints(design, limits=Limits()) -> list[Check]:
     L = limits
     out = acceleration_band(design, L.min_acceleration, L.max_acceleration)
     if L.cam_width is not None and L.max_contact_stress is not None:
-        out.append(contact_stress(design, L.max_contact_stress, L.cam_width, L.contact_modulus, L.top_speed))
+        out.append(contact_stress(design, L.max_contact_stress, L.cam_width, L.contact_modulus, L.top_speed, valve))
     for key, constraint in SINGLE_LIMITS:
         if getattr(L, key) is not None:
             out.append(constraint(design, getattr(L, key)))

@@ -54,7 +54,7 @@ from ..laws import PolydyneLaw
 from ..laws.base import batch_derivatives, member_values, valve_lift_of
 from ..laws.kurz import RAMP_VELOCITY_RANGE_MM_PER_DEG
 from ..specification import SpecError
-from ..layouts import train_mass
+from ..layouts import finger_inertia_force, train_mass
 from ..specification.models import Dynamics, Valve
 from ..specification.si import si
 from ..units import DEG, cam_per_crank, to_display
@@ -291,7 +291,7 @@ def _relaxed(c, notes):
 
 
 def design_limits(design, wheel_radius=None, no_jump_factor=None, ramp_varied=True, cam_width=None,
-                  seating_velocity=None, top_speed=1.0) -> tuple[Limits, list[str]]:
+                  seating_velocity=None, top_speed=1.0, valve=None) -> tuple[Limits, list[str]]:
     """The limits of a design's own checks and of the synthesis, and notes on how they were set.
 
     Parameters
@@ -310,6 +310,8 @@ def design_limits(design, wheel_radius=None, no_jump_factor=None, ramp_varied=Tr
         Largest valve seating (and opening) velocity [m/s]; default none.
     top_speed : float
         Highest engine speed over the rated speed up to which the contact stress is checked.
+    valve : SI view of the valve, optional
+        A finger's inertia by its variable ratio in the start's contact stress (:func:`~.constraints.constraints`).
 
     Returns
     -------
@@ -332,7 +334,7 @@ def design_limits(design, wheel_radius=None, no_jump_factor=None, ramp_varied=Tr
                     min_spring_reserve=design.drive.spring.spring_reserve, no_jump_factor=no_jump_factor,
                     cam_width=cam_width or CAM_WIDTH_TO_BASE_RADIUS * design.cam.base_radius, top_speed=top_speed,
                     seating_velocity=None if seating_velocity is None else (0.0, seating_velocity))
-    start = {c.code: c for c in constraints(design, replace(limits, no_jump_factor=None))}
+    start = {c.code: c for c in constraints(design, replace(limits, no_jump_factor=None), valve)}
     limits = replace(limits, max_contact_stress=_relaxed(start["synthesis.contact_stress"], notes)[1])
     c = start.get("ramp.end_velocity")
     if not ramp_varied:
@@ -410,14 +412,16 @@ class Problem:
         return float(node)
 
     def _train_parameters(self, design):
-        """The one-mass train of the search: the valve's [dynamics] section's (or the defaults')."""
+        """The one-mass train of the search: the valve's [dynamics] section's (or the defaults'), a finger's mass
+        changing with the lift (:func:`~valvetrain.design.dynamics.build_train`)."""
         self.speeds = None
         if self.limits.no_jump_factor is None:
             return
         dyn = self.section.dynamics or Dynamics()
         rated = self.engine.rated_speed * cam_per_crank(self.engine.strokes)
-        _, self.train_parameters = build_train(si(dyn.model_copy(update={"model": "1dof"})), self.valve, design.law,
-                                               design.drive, f"valves.{self.name}", rated)
+        train, self.train_parameters = build_train(si(dyn.model_copy(update={"model": "1dof"})), self.valve,
+                                                   design.law, design.drive, f"valves.{self.name}", rated)
+        self.variable_mass = train.variable_mass
         self.speeds = rated * np.unique(np.array(SPEEDS + (self.limits.no_jump_factor,)))
 
     def margin_names(self):
@@ -494,7 +498,8 @@ class Problem:
         ramp = member_values([law.ramp_height for law in laws], member)
         y = self.i_k * np.clip(h - ramp, 0.0, None)
         spring = scales[member] * self.spring.force(y)
-        inertia = self.mass * self.i_k * self.omega**2 * np.clip(-d2h, 0.0, None)
+        finger = finger_inertia_force(self.valve, self.heel, h, dh, d2h)
+        inertia = np.clip(-(self.mass * self.i_k * self.omega**2 * d2h + self.omega**2 * finger), 0.0, None)
         loaded = (inertia > 0.0) & (y > 0.0)
         nose = member_values([law.lift_max + law.ramp_height for law in laws], member)
         acc = follower_travel_acceleration(self.follower, self.heel, h, dh, d2h)
@@ -507,14 +512,16 @@ class Problem:
             q["concave radius"] = np.where(rho < 0.0, 1.0 / np.where(rho < 0.0, rho, -1.0), 0.0)
         q["rho_min"] = self.follower.convex_radius(rho)
         if L.cam_width is not None:
-            force = worst_cam_force(spring, self.mass, self.i_k, (self.omega * L.top_speed)**2 * d2h)
-            q["contact stress"] = -self.follower.contact_stress(force, rho, L.cam_width, L.contact_modulus)
+            top = (self.omega * L.top_speed)**2
+            force = worst_cam_force(spring, self.mass, self.i_k, top * d2h, top * finger)
+            at_cam = force * self.follower.force_ratio(self.heel, h, dh)
+            q["contact stress"] = -self.follower.contact_stress(at_cam, rho, L.cam_width, L.contact_modulus)
         return q, h, dh, d2h
 
     def _extremes(self, laws, scales):
         """Per law of ``laws`` (at K_z = ``scales`` x K_z,0): the least value of each quantity of :meth:`_quantities`
         on the grid refined around its least sample (:data:`REFINE` angles between the neighbours), the grid's
-        (theta, h, d2h) and |dh/dtheta| [m/rad] at the valve's opening and closing; all laws sampled together."""
+        (theta, h, dh, d2h) and |dh/dtheta| [m/rad] at the valve's opening and closing; all laws sampled together."""
         theta, member, starts = _ragged([self._angles(law) for law in laws])
         q, h, dh, d2h = self._quantities(laws, theta, member, scales)
         least = {k: _least(v, starts) for k, v in q.items()}
@@ -532,8 +539,8 @@ class Problem:
             t = theta[a:b]
             seat = np.abs(dh[a:b][np.searchsorted(t, [law.valve_opens, law.valve_closes if self.whole_event else
                                                       law.valve_opens])])
-            out.append(({k: min(float(least[k][0][i]), float(fine_least[k][i])) for k in q}, t, h[a:b], d2h[a:b],
-                        seat))
+            out.append(({k: min(float(least[k][0][i]), float(fine_least[k][i])) for k in q}, t, h[a:b], dh[a:b],
+                        d2h[a:b], seat))
         return out
 
     def _objectives(self, laws, valves):
@@ -620,7 +627,7 @@ class Problem:
     def _margins_of(self, law, valve, scale, extremes):
         """The margins of one law from its :meth:`_extremes`, or None where the lift leaves 0...the nose lift."""
         L = self.limits
-        least, theta, h, d2h, seat = extremes
+        least, theta, h, dh, d2h, seat = extremes
         if least["lift"] < -1e-6 or least["overshoot"] < -1.0 - 1e-6:
             return None
         reserve = least["spring reserve"] if np.isfinite(least["spring reserve"]) else 10.0
@@ -643,15 +650,18 @@ class Problem:
             out.append((L.seating_velocity[1] - velocity) / L.seating_velocity[1])
         if self.speeds is not None:
             out.append(math.nan)
-        out.append(self.spring_design(law, theta, h, d2h, scale))
+        out.append(self.spring_design(law, theta, h, dh, d2h, scale))
         return np.array(out, dtype=float)
 
-    def _requirement(self, law, theta, h, d2h, scale):
+    def _requirement(self, law, theta, h, dh, d2h, scale):
         """The required spring force (:class:`valvetrain.springs.Requirement`) of a cam at K_z = scale x K_z,0 on the
-        starting design's reduced mass, from the samples of the open event."""
+        starting design's reduced mass, from the samples of the open event (a finger's inertia by its variable ratio
+        as an acceleration of that mass, as the drive stage takes it)."""
         open_ = (theta >= law.valve_opens) & (theta <= law.valve_closes)
         y = self.i_k * np.clip(h[open_] - law.ramp_height, 0.0, None)
-        force = springs.required_spring_force(self.mass, self.i_k * self.omega**2 * d2h[open_], self.reserve0 * scale)
+        finger = finger_inertia_force(self.valve, self.heel, h[open_], dh[open_], d2h[open_])
+        force = springs.required_spring_force(self.mass, self.i_k * self.omega**2 * d2h[open_]
+                                              + self.omega**2 * finger / self.mass, self.reserve0 * scale)
         return springs.Requirement(y, force, self.spring_inputs[2])
 
     def _spring_passes(self, requirement):
@@ -678,8 +688,8 @@ class Problem:
         check (bisection to :data:`FRONTIER_TOLERANCE`, at most :data:`FRONTIER_RANGE`), and that required line."""
         law = self.law0
         theta = self._angles(law)
-        h, _, d2h, _ = law.derivatives(theta)
-        requirement = self._requirement(law, theta, h, d2h, 1.0)
+        h, dh, d2h, _ = law.derivatives(theta)
+        requirement = self._requirement(law, theta, h, dh, d2h, 1.0)
         line = requirement.line(self.spring_inputs[1].ratio_range)
         passes = self._spring_passes(requirement)
         low, high = FRONTIER_RANGE
@@ -692,7 +702,7 @@ class Problem:
             low, high = (mid, high) if passes(mid) else (low, mid)
         return low, line
 
-    def spring_design(self, law, theta, h, d2h, scale):
+    def spring_design(self, law, theta, h, dh, d2h, scale):
         """Margin of the spring design: the largest of the candidate's required preload and largest force over the
         starting design's, against the factor up to which a spring passes (:meth:`_spring_frontier`, found once);
         >= 0 when a spring of the specification's options is expected to pass.
@@ -706,7 +716,7 @@ class Problem:
         if self.frontier is None:
             self.frontier = self._spring_frontier()
         factor, line0 = self.frontier
-        line = self._requirement(law, theta, h, d2h, scale).line(self.spring_inputs[1].ratio_range)
+        line = self._requirement(law, theta, h, dh, d2h, scale).line(self.spring_inputs[1].ratio_range)
         ratio = max(line.preload / line0.preload, line.max_force / line0.max_force)
         return (factor - ratio) / max(factor, FRONTIER_RANGE[0])
 
@@ -714,9 +724,10 @@ class Problem:
         """Margin of the follower separation: the smallest contact force while the cam lifts the valve over the
         spring preload (> 0), or minus the separated camshaft angle [rad] (< 0); 0 on the border."""
         p = self.train_parameters
-        train = one_mass_train(p.mass, p.drive_stiffness, p.spring_rate * scale, p.preload * scale, p.rocker_ratio,
-                               p.lash, damping_ratio=p.damping_ratio, seat_stiffness=p.seat_stiffness,
-                               seat_damping_ratio=p.seat_damping_ratio)
+        train = replace(one_mass_train(p.mass, p.drive_stiffness, p.spring_rate * scale, p.preload * scale,
+                                       p.rocker_ratio, p.lash, damping_ratio=p.damping_ratio,
+                                       seat_stiffness=p.seat_stiffness, seat_damping_ratio=p.seat_damping_ratio),
+                        variable_mass=self.variable_mass)
         worst = math.inf
         for r in sweep(law, train, self.speeds, p.revolutions, p.step / DEG).per_speed():
             if len(r.jump_intervals):
@@ -861,7 +872,7 @@ def final_checks(design, spec, limits, scale=1.0, search_spring=None) -> list[Ch
         result, _ = dynamics_stage(si(dyn), si(section, spec), si(spec.engine), design.law, design.drive,
                                    design.name, cam=design.cam)
         design = replace(design, dynamics=result)
-    out = constraints(design, limits)
+    out = constraints(design, limits, si(spec.valves[design.name], spec))
     if search_spring is not None:
         out.append(replace(spring_reserve(design, limits.min_spring_reserve * scale, search_spring.preload * scale,
                                           search_spring.rate * scale),
@@ -955,7 +966,7 @@ def optimize_valve(spec, valve=None, variables=None, objective="fullness", wheel
     ramp = any(v.path.startswith("cam.ramp_end_velocity") for v in variables)
     limits, notes = design_limits(design, wheel_radius, no_jump_factor, ramp,
                                   cam_width or si(section, spec).parts.cam_width, seating_velocity,
-                                  spec.engine.over_speed_ratio)
+                                  spec.engine.over_speed_ratio, si(section, spec))
     problem = Problem(spec, design, variables, limits, objective)
     start_value = problem.evaluate(problem.x0, dynamics=True)[0]
     scale0 = start_value or 1.0

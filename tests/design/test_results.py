@@ -8,11 +8,14 @@ import inspect
 import pkgutil
 import typing
 
+import numpy as np
 import pytest
 
 from conftest import plain
 import valvetrain
-from valvetrain.design import run
+from valvetrain import results as machinery
+from valvetrain.design import results as declared, run
+from valvetrain.design.camcard import CamCardValve
 
 from appendix import appendix_spec
 
@@ -110,3 +113,12 @@ def test_figure_data_are_plain_series(results):
         assert isinstance(draw(data, TEXT["en"]), Figure)
     # the series are those of the results: the time-area plot's stroke is results.json's
     assert plots.time_area_data(v)["stroke_crank_deg"] == results.to_dict()["valves"]["intake"]["flow"]["stroke_crank_deg"]
+
+
+def test_the_stages_declare_their_results_with_the_package_s_machinery():
+    """valvetrain.design.results is valvetrain.results for the stages: the same objects, and a stage's record comes
+    out in its display units (a cam card line: -pi/18 rad is -10 crank deg, 0.170371e-3 m is 0.170371 mm)."""
+    assert all(getattr(declared, name) is getattr(machinery, name) for name in declared.__all__)
+    line = declared.record(CamCardValve(*[-np.pi / 18] * 10, 0.170371e-3))
+    assert line["seat_opens_crank_deg"] == pytest.approx(-10.0) and line["lift_at_tdc_mm"] == pytest.approx(0.170371)
+

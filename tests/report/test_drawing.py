@@ -1,0 +1,54 @@
+"""The figures drawn in forked processes (report/drawing.py): what the drawers write is what write_plots writes in
+the process itself (the reference), the request's other files are written first, and an answer that cannot be
+pickled still reaches the caller.  (The errors of a drawer and the request's shared memory: tests/test_export.py.)"""
+
+from functools import partial
+from multiprocessing import Pipe
+from pathlib import Path
+import sys
+
+import pytest
+
+from valvetrain.design import run
+from valvetrain.report.drawing import FigureProcess, _send
+from valvetrain.report.plots import write_plots
+
+from appendix import appendix_spec
+
+linux = pytest.mark.skipif(not sys.platform.startswith("linux"), reason="the figures are drawn in forked processes "
+                                                                         "on Linux only")
+
+
+@linux
+def test_two_drawers_write_the_figures_write_plots_writes(tmp_path):
+    """The appendix example's main figures, shared by two forked drawers, against the same figures drawn by
+    write_plots in this process: the same files, byte for byte, and the same answer; the ``also`` callable has
+    written its file in the first drawer before the figures."""
+    results = run(appendix_spec())
+    here, there = tmp_path / "here", tmp_path / "there"
+    here.mkdir()
+    there.mkdir()
+    expected = write_plots(results, here, "en", "main")
+    with FigureProcess(processes=2) as drawer:
+        drawer.submit(results, there, "en", "main", also=partial(Path.write_text, there / "also.txt", "written"))
+        answer = drawer.result()
+    assert answer == expected
+    drawn = sorted(p.name for p in here.iterdir())
+    assert len(drawn) >= 2 and sorted(p.name for p in there.iterdir()) == sorted(drawn + ["also.txt"])
+    assert all((here / name).read_bytes() == (there / name).read_bytes() for name in drawn)
+    assert (there / "also.txt").read_text() == "written"
+
+
+def test_an_answer_that_cannot_be_pickled_arrives_as_an_error_naming_it():
+    """An exception holding a lambda cannot be pickled: the caller gets a RuntimeError with its repr instead of a
+    drawer that dies in send()."""
+    class Unpicklable(Exception):
+        pass
+
+    error = Unpicklable(lambda: None)
+    mine, theirs = Pipe()
+    _send(theirs, (False, error))
+    ok, got = mine.recv()
+    assert not ok and isinstance(got, RuntimeError) and str(got) == f"drawing the figures: {error!r}"
+    _send(theirs, (True, {"intake": {"lift": "intake_lift.png"}}))
+    assert mine.recv() == (True, {"intake": {"lift": "intake_lift.png"}})
