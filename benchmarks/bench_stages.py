@@ -9,18 +9,28 @@ run on it; the drive (masses, the spring search) and the strength over the speed
 ``design_valve`` as the design runs it (all stages, the law's records, the checks).  The spring search of the example's requirement is timed beside its baseline in the same run: the
 exhaustive search (every candidate of the grid designed, :func:`valvetrain.springs.evaluate_springs`, as the search
 did before its screen), which must choose the same spring.  Best and median of the repeats; the goals of issue 22.
+
+Last, the dynamics stage's per-speed records of the built-in example's intake valve (a sweep of 200 speeds): its
+events and records over the speeds at once (:attr:`~valvetrain.dynamics.sweep.SweepResult.events`,
+:func:`~valvetrain.design.dynamics.speed_records`, the headline) against the baseline of a
+:class:`~valvetrain.dynamics.sweep.SpeedResult` and a :class:`~valvetrain.design.dynamics.SpeedRecord` made speed by
+speed, as the stage did before; both must give the same minimum contact forces, seating velocities and bounces.
 """
 
+from dataclasses import replace
 from pathlib import Path
 import time
 
 import numpy as np
 
 from valvetrain import springs
+from valvetrain.design import run
+from valvetrain.design.dynamics import speed_record, speed_records
+from valvetrain.dynamics.perturbation import perturbation_parameter
 from valvetrain.design.drive import drive_stage, spring_options, strength_stage
 from valvetrain.design.valve import design_valve, flow_stage, law_stage, profile_stage, valve_checks
 from valvetrain.layouts import train_mass
-from valvetrain.specification import load_spec, si
+from valvetrain.specification import example_spec, load_spec, si
 
 from timing import best_time
 
@@ -73,6 +83,35 @@ def _exhaustive(requirement, throat, speed, options):
     return found.mean_diameter[i], found.wire_diameter[i], found.coils[i], int(found.passed.sum()), len(found)
 
 
+def _records_at_once(sweep, speeds, epsilon):
+    """The per-speed records as the dynamics stage makes them now (a fresh result: its events are found anew)."""
+    fresh = replace(sweep)
+    fresh.headline()
+    return speed_records(fresh, speeds, epsilon)
+
+
+def _records_speed_by_speed(sweep, speeds, epsilon):
+    """The baseline: a SpeedResult and a SpeedRecord made for each speed."""
+    return [speed_record(r, s, e) for r, s, e in zip(sweep.per_speed(), speeds, epsilon, strict=True)]
+
+
+def dynamics_records():
+    """Print the per-speed records' figure of the built-in example's intake valve beside its baseline."""
+    design = run(example_spec()).valves["intake"]
+    d, sweep = design.dynamics, design.dynamics.sweep
+    speeds = np.asarray(d.per_speed.speed)
+    p = d.parameters
+    epsilon = perturbation_parameter(p.mass, p.drive_stiffness, p.spring_rate, sweep.cam_speeds)
+    now, before = _records_at_once(sweep, speeds, epsilon), _records_speed_by_speed(sweep, speeds, epsilon)
+    same = all(np.array_equal(getattr(now, name), [getattr(r, name) for r in before], equal_nan=True)
+               for name in ("min_contact_force", "seating_velocity", "bounce", "bounce_count", "max_lift_error"))
+    t_now = best_time(lambda: _records_at_once(sweep, speeds, epsilon), repeats=REPEATS)
+    t_before = best_time(lambda: _records_speed_by_speed(sweep, speeds, epsilon), repeats=REPEATS)
+    print(f"per-speed records of the built-in example's intake sweep ({speeds.size} speeds): over the speeds at once "
+          f"{t_now * 1e3:6.2f} ms, baseline (speed by speed) {t_before * 1e3:6.2f} ms; the same records: "
+          f"{'yes' if same else 'NO'}")
+
+
 def main():
     spec = load_spec(APPENDIX)
     engine, output, gas = si(spec.engine), si(spec.output), si(spec.gas)
@@ -114,6 +153,7 @@ def main():
     print(f"one spring search of the example ({screened.tried} candidates, {screened.passing} passing): "
           f"screened {t_screened * 1e3:6.2f} ms, baseline (every candidate designed) {t_exhaustive * 1e3:6.2f} ms; "
           f"the same spring: {'yes' if same else 'NO'}")
+    dynamics_records()
 
 
 if __name__ == "__main__":

@@ -181,13 +181,14 @@ class Check:
         high = None if self.high is None else to_display(self.high, self.unit)
         return describe_range(low, high, self.unit, self.strict_low)
 
-    def named(self, prefix):
-        """The same check with ``prefix: `` before its quantity (the chapter it belongs to: ``crank``)."""
-        return replace(self, quantity=f"{prefix}: {self.quantity}")
+    def named(self, prefix, **changes):
+        """The same check with ``prefix: `` before its quantity (the chapter it belongs to: ``crank``) and the fields
+        ``changes`` (one :func:`dataclasses.replace`)."""
+        return replace(self, quantity=f"{prefix}: {self.quantity}", **changes)
 
     def of_valve(self, name):
         """The same check as a check of the valve ``name`` (``name: `` before its quantity)."""
-        return replace(self.named(name), valve=name)
+        return self.named(name, valve=name)
 
     def of_spring(self, spring):
         """The same check of a spring's own as the check of the drive's ``spring`` (``spring``, ``outer``,

@@ -136,7 +136,7 @@ def extremum(fn, edges, kind="max", samples=65) -> tuple[float, float]:
 
         def objective(x):  # a value that is not finite between the samples (a pole, a cusp) is no extremum
             y = sign * float(fn(np.array([x]))[0])
-            return -y if np.isfinite(y) else worst
+            return -y if math.isfinite(y) else worst
 
         x, fx = bounded_minimum(objective, lo, hi, 1e-13 * max(1.0, abs(hi)))
         if -fx > best_y:

@@ -325,6 +325,29 @@ def test_a_valve_the_cam_cannot_lift_off_its_seat_fails_naming_the_reason():
     assert "dynamics.valve_opens" not in {c.code for c in run(spec(FEW)).valves["intake"].checks}
 
 
+@pytest.mark.parametrize("dynamics", ["speeds = 12\nrevolutions = 2\nstep_cam_deg = 0.5\n",
+                                      "model = \"multi\"\ncoils_per_spring = 4\nspeeds = 6\nrevolutions = 2\n"
+                                      "step_cam_deg = 0.5\n"])
+def test_the_per_speed_records_at_once_are_each_speeds_own(dynamics):
+    """The stage's per-speed records, made over the speeds at once (speed_records, SweepResult.events), are those
+    speed_record makes of each speed's own SpeedResult (SweepResult.speed): every field, one-mass and multi-mass (coil
+    surge and clash margin), bit for bit (nan where a speed has no separation, no seating or no monitored clash)."""
+    from valvetrain.design.dynamics import speed_record
+
+    d = run(spec(dynamics)).valves["intake"].dynamics
+    r = d.records
+    each = [speed_record(d.sweep.speed(i), s, e) for i, (s, e) in enumerate(zip(r.speed, r.epsilon, strict=True))]
+    for name in ("min_contact_force", "max_contact_force", "seating_velocity", "bounce", "bounce_count",
+                 "max_lift_error", "revolutions"):
+        np.testing.assert_array_equal(getattr(r, name), [getattr(x, name) for x in each], err_msg=name)
+    np.testing.assert_array_equal(r.jump, [bool(x.jump_intervals) for x in each])
+    np.testing.assert_array_equal(r.jump_from, [x.jump_intervals[0][0] if x.jump_intervals else np.nan for x in each])
+    np.testing.assert_array_equal(r.jump_to, [x.jump_intervals[-1][1] if x.jump_intervals else np.nan for x in each])
+    surge = [np.nan if x.max_surge is None else x.max_surge for x in each]
+    np.testing.assert_array_equal(np.full(len(each), np.nan) if r.max_surge is None else r.max_surge, surge)
+    np.testing.assert_array_equal(r.clash_margin, [np.nan if x.clash_margin is None else x.clash_margin for x in each])
+
+
 @pytest.mark.parametrize("model, node", [("1dof", "valve"), ("multi", "rocker")])
 def test_a_finger_s_node_has_its_reduced_mass_over_the_lift(model, node):
     """The modern finger example's train: the node that carries the finger (the one-mass train's valve, the multi-mass

@@ -190,6 +190,28 @@ def test_jump_speed_of_a_harmonic_cam_closed_form():
     assert below.jump_intervals.size == 0 and below.min_contact_force > 0.0   # undamped seat: a bounce, no jump
 
 
+def test_the_events_of_a_sweep_at_once_are_each_speeds_own():
+    """SweepResult.events finds every speed's events over the speeds at once (numpy over the rows, as the design's
+    per-speed table reads them): the same numbers, bit for bit, as speed_result's of each speed alone (the record
+    of one speed, SweepResult.speed), over speeds that separate, bounce on an undamped seat and neither (the harmonic
+    cam above, 0.6-1.2 x its jump speed)."""
+    lift, phi, mass, rate, preload = 8e-3, 1.0, 0.2, 50e3, 300.0
+    exact = np.sqrt(2 * (preload + rate * lift) / (mass * lift * (np.pi / phi) ** 2))
+    train = one_mass_train(mass, 3e8, rate, preload, damping_ratio=0.1, seat_damping_ratio=0.0)
+    r = sweep(harmonic_cam(lift, phi), train, np.linspace(0.6, 1.2, 25) * exact)
+    each = r.per_speed()
+    e = r.events
+    assert e.jumped.any() and not e.jumped.all() and (e.bounce_count > 0).any() and np.isfinite(e.seating_angle).all()
+    pairs = {"seating_angle": [s.seating_angle for s in each], "seating_velocity": [s.seating_velocity for s in each],
+             "bounce_height": [s.bounce_height for s in each], "bounce_count": [s.bounce_count for s in each],
+             "min_contact_force": [s.min_contact_force for s in each],
+             "jumped": [s.jump_intervals.size > 0 for s in each],
+             "jump_from": [s.jump_intervals[0, 0] if s.jump_intervals.size else np.nan for s in each],
+             "jump_to": [s.jump_intervals[-1, 1] if s.jump_intervals.size else np.nan for s in each]}
+    for name, expected in pairs.items():
+        np.testing.assert_array_equal(getattr(e, name), expected, err_msg=name)
+
+
 def test_headline_sweep_has_the_full_sweeps_headlines():
     """The speeds a tolerance study simulates (headline_sweep, every 10th speed then the speeds about the events) give
     the jump speed of the harmonic cam above: within 0.1 % of the closed form omega_j = 297.8 rad/s, and equal to the

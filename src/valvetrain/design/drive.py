@@ -547,8 +547,9 @@ def quasi_static_loads(law, rocker_ratio, theta, spring_force, mass, speeds, to_
     Valve-train practical works (n.d.), work 7, eqs. (7.1)-(7.2).
     """
     omega = np.asarray(speeds, dtype=float)[:, None] * to_cam
-    force = strength.cam_force(spring_force, mass * rocker_ratio * omega**2 * law.derivatives(theta)[2]
-                               + omega**2 * finger, rocker_ratio)
+    inertia = mass * rocker_ratio * omega**2 * law.derivatives(theta)[2]
+    inertia += omega**2 * finger     # in place: a load map's array is large (strength.hertz_line_stress)
+    force = strength.cam_force(spring_force, inertia, rocker_ratio)
     return LoadMap("quasi-static", np.asarray(speeds, dtype=float), theta, force)
 
 
@@ -560,8 +561,8 @@ def dynamic_loads(dynamics, low, high) -> Optional[LoadMap]:
     keep = (speeds >= low * (1.0 - 1e-12)) & (speeds <= high * (1.0 + 1e-12))
     if not keep.any():
         return None
-    order = np.argsort(speeds[keep], kind="stable")
-    return LoadMap("dynamic", speeds[keep][order], dynamics.sweep.theta, force[keep][order])
+    rows = np.flatnonzero(keep)[np.argsort(speeds[keep], kind="stable")]    # one copy of the large force map
+    return LoadMap("dynamic", speeds[rows], dynamics.sweep.theta, force[rows])
 
 
 def load_maps(valve, engine, cam, theta, spring_force, mass, dynamics=None) -> tuple[list[LoadMap], tuple[float, float, str]]:
@@ -846,7 +847,9 @@ def _edge_loading(parts, drive, cam, follower, maps, width, notes):
         if width is None:
             return np.broadcast_to(offset, m.force.shape)
         curvature = follower.contact_curvature(cam.law.curvature(m.theta, cam.heel_radius, follower))
-        return offset + strength.hertz_half_width(m.force, width, curvature, parts.contact_modulus)
+        reach = strength.hertz_half_width(m.force, width, curvature, parts.contact_modulus)
+        reach += offset     # in place: a load map's array is large (strength.hertz_line_stress)
+        return reach
 
     w = _worst(maps, [reach(m) for m in maps])
     offset = abs(float(cam.law.derivatives(np.array([w.angle]))[1, 0]))

@@ -10,7 +10,7 @@ specification leaves out is estimated and the estimate stated in ``parameters.es
 Speeds in the results are engine (crank) speeds; the camshaft of a four-stroke turns at half.
 """
 
-from dataclasses import dataclass, field, fields, replace
+from dataclasses import dataclass, field, replace
 import math
 from typing import Optional, Union
 
@@ -30,7 +30,7 @@ from ..specification import SpecError
 from ..specification.messages import Problem
 from ..strength import cam_force
 from ..units import DEG, MM, cam_per_crank, rpm_to_rad_s, to_display
-from .results import quantity, shown_value
+from .results import quantity, shown
 
 SOURCES = ("Shang Hanji (1988), ch. 3 (one-mass and multi-mass trains, jump, seating, bounce); Valve-train dynamics "
            "article (n.d.) (resonant harmonic and distortion)")
@@ -131,6 +131,47 @@ class SpeedRecord:
                                                   "damping losses)", default=None, omit_none=True)
 
 
+def _like(name):
+    """A field of :class:`SpeedRecord`'s key, unit and label."""
+    return field(metadata=SpeedRecord.__dataclass_fields__[name].metadata)
+
+
+@dataclass(frozen=True)
+class SpeedRecords:
+    """Every speed of the sweep at once: the fields of :class:`SpeedRecord`, arrays (S,) (SI), as the CSV table
+    shows them; a speed without a separation has nan where the first separation starts and the last one ends, and a
+    spring whose closing is not monitored a nan clash margin."""
+
+    speed: np.ndarray = _like("speed")
+    epsilon: np.ndarray = _like("epsilon")
+    min_contact_force: np.ndarray = _like("min_contact_force")
+    max_contact_force: np.ndarray = _like("max_contact_force")
+    seating_velocity: np.ndarray = _like("seating_velocity")
+    bounce: np.ndarray = _like("bounce")
+    bounce_count: np.ndarray = _like("bounce_count")
+    jump: np.ndarray = quantity("jump", label="follower separation")
+    jump_from: np.ndarray = quantity("jump_from_cam_deg", "cam deg", "first separation starts (from the nose)")
+    jump_to: np.ndarray = quantity("jump_to_cam_deg", "cam deg", "last separation ends (from the nose)")
+    max_lift_error: np.ndarray = _like("max_lift_error")
+    max_surge: Optional[np.ndarray] = _like("max_surge")      # None: no coil masses
+    clash_margin: np.ndarray = _like("clash_margin")
+    revolutions: np.ndarray = _like("revolutions")
+
+
+def speed_records(result, speeds, epsilon) -> SpeedRecords:
+    """The :class:`SpeedRecords` of a :class:`~valvetrain.dynamics.sweep.SweepResult` at engine speeds [rad/s] (S,)
+    with the perturbation parameters (S,): :func:`speed_record` of every speed, over the speeds at once."""
+    events = result.events
+    surge = result.surge_amplitude.max(axis=1) if result.surge_amplitude.shape[1] else None
+    error = result.lift_error
+    np.abs(error, out=error)     # in place: a map of speeds x angles
+    return SpeedRecords(np.asarray(speeds, dtype=float), np.asarray(epsilon, dtype=float), events.min_contact_force,
+                        result.contact_force.max(axis=1), events.seating_velocity, events.bounce_height,
+                        events.bounce_count, events.jumped, events.jump_from, events.jump_to,
+                        error.max(axis=1), surge,
+                        np.where(np.isfinite(result.clash_margin), result.clash_margin, np.nan), result.revolutions)
+
+
 @dataclass(frozen=True)
 class ResonanceRecord:
     """Resonant harmonic of the cam excitation at the rated speed and the distortion of the valve motion."""
@@ -201,7 +242,7 @@ class DynamicsResult:
     per_speed: PerSpeed = quantity("per_speed")
     sweep_table: str = quantity("sweep_table", label="CSV with one row per speed, relative to the output folder")
     sweep: Optional[SweepResult] = field(default=None, repr=False, compare=False)
-    records: tuple[SpeedRecord, ...] = field(default=(), repr=False, compare=False)    # every speed
+    records: Optional[SpeedRecords] = field(default=None, repr=False, compare=False)    # every speed
     rated: Optional[SpeedResult] = field(default=None, repr=False, compare=False)      # at the rated speed
 
 
@@ -725,16 +766,15 @@ def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, 
     rated = sweep(law, train, [engine.rated_speed * to_cam], revs, step_deg).speed(0)
     m, c, kk = params.mass, params.drive_stiffness, params.spring_rate
     eps = perturbation_parameter(m, c, kk, speeds * to_cam)
-    results = result.per_speed()
-    per = [speed_record(r, s, e) for r, s, e in zip(results, speeds, eps, strict=True)]
-    head = result.headline(results)
+    per = speed_records(result, speeds, eps)
+    head = result.headline()
     res = resonance(law, engine.rated_speed * to_cam, m, kk, c, valve.rocker_ratio)
     reson = ResonanceRecord(res.omega0 / (2 * np.pi), res.order, res.force, res.amplitude, 100 * res.distortion,
                             tuple(int(o) for o in res.orders), tuple(100 * float(d) for d in res.spectrum_distortion))
-    table = PerSpeed(tuple(float(s) for s in speeds), tuple(p.min_contact_force for p in per),
-                     tuple(finite_or_none(p.seating_velocity) for p in per), tuple(p.bounce for p in per),
-                     tuple(p.bounce_count for p in per), tuple(bool(p.jump_intervals) for p in per),
-                     tuple(p.max_lift_error for p in per), tuple(p.revolutions for p in per))
+    table = PerSpeed(tuple(per.speed.tolist()), tuple(per.min_contact_force.tolist()),
+                     tuple(finite_or_none(v) for v in per.seating_velocity.tolist()), tuple(per.bounce.tolist()),
+                     tuple(per.bounce_count.tolist()), tuple(per.jump.tolist()), tuple(per.max_lift_error.tolist()),
+                     tuple(per.revolutions.tolist()))
     net = train.network()
     omegas, shapes = natural_modes(net, opened=("seat",))
     modes = tuple(Mode(float(w / (2 * np.pi)), {n: float(x) for n, x in zip(net.names, shapes[:, j], strict=True)})
@@ -754,7 +794,7 @@ def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, 
         crank(head["coil_clash_speed"]) if dyn.model == "multi" else None, eps_rated,
         float(np.sqrt((kk + c) / m) / (2 * np.pi)), tuple(mode.frequency for mode in modes), modes,
         int(result.revolutions.max()), int(np.count_nonzero(~result.converged)), rated_record, reson, table,
-        f"tables/{name}_dynamics.csv", result, tuple(per), rated)
+        f"tables/{name}_dynamics.csv", result, per, rated)
     return out, dynamics_checks(out, engine, 0.0 if train.adjuster is None else train.adjuster.motion_ratio)
 
 
@@ -855,32 +895,29 @@ def event_window(d, margin_deg: float = 10.0) -> np.ndarray:
     return (sw.theta >= lo) & (sw.theta <= hi)
 
 
-def sweep_columns(d) -> dict[str, np.ndarray]:
+def sweep_columns(d) -> dict[str, list]:
     """The per-speed table of a :class:`DynamicsResult` as named columns (engineering units)."""
     records = d.records
-    keys = {f.name: f.metadata["key"] for f in fields(SpeedRecord) if "key" in f.metadata}
 
-    def column(name, empty=None):
-        """``(key, values)``: one field of every speed's record as results.json shows it (``empty`` for None)."""
-        return keys[name], [empty if v is None else v for v in (shown_value(r, name) for r in records)]
+    def column(name):
+        """``(key, values)``: one field of the records as results.json shows it."""
+        return shown(records, name)[0]
 
     to_cam = d.sweep.cam_speeds[0] / d.per_speed.speed[0]
     out = dict([column("speed"), ("camshaft_rpm", [s * to_cam / rpm_to_rad_s(1.0) for s in d.per_speed.speed])])
     out.update(column(name) for name in ("epsilon", "min_contact_force", "max_contact_force", "seating_velocity",
                                          "bounce", "bounce_count"))
-    jumps = column("jump_intervals")[1]
-    out["jump"] = [int(bool(j)) for j in jumps]
-    out["jump_from_cam_deg"] = [j[0][0] if j else np.nan for j in jumps]
-    out["jump_to_cam_deg"] = [j[-1][1] if j else np.nan for j in jumps]
-    out.update(column(name) for name in ("max_lift_error", "revolutions"))
+    out["jump"] = [int(j) for j in records.jump.tolist()]
+    out.update(column(name) for name in ("jump_from", "jump_to", "max_lift_error", "revolutions"))
     if d.model == "multi" and d.parameters.coils_per_spring > 0:
-        out.update([column("max_surge", np.nan)])
-    if any(r.clash_margin is not None for r in records):
-        out.update([column("clash_margin", np.nan)])
+        out.update([column("max_surge")])
+    if np.isfinite(records.clash_margin).any():
+        out.update([column("clash_margin")])
     return out
 
 
 __all__ = ["CHECK_CODES", "DynamicsParameters", "DynamicsResult", "Mode", "PerSpeed", "ResonanceRecord", "SWEEP_COLUMNS",
-           "SpeedRecord", "build_train", "drive_links", "dynamics_checks", "dynamics_stage", "finite_or_none", "rated_contact",
-           "speed_record", "swept_range",
+           "SpeedRecord", "SpeedRecords", "build_train", "drive_links", "dynamics_checks", "dynamics_stage",
+           "finite_or_none", "rated_contact",
+           "speed_record", "speed_records", "swept_range",
            "sweep_columns"]

@@ -24,6 +24,7 @@ Events (Shang Hanji (1988), sections 3.1-3.2):
 
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, replace
+from functools import cached_property
 import sys
 from typing import Optional
 
@@ -183,6 +184,7 @@ def seating(theta, lift, velocity, acceleration=None, step_time=None) -> tuple[i
     series y + v t + a t^2/2 + j t^3/6, the jerk j from the two free samples before the crossing; the sample inside
     the stiff seat, already slowed by it, is not used.  Without them the angle and velocity are interpolated
     linearly between the samples.  (n, nan, nan) if the valve does not open or does not return within the record.
+    One record of :func:`seatings`.
 
     Examples
     --------
@@ -196,38 +198,94 @@ def seating(theta, lift, velocity, acceleration=None, step_time=None) -> tuple[i
     >>> round(seating(1e-5 * np.arange(4), y, v)[2], 12)
     -0.166666666667
     """
-    top = int(np.argmax(lift))
-    if lift[top] <= 0.0:
-        return lift.size, np.nan, np.nan
-    below = np.flatnonzero(lift[top:] <= 0.0)
-    if below.size == 0:
-        return lift.size, np.nan, np.nan
-    i = top + int(below[0])
-    w = lift[i - 1] / (lift[i - 1] - lift[i])
+    index, angle, vel = seatings(theta, lift[None], velocity[None], None if acceleration is None else
+                                 acceleration[None], step_time)
+    return int(index[0]), float(angle[0]), float(vel[0])
+
+
+def seatings(theta, lift, velocity, acceleration=None, step_time=None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """:func:`seating` of every row of (S, n) records (one a speed) at once: (index, angle [rad], velocity [m/s]),
+    arrays (S,); ``step_time`` [s] a scalar or one per row (the Taylor series' roots of :func:`_seat_times`)."""
+    n = lift.shape[-1]
+    every = np.arange(lift.shape[0])
+    top = np.argmax(lift, axis=-1)
+    down = (lift <= 0.0) & (np.arange(n) >= top[:, None])
+    seated = (lift[every, top] > 0.0) & down.any(axis=-1)
+    i = np.where(seated, np.argmax(down, axis=-1), n)
+    k = np.flatnonzero(seated)
+    index, angle, vel = i, np.full(i.shape, np.nan), np.full(i.shape, np.nan)
+    if not k.size:
+        return index, angle, vel
+    i = i[k]
+    y0, y1 = lift[k, i - 1], lift[k, i]
+    w = y0 / (y0 - y1)
+    t0, t1 = theta[i - 1], theta[i]
     if acceleration is None:
-        return i, float(theta[i - 1] + w * (theta[i] - theta[i - 1])), float(velocity[i - 1] + w * (velocity[i] -
-                                                                                                 velocity[i - 1]))
-    h = float(step_time)
-    y, v, a = float(lift[i - 1]), float(velocity[i - 1]), float(acceleration[i - 1])
-    jerk = (a - float(acceleration[i - 2])) / h if i >= 2 and lift[i - 2] > 0.0 else 0.0
-    roots = np.roots([jerk / 6.0, a / 2.0, v, y]) if jerk else np.roots([a / 2.0, v, y])
+        v0 = velocity[k, i - 1]
+        angle[k], vel[k] = t0 + w * (t1 - t0), v0 + w * (velocity[k, i] - v0)
+        return index, angle, vel
+    h = np.broadcast_to(np.asarray(step_time, dtype=float), index.shape)[k]
+    v, a = velocity[k, i - 1], acceleration[k, i - 1]
+    free = (i >= 2) & (lift[k, np.maximum(i - 2, 0)] > 0.0)
+    jerk = np.where(free, (a - acceleration[k, np.maximum(i - 2, 0)]) / h, 0.0)
+    t = _seat_times(y0, v, a, jerk, h, w * h)
+    angle[k], vel[k] = t0 + t / h * (t1 - t0), v + a * t + 0.5 * jerk * t * t
+    return index, angle, vel
+
+
+def _seat_times(y, v, a, jerk, h, fallback) -> np.ndarray:
+    """For each row the first time in (0, 2 h] [s] at which y + v t + a t^2/2 + jerk t^3/6 [m] reaches 0, else
+    ``fallback`` (arrays (K,)): the real roots of the cubic (of the quadratic where jerk = 0) as numpy's ``roots``
+    finds them, the eigenvalues of its companion matrix, of every row's matrix in one call."""
+    out = np.array(fallback, dtype=float)
+    cubic = jerk != 0.0
+    for members, p in ((np.flatnonzero(cubic), np.stack([jerk / 6.0, a / 2.0, v, y], axis=1)),
+                       (np.flatnonzero(~cubic), np.stack([a / 2.0, v, y], axis=1))):
+        p = p[members]
+        whole = (p[:, 0] != 0.0) & (p[:, -1] != 0.0) & np.isfinite(p).all(axis=1)   # roots() would trim the others
+        for i in members[~whole]:
+            out[i] = _first_root(np.roots(p[members == i][0]), h[i], out[i])
+        members, p = members[whole], p[whole]
+        if not members.size:
+            continue
+        companion = np.zeros((members.size, p.shape[1] - 1, p.shape[1] - 1))
+        companion[:, 0, :] = -p[:, 1:] / p[:, :1]
+        companion[:, np.arange(1, p.shape[1] - 1), np.arange(p.shape[1] - 2)] = 1.0
+        roots = np.linalg.eigvals(companion)
+        inside = (np.imag(roots) == 0.0) & (roots.real > 0.0) & (roots.real <= 2.0 * h[members, None])
+        first = np.min(roots.real, axis=1, where=inside, initial=np.inf)
+        out[members] = np.where(inside.any(axis=1), first, out[members])
+    return out
+
+
+def _first_root(roots, h, fallback) -> float:
+    """The smallest real one of ``roots`` in (0, 2 h], else ``fallback``."""
     real = np.sort(roots[np.isreal(roots)].real)
     real = real[(real > 0.0) & (real <= 2.0 * h)]
-    t = real[0] if real.size else w * h
-    return i, float(theta[i - 1] + t / h * (theta[i] - theta[i - 1])), float(v + a * t + 0.5 * jerk * t * t)
+    return real[0] if real.size else fallback
 
 
 def bounce(lift, first_seating, tolerance=BOUNCE_TOLERANCE) -> tuple[float, int]:
     """The bounce after the first seating: (largest lift after it [m], returns above ``tolerance``); (0, 0) without one.
 
-    ``first_seating`` is the index :func:`seating` returns (the record's length: no seating, no bounce).
+    ``first_seating`` is the index :func:`seating` returns (the record's length: no seating, no bounce).  One record
+    of :func:`bounces`.
 
     >>> bounce(np.array([0.0, 2e-3, 0.0, 5e-6, 0.0, 3e-6, 0.0]), 2)
     (5e-06, 2)
     """
-    after = lift[first_seating:]
-    returns = runs(after > tolerance)
-    return (float(max(after.max(), 0.0)) if returns.size else 0.0), len(returns)
+    height, count = bounces(lift[None], np.array([first_seating]), tolerance)
+    return float(height[0]) if count[0] else 0.0, int(count[0])
+
+
+def bounces(lift, first_seating, tolerance=BOUNCE_TOLERANCE) -> tuple[np.ndarray, np.ndarray]:
+    """Of every row of (S, n) records after its first seating (index, (S,)): the largest lift, not below 0 (0 where
+    the valve does not seat) [m], and the returns above ``tolerance`` (runs of samples above it)."""
+    after = np.arange(lift.shape[-1]) >= first_seating[:, None]
+    above = (lift > tolerance) & after
+    count = np.count_nonzero(above[:, :1], axis=-1) + np.count_nonzero(above[:, 1:] & ~above[:, :-1], axis=-1)
+    largest = np.max(lift, axis=-1, where=after, initial=-np.inf)
+    return np.where(after.any(axis=-1) & ~(0.0 > largest), largest, 0.0), count
 
 
 def lift_event(kinematic, lift) -> np.ndarray:
@@ -235,21 +293,22 @@ def lift_event(kinematic, lift) -> np.ndarray:
     the valve's first return to its seat after it (a downward crossing of y = 0), or to the end of the record.
 
     A valve that rebounds from its seat after that return bounces; before it, the cam should be carrying the valve.
+    ``lift`` may hold a record per row (S, n), of one rigid lift ``kinematic`` (n,).
 
     >>> lift_event(np.array([-1.0, 1.0, 2.0, 1.0, 0.5, -1.0]), np.array([0.0, 0.5, 1.5, 0.2, -0.1, 0.3])).tolist()
     [False, True, True, True, False, False]
     """
-    index = np.arange(lift.size)
+    index = np.arange(lift.shape[-1])
     rising = np.flatnonzero(kinematic > 0.0)
     if rising.size == 0:
-        return np.zeros(lift.size, dtype=bool)
+        return np.zeros(lift.shape, dtype=bool)
     start = int(rising[0])
-    down = np.flatnonzero((lift[1:] <= 0.0) & (lift[:-1] > 0.0) & (index[1:] > start)) + 1
-    end = int(down[0]) if down.size else lift.size
-    return (index >= start) & (index < end)
+    down = (lift[..., 1:] <= 0.0) & (lift[..., :-1] > 0.0) & (index[1:] > start)
+    end = np.where(down.any(axis=-1), np.argmax(down, axis=-1) + 1, lift.shape[-1])
+    return (index >= start) & (index < np.expand_dims(end, -1))
 
 
-def separation_mask(contact, kinematic, lift) -> np.ndarray:
+def separation_mask(contact, kinematic, lift, event=None) -> np.ndarray:
     """Follower separation (jump): no contact force, and the valve at or above the cam, while the cam's lift is
     positive during the lift event (:func:`lift_event`).
 
@@ -257,28 +316,30 @@ def separation_mask(contact, kinematic, lift) -> np.ndarray:
     that never comes down to it while the cam lifts, has jumped; a valve that rebounds from its seat after the event
     has returned it there bounces, it does not jump.  The valve must be at or above the cam's rigid lift (the
     contact's gap open): a contact whose damping releases it an instant before the gap opens has not separated.
+    ``contact`` and ``lift`` may hold a record per row (S, n); ``event``: their :func:`lift_event`, if found.
 
     >>> separation_mask(np.array([0.0, 0.0, 5.0, 0.0, 0.0]), np.array([-1e-4, 1e-3, 1e-3, 3e-6, 2e-6]),
     ...                 np.array([1e-4, 2e-3, 1e-3, -1e-7, 4e-6])).tolist()
     [False, True, False, False, False]
     """
-    return (contact <= 0.0) & (kinematic > 0.0) & (lift >= kinematic) & lift_event(kinematic, lift)
+    return (contact <= 0.0) & (kinematic > 0.0) & (lift >= kinematic) & (lift_event(kinematic, lift) if event is None
+                                                                           else event)
 
 
-def lowest_lifting_force(contact, kinematic, lift, separated) -> float:
+def lowest_lifting_force(contact, kinematic, lift, separated, event=None) -> np.ndarray:
     """Smallest cam contact force while the cam carries the open valve [N]: 0 with a separation, else the least where
     the cam's lift is positive and the valve is off its seat during the lift event (:func:`lift_event`; after it
     the cam lowers the seated valve to its base circle and the force falls to 0 without a separation); nan if the
-    valve never leaves its seat while the cam lifts.
+    valve never leaves its seat while the cam lifts.  ``contact`` and ``lift`` may hold a record per row (S, n),
+    ``separated`` one flag per row (and ``event``, :func:`lift_event`, if found): one force per row.
 
     >>> float(lowest_lifting_force(np.array([300.0, 50.0, 80.0, 2.0, 1.0]), np.array([-1e-4, 1e-3, 2e-3, 2e-6, 1e-6]),
     ...                            np.array([0.0, 1e-3, 2e-3, -1e-7, 1e-7]), False))
     50.0
     """
-    if separated:
-        return 0.0
-    lifting = (kinematic > 0.0) & (lift > 0.0) & lift_event(kinematic, lift)
-    return float(contact[lifting].min()) if lifting.any() else np.nan
+    lifting = (kinematic > 0.0) & (lift > 0.0) & (lift_event(kinematic, lift) if event is None else event)
+    least = np.min(contact, axis=-1, where=lifting, initial=np.inf)
+    return np.where(separated, 0.0, np.where(lifting.any(axis=-1), least, np.nan))
 
 
 def speed_result(cam_speed, theta, lift, velocity, kinematic, contact, seat, spring, slope, surge, clash,
@@ -291,12 +352,61 @@ def speed_result(cam_speed, theta, lift, velocity, kinematic, contact, seat, spr
     intervals = runs(separation)
     jumps = np.column_stack([theta[intervals[:, 0]], theta[intervals[:, 1] - 1]]) if intervals.size else \
         np.zeros((0, 2))
-    count = bounce(lift, i_seat, bounce_tolerance)[1]
-    height = float(max(lift[i_seat:].max(), 0.0)) if i_seat < lift.size else 0.0
+    height, count = (float(x[0]) for x in bounces(lift[None], np.array([i_seat]), bounce_tolerance))
     return SpeedResult(float(cam_speed), theta, lift, velocity, kinematic, contact, seat, spring, contact * slope,
-                       separation, jumps, seat_angle, seat_velocity, height, count, surge, clash,
-                       lowest_lifting_force(contact, kinematic, lift, intervals.size > 0),
+                       separation, jumps, seat_angle, seat_velocity, height, int(count), surge, clash,
+                       float(lowest_lifting_force(contact, kinematic, lift, intervals.size > 0)),
                        int(revolutions), bool(converged), adjuster_extension)
+
+
+@dataclass(frozen=True)
+class SweepEvents:
+    """The events of every speed of a :class:`SweepResult` at once, arrays (S,) (:func:`speed_result`'s of each
+    speed; angles camshaft rad from the nose).
+
+    Attributes
+    ----------
+    seating_index : ndarray of int
+        First sample at or below the seat after the largest lift (n: no seating).
+    seating_angle, seating_velocity : ndarray
+        At the first seating [rad], [m/s] (nan: no seating).
+    bounce_height : ndarray
+        Largest lift after the first seating [m].
+    bounce_count : ndarray of int
+        Returns above the bounce tolerance after it.
+    jumped : ndarray of bool
+        Follower separation.
+    jump_from, jump_to : ndarray
+        Where the first separation starts and the last one ends [rad] (nan: none).
+    min_contact_force : ndarray
+        :func:`lowest_lifting_force` [N].
+    """
+
+    seating_index: np.ndarray
+    seating_angle: np.ndarray
+    seating_velocity: np.ndarray
+    bounce_height: np.ndarray
+    bounce_count: np.ndarray
+    jumped: np.ndarray
+    jump_from: np.ndarray
+    jump_to: np.ndarray
+    min_contact_force: np.ndarray
+
+
+def sweep_events(result) -> SweepEvents:
+    """The :class:`SweepEvents` of a :class:`SweepResult`: :func:`speed_result`'s events over the speeds at once."""
+    theta, kinematic, lift = result.theta, result.kinematic_lift, result.lift
+    index, angle, velocity = seatings(theta, lift, result.velocity, result.acceleration,
+                                      float(theta[1] - theta[0]) / result.cam_speeds)
+    event = lift_event(kinematic, lift)
+    separation = separation_mask(result.contact_force, kinematic, lift, event)
+    jumped = separation.any(axis=-1)
+    last = lift.shape[-1] - 1 - np.argmax(separation[:, ::-1], axis=-1)
+    height, count = bounces(lift, index, result.bounce_tolerance)
+    return SweepEvents(index, angle, velocity, height, count, jumped,
+                       np.where(jumped, theta[np.argmax(separation, axis=-1)], np.nan),
+                       np.where(jumped, theta[last], np.nan),
+                       lowest_lifting_force(result.contact_force, kinematic, lift, jumped, event))
 
 
 def zero_crossing(speeds, values, hit) -> float:
@@ -433,13 +543,13 @@ class SweepResult:
         """Map of the camshaft drive torque F dh/dtheta [N m], shape (S, n)."""
         return self.contact_force * self.slope
 
-    def headline(self, results=None):
-        """Jump speed, bounce onset speed and the largest seating speed of the sweep.
+    @cached_property
+    def events(self):
+        """The :class:`SweepEvents` of every speed (:func:`sweep_events`), found once."""
+        return sweep_events(self)
 
-        Parameters
-        ----------
-        results : list of SpeedResult, optional
-            :meth:`per_speed`, if already computed.
+    def headline(self):
+        """Jump speed, bounce onset speed and the largest seating speed of the sweep (from :attr:`events`).
 
         Returns
         -------
@@ -452,15 +562,12 @@ class SweepResult:
             ``max_seating_velocity_speed`` where it occurs; ``coil_clash_speed``: the lowest speed whose coils
             meet (nan if none).
         """
-        results = self.per_speed() if results is None else results
-        force = np.array([r.min_contact_force for r in results])
-        jumped = np.array([r.jump_intervals.size > 0 for r in results])
-        height = np.array([r.bounce_height for r in results])
-        seat = np.array([abs(r.seating_velocity) for r in results])
+        events = self.events
+        seat = np.abs(events.seating_velocity)
         clash = self.cam_speeds[self.clash_margin < 0.0]
         worst = int(np.nanargmax(seat)) if np.isfinite(seat).any() else None
-        return {"jump_speed": zero_crossing(self.cam_speeds, force, jumped),
-                "bounce_onset_speed": level_crossing(self.cam_speeds, height, self.bounce_tolerance),
+        return {"jump_speed": zero_crossing(self.cam_speeds, events.min_contact_force, events.jumped),
+                "bounce_onset_speed": level_crossing(self.cam_speeds, events.bounce_height, self.bounce_tolerance),
                 "max_seating_velocity": float(seat[worst]) if worst is not None else np.nan,
                 "max_seating_velocity_speed": float(self.cam_speeds[worst]) if worst is not None else np.nan,
                 "coil_clash_speed": float(clash.min()) if clash.size else np.nan}
@@ -624,15 +731,8 @@ def seating_events(result) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Per speed of a :class:`SweepResult`: whether the follower separates, the smallest contact force while the cam
     lifts [N] (:func:`lowest_lifting_force`) and |dy/dt| at the first seating [m/s] (nan: no seating); the events of
     :func:`speed_result` that decide the sweep's jump speed and its largest seating velocity."""
-    step = float(result.theta[1] - result.theta[0])
-    kinematic = result.kinematic_lift
-    jumped = np.array([separation_mask(c, kinematic, y).any()
-                       for c, y in zip(result.contact_force, result.lift, strict=True)])
-    force = np.array([lowest_lifting_force(c, kinematic, y, j)
-                      for c, y, j in zip(result.contact_force, result.lift, jumped, strict=True)])
-    seat = np.array([abs(seating(result.theta, y, v, a, step / w)[2]) for w, y, v, a in
-                     zip(result.cam_speeds, result.lift, result.velocity, result.acceleration, strict=True)])
-    return jumped, force, seat
+    events = result.events
+    return events.jumped, events.min_contact_force, np.abs(events.seating_velocity)
 
 
 def headline_sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, bounce_tolerance=BOUNCE_TOLERANCE,

@@ -205,9 +205,9 @@ class Follower:
         rho = np.asarray(rho, dtype=float)
         contact = self.line_contact(rho)
         curvature = self.contact_curvature(np.where(contact, rho, 1.0))
-        sigma = strength.hertz_line_stress(np.clip(force, 0.0, None), width, np.where(contact, curvature, 1.0),
-                                           modulus)
-        return np.where(contact, sigma, 0.0)
+        sigma = np.asarray(strength.hertz_line_stress(force, width, np.where(contact, curvature, 1.0), modulus))
+        np.copyto(sigma, 0.0, where=~contact)     # in place: a load map's array is large (hertz_line_stress)
+        return sigma
 
     def lift_on_path(self, path, theta, base):
         """The follower's lift [m] at camshaft angles ``theta`` [rad] on a cam enveloped by a wheel.

@@ -251,8 +251,12 @@ def enveloping_lines(lift, required, ratios, min_preload=0.0) -> tuple[np.ndarra
     r = np.asarray(ratios, dtype=float)
     h = float(y.max())
     loaded = p > 0.0     # the points of no required force bound no line
-    slope = (r[:, None] - 1.0) * y[None, loaded] / h
-    preload = np.maximum(np.max(p[None, loaded] / (1.0 + slope), axis=1, initial=0.0), max(min_preload, 0.0))
+    # in place: ratios x points is large enough that a new array per operation has its pages faulted in afresh
+    share = (r[:, None] - 1.0) * y[None, loaded]
+    share /= h
+    share += 1.0
+    np.divide(p[None, loaded], share, out=share)    # each point's P_min of each ratio
+    preload = np.maximum(np.max(share, axis=1, initial=0.0), max(min_preload, 0.0))
     return preload, (r - 1.0) * preload / h
 
 

@@ -11,6 +11,7 @@ SI units: N, m, Pa, kg, rad/s; the wire series is a catalogue grid in mm.
 """
 
 from dataclasses import dataclass
+from functools import lru_cache
 
 import numpy as np
 
@@ -136,6 +137,40 @@ class Search:
         return sum(s.mass for s in self.designs.values())
 
 
+@dataclass(frozen=True)
+class _Grid:
+    """The candidates' diameters of a search (:func:`_grid`) and what the screen's bounds (:func:`_may_pass`) need of
+    each grid point alone, for one grade (SI; read-only arrays where :func:`_grid_of` shares them between searches)."""
+
+    mean_diameter: np.ndarray
+    wire_diameter: np.ndarray
+    one_coil: np.ndarray           # G d^4 / (8 D^3), the rate of one working coil [N/m]
+    allowable: np.ndarray          # [tau] [Pa]
+    endurance: np.ndarray          # tau_-1 [Pa]
+    psi: np.ndarray                # psi_tau
+    stress_per_force: np.ndarray   # 8 chi D / (pi d^3) [1/m^2]
+    surge_per_coil: np.ndarray     # omega_c1 of one working coil [rad/s]
+
+    @classmethod
+    def of(cls, big_d, d, material):
+        g, rho = material.shear_modulus, material.density
+        return cls(big_d, d, g * d**4 / (8.0 * big_d**3), *material.limits(d),
+                   8.0 * shape_factor_table(big_d / d) * big_d / (np.pi * d**3),
+                   natural_frequency(d, big_d, 1.0, g, rho))
+
+
+@lru_cache(maxsize=32)
+def _grid_of(throat_diameter, diameter_range, diameter_step, wire_range_mm, wire_step_mm, max_outer, material) -> _Grid:
+    """The :class:`_Grid` of a search, made once for its diameters and grade: the searches of one design (the drive
+    stage repeats its search until the spring's mass settles) and of an optimisation or a drag share it."""
+    big_d, d = _grid(throat_diameter, diameter_range, diameter_step, wire_series(wire_range_mm, wire_step_mm),
+                     max_outer)
+    grid = _Grid.of(big_d, d, material)
+    for a in vars(grid).values():
+        a.flags.writeable = False
+    return grid
+
+
 SCREEN_SLACK = 1e-6
 """Relative slack of the screen of :func:`_may_pass`: far wider than the tolerance of a check (1e-9) and the
 rounding of its arithmetic, so that the screen never drops a candidate that passes."""
@@ -164,30 +199,45 @@ def _may_pass(preloads, rates, lift, big_d, d, material, camshaft_speed, max_ins
     * ``installed_length`` (no imposed length): :math:`l_0 \\ge d (1 + \\Delta/d)(i_p + 2) + d (i_0 - 1) + h \\le
       l_{0,max}` (6.3)-(6.5), another upper bound of :math:`i_p`.
 
-    Each bound is widened by :data:`SCREEN_SLACK`.
+    Each bound is widened by :data:`SCREEN_SLACK`.  The grid points that no line may pass (each bound against the
+    lines' most lenient value: the rounding of a sum or product never decreases as its terms grow) are left out
+    before the bounds are taken line by line.
     """
-    g, rho = material.shear_modulus, material.density
+    return _screen(preloads, rates, lift, _Grid.of(big_d, d, material), material, camshaft_speed,
+                   max_installed_length)
+
+
+def _screen(preloads, rates, lift, grid, material, camshaft_speed, max_installed_length):
+    """:func:`_may_pass` on a :class:`_Grid`."""
+    d = grid.wire_diameter
     p = np.asarray(preloads, dtype=float)
     c = np.asarray(rates, dtype=float)
-    one_coil = g * d**4 / (8.0 * big_d**3)
-    allowable, endurance, psi = material.limits(d)
-    stress_per_force = 8.0 * shape_factor_table(big_d / d) * big_d / (np.pi * d**3)
-    keep = (p + c * lift)[:, None] <= (allowable * (1.0 + SCREEN_SLACK) / stress_per_force)[None, :]
-    if material.min_safety > 0.0:
-        fatigue_cap = np.where(psi >= 0.0, 2.0 * endurance / (stress_per_force * material.min_safety
-                                                               * (1.0 - SCREEN_SLACK)), np.inf)
-        keep &= (c * lift)[:, None] + psi[None, :] * (2.0 * p + c * lift)[:, None] <= fatigue_cap[None, :]
-    keep &= c[:, None] <= (one_coil / (2.0 * (1.0 - SCREEN_SLACK)))[None, :]
+    p_max, travel = p + c * lift, c * lift
+    force_cap = grid.allowable * (1.0 + SCREEN_SLACK) / grid.stress_per_force
+    max_rate = grid.one_coil / (2.0 * (1.0 - SCREEN_SLACK))
     coil_cap = np.full(d.shape, np.inf)
     if material.min_resonance_ratio > 0.0:
-        coil_cap = natural_frequency(d, big_d, 1.0, g, rho) / (material.min_resonance_ratio * camshaft_speed)
+        coil_cap = grid.surge_per_coil / (material.min_resonance_ratio * camshaft_speed)
     if max_installed_length is not None:
         fit = (max_installed_length * (1.0 + SCREEN_SLACK) - lift - d * (material.end_coils - 1.0)) / (
             d * (1.0 + material.gap_factor)) - 2.0
         coil_cap = np.minimum(coil_cap, fit)
     coil_cap = coil_cap + SCREEN_SLACK * (np.abs(coil_cap) + 1.0) + 0.5
-    min_rate = np.where(coil_cap > 0.0, one_coil / np.where(coil_cap > 0.0, coil_cap, 1.0), np.inf)
-    keep &= c[:, None] >= min_rate[None, :]
+    min_rate = np.where(coil_cap > 0.0, grid.one_coil / np.where(coil_cap > 0.0, coil_cap, 1.0), np.inf)
+    fatigue_cap = None
+    if material.min_safety > 0.0:
+        fatigue_cap = np.where(grid.psi >= 0.0, 2.0 * grid.endurance / (grid.stress_per_force * material.min_safety
+                                                                         * (1.0 - SCREEN_SLACK)), np.inf)
+    mean = 2.0 * p + travel
+    columns = (p_max.min() <= force_cap) & (c.min() <= max_rate) & (c.max() >= min_rate)
+    if fatigue_cap is not None:   # psi >= 0 wherever the cap is finite
+        columns &= travel.min() + grid.psi * mean.min() <= fatigue_cap
+    kept = np.flatnonzero(columns)
+    inside = (p_max[:, None] <= force_cap[kept]) & (c[:, None] <= max_rate[kept]) & (c[:, None] >= min_rate[kept])
+    if fatigue_cap is not None:
+        inside &= travel[:, None] + grid.psi[kept] * mean[:, None] <= fatigue_cap[kept]
+    keep = np.zeros((p.size, d.size), dtype=bool)
+    keep[:, kept] = inside
     return keep
 
 
@@ -201,9 +251,9 @@ def _search(preloads, rates, lift, throat_diameter, camshaft_speed, options, *, 
     when none of them passes, every candidate is, so that the best worst margin is found among all.  The
     lightest passing spring (with the design margin or without), the passing count and the margins of every spring
     designed are those of the exhaustive search: a spring with the margin passes."""
-    wires = wire_series(options.wire_range_mm, options.wire_step_mm)
-    big_d, d = _grid(throat_diameter, diameter_range or options.diameter_range, options.diameter_step, wires,
-                     max_outer)
+    grids = [_grid_of(throat_diameter, tuple(diameter_range or options.diameter_range), options.diameter_step,
+                      tuple(options.wire_range_mm), options.wire_step_mm, max_outer, m) for m in options.materials]
+    big_d, d = grids[0].mean_diameter, grids[0].wire_diameter
     low, high = (None, None) if free_lengths else options.installed_limits(lift)
     preloads, rates = np.asarray(preloads, dtype=float), np.asarray(rates, dtype=float)
     lines = np.arange(len(preloads))
@@ -218,9 +268,9 @@ def _search(preloads, rates, lift, throat_diameter, camshaft_speed, options, *, 
         found.line = line
         return found
 
-    found = [designed(m, *divmod(np.flatnonzero(_may_pass(preloads, rates, lift, big_d, d, m, camshaft_speed,
-                                                         high if installed_length is None else None)), len(d)))
-             for m in options.materials]
+    found = [designed(m, *divmod(np.flatnonzero(_screen(preloads, rates, lift, grid, m, camshaft_speed,
+                                                       high if installed_length is None else None)), len(d)))
+             for m, grid in zip(options.materials, grids, strict=True)]
     if not any(c.passed.any() for c in found):
         line, grid = (a.ravel() for a in np.meshgrid(lines, np.arange(len(d)), indexing="ij"))
         found = [designed(m, line, grid) for m in options.materials]
