@@ -175,6 +175,15 @@ def _array(values):
     return np.asarray(values, dtype=float)
 
 
+def _send(source, data):
+    """Set a source's ``data`` unless it holds the same already: an unchanged source sends nothing to the page (each
+    change is a message, and a change of a table's rows draws its grid again)."""
+    old = source.data
+    if old.keys() != data.keys() or any(len(old[k]) != len(v) or not np.array_equal(old[k], v)
+                                        for k, v in data.items()):
+        source.data = data
+
+
 def _rows_follow(table):
     """The page's grid of ``table`` redraws when its source's data change: its grid redraws when its view's rows
     change; new data of as many rows leaves them, and the old rows on screen: the view's change signal makes it
@@ -434,7 +443,7 @@ class Designer:
             out["value"].append("…")
             out["margin"].append("")
             out["colour"].append(SEVERITY_COLOURS["pending"])
-        self.checks.data = out
+        _send(self.checks, out)
 
     def _check_row(self, out, c, base):
         """The columns of a check's row that do not wait for its value: its name, the baseline, the range, the
@@ -456,7 +465,7 @@ class Designer:
             if value is not None:
                 rows["quantity"].append(label(key, self.lang))
                 rows["value"].append(f"{value:.5g}")
-        self.card.data = rows
+        _send(self.card, rows)
 
     def _omega(self, result):
         """The camshaft speed of a design [rad/s] when the plots are per degree, else None."""
@@ -498,14 +507,14 @@ class Designer:
             self.curves.data = self._curves(series, omega)
             phi = np.linspace(0.0, 2.0 * np.pi, 181)
             r = series["heel_radius_mm"]
-            self.heel.data = {"x": r * np.cos(phi), "y": r * np.sin(phi)}         # the same circle sends nothing
+            _send(self.heel, {"x": r * np.cos(phi), "y": r * np.sin(phi)})
             base = s.baseline["series"].get(self.valve) if s.baseline else None
             if base is not None:
                 self.base_curves.data = self._curves(base, self._omega(s.baseline))
             self._ranges(base is not None)
             edges = series["segments_cam_deg"]
             acc = self.ranges["acceleration"]
-            self.segments.data = {"x": edges, "y0": [acc.start] * len(edges), "y1": [acc.end] * len(edges)}
+            _send(self.segments, {"x": edges, "y0": [acc.start] * len(edges), "y1": [acc.end] * len(edges)})
             ta = self.ranges["time_area"]
             self.fullness.update(x=self.ranges["crank_x"].start, y=ta.end - 0.02 * (ta.end - ta.start),
                                  text=f"{TEXT[self.lang]['s_fullness']} "
@@ -528,7 +537,7 @@ class Designer:
             mine = [h if omega is None or plot == "lift" else replace(h, y=float(per_degree(h.y, 2, omega)))
                     for h in found if h.plot == plot]
             self._placed[plot] = [(h.name, h.x, h.y) for h in mine]
-            src.data = {"x": [h.x for h in mine], "y": [h.y for h in mine], "name": [h.name for h in mine]}
+            _send(src, {"x": [h.x for h in mine], "y": [h.y for h in mine], "name": [h.name for h in mine]})
 
     def show_problems(self):
         """Each problem at its field (or above the panel when it names no field); the status line says the last
