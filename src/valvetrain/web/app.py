@@ -319,9 +319,11 @@ class Designer:
                               TableColumn(field="baseline", title="", width=110),
                               TableColumn(field="allowed", title="", width=120),
                               TableColumn(field="margin", title="", width=70),
-                              TableColumn(field="source", title="", width=380)]
+                              TableColumn(field="source", title="", width=350)]
+        # the columns keep their widths: fitted to the table (autosized), they would be measured again on every change
+        # of the rows
         self.table = DataTable(source=self.checks, columns=self.check_columns, width=1100, height=360,
-                               index_position=None, name="checks")
+                               index_position=None, name="checks", autosize_mode="none")
         _rows_follow(self.table)
         # the cam card is a table: new rows leave the page's layout (a Div's new text lays the page out again)
         self.card = ColumnDataSource({"quantity": [], "value": []}, name="card")
@@ -329,7 +331,7 @@ class Designer:
                              TableColumn(field="value", title="", width=90)]
         self.card_title = Div(text="")
         self.card_table = DataTable(source=self.card, columns=self.card_columns, width=300, height=300,
-                                   index_position=None)
+                                   index_position=None, autosize_mode="none")
         _rows_follow(self.card_table)
 
         # the sweep panel
