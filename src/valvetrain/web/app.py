@@ -587,9 +587,9 @@ class Designer:
 
     @staticmethod
     def _sweep_curves(sw, sources):
-        sources["force"].data = {"x": sw["speed_rpm"], "y": sw["min_contact_force_N"]}
-        sources["seating"].data = {"x": sw["speed_rpm"],
-                                   "y": [None if v is None else abs(v) for v in sw["seating_velocity_m_s"]]}
+        _send(sources["force"], {"x": sw["speed_rpm"], "y": sw["min_contact_force_N"]})
+        _send(sources["seating"], {"x": sw["speed_rpm"],
+                                   "y": [None if v is None else abs(v) for v in sw["seating_velocity_m_s"]]})
 
     def draw_sweep(self, generation, result, began):
         """Keep the whole design of redraw ``generation`` if it is the newest: its checks to the table, its sweeps
@@ -617,12 +617,12 @@ class Designer:
             self._sweep_curves(self._sweep_of(self.base_sweep), self.base_sweep_sources)
         marks = [v for v in (sw["jump_speed_rpm"], sw["bounce_speed_rpm"]) if v is not None]
         forces = [v for v in sw["min_contact_force_N"] if v is not None]
-        self.sweep_marks.data = {"x": marks, "y0": [min(forces)] * len(marks), "y1": [max(forces)] * len(marks)}
+        _send(self.sweep_marks, {"x": marks, "y0": [min(forces)] * len(marks), "y1": [max(forces)] * len(marks)})
         err = np.array(sw["map_lift_error_mm"], dtype=float)
         bound = float(np.nanmax(np.abs(err))) or 1.0
         self.mapper.low, self.mapper.high = -bound, bound
         x, n = sw["map_cam_deg"], sw["speed_rpm"]
-        self.map_source.data = {"image": [err], "x": [x[0]], "y": [n[0]], "dw": [x[-1] - x[0]], "dh": [n[-1] - n[0]]}
+        _send(self.map_source, {"image": [err], "x": [x[0]], "y": [n[0]], "dw": [x[-1] - x[0]], "dh": [n[-1] - n[0]]})
         t = WORDS[self.lang]
         self.sweep_status.text = ", ".join(f"{t[k]} {v:.5g} rpm" for k, v in (("jump", sw["jump_speed_rpm"]),
                                                                                ("bounce", sw["bounce_speed_rpm"]))
