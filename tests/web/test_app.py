@@ -124,3 +124,20 @@ def test_plot_ranges_are_kept_while_the_curves_keep_half_their_room():
     d.on_handles("lift", "data", handles, {**handles, "y": [handles["y"][0] + 0.1]})
     assert d.session.document["valves"]["intake"]["max_lift_mm"] == pytest.approx(handles["y"][0] + 0.1, abs=1e-3)
     assert (lift.start, lift.end) == before
+
+
+def test_a_drag_sends_only_the_sources_that_change():
+    # the page gets a message per changed source (and paints its plots again): after the sweep panel is drawn, a drag
+    # of the nose changes the curves and the handles, never the sweep panel of the last whole design (its new sweep
+    # comes later) nor the heel circle (the same base circle); counted on the document's change events
+    import time
+
+    d = Designer(Document(), Session.start())
+    d.draw_sweep(d.generation, Session.settle(d.session.good_document), time.time())
+    changed = []
+    d.doc.on_change(lambda event: changed.append(getattr(event, "model", None)))
+    lift = dict(d.handles["lift"].data)
+    d.on_handles("lift", "data", lift, {**lift, "y": [lift["y"][0] - 0.1]})
+    assert d.curves in changed
+    unchanged = [d.heel, d.map_source, d.sweep_marks, *d.sweep_sources.values()]
+    assert [s for s in unchanged if s in changed] == []
