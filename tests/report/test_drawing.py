@@ -52,3 +52,36 @@ def test_an_answer_that_cannot_be_pickled_arrives_as_an_error_naming_it():
     assert not ok and isinstance(got, RuntimeError) and str(got) == f"drawing the figures: {error!r}"
     _send(theirs, (True, {"intake": {"lift": "intake_lift.png"}}))
     assert mine.recv() == (True, {"intake": {"lift": "intake_lift.png"}})
+
+
+def _children(pid):
+    """The processes ``pid`` forked (Linux's /proc)."""
+    return [int(c) for c in Path(f"/proc/{pid}/task/{pid}/children").read_text().split()]
+
+
+@linux
+def test_stopping_ends_a_drawer_that_did_not_take_its_sigterm(monkeypatch):
+    """A drawer just forked may lose the SIGTERM of the first process ending it (the signal comes while it still
+    holds the first's handler and is run after it reset the handler): the first then waited for it for ever, and the
+    run (a design refused with status 2, which stops the drawers before sending them anything) hung in CI.  Here the
+    drawer sets SIGTERM to be ignored instead of the default (SIG_DFL patched in the process that forks it), which
+    loses every SIGTERM: stop() must still return, and no drawer be left."""
+    import signal
+    import threading
+    import time
+
+    monkeypatch.setattr(signal, "SIG_DFL", signal.SIG_IGN)
+    process = FigureProcess()
+    first = process._process.pid
+    deadline = time.monotonic() + 60.0
+    while not _children(first) and time.monotonic() < deadline:   # the drawer forked after matplotlib's import
+        time.sleep(0.01)
+    drawers = _children(first)
+    assert drawers, "the first process forked no drawer within 60 s"
+    time.sleep(0.2)                                               # the drawer has set its SIGTERM by now
+    stopping = threading.Thread(target=process.stop, daemon=True)
+    stopping.start()
+    stopping.join(30.0)
+    assert not stopping.is_alive(), "stop() waited for a drawer that did not take its SIGTERM"
+    assert not any(Path(f"/proc/{pid}").exists() and "Z" not in Path(f"/proc/{pid}/stat").read_text().split()[2]
+                   for pid in drawers)

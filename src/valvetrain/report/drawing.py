@@ -157,7 +157,9 @@ def _serve(conns, others, imports):
     finish importing ``imports`` (the DXF writer, a fifth of a second) when the request comes meanwhile.  A Ctrl-C is
     the first process's to handle (it ends this one); the ends of the pipes that process keeps (``others``) are closed
     here, so that the process ending without a request is an end of file, not a wait for ever.  Ended (SIGTERM,
-    :meth:`FigureProcess.stop`), it ends the drawers it forked first."""
+    :meth:`FigureProcess.stop`), it kills the drawers it forked first (SIGKILL: a SIGTERM can be lost in a drawer
+    just forked, which still holds this handler when the signal comes and has reset it when Python would run it, so
+    that this process waited for it for ever and the run with it)."""
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     for other in others:
         other.close()
@@ -176,7 +178,7 @@ def _serve(conns, others, imports):
 
     def end(*_):
         for pid, _conn in drawers:
-            os.kill(pid, signal.SIGTERM)
+            os.kill(pid, signal.SIGKILL)
             os.waitpid(pid, 0)
         os._exit(1)
 
