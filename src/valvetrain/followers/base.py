@@ -217,7 +217,7 @@ class Follower:
         Solved on the path (by inverting an angle of it), not interpolated."""
         raise NotImplementedError
 
-    def wear_error(self, offset, base, heel, h, dh) -> tuple[np.ndarray, np.ndarray]:
+    def wear_error(self, offset, base, heel, h, dh) -> tuple[float | np.ndarray, float | np.ndarray]:
         """First-order lift error [m] and phase shift [rad] of a cam offset outwards by ``offset`` [m] (a worn
         wheel's cam) whose heel circle grew by ``base`` [m], at the design lift ``h``, ``dh``."""
         raise NotImplementedError

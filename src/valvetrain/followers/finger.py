@@ -441,7 +441,7 @@ class PivotedFollower(RollerFollower):
         psi = psi0 + np.angle(np.exp(1j * (psi - psi0)))
         return self.valve_lift_of(psi, base).reshape(theta.shape)
 
-    def wear_error(self, offset, base, heel, h, dh) -> tuple[np.ndarray, np.ndarray]:
+    def wear_error(self, offset, base, heel, h, dh) -> tuple[float | np.ndarray, float | np.ndarray]:
         """A pitch curve offset outwards by d moves the roller centre d / cos beta along its arc: lift error
         G d / (L_r cos beta) less that of the heel circle grown by ``base``; phase shift d tan beta / |q'|."""
         beta = self.pressure_angle(heel, h, dh)
