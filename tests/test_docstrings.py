@@ -1,5 +1,5 @@
 """The worked examples in the docstrings are tests too (seed values named in each docstring); every public function
-says what it returns."""
+and public method says what it returns."""
 
 import ast
 import doctest
@@ -31,11 +31,17 @@ def test_the_examples_exist():
 
 def test_every_public_function_has_a_return_annotation():
     """A function of a module of the package whose name has no leading underscore (a stage, a formula, a command, a
-    compiled kernel) says what it returns in its signature; found by reading the source, so that a decorator
-    (click, numba, a cache) hides none."""
-    missing = [f"{path.relative_to(Path(valvetrain.__file__).parent)}:{node.lineno} {node.name}"
-               for path in sorted(Path(valvetrain.__file__).parent.rglob("*.py"))
-               for node in ast.parse(path.read_text(encoding="utf-8")).body
-               if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)) and not node.name.startswith("_")
-               and node.returns is None]
+    compiled kernel), and a public method of a public class (a law's, a follower's, a result's), says what it returns
+    in its signature; found by reading the source, so that a decorator (click, numba, a cache, a property) hides
+    none."""
+    def public(nodes):
+        return [n for n in nodes if isinstance(n, (ast.FunctionDef, ast.AsyncFunctionDef)) and not n.name.startswith("_")]
+
+    missing = []
+    for path in sorted(Path(valvetrain.__file__).parent.rglob("*.py")):
+        tree = ast.parse(path.read_text(encoding="utf-8"))
+        classes = [c for c in ast.walk(tree) if isinstance(c, ast.ClassDef) and not c.name.startswith("_")]
+        functions = public(tree.body) + [f for c in classes for f in public(c.body)]
+        missing += [f"{path.relative_to(Path(valvetrain.__file__).parent)}:{f.lineno} {f.name}"
+                    for f in functions if f.returns is None]
     assert missing == []

@@ -65,7 +65,7 @@ class Work:
     language: str = "English"
     note: str = ""
 
-    def reference(self):
+    def reference(self) -> str:
         """The full reference as one line of text."""
         head = self.title if self.authors == NO_AUTHORS else f"{self.authors}, {self.title}"
         details = ", ".join(p for p in (self.kind[:1].upper() + self.kind[1:],

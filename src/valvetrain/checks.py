@@ -108,7 +108,7 @@ class Check:
     valve: str = None
 
     @property
-    def passed(self):
+    def passed(self) -> bool:
         """True when the value lies within the bounds (to a relative 1e-9 at a bound)."""
         v = float(self.value)
         if not math.isfinite(v):
@@ -121,7 +121,7 @@ class Check:
         return self.high is None or v <= self.high + _TOL * max(1.0, abs(self.high))
 
     @property
-    def margin(self):
+    def margin(self) -> float:
         """Relative distance to the nearest bound, >= 0 when the check passes: (value - low)/|low| and
         (high - value)/|high| (a bound of 0 divides by 1 in SI); +inf without bounds, -inf for a value
         that is not finite."""
@@ -134,7 +134,7 @@ class Check:
         return min(sides, default=math.inf)
 
     @property
-    def shown_margin(self):
+    def shown_margin(self) -> float:
         """:attr:`margin` of the value and the bounds as the record shows them (:func:`valvetrain.units.displayed`),
         in exact decimal arithmetic: a seat angle of 45 deg against 30 deg has the margin -0.5, not the
         -0.5000000000000001 of its radians.  A bound of 0 keeps the SI side (the value itself), whose computation has
@@ -152,55 +152,55 @@ class Check:
         return min(sides, default=math.inf)
 
     @property
-    def shown_value(self):
+    def shown_value(self) -> float:
         """The value in :attr:`unit`."""
         return to_display(self.value, self.unit)
 
     @property
-    def evaluated(self):
+    def evaluated(self) -> bool:
         """False for a check whose value is not a finite number: it cannot be evaluated."""
         return math.isfinite(float(self.value))
 
     @property
-    def value_text(self):
+    def value_text(self) -> str:
         """The value with its unit (``"85.07 m/s"``), or ``"cannot be evaluated: REASON"``."""
         if not self.evaluated:
             return f"cannot be evaluated: {self.unevaluated or UNEVALUATED}"
         return f"{self.shown_value:.6g} {self.unit}".rstrip()
 
     @property
-    def statement(self):
+    def statement(self) -> str:
         """The check's quantity and value as a line says them: ``"intake: V' = 85.07 m/s"``, or ``"intake: valve
         seating velocity cannot be evaluated: the valve has not reseated"``."""
         return f"{self.quantity} {'= ' if self.evaluated else ''}{self.value_text}"
 
     @property
-    def range(self):
+    def range(self) -> str:
         """The allowed range as text in :attr:`unit` (``"50...80 m/s"``, ``">= 1.3"``, ``"> 0 mm"``)."""
         low = None if self.low is None else to_display(self.low, self.unit)
         high = None if self.high is None else to_display(self.high, self.unit)
         return describe_range(low, high, self.unit, self.strict_low)
 
-    def named(self, prefix, **changes):
+    def named(self, prefix, **changes) -> "Check":
         """The same check with ``prefix: `` before its quantity (the chapter it belongs to: ``crank``) and the fields
         ``changes`` (one :func:`dataclasses.replace`)."""
         return replace(self, quantity=f"{prefix}: {self.quantity}", **changes)
 
-    def of_valve(self, name):
+    def of_valve(self, name) -> "Check":
         """The same check as a check of the valve ``name`` (``name: `` before its quantity)."""
         return self.named(name, valve=name)
 
-    def of_spring(self, spring):
+    def of_spring(self, spring) -> "Check":
         """The same check of a spring's own as the check of the drive's ``spring`` (``spring``, ``outer``,
         ``inner``: its name before the quantity)."""
         return replace(self, quantity=f"{spring} {self.quantity}", params=(*self.params, ("spring", spring)))
 
     @property
-    def open(self):
+    def open(self) -> bool:
         """True for a failed check that the user did not accept: an open warning (or failure, or remark)."""
         return not self.passed and not self.accepted
 
-    def warning(self):
+    def warning(self) -> dict:
         """The record of a failed check in ``results.json`` ``warnings``: quantity, code, valve, parameters, value,
         range, source, unit, severity and margin (and the reason of an acceptance)."""
         return {"quantity": self.quantity, "code": self.code, "valve": self.valve, "params": dict(self.params),
@@ -209,7 +209,7 @@ class Check:
                 **({} if self.evaluated else {"unevaluated": self.unevaluated or UNEVALUATED}),
                 **({"accepted": True, "reason": self.reason} if self.accepted else {})}
 
-    def as_dict(self):
+    def as_dict(self) -> dict:
         """The full record, in :attr:`unit`: the warning record with the bounds (without the noise of their
         conversion, :func:`valvetrain.units.displayed`), pass, accepted (and reason)."""
         return {**self.warning(),

@@ -20,16 +20,16 @@ class Interruption:
     seen = False
 
     @classmethod
-    def record(cls, signum, frame):
+    def record(cls, signum, frame) -> None:
         cls.seen = True
 
     @classmethod
-    def interrupt(cls, signum, frame):
+    def interrupt(cls, signum, frame) -> NoReturn:
         cls.seen = True
         raise KeyboardInterrupt
 
     @classmethod
-    def redeliver(cls, unraisable):
+    def redeliver(cls, unraisable) -> None:
         """``sys.unraisablehook``: a KeyboardInterrupt raised where Python cannot pass it on (the SIGINT came while a
         weakref callback or a finaliser ran, e.g. in the garbage collector) is sent to the main thread again, so that
         it interrupts at the next statement instead of being printed as "Exception ignored" and lost.  Sent from a
@@ -40,7 +40,7 @@ class Interruption:
             sys.__unraisablehook__(unraisable)
 
     @classmethod
-    def install(cls, handler):
+    def install(cls, handler) -> None:
         """Install ``handler`` unless the SIGINT is handled otherwise already (a caller's own handler, or ignored);
         with :meth:`interrupt`, also :meth:`redeliver` for the KeyboardInterrupts Python cannot raise."""
         if signal.getsignal(signal.SIGINT) in (signal.default_int_handler, cls.record, cls.interrupt):

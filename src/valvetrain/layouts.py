@@ -40,7 +40,7 @@ class Layout:
     rocker = property(lambda self: "rocker" in self.parts)
 
     @property
-    def train_masses(self):
+    def train_masses(self) -> tuple[str, ...]:
         """The ``[drive.masses]`` keys of the parts a multi-mass train of this layout needs, from the cam."""
         return tuple({"tappet": "tappet_kg", "pushrod": "pushrod_kg", "rocker": "rocker_inertia_kg_mm2"}[p]
                      for p in self.parts)

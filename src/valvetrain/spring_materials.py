@@ -115,25 +115,25 @@ class WireGrade:
     endurance: float = None              # tau_-1 [Pa]
     mean_stress_factor: float = None     # psi_tau
 
-    def tensile_strength(self, wire_diameter):
+    def tensile_strength(self, wire_diameter) -> np.ndarray:
         """R_m [Pa] (NaN for a grade given by constants)."""
         if self.tensile is None:
             return np.full(np.shape(wire_diameter), np.nan)
         return tensile_strength(wire_diameter, *self.tensile)
 
-    def allowable_stress(self, wire_diameter):
+    def allowable_stress(self, wire_diameter) -> np.ndarray:
         """[tau] at the full-lift load [Pa]."""
         if self.tensile is None:
             return np.full(np.shape(wire_diameter), self.allowable)
         return ALLOWABLE_SHARE * self.tensile_strength(wire_diameter)
 
-    def endurance_limit(self, wire_diameter):
+    def endurance_limit(self, wire_diameter) -> np.ndarray:
         """tau_-1 [Pa]: the Goodman line through Zimmerli's peened point for a grade with R_m."""
         if self.tensile is None:
             return np.full(np.shape(wire_diameter), self.endurance)
         return goodman_endurance(*ZIMMERLI_PEENED, TORSIONAL_ULTIMATE_SHARE * self.tensile_strength(wire_diameter))
 
-    def mean_stress(self, wire_diameter):
+    def mean_stress(self, wire_diameter) -> np.ndarray:
         """psi_tau of eq. (6.12): tau_-1 / S_su on the Goodman line for a grade with R_m."""
         if self.tensile is None:
             return np.full(np.shape(wire_diameter), self.mean_stress_factor)

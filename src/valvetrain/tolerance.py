@@ -237,7 +237,7 @@ class RecordFile:
         self.path = Path(folder) / RECORDS
         self.stamp = stamp
 
-    def read(self):
+    def read(self) -> dict:
         """The records written before, index -> record (empty for a new file).
 
         Raises
@@ -264,7 +264,7 @@ class RecordFile:
             done[item["index"]] = item["record"]
         return done
 
-    def open(self, done):
+    def open(self, done) -> "RecordFile":
         """Start appending after the ``done`` records (the file rewritten with them, so a line cut short goes)."""
         self.path.parent.mkdir(parents=True, exist_ok=True)
         tmp = self.path.with_suffix(".tmp")
@@ -276,12 +276,12 @@ class RecordFile:
         self.file = self.path.open("a", encoding="utf-8")
         return self
 
-    def keep(self, index, record):
+    def keep(self, index, record) -> None:
         """Append one record and flush it to the disk."""
         self.file.write(_line(index, record))
         self.file.flush()
 
-    def close(self):
+    def close(self) -> None:
         self.file.close()
 
 

@@ -77,13 +77,13 @@ class DesignResults:
     camshaft: Optional[CamshaftResults] = None  # with a [camshaft] section
 
     @property
-    def warnings(self):
+    def warnings(self) -> list[Check]:
         """The checks that fail and that the specification does not accept, ranked (:func:`valvetrain.checks.ranked`:
         failures, warnings, info; the farthest outside first)."""
         return ranked(c for c in failed(self.checks) if not c.accepted)
 
     @property
-    def accepted(self):
+    def accepted(self) -> list[Check]:
         """The checks that fail and that the specification accepts (``[[accepted]]``, with a reason), ranked."""
         return ranked(c for c in failed(self.checks) if c.accepted)
 

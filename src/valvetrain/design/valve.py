@@ -218,7 +218,7 @@ class CamResult:
     follower_model: Any = field(default=None, repr=False)
     """The cam's :class:`~valvetrain.followers.Follower` (:func:`~valvetrain.followers.follower_of` the cam section)."""
 
-    def valve_lift(self, theta):
+    def valve_lift(self, theta) -> float | np.ndarray:
         """Valve lift [m] at camshaft angles theta."""
         return self.law.valve_lift(theta, self.rocker_ratio, self.follower_model)
 
@@ -336,7 +336,7 @@ class ClearanceResult:
     crank: np.ndarray = field(repr=False)   # crank angles of the open event, rad from the gas-exchange TDC
     gap: np.ndarray = field(repr=False)     # valve-to-piston gap at those angles [m]
 
-    def within(self, low, high):
+    def within(self, low, high) -> Optional[tuple[float, float]]:
         """The smallest gap [m] and its crank angle [rad] between the crank angles low and high, or None."""
         inside = (self.crank >= low) & (self.crank <= high)
         if not np.any(inside):
@@ -663,12 +663,12 @@ class ValveDesign:
     lash_adjuster: Optional[LashAdjusterResult] = None     # with a [lash_adjuster] section
 
     @property
-    def warnings(self):
+    def warnings(self) -> list[Check]:
         """The checks that fail and that the specification does not accept, ranked (failures first)."""
         return ranked(c for c in failed(self.checks) if not c.accepted)
 
     @property
-    def accepted(self):
+    def accepted(self) -> list[Check]:
         """The checks that fail and that the specification accepts, ranked."""
         return ranked(c for c in failed(self.checks) if c.accepted)
 

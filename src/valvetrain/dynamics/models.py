@@ -69,7 +69,7 @@ class Adjuster:
     leak: float
     refill: float
 
-    def array(self):
+    def array(self) -> np.ndarray:
         """The kernel's parameter array (6,)."""
         return np.array([self.motion_ratio, self.plunger_spring, self.area, self.supply, self.leak, self.refill])
 
@@ -116,7 +116,7 @@ class VariableMass:
     mass: np.ndarray
     slope: np.ndarray
 
-    def array(self):
+    def array(self) -> np.ndarray:
         """The kernel's table (3, K): positions, masses and slopes."""
         return np.stack([self.position, self.mass, self.slope]).astype(float)
 
@@ -179,32 +179,32 @@ class Network:
     variable_mass: np.ndarray = field(default_factory=NO_VARIABLE_MASS.copy)
 
     @property
-    def valve(self):
+    def valve(self) -> int:
         """Index of the valve node."""
         return self.names.index("valve")
 
     @property
-    def cam_element(self):
+    def cam_element(self) -> int:
         """Index of the cam-follower contact."""
         return int(np.flatnonzero(self.a == CAM)[0])
 
     @property
-    def seat_element(self):
+    def seat_element(self) -> int:
         """Index of the valve-seat contact."""
         return self.elements.index("seat")
 
     @property
-    def lash(self):
+    def lash(self) -> float:
         """Total clearance of the drive at the valve [m]: the gaps of its unilateral elements."""
         drive = self.unilateral & (np.arange(self.a.size) != self.seat_element)
         return float(self.gap[drive].sum())
 
     @property
-    def spring_elements(self):
+    def spring_elements(self) -> np.ndarray:
         """Indices of the elements that act on the valve from its springs (force on the valve = -their sum)."""
         return np.array([i for i, n in enumerate(self.elements) if n.endswith("spring at valve")], dtype=np.int64)
 
-    def matrix(self, values):
+    def matrix(self, values) -> np.ndarray:
         """Assembled n x n matrix of element values (stiffnesses or dampings) with every contact closed.
 
         An element between nodes a and b adds its value to M_aa and M_bb and subtracts it from M_ab and M_ba;
@@ -218,7 +218,7 @@ class Network:
                     out[i, j] += sign * value
         return out
 
-    def highest_frequency(self):
+    def highest_frequency(self) -> float:
         """Spectral radius of the linearised state matrix with every contact closed [1/s].
 
         The eigenvalues of [[0, I], [-M^-1 K, -M^-1 C]]: closing a contact only adds stiffness and damping,
@@ -406,7 +406,7 @@ class OneMassTrain:
     adjuster: Optional[Adjuster] = None
     variable_mass: Optional[VariableMass] = None
 
-    def network(self):
+    def network(self) -> Network:
         """The train as a :class:`Network`: one node, cam contact with the lash, spring, seat."""
         net = _Builder()
         valve = net.node("valve", self.mass)
@@ -499,7 +499,7 @@ class MultiMassTrain:
     adjuster: Optional[Adjuster] = None
     variable_mass: Optional[VariableMass] = None
 
-    def network(self):
+    def network(self) -> Network:
         """The train as a :class:`Network`."""
         net = _Builder()
         nodes = [net.node(name, m) for name, m in self.drive]

@@ -151,7 +151,7 @@ class SpeedResult:
     adjuster_extension: Optional[np.ndarray] = None
 
     @property
-    def lift_error(self):
+    def lift_error(self) -> np.ndarray:
         """Valve lift minus the rigid lift where either is open [m]."""
         return lift_error(self.lift, self.kinematic_lift)
 
@@ -521,7 +521,7 @@ class SweepResult:
     bounce_tolerance: float = BOUNCE_TOLERANCE
     adjuster_extension: Optional[np.ndarray] = None
 
-    def speed(self, i):
+    def speed(self, i) -> SpeedResult:
         """The :class:`SpeedResult` of the i-th speed."""
         return speed_result(self.cam_speeds[i], self.theta, self.lift[i], self.velocity[i], self.kinematic_lift,
                             self.contact_force[i], self.seat_force[i], self.spring_force[i], self.slope,
@@ -529,26 +529,26 @@ class SweepResult:
                             self.acceleration[i], self.revolutions[i], self.converged[i],
                             None if self.adjuster_extension is None else self.adjuster_extension[i])
 
-    def per_speed(self):
+    def per_speed(self) -> list[SpeedResult]:
         """Every :class:`SpeedResult` of the sweep."""
         return [self.speed(i) for i in range(self.cam_speeds.size)]
 
     @property
-    def lift_error(self):
+    def lift_error(self) -> np.ndarray:
         """Map of valve lift minus rigid lift where either is open [m], shape (S, n)."""
         return lift_error(self.lift, self.kinematic_lift)
 
     @property
-    def torque(self):
+    def torque(self) -> np.ndarray:
         """Map of the camshaft drive torque F dh/dtheta [N m], shape (S, n)."""
         return self.contact_force * self.slope
 
     @cached_property
-    def events(self):
+    def events(self) -> SweepEvents:
         """The :class:`SweepEvents` of every speed (:func:`sweep_events`), found once."""
         return sweep_events(self)
 
-    def headline(self):
+    def headline(self) -> dict:
         """Jump speed, bounce onset speed and the largest seating speed of the sweep (from :attr:`events`).
 
         Returns

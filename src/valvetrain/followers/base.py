@@ -122,55 +122,55 @@ class Follower:
     law_at_valve: ClassVar[bool] = False
 
     @classmethod
-    def from_cam(cls, cam):
+    def from_cam(cls, cam) -> "Follower":
         """The follower of a cam's SI view (or ``CamResult``)."""
         return cls()
 
     @classmethod
-    def missing_key(cls, cam):
+    def missing_key(cls, cam) -> str | None:
         """The message for a key of the cam section (``[valves.NAME.cam]``, in its units) that this follower needs
         and that is not given, or None."""
         return None
 
-    def contour(self, theta, heel, h, dh):
+    def contour(self, theta, heel, h, dh) -> np.ndarray:
         """Contact points of the cam contour, shape (2, n) [m], at camshaft angles ``theta`` [rad]."""
         raise NotImplementedError
 
-    def curvature(self, heel, h, dh, d2h):
+    def curvature(self, heel, h, dh, d2h) -> float | np.ndarray:
         """Radius of curvature of the cam profile [m]: positive convex, negative concave, inf straight."""
         raise NotImplementedError
 
-    def pitch_curve(self, theta, heel, h, dh, d2h):
+    def pitch_curve(self, theta, heel, h, dh, d2h) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, float]:
         """The curve the contour is the inner offset of by ``depth``: ``(points (2, n) [m], d points / d theta
         (2, n) [m/rad], its radius of curvature [m], outward unit normal (2, n), depth [m])`` (for a roller its
         centre's path, depth -R_r; for a flat face the contour itself, depth 0)."""
         raise NotImplementedError
 
-    def pressure_angle(self, heel, h, dh):
+    def pressure_angle(self, heel, h, dh) -> float | np.ndarray:
         """Angle between the contact normal and the follower's line of action [rad]."""
         raise NotImplementedError
 
-    def contact_offset(self, dh):
+    def contact_offset(self, dh) -> float | np.ndarray:
         """Distance of the contact point from the follower's line of action [m]."""
         raise NotImplementedError
 
-    def convex_radius(self, rho):
+    def convex_radius(self, rho) -> float | np.ndarray:
         """The profile radius ``rho`` [m] where the profile is convex to the follower, +inf elsewhere."""
         raise NotImplementedError
 
-    def concave(self, rho):
+    def concave(self, rho) -> np.ndarray:
         """Mask of the profile radii ``rho`` [m] of concave stretches the follower follows (not an undercut)."""
         raise NotImplementedError
 
-    def undercut(self, rho_min):
+    def undercut(self, rho_min) -> bool:
         """Whether a profile whose smallest convex radius is ``rho_min`` [m] cannot be followed (bool)."""
         raise NotImplementedError
 
-    def line_contact(self, rho):
+    def line_contact(self, rho) -> np.ndarray:
         """Mask of the profile radii ``rho`` [m] at which cam and follower touch along a line (Hertz)."""
         raise NotImplementedError
 
-    def contact_curvature(self, rho):
+    def contact_curvature(self, rho) -> float | np.ndarray:
         """1/rho_1 + 1/rho_2 of the contact [1/m]: the profile's curvature and the follower's own.
 
         References
@@ -179,7 +179,7 @@ class Follower:
         """
         return 1.0 / rho + (0.0 if np.isinf(self.radius) else 1.0 / self.radius)
 
-    def contact_stress(self, force, rho, width, modulus):
+    def contact_stress(self, force, rho, width, modulus) -> float | np.ndarray:
         """Hertz line stress between cam and follower [Pa]; 0 where the profile gives no line contact.
 
         Parameters
@@ -209,7 +209,7 @@ class Follower:
         np.copyto(sigma, 0.0, where=~contact)     # in place: a load map's array is large (hertz_line_stress)
         return sigma
 
-    def lift_on_path(self, path, theta, base):
+    def lift_on_path(self, path, theta, base) -> np.ndarray:
         """The follower's lift [m] at camshaft angles ``theta`` [rad] on a cam enveloped by a wheel.
 
         ``path(tau) -> (E, n)`` gives, at the path parameter tau (the design cam's angle), the envelope's point E
@@ -217,32 +217,32 @@ class Follower:
         Solved on the path (by inverting an angle of it), not interpolated."""
         raise NotImplementedError
 
-    def wear_error(self, offset, base, heel, h, dh):
+    def wear_error(self, offset, base, heel, h, dh) -> tuple[float | np.ndarray, float | np.ndarray]:
         """First-order lift error [m] and phase shift [rad] of a cam offset outwards by ``offset`` [m] (a worn
         wheel's cam) whose heel circle grew by ``base`` [m], at the design lift ``h``, ``dh``."""
         raise NotImplementedError
 
-    def lubrication(self, heel, h, rho):
+    def lubrication(self, heel, h, rho) -> float | np.ndarray | None:
         """The hydrodynamic lubrication characteristic of the contact [-], or None where no source defines one."""
         return None
 
-    def surface_velocities(self, omega, heel, h, dh, d2h, rho):
+    def surface_velocities(self, omega, heel, h, dh, d2h, rho) -> tuple[np.ndarray, np.ndarray]:
         """Velocities of the cam's and the follower's surface relative to the contact point along the common
         tangent [m/s], at camshaft speed ``omega`` [rad/s] and the profile radius ``rho`` [m] (:meth:`curvature`):
         their mean entrains the oil film, their difference slides (:mod:`valvetrain.tribology`)."""
         raise NotImplementedError
 
-    def rest_ratio(self, heel):
+    def rest_ratio(self, heel) -> float:
         """The follower's own lever ratio with the follower on the heel circle of radius ``heel`` [m] [-]: 1 for a
         follower translating on its line of action."""
         return 1.0
 
-    def force_ratio(self, heel, h, dh):
+    def force_ratio(self, heel, h, dh) -> np.ndarray:
         """The force the cam carries per unit force along the law's lift [-] (1 for a translating follower, whose law
         is its own lift; a finger's law is the valve's, and its cam carries G / (L_r cos beta) of the valve force)."""
         return np.ones_like(np.asarray(h, dtype=float))
 
-    def ratio(self, h):
+    def ratio(self, h) -> np.ndarray:
         """The follower's own lever ratio (valve-side motion / cam lift) at the lifts ``h`` [m]: 1 for a
         follower translating on its line of action."""
         return np.ones_like(np.asarray(h, dtype=float))

@@ -121,14 +121,14 @@ class PivotedFollower(RollerFollower):
     undercut_source = "Shang Hanji (1988), eq. (2.7); Norton (2009)"
 
     @classmethod
-    def from_cam(cls, cam):
+    def from_cam(cls, cam) -> "PivotedFollower":
         """The finger of the cam's SI view (``roller_radius`` and the ``finger_*`` keys in SI)."""
         return cls(cam.roller_radius, cam.finger_pivot_x, cam.finger_pivot_y, cam.finger_roller_arm,
                    cam.finger_pad_arm, cam.finger_pad_drop or 0.0, cam.finger_pad_radius, cam.finger_valve_angle or 0.0,
                    cam.finger_tip_offset or 0.0)
 
     @classmethod
-    def missing_key(cls, cam):
+    def missing_key(cls, cam) -> str | None:
         """The first of ``roller_radius_mm`` and :data:`KEYS` the cam section does not give."""
         missing = [k for k in ("roller_radius_mm",) + KEYS if getattr(cam, k) is None]
         if missing:
@@ -136,7 +136,7 @@ class PivotedFollower(RollerFollower):
                     f"{', '.join(('roller_radius_mm',) + KEYS)})")
         return None
 
-    def geometry_problem(self, heel, lift):
+    def geometry_problem(self, heel, lift) -> tuple[str, str, str, str] | None:
         """Where the finger cannot sit on the heel circle of radius ``heel`` [m] or cannot give the valve lift ``lift``
         [m]: ``(key of the cam section, its value as given, what is wrong (lengths in mm), joiner)`` for a
         :class:`~valvetrain.specification.messages.Problem`; else None."""
@@ -169,16 +169,16 @@ class PivotedFollower(RollerFollower):
                     "cam lifts its roller (lever ratio > 0)", ": ")
         return None
 
-    def reach(self, heel):
+    def reach(self, heel) -> float:
         """The largest valve lift the pad gives [m], L_b (1 - sin chi_0) (the pad's centre square to the valve axis
         from the pivot), with the roller on the heel circle of radius ``heel`` [m]."""
         return self._pad[0] * (1.0 - np.sin(self._chi0(heel)))
 
-    def rest_ratio(self, heel):
+    def rest_ratio(self, heel) -> float:
         """The lever ratio i_0 = G(psi_0) / L_r with the roller on the heel circle of radius ``heel`` [m]."""
         return float(self.lever_ratio(np.array(self.base_angle(heel))))
 
-    def force_ratio(self, heel, h, dh):
+    def force_ratio(self, heel, h, dh) -> float | np.ndarray:
         """N / F = G / (L_r cos beta): the cam's normal force per unit force at the valve (:meth:`contact_force`)."""
         return self.contact_force(1.0, heel, h, dh)
 
@@ -191,7 +191,7 @@ class PivotedFollower(RollerFollower):
         """L_b and the angle of the pad centre from the pivot-to-roller line, atan2(d_p, L_p)."""
         return np.hypot(self.pad_arm, self.pad_drop), np.arctan2(self.pad_drop, self.pad_arm)
 
-    def base_angle(self, heel):
+    def base_angle(self, heel) -> float:
         """psi_0 [rad]: the finger's angle with the roller on the heel circle of radius ``heel`` [m].
 
         ``P.e(psi) = (g_0^2 - |P|^2 - L_r^2) / (2 L_r)`` with g_0 = R_0 + R_r; of its two roots the one whose roller
@@ -209,12 +209,12 @@ class PivotedFollower(RollerFollower):
     def _chi0(self, heel):
         return self.base_angle(heel) + self.valve_angle + self._pad[1]
 
-    def valve_lift_of(self, psi, heel):
+    def valve_lift_of(self, psi, heel) -> float | np.ndarray:
         """Valve lift v [m] at the finger angles ``psi`` [rad]: L_b (sin chi - sin chi_0)."""
         lb, beta = self._pad
         return lb * (np.sin(psi + self.valve_angle + beta) - np.sin(self._chi0(heel)))
 
-    def angle_of(self, v, heel):
+    def angle_of(self, v, heel) -> float | np.ndarray:
         """The finger angle psi [rad] at the valve lifts ``v`` [m] (:meth:`valve_lift_of` inverted on the branch of
         psi_0); ValueError where the pad cannot reach the lift (|sin chi| > 1)."""
         lb, beta = self._pad
@@ -226,23 +226,23 @@ class PivotedFollower(RollerFollower):
         chi = np.arcsin(s)
         return np.where(np.cos(chi0) >= 0.0, chi, np.pi - chi) - self.valve_angle - beta
 
-    def valve_arm(self, psi):
+    def valve_arm(self, psi) -> float | np.ndarray:
         """G = dv/dpsi = L_b cos chi [m/rad]: the effective valve arm."""
         lb, beta = self._pad
         return lb * np.cos(psi + self.valve_angle + beta)
 
-    def lever_ratio(self, psi):
+    def lever_ratio(self, psi) -> float | np.ndarray:
         """i = G / L_r [-]: valve lift per unit travel of the roller centre on its arc."""
         return self.valve_arm(psi) / self.roller_arm
 
-    def tip_contact(self, psi, heel):
+    def tip_contact(self, psi, heel) -> float | np.ndarray:
         """The pad's contact point on the valve tip across the valve axis [m], ``tip_offset`` with the valve shut:
         (B(psi) - B(psi_0)) . a_perp + tip_offset = L_b (cos chi - cos chi_0) + tip_offset, a_perp = (cos alpha,
         -sin alpha)."""
         lb, beta = self._pad
         return lb * (np.cos(psi + self.valve_angle + beta) - np.cos(self._chi0(heel))) + self.tip_offset
 
-    def angle_derivatives(self, heel, h, dh, d2h):
+    def angle_derivatives(self, heel, h, dh, d2h) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """psi, psi' [rad/rad], psi'' [rad/rad^2] from the valve law's h, h', h'' (camshaft angle)."""
         lb, beta = self._pad
         psi = self.angle_of(h, heel)
@@ -251,13 +251,13 @@ class PivotedFollower(RollerFollower):
         d2 = (d2h + lb * np.sin(psi + self.valve_angle + beta) * d1 ** 2) / arm
         return psi, d1, d2
 
-    def reduced_inertia(self, inertia, heel, h):
+    def reduced_inertia(self, inertia, heel, h) -> float | np.ndarray:
         """J / G(psi)^2 [kg]: the finger's moment of inertia ``inertia`` J [kg m^2] about its pivot reduced to the
         valve at the valve lifts ``h`` [m] (the kinetic energy J psi_dot^2 / 2 = (J / G^2) v_dot^2 / 2; Norton (2009),
         the chapter on the dynamics of follower trains)."""
         return inertia / self.valve_arm(self.angle_of(h, heel)) ** 2
 
-    def reduced_inertia_slope(self, inertia, heel, h):
+    def reduced_inertia_slope(self, inertia, heel, h) -> float | np.ndarray:
         """d(J / G^2)/dv = 2 J L_b sin(chi) / G^4 [kg/m]: how the reduced inertia (:meth:`reduced_inertia`) changes
         with the valve lift at the lifts ``h`` [m] (G_psi = dG/dpsi = -L_b sin chi and dpsi/dv = 1 / G; Norton (2009),
         the chapter on the dynamics of follower trains)."""
@@ -265,7 +265,7 @@ class PivotedFollower(RollerFollower):
         psi = self.angle_of(h, heel)
         return 2.0 * inertia * lb * np.sin(psi + self.valve_angle + beta) / self.valve_arm(psi) ** 4
 
-    def inertia_force(self, inertia, heel, h, dh, d2h):
+    def inertia_force(self, inertia, heel, h, dh, d2h) -> float | np.ndarray:
         """The force at the valve that turns the finger, per camshaft speed squared [N s^2/rad^2 = kg m/rad^2]:
         J psi'' / G, psi'' from the valve law's h, h', h'' (camshaft angle) by :meth:`angle_derivatives`.
 
@@ -298,11 +298,11 @@ class PivotedFollower(RollerFollower):
         psi, _, d2 = self.angle_derivatives(heel, h, dh, d2h)
         return inertia * d2 / self.valve_arm(psi)
 
-    def travel_acceleration(self, heel, h, dh, d2h):
+    def travel_acceleration(self, heel, h, dh, d2h) -> float | np.ndarray:
         """L_r psi'' [m/rad^2]: the roller centre's acceleration along its arc per camshaft angle squared."""
         return self.roller_arm * self.angle_derivatives(heel, h, dh, d2h)[2]
 
-    def centre(self, psi):
+    def centre(self, psi) -> np.ndarray:
         """The roller centre C(psi) in the fixed frame (2, n) [m]."""
         e, _ = _e(psi)
         return self._pivot.reshape((2,) + (1,) * np.ndim(psi)) + self.roller_arm * e
@@ -317,44 +317,44 @@ class PivotedFollower(RollerFollower):
         dw = -_quarter(c_psi) * d1 - self.roller_arm * e * d1 ** 2 + c_psi * d2
         return c, w, dw, ep
 
-    def pitch_points(self, theta, heel, h, dh, d2h=None):
+    def pitch_points(self, theta, heel, h, dh, d2h=None) -> tuple[np.ndarray, np.ndarray]:
         """The roller centre's path in the cam frame: q (2, n) [m] and q' = dq/dtheta (2, n) [m/rad]."""
         c, w, _, _ = self._w(heel, h, dh, np.zeros_like(h) if d2h is None else d2h)
         return _turn(c, -theta), _turn(w, -theta)
 
-    def pitch_radius(self, heel, h, dh, d2h):
+    def pitch_radius(self, heel, h, dh, d2h) -> float | np.ndarray:
         """Radius of curvature of the pitch curve [m], positive convex: -|W|^3 / (W x W_theta), W_theta = -J W + W'
         (the curve runs clockwise as theta grows)."""
         _, w, dw, _ = self._w(heel, h, dh, d2h)
         return -np.hypot(*w) ** 3 / _cross(w, -_quarter(w) + dw)
 
-    def contour(self, theta, heel, h, dh):
+    def contour(self, theta, heel, h, dh) -> np.ndarray:
         """The envelope of the roller circles: q - R_r n, n = J q' / |q'| (2, n) [m]."""
         q, dq = self.pitch_points(theta, heel, h, dh)
         return q - self.radius * _quarter(dq) / np.hypot(*dq)
 
-    def curvature(self, heel, h, dh, d2h):
+    def curvature(self, heel, h, dh, d2h) -> float | np.ndarray:
         """rho = rho_pitch - R_r [m] (:meth:`pitch_radius`)."""
         return self.pitch_radius(heel, h, dh, d2h) - self.radius
 
-    def pitch_curve(self, theta, heel, h, dh, d2h):
+    def pitch_curve(self, theta, heel, h, dh, d2h) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, float]:
         """The roller centre's path, its derivative, radius of curvature and outward normal; depth -R_r."""
         q, dq = self.pitch_points(theta, heel, h, dh, d2h)
         return q, dq, self.pitch_radius(heel, h, dh, d2h), _quarter(dq) / np.hypot(*dq), -self.radius
 
-    def pressure_angle(self, heel, h, dh):
+    def pressure_angle(self, heel, h, dh) -> float | np.ndarray:
         """beta [rad]: the contact normal J W / |W| against the roller centre's velocity e_perp (Norton (2009))."""
         _, w, _, ep = self._w(heel, h, dh, np.zeros_like(h))
         n = _quarter(w)
         dot = np.sum(ep * n, axis=0)
         return np.arctan2(_cross(ep, n) * np.sign(dot), np.abs(dot))
 
-    def contact_force(self, force, heel, h, dh):
+    def contact_force(self, force, heel, h, dh) -> float | np.ndarray:
         """The cam's normal force N [N] that a force ``force`` [N] at the valve needs: F G / (L_r cos beta)."""
         psi = self.angle_of(h, heel)
         return force * self.valve_arm(psi) / (self.roller_arm * np.cos(self.pressure_angle(heel, h, dh)))
 
-    def loads(self, force, heel, h, dh):
+    def loads(self, force, heel, h, dh) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """The finger's loads under a force ``force`` [N] at the valve (along its axis), at the valve lifts ``h`` [m],
         ``dh`` [m/rad] (``force`` broadcasts against them): the roller's (its bearing's) load N [N], the pivot's
         load |R| [N] and the bending moment at the finger's critical section M [N m].
@@ -393,14 +393,14 @@ class PivotedFollower(RollerFollower):
             moment = force * _cross(pad - arm, a)
         return normal, np.hypot(*reaction), np.abs(moment)
 
-    def surface_velocities(self, omega, heel, h, dh, d2h, rho):
+    def surface_velocities(self, omega, heel, h, dh, d2h, rho) -> tuple[np.ndarray, np.ndarray]:
         """Both surfaces at the contact point's speed along the profile, omega |q'| rho / (rho + R_r): pure rolling
         (as :func:`valvetrain.tribology.roller_follower_velocities`, the pitch speed |q'| of this linkage)."""
         _, w, _, _ = self._w(heel, h, dh, d2h)
         u = omega * np.hypot(*w) * rho / (rho + self.radius)
         return u, u
 
-    def lift_on_path(self, path, theta, base, samples=721):
+    def lift_on_path(self, path, theta, base, samples=721) -> np.ndarray:
         """The forward problem: the valve lift [m] at camshaft angles ``theta`` [rad] of a cam given by its contour.
 
         ``path(tau) -> (E, n)``: contour points and outward unit normals in the cam frame (2, m); the roller centre
@@ -441,7 +441,7 @@ class PivotedFollower(RollerFollower):
         psi = psi0 + np.angle(np.exp(1j * (psi - psi0)))
         return self.valve_lift_of(psi, base).reshape(theta.shape)
 
-    def wear_error(self, offset, base, heel, h, dh):
+    def wear_error(self, offset, base, heel, h, dh) -> tuple[float | np.ndarray, float | np.ndarray]:
         """A pitch curve offset outwards by d moves the roller centre d / cos beta along its arc: lift error
         G d / (L_r cos beta) less that of the heel circle grown by ``base``; phase shift d tan beta / |q'|."""
         beta = self.pressure_angle(heel, h, dh)

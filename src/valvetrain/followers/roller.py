@@ -27,26 +27,26 @@ class RollerFollower(Follower):
     undercut_source = "Shang Hanji (1988), eq. (2.7)"
 
     @classmethod
-    def from_cam(cls, cam):
+    def from_cam(cls, cam) -> "RollerFollower":
         """The roller of ``cam.roller_radius`` [m]."""
         return cls(cam.roller_radius)
 
     @classmethod
-    def missing_key(cls, cam):
+    def missing_key(cls, cam) -> str | None:
         """``roller_radius_mm`` when the cam section does not give it."""
         if cam.roller_radius_mm is None:
             return "roller_radius_mm is required when follower = \"roller\" (allowed [1, 200] mm)"
         return None
 
-    def contour(self, theta, heel, h, dh):
+    def contour(self, theta, heel, h, dh) -> np.ndarray:
         """The pitch curve offset inwards by the roller radius (:func:`valvetrain.geometry.roller_follower_contour`)."""
         return geometry.roller_follower_contour(theta, heel, self.radius, h, dh)
 
-    def curvature(self, heel, h, dh, d2h):
+    def curvature(self, heel, h, dh, d2h) -> float | np.ndarray:
         """rho = rho_pitch - R_r [m] (:func:`valvetrain.geometry.roller_follower_curvature`)."""
         return geometry.roller_follower_curvature(heel, self.radius, h, dh, d2h)
 
-    def pitch_curve(self, theta, heel, h, dh, d2h):
+    def pitch_curve(self, theta, heel, h, dh, d2h) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, float]:
         """The roller centre's curve g u, g = R0 + R_r + h (depth -R_r): derivative h' u + g t, its radius, normal
         (g u - h' t) / sqrt(g^2 + h'^2)."""
         u, t = geometry.axes(theta)
@@ -54,39 +54,39 @@ class RollerFollower(Follower):
         rho = geometry.roller_pitch_curvature(heel, self.radius, h, dh, d2h)
         return g * u, dh * u + g * t, rho, (g * u - dh * t) / np.hypot(g, dh), -self.radius
 
-    def pressure_angle(self, heel, h, dh):
+    def pressure_angle(self, heel, h, dh) -> float | np.ndarray:
         """tan beta = h' / g (:func:`valvetrain.geometry.roller_pressure_angle`)."""
         return geometry.roller_pressure_angle(heel, self.radius, h, dh)
 
-    def contact_offset(self, dh):
+    def contact_offset(self, dh) -> np.ndarray:
         """Zero: the roller touches on its centre's normal, reported as no offset from the axis."""
         return np.zeros_like(np.asarray(dh, dtype=float))
 
-    def convex_radius(self, rho):
+    def convex_radius(self, rho) -> np.ndarray:
         """rho where the pitch curve is convex (rho + R_r > 0), +inf on a concave stretch (which the roller
         follows, not an undercut)."""
         rho = np.asarray(rho, dtype=float)
         return np.where(rho + self.radius > 0.0, rho, np.inf)
 
-    def concave(self, rho):
+    def concave(self, rho) -> np.ndarray:
         """Where the pitch curve is concave, rho + R_r < 0."""
         return np.asarray(rho, dtype=float) + self.radius < 0.0
 
-    def undercut(self, rho_min):
+    def undercut(self, rho_min) -> bool:
         """0 < rho_pitch <= R_r at the smallest convex radius (:func:`valvetrain.geometry.undercut_roller`)."""
         return bool(geometry.undercut_roller(rho_min + self.radius, self.radius))
 
-    def line_contact(self, rho):
+    def line_contact(self, rho) -> np.ndarray:
         """A convex profile, or a concave one wider than the roller (rho < -R_r)."""
         rho = np.asarray(rho, dtype=float)
         return (rho > 0.0) | (rho < -self.radius)
 
-    def surface_velocities(self, omega, heel, h, dh, d2h, rho):
+    def surface_velocities(self, omega, heel, h, dh, d2h, rho) -> tuple[np.ndarray, np.ndarray]:
         """The contact point's speed along the profile, both surfaces alike: pure rolling
         (:func:`valvetrain.tribology.roller_follower_velocities`)."""
         return tribology.roller_follower_velocities(omega, heel, self.radius, h, dh, rho)
 
-    def lift_on_path(self, path, theta, base):
+    def lift_on_path(self, path, theta, base) -> np.ndarray:
         """The roller centre on the envelope's offset by R_r, at the point on the follower axis: |Q| - (base + R_r)."""
         def centre(t):
             e, n = path(t)
@@ -95,7 +95,7 @@ class RollerFollower(Follower):
         tau = invert_angle(lambda t: np.arctan2(*centre(t)), theta)
         return np.hypot(*centre(tau)) - (base + self.radius)
 
-    def wear_error(self, offset, base, heel, h, dh):
+    def wear_error(self, offset, base, heel, h, dh) -> tuple[float | np.ndarray, float | np.ndarray]:
         """d sec(beta) - base and the phase shift d sin(beta) / g (the pitch curve offset by d)."""
         g = geometry.roller_pitch_radius(heel, self.radius, h)
         beta = self.pressure_angle(heel, h, dh)

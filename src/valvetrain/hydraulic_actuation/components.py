@@ -103,11 +103,11 @@ class Pipe:
     reaches: int = 20
 
     @property
-    def area(self):
+    def area(self) -> float:
         """Flow area pi d^2 / 4 [m^2]."""
         return math.pi * self.diameter**2 / 4.0
 
-    def wave_speed(self, fluid):
+    def wave_speed(self, fluid) -> float:
         """Wave speed of ``fluid`` in this pipe [m/s] (:func:`wave_speed`)."""
         return wave_speed(fluid.bulk_modulus, fluid.density, self.diameter, self.wall_thickness, self.wall_modulus)
 
@@ -216,16 +216,16 @@ class HydraulicDrive:
     back_pressure: float = 0.1e6
 
     @property
-    def area_ratio(self):
+    def area_ratio(self) -> float:
         """A_p / A_a [-]: the valve lift of a rigid, incompressible drive per unit plunger lift."""
         return self.pump.plunger_area / self.actuator.piston_area
 
     @property
-    def wave_speed(self):
+    def wave_speed(self) -> float:
         """Wave speed a in the pipe [m/s]."""
         return self.pipe.wave_speed(self.fluid)
 
     @property
-    def time_step(self):
+    def time_step(self) -> float:
         """Time step of the characteristic grid L / (N a) [s]."""
         return self.pipe.length / (self.pipe.reaches * self.wave_speed)

@@ -188,43 +188,43 @@ class DriveResult:
     stop: float = math.inf
 
     @property
-    def cavitation(self):
+    def cavitation(self) -> np.ndarray:
         """True where the pressure was at the vapour pressure anywhere in the drive."""
         return self.cavitation_pump | self.cavitation_pipe | self.cavitation_actuator
 
     @property
-    def max_pressure(self):
+    def max_pressure(self) -> float:
         """Largest pressure at either end of the pipe [Pa]."""
         return float(max(self.pump_pressure.max(), self.actuator_pressure.max()))
 
     @property
-    def max_pressure_angle(self):
+    def max_pressure_angle(self) -> float:
         """Camshaft angle of :attr:`max_pressure` [rad]."""
         both = np.maximum(self.pump_pressure, self.actuator_pressure)
         return float(self.angle[np.argmax(both)])
 
     @property
-    def lift_loss(self):
+    def lift_loss(self) -> float:
         """Largest rigid lift less the largest valve lift [m]."""
         return float(self.rigid_lift.max() - self.valve_lift.max())
 
     @property
-    def stop_reached(self):
+    def stop_reached(self) -> bool:
         """True when the valve reached its stop (:attr:`stop`)."""
         return bool(self.valve_lift.max() >= self.stop)
 
     @property
-    def residual_lift(self):
+    def residual_lift(self) -> float:
         """The valve's lift at the end of the record [m]: by default the revolution ends where the plunger is about
         to lift again, so a valve above its seat there has not closed before its next opening."""
         return float(self.valve_lift[-1])
 
-    def lift_off(self):
+    def lift_off(self) -> int:
         """Index of the first step at which the valve is off its seat (the record's length if it never is)."""
         off = np.flatnonzero(self.valve_lift > 0.0)
         return int(off[0]) if off.size else self.angle.size
 
-    def crossings(self, lift, level):
+    def crossings(self, lift, level) -> tuple[float, float]:
         """First rising and last falling camshaft angles [rad] where ``lift`` crosses ``level`` [m],
         linearly interpolated ((nan, nan) if it never does)."""
         above = np.flatnonzero(lift > level)
@@ -237,7 +237,7 @@ class DriveResult:
         fall = np.interp(level, lift[j:j + 2][::-1], self.angle[j:j + 2][::-1])
         return float(rise), float(fall)
 
-    def seating(self, tolerance=BOUNCE_TOLERANCE):
+    def seating(self, tolerance=BOUNCE_TOLERANCE) -> tuple[float, float, float]:
         """The valve's first return to its seat after its largest lift, and the bounce after it.
 
         Parameters
@@ -266,7 +266,7 @@ class DriveResult:
             return math.nan, math.nan, 0.0
         return angle, float(self.valve_velocity[i - 1]), bounce(self.valve_lift, i, tolerance)[0]
 
-    def delays(self, fraction=0.05):
+    def delays(self, fraction=0.05) -> tuple[float, float]:
         """Opening and closing delays of the valve against the rigid drive [rad camshaft].
 
         Parameters

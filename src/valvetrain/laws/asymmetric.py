@@ -39,42 +39,42 @@ class AsymmetricLaw(LiftLaw):
             self.continuity = min(self.continuity, 1)
 
     @property
-    def segments(self):
+    def segments(self) -> list:
         return ([s for s in self.opening.segments if s.end <= 0.0]
                 + [s for s in self.closing.segments if s.start >= 0.0])
 
     @property
-    def lift_max(self):
+    def lift_max(self) -> float:
         return self.opening.lift_max
 
     @property
-    def ramp_height(self):
+    def ramp_height(self) -> float:
         return self.opening.ramp_height
 
     @property
-    def ramp_angle(self):
+    def ramp_angle(self) -> float:
         """Ramp length of the opening flank [rad]."""
         return self.opening.ramp_angle
 
     @property
-    def valve_closes(self):
+    def valve_closes(self) -> float:
         return self.end - self.closing.ramp_angle
 
     @property
-    def main_half_angle(self):
+    def main_half_angle(self) -> float:
         """Opening flank's angle from the end of its ramp to the nose [rad]."""
         return self.opening.main_half_angle
 
-    def derivatives(self, theta):
+    def derivatives(self, theta) -> np.ndarray:
         theta = np.asarray(theta, dtype=float)
         return np.where(theta < 0.0, self.opening.derivatives(theta), self.closing.derivatives(theta))
 
-    def coefficients(self):
+    def coefficients(self) -> dict:
         """Both flanks' coefficients and the acceleration jump at the nose [mm/rad^2]."""
         return {"opening": self.opening.coefficients(), "closing": self.closing.coefficients(),
                 "nose_acceleration_jump": self.nose_acceleration_jump * 1e3}
 
-    def checks(self):
+    def checks(self) -> list:
         """Both flanks' checks, and the acceleration jump at the nose (a jerk impulse on the train)."""
         jump = [check("law.asymmetric.nose_jump", self.nose_acceleration_jump, 0.0, 0.0,
                       source="continuous acceleration of a shock-free cam (Valve-train practical works (n.d.), work 2)",

@@ -75,7 +75,7 @@ class AccelerationStep:
     after: float
 
     @property
-    def size(self):
+    def size(self) -> float:
         """after - before [m/rad^2]; times omega^2 the step of the acceleration [m/s^2]."""
         return self.after - self.before
 
@@ -98,7 +98,7 @@ class LiftLaw(ABC):
     continuity: int = 2
 
     @classmethod
-    def from_mm_deg(cls, **keywords):
+    def from_mm_deg(cls, **keywords) -> "LiftLaw":
         """The law from keywords in the units of a specification file: a keyword ending in a unit (``lift_mm``,
         ``phi1_deg``, ``ramp_velocity_mm_per_deg``; :data:`valvetrain.units.SUFFIXES`) is the constructor's SI
         parameter without the unit (``lift`` [m], ``phi1`` [rad], ``ramp_velocity`` [m/rad]); the others pass as
@@ -125,29 +125,29 @@ class LiftLaw(ABC):
 
     @property
     @abstractmethod
-    def segments(self):
+    def segments(self) -> list[Segment]:
         """Ordered list of :class:`Segment` covering ``[start, end]``."""
 
     @property
     @abstractmethod
-    def lift_max(self):
+    def lift_max(self) -> float:
         """Follower lift above the ramp at the nose, h_T max [m]."""
 
     @property
     @abstractmethod
-    def ramp_height(self):
+    def ramp_height(self) -> float:
         """Ramp height, the clearance taken up before the valve moves [m] (0: no ramp)."""
 
     @property
     @abstractmethod
-    def ramp_angle(self):
+    def ramp_angle(self) -> float:
         """Ramp length Phi_0 on one side [rad camshaft] (0: no ramp)."""
 
     @abstractmethod
-    def derivatives(self, theta):
+    def derivatives(self, theta) -> np.ndarray:
         """Lift and its first three derivatives, shape (4, n) [m, m/rad, m/rad^2, m/rad^3]."""
 
-    def batch_key(self):
+    def batch_key(self) -> tuple | None:
         """Laws of one class with equal keys (not None) are sampled together by the class's
         :meth:`_batch_derivatives` (:func:`batch_derivatives`); None (the default): each on its own."""
         return None
@@ -161,44 +161,44 @@ class LiftLaw(ABC):
         return out
 
     @abstractmethod
-    def coefficients(self):
+    def coefficients(self) -> dict:
         """The law's coefficients as a dict in the units of its source (for results and reports)."""
 
-    def checks(self):
+    def checks(self) -> list:
         """The law's own recommended-range checks, a list of :class:`~valvetrain.checks.Check`, passed or not."""
         return []
 
-    def train_checks(self, natural_frequency, cam_speed):
+    def train_checks(self, natural_frequency, cam_speed) -> list:
         """The law's checks against the elastic train that drives it (natural frequency omega_n and camshaft speed
         omega [rad/s]), a list of :class:`~valvetrain.checks.Check`."""
         return []
 
     @property
-    def start(self):
+    def start(self) -> float:
         """Camshaft angle where the follower leaves the base circle [rad from the nose]."""
         return self.segments[0].start
 
     @property
-    def end(self):
+    def end(self) -> float:
         """Camshaft angle where the follower returns to the base circle [rad from the nose]."""
         return self.segments[-1].end
 
     @property
-    def valve_opens(self):
+    def valve_opens(self) -> float:
         """Camshaft angle where the ramp ends on the opening flank and the valve starts to move [rad]."""
         return self.start + self.ramp_angle
 
     @property
-    def valve_closes(self):
+    def valve_closes(self) -> float:
         """Camshaft angle where the valve seats (start of the closing ramp) [rad]."""
         return self.end - self.ramp_angle
 
     @property
-    def breakpoints(self):
+    def breakpoints(self) -> np.ndarray:
         """Angles where the law or the valve lift is not smooth: segment junctions, ends included [rad]."""
         return np.array([s.start for s in self.segments] + [self.end])
 
-    def segment_names(self, theta):
+    def segment_names(self, theta) -> np.ndarray:
         """Name of the segment of each angle (``"base circle"`` outside the event)."""
         theta = np.asarray(theta, dtype=float)
         names = np.array(["base circle"] + [s.name for s in self.segments], dtype=object)
@@ -208,7 +208,7 @@ class LiftLaw(ABC):
         idx[(theta < self.start) | (theta > self.end)] = 0
         return names[idx]
 
-    def acceleration_steps(self):
+    def acceleration_steps(self) -> tuple[AccelerationStep, ...]:
         """The steps of the acceleration at the law's boundaries, a tuple of :class:`AccelerationStep`.
 
         Notes
@@ -228,39 +228,39 @@ class LiftLaw(ABC):
         return tuple(AccelerationStep(float(a), float(b), float(c))
                      for a, b, c in zip(edges[jumps], before[jumps], after[jumps], strict=True))
 
-    def lift(self, theta):
+    def lift(self, theta) -> float | np.ndarray:
         """Follower lift h [m]."""
         return self.derivatives(theta)[0]
 
-    def velocity(self, theta, omega):
+    def velocity(self, theta, omega) -> float | np.ndarray:
         """Follower velocity omega dh/dtheta [m/s] at camshaft speed omega [rad/s]."""
         return omega * self.derivatives(theta)[1]
 
-    def acceleration(self, theta, omega):
+    def acceleration(self, theta, omega) -> float | np.ndarray:
         """Follower acceleration omega^2 d2h/dtheta2 [m/s^2]."""
         return omega**2 * self.derivatives(theta)[2]
 
-    def jerk(self, theta, omega):
+    def jerk(self, theta, omega) -> float | np.ndarray:
         """Follower jerk omega^3 d3h/dtheta3 [m/s^3]."""
         return omega**3 * self.derivatives(theta)[3]
 
-    def valve_lift(self, theta, rocker_ratio=1.0, follower=FLAT):
+    def valve_lift(self, theta, rocker_ratio=1.0, follower=FLAT) -> float | np.ndarray:
         """Valve lift i_k i_f(h) (h - h0) for h > h0, else 0 [m] (Valve-train practical works (n.d.), work 2: valve =
         tappet x l_v/l_t), with i_f the follower's own lever ratio (:meth:`valvetrain.followers.Follower.ratio`, 1 for
         a translating follower)."""
         return valve_lift_of(self.lift(theta), self.ramp_height, rocker_ratio, follower)
 
-    def crossings(self, height):
+    def crossings(self, height) -> tuple[float, float]:
         """Camshaft angles [rad from the nose] where the lift first rises above and last falls below ``height``
         [m], by root finding on the law; ``(nan, nan)`` where the lift never reaches it."""
         return level_span(self.lift, self.start, self.end, height)
 
-    def duration(self, height):
+    def duration(self, height) -> float:
         """Camshaft angle [rad] over which the lift exceeds ``height`` [m] (nan if it never reaches it)."""
         rise, fall = self.crossings(height)
         return fall - rise
 
-    def profile(self, theta, heel_radius, follower=FLAT):
+    def profile(self, theta, heel_radius, follower=FLAT) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
         """The cam profile at camshaft angles ``theta`` [rad from the nose].
 
         Parameters
@@ -286,13 +286,13 @@ class LiftLaw(ABC):
         return (follower.contour(theta, heel_radius, h, dh), follower.curvature(heel_radius, h, dh, d2h),
                 follower.pressure_angle(heel_radius, h, dh), follower.contact_offset(dh))
 
-    def curvature(self, theta, heel_radius, follower=FLAT):
+    def curvature(self, theta, heel_radius, follower=FLAT) -> float | np.ndarray:
         """The profile's radius of curvature [m] at camshaft angles ``theta`` [rad from the nose], that of
         :meth:`profile` without the contour (the arguments of :meth:`profile`)."""
         h, dh, d2h, _ = self.derivatives(np.asarray(theta, dtype=float))
         return follower.curvature(heel_radius, h, dh, d2h)
 
-    def polar_radius(self, polar_angle, heel_radius, follower=FLAT, samples=7201):
+    def polar_radius(self, polar_angle, heel_radius, follower=FLAT, samples=7201) -> float | np.ndarray:
         """Radius of the cam contour at polar angles from the nose direction (+y towards +x) [m].
 
         Each radius is found on the analytic contour: the contour point's polar angle is
@@ -302,7 +302,7 @@ class LiftLaw(ABC):
         theta = invert_angle(lambda t: np.arctan2(*self.profile(t, heel_radius, follower)[0]), polar_angle, samples)
         return np.hypot(*self.profile(theta, heel_radius, follower)[0])
 
-    def extremes(self, omega):
+    def extremes(self, omega) -> Extremes:
         """Extreme velocity and accelerations at camshaft speed omega [rad/s], found on the analytic law.
 
         Notes
@@ -372,15 +372,15 @@ class RampedLaw(LiftLaw):
     ramp = None
 
     @property
-    def lift_max(self):
+    def lift_max(self) -> float:
         return self._lift
 
     @property
-    def ramp_height(self):
+    def ramp_height(self) -> float:
         return self.ramp.height if self.ramp is not None else 0.0
 
     @property
-    def ramp_angle(self):
+    def ramp_angle(self) -> float:
         return self.ramp.length if self.ramp is not None else 0.0
 
 
@@ -397,7 +397,7 @@ class SymmetricLaw(LiftLaw):
 
     @property
     @abstractmethod
-    def half_angle(self):
+    def half_angle(self) -> float:
         """Half of the whole event, ramp included [rad camshaft]."""
 
     @abstractmethod
@@ -409,7 +409,7 @@ class SymmetricLaw(LiftLaw):
         raise NotImplementedError
 
     @cached_property
-    def segments(self):
+    def segments(self) -> list[Segment]:
         """The opening flank's segments and their mirror images, made once per law (a law is not changed once
         made)."""
         T = self.half_angle
@@ -418,7 +418,7 @@ class SymmetricLaw(LiftLaw):
         closing = [Segment(f"{n} closing", T - b, T - a) for n, a, b in reversed(rise)]
         return opening + closing
 
-    def derivatives(self, theta):
+    def derivatives(self, theta) -> np.ndarray:
         theta = np.asarray(theta, dtype=float)
         out = np.zeros((4, theta.size))
         self._mirrored(np.ascontiguousarray(theta).ravel(), out)

@@ -155,16 +155,16 @@ class CombinedLaw(RampedLaw, SymmetricLaw):
         self._offsets = offsets
         return x
 
-    def amplitude(self, i):
+    def amplitude(self, i) -> np.ndarray:
         """Amplitudes of segment i [m/rad^2]."""
         return self._amplitudes[self._offsets[i]:self._offsets[i + 1]]
 
     @property
-    def main_half_angle(self):
+    def main_half_angle(self) -> float:
         return float(self.lengths.sum())
 
     @property
-    def half_angle(self):
+    def half_angle(self) -> float:
         return float(self._edges[-1])
 
     def _rise_segments(self):
@@ -189,6 +189,6 @@ class CombinedLaw(RampedLaw, SymmetricLaw):
             h, v = h + v * self.lengths[i] + amp0 @ end[:, 2], v + amp0 @ end[:, 1]
         return out
 
-    def coefficients(self):
+    def coefficients(self) -> dict:
         """Amplitudes of every segment [mm/rad^2] keyed by segment."""
         return {f"S{i + 1}_{s}": [float(a) * 1e3 for a in self.amplitude(i)] for i, s in enumerate(self.shapes)}

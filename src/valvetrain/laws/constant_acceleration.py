@@ -91,11 +91,11 @@ class ConstantAccelerationLaw(RampedLaw, SymmetricLaw):
         self._start = (np.array(h[:3]), np.array(v[:3]), np.array(acc))
 
     @property
-    def main_half_angle(self):
+    def main_half_angle(self) -> float:
         return float(sum(self.phi))
 
     @property
-    def half_angle(self):
+    def half_angle(self) -> float:
         return float(self._edges[-1])
 
     def _rise_segments(self):
@@ -115,7 +115,7 @@ class ConstantAccelerationLaw(RampedLaw, SymmetricLaw):
         out[:, ~ramp] = [h0[i] + v0[i] * x + acc[i] * x * x / 2.0, v0[i] + acc[i] * x, acc[i], np.zeros_like(x)]
         return out
 
-    def coefficients(self):
+    def coefficients(self) -> dict:
         """A1, A2 and the third level [mm/rad^2], the ramp velocity [mm/rad] and kappa."""
         return {"A1": self.a1 * 1e3, "A2": self.a2 * 1e3, "A3": self.kappa * self.a2 * 1e3,
                 "ramp_velocity": self.ramp.end_velocity * 1e3, "kappa": self.kappa}

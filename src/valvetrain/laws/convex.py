@@ -127,12 +127,12 @@ class ThreeArcLaw(_ArcCam):
         self.a = self.r0 + self._lift - self.r2
 
     @classmethod
-    def from_flank_radius(cls, base_radius, lift, half_angle, flank_radius):
+    def from_flank_radius(cls, base_radius, lift, half_angle, flank_radius) -> "ThreeArcLaw":
         r2 = _solve_nose_radius(base_radius, lift, half_angle, lambda r1, f1: r1 - flank_radius)
         return cls(base_radius, lift, half_angle, r2)
 
     @classmethod
-    def from_flank_angle(cls, base_radius, lift, half_angle, flank_angle):
+    def from_flank_angle(cls, base_radius, lift, half_angle, flank_angle) -> "ThreeArcLaw":
         """The Valve-train dynamics article (n.d.) fixes the flank (positive-acceleration) angle phi1.
 
         >>> law = ThreeArcLaw.from_flank_angle(20.0, 8.0, np.radians(60), np.radians(25))
@@ -143,7 +143,7 @@ class ThreeArcLaw(_ArcCam):
         return cls(base_radius, lift, half_angle, r2)
 
     @property
-    def flank_end(self):
+    def flank_end(self) -> float:
         """End of the flank arc, phi1 [rad]."""
         return self.phi1
 
@@ -156,7 +156,7 @@ class ThreeArcLaw(_ArcCam):
         return np.where(flank, [k * (1 - c), k * s, k * c, -k * s],
                         [self.a * cp + self.r2 - self.r0, self.a * sp, -self.a * cp, -self.a * sp])
 
-    def coefficients(self):
+    def coefficients(self) -> dict:
         """Radii [mm] and angles [deg] of the construction."""
         return {"r0": self.r0 * 1e3, "r1": self.r1 * 1e3, "r2": self.r2 * 1e3, "a": self.a * 1e3,
                 "phi1_deg": float(np.degrees(self.phi1)), "phi2_deg": float(np.degrees(self.phi2))}
@@ -213,7 +213,7 @@ class TangentLaw(_ArcCam):
         self.junction = self.phi_p0 - self.theta_t
 
     @property
-    def flank_end(self):
+    def flank_end(self) -> float:
         """End of the straight flank [rad]."""
         return self.junction
 
@@ -235,7 +235,7 @@ class TangentLaw(_ArcCam):
         out[:, ~flank] = [a * cu + q - k, -g1, g2, -g3]
         return out
 
-    def coefficients(self):
+    def coefficients(self) -> dict:
         """Radii [mm] and the junction angle [deg]."""
         return {"r0": self.r0 * 1e3, "r2": self.r2 * 1e3, "a": self.a * 1e3, "roller_radius": self.rr * 1e3,
                 "junction_deg": float(np.degrees(self.junction))}

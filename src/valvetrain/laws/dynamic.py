@@ -80,7 +80,7 @@ class DynamicLaw(RampedLaw, SymmetricLaw):
         if self.lift_max <= 0.0:
             raise LawError("nose_below_ramp", nose=self.lift_max, inertia_rate=self.m * self.omega**2, stiffness=self.c)
 
-    def valve_motion(self, u):
+    def valve_motion(self, u) -> np.ndarray:
         """Design valve motion y and its first five derivatives with respect to the cam angle from the nose u [rad]."""
         x = np.abs(np.asarray(u, dtype=float)) / self.phi_p0
         sign = np.sign(u)
@@ -101,15 +101,15 @@ class DynamicLaw(RampedLaw, SymmetricLaw):
         return np.array(h)
 
     @property
-    def lift_max(self):
+    def lift_max(self) -> float:
         return self._nose - self.ramp.height
 
     @property
-    def main_half_angle(self):
+    def main_half_angle(self) -> float:
         return self.phi_p0
 
     @property
-    def half_angle(self):
+    def half_angle(self) -> float:
         return self.ramp.length + self.phi_p0
 
     def _rise_segments(self):
@@ -124,7 +124,7 @@ class DynamicLaw(RampedLaw, SymmetricLaw):
         out[:, ~ramp] = [d[0], -d[1], d[2], -d[3]]            # d/dphi = -d/du
         return out
 
-    def fall_before_nose(self, samples=2001):
+    def fall_before_nose(self, samples=2001) -> float:
         """Largest drop of the cam lift on its way to the nose [m] (0 for a cam that rises monotonically).
 
         The correction (M omega^2 y'' + K y)/c lowers the lift near the nose, where y'' < 0; a compliant
@@ -132,12 +132,12 @@ class DynamicLaw(RampedLaw, SymmetricLaw):
         h = self._cam(np.linspace(self.phi_p0, 0.0, samples))[0]        # from the ramp's end to the nose
         return float(np.max(np.maximum.accumulate(h) - h))
 
-    def checks(self):
+    def checks(self) -> list:
         """The cam lift must rise monotonically to the nose (a dip means the drive is too compliant)."""
         return [check("law.dynamic.fall_before_nose", self.fall_before_nose(), high=0.0,
                       source="Rothbart (2004), section 13.7: the cam lift rises to the nose", unit="mm")]
 
-    def coefficients(self):
+    def coefficients(self) -> dict:
         """Valve-motion coefficients C_k = a_k / y_max, exponents, and the drive data used."""
         out = {f"C{e:g}": float(a / self.y_max) for e, a in zip(self.k, self.coef, strict=True)}
         out.update(exponents=[float(e) for e in self.k], stiffness_N_per_mm=self.c * 1e-3, mass_kg=self.m,

@@ -133,31 +133,31 @@ class HarmonicLaw(LiftLaw):
         return level_span(self.lift, -self.alpha, self.alpha, self._ramp_height)[0] + self.alpha
 
     @property
-    def segments(self):
+    def segments(self) -> list[Segment]:
         return [Segment("harmonic opening", -self.alpha, 0.0), Segment("harmonic closing", 0.0, self.alpha)]
 
     @property
-    def lift_max(self):
+    def lift_max(self) -> float:
         return float(self.lift(0.0)) - self._ramp_height
 
     @property
-    def ramp_height(self):
+    def ramp_height(self) -> float:
         return self._ramp_height
 
     @property
-    def ramp_angle(self):
+    def ramp_angle(self) -> float:
         return self._opening
 
     @property
-    def main_half_angle(self):
+    def main_half_angle(self) -> float:
         return self.alpha - self._opening
 
     @property
-    def breakpoints(self):
+    def breakpoints(self) -> np.ndarray:
         o = self._opening
         return np.unique(np.array([-self.alpha, -self.alpha + o, 0.0, self.alpha - o, self.alpha]))
 
-    def derivatives(self, theta):
+    def derivatives(self, theta) -> np.ndarray:
         theta = np.asarray(theta, dtype=float)
         flat = theta.ravel()
         out = np.zeros((4, flat.size))
@@ -167,13 +167,13 @@ class HarmonicLaw(LiftLaw):
         out[:, inside] = [c @ self.a, -s @ (self.a * self.w), -c @ (self.a * self.w**2), s @ (self.a * self.w**3)]
         return out.reshape((4,) + theta.shape)
 
-    def train_checks(self, natural_frequency, cam_speed):
+    def train_checks(self, natural_frequency, cam_speed) -> list:
         """The harmonic order against the train: N < alpha_W omega_n / (pi omega) (:func:`harmonic_limit`)."""
         return [check("law.harmonic.order", self.harmonics,
                       high=harmonic_limit(self.alpha, natural_frequency, cam_speed),
                       source="Shang Hanji (1988), section 4.2 (reconstructed): N < alpha_W omega_n/(pi omega)")]
 
-    def coefficients(self):
+    def coefficients(self) -> dict:
         """a_0 ... a_N [mm], N, m and the largest deviation from the target [mm]."""
         return {"a": [float(x) * 1e3 for x in self.a], "harmonics": self.harmonics,
                 "junction_order": self.junction_order, "max_deviation_mm": self.deviation * 1e3,

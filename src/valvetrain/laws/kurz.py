@@ -160,12 +160,12 @@ class KurzLaw(RampedLaw, SymmetricLaw):
                                    self.phi2, self.phi3))
 
     @property
-    def main_half_angle(self):
+    def main_half_angle(self) -> float:
         """phi_p0 = Phi1 + Phi2 + Phi3, from the end of the ramp to the nose [rad] (eq. 2.2)."""
         return self.phi1 + self.phi2 + self.phi3
 
     @property
-    def half_angle(self):
+    def half_angle(self) -> float:
         return float(self._edges[-1])
 
     def _rise_segments(self):
@@ -175,11 +175,11 @@ class KurzLaw(RampedLaw, SymmetricLaw):
     def _mirrored(self, theta, out):
         _kurz_kernel(theta, out, *self._kernel_arguments)
 
-    def coefficients(self):
+    def coefficients(self) -> dict:
         """Coefficients and auxiliaries in the manual's units (mm, rad), keys as in Valve-train practical works (n.d.)."""
         return {k: v * 1e3 if k.startswith("c") else v for k, v in asdict(self.c).items()}
 
-    def residuals(self):
+    def residuals(self) -> dict:
         """Residuals of the continuity system (2.10), (2.12), (2.14), (2.16), (2.18), (2.20), (2.22) [mm, rad].
 
         With the closed-form coefficients they vanish to round-off; the appendix of
@@ -199,7 +199,7 @@ class KurzLaw(RampedLaw, SymmetricLaw):
             "2.22": -c["c22"] * m**2 / (2.0 * c["c32"]) - Z,
         }
 
-    def seed_formulas(self, base_radius, omega):
+    def seed_formulas(self, base_radius, omega) -> dict:
         """The closed-form extremes of Valve-train practical works (n.d.) (2.35)-(2.39), follower side, SI.
 
         Parameters
@@ -227,7 +227,7 @@ class KurzLaw(RampedLaw, SymmetricLaw):
             "rho_max": base_radius + c.c11 * f1 / 2.0 + c.c12 * ((np.pi / f1) ** 2 - 1.0),
         }
 
-    def checks(self):
+    def checks(self) -> list:
         """Recommended ranges of (2.1), (2.3) and (2.4)."""
         return [
             check("ramp.end_velocity", self.ramp_velocity, *(w * 1e-3 / np.radians(1.0)

@@ -603,14 +603,14 @@ class TableLaw(RampedLaw):
         return np.array([c @ a + s @ b, -s @ (a * k) + c @ (b * k), -c @ (a * k**2) - s @ (b * k**2),
                          s @ (a * k**3) - c @ (b * k**3)])
 
-    def fitted(self, theta, kind=None):
+    def fitted(self, theta, kind=None) -> np.ndarray:
         """Lift and three derivatives of a fit at angles from the lobe centre, shape (4, n)."""
         theta = np.asarray(theta, dtype=float)
         if (kind or self.fit) == "harmonic":
             return self._harmonic_derivatives(theta)
         return np.array([self._spline(theta, nu) for nu in range(4)])
 
-    def derivatives(self, theta):
+    def derivatives(self, theta) -> np.ndarray:
         theta = np.asarray(theta, dtype=float)
         flat = theta.ravel()
         out = np.zeros((4, flat.size))
@@ -619,7 +619,7 @@ class TableLaw(RampedLaw):
         out[0] = np.maximum(out[0], 0.0)    # the round-off of the event's ends (the fit is positive inside)
         return out.reshape((4,) + theta.shape)
 
-    def quality(self, kind):
+    def quality(self, kind) -> FitQuality:
         """:class:`FitQuality` of the ``"spline"`` or ``"harmonic"`` fit against the table."""
         t = self.angles - self.centre
         d = self.fitted(t, kind)
@@ -632,38 +632,38 @@ class TableLaw(RampedLaw):
                           float(np.sum(np.abs(np.diff(jerk)))))
 
     @property
-    def segments(self):
+    def segments(self) -> list[Segment]:
         return [Segment("measured opening", self.start_angle, 0.0), Segment("measured closing", 0.0, self.end_angle)]
 
     @property
-    def lift_max(self):
+    def lift_max(self) -> float:
         """The largest fitted lift above the ramp [m] (a lobe's top need not lie on its symmetry axis)."""
         return self._top - self._ramp_height
 
     @property
-    def ramp_height(self):
+    def ramp_height(self) -> float:
         return self._ramp_height
 
     @property
-    def ramp_angle(self):
+    def ramp_angle(self) -> float:
         """Opening ramp: from the start of the event to where the valve opens [rad]."""
         return self._valve_span[0] - self.start_angle
 
     @property
-    def valve_opens(self):
+    def valve_opens(self) -> float:
         """Where the fitted lift exceeds the ramp height (the clearance) on the opening flank [rad]."""
         return self._valve_span[0]
 
     @property
-    def valve_closes(self):
+    def valve_closes(self) -> float:
         """Where the fitted lift falls back to the ramp height on the closing flank [rad]."""
         return self._valve_span[1]
 
     @property
-    def main_half_angle(self):
+    def main_half_angle(self) -> float:
         return 0.5 * (self.end_angle - self.start_angle)
 
-    def checks(self):
+    def checks(self) -> list:
         """The N-harmonic fit must meet the stated measurement accuracy by ``max_harmonics``; if it does not, the
         table is noisier than stated (or the accuracy finer than the instrument's).  An accuracy derived from the
         rows (:func:`table_accuracy`) is not finer than their noise: an N-harmonic fit that misses it cannot follow
@@ -674,7 +674,7 @@ class TableLaw(RampedLaw):
                       unit="mm", source=f"Shang Hanji (1988), section 5.2: accuracy_mm, met by N <= {self.harmonics} harmonics "
                                         "(N by the residual against the accuracy, 0.002-0.01 mm)")]
 
-    def coefficients(self):
+    def coefficients(self) -> dict:
         """The fit used, the harmonic order, the remaining (true) asymmetry, the lobe centre and the points fitted
         (with the table rows averaged into each)."""
         return {"fit": self.fit, "harmonics": self.harmonics, "asymmetry_rms_mm": self.asymmetry_rms * 1e3,

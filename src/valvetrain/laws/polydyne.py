@@ -173,16 +173,16 @@ class PolynomialLaw(RampedLaw, SymmetricLaw):
         return polynomial_junction_coefficients(self._k, nose, self.ramp_height, -self.ramp.end_velocity * self.phi_p0)
 
     @property
-    def exponents(self):
+    def exponents(self) -> tuple[float, ...]:
         return tuple(float(e) for e in self._k)
 
     @property
-    def main_half_angle(self):
+    def main_half_angle(self) -> float:
         """phi_p0 [rad camshaft]."""
         return self.phi_p0
 
     @property
-    def half_angle(self):
+    def half_angle(self) -> float:
         return self.ramp_angle + self.phi_p0
 
     def _rise_segments(self):
@@ -199,7 +199,7 @@ class PolynomialLaw(RampedLaw, SymmetricLaw):
                            float(self._a[quad].sum()), np.stack([a, a * k, a * _falling(k, 2), a * _falling(k, 3)]),
                            powers, np.where(powers == np.round(powers), powers, -1).astype(np.int64), step, ramp)
 
-    def coefficients(self):
+    def coefficients(self) -> dict:
         """a_k / h_nose (dimensionless, h = h_nose (1 + sum C_k x^k)) keyed ``C<k>``, and the exponents."""
         c = self._a / (self._lift + self.ramp_height)
         out = {f"C{e:g}": float(v) for e, v in zip(self._k, c, strict=True)}
@@ -252,14 +252,14 @@ class PolydyneLaw(PolynomialLaw):
             return self._lift * np.array(polydyne_coefficients(*self._k[1:]))
         return super()._solve()
 
-    def coefficients(self):
+    def coefficients(self) -> dict:
         """C2, Cp, Cq, Cr, Cs of h = h_nose (1 + sum C x^k) (dimensionless) and the exponents p, q, r, s."""
         c = self._a / (self._lift + self.ramp_height)
         out = dict(zip(("C2", "Cp", "Cq", "Cr", "Cs"), map(float, c), strict=True))
         out.update(zip(("p", "q", "r", "s"), map(float, self._k[1:]), strict=True))
         return out
 
-    def checks(self):
+    def checks(self) -> list:
         """The recommended range of p (Valve-train practical works (n.d.), work 3)."""
         return [check("law.polydyne.exponent_p", self._k[1], *EXPONENT_P_RANGE, source="Valve-train practical works (n.d.), work 3")]
 

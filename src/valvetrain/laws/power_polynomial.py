@@ -308,29 +308,29 @@ class PowerPolynomialLaw(SymmetricLaw):
         self._table = np.array([(start, L, A, S0, v0) for _, start, L, A, _, S0, v0 in self._pieces])
 
     @property
-    def nose_lift(self):
+    def nose_lift(self) -> float:
         """S_max = S_b + lift, the tappet lift over the dwell [m]."""
         return self._lift + self._h0
 
     @property
-    def lift_max(self):
+    def lift_max(self) -> float:
         return self._lift
 
     @property
-    def ramp_height(self):
+    def ramp_height(self) -> float:
         return self._h0
 
     @property
-    def ramp_angle(self):
+    def ramp_angle(self) -> float:
         return self._phi0
 
     @property
-    def main_half_angle(self):
+    def main_half_angle(self) -> float:
         """phi_1 + phi_2 + phi_dwell/2 [rad camshaft]."""
         return self.phi_p0
 
     @property
-    def half_angle(self):
+    def half_angle(self) -> float:
         return self._phi0 + self.phi_p0
 
     def _rise_segments(self):
@@ -341,7 +341,7 @@ class PowerPolynomialLaw(SymmetricLaw):
             out[-1] = (out[-1][0], out[-1][1], self.half_angle)
         return out
 
-    def batch_key(self):
+    def batch_key(self) -> tuple:
         """The shapes of the pieces: laws with the same reconstruction, exponents and sharpness are sampled together
         (their pieces differ in length, amplitude and start values only)."""
         return self.reconstruction, tuple(self.exponents.values()), self.sharpness
@@ -370,7 +370,7 @@ class PowerPolynomialLaw(SymmetricLaw):
             out[:, m] = (S0 + v0 * L * xi + A * L**2 * G, v0 + A * L * F, A * f, A * df / L)
         return out
 
-    def coefficients(self):
+    def coefficients(self) -> dict:
         mm = 1e3
         A0, B0, C0 = (c * mm for c in ramp_coefficients(self._h0, self._phi0, self.v_qb))
         out = {"reconstruction": self.reconstruction, "A0_mm_rad2": A0, "B0_mm_rad2": B0, "C0_mm_rad2": C0,
@@ -384,7 +384,7 @@ class PowerPolynomialLaw(SymmetricLaw):
             out["chi"] = self.sharpness
         return out
 
-    def fullness(self):
+    def fullness(self) -> float:
         """eta_П = int_b^b' S dphi / (S_max (phi_D - 2 phi_0)): tappet lift over the valve-open part.
 
         Notes
@@ -398,7 +398,7 @@ class PowerPolynomialLaw(SymmetricLaw):
         total += 0.5 * self.dwell * self.S_h
         return total / (self.S_h * self.phi_p0)
 
-    def checks(self):
+    def checks(self) -> list:
         if self.reconstruction != "R2":
             return []
         src = "UkrSURT Proceedings (2019): exponent ranges from the authors' search studies"

@@ -141,16 +141,16 @@ class Ramp:
         self.end_velocity = float(end_velocity)
 
     @property
-    def length(self):
+    def length(self) -> float:
         """Ramp length [rad camshaft]."""
         raise NotImplementedError
 
     @property
-    def parameters(self):
+    def parameters(self) -> tuple:
         """``(code, height, end_velocity, length, fraction)``, the arguments of :func:`ramp_at`."""
         return self.code, self.height, self.end_velocity, self.length, self.fraction
 
-    def evaluate(self, phi):
+    def evaluate(self, phi) -> np.ndarray:
         """Lift and three derivatives at the angles ``phi`` from the start of the ramp, shape (4, n)."""
         return _ramp_values(np.ascontiguousarray(phi, dtype=float).ravel(), *self.parameters)
 
@@ -161,7 +161,7 @@ class CosineRamp(Ramp):
     kind = "cosine"
 
     @property
-    def length(self):
+    def length(self) -> float:
         return float(cosine_ramp_length(self.height, self.end_velocity))
 
 
@@ -176,7 +176,7 @@ class ConstantVelocityRamp(Ramp):
     starts_at_rest = False
 
     @property
-    def length(self):
+    def length(self) -> float:
         return self.height / self.end_velocity
 
 
@@ -213,7 +213,7 @@ class ConstantAccelerationRamp(Ramp):
         self.fraction = float(fraction)
 
     @property
-    def length(self):
+    def length(self) -> float:
         return self.height / (self.end_velocity * (1.0 - self.fraction / 2.0))
 
 

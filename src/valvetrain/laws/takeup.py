@@ -58,7 +58,7 @@ class ClearanceTakeUp(LiftLaw):
         self.source = f"{law.source}; the valve clearance is taken up on the flanks (no ramp)"
 
     @property
-    def segments(self):
+    def segments(self) -> list[Segment]:
         out = []
         for s in self.law.segments:
             cuts = [a for a in (self._opens, self._closes) if s.start < a < s.end]
@@ -73,33 +73,33 @@ class ClearanceTakeUp(LiftLaw):
         return out
 
     @property
-    def lift_max(self):
+    def lift_max(self) -> float:
         return self.law.lift_max - self.clearance
 
     @property
-    def ramp_height(self):
+    def ramp_height(self) -> float:
         return self.clearance
 
     @property
-    def ramp_angle(self):
+    def ramp_angle(self) -> float:
         return self._opens - self.law.start
 
     @property
-    def valve_closes(self):
+    def valve_closes(self) -> float:
         return self._closes
 
     @property
-    def main_half_angle(self):
+    def main_half_angle(self) -> float:
         return self.law.main_half_angle
 
-    def derivatives(self, theta):
+    def derivatives(self, theta) -> np.ndarray:
         return self.law.derivatives(theta)
 
-    def coefficients(self):
+    def coefficients(self) -> dict:
         """The law's coefficients and the take-up angles of the clearance [cam deg]."""
         return {**self.law.coefficients(), "clearance_mm": self.clearance * 1e3,
                 "take_up_opening_cam_deg": float(np.degrees(self.ramp_angle)),
                 "take_up_closing_cam_deg": float(np.degrees(self.law.end - self._closes))}
 
-    def checks(self):
+    def checks(self) -> list:
         return self.law.checks()

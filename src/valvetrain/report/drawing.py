@@ -59,7 +59,7 @@ class FigureProcess:
         self._conn = self._conns[0]
         self._sending = self._names = None
 
-    def submit(self, results, folder, lang, figures, also=None):
+    def submit(self, results, folder, lang, figures, also=None) -> None:
         """Draw the figures ``figures`` of ``results`` into ``folder`` (the arguments of ``write_plots``); first
         call ``also()`` in the first drawer, if given (a picklable callable that writes other files of the results,
         with the modules of ``imports``).
@@ -88,14 +88,14 @@ class FigureProcess:
         finally:
             os.close(arrays)
 
-    def names(self):
+    def names(self) -> dict:
         """``write_plots``'s return value (the files of the figures, which the report names) as soon as the first
         drawer has the request, before the figures are drawn; its exception (figures not known), raised here."""
         if self._names is None:
             self._names = self._answer()
         return self._names
 
-    def result(self):
+    def result(self) -> dict:
         """``write_plots``'s return value, once every process has drawn its figures; an exception of one, raised
         here."""
         self.names()
@@ -112,7 +112,7 @@ class FigureProcess:
             raise value
         return value
 
-    def stop(self):
+    def stop(self) -> None:
         """End the processes (at once, where one still draws: the first ends those it forked) and close the pipe."""
         if self._process.is_alive():
             self._process.terminate()

@@ -34,7 +34,7 @@ class DecimalComma(ScalarFormatter):
     def __call__(self, x, pos=None):
         return super().__call__(x, pos).replace(".", ",")
 
-    def get_offset(self):
+    def get_offset(self) -> str:
         return super().get_offset().replace(".", ",")
 
 

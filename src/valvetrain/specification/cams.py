@@ -21,8 +21,8 @@ from pydantic import Field, ValidationError, model_validator
 from ..checks import check
 from ..files import LIFT_TABLE_RANGES, read_lift_table, shown_path
 from ..followers import REGISTRY as FOLLOWERS
-from ..laws import (AsymmetricLaw, CombinedLaw, ConstantAccelerationLaw, DynamicLaw, HarmonicLaw, KurzLaw, PolydyneLaw,
-                    PolynomialLaw, PowerPolynomialLaw, TangentLaw, ThreeArcLaw)
+from ..laws import (AsymmetricLaw, CombinedLaw, ConstantAccelerationLaw, DynamicLaw, HarmonicLaw, KurzLaw, LiftLaw,
+                    PolydyneLaw, PolynomialLaw, PowerPolynomialLaw, TangentLaw, ThreeArcLaw)
 from ..laws.power_polynomial import ARTICLE_EXPONENTS
 from ..laws.measured import CHECKING_HEIGHTS_MM, MIN_VALVE_LIFT_MM, TableLaw, lobe_table, table_accuracy
 from ..laws.records import Duration, FitQuality, LawRecord, MeasuredRecord, PowerPolynomialRecord, SeedFormulas
@@ -312,21 +312,21 @@ class KurzCam(_SegmentAngles, _CamBase, _RampKeys):
     phi3_deg: Optional[SEGMENT_ANGLE] = None
     shape_factor: _bounded(0.05, 1.0, low_open=False, high_open=True) = 0.625
 
-    def search_variables(self, valve, engine):
+    def search_variables(self, valve, engine) -> list[tuple[str, float, float]]:
         """phi1, phi2 and the shape factor Z."""
         return self.segment_variables(valve, engine) + [("cam.shape_factor", 0.05, 0.99)]
 
-    def build_flank(self, valve, engine):
+    def build_flank(self, valve, engine) -> KurzLaw:
         c = valve.cam
         return KurzLaw(_tappet_lift(valve), ramp_height(valve), c.ramp_end_velocity, c.phi1, c.phi2,
                        self._phi3(valve, engine), c.shape_factor, **_ramp(c))
 
-    def asymmetric_problems(self, at, closing):
+    def asymmetric_problems(self, at, closing) -> list[Problem]:
         if self.phi3_deg is None or closing.phi3_deg is None:
             return [Problem(f"{at}.cam", "an asymmetric Kurz cam needs phi3_deg on both flanks")]
         return []
 
-    def records(self, law, valve, engine, nose):
+    def records(self, law, valve, engine, nose) -> tuple[LawRecord, list]:
         """The appendix formulas of Valve-train practical works (n.d.) (2.35)-(2.39) beside the exact extremes, and the residuals of the
         junction conditions (2.10)-(2.20), for a symmetric cam."""
         if self.closing is not None:
@@ -360,17 +360,17 @@ class PolydyneCam(_CamBase, _RampKeys):
             raise ValueError("ramp = true needs ramp_end_velocity_mm_per_deg (allowed [0.001, 1] mm/deg)")
         return self
 
-    def search_variables(self, valve, engine):
+    def search_variables(self, valve, engine) -> list[tuple[str, float, float]]:
         """The exponents the cam gives, each from 3 to four times its value."""
         return [(f"cam.{k}", 3.0, 4.0 * getattr(self, k)) for k in ("p", "q", "r", "s") if getattr(self, k) is not None]
 
-    def law_of(self, cam, lift, half, r0, **ramp):
+    def law_of(self, cam, lift, half, r0, **ramp) -> PolydyneLaw:
         return PolydyneLaw(lift, half, cam.p, cam.q, cam.r, cam.s, **ramp)
 
-    def build(self, valve, engine):
+    def build(self, valve, engine) -> LiftLaw:
         return _rampless_or_ramped(self, valve, engine, self.ramp)
 
-    def problems(self, at, valve, engine):
+    def problems(self, at, valve, engine) -> list[Problem]:
         return _clearance_problem(at, valve, "a ramp needs a clearance to take up", "ramp") if self.ramp else []
 
 
@@ -408,13 +408,13 @@ class PolynomialCam(_CamBase, _RampKeys):
             raise ValueError("ramp = true needs ramp_end_velocity_mm_per_deg (allowed [0.001, 1] mm/deg)")
         return self
 
-    def law_of(self, cam, lift, half, r0, **ramp):
+    def law_of(self, cam, lift, half, r0, **ramp) -> PolynomialLaw:
         return PolynomialLaw(lift, half, cam.exponents, **ramp)
 
-    def build(self, valve, engine):
+    def build(self, valve, engine) -> LiftLaw:
         return _rampless_or_ramped(self, valve, engine, self.ramp)
 
-    def problems(self, at, valve, engine):
+    def problems(self, at, valve, engine) -> list[Problem]:
         return _clearance_problem(at, valve, "a ramp needs a clearance to take up", "ramp") if self.ramp else []
 
 
@@ -429,11 +429,11 @@ class ConstantAccelerationCam(_SegmentAngles, _CamBase, _RampKeys):
     phi3_deg: Optional[_bounded(0.0, 180.0, "deg", low_open=False)] = None
     kappa: _bounded(0.01, 10.0, low_open=False) = 0.6
 
-    def search_variables(self, valve, engine):
+    def search_variables(self, valve, engine) -> list[tuple[str, float, float]]:
         """phi1, phi2 and kappa."""
         return self.segment_variables(valve, engine) + [("cam.kappa", 0.1, 5.0)]
 
-    def build_flank(self, valve, engine):
+    def build_flank(self, valve, engine) -> ConstantAccelerationLaw:
         c = valve.cam
         return ConstantAccelerationLaw(_tappet_lift(valve), ramp_height(valve), c.ramp_end_velocity, c.phi1, c.phi2,
                                        self._phi3(valve, engine), c.kappa, **_ramp(c))
@@ -469,23 +469,23 @@ class CombinedCam(_ClosingSide, _CamBase, _RampKeys):
             raise ValueError(f"ratios name segments {shown(bad)}; allowed 1...{len(self.segments)}")
         return self
 
-    def flank_angle_deg(self):
+    def flank_angle_deg(self) -> float:
         return sum(seg.length_deg for seg in self.segments)
 
-    def search_variables(self, valve, engine):
+    def search_variables(self, valve, engine) -> list[tuple[str, float, float]]:
         """The ratios' values, each within five times its size plus one either side."""
         if not self.ratios:
             raise ValueError("optimize: the combined cam has no [[cam.ratios]]; name the variables with --vary")
         return [(f"cam.ratios.{i}.value", -5.0 * abs(r.value) - 1.0, 5.0 * abs(r.value) + 1.0)
                 for i, r in enumerate(self.ratios, 1)]
 
-    def build_flank(self, valve, engine):
+    def build_flank(self, valve, engine) -> CombinedLaw:
         c = valve.cam
         return CombinedLaw(_tappet_lift(valve), ramp_height(valve), c.ramp_end_velocity,
                            [(seg.shape, seg.length) for seg in c.segments], [(r.segment - 1, r.value) for r in c.ratios],
                            **_ramp(c))
 
-    def flank_problems(self, at, valve, engine):
+    def flank_problems(self, at, valve, engine) -> list[Problem]:
         out = []
         total, half = self.flank_angle_deg(), main_half_angle_deg(valve, engine.strokes)
         if abs(total - half) > 1e-6:
@@ -510,7 +510,7 @@ class DynamicCam(_CamBase, _RampKeys):
     spring_preload_N: _bounded(0.0, 1e6, "N", low_open=False)
     design_speed_rpm: Optional[_bounded(10.0, 30000.0, "rpm", low_open=False)] = None
 
-    def build(self, valve, engine):
+    def build(self, valve, engine) -> DynamicLaw:
         c = valve.cam
         omega = (c.design_speed if c.design_speed is not None else engine.rated_speed) / 2.0
         mass = train_mass(valve, 0.0)[0]
@@ -554,7 +554,7 @@ class PowerPolynomialCam(_CamBase):
 
     varies_ramp_and_spring: ClassVar[bool] = False   # its article holds the spring and the ramp
 
-    def search_variables(self, valve, engine):
+    def search_variables(self, valve, engine) -> list[tuple[str, float, float]]:
         """a_qd, phi_1, x_d, x_g (UkrSURT Proceedings (2019))."""
         half = main_half_angle_deg(valve, engine.strokes)
         return [("cam.peak_acceleration_mm_per_rad2", 10.0, 600.0),
@@ -569,7 +569,7 @@ class PowerPolynomialCam(_CamBase):
                                  "(allowed (0.05, 50] each)")
         return self
 
-    def build(self, valve, engine):
+    def build(self, valve, engine) -> PowerPolynomialLaw:
         c = valve.cam
         exponents = {k: getattr(c, k) for k in ARTICLE_EXPONENTS}
         try:
@@ -581,7 +581,7 @@ class PowerPolynomialCam(_CamBase):
             raise ValueError(f"{exc} (keys peak_acceleration_mm_per_rad2, phi1_deg, max_lift_mm, opens_deg, "
                              "closes_deg)") from None
 
-    def problems(self, at, valve, engine):
+    def problems(self, at, valve, engine) -> list[Problem]:
         out = _clearance_problem(at, valve)
         half = main_half_angle_deg(valve, engine.strokes)
         if self.phi1_deg >= half:
@@ -589,7 +589,7 @@ class PowerPolynomialCam(_CamBase):
                                f"{half:g} cam deg; allowed phi1_deg < {half:g}", f"{self.phi1_deg:g}", " "))
         return out
 
-    def records(self, law, valve, engine, nose):
+    def records(self, law, valve, engine, nose) -> tuple[LawRecord, list]:
         """The responses of the synthesis: phi_2, the dwell, S_e, v_e and the fullness of the tappet lift."""
         return LawRecord(power_polynomial=PowerPolynomialRecord(float(law.phi2), float(law.dwell), law.S_e, law.v_e,
                                                                 float(law.fullness()))), []
@@ -625,14 +625,14 @@ class HarmonicCam(_CamBase):
                              "conditions")
         return self
 
-    def build(self, valve, engine):
+    def build(self, valve, engine) -> HarmonicLaw:
         target = self.target.build(_with_cam(valve, valve.cam.target), engine)
         return HarmonicLaw(target, self.harmonics, self.junction_order)
 
-    def problems(self, at, valve, engine):
+    def problems(self, at, valve, engine) -> list[Problem]:
         return self.target.problems(at, valve, engine)
 
-    def nose_crank(self, valve, law):
+    def nose_crank(self, valve, law) -> float:
         return self.target.nose_crank(valve, law)
 
 
@@ -652,14 +652,14 @@ class ThreeArcCam(_CamBase):
             raise ValueError(f"give exactly one of nose_radius_mm, flank_radius_mm, flank_angle_deg (got {given or 'none'})")
         return self
 
-    def law_of(self, cam, lift, half, r0):
+    def law_of(self, cam, lift, half, r0) -> ThreeArcLaw:
         if cam.nose_radius is not None:
             return ThreeArcLaw(r0, lift, half, cam.nose_radius)
         if cam.flank_radius is not None:
             return ThreeArcLaw.from_flank_radius(r0, lift, half, cam.flank_radius)
         return ThreeArcLaw.from_flank_angle(r0, lift, half, cam.flank_angle)
 
-    def build(self, valve, engine):
+    def build(self, valve, engine) -> LiftLaw:
         return _rampless_or_ramped(self, valve, engine)
 
 
@@ -677,10 +677,10 @@ class TangentCam(_CamBase):
                              "degenerate; a finger's law is the valve's, not the cam's) and roller_radius_mm")
         return self
 
-    def law_of(self, cam, lift, half, r0):
+    def law_of(self, cam, lift, half, r0) -> TangentLaw:
         return TangentLaw(r0, lift, half, cam.roller_radius)
 
-    def build(self, valve, engine):
+    def build(self, valve, engine) -> LiftLaw:
         return _rampless_or_ramped(self, valve, engine)
 
 
@@ -740,7 +740,7 @@ class TableCam(_CamBase):
                                  f"{inline[0][i - 1]:g}")
         return self
 
-    def read_extras(self, root):
+    def read_extras(self, root) -> dict:
         """The table, ``(angle_deg, lift_mm)`` arrays: as read from ``table_file``
         (:func:`valvetrain.files.read_lift_table`) or the inline points."""
         if self.table_file is None:
@@ -748,7 +748,7 @@ class TableCam(_CamBase):
                               np.asarray(self.table_lifts_mm, dtype=float))}
         return {"table": read_lift_table(self.table_file)}
 
-    def build(self, valve, engine):
+    def build(self, valve, engine) -> LiftLaw:
         try:
             return self._checked_law(valve, engine)
         except ValueError as exc:
@@ -780,10 +780,10 @@ class TableCam(_CamBase):
                              "table_angle and table_zero (a table from the firing TDC needs table_zero = \"firing_tdc\")")
         return law
 
-    def nose_crank(self, valve, law):
+    def nose_crank(self, valve, law) -> float:
         return 2.0 * law.centre
 
-    def records(self, law, valve, engine, nose):
+    def records(self, law, valve, engine, nose) -> tuple[LawRecord, list]:
         """The measured-table record of results.json and its timing checks (Shang Hanji (1988), sections 5.1-5.3)."""
         to_table = 2.0 if self.table_angle == "crank" else 1.0        # table angle units per cam angle
         at_valve = valve.rocker_ratio if self.table_lift_at == "valve" else 1.0
@@ -813,7 +813,7 @@ class TableCam(_CamBase):
                                    source="the table's timing at 0.1 mm valve lift (+-2 crank deg)"))
         return LawRecord(measured=rec), found
 
-    def timing(self, valve, record):
+    def timing(self, valve, record) -> tuple[Optional[float], Optional[float]]:
         return record.measured.opens, record.measured.closes
 
 

@@ -131,7 +131,7 @@ class Spring(_Model):
     max_free_length_mm: Optional[Length(1.0, 5000.0, low_open=False)] = None
 
     @property
-    def materials(self):
+    def materials(self) -> list[str]:
         """The grade names searched, canonical spelling."""
         names = [self.material] if isinstance(self.material, str) else self.material
         return [grade(n).name for n in names]
@@ -474,7 +474,7 @@ class Valve(_Model):
     lash_adjuster: Optional[LashAdjuster] = None
 
     @property
-    def layout(self):
+    def layout(self) -> str:
         """Drive layout: as given, else direct for rocker ratio 1 and pushrod otherwise."""
         return layout(self)
 
@@ -592,7 +592,7 @@ class CrankSpec(_Model):
 
     si_extras: ClassVar[tuple] = ("indicator",)
 
-    def read_extras(self, root):
+    def read_extras(self, root) -> dict:
         """The indicator diagram of ``pressure_file`` as read (:func:`valvetrain.files.read_indicator`), or None."""
         if self.pressure_file is None:
             return {"indicator": None}
@@ -753,7 +753,7 @@ class Spec(_Model):
                              "'-' (and not 'crank' or 'two_stroke', the names of the engine's chapters)")
         return valves
 
-    def replace(self, values):
+    def replace(self, values) -> "Spec":
         """A copy with the dotted keys of ``values`` changed, validated like a specification file.
 
         The keys are those of ``valvetrain study --grid``: the path of TOML tables, then the key, in the file's units

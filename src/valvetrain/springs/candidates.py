@@ -56,7 +56,7 @@ class SpringMaterial:
         if self.density is None:
             object.__setattr__(self, "density", found.density)
 
-    def limits(self, wire_diameter):
+    def limits(self, wire_diameter) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """([tau], tau_-1, psi_tau) for wires of diameter d [m], arrays of d's shape."""
         found = GRADES[self.grade]
         d = np.asarray(wire_diameter, dtype=float)
@@ -68,7 +68,7 @@ class SpringMaterial:
         return allowable, endurance, psi
 
     @property
-    def source(self):
+    def source(self) -> str:
         """Where the grade's figures come from."""
         return GRADES[self.grade].source
 
@@ -95,22 +95,22 @@ class SpringDesign:
     target_ratio: float = None           # f_max / f_min of the line the spring was designed for
 
     @property
-    def margins(self):
+    def margins(self) -> dict[str, float]:
         """Relative margin of each check: >= 0 passes (value/limit - 1 for a minimum, 1 - value/limit for a
         maximum; +inf for a check switched off by a zero minimum)."""
         return {k: c.margin for k, c in self.checks.items()}
 
     @property
-    def passes(self):
+    def passes(self) -> bool:
         return all(c.passed for c in self.checks.values())
 
     @property
-    def binding_check(self):
+    def binding_check(self) -> str:
         """The check with the smallest margin."""
         return min(self.margins, key=self.margins.get)
 
     @property
-    def design_margin(self):
+    def design_margin(self) -> float:
         """The smaller relative margin of the fatigue safety and the resonance ratio (+inf where both are off)."""
         return min(self.checks["fatigue_safety"].margin, self.checks["resonance_ratio"].margin)
 
@@ -190,7 +190,7 @@ class Candidates:
         return len(self.mass)
 
     @cached_property
-    def passed(self):
+    def passed(self) -> np.ndarray:
         """Candidates passing every check."""
         ok = np.ones(len(self), dtype=bool)
         for c in self.checks.values():
@@ -198,22 +198,22 @@ class Candidates:
         return ok
 
     @cached_property
-    def design_margin(self):
+    def design_margin(self) -> np.ndarray:
         """The smaller relative margin of each candidate's fatigue safety and resonance ratio."""
         return np.minimum(self.checks["fatigue_safety"].margin, self.checks["resonance_ratio"].margin)
 
     @cached_property
-    def margin_met(self):
+    def margin_met(self) -> np.ndarray:
         """Candidates passing every check with :attr:`SpringMaterial.design_margin` on the fatigue safety and the
         resonance ratio."""
         return self.passed & (self.design_margin >= self.material.design_margin - _TOL)
 
     @cached_property
-    def worst_margin(self):
+    def worst_margin(self) -> np.ndarray:
         """The smallest margin of each candidate."""
         return np.minimum.reduce([c.margin for c in self.checks.values()])
 
-    def design(self, i):
+    def design(self, i) -> SpringDesign:
         """Candidate ``i`` as a :class:`SpringDesign` with its :class:`valvetrain.checks.Check` records."""
         index = self.mean_diameter[i] / self.wire_diameter[i]
         line = Characteristic(float(self.preload[i]), float(self.rate[i]), self.lift)

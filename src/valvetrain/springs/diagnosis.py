@@ -86,12 +86,12 @@ class Diagnosis:
     remedies: tuple                       # Remedy, in the order tried
 
     @property
-    def helped(self):
+    def helped(self) -> tuple:
         """The remedies with which a spring passes."""
         return tuple(r for r in self.remedies if r.passes)
 
     @property
-    def tried(self):
+    def tried(self) -> tuple:
         """The remedies tried in vain."""
         return tuple(r for r in self.remedies if not r.passes)
 

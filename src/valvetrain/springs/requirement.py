@@ -185,25 +185,25 @@ class Characteristic:
     lift: float        # valve lift h [m]
 
     @property
-    def max_force(self):
+    def max_force(self) -> float:
         """P_max = P_min + C h [N] (5.7)."""
         return self.preload + self.rate * self.lift
 
     @property
-    def preload_deflection(self):
+    def preload_deflection(self) -> float:
         """f_min = P_min / C [m] (5.8)."""
         return self.preload / self.rate
 
     @property
-    def max_deflection(self):
+    def max_deflection(self) -> float:
         """f_max = P_max / C = f_min + h [m] (5.9)."""
         return self.max_force / self.rate
 
-    def force(self, y):
+    def force(self, y) -> float | np.ndarray:
         """Spring force at valve lift y [N]."""
         return self.preload + self.rate * np.asarray(y)
 
-    def split(self, share):
+    def split(self, share) -> tuple["Characteristic", "Characteristic"]:
         """(outer, inner) characteristics of a nested pair, the inner taking ``share`` of the force (5.10)-(5.14)."""
         inner = Characteristic(share * self.preload, share * self.rate, self.lift)
         outer = Characteristic(self.preload - inner.preload, self.rate - inner.rate, self.lift)
@@ -269,20 +269,20 @@ class Requirement:
     min_preload: float = 0.0    # gas force (5.4)-(5.5) or seat load [N]
 
     @property
-    def max_lift(self):
+    def max_lift(self) -> float:
         return float(np.max(self.lift))
 
-    def line(self, ratio_range=DEFLECTION_RATIO_RANGE):
+    def line(self, ratio_range=DEFLECTION_RATIO_RANGE) -> Characteristic:
         """The required line of the manual's construction (:func:`enveloping_line`)."""
         return Characteristic(*enveloping_line(self.lift, self.force, ratio_range, self.min_preload), self.max_lift)
 
-    def lines(self, ratio_range=DEFLECTION_RATIO_RANGE, step=DEFLECTION_RATIO_STEP, line=None):
+    def lines(self, ratio_range=DEFLECTION_RATIO_RANGE, step=DEFLECTION_RATIO_STEP, line=None) -> tuple[np.ndarray, np.ndarray]:
         """(preloads, rates) of the lines of the deflection ratios ``ratio_range`` every ``step``, its upper end
         and the ratio of the required line ``line`` (:meth:`line` when not given)."""
         required = self.line(ratio_range) if line is None else line
         ratios = np.append(deflection_ratios(ratio_range, step), required.max_force / required.preload)
         return enveloping_lines(self.lift, self.force, np.unique(np.clip(ratios, *ratio_range)), self.min_preload)
 
-    def scaled(self, factor):
+    def scaled(self, factor) -> "Requirement":
         """The requirement with every required force times ``factor`` (the preload minimum kept)."""
         return replace(self, force=self.force * factor)

@@ -99,7 +99,7 @@ class SpringOptions:
     radial_gap: float = 1.0e-3                           # between the coils of a pair [m]
     min_frequency_difference: float = 0.1
 
-    def installed_limits(self, lift):
+    def installed_limits(self, lift) -> tuple:
         """(min_installed_length, max_installed_length) [m]."""
         if self.installed_length_range is None:
             return None, INSTALLED_TO_LIFT_MAX * lift
@@ -129,11 +129,11 @@ class Search:
     line: Characteristic         # the required line of the manual's construction
 
     @property
-    def passes(self):
+    def passes(self) -> bool:
         return all(s.passes for s in self.designs.values())
 
     @property
-    def mass(self):
+    def mass(self) -> float:
         return sum(s.mass for s in self.designs.values())
 
 

@@ -83,7 +83,7 @@ class Limits:
     no_jump_factor: float = None
 
     @classmethod
-    def article(cls, **kw):
+    def article(cls, **kw) -> "Limits":
         """The limits of the 26/27 diesel of UkrSURT Proceedings (2019): pressure angle <= 30 deg, concave radius
         <= -170 mm, spring reserve >= 2.2 (its ramp ends at 6 mm/rad, outside the band of
         Valve-train practical works (n.d.), which is switched off)."""

@@ -148,7 +148,7 @@ class Variable:
     written: tuple = field(default=None, compare=False)
     """LOW and HIGH as the user wrote them (for messages)."""
 
-    def put(self, data, value):
+    def put(self, data, value) -> None:
         """Set the variable in a valve section's data (dict, changed in place)."""
         *parents, last = self.path.split(".")
         node = data
@@ -424,7 +424,7 @@ class Problem:
         self.variable_mass = train.variable_mass
         self.speeds = rated * np.unique(np.array(SPEEDS + (self.limits.no_jump_factor,)))
 
-    def margin_names(self):
+    def margin_names(self) -> list[str]:
         """Names of the entries of :meth:`evaluate`'s margins."""
         L = self.limits
         names = ["spring reserve"]
@@ -437,7 +437,7 @@ class Problem:
             names.append("no jump")
         return names + ["spring design"]
 
-    def point(self, x):
+    def point(self, x) -> dict:
         """The valve section's data with the variables ``x`` (the start's data, the parts the variables change
         copied)."""
         data = {**self.data, **{p: _copied(self.data[p]) for p in self.parts if p in self.data}}
@@ -449,7 +449,7 @@ class Problem:
                 cam.pop(key, None)
         return data
 
-    def law(self, x):
+    def law(self, x) -> tuple | None:
         """(law, SI valve, spring scale K_z / K_z,0) of the variables, or None where they admit no law."""
         data = self.point(x)
         try:
@@ -559,7 +559,7 @@ class Problem:
         return flow.time_areas(lambda t, member: flow.curtain_area(valve_lift(t, member), throat[member], seat[member]),
                                opens, closes, self.omega, bp)
 
-    def evaluate(self, x, dynamics=None):
+    def evaluate(self, x, dynamics=None) -> tuple[float, np.ndarray]:
         """(objective, margins) of the variables; a point that admits no design has objective 0 and margins -1.
 
         The follower separation is simulated (``dynamics`` None) only where it can matter: until a candidate is found
@@ -570,7 +570,7 @@ class Problem:
         """
         return self.evaluate_many([x], dynamics)[0]
 
-    def evaluate_many(self, xs, dynamics=None):
+    def evaluate_many(self, xs, dynamics=None) -> list[tuple[float, np.ndarray]]:
         """(objective, margins) of each point of ``xs`` (a sequence of variable vectors) as :meth:`evaluate` gives it,
         in order: the points not evaluated before have their laws built one by one and sampled, checked and integrated
         together (:meth:`_entries`); the separation is then decided point by point, in order."""
@@ -612,7 +612,7 @@ class Problem:
                 out[index[k]] = [float(objective), margins[k], (laws[k], scales[k])]
         return out
 
-    def penalised_many(self, xs, scale):
+    def penalised_many(self, xs, scale) -> np.ndarray:
         """The objective over ``scale``, negated, plus :data:`PENALTY` times the summed violations, of each point of
         ``xs``, evaluated together (:meth:`evaluate_many`)."""
         return np.array([-objective / scale + PENALTY * float(np.nansum(np.clip(-margins, 0.0, None)))
@@ -702,7 +702,7 @@ class Problem:
             low, high = (mid, high) if passes(mid) else (low, mid)
         return low, line
 
-    def spring_design(self, law, theta, h, dh, d2h, scale):
+    def spring_design(self, law, theta, h, dh, d2h, scale) -> float:
         """Margin of the spring design: the largest of the candidate's required preload and largest force over the
         starting design's, against the factor up to which a spring passes (:meth:`_spring_frontier`, found once);
         >= 0 when a spring of the specification's options is expected to pass.
@@ -742,16 +742,16 @@ class Problem:
         """The margins with the spring design's raised by :data:`SPRING_SLACK`."""
         return margins + np.where(np.arange(margins.size) == margins.size - 1, SPRING_SLACK, 0.0)
 
-    def acceptable(self, margins):
+    def acceptable(self, margins) -> bool:
         """Whether a point is a candidate for the full design: every margin holds (a NaN one does not), the spring
         design's within :data:`SPRING_SLACK`."""
         return bool(np.all(self._slack(margins) >= 0.0))
 
-    def violation(self, margins):
+    def violation(self, margins) -> float:
         """The summed violations of the margins but a NaN one, the spring design's beyond :data:`SPRING_SLACK`."""
         return float(np.nansum(np.clip(-self._slack(margins), 0.0, None)))
 
-    def candidates(self):
+    def candidates(self) -> list[tuple[float, np.ndarray, float]]:
         """The points evaluated that are :meth:`acceptable`, best objective first: (objective, x, worst margin)."""
         found = [(o, x, float(np.nanmin(m))) for (o, m), x in zip(self.history, self.points, strict=True)
                  if self.acceptable(m)]
@@ -793,12 +793,12 @@ class Result:
     simulations: int = 0
 
     @property
-    def feasible(self):
+    def feasible(self) -> bool:
         """Every constraint of the optimum's full design holds."""
         return all(c.passed for c in self.checks)
 
     @property
-    def binding(self):
+    def binding(self) -> list[Check]:
         """The constraints of the optimum with a relative margin below :data:`BINDING` (they bind)."""
         return [c for c in self.checks if c.passed and c.margin < BINDING]
 

@@ -497,7 +497,7 @@ class Designer:
             if (start, end) != (rng.start, rng.end):
                 rng.update(start=start, end=end)
 
-    def redraw(self, sweep=True, began=None):
+    def redraw(self, sweep=True, began=None) -> None:
         """Draw the good design (and the baseline), its checks, card and handles; start its speed sweep (``sweep``)
         or draw the last one again.  ``began``: ``time.time()`` when the change came (default now)."""
         began = time.time() if began is None else began
@@ -541,7 +541,7 @@ class Designer:
             self._placed[plot] = [(h.name, h.x, h.y) for h in mine]
             _send(src, {"x": [h.x for h in mine], "y": [h.y for h in mine], "name": [h.name for h in mine]})
 
-    def show_problems(self):
+    def show_problems(self) -> None:
         """Each problem at its field (or above the panel when it names no field); the status line says the last
         good design stays."""
         shown = {p["path"]: p["message"] for p in self.session.problems if p["path"] in self.errors}
@@ -553,14 +553,14 @@ class Designer:
         self.status.text = WORDS[self.lang]["kept"] if self.session.problems else ""
 
     # --- the speed sweep -------------------------------------------------------------------------------------------
-    def on_drawn(self, attr, old, new):
+    def on_drawn(self, attr, old, new) -> None:
         """The page has drawn the kinematics of redraw ``new["n"]``: the sweep of the newest one starts (its thread
         would have held up the sending of the kinematics, and the page's drawing of them)."""
         if self.sweep_due and new["n"][0] == self.kinematic_stamp.data["n"][0]:
             self.sweep_due = False
             self.start_sweep()
 
-    def start_sweep(self):
+    def start_sweep(self) -> None:
         """The whole design of the good document, with its speed sweeps, in the worker thread
         (:meth:`~valvetrain.web.session.Session.settle`); a newer change stops it at its next speed."""
         self.generation += 1
@@ -591,7 +591,7 @@ class Designer:
         _send(sources["seating"], {"x": sw["speed_rpm"],
                                    "y": [None if v is None else abs(v) for v in sw["seating_velocity_m_s"]]})
 
-    def draw_sweep(self, generation, result, began):
+    def draw_sweep(self, generation, result, began) -> None:
         """Keep the whole design of redraw ``generation`` if it is the newest: its checks to the table, its sweeps
         to the sweep panel; ``began`` as for :meth:`redraw`, when the worker took it up."""
         if generation != self.generation:
@@ -629,7 +629,7 @@ class Designer:
                                            if v is not None) or "-"
 
     # --- callbacks -------------------------------------------------------------------------------------------------
-    def on_field(self, f, attr, old, new):
+    def on_field(self, f, attr, old, new) -> None:
         began = time.time()
         if self._syncing:
             return
@@ -643,7 +643,7 @@ class Designer:
             self.redraw(began=began)
         self.show_problems()
 
-    def on_handles(self, plot, attr, old, new):
+    def on_handles(self, plot, attr, old, new) -> None:
         began = time.time()
         placed = getattr(self, "_placed", {}).get(plot, [])
         if len(new["x"]) != len(placed):      # a point added or removed: a table's points, else put them back
@@ -677,32 +677,32 @@ class Designer:
                 w.value = value if isinstance(w, NumericInput) else value_text(value)
         self._syncing = False
 
-    def on_language(self, attr, old, new):
+    def on_language(self, attr, old, new) -> None:
         self.lang = new
         self._texts()
         self.redraw(sweep=False)
         self.show_problems()
 
-    def on_units(self, attr, old, new):
+    def on_units(self, attr, old, new) -> None:
         self.per_degree = new == "deg"
         self._texts()
         self.redraw(sweep=False)
 
-    def on_valve(self, attr, old, new):
+    def on_valve(self, attr, old, new) -> None:
         self.valve = new
         self.redraw()
 
-    def on_report(self):
+    def on_report(self) -> None:
         """The report of the good design, to the page, which saves it (a comment makes every one a change)."""
         self.downloads += 1
         self.report_text.text = self.session.report(self.lang) + f"<!-- download {self.downloads} -->\n"
 
-    def on_toml(self):
+    def on_toml(self) -> None:
         """The specification of the good design, to the page, which saves it (a comment makes every one a change)."""
         self.downloads += 1
         self.toml_text.text = self.session.toml() + f"# download {self.downloads}\n"
 
-    def on_pin(self):
+    def on_pin(self) -> None:
         self.session.pin()
         full = self.session.full
         self.base_sweep = full if full is not None and full["ok"] else None

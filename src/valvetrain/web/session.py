@@ -20,7 +20,7 @@ from ..specification import REGISTRY, SpecError, example_text, set_keys
 from ..laws import PolydyneLaw
 from ..specification.cams import main_half_angle_deg
 from ..specification.fields import Range
-from ..specification.models import Drive, Dynamics, Engine, Masses, Spring, Valve
+from ..specification.models import Drive, Dynamics, Engine, Masses, Spec, Spring, Valve
 from ..units import MM
 
 HANDLE_STEP = {"deg": 0.01, "mm": 0.001}
@@ -44,7 +44,7 @@ class Field:
     optional: bool = False
 
     @property
-    def bounds_text(self):
+    def bounds_text(self) -> str:
         """``[5, 2000] mm``, ``1 ... 64`` or an empty text."""
         if self.low is None and self.high is None:
             return ""
@@ -465,7 +465,7 @@ class Session:
     last_full: dict = None
 
     @classmethod
-    def start(cls, text=None, source_dir=None):
+    def start(cls, text=None, source_dir=None) -> "Session":
         """A session on TOML text (the built-in example without it).
 
         Raises
@@ -484,7 +484,7 @@ class Session:
             raise SpecError([p["text"] for p in s.problems])
         return s
 
-    def apply(self, document):
+    def apply(self, document) -> bool:
         """Design ``document`` without its speed sweeps and spring diagnosis (:func:`valvetrain.api.design`,
         ``dynamics=False``, ``diagnose=False``; it is validated whole); keep it as the good design if it designs, else
         keep the last good one and the problems.  Returns True when it designed."""
@@ -497,7 +497,7 @@ class Session:
         return result["ok"]
 
     @staticmethod
-    def settle(document, progress=None):
+    def settle(document, progress=None) -> dict:
         """The whole design of a good document, with its speed sweeps (and the diagnosis of springs that do not
         pass): :func:`valvetrain.api.design` with ``sweeps``; a document without a ``[dynamics]`` section is swept
         with the default one (:func:`valvetrain.api.sweep`) and its design is the good one (``results`` None).
@@ -507,17 +507,17 @@ class Session:
             return api.design(plain, sweeps=True, progress=progress)
         return {**api.sweep(plain, progress=progress), "results": None}
 
-    def settled(self, result):
+    def settled(self, result) -> None:
         """Keep the whole design (:meth:`settle`) of the good document."""
         self.full = result
 
     @property
-    def checked(self):
+    def checked(self) -> dict:
         """The results whose checks the table shows: the whole design's when it has come, else the good one's."""
         return (self.full or {}).get("results") or self.good["results"]
 
     @property
-    def pending(self):
+    def pending(self) -> list:
         """The checks of the last whole design that the good design (without its sweeps) lacks, while its whole
         design is to come: they are shown as pending."""
         if self.full is not None or self.last_full is None or self.last_full.get("results") is None:
@@ -525,44 +525,44 @@ class Session:
         have = {c["quantity"] for c in self.good["results"]["checks"]}
         return [c for c in self.last_full["results"]["checks"] if c["quantity"] not in have]
 
-    def edit(self, values):
+    def edit(self, values) -> bool:
         """Set dotted keys (``{"engine.rated_speed_rpm": 7500}``) and design; see :meth:`apply`."""
         return self.apply(set_keys(self.document, values))
 
     @property
-    def spec(self):
+    def spec(self) -> Spec:
         """The validated specification of the good design."""
         from ..specification import validate
 
         return validate(without_nones(self.good_document))
 
-    def handles(self, name):
+    def handles(self, name) -> list[Handle]:
         """The handles of valve ``name`` on the good design (:func:`handles`)."""
         return handles(self.good_document, self.spec, name, self.good["series"][name])
 
-    def drag(self, name, handle, x, y):
+    def drag(self, name, handle, x, y) -> dict:
         """Move a handle of valve ``name`` to (x, y) and design (:func:`moved`, :meth:`edit`).  Returns the keys set
         (``{dotted key: value}``) when it designed, else an empty dict."""
         values = moved(self.good_document, self.spec, name, handle, x, y, self.good["series"][name],
                        self.good["results"]["valves"][name])
         return values if self.edit(values) else {}
 
-    def set_points(self, name, x, y):
+    def set_points(self, name, x, y) -> dict:
         """Put the points of valve ``name``'s inline lift table at ``x`` [cam deg from the nose], ``y`` [mm] (points
         added or removed on the lift plot) and design; see :meth:`drag`."""
         cam = self.good_document["valves"][name]["cam"]
         values = _points_moved(f"valves.{name}", cam, self.good["series"][name], x, y)
         return values if self.edit(values) else {}
 
-    def pin(self):
+    def pin(self) -> None:
         """Pin the good design as the baseline that the plots and the checks table compare with (with the checks of
         its whole design when it has come)."""
         self.baseline = {**self.good, "results": self.checked}
 
-    def report(self, lang):
+    def report(self, lang) -> str:
         """The report of the good design as HTML text in ``lang``."""
         return api.report_html(without_nones(self.good_document), lang, "main")
 
-    def toml(self):
+    def toml(self) -> str:
         """The specification of the good design as TOML text (every default written out)."""
         return api.toml_text(without_nones(self.good_document))
