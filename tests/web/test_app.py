@@ -141,3 +141,9 @@ def test_a_drag_sends_only_the_sources_that_change():
     assert d.curves in changed
     unchanged = [d.heel, d.map_source, d.sweep_marks, *d.sweep_sources.values()]
     assert [s for s in unchanged if s in changed] == []
+    # a pinned baseline's curves (NaN-padded to one length) are the same at the next drag: not sent again
+    d.on_pin()
+    changed.clear()
+    lift = dict(d.handles["lift"].data)
+    d.on_handles("lift", "data", lift, {**lift, "y": [lift["y"][0] - 0.1]})
+    assert d.curves in changed and d.base_curves not in changed

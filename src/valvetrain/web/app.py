@@ -179,8 +179,8 @@ def _send(source, data):
     """Set a source's ``data`` unless it holds the same already: an unchanged source sends nothing to the page (each
     change is a message, and a change of a table's rows draws its grid again)."""
     old = source.data
-    if old.keys() != data.keys() or any(len(old[k]) != len(v) or not np.array_equal(old[k], v)
-                                        for k, v in data.items()):
+    if old.keys() != data.keys() or any(len(old[k]) != len(v) or not np.array_equal(
+            old[k], v, equal_nan=np.asarray(v).dtype.kind == "f") for k, v in data.items()):   # NaN: a gap, the same
         source.data = data
 
 
@@ -512,7 +512,7 @@ class Designer:
             _send(self.heel, {"x": r * np.cos(phi), "y": r * np.sin(phi)})
             base = s.baseline["series"].get(self.valve) if s.baseline else None
             if base is not None:
-                self.base_curves.data = self._curves(base, self._omega(s.baseline))
+                _send(self.base_curves, self._curves(base, self._omega(s.baseline)))
             self._ranges(base is not None)
             edges = series["segments_cam_deg"]
             acc = self.ranges["acceleration"]
