@@ -176,3 +176,14 @@ def test_design_without_the_sweeps_and_with_them():
     document["valves"]["intake"]["dynamics"]["damping_ratio"] = 5.0
     (error,) = api.design(document, dynamics=False)["errors"]
     assert error["path"] == "valves.intake.dynamics.damping_ratio"
+
+
+@pytest.mark.parametrize("name", ["two-stroke-ports", "v8-crank"])
+def test_design_without_the_sweeps_of_a_file_with_no_valves(name):
+    """Fuzzer: a specification without [valves] (a two-stroke's ports, a crank alone) designed without the sweeps
+    raised KeyError in the JSON entry point; its results are those of the whole design (it has no sweep to leave
+    out), the independent route."""
+    document = _document(EXAMPLES / f"{name}.toml")
+    quick = api.design(document, dynamics=False)
+    assert quick["ok"], quick["errors"]
+    _close(quick["results"], api.design(document)["results"])
