@@ -122,6 +122,9 @@ def test_a_grid_too_fine_for_the_runs_is_refused(extra):
     (problem,) = err.value.problems
     assert problem.startswith("valves.intake.hydraulic.reaches = ") and "node updates" in problem
     assert "allowed <= 2e+08" in problem
+    # the record of the JSON entry point names the key too (fuzzer: its path was empty)
+    assert problem.path == "valves.intake.hydraulic.reaches" and problem.value == str(
+        parse_spec(text).valves["intake"].hydraulic.reaches)
 
 
 def test_the_sweep_is_the_single_runs_at_its_speeds(tmp_path):

@@ -28,6 +28,7 @@ from ..dynamics.sweep import BOUNCE_TOLERANCE
 from ..flow import circle_area
 from ..hydraulic_actuation import (Actuator, DriveResult, Fluid, HydraulicDrive, Pipe, Pump, SpeedSweep, Valve, simulate,
                          speed_sweep)
+from ..specification.messages import Problem
 from ..units import DEG, MM, cam_per_crank, rpm_to_rad_s, to_display
 from .dynamics import SEATING_VELOCITY_MAX, finite_or_none
 from .results import quantity, shown, shown_value
@@ -260,8 +261,8 @@ def hydraulic_stage(valve, law, engine, gas, name, nose, cylinder=None) -> tuple
     Raises
     ------
     ValueError
-        The grid and the speeds ask for more than :data:`MAX_NODE_STEPS` node updates (the message starts with the
-        key ``reaches``).
+        The grid and the speeds ask for more than :data:`MAX_NODE_STEPS` node updates (its
+        :class:`~valvetrain.specification.messages.Problem` names the key ``reaches``).
 
     Notes
     -----
@@ -289,10 +290,10 @@ def hydraulic_stage(valve, law, engine, gas, name, nose, cylinder=None) -> tuple
     revolutions = np.concatenate([speeds, [speed] * (1 if cylinder is None else 2)]) * to_cam
     work = float(np.sum(2.0 * math.pi / revolutions)) / drive.time_step * (drive.pipe.reaches + 1)
     if work > MAX_NODE_STEPS:
-        raise ValueError(f"reaches = {drive.pipe.reaches}: the simulation and the {speeds.size} speeds of the sweep "
-                         f"take {work:.3g} node updates of the pipe grid (time step {drive.time_step * 1e6:.3g} us); "
-                         f"allowed <= {MAX_NODE_STEPS:.0e}: use fewer reaches, a longer pipe, fewer speeds or higher "
-                         "ones")
+        raise ValueError(Problem(
+            "reaches", f"the simulation and the {speeds.size} speeds of the sweep take {work:.3g} node updates of the "
+            f"pipe grid (time step {drive.time_step * 1e6:.3g} us); allowed <= {MAX_NODE_STEPS:.0e}: use fewer "
+            "reaches, a longer pipe, fewer speeds or higher ones", f"{drive.pipe.reaches}"))
     diameter, port = head_load(valve, gas)
     if cylinder is None:
         force = None
