@@ -367,7 +367,7 @@ def _failure_checks(r, sw, speed, speeds, engine, drive, hydraulic):
     opening = DELAY_LEVEL * float(r.rigid_lift.max())
     found = [
         check("hydraulic.opening", lift[n], low=opening, unit="mm", severity="failure",
-              source=f"{FAILURE_SOURCE}; {DELAY_LEVEL:.0%} of the rigid lift, the level of the delays (this package's)",
+              source=f"{FAILURE_SOURCE}; {DELAY_LEVEL * 100:g} % of the rigid lift, the level of the delays (this package's)",
               note=(f"at {at[n] / rpm:.0f} rpm the drive does not open the valve: it lifts {lift[n] / MM:.4g} mm of the "
                     f"rigid drive's {opening / DELAY_LEVEL / MM:.4g} mm (the liquid column gives way); the opening delay "
                     "is not defined" if lift[n] < opening else f"least at {at[n] / rpm:.0f} rpm")),
