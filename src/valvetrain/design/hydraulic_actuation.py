@@ -12,8 +12,9 @@ section's indicator diagram or Wiebe cycle, :class:`CylinderPressure`): the forc
 it on its seat, at the crank angle nose + camshaft angle x 2 (four-stroke); the stage reports what that force
 costs (the opening delay, the lift and the pressure peak against the same drive without it).  The valve's travel
 ends at a stop (the rigid drive's largest lift plus a margin): a valve that does not open (lifts less than 5 % of
-the rigid drive's lift), that reaches the stop (over-travel) or that is not back on its seat when the plunger is about to lift again (not closed before the next opening) is a failure at any
-speed of the sweep up to the over-speed, as is a fill (supply) pressure that lifts the valve off its seat.
+the rigid drive's lift), that reaches the stop (over-travel) or that is not back on its seat when the plunger is
+about to lift again (not closed before the next opening) is a failure at any speed of the sweep up to the
+over-speed, as is a fill (supply) pressure that lifts the valve off its seat.
 """
 
 from dataclasses import dataclass, field, replace
@@ -367,10 +368,11 @@ def _failure_checks(r, sw, speed, speeds, engine, drive, hydraulic):
     opening = DELAY_LEVEL * float(r.rigid_lift.max())
     found = [
         check("hydraulic.opening", lift[n], low=opening, unit="mm", severity="failure",
-              source=f"{FAILURE_SOURCE}; {DELAY_LEVEL * 100:g} % of the rigid lift, the level of the delays (this package's)",
-              note=(f"at {at[n] / rpm:.0f} rpm the drive does not open the valve: it lifts {lift[n] / MM:.4g} mm of the "
-                    f"rigid drive's {opening / DELAY_LEVEL / MM:.4g} mm (the liquid column gives way); the opening delay "
-                    "is not defined" if lift[n] < opening else f"least at {at[n] / rpm:.0f} rpm")),
+              source=f"{FAILURE_SOURCE}; {DELAY_LEVEL * 100:g} % of the rigid lift, the level of the delays "
+                     "(this package's)",
+              note=(f"at {at[n] / rpm:.0f} rpm the drive does not open the valve: it lifts {lift[n] / MM:.4g} mm "
+                    f"of the rigid drive's {opening / DELAY_LEVEL / MM:.4g} mm (the liquid column gives way); the "
+                    "opening delay is not defined" if lift[n] < opening else f"least at {at[n] / rpm:.0f} rpm")),
         check("hydraulic.max_lift", lift[k], high=stop, unit="mm",
               severity="failure", source=FAILURE_SOURCE,
               note=(f"the valve reaches its stop at {at[k] / rpm:.0f} rpm: it travels further than its stroke"
