@@ -4,6 +4,7 @@ closes 78 deg after the BDC, Phi = 27 + 6 + 38 = 71 cam deg from the end of the 
 impulses.  The dynamics, grinding and hydraulic-actuation figures are their data and their drawing: the data are plain
 numbers and arrays, the same as results.json's, and the drawing takes them alone."""
 
+import io
 import itertools
 from pathlib import Path
 import re
@@ -12,6 +13,7 @@ from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 from matplotlib.text import Text
 import numpy as np
+from PIL import Image
 import pytest
 
 from valvetrain.design import run
@@ -155,6 +157,25 @@ def test_a_drawer_draws_the_figures_it_claims(results):
     plots.write_plots(results, even, figures="all", claim=itertools.count(0, 2).__next__)
     assert not set(odd) & set(even)
     assert sorted([*odd, *even]) == sorted(order)
+
+
+def test_the_figures_pngs_have_the_pixels_of_matplotlibs_own(results):
+    """write_png writes a figure without the opacity of its pixels (RGB): every figure of the appendix, read back
+    (Pillow's PNG decoder), has the colours of the same figure written by matplotlib's own ``savefig`` (RGBA, the
+    reference), whose every pixel is opaque, so that nothing is lost; at the same resolution."""
+    for name, draw in [("kinematics", lambda t: plots.kinematics_figure(results.valves["intake"], t)),
+                       ("contour", lambda t: plots.contour_figure(results.valves["intake"], t)),
+                       ("timing", lambda t: plots.timing_figure(results.valves, t))]:
+        for lang in ("en", "ru"):
+            ours, theirs = io.BytesIO(), io.BytesIO()
+            plots.write_png(draw(TEXT[lang]), ours)
+            draw(TEXT[lang]).savefig(theirs, format="png", dpi=plots.DPI)
+            ours, theirs = Image.open(ours), Image.open(theirs)
+            assert (ours.mode, theirs.mode) == ("RGB", "RGBA"), name
+            assert ours.info["dpi"] == pytest.approx(theirs.info["dpi"]), name
+            rgba = np.asarray(theirs)
+            assert (rgba[..., 3] == 255).all(), name
+            assert np.array_equal(np.asarray(ours), rgba[..., :3]), (name, lang)
 
 
 def test_jerk_plot_marks_each_impulse():
