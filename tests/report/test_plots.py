@@ -9,6 +9,7 @@ import itertools
 from pathlib import Path
 import re
 
+from matplotlib import rc_context
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 from matplotlib.text import Text
@@ -160,22 +161,27 @@ def test_a_drawer_draws_the_figures_it_claims(results):
 
 
 def test_the_figures_pngs_have_the_pixels_of_matplotlibs_own(results):
-    """write_png writes a figure without the opacity of its pixels (RGB): every figure of the appendix, read back
-    (Pillow's PNG decoder), has the colours of the same figure written by matplotlib's own ``savefig`` (RGBA, the
-    reference), whose every pixel is opaque, so that nothing is lost; at the same resolution."""
+    """write_png writes a figure without the opacity of its pixels (RGB), its text without hinting: figures of the
+    appendix, read back (Pillow's PNG decoder), have the colours of the same figures written by matplotlib's own
+    ``savefig`` with the text unhinted (``text.hinting = no_hinting``; RGBA, the reference), whose every pixel is
+    opaque, so that nothing is lost; at the same resolution.  With matplotlib's default hinting they differ."""
     for name, draw in [("kinematics", lambda t: plots.kinematics_figure(results.valves["intake"], t)),
                        ("contour", lambda t: plots.contour_figure(results.valves["intake"], t)),
                        ("timing", lambda t: plots.timing_figure(results.valves, t))]:
         for lang in ("en", "ru"):
             ours, theirs = io.BytesIO(), io.BytesIO()
             plots.write_png(draw(TEXT[lang]), ours)
-            draw(TEXT[lang]).savefig(theirs, format="png", dpi=plots.DPI)
+            with rc_context({"text.hinting": "no_hinting"}):
+                draw(TEXT[lang]).savefig(theirs, format="png", dpi=plots.DPI)
+            hinted = io.BytesIO()
+            draw(TEXT[lang]).savefig(hinted, format="png", dpi=plots.DPI)
             ours, theirs = Image.open(ours), Image.open(theirs)
             assert (ours.mode, theirs.mode) == ("RGB", "RGBA"), name
             assert ours.info["dpi"] == pytest.approx(theirs.info["dpi"]), name
             rgba = np.asarray(theirs)
             assert (rgba[..., 3] == 255).all(), name
             assert np.array_equal(np.asarray(ours), rgba[..., :3]), (name, lang)
+            assert not np.array_equal(np.asarray(Image.open(hinted))[..., :3], rgba[..., :3]), (name, lang)
 
 
 def test_jerk_plot_marks_each_impulse():

@@ -14,6 +14,7 @@ from typing import Any
 import io
 import itertools
 
+from matplotlib import rc_context
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 from matplotlib.ticker import ScalarFormatter
@@ -33,16 +34,24 @@ DPI = 110
 """The figures' resolution [dots per inch]."""
 
 
+TEXT_STYLE = {"text.hinting": "no_hinting"}
+"""Matplotlib's settings of the figures' text: the glyphs' outlines as drawn, not fitted to the pixels by FreeType's
+hinting (matplotlib's default), which took a tenth of the drawing time of the built-in example's eight figures; the
+letters are as legible at 110 dots per inch, a little softer."""
+
+
 def write_png(fig, target) -> None:
     """Draw ``fig`` at :data:`DPI` and write it to ``target`` (a path or a binary file) as a PNG of its colours
-    without their opacity (RGB, zlib level 3).
+    without their opacity (RGB, zlib level 3), its text drawn without hinting (:data:`TEXT_STYLE`).
 
-    The pixels are those of ``fig.savefig(target, dpi=DPI)``, whose figures are opaque (a white face): its PNG keeps
-    the opacity of every pixel (RGBA) at zlib's default level, 6, whose encoding took 0.2 s of processor time for the
-    built-in example's eight figures, this one 0.11 s, the files of about the same size."""
+    The pixels are those of ``fig.savefig(target, dpi=DPI)`` under :data:`TEXT_STYLE`, whose figures are opaque (a
+    white face): its PNG keeps the opacity of every pixel (RGBA) at zlib's default level, 6, whose encoding took 0.2 s
+    of processor time for the built-in example's eight figures, this one 0.11 s (the files 0.81 MB in all, savefig's
+    with hinted text 0.77 MB)."""
     canvas = FigureCanvasAgg(fig)
     fig.set_dpi(DPI)
-    canvas.draw()
+    with rc_context(TEXT_STYLE):
+        canvas.draw()
     rgba = Image.frombuffer("RGBA", canvas.get_width_height(physical=True), canvas.buffer_rgba(), "raw", "RGBA", 0, 1)
     rgba.convert("RGB").save(target, "png", compress_level=3, dpi=(DPI, DPI))
 
