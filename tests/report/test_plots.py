@@ -184,6 +184,21 @@ def test_the_figures_pngs_have_the_pixels_of_matplotlibs_own(results):
             assert not np.array_equal(np.asarray(Image.open(hinted))[..., :3], rgba[..., :3]), (name, lang)
 
 
+def test_every_text_of_a_figure_lies_on_it(results):
+    """Every text a figure draws (tick labels, axis labels, titles, legends, of the secondary axes too: matplotlib's
+    tight bounding box of the drawn figure) lies inside the figure, in English and Russian: the fixed margins leave
+    room for the widest labels.  (The kinematics figure's per-degree axes on the right were cut off by the figure's
+    edge, their label drawn outside it.)"""
+    figures = [(kind, lambda t, make=make: make(results.valves["intake"], t)) for kind, make in plots.FIGURES.items()]
+    for kind, draw in [*figures, ("timing", lambda t: plots.timing_figure(results.valves, t))]:
+        for lang in ("en", "ru"):
+            fig = draw(TEXT[lang])
+            fig.set_dpi(plots.DPI)
+            box = fig.get_tightbbox(FigureCanvasAgg(fig).get_renderer())
+            width, height = fig.get_size_inches()
+            assert box.x0 >= 0.0 and box.y0 >= 0.0 and box.x1 <= width and box.y1 <= height, (kind, lang, box)
+
+
 def test_jerk_plot_marks_each_impulse():
     """The jerk plot draws an arrow and a marker at each step, pointing the way the acceleration jumps."""
     law = ThreeArcLaw(20e-3, 8e-3, np.radians(60.0), 5e-3)

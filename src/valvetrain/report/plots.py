@@ -167,7 +167,7 @@ def draw_kinematics(d, t) -> Figure:
     top = axes[0].secondary_xaxis("top", functions=(lambda c: 2 * c + nose, lambda k: (k - nose) / 2))
     top.set_xlabel(t["crank_deg"])
     fig.suptitle(f"{d['name']}: {value_text(d['law'], t['lang'])}")
-    fig.subplots_adjust(left=0.15, right=0.96, bottom=0.07, top=0.9, hspace=0.21)
+    fig.subplots_adjust(left=0.12, right=0.87, bottom=0.07, top=0.9, hspace=0.21)   # the per-degree axes on the right
     return _localised(fig, t)
 
 
