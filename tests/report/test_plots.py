@@ -190,7 +190,11 @@ def test_every_text_of_a_figure_lies_on_it(results):
     room for the widest labels.  (The kinematics figure's per-degree axes on the right were cut off by the figure's
     edge, their label drawn outside it.)"""
     figures = [(kind, lambda t, make=make: make(results.valves["intake"], t)) for kind, make in plots.FIGURES.items()]
-    for kind, draw in [*figures, ("timing", lambda t: plots.timing_figure(results.valves, t))]:
+    _all_texts_on_the_figures([*figures, ("timing", lambda t: plots.timing_figure(results.valves, t))])
+
+
+def _all_texts_on_the_figures(figures):
+    for kind, draw in figures:
         for lang in ("en", "ru"):
             fig = draw(TEXT[lang])
             fig.set_dpi(plots.DPI)
@@ -251,3 +255,17 @@ def test_hydraulic_figures(designs):
     _drawn(sweep, plots.draw_hydraulic_sweep)
     assert data["stop_mm"] == pytest.approx(record["stop_mm"], rel=1e-12)
     assert sweep["simulated_rpm"] == pytest.approx(record["speed_rpm"], rel=1e-12)
+
+
+def test_every_text_of_the_stages_figures_lies_on_them(designs):
+    """As test_every_text_of_a_figure_lies_on_it, for the figures of the dynamics, the grinding and the hydraulic
+    drive."""
+    dynamics = designs["pushrod-dynamics.toml"].valves["intake"]
+    ground = designs["seed000-polydyne.toml"].valves["intake"]
+    hydraulic = designs["marine-hydraulic-exhaust.toml"].valves["exhaust"]
+    _all_texts_on_the_figures(
+        [*((kind, lambda t, make=make: make(dynamics.name, dynamics.dynamics, t))
+           for kind, make in plots.DYNAMICS_FIGURES.items()),
+         ("grinding", lambda t: plots.grinding_figure(ground, t)),
+         ("hydraulic", lambda t: plots.hydraulic_figure(hydraulic, t)),
+         ("hydraulic_sweep", lambda t: plots.hydraulic_sweep_figure(hydraulic, t))])
