@@ -79,49 +79,80 @@ def table_share(repeats=5):
     return out
 
 
-def main(drags=20):
+def served(src=None):
+    """`valvetrain serve` on a free port of 127.0.0.1 (from the tree ``src`` when given, e.g. main's checkout, to
+    measure a baseline beside this tree in the same minutes), its process and address."""
+    env = dict(os.environ, **({"PYTHONPATH": str(src)} if src else {}))
     proc = subprocess.Popen([sys.executable, "-u", "-m", "valvetrain", "serve", "--port", "0", "--no-show"],
-                            stdout=subprocess.PIPE, text=True)
-    url = re.search(r"http://127\.0\.0\.1:\d+/", proc.stdout.readline())[0]
+                            stdout=subprocess.PIPE, text=True, env=env)
+    return proc, re.search(r"http://127\.0\.0\.1:\d+/", proc.stdout.readline())[0]
+
+
+def opened(browser, url):
+    """A tab on the designer at ``url``, loaded, the checks drawn."""
+    page = browser.new_page(viewport={"width": 1700, "height": 1300})
+    page.goto(url)
+    page.wait_for_function("() => window.Bokeh && Bokeh.documents.length > 0 && Bokeh.documents[0]"
+                           ".get_model_by_name('checks').source.get_length() > 0", timeout=60_000)
+    return page
+
+
+def drag(page, number):
+    """Drag the nose handle by about 1 mm towards 9.5 mm and wait for both redraws."""
+    x, y, lift, per_mm = page.evaluate(PIXELS)
+    done = page.evaluate("() => [window.vtTimesDone || 0, window.vtSweepTimesDone || 0]")
+    step = (1 if lift < 9.5 else -1) * per_mm
+    page.mouse.move(x, y)
+    page.mouse.down()
+    page.mouse.move(x, y - 6.0 * (1 if step > 0 else -1))   # at once: 300 ms within 5 px is a press
+    page.mouse.move(x, y - step, steps=4)
+    page.mouse.up()
+    try:
+        page.wait_for_function(f"() => (window.vtTimesDone || 0) > {done[0]} && "
+                               f"(window.vtSweepTimesDone || 0) > {done[1]}", timeout=60_000)
+    except PlaywrightTimeout:
+        now = page.evaluate("() => [window.vtTimesDone || 0, window.vtSweepTimesDone || 0]")
+        sys.exit(f"no redraw within 60 s of drag {number}: redraws (kinematics, sweep) {done} before, "
+                 f"{now} after; the nose at {lift:.3f} mm, {per_mm:.1f} px/mm")
+
+
+def summary(name, times):
+    """The medians of one tree's redraws: release -> kinematics, the arrival, the way up, the server, the way down,
+    the page's drawing, the sweep panel."""
+    kinematic, sweep, arrived, server = times
+    up, callback, down = (statistics.median(s) for s in zip(*server))
+    return (f"{name}: release -> kinematic plots and checks redrawn: median {statistics.median(kinematic):.0f} ms "
+            f"(max {max(kinematic):.0f}); the update arrived after {statistics.median(arrived):.0f}; "
+            f"way up / server's callback / way down / drawing: {up:.0f} / {callback:.0f} / {down:.0f} / "
+            f"{statistics.median(k - a for k, a in zip(kinematic, arrived)):.0f} ms; "
+            f"sweep panel redrawn: median {statistics.median(sweep):.0f} ms (max {max(sweep):.0f})")
+
+
+def main(drags=20, baseline=None):
+    trees = {"this tree": None, **({f"baseline {baseline}": baseline} if baseline else {})}
+    servers = {name: served(src) for name, src in trees.items()}
     try:
         with sync_playwright() as p:
             browser = p.chromium.launch(executable_path=shutil.which("chromium"), args=["--no-sandbox"])
-            page = browser.new_page(viewport={"width": 1700, "height": 1300})
-            page.goto(url)
-            page.wait_for_function("() => window.Bokeh && Bokeh.documents.length > 0 && Bokeh.documents[0]"
-                                   ".get_model_by_name('checks').source.get_length() > 0", timeout=60_000)
-            page.wait_for_timeout(3000)
-            for drag in range(drags):
-                x, y, lift, per_mm = page.evaluate(PIXELS)
-                done = page.evaluate("() => [window.vtTimesDone || 0, window.vtSweepTimesDone || 0]")
-                step = (1 if lift < 9.5 else -1) * per_mm
-                page.mouse.move(x, y)
-                page.mouse.down()
-                page.mouse.move(x, y - 6.0 * (1 if step > 0 else -1))   # at once: 300 ms within 5 px is a press
-                page.mouse.move(x, y - step, steps=4)
-                page.mouse.up()
-                try:
-                    page.wait_for_function(f"() => (window.vtTimesDone || 0) > {done[0]} && "
-                                           f"(window.vtSweepTimesDone || 0) > {done[1]}", timeout=60_000)
-                except PlaywrightTimeout:
-                    now = page.evaluate("() => [window.vtTimesDone || 0, window.vtSweepTimesDone || 0]")
-                    sys.exit(f"no redraw within 60 s of drag {drag + 1}: redraws (kinematics, sweep) {done} before, "
-                             f"{now} after; the nose at {lift:.3f} mm, {per_mm:.1f} px/mm")
-            kinematic, sweep, arrived, server = page.evaluate("() => [window.vtTimes, window.vtSweepTimes, "
-                                                              "window.vtTimesArrived, window.vtTimesServer]")
+            pages = {name: opened(browser, url) for name, (_, url) in servers.items()}
+            pages[next(iter(pages))].wait_for_timeout(3000)
+            for number in range(drags):
+                for page in pages.values():          # alternating: each tree's drags in the same minutes
+                    drag(page, number + 1)
+            times = {name: page.evaluate("() => [window.vtTimes, window.vtSweepTimes, window.vtTimesArrived, "
+                                         "window.vtTimesServer]") for name, page in pages.items()}
             browser.close()
     finally:
-        proc.terminate()
-        proc.wait(timeout=20)
+        for proc, _ in servers.values():
+            proc.terminate()
+            proc.wait(timeout=20)
     design_ms, sweep_ms = server_share()
     table_ms, diagnosed_ms = table_share()
-    print(f"drags: {len(kinematic)}")
-    print(f"release -> kinematic plots and checks redrawn: median {statistics.median(kinematic):.0f} ms "
-          f"(max {max(kinematic):.0f}); target <= 150 ms; the design without the sweeps alone {design_ms:.0f} ms; the update arrived "
-          f"in the page after a median {statistics.median(arrived):.0f} ms (the rest is drawing), medians of the way up, the "
-          f"server's callback and the way down: {' / '.join(f'{statistics.median(s):.0f}' for s in zip(*server))} ms")
-    print(f"release -> sweep panel redrawn: median {statistics.median(sweep):.0f} ms (max {max(sweep):.0f}); "
-          f"target <= 1000 ms; the whole design with the sweeps alone {sweep_ms:.0f} ms")
+    print(f"drags: {drags} per tree; target <= 150 ms (kinematics), <= 1000 ms (sweep panel)")
+    for name, t in times.items():
+        print(summary(name, t))
+    print(f"in this process: the design without the sweeps {design_ms:.0f} ms, the whole design with the sweeps "
+          f"{sweep_ms:.0f} ms")
     print(f"a drag of an inline table's point, the server's design (a spring failing): {table_ms:.0f} ms as the designer "
           f"answers first, {diagnosed_ms:.0f} ms with the springs' diagnosis")
     print("load average (1, 5, 15 min): " + ", ".join(f"{v:.1f}" for v in os.getloadavg()))
@@ -130,4 +161,7 @@ def main(drags=20):
 if __name__ == "__main__":
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("drags", nargs="?", type=int, default=20, help="drags of the nose handle (default 20)")
-    main(parser.parse_args().drags)
+    parser.add_argument("--baseline", metavar="SRC", help="also serve the package from the tree SRC (e.g. "
+                        "/work/main/src) and drag its page and this tree's in turn: both measured in the same minutes")
+    args = parser.parse_args()
+    main(args.drags, args.baseline)

@@ -168,6 +168,25 @@ def test_page_loads_without_errors_and_stays_on_this_machine(designer):
     assert outside == []
 
 
+def test_a_style_sheet_set_to_the_text_it_holds_is_left_as_it_is(designer):
+    # Bokeh sets each renderer's position in a style sheet of its own at each paint, the same text mostly; the browser
+    # took each setting for a change of the styles (a mutation of the sheet's text), and the next look-up of a colour
+    # in the styles worked all of them out again: the page keeps a sheet whose text is the same
+    mutations = designer.evaluate("""async () => {
+        const sheet = new (Bokeh.require("core/dom").InlineStyleSheet)(":host { left: 1px; }");
+        let seen = 0;
+        new MutationObserver((m) => { seen += m.length; }).observe(
+            sheet.el, {childList: true, characterData: true, subtree: true});
+        sheet.replace(":host { left: 1px; }");
+        await new Promise((resolve) => setTimeout(resolve, 0));
+        const same = seen;
+        sheet.replace(":host { left: 2px; }");
+        await new Promise((resolve) => setTimeout(resolve, 0));
+        return [same, seen];
+    }""")
+    assert mutations == [0, 1]
+
+
 def test_rated_speed_flips_a_check(designer):
     # V' = c_p (D / d)^2 / i with c_p = S n / 30: at 7000 rpm 18 m/s x (80 / 36.8)^2 = 85.07 m/s > 80 (fails); at
     # 6000 rpm 15.43 m/s x 4.726 = 72.9 m/s, inside 50...80 (Valve-train practical works, work 1)
