@@ -6,14 +6,19 @@ Run on demand: ``python benchmarks/bench_web.py [drags]`` (default 20) with `val
 on a free port of 127.0.0.1 and Debian's chromium (headless) driven by Playwright, both on this machine.  Each
 drag moves the nose handle of the built-in example by about 1 mm towards 9.5 mm (below the 10 mm of the example,
 where the spring passes, as in the figures measured before) and waits for both redraws.  Printed beside
-each median: the target of the issue, the server's share measured in the same run (``valvetrain.api.design`` without
-the speed sweeps, and the whole design with them, of the same specification in this process), the server's design
-of a drag of an inline lift table's point beside the same with the springs' diagnosis, and the load average.
+each median: the target of the issue, the split of the wait (the way up, the server's callback, the way down, the
+page's drawing), the server's share measured in the same run (``valvetrain.api.design`` without the speed sweeps, and
+the whole design with them, of the same specification in this process), the server's design of a drag of an inline
+lift table's point beside the same with the springs' diagnosis, and the load average.
+
+``--baseline SRC`` serves the package from another tree too (e.g. ``/work/main/src``, the tree before a change) and
+drags its page and this tree's in turn, so that both are measured in the same minutes of a loaded machine.
 """
 
 from functools import partial
 import os
 import argparse
+import json
 from pathlib import Path
 import re
 import shutil
@@ -26,7 +31,7 @@ import tomllib
 from playwright.sync_api import TimeoutError as PlaywrightTimeout, sync_playwright
 
 from valvetrain import api
-from valvetrain.specification import example_text
+from valvetrain.specification import example_text, set_keys
 from valvetrain.web.session import Session, without_nones
 
 PIXELS = """() => {
@@ -42,15 +47,16 @@ PIXELS = """() => {
 
 def server_share(repeats=10):
     """The server's part of each redraw [ms, median]: the design without the speed sweeps (the kinematics and the
-    checks) and the whole design with them (the sweep panel and the checks of the dynamics)."""
-    document = tomllib.loads(example_text())
-    Session.settle(document)
+    checks) of a drag of the nose (the lift 9.5 or 9.6 mm in turn, the exhaust kept in the memo as the session keeps
+    it) and the whole design with them (the sweep panel and the checks of the dynamics)."""
+    documents = [set_keys(tomllib.loads(example_text()), {"valves.intake.max_lift_mm": lift}) for lift in (9.5, 9.6)]
+    Session.settle(documents[0])
     out = []
-    for call in (partial(api.design, dynamics=False, diagnose=False), Session.settle):
+    for call in (partial(api.design, dynamics=False, diagnose=False, memo={}), Session.settle):
         times = []
-        for _ in range(repeats):
+        for i in range(repeats):
             t = time.perf_counter()
-            call(document)
+            call(documents[i % 2])
             times.append(1e3 * (time.perf_counter() - t))
         out.append(statistics.median(times))
     return out
@@ -116,19 +122,44 @@ def drag(page, number):
                  f"{now} after; the nose at {lift:.3f} mm, {per_mm:.1f} px/mm")
 
 
-def summary(name, times):
+def page_cpu(path, counts):
+    """The processor time of each page's main thread from each release of a drag to its redrawn kinematics [ms], from
+    a Chrome trace at ``path`` of the drags: the thread time of the main thread's tasks that began in the window (a
+    figure that the other processes of a loaded machine leave as it is, unlike the wall times).  ``counts``: per
+    page, in the order of their first drags, the release -> redraw times (``window.vtTimes``) of the traced drags."""
+    events = json.loads(Path(path).read_text())
+    events = events["traceEvents"] if isinstance(events, dict) else events
+    main = {(e["pid"], e["tid"]) for e in events if e.get("name") == "thread_name"
+            and e.get("args", {}).get("name") == "CrRendererMain"}
+    ups = {}
+    for e in events:
+        if ((e.get("pid"), e.get("tid")) in main and e.get("name") == "EventDispatch"
+                and e.get("args", {}).get("data", {}).get("type") == "pointerup"):
+            ups.setdefault((e["pid"], e["tid"]), []).append(e["ts"])
+    out = []
+    for thread, times in zip(sorted(ups, key=lambda k: min(ups[k])), counts):
+        tasks = [e for e in events if (e.get("pid"), e.get("tid")) == thread and e.get("name") == "RunTask"
+                 and "tdur" in e]
+        out.append([sum(e["tdur"] for e in tasks if up <= e["ts"] <= up + 1e3 * t) / 1e3
+                    for up, t in zip(sorted(ups[thread]), times, strict=True)])
+    return out
+
+
+def summary(name, times, cpu=None):
     """The medians of one tree's redraws: release -> kinematics, the arrival, the way up, the server, the way down,
-    the page's drawing, the sweep panel."""
+    the page's drawing, the sweep panel; the processor times of the server's callback and (``cpu``) of the page."""
     kinematic, sweep, arrived, server = times
-    up, callback, down = (statistics.median(s) for s in zip(*server))
+    up, callback, down, *processor = (statistics.median(s) for s in zip(*server))   # a tree before it: 3 parts
     return (f"{name}: release -> kinematic plots and checks redrawn: median {statistics.median(kinematic):.0f} ms "
             f"(max {max(kinematic):.0f}); the update arrived after {statistics.median(arrived):.0f}; "
             f"way up / server's callback / way down / drawing: {up:.0f} / {callback:.0f} / {down:.0f} / "
             f"{statistics.median(k - a for k, a in zip(kinematic, arrived)):.0f} ms; "
-            f"sweep panel redrawn: median {statistics.median(sweep):.0f} ms (max {max(sweep):.0f})")
+            f"sweep panel redrawn: median {statistics.median(sweep):.0f} ms (max {max(sweep):.0f}); "
+            f"processor time: the server's callback {' '.join(f'{v:.0f} ms' for v in processor) or 'not sent'}"
+            + ("" if cpu is None else f", the page from release to redraw {statistics.median(cpu):.0f} ms"))
 
 
-def main(drags=20, baseline=None):
+def main(drags=20, baseline=None, trace=None):
     trees = {"this tree": None, **({f"baseline {baseline}": baseline} if baseline else {})}
     servers = {name: served(src) for name, src in trees.items()}
     try:
@@ -136,9 +167,13 @@ def main(drags=20, baseline=None):
             browser = p.chromium.launch(executable_path=shutil.which("chromium"), args=["--no-sandbox"])
             pages = {name: opened(browser, url) for name, (_, url) in servers.items()}
             pages[next(iter(pages))].wait_for_timeout(3000)
+            if trace:
+                browser.start_tracing(path=trace, categories=["devtools.timeline", "disabled-by-default-devtools.timeline"])
             for number in range(drags):
                 for page in pages.values():          # alternating: each tree's drags in the same minutes
                     drag(page, number + 1)
+            if trace:
+                browser.stop_tracing()
             times = {name: page.evaluate("() => [window.vtTimes, window.vtSweepTimes, window.vtTimesArrived, "
                                          "window.vtTimesServer]") for name, page in pages.items()}
             browser.close()
@@ -149,8 +184,9 @@ def main(drags=20, baseline=None):
     design_ms, sweep_ms = server_share()
     table_ms, diagnosed_ms = table_share()
     print(f"drags: {drags} per tree; target <= 150 ms (kinematics), <= 1000 ms (sweep panel)")
-    for name, t in times.items():
-        print(summary(name, t))
+    cpu = page_cpu(trace, [t[0] for t in times.values()]) if trace else [None] * len(times)
+    for (name, t), c in zip(times.items(), cpu, strict=True):
+        print(summary(name, t, c))
     print(f"in this process: the design without the sweeps {design_ms:.0f} ms, the whole design with the sweeps "
           f"{sweep_ms:.0f} ms")
     print(f"a drag of an inline table's point, the server's design (a spring failing): {table_ms:.0f} ms as the designer "
@@ -163,5 +199,7 @@ if __name__ == "__main__":
     parser.add_argument("drags", nargs="?", type=int, default=20, help="drags of the nose handle (default 20)")
     parser.add_argument("--baseline", metavar="SRC", help="also serve the package from the tree SRC (e.g. "
                         "/work/main/src) and drag its page and this tree's in turn: both measured in the same minutes")
+    parser.add_argument("--trace", metavar="FILE", help="record a Chrome trace of the drags to FILE and print the "
+                        "processor time of the page from release to redraw")
     args = parser.parse_args()
-    main(args.drags, args.baseline)
+    main(args.drags, args.baseline, args.trace)
