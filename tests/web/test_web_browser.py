@@ -187,6 +187,24 @@ def test_a_style_sheet_set_to_the_text_it_holds_is_left_as_it_is(designer):
     assert mutations == [0, 1]
 
 
+def test_a_redraw_comes_to_the_page_in_one_message(designer):
+    # Bokeh's server sent a message per changed model, four or more frames of the web socket each: the curves (the
+    # velocity at the rated speed), the checks and the stamp of a redraw come in one (the stamp is its last change)
+    contents = []
+    designer.on("websocket", lambda ws: ws.on("framereceived", lambda frame: contents.append(frame)))
+    designer.reload()
+    opened(designer, designer.url)
+    ids = designer.evaluate("""() => ['curves', 'checks', 'kinematic-stamp'].map((name) => {
+        const m = Bokeh.documents[0].get_model_by_name(name);
+        return (m.source || m).id;
+    })""")
+    done = redrawn_count(designer)
+    fill(designer, "rated_speed_rpm", "6000")
+    wait_redrawn(designer, done)
+    stamped = [c for c in contents if isinstance(c, str) and f'"id":"{ids[-1]}"' in c and '"events"' in c]
+    assert stamped and all(f'"id":"{i}"' in stamped[-1] for i in ids)
+
+
 def test_rated_speed_flips_a_check(designer):
     # V' = c_p (D / d)^2 / i with c_p = S n / 30: at 7000 rpm 18 m/s x (80 / 36.8)^2 = 85.07 m/s > 80 (fails); at
     # 6000 rpm 15.43 m/s x 4.726 = 72.9 m/s, inside 50...80 (Valve-train practical works, work 1)

@@ -201,9 +201,10 @@ SWEEP_WORKERS = ThreadPoolExecutor(max_workers=1, thread_name_prefix="valvetrain
 
 
 def _held(plots, stamp, key):
-    """A data source whose change pauses the drawing of ``plots`` in the page until ``stamp`` changes: a redraw's
-    changes come to the page one message each, and the page would paint a plot once for each that reaches it in
-    another frame; held, it paints each plot once, in the frame after the last."""
+    """A data source whose change pauses the drawing of ``plots`` in the page until ``stamp`` changes: the page would
+    paint a plot once for each of a redraw's changes that reaches it in another frame; held, it paints each plot
+    once, in the frame after the last (the server sends a callback's changes in one message,
+    :func:`valvetrain.web.one_message`, which the hold does not rely on)."""
     hold = ColumnDataSource({"n": [0]})
     hold.js_on_change("data", CustomJS(args={"plots": plots, "key": key}, code=PAUSE_JS))
     stamp.js_on_change("data", CustomJS(args={"key": key}, code=UNPAUSE_JS))
