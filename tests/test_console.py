@@ -1,6 +1,7 @@
 """The ``valvetrain`` program as its console script starts it (valvetrain.console): a SIGINT while the command line is
 imported ends it with one line and status 130; without one the command runs."""
 
+import os
 import random
 import signal
 import subprocess
@@ -8,6 +9,8 @@ import sys
 import time
 import tomllib
 from pathlib import Path
+
+import pytest
 
 SIGINT_WHILE_IMPORTING = """
 import signal, sys
@@ -70,3 +73,31 @@ def test_ctrl_c_while_importing_is_one_line_and_status_130():
         outcomes.append((proc.returncode, out, err))
         assert (proc.returncode, err) in ((130, "error: interrupted\n"), (0, "")), (moment, err)
     assert sum(rc == 130 for rc, _, _ in outcomes) >= 5
+
+
+BLAS_THREADS = """
+import sys
+from valvetrain import console
+sys.argv = ["valvetrain", "--version"]
+try:
+    console.program()
+finally:
+    import numpy
+    threads = [line for line in open("/proc/self/status") if line.startswith("Threads:")][0].split()[1]
+    print("threads", threads)
+"""
+
+
+def test_the_program_starts_no_blas_threads_unless_asked(monkeypatch):
+    """numpy's OpenBLAS starts a thread a core when it is loaded, unless OPENBLAS_NUM_THREADS says otherwise: the
+    program, which imports numpy with the command line, is left with its one thread (Linux's /proc/self/status
+    counts them); with OPENBLAS_NUM_THREADS=2 set by the user it is kept (one more thread).  Fails where the program
+    does not set it (the process has a thread a core of the machine)."""
+    if not Path("/proc/self/status").exists() or (os.cpu_count() or 1) < 2:
+        pytest.skip("counts the threads in Linux's /proc; OpenBLAS starts one more thread only on 2 or more cores")
+    monkeypatch.delenv("OPENBLAS_NUM_THREADS", raising=False)
+    proc = subprocess.run([sys.executable, "-c", BLAS_THREADS], capture_output=True, text=True, timeout=120)
+    assert proc.stdout.split()[-2:] == ["threads", "1"]
+    proc = subprocess.run([sys.executable, "-c", BLAS_THREADS], capture_output=True, text=True, timeout=120,
+                          env={**os.environ, "OPENBLAS_NUM_THREADS": "2"})
+    assert proc.stdout.split()[-2:] == ["threads", "2"]

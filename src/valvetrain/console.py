@@ -5,15 +5,28 @@ is being imported (click, pydantic, numpy: most of the start-up) a SIGINT is onl
 into the import machinery or a library's schema building comes out as an error of theirs, or as an "Exception
 ignored" text, instead of an interruption; the program ends once the imports are done.  Then, while a command runs,
 the handler raises KeyboardInterrupt and remembers the SIGINT, so that an error a library makes of it is the
-interruption too (:class:`valvetrain.cli._Main`).  This module imports only :mod:`valvetrain.interruption` at
-the top.
+interruption too (:class:`valvetrain.cli._Main`).  This module imports only :mod:`os` and
+:mod:`valvetrain.interruption` at the top.
+
+The program's linear algebra runs in one thread of numpy's and scipy's OpenBLAS (:data:`BLAS_THREADS`, unless
+``OPENBLAS_NUM_THREADS`` is set): its matrices are a few rows by a few, and its parallel work is done by the speed
+sweeps' threads and the drawing processes.
 """
 
+import os
+
 from .interruption import Interruption, interrupted_while_starting
+
+BLAS_THREADS = {"OPENBLAS_NUM_THREADS": "1"}
+"""The environment the program sets before numpy is imported, where not set already: OpenBLAS starts a thread a core
+when it is loaded, which waits for work spinning, at the start and after each call (0.2-0.4 s of processor time in a
+run of the built-in example, taken from the drawing processes' cores); the numbers are the same."""
 
 
 def program() -> None:
     """Import the command line with the SIGINT recorded, end if it came, and run it (:func:`valvetrain.cli.program`)."""
+    for name, value in BLAS_THREADS.items():
+        os.environ.setdefault(name, value)
     Interruption.install(Interruption.record)
     from .cli import program as command
 

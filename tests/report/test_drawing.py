@@ -85,3 +85,43 @@ def test_stopping_ends_a_drawer_that_did_not_take_its_sigterm(monkeypatch):
     assert not stopping.is_alive(), "stop() waited for a drawer that did not take its SIGTERM"
     assert not any(Path(f"/proc/{pid}").exists() and "Z" not in Path(f"/proc/{pid}/stat").read_text().split()[2]
                    for pid in drawers)
+
+
+def test_the_lift_over_the_cycle_is_the_valve_timing_of_the_specification():
+    """ValveDesign.cycle_lift, the timing diagram's lifts: the appendix example's inlet valve
+    (examples/seed000-appendix-kurz.toml: max_lift_mm = 10, opens 26 crank deg before TDC, closes 78 after BDC, its
+    Kurz lobe symmetric about the nose) lifts from -26 to 180 + 78 = 258 crank deg and nowhere else, and reaches its
+    10 mm at the middle, (-26 + 258) / 2 = 116 crank deg."""
+    import numpy as np
+
+    from valvetrain.design.valve import CYCLE_CRANK
+
+    valve = run(appendix_spec()).valves["intake"]
+    crank = np.degrees(CYCLE_CRANK)
+    lifting = crank[valve.cycle_lift > 0.0]
+    assert lifting.min() == pytest.approx(-26.0) and lifting.max() == pytest.approx(258.0)
+    assert valve.cycle_lift.max() == pytest.approx(10e-3, rel=1e-12)
+    assert valve.cycle_lift[np.argmin(np.abs(crank - 116.0))] == pytest.approx(10e-3, rel=1e-12)
+
+
+def test_a_drawer_draws_the_main_figures_without_loading_compiled_laws(tmp_path):
+    """The figure inputs carry each valve's lift over the cycle (the one law the main figures evaluated): a new
+    process that unpickles them and draws the appendix example's main figures never calls a compiled lift law, so
+    the drawers, forked before the first process loads numba's compiled code, need not load it (0.2 s of processor
+    time; the first call of a kernel imports numba's array-math module, numba.np.arraymath, which is the sign looked
+    for).  Before the inputs carried it, the timing diagram evaluated the Kurz law's kernel in the drawer."""
+    import pickle
+    import subprocess
+
+    from valvetrain.report.drawing import figure_inputs
+
+    (tmp_path / "plots").mkdir()
+    (tmp_path / "inputs.pickle").write_bytes(pickle.dumps(figure_inputs(run(appendix_spec()), "main")))
+    script = ("import pickle, sys\n"
+              "from pathlib import Path\n"
+              "from valvetrain.report.plots import write_plots\n"
+              f"folder = Path({str(tmp_path)!r})\n"
+              "drawn = write_plots(pickle.loads((folder / 'inputs.pickle').read_bytes()), folder / 'plots', 'en', 'main')\n"
+              "print(drawn['(timing)'], 'numba.np.arraymath' in sys.modules)\n")
+    out = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, check=True).stdout.split()
+    assert out == ["valve_timing.png", "False"]

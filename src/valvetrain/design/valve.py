@@ -36,6 +36,10 @@ from .lash_adjuster import LashAdjusterResult, lash_adjuster_stage
 from .lubrication import LubricationResult, lubrication_stage
 from .results import NamedValues, quantity, record
 
+CYCLE_CRANK = np.radians(np.linspace(-360.0, 360.0, 2881))
+"""Crank angles of :attr:`ValveDesign.cycle_lift` [rad from the gas-exchange TDC]: the four-stroke cycle, a quarter
+degree apart (the timing diagram's)."""
+
 ACCELERATION_LIMITS = (3500.0, -1500.0)
 """Upper ends of the recommended bands of positive (1500-3500) and negative (500-1500) tappet
 acceleration [m/s^2] (Valve-train practical works (n.d.), work 2)."""
@@ -684,6 +688,14 @@ class ValveDesign:
     table = property(lambda self: self.profile.table)
     contour = property(lambda self: self.profile.contour)
     contour_angle = property(lambda self: self.profile.contour_angle)
+
+    @cached_property
+    def cycle_lift(self) -> np.ndarray:
+        """The valve lift [m] at the crank angles :data:`CYCLE_CRANK`, the camshaft turning at half the crank's speed
+        (the timing diagram's), evaluated once: the first process of a run evaluates it before it sends the results
+        to the processes that draw the figures, which then need not load the lift laws' compiled code
+        (:func:`valvetrain.report.drawing.figure_inputs`)."""
+        return self.law.valve_lift((CYCLE_CRANK - self.nose_crank) / 2.0, self.rocker_ratio, self.follower_model)
 
     @cached_property
     def summary(self) -> dict[str, Any]:

@@ -4,9 +4,11 @@ Drawing is most of what ``valvetrain run`` costs after the design (importing mat
 about 0.1-0.4 s a figure), and it needs nothing but the results: a process forked before the design imports
 matplotlib meanwhile and draws one figure (its fonts loaded, the PNG writer imported), forks :data:`PROCESSES` - 1
 more from itself (which find matplotlib imported), then imports the modules of the other files it is to write
-(:class:`FigureProcess`'s ``imports``: the DXF writer).  The first process loads numba's compiled code (the first
-call of any kernel loads it for all, 0.2-0.5 s) before it forks: the drawers evaluate laws too (the timing diagram),
-and inherit it.  Each drawer receives the results once they are there (what the figures asked for
+(:class:`FigureProcess`'s ``imports``: the DXF writer).  The drawers evaluate no lift law for the main figures (the
+timing diagram's lifts are evaluated in the first process, :func:`figure_inputs`), so that the first process forks
+them before it loads numba's compiled code (the first call of any kernel loads it for all, 0.2-0.5 s), which it does
+while they import matplotlib; a figure of ``--figures all`` that evaluates a law (the curvature) loads it in its
+drawer.  Each drawer receives the results once they are there (what the figures asked for
 read, :func:`figure_inputs`) from its own pipe; the first sends back the files of the figures (which the report
 names), writes the other files it was given (``submit``'s ``also``: the DXF files of the contours), and they draw
 the figures while the first process writes the tables and renders the report, which embeds them once drawn.  The
@@ -45,9 +47,6 @@ class FigureProcess:
     """
 
     def __init__(self, processes=PROCESSES, imports=()):
-        from ..laws.base import mirror
-
-        mirror(0.0, 1.0)   # numba's compiled code loaded (0.2-0.5 s, once): the drawers evaluate laws too
         context = multiprocessing.get_context("fork")
         pipes = [context.Pipe() for _ in range(processes)]     # one a drawer: its request (the first's: its answer)
         self._conns = [mine for mine, _ in pipes]
@@ -140,12 +139,16 @@ def figure_inputs(results, figures) -> DesignResults:
     the speed sweeps (``dynamics.sweep``) but where ``figures`` is ``"all"``, the only set that draws the dynamics
     maps, which alone show them (not in :data:`valvetrain.report.plots.MAIN_FIGURES`).  Those are most of what
     :meth:`FigureProcess.submit` would copy to the drawers (the built-in example's two valves: 70 MB of arrays and
-    12 MB pickled), and copied in vain."""
-    if figures == "all":
-        return results
-    return replace(results, valves={name: v if v.dynamics is None or v.dynamics.sweep is None else
-                                    replace(v, dynamics=replace(v.dynamics, sweep=None))
-                                    for name, v in results.valves.items()})
+    12 MB pickled), and copied in vain.  Each valve's lift over the cycle (the timing diagram's,
+    :attr:`valvetrain.design.valve.ValveDesign.cycle_lift`) is evaluated here, where the laws' compiled code is
+    loaded: a drawer would load it to evaluate a law (0.2 s)."""
+    if figures != "all":
+        results = replace(results, valves={name: v if v.dynamics is None or v.dynamics.sweep is None else
+                                           replace(v, dynamics=replace(v.dynamics, sweep=None))
+                                           for name, v in results.valves.items()})
+    for v in results.valves.values():
+        v.cycle_lift   # noqa: B018 - evaluated and kept (a cached property)
+    return results
 
 
 def _serve(conns, others, imports):

@@ -19,7 +19,7 @@ from matplotlib.ticker import ScalarFormatter
 import numpy as np
 
 from ..design.dynamics import event_window
-from ..design.valve import RHO_MIN
+from ..design.valve import CYCLE_CRANK, RHO_MIN
 from ..design.results import shown_value
 from ..units import MM, per_cam_degree, rad_to_deg, to_display
 from .i18n import TEXT
@@ -538,15 +538,14 @@ def timing_data(valves) -> dict[str, Any]:
     """The series of :func:`draw_timing`: crank angle [deg from the gas-exchange TDC], each valve's kind and lift
     [mm] there, its opening and closing [crank deg], and where intake and exhaust are open together (None without
     both kinds)."""
-    crank = np.radians(np.linspace(-360.0, 360.0, 2881))
     lifts, events, open_by_kind = {}, {}, {}
     for name, v in valves.items():
-        lift = v.law.valve_lift((crank - v.nose_crank) / 2.0, v.rocker_ratio, v.follower_model)
+        lift = v.cycle_lift
         lifts[name] = (v.kind, lift / MM)
         events[name] = (shown_value(v.cam, "valve_opens"), shown_value(v.cam, "valve_closes"))
-        open_by_kind[v.kind] = open_by_kind.get(v.kind, np.zeros_like(crank, dtype=bool)) | (lift > 0.0)
+        open_by_kind[v.kind] = open_by_kind.get(v.kind, np.zeros_like(CYCLE_CRANK, dtype=bool)) | (lift > 0.0)
     overlap = open_by_kind["intake"] & open_by_kind["exhaust"] if len(open_by_kind) == 2 else None
-    return {"crank_deg": rad_to_deg(crank), "lifts_mm": lifts, "events_crank_deg": events, "overlap": overlap}
+    return {"crank_deg": rad_to_deg(CYCLE_CRANK), "lifts_mm": lifts, "events_crank_deg": events, "overlap": overlap}
 
 
 def draw_timing(d, t) -> Figure:

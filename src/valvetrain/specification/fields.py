@@ -8,12 +8,14 @@ import math
 from typing import Annotated, Any
 
 from pydantic import AfterValidator, BaseModel, ConfigDict, Field
+from pydantic_core import core_schema
 
 
 @dataclass(frozen=True)
 class Range:
     """The bounds of a bounded field, kept in its annotation for the editors that draw an input for it (the
-    designer in the browser): pydantic ignores it, the field's validator enforces it."""
+    designer in the browser), and its check: pydantic calls it after the float's own validation
+    (:meth:`__get_pydantic_core_schema__`), with a message that states the whole range."""
 
     low: float
     high: float
@@ -21,22 +23,31 @@ class Range:
     low_open: bool = True
     high_open: bool = False
 
+    @property
+    def text(self) -> str:
+        """The allowed range as the messages state it, ``allowed (0, 5] mm``."""
+        return (f"allowed {'(' if self.low_open else '['}{self.low:g}, {self.high:g}{')' if self.high_open else ']'}"
+                f"{' ' + self.unit if self.unit else ''}")
+
+    def check(self, v) -> float:
+        """``v`` if finite and within the bounds, else a ValueError stating the allowed range."""
+        if not math.isfinite(v):
+            raise ValueError(f"must be a finite number; {self.text}")
+        below = v <= self.low if self.low_open else v < self.low
+        above = v >= self.high if self.high_open else v > self.high
+        if below or above:
+            raise ValueError(self.text)
+        return v
+
+    def __get_pydantic_core_schema__(self, source, handler) -> core_schema.CoreSchema:
+        """The float's schema followed by :meth:`check` (the schema an ``AfterValidator`` makes, built directly: a
+        tenth of a millisecond less a field, at every start of the program)."""
+        return core_schema.no_info_after_validator_function(self.check, handler(source))
+
 
 def _bounded(low, high, unit="", low_open=True, high_open=False):
     """A float constrained to a physical range, with a message that states the whole range."""
-    lo_sym, hi_sym = ("(" if low_open else "["), (")" if high_open else "]")
-    text = f"allowed {lo_sym}{low:g}, {high:g}{hi_sym}{' ' + unit if unit else ''}"
-
-    def check(v):
-        if not math.isfinite(v):
-            raise ValueError(f"must be a finite number; {text}")
-        below = v <= low if low_open else v < low
-        above = v >= high if high_open else v > high
-        if below or above:
-            raise ValueError(text)
-        return v
-
-    return Annotated[float, AfterValidator(check), Range(low, high, unit, low_open, high_open)]
+    return Annotated[float, Range(low, high, unit, low_open, high_open)]
 
 
 def Length(low, high, **kw) -> Any:  # noqa: N802 (a type factory)
