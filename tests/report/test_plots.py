@@ -4,14 +4,17 @@ closes 78 deg after the BDC, Phi = 27 + 6 + 38 = 71 cam deg from the end of the 
 impulses.  The dynamics, grinding and hydraulic-actuation figures are their data and their drawing: the data are plain
 numbers and arrays, the same as results.json's, and the drawing takes them alone."""
 
+import io
 import itertools
 from pathlib import Path
 import re
 
+from matplotlib import rc_context
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 from matplotlib.text import Text
 import numpy as np
+from PIL import Image
 import pytest
 
 from valvetrain.design import run
@@ -157,6 +160,49 @@ def test_a_drawer_draws_the_figures_it_claims(results):
     assert sorted([*odd, *even]) == sorted(order)
 
 
+def test_the_figures_pngs_have_the_pixels_of_matplotlibs_own(results):
+    """write_png writes a figure without the opacity of its pixels (RGB), its text without hinting: figures of the
+    appendix, read back (Pillow's PNG decoder), have the colours of the same figures written by matplotlib's own
+    ``savefig`` with the text unhinted (``text.hinting = no_hinting``; RGBA, the reference), whose every pixel is
+    opaque, so that nothing is lost; at the same resolution.  With matplotlib's default hinting they differ."""
+    for name, draw in [("kinematics", lambda t: plots.kinematics_figure(results.valves["intake"], t)),
+                       ("contour", lambda t: plots.contour_figure(results.valves["intake"], t)),
+                       ("timing", lambda t: plots.timing_figure(results.valves, t))]:
+        for lang in ("en", "ru"):
+            ours, theirs = io.BytesIO(), io.BytesIO()
+            plots.write_png(draw(TEXT[lang]), ours)
+            with rc_context({"text.hinting": "no_hinting"}):
+                draw(TEXT[lang]).savefig(theirs, format="png", dpi=plots.DPI)
+            hinted = io.BytesIO()
+            draw(TEXT[lang]).savefig(hinted, format="png", dpi=plots.DPI)
+            ours, theirs = Image.open(ours), Image.open(theirs)
+            assert (ours.mode, theirs.mode) == ("RGB", "RGBA"), name
+            assert ours.info["dpi"] == pytest.approx(theirs.info["dpi"]), name
+            rgba = np.asarray(theirs)
+            assert (rgba[..., 3] == 255).all(), name
+            assert np.array_equal(np.asarray(ours), rgba[..., :3]), (name, lang)
+            assert not np.array_equal(np.asarray(Image.open(hinted))[..., :3], rgba[..., :3]), (name, lang)
+
+
+def test_every_text_of_a_figure_lies_on_it(results):
+    """Every text a figure draws (tick labels, axis labels, titles, legends, of the secondary axes too: matplotlib's
+    tight bounding box of the drawn figure) lies inside the figure, in English and Russian: the fixed margins leave
+    room for the widest labels.  (The kinematics figure's per-degree axes on the right were cut off by the figure's
+    edge, their label drawn outside it.)"""
+    figures = [(kind, lambda t, make=make: make(results.valves["intake"], t)) for kind, make in plots.FIGURES.items()]
+    _all_texts_on_the_figures([*figures, ("timing", lambda t: plots.timing_figure(results.valves, t))])
+
+
+def _all_texts_on_the_figures(figures):
+    for kind, draw in figures:
+        for lang in ("en", "ru"):
+            fig = draw(TEXT[lang])
+            fig.set_dpi(plots.DPI)
+            box = fig.get_tightbbox(FigureCanvasAgg(fig).get_renderer())
+            width, height = fig.get_size_inches()
+            assert box.x0 >= 0.0 and box.y0 >= 0.0 and box.x1 <= width and box.y1 <= height, (kind, lang, box)
+
+
 def test_jerk_plot_marks_each_impulse():
     """The jerk plot draws an arrow and a marker at each step, pointing the way the acceleration jumps."""
     law = ThreeArcLaw(20e-3, 8e-3, np.radians(60.0), 5e-3)
@@ -209,3 +255,17 @@ def test_hydraulic_figures(designs):
     _drawn(sweep, plots.draw_hydraulic_sweep)
     assert data["stop_mm"] == pytest.approx(record["stop_mm"], rel=1e-12)
     assert sweep["simulated_rpm"] == pytest.approx(record["speed_rpm"], rel=1e-12)
+
+
+def test_every_text_of_the_stages_figures_lies_on_them(designs):
+    """As test_every_text_of_a_figure_lies_on_it, for the figures of the dynamics, the grinding and the hydraulic
+    drive."""
+    dynamics = designs["pushrod-dynamics.toml"].valves["intake"]
+    ground = designs["seed000-polydyne.toml"].valves["intake"]
+    hydraulic = designs["marine-hydraulic-exhaust.toml"].valves["exhaust"]
+    _all_texts_on_the_figures(
+        [*((kind, lambda t, make=make: make(dynamics.name, dynamics.dynamics, t))
+           for kind, make in plots.DYNAMICS_FIGURES.items()),
+         ("grinding", lambda t: plots.grinding_figure(ground, t)),
+         ("hydraulic", lambda t: plots.hydraulic_figure(hydraulic, t)),
+         ("hydraulic_sweep", lambda t: plots.hydraulic_sweep_figure(hydraulic, t))])

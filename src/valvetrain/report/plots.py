@@ -14,9 +14,12 @@ from typing import Any
 import io
 import itertools
 
+from matplotlib import rc_context
+from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 from matplotlib.ticker import ScalarFormatter
 import numpy as np
+from PIL import Image
 
 from ..design.dynamics import event_window
 from ..design.valve import CYCLE_CRANK, RHO_MIN
@@ -25,6 +28,32 @@ from ..units import MM, per_cam_degree, rad_to_deg, to_display
 from .i18n import TEXT
 from .names import value_text
 from .numbers import number
+
+
+DPI = 110
+"""The figures' resolution [dots per inch]."""
+
+
+TEXT_STYLE = {"text.hinting": "no_hinting"}
+"""Matplotlib's settings of the figures' text: the glyphs' outlines as drawn, not fitted to the pixels by FreeType's
+hinting (matplotlib's default), which took a tenth of the drawing time of the built-in example's eight figures; the
+letters are as legible at 110 dots per inch, a little softer."""
+
+
+def write_png(fig, target) -> None:
+    """Draw ``fig`` at :data:`DPI` and write it to ``target`` (a path or a binary file) as a PNG of its colours
+    without their opacity (RGB, zlib level 3), its text drawn without hinting (:data:`TEXT_STYLE`).
+
+    The pixels are those of ``fig.savefig(target, dpi=DPI)`` under :data:`TEXT_STYLE`, whose figures are opaque (a
+    white face): its PNG keeps the opacity of every pixel (RGBA) at zlib's default level, 6, whose encoding took 0.2 s
+    of processor time for the built-in example's eight figures, this one 0.11 s (the files 0.81 MB in all, savefig's
+    with hinted text 0.77 MB)."""
+    canvas = FigureCanvasAgg(fig)
+    fig.set_dpi(DPI)
+    with rc_context(TEXT_STYLE):
+        canvas.draw()
+    rgba = Image.frombuffer("RGBA", canvas.get_width_height(physical=True), canvas.buffer_rgba(), "raw", "RGBA", 0, 1)
+    rgba.convert("RGB").save(target, "png", compress_level=3, dpi=(DPI, DPI))
 
 
 class DecimalComma(ScalarFormatter):
@@ -138,7 +167,7 @@ def draw_kinematics(d, t) -> Figure:
     top = axes[0].secondary_xaxis("top", functions=(lambda c: 2 * c + nose, lambda k: (k - nose) / 2))
     top.set_xlabel(t["crank_deg"])
     fig.suptitle(f"{d['name']}: {value_text(d['law'], t['lang'])}")
-    fig.subplots_adjust(left=0.15, right=0.96, bottom=0.07, top=0.9, hspace=0.21)
+    fig.subplots_adjust(left=0.12, right=0.87, bottom=0.07, top=0.9, hspace=0.21)   # the per-degree axes on the right
     return _localised(fig, t)
 
 
@@ -860,10 +889,10 @@ def _saver(folder, claim=None):
         if next(turn) == claimed[0]:
             if isinstance(folder, dict):
                 png = io.BytesIO()
-                draw().savefig(png, format="png", dpi=110)
+                write_png(draw(), png)
                 folder[fname] = png.getvalue()
             else:
-                draw().savefig(folder / fname, dpi=110)
+                write_png(draw(), folder / fname)
             claimed[0] = claim()
         return fname
     return save
