@@ -8,6 +8,7 @@ print the open checks, ranked, and the verdict, and exit 0; with ``--strict`` th
 when a failure is open (not accepted in the specification).
 """
 
+import gc
 import itertools
 import signal
 import sys
@@ -192,8 +193,10 @@ def run(file, out, force, lang, figures, strict) -> None:
     spec = _load(file)
     inputs = _check_out(out, [file] if file else [], [spec], force)
     drawer = start(DRAWER_IMPORTS) if figures != "none" else None   # imports matplotlib while this process designs
+    gc.freeze()   # the design's collections do not look through the modules imported so far
     try:
         results = _design(spec, _Progress())
+        gc.freeze()   # nor the writer's through the results
         write_outputs(results, out, lang, inputs, force, figures, drawer)
     except OutFolderError as err:
         _fail_out(err)
