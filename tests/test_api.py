@@ -202,3 +202,14 @@ def test_memo_designs_again_only_the_valves_whose_inputs_changed(monkeypatch):
     designed.clear()
     api.design(set_keys(edited, {"engine.rated_speed_rpm": 6000}), dynamics=False, diagnose=False, memo=memo)
     assert designed == ["intake", "exhaust"]
+
+
+@pytest.mark.parametrize("name", ["two-stroke-ports", "v8-crank"])
+def test_design_without_the_sweeps_of_a_file_with_no_valves(name):
+    """Fuzzer: a specification without [valves] (a two-stroke's ports, a crank alone) designed without the sweeps
+    raised KeyError in the JSON entry point; its results are those of the whole design (it has no sweep to leave
+    out), the independent route."""
+    document = _document(EXAMPLES / f"{name}.toml")
+    quick = api.design(document, dynamics=False)
+    assert quick["ok"], quick["errors"]
+    _close(quick["results"], api.design(document)["results"])

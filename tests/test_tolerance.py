@@ -153,6 +153,26 @@ def test_resume_after_interruption(spec_file, serial, tmp_path):
     assert outputs(out) == serial
 
 
+def test_lines_that_are_no_records_are_designed_again(spec_file, serial, tmp_path):
+    """Fuzzer: a records file with a line of JSON that is no record, one of another index and one not UTF-8 (a
+    damaged disk, an edit) stopped the run with a traceback; they are left out and their samples designed again,
+    to the results of the uninterrupted run."""
+    out = tmp_path / "out"
+    tolerance(spec_file, out, *ARGS)
+    lines = (out / "records.jsonl").read_bytes().split(b"\n")
+    lines[2] = b'{"not": "a record"}'
+    lines[3] = lines[3].replace(b'"index": 2', b'"index": 99')
+    lines[4] = b"\xff\xfe" + lines[4]
+    (out / "records.jsonl").write_bytes(b"\n".join(lines))
+    (out / "tolerance.json").unlink()
+    result = tolerance(spec_file, out, *ARGS)
+    assert "3 samples designed (3 kept from before)" in result.output
+    assert outputs(out) == serial
+    # a header that is JSON but no header is another study's file
+    (out / "records.jsonl").write_text("[1]\n", encoding="utf-8")
+    assert "records of another study" in tolerance(spec_file, out, *ARGS, code=2).output
+
+
 def test_other_inputs_in_the_folder_are_refused(spec_file, serial, tmp_path):
     out = tmp_path / "out"
     tolerance(spec_file, out, *ARGS)

@@ -116,7 +116,7 @@ def without_dynamics(spec, parsed) -> dict[str, Any]:
     kept = [a for a, p in zip(spec.get("accepted", []), parsed.accepted, strict=True)
             if (resolve(p, parsed.valves) or (None, None, None))[1] not in CHECK_CODES]
     out = {**spec, "valves": {n: {k: v for k, v in valve.items() if k != "dynamics"}
-                              for n, valve in spec["valves"].items()}}
+                              for n, valve in spec.get("valves", {}).items()}}
     if "accepted" in spec:
         out["accepted"] = kept
     return out

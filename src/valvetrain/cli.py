@@ -525,7 +525,7 @@ def tolerance(file, samples, method, seed, out, workers, scheduler, lang) -> Non
         centres = check_tolerances(document, spec)
         values = draw(spec, centres, samples, method, seed)
         records_file = RecordFile(folder, fingerprint(document, method, seed, values))
-        done = records_file.read()
+        done = records_file.read(samples)
     except ToleranceError as err:
         click.echo(f"error: {err}", err=True)
         sys.exit(2)

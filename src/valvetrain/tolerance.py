@@ -230,15 +230,17 @@ class RecordFile:
     """The records of a study, appended one a line as they arrive; read back to resume.
 
     The first line is ``{"fingerprint": ...}`` (:func:`fingerprint`); a file of other inputs is refused.  A last
-    line cut short (the process killed while writing it) is ignored and written again.
+    line cut short (the process killed while writing it), or any line that is no record, is ignored and its sample
+    designed again.
     """
 
     def __init__(self, folder, stamp):
         self.path = Path(folder) / RECORDS
         self.stamp = stamp
 
-    def read(self) -> dict:
-        """The records written before, index -> record (empty for a new file).
+    def read(self, samples) -> dict:
+        """The records written before, index -> record (empty for a new file); a line that is no record of one of
+        the ``samples`` (cut short, damaged, not UTF-8) is left out, its sample designed again.
 
         Raises
         ------
@@ -247,12 +249,12 @@ class RecordFile:
         """
         if not self.path.exists():
             return {}
-        lines = self.path.read_text(encoding="utf-8").split("\n")
+        lines = self.path.read_bytes().decode("utf-8", errors="replace").split("\n")
         try:
             header = json.loads(lines[0])
         except json.JSONDecodeError:
             header = {}
-        if header.get("fingerprint") != self.stamp:
+        if not isinstance(header, dict) or header.get("fingerprint") != self.stamp:
             raise ToleranceError(f"{self.path} holds the records of another study (another file, tolerances, "
                                  "method, seed or number of samples); give another --out")
         done = {}
@@ -261,7 +263,8 @@ class RecordFile:
                 item = json.loads(line)
             except json.JSONDecodeError:
                 continue
-            done[item["index"]] = item["record"]
+            if _is_record(item, samples):
+                done[item["index"]] = item["record"]
         return done
 
     def open(self, done) -> "RecordFile":
@@ -283,6 +286,16 @@ class RecordFile:
 
     def close(self) -> None:
         self.file.close()
+
+
+RECORD_KEYS = {"status", "message", "checks", "headlines"}
+"""The keys of a sample's record (:func:`evaluate_sample`)."""
+
+
+def _is_record(item, samples):
+    """Whether a line's JSON value ``item`` is ``{"index": i, "record": {...}}`` of one of ``samples`` samples."""
+    return (isinstance(item, dict) and type(item.get("index")) is int and 0 <= item["index"] < samples
+            and isinstance(item.get("record"), dict) and set(item["record"]) == RECORD_KEYS)
 
 
 def _line(index, record):

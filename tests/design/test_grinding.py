@@ -141,5 +141,8 @@ def test_a_master_without_a_heel_circle_is_refused():
     found = "; ".join(err.value.problems)
     assert "valves.intake.grinding.master_follower_radius_mm = 10" in found
     assert "allowed master_follower_radius_mm <" in found and "master_base_radius_mm" in found
+    # the record of the JSON entry point names the key too (fuzzer: its path was empty)
+    (problem,) = err.value.problems
+    assert (problem.path, problem.value) == ("valves.intake.grinding.master_follower_radius_mm", "10")
     # with a heel radius of its own the master exists
     run(parse_spec(text.replace("bar_ratio = 0.1\n", "bar_ratio = 0.1\nmaster_base_radius_mm = 30.0\n")))

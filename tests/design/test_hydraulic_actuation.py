@@ -122,6 +122,9 @@ def test_a_grid_too_fine_for_the_runs_is_refused(extra):
     (problem,) = err.value.problems
     assert problem.startswith("valves.intake.hydraulic.reaches = ") and "node updates" in problem
     assert "allowed <= 2e+08" in problem
+    # the record of the JSON entry point names the key too (fuzzer: its path was empty)
+    assert problem.path == "valves.intake.hydraulic.reaches" and problem.value == str(
+        parse_spec(text).valves["intake"].hydraulic.reaches)
 
 
 def test_the_sweep_is_the_single_runs_at_its_speeds(tmp_path):
@@ -252,3 +255,26 @@ def test_an_initial_pressure_that_lifts_the_valve_at_rest_is_refused():
     (problem,) = err.value.problems
     assert "initial_pressure_MPa = 0.7" in problem and "0.6093 MPa" in problem and "hydraulic" in problem
     parse_spec(with_section(SECTION + "initial_pressure_MPa = 0.6\n"))
+
+
+def test_a_drive_that_does_not_open_the_valve_is_a_failure():
+    """Fuzzer: a return spring of 1e6 N/mm held the valve shut (0.1 mm of the rigid 6.4 mm) and no check failed.
+    Hand bound: the pressure cannot exceed the whole column compressed by the plunger's stroke, p0 + K A_p h_cam / V
+    (a rigid pipe wall, no leak: both only lower it), twice that for a wave reflected at the closed end; the valve
+    then lifts at most 2 p A_a / k, below 5 % of the rigid lift."""
+    text = with_section(SECTION.replace("spring_rate_N_per_mm = 40.0", "spring_rate_N_per_mm = 1000000.0"))
+    results = run(parse_spec(text))
+    law = results.valves["intake"].cam.law
+    cam_lift = float(law.lift(np.array([0.0]))[0])                       # m, at the nose
+    a_p, a_a = math.pi / 4 * 0.020 ** 2, math.pi / 4 * 0.025 ** 2            # m2
+    volume = 5e-6 + 5e-6 + math.pi / 4 * 0.006 ** 2 * 0.5                    # m3: pump, actuator, pipe
+    pressure = 0.3e6 + 1.5e9 * a_p * cam_lift / volume                       # Pa: p0 0.3 MPa, K 1.5 GPa (defaults)
+    bound = 2 * pressure * a_a / 1e9                                         # m: k = 1e6 N/mm = 1e9 N/m
+    rigid = 0.64 * cam_lift
+    assert bound < 0.05 * rigid
+    (c,) = [c for c in results.checks if c.code == "hydraulic.opening"]
+    assert not c.passed and c.severity == "failure" and c.value <= bound
+    assert c.low == pytest.approx(0.05 * rigid, rel=1e-3) and "does not open" in c.note
+    # the assumed drive opens its valve: the check passes
+    (c,) = [c for c in run(parse_spec(with_section(SECTION))).checks if c.code == "hydraulic.opening"]
+    assert c.passed

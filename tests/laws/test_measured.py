@@ -299,6 +299,22 @@ def test_a_table_that_is_no_lobe_is_refused(tmp_path, refused, name, change, mes
     assert f"error: valves.intake.cam: {tmp_path / 't.csv'}: {message}" in out, out
 
 
+@pytest.mark.parametrize("row_lift", [15.0, 2.0])
+def test_a_wrong_row_is_refused(tmp_path, refused, row_lift):
+    """Fuzzer: one row at the nose (120 crank deg) of 15 mm or 2 mm instead of 10 mm was taken in: the spline
+    followed it to a valve lift of 10.34 mm (above every other row) or 9.6 mm, and an undercut.  Hand figures: the
+    row's follower lift is row_lift / rocker_ratio 1.6, at 120 / 2 = 60 cam deg; the allowed distance is the larger
+    of 20 x the stated accuracy_mm 0.005 / 1.6 = 0.0625 mm (the table is exact) and 1 % of the largest follower lift
+    10 / 1.6 = 6.25 mm, 0.0625 mm."""
+    angle, lift = _kurz_rows()
+    _write_table(tmp_path / "t.csv", angle, np.where(angle == 120.0, row_lift, lift))
+    out = refused(_spec_text("t.csv"))
+    assert (f"error: valves.intake.cam: {tmp_path / 't.csv'}: the row of {row_lift / 1.6:.4g} mm follower lift at 60 "
+            "cam deg (crank deg from the gas-exchange TDC / 2) lies ") in out, out
+    assert ("allowed up to 0.0625 mm (20 x the larger of accuracy_mm and the rows' scatter, at least 1 % of the "
+            "other rows' largest lift)") in out, out
+
+
 @pytest.mark.parametrize("angle,unit,message", [
     (np.linspace(-185.0, 185.0, 371), "cam", "angle_deg runs from -185 to 185 cam deg (370); a table covers at most "
                                              "one camshaft revolution, 360 cam deg"),

@@ -11,9 +11,10 @@ The valve opens against the cylinder pressure on its head when the engine's cycl
 section's indicator diagram or Wiebe cycle, :class:`CylinderPressure`): the force (p_cyl - p_port) A_head holds
 it on its seat, at the crank angle nose + camshaft angle x 2 (four-stroke); the stage reports what that force
 costs (the opening delay, the lift and the pressure peak against the same drive without it).  The valve's travel
-ends at a stop (the rigid drive's largest lift plus a margin): a valve that reaches it (over-travel) or that is not
-back on its seat when the plunger is about to lift again (not closed before the next opening) is a failure at any
-speed of the sweep up to the over-speed, as is a fill (supply) pressure that lifts the valve off its seat.
+ends at a stop (the rigid drive's largest lift plus a margin): a valve that does not open (lifts less than 5 % of
+the rigid drive's lift), that reaches the stop (over-travel) or that is not back on its seat when the plunger is
+about to lift again (not closed before the next opening) is a failure at any speed of the sweep up to the
+over-speed, as is a fill (supply) pressure that lifts the valve off its seat.
 """
 
 from dataclasses import dataclass, field, replace
@@ -28,6 +29,7 @@ from ..dynamics.sweep import BOUNCE_TOLERANCE
 from ..flow import circle_area
 from ..hydraulic_actuation import (Actuator, DriveResult, Fluid, HydraulicDrive, Pipe, Pump, SpeedSweep, Valve, simulate,
                          speed_sweep)
+from ..specification.messages import Problem
 from ..units import DEG, MM, cam_per_crank, rpm_to_rad_s, to_display
 from .dynamics import SEATING_VELOCITY_MAX, finite_or_none
 from .results import quantity, shown, shown_value
@@ -260,8 +262,8 @@ def hydraulic_stage(valve, law, engine, gas, name, nose, cylinder=None) -> tuple
     Raises
     ------
     ValueError
-        The grid and the speeds ask for more than :data:`MAX_NODE_STEPS` node updates (the message starts with the
-        key ``reaches``).
+        The grid and the speeds ask for more than :data:`MAX_NODE_STEPS` node updates (its
+        :class:`~valvetrain.specification.messages.Problem` names the key ``reaches``).
 
     Notes
     -----
@@ -269,7 +271,8 @@ def hydraulic_stage(valve, law, engine, gas, name, nose, cylinder=None) -> tuple
     (four-stroke), towards the seat; the pressure of an open valve's head is taken as that of the cylinder (no
     flow forces).  The stop lies at the rigid drive's largest lift plus ``stop_margin_mm`` (default
     :data:`STOP_MARGIN` of that lift).  Failures, at the simulated speed and every swept speed up to the over-speed:
-    the valve reaches its stop; the valve is more than the bounce tolerance (1 um) above its seat at the end of the
+    the valve's largest lift below :data:`DELAY_LEVEL` of the rigid drive's (it does not open); the valve reaches its
+    stop; the valve is more than the bounce tolerance (1 um) above its seat at the end of the
     revolution, where the plunger is about to lift again; a fill pressure above :func:`lift_off_pressure`.
 
     References
@@ -289,10 +292,10 @@ def hydraulic_stage(valve, law, engine, gas, name, nose, cylinder=None) -> tuple
     revolutions = np.concatenate([speeds, [speed] * (1 if cylinder is None else 2)]) * to_cam
     work = float(np.sum(2.0 * math.pi / revolutions)) / drive.time_step * (drive.pipe.reaches + 1)
     if work > MAX_NODE_STEPS:
-        raise ValueError(f"reaches = {drive.pipe.reaches}: the simulation and the {speeds.size} speeds of the sweep "
-                         f"take {work:.3g} node updates of the pipe grid (time step {drive.time_step * 1e6:.3g} us); "
-                         f"allowed <= {MAX_NODE_STEPS:.0e}: use fewer reaches, a longer pipe, fewer speeds or higher "
-                         "ones")
+        raise ValueError(Problem(
+            "reaches", f"the simulation and the {speeds.size} speeds of the sweep take {work:.3g} node updates of the "
+            f"pipe grid (time step {drive.time_step * 1e6:.3g} us); allowed <= {MAX_NODE_STEPS:.0e}: use fewer "
+            "reaches, a longer pipe, fewer speeds or higher ones", f"{drive.pipe.reaches}"))
     diameter, port = head_load(valve, gas)
     if cylinder is None:
         force = None
@@ -351,17 +354,25 @@ def _gas_record(r, free, drive, cylinder, diameter, port, nose, strokes):
 
 
 def _failure_checks(r, sw, speed, speeds, engine, drive, hydraulic):
-    """The drive's failures at the simulated speed and the swept speeds up to the over-speed: over-travel (the
-    valve reaches its stop), a valve not closed before its next opening, a fill pressure that lifts the valve."""
+    """The drive's failures at the simulated speed and the swept speeds up to the over-speed: a valve that does not
+    open (its largest lift below :data:`DELAY_LEVEL` of the rigid drive's, where the delays are measured), over-travel
+    (the valve reaches its stop), a valve not closed before its next opening, a fill pressure that lifts the valve."""
     rpm = rpm_to_rad_s(1.0)
     judged = speeds <= engine.over_speed_ratio * engine.rated_speed * (1.0 + 1e-9)
     at = np.append(speeds[judged], speed)
     lift = np.append(sw.valve_lift[judged], r.valve_lift.max())
     left = np.append(sw.residual_lift[judged], r.residual_lift)
-    k, m = int(np.argmax(lift)), int(np.argmax(left))
+    k, m, n = int(np.argmax(lift)), int(np.argmax(left)), int(np.argmin(lift))
     stop = drive.valve.stop
     reached = lift[k] >= stop
+    opening = DELAY_LEVEL * float(r.rigid_lift.max())
     found = [
+        check("hydraulic.opening", lift[n], low=opening, unit="mm", severity="failure",
+              source=f"{FAILURE_SOURCE}; {DELAY_LEVEL * 100:g} % of the rigid lift, the level of the delays "
+                     "(this package's)",
+              note=(f"at {at[n] / rpm:.0f} rpm the drive does not open the valve: it lifts {lift[n] / MM:.4g} mm "
+                    f"of the rigid drive's {opening / DELAY_LEVEL / MM:.4g} mm (the liquid column gives way); the "
+                    "opening delay is not defined" if lift[n] < opening else f"least at {at[n] / rpm:.0f} rpm")),
         check("hydraulic.max_lift", lift[k], high=stop, unit="mm",
               severity="failure", source=FAILURE_SOURCE,
               note=(f"the valve reaches its stop at {at[k] / rpm:.0f} rpm: it travels further than its stroke"

@@ -758,8 +758,7 @@ def design_valve(name, valve, engine, gas, output, law=None, progress=None, cyli
     try:
         cam = law_stage(valve, engine, law)
     except ValueError as exc:
-        found = exc.args[0] if exc.args and isinstance(exc.args[0], Problem) else Problem("", str(exc))
-        raise SpecError([found.within(at)]) from None
+        raise SpecError([_stage_problem(exc, at)]) from None
     flow_result = flow_stage(cam, valve, engine)
     profile = profile_stage(cam, valve, output)
     try:
@@ -798,12 +797,19 @@ def design_valve(name, valve, engine, gas, output, law=None, progress=None, cyli
         try:
             grinding, grinding_found = grinding_stage(valve.grinding, cam, name, output.export_step)
         except ValueError as exc:
-            raise SpecError([f"{at}.grinding.{exc}"]) from None
+            raise SpecError([_stage_problem(exc, f"{at}.grinding")]) from None
         found += grinding_found
     design = ValveDesign(name, valve.kind, valve.count, cam, flow_result, profile, clearance, records, drive,
                          tuple(c.of_valve(name) for c in found), dynamics, grinding, lubrication=lubrication,
                          lash_adjuster=adjuster)
     return with_hydraulic(design, valve, engine, gas, cylinder)
+
+
+def _stage_problem(exc, prefix) -> Problem:
+    """The :class:`Problem` of a stage's ``ValueError`` under the key ``prefix`` (``valves.NAME`` or a section of
+    it): the stage's own :class:`Problem` (its key, value and message) where it raised one, else its text."""
+    found = exc.args[0] if exc.args and isinstance(exc.args[0], Problem) else Problem("", str(exc))
+    return found.within(prefix)
 
 
 def with_hydraulic(design, valve, engine, gas, cylinder=None) -> ValveDesign:
@@ -826,7 +832,7 @@ def with_hydraulic(design, valve, engine, gas, cylinder=None) -> ValveDesign:
     try:
         hydraulic, found = hydraulic_stage(valve, design.cam.law, engine, gas, design.name, design.cam.nose, cylinder)
     except ValueError as exc:
-        raise SpecError([f"valves.{design.name}.hydraulic.{exc}"]) from None
+        raise SpecError([_stage_problem(exc, f"valves.{design.name}.hydraulic")]) from None
     return replace(design, checks=design.checks + tuple(c.of_valve(design.name) for c in found), hydraulic=hydraulic)
 
 

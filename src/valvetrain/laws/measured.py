@@ -32,6 +32,17 @@ every 10 cam deg scatters by about 1.6 % of its lift in third differences (a 10 
 derivative of about 1.6e-4 mm/deg^3 times 10^3 deg^3); a measurement scatters by hundredths of a per cent; a step
 or a flat top, by tens of per cent: no lobe to fit."""
 
+ROW_OFF_FIT = 20.0
+"""Farthest a row may lie from the fit, in measurement accuracies (the larger of the accuracy and the rows' scatter,
+:func:`noise_level`), unless within :data:`ROW_OFF_LIFT` of the lift: the fits follow the rows to about one accuracy
+(RMS), the noise of a few hundred rows reaches about 3; a row further off is a wrong row (a typing error, a spike of
+the gauge), which the fit would follow partly, above or below the lobe the other rows measure."""
+
+ROW_OFF_LIFT = 0.01
+"""Distance from the fit that a row may have whatever its accuracy, a share of the other rows' largest lift: the
+agreement asked of ``max_lift_mm`` with a table (a smoothing fit of an exact table misses the foot of the lobe by
+a few accuracies when the accuracy is far below the lift's)."""
+
 MAX_LIFT_MM = 500.0
 """Largest lift a table may hold [mm], the bound of max_lift_mm: beyond it the table is not in millimetres."""
 
@@ -534,7 +545,8 @@ class TableLaw(RampedLaw):
     ------
     ValueError
         For ``fit = "harmonic"`` when the fit leaves the band [-3 accuracy, largest lift + 3 accuracy] between
-        the rows (the message suggests the spline), and for a spline that cannot be fitted.
+        the rows (the message suggests the spline), for a spline that cannot be fitted, and for a row further from
+        the fit than :data:`ROW_OFF_FIT` accuracies and :data:`ROW_OFF_LIFT` of the lift (a wrong row).
     """
 
     name = "table"
@@ -578,7 +590,13 @@ class TableLaw(RampedLaw):
         fit = self.fit
         # between the rows the fit used stays within the table's range and reaches its top, as far as it departs
         # from the rows, the noise of the measurement and the interpolation error of the step allow
-        resid = np.abs(self.fitted(x - self.centre)[0] - y).max()
+        off = self.fitted(x - self.centre)[0] - y
+        worst = int(np.argmax(np.abs(off)))
+        most = max(ROW_OFF_FIT * max(self.accuracy, scatter), ROW_OFF_LIFT * np.delete(y, worst).max())
+        if abs(off[worst]) > most:
+            raise LawError("row_off_fit", off=abs(off[worst]), fit=fit, angle=x[worst], lift=y[worst], most=most,
+                           times=ROW_OFF_FIT, share=ROW_OFF_LIFT)
+        resid = abs(off[worst])
         noise = BASE_CIRCLE_ACCURACIES * max(self.accuracy, scatter)
         tol = noise + resid
         swing = self.fitted(np.linspace(*window, 8001))[0]
