@@ -178,6 +178,32 @@ def test_design_without_the_sweeps_and_with_them():
     assert error["path"] == "valves.intake.dynamics.damping_ratio"
 
 
+def test_memo_designs_again_only_the_valves_whose_inputs_changed(monkeypatch):
+    import valvetrain.design as design
+    from valvetrain.specification import example_text, set_keys
+
+    designed = []
+    original = design.design_valve
+    monkeypatch.setattr(design, "design_valve", lambda name, *a, **k: designed.append(name) or original(name, *a, **k))
+    document = tomllib.loads(example_text())
+    memo = {}
+    api.design(document, dynamics=False, diagnose=False, memo=memo)
+    assert designed == ["intake", "exhaust"]
+    # the intake's lift edited: the exhaust's design is the one kept
+    designed.clear()
+    edited = set_keys(document, {"valves.intake.max_lift_mm": 9.5})
+    out = api.design(edited, dynamics=False, diagnose=False, memo=memo)
+    assert designed == ["intake"]
+    # the independent route: every valve designed afresh, without the memo
+    _close(out["results"], api.design(edited, dynamics=False, diagnose=False)["results"])
+    # the nose lifts the valve by max_lift_mm of the specification
+    assert max(out["series"]["intake"]["valve_lift_mm"]) == pytest.approx(9.5, rel=1e-9)
+    # the engine's speed edited: it is an input of every valve
+    designed.clear()
+    api.design(set_keys(edited, {"engine.rated_speed_rpm": 6000}), dynamics=False, diagnose=False, memo=memo)
+    assert designed == ["intake", "exhaust"]
+
+
 @pytest.mark.parametrize("name", ["two-stroke-ports", "v8-crank"])
 def test_design_without_the_sweeps_of_a_file_with_no_valves(name):
     """Fuzzer: a specification without [valves] (a two-stroke's ports, a crank alone) designed without the sweeps

@@ -122,7 +122,7 @@ def without_dynamics(spec, parsed) -> dict[str, Any]:
     return out
 
 
-def design(spec, dynamics=True, sweeps=False, progress=None, diagnose=True) -> dict[str, Any]:
+def design(spec, dynamics=True, sweeps=False, progress=None, diagnose=True, memo=None) -> dict[str, Any]:
     """Design a specification given as a dict: what ``valvetrain run`` computes, as plain data.
 
     Parameters
@@ -142,6 +142,9 @@ def design(spec, dynamics=True, sweeps=False, progress=None, diagnose=True) -> d
     diagnose : bool
         False: springs that do not pass are not diagnosed (:func:`valvetrain.design.run`; their checks fail the
         same, without the diagnosis and its remedies, each a new spring search: about a second).
+    memo : dict, optional
+        The valves' designs kept between calls (:func:`valvetrain.design.run`): an unchanged valve is not designed
+        again.
 
     Returns
     -------
@@ -159,7 +162,7 @@ def design(spec, dynamics=True, sweeps=False, progress=None, diagnose=True) -> d
     if parsed is None:
         return {"ok": False, "errors": errors, "results": None, "series": None, **extra}
     try:
-        results = run(parsed, progress=progress, diagnose=diagnose)
+        results = run(parsed, progress=progress, diagnose=diagnose, memo=memo)
     except SpecError as err:
         return {"ok": False, "errors": error_records(err), "results": None, "series": None, **extra}
     if sweeps:

@@ -11,7 +11,7 @@ pytest.importorskip("bokeh")
 
 from bokeh.document import Document  # noqa: E402
 
-from valvetrain.web.app import SEVERITY_COLOURS, Designer, kept_range  # noqa: E402
+from valvetrain.web.app import SEVERITY_COLOURS, Designer, _now, kept_range, thinned  # noqa: E402
 from valvetrain.web.session import Session, form  # noqa: E402
 
 from appendix import appendix_text  # noqa: E402
@@ -85,7 +85,6 @@ def test_sweep_starts_when_the_page_has_drawn_the_newest_kinematics():
 
 
 def test_checks_of_the_sweeps_are_pending_until_the_whole_design_comes():
-    import time
 
     d = Designer(Document(), Session.start())
     # the built-in example: both valves with a [dynamics] section, two checks each (seating velocity, jump speed)
@@ -93,7 +92,7 @@ def test_checks_of_the_sweeps_are_pending_until_the_whole_design_comes():
         return [k for k in d.checks.data["key"] if "dynamic seating velocity" in k or "(jump)" in k]
 
     assert dynamic() == []
-    d.draw_sweep(d.generation, Session.settle(d.session.good_document), time.time())
+    d.draw_sweep(d.generation, Session.settle(d.session.good_document), _now())
     found = dynamic()
     assert len(found) == 4
     f = next(f for _, group in form(d.session.document) for f in group if f.path == "engine.rated_speed_rpm")
@@ -103,7 +102,7 @@ def test_checks_of_the_sweeps_are_pending_until_the_whole_design_comes():
     assert len(rows) == 4
     assert {data["value"][i] for i in rows} == {"…"}
     assert {data["colour"][i] for i in rows} == {SEVERITY_COLOURS["pending"]}
-    d.draw_sweep(d.generation, Session.settle(d.session.good_document), time.time())
+    d.draw_sweep(d.generation, Session.settle(d.session.good_document), _now())
     assert "…" not in d.checks.data["value"]
 
 
@@ -130,10 +129,8 @@ def test_a_drag_sends_only_the_sources_that_change():
     # the page gets a message per changed source (and paints its plots again): after the sweep panel is drawn, a drag
     # of the nose changes the curves and the handles, never the sweep panel of the last whole design (its new sweep
     # comes later) nor the heel circle (the same base circle); counted on the document's change events
-    import time
-
     d = Designer(Document(), Session.start())
-    d.draw_sweep(d.generation, Session.settle(d.session.good_document), time.time())
+    d.draw_sweep(d.generation, Session.settle(d.session.good_document), _now())
     changed = []
     d.doc.on_change(lambda event: changed.append(getattr(event, "model", None)))
     lift = dict(d.handles["lift"].data)
@@ -147,3 +144,52 @@ def test_a_drag_sends_only_the_sources_that_change():
     lift = dict(d.handles["lift"].data)
     d.on_handles("lift", "data", lift, {**lift, "y": [lift["y"][0] - 0.1]})
     assert d.curves in changed and d.base_curves not in changed
+
+
+def test_thinned_curve_keeps_what_a_plot_shows():
+    # sin x on [0, 2 pi] in 2001 samples with one sample raised by 5 (a spike a plot must show): every-k-th sampling
+    # drops it; the thinned curve keeps it, the ends, and the extremes of sin x (1 at pi/2, -1 at 3 pi/2, samples
+    # pi/1000 apart: within 1 - cos(pi/2000) = 1.2e-6 of the closed form's)
+    x = np.linspace(0.0, 2.0 * np.pi, 2001)
+    y = np.sin(x)
+    y[777] += 5.0
+    tx, ty = thinned(x, y, buckets=100)
+    assert len(tx) <= 202 and np.all(np.diff(tx) > 0.0)
+    assert (tx[0], ty[0], tx[-1], ty[-1]) == (x[0], y[0], x[-1], y[-1])
+    assert (x[777], y[777]) in set(zip(tx, ty, strict=True))
+    spikeless = np.delete(np.arange(len(tx)), np.flatnonzero(tx == x[777]))
+    assert ty[spikeless].max() == pytest.approx(1.0, abs=1.3e-6)
+    assert ty.min() == pytest.approx(-1.0, abs=1.3e-6)
+    # every sample between two kept points lies within their span of a bucket: no sample above the kept maximum or
+    # below the kept minimum of its bucket (the line covers the pixels the whole curve covers)
+    bucket = np.minimum((x / (2.0 * np.pi) * 100).astype(int), 99)
+    kept_bucket = np.minimum((tx / (2.0 * np.pi) * 100).astype(int), 99)
+    for b in range(100):
+        assert y[bucket == b].max() == ty[kept_bucket == b].max()
+        assert y[bucket == b].min() == ty[kept_bucket == b].min()
+    # a short curve and one with a gap as they are
+    assert thinned(x[:150], y[:150], buckets=100)[0].size == 150
+    gap = y.copy()
+    gap[10] = np.nan
+    assert thinned(x, gap, buckets=100)[1].size == 2001
+
+
+def test_curves_sent_to_the_page_are_thinned_to_what_the_plots_show():
+    d = Designer(Document(), Session.start())
+    series = d.session.good["series"]["intake"]
+    curves = d.curves.data
+    # the spring's required force: about 2000 points against the lift, sent with at most 402; its largest force
+    # (the spring plot's range) kept exactly (to 32-bit floats)
+    assert len(series["required_force_N"]) > 1000
+    spring = curves["spring_y"][np.isfinite(curves["spring_y"])]
+    assert spring.size <= 402
+    assert spring.max() == pytest.approx(max(series["required_force_N"]), rel=1e-6)
+    # every column as long as the longest curve sent, 32-bit
+    assert {len(v) for v in curves.values()} == {max(len(series["cam_deg"]), spring.size,
+                                                     np.isfinite(curves["contour_x"]).sum())}
+    assert {v.dtype for v in curves.values()} == {np.dtype(np.float32)}
+    # the contour closed, its points on the design's contour
+    cx, cy = (curves[k][np.isfinite(curves[k])] for k in ("contour_x", "contour_y"))
+    assert (cx[0], cy[0]) == (cx[-1], cy[-1])
+    assert set(zip(cx, cy, strict=True)) <= set(zip(np.float32(series["contour_x_mm"]), np.float32(series["contour_y_mm"]),
+                                                    strict=True))

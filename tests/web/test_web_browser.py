@@ -168,6 +168,43 @@ def test_page_loads_without_errors_and_stays_on_this_machine(designer):
     assert outside == []
 
 
+def test_a_style_sheet_set_to_the_text_it_holds_is_left_as_it_is(designer):
+    # Bokeh sets each renderer's position in a style sheet of its own at each paint, the same text mostly; the browser
+    # took each setting for a change of the styles (a mutation of the sheet's text), and the next look-up of a colour
+    # in the styles worked all of them out again: the page keeps a sheet whose text is the same
+    mutations = designer.evaluate("""async () => {
+        const sheet = new (Bokeh.require("core/dom").InlineStyleSheet)(":host { left: 1px; }");
+        let seen = 0;
+        new MutationObserver((m) => { seen += m.length; }).observe(
+            sheet.el, {childList: true, characterData: true, subtree: true});
+        sheet.replace(":host { left: 1px; }");
+        await new Promise((resolve) => setTimeout(resolve, 0));
+        const same = seen;
+        sheet.replace(":host { left: 2px; }");
+        await new Promise((resolve) => setTimeout(resolve, 0));
+        return [same, seen];
+    }""")
+    assert mutations == [0, 1]
+
+
+def test_a_redraw_comes_to_the_page_in_one_message(designer):
+    # Bokeh's server sent a message per changed model, four or more frames of the web socket each: the curves (the
+    # velocity at the rated speed), the checks and the stamp of a redraw come in one (the stamp is its last change)
+    contents = []
+    designer.on("websocket", lambda ws: ws.on("framereceived", lambda frame: contents.append(frame)))
+    designer.reload()
+    opened(designer, designer.url)
+    ids = designer.evaluate("""() => ['curves', 'checks', 'kinematic-stamp'].map((name) => {
+        const m = Bokeh.documents[0].get_model_by_name(name);
+        return (m.source || m).id;
+    })""")
+    done = redrawn_count(designer)
+    fill(designer, "rated_speed_rpm", "6000")
+    wait_redrawn(designer, done)
+    stamped = [c for c in contents if isinstance(c, str) and f'"id":"{ids[-1]}"' in c and '"events"' in c]
+    assert stamped and all(f'"id":"{i}"' in stamped[-1] for i in ids)
+
+
 def test_rated_speed_flips_a_check(designer):
     # V' = c_p (D / d)^2 / i with c_p = S n / 30: at 7000 rpm 18 m/s x (80 / 36.8)^2 = 85.07 m/s > 80 (fails); at
     # 6000 rpm 15.43 m/s x 4.726 = 72.9 m/s, inside 50...80 (Valve-train practical works, work 1)

@@ -155,7 +155,7 @@ class DesignResults:
         return out
 
 
-def run(spec, laws=None, progress=None, headlines_only=False, diagnose=True) -> DesignResults:
+def run(spec, laws=None, progress=None, headlines_only=False, diagnose=True, memo=None) -> DesignResults:
     """Run the whole design of a validated specification.
 
     Parameters
@@ -176,6 +176,10 @@ def run(spec, laws=None, progress=None, headlines_only=False, diagnose=True) -> 
     diagnose : bool
         Where no spring passes, diagnose why (:func:`valvetrain.springs.diagnose`, about a second); False leaves
         the diagnosis out of the springs' failing checks.
+    memo : dict, optional
+        The valves' designs of an earlier run, kept by the caller between runs (the designer's tab): a valve whose
+        inputs (its SI view, the engine's, ``[gas]``, ``[output]`` and the options) equal those of the design kept
+        under its name takes that design instead of being designed again; each valve's newest design is kept.
 
     Returns
     -------
@@ -203,8 +207,15 @@ def run(spec, laws=None, progress=None, headlines_only=False, diagnose=True) -> 
             waiting[name], valve = valve, replace(valve, hydraulic=None)   # opens against the cycle: after the crank
         try:
             tick = None if progress is None else (lambda done, total, name=name: progress(name, done, total))
-            valves[name] = design_valve(name, valve, engine, gas, output, (laws or {}).get(name), tick,
-                                        headlines_only=headlines_only, diagnose=diagnose)
+            inputs = (valve, engine, gas, output, (laws or {}).get(name), headlines_only, diagnose)
+            kept = (memo or {}).get(name)
+            if kept is not None and progress is None and _same(kept[0], inputs):
+                valves[name] = kept[1]
+            else:
+                valves[name] = design_valve(name, *inputs[:5], tick, headlines_only=headlines_only,
+                                            diagnose=diagnose)
+                if memo is not None:
+                    memo[name] = (inputs, valves[name])
         except SpecError as err:
             problems += err.problems
     if problems:
@@ -319,6 +330,14 @@ def engine_checks(spec) -> list[Check]:
                            min(LAMBDA_RANGE[1] * k, 1.0), source=f"a factor of {k:g} beyond Power units manual (n.d.), "
                            "eq. (1.1)", severity="failure").named("engine"))
     return found
+
+
+def _same(a, b):
+    """Whether two tuples of SI views are equal (views holding arrays, a lift table's, are not compared: False)."""
+    try:
+        return bool(a == b)
+    except ValueError:
+        return False
 
 
 def _valve_view(name, valve, spec):

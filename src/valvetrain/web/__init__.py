@@ -24,6 +24,30 @@ def make_document(text, source_dir) -> Callable[[Any], None]:
     return build
 
 
+def one_message(connection, event) -> Any:
+    """Bokeh's ``ServerConnection.send_patch_document`` sending the changes of a callback to the page in one message:
+    each change is queued and the first of the writes that the server awaits after the callback sends all that
+    are queued (the rest find the queue empty).
+
+    Notes
+    -----
+    Bokeh sends a message per change (a redraw of the designer changes about ten models: the curves, the handles,
+    the checks, the card, the stamp ...), each as four or more frames of the web socket, each waking the page; the
+    page applies one message's changes in order, as it did the messages'.  The values are those the models hold
+    when the message is made, after the callback: its last, as the last message would have brought.
+    """
+    queue = connection.__dict__.setdefault("_queued_changes", [])
+    queue.append(event)
+
+    async def send():
+        if queue:
+            events = list(queue)
+            queue.clear()
+            await connection._socket.send_message(connection.protocol.create("PATCH-DOC", events))
+
+    return send()
+
+
 def server(text=None, source_dir=None, host=LOOPBACK, port=5006) -> Any:
     """A Bokeh server of the designer (not started), on TOML text (the built-in example without it).
 
@@ -34,11 +58,13 @@ def server(text=None, source_dir=None, host=LOOPBACK, port=5006) -> Any:
     """
     from bokeh.application import Application
     from bokeh.application.handlers.function import FunctionHandler
+    from bokeh.server.connection import ServerConnection
     from bokeh.server.server import Server
 
     from .session import Session
 
     Session.start(text, source_dir)
+    ServerConnection.send_patch_document = one_message
     origins = [f"{name}:{port}" for name in ("127.0.0.1", "localhost")] + ([f"{host}:{port}"] if host != LOOPBACK
                                                                            else [])
     return Server({"/": Application(FunctionHandler(make_document(text, source_dir)))}, address=host, port=port,

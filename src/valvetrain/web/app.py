@@ -91,6 +91,37 @@ def kept_range(start, end, low, high, room) -> tuple[float, float]:
     return low - pad, high + pad
 
 
+PLOT_BUCKETS = 200
+"""How many spans of its abscissa a long curve is thinned to for the page (:func:`thinned`, two points each): about
+half the width of a plot's frame in pixels (400 to 440 px), as many as it can show."""
+
+
+def thinned(x, y, buckets=PLOT_BUCKETS) -> tuple[np.ndarray, np.ndarray]:
+    """A curve y(x) of ascending x with no more points than a plot can show: in each of ``buckets`` equal spans of x
+    its lowest and its highest point, in the order of x, and its first and last point; a curve of no more than
+    2 buckets + 2 points, with a gap (NaN) or of no span, as it is.
+
+    Notes
+    -----
+    The line through the lowest and highest point of every span of about two pixels covers the pixels the whole
+    curve covers (the min-max decimation of time series for display); a curve sent to the page with fewer points
+    is sent and drawn faster (the spring's required force has about 2000, one per step of the camshaft angle).
+
+    References
+    ----------
+    U. Jugel, Z. Jerzak, G. Hackenbroich and V. Markl, M4: a visualization-oriented time series data aggregation,
+    Proceedings of the VLDB Endowment 7 (10) (2014), 797-808.
+    """
+    x, y = np.asarray(x, dtype=float), np.asarray(y, dtype=float)
+    if len(x) <= 2 * buckets + 2 or not (np.isfinite(x).all() and np.isfinite(y).all()) or x[-1] <= x[0]:
+        return x, y
+    span = np.minimum(((x - x[0]) / (x[-1] - x[0]) * buckets).astype(int), buckets - 1)
+    order = np.lexsort((y, span))                         # by span, and by y within it
+    ends = np.flatnonzero(np.diff(span[order])) + 1
+    keep = np.unique(np.concatenate([[0, len(x) - 1], order[np.r_[0, ends]], order[np.r_[ends - 1, len(x) - 1]]]))
+    return x[keep], y[keep]
+
+
 def per_degree(values, order, omega) -> np.ndarray:
     """A derivative of the lift at the rated speed (m/s, m/s², m/s³) in mm per camshaft degree to the ``order``
     (:func:`valvetrain.units.per_cam_degree`), from the series' list."""
@@ -114,7 +145,7 @@ requestAnimationFrame(() => requestAnimationFrame(() => {
     const data = cb_obj.data instanceof Map ? Object.fromEntries(cb_obj.data) : cb_obj.data;
     const release = performance.timeOrigin + window.vtRelease;
     window[key + 'Server'].push([data.began[0] - release, data.ended[0] - data.began[0],
-                                 performance.timeOrigin + now - data.ended[0]]);
+                                 performance.timeOrigin + now - data.ended[0], data.cpu[0]]);
   }
   window[key + 'Done'] = (window[key + 'Done'] || 0) + 1;
 }));
@@ -137,6 +168,24 @@ DRAWN_JS = """
 requestAnimationFrame(() => requestAnimationFrame(() => { drawn.data = {n: [stamp.data.n[0]]}; }));
 """
 
+SAME_STYLE_JS = """
+const dom = Bokeh.require("core/dom");
+const update = dom.InlineStyleSheet.prototype._update;
+if (!update.vtSameKept) {
+  dom.InlineStyleSheet.prototype._update = function (css) {
+    if (this.el.textContent !== css) {
+      update.call(this, css);
+    }
+  };
+  dom.InlineStyleSheet.prototype._update.vtSameKept = true;
+}
+"""
+"""Run once when the page is ready: a style sheet of the page's views set to the text it holds is left as it is.
+Bokeh sets the position of every renderer (axis, grid, glyph, title, toolbar) in its own style sheet at each paint,
+the same text mostly, and the browser takes each setting for a change of the styles: the next look-up of a colour
+in them (each renderer reads its colours from the styles) works all the page's styles out again, one to three times
+per renderer, about 60 times in a redraw (two thirds of the page's drawing of a redraw)."""
+
 DOWNLOAD_JS = """
 const blob = new Blob([div.text], {type: mime});
 const a = document.createElement('a');
@@ -152,9 +201,10 @@ SWEEP_WORKERS = ThreadPoolExecutor(max_workers=1, thread_name_prefix="valvetrain
 
 
 def _held(plots, stamp, key):
-    """A data source whose change pauses the drawing of ``plots`` in the page until ``stamp`` changes: a redraw's
-    changes come to the page one message each, and the page would paint a plot once for each that reaches it in
-    another frame; held, it paints each plot once, in the frame after the last."""
+    """A data source whose change pauses the drawing of ``plots`` in the page until ``stamp`` changes: the page would
+    paint a plot once for each of a redraw's changes that reaches it in another frame; held, it paints each plot
+    once, in the frame after the last (the server sends a callback's changes in one message,
+    :func:`valvetrain.web.one_message`, which the hold does not rely on)."""
     hold = ColumnDataSource({"n": [0]})
     hold.js_on_change("data", CustomJS(args={"plots": plots, "key": key}, code=PAUSE_JS))
     stamp.js_on_change("data", CustomJS(args={"key": key}, code=UNPAUSE_JS))
@@ -191,11 +241,18 @@ def _rows_follow(table):
     table.source.js_on_change("data", CustomJS(args={"table": table}, code="table.view.change.emit();"))
 
 
+def _now():
+    """The server's clocks when a change comes: ``time.time()`` and the process's processor time [s]."""
+    return time.time(), time.process_time()
+
+
 def _count(stamp, began):
     """One more redraw on a stamp's source (its change in the page stamps the time), with the server's times
-    ``began`` (``time.time()`` when the change came) and now, as ms since the epoch: the page, on the same clock,
-    parts its wait into the way up, the server and the way down."""
-    stamp.data = {"n": [stamp.data["n"][0] + 1], "began": [1e3 * began], "ended": [1e3 * time.time()]}
+    ``began`` (:func:`_now` when the change came) and now, as ms since the epoch: the page, on the same clock,
+    parts its wait into the way up, the server and the way down; and the processor time the server's process spent
+    in between [ms] (what the server costs on a loaded machine)."""
+    stamp.data = {"n": [stamp.data["n"][0] + 1], "began": [1e3 * began[0]], "ended": [1e3 * time.time()],
+                  "cpu": [1e3 * (time.process_time() - began[1])]}
 
 
 class Designer:
@@ -355,7 +412,8 @@ class Designer:
         self.figures["sweep_map"] = p
 
         # the stamps are data sources, not widgets: a widget's change lays the whole page out again (~100 ms)
-        self.kinematic_stamp = ColumnDataSource({"n": [0], "began": [0.0], "ended": [0.0]}, name="kinematic-stamp")
+        self.kinematic_stamp = ColumnDataSource({"n": [0], "began": [0.0], "ended": [0.0], "cpu": [0.0]},
+                                                name="kinematic-stamp")
         self.kinematic_hold = _held([self.figures[k] for k in PLOTS], self.kinematic_stamp, "vtPausedKinematics")
         self.kinematic_stamp.js_on_change("data", CustomJS(args={"key": "vtTimes"}, code=STAMP_JS))
         # the page says when it has drawn the kinematics: the sweep starts then, not to hold their drawing up
@@ -363,7 +421,8 @@ class Designer:
         self.drawn.on_change("data", self.on_drawn)
         self.kinematic_stamp.js_on_change("data", CustomJS(args={"stamp": self.kinematic_stamp, "drawn": self.drawn},
                                                            code=DRAWN_JS))
-        self.sweep_stamp = ColumnDataSource({"n": [0], "began": [0.0], "ended": [0.0]}, name="sweep-stamp")
+        self.sweep_stamp = ColumnDataSource({"n": [0], "began": [0.0], "ended": [0.0], "cpu": [0.0]},
+                                            name="sweep-stamp")
         self.sweep_hold = _held([self.figures[k] for k in ("sweep_force", "sweep_seating", "sweep_map")],
                                 self.sweep_stamp, "vtPausedSweep")
         self.sweep_stamp.js_on_change("data", CustomJS(args={"key": "vtSweepTimes"}, code=STAMP_JS))
@@ -378,6 +437,7 @@ class Designer:
         self.checks_title = Div(text="")
         self.doc.add_root(column(top, row(column(self.section_errors, self.spec_tabs), column(row(plots, column(self.card_title, self.card_table)),
                                  self.checks_title, self.table, sweep)), self.toml_text, self.report_text))
+        self.doc.js_on_event("document_ready", CustomJS(code=SAME_STYLE_JS))
         self.doc.add_root(self.kinematic_stamp)
         self.doc.add_root(self.sweep_stamp)
         self.doc.add_root(self.drawn)
@@ -475,14 +535,20 @@ class Designer:
 
     @staticmethod
     def _curves(series, omega=None) -> dict:
-        """The columns of a design's curves (:data:`CURVES`), NaN-padded to one length."""
+        """The columns of a design's curves (:data:`CURVES`), NaN-padded to one length, as 32-bit floats (7 digits:
+        more than a plot shows, half the bytes to send); the spring's required force thinned (:func:`thinned`) and
+        the contour to about as many points as the other curves (every k-th point, closed: 0.5 cam deg apart it has
+        twice as many as its 300 px plot can show)."""
         out = {key: _array(series[name]) for key, name in CURVES.items()}
         for name, key, _, order in KINEMATIC_PLOTS:
             out[name] = _array(series[key]) if omega is None or order == 0 else per_degree(series[key], order, omega)
-        out["contour_x"] = _array(series["contour_x_mm"] + series["contour_x_mm"][:1])
-        out["contour_y"] = _array(series["contour_y_mm"] + series["contour_y_mm"][:1])
+        out["spring_x"], out["spring_y"] = thinned(out["spring_x"], out["spring_y"])
+        step = -(-len(series["contour_x_mm"]) // (2 * PLOT_BUCKETS))
+        for axis in ("x", "y"):
+            contour = _array(series[f"contour_{axis}_mm"])
+            out[f"contour_{axis}"] = np.append(contour[::step], contour[0])
         n = max(len(v) for v in out.values())
-        return {k: np.pad(v, (0, n - len(v)), constant_values=np.nan) for k, v in out.items()}
+        return {k: np.pad(v, (0, n - len(v)), constant_values=np.nan).astype(np.float32) for k, v in out.items()}
 
     def _ranges(self, with_base):
         """Each fixed range of the plots kept or fitted to the curves of the design and the baseline
@@ -499,8 +565,8 @@ class Designer:
 
     def redraw(self, sweep=True, began=None) -> None:
         """Draw the good design (and the baseline), its checks, card and handles; start its speed sweep (``sweep``)
-        or draw the last one again.  ``began``: ``time.time()`` when the change came (default now)."""
-        began = time.time() if began is None else began
+        or draw the last one again.  ``began``: :func:`_now` when the change came (default now)."""
+        began = _now() if began is None else began
         _hold(self.kinematic_hold)
         try:
             s = self.session
@@ -573,7 +639,7 @@ class Designer:
                 raise Stale
 
         def work():
-            began = time.time()
+            began = _now()
             try:
                 result = self.session.settle(document, progress=progress)
             except Stale:
@@ -630,7 +696,7 @@ class Designer:
 
     # --- callbacks -------------------------------------------------------------------------------------------------
     def on_field(self, f, attr, old, new) -> None:
-        began = time.time()
+        began = _now()
         if self._syncing:
             return
         try:
@@ -644,7 +710,7 @@ class Designer:
         self.show_problems()
 
     def on_handles(self, plot, attr, old, new) -> None:
-        began = time.time()
+        began = _now()
         placed = getattr(self, "_placed", {}).get(plot, [])
         if len(new["x"]) != len(placed):      # a point added or removed: a table's points, else put them back
             keys = self.session.set_points(self.valve, new["x"], new["y"]) if self.draw_tools[plot].add else {}

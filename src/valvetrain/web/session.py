@@ -453,8 +453,8 @@ class Session:
 
     An edit is answered in two steps: :meth:`apply` designs without the speed sweeps of the ``[dynamics]``
     sections and without the diagnosis of springs that do not pass (``good``: the kinematics, springs and checks in
-    tens of ms); :meth:`settle` adds them (``full``: the checks of the whole design and the sweeps), in the
-    background, and :meth:`settled` keeps it."""
+    tens of ms; a valve the edit left as it was is not designed again: ``memo``); :meth:`settle` adds them (``full``:
+    the checks of the whole design and the sweeps), in the background, and :meth:`settled` keeps it."""
 
     document: dict
     good: dict = None
@@ -463,6 +463,7 @@ class Session:
     baseline: dict = None
     full: dict = None
     last_full: dict = None
+    memo: dict = field(default_factory=dict)
 
     @classmethod
     def start(cls, text=None, source_dir=None) -> "Session":
@@ -488,7 +489,7 @@ class Session:
         """Design ``document`` without its speed sweeps and spring diagnosis (:func:`valvetrain.api.design`,
         ``dynamics=False``, ``diagnose=False``; it is validated whole); keep it as the good design if it designs, else
         keep the last good one and the problems.  Returns True when it designed."""
-        result = api.design(without_nones(document), dynamics=False, diagnose=False)
+        result = api.design(without_nones(document), dynamics=False, diagnose=False, memo=self.memo)
         self.document = document
         self.problems = result["errors"]
         if result["ok"]:
