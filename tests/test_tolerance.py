@@ -253,14 +253,16 @@ def test_samples_have_the_full_designs_checks():
     """A sample's design simulates only the speeds that decide the dynamics headlines and loads (run with
     headlines_only): on the built-in example its jump speed and largest seating velocity equal the full sweep's, every
     check has the full design's verdict, and every margin is within 0.1 % of it (the strength checks read the cam
-    force at the speeds simulated)."""
+    force at the speeds simulated; the seating velocity check, the largest up to the rated speed, the speeds near
+    the coarse grid's largest there), with fewer than half the speeds simulated (81 and 89 of 200; 53 before the seating
+    velocity was graded below the rated speed)."""
     from valvetrain.design import run
     from valvetrain.specification import example_spec
 
     full, part = run(example_spec()), run(example_spec(), headlines_only=True)
     for name, v in full.valves.items():
         d, p = v.dynamics, part.valves[name].dynamics
-        assert len(p.per_speed.speed) < len(d.per_speed.speed) / 3
+        assert len(p.per_speed.speed) < 0.5 * len(d.per_speed.speed)
         assert (p.jump_speed, p.max_seating_velocity) == (d.jump_speed, d.max_seating_velocity)
     assert [(c.code, c.valve, c.passed) for c in part.checks] == [(c.code, c.valve, c.passed) for c in full.checks]
     for a, b in zip(full.checks, part.checks, strict=True):

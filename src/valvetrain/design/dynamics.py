@@ -718,8 +718,8 @@ def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, 
         lubrication characteristic and the drive torque.
     load_range : (float, float), optional
         The engine speeds [rad/s] whose cam force loads the parts (the strength stage's range).  Given, a one-mass
-        train simulates only the speeds of its range that decide the jump speed, the largest seating velocity and
-        the largest cam force in ``load_range`` (:func:`~valvetrain.dynamics.sweep.headline_sweep`; a tolerance
+        train simulates only the speeds of its range that decide the jump speed, the largest seating velocity (of
+        the range and up to the rated speed) and the largest cam force in ``load_range`` (:func:`~valvetrain.dynamics.sweep.headline_sweep`; a tolerance
         study's samples): the per-speed table and the maps then have those speeds alone, and ``progress`` is not
         called.  A
         multi-mass train is swept in full: with coil surge its separations and forces come and go from one speed to
@@ -757,7 +757,8 @@ def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, 
                                  "allow_large_sweep = true to run it")])
     if load_range is not None and dyn.model == "1dof":
         result = headline_sweep(law, train, speeds * to_cam, revs, step_deg,
-                                load_range=tuple(s * to_cam for s in load_range))
+                                load_range=tuple(s * to_cam for s in load_range),
+                                seating_top=engine.rated_speed * to_cam)
         speeds = result.cam_speeds / to_cam
     else:
         if progress is not None:

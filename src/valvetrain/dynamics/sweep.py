@@ -735,31 +735,41 @@ def seating_events(result) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     return events.jumped, events.min_contact_force, np.abs(events.seating_velocity)
 
 
+SEATING_NEAR = 0.95
+"""The coarse speeds up to the rated one whose seating velocity is at least this share of their largest are refined
+by :func:`headline_sweep`."""
+
+
 def headline_sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, bounce_tolerance=BOUNCE_TOLERANCE,
-                   load_range=(0.0, np.inf), stride=HEADLINE_STRIDE) -> SweepResult:
+                   load_range=(0.0, np.inf), stride=HEADLINE_STRIDE, seating_top=np.inf) -> SweepResult:
     """The speeds of a sweep that decide its jump speed, its largest seating velocity and its largest loads, without
     the others.
 
     Parameters are those of :func:`sweep`; ``load_range`` is the speed range [rad/s camshaft] whose cam force loads
-    the parts (the strength stage's), ``stride`` spaces the coarse grid.  The result holds the speeds simulated, a
+    the parts (the strength stage's), ``stride`` spaces the coarse grid, ``seating_top`` is the highest speed
+    [rad/s camshaft] of the seating velocity graded (the rated speed).  The result holds the speeds simulated, a
     subset of ``cam_speeds``, by ascending speed.
 
     Notes
     -----
     Simulated, in two sweeps:
 
-    1. the coarse grid: every ``stride``-th speed, the lowest and the highest, and the first and the last speed
-       inside ``load_range``;
+    1. the coarse grid: every ``stride``-th speed, the lowest and the highest, the first and the last speed
+       inside ``load_range``, and the last speed up to ``seating_top``;
     2. the speeds between the last coarse speed without a separation and the first with one, and the two below
        them: the first speed of the full grid with a separation and the speeds :func:`zero_crossing` fits below it;
        the same below the first coarse speed whose contact force falls to zero while the cam lifts (a separation
        that comes and goes with the speed starts near it); the speeds within ``stride`` of the coarse speed with the
-       largest seating velocity, and of the coarse speed inside ``load_range`` with the largest contact force.
+       largest seating velocity, of those up to ``seating_top`` whose seating velocity is within
+       :data:`SEATING_NEAR` of their largest (the seating velocity has a peak at each harmonic of the cam the train
+       meets: the built-in example's exhaust peaks at 6161 rpm between two coarse speeds lower than one 600 rpm
+       above), and of the coarse speed inside ``load_range`` with the largest contact force.
 
     So :meth:`SweepResult.headline` gives the full sweep's jump speed unless a separation starts and ends between two
     coarse speeds below the first coarse speed that separates or loses its contact force; the largest seating
-    velocity and the largest contact force (in ``load_range``) are the full sweep's where they lie within ``stride``
-    speeds of the coarse grid's largest (or at an end of ``load_range``).  The sweep's other headlines (the bounce
+    velocity (of all the speeds, and of those up to ``seating_top``) and the largest contact force (in
+    ``load_range``) are the full sweep's where they lie within ``stride`` speeds of the coarse grid's largest (or at
+    an end of ``load_range``).  The sweep's other headlines (the bounce
     onset, the coil clash) and its maps have the simulated speeds only.
     """
     speeds = np.atleast_1d(np.asarray(cam_speeds, dtype=float))
@@ -777,10 +787,14 @@ def headline_sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, bounce_t
         return np.flatnonzero(done), merged(parts)
 
     ends = np.flatnonzero(inside)[[0, -1]] if inside.any() else []
-    index, result = simulated(np.concatenate([np.arange(0, n, stride), [n - 1], ends]))
+    graded = speeds <= seating_top * (1.0 + 1e-12)
+    index, result = simulated(np.concatenate([np.arange(0, n, stride), [n - 1], ends,
+                                              np.flatnonzero(graded)[-1:]]))
     jumped, force, seat = seating_events(result)
+    below = np.where(graded[index], seat, np.nan)
+    near = index[below >= SEATING_NEAR * np.nanmax(below)] if np.isfinite(below).any() else []
     more = [np.arange(c - stride + 1, c + stride) for c in (
-        index[np.nanargmax(seat)] if np.isfinite(seat).any() else None,
+        index[np.nanargmax(seat)] if np.isfinite(seat).any() else None, *near,
         index[inside[index]][np.argmax(result.contact_force[inside[index]].max(axis=1))] if inside.any() else None)
         if c is not None]
     for hit in (jumped, jumped | (force <= 0.0)):
