@@ -3,6 +3,7 @@
 import csv
 import json
 import re
+from dataclasses import replace
 from pathlib import Path
 
 import jsonschema
@@ -10,8 +11,9 @@ import numpy as np
 import pytest
 
 from valvetrain.design import results_schema, run
+from valvetrain.design.dynamics import dynamics_checks
 from valvetrain.export import results_json, write_outputs
-from valvetrain.specification import SpecError, load_spec, parse_spec
+from valvetrain.specification import SpecError, load_spec, parse_spec, si
 from valvetrain.units import MM
 
 from appendix import appendix_text
@@ -393,7 +395,8 @@ def test_the_seating_velocity_is_graded_at_its_largest_up_to_the_rated_speed():
     (a warning), naming the speed.  Reference: an independent integration of the one-mass train as its docstring
     states it (scipy solve_ivp, Radau, rtol 1e-10, each contact state a smooth segment ended by its events, the law
     tabulated every 0.002 cam deg), -0.516732 m/s at 6485 rpm and -0.542411 m/s at 7698 rpm; the speeds above the
-    rated one are left to the separation check, so the graded value stays below the latter."""
+    rated one are left to the separation check, so the graded value stays below the latter.  A valve that opens but
+    does not seat at the rated speed stays an unevaluated failure, whatever the lower speeds do."""
     d = run(load_spec(EXAMPLES / "pushrod-dynamics.toml")).valves["intake"]
     seat = [c for c in d.checks if c.code == "dynamics.seating_velocity"]
     assert len(seat) == 1 and seat[0].severity == "warning" and not seat[0].passed
@@ -403,3 +406,7 @@ def test_the_seating_velocity_is_graded_at_its_largest_up_to_the_rated_speed():
     above = int(np.argmin(np.abs(np.asarray(per.speed) * 30 / np.pi - 7698)))
     assert abs(per.seating_velocity[above]) == pytest.approx(0.542411, rel=1e-4)
     assert abs(per.seating_velocity[above]) > seat[0].value
+    unseated = replace(d.dynamics, at_rated_speed=replace(d.dynamics.at_rated_speed, seating_velocity=np.nan))
+    found = dynamics_checks(unseated, si(load_spec(EXAMPLES / "pushrod-dynamics.toml").engine))[0]
+    assert (found.code, found.severity, found.passed) == ("dynamics.seating_velocity", "failure", False)
+    assert np.isnan(found.value), "no seating at the rated speed stays unevaluated whatever the lower speeds do"

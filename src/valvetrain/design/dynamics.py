@@ -808,7 +808,7 @@ CLOSED = "the valve does not leave its seat at the rated speed"
 
 def worst_seating(d, engine) -> tuple[float, float]:
     """The largest |seating velocity| [m/s] of the rated speed and of the speeds swept up to it, and its engine speed
-    [rad/s] (NaN, NaN where the valve seats at none of them).
+    [rad/s]; (NaN, NaN) where the valve does not seat at the rated speed (the check is then unevaluated, a failure).
 
     Notes
     -----
@@ -817,13 +817,13 @@ def worst_seating(d, engine) -> tuple[float, float]:
     a lower speed), so every speed of the running range up to the rated one is graded by it.  The speeds above the
     rated one (to ``[engine] over_speed_ratio`` x it) are transient and graded by the separation check instead.
     """
+    if not np.isfinite(d.at_rated_speed.seating_velocity):
+        return np.nan, np.nan
     per = d.per_speed
     speeds = np.append(np.asarray(per.speed, dtype=float), engine.rated_speed)
     velocity = np.abs(np.array([np.nan if v is None else v for v in per.seating_velocity]
                                + [d.at_rated_speed.seating_velocity], dtype=float))
     velocity[speeds > engine.rated_speed * (1 + 1e-9)] = np.nan
-    if np.isnan(velocity).all():
-        return np.nan, np.nan
     worst = int(np.nanargmax(velocity))
     return float(velocity[worst]), float(speeds[worst])
 
@@ -843,10 +843,8 @@ def dynamics_checks(d, engine, adjuster_ratio=0.0) -> list[Check]:
                                                   f"{to_display(top, 'rpm'):.0f} rpm")
     opened = float(d.rated.lift.max()) > BOUNCE_TOLERANCE
     seating, where = worst_seating(d, engine)
-    rated = abs(d.at_rated_speed.seating_velocity)
-    at = "" if not np.isfinite(where) or where == engine.rated_speed else (
-        f"largest at {to_display(where, 'rpm'):.0f} rpm; "
-        + (f"{rated:.3g} m/s at the rated speed" if np.isfinite(rated) else "no seating at the rated speed"))
+    at = (f"largest at {to_display(where, 'rpm'):.0f} rpm; {abs(d.at_rated_speed.seating_velocity):.3g} m/s at the "
+          "rated speed" if where < engine.rated_speed * (1 - 1e-9) else "")
     return [check(CHECK_CODES[0], seating, high=SEATING_VELOCITY_MAX, unit="m/s", note=at,
                   source=CHECK_SOURCE + "; 0.3-0.5 m/s usual, graded at every speed swept up to the rated one",
                   unevaluated="" if opened else CLOSED),
