@@ -264,6 +264,16 @@ def test_the_runs_collections_leave_out_the_modules_and_the_results(tmp_path):
         ["design True 0", "write True 0"]
 
 
+def test_a_run_in_a_callers_process_freezes_nothing(tmp_path):
+    """``run`` called in another program's process (a test, a notebook) leaves its garbage collector as it found it:
+    nothing frozen, so the caller's objects stay collectable (the program freezes only after it froze its imports)."""
+    code = ("import gc; from valvetrain.cli import main; "
+            f"main(['run', '--out', {str(tmp_path / 'd')!r}, '--figures', 'none'], standalone_mode=False); "
+            "print(gc.get_freeze_count())")
+    found = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert found.stdout.splitlines()[-1] == "0"
+
+
 def test_importing_the_command_line_imports_no_heavy_library():
     """``valvetrain validate`` or ``--help`` need no solver, spline, DXF writer or plotting: importing the command
     line leaves scipy.optimize, scipy.interpolate, ezdxf and matplotlib unimported (together about half a second;

@@ -193,10 +193,13 @@ def run(file, out, force, lang, figures, strict) -> None:
     spec = _load(file)
     inputs = _check_out(out, [file] if file else [], [spec], force)
     drawer = start(DRAWER_IMPORTS) if figures != "none" else None   # imports matplotlib while this process designs
-    gc.freeze()   # the design's collections do not look through the modules imported so far
+    program = gc.get_freeze_count() > 0   # the program froze its imports (console); a caller's process is left alone
+    if program:
+        gc.freeze()   # the design's collections do not look through the modules imported so far
     try:
         results = _design(spec, _Progress())
-        gc.freeze()   # nor the writer's through the results
+        if program:
+            gc.freeze()   # nor the writer's through the results
         write_outputs(results, out, lang, inputs, force, figures, drawer)
     except OutFolderError as err:
         _fail_out(err)
