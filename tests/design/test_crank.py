@@ -189,7 +189,8 @@ def test_the_example_cycle_uses_its_valve_timing():
 
 def test_a_cycle_that_absorbs_work_is_a_warning():
     """The V8 example with almost no heat (0.01 J) and a 10 MPa exhaust stroke against a 0.09 MPa intake is a pump:
-    its mean torque is negative and the check says so (a warning: a motored engine is legal input).  Hand estimate:
+    its mean torque is negative and the check, the mean torque over the largest torque, says so (a warning: a motored
+    engine is legal input).  Hand estimate:
     the pumping loop alone, -(p_e - p_i) V_h i / (4 pi) = -(10 - 0.09) MPa x 571.7 cm3 x 8 / (4 pi) = -3607 N m,
     ignoring the compression-expansion loop and the pressure's transitions at the dead centres (found -3390 N m); the
     example's own cycle delivers work and passes."""
@@ -197,6 +198,8 @@ def test_a_cycle_that_absorbs_work_is_a_warning():
     pump = text.replace("heat_input_J = 1400.0", "heat_input_J = 0.01\nexhaust_pressure_MPa = 10.0")
     displaced = np.pi / 4 * 0.092**2 * 0.086
     for spec, passed in ((text, True), (pump, False)):
-        found = [c for c in run(parse_spec(spec)).checks if c.code == "crank.mean_torque"]
+        design = run(parse_spec(spec))
+        found = [c for c in design.checks if c.code == "crank.mean_torque"]
         assert len(found) == 1 and found[0].severity == "warning" and found[0].passed is passed
-    assert found[0].value == pytest.approx(-(10 - 0.09) * 1e6 * displaced * 8 / (4 * np.pi), rel=0.1)
+        assert -1.0 <= found[0].value <= 1.0, "a share of the largest torque"
+    assert design.crank.figures.mean_torque == pytest.approx(-(10 - 0.09) * 1e6 * displaced * 8 / (4 * np.pi), rel=0.1)
