@@ -36,3 +36,5 @@ def test_total_torque_sum_and_period():
     assert np.allclose(each[2], np.roll(each[0], 180))
     stats = torque.torque_statistics(total[:180])
     assert stats["nonuniformity"] == pytest.approx(2 * m2 / m0, rel=1e-4)
+    # the same closed form: the largest |torque| is 4 (m0 + m2), so the mean's share of it is m0 / (m0 + m2)
+    assert stats["mean_share"] == pytest.approx(m0 / (m0 + m2), rel=1e-4)

@@ -127,11 +127,12 @@ def engine_torque(psi, cylinder_torque, firing, strokes) -> tuple[np.ndarray, np
 
 
 def torque_statistics(total) -> dict[str, float | None]:
-    """Mean, max, min and the non-uniformity mu = (M_max - M_min) / M_mean of samples over one period.
+    """Mean, max, min, the mean's share of the largest |torque| M_mean / max(|M_max|, |M_min|) (0 for a torque that
+    is 0 throughout) and the non-uniformity mu = (M_max - M_min) / M_mean of samples over one period.
 
     The samples must cover exactly one period, uniformly, without a duplicated end point.  The
     non-uniformity is defined for an engine that delivers torque: it is None where the mean torque is
-    not positive (a motored cycle) or vanishes against the swing of the torque.
+    not positive (a motored cycle) or vanishes against the largest torque (a share up to 1e-9).
 
     References
     ----------
@@ -139,8 +140,10 @@ def torque_statistics(total) -> dict[str, float | None]:
     """
     mean = float(np.mean(total))
     mx, mn = float(np.max(total)), float(np.min(total))
-    defined = mean > 1e-9 * max(abs(mx), abs(mn))
-    return {"mean": mean, "max": mx, "min": mn, "nonuniformity": (mx - mn) / mean if defined else None}
+    peak = max(abs(mx), abs(mn))
+    share = mean / peak if peak > 0.0 else 0.0
+    return {"mean": mean, "max": mx, "min": mn, "mean_share": share,
+            "nonuniformity": (mx - mn) / mean if share > 1e-9 else None}
 
 
 def is_even(firing, strokes, tol=1e-9) -> bool:

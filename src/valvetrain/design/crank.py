@@ -321,8 +321,7 @@ def crank_stage(c, eng, timing=None) -> CrankResults:
     found = [check("crank.rod_ratio", lam, *LAMBDA_RANGE, source="Power units manual (n.d.), eq. (1.1)"),
              check("crank.rod_pin_share", c.rod_pin_fraction, *ROD_PIN_FRACTION_RANGE,
                    source="Power units manual (n.d.), eq. (2.7)"),
-             check("crank.mean_torque", stats["mean"] / max(abs(stats["max"]), abs(stats["min"])), low=0.0,
-                   strict_low=True, source="Kolchin and Demidov (1980): an engine delivers work; a cycle whose "
-                   "pressures give a negative mean torque absorbs it (a motored engine), and its non-uniformity is "
-                   "undefined")]
+             check("crank.mean_torque", stats["mean_share"], low=0.0, strict_low=True,
+                   source="Kolchin and Demidov (1980): an engine delivers work; a cycle whose pressures give a "
+                   "negative mean torque absorbs it (a motored engine), and its non-uniformity is undefined")]
     return CrankResults(phi, columns, phi, each, total, firing, figures, tuple(found), source)
