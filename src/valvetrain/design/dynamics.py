@@ -819,10 +819,8 @@ def worst_seating(d, engine) -> tuple[float, float]:
     """
     if not np.isfinite(d.at_rated_speed.seating_velocity):
         return np.nan, np.nan
-    per = d.per_speed
-    speeds = np.append(np.asarray(per.speed, dtype=float), engine.rated_speed)
-    velocity = np.abs(np.array([np.nan if v is None else v for v in per.seating_velocity]
-                               + [d.at_rated_speed.seating_velocity], dtype=float))
+    speeds = np.append(d.records.speed, engine.rated_speed)
+    velocity = np.abs(np.append(d.records.seating_velocity, d.at_rated_speed.seating_velocity))
     velocity[speeds > engine.rated_speed * (1 + 1e-9)] = np.nan
     worst = int(np.nanargmax(velocity))
     return float(velocity[worst]), float(speeds[worst])
