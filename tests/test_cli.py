@@ -257,7 +257,8 @@ def test_the_runs_collections_leave_out_the_modules_and_the_results(tmp_path):
     built-in example that was the imported modules' (about 0.2 s of processor time, once), during the writing also the
     results.  The program freezes them (gc.freeze) once imported and once designed, with the collector enabled: the
     design's collections track none of the command line's and numba's module dictionaries and the specification, the
-    writer's not the results and their valves (counted by identity among gc.get_objects(); without the freezes 3 and 2)."""
+    writer's not the results and their valves (counted by identity among gc.get_objects(); without the freezes 3
+    and 2)."""
     found = subprocess.run([sys.executable, "-c", FROZEN_DURING_THE_RUN, str(tmp_path / "d")], capture_output=True,
                            text=True, check=True)
     assert [line for line in found.stdout.splitlines() if line.startswith(("design", "write"))] == \
