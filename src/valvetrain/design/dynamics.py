@@ -721,9 +721,10 @@ def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, 
         train simulates only the speeds of its range that decide the jump speed, the largest seating velocity (of
         the range and up to the rated speed) and the largest cam force in ``load_range``
         (:func:`~valvetrain.dynamics.sweep.headline_sweep`; a tolerance study's samples): the per-speed table and
-        the maps then have those speeds alone, and ``progress`` is not called.  A multi-mass train is swept in full: with coil surge its separations and forces come and go from one speed to
-        the next (the built-in example's, 200 speeds: a first separation 20 % below the one the coarse grid finds, a
-        cam stress 7 % above the largest it finds).
+        the maps then have those speeds alone, and ``progress`` is not called.  A multi-mass train is swept in
+        full: with coil surge its separations and forces come and go from one speed to the next (the built-in
+        example's, 200 speeds: a first separation 20 % below the one the coarse grid finds, a cam stress 7 % above
+        the largest it finds).
 
     Returns
     -------
