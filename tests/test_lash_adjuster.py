@@ -5,6 +5,7 @@ motion ratio of an end-pivot finger by a hand-built lever, the design stage's le
 leakage integrated by hand over the simulated force, and its pump-up and valve held open against the same train without
 the adjuster."""
 
+from decimal import Decimal, localcontext
 import math
 from pathlib import Path
 
@@ -41,6 +42,47 @@ def test_leak_down_time_by_hand_and_by_a_second_solver():
 
 def test_annular_leakage_does_not_flow_back():
     assert hla.annular_leakage(-1e6, D, C, L, MU) == 0.0
+
+
+def white_eccentric_annulus(outer, inner, offset, terms=2000):
+    """The bracket of White (2006)'s exact laminar flow through an eccentric annulus (Piercy, Hooper and Winny's
+    solution in bipolar coordinates), Q = pi / (8 mu) (-dp/dx) [bracket], in 60-digit decimals: outer and inner radii
+    a, b and the offset c of the centres [m]; c = 0 gives the concentric a^4 - b^4 - (a^2 - b^2)^2 / ln(a / b)."""
+    a, b = Decimal(outer), Decimal(inner)
+    if offset == 0.0:
+        return a**4 - b**4 - (a * a - b * b) ** 2 / (a / b).ln()
+    c = Decimal(offset)
+    f = (a * a - b * b + c * c) / (2 * c)
+    m = (f * f - a * a).sqrt()
+    alpha, beta = ((f + m) / (f - m)).ln() / 2, ((f - c + m) / (f - c - m)).ln() / 2
+    series = Decimal(0)
+    for n in range(1, terms + 1):
+        x = n * (beta - alpha)
+        term = n * (-n * (beta + alpha)).exp() * 2 / (x.exp() - (-x).exp())
+        series += term
+        if term < series * Decimal(10) ** -30:
+            break
+    else:
+        raise AssertionError("the series did not converge")
+    return a**4 - b**4 - 4 * c * c * m * m / (beta - alpha) - 8 * c * c * m * m * series
+
+
+@pytest.mark.parametrize("eps", [0.25, 0.5, 0.75, 0.99])
+def test_eccentric_leakage_is_the_exact_eccentric_annulus_of_a_narrow_gap(eps):
+    """The leakage of the plunger (d = 9 mm, c = 4 um) offset by e = eps c over the concentric one against the exact
+    solution of the eccentric annulus (White (2006)): 1 + 1.5 eps^2 is its narrow-gap limit, here to 1e-6 (c / r =
+    8.9e-4); the concentric leakage itself is the exact annulus's within c / (2 r) = 4.4e-4 (the parallel plates of
+    width pi d)."""
+    with localcontext() as ctx:
+        ctx.prec = 60
+        r = D / 2.0
+        ratio = float(white_eccentric_annulus(r + C, r, eps * C) / white_eccentric_annulus(r + C, r, 0.0))
+        exact = math.pi / (8.0 * MU * L) * float(white_eccentric_annulus(r + C, r, 0.0)) * 1e6
+    assert hla.annular_leakage(1e6, D, C, L, MU, eps) / hla.annular_leakage(1e6, D, C, L, MU) == pytest.approx(
+        ratio, rel=1e-6)
+    assert hla.annular_leakage(1e6, D, C, L, MU) == pytest.approx(exact, rel=5e-4)
+    assert hla.leak_down_time(1000.0, 1e-3, D, C, L, MU, eps) == pytest.approx(
+        hla.leak_down_time(1000.0, 1e-3, D, C, L, MU) / ratio, rel=1e-6)
 
 
 def test_chamber_compression_is_the_integral_of_the_compressibility():
@@ -162,6 +204,25 @@ def test_leak_down_per_revolution_scales_with_the_inverse_viscosity():
     assert set(thin.load) == {"quasi-static"} and len(thin.speed) > 5
     assert thin.pump_up == (None,) * len(thin.speed)
     assert np.allclose(np.asarray(thin.leak_down), 4.0 * np.asarray(thick.leak_down), rtol=1e-12)
+
+
+def test_a_fully_eccentric_plunger_leaks_down_two_and_a_half_times_as_much():
+    """The key plunger_eccentricity chooses the leakage: without [dynamics] the leak-down is the annular leakage
+    integrated over the quasi-static force, so e / c = 1 leaks down 1 + 1.5 = 2.5 times the concentric default's at
+    every speed, and the results state the eccentricity and the factor; beyond [0, 1] the key is refused."""
+    def quasi_static(extra=""):
+        text = EXAMPLE.read_text().split("[[accepted]]")[0].replace(
+            "[valves.intake.spring]", f'[valves.intake.lash_adjuster]\nlocation = "tappet"\n{extra}\n'
+            "[valves.intake.spring]")
+        return run(parse_spec(text)).valves["intake"].lash_adjuster
+
+    concentric, eccentric = quasi_static(), quasi_static("plunger_eccentricity = 1.0")
+    assert (concentric.eccentricity, concentric.leak_factor) == (0.0, 1.0)
+    assert (eccentric.eccentricity, eccentric.leak_factor) == (1.0, 2.5)
+    assert np.allclose(np.asarray(eccentric.per_speed.leak_down), 2.5 * np.asarray(concentric.per_speed.leak_down),
+                       rtol=1e-12)
+    with pytest.raises(SpecError, match=r"plunger_eccentricity = 1.2: allowed \[0, 1\]"):
+        quasi_static("plunger_eccentricity = 1.2")
 
 
 @pytest.mark.parametrize("change, words", [

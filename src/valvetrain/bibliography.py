@@ -281,6 +281,12 @@ WORKS = {
         title="Hydraulic Control Systems", kind="book", publisher="John Wiley & Sons", place="New York", year="1967",
         note="The leakage of an annular clearance, the orifice equation, the effective bulk modulus of a liquid with "
              "entrained air."),
+    "white2006": Work(
+        short="White (2006)",
+        authors="White, F. M.",
+        title="Viscous Fluid Flow, 3rd ed.", kind="textbook", publisher="McGraw-Hill", place="New York", year="2006",
+        note="The laminar flow through an eccentric annulus (the exact solution in bipolar coordinates of Piercy, "
+             "Hooper and Winny, 1933)."),
     "sae_j300": Work(
         short="SAE J300 (2015)",
         authors="SAE International",

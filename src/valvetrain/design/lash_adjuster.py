@@ -55,6 +55,10 @@ class LashAdjusterResult:
     location: str = quantity("location", label="pivot of an end-pivot finger, or in the tappet")
     motion_ratio: float = quantity("motion_ratio", label="valve motion / adjuster motion (pivot i - 1, of a "
                                    "finger its linkage along the adjuster's axis; tappet i)")
+    eccentricity: float = quantity("plunger_eccentricity", label="the plunger's eccentricity e / c in its bore, "
+                                   "[lash_adjuster] plunger_eccentricity (0: concentric)")
+    leak_factor: float = quantity("leak_factor", label="its leakage over the concentric plunger's, 1 + 1.5 (e / c)^2 "
+                                  "(Merritt (1967); 2.5 fully eccentric)")
     reference_force: float = quantity("reference_force_N", "N", "largest quasi-static force on the adjuster at the "
                                       "rated speed")
     chamber_pressure: float = quantity("chamber_pressure_MPa", "MPa", "chamber pressure under it")
@@ -237,7 +241,7 @@ def lash_adjuster_stage(la, valve, engine, cam, drive, dynamics=None,
     if dynamics is not None:
         floats = float_speed(dynamics.per_speed.speed, np.asarray(dynamics.per_speed.min_contact_force) / k, push)
     result = LashAdjusterResult(
-        la.location, ratio, ref, pressure, sink, stiffness, stiffness / ratio**2,
+        la.location, ratio, la.plunger_eccentricity, float(hla.eccentricity_factor(la.plunger_eccentricity)), ref, pressure, sink, stiffness, stiffness / ratio**2,
         None if dynamics is None else dynamics.parameters.drive_stiffness, per.leak_down[rated],
         per.valve_lash[rated], max(per.refill_share), max(pumps) if pumps else None, max(helds) if helds else None,
         push, floats if np.isfinite(floats) else None, per)

@@ -692,7 +692,10 @@ TEXT["en"].update({
     "la_location": "Location", "la_locations": {"pivot": "pivot of an end-pivot finger follower",
                                                 "tappet": "in the tappet, in series with the cam contact"},
     "la_names": {
-        "motion_ratio": "valve motion / adjuster motion", "reference_force_N": "largest force on the adjuster, N",
+        "motion_ratio": "valve motion / adjuster motion",
+        "plunger_eccentricity": "eccentricity of the plunger in its bore e / c",
+        "leak_factor": "its leakage / the concentric plunger's, 1 + 1.5 (e / c)²",
+        "reference_force_N": "largest force on the adjuster, N",
         "chamber_pressure_MPa": "chamber pressure under it, MPa", "compression_um": "compression of the oil column, µm",
         "stiffness_N_per_mm": "stiffness of the oil column, N/mm",
         "stiffness_at_valve_N_per_mm": "its stiffness at the valve, N/mm",
@@ -732,6 +735,8 @@ TEXT["ru"].update({
                                                     "tappet": "в толкателе, последовательно с контактом кулачка"},
     "la_names": {
         "motion_ratio": "перемещение клапана / перемещение гидрокомпенсатора",
+        "plunger_eccentricity": "эксцентриситет плунжера в отверстии e / c",
+        "leak_factor": "его утечка / утечка соосного плунжера, 1 + 1,5 (e / c)²",
         "reference_force_N": "наибольшая сила на гидрокомпенсатор, Н",
         "chamber_pressure_MPa": "давление в камере при ней, МПа",
         "compression_um": "сжатие столба масла, мкм", "stiffness_N_per_mm": "жёсткость столба масла, Н/мм",

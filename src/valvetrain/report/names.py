@@ -605,6 +605,8 @@ NAMES.update({
     "lash_adjuster.supply_pressure": ("oil supply pressure", "давление подачи масла"),
     "lash_adjuster.plunger_spring": ("plunger spring force", "сила пружины плунжера"),
     "lash_adjuster.check_valve_diameter": ("check valve bore", "диаметр седла обратного клапана"),
+    "lash_adjuster.plunger_eccentricity": ("eccentricity of the plunger in its bore e / c",
+                                           "эксцентриситет плунжера в отверстии e / c"),
 })
 
 NAMES.update({

@@ -430,6 +430,12 @@ class LashAdjuster(_Model):
     ramps of hydraulic cams was found; a mechanical clearance is 0.25-0.35 mm (Valve-train practical works (n.d.),
     work 2), so a ramp of at most a fifth of the smallest of it is "small".
 
+    ``plunger_eccentricity``: e / c, the offset of the plunger's axis in its bore over the radial clearance, 0
+    (concentric) to 1 (touching the bore on one side); the clearance leaks 1 + 1.5 (e / c)^2 times the concentric
+    leakage (Merritt (1967); White (2006)), 2.5 times fully eccentric.  Default 0, the concentric plunger: the least
+    leak-down, the safe side of the pump-up (a leakier plunger sinks back faster); the leak-down and the lash it
+    leaves at the valve grow with it.
+
     Defaults: ``oil_viscosity_mPa_s`` = 10 is an SAE 30 (or xW-30) oil near 100 degC (SAE J300 (2015), as in
     ``[lubrication]``).  The other defaults are typical values of a passenger-car adjuster chosen without a cited
     source (its dimensions, the supply pressure, the plunger spring, the oil's bulk modulus of 1.5 GPa and its 2 %
@@ -448,6 +454,7 @@ class LashAdjuster(_Model):
     supply_pressure_MPa: _bounded(0.0, 2.0, "MPa", low_open=False) = 0.3
     plunger_spring_N: _bounded(0.0, 500.0, "N", low_open=False) = 15.0
     check_valve_diameter_mm: Length(0.2, 20.0, low_open=False) = 2.0
+    plunger_eccentricity: _bounded(0.0, 1.0, low_open=False, high_open=False) = 0.0
 
 
 class Valve(_Model):
