@@ -76,6 +76,18 @@ def test_a_float_pumps_the_adjuster_up_and_holds_the_valve_open():
     assert b.lift[0, base].max() < 1e-6
 
 
+def test_the_check_valve_only_refills():
+    """Leak-free, the plunger can only extend: where the force falls to the push the check valve opens and oil flows
+    in, never out (it leaves by the clearance alone, here shut).  At 3800 cam rpm spec12 floats and its contact
+    unloads faster than its spring relaxes (the damping force pulls the unilateral force to 0 while it is still
+    compressed); the plunger's extension over the recorded revolution never falls (it fell by 7.3 um in one step
+    when the kernel set it to the extension that would carry the push there, shorter than the one it had)."""
+    law, _, hydraulic = trains()
+    r = sweep(law, hydraulic, np.array([1500.0, 3800.0]) * RPM, revolutions=8)
+    assert np.all(np.diff(r.adjuster_extension, axis=1) >= 0.0)
+    assert r.adjuster_extension[1, -1] > 100e-6
+
+
 def test_pump_up_starts_where_the_follower_leaves_the_cam():
     """The rigid follower leaves the cam where the inertia force exceeds the spring's, M |y''| w^2 > F0 + K y on the
     nose (y = k h, y'' = k h'' per rad^2 < 0): w_j^2 = min (F0 + K y) / (M |y''|) over the law's angles, by hand here

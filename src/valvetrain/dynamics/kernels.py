@@ -386,8 +386,9 @@ def _adjust(z, off, x, force, cam, b, stiffness, gap, adjuster, dt):
 
     .. math:: \\dot z = -\\frac{\\pi d c^3}{12 \\mu L}\\,\\frac{p - p_s}{A}
 
-    (explicit Euler: its rate is far below 1 / dt); at or below it the check valve opens and the plunger extends at
-    the refill velocity, no further than to the contact force (F_s + p_s A) / i_a at which the valve closes again:
+    (explicit Euler: its rate is far below 1 / dt); at or below it the check valve opens and the plunger extends (oil
+    flows in, never out) at the refill velocity, no further than to the contact force (F_s + p_s A) / i_a at which
+    the valve closes again:
     a float lets it follow the opened gap (pump-up), and on the base circle it takes up the lash.  The oil column's
     compliance is in the contact's stiffness (its secant stiffness in series).
     """
@@ -402,7 +403,7 @@ def _adjust(z, off, x, force, cam, b, stiffness, gap, adjuster, dt):
         else:
             delta = x[cam, s] - x[b, s] - gap
             need = (push - f) / stiffness if (delta > 0.0) & (f > 0.0) else push / stiffness - delta
-            dz = min(refill * dt[s], need / ratio)
+            dz = max(min(refill * dt[s], need / ratio), 0.0)
         z[s] += dz
         off[s] = ratio * z[s]
 
