@@ -88,6 +88,24 @@ def test_the_check_valve_only_refills():
     assert r.adjuster_extension[1, -1] > 100e-6
 
 
+def test_the_plunger_stops_at_its_travel_and_holds_the_valve_as_an_interference_would():
+    """Leak-free with a stop 0.3 mm out: where spec12 floats (3300-3450 cam rpm) the plunger pumps up to its stop and
+    no further, and the train is then the train without the adjuster whose cam contact is compressed by i_a s =
+    0.6 x 0.3 = 0.18 mm on the base circle (a negative lash): both integrations agree to 1e-8 m.  That train holds
+    its valve off its seat at low speed at the static balance c (i_a s - y) = F0 + K y, y = (15e6 x 0.18e-3 - 400) /
+    (15e6 + 67.5e3) = 0.15265 mm, by hand."""
+    law, rigid, hydraulic = trains()
+    stop = 0.3e-3
+    speeds = np.array([3300.0, 3400.0, 3450.0]) * RPM
+    a = sweep(law, replace(hydraulic, adjuster=replace(hydraulic.adjuster, stop=stop)), speeds, revolutions=20)
+    b = sweep(law, replace(rigid, lash=-RATIO * stop), speeds, revolutions=20)
+    assert a.converged.all() and np.all(a.adjuster_extension == stop)
+    assert np.abs(a.lift - b.lift).max() < 1e-8
+    low = sweep(law, replace(rigid, lash=-RATIO * stop), [300.0 * RPM], revolutions=5)
+    base = np.abs(low.theta) > np.radians(120.0)
+    assert low.lift[0, base] == pytest.approx(0.15265e-3, rel=1e-4)
+
+
 def test_pump_up_starts_where_the_follower_leaves_the_cam():
     """The rigid follower leaves the cam where the inertia force exceeds the spring's, M |y''| w^2 > F0 + K y on the
     nose (y = k h, y'' = k h'' per rad^2 < 0): w_j^2 = min (F0 + K y) / (M |y''|) over the law's angles, by hand here
