@@ -287,6 +287,15 @@ WORKS = {
         title="Viscous Fluid Flow, 3rd ed.", kind="textbook", publisher="McGraw-Hill", place="New York", year="2006",
         note="The laminar flow through an eccentric annulus (the exact solution in bipolar coordinates of Piercy, "
              "Hooper and Winny, 1933)."),
+    "enginebuilder2011": Work(
+        short="Engine Builder (2011)",
+        authors="Engine Builder Magazine",
+        title="Getting to the bottom of hydraulic lifter preload", kind="trade magazine article",
+        publisher="Engine Builder Magazine, June 2011", year="2011",
+        url="https://www.enginebuildermag.com/2011/06/getting-to-the-bottom-of-hydraulic-lifter-preload/",
+        note="The lifter preload, the distance the plunger is pushed down from its retaining lock (its stop), is "
+             "0.020 to 0.060 in (0.5 to 1.5 mm) for most applications; more pumps the lifter up and holds the valves "
+             "open."),
     "sae_j300": Work(
         short="SAE J300 (2015)",
         authors="SAE International",

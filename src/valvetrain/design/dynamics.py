@@ -433,7 +433,7 @@ def adjuster_element(la, ratio: float) -> Adjuster:
     refill = hla.check_valve_flow(hla.refill_pressure(la.supply_pressure, la.plunger_spring_N, area),
                                   la.check_valve_diameter) / area
     return Adjuster(float(ratio), float(la.plunger_spring_N), float(area), float(la.supply_pressure), float(leak),
-                    float(refill))
+                    float(refill), float(la.plunger_travel))
 
 
 def adjuster_link(valve, law, drive, cam_speed: float, at: str) -> tuple[float, str, Adjuster]:

@@ -367,7 +367,8 @@ def _camshaft(results, spec, plots):
             "plots": plots.get("camshaft", {})}
 
 
-ADJUSTER_COLUMNS = ("speed", "leak_down", "valve_lash", "refill_share", "stiffness_at_valve", "pump_up", "held_open")
+ADJUSTER_COLUMNS = ("speed", "leak_down", "valve_lash", "refill_share", "stiffness_at_valve", "pump_up", "pumped_up",
+                    "held_open", "revolutions")
 """The columns of the report's table of the lash adjuster against engine speed (fields of
 :class:`~valvetrain.design.lash_adjuster.LashAdjusterPerSpeed`)."""
 

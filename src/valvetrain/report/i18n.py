@@ -684,7 +684,11 @@ TEXT["en"].update({
                  "push the check valve opens and the plunger extends, refilling the lash on the base circle. Its "
                  "extension gained while the valve is off its seat before its first return (the follower floating) "
                  "is the pump-up of a revolution, a failure up to the over-speed; the smallest valve lift on the "
-                 "base circle is the valve held off its seat. The follower floats where its force falls to that "
+                 "base circle is the valve held off its seat. The pump-up accumulates revolution by revolution, no "
+                 "further than the plunger's stop: a speed whose plunger still pumps up is integrated on until its "
+                 "motion settles, where the leak-down under the spring's force balances the pump-up or the plunger "
+                 "is at its stop, and the lift at which the valve held off its seat settles is graded. The leakage "
+                 "of an eccentric plunger is 1 + 1.5 (e/c)² times the concentric one's. The follower floats where its force falls to that "
                  "push while the cam lifts the open valve: the plunger follows it, so the contact need not open, "
                  "and a float below the over-speed is a failure as a separation is. At the speeds the dynamics does "
                  "not sweep, the "
@@ -703,13 +707,18 @@ TEXT["en"].update({
         "rated_leak_down_um": "leak-down per revolution at the rated speed, µm",
         "rated_valve_lash_um": "lash at the valve at closing, rated speed, µm",
         "max_refill_share": "largest refill time / base-circle time",
+        "plunger_travel_mm": "the plunger's travel from its working position to its stop, mm",
         "max_pump_up_um": "largest pump-up per revolution up to the over-speed, µm",
-        "max_held_open_um": "largest valve lift held on the base circle, µm",
+        "max_pumped_up_um": "largest extension the plunger pumps up to, µm",
+        "max_held_open_um": "largest lift at which a valve held on the base circle settles, µm",
+        "held_open_speed_rpm": "where, rpm",
         "push_at_valve_N": "the adjuster's push at the valve (check valve opens), N",
         "float_speed_rpm": "float speed (the follower's force at that push while the cam lifts), rpm",
         "speed_rpm": "engine speed, rpm", "leak_down_um": "leak-down per revolution, µm",
         "valve_lash_um": "lash at the valve, µm", "refill_share": "refill time / base-circle time",
-        "pump_up_um": "pump-up per revolution, µm", "held_open_um": "valve held open, µm",
+        "pump_up_um": "pump-up per revolution, µm", "pumped_up_um": "plunger pumped up to, µm",
+        "held_open_um": "valve held open, µm", "revolutions": "revolutions to settle",
+        "settled": "settled",
         "oil_stiffness_at_valve_N_per_mm": "stiffness of the oil column at the valve, N/mm",
     },
 })
@@ -726,7 +735,12 @@ TEXT["ru"].update({
                  "открывается обратный клапан и плунжер выдвигается, выбирая зазор на цилиндрической части кулачка. "
                  "Выдвижение, набранное, пока клапан не сел на седло в первый раз после открытия (толкатель "
                  "оторвался от кулачка), — выдвижение плунжера за оборот, недопустимое до заброса оборотов; "
-                 "наименьший подъём клапана на цилиндрической части — клапан, не севший на седло. Толкатель "
+                 "наименьший подъём клапана на цилиндрической части — клапан, не севший на седло. Выдвижение "
+                 "накапливается от оборота к обороту, не дальше упора плунжера: частота, на которой плунжер ещё "
+                 "выдвигается, рассчитывается дальше, пока движение не установится — там, где проседание под силой "
+                 "пружины уравновешивает выдвижение за оборот, или на упоре плунжера, — и оценивается подъём, на "
+                 "котором устанавливается не севший на седло клапан. Утечка через зазор эксцентричного плунжера в "
+                 "1 + 1,5 (e/c)² раза больше, чем соосного. Толкатель "
                  "отрывается там, где его сила падает до этого усилия, пока кулачок поднимает открытый клапан: "
                  "плунжер выдвигается за ним, контакт может не раскрыться, и отрыв ниже частоты заброса оборотов — "
                  "отказ, как и отрыв толкателя без гидрокомпенсатора. На частотах вне "
@@ -745,14 +759,20 @@ TEXT["ru"].update({
         "rated_leak_down_um": "проседание за оборот на номинальной частоте, мкм",
         "rated_valve_lash_um": "зазор у клапана при посадке на номинальной частоте, мкм",
         "max_refill_share": "наибольшее отношение времени заполнения к времени на цилиндрической части",
+        "plunger_travel_mm": "ход плунжера от рабочего положения до упора, мм",
         "max_pump_up_um": "наибольшее выдвижение плунжера при отрыве за оборот до заброса оборотов, мкм",
-        "max_held_open_um": "наибольший подъём клапана, удерживаемый на цилиндрической части, мкм",
+        "max_pumped_up_um": "наибольшее выдвижение, до которого накачивается плунжер, мкм",
+        "max_held_open_um": "наибольший подъём, на котором устанавливается клапан, удерживаемый на цилиндрической "
+                            "части, мкм",
+        "held_open_speed_rpm": "где, об/мин",
         "push_at_valve_N": "усилие гидрокомпенсатора, приведённое к клапану (открывается обратный клапан), Н",
         "float_speed_rpm": "частота отрыва (сила толкателя падает до этого усилия, пока кулачок поднимает клапан), "
                            "об/мин",
         "speed_rpm": "частота вращения, об/мин", "leak_down_um": "проседание за оборот, мкм",
         "valve_lash_um": "зазор у клапана, мкм", "refill_share": "время заполнения / время на цилиндрической части",
-        "pump_up_um": "выдвижение при отрыве за оборот, мкм", "held_open_um": "клапан удерживается открытым, мкм",
+        "pump_up_um": "выдвижение при отрыве за оборот, мкм", "pumped_up_um": "плунжер накачан до, мкм",
+        "held_open_um": "клапан удерживается открытым, мкм", "revolutions": "оборотов до установления",
+        "settled": "установилось",
         "oil_stiffness_at_valve_N_per_mm": "жёсткость столба масла, приведённая к клапану, Н/мм",
     },
 })

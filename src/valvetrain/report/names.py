@@ -607,6 +607,8 @@ NAMES.update({
     "lash_adjuster.check_valve_diameter": ("check valve bore", "диаметр седла обратного клапана"),
     "lash_adjuster.plunger_eccentricity": ("eccentricity of the plunger in its bore e / c",
                                            "эксцентриситет плунжера в отверстии e / c"),
+    "lash_adjuster.plunger_travel": ("plunger travel from its working position to its stop",
+                                     "ход плунжера от рабочего положения до упора"),
 })
 
 NAMES.update({

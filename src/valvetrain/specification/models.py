@@ -436,6 +436,11 @@ class LashAdjuster(_Model):
     leak-down, the safe side of the pump-up (a leakier plunger sinks back faster); the leak-down and the lash it
     leaves at the valve grow with it.
 
+    ``plunger_travel_mm``: the plunger's travel from its working position (the valve seated, no lash, on the base
+    circle) out to its stop (the retaining ring), at the adjuster: pump-up extends it no further, and the valve it then
+    holds off its seat settles there.  Default 1.0 mm, the middle of the 0.5-1.5 mm (0.020-0.060 in) a hydraulic
+    lifter's plunger is set below its retaining lock in most applications (Engine Builder (2011)).
+
     Defaults: ``oil_viscosity_mPa_s`` = 10 is an SAE 30 (or xW-30) oil near 100 degC (SAE J300 (2015), as in
     ``[lubrication]``).  The other defaults are typical values of a passenger-car adjuster chosen without a cited
     source (its dimensions, the supply pressure, the plunger spring, the oil's bulk modulus of 1.5 GPa and its 2 %
@@ -455,6 +460,7 @@ class LashAdjuster(_Model):
     plunger_spring_N: _bounded(0.0, 500.0, "N", low_open=False) = 15.0
     check_valve_diameter_mm: Length(0.2, 20.0, low_open=False) = 2.0
     plunger_eccentricity: _bounded(0.0, 1.0, low_open=False, high_open=False) = 0.0
+    plunger_travel_mm: Length(0.01, 20.0, low_open=False) = 1.0
 
 
 class Valve(_Model):
