@@ -189,6 +189,29 @@ def test_the_pump_up_accumulates_to_where_the_valve_held_open_settles(floating):
     assert f"settles {rec.max_held_open * 1e6:.4g} um off its seat at" in check.note and "at its stop" in check.note
 
 
+def test_the_settling_integration_keeps_to_the_sweep_s_limit_of_work(monkeypatch):
+    """The integration to the settled motion runs no more revolutions than the sweep's limit of work allows: with
+    the limit at 30 revolutions' work of the polydyne example's pumping speeds (the first run, at a limit of 0, records
+    that work: one revolution), those that have not settled stop after 30, flagged unsettled."""
+    import valvetrain.design.lash_adjuster as stage
+
+    works = []
+
+    def recorded(network, speeds, revolutions, step):
+        works.append(stage_size(network, speeds, revolutions, step)[0])
+        return stage_size(network, speeds, revolutions, step)
+
+    stage_size = stage.sweep_size
+    monkeypatch.setattr(stage, "sweep_size", recorded)
+    monkeypatch.setattr(stage, "MAX_SWEEP_WORK", 0)
+    run(polydyne("spring_preload_N = 150\n"))
+    monkeypatch.setattr(stage, "MAX_SWEEP_WORK", 30 * works[0])
+    valve = run(polydyne("spring_preload_N = 150\n")).valves["intake"]
+    per = valve.lash_adjuster.per_speed
+    unsettled = [revs for revs, settled in zip(per.revolutions, per.settled, strict=True) if settled is False]
+    assert unsettled and set(unsettled) == {30}
+
+
 def test_leak_down_per_revolution_is_the_annular_leakage_of_the_simulated_force(floating):
     """At the lowest speed (no bounce, no float) the stage's leak-down is the laminar leakage of the annular clearance
     integrated by hand over the simulated revolution: in the tappet the adjuster carries the cam force F, the chamber

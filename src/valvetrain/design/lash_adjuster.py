@@ -11,10 +11,10 @@ import numpy as np
 from .. import lash_adjuster as hla
 from ..bibliography import cite
 from ..checks import Check, check
-from ..dynamics.sweep import lift_event, sweep, zero_crossing
+from ..dynamics.sweep import lift_event, sweep, sweep_size, zero_crossing
 from ..units import DEG, to_display
 from .drive import event_load_maps
-from .dynamics import adjuster_element, adjuster_load, build_train
+from .dynamics import MAX_SWEEP_WORK, adjuster_element, adjuster_load, build_train
 from .results import quantity
 
 SOURCES = cite("merritt1967")
@@ -325,15 +325,21 @@ def _settled(motions, valve, law, drive, cam_speed, at) -> list:
     sweep left its plunger pumping up: it did not repeat and its plunger gained more than :data:`PUMP_UP_TOLERANCE`
     while the valve was off its seat.  Those speeds are integrated again, from rest, for up to
     :data:`PUMP_REVOLUTIONS` revolutions until they repeat within :data:`SETTLED` (the train of
-    :func:`valvetrain.design.dynamics.build_train`, ``cam_speed`` the rated camshaft speed [rad/s])."""
+    :func:`valvetrain.design.dynamics.build_train`, ``cam_speed`` the rated camshaft speed [rad/s]); fewer where
+    that would exceed the sweep's limit of work :data:`~valvetrain.design.dynamics.MAX_SWEEP_WORK` (unless ``[dynamics]
+    allow_large_sweep``), their motions then flagged unsettled."""
     pumping = [j for j, (_, r) in enumerate(motions) if not r.converged and plunger_motion(
         r.adjuster_extension, r.lift, lift_event(r.kinematic_lift, r.lift), law.lift(r.theta) <= 0.0)[1]
         > PUMP_UP_TOLERANCE]
     if not pumping:
         return motions
     train = build_train(valve.dynamics, valve, law, drive, at, cam_speed)[0]
-    again = sweep(law, train, [motions[j][1].cam_speed for j in pumping], PUMP_REVOLUTIONS,
-                  valve.dynamics.step / DEG, tolerance=SETTLED)
+    speeds, step = [motions[j][1].cam_speed for j in pumping], valve.dynamics.step / DEG
+    revolutions = PUMP_REVOLUTIONS
+    if not valve.dynamics.allow_large_sweep:
+        work = sweep_size(train.network(), speeds, 1, step)[0]
+        revolutions = max(min(revolutions, int(MAX_SWEEP_WORK // work)), 1)
+    again = sweep(law, train, speeds, revolutions, step, tolerance=SETTLED)
     out = list(motions)
     for i, j in enumerate(pumping):
         out[j] = (motions[j][0], again.speed(i))
