@@ -315,6 +315,17 @@ WORKS = {
         authors="Den Hartog, J. P.",
         title="Mechanical Vibrations, 4th ed.", kind="book", publisher="McGraw-Hill", place="New York", year="1956",
         note="The natural frequencies of torsional systems of several masses on an elastic shaft."),
+    "chrysler2002": Work(
+        short="DaimlerChrysler (2002)",
+        authors="DaimlerChrysler Corporation",
+        title="Dodge Ram 3500 truck, 5.9 L V8: timing chain, service and repair (inspection: measuring timing chain "
+              "stretch)", kind="service manual",
+        year="2002",
+        url="https://charm.li/Dodge%20and%20Ram/2002/RAM%203500%20Truck%204WD%20V8-5.9L%20VIN%205%20HDC/"
+            "Repair%20and%20Diagnosis/Engine%2C%20Cooling%20and%20Exhaust/Engine/Timing%20Components/"
+            "Timing%20Chain/Service%20and%20Repair",
+        note="With a torque of 41 N m applied to the camshaft sprocket bolt one way and then the other, the crankshaft "
+             "held, a new timing chain is installed if its movement exceeds 3.175 mm (1/8 in)."),
     "diamondchain": Work(
         short="Diamond Chain (n.d.)",
         authors="Diamond Chain Company",

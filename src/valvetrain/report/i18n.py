@@ -819,7 +819,32 @@ TEXT["en"].update({
         "station_inertias_kg_mm2": "inertia, kg·mm²", "max_twist_cam_deg": "largest lag, cam deg",
         "deflection_mm": "bending deflection, mm", "order": "order", "order_amplitudes_Nm": "amplitude, N·m",
         "resonance_speeds_rpm": "resonant engine speed, rpm",
+        "damping_ratio": "modal damping ratio of the torsional modes",
+        "speed_range_rpm": "running range, rpm",
+        "timing_fluctuation_allowable_cam_deg": "allowable fluctuation of a lobe's timing, cam deg",
+        "largest_timing_fluctuation_cam_deg": "largest fluctuation of a lobe's timing, cam deg",
+        "largest_timing_fluctuation_speed_rpm": "where, rpm",
+        "largest_timing_fluctuation_cylinder": "at the lobes of cylinder",
+        "largest_drive_force_N": "largest force of the timing drive, N",
+        "largest_drive_force_speed_rpm": "where, rpm",
+        "mode": "mode", "natural_frequency_Hz": "natural frequency, Hz", "speed_rpm": "engine speed, rpm",
+        "timing_fluctuation_cam_deg": "fluctuation of the timing, cam deg", "drive_force_N": "force of the drive, N",
     },
+    "cs_response": "Torsional response over the running range",
+    "cs_response_method": "The camshaft and its timing drive as the chain of the natural frequencies above, the "
+                           "crankshaft turning evenly, answer each order of the lobes' torque at every speed of the "
+                           "running range (the torque of each speed from the valve's load map: the simulated force "
+                           "where the dynamics ran, else the quasi-static one, with the friction where the "
+                           "lubrication was computed) by modal superposition, every mode damped by the damping ratio "
+                           "given; the steady lag of each lobe station, summed over the orders, gives the fluctuation "
+                           "of its timing (largest less smallest lag over a revolution) and the drive's spring the "
+                           "largest force of the timing drive. A resonance inside the running range is graded by that "
+                           "response: the timing against the movement of the cam sprocket against the crankshaft a "
+                           "maker accepts in service, the force against the drive's allowable",
+    "cs_resonances": "Natural frequencies met by a significant order in the running range",
+    "cs_torsion_title": "torsional response of the camshaft against the engine speed",
+    "cs_fluctuation": "fluctuation of the lobes' timing, cam deg", "cs_drive_force": "force of the timing drive, N",
+    "cs_allowable": "allowable", "cs_speed": "engine speed, rpm",
 })
 
 TEXT["ru"].update({
@@ -865,7 +890,33 @@ TEXT["ru"].update({
         "station_inertias_kg_mm2": "момент инерции, кг·мм²", "max_twist_cam_deg": "наибольшее отставание, град ПРВ",
         "deflection_mm": "прогиб, мм", "order": "порядок", "order_amplitudes_Nm": "амплитуда, Н·м",
         "resonance_speeds_rpm": "резонансная частота вращения двигателя, об/мин",
+        "damping_ratio": "коэффициент демпфирования форм крутильных колебаний",
+        "speed_range_rpm": "рабочий диапазон частот вращения, об/мин",
+        "timing_fluctuation_allowable_cam_deg": "допустимое колебание фазы кулачка, град ПРВ",
+        "largest_timing_fluctuation_cam_deg": "наибольшее колебание фазы кулачка, град ПРВ",
+        "largest_timing_fluctuation_speed_rpm": "где, об/мин",
+        "largest_timing_fluctuation_cylinder": "у кулачков цилиндра",
+        "largest_drive_force_N": "наибольшая сила привода, Н",
+        "largest_drive_force_speed_rpm": "где, об/мин",
+        "mode": "форма", "natural_frequency_Hz": "собственная частота, Гц", "speed_rpm": "частота вращения, об/мин",
+        "timing_fluctuation_cam_deg": "колебание фазы, град ПРВ", "drive_force_N": "сила привода, Н",
     },
+    "cs_response": "Крутильные колебания в рабочем диапазоне частот вращения",
+    "cs_response_method": "Распределительный вал с приводом — цепь масс и жёсткостей, собственные частоты которой "
+                          "приведены выше, коленчатый вал вращается равномерно — отвечает на каждую гармонику "
+                          "момента кулачков на каждой частоте рабочего диапазона (момент на каждой частоте — по "
+                          "нагрузке клапана: рассчитанной динамикой силе, где она считалась, иначе квазистатической, "
+                          "с трением, где рассчитана смазка) методом разложения по собственным формам, каждая форма "
+                          "с заданным коэффициентом демпфирования; установившееся отставание каждого сечения "
+                          "кулачков, просуммированное по гармоникам, даёт колебание его фазы (разность наибольшего "
+                          "и наименьшего отставания за оборот), а жёсткость привода — наибольшую силу привода. "
+                          "Резонанс в рабочем диапазоне оценивается по этому отклику: фаза — по смещению звёздочки "
+                          "распределительного вала относительно коленчатого, допускаемому изготовителем в "
+                          "эксплуатации, сила — по допустимой силе привода",
+    "cs_resonances": "Собственные частоты, на которые попадают значимые гармоники в рабочем диапазоне",
+    "cs_torsion_title": "крутильные колебания распределительного вала в зависимости от частоты вращения",
+    "cs_fluctuation": "колебание фазы кулачков, град ПРВ", "cs_drive_force": "сила привода, Н",
+    "cs_allowable": "допустимое", "cs_speed": "частота вращения, об/мин",
 })
 
 

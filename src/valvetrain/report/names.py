@@ -635,6 +635,11 @@ NAMES.update({
                                  "жёсткость привода распределительного вала на радиусе начальной окружности"),
     "camshaft.sprocket_inertia": ("polar inertia of the sprocket, pulley or gear",
                                   "момент инерции звёздочки, шкива или шестерни"),
+    "camshaft.torsional_damping_ratio": ("modal damping ratio of the torsional modes",
+                                         "коэффициент демпфирования форм крутильных колебаний"),
+    "camshaft.max_timing_play": ("allowable movement of the cam sprocket against the crankshaft, along its pitch circle",
+                                 "допустимое смещение звёздочки распределительного вала относительно коленчатого по "
+                                 "начальной окружности"),
 })
 
 NAMES.update({

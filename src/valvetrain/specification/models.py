@@ -498,7 +498,14 @@ class Camshaft(_Model):
     order.  ``drive_stiffness_N_per_mm`` (the drive's tangential stiffness at the pitch radius; absent: the drive
     end held) and ``sprocket_inertia_kg_mm2`` put the timing drive into the torsion.  The limits
     ``max_twist_cam_deg`` and ``min_frequency_ratio`` are engineering assumptions (no published camshaft limit was
-    found); ``drive_allowable_force_N`` is the maker's allowable of the chain, belt or gears."""
+    found); ``drive_allowable_force_N`` is the maker's allowable of the chain, belt or gears.
+
+    The torsional response over the running range: every mode damped by ``torsional_damping_ratio`` (default 0.05,
+    (0, 0.5]: an engineering assumption, the valve train's own default damping ratio of ``[dynamics]``; no published
+    damping of a camshaft's torsional modes was found), and the fluctuation of each lobe's timing graded against
+    ``max_timing_play_mm`` (default 3.175 mm, the movement of the cam sprocket against the crankshaft along its pitch
+    circle that a maker accepts in service before replacing the chain, DaimlerChrysler (2002)) over the pitch
+    radius."""
 
     valves: Optional[list[str]] = None
     cylinders: Optional[list[Annotated[int, Field(ge=1, le=64)]]] = None
@@ -520,6 +527,8 @@ class Camshaft(_Model):
     drive_allowable_force_N: _bounded(1.0, 1e8, "N")
     drive_stiffness_N_per_mm: Optional[_bounded(10.0, 1e7, "N/mm", low_open=False)] = None
     sprocket_inertia_kg_mm2: _bounded(0.0, 1e7, "kg mm2", low_open=False) = 0.0
+    torsional_damping_ratio: _bounded(0.0, 0.5) = 0.05
+    max_timing_play_mm: Length(0.01, 100.0) = 3.175
 
     @model_validator(mode="after")
     def _consistent(self):
