@@ -281,6 +281,21 @@ WORKS = {
         title="Hydraulic Control Systems", kind="book", publisher="John Wiley & Sons", place="New York", year="1967",
         note="The leakage of an annular clearance, the orifice equation, the effective bulk modulus of a liquid with "
              "entrained air."),
+    "white2006": Work(
+        short="White (2006)",
+        authors="White, F. M.",
+        title="Viscous Fluid Flow, 3rd ed.", kind="textbook", publisher="McGraw-Hill", place="New York", year="2006",
+        note="The laminar flow through an eccentric annulus (the exact solution in bipolar coordinates of Piercy, "
+             "Hooper and Winny, 1933)."),
+    "enginebuilder2011": Work(
+        short="Engine Builder (2011)",
+        authors="Engine Builder Magazine",
+        title="Getting to the bottom of hydraulic lifter preload", kind="trade magazine article",
+        publisher="Engine Builder Magazine, June 2011", year="2011",
+        url="https://www.enginebuildermag.com/2011/06/getting-to-the-bottom-of-hydraulic-lifter-preload/",
+        note="The lifter preload, the distance the plunger is pushed down from its retaining lock (its stop), is "
+             "0.020 to 0.060 in (0.5 to 1.5 mm) for most applications; more pumps the lifter up and holds the valves "
+             "open."),
     "sae_j300": Work(
         short="SAE J300 (2015)",
         authors="SAE International",
@@ -300,6 +315,17 @@ WORKS = {
         authors="Den Hartog, J. P.",
         title="Mechanical Vibrations, 4th ed.", kind="book", publisher="McGraw-Hill", place="New York", year="1956",
         note="The natural frequencies of torsional systems of several masses on an elastic shaft."),
+    "chrysler2002": Work(
+        short="DaimlerChrysler (2002)",
+        authors="DaimlerChrysler Corporation",
+        title="Dodge Ram 3500 truck, 5.9 L V8: timing chain, service and repair (inspection: measuring timing chain "
+              "stretch)", kind="service manual",
+        year="2002",
+        url="https://charm.li/Dodge%20and%20Ram/2002/RAM%203500%20Truck%204WD%20V8-5.9L%20VIN%205%20HDC/"
+            "Repair%20and%20Diagnosis/Engine%2C%20Cooling%20and%20Exhaust/Engine/Timing%20Components/"
+            "Timing%20Chain/Service%20and%20Repair",
+        note="With a torque of 41 N m applied to the camshaft sprocket bolt one way and then the other, the crankshaft "
+             "held, a new timing chain is installed if its movement exceeds 3.175 mm (1/8 in)."),
     "diamondchain": Work(
         short="Diamond Chain (n.d.)",
         authors="Diamond Chain Company",

@@ -14,9 +14,9 @@ from .design.grinding import master_cartesian_columns, master_polar_columns, wea
 from .design.hydraulic_actuation import sweep_columns as hydraulic_sweep_columns, table_columns as hydraulic_columns
 from .outfolder import atomic_folder
 from .specification import spec_toml
-from .tables import (cartesian_contour_columns, contour_columns, crank_columns, engine_torque_columns,
-                     lift_export_columns, lift_export_comments, lift_table_columns, polar_contour_columns,
-                     strength_speed_columns, two_stroke_columns, two_stroke_speed_columns)
+from .tables import (camshaft_torsion_columns, cartesian_contour_columns, contour_columns, crank_columns,
+                     engine_torque_columns, lift_export_columns, lift_export_comments, lift_table_columns,
+                     polar_contour_columns, strength_speed_columns, two_stroke_columns, two_stroke_speed_columns)
 from .units import MM
 
 def _cell(x):
@@ -210,6 +210,7 @@ def write_outputs(results, out, lang="en", inputs=(), force=False, figures="main
         out/results.json, spec.toml (the specification as run, every default written out)
         out/tables/NAME_lift.csv, NAME_strength.csv (one row per engine speed of the strength checks),
                    crank.csv, engine_torque.csv, two_stroke_ports.csv, two_stroke_time_area.csv,
+                   camshaft_torsion.csv (a [camshaft] section: one row per engine speed),
                    NAME_dynamics.csv (a [dynamics] section: one row per speed),
                    NAME_wear_error.csv (a [grinding] section: the lift error of the worn wheel)
                    NAME_hydraulic.csv (a [hydraulic] section: pressures and lifts against camshaft angle),
@@ -265,6 +266,8 @@ def write_outputs(results, out, lang="en", inputs=(), force=False, figures="main
         if results.crank is not None:
             write_csv(tmp / "tables" / "crank.csv", crank_columns(results.crank))
             write_csv(tmp / "tables" / "engine_torque.csv", engine_torque_columns(results.crank))
+        if results.camshaft is not None:
+            write_csv(tmp / results.camshaft.figures.response.table, camshaft_torsion_columns(results.camshaft))
         if results.two_stroke is not None:
             write_csv(tmp / "tables" / "two_stroke_ports.csv", two_stroke_columns(results.two_stroke))
             write_csv(tmp / "tables" / "two_stroke_time_area.csv", two_stroke_speed_columns(results.two_stroke))

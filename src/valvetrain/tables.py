@@ -103,6 +103,17 @@ def engine_torque_columns(crank) -> dict[str, np.ndarray]:
     return out
 
 
+def camshaft_torsion_columns(camshaft) -> dict[str, np.ndarray]:
+    """The camshaft's steady torsional response against the engine speed: ``speed_rpm``, the fluctuation of each
+    cylinder's lobe timing (largest less smallest lag over a revolution) [cam deg] and the largest force of the timing
+    drive [N] (:class:`~valvetrain.design.camshaft.CamshaftResults`)."""
+    out = {"speed_rpm": to_display(camshaft.speeds, "rpm")}
+    for i, cylinder in enumerate(camshaft.figures.cylinders):
+        out[f"timing_fluctuation_cyl{cylinder}_cam_deg"] = rad_to_deg(camshaft.fluctuation[:, i])
+    out["drive_force_N"] = camshaft.drive_forces
+    return out
+
+
 def two_stroke_columns(ports) -> dict[str, np.ndarray]:
     """Port areas against the crank angle from TDC [deg, mm2]."""
     out = {"crank_deg": rad_to_deg(ports.phi)}

@@ -423,15 +423,17 @@ def adjuster_load(valve, law, drive, cam_speed: float, at: str) -> tuple[float, 
 
 def adjuster_element(la, ratio: float) -> Adjuster:
     """The kernels' :class:`~valvetrain.dynamics.models.Adjuster` of ``[lash_adjuster]`` (SI view ``la``) at the motion
-    ratio ``ratio``: its leak coefficient pi d c^3 / (12 mu L) [m^3/(s Pa)]
-    (:func:`valvetrain.lash_adjuster.annular_leakage` per pascal) and its largest extension velocity, the check valve's
-    flow under :func:`valvetrain.lash_adjuster.refill_pressure` over the plunger area [m/s]."""
+    ratio ``ratio``: its leak coefficient pi d c^3 (1 + 1.5 epsilon^2) / (12 mu L) [m^3/(s Pa)] at the plunger's
+    eccentricity epsilon (:func:`valvetrain.lash_adjuster.annular_leakage` per pascal) and its largest extension
+    velocity, the check valve's flow under :func:`valvetrain.lash_adjuster.refill_pressure` over the plunger area
+    [m/s]."""
     area = hla.plunger_area(la.plunger_diameter)
-    leak = hla.annular_leakage(1.0, la.plunger_diameter, la.radial_clearance, la.leak_length, la.oil_viscosity)
+    leak = hla.annular_leakage(1.0, la.plunger_diameter, la.radial_clearance, la.leak_length, la.oil_viscosity,
+                               la.plunger_eccentricity)
     refill = hla.check_valve_flow(hla.refill_pressure(la.supply_pressure, la.plunger_spring_N, area),
                                   la.check_valve_diameter) / area
     return Adjuster(float(ratio), float(la.plunger_spring_N), float(area), float(la.supply_pressure), float(leak),
-                    float(refill))
+                    float(refill), float(la.plunger_travel))
 
 
 def adjuster_link(valve, law, drive, cam_speed: float, at: str) -> tuple[float, str, Adjuster]:

@@ -214,10 +214,10 @@ def integrate_block(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_p
         Largest deviation of each coil node from its quasi-static share of the valve motion [m].
     out_revs : ndarray (S,) of int64
         The revolution after which the speed repeated (0: not within ``max_revolutions``).
-    adjuster : ndarray (6,)
+    adjuster : ndarray (7,)
         A hydraulic lash adjuster in series with the cam contact (:func:`_adjust`): its motion ratio (0: none), plunger
-        spring [N], plunger area [m^2], supply pressure [Pa], leak coefficient pi d c^3 / (12 mu L) [m^3/(s Pa)] and
-        largest refill velocity [m/s].
+        spring [N], plunger area [m^2], supply pressure [Pa], leak coefficient pi d c^3 / (12 mu L) [m^3/(s Pa)],
+        largest refill velocity [m/s] and the plunger's travel to its stop [m, at the adjuster].
     contact : int
         The cam-follower contact element (the adjuster's extension shifts its cam end).
     vnode : int
@@ -386,13 +386,14 @@ def _adjust(z, off, x, force, cam, b, stiffness, gap, adjuster, dt):
 
     .. math:: \\dot z = -\\frac{\\pi d c^3}{12 \\mu L}\\,\\frac{p - p_s}{A}
 
-    (explicit Euler: its rate is far below 1 / dt); at or below it the check valve opens and the plunger extends at
-    the refill velocity, no further than to the contact force (F_s + p_s A) / i_a at which the valve closes again:
-    a float lets it follow the opened gap (pump-up), and on the base circle it takes up the lash.  The oil column's
+    (explicit Euler: its rate is far below 1 / dt); at or below it the check valve opens and the plunger extends (oil
+    flows in, never out) at the refill velocity, no further than to the contact force (F_s + p_s A) / i_a at which
+    the valve closes again: a float lets it follow the opened gap (pump-up), and on the base circle it takes up the
+    lash.  It extends no further than its stop (the retaining ring), z <= ``adjuster[6]``.  The oil column's
     compliance is in the contact's stiffness (its secant stiffness in series).
     """
-    ratio, spring, area, supply, leak, refill = (adjuster[0], adjuster[1], adjuster[2], adjuster[3], adjuster[4],
-                                                 adjuster[5])
+    ratio, spring, area, supply, leak, refill, stop = (adjuster[0], adjuster[1], adjuster[2], adjuster[3], adjuster[4],
+                                                       adjuster[5], adjuster[6])
     push = (spring + supply * area) / ratio
     for s in range(z.size):
         f = force[s]
@@ -402,8 +403,8 @@ def _adjust(z, off, x, force, cam, b, stiffness, gap, adjuster, dt):
         else:
             delta = x[cam, s] - x[b, s] - gap
             need = (push - f) / stiffness if (delta > 0.0) & (f > 0.0) else push / stiffness - delta
-            dz = min(refill * dt[s], need / ratio)
-        z[s] += dz
+            dz = max(min(refill * dt[s], need / ratio), 0.0)
+        z[s] = min(z[s] + dz, stop)
         off[s] = ratio * z[s]
 
 

@@ -60,6 +60,9 @@ class Adjuster:
         (:func:`valvetrain.lash_adjuster.annular_leakage` per pascal).
     refill : float
         Largest extension velocity through the open check valve [m/s].
+    stop : float
+        The plunger's travel from its working position (z = 0, the valve seated on the base circle) to its stop [m, at
+        the adjuster]: it extends no further (inf: no stop).
     """
 
     motion_ratio: float
@@ -68,13 +71,15 @@ class Adjuster:
     supply: float
     leak: float
     refill: float
+    stop: float = np.inf
 
     def array(self) -> np.ndarray:
-        """The kernel's parameter array (6,)."""
-        return np.array([self.motion_ratio, self.plunger_spring, self.area, self.supply, self.leak, self.refill])
+        """The kernel's parameter array (7,)."""
+        return np.array([self.motion_ratio, self.plunger_spring, self.area, self.supply, self.leak, self.refill,
+                         self.stop])
 
 
-NO_ADJUSTER = np.zeros(6)
+NO_ADJUSTER = np.zeros(7)
 """The kernel's parameter array of a train without a lash adjuster (motion ratio 0)."""
 
 
@@ -151,7 +156,7 @@ class Network:
         Quasi-static share of the valve motion of each coil node (0: not a coil node).
     rocker_ratio : float
         k, to turn the valve-side cam force into the force at the cam.
-    adjuster : ndarray (6,)
+    adjuster : ndarray (7,)
         :meth:`Adjuster.array` of a hydraulic lash adjuster in series with the cam contact (:data:`NO_ADJUSTER`).
     variable_node : int
         The node whose mass changes with its position (-1: none); ``mass`` holds its reference value (the modes, the

@@ -348,6 +348,15 @@ CAMSHAFT_ROWS = ("lobes", "ratio", "peak", "peak_angle", "lowest", "mean", "fluc
 """The rows of the report's table of the camshaft's figures (fields of
 :class:`~valvetrain.design.camshaft.CamshaftRecord`)."""
 
+CAMSHAFT_RESPONSE = ("damping_ratio", "speed_range", "allowable", "fluctuation", "fluctuation_speed",
+                     "fluctuation_cylinder", "drive_force", "drive_force_speed")
+"""The rows of the report's table of the camshaft's torsional response (fields of
+:class:`~valvetrain.design.camshaft.TorsionalResponse`)."""
+
+CAMSHAFT_RESONANCES = ("mode", "frequency", "order", "speed", "fluctuation", "drive_force")
+"""The columns of the report's table of the resonances in the running range (fields of
+:class:`~valvetrain.design.camshaft.TorsionalResonance`)."""
+
 CAMSHAFT_STATIONS = ("positions", "station_inertia", "max_twist", "deflection")
 """The columns of the report's table of the lobe stations (fields of
 :class:`~valvetrain.design.camshaft.CamshaftRecord`)."""
@@ -364,10 +373,15 @@ def _camshaft(results, spec, plots):
             "rows": shown(figures, *CAMSHAFT_ROWS), "columns": [k for k, _ in stations],
             "stations": list(zip(shown_value(figures, "cylinders"), *(c for _, c in stations), strict=True)),
             "orders": [(k, amplitudes[k], n) for k, n in zip(orders, speeds, strict=True)],
-            "plots": plots.get("camshaft", {})}
+            "response": shown(figures.response, *CAMSHAFT_RESPONSE),
+            "resonance_columns": [k for k, _ in shown(figures.response.resonances[0], *CAMSHAFT_RESONANCES)]
+            if figures.response.resonances else [],
+            "resonances": [[v for _, v in shown(r, *CAMSHAFT_RESONANCES)] for r in figures.response.resonances],
+            "table": figures.response.table, "plots": plots.get("camshaft", {})}
 
 
-ADJUSTER_COLUMNS = ("speed", "leak_down", "valve_lash", "refill_share", "stiffness_at_valve", "pump_up", "held_open")
+ADJUSTER_COLUMNS = ("speed", "leak_down", "valve_lash", "refill_share", "stiffness_at_valve", "pump_up", "pumped_up",
+                    "held_open", "revolutions")
 """The columns of the report's table of the lash adjuster against engine speed (fields of
 :class:`~valvetrain.design.lash_adjuster.LashAdjusterPerSpeed`)."""
 

@@ -684,7 +684,11 @@ TEXT["en"].update({
                  "push the check valve opens and the plunger extends, refilling the lash on the base circle. Its "
                  "extension gained while the valve is off its seat before its first return (the follower floating) "
                  "is the pump-up of a revolution, a failure up to the over-speed; the smallest valve lift on the "
-                 "base circle is the valve held off its seat. The follower floats where its force falls to that "
+                 "base circle is the valve held off its seat. The pump-up accumulates revolution by revolution, no "
+                 "further than the plunger's stop: a speed whose plunger still pumps up is integrated on until its "
+                 "motion settles, where the leak-down under the spring's force balances the pump-up or the plunger "
+                 "is at its stop, and the lift at which the valve held off its seat settles is graded. The leakage "
+                 "of an eccentric plunger is 1 + 1.5 (e/c)² times the concentric one's. The follower floats where its force falls to that "
                  "push while the cam lifts the open valve: the plunger follows it, so the contact need not open, "
                  "and a float below the over-speed is a failure as a separation is. At the speeds the dynamics does "
                  "not sweep, the "
@@ -692,7 +696,10 @@ TEXT["en"].update({
     "la_location": "Location", "la_locations": {"pivot": "pivot of an end-pivot finger follower",
                                                 "tappet": "in the tappet, in series with the cam contact"},
     "la_names": {
-        "motion_ratio": "valve motion / adjuster motion", "reference_force_N": "largest force on the adjuster, N",
+        "motion_ratio": "valve motion / adjuster motion",
+        "plunger_eccentricity": "eccentricity of the plunger in its bore e / c",
+        "leak_factor": "its leakage / the concentric plunger's, 1 + 1.5 (e / c)²",
+        "reference_force_N": "largest force on the adjuster, N",
         "chamber_pressure_MPa": "chamber pressure under it, MPa", "compression_um": "compression of the oil column, µm",
         "stiffness_N_per_mm": "stiffness of the oil column, N/mm",
         "stiffness_at_valve_N_per_mm": "its stiffness at the valve, N/mm",
@@ -700,13 +707,18 @@ TEXT["en"].update({
         "rated_leak_down_um": "leak-down per revolution at the rated speed, µm",
         "rated_valve_lash_um": "lash at the valve at closing, rated speed, µm",
         "max_refill_share": "largest refill time / base-circle time",
+        "plunger_travel_mm": "the plunger's travel from its working position to its stop, mm",
         "max_pump_up_um": "largest pump-up per revolution up to the over-speed, µm",
-        "max_held_open_um": "largest valve lift held on the base circle, µm",
+        "max_pumped_up_um": "largest extension the plunger pumps up to, µm",
+        "max_held_open_um": "largest lift at which a valve held on the base circle settles, µm",
+        "held_open_speed_rpm": "where, rpm",
         "push_at_valve_N": "the adjuster's push at the valve (check valve opens), N",
         "float_speed_rpm": "float speed (the follower's force at that push while the cam lifts), rpm",
         "speed_rpm": "engine speed, rpm", "leak_down_um": "leak-down per revolution, µm",
         "valve_lash_um": "lash at the valve, µm", "refill_share": "refill time / base-circle time",
-        "pump_up_um": "pump-up per revolution, µm", "held_open_um": "valve held open, µm",
+        "pump_up_um": "pump-up per revolution, µm", "pumped_up_um": "plunger pumped up to, µm",
+        "held_open_um": "valve held open, µm", "revolutions": "revolutions to settle",
+        "settled": "settled",
         "oil_stiffness_at_valve_N_per_mm": "stiffness of the oil column at the valve, N/mm",
     },
 })
@@ -723,7 +735,12 @@ TEXT["ru"].update({
                  "открывается обратный клапан и плунжер выдвигается, выбирая зазор на цилиндрической части кулачка. "
                  "Выдвижение, набранное, пока клапан не сел на седло в первый раз после открытия (толкатель "
                  "оторвался от кулачка), — выдвижение плунжера за оборот, недопустимое до заброса оборотов; "
-                 "наименьший подъём клапана на цилиндрической части — клапан, не севший на седло. Толкатель "
+                 "наименьший подъём клапана на цилиндрической части — клапан, не севший на седло. Выдвижение "
+                 "накапливается от оборота к обороту, не дальше упора плунжера: частота, на которой плунжер ещё "
+                 "выдвигается, рассчитывается дальше, пока движение не установится — там, где проседание под силой "
+                 "пружины уравновешивает выдвижение за оборот, или на упоре плунжера, — и оценивается подъём, на "
+                 "котором устанавливается не севший на седло клапан. Утечка через зазор эксцентричного плунжера в "
+                 "1 + 1,5 (e/c)² раза больше, чем соосного. Толкатель "
                  "отрывается там, где его сила падает до этого усилия, пока кулачок поднимает открытый клапан: "
                  "плунжер выдвигается за ним, контакт может не раскрыться, и отрыв ниже частоты заброса оборотов — "
                  "отказ, как и отрыв толкателя без гидрокомпенсатора. На частотах вне "
@@ -732,6 +749,8 @@ TEXT["ru"].update({
                                                     "tappet": "в толкателе, последовательно с контактом кулачка"},
     "la_names": {
         "motion_ratio": "перемещение клапана / перемещение гидрокомпенсатора",
+        "plunger_eccentricity": "эксцентриситет плунжера в отверстии e / c",
+        "leak_factor": "его утечка / утечка соосного плунжера, 1 + 1,5 (e / c)²",
         "reference_force_N": "наибольшая сила на гидрокомпенсатор, Н",
         "chamber_pressure_MPa": "давление в камере при ней, МПа",
         "compression_um": "сжатие столба масла, мкм", "stiffness_N_per_mm": "жёсткость столба масла, Н/мм",
@@ -740,14 +759,20 @@ TEXT["ru"].update({
         "rated_leak_down_um": "проседание за оборот на номинальной частоте, мкм",
         "rated_valve_lash_um": "зазор у клапана при посадке на номинальной частоте, мкм",
         "max_refill_share": "наибольшее отношение времени заполнения к времени на цилиндрической части",
+        "plunger_travel_mm": "ход плунжера от рабочего положения до упора, мм",
         "max_pump_up_um": "наибольшее выдвижение плунжера при отрыве за оборот до заброса оборотов, мкм",
-        "max_held_open_um": "наибольший подъём клапана, удерживаемый на цилиндрической части, мкм",
+        "max_pumped_up_um": "наибольшее выдвижение, до которого накачивается плунжер, мкм",
+        "max_held_open_um": "наибольший подъём, на котором устанавливается клапан, удерживаемый на цилиндрической "
+                            "части, мкм",
+        "held_open_speed_rpm": "где, об/мин",
         "push_at_valve_N": "усилие гидрокомпенсатора, приведённое к клапану (открывается обратный клапан), Н",
         "float_speed_rpm": "частота отрыва (сила толкателя падает до этого усилия, пока кулачок поднимает клапан), "
                            "об/мин",
         "speed_rpm": "частота вращения, об/мин", "leak_down_um": "проседание за оборот, мкм",
         "valve_lash_um": "зазор у клапана, мкм", "refill_share": "время заполнения / время на цилиндрической части",
-        "pump_up_um": "выдвижение при отрыве за оборот, мкм", "held_open_um": "клапан удерживается открытым, мкм",
+        "pump_up_um": "выдвижение при отрыве за оборот, мкм", "pumped_up_um": "плунжер накачан до, мкм",
+        "held_open_um": "клапан удерживается открытым, мкм", "revolutions": "оборотов до установления",
+        "settled": "установилось",
         "oil_stiffness_at_valve_N_per_mm": "жёсткость столба масла, приведённая к клапану, Н/мм",
     },
 })
@@ -794,7 +819,32 @@ TEXT["en"].update({
         "station_inertias_kg_mm2": "inertia, kg·mm²", "max_twist_cam_deg": "largest lag, cam deg",
         "deflection_mm": "bending deflection, mm", "order": "order", "order_amplitudes_Nm": "amplitude, N·m",
         "resonance_speeds_rpm": "resonant engine speed, rpm",
+        "damping_ratio": "modal damping ratio of the torsional modes",
+        "speed_range_rpm": "running range, rpm",
+        "timing_fluctuation_allowable_cam_deg": "allowable fluctuation of a lobe's timing, cam deg",
+        "largest_timing_fluctuation_cam_deg": "largest fluctuation of a lobe's timing, cam deg",
+        "largest_timing_fluctuation_speed_rpm": "where, rpm",
+        "largest_timing_fluctuation_cylinder": "at the lobes of cylinder",
+        "largest_drive_force_N": "largest force of the timing drive, N",
+        "largest_drive_force_speed_rpm": "where, rpm",
+        "mode": "mode", "natural_frequency_Hz": "natural frequency, Hz", "speed_rpm": "engine speed, rpm",
+        "timing_fluctuation_cam_deg": "fluctuation of the timing, cam deg", "drive_force_N": "force of the drive, N",
     },
+    "cs_response": "Torsional response over the running range",
+    "cs_response_method": "The camshaft and its timing drive as the chain of the natural frequencies above, the "
+                           "crankshaft turning evenly, answer each order of the lobes' torque at every speed of the "
+                           "running range (the torque of each speed from the valve's load map: the simulated force "
+                           "where the dynamics ran, else the quasi-static one, with the friction where the "
+                           "lubrication was computed) by modal superposition, every mode damped by the damping ratio "
+                           "given; the steady lag of each lobe station, summed over the orders, gives the fluctuation "
+                           "of its timing (largest less smallest lag over a revolution) and the drive's spring the "
+                           "largest force of the timing drive. A resonance inside the running range is graded by that "
+                           "response: the timing against the movement of the cam sprocket against the crankshaft a "
+                           "maker accepts in service, the force against the drive's allowable",
+    "cs_resonances": "Natural frequencies met by a significant order in the running range",
+    "cs_torsion_title": "torsional response of the camshaft against the engine speed",
+    "cs_fluctuation": "fluctuation of the lobes' timing, cam deg", "cs_drive_force": "force of the timing drive, N",
+    "cs_allowable": "allowable", "cs_speed": "engine speed, rpm",
 })
 
 TEXT["ru"].update({
@@ -840,7 +890,33 @@ TEXT["ru"].update({
         "station_inertias_kg_mm2": "момент инерции, кг·мм²", "max_twist_cam_deg": "наибольшее отставание, град ПРВ",
         "deflection_mm": "прогиб, мм", "order": "порядок", "order_amplitudes_Nm": "амплитуда, Н·м",
         "resonance_speeds_rpm": "резонансная частота вращения двигателя, об/мин",
+        "damping_ratio": "коэффициент демпфирования форм крутильных колебаний",
+        "speed_range_rpm": "рабочий диапазон частот вращения, об/мин",
+        "timing_fluctuation_allowable_cam_deg": "допустимое колебание фазы кулачка, град ПРВ",
+        "largest_timing_fluctuation_cam_deg": "наибольшее колебание фазы кулачка, град ПРВ",
+        "largest_timing_fluctuation_speed_rpm": "где, об/мин",
+        "largest_timing_fluctuation_cylinder": "у кулачков цилиндра",
+        "largest_drive_force_N": "наибольшая сила привода, Н",
+        "largest_drive_force_speed_rpm": "где, об/мин",
+        "mode": "форма", "natural_frequency_Hz": "собственная частота, Гц", "speed_rpm": "частота вращения, об/мин",
+        "timing_fluctuation_cam_deg": "колебание фазы, град ПРВ", "drive_force_N": "сила привода, Н",
     },
+    "cs_response": "Крутильные колебания в рабочем диапазоне частот вращения",
+    "cs_response_method": "Распределительный вал с приводом — цепь масс и жёсткостей, собственные частоты которой "
+                          "приведены выше, коленчатый вал вращается равномерно — отвечает на каждую гармонику "
+                          "момента кулачков на каждой частоте рабочего диапазона (момент на каждой частоте — по "
+                          "нагрузке клапана: рассчитанной динамикой силе, где она считалась, иначе квазистатической, "
+                          "с трением, где рассчитана смазка) методом разложения по собственным формам, каждая форма "
+                          "с заданным коэффициентом демпфирования; установившееся отставание каждого сечения "
+                          "кулачков, просуммированное по гармоникам, даёт колебание его фазы (разность наибольшего "
+                          "и наименьшего отставания за оборот), а жёсткость привода — наибольшую силу привода. "
+                          "Резонанс в рабочем диапазоне оценивается по этому отклику: фаза — по смещению звёздочки "
+                          "распределительного вала относительно коленчатого, допускаемому изготовителем в "
+                          "эксплуатации, сила — по допустимой силе привода",
+    "cs_resonances": "Собственные частоты, на которые попадают значимые гармоники в рабочем диапазоне",
+    "cs_torsion_title": "крутильные колебания распределительного вала в зависимости от частоты вращения",
+    "cs_fluctuation": "колебание фазы кулачков, град ПРВ", "cs_drive_force": "сила привода, Н",
+    "cs_allowable": "допустимое", "cs_speed": "частота вращения, об/мин",
 })
 
 

@@ -605,6 +605,10 @@ NAMES.update({
     "lash_adjuster.supply_pressure": ("oil supply pressure", "давление подачи масла"),
     "lash_adjuster.plunger_spring": ("plunger spring force", "сила пружины плунжера"),
     "lash_adjuster.check_valve_diameter": ("check valve bore", "диаметр седла обратного клапана"),
+    "lash_adjuster.plunger_eccentricity": ("eccentricity of the plunger in its bore e / c",
+                                           "эксцентриситет плунжера в отверстии e / c"),
+    "lash_adjuster.plunger_travel": ("plunger travel from its working position to its stop",
+                                     "ход плунжера от рабочего положения до упора"),
 })
 
 NAMES.update({
@@ -631,6 +635,11 @@ NAMES.update({
                                  "жёсткость привода распределительного вала на радиусе начальной окружности"),
     "camshaft.sprocket_inertia": ("polar inertia of the sprocket, pulley or gear",
                                   "момент инерции звёздочки, шкива или шестерни"),
+    "camshaft.torsional_damping_ratio": ("modal damping ratio of the torsional modes",
+                                         "коэффициент демпфирования форм крутильных колебаний"),
+    "camshaft.max_timing_play": ("allowable movement of the cam sprocket against the crankshaft, along its pitch circle",
+                                 "допустимое смещение звёздочки распределительного вала относительно коленчатого по "
+                                 "начальной окружности"),
 })
 
 NAMES.update({

@@ -932,11 +932,50 @@ def camshaft_torque_figure(shaft, t) -> Figure:
     return draw_camshaft_torque(camshaft_torque_data(shaft), t)
 
 
+def camshaft_torsion_data(shaft) -> dict[str, Any]:
+    """The series of :func:`draw_camshaft_torsion`: the engine speed [rpm], the fluctuation of each cylinder's lobe
+    timing [cam deg] and its allowable, the largest force of the timing drive [N] and its allowable, the cylinders and
+    the speeds of the resonances in the running range [rpm]."""
+    f, t = shaft.figures, shaft.figures.response
+    return {"speed_rpm": to_display(shaft.speeds, "rpm"), "fluctuation_deg": rad_to_deg(shaft.fluctuation),
+            "allowable_deg": float(rad_to_deg(t.allowable)), "force_N": shaft.drive_forces,
+            "force_allowable_N": f.drive_allowable, "cylinders": f.cylinders,
+            "resonances_rpm": [float(to_display(r.speed, "rpm")) for r in t.resonances]}
+
+
+def draw_camshaft_torsion(d, t) -> Figure:
+    """The steady torsional response of the camshaft against the engine speed: the fluctuation of each cylinder's lobe
+    timing and the largest force of the timing drive, each with its allowable, the resonances marked."""
+    fig = Figure(figsize=(9, 7))
+    top, bottom = fig.subplots(2, 1, sharex=True)
+    for i, cylinder in enumerate(d["cylinders"]):
+        top.plot(d["speed_rpm"], d["fluctuation_deg"][:, i], lw=1.0, label=f"{t['cs_cylinder']} {cylinder}")
+    top.axhline(d["allowable_deg"], color="C3", ls="--", lw=1.0, label=t["cs_allowable"])
+    bottom.plot(d["speed_rpm"], d["force_N"], color="k", lw=1.2)
+    bottom.axhline(d["force_allowable_N"], color="C3", ls="--", lw=1.0, label=t["cs_allowable"])
+    for ax in (top, bottom):
+        for n in d["resonances_rpm"]:
+            ax.axvline(n, color="0.6", ls=":", lw=0.8)
+        ax.grid(alpha=0.3)
+        ax.legend(loc="upper left", fontsize=8)
+    top.set_ylabel(t["cs_fluctuation"])
+    bottom.set_ylabel(t["cs_drive_force"])
+    bottom.set_xlabel(t["cs_speed"])
+    fig.suptitle(t["cs_torsion_title"])
+    fig.subplots_adjust(left=0.1, right=0.97, bottom=0.08, top=0.93, hspace=0.12)
+    return _localised(fig, t)
+
+
+def camshaft_torsion_figure(shaft, t) -> Figure:
+    """:func:`draw_camshaft_torsion` of :func:`camshaft_torsion_data`."""
+    return draw_camshaft_torsion(camshaft_torsion_data(shaft), t)
+
+
 ENGINE_FIGURES = {"crank": {"crank_forces": crank_forces_figure, "crank_torque": crank_torque_figure,
                             "crank_pin_polar": crank_pin_figure},
                   "two_stroke": {"two_stroke_ports": two_stroke_ports_figure,
                                  "two_stroke_time_area": two_stroke_speed_figure},
-                  "camshaft": {"camshaft_torque": camshaft_torque_figure}}
+                  "camshaft": {"camshaft_torque": camshaft_torque_figure, "camshaft_torsion": camshaft_torsion_figure}}
 
 
 FIGURES = {"kinematics": kinematics_figure, "contour": contour_figure, "time_area": time_area_figure,
@@ -947,7 +986,7 @@ FIGURE_SETS = ("main", "all", "none")
 ``all`` every one, ``none`` none."""
 
 MAIN_FIGURES = frozenset({"kinematics", "contour", "dynamics_speed", "grinding", "hydraulic", "timing",
-                          "crank_torque", "two_stroke_ports", "camshaft_torque"})
+                          "crank_torque", "two_stroke_ports", "camshaft_torque", "camshaft_torsion"})
 """The figures drawn by default (``figures="main"``): the valve's lift law and its cam, one figure of each further
 stage that a section asks for (the dynamics' seating velocity, bounce and contact force against the speed; the
 grinding; the hydraulic drive over a revolution; the crank and camshaft torques; the ports) and the timing diagram.

@@ -430,6 +430,17 @@ class LashAdjuster(_Model):
     ramps of hydraulic cams was found; a mechanical clearance is 0.25-0.35 mm (Valve-train practical works (n.d.),
     work 2), so a ramp of at most a fifth of the smallest of it is "small".
 
+    ``plunger_eccentricity``: e / c, the offset of the plunger's axis in its bore over the radial clearance, 0
+    (concentric) to 1 (touching the bore on one side); the clearance leaks 1 + 1.5 (e / c)^2 times the concentric
+    leakage (Merritt (1967); White (2006)), 2.5 times fully eccentric.  Default 0, the concentric plunger: the least
+    leak-down, the safe side of the pump-up (a leakier plunger sinks back faster); the leak-down and the lash it
+    leaves at the valve grow with it.
+
+    ``plunger_travel_mm``: the plunger's travel from its working position (the valve seated, no lash, on the base
+    circle) out to its stop (the retaining ring), at the adjuster: pump-up extends it no further, and the valve it then
+    holds off its seat settles there.  Default 1.0 mm, the middle of the 0.5-1.5 mm (0.020-0.060 in) a hydraulic
+    lifter's plunger is set below its retaining lock in most applications (Engine Builder (2011)).
+
     Defaults: ``oil_viscosity_mPa_s`` = 10 is an SAE 30 (or xW-30) oil near 100 degC (SAE J300 (2015), as in
     ``[lubrication]``).  The other defaults are typical values of a passenger-car adjuster chosen without a cited
     source (its dimensions, the supply pressure, the plunger spring, the oil's bulk modulus of 1.5 GPa and its 2 %
@@ -448,6 +459,8 @@ class LashAdjuster(_Model):
     supply_pressure_MPa: _bounded(0.0, 2.0, "MPa", low_open=False) = 0.3
     plunger_spring_N: _bounded(0.0, 500.0, "N", low_open=False) = 15.0
     check_valve_diameter_mm: Length(0.2, 20.0, low_open=False) = 2.0
+    plunger_eccentricity: _bounded(0.0, 1.0, low_open=False, high_open=False) = 0.0
+    plunger_travel_mm: Length(0.01, 20.0, low_open=False) = 1.0
 
 
 class Valve(_Model):
@@ -485,7 +498,14 @@ class Camshaft(_Model):
     order.  ``drive_stiffness_N_per_mm`` (the drive's tangential stiffness at the pitch radius; absent: the drive
     end held) and ``sprocket_inertia_kg_mm2`` put the timing drive into the torsion.  The limits
     ``max_twist_cam_deg`` and ``min_frequency_ratio`` are engineering assumptions (no published camshaft limit was
-    found); ``drive_allowable_force_N`` is the maker's allowable of the chain, belt or gears."""
+    found); ``drive_allowable_force_N`` is the maker's allowable of the chain, belt or gears.
+
+    The torsional response over the running range: every mode damped by ``torsional_damping_ratio`` (default 0.05,
+    (0, 0.5]: an engineering assumption, the valve train's own default damping ratio of ``[dynamics]``; no published
+    damping of a camshaft's torsional modes was found), and the fluctuation of each lobe's timing graded against
+    ``max_timing_play_mm`` (default 3.175 mm, the movement of the cam sprocket against the crankshaft along its pitch
+    circle that a maker accepts in service before replacing the chain, DaimlerChrysler (2002)) over the pitch
+    radius."""
 
     valves: Optional[list[str]] = None
     cylinders: Optional[list[Annotated[int, Field(ge=1, le=64)]]] = None
@@ -507,6 +527,8 @@ class Camshaft(_Model):
     drive_allowable_force_N: _bounded(1.0, 1e8, "N")
     drive_stiffness_N_per_mm: Optional[_bounded(10.0, 1e7, "N/mm", low_open=False)] = None
     sprocket_inertia_kg_mm2: _bounded(0.0, 1e7, "kg mm2", low_open=False) = 0.0
+    torsional_damping_ratio: _bounded(0.0, 0.5) = 0.05
+    max_timing_play_mm: Length(0.01, 100.0) = 3.175
 
     @model_validator(mode="after")
     def _consistent(self):
