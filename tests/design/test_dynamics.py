@@ -290,6 +290,32 @@ def test_multi_takes_a_given_spring_and_reports_its_modes():
     assert all(max(abs(x) for x in m["shape"].values()) == pytest.approx(1.0) for m in record["modes"])
 
 
+def pushrod_multi(**dynamics):
+    """The pushrod example's intake with model = "multi" (and the [dynamics] keys given), designed: its valve."""
+    spec = load_spec(EXAMPLES / "pushrod-dynamics.toml")
+    return run(spec.replace({"valves.intake.dynamics.model": "multi",
+                             **{f"valves.intake.dynamics.{k}": v for k, v in dynamics.items()}})).valves["intake"]
+
+
+def test_the_multi_mass_springs_are_the_designed_springs_active_coils():
+    """The pushrod example's multi-mass train (issue 35): its 8 coil masses share the 3 active coils of the designed
+    spring's 5, so its first surge mode is the spring chapter's (583.58 Hz, Valve-train practical works (n.d.),
+    eq. 6.13) less the exact ratio of a chain of 8 masses, (18 / pi) sin(pi / 18); on its drive the train's lowest mode
+    lies within 1 % below that (447 Hz before: the inactive coils moved as coil mass, sqrt(3/5) lower).  Its coils
+    close at the spring's solid length: at idle the coils share the valve lift y_max (9.93 mm, the cam's 10 less the
+    drive's deflection) quasi-statically, and the least gap of a coil segment is (l_0 - l_s - y_max) / 9, l_0 - l_s =
+    43.66 - 6 x 5.1 = 13.06 mm (Valve-train practical works (n.d.), eq. 6.4 at the pitch d): 0.35 mm (the coils
+    clashed at every speed before: the closing gap counted 3 coils at the pitch of 5, 7.84 mm < 10 mm)."""
+    v = pushrod_multi(speeds=3, revolutions=2, step_cam_deg=0.5)
+    spring, d = v.drive.spring.design, v.dynamics
+    chain = 18 / np.pi * np.sin(np.pi / 18) * spring.natural_frequency
+    assert spring.natural_frequency == pytest.approx(583.58, abs=0.01)
+    assert 0.99 * chain < d.natural_frequencies[0] < chain
+    coils = [m for name, m in d.parameters.node_masses.items() if "coil" in name]
+    assert sum(coils) == pytest.approx(spring.mass * 3 / 5 * 8 / 9, rel=1e-12)
+    assert d.records.clash_margin[0] == pytest.approx((13.06e-3 - d.sweep.lift[0].max()) / 9, abs=1e-6)
+
+
 def test_one_mass_natural_frequency_and_jump_failure():
     """The one-mass train's only mode with the valve off its seat is sqrt((c + K) / M) / 2 pi (closed form); a train
     whose valve floats below [engine] over_speed_ratio x the rated speed fails (a failure, not a warning): a 5 N/mm,

@@ -19,8 +19,8 @@ import numpy as np
 from .. import lash_adjuster as hla
 from ..checks import Check, check
 from ..dynamics.models import (Adjuster, CoilSpring, MultiMassTrain, OneMassTrain, VariableMass, camshaft_stiffness,
-                               direct_train, natural_modes, one_mass_train, pushrod_stiffness, pushrod_train,
-                               rocker_train, series)
+                               coil_spring, direct_train, natural_modes, one_mass_train, pushrod_stiffness,
+                               pushrod_train, rocker_train, series)
 from ..dynamics.perturbation import perturbation_parameter
 from ..dynamics.resonance import resonance
 from ..dynamics.sweep import BOUNCE_TOLERANCE, SpeedResult, SweepResult, headline_sweep, sweep, sweep_size
@@ -298,10 +298,12 @@ def drive_links(dyn, valve, k, at) -> tuple[tuple[Optional[float], ...], tuple[s
 
 
 def _coil_springs(spring_record, coils):
-    """The designed spring(s) as :class:`CoilSpring` (rate, preload, active-coil mass, closing gap)."""
+    """The designed spring(s) as :class:`CoilSpring` (:func:`~valvetrain.dynamics.models.coil_spring`: the active
+    coils' mass in the coil masses, the end coils' with the retainer and the head, the closing gap from the installed
+    and the solid length)."""
     recs = [spring_record.design] if spring_record.count == 1 else [spring_record.outer, spring_record.inner]
-    return [CoilSpring(r.rate, r.preload, r.mass, r.active_coils * (r.installed_pitch - r.wire_diameter), int(coils))
-            for r in recs]
+    return [coil_spring(r.rate, r.preload, r.mass, r.active_coils, r.wire_diameter, r.installed_length, int(coils),
+                        r.total_coils - r.active_coils) for r in recs]
 
 
 def multi_springs(dyn, spring_record, rate, preload) -> tuple[list[CoilSpring], list[str]]:
@@ -312,7 +314,8 @@ def multi_springs(dyn, spring_record, rate, preload) -> tuple[list[CoilSpring], 
     given = (dyn.spring_rate, dyn.spring_preload_N, dyn.spring_mass_kg)
     if all(v is None for v in given):
         return designed, [f"coil masses: the designed spring's active coils in {dyn.coils_per_spring} masses per "
-                          "spring, half a segment on the valve"]
+                          "spring, half a segment on the valve; its closed end coils at the retainer on the valve, "
+                          "those at the head on the head; the active coils meet at the spring's solid length"]
     mass = sum(sp.mass for sp in designed) if dyn.spring_mass_kg is None else float(dyn.spring_mass_kg)
     told = "the designed springs' active coils" if dyn.spring_mass_kg is None else "given ([dynamics] spring_mass_kg)"
     return [CoilSpring(rate, preload, mass, 0.0, int(dyn.coils_per_spring))], [
