@@ -6,11 +6,12 @@ c / k^2 and a rocker of inertia J about its shaft as J / l_v^2.  Positive is the
 direction.  SI units: kg, N/m, N s/m, N, m.
 
 A train becomes a :class:`Network` of masses and elements that the compiled integrator of
-:mod:`.kernels` advances: bilateral spring-dampers with a preload (valve-spring coils) and
-unilateral contacts with a gap (cam contact with the lash, drive joints, valve seat).
+:mod:`.kernels` advances: bilateral spring-dampers with a preload (valve-spring coils, the held joints of a
+multi-mass drive) and unilateral contacts with a gap (cam contact with the lash, valve seat).  A multi-mass train
+starts at rest in its static equilibrium on the base circle (:func:`static_equilibrium`).
 """
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Optional
 
 import numpy as np
@@ -439,21 +440,97 @@ class _Builder:
             self.element(name, ends[i], ends[i + 1], seg_k, spring.segment_damping(), preload=spring.preload,
                          clash=seg_gap)
 
-    def seat(self, valve, stiffness, ratio, springs_preload):
+    def seat(self, valve, stiffness, ratio):
         self.damped("seat", GROUND, valve, stiffness, ratio, unilateral=True)
-        return -springs_preload / stiffness
 
     def build(self, x_valve, valve, rocker_ratio, adjuster=None, variable=None):
+        """The :class:`Network`, at rest with the valve at ``x_valve`` [m] and the drive and the coils at their share
+        of it, or (``x_valve`` None) in its :func:`static_equilibrium`."""
         rows = list(zip(*self.rows, strict=True))
         weight = np.array(self.weight)
-        x_init = x_valve * np.where(weight > 0.0, weight, 1.0)   # drive parts resting on the seated valve
-        return Network(tuple(self.names), np.array(self.mass), x_init, tuple(self.elements),
+        x_init = (np.zeros(weight.size) if x_valve is None else
+                  x_valve * np.where(weight > 0.0, weight, 1.0))   # drive parts resting on the seated valve
+        net = Network(tuple(self.names), np.array(self.mass), x_init, tuple(self.elements),
                        np.array(rows[0], dtype=np.int64), np.array(rows[1], dtype=np.int64), np.array(rows[2]),
                        np.array(rows[3]), np.array(rows[4]), np.array(rows[5]), np.array(rows[6], dtype=np.bool_),
                        np.array(rows[7]), np.array(self.weight), float(rocker_ratio),
                        NO_ADJUSTER.copy() if adjuster is None else adjuster.array(),
                        -1 if variable is None else self.names.index(variable.node),
                        NO_VARIABLE_MASS.copy() if variable is None else variable.array())
+        return net if x_valve is not None else replace(net, x_init=static_equilibrium(net))
+
+
+def static_equilibrium(network, cam=0.0) -> np.ndarray:
+    r"""Node positions of a network at rest [m]: every node's forces in balance with the cam at ``cam`` [m at the
+    valve; 0: the base circle], each contact closed exactly where it is compressed.
+
+    Parameters
+    ----------
+    network : Network
+    cam : float
+        The cam's displacement at the valve [m].
+
+    Returns
+    -------
+    ndarray (n,)
+
+    Raises
+    ------
+    ValueError
+        A node that nothing holds with its open contacts (no unique rest position).
+
+    Notes
+    -----
+    With the set A of the closed elements (the bilateral ones and the contacts closed) every element's force
+    :math:`f_e = F_{0,e} + k_e (x_a - x_b - g_e)` is linear in the positions, and the balance of the nodes is
+
+    .. math:: \mathbf K_A \mathbf x = \mathbf r_A,\quad r_i = \sum_{e:\,b_e = i} c_e - \sum_{e:\,a_e = i} c_e,\quad
+              c_e = F_{0,e} - k_e g_e + k_e (u_a - u_b)
+
+    with :math:`\mathbf K_A` the stiffness matrix of A (:meth:`Network.matrix`) and u the cam's or the ground's
+    displacement at a fixed end (0 at a node).  A is found by iteration from the contacts without a gap: solve, then
+    close every open contact the solution compresses and open every closed one in tension, until A repeats (the
+    active-set method of the linear complementarity problem of contacts; a train's contacts settle in two or three
+    passes).
+
+    References
+    ----------
+    Cottle, Pang and Stone (1992), the chapter on pivoting methods (the active set of a linear complementarity
+    problem).
+
+    Examples
+    --------
+    The one-mass train on its seat: the spring's preload on the seat and the spring in parallel,
+    x = -F_0 / (c_s + K).
+
+    >>> net = one_mass_train(0.25, 15e6, 67.5e3, 400.0, lash=3e-4, seat_stiffness=2e8).network()
+    >>> bool(np.isclose(static_equilibrium(net)[0], -400.0 / (2e8 + 67.5e3), rtol=1e-12))
+    True
+    """
+    fixed = {CAM: float(cam), GROUND: 0.0}
+    ua = np.array([fixed.get(int(a), 0.0) for a in network.a])
+    ub = np.array([fixed.get(int(b), 0.0) for b in network.b])
+    const = network.preload - network.stiffness * (network.gap - ua + ub)
+    n = network.mass.size
+    closed = ~network.unilateral | (network.gap <= 0.0)
+    for _ in range(2 * int(network.unilateral.sum()) + 2):
+        r = np.zeros(n)
+        on = closed & (network.b >= 0)
+        np.add.at(r, network.b[on], const[on])
+        on = closed & (network.a >= 0)
+        np.add.at(r, network.a[on], -const[on])
+        k = network.matrix(np.where(closed, network.stiffness, 0.0))
+        try:
+            x = np.linalg.solve(k, r)
+        except np.linalg.LinAlgError:
+            raise ValueError("no rest position: a node of the train is held by no element") from None
+        xa = np.where(network.a >= 0, x[np.maximum(network.a, 0)], ua)
+        xb = np.where(network.b >= 0, x[np.maximum(network.b, 0)], ub)
+        now = ~network.unilateral | (xa - xb - network.gap > 0.0)
+        if np.array_equal(now, closed):
+            return x
+        closed = now
+    raise ValueError("no rest position: the contacts of the train do not settle")
 
 
 @dataclass(frozen=True)
@@ -558,10 +635,7 @@ class MultiMassTrain:
     springs : tuple of CoilSpring
         Outer and inner spring (one or two).
     rocker_ratio, lash : float
-        k and the valve clearance x0 [m] at the valve.
-    lash_link : int
-        Index in ``links`` of the joint that holds the clearance (the rocker-valve joint, or the cam for a
-        bucket tappet).
+        k and the valve clearance x0 [m] at the valve, taken up at the cam contact.
     damping_ratio : float
         Of every drive link on the reduced mass of its two ends.
     seat_stiffness, seat_damping_ratio : float
@@ -577,11 +651,29 @@ class MultiMassTrain:
     Notes
     -----
     :math:`\\mathbf M\\ddot{\\mathbf x} + \\mathbf C\\dot{\\mathbf x} + \\mathbf K\\mathbf x = \\mathbf f(h,
-    \\text{contacts})`.  Every drive link is a compression-only contact (a ball joint or a
-    face transmits no tension); the coils are bilateral.  A spring of N coil masses is N + 1 segments of
-    rate (N + 1) K between the retainer and the head, masses m_s / (N + 1) inside and half of one on the
-    valve (lumped-mass discretisation of the wave equation of the coil; its lowest fixed-fixed mode tends to
-    pi sqrt(K / m_s), Valve-train practical works (n.d.) eq. 6.13, as N grows).
+    \\text{contacts})`, the train at rest in its :func:`static_equilibrium` on the base circle at the start.
+
+    Contacts.  The cam contact is compression-only and holds the clearance x0, as the specification states it (the
+    clearance h0 at the cam that the ramp takes up, Valve-train practical works (n.d.), work 2) and as the one-mass
+    train has it; the valve seat is compression-only.  The drive joints are held: between the lifts the drive parts
+    rest with the valve on its seat, the clearance open at the cam, and the chain starts each lift from rest, as the
+    drive parts of an engine do on their oil films (a pushrod on its tappet's oil, a tappet in its oiled bore).  A
+    model whose joints part in tension (bare contacts) has nothing to bring the drive parts to rest between the
+    lifts: after the first seating they float in the clearance, rattle and meet the cam at random, and the motion
+    never repeats.  Under the spring, the cam contact carries the least force of the chain: the joint between node
+    j and j + 1 carries the spring force less the inertia of the nodes from j + 1 to the valve, the cam contact
+    that of them all, so while the cam lifts the chain its contact parts first and the follower's separation (the
+    jump) is the loss of the cam contact while the valve is off its seat.
+
+    Coils.  A spring of N coil masses is N + 1 segments of rate (N + 1) K between the retainer and the head, masses
+    m_s / (N + 1) of its active coils inside and half of one on the valve, with its end coils at the retainer on
+    the valve (:func:`coil_spring`): a lumped-mass discretisation of the wave equation of the coil.  With the valve
+    held, its modes are those of a uniform fixed-fixed chain,
+
+    .. math:: \\omega_j = 2 (N + 1) \\sqrt{K / m_s}\\,\\sin\\frac{j \\pi}{2 (N + 1)},
+
+    below the continuous spring's :math:`j \\pi \\sqrt{K / m_s}` (Valve-train practical works (n.d.), eq. 6.13 for
+    j = 1) by the factor :math:`(2 (N + 1) / \\pi) \\sin(\\pi / (2 (N + 1)))`, 0.9949 at N = 8.
     """
 
     layout: str
@@ -590,7 +682,6 @@ class MultiMassTrain:
     springs: tuple
     rocker_ratio: float = 1.0
     lash: float = 0.0
-    lash_link: int = 0
     damping_ratio: float = DAMPING_RATIO
     seat_stiffness: float = SEAT_STIFFNESS
     seat_damping_ratio: float = SEAT_DAMPING_RATIO
@@ -606,12 +697,12 @@ class MultiMassTrain:
         for s, tag in zip(self.springs, ("outer", "inner"), strict=False):
             net.spring(tag, s, valve)
         ends = [CAM] + nodes
-        for i, c in enumerate(self.links):
-            name = "cam contact" if i == 0 else f"{self.drive[i - 1][0]}-{self.drive[i][0]} joint"
-            net.damped(name, ends[i], ends[i + 1], c, self.damping_ratio, unilateral=True,
-                       gap=self.lash if i == self.lash_link else 0.0)
-        x_valve = net.seat(valve, self.seat_stiffness, self.seat_damping_ratio, sum(s.preload for s in self.springs))
-        return net.build(x_valve, valve, self.rocker_ratio, self.adjuster, self.variable_mass)
+        net.damped("cam contact", CAM, nodes[0], self.links[0], self.damping_ratio, unilateral=True, gap=self.lash)
+        for i, c in enumerate(self.links[1:], start=1):
+            net.damped(f"{self.drive[i - 1][0]}-{self.drive[i][0]} joint", ends[i], ends[i + 1], c,
+                       self.damping_ratio)
+        net.seat(valve, self.seat_stiffness, self.seat_damping_ratio)
+        return net.build(None, valve, self.rocker_ratio, self.adjuster, self.variable_mass)
 
 
 def natural_modes(network, held=(), opened=()) -> tuple[np.ndarray, np.ndarray]:
@@ -707,7 +798,7 @@ def pushrod_train(tappet_mass, pushrod_mass, rocker_inertia, valve_mass, valve_a
         Valve stem between the rocker and the retainer [N/m] (a large value if the stem is rigid).
     springs : sequence of CoilSpring
     lash : float
-        Valve clearance at the valve [m] (held at the rocker-valve joint).
+        Valve clearance at the valve [m] (taken up at the cam contact).
     **kw
         ``damping_ratio``, ``seat_stiffness``, ``seat_damping_ratio`` of :class:`MultiMassTrain`.
 
@@ -723,9 +814,8 @@ def pushrod_train(tappet_mass, pushrod_mass, rocker_inertia, valve_mass, valve_a
              series(rocker_stiffness, valve_stiffness))
     notes = ("masses at the valve: m_t/k^2, m_p/k^2, J/l_v^2, valve (Valve-train practical works (n.d.) eq. 5.2)",
              "pushrod mass lumped at its middle between two halves of stiffness 2 c_p",
-             "rocker tip and valve stem stiffness in series between rocker and valve; lash at that joint")
-    return MultiMassTrain("pushrod", drive, links, tuple(springs), float(rocker_ratio), float(lash), 3,
-                          notes=notes, **kw)
+             "rocker tip and valve stem stiffness in series between rocker and valve")
+    return MultiMassTrain("pushrod", drive, links, tuple(springs), float(rocker_ratio), float(lash), notes=notes, **kw)
 
 
 def rocker_train(rocker_inertia, valve_mass, valve_arm, rocker_ratio, cam_stiffness, rocker_stiffness,
@@ -733,24 +823,23 @@ def rocker_train(rocker_inertia, valve_mass, valve_arm, rocker_ratio, cam_stiffn
     """An overhead-cam rocker (finger follower) :class:`MultiMassTrain`: cam - rocker - valve.
 
     The rocker inertia about its pivot gives J / l_v^2 at the valve; the cam stiffness (camshaft and contact,
-    cam side) counts c / k^2; the lash sits at the rocker-valve joint.
+    cam side) counts c / k^2.
     """
     drive = (("rocker", rocker_inertia / valve_arm**2), ("valve", valve_mass))
     links = (cam_stiffness / rocker_ratio**2, series(rocker_stiffness, valve_stiffness))
-    notes = ("masses at the valve: J/l_v^2, valve", "lash at the rocker-valve joint")
-    return MultiMassTrain("rocker", drive, links, tuple(springs), float(rocker_ratio), float(lash), 1,
-                          notes=notes, **kw)
+    notes = ("masses at the valve: J/l_v^2, valve",)
+    return MultiMassTrain("rocker", drive, links, tuple(springs), float(rocker_ratio), float(lash), notes=notes, **kw)
 
 
 def direct_train(tappet_mass, valve_mass, cam_stiffness, valve_stiffness, springs, lash=0.0, **kw) -> MultiMassTrain:
     """A direct-acting overhead-cam :class:`MultiMassTrain`: cam - bucket tappet - valve (k = 1).
 
-    The clearance is between the cam and the bucket (shim), so the lash sits at the cam contact.
+    The clearance is between the cam and the bucket (shim).
     """
     drive = (("tappet", tappet_mass), ("valve", valve_mass))
     links = (cam_stiffness, valve_stiffness)
-    notes = ("bucket tappet on the valve stem, lash between cam and tappet",)
-    return MultiMassTrain("direct", drive, links, tuple(springs), 1.0, float(lash), 0, notes=notes, **kw)
+    notes = ("bucket tappet on the valve stem",)
+    return MultiMassTrain("direct", drive, links, tuple(springs), 1.0, float(lash), notes=notes, **kw)
 
 
 def rocker_arm_inertia(mass, arm_valve, arm_tappet) -> float:
