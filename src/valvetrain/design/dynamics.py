@@ -230,9 +230,11 @@ class DynamicsResult:
     coil_clash_speed: Optional[float] = quantity("coil_clash_speed_rpm", "rpm", "multi: lowest speed whose coils "
                                                  "meet (null: none)", omit_none=True)
     epsilon: float = quantity("epsilon", label="perturbation parameter at the rated speed")
-    natural_frequency: float = quantity("natural_frequency_Hz", "Hz", "one-mass natural frequency sqrt((K + c)/M)")
+    natural_frequency: float = quantity("natural_frequency_Hz", "Hz", "lowest natural frequency of the simulated "
+                                        "train, the first of natural_frequencies_Hz (one mass: sqrt((K + c)/M) / 2 pi)")
     natural_frequencies: tuple[float, ...] = quantity("natural_frequencies_Hz", "Hz", "natural frequencies of the "
-                                                      "simulated train with every contact closed, ascending")
+                                                      "simulated train with the valve off its seat (every other "
+                                                      "contact closed), ascending")
     modes: tuple[Mode, ...] = quantity("modes", label="the natural modes: frequency and shape")
     max_revolutions: int = quantity("max_revolutions", label="most camshaft revolutions a speed took to repeat")
     unsettled_speeds: int = quantity("unsettled_speeds", label="speeds whose motion did not repeat within the "
@@ -359,19 +361,24 @@ def train_spring(dyn, valve, law, line, mass, cam_speed, at) -> tuple[float, flo
 
 
 REVOLUTIONS = {False: 3, True: 20}
-"""The default of ``[dynamics] revolutions``, the most camshaft revolutions a speed runs, without and with a lash
-adjuster.  A mechanical train repeats within two revolutions from rest; the plunger of a hydraulic adjuster is a slow
-state: where the follower's force falls to the adjuster's push near the valve's closing (from about 0.85 x the rated
-speed of the modern example) the plunger extends and leaks the extension back under load over several revolutions,
-its periodic state approached by about a factor of 0.1-0.3 a revolution (the modern example: 3 to 8 revolutions
-between 0.84 and 1.19 x the rated speed, 14 of its 40 speeds unsettled at 3; above its float speed, 1.2 x, the plunger
-pumps up at every revolution and the speed stays unsettled).  20 is the key's largest value."""
+"""The default of ``[dynamics] revolutions``, the most camshaft revolutions a speed runs, without and with a slow
+state (a lash adjuster, or the coil masses of a multi-mass train).  A one-mass mechanical train repeats within two
+revolutions from rest; the plunger of a hydraulic adjuster is a slow state: where the follower's force falls to the
+adjuster's push near the valve's closing (from about 0.85 x the rated speed of the modern example) the plunger extends
+and leaks the extension back under load over several revolutions, its periodic state approached by about a factor of
+0.1-0.3 a revolution (the modern example: 3 to 8 revolutions between 0.84 and 1.19 x the rated speed, 14 of its 40
+speeds unsettled at 3; above its float speed, 1.2 x, the plunger pumps up at every revolution and the speed stays
+unsettled).  The surge a lift leaves in the coils decays by exp(-zeta_1 omega_1 T) a revolution of T seconds (the first
+surge mode's damping ratio zeta_1 = :data:`~valvetrain.dynamics.models.COIL_DAMPING_RATIO` at omega_1): 0.37 at
+8750 rpm for the pushrod example's 580 Hz, some 14 revolutions from a millimetre to the 1 nm the repetition asks.  20 is
+the key's largest value."""
 
 
 def revolutions(dyn, valve) -> int:
-    """``[dynamics] revolutions`` as given, else :data:`REVOLUTIONS` of the valve (with or without a lash
-    adjuster)."""
-    return REVOLUTIONS[valve.lash_adjuster is not None] if dyn.revolutions is None else int(dyn.revolutions)
+    """``[dynamics] revolutions`` as given, else :data:`REVOLUTIONS` of the valve (with or without a lash adjuster or
+    a multi-mass train)."""
+    slow = valve.lash_adjuster is not None or dyn.model == "multi"
+    return REVOLUTIONS[slow] if dyn.revolutions is None else int(dyn.revolutions)
 
 
 def adjuster_reference_force(valve, law, drive, cam_speed: float, ratio: float) -> float:
@@ -796,7 +803,7 @@ def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, 
         dyn.model, params, (float(low), float(high)), int(dyn.speeds), crank(head["jump_speed"]),
         crank(head["bounce_onset_speed"]), head["max_seating_velocity"], crank(head["max_seating_velocity_speed"]),
         crank(head["coil_clash_speed"]) if dyn.model == "multi" else None, eps_rated,
-        float(np.sqrt((kk + c) / m) / (2 * np.pi)), tuple(mode.frequency for mode in modes), modes,
+        modes[0].frequency, tuple(mode.frequency for mode in modes), modes,
         int(result.revolutions.max()), int(np.count_nonzero(~result.converged)), rated_record, reson, table,
         f"tables/{name}_dynamics.csv", result, per, rated)
     return out, dynamics_checks(out, engine, 0.0 if train.adjuster is None else train.adjuster.motion_ratio)
