@@ -289,37 +289,59 @@ def bounces(lift, first_seating, tolerance=BOUNCE_TOLERANCE) -> tuple[np.ndarray
     return np.where(after.any(axis=-1) & ~(0.0 > largest), largest, 0.0), count
 
 
-def lift_event(kinematic, lift) -> np.ndarray:
-    """Mask of the cam's lift event as the valve lives it: from the first angle where the cam's lift is positive to
-    the valve's first return to its seat after it (a downward crossing of y = 0), or to the end of the record.
+def lift_event(kinematic, lift, follower=None, tolerance=BOUNCE_TOLERANCE) -> np.ndarray:
+    """Mask of the cam's lift event as the valve lives it: from the cam's catching the valve (the cam's lift positive,
+    the valve off its seat by more than ``tolerance`` [m], the seat's elastic rocking, :data:`BOUNCE_TOLERANCE`, and
+    the follower on the cam) to the valve's first return to its seat after its largest
+    lift (the first sample at or below the seat), the catching the first after that return and after the cam's
+    lowest point, round the revolution.
 
-    A valve that rebounds from its seat after that return bounces; before it, the cam should be carrying the valve.
-    ``lift`` may hold a record per row (S, n), of one rigid lift ``kinematic`` (n,).
+    The record is one period of the motion, so the event may run over its end: a cam without a base circle (an
+    eccentric) lifts again as soon as it has lowered the valve.  A valve that rebounds from its seat bounces, and the
+    cam that goes on lowering may touch it, until the cam lifts it again; from that catching to the return, the cam
+    should be carrying the valve.  Without a return (a valve that never seats) every sample; without a catching (a
+    valve that floats over the cam) from the first sample where the cam's lift is positive to the return.  ``lift`` (and ``follower``, the node on the
+    cam where it is not the valve, :func:`separation_mask`) may hold a record per row (S, n), of one rigid lift
+    ``kinematic`` (n,).
 
     >>> lift_event(np.array([-1.0, 1.0, 2.0, 1.0, 0.5, -1.0]), np.array([0.0, 0.5, 1.5, 0.2, -0.1, 0.3])).tolist()
     [False, True, True, True, False, False]
+
+    An eccentric: the valve returns to its seat at sample 3 and rebounds over the end of the record, above the rising
+    cam at samples 4 and 0; the cam catches it at sample 1, so the event runs from 1 to 3:
+
+    >>> lift_event(np.array([0.1, 1.0, 2.0, 1.0, 0.2]), np.array([0.4, 0.8, 1.9, -0.1, 0.3])).tolist()
+    [False, True, True, False, False]
     """
-    index = np.arange(lift.shape[-1])
+    lift = np.asarray(lift)
+    follower = lift if follower is None else follower
+    n = lift.shape[-1]
+    index = np.arange(n)
+    peak = np.expand_dims(np.argmax(lift, axis=-1), -1)
+    after_peak = np.min(np.where(lift <= 0.0, (index - peak) % n, n), axis=-1, keepdims=True)
+    returned = (after_peak < n) & (np.max(lift, axis=-1, keepdims=True) > 0.0)
+    seat = (peak + after_peak) % n
+    bottom = (seat + np.min(np.where(kinematic <= kinematic.min(), (index - seat) % n, n), axis=-1, keepdims=True)) % n
+    caught = (kinematic > 0.0) & (lift > tolerance) & (follower < kinematic)
+    after = np.min(np.where(caught, (index - bottom) % n, n), axis=-1, keepdims=True)
     rising = np.flatnonzero(kinematic > 0.0)
-    if rising.size == 0:
-        return np.zeros(lift.shape, dtype=bool)
-    start = int(rising[0])
-    down = (lift[..., 1:] <= 0.0) & (lift[..., :-1] > 0.0) & (index[1:] > start)
-    end = np.where(down.any(axis=-1), np.argmax(down, axis=-1) + 1, lift.shape[-1])
-    return (index >= start) & (index < np.expand_dims(end, -1))
+    start = np.where(after < n, (bottom + after) % n, rising[0] if rising.size else seat)
+    inside = (index - start) % n < (seat - start) % n
+    return np.where(returned, inside, rising.size > 0)
 
 
-def separation_mask(contact, kinematic, lift, event=None, follower=None) -> np.ndarray:
-    """Follower separation (jump): no contact force, the follower at or above the cam and the valve off its seat,
-    while the cam's lift is positive during the lift event (:func:`lift_event`).
+def separation_mask(contact, kinematic, lift, event=None, follower=None, tolerance=BOUNCE_TOLERANCE) -> np.ndarray:
+    """Follower separation (jump): no contact force, the follower at or above the cam and the valve off its seat (by
+    more than ``tolerance`` [m]: below it the valve rocks on the seat's elasticity, :data:`BOUNCE_TOLERANCE`), while
+    the cam's lift is positive during the lift event (:func:`lift_event`).
 
     Only the cam's lift decides whether the cam should be carrying the valve: a valve thrown above the cam, or one
     that never comes down to it while the cam lifts, has jumped; a valve that rebounds from its seat after the event
     has returned it there bounces, it does not jump.  The follower must be at or above the cam's rigid lift (the
     contact's gap open): a contact whose damping releases it an instant before the gap opens has not separated.
     ``follower`` is the position of the node on the cam [m at the valve] where it is not the valve (the first drive
-    part of a multi-mass train: the valve behind an elastic drive lags it); the valve's ``lift`` must be positive.
-    ``contact``, ``lift`` and ``follower`` may hold a record per row (S, n); ``event``: their :func:`lift_event`, if
+    part of a multi-mass train: the valve behind an elastic drive lags it).  ``contact``, ``lift`` and ``follower`` may
+    hold a record per row (S, n); ``event``: their :func:`lift_event`, if
     found.
 
     >>> separation_mask(np.array([0.0, 0.0, 5.0, 0.0, 0.0]), np.array([-1e-4, 1e-3, 1e-3, 3e-6, 2e-6]),
@@ -333,14 +355,15 @@ def separation_mask(contact, kinematic, lift, event=None, follower=None) -> np.n
     ...                 follower=np.array([0.999e-3, 1.001e-3])).tolist()
     [False, True]
     """
+    event = lift_event(kinematic, lift, follower, tolerance) if event is None else event
     follower = lift if follower is None else follower
-    return ((contact <= 0.0) & (kinematic > 0.0) & (follower >= kinematic) & (lift > 0.0)
-            & (lift_event(kinematic, lift) if event is None else event))
+    return (contact <= 0.0) & (kinematic > 0.0) & (follower >= kinematic) & (lift > tolerance) & event
 
 
-def lowest_lifting_force(contact, kinematic, lift, separated, event=None) -> np.ndarray:
+def lowest_lifting_force(contact, kinematic, lift, separated, event=None, tolerance=BOUNCE_TOLERANCE) -> np.ndarray:
     """Smallest cam contact force while the cam carries the open valve [N]: 0 with a separation, else the least where
-    the cam's lift is positive and the valve is off its seat during the lift event (:func:`lift_event`; after it
+    the cam's lift is positive and the valve is off its seat (by more than ``tolerance`` [m], as
+    :func:`separation_mask` has it) during the lift event (:func:`lift_event`; after it
     the cam lowers the seated valve to its base circle and the force falls to 0 without a separation); nan if the
     valve never leaves its seat while the cam lifts.  ``contact`` and ``lift`` may hold a record per row (S, n),
     ``separated`` one flag per row (and ``event``, :func:`lift_event`, if found): one force per row.
@@ -349,7 +372,8 @@ def lowest_lifting_force(contact, kinematic, lift, separated, event=None) -> np.
     ...                            np.array([0.0, 1e-3, 2e-3, -1e-7, 1e-7]), False))
     50.0
     """
-    lifting = (kinematic > 0.0) & (lift > 0.0) & (lift_event(kinematic, lift) if event is None else event)
+    lifting = (kinematic > 0.0) & (lift > tolerance) & (lift_event(kinematic, lift, tolerance=tolerance) if event
+                                                          is None else event)
     least = np.min(contact, axis=-1, where=lifting, initial=np.inf)
     return np.where(separated, 0.0, np.where(lifting.any(axis=-1), least, np.nan))
 
@@ -361,14 +385,15 @@ def speed_result(cam_speed, theta, lift, velocity, kinematic, contact, seat, spr
     the position of the node on the cam [m at the valve], where it is not the valve (:func:`separation_mask`)."""
     step_time = float(theta[1] - theta[0]) / cam_speed
     i_seat, seat_angle, seat_velocity = seating(theta, lift, velocity, acceleration, step_time)
-    separation = separation_mask(contact, kinematic, lift, follower=follower)
+    event = lift_event(kinematic, lift, follower, bounce_tolerance)
+    separation = separation_mask(contact, kinematic, lift, event, follower, bounce_tolerance)
     intervals = runs(separation)
     jumps = np.column_stack([theta[intervals[:, 0]], theta[intervals[:, 1] - 1]]) if intervals.size else \
         np.zeros((0, 2))
     height, count = (float(x[0]) for x in bounces(lift[None], np.array([i_seat]), bounce_tolerance))
     return SpeedResult(float(cam_speed), theta, lift, velocity, kinematic, contact, seat, spring, contact * slope,
                        separation, jumps, seat_angle, seat_velocity, height, int(count), surge, clash,
-                       float(lowest_lifting_force(contact, kinematic, lift, intervals.size > 0)),
+                       float(lowest_lifting_force(contact, kinematic, lift, intervals.size > 0, event, bounce_tolerance)),
                        int(revolutions), bool(converged), adjuster_extension)
 
 
@@ -411,15 +436,16 @@ def sweep_events(result) -> SweepEvents:
     theta, kinematic, lift = result.theta, result.kinematic_lift, result.lift
     index, angle, velocity = seatings(theta, lift, result.velocity, result.acceleration,
                                       float(theta[1] - theta[0]) / result.cam_speeds)
-    event = lift_event(kinematic, lift)
-    separation = separation_mask(result.contact_force, kinematic, lift, event, result.follower_lift)
+    event = lift_event(kinematic, lift, result.follower_lift, result.bounce_tolerance)
+    separation = separation_mask(result.contact_force, kinematic, lift, event, result.follower_lift,
+                                 result.bounce_tolerance)
     jumped = separation.any(axis=-1)
     last = lift.shape[-1] - 1 - np.argmax(separation[:, ::-1], axis=-1)
     height, count = bounces(lift, index, result.bounce_tolerance)
     return SweepEvents(index, angle, velocity, height, count, jumped,
                        np.where(jumped, theta[np.argmax(separation, axis=-1)], np.nan),
                        np.where(jumped, theta[last], np.nan),
-                       lowest_lifting_force(result.contact_force, kinematic, lift, jumped, event))
+                       lowest_lifting_force(result.contact_force, kinematic, lift, jumped, event, result.bounce_tolerance))
 
 
 def zero_crossing(speeds, values, hit) -> float:
