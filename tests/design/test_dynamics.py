@@ -334,6 +334,28 @@ def test_the_multi_mass_pushrod_train_settles_and_jumps_below_its_rated_speed(pu
     assert jump.severity == "failure" and not jump.passed
 
 
+def test_a_speed_whose_motion_does_not_repeat_says_why():
+    """The pushrod example's multi-mass train held to 2 revolutions a speed: the speeds that did not repeat are counted
+    and explained, those whose follower separates or whose valve bounces apart; at the others the slowest vibration
+    between the lifts is the coils' first surge mode, the spring chapter's 583.58 Hz times the chain's (18 / pi)
+    sin(pi / 18) = 580.6 Hz (the valve on its seat), damped at zeta_1 = 0.02: it decays by exp(-zeta_1 2 pi f T) a
+    camshaft revolution of T = 120 / n seconds at n engine rpm, and needs ln(1 mm / 1 nm) / (zeta_1 2 pi f T)
+    revolutions there (by hand, within the digits printed).  Where every speed repeats there is no note."""
+    example = load_spec(EXAMPLES / "pushrod-dynamics.toml")
+    d = run(example.replace({"valves.intake.dynamics.model": "multi", "valves.intake.dynamics.speeds": 8,
+                             "valves.intake.dynamics.revolutions": 2})).valves["intake"].dynamics
+    found = re.search(r"at (\d+) the slowest vibration of the train, (\d+) Hz, decays by a factor ([\d.e-]+) a "
+                      r"revolution at (\d+) rpm: about (\d+) revolutions from 1 mm to the repetition's 1 nm$",
+                      d.unsettled_note)
+    assert d.unsettled_note.startswith(f"{d.unsettled_speeds} of 8 speeds, ") and found, d.unsettled_note
+    surge = 583.58 * 18 / np.pi * np.sin(np.pi / 18)
+    decay = 0.02 * 2 * np.pi * surge * 120.0 / float(found[4])
+    assert float(found[2]) == pytest.approx(surge, abs=1.0)
+    assert float(found[3]) == pytest.approx(np.exp(-decay), rel=0.03)            # printed to 2 digits
+    assert float(found[5]) == pytest.approx(np.log(1e6) / decay, abs=1.0)
+    assert run(spec(FEW)).valves["intake"].dynamics.unsettled_note is None
+
+
 def test_one_mass_natural_frequency_and_jump_failure():
     """The one-mass train's only mode with the valve off its seat is sqrt((c + K) / M) / 2 pi (closed form); a train
     whose valve floats below [engine] over_speed_ratio x the rated speed fails (a failure, not a warning): a 5 N/mm,

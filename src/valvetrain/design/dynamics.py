@@ -20,10 +20,11 @@ from .. import lash_adjuster as hla
 from ..checks import Check, check
 from ..dynamics.models import (Adjuster, CoilSpring, MultiMassTrain, OneMassTrain, VariableMass, camshaft_stiffness,
                                coil_spring, direct_train, natural_modes, one_mass_train, pushrod_stiffness,
-                               pushrod_train, rocker_train, series)
+                               pushrod_train, rocker_train, series, slowest_decay)
 from ..dynamics.perturbation import perturbation_parameter
 from ..dynamics.resonance import resonance
-from ..dynamics.sweep import BOUNCE_TOLERANCE, SpeedResult, SweepResult, headline_sweep, sweep, sweep_size
+from ..dynamics.sweep import (BOUNCE_TOLERANCE, STATE_TOLERANCE, SpeedResult, SweepResult, headline_sweep, sweep,
+                              sweep_size)
 from ..followers import follower_of
 from ..layouts import chain, finger_inertia, layout, valve_arm
 from ..specification import SpecError
@@ -239,6 +240,8 @@ class DynamicsResult:
     max_revolutions: int = quantity("max_revolutions", label="most camshaft revolutions a speed took to repeat")
     unsettled_speeds: int = quantity("unsettled_speeds", label="speeds whose motion did not repeat within the "
                                      "revolutions key (the last revolution recorded)")
+    unsettled_note: Optional[str] = quantity("unsettled_note", label="why those speeds did not repeat (null: every "
+                                             "speed repeated)", omit_none=True)
     at_rated_speed: SpeedRecord = quantity("at_rated_speed")
     resonance: ResonanceRecord = quantity("resonance")
     per_speed: PerSpeed = quantity("per_speed")
@@ -804,9 +807,66 @@ def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, 
         crank(head["bounce_onset_speed"]), head["max_seating_velocity"], crank(head["max_seating_velocity_speed"]),
         crank(head["coil_clash_speed"]) if dyn.model == "multi" else None, eps_rated,
         modes[0].frequency, tuple(mode.frequency for mode in modes), modes,
-        int(result.revolutions.max()), int(np.count_nonzero(~result.converged)), rated_record, reson, table,
+        int(result.revolutions.max()), int(np.count_nonzero(~result.converged)),
+        unsettled_note(result, speeds, net, revs, train.adjuster is not None), rated_record, reson, table,
         f"tables/{name}_dynamics.csv", result, per, rated)
     return out, dynamics_checks(out, engine, 0.0 if train.adjuster is None else train.adjuster.motion_ratio)
+
+
+SETTLE_FROM = 1e-3
+"""The amplitude [m] from which :func:`unsettled_note` counts the revolutions a vibration takes to fall to the
+repetition's tolerance (:data:`~valvetrain.dynamics.sweep.STATE_TOLERANCE`)."""
+
+
+def unsettled_note(result, speeds, network, revolutions, adjuster=False) -> Optional[str]:
+    """Why the speeds of a sweep whose motion did not repeat within ``revolutions`` did not; None where every speed
+    repeated.
+
+    Parameters
+    ----------
+    result : valvetrain.dynamics.sweep.SweepResult
+    speeds : ndarray (S,)
+        Its engine speeds [rad/s].
+    network : valvetrain.dynamics.models.Network
+        The train simulated.
+    revolutions : int
+        The most camshaft revolutions a speed ran.
+    adjuster : bool
+        The train has a hydraulic lash adjuster.
+
+    Returns
+    -------
+    str or None
+        How many speeds and their range, and the reasons: at the speeds whose follower separates or whose valve
+        bounces, a motion that need not repeat; at the others the lash adjuster's plunger (a slow state), or the
+        slowest vibration of the train between the lifts (:func:`~valvetrain.dynamics.models.slowest_decay`, the
+        clearance open, the valve on its seat): its decay exp(-sigma T) a revolution of T seconds at the highest of
+        those speeds (where it decays least) and the revolutions ln(:data:`SETTLE_FROM` / tolerance) / (sigma T) it
+        takes there from a millimetre to the repetition's tolerance.
+    """
+    bad = ~result.converged
+    if not bad.any():
+        return None
+    rpm = speeds / rpm_to_rad_s(1.0)
+    events = result.events
+    moving = bad & (events.jumped | (events.bounce_count > 0))
+    rest = bad & ~moving
+    parts = [f"{np.count_nonzero(bad)} of {bad.size} speeds, {rpm[bad].min():.0f} to {rpm[bad].max():.0f} rpm, did "
+             f"not repeat within {revolutions} revolutions"]
+    if moving.any():
+        parts.append(f"at {np.count_nonzero(moving)} of them the follower separates or the valve bounces (a motion "
+                     "that need not repeat)")
+    if rest.any() and adjuster:
+        parts.append(f"at {np.count_nonzero(rest)} the lash adjuster's plunger still moves from one revolution to the "
+                     "next")
+    elif rest.any():
+        omega, sigma = slowest_decay(network, opened=("cam contact",) if network.lash > 0.0 else ())
+        decay = sigma * 2.0 * np.pi / result.cam_speeds[rest].max()
+        parts.append(f"at {np.count_nonzero(rest)} the slowest vibration of the train, {omega / (2 * np.pi):.0f} Hz, "
+                     f"decays by a factor {np.exp(-decay):.2g} a revolution at {rpm[rest].max():.0f} rpm: about "
+                     f"{np.log(SETTLE_FROM / STATE_TOLERANCE) / decay:.0f} revolutions from {SETTLE_FROM / MM:g} mm "
+                     f"to the repetition's {STATE_TOLERANCE * 1e9:g} nm")
+    return "; ".join(parts)
 
 
 CHECK_CODES = ("dynamics.seating_velocity", "dynamics.jump_speed", "dynamics.valve_opens")

@@ -738,6 +738,36 @@ def natural_modes(network, held=(), opened=()) -> tuple[np.ndarray, np.ndarray]:
     return np.sqrt(np.clip(values, 0.0, None)), shapes / peak
 
 
+def slowest_decay(network, opened=()) -> tuple[float, float]:
+    r"""The least damped vibration of a network with the elements ``opened`` open and every other contact closed:
+    its damped frequency [rad/s] and its decay rate sigma [1/s] (its amplitude falls by exp(-sigma t) in t seconds).
+
+    Notes
+    -----
+    The eigenvalues :math:`\lambda = -\sigma \pm i \omega_d` of the linearised state matrix
+    :math:`[[0, I], [-M^{-1} K, -M^{-1} C]]` (:meth:`Network.highest_frequency`'s), the one of the smallest sigma.
+
+    Examples
+    --------
+    One mass on a spring and a damper of ratio zeta: sigma = zeta omega_n, omega_d = omega_n sqrt(1 - zeta^2).
+
+    >>> net = one_mass_train(0.25, 15e6, 67.5e3, 400.0, damping_ratio=0.05).network()
+    >>> w, sigma = slowest_decay(net, opened=("seat",))
+    >>> wn = np.sqrt((15e6 + 67.5e3) / 0.25)
+    >>> bool(np.isclose(sigma, net.damping[0] / 0.5) and np.isclose(w, np.sqrt(wn**2 - sigma**2)))
+    True
+    """
+    closed = ~np.isin(network.elements, opened)
+    n = network.mass.size
+    inv = (1.0 / network.mass)[:, None]
+    state = np.block([[np.zeros((n, n)), np.eye(n)],
+                      [-inv * network.matrix(np.where(closed, network.stiffness, 0.0)),
+                       -inv * network.matrix(np.where(closed, network.damping, 0.0))]])
+    values = np.linalg.eigvals(state)
+    slowest = values[np.argmax(values.real)]
+    return float(abs(slowest.imag)), float(-slowest.real)
+
+
 def natural_frequencies(network, held=()) -> np.ndarray:
     """Natural frequencies of a network with every contact closed and no damping [rad/s], ascending
     (:func:`natural_modes`).
