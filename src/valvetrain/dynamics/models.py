@@ -653,17 +653,20 @@ class MultiMassTrain:
     :math:`\\mathbf M\\ddot{\\mathbf x} + \\mathbf C\\dot{\\mathbf x} + \\mathbf K\\mathbf x = \\mathbf f(h,
     \\text{contacts})`, the train at rest in its :func:`static_equilibrium` on the base circle at the start.
 
-    Contacts.  The cam contact is compression-only and holds the clearance x0, as the specification states it (the
-    clearance h0 at the cam that the ramp takes up, Valve-train practical works (n.d.), work 2) and as the one-mass
-    train has it; the valve seat is compression-only.  The drive joints are held: between the lifts the drive parts
-    rest with the valve on its seat, the clearance open at the cam, and the chain starts each lift from rest, as the
-    drive parts of an engine do on their oil films (a pushrod on its tappet's oil, a tappet in its oiled bore).  A
-    model whose joints part in tension (bare contacts) has nothing to bring the drive parts to rest between the
-    lifts: after the first seating they float in the clearance, rattle and meet the cam at random, and the motion
-    never repeats.  Under the spring, the cam contact carries the least force of the chain: the joint between node
-    j and j + 1 carries the spring force less the inertia of the nodes from j + 1 to the valve, the cam contact
-    that of them all, so while the cam lifts the chain its contact parts first and the follower's separation (the
-    jump) is the loss of the cam contact while the valve is off its seat.
+    Contacts (the convention of this model).  The cam contact is compression-only and holds the clearance x0, as the
+    specification states it (the clearance h0 at the cam that the ramp takes up, Valve-train practical works (n.d.),
+    work 2) and as the one-mass train has it; the valve seat is compression-only.  The drive joints are held
+    (bilateral): the drive parts stay together and with the valve, so between the lifts they rest with the valve on
+    its seat, the clearance open at the cam, and start each lift from rest.  In an engine the clearance of a pushrod
+    train sits at the rocker's adjusting screw and the parts are kept together only by their weight and the oil of
+    their joints and of the tappet's bore, forces this model does not have: with bare compression-only joints
+    nothing brings the drive parts to rest between the lifts, they float in the clearance after the first seating,
+    rattle and meet the cam at random, and the motion never repeats.  Under the spring the cam contact carries the
+    least force of the chain (the joint between nodes j and j + 1 carries the spring force less the inertia of the
+    nodes from j + 1 to the valve, the cam contact that of them all), so while the cam decelerates the chain the cam
+    contact parts first, and the follower's separation (the jump) is the loss of the cam contact while the valve is
+    off its seat; a held joint would carry tension only where the chain's own vibration outruns that order (none of
+    the pushrod example's joints does while its valve is off its seat, up to 8000 rpm).
 
     Coils.  A spring of N coil masses is N + 1 segments of rate (N + 1) K between the retainer and the head, masses
     m_s / (N + 1) of its active coils inside and half of one on the valve, with its end coils at the retainer on
