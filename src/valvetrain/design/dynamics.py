@@ -851,8 +851,9 @@ def unsettled_note(result, speeds, network, revolutions, adjuster=False) -> Opti
     events = result.events
     moving = bad & (events.jumped | (events.bounce_count > 0))
     rest = bad & ~moving
-    parts = [f"{np.count_nonzero(bad)} of {bad.size} speeds, {rpm[bad].min():.0f} to {rpm[bad].max():.0f} rpm, did "
-             f"not repeat within {revolutions} revolutions"]
+    span = f"{rpm[bad].min():.0f}" + (f" to {rpm[bad].max():.0f}" if np.ptp(rpm[bad]) > 0.0 else "")
+    parts = [f"{np.count_nonzero(bad)} of {bad.size} speeds, {span} rpm, did not repeat within {revolutions} "
+             "revolutions"]
     if moving.any():
         parts.append(f"at {np.count_nonzero(moving)} of them the follower separates or the valve bounces (a motion "
                      "that need not repeat)")
