@@ -227,6 +227,11 @@ WORKS = {
         authors="Hairer, E.; Nørsett, S. P.; Wanner, G.",
         title="Solving Ordinary Differential Equations I: Nonstiff Problems, 2nd ed.", kind="book",
         publisher="Springer", place="Berlin", year="1993"),
+    "cottle1992": Work(
+        short="Cottle, Pang and Stone (1992)",
+        authors="Cottle, R. W.; Pang, J.-S.; Stone, R. E.",
+        title="The Linear Complementarity Problem", kind="book", publisher="Academic Press", place="Boston",
+        year="1992"),
     "dowell1971": Work(
         short="Dowell and Jarratt (1971)",
         authors="Dowell, M.; Jarratt, P.",

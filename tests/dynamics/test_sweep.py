@@ -190,6 +190,35 @@ def test_jump_speed_of_a_harmonic_cam_closed_form():
     assert below.jump_intervals.size == 0 and below.min_contact_force > 0.0   # undamped seat: a bounce, no jump
 
 
+def eccentric(lift):
+    """A cam without a base circle: an eccentric disc under a flat follower, h = L/2 (1 + cos theta) (0 at -pi)."""
+    def derivatives(theta):
+        return np.array([0.5 * lift * (1 + np.cos(theta)), -0.5 * lift * np.sin(theta), -0.5 * lift * np.cos(theta)])
+    return SimpleNamespace(derivatives=derivatives)
+
+
+def test_an_eccentric_jumps_only_where_its_follower_leaves_it():
+    """A cam with no base circle (issue 35): an eccentric on a one-mass train without clearance, a stiff drive
+    (c = 1e8 N/m, zeta = 0.1) and an undamped seat.  Closed form (rigid drive): F = F0 + K h + M h'' omega^2 with
+    h'' = -L/2 cos theta is least at the nose once M omega^2 > K, zero at omega_j = sqrt(2 (F0 + K L) / (M L)) = 836.7
+    rad/s (L = 8 mm, M = 0.25 kg, K = 50 N/mm, F0 = 300 N); the drive's compliance shifts it by (omega / omega_n)^2 =
+    0.2 %.  The valve seats near the eccentric's lowest point, where the cam lifts again at once, and rocks on the
+    seat's elasticity (under 1 um) while the cam's lift is a few nanometres: no separation, the valve is not off its
+    seat; and a bounce that runs over the record's start is no jump (the lift event is the revolution's, from the cam
+    lifting the valve after its lowest point to the valve's return to its seat).  Main reported a jump from -180 cam
+    deg at every speed from 0.5 omega_j.  Now no speed from 0.3 to 0.98 omega_j separates, the jump speed is within
+    0.5 % of omega_j, the first separation about the nose."""
+    lift, mass, rate, preload = 8e-3, 0.25, 50e3, 300.0
+    exact = np.sqrt(2 * (preload + rate * lift) / (mass * lift))
+    train = one_mass_train(mass, 1e8, rate, preload, damping_ratio=0.1, seat_damping_ratio=0.0)
+    speeds = np.concatenate([np.linspace(0.3, 0.9, 7), np.linspace(0.95, 1.05, 21) * 1.0013]) * exact
+    r = sweep(eccentric(lift), train, speeds)
+    jumped = r.events.jumped
+    assert not jumped[speeds < 0.98 * exact].any() and jumped[-1]
+    assert abs(r.headline()["jump_speed"] / exact - 1) < 5e-3
+    assert abs(np.degrees(r.events.jump_from[np.argmax(jumped)])) < 30.0
+
+
 def test_the_events_of_a_sweep_at_once_are_each_speeds_own():
     """SweepResult.events finds every speed's events over the speeds at once (numpy over the rows, as the design's
     per-speed table reads them): the same numbers, bit for bit, as speed_result's of each speed alone (the record

@@ -19,11 +19,12 @@ import numpy as np
 from .. import lash_adjuster as hla
 from ..checks import Check, check
 from ..dynamics.models import (Adjuster, CoilSpring, MultiMassTrain, OneMassTrain, VariableMass, camshaft_stiffness,
-                               direct_train, natural_modes, one_mass_train, pushrod_stiffness, pushrod_train,
-                               rocker_train, series)
+                               coil_spring, direct_train, natural_modes, one_mass_train, pushrod_stiffness,
+                               pushrod_train, rocker_train, series, slowest_decay)
 from ..dynamics.perturbation import perturbation_parameter
 from ..dynamics.resonance import resonance
-from ..dynamics.sweep import BOUNCE_TOLERANCE, SpeedResult, SweepResult, headline_sweep, sweep, sweep_size
+from ..dynamics.sweep import (BOUNCE_TOLERANCE, STATE_TOLERANCE, SpeedResult, SweepResult, headline_sweep, sweep,
+                              sweep_size)
 from ..followers import follower_of
 from ..layouts import chain, finger_inertia, layout, valve_arm
 from ..specification import SpecError
@@ -230,13 +231,17 @@ class DynamicsResult:
     coil_clash_speed: Optional[float] = quantity("coil_clash_speed_rpm", "rpm", "multi: lowest speed whose coils "
                                                  "meet (null: none)", omit_none=True)
     epsilon: float = quantity("epsilon", label="perturbation parameter at the rated speed")
-    natural_frequency: float = quantity("natural_frequency_Hz", "Hz", "one-mass natural frequency sqrt((K + c)/M)")
+    natural_frequency: float = quantity("natural_frequency_Hz", "Hz", "lowest natural frequency of the simulated "
+                                        "train, the first of natural_frequencies_Hz (one mass: sqrt((K + c)/M) / 2 pi)")
     natural_frequencies: tuple[float, ...] = quantity("natural_frequencies_Hz", "Hz", "natural frequencies of the "
-                                                      "simulated train with every contact closed, ascending")
+                                                      "simulated train with the valve off its seat (every other "
+                                                      "contact closed), ascending")
     modes: tuple[Mode, ...] = quantity("modes", label="the natural modes: frequency and shape")
     max_revolutions: int = quantity("max_revolutions", label="most camshaft revolutions a speed took to repeat")
     unsettled_speeds: int = quantity("unsettled_speeds", label="speeds whose motion did not repeat within the "
                                      "revolutions key (the last revolution recorded)")
+    unsettled_note: Optional[str] = quantity("unsettled_note", label="why those speeds did not repeat (null: every "
+                                             "speed repeated)", omit_none=True)
     at_rated_speed: SpeedRecord = quantity("at_rated_speed")
     resonance: ResonanceRecord = quantity("resonance")
     per_speed: PerSpeed = quantity("per_speed")
@@ -298,10 +303,12 @@ def drive_links(dyn, valve, k, at) -> tuple[tuple[Optional[float], ...], tuple[s
 
 
 def _coil_springs(spring_record, coils):
-    """The designed spring(s) as :class:`CoilSpring` (rate, preload, active-coil mass, closing gap)."""
+    """The designed spring(s) as :class:`CoilSpring` (:func:`~valvetrain.dynamics.models.coil_spring`: the active
+    coils' mass in the coil masses, the end coils' with the retainer and the head, the closing gap from the installed
+    and the solid length)."""
     recs = [spring_record.design] if spring_record.count == 1 else [spring_record.outer, spring_record.inner]
-    return [CoilSpring(r.rate, r.preload, r.mass, r.active_coils * (r.installed_pitch - r.wire_diameter), int(coils))
-            for r in recs]
+    return [coil_spring(r.rate, r.preload, r.mass, r.active_coils, r.wire_diameter, r.installed_length, int(coils),
+                        r.total_coils - r.active_coils) for r in recs]
 
 
 def multi_springs(dyn, spring_record, rate, preload) -> tuple[list[CoilSpring], list[str]]:
@@ -312,7 +319,8 @@ def multi_springs(dyn, spring_record, rate, preload) -> tuple[list[CoilSpring], 
     given = (dyn.spring_rate, dyn.spring_preload_N, dyn.spring_mass_kg)
     if all(v is None for v in given):
         return designed, [f"coil masses: the designed spring's active coils in {dyn.coils_per_spring} masses per "
-                          "spring, half a segment on the valve"]
+                          "spring, half a segment on the valve; its closed end coils at the retainer on the valve, "
+                          "those at the head on the head; the active coils meet at the spring's solid length"]
     mass = sum(sp.mass for sp in designed) if dyn.spring_mass_kg is None else float(dyn.spring_mass_kg)
     told = "the designed springs' active coils" if dyn.spring_mass_kg is None else "given ([dynamics] spring_mass_kg)"
     return [CoilSpring(rate, preload, mass, 0.0, int(dyn.coils_per_spring))], [
@@ -356,19 +364,24 @@ def train_spring(dyn, valve, law, line, mass, cam_speed, at) -> tuple[float, flo
 
 
 REVOLUTIONS = {False: 3, True: 20}
-"""The default of ``[dynamics] revolutions``, the most camshaft revolutions a speed runs, without and with a lash
-adjuster.  A mechanical train repeats within two revolutions from rest; the plunger of a hydraulic adjuster is a slow
-state: where the follower's force falls to the adjuster's push near the valve's closing (from about 0.85 x the rated
-speed of the modern example) the plunger extends and leaks the extension back under load over several revolutions,
-its periodic state approached by about a factor of 0.1-0.3 a revolution (the modern example: 3 to 8 revolutions
-between 0.84 and 1.19 x the rated speed, 14 of its 40 speeds unsettled at 3; above its float speed, 1.2 x, the plunger
-pumps up at every revolution and the speed stays unsettled).  20 is the key's largest value."""
+"""The default of ``[dynamics] revolutions``, the most camshaft revolutions a speed runs, without and with a slow
+state (a lash adjuster, or the coil masses of a multi-mass train).  A one-mass mechanical train repeats within two
+revolutions from rest; the plunger of a hydraulic adjuster is a slow state: where the follower's force falls to the
+adjuster's push near the valve's closing (from about 0.85 x the rated speed of the modern example) the plunger extends
+and leaks the extension back under load over several revolutions, its periodic state approached by about a factor of
+0.1-0.3 a revolution (the modern example: 3 to 8 revolutions between 0.84 and 1.19 x the rated speed, 14 of its 40
+speeds unsettled at 3; above its float speed, 1.2 x, the plunger pumps up at every revolution and the speed stays
+unsettled).  The surge a lift leaves in the coils decays by exp(-zeta_1 omega_1 T) a revolution of T seconds (the first
+surge mode's damping ratio zeta_1 = :data:`~valvetrain.dynamics.models.COIL_DAMPING_RATIO` at omega_1): 0.37 at
+8750 rpm for the pushrod example's 580 Hz, some 14 revolutions from a millimetre to the 1 nm the repetition asks.  20 is
+the key's largest value."""
 
 
 def revolutions(dyn, valve) -> int:
-    """``[dynamics] revolutions`` as given, else :data:`REVOLUTIONS` of the valve (with or without a lash
-    adjuster)."""
-    return REVOLUTIONS[valve.lash_adjuster is not None] if dyn.revolutions is None else int(dyn.revolutions)
+    """``[dynamics] revolutions`` as given, else :data:`REVOLUTIONS` of the valve (with or without a lash adjuster or
+    a multi-mass train)."""
+    slow = valve.lash_adjuster is not None or dyn.model == "multi"
+    return REVOLUTIONS[slow] if dyn.revolutions is None else int(dyn.revolutions)
 
 
 def adjuster_reference_force(valve, law, drive, cam_speed: float, ratio: float) -> float:
@@ -795,10 +808,68 @@ def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, 
         dyn.model, params, (float(low), float(high)), int(dyn.speeds), crank(head["jump_speed"]),
         crank(head["bounce_onset_speed"]), head["max_seating_velocity"], crank(head["max_seating_velocity_speed"]),
         crank(head["coil_clash_speed"]) if dyn.model == "multi" else None, eps_rated,
-        float(np.sqrt((kk + c) / m) / (2 * np.pi)), tuple(mode.frequency for mode in modes), modes,
-        int(result.revolutions.max()), int(np.count_nonzero(~result.converged)), rated_record, reson, table,
+        modes[0].frequency, tuple(mode.frequency for mode in modes), modes,
+        int(result.revolutions.max()), int(np.count_nonzero(~result.converged)),
+        unsettled_note(result, speeds, net, revs, train.adjuster is not None), rated_record, reson, table,
         f"tables/{name}_dynamics.csv", result, per, rated)
     return out, dynamics_checks(out, engine, 0.0 if train.adjuster is None else train.adjuster.motion_ratio)
+
+
+SETTLE_FROM = 1e-3
+"""The amplitude [m] from which :func:`unsettled_note` counts the revolutions a vibration takes to fall to the
+repetition's tolerance (:data:`~valvetrain.dynamics.sweep.STATE_TOLERANCE`)."""
+
+
+def unsettled_note(result, speeds, network, revolutions, adjuster=False) -> Optional[str]:
+    """Why the speeds of a sweep whose motion did not repeat within ``revolutions`` did not; None where every speed
+    repeated.
+
+    Parameters
+    ----------
+    result : valvetrain.dynamics.sweep.SweepResult
+    speeds : ndarray (S,)
+        Its engine speeds [rad/s].
+    network : valvetrain.dynamics.models.Network
+        The train simulated.
+    revolutions : int
+        The most camshaft revolutions a speed ran.
+    adjuster : bool
+        The train has a hydraulic lash adjuster.
+
+    Returns
+    -------
+    str or None
+        How many speeds and their range, and the reasons: at the speeds whose follower separates or whose valve
+        bounces, a motion that need not repeat; at the others the lash adjuster's plunger (a slow state), or the
+        slowest vibration of the train between the lifts (:func:`~valvetrain.dynamics.models.slowest_decay`, the
+        clearance open, the valve on its seat): its decay exp(-sigma T) a revolution of T seconds at the highest of
+        those speeds (where it decays least) and the revolutions ln(:data:`SETTLE_FROM` / tolerance) / (sigma T) it
+        takes there from a millimetre to the repetition's tolerance.
+    """
+    bad = ~result.converged
+    if not bad.any():
+        return None
+    rpm = speeds / rpm_to_rad_s(1.0)
+    events = result.events
+    moving = bad & (events.jumped | (events.bounce_count > 0))
+    rest = bad & ~moving
+    span = f"{rpm[bad].min():.0f}" + (f" to {rpm[bad].max():.0f}" if np.ptp(rpm[bad]) > 0.0 else "")
+    parts = [f"{np.count_nonzero(bad)} of {bad.size} speeds, {span} rpm, did not repeat within {revolutions} "
+             "revolutions"]
+    if moving.any():
+        parts.append(f"at {np.count_nonzero(moving)} of them the follower separates or the valve bounces (a motion "
+                     "that need not repeat)")
+    if rest.any() and adjuster:
+        parts.append(f"at {np.count_nonzero(rest)} the lash adjuster's plunger still moves from one revolution to the "
+                     "next")
+    elif rest.any():
+        omega, sigma = slowest_decay(network, opened=("cam contact",) if network.lash > 0.0 else ())
+        decay = sigma * 2.0 * np.pi / result.cam_speeds[rest].max()
+        parts.append(f"at {np.count_nonzero(rest)} the slowest vibration of the train, {omega / (2 * np.pi):.0f} Hz, "
+                     f"decays by a factor {np.exp(-decay):.2g} a revolution at {rpm[rest].max():.0f} rpm: about "
+                     f"{np.log(SETTLE_FROM / STATE_TOLERANCE) / decay:.0f} revolutions from {SETTLE_FROM / MM:g} mm "
+                     f"to the repetition's {STATE_TOLERANCE * 1e9:g} nm")
+    return "; ".join(parts)
 
 
 CHECK_CODES = ("dynamics.seating_velocity", "dynamics.jump_speed", "dynamics.valve_opens")

@@ -262,7 +262,7 @@ def _strength(st):
 
 DYNAMICS_HEADLINE = ("speed_range", "speeds", "jump_speed", "bounce_speed", "max_seating_velocity",
                      "max_seating_velocity_speed", "coil_clash_speed", "epsilon", "natural_frequency",
-                     "natural_frequencies", "max_revolutions", "unsettled_speeds")
+                     "natural_frequencies", "max_revolutions", "unsettled_speeds", "unsettled_note")
 """The fields of :class:`~valvetrain.design.dynamics.DynamicsResult` in the head of the report's dynamics chapter."""
 
 
