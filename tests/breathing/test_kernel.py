@@ -34,7 +34,7 @@ def _run(volume, rate, dt, intake=0.0, exhaust=0.0, plenums=((1e5, 300.0), (1e5,
     records = np.zeros((kn.RECORDS, steps + 1))
     tallies = np.zeros(kn.TALLIES)
     kn.run_cycle(cyl, np.zeros((0, 4)), np.zeros((0, 4)), sched, par, coef, rgas, np.array(rows), np.zeros((2, 5)),
-                 np.ones((2, 3)), tallies, records)
+                 np.ones((2, 4)), tallies, records)
     return records, tallies, cyl
 
 

@@ -9,7 +9,7 @@ from scipy.optimize import brentq
 from valvetrain.breathing import runners
 from valvetrain.breathing.orifice import mass_flux
 
-GAS = np.array([1.4, 287.0, 0.0])
+GAS = np.array([1.4, 287.0, 0.0, 1.8e-5])
 
 
 def _pipe(n, state):

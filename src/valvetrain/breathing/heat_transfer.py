@@ -4,7 +4,7 @@ SI units inside (Pa, K, m, m/s, W/(m^2 K)); the correlation's own units (kPa) ar
 """
 
 import numpy as np
-from numba import vectorize
+from numba import njit
 
 WOSCHNI_C1 = {"gas_exchange": 6.18, "compression": 2.28, "combustion": 2.28}
 """Woschni's C1 of the characteristic gas velocity by period of the cycle (no swirl) (Woschni (1967); Heywood (1988),
@@ -15,8 +15,8 @@ WOSCHNI_C2 = 3.24e-3
 (Woschni (1967); Heywood (1988), section 12.4)."""
 
 
-@vectorize(["float64(float64, float64, float64, float64)"], cache=True, nopython=True)
-def woschni_coefficient(bore, pressure, temperature, velocity) -> float:
+@njit(cache=True, nogil=True)
+def woschni_coefficient(bore, pressure, temperature, velocity) -> float | np.ndarray:
     """Woschni's instantaneous heat-transfer coefficient h [W/(m^2 K)], spatially averaged over the chamber.
 
     Parameters
@@ -52,9 +52,9 @@ def woschni_coefficient(bore, pressure, temperature, velocity) -> float:
     return 3.26 * bore ** -0.2 * (pressure / 1000.0) ** 0.8 * temperature ** -0.55 * velocity ** 0.8
 
 
-@vectorize(["float64(float64, float64, float64, float64, float64, float64, float64, float64, float64)"],
-           cache=True, nopython=True)
-def woschni_velocity(c1, c2, mean_piston_speed, swept_volume, t_ref, p_ref, v_ref, pressure, motored_pressure) -> float:
+@njit(cache=True, nogil=True)
+def woschni_velocity(c1, c2, mean_piston_speed, swept_volume, t_ref, p_ref, v_ref, pressure,
+                     motored_pressure) -> float | np.ndarray:
     """Woschni's characteristic gas velocity w [m/s].
 
     Parameters

@@ -205,7 +205,7 @@ def run_cycle(cyl, qi, qe, sched, par, coef, rgas, plenums, pipes, gases, tallie
     pipes : ndarray
         (2, 5) the runners: cell length [m], diameter [m], area [m^2], friction (1/0), present (1/0).
     gases : ndarray
-        (2, 3) the runners' ``[gamma, R, e_0]``.
+        (2, 4) the runners' ``[gamma, R, e_0, mu]`` (:func:`~.runners.frozen_gas`).
     tallies : ndarray
         (15,) the cycle's tallies (:data:`DELIVERED` ...), set here.
     records : ndarray

@@ -7,11 +7,11 @@ Pa, K, kg/s, m^2.
 """
 
 import numpy as np
-from numba import vectorize
+from numba import njit
 
 
-@vectorize(["float64(float64)"], cache=True, nopython=True)
-def critical_pressure_ratio(gamma) -> float:
+@njit(cache=True, nogil=True)
+def critical_pressure_ratio(gamma) -> float | np.ndarray:
     """Throat-to-stagnation pressure ratio of sonic (choked) flow, (2 / (gamma + 1))^(gamma / (gamma - 1)).
 
     References
@@ -21,7 +21,7 @@ def critical_pressure_ratio(gamma) -> float:
     return (2.0 / (gamma + 1.0)) ** (gamma / (gamma - 1.0))
 
 
-@vectorize(["float64(float64, float64, float64, float64, float64)"], cache=True, nopython=True)
+@njit(cache=True, nogil=True)
 def mass_flux(p0, t0, p, gamma, r) -> float:
     """Mass flow per unit effective area [kg/(s m^2)] from the upstream stagnation state to a back pressure.
 
@@ -37,7 +37,7 @@ def mass_flux(p0, t0, p, gamma, r) -> float:
     Returns
     -------
     float
-        m / A_E >= 0.
+        m / A_E >= 0 (compiled for scalars: the cycle's kernel calls it; :func:`mass_flow` takes arrays).
 
     Notes
     -----
@@ -56,7 +56,7 @@ def mass_flux(p0, t0, p, gamma, r) -> float:
     if p >= p0 or p0 <= 0.0:
         return 0.0
     ratio = p / p0
-    critical = (2.0 / (gamma + 1.0)) ** (gamma / (gamma - 1.0))
+    critical = critical_pressure_ratio(gamma)
     if ratio < critical:
         ratio = critical
     power = ratio ** (1.0 / gamma)      # and ratio^((gamma-1)/gamma) = ratio / power
@@ -119,7 +119,6 @@ def mass_flow(area_ab, area_ba, pa, ta, pb, tb, gamma_a, gamma_b, ra, rb) -> flo
     >>> float(mass_flow(1e-4, 2e-4, 1e5, 300.0, 2e5, 300.0, 1.4, 1.4, 287.0, 287.0)) < 0
     True
     """
-    forward = area_ab * mass_flux(pa, ta, pb, gamma_a, ra)
-    backward = area_ba * mass_flux(pb, tb, pa, gamma_b, rb)
-    out = forward - backward
+    flux = np.vectorize(mass_flux, otypes=[float])
+    out = area_ab * flux(pa, ta, pb, gamma_a, ra) - area_ba * flux(pb, tb, pa, gamma_b, rb)
     return float(out) if np.ndim(out) == 0 else out

@@ -17,7 +17,7 @@ in conservation form; the fluxes between cells are the HLLC approximate Riemann 
 van Leer limiter (MUSCL, Toro (2009), chapters 13 and 14); the caller advances the cells with the two-stage strong
 stability preserving Runge-Kutta (Heun) scheme, second order in time and space away from extrema and shocks.
 The friction coefficient is the smooth pipe's, c_f = max(16 / Re, 0.0791 Re^-0.25) (laminar, Blasius (1913)),
-with the viscosity of air by Sutherland's law (White (2006), Table 1-2).
+with the viscosity of air by Sutherland's law (White (2006), Table 1-2) at the runner's reference temperature.
 
 The ends are the characteristic boundaries of a pipe: the wave arriving from the interior is a simple wave
 (its Riemann invariant carried from the end cell, in its pressure form), matched to an open end at a plenum
@@ -74,8 +74,8 @@ def quarter_wave_frequency(length, sound_speed) -> float:
 
 
 def frozen_gas(gas_constant, gamma, reference_temperature, reference_enthalpy) -> np.ndarray:
-    """The runner's gas constants ``[gamma, R, e_0]``: an ideal gas of constant specific heats whose enthalpy
-    e_0 + cp T equals the cylinder gas's sensible enthalpy at the reference temperature.
+    """The runner's gas constants ``[gamma, R, e_0, mu]``: an ideal gas of constant specific heats whose enthalpy
+    e_0 + cp T equals the cylinder gas's sensible enthalpy at the reference temperature, and its viscosity there.
 
     Parameters
     ----------
@@ -91,10 +91,20 @@ def frozen_gas(gas_constant, gamma, reference_temperature, reference_enthalpy) -
     Returns
     -------
     ndarray
-        ``[gamma, R, e_0]`` with :math:`e_0 = h_{ref} - c_p T_{ref}` [J/kg].
+        ``[gamma, R, e_0, mu]`` with :math:`e_0 = h_{ref} - c_p T_{ref}` [J/kg] and the viscosity of air by
+        Sutherland's law (:data:`SUTHERLAND`) at the reference temperature [Pa s], frozen like the gas's heats.
+
+    Examples
+    --------
+    Air at 273 K has Sutherland's mu_0:
+
+    >>> float(frozen_gas(287.0, 1.4, 273.0, 0.0)[3])
+    1.716e-05
     """
     cp = gamma * gas_constant / (gamma - 1.0)
-    return np.array([gamma, gas_constant, reference_enthalpy - cp * reference_temperature])
+    mu0, t0, s = SUTHERLAND
+    mu = mu0 * (reference_temperature / t0) ** 1.5 * (t0 + s) / (reference_temperature + s)
+    return np.array([gamma, gas_constant, reference_enthalpy - cp * reference_temperature, mu])
 
 
 @njit(cache=True, nogil=True)
@@ -168,13 +178,10 @@ def _van_leer(a, b):
 
 
 @njit(cache=True, nogil=True)
-def friction_coefficient(rho, u, temperature, diameter) -> float:
+def friction_coefficient(rho, u, viscosity, diameter) -> float:
     """Fanning friction coefficient of a smooth pipe: max(16 / Re, 0.0791 Re^-0.25), laminar and Blasius (1913),
-    the viscosity of air by Sutherland's law (:data:`SUTHERLAND`); 0 for a fluid at rest."""
-    mu0, t0, s = SUTHERLAND
-    ratio = temperature / t0
-    mu = mu0 * ratio * np.sqrt(ratio) * (t0 + s) / (temperature + s)
-    re = rho * abs(u) * diameter / mu
+    Re = rho |u| D / mu; 0 for a fluid at rest."""
+    re = rho * abs(u) * diameter / viscosity
     if re < 1e-12:
         return 0.0
     return max(16.0 / re, 0.0791 / np.sqrt(np.sqrt(re)))
@@ -189,7 +196,7 @@ def pipe_rates(q, gas, dx, diameter, friction, left, right, rate, work) -> None:
     q : ndarray
         (n, 4) conserved states.
     gas : ndarray
-        ``[gamma, R, e_0]`` (:func:`frozen_gas`).
+        ``[gamma, R, e_0, mu]`` (:func:`frozen_gas`).
     dx, diameter : float
         Cell length and pipe diameter [m].
     friction : bool
@@ -202,7 +209,7 @@ def pipe_rates(q, gas, dx, diameter, friction, left, right, rate, work) -> None:
         (3, n + 1, 4) scratch: the faces' fluxes, the cells' primitive states and their limited slopes.
     """
     n = q.shape[0]
-    r_gas = gas[1]
+    viscosity = gas[3]
     faces, prim, slope = work[0], work[1], work[2]
     for k in range(4):
         faces[0, k] = left[k]
@@ -230,8 +237,8 @@ def pipe_rates(q, gas, dx, diameter, friction, left, right, rate, work) -> None:
         for k in range(4):
             rate[i, k] = (faces[i, k] - faces[i + 1, k]) / dx
         if friction:
-            rho, u, p = prim[i, 0], prim[i, 1], prim[i, 2]
-            cf = friction_coefficient(rho, u, p / (rho * r_gas), diameter)
+            rho, u = prim[i, 0], prim[i, 1]
+            cf = friction_coefficient(rho, u, viscosity, diameter)
             rate[i, 1] -= 2.0 * cf * rho * u * abs(u) / diameter
 
 
@@ -377,7 +384,7 @@ def plenum_face(rho_c, u_c, p_c, y_c, gas, p0, t0, y0, flux, roots) -> None:
     rho_c, u_c, p_c, y_c : float
         The first cell's density, velocity, pressure and tracer.
     gas : ndarray
-        ``[gamma, R, e_0]``.
+        ``[gamma, R, e_0, mu]``.
     p0, t0, y0 : float
         The plenum's pressure [Pa], temperature [K] and tracer (its gas at rest).
     flux : ndarray
@@ -435,7 +442,7 @@ def valve_face(rho_c, u_c, p_c, y_c, gas, pipe_area, area_out, area_in, p_cyl, t
     rho_c, u_c, p_c, y_c : float
         The last cell's density, velocity, pressure and tracer.
     gas : ndarray
-        The runner's ``[gamma, R, e_0]``.
+        The runner's ``[gamma, R, e_0, mu]``.
     pipe_area : float
         [m^2].
     area_out, area_in : float
@@ -550,7 +557,7 @@ def simulate_pipe(q, gas, dx, diameter, friction, dt, steps, left_kind, left_dat
     q : ndarray
         (n, 4) conserved states, advanced in place.
     gas : ndarray
-        ``[gamma, R, e_0]``.
+        ``[gamma, R, e_0, mu]``.
     dx, diameter : float
         [m].
     friction : bool
