@@ -106,3 +106,18 @@ def test_a_cd_table_that_is_not_a_function_of_l_over_d(tmp_path):
     with pytest.raises(SpecError, match=r"breathing.intake.cd_file: .*row 5: L/D = 0.1181 after 0.1181: C_D must be "
                                         r"a function of L/D"):
         run(load_spec(tmp_path / EXAMPLE.name))
+
+
+def test_the_crank_reads_the_breathing_pressure():
+    """With [breathing] the crank chapter's cylinder pressure is the breathing's converged cycle at the speed nearest
+    the crank's (the rated 7000 rpm: the curve's last point), on the crank's grid: the same peak within the grid's
+    step, the Wiebe model of [crank.cycle] only the heat release's schedule."""
+    doc = spec_document(example_spec())
+    doc["breathing"] = {"mode": "fired", "wall_temperature_C": 150.0,
+                        "curve": {"speed_range_rpm": [5000.0, 7000.0], "points": 2, "intake_pressure_kPa": 100.0,
+                                  "intake_temperature_C": 25.0, "exhaust_pressure_kPa": 105.0}}
+    results = run(validate(doc))
+    crank, last = results.crank, results.breathing.curve[-1]
+    assert crank.pressure_source.startswith("the breathing's converged fired cycle at 7000 rpm")
+    assert crank.figures.max_gas_pressure == pytest.approx(last.figures.peak_pressure, rel=5e-3)
+    assert crank.figures.work.imep == pytest.approx(last.figures.imep, rel=1e-2)

@@ -29,10 +29,11 @@ from ..specification import Spec, SpecError, crank_geometry, si, spec_document, 
 from ..specification.messages import Problem
 from ..specification.models import Dynamics
 from ..units import MM, to_display
-from .breathing import BreathingResults, BreathingSummary, breathing_stage
+from .breathing import BreathingResults, BreathingSummary, breathing_stage, cylinder_pressure
 from .camcard import CamCard, CamCardValve, cam_card_stage
 from .camshaft import CamshaftRecord, CamshaftResults, camshaft_stage
-from .crank import LAMBDA_RANGE, CrankResults, CrankSummary, crank_stage, valve_timing
+from .crank import (LAMBDA_RANGE, CrankResults, CrankSummary, crank_geometry as crank_geometry_of, crank_stage,
+                    valve_timing)
 from .drive import MassResult, SpringResult, StrengthResult
 from .dynamics import DynamicsResult
 from .grinding import GrindingResult
@@ -231,7 +232,11 @@ def run(spec, laws=None, progress=None, headlines_only=False, diagnose=True, mem
             crank_view = si(spec.crank, spec)
         except PressureFileError as exc:
             raise SpecError([Problem("crank.pressure_file", str(exc))]) from None
-    crank = crank_stage(crank_view, engine, valve_timing(valves)) if crank_view is not None else None
+    breathing = (_breathing(spec, engine, crank_view, valves, views) if spec.breathing is not None else None)
+    breathed = None
+    if breathing is not None and crank_view is not None and engine.strokes == 4:
+        breathed = cylinder_pressure(breathing, crank_geometry_of(crank_view, engine)[3])
+    crank = crank_stage(crank_view, engine, valve_timing(valves), breathed) if crank_view is not None else None
     if waiting:
         cylinder = CylinderPressure(crank.phi, crank.columns.p_abs, crank.pressure_source)
         for name, valve in waiting.items():
@@ -243,7 +248,6 @@ def run(spec, laws=None, progress=None, headlines_only=False, diagnose=True, mem
                            *THROAT_AREA_SHARE_RANGE, source="Valve-train practical works (n.d.), work 1"))
     ports = two_stroke_stage(si(spec.two_stroke), crank_view, engine) if spec.two_stroke is not None else None
     shaft = camshaft_stage(si(spec.camshaft), engine, views, valves) if spec.camshaft is not None else None
-    breathing = (_breathing(spec, engine, crank_view, valves, views) if spec.breathing is not None else None)
     for stage, tag in ((crank, "crank"), (ports, "two-stroke"), (shaft, "camshaft"), (breathing, "breathing")):
         if stage is not None:
             found += [c.named(tag) for c in stage.checks]

@@ -12,6 +12,7 @@ from ..breathing.cycle import BreathingRecord, BreathingResult
 from ..breathing.valves import DEFAULT_CD, default_areas, effective_areas
 from ..checks import Check, check
 from ..units import MM, to_display
+from .hydraulic_actuation import CylinderPressure
 from .results import quantity, record
 from .valve import CYCLE_CRANK
 
@@ -180,3 +181,14 @@ def breathing_stage(b, engine, crank, valves, views) -> BreathingResults:
                                tuple(r.figures for r in results[len(given):]))
     return BreathingResults(described, results[:len(given)], results[len(given):], figures, tuple(found))
 
+
+
+def cylinder_pressure(results, speed) -> CylinderPressure:
+    """The cylinder pressure of the breathing's converged cycle whose speed is nearest ``speed`` [rad/s] (the
+    conditions first, then the curve), for the chapters that read the cylinder pressure (the crank's torque, the
+    hydraulic valve's gas force), with the words of its source."""
+    chosen = min((*results.conditions, *results.curve), key=lambda r: abs(r.figures.speed - speed))
+    f = chosen.figures
+    return CylinderPressure(chosen.columns.angle, chosen.columns.pressure,
+                            f"the breathing's converged {results.figures.mode} cycle at {to_display(f.speed, 'rpm'):.5g} "
+                            f"rpm, intake plenum {f.intake_pressure / 1e3:.5g} kPa")
