@@ -258,8 +258,13 @@ def _breathing_plot(breathing, path):
         top.plot(speed, [r["volumetric_efficiency"] for r in records], label=label, **style)
         if records and "torque_Nm" in records[0]:
             bottom.plot(speed, [r["torque_Nm"] for r in records], label=label, **style)
-    top.set_ylabel("volumetric efficiency")
-    bottom.set_ylabel("indicated torque, N m (fired)")
+    _save_against_speed(fig, top, bottom, "volumetric efficiency", "indicated torque, N m (fired)", path)
+
+
+def _save_against_speed(fig, top, bottom, top_label, bottom_label, path):
+    """Label, grid and save a figure of two quantities against the engine speed."""
+    top.set_ylabel(top_label)
+    bottom.set_ylabel(bottom_label)
     bottom.set_xlabel("engine speed, rpm")
     for ax in (top, bottom):
         ax.grid(alpha=0.3)
@@ -340,11 +345,4 @@ def _dynamics_plot(designs, path):
         rpm = np.asarray(t.speed) / rpm_to_rad_s(1.0)
         top.plot(rpm, t.min_contact_force, marker=".", label=f"{label} ({v.law.name})")
         bottom.plot(rpm, t.seating_velocity, marker=".", label=f"{label} ({v.law.name})")
-    top.set_ylabel("min cam contact force, N")
-    bottom.set_ylabel("seating velocity, m/s")
-    bottom.set_xlabel("engine speed, rpm")
-    for ax in (top, bottom):
-        ax.grid(alpha=0.3)
-    top.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    _save_against_speed(fig, top, bottom, "min cam contact force, N", "seating velocity, m/s", path)

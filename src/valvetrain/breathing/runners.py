@@ -280,6 +280,18 @@ def _solve(kind, lo, hi, guess, args):
 
 
 @njit(cache=True, nogil=True)
+def _matched(kind, edge, lo, hi, roots, args):
+    """The root of :func:`_residual` ``kind`` in [lo, hi] (:func:`_solve` from the end's previous root, kept in
+    ``roots``), or ``edge`` where the residual is not positive there: the flow is sonic (choked) at that end of the
+    bracket."""
+    if _residual(kind, edge, args) <= 0.0:
+        return edge
+    x = _solve(kind, lo, hi, roots[kind], args)
+    roots[kind] = x
+    return x
+
+
+@njit(cache=True, nogil=True)
 def _root(kind, a, b, fa, fb, args):
     """Root of :func:`_residual` ``kind`` between ``a`` and ``b`` whose residuals ``fa``, ``fb`` have opposite
     signs: Brent's method (inverse quadratic interpolation, secant and bisection; Brent (1973), chapter 4), to
@@ -420,12 +432,7 @@ def plenum_face(rho_c, u_c, p_c, y_c, gas, p0, t0, y0, flux, roots) -> None:
         return
     args = _arguments(roots, rho_c, u_c, p_c, c_c, gamma, r, gas[2], p0, t0, 0.0, 0.0, 0.0, 0.0)
     sonic = np.sqrt(2.0 * gamma * r * t0 / (gamma + 1.0))
-    f_hi = _residual(0, sonic, args)
-    if f_hi <= 0.0:
-        u = sonic
-    else:
-        u = _solve(0, 0.0, sonic, roots[0], args)
-        roots[0] = u
+    u = _matched(0, sonic, 0.0, sonic, roots, args)
     cp = gamma * r / (gamma - 1.0)
     t = t0 - u * u / (2.0 * cp)
     p = p0 * (t / t0) ** (gamma / (gamma - 1.0))
@@ -481,12 +488,7 @@ def valve_face(rho_c, u_c, p_c, y_c, gas, pipe_area, area_out, area_in, p_cyl, t
     if p_hi > p_cyl and ratio_out > 0.0:
         args = _arguments(roots, rho_c, u_c, p_c, c_c, gamma, r, e0, p_cyl, t_cyl, ratio_out, 0.0, 0.0, 0.0)
         z_lo = z_hi / (1.0 + g1)
-        f_lo = _residual(1, z_lo, args)
-        if f_lo <= 0.0:
-            z = z_lo
-        else:
-            z = _solve(1, z_lo, z_hi, roots[1], args)
-            roots[1] = z
+        z = _matched(1, z_lo, z_lo, z_hi, roots, args)
         u = u_c - c_c * (z - 1.0) / g1
         rho = rho_c * z ** (1.0 / g1)
         t = p_c / (rho_c * r) * z * z
@@ -498,13 +500,7 @@ def valve_face(rho_c, u_c, p_c, y_c, gas, pipe_area, area_out, area_in, p_cyl, t
         return
     if p_hi < p_cyl and ratio_in > 0.0:
         args = _arguments(roots, rho_c, u_c, p_c, c_c, gamma, r, e0, p_cyl, t_cyl, ratio_in, h_cyl, gamma_cyl, r_cyl)
-        top = p_cyl
-        f_top = _residual(2, top, args)
-        if f_top <= 0.0:
-            p = top
-        else:
-            p = _solve(2, p_hi, top, roots[2], args)
-            roots[2] = p
+        p = _matched(2, p_cyl, p_hi, p_cyl, roots, args)
         z = (p / p_c) ** (g1 / gamma)
         u = u_c - c_c * (z - 1.0) / g1
         t = (h_cyl - e0 - 0.5 * u * u) / cp
