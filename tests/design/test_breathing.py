@@ -121,3 +121,12 @@ def test_the_crank_reads_the_breathing_pressure():
     assert crank.pressure_source.startswith("the breathing's converged fired cycle at 7000 rpm")
     assert crank.figures.max_gas_pressure == pytest.approx(last.figures.peak_pressure, rel=5e-3)
     assert crank.figures.work.imep == pytest.approx(last.figures.imep, rel=1e-2)
+
+
+def test_a_breathing_that_would_run_for_minutes_is_refused():
+    """1200 conditions of the TCC-III example ask for about 3e9 cell-steps: refused before they run, naming what to
+    change (the fuzzer's long list of conditions ran for minutes)."""
+    doc = spec_document(load_spec(EXAMPLE))
+    doc["breathing"]["conditions"] = doc["breathing"]["conditions"] * 400
+    with pytest.raises(SpecError, match=r"breathing: 1200 conditions and 0 curve speeds .* allowed at most 1e\+08"):
+        run(validate(doc))

@@ -39,6 +39,11 @@ MAX_STEP = np.radians(0.5)
 STIFFNESS_SHARE = 0.5
 """The step is at most this share of the cylinder's shortest filling time V / (A_E c) through its open valves."""
 
+MAX_WORK = 1e8
+"""Most cell-steps (:func:`work`) a design's breathing may ask for, all its conditions at their most cycles: about
+half a minute of one core; a finer grid, more conditions or slower speeds are refused before they run, not left to
+run for minutes."""
+
 ADAPTATION = 1.15
 """After the first cycle the runners' step is set for this many times the fastest wave it met (|u| + c)."""
 
@@ -420,17 +425,16 @@ def breathe(engine, condition, tolerance=TOLERANCE, max_cycles=MAX_CYCLES, start
         return frozen_gas(g.gas_constant, float(gases.ratio_of_specific_heats(g, t)), t, float(gases.enthalpy(g, t)))
 
     plenums = np.array([plenum_row(p_i, t_i, 0.0, fresh), plenum_row(p_e, t_e, 1.0, burned)])
-    runners = (engine.intake_runner, engine.exhaust_runner)
-    pipes = np.zeros((2, 5))
+    pipes = _pipes(engine)
     gas_rows = np.array([runner_gas(fresh, t_i), runner_gas(burned, t_e)])
     queues = []
-    for j, (runner, (p0, t0, y0), g) in enumerate(zip(runners, ((p_i, t_i, 0.0), (p_e, t_e, 1.0)),
-                                                      (fresh, burned), strict=True)):
+    for j, (runner, (p0, t0, y0), g) in enumerate(zip((engine.intake_runner, engine.exhaust_runner),
+                                                      ((p_i, t_i, 0.0), (p_e, t_e, 1.0)), (fresh, burned),
+                                                      strict=True)):
         if runner is None:
             queues.append(np.zeros((0, 4)))
             continue
         n = runner.cells
-        pipes[j] = [runner.length / n, runner.diameter, np.pi * runner.diameter**2 / 4.0, float(runner.friction), 1.0]
         q = np.empty((n, 4))
         for i in range(n):
             conserved(p0 / (g.gas_constant * t0), 0.0, p0, y0, gas_rows[j], q[i])
@@ -443,8 +447,7 @@ def breathe(engine, condition, tolerance=TOLERANCE, max_cycles=MAX_CYCLES, start
     cyl[kn.M], cyl[kn.U], cyl[kn.MB], cyl[kn.TG] = m0, m0 * float(gases.internal_energy(burned, t_e)), m0, t_e
     cyl[kn.P_REF], cyl[kn.V_REF], cyl[kn.T_REF], cyl[kn.G_REF] = p_i, engine.cylinder.swept_volume, t_i, 1.4
 
-    t_hot = max(t_i, t_e) * 1.5
-    wave = 1.3 * float(np.sqrt(gases.ratio_of_specific_heats(burned, t_hot) * burned.gas_constant * t_hot))
+    wave, t_hot = _first_wave(engine, condition)
     warm = start is not None and start.intake.shape == qi.shape and start.exhaust.shape == qe.shape
     if warm:
         cyl[:] = start.cylinder
@@ -516,6 +519,39 @@ def _wave(courant, pipes, schedule):
     """The fastest wave [m/s] of a cycle whose largest Courant number was ``courant``."""
     cell = min(pipes[j, kn.PIPE_DX] for j in range(2) if pipes[j, kn.PIPE_PRESENT] > 0.0)
     return courant * cell / schedule.par[kn.DT]
+
+
+def _pipes(engine):
+    """The runners' rows of :func:`.kernel.run_cycle`: cell length, diameter, area, friction, present."""
+    pipes = np.zeros((2, 5))
+    for j, runner in enumerate((engine.intake_runner, engine.exhaust_runner)):
+        if runner is not None:
+            n = runner.cells
+            pipes[j] = [runner.length / n, runner.diameter, np.pi * runner.diameter**2 / 4.0, float(runner.friction),
+                        1.0]
+    return pipes
+
+
+def _first_wave(engine, condition):
+    """The first cycle's estimate of the fastest wave in the runners [m/s] and the hot temperature [K] of the
+    cylinder's filling time: 1.3 times the sound speed of the burned gas at 1.5 times the hotter plenum (a fired
+    engine's exhaust at :data:`FIRED_START_TEMPERATURE` when its plenum's is not given)."""
+    t_i, t_e = condition.intake.temperature, condition.exhaust.temperature
+    if t_e is None:
+        t_e = t_i if engine.firing is None else FIRED_START_TEMPERATURE
+    burned = gases.air() if engine.firing is None else gases.burned_gas(engine.firing.fuel,
+                                                                         engine.firing.equivalence_ratio)
+    t_hot = max(t_i, t_e) * 1.5
+    return 1.3 * float(np.sqrt(gases.ratio_of_specific_heats(burned, t_hot) * burned.gas_constant * t_hot)), t_hot
+
+
+def work(engine, condition, max_cycles=MAX_CYCLES) -> float:
+    """The cell-steps :func:`breathe` may take at ``condition``: the first cycle's steps times the runners' cells and
+    the cylinder (counted as eight cells), times ``max_cycles``; :data:`MAX_WORK` bounds a design's sum."""
+    pipes = _pipes(engine)
+    wave, t_hot = _first_wave(engine, condition)
+    cells = sum(r.cells for r in (engine.intake_runner, engine.exhaust_runner) if r is not None)
+    return float(_steps(engine, condition, wave, pipes, gases.air(), t_hot) * (cells + 8) * max_cycles)
 
 
 def _pipe_energy(q, pipe):

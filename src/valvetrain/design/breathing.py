@@ -7,8 +7,9 @@ from typing import Any
 
 import numpy as np
 
-from ..breathing import CdTable, Condition, Cylinder, Engine, Firing, Plenum, Runner, ValveFlow, breathe
-from ..breathing.cycle import BreathingRecord, BreathingResult
+from ..breathing import (BreathingError, CdTable, Condition, Cylinder, Engine, Firing, Plenum, Runner, ValveFlow,
+                         breathe)
+from ..breathing.cycle import MAX_WORK, BreathingRecord, BreathingResult, work
 from ..breathing.valves import DEFAULT_CD, default_areas, effective_areas
 from ..checks import Check, check
 from ..units import MM, to_display
@@ -171,6 +172,12 @@ def breathing_stage(b, engine, crank, valves, views) -> BreathingResults:
     described, words = breathing_engine(b, engine, crank, valves, views)
     given = [condition_of(c, c.speed, b) for c in b.conditions]
     swept = [] if b.curve is None else [condition_of(b.curve, n, b) for n in curve_speeds(b.curve)]
+    asked = sum(work(described, c, b.max_cycles) for c in given + swept)
+    if asked > MAX_WORK:
+        raise BreathingError(f"{len(given)} conditions and {len(swept)} curve speeds at up to {b.max_cycles} cycles "
+                             f"of the runners' cells (cell_mm = {b.cell / MM:g}) ask for {asked:.3g} cell-steps; "
+                             f"allowed at most {MAX_WORK:.3g} (about half a minute): fewer conditions or curve points, "
+                             "a coarser cell_mm, fewer max_cycles or higher speeds")
     results = (breathing_records(described, given, b.cycle_tolerance, b.max_cycles)
                + breathing_records(described, swept, b.cycle_tolerance, b.max_cycles, curve=True))
     found = [check("breathing.cycle_change", r.figures.cycle_change, high=b.cycle_tolerance,
