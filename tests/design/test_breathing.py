@@ -130,3 +130,21 @@ def test_a_breathing_that_would_run_for_minutes_is_refused():
     doc["breathing"]["conditions"] = doc["breathing"]["conditions"] * 400
     with pytest.raises(SpecError, match=r"breathing: 1200 conditions and 0 curve speeds .* allowed at most 1e\+08"):
         run(validate(doc))
+
+
+def test_what_the_boundary_fuzzer_found():
+    """tools/fuzz_bounds.py on the TCC-III example: cycles that do not repeat within max_cycles are a warning check
+    naming the speed (it raised a NameError); an exhaust plenum at 10 MPa, which blows the gas back through the intake
+    runner until its cells lose their pressure, is refused (it wrote NaN); a compression ratio of 1.001, whose cylinder
+    never pushes gas out, has no exhaust temperature (it was NaN)."""
+    doc = spec_document(load_spec(EXAMPLE))
+    doc["breathing"]["max_cycles"] = 2
+    doc["breathing"]["cycle_tolerance"] = 1e-6
+    checks = [c for c in run(validate(doc)).checks if c.code == "breathing.cycle_change"]
+    assert len(checks) == 3 and not any(c.passed for c in checks)
+    assert checks[0].quantity == "breathing: relative change of the last cycle at 800 rpm"
+    doc = _tcc3_document(breathing__conditions__2__exhaust_pressure_kPa=10000.0)
+    with pytest.raises(SpecError, match=r"breathing: the cycle left the physical range at 1300 rpm"):
+        run(validate(doc))
+    records = run(validate(_tcc3_document(breathing__compression_ratio=1.001))).to_dict()["breathing"]["conditions"]
+    assert all("exhaust_temperature_K" not in r and np.isfinite(r["air_mass_flow_g_s"]) for r in records)

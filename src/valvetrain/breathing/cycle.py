@@ -234,8 +234,9 @@ class BreathingRecord:
     peak_pressure: float = quantity("peak_pressure_kPa", "kPa", "largest cylinder pressure")
     peak_pressure_angle: float = quantity("peak_pressure_crank_deg", "crank deg",
                                           "where, from the gas-exchange TDC")
-    exhaust_temperature: float = quantity("exhaust_temperature_K", "K", "mean temperature of the cylinder gas "
-                                          "leaving through the exhaust valves (weighted by its mass)")
+    exhaust_temperature: Optional[float] = quantity("exhaust_temperature_K", "K", "mean temperature of the cylinder "
+                                                    "gas leaving through the exhaust valves (weighted by its mass; "
+                                                    "none where none leaves)", omit_none=True)
     wall_heat: float = quantity("wall_heat_J", "J", "heat to the walls per cycle")
     torque: Optional[float] = quantity("torque_Nm", "N m", "indicated torque of the engine (fired)", omit_none=True)
     power: Optional[float] = quantity("power_kW", "kW", "indicated power of the engine (fired)", omit_none=True)
@@ -475,7 +476,7 @@ def breathe(engine, condition, tolerance=TOLERANCE, max_cycles=MAX_CYCLES, start
         courant = kn.run_cycle(cyl, qi, qe, s.sched, s.par, coef, rgas, plenums, pipes, gas_rows, tallies, records)
         if not np.isfinite(courant):
             raise BreathingError(f"the cycle left the physical range at {condition.speed * 30 / np.pi:.5g} rpm (a "
-                                 "negative mass or energy): check the plenum states and the valve areas")
+                                 "negative mass, density or pressure): check the plenum states and the valve areas")
         if courant > 1.0:
             cyl[:], qi[:], qe[:] = saved
             steps = int(np.ceil(steps * courant / CFL))
@@ -560,14 +561,17 @@ def _pipe_energy(q, pipe):
 
 
 def _exhaust_temperature(tallies, runner_gas, pipe):
-    """The mean temperature of the gas that flowed into the exhaust plenum in the last cycle [K], None if none did."""
+    """The mean temperature of the gas that flowed into the exhaust plenum in the last cycle [K], None if none did (or
+    its mean enthalpy is below the runner gas's zero: a cycle far from repeating, whose plenum keeps its temperature)."""
     mass = tallies[kn.TO_EXHAUST]
     if mass <= 0.0:
         return None
     if pipe[kn.PIPE_PRESENT] > 0.0:
         gamma, r, e0 = runner_gas[:3]
-        return float((tallies[kn.ENERGY_OUT] / mass - e0) / (gamma * r / (gamma - 1.0)))
-    return float(tallies[kn.EXHAUST_TEMPERATURE] / tallies[kn.EXHAUST_FORWARD])
+        t = float((tallies[kn.ENERGY_OUT] / mass - e0) / (gamma * r / (gamma - 1.0)))
+    else:
+        t = float(tallies[kn.EXHAUST_TEMPERATURE] / tallies[kn.EXHAUST_FORWARD])
+    return t if np.isfinite(t) and t > 0.0 else None
 
 
 def _peak(theta, p):
@@ -595,7 +599,7 @@ def _result(engine, condition, s, records, tallies, fresh, cycles, change, balan
     fired = engine.firing is not None
     torque = work * engine.cylinders / CYCLE if fired else None
     out = tallies[kn.EXHAUST_FORWARD]
-    exhaust_t = tallies[kn.EXHAUST_TEMPERATURE] / out if out > 0.0 else float("nan")
+    exhaust_t = tallies[kn.EXHAUST_TEMPERATURE] / out if out > 0.0 else None
     figures = BreathingRecord(
         omega, p_i, t_i, condition.exhaust.pressure, condition.wall_temperature,
         delivered * engine.cylinders * omega / CYCLE, delivered / (rho_i * vd), trapped, residual,

@@ -117,10 +117,13 @@ def _port(q, gas, pipe, plenum, area_to_cylinder, area_from_cylinder, p, t, h, g
 
 @njit(cache=True, nogil=True)
 def _wave_speed(q, gas):
-    """Largest |u| + c of a runner's cells [m/s]."""
+    """Largest |u| + c of a runner's cells [m/s]; inf where a cell's density or pressure is not positive (or not a
+    number): the gas has left the physical range."""
     out = 0.0
     for i in range(q.shape[0]):
         rho, u, p, y = primitive(q[i], gas)
+        if not (rho > 0.0 and p > 0.0):
+            return np.inf
         out = max(out, abs(u) + np.sqrt(gas[0] * p / rho))
     return out
 
@@ -215,7 +218,8 @@ def run_cycle(cyl, qi, qe, sched, par, coef, rgas, plenums, pipes, gases, tallie
     -------
     float
         The largest Courant number (|u| + c) dt / dx met in the runners (0 without runners); the caller repeats a
-        cycle whose number exceeded 1 with a shorter step.  A non-finite state also returns inf.
+        cycle whose number exceeded 1 with a shorter step.  A non-finite state, a cell of no positive density or
+        pressure (checked where the Courant number is) returns inf.
     """
     steps = sched.shape[1] - 1
     dt = par[DT]

@@ -182,7 +182,7 @@ def breathing_stage(b, engine, crank, valves, views) -> BreathingResults:
                + breathing_records(described, swept, b.cycle_tolerance, b.max_cycles, curve=True))
     found = [check("breathing.cycle_change", r.figures.cycle_change, high=b.cycle_tolerance,
                    source="the cycles repeat (Heywood (1988), chapter 14: a cycle simulation runs until its state "
-                          "repeats)", params={"speed": f"{r.figures.speed / DEG / 6.0:.5g}"})
+                          "repeats)", params={"speed": f"{to_display(r.figures.speed, 'rpm'):.5g}"})
              for r in results if not r.converged]
     figures = BreathingSummary(b.mode, *words, tuple(r.figures for r in results[:len(given)]),
                                tuple(r.figures for r in results[len(given):]))
