@@ -213,8 +213,12 @@ def base_specs():
     lobe = (EXAMPLES / MEASURED_LOBE).read_bytes()
     bases = {"example": (example, {})}
     for f in sorted(EXAMPLES.glob("*.toml")):
+        text = f.read_text(encoding="utf-8")
         files = {MEASURED_LOBE: lobe} if "measured" in f.name else {}
-        bases[f"examples/{f.name}"] = (tomllib.loads(f.read_text(encoding="utf-8")), files)
+        files.update({name: (EXAMPLES / name).read_bytes() for name in
+                      (d.relative_to(EXAMPLES).as_posix() for d in sorted((EXAMPLES / "data").glob("*.csv")))
+                      if f'"{name}"' in text})     # the data files the example names (the breathing's lift and C_D)
+        bases[f"examples/{f.name}"] = (tomllib.loads(text), files)
     for law in LAWS:
         files = {"lobe.csv": lobe} if law == "table" else {}
         drop = ("max_lift_mm", "opens_deg", "closes_deg") if law == "table" else ()
@@ -955,7 +959,7 @@ def _alarm(signum, frame):
 
 
 MAX_MESSAGE = 300
-KEY_PATH = re.compile(r"(?<![\w.])\[?(engine|valves|gas|crank|camshaft|two_stroke|output|accepted)\b")
+KEY_PATH = re.compile(r"(?<![\w.])\[?(engine|valves|gas|crank|camshaft|two_stroke|breathing|output|accepted)\b")
 INTERNAL_TEXT = ("ill-posed", "ill-conditioned", "singular matrix", "traceback", "numpy", "scipy", "ndarray",
                  "dtype", "object has no attribute", "nonetype", "index out of", "division by zero",
                  "math domain", "not enough values", "too many values", "recursion", "operands could not",

@@ -339,6 +339,81 @@ WORKS = {
         url="https://diamondchain.com/faq/what-is-working-load-and-what-role-does-it-play-in-selecting-roller-chain/",
         note="The working load (chain pull) of a roller chain at most 1/6 of its tensile strength with press-fit "
              "connecting links, 1/9 with slip-fit or offset links."),
+    "woschni1967": Work(
+        short="Woschni (1967)",
+        authors="Woschni, G.",
+        title="A universally applicable equation for the instantaneous heat transfer coefficient in the internal "
+              "combustion engine", kind="technical paper", publisher="SAE Technical Paper 670931, SAE Transactions, "
+        "vol. 76", place="New York", year="1967",
+        note="The heat-transfer coefficient of the cylinder's gas and its characteristic velocity (constants C1, C2)."),
+    "mcbride2002": Work(
+        short="McBride, Zehe and Gordon (2002)",
+        authors="McBride, B. J.; Zehe, M. J.; Gordon, S.",
+        title="NASA Glenn coefficients for calculating thermodynamic properties of individual species",
+        kind="technical report", publisher="NASA/TP-2002-211556, NASA Glenn Research Center", place="Cleveland, OH",
+        year="2002", note="The polynomials of specific heat and enthalpy of the gases, as Cantera's nasa_gas.yaml ships "
+        "them."),
+    "cantera2025": Work(
+        short="Goodwin et al. (2025)",
+        authors="Goodwin, D. G.; Moffat, H. K.; Schoegl, I.; Speth, R. L.; Weber, B. W.",
+        title="Cantera: an object-oriented software toolkit for chemical kinetics, thermodynamics, and transport "
+              "processes", kind="software, version 3.2", publisher="The Cantera Developers", year="2025",
+        url="https://cantera.org", note="Its species data (the NASA Glenn polynomials) are read through its species "
+        "interface."),
+    "toro2009": Work(
+        short="Toro (2009)",
+        authors="Toro, E. F.",
+        title="Riemann Solvers and Numerical Methods for Fluid Dynamics: A Practical Introduction, 3rd ed.",
+        kind="book", publisher="Springer", place="Berlin", year="2009",
+        note="The exact Riemann solver, the HLLC flux and the limited (MUSCL) reconstruction of the runners."),
+    "davis1988": Work(
+        short="Davis (1988)",
+        authors="Davis, S. F.",
+        title="Simplified second-order Godunov-type methods", kind="journal article",
+        publisher="SIAM Journal on Scientific and Statistical Computing, vol. 9, no. 3, pp. 445-473", year="1988",
+        note="The wave-speed estimates of the HLL-type fluxes."),
+    "gottlieb1998": Work(
+        short="Gottlieb and Shu (1998)",
+        authors="Gottlieb, S.; Shu, C.-W.",
+        title="Total variation diminishing Runge-Kutta schemes", kind="journal article",
+        publisher="Mathematics of Computation, vol. 67, no. 221, pp. 73-85", year="1998"),
+    "blasius1913": Work(
+        short="Blasius (1913)",
+        authors="Blasius, H.",
+        title="Das Ähnlichkeitsgesetz bei Reibungsvorgängen in Flüssigkeiten [The law of similarity of friction in "
+              "fluids]", kind="report",
+        publisher="Mitteilungen über Forschungsarbeiten auf dem Gebiete des Ingenieurwesens, no. 131, VDI",
+        place="Berlin", year="1913", language="German",
+        note="The friction coefficient of turbulent flow in smooth pipes, 0.0791 Re^-0.25 (Fanning)."),
+    "white2006": Work(
+        short="White (2006)",
+        authors="White, F. M.",
+        title="Viscous Fluid Flow, 3rd ed.", kind="book", publisher="McGraw-Hill", place="New York", year="2006",
+        note="Sutherland's law of the viscosity of air."),
+    "benson1982": Work(
+        short="Benson (1982)",
+        authors="Benson, R. S.",
+        title="The Thermodynamics and Gas Dynamics of Internal-Combustion Engines, vol. 1 (edited by J. H. Horlock "
+              "and D. E. Winterbone)", kind="book", publisher="Clarendon Press", place="Oxford", year="1982",
+        note="The boundaries of a pipe at a plenum and at a valve, matched with the waves arriving from the pipe."),
+    "brent1973": Work(
+        short="Brent (1973)",
+        authors="Brent, R. P.",
+        title="Algorithms for Minimization without Derivatives", kind="book", publisher="Prentice-Hall",
+        place="Englewood Cliffs, NJ", year="1973", note="Chapter 4: finding a zero of a function with guaranteed "
+        "convergence."),
+    "kinsler2000": Work(
+        short="Kinsler et al. (2000)",
+        authors="Kinsler, L. E.; Frey, A. R.; Coppens, A. B.; Sanders, J. V.",
+        title="Fundamentals of Acoustics, 4th ed.", kind="book", publisher="John Wiley & Sons", place="New York",
+        year="2000", note="The resonances of a pipe closed at one end."),
+    "tcc3": Work(
+        short="TCC-III Motored Full View (n.d.)",
+        authors="University of Michigan, Internal Combustion Engine Laboratory, with General Motors",
+        title="TCC-III engine, motored full view: geometry, valve lift, flow coefficients and operating conditions",
+        kind="data set", publisher="University of Michigan Deep Blue, DOI 10.7302/Z2MS3QP",
+        url="https://doi.org/10.7302/Z2MS3QP",
+        note="The inputs of the UM/GM Transparent Combustion Chamber III engine motored at 800 and 1300 rpm."),
 }
 """Every cited work by its key."""
 

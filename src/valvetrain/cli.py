@@ -601,32 +601,45 @@ def compare(files, out, force) -> None:
     """Compare the cams of every valve of FILES side by side (time-area, fullness, kinematics, curvature,
     contact stress, required spring) and their trains' dynamics (drive load, spring, reduced mass, drive stiffness,
     natural frequency, resonant harmonic, distortion, and the jump speed of a 40-speed one-mass sweep over each
-    valve's [dynamics] range); writes compare.csv, compare.json and overlaid plots."""
+    valve's [dynamics] range), and the breathing of the files with a [breathing] section (air flow, volumetric
+    efficiency, IMEP, peak pressure, torque at each condition); writes compare.csv, compare_breathing.csv,
+    compare.json and overlaid plots."""
     from .compare import table_cell, shown_metrics, with_dynamics, write_comparison
 
     specs = [_load(f) for f in files]
-    if not any(spec.valves for spec in specs):
-        click.echo("error: the files define no valves to compare", err=True)
+    if not any(spec.valves or spec.breathing is not None for spec in specs):
+        click.echo("error: the files define no valves and no [breathing] to compare", err=True)
         sys.exit(2)
     inputs = _check_out(out, files, specs, force)
-    designs = {}
+    designs, breathing = {}, {}
     for spec, label in zip(specs, _file_labels(files), strict=True):
-        for name, v in _design(with_dynamics(spec)).valves.items():
+        results = _design(with_dynamics(spec))
+        for name, v in results.valves.items():
             designs[f"{label}:{name}" if len(files) > 1 else name] = v
+        if results.breathing is not None:
+            breathing[label] = results.breathing
     try:
-        rows, notes = write_comparison(designs, out, inputs, force)
+        rows, notes = write_comparison(designs, out, inputs, force, breathing)
     except OutFolderError as err:
         _fail_out(err)
-    metrics = shown_metrics(rows)
-    width = max(len(label) for _, label in metrics)
-    click.echo(" " * width + "".join(f"  {lab[:18]:>18}" for lab in rows))
-    for key, label in metrics:
-        cells = "".join(f"  {cell:>18}" if isinstance(cell, str) else f"  {cell:>18.6g}"
-                        for cell in (table_cell(r.get(key)) for r in rows.values()))
-        click.echo(f"{label:<{width}}{cells}")
+    if rows:
+        metrics = shown_metrics(rows)
+        width = max(len(label) for _, label in metrics)
+        click.echo(" " * width + "".join(f"  {lab[:18]:>18}" for lab in rows))
+        for key, label in metrics:
+            cells = "".join(f"  {cell:>18}" if isinstance(cell, str) else f"  {cell:>18.6g}"
+                            for cell in (table_cell(r.get(key)) for r in rows.values()))
+            click.echo(f"{label:<{width}}{cells}")
+    for label, b in breathing.items():
+        for part in ("conditions", "curve"):
+            for r in b.summary[part]:
+                click.echo(f"{label} breathing: {r['speed_rpm']:.5g} rpm, {r['intake_pressure_kPa']:.5g} kPa: air "
+                           f"{r['air_mass_flow_g_s']:.4g} g/s, volumetric efficiency {r['volumetric_efficiency']:.4g}, "
+                           f"IMEP {r['imep_kPa']:.4g} kPa")
     for n in notes:
         click.echo(f"note: {n}")
-    click.echo(f"wrote {out}/ (compare.csv, compare.json, plots/)")
+    written = ["compare.csv"] * bool(rows) + ["compare_breathing.csv"] * bool(breathing)
+    click.echo(f"wrote {out}/ ({', '.join(written + ['compare.json', 'plots/'])})")
 
 
 def _file_labels(files):

@@ -63,10 +63,13 @@ UNITS = {
     "cm3": (1e-6, ("_cm3",), "cm³", "см³"),
     "cm3/(s MPa)": (1e-6 / MPA, ("_cm3_per_s_MPa",), "cm³/(s·MPa)", "см³/(с·МПа)"),
     "kg": (1.0, ("_kg",), "kg", "кг"),
+    "mg": (1e-6, ("_mg",), "mg", "мг"),
+    "g/s": (1e-3, ("_g_s",), "g/s", "г/с"),
     "kg mm2": (MM**2, ("_kg_mm2",), "kg·mm²", "кг·мм²"),
     "kg/m2": (1.0, ("_kg_m2",), "kg/m²", "кг/м²"),
     "kg/m3": (1.0, ("_kg_m3",), "kg/m³", "кг/м³"),
     "Pa": (1.0, (), "Pa", "Па"),
+    "kPa": (1e3, ("_kPa",), "kPa", "кПа"),
     "MPa": (MPA, ("_MPa",), "MPa", "МПа"),
     "GPa": (1e3 * MPA, ("_GPa",), "GPa", "ГПа"),
     "J": (1.0, ("_J",), "J", "Дж"),
@@ -89,7 +92,8 @@ UNITS = {
     "mPa s": (1e-3, ("_mPa_s",), "mPa·s", "мПа·с"),
     "1/GPa": (1e-9, ("_per_GPa",), "1/GPa", "1/ГПа"),
     "W": (1.0, (), "W", "Вт"),
-    "K": (1.0, (), "K", "К"),
+    "kW": (1e3, ("_kW",), "kW", "кВт"),
+    "K": (1.0, ("_K",), "K", "К"),
     "degC": (1.0, ("_C",), "°C", "°C"),
 }
 """The one unit table: every unit a key, a table, a record or the report shows, the SI value of one unit (a quantity

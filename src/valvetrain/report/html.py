@@ -67,7 +67,7 @@ def fmt(x, lang="en") -> str:
     return "-" if x is None else str(value_text(x, lang))
 
 
-NAME_KEYS = ("name", "material", "table_file")
+NAME_KEYS = ("name", "material", "table_file", "lift_file", "cd_file")
 """Keys whose values are names given by the designer (shown as they are, in every language)."""
 
 CITE_KEYS = ("source", "gas_force_source")
@@ -541,6 +541,7 @@ def render_report(results, plots, lang="en", folder=None) -> str:
         ports = {"inputs": [(k, v) for k, v in _flatten(spec["two_stroke"]) if not k.startswith("ports.")],
                  "plots": plots.get("two_stroke", {}),
                  "ports": {name: shown(port) for name, port in results.two_stroke.figures.ports.items()}}
+    breathing = _breathing(results, spec, plots)
     warning_symbols = [key for key, codes in WARNING_SYMBOLS.items()
                        if any(w.code in codes for w in (*results.warnings, *results.accepted))]
     context = dict(
@@ -554,7 +555,7 @@ def render_report(results, plots, lang="en", folder=None) -> str:
         hydraulic_sources=HYDRAULIC_SOURCES, lubrication_sources=LUBRICATION_SOURCES,
         adjuster_sources=ADJUSTER_SOURCES,
         step=REPORT_STEP_DEG, output=_flatten(spec["output"]), crank=crank, ports=ports,
-        camshaft=_camshaft(results, spec, plots), camshaft_sources=CAMSHAFT_SOURCES,
+        camshaft=_camshaft(results, spec, plots), camshaft_sources=CAMSHAFT_SOURCES, breathing=breathing,
     )
     template = env.get_template("report.html")
     # the bibliography lists the works the report actually cites: found by their short form in a first rendering
@@ -564,6 +565,41 @@ def render_report(results, plots, lang="en", folder=None) -> str:
     page = with_contents(page, TEXT[lang]["toc"])
     page = russian_typography(russian_citations(page)) if lang == "ru" else page
     return page if folder is None else embedded(page, folder)
+
+
+BREATHING_FIELDS = ("speed", "intake_pressure", "intake_temperature", "exhaust_pressure", "wall_temperature",
+                    "air_mass_flow", "volumetric_efficiency", "trapped_mass", "residual_gas_fraction",
+                    "intake_backflow", "exhaust_backflow", "imep", "imep_gross", "pmep", "peak_pressure",
+                    "peak_pressure_angle", "exhaust_temperature", "torque", "power", "cycles")
+"""The rows of the breathing chapter's table of conditions (the torque and power of a fired engine)."""
+
+BREATHING_CURVE_FIELDS = ("speed", "air_mass_flow", "volumetric_efficiency", "residual_gas_fraction", "imep", "pmep",
+                          "peak_pressure", "torque", "power")
+"""The columns of the breathing chapter's table of the speed curve."""
+
+
+def _breathing(results, spec, plots):
+    """The breathing chapter's context: its inputs, the conditions' figures as rows (one column a condition), the
+    curve's as columns (one row a speed), the figures and the tables' files."""
+    b = results.breathing
+    if b is None:
+        return None
+
+    def table(records, keys):
+        keys = [k for k in keys if all(getattr(r, k) is not None for r in records)]
+        return keys, [[value for _, value in shown(r, *keys)] for r in records]
+
+    conditions = [r.figures for r in b.conditions]
+    keys, rows = table(conditions, BREATHING_FIELDS) if conditions else ([], [])
+    curve_keys, curve_rows = table([r.figures for r in b.curve], BREATHING_CURVE_FIELDS) if b.curve else ([], [])
+    return {"inputs": [(k, v) for k, v in _flatten(spec["breathing"]) if not k.startswith(("conditions", "curve"))],
+            "curve_inputs": _flatten(spec["breathing"]["curve"]) if spec["breathing"].get("curve") else [],
+            "names": [shown(conditions[0], k)[0][0] for k in keys] if conditions else [],
+            "rows": [list(col) for col in zip(*rows, strict=True)] if rows else [],
+            "curve_keys": [shown(b.curve[0].figures, k)[0][0] for k in curve_keys] if b.curve else [],
+            "curve_rows": curve_rows, "plots": plots.get("breathing", {}),
+            "files": [f"breathing_condition_{i}.csv" for i in range(1, len(b.conditions) + 1)]
+            + ["breathing_conditions.csv"] * bool(b.conditions) + ["breathing_curve.csv"] * bool(b.curve)}
 
 
 CORRECTIONS_CITED = re.compile(r"(?:corrections notes?|поправк[аи]) (\d+)(?:-(\d+))?")

@@ -1143,3 +1143,44 @@ TOLERANCE_TEXT = {
     },
 }
 """Words of the report of a tolerance study (:mod:`valvetrain.report.tolerance`)."""
+
+TEXT["en"].update({
+    "breathing_chapter": "Breathing: the gas exchange of the cylinder",
+    "br_method": "A one-zone cylinder (the mass and energy balance of air and burned or residual gas, their properties "
+                 "the NASA polynomials of their species; wall heat by Woschni's correlation) breathes through its "
+                 "valves (quasi-steady compressible flow, choked or not, either way, through the effective area "
+                 "C<sub>D</sub>A of the valves' lift) and its runners (quasi-one-dimensional gas dynamics by finite "
+                 "volumes: HLLC fluxes on a limited linear reconstruction, the ends matched to the waves that reach "
+                 "them); cycle follows cycle until the trapped mass, the delivered mass and the pressure at the intake "
+                 "valve's closing repeat. The volumetric efficiency is referred to the intake plenum's density; the "
+                 "net IMEP is the work of the whole cycle, the gross IMEP that of compression and expansion, the PMEP "
+                 "their difference, each over the swept volume; a fired cycle burns the trapped air's fuel on the "
+                 "Wiebe schedule of the crank chapter",
+    "br_conditions": "The conditions", "br_curve": "Against the speed",
+    "br_pv_title": "indicator diagrams: p-V and log p - log V",
+    "br_speed_title": "volumetric efficiency (and indicated torque) against the speed",
+    "br_pv": "p-V", "br_log_pv": "log p - log V", "br_volume": "cylinder volume V, cm³",
+    "br_pressure": "cylinder pressure p, kPa", "br_efficiency": "volumetric efficiency η_v",
+    "br_torque": "indicated torque, N·m", "br_condition": "{speed} rpm, {pressure} kPa",
+})
+
+TEXT["ru"].update({
+    "breathing_chapter": "Газообмен цилиндра",
+    "br_method": "Цилиндр как один объём (баланс массы и энергии воздуха и продуктов сгорания или остаточных газов, "
+                 "свойства которых — полиномы НАСА их компонентов; теплоотдача в стенки по формуле Вошни) наполняется "
+                 "и очищается через клапаны (квазистационарное течение сжимаемого газа, критическое и докритическое, в "
+                 "обе стороны, через эффективное сечение C<sub>D</sub>A по подъёму клапанов) и через впускной и "
+                 "выпускной трубопроводы (квазиодномерная газовая динамика методом конечных объёмов: потоки "
+                 "Хартена — Лакса — ван Лира с контактной волной по ограниченной линейной реконструкции, граничные "
+                 "условия по приходящим волнам); циклы рассчитываются до повторения массы заряда, поданной массы и давления в момент закрытия впускного клапана. "
+                 "Коэффициент наполнения отнесён к плотности во впускном ресивере; индикаторное давление нетто — "
+                 "работа всего цикла, брутто — работа сжатия и расширения, давление насосных потерь — их разность, "
+                 "все на единицу рабочего объёма; в рабочем цикле сгорает топливо воздуха заряда по закону Вибе "
+                 "из расчёта кривошипно-шатунного механизма",
+    "br_conditions": "Режимы", "br_curve": "По частоте вращения",
+    "br_pv_title": "индикаторные диаграммы в координатах p-V и в логарифмических координатах",
+    "br_speed_title": "коэффициент наполнения (и индикаторный крутящий момент) по частоте вращения",
+    "br_pv": "p-V", "br_log_pv": "в логарифмических координатах", "br_volume": "объём цилиндра V, см³",
+    "br_pressure": "давление в цилиндре p, кПа", "br_efficiency": "коэффициент наполнения η_v",
+    "br_torque": "индикаторный крутящий момент, Н·м", "br_condition": "{speed} об/мин, {pressure} кПа",
+})

@@ -17,7 +17,7 @@ import itertools
 from matplotlib import rc_context
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
-from matplotlib.ticker import ScalarFormatter
+from matplotlib.ticker import NullFormatter, ScalarFormatter
 import numpy as np
 from PIL import Image
 
@@ -971,11 +971,85 @@ def camshaft_torsion_figure(shaft, t) -> Figure:
     return draw_camshaft_torsion(camshaft_torsion_data(shaft), t)
 
 
+def _condition_label(record, t):
+    """A condition's legend: its speed and intake plenum pressure."""
+    return t["br_condition"].format(speed=number(shown_value(record, "speed"), t["lang"]),
+                                    pressure=number(shown_value(record, "intake_pressure"), t["lang"]))
+
+
+def breathing_pv_data(breathing, t) -> dict[str, Any]:
+    """The series of :func:`draw_breathing_pv`: each condition's legend, cylinder volume [cm3] and pressure [kPa] over
+    its converged cycle."""
+    return {"cycles": [(_condition_label(r.figures, t), r.columns.volume * 1e6, r.columns.pressure * 1e-3)
+                       for r in breathing.conditions]}
+
+
+def draw_breathing_pv(d, t) -> Figure:
+    """The indicator diagrams of the breathing's conditions: p-V and log p - log V (the compression and expansion
+    straight lines of slope -n, the pumping loop at the bottom)."""
+    fig = Figure(figsize=(11, 5))
+    linear, logs = fig.subplots(1, 2)
+    for label, v, p in d["cycles"]:
+        linear.plot(v, p, lw=1.0, label=label)
+        logs.loglog(v, p, lw=1.0, label=label)
+    for ax in (linear, logs):
+        ax.set_xlabel(t["br_volume"])
+        ax.set_ylabel(t["br_pressure"])
+        ax.grid(alpha=0.3, which="both")
+    for axis in (logs.xaxis, logs.yaxis):       # plain numbers at the decades, none between them
+        axis.set_major_formatter(ScalarFormatter())
+        axis.set_minor_formatter(NullFormatter())
+    linear.legend(loc="upper right", fontsize=8)
+    linear.set_title(t["br_pv"])
+    logs.set_title(t["br_log_pv"])
+    fig.subplots_adjust(left=0.07, right=0.98, bottom=0.12, top=0.92, wspace=0.25)
+    return _localised(fig, t)
+
+
+def breathing_pv_figure(breathing, t) -> Figure:
+    """:func:`draw_breathing_pv` of :func:`breathing_pv_data`."""
+    return draw_breathing_pv(breathing_pv_data(breathing, t), t)
+
+
+def breathing_speed_data(breathing) -> dict[str, Any]:
+    """The series of :func:`draw_breathing_speed`: the curve's speeds [rpm] (else the conditions'), volumetric
+    efficiency and, fired, the indicated torque [N m]."""
+    records = [r.figures for r in (breathing.curve or breathing.conditions)]
+    torque = [shown_value(r, "torque") for r in records] if records[0].torque is not None else None
+    return {"speed_rpm": [shown_value(r, "speed") for r in records],
+            "efficiency": [r.volumetric_efficiency for r in records], "torque_Nm": torque,
+            "curve": bool(breathing.curve)}
+
+
+def draw_breathing_speed(d, t) -> Figure:
+    """Volumetric efficiency (and the indicated torque of a fired engine) against the speed."""
+    fig = Figure(figsize=(9, 5))
+    ax = fig.subplots()
+    style = dict(marker="o", lw=1.2) if d["curve"] else dict(marker="o", ls="none")
+    ax.plot(d["speed_rpm"], d["efficiency"], color="C0", label=t["br_efficiency"], **style)
+    ax.set_xlabel(t["speed"])
+    ax.set_ylabel(t["br_efficiency"])
+    ax.grid(alpha=0.3)
+    if d["torque_Nm"] is not None:
+        right = ax.twinx()
+        right.plot(d["speed_rpm"], d["torque_Nm"], color="C3", label=t["br_torque"], **style)
+        right.set_ylabel(t["br_torque"])
+    ax.set_title(t["br_speed_title"])
+    fig.subplots_adjust(left=0.1, right=0.9, bottom=0.12, top=0.92)
+    return _localised(fig, t)
+
+
+def breathing_speed_figure(breathing, t) -> Figure:
+    """:func:`draw_breathing_speed` of :func:`breathing_speed_data`."""
+    return draw_breathing_speed(breathing_speed_data(breathing), t)
+
+
 ENGINE_FIGURES = {"crank": {"crank_forces": crank_forces_figure, "crank_torque": crank_torque_figure,
                             "crank_pin_polar": crank_pin_figure},
                   "two_stroke": {"two_stroke_ports": two_stroke_ports_figure,
                                  "two_stroke_time_area": two_stroke_speed_figure},
-                  "camshaft": {"camshaft_torque": camshaft_torque_figure, "camshaft_torsion": camshaft_torsion_figure}}
+                  "camshaft": {"camshaft_torque": camshaft_torque_figure, "camshaft_torsion": camshaft_torsion_figure},
+                  "breathing": {"breathing_pv": breathing_pv_figure, "breathing_speed": breathing_speed_figure}}
 
 
 FIGURES = {"kinematics": kinematics_figure, "contour": contour_figure, "time_area": time_area_figure,
@@ -986,7 +1060,8 @@ FIGURE_SETS = ("main", "all", "none")
 ``all`` every one, ``none`` none."""
 
 MAIN_FIGURES = frozenset({"kinematics", "contour", "dynamics_speed", "grinding", "hydraulic", "timing",
-                          "crank_torque", "two_stroke_ports", "camshaft_torque", "camshaft_torsion"})
+                          "crank_torque", "two_stroke_ports", "camshaft_torque", "camshaft_torsion", "breathing_pv",
+                          "breathing_speed"})
 """The figures drawn by default (``figures="main"``): the valve's lift law and its cam, one figure of each further
 stage that a section asks for (the dynamics' seating velocity, bounce and contact force against the speed; the
 grinding; the hydraulic drive over a revolution; the crank and camshaft torques; the ports) and the timing diagram.
@@ -995,6 +1070,12 @@ characteristic, the stresses against the speed, the dynamics' maps over angle an
 against the speed, the crank forces and pin load, the ports' time-area, whose extremes the report's tables give.
 A figure costs 0.1-0.4 s of processor time, the design of a valve's numbers a few milliseconds to a few tenths of
 a second."""
+
+
+def drawn(stage, kind, data) -> bool:
+    """Whether an engine chapter's figure has something to show: the breathing's speed figure needs its curve or
+    two conditions or more."""
+    return not (kind == "breathing_speed" and not data.curve and len(data.conditions) < 2)
 
 
 def write_plots(results, folder, lang="en", figures="main", claim=None) -> dict[str, Any]:
@@ -1031,5 +1112,5 @@ def write_plots(results, folder, lang="en", figures="main", claim=None) -> dict[
         data = getattr(results, stage)
         if data is not None:
             written[stage] = {kind: save(lambda make=make: make(data, t), f"{kind}.png")
-                              for kind, make in figures_of_stage.items() if wanted(kind)}
+                              for kind, make in figures_of_stage.items() if wanted(kind) and drawn(stage, kind, data)}
     return written

@@ -12,7 +12,7 @@ from typing import Annotated, ClassVar, Literal, Optional, Union
 
 from pydantic import Field, ValidationError, field_validator, model_validator
 
-from ..files import read_indicator
+from ..files import read_cd_table, read_indicator, read_valve_lift
 from ..layouts import LAYOUTS, layout
 from ..spring_materials import GRADES, grade
 from .cams import LAWS, Cam
@@ -670,6 +670,103 @@ class TwoStroke(_Model):
     ports: dict[str, Port]
 
 
+class BreathingSide(_Model):
+    """[breathing.intake], [breathing.exhaust]: one side's valves, their discharge coefficients and runner.
+
+    The lift is the designed valves' of the kind (every ``[valves.NAME]`` of ``kind``), or a measured one
+    (``lift_file``: ``crank_deg,lift_mm``, crank degrees from the gas-exchange TDC, the valve shut outside the rows;
+    ``valves`` of them).  The effective area is C_D(L/D) of ``cd_file`` (``l_over_d,cd_forward,cd_reverse``, forward
+    into the cylinder for the intake, out of it for the exhaust) on the reference area of ``cd_reference`` (the port,
+    pi D^2 / 4, or the curtain, pi D L; D = ``cd_diameter_mm``), or without a file the default C_D on the valves'
+    flow section.  ``runner_length_mm`` and ``runner_diameter_mm``: the runner with its port from the plenum to the
+    valve (none: the valve opens straight into the plenum)."""
+
+    lift_file: Optional[str] = None
+    valves: Annotated[int, Field(ge=1, le=8)] = 1
+    cd_file: Optional[str] = None
+    cd_diameter_mm: Optional[Length(1.0, 1000.0)] = None
+    cd_reference: Literal["port", "curtain"] = "port"
+    runner_length_mm: Optional[Length(0.0, 20000.0)] = None
+    runner_diameter_mm: Optional[Length(1.0, 1000.0)] = None
+
+    si_extras: ClassVar[tuple] = ("lift", "cd")
+
+    def read_extras(self, root) -> dict:
+        """The measured lift (crank deg, mm) and the C_D table (L/D, forward, reverse) as read
+        (:func:`valvetrain.files.read_valve_lift`, :func:`valvetrain.files.read_cd_table`), or None."""
+        return {"lift": None if self.lift_file is None else read_valve_lift(resolve_path(root, self.lift_file)),
+                "cd": None if self.cd_file is None else read_cd_table(resolve_path(root, self.cd_file))}
+
+    @model_validator(mode="after")
+    def _pairs(self):
+        problems = []
+        if (self.runner_length_mm is None) != (self.runner_diameter_mm is None):
+            problems.append("give runner_length_mm and runner_diameter_mm together (or neither: no runner)")
+        if self.cd_file is not None and self.cd_diameter_mm is None:
+            problems.append("cd_file needs cd_diameter_mm, the reference diameter D of its L/D")
+        if problems:
+            raise ValueError("; ".join(problems))
+        return self
+
+
+class PlenumState(_Model):
+    """The plenums and the walls of a breathing condition (absolute pressures)."""
+
+    intake_pressure_kPa: _bounded(1.0, 10000.0, "kPa", low_open=False)
+    intake_temperature_C: _bounded(-60.0, 500.0, "degC", low_open=False)
+    exhaust_pressure_kPa: _bounded(1.0, 10000.0, "kPa", low_open=False)
+    exhaust_temperature_C: Optional[_bounded(-60.0, 1500.0, "degC", low_open=False)] = None
+    wall_temperature_C: Optional[_bounded(-60.0, 1000.0, "degC", low_open=False)] = None
+
+
+class BreathingCondition(PlenumState):
+    """[[breathing.conditions]]: one speed and plenum state (the exhaust plenum's temperature, when not given, is
+    the mean of the gas that flows into it; the wall temperature defaults to [breathing]'s)."""
+
+    speed_rpm: _bounded(10.0, 30000.0, "rpm", low_open=False)
+
+
+class BreathingCurve(PlenumState):
+    """[breathing.curve]: the breathing at ``points`` speeds evenly over ``speed_range_rpm``, one plenum state."""
+
+    speed_range_rpm: Pair(10.0, 30000.0, "rpm")
+    points: Annotated[int, Field(ge=2, le=200)] = 20
+
+
+class Breathing(_Model):
+    """[breathing]: the gas exchange of the engine's cylinders through its valves, converged over cycles at each
+    condition, motored or fired (the Wiebe heat release of [crank.cycle], its fuel the trapped air's).
+
+    ``compression_ratio`` defaults to [crank]'s; ``wall_temperature_C`` is the conditions' default;
+    ``heat_transfer``: Woschni (1967) or none; ``cell_mm`` the runners' longest cell; the cycles repeat when the
+    trapped mass, the delivered mass and the pressure at the intake valve's closing change by less than
+    ``cycle_tolerance`` (at most ``max_cycles``)."""
+
+    mode: Literal["motored", "fired"] = "motored"
+    compression_ratio: Optional[_bounded(1.0, 60.0)] = None
+    wall_temperature_C: Optional[_bounded(-60.0, 1000.0, "degC", low_open=False)] = None
+    heat_transfer: Literal["woschni", "adiabatic"] = "woschni"
+    fuel: Literal["isooctane", "n-heptane", "methane", "propane", "ethanol"] = "isooctane"
+    equivalence_ratio: _bounded(0.1, 1.0, low_open=False) = 1.0
+    combustion_efficiency: _bounded(0.1, 1.0, low_open=False) = 1.0
+    cell_mm: _bounded(2.0, 500.0, "mm", low_open=False) = 40.0
+    cycle_tolerance: _bounded(1e-6, 0.1, low_open=False) = 1e-3
+    max_cycles: Annotated[int, Field(ge=2, le=1000)] = 60
+    intake: BreathingSide = BreathingSide()
+    exhaust: BreathingSide = BreathingSide()
+    conditions: list[BreathingCondition] = []
+    curve: Optional[BreathingCurve] = None
+
+    @model_validator(mode="after")
+    def _something_to_run(self):
+        if not self.conditions and self.curve is None:
+            raise ValueError("give at least one [[breathing.conditions]] or a [breathing.curve]")
+        if self.curve is not None and self.curve.speed_range_rpm[0] >= self.curve.speed_range_rpm[1]:
+            raise ValueError(f"curve.speed_range_rpm = {list(self.curve.speed_range_rpm)}: must be [low, high] with "
+                             "low < high")
+        return self
+
+
 class Output(_Model):
     """[output]: tables and exports."""
 
@@ -759,6 +856,7 @@ class Spec(_Model):
     crank: Optional[CrankSpec] = None
     camshaft: Optional[Camshaft] = None
     two_stroke: Optional[TwoStroke] = None
+    breathing: Optional[Breathing] = None
     output: Output = Output()
     document: Document = Document()
     accepted: list[Acceptance] = []
@@ -769,10 +867,10 @@ class Spec(_Model):
     @field_validator("valves")
     @classmethod
     def _valve_names(cls, valves):
-        bad = [shown(n, 40) for n in valves if not _NAME.match(n) or n in ("crank", "two_stroke")]
+        bad = [shown(n, 40) for n in valves if not _NAME.match(n) or n in ("crank", "two_stroke", "breathing")]
         if bad:
             raise ValueError(f"valve names {', '.join(bad)}: allowed a letter, then up to 31 letters, digits, '_' and "
-                             "'-' (and not 'crank' or 'two_stroke', the names of the engine's chapters)")
+                             "'-' (and not 'crank', 'two_stroke' or 'breathing', the names of the engine's chapters)")
         return valves
 
     def replace(self, values) -> "Spec":
@@ -805,8 +903,9 @@ class Spec(_Model):
 
     @model_validator(mode="after")
     def _something_to_design(self):
-        if not self.valves and self.crank is None and self.two_stroke is None:
-            raise ValueError("nothing to design: give at least one [valves.NAME], [crank] or [two_stroke] section")
+        if not self.valves and self.crank is None and self.two_stroke is None and self.breathing is None:
+            raise ValueError("nothing to design: give at least one [valves.NAME], [crank], [two_stroke] or [breathing] "
+                             "section")
         return self
 
 
