@@ -2,15 +2,20 @@
 [document] section, a table of contents linking every chapter, a Conclusions chapter, the long tables in an appendix,
 page numbers in print.  A compiled template kept between runs is that of the report's language."""
 
+from html import unescape
+import json
 import re
 import tomllib
 
 from click.testing import CliRunner
+import pytest
 
 from valvetrain.cli import main
 from valvetrain.design import run
+from valvetrain.locale import catalogue
 from valvetrain.report.html import embedded, render_report
 from valvetrain.report.i18n import TEXT
+from valvetrain.report.names import record_quantity_text
 from valvetrain.specification import example_spec
 
 from appendix import appendix_text
@@ -87,3 +92,59 @@ def test_a_linked_figure_is_embedded_from_its_file():
     assert [base64.b64decode(u, validate=True) for u in uris] == [images["a.png"], images["b&c.png"]]
     assert re.sub(r'data:image/png;base64,[^"]*', "X", got) == (
         '<p>see plots/a.png</p><img src="X" alt="A" class="tall"><img src="X" alt="B">')
+
+
+@pytest.fixture(scope="module")
+def builtin():
+    """The built-in example designed in this process."""
+    return run(example_spec())
+
+
+def _cells(row):
+    """The texts of a table row's cells (tags taken out, entities decoded, spaces joined)."""
+    return [" ".join(unescape(re.sub(r"<[^>]+>", "", cell)).split())
+            for cell in re.findall(r"<td[^>]*>(.*?)</td>", row, re.S)]
+
+
+def _check_rows(page):
+    """The rows of the report's tables of checks in their chapters: ``[(heading of the chapter (h2), cells)]``."""
+    rows = []
+    for chapter in re.split(r"(?=<h2[ >])", page)[1:]:
+        heading = " ".join(unescape(re.sub(r"<[^>]+>", "", chapter[:chapter.index("</h2>")])).split())
+        for table in re.findall(r'<table class="checks">(.*?)</table>', chapter, re.S):
+            rows += [(heading, _cells(row)) for row in re.findall(r"<tr class=[^>]*>(.*?)</tr>", table, re.S)]
+    return rows
+
+
+@pytest.mark.parametrize("lang", ["en", "ru"])
+def test_every_graded_check_of_results_json_is_in_its_chapter_with_its_limit(builtin, lang):
+    """Issue 39: every graded check (a failure's allowable limit, a warning's recommended range) of results.json
+    appears once in the chapter of its valve (the engine's outside the valves' chapters), as its name, its value,
+    its limit, a verdict in words and its margin.  Before: 24 of the built-in example's 77 graded checks showed their
+    limit in the note (the strength tables and the accepted list).  The numbers are results.json's, printed by the
+    report's rule of numbers (4 significant figures; a bound as given, to 6)."""
+    records = [c for c in json.loads(json.dumps(builtin.to_dict()))["checks"] if c["severity"] != "info"]
+    assert len(records) == 77
+    rows = _check_rows(render_report(builtin, {}, lang))
+    assert len(rows) == len(builtin.checks)               # every check once, the remarks (info) too
+    t = TEXT[lang]
+
+    def chapter_of_valve(head):
+        """The valve whose chapter has the heading ``head`` (None: not a valve's)."""
+        return next((v for v in builtin.valves if f'"{v}"' in head or f"«{v}»" in head), None)
+
+    for c in records:
+        name = record_quantity_text(c, lang).removeprefix(f"{c['valve']}: ")     # the chapter names the valve,
+        for chapter in catalogue(lang)["chapters"].values():                     # or the part of the engine
+            name = name.removeprefix(f"{chapter}: ")
+        found = [(head, cells) for head, cells in rows if cells[0] == name and chapter_of_valve(head) == c["valve"]]
+        assert len(found) == 1, (c["code"], c["valve"], name, [h for h, _ in found])
+        _, (_, value, limit, verdict, margin, *_) = found[0]
+        comma = (lambda x: x.replace(".", ",")) if lang == "ru" else (lambda x: x)
+        printed = float(re.match(r"[-\d.,]+", value).group().replace(",", "."))
+        assert printed == pytest.approx(c["value"], rel=6e-4, abs=1e-6), (c["code"], value, c["value"])
+        for bound in (c["low"], c["high"]):
+            assert bound is None or comma(f"{bound:g}") in limit, (c["code"], limit, bound)
+        assert verdict.startswith(t[("verdict_in_" if c["pass"] else "verdict_out_") + c["severity"]]), (c, verdict)
+        assert (t["verdict_accepted"] in verdict) == (c["accepted"] and not c["pass"])
+        assert margin.endswith("%") and (margin.startswith("-") == (c["margin"] < 0)), (c["code"], margin)

@@ -20,7 +20,7 @@ from valvetrain.spring_materials import GRADES
 EXAMPLES = Path(__file__).parents[2] / "examples"
 
 SYMBOLS = {"max", "min", "cos", "sin", "tan", "arccos", "zap"}
-PROPER = ({"valvetrain", "HP", "Academy"} | {w for grade in GRADES for w in re.findall(r"[A-Za-z]+", grade)}
+PROPER = ({"valvetrain", "HP", "Academy", "ASTM"} | {w for grade in GRADES for w in re.findall(r"[A-Za-z]+", grade)}
           | {w for work in WORKS.values() if work.short not in SHORT for w in re.findall(r"[A-Za-z]+", work.short)})
 
 

@@ -13,7 +13,6 @@ import numpy as np
 
 from .. import __version__
 from ..checks import describe_range, tally
-from ..design.drive import strength_allowed
 from ..design.dynamics import SOURCES as DYNAMICS_SOURCES
 from ..design.grinding import SOURCES as GRINDING_SOURCES
 from ..design.hydraulic_actuation import SOURCES as HYDRAULIC_SOURCES
@@ -26,7 +25,7 @@ from ..specification.si import si
 from ..tables import lift_table_columns
 from ..bibliography import WORKS, cited_in, corrections_notes
 from ..units import to_display
-from ..locale import verdict
+from ..locale import catalogue, verdict
 from .i18n import SYMBOLS, TEXT
 from .numbers import number, percent
 from .russian import russian_citations, russian_typography
@@ -253,11 +252,112 @@ def _fit_reason(rec, lang):
 
 
 def _strength(st):
-    """The strength chapter of a valve from its :class:`~valvetrain.design.drive.StrengthResult`: the rows, each
-    check (its code without ``strength.``, the check, its allowed range) and the checks whose parts are not given."""
-    return {"rows": shown(st, nested=False),
-            "checks": [(c.code.removeprefix("strength."), c, strength_allowed(c)) for c in st.checks],
-            "not_checked": st.not_checked}
+    """The strength chapter of a valve from its :class:`~valvetrain.design.drive.StrengthResult`: the rows and the
+    checks whose parts are not given (its checks are the chapter's, :func:`chapter_checks`)."""
+    return {"rows": shown(st, nested=False), "not_checked": st.not_checked}
+
+
+CHECK_CHAPTERS = {
+    "flow": "flow", "valve.seat_angle": "flow", "flow.time_area_velocity": "time_area",
+    "flow.charge_velocity": "time_area", "law": "law", "ramp": "law", "tappet_acceleration": "law", "timing": "law",
+    "seating_velocity": "law", "valve.clearance": "law", "drive.rocker_ratio": "law", "synthesis": "law",
+    "cam": "geometry", "profile": "geometry", "piston": "geometry", "follower": "geometry", "spring": "springs",
+    "drive.specific_mass": "springs", "gas_force": "springs", "strength": "strength", "dynamics": "dynamics",
+    "grinding": "grinding", "hydraulic": "hydraulic", "lubrication": "lubrication", "lash_adjuster": "lash_adjuster",
+    "engine": "engine", "crank": "crank", "camshaft": "camshaft", "ports": "ports",
+}
+"""The chapter of the report that shows the checks of a code: the entry of the code's longest dotted prefix
+(:func:`check_chapter`)."""
+
+
+def check_chapter(code) -> str:
+    """The chapter of the report that shows a check of ``code`` (:data:`CHECK_CHAPTERS`), ``"other"`` for a code
+    of no chapter.
+
+    >>> check_chapter("flow.throat_velocity"), check_chapter("flow.charge_velocity"), check_chapter("new.code")
+    ('flow', 'time_area', 'other')
+    """
+    parts = code.split(".")
+    for n in range(len(parts), 0, -1):
+        if ".".join(parts[:n]) in CHECK_CHAPTERS:
+            return CHECK_CHAPTERS[".".join(parts[:n])]
+    return "other"
+
+
+def chapter_checks(results) -> dict:
+    """Every check of a design in the chapter of the report that shows it: ``{valve name or None: {chapter:
+    [checks]}}`` (None: the engine's chapters).  A valve's check whose chapter the report does not have (a chapter
+    of a stage that did not run, a code of no chapter) is in the valve's ``"other"``, an engine's in
+    ``"engine"``: every check is shown once, with its limit."""
+    present = {None: {"engine", "crank" if results.crank is not None else "",
+                      "camshaft" if results.camshaft is not None else "",
+                      "ports" if results.two_stroke is not None else ""}}
+    for name, v in results.valves.items():
+        present[name] = {"flow", "law", "time_area", "geometry", "springs", "strength", "other",
+                         *(k for k in ("dynamics", "grinding", "hydraulic", "lubrication", "lash_adjuster")
+                           if getattr(v, k) is not None)}
+    found = {key: {} for key in present}
+    for c in results.checks:
+        chapter = check_chapter(c.code)
+        if chapter not in present[c.valve]:
+            chapter = "engine" if c.valve is None else "other"
+        found[c.valve].setdefault(chapter, []).append(c)
+    return found
+
+
+def check_verdict(c, lang) -> str:
+    """A check's verdict in words (the colour of its row says the same): within or outside its range, which says
+    the kind of the range (an allowable limit, a recommended range, a remark's), accepted in the specification,
+    or not evaluated."""
+    t = TEXT[lang]
+    if not c.evaluated:
+        return t["verdict_unevaluated"]
+    text = t[("verdict_in_" if c.passed else "verdict_out_") + c.severity]
+    return f"{text}; {t['verdict_accepted']}" if c.accepted and not c.passed else text
+
+
+def check_margin(c, lang) -> str:
+    """The margin of a check in per cent (:attr:`~valvetrain.checks.Check.shown_margin`), "-" where the check has
+    no bound or no value."""
+    margin = c.shown_margin
+    return percent(margin, lang) if np.isfinite(margin) else "-"
+
+
+def check_class(c) -> str:
+    """The class of a check's row: ``pass``, or the severity of a check outside its range (``fail``, ``warn``,
+    ``info``), ``accepted`` added for an accepted one."""
+    if c.passed:
+        return "pass"
+    level = {"failure": "fail", "warning": "warn"}.get(c.severity, "info")
+    return f"{level} accepted" if c.accepted else level
+
+
+SHORT_FORMS = re.compile("|".join(re.escape(w.short) for w in WORKS.values()))
+"""The in-text form of every work of the bibliography."""
+
+
+def marked_citations(text) -> Markup:
+    """``text`` (a check's note, in the report's language) with the citations of the bibliography in it marked as
+    citations (``span.cite``)."""
+    parts = SHORT_FORMS.split(text)
+    cites = [Markup('<span class="cite">{}</span>').format(m) for m in SHORT_FORMS.findall(text)]
+    return Markup("").join(Markup.escape(p) + (cites[i] if i < len(cites) else "") for i, p in enumerate(parts))
+
+
+PART_PARAMS = ("port",)
+"""Parameters of a check's code that name a part the designer named (shown as names, in every language)."""
+
+
+def check_name(c, lang) -> str:
+    """A check's quantity in ``lang`` without its valve's or chapter's name (the chapter of the report that shows
+    it names it), a part the designer named marked as a name."""
+    text = quantity_text(c, lang)
+    head, sep, rest = text.partition(": ")
+    if sep and (head == c.valve or head in catalogue(lang)["chapters"].values()):
+        text = rest
+    names = [str(v) for k, v in c.params if k in PART_PARAMS]
+    return Markup("").join(Markup('<span class="name">{}</span>').format(part) if part in names else part
+                           for part in re.split(f"({'|'.join(map(re.escape, names))})", text)) if names else text
 
 
 DYNAMICS_HEADLINE = ("speed_range", "speeds", "jump_speed", "bounce_speed", "max_seating_velocity",
@@ -464,6 +564,11 @@ def render_report(results, plots, lang="en", folder=None) -> str:
     env.filters["range"] = lambda c: check_range(c, lang)
     env.filters["value"] = lambda c: check_value(c, lang)
     env.filters["not_checked"] = lambda note: not_checked(note, lang)
+    env.filters["verdict"] = lambda c: check_verdict(c, lang)
+    env.filters["margin"] = lambda c: check_margin(c, lang)
+    env.filters["check_class"] = check_class
+    env.filters["check_name"] = lambda c: check_name(c, lang)
+    env.filters["cited"] = marked_citations
     env.globals["cell"] = lambda key, value: cell(key, value, lang)
     env.globals["legend"] = symbol_legend(lang)
     env.filters["shown"] = shown_value
@@ -472,7 +577,7 @@ def render_report(results, plots, lang="en", folder=None) -> str:
     parts = list(results.valves) + (list(results.two_stroke.figures.ports) if results.two_stroke is not None else [])
     env.filters["quantity"] = lambda c: _quantity(c, lang, parts)
     env.filters["diagnosis"] = lambda d: diagnosis_text(d, lang)
-    valves = []
+    valves, checks = [], chapter_checks(results)
     for name, v in results.valves.items():
         spring = v.drive.spring
         lift = lift_table_columns(v.table)
@@ -513,6 +618,7 @@ def render_report(results, plots, lang="en", folder=None) -> str:
             "hydraulic": _hydraulic(v),
             "lubrication": _lubrication(v),
             "lash_adjuster": _lash_adjuster(v),
+            "checks": checks[name],
         })
     first_page = _summary(results, TEXT[lang])
     crank = None
@@ -535,7 +641,7 @@ def render_report(results, plots, lang="en", folder=None) -> str:
         first_page=first_page, timing=plots.get("(timing)"), table_columns=TABLE_COLUMNS,
         engine_rows=shown(results.engine, "mean_piston_speed", "swept_volume", "displacement", "piston_area"),
         cam_card=results.cam_card,
-        conclusions=_conclusions(results, TEXT[lang]), document=spec.get("document", {}),
+        conclusions=_conclusions(results, TEXT[lang]), document=spec.get("document", {}), checks=checks[None],
         dynamics_sources=DYNAMICS_SOURCES, grinding_sources=GRINDING_SOURCES,
         hydraulic_sources=HYDRAULIC_SOURCES, lubrication_sources=LUBRICATION_SOURCES,
         adjuster_sources=ADJUSTER_SOURCES,

@@ -69,7 +69,7 @@ TEXT = {
         "yes": "yes", "no": "no",
         "springs": "5. Valve spring", "strength": "6. Strength of the drive parts",
         "masses": "Reduced masses", "spring_design": "Spring design", "outer_spring": "Outer spring",
-        "inner_spring": "Inner spring", "check": "Check", "allowed": "Allowed", "pass": "Pass", "note": "Note",
+        "inner_spring": "Inner spring", "check": "Check", "allowed": "Allowed", "note": "Note",
         "not_checked": "Not checked", "cam_load": "Cam load",
         "inertia_force": "inertia force m_v|j_v|", "required_force": "required force K_z m_v|j_v|",
         "line_required": "required characteristic", "line_chosen": "chosen spring(s)", "line_outer": "outer spring",
@@ -237,7 +237,7 @@ TEXT = {
         "yes": "да", "no": "нет",
         "springs": "5. Пружина клапана", "strength": "6. Прочность деталей привода",
         "masses": "Приведённые массы", "spring_design": "Расчёт пружины", "outer_spring": "Наружная пружина",
-        "inner_spring": "Внутренняя пружина", "check": "Проверка", "allowed": "Допускается", "pass": "Годен",
+        "inner_spring": "Внутренняя пружина", "check": "Проверка", "allowed": "Допускается",
         "note": "Примечание", "not_checked": "Не проверено", "cam_load": "Нагрузка на кулачок",
         "inertia_force": "сила инерции m_кл|j_кл|", "required_force": "необходимая сила K_з m_кл|j_кл|",
         "line_required": "необходимая характеристика", "line_chosen": "выбранная пружина (пружины)",
@@ -1065,3 +1065,33 @@ TOLERANCE_TEXT = {
     },
 }
 """Words of the report of a tolerance study (:mod:`valvetrain.report.tolerance`)."""
+
+
+NOTE_TEXT = {
+    "en": {
+        "checks": "Checks", "limit": "Limit", "verdict": "Verdict", "margin": "Margin",
+        "other_checks": "Further checks", "engine_checks": "Checks of the engine's main dimensions",
+        "verdict_in_failure": "allowable limit met", "verdict_out_failure": "ALLOWABLE LIMIT NOT MET",
+        "verdict_in_warning": "within the recommended range", "verdict_out_warning": "outside the recommended range",
+        "verdict_in_info": "within the range (remark)", "verdict_out_info": "outside the range (remark)",
+        "verdict_accepted": "accepted in the specification",
+        "verdict_unevaluated": "not evaluated: counted as a limit not met",
+        "margin_note": "Margin: the relative distance of the value to the nearest bound of its range, negative "
+                       "outside it.",
+    },
+    "ru": {
+        "checks": "Проверки", "limit": "Предел", "verdict": "Вывод", "margin": "Запас",
+        "other_checks": "Прочие проверки", "engine_checks": "Проверки основных размеров двигателя",
+        "verdict_in_failure": "допускаемый предел выполнен", "verdict_out_failure": "ДОПУСКАЕМЫЙ ПРЕДЕЛ НЕ ВЫПОЛНЕН",
+        "verdict_in_warning": "в рекомендуемых пределах", "verdict_out_warning": "вне рекомендуемых пределов",
+        "verdict_in_info": "в пределах (справка)", "verdict_out_info": "вне пределов (справка)",
+        "verdict_accepted": "принято в исходных данных",
+        "verdict_unevaluated": "не вычислено: считается невыполненным пределом",
+        "margin_note": "Запас — относительное расстояние значения до ближайшей границы его пределов, вне пределов "
+                       "отрицательное.",
+    },
+}
+"""Texts of the calculation note: the checks in their chapters."""
+
+for _lang, _texts in NOTE_TEXT.items():
+    TEXT[_lang].update(_texts)

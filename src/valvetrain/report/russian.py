@@ -47,6 +47,8 @@ LOCATORS = (
     (r"\bsection (\d)", r"раздел \1"), (r"\bchapter (\d)", r"глава \1"), (r"\bch\. (\d)", r"гл. \1"),
     (r"\bTable (\S)", r"таблица \1"),
     (r"\bappendix\b", "приложение"), (r"\bp\. (\d)", r"с. \1"),
+    (r"the follower's force at the adjuster's push ([\d.]+) N at the valve, where its check valve opens \(",
+     r"сила толкателя у гидрокомпенсатора \1 Н, приведённая к клапану, при которой открывается его обратный клапан ("),
 )
 """Locators of a citation in Russian (regular expression, replacement)."""
 
@@ -80,6 +82,58 @@ NOTES = {
     "one-mass and multi-mass trains, jump, seating, bounce":
         "одномассовая и многомассовая модели привода, отрыв, посадка, отскок",
     "resonant harmonic and distortion": "резонансная гармоника и искажение",
+    "(side_valve chamber)": "(нижнее расположение клапанов)", "(overhead chamber)": "(верхнее расположение клапанов)",
+    "(prechamber_diesel chamber)": "(вихрекамерные и предкамерные дизели)",
+    "(direct_injection_diesel chamber)": "(дизели с непосредственным впрыском)",
+    "(wedge chamber)": "(клиновидная и плоскоовальная камеры сгорания)",
+    "(hemispherical chamber)": "(полусферическая камера сгорания)",
+    "the chosen springs' rounded coils can move it off the required line's ratio":
+        "округлённое число витков выбранной пружины может сместить его от отношения необходимой характеристики",
+    " with [tau] of ": " с [τ] стали ", "tau_-1 and psi_tau of ": "τ₋₁ и ψ_τ стали ", "Tables ": "таблицы ",
+    "table A-9": "таблица A-9", "(R_m of ASTM A401)": "(R_m по ASTM A401)", "(psi_tau: literature, ": "(ψ_τ: по литературе, ",
+    "installed_length_mm of the specification, or 6 x lift (a stated default)":
+        "установочная длина из исходных данных или 6 × подъём (принято по умолчанию)",
+    "0.3-0.5 m/s usual, graded at every speed swept up to the rated one":
+        "обычно 0,3-0,5 м/с; оценивается на всех частотах расчёта до номинальной",
+    "0.3-0.5 m/s usual": "обычно 0,3-0,5 м/с", "ch. 3 and ch. 7": "гл. 3 и 7",
+    ": no separation below [engine] over_speed_ratio x the rated speed":
+        ": без отрыва толкателя до наибольшей частоты вращения (over_speed_ratio × номинальная)",
+    "(flat-faced follower face width)": "(ширина торца плоского толкателя)",
+    "a factor of 3 beyond ": "пределы, расширенные в 3 раза относительно: ",
+    ": an engine delivers work; a cycle whose pressures give a negative mean torque absorbs it (a motored engine), "
+    "and its non-uniformity is undefined": ": двигатель совершает работу; цикл, давления которого дают отрицательный "
+    "средний момент, её поглощает (двигатель прокручивается извне), и его неравномерность не определена",
+    "(pressure angle: side load F_n sin(alpha)); no source gives an allowable":
+        "(угол давления: боковая сила F_n sin α); допускаемого значения источники не дают",
+    "(hydraulic valve actuation)": "(гидравлический привод клапана)",
+    "(wave speed, method of characteristics)": "(скорость волны, метод характеристик)",
+    "5 % of the rigid lift, the level of the delays (this package's)":
+        "5 % подъёма при жёстком приводе, уровень отсчёта запаздываний (принято в этой программе)",
+    ": accuracy_mm, met by N <= 9 harmonics (N by the residual against the accuracy, 0.002-0.01 mm)":
+        ": accuracy_mm, достигается при N ≤ 9 гармониках (N по отклонению относительно точности, 0,002-0,01 мм)",
+    ": <= 150 MPa, the bending allowable of the rocker gear's steels 20Kh, 40Kh, 45, taken for the finger; "
+    "sigma = 6 M / (b h^2) of its rectangular section, ": ": ≤ 150 МПа, допускаемое напряжение изгиба сталей "
+    "коромысла 20Х, 40Х, 45, принятое для рычага; σ = 6 M / (b h²) его прямоугольного сечения, ",
+    ": boundary lubrication below lambda = 1; ": ": граничное трение при λ < 1; ",
+    ": scuffing at a critical temperature of the oil; ": ": задир при критической температуре масла; ",
+    ": annular leakage and the check valve's orifice flow; ":
+        ": утечки через кольцевой зазор и расход через отверстие обратного клапана; ",
+    ": the plunger's extension simulated with the train up to [engine] over_speed_ratio x the rated speed; ":
+        ": выдвижение плунжера рассчитано вместе с приводом до наибольшей частоты вращения (over_speed_ratio × "
+        "номинальная); ",
+    "), while the cam lifts the open valve: no float below [engine] over_speed_ratio x the rated speed; ":
+        "), пока кулачок поднимает открытый клапан: без отрыва до наибольшей частоты вращения (over_speed_ratio × "
+        "номинальная); ",
+    ": the valve's lift on the base circle simulated with the plunger's extension; ":
+        ": подъём клапана на тыльной части кулачка рассчитан с выдвижением плунжера; ",
+    " (torsion); ": " (кручение); ", " (an engineering assumption)": " (инженерное допущение)",
+    "(the maker's allowable of the chain": "(допускаемое значение изготовителя цепи",
+    "(the maker's allowable of the belt": "(допускаемое значение изготовителя ремня",
+    "(the maker's allowable of the gears": "(допускаемое значение изготовителя шестерён",
+    " applied to the master and its roller": " применительно к копиру и его ролику",
+    " (the wheel radius must not exceed the concave radius of the cam); ":
+        " (радиус круга не должен превышать радиус вогнутого участка кулачка); ",
+    ": exponent ranges from the authors' search studies": ": диапазоны показателей степени по поисковым расчётам авторов",
     "of the specification: the smaller margin of the fatigue safety and the resonance ratio above their minima":
         "задания: меньший из запасов по усталости и по отношению частот сверх их наименьших значений",
 }
