@@ -23,7 +23,7 @@ from ..design.results import NamedValues, shown, shown_value
 from ..design.drive import spring_options
 from ..specification.si import si
 from ..tables import lift_table_columns
-from ..bibliography import WORKS, cited_in, corrections_notes
+from ..bibliography import WORKS, corrections_notes
 from ..units import to_display
 from ..locale import catalogue, verdict
 from .i18n import SYMBOLS, TEXT
@@ -649,13 +649,59 @@ def render_report(results, plots, lang="en", folder=None) -> str:
         camshaft=_camshaft(results, spec, plots), camshaft_sources=CAMSHAFT_SOURCES,
     )
     template = env.get_template("report.html")
-    # the bibliography lists the works the report actually cites: found by their short form in a first rendering
-    first = unescape(template.render(sources=[], corrections=[], **context))
-    page = template.render(sources=[(WORKS[k].short, WORKS[k].reference()) for k in cited_in(first)],
-                           corrections=cited_corrections(first, lang), **context)
+    # the corrections notes the report cites, found in a first rendering
+    first = unescape(template.render(corrections=[], **context))
+    page = numbered_citations(template.render(corrections=cited_corrections(first, lang), **context), lang)
     page = with_contents(page, TEXT[lang]["toc"])
     page = russian_typography(russian_citations(page)) if lang == "ru" else page
     return page if folder is None else embedded(page, folder)
+
+
+LOCATOR = (r"(?:works?|eqs?\.|sections?|ch\.|chapters?|[Tt]ables?|Fig\.|pp?\.|appendix|step|ф\.|формул[аы]|разделы?"
+           r"|гл\.|глава|рис\.|табл\.|таблица|работ[аы]|этап)")
+"""The words of a locator in a citation: ``work 2``, ``eqs. (2.23)-(2.34)``, ``section 2.1``, ``Fig. 2.6``..."""
+
+_NUMBER = r"(?:[A-Z]-?)?\d+(?:[.\-–]\d+)*[a-zа-я]?"
+_NUMBER = rf"(?:\({_NUMBER}\)|{_NUMBER})"
+_LOCATORS = rf"{LOCATOR}(?: {_NUMBER}(?:(?:-|–|, | and | и ){_NUMBER})*)?"
+_SHORTS = {alternative: key for key, work in WORKS.items()
+           for alternative in (work.short, str(Markup.escape(work.short)))}
+CITATION = re.compile("(" + "|".join(re.escape(s) for s in sorted(_SHORTS, key=len, reverse=True)) + ")"
+                      rf"((?:, {_LOCATORS}(?:(?:, | and | и ){_LOCATORS})*)?)")
+"""A citation of a work by its in-text form (raw or HTML-escaped) and its locators."""
+
+LANGUAGE_CODES = {"English": "en", "Russian": "ru", "Ukrainian": "uk", "Chinese": "zh-Latn", "German": "de"}
+"""The language of a work's entry in the list of sources, for the browser (hyphenation) and the typography."""
+
+_ALONE = re.compile(r'\((<span class="cite">)?(\[\d+[^\[\]()]*(?:\([^()]*\)[^\[\]()]*)*\])(</span>)?\)')
+"""A numbered citation alone in brackets (or in a citation's span in brackets)."""
+
+_KEPT_TEXT = re.compile(r'(<span class="name">.*?</span>|<style.*?</style>)', re.S)
+
+
+def numbered_citations(page, lang) -> str:
+    """The rendered report with every citation of a work (its in-text form and its locators) as its number in the
+    list of sources, the number in the order of the first citation (GOST 7.32): ``Shang Hanji (1988), eq. (2.1)``
+    -> ``[1, eq. (2.1)]``, a citation alone in brackets without them; and that list, each work in the form of GOST
+    7.1 (:meth:`valvetrain.bibliography.Work.reference`), at ``<!--sources-->``.  Names the designer gave are
+    left as they are.
+
+    >>> page = "<p>(Shang Hanji (1988), eq. 2.3); Heywood (1988); Shang Hanji (1988), ch. 3 and ch. 7</p><!--sources-->"
+    >>> print(numbered_citations(page, "en").split("<ol")[0])
+    <p>[1, eq. 2.3]; [2]; [1, ch. 3 and ch. 7]</p>
+    """
+    numbers = {}
+
+    def number(m):
+        n = numbers.setdefault(_SHORTS[m.group(1)], len(numbers) + 1)
+        return f"[{n}{', ' + m.group(2)[2:] if m.group(2) else ''}]"
+
+    parts = _KEPT_TEXT.split(page)
+    for i in range(0, len(parts), 2):
+        parts[i] = _ALONE.sub(r"\1\2\3", CITATION.sub(number, parts[i]))
+    items = "".join(f'<li value="{n}" lang="{LANGUAGE_CODES[WORKS[key].language]}">'
+                    f'{Markup.escape(WORKS[key].reference(lang))}</li>' for key, n in numbers.items())
+    return "".join(parts).replace("<!--sources-->", f'<ol class="bibliography">{items}</ol>', 1)
 
 
 CORRECTIONS_CITED = re.compile(r"(?:corrections notes?|поправк[аи]) (\d+)(?:-(\d+))?")

@@ -1,45 +1,13 @@
-"""The Russian report's citations: Russian works cited in Russian, the locators (work, eq., section) and the notes
-of the sources in Russian, and the Russian works' references in the list of sources in Russian.
+"""The Russian report's citations and typography: the locators of the numbered citations (work, eq., section) and
+the notes of the sources in Russian, the decimal comma and «» quotes.
 
-The English report cites every work by :mod:`valvetrain.bibliography`'s short form; a Russian engineer cites a
-Russian work by its Russian name.  :func:`russian_citations` turns the rendered Russian report's citations into
-Russian; works in other languages keep their authors and titles (proper names).
+The report cites every work by its number in its list of sources (:func:`valvetrain.report.html.numbered_citations`),
+each work described in its own language (:meth:`valvetrain.bibliography.Work.reference`);
+:func:`russian_citations` turns the locators and the notes of the rendered Russian report's citations into Russian.
 """
 
 from html import escape, unescape
 import re
-
-SHORT = {
-    "Valve-train practical works (n.d.)": "Практические работы по расчёту ГРМ (б. г.)",
-    "Power units manual (n.d.)": "Методические указания «Силовые агрегаты» (б. г.)",
-    "Valve-train dynamics article (n.d.)": "Исследование динамики МГР (б. г.)",
-    "Kolchin and Demidov (1980)": "Колчин, Демидов (1980)",
-}
-"""The in-text form of each Russian work in Russian (б. г.: без года, no year)."""
-
-REFERENCES = {
-    "Valve-train practical works (n.d.)":
-        "Практические работы № 1-8 по расчёту газораспределительного механизма двигателя внутреннего сгорания "
-        "(описательное заглавие: в использованном экземпляре нет титульного листа). Учебное пособие вуза: "
-        "практические работы 1-8 с приложением (безударный кулачок Курца для газораспределительного механизма "
-        "бензинового двигателя, таблица П1). Авторы и организация в использованном экземпляре не указаны; "
-        "издательство и год не указаны. На русском языке. Работы: (1) проходные сечения клапана, (2) безударный "
-        "кулачок Курца, (3) полидинамический кулачок, (4) время-сечение, (5) характеристика пружины, (6) расчёт "
-        "пружины, (7) прочность деталей привода, (8) окна двухтактного двигателя.",
-    "Power units manual (n.d.)":
-        "Методические указания к расчётно-графической работе по дисциплине «Силовые агрегаты»: кинематика поршня "
-        "и динамика кривошипно-шатунного механизма (описательное заглавие: в использованном экземпляре нет "
-        "титульного листа). Учебное пособие вуза. Авторы и организация не указаны; издательство и год не указаны. "
-        "На русском языке. Пример расчёта (раздел 2.6) в использованном экземпляре отсутствует.",
-    "Valve-train dynamics article (n.d.)":
-        "Исследование динамики МГР с кулачками различного профиля (заглавие раздела; в использованном экземпляре "
-        "нет титульного листа). Статья в журнале. Авторы и организация не указаны; издательство и год не указаны. "
-        "На русском языке.",
-    "Kolchin and Demidov (1980)":
-        "Колчин А. И., Демидов В. П. Расчёт автомобильных и тракторных двигателей. 2-е изд. М.: Высшая школа, "
-        "1980. На русском языке.",
-}
-"""The full reference of each Russian work in Russian, as a Russian list of sources gives it."""
 
 LOCATORS = (
     (r"corrections notes? (\d+)", r"поправка \1"), (r"\bworks (\d)", r"работы \1"), (r"\bwork (\d)", r"работа \1"),
@@ -143,19 +111,16 @@ UNITS = ((r"(\d) kg/m2\b", r"\1 кг/м²"), (r"(\d) MPa\b", r"\1 МПа"), (r"(
 """Units inside a citation's note."""
 
 _CITE = re.compile(r'(<span class="cite">)(.*?)(</span>)', re.S)
-_ITEM = re.compile(r'<li class="cite"><b>(.*?)</b>: (.*?)</li>', re.S)
 
 
 def citation(text) -> str:
-    """One citation in Russian: the Russian works' short forms, the locators, the notes and their units.
+    """One citation in Russian: its locators, the notes of its source and their units.
 
-    >>> citation("Valve-train practical works (n.d.), work 1, eq. (1.1)")
-    'Практические работы по расчёту ГРМ (б. г.), работа 1, формула (1.1)'
-    >>> citation("Shang Hanji (1988), section 2.1, eqs. (2.13)-(2.14)")
-    'Shang Hanji (1988), раздел 2.1, формулы (2.13)-(2.14)'
+    >>> citation("[2, work 1, eq. (1.1)]")
+    '[2, работа 1, формула (1.1)]'
+    >>> citation("[1, section 2.1, eqs. (2.13)-(2.14)] (usually 30 deg inlet, 45 deg exhaust)")
+    '[1, раздел 2.1, формулы (2.13)-(2.14)] (обычно 30° у впускного, 45° у выпускного клапана)'
     """
-    for en, ru in SHORT.items():
-        text = text.replace(en, ru)
     for en, ru in NOTES.items():
         text = text.replace(en, ru)
     for pattern, ru in LOCATORS + UNITS:
@@ -164,22 +129,13 @@ def citation(text) -> str:
 
 
 def russian_citations(page) -> str:
-    """The rendered Russian report with its citations in Russian (:func:`citation` on every ``span.cite``) and the
-    Russian works' entries of the list of sources in Russian (other works keep their reference, marked as English
-    text with ``lang="en"``)."""
-    def item(m):
-        short, text = m.group(1), m.group(2)
-        if short in REFERENCES:
-            return f'<li class="cite"><b>{SHORT[short]}</b>: {REFERENCES[short]}</li>'
-        return f'<li class="cite" lang="en"><b>{short}</b>: {text}</li>'
-
-    page = _ITEM.sub(item, page)
+    """The rendered Russian report with its citations in Russian (:func:`citation` on every ``span.cite``)."""
     return _CITE.sub(lambda m: m.group(1) + escape(citation(unescape(m.group(2))), quote=False) + m.group(3), page)
 
 
 _TAG = re.compile(r"(<[^>]+>)")
 _OPEN = re.compile(r"<(\w+)([^>]*)>")
-_KEPT = re.compile(r'class="name"|lang="en"')
+_KEPT = re.compile(r'class="name"|lang="(?!ru")')
 """Elements whose text is kept as it is: names given by the designer, file names, works in other languages."""
 _KEPT_TAGS = ("a", "style", "title", "script")
 _DECIMAL = re.compile(r"(?<![\d,])(?<!\d\.)(?<!\()(?<!ф\. )(?<!рис\. )(?<!раздел )(?<!разделы )(?<!гл\. )"
