@@ -2,6 +2,7 @@
 [document] section, a table of contents linking every chapter, a Conclusions chapter, the long tables in an appendix,
 page numbers in print.  A compiled template kept between runs is that of the report's language."""
 
+from collections import defaultdict
 from html import unescape
 import json
 import re
@@ -44,9 +45,9 @@ def test_title_block_contents_conclusions_and_appendix(tmp_path):
     chapters = re.findall(r'<h2 id="ch\d+"[^>]*>(.*?)</h2>', page)
     # GOST 7.32's order: the conclusions, the list of sources, then the appendices
     assert chapters.index("Conclusions") < chapters.index("Sources") < \
-        chapters.index("Appendix: input data and lift tables")
+        chapters.index("Appendix A: input data and lift tables")
     # the lift table and the input dump are in the appendix, after the conclusions
-    appendix = page.index("Appendix: input data and lift tables</h2>")
+    appendix = page.index("Appendix A: input data and lift tables</h2>")
     assert page.index("Lift table (every") > appendix and page.index("<h3>Input data</h3>") > appendix
     # page numbers and the document number in print
     assert "counter(page)" in page and '"VT-24-001"' in page
@@ -148,3 +149,38 @@ def test_every_graded_check_of_results_json_is_in_its_chapter_with_its_limit(bui
         assert verdict.startswith(t[("verdict_in_" if c["pass"] else "verdict_out_") + c["severity"]]), (c, verdict)
         assert (t["verdict_accepted"] in verdict) == (c["accepted"] and not c["pass"])
         assert margin.endswith("%") and (margin.startswith("-") == (c["margin"] < 0)), (c["code"], margin)
+
+
+class _EveryFigure(dict):
+    """The figures of a report rendered without its folder, every one drawn (``figure.png``, linked)."""
+
+    def get(self, key, default=None):
+        return "figure.png" if key == "(timing)" else defaultdict(lambda: "figure.png")
+
+
+@pytest.mark.parametrize("lang", ["en", "ru"])
+def test_every_table_and_figure_is_numbered_captioned_and_referred_to(builtin, lang):
+    """Issue 39 (GOST 2.105): every table of the note has a numbered title above it ("Table 3 – ...", "Таблица 3 –
+    ..."), every figure a numbered caption below it ("Figure 2 – ...", "Рисунок 2 – ..."), each kind numbered 1, 2,
+    ... in the order of the note and A.1, A.2, ... in the appendix, and the text refers to each (a link to it in a
+    sentence of its section).  Not numbered: the title page's table and the worked substitutions (formulas)."""
+    page = render_report(builtin, _EveryFigure(), lang)
+    table, figure = ("Таблица", "Рисунок") if lang == "ru" else ("Table", "Figure")
+    body = page[page.index("<!--toc-->") if "<!--toc-->" in page else page.index('<nav id="toc">'):]
+    tables = re.findall(r'(<p class="tcap" id="table-([^"]+)">([^<]*)[^\n]*\n)?<table( [^>]*)?>', body)
+    numbered = [(label, head) for cap, label, head, attrs in tables if 'class="worked"' not in attrs]
+    assert all(head == f"{table} {label} – " or head.startswith(f"{table} {label} – ") for label, head in numbered)
+    labels = [label for label, _ in numbered]
+    appendix = labels.index(next(l for l in labels if "." in l))
+    letter = "А" if lang == "ru" else "A"
+    assert labels == [str(n) for n in range(1, appendix + 1)] + [f"{letter}.{n}" for n in range(1, len(labels) - appendix + 1)]
+    assert len(labels) > 40
+    figures = re.findall(r'<figure><img [^>]*><figcaption id="figure-(\d+)">([^<]*)', body)
+    assert [int(n) for n, _ in figures] == list(range(1, len(figures) + 1)) and len(figures) >= 8
+    assert all(caption.startswith(f"{figure} {n} – ") for n, caption in figures)
+    assert page.count("<figure>") == len(figures) and page.count("<img ") == len(figures)
+    # the text refers to each: a link to it from a sentence of its section
+    refs = "".join(re.findall(r'<p class="refs">(.*?)</p>', page))
+    for kind, label in [("table", l) for l in labels] + [("figure", n) for n, _ in figures]:
+        assert f'href="#{kind}-{label}"' in refs or re.search(
+            rf'href="#{kind}-([^"]+)">[^<]*</a>–<a href="#{kind}-([^"]+)"', refs), (kind, label)

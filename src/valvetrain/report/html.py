@@ -572,7 +572,11 @@ def render_report(results, plots, lang="en", folder=None) -> str:
     env.globals["cell"] = lambda key, value: cell(key, value, lang)
     env.globals["legend"] = symbol_legend(lang)
     env.filters["shown"] = shown_value
-    env.globals["figure"] = lambda name, alt: _figure(name, alt, TEXT[lang])
+    env.globals["figure"] = lambda name, alt, part="": _figure(name, alt, TEXT[lang], part)
+    env.globals["of_valve"] = lambda name: of_part("valve", name, lang)
+    env.globals["of_port"] = lambda name: of_part("port", name, lang)
+    env.filters["bare"] = lambda title: re.sub(r"^\d+\.\s*", "", title)
+    env.filters["lowerfirst"] = lambda text: text[:1].lower() + text[1:]
     spec = results.spec.model_dump()
     parts = list(results.valves) + (list(results.two_stroke.figures.ports) if results.two_stroke is not None else [])
     env.filters["quantity"] = lambda c: _quantity(c, lang, parts)
@@ -652,7 +656,7 @@ def render_report(results, plots, lang="en", folder=None) -> str:
     # the corrections notes the report cites, found in a first rendering
     first = unescape(template.render(corrections=[], **context))
     page = numbered_citations(template.render(corrections=cited_corrections(first, lang), **context), lang)
-    page = with_contents(page, TEXT[lang]["toc"])
+    page = with_contents(numbered_floats(page, lang), TEXT[lang]["toc"])
     page = russian_typography(russian_citations(page)) if lang == "ru" else page
     return page if folder is None else embedded(page, folder)
 
@@ -721,15 +725,99 @@ TALL_FIGURES = ("_kinematics.png",)
 """Figures of several stacked axes: printed taller than the others (the print style's ``img.tall``)."""
 
 
-def _figure(name, alt, t):
-    """The ``<img>`` of a figure of ``plots/``, linked (:func:`embedded` embeds it), or where it was not drawn
-    (``name`` undefined: not asked for, not in :data:`valvetrain.report.plots.MAIN_FIGURES`) the command that draws
-    it."""
+def _figure(name, alt, t, part=""):
+    """A figure of ``plots/``: its ``<img>``, linked (:func:`embedded` embeds it), and its caption (``alt`` and the
+    part it shows, ``part``; :func:`numbered_floats` numbers it), or where it was not drawn (``name`` undefined: not
+    asked for, not in :data:`valvetrain.report.plots.MAIN_FIGURES`) the command that draws it."""
     if not name:
         return Markup('<p class="src">{} <span class="name">valvetrain run --figures all</span></p>').format(
             t["figure_on_request"].format(alt))
-    return Markup('<img src="plots/{}" alt="{}"{}>').format(name, alt,
-                                                         Markup(' class="tall"') if name.endswith(TALL_FIGURES) else "")
+    tall = Markup(' class="tall"') if name.endswith(TALL_FIGURES) else ""
+    return Markup('<figure><img src="plots/{}" alt="{}"{}><figcaption>{}{}</figcaption></figure>').format(
+        name, alt, tall, alt[:1].upper() + alt[1:], part)
+
+
+def of_part(kind, name, lang) -> Markup:
+    """``, valve "intake"`` (``, клапан «intake»``): the part of the engine a caption's table or figure shows, the
+    name as a name."""
+    quoted = '«<span class="name">{}</span>»' if lang == "ru" else '"<span class="name">{}</span>"'
+    return Markup(", {} " + quoted).format(TEXT[lang][f"part_{kind}"], name)
+
+
+FLOATS = re.compile(r'<p class="tcap">|<figcaption>|<h2 class="appendix"')
+"""Where a table's caption (above it) or a figure's (below it) begins, and the appendix."""
+
+_SECTION = re.compile(r"(<h[23][^>]*>.*?</h[23]>)", re.S)
+_FLOAT_ID = re.compile(r'id="(table|figure)-([^"]+)"')
+
+
+def numbered_floats(page, lang) -> str:
+    """The rendered report with its tables and figures numbered (GOST 2.105): "Table 3 – ..." above a table,
+    "Figure 2 – ..." below a figure ("Таблица", "Рисунок"), each kind in its own sequence, those of the appendix
+    with its letter ("Table A.1"); and in every chapter and section that has any, under its heading, the sentence
+    that refers to them ("See tables 3–5 and figure 2.").
+
+    >>> page = ('<h3>Flow</h3><p class="tcap">Flow sections</p><table></table><figure><img src="plots/a.png" alt="">'
+    ...         '<figcaption>Lift</figcaption></figure><h2 class="appendix">Appendix A</h2><p class="tcap">Input</p>')
+    >>> print(numbered_floats(page, "en").replace("><", ">\\n<"))
+    <h3>Flow</h3>
+    <p class="refs">See <a href="#table-1">table 1</a> and <a href="#figure-1">figure 1</a>.</p>
+    <p class="tcap" id="table-1">Table 1 – Flow sections</p>
+    <table>
+    </table>
+    <figure>
+    <img src="plots/a.png" alt="">
+    <figcaption id="figure-1">Figure 1 – Lift</figcaption>
+    </figure>
+    <h2 class="appendix">Appendix A</h2>
+    <p class="refs">See <a href="#table-A.1">table A.1</a>.</p>
+    <p class="tcap" id="table-A.1">Table A.1 – Input</p>
+    """
+    t = TEXT[lang]
+    counts, prefix = {"table": 0, "figure": 0}, ""
+
+    def number(m):
+        nonlocal prefix
+        if m.group().startswith("<h2"):
+            counts.update(table=0, figure=0)
+            prefix = t["appendix_letter"] + "."
+            return m.group()
+        kind = "table" if "tcap" in m.group() else "figure"
+        counts[kind] += 1
+        label = f"{prefix}{counts[kind]}"
+        return f'{m.group()[:-1]} id="{kind}-{label}">{t[kind + "_word"]} {label} – '
+
+    parts = _SECTION.split(FLOATS.sub(number, page))
+    for i in range(1, len(parts), 2):
+        found = {"table": [], "figure": []}
+        for kind, label in _FLOAT_ID.findall(parts[i + 1]):
+            found[kind].append(label)
+        refs = [_refs(kind, found[kind], t) for kind in ("table", "figure") if found[kind]]
+        if refs:
+            parts[i] += '<p class="refs">' + t["see"].format(f" {t['and']} ".join(refs)) + "</p>"
+    return "".join(parts)
+
+
+def _refs(kind, labels, t) -> str:
+    """``table 3``, ``tables 3–5``, ``tables 3, 7`` (the labels of one kind in a section), each number a link."""
+    def link(label):
+        return f'<a href="#{kind}-{label}">{label}</a>'
+
+    runs, start = [], 0
+    for k in range(1, len(labels) + 1):
+        if k == len(labels) or _index(labels[k]) != _index(labels[k - 1]) + 1:
+            a, b = labels[start], labels[k - 1]
+            runs.append(link(a) if a == b else f"{link(a)}, {link(b)}" if k - start == 2 else f"{link(a)}–{link(b)}")
+            start = k
+    word = t[f"{kind}_ref"][len(labels) > 1]
+    if len(labels) == 1:
+        return f'<a href="#{kind}-{labels[0]}">{word} {labels[0]}</a>'
+    return f"{word} {', '.join(runs)}"
+
+
+def _index(label) -> int:
+    """The number of a table's or figure's label (``3``, ``A.3``)."""
+    return int(label.rsplit(".", 1)[-1])
 
 
 FIGURE_LINK = re.compile(r'<img src="plots/([^"]*)"')

@@ -3,7 +3,7 @@
 TEXT = {
     "en": {
         "summary": "Summary", "summary_valves": "Valves", "timing_diagram": "Valve timing diagram",
-        "worked": "Worked substitution", "toc": "Contents", "conclusions": "Conclusions", "appendix": "Appendix: input data and lift tables",
+        "worked": "Worked substitution", "toc": "Contents", "conclusions": "Conclusions", "appendix": "Appendix A: input data and lift tables",
         "cn_open": "checks", "cn_closest": "allowable limits met with the least margin",
         "cn_closest_note": "What binds the design: the allowable limits (failure checks) it meets with the smallest "
                            "margin, per valve, and the spring's binding check.",
@@ -170,7 +170,7 @@ TEXT = {
     },
     "ru": {
         "summary": "Сводка", "summary_valves": "Клапаны", "timing_diagram": "Диаграмма фаз газораспределения",
-        "worked": "Подстановка чисел в расчётные формулы", "toc": "Содержание", "conclusions": "Заключение", "appendix": "Приложение: исходные данные и таблицы подъёма",
+        "worked": "Подстановка чисел в расчётные формулы", "toc": "Содержание", "conclusions": "Заключение", "appendix": "Приложение А. Исходные данные и таблицы подъёма",
         "cn_open": "проверки", "cn_closest": "допускаемые пределы с наименьшим запасом",
         "cn_closest_note": "Что ограничивает конструкцию: допускаемые пределы (проверки уровня «нарушение»), "
                            "выполненные с наименьшим запасом, по каждому клапану, и определяющая проверка пружины.",
@@ -1078,6 +1078,14 @@ NOTE_TEXT = {
         "verdict_unevaluated": "not evaluated: counted as a limit not met",
         "margin_note": "Margin: the relative distance of the value to the nearest bound of its range, negative "
                        "outside it.",
+        "checks_of": "Checks: ", "part_valve": "valve", "part_port": "port", "summary_table": "Main results of the valves",
+        "measured_summary": "Analysis of the measured lift table", "measured_durations": "Durations at the checking heights",
+        "measured_fits": "Quality of the fits", "strength_loads": "Loads of the drive parts",
+        "dyn_spectrum_title": "Distortion by the harmonics about the resonant one", "crank_inputs": "Input data of the crank mechanism",
+        "crank_results": "Kinematics, masses and forces of the crank mechanism", "cs_inputs": "Input data of the camshaft",
+        "ports_inputs": "Input data of the two-stroke ports", "cn_table": "What binds the design",
+        "table_word": "Table", "figure_word": "Figure", "table_ref": ("table", "tables"),
+        "figure_ref": ("figure", "figures"), "see": "See {}.", "and": "and", "appendix_letter": "A",
     },
     "ru": {
         "checks": "Проверки", "limit": "Предел", "verdict": "Вывод", "margin": "Запас",
@@ -1089,9 +1097,18 @@ NOTE_TEXT = {
         "verdict_unevaluated": "не вычислено: считается невыполненным пределом",
         "margin_note": "Запас — относительное расстояние значения до ближайшей границы его пределов, вне пределов "
                        "отрицательное.",
+        "checks_of": "Проверки: ", "part_valve": "клапан", "part_port": "окно", "summary_table": "Основные результаты по клапанам",
+        "measured_summary": "Анализ измеренной таблицы подъёма", "measured_durations": "Продолжительность на контрольных высотах",
+        "measured_fits": "Качество аппроксимаций", "strength_loads": "Нагрузки деталей привода",
+        "dyn_spectrum_title": "Искажение гармониками около резонансной", "crank_inputs": "Исходные данные кривошипно-шатунного механизма",
+        "crank_results": "Кинематика, массы и силы кривошипно-шатунного механизма",
+        "cs_inputs": "Исходные данные распределительного вала", "ports_inputs": "Исходные данные окон двухтактного двигателя",
+        "cn_table": "Что ограничивает конструкцию",
+        "table_word": "Таблица", "figure_word": "Рисунок", "table_ref": ("таблицу", "таблицы"),
+        "figure_ref": ("рисунок", "рисунки"), "see": "См. {}.", "and": "и", "appendix_letter": "А",
     },
 }
-"""Texts of the calculation note: the checks in their chapters."""
+"""Texts of the calculation note: the checks in their chapters, the captions and the numbers of its tables and figures."""
 
 for _lang, _texts in NOTE_TEXT.items():
     TEXT[_lang].update(_texts)
