@@ -31,17 +31,36 @@ def _report(tmp_path, extra=""):
     return (out / "report.html").read_text(encoding="utf-8"), out
 
 
-def test_title_block_contents_conclusions_and_appendix(tmp_path):
-    page, out = _report(tmp_path, '\n[document]\nnumber = "VT-24-001"\nauthor = "A. Designer"\n'
-                                  'checker = "B. Checker"\ndate = "2026-11-25"\n')
-    block = page[page.index('id="title-block"'):page.index("</table>", page.index('id="title-block"'))]
-    for text in ("VT-24-001", "A. Designer", "B. Checker", "2026-11-25"):
-        assert text in block
+DOCUMENT = {"organisation": "Moscow Automobile and Road Institute", "department": "Department of Engines",
+            "discipline": "Engine design", "title": "Valve train of a petrol engine", "number": "VT-24-001",
+            "author": "A. Designer", "group": "D-41", "supervisor": "C. Supervisor", "checker": "B. Checker",
+            "city": "Kharkiv", "date": "2026-11-25"}
+
+
+def _title_page(page):
+    """The title page of a report: from its section to the end of the section."""
+    return page[page.index('<section id="title-page">'):page.index("</section>")]
+
+
+def test_title_page_contents_conclusions_and_appendix(tmp_path):
+    """Issue 39: a title page after GOST 7.32 / 2.105 from [document]: the organisation and department, the kind of
+    document and the course, the title, the engine, the number, the performer (and group), supervisor and checker
+    each with a signature line, the city and year."""
+    fields = "".join(f'{k} = "{v}"\n' for k, v in DOCUMENT.items()) + "year = 2026\n"
+    page, out = _report(tmp_path, "\n[document]\n" + fields)
+    title = _title_page(page)
+    for text in [*DOCUMENT.values(), "2026", "CALCULATION NOTE", "to the course project in"]:
+        assert text in title, text
+    assert title.count("signature, date") == 3 and "blank" not in title.replace("blank short", "")
+    order = [title.index(DOCUMENT[k]) for k in ("organisation", "department", "title", "number", "author",
+                                                "supervisor", "checker", "city")]
+    assert order == sorted(order)
     # the contents: one link per chapter, in order, each to an anchor that exists
     toc = page[page.index('<nav id="toc">'):page.index("</nav>")]
     links = re.findall(r'href="#(ch\d+)"', toc)
     assert links == [f"ch{i}" for i in range(1, len(links) + 1)] and len(links) >= 5
     assert all(f'<h2 id="{a}"' in page for a in links)
+    assert page.index("</section>") < page.index('<nav id="toc">')          # the contents after the title page
     chapters = re.findall(r'<h2 id="ch\d+"[^>]*>(.*?)</h2>', page)
     # GOST 7.32's order: the conclusions, the list of sources, then the appendices
     assert chapters.index("Conclusions") < chapters.index("Sources") < \
@@ -49,22 +68,28 @@ def test_title_block_contents_conclusions_and_appendix(tmp_path):
     # the lift table and the input dump are in the appendix, after the conclusions
     appendix = page.index("Appendix A: input data and lift tables</h2>")
     assert page.index("Lift table (every") > appendix and page.index("<h3>Input data</h3>") > appendix
-    # page numbers and the document number in print
-    assert "counter(page)" in page and '"VT-24-001"' in page
+    # page numbers and the document number in print, not on the title page
+    assert "counter(page)" in page and '"VT-24-001"' in page and "@page :first" in page
     # the [document] section is kept in the specification written beside the results
     assert tomllib.loads((out / "spec.toml").read_text())["document"]["number"] == "VT-24-001"
 
 
-def test_without_a_document_section_the_block_has_empty_fields_to_fill(tmp_path):
-    page, _ = _report(tmp_path)
-    assert 'id="title-block"' in page and "Calculated by" in page and "Checked by" in page
+def test_without_a_document_section_the_title_page_has_blank_lines_to_fill(tmp_path):
+    """Every field the file leaves out is a blank line to fill in by hand; the signature lines are there."""
+    title = _title_page(_report(tmp_path)[0])
+    assert "Performed by" in title and "Supervisor" in title and "Checked by" in title
+    assert title.count('<span class="blank"></span>') == 7   # organisation, department, number, three names, city
+    assert title.count('<span class="blank short"></span>') == 4   # three signatures and the year
+    assert "course project" not in title
 
 
-def test_a_too_long_document_field_is_refused(tmp_path):
+@pytest.mark.parametrize("field,value", [("author", '"' + "x" * 201 + '"'), ("supervisor", '"' + "x" * 201 + '"'),
+                                         ("year", "1850"), ("year", '"2026"'), ("city", "3")])
+def test_a_wrong_document_field_is_refused(tmp_path, field, value):
     spec = tmp_path / "spec.toml"
-    spec.write_text(appendix_text() + f'\n[document]\nauthor = "{"x" * 201}"\n', encoding="utf-8")
+    spec.write_text(appendix_text() + f"\n[document]\n{field} = {value}\n", encoding="utf-8")
     result = CliRunner().invoke(main, ["validate", str(spec)])
-    assert result.exit_code == 2 and "document.author" in result.output
+    assert result.exit_code == 2 and f"document.{field}" in result.output, result.output
 
 
 def test_a_kept_compiled_template_is_that_of_its_language(monkeypatch):
