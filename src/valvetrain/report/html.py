@@ -29,6 +29,7 @@ from ..locale import catalogue, verdict
 from .i18n import SYMBOLS, TEXT
 from .numbers import number, percent
 from .russian import russian_citations, russian_typography
+from .typography import typography
 from .worked import crank_lines, flow_lines, law_lines, spring_lines, strength_lines, time_area_lines
 from .names import has_name, label, link_names, quantity_text, translate, unevaluated_text, unit_text, value_text
 from ..locale.wording import diagnosis_text, fit_reason
@@ -657,7 +658,8 @@ def render_report(results, plots, lang="en", folder=None) -> str:
     first = unescape(template.render(corrections=[], **context))
     page = numbered_citations(template.render(corrections=cited_corrections(first, lang), **context), lang)
     page = with_contents(numbered_floats(page, lang), TEXT[lang]["toc"])
-    page = russian_typography(russian_citations(page)) if lang == "ru" else page
+    page = typography(russian_citations(page) if lang == "ru" else page, lang)
+    page = russian_typography(page) if lang == "ru" else page
     return page if folder is None else embedded(page, folder)
 
 

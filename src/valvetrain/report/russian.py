@@ -9,6 +9,8 @@ each work described in its own language (:meth:`valvetrain.bibliography.Work.ref
 from html import escape, unescape
 import re
 
+from .typography import map_text
+
 LOCATORS = (
     (r"corrections notes? (\d+)", r"поправка \1"), (r"\bworks (\d)", r"работы \1"), (r"\bwork (\d)", r"работа \1"),
     (r"\beqs\. ", "формулы "), (r"\beq\. ", "формула "), (r"\bsections (\d)", r"разделы \1"),
@@ -133,11 +135,6 @@ def russian_citations(page) -> str:
     return _CITE.sub(lambda m: m.group(1) + escape(citation(unescape(m.group(2))), quote=False) + m.group(3), page)
 
 
-_TAG = re.compile(r"(<[^>]+>)")
-_OPEN = re.compile(r"<(\w+)([^>]*)>")
-_KEPT = re.compile(r'class="name"|lang="(?!ru")')
-"""Elements whose text is kept as it is: names given by the designer, file names, works in other languages."""
-_KEPT_TAGS = ("a", "style", "title", "script")
 _DECIMAL = re.compile(r"(?<![\d,])(?<!\d\.)(?<!\()(?<!ф\. )(?<!рис\. )(?<!раздел )(?<!разделы )(?<!гл\. )"
                       r"(?<!глава )(?<!формула )(?<!формулы )(?<!таблица )(\d+)\.(\d+)(?!\.?\d)")
 """A decimal point between digits, not in a locator of a source (``(7.4)``, ``раздел 2.1``, ``ф. 2.5``) nor in a
@@ -154,24 +151,4 @@ def russian_typography(page) -> str:
     >>> russian_typography('<span class="name">v1.5</span> 0.5...0.75 <a href="x">tables/a.0.5.csv</a>')
     '<span class="name">v1.5</span> 0,5...0,75 <a href="x">tables/a.0.5.csv</a>'
     """
-    out, kept = [], []
-    for part in _TAG.split(page):
-        if part.startswith("<"):
-            if part.startswith("</"):
-                if kept and part[2:-1].strip() == kept[-1][0]:
-                    kept[-1][1] -= 1
-                    if kept[-1][1] == 0:
-                        kept.pop()
-            else:
-                m = _OPEN.match(part)
-                if m and not part.endswith("/>") and m[1] not in ("br", "img", "meta", "hr", "input", "link"):
-                    if kept and m[1] == kept[-1][0]:
-                        kept[-1][1] += 1
-                    elif m[1] in _KEPT_TAGS or _KEPT.search(m[2]):
-                        kept.append([m[1], 1])
-            out.append(part)
-        elif kept or not part.strip():
-            out.append(part)
-        else:
-            out.append(_QUOTED.sub(r"«\1»", _DECIMAL.sub(r"\1,\2", part)))
-    return "".join(out)
+    return map_text(page, lambda text: _QUOTED.sub(r"«\1»", _DECIMAL.sub(r"\1,\2", text)), "ru")
