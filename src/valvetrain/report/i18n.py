@@ -1073,13 +1073,15 @@ NOTE_TEXT = {
     "en": {
         "checks": "Checks", "limit": "Limit", "verdict": "Verdict", "margin": "Margin",
         "other_checks": "Further checks", "engine_checks": "Checks of the engine's main dimensions",
-        "verdict_in_failure": "allowable limit met", "verdict_out_failure": "ALLOWABLE LIMIT NOT MET",
-        "verdict_in_warning": "within the recommended range", "verdict_out_warning": "outside the recommended range",
-        "verdict_in_info": "within the range (remark)", "verdict_out_info": "outside the range (remark)",
-        "verdict_accepted": "accepted in the specification",
-        "verdict_unevaluated": "not evaluated: counted as a limit not met",
-        "margin_note": "Margin: the relative distance of the value to the nearest bound of its range, negative "
-                       "outside it.",
+        "verdict_in_failure": "met", "verdict_out_failure": "NOT MET",
+        "verdict_in_warning": "in range", "verdict_out_warning": "outside",
+        "verdict_in_info": "in range (remark)", "verdict_out_info": "outside (remark)",
+        "verdict_accepted": "accepted", "verdict_unevaluated": "not evaluated: NOT MET",
+        "margin_note": "In the tables of checks of the chapters the verdict of a limit (an allowable or physical "
+                      "limit, a failure) is \"met\" or \"NOT MET\", of a recommended range (a warning) \"in range\" "
+                      "or \"outside\", of a remark's range \"(remark)\"; \"accepted\": accepted in the specification "
+                      "with its reason. The margin is the relative distance of the value to the nearest bound of "
+                      "its range, negative outside it.",
         "checks_of": "Checks: ", "part_valve": "valve", "part_port": "port", "summary_table": "Main results of the valves",
         "measured_summary": "Analysis of the measured lift table", "measured_durations": "Durations at the checking heights",
         "measured_fits": "Quality of the fits", "strength_loads": "Loads of the drive parts",
@@ -1094,13 +1096,15 @@ NOTE_TEXT = {
     "ru": {
         "checks": "Проверки", "limit": "Предел", "verdict": "Вывод", "margin": "Запас",
         "other_checks": "Прочие проверки", "engine_checks": "Проверки основных размеров двигателя",
-        "verdict_in_failure": "допускаемый предел выполнен", "verdict_out_failure": "ДОПУСКАЕМЫЙ ПРЕДЕЛ НЕ ВЫПОЛНЕН",
-        "verdict_in_warning": "в рекомендуемых пределах", "verdict_out_warning": "вне рекомендуемых пределов",
+        "verdict_in_failure": "выполнено", "verdict_out_failure": "НЕ ВЫПОЛНЕНО",
+        "verdict_in_warning": "в пределах", "verdict_out_warning": "вне пределов",
         "verdict_in_info": "в пределах (справка)", "verdict_out_info": "вне пределов (справка)",
-        "verdict_accepted": "принято в исходных данных",
-        "verdict_unevaluated": "не вычислено: считается невыполненным пределом",
-        "margin_note": "Запас — относительное расстояние значения до ближайшей границы его пределов, вне пределов "
-                       "отрицательное.",
+        "verdict_accepted": "принято", "verdict_unevaluated": "не вычислено: НЕ ВЫПОЛНЕНО",
+        "margin_note": "В таблицах проверок по главам вывод по пределу (допускаемому или физическому, уровень "
+                      "«нарушение») — «выполнено» или «НЕ ВЫПОЛНЕНО», по рекомендуемым пределам (уровень "
+                      "«предупреждение») — «в пределах» или «вне пределов», по пределам справки — с пометкой "
+                      "«(справка)»; «принято» — принято в исходных данных с обоснованием. Запас — относительное "
+                      "расстояние значения до ближайшей границы его пределов, вне пределов отрицательное.",
         "checks_of": "Проверки: ", "part_valve": "клапан", "part_port": "окно", "summary_table": "Основные результаты по клапанам",
         "measured_summary": "Анализ измеренной таблицы подъёма", "measured_durations": "Продолжительность на контрольных высотах",
         "measured_fits": "Качество аппроксимаций", "strength_loads": "Нагрузки деталей привода",
