@@ -221,7 +221,7 @@ TEXT = {
         "table": "Таблица подъёма (через {step:g}° ПРВ; полная таблица: tables/{name}_lift.csv)",
         "plots": "Графики",
         "files": "Файлы",
-        "sources": "Источники",
+        "sources": "Список использованных источников",
         "corrections_note": "Опечатки этих работ и то, что valvetrain использует вместо них, — поправки в составе "
                             "программы, ссылки вида «поправка N»:",
         "corrections_cited": "Поправки, на которые ссылается отчёт", "corrections_file": "data/corrections.ru.md",
