@@ -186,7 +186,7 @@ def test_report_shows_the_measured_analysis(tmp_path):
     assert "Measured lift table" in html and "sign changes of the jerk" in html
     for d in data["measured"]["durations_deg"]:
             assert f'<td class="n">{number(d["height_mm"])}</td><td class="n">{number(d["duration_deg"])}</td>' in html
-    assert "Shang Hanji (1988), sections 5.1-5.3; smoothing spline to the measurement accuracy" in html
+    assert re.search(r"\[\d+, sections 5\.1-5\.3\]; smoothing spline to the measurement accuracy", html)   # numbered
     assert "fit used and why" in html and "N-harmonic fit (N = 9): the N-harmonic fit meets accuracy_mm" in html
 
 

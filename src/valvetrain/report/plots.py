@@ -17,6 +17,7 @@ import itertools
 from matplotlib import rc_context
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
+from matplotlib.text import Text
 from matplotlib.ticker import NullFormatter, ScalarFormatter
 import numpy as np
 from PIL import Image
@@ -28,6 +29,7 @@ from ..units import MM, per_cam_degree, rad_to_deg, to_display
 from .i18n import TEXT
 from .names import value_text
 from .numbers import number
+from .typography import GREEK, SYMBOL
 
 
 DPI = 110
@@ -74,13 +76,30 @@ def every_axes(fig) -> list[Any]:
 
 def _localised(fig, t) -> Figure:
     """``fig`` with a :class:`DecimalComma` on every axis of plain numbers when ``t`` is the Russian texts (an axis of
-    angles of a polar plot or a logarithmic one keeps its own formatter); the English figures keep the point."""
+    angles of a polar plot or a logarithmic one keeps its own formatter; the English figures keep the point), and in
+    every text a symbol's index as a subscript (:func:`math_symbols`)."""
     if t["lang"] == "ru":
         for ax in every_axes(fig):
             for axis in (ax.xaxis, ax.yaxis):
                 if type(axis.get_major_formatter()) is ScalarFormatter:
                     axis.set_major_formatter(DecimalComma())
+    for text in fig.findobj(Text):
+        label = text.get_text()
+        if "_" in label and "$" not in label:
+            text.set_text(math_symbols(label))
     return fig
+
+
+def math_symbols(label) -> str:
+    """A figure's text with each symbol's index as a subscript in matplotlib's mathtext (the report's rule,
+    :data:`valvetrain.report.typography.SYMBOL`).
+
+    >>> math_symbols("tappet h_T, a_T max, m_кл|a_v|, phi_p0, stroke_mm") == (
+    ...     "tappet $h_{T}$, $a_{T" + chr(92) + ",max}$, $m_{кл}$|$a_{v}$|, $φ_{p0}$, stroke_mm")
+    True
+    """
+    return SYMBOL.sub(lambda m: f"${GREEK.get(m.group(1), m.group(1))}_{{{m.group(2).replace(' ', chr(92) + ',')}}}$",
+                      label)
 
 
 def segment_boundaries(law) -> np.ndarray:
@@ -423,8 +442,21 @@ def crank_forces_data(crank) -> dict[str, Any]:
             "p_N": c.p_N * 1e-6, "p_S": c.p_S * 1e-6, "p_K": c.p_K * 1e-6, "p_T": c.p_T * 1e-6}
 
 
+def _cycle_axis(ax, x) -> None:
+    """An axis of the cycle's angle: from 0 to the cycle's end (720 deg for a four-stroke), a tick every 90 deg."""
+    period = float(x[-1] + (x[1] - x[0]))
+    ax.set_xlim(0.0, period)
+    ax.set_xticks(np.arange(0.0, period + 1.0, 90.0))
+
+
+def _legend_outside(ax, fontsize=8) -> None:
+    """The legend of ``ax`` right of it, where it covers no curve (the figure's right margin leaves room)."""
+    ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=fontsize, borderaxespad=0.0)
+
+
 def draw_crank_forces(d, t) -> Figure:
-    """Specific forces against the crank angle, as Fig. 2.6 of Power units manual (n.d.): gas, inertia and total; N, S, K, T."""
+    """Specific forces against the crank angle, as Fig. 2.6 of Power units manual (n.d.): gas, inertia and total; N, S, K,
+    T; the legends right of the axes, the angle over the whole cycle."""
     x = d["crank_deg"]
     fig = Figure(figsize=(9, 8))
     axes = fig.subplots(2, 1, sharex=True)
@@ -435,12 +467,12 @@ def draw_crank_forces(d, t) -> Figure:
     for ax in axes:
         ax.axhline(0, color="0.5", lw=0.5)
         ax.grid(alpha=0.3)
-        ax.legend(loc="upper right")
+        _legend_outside(ax)
         ax.set_ylabel(t["specific_force"])
     axes[-1].set_xlabel(t["cycle_deg"])
-    axes[-1].set_xticks(np.arange(0, x.max() + 1, 90))
+    _cycle_axis(axes[-1], x)
     fig.suptitle(t["crank_forces"])
-    fig.subplots_adjust(left=0.08, right=0.97, bottom=0.08, top=0.93, hspace=0.08)
+    fig.subplots_adjust(left=0.09, right=0.82, bottom=0.08, top=0.93, hspace=0.08)
     return _localised(fig, t)
 
 
@@ -457,20 +489,22 @@ def crank_torque_data(crank) -> dict[str, Any]:
 
 
 def draw_crank_torque(d, t) -> Figure:
-    """Torque of every cylinder and the total over one cycle (Fig. 2.7 of Power units manual (n.d.))."""
+    """Torque of every cylinder and the total over one cycle (Fig. 2.7 of Power units manual (n.d.)), the mean torque
+    with its value; the legend right of the axes, the angle over the whole cycle."""
     x = d["engine_deg"]
     fig = Figure(figsize=(9, 5))
     ax = fig.subplots()
     for i, m in enumerate(d["cylinders_Nm"], start=1):
         ax.plot(x, m, lw=0.8, alpha=0.7, label=f"{t['cylinder']} {i}")
-    ax.plot(x, d["total_Nm"], color="k", lw=1.8, label=t["total"])
-    ax.axhline(d["mean_Nm"], color="C3", ls="--", lw=1.0, label=t["mean"])
+    ax.plot(x, d["total_Nm"], color="k", lw=1.8, label=t["total"], zorder=3)
+    ax.axhline(d["mean_Nm"], color="C3", ls="--", lw=1.0, label=f"{t['mean']} {number(d['mean_Nm'], t['lang'])}")
+    ax.axhline(0, color="0.5", lw=0.5)
     ax.set_xlabel(t["engine_deg"])
     ax.set_ylabel(t["torque"])
-    ax.set_xticks(np.arange(0, x.max() + 1, 90))
+    _cycle_axis(ax, x)
     ax.grid(alpha=0.3)
-    ax.legend(loc="upper right", fontsize=8)
-    fig.subplots_adjust(left=0.13, right=0.97, bottom=0.13, top=0.96)
+    _legend_outside(ax)
+    fig.subplots_adjust(left=0.11, right=0.82, bottom=0.11, top=0.96)
     return _localised(fig, t)
 
 
@@ -493,9 +527,17 @@ def draw_crank_pin(d, t) -> Figure:
     fig = Figure(figsize=(7, 7))
     ax = fig.subplots()
     ax.plot(tang, rad, color="C0")
-    for deg in range(0, int(angle[-1]) + 1, 180):
+    near = 0.03 * max(np.ptp(tang), np.ptp(rad))
+    marks = []                                     # (point, the cycle angles there): angles at one point together
+    for deg in range(0, int(angle[-1]) + 1, 90):
         k = int(np.argmin(np.abs(angle - deg)))
-        ax.annotate(f"{deg}", (tang[k], rad[k]), fontsize=8)
+        point = np.array([tang[k], rad[k]])
+        same = next((m for m in marks if np.hypot(*(m[0] - point)) < near), None)
+        marks.append((point, [deg])) if same is None else same[1].append(deg)
+    for point, degs in marks:
+        ax.plot(*point, "o", color="C3", ms=3)
+        ax.annotate(", ".join(f"{deg}°" for deg in degs), point, xytext=(4, 4), textcoords="offset points",
+                    fontsize=8, color="C3")
     ax.axhline(0, color="0.5", lw=0.5)
     ax.axvline(0, color="0.5", lw=0.5)
     ax.set_aspect("equal", adjustable="datalim")

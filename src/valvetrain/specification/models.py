@@ -779,13 +779,22 @@ _TEXT = Annotated[str, Field(max_length=200)]
 
 
 class Document(_Model):
-    """[document]: the title block of the calculation note (report.html); every key optional, printed as given."""
+    """[document]: the title page of the calculation note (report.html, GOST 7.32 / 2.105); every key optional,
+    printed as given, a key left out a blank line to fill in by hand: the organisation and its department, the course
+    (discipline) the note is written for, the document's title and number, who performed it (``author``, with the
+    student's ``group``), who supervised and who checked it, the city and year (and a date)."""
 
     number: Optional[_TEXT] = None
     title: Optional[_TEXT] = None
     organisation: Optional[_TEXT] = None
+    department: Optional[_TEXT] = None
+    discipline: Optional[_TEXT] = None
     author: Optional[_TEXT] = None
+    group: Optional[_TEXT] = None
+    supervisor: Optional[_TEXT] = None
     checker: Optional[_TEXT] = None
+    city: Optional[_TEXT] = None
+    year: Optional[Annotated[int, Field(ge=1900, le=2100)]] = None
     date: Optional[_TEXT] = None
 
 
