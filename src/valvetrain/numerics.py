@@ -91,13 +91,56 @@ def integrals(fn, starts, ends, breakpoints) -> np.ndarray:
                      for v, (grid, edges, half, nodes) in zip(parts, pieces, strict=True)])
 
 
+TIE_RTOL = 16.0 * np.finfo(float).eps
+"""Relative difference within which two values are a tie for :func:`first_largest`: 16 units in the last place.
+The two equal maxima of a symmetric function (a symmetric cam's flanks, the lobes of a multi-cylinder camshaft)
+come out a few units apart, in a direction that depends on the machine (the BLAS kernel of a matrix product); a
+value further from the largest than this is not its equal."""
+
+
+def first_largest(values, axis=None, atol=0.0) -> int | np.ndarray:
+    """The index of the largest value, of the values within :data:`TIE_RTOL` of it (relative, plus ``atol``) the
+    first: a tie is decided by the order of ``values`` (along ``axis``), not by the round-off of its members.
+
+    Parameters
+    ----------
+    values : array_like
+        The values; NaN is never the largest.
+    axis : int, optional
+        The axis along which to search (None: the flattened array, as :func:`numpy.argmax`).
+    atol : float
+        An absolute part of the tie (the unit of ``values``), for values that are differences of larger numbers
+        (the distance of a grid point from an angle).
+
+    Returns
+    -------
+    int or ndarray
+        The index (an array of them along ``axis``, as :func:`numpy.argmax`).
+
+    Examples
+    --------
+    The two maxima of a symmetric cam, one unit in the last place apart: the first wins, whichever is larger.
+
+    >>> force = np.array([1.0, 3.0, 2.0, 3.0 * (1.0 + 2.2e-16), 1.0])
+    >>> int(first_largest(force)), int(np.argmax(force))
+    (1, 3)
+    """
+    values = np.asarray(values, dtype=float)
+    if axis is None:
+        values, axis = values.ravel(), 0
+    top = np.nanmax(values, axis=axis, keepdims=True)
+    tied = values >= top - np.where(np.isfinite(top), TIE_RTOL * np.abs(top) + atol, 0.0)
+    return np.argmax(tied, axis=axis) if values.ndim > 1 else int(np.argmax(tied))
+
+
 def extremum(fn, edges, kind="max", samples=65) -> tuple[float, float]:
     """Global extremum of a piecewise-smooth scalar function on an interval.
 
     Each piece between consecutive ``edges`` is sampled at ``samples`` points (its
     ends included); the best sample is then refined with bounded Brent iteration
     (:func:`bounded_minimum`) between its neighbours, and the better of
-    the sample and the refined point is returned.  An extremum at a junction (a kink)
+    the sample and the refined point is returned; of samples equal to round-off (the two extrema of a symmetric
+    function) the first, the smallest ``x``, is refined (:func:`first_largest`).  An extremum at a junction (a kink)
     is found exactly because the junctions are sampled.  Where the function is not
     finite next to the best sample (a masked region), the sample itself is returned.
 
@@ -127,7 +170,7 @@ def extremum(fn, edges, kind="max", samples=65) -> tuple[float, float]:
     t = np.linspace(0.0, 1.0, samples)
     xs = np.unique((edges[:-1, None] + (edges[1:] - edges[:-1])[:, None] * t[None, :]).ravel())
     ys = sign * np.asarray(fn(xs), dtype=float)
-    i = int(np.argmax(ys))
+    i = first_largest(ys)
     j, k = max(i - 1, 0), min(i + 1, xs.size - 1)
     lo, hi = xs[j], xs[k]
     best_x, best_y = xs[i], ys[i]

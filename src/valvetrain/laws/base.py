@@ -23,7 +23,7 @@ import numpy as np
 from numba import njit
 
 from ..followers import FLAT
-from ..numerics import bracketed_roots, invert_angle, level_span
+from ..numerics import bracketed_roots, first_largest, invert_angle, level_span
 from ..units import si_name
 
 
@@ -346,7 +346,8 @@ class LiftLaw(ABC):
             ends = edges <= edges[1:][m].max()
             xs = np.concatenate([edges[ends], x[m].ravel(), roots[which == n]])
             ys = np.concatenate([at_edges[row][ends], d[row][m].ravel(), at_roots[row][which == n]])
-            i = int(np.argmax(sign * ys))
+            order = np.argsort(xs, kind="stable")     # of extremes equal to round-off, the one at the smallest angle
+            i = order[first_largest(sign * ys[order])]
             found.append((float(xs[i]), float(ys[i])))
         return tuple(found)
 
