@@ -286,7 +286,7 @@ def _sign_or_one(x):
     return 1.0 if x >= 0.0 else -1.0
 
 
-def bracketed_roots(fn, a, b, fa, fb, max_iterations=100) -> np.ndarray:
+def bracketed_roots(fn, a, b, fa, fb, max_iterations=100, brackets=False) -> np.ndarray | tuple[np.ndarray, ...]:
     """Roots of a function in many brackets at once, by the Illinois variant of regula falsi.
 
     Every bracket is refined in the same vectorised call of ``fn`` per iteration until it
@@ -306,11 +306,14 @@ def bracketed_roots(fn, a, b, fa, fb, max_iterations=100) -> np.ndarray:
     max_iterations : int
         Bound on the iterations (the Illinois method converges superlinearly, in some 10
         iterations from a bracket of a hundredth of the abscissa).
+    brackets : bool
+        Return the last brackets too.
 
     Returns
     -------
-    ndarray
-        One root per bracket.
+    ndarray, or (ndarray, ndarray, ndarray) with ``brackets``
+        One root per bracket (and the ends a, b of the last brackets, ``fn`` of opposite signs at them: at a jump
+        of ``fn`` across zero, its two sides).
 
     Notes
     -----
@@ -348,7 +351,7 @@ def bracketed_roots(fn, a, b, fa, fb, max_iterations=100) -> np.ndarray:
         b[j], fb[j], side[j] = x[j], fx[same_b], 1.0
         a[k], fa[k], side[k] = x[k], fx[same_a], -1.0
         active[i] = (fx != 0.0) & (np.abs(b[i] - a[i]) > tol[i])
-    return x
+    return (x, a, b) if brackets else x
 
 
 def level_span(fn, a, b, level, samples=4001) -> tuple[float, float]:
@@ -392,12 +395,14 @@ def level_span(fn, a, b, level, samples=4001) -> tuple[float, float]:
     return float(roots[0]), float(roots[1])
 
 
-def invert_angle(angle_of, target, samples=4097) -> np.ndarray:
+def invert_angle(angle_of, target, samples=4097, brackets=False) -> np.ndarray | tuple[np.ndarray, ...]:
     """The parameters theta in [-pi, pi] at which an angle ``angle_of(theta)`` [rad] that grows by 2 pi over the
     revolution equals each ``target`` [rad], all at once.
 
     Each target is bracketed on ``samples`` parameters and the bracket refined by :func:`bracketed_roots` to the
     round-off of the angle (a polar angle of a contour point, the direction of a normal): exact, not interpolated.
+    A target that the angle jumps over (a gap of a contour) gives the parameter of the jump; with ``brackets``
+    the ends of the last brackets are returned too (of the shape of ``target``), the jump's two sides.
 
     Examples
     --------
@@ -421,4 +426,5 @@ def invert_angle(angle_of, target, samples=4097) -> np.ndarray:
     edge = np.sign(f_lo) == np.sign(f_hi)
     at = np.where(np.abs(f_lo) <= np.abs(f_hi), lo, hi)
     lo, hi = np.where(edge, at, lo), np.where(edge, at, hi)
-    return bracketed_roots(miss, lo, hi, miss(lo), miss(hi)).reshape(target.shape)
+    found = bracketed_roots(miss, lo, hi, miss(lo), miss(hi), brackets=brackets)
+    return tuple(f.reshape(target.shape) for f in found) if brackets else found.reshape(target.shape)
