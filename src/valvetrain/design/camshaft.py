@@ -19,6 +19,7 @@ from scipy.interpolate import interp1d
 from .. import camshaft as shaft
 from ..bibliography import cite
 from ..checks import Check, check
+from ..numerics import first_largest
 from ..units import to_display
 from ..layouts import finger_mass_change
 from .crank import firing_angles
@@ -285,7 +286,7 @@ def camshaft_stage(c, engine, valves, designs) -> CamshaftResults:
                                  c.modulus)
     drive_force = shaft.drive_force(np.array([figures["peak"], figures["mean"]]), c.drive_pitch_radius)
     twist_max = float(np.max(np.abs(lag)))
-    j = int(np.argmax(total))
+    j = first_largest(total)    # of the equal peaks of a camshaft's lobes, the first
     speeds = response_speeds(lobes, omega_n[:MODES], significant, ratio, engine.over_speed_ratio * engine.rated_speed)
     lags = torsional_response(omega_n, shapes, c.torsional_damping_ratio,
                               station_phasors(lobes, speeds), ratio * speeds)

@@ -23,7 +23,7 @@ from ..laws import LiftLaw
 from ..laws.base import Extremes
 from ..laws.records import LawRecord
 from ..layouts import LAYOUTS, layout
-from ..numerics import extremum
+from ..numerics import extremum, first_largest
 from ..specification import SpecError
 from ..specification.messages import Problem
 from ..springs import NoSpringFits
@@ -458,6 +458,13 @@ def _table_grid(law, step):
     return np.unique(np.concatenate([[law.start], k, [law.end]]))
 
 
+def _first_best(candidates, sign) -> tuple[float, float]:
+    """Of candidate ``(angle, value)`` pairs the largest ``sign * value``; of values equal to round-off the one at
+    the smallest angle (:func:`~valvetrain.numerics.first_largest`)."""
+    ordered = sorted(candidates, key=lambda p: p[0])
+    return ordered[first_largest([sign * p[1] for p in ordered])]
+
+
 def profile_stage(cam, valve, output) -> ProfileResult:
     """The lift table, the contour over a revolution, the profile's curvature extremes, contact and undercut.
 
@@ -493,17 +500,17 @@ def profile_stage(cam, valve, output) -> ProfileResult:
     # the base circle (radius = heel radius for both followers) closes the profile; the smallest radius is refined
     # on the contour around the least sample of each piece and around the table's least, so that a dip between the
     # table's points (an undercut) is found
-    i = int(np.argmin(follower.convex_radius(rho)))
+    # (of radii equal to round-off, a symmetric cam's two flanks, the one at the smallest angle)
+    i = first_largest(-follower.convex_radius(rho))
     near = theta[[max(i - 1, 0), min(i + 1, theta.size - 1)]]
-    x_min, rho_min = min(extremum(convex, bp, "min"), extremum(convex, near, "min"), (np.pi, heel),
-                         key=lambda p: p[1])
+    x_min, rho_min = _first_best([extremum(convex, bp, "min"), extremum(convex, near, "min"), (np.pi, heel)], -1.0)
 
     def convex_or_low(t):
         """The convex radius, -inf where the profile is concave (the largest radius is that of a convex stretch)."""
         r = convex(t)
         return np.where(np.isinf(r), -np.inf, r)
 
-    x_max, rho_max = max(extremum(convex_or_low, bp, "max"), (np.pi, heel), key=lambda p: p[1])
+    x_max, rho_max = _first_best([extremum(convex_or_low, bp, "max"), (np.pi, heel)], 1.0)
     straight = bool(np.any(np.isposinf(rho)))   # straight flanks (tangent cam): the largest radius is infinite
     if follower.rolling:
         beta_max = extremum(lambda t: np.abs(law.profile(t, heel, follower)[2]), bp, "max")[1]
