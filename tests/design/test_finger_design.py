@@ -113,6 +113,36 @@ def test_refusals_name_the_key(old, new, words):
         run(parse_spec(text.replace(old, new, 1)))
 
 
+MEASURED = Path(__file__).parents[2] / "examples" / "measured-lobe.toml"
+
+FINGER_KEYS = """follower = "finger"
+roller_radius_mm = 8.75
+finger_pivot_x_mm = -22.0
+finger_pivot_y_mm = {pivot_y}
+finger_roller_arm_mm = 22.5
+finger_pad_arm_mm = 36.0
+finger_pad_drop_mm = -10.0
+finger_pad_radius_mm = 12.0
+finger_valve_angle_deg = 12.0
+"""
+
+
+def test_a_finger_on_a_measured_table_is_refused_where_its_pivot_cannot_reach_the_cam():
+    """A measured table gives the lift only once it is read, after the specification's checks: a finger whose roller
+    arm (22.5 mm) cannot reach the heel circle from its pivot (83 mm from the cam centre) is refused by the design
+    naming the key, as the specification's checks refuse it on a law of given lift (a ValueError of the finger's
+    linkage stopped the design before: fuzz campaign of issue 36)."""
+    text = MEASURED.read_text(encoding="utf-8").replace("rocker_ratio = 1.6\n", "")
+    text = text.replace('base_radius_mm = 20.0\n', 'base_radius_mm = 20.0\n' + FINGER_KEYS.format(pivot_y=80.0))
+    text += '\n[valves.intake.drive]\nlayout = "rocker"\n'
+    with pytest.raises(SpecError, match=r"valves\.intake\.cam\.finger_roller_arm_mm = 22\.5 from the pivot .* "
+                       r"cannot reach the roller centre's heel circle"):
+        run(parse_spec(text, source_dir=MEASURED.parent))
+    reach = run(parse_spec(text.replace("finger_pivot_y_mm = 80.0", "finger_pivot_y_mm = 27.0"),
+                           source_dir=MEASURED.parent))
+    assert reach.valves["intake"].profile.finger is not None
+
+
 def test_the_camshaft_link_is_reduced_to_the_valve_by_the_finger_s_ratio(design):
     """The camshaft's stiffness under the cam, k_cam = 1 / (its deflection under 1 N, eq. 7.3 of Valve-train practical
     works (n.d.)), reaches the valve divided by i_0^2, i_0 = 1.6492 the finger's ratio on the heel circle (central

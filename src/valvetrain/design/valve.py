@@ -411,6 +411,12 @@ def law_stage(valve, engine, law=None) -> CamResult:
             key = "cam.table_file" if cam.table_file is not None else "cam.table_lifts_mm"
             raise ValueError(Problem(key, f"the measured valve lift = {lift / MM:.4g} mm: {allowed}"))
         raise ValueError(Problem("max_lift_mm", allowed, f"{lift / MM:.4g} mm"))
+    follower = follower_of(cam)
+    if follower.law_at_valve:   # a finger on a measured table (or a caller's law): its lift known only now
+        problem = follower.geometry_problem(cam.base_radius - law.ramp_height, law.lift_max + law.ramp_height)
+        if problem:
+            key, value, message, joiner = problem
+            raise ValueError(Problem(f"cam.{key}", message, value, joiner))
     omega = engine.rated_speed / 2.0
     ext = law.extremes(omega)
     seat = valve.rocker_ratio * omega * np.abs(law.derivatives(np.array([law.valve_opens, law.valve_closes]))[1])
@@ -420,7 +426,7 @@ def law_stage(valve, engine, law=None) -> CamResult:
                      float(seat[0]), float(seat[1]), event, nose, nose + 2.0 * law.valve_opens,
                      nose + 2.0 * law.valve_closes, omega, cam.follower, cam.base_radius,
                      cam.base_radius - law.ramp_height, cam.roller_radius or 0.0, valve.rocker_ratio,
-                     step_records(law, omega), follower_of(cam))
+                     step_records(law, omega), follower)
 
 
 def flow_stage(cam, valve, engine) -> FlowResult:
