@@ -8,7 +8,7 @@ import pytest
 
 from valvetrain.design import run
 from valvetrain.design.drive import LoadMap, contact_loads
-from valvetrain.design.dynamics import adjuster_ratio
+from valvetrain.design.dynamics import FINGER_MASS_BELOW, adjuster_ratio, finger_mass
 from valvetrain.followers import PivotedFollower
 from valvetrain.specification import SpecError, parse_spec, si
 
@@ -141,6 +141,23 @@ def test_a_finger_on_a_measured_table_is_refused_where_its_pivot_cannot_reach_th
     reach = run(parse_spec(text.replace("finger_pivot_y_mm = 80.0", "finger_pivot_y_mm = 27.0"),
                            source_dir=MEASURED.parent))
     assert reach.valves["intake"].profile.finger is not None
+
+
+def test_the_reduced_mass_table_of_a_finger_pressed_near_its_dead_point_stays_within_the_pad_s_reach():
+    """The example's finger with its pad arm at 0 (the pad 10 mm beside the pivot, the shut valve 0.3 mm above the
+    pad's lowest reach): the table of J / G^2 reaches halfway to that reach below the shut valve, not the fixed 1 mm
+    (where no finger angle gives the valve's position: a ValueError of the linkage stopped the design of such a
+    finger without a lash adjuster, fuzz campaign of issue 36).  The reach below, L_b (1 + sin chi_0), against the
+    lowest valve lift over a whole turn of the finger, sampled (an independent evaluation)."""
+    f = PivotedFollower(radius=0.00875, pivot_x=-0.022, pivot_y=0.027, roller_arm=0.0225, pad_arm=0.0,
+                        pad_drop=-0.010, pad_radius=0.012, valve_angle=np.radians(12.0))
+    heel = 0.017
+    table = finger_mass(f, 12e-9, heel, 0.009, "valve")
+    psi = np.linspace(-np.pi, np.pi, 2_000_001)
+    assert f.reach_below(heel) == pytest.approx(-f.valve_lift_of(psi, heel).min(), rel=1e-9)
+    assert f.reach_below(heel) < FINGER_MASS_BELOW
+    assert table.position[0] == pytest.approx(-0.5 * f.reach_below(heel), rel=1e-12)
+    assert np.all(np.isfinite(table.mass)) and np.all(table.mass > 0.0)
 
 
 def test_the_camshaft_link_is_reduced_to_the_valve_by_the_finger_s_ratio(design):

@@ -495,7 +495,8 @@ def finger_mass(follower, inertia, heel, top, node, rest=0.0, offset=0.0,
         The heel radius of the cam [m].
     top : float
         The law's largest lift (lift and ramp) [m]: the table runs from :data:`FINGER_MASS_BELOW` below the shut
-        valve to 1.5 x ``top``, at most halfway from ``top`` to the pad's reach (where G -> 0).
+        valve, at most halfway to the pad's reach below it (:meth:`~valvetrain.followers.PivotedFollower.reach_below`,
+        where G -> 0), to 1.5 x ``top``, at most halfway from ``top`` to the pad's reach (where G -> 0).
     node : str
         The node's name.
     rest : float
@@ -519,7 +520,7 @@ def finger_mass(follower, inertia, heel, top, node, rest=0.0, offset=0.0,
     Norton (2009), the chapter on the dynamics of follower trains.
     """
     high = min(1.5 * top, top + 0.5 * (follower.reach(heel) - top))
-    h = np.linspace(-FINGER_MASS_BELOW, high, points)
+    h = np.linspace(-min(FINGER_MASS_BELOW, 0.5 * follower.reach_below(heel)), high, points)
     return VariableMass(node, h - offset, rest + follower.reduced_inertia(inertia, heel, h),
                         follower.reduced_inertia_slope(inertia, heel, h))
 

@@ -174,6 +174,12 @@ class PivotedFollower(RollerFollower):
         from the pivot), with the roller on the heel circle of radius ``heel`` [m]."""
         return self._pad[0] * (1.0 - np.sin(self._chi0(heel)))
 
+    def reach_below(self, heel) -> float:
+        """The deepest the pad presses the valve below its shut position [m], L_b (1 + sin chi_0) (the pad's centre
+        square to the valve axis from the pivot on the other side), with the roller on the heel circle of radius
+        ``heel`` [m]: below it no finger angle gives the valve's position."""
+        return self._pad[0] * (1.0 + np.sin(self._chi0(heel)))
+
     def rest_ratio(self, heel) -> float:
         """The lever ratio i_0 = G(psi_0) / L_r with the roller on the heel circle of radius ``heel`` [m]."""
         return float(self.lever_ratio(np.array(self.base_angle(heel))))
