@@ -173,6 +173,31 @@ def test_lines_that_are_no_records_are_designed_again(spec_file, serial, tmp_pat
     assert "records of another study" in tolerance(spec_file, out, *ARGS, code=2).output
 
 
+def test_a_sample_whose_design_raises_an_error_is_recorded_and_not_designed_again(spec_file, tmp_path,
+                                                                                   monkeypatch):
+    """Issue 36: an error inside one sample's design stopped the study with a traceback, and the run again met the
+    same sample; the sample is recorded as failed (its error named), the study finishes, and the run again keeps
+    the record."""
+    from valvetrain import tolerance as tolerance_module
+
+    design, calls = tolerance_module.run, []
+
+    def raises_once(spec, **kw):
+        calls.append(1)
+        if len(calls) == 2:
+            raise ValueError("the valve pad at 0.01 m from the pivot cannot give a valve lift of 0.0135 m")
+        return design(spec, **kw)
+
+    monkeypatch.setattr(tolerance_module, "run", raises_once)
+    out = tmp_path / "out"
+    result = tolerance(spec_file, out, *ARGS)
+    assert "1 refused (1 of them failed with an error of valvetrain: the design stopped" in result.output
+    records, results = outputs(out)
+    assert [r["record"]["status"] for r in records].count("failed") == 1
+    assert results["failed"]["samples"] == 1 and "ValueError: the valve pad" in results["failed"]["messages"][0]
+    assert "0 samples designed (6 kept from before)" in tolerance(spec_file, out, *ARGS).output
+
+
 def test_other_inputs_in_the_folder_are_refused(spec_file, serial, tmp_path):
     out = tmp_path / "out"
     tolerance(spec_file, out, *ARGS)

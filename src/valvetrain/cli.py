@@ -473,9 +473,12 @@ def study(file, grid_items, out, workers, scheduler, max_points, force) -> None:
     except OutFolderError as err:
         _fail_out(err)
     done = [r for r in records if r is not None]
-    refused = sum(r["status"] != "ok" for r in done)
+    refused = sum(r["status"] == "refused" for r in done)
+    failed = [r["message"] for r in done if r["status"] == "failed"]
     backend = f"on {scheduler}" if scheduler else f"in {workers} processes" if workers > 1 else "in this process"
-    click.echo(f"{len(done)} design points ({refused} refused) {backend}, {seconds:.1f} s")
+    click.echo(f"{len(done)} design points ({refused} refused"
+               + (f", {len(failed)} failed with an error of valvetrain: {failed[0]}" if failed else "")
+               + f") {backend}, {seconds:.1f} s")
     click.echo(f"wrote {out}/ (study.csv, study.json)")
     if stopped is not None:
         click.echo(f"error: {stopped}; the rows of the points not designed say 'not designed'", err=True)
@@ -559,8 +562,11 @@ def tolerance(file, samples, method, seed, out, workers, scheduler, lang) -> Non
         tmp.write_text(text, encoding="utf-8")
         tmp.replace(folder / name)
     backend = f"on {scheduler}" if scheduler else f"in {workers} processes" if workers > 1 else "in this process"
+    failed = result["failed"]["samples"]
     click.echo(f"{len(todo)} samples designed ({samples - len(todo)} kept from before) {backend}, "
-               f"{time.monotonic() - start:.1f} s; {result['refused']['samples']} refused")
+               f"{time.monotonic() - start:.1f} s; {result['refused']['samples']} refused"
+               + (f" ({failed} of them failed with an error of valvetrain: {result['failed']['messages'][0]})"
+                  if failed else ""))
     failing = sorted(((c["probability"], cid) for cid, c in result["checks"].items() if c["failures"]), reverse=True)
     for p, cid in failing:
         low, high = result["checks"][cid]["confidence_95"]

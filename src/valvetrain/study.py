@@ -34,6 +34,7 @@ import pydantic
 import tomli_w
 
 from .design import run
+from .interruption import Interruption
 from .specification import LAWS, SpecError, set_keys, validate
 from .specification.messages import location, message
 from .specification.models import Spec
@@ -54,8 +55,8 @@ VALVE_COLUMNS = [
 """Columns of each valve of a point (``VALVE.KEY``), with their meanings."""
 
 POINT_COLUMNS = [
-    ("status", "'ok', 'refused' (the point is not a valid design; see message), or 'not designed' (the study "
-               "stopped before it)"),
+    ("status", "'ok', 'refused' (the point is not a valid design; see message), 'failed' (the design stopped with "
+               "an error of valvetrain, named in message), or 'not designed' (the study stopped before it)"),
     ("failures", "failed checks of severity failure (not counting those accepted in the file)"),
     ("warnings", "failed checks of severity warning"),
     ("message", "why the point was refused, one problem per line"),
@@ -242,18 +243,31 @@ def evaluate_point(document) -> dict[str, Any]:
     Returns
     -------
     dict
-        ``status`` ('ok' or 'refused'), ``valves`` (name -> the figures of :data:`VALVE_COLUMNS`), ``failures``
-        and ``warnings`` (counts of the failed checks not accepted in the file), ``message`` (the refusal's
-        problems, one a line; empty for a design).
+        ``status`` ('ok', 'refused' or 'failed': the design stopped with an error, :func:`failure_text`),
+        ``valves`` (name -> the figures of :data:`VALVE_COLUMNS`), ``failures`` and ``warnings`` (counts of the
+        failed checks not accepted in the file), ``message`` (the refusal's problems, one a line, or the error;
+        empty for a design).
     """
     try:
         results = run(validate(document))
     except SpecError as err:
         return {"status": "refused", "valves": {}, "failures": None, "warnings": None,
                 "message": "\n".join(err.problems)}
+    except Exception as exc:  # noqa: BLE001 - one point that cannot be designed must not stop the study
+        return {"status": "failed", "valves": {}, "failures": None, "warnings": None, "message": failure_text(exc)}
     severities = [w.severity for w in results.warnings]
     return {"status": "ok", "valves": {name: _valve_record(v) for name, v in results.valves.items()},
             "failures": severities.count("failure"), "warnings": severities.count("warning"), "message": ""}
+
+
+def failure_text(exc) -> str:
+    """The message of a point (or sample) whose design stopped with an error of valvetrain, not a refusal of its
+    specification: the point is recorded as failed, the study goes on.  An interruption (Ctrl-C) that a library
+    made into an error is raised again (:class:`valvetrain.interruption.Interruption`)."""
+    if Interruption.seen:
+        raise exc
+    return (f"the design stopped with an error of valvetrain, not a refusal of the file ({type(exc).__name__}: "
+            f"{str(exc)[:200]}); please report it with the file")
 
 
 class StudyStopped(RuntimeError):

@@ -28,7 +28,7 @@ from .design import run
 from .specification import SpecError, validate
 from .specification.messages import shown
 from .specification.validate import spec_document
-from .study import MMAP_THRESHOLD_BYTES, GridError, check_grid, set_malloc
+from .study import MMAP_THRESHOLD_BYTES, GridError, check_grid, failure_text, set_malloc
 from .units import rpm_to_rad_s
 
 NORMAL_TRUNCATION_SIGMA = 6.0
@@ -193,7 +193,9 @@ def evaluate_sample(document) -> dict[str, Any]:
     Returns
     -------
     dict
-        ``status`` ('ok' or 'refused'), ``message`` (the refusal's problems, one a line), ``checks`` (check id ->
+        ``status`` ('ok', 'refused' or 'failed': the design stopped with an error,
+        :func:`valvetrain.study.failure_text`), ``message`` (the refusal's problems, one a line, or the error),
+        ``checks`` (check id ->
         ``[margin, passed, quantity, severity]``, the margin None where the value cannot be evaluated) and
         ``headlines`` (valve -> ``jump_speed_rpm`` (engine rpm, None: no separation in the range swept) and
         ``max_seating_velocity_m_s``) of the valves with a [dynamics] section.
@@ -205,6 +207,8 @@ def evaluate_sample(document) -> dict[str, Any]:
         results = run(validate(document), headlines_only=True)
     except SpecError as err:
         return {"status": "refused", "message": "\n".join(err.problems), "checks": {}, "headlines": {}}
+    except Exception as exc:  # noqa: BLE001 - one sample that cannot be designed must not stop the study
+        return {"status": "failed", "message": failure_text(exc), "checks": {}, "headlines": {}}
     finally:
         set_num_threads(threads)
     checks = {check_id(c): [_finite(c.margin), c.passed, c.quantity, c.severity] for c in results.checks}
@@ -354,7 +358,9 @@ def sensitivities(samples, values, keys) -> dict[str, Optional[float]]:
 def summary(spec, centres, samples, records, method, seed) -> dict[str, Any]:
     """The results of a study (``tolerance.json``): the tolerances, per check its margin's distribution, its
     failures, probability of failure with the Wilson 95 % interval and the rank correlations of the tolerances with
-    its margin; per valve with dynamics the distribution of the headlines; the refused samples."""
+    its margin; per valve with dynamics the distribution of the headlines; the samples not designed (``refused``:
+    refused by the specification's checks or the design, or ``failed``: stopped by an error of valvetrain, counted
+    among them and apart)."""
     keys = [t.key for t in spec.tolerances]
     n = len(records)
     ok = [r for r in records if r["status"] == "ok"]
@@ -375,10 +381,12 @@ def summary(spec, centres, samples, records, method, seed) -> dict[str, Any]:
     headlines = {v: {h: distribution([r["headlines"].get(v, {}).get(h) for r in ok])
                      for h in ("jump_speed_rpm", "max_seating_velocity_m_s")} for v in valves}
     refused = n - len(ok)
+    failed = [r for r in records if r["status"] == "failed"]
     return {"method": method, "seed": seed, "samples": n,
             "tolerances": [{**t.model_dump(exclude_none=True), "nominal": c}
                            for t, c in zip(spec.tolerances, centres, strict=True)],
             "refused": {"samples": refused, "probability": refused / n if n else 0.0,
                         "confidence_95": list(wilson(refused, n)),
                         "messages": sorted({r["message"] for r in records if r["status"] != "ok"})[:10]},
+            "failed": {"samples": len(failed), "messages": sorted({r["message"] for r in failed})[:10]},
             "checks": checks, "headlines": headlines}
