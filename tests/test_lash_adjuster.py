@@ -168,6 +168,9 @@ def test_leak_down_per_revolution_scales_with_the_inverse_viscosity():
     (("clearance_mm = 0.0             #", "clearance_mm = 0.1             #"),
      "valves.intake.clearance_mm = 0.1: allowed 0 with a lash_adjuster section"),
     (('location = "tappet"', 'location = "pivot"\nplunger_diameter_mm = 1'), "plunger_diameter_mm"),
+    # issue 36: nothing refills the chamber (a ZeroDivisionError in the adjuster stage before)
+    (('location = "tappet"', 'location = "tappet"\nsupply_pressure_MPa = 0.0\nplunger_spring_N = 0.0'),
+     "valves.intake.lash_adjuster: supply_pressure_MPa = 0 and plunger_spring_N = 0: nothing drives oil"),
 ])
 def test_refusals_name_the_key(change, words):
     text = EXAMPLE.read_text().replace("[valves.intake.spring]", '[valves.intake.lash_adjuster]\nlocation = "tappet"\n\n'

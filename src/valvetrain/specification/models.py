@@ -449,6 +449,14 @@ class LashAdjuster(_Model):
     plunger_spring_N: _bounded(0.0, 500.0, "N", low_open=False) = 15.0
     check_valve_diameter_mm: Length(0.2, 20.0, low_open=False) = 2.0
 
+    @model_validator(mode="after")
+    def _refills(self):
+        if self.supply_pressure_MPa == 0.0 and self.plunger_spring_N == 0.0:
+            raise ValueError("supply_pressure_MPa = 0 and plunger_spring_N = 0: nothing drives oil through the check "
+                             "valve (the supply plus the spring's pull on the chamber is 0), the leak-down is never "
+                             "refilled; allowed either above 0")
+        return self
+
 
 class Valve(_Model):
     """[valves.NAME]: one valve (or a set of same-name valves) of a cylinder."""
