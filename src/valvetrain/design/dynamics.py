@@ -404,13 +404,21 @@ def adjuster_ratio(valve, law) -> float:
 
 def adjuster_load(valve, law, drive, cam_speed: float, at: str) -> tuple[float, float]:
     """The lash adjuster's motion ratio and :func:`adjuster_reference_force` [N], refused where the adjuster cannot
-    work: a motion ratio <= 0 (at the pivot of a lever ratio <= 1), or a largest force on it no more than its own push
+    work: a motion ratio <= 0 (at the pivot of a lever ratio <= 1, or of a finger whose linkage along the adjuster's
+    axis moves the valve against the plunger, the message naming that axis), or a largest force on it no more than its own push
     F_s + p_s A, which would hold the valve open and leave the oil column uncompressed (no finite stiffness)."""
     la = valve.lash_adjuster
     ratio = adjuster_ratio(valve, law)
-    if ratio <= 0.0:
+    if ratio <= 0.0 and not follower_of(valve.cam).law_at_valve:
         raise SpecError([Problem(f"{at}.lash_adjuster.location", "needs a lever ratio > 1 (an end-pivot finger): "
                                  f"rocker_ratio x the follower's own = {lever_ratio(valve, law):.4g}", '"pivot"', " ")])
+    if ratio <= 0.0:   # a finger's linkage along the adjuster's axis: its lever ratio alone does not decide
+        linkage = (f"the finger's linkage on the heel circle moves the valve by {ratio:.4g} x the plunger's extension "
+                   f"along the adjuster's axis (lever ratio {lever_ratio(valve, law):.4g}); allowed a motion ratio > 0")
+        if la.axis_angle is None:
+            raise SpecError([Problem(f"{at}.lash_adjuster.location", f"{linkage} (the axis is the valve's: "
+                                     "axis_angle_deg not given)", '"pivot"')])
+        raise SpecError([Problem(f"{at}.lash_adjuster.axis_angle_deg", linkage, f"{math.degrees(la.axis_angle):g}")])
     force = adjuster_reference_force(valve, law, drive, cam_speed, ratio)
     supply = la.supply_pressure * hla.plunger_area(la.plunger_diameter)
     if force <= la.plunger_spring_N + supply:
