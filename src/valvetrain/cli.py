@@ -686,6 +686,10 @@ def serve(file, port, host, show) -> None:
         app = server(text, folder, host, port)
     except SpecError as err:
         _fail_spec(err)
+    except OSError as err:   # the port taken, an address not of this machine, a name that does not resolve
+        click.echo(f"error: --host {host} --port {port}: cannot listen there ({err.strerror or err}); give another "
+                   "--port (0: any free port) or --host", err=True)
+        sys.exit(2)
     app.start()
     url = f"http://{'127.0.0.1' if host in ('127.0.0.1', '0.0.0.0') else host}:{app.port}/"
     click.echo(f"valvetrain designer at {url} (Ctrl-C stops it)")
