@@ -69,6 +69,29 @@ def test_failure_probability_of_a_linear_margin(tmp_path):
     assert c["sensitivities"]["valves.intake.throat_diameter_mm"] == pytest.approx(1.0)
 
 
+def test_a_check_the_file_accepts_is_shown_accepted_with_its_probability_of_failing(tmp_path):
+    """Issue 36: the checks the file accepts ([[accepted]]) were reported as P(fail) = 1 like open ones while `run`
+    reports them as accepted.  The throat check of test_failure_probability_of_a_linear_margin accepted in the file:
+    marked accepted in tolerance.json, on the command line and in the report, its probability that of failing its
+    limit, Phi(-0.5) = 0.3085 (closed form) within its Wilson interval; `run` of the nominal file lists it among the
+    accepted (it fails at 36.8 mm < 0.46 x 80 mm)."""
+    accept = ('\n[[accepted]]\nvalve = "intake"\nquantity = "flow.throat_to_bore"\nreason = "a port of the old head"\n')
+    path = tmp_path / "engine.toml"
+    path.write_text(appendix_text().replace("throat_diameter_mm = 36.8", "throat_diameter_mm = 37.0") + THROAT
+                    + accept, encoding="utf-8")
+    result = tolerance(path, tmp_path / "out", "--samples", "200", "--seed", "7")
+    c = outputs(tmp_path / "out")[1]["checks"]["intake:flow.throat_to_bore"]
+    low, high = c["confidence_95"]
+    assert c["accepted"] and low <= norm.cdf(-0.5) <= high and 0.0 < c["probability"] < 1.0
+    assert f"  accepted in the specification: intake: throat diameter / bore: P(fail) = {c['probability']:.4g}" in (
+        result.output)
+    assert "warning, accepted in the specification</td>" in (tmp_path / "out" / "tolerance.html").read_text("utf-8")
+    nominal = tmp_path / "nominal.toml"
+    nominal.write_text(appendix_text() + accept, encoding="utf-8")
+    run = CliRunner().invoke(main, ["validate", str(nominal)])
+    assert run.exit_code == 0 and "throat diameter / bore" not in run.output    # accepted: not an open warning
+
+
 def test_wilson_interval_against_newcombe():
     """Newcombe (1998), Table I, method 3 (the score interval): 81/263 ->
     0.2553-0.3662, 15/148 -> 0.0624-0.1605, 0/20 -> 0-0.1611."""

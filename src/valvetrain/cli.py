@@ -567,10 +567,11 @@ def tolerance(file, samples, method, seed, out, workers, scheduler, lang) -> Non
                f"{time.monotonic() - start:.1f} s; {result['refused']['samples']} refused"
                + (f" ({failed} of them failed with an error of valvetrain: {result['failed']['messages'][0]})"
                   if failed else ""))
-    failing = sorted(((c["probability"], cid) for cid, c in result["checks"].items() if c["failures"]), reverse=True)
-    for p, cid in failing:
+    failing = sorted(((c["accepted"], -c["probability"], cid) for cid, c in result["checks"].items() if c["failures"]))
+    for accepted, p, cid in failing:
         low, high = result["checks"][cid]["confidence_95"]
-        click.echo(f"  {result['checks'][cid]['quantity']}: P(fail) = {p:.4g} (95 %: {low:.4g}...{high:.4g})")
+        click.echo(f"  {'accepted in the specification: ' if accepted else ''}{result['checks'][cid]['quantity']}: "
+                   f"P(fail) = {-p:.4g} (95 %: {low:.4g}...{high:.4g})")
     click.echo(f"wrote {out}/ ({RECORDS}, tolerance.json, tolerance.html)")
 
 

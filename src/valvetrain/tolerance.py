@@ -195,8 +195,8 @@ def evaluate_sample(document) -> dict[str, Any]:
     dict
         ``status`` ('ok', 'refused' or 'failed': the design stopped with an error,
         :func:`valvetrain.study.failure_text`), ``message`` (the refusal's problems, one a line, or the error),
-        ``checks`` (check id ->
-        ``[margin, passed, quantity, severity]``, the margin None where the value cannot be evaluated) and
+        ``checks`` (check id -> ``[margin, passed, quantity, severity, accepted]``, the margin None where it is not
+        a finite number, accepted whether the file's ``[[accepted]]`` names the check) and
         ``headlines`` (valve -> ``jump_speed_rpm`` (engine rpm, None: no separation in the range swept) and
         ``max_seating_velocity_m_s``) of the valves with a [dynamics] section.
     """
@@ -211,7 +211,7 @@ def evaluate_sample(document) -> dict[str, Any]:
         return {"status": "failed", "message": failure_text(exc), "checks": {}, "headlines": {}}
     finally:
         set_num_threads(threads)
-    checks = {check_id(c): [_finite(c.margin), c.passed, c.quantity, c.severity] for c in results.checks}
+    checks = {check_id(c): [_finite(c.margin), c.passed, c.quantity, c.severity, c.accepted] for c in results.checks}
     headlines = {name: {"jump_speed_rpm": _finite(v.dynamics.jump_speed / rpm_to_rad_s(1.0)),
                         "max_seating_velocity_m_s": _finite(v.dynamics.max_seating_velocity)}
                  for name, v in results.valves.items() if v.dynamics is not None}
@@ -357,8 +357,9 @@ def sensitivities(samples, values, keys) -> dict[str, Optional[float]]:
 
 def summary(spec, centres, samples, records, method, seed) -> dict[str, Any]:
     """The results of a study (``tolerance.json``): the tolerances, per check its margin's distribution, its
-    failures, probability of failure with the Wilson 95 % interval and the rank correlations of the tolerances with
-    its margin; per valve with dynamics the distribution of the headlines; the samples not designed (``refused``:
+    failures, probability of failure (of its limit: a check the file accepts, ``accepted``, fails it all the same,
+    as ``run`` lists it among the accepted) with the Wilson 95 % interval and the rank correlations of the tolerances
+    with its margin; per valve with dynamics the distribution of the headlines; the samples not designed (``refused``:
     refused by the specification's checks or the design, or ``failed``: stopped by an error of valvetrain, counted
     among them and apart)."""
     keys = [t.key for t in spec.tolerances]
@@ -373,6 +374,7 @@ def summary(spec, centres, samples, records, method, seed) -> dict[str, Any]:
         first = next(row for row in rows if row is not None)
         margins = [None if row is None else row[0] for row in rows]
         checks[cid] = {"quantity": first[2], **split_id(cid), "severity": first[3],
+                       "accepted": any(row is not None and row[4] for row in rows),
                        "samples": sum(row is not None for row in rows),
                        "failures": failures, "probability": failures / len(ok),
                        "confidence_95": list(wilson(failures, len(ok))), "margin": distribution(margins),
