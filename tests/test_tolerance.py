@@ -196,6 +196,61 @@ def test_lines_that_are_no_records_are_designed_again(spec_file, serial, tmp_pat
     assert "records of another study" in tolerance(spec_file, out, *ARGS, code=2).output
 
 
+def _damage(index, record, how):
+    """A sample's record (parsed) damaged as the fuzz campaign of issue 36 damaged records.jsonl: fields of the wrong
+    type, a margin that is not finite, an entry cut short, a flag that no longer agrees with the margin."""
+    cid, row = next(iter(record["checks"].items()))
+    if how == "margin_text":
+        row[0] = "0.5"
+    elif how == "margin_nan":
+        return json.dumps({"index": index, "record": record}).replace(json.dumps(row[0]), "NaN", 1)
+    elif how == "short_entry":
+        record["checks"][cid] = row[:2]
+    elif how == "checks_list":
+        record["checks"] = list(record["checks"].items())
+    elif how == "passed_flipped":
+        cid, row = next((c, r) for c, r in record["checks"].items() if r[0] is not None and r[0] > 0.01)
+        row[1] = False
+    elif how == "headlines_text":
+        record["headlines"] = {"intake": "fast"}
+    elif how == "status_other":
+        record["status"] = "maybe"
+    return None
+
+
+@pytest.mark.parametrize("how", ["margin_text", "margin_nan", "short_entry", "checks_list", "passed_flipped",
+                                 "headlines_text", "status_other"])
+def test_a_damaged_record_is_designed_again(spec_file, serial, tmp_path, how):
+    """Issue 36: a records file with the right header and a record of the wrong shape stopped the run with an
+    AttributeError, IndexError or ValueError, or was taken with other results (a check that passes counted failed);
+    the record is designed again (a note names its line) and the results are those of the uninterrupted run."""
+    out = tmp_path / "out"
+    tolerance(spec_file, out, *ARGS)
+    lines = (out / "records.jsonl").read_text(encoding="utf-8").split("\n")
+    item = json.loads(lines[1])
+    lines[1] = _damage(item["index"], item["record"], how) or json.dumps(item)
+    (out / "records.jsonl").write_text("\n".join(lines), encoding="utf-8")
+    (out / "tolerance.json").unlink()
+    result = tolerance(spec_file, out, *ARGS)
+    assert "1 samples designed (5 kept from before)" in result.output
+    assert f"records.jsonl line 2: the record of sample {item['index']}" in result.output or (
+        "records.jsonl line 2: not a line of JSON" in result.output)
+    assert outputs(out) == serial
+
+
+def test_a_records_file_that_is_a_folder_is_refused(spec_file, tmp_path):
+    """Issue 36: records.jsonl (or tolerance.json) a folder: IsADirectoryError; refused, exit 2, nothing in it
+    touched."""
+    for name in ("records.jsonl", "tolerance.json"):
+        out = tmp_path / name.replace(".", "_")
+        (out / name).mkdir(parents=True)
+        (out / name / "mine.txt").write_text("kept", encoding="utf-8")
+        result = tolerance(spec_file, out, *ARGS, code=2)
+        assert result.output.splitlines()[-1].startswith("error: ")
+        assert name in result.output or "did not write" in result.output
+        assert (out / name / "mine.txt").read_text(encoding="utf-8") == "kept"
+
+
 def test_a_sample_whose_design_raises_an_error_is_recorded_and_not_designed_again(spec_file, tmp_path,
                                                                                    monkeypatch):
     """Issue 36: an error inside one sample's design stopped the study with a traceback, and the run again met the

@@ -522,8 +522,9 @@ def tolerance(file, samples, method, seed, out, workers, scheduler, lang) -> Non
         click.echo("error: --workers and --scheduler: give one (the cluster's workers evaluate the samples)", err=True)
         sys.exit(2)
     folder = Path(out)
-    ours = {RECORDS, "records.tmp", *(f"tolerance.{x}{t}" for x in ("json", "html") for t in ("", ".tmp"))}
-    if folder.exists() and (not folder.is_dir() or any(p.name not in ours for p in folder.iterdir())):
+    ours = {"records.tmp", *(f"tolerance.{x}{t}" for x in ("json", "html") for t in ("", ".tmp"))}
+    if folder.exists() and (not folder.is_dir() or any(p.name not in ours | {RECORDS} or p.name in ours
+                                                       and not p.is_file() for p in folder.iterdir())):
         _fail_out(OutFolderError(f"{out}: holds files that valvetrain tolerance did not write; give a new or empty "
                                  "folder"))
     try:
@@ -535,6 +536,10 @@ def tolerance(file, samples, method, seed, out, workers, scheduler, lang) -> Non
     except ToleranceError as err:
         click.echo(f"error: {err}", err=True)
         sys.exit(2)
+    for number, why in records_file.damaged[:5]:
+        click.echo(f"note: {folder / RECORDS} line {number}: {why}; its sample is designed again", err=True)
+    if len(records_file.damaged) > 5:
+        click.echo(f"note: {len(records_file.damaged) - 5} more lines of {RECORDS} designed again", err=True)
     keys = [t.key for t in spec.tolerances]
     todo = [i for i in range(samples) if i not in done]
     progress = _Progress("samples")

@@ -24,6 +24,7 @@ import numpy as np
 from scipy import stats
 from scipy.stats import qmc
 
+from .checks import SEVERITIES
 from .design import run
 from .specification import SpecError, validate
 from .specification.messages import shown
@@ -244,13 +245,18 @@ class RecordFile:
 
     def read(self, samples) -> dict:
         """The records written before, index -> record (empty for a new file); a line that is no record of one of
-        the ``samples`` (cut short, damaged, not UTF-8) is left out, its sample designed again.
+        the ``samples`` (cut short, damaged, not UTF-8, a field of the wrong type or out of its range: what
+        :func:`evaluate_sample` cannot have written, :func:`record_problem`) is left out, its sample designed again;
+        :attr:`damaged` lists those lines, ``(line number, why)``.
 
         Raises
         ------
         ToleranceError
-            A file written for other inputs.
+            A file written for other inputs; a folder where the file would be.
         """
+        self.damaged = []
+        if self.path.is_dir():
+            raise ToleranceError(f"{self.path} is a folder, not the records of a study; give another --out")
         if not self.path.exists():
             return {}
         lines = self.path.read_bytes().decode("utf-8", errors="replace").split("\n")
@@ -262,12 +268,18 @@ class RecordFile:
             raise ToleranceError(f"{self.path} holds the records of another study (another file, tolerances, "
                                  "method, seed or number of samples); give another --out")
         done = {}
-        for line in lines[1:]:
-            try:
-                item = json.loads(line)
-            except json.JSONDecodeError:
+        for number, line in enumerate(lines[1:], start=2):
+            if not line.strip():
                 continue
-            if _is_record(item, samples):
+            try:
+                item = json.loads(line, parse_constant=_no_constant)
+            except (json.JSONDecodeError, ValueError) as exc:
+                self.damaged.append((number, f"not a line of JSON ({str(exc)[:60]})"))
+                continue
+            why = record_problem(item, samples)
+            if why:
+                self.damaged.append((number, why))
+            else:
                 done[item["index"]] = item["record"]
         return done
 
@@ -295,11 +307,63 @@ class RecordFile:
 RECORD_KEYS = {"status", "message", "checks", "headlines"}
 """The keys of a sample's record (:func:`evaluate_sample`)."""
 
+HEADLINE_KEYS = {"jump_speed_rpm", "max_seating_velocity_m_s"}
+"""The keys of a valve's headlines in a sample's record."""
 
-def _is_record(item, samples):
-    """Whether a line's JSON value ``item`` is ``{"index": i, "record": {...}}`` of one of ``samples`` samples."""
-    return (isinstance(item, dict) and type(item.get("index")) is int and 0 <= item["index"] < samples
-            and isinstance(item.get("record"), dict) and set(item["record"]) == RECORD_KEYS)
+
+def _no_constant(name):
+    raise ValueError(f"{name} is no number of a record")
+
+
+def _number(x, finite=True):
+    return type(x) in (int, float) and (not finite or math.isfinite(x))
+
+
+def _check_row_problem(cid, row):
+    """Why ``row`` is not a check's entry ``[margin, passed, quantity, severity, accepted]`` of a record, or None."""
+    if not isinstance(row, list) or len(row) != 5:
+        return f"check {cid[:60]!r} is not [margin, passed, quantity, severity, accepted]"
+    margin, passed, quantity, severity, accepted = row
+    if not (margin is None or _number(margin)) or type(passed) is not bool or type(accepted) is not bool:
+        return f"check {cid[:60]!r}: a margin that is not a finite number or null, or a flag that is not true/false"
+    if not isinstance(quantity, str) or severity not in SEVERITIES:
+        return f"check {cid[:60]!r}: its text or its severity is not one of a check"
+    if margin is not None and (margin < -1e-6 if passed else margin > 1e-6):
+        return f"check {cid[:60]!r}: passed = {str(passed).lower()} with the margin {margin:.6g}"
+    try:
+        split_id(cid)
+    except ValueError:
+        return f"check {cid[:60]!r}: not VALVE:CODE[PARAMETERS]"
+    return None
+
+
+def record_problem(item, samples) -> Optional[str]:
+    """Why a line's JSON value ``item`` is not ``{"index": i, "record": {...}}`` of one of ``samples`` samples as
+    :func:`evaluate_sample` writes it (None where it is): the index, the record's keys, the status and message, each
+    check's entry (a finite margin or null, agreeing with passed; the flags true or false; a severity of
+    :data:`valvetrain.checks.SEVERITIES`) and each valve's headlines (a finite number or null).  A record that fails
+    is designed again, never trusted."""
+    if not isinstance(item, dict) or set(item) != {"index", "record"}:
+        return "not {\"index\": i, \"record\": {...}}"
+    index, record = item["index"], item["record"]
+    if type(index) is not int or not 0 <= index < samples:
+        return f"index {str(index)[:20]}: allowed a whole number 0 ... {samples - 1}"
+    if not isinstance(record, dict) or set(record) != RECORD_KEYS:
+        return f"the record of sample {index} has not the keys {sorted(RECORD_KEYS)}"
+    status, checks, headlines = record["status"], record["checks"], record["headlines"]
+    if status not in ("ok", "refused", "failed") or not isinstance(record["message"], str):
+        return f"the record of sample {index}: its status or message is not one of a record"
+    if not isinstance(checks, dict) or not isinstance(headlines, dict) or (status == "ok") != bool(checks) or (
+            status != "ok" and headlines):
+        return f"the record of sample {index}: its checks are not those of a {status} sample"
+    for cid, row in checks.items():
+        why = _check_row_problem(cid, row)
+        if why:
+            return f"the record of sample {index}: {why}"
+    for valve, h in headlines.items():
+        if not isinstance(h, dict) or set(h) != HEADLINE_KEYS or not all(v is None or _number(v) for v in h.values()):
+            return f"the record of sample {index}: the headlines of {str(valve)[:40]!r} are not those of a valve"
+    return None
 
 
 def _line(index, record):
