@@ -120,6 +120,39 @@ def test_normal_tolerance_is_stratified_in_probability(tmp_path):
     assert sorted(strata) == list(range(40))
 
 
+@pytest.mark.parametrize("k", [8.0, 20.0, 40.0, -40.0])
+def test_a_normal_truncated_far_in_its_tail_is_drawn_inside_its_range(tmp_path, k):
+    """Issue 36: a normal throat tolerance (sigma 0.01 mm) truncated to [mu + k sigma, mu + (k + 1) sigma] drew inf
+    from 8 sigma on (Phi(alpha) and Phi(beta) round to 1) and draws outside the range; every draw is now finite and in
+    the range, and at its probability u: the truncated normal's distribution function at the draw, F(x) = (Q(alpha) -
+    Q(x)) / (Q(alpha) - Q(beta)) with Q the upper tail, evaluated in logarithms (scipy.special.log_ndtr, an
+    independent forward evaluation), returns the u of the Latin hypercube (to 1e-9)."""
+    from scipy.special import log_ndtr
+
+    mu, sigma = 36.8, 0.01
+    low, high = (mu + k * sigma, mu + (k + 1) * sigma) if k > 0 else (mu + (k - 1) * sigma, mu + k * sigma)
+    path = tmp_path / "engine.toml"
+    path.write_text(appendix_text() + f"""
+[[tolerances]]
+key = "valves.intake.throat_diameter_mm"
+distribution = "normal"
+sigma = {sigma}
+low = {low!r}
+high = {high!r}
+""", encoding="utf-8")
+    x = draw(load_spec(path), [mu], 200, "lhs", seed=5)[:, 0]
+    u = unit_samples(200, 1, "lhs", seed=5)[:, 0]
+    assert np.all(np.isfinite(x)) and np.all((x >= low) & (x <= high))
+    z, a, b = (x - mu) / sigma, (low - mu) / sigma, (high - mu) / sigma
+    if k > 0:   # upper tail Q(t) = Phi(-t)
+        q = log_ndtr(-z) - log_ndtr(-a)
+        f = np.expm1(q) / np.expm1(log_ndtr(-b) - log_ndtr(-a))
+    else:       # the mirror: the lower tail Phi(t)
+        f = np.expm1(log_ndtr(z) - log_ndtr(b)) / np.expm1(log_ndtr(a) - log_ndtr(b))
+        f = 1.0 - f
+    np.testing.assert_allclose(f, u, atol=1e-9)
+
+
 @pytest.fixture(scope="module")
 def spec_file(tmp_path_factory):
     """The pushrod example with a short one-mass sweep (the dynamics headlines are in the records)."""
@@ -303,6 +336,9 @@ def test_a_folder_with_user_files_is_refused(spec_file, tmp_path):
      "engine.bore_mm"),
     ('key = "valves.intake.spring"\ndistribution = "uniform"\nhalf_range = 0.1',
      "valves.intake.spring: a table, not a value; give one of its keys\n"),
+    # issue 36: low beyond the default cut nominal + 6 sigma (80 + 6 x 1): an empty range
+    ('key = "engine.bore_mm"\ndistribution = "normal"\nsigma = 1.0\nlow = 90.0',
+     "engine.bore_mm: the sample range [90, 86] is empty"),
 ])
 def test_bad_tolerances_are_refused_before_sampling(entry, said, tmp_path):
     """Clearance 0.25 -+ 0.3 mm reaches -0.05 mm (allowed 0 or 0.01-5 mm); a bore truncated at 3000 mm leaves

@@ -100,6 +100,10 @@ def check_tolerances(document, spec) -> list[float]:
     centres = [nominal(spec, t.key) for t in spec.tolerances]
     for t, centre in zip(spec.tolerances, centres, strict=True):
         low, high = sample_range(t, centre)
+        if not low < high:   # one end given beyond the other's default cut at 6 sigma
+            raise ToleranceError(f"tolerances: {t.key}: the sample range [{low:g}, {high:g}] is empty: the end not "
+                                 f"given is the nominal {centre:g} -+ {NORMAL_TRUNCATION_SIGMA:g} sigma; give both "
+                                 "low and high")
         try:
             check_grid(document, [(t.key, [low, high])])
         except GridError as err:
@@ -125,7 +129,10 @@ def inverse_cdf(u, tolerance, centre) -> np.ndarray:
     -----
     Uniform on [a, b]: x = a + u (b - a).  Normal N(mu, sigma) truncated to [a, b]:
     x = mu + sigma Phi^-1(Phi(alpha) + u (Phi(beta) - Phi(alpha))), alpha = (a - mu)/sigma, beta = (b - mu)/sigma
-    (the inverse transform of the truncated normal).
+    (the inverse transform of the truncated normal), evaluated by :data:`scipy.stats.truncnorm`'s inverse, which
+    stays accurate in the far tails: written as above, Phi(alpha) and Phi(beta) round to the same number (or to 1)
+    a few sigma out and the draws became inf or left [a, b] (8 sigma and more).  A range so far out that the
+    inverse overflows (beyond ~1e300 sigma) is concentrated at its end nearest the mean; every draw is in [a, b].
 
     References
     ----------
@@ -135,8 +142,10 @@ def inverse_cdf(u, tolerance, centre) -> np.ndarray:
     if tolerance.distribution == "uniform":
         return low + u * (high - low)
     s = tolerance.sigma
-    a, b = stats.norm.cdf([(low - centre) / s, (high - centre) / s])
-    return centre + s * stats.norm.ppf(a + u * (b - a))
+    alpha, beta = (low - centre) / s, (high - centre) / s
+    x = centre + s * stats.truncnorm.ppf(u, alpha, beta)
+    near = low if alpha > 0.0 else high if beta < 0.0 else centre
+    return np.clip(np.where(np.isfinite(x), x, near), low, high)
 
 
 def draw(spec, centres, n, method, seed) -> np.ndarray:
