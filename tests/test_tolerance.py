@@ -327,6 +327,26 @@ def test_a_folder_with_user_files_is_refused(spec_file, tmp_path):
     assert sorted(p.name for p in out.iterdir()) == ["notes.txt"]
 
 
+def test_ten_million_samples_are_refused_with_an_estimate(tmp_path, monkeypatch):
+    """Issue 36: --samples 10000000 started weeks of work without a word; as study above 10,000 points, it is refused
+    with exit 2, an estimate from two timed designs of the file (none drawn: the samples are not drawn before) and the
+    option that allows it; --max-samples allows a study above the default limit."""
+    from valvetrain import tolerance as tolerance_module
+
+    path = tmp_path / "engine.toml"
+    path.write_text(appendix_text() + THROAT, encoding="utf-8")
+    drawn = []
+    monkeypatch.setattr(tolerance_module, "unit_samples", lambda *a: drawn.append(a))
+    result = tolerance(path, tmp_path / "out", "--samples", "10000000", code=2)
+    (line,) = result.output.splitlines()
+    assert line.startswith("error: --samples: 10,000,000 samples: about ") and " in 1 process at the " in line
+    assert line.endswith("allowed at most 10,000 samples unless --max-samples 10000000 is given")
+    assert drawn == [] and not (tmp_path / "out").exists()
+    assert "3 samples" in tolerance(path, tmp_path / "out", "--samples", "3", "--max-samples", "2", code=2).output
+    monkeypatch.undo()
+    tolerance(path, tmp_path / "out", "--samples", "3", "--max-samples", "3")
+
+
 @pytest.mark.parametrize("entry, said", [
     ('key = "valves.intake.no_such_mm"\ndistribution = "uniform"\nhalf_range = 0.1',
      "valves.intake.no_such_mm: no such key"),

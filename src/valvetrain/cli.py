@@ -419,24 +419,18 @@ def study(file, grid_items, out, workers, scheduler, max_points, force) -> None:
     from .export import json_text, write_csv
     from .outfolder import atomic_folder
     from .study import (MAX_POINTS, POINT_COLUMNS, VALVE_COLUMNS, GridError, StudyStopped, check_grid,
-                        count_points, evaluate, evaluate_point, parse_grid, point_text, points, read_document,
-                        table, with_values)
+                        count_points, evaluate, parse_grid, point_text, points, read_document, table, too_large,
+                        with_values)
 
     _load(file)
     try:
         grid = parse_grid(grid_items)
         document = read_document(file)
         total = count_points(grid)
-        if total > (max_points or MAX_POINTS):
-            evaluate_point(document)  # the first design loads what the design needs; the second is timed
-            start = time.monotonic()
-            evaluate_point(document)
-            each = time.monotonic() - start
-            processes = workers if scheduler is None else 1
-            raise GridError(f"--grid: {total:,} design points: about {_duration(each * total / processes)} in "
-                            f"{processes} process{'es' if processes > 1 else ''} at the {each:.2g} s that a design of the "
-                            f"file takes; allowed at most {max_points or MAX_POINTS:,} points unless "
-                            f"--max-points {total} is given")
+        large = too_large(total, max_points or MAX_POINTS, document, workers if scheduler is None else 1,
+                          "design points", "--max-points")
+        if large:
+            raise GridError(f"--grid: {large}")
         check_grid(document, grid)
     except GridError as err:
         click.echo(f"error: {err}", err=True)
@@ -499,9 +493,11 @@ def study(file, grid_items, out, workers, scheduler, max_points, force) -> None:
 @click.option("--scheduler", default=None, metavar="ADDRESS",
               help="Evaluate the samples on the Dask distributed cluster of this scheduler (tcp://host:8786); "
                    "needs pip install 'valvetrain[dask]'.")
+@click.option("--max-samples", "max_samples", default=None, type=click.IntRange(1), metavar="N",
+              help="Allow up to N samples (default 10,000; more are refused with an estimate of their time).")
 @click.option("--lang", type=click.Choice(["en", "ru"]), default="en", show_default=True,
               help="Language of the report.")
-def tolerance(file, samples, method, seed, out, workers, scheduler, lang) -> None:
+def tolerance(file, samples, method, seed, out, workers, scheduler, max_samples, lang) -> None:
     """Sample FILE's [[tolerances]] and design every sample; per check the distribution of its margin, its
     probability of failure and the tolerances that drive it.
 
@@ -513,7 +509,7 @@ def tolerance(file, samples, method, seed, out, workers, scheduler, lang) -> Non
 
     from .export import json_text
     from .report.tolerance import report_html
-    from .study import StudyStopped, evaluate, read_document, with_values
+    from .study import MAX_POINTS, StudyStopped, evaluate, read_document, too_large, with_values
     from .tolerance import (RECORDS, RecordFile, ToleranceError, check_tolerances, draw, evaluate_sample,
                             fingerprint, summary)
 
@@ -530,6 +526,10 @@ def tolerance(file, samples, method, seed, out, workers, scheduler, lang) -> Non
     try:
         document = read_document(file)
         centres = check_tolerances(document, spec)
+        large = too_large(samples, max_samples or MAX_POINTS, document, workers if scheduler is None else 1,
+                          "samples", "--max-samples", evaluate_sample)
+        if large:
+            raise ToleranceError(f"--samples: {large}")
         values = draw(spec, centres, samples, method, seed)
         records_file = RecordFile(folder, fingerprint(document, method, seed, values))
         done = records_file.read(samples)
@@ -578,14 +578,6 @@ def tolerance(file, samples, method, seed, out, workers, scheduler, lang) -> Non
         click.echo(f"  {'accepted in the specification: ' if accepted else ''}{result['checks'][cid]['quantity']}: "
                    f"P(fail) = {-p:.4g} (95 %: {low:.4g}...{high:.4g})")
     click.echo(f"wrote {out}/ ({RECORDS}, tolerance.json, tolerance.html)")
-
-
-def _duration(seconds):
-    """A duration in the unit that reads best: seconds, minutes, hours or days."""
-    for unit, size in (("days", 86400.0), ("hours", 3600.0), ("minutes", 60.0)):
-        if seconds >= 2.0 * size:
-            return f"{seconds / size:.3g} {unit}"
-    return f"{seconds:.2g} s"
 
 
 @main.command()

@@ -27,6 +27,7 @@ import multiprocessing
 import os
 from pathlib import Path
 import re
+import time
 import tomllib
 from typing import Any
 
@@ -280,8 +281,38 @@ class StudyStopped(RuntimeError):
 
 
 MAX_POINTS = 10_000
-"""Most design points a study takes without ``--max-points``: at the 0.05-0.5 s a point of the shipped examples
-(more with a [dynamics] section) about 10 minutes to an hour and a half in one process."""
+"""Most design points a study takes without ``--max-points`` (and samples a tolerance study without
+``--max-samples``): at the 0.05-0.5 s a point of the shipped examples (more with a [dynamics] section) about 10
+minutes to an hour and a half in one process."""
+
+
+def duration(seconds) -> str:
+    """A duration in the unit that reads best: seconds, minutes, hours or days.
+
+    >>> duration(30.0), duration(7200.0), duration(3e6)
+    ('30 s', '2 hours', '34.7 days')
+    """
+    for unit, size in (("days", 86400.0), ("hours", 3600.0), ("minutes", 60.0)):
+        if seconds >= 2.0 * size:
+            return f"{seconds / size:.3g} {unit}"
+    return f"{seconds:.2g} s"
+
+
+def too_large(total, allowed, document, processes, what, option, point=None) -> str | None:
+    """Why a study of ``total`` designs is refused, or None where ``total`` is at most ``allowed``: the count, an
+    estimate of its time from a timed design of ``document`` by ``point`` (default :func:`evaluate_point`; the first
+    design loads what a design needs, the second is timed) in ``processes`` processes, and the option (``option``,
+    ``--max-points`` or ``--max-samples``) that allows it; ``what`` names the designs (``design points``)."""
+    if total <= allowed:
+        return None
+    point = point or evaluate_point
+    point(document)
+    start = time.monotonic()
+    point(document)
+    each = time.monotonic() - start
+    return (f"{total:,} {what}: about {duration(each * total / processes)} in {processes} "
+            f"process{'es' if processes > 1 else ''} at the {each:.2g} s that a design of the file takes; allowed at "
+            f"most {allowed:,} {what.split()[-1]} unless {option} {total} is given")
 
 DASK_TASKS_PER_THREAD = 8
 """Tasks of a Dask study per worker thread: enough to even out the load, few enough that the scheduler's own
