@@ -230,6 +230,9 @@ def test_a_seating_velocity_limit():
     (["--vary", "max_lift_mm=-10,1e6"], "LOW = -10 is outside the range of valves.intake.max_lift_mm: allowed [0.3, "
                                         "500] mm"),
     (["--vary", "max_lift_mm=10,1e300"], "HIGH = 1e300 is outside the range of valves.intake.max_lift_mm"),
+    # issue 36: a cam key without its cam. prefix was "outside the range" (pydantic's extra key)
+    (["--vary", "phi1_deg=15,25"], "--vary phi1_deg: valves.intake.phi1_deg is no key of the valve (unknown key); "
+                                   "did you mean cam.phi1_deg"),
 ])
 def test_bad_variables_are_refused_before_the_search(tmp_path, args, message):
     """The same key twice, and bounds outside the key's allowed range (the specification's own, 0.3...500 mm for
