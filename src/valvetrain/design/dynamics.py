@@ -814,6 +814,9 @@ CHECK_CODES = ("dynamics.seating_velocity", "dynamics.jump_speed", "dynamics.val
 CLOSED = "the valve does not leave its seat at the rated speed"
 """Why the seating velocity of a valve that stays on its seat cannot be had."""
 
+SEATING_NOTE = "the largest of the rated speed and the speeds swept below it: "
+"""What the seating velocity check grades, before the speed where it is largest (its note)."""
+
 
 def worst_seating(d, engine) -> tuple[float, float]:
     """The largest |seating velocity| [m/s] of the rated speed and of the speeds swept up to it, and its engine speed
@@ -850,8 +853,9 @@ def dynamics_checks(d, engine, adjuster_ratio=0.0) -> list[Check]:
                                                   f"{to_display(top, 'rpm'):.0f} rpm")
     opened = float(d.rated.lift.max()) > BOUNCE_TOLERANCE
     seating, where = worst_seating(d, engine)
-    at = (f"largest at {to_display(where, 'rpm'):.0f} rpm; {abs(d.at_rated_speed.seating_velocity):.3g} m/s at the "
-          "rated speed" if where < engine.rated_speed * (1 - 1e-9) else "")
+    at = "" if not np.isfinite(where) else SEATING_NOTE + (
+        f"at {to_display(where, 'rpm'):.0f} rpm; {abs(d.at_rated_speed.seating_velocity):.3g} m/s at the rated speed"
+        if where < engine.rated_speed * (1 - 1e-9) else "at the rated speed")
     return [check(CHECK_CODES[0], seating, high=SEATING_VELOCITY_MAX, unit="m/s", note=at,
                   source=CHECK_SOURCE + "; 0.3-0.5 m/s usual, graded at every speed swept up to the rated one",
                   unevaluated="" if opened else CLOSED),
