@@ -893,7 +893,11 @@ def final_checks(design, spec, limits, scale=1.0, search_spring=None) -> list[Ch
     list of Check
         With ``no_jump_factor``, the follower separation from a dynamics sweep of the design with its own spring
         from 10 % of the rated speed up to the limit or 125 % of it, whichever is higher (the ``[dynamics]``
-        section's train and range, the range raised to that top where it ends below).
+        section's train and range, the range raised to that top where it ends below).  Then every failure check of
+        the design that the specification does not accept, as ``valvetrain run`` grades it (one place for the
+        limits: the valve-to-piston clearance of :data:`~valvetrain.design.valve.PISTON_CLEARANCE_MIN`, the
+        separation below ``[engine] over_speed_ratio``), but where a constraint above is the same check with the
+        same bounds: an optimum passes what ``run`` passes.
     """
     if limits.no_jump_factor is not None:
         section = spec.valves[design.name]
@@ -910,8 +914,9 @@ def final_checks(design, spec, limits, scale=1.0, search_spring=None) -> list[Ch
         out.append(replace(spring_reserve(design, limits.min_spring_reserve * scale, search_spring.preload * scale,
                                           search_spring.rate * scale),
                            note=START_SPRING + (f" x {scale:.4g}" if scale != 1.0 else "")))
-    codes = {c.code for c in out}
-    own = [c for c in design.checks if c.severity == "failure" and c.code not in codes]
+    same = {(c.code, c.params, c.low, c.high) for c in out}
+    own = [c for c in design.checks if c.severity == "failure" and not c.accepted
+           and (c.code, c.params, c.low, c.high) not in same]
     return out + own
 
 
