@@ -223,6 +223,12 @@ def camshaft_stage(c, engine, valves, designs) -> CamshaftResults:
     return CamshaftResults(psi, total, lag, record_, tuple(camshaft_checks(record_, c, engine)))
 
 
+TWIST_FAILURE = np.radians(10.0)
+"""A camshaft twist beyond which its check is a failure, not a warning [rad, camshaft]: 10 cam deg (20 crank deg), the
+largest ``max_twist_cam_deg`` allows, an engineering limit: valve events that far from their timing are no longer
+the engine's (and a shaft that twists so far elastically is far past its yield)."""
+
+
 def camshaft_checks(r, c, engine) -> list[Check]:
     """The camshaft's checks: the timing error of the twist, the torsional resonance margin, the bending deflection
     at the lobes and the timing drive's load.
@@ -230,16 +236,18 @@ def camshaft_checks(r, c, engine) -> list[Check]:
     Notes
     -----
     The limits of the twist (``max_twist_cam_deg``) and of the frequency ratio (``min_frequency_ratio``) are
-    engineering assumptions, keys with bounded defaults: no published camshaft limit was found.  The allowable of the
+    engineering assumptions, keys with bounded defaults: no published camshaft limit was found; a twist beyond
+    :data:`TWIST_FAILURE` is a failure.  The allowable of the
     timing drive is the maker's (``drive_allowable_force_N``); for a roller chain the working load is commonly at most
     1/6 of its tensile strength (Diamond Chain (n.d.)).
     """
     over = to_display(engine.over_speed_ratio * engine.rated_speed, "rpm")
     held = "the drive end held" if c.drive_stiffness is None else "through the timing drive's stiffness"
     return [
-        check("camshaft.twist_timing_error", r.twist_max, high=c.max_twist, unit="cam deg", severity="warning",
+        check("camshaft.twist_timing_error", r.twist_max, high=c.max_twist, unit="cam deg",
+              severity="failure" if r.twist_max > TWIST_FAILURE else "warning",
               source=f"{cite('shigley2011', 'chapter 3 (torsion)')}; camshaft.max_twist_cam_deg (an engineering "
-                     "assumption)",
+                     f"assumption; beyond {np.degrees(TWIST_FAILURE):g} cam deg a failure)",
               note=f"{to_display(r.twist_crank, 'crank deg'):.3g} crank deg; quasi-static, {held}"),
         check("camshaft.torsional_resonance", r.frequency_ratio, low=c.min_frequency_ratio, severity="warning",
               source=f"{cite('denhartog1956')}; camshaft.min_frequency_ratio (an engineering assumption)",
