@@ -160,6 +160,29 @@ def test_the_reduced_mass_table_of_a_finger_pressed_near_its_dead_point_stays_wi
     assert np.all(np.isfinite(table.mass)) and np.all(table.mass > 0.0)
 
 
+def test_the_pad_s_contact_stays_on_the_valve_tip():
+    """Issue 36: a finger whose pad meets the valve 50 mm off its axis was accepted with no check.  The largest
+    distance of the contact point from the valve axis over the lift against the hand-built linkage (finger_linkage:
+    the contact X = B + rho_p a, its offset (X - X_0) . a_perp + x_0 at 201 valve lifts, psi by brentq), graded
+    against the tip's radius less 0.5 mm: the example's fingers pass (0.26 mm against 6 mm stems by default, 0.2 x
+    the throat); a 5.5 mm stem with the contact 2.5 mm off the axis fails (2.76 > 2.25 mm); 50 mm off fails."""
+    from finger_linkage import hand_finger
+
+    text = example_text().replace("[valves.intake.parts]\n", "[valves.intake.parts]\nstem_diameter_mm = 5.5\n", 1)
+    for offset, passes in ((0.0, True), (2.5, False), (50.0, False)):
+        spec = parse_spec(text.replace("finger_valve_angle_deg = 12.0  #", f"finger_tip_offset_mm = {offset}\n"
+                                       "finger_valve_angle_deg = 12.0  #", 1))
+        v = run(spec).valves["intake"]
+        hand = hand_finger(v.cam)
+        across = np.array([hand.a[1], -hand.a[0]])
+        lifts = np.linspace(0.0, v.law.lift_max + v.law.ramp_height, 201)
+        reach = max(abs((hand.pad(hand.angle(y)) - hand.pad(hand.psi0)) @ across + offset * 1e-3) for y in lifts)
+        (c,) = [c for c in v.checks if c.code == "finger.tip_contact"]
+        assert c.value == pytest.approx(reach, rel=1e-5, abs=1e-9)
+        assert c.high == pytest.approx(5.5e-3 / 2 - 0.5e-3) and c.severity == "failure" and c.passed == passes
+    assert all(c.passed for c in run(parse_spec(example_text())).checks if c.code == "finger.tip_contact")
+
+
 def test_the_camshaft_link_is_reduced_to_the_valve_by_the_finger_s_ratio(design):
     """The camshaft's stiffness under the cam, k_cam = 1 / (its deflection under 1 N, eq. 7.3 of Valve-train practical
     works (n.d.)), reaches the valve divided by i_0^2, i_0 = 1.6492 the finger's ratio on the heel circle (central

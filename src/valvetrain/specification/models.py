@@ -162,6 +162,7 @@ class Parts(_Model):
 
     contact_modulus_MPa: _bounded(1e3, 1e6, "MPa") = 2.1e5
     head_diameter_mm: Optional[Length(2.0, 1000.0, low_open=False)] = None
+    stem_diameter_mm: Optional[Length(1.0, 100.0, low_open=False)] = None
     cam_width_mm: Optional[Length(1.0, 200.0, low_open=False)] = None
     camshaft_diameter_mm: Optional[Length(2.0, 500.0, low_open=False)] = None
     camshaft_bore_mm: Length(0.0, 500.0, low_open=False) = 0.0
