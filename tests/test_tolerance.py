@@ -248,11 +248,14 @@ def _damage(index, record, how):
         record["headlines"] = {"intake": "fast"}
     elif how == "status_other":
         record["status"] = "maybe"
+    elif how == "made_unevaluated":     # a passing check made an unevaluated failure: no field tells, the hash does
+        cid, row = next((c, r) for c, r in record["checks"].items() if r[1])
+        row[0], row[1] = None, False
     return None
 
 
 @pytest.mark.parametrize("how", ["margin_text", "margin_nan", "short_entry", "checks_list", "passed_flipped",
-                                 "headlines_text", "status_other"])
+                                 "headlines_text", "status_other", "made_unevaluated"])
 def test_a_damaged_record_is_designed_again(spec_file, serial, tmp_path, how):
     """Issue 36: a records file with the right header and a record of the wrong shape stopped the run with an
     AttributeError, IndexError or ValueError, or was taken with other results (a check that passes counted failed);
@@ -261,7 +264,7 @@ def test_a_damaged_record_is_designed_again(spec_file, serial, tmp_path, how):
     tolerance(spec_file, out, *ARGS)
     lines = (out / "records.jsonl").read_text(encoding="utf-8").split("\n")
     item = json.loads(lines[1])
-    lines[1] = _damage(item["index"], item["record"], how) or json.dumps(item)
+    lines[1] = _damage(item["index"], item["record"], how) or json.dumps(item)   # the hash kept: now wrong
     (out / "records.jsonl").write_text("\n".join(lines), encoding="utf-8")
     (out / "tolerance.json").unlink()
     result = tolerance(spec_file, out, *ARGS)

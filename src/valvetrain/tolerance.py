@@ -237,7 +237,8 @@ def fingerprint(document, method, seed, samples) -> str:
 
 
 RECORDS = "records.jsonl"
-"""The records of a study in its folder: a header line, then one ``{"index": i, "record": {...}}`` a line."""
+"""The records of a study in its folder: a header line, then one ``{"index": i, "record": {...}, "hash": h}`` a
+line (:func:`record_problem`)."""
 
 
 class RecordFile:
@@ -347,13 +348,14 @@ def _check_row_problem(cid, row):
 
 
 def record_problem(item, samples) -> Optional[str]:
-    """Why a line's JSON value ``item`` is not ``{"index": i, "record": {...}}`` of one of ``samples`` samples as
-    :func:`evaluate_sample` writes it (None where it is): the index, the record's keys, the status and message, each
-    check's entry (a finite margin or null, agreeing with passed; the flags true or false; a severity of
-    :data:`valvetrain.checks.SEVERITIES`) and each valve's headlines (a finite number or null).  A record that fails
-    is designed again, never trusted."""
-    if not isinstance(item, dict) or set(item) != {"index", "record"}:
-        return "not {\"index\": i, \"record\": {...}}"
+    """Why a line's JSON value ``item`` is not ``{"index": i, "record": {...}, "hash": h}`` of one of ``samples``
+    samples as :func:`evaluate_sample` and :class:`RecordFile` write it (None where it is): the index, the record's
+    keys, the status and message, each check's entry (a finite margin or null, agreeing with passed; the flags true
+    or false; a severity of :data:`valvetrain.checks.SEVERITIES`), each valve's headlines (a finite number or null),
+    and the line's hash of its index and record (a change of any value: a flag flipped where no margin tells).  A
+    record that fails is designed again, never trusted."""
+    if not isinstance(item, dict) or set(item) != {"index", "record", "hash"}:
+        return "not {\"index\": i, \"record\": {...}, \"hash\": ...}"
     index, record = item["index"], item["record"]
     if type(index) is not int or not 0 <= index < samples:
         return f"index {str(index)[:20]}: allowed a whole number 0 ... {samples - 1}"
@@ -372,11 +374,19 @@ def record_problem(item, samples) -> Optional[str]:
     for valve, h in headlines.items():
         if not isinstance(h, dict) or set(h) != HEADLINE_KEYS or not all(v is None or _number(v) for v in h.values()):
             return f"the record of sample {index}: the headlines of {str(valve)[:40]!r} are not those of a valve"
+    if item["hash"] != _digest(index, record):
+        return f"the record of sample {index} was changed after it was written (its hash does not match)"
     return None
 
 
+def _digest(index, record) -> str:
+    """The hash a record's line carries: of its index and record as canonical JSON (sorted keys), hex."""
+    text = json.dumps({"index": index, "record": record}, sort_keys=True, allow_nan=False)
+    return hashlib.sha256(text.encode("utf-8")).hexdigest()
+
+
 def _line(index, record):
-    return json.dumps({"index": index, "record": record}, allow_nan=False) + "\n"
+    return json.dumps({"index": index, "record": record, "hash": _digest(index, record)}, allow_nan=False) + "\n"
 
 
 def wilson(failures, n, z=CONFIDENCE_Z) -> tuple[float, float]:
