@@ -191,6 +191,8 @@ def handles(document, spec, name, series) -> list[Handle]:
     out = []
     if valve.get("max_lift_mm") is not None:
         out.append(Handle("nose", "lift", 0.0, _interp(series, "valve_lift_mm", 0.0)))
+    if not spec.valves[name].cam.needs_timing:
+        return out   # a measured table from its file: its own lift and timing, no shape to drag
     half = main_half_angle_deg(spec.valves[name], spec.engine.strokes)
     for key, x in _shape_points(cam, half, series["segments_cam_deg"]):
         out.append(Handle(key, "acceleration", x, _interp(series, "valve_acceleration_m_s2", x)))
