@@ -265,8 +265,10 @@ def test_a_ramp_on_a_hydraulic_train_is_refused_naming_its_key(path, change, key
     with pytest.raises(SpecError) as err:
         run(parse_spec(text))
     words = str(err.value)
-    assert f"{key}: its ramp takes up a mechanical clearance" in words
+    assert f"{key}: its ramp takes up a clearance, which a lash_adjuster leaves none of" in words
     assert "allowed [0.01, 5] mm" not in words
+    # the fuzzer's bound on a message (issue 36: 324 characters for the built-in example's Kurz cam)
+    assert all(len(line) <= 300 for line in words.splitlines())
 
 
 def test_a_float_the_plunger_follows_is_a_failure_below_the_over_speed(floating, rigid):
@@ -382,7 +384,7 @@ def ramped_exhaust(ramp_height, dynamics="speeds = 4\nspeed_range_rpm = [1000.0,
 @pytest.mark.parametrize("height, words", [
     (0.1, "valves.exhaust.lash_adjuster.ramp_height_mm = 0.1: allowed (0, 0.05] mm"),
     (0.0, "valves.exhaust.lash_adjuster.ramp_height_mm = 0.0: allowed (0, 0.05] mm"),
-    (None, "valves.exhaust.cam.ramp = true: its ramp takes up a mechanical clearance"),
+    (None, "valves.exhaust.cam.ramp = true: its ramp takes up a clearance, which a lash_adjuster leaves none of"),
 ])
 def test_a_quieting_ramp_beyond_its_band_is_refused(height, words):
     with pytest.raises(SpecError) as err:
