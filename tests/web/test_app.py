@@ -68,6 +68,15 @@ def test_serve_refuses_a_specification_that_does_not_validate(refused):
     assert "error: engine.bore_mm = 3.0: allowed [5, 2000] mm" in refused(text, "serve")
 
 
+def test_serve_refuses_a_specification_without_valves(refused):
+    """Issue 36's fuzzer: `valvetrain serve examples/v8-crank.toml` (an engine without valves) started, then answered
+    its page with HTTP 500 (a KeyError: the designer edits valves); refused at the start, exit status 2."""
+    from pathlib import Path
+
+    text = (Path(__file__).parents[2] / "examples" / "v8-crank.toml").read_text(encoding="utf-8")
+    assert "error: valves: the designer edits the valves' cams; the file defines none" in refused(text, "serve")
+
+
 def test_serve_on_a_port_in_use_is_one_line():
     """Issue 36: `valvetrain serve` on a port another program listens on printed an OSError traceback; it says so in one
     line naming the port, exit status 2."""

@@ -474,12 +474,15 @@ class Session:
         Raises
         ------
         SpecError
-            The text is no specification, or one that does not design.
+            The text is no specification, one without valves, or one that does not design.
         """
         try:
             document = tomllib.loads(text if text is not None else example_text())
         except tomllib.TOMLDecodeError as exc:
             raise SpecError([f"not valid TOML: {exc}"]) from None
+        if not document.get("valves"):
+            raise SpecError(["valves: the designer edits the valves' cams; the file defines none (add a "
+                             "[valves.NAME] section)"])
         if source_dir is not None:
             document["source_dir"] = str(source_dir)
         s = cls(document)
