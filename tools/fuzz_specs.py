@@ -1374,7 +1374,8 @@ def _negative_magnitudes(name, summary):
 
 def _unfailed(results):
     """Physically impossible designs that must be graded failures: an undercut profile, a spring whose coils touch
-    before full lift, a follower separating below over_speed_ratio x the rated speed."""
+    before full lift, a follower separating below over_speed_ratio x the rated speed, a finger's pad off the valve
+    tip, a camshaft twisted by more than 10 cam deg."""
     out = []
     engine = results.spec.engine
     failing = {(c.valve, c.code) for c in results.checks if c.severity == "failure" and not c.passed}
@@ -1388,12 +1389,26 @@ def _unfailed(results):
                 and not any(valve == name and code.startswith("spring.") for valve, code in failing):
             out.append(("coil bind not a failure", f"valves.{name}.spring.min_pitch_mm = {spring['min_pitch_mm']:.6g} "
                                                    f"<= wire_mm = {spring['wire_mm']:.6g} without a failing check"))
+        finger = s["cam"].get("finger")
+        if finger and not any(valve == name and code == "finger.tip_contact" for valve, code in failing):
+            spec_valve = results.spec.valves[name]
+            stem = spec_valve.parts.stem_diameter_mm or 0.2 * spec_valve.throat_diameter_mm
+            if finger["tip_contact_max_mm"] > stem / 2.0:
+                out.append(("finger pad off the valve tip not a failure",
+                            f"valves.{name}.cam.finger.tip_contact_max_mm = {finger['tip_contact_max_mm']:.6g} beyond "
+                            f"the tip's radius {stem / 2.0:.6g} mm without a failing check"))
         jump = (s.get("dynamics") or {}).get("jump_speed_rpm")
         if jump is not None and jump < engine.over_speed_ratio * engine.rated_speed_rpm * (1.0 - 1e-9) \
                 and (name, "dynamics.jump_speed") not in failing:
             out.append(("separation below the over-speed not a failure",
                         f"valves.{name}.dynamics.jump_speed_rpm = {jump:.6g} below over_speed_ratio x rated = "
                         f"{engine.over_speed_ratio * engine.rated_speed_rpm:.6g} rpm without a failing check"))
+    shaft = results.camshaft
+    if shaft is not None and shaft.figures.twist_max > math.radians(10.0) and not any(
+            code == "camshaft.twist_timing_error" for _, code in failing):
+        out.append(("camshaft twist beyond 10 cam deg not a failure",
+                    f"camshaft.largest_twist_cam_deg = {math.degrees(shaft.figures.twist_max):.6g} without a failing "
+                    "check"))
     return out
 
 
@@ -1703,8 +1718,12 @@ def _serve_finding(proc, stderr, what):
     """A traceback printed by the server process (its standard error), as a finding, or None."""
     if "Traceback (most recent call last)" not in stderr:
         return None
-    last = [line for line in stderr.splitlines() if line and not line.startswith((" ", "Traceback"))]
-    return "traceback", f"serve: {what}: {_message_key(last[-1]) if last else 'a traceback'}", [_clip(stderr[-1500:])]
+    lines = stderr.splitlines()
+    error = next((line for line in reversed(lines) if re.match(r"\w+(Error|Exception)\b", line)), "a traceback")
+    frame = next((line.strip() for line in reversed(lines) if "/valvetrain/" in line and line.strip().startswith(
+        "File")), "")
+    return ("traceback", f"serve: {what}: {_message_key(error)}",
+            [_clip(error), _clip(frame.replace(str(Path(valvetrain.__file__).parent), "valvetrain"))])
 
 
 def run_serve_case(case, bases, timeout=60.0):
@@ -1734,8 +1753,10 @@ def run_serve_case(case, bases, timeout=60.0):
                 "bad_host": ["--host", "no.such.host.invalid", "--port", "0"]}[serve["mode"]]
         env = {**os.environ, "PYTHONPATH": os.pathsep.join(filter(None, [str(Path(valvetrain.__file__).parents[1]),
                                                                          os.environ.get("PYTHONPATH")]))}
+        # Ctrl-C's default action in the server, even where this process ignores SIGINT (started in the background)
         proc = subprocess.Popen([sys.executable, "-u", "-m", "valvetrain", "serve", str(spec_file), "--no-show", *args],
-                                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env, cwd=tmp)
+                                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env, cwd=tmp,
+                                preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
         try:
             url, deadline = None, time.monotonic() + timeout
             while url is None and time.monotonic() < deadline:
