@@ -157,10 +157,9 @@ class PivotedFollower(RollerFollower):
         radius = np.hypot(*self.centre(psi))
         if not np.all(np.diff(radius) > 0.0):
             return ("finger_valve_angle_deg", f"{np.degrees(self.valve_angle):g}",
-                    "with the finger's geometry (finger_pivot_x_mm, finger_pivot_y_mm, finger_roller_arm_mm, "
-                    "finger_pad_arm_mm, finger_pad_drop_mm, finger_valve_angle_deg) the valve opens only if the roller "
+                    "the finger's geometry (its pivot, arms, pad and valve angle) opens the valve only if the roller "
                     f"centre moves from {radius[0] * 1e3:.4g} to {radius[-1] * 1e3:.4g} mm from the cam centre, not "
-                    "steadily outwards: the cam cannot push it open", ": ")
+                    "steadily outwards: no cam can push it open", ": ")
         ratio = self.lever_ratio(psi)
         if not np.all(ratio > 0.0):
             return ("finger_pivot_x_mm", f"{self.pivot_x * 1e3:g}",
