@@ -100,6 +100,9 @@ def test_results_json_has_the_chapter_and_its_checks(pushrod):
     ("section_diameters_mm = [25.0]", "camshaft: section_diameters_mm has 1 entries"),
     ("drive_stiffness_N_per_mm = 5.0", "camshaft.drive_stiffness_N_per_mm = 5.0: allowed [10, 1e+07] N/mm"),
     ("sprocket_inertia_kg_mm2 = -1.0", "camshaft.sprocket_inertia_kg_mm2 = -1.0: allowed [0, 1e+07] kg mm2"),
+    # issue 36: a wall of 0.5 um made a twist of 282 cam deg, graded a warning
+    ("section_bores_mm = [24.999, 31.999]", "camshaft: section_bores_mm[0] = 24.999: allowed at most 22.5, 0.9 x "
+                                            "section_diameters_mm[0] (a wall of at least 0.05 x the diameter); 1 more"),
 ])
 def test_bad_sections_are_refused_naming_the_key(extra, words):
     key = extra.split(" = ")[0]
@@ -140,6 +143,28 @@ def test_one_lobe_on_a_compliant_timing_drive_against_a_hand_calculation(pushrod
     a, b, c = js * j1, js * k1 + j1 * (kt + k1), kt * k1
     w = np.sqrt((b + np.array([-1.0, 1.0]) * np.sqrt(b * b - 4 * a * c)) / (2 * a))
     assert np.asarray(f.natural_frequencies) == pytest.approx(w / (2 * np.pi), rel=1e-8)
+
+
+def test_the_thinnest_wall_allowed_is_a_twentieth_of_the_diameter():
+    spec = with_shaft(appendix_text() + "", cylinders="cylinders = [1]\nsection_bores_mm = [22.5, 28.8]")
+    assert spec.camshaft.section_bores_mm == [22.5, 28.8]
+
+
+def test_a_twist_beyond_ten_cam_degrees_is_a_failure(pushrod):
+    """Issue 36: a twist of 282 cam deg was graded a warning.  One lobe of the pushrod example on a chain of 10 N/mm
+    at r_p = 60 mm: the lobe lags by (1 / k_t + c_1) T, k_t = 1e4 x 0.06^2 = 36 N m/rad (c_1 = 1.18352e-5 rad/(N m)
+    as in test_one_lobe_on_a_compliant_timing_drive_against_a_hand_calculation), beyond 10 cam deg: a failure; the
+    example's own twist, below its 0.5 cam deg, stays a (passing) warning."""
+    spec = pushrod.spec.replace({"camshaft.cylinders": [1], "camshaft.cylinder_positions_mm": [65.0],
+                                 "camshaft.drive_stiffness_N_per_mm": 10.0})
+    design = run(spec)
+    f = design.camshaft.figures
+    hand = (1.0 / 36.0 + 1.18352e-5) * max(f.peak, -f.lowest)
+    assert f.max_twist[0] == pytest.approx(hand, rel=1e-5) and np.degrees(hand) > 10.0
+    (twist,) = [c for c in design.checks if c.code == "camshaft.twist_timing_error"]
+    assert twist.severity == "failure" and not twist.passed
+    (own,) = [c for c in pushrod.checks if c.code == "camshaft.twist_timing_error"]
+    assert own.severity == "warning" and own.passed
 
 
 @pytest.fixture(scope="module")

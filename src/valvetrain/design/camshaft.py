@@ -359,6 +359,12 @@ def response_record(c, speeds, fluctuation, drive_forces, omega_n, orders, ratio
                              tuple(sorted(found, key=lambda r: -r.fluctuation)), TORSION_TABLE)
 
 
+TWIST_FAILURE = np.radians(10.0)
+"""A camshaft twist beyond which its check is a failure, not a warning [rad, camshaft]: 10 cam deg (20 crank deg), the
+largest ``max_twist_cam_deg`` allows, an engineering limit: valve events that far from their timing are no longer
+the engine's (and a shaft that twists so far elastically is far past its yield)."""
+
+
 def camshaft_checks(r, c, engine) -> list[Check]:
     """The camshaft's checks: the timing error of the twist, the torsional resonance margin, the bending deflection
     at the lobes and the timing drive's load, at the rated speed; the torsional response over the running range.
@@ -366,13 +372,13 @@ def camshaft_checks(r, c, engine) -> list[Check]:
     Notes
     -----
     The limits of the quasi-static twist (``max_twist_cam_deg``) and of the frequency ratio (``min_frequency_ratio``)
-    are engineering assumptions, keys with bounded defaults: no published camshaft limit was found.  The frequency
-    ratio is information: a resonance inside the running range is graded by its response, the fluctuation of each
-    lobe's timing (against the movement of the cam sprocket against the crankshaft a maker accepts in service,
-    ``max_timing_play_mm`` along the pitch circle: 3.175 mm, Chrysler (2002)) and the largest force of the timing
-    drive, each a failure above its allowable.  The allowable of the timing drive is the maker's
-    (``drive_allowable_force_N``); for a roller chain the working load is commonly at most 1/6 of its tensile
-    strength (Diamond Chain (n.d.)).
+    are engineering assumptions, keys with bounded defaults: no published camshaft limit was found; a twist beyond
+    :data:`TWIST_FAILURE` is a failure. The frequency ratio is information: a resonance inside the running range is
+    graded by its response, the fluctuation of each lobe's timing (against the movement of the cam sprocket against
+    the crankshaft a maker accepts in service, ``max_timing_play_mm`` along the pitch circle: 3.175 mm, Chrysler
+    (2002)) and the largest force of the timing drive, each a failure above its allowable. The allowable of the
+    timing drive is the maker's (``drive_allowable_force_N``); for a roller chain the working load is commonly at
+    most 1/6 of its tensile strength (Diamond Chain (n.d.)).
     """
     over = to_display(engine.over_speed_ratio * engine.rated_speed, "rpm")
     held = "the drive end held" if c.drive_stiffness is None else "through the timing drive's stiffness"
@@ -381,9 +387,10 @@ def camshaft_checks(r, c, engine) -> list[Check]:
                "assumption)")
     chain_source = f"; {cite('diamondchain')}" if c.drive == "chain" else ""
     return [
-        check("camshaft.twist_timing_error", r.twist_max, high=c.max_twist, unit="cam deg", severity="warning",
+        check("camshaft.twist_timing_error", r.twist_max, high=c.max_twist, unit="cam deg",
+              severity="failure" if r.twist_max > TWIST_FAILURE else "warning",
               source=f"{cite('shigley2011', 'chapter 3 (torsion)')}; camshaft.max_twist_cam_deg (an engineering "
-                     "assumption)",
+                     f"assumption; beyond {np.degrees(TWIST_FAILURE):g} cam deg a failure)",
               note=f"{to_display(r.twist_crank, 'crank deg'):.3g} crank deg; quasi-static, {held}"),
         check("camshaft.torsional_resonance", r.frequency_ratio, low=c.min_frequency_ratio, severity="info",
               source=f"{cite('denhartog1956')}; camshaft.min_frequency_ratio (an engineering assumption)",

@@ -417,13 +417,21 @@ def adjuster_ratio(valve, law) -> float:
 
 def adjuster_load(valve, law, drive, cam_speed: float, at: str) -> tuple[float, float]:
     """The lash adjuster's motion ratio and :func:`adjuster_reference_force` [N], refused where the adjuster cannot
-    work: a motion ratio <= 0 (at the pivot of a lever ratio <= 1), or a largest force on it no more than its own push
+    work: a motion ratio <= 0 (at the pivot of a lever ratio <= 1, or of a finger whose linkage along the adjuster's
+    axis moves the valve against the plunger, the message naming that axis), or a largest force on it no more than its own push
     F_s + p_s A, which would hold the valve open and leave the oil column uncompressed (no finite stiffness)."""
     la = valve.lash_adjuster
     ratio = adjuster_ratio(valve, law)
-    if ratio <= 0.0:
+    if ratio <= 0.0 and not follower_of(valve.cam).law_at_valve:
         raise SpecError([Problem(f"{at}.lash_adjuster.location", "needs a lever ratio > 1 (an end-pivot finger): "
                                  f"rocker_ratio x the follower's own = {lever_ratio(valve, law):.4g}", '"pivot"', " ")])
+    if ratio <= 0.0:   # a finger's linkage along the adjuster's axis: its lever ratio alone does not decide
+        linkage = (f"the finger's linkage on the heel circle moves the valve by {ratio:.4g} x the plunger's extension "
+                   f"along the adjuster's axis (lever ratio {lever_ratio(valve, law):.4g}); allowed a motion ratio > 0")
+        if la.axis_angle is None:
+            raise SpecError([Problem(f"{at}.lash_adjuster.location", f"{linkage} (the axis is the valve's: "
+                                     "axis_angle_deg not given)", '"pivot"')])
+        raise SpecError([Problem(f"{at}.lash_adjuster.axis_angle_deg", linkage, f"{math.degrees(la.axis_angle):g}")])
     force = adjuster_reference_force(valve, law, drive, cam_speed, ratio)
     supply = la.supply_pressure * hla.plunger_area(la.plunger_diameter)
     if force <= la.plunger_spring_N + supply:
@@ -510,7 +518,8 @@ def finger_mass(follower, inertia, heel, top, node, rest=0.0, offset=0.0,
         The heel radius of the cam [m].
     top : float
         The law's largest lift (lift and ramp) [m]: the table runs from :data:`FINGER_MASS_BELOW` below the shut
-        valve to 1.5 x ``top``, at most halfway from ``top`` to the pad's reach (where G -> 0).
+        valve, at most halfway to the pad's reach below it (:meth:`~valvetrain.followers.PivotedFollower.reach_below`,
+        where G -> 0), to 1.5 x ``top``, at most halfway from ``top`` to the pad's reach (where G -> 0).
     node : str
         The node's name.
     rest : float
@@ -534,7 +543,7 @@ def finger_mass(follower, inertia, heel, top, node, rest=0.0, offset=0.0,
     Norton (2009), the chapter on the dynamics of follower trains.
     """
     high = min(1.5 * top, top + 0.5 * (follower.reach(heel) - top))
-    h = np.linspace(-FINGER_MASS_BELOW, high, points)
+    h = np.linspace(-min(FINGER_MASS_BELOW, 0.5 * follower.reach_below(heel)), high, points)
     return VariableMass(node, h - offset, rest + follower.reduced_inertia(inertia, heel, h),
                         follower.reduced_inertia_slope(inertia, heel, h))
 
@@ -878,6 +887,9 @@ CHECK_CODES = ("dynamics.seating_velocity", "dynamics.jump_speed", "dynamics.val
 CLOSED = "the valve does not leave its seat at the rated speed"
 """Why the seating velocity of a valve that stays on its seat cannot be had."""
 
+SEATING_NOTE = "the largest of the rated speed and the speeds swept below it: "
+"""What the seating velocity check grades, before the speed where it is largest (its note)."""
+
 
 def worst_seating(d, engine) -> tuple[float, float]:
     """The largest |seating velocity| [m/s] of the rated speed and of the speeds swept up to it, and its engine speed
@@ -914,8 +926,9 @@ def dynamics_checks(d, engine, adjuster_ratio=0.0) -> list[Check]:
                                                   f"{to_display(top, 'rpm'):.0f} rpm")
     opened = float(d.rated.lift.max()) > BOUNCE_TOLERANCE
     seating, where = worst_seating(d, engine)
-    at = (f"largest at {to_display(where, 'rpm'):.0f} rpm; {abs(d.at_rated_speed.seating_velocity):.3g} m/s at the "
-          "rated speed" if where < engine.rated_speed * (1 - 1e-9) else "")
+    at = "" if not np.isfinite(where) else SEATING_NOTE + (
+        f"at {to_display(where, 'rpm'):.0f} rpm; {abs(d.at_rated_speed.seating_velocity):.3g} m/s at the rated speed"
+        if where < engine.rated_speed * (1 - 1e-9) else "at the rated speed")
     return [check(CHECK_CODES[0], seating, high=SEATING_VELOCITY_MAX, unit="m/s", note=at,
                   source=CHECK_SOURCE + "; 0.3-0.5 m/s usual, graded at every speed swept up to the rated one",
                   unevaluated="" if opened else CLOSED),

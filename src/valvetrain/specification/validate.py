@@ -33,6 +33,10 @@ def _valve_problems(name, v, engine):
     if v.throat_diameter_mm >= engine.bore_mm:
         out.append(Problem(f"{at}.throat_diameter_mm", f"must be smaller than engine.bore_mm = {engine.bore_mm:g}",
                            f"{v.throat_diameter_mm:g}", " "))
+    stem = v.parts.stem_diameter_mm
+    if stem is not None and stem >= v.throat_diameter_mm:
+        out.append(Problem(f"{at}.parts.stem_diameter_mm", f"must be smaller than throat_diameter_mm = "
+                           f"{v.throat_diameter_mm:g}", f"{stem:g}", " "))
     if v.cam.base_radius_mm <= v.clearance_mm:
         out.append(Problem(f"{at}.cam.base_radius_mm", f"must exceed clearance_mm = {v.clearance_mm:g}",
                            f"{v.cam.base_radius_mm:g}", " "))

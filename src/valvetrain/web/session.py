@@ -191,6 +191,8 @@ def handles(document, spec, name, series) -> list[Handle]:
     out = []
     if valve.get("max_lift_mm") is not None:
         out.append(Handle("nose", "lift", 0.0, _interp(series, "valve_lift_mm", 0.0)))
+    if not spec.valves[name].cam.needs_timing:
+        return out   # a measured table from its file: its own lift and timing, no shape to drag
     half = main_half_angle_deg(spec.valves[name], spec.engine.strokes)
     for key, x in _shape_points(cam, half, series["segments_cam_deg"]):
         out.append(Handle(key, "acceleration", x, _interp(series, "valve_acceleration_m_s2", x)))
@@ -472,12 +474,15 @@ class Session:
         Raises
         ------
         SpecError
-            The text is no specification, or one that does not design.
+            The text is no specification, one without valves, or one that does not design.
         """
         try:
             document = tomllib.loads(text if text is not None else example_text())
         except tomllib.TOMLDecodeError as exc:
             raise SpecError([f"not valid TOML: {exc}"]) from None
+        if not document.get("valves"):
+            raise SpecError(["valves: the designer edits the valves' cams; the file defines none (add a "
+                             "[valves.NAME] section)"])
         if source_dir is not None:
             document["source_dir"] = str(source_dir)
         s = cls(document)
