@@ -21,6 +21,16 @@ def spec12():
     return law, one_mass_train(0.25, 15e6, 67.5e3, 400.0, 1.5, 0.3e-3, damping_ratio=0.05)
 
 
+def appendix_train():
+    """The built-in example's intake train, rounded (M = 0.138 kg, c = 12930 N/mm, K = 66.5 N/mm, F0 = 274.5 N, k =
+    1.6, lash 0.4 mm, zeta 0.05, the default seat), on the Kurz cam of the appendix of Valve-train practical works
+    (n.d.) (tests/conftest.py): (law, train).  Its valve bounces 1-2.5 um off its seat from 5331 engine rpm and leaves
+    its cam at 7953 rpm."""
+    from conftest import seed000_law
+
+    return seed000_law(), one_mass_train(0.138, 1.293e7, 66.5e3, 274.5, 1.6, 0.4e-3)
+
+
 def one_mass_rhs(law, train, omega, mass=None):
     """The one-mass train's equations of motion as scipy's ``rhs(t, (y, y_dot))``, at camshaft angle omega t - pi from
     the nose: M y_ddot = F_c - (F_0 + K y) + F_s with the contact F_c = max(0, c delta + C delta_dot) where delta =
@@ -62,3 +72,49 @@ def seat_crossings(law, train, omega, revolutions=1, steps_per_revolution=7200):
     sol = solve_ivp(rhs, (0, revolutions * period), [-train.preload / train.seat_stiffness, 0.0], method="DOP853",
                     rtol=1e-10, atol=1e-14, max_step=period / steps_per_revolution, events=seat)
     return sol.t_events[0], sol.y_events[0]
+
+
+def reference_events(law, train, omega, revolutions=1, steps_per_revolution=360, points=40001):
+    """The events of the last of ``revolutions`` camshaft revolutions from rest on the seat, by DOP853 (rtol 1e-10,
+    atol 1e-14, the largest step one revolution / ``steps_per_revolution``), its crossings of y = 0 and of dy/dt = 0
+    located by the event finder.
+
+    Returns
+    -------
+    dict
+        ``seating_velocity``: dy/dt at the first downward crossing of y = 0 after the largest lift [m/s];
+        ``bounce_height``: the largest lift after it, at a located dy/dt = 0 or at the end of the revolution, not below
+        0 [m]; ``min_force``: the smallest of k (c delta + C d(delta)/dt) (the contact law at the cam without its clamp
+        at zero: negative once the valve has left the cam) where the cam lifts the open valve before that seating, on
+        ``points`` angles of the lift [N] (the zero of this signed force in the speed is the jump speed).
+    """
+    rhs = one_mass_rhs(law, train, omega)
+
+    def seat(t, s):
+        return s[0]
+
+    def top(t, s):
+        return s[1]
+
+    seat.direction, top.direction = -1, -1
+    period = 2 * np.pi / omega
+    sol = solve_ivp(rhs, (0, revolutions * period), [-train.preload / train.seat_stiffness, 0.0], method="DOP853",
+                    rtol=1e-10, atol=1e-14, max_step=period / steps_per_revolution, events=(seat, top),
+                    dense_output=True)
+    start = (revolutions - 1) * period
+    tops, lifts = sol.t_events[1], sol.y_events[1][:, 0]
+    lifts, tops = lifts[tops >= start], tops[tops >= start]
+    highest = tops[np.argmax(lifts)]
+    seats = sol.t_events[0] > highest
+    landing, velocity = sol.t_events[0][seats][0], sol.y_events[0][seats][0, 1]
+    after = lifts[tops > landing]
+    height = max(after.max() if after.size else 0.0, float(sol.sol(revolutions * period)[0]), 0.0)
+    k = train.rocker_ratio
+    t = np.linspace(start, landing, points)
+    y, v = sol.sol(t)
+    d = law.derivatives((omega * t) % (2 * np.pi) - np.pi)[:2] * k
+    delta = d[0] - train.lash - y
+    lifting = (d[0] - train.lash > 0.0) & (y > 0.0)
+    force = train.stiffness * delta + train.damping * (omega * d[1] - v)
+    return {"seating_velocity": float(velocity), "bounce_height": float(height),
+            "min_force": float(k * force[lifting].min())}
