@@ -10,10 +10,10 @@ import pytest
 
 from valvetrain.dynamics.models import one_mass_train
 from valvetrain.dynamics.perturbation import kinetostatic_force, perturbation_parameter, quasi_static_lift
-from valvetrain.dynamics.sweep import headline_sweep, runs, seating, simulate, sweep
+from valvetrain.dynamics.sweep import bounces, headline_sweep, runs, seating, simulate, sweep
 from valvetrain.laws import KurzLaw
 
-from reference_dynamics import RPM, seat_crossings, spec12
+from reference_dynamics import RPM, appendix_train, reference_events, seat_crossings, spec12
 
 
 def test_quasi_static_limit():
@@ -290,3 +290,17 @@ def test_bounce_onset_does_not_move_with_the_step():
                     for step in (0.1, 0.05))
     assert np.isfinite(coarse) and speeds[0] < coarse < speeds[-1]
     assert abs(coarse - fine) < 0.1 * (speeds[1] - speeds[0])
+
+
+def test_the_bounce_height_is_the_peak_between_the_samples():
+    """The appendix train of tests/reference_dynamics.py at 5554 engine rpm, recorded every 1 cam deg (integrated as at
+    0.5: the sub-steps keep the time step): its bounce of 1.58 um is within 3 % of DOP853's (its largest lift after
+    the first seating, located by the event finder, reference_dynamics.reference_events) as the peak of the cubic
+    Hermite of the lift and the velocity between the samples; the largest sample, the former bounce height, misses
+    it by 39 %."""
+    law, train = appendix_train()
+    omega = 5554 * np.pi / 60
+    reference = reference_events(law, train, omega)["bounce_height"]
+    r = sweep(law, train, [omega], step_deg=1.0)
+    assert r.events.bounce_height[0] == pytest.approx(reference, rel=0.03)
+    assert bounces(r.lift, r.events.seating_index, r.bounce_tolerance)[0][0] < 0.7 * reference
