@@ -396,7 +396,8 @@ def test_the_seating_velocity_is_graded_at_its_largest_up_to_the_rated_speed():
     states it (scipy solve_ivp, Radau, rtol 1e-10, each contact state a smooth segment ended by its events, the law
     tabulated every 0.002 cam deg), -0.516732 m/s at 6485 rpm and -0.542411 m/s at 7698 rpm; the speeds above the
     rated one are left to the separation check, so the graded value stays below the latter.  A valve that opens but
-    does not seat at the rated speed stays an unevaluated failure, whatever the lower speeds do."""
+    does not seat at the rated speed stays an unevaluated failure, whatever the lower speeds do.  Its jump speed lies
+    below the speed whose contact force first touches zero."""
     d = run(load_spec(EXAMPLES / "pushrod-dynamics.toml")).valves["intake"]
     seat = [c for c in d.checks if c.code == "dynamics.seating_velocity"]
     assert len(seat) == 1 and seat[0].severity == "warning" and not seat[0].passed
@@ -410,3 +411,8 @@ def test_the_seating_velocity_is_graded_at_its_largest_up_to_the_rated_speed():
     found = dynamics_checks(unseated, si(load_spec(EXAMPLES / "pushrod-dynamics.toml").engine))[0]
     assert (found.code, found.severity, found.passed) == ("dynamics.seating_velocity", "failure", False)
     assert np.isnan(found.value), "no seating at the rated speed stays unevaluated whatever the lower speeds do"
+    # at 7900.5 rpm the contact force touches zero without a separation (the speeds above separate): the jump speed is
+    # fitted through the speeds below it (through its clamped 0 as well, the fit put the jump at 7900.5 rpm itself)
+    at = int(np.argmin(np.abs(np.asarray(per.speed) * 30 / np.pi - 7900.5)))
+    assert per.min_contact_force[at] == 0.0 and not per.jump[at] and per.jump[at + 1]
+    assert per.speed[at - 1] < d.dynamics.jump_speed < per.speed[at] - 0.1 * np.pi / 30

@@ -467,6 +467,19 @@ def sweep_events(result) -> SweepEvents:
                        lowest_lifting_force(result.contact_force, kinematic, lift, jumped, event))
 
 
+def force_reached_zero(events) -> np.ndarray:
+    """Of every speed of :class:`SweepEvents`: whether the smallest contact force while the cam lifts has reached
+    zero, with a separation or without (a force that touches zero, which the contact law clamps there, an instant
+    before the valve would rise above the cam: the speeds above separate).
+
+    >>> e = SweepEvents(*([np.zeros(3)] * 5), np.array([False, False, True]), *([np.zeros(3)] * 2),
+    ...                 np.array([26.7, 0.0, 0.0]))
+    >>> force_reached_zero(e).tolist()
+    [False, True, True]
+    """
+    return events.jumped | (events.min_contact_force <= 0.0)
+
+
 def zero_crossing(speeds, values, hit) -> float:
     """The speed where a quantity reaches its limit, interpolated between the speeds of a sweep.
 
@@ -613,7 +626,8 @@ class SweepResult:
         -------
         dict
             ``jump_speed``: the camshaft speed [rad/s] where the smallest contact force while the cam lifts
-            (:func:`lowest_lifting_force`) reaches zero, interpolated between the speeds (:func:`zero_crossing`);
+            (:func:`lowest_lifting_force`) reaches zero, interpolated between the speeds (:func:`zero_crossing`)
+            through those below the first whose force has reached it (:func:`force_reached_zero`);
             ``bounce_onset_speed``: where the bounce height (continuous in the speed) first exceeds the bounce
             tolerance, linear between the speeds (nan if none): unlike the first speed with a counted bounce, it
             does not move with the angle step; ``max_seating_velocity``: the largest |dy/dt| at seating [m/s] and
@@ -624,7 +638,7 @@ class SweepResult:
         seat = np.abs(events.seating_velocity)
         clash = self.cam_speeds[self.clash_margin < 0.0]
         worst = int(np.nanargmax(seat)) if np.isfinite(seat).any() else None
-        return {"jump_speed": zero_crossing(self.cam_speeds, events.min_contact_force, events.jumped),
+        return {"jump_speed": zero_crossing(self.cam_speeds, events.min_contact_force, force_reached_zero(events)),
                 "bounce_onset_speed": level_crossing(self.cam_speeds, events.bounce_height, self.bounce_tolerance),
                 "max_seating_velocity": float(seat[worst]) if worst is not None else np.nan,
                 "max_seating_velocity_speed": float(self.cam_speeds[worst]) if worst is not None else np.nan,
