@@ -2,6 +2,8 @@
 on the same equations of motion, written out here from the model's definition (Shang Hanji (1988), section 3.1), not
 from the package's kernel.  The tests and benchmarks/accuracy_dynamics.py use it."""
 
+from types import SimpleNamespace
+
 import numpy as np
 from scipy.integrate import solve_ivp
 
@@ -118,3 +120,14 @@ def reference_events(law, train, omega, revolutions=1, steps_per_revolution=360,
     force = train.stiffness * delta + train.damping * (omega * d[1] - v)
     return {"seating_velocity": float(velocity), "bounce_height": float(height),
             "min_force": float(k * force[lifting].min())}
+
+
+def harmonic_cam(lift, half_angle):
+    """A harmonic (1 - cos) cam: h = L/2 (1 + cos(pi theta / phi)) for |theta| < phi, 0 on the base circle."""
+    def derivatives(theta):
+        on = np.abs(theta) < half_angle
+        w = np.pi / half_angle
+        return np.array([np.where(on, 0.5 * lift * (1 + np.cos(w * theta)), 0.0),
+                         np.where(on, -0.5 * lift * w * np.sin(w * theta), 0.0),
+                         np.where(on, -0.5 * lift * w * w * np.cos(w * theta), 0.0)])
+    return SimpleNamespace(derivatives=derivatives)

@@ -683,7 +683,7 @@ def sweep_size(network, cam_speeds, revolutions, step_deg) -> tuple[int, int]:
 
 
 def sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, progress=None, bounce_tolerance=BOUNCE_TOLERANCE,
-          tolerance=STATE_TOLERANCE) -> SweepResult:
+          tolerance=STATE_TOLERANCE, halvings=0) -> SweepResult:
     """Simulate an elastic train on a lift law at every camshaft speed of a sweep.
 
     Parameters
@@ -708,6 +708,10 @@ def sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, progress=None, bo
     tolerance : float
         Largest change of the state over a revolution at which a speed repeats [m] (:data:`STATE_TOLERANCE`; a
         negative value runs every speed for ``revolutions``).
+    halvings : int
+        Halve the step this many times: the recording step is ``step_deg`` / 2^halvings and each speed keeps the
+        sub-steps of ``step_deg``, so that its time step halves with each (the error estimates of
+        :func:`.accuracy.refine`).
 
     Returns
     -------
@@ -718,11 +722,12 @@ def sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, progress=None, bo
     steps = int(round(360.0 / step_deg))
     if not np.isclose(steps * step_deg, 360.0, rtol=0, atol=1e-9):
         raise ValueError(f"the step {step_deg} deg does not divide the camshaft revolution")
-    if revolutions < 1 or np.any(speeds <= 0.0):
-        raise ValueError("sweep: at least one revolution and positive camshaft speeds are needed")
-    dtheta = 2.0 * np.pi / steps
+    if revolutions < 1 or np.any(speeds <= 0.0) or halvings < 0:
+        raise ValueError("sweep: at least one revolution, positive camshaft speeds and no negative halvings are needed")
     rate = net.highest_frequency()
-    n_sub = substeps(rate, speeds, dtheta)
+    n_sub = substeps(rate, speeds, 2.0 * np.pi / steps)
+    steps *= 2**halvings
+    dtheta = 2.0 * np.pi / steps
     per_step = 2 * int(n_sub.max())
     theta, u, du = cam_excitation(law, net.rocker_ratio, steps, per_step)
     rec_nodes = np.array([net.valve], dtype=np.int64)
