@@ -1,11 +1,13 @@
 """The one-mass train's worked example (spec sections 2, 8 and 12) and an independent reference for it: scipy's DOP853
 on the same equations of motion, written out here from the model's definition (Shang Hanji (1988), section 3.1), not
-from the package's kernel.  The tests and benchmarks/accuracy_dynamics.py use it."""
+from the package's kernel; and the closed-form jump speed of a harmonic cam.  The tests and
+benchmarks/accuracy_dynamics.py use them."""
 
 from types import SimpleNamespace
 
 import numpy as np
 from scipy.integrate import solve_ivp
+from scipy.optimize import brentq
 
 from valvetrain.dynamics.models import one_mass_train
 from valvetrain.laws import DynamicLaw
@@ -131,3 +133,28 @@ def harmonic_cam(lift, half_angle):
                          np.where(on, -0.5 * lift * w * np.sin(w * theta), 0.0),
                          np.where(on, -0.5 * lift * w * w * np.cos(w * theta), 0.0)])
     return SimpleNamespace(derivatives=derivatives)
+
+
+def harmonic_jump_speed(lift, half_angle, train):
+    """The jump speed [rad/s camshaft] of a one-mass train (no lash, rocker ratio 1) on a harmonic cam
+    h = L/2 (1 + cos(pi theta / phi)) for |theta| < phi, in closed form.
+
+    While the cam carries the valve, M y'' + C y' + (c + K) y = c h + C h' - F0, a linear oscillator driven by the
+    constant L/2 and the harmonic (L/2) cos(Omega t) of frequency Omega = pi omega / phi.  Its steady response is
+    y = y_bar + (L/2) Re(G e^(i Omega t)) with y_bar = (c L/2 - F0) / (c + K) and G = (c + i Omega C) /
+    (c + K - M Omega^2 + i Omega C), so the contact force F = F0 + K y + M y'' = F0 + K y_bar + (L/2) Re((K - M Omega^2)
+    G e^(i Omega t)) is least, over the lift's whole period of the harmonic, at F0 + K y_bar - (L/2) |K - M Omega^2| |G|;
+    the jump speed is its zero (solved by brentq to 1e-14).  The free vibration started as the valve leaves its
+    seat, which this leaves out, has decayed by exp(-C t / 2M) at the nose, t = phi / omega: to below 1e-6 on the
+    trains of the tests (the rigid drive, c -> oo, gives sqrt(2 (F0 + K L) / (M L (pi / phi)^2)); Den Hartog (1956), the forced
+    vibration of a damped system of one degree of freedom)."""
+    m, c, damping, rate, preload = train.mass, train.stiffness, train.damping, train.spring_rate, train.preload
+
+    def least(omega):
+        w = np.pi * omega / half_angle
+        gain = (c + 1j * w * damping) / (c + rate - m * w**2 + 1j * w * damping)
+        mean = (c * lift / 2 - preload) / (c + rate)
+        return preload + rate * mean - lift / 2 * abs(rate - m * w**2) * abs(gain)
+
+    rigid = np.sqrt(2 * (preload + rate * lift) / (m * lift * (np.pi / half_angle) ** 2))
+    return brentq(least, 0.5 * rigid, 1.5 * rigid, xtol=1e-14 * rigid)
