@@ -261,15 +261,18 @@ def sweep(file, out, valves, force, lang) -> None:
 
 
 def _headline(d):
-    """One line of a sweep's headline numbers (engine rpm)."""
+    """One line of a sweep's headline numbers (engine rpm), the crossing speeds with their estimated errors."""
     from .units import to_display
 
-    def rpm(x):
-        return "none in the range" if x != x else f"{to_display(x, 'rpm'):.0f} rpm"
+    def rpm(x, error=None):
+        if x != x:
+            return "none in the range"
+        return f"{to_display(x, 'rpm'):.0f}" + ("" if error is None or error != error else
+                                                f" ± {to_display(error, 'rpm'):.2g}") + " rpm"
 
-    r = d.at_rated_speed
-    return (f"jump {rpm(d.jump_speed)}, bounce onset {rpm(d.bounce_speed)}, max seating velocity "
-            f"{d.max_seating_velocity:.3g} m/s at {rpm(d.max_seating_velocity_speed)}; at the rated {rpm(r.speed)}: "
+    r, a = d.at_rated_speed, d.accuracy
+    return (f"jump {rpm(d.jump_speed, a.jump_speed)}, bounce onset {rpm(d.bounce_speed, a.bounce_speed)}, max seating "
+            f"velocity {d.max_seating_velocity:.3g} m/s at {rpm(d.max_seating_velocity_speed)}; at the rated {rpm(r.speed)}: "
             f"min contact force {r.min_contact_force:.4g} N, seating velocity {r.seating_velocity:.3g} m/s, bounce "
             f"{r.bounce * 1e3:.3g} mm")
 

@@ -98,7 +98,9 @@ def test_stiff_slow_train_follows_the_kinematics():
 
 def test_results_contract_schema_and_estimates():
     """results.json carries the contract keys, the schema accepts it; the omitted values are estimated and stated:
-    the camshaft and pushrod links from [parts], the rocker link assumed, c their series."""
+    the camshaft and pushrod links from [parts], the rocker link assumed, c their series; the jump speed's estimated
+    error is its two parts', on 3 speeds 3500 rpm apart mostly the speed grid's (the refinement stops at its work
+    bound, 8 times the sweep's, before the interpolation between speeds so far apart settles)."""
     r = run(spec(FEW + "speed_range_rpm = [2000.0, 9000.0]\n"))
     rec = json.loads(results_json(r))
     jsonschema.validate(rec, results_schema())
@@ -109,6 +111,11 @@ def test_results_contract_schema_and_estimates():
     for key in ("min_contact_force_N", "seating_velocity_m_s", "bounce_mm", "max_lift_error_mm",
                 "jump_intervals_cam_deg"):
         assert key in d["at_rated_speed"]
+    a = d["accuracy"]
+    assert a["jump_speed_rpm"] == pytest.approx(a["jump_speed_step_rpm"] + a["jump_speed_grid_rpm"])
+    assert 0.0 < a["jump_speed_step_rpm"] < a["jump_speed_grid_rpm"] < 3500.0 and 0.0 < a["finest_step_cam_deg"] < 0.5
+    # the refined events are the per-speed table's too: its largest |seating velocity| is the headline's
+    assert max(abs(v) for v in d["per_speed"]["seating_velocity_m_s"] if v is not None) == d["max_seating_velocity_m_s"]
     p = d["parameters"]
     assert p["link_names"] == ["camshaft and cam contact", "pushrod", "rocker and valve joint"]
     assert p["link_stiffnesses_N_per_mm"][2] == 45000.0
@@ -154,7 +161,7 @@ def test_multi_needs_the_part_masses():
 
 def test_run_writes_chapter_csv_and_plots(tmp_path):
     """`run` with the section: the CSV has one row per speed, the plots exist, the report has the chapter (and its
-    Russian one); the user-facing text cites the works, not internal tags."""
+    Russian one) with the headlines' estimated errors; the user-facing text cites the works, not internal tags."""
     r = run(spec("model = \"multi\"\ncoils_per_spring = 4\n" + FEW))
     out = write_outputs(r, tmp_path / "out", "en", figures="all")
     rows = list(csv.DictReader(open(out / "tables" / "intake_dynamics.csv", encoding="utf-8")))
@@ -167,8 +174,10 @@ def test_run_writes_chapter_csv_and_plots(tmp_path):
     chapter = html[html.index("7. Valve-train dynamics"):html.index("Lift table (every")]
     chapter = re.sub(r"data:image/png;base64,[A-Za-z0-9+/=]+", "", chapter)  # the figures' bytes are no text
     assert "seed" not in chapter.lower() and "spec section" not in chapter.lower()
+    assert "Estimated discretisation errors" in chapter and "of it: interpolation between the speeds, rpm" in chapter
     ru = write_outputs(r, tmp_path / "ru", "ru")
-    assert "Динамика механизма газораспределения" in (ru / "report.html").read_text(encoding="utf-8")
+    text = (ru / "report.html").read_text(encoding="utf-8")
+    assert "Динамика механизма газораспределения" in text and "Оценка погрешности дискретизации" in text
 
 
 def write_spec(tmp_path, dynamics):
@@ -402,12 +411,20 @@ def test_a_valve_the_cam_cannot_lift_off_its_seat_fails_naming_the_reason():
 def test_the_per_speed_records_at_once_are_each_speeds_own(dynamics):
     """The stage's per-speed records, made over the speeds at once (speed_records, SweepResult.events), are those
     speed_record makes of each speed's own SpeedResult (SweepResult.speed): every field, one-mass and multi-mass (coil
-    surge and clash margin), bit for bit (nan where a speed has no separation, no seating or no monitored clash)."""
+    surge and clash margin), bit for bit (nan where a speed has no separation, no seating or no monitored clash); but
+    the events of the speeds that decide the headlines, which are those of their refined step (the refinement's)."""
     from valvetrain.design.dynamics import speed_record
 
     d = run(spec(dynamics)).valves["intake"].dynamics
     r = d.records
     each = [speed_record(d.sweep.speed(i), s, e) for i, (s, e) in enumerate(zip(r.speed, r.epsilon, strict=True))]
+    fine, events = d.refinement.halvings > 0, d.refinement.events
+    assert fine.any() and not fine.all()
+    each = [x if not f else replace(x, min_contact_force=events.min_contact_force[i],
+                                    seating_velocity=events.seating_velocity[i], bounce=events.bounce_height[i],
+                                    bounce_count=events.bounce_count[i], jump_intervals=(
+                                        ((events.jump_from[i], events.jump_to[i]),) if events.jumped[i] else ()))
+            for i, (x, f) in enumerate(zip(each, fine, strict=True))]
     for name in ("min_contact_force", "max_contact_force", "seating_velocity", "bounce", "bounce_count",
                  "max_lift_error", "revolutions"):
         np.testing.assert_array_equal(getattr(r, name), [getattr(x, name) for x in each], err_msg=name)
@@ -462,7 +479,8 @@ def test_the_seating_velocity_is_graded_at_its_largest_up_to_the_rated_speed():
     states it (scipy solve_ivp, Radau, rtol 1e-10, each contact state a smooth segment ended by its events, the law
     tabulated every 0.002 cam deg), -0.516732 m/s at 6485 rpm and -0.542411 m/s at 7698 rpm; the speeds above the
     rated one are left to the separation check, so the graded value stays below the latter.  A valve that opens but
-    does not seat at the rated speed stays an unevaluated failure, whatever the lower speeds do."""
+    does not seat at the rated speed stays an unevaluated failure, whatever the lower speeds do.  Its jump speed lies
+    below the speed whose contact force first touches zero."""
     d = run(load_spec(EXAMPLES / "pushrod-dynamics.toml")).valves["intake"]
     seat = [c for c in d.checks if c.code == "dynamics.seating_velocity"]
     assert len(seat) == 1 and seat[0].severity == "warning" and not seat[0].passed
@@ -477,3 +495,8 @@ def test_the_seating_velocity_is_graded_at_its_largest_up_to_the_rated_speed():
     found = dynamics_checks(unseated, si(load_spec(EXAMPLES / "pushrod-dynamics.toml").engine))[0]
     assert (found.code, found.severity, found.passed) == ("dynamics.seating_velocity", "failure", False)
     assert np.isnan(found.value), "no seating at the rated speed stays unevaluated whatever the lower speeds do"
+    # at 7900.5 rpm the contact force touches zero without a separation (the speeds above separate): the jump speed is
+    # fitted through the speeds below it (through its clamped 0 as well, the fit put the jump at 7900.5 rpm itself)
+    at = int(np.argmin(np.abs(np.asarray(per.speed) * 30 / np.pi - 7900.5)))
+    assert per.min_contact_force[at] == 0.0 and not per.jump[at] and per.jump[at + 1]
+    assert per.speed[at - 1] < d.dynamics.jump_speed < per.speed[at] - 0.1 * np.pi / 30

@@ -3,8 +3,9 @@
 The stage builds a one-mass or a multi-mass train (:mod:`valvetrain.dynamics.models`) from the
 valve's design (the reduced mass, the designed spring, the lash the ramp takes up, the part
 masses and geometry of the specification), sweeps it over the engine speeds
-(:func:`valvetrain.dynamics.sweep.sweep`), simulates the rated speed, and adds the resonance
-analysis of the cam's harmonics (:mod:`valvetrain.dynamics.resonance`).  Every value the
+(:func:`valvetrain.dynamics.sweep.sweep`), simulates the rated speed, refines the headline numbers
+at the speeds that decide them and estimates their errors (:func:`valvetrain.dynamics.accuracy.refine`), and adds
+the resonance analysis of the cam's harmonics (:mod:`valvetrain.dynamics.resonance`).  Every value the
 specification leaves out is estimated and the estimate stated in ``parameters.estimates``.
 
 Speeds in the results are engine (crank) speeds; the camshaft of a four-stroke turns at half.
@@ -21,6 +22,7 @@ from ..checks import Check, check
 from ..dynamics.models import (Adjuster, CoilSpring, MultiMassTrain, OneMassTrain, VariableMass, camshaft_stiffness,
                                coil_spring, direct_train, natural_modes, one_mass_train, pushrod_stiffness,
                                pushrod_train, rocker_train, series, slowest_decay)
+from ..dynamics.accuracy import MAX_HALVINGS, Refinement, refine
 from ..dynamics.perturbation import perturbation_parameter
 from ..dynamics.resonance import resonance
 from ..dynamics.sweep import (BOUNCE_TOLERANCE, STATE_TOLERANCE, SpeedResult, SweepResult, headline_sweep, sweep,
@@ -159,10 +161,12 @@ class SpeedRecords:
     revolutions: np.ndarray = _like("revolutions")
 
 
-def speed_records(result, speeds, epsilon) -> SpeedRecords:
+def speed_records(result, speeds, epsilon, events=None) -> SpeedRecords:
     """The :class:`SpeedRecords` of a :class:`~valvetrain.dynamics.sweep.SweepResult` at engine speeds [rad/s] (S,)
-    with the perturbation parameters (S,): :func:`speed_record` of every speed, over the speeds at once."""
-    events = result.events
+    with the perturbation parameters (S,): :func:`speed_record` of every speed, over the speeds at once; its events
+    ``events`` (:class:`~valvetrain.dynamics.sweep.SweepEvents`, those refined at the speeds that decide the headlines,
+    :class:`~valvetrain.dynamics.accuracy.Refinement`), else the sweep's own."""
+    events = result.events if events is None else events
     surge = result.surge_amplitude.max(axis=1) if result.surge_amplitude.shape[1] else None
     error = result.lift_error
     np.abs(error, out=error)     # in place: a map of speeds x angles
@@ -212,6 +216,31 @@ class Mode:
 
 
 @dataclass(frozen=True)
+class AccuracyRecord:
+    """Estimated discretisation errors of the headline numbers: the speeds that decide each simulated again at halved
+    steps until it settles (:func:`~valvetrain.dynamics.accuracy.refine`)."""
+
+    jump_speed: float = quantity("jump_speed_rpm", "rpm", "of the jump speed, its two parts together (null: no "
+                                 "separation)")
+    jump_speed_step: float = quantity("jump_speed_step_rpm", "rpm", "time step: the jump speed's change at the last "
+                                      "halving of the step")
+    jump_speed_grid: float = quantity("jump_speed_grid_rpm", "rpm", "speed grid: its change by a speed simulated where "
+                                      "it is interpolated between the speeds swept")
+    bounce_speed: float = quantity("bounce_speed_rpm", "rpm", "of the bounce onset speed, its two parts together "
+                                   "(null: no bounce)")
+    bounce_speed_step: float = quantity("bounce_speed_step_rpm", "rpm", "time step: its change at the last halving")
+    bounce_speed_grid: float = quantity("bounce_speed_grid_rpm", "rpm", "speed grid: its change by a speed simulated "
+                                        "where it is interpolated")
+    max_seating_velocity: float = quantity("max_seating_velocity_m_s", "m/s", "of the largest |seating velocity|: its "
+                                           "change at the last halving of the step")
+    rated_seating_velocity: float = quantity("rated_seating_velocity_m_s", "m/s", "of the seating velocity at the rated "
+                                             "speed")
+    rated_bounce: float = quantity("rated_bounce_mm", "mm", "of the bounce height at the rated speed")
+    step: float = quantity("finest_step_cam_deg", "cam deg", "the finest step a headline was refined to (the sweep's "
+                           "step halved at most " + str(MAX_HALVINGS) + " times)")
+
+
+@dataclass(frozen=True)
 class DynamicsResult:
     """The dynamics stage: the train, the headline numbers of the sweep, the rated speed and the resonance."""
 
@@ -220,12 +249,15 @@ class DynamicsResult:
     speed_range: tuple[float, ...] = quantity("speed_range_rpm", "rpm", "engine speeds swept, from and to")
     speeds: int = quantity("speeds", label="speeds swept")
     jump_speed: float = quantity("jump_speed_rpm", "rpm", "engine speed where the smallest contact force while the "
-                                 "cam lifts reaches 0, interpolated between the speeds swept (null: no follower "
-                                 "separation in the range)")
+                                 "cam lifts reaches 0, interpolated between the speeds swept and checked by one "
+                                 "simulated between, the speeds about it at a halved step until it settles (its "
+                                 "estimated error: accuracy; null: no follower separation in the range)")
     bounce_speed: float = quantity("bounce_speed_rpm", "rpm", "engine speed where the bounce height first exceeds "
-                                   "1 um, interpolated between the speeds swept (null: none)")
+                                   "1 um, interpolated between the speeds swept and refined as the jump speed (null: "
+                                   "none)")
     max_seating_velocity: float = quantity("max_seating_velocity_m_s", "m/s", "largest |seating velocity| of the "
-                                           "sweep (null: the valve seats at no speed)")
+                                           "sweep, the speeds near it at a halved step until it settles (null: the "
+                                           "valve seats at no speed)")
     max_seating_velocity_speed: float = quantity("max_seating_velocity_speed_rpm", "rpm", "where it occurs (null: "
                                                  "the same)")
     coil_clash_speed: Optional[float] = quantity("coil_clash_speed_rpm", "rpm", "multi: lowest speed whose coils "
@@ -242,13 +274,17 @@ class DynamicsResult:
                                      "revolutions key (the last revolution recorded)")
     unsettled_note: Optional[str] = quantity("unsettled_note", label="why those speeds did not repeat (null: every "
                                              "speed repeated)", omit_none=True)
+    accuracy: AccuracyRecord = quantity("accuracy", label="estimated discretisation errors of the headline numbers "
+                                        "and of the rated speed's seating")
     at_rated_speed: SpeedRecord = quantity("at_rated_speed")
     resonance: ResonanceRecord = quantity("resonance")
-    per_speed: PerSpeed = quantity("per_speed")
+    per_speed: PerSpeed = quantity("per_speed", label="one entry per speed swept; the speeds that decide the headline "
+                                   "numbers have the events of their finest step")
     sweep_table: str = quantity("sweep_table", label="CSV with one row per speed, relative to the output folder")
     sweep: Optional[SweepResult] = field(default=None, repr=False, compare=False)
     records: Optional[SpeedRecords] = field(default=None, repr=False, compare=False)    # every speed
     rated: Optional[SpeedResult] = field(default=None, repr=False, compare=False)      # at the rated speed
+    refinement: Optional[Refinement] = field(default=None, repr=False, compare=False)  # the headlines refined
 
 
 def _link_estimates(valve, k):
@@ -788,11 +824,13 @@ def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, 
         if progress is not None:
             progress(0, dyn.speeds)
         result = sweep(law, train, speeds * to_cam, revs, step_deg, progress=progress)
-    rated = sweep(law, train, [engine.rated_speed * to_cam], revs, step_deg).speed(0)
+    rated_sweep = sweep(law, train, [engine.rated_speed * to_cam], revs, step_deg)
+    rated = rated_sweep.speed(0)
+    refined = refine(law, train, result, revs, step_deg, seating_top=engine.rated_speed * to_cam, extra=rated_sweep)
     m, c, kk = params.mass, params.drive_stiffness, params.spring_rate
     eps = perturbation_parameter(m, c, kk, speeds * to_cam)
-    per = speed_records(result, speeds, eps)
-    head = result.headline()
+    per = speed_records(result, speeds, eps, refined.events)
+    head = refined.headline
     res = resonance(law, engine.rated_speed * to_cam, m, kk, c, valve.rocker_ratio)
     reson = ResonanceRecord(res.omega0 / (2 * np.pi), res.order, res.force, res.amplitude, 100 * res.distortion,
                             tuple(int(o) for o in res.orders), tuple(100 * float(d) for d in res.spectrum_distortion))
@@ -809,7 +847,15 @@ def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, 
         return float(cam_speed / to_cam)
 
     eps_rated = float(perturbation_parameter(m, c, kk, engine.rated_speed * to_cam))
-    rated_record = speed_record(rated, engine.rated_speed, eps_rated)
+    fine = refined.extra
+    rated_record = replace(speed_record(rated, engine.rated_speed, eps_rated),
+                           seating_velocity=float(fine.seating_velocity[0]), bounce=float(fine.bounce_height[0]),
+                           bounce_count=int(fine.bounce_count[0]))
+    a = refined.accuracy
+    accuracy = AccuracyRecord(crank(a.jump_speed), crank(a.jump_speed_step), crank(a.jump_speed_grid),
+                              crank(a.bounce_onset), crank(a.bounce_onset_step), crank(a.bounce_onset_grid),
+                              a.max_seating_velocity, float(refined.extra_seating_error[0]),
+                              float(refined.extra_bounce_error[0]), a.step)
     if cam is not None:
         rated_record = replace(rated_record, **rated_contact(rated, law, cam.heel_radius, cam.follower_model,
                                                              valve.parts.cam_width, valve.parts.contact_modulus))
@@ -819,8 +865,8 @@ def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, 
         crank(head["coil_clash_speed"]) if dyn.model == "multi" else None, eps_rated,
         modes[0].frequency, tuple(mode.frequency for mode in modes), modes,
         int(result.revolutions.max()), int(np.count_nonzero(~result.converged)),
-        unsettled_note(result, speeds, net, revs, train.adjuster is not None), rated_record, reson, table,
-        f"tables/{name}_dynamics.csv", result, per, rated)
+        unsettled_note(result, speeds, net, revs, train.adjuster is not None), accuracy, rated_record, reson, table,
+        f"tables/{name}_dynamics.csv", result, per, rated, refined)
     return out, dynamics_checks(out, engine, 0.0 if train.adjuster is None else train.adjuster.motion_ratio)
 
 

@@ -383,11 +383,11 @@ def _except(result, *names):
 
 def _dynamics(d):
     """The dynamics chapter of a valve from its :class:`~valvetrain.design.dynamics.DynamicsResult`: headline rows,
-    the train, the estimates, the rated speed, resonance."""
+    their estimated errors, the train, the estimates, the rated speed, resonance."""
     if d is None:
         return None
     p, res = d.parameters, d.resonance
-    return {"headline": _present(d, *DYNAMICS_HEADLINE),
+    return {"headline": _present(d, *DYNAMICS_HEADLINE), "accuracy": _present(d.accuracy),
             "parameters": _present(p, *_except(p, "estimates", "node_masses")),
             "nodes": [] if p.node_masses is None else list(shown_value(p, "node_masses").items()),
             "estimates": p.estimates, "rated": _present(d.at_rated_speed),

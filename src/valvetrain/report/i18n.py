@@ -124,7 +124,8 @@ TEXT = {
         "dyn_chapter": "7. Valve-train dynamics: the elastic train over the speed range",
         "dyn_method": "Valve-side coordinates; unilateral cam contact with the lash as a gap, a unilateral stiff damped "
                       "seat; fixed-step integration in camshaft angle, every speed from rest over {revolutions} camshaft "
-                      "revolutions, the last one recorded. Jump: the cam force is zero while the cam lifts the open "
+                      "revolutions, the last one recorded; the speeds that decide the headline numbers simulated again "
+                      "at halved steps until each number settles, the last change its estimated error. Jump: the cam force is zero while the cam lifts the open "
                       "valve; bounce: the valve leaves its seat again after the first seating. Resonance: the "
                       "harmonic k of the cam excitation nearest below the natural frequency, its elastic amplitude "
                       "and the distortion δ of the valve motion. At the rated speed the Hertz stress (Shang Hanji "
@@ -135,6 +136,17 @@ TEXT = {
         "dyn_bounce": "bounce, mm", "dyn_min_force": "min contact force, N", "dyn_jump_speed": "jump (float) speed",
         "dyn_bounce_speed": "bounce onset", "dyn_rated": "rated speed",
         "dyn_title": "seating, bounce and contact force against speed", "dyn_headline": "Headline numbers",
+        "dyn_accuracy": "Estimated discretisation errors (±)",
+        "dyn_accuracy_names": {
+            "jump_speed_rpm": "jump speed, rpm", "jump_speed_step_rpm": "of it: time step, rpm",
+            "jump_speed_grid_rpm": "of it: interpolation between the speeds, rpm",
+            "bounce_speed_rpm": "bounce onset speed, rpm", "bounce_speed_step_rpm": "of it: time step, rpm",
+            "bounce_speed_grid_rpm": "of it: interpolation between the speeds, rpm",
+            "max_seating_velocity_m_s": "max seating velocity, m/s",
+            "rated_seating_velocity_m_s": "seating velocity at the rated speed, m/s",
+            "rated_bounce_mm": "bounce at the rated speed, mm",
+            "finest_step_cam_deg": "finest step taken, cam deg",
+        },
         "dyn_parameters": "The train simulated (at the valve)",
         "dyn_estimates": "Estimates: values the specification does not give",
         "dyn_rated_table": "At the rated speed", "dyn_resonance": "Resonant harmonic of the cam excitation at the rated speed",
@@ -303,7 +315,9 @@ TEXT = {
         "dyn_chapter": "7. Динамика механизма газораспределения: упругая модель в диапазоне частот вращения",
         "dyn_method": "Координаты приведены к клапану; односторонний контакт кулачка с зазором, односторонняя жёсткая "
                       "демпфированная посадка на седло; интегрирование с постоянным шагом по углу распредвала, каждая "
-                      "частота от покоя за {revolutions} оборота распредвала, записан последний. Отрыв: сила на "
+                      "частота от покоя за {revolutions} оборота распредвала, записан последний; частоты, от которых "
+                      "зависят основные результаты, пересчитываются с шагом, уменьшаемым вдвое, пока каждый результат "
+                      "не установится, последнее изменение — оценка его погрешности. Отрыв: сила на "
                       "кулачке равна нулю, когда кулачок поднимает открытый клапан; отскок: клапан снова отходит от "
                       "седла после первой посадки. Резонанс: гармоника k возбуждения от кулачка, ближайшая снизу к "
                       "собственной частоте, её упругая амплитуда и искажение δ движения клапана. При номинальной "
@@ -315,7 +329,20 @@ TEXT = {
         "dyn_bounce": "отскок, мм", "dyn_min_force": "мин. сила в контакте, Н", "dyn_jump_speed": "частота отрыва",
         "dyn_bounce_speed": "начало отскока", "dyn_rated": "номинальная частота",
         "dyn_title": "посадка, отскок и сила в контакте в зависимости от частоты вращения",
-        "dyn_headline": "Основные результаты", "dyn_parameters": "Расчётная модель (приведённая к клапану)",
+        "dyn_headline": "Основные результаты",
+        "dyn_accuracy": "Оценка погрешности дискретизации (±)",
+        "dyn_accuracy_names": {
+            "jump_speed_rpm": "частота отрыва, мин⁻¹", "jump_speed_step_rpm": "в том числе от шага интегрирования, мин⁻¹",
+            "jump_speed_grid_rpm": "в том числе от интерполяции между частотами, мин⁻¹",
+            "bounce_speed_rpm": "частота начала отскока, мин⁻¹",
+            "bounce_speed_step_rpm": "в том числе от шага интегрирования, мин⁻¹",
+            "bounce_speed_grid_rpm": "в том числе от интерполяции между частотами, мин⁻¹",
+            "max_seating_velocity_m_s": "наибольшая скорость посадки, м/с",
+            "rated_seating_velocity_m_s": "скорость посадки на номинальной частоте, м/с",
+            "rated_bounce_mm": "отскок на номинальной частоте, мм",
+            "finest_step_cam_deg": "наименьший шаг, ° ПРВ",
+        },
+        "dyn_parameters": "Расчётная модель (приведённая к клапану)",
         "dyn_estimates": "Оценки: величины, не заданные в исходных данных",
         "dyn_rated_table": "На номинальной частоте вращения",
         "dyn_resonance": "Резонансная гармоника возбуждения от кулачка на номинальной частоте",
