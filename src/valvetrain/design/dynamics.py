@@ -221,20 +221,21 @@ class AccuracyRecord:
     steps until it settles (:func:`~valvetrain.dynamics.accuracy.refine`)."""
 
     jump_speed: float = quantity("jump_speed_rpm", "rpm", "of the jump speed, its two parts together (null: no "
-                                 "separation)")
+                                 "separation, or not estimated: the refinement's work limit reached first)")
     jump_speed_step: float = quantity("jump_speed_step_rpm", "rpm", "time step: the jump speed's change at the last "
-                                      "halving of the step")
+                                      "halving of the step (null as jump_speed_rpm)")
     jump_speed_grid: float = quantity("jump_speed_grid_rpm", "rpm", "speed grid: its change by a speed simulated where "
-                                      "it is interpolated between the speeds swept")
+                                      "it is interpolated between the speeds swept (null as jump_speed_rpm)")
     bounce_speed: float = quantity("bounce_speed_rpm", "rpm", "of the bounce onset speed, its two parts together "
-                                   "(null: no bounce)")
-    bounce_speed_step: float = quantity("bounce_speed_step_rpm", "rpm", "time step: its change at the last halving")
+                                   "(null: no bounce, or not estimated: the refinement's work limit reached first)")
+    bounce_speed_step: float = quantity("bounce_speed_step_rpm", "rpm", "time step: its change at the last halving "
+                                        "(null as bounce_speed_rpm)")
     bounce_speed_grid: float = quantity("bounce_speed_grid_rpm", "rpm", "speed grid: its change by a speed simulated "
-                                        "where it is interpolated")
+                                        "where it is interpolated (null as bounce_speed_rpm)")
     max_seating_velocity: float = quantity("max_seating_velocity_m_s", "m/s", "of the largest |seating velocity|: its "
                                            "change at the last halving of the step")
     rated_seating_velocity: float = quantity("rated_seating_velocity_m_s", "m/s", "of the seating velocity at the rated "
-                                             "speed")
+                                             "speed (null: the valve does not seat there)")
     rated_bounce: float = quantity("rated_bounce_mm", "mm", "of the bounce height at the rated speed")
     step: float = quantity("finest_step_cam_deg", "cam deg", "the finest step a headline was refined to (the sweep's "
                            "step halved at most " + str(MAX_HALVINGS) + " times)")
