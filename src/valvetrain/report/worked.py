@@ -95,14 +95,15 @@ def time_area_lines(flow, cam, engine, count, lift_table, lang="en") -> list[dic
     Notes
     -----
     cm^3 / (mm^2 s) is m/s: the velocities need no factor.  The integral of h_v over the opening is the trapezoidal
-    sum of the lift table from the last closed row before the opening to the first closed row after it.
+    sum of the lift table from the last closed row before the opening to the first closed row after it (or the table's
+    first and last rows, where it holds the event alone: a measured lobe's table begins at its opening).
     """
     vh = shown_value(engine, "swept_volume")
     ta, v3, vvp, fullness, lift = (shown_value(flow, n) for n in ("time_area", "v3", "charge_velocity", "fullness",
                                                                   "valve_lift"))
     angle, h = np.asarray(lift_table["cam_deg"]), np.asarray(lift_table["valve_lift_mm"])
     opened = np.flatnonzero(h > 0.0)
-    start, end = opened[0] - 1, opened[-1] + 1
+    start, end = max(opened[0] - 1, 0), min(opened[-1] + 1, h.size - 1)    # a table may begin or end at the event
     area = float(np.trapezoid(h[start:end + 1], angle[start:end + 1]))
     event = (shown_value(cam, "valve_closes") - shown_value(cam, "valve_opens")) / 2.0
     return [
