@@ -46,8 +46,8 @@ from .valve import (THROAT_AREA_SHARE_RANGE, CamResult, ClearanceResult, FlowRes
                     clearance_stage, design_valve, flow_stage, law_stage, overlap_clearance_checks, profile_stage,
                     valve_checks, with_hydraulic)
 
-__all__ = ["DesignResults", "ValveDesign", "clearance_stage", "design_valve", "flow_stage", "law_stage", "profile_stage", "run",
-           "sweep_designs", "valve_checks"]
+__all__ = ["DesignResults", "ValveDesign", "breathing_view", "clearance_stage", "design_valve", "flow_stage", "law_stage",
+           "profile_stage", "run", "sweep_designs", "valve_checks"]
 
 
 @dataclass(frozen=True)
@@ -256,18 +256,23 @@ def run(spec, laws=None, progress=None, headlines_only=False, diagnose=True, mem
     return DesignResults(spec, engine_record(engine), valves, tuple(found), crank, ports, card, shaft, breathing)
 
 
-def _breathing(spec, engine, crank_view, valves, views):
-    """The breathing stage of a specification with [breathing]: its files read (a file that cannot be used is a
-    :class:`SpecError` naming its key), the crank's SI view (or None) for the rod, offset and Wiebe cycle."""
+def breathing_view(spec) -> Any:
+    """The SI view of a specification's [breathing] with its files read (a file that cannot be used is a
+    :class:`SpecError` naming its key)."""
     sides = {}
     for side in ("intake", "exhaust"):
         try:
             sides[side] = si(getattr(spec.breathing, side), spec)
         except BreathingFileError as exc:
             raise SpecError([Problem(f"breathing.{side}.{exc.key}", str(exc))]) from None
-    view = replace(si(spec.breathing.model_copy(update={"intake": None, "exhaust": None}), spec), **sides)
+    return replace(si(spec.breathing.model_copy(update={"intake": None, "exhaust": None}), spec), **sides)
+
+
+def _breathing(spec, engine, crank_view, valves, views):
+    """The breathing stage of a specification with [breathing] (:func:`breathing_view`), the crank's SI view (or
+    None) for the rod, offset and Wiebe cycle."""
     try:
-        return breathing_stage(view, engine, crank_view, valves, views)
+        return breathing_stage(breathing_view(spec), engine, crank_view, valves, views)
     except BreathingError as exc:
         raise SpecError([Problem("breathing", str(exc))]) from None
 

@@ -165,29 +165,52 @@ def breathing_records(engine, conditions, tolerance, max_cycles, curve=False) ->
     return tuple(out)
 
 
-def breathing_stage(b, engine, crank, valves, views) -> BreathingResults:
-    """Run the breathing chapter: ``b``, ``engine`` and ``crank`` are the SI views of [breathing], [engine] and
-    [crank] (or None), ``valves`` the designed valves and ``views`` their SI views; returns
-    :class:`BreathingResults`."""
-    described, words = breathing_engine(b, engine, crank, valves, views)
+def breathing_conditions(b) -> tuple[list[Condition], list[Condition]]:
+    """The physics' conditions of [breathing] ``b`` (its SI view): those of [[breathing.conditions]] and the speeds
+    of [breathing.curve], in order."""
     given = [condition_of(c, c.speed, b) for c in b.conditions]
     swept = [] if b.curve is None else [condition_of(b.curve, n, b) for n in curve_speeds(b.curve)]
+    return given, swept
+
+
+def breathe_conditions(described, b, given, swept) -> tuple[tuple[BreathingResult, ...], tuple[BreathingResult, ...]]:
+    """The breathing of ``described`` at the conditions ``given`` (each from the plenums' state) and along the curve
+    ``swept`` (each speed from the previous one's converged state) with the tolerance and the cycles of [breathing]
+    ``b``: what the chapter and a cam synthesis by the breathing compute alike.
+
+    Raises
+    ------
+    BreathingError
+        More work than :data:`~valvetrain.breathing.cycle.MAX_WORK` asked for (refused before it runs).
+    """
     asked = sum(work(described, c, b.max_cycles) for c in given + swept)
     if asked > MAX_WORK:
         raise BreathingError(f"{len(given)} conditions and {len(swept)} curve speeds at up to {b.max_cycles} cycles "
                              f"of the runners' cells (cell_mm = {b.cell / MM:g}) ask for {asked:.3g} cell-steps; "
                              f"allowed at most {MAX_WORK:.3g} (about half a minute): fewer conditions or curve points, "
                              "a coarser cell_mm, fewer max_cycles or higher speeds")
-    results = (breathing_records(described, given, b.cycle_tolerance, b.max_cycles)
-               + breathing_records(described, swept, b.cycle_tolerance, b.max_cycles, curve=True))
+    return (breathing_records(described, given, b.cycle_tolerance, b.max_cycles),
+            breathing_records(described, swept, b.cycle_tolerance, b.max_cycles, curve=True))
+
+
+def speed_mean(results, name) -> float:
+    """The mean of the figure ``name`` (``volumetric_efficiency``, ``torque``) over the breathing's results (every
+    condition and curve speed weighs the same): the objective of a cam synthesis by the breathing."""
+    return float(np.mean([getattr(r.figures, name) for r in results]))
+
+
+def breathing_stage(b, engine, crank, valves, views) -> BreathingResults:
+    """Run the breathing chapter: ``b``, ``engine`` and ``crank`` are the SI views of [breathing], [engine] and
+    [crank] (or None), ``valves`` the designed valves and ``views`` their SI views; returns
+    :class:`BreathingResults`."""
+    described, words = breathing_engine(b, engine, crank, valves, views)
+    conditions, curve = breathe_conditions(described, b, *breathing_conditions(b))
     found = [check("breathing.cycle_change", r.figures.cycle_change, high=b.cycle_tolerance,
                    source="the cycles repeat (Heywood (1988), chapter 14: a cycle simulation runs until its state "
                           "repeats)", params={"speed": f"{to_display(r.figures.speed, 'rpm'):.5g}"})
-             for r in results if not r.converged]
-    figures = BreathingSummary(b.mode, *words, tuple(r.figures for r in results[:len(given)]),
-                               tuple(r.figures for r in results[len(given):]))
-    return BreathingResults(described, results[:len(given)], results[len(given):], figures, tuple(found))
-
+             for r in conditions + curve if not r.converged]
+    figures = BreathingSummary(b.mode, *words, tuple(r.figures for r in conditions), tuple(r.figures for r in curve))
+    return BreathingResults(described, conditions, curve, figures, tuple(found))
 
 
 def cylinder_pressure(results, speed) -> CylinderPressure:
