@@ -11,6 +11,7 @@ from ..breathing import (BreathingError, CdTable, Condition, Cylinder, Engine, F
                          breathe)
 from ..breathing.cycle import MAX_WORK, BreathingRecord, BreathingResult, work
 from ..breathing.valves import DEFAULT_CD, default_areas, effective_areas
+from ..springs import gas_opening_force
 from ..checks import Check, check
 from ..units import MM, to_display
 from .hydraulic_actuation import CylinderPressure
@@ -222,3 +223,49 @@ def cylinder_pressure(results, speed) -> CylinderPressure:
     return CylinderPressure(chosen.columns.angle, chosen.columns.pressure,
                             f"the breathing's converged {results.figures.mode} cycle at {to_display(f.speed, 'rpm'):.5g} "
                             f"rpm, intake plenum {f.intake_pressure / 1e3:.5g} kPa")
+
+
+def gas_opening_load(results, kind, diameter) -> tuple[float, str]:
+    """The largest gas force that tends to open the closed valve of ``kind`` over the breathing's converged cycles,
+    and the words of where it comes from.
+
+    Parameters
+    ----------
+    results : BreathingResults
+    kind : {"intake", "exhaust"}
+    diameter : float
+        Throat diameter of the valve [m] (the area of :func:`valvetrain.springs.gas_opening_force`).
+
+    Returns
+    -------
+    (float, str)
+        f_g max(p_port - p_cyl, 0) [N] over every condition and curve speed and every crank angle at which the
+        side's valves are shut (their effective areas zero), p_port the pressure at that side's valves (the runner's
+        last cell, the plenum's without a runner), and the speed and crank angle where it is largest.
+
+    Notes
+    -----
+    The sources' closed-valve gas load (5.4) and (5.5) with the breathing's own pressures: the spring holds the
+    valve shut at every condition, so the largest of them is the load.
+
+    References
+    ----------
+    Valve-train practical works (n.d.), work 5, eqs. (5.4), (5.5).
+    """
+    best = None
+    for r in (*results.conditions, *results.curve):
+        c = r.columns
+        forward, reverse = getattr(results.engine, kind).areas(c.angle)
+        port = c.intake_port if kind == "intake" else c.exhaust_port
+        difference = np.where((forward == 0.0) & (reverse == 0.0), port - c.pressure, -np.inf)
+        i = int(np.argmax(difference))
+        if best is None or difference[i] > best[0]:
+            best = (difference[i], r, i)
+    _, r, i = best
+    c = r.columns
+    port = (c.intake_port if kind == "intake" else c.exhaust_port)[i]
+    force = gas_opening_force(diameter, port, c.pressure[i])
+    return force, (f"the breathing's converged {results.figures.mode} cycles: the largest (p_port - p_cyl) on the shut "
+                   f"valve, {port / 1e3:.4g} - {c.pressure[i] / 1e3:.4g} kPa at {to_display(r.figures.speed, 'rpm'):.5g} "
+                   f"rpm, {np.degrees(c.angle[i]):.4g} crank deg from the gas-exchange TDC (Valve-train practical works "
+                   f"(n.d.), eq. ({'5.5' if kind == 'intake' else '5.4'}))")
