@@ -281,8 +281,11 @@ def _headline(d):
 @click.argument("file", type=click.Path(dir_okay=False))
 @click.option("--out", "out", default="optimum", show_default=True, type=click.Path(), help=OUT_HELP)
 @click.option("--valve", default=None, metavar="NAME", help="The valve whose cam is optimised; default: the first.")
-@click.option("--objective", type=click.Choice(["fullness", "time_area"]), default="fullness", show_default=True,
-              help="Maximise the fullness of the valve lift diagram or the time-area of the whole opening.")
+@click.option("--objective", type=click.Choice(["fullness", "time_area", "volumetric_efficiency", "torque"]),
+              default="fullness", show_default=True,
+              help="Maximise the fullness of the valve lift diagram, the time-area of the whole opening, or the "
+                   "breathing's volumetric efficiency or torque (fired), the mean over the conditions and curve speeds "
+                   "of the file's [breathing] section.")
 @click.option("--vary", "vary", multiple=True, metavar="KEY=LOW,HIGH",
               help="A numeric key under [valves.NAME] and its bounds (repeatable), e.g. cam.phi1_deg=20,35 or "
                    "drive.spring_reserve=1.5,2.25; default: the law's own variables.")
@@ -307,7 +310,8 @@ def _headline(d):
 @click.option("--force", is_flag=True, help=FORCE_HELP)
 def optimize(file, out, valve, objective, vary, no_jump, cam_width, seating_velocity, wheel_radius, seed, maxiter,
              lang, force) -> None:
-    """Maximise the fullness or time-area of a valve's cam of FILE under its limits and write the optimum to --out.
+    """Maximise the fullness, time-area or breathing of a valve's cam of FILE under its limits and write the optimum
+    to --out.
 
     Varies the law's parameters (Kurz: phi1, phi2, Z; constant acceleration: phi1, phi2, kappa; polydyne: the
     exponents; combined: the ratios; each with the ramp end velocity and the spring reserve K_z; the power
@@ -317,7 +321,9 @@ def optimize(file, out, valve, objective, vary, no_jump, cam_width, seating_velo
     standstill to the over-speed), the pressure angle (30 deg) and the grinding wheel of a roller follower, the ramp
     end velocity band, the seating velocity with --seating-velocity, and no jump up to --no-jump x the rated speed
     (UkrSURT Proceedings (2019); Shang Hanji (1988), section 4.3 and chapter 3). The optimum is the best point
-    evaluated whose full design meets every limit, the start included. Writes optimum.toml (a specification that
+    evaluated whose full design meets every limit, the start included. A breathing objective (a file with
+    [breathing], the valve's side lifted by the designed valves) converges the breathing's cycles at each of its
+    speeds per point, with no local polish, and its cycles must repeat at the optimum. Writes optimum.toml (a specification that
     valvetrain run accepts), optimization.json, comparison.csv, history.csv, history.png and report.html; where no
     point meets every limit, writes nothing, names the limits that fail and exits 1."""
     from .export import json_text, write_csv

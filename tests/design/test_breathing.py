@@ -148,3 +148,31 @@ def test_what_the_boundary_fuzzer_found():
         run(validate(doc))
     records = run(validate(_tcc3_document(breathing__compression_ratio=1.001))).to_dict()["breathing"]["conditions"]
     assert all("exhaust_temperature_K" not in r and np.isfinite(r["air_mass_flow_g_s"]) for r in records)
+
+
+def test_the_spring_gas_load_reads_the_breathing_pressure():
+    """With [breathing] each spring's closed-valve gas load (Valve-train practical works (n.d.), eqs. 5.4, 5.5) is
+    f_g (p_port - p_cyl) from the breathing's pressures, not [gas]'s.  Hand check from the chapter's own per-degree
+    table (tables/breathing_curve_N.csv): throttled to 40 kPa, the exhaust valve, shut from its closing 34 deg after
+    the gas-exchange TDC to its opening 70 deg before BDC (540 - 70 = 470 deg, the example's timing), holds the exhaust
+    port's 105 kPa against the intake stroke's cylinder pressure; the largest difference on the shut degrees of the
+    table, times pi d_g^2 / 4 (d_g = 34 mm), is the spring's gas load within the table's degree step.  The intake
+    valve, its port at 40 kPa, is never pushed open by the cylinder: 0 N."""
+    doc = spec_document(example_spec())
+    doc["breathing"] = {"wall_temperature_C": 150.0,
+                        "conditions": [{"speed_rpm": 3000.0, "intake_pressure_kPa": 40.0,
+                                        "intake_temperature_C": 25.0, "exhaust_pressure_kPa": 105.0}]}
+    spec = validate(doc)
+    assert (spec.valves["exhaust"].closes_deg, spec.valves["exhaust"].opens_deg) == (34.0, 70.0)
+    assert spec.valves["exhaust"].throat_diameter_mm == 34.0
+    results = run(spec)
+    table = breathing_columns(results.breathing.conditions[0])
+    deg = table["crank_deg"]
+    shut = (deg > 34.0 + 2.0) & (deg < 470.0 - 2.0)     # clear of the ramps' first and last flow
+    by_hand = np.max((table["exhaust_port_kPa"] - table["pressure_kPa"])[shut]) * 1e3 * np.pi * 0.034**2 / 4
+    spring = results.valves["exhaust"].drive.spring
+    assert spring.gas_force == pytest.approx(by_hand, rel=1e-3)
+    assert spring.gas_force > 2.0 * np.pi * 0.034**2 / 4 * (0.106e6 - 0.085e6)   # [gas]'s assumed 0.106 - 0.085 MPa
+    assert spring.gas_force_source.startswith("the breathing's converged motored cycles: the largest (p_port - p_cyl)")
+    assert results.valves["intake"].drive.spring.gas_force == 0.0
+    assert results.to_dict()["valves"]["exhaust"]["spring"]["gas_force_N"] == pytest.approx(spring.gas_force)

@@ -29,7 +29,8 @@ from ..specification import Spec, SpecError, crank_geometry, si, spec_document, 
 from ..specification.messages import Problem
 from ..specification.models import Dynamics
 from ..units import MM, to_display
-from .breathing import BreathingResults, BreathingSummary, breathing_stage, cylinder_pressure
+from .breathing import (BreathingResults, BreathingSummary, breathing_stage, cylinder_pressure,
+                        gas_opening_load)
 from .camcard import CamCard, CamCardValve, cam_card_stage
 from .camshaft import CamshaftRecord, CamshaftResults, camshaft_stage
 from .crank import (LAMBDA_RANGE, CrankResults, CrankSummary, crank_geometry as crank_geometry_of, crank_stage,
@@ -37,7 +38,7 @@ from .crank import (LAMBDA_RANGE, CrankResults, CrankSummary, crank_geometry as 
 from .drive import MassResult, SpringResult, StrengthResult
 from .dynamics import DynamicsResult
 from .grinding import GrindingResult
-from .hydraulic_actuation import CylinderPressure, HydraulicResult
+from .hydraulic_actuation import CylinderPressure, HydraulicResult, speed_plan
 from .lash_adjuster import LashAdjusterResult
 from .lubrication import LubricationResult
 from .results import json_schema, quantity, record, shown_value
@@ -46,8 +47,8 @@ from .valve import (THROAT_AREA_SHARE_RANGE, CamResult, ClearanceResult, FlowRes
                     clearance_stage, design_valve, flow_stage, law_stage, overlap_clearance_checks, profile_stage,
                     valve_checks, with_hydraulic)
 
-__all__ = ["DesignResults", "ValveDesign", "clearance_stage", "design_valve", "flow_stage", "law_stage", "profile_stage", "run",
-           "sweep_designs", "valve_checks"]
+__all__ = ["DesignResults", "ValveDesign", "breathing_view", "clearance_stage", "design_valve", "flow_stage", "law_stage",
+           "profile_stage", "run", "sweep_designs", "valve_checks"]
 
 
 @dataclass(frozen=True)
@@ -233,6 +234,15 @@ def run(spec, laws=None, progress=None, headlines_only=False, diagnose=True, mem
         except PressureFileError as exc:
             raise SpecError([Problem("crank.pressure_file", str(exc))]) from None
     breathing = (_breathing(spec, engine, crank_view, valves, views) if spec.breathing is not None else None)
+    if breathing is not None:
+        for name, valve in views.items():   # the spring's gas load from the breathing's pressures: the drive anew
+            load = gas_opening_load(breathing, valve.kind, valve.throat_diameter)
+            # a hydraulic valve opens against the breathing's cylinder pressure (the crank's, which reads it, after)
+            cylinder = (cylinder_pressure(breathing, speed_plan(valve.hydraulic, engine)[0])
+                        if valve.hydraulic is not None and name not in waiting else None)
+            valves[name] = design_valve(name, replace(valve, hydraulic=None) if name in waiting else valve, engine,
+                                        gas, output, (laws or {}).get(name), cylinder=cylinder,
+                                        headlines_only=headlines_only, diagnose=diagnose, gas_load=load)
     breathed = None
     if breathing is not None and crank_view is not None and engine.strokes == 4:
         breathed = cylinder_pressure(breathing, crank_geometry_of(crank_view, engine)[3])
@@ -256,18 +266,23 @@ def run(spec, laws=None, progress=None, headlines_only=False, diagnose=True, mem
     return DesignResults(spec, engine_record(engine), valves, tuple(found), crank, ports, card, shaft, breathing)
 
 
-def _breathing(spec, engine, crank_view, valves, views):
-    """The breathing stage of a specification with [breathing]: its files read (a file that cannot be used is a
-    :class:`SpecError` naming its key), the crank's SI view (or None) for the rod, offset and Wiebe cycle."""
+def breathing_view(spec) -> Any:
+    """The SI view of a specification's [breathing] with its files read (a file that cannot be used is a
+    :class:`SpecError` naming its key)."""
     sides = {}
     for side in ("intake", "exhaust"):
         try:
             sides[side] = si(getattr(spec.breathing, side), spec)
         except BreathingFileError as exc:
             raise SpecError([Problem(f"breathing.{side}.{exc.key}", str(exc))]) from None
-    view = replace(si(spec.breathing.model_copy(update={"intake": None, "exhaust": None}), spec), **sides)
+    return replace(si(spec.breathing.model_copy(update={"intake": None, "exhaust": None}), spec), **sides)
+
+
+def _breathing(spec, engine, crank_view, valves, views):
+    """The breathing stage of a specification with [breathing] (:func:`breathing_view`), the crank's SI view (or
+    None) for the rod, offset and Wiebe cycle."""
     try:
-        return breathing_stage(view, engine, crank_view, valves, views)
+        return breathing_stage(breathing_view(spec), engine, crank_view, valves, views)
     except BreathingError as exc:
         raise SpecError([Problem("breathing", str(exc))]) from None
 

@@ -11,6 +11,7 @@ from ..breathing import (BreathingError, CdTable, Condition, Cylinder, Engine, F
                          breathe)
 from ..breathing.cycle import MAX_WORK, BreathingRecord, BreathingResult, work
 from ..breathing.valves import DEFAULT_CD, default_areas, effective_areas
+from ..springs import gas_opening_force
 from ..checks import Check, check
 from ..units import MM, to_display
 from .hydraulic_actuation import CylinderPressure
@@ -165,29 +166,52 @@ def breathing_records(engine, conditions, tolerance, max_cycles, curve=False) ->
     return tuple(out)
 
 
-def breathing_stage(b, engine, crank, valves, views) -> BreathingResults:
-    """Run the breathing chapter: ``b``, ``engine`` and ``crank`` are the SI views of [breathing], [engine] and
-    [crank] (or None), ``valves`` the designed valves and ``views`` their SI views; returns
-    :class:`BreathingResults`."""
-    described, words = breathing_engine(b, engine, crank, valves, views)
+def breathing_conditions(b) -> tuple[list[Condition], list[Condition]]:
+    """The physics' conditions of [breathing] ``b`` (its SI view): those of [[breathing.conditions]] and the speeds
+    of [breathing.curve], in order."""
     given = [condition_of(c, c.speed, b) for c in b.conditions]
     swept = [] if b.curve is None else [condition_of(b.curve, n, b) for n in curve_speeds(b.curve)]
+    return given, swept
+
+
+def breathe_conditions(described, b, given, swept) -> tuple[tuple[BreathingResult, ...], tuple[BreathingResult, ...]]:
+    """The breathing of ``described`` at the conditions ``given`` (each from the plenums' state) and along the curve
+    ``swept`` (each speed from the previous one's converged state) with the tolerance and the cycles of [breathing]
+    ``b``: what the chapter and a cam synthesis by the breathing compute alike.
+
+    Raises
+    ------
+    BreathingError
+        More work than :data:`~valvetrain.breathing.cycle.MAX_WORK` asked for (refused before it runs).
+    """
     asked = sum(work(described, c, b.max_cycles) for c in given + swept)
     if asked > MAX_WORK:
         raise BreathingError(f"{len(given)} conditions and {len(swept)} curve speeds at up to {b.max_cycles} cycles "
                              f"of the runners' cells (cell_mm = {b.cell / MM:g}) ask for {asked:.3g} cell-steps; "
                              f"allowed at most {MAX_WORK:.3g} (about half a minute): fewer conditions or curve points, "
                              "a coarser cell_mm, fewer max_cycles or higher speeds")
-    results = (breathing_records(described, given, b.cycle_tolerance, b.max_cycles)
-               + breathing_records(described, swept, b.cycle_tolerance, b.max_cycles, curve=True))
+    return (breathing_records(described, given, b.cycle_tolerance, b.max_cycles),
+            breathing_records(described, swept, b.cycle_tolerance, b.max_cycles, curve=True))
+
+
+def speed_mean(results, name) -> float:
+    """The mean of the figure ``name`` (``volumetric_efficiency``, ``torque``) over the breathing's results (every
+    condition and curve speed weighs the same): the objective of a cam synthesis by the breathing."""
+    return float(np.mean([getattr(r.figures, name) for r in results]))
+
+
+def breathing_stage(b, engine, crank, valves, views) -> BreathingResults:
+    """Run the breathing chapter: ``b``, ``engine`` and ``crank`` are the SI views of [breathing], [engine] and
+    [crank] (or None), ``valves`` the designed valves and ``views`` their SI views; returns
+    :class:`BreathingResults`."""
+    described, words = breathing_engine(b, engine, crank, valves, views)
+    conditions, curve = breathe_conditions(described, b, *breathing_conditions(b))
     found = [check("breathing.cycle_change", r.figures.cycle_change, high=b.cycle_tolerance,
                    source="the cycles repeat (Heywood (1988), chapter 14: a cycle simulation runs until its state "
                           "repeats)", params={"speed": f"{to_display(r.figures.speed, 'rpm'):.5g}"})
-             for r in results if not r.converged]
-    figures = BreathingSummary(b.mode, *words, tuple(r.figures for r in results[:len(given)]),
-                               tuple(r.figures for r in results[len(given):]))
-    return BreathingResults(described, results[:len(given)], results[len(given):], figures, tuple(found))
-
+             for r in conditions + curve if not r.converged]
+    figures = BreathingSummary(b.mode, *words, tuple(r.figures for r in conditions), tuple(r.figures for r in curve))
+    return BreathingResults(described, conditions, curve, figures, tuple(found))
 
 
 def cylinder_pressure(results, speed) -> CylinderPressure:
@@ -199,3 +223,49 @@ def cylinder_pressure(results, speed) -> CylinderPressure:
     return CylinderPressure(chosen.columns.angle, chosen.columns.pressure,
                             f"the breathing's converged {results.figures.mode} cycle at {to_display(f.speed, 'rpm'):.5g} "
                             f"rpm, intake plenum {f.intake_pressure / 1e3:.5g} kPa")
+
+
+def gas_opening_load(results, kind, diameter) -> tuple[float, str]:
+    """The largest gas force that tends to open the closed valve of ``kind`` over the breathing's converged cycles,
+    and the words of where it comes from.
+
+    Parameters
+    ----------
+    results : BreathingResults
+    kind : {"intake", "exhaust"}
+    diameter : float
+        Throat diameter of the valve [m] (the area of :func:`valvetrain.springs.gas_opening_force`).
+
+    Returns
+    -------
+    (float, str)
+        f_g max(p_port - p_cyl, 0) [N] over every condition and curve speed and every crank angle at which the
+        side's valves are shut (their effective areas zero), p_port the pressure at that side's valves (the runner's
+        last cell, the plenum's without a runner), and the speed and crank angle where it is largest.
+
+    Notes
+    -----
+    The sources' closed-valve gas load (5.4) and (5.5) with the breathing's own pressures: the spring holds the
+    valve shut at every condition, so the largest of them is the load.
+
+    References
+    ----------
+    Valve-train practical works (n.d.), work 5, eqs. (5.4), (5.5).
+    """
+    best = None
+    for r in (*results.conditions, *results.curve):
+        c = r.columns
+        forward, reverse = getattr(results.engine, kind).areas(c.angle)
+        port = c.intake_port if kind == "intake" else c.exhaust_port
+        difference = np.where((forward == 0.0) & (reverse == 0.0), port - c.pressure, -np.inf)
+        i = int(np.argmax(difference))
+        if best is None or difference[i] > best[0]:
+            best = (difference[i], r, i)
+    _, r, i = best
+    c = r.columns
+    port = (c.intake_port if kind == "intake" else c.exhaust_port)[i]
+    force = gas_opening_force(diameter, port, c.pressure[i])
+    return force, (f"the breathing's converged {results.figures.mode} cycles: the largest (p_port - p_cyl) on the shut "
+                   f"valve, {port / 1e3:.4g} - {c.pressure[i] / 1e3:.4g} kPa at {to_display(r.figures.speed, 'rpm'):.5g} "
+                   f"rpm, {np.degrees(c.angle[i]):.4g} crank deg from the gas-exchange TDC (Valve-train practical works "
+                   f"(n.d.), eq. ({'5.5' if kind == 'intake' else '5.4'}))")

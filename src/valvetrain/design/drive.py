@@ -383,7 +383,7 @@ def _spring_checks(tag, s, note=""):
                        "free_length", "coil_gap_at_full_lift")]
 
 
-def drive_stage(valve, gas, cam, diagnose=True) -> DriveResult:
+def drive_stage(valve, gas, cam, diagnose=True, gas_load=None) -> DriveResult:
     """Stage 6: reduced masses, spring characteristic and design (the strength is :func:`strength_stage`).
 
     Parameters
@@ -394,6 +394,9 @@ def drive_stage(valve, gas, cam, diagnose=True) -> DriveResult:
     diagnose : bool
         Where no spring passes, say why and what would make one pass (:func:`valvetrain.springs.diagnose`, a new
         search per remedy: about a second); False leaves the diagnosis out (the designer's first answer to an edit).
+    gas_load : (float, str), optional
+        The gas force that tends to open the closed valve [N] and its source, where the breathing gives it
+        (:func:`valvetrain.design.breathing.gas_opening_load`); default the sources' from ``[gas]``.
 
     Returns
     -------
@@ -425,7 +428,9 @@ def drive_stage(valve, gas, cam, diagnose=True) -> DriveResult:
     finger = omega**2 * finger_inertia(valve, law, theta)
     lift = law.lift_max * i_k
 
-    if valve.kind == "exhaust":
+    if gas_load is not None:
+        p_gas, gas_source = gas_load
+    elif valve.kind == "exhaust":
         p_gas = springs.gas_opening_force(d_g, gas.exhaust_back_pressure, gas.cylinder_intake_pressure)
         gas_source = "Valve-train practical works (n.d.), eq. (5.4)"
     else:

@@ -781,7 +781,7 @@ class ValveDesign:
 
 
 def design_valve(name, valve, engine, gas, output, law=None, progress=None, cylinder=None,
-                 headlines_only=False, diagnose=True) -> ValveDesign:
+                 headlines_only=False, diagnose=True, gas_load=None) -> ValveDesign:
     """All stages of one valve and its drive (masses, springs, strength).
 
     Parameters
@@ -799,6 +799,8 @@ def design_valve(name, valve, engine, gas, output, law=None, progress=None, cyli
         The ``[dynamics]`` sweep simulates only the speeds that decide its headlines (``dynamics_stage``).
     diagnose : bool
         Diagnose springs that do not pass (:func:`~valvetrain.design.drive.drive_stage`).
+    gas_load : (float, str), optional
+        The spring's closed-valve gas load [N] and its source (:func:`~valvetrain.design.drive.drive_stage`).
 
     Returns
     -------
@@ -823,7 +825,7 @@ def design_valve(name, valve, engine, gas, output, law=None, progress=None, cyli
     section = valve.cam.section
     records, found = section.records(cam.law, valve, engine, cam.nose)
     try:
-        drive = drive_stage(valve, gas, cam, diagnose)
+        drive = drive_stage(valve, gas, cam, diagnose, gas_load)
     except NoSpringFits as exc:
         raise SpecError([Problem(f"{at}.spring", str(exc))]) from None
     found += valve_checks(cam, flow_result, profile, valve, engine, section.timing(valve, records)) + list(drive.checks)

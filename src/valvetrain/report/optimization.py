@@ -32,8 +32,9 @@ def history_columns(result) -> dict[str, np.ndarray]:
 
 
 HISTORY_COMMENTS = ("valvetrain optimize: one row per evaluation of the search, in order",
-                    "objective: fullness (-) or time-area of the whole opening (mm2 s); margin_*: relative margin of a "
-                    "limit, >= 0 when it holds")
+                    "objective: fullness (-), time-area of the whole opening (mm2 s), or the breathing's volumetric "
+                    "efficiency (-) or torque (N m), the mean over its speeds; margin_*: relative margin of a limit, "
+                    ">= 0 when it holds")
 
 
 def comparison_columns(result) -> dict[str, list[Any]]:

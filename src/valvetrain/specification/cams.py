@@ -271,7 +271,7 @@ class _SegmentAngles(_ClosingSide):
     def flank_angle_deg(self):
         return self.phi1_deg + self.phi2_deg + (self.phi3_deg or 0.0)
 
-    derived_keys: ClassVar[dict] = {"phi3_deg": ("cam.phi1_deg", "cam.phi2_deg")}
+    derived_keys: ClassVar[dict] = {"phi3_deg": ("cam.phi1_deg", "cam.phi2_deg", "opens_deg", "closes_deg")}
 
     def segment_variables(self, valve, engine):
         """phi1, phi2 of the synthesis (phi3 the remainder) [cam deg]."""

@@ -43,8 +43,10 @@ from pydantic import BaseModel, ValidationError
 from scipy import optimize
 
 from .. import flow, springs
+from ..breathing import BreathingError
 from ..checks import Check
-from ..design import run as run_design
+from ..design import breathing_view, run as run_design
+from ..design.breathing import breathe_conditions, breathing_conditions, breathing_engine, speed_mean
 from ..design.drive import spring_options
 from ..design.dynamics import SPEED_RANGE, build_train, dynamics_stage
 from ..design.valve import MAX_LIFT_TO_THROAT, follower_travel_acceleration
@@ -64,8 +66,86 @@ from .constraints import Limits, constraints, spring_reserve, worst_cam_force
 OBJECTIVES = {
     "fullness": ("fullness", "", "fullness of the valve lift diagram (Shang Hanji (1988), eq. 2.3)"),
     "time_area": ("time_area_open", "mm2 s", "time-area of the valve's whole opening"),
+    "volumetric_efficiency": ("volumetric_efficiency", "", "volumetric efficiency, the mean over the breathing's "
+                              "conditions and curve speeds"),
+    "torque": ("torque", "N m", "indicated torque of the fired engine, the mean over the breathing's conditions and "
+               "curve speeds"),
 }
-"""Objective name -> (field of the flow stage's result, display unit, what it is)."""
+"""Objective name -> (field of the flow stage's result, or of the breathing's records for :data:`BREATHING`,
+display unit, what it is)."""
+
+BREATHING = ("volumetric_efficiency", "torque")
+"""The objectives of the breathing (:mod:`valvetrain.design.breathing`): the mean of a figure of its converged cycles
+over every condition and curve speed of ``[breathing]``, each weighing the same."""
+
+
+def objective_value(results, valve, objective) -> float:
+    """An objective of :data:`OBJECTIVES` as ``valvetrain run`` computes it (``results``, a
+    :class:`~valvetrain.design.DesignResults`), for the valve named ``valve``."""
+    if objective in BREATHING:
+        return speed_mean(results.breathing.conditions + results.breathing.curve, OBJECTIVES[objective][0])
+    return float(getattr(results.valves[valve].flow, OBJECTIVES[objective][0]))
+
+
+@dataclass(frozen=True)
+class BreathingObjective:
+    """What a cam synthesis by the breathing holds fixed: the SI views of ``[breathing]`` (its files read), of
+    ``[engine]`` and ``[crank]`` (or None), the starting design's valves and their SI views, and the conditions and
+    curve speeds (:func:`~valvetrain.design.breathing.breathing_conditions`)."""
+
+    view: object
+    engine: object
+    crank: object
+    valves: dict
+    views: dict
+    conditions: tuple
+
+    def value(self, name, figure, law, valve) -> float:
+        """The mean of the breathing's ``figure`` over the conditions with the valve ``name`` lifted by ``law`` (its
+        SI view ``valve``), every other valve the start's: the valve's design with that law and nose in its cam
+        stage gives the breathing its lift (:attr:`~valvetrain.design.valve.ValveDesign.cycle_lift`), as ``run``
+        does; 0 where the cycle leaves the physical range (:class:`~valvetrain.breathing.BreathingError`)."""
+        start = self.valves[name]
+        cam = replace(start.cam, law=law, nose=valve.cam.section.nose_crank(valve, law),
+                      rocker_ratio=valve.rocker_ratio)
+        described = breathing_engine(self.view, self.engine, self.crank, {**self.valves, name: replace(start, cam=cam)},
+                                     {**self.views, name: valve})[0]
+        try:
+            conditions, curve = breathe_conditions(described, self.view, *self.conditions)
+        except BreathingError:
+            return 0.0
+        return speed_mean(conditions + curve, figure)
+
+
+def check_breathing_objective(spec, valve, objective) -> None:
+    """Refuse an objective of :data:`BREATHING` that the specification cannot give for the valve named ``valve``.
+
+    Raises
+    ------
+    ValueError
+        No ``[breathing]`` section; ``torque`` of a motored breathing; the valve's side lifted by a measured
+        ``lift_file`` (the cam would not move the breathing): the message names the key.
+    """
+    if spec.breathing is None:
+        raise ValueError(f"optimize: --objective {objective} needs a [breathing] section (its conditions or curve "
+                         "give the speeds); allowed without it: fullness, time_area")
+    if objective == "torque" and spec.breathing.mode != "fired":
+        raise ValueError(f"optimize: --objective torque needs breathing.mode = 'fired' (the file's is "
+                         f"{spec.breathing.mode!r}: a motored engine gives no torque); allowed volumetric_efficiency")
+    kind = spec.valves[valve].kind
+    if getattr(spec.breathing, kind).lift_file is not None:
+        raise ValueError(f"optimize: --objective {objective}: breathing.{kind}.lift_file lifts the {kind} valves by a "
+                         f"measured table, so valve {valve!r}'s cam does not move the breathing; allowed without "
+                         "lift_file (the designed valves' lift)")
+
+
+def breathing_objective(spec, results) -> BreathingObjective:
+    """The :class:`BreathingObjective` of a specification and its starting design ``results``."""
+    view = breathing_view(spec)
+    views = {name: si(section, spec) for name, section in spec.valves.items()}
+    crank = None if spec.crank is None else si(spec.crank, spec)
+    return BreathingObjective(view, si(spec.engine), crank, dict(results.valves), views,
+                              breathing_conditions(view))
 
 
 def shown_objective(objective, value) -> float:
@@ -387,12 +467,16 @@ class Problem:
         The starting design of the valve (its train and spring are those of the search).
     variables : list of Variable
     limits : Limits
-    objective : {"fullness", "time_area"}
+    objective : str
+        A name of :data:`OBJECTIVES`.
+    breathing : BreathingObjective, optional
+        Required for the objectives of :data:`BREATHING`.
 
     Notes
     -----
     One evaluation samples the law twice (:data:`GRID` angles, then :data:`REFINE` around each extreme) and
-    integrates the objective by the flow module's quadrature; ``evaluations``, ``seconds`` and ``law_samples`` (the
+    integrates the objective by the flow module's quadrature (an objective of the breathing: the cycles converged at
+    each of its speeds, :meth:`BreathingObjective.value`); ``evaluations``, ``seconds`` and ``law_samples`` (the
     angles at which the law was evaluated, the quadrature's nodes not counted) measure its cost.  A population is
     evaluated as one batch (:meth:`evaluate_many`): each point's law is built on its own, then all are sampled on
     their own grids in one call (:func:`~valvetrain.laws.base.batch_derivatives`), their quantities and least values
@@ -400,8 +484,9 @@ class Problem:
     alone.
     """
 
-    def __init__(self, spec, design, variables, limits, objective="fullness"):
+    def __init__(self, spec, design, variables, limits, objective="fullness", breathing=None):
         self.name, self.variables, self.limits, self.objective = design.name, list(variables), limits, objective
+        self.breathing = breathing
         self.spec, self.engine = spec, si(spec.engine)
         self.section = spec.valves[self.name]
         self.data = self.section.model_dump(mode="json", exclude_unset=True, exclude_none=True)
@@ -577,7 +662,11 @@ class Problem:
         return out
 
     def _objectives(self, laws, valves):
-        """The objective of :data:`OBJECTIVES` of each law as the flow stage computes it, all quadratures at once."""
+        """The objective of :data:`OBJECTIVES` of each law as the flow stage computes it, all quadratures at once (an
+        objective of the breathing as its stage computes it, law by law)."""
+        if self.objective in BREATHING:
+            return [self.breathing.value(self.name, OBJECTIVES[self.objective][0], law, valve)
+                    for law, valve in zip(laws, valves, strict=True)]
         ramp = np.array([law.ramp_height for law in laws])
         rocker = np.array([valve.rocker_ratio for valve in valves])
         opens, closes = (np.array([getattr(law, k) for law in laws]) for k in ("valve_opens", "valve_closes"))
@@ -874,6 +963,12 @@ def polydyne_fullness(law, exponents=(10, 18, 26, 34)) -> float:
                          poly.breakpoints)
 
 
+def breathing_failures(results) -> list[Check]:
+    """The breathing's checks of a full design that fail and are not accepted (cycles that did not repeat): an
+    objective of :data:`BREATHING` read from them is not the converged cycle's, so they are limits of the optimum."""
+    return [c for c in results.checks if c.code.startswith("breathing.") and not c.passed and not c.accepted]
+
+
 def final_checks(design, spec, limits, scale=1.0, search_spring=None) -> list[Check]:
     """Every constraint of ``limits`` on a full design, and the design's own failures.
 
@@ -920,8 +1015,9 @@ def final_checks(design, spec, limits, scale=1.0, search_spring=None) -> list[Ch
     return out + own
 
 
-def _comparison(start, end):
-    """Rows (quantity, unit, start, optimum) of two full designs, in the display units."""
+def _comparison(start, end, objective, start_value, value):
+    """Rows (quantity, unit, start, optimum) of two full designs, in the display units; an objective of
+    :data:`BREATHING` first, ``start_value`` and ``value`` (SI)."""
     def rows(d):
         c, f = d.cam, d.flow
         out = [("fullness", "", f.fullness), ("time-area of the whole opening", "mm2 s", f.time_area_open),
@@ -936,8 +1032,9 @@ def _comparison(start, end):
         if d.records.power_polynomial is not None:
             out.insert(1, ("tappet fullness (UkrSURT Proceedings (2019))", "", d.records.power_polynomial.tappet_fullness))
         return out
-    return [(q, u, to_display(a, u), to_display(b, u)) for (q, u, a), (_, _, b) in zip(rows(start), rows(end),
-                                                                                      strict=True)]
+    head = [(OBJECTIVES[objective][2], OBJECTIVES[objective][1], start_value, value)] if objective in BREATHING else []
+    return [(q, u, to_display(a, u), to_display(b, u)) for q, u, a, b in head] + [
+        (q, u, to_display(a, u), to_display(b, u)) for (q, u, a), (_, _, b) in zip(rows(start), rows(end), strict=True)]
 
 
 def _inside(x, bounds):
@@ -957,8 +1054,11 @@ def optimize_valve(spec, valve=None, variables=None, objective="fullness", wheel
         The valve's name (default: the first).
     variables : list of Variable, optional
         Default :func:`default_variables` of the valve's law.
-    objective : {"fullness", "time_area"}
-        :data:`OBJECTIVES`.
+    objective : str
+        A name of :data:`OBJECTIVES`: the fullness, the time-area, or the breathing's volumetric efficiency or
+        torque (fired), each the mean over the conditions and the curve speeds of ``[breathing]``
+        (:data:`BREATHING`; no local polish then: the converged cycles' objective has no useful finite-difference
+        gradient).
     wheel_radius : float, optional
         Grinding wheel radius [m] for the concave radius of a roller follower's cam (default: the valve's
         ``[grinding]`` section's, else none).
@@ -996,16 +1096,20 @@ def optimize_valve(spec, valve=None, variables=None, objective="fullness", wheel
         valve = next(iter(spec.valves))
     if valve not in spec.valves:
         raise ValueError(f"optimize: --valve {valve!r}; allowed {', '.join(spec.valves)}")
+    if objective in BREATHING:
+        check_breathing_objective(spec, valve, objective)
     section = spec.valves[valve]
     variables = unique_variables(default_variables(section, spec.engine) if variables is None else variables)
     check_bounds(section, valve, variables)
     t0 = time.perf_counter()
-    design = run_design(spec).valves[valve]
+    results = run_design(spec)
+    design = results.valves[valve]
     ramp = any(v.path.startswith("cam.ramp_end_velocity") for v in variables)
     limits, notes = design_limits(design, wheel_radius, no_jump_factor, ramp,
                                   cam_width or si(section, spec).parts.cam_width, seating_velocity,
                                   spec.engine.over_speed_ratio, si(section, spec))
-    problem = Problem(spec, design, variables, limits, objective)
+    problem = Problem(spec, design, variables, limits, objective,
+                      breathing_objective(spec, results) if objective in BREATHING else None)
     start_value = problem.evaluate(problem.x0, dynamics=True)[0]
     scale0 = start_value or 1.0
     generation = [0]
@@ -1022,7 +1126,7 @@ def optimize_valve(spec, valve=None, variables=None, objective="fullness", wheel
                                             tol=1e-7, polish=False, callback=callback, vectorized=True,
                                             updating="deferred", x0=_inside(problem.x0, problem.bounds))
     candidates = problem.candidates()
-    if candidates:
+    if candidates and objective not in BREATHING:   # the breathing's cycles converge to a tolerance: no gradient
         origin = candidates[0][1]
         held = problem.evaluate(origin, dynamics=True)[1]
 
@@ -1038,23 +1142,25 @@ def optimize_valve(spec, valve=None, variables=None, objective="fullness", wheel
                                   options={"maxiter": POLISH_ITERATIONS, "ftol": 1e-10})
         problem.evaluate(local.x)
     spring = None if any(v.path == "drive.spring_reserve" for v in problem.variables) else design.drive.lines.chosen
-    checks_start = final_checks(design, spec, limits, 1.0, spring)
+    checks_start = final_checks(design, spec, limits, 1.0, spring) + (
+        breathing_failures(results) if objective in BREATHING else [])
     start = (problem.x0, spec, design, checks_start,
-             optimum_spec_text(spec, valve, problem.data, dict(zip((v.path for v in variables), problem.x0))))
+             optimum_spec_text(spec, valve, problem.data, dict(zip((v.path for v in variables), problem.x0))),
+             objective_value(results, valve, objective))
     chosen, nearest = _best_designed(problem, spec, valve, limits, spring,
                                      start_value if _passed(checks_start) else None)
     if chosen is None:
         chosen = start if _passed(checks_start) else (
             nearest or _designed(problem, spec, valve, limits, spring, found.x) or start)
-    x, optimum_spec, checked, checks, text = chosen
+    x, optimum_spec, checked, checks, text, value = chosen
     margins = problem.evaluate(x, dynamics=True)[1]
     values = {v.path: float(value) for v, value in zip(problem.variables, x, strict=True)}
     reference = polydyne_fullness(checked.law) if checked.law.name == "power_polynomial" else None
     return Result(
         valve, objective, {v.path: float(value) for v, value in zip(problem.variables, problem.x0, strict=True)},
-        values, start_value, float(getattr(checked.flow, OBJECTIVES[objective][0])), problem.bounds, problem.names,
+        values, start_value, value, problem.bounds, problem.names,
         dict(zip(problem.names, map(float, margins), strict=True)), problem.evaluations, time.perf_counter() - t0,
-        problem.seconds, notes, _comparison(design, checked), checks_start, checks, list(problem.history), reference,
+        problem.seconds, notes, _comparison(design, checked, objective, start[5], value), checks_start, checks, list(problem.history), reference,
         text, problem.law_samples, problem.simulations)
 
 
@@ -1063,19 +1169,22 @@ def _passed(checks):
 
 
 def _designed(problem, spec, valve, limits, spring, x):
-    """(x, specification, full design, final checks, specification text) of a point, or None where the point admits
-    no full design (no spring fits, a law the design refuses)."""
+    """(x, specification, full design, final checks, specification text, objective as ``run`` computes it) of a
+    point, or None where the point admits no full design (no spring fits, a law the design refuses)."""
     from ..specification.reading import parse_spec
 
     values = {v.path: float(value) for v, value in zip(problem.variables, x, strict=True)}
     text = optimum_spec_text(spec, valve, problem.point(x), values)
     try:
         optimum_spec = parse_spec(text)
-        checked = run_design(optimum_spec).valves[valve]
+        results = run_design(optimum_spec)
     except (SpecError, ValueError):
         return None
+    checked = results.valves[valve]
     scale = optimum_spec.valves[valve].drive.spring_reserve / problem.reserve0
-    return x, optimum_spec, checked, final_checks(checked, optimum_spec, limits, scale, spring), text
+    checks = final_checks(checked, optimum_spec, limits, scale, spring) + (
+        breathing_failures(results) if problem.objective in BREATHING else [])
+    return x, optimum_spec, checked, checks, text, objective_value(results, valve, problem.objective)
 
 
 def _best_designed(problem, spec, valve, limits, spring, floor):
