@@ -179,9 +179,9 @@ MAP_COLUMNS = 400
 def sweep_series(d) -> dict[str, Any]:
     """The speed-sweep series of one valve's :class:`~valvetrain.design.dynamics.DynamicsResult`: per speed the
     smallest contact force, the seating velocity (None where the valve did not seat), the bounce; the headline
-    speeds; the map of the valve-lift error (valve lift minus the rigid lift, mm) over the camshaft angles of the
-    event (every speed's open stretch and 10 cam deg either side, thinned to about :data:`MAP_COLUMNS`) and the
-    speeds."""
+    speeds; the maps of the valve-lift error (valve lift minus the rigid lift, mm), the cam contact force (N) and
+    the valve's acceleration (m/s²) over the camshaft angles of the event (every speed's open stretch and 10 cam
+    deg either side, thinned to about :data:`MAP_COLUMNS`) and the speeds."""
     from .design.dynamics import event_window
 
     sw, keep = d.sweep, event_window(d)
@@ -197,6 +197,8 @@ def sweep_series(d) -> dict[str, Any]:
         "rated_speed_rpm": to_display(d.at_rated_speed.speed, "rpm"),
         "map_cam_deg": rad_to_deg(sw.theta[keep][::step]),
         "map_lift_error_mm": sw.lift_error[:, keep][:, ::step] / MM,
+        "map_contact_force_N": sw.contact_force[:, keep][:, ::step],
+        "map_valve_acceleration_m_s2": sw.acceleration[:, keep][:, ::step],
     }
 
 
