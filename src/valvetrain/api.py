@@ -40,8 +40,11 @@ def plain(data) -> Any:
     if isinstance(data, dict):
         return {k: plain(v) for k, v in data.items()}
     if isinstance(data, np.ndarray) and data.dtype.kind == "f":
+        finite = np.isfinite(data)
+        if finite.all():
+            return data.tolist()                 # numpy's own conversion: a tenth of the time of an object array's
         out = data.astype(object)
-        out[~np.isfinite(data)] = None
+        out[~finite] = None
         return out.tolist()
     if isinstance(data, (list, tuple, np.ndarray)):
         return [plain(v) for v in data]
