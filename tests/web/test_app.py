@@ -311,6 +311,22 @@ def test_overlay_of_a_file_and_the_dxf_of_the_contour():
     assert data.startswith(dxf_bytes(run(example_spec()).valves["intake"])) and data.endswith(b"999\ndownload 1\n")
 
 
+def test_the_cam_card_gives_the_events_the_lobe_separation_and_the_overlap():
+    d = _designer()
+    card = {q: (i, e) for q, i, e in zip(d.card.data["quantity"], d.card.data["intake"], d.card.data["exhaust"],
+                                         strict=True)}
+    # the built-in example's keys: the intake opens 26 crank deg before TDC and closes 78 after BDC (258 from the
+    # gas-exchange TDC), the exhaust opens 70 before BDC (-250) and closes 34 after TDC: the seat-to-seat events;
+    # the noses halfway, 116 and -108 crank deg; the lobe separation half their difference, (116 + 108) / 2 = 112
+    # cam deg; the overlap seat to seat 34 + 26 = 60 crank deg
+    assert card["seat to seat: opens, crank deg"] == ("-26", "-250")
+    assert card["seat to seat: closes, crank deg"] == ("258", "34")
+    assert card["lobe centre, crank deg"] == ("116", "-108")
+    assert card["lobe separation angle, cam deg"][0] == "112"
+    assert card["overlap seat to seat, crank deg"][0] == "60"
+    assert "at 1 mm valve lift: opens, crank deg" in card and "at 0.050 in (1.27 mm) tappet lift: opens, crank deg" in card
+
+
 def test_plot_ranges_are_kept_while_the_curves_keep_half_their_room():
     # a lift from 0 to 10 mm with a quarter of its span as room: (-2.5, 12.5) mm.  Raised to 11 mm it still has
     # 12.5 - 11 = 1.5 mm >= 2.75 / 2 above it: kept (no new ticks, no new layout).  Raised to 12 mm, 0.5 mm < 3 / 2:

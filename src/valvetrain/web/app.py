@@ -42,7 +42,7 @@ from ..report.html import check_range
 from ..report.i18n import TEXT
 from ..report.names import label, record_quantity_text, translate
 from ..units import per_cam_degree
-from .session import GROUPS, Session, form, has_points, parse_value, value_text
+from .session import GROUPS, form, has_points, parse_value, value_at, value_of, value_text
 
 WORDS = {lang: catalogue(lang)["designer"] for lang in LANGS}
 """The designer's own words in each language, from the catalogue's ``[designer]`` (the plots' and the checks' come from
@@ -406,6 +406,7 @@ class Designer:
         visible.  Built again for another language (each input's new name would lay the page out once more)."""
         document = self.session.document
         self.group_columns, self.fields, self.widgets = {}, {}, {}
+        self.laws = {valve: value_at(document, f"valves.{valve}.cam.law") for valve in self.names}
         tabs = []
         for group, _ in GROUPS:
             if group != "engine" and not self.names:
@@ -845,33 +846,38 @@ class Designer:
             add(t["cc_lift_tdc"].replace("mm", WORDS[self.lang][f"unit_{self.units.length}"]),
                 {n: None if c.get("lift_at_tdc_mm") is None else mm * c["lift_at_tdc_mm"]
                  for n, c in valves.items()})
-        for key, word, unit in (("lobe_separation_cam_deg", "cc_separation", "unit_cam"),
-                                ("overlap_crank_deg", "cc_overlap", "unit_crank"),
-                                ("overlap_at_0_050in_crank_deg", "cc_overlap_050", "unit_crank")):
+        w = WORDS[self.lang]
+        for key, word, unit, scale in (("lobe_separation_cam_deg", "cc_separation", w["unit_cam"], 1.0),
+                                       ("overlap_crank_deg", "cc_overlap", crank, 1.0),
+                                       ("overlap_at_0_050in_crank_deg", "cc_overlap_050", crank, 1.0),
+                                       ("overlap_area_mm_crank_deg", "cc_overlap_area",
+                                        f"{w[f'unit_{self.units.length}']}·{crank}", mm)):
             if card.get(key) is not None:
-                add(f"{t[word]}, {WORDS[self.lang][unit]}", dict.fromkeys(self.names, card[key]))
+                add(f"{t[word]}, {unit}", dict.fromkeys(self.names, scale * card[key]))
         for key in VALVE_CARD:
             group, leaf = key.split(".")
             add(label(key, self.lang), {n: results["valves"][n].get(group, {}).get(leaf) for n in self.names})
         _send(self.card, rows)
 
     def _sync_fields(self):
-        """The panel's inputs show the good design's values (those an edit refused, a drag or an undo changed); a
-        group whose keys changed (another law of the cam) is built again."""
+        """The panel's inputs show the good design's values (those an edit refused, a drag or an undo changed); the
+        cam's group of a valve whose law changed is built again (its keys are the law's)."""
         document = self.session.document
+        for valve in self.names:
+            if value_at(document, f"valves.{valve}.cam.law") != self.laws[valve]:
+                self.laws[valve] = value_at(document, f"valves.{valve}.cam.law")
+                for path in [p for p in self.widgets if p.startswith(f"valves.{valve}.cam.")]:
+                    del self.widgets[path], self.fields[path]
+                self.group_columns[("cam", valve)].children = [self._widget(f) for f in dict(form(document,
+                                                                                                  valve))["cam"]]
         self._syncing = True
         try:
-            for group, valve in self.group_columns:
-                fields = dict(form(document, valve))[group]
-                if [f.path for f in fields] != [w.name for w in self.group_columns[(group, valve)].children]:
-                    self.group_columns[(group, valve)].children = [self._widget(f) for f in fields]
-                for f in fields:
-                    w = self.widgets[f.path]
-                    self.fields[f.path] = f
-                    shown = (f.value if isinstance(w, NumericInput) else "" if f.value is None
-                             else str(f.value) if isinstance(w, Select) else value_text(f.value))
-                    if w.value != shown:
-                        w.value = shown
+            for path, w in self.widgets.items():
+                value = value_of(document, self.fields[path])
+                shown = (value if isinstance(w, NumericInput) else "" if value is None
+                         else str(value) if isinstance(w, Select) else value_text(value))
+                if w.value != shown:
+                    w.value = shown
         finally:
             self._syncing = False
 

@@ -7,7 +7,7 @@ written to disk.
 
 from collections import OrderedDict
 import copy
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 import json
 import tomllib
 import typing
@@ -46,6 +46,7 @@ class Field:
     unit: str = ""
     options: tuple = ()
     optional: bool = False
+    default: object = None
 
     @property
     def name(self) -> str:
@@ -107,7 +108,8 @@ GROUPS = (("engine", (("engine", Engine),)), ("valve", (("valves.{}", Valve),)),
 (the cam's is the registry's model of its law)."""
 
 
-def _get(document, path):
+def value_at(document, path) -> Any:
+    """The value at a dotted key of a document, None where it has none."""
     node = document
     for part in path.split("."):
         if not isinstance(node, dict) or part not in node:
@@ -117,13 +119,21 @@ def _get(document, path):
 
 
 def _section_fields(document, path, model):
-    section = _get(document, path) or {}
+    section = value_at(document, path) or {}
     out = []
     for key, info in model.model_fields.items():
         if key == "closing" or _is_table(_unwrapped(info.annotation)[0]):
             continue
-        out.append(field_of(f"{path}.{key}", info, section.get(key, None if info.is_required() else info.default)))
+        default = None if info.is_required() else info.default
+        out.append(replace(field_of(f"{path}.{key}", info, section.get(key, default)), default=default))
     return out
+
+
+def value_of(document, f) -> Any:
+    """The value a document gives a :class:`Field` of the panel (the model's default where it lacks the key)."""
+    parent, key = f.path.rsplit(".", 1)
+    section = value_at(document, parent)
+    return section.get(key, f.default) if isinstance(section, dict) else f.default
 
 
 def form(document, valve=None) -> list[tuple[str, list[Field]]]:
@@ -137,7 +147,7 @@ def form(document, valve=None) -> list[tuple[str, list[Field]]]:
         fields = []
         for pattern, model in sections:
             path = pattern.format(valve)
-            section_model = model or REGISTRY.get(_get(document, path + ".law"))
+            section_model = model or REGISTRY.get(value_at(document, path + ".law"))
             if section_model is not None:
                 fields += _section_fields(document, path, section_model)
         out.append((group, fields))
