@@ -205,7 +205,7 @@ def sweep_series(d) -> dict[str, Any]:
     }
 
 
-def sweep(spec, progress=None) -> dict[str, Any]:
+def sweep(spec, progress=None, names=None) -> dict[str, Any]:
     """The speed sweep of a specification given as a dict: what ``valvetrain sweep`` computes, as plain data.
 
     Parameters
@@ -216,6 +216,8 @@ def sweep(spec, progress=None) -> dict[str, Any]:
     progress : callable, optional
         ``progress(valve name, done, total)`` between speeds; an exception it raises ends the sweep (the
         designer's way of dropping a sweep that a newer change made stale).
+    names : sequence of str, optional
+        Sweep these valves only (``valvetrain sweep --valve``), each with its section or the default one.
 
     Returns
     -------
@@ -228,7 +230,7 @@ def sweep(spec, progress=None) -> dict[str, Any]:
     if parsed is None:
         return {"ok": False, "errors": errors, "sweeps": None}
     try:
-        valves = sweep_designs(parsed, progress=progress)
+        valves = sweep_designs(parsed, names, progress=progress)
     except SpecError as err:
         return {"ok": False, "errors": error_records(err), "sweeps": None}
     return {"ok": True, "errors": [], "sweeps": plain({n: sweep_series(v.dynamics) for n, v in valves.items()})}

@@ -3,6 +3,7 @@ colours, the pictures, the units, the downloads, the sweeps it starts, and `valv
 that does not validate."""
 
 import base64
+import copy
 from pathlib import Path
 import re
 import tomllib
@@ -185,6 +186,31 @@ def test_checks_of_the_sweeps_are_pending_until_the_whole_design_comes():
     assert "…" not in d.checks.data["value"]
 
 
+def test_the_sweep_panel_comes_from_the_valve_alone_before_the_whole_design():
+    d = _swept(_designer())
+    d.on_field(_field(d, "engine.rated_speed_rpm"), "value", 7000, 6500)
+    # the valve's sweep alone is the whole design's sweep of it (the same series from the two designs)
+    alone = Session.sweep_one(d.session.document, "intake")
+    whole = Session.settle(d.session.document)
+    assert alone == whole["sweeps"]["intake"]
+    # drawn first, with the page's probe stamped for the release that asked for it; the checks of the dynamics
+    # still pending until the whole design comes, which stamps nothing the probe counts
+    d.draw_sweep_of(d.generation, "intake", alone, _now(), 7)
+    assert d.sweep_stamp.data["seq"] == [7]
+    assert len(d.sweep_sources["force"].data["y"]) == len(alone["speed_rpm"])
+    assert "pending" in d.checks.data["status"]
+    # the other valve shown before the whole design comes: its sweep is to come, not the intake's in its place
+    d.on_valve("value", "intake", "exhaust")
+    assert d.sweep_status.text == WORDS["en"]["sweeping"]
+    d.draw_sweep(d.generation, whole, _now(), 0)
+    assert d.sweep_stamp.data["seq"] == [0] and "pending" not in d.checks.data["status"]
+    assert list(d.sweep_sources["force"].data["y"]) == whole["sweeps"]["exhaust"]["min_contact_force_N"]
+    # a valve the whole design does not sweep: without a [dynamics] section beside one with it
+    mixed = copy.deepcopy(d.session.document)
+    del mixed["valves"]["exhaust"]["dynamics"]
+    assert Session.sweep_one(mixed, "exhaust") is None
+
+
 def test_accepted_failures_say_so_in_words():
     # issue 40: accepted failures showed green with negative margins; the built-in example accepts six
     d = _designer()
@@ -217,7 +243,7 @@ def test_the_sweep_plots_have_their_own_axes_and_the_map_its_colour_bar():
 
 def test_the_dynamics_against_the_angle_at_a_chosen_speed():
     d = _swept(_designer())
-    sweep = d._sweep_of(d.session.full)
+    sweep = d.sweeps["intake"]
     # at first the swept speed nearest the rated one (7000 rpm)
     speeds = np.array(sweep["speed_rpm"])
     i = int(np.argmin(np.abs(speeds - 7000.0)))

@@ -370,7 +370,7 @@ class Designer:
         self.generation = 0
         self._syncing = False
         self.downloads = 0
-        self.base_sweep = None
+        self.sweeps, self.base_sweeps = {}, None        # the valves' sweep series drawn, the baseline's
         self.sweep_due = False
         self.sweep_seq = 0
         self.shown = None                # a drag's preview drawn: (document, result), else the good design
@@ -744,9 +744,11 @@ class Designer:
             _count(self.kinematic_stamp, began, seq)
         if live:
             return
+        if sweep:
+            self.sweeps = {}                              # the sweeps of the design before: drawn no more
         self.sweep_due = self.sweep_due or sweep          # a switch of language before the page drew keeps it due
         self.sweep_seq = seq if sweep else self.sweep_seq
-        if self.session.full is not None:
+        if self.sweeps or self.session.full is not None:
             self._sweep_panel()
 
     def _draw_valve(self):
@@ -911,10 +913,12 @@ class Designer:
             self.start_sweep()
 
     def start_sweep(self) -> None:
-        """The whole design of the good document, with its speed sweeps, in the worker thread
-        (:meth:`~valvetrain.web.session.Session.settle`); a newer change stops it at its next speed."""
+        """In the worker thread: the speed sweep of the valve shown alone, drawn as soon as it comes
+        (:meth:`~valvetrain.web.session.Session.sweep_one`: a fraction of the whole design's time), then the whole
+        design of the good document with every valve's sweep (:meth:`~valvetrain.web.session.Session.settle`), its
+        checks to the table; a newer change stops both at their next speed."""
         self.generation += 1
-        generation, seq = self.generation, self.sweep_seq
+        generation, seq, valve = self.generation, self.sweep_seq, self.valve
         self.sweep_status.text = WORDS[self.lang]["sweeping"]
         document = self.session.document
 
@@ -925,30 +929,44 @@ class Designer:
         def work():
             began = _now()
             try:
+                first = self.session.sweep_one(document, valve, progress=progress)
+                if first is not None:
+                    self.doc.add_next_tick_callback(partial(self.draw_sweep_of, generation, valve, first, began, seq))
                 result = self.session.settle(document, progress=progress)
             except Stale:
                 return
-            self.doc.add_next_tick_callback(partial(self.draw_sweep, generation, result, began, seq))
+            self.doc.add_next_tick_callback(partial(self.draw_sweep, generation, result, began,
+                                                    0 if first is not None else seq))
 
         SWEEP_WORKERS.submit(work)
-
-    def _sweep_of(self, result):
-        sweeps = result.get("sweeps") or {}
-        return sweeps.get(self.valve) or next(iter(sweeps.values()), None)
 
     def _sweep_curves(self, sw, sources):
         _send(sources["force"], {"x": _array(sw["speed_rpm"]), "y": _array(sw["min_contact_force_N"])})
         _send(sources["seating"], {"x": _array(sw["speed_rpm"]),
                                    "y": np.abs(_array(sw["seating_velocity_m_s"]))})
 
+    def draw_sweep_of(self, generation, valve, sweep, began, seq=0) -> None:
+        """Draw the sweep of one valve (:meth:`start_sweep`'s first answer) if it is the newest redraw's; ``began``
+        as for :meth:`redraw`, when the worker took it up; ``seq`` the page's request of the design."""
+        if generation != self.generation:
+            return
+        self.sweeps[valve] = sweep
+        _hold(self.sweep_hold)
+        try:
+            self._sweep_panel()
+        finally:
+            _count(self.sweep_stamp, began, seq)
+
     def draw_sweep(self, generation, result, began, seq=0) -> None:
         """Keep the whole design of redraw ``generation`` if it is the newest: its checks to the table, its sweeps
         to the sweep panel; ``began`` as for :meth:`redraw`, when the worker took it up; ``seq`` the page's request
-        of the design."""
+        of the design (0: its panel drawn already, from the valve's own sweep)."""
         if generation != self.generation:
             return
         self.session.settled(result)
-        _hold(self.sweep_hold)
+        self.sweeps = dict(result.get("sweeps") or {}) if result["ok"] else {}
+        if seq:
+            _hold(self.sweep_hold)
         try:
             if result["ok"] and result["results"] is not None:
                 self._checks()
@@ -957,17 +975,16 @@ class Designer:
             _count(self.sweep_stamp, began, seq)
 
     def _sweep_panel(self):
-        """The sweep panel of the whole design kept (its problems in the panel's label when it did not design)."""
-        result = self.session.full
-        if not result["ok"]:
-            self.sweep_status.text = "; ".join(p["text"] for p in result["errors"])
-            return
-        sw = self._sweep_of(result)
+        """The sweep panel of the valve shown; without its sweep, its label says that the whole design is to come,
+        the problems of the whole design when it did not design, or a dash (the whole design swept no such valve)."""
+        sw = self.sweeps.get(self.valve)
         if sw is None:
-            self.sweep_status.text = "-"
+            full = self.session.full
+            self.sweep_status.text = (WORDS[self.lang]["sweeping"] if full is None
+                                      else "; ".join(p["text"] for p in full["errors"]) or "-")
             return
         self._sweep_curves(sw, self.sweep_sources)
-        base = self._sweep_of(self.base_sweep) if self.base_sweep is not None else None
+        base = (self.base_sweeps or {}).get(self.valve)
         if base is not None:
             self._sweep_curves(base, self.base_sweep_sources)
         for key in ("force", "seating"):
@@ -1137,9 +1154,8 @@ class Designer:
         self.redraw(sweep=False)
 
     def on_speed(self, attr, old, new) -> None:
-        full = self.session.full
-        if full is not None and full["ok"] and self._sweep_of(full) is not None:
-            self._at_speed(self._sweep_of(full))
+        if self.sweeps.get(self.valve) is not None:
+            self._at_speed(self.sweeps[self.valve])
 
     def on_overlay(self, attr, old, new) -> None:
         """A specification file overlaid: designed and pinned as the baseline that the plots and the checks
@@ -1161,7 +1177,7 @@ class Designer:
                 name=name, message="; ".join(p["text"] for p in result["errors"]))
             return
         self.session.baseline = result
-        self.base_sweep = None
+        self.base_sweeps = None
         self.status.text = ""
         self.redraw(sweep=False)
 
@@ -1189,8 +1205,7 @@ class Designer:
 
     def on_pin(self) -> None:
         self.session.pin()
-        full = self.session.full
-        self.base_sweep = full if full is not None and full["ok"] else None
+        self.base_sweeps = dict(self.sweeps)
         self.redraw(sweep=False)
 
 

@@ -693,6 +693,19 @@ class Session:
             return api.design(plain, sweeps=True, progress=progress)
         return {**api.sweep(plain, progress=progress), "results": None}
 
+    @staticmethod
+    def sweep_one(document, name, progress=None) -> dict | None:
+        """The speed-sweep series of valve ``name`` of a good document alone (:func:`valvetrain.api.sweep` of that
+        valve): the whole design's (:meth:`settle`) sweep of it in a fraction of the time.  None where the whole
+        design sweeps no such valve (another valve has a ``[dynamics]`` section and this one none) or the sweep does
+        not come (the whole design says why).  ``progress`` as for :meth:`settle`."""
+        plain = without_nones(document)
+        valves = plain.get("valves", {})
+        if name not in ([n for n, v in valves.items() if "dynamics" in v] or list(valves)):
+            return None
+        result = api.sweep(plain, progress=progress, names=[name])
+        return result["sweeps"][name] if result["ok"] else None
+
     def settled(self, result) -> None:
         """Keep the whole design (:meth:`settle`) of the good document."""
         self.full = result
