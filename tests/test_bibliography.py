@@ -18,8 +18,11 @@ def test_bibliography_entries_are_complete():
         assert work.authors, key                   # authors, editor or institution, or NO_AUTHORS said so
         assert work.title and work.kind and work.language, key
         assert re.fullmatch(r"1[89]\d\d|20\d\d", work.year) or work.year == UNKNOWN, key
-        if work.authors == NO_AUTHORS:
-            assert "[" in work.title, key         # original-language title with a translation
+        if work.language != "English":
+            assert work.translation, key          # a title in another language with its translation
+        assert not re.search(r"[\u3000-\u9fff]", work.reference() + work.reference("ru")), key  # no CJK glyph
+        if work.authors == NO_AUTHORS or work.year == UNKNOWN:   # said so in words, never "(n.d.)"
+            assert "not given in the document" in work.reference(), key
         assert work.short.endswith(f"({work.year})") or work.year == UNKNOWN or work.short.startswith("EN "), key
     assert len({w.short for w in WORKS.values()}) == len(WORKS)
     assert cite("shang1988", "eq. (2.6)") == "Shang Hanji (1988), eq. (2.6)"

@@ -162,3 +162,70 @@ def test_the_shaft_piece_before_the_first_station_goes_half_to_the_drive_end():
     (as test_lumped_shaft_inertia_of_a_uniform_shaft)."""
     inertia = shaft.lumped_shaft_inertia(np.array([0.0, 0.1, 0.2]), [0.3], [0.02], [0.0], 7850.0)
     assert inertia == pytest.approx([6.1653755e-6, 1.2330751e-5, 1.8496127e-5], rel=1e-7)
+
+
+KD, K1, JS, J1 = 7200.0, 1.3e5, 2.2e-3, 1.0e-3
+"""The two-mass chain of the closed-form tests: ground -k_d- J_s -k_1- J_1 [N m/rad, kg m^2]."""
+
+
+def two_mass_by_hand(omega, torque, zeta):
+    """The steady twist (phi_s, phi_1) of ground -k_d- J_s -k_1- J_1 under a torque T exp(i W t) on J_1, by hand:
+    the modes from the characteristic equation J_s J_1 w^4 - (J_s k_1 + J_1 (k_d + k_1)) w^2 + k_d k_1 = 0, the shape
+    of mode j phi_1 / phi_s = (k_d + k_1 - w_j^2 J_s) / k_1 from the first row of (K - w^2 M) u = 0, scaled to
+    u^T M u = 1; the damping matrix C = M U diag(2 zeta w_j) U^T M; and the 2 x 2 complex system
+    (K - W^2 M + i W C) phi = (0, T) solved by Cramer's rule."""
+    a, b, c = JS * J1, JS * K1 + J1 * (KD + K1), KD * K1
+    w2 = (b + np.array([-1.0, 1.0]) * np.sqrt(b * b - 4 * a * c)) / (2 * a)
+    ratio = (KD + K1 - w2 * JS) / K1
+    u = np.vstack([np.ones(2), ratio]) / np.sqrt(JS + J1 * ratio**2)
+    m = np.diag([JS, J1])
+    damping = m @ u @ np.diag(2.0 * zeta * np.sqrt(w2)) @ u.T @ m
+    z = np.array([[KD + K1, -K1], [-K1, K1]]) - omega**2 * m + 1j * omega * damping
+    det = z[0, 0] * z[1, 1] - z[0, 1] * z[1, 0]
+    return np.array([-z[0, 1] * torque, z[0, 0] * torque]) / det, np.sqrt(w2)
+
+
+@pytest.mark.parametrize("omega, zeta", [(300.0, 0.0), (1400.0, 0.0), (5000.0, 0.0), (300.0, 0.05),
+                                         (1400.0, 0.05), (1495.9117, 0.05), (5000.0, 0.05), (13788.614, 0.05)])
+def test_the_forced_response_of_two_masses_is_the_closed_form(omega, zeta):
+    """Modal superposition against the closed form of the damped two-mass torsional system (two_mass_by_hand):
+    its natural frequencies 1495.9117 and 13788.614 rad/s (test_sprocket_drive_and_an_elastic_shaft_...) and the
+    steady amplitude under 10 N m on the far mass, undamped (Cramer's rule on K - W^2 M; no steady amplitude at
+    its resonances) and with 5 % modal damping, below, at and above both resonances, to 1e-9."""
+    expected, w = two_mass_by_hand(omega, 10.0, zeta)
+    modes, shapes = shaft.torsional_modes(*shaft.with_drive_end(np.array([K1]), np.array([J1]), KD, JS))
+    assert modes == pytest.approx(w, rel=1e-12)
+    phi = shaft.forced_response(modes, shapes, zeta, np.array([0.0, 10.0 + 0j]), np.array(omega))
+    assert phi == pytest.approx(expected, rel=1e-9)
+
+
+def test_at_resonance_the_damped_amplitude_is_the_static_one_over_two_zeta_of_its_mode():
+    """A torque in the shape of mode 1 (T = M u_1 t) drives mode 1 alone: at W = w_1 its amplitude is the static
+    u_1 t / w_1^2 over 2 zeta, with the phase -90 deg (Den Hartog (1956), the single-degree system's resonance)."""
+    modes, shapes = shaft.torsional_modes(*shaft.with_drive_end(np.array([K1]), np.array([J1]), KD, JS))
+    torque = np.diag([JS, J1]) @ shapes[:, 0] * 3.0
+    phi = shaft.forced_response(modes, shapes, 0.02, torque.astype(complex), np.array(modes[0]))
+    assert phi == pytest.approx(-1j * shapes[:, 0] * 3.0 / modes[0] ** 2 / (2 * 0.02), rel=1e-10)
+
+
+def test_a_steady_torque_twists_the_shaft_as_its_flexibility_matrix():
+    """W = 0: modal superposition gives K^-1 T, here against the flexibility of the shaft held at its drive end,
+    phi_i = sum_j min(c_i, c_j) T_j (:func:`valvetrain.camshaft.twist`, a formula of its own): three stations of a
+    stepped shaft."""
+    compliance = shaft.shaft_compliance(np.array([0.065, 0.155, 0.245]), np.array([0.02, 0.38]),
+                                        np.array([0.025, 0.032]), np.zeros(2), 8.1e10)
+    torque = np.array([3.0, -1.5, 2.25])
+    modes, shapes = shaft.torsional_modes(shaft.station_stiffness(compliance), np.array([1e-4, 2e-4, 3e-4]))
+    phi = shaft.forced_response(modes, shapes, 0.05, torque.astype(complex), np.array(0.0))
+    assert phi.real == pytest.approx(shaft.twist(compliance, torque[:, None])[:, 0], rel=1e-10)
+    assert np.abs(phi.imag).max() == 0.0
+
+
+def test_orders_round_trip():
+    """order_series undoes order_phasors for a signal of orders below the cut, at any length above twice it."""
+    x = 0.7 + np.cos(PSI) * 2.0 - 0.3 * np.sin(7 * PSI) + 0.05 * np.cos(12 * PSI + 0.4)
+    c = shaft.order_phasors(x, 20)
+    assert shaft.order_series(c, N) == pytest.approx(x, abs=1e-12)
+    assert shaft.order_series(c, 72) == pytest.approx(x[:: N // 72], abs=1e-12)
+    with pytest.raises(ValueError, match="more than 40 samples"):
+        shaft.order_series(c, 40)

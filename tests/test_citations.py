@@ -1,6 +1,7 @@
 """What users see cites real works: no internal tags (seed numbers, spec files, misprint tags) in the report,
 results.json, command-line help, public docstrings, README and examples; every citation is in the bibliography."""
 
+from html import unescape
 import importlib
 import inspect
 import io
@@ -14,9 +15,8 @@ from click.testing import CliRunner
 import pytest
 
 import valvetrain
-from valvetrain.bibliography import WORKS, cited_in, entry
+from valvetrain.bibliography import WORKS, cited_in
 from valvetrain.cli import main
-from valvetrain.report.russian import REFERENCES, SHORT
 
 ROOT = Path(__file__).parent.parent
 SRC = Path(valvetrain.__file__).parent
@@ -71,16 +71,21 @@ def test_report_and_results_cite_real_works(runs, label):
     results = (runs[label] / "results.json").read_text(encoding="utf-8")
     assert tags(html) == [] and tags(results) == []
     assert unknown_citations(html) == []
-    # the report ends with the full references of the works it cites, and only those; the Russian report cites
-    # the Russian works by their Russian names and lists them in Russian (issue 24)
-    cited = cited_in(html) + [k for k, w in WORKS.items() if label == "ru" and SHORT.get(w.short, "\0") in html]
-    assert "shang1988" in cited or label == "v8"
-    for key in cited:
-        shown = REFERENCES[WORKS[key].short] if label == "ru" and WORKS[key].short in REFERENCES else entry(key)
-        assert shown.replace("'", "&#39;").replace('"', "&#34;") in html
-    for key in set(WORKS) - set(cited):
-        assert WORKS[key].reference().replace("'", "&#39;").replace('"', "&#34;") not in html
-        assert WORKS[key].short not in REFERENCES or REFERENCES[WORKS[key].short] not in html
+    # issue 39: the note cites each work by its number in the list of sources, numbered in the order of the first
+    # citation (GOST 7.32), and lists the works it cites and only those, each in the form of GOST 7.1 in its own
+    # language; no "(n.d.)" or "(б. г.)" is left
+    lang = "ru" if label == "ru" else "en"
+    sources = html[html.index('<ol class="bibliography">'):]
+    items = re.findall(r'<li value="(\d+)" lang="[^"]+">(.*?)</li>', sources[:sources.index("</ol>")])
+    assert [int(n) for n, _ in items] == list(range(1, len(items) + 1)) and len(items) >= 3
+    references = {unescape(text) for _, text in items}
+    cited = [key for key, work in WORKS.items() if work.reference(lang) in references]
+    assert len(cited) == len(items) and ("shang1988" in cited or label == "v8")
+    text = unescape(re.sub(r"<[^>]+>", "", html[:html.index('<ol class="bibliography">')]))
+    numbers = [int(n) for n in re.findall(r"\[(\d+)(?:, [^\]]*)?\]", text)]
+    assert set(numbers) == set(range(1, len(items) + 1))
+    assert [n for i, n in enumerate(numbers) if n not in numbers[:i]] == list(range(1, len(items) + 1))
+    assert not any(WORKS[key].short in text for key in WORKS) and "n.d." not in html and "б. г." not in html
     # every source of a warning is a citation of the bibliography
     for w in json.loads(results)["warnings"]:
         assert cited_in(w["source"]), w

@@ -7,7 +7,8 @@ import numpy as np
 import pytest
 
 from valvetrain.crank import pressure
-from valvetrain.files import TableFileError, read_indicator, read_lift_table
+from valvetrain.files import (BreathingFileError, TableFileError, read_cd_table, read_indicator, read_lift_table,
+                              read_valve_lift)
 
 
 def test_p_phi_file_round_trip(tmp_path):
@@ -87,3 +88,27 @@ def test_lift_table_values_outside_any_valve_are_refused(tmp_path, column, facto
     line = (14 if column == "angle" else 8) + (1 if comment else 0)
     with pytest.raises(TableFileError, match=re.escape(message.format(line=line))):
         read_lift_table(f)
+
+
+def test_valve_lift_and_cd_files(tmp_path):
+    """The breathing's files: a lift in crank deg from the gas-exchange TDC and a C_D table of one or two columns;
+    what cannot be used is refused naming the line and the key that names the file."""
+    lift = tmp_path / "lift.csv"
+    lift.write_text("# measured\ncrank_deg,lift_mm\n-20,0\n0,1.5\n100,8\n240,0\n", encoding="utf-8")
+    angles, lifts = read_valve_lift(lift)
+    assert list(angles) == [-20, 0, 100, 240] and lifts[2] == 8.0
+    cd = tmp_path / "cd.csv"
+    cd.write_text("l_over_d,cd\n0,0\n0.1,0.4\n0.3,0.7\n", encoding="utf-8")
+    x, forward, reverse = read_cd_table(cd)
+    assert list(forward) == list(reverse) == [0.0, 0.4, 0.7]
+    for path, text, key, message in [
+            (lift, "crank_deg,lift_mm\n0,0\n10,1\n10,2\n30,0\n", "lift_file", r"lift.csv:4: crank_deg = 10 must be "
+             "larger than the previous 10"),
+            (lift, "crank_deg,lift_mm\n0,0\n10,-1\n20,2\n30,0\n", "lift_file", r"lift.csv:3: lift_mm = -1: allowed"),
+            (lift, "crank_deg,lift_mm\n0,0\n300,1\n600,2\n720,0\n", "lift_file", r"span 720 crank deg"),
+            (cd, "l_over_d,cd_forward,cd_reverse\n0,0,0\n0.1,0.4\n", "cd_file", r"cd.csv:3: expected 3 values, found 2"),
+            (cd, "l_over_d,cd\n0,0\n0.1,1.2\n", "cd_file", r"row 2: forward C_D = 1.2; allowed 0 to 1")]:
+        path.write_text(text, encoding="utf-8")
+        with pytest.raises(BreathingFileError, match=message) as caught:
+            (read_valve_lift if key == "lift_file" else read_cd_table)(path)
+        assert caught.value.key == key

@@ -9,6 +9,7 @@ hypothesis; the runs are derandomized and keep no example database, so CI sees t
 """
 
 from hypothesis import given, settings, strategies as st
+import pytest
 
 from fuzz_contract import BASES, FUZZ, assert_contract, fuzz
 
@@ -59,3 +60,51 @@ def test_a_command_case_is_classified_by_its_exit_status():
     infeasible = fuzz.run_case({"base": "example", "ops": [], "command": ["optimize", "--maxiter", "1", "--no-jump",
                                                                          "3"]}, BASES, timeout=120.0)
     assert infeasible["outcome"] == "infeasible" and "separation" in " ".join(infeasible["detail"]), infeasible
+
+
+def test_the_fuzzer_reaches_the_finger_the_adjuster_the_camshaft_the_tolerances_and_the_designer():
+    """Issue 36: the random cases put the finger follower on valves (its variants, measured tables among the bases)
+    and mutate its keys, add a lash adjuster and a [camshaft] and mutate their keys, run `valvetrain tolerance` with
+    drawn [[tolerances]] and damaged records, and run the designer's session and `valvetrain serve`."""
+    cases = fuzz.random_cases(400, "36", BASES)
+    ops = [op for c in cases for op in c["ops"]]
+    kinds = {op[0] for op in ops}
+    assert {"finger", "tolerances", "stage", "section"} <= kinds
+    assert {op[2] for op in ops if op[0] == "finger"} == set(fuzz.FINGER_VARIANTS)
+    assert any(op[0] == "stage" and op[2] == "lash_adjuster" for op in ops)
+    assert ["section", "add_camshaft"] in ops
+    mutated = [op[1] for op in ops if op[0] in ("scale", "set", "type", "delete")]
+    assert any(p[0] == "camshaft" for p in mutated)
+    assert any(len(p) == 4 and p[2] == "cam" and str(p[3]).startswith("finger_") for p in mutated)
+    assert any(len(p) > 3 and p[2] == "lash_adjuster" for p in mutated)
+    commands = [c["command"] for c in cases if c.get("command")]
+    assert any(c[0] == "tolerance" and any(a.startswith("<damage:") for a in c) for c in commands)
+    assert any(c.get("session") for c in cases) and any(c.get("serve") for c in cases)
+
+
+@pytest.mark.parametrize("case", [
+    # the findings of the campaign of issue 36, each a traceback before
+    {"base": "law:table", "ops": [["finger", "intake", "pivot_out_of_reach"]]},
+    {"base": "example", "ops": [["stage", "intake", "lash_adjuster"],
+                                ["set", ["valves", "intake", "lash_adjuster", "supply_pressure_MPa"], 0.0],
+                                ["set", ["valves", "intake", "lash_adjuster", "plunger_spring_N"], 0.0]]},
+    {"base": "examples/modern-dohc-roller-finger.toml", "ops": [["finger", "intake", "tip_off_axis"]]},
+    {"base": "example", "ops": [["section", "add_camshaft"],
+                                ["set", ["camshaft", "section_bores_mm"], [24.999, 31.999]]]},
+    {"base": "examples/measured-lobe.toml", "ops": [], "session": [["drag", "intake", 0, 10.0, 5.0], ["toml"]]},
+], ids=["finger on a table, out of reach", "adjuster without refill", "finger pad off the tip", "camshaft wall 0.5 um",
+        "designer on a measured table"])
+def test_the_findings_of_issue_36_run_or_are_refused(case):
+    rec = fuzz.run_case(case, BASES, timeout=120.0)
+    assert rec["outcome"] in ("ok", "refused"), rec
+
+
+def test_a_tolerance_case_with_damaged_records_designs_them_again():
+    """A tolerance case whose records.jsonl is damaged (a passing check made an unevaluated failure) after its first
+    run: the run again designs that sample again and gives the first run's results (else: nonsense)."""
+    case = {"base": "example", "ops": [["tolerances", [{"key": "valves.intake.throat_diameter_mm",
+                                                         "distribution": "normal", "sigma": 0.01, "low": 37.2,
+                                                         "high": 37.21}]]],
+            "command": ["tolerance", "--samples", "3", "<damage:passed_flipped>"]}
+    rec = fuzz.run_case(case, BASES, timeout=120.0)
+    assert rec["outcome"] == "ok", rec

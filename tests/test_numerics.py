@@ -98,3 +98,27 @@ def test_level_span_is_nan_where_the_level_is_not_crossed_twice():
     """Never above the level, or above it at an end of the interval: no span."""
     assert np.isnan(level_span(np.sin, 0.0, np.pi, 2.0)).all()
     assert np.isnan(level_span(np.cos, 0.0, np.pi, 0.5)).all()
+
+
+def test_extremum_of_a_symmetric_function_is_the_first_of_its_equal_peaks():
+    """3 - (x^2 - 1)^2 peaks at -1 and +1 with the value 3 (analytic); the right peak made larger by two units in the
+    last place (round-off, which another BLAS kernel may put on the other side) must not move the answer from the
+    first peak, -1 (before: +1)."""
+    def fn(x):
+        return (3.0 - (x**2 - 1.0) ** 2) * np.where(x > 0.0, 1.0 + 4.4e-16, 1.0)
+
+    assert fn(np.array([1.0]))[0] > fn(np.array([-1.0]))[0]
+    x, y = extremum(fn, [-2.0, 0.0, 2.0], "max")
+    assert abs(x + 1.0) < 1e-6 and y == 3.0
+
+
+def test_first_largest_decides_a_tie_by_order():
+    """Values within 16 units in the last place of the largest are its equals: the first of them is taken along an
+    axis too; a value larger by more than that wins."""
+    from valvetrain.numerics import TIE_RTOL, first_largest
+
+    row = np.array([1.0, 5.0, 2.0, 5.0 * (1.0 + 8 * np.finfo(float).eps)])
+    assert first_largest(row) == 1 and int(np.argmax(row)) == 3
+    assert first_largest(np.array([1.0, 5.0, 5.0 * (1.0 + 4 * TIE_RTOL)])) == 2
+    assert list(first_largest(np.vstack([row, row[::-1]]), axis=1)) == [1, 0]
+    assert first_largest([0.3, -np.inf, np.inf, np.inf]) == 2

@@ -115,6 +115,29 @@ def test_invalid_point_is_a_row(tmp_path):
     assert "refused" in (out / "study.csv").read_text(encoding="utf-8").splitlines()[2]
 
 
+def test_a_point_whose_design_raises_an_error_is_a_failed_row_and_the_study_finishes(tmp_path, monkeypatch):
+    """Issue 36: an error inside one point's design (a ValueError of the finger's linkage met one) stopped the whole
+    study with a traceback; the point is a row with status 'failed' and the error named, the others are designed."""
+    f = tmp_path / "engine.toml"
+    f.write_text(appendix_text(), encoding="utf-8")
+    design = study_module.run
+
+    def raises_at_7000(spec, **kw):
+        if spec.engine.rated_speed_rpm == 7000:
+            raise ValueError("the valve pad at 0.01 m from the pivot cannot give a valve lift of 0.0135 m")
+        return design(spec, **kw)
+
+    monkeypatch.setattr(study_module, "run", raises_at_7000)
+    out = tmp_path / "o"
+    result = CliRunner().invoke(main, ["study", str(f), "--grid", "engine.rated_speed_rpm=6000,7000", "--out",
+                                       str(out)])
+    assert result.exit_code == 0, result.output
+    assert "2 design points (0 refused, 1 failed with an error of valvetrain: the design stopped" in result.output
+    ok, failed = json.loads((out / "study.json").read_text(encoding="utf-8"))["points"]
+    assert ok["status"] == "ok" and failed["status"] == "failed" and failed["intake.fullness"] is None
+    assert "(ValueError: the valve pad at 0.01 m" in failed["message"]
+
+
 def test_unreachable_scheduler_is_one_line(spec_file, tmp_path):
     pytest.importorskip("distributed")
     result = CliRunner().invoke(main, ["study", str(spec_file), *GRID, "--out", str(tmp_path / "o"),

@@ -69,6 +69,29 @@ def test_failure_probability_of_a_linear_margin(tmp_path):
     assert c["sensitivities"]["valves.intake.throat_diameter_mm"] == pytest.approx(1.0)
 
 
+def test_a_check_the_file_accepts_is_shown_accepted_with_its_probability_of_failing(tmp_path):
+    """Issue 36: the checks the file accepts ([[accepted]]) were reported as P(fail) = 1 like open ones while `run`
+    reports them as accepted.  The throat check of test_failure_probability_of_a_linear_margin accepted in the file:
+    marked accepted in tolerance.json, on the command line and in the report, its probability that of failing its
+    limit, Phi(-0.5) = 0.3085 (closed form) within its Wilson interval; `run` of the nominal file lists it among the
+    accepted (it fails at 36.8 mm < 0.46 x 80 mm)."""
+    accept = ('\n[[accepted]]\nvalve = "intake"\nquantity = "flow.throat_to_bore"\nreason = "a port of the old head"\n')
+    path = tmp_path / "engine.toml"
+    path.write_text(appendix_text().replace("throat_diameter_mm = 36.8", "throat_diameter_mm = 37.0") + THROAT
+                    + accept, encoding="utf-8")
+    result = tolerance(path, tmp_path / "out", "--samples", "200", "--seed", "7")
+    c = outputs(tmp_path / "out")[1]["checks"]["intake:flow.throat_to_bore"]
+    low, high = c["confidence_95"]
+    assert c["accepted"] and low <= norm.cdf(-0.5) <= high and 0.0 < c["probability"] < 1.0
+    assert f"  accepted in the specification: intake: throat diameter / bore: P(fail) = {c['probability']:.4g}" in (
+        result.output)
+    assert "warning, accepted in the specification</td>" in (tmp_path / "out" / "tolerance.html").read_text("utf-8")
+    nominal = tmp_path / "nominal.toml"
+    nominal.write_text(appendix_text() + accept, encoding="utf-8")
+    run = CliRunner().invoke(main, ["validate", str(nominal)])
+    assert run.exit_code == 0 and "throat diameter / bore" not in run.output    # accepted: not an open warning
+
+
 def test_wilson_interval_against_newcombe():
     """Newcombe (1998), Table I, method 3 (the score interval): 81/263 ->
     0.2553-0.3662, 15/148 -> 0.0624-0.1605, 0/20 -> 0-0.1611."""
@@ -95,6 +118,39 @@ def test_normal_tolerance_is_stratified_in_probability(tmp_path):
     x = draw(load_spec(path), [36.8], 40, "lhs", seed=1)[:, 0]
     strata = np.floor(norm.cdf((x - 36.8) / 0.4) * 40).astype(int)
     assert sorted(strata) == list(range(40))
+
+
+@pytest.mark.parametrize("k", [8.0, 20.0, 40.0, -40.0])
+def test_a_normal_truncated_far_in_its_tail_is_drawn_inside_its_range(tmp_path, k):
+    """Issue 36: a normal throat tolerance (sigma 0.01 mm) truncated to [mu + k sigma, mu + (k + 1) sigma] drew inf
+    from 8 sigma on (Phi(alpha) and Phi(beta) round to 1) and draws outside the range; every draw is now finite and in
+    the range, and at its probability u: the truncated normal's distribution function at the draw, F(x) = (Q(alpha) -
+    Q(x)) / (Q(alpha) - Q(beta)) with Q the upper tail, evaluated in logarithms (scipy.special.log_ndtr, an
+    independent forward evaluation), returns the u of the Latin hypercube (to 1e-9)."""
+    from scipy.special import log_ndtr
+
+    mu, sigma = 36.8, 0.01
+    low, high = (mu + k * sigma, mu + (k + 1) * sigma) if k > 0 else (mu + (k - 1) * sigma, mu + k * sigma)
+    path = tmp_path / "engine.toml"
+    path.write_text(appendix_text() + f"""
+[[tolerances]]
+key = "valves.intake.throat_diameter_mm"
+distribution = "normal"
+sigma = {sigma}
+low = {low!r}
+high = {high!r}
+""", encoding="utf-8")
+    x = draw(load_spec(path), [mu], 200, "lhs", seed=5)[:, 0]
+    u = unit_samples(200, 1, "lhs", seed=5)[:, 0]
+    assert np.all(np.isfinite(x)) and np.all((x >= low) & (x <= high))
+    z, a, b = (x - mu) / sigma, (low - mu) / sigma, (high - mu) / sigma
+    if k > 0:   # upper tail Q(t) = Phi(-t)
+        q = log_ndtr(-z) - log_ndtr(-a)
+        f = np.expm1(q) / np.expm1(log_ndtr(-b) - log_ndtr(-a))
+    else:       # the mirror: the lower tail Phi(t)
+        f = np.expm1(log_ndtr(z) - log_ndtr(b)) / np.expm1(log_ndtr(a) - log_ndtr(b))
+        f = 1.0 - f
+    np.testing.assert_allclose(f, u, atol=1e-9)
 
 
 @pytest.fixture(scope="module")
@@ -173,6 +229,89 @@ def test_lines_that_are_no_records_are_designed_again(spec_file, serial, tmp_pat
     assert "records of another study" in tolerance(spec_file, out, *ARGS, code=2).output
 
 
+def _damage(index, record, how):
+    """A sample's record (parsed) damaged as the fuzz campaign of issue 36 damaged records.jsonl: fields of the wrong
+    type, a margin that is not finite, an entry cut short, a flag that no longer agrees with the margin."""
+    cid, row = next(iter(record["checks"].items()))
+    if how == "margin_text":
+        row[0] = "0.5"
+    elif how == "margin_nan":
+        return json.dumps({"index": index, "record": record}).replace(json.dumps(row[0]), "NaN", 1)
+    elif how == "short_entry":
+        record["checks"][cid] = row[:2]
+    elif how == "checks_list":
+        record["checks"] = list(record["checks"].items())
+    elif how == "passed_flipped":
+        cid, row = next((c, r) for c, r in record["checks"].items() if r[0] is not None and r[0] > 0.01)
+        row[1] = False
+    elif how == "headlines_text":
+        record["headlines"] = {"intake": "fast"}
+    elif how == "status_other":
+        record["status"] = "maybe"
+    elif how == "made_unevaluated":     # a passing check made an unevaluated failure: no field tells, the hash does
+        cid, row = next((c, r) for c, r in record["checks"].items() if r[1])
+        row[0], row[1] = None, False
+    return None
+
+
+@pytest.mark.parametrize("how", ["margin_text", "margin_nan", "short_entry", "checks_list", "passed_flipped",
+                                 "headlines_text", "status_other", "made_unevaluated"])
+def test_a_damaged_record_is_designed_again(spec_file, serial, tmp_path, how):
+    """Issue 36: a records file with the right header and a record of the wrong shape stopped the run with an
+    AttributeError, IndexError or ValueError, or was taken with other results (a check that passes counted failed);
+    the record is designed again (a note names its line) and the results are those of the uninterrupted run."""
+    out = tmp_path / "out"
+    tolerance(spec_file, out, *ARGS)
+    lines = (out / "records.jsonl").read_text(encoding="utf-8").split("\n")
+    item = json.loads(lines[1])
+    lines[1] = _damage(item["index"], item["record"], how) or json.dumps(item)   # the hash kept: now wrong
+    (out / "records.jsonl").write_text("\n".join(lines), encoding="utf-8")
+    (out / "tolerance.json").unlink()
+    result = tolerance(spec_file, out, *ARGS)
+    assert "1 samples designed (5 kept from before)" in result.output
+    assert f"records.jsonl line 2: the record of sample {item['index']}" in result.output or (
+        "records.jsonl line 2: not a line of JSON" in result.output)
+    assert outputs(out) == serial
+
+
+def test_a_records_file_that_is_a_folder_is_refused(spec_file, tmp_path):
+    """Issue 36: records.jsonl (or tolerance.json) a folder: IsADirectoryError; refused, exit 2, nothing in it
+    touched."""
+    for name in ("records.jsonl", "tolerance.json"):
+        out = tmp_path / name.replace(".", "_")
+        (out / name).mkdir(parents=True)
+        (out / name / "mine.txt").write_text("kept", encoding="utf-8")
+        result = tolerance(spec_file, out, *ARGS, code=2)
+        assert result.output.splitlines()[-1].startswith("error: ")
+        assert name in result.output or "did not write" in result.output
+        assert (out / name / "mine.txt").read_text(encoding="utf-8") == "kept"
+
+
+def test_a_sample_whose_design_raises_an_error_is_recorded_and_not_designed_again(spec_file, tmp_path,
+                                                                                   monkeypatch):
+    """Issue 36: an error inside one sample's design stopped the study with a traceback, and the run again met the
+    same sample; the sample is recorded as failed (its error named), the study finishes, and the run again keeps
+    the record."""
+    from valvetrain import tolerance as tolerance_module
+
+    design, calls = tolerance_module.run, []
+
+    def raises_once(spec, **kw):
+        calls.append(1)
+        if len(calls) == 2:
+            raise ValueError("the valve pad at 0.01 m from the pivot cannot give a valve lift of 0.0135 m")
+        return design(spec, **kw)
+
+    monkeypatch.setattr(tolerance_module, "run", raises_once)
+    out = tmp_path / "out"
+    result = tolerance(spec_file, out, *ARGS)
+    assert "1 refused (1 of them failed with an error of valvetrain: the design stopped" in result.output
+    records, results = outputs(out)
+    assert [r["record"]["status"] for r in records].count("failed") == 1
+    assert results["failed"]["samples"] == 1 and "ValueError: the valve pad" in results["failed"]["messages"][0]
+    assert "0 samples designed (6 kept from before)" in tolerance(spec_file, out, *ARGS).output
+
+
 def test_other_inputs_in_the_folder_are_refused(spec_file, serial, tmp_path):
     out = tmp_path / "out"
     tolerance(spec_file, out, *ARGS)
@@ -191,6 +330,26 @@ def test_a_folder_with_user_files_is_refused(spec_file, tmp_path):
     assert sorted(p.name for p in out.iterdir()) == ["notes.txt"]
 
 
+def test_ten_million_samples_are_refused_with_an_estimate(tmp_path, monkeypatch):
+    """Issue 36: --samples 10000000 started weeks of work without a word; as study above 10,000 points, it is refused
+    with exit 2, an estimate from two timed designs of the file (none drawn: the samples are not drawn before) and the
+    option that allows it; --max-samples allows a study above the default limit."""
+    from valvetrain import tolerance as tolerance_module
+
+    path = tmp_path / "engine.toml"
+    path.write_text(appendix_text() + THROAT, encoding="utf-8")
+    drawn = []
+    monkeypatch.setattr(tolerance_module, "unit_samples", lambda *a: drawn.append(a))
+    result = tolerance(path, tmp_path / "out", "--samples", "10000000", code=2)
+    (line,) = result.output.splitlines()
+    assert line.startswith("error: --samples: 10,000,000 samples: about ") and " in 1 process at the " in line
+    assert line.endswith("allowed at most 10,000 samples unless --max-samples 10000000 is given")
+    assert drawn == [] and not (tmp_path / "out").exists()
+    assert "3 samples" in tolerance(path, tmp_path / "out", "--samples", "3", "--max-samples", "2", code=2).output
+    monkeypatch.undo()
+    tolerance(path, tmp_path / "out", "--samples", "3", "--max-samples", "3")
+
+
 @pytest.mark.parametrize("entry, said", [
     ('key = "valves.intake.no_such_mm"\ndistribution = "uniform"\nhalf_range = 0.1',
      "valves.intake.no_such_mm: no such key"),
@@ -200,6 +359,9 @@ def test_a_folder_with_user_files_is_refused(spec_file, tmp_path):
      "engine.bore_mm"),
     ('key = "valves.intake.spring"\ndistribution = "uniform"\nhalf_range = 0.1',
      "valves.intake.spring: a table, not a value; give one of its keys\n"),
+    # issue 36: low beyond the default cut nominal + 6 sigma (80 + 6 x 1): an empty range
+    ('key = "engine.bore_mm"\ndistribution = "normal"\nsigma = 1.0\nlow = 90.0',
+     "engine.bore_mm: the sample range [90, 86] is empty"),
 ])
 def test_bad_tolerances_are_refused_before_sampling(entry, said, tmp_path):
     """Clearance 0.25 -+ 0.3 mm reaches -0.05 mm (allowed 0 or 0.01-5 mm); a bore truncated at 3000 mm leaves

@@ -18,6 +18,15 @@ After a deliberate change of the outputs, refresh the expected fingerprints of t
 commit)::
 
     PYTHONPATH=src python tools/compare_outputs.py expected tests/data/outputs
+
+``machines [VARIANT ...]`` checks that the fingerprints do not depend on the machine: it writes them in a
+subprocess per variant, a set of environment variables (``OPENBLAS_CORETYPE=Prescott``, or several joined by
+commas), and compares each with those of this machine's defaults; without variants, every OpenBLAS kernel this
+CPU can run and numba compiling for a generic CPU (``NUMBA_CPU_NAME=generic``).  numpy's own SIMD loops can be
+narrowed with ``NPY_DISABLE_CPU_FEATURES`` (``X86_V3`` with numpy 2.4)::
+
+    PYTHONPATH=src python tools/compare_outputs.py machines
+    PYTHONPATH=src python tools/compare_outputs.py machines NPY_DISABLE_CPU_FEATURES=X86_V3 --names measured-lobe
 """
 
 import argparse
@@ -27,7 +36,10 @@ import hashlib
 import io
 import json
 import math
+import os
 from pathlib import Path
+import re
+import subprocess
 import sys
 import tempfile
 
@@ -40,19 +52,39 @@ RTOL = 1e-9
 ATOL = 1e-12
 """Absolute tolerance of a number in :func:`compare`, for values that should be zero (in the file's units)."""
 
+ANGLE_ATOL = 1e-9
+"""Absolute tolerance of an angle [deg] (a key or column named ``*_deg``), RTOL of a degree: an angle near zero is the
+difference of angles of the order of a turn and carries their round-off (a table's camshaft angles from a measured
+lobe's nose, itself fitted, come out some 1e-11 deg apart on two BLAS kernels), which RTOL of its own size would ask
+to vanish."""
+
+EXTREMUM_ATOL = math.sqrt(2.2e-16) * 360.0
+"""Absolute tolerance [deg] of the location of an extremum found by Brent's method (:data:`EXTREMA`), sqrt(eps) of a
+turn: the method stops within sqrt(eps) of the abscissa (``numerics.bounded_minimum``), and at a flat extremum the
+values are equal to round-off over some sqrt(eps) of its width, so the point it stops at moves with the round-off of
+the function (measured-lobe's rho_min_cam_deg: 0.35106824 and 0.35106829 on two BLAS kernels), while the value
+there, compared to :data:`RTOL`, does not."""
+
+EXTREMA = {"rho_min_cam_deg", "rho_max_cam_deg", "max_velocity_crank_deg", "max_acceleration_crank_deg",
+           "min_acceleration_crank_deg"}
+"""The keys of locations of extrema refined by Brent's method (``numerics.extremum``): a profile's smallest and
+largest radius, the piston's extreme velocity and accelerations."""
+
 SAMPLED = 24
 """Longest list of numbers a fingerprint keeps whole; a longer one keeps about this many and its sums."""
 
 
-def write(out, report=False):
-    """Write the numbers of every example into ``out`` (and ``report.html`` without figures where ``report``); a
-    refused specification writes ``NAME/ERROR``."""
+def write(out, report=False, names=None):
+    """Write the numbers of every example (those of ``names`` where given) into ``out`` (and ``report.html`` without
+    figures where ``report``); a refused specification writes ``NAME/ERROR``."""
     from valvetrain.design import run
     from valvetrain.export import write_outputs
     from valvetrain.specification import SpecError, example_spec, load_spec
 
-    specs = {"builtin": example_spec(), **{f.stem: load_spec(f) for f in sorted(EXAMPLES.glob("*.toml"))}}
-    for name, spec in specs.items():
+    files = {f.stem: f for f in sorted(EXAMPLES.glob("*.toml"))}
+    chosen = ["builtin", *files] if names is None else names
+    for name in chosen:
+        spec = example_spec() if name == "builtin" else load_spec(files[name])
         try:
             results = run(spec)
         except SpecError as err:
@@ -150,27 +182,83 @@ def fingerprint(folder):
     return out
 
 
-def fingerprints():
-    """The fingerprint of every example's outputs as this tree makes them, ``name -> fingerprint``."""
+def fingerprints(names=None):
+    """The fingerprint of every example's outputs (those of ``names`` where given) as this tree makes them,
+    ``name -> fingerprint``."""
     with tempfile.TemporaryDirectory() as tmp:
-        write(Path(tmp), report=True)
+        write(Path(tmp), report=True, names=names)
         return {d.name: fingerprint(d) for d in sorted(Path(tmp).iterdir())}
 
 
-def expected(out):
-    """Write the fingerprints of this tree's outputs as ``out/NAME.json``."""
+def expected(out, names=None):
+    """Write the fingerprints of this tree's outputs (of the examples ``names`` where given) as ``out/NAME.json``."""
     out.mkdir(parents=True, exist_ok=True)
-    for name, found in fingerprints().items():
+    for name, found in fingerprints(names).items():
         (out / f"{name}.json").write_text(json.dumps(found, indent=1, ensure_ascii=False) + "\n", encoding="utf-8")
 
 
-def _close(a, b, scale=0.0):
-    return abs(a - b) <= RTOL * max(abs(a), abs(b), scale) + ATOL
+OPENBLAS_KERNELS = {"Prescott": "sse3", "Core2": "ssse3", "Nehalem": "sse4_2", "Sandybridge": "avx",
+                    "Haswell": "avx2", "Zen": "avx2", "SkylakeX": "avx512f"}
+"""OpenBLAS's x86-64 kernels (``OPENBLAS_CORETYPE``) and the CPU flag each needs."""
+
+
+def variants():
+    """The default variants of :func:`machines`: each OpenBLAS kernel whose flag /proc/cpuinfo lists (Prescott alone
+    where it cannot be read) and numba compiling for a generic x86-64."""
+    try:
+        flags = set(next(line for line in Path("/proc/cpuinfo").read_text().splitlines()
+                         if line.startswith("flags")).split(":")[1].split())
+    except (OSError, StopIteration):
+        flags = {"sse3"}
+    if "pni" in flags:      # Linux's name of SSE3
+        flags.add("sse3")
+    return [f"OPENBLAS_CORETYPE={k}" for k, flag in OPENBLAS_KERNELS.items() if flag in flags] + \
+        ["NUMBA_CPU_NAME=generic"]
+
+
+def fingerprints_with(variant, names=None):
+    """The fingerprints of the examples ``names`` (every one by default) made in a subprocess with the environment
+    variables of ``variant`` (``NAME=VALUE`` joined by commas; empty: this machine's defaults)."""
+    import valvetrain
+
+    env = {**os.environ, **dict(item.split("=", 1) for item in variant.split(",") if item)}
+    env["PYTHONPATH"] = os.pathsep.join([str(Path(valvetrain.__file__).parents[1]),    # the package imported here
+                                         *filter(None, [os.environ.get("PYTHONPATH")])])
+    with tempfile.TemporaryDirectory() as tmp:
+        subprocess.run([sys.executable, __file__, "expected", tmp, *(names or [])], env=env, check=True,
+                       stdout=subprocess.DEVNULL)
+        return {p.stem: json.loads(p.read_text(encoding="utf-8")) for p in sorted(Path(tmp).glob("*.json"))}
+
+
+def machines(chosen, names=None):
+    """The number of variants (:func:`fingerprints_with`) whose fingerprints differ from this machine's defaults'
+    (:func:`compare`); the differences are printed."""
+    base = fingerprints_with("", names)
+    bad = 0
+    for variant in chosen:
+        found = fingerprints_with(variant, names)
+        lines = [line for name in base for line in compare(base[name], found.get(name), name)]
+        print(f"{variant}: {'the same' if not lines else f'{len(lines)} differences'}")
+        for line in lines[:40]:
+            print(f"  {line}")
+        bad += bool(lines)
+    return bad
+
+
+def _close(a, b, scale=0.0, atol=ATOL):
+    return abs(a - b) <= RTOL * max(abs(a), abs(b), scale) + atol
+
+
+def _atol(where):
+    """The absolute tolerance of the number at ``where`` (a path of :func:`compare`), by its key's name."""
+    name = re.sub(r"(\[\d+\])+$", "", where.rsplit("/", 1)[-1])
+    return EXTREMUM_ATOL if name in EXTREMA else ANGLE_ATOL if name.endswith("_deg") else ATOL
 
 
 def compare(want, got, where=""):
     """The differences between two fingerprints, one line each: numbers to :data:`RTOL` relative (and
-    :data:`ATOL`), everything else exactly; a sampled list's sums to :data:`RTOL` of the sum of its magnitudes."""
+    :data:`ATOL`; angles :data:`ANGLE_ATOL`, the locations of extrema :data:`EXTREMUM_ATOL`), everything else
+    exactly; a sampled list's sums to :data:`RTOL` of the sum of its magnitudes."""
     if isinstance(want, dict) and "sampled" in want and isinstance(got, dict) and "sampled" in got:
         out = compare(want["sampled"], got["sampled"], where) + compare(want["n"], got["n"], where + " (count)")
         return out + ([] if _close(want["sum"], got["sum"], want["abs"]) and _close(want["abs"], got["abs"])
@@ -182,7 +270,7 @@ def compare(want, got, where=""):
     if isinstance(want, list) and isinstance(got, list) and len(want) == len(got):
         return [line for i, (a, b) in enumerate(zip(want, got)) for line in compare(a, b, f"{where}[{i}]")]
     numbers = [isinstance(x, (int, float)) and not isinstance(x, bool) for x in (want, got)]
-    if all(numbers) and _close(want, got):
+    if all(numbers) and _close(want, got, atol=_atol(where)):
         return []
     return [] if want == got and type(want) is type(got) else [f"{where}: expected {want!r}, got {got!r}"]
 
@@ -194,12 +282,20 @@ def main():
     both = sub.add_parser("diff")
     both.add_argument("a", type=Path)
     both.add_argument("b", type=Path)
-    sub.add_parser("expected").add_argument("out", type=Path)
+    exp = sub.add_parser("expected")
+    exp.add_argument("out", type=Path)
+    exp.add_argument("names", nargs="*", help="the examples (all by default)")
+    mach = sub.add_parser("machines")
+    mach.add_argument("variants", nargs="*", help="NAME=VALUE[,NAME=VALUE...] each (default: every OpenBLAS kernel "
+                                                   "this CPU runs, NUMBA_CPU_NAME=generic)")
+    mach.add_argument("--names", nargs="*", help="the examples (all by default)")
     args = parser.parse_args()
     if args.command == "write":
         write(args.out)
     elif args.command == "expected":
-        expected(args.out)
+        expected(args.out, args.names or None)
+    elif args.command == "machines":
+        sys.exit(1 if machines(args.variants or variants(), args.names) else 0)
     else:
         sys.exit(1 if diff(args.a, args.b) else 0)
 

@@ -20,6 +20,15 @@ numpy RuntimeWarnings turned into errors, and is classified:
                  declared one within 1 %, fullness outside (0, 1]);
 ``bad_message``  refused with a message that names no key, carries library internals, or is over 300 characters.
 
+Besides ``run``, one case in four runs a command (study, optimize, sweep, compare, tolerance: its [[tolerances]]
+drawn, normal ones truncated far in their tails, and its records.jsonl damaged and the command run again, which must
+redesign what was damaged and give the first run's results), one in ten the designer's session (edits of keys, drags
+of handles, points of a table, the report and the TOML download, the whole design) and one in forty ``valvetrain
+serve`` in a process of its own (on a free port, a taken one, a host that does not resolve; requests to its pages
+and files, then Ctrl-C).  The mutations reach the finger follower (its geometry put on a valve in variants the
+campaign of issue 36 met, measured tables among the bases, its keys mutated), the lash adjuster (added to a valve, its
+keys mutated) and the camshaft ([camshaft] added, its keys mutated).
+
 Usage (from the repository root, with the package on the path)::
 
     PYTHONPATH=src python tools/fuzz_specs.py --count 3000 --seed 1 --workers 2 --report fuzz-report.json
@@ -213,8 +222,12 @@ def base_specs():
     lobe = (EXAMPLES / MEASURED_LOBE).read_bytes()
     bases = {"example": (example, {})}
     for f in sorted(EXAMPLES.glob("*.toml")):
+        text = f.read_text(encoding="utf-8")
         files = {MEASURED_LOBE: lobe} if "measured" in f.name else {}
-        bases[f"examples/{f.name}"] = (tomllib.loads(f.read_text(encoding="utf-8")), files)
+        files.update({name: (EXAMPLES / name).read_bytes() for name in
+                      (d.relative_to(EXAMPLES).as_posix() for d in sorted((EXAMPLES / "data").glob("*.csv")))
+                      if f'"{name}"' in text})     # the data files the example names (the breathing's lift and C_D)
+        bases[f"examples/{f.name}"] = (tomllib.loads(text), files)
     for law in LAWS:
         files = {"lobe.csv": lobe} if law == "table" else {}
         drop = ("max_lift_mm", "opens_deg", "closes_deg") if law == "table" else ()
@@ -424,6 +437,7 @@ LITERALS = {
     "strokes": [2, 4], "count": [1, 2, 8], "cylinders": [1, 2, 3, 64], "ramp": [True, False],
     "harmonics": [2, 3, 4, 400], "junction_order": [0, 1, 5, 10], "max_harmonics": [4, 400],
     "contour_points": [36, 100000], "segment": [1, 2, 3, 50], "model": ["1dof", "multi"],
+    "location": ["pivot", "tappet", "bucket"], "drive": ["chain", "belt", "gears", "rocker"],
 }
 UNKNOWN_KEYS = ["bore", "Bore_mm", "max_lift", "phi4_deg", "\u00fcber", "x y", ""]
 WEIRD_NAMES = ["crank", "two_stroke", "1st", "ex haust", "\u00e9chappement", "a" * 300, "x.y", ""]
@@ -433,12 +447,34 @@ TEXT_OPS = ["bom", "crlf", "truncate_half", "truncate_end", "nul_byte", "latin1_
             "duplicate_key", "bom_twice"]
 
 OP_KINDS = (["scale"] * 4 + ["gentle"] * 4 + ["special"] * 2 + ["type"] * 2 + ["delete"] * 2 + ["literal"] * 2
-            + ["law"] * 2 + ["stage_key"] * 3 + ["stage"] * 2
+            + ["law"] * 2 + ["stage_key"] * 3 + ["stage"] * 2 + ["finger"] * 2 + ["finger_key"] * 2
+            + ["camshaft_key"] * 2
             + ["unknown", "follower", "nest", "long_list", "text", "valve", "section", "lift_file", "pressure_file"])
 
-STAGES = ("dynamics", "hydraulic")
+STAGES = ("dynamics", "hydraulic", "lash_adjuster")
 """The sections of a valve whose keys :func:`draw_op` mutates on purpose (``stage_key``) and that it adds to a valve
-(``stage``): the elastic train's speed sweep and the hydraulic drive."""
+(``stage``): the elastic train's speed sweep, the hydraulic drive and the hydraulic lash adjuster."""
+
+FINGER_EXAMPLE = EXAMPLES / "modern-dohc-roller-finger.toml"
+"""The shipped finger follower whose geometry the ``finger`` operation puts on a valve."""
+
+FINGER_VARIANTS = {
+    # name -> keys of the cam changed from the example's finger (mm, deg): what the fuzz campaign of issue 36 met
+    "example": {},
+    "pivot_out_of_reach": {"finger_pivot_y_mm": 80.0},
+    "pad_at_the_pivot": {"finger_pad_arm_mm": -0.36},
+    "negative_pad": {"finger_pad_arm_mm": -36.0},
+    "pad_inside": {"finger_pad_arm_mm": 12.0, "finger_pad_drop_mm": -4.0, "finger_valve_angle_deg": 4.0},
+    "centre_pivot_rocker": {"roller_radius_mm": 12.0, "finger_pivot_x_mm": 3.0, "finger_pivot_y_mm": 36.0,
+                            "finger_roller_arm_mm": 30.0, "finger_pad_arm_mm": -40.0, "finger_pad_drop_mm": 2.0,
+                            "finger_pad_radius_mm": 10.0, "finger_valve_angle_deg": 180.0},
+    "tip_off_axis": {"finger_tip_offset_mm": 50.0},
+    "tip_near_edge": {"finger_tip_offset_mm": 2.9},
+}
+"""Finger geometries of the ``finger`` operation."""
+
+SHAFT_EXAMPLE = EXAMPLES / "pushrod-dynamics.toml"
+"""The shipped [camshaft] section the ``section`` operation ``add_camshaft`` puts into a document."""
 
 STAGE_OPS = ["scale", "gentle", "special", "type", "delete", "literal"]
 
@@ -526,8 +562,20 @@ def draw_op(pick, doc):
         paths = [p for p in leaves(doc) if len(p) > 3 and p[0] == "valves" and p[2] in STAGES]
         if paths:
             return _stage_key_op(pick, doc, pick(paths))
+    if kind == "finger_key":
+        paths = [p for p in leaves(doc) if len(p) == 4 and p[0] == "valves" and p[2] == "cam"
+                 and (p[3].startswith("finger_") or p[3] == "roller_radius_mm")
+                 and _get(doc, p[:3] + ("follower",)) == "finger"]
+        if paths:
+            return _stage_key_op(pick, doc, pick(paths))
+    if kind == "camshaft_key":
+        paths = [p for p in leaves(doc) if p[0] == "camshaft"]
+        if paths:
+            return _stage_key_op(pick, doc, pick(paths))
     if kind == "stage" and _cams(doc):
         return ["stage", pick(_cams(doc)), pick(list(STAGES))]
+    if kind == "finger" and _cams(doc):
+        return ["finger", pick(_cams(doc)), pick(list(FINGER_VARIANTS))]
     numbers = _numbers(doc)
     if kind in ("scale", "gentle", "special") and numbers:
         path = pick(numbers)
@@ -566,7 +614,7 @@ def draw_op(pick, doc):
         return ["valve", pick(_cams(doc)), pick(["rename", "copy_exhaust", "copy_many"]), pick(WEIRD_NAMES)]
     if kind == "section":
         return ["section", pick(["drop_valves", "drop_crank", "add_crank", "add_two_stroke", "drop_engine",
-                                 "empty_valves", "add_cycle_and_file"])]
+                                 "empty_valves", "add_cycle_and_file", "add_camshaft", "add_camshaft"])]
     paths = leaves(doc)
     return ["type", pick(paths), pick(OTHER_TYPES)]
 
@@ -592,8 +640,25 @@ def stage_sections():
     and the [hydraulic] section of examples/marine-hydraulic-exhaust.toml."""
     dyn = tomllib.loads((EXAMPLES / "pushrod-dynamics.toml").read_text(encoding="utf-8"))
     hyd = tomllib.loads((EXAMPLES / "marine-hydraulic-exhaust.toml").read_text(encoding="utf-8"))
+    finger = tomllib.loads(FINGER_EXAMPLE.read_text(encoding="utf-8"))
     return {"dynamics": {**dyn["valves"]["intake"]["dynamics"], "speeds": 20},
-            "hydraulic": hyd["valves"]["exhaust"]["hydraulic"]}
+            "hydraulic": hyd["valves"]["exhaust"]["hydraulic"],
+            "lash_adjuster": finger["valves"]["intake"]["lash_adjuster"]}
+
+
+@functools.lru_cache(maxsize=1)
+def finger_cam():
+    """The finger keys of examples/modern-dohc-roller-finger.toml's intake cam (``roller_radius_mm``, ``finger_*``)."""
+    cam = tomllib.loads(FINGER_EXAMPLE.read_text(encoding="utf-8"))["valves"]["intake"]["cam"]
+    return {k: v for k, v in cam.items() if k.startswith("finger_") or k == "roller_radius_mm"}
+
+
+@functools.lru_cache(maxsize=1)
+def shaft_section():
+    """The [camshaft] of examples/pushrod-dynamics.toml on one cylinder (its first lobe station), every valve."""
+    shaft = tomllib.loads(SHAFT_EXAMPLE.read_text(encoding="utf-8"))["camshaft"]
+    shaft.pop("valves", None)
+    return {**shaft, "cylinders": [1], "cylinder_positions_mm": shaft["cylinder_positions_mm"][:1]}
 
 
 def draw_case(pick, bases):
@@ -664,7 +729,26 @@ def _apply(doc, files, op):
         if not isinstance(valve, dict):
             return None
         valve[op[2]] = copy.deepcopy(stage_sections()[op[2]])
+        if op[2] == "lash_adjuster":       # an adjuster leaves no clearance (the specification's rule)
+            valve["clearance_mm"] = 0.0
+            return f"valves.{op[1]}.lash_adjuster = the modern example's [lash_adjuster], clearance_mm = 0"
         return f"valves.{op[1]}.{op[2]} = the [{op[2]}] section of stage_sections()"
+    if kind == "finger":
+        valve = _get(doc, ("valves", op[1]))
+        if not isinstance(valve, dict) or not isinstance(valve.get("cam"), dict):
+            return None
+        valve["cam"].update({**finger_cam(), **FINGER_VARIANTS[op[2]], "follower": "finger"})
+        valve.pop("rocker_ratio", None)
+        drive = valve.get("drive") if isinstance(valve.get("drive"), dict) else {}
+        drive.pop("valve_arm_mm", None)
+        valve["drive"] = {**drive, "layout": "rocker"}
+        return (f"valves.{op[1]}.cam: follower = \"finger\" with the modern example's finger, variant {op[2]!r} "
+                "(rocker_ratio and drive.valve_arm_mm removed, drive.layout = \"rocker\")")
+    if kind == "tolerances":
+        doc["tolerances"] = copy.deepcopy(op[1])
+        return "tolerances = " + "; ".join(f"{t['key']} {t['distribution']} "
+                                           + ", ".join(f"{k} = {_show(v)}" for k, v in t.items()
+                                                       if k not in ("key", "distribution")) for t in op[1])
     if kind == "follower":
         cam = _get(doc, ("valves", op[1], "cam"))
         if not isinstance(cam, dict):
@@ -726,6 +810,8 @@ def _apply(doc, files, op):
             doc.pop("engine", None)
         elif what == "add_crank":
             doc["crank"] = copy.deepcopy(TWO_STROKE_CRANK)
+        elif what == "add_camshaft":
+            doc["camshaft"] = copy.deepcopy(shaft_section())
         elif what == "add_two_stroke":
             two = tomllib.loads((EXAMPLES / "two-stroke-ports.toml").read_text(encoding="utf-8"))
             doc["two_stroke"] = two["two_stroke"]
@@ -801,7 +887,7 @@ def _swap_nested(x):
 # ---------------------------------------------------------------------------------------------------------------
 # The other commands: study, optimize, sweep and compare on a (mutated) specification, through the command line
 
-COMMANDS = ("study", "optimize", "sweep", "compare")
+COMMANDS = ("study", "optimize", "sweep", "compare", "tolerance")
 COMMAND_EVERY = 4
 """One random case in COMMAND_EVERY runs one of the COMMANDS instead of ``run``."""
 
@@ -822,6 +908,45 @@ VARY_BOUNDS = ["{a},{b}", "{b},{a}", "-10,1e6", "1e300,1e301", "nan,1", "{a},{a}
 
 OPTIMIZE_OPTIONS = [[], [], ["--objective", "time_area"], ["--no-jump", "0"], ["--no-jump", "3"],
                     ["--wheel-radius", "5"], ["--valve", "{valve}"], ["--valve", "nosuchvalve"]]
+
+TOLERANCE_SPREADS = [0.001, 0.01, 0.05, 0.3, 2.0]
+"""Half-ranges and sigmas of a drawn [[tolerances]] entry, shares of the key's value."""
+
+TOLERANCE_CUTS = [None, None, 8.0, 20.0, 40.0, -40.0, "low_only_far", "inverted"]
+"""Truncations of a normal entry: none (6 sigma), [mu + k sigma, mu + (k + 1) sigma] far in a tail (issue 36), a
+lower end beyond the upper default, low above high."""
+
+RECORD_DAMAGE = [None, None, "margin_text", "margin_nan", "short_entry", "checks_list", "passed_flipped",
+                 "headlines_text", "status_other", "index_text", "folder", "header_other", "cut_short"]
+"""How a tolerance case damages its records.jsonl before it runs the command again (None: it runs once)."""
+
+TOLERANCE_OPTIONS = [[], [], ["--method", "lhs"], ["--seed", "3"], ["--samples", "10000000"], ["--max-samples", "1"]]
+
+
+def draw_tolerances(pick, doc):
+    """A ``tolerances`` operation: one or two [[tolerances]] entries on numeric keys of ``doc`` (dotted keys through
+    tables, as ``study --grid`` names them), uniform or normal, a spread of :data:`TOLERANCE_SPREADS` of the value,
+    a normal one truncated by :data:`TOLERANCE_CUTS`."""
+    paths = [p for p in _numbers(doc) if all(isinstance(q, str) for q in p) and p[0] != "tolerances"]
+    entries = []
+    for path in {tuple(pick(paths)) for _ in range(pick([1, 1, 2]))} if paths else [("engine", "bore_mm")]:
+        value = _get(doc, path)
+        value = float(value) if isinstance(value, (int, float)) and math.isfinite(value) and value != 0 else 1.0
+        spread = abs(value) * pick(TOLERANCE_SPREADS)
+        if pick(["uniform", "normal"]) == "uniform":
+            entries.append({"key": ".".join(path), "distribution": "uniform", "half_range": spread})
+            continue
+        entry = {"key": ".".join(path), "distribution": "normal", "sigma": spread}
+        cut = pick(TOLERANCE_CUTS)
+        if isinstance(cut, float):
+            low = value + cut * spread if cut > 0 else value + (cut - 1.0) * spread
+            entry.update(low=low, high=low + spread)
+        elif cut == "low_only_far":
+            entry["low"] = value + 8.0 * spread
+        elif cut == "inverted":
+            entry.update(low=value + spread, high=value - spread)
+        entries.append(entry)
+    return ["tolerances", entries]
 
 
 def _near(value):
@@ -858,7 +983,82 @@ def draw_command(pick, doc, command=None):
         return args + [a.format(valve=valve) for a in pick(OPTIMIZE_OPTIONS)]
     if command == "sweep":
         return ["sweep"] + pick([[], [], ["--valve", pick(valves)], ["--valve", "nosuchvalve"]])
+    if command == "tolerance":
+        damage = pick(RECORD_DAMAGE)
+        return ["tolerance", "--samples", pick(["3", "4"])] + pick(TOLERANCE_OPTIONS) + (
+            [f"<damage:{damage}>"] if damage else [])
     return ["compare", "<base>"]
+
+
+def damage_records(out, how) -> bool:
+    """Damage the records.jsonl of a tolerance study in ``out`` as :data:`RECORD_DAMAGE` names (the second line's
+    record); False where there is no record to damage."""
+    path = Path(out) / "records.jsonl"
+    lines = path.read_text(encoding="utf-8").split("\n") if path.is_file() else []
+    if len(lines) < 2 or not lines[1].strip():
+        return False
+    if how == "folder":
+        path.unlink()
+        path.mkdir()
+        (path / "mine.txt").write_text("kept", encoding="utf-8")
+        return True
+    if how == "header_other":
+        lines[0] = json.dumps({"fingerprint": "another study"})
+    elif how == "cut_short":
+        lines[1] = lines[1][: len(lines[1]) // 2]
+    else:
+        item = json.loads(lines[1])
+        record = item["record"]
+        checks = record["checks"]
+        cid = next(iter(checks), None)
+        if how == "margin_text" and cid:
+            checks[cid][0] = "0.5"
+        elif how == "margin_nan" and cid:
+            checks[cid][0] = "NAN_HERE"
+        elif how == "short_entry" and cid:
+            checks[cid] = checks[cid][:2]
+        elif how == "checks_list":
+            record["checks"] = list(checks.items())
+        elif how == "passed_flipped" and cid:
+            checks[cid][1] = not checks[cid][1]
+        elif how == "headlines_text":
+            record["headlines"] = {"intake": "fast"}
+        elif how == "status_other":
+            record["status"] = "maybe"
+        elif how == "index_text":
+            item["index"] = "0"
+        lines[1] = json.dumps(item).replace('"NAN_HERE"', "NaN")
+    path.write_text("\n".join(lines), encoding="utf-8")
+    return True
+
+
+def tolerance_draw_problems(spec_file, options):
+    """Draws of a tolerance study that are not finite or leave their range (nonsense), ``[(generic, text)]``: the
+    samples as the command draws them (the same file, --samples, --method, --seed), checked independently of it."""
+    from valvetrain.specification import load_spec
+    from valvetrain.study import read_document
+    from valvetrain.tolerance import ToleranceError, check_tolerances, draw, sample_range
+
+    def option(name, default):
+        return options[options.index(name) + 1] if name in options else default
+
+    samples = int(option("--samples", "3"))
+    if samples > 10_000:
+        return []
+    try:
+        spec = load_spec(spec_file)
+        centres = check_tolerances(read_document(spec_file), spec)
+    except (SpecError, ToleranceError):
+        return []
+    values = draw(spec, centres, samples, option("--method", "mc"), int(option("--seed", "0")))
+    out = []
+    for j, (t, centre) in enumerate(zip(spec.tolerances, centres, strict=True)):
+        low, high = sample_range(t, centre)
+        x = values[:, j]
+        if not np.all(np.isfinite(x)) or np.any((x < low) | (x > high)):
+            out.append((f"draw outside [low, high] ({t.distribution})",
+                        f"tolerances: {t.key}: draws {x.tolist()} against [{low:g}, {high:g}]"))
+    return out
 
 
 def _command_messages(output):
@@ -890,6 +1090,8 @@ def run_command(case, tmp, spec_file, base_file, timeout):
 
     name, *rest = case["command"]
     out = Path(tmp) / "out"
+    damage = next((a[len("<damage:"):-1] for a in rest if a.startswith("<damage:")), None)
+    rest = [a for a in rest if not a.startswith("<damage:")]
     args = [name, str(spec_file)] + [str(base_file) if a == "<base>" else a for a in rest] + ["--out", str(out)]
     old = signal.signal(signal.SIGALRM, _alarm)
     signal.setitimer(signal.ITIMER_REAL, timeout * COMMAND_TIMEOUT[name])
@@ -897,6 +1099,11 @@ def run_command(case, tmp, spec_file, base_file, timeout):
         with warnings.catch_warnings():
             warnings.simplefilter("error", RuntimeWarning)
             result = CliRunner().invoke(cli, args, catch_exceptions=True)
+            first = None
+            if damage is not None and result.exit_code == 0 and (out / "tolerance.json").is_file():
+                first = json.loads((out / "tolerance.json").read_text(encoding="utf-8"))
+                if damage_records(out, damage):
+                    result = CliRunner().invoke(cli, args, catch_exceptions=True)   # again, on damaged records
     except CaseTimeout as exc:
         own, inner = _frame(traceback.extract_tb(exc.__traceback__))
         return {"outcome": "hang", "signature": f"timeout in {name} at {own}",
@@ -935,7 +1142,15 @@ def run_command(case, tmp, spec_file, base_file, timeout):
         return {"outcome": "traceback", "signature": f"{name}: exit status {result.exit_code}",
                 "detail": [_clip(output)]}
     nans = _json_problems(out)
-    printed = [line for line in output.splitlines() if NAN_WORD.search(line)]
+    printed = [line for line in output.splitlines() if NAN_WORD.search(line) and not line.startswith("note: ")]
+    if name == "tolerance":
+        wrong = tolerance_draw_problems(spec_file, rest)
+        if first is not None and json.loads((out / "tolerance.json").read_text(encoding="utf-8")) != first:
+            wrong.append((f"a damaged record trusted ({damage})", f"records.jsonl damaged ({damage}): the run again "
+                          "gave other results than the first"))
+        if wrong:
+            return {"outcome": "nonsense", "signatures": [f"nonsense: tolerance: {wrong[0][0]}"],
+                    "detail": [t for _, t in wrong[:5]]}
     if nans or printed:
         return {"outcome": "nan_output", "signatures": [f"nan_output: {name}: {k}" for k, _ in nans]
                 + ([f"nan_output: {name}: printed {NAN_WORD.search(printed[0]).group(0)}"] if printed else []),
@@ -955,7 +1170,7 @@ def _alarm(signum, frame):
 
 
 MAX_MESSAGE = 300
-KEY_PATH = re.compile(r"(?<![\w.])\[?(engine|valves|gas|crank|camshaft|two_stroke|output|accepted)\b")
+KEY_PATH = re.compile(r"(?<![\w.])\[?(engine|valves|gas|crank|camshaft|two_stroke|breathing|output|accepted|tolerances)\b")
 INTERNAL_TEXT = ("ill-posed", "ill-conditioned", "singular matrix", "traceback", "numpy", "scipy", "ndarray",
                  "dtype", "object has no attribute", "nonetype", "index out of", "division by zero",
                  "math domain", "not enough values", "too many values", "recursion", "operands could not",
@@ -1163,7 +1378,8 @@ def _negative_magnitudes(name, summary):
 
 def _unfailed(results):
     """Physically impossible designs that must be graded failures: an undercut profile, a spring whose coils touch
-    before full lift, a follower separating below over_speed_ratio x the rated speed."""
+    before full lift, a follower separating below over_speed_ratio x the rated speed, a finger's pad off the valve
+    tip, a camshaft twisted by more than 10 cam deg."""
     out = []
     engine = results.spec.engine
     failing = {(c.valve, c.code) for c in results.checks if c.severity == "failure" and not c.passed}
@@ -1177,12 +1393,26 @@ def _unfailed(results):
                 and not any(valve == name and code.startswith("spring.") for valve, code in failing):
             out.append(("coil bind not a failure", f"valves.{name}.spring.min_pitch_mm = {spring['min_pitch_mm']:.6g} "
                                                    f"<= wire_mm = {spring['wire_mm']:.6g} without a failing check"))
+        finger = s["cam"].get("finger")
+        if finger and not any(valve == name and code == "finger.tip_contact" for valve, code in failing):
+            spec_valve = results.spec.valves[name]
+            stem = spec_valve.parts.stem_diameter_mm or 0.2 * spec_valve.throat_diameter_mm
+            if finger["tip_contact_max_mm"] > stem / 2.0:
+                out.append(("finger pad off the valve tip not a failure",
+                            f"valves.{name}.cam.finger.tip_contact_max_mm = {finger['tip_contact_max_mm']:.6g} beyond "
+                            f"the tip's radius {stem / 2.0:.6g} mm without a failing check"))
         jump = (s.get("dynamics") or {}).get("jump_speed_rpm")
         if jump is not None and jump < engine.over_speed_ratio * engine.rated_speed_rpm * (1.0 - 1e-9) \
                 and (name, "dynamics.jump_speed") not in failing:
             out.append(("separation below the over-speed not a failure",
                         f"valves.{name}.dynamics.jump_speed_rpm = {jump:.6g} below over_speed_ratio x rated = "
                         f"{engine.over_speed_ratio * engine.rated_speed_rpm:.6g} rpm without a failing check"))
+    shaft = results.camshaft
+    if shaft is not None and shaft.figures.twist_max > math.radians(10.0) and not any(
+            code == "camshaft.twist_timing_error" for _, code in failing):
+        out.append(("camshaft twist beyond 10 cam deg not a failure",
+                    f"camshaft.largest_twist_cam_deg = {math.degrees(shaft.figures.twist_max):.6g} without a failing "
+                    "check"))
     return out
 
 
@@ -1322,11 +1552,301 @@ def run_api_case(case, bases, timeout=60.0):
     return rec
 
 
+# ---------------------------------------------------------------------------------------------------------------
+# The designer: its session's edit path (in this process) and `valvetrain serve`'s HTTP endpoints (a server process)
+
+SESSION_EVERY = 10
+"""One random case in SESSION_EVERY (not a command's) runs the designer's session on its specification."""
+
+SERVE_EVERY = 40
+"""One random case in SERVE_EVERY (not a command's nor a session's) serves its specification and requests pages."""
+
+SESSION_ACTIONS = ["edit"] * 5 + ["drag"] * 3 + ["points", "pin", "report", "toml", "settle"]
+
+DRAG_VALUES = [-200.0, -60.0, -10.0, -0.5, 0.0, 0.5, 10.0, 60.0, 200.0, math.nan, math.inf, 1e300, -1e300]
+
+HTTP_REQUESTS = [("GET", "/"), ("GET", "/"), ("GET", "/?bokeh-session-id=x%00y"), ("GET", "/autoload.js"),
+                 ("GET", "/static/js/bokeh.min.js"), ("GET", "/static/../../../../etc/passwd"), ("GET", "/no/such/page"),
+                 ("POST", "/"), ("GET", "/ws"), ("HEAD", "/"), ("GET", "/" + "x" * 5000), ("GET", "/?%ff%fe=%00"),
+                 ("PUT", "/static/x"), ("DELETE", "/"), ("GET", "/?" + "a=1&" * 2000)]
+"""Requests a ``serve`` case sends (method, path)."""
+
+SERVE_MODES = ["ok"] * 6 + ["port_taken", "bad_host"]
+"""How a ``serve`` case starts the server: on a free port, on a port another socket listens on, on a host that does
+not resolve."""
+
+
+def _edit_value(pick, doc, path):
+    value = _get(doc, path)
+    if isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value):
+        return _scaled(value, pick(FACTORS + GENTLE)) if pick([True, True, False]) else pick(SPECIALS)
+    return pick(OTHER_TYPES[:8] + LITERALS.get(path[-1], []) + [None])
+
+
+def draw_session(pick, doc):
+    """The actions of a ``session`` case on ``doc``: one to four of :data:`SESSION_ACTIONS` (an edit of a key by the
+    specification panel, a drag of a handle of a valve's plot, points of an inline table, the pin of the baseline,
+    the report, the TOML download, the whole design with its sweeps)."""
+    paths = [p for p in leaves(doc) if all(isinstance(q, str) for q in p)] or [("engine", "bore_mm")]
+    valves = _cams(doc) or ["intake"]
+    actions = []
+    for _ in range(pick([1, 2, 3, 4])):
+        kind = pick(SESSION_ACTIONS)
+        if kind == "edit":
+            path = pick(paths)
+            actions.append(["edit", ".".join(path), _edit_value(pick, doc, path)])
+        elif kind == "drag":
+            actions.append(["drag", pick(valves), pick([0, 1, 2, 3, 4, 5]), pick(DRAG_VALUES), pick(DRAG_VALUES)])
+        elif kind == "points":
+            n = pick([0, 1, 5, 30])
+            actions.append(["points", pick(valves), [pick(DRAG_VALUES) for _ in range(n)],
+                            [pick(DRAG_VALUES) for _ in range(n)]])
+        elif kind == "report":
+            actions.append(["report", pick(["en", "ru"])])
+        else:
+            actions.append([kind])
+    return actions
+
+
+def draw_serve(pick):
+    """A ``serve`` case: how the server starts (:data:`SERVE_MODES`) and two to four of :data:`HTTP_REQUESTS`."""
+    return {"mode": pick(SERVE_MODES), "requests": [list(pick(HTTP_REQUESTS)) for _ in range(pick([2, 3, 4]))]}
+
+
+def _problems_of(errors):
+    """Bad messages of the designer's (or the api's) error records: ``[(message, why)]``."""
+    bad = [(e["text"] or e["message"], e["path"], message_problem(e["text"] or e["message"], "")) for e in errors]
+    return [(m, why) for m, path, why in bad if why and not (why == "no key path" and path)]
+
+
+def _session_step(session, action, tmp):
+    """One action of a session case; a finding ``(outcome, signature, detail)`` or None."""
+    from valvetrain.specification import parse_spec
+    from valvetrain.web.session import has_points
+
+    kind = action[0]
+    if kind == "edit":
+        if not session.edit({action[1]: copy.deepcopy(action[2])}):
+            bad = _problems_of(session.problems)
+            if not session.problems:
+                return "bad_message", "session.edit: not designed without a problem", []
+            if bad:
+                return "bad_message", f"session.edit: {bad[0][1]}: {_message_key(bad[0][0])}", [_clip(bad[0][0])]
+    elif kind in ("drag", "points"):
+        name = action[1]
+        if name not in session.good_document.get("valves", {}):
+            return None
+        if kind == "drag":
+            handles = session.handles(name)
+            if handles:
+                session.drag(name, handles[action[2] % len(handles)], action[3], action[4])
+        elif has_points(session.good_document["valves"][name]["cam"]):
+            session.set_points(name, action[2], action[3])
+    elif kind == "pin":
+        session.pin()
+    elif kind == "report":
+        session.report(action[1])
+    elif kind == "toml":
+        try:
+            parse_spec(session.toml(), source_dir=tmp)
+        except SpecError as err:
+            return "nonsense", "session.toml: the download does not validate", [_clip(str(err))]
+    elif kind == "settle":
+        full = session.settle(session.good_document)
+        session.settled(full)
+        try:
+            json.dumps(full, allow_nan=False)
+        except (TypeError, ValueError) as exc:
+            return "nan_output", "session.settle: not strict JSON", [_clip(str(exc))]
+    return None
+
+
+def run_session_case(case, bases, timeout=60.0):
+    """Run one case through the designer's session (:class:`valvetrain.web.session.Session`, its edit path without a
+    browser): start it on the mutated specification, then its actions (:func:`draw_session`); classified as
+    :func:`run_case` classifies (an exception is a traceback, a problem without its key a bad message, a design or a
+    whole design that is not strict JSON nan_output, a TOML download that does not validate nonsense)."""
+    from valvetrain.web.session import Session
+
+    text, files, described = materialize({**case, "ops": [op for op in case["ops"] if op[0] != "text"]}, bases)
+    rec = {"base": case["base"], "ops": case["ops"], "session": case["session"],
+           "mutation": described + [f"session: {_show(a)}" for a in case["session"]]}
+    t0 = time.monotonic()
+    outcome, signature, detail = "ok", None, []
+    old = signal.signal(signal.SIGALRM, _alarm)
+    signal.setitimer(signal.ITIMER_REAL, timeout * 2.0)
+    with tempfile.TemporaryDirectory(prefix="vfs") as tmp:
+        for name, content in files.items():
+            (Path(tmp) / name).parent.mkdir(parents=True, exist_ok=True)
+            (Path(tmp) / name).write_bytes(content)
+        try:
+            with warnings.catch_warnings():
+                warnings.simplefilter("error", RuntimeWarning)
+                try:
+                    session = Session.start(text.decode("utf-8"), tmp)
+                except SpecError as err:
+                    bad = [(m, message_problem(m, "")) for m in err.problems]
+                    bad = [(m, why) for m, why in bad if why]
+                    outcome = "bad_message" if bad else "refused"
+                    signature = f"session.start: {bad[0][1]}: {_message_key(bad[0][0])}" if bad else None
+                    detail = [_clip(m.replace(tmp, "<tmp>")) for m, _ in (bad or [(m, "") for m in err.problems])[:5]]
+                else:
+                    for action in case["session"]:
+                        found = _session_step(session, action, tmp)
+                        if found:
+                            outcome, signature, detail = found
+                            break
+                    else:
+                        try:
+                            json.dumps(session.good, allow_nan=False)
+                        except (TypeError, ValueError) as exc:
+                            outcome, signature, detail = "nan_output", "session: not strict JSON", [_clip(str(exc))]
+        except CaseTimeout as exc:
+            own, _ = _frame(traceback.extract_tb(exc.__traceback__))
+            outcome, signature = "hang", f"session: timeout at {own}"
+        except Exception as exc:  # noqa: BLE001 (every other exception is the finding)
+            own, inner = _frame(traceback.extract_tb(exc.__traceback__))
+            outcome, signature = "traceback", f"session: {type(exc).__name__} at {own}"
+            detail = [f"{type(exc).__name__}: {_clip(str(exc).replace(tmp, '<tmp>'))}", f"innermost frame {inner}"]
+        finally:
+            signal.setitimer(signal.ITIMER_REAL, 0)
+            signal.signal(signal.SIGALRM, old)
+    rec.update(outcome=outcome, detail=detail, seconds=round(time.monotonic() - t0, 3))
+    rec["signatures"] = [signature] if signature else []
+    if signature:
+        rec["signature"] = signature
+    return rec
+
+
+def _serve_finding(proc, stderr, what):
+    """A traceback printed by the server process (its standard error), as a finding, or None."""
+    if "Traceback (most recent call last)" not in stderr:
+        return None
+    lines = stderr.splitlines()
+    error = next((line for line in reversed(lines) if re.match(r"\w+(Error|Exception)\b", line)), "a traceback")
+    frame = next((line.strip() for line in reversed(lines) if "/valvetrain/" in line and line.strip().startswith(
+        "File")), "")
+    return ("traceback", f"serve: {what}: {_message_key(error)}",
+            [_clip(error), _clip(frame.replace(str(Path(valvetrain.__file__).parent), "valvetrain"))])
+
+
+def run_serve_case(case, bases, timeout=60.0):
+    """Run ``valvetrain serve`` on the mutated specification in a process of its own (:func:`draw_serve`: on a free
+    port, a port taken or a host that does not resolve), send its requests, then Ctrl-C it: a traceback on its
+    standard error, a reply of status 500 or more, no answer within ``timeout`` or a process that does not end on
+    Ctrl-C are findings; a refusal (exit status 2) must name its key or option in one line."""
+    import http.client
+    import socket
+    import subprocess
+
+    text, files, described = materialize(case, bases)
+    serve = case["serve"]
+    rec = {"base": case["base"], "ops": case["ops"], "serve": serve,
+           "mutation": described + [f"serve: {serve['mode']}: " + ", ".join(" ".join(r)[:60] for r in serve["requests"])]}
+    t0 = time.monotonic()
+    outcome, signature, detail = "ok", None, []
+    with tempfile.TemporaryDirectory(prefix="vfw") as tmp, socket.socket() as taken:
+        spec_file = Path(tmp) / "spec.toml"
+        spec_file.write_bytes(text)
+        for name, content in files.items():
+            (Path(tmp) / name).parent.mkdir(parents=True, exist_ok=True)
+            (Path(tmp) / name).write_bytes(content)
+        taken.bind(("127.0.0.1", 0))
+        taken.listen()
+        args = {"ok": ["--port", "0"], "port_taken": ["--port", str(taken.getsockname()[1])],
+                "bad_host": ["--host", "no.such.host.invalid", "--port", "0"]}[serve["mode"]]
+        env = {**os.environ, "PYTHONPATH": os.pathsep.join(filter(None, [str(Path(valvetrain.__file__).parents[1]),
+                                                                         os.environ.get("PYTHONPATH")]))}
+        # Ctrl-C's default action in the server, even where this process ignores SIGINT (started in the background)
+        proc = subprocess.Popen([sys.executable, "-u", "-m", "valvetrain", "serve", str(spec_file), "--no-show", *args],
+                                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env, cwd=tmp,
+                                preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
+        try:
+            url, deadline = None, time.monotonic() + timeout
+            while url is None and time.monotonic() < deadline:
+                line = proc.stdout.readline()
+                if not line:
+                    break
+                m = re.search(r"designer at (http://\S+)", line)
+                url = m.group(1) if m else None
+            if url is None:
+                try:
+                    proc.wait(timeout=max(deadline - time.monotonic(), 1.0))
+                except subprocess.TimeoutExpired:
+                    proc.kill()
+                    proc.wait()
+                    return {**rec, "outcome": "hang", "signature": "serve: no page and no end", "signatures":
+                            ["serve: no page and no end"], "detail": [], "seconds": round(time.monotonic() - t0, 3)}
+                stderr = proc.stderr.read().replace(tmp, "<tmp>")
+                found = _serve_finding(proc, stderr, "start")
+                if found:
+                    outcome, signature, detail = found
+                elif proc.returncode == 2:
+                    messages = _command_messages(stderr)
+                    bad = [(m, message_problem(m, spec_file)) for m in messages]
+                    bad = [(m, why) for m, why in bad if why and not (why == "no key path" and OPTION.search(m))]
+                    outcome = "bad_message" if bad or not messages else "refused"
+                    signature = (f"serve: {bad[0][1]}: {_message_key(bad[0][0])}" if bad else
+                                 None if messages else "serve: exit 2 without a message")
+                    detail = [_clip(m) for m in messages[:5]]
+                else:
+                    outcome, signature, detail = ("traceback", f"serve: exit status {proc.returncode} at start",
+                                                  [_clip(stderr[-1500:])])
+            else:
+                host, port = url.removeprefix("http://").rstrip("/").rsplit(":", 1)
+                for method, path in serve["requests"]:
+                    conn = http.client.HTTPConnection(host, int(port), timeout=timeout)
+                    try:
+                        conn.request(method, path, body=b"x" * 100 if method in ("POST", "PUT") else None)
+                        reply = conn.getresponse()
+                        reply.read()
+                    except (TimeoutError, socket.timeout):
+                        outcome, signature = "hang", f"serve: no answer to {method} {path[:40]}"
+                        break
+                    except (ConnectionError, http.client.HTTPException) as exc:
+                        outcome, signature = "traceback", f"serve: {type(exc).__name__} on {method} {path[:40]}"
+                        break
+                    finally:
+                        conn.close()
+                    if reply.status >= 500:
+                        outcome, signature = "traceback", f"serve: HTTP {reply.status} on {method} {path[:40]}"
+                        break
+                proc.send_signal(signal.SIGINT)
+                try:
+                    proc.wait(timeout=30.0)
+                except subprocess.TimeoutExpired:
+                    proc.kill()
+                    proc.wait()
+                    outcome, signature = "hang", "serve: did not end on Ctrl-C"
+                stderr = proc.stderr.read().replace(tmp, "<tmp>")
+                found = _serve_finding(proc, stderr, "requests")
+                if found:
+                    outcome, signature, detail = found
+                elif outcome == "ok" and proc.returncode not in (0, 130):
+                    outcome, signature = "traceback", f"serve: exit status {proc.returncode} on Ctrl-C"
+                detail = detail or [_clip(line) for line in stderr.splitlines()[-3:]]
+        finally:
+            if proc.poll() is None:
+                proc.kill()
+                proc.wait()
+            proc.stdout.close()
+            proc.stderr.close()
+    rec.update(outcome=outcome, detail=detail, seconds=round(time.monotonic() - t0, 3))
+    rec["signatures"] = [signature] if signature else []
+    if signature:
+        rec["signature"] = signature
+    return rec
+
+
 def run_case(case, bases, timeout=60.0, write=False):
     """Run one case through load_spec -> design.run (-> write_outputs) and classify it; a JSON-ready record (an
     ``api`` case through :func:`run_api_case`)."""
     if case.get("api"):
         return run_api_case(case, bases, timeout)
+    if case.get("session"):
+        return run_session_case(case, bases, timeout)
+    if case.get("serve"):
+        return run_serve_case(case, bases, timeout)
     text, files, described = materialize(case, bases)
     rec = {"base": case["base"], "ops": case["ops"], "mutation": described, "outcome": None}
     if case.get("command"):
@@ -1545,8 +2065,11 @@ def file_cases(bases):
 
 def random_cases(count, seed, bases):
     """``count`` mutated specifications; case i draws from random.Random(f"{seed}:{i}") (reproducible one by one);
-    one case in :data:`COMMAND_EVERY` runs a command of :data:`COMMANDS` on its specification instead of ``run``;
-    every base specification runs once unmutated, and those of :data:`COMMAND_BASES` once with each command."""
+    one case in :data:`COMMAND_EVERY` runs a command of :data:`COMMANDS` on its specification instead of ``run`` (a
+    ``tolerance`` command with [[tolerances]] drawn by :func:`draw_tolerances`), of the others one in
+    :data:`SESSION_EVERY` the designer's session (:func:`run_session_case`) and one in :data:`SERVE_EVERY` ``valvetrain
+    serve`` (:func:`run_serve_case`); every base specification runs once unmutated, and those of
+    :data:`COMMAND_BASES` once with each command, once in a session and once served."""
     out = []
     for i in range(count):
         rng = random.Random(f"{seed}:{i}")
@@ -1557,21 +2080,39 @@ def random_cases(count, seed, bases):
             for op in case["ops"]:
                 _apply(doc, {}, op)
             case["command"] = draw_command(pick, doc)
+            if case["command"][0] == "tolerance":
+                case["ops"].append(draw_tolerances(pick, doc))
+        elif i % SESSION_EVERY == 1 or i % SERVE_EVERY == 2:
+            doc = copy.deepcopy(bases[case["base"]][0])
+            for op in case["ops"]:
+                _apply(doc, {}, op)
+            if i % SESSION_EVERY == 1:
+                case["session"] = draw_session(pick, doc)
+            else:
+                case["serve"] = draw_serve(pick)
         case["id"] = f"{seed}:{i}"
         out.append(case)
     for b in bases:
         out.append({"base": b, "ops": [], "id": f"base:{b}"})
+    for b in COMMAND_BASES:
+        rng = random.Random(f"{seed}:designer:{b}")
+        pick = lambda seq, rng=rng: seq[rng.randrange(len(seq))]  # noqa: E731
+        out.append({"base": b, "ops": [], "id": f"base:{b}:session", "session": draw_session(pick, bases[b][0])})
+        out.append({"base": b, "ops": [], "id": f"base:{b}:serve", "serve": {**draw_serve(pick), "mode": "ok"}})
     for command in COMMANDS:
         for b in COMMAND_BASES:
             rng = random.Random(f"{seed}:{command}:{b}")
+            pick = lambda seq, rng=rng: seq[rng.randrange(len(seq))]  # noqa: E731
             doc = bases[b][0]
-            out.append({"base": b, "ops": [], "id": f"base:{b}:{command}",
-                        "command": draw_command(lambda seq, rng=rng: seq[rng.randrange(len(seq))], doc, command)})
+            ops = [draw_tolerances(pick, doc)] if command == "tolerance" else []
+            out.append({"base": b, "ops": ops, "id": f"base:{b}:{command}",
+                        "command": draw_command(pick, doc, command)})
     return out
 
 
 def _command_of(rec):
-    return {"command": rec["command"]} if rec.get("command") else {}
+    """What a case runs besides ``run``: its command, session actions or serve requests."""
+    return {k: rec[k] for k in ("command", "session", "serve") if rec.get(k)}
 
 
 def minimise(groups, workers, timeout, write, log):

@@ -92,6 +92,54 @@ def torque_figures(torque) -> dict[str, float]:
             "rms_fluctuation": float(np.sqrt(np.mean((t - mean) ** 2)))}
 
 
+def order_phasors(values, orders) -> np.ndarray:
+    """Complex amplitudes of the orders of the camshaft speed in a quantity sampled evenly over one camshaft revolution.
+
+    Parameters
+    ----------
+    values : ndarray (..., n)
+        At psi_j = 2 pi j / n, j = 0 ... n - 1, along the last axis (a torque [N m], a twist [rad]).
+    orders : int
+        Orders 0 ... orders (< n / 2).
+
+    Returns
+    -------
+    ndarray (..., orders + 1) of complex
+        c_k with values(psi) = Re sum_k c_k exp(i k psi): c_0 = C_0, c_k = 2 C_k (k >= 1), C_k = (1/n) sum_j
+        values_j exp(-2 pi i j k / n), the discrete Fourier transform (numpy's rfft).
+
+    >>> psi = 2 * np.pi * np.arange(8) / 8
+    >>> [(round(float(c.real), 12) + 0.0, round(float(c.imag), 12) + 0.0)
+    ...  for c in order_phasors(1.0 + 3.0 * np.cos(2 * psi) + 0.5 * np.sin(psi), 3)]
+    [(1.0, 0.0), (0.0, -0.5), (3.0, 0.0), (0.0, 0.0)]
+    """
+    t = np.asarray(values, dtype=float)
+    n = t.shape[-1]
+    if not 0 <= orders < n / 2:
+        raise ValueError(f"orders = {orders}: allowed 0 ... {(n - 1) // 2} for {n} samples")
+    c = np.fft.rfft(t, axis=-1)[..., : orders + 1] / n
+    c[..., 1:] *= 2.0
+    return c
+
+
+def order_series(phasors, n) -> np.ndarray:
+    """The values at psi_j = 2 pi j / n of Re sum_k c_k exp(i k psi), the orders' phasors ``phasors`` (..., K) summed
+    (the inverse of :func:`order_phasors`; n > 2 (K - 1)), (..., n).
+
+    >>> psi = 2 * np.pi * np.arange(8) / 8
+    >>> x = 1.0 + 2.0 * np.cos(psi) - np.sin(3 * psi)
+    >>> bool(np.allclose(order_series(order_phasors(x, 3), 8), x, rtol=0.0, atol=1e-12))
+    True
+    """
+    c = np.asarray(phasors, dtype=complex)
+    if n <= 2 * (c.shape[-1] - 1):
+        raise ValueError(f"n = {n}: more than {2 * (c.shape[-1] - 1)} samples are needed for {c.shape[-1] - 1} orders")
+    spectrum = np.zeros(c.shape[:-1] + (n // 2 + 1,), dtype=complex)
+    spectrum[..., : c.shape[-1]] = c * n / 2.0
+    spectrum[..., 0] = c[..., 0] * n
+    return np.fft.irfft(spectrum, n, axis=-1)
+
+
 def harmonic_orders(torque, orders) -> np.ndarray:
     """Amplitudes of the orders of the camshaft speed in a torque sampled evenly over one camshaft revolution [N m].
 
@@ -104,19 +152,13 @@ def harmonic_orders(torque, orders) -> np.ndarray:
 
     Notes
     -----
-    T(psi) = A_0 + sum_k A_k cos(k psi + alpha_k); A_0 = |C_0|, A_k = 2 |C_k| with C_k = (1/n) sum_j T_j
-    exp(-2 pi i j k / n), the discrete Fourier transform (numpy's rfft).
+    T(psi) = A_0 + sum_k A_k cos(k psi + alpha_k); A_k = |c_k| of :func:`order_phasors`.
 
     >>> psi = 2 * np.pi * np.arange(64) / 64
     >>> np.round(harmonic_orders(1.0 + 3.0 * np.cos(2 * psi) + 0.5 * np.sin(5 * psi), 6), 12).tolist()
     [1.0, 0.0, 3.0, 0.0, 0.0, 0.5, 0.0]
     """
-    t = np.asarray(torque, dtype=float)
-    if not 0 <= orders < t.size / 2:
-        raise ValueError(f"orders = {orders}: allowed 0 ... {(t.size - 1) // 2} for {t.size} samples")
-    c = np.abs(np.fft.rfft(t)[: orders + 1]) / t.size
-    c[1:] *= 2.0
-    return c
+    return np.abs(order_phasors(torque, orders))
 
 
 def polar_moment(diameter, bore=0.0) -> np.ndarray:
@@ -229,8 +271,9 @@ def chain_stiffness(stiffness, grounded=True) -> np.ndarray:
     return matrix
 
 
-def torsional_frequencies(stiffness, inertias, grounded=True) -> np.ndarray:
-    """Natural angular frequencies of a chain of torsion springs and masses [rad/s], lowest first.
+def torsional_modes(stiffness, inertias, grounded=True) -> tuple[np.ndarray, np.ndarray]:
+    """Natural angular frequencies [rad/s, lowest first] and mass-normalised mode shapes of a chain of torsion springs
+    and masses.
 
     Parameters
     ----------
@@ -242,24 +285,79 @@ def torsional_frequencies(stiffness, inertias, grounded=True) -> np.ndarray:
         The first spring holds the chain to the ground (the drive end); a free chain's rigid-body mode (0) is left
         out.
 
+    Returns
+    -------
+    omega : ndarray (m,)
+    shapes : ndarray (L, m)
+        Column j the twist of every mass in mode j, scaled so that u_j^T J u_j = 1 [1 / sqrt(kg m^2)].
+
     Notes
     -----
-    det(K - omega^2 M) = 0, the generalised symmetric eigenproblem (scipy.linalg.eigh).  One grounded mass:
-    omega = sqrt(k / J); two free masses: omega = sqrt(k (J_1 + J_2) / (J_1 J_2)).
+    det(K - omega^2 J) = 0, the generalised symmetric eigenproblem (scipy.linalg.eigh, whose eigenvectors are
+    J-orthonormal).  One grounded mass: omega = sqrt(k / J); two free masses: omega = sqrt(k (J_1 + J_2) / (J_1 J_2)).
 
     References
     ----------
     Den Hartog (1956), chapter 5 (torsional vibration of multi-mass shafts).
+    """
+    values, shapes = eigh(chain_stiffness(stiffness, grounded), np.diag(np.asarray(inertias, dtype=float)))
+    order = np.argsort(values)
+    values, shapes = values[order], shapes[:, order]
+    if not grounded:
+        values, shapes = values[1:], shapes[:, 1:]
+    return np.sqrt(np.clip(values, 0.0, None)), shapes
+
+
+def torsional_frequencies(stiffness, inertias, grounded=True) -> np.ndarray:
+    """Natural angular frequencies of a chain of torsion springs and masses [rad/s], lowest first
+    (:func:`torsional_modes`).
 
     >>> round(float(torsional_frequencies([400.0], [4.0])[0]), 12)
     10.0
     """
-    values = eigh(chain_stiffness(stiffness, grounded), np.diag(np.asarray(inertias, dtype=float)),
-                  eigvals_only=True)
-    values = np.sort(values)
-    if not grounded:
-        values = values[1:]
-    return np.sqrt(np.clip(values, 0.0, None))
+    return torsional_modes(stiffness, inertias, grounded)[0]
+
+
+def forced_response(omega, shapes, damping_ratio, torques, frequency) -> np.ndarray:
+    """Steady twist of a grounded torsional chain under harmonic torques, by modal superposition [rad, complex].
+
+    Parameters
+    ----------
+    omega, shapes : ndarray (m,), (L, m)
+        :func:`torsional_modes` of the chain (every mode, omega > 0).
+    damping_ratio : float
+        zeta of every mode (modal damping: its share of the critical damping 2 omega_j of the mass-normalised mode).
+    torques : ndarray (..., L) of complex
+        Phasors of the torque on each mass [N m], T(t) = Re(T exp(i Omega t)).
+    frequency : ndarray (...)
+        Omega of each set of torques [rad/s] (0: a steady torque).
+
+    Returns
+    -------
+    ndarray (..., L) of complex
+        The twist phasors phi, phi(t) = Re(phi exp(i Omega t)), positive where the torque's sense.
+
+    Notes
+    -----
+    J phi'' + C phi' + K phi = T with U^T C U = diag(2 zeta omega_j), U the mass-normalised shapes:
+
+    .. math:: \\boldsymbol\\phi = \\sum_j \\frac{\\mathbf u_j\\,\\mathbf u_j^T\\mathbf T}
+              {\\omega_j^2 - \\Omega^2 + 2 i \\zeta \\omega_j \\Omega}
+
+    At Omega = 0 it is K^-1 T, the quasi-static twist (:func:`twist`).
+
+    References
+    ----------
+    Den Hartog (1956), chapters 2 and 5 (the forced vibration of a damped system, the normal modes of a shaft).
+
+    >>> w, u = torsional_modes([400.0], [4.0])
+    >>> complex(np.round(forced_response(w, u, 0.05, np.array([2.0 + 0j]), np.array(10.0))[0], 12))
+    -0.05j
+    """
+    omega = np.asarray(omega, dtype=float)
+    big = np.asarray(frequency, dtype=float)[..., None]
+    modal = (np.asarray(torques, dtype=complex) @ shapes) / (omega**2 - big**2 + 2j * damping_ratio * omega * big)
+    return modal @ shapes.T
 
 
 def station_stiffness(compliance) -> np.ndarray:

@@ -262,7 +262,7 @@ def check(code, value, low=None, high=None, *, source, unit="", severity="warnin
     >>> c = check("dynamics.seating_velocity", float("nan"), high=0.5, source="s", unit="m/s",
     ...           unevaluated="the valve has not reseated")
     >>> c.severity, c.passed, c.statement
-    ('failure', False, 'dynamic seating velocity at the rated speed cannot be evaluated: the valve has not reseated')
+    ('failure', False, 'largest dynamic seating velocity up to the rated speed cannot be evaluated: the valve has not reseated')
     """
     if severity not in SEVERITIES:
         raise ValueError(f"severity = {severity!r}: allowed {SEVERITIES}")

@@ -261,15 +261,18 @@ def sweep(file, out, valves, force, lang) -> None:
 
 
 def _headline(d):
-    """One line of a sweep's headline numbers (engine rpm)."""
+    """One line of a sweep's headline numbers (engine rpm), the crossing speeds with their estimated errors."""
     from .units import to_display
 
-    def rpm(x):
-        return "none in the range" if x != x else f"{to_display(x, 'rpm'):.0f} rpm"
+    def rpm(x, error=None):
+        if x != x:
+            return "none in the range"
+        return f"{to_display(x, 'rpm'):.0f}" + ("" if error is None or error != error else
+                                                f" ± {to_display(error, 'rpm'):.2g}") + " rpm"
 
-    r = d.at_rated_speed
-    return (f"jump {rpm(d.jump_speed)}, bounce onset {rpm(d.bounce_speed)}, max seating velocity "
-            f"{d.max_seating_velocity:.3g} m/s at {rpm(d.max_seating_velocity_speed)}; at the rated {rpm(r.speed)}: "
+    r, a = d.at_rated_speed, d.accuracy
+    return (f"jump {rpm(d.jump_speed, a.jump_speed)}, bounce onset {rpm(d.bounce_speed, a.bounce_speed)}, max seating "
+            f"velocity {d.max_seating_velocity:.3g} m/s at {rpm(d.max_seating_velocity_speed)}; at the rated {rpm(r.speed)}: "
             f"min contact force {r.min_contact_force:.4g} N, seating velocity {r.seating_velocity:.3g} m/s, bounce "
             f"{r.bounce * 1e3:.3g} mm")
 
@@ -419,24 +422,18 @@ def study(file, grid_items, out, workers, scheduler, max_points, force) -> None:
     from .export import json_text, write_csv
     from .outfolder import atomic_folder
     from .study import (MAX_POINTS, POINT_COLUMNS, VALVE_COLUMNS, GridError, StudyStopped, check_grid,
-                        count_points, evaluate, evaluate_point, parse_grid, point_text, points, read_document,
-                        table, with_values)
+                        count_points, evaluate, parse_grid, point_text, points, read_document, table, too_large,
+                        with_values)
 
     _load(file)
     try:
         grid = parse_grid(grid_items)
         document = read_document(file)
         total = count_points(grid)
-        if total > (max_points or MAX_POINTS):
-            evaluate_point(document)  # the first design loads what the design needs; the second is timed
-            start = time.monotonic()
-            evaluate_point(document)
-            each = time.monotonic() - start
-            processes = workers if scheduler is None else 1
-            raise GridError(f"--grid: {total:,} design points: about {_duration(each * total / processes)} in "
-                            f"{processes} process{'es' if processes > 1 else ''} at the {each:.2g} s that a design of the "
-                            f"file takes; allowed at most {max_points or MAX_POINTS:,} points unless "
-                            f"--max-points {total} is given")
+        large = too_large(total, max_points or MAX_POINTS, document, workers if scheduler is None else 1,
+                          "design points", "--max-points")
+        if large:
+            raise GridError(f"--grid: {large}")
         check_grid(document, grid)
     except GridError as err:
         click.echo(f"error: {err}", err=True)
@@ -473,9 +470,12 @@ def study(file, grid_items, out, workers, scheduler, max_points, force) -> None:
     except OutFolderError as err:
         _fail_out(err)
     done = [r for r in records if r is not None]
-    refused = sum(r["status"] != "ok" for r in done)
+    refused = sum(r["status"] == "refused" for r in done)
+    failed = [r["message"] for r in done if r["status"] == "failed"]
     backend = f"on {scheduler}" if scheduler else f"in {workers} processes" if workers > 1 else "in this process"
-    click.echo(f"{len(done)} design points ({refused} refused) {backend}, {seconds:.1f} s")
+    click.echo(f"{len(done)} design points ({refused} refused"
+               + (f", {len(failed)} failed with an error of valvetrain: {failed[0]}" if failed else "")
+               + f") {backend}, {seconds:.1f} s")
     click.echo(f"wrote {out}/ (study.csv, study.json)")
     if stopped is not None:
         click.echo(f"error: {stopped}; the rows of the points not designed say 'not designed'", err=True)
@@ -496,9 +496,11 @@ def study(file, grid_items, out, workers, scheduler, max_points, force) -> None:
 @click.option("--scheduler", default=None, metavar="ADDRESS",
               help="Evaluate the samples on the Dask distributed cluster of this scheduler (tcp://host:8786); "
                    "needs pip install 'valvetrain[dask]'.")
+@click.option("--max-samples", "max_samples", default=None, type=click.IntRange(1), metavar="N",
+              help="Allow up to N samples (default 10,000; more are refused with an estimate of their time).")
 @click.option("--lang", type=click.Choice(["en", "ru"]), default="en", show_default=True,
               help="Language of the report.")
-def tolerance(file, samples, method, seed, out, workers, scheduler, lang) -> None:
+def tolerance(file, samples, method, seed, out, workers, scheduler, max_samples, lang) -> None:
     """Sample FILE's [[tolerances]] and design every sample; per check the distribution of its margin, its
     probability of failure and the tolerances that drive it.
 
@@ -510,7 +512,7 @@ def tolerance(file, samples, method, seed, out, workers, scheduler, lang) -> Non
 
     from .export import json_text
     from .report.tolerance import report_html
-    from .study import StudyStopped, evaluate, read_document, with_values
+    from .study import MAX_POINTS, StudyStopped, evaluate, read_document, too_large, with_values
     from .tolerance import (RECORDS, RecordFile, ToleranceError, check_tolerances, draw, evaluate_sample,
                             fingerprint, summary)
 
@@ -519,19 +521,28 @@ def tolerance(file, samples, method, seed, out, workers, scheduler, lang) -> Non
         click.echo("error: --workers and --scheduler: give one (the cluster's workers evaluate the samples)", err=True)
         sys.exit(2)
     folder = Path(out)
-    ours = {RECORDS, "records.tmp", *(f"tolerance.{x}{t}" for x in ("json", "html") for t in ("", ".tmp"))}
-    if folder.exists() and (not folder.is_dir() or any(p.name not in ours for p in folder.iterdir())):
+    ours = {"records.tmp", *(f"tolerance.{x}{t}" for x in ("json", "html") for t in ("", ".tmp"))}
+    if folder.exists() and (not folder.is_dir() or any(p.name not in ours | {RECORDS} or p.name in ours
+                                                       and not p.is_file() for p in folder.iterdir())):
         _fail_out(OutFolderError(f"{out}: holds files that valvetrain tolerance did not write; give a new or empty "
                                  "folder"))
     try:
         document = read_document(file)
         centres = check_tolerances(document, spec)
+        large = too_large(samples, max_samples or MAX_POINTS, document, workers if scheduler is None else 1,
+                          "samples", "--max-samples", evaluate_sample)
+        if large:
+            raise ToleranceError(f"--samples: {large}")
         values = draw(spec, centres, samples, method, seed)
         records_file = RecordFile(folder, fingerprint(document, method, seed, values))
         done = records_file.read(samples)
     except ToleranceError as err:
         click.echo(f"error: {err}", err=True)
         sys.exit(2)
+    for number, why in records_file.damaged[:5]:
+        click.echo(f"note: {folder / RECORDS} line {number}: {why}; its sample is designed again", err=True)
+    if len(records_file.damaged) > 5:
+        click.echo(f"note: {len(records_file.damaged) - 5} more lines of {RECORDS} designed again", err=True)
     keys = [t.key for t in spec.tolerances]
     todo = [i for i in range(samples) if i not in done]
     progress = _Progress("samples")
@@ -559,21 +570,17 @@ def tolerance(file, samples, method, seed, out, workers, scheduler, lang) -> Non
         tmp.write_text(text, encoding="utf-8")
         tmp.replace(folder / name)
     backend = f"on {scheduler}" if scheduler else f"in {workers} processes" if workers > 1 else "in this process"
+    failed = result["failed"]["samples"]
     click.echo(f"{len(todo)} samples designed ({samples - len(todo)} kept from before) {backend}, "
-               f"{time.monotonic() - start:.1f} s; {result['refused']['samples']} refused")
-    failing = sorted(((c["probability"], cid) for cid, c in result["checks"].items() if c["failures"]), reverse=True)
-    for p, cid in failing:
+               f"{time.monotonic() - start:.1f} s; {result['refused']['samples']} refused"
+               + (f" ({failed} of them failed with an error of valvetrain: {result['failed']['messages'][0]})"
+                  if failed else ""))
+    failing = sorted(((c["accepted"], -c["probability"], cid) for cid, c in result["checks"].items() if c["failures"]))
+    for accepted, p, cid in failing:
         low, high = result["checks"][cid]["confidence_95"]
-        click.echo(f"  {result['checks'][cid]['quantity']}: P(fail) = {p:.4g} (95 %: {low:.4g}...{high:.4g})")
+        click.echo(f"  {'accepted in the specification: ' if accepted else ''}{result['checks'][cid]['quantity']}: "
+                   f"P(fail) = {-p:.4g} (95 %: {low:.4g}...{high:.4g})")
     click.echo(f"wrote {out}/ ({RECORDS}, tolerance.json, tolerance.html)")
-
-
-def _duration(seconds):
-    """A duration in the unit that reads best: seconds, minutes, hours or days."""
-    for unit, size in (("days", 86400.0), ("hours", 3600.0), ("minutes", 60.0)):
-        if seconds >= 2.0 * size:
-            return f"{seconds / size:.3g} {unit}"
-    return f"{seconds:.2g} s"
 
 
 @main.command()
@@ -601,32 +608,45 @@ def compare(files, out, force) -> None:
     """Compare the cams of every valve of FILES side by side (time-area, fullness, kinematics, curvature,
     contact stress, required spring) and their trains' dynamics (drive load, spring, reduced mass, drive stiffness,
     natural frequency, resonant harmonic, distortion, and the jump speed of a 40-speed one-mass sweep over each
-    valve's [dynamics] range); writes compare.csv, compare.json and overlaid plots."""
+    valve's [dynamics] range), and the breathing of the files with a [breathing] section (air flow, volumetric
+    efficiency, IMEP, peak pressure, torque at each condition); writes compare.csv, compare_breathing.csv,
+    compare.json and overlaid plots."""
     from .compare import table_cell, shown_metrics, with_dynamics, write_comparison
 
     specs = [_load(f) for f in files]
-    if not any(spec.valves for spec in specs):
-        click.echo("error: the files define no valves to compare", err=True)
+    if not any(spec.valves or spec.breathing is not None for spec in specs):
+        click.echo("error: the files define no valves and no [breathing] to compare", err=True)
         sys.exit(2)
     inputs = _check_out(out, files, specs, force)
-    designs = {}
+    designs, breathing = {}, {}
     for spec, label in zip(specs, _file_labels(files), strict=True):
-        for name, v in _design(with_dynamics(spec)).valves.items():
+        results = _design(with_dynamics(spec))
+        for name, v in results.valves.items():
             designs[f"{label}:{name}" if len(files) > 1 else name] = v
+        if results.breathing is not None:
+            breathing[label] = results.breathing
     try:
-        rows, notes = write_comparison(designs, out, inputs, force)
+        rows, notes = write_comparison(designs, out, inputs, force, breathing)
     except OutFolderError as err:
         _fail_out(err)
-    metrics = shown_metrics(rows)
-    width = max(len(label) for _, label in metrics)
-    click.echo(" " * width + "".join(f"  {lab[:18]:>18}" for lab in rows))
-    for key, label in metrics:
-        cells = "".join(f"  {cell:>18}" if isinstance(cell, str) else f"  {cell:>18.6g}"
-                        for cell in (table_cell(r.get(key)) for r in rows.values()))
-        click.echo(f"{label:<{width}}{cells}")
+    if rows:
+        metrics = shown_metrics(rows)
+        width = max(len(label) for _, label in metrics)
+        click.echo(" " * width + "".join(f"  {lab[:18]:>18}" for lab in rows))
+        for key, label in metrics:
+            cells = "".join(f"  {cell:>18}" if isinstance(cell, str) else f"  {cell:>18.6g}"
+                            for cell in (table_cell(r.get(key)) for r in rows.values()))
+            click.echo(f"{label:<{width}}{cells}")
+    for label, b in breathing.items():
+        for part in ("conditions", "curve"):
+            for r in b.summary[part]:
+                click.echo(f"{label} breathing: {r['speed_rpm']:.5g} rpm, {r['intake_pressure_kPa']:.5g} kPa: air "
+                           f"{r['air_mass_flow_g_s']:.4g} g/s, volumetric efficiency {r['volumetric_efficiency']:.4g}, "
+                           f"IMEP {r['imep_kPa']:.4g} kPa")
     for n in notes:
         click.echo(f"note: {n}")
-    click.echo(f"wrote {out}/ (compare.csv, compare.json, plots/)")
+    written = ["compare.csv"] * bool(rows) + ["compare_breathing.csv"] * bool(breathing)
+    click.echo(f"wrote {out}/ ({', '.join(written + ['compare.json', 'plots/'])})")
 
 
 def _file_labels(files):
@@ -680,6 +700,10 @@ def serve(file, port, host, show) -> None:
         app = server(text, folder, host, port)
     except SpecError as err:
         _fail_spec(err)
+    except OSError as err:   # the port taken, an address not of this machine, a name that does not resolve
+        click.echo(f"error: --host {host} --port {port}: cannot listen there ({err.strerror or err}); give another "
+                   "--port (0: any free port) or --host", err=True)
+        sys.exit(2)
     app.start()
     url = f"http://{'127.0.0.1' if host in ('127.0.0.1', '0.0.0.0') else host}:{app.port}/"
     click.echo(f"valvetrain designer at {url} (Ctrl-C stops it)")

@@ -60,6 +60,10 @@ DYNAMICS_METRICS = [
 ]
 """Rows of the comparative dynamics (Valve-train dynamics article (n.d.)), with their labels."""
 
+COMPARE_PLOTS = (("lift", 1.0 / MM, "tappet lift, mm"), ("velocity", 1.0, "tappet velocity, m/s"),
+                 ("acceleration", 1.0, "tappet acceleration, m/s²"), ("jerk", 1.0, "tappet jerk, m/s³"))
+"""The overlaid plots of the cams (``plots/compare_NAME.png``): quantity, scale from SI and axis label."""
+
 COMPARE_SPEEDS = 40
 """Speeds of the one-mass sweep of each compared valve (fewer if its [dynamics] section asks fewer)."""
 
@@ -209,8 +213,70 @@ def comparison(designs) -> tuple[dict[str, dict[str, Any]], list[str]]:
     return rows, notes
 
 
-def write_comparison(designs, out, inputs=(), force=False) -> tuple[dict[str, dict[str, Any]], list[str]]:
-    """Write ``compare.csv``, ``compare.json`` and the overlaid plots into ``out`` atomically.
+BREATHING_KEYS = ("speed_rpm", "intake_pressure_kPa", "air_mass_flow_g_s", "volumetric_efficiency", "trapped_mass_mg",
+                  "residual_gas_fraction", "imep_kPa", "imep_gross_kPa", "pmep_kPa", "peak_pressure_kPa",
+                  "peak_pressure_crank_deg", "torque_Nm", "power_kW")
+"""Columns of ``compare_breathing.csv``: each condition's figures of the breathing (results.json's keys)."""
+
+
+def breathing_rows(breathing) -> dict[str, list]:
+    """The breathing of each compared specification as the columns of ``compare_breathing.csv``: one row a condition
+    (the conditions, then the curve's speeds) of each label, side by side.
+
+    Parameters
+    ----------
+    breathing : dict
+        ``label -> BreathingResults`` (:mod:`valvetrain.design.breathing`).
+
+    Returns
+    -------
+    dict
+        ``column -> values``: ``label``, ``part`` (``conditions`` or ``curve``) and :data:`BREATHING_KEYS` (empty
+        where a record has none: the torque of a motored engine).
+    """
+    out = {"label": [], "part": [], **{k: [] for k in BREATHING_KEYS}}
+    for label, b in breathing.items():
+        for part in ("conditions", "curve"):
+            for record in b.summary[part]:
+                out["label"].append(label)
+                out["part"].append(part)
+                for k in BREATHING_KEYS:
+                    out[k].append(record.get(k))
+    return out
+
+
+def _breathing_plot(breathing, path):
+    """Volumetric efficiency (and a fired engine's torque) against the speed, one line per compared specification."""
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=(8, 6.5))
+    top, bottom = fig.subplots(2, 1, sharex=True)
+    for label, b in breathing.items():
+        records = b.summary["curve"] or b.summary["conditions"]
+        speed = [r["speed_rpm"] for r in records]
+        style = dict(marker="o", ls="-" if b.summary["curve"] else "none")
+        top.plot(speed, [r["volumetric_efficiency"] for r in records], label=label, **style)
+        if records and "torque_Nm" in records[0]:
+            bottom.plot(speed, [r["torque_Nm"] for r in records], label=label, **style)
+    _save_against_speed(fig, top, bottom, "volumetric efficiency", "indicated torque, N m (fired)", path)
+
+
+def _save_against_speed(fig, top, bottom, top_label, bottom_label, path):
+    """Label, grid and save a figure of two quantities against the engine speed."""
+    top.set_ylabel(top_label)
+    bottom.set_ylabel(bottom_label)
+    bottom.set_xlabel("engine speed, rpm")
+    for ax in (top, bottom):
+        ax.grid(alpha=0.3)
+    top.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+
+
+def write_comparison(designs, out, inputs=(), force=False, breathing=None) -> tuple[dict[str, dict[str, Any]], list[str]]:
+    """Write ``compare.csv``, ``compare.json`` and the overlaid plots into ``out`` atomically; with ``breathing``
+    (``label -> BreathingResults`` of the specifications with a [breathing] section) also ``compare_breathing.csv``
+    and ``plots/compare_breathing.png``, and the records in ``compare.json``.
 
     ``inputs`` (the files read) and ``force`` are those of :func:`valvetrain.outfolder.atomic_folder`.
     """
@@ -220,18 +286,22 @@ def write_comparison(designs, out, inputs=(), force=False) -> tuple[dict[str, di
     from .outfolder import atomic_folder
     from .report.plots import jerk_impulses
 
-    rows, notes = comparison(designs)
+    rows, notes = comparison(designs) if designs else ({}, [])
     with atomic_folder(out, inputs, force) as tmp:
         (tmp / "plots").mkdir()
         labels = list(rows)
         metrics = shown_metrics(rows)
         table = {"quantity": [label for _, label in metrics]}
         table.update({lab: [table_cell(rows[lab].get(key)) for key, _ in metrics] for lab in labels})
-        write_csv(tmp / "compare.csv", table)
-        (tmp / "compare.json").write_text(json_text({"entries": rows, "notes": notes}), encoding="utf-8")
-        quantities = (("lift", 1.0 / MM, "tappet lift, mm"), ("velocity", 1.0, "tappet velocity, m/s"),
-                      ("acceleration", 1.0, "tappet acceleration, m/s²"), ("jerk", 1.0, "tappet jerk, m/s³"))
-        for i, (name, scale, ylabel) in enumerate(quantities):
+        if rows:
+            write_csv(tmp / "compare.csv", table)
+        record = {"entries": rows, "notes": notes}
+        if breathing:
+            write_csv(tmp / "compare_breathing.csv", breathing_rows(breathing))
+            _breathing_plot(breathing, tmp / "plots" / "compare_breathing.png")
+            record["breathing"] = {label: b.summary for label, b in breathing.items()}
+        (tmp / "compare.json").write_text(json_text(record), encoding="utf-8")
+        for i, (name, scale, ylabel) in enumerate(COMPARE_PLOTS if designs else ()):
             fig = Figure(figsize=(8, 4.5))
             ax = fig.subplots()
             for label, v in designs.items():
@@ -275,11 +345,4 @@ def _dynamics_plot(designs, path):
         rpm = np.asarray(t.speed) / rpm_to_rad_s(1.0)
         top.plot(rpm, t.min_contact_force, marker=".", label=f"{label} ({v.law.name})")
         bottom.plot(rpm, t.seating_velocity, marker=".", label=f"{label} ({v.law.name})")
-    top.set_ylabel("min cam contact force, N")
-    bottom.set_ylabel("seating velocity, m/s")
-    bottom.set_xlabel("engine speed, rpm")
-    for ax in (top, bottom):
-        ax.grid(alpha=0.3)
-    top.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    _save_against_speed(fig, top, bottom, "min cam contact force, N", "seating velocity, m/s", path)

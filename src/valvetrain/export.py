@@ -15,9 +15,10 @@ from .design.grinding import master_cartesian_columns, master_polar_columns, wea
 from .design.hydraulic_actuation import sweep_columns as hydraulic_sweep_columns, table_columns as hydraulic_columns
 from .outfolder import atomic_folder
 from .specification import spec_toml
-from .tables import (cartesian_contour_columns, contour_columns, crank_columns, engine_torque_columns,
-                     lift_export_columns, lift_export_comments, lift_table_columns, polar_contour_columns,
-                     strength_speed_columns, two_stroke_columns, two_stroke_speed_columns)
+from .tables import (breathing_columns, breathing_record_columns, camshaft_torsion_columns, cartesian_contour_columns,
+                     contour_columns, crank_columns, engine_torque_columns, lift_export_columns, lift_export_comments,
+                     lift_table_columns, polar_contour_columns, strength_speed_columns, two_stroke_columns,
+                     two_stroke_speed_columns)
 from .units import MM
 
 def _cell(x):
@@ -223,6 +224,9 @@ def write_outputs(results, out, lang="en", inputs=(), force=False, figures="main
         out/results.json, spec.toml (the specification as run, every default written out)
         out/tables/NAME_lift.csv, NAME_strength.csv (one row per engine speed of the strength checks),
                    crank.csv, engine_torque.csv, two_stroke_ports.csv, two_stroke_time_area.csv,
+                   camshaft_torsion.csv (a [camshaft] section: one row per engine speed),
+                   breathing_condition_N.csv (the converged cycle of the N-th [[breathing.conditions]] every crank
+                   degree), breathing_conditions.csv, breathing_curve.csv (their figures, one row a condition),
                    NAME_dynamics.csv (a [dynamics] section: one row per speed),
                    NAME_wear_error.csv (a [grinding] section: the lift error of the worn wheel)
                    NAME_hydraulic.csv (a [hydraulic] section: pressures and lifts against camshaft angle),
@@ -237,7 +241,8 @@ def write_outputs(results, out, lang="en", inputs=(), force=False, figures="main
                   NAME_grinding.png (a [grinding] section),
                   NAME_hydraulic.png, NAME_hydraulic_sweep.png (all) (a [hydraulic] section),
                   crank_forces.png (all), crank_torque.png, crank_pin_polar.png (all),
-                  two_stroke_ports.png, two_stroke_time_area.png (all), valve_timing.png
+                  two_stroke_ports.png, two_stroke_time_area.png (all), valve_timing.png,
+                  breathing_pv.png, breathing_speed.png (two speeds or more)
         out/report.html
         out/.valvetrain-output (the files the run wrote)
     """
@@ -278,9 +283,18 @@ def write_outputs(results, out, lang="en", inputs=(), force=False, figures="main
         if results.crank is not None:
             write_csv(tmp / "tables" / "crank.csv", crank_columns(results.crank))
             write_csv(tmp / "tables" / "engine_torque.csv", engine_torque_columns(results.crank))
+        if results.camshaft is not None:
+            write_csv(tmp / results.camshaft.figures.response.table, camshaft_torsion_columns(results.camshaft))
         if results.two_stroke is not None:
             write_csv(tmp / "tables" / "two_stroke_ports.csv", two_stroke_columns(results.two_stroke))
             write_csv(tmp / "tables" / "two_stroke_time_area.csv", two_stroke_speed_columns(results.two_stroke))
+        if results.breathing is not None:
+            for i, r in enumerate(results.breathing.conditions, start=1):
+                write_csv(tmp / "tables" / f"breathing_condition_{i}.csv", breathing_columns(r))
+            for name, part in (("conditions", results.breathing.conditions), ("curve", results.breathing.curve)):
+                if part:
+                    write_csv(tmp / "tables" / f"breathing_{name}.csv",
+                              breathing_record_columns([r.figures for r in part]))
         from .report.html import embedded, render_report, write_report
 
         if figures != "none" and drawer is not None:

@@ -39,8 +39,9 @@ def _text(path, error):
         raise error(f"{shown_path(path)}: cannot read the file: not UTF-8 text ({exc.reason})") from None
 
 
-def read_two_columns(path, headers, error) -> tuple[tuple[str, str], list[tuple[int, float, float]]]:
-    """Read a CSV file of a header row and rows of two finite numbers; ``#`` lines are comments.
+def read_columns(path, headers, error) -> tuple[tuple[str, ...], list[tuple[int, ...]]]:
+    """Read a CSV file of a header row and rows of finite numbers, as many as the header names; ``#`` lines are
+    comments.
 
     Parameters
     ----------
@@ -53,8 +54,8 @@ def read_two_columns(path, headers, error) -> tuple[tuple[str, str], list[tuple[
 
     Returns
     -------
-    (tuple of str, list of (int, float, float))
-        The header found and the rows as (line number, first value, second value).
+    (tuple of str, list of tuple)
+        The header found and the rows as (line number, value, value, ...).
     """
     path = Path(path)
     text = _text(path, error)
@@ -69,16 +70,28 @@ def read_two_columns(path, headers, error) -> tuple[tuple[str, str], list[tuple[
         raise error(f"{shown_path(path)}:{n0}: header {_short(','.join(key))!r}: allowed {allowed}")
     out = []
     for n, r in rows[1:]:
-        if len(r) != 2:
-            raise error(f"{shown_path(path)}:{n}: expected 2 values, found {len(r)}")
+        if len(r) != len(key):
+            raise error(f"{shown_path(path)}:{n}: expected {len(key)} values, found {len(r)}")
         try:
-            x, y = float(r[0]), float(r[1])
+            values = tuple(float(v) for v in r)
         except ValueError:
-            raise error(f"{shown_path(path)}:{n}: {_short(','.join(r))!r} is not two numbers") from None
-        if not (np.isfinite(x) and np.isfinite(y)):
+            count = {2: "two", 3: "three"}.get(len(key), str(len(key)))
+            raise error(f"{shown_path(path)}:{n}: {_short(','.join(r))!r} is not {count} numbers") from None
+        if not all(np.isfinite(values)):
             raise error(f"{shown_path(path)}:{n}: values must be finite")
-        out.append((n, x, y))
+        out.append((n, *values))
     return key, out
+
+
+def read_two_columns(path, headers, error) -> tuple[tuple[str, str], list[tuple[int, float, float]]]:
+    """Read a CSV file of a header row and rows of two finite numbers (:func:`read_columns` of two-column headers).
+
+    Returns
+    -------
+    (tuple of str, list of (int, float, float))
+        The header found and the rows as (line number, first value, second value).
+    """
+    return read_columns(path, headers, error)
 
 
 _PLAIN = re.compile(r"[^\t\n\x20-\x7e]|\"")
@@ -251,3 +264,84 @@ def read_indicator(path, strokes) -> IndicatorTable:
         raise PressureFileError(f"{where}: at least 4 data rows are needed, found {len(xs)}")
     x = np.radians(xs) if kind == "angle" else np.array(xs) * 1e-6
     return IndicatorTable(kind, np.asarray(x), np.array(ps) * 1e6, where)
+
+
+class BreathingFileError(ValueError):
+    """A valve-lift or discharge-coefficient file of ``[breathing]`` that cannot be used; ``key`` is the key that
+    names it (``lift_file``, ``cd_file``), the message names the file and the line."""
+
+    def __init__(self, key, message):
+        super().__init__(message)
+        self.key = key
+
+
+VALVE_LIFT_RANGES = {
+    "crank_deg": (-1440.0, 1440.0, "crank degrees from the gas-exchange TDC, within two cycles either way"),
+    "lift_mm": (0.0, 200.0, "a valve lift in mm, zero or more"),
+}
+"""The values a measured valve lift may hold."""
+
+
+def read_valve_lift(path) -> tuple[np.ndarray, np.ndarray]:
+    """Read a measured valve lift: CSV with the header ``crank_deg,lift_mm`` (crank degrees from the gas-exchange
+    TDC, strictly increasing, spanning less than a cycle; the valve shut outside the rows).
+
+    Returns
+    -------
+    (ndarray, ndarray)
+        Crank angles [deg] and lifts [mm], as in the file.
+
+    Raises
+    ------
+    BreathingFileError
+        Naming the file and line of the first problem (key ``lift_file``).
+    """
+    def error(text):
+        return BreathingFileError("lift_file", text)
+
+    _, rows = read_columns(path, [("crank_deg", "lift_mm")], error)
+    lines = [r[0] for r in rows]
+    angles, lifts = (np.array([r[k] for r in rows], dtype=float) for k in (1, 2))
+    check_ranges(path, {"crank_deg": angles, "lift_mm": lifts}, VALVE_LIFT_RANGES, lambda i: lines[i], error)
+    back = np.flatnonzero(np.diff(angles) <= 0.0)
+    if back.size:
+        i = int(back[0]) + 1
+        raise error(f"{shown_path(path)}:{lines[i]}: crank_deg = {angles[i]:g} must be larger than the previous "
+                    f"{angles[i - 1]:g}")
+    if angles.size < 4:
+        raise error(f"{shown_path(path)}: at least 4 rows are needed, found {angles.size}")
+    if angles[-1] - angles[0] >= 720.0:
+        raise error(f"{shown_path(path)}: the rows span {angles[-1] - angles[0]:g} crank deg; allowed less than the "
+                    "720 of a cycle")
+    return angles, lifts
+
+
+def read_cd_table(path) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Read a discharge-coefficient table: CSV with the header ``l_over_d,cd_forward,cd_reverse`` (or ``l_over_d,cd``,
+    the same both ways); L/D strictly increasing, every C_D within 0...1.
+
+    Returns
+    -------
+    (ndarray, ndarray, ndarray)
+        L/D, forward and reverse C_D.
+
+    Raises
+    ------
+    BreathingFileError
+        Naming the file and line of the first problem (key ``cd_file``): a table that is not a function of L/D, a
+        coefficient outside 0...1.
+    """
+    from .breathing.valves import CdTableError, check_table
+
+    def error(text):
+        return BreathingFileError("cd_file", text)
+
+    key, rows = read_columns(path, [("l_over_d", "cd_forward", "cd_reverse"), ("l_over_d", "cd")], error)
+    x = np.array([r[1] for r in rows], dtype=float)
+    forward = np.array([r[2] for r in rows], dtype=float)
+    reverse = np.array([r[-1] for r in rows], dtype=float)
+    try:
+        check_table(x, forward, reverse, "port", shown_path(path))
+    except CdTableError as exc:
+        raise error(str(exc)) from None
+    return x, forward, reverse

@@ -91,13 +91,56 @@ def integrals(fn, starts, ends, breakpoints) -> np.ndarray:
                      for v, (grid, edges, half, nodes) in zip(parts, pieces, strict=True)])
 
 
+TIE_RTOL = 16.0 * np.finfo(float).eps
+"""Relative difference within which two values are a tie for :func:`first_largest`: 16 units in the last place.
+The two equal maxima of a symmetric function (a symmetric cam's flanks, the lobes of a multi-cylinder camshaft)
+come out a few units apart, in a direction that depends on the machine (the BLAS kernel of a matrix product); a
+value further from the largest than this is not its equal."""
+
+
+def first_largest(values, axis=None, atol=0.0) -> int | np.ndarray:
+    """The index of the largest value, of the values within :data:`TIE_RTOL` of it (relative, plus ``atol``) the
+    first: a tie is decided by the order of ``values`` (along ``axis``), not by the round-off of its members.
+
+    Parameters
+    ----------
+    values : array_like
+        The values; NaN is never the largest.
+    axis : int, optional
+        The axis along which to search (None: the flattened array, as :func:`numpy.argmax`).
+    atol : float
+        An absolute part of the tie (the unit of ``values``), for values that are differences of larger numbers
+        (the distance of a grid point from an angle).
+
+    Returns
+    -------
+    int or ndarray
+        The index (an array of them along ``axis``, as :func:`numpy.argmax`).
+
+    Examples
+    --------
+    The two maxima of a symmetric cam, one unit in the last place apart: the first wins, whichever is larger.
+
+    >>> force = np.array([1.0, 3.0, 2.0, 3.0 * (1.0 + 2.2e-16), 1.0])
+    >>> int(first_largest(force)), int(np.argmax(force))
+    (1, 3)
+    """
+    values = np.asarray(values, dtype=float)
+    if axis is None:
+        values, axis = values.ravel(), 0
+    top = np.nanmax(values, axis=axis, keepdims=True)
+    tied = values >= top - np.where(np.isfinite(top), TIE_RTOL * np.abs(top) + atol, 0.0)
+    return np.argmax(tied, axis=axis) if values.ndim > 1 else int(np.argmax(tied))
+
+
 def extremum(fn, edges, kind="max", samples=65) -> tuple[float, float]:
     """Global extremum of a piecewise-smooth scalar function on an interval.
 
     Each piece between consecutive ``edges`` is sampled at ``samples`` points (its
     ends included); the best sample is then refined with bounded Brent iteration
     (:func:`bounded_minimum`) between its neighbours, and the better of
-    the sample and the refined point is returned.  An extremum at a junction (a kink)
+    the sample and the refined point is returned; of samples equal to round-off (the two extrema of a symmetric
+    function) the first, the smallest ``x``, is refined (:func:`first_largest`).  An extremum at a junction (a kink)
     is found exactly because the junctions are sampled.  Where the function is not
     finite next to the best sample (a masked region), the sample itself is returned.
 
@@ -127,7 +170,7 @@ def extremum(fn, edges, kind="max", samples=65) -> tuple[float, float]:
     t = np.linspace(0.0, 1.0, samples)
     xs = np.unique((edges[:-1, None] + (edges[1:] - edges[:-1])[:, None] * t[None, :]).ravel())
     ys = sign * np.asarray(fn(xs), dtype=float)
-    i = int(np.argmax(ys))
+    i = first_largest(ys)
     j, k = max(i - 1, 0), min(i + 1, xs.size - 1)
     lo, hi = xs[j], xs[k]
     best_x, best_y = xs[i], ys[i]
@@ -243,7 +286,7 @@ def _sign_or_one(x):
     return 1.0 if x >= 0.0 else -1.0
 
 
-def bracketed_roots(fn, a, b, fa, fb, max_iterations=100) -> np.ndarray:
+def bracketed_roots(fn, a, b, fa, fb, max_iterations=100, brackets=False) -> np.ndarray | tuple[np.ndarray, ...]:
     """Roots of a function in many brackets at once, by the Illinois variant of regula falsi.
 
     Every bracket is refined in the same vectorised call of ``fn`` per iteration until it
@@ -263,11 +306,14 @@ def bracketed_roots(fn, a, b, fa, fb, max_iterations=100) -> np.ndarray:
     max_iterations : int
         Bound on the iterations (the Illinois method converges superlinearly, in some 10
         iterations from a bracket of a hundredth of the abscissa).
+    brackets : bool
+        Return the last brackets too.
 
     Returns
     -------
-    ndarray
-        One root per bracket.
+    ndarray, or (ndarray, ndarray, ndarray) with ``brackets``
+        One root per bracket (and the ends a, b of the last brackets, ``fn`` of opposite signs at them: at a jump
+        of ``fn`` across zero, its two sides).
 
     Notes
     -----
@@ -305,7 +351,7 @@ def bracketed_roots(fn, a, b, fa, fb, max_iterations=100) -> np.ndarray:
         b[j], fb[j], side[j] = x[j], fx[same_b], 1.0
         a[k], fa[k], side[k] = x[k], fx[same_a], -1.0
         active[i] = (fx != 0.0) & (np.abs(b[i] - a[i]) > tol[i])
-    return x
+    return (x, a, b) if brackets else x
 
 
 def level_span(fn, a, b, level, samples=4001) -> tuple[float, float]:
@@ -349,12 +395,14 @@ def level_span(fn, a, b, level, samples=4001) -> tuple[float, float]:
     return float(roots[0]), float(roots[1])
 
 
-def invert_angle(angle_of, target, samples=4097) -> np.ndarray:
+def invert_angle(angle_of, target, samples=4097, brackets=False) -> np.ndarray | tuple[np.ndarray, ...]:
     """The parameters theta in [-pi, pi] at which an angle ``angle_of(theta)`` [rad] that grows by 2 pi over the
     revolution equals each ``target`` [rad], all at once.
 
     Each target is bracketed on ``samples`` parameters and the bracket refined by :func:`bracketed_roots` to the
     round-off of the angle (a polar angle of a contour point, the direction of a normal): exact, not interpolated.
+    A target that the angle jumps over (a gap of a contour) gives the parameter of the jump; with ``brackets``
+    the ends of the last brackets are returned too (of the shape of ``target``), the jump's two sides.
 
     Examples
     --------
@@ -378,4 +426,5 @@ def invert_angle(angle_of, target, samples=4097) -> np.ndarray:
     edge = np.sign(f_lo) == np.sign(f_hi)
     at = np.where(np.abs(f_lo) <= np.abs(f_hi), lo, hi)
     lo, hi = np.where(edge, at, lo), np.where(edge, at, hi)
-    return bracketed_roots(miss, lo, hi, miss(lo), miss(hi)).reshape(target.shape)
+    found = bracketed_roots(miss, lo, hi, miss(lo), miss(hi), brackets=brackets)
+    return tuple(f.reshape(target.shape) for f in found) if brackets else found.reshape(target.shape)

@@ -27,6 +27,7 @@ import multiprocessing
 import os
 from pathlib import Path
 import re
+import time
 import tomllib
 from typing import Any
 
@@ -34,6 +35,7 @@ import pydantic
 import tomli_w
 
 from .design import run
+from .interruption import Interruption
 from .specification import LAWS, SpecError, set_keys, validate
 from .specification.messages import location, message
 from .specification.models import Spec
@@ -54,8 +56,8 @@ VALVE_COLUMNS = [
 """Columns of each valve of a point (``VALVE.KEY``), with their meanings."""
 
 POINT_COLUMNS = [
-    ("status", "'ok', 'refused' (the point is not a valid design; see message), or 'not designed' (the study "
-               "stopped before it)"),
+    ("status", "'ok', 'refused' (the point is not a valid design; see message), 'failed' (the design stopped with "
+               "an error of valvetrain, named in message), or 'not designed' (the study stopped before it)"),
     ("failures", "failed checks of severity failure (not counting those accepted in the file)"),
     ("warnings", "failed checks of severity warning"),
     ("message", "why the point was refused, one problem per line"),
@@ -242,18 +244,31 @@ def evaluate_point(document) -> dict[str, Any]:
     Returns
     -------
     dict
-        ``status`` ('ok' or 'refused'), ``valves`` (name -> the figures of :data:`VALVE_COLUMNS`), ``failures``
-        and ``warnings`` (counts of the failed checks not accepted in the file), ``message`` (the refusal's
-        problems, one a line; empty for a design).
+        ``status`` ('ok', 'refused' or 'failed': the design stopped with an error, :func:`failure_text`),
+        ``valves`` (name -> the figures of :data:`VALVE_COLUMNS`), ``failures`` and ``warnings`` (counts of the
+        failed checks not accepted in the file), ``message`` (the refusal's problems, one a line, or the error;
+        empty for a design).
     """
     try:
         results = run(validate(document))
     except SpecError as err:
         return {"status": "refused", "valves": {}, "failures": None, "warnings": None,
                 "message": "\n".join(err.problems)}
+    except Exception as exc:  # noqa: BLE001 - one point that cannot be designed must not stop the study
+        return {"status": "failed", "valves": {}, "failures": None, "warnings": None, "message": failure_text(exc)}
     severities = [w.severity for w in results.warnings]
     return {"status": "ok", "valves": {name: _valve_record(v) for name, v in results.valves.items()},
             "failures": severities.count("failure"), "warnings": severities.count("warning"), "message": ""}
+
+
+def failure_text(exc) -> str:
+    """The message of a point (or sample) whose design stopped with an error of valvetrain, not a refusal of its
+    specification: the point is recorded as failed, the study goes on.  An interruption (Ctrl-C) that a library
+    made into an error is raised again (:class:`valvetrain.interruption.Interruption`)."""
+    if Interruption.seen:
+        raise exc
+    return (f"the design stopped with an error of valvetrain, not a refusal of the file ({type(exc).__name__}: "
+            f"{str(exc)[:200]}); please report it with the file")
 
 
 class StudyStopped(RuntimeError):
@@ -266,8 +281,38 @@ class StudyStopped(RuntimeError):
 
 
 MAX_POINTS = 10_000
-"""Most design points a study takes without ``--max-points``: at the 0.05-0.5 s a point of the shipped examples
-(more with a [dynamics] section) about 10 minutes to an hour and a half in one process."""
+"""Most design points a study takes without ``--max-points`` (and samples a tolerance study without
+``--max-samples``): at the 0.05-0.5 s a point of the shipped examples (more with a [dynamics] section) about 10
+minutes to an hour and a half in one process."""
+
+
+def duration(seconds) -> str:
+    """A duration in the unit that reads best: seconds, minutes, hours or days.
+
+    >>> duration(30.0), duration(7200.0), duration(3e6)
+    ('30 s', '2 hours', '34.7 days')
+    """
+    for unit, size in (("days", 86400.0), ("hours", 3600.0), ("minutes", 60.0)):
+        if seconds >= 2.0 * size:
+            return f"{seconds / size:.3g} {unit}"
+    return f"{seconds:.2g} s"
+
+
+def too_large(total, allowed, document, processes, what, option, point=None) -> str | None:
+    """Why a study of ``total`` designs is refused, or None where ``total`` is at most ``allowed``: the count, an
+    estimate of its time from a timed design of ``document`` by ``point`` (default :func:`evaluate_point`; the first
+    design loads what a design needs, the second is timed) in ``processes`` processes, and the option (``option``,
+    ``--max-points`` or ``--max-samples``) that allows it; ``what`` names the designs (``design points``)."""
+    if total <= allowed:
+        return None
+    point = point or evaluate_point
+    point(document)
+    start = time.monotonic()
+    point(document)
+    each = time.monotonic() - start
+    return (f"{total:,} {what}: about {duration(each * total / processes)} in {processes} "
+            f"process{'es' if processes > 1 else ''} at the {each:.2g} s that a design of the file takes; allowed at "
+            f"most {allowed:,} {what.split()[-1]} unless {option} {total} is given")
 
 DASK_TASKS_PER_THREAD = 8
 """Tasks of a Dask study per worker thread: enough to even out the load, few enough that the scheduler's own

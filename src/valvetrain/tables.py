@@ -3,6 +3,7 @@ stage results for the CSV files, the exports for manufacture and the report."""
 
 import numpy as np
 
+from .results import shown
 from .units import MM, rad_to_deg, to_display
 
 LIFT_COLUMNS = [
@@ -103,6 +104,17 @@ def engine_torque_columns(crank) -> dict[str, np.ndarray]:
     return out
 
 
+def camshaft_torsion_columns(camshaft) -> dict[str, np.ndarray]:
+    """The camshaft's steady torsional response against the engine speed: ``speed_rpm``, the fluctuation of each
+    cylinder's lobe timing (largest less smallest lag over a revolution) [cam deg] and the largest force of the timing
+    drive [N] (:class:`~valvetrain.design.camshaft.CamshaftResults`)."""
+    out = {"speed_rpm": to_display(camshaft.speeds, "rpm")}
+    for i, cylinder in enumerate(camshaft.figures.cylinders):
+        out[f"timing_fluctuation_cyl{cylinder}_cam_deg"] = rad_to_deg(camshaft.fluctuation[:, i])
+    out["drive_force_N"] = camshaft.drive_forces
+    return out
+
+
 def two_stroke_columns(ports) -> dict[str, np.ndarray]:
     """Port areas against the crank angle from TDC [deg, mm2]."""
     out = {"crank_deg": rad_to_deg(ports.phi)}
@@ -115,6 +127,52 @@ def two_stroke_speed_columns(ports) -> dict[str, np.ndarray]:
     out = {"speed_rpm": to_display(ports.speeds, "rpm")}
     out.update({f"{name}_time_area_mm2_s": c.time_area / MM**2 for name, c in ports.curves.items()})
     return out
+
+
+BREATHING_COLUMNS = [
+    ("crank_deg", "crank angle from the gas-exchange TDC [deg]"), ("volume_cm3", "cylinder volume [cm3]"),
+    ("pressure_kPa", "cylinder pressure [kPa]"), ("temperature_K", "cylinder gas temperature [K]"),
+    ("mass_mg", "mass in the cylinder [mg]"), ("burned_fraction", "share of burned or residual gas"),
+    ("intake_flow_g_s", "mass flow into the cylinder through the intake valves [g/s] (negative: back-flow)"),
+    ("exhaust_flow_g_s", "mass flow out of the cylinder through the exhaust valves [g/s] (negative: back-flow)"),
+    ("intake_port_kPa", "pressure in the intake port at the valves [kPa]"),
+    ("exhaust_port_kPa", "pressure in the exhaust port at the valves [kPa]"),
+]
+"""Columns of ``tables/breathing_condition_N.csv``: the converged cycle of the N-th condition, every crank degree."""
+
+BREATHING_STEP_DEG = 1.0
+"""Step of the breathing's per-angle tables [crank deg]."""
+
+
+def breathing_columns(result) -> dict[str, np.ndarray]:
+    """The converged cycle of a :class:`~valvetrain.breathing.BreathingResult` every :data:`BREATHING_STEP_DEG`, in
+    the units of :data:`BREATHING_COLUMNS` (linear between the integration's steps)."""
+    c = result.columns
+    deg = np.arange(0.0, 720.0 + BREATHING_STEP_DEG / 2, BREATHING_STEP_DEG)
+    at = rad_to_deg(c.angle)
+
+    def on(values):
+        return np.interp(deg, at, values)
+
+    return {"crank_deg": deg, "volume_cm3": on(c.volume) * 1e6, "pressure_kPa": on(c.pressure) * 1e-3,
+            "temperature_K": on(c.temperature), "mass_mg": on(c.mass) * 1e6,
+            "burned_fraction": on(c.burned_mass / c.mass), "intake_flow_g_s": on(c.intake_flow) * 1e3,
+            "exhaust_flow_g_s": on(c.exhaust_flow) * 1e3, "intake_port_kPa": on(c.intake_port) * 1e-3,
+            "exhaust_port_kPa": on(c.exhaust_port) * 1e-3}
+
+
+BREATHING_RECORD_KEYS = ("speed", "intake_pressure", "exhaust_pressure", "air_mass_flow", "volumetric_efficiency",
+                         "trapped_mass", "residual_gas_fraction", "imep", "imep_gross", "pmep", "peak_pressure",
+                         "peak_pressure_angle", "torque", "power")
+"""Fields of the breathing's records in ``tables/breathing_conditions.csv`` and ``breathing_curve.csv`` (the torque
+and power of a fired engine)."""
+
+
+def breathing_record_columns(records) -> dict[str, list]:
+    """The records of several conditions as columns: one row a condition, the keys and units of results.json."""
+    fields = [k for k in BREATHING_RECORD_KEYS if all(getattr(r, k) is not None for r in records)]
+    rows = [shown(r, *fields) for r in records]
+    return {key: [row[i][1] for row in rows] for i, (key, _) in enumerate(rows[0])}
 
 
 def contour_columns(valve) -> dict[str, np.ndarray]:

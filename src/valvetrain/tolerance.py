@@ -24,11 +24,12 @@ import numpy as np
 from scipy import stats
 from scipy.stats import qmc
 
+from .checks import SEVERITIES
 from .design import run
 from .specification import SpecError, validate
 from .specification.messages import shown
 from .specification.validate import spec_document
-from .study import MMAP_THRESHOLD_BYTES, GridError, check_grid, set_malloc
+from .study import MMAP_THRESHOLD_BYTES, GridError, check_grid, failure_text, set_malloc
 from .units import rpm_to_rad_s
 
 NORMAL_TRUNCATION_SIGMA = 6.0
@@ -99,6 +100,10 @@ def check_tolerances(document, spec) -> list[float]:
     centres = [nominal(spec, t.key) for t in spec.tolerances]
     for t, centre in zip(spec.tolerances, centres, strict=True):
         low, high = sample_range(t, centre)
+        if not low < high:   # one end given beyond the other's default cut at 6 sigma
+            raise ToleranceError(f"tolerances: {t.key}: the sample range [{low:g}, {high:g}] is empty: the end not "
+                                 f"given is the nominal {centre:g} -+ {NORMAL_TRUNCATION_SIGMA:g} sigma; give both "
+                                 "low and high")
         try:
             check_grid(document, [(t.key, [low, high])])
         except GridError as err:
@@ -124,7 +129,10 @@ def inverse_cdf(u, tolerance, centre) -> np.ndarray:
     -----
     Uniform on [a, b]: x = a + u (b - a).  Normal N(mu, sigma) truncated to [a, b]:
     x = mu + sigma Phi^-1(Phi(alpha) + u (Phi(beta) - Phi(alpha))), alpha = (a - mu)/sigma, beta = (b - mu)/sigma
-    (the inverse transform of the truncated normal).
+    (the inverse transform of the truncated normal), evaluated by :data:`scipy.stats.truncnorm`'s inverse, which
+    stays accurate in the far tails: written as above, Phi(alpha) and Phi(beta) round to the same number (or to 1)
+    a few sigma out and the draws became inf or left [a, b] (8 sigma and more).  A range so far out that the
+    inverse overflows (beyond ~1e300 sigma) is concentrated at its end nearest the mean; every draw is in [a, b].
 
     References
     ----------
@@ -134,8 +142,10 @@ def inverse_cdf(u, tolerance, centre) -> np.ndarray:
     if tolerance.distribution == "uniform":
         return low + u * (high - low)
     s = tolerance.sigma
-    a, b = stats.norm.cdf([(low - centre) / s, (high - centre) / s])
-    return centre + s * stats.norm.ppf(a + u * (b - a))
+    alpha, beta = (low - centre) / s, (high - centre) / s
+    x = centre + s * stats.truncnorm.ppf(u, alpha, beta)
+    near = low if alpha > 0.0 else high if beta < 0.0 else centre
+    return np.clip(np.where(np.isfinite(x), x, near), low, high)
 
 
 def draw(spec, centres, n, method, seed) -> np.ndarray:
@@ -193,8 +203,10 @@ def evaluate_sample(document) -> dict[str, Any]:
     Returns
     -------
     dict
-        ``status`` ('ok' or 'refused'), ``message`` (the refusal's problems, one a line), ``checks`` (check id ->
-        ``[margin, passed, quantity, severity]``, the margin None where the value cannot be evaluated) and
+        ``status`` ('ok', 'refused' or 'failed': the design stopped with an error,
+        :func:`valvetrain.study.failure_text`), ``message`` (the refusal's problems, one a line, or the error),
+        ``checks`` (check id -> ``[margin, passed, quantity, severity, accepted]``, the margin None where it is not
+        a finite number, accepted whether the file's ``[[accepted]]`` names the check) and
         ``headlines`` (valve -> ``jump_speed_rpm`` (engine rpm, None: no separation in the range swept) and
         ``max_seating_velocity_m_s``) of the valves with a [dynamics] section.
     """
@@ -205,9 +217,11 @@ def evaluate_sample(document) -> dict[str, Any]:
         results = run(validate(document), headlines_only=True)
     except SpecError as err:
         return {"status": "refused", "message": "\n".join(err.problems), "checks": {}, "headlines": {}}
+    except Exception as exc:  # noqa: BLE001 - one sample that cannot be designed must not stop the study
+        return {"status": "failed", "message": failure_text(exc), "checks": {}, "headlines": {}}
     finally:
         set_num_threads(threads)
-    checks = {check_id(c): [_finite(c.margin), c.passed, c.quantity, c.severity] for c in results.checks}
+    checks = {check_id(c): [_finite(c.margin), c.passed, c.quantity, c.severity, c.accepted] for c in results.checks}
     headlines = {name: {"jump_speed_rpm": _finite(v.dynamics.jump_speed / rpm_to_rad_s(1.0)),
                         "max_seating_velocity_m_s": _finite(v.dynamics.max_seating_velocity)}
                  for name, v in results.valves.items() if v.dynamics is not None}
@@ -223,7 +237,8 @@ def fingerprint(document, method, seed, samples) -> str:
 
 
 RECORDS = "records.jsonl"
-"""The records of a study in its folder: a header line, then one ``{"index": i, "record": {...}}`` a line."""
+"""The records of a study in its folder: a header line, then one ``{"index": i, "record": {...}, "hash": h}`` a
+line (:func:`record_problem`)."""
 
 
 class RecordFile:
@@ -240,13 +255,18 @@ class RecordFile:
 
     def read(self, samples) -> dict:
         """The records written before, index -> record (empty for a new file); a line that is no record of one of
-        the ``samples`` (cut short, damaged, not UTF-8) is left out, its sample designed again.
+        the ``samples`` (cut short, damaged, not UTF-8, a field of the wrong type or out of its range: what
+        :func:`evaluate_sample` cannot have written, :func:`record_problem`) is left out, its sample designed again;
+        :attr:`damaged` lists those lines, ``(line number, why)``.
 
         Raises
         ------
         ToleranceError
-            A file written for other inputs.
+            A file written for other inputs; a folder where the file would be.
         """
+        self.damaged = []
+        if self.path.is_dir():
+            raise ToleranceError(f"{self.path} is a folder, not the records of a study; give another --out")
         if not self.path.exists():
             return {}
         lines = self.path.read_bytes().decode("utf-8", errors="replace").split("\n")
@@ -258,12 +278,18 @@ class RecordFile:
             raise ToleranceError(f"{self.path} holds the records of another study (another file, tolerances, "
                                  "method, seed or number of samples); give another --out")
         done = {}
-        for line in lines[1:]:
-            try:
-                item = json.loads(line)
-            except json.JSONDecodeError:
+        for number, line in enumerate(lines[1:], start=2):
+            if not line.strip():
                 continue
-            if _is_record(item, samples):
+            try:
+                item = json.loads(line, parse_constant=_no_constant)
+            except (json.JSONDecodeError, ValueError) as exc:
+                self.damaged.append((number, f"not a line of JSON ({str(exc)[:60]})"))
+                continue
+            why = record_problem(item, samples)
+            if why:
+                self.damaged.append((number, why))
+            else:
                 done[item["index"]] = item["record"]
         return done
 
@@ -291,15 +317,76 @@ class RecordFile:
 RECORD_KEYS = {"status", "message", "checks", "headlines"}
 """The keys of a sample's record (:func:`evaluate_sample`)."""
 
+HEADLINE_KEYS = {"jump_speed_rpm", "max_seating_velocity_m_s"}
+"""The keys of a valve's headlines in a sample's record."""
 
-def _is_record(item, samples):
-    """Whether a line's JSON value ``item`` is ``{"index": i, "record": {...}}`` of one of ``samples`` samples."""
-    return (isinstance(item, dict) and type(item.get("index")) is int and 0 <= item["index"] < samples
-            and isinstance(item.get("record"), dict) and set(item["record"]) == RECORD_KEYS)
+
+def _no_constant(name):
+    raise ValueError(f"{name} is no number of a record")
+
+
+def _number(x, finite=True):
+    return type(x) in (int, float) and (not finite or math.isfinite(x))
+
+
+def _check_row_problem(cid, row):
+    """Why ``row`` is not a check's entry ``[margin, passed, quantity, severity, accepted]`` of a record, or None."""
+    if not isinstance(row, list) or len(row) != 5:
+        return f"check {cid[:60]!r} is not [margin, passed, quantity, severity, accepted]"
+    margin, passed, quantity, severity, accepted = row
+    if not (margin is None or _number(margin)) or type(passed) is not bool or type(accepted) is not bool:
+        return f"check {cid[:60]!r}: a margin that is not a finite number or null, or a flag that is not true/false"
+    if not isinstance(quantity, str) or severity not in SEVERITIES:
+        return f"check {cid[:60]!r}: its text or its severity is not one of a check"
+    if margin is not None and (margin < -1e-6 if passed else margin > 1e-6):
+        return f"check {cid[:60]!r}: passed = {str(passed).lower()} with the margin {margin:.6g}"
+    try:
+        split_id(cid)
+    except ValueError:
+        return f"check {cid[:60]!r}: not VALVE:CODE[PARAMETERS]"
+    return None
+
+
+def record_problem(item, samples) -> Optional[str]:
+    """Why a line's JSON value ``item`` is not ``{"index": i, "record": {...}, "hash": h}`` of one of ``samples``
+    samples as :func:`evaluate_sample` and :class:`RecordFile` write it (None where it is): the index, the record's
+    keys, the status and message, each check's entry (a finite margin or null, agreeing with passed; the flags true
+    or false; a severity of :data:`valvetrain.checks.SEVERITIES`), each valve's headlines (a finite number or null),
+    and the line's hash of its index and record (a change of any value: a flag flipped where no margin tells).  A
+    record that fails is designed again, never trusted."""
+    if not isinstance(item, dict) or set(item) != {"index", "record", "hash"}:
+        return "not {\"index\": i, \"record\": {...}, \"hash\": ...}"
+    index, record = item["index"], item["record"]
+    if type(index) is not int or not 0 <= index < samples:
+        return f"index {str(index)[:20]}: allowed a whole number 0 ... {samples - 1}"
+    if not isinstance(record, dict) or set(record) != RECORD_KEYS:
+        return f"the record of sample {index} has not the keys {sorted(RECORD_KEYS)}"
+    status, checks, headlines = record["status"], record["checks"], record["headlines"]
+    if status not in ("ok", "refused", "failed") or not isinstance(record["message"], str):
+        return f"the record of sample {index}: its status or message is not one of a record"
+    if not isinstance(checks, dict) or not isinstance(headlines, dict) or (status == "ok") != bool(checks) or (
+            status != "ok" and headlines):
+        return f"the record of sample {index}: its checks are not those of a {status} sample"
+    for cid, row in checks.items():
+        why = _check_row_problem(cid, row)
+        if why:
+            return f"the record of sample {index}: {why}"
+    for valve, h in headlines.items():
+        if not isinstance(h, dict) or set(h) != HEADLINE_KEYS or not all(v is None or _number(v) for v in h.values()):
+            return f"the record of sample {index}: the headlines of {str(valve)[:40]!r} are not those of a valve"
+    if item["hash"] != _digest(index, record):
+        return f"the record of sample {index} was changed after it was written (its hash does not match)"
+    return None
+
+
+def _digest(index, record) -> str:
+    """The hash a record's line carries: of its index and record as canonical JSON (sorted keys), hex."""
+    text = json.dumps({"index": index, "record": record}, sort_keys=True, allow_nan=False)
+    return hashlib.sha256(text.encode("utf-8")).hexdigest()
 
 
 def _line(index, record):
-    return json.dumps({"index": index, "record": record}, allow_nan=False) + "\n"
+    return json.dumps({"index": index, "record": record, "hash": _digest(index, record)}, allow_nan=False) + "\n"
 
 
 def wilson(failures, n, z=CONFIDENCE_Z) -> tuple[float, float]:
@@ -353,8 +440,11 @@ def sensitivities(samples, values, keys) -> dict[str, Optional[float]]:
 
 def summary(spec, centres, samples, records, method, seed) -> dict[str, Any]:
     """The results of a study (``tolerance.json``): the tolerances, per check its margin's distribution, its
-    failures, probability of failure with the Wilson 95 % interval and the rank correlations of the tolerances with
-    its margin; per valve with dynamics the distribution of the headlines; the refused samples."""
+    failures, probability of failure (of its limit: a check the file accepts, ``accepted``, fails it all the same,
+    as ``run`` lists it among the accepted) with the Wilson 95 % interval and the rank correlations of the tolerances
+    with its margin; per valve with dynamics the distribution of the headlines; the samples not designed (``refused``:
+    refused by the specification's checks or the design, or ``failed``: stopped by an error of valvetrain, counted
+    among them and apart)."""
     keys = [t.key for t in spec.tolerances]
     n = len(records)
     ok = [r for r in records if r["status"] == "ok"]
@@ -367,6 +457,7 @@ def summary(spec, centres, samples, records, method, seed) -> dict[str, Any]:
         first = next(row for row in rows if row is not None)
         margins = [None if row is None else row[0] for row in rows]
         checks[cid] = {"quantity": first[2], **split_id(cid), "severity": first[3],
+                       "accepted": any(row is not None and row[4] for row in rows),
                        "samples": sum(row is not None for row in rows),
                        "failures": failures, "probability": failures / len(ok),
                        "confidence_95": list(wilson(failures, len(ok))), "margin": distribution(margins),
@@ -375,10 +466,12 @@ def summary(spec, centres, samples, records, method, seed) -> dict[str, Any]:
     headlines = {v: {h: distribution([r["headlines"].get(v, {}).get(h) for r in ok])
                      for h in ("jump_speed_rpm", "max_seating_velocity_m_s")} for v in valves}
     refused = n - len(ok)
+    failed = [r for r in records if r["status"] == "failed"]
     return {"method": method, "seed": seed, "samples": n,
             "tolerances": [{**t.model_dump(exclude_none=True), "nominal": c}
                            for t, c in zip(spec.tolerances, centres, strict=True)],
             "refused": {"samples": refused, "probability": refused / n if n else 0.0,
                         "confidence_95": list(wilson(refused, n)),
                         "messages": sorted({r["message"] for r in records if r["status"] != "ok"})[:10]},
+            "failed": {"samples": len(failed), "messages": sorted({r["message"] for r in failed})[:10]},
             "checks": checks, "headlines": headlines}

@@ -156,3 +156,19 @@ def test_spring_lines_name_the_lines_there_are_in_drawing_order():
     assert SpringLines(required, chosen).named() == (("required", required), ("chosen", chosen))
     assert [name for name, _ in SpringLines(required, chosen, outer, inner).named()] == ["required", "outer", "inner",
                                                                                           "chosen"]
+
+
+def test_worst_of_a_symmetric_cam_is_its_first_flank():
+    """The cam force of a symmetric cam is the same on both flanks (here +-0.5 rad) but for round-off, which one BLAS
+    kernel puts on one side and another on the other: the worst and the per-speed largest are those at the smallest
+    angle and the lowest speed, whichever flank's round-off is larger (before: the larger one, +0.5 rad)."""
+    from valvetrain.design.drive import LoadMap, _per_speed, _worst
+
+    theta = np.array([-1.0, -0.5, 0.0, 0.5, 1.0])
+    force = np.array([[1.0, 700.0, 650.0, 700.0 * (1.0 + 2.2e-16), 1.0],
+                      [1.0, 900.0, 650.0, 900.0 * (1.0 + 4.4e-16), 1.0]])
+    maps = [LoadMap("quasi-static", np.array([100.0, 200.0]), theta, force),
+            LoadMap("dynamic", np.array([300.0]), theta, force[1:] * (1.0 + 2.2e-16))]
+    worst = _worst(maps, [m.force for m in maps])
+    assert (worst.angle, worst.speed, worst.kind) == (-0.5, 200.0, "quasi-static")
+    assert _per_speed(maps).cam_force_max_angle == (-0.5, -0.5, -0.5)

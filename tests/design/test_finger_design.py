@@ -8,7 +8,7 @@ import pytest
 
 from valvetrain.design import run
 from valvetrain.design.drive import LoadMap, contact_loads
-from valvetrain.design.dynamics import adjuster_ratio
+from valvetrain.design.dynamics import FINGER_MASS_BELOW, adjuster_ratio, finger_mass
 from valvetrain.followers import PivotedFollower
 from valvetrain.specification import SpecError, parse_spec, si
 
@@ -111,6 +111,76 @@ def test_refusals_name_the_key(old, new, words):
     assert old in text
     with pytest.raises(SpecError, match=words.replace("(", r"\(")):
         run(parse_spec(text.replace(old, new, 1)))
+
+
+MEASURED = Path(__file__).parents[2] / "examples" / "measured-lobe.toml"
+
+FINGER_KEYS = """follower = "finger"
+roller_radius_mm = 8.75
+finger_pivot_x_mm = -22.0
+finger_pivot_y_mm = {pivot_y}
+finger_roller_arm_mm = 22.5
+finger_pad_arm_mm = 36.0
+finger_pad_drop_mm = -10.0
+finger_pad_radius_mm = 12.0
+finger_valve_angle_deg = 12.0
+"""
+
+
+def test_a_finger_on_a_measured_table_is_refused_where_its_pivot_cannot_reach_the_cam():
+    """A measured table gives the lift only once it is read, after the specification's checks: a finger whose roller
+    arm (22.5 mm) cannot reach the heel circle from its pivot (83 mm from the cam centre) is refused by the design
+    naming the key, as the specification's checks refuse it on a law of given lift (a ValueError of the finger's
+    linkage stopped the design before: fuzz campaign of issue 36)."""
+    text = MEASURED.read_text(encoding="utf-8").replace("rocker_ratio = 1.6\n", "")
+    text = text.replace('base_radius_mm = 20.0\n', 'base_radius_mm = 20.0\n' + FINGER_KEYS.format(pivot_y=80.0))
+    text += '\n[valves.intake.drive]\nlayout = "rocker"\n'
+    with pytest.raises(SpecError, match=r"valves\.intake\.cam\.finger_roller_arm_mm = 22\.5 from the pivot .* "
+                       r"cannot reach the roller centre's heel circle"):
+        run(parse_spec(text, source_dir=MEASURED.parent))
+    reach = run(parse_spec(text.replace("finger_pivot_y_mm = 80.0", "finger_pivot_y_mm = 27.0"),
+                           source_dir=MEASURED.parent))
+    assert reach.valves["intake"].profile.finger is not None
+
+
+def test_the_reduced_mass_table_of_a_finger_pressed_near_its_dead_point_stays_within_the_pad_s_reach():
+    """The example's finger with its pad arm at 0 (the pad 10 mm beside the pivot, the shut valve 0.3 mm above the
+    pad's lowest reach): the table of J / G^2 reaches halfway to that reach below the shut valve, not the fixed 1 mm
+    (where no finger angle gives the valve's position: a ValueError of the linkage stopped the design of such a
+    finger without a lash adjuster, fuzz campaign of issue 36).  The reach below, L_b (1 + sin chi_0), against the
+    lowest valve lift over a whole turn of the finger, sampled (an independent evaluation)."""
+    f = PivotedFollower(radius=0.00875, pivot_x=-0.022, pivot_y=0.027, roller_arm=0.0225, pad_arm=0.0,
+                        pad_drop=-0.010, pad_radius=0.012, valve_angle=np.radians(12.0))
+    heel = 0.017
+    table = finger_mass(f, 12e-9, heel, 0.009, "valve")
+    psi = np.linspace(-np.pi, np.pi, 2_000_001)
+    assert f.reach_below(heel) == pytest.approx(-f.valve_lift_of(psi, heel).min(), rel=1e-9)
+    assert f.reach_below(heel) < FINGER_MASS_BELOW
+    assert table.position[0] == pytest.approx(-0.5 * f.reach_below(heel), rel=1e-12)
+    assert np.all(np.isfinite(table.mass)) and np.all(table.mass > 0.0)
+
+
+def test_the_pad_s_contact_stays_on_the_valve_tip():
+    """Issue 36: a finger whose pad meets the valve 50 mm off its axis was accepted with no check.  The largest
+    distance of the contact point from the valve axis over the lift against the hand-built linkage (finger_linkage:
+    the contact X = B + rho_p a, its offset (X - X_0) . a_perp + x_0 at 201 valve lifts, psi by brentq), graded
+    against the tip's radius less 0.5 mm: the example's fingers pass (0.26 mm against 6 mm stems by default, 0.2 x
+    the throat); a 5.5 mm stem with the contact 2.5 mm off the axis fails (2.76 > 2.25 mm); 50 mm off fails."""
+    from finger_linkage import hand_finger
+
+    text = example_text().replace("[valves.intake.parts]\n", "[valves.intake.parts]\nstem_diameter_mm = 5.5\n", 1)
+    for offset, passes in ((0.0, True), (2.5, False), (50.0, False)):
+        spec = parse_spec(text.replace("finger_valve_angle_deg = 12.0  #", f"finger_tip_offset_mm = {offset}\n"
+                                       "finger_valve_angle_deg = 12.0  #", 1))
+        v = run(spec).valves["intake"]
+        hand = hand_finger(v.cam)
+        across = np.array([hand.a[1], -hand.a[0]])
+        lifts = np.linspace(0.0, v.law.lift_max + v.law.ramp_height, 201)
+        reach = max(abs((hand.pad(hand.angle(y)) - hand.pad(hand.psi0)) @ across + offset * 1e-3) for y in lifts)
+        (c,) = [c for c in v.checks if c.code == "finger.tip_contact"]
+        assert c.value == pytest.approx(reach, rel=1e-5, abs=1e-9)
+        assert c.high == pytest.approx(5.5e-3 / 2 - 0.5e-3) and c.severity == "failure" and c.passed == passes
+    assert all(c.passed for c in run(parse_spec(example_text())).checks if c.code == "finger.tip_contact")
 
 
 def test_the_camshaft_link_is_reduced_to_the_valve_by_the_finger_s_ratio(design):

@@ -251,7 +251,7 @@ def test_shipped_examples_run(path):
     from valvetrain.specification import load_spec
 
     res = run(load_spec(path))
-    assert res.valves or res.crank is not None or res.two_stroke is not None
+    assert res.valves or res.crank is not None or res.two_stroke is not None or res.breathing is not None
     for v in res.valves.values():
         assert np.isfinite(v.summary["flow"]["time_area_mm2_s"])
         # issue 10: every shipped example designs a spring that passes every spring check

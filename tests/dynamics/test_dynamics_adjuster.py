@@ -76,6 +76,63 @@ def test_a_float_pumps_the_adjuster_up_and_holds_the_valve_open():
     assert b.lift[0, base].max() < 1e-6
 
 
+def test_the_check_valve_only_refills():
+    """Leak-free, the plunger can only extend: where the force falls to the push the check valve opens and oil flows
+    in, never out (it leaves by the clearance alone, here shut).  At 3800 cam rpm spec12 floats and its contact
+    unloads faster than its spring relaxes (the damping force pulls the unilateral force to 0 while it is still
+    compressed); the plunger's extension over the recorded revolution never falls (it fell by 7.3 um in one step
+    when the kernel set it to the extension that would carry the push there, shorter than the one it had)."""
+    law, _, hydraulic = trains()
+    r = sweep(law, hydraulic, np.array([1500.0, 3800.0]) * RPM, revolutions=8)
+    assert np.all(np.diff(r.adjuster_extension, axis=1) >= 0.0)
+    assert r.adjuster_extension[1, -1] > 100e-6
+
+
+def test_the_plunger_stops_at_its_travel_and_holds_the_valve_as_an_interference_would():
+    """Leak-free with a stop 0.3 mm out: where spec12 floats (3300-3450 cam rpm) the plunger pumps up to its stop and
+    no further, and the train is then the train without the adjuster whose cam contact is compressed by i_a s =
+    0.6 x 0.3 = 0.18 mm on the base circle (a negative lash): both integrations agree to 1e-8 m.  That train holds
+    its valve off its seat at low speed at the static balance c (i_a s - y) = F0 + K y, y = (15e6 x 0.18e-3 - 400) /
+    (15e6 + 67.5e3) = 0.15265 mm, by hand."""
+    law, rigid, hydraulic = trains()
+    stop = 0.3e-3
+    speeds = np.array([3300.0, 3400.0, 3450.0]) * RPM
+    a = sweep(law, replace(hydraulic, adjuster=replace(hydraulic.adjuster, stop=stop)), speeds, revolutions=20)
+    b = sweep(law, replace(rigid, lash=-RATIO * stop), speeds, revolutions=20)
+    assert a.converged.all() and np.all(a.adjuster_extension == stop)
+    assert np.abs(a.lift - b.lift).max() < 1e-8
+    low = sweep(law, replace(rigid, lash=-RATIO * stop), [300.0 * RPM], revolutions=5)
+    base = np.abs(low.theta) > np.radians(120.0)
+    assert low.lift[0, base] == pytest.approx(0.15265e-3, rel=1e-4)
+
+
+def test_net_extension_per_revolution_is_the_refill_less_the_leak_down_by_hand():
+    """spec12 with the leaking adjuster and a 1 mm stop at 3300 and 3400 cam rpm, where it floats: the plunger's sink
+    over a revolution is the laminar leakage integrated by hand over the recorded force (trapezoid rule, Q = pi d c^3
+    (p - p_s) / (12 mu L), p = (i_a F - F_s) / A), and its net extension is the check valve's refill (the steps it
+    extends) less that integral: in its second revolution it still pumps up by more than 50 um; once its
+    motion settles (the plunger at its stop, within 0.1 um a revolution at the valve) the refill balances the hand
+    integral within that.  The hand integral and the kernel's explicit steps agree to 1e-3 (the existing test at low
+    speed)."""
+    law, _, hydraulic = trains()
+    train = replace(hydraulic, adjuster=replace(hydraulic.adjuster, leak=LEAK, stop=1e-3))
+    speeds = np.array([3300.0, 3400.0]) * RPM
+    for revolutions, tolerance in ((2, -1.0), (400, 1e-7)):
+        r = sweep(law, train, speeds, revolutions=revolutions, tolerance=tolerance)
+        z = r.adjuster_extension
+        pressure = np.clip((r.contact_force / 1.5 * RATIO - 15.0) / AREA - 0.3e6, 0.0, None)
+        leak = np.trapezoid(LEAK * pressure / AREA, r.theta / speeds[:, None], axis=1)
+        step = np.diff(z, axis=1)
+        assert -np.where(step < 0.0, step, 0.0).sum(axis=1) == pytest.approx(leak, rel=1e-3)
+        refill = np.where(step > 0.0, step, 0.0).sum(axis=1)
+        assert z[:, -1] - z[:, 0] == pytest.approx(refill - leak, abs=1e-3 * leak.max())
+        if revolutions == 2:
+            assert np.all(refill - leak > 50e-6)
+        else:
+            assert r.converged.all() and np.all(z.max(axis=1) == 1e-3)
+            assert np.all(np.abs(refill - leak) < 1e-7 / RATIO)
+
+
 def test_pump_up_starts_where_the_follower_leaves_the_cam():
     """The rigid follower leaves the cam where the inertia force exceeds the spring's, M |y''| w^2 > F0 + K y on the
     nose (y = k h, y'' = k h'' per rad^2 < 0): w_j^2 = min (F0 + K y) / (M |y''|) over the law's angles, by hand here

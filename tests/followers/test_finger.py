@@ -319,6 +319,16 @@ def test_the_pad_s_reach_is_refused_as_a_geometry_problem_not_a_traceback():
     assert below is None or "reaches" not in below[2]
 
 
+def test_the_geometry_refusals_fit_the_fuzzer_s_message_length():
+    """Issue 36's fuzzer: the refusal of a finger the cam cannot push open named every key of its geometry and came
+    to 304 characters on a valve (over the fuzzer's 300).  Each refusal's line, under a valve's key, stays within 300
+    (a valve named "intake"; the longest key)."""
+    for change in ({"valve_angle": np.pi}, {"pivot_x": 0.0}, {"pivot_y": 0.1}, {"valve_angle": np.radians(120.0)}):
+        f = replace(FINGER, **change)
+        key, value, message, joiner = f.geometry_problem(HEEL, 0.0085)
+        assert len(f"valves.intake.cam.{key} = {value}{joiner}{message}") <= 300, change
+
+
 @pytest.mark.parametrize("change, words", [
     ({"valve_angle": np.pi}, "not steadily outwards"),   # the roller falls 25.75 -> 20.15 mm as the valve opens
     ({"pivot_x": 0.0}, "turns clockwise"),               # lever ratio -1.51: the loads came out negative

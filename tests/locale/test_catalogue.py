@@ -141,6 +141,21 @@ def test_an_acceptance_by_code_survives_a_reworded_check(monkeypatch):
         locale._patterns.cache_clear()
 
 
+def test_the_seating_velocity_check_says_what_it_grades_and_its_former_text_still_names_it():
+    """Issue 36: the check grades the largest seating velocity of the rated speed and of the speeds swept below it,
+    and its record text said "at the rated speed".  Its text says the largest up to the rated speed; an [[accepted]]
+    table written with the former text (en.toml [former]) still names it, with or without the valve."""
+    seat = check("dynamics.seating_velocity", 0.6, high=0.5, unit="m/s", source="s").of_valve("intake")
+    assert seat.quantity == "intake: largest dynamic seating velocity up to the rated speed"
+    for quantity in ("intake: dynamic seating velocity at the rated speed", "dynamic seating velocity at the rated speed",
+                     "intake: largest dynamic seating velocity up to the rated speed", "dynamics.seating_velocity"):
+        (out,), unmatched = apply_acceptances([seat], [Acceptance(quantity=quantity, reason="r")], {"intake"})
+        assert out.accepted and unmatched == [], quantity
+    former = catalogue("en")["former"]
+    assert set(former) <= set(codes())
+    assert all(text != catalogue("en")["record"][code] for code, texts in former.items() for text in texts)
+
+
 def test_the_design_accepts_by_code_and_by_the_old_text_and_refuses_an_unknown_name():
     spec = appendix_spec()
     for quantity in ("timing.closing_lag", "intake: closing lag"):

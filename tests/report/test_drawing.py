@@ -54,6 +54,29 @@ def test_an_answer_that_cannot_be_pickled_arrives_as_an_error_naming_it():
     assert mine.recv() == (True, {"intake": {"lift": "intake_lift.png"}})
 
 
+def test_an_answer_no_one_reads_any_more_is_dropped_quietly():
+    """Issue 36: the first process killed (SIGKILL) while the figures are drawn: the drawer's answer met a closed pipe
+    and the drawer printed a BrokenPipeError traceback; _send says the answer is not wanted instead."""
+    mine, theirs = Pipe()
+    mine.close()
+    assert _send(theirs, (True, {"intake": {"lift": "intake_lift.png"}})) is False
+
+
+@linux
+def test_drawers_whose_first_process_has_gone_end_without_a_traceback(tmp_path, capfd):
+    """The first process's ends of the pipes closed once the request is sent, as its SIGKILL closes them: the drawers
+    end (the first of them ends the others) and print nothing."""
+    results = run(appendix_spec())
+    drawer = FigureProcess(processes=2)
+    drawer.submit(results, tmp_path, "en", "main")
+    drawer._sending.join()
+    for conn in drawer._conns:
+        conn.close()
+    drawer._process.join(120.0)
+    assert not drawer._process.is_alive()
+    assert "Traceback" not in capfd.readouterr().err
+
+
 def _children(pid):
     """The processes ``pid`` forked (Linux's /proc)."""
     return [int(c) for c in Path(f"/proc/{pid}/task/{pid}/children").read_text().split()]

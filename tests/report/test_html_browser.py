@@ -5,7 +5,9 @@ at the right edge or needs a horizontal scroll bar.  Before: the Russian summary
 1000 px.
 
 And the length of the printed note: one valve (the textbook's appendix example: a valve, its spring, its strength and
-the crank chapter, with the default figures) prints on 10 A4 pages or fewer in either language.  Before: 16 pages.
+the crank chapter, with the default figures) prints on 13 A4 pages or fewer in either language.  Before issue 24: 16
+pages; after it 10, then issue 39 added a title page of its own, every check of the design in its chapter with its
+limit, verdict and margin (44 rows) and the tables' titles: 12 pages in English, 13 in Russian.
 """
 
 from pathlib import Path
@@ -37,6 +39,18 @@ def reports(tmp_path_factory):
     return found
 
 
+WAIT_MS = 120_000
+"""How long a test waits for the report to be laid out on a loaded machine; the wait ends as soon as it is."""
+
+
+def loaded(page, url):
+    """``page`` on the report at ``url``, its document and every figure loaded: the page's state, not the load
+    event's limit of 30 s (a report of 2 MB of embedded figures on a machine with a load average of 9)."""
+    page.goto(url, wait_until="commit")
+    page.wait_for_function("() => document.readyState === 'complete' && "
+                           "Array.from(document.images).every((img) => img.complete)", timeout=WAIT_MS)
+
+
 OVERFLOWS = """() => {
     const out = [];
     const page = document.documentElement;
@@ -57,14 +71,14 @@ OVERFLOWS = """() => {
 def test_nothing_is_wider_than_its_container(page, reports, lang, media, width):
     page.emulate_media(media=media)
     page.set_viewport_size({"width": width, "height": 1000})
-    page.goto(reports[lang])
+    loaded(page, reports[lang])
     found = page.evaluate(OVERFLOWS)
     assert not found, "\n".join(found)
 
 
 @pytest.mark.parametrize("lang", ["en", "ru"])
-def test_one_valve_prints_on_ten_a4_pages_or_fewer(page, reports, lang):
+def test_one_valve_prints_on_thirteen_a4_pages_or_fewer(page, reports, lang):
     """Chromium's print to PDF (A4, the report's @page margins), its pages counted (each a /Type /Page object)."""
-    page.goto(reports[lang])
+    loaded(page, reports[lang])
     pdf = page.pdf(format="A4", prefer_css_page_size=True)
-    assert 1 <= len(re.findall(rb"/Type\s*/Page(?![a-z])", pdf)) <= 10
+    assert 1 <= len(re.findall(rb"/Type\s*/Page(?![a-z])", pdf)) <= 13

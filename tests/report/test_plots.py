@@ -269,3 +269,33 @@ def test_every_text_of_the_stages_figures_lies_on_them(designs):
          ("grinding", lambda t: plots.grinding_figure(ground, t)),
          ("hydraulic", lambda t: plots.hydraulic_figure(hydraulic, t)),
          ("hydraulic_sweep", lambda t: plots.hydraulic_sweep_figure(hydraulic, t))])
+
+
+def test_the_crank_figures_legends_cover_no_curve(results):
+    """Issue 39: the crank torque figure's legend covered the curves (upper right of the axes, over the cylinders'
+    torque).  Every legend of the crank figures lies beside its axes (their window extents do not meet), every text
+    on the figure, the cycle's angle from 0 to 720 deg with a tick at 720 (it stopped at 630), in both languages."""
+    crank = results.crank
+    figures = [(kind, lambda t, make=make: make(crank, t)) for kind, make in plots.ENGINE_FIGURES["crank"].items()]
+    _all_texts_on_the_figures(figures)
+    for kind, draw in figures:
+        for lang in ("en", "ru"):
+            fig = draw(TEXT[lang])
+            renderer = FigureCanvasAgg(fig).get_renderer()
+            for ax in fig.axes:
+                legend = ax.get_legend()
+                if legend is not None:
+                    assert not legend.get_window_extent(renderer).overlaps(ax.get_window_extent(renderer)), kind
+                if kind != "crank_pin_polar":
+                    assert ax.get_xlim() == pytest.approx((0.0, 720.0)) and 720.0 in ax.get_xticks(), kind
+
+
+def test_a_symbols_index_is_a_subscript_in_every_figure(results):
+    """Issue 39: no figure prints a symbol with an underscore (h_T): its index is a subscript (mathtext $h_{T}$)."""
+    v = results.valves["intake"]
+    figures = [make(v, TEXT[lang]) for make in plots.FIGURES.values() for lang in ("en", "ru")]
+    figures += [make(results.crank, TEXT[lang]) for make in plots.ENGINE_FIGURES["crank"].values()
+                for lang in ("en", "ru")]
+    texts = [text.get_text() for fig in figures for text in fig.findobj(Text)]
+    assert [text for text in texts if re.search(r"[^\\{\s$]_[^{]", text)] == []
+    assert any("$h_{T}$" in text for text in texts) and any("$p_{N}$" in text for text in texts)

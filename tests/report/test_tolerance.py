@@ -30,7 +30,7 @@ def test_key_names():
 
 
 def _check(probability, failures, sensitivities):
-    return {"code": "flow.throat_velocity", "params": {}, "valve": "intake", "severity": "warning",
+    return {"code": "flow.throat_velocity", "params": {}, "valve": "intake", "severity": "warning", "accepted": False,
             "probability": probability, "failures": failures, "samples": 100,
             "confidence_95": (probability / 2, probability * 1.5), "sensitivities": sensitivities, "margin": None}
 

@@ -101,6 +101,34 @@ def test_lines_of_every_ratio_envelop_the_requirement():
     assert (p1[0], c1[0]) == pytest.approx(line, rel=1e-12)
 
 
+def test_a_line_set_by_an_inner_point_has_the_smallest_ratio_exactly():
+    """Where the point that sets the smallest P_max lies inside the lift (here at 5/6 of it), no steeper line keeps
+    that P_max (enveloping_line's Notes): the ratio is r1 = 1.6 itself, P_min = P* / 1.6 to the bit, not 1.6 plus
+    the round-off of P_i - P* u_i (before: 1.600000000000002), which another BLAS kernel can put on either side of
+    1.6; and lines() tries that ratio once, not 1.6 and 1.6 + 2e-15 as two lines."""
+    y = np.linspace(0.0, 0.01, 7)
+    req = np.array([0.0, 435.3, 423.6, 407.7, 291.8, 598.6, 590.4])
+    u = y / y.max()
+    p_star = float(np.max(1.6 * req / (1.0 + 0.6 * u)))
+    assert int(np.argmax(1.6 * req / (1.0 + 0.6 * u))) == 5
+    p0, c = springs.enveloping_line(y, req)
+    assert p0 == p_star / 1.6
+    requirement = springs.Requirement(y, req)
+    preloads, _ = requirement.lines(line=springs.Characteristic(p0, c, y.max()))
+    assert preloads.size == springs.deflection_ratios().size
+
+
+def test_lines_keep_the_required_ratio_off_the_grid():
+    """A required line of ratio 2.05 (between the grid's 2.0 and 2.1) is tried as a line of its own; one of ratio
+    2.0 within round-off is the grid's line 2.0."""
+    y = np.linspace(0.0, 0.01, 5)
+    requirement = springs.Requirement(y, np.array([0.0, 100.0, 200.0, 250.0, 280.0]))
+    grid = springs.deflection_ratios().size
+    for ratio, extra in ((2.05, 1), (2.0 * (1.0 + 4e-16), 0), (2.0 * (1.0 - 4e-16), 0)):
+        line = springs.Characteristic(100.0, (ratio - 1.0) * 100.0 / y.max(), y.max())
+        assert requirement.lines(line=line)[0].size == grid + extra
+
+
 def test_the_seat_load_holds_a_slow_engine_s_valve():
     """Issue 10: at 600 rpm the inertia asks for a 2.3 N preload.  The preload is at least m_v x 100 g (a stated
     default), or min_preload_N, and never below the gas force (5.4)."""

@@ -212,6 +212,31 @@ def test_no_jump_defaults_to_the_over_speed_ratio(tmp_path):
     assert "allowed >= 1.05" in r.output and "allowed >= 1.1" not in r.output
 
 
+def test_the_final_checks_are_run_s_limits():
+    """Issue 36: optimize graded the valve-to-piston clearance "> 0 mm" where run grades ">= 0.080 in" (2.032 mm) and
+    a follower separation as a warning where run fails it: an optimum could fail run's checks.  The article's diesel
+    with its intake 1 mm from the piston at the closest (its gap at TDC lowered from 15 to 10.324 mm; 5.676 mm at 15 mm
+    by its own design): the final checks hold run's own clearance check, failed, once; the separation constraint is
+    a failure as run's."""
+    from valvetrain.design.valve import PISTON_CLEARANCE_MIN
+    from valvetrain.synthesis.constraints import no_jump
+    from valvetrain.synthesis.optimize import final_checks
+
+    text = UKRSURT.read_text(encoding="utf-8").replace("piston_gap_tdc_mm = 15.0", "piston_gap_tdc_mm = 10.324")
+    spec = parse_spec(text, source_dir=UKRSURT.parent)
+    design = run(spec).valves["intake"]
+    assert design.clearance.min_gap == pytest.approx(1.0 * MM, abs=1e-3 * MM)
+    limits, _ = design_limits(design, 170 * MM, ramp_varied=False)
+    gap = [c for c in final_checks(design, spec, limits) if c.code.startswith("piston.")]
+    own = [c for c in design.checks if c.code == "piston.clearance"]
+    assert gap == own and gap[0].low == PISTON_CLEARANCE_MIN["intake"] == 0.080 * 25.4 * MM and not gap[0].passed
+    assert gap[0].severity == "failure"
+    dynamic = run(parse_spec(text + "\n[valves.intake.dynamics]\nspeeds = 6\nrevolutions = 2\n",
+                             source_dir=UKRSURT.parent)).valves["intake"]
+    jump = no_jump(dynamic, 1.1)
+    assert jump.severity == "failure" == next(c.severity for c in dynamic.checks if c.code == "dynamics.jump_speed")
+
+
 def test_a_seating_velocity_limit():
     """--seating-velocity: the kinematic seating velocity i_k omega |dh/dphi| at the valve's closing, which the law
     stage reports (design.cam.seating_velocity), against the limit."""
@@ -230,6 +255,9 @@ def test_a_seating_velocity_limit():
     (["--vary", "max_lift_mm=-10,1e6"], "LOW = -10 is outside the range of valves.intake.max_lift_mm: allowed [0.3, "
                                         "500] mm"),
     (["--vary", "max_lift_mm=10,1e300"], "HIGH = 1e300 is outside the range of valves.intake.max_lift_mm"),
+    # issue 36: a cam key without its cam. prefix was "outside the range" (pydantic's extra key)
+    (["--vary", "phi1_deg=15,25"], "--vary phi1_deg: valves.intake.phi1_deg is no key of the valve (unknown key); "
+                                   "did you mean cam.phi1_deg"),
 ])
 def test_bad_variables_are_refused_before_the_search(tmp_path, args, message):
     """The same key twice, and bounds outside the key's allowed range (the specification's own, 0.3...500 mm for

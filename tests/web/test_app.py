@@ -142,6 +142,25 @@ def test_serve_refuses_a_specification_that_does_not_validate(refused):
     assert "error: engine.bore_mm = 3.0: allowed [5, 2000] mm" in refused(text, "serve")
 
 
+def test_serve_on_a_port_in_use_is_one_line():
+    """Issue 36: `valvetrain serve` on a port another program listens on printed an OSError traceback; it says so in one
+    line naming the port, exit status 2."""
+    import socket
+
+    from click.testing import CliRunner
+
+    from valvetrain.cli import main
+
+    with socket.socket() as taken:
+        taken.bind(("127.0.0.1", 0))
+        taken.listen()
+        port = taken.getsockname()[1]
+        result = CliRunner().invoke(main, ["serve", "--no-show", "--port", str(port)])
+    assert result.exit_code == 2, result.output
+    assert result.output.splitlines() == [f"error: --host 127.0.0.1 --port {port}: cannot listen there (Address already "
+                                          "in use); give another --port (0: any free port) or --host"]
+
+
 def test_sweep_starts_when_the_page_has_drawn_the_newest_kinematics():
     d = _designer()
     started = []

@@ -140,6 +140,17 @@ def test_toml_reads_back_to_the_edited_design():
     assert parse_spec(s.toml()).engine.rated_speed_rpm == 6500.0
 
 
+def test_a_measured_table_from_its_file_has_no_shape_handles():
+    """Issue 36's fuzzer: `valvetrain serve examples/measured-lobe.toml` answered the page with HTTP 500 (a TypeError:
+    the table sets its own timing, so the valve has no opens_deg for the shape handles).  A table read from its file
+    has no handle to drag (its lift is the measurement's); the session starts and the page's handles are none."""
+    from pathlib import Path
+
+    path = Path(__file__).parents[2] / "examples" / "measured-lobe.toml"
+    s = Session.start(path.read_text(encoding="utf-8"), path.parent)
+    assert s.handles("intake") == []
+
+
 def test_sessions_are_separate():
     a, b = Session.start(), Session.start()
     a.edit({"engine.rated_speed_rpm": 6000.0})

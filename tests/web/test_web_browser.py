@@ -69,7 +69,10 @@ def table_url(tmp_path_factory):
 
 WAIT_MS = 60_000
 """How long a test waits for the page to show a change (a design on a loaded machine, the first with the numba
-kernels compiled, takes seconds): each wait ends as soon as its condition holds, none is a fixed sleep."""
+kernels compiled, takes seconds): each wait ends as soon as its condition holds, none is a fixed sleep.  A page is
+opened (and reloaded) without waiting for its load event, whose limit is Playwright's 30 s (a reload on a machine
+with a load average of 9 took longer): the test waits for the page's state, loaded (a drag at once after the first
+bytes came pressed beside a handle laid out later) and the Bokeh document with its checks."""
 
 VIEWPORT = {"width": 1400, "height": 900}
 """The window the designer is made for (issue 40)."""
@@ -83,9 +86,10 @@ def opened(page, url):
     page.on("pageerror", lambda e: page.errors.append(str(e)))
     page.on("request", lambda r: page.requests.append(r.url))
     page.set_viewport_size(VIEWPORT)
-    page.goto(url)
-    page.wait_for_function("() => window.Bokeh && Bokeh.documents.length > 0 && window.vt !== undefined && "
-                           "Bokeh.documents[0].get_model_by_name('checks').source.get_length() > 0", timeout=WAIT_MS)
+    page.goto(url, wait_until="commit")        # then the page's state, not the load event's 30 s
+    page.wait_for_function("() => document.readyState === 'complete' && window.Bokeh && Bokeh.documents.length > 0"
+                           " && window.vt !== undefined"
+                           " && Bokeh.documents[0].get_model_by_name('checks').source.get_length() > 0", timeout=WAIT_MS)
     return page
 
 
@@ -224,8 +228,9 @@ def test_a_style_sheet_set_to_the_text_it_holds_is_left_as_it_is(designer):
 
 
 def test_a_redraw_comes_to_the_page_in_one_message(page, url):
-    # Bokeh's server sent a message per changed model, four or more frames of the web socket each: the curves, the
-    # checks and the stamp of a redraw come in one (the stamp is its last change)
+    # Bokeh's server sent a message per changed model, four or more frames of the web socket each: the curves (the
+    # velocity at the rated speed), the checks and the stamp of a redraw come in one (the stamp is its last change).
+    # An edit of the rated speed changes all three (a drag's release changes no curve when its last move drew them)
     contents = []
     page.on("websocket", lambda ws: ws.on("framereceived", lambda frame: contents.append(frame)))
     opened(page, url)
@@ -233,7 +238,10 @@ def test_a_redraw_comes_to_the_page_in_one_message(page, url):
         const m = Bokeh.documents[0].get_model_by_name(name);
         return (m.source || m).id;
     })""")
-    drag(page, "lift", (0.0, 9.0), (0.0, 9.5))
+    n = model_data(page, "kinematic-stamp")["n"][0]
+    fill(page, "rated speed n, rpm", "6500")
+    page.wait_for_function("() => { const s = Bokeh.documents[0].get_model_by_name('kinematic-stamp').data;"
+                           f" return (s instanceof Map ? s.get('n') : s.n)[0] > {n}; }}", timeout=WAIT_MS)
     stamped = [c for c in contents if isinstance(c, str) and f'"id":"{ids[-1]}"' in c and '"events"' in c]
     assert stamped and all(f'"id":"{i}"' in stamped[-1] for i in ids)
 
@@ -369,12 +377,25 @@ def test_arrow_keys_nudge_and_ctrl_z_ctrl_y_undo_and_redo(designer):
 def test_the_measured_lobe_example_opens(page):
     # issue 40: examples/measured-lobe.toml (a lift table in a file) answered HTTP 500 on every load
     for url in _served(str(EXAMPLES / "measured-lobe.toml")):
-        response = page.goto(url)
+        response = page.goto(url, wait_until="commit")
         assert response.status == 200
         opened(page, url)
         assert page.errors == []
         assert model_data(page, "handles-lift")["name"] == []         # the file's points are the file's
         assert value(page, "valves.intake.cam.table_file") == "data/measured-intake-lobe.csv"
+
+
+def test_a_specification_without_valves_is_served(page):
+    # issue 36's fuzzer: `valvetrain serve examples/v8-crank.toml` (an engine without valves) answered its page with
+    # HTTP 500 (a KeyError); issue 40: every shipped example opens, this one with its engine's keys and checks
+    from valvetrain.web.app import WORDS
+
+    for url in _served(str(EXAMPLES / "v8-crank.toml")):
+        response = page.goto(url, wait_until="commit")
+        assert response.status == 200
+        opened(page, url)
+        assert page.errors == []
+        expect(page.get_by_text(WORDS["en"]["no_valves"])).to_be_visible()
 
 
 def test_switch_to_russian(designer):
@@ -427,7 +448,7 @@ def test_overlay_units_speed_and_reload(designer):
     drag(designer, "lift", (116.0, 9.0 / 25.4), (116.0, 10.0 / 25.4))
     kept = value(designer, "valves.intake.max_lift_mm")
     assert kept == pytest.approx(10.0, abs=0.05)
-    designer.reload()
+    designer.reload(wait_until="commit")       # the page's state, not the load event's 30 s: opened() waits for it
     opened(designer, designer.url)
     designer.wait_for_function(f"() => Bokeh.documents[0].get_model_by_name('valves.intake.max_lift_mm').value"
                                f" === {kept}", timeout=WAIT_MS)

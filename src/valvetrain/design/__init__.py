@@ -19,18 +19,21 @@ from typing import Any, Optional
 
 
 from .. import flow
+from ..breathing import BreathingError
 from ..checks import SEVERITIES, Check, apply_acceptances, check, failed, ranked, tally
 from ..crank.pressure import PressureFileError
-from ..files import TableFileError
+from ..files import BreathingFileError, TableFileError
 from ..laws.records import LawRecord
 from ..locale import verdict
 from ..specification import Spec, SpecError, crank_geometry, si, spec_document, validate
 from ..specification.messages import Problem
 from ..specification.models import Dynamics
 from ..units import MM, to_display
+from .breathing import BreathingResults, BreathingSummary, breathing_stage, cylinder_pressure
 from .camcard import CamCard, CamCardValve, cam_card_stage
 from .camshaft import CamshaftRecord, CamshaftResults, camshaft_stage
-from .crank import LAMBDA_RANGE, CrankResults, CrankSummary, crank_stage, valve_timing
+from .crank import (LAMBDA_RANGE, CrankResults, CrankSummary, crank_geometry as crank_geometry_of, crank_stage,
+                    valve_timing)
 from .drive import MassResult, SpringResult, StrengthResult
 from .dynamics import DynamicsResult
 from .grinding import GrindingResult
@@ -75,6 +78,7 @@ class DesignResults:
     two_stroke: Optional[TwoStrokeResults] = None
     cam_card: Optional[CamCard] = None         # a four-stroke's (valvetrain.camcard)
     camshaft: Optional[CamshaftResults] = None  # with a [camshaft] section
+    breathing: Optional[BreathingResults] = None  # with a [breathing] section
 
     @property
     def warnings(self) -> list[Check]:
@@ -149,6 +153,8 @@ class DesignResults:
             out["cam_card"] = record(self.cam_card)
         if self.camshaft is not None:
             out["camshaft"] = self.camshaft.summary
+        if self.breathing is not None:
+            out["breathing"] = self.breathing.summary
         out["warnings"] = [w.warning() for w in self.warnings]
         out["accepted"] = [w.warning() for w in self.accepted]
         out["checks"] = [c.as_dict() for c in self.checks]
@@ -226,7 +232,11 @@ def run(spec, laws=None, progress=None, headlines_only=False, diagnose=True, mem
             crank_view = si(spec.crank, spec)
         except PressureFileError as exc:
             raise SpecError([Problem("crank.pressure_file", str(exc))]) from None
-    crank = crank_stage(crank_view, engine, valve_timing(valves)) if crank_view is not None else None
+    breathing = (_breathing(spec, engine, crank_view, valves, views) if spec.breathing is not None else None)
+    breathed = None
+    if breathing is not None and crank_view is not None and engine.strokes == 4:
+        breathed = cylinder_pressure(breathing, crank_geometry_of(crank_view, engine)[3])
+    crank = crank_stage(crank_view, engine, valve_timing(valves), breathed) if crank_view is not None else None
     if waiting:
         cylinder = CylinderPressure(crank.phi, crank.columns.p_abs, crank.pressure_source)
         for name, valve in waiting.items():
@@ -238,12 +248,28 @@ def run(spec, laws=None, progress=None, headlines_only=False, diagnose=True, mem
                            *THROAT_AREA_SHARE_RANGE, source="Valve-train practical works (n.d.), work 1"))
     ports = two_stroke_stage(si(spec.two_stroke), crank_view, engine) if spec.two_stroke is not None else None
     shaft = camshaft_stage(si(spec.camshaft), engine, views, valves) if spec.camshaft is not None else None
-    for stage, tag in ((crank, "crank"), (ports, "two-stroke"), (shaft, "camshaft")):
+    for stage, tag in ((crank, "crank"), (ports, "two-stroke"), (shaft, "camshaft"), (breathing, "breathing")):
         if stage is not None:
             found += [c.named(tag) for c in stage.checks]
     found, valves = accept(found, spec.accepted, valves)
     card = cam_card_stage(valves) if valves and engine.strokes == 4 else None
-    return DesignResults(spec, engine_record(engine), valves, tuple(found), crank, ports, card, shaft)
+    return DesignResults(spec, engine_record(engine), valves, tuple(found), crank, ports, card, shaft, breathing)
+
+
+def _breathing(spec, engine, crank_view, valves, views):
+    """The breathing stage of a specification with [breathing]: its files read (a file that cannot be used is a
+    :class:`SpecError` naming its key), the crank's SI view (or None) for the rod, offset and Wiebe cycle."""
+    sides = {}
+    for side in ("intake", "exhaust"):
+        try:
+            sides[side] = si(getattr(spec.breathing, side), spec)
+        except BreathingFileError as exc:
+            raise SpecError([Problem(f"breathing.{side}.{exc.key}", str(exc))]) from None
+    view = replace(si(spec.breathing.model_copy(update={"intake": None, "exhaust": None}), spec), **sides)
+    try:
+        return breathing_stage(view, engine, crank_view, valves, views)
+    except BreathingError as exc:
+        raise SpecError([Problem("breathing", str(exc))]) from None
 
 
 def accept(found: list[Check], acceptances: list, valves: dict[str, ValveDesign]
@@ -438,6 +464,7 @@ def results_schema() -> dict[str, Any]:
             "valvetrain_version": {"type": "string"}, "engine": json_schema(EngineRecord),
             "valves": {"type": "object", "additionalProperties": valve},
             "crank": json_schema(CrankSummary), "two_stroke": json_schema(TwoStrokeSummary),
+            "breathing": json_schema(BreathingSummary),
             "camshaft": json_schema(CamshaftRecord),
             "cam_card": json_schema(CamCard) | {"properties": json_schema(CamCard)["properties"] | {
                 "valves": {"type": "object", "additionalProperties": json_schema(CamCardValve)}}},

@@ -14,10 +14,12 @@ from functools import cached_property
 from typing import Any
 
 import numpy as np
+from scipy.interpolate import interp1d
 
 from .. import camshaft as shaft
 from ..bibliography import cite
 from ..checks import Check, check
+from ..numerics import first_largest
 from ..units import to_display
 from ..layouts import finger_mass_change
 from .crank import firing_angles
@@ -34,7 +36,22 @@ ORDERS = 60
 MODES = 3
 """Torsional natural frequencies reported (the lowest)."""
 
-WORKS = f"{cite('shigley2011', 'chapter 3 (torsion), table A-9')}; {cite('denhartog1956')}; {cite('vt_works', 'eq. (7.3)')}"
+TORSION_TABLE = "tables/camshaft_torsion.csv"
+"""The file of the torsional response at every speed of the running range."""
+
+RESPONSE_SPEEDS = 400
+"""Evenly spaced engine speeds of the torsional response over the running range; the speeds at which a significant
+order meets one of the :data:`MODES` lowest natural frequencies are added, where the response peaks."""
+
+SERIES_ANGLES = 720
+"""Camshaft angles of a revolution at which the response's lag and drive force are summed from their orders (0.5 cam
+deg, more than twice :data:`ORDERS`)."""
+
+LISTED_RESONANCES = 4
+"""Resonances of the running range a check's note names (the largest timing fluctuations first)."""
+
+WORKS = (f"{cite('shigley2011', 'chapter 3 (torsion), table A-9')}; {cite('denhartog1956')}; "
+         f"{cite('vt_works', 'eq. (7.3)')}; {cite('chrysler2002')}")
 """The works of the chapter, for the report."""
 
 
@@ -50,6 +67,46 @@ class LobeSet:
     force_max: float            # largest cam force of one lobe over the speed range [N] (the strength stage)
     train_inertia: float        # the valve train's mass reduced to the camshaft, m_t mean(h'^2) [kg m^2]
     load: str                   # "dynamic" or "quasi-static", "with friction" where the lubrication stage ran
+    speeds: np.ndarray          # (S,) engine speeds of the running range the torque is known at, ascending [rad/s]
+    phasors: np.ndarray         # (S, ORDERS + 1) one lobe's torque orders there, its nose at 0 [N m, complex]
+
+
+@dataclass(frozen=True)
+class TorsionalResonance:
+    """A natural frequency met by a significant order of the camshaft speed inside the running range, and the
+    response there (SI)."""
+
+    mode: int = quantity("mode", label="the mode, lowest first")
+    frequency: float = quantity("natural_frequency_Hz", "Hz", "its natural frequency")
+    order: int = quantity("order", label="the significant order of the camshaft speed that meets it")
+    speed: float = quantity("speed_rpm", "rpm", "the engine speed where they meet")
+    fluctuation: float = quantity("timing_fluctuation_cam_deg", "cam deg", "the largest fluctuation of a lobe's "
+                                  "timing there: its largest less its smallest lag behind the crankshaft over a "
+                                  "revolution")
+    drive_force: float = quantity("drive_force_N", "N", "the largest force of the timing drive there")
+
+
+@dataclass(frozen=True)
+class TorsionalResponse:
+    """The steady torsional response of the camshaft and its timing drive to the lobes' torque over the running
+    range, by modal superposition (SI)."""
+
+    damping_ratio: float = quantity("damping_ratio", label="modal damping ratio of every torsional mode, [camshaft] "
+                                    "torsional_damping_ratio")
+    speed_range: tuple[float, float] = quantity("speed_range_rpm", "rpm", "the running range: the lowest speed of "
+                                                "the strength checks to the over-speed")
+    allowable: float = quantity("timing_fluctuation_allowable_cam_deg", "cam deg", "allowable fluctuation of a "
+                                "lobe's timing: [camshaft] max_timing_play_mm over the pitch radius")
+    fluctuation: float = quantity("largest_timing_fluctuation_cam_deg", "cam deg", "the largest fluctuation of a "
+                                  "lobe's timing over the running range")
+    fluctuation_speed: float = quantity("largest_timing_fluctuation_speed_rpm", "rpm", "where")
+    fluctuation_cylinder: int = quantity("largest_timing_fluctuation_cylinder", label="at which cylinder's lobes")
+    drive_force: float = quantity("largest_drive_force_N", "N", "the largest force of the timing drive over the "
+                                  "running range")
+    drive_force_speed: float = quantity("largest_drive_force_speed_rpm", "rpm", "where")
+    resonances: tuple[TorsionalResonance, ...] = quantity("resonances", label="the natural frequencies met by a "
+                                                          "significant order inside the running range")
+    table: str = quantity("table", label="the response at every speed of the range (CSV)")
 
 
 @dataclass(frozen=True)
@@ -99,6 +156,8 @@ class CamshaftRecord:
                                    "crankshaft, the drive's stretch under the torque (0: a rigid drive)")
     drive_end_inertia: float = quantity("drive_end_inertia_kg_mm2", "kg mm2", "inertia at the drive end: the "
                                         "sprocket, pulley or gear and its share of the shaft")
+    response: TorsionalResponse = quantity("torsional_response", label="the steady torsional response over the "
+                                           "running range")
 
 
 @dataclass(frozen=True, repr=False)
@@ -108,6 +167,11 @@ class CamshaftResults:
     psi: np.ndarray = field(repr=False)          # camshaft angles over a revolution [rad]
     torque: np.ndarray = field(repr=False)       # total drive torque [N m]
     twist: np.ndarray = field(repr=False)        # (L, n) lag of each station [rad]
+    chain: np.ndarray = field(repr=False)        # (L,) the torsional chain's spring rates from the crankshaft [N m/rad]
+    masses: np.ndarray = field(repr=False)       # (L,) its inertias: the sprocket (a compliant drive), the stations
+    speeds: np.ndarray = field(repr=False)       # (G,) engine speeds of the torsional response [rad/s]
+    fluctuation: np.ndarray = field(repr=False)  # (G, C) fluctuation of each station's lag there [rad]
+    drive_forces: np.ndarray = field(repr=False)   # (G,) largest force of the timing drive there [N]
     figures: CamshaftRecord
     checks: tuple[Check, ...]                    # the chapter's checks
 
@@ -142,23 +206,35 @@ def lobe_set(name, valve, engine, design, firing) -> LobeSet:
     """
     cam, drive = design.cam, design.drive
     maps = event_load_maps(valve, engine, cam, drive, design.dynamics)[1]
-    m = min(maps, key=lambda m: float(np.min(np.abs(m.speeds - engine.rated_speed))))
+    torques = [map_torque(valve, cam, design.lubrication is not None, m, engine.rated_speed) for m in maps]
+    j = min(range(len(maps)), key=lambda i: float(np.min(np.abs(maps[i].speeds - engine.rated_speed))))
+    m = maps[j]
     row = int(np.argmin(np.abs(m.speeds - engine.rated_speed)))
-    force, theta = m.force[row], m.theta
+    theta, torque = m.theta, torques[j][row]
     dh = cam.law.derivatives(theta)[1]
-    load = m.kind
-    if design.lubrication is not None:
-        omega = np.array([[cam.cam_speed]])
-        normal = contact_loads(cam, [m])[0].force[row]
-        torque = contact_map(valve.lubrication, cam, valve.parts.cam_width, valve.parts.contact_modulus, theta,
-                             normal[None, :], omega)["drive_torque"][0]
-        load += ", with friction"
-    else:
-        torque = np.where(force > 0.0, force, 0.0) * dh
+    load = m.kind + (", with friction" if design.lubrication is not None else "")
     inertia = (drive.masses.at_tappet * float(np.trapezoid(dh**2, theta))
                + float(np.trapezoid(finger_mass_change(valve, cam.law, theta) * dh**2, theta))) / (2.0 * np.pi)
+    lobe = shaft.wrap(2.0 * np.pi * np.arange(ANGLES) / ANGLES)
+    speeds = np.concatenate([m.speeds for m in maps])
+    phasors = np.concatenate([shaft.order_phasors(interp1d(m.theta, t, axis=1, bounds_error=False, fill_value=0.0)(
+        lobe), ORDERS) for m, t in zip(maps, torques, strict=True)])
+    order = np.argsort(speeds, kind="stable")
     return LobeSet(name, valve.count, theta, torque, shaft.lobe_noses(cam.nose, firing, engine.strokes),
-                   drive.strength.cam_force_max, inertia, load)
+                   drive.strength.cam_force_max, inertia, load, speeds[order], phasors[order])
+
+
+def map_torque(valve, cam, friction, m, rated_speed) -> np.ndarray:
+    """One lobe's drive torque at every speed of the load map ``m`` [N m], (S, n): P_T dh/dtheta, with the friction
+    torque of :func:`valvetrain.design.lubrication.contact_map` where ``friction`` (the valve has a lubrication
+    section) under the cam's normal force (:func:`valvetrain.design.drive.contact_loads`); ``rated_speed`` [rad/s]
+    turns the map's engine speeds into camshaft speeds (``cam.cam_speed`` at it)."""
+    if friction:
+        normal = contact_loads(cam, [m])[0].force
+        omega = (m.speeds * cam.cam_speed / rated_speed)[:, None]
+        return contact_map(valve.lubrication, cam, valve.parts.cam_width, valve.parts.contact_modulus, m.theta,
+                           normal, omega)["drive_torque"]
+    return np.where(m.force > 0.0, m.force, 0.0) * cam.law.derivatives(m.theta)[1]
 
 
 def camshaft_torque(psi, lobes) -> np.ndarray:
@@ -200,8 +276,8 @@ def camshaft_stage(c, engine, valves, designs) -> CamshaftResults:
     lumped = shaft.lumped_shaft_inertia(np.concatenate([[0.0], x]), lengths, diameters, bores, c.density_kg_m3)
     inertia = lobe_count * c.lobe_inertia + sum(s.count * s.train_inertia for s in lobes) + lumped[1:]
     sprocket = c.sprocket_inertia + lumped[0]
-    omega_n = shaft.torsional_frequencies(*shaft.with_drive_end(shaft.station_stiffness(compliance), inertia,
-                                                                drive_k, sprocket))
+    chain, masses = shaft.with_drive_end(shaft.station_stiffness(compliance), inertia, drive_k, sprocket)
+    omega_n, shapes = shaft.torsional_modes(chain, masses)
     top = max(significant)
     ratio_n = float(omega_n[0] / (top * cam_speed * engine.over_speed_ratio))
     section = shaft.section_at(x, lengths)
@@ -210,7 +286,13 @@ def camshaft_stage(c, engine, valves, designs) -> CamshaftResults:
                                  c.modulus)
     drive_force = shaft.drive_force(np.array([figures["peak"], figures["mean"]]), c.drive_pitch_radius)
     twist_max = float(np.max(np.abs(lag)))
-    j = int(np.argmax(total))
+    j = first_largest(total)    # of the equal peaks of a camshaft's lobes, the first
+    speeds = response_speeds(lobes, omega_n[:MODES], significant, ratio, engine.over_speed_ratio * engine.rated_speed)
+    lags = torsional_response(omega_n, shapes, c.torsional_damping_ratio,
+                              station_phasors(lobes, speeds), ratio * speeds)
+    fluctuation = np.ptp(lags[:, -len(cylinders):, :], axis=-1)
+    drive_forces = np.max(chain[0] * lags[:, 0, :], axis=-1) / c.drive_pitch_radius
+    response = response_record(c, speeds, fluctuation, drive_forces, omega_n[:MODES], significant, ratio, cylinders)
     record_ = CamshaftRecord(
         tuple(names), tuple(cylinders), lobe_count * len(cylinders), ratio, tuple(f"{s.valve}: {s.load}" for s in lobes),
         figures["peak"], float(psi[j]), figures["lowest"], figures["mean"], figures["fluctuation"],
@@ -219,37 +301,131 @@ def camshaft_stage(c, engine, valves, designs) -> CamshaftResults:
         tuple(float(n) for n in shaft.resonance_speeds(omega_n[0], significant, ratio)), tuple(float(p) for p in x),
         tuple(float(i) for i in inertia), tuple(float(t) for t in np.max(np.abs(lag), axis=1)), twist_max,
         twist_max / ratio, tuple(float(f) for f in bend), float(bend.max()), c.drive, float(drive_force[0]),
-        float(drive_force[1]), c.drive_allowable_force_N, float(np.max(np.abs(total)) / drive_k), float(sprocket))
-    return CamshaftResults(psi, total, lag, record_, tuple(camshaft_checks(record_, c, engine)))
+        float(drive_force[1]), c.drive_allowable_force_N, float(np.max(np.abs(total)) / drive_k), float(sprocket),
+        response)
+    return CamshaftResults(psi, total, lag, chain, masses, speeds, fluctuation, drive_forces, record_,
+                           tuple(camshaft_checks(record_, c, engine)))
+
+
+def response_speeds(lobes, omega_n, orders, ratio, top) -> np.ndarray:
+    """The engine speeds of the torsional response [rad/s]: :data:`RESPONSE_SPEEDS` evenly over the running range
+    where every lobe's torque is known (from the highest of the lobes' lowest speeds to ``top``, the over-speed), and
+    the speeds in it where an order of ``orders`` meets a natural frequency of ``omega_n`` [rad/s]
+    (:func:`valvetrain.camshaft.resonance_speeds`, ``ratio`` camshaft revolutions per crank revolution)."""
+    low, high = max(s.speeds[0] for s in lobes), min(min(s.speeds[-1] for s in lobes), top)
+    met = np.concatenate([shaft.resonance_speeds(w, np.asarray(orders), ratio) for w in omega_n])
+    return np.unique(np.concatenate([np.linspace(low, high, RESPONSE_SPEEDS), met[(met >= low) & (met <= high)]]))
+
+
+def station_phasors(lobes, speeds) -> np.ndarray:
+    """The orders of each station's torque at the engine speeds ``speeds`` [rad/s] [N m, complex], (G, ORDERS + 1,
+    C): the sum over the valves of count x one lobe's orders, interpolated linearly between the speeds its torque is
+    known at, each turned to its nose's camshaft angle psi_c, c_k exp(-i k psi_c) (T(psi - psi_c))."""
+    k = np.arange(ORDERS + 1)
+    return sum(s.count * interp1d(s.speeds, s.phasors, axis=0)(speeds)[:, :, None]
+               * np.exp(-1j * k[None, :, None] * s.noses[None, None, :]) for s in lobes)
+
+
+def torsional_response(omega_n, shapes, damping_ratio, stations, cam_speeds) -> np.ndarray:
+    """The lag of every mass of the torsional chain behind the crankshaft over a camshaft revolution [rad], (G, L,
+    SERIES_ANGLES): the steady response to each order of the stations' torque ``stations`` (G, K, C) at the camshaft
+    speeds ``cam_speeds`` (G,) [rad/s] by :func:`valvetrain.camshaft.forced_response` (the stations the last C masses
+    of the chain, the sprocket unloaded), summed over the orders (:func:`valvetrain.camshaft.order_series`) at
+    camshaft angles 2 pi j / SERIES_ANGLES from cylinder 1's gas-exchange TDC."""
+    g, k, c = stations.shape
+    torques = np.zeros((g, k, shapes.shape[0]), dtype=complex)
+    torques[:, :, -c:] = stations
+    phi = shaft.forced_response(omega_n, shapes, damping_ratio, torques, np.arange(k)[None, :] * cam_speeds[:, None])
+    return shaft.order_series(np.swapaxes(phi, 1, 2), SERIES_ANGLES)
+
+
+def response_record(c, speeds, fluctuation, drive_forces, omega_n, orders, ratio, cylinders) -> TorsionalResponse:
+    """The :class:`TorsionalResponse` of the fluctuation of each station's lag (G, C) [rad] and the largest drive
+    force (G,) [N] at the engine speeds ``speeds`` [rad/s], with the resonances: each order of ``orders`` meeting a
+    natural frequency of ``omega_n`` [rad/s] inside them (``ratio`` camshaft revolutions per crank revolution)."""
+    found = []
+    for mode, w in enumerate(omega_n, start=1):
+        for k in orders:
+            n = float(shaft.resonance_speeds(w, np.array([k]), ratio)[0])
+            i = int(np.argmin(np.abs(speeds - n)))
+            if abs(speeds[i] - n) <= 1e-9 * n:
+                found.append(TorsionalResonance(mode, float(w / (2.0 * np.pi)), int(k), n,
+                                                float(fluctuation[i].max()), float(drive_forces[i])))
+    i, station = np.unravel_index(int(np.argmax(fluctuation)), fluctuation.shape)
+    j = int(np.argmax(drive_forces))
+    return TorsionalResponse(c.torsional_damping_ratio, (float(speeds[0]), float(speeds[-1])),
+                             c.max_timing_play / c.drive_pitch_radius, float(fluctuation[i, station]), float(speeds[i]),
+                             int(cylinders[station]), float(drive_forces[j]), float(speeds[j]),
+                             tuple(sorted(found, key=lambda r: -r.fluctuation)), TORSION_TABLE)
+
+
+TWIST_FAILURE = np.radians(10.0)
+"""A camshaft twist beyond which its check is a failure, not a warning [rad, camshaft]: 10 cam deg (20 crank deg), the
+largest ``max_twist_cam_deg`` allows, an engineering limit: valve events that far from their timing are no longer
+the engine's (and a shaft that twists so far elastically is far past its yield)."""
 
 
 def camshaft_checks(r, c, engine) -> list[Check]:
     """The camshaft's checks: the timing error of the twist, the torsional resonance margin, the bending deflection
-    at the lobes and the timing drive's load.
+    at the lobes and the timing drive's load, at the rated speed; the torsional response over the running range.
 
     Notes
     -----
-    The limits of the twist (``max_twist_cam_deg``) and of the frequency ratio (``min_frequency_ratio``) are
-    engineering assumptions, keys with bounded defaults: no published camshaft limit was found.  The allowable of the
-    timing drive is the maker's (``drive_allowable_force_N``); for a roller chain the working load is commonly at most
-    1/6 of its tensile strength (Diamond Chain (n.d.)).
+    The limits of the quasi-static twist (``max_twist_cam_deg``) and of the frequency ratio (``min_frequency_ratio``)
+    are engineering assumptions, keys with bounded defaults: no published camshaft limit was found; a twist beyond
+    :data:`TWIST_FAILURE` is a failure. The frequency ratio is information: a resonance inside the running range is
+    graded by its response, the fluctuation of each lobe's timing (against the movement of the cam sprocket against
+    the crankshaft a maker accepts in service, ``max_timing_play_mm`` along the pitch circle: 3.175 mm, Chrysler
+    (2002)) and the largest force of the timing drive, each a failure above its allowable. The allowable of the
+    timing drive is the maker's (``drive_allowable_force_N``); for a roller chain the working load is commonly at
+    most 1/6 of its tensile strength (Diamond Chain (n.d.)).
     """
     over = to_display(engine.over_speed_ratio * engine.rated_speed, "rpm")
     held = "the drive end held" if c.drive_stiffness is None else "through the timing drive's stiffness"
+    t = r.response
+    damping = (f"modal damping ratio {t.damping_ratio:g} ([camshaft] torsional_damping_ratio, an engineering "
+               "assumption)")
+    chain_source = f"; {cite('diamondchain')}" if c.drive == "chain" else ""
     return [
-        check("camshaft.twist_timing_error", r.twist_max, high=c.max_twist, unit="cam deg", severity="warning",
+        check("camshaft.twist_timing_error", r.twist_max, high=c.max_twist, unit="cam deg",
+              severity="failure" if r.twist_max > TWIST_FAILURE else "warning",
               source=f"{cite('shigley2011', 'chapter 3 (torsion)')}; camshaft.max_twist_cam_deg (an engineering "
-                     "assumption)",
+                     f"assumption; beyond {np.degrees(TWIST_FAILURE):g} cam deg a failure)",
               note=f"{to_display(r.twist_crank, 'crank deg'):.3g} crank deg; quasi-static, {held}"),
-        check("camshaft.torsional_resonance", r.frequency_ratio, low=c.min_frequency_ratio, severity="warning",
+        check("camshaft.torsional_resonance", r.frequency_ratio, low=c.min_frequency_ratio, severity="info",
               source=f"{cite('denhartog1956')}; camshaft.min_frequency_ratio (an engineering assumption)",
               note=f"first natural frequency {r.natural_frequencies[0]:.4g} Hz against order {max(r.significant_orders)} "
-                   f"at the over-speed {over:.0f} rpm"),
+                   f"at the over-speed {over:.0f} rpm; a resonance in the running range is graded by its response "
+                   "(camshaft.dynamic_timing_error, camshaft.dynamic_drive_force)"),
         check("camshaft.bending_deflection", r.deflection_max, high=c.max_deflection, unit="mm", severity="failure",
               source=f"{cite('vt_works', 'eq. (7.3)')}: 0.02-0.05 mm; {cite('shigley2011', 'table A-9')}",
               note="each lobe alone on a simply supported span between its journals"),
         check("camshaft.timing_drive_force", r.drive_force, high=c.drive_allowable_force_N, unit="N",
               severity="failure", source="camshaft.drive_allowable_force_N (the maker's allowable of the "
-                                         f"{c.drive}{'; ' + cite('diamondchain') if c.drive == 'chain' else ''})",
+                                         f"{c.drive}{chain_source})",
               note=f"peak torque {r.peak:.4g} N m at the pitch radius {to_display(c.drive_pitch_radius, 'mm'):g} mm"),
+        check("camshaft.dynamic_timing_error", t.fluctuation, high=t.allowable, unit="cam deg", severity="failure",
+              source=f"{cite('chrysler2002')}: the cam sprocket's movement against the crankshaft accepted in service, "
+                     f"camshaft.max_timing_play_mm = {to_display(c.max_timing_play, 'mm'):g} mm along the pitch "
+                     f"circle of radius {to_display(c.drive_pitch_radius, 'mm'):g} mm; {cite('denhartog1956')}",
+              note=f"largest less smallest lag of cylinder {t.fluctuation_cylinder}'s lobes over a revolution, at "
+                   f"{to_display(t.fluctuation_speed, 'rpm'):.0f} rpm, steady response over "
+                   f"{to_display(t.speed_range[0], 'rpm'):.0f}-{to_display(t.speed_range[1], 'rpm'):.0f} rpm, "
+                   f"{damping}; {resonance_note(t)}"),
+        check("camshaft.dynamic_drive_force", t.drive_force, high=c.drive_allowable_force_N, unit="N",
+              severity="failure", source="camshaft.drive_allowable_force_N (the maker's allowable of the "
+                                         f"{c.drive}{chain_source}); {cite('denhartog1956')}",
+              note=f"at {to_display(t.drive_force_speed, 'rpm'):.0f} rpm, steady response, {damping}"),
     ]
+
+
+def resonance_note(t) -> str:
+    """The resonances of the running range with their figures, the largest timing fluctuations first (at most
+    :data:`LISTED_RESONANCES`), or that there is none."""
+    if not t.resonances:
+        return "no significant order meets a natural frequency in the running range"
+    listed = "; ".join(f"order {r.order} meets mode {r.mode} ({r.frequency:.4g} Hz) at {to_display(r.speed, 'rpm'):.0f} "
+                       f"rpm: {to_display(r.fluctuation, 'cam deg'):.3g} cam deg, {r.drive_force:.4g} N"
+                       for r in t.resonances[:LISTED_RESONANCES])
+    more = len(t.resonances) - LISTED_RESONANCES
+    return f"resonances: {listed}" + (f"; {more} more in the results" if more > 0 else "")

@@ -266,9 +266,11 @@ def firing_angles(eng) -> tuple[np.ndarray, str]:
     return torque.even_firing(list(order), eng.strokes), f"even firing, order {'-'.join(map(str, order))}"
 
 
-def crank_stage(c, eng, timing=None) -> CrankResults:
+def crank_stage(c, eng, timing=None, cylinder=None) -> CrankResults:
     """Run the crank chapter: ``c`` and ``eng`` are the SI views of [crank] and [engine], ``timing`` the valves'
-    angles for the Wiebe model (:func:`valve_timing`); returns :class:`CrankResults`."""
+    angles for the Wiebe model (:func:`valve_timing`), ``cylinder`` the breathing's cylinder pressure over the cycle
+    (a :class:`~valvetrain.design.hydraulic_actuation.CylinderPressure`), which replaces the indicator diagram and the
+    Wiebe model when given; returns :class:`CrankResults`."""
     bore, stroke, rod, omega = crank_geometry(c, eng)
     radius = stroke / 2.0
     lam, k = radius / rod, c.offset / radius
@@ -278,10 +280,14 @@ def crank_stage(c, eng, timing=None) -> CrankResults:
     phi = np.arange(n) * c.step
     area = np.pi * bore**2 / 4.0
 
-    try:
-        p_abs, source = _gas_pressure(c, strokes, phi, bore, radius, lam, k, timing)
-    except pressure.PressureFileError as exc:
-        raise SpecError([Problem("crank.pressure_file", str(exc))]) from None
+    if cylinder is not None:
+        p_abs = np.interp(phi, cylinder.angle, cylinder.pressure, period=pressure.cycle_length(strokes))
+        source = cylinder.source
+    else:
+        try:
+            p_abs, source = _gas_pressure(c, strokes, phi, bore, radius, lam, k, timing)
+        except pressure.PressureFileError as exc:
+            raise SpecError([Problem("crank.pressure_file", str(exc))]) from None
     masses = _masses(c, area, 2 if eng.layout == "v" else 1)
     forces = dynamics.cylinder_dynamics(phi, p_abs, c.ambient_pressure, bore, radius, lam, omega, masses, k, exact)
     beta = kinematics.rod_angle(phi, lam, k)

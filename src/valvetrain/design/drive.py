@@ -19,6 +19,7 @@ from ..checks import Check, check
 from ..layouts import chain, finger_inertia, layout, train_mass
 from ..locale import record_text
 from ..locale.wording import diagnosis_text
+from ..numerics import TIE_RTOL, first_largest
 from ..spring_materials import grade
 from ..specification.si import si_name
 from ..units import to_display
@@ -612,11 +613,13 @@ def contact_loads(cam, maps) -> list[LoadMap]:
 
 
 def _worst(maps, values):
-    """The largest of ``values`` (one array (S, n) per load map) over every map: a :class:`Worst`."""
+    """The largest of ``values`` (one array (S, n) per load map) over every map: a :class:`Worst`; of values equal
+    to round-off (a symmetric cam's two flanks) the first map's, at the lowest speed, at the smallest angle
+    (:func:`~valvetrain.numerics.first_largest`)."""
     best = None
     for m, q in zip(maps, values, strict=True):
-        i, j = np.unravel_index(int(np.argmax(q)), q.shape)
-        if best is None or q[i, j] > best.value:
+        i, j = np.unravel_index(first_largest(q), q.shape)
+        if best is None or q[i, j] > best.value + TIE_RTOL * abs(best.value):
             best = Worst(float(q[i, j]), float(m.speeds[i]), float(m.theta[j]), m.kind, float(m.force[i, j]))
     return best
 
@@ -660,7 +663,9 @@ def strength_stage(valve, gas, engine, cam, drive, dynamics=None) -> tuple[Stren
         p_open, gas_check = _exhaust_gas_force(valve, gas)
         found.append(gas_check)
         for m in maps:
-            m.force[:, int(np.argmin(np.abs(m.theta - law.valve_opens)))] += cam.rocker_ratio * p_open
+            # the nearest angle; of two as near to the round-off of the angles, the first
+            m.force[:, first_largest(-np.abs(m.theta - law.valve_opens), atol=TIE_RTOL * np.pi)] += \
+                cam.rocker_ratio * p_open
     result, checks = _strength(valve, cam, theta, contact_loads(cam, maps), p_open, _worst(maps, [m.force for m in maps]))
     if cam.follower_model.law_at_valve:
         finger, bending = finger_bending(valve.parts, *finger_loads(cam, maps))
@@ -792,9 +797,10 @@ def _strength(valve, cam, theta, maps, p_open, valve_load):
 
 def _per_speed(maps, stresses=None):
     """The largest cam force and contact stress (``stresses``: one array (S, n) per load map, None: not checked) at
-    every speed of the load maps, a :class:`StrengthPerSpeed` in increasing speed."""
+    every speed of the load maps, a :class:`StrengthPerSpeed` in increasing speed; of values equal to round-off the
+    one at the smallest angle (:func:`~valvetrain.numerics.first_largest`)."""
     def largest(m, values):
-        j = np.argmax(values, axis=1)
+        j = first_largest(values, axis=1)
         return values[np.arange(j.size), j], m.theta[j]
 
     def column(rows):

@@ -3,8 +3,9 @@
 The stage builds a one-mass or a multi-mass train (:mod:`valvetrain.dynamics.models`) from the
 valve's design (the reduced mass, the designed spring, the lash the ramp takes up, the part
 masses and geometry of the specification), sweeps it over the engine speeds
-(:func:`valvetrain.dynamics.sweep.sweep`), simulates the rated speed, and adds the resonance
-analysis of the cam's harmonics (:mod:`valvetrain.dynamics.resonance`).  Every value the
+(:func:`valvetrain.dynamics.sweep.sweep`), simulates the rated speed, refines the headline numbers
+at the speeds that decide them and estimates their errors (:func:`valvetrain.dynamics.accuracy.refine`), and adds
+the resonance analysis of the cam's harmonics (:mod:`valvetrain.dynamics.resonance`).  Every value the
 specification leaves out is estimated and the estimate stated in ``parameters.estimates``.
 
 Speeds in the results are engine (crank) speeds; the camshaft of a four-stroke turns at half.
@@ -19,11 +20,13 @@ import numpy as np
 from .. import lash_adjuster as hla
 from ..checks import Check, check
 from ..dynamics.models import (Adjuster, CoilSpring, MultiMassTrain, OneMassTrain, VariableMass, camshaft_stiffness,
-                               direct_train, natural_modes, one_mass_train, pushrod_stiffness, pushrod_train,
-                               rocker_train, series)
+                               coil_spring, direct_train, natural_modes, one_mass_train, pushrod_stiffness,
+                               pushrod_train, rocker_train, series, slowest_decay)
+from ..dynamics.accuracy import MAX_HALVINGS, Refinement, refine
 from ..dynamics.perturbation import perturbation_parameter
 from ..dynamics.resonance import resonance
-from ..dynamics.sweep import BOUNCE_TOLERANCE, SpeedResult, SweepResult, headline_sweep, sweep, sweep_size
+from ..dynamics.sweep import (BOUNCE_TOLERANCE, STATE_TOLERANCE, SpeedResult, SweepResult, headline_sweep, sweep,
+                              sweep_size)
 from ..followers import follower_of
 from ..layouts import chain, finger_inertia, layout, valve_arm
 from ..specification import SpecError
@@ -158,10 +161,12 @@ class SpeedRecords:
     revolutions: np.ndarray = _like("revolutions")
 
 
-def speed_records(result, speeds, epsilon) -> SpeedRecords:
+def speed_records(result, speeds, epsilon, events=None) -> SpeedRecords:
     """The :class:`SpeedRecords` of a :class:`~valvetrain.dynamics.sweep.SweepResult` at engine speeds [rad/s] (S,)
-    with the perturbation parameters (S,): :func:`speed_record` of every speed, over the speeds at once."""
-    events = result.events
+    with the perturbation parameters (S,): :func:`speed_record` of every speed, over the speeds at once; its events
+    ``events`` (:class:`~valvetrain.dynamics.sweep.SweepEvents`, those refined at the speeds that decide the headlines,
+    :class:`~valvetrain.dynamics.accuracy.Refinement`), else the sweep's own."""
+    events = result.events if events is None else events
     surge = result.surge_amplitude.max(axis=1) if result.surge_amplitude.shape[1] else None
     error = result.lift_error
     np.abs(error, out=error)     # in place: a map of speeds x angles
@@ -211,6 +216,31 @@ class Mode:
 
 
 @dataclass(frozen=True)
+class AccuracyRecord:
+    """Estimated discretisation errors of the headline numbers: the speeds that decide each simulated again at halved
+    steps until it settles (:func:`~valvetrain.dynamics.accuracy.refine`)."""
+
+    jump_speed: float = quantity("jump_speed_rpm", "rpm", "of the jump speed, its two parts together (null: no "
+                                 "separation)")
+    jump_speed_step: float = quantity("jump_speed_step_rpm", "rpm", "time step: the jump speed's change at the last "
+                                      "halving of the step")
+    jump_speed_grid: float = quantity("jump_speed_grid_rpm", "rpm", "speed grid: its change by a speed simulated where "
+                                      "it is interpolated between the speeds swept")
+    bounce_speed: float = quantity("bounce_speed_rpm", "rpm", "of the bounce onset speed, its two parts together "
+                                   "(null: no bounce)")
+    bounce_speed_step: float = quantity("bounce_speed_step_rpm", "rpm", "time step: its change at the last halving")
+    bounce_speed_grid: float = quantity("bounce_speed_grid_rpm", "rpm", "speed grid: its change by a speed simulated "
+                                        "where it is interpolated")
+    max_seating_velocity: float = quantity("max_seating_velocity_m_s", "m/s", "of the largest |seating velocity|: its "
+                                           "change at the last halving of the step")
+    rated_seating_velocity: float = quantity("rated_seating_velocity_m_s", "m/s", "of the seating velocity at the rated "
+                                             "speed")
+    rated_bounce: float = quantity("rated_bounce_mm", "mm", "of the bounce height at the rated speed")
+    step: float = quantity("finest_step_cam_deg", "cam deg", "the finest step a headline was refined to (the sweep's "
+                           "step halved at most " + str(MAX_HALVINGS) + " times)")
+
+
+@dataclass(frozen=True)
 class DynamicsResult:
     """The dynamics stage: the train, the headline numbers of the sweep, the rated speed and the resonance."""
 
@@ -219,31 +249,42 @@ class DynamicsResult:
     speed_range: tuple[float, ...] = quantity("speed_range_rpm", "rpm", "engine speeds swept, from and to")
     speeds: int = quantity("speeds", label="speeds swept")
     jump_speed: float = quantity("jump_speed_rpm", "rpm", "engine speed where the smallest contact force while the "
-                                 "cam lifts reaches 0, interpolated between the speeds swept (null: no follower "
-                                 "separation in the range)")
+                                 "cam lifts reaches 0, interpolated between the speeds swept and checked by one "
+                                 "simulated between, the speeds about it at a halved step until it settles (its "
+                                 "estimated error: accuracy; null: no follower separation in the range)")
     bounce_speed: float = quantity("bounce_speed_rpm", "rpm", "engine speed where the bounce height first exceeds "
-                                   "1 um, interpolated between the speeds swept (null: none)")
+                                   "1 um, interpolated between the speeds swept and refined as the jump speed (null: "
+                                   "none)")
     max_seating_velocity: float = quantity("max_seating_velocity_m_s", "m/s", "largest |seating velocity| of the "
-                                           "sweep (null: the valve seats at no speed)")
+                                           "sweep, the speeds near it at a halved step until it settles (null: the "
+                                           "valve seats at no speed)")
     max_seating_velocity_speed: float = quantity("max_seating_velocity_speed_rpm", "rpm", "where it occurs (null: "
                                                  "the same)")
     coil_clash_speed: Optional[float] = quantity("coil_clash_speed_rpm", "rpm", "multi: lowest speed whose coils "
                                                  "meet (null: none)", omit_none=True)
     epsilon: float = quantity("epsilon", label="perturbation parameter at the rated speed")
-    natural_frequency: float = quantity("natural_frequency_Hz", "Hz", "one-mass natural frequency sqrt((K + c)/M)")
+    natural_frequency: float = quantity("natural_frequency_Hz", "Hz", "lowest natural frequency of the simulated "
+                                        "train, the first of natural_frequencies_Hz (one mass: sqrt((K + c)/M) / 2 pi)")
     natural_frequencies: tuple[float, ...] = quantity("natural_frequencies_Hz", "Hz", "natural frequencies of the "
-                                                      "simulated train with every contact closed, ascending")
+                                                      "simulated train with the valve off its seat (every other "
+                                                      "contact closed), ascending")
     modes: tuple[Mode, ...] = quantity("modes", label="the natural modes: frequency and shape")
     max_revolutions: int = quantity("max_revolutions", label="most camshaft revolutions a speed took to repeat")
     unsettled_speeds: int = quantity("unsettled_speeds", label="speeds whose motion did not repeat within the "
                                      "revolutions key (the last revolution recorded)")
+    unsettled_note: Optional[str] = quantity("unsettled_note", label="why those speeds did not repeat (null: every "
+                                             "speed repeated)", omit_none=True)
+    accuracy: AccuracyRecord = quantity("accuracy", label="estimated discretisation errors of the headline numbers "
+                                        "and of the rated speed's seating")
     at_rated_speed: SpeedRecord = quantity("at_rated_speed")
     resonance: ResonanceRecord = quantity("resonance")
-    per_speed: PerSpeed = quantity("per_speed")
+    per_speed: PerSpeed = quantity("per_speed", label="one entry per speed swept; the speeds that decide the headline "
+                                   "numbers have the events of their finest step")
     sweep_table: str = quantity("sweep_table", label="CSV with one row per speed, relative to the output folder")
     sweep: Optional[SweepResult] = field(default=None, repr=False, compare=False)
     records: Optional[SpeedRecords] = field(default=None, repr=False, compare=False)    # every speed
     rated: Optional[SpeedResult] = field(default=None, repr=False, compare=False)      # at the rated speed
+    refinement: Optional[Refinement] = field(default=None, repr=False, compare=False)  # the headlines refined
 
 
 def _link_estimates(valve, k):
@@ -298,10 +339,12 @@ def drive_links(dyn, valve, k, at) -> tuple[tuple[Optional[float], ...], tuple[s
 
 
 def _coil_springs(spring_record, coils):
-    """The designed spring(s) as :class:`CoilSpring` (rate, preload, active-coil mass, closing gap)."""
+    """The designed spring(s) as :class:`CoilSpring` (:func:`~valvetrain.dynamics.models.coil_spring`: the active
+    coils' mass in the coil masses, the end coils' with the retainer and the head, the closing gap from the installed
+    and the solid length)."""
     recs = [spring_record.design] if spring_record.count == 1 else [spring_record.outer, spring_record.inner]
-    return [CoilSpring(r.rate, r.preload, r.mass, r.active_coils * (r.installed_pitch - r.wire_diameter), int(coils))
-            for r in recs]
+    return [coil_spring(r.rate, r.preload, r.mass, r.active_coils, r.wire_diameter, r.installed_length, int(coils),
+                        r.total_coils - r.active_coils) for r in recs]
 
 
 def multi_springs(dyn, spring_record, rate, preload) -> tuple[list[CoilSpring], list[str]]:
@@ -312,7 +355,8 @@ def multi_springs(dyn, spring_record, rate, preload) -> tuple[list[CoilSpring], 
     given = (dyn.spring_rate, dyn.spring_preload_N, dyn.spring_mass_kg)
     if all(v is None for v in given):
         return designed, [f"coil masses: the designed spring's active coils in {dyn.coils_per_spring} masses per "
-                          "spring, half a segment on the valve"]
+                          "spring, half a segment on the valve; its closed end coils at the retainer on the valve, "
+                          "those at the head on the head; the active coils meet at the spring's solid length"]
     mass = sum(sp.mass for sp in designed) if dyn.spring_mass_kg is None else float(dyn.spring_mass_kg)
     told = "the designed springs' active coils" if dyn.spring_mass_kg is None else "given ([dynamics] spring_mass_kg)"
     return [CoilSpring(rate, preload, mass, 0.0, int(dyn.coils_per_spring))], [
@@ -356,19 +400,24 @@ def train_spring(dyn, valve, law, line, mass, cam_speed, at) -> tuple[float, flo
 
 
 REVOLUTIONS = {False: 3, True: 20}
-"""The default of ``[dynamics] revolutions``, the most camshaft revolutions a speed runs, without and with a lash
-adjuster.  A mechanical train repeats within two revolutions from rest; the plunger of a hydraulic adjuster is a slow
-state: where the follower's force falls to the adjuster's push near the valve's closing (from about 0.85 x the rated
-speed of the modern example) the plunger extends and leaks the extension back under load over several revolutions,
-its periodic state approached by about a factor of 0.1-0.3 a revolution (the modern example: 3 to 8 revolutions
-between 0.84 and 1.19 x the rated speed, 14 of its 40 speeds unsettled at 3; above its float speed, 1.2 x, the plunger
-pumps up at every revolution and the speed stays unsettled).  20 is the key's largest value."""
+"""The default of ``[dynamics] revolutions``, the most camshaft revolutions a speed runs, without and with a slow
+state (a lash adjuster, or the coil masses of a multi-mass train).  A one-mass mechanical train repeats within two
+revolutions from rest; the plunger of a hydraulic adjuster is a slow state: where the follower's force falls to the
+adjuster's push near the valve's closing (from about 0.85 x the rated speed of the modern example) the plunger extends
+and leaks the extension back under load over several revolutions, its periodic state approached by about a factor of
+0.1-0.3 a revolution (the modern example: 3 to 8 revolutions between 0.84 and 1.19 x the rated speed, 14 of its 40
+speeds unsettled at 3; above its float speed, 1.2 x, the plunger pumps up at every revolution and the speed stays
+unsettled).  The surge a lift leaves in the coils decays by exp(-zeta_1 omega_1 T) a revolution of T seconds (the first
+surge mode's damping ratio zeta_1 = :data:`~valvetrain.dynamics.models.COIL_DAMPING_RATIO` at omega_1): 0.37 at
+8750 rpm for the pushrod example's 580 Hz, some 14 revolutions from a millimetre to the 1 nm the repetition asks.  20 is
+the key's largest value."""
 
 
 def revolutions(dyn, valve) -> int:
-    """``[dynamics] revolutions`` as given, else :data:`REVOLUTIONS` of the valve (with or without a lash
-    adjuster)."""
-    return REVOLUTIONS[valve.lash_adjuster is not None] if dyn.revolutions is None else int(dyn.revolutions)
+    """``[dynamics] revolutions`` as given, else :data:`REVOLUTIONS` of the valve (with or without a lash adjuster or
+    a multi-mass train)."""
+    slow = valve.lash_adjuster is not None or dyn.model == "multi"
+    return REVOLUTIONS[slow] if dyn.revolutions is None else int(dyn.revolutions)
 
 
 def adjuster_reference_force(valve, law, drive, cam_speed: float, ratio: float) -> float:
@@ -404,13 +453,21 @@ def adjuster_ratio(valve, law) -> float:
 
 def adjuster_load(valve, law, drive, cam_speed: float, at: str) -> tuple[float, float]:
     """The lash adjuster's motion ratio and :func:`adjuster_reference_force` [N], refused where the adjuster cannot
-    work: a motion ratio <= 0 (at the pivot of a lever ratio <= 1), or a largest force on it no more than its own push
+    work: a motion ratio <= 0 (at the pivot of a lever ratio <= 1, or of a finger whose linkage along the adjuster's
+    axis moves the valve against the plunger, the message naming that axis), or a largest force on it no more than its own push
     F_s + p_s A, which would hold the valve open and leave the oil column uncompressed (no finite stiffness)."""
     la = valve.lash_adjuster
     ratio = adjuster_ratio(valve, law)
-    if ratio <= 0.0:
+    if ratio <= 0.0 and not follower_of(valve.cam).law_at_valve:
         raise SpecError([Problem(f"{at}.lash_adjuster.location", "needs a lever ratio > 1 (an end-pivot finger): "
                                  f"rocker_ratio x the follower's own = {lever_ratio(valve, law):.4g}", '"pivot"', " ")])
+    if ratio <= 0.0:   # a finger's linkage along the adjuster's axis: its lever ratio alone does not decide
+        linkage = (f"the finger's linkage on the heel circle moves the valve by {ratio:.4g} x the plunger's extension "
+                   f"along the adjuster's axis (lever ratio {lever_ratio(valve, law):.4g}); allowed a motion ratio > 0")
+        if la.axis_angle is None:
+            raise SpecError([Problem(f"{at}.lash_adjuster.location", f"{linkage} (the axis is the valve's: "
+                                     "axis_angle_deg not given)", '"pivot"')])
+        raise SpecError([Problem(f"{at}.lash_adjuster.axis_angle_deg", linkage, f"{math.degrees(la.axis_angle):g}")])
     force = adjuster_reference_force(valve, law, drive, cam_speed, ratio)
     supply = la.supply_pressure * hla.plunger_area(la.plunger_diameter)
     if force <= la.plunger_spring_N + supply:
@@ -423,15 +480,17 @@ def adjuster_load(valve, law, drive, cam_speed: float, at: str) -> tuple[float, 
 
 def adjuster_element(la, ratio: float) -> Adjuster:
     """The kernels' :class:`~valvetrain.dynamics.models.Adjuster` of ``[lash_adjuster]`` (SI view ``la``) at the motion
-    ratio ``ratio``: its leak coefficient pi d c^3 / (12 mu L) [m^3/(s Pa)]
-    (:func:`valvetrain.lash_adjuster.annular_leakage` per pascal) and its largest extension velocity, the check valve's
-    flow under :func:`valvetrain.lash_adjuster.refill_pressure` over the plunger area [m/s]."""
+    ratio ``ratio``: its leak coefficient pi d c^3 (1 + 1.5 epsilon^2) / (12 mu L) [m^3/(s Pa)] at the plunger's
+    eccentricity epsilon (:func:`valvetrain.lash_adjuster.annular_leakage` per pascal) and its largest extension
+    velocity, the check valve's flow under :func:`valvetrain.lash_adjuster.refill_pressure` over the plunger area
+    [m/s]."""
     area = hla.plunger_area(la.plunger_diameter)
-    leak = hla.annular_leakage(1.0, la.plunger_diameter, la.radial_clearance, la.leak_length, la.oil_viscosity)
+    leak = hla.annular_leakage(1.0, la.plunger_diameter, la.radial_clearance, la.leak_length, la.oil_viscosity,
+                               la.plunger_eccentricity)
     refill = hla.check_valve_flow(hla.refill_pressure(la.supply_pressure, la.plunger_spring_N, area),
                                   la.check_valve_diameter) / area
     return Adjuster(float(ratio), float(la.plunger_spring_N), float(area), float(la.supply_pressure), float(leak),
-                    float(refill))
+                    float(refill), float(la.plunger_travel))
 
 
 def adjuster_link(valve, law, drive, cam_speed: float, at: str) -> tuple[float, str, Adjuster]:
@@ -495,7 +554,8 @@ def finger_mass(follower, inertia, heel, top, node, rest=0.0, offset=0.0,
         The heel radius of the cam [m].
     top : float
         The law's largest lift (lift and ramp) [m]: the table runs from :data:`FINGER_MASS_BELOW` below the shut
-        valve to 1.5 x ``top``, at most halfway from ``top`` to the pad's reach (where G -> 0).
+        valve, at most halfway to the pad's reach below it (:meth:`~valvetrain.followers.PivotedFollower.reach_below`,
+        where G -> 0), to 1.5 x ``top``, at most halfway from ``top`` to the pad's reach (where G -> 0).
     node : str
         The node's name.
     rest : float
@@ -519,7 +579,7 @@ def finger_mass(follower, inertia, heel, top, node, rest=0.0, offset=0.0,
     Norton (2009), the chapter on the dynamics of follower trains.
     """
     high = min(1.5 * top, top + 0.5 * (follower.reach(heel) - top))
-    h = np.linspace(-FINGER_MASS_BELOW, high, points)
+    h = np.linspace(-min(FINGER_MASS_BELOW, 0.5 * follower.reach_below(heel)), high, points)
     return VariableMass(node, h - offset, rest + follower.reduced_inertia(inertia, heel, h),
                         follower.reduced_inertia_slope(inertia, heel, h))
 
@@ -764,11 +824,13 @@ def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, 
         if progress is not None:
             progress(0, dyn.speeds)
         result = sweep(law, train, speeds * to_cam, revs, step_deg, progress=progress)
-    rated = sweep(law, train, [engine.rated_speed * to_cam], revs, step_deg).speed(0)
+    rated_sweep = sweep(law, train, [engine.rated_speed * to_cam], revs, step_deg)
+    rated = rated_sweep.speed(0)
+    refined = refine(law, train, result, revs, step_deg, seating_top=engine.rated_speed * to_cam, extra=rated_sweep)
     m, c, kk = params.mass, params.drive_stiffness, params.spring_rate
     eps = perturbation_parameter(m, c, kk, speeds * to_cam)
-    per = speed_records(result, speeds, eps)
-    head = result.headline()
+    per = speed_records(result, speeds, eps, refined.events)
+    head = refined.headline
     res = resonance(law, engine.rated_speed * to_cam, m, kk, c, valve.rocker_ratio)
     reson = ResonanceRecord(res.omega0 / (2 * np.pi), res.order, res.force, res.amplitude, 100 * res.distortion,
                             tuple(int(o) for o in res.orders), tuple(100 * float(d) for d in res.spectrum_distortion))
@@ -785,7 +847,15 @@ def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, 
         return float(cam_speed / to_cam)
 
     eps_rated = float(perturbation_parameter(m, c, kk, engine.rated_speed * to_cam))
-    rated_record = speed_record(rated, engine.rated_speed, eps_rated)
+    fine = refined.extra
+    rated_record = replace(speed_record(rated, engine.rated_speed, eps_rated),
+                           seating_velocity=float(fine.seating_velocity[0]), bounce=float(fine.bounce_height[0]),
+                           bounce_count=int(fine.bounce_count[0]))
+    a = refined.accuracy
+    accuracy = AccuracyRecord(crank(a.jump_speed), crank(a.jump_speed_step), crank(a.jump_speed_grid),
+                              crank(a.bounce_onset), crank(a.bounce_onset_step), crank(a.bounce_onset_grid),
+                              a.max_seating_velocity, float(refined.extra_seating_error[0]),
+                              float(refined.extra_bounce_error[0]), a.step)
     if cam is not None:
         rated_record = replace(rated_record, **rated_contact(rated, law, cam.heel_radius, cam.follower_model,
                                                              valve.parts.cam_width, valve.parts.contact_modulus))
@@ -793,10 +863,68 @@ def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, 
         dyn.model, params, (float(low), float(high)), int(dyn.speeds), crank(head["jump_speed"]),
         crank(head["bounce_onset_speed"]), head["max_seating_velocity"], crank(head["max_seating_velocity_speed"]),
         crank(head["coil_clash_speed"]) if dyn.model == "multi" else None, eps_rated,
-        float(np.sqrt((kk + c) / m) / (2 * np.pi)), tuple(mode.frequency for mode in modes), modes,
-        int(result.revolutions.max()), int(np.count_nonzero(~result.converged)), rated_record, reson, table,
-        f"tables/{name}_dynamics.csv", result, per, rated)
+        modes[0].frequency, tuple(mode.frequency for mode in modes), modes,
+        int(result.revolutions.max()), int(np.count_nonzero(~result.converged)),
+        unsettled_note(result, speeds, net, revs, train.adjuster is not None), accuracy, rated_record, reson, table,
+        f"tables/{name}_dynamics.csv", result, per, rated, refined)
     return out, dynamics_checks(out, engine, 0.0 if train.adjuster is None else train.adjuster.motion_ratio)
+
+
+SETTLE_FROM = 1e-3
+"""The amplitude [m] from which :func:`unsettled_note` counts the revolutions a vibration takes to fall to the
+repetition's tolerance (:data:`~valvetrain.dynamics.sweep.STATE_TOLERANCE`)."""
+
+
+def unsettled_note(result, speeds, network, revolutions, adjuster=False) -> Optional[str]:
+    """Why the speeds of a sweep whose motion did not repeat within ``revolutions`` did not; None where every speed
+    repeated.
+
+    Parameters
+    ----------
+    result : valvetrain.dynamics.sweep.SweepResult
+    speeds : ndarray (S,)
+        Its engine speeds [rad/s].
+    network : valvetrain.dynamics.models.Network
+        The train simulated.
+    revolutions : int
+        The most camshaft revolutions a speed ran.
+    adjuster : bool
+        The train has a hydraulic lash adjuster.
+
+    Returns
+    -------
+    str or None
+        How many speeds and their range, and the reasons: at the speeds whose follower separates or whose valve
+        bounces, a motion that need not repeat; at the others the lash adjuster's plunger (a slow state), or the
+        slowest vibration of the train between the lifts (:func:`~valvetrain.dynamics.models.slowest_decay`, the
+        clearance open, the valve on its seat): its decay exp(-sigma T) a revolution of T seconds at the highest of
+        those speeds (where it decays least) and the revolutions ln(:data:`SETTLE_FROM` / tolerance) / (sigma T) it
+        takes there from a millimetre to the repetition's tolerance.
+    """
+    bad = ~result.converged
+    if not bad.any():
+        return None
+    rpm = speeds / rpm_to_rad_s(1.0)
+    events = result.events
+    moving = bad & (events.jumped | (events.bounce_count > 0))
+    rest = bad & ~moving
+    span = f"{rpm[bad].min():.0f}" + (f" to {rpm[bad].max():.0f}" if np.ptp(rpm[bad]) > 0.0 else "")
+    parts = [f"{np.count_nonzero(bad)} of {bad.size} speeds, {span} rpm, did not repeat within {revolutions} "
+             "revolutions"]
+    if moving.any():
+        parts.append(f"at {np.count_nonzero(moving)} of them the follower separates or the valve bounces (a motion "
+                     "that need not repeat)")
+    if rest.any() and adjuster:
+        parts.append(f"at {np.count_nonzero(rest)} the lash adjuster's plunger still moves from one revolution to the "
+                     "next")
+    elif rest.any():
+        omega, sigma = slowest_decay(network, opened=("cam contact",) if network.lash > 0.0 else ())
+        decay = sigma * 2.0 * np.pi / result.cam_speeds[rest].max()
+        parts.append(f"at {np.count_nonzero(rest)} the slowest vibration of the train, {omega / (2 * np.pi):.0f} Hz, "
+                     f"decays by a factor {np.exp(-decay):.2g} a revolution at {rpm[rest].max():.0f} rpm: about "
+                     f"{np.log(SETTLE_FROM / STATE_TOLERANCE) / decay:.0f} revolutions from {SETTLE_FROM / MM:g} mm "
+                     f"to the repetition's {STATE_TOLERANCE * 1e9:g} nm")
+    return "; ".join(parts)
 
 
 CHECK_CODES = ("dynamics.seating_velocity", "dynamics.jump_speed", "dynamics.valve_opens")
@@ -804,6 +932,9 @@ CHECK_CODES = ("dynamics.seating_velocity", "dynamics.jump_speed", "dynamics.val
 
 CLOSED = "the valve does not leave its seat at the rated speed"
 """Why the seating velocity of a valve that stays on its seat cannot be had."""
+
+SEATING_NOTE = "the largest of the rated speed and the speeds swept below it: "
+"""What the seating velocity check grades, before the speed where it is largest (its note)."""
 
 
 def worst_seating(d, engine) -> tuple[float, float]:
@@ -841,8 +972,9 @@ def dynamics_checks(d, engine, adjuster_ratio=0.0) -> list[Check]:
                                                   f"{to_display(top, 'rpm'):.0f} rpm")
     opened = float(d.rated.lift.max()) > BOUNCE_TOLERANCE
     seating, where = worst_seating(d, engine)
-    at = (f"largest at {to_display(where, 'rpm'):.0f} rpm; {abs(d.at_rated_speed.seating_velocity):.3g} m/s at the "
-          "rated speed" if where < engine.rated_speed * (1 - 1e-9) else "")
+    at = "" if not np.isfinite(where) else SEATING_NOTE + (
+        f"at {to_display(where, 'rpm'):.0f} rpm; {abs(d.at_rated_speed.seating_velocity):.3g} m/s at the rated speed"
+        if where < engine.rated_speed * (1 - 1e-9) else "at the rated speed")
     return [check(CHECK_CODES[0], seating, high=SEATING_VELOCITY_MAX, unit="m/s", note=at,
                   source=CHECK_SOURCE + "; 0.3-0.5 m/s usual, graded at every speed swept up to the rated one",
                   unevaluated="" if opened else CLOSED),

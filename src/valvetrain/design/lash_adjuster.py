@@ -1,7 +1,7 @@
 """The lash-adjuster stage: the stiffness the oil column adds to the drive, and over the speed range the leak-down per
-camshaft revolution and its refill on the base circle, the pump-up of the plunger while the valve is off its seat and
-the valve it holds off its seat, from the plunger extension the dynamics carries from revolution to revolution
-(Merritt (1967))."""
+camshaft revolution and its refill on the base circle, the pump-up of the plunger while the valve is off its seat,
+accumulated revolution by revolution up to the plunger's stop, and the lift at which the valve it holds off its seat
+settles, from the plunger extension the dynamics carries from revolution to revolution (Merritt (1967))."""
 
 from dataclasses import dataclass
 from typing import Optional
@@ -11,10 +11,10 @@ import numpy as np
 from .. import lash_adjuster as hla
 from ..bibliography import cite
 from ..checks import Check, check
-from ..dynamics.sweep import lift_event, zero_crossing
-from ..units import to_display
+from ..dynamics.sweep import lift_event, sweep, sweep_size, zero_crossing
+from ..units import DEG, to_display
 from .drive import event_load_maps
-from .dynamics import adjuster_element, adjuster_load
+from .dynamics import MAX_SWEEP_WORK, adjuster_element, adjuster_load, build_train
 from .results import quantity
 
 SOURCES = cite("merritt1967")
@@ -24,6 +24,20 @@ PUMP_UP_TOLERANCE = 0.1e-6
 """Plunger extension gained over a camshaft revolution while the valve is off its seat that counts as pump-up [m, at
 the adjuster]: a tenth of the dynamics' 1 um lift accuracy (:mod:`valvetrain.dynamics.kernels`); in a train that does
 not float the plunger only sinks while the valve is open, by leakage."""
+
+PUMP_REVOLUTIONS = 400
+"""Most camshaft revolutions of the integration that follows a plunger pumping up to where it settles
+(:func:`lash_adjuster_stage`).  The plunger is the train's slow state: once the valve is held off its seat, the
+spring's force on the base circle leaks it back down, and the leak-down grows with the held lift until it balances the
+pump-up of a revolution, a geometric approach by about 0.98-0.99 a revolution (the polydyne example preloaded to 150 N:
+238 and 342 revolutions at 5419 and 5974 rpm to settle within :data:`SETTLED`); a plunger that reaches its stop
+settles within a few revolutions of it."""
+
+SETTLED = 1e-7
+"""A pumped-up motion is settled when its state at the end of a revolution differs from the start by no more than
+0.1 um at the valve (its plunger's extension times the motion ratio, and every position of the train) [m]: the held
+lift is then within about 6 um of its limit on the polydyne example's geometric approach (1e-8 moves it by 1.1 and
+5.8 um there), against the hundreds of um of a valve held open."""
 
 
 @dataclass(frozen=True)
@@ -41,11 +55,18 @@ class LashAdjusterPerSpeed:
         "oil_stiffness_at_valve_N_per_mm", "N/mm", "secant stiffness of the oil column under the largest force at that "
         "speed, reduced to the valve (null: the force does not exceed the plunger's push)")
     pump_up: tuple[Optional[float], ...] = quantity("pump_up_um", "um", "plunger extension gained over one "
-                                                    "revolution while the valve is off its seat (null: no simulated "
-                                                    "motion at that speed)")
-    held_open: tuple[Optional[float], ...] = quantity("held_open_um", "um", "smallest valve lift on the base circle: "
-                                                      "the valve held off its seat (null: no simulated motion at "
-                                                      "that speed)")
+                                                    "revolution while the valve is off its seat, in the settled "
+                                                    "motion (null: no simulated motion at that speed)")
+    pumped_up: tuple[Optional[float], ...] = quantity("pumped_up_um", "um", "the plunger's largest extension from its "
+                                                      "working position in the settled motion, no more than its "
+                                                      "travel to the stop (null: no simulated motion at that speed)")
+    held_open: tuple[Optional[float], ...] = quantity("held_open_um", "um", "smallest valve lift on the base circle in "
+                                                      "the settled motion: the lift at which the valve held off its "
+                                                      "seat settles (null: no simulated motion at that speed)")
+    revolutions: tuple[Optional[int], ...] = quantity("revolutions", label="camshaft revolutions from rest to the "
+                                                      "settled motion (null: no simulated motion at that speed)")
+    settled: tuple[Optional[bool], ...] = quantity("settled", label="the motion settled within its revolutions "
+                                                   "(null: no simulated motion at that speed)")
 
 
 @dataclass(frozen=True)
@@ -55,6 +76,10 @@ class LashAdjusterResult:
     location: str = quantity("location", label="pivot of an end-pivot finger, or in the tappet")
     motion_ratio: float = quantity("motion_ratio", label="valve motion / adjuster motion (pivot i - 1, of a "
                                    "finger its linkage along the adjuster's axis; tappet i)")
+    eccentricity: float = quantity("plunger_eccentricity", label="the plunger's eccentricity e / c in its bore, "
+                                   "[lash_adjuster] plunger_eccentricity (0: concentric)")
+    leak_factor: float = quantity("leak_factor", label="its leakage over the concentric plunger's, 1 + 1.5 (e / c)^2 "
+                                  "(Merritt (1967); 2.5 fully eccentric)")
     reference_force: float = quantity("reference_force_N", "N", "largest quasi-static force on the adjuster at the "
                                       "rated speed")
     chamber_pressure: float = quantity("chamber_pressure_MPa", "MPa", "chamber pressure under it")
@@ -67,10 +92,14 @@ class LashAdjusterResult:
     rated_leak_down: float = quantity("rated_leak_down_um", "um", "leak-down per revolution at the rated speed")
     rated_valve_lash: float = quantity("rated_valve_lash_um", "um", "lash at the valve at closing, rated speed")
     max_refill_share: float = quantity("max_refill_share", label="largest refill time / base-circle time")
+    travel: float = quantity("plunger_travel_mm", "mm", "the plunger's travel from its working position to its stop")
     max_pump_up: Optional[float] = quantity("max_pump_up_um", "um", "largest pump-up per revolution up to the "
                                             "over-speed", omit_none=True)
-    max_held_open: Optional[float] = quantity("max_held_open_um", "um", "largest valve lift held on the base circle, "
+    max_pumped_up: Optional[float] = quantity("max_pumped_up_um", "um", "largest extension the plunger pumps up to, "
                                               "up to the over-speed", omit_none=True)
+    max_held_open: Optional[float] = quantity("max_held_open_um", "um", "largest lift at which a valve held on the "
+                                              "base circle settles, up to the over-speed", omit_none=True)
+    held_open_speed: Optional[float] = quantity("held_open_speed_rpm", "rpm", "where", omit_none=True)
     push_at_valve: float = quantity("push_at_valve_N", "N", "the adjuster's own push (F_s + p_s A) / i_a at the valve: "
                                     "the follower's force at which the check valve opens")
     float_speed: Optional[float] = quantity("float_speed_rpm", "rpm", "lowest engine speed where the follower's "
@@ -194,10 +223,15 @@ def lash_adjuster_stage(la, valve, engine, cam, drive, dynamics=None,
     (:func:`valvetrain.design.dynamics.adjuster_link`) and its plunger as a state of the integration
     (:func:`valvetrain.design.dynamics.adjuster_element`): it leaks down through the annular clearance under the
     force it carries (:func:`valvetrain.lash_adjuster.annular_leakage`) and refills through the check valve where
-    that force falls to its own push.  At the simulated speeds the leak-down, the pump-up and the valve held off its
-    seat are read from that state (:func:`plunger_motion`); at a speed of the strength range the dynamics does not
-    sweep, the leak-down is the laminar leakage integrated over the quasi-static force.  The time to refill the
-    leak-down through the check valve is compared with the time on the base circle.
+    that force falls to its own push, no further than its stop.  At the simulated speeds the leak-down, the pump-up and
+    the valve held off its seat are read from that state (:func:`plunger_motion`).  Where the sweep's motion did not
+    repeat because the plunger still pumps up (it gained more than :data:`PUMP_UP_TOLERANCE` while the valve was off
+    its seat), the same train is integrated again at those speeds for up to :data:`PUMP_REVOLUTIONS` revolutions
+    until its motion settles within :data:`SETTLED` a revolution: the pump-up accumulates revolution by revolution,
+    until the leak-down of the valve it holds off its seat balances it or the plunger reaches its stop, and the
+    figures are those of the settled revolution.  At a speed of the strength range the dynamics does not sweep, the
+    leak-down is the laminar leakage integrated over the quasi-static force.  The time to refill the leak-down through
+    the check valve is compared with the time on the base circle.
     """
     at = f"valves.{name}"
     law, k = cam.law, valve.rocker_ratio
@@ -210,11 +244,12 @@ def lash_adjuster_stage(la, valve, engine, cam, drive, dynamics=None,
     to_cam = cam.cam_speed / engine.rated_speed
     base = 2.0 * np.pi - (law.valve_closes - law.valve_opens)
     rows = []
-    for speed, r in _motions(dynamics, low, high):
+    for speed, r in _settled(_motions(dynamics, low, high), valve, law, drive, cam.cam_speed, at):
         leak, pump, held = plunger_motion(r.adjuster_extension, r.lift, lift_event(r.kinematic_lift, r.lift),
                                           law.lift(r.theta) <= 0.0)
         force = float(r.contact_force.max()) / k * ratio
-        rows.append((speed, "dynamic", leak, force, pump, held))
+        rows.append((speed, "dynamic", leak, force, pump, float(r.adjuster_extension.max()), held, int(r.revolutions),
+                     bool(r.converged)))
     for m in maps:
         if m.kind == "dynamic":
             continue
@@ -224,23 +259,26 @@ def lash_adjuster_stage(la, valve, engine, cam, drive, dynamics=None,
             pressure_drop = np.clip((force - la.plunger_spring_N) / area - la.supply_pressure, 0.0, None)
             sinking = element.leak * pressure_drop / area
             rows.append((float(speed), m.kind, float(np.sum(sinking * step)) / (speed * to_cam), float(force.max()),
-                         None, None))
+                         None, None, None, None, None))
     rows = [(speed, kind, leak, leak * ratio, leak / element.refill / (base / (speed * to_cam)),
-             _stiffness_at_valve(la, force, ratio, area), pump, held)
-            for speed, kind, leak, force, pump, held in sorted(rows, key=lambda row: row[0])]
+             _stiffness_at_valve(la, force, ratio, area), pump, pumped, held, revs, settled)
+            for speed, kind, leak, force, pump, pumped, held, revs, settled in sorted(rows, key=lambda row: row[0])]
     per = LashAdjusterPerSpeed(*(tuple(col) for col in zip(*rows, strict=True)))
     rated = int(np.argmin(np.abs(np.asarray(per.speed) - engine.rated_speed)))
     pumps = [p for p in per.pump_up if p is not None]
-    helds = [p for p in per.held_open if p is not None]
+    helds = [(h, i) for i, h in enumerate(per.held_open) if h is not None]
+    worst = max(helds)[1] if helds else None
     push = (la.plunger_spring_N + la.supply_pressure * area) / ratio
     floats = np.nan
     if dynamics is not None:
         floats = float_speed(dynamics.per_speed.speed, np.asarray(dynamics.per_speed.min_contact_force) / k, push)
     result = LashAdjusterResult(
-        la.location, ratio, ref, pressure, sink, stiffness, stiffness / ratio**2,
+        la.location, ratio, la.plunger_eccentricity, float(hla.eccentricity_factor(la.plunger_eccentricity)), ref,
+        pressure, sink, stiffness, stiffness / ratio**2,
         None if dynamics is None else dynamics.parameters.drive_stiffness, per.leak_down[rated],
-        per.valve_lash[rated], max(per.refill_share), max(pumps) if pumps else None, max(helds) if helds else None,
-        push, floats if np.isfinite(floats) else None, per)
+        per.valve_lash[rated], max(per.refill_share), la.plunger_travel, max(pumps) if pumps else None,
+        max((p for p in per.pumped_up if p is not None), default=None), None if worst is None else per.held_open[worst],
+        None if worst is None else per.speed[worst], push, floats if np.isfinite(floats) else None, per)
     where = f"{at}.lash_adjuster"
     found = [check("lash_adjuster.refill", result.max_refill_share,
                    high=1.0, source=f"{cite('merritt1967')}: annular leakage and the check valve's orifice flow; "
@@ -259,9 +297,53 @@ def lash_adjuster_stage(la, valve, engine, cam, drive, dynamics=None,
                            f"below [engine] over_speed_ratio x the rated speed; {where}"))
         found.append(check("lash_adjuster.held_open",
                            result.max_held_open, high=0.0, unit="um", severity="failure",
+                           note=held_note(per, worst, la.plunger_travel),
                            source=f"{cite('merritt1967')}: the valve's lift on the base circle simulated with the "
-                                  f"plunger's extension; {where}"))
+                                  f"plunger's extension, revolution by revolution to where it settles, its travel "
+                                  f"to the stop [lash_adjuster] plunger_travel_mm ({cite('enginebuilder2011')}); "
+                                  f"{where}"))
     return result, found
+
+
+def held_note(per, worst, travel) -> str:
+    """The note of the check of the valve held open: where the largest held lift settles, the plunger's extension
+    there and whether it reached its stop, after how many revolutions (or that it had not settled); empty where the
+    valve seats at every simulated speed."""
+    if per.held_open[worst] <= 0.0:
+        return ""
+    extension = per.pumped_up[worst]
+    stop = ", at its stop" if extension >= travel * (1.0 - 1e-9) else ""
+    settled = (f"settled after {per.revolutions[worst]} revolutions" if per.settled[worst] else
+               f"not settled within {per.revolutions[worst]} revolutions")
+    return (f"the valve settles {to_display(per.held_open[worst], 'um'):.4g} um off its seat at "
+            f"{to_display(per.speed[worst], 'rpm'):.0f} rpm, the plunger pumped up "
+            f"{to_display(extension, 'um'):.4g} um{stop} ({settled})")
+
+
+def _settled(motions, valve, law, drive, cam_speed, at) -> list:
+    """The simulated motions ``motions`` ((speed, SpeedResult) pairs), each replaced by its settled motion where the
+    sweep left its plunger pumping up: it did not repeat and its plunger gained more than :data:`PUMP_UP_TOLERANCE`
+    while the valve was off its seat.  Those speeds are integrated again, from rest, for up to
+    :data:`PUMP_REVOLUTIONS` revolutions until they repeat within :data:`SETTLED` (the train of
+    :func:`valvetrain.design.dynamics.build_train`, ``cam_speed`` the rated camshaft speed [rad/s]); fewer where
+    that would exceed the sweep's limit of work :data:`~valvetrain.design.dynamics.MAX_SWEEP_WORK` (unless ``[dynamics]
+    allow_large_sweep``), their motions then flagged unsettled."""
+    pumping = [j for j, (_, r) in enumerate(motions) if not r.converged and plunger_motion(
+        r.adjuster_extension, r.lift, lift_event(r.kinematic_lift, r.lift), law.lift(r.theta) <= 0.0)[1]
+        > PUMP_UP_TOLERANCE]
+    if not pumping:
+        return motions
+    train = build_train(valve.dynamics, valve, law, drive, at, cam_speed)[0]
+    speeds, step = [motions[j][1].cam_speed for j in pumping], valve.dynamics.step / DEG
+    revolutions = PUMP_REVOLUTIONS
+    if not valve.dynamics.allow_large_sweep:
+        work = sweep_size(train.network(), speeds, 1, step)[0]
+        revolutions = max(min(revolutions, int(MAX_SWEEP_WORK // work)), 1)
+    again = sweep(law, train, speeds, revolutions, step, tolerance=SETTLED)
+    out = list(motions)
+    for i, j in enumerate(pumping):
+        out[j] = (motions[j][0], again.speed(i))
+    return out
 
 
 def _motions(dynamics, low, high) -> list:

@@ -23,7 +23,7 @@ from ..laws import LiftLaw
 from ..laws.base import Extremes
 from ..laws.records import LawRecord
 from ..layouts import LAYOUTS, layout
-from ..numerics import extremum
+from ..numerics import extremum, first_largest
 from ..specification import SpecError
 from ..specification.messages import Problem
 from ..springs import NoSpringFits
@@ -295,8 +295,48 @@ class FingerKinematics:
     tip_contact: tuple[float, float] = quantity("tip_contact_mm", "mm",
                                                 "where the pad touches the valve tip across its axis: shut, full lift")
     scrub: float = quantity("tip_scrub_mm", "mm", "travel of the contact point across the valve tip over the lift")
+    tip_reach: float = quantity("tip_contact_max_mm", "mm",
+                                "largest distance of the contact point from the valve axis over the lift")
     rest_pressure_angle: float = quantity("pressure_angle_at_rest_deg", "deg",
                                           "pressure angle on the heel circle (the pivot's offset)")
+
+
+STEM_TO_THROAT = 0.2
+"""The valve stem's diameter over the throat's where ``parts.stem_diameter_mm`` is not given: a stated default, not a
+source's (5.5-6 mm stems of 28-30 mm car throats, 10-11 mm of 45-50 mm truck throats; the smaller share, so that the
+tip is not overstated)."""
+
+TIP_EDGE_MARGIN = 0.5e-3
+"""How far inside the valve tip's edge the pad's contact must stay [m]: the tip's chamfer and the contact's own
+half-width (an engineering limit of this package; no published limit of the contact's place was found)."""
+
+
+def tip_contact_check(finger, valve) -> Check:
+    """The finger's pad on the valve tip (a failure): the largest distance of its contact point from the valve axis
+    over the lift (:class:`FingerKinematics` ``tip_reach``, which bounds its travel, the scrub) against the tip's
+    radius, half the stem's diameter, less :data:`TIP_EDGE_MARGIN`.
+
+    Parameters
+    ----------
+    finger : FingerKinematics
+    valve : SI view of the valve (its ``parts.stem_diameter`` [m], else :data:`STEM_TO_THROAT` x the throat).
+
+    Notes
+    -----
+    The contact point is :math:`L_b(\\cos\\chi - \\cos\\chi_0) + x_0` across the valve axis
+    (:meth:`~valvetrain.followers.PivotedFollower.tip_contact`; Wang (2007), the contact travel on the valve tip);
+    a pad that pushes beyond the tip's flat face presses on its chamfer or beside the valve: no working finger.  The
+    limit is an engineering one, stated: the tip's radius less 0.5 mm.
+    """
+    given = valve.parts.stem_diameter
+    stem = given if given is not None else STEM_TO_THROAT * valve.throat_diameter
+    where = "parts.stem_diameter_mm" if given is not None else f"{STEM_TO_THROAT:g} x throat_diameter_mm, a default"
+    return check("finger.tip_contact", finger.tip_reach, high=max(stem / 2.0 - TIP_EDGE_MARGIN, 0.0), unit="mm",
+                 severity="failure", source="the valve tip's radius (half the stem) less 0.5 mm: an engineering limit; "
+                 "the contact's travel: Wang (2007)",
+                 note=f"stem {stem / MM:.4g} mm ({where}); the contact travels {finger.scrub / MM:.3g} mm across the "
+                 f"tip (scrub), {finger.tip_contact[0] / MM:.3g} mm off the axis shut, "
+                 f"{finger.tip_contact[1] / MM:.3g} mm at full lift")
 
 
 def finger_kinematics(follower, heel, lift, samples=2001) -> FingerKinematics:
@@ -309,7 +349,7 @@ def finger_kinematics(follower, heel, lift, samples=2001) -> FingerKinematics:
     zero = np.zeros(1)
     return FingerKinematics(follower.rest_ratio(heel), float(ratio.min()), float(ratio.max()), float(ratio[-1]),
                             abs(top - psi0), float(np.hypot(*follower.centre(psi)).max() - heel - follower.radius),
-                            (float(tip[0]), float(tip[-1])), float(tip.max() - tip.min()),
+                            (float(tip[0]), float(tip[-1])), float(tip.max() - tip.min()), float(np.abs(tip).max()),
                             float(follower.pressure_angle(heel, zero, zero)[0]))
 
 
@@ -411,6 +451,12 @@ def law_stage(valve, engine, law=None) -> CamResult:
             key = "cam.table_file" if cam.table_file is not None else "cam.table_lifts_mm"
             raise ValueError(Problem(key, f"the measured valve lift = {lift / MM:.4g} mm: {allowed}"))
         raise ValueError(Problem("max_lift_mm", allowed, f"{lift / MM:.4g} mm"))
+    follower = follower_of(cam)
+    if follower.law_at_valve:   # a finger on a measured table (or a caller's law): its lift known only now
+        problem = follower.geometry_problem(cam.base_radius - law.ramp_height, law.lift_max + law.ramp_height)
+        if problem:
+            key, value, message, joiner = problem
+            raise ValueError(Problem(f"cam.{key}", message, value, joiner))
     omega = engine.rated_speed / 2.0
     ext = law.extremes(omega)
     seat = valve.rocker_ratio * omega * np.abs(law.derivatives(np.array([law.valve_opens, law.valve_closes]))[1])
@@ -420,7 +466,7 @@ def law_stage(valve, engine, law=None) -> CamResult:
                      float(seat[0]), float(seat[1]), event, nose, nose + 2.0 * law.valve_opens,
                      nose + 2.0 * law.valve_closes, omega, cam.follower, cam.base_radius,
                      cam.base_radius - law.ramp_height, cam.roller_radius or 0.0, valve.rocker_ratio,
-                     step_records(law, omega), follower_of(cam))
+                     step_records(law, omega), follower)
 
 
 def flow_stage(cam, valve, engine) -> FlowResult:
@@ -458,6 +504,13 @@ def _table_grid(law, step):
     return np.unique(np.concatenate([[law.start], k, [law.end]]))
 
 
+def _first_best(candidates, sign) -> tuple[float, float]:
+    """Of candidate ``(angle, value)`` pairs the largest ``sign * value``; of values equal to round-off the one at
+    the smallest angle (:func:`~valvetrain.numerics.first_largest`)."""
+    ordered = sorted(candidates, key=lambda p: p[0])
+    return ordered[first_largest([sign * p[1] for p in ordered])]
+
+
 def profile_stage(cam, valve, output) -> ProfileResult:
     """The lift table, the contour over a revolution, the profile's curvature extremes, contact and undercut.
 
@@ -493,17 +546,17 @@ def profile_stage(cam, valve, output) -> ProfileResult:
     # the base circle (radius = heel radius for both followers) closes the profile; the smallest radius is refined
     # on the contour around the least sample of each piece and around the table's least, so that a dip between the
     # table's points (an undercut) is found
-    i = int(np.argmin(follower.convex_radius(rho)))
+    # (of radii equal to round-off, a symmetric cam's two flanks, the one at the smallest angle)
+    i = first_largest(-follower.convex_radius(rho))
     near = theta[[max(i - 1, 0), min(i + 1, theta.size - 1)]]
-    x_min, rho_min = min(extremum(convex, bp, "min"), extremum(convex, near, "min"), (np.pi, heel),
-                         key=lambda p: p[1])
+    x_min, rho_min = _first_best([extremum(convex, bp, "min"), extremum(convex, near, "min"), (np.pi, heel)], -1.0)
 
     def convex_or_low(t):
         """The convex radius, -inf where the profile is concave (the largest radius is that of a convex stretch)."""
         r = convex(t)
         return np.where(np.isinf(r), -np.inf, r)
 
-    x_max, rho_max = max(extremum(convex_or_low, bp, "max"), (np.pi, heel), key=lambda p: p[1])
+    x_max, rho_max = _first_best([extremum(convex_or_low, bp, "max"), (np.pi, heel)], 1.0)
     straight = bool(np.any(np.isposinf(rho)))   # straight flanks (tangent cam): the largest radius is infinite
     if follower.rolling:
         beta_max = extremum(lambda t: np.abs(law.profile(t, heel, follower)[2]), bp, "max")[1]
@@ -631,6 +684,8 @@ def valve_checks(cam, flow_result, profile, valve, engine, timing) -> list[Check
     if not profile.undercut:
         out.append(check("profile.rho_min", profile.rho_min, low=RHO_MIN, source="Shang Hanji (1988), section 2.1",
                          unit="mm"))
+    if profile.finger is not None:
+        out.append(tip_contact_check(profile.finger, valve))
     return for_engine_class(out, engine)
 
 

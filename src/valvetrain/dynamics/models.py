@@ -6,17 +6,18 @@ c / k^2 and a rocker of inertia J about its shaft as J / l_v^2.  Positive is the
 direction.  SI units: kg, N/m, N s/m, N, m.
 
 A train becomes a :class:`Network` of masses and elements that the compiled integrator of
-:mod:`.kernels` advances: bilateral spring-dampers with a preload (valve-spring coils) and
-unilateral contacts with a gap (cam contact with the lash, drive joints, valve seat).
+:mod:`.kernels` advances: bilateral spring-dampers with a preload (valve-spring coils, the held joints of a
+multi-mass drive) and unilateral contacts with a gap (cam contact with the lash, valve seat).  A multi-mass train
+starts at rest in its static equilibrium on the base circle (:func:`static_equilibrium`).
 """
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Optional
 
 import numpy as np
 
 from ..masses import spring_mass
-from ..springs import spring_rate
+from ..springs import length_at_pitch, spring_rate
 from ..strength import STEEL_MODULUS, camshaft_deflection
 from .kernels import CAM, GROUND
 
@@ -36,8 +37,9 @@ of exp(-pi zeta / sqrt(1 - zeta^2)) = 0.25 for a free impact).  With it the swee
 shows its pattern: a few um of bounce at 1500 cam rpm, none at 3000, about 2 mm once the valve floats."""
 
 COIL_DAMPING_RATIO = 0.02
-"""Damping ratio of the spring coils (material and inter-coil friction; an assumption in the usual
-0.01-0.03 range of spring-surge studies)."""
+"""Damping ratio of a spring's first surge mode (material and inter-coil friction; an assumption in the usual
+0.01-0.03 range of spring-surge studies): the coil segments' damping is proportional to their stiffness, so that the
+first mode has this ratio whatever the number of coil masses (:meth:`CoilSpring.segment_damping`)."""
 
 
 @dataclass(frozen=True)
@@ -60,6 +62,9 @@ class Adjuster:
         (:func:`valvetrain.lash_adjuster.annular_leakage` per pascal).
     refill : float
         Largest extension velocity through the open check valve [m/s].
+    stop : float
+        The plunger's travel from its working position (z = 0, the valve seated on the base circle) to its stop [m, at
+        the adjuster]: it extends no further (inf: no stop).
     """
 
     motion_ratio: float
@@ -68,13 +73,15 @@ class Adjuster:
     supply: float
     leak: float
     refill: float
+    stop: float = np.inf
 
     def array(self) -> np.ndarray:
-        """The kernel's parameter array (6,)."""
-        return np.array([self.motion_ratio, self.plunger_spring, self.area, self.supply, self.leak, self.refill])
+        """The kernel's parameter array (7,)."""
+        return np.array([self.motion_ratio, self.plunger_spring, self.area, self.supply, self.leak, self.refill,
+                         self.stop])
 
 
-NO_ADJUSTER = np.zeros(6)
+NO_ADJUSTER = np.zeros(7)
 """The kernel's parameter array of a train without a lash adjuster (motion ratio 0)."""
 
 
@@ -151,7 +158,7 @@ class Network:
         Quasi-static share of the valve motion of each coil node (0: not a coil node).
     rocker_ratio : float
         k, to turn the valve-side cam force into the force at the cam.
-    adjuster : ndarray (6,)
+    adjuster : ndarray (7,)
         :meth:`Adjuster.array` of a hydraulic lash adjuster in series with the cam contact (:data:`NO_ADJUSTER`).
     variable_node : int
         The node whose mass changes with its position (-1: none); ``mass`` holds its reference value (the modes, the
@@ -246,14 +253,18 @@ class CoilSpring:
     preload : float
         Installed force F0 [N].
     mass : float
-        Mass of the active coils m_s [kg]; the dead end coils move with the retainer or rest on the head.
+        Mass of the active coils m_s [kg], the coils whose deflection gives the rate.
     closing_gap : float
         Sum of the gaps between the active coils at the installed length [m]: the spring goes solid
         when compressed by this much (0: not monitored).
     coils : int
-        Coil masses N of the model (0: a massless spring with m_s / 3 on the valve, as in Valve-train practical works (n.d.) eq. 5.2).
+        Coil masses N of the model (0: a massless spring with a third of the whole spring's mass, m_s + 2 m_e, on the
+        valve, as in Valve-train practical works (n.d.) eq. 5.2).
     damping_ratio : float
-        Of each coil segment on its two neighbouring half masses.
+        zeta_1 of the spring's first surge mode (:meth:`segment_damping`).
+    dead_mass : float
+        m_e, the mass of the inactive (closed) end coils at each end [kg]: those at the retainer move with the valve,
+        those at the head rest on it (:func:`coil_spring`).
     """
 
     rate: float
@@ -262,11 +273,102 @@ class CoilSpring:
     closing_gap: float = 0.0
     coils: int = 8
     damping_ratio: float = COIL_DAMPING_RATIO
+    dead_mass: float = 0.0
+
+    @property
+    def whole_mass(self) -> float:
+        """The spring's mass, its active and both ends' inactive coils, m_s + 2 m_e [kg]."""
+        return self.mass + 2.0 * self.dead_mass
+
+    def surge_frequency(self, mode=1) -> float:
+        r"""Natural frequency of the j-th surge mode of the N coil masses between fixed ends [rad/s] (0 without
+        coil masses).
+
+        Notes
+        -----
+        N masses m_s / (N + 1) on N + 1 segments of rate (N + 1) K between fixed ends, a uniform chain whose modes
+        are :math:`\omega_j = 2 (N + 1) \sqrt{K / m_s} \sin(j \pi / (2 (N + 1)))`, j = 1...N.
+
+        References
+        ----------
+        Den Hartog (1956), the chapter on many degrees of freedom (the uniform chain of masses and springs).
+
+        Examples
+        --------
+        One coil mass (N = 1): m_s / 2 between two segments of 2 K, sqrt(4 K / (m_s / 2)).
+
+        >>> bool(np.isclose(CoilSpring(50e3, 300.0, 0.04, coils=1).surge_frequency(), np.sqrt(4 * 50e3 / 0.02)))
+        True
+        """
+        n = self.coils
+        if n == 0:
+            return 0.0
+        return float(2.0 * (n + 1) * np.sqrt(self.rate / self.mass) * np.sin(mode * np.pi / (2.0 * (n + 1))))
+
+    def segment_damping(self) -> float:
+        r"""Damping of each coil segment [N s/m]: proportional to its stiffness, :math:`C = 2 \zeta_1 (N + 1) K /
+        \omega_1`, so that the first surge mode (:meth:`surge_frequency`) has the damping ratio
+        :math:`\zeta_1` and the j-th :math:`\zeta_1 \omega_j / \omega_1` (a damping matrix proportional to the stiffness
+        matrix has the modal ratios :math:`c \omega_j / 2`), whatever the number of coil masses.
+        """
+        return 2.0 * self.damping_ratio * (self.coils + 1) * self.rate / self.surge_frequency()
 
 
-def coil_spring_from_geometry(wire_diameter, mean_diameter, active_coils, preload, installed_pitch, coils=8,
-                              shear_modulus=8.0e10, density=7850.0, damping_ratio=COIL_DAMPING_RATIO) -> CoilSpring:
-    """A :class:`CoilSpring` from the wire and coil geometry.
+def coil_spring(rate, preload, mass, active_coils, wire_diameter, installed_length, coils=8, end_coils=2.0,
+                damping_ratio=COIL_DAMPING_RATIO) -> CoilSpring:
+    r"""A :class:`CoilSpring` of a designed spring: its active coils as masses, its end coils with the retainer and the
+    head, and its closing gap from the spring's own lengths.
+
+    Parameters
+    ----------
+    rate, preload : float
+        K [N/m] over the active coils and F0 [N].
+    mass : float
+        The whole spring's mass, its i_p + i_0 coils [kg] (Valve-train dynamics article (n.d.), step 3).
+    active_coils, end_coils : float
+        i_p and i_0, the inactive end coils of both ends together (2: one closed coil at each end).
+    wire_diameter : float
+        d [m].
+    installed_length : float
+        l_0 at the closed valve [m] (Valve-train practical works (n.d.), eqs. 6.4-6.5).
+    coils, damping_ratio :
+        As in :class:`CoilSpring`.
+
+    Notes
+    -----
+    One geometry for the rate, the masses and the coil closing (the convention of this function):
+
+    * the rate :math:`K = G d^4 / (8 D^3 i_p)` counts the active coils alone, so only they deflect and only they
+      surge: the coil masses share :math:`m_s = m\,i_p / (i_p + i_0)`, and the :math:`i_0 / 2` closed end coils at
+      each end, :math:`m_e = m\,i_0 / (2 (i_p + i_0))`, move with the retainer (on the valve) or rest on the head;
+    * the spring is solid at the length (6.4) of its coils at the pitch t = d
+      (:func:`~valvetrain.springs.length_at_pitch`), and its closed end coils are at that pitch already, so the active
+      coils close when the spring is compressed from the installed length by :math:`l_0 - l_s = (i_p + 2)(t_0 - d)`:
+      the gap the design's lengths leave, all of it between the active coils (the manual's t_0 of (6.6) spreads it
+      over i_p + 2 coils).
+
+    The first surge mode of the coil masses is then that of the active coils, :math:`\omega_{c1} = \pi \sqrt{K /
+    m_s}` (Valve-train practical works (n.d.), eq. 6.13), in the limit of many coil masses.
+
+    Examples
+    --------
+    The pushrod example's spring: d = 5.1 mm, i_p = 3, l_0 = 43.66 mm, 0.0814 kg: 13.06 mm of closing gap, 3/5 of
+    the mass in the active coils and a fifth at each end.
+
+    >>> s = coil_spring(66.5e3, 311.4, 0.0814, 3.0, 5.1e-3, 43.66e-3)
+    >>> round(s.closing_gap * 1e3, 9), round(s.mass, 9), round(s.dead_mass, 9)
+    (13.06, 0.04884, 0.01628)
+    """
+    total = active_coils + end_coils
+    closing = installed_length - length_at_pitch(wire_diameter, wire_diameter, active_coils, end_coils)
+    return CoilSpring(float(rate), float(preload), float(mass * active_coils / total), float(closing), int(coils),
+                      float(damping_ratio), float(mass * end_coils / (2.0 * total)))
+
+
+def coil_spring_from_geometry(wire_diameter, mean_diameter, active_coils, preload, installed_length, coils=8,
+                              shear_modulus=8.0e10, density=7850.0, damping_ratio=COIL_DAMPING_RATIO,
+                              end_coils=2.0) -> CoilSpring:
+    r"""A :class:`CoilSpring` from the wire and coil geometry (:func:`coil_spring`).
 
     Parameters
     ----------
@@ -276,21 +378,23 @@ def coil_spring_from_geometry(wire_diameter, mean_diameter, active_coils, preloa
         Working coils i_p.
     preload : float
         Installed force F0 [N].
-    installed_pitch : float
-        Coil pitch t_0 at the installed length [m] (Valve-train practical works (n.d.), eq. 6.6).
+    installed_length : float
+        l_0 at the closed valve [m] (Valve-train practical works (n.d.), eqs. 6.4-6.5).
     coils : int
         Coil masses of the model.
     shear_modulus, density : float
         G [Pa] and rho [kg/m^3] (Valve-train practical works (n.d.), work 6 defaults).
+    end_coils : float
+        i_0, the inactive end coils of both ends together.
 
     Notes
     -----
-    Rate :math:`K = G d^4 / (8 D^3 i_p)` (Valve-train practical works (n.d.), eq. 6.2); mass of the active coils
-    :math:`m_s = \\rho \\pi d^2/4\\,\\pi D\\,i_p` (Valve-train dynamics article (n.d.), step 3); closing gap :math:`i_p (t_0 - d)`.
+    Rate :math:`K = G d^4 / (8 D^3 i_p)` (Valve-train practical works (n.d.), eq. 6.2); mass of the whole spring
+    :math:`\rho \pi d^2/4\,\pi D\,(i_p + i_0)` (Valve-train dynamics article (n.d.), step 3).
     """
-    return CoilSpring(float(spring_rate(shear_modulus, wire_diameter, mean_diameter, active_coils)), float(preload),
-                      float(spring_mass(mean_diameter, wire_diameter, active_coils, density)),
-                      float(active_coils * (installed_pitch - wire_diameter)), int(coils), float(damping_ratio))
+    return coil_spring(spring_rate(shear_modulus, wire_diameter, mean_diameter, active_coils), preload,
+                       spring_mass(mean_diameter, wire_diameter, active_coils + end_coils, density), active_coils,
+                       wire_diameter, installed_length, coils, end_coils, damping_ratio)
 
 
 class _Builder:
@@ -323,38 +427,115 @@ class _Builder:
         self.element(name, a, b, stiffness, 2.0 * ratio * np.sqrt(stiffness * self.pair_mass(a, b)), **kw)
 
     def spring(self, tag, spring, valve):
-        """The coils of one spring between the valve (retainer) and the head: N masses, N + 1 segments."""
+        """The coils of one spring between the valve (retainer) and the head: N masses, N + 1 segments; the
+        retainer's end coils on the valve."""
         n = spring.coils
         if n == 0:
-            self.mass[valve] += spring.mass / 3.0
+            self.mass[valve] += spring.whole_mass / 3.0
             self.element(f"{tag} spring at valve", valve, GROUND, spring.rate, 0.0, preload=spring.preload,
                          clash=spring.closing_gap)
             return
         seg_k = (n + 1) * spring.rate
         seg_gap = spring.closing_gap / (n + 1)
-        self.mass[valve] += spring.mass / (2.0 * (n + 1))
+        self.mass[valve] += spring.dead_mass + spring.mass / (2.0 * (n + 1))
         nodes = [self.node(f"{tag} coil {i + 1}", spring.mass / (n + 1), (n - i) / (n + 1)) for i in range(n)]
         ends = [valve] + nodes + [GROUND]
         for i in range(n + 1):
             name = f"{tag} spring at valve" if i == 0 else f"{tag} coil segment {i + 1}"
-            self.damped(name, ends[i], ends[i + 1], seg_k, spring.damping_ratio, preload=spring.preload,
-                        clash=seg_gap)
+            self.element(name, ends[i], ends[i + 1], seg_k, spring.segment_damping(), preload=spring.preload,
+                         clash=seg_gap)
 
-    def seat(self, valve, stiffness, ratio, springs_preload):
+    def seat(self, valve, stiffness, ratio):
         self.damped("seat", GROUND, valve, stiffness, ratio, unilateral=True)
-        return -springs_preload / stiffness
 
     def build(self, x_valve, valve, rocker_ratio, adjuster=None, variable=None):
+        """The :class:`Network`, at rest with the valve at ``x_valve`` [m] and the drive and the coils at their share
+        of it, or (``x_valve`` None) in its :func:`static_equilibrium`."""
         rows = list(zip(*self.rows, strict=True))
         weight = np.array(self.weight)
-        x_init = x_valve * np.where(weight > 0.0, weight, 1.0)   # drive parts resting on the seated valve
-        return Network(tuple(self.names), np.array(self.mass), x_init, tuple(self.elements),
+        x_init = (np.zeros(weight.size) if x_valve is None else
+                  x_valve * np.where(weight > 0.0, weight, 1.0))   # drive parts resting on the seated valve
+        net = Network(tuple(self.names), np.array(self.mass), x_init, tuple(self.elements),
                        np.array(rows[0], dtype=np.int64), np.array(rows[1], dtype=np.int64), np.array(rows[2]),
                        np.array(rows[3]), np.array(rows[4]), np.array(rows[5]), np.array(rows[6], dtype=np.bool_),
                        np.array(rows[7]), np.array(self.weight), float(rocker_ratio),
                        NO_ADJUSTER.copy() if adjuster is None else adjuster.array(),
                        -1 if variable is None else self.names.index(variable.node),
                        NO_VARIABLE_MASS.copy() if variable is None else variable.array())
+        return net if x_valve is not None else replace(net, x_init=static_equilibrium(net))
+
+
+def static_equilibrium(network, cam=0.0) -> np.ndarray:
+    r"""Node positions of a network at rest [m]: every node's forces in balance with the cam at ``cam`` [m at the
+    valve; 0: the base circle], each contact closed exactly where it is compressed.
+
+    Parameters
+    ----------
+    network : Network
+    cam : float
+        The cam's displacement at the valve [m].
+
+    Returns
+    -------
+    ndarray (n,)
+
+    Raises
+    ------
+    ValueError
+        A node that nothing holds with its open contacts (no unique rest position).
+
+    Notes
+    -----
+    With the set A of the closed elements (the bilateral ones and the contacts closed) every element's force
+    :math:`f_e = F_{0,e} + k_e (x_a - x_b - g_e)` is linear in the positions, and the balance of the nodes is
+
+    .. math:: \mathbf K_A \mathbf x = \mathbf r_A,\quad r_i = \sum_{e:\,b_e = i} c_e - \sum_{e:\,a_e = i} c_e,\quad
+              c_e = F_{0,e} - k_e g_e + k_e (u_a - u_b)
+
+    with :math:`\mathbf K_A` the stiffness matrix of A (:meth:`Network.matrix`) and u the cam's or the ground's
+    displacement at a fixed end (0 at a node).  A is found by iteration from the contacts without a gap: solve, then
+    close every open contact the solution compresses and open every closed one in tension, until A repeats (the
+    active-set method of the linear complementarity problem of contacts; a train's contacts settle in two or three
+    passes).
+
+    References
+    ----------
+    Cottle, Pang and Stone (1992), the chapter on pivoting methods (the active set of a linear complementarity
+    problem).
+
+    Examples
+    --------
+    The one-mass train on its seat: the spring's preload on the seat and the spring in parallel,
+    x = -F_0 / (c_s + K).
+
+    >>> net = one_mass_train(0.25, 15e6, 67.5e3, 400.0, lash=3e-4, seat_stiffness=2e8).network()
+    >>> bool(np.isclose(static_equilibrium(net)[0], -400.0 / (2e8 + 67.5e3), rtol=1e-12))
+    True
+    """
+    fixed = {CAM: float(cam), GROUND: 0.0}
+    ua = np.array([fixed.get(int(a), 0.0) for a in network.a])
+    ub = np.array([fixed.get(int(b), 0.0) for b in network.b])
+    const = network.preload - network.stiffness * (network.gap - ua + ub)
+    n = network.mass.size
+    closed = ~network.unilateral | (network.gap <= 0.0)
+    for _ in range(2 * int(network.unilateral.sum()) + 2):
+        r = np.zeros(n)
+        on = closed & (network.b >= 0)
+        np.add.at(r, network.b[on], const[on])
+        on = closed & (network.a >= 0)
+        np.add.at(r, network.a[on], -const[on])
+        k = network.matrix(np.where(closed, network.stiffness, 0.0))
+        try:
+            x = np.linalg.solve(k, r)
+        except np.linalg.LinAlgError:
+            raise ValueError("no rest position: a node of the train is held by no element") from None
+        xa = np.where(network.a >= 0, x[np.maximum(network.a, 0)], ua)
+        xb = np.where(network.b >= 0, x[np.maximum(network.b, 0)], ub)
+        now = ~network.unilateral | (xa - xb - network.gap > 0.0)
+        if np.array_equal(now, closed):
+            return x
+        closed = now
+    raise ValueError("no rest position: the contacts of the train do not settle")
 
 
 @dataclass(frozen=True)
@@ -459,10 +640,7 @@ class MultiMassTrain:
     springs : tuple of CoilSpring
         Outer and inner spring (one or two).
     rocker_ratio, lash : float
-        k and the valve clearance x0 [m] at the valve.
-    lash_link : int
-        Index in ``links`` of the joint that holds the clearance (the rocker-valve joint, or the cam for a
-        bucket tappet).
+        k and the valve clearance x0 [m] at the valve, taken up at the cam contact.
     damping_ratio : float
         Of every drive link on the reduced mass of its two ends.
     seat_stiffness, seat_damping_ratio : float
@@ -478,11 +656,32 @@ class MultiMassTrain:
     Notes
     -----
     :math:`\\mathbf M\\ddot{\\mathbf x} + \\mathbf C\\dot{\\mathbf x} + \\mathbf K\\mathbf x = \\mathbf f(h,
-    \\text{contacts})`.  Every drive link is a compression-only contact (a ball joint or a
-    face transmits no tension); the coils are bilateral.  A spring of N coil masses is N + 1 segments of
-    rate (N + 1) K between the retainer and the head, masses m_s / (N + 1) inside and half of one on the
-    valve (lumped-mass discretisation of the wave equation of the coil; its lowest fixed-fixed mode tends to
-    pi sqrt(K / m_s), Valve-train practical works (n.d.) eq. 6.13, as N grows).
+    \\text{contacts})`, the train at rest in its :func:`static_equilibrium` on the base circle at the start.
+
+    Contacts (the convention of this model).  The cam contact is compression-only and holds the clearance x0, as the
+    specification states it (the clearance h0 at the cam that the ramp takes up, Valve-train practical works (n.d.),
+    work 2) and as the one-mass train has it; the valve seat is compression-only.  The drive joints are held
+    (bilateral): the drive parts stay together and with the valve, so between the lifts they rest with the valve on
+    its seat, the clearance open at the cam, and start each lift from rest.  In an engine the clearance of a pushrod
+    train sits at the rocker's adjusting screw and the parts are kept together only by their weight and the oil of
+    their joints and of the tappet's bore, forces this model does not have: with bare compression-only joints
+    nothing brings the drive parts to rest between the lifts, they float in the clearance after the first seating,
+    rattle and meet the cam at random, and the motion never repeats.  Under the spring the cam contact carries the
+    least force of the chain (the joint between nodes j and j + 1 carries the spring force less the inertia of the
+    nodes from j + 1 to the valve, the cam contact that of them all), so while the cam decelerates the chain the cam
+    contact parts first, and the follower's separation (the jump) is the loss of the cam contact while the valve is
+    off its seat; a held joint would carry tension only where the chain's own vibration outruns that order (none of
+    the pushrod example's joints does while its valve is off its seat, up to 8000 rpm).
+
+    Coils.  A spring of N coil masses is N + 1 segments of rate (N + 1) K between the retainer and the head, masses
+    m_s / (N + 1) of its active coils inside and half of one on the valve, with its end coils at the retainer on
+    the valve (:func:`coil_spring`): a lumped-mass discretisation of the wave equation of the coil.  With the valve
+    held, its modes are those of a uniform fixed-fixed chain,
+
+    .. math:: \\omega_j = 2 (N + 1) \\sqrt{K / m_s}\\,\\sin\\frac{j \\pi}{2 (N + 1)},
+
+    below the continuous spring's :math:`j \\pi \\sqrt{K / m_s}` (Valve-train practical works (n.d.), eq. 6.13 for
+    j = 1) by the factor :math:`(2 (N + 1) / \\pi) \\sin(\\pi / (2 (N + 1)))`, 0.9949 at N = 8.
     """
 
     layout: str
@@ -491,7 +690,6 @@ class MultiMassTrain:
     springs: tuple
     rocker_ratio: float = 1.0
     lash: float = 0.0
-    lash_link: int = 0
     damping_ratio: float = DAMPING_RATIO
     seat_stiffness: float = SEAT_STIFFNESS
     seat_damping_ratio: float = SEAT_DAMPING_RATIO
@@ -507,12 +705,12 @@ class MultiMassTrain:
         for s, tag in zip(self.springs, ("outer", "inner"), strict=False):
             net.spring(tag, s, valve)
         ends = [CAM] + nodes
-        for i, c in enumerate(self.links):
-            name = "cam contact" if i == 0 else f"{self.drive[i - 1][0]}-{self.drive[i][0]} joint"
-            net.damped(name, ends[i], ends[i + 1], c, self.damping_ratio, unilateral=True,
-                       gap=self.lash if i == self.lash_link else 0.0)
-        x_valve = net.seat(valve, self.seat_stiffness, self.seat_damping_ratio, sum(s.preload for s in self.springs))
-        return net.build(x_valve, valve, self.rocker_ratio, self.adjuster, self.variable_mass)
+        net.damped("cam contact", CAM, nodes[0], self.links[0], self.damping_ratio, unilateral=True, gap=self.lash)
+        for i, c in enumerate(self.links[1:], start=1):
+            net.damped(f"{self.drive[i - 1][0]}-{self.drive[i][0]} joint", ends[i], ends[i + 1], c,
+                       self.damping_ratio)
+        net.seat(valve, self.seat_stiffness, self.seat_damping_ratio)
+        return net.build(None, valve, self.rocker_ratio, self.adjuster, self.variable_mass)
 
 
 def natural_modes(network, held=(), opened=()) -> tuple[np.ndarray, np.ndarray]:
@@ -546,6 +744,36 @@ def natural_modes(network, held=(), opened=()) -> tuple[np.ndarray, np.ndarray]:
     shapes[free] = scale[:, None] * vectors
     peak = shapes[np.abs(shapes).argmax(axis=0), np.arange(values.size)]
     return np.sqrt(np.clip(values, 0.0, None)), shapes / peak
+
+
+def slowest_decay(network, opened=()) -> tuple[float, float]:
+    r"""The least damped vibration of a network with the elements ``opened`` open and every other contact closed:
+    its damped frequency [rad/s] and its decay rate sigma [1/s] (its amplitude falls by exp(-sigma t) in t seconds).
+
+    Notes
+    -----
+    The eigenvalues :math:`\lambda = -\sigma \pm i \omega_d` of the linearised state matrix
+    :math:`[[0, I], [-M^{-1} K, -M^{-1} C]]` (:meth:`Network.highest_frequency`'s), the one of the smallest sigma.
+
+    Examples
+    --------
+    One mass on a spring and a damper of ratio zeta: sigma = zeta omega_n, omega_d = omega_n sqrt(1 - zeta^2).
+
+    >>> net = one_mass_train(0.25, 15e6, 67.5e3, 400.0, damping_ratio=0.05).network()
+    >>> w, sigma = slowest_decay(net, opened=("seat",))
+    >>> wn = np.sqrt((15e6 + 67.5e3) / 0.25)
+    >>> bool(np.isclose(sigma, net.damping[0] / 0.5) and np.isclose(w, np.sqrt(wn**2 - sigma**2)))
+    True
+    """
+    closed = ~np.isin(network.elements, opened)
+    n = network.mass.size
+    inv = (1.0 / network.mass)[:, None]
+    state = np.block([[np.zeros((n, n)), np.eye(n)],
+                      [-inv * network.matrix(np.where(closed, network.stiffness, 0.0)),
+                       -inv * network.matrix(np.where(closed, network.damping, 0.0))]])
+    values = np.linalg.eigvals(state)
+    slowest = values[np.argmax(values.real)]
+    return float(abs(slowest.imag)), float(-slowest.real)
 
 
 def natural_frequencies(network, held=()) -> np.ndarray:
@@ -608,7 +836,7 @@ def pushrod_train(tappet_mass, pushrod_mass, rocker_inertia, valve_mass, valve_a
         Valve stem between the rocker and the retainer [N/m] (a large value if the stem is rigid).
     springs : sequence of CoilSpring
     lash : float
-        Valve clearance at the valve [m] (held at the rocker-valve joint).
+        Valve clearance at the valve [m] (taken up at the cam contact).
     **kw
         ``damping_ratio``, ``seat_stiffness``, ``seat_damping_ratio`` of :class:`MultiMassTrain`.
 
@@ -624,9 +852,8 @@ def pushrod_train(tappet_mass, pushrod_mass, rocker_inertia, valve_mass, valve_a
              series(rocker_stiffness, valve_stiffness))
     notes = ("masses at the valve: m_t/k^2, m_p/k^2, J/l_v^2, valve (Valve-train practical works (n.d.) eq. 5.2)",
              "pushrod mass lumped at its middle between two halves of stiffness 2 c_p",
-             "rocker tip and valve stem stiffness in series between rocker and valve; lash at that joint")
-    return MultiMassTrain("pushrod", drive, links, tuple(springs), float(rocker_ratio), float(lash), 3,
-                          notes=notes, **kw)
+             "rocker tip and valve stem stiffness in series between rocker and valve")
+    return MultiMassTrain("pushrod", drive, links, tuple(springs), float(rocker_ratio), float(lash), notes=notes, **kw)
 
 
 def rocker_train(rocker_inertia, valve_mass, valve_arm, rocker_ratio, cam_stiffness, rocker_stiffness,
@@ -634,24 +861,23 @@ def rocker_train(rocker_inertia, valve_mass, valve_arm, rocker_ratio, cam_stiffn
     """An overhead-cam rocker (finger follower) :class:`MultiMassTrain`: cam - rocker - valve.
 
     The rocker inertia about its pivot gives J / l_v^2 at the valve; the cam stiffness (camshaft and contact,
-    cam side) counts c / k^2; the lash sits at the rocker-valve joint.
+    cam side) counts c / k^2.
     """
     drive = (("rocker", rocker_inertia / valve_arm**2), ("valve", valve_mass))
     links = (cam_stiffness / rocker_ratio**2, series(rocker_stiffness, valve_stiffness))
-    notes = ("masses at the valve: J/l_v^2, valve", "lash at the rocker-valve joint")
-    return MultiMassTrain("rocker", drive, links, tuple(springs), float(rocker_ratio), float(lash), 1,
-                          notes=notes, **kw)
+    notes = ("masses at the valve: J/l_v^2, valve",)
+    return MultiMassTrain("rocker", drive, links, tuple(springs), float(rocker_ratio), float(lash), notes=notes, **kw)
 
 
 def direct_train(tappet_mass, valve_mass, cam_stiffness, valve_stiffness, springs, lash=0.0, **kw) -> MultiMassTrain:
     """A direct-acting overhead-cam :class:`MultiMassTrain`: cam - bucket tappet - valve (k = 1).
 
-    The clearance is between the cam and the bucket (shim), so the lash sits at the cam contact.
+    The clearance is between the cam and the bucket (shim).
     """
     drive = (("tappet", tappet_mass), ("valve", valve_mass))
     links = (cam_stiffness, valve_stiffness)
-    notes = ("bucket tappet on the valve stem, lash between cam and tappet",)
-    return MultiMassTrain("direct", drive, links, tuple(springs), 1.0, float(lash), 0, notes=notes, **kw)
+    notes = ("bucket tappet on the valve stem",)
+    return MultiMassTrain("direct", drive, links, tuple(springs), 1.0, float(lash), notes=notes, **kw)
 
 
 def rocker_arm_inertia(mass, arm_valve, arm_tappet) -> float:

@@ -8,10 +8,11 @@ revolution repeats (so that the residual vibration of the previous event is incl
 
 Events (Shang Hanji (1988), sections 3.1-3.2):
 
-* follower separation (jump, 飞脱): the cam contact force is zero and the valve at or above the
-  cam while the cam's lift is positive (the rigid valve lift k h - x0 > 0), from the start of the
-  cam's lift to the valve's first return to its seat; the jump speed of a sweep is the zero of the smallest such contact force,
-  interpolated between the speeds;
+* follower separation (jump, 飞脱): the cam contact force is zero, the follower at or above the
+  cam (the contact's gap open) and the valve off its seat while the cam's lift is positive (the rigid
+  valve lift k h - x0 > 0), from the start of the cam's lift to the valve's first return to its seat;
+  the jump speed of a sweep is the zero of the smallest such contact force, interpolated between the
+  speeds;
 * first seating: the first downward crossing of y = 0 after the valve's largest lift, located
   inside the step by carrying the last free state to y = 0; the seating velocity is dy/dt there;
 * bounce (落座反跳): every return of the valve above ``bounce_tolerance`` after the first
@@ -278,57 +279,148 @@ def bounce(lift, first_seating, tolerance=BOUNCE_TOLERANCE) -> tuple[float, int]
     return float(height[0]) if count[0] else 0.0, int(count[0])
 
 
-def bounces(lift, first_seating, tolerance=BOUNCE_TOLERANCE) -> tuple[np.ndarray, np.ndarray]:
+def bounces(lift, first_seating, tolerance=BOUNCE_TOLERANCE, velocity=None, step_time=None
+            ) -> tuple[np.ndarray, np.ndarray]:
     """Of every row of (S, n) records after its first seating (index, (S,)): the largest lift, not below 0 (0 where
-    the valve does not seat) [m], and the returns above ``tolerance`` (runs of samples above it)."""
+    the valve does not seat) [m], and the returns above ``tolerance`` (runs of samples above it).
+
+    With the ``velocity`` [m/s] records and ``step_time`` (the time between samples [s], a scalar or one per row) the
+    largest lift is the peak between the samples (:func:`peak_between`), else the largest sample."""
     after = np.arange(lift.shape[-1]) >= first_seating[:, None]
     above = (lift > tolerance) & after
     count = np.count_nonzero(above[:, :1], axis=-1) + np.count_nonzero(above[:, 1:] & ~above[:, :-1], axis=-1)
     largest = np.max(lift, axis=-1, where=after, initial=-np.inf)
+    if velocity is not None:
+        top = np.argmax(np.where(after, lift, -np.inf), axis=-1)
+        largest = np.maximum(largest, peak_between(lift, velocity, top, step_time, after))
     return np.where(after.any(axis=-1) & ~(0.0 > largest), largest, 0.0), count
 
 
-def lift_event(kinematic, lift) -> np.ndarray:
-    """Mask of the cam's lift event as the valve lives it: from the first angle where the cam's lift is positive to
-    the valve's first return to its seat after it (a downward crossing of y = 0), or to the end of the record.
+def peak_between(lift, velocity, top, step_time, valid=None) -> np.ndarray:
+    """The largest lift next to the sample ``top`` (S,) of each row of (S, n) records [m]: the maximum of the cubic
+    Hermite of the lift and the velocity over the sample interval on either side of it where the velocity turns
+    from rising to falling (``step_time``: the time between the samples [s], a scalar or one per row); -inf where
+    neither does (a largest sample at an end of the record, or at a kink) or an interval's sample is not ``valid``.
 
-    A valve that rebounds from its seat after that return bounces; before it, the cam should be carrying the valve.
-    ``lift`` may hold a record per row (S, n), of one rigid lift ``kinematic`` (n,).
+    Notes
+    -----
+    On an interval of length h from y0, v0 to y1, v1 the Hermite p(s) = y0 H00 + h v0 H10 + y1 H01 + h v1 H11,
+    s in [0, 1], interpolates a smooth motion with an error of order h^4; its slope is the quadratic
+    (6 y0 + 3 m0 - 6 y1 + 3 m1) s^2 + (6 y1 - 6 y0 - 4 m0 - 2 m1) s + m0 (m = h v), whose root in [0, 1] is its
+    maximum when m0 >= 0 >= m1 (the velocity's sign change brackets it).  A bounce of a few micrometres spans a few
+    tens of samples: the largest sample misses the peak by up to a v^2 / 8 of the step.
+
+    Examples
+    --------
+    A free flight y = 1 - (t - 0.35)^2 sampled every 0.1: the samples' largest 0.9975, the peak 1.
+
+    >>> t = 0.1 * np.arange(8)
+    >>> float(peak_between((1 - (t - 0.35) ** 2)[None], (-2 * (t - 0.35))[None], np.array([3]), 0.1)[0])
+    1.0
+    """
+    rows, n = lift.shape
+    every = np.arange(rows)
+    h = np.broadcast_to(np.asarray(step_time, dtype=float), (rows,))
+    best = np.full(rows, -np.inf)
+    for j in (top - 1, top):                                    # the interval [j, j + 1]
+        inside = (j >= 0) & (j + 1 < n)
+        j0, j1 = np.clip(j, 0, n - 1), np.clip(j + 1, 0, n - 1)
+        y0, y1 = lift[every, j0], lift[every, j1]
+        m0, m1 = h * velocity[every, j0], h * velocity[every, j1]
+        ok = inside & (m0 >= 0.0) & (m1 <= 0.0) & (m0 > m1)
+        if valid is not None:
+            ok &= valid[every, j0] & valid[every, j1]
+        a, b = 6.0 * (y0 - y1) + 3.0 * (m0 + m1), 6.0 * (y1 - y0) - 4.0 * m0 - 2.0 * m1
+        disc = np.sqrt(np.maximum(b * b - 4.0 * a * m0, 0.0))
+        # the root in [0, 1] of a s^2 + b s + m0, in the form without cancellation
+        q = -0.5 * (b + np.where(b >= 0.0, disc, -disc))
+        with np.errstate(divide="ignore", invalid="ignore"):
+            roots = np.stack([np.where(a != 0.0, q / a, np.inf), np.where(q != 0.0, m0 / q, -m0 / b)])
+        roots = np.where((roots >= 0.0) & (roots <= 1.0), roots, np.nan)
+        s = np.where(np.isnan(roots[0]), roots[1], roots[0])
+        ok &= np.isfinite(s)
+        s = np.where(ok, s, 0.0)
+        s2, s3 = s * s, s * s * s
+        p = (2 * s3 - 3 * s2 + 1) * y0 + (s3 - 2 * s2 + s) * m0 + (3 * s2 - 2 * s3) * y1 + (s3 - s2) * m1
+        best = np.where(ok, np.maximum(best, p), best)
+    return best
+
+
+def lift_event(kinematic, lift, follower=None, tolerance=BOUNCE_TOLERANCE) -> np.ndarray:
+    """Mask of the cam's lift event as the valve lives it: from the cam's catching the valve (the cam's lift positive,
+    the valve off its seat by more than ``tolerance`` [m], the seat's elastic rocking, :data:`BOUNCE_TOLERANCE`, and
+    the follower on the cam) to the valve's first return to its seat after its largest
+    lift (the first sample at or below the seat), the catching the first after that return and after the cam's
+    lowest point, round the revolution.
+
+    The record is one period of the motion, so the event may run over its end: a cam without a base circle (an
+    eccentric) lifts again as soon as it has lowered the valve.  A valve that rebounds from its seat bounces, and the
+    cam that goes on lowering may touch it, until the cam lifts it again; from that catching to the return, the cam
+    should be carrying the valve.  Without a return (a valve that never seats) every sample; without a catching (a
+    valve that floats over the cam) from the first sample where the cam's lift is positive to the return.  ``lift`` (and ``follower``, the node on the
+    cam where it is not the valve, :func:`separation_mask`) may hold a record per row (S, n), of one rigid lift
+    ``kinematic`` (n,).
 
     >>> lift_event(np.array([-1.0, 1.0, 2.0, 1.0, 0.5, -1.0]), np.array([0.0, 0.5, 1.5, 0.2, -0.1, 0.3])).tolist()
     [False, True, True, True, False, False]
+
+    An eccentric: the valve returns to its seat at sample 3 and rebounds over the end of the record, above the rising
+    cam at samples 4 and 0; the cam catches it at sample 1, so the event runs from 1 to 3:
+
+    >>> lift_event(np.array([0.1, 1.0, 2.0, 1.0, 0.2]), np.array([0.4, 0.8, 1.9, -0.1, 0.3])).tolist()
+    [False, True, True, False, False]
     """
-    index = np.arange(lift.shape[-1])
+    lift = np.asarray(lift)
+    follower = lift if follower is None else follower
+    n = lift.shape[-1]
+    index = np.arange(n)
+    peak = np.expand_dims(np.argmax(lift, axis=-1), -1)
+    after_peak = np.min(np.where(lift <= 0.0, (index - peak) % n, n), axis=-1, keepdims=True)
+    returned = (after_peak < n) & (np.max(lift, axis=-1, keepdims=True) > 0.0)
+    seat = (peak + after_peak) % n
+    bottom = (seat + np.min(np.where(kinematic <= kinematic.min(), (index - seat) % n, n), axis=-1, keepdims=True)) % n
+    caught = (kinematic > 0.0) & (lift > tolerance) & (follower < kinematic)
+    after = np.min(np.where(caught, (index - bottom) % n, n), axis=-1, keepdims=True)
     rising = np.flatnonzero(kinematic > 0.0)
-    if rising.size == 0:
-        return np.zeros(lift.shape, dtype=bool)
-    start = int(rising[0])
-    down = (lift[..., 1:] <= 0.0) & (lift[..., :-1] > 0.0) & (index[1:] > start)
-    end = np.where(down.any(axis=-1), np.argmax(down, axis=-1) + 1, lift.shape[-1])
-    return (index >= start) & (index < np.expand_dims(end, -1))
+    start = np.where(after < n, (bottom + after) % n, rising[0] if rising.size else seat)
+    inside = (index - start) % n < (seat - start) % n
+    return np.where(returned, inside, rising.size > 0)
 
 
-def separation_mask(contact, kinematic, lift, event=None) -> np.ndarray:
-    """Follower separation (jump): no contact force, and the valve at or above the cam, while the cam's lift is
-    positive during the lift event (:func:`lift_event`).
+def separation_mask(contact, kinematic, lift, event=None, follower=None, tolerance=BOUNCE_TOLERANCE) -> np.ndarray:
+    """Follower separation (jump): no contact force, the follower at or above the cam and the valve off its seat (by
+    more than ``tolerance`` [m]: below it the valve rocks on the seat's elasticity, :data:`BOUNCE_TOLERANCE`), while
+    the cam's lift is positive during the lift event (:func:`lift_event`).
 
     Only the cam's lift decides whether the cam should be carrying the valve: a valve thrown above the cam, or one
     that never comes down to it while the cam lifts, has jumped; a valve that rebounds from its seat after the event
-    has returned it there bounces, it does not jump.  The valve must be at or above the cam's rigid lift (the
+    has returned it there bounces, it does not jump.  The follower must be at or above the cam's rigid lift (the
     contact's gap open): a contact whose damping releases it an instant before the gap opens has not separated.
-    ``contact`` and ``lift`` may hold a record per row (S, n); ``event``: their :func:`lift_event`, if found.
+    ``follower`` is the position of the node on the cam [m at the valve] where it is not the valve (the first drive
+    part of a multi-mass train: the valve behind an elastic drive lags it).  ``contact``, ``lift`` and ``follower`` may
+    hold a record per row (S, n); ``event``: their :func:`lift_event`, if
+    found.
 
     >>> separation_mask(np.array([0.0, 0.0, 5.0, 0.0, 0.0]), np.array([-1e-4, 1e-3, 1e-3, 3e-6, 2e-6]),
     ...                 np.array([1e-4, 2e-3, 1e-3, -1e-7, 4e-6])).tolist()
     [False, True, False, False, False]
+
+    An elastic drive: the valve 0.1 mm below the cam's rigid lift, its follower on the cam (no force: the contact's
+    damping releases it) or 1 um above it (separated):
+
+    >>> separation_mask(np.zeros(2), np.full(2, 1e-3), np.full(2, 0.9e-3),
+    ...                 follower=np.array([0.999e-3, 1.001e-3])).tolist()
+    [False, True]
     """
-    return (contact <= 0.0) & (kinematic > 0.0) & (lift >= kinematic) & (lift_event(kinematic, lift) if event is None
-                                                                           else event)
+    event = lift_event(kinematic, lift, follower, tolerance) if event is None else event
+    follower = lift if follower is None else follower
+    return (contact <= 0.0) & (kinematic > 0.0) & (follower >= kinematic) & (lift > tolerance) & event
 
 
-def lowest_lifting_force(contact, kinematic, lift, separated, event=None) -> np.ndarray:
+def lowest_lifting_force(contact, kinematic, lift, separated, event=None, tolerance=BOUNCE_TOLERANCE) -> np.ndarray:
     """Smallest cam contact force while the cam carries the open valve [N]: 0 with a separation, else the least where
-    the cam's lift is positive and the valve is off its seat during the lift event (:func:`lift_event`; after it
+    the cam's lift is positive and the valve is off its seat (by more than ``tolerance`` [m], as
+    :func:`separation_mask` has it) during the lift event (:func:`lift_event`; after it
     the cam lowers the seated valve to its base circle and the force falls to 0 without a separation); nan if the
     valve never leaves its seat while the cam lifts.  ``contact`` and ``lift`` may hold a record per row (S, n),
     ``separated`` one flag per row (and ``event``, :func:`lift_event`, if found): one force per row.
@@ -337,25 +429,29 @@ def lowest_lifting_force(contact, kinematic, lift, separated, event=None) -> np.
     ...                            np.array([0.0, 1e-3, 2e-3, -1e-7, 1e-7]), False))
     50.0
     """
-    lifting = (kinematic > 0.0) & (lift > 0.0) & (lift_event(kinematic, lift) if event is None else event)
+    lifting = (kinematic > 0.0) & (lift > tolerance) & (lift_event(kinematic, lift, tolerance=tolerance) if event
+                                                          is None else event)
     least = np.min(contact, axis=-1, where=lifting, initial=np.inf)
     return np.where(separated, 0.0, np.where(lifting.any(axis=-1), least, np.nan))
 
 
 def speed_result(cam_speed, theta, lift, velocity, kinematic, contact, seat, spring, slope, surge, clash,
                  bounce_tolerance=BOUNCE_TOLERANCE, acceleration=None, revolutions=1, converged=True,
-                 adjuster_extension=None) -> SpeedResult:
-    """Events of one speed from its recorded revolution (see the module docstring for the definitions)."""
+                 adjuster_extension=None, follower=None) -> SpeedResult:
+    """Events of one speed from its recorded revolution (see the module docstring for the definitions); ``follower``
+    the position of the node on the cam [m at the valve], where it is not the valve (:func:`separation_mask`)."""
     step_time = float(theta[1] - theta[0]) / cam_speed
     i_seat, seat_angle, seat_velocity = seating(theta, lift, velocity, acceleration, step_time)
-    separation = separation_mask(contact, kinematic, lift)
+    event = lift_event(kinematic, lift, follower, bounce_tolerance)
+    separation = separation_mask(contact, kinematic, lift, event, follower, bounce_tolerance)
     intervals = runs(separation)
     jumps = np.column_stack([theta[intervals[:, 0]], theta[intervals[:, 1] - 1]]) if intervals.size else \
         np.zeros((0, 2))
-    height, count = (float(x[0]) for x in bounces(lift[None], np.array([i_seat]), bounce_tolerance))
+    height, count = (float(x[0]) for x in bounces(lift[None], np.array([i_seat]), bounce_tolerance, velocity[None],
+                                                   step_time))
     return SpeedResult(float(cam_speed), theta, lift, velocity, kinematic, contact, seat, spring, contact * slope,
                        separation, jumps, seat_angle, seat_velocity, height, int(count), surge, clash,
-                       float(lowest_lifting_force(contact, kinematic, lift, intervals.size > 0)),
+                       float(lowest_lifting_force(contact, kinematic, lift, intervals.size > 0, event, bounce_tolerance)),
                        int(revolutions), bool(converged), adjuster_extension)
 
 
@@ -396,17 +492,31 @@ class SweepEvents:
 def sweep_events(result) -> SweepEvents:
     """The :class:`SweepEvents` of a :class:`SweepResult`: :func:`speed_result`'s events over the speeds at once."""
     theta, kinematic, lift = result.theta, result.kinematic_lift, result.lift
-    index, angle, velocity = seatings(theta, lift, result.velocity, result.acceleration,
-                                      float(theta[1] - theta[0]) / result.cam_speeds)
-    event = lift_event(kinematic, lift)
-    separation = separation_mask(result.contact_force, kinematic, lift, event)
+    step_time = float(theta[1] - theta[0]) / result.cam_speeds
+    index, angle, velocity = seatings(theta, lift, result.velocity, result.acceleration, step_time)
+    event = lift_event(kinematic, lift, result.follower_lift, result.bounce_tolerance)
+    separation = separation_mask(result.contact_force, kinematic, lift, event, result.follower_lift,
+                                 result.bounce_tolerance)
     jumped = separation.any(axis=-1)
     last = lift.shape[-1] - 1 - np.argmax(separation[:, ::-1], axis=-1)
-    height, count = bounces(lift, index, result.bounce_tolerance)
+    height, count = bounces(lift, index, result.bounce_tolerance, result.velocity, step_time)
     return SweepEvents(index, angle, velocity, height, count, jumped,
                        np.where(jumped, theta[np.argmax(separation, axis=-1)], np.nan),
                        np.where(jumped, theta[last], np.nan),
-                       lowest_lifting_force(result.contact_force, kinematic, lift, jumped, event))
+                       lowest_lifting_force(result.contact_force, kinematic, lift, jumped, event, result.bounce_tolerance))
+
+
+def force_reached_zero(events) -> np.ndarray:
+    """Of every speed of :class:`SweepEvents`: whether the smallest contact force while the cam lifts has reached
+    zero, with a separation or without (a force that touches zero, which the contact law clamps there, an instant
+    before the valve would rise above the cam: the speeds above separate).
+
+    >>> e = SweepEvents(*([np.zeros(3)] * 5), np.array([False, False, True]), *([np.zeros(3)] * 2),
+    ...                 np.array([26.7, 0.0, 0.0]))
+    >>> force_reached_zero(e).tolist()
+    [False, True, True]
+    """
+    return events.jumped | (events.min_contact_force <= 0.0)
 
 
 def zero_crossing(speeds, values, hit) -> float:
@@ -501,6 +611,9 @@ class SweepResult:
     adjuster_extension : ndarray (S, n) or None
         Plunger extension of the train's hydraulic lash adjuster over the recorded revolution [m, at the adjuster]
         (zeros without one).
+    follower_lift : ndarray (S, n) or None
+        Position of the node on the cam [m at the valve] where it is not the valve (the first drive part of a
+        multi-mass train); None: the valve is on the cam.
     """
 
     cam_speeds: np.ndarray
@@ -520,6 +633,7 @@ class SweepResult:
     converged: np.ndarray
     bounce_tolerance: float = BOUNCE_TOLERANCE
     adjuster_extension: Optional[np.ndarray] = None
+    follower_lift: Optional[np.ndarray] = None
 
     def speed(self, i) -> SpeedResult:
         """The :class:`SpeedResult` of the i-th speed."""
@@ -527,7 +641,8 @@ class SweepResult:
                             self.contact_force[i], self.seat_force[i], self.spring_force[i], self.slope,
                             self.surge_amplitude[i], float(self.clash_margin[i]), self.bounce_tolerance,
                             self.acceleration[i], self.revolutions[i], self.converged[i],
-                            None if self.adjuster_extension is None else self.adjuster_extension[i])
+                            None if self.adjuster_extension is None else self.adjuster_extension[i],
+                            None if self.follower_lift is None else self.follower_lift[i])
 
     def per_speed(self) -> list[SpeedResult]:
         """Every :class:`SpeedResult` of the sweep."""
@@ -555,7 +670,8 @@ class SweepResult:
         -------
         dict
             ``jump_speed``: the camshaft speed [rad/s] where the smallest contact force while the cam lifts
-            (:func:`lowest_lifting_force`) reaches zero, interpolated between the speeds (:func:`zero_crossing`);
+            (:func:`lowest_lifting_force`) reaches zero, interpolated between the speeds (:func:`zero_crossing`)
+            through those below the first whose force has reached it (:func:`force_reached_zero`);
             ``bounce_onset_speed``: where the bounce height (continuous in the speed) first exceeds the bounce
             tolerance, linear between the speeds (nan if none): unlike the first speed with a counted bounce, it
             does not move with the angle step; ``max_seating_velocity``: the largest |dy/dt| at seating [m/s] and
@@ -566,7 +682,7 @@ class SweepResult:
         seat = np.abs(events.seating_velocity)
         clash = self.cam_speeds[self.clash_margin < 0.0]
         worst = int(np.nanargmax(seat)) if np.isfinite(seat).any() else None
-        return {"jump_speed": zero_crossing(self.cam_speeds, events.min_contact_force, events.jumped),
+        return {"jump_speed": zero_crossing(self.cam_speeds, events.min_contact_force, force_reached_zero(events)),
                 "bounce_onset_speed": level_crossing(self.cam_speeds, events.bounce_height, self.bounce_tolerance),
                 "max_seating_velocity": float(seat[worst]) if worst is not None else np.nan,
                 "max_seating_velocity_speed": float(self.cam_speeds[worst]) if worst is not None else np.nan,
@@ -605,13 +721,20 @@ def sweep_size(network, cam_speeds, revolutions, step_deg) -> tuple[int, int]:
     steps = int(round(360.0 / step_deg))
     n_sub = substeps(network.highest_frequency(), np.atleast_1d(np.asarray(cam_speeds, dtype=float)),
                      np.radians(step_deg))
-    recorded = 3 + 2 + len(network.spring_elements)
+    recorded = 3 * len(recorded_nodes(network)) + 2 + len(network.spring_elements)
     return (int(n_sub.sum()) * steps * int(revolutions) * network.a.size,
             n_sub.size * steps * recorded * 8)
 
 
+def recorded_nodes(network) -> np.ndarray:
+    """The nodes a sweep records: the valve, and the node on the cam where it is another (a multi-mass train's first
+    drive part, for the separation of the follower, :func:`separation_mask`)."""
+    follower = int(network.b[network.cam_element])
+    return np.array([network.valve] + ([follower] if follower != network.valve else []), dtype=np.int64)
+
+
 def sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, progress=None, bounce_tolerance=BOUNCE_TOLERANCE,
-          tolerance=STATE_TOLERANCE) -> SweepResult:
+          tolerance=STATE_TOLERANCE, halvings=0) -> SweepResult:
     """Simulate an elastic train on a lift law at every camshaft speed of a sweep.
 
     Parameters
@@ -636,6 +759,10 @@ def sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, progress=None, bo
     tolerance : float
         Largest change of the state over a revolution at which a speed repeats [m] (:data:`STATE_TOLERANCE`; a
         negative value runs every speed for ``revolutions``).
+    halvings : int
+        Halve the step this many times: the recording step is ``step_deg`` / 2^halvings and each speed keeps the
+        sub-steps of ``step_deg``, so that its time step halves with each (the error estimates of
+        :func:`.accuracy.refine`).
 
     Returns
     -------
@@ -646,17 +773,18 @@ def sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, progress=None, bo
     steps = int(round(360.0 / step_deg))
     if not np.isclose(steps * step_deg, 360.0, rtol=0, atol=1e-9):
         raise ValueError(f"the step {step_deg} deg does not divide the camshaft revolution")
-    if revolutions < 1 or np.any(speeds <= 0.0):
-        raise ValueError("sweep: at least one revolution and positive camshaft speeds are needed")
-    dtheta = 2.0 * np.pi / steps
+    if revolutions < 1 or np.any(speeds <= 0.0) or halvings < 0:
+        raise ValueError("sweep: at least one revolution, positive camshaft speeds and no negative halvings are needed")
     rate = net.highest_frequency()
-    n_sub = substeps(rate, speeds, dtheta)
+    n_sub = substeps(rate, speeds, 2.0 * np.pi / steps)
+    steps *= 2**halvings
+    dtheta = 2.0 * np.pi / steps
     per_step = 2 * int(n_sub.max())
     theta, u, du = cam_excitation(law, net.rocker_ratio, steps, per_step)
-    rec_nodes = np.array([net.valve], dtype=np.int64)
+    rec_nodes = recorded_nodes(net)
     rec_elems = np.concatenate([[net.cam_element, net.seat_element], net.spring_elements]).astype(np.int64)
     s_count, n_nodes, n_elems = speeds.size, net.mass.size, net.a.size
-    out_x, out_v, out_a = (np.empty((s_count, 1, steps)) for _ in range(3))
+    out_x, out_v, out_a = (np.empty((s_count, rec_nodes.size, steps)) for _ in range(3))
     out_f = np.empty((s_count, rec_elems.size, steps))
     out_clash = np.empty((s_count, n_elems))
     out_surge = np.empty((s_count, n_nodes))
@@ -695,14 +823,16 @@ def sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, progress=None, bo
     return SweepResult(speeds, theta[::per_step], u[::per_step] - net.lash, out_x[:, 0], out_v[:, 0], out_a[:, 0],
                        net.rocker_ratio * out_f[:, 0], out_f[:, 1], -out_f[:, 2:].sum(axis=1),
                        du[::per_step] / net.rocker_ratio, out_surge[:, coils], out_clash.min(axis=1), n_sub,
-                       np.where(out_revs > 0, out_revs, int(revolutions)), out_revs > 0, bounce_tolerance, out_z)
+                       np.where(out_revs > 0, out_revs, int(revolutions)), out_revs > 0, bounce_tolerance, out_z,
+                       out_x[:, 1] if rec_nodes.size > 1 else None)
 
 
 HEADLINE_STRIDE = 10
 """Every how many speeds of a sweep :func:`headline_sweep` simulates first (the coarse grid)."""
 
 PER_SPEED_FIELDS = ("cam_speeds", "lift", "velocity", "acceleration", "contact_force", "seat_force", "spring_force",
-                    "surge_amplitude", "clash_margin", "substeps", "revolutions", "converged", "adjuster_extension")
+                    "surge_amplitude", "clash_margin", "substeps", "revolutions", "converged", "adjuster_extension",
+                    "follower_lift")
 """The fields of a :class:`SweepResult` with one row per speed."""
 
 
@@ -724,7 +854,7 @@ def merged(parts) -> SweepResult:
             out[where] = getattr(p, name)
         return out
 
-    return replace(parts[0], **{f: joined(f) for f in PER_SPEED_FIELDS})
+    return replace(parts[0], **{f: joined(f) for f in PER_SPEED_FIELDS if getattr(parts[0], f) is not None})
 
 
 def seating_events(result) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

@@ -157,10 +157,9 @@ class PivotedFollower(RollerFollower):
         radius = np.hypot(*self.centre(psi))
         if not np.all(np.diff(radius) > 0.0):
             return ("finger_valve_angle_deg", f"{np.degrees(self.valve_angle):g}",
-                    "with the finger's geometry (finger_pivot_x_mm, finger_pivot_y_mm, finger_roller_arm_mm, "
-                    "finger_pad_arm_mm, finger_pad_drop_mm, finger_valve_angle_deg) the valve opens only if the roller "
+                    "the finger's geometry (its pivot, arms, pad and valve angle) opens the valve only if the roller "
                     f"centre moves from {radius[0] * 1e3:.4g} to {radius[-1] * 1e3:.4g} mm from the cam centre, not "
-                    "steadily outwards: the cam cannot push it open", ": ")
+                    "steadily outwards: no cam can push it open", ": ")
         ratio = self.lever_ratio(psi)
         if not np.all(ratio > 0.0):
             return ("finger_pivot_x_mm", f"{self.pivot_x * 1e3:g}",
@@ -173,6 +172,12 @@ class PivotedFollower(RollerFollower):
         """The largest valve lift the pad gives [m], L_b (1 - sin chi_0) (the pad's centre square to the valve axis
         from the pivot), with the roller on the heel circle of radius ``heel`` [m]."""
         return self._pad[0] * (1.0 - np.sin(self._chi0(heel)))
+
+    def reach_below(self, heel) -> float:
+        """The deepest the pad presses the valve below its shut position [m], L_b (1 + sin chi_0) (the pad's centre
+        square to the valve axis from the pivot on the other side), with the roller on the heel circle of radius
+        ``heel`` [m]: below it no finger angle gives the valve's position."""
+        return self._pad[0] * (1.0 + np.sin(self._chi0(heel)))
 
     def rest_ratio(self, heel) -> float:
         """The lever ratio i_0 = G(psi_0) / L_r with the roller on the heel circle of radius ``heel`` [m]."""

@@ -5,6 +5,7 @@ power-polynomial cam, the port of a two-stroke).  Its texts are renderings of th
 in this folder, loaded once:
 
 * ``en.toml`` ``[record]``: the check's English text in ``results.json``, the console and ``[[accepted]]``;
+* ``en.toml`` ``[former]``: record texts a code had before, still names of its check in ``[[accepted]]``;
 * ``LANG.toml`` ``[checks]``: the check as the report in ``LANG`` names it;
 * ``LANG.toml`` ``[springs]``: the springs whose own checks are named after them;
 * ``LANG.toml`` ``[verdict]``: the verdict of a design, the same on the command line, in the report and in ``repr``;
@@ -76,16 +77,19 @@ def spring_text(spring, lang) -> str:
 @cache
 def _patterns():
     out = []
+    former = catalogue("en").get("former", {})
     for code in codes():
-        parts = [re.escape(lit) + ("" if name is None else f"(?P<{name}>.+?)")
-                 for lit, name, _, _ in string.Formatter().parse(_template("record", code))]
-        out.append((code, re.compile("".join(parts), re.IGNORECASE)))
+        for template in (_template("record", code), *former.get(code, ())):
+            parts = [re.escape(lit) + ("" if name is None else f"(?P<{name}>.+?)")
+                     for lit, name, _, _ in string.Formatter().parse(template)]
+            out.append((code, re.compile("".join(parts), re.IGNORECASE)))
     return tuple(out)
 
 
 def code_of(text) -> tuple[str, dict[str, str]] | None:
     """The code and the parameters of a check's English record text (case and blanks as written), or None: the
-    texts printed before the codes stay valid names of their checks.
+    texts printed before the codes stay valid names of their checks, and so do the record texts a code had before
+    (``en.toml`` ``[former]``: ``[[accepted]]`` tables written with them).
 
     >>> code_of("Power-polynomial exponent  n")
     ('law.power_polynomial.exponent', {'exponent': 'n'})

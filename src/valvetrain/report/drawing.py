@@ -155,7 +155,7 @@ def figure_inputs(results, figures) -> DesignResults:
 def _serve(conns, others, imports):
     """The forked process: import the plots and draw one figure, fork the other drawers (one a pipe of ``conns``
     after the first, this one's), import ``imports``, wait for the request, write its other files, draw the figures
-    it claims, send back the files or the first error.
+    it claims, send back the files or the first error; where the first process has ended (killed), end quietly.
 
     The drawers are forked before the request comes, each to read it from its own pipe: none waits for this one to
     finish importing ``imports`` (the DXF writer, a fifth of a second) when the request comes meanwhile.  A Ctrl-C is
@@ -219,7 +219,8 @@ def _serve(conns, others, imports):
     except EOFError:
         end()
     gc.freeze()              # nor through the request and the modules of ``imports`` (as _warm_up)
-    _send(conn, _draw(request, lambda: -1))          # the names alone (a claim of no figure): the report's
+    if not _send(conn, _draw(request, lambda: -1)):  # the names alone (a claim of no figure): the report's
+        end()                # the first process has ended: no figure is wanted
     answers = [_draw(request, claim, also)]
     for pid, mine in drawers:
         try:
@@ -253,12 +254,19 @@ def _receive(conn):
     return pickle.loads(request, buffers=buffers)
 
 
-def _send(conn, answer):
-    """Send an answer of :func:`_draw`; an exception that cannot be pickled as a RuntimeError that names it."""
+def _send(conn, answer) -> bool:
+    """Send an answer of :func:`_draw`; an exception that cannot be pickled as a RuntimeError that names it.  False
+    where no one reads it any more (the first process ended, killed even: a SIGKILL runs no cleanup), True else."""
     try:
-        conn.send(answer)
-    except Exception:  # noqa: BLE001 - an exception that cannot be pickled
-        conn.send((False, RuntimeError(f"drawing the figures: {answer[1]!r}")))
+        try:
+            conn.send(answer)
+        except (BrokenPipeError, ConnectionResetError):
+            raise
+        except Exception:  # noqa: BLE001 - an exception that cannot be pickled
+            conn.send((False, RuntimeError(f"drawing the figures: {answer[1]!r}")))
+    except (BrokenPipeError, ConnectionResetError):
+        return False
+    return True
 
 
 def _draw(request, claim, also=None):

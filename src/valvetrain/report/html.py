@@ -13,7 +13,6 @@ import numpy as np
 
 from .. import __version__
 from ..checks import describe_range, tally
-from ..design.drive import strength_allowed
 from ..design.dynamics import SOURCES as DYNAMICS_SOURCES
 from ..design.grinding import SOURCES as GRINDING_SOURCES
 from ..design.hydraulic_actuation import SOURCES as HYDRAULIC_SOURCES
@@ -24,12 +23,13 @@ from ..design.results import NamedValues, shown, shown_value
 from ..design.drive import spring_options
 from ..specification.si import si
 from ..tables import lift_table_columns
-from ..bibliography import WORKS, cited_in, corrections_notes
+from ..bibliography import WORKS, corrections_notes
 from ..units import to_display
-from ..locale import verdict
+from ..locale import catalogue, verdict
 from .i18n import SYMBOLS, TEXT
 from .numbers import number, percent
 from .russian import russian_citations, russian_typography
+from .typography import typography
 from .worked import crank_lines, flow_lines, law_lines, spring_lines, strength_lines, time_area_lines
 from .names import has_name, label, link_names, quantity_text, translate, unevaluated_text, unit_text, value_text
 from ..locale.wording import diagnosis_text, fit_reason
@@ -67,7 +67,7 @@ def fmt(x, lang="en") -> str:
     return "-" if x is None else str(value_text(x, lang))
 
 
-NAME_KEYS = ("name", "material", "table_file")
+NAME_KEYS = ("name", "material", "table_file", "lift_file", "cd_file")
 """Keys whose values are names given by the designer (shown as they are, in every language)."""
 
 CITE_KEYS = ("source", "gas_force_source")
@@ -253,16 +253,118 @@ def _fit_reason(rec, lang):
 
 
 def _strength(st):
-    """The strength chapter of a valve from its :class:`~valvetrain.design.drive.StrengthResult`: the rows, each
-    check (its code without ``strength.``, the check, its allowed range) and the checks whose parts are not given."""
-    return {"rows": shown(st, nested=False),
-            "checks": [(c.code.removeprefix("strength."), c, strength_allowed(c)) for c in st.checks],
-            "not_checked": st.not_checked}
+    """The strength chapter of a valve from its :class:`~valvetrain.design.drive.StrengthResult`: the rows and the
+    checks whose parts are not given (its checks are the chapter's, :func:`chapter_checks`)."""
+    return {"rows": shown(st, nested=False), "not_checked": st.not_checked}
+
+
+CHECK_CHAPTERS = {
+    "flow": "flow", "valve.seat_angle": "flow", "flow.time_area_velocity": "time_area",
+    "flow.charge_velocity": "time_area", "law": "law", "ramp": "law", "tappet_acceleration": "law", "timing": "law",
+    "seating_velocity": "law", "valve.clearance": "law", "drive.rocker_ratio": "law", "synthesis": "law",
+    "cam": "geometry", "profile": "geometry", "piston": "geometry", "follower": "geometry", "spring": "springs",
+    "drive.specific_mass": "springs", "gas_force": "springs", "strength": "strength", "dynamics": "dynamics",
+    "grinding": "grinding", "hydraulic": "hydraulic", "lubrication": "lubrication", "lash_adjuster": "lash_adjuster",
+    "engine": "engine", "crank": "crank", "camshaft": "camshaft", "ports": "ports", "breathing": "breathing",
+}
+"""The chapter of the report that shows the checks of a code: the entry of the code's longest dotted prefix
+(:func:`check_chapter`)."""
+
+
+def check_chapter(code) -> str:
+    """The chapter of the report that shows a check of ``code`` (:data:`CHECK_CHAPTERS`), ``"other"`` for a code
+    of no chapter.
+
+    >>> check_chapter("flow.throat_velocity"), check_chapter("flow.charge_velocity"), check_chapter("new.code")
+    ('flow', 'time_area', 'other')
+    """
+    parts = code.split(".")
+    for n in range(len(parts), 0, -1):
+        if ".".join(parts[:n]) in CHECK_CHAPTERS:
+            return CHECK_CHAPTERS[".".join(parts[:n])]
+    return "other"
+
+
+def chapter_checks(results) -> dict:
+    """Every check of a design in the chapter of the report that shows it: ``{valve name or None: {chapter:
+    [checks]}}`` (None: the engine's chapters).  A valve's check whose chapter the report does not have (a chapter
+    of a stage that did not run, a code of no chapter) is in the valve's ``"other"``, an engine's in
+    ``"engine"``: every check is shown once, with its limit."""
+    present = {None: {"engine", "crank" if results.crank is not None else "",
+                      "camshaft" if results.camshaft is not None else "",
+                      "ports" if results.two_stroke is not None else "",
+                      "breathing" if results.breathing is not None else ""}}
+    for name, v in results.valves.items():
+        present[name] = {"flow", "law", "time_area", "geometry", "springs", "strength", "other",
+                         *(k for k in ("dynamics", "grinding", "hydraulic", "lubrication", "lash_adjuster")
+                           if getattr(v, k) is not None)}
+    found = {key: {} for key in present}
+    for c in results.checks:
+        chapter = check_chapter(c.code)
+        if chapter not in present[c.valve]:
+            chapter = "engine" if c.valve is None else "other"
+        found[c.valve].setdefault(chapter, []).append(c)
+    return found
+
+
+def check_verdict(c, lang) -> str:
+    """A check's verdict in words (the colour of its row says the same): within or outside its range, which says
+    the kind of the range (an allowable limit, a recommended range, a remark's), accepted in the specification,
+    or not evaluated."""
+    t = TEXT[lang]
+    if not c.evaluated:
+        return t["verdict_unevaluated"]
+    text = t[("verdict_in_" if c.passed else "verdict_out_") + c.severity]
+    return f"{text}; {t['verdict_accepted']}" if c.accepted and not c.passed else text
+
+
+def check_margin(c, lang) -> str:
+    """The margin of a check in per cent (:attr:`~valvetrain.checks.Check.shown_margin`), "-" where the check has
+    no bound or no value."""
+    margin = c.shown_margin
+    return percent(margin, lang) if np.isfinite(margin) else "-"
+
+
+def check_class(c) -> str:
+    """The class of a check's row: ``pass``, or the severity of a check outside its range (``fail``, ``warn``,
+    ``info``), ``accepted`` added for an accepted one."""
+    if c.passed:
+        return "pass"
+    level = {"failure": "fail", "warning": "warn"}.get(c.severity, "info")
+    return f"{level} accepted" if c.accepted else level
+
+
+SHORT_FORMS = re.compile("|".join(re.escape(w.short) for w in WORKS.values()))
+"""The in-text form of every work of the bibliography."""
+
+
+def marked_citations(text) -> Markup:
+    """``text`` (a check's note, in the report's language) with the citations of the bibliography in it marked as
+    citations (``span.cite``)."""
+    parts = SHORT_FORMS.split(text)
+    cites = [Markup('<span class="cite">{}</span>').format(m) for m in SHORT_FORMS.findall(text)]
+    return Markup("").join(Markup.escape(p) + (cites[i] if i < len(cites) else "") for i, p in enumerate(parts))
+
+
+PART_PARAMS = ("port",)
+"""Parameters of a check's code that name a part the designer named (shown as names, in every language)."""
+
+
+def check_name(c, lang) -> str:
+    """A check's quantity in ``lang`` without its valve's or chapter's name (the chapter of the report that shows
+    it names it), a part the designer named marked as a name."""
+    text = quantity_text(c, lang)
+    head, sep, rest = text.partition(": ")
+    if sep and (head == c.valve or head in catalogue(lang)["chapters"].values()):
+        text = rest
+    names = [str(v) for k, v in c.params if k in PART_PARAMS]
+    return Markup("").join(Markup('<span class="name">{}</span>').format(part) if part in names else part
+                           for part in re.split(f"({'|'.join(map(re.escape, names))})", text)) if names else text
 
 
 DYNAMICS_HEADLINE = ("speed_range", "speeds", "jump_speed", "bounce_speed", "max_seating_velocity",
                      "max_seating_velocity_speed", "coil_clash_speed", "epsilon", "natural_frequency",
-                     "natural_frequencies", "max_revolutions", "unsettled_speeds")
+                     "natural_frequencies", "max_revolutions", "unsettled_speeds", "unsettled_note")
 """The fields of :class:`~valvetrain.design.dynamics.DynamicsResult` in the head of the report's dynamics chapter."""
 
 
@@ -281,11 +383,11 @@ def _except(result, *names):
 
 def _dynamics(d):
     """The dynamics chapter of a valve from its :class:`~valvetrain.design.dynamics.DynamicsResult`: headline rows,
-    the train, the estimates, the rated speed, resonance."""
+    their estimated errors, the train, the estimates, the rated speed, resonance."""
     if d is None:
         return None
     p, res = d.parameters, d.resonance
-    return {"headline": _present(d, *DYNAMICS_HEADLINE),
+    return {"headline": _present(d, *DYNAMICS_HEADLINE), "accuracy": _present(d.accuracy),
             "parameters": _present(p, *_except(p, "estimates", "node_masses")),
             "nodes": [] if p.node_masses is None else list(shown_value(p, "node_masses").items()),
             "estimates": p.estimates, "rated": _present(d.at_rated_speed),
@@ -348,6 +450,15 @@ CAMSHAFT_ROWS = ("lobes", "ratio", "peak", "peak_angle", "lowest", "mean", "fluc
 """The rows of the report's table of the camshaft's figures (fields of
 :class:`~valvetrain.design.camshaft.CamshaftRecord`)."""
 
+CAMSHAFT_RESPONSE = ("damping_ratio", "speed_range", "allowable", "fluctuation", "fluctuation_speed",
+                     "fluctuation_cylinder", "drive_force", "drive_force_speed")
+"""The rows of the report's table of the camshaft's torsional response (fields of
+:class:`~valvetrain.design.camshaft.TorsionalResponse`)."""
+
+CAMSHAFT_RESONANCES = ("mode", "frequency", "order", "speed", "fluctuation", "drive_force")
+"""The columns of the report's table of the resonances in the running range (fields of
+:class:`~valvetrain.design.camshaft.TorsionalResonance`)."""
+
 CAMSHAFT_STATIONS = ("positions", "station_inertia", "max_twist", "deflection")
 """The columns of the report's table of the lobe stations (fields of
 :class:`~valvetrain.design.camshaft.CamshaftRecord`)."""
@@ -364,10 +475,15 @@ def _camshaft(results, spec, plots):
             "rows": shown(figures, *CAMSHAFT_ROWS), "columns": [k for k, _ in stations],
             "stations": list(zip(shown_value(figures, "cylinders"), *(c for _, c in stations), strict=True)),
             "orders": [(k, amplitudes[k], n) for k, n in zip(orders, speeds, strict=True)],
-            "plots": plots.get("camshaft", {})}
+            "response": shown(figures.response, *CAMSHAFT_RESPONSE),
+            "resonance_columns": [k for k, _ in shown(figures.response.resonances[0], *CAMSHAFT_RESONANCES)]
+            if figures.response.resonances else [],
+            "resonances": [[v for _, v in shown(r, *CAMSHAFT_RESONANCES)] for r in figures.response.resonances],
+            "table": figures.response.table, "plots": plots.get("camshaft", {})}
 
 
-ADJUSTER_COLUMNS = ("speed", "leak_down", "valve_lash", "refill_share", "stiffness_at_valve", "pump_up", "held_open")
+ADJUSTER_COLUMNS = ("speed", "leak_down", "valve_lash", "refill_share", "stiffness_at_valve", "pump_up", "pumped_up",
+                    "held_open", "revolutions")
 """The columns of the report's table of the lash adjuster against engine speed (fields of
 :class:`~valvetrain.design.lash_adjuster.LashAdjusterPerSpeed`)."""
 
@@ -464,15 +580,24 @@ def render_report(results, plots, lang="en", folder=None) -> str:
     env.filters["range"] = lambda c: check_range(c, lang)
     env.filters["value"] = lambda c: check_value(c, lang)
     env.filters["not_checked"] = lambda note: not_checked(note, lang)
+    env.filters["verdict"] = lambda c: check_verdict(c, lang)
+    env.filters["margin"] = lambda c: check_margin(c, lang)
+    env.filters["check_class"] = check_class
+    env.filters["check_name"] = lambda c: check_name(c, lang)
+    env.filters["cited"] = marked_citations
     env.globals["cell"] = lambda key, value: cell(key, value, lang)
     env.globals["legend"] = symbol_legend(lang)
     env.filters["shown"] = shown_value
-    env.globals["figure"] = lambda name, alt: _figure(name, alt, TEXT[lang])
+    env.globals["figure"] = lambda name, alt, part="": _figure(name, alt, TEXT[lang], part)
+    env.globals["of_valve"] = lambda name: of_part("valve", name, lang)
+    env.globals["of_port"] = lambda name: of_part("port", name, lang)
+    env.filters["bare"] = lambda title: re.sub(r"^\d+\.\s*", "", title)
+    env.filters["lowerfirst"] = lambda text: text[:1].lower() + text[1:]
     spec = results.spec.model_dump()
     parts = list(results.valves) + (list(results.two_stroke.figures.ports) if results.two_stroke is not None else [])
     env.filters["quantity"] = lambda c: _quantity(c, lang, parts)
     env.filters["diagnosis"] = lambda d: diagnosis_text(d, lang)
-    valves = []
+    valves, checks = [], chapter_checks(results)
     for name, v in results.valves.items():
         spring = v.drive.spring
         lift = lift_table_columns(v.table)
@@ -513,6 +638,7 @@ def render_report(results, plots, lang="en", folder=None) -> str:
             "hydraulic": _hydraulic(v),
             "lubrication": _lubrication(v),
             "lash_adjuster": _lash_adjuster(v),
+            "checks": checks[name],
         })
     first_page = _summary(results, TEXT[lang])
     crank = None
@@ -527,6 +653,7 @@ def render_report(results, plots, lang="en", folder=None) -> str:
         ports = {"inputs": [(k, v) for k, v in _flatten(spec["two_stroke"]) if not k.startswith("ports.")],
                  "plots": plots.get("two_stroke", {}),
                  "ports": {name: shown(port) for name, port in results.two_stroke.figures.ports.items()}}
+    breathing = _breathing(results, spec, plots)
     warning_symbols = [key for key, codes in WARNING_SYMBOLS.items()
                        if any(w.code in codes for w in (*results.warnings, *results.accepted))]
     context = dict(
@@ -535,21 +662,103 @@ def render_report(results, plots, lang="en", folder=None) -> str:
         first_page=first_page, timing=plots.get("(timing)"), table_columns=TABLE_COLUMNS,
         engine_rows=shown(results.engine, "mean_piston_speed", "swept_volume", "displacement", "piston_area"),
         cam_card=results.cam_card,
-        conclusions=_conclusions(results, TEXT[lang]), document=spec.get("document", {}),
+        conclusions=_conclusions(results, TEXT[lang]), document=spec.get("document", {}), checks=checks[None],
         dynamics_sources=DYNAMICS_SOURCES, grinding_sources=GRINDING_SOURCES,
         hydraulic_sources=HYDRAULIC_SOURCES, lubrication_sources=LUBRICATION_SOURCES,
         adjuster_sources=ADJUSTER_SOURCES,
         step=REPORT_STEP_DEG, output=_flatten(spec["output"]), crank=crank, ports=ports,
-        camshaft=_camshaft(results, spec, plots), camshaft_sources=CAMSHAFT_SOURCES,
+        camshaft=_camshaft(results, spec, plots), camshaft_sources=CAMSHAFT_SOURCES, breathing=breathing,
     )
     template = env.get_template("report.html")
-    # the bibliography lists the works the report actually cites: found by their short form in a first rendering
-    first = unescape(template.render(sources=[], corrections=[], **context))
-    page = template.render(sources=[(WORKS[k].short, WORKS[k].reference()) for k in cited_in(first)],
-                           corrections=cited_corrections(first, lang), **context)
-    page = with_contents(page, TEXT[lang]["toc"])
-    page = russian_typography(russian_citations(page)) if lang == "ru" else page
+    # the corrections notes the report cites, found in a first rendering
+    first = unescape(template.render(corrections=[], **context))
+    page = numbered_citations(template.render(corrections=cited_corrections(first, lang), **context), lang)
+    page = with_contents(numbered_floats(page, lang), TEXT[lang]["toc"])
+    page = typography(russian_citations(page) if lang == "ru" else page, lang)
+    page = russian_typography(page) if lang == "ru" else page
     return page if folder is None else embedded(page, folder)
+
+
+BREATHING_FIELDS = ("speed", "intake_pressure", "intake_temperature", "exhaust_pressure", "wall_temperature",
+                    "air_mass_flow", "volumetric_efficiency", "trapped_mass", "residual_gas_fraction",
+                    "intake_backflow", "exhaust_backflow", "imep", "imep_gross", "pmep", "peak_pressure",
+                    "peak_pressure_angle", "exhaust_temperature", "torque", "power", "cycles")
+"""The rows of the breathing chapter's table of conditions (the torque and power of a fired engine)."""
+
+BREATHING_CURVE_FIELDS = ("speed", "air_mass_flow", "volumetric_efficiency", "residual_gas_fraction", "imep", "pmep",
+                          "peak_pressure", "torque", "power")
+"""The columns of the breathing chapter's table of the speed curve."""
+
+
+def _breathing(results, spec, plots):
+    """The breathing chapter's context: its inputs, the conditions' figures as rows (one column a condition), the
+    curve's as columns (one row a speed), the figures and the tables' files."""
+    b = results.breathing
+    if b is None:
+        return None
+
+    def table(records, keys):
+        keys = [k for k in keys if all(getattr(r, k) is not None for r in records)]
+        return keys, [[value for _, value in shown(r, *keys)] for r in records]
+
+    conditions = [r.figures for r in b.conditions]
+    keys, rows = table(conditions, BREATHING_FIELDS) if conditions else ([], [])
+    curve_keys, curve_rows = table([r.figures for r in b.curve], BREATHING_CURVE_FIELDS) if b.curve else ([], [])
+    return {"inputs": [(k, v) for k, v in _flatten(spec["breathing"]) if not k.startswith(("conditions", "curve"))],
+            "curve_inputs": _flatten(spec["breathing"]["curve"]) if spec["breathing"].get("curve") else [],
+            "names": [shown(conditions[0], k)[0][0] for k in keys] if conditions else [],
+            "rows": [list(col) for col in zip(*rows, strict=True)] if rows else [],
+            "curve_keys": [shown(b.curve[0].figures, k)[0][0] for k in curve_keys] if b.curve else [],
+            "curve_rows": curve_rows, "plots": plots.get("breathing", {}),
+            "files": [f"breathing_condition_{i}.csv" for i in range(1, len(b.conditions) + 1)]
+            + ["breathing_conditions.csv"] * bool(b.conditions) + ["breathing_curve.csv"] * bool(b.curve)}
+
+
+LOCATOR = (r"(?:works?|eqs?\.|sections?|ch\.|chapters?|[Tt]ables?|Fig\.|pp?\.|appendix|step|ф\.|формул[аы]|разделы?"
+           r"|гл\.|глава|рис\.|табл\.|таблица|работ[аы]|этап)")
+"""The words of a locator in a citation: ``work 2``, ``eqs. (2.23)-(2.34)``, ``section 2.1``, ``Fig. 2.6``..."""
+
+_NUMBER = r"(?:[A-Z]-?)?\d+(?:[.\-–]\d+)*[a-zа-я]?"
+_NUMBER = rf"(?:\({_NUMBER}\)|{_NUMBER})"
+_LOCATORS = rf"{LOCATOR}(?: {_NUMBER}(?:(?:-|–|, | and | и ){_NUMBER})*)?"
+_SHORTS = {alternative: key for key, work in WORKS.items()
+           for alternative in (work.short, str(Markup.escape(work.short)))}
+CITATION = re.compile("(" + "|".join(re.escape(s) for s in sorted(_SHORTS, key=len, reverse=True)) + ")"
+                      rf"((?:, {_LOCATORS}(?:(?:, | and | и ){_LOCATORS})*)?)")
+"""A citation of a work by its in-text form (raw or HTML-escaped) and its locators."""
+
+LANGUAGE_CODES = {"English": "en", "Russian": "ru", "Ukrainian": "uk", "Chinese": "zh-Latn", "German": "de"}
+"""The language of a work's entry in the list of sources, for the browser (hyphenation) and the typography."""
+
+_ALONE = re.compile(r'\((<span class="cite">)?(\[\d+[^\[\]()]*(?:\([^()]*\)[^\[\]()]*)*\])(</span>)?\)')
+"""A numbered citation alone in brackets (or in a citation's span in brackets)."""
+
+_KEPT_TEXT = re.compile(r'(<span class="name">.*?</span>|<style.*?</style>)', re.S)
+
+
+def numbered_citations(page, lang) -> str:
+    """The rendered report with every citation of a work (its in-text form and its locators) as its number in the
+    list of sources, the number in the order of the first citation (GOST 7.32): ``Shang Hanji (1988), eq. (2.1)``
+    -> ``[1, eq. (2.1)]``, a citation alone in brackets without them; and that list, each work in the form of GOST
+    7.1 (:meth:`valvetrain.bibliography.Work.reference`), at ``<!--sources-->``.  Names the designer gave are
+    left as they are.
+
+    >>> page = "<p>(Shang Hanji (1988), eq. 2.3); Heywood (1988); Shang Hanji (1988), ch. 3 and ch. 7</p><!--sources-->"
+    >>> print(numbered_citations(page, "en").split("<ol")[0])
+    <p>[1, eq. 2.3]; [2]; [1, ch. 3 and ch. 7]</p>
+    """
+    numbers = {}
+
+    def number(m):
+        n = numbers.setdefault(_SHORTS[m.group(1)], len(numbers) + 1)
+        return f"[{n}{', ' + m.group(2)[2:] if m.group(2) else ''}]"
+
+    parts = _KEPT_TEXT.split(page)
+    for i in range(0, len(parts), 2):
+        parts[i] = _ALONE.sub(r"\1\2\3", CITATION.sub(number, parts[i]))
+    items = "".join(f'<li value="{n}" lang="{LANGUAGE_CODES[WORKS[key].language]}">'
+                    f'{Markup.escape(WORKS[key].reference(lang))}</li>' for key, n in numbers.items())
+    return "".join(parts).replace("<!--sources-->", f'<ol class="bibliography">{items}</ol>', 1)
 
 
 CORRECTIONS_CITED = re.compile(r"(?:corrections notes?|поправк[аи]) (\d+)(?:-(\d+))?")
@@ -569,15 +778,99 @@ TALL_FIGURES = ("_kinematics.png",)
 """Figures of several stacked axes: printed taller than the others (the print style's ``img.tall``)."""
 
 
-def _figure(name, alt, t):
-    """The ``<img>`` of a figure of ``plots/``, linked (:func:`embedded` embeds it), or where it was not drawn
-    (``name`` undefined: not asked for, not in :data:`valvetrain.report.plots.MAIN_FIGURES`) the command that draws
-    it."""
+def _figure(name, alt, t, part=""):
+    """A figure of ``plots/``: its ``<img>``, linked (:func:`embedded` embeds it), and its caption (``alt`` and the
+    part it shows, ``part``; :func:`numbered_floats` numbers it), or where it was not drawn (``name`` undefined: not
+    asked for, not in :data:`valvetrain.report.plots.MAIN_FIGURES`) the command that draws it."""
     if not name:
         return Markup('<p class="src">{} <span class="name">valvetrain run --figures all</span></p>').format(
             t["figure_on_request"].format(alt))
-    return Markup('<img src="plots/{}" alt="{}"{}>').format(name, alt,
-                                                         Markup(' class="tall"') if name.endswith(TALL_FIGURES) else "")
+    tall = Markup(' class="tall"') if name.endswith(TALL_FIGURES) else ""
+    return Markup('<figure><img src="plots/{}" alt="{}"{}><figcaption>{}{}</figcaption></figure>').format(
+        name, alt, tall, alt[:1].upper() + alt[1:], part)
+
+
+def of_part(kind, name, lang) -> Markup:
+    """``, valve "intake"`` (``, клапан «intake»``): the part of the engine a caption's table or figure shows, the
+    name as a name."""
+    quoted = '«<span class="name">{}</span>»' if lang == "ru" else '"<span class="name">{}</span>"'
+    return Markup(", {} " + quoted).format(TEXT[lang][f"part_{kind}"], name)
+
+
+FLOATS = re.compile(r'<p class="tcap">|<figcaption>|<h2 class="appendix"')
+"""Where a table's caption (above it) or a figure's (below it) begins, and the appendix."""
+
+_SECTION = re.compile(r"(<h[23][^>]*>.*?</h[23]>)", re.S)
+_FLOAT_ID = re.compile(r'id="(table|figure)-([^"]+)"')
+
+
+def numbered_floats(page, lang) -> str:
+    """The rendered report with its tables and figures numbered (GOST 2.105): "Table 3 – ..." above a table,
+    "Figure 2 – ..." below a figure ("Таблица", "Рисунок"), each kind in its own sequence, those of the appendix
+    with its letter ("Table A.1"); and in every chapter and section that has any, under its heading, the sentence
+    that refers to them ("See tables 3–5 and figure 2.").
+
+    >>> page = ('<h3>Flow</h3><p class="tcap">Flow sections</p><table></table><figure><img src="plots/a.png" alt="">'
+    ...         '<figcaption>Lift</figcaption></figure><h2 class="appendix">Appendix A</h2><p class="tcap">Input</p>')
+    >>> print(numbered_floats(page, "en").replace("><", ">\\n<"))
+    <h3>Flow</h3>
+    <p class="refs">See <a href="#table-1">table 1</a> and <a href="#figure-1">figure 1</a>.</p>
+    <p class="tcap" id="table-1">Table 1 – Flow sections</p>
+    <table>
+    </table>
+    <figure>
+    <img src="plots/a.png" alt="">
+    <figcaption id="figure-1">Figure 1 – Lift</figcaption>
+    </figure>
+    <h2 class="appendix">Appendix A</h2>
+    <p class="refs">See <a href="#table-A.1">table A.1</a>.</p>
+    <p class="tcap" id="table-A.1">Table A.1 – Input</p>
+    """
+    t = TEXT[lang]
+    counts, prefix = {"table": 0, "figure": 0}, ""
+
+    def number(m):
+        nonlocal prefix
+        if m.group().startswith("<h2"):
+            counts.update(table=0, figure=0)
+            prefix = t["appendix_letter"] + "."
+            return m.group()
+        kind = "table" if "tcap" in m.group() else "figure"
+        counts[kind] += 1
+        label = f"{prefix}{counts[kind]}"
+        return f'{m.group()[:-1]} id="{kind}-{label}">{t[kind + "_word"]} {label} – '
+
+    parts = _SECTION.split(FLOATS.sub(number, page))
+    for i in range(1, len(parts), 2):
+        found = {"table": [], "figure": []}
+        for kind, label in _FLOAT_ID.findall(parts[i + 1]):
+            found[kind].append(label)
+        refs = [_refs(kind, found[kind], t) for kind in ("table", "figure") if found[kind]]
+        if refs:
+            parts[i] += '<p class="refs">' + t["see"].format(f" {t['and']} ".join(refs)) + "</p>"
+    return "".join(parts)
+
+
+def _refs(kind, labels, t) -> str:
+    """``table 3``, ``tables 3–5``, ``tables 3, 7`` (the labels of one kind in a section), each number a link."""
+    def link(label):
+        return f'<a href="#{kind}-{label}">{label}</a>'
+
+    runs, start = [], 0
+    for k in range(1, len(labels) + 1):
+        if k == len(labels) or _index(labels[k]) != _index(labels[k - 1]) + 1:
+            a, b = labels[start], labels[k - 1]
+            runs.append(link(a) if a == b else f"{link(a)}, {link(b)}" if k - start == 2 else f"{link(a)}–{link(b)}")
+            start = k
+    word = t[f"{kind}_ref"][len(labels) > 1]
+    if len(labels) == 1:
+        return f'<a href="#{kind}-{labels[0]}">{word} {labels[0]}</a>'
+    return f"{word} {', '.join(runs)}"
+
+
+def _index(label) -> int:
+    """The number of a table's or figure's label (``3``, ``A.3``)."""
+    return int(label.rsplit(".", 1)[-1])
 
 
 FIGURE_LINK = re.compile(r'<img src="plots/([^"]*)"')

@@ -129,7 +129,8 @@ NAMES = {
     "spring.installed_length": ("installed length", "длина в установленном состоянии"),
     "max_free_length": ("max free length", "наибольшая длина в свободном состоянии"),
     "contact_modulus": ("contact modulus", "приведённый модуль упругости в контакте"),
-    "head_diameter": ("valve head diameter", "диаметр тарелки клапана"), "cam_width": ("cam width", "ширина кулачка"),
+    "head_diameter": ("valve head diameter", "диаметр тарелки клапана"),
+    "stem_diameter": ("valve stem diameter", "диаметр стержня клапана"), "cam_width": ("cam width", "ширина кулачка"),
     "camshaft_diameter": ("camshaft diameter", "диаметр распределительного вала"),
     "camshaft_bore": ("camshaft bore", "диаметр отверстия распределительного вала"),
     "camshaft_span": ("camshaft span between bearings", "пролёт распределительного вала между опорами"),
@@ -217,6 +218,8 @@ NAMES = {
     "tip_contact": ("contact on the valve tip across its axis: shut, full lift",
                     "точка контакта на торце клапана от его оси: закрыт, полный подъём"),
     "tip_scrub": ("travel of the contact across the valve tip", "перемещение точки контакта по торцу клапана"),
+    "tip_contact_max": ("largest distance of the contact from the valve axis",
+                        "наибольшее смещение точки контакта от оси клапана"),
     "pressure_angle_at_rest": ("pressure angle on the heel circle", "угол давления на тыльной окружности"),
     "min_clearance": ("min valve-piston clearance", "наименьший зазор клапан-поршень"),
     "crank": ("at crank angle", "при угле ПКВ"), "piston_gap_tdc": ("valve-piston gap at TDC", "зазор клапан-поршень в ВМТ"),
@@ -394,7 +397,53 @@ NAMES = {
     "duration": ("open", "открыто"), "max_area": ("max port area", "наибольшая площадь окна"),
     "opens_before_bdc": ("opens before BDC", "открывается до НМТ"),
     "opens_before_bdc_series": ("opens before BDC, series formula (8.1)", "открывается до НМТ, по формуле (8.1)"),
-    "speed_range": ("range of speeds", "диапазон частот вращения"), "piston_height": ("piston height", "высота поршня"),
+    "speed_range": ("range of speeds", "диапазон частот вращения"),
+    # breathing
+    "breathing.mode": ("cycle: motored or fired", "цикл: прокрутка или рабочий"),
+    "breathing.wall_temperature": ("wall temperature", "температура стенок"),
+    "wall_temperature": ("wall temperature", "температура стенок"),
+    "breathing.heat_transfer": ("wall heat transfer", "теплоотдача в стенки"),
+    "breathing.fuel": ("fuel", "топливо"), "breathing.equivalence_ratio": ("equivalence ratio φ", "коэффициент избытка топлива φ"),
+    "breathing.combustion_efficiency": ("share of the fuel's heat released", "доля выделившейся теплоты топлива"),
+    "breathing.cell": ("longest cell of the runners", "наибольшая ячейка трубопроводов"),
+    "breathing.cycle_tolerance": ("relative change at which the cycles repeat", "относительное изменение, при котором циклы повторяются"),
+    "breathing.max_cycles": ("most cycles", "наибольшее число циклов"),
+    "intake.lift_file": ("file of the intake valve's lift", "файл подъёма впускного клапана"),
+    "exhaust.lift_file": ("file of the exhaust valve's lift", "файл подъёма выпускного клапана"),
+    "intake.valves": ("intake valves", "число впускных клапанов"), "exhaust.valves": ("exhaust valves", "число выпускных клапанов"),
+    "intake.cd_file": ("file of the intake valve's C_D(L/D)", "файл C_D(L/D) впускного клапана"),
+    "exhaust.cd_file": ("file of the exhaust valve's C_D(L/D)", "файл C_D(L/D) выпускного клапана"),
+    "intake.cd_diameter": ("reference diameter D of the intake C_D", "опорный диаметр D коэффициента C_D впуска"),
+    "exhaust.cd_diameter": ("reference diameter D of the exhaust C_D", "опорный диаметр D коэффициента C_D выпуска"),
+    "intake.cd_reference": ("reference area of the intake C_D", "опорная площадь C_D впуска"),
+    "exhaust.cd_reference": ("reference area of the exhaust C_D", "опорная площадь C_D выпуска"),
+    "intake.runner_length": ("intake runner length", "длина впускного трубопровода"),
+    "exhaust.runner_length": ("exhaust runner length", "длина выпускного трубопровода"),
+    "intake.runner_diameter": ("intake runner diameter", "диаметр впускного трубопровода"),
+    "exhaust.runner_diameter": ("exhaust runner diameter", "диаметр выпускного трубопровода"),
+    "breathing.intake_pressure": ("intake plenum pressure p_i", "давление во впускном ресивере p_i"),
+    "breathing.intake_temperature": ("intake plenum temperature T_i", "температура во впускном ресивере T_i"),
+    "breathing.exhaust_pressure": ("exhaust plenum pressure p_e", "давление в выпускном ресивере p_e"),
+    "breathing.exhaust_temperature": ("mean exhaust temperature", "средняя температура отработавших газов"),
+    "breathing.curve.exhaust_temperature": ("exhaust plenum temperature", "температура в выпускном ресивере"),
+    "breathing.curve.points": ("speeds of the curve", "число частот вращения"),
+    "breathing.air_mass_flow": ("air mass flow ṁ_a", "расход воздуха ṁ_в"),
+    "breathing.volumetric_efficiency": ("volumetric efficiency η_v", "коэффициент наполнения η_v"),
+    "breathing.trapped_mass": ("trapped mass", "масса заряда"),
+    "breathing.residual_gas_fraction": ("residual gas fraction", "коэффициент остаточных газов"),
+    "breathing.intake_backflow": ("back-flow into the intake port a cycle", "обратный выброс во впускной канал за цикл"),
+    "breathing.exhaust_backflow": ("back-flow from the exhaust port a cycle", "заброс из выпускного канала за цикл"),
+    "breathing.pmep": ("pumping mean effective pressure PMEP", "давление насосных потерь"),
+    "breathing.imep": ("net IMEP", "среднее индикаторное давление нетто"),
+    "breathing.imep_gross": ("gross IMEP", "среднее индикаторное давление брутто"),
+    "breathing.peak_pressure": ("peak cylinder pressure", "наибольшее давление в цилиндре"),
+    "breathing.peak_pressure_crank": ("where the pressure peaks, from the gas-exchange TDC",
+                                      "угол наибольшего давления от ВМТ газообмена"),
+    "intake_temperature": ("intake plenum temperature", "температура во впускном ресивере"),
+    "breathing.wall_heat": ("heat to the walls a cycle", "теплота в стенки за цикл"),
+    "breathing.torque": ("indicated torque", "индикаторный крутящий момент"),
+    "breathing.power": ("indicated power", "индикаторная мощность"),
+    "breathing.cycles": ("cycles to repeat", "число циклов до повторения"), "piston_height": ("piston height", "высота поршня"),
 }
 """Names of the keys without their unit suffix (or a whole key where the suffix is no unit): ``(en, ru)``."""
 
@@ -420,6 +469,9 @@ VALUES = {
     "stated": "задана в исходных данных",
     "true": "да", "false": "нет", "outer": "наружная", "inner": "внутренняя", "any": "любое",
     "1dof": "одномассовая", "multi": "многомассовая", "none": "нет", "infeed": "подачей круга",
+    "motored": "прокрутка", "fired": "рабочий цикл", "woschni": "по Вошни", "adiabatic": "нет (адиабатные стенки)",
+    "port": "площадь канала π D²/4", "curtain": "площадь цилиндрической щели π D L", "isooctane": "изооктан",
+    "n-heptane": "н-гептан", "methane": "метан", "propane": "пропан", "ethanol": "этанол",
 }
 """Russian of the text values of the specification and the records (their English is the value itself)."""
 
@@ -462,7 +514,7 @@ def _lookup(path, table):
 
 ANGLE_UNITS = {
     **dict.fromkeys(("opens", "closes", "nose_crank", "stroke_crank", "valve_opens_crank", "valve_closes_crank",
-                     "lift.crank", "opens_crank", "closes_crank"), "crank deg"),
+                     "lift.crank", "opens_crank", "closes_crank", "peak_pressure_crank"), "crank deg"),
     **dict.fromkeys(("phi1", "phi2", "phi3", "phi_p0", "ramp", "event_cam", "rho_min_cam", "rho_max_cam", "lift.cam",
                      "output.table_step_cam", "cam_force_max_cam", "cam_contact_stress_cam", "lobe_centre_cam",
                      "roller_side_force_cam"),
@@ -614,6 +666,10 @@ NAMES.update({
     "lash_adjuster.supply_pressure": ("oil supply pressure", "давление подачи масла"),
     "lash_adjuster.plunger_spring": ("plunger spring force", "сила пружины плунжера"),
     "lash_adjuster.check_valve_diameter": ("check valve bore", "диаметр седла обратного клапана"),
+    "lash_adjuster.plunger_eccentricity": ("eccentricity of the plunger in its bore e / c",
+                                           "эксцентриситет плунжера в отверстии e / c"),
+    "lash_adjuster.plunger_travel": ("plunger travel from its working position to its stop",
+                                     "ход плунжера от рабочего положения до упора"),
 })
 
 NAMES.update({
@@ -640,6 +696,11 @@ NAMES.update({
                                  "жёсткость привода распределительного вала на радиусе начальной окружности"),
     "camshaft.sprocket_inertia": ("polar inertia of the sprocket, pulley or gear",
                                   "момент инерции звёздочки, шкива или шестерни"),
+    "camshaft.torsional_damping_ratio": ("modal damping ratio of the torsional modes",
+                                         "коэффициент демпфирования форм крутильных колебаний"),
+    "camshaft.max_timing_play": ("allowable movement of the cam sprocket against the crankshaft, along its pitch circle",
+                                 "допустимое смещение звёздочки распределительного вала относительно коленчатого по "
+                                 "начальной окружности"),
 })
 
 NAMES.update({

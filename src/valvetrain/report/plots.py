@@ -17,7 +17,8 @@ import itertools
 from matplotlib import rc_context
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
-from matplotlib.ticker import ScalarFormatter
+from matplotlib.text import Text
+from matplotlib.ticker import NullFormatter, ScalarFormatter
 import numpy as np
 from PIL import Image
 
@@ -28,6 +29,7 @@ from ..units import MM, per_cam_degree, rad_to_deg, to_display
 from .i18n import TEXT
 from .names import value_text
 from .numbers import number
+from .typography import GREEK, SYMBOL
 
 
 DPI = 110
@@ -74,13 +76,30 @@ def every_axes(fig) -> list[Any]:
 
 def _localised(fig, t) -> Figure:
     """``fig`` with a :class:`DecimalComma` on every axis of plain numbers when ``t`` is the Russian texts (an axis of
-    angles of a polar plot or a logarithmic one keeps its own formatter); the English figures keep the point."""
+    angles of a polar plot or a logarithmic one keeps its own formatter; the English figures keep the point), and in
+    every text a symbol's index as a subscript (:func:`math_symbols`)."""
     if t["lang"] == "ru":
         for ax in every_axes(fig):
             for axis in (ax.xaxis, ax.yaxis):
                 if type(axis.get_major_formatter()) is ScalarFormatter:
                     axis.set_major_formatter(DecimalComma())
+    for text in fig.findobj(Text):
+        label = text.get_text()
+        if "_" in label and "$" not in label:
+            text.set_text(math_symbols(label))
     return fig
+
+
+def math_symbols(label) -> str:
+    """A figure's text with each symbol's index as a subscript in matplotlib's mathtext (the report's rule,
+    :data:`valvetrain.report.typography.SYMBOL`).
+
+    >>> math_symbols("tappet h_T, a_T max, m_кл|a_v|, phi_p0, stroke_mm") == (
+    ...     "tappet $h_{T}$, $a_{T" + chr(92) + ",max}$, $m_{кл}$|$a_{v}$|, $φ_{p0}$, stroke_mm")
+    True
+    """
+    return SYMBOL.sub(lambda m: f"${GREEK.get(m.group(1), m.group(1))}_{{{m.group(2).replace(' ', chr(92) + ',')}}}$",
+                      label)
 
 
 def segment_boundaries(law) -> np.ndarray:
@@ -423,8 +442,21 @@ def crank_forces_data(crank) -> dict[str, Any]:
             "p_N": c.p_N * 1e-6, "p_S": c.p_S * 1e-6, "p_K": c.p_K * 1e-6, "p_T": c.p_T * 1e-6}
 
 
+def _cycle_axis(ax, x) -> None:
+    """An axis of the cycle's angle: from 0 to the cycle's end (720 deg for a four-stroke), a tick every 90 deg."""
+    period = float(x[-1] + (x[1] - x[0]))
+    ax.set_xlim(0.0, period)
+    ax.set_xticks(np.arange(0.0, period + 1.0, 90.0))
+
+
+def _legend_outside(ax, fontsize=8) -> None:
+    """The legend of ``ax`` right of it, where it covers no curve (the figure's right margin leaves room)."""
+    ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=fontsize, borderaxespad=0.0)
+
+
 def draw_crank_forces(d, t) -> Figure:
-    """Specific forces against the crank angle, as Fig. 2.6 of Power units manual (n.d.): gas, inertia and total; N, S, K, T."""
+    """Specific forces against the crank angle, as Fig. 2.6 of Power units manual (n.d.): gas, inertia and total; N, S, K,
+    T; the legends right of the axes, the angle over the whole cycle."""
     x = d["crank_deg"]
     fig = Figure(figsize=(9, 8))
     axes = fig.subplots(2, 1, sharex=True)
@@ -435,12 +467,12 @@ def draw_crank_forces(d, t) -> Figure:
     for ax in axes:
         ax.axhline(0, color="0.5", lw=0.5)
         ax.grid(alpha=0.3)
-        ax.legend(loc="upper right")
+        _legend_outside(ax)
         ax.set_ylabel(t["specific_force"])
     axes[-1].set_xlabel(t["cycle_deg"])
-    axes[-1].set_xticks(np.arange(0, x.max() + 1, 90))
+    _cycle_axis(axes[-1], x)
     fig.suptitle(t["crank_forces"])
-    fig.subplots_adjust(left=0.08, right=0.97, bottom=0.08, top=0.93, hspace=0.08)
+    fig.subplots_adjust(left=0.09, right=0.82, bottom=0.08, top=0.93, hspace=0.08)
     return _localised(fig, t)
 
 
@@ -457,20 +489,22 @@ def crank_torque_data(crank) -> dict[str, Any]:
 
 
 def draw_crank_torque(d, t) -> Figure:
-    """Torque of every cylinder and the total over one cycle (Fig. 2.7 of Power units manual (n.d.))."""
+    """Torque of every cylinder and the total over one cycle (Fig. 2.7 of Power units manual (n.d.)), the mean torque
+    with its value; the legend right of the axes, the angle over the whole cycle."""
     x = d["engine_deg"]
     fig = Figure(figsize=(9, 5))
     ax = fig.subplots()
     for i, m in enumerate(d["cylinders_Nm"], start=1):
         ax.plot(x, m, lw=0.8, alpha=0.7, label=f"{t['cylinder']} {i}")
-    ax.plot(x, d["total_Nm"], color="k", lw=1.8, label=t["total"])
-    ax.axhline(d["mean_Nm"], color="C3", ls="--", lw=1.0, label=t["mean"])
+    ax.plot(x, d["total_Nm"], color="k", lw=1.8, label=t["total"], zorder=3)
+    ax.axhline(d["mean_Nm"], color="C3", ls="--", lw=1.0, label=f"{t['mean']} {number(d['mean_Nm'], t['lang'])}")
+    ax.axhline(0, color="0.5", lw=0.5)
     ax.set_xlabel(t["engine_deg"])
     ax.set_ylabel(t["torque"])
-    ax.set_xticks(np.arange(0, x.max() + 1, 90))
+    _cycle_axis(ax, x)
     ax.grid(alpha=0.3)
-    ax.legend(loc="upper right", fontsize=8)
-    fig.subplots_adjust(left=0.13, right=0.97, bottom=0.13, top=0.96)
+    _legend_outside(ax)
+    fig.subplots_adjust(left=0.11, right=0.82, bottom=0.11, top=0.96)
     return _localised(fig, t)
 
 
@@ -493,9 +527,17 @@ def draw_crank_pin(d, t) -> Figure:
     fig = Figure(figsize=(7, 7))
     ax = fig.subplots()
     ax.plot(tang, rad, color="C0")
-    for deg in range(0, int(angle[-1]) + 1, 180):
+    near = 0.03 * max(np.ptp(tang), np.ptp(rad))
+    marks = []                                     # (point, the cycle angles there): angles at one point together
+    for deg in range(0, int(angle[-1]) + 1, 90):
         k = int(np.argmin(np.abs(angle - deg)))
-        ax.annotate(f"{deg}", (tang[k], rad[k]), fontsize=8)
+        point = np.array([tang[k], rad[k]])
+        same = next((m for m in marks if np.hypot(*(m[0] - point)) < near), None)
+        marks.append((point, [deg])) if same is None else same[1].append(deg)
+    for point, degs in marks:
+        ax.plot(*point, "o", color="C3", ms=3)
+        ax.annotate(", ".join(f"{deg}°" for deg in degs), point, xytext=(4, 4), textcoords="offset points",
+                    fontsize=8, color="C3")
     ax.axhline(0, color="0.5", lw=0.5)
     ax.axvline(0, color="0.5", lw=0.5)
     ax.set_aspect("equal", adjustable="datalim")
@@ -932,11 +974,124 @@ def camshaft_torque_figure(shaft, t) -> Figure:
     return draw_camshaft_torque(camshaft_torque_data(shaft), t)
 
 
+def camshaft_torsion_data(shaft) -> dict[str, Any]:
+    """The series of :func:`draw_camshaft_torsion`: the engine speed [rpm], the fluctuation of each cylinder's lobe
+    timing [cam deg] and its allowable, the largest force of the timing drive [N] and its allowable, the cylinders and
+    the speeds of the resonances in the running range [rpm]."""
+    f, t = shaft.figures, shaft.figures.response
+    return {"speed_rpm": to_display(shaft.speeds, "rpm"), "fluctuation_deg": rad_to_deg(shaft.fluctuation),
+            "allowable_deg": float(rad_to_deg(t.allowable)), "force_N": shaft.drive_forces,
+            "force_allowable_N": f.drive_allowable, "cylinders": f.cylinders,
+            "resonances_rpm": [float(to_display(r.speed, "rpm")) for r in t.resonances]}
+
+
+def draw_camshaft_torsion(d, t) -> Figure:
+    """The steady torsional response of the camshaft against the engine speed: the fluctuation of each cylinder's lobe
+    timing and the largest force of the timing drive, each with its allowable, the resonances marked."""
+    fig = Figure(figsize=(9, 7))
+    top, bottom = fig.subplots(2, 1, sharex=True)
+    for i, cylinder in enumerate(d["cylinders"]):
+        top.plot(d["speed_rpm"], d["fluctuation_deg"][:, i], lw=1.0, label=f"{t['cs_cylinder']} {cylinder}")
+    top.axhline(d["allowable_deg"], color="C3", ls="--", lw=1.0, label=t["cs_allowable"])
+    bottom.plot(d["speed_rpm"], d["force_N"], color="k", lw=1.2)
+    bottom.axhline(d["force_allowable_N"], color="C3", ls="--", lw=1.0, label=t["cs_allowable"])
+    for ax in (top, bottom):
+        for n in d["resonances_rpm"]:
+            ax.axvline(n, color="0.6", ls=":", lw=0.8)
+        ax.grid(alpha=0.3)
+        ax.legend(loc="upper left", fontsize=8)
+    top.set_ylabel(t["cs_fluctuation"])
+    bottom.set_ylabel(t["cs_drive_force"])
+    bottom.set_xlabel(t["cs_speed"])
+    fig.suptitle(t["cs_torsion_title"])
+    fig.subplots_adjust(left=0.1, right=0.97, bottom=0.08, top=0.93, hspace=0.12)
+    return _localised(fig, t)
+
+
+def camshaft_torsion_figure(shaft, t) -> Figure:
+    """:func:`draw_camshaft_torsion` of :func:`camshaft_torsion_data`."""
+    return draw_camshaft_torsion(camshaft_torsion_data(shaft), t)
+
+
+def _condition_label(record, t):
+    """A condition's legend: its speed and intake plenum pressure."""
+    return t["br_condition"].format(speed=number(shown_value(record, "speed"), t["lang"]),
+                                    pressure=number(shown_value(record, "intake_pressure"), t["lang"]))
+
+
+def breathing_pv_data(breathing, t) -> dict[str, Any]:
+    """The series of :func:`draw_breathing_pv`: each condition's legend, cylinder volume [cm3] and pressure [kPa] over
+    its converged cycle."""
+    return {"cycles": [(_condition_label(r.figures, t), r.columns.volume * 1e6, r.columns.pressure * 1e-3)
+                       for r in breathing.conditions]}
+
+
+def draw_breathing_pv(d, t) -> Figure:
+    """The indicator diagrams of the breathing's conditions: p-V and log p - log V (the compression and expansion
+    straight lines of slope -n, the pumping loop at the bottom)."""
+    fig = Figure(figsize=(11, 5))
+    linear, logs = fig.subplots(1, 2)
+    for label, v, p in d["cycles"]:
+        linear.plot(v, p, lw=1.0, label=label)
+        logs.loglog(v, p, lw=1.0, label=label)
+    for ax in (linear, logs):
+        ax.set_xlabel(t["br_volume"])
+        ax.set_ylabel(t["br_pressure"])
+        ax.grid(alpha=0.3, which="both")
+    for axis in (logs.xaxis, logs.yaxis):       # plain numbers at the decades, none between them
+        axis.set_major_formatter(ScalarFormatter())
+        axis.set_minor_formatter(NullFormatter())
+    linear.legend(loc="upper right", fontsize=8)
+    linear.set_title(t["br_pv"])
+    logs.set_title(t["br_log_pv"])
+    fig.subplots_adjust(left=0.07, right=0.98, bottom=0.12, top=0.92, wspace=0.25)
+    return _localised(fig, t)
+
+
+def breathing_pv_figure(breathing, t) -> Figure:
+    """:func:`draw_breathing_pv` of :func:`breathing_pv_data`."""
+    return draw_breathing_pv(breathing_pv_data(breathing, t), t)
+
+
+def breathing_speed_data(breathing) -> dict[str, Any]:
+    """The series of :func:`draw_breathing_speed`: the curve's speeds [rpm] (else the conditions'), volumetric
+    efficiency and, fired, the indicated torque [N m]."""
+    records = [r.figures for r in (breathing.curve or breathing.conditions)]
+    torque = [shown_value(r, "torque") for r in records] if records[0].torque is not None else None
+    return {"speed_rpm": [shown_value(r, "speed") for r in records],
+            "efficiency": [r.volumetric_efficiency for r in records], "torque_Nm": torque,
+            "curve": bool(breathing.curve)}
+
+
+def draw_breathing_speed(d, t) -> Figure:
+    """Volumetric efficiency (and the indicated torque of a fired engine) against the speed."""
+    fig = Figure(figsize=(9, 5))
+    ax = fig.subplots()
+    style = dict(marker="o", lw=1.2) if d["curve"] else dict(marker="o", ls="none")
+    ax.plot(d["speed_rpm"], d["efficiency"], color="C0", label=t["br_efficiency"], **style)
+    ax.set_xlabel(t["speed"])
+    ax.set_ylabel(t["br_efficiency"])
+    ax.grid(alpha=0.3)
+    if d["torque_Nm"] is not None:
+        right = ax.twinx()
+        right.plot(d["speed_rpm"], d["torque_Nm"], color="C3", label=t["br_torque"], **style)
+        right.set_ylabel(t["br_torque"])
+    ax.set_title(t["br_speed_title"])
+    fig.subplots_adjust(left=0.1, right=0.9, bottom=0.12, top=0.92)
+    return _localised(fig, t)
+
+
+def breathing_speed_figure(breathing, t) -> Figure:
+    """:func:`draw_breathing_speed` of :func:`breathing_speed_data`."""
+    return draw_breathing_speed(breathing_speed_data(breathing), t)
+
+
 ENGINE_FIGURES = {"crank": {"crank_forces": crank_forces_figure, "crank_torque": crank_torque_figure,
                             "crank_pin_polar": crank_pin_figure},
                   "two_stroke": {"two_stroke_ports": two_stroke_ports_figure,
                                  "two_stroke_time_area": two_stroke_speed_figure},
-                  "camshaft": {"camshaft_torque": camshaft_torque_figure}}
+                  "camshaft": {"camshaft_torque": camshaft_torque_figure, "camshaft_torsion": camshaft_torsion_figure},
+                  "breathing": {"breathing_pv": breathing_pv_figure, "breathing_speed": breathing_speed_figure}}
 
 
 FIGURES = {"kinematics": kinematics_figure, "contour": contour_figure, "time_area": time_area_figure,
@@ -947,7 +1102,8 @@ FIGURE_SETS = ("main", "all", "none")
 ``all`` every one, ``none`` none."""
 
 MAIN_FIGURES = frozenset({"kinematics", "contour", "dynamics_speed", "grinding", "hydraulic", "timing",
-                          "crank_torque", "two_stroke_ports", "camshaft_torque"})
+                          "crank_torque", "two_stroke_ports", "camshaft_torque", "camshaft_torsion", "breathing_pv",
+                          "breathing_speed"})
 """The figures drawn by default (``figures="main"``): the valve's lift law and its cam, one figure of each further
 stage that a section asks for (the dynamics' seating velocity, bounce and contact force against the speed; the
 grinding; the hydraulic drive over a revolution; the crank and camshaft torques; the ports) and the timing diagram.
@@ -956,6 +1112,12 @@ characteristic, the stresses against the speed, the dynamics' maps over angle an
 against the speed, the crank forces and pin load, the ports' time-area, whose extremes the report's tables give.
 A figure costs 0.1-0.4 s of processor time, the design of a valve's numbers a few milliseconds to a few tenths of
 a second."""
+
+
+def drawn(stage, kind, data) -> bool:
+    """Whether an engine chapter's figure has something to show: the breathing's speed figure needs its curve or
+    two conditions or more."""
+    return not (kind == "breathing_speed" and not data.curve and len(data.conditions) < 2)
 
 
 def write_plots(results, folder, lang="en", figures="main", claim=None) -> dict[str, Any]:
@@ -992,5 +1154,5 @@ def write_plots(results, folder, lang="en", figures="main", claim=None) -> dict[
         data = getattr(results, stage)
         if data is not None:
             written[stage] = {kind: save(lambda make=make: make(data, t), f"{kind}.png")
-                              for kind, make in figures_of_stage.items() if wanted(kind)}
+                              for kind, make in figures_of_stage.items() if wanted(kind) and drawn(stage, kind, data)}
     return written

@@ -75,7 +75,8 @@ def report_html(result, lang="en") -> str:
         driver = max(drivers, key=lambda k: abs(drivers[k])) if drivers else None
         low, high = c["confidence_95"]
         name = check_name(c, lang)
-        lines.append(f"<tr><td>{name}</td><td>{t['severities'][c['severity']]}</td><td>{c['failures']} / "
+        severity = t["severities"][c["severity"]] + (f", {t['accepted']}" if c["accepted"] else "")
+        lines.append(f"<tr><td>{name}</td><td>{severity}</td><td>{c['failures']} / "
                      f"{c['samples']}</td><td>{p:.4g}</td><td>{low:.4g}...{high:.4g}</td><td>"
                      + (f"{key_name(driver, lang)} ({drivers[driver]:+.2f})" if driver else t["none"]) + "</td></tr>")
         if c["margin"] is not None:

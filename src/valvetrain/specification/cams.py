@@ -167,10 +167,9 @@ def _closing_problem(at, problem):
                    text=f"{at}.cam.closing: {problem}")
 
 
-HYDRAULIC_NO_RAMP = ("its ramp takes up a mechanical clearance, and a lash_adjuster section leaves none on the base "
-                     "circle (clearance_mm = 0): allowed with it a cam without a ramp (polydyne or polynomial with ramp "
-                     "= false, harmonic, three_arc, tangent, table), or a small quieting ramp of lash_adjuster."
-                     "ramp_height_mm")
+HYDRAULIC_NO_RAMP = ("its ramp takes up a clearance, which a lash_adjuster leaves none of: allowed with it a cam "
+                     "without a ramp (polydyne, polynomial with ramp = false, harmonic, three_arc, tangent, table) or "
+                     "lash_adjuster.ramp_height_mm")
 """Why a cam with a ramp is refused on a valve with a hydraulic lash adjuster without ``ramp_height_mm``: the ramps of
 this package take up a mechanical clearance (their height is ``clearance_mm``), and a hydraulic train has none to take
 up; its quieting ramp is given by ``[lash_adjuster] ramp_height_mm`` (:func:`ramp_height`)."""

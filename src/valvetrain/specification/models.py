@@ -12,7 +12,7 @@ from typing import Annotated, ClassVar, Literal, Optional, Union
 
 from pydantic import Field, ValidationError, field_validator, model_validator
 
-from ..files import read_indicator
+from ..files import read_cd_table, read_indicator, read_valve_lift
 from ..layouts import LAYOUTS, layout
 from ..spring_materials import GRADES, grade
 from .cams import LAWS, Cam
@@ -162,6 +162,7 @@ class Parts(_Model):
 
     contact_modulus_MPa: _bounded(1e3, 1e6, "MPa") = 2.1e5
     head_diameter_mm: Optional[Length(2.0, 1000.0, low_open=False)] = None
+    stem_diameter_mm: Optional[Length(1.0, 100.0, low_open=False)] = None
     cam_width_mm: Optional[Length(1.0, 200.0, low_open=False)] = None
     camshaft_diameter_mm: Optional[Length(2.0, 500.0, low_open=False)] = None
     camshaft_bore_mm: Length(0.0, 500.0, low_open=False) = 0.0
@@ -430,6 +431,17 @@ class LashAdjuster(_Model):
     ramps of hydraulic cams was found; a mechanical clearance is 0.25-0.35 mm (Valve-train practical works (n.d.),
     work 2), so a ramp of at most a fifth of the smallest of it is "small".
 
+    ``plunger_eccentricity``: e / c, the offset of the plunger's axis in its bore over the radial clearance, 0
+    (concentric) to 1 (touching the bore on one side); the clearance leaks 1 + 1.5 (e / c)^2 times the concentric
+    leakage (Merritt (1967); White (2006)), 2.5 times fully eccentric.  Default 0, the concentric plunger: the least
+    leak-down, the safe side of the pump-up (a leakier plunger sinks back faster); the leak-down and the lash it
+    leaves at the valve grow with it.
+
+    ``plunger_travel_mm``: the plunger's travel from its working position (the valve seated, no lash, on the base
+    circle) out to its stop (the retaining ring), at the adjuster: pump-up extends it no further, and the valve it then
+    holds off its seat settles there.  Default 1.0 mm, the middle of the 0.5-1.5 mm (0.020-0.060 in) a hydraulic
+    lifter's plunger is set below its retaining lock in most applications (Engine Builder (2011)).
+
     Defaults: ``oil_viscosity_mPa_s`` = 10 is an SAE 30 (or xW-30) oil near 100 degC (SAE J300 (2015), as in
     ``[lubrication]``).  The other defaults are typical values of a passenger-car adjuster chosen without a cited
     source (its dimensions, the supply pressure, the plunger spring, the oil's bulk modulus of 1.5 GPa and its 2 %
@@ -448,6 +460,16 @@ class LashAdjuster(_Model):
     supply_pressure_MPa: _bounded(0.0, 2.0, "MPa", low_open=False) = 0.3
     plunger_spring_N: _bounded(0.0, 500.0, "N", low_open=False) = 15.0
     check_valve_diameter_mm: Length(0.2, 20.0, low_open=False) = 2.0
+    plunger_eccentricity: _bounded(0.0, 1.0, low_open=False, high_open=False) = 0.0
+    plunger_travel_mm: Length(0.01, 20.0, low_open=False) = 1.0
+
+    @model_validator(mode="after")
+    def _refills(self):
+        if self.supply_pressure_MPa == 0.0 and self.plunger_spring_N == 0.0:
+            raise ValueError("supply_pressure_MPa = 0 and plunger_spring_N = 0: nothing drives oil through the check "
+                             "valve (the supply plus the spring's pull on the chamber is 0), the leak-down is never "
+                             "refilled; allowed either above 0")
+        return self
 
 
 class Valve(_Model):
@@ -479,13 +501,27 @@ class Valve(_Model):
         return layout(self)
 
 
+CAMSHAFT_MIN_WALL = 0.05
+"""The thinnest wall of a hollow camshaft section, a share of its diameter (D/t <= 20): an engineering limit of this
+package, not a published one.  Hollow camshafts are drawn or machined tubes of D/t about 5-10; the section's torsion
+and bending are those of a thick tube (J = pi (D^4 - d^4) / 32), which a wall thinner than this cannot promise (it
+buckles locally, as a sheet does, long before the shaft twists by its formula)."""
+
+
 class Camshaft(_Model):
     """[camshaft]: the whole camshaft, its shaft and its timing drive (positions from the drive end, where the
     sprocket, pulley or gear sits); the lobes of the named valves of the named cylinders, in the engine's firing
     order.  ``drive_stiffness_N_per_mm`` (the drive's tangential stiffness at the pitch radius; absent: the drive
     end held) and ``sprocket_inertia_kg_mm2`` put the timing drive into the torsion.  The limits
     ``max_twist_cam_deg`` and ``min_frequency_ratio`` are engineering assumptions (no published camshaft limit was
-    found); ``drive_allowable_force_N`` is the maker's allowable of the chain, belt or gears."""
+    found); ``drive_allowable_force_N`` is the maker's allowable of the chain, belt or gears.
+
+    The torsional response over the running range: every mode damped by ``torsional_damping_ratio`` (default 0.05,
+    (0, 0.5]: an engineering assumption, the valve train's own default damping ratio of ``[dynamics]``; no published
+    damping of a camshaft's torsional modes was found), and the fluctuation of each lobe's timing graded against
+    ``max_timing_play_mm`` (default 3.175 mm, the movement of the cam sprocket against the crankshaft along its pitch
+    circle that a maker accepts in service before replacing the chain, DaimlerChrysler (2002)) over the pitch
+    radius."""
 
     valves: Optional[list[str]] = None
     cylinders: Optional[list[Annotated[int, Field(ge=1, le=64)]]] = None
@@ -507,6 +543,8 @@ class Camshaft(_Model):
     drive_allowable_force_N: _bounded(1.0, 1e8, "N")
     drive_stiffness_N_per_mm: Optional[_bounded(10.0, 1e7, "N/mm", low_open=False)] = None
     sprocket_inertia_kg_mm2: _bounded(0.0, 1e7, "kg mm2", low_open=False) = 0.0
+    torsional_damping_ratio: _bounded(0.0, 0.5) = 0.05
+    max_timing_play_mm: Length(0.01, 100.0) = 3.175
 
     @model_validator(mode="after")
     def _consistent(self):
@@ -518,9 +556,14 @@ class Camshaft(_Model):
                 problems.append(f"{key} has {len(value)} entries: one per section of section_lengths_mm "
                                 f"({n}) is needed")
         if self.section_bores_mm is not None and len(self.section_bores_mm) == n:
-            problems += [f"section_bores_mm[{i}] = {b:g} must be smaller than section_diameters_mm[{i}] = "
-                         f"{d:g}" for i, (b, d) in enumerate(zip(self.section_bores_mm, self.section_diameters_mm))
-                         if b >= d]
+            share = 1.0 - 2.0 * CAMSHAFT_MIN_WALL
+            thin = [(i, b, d) for i, (b, d) in enumerate(zip(self.section_bores_mm, self.section_diameters_mm))
+                    if b > share * d * (1.0 + 1e-12)]
+            if thin:
+                i, b, d = thin[0]
+                problems.append(f"section_bores_mm[{i}] = {b:g}: allowed at most {share * d:g}, {share:g} x "
+                                f"section_diameters_mm[{i}] (a wall of at least {CAMSHAFT_MIN_WALL:g} x the diameter)"
+                                + (f"; {len(thin) - 1} more section(s) as thin" if len(thin) > 1 else ""))
         length = sum(self.section_lengths_mm)
         positions = self.cylinder_positions_mm
         if sorted(positions) != positions or len(set(positions)) != len(positions):
@@ -648,6 +691,103 @@ class TwoStroke(_Model):
     ports: dict[str, Port]
 
 
+class BreathingSide(_Model):
+    """[breathing.intake], [breathing.exhaust]: one side's valves, their discharge coefficients and runner.
+
+    The lift is the designed valves' of the kind (every ``[valves.NAME]`` of ``kind``), or a measured one
+    (``lift_file``: ``crank_deg,lift_mm``, crank degrees from the gas-exchange TDC, the valve shut outside the rows;
+    ``valves`` of them).  The effective area is C_D(L/D) of ``cd_file`` (``l_over_d,cd_forward,cd_reverse``, forward
+    into the cylinder for the intake, out of it for the exhaust) on the reference area of ``cd_reference`` (the port,
+    pi D^2 / 4, or the curtain, pi D L; D = ``cd_diameter_mm``), or without a file the default C_D on the valves'
+    flow section.  ``runner_length_mm`` and ``runner_diameter_mm``: the runner with its port from the plenum to the
+    valve (none: the valve opens straight into the plenum)."""
+
+    lift_file: Optional[str] = None
+    valves: Annotated[int, Field(ge=1, le=8)] = 1
+    cd_file: Optional[str] = None
+    cd_diameter_mm: Optional[Length(1.0, 1000.0)] = None
+    cd_reference: Literal["port", "curtain"] = "port"
+    runner_length_mm: Optional[Length(0.0, 20000.0)] = None
+    runner_diameter_mm: Optional[Length(1.0, 1000.0)] = None
+
+    si_extras: ClassVar[tuple] = ("lift", "cd")
+
+    def read_extras(self, root) -> dict:
+        """The measured lift (crank deg, mm) and the C_D table (L/D, forward, reverse) as read
+        (:func:`valvetrain.files.read_valve_lift`, :func:`valvetrain.files.read_cd_table`), or None."""
+        return {"lift": None if self.lift_file is None else read_valve_lift(resolve_path(root, self.lift_file)),
+                "cd": None if self.cd_file is None else read_cd_table(resolve_path(root, self.cd_file))}
+
+    @model_validator(mode="after")
+    def _pairs(self):
+        problems = []
+        if (self.runner_length_mm is None) != (self.runner_diameter_mm is None):
+            problems.append("give runner_length_mm and runner_diameter_mm together (or neither: no runner)")
+        if self.cd_file is not None and self.cd_diameter_mm is None:
+            problems.append("cd_file needs cd_diameter_mm, the reference diameter D of its L/D")
+        if problems:
+            raise ValueError("; ".join(problems))
+        return self
+
+
+class PlenumState(_Model):
+    """The plenums and the walls of a breathing condition (absolute pressures)."""
+
+    intake_pressure_kPa: _bounded(1.0, 10000.0, "kPa", low_open=False)
+    intake_temperature_C: _bounded(-60.0, 500.0, "degC", low_open=False)
+    exhaust_pressure_kPa: _bounded(1.0, 10000.0, "kPa", low_open=False)
+    exhaust_temperature_C: Optional[_bounded(-60.0, 1500.0, "degC", low_open=False)] = None
+    wall_temperature_C: Optional[_bounded(-60.0, 1000.0, "degC", low_open=False)] = None
+
+
+class BreathingCondition(PlenumState):
+    """[[breathing.conditions]]: one speed and plenum state (the exhaust plenum's temperature, when not given, is
+    the mean of the gas that flows into it; the wall temperature defaults to [breathing]'s)."""
+
+    speed_rpm: _bounded(10.0, 30000.0, "rpm", low_open=False)
+
+
+class BreathingCurve(PlenumState):
+    """[breathing.curve]: the breathing at ``points`` speeds evenly over ``speed_range_rpm``, one plenum state."""
+
+    speed_range_rpm: Pair(10.0, 30000.0, "rpm")
+    points: Annotated[int, Field(ge=2, le=200)] = 20
+
+
+class Breathing(_Model):
+    """[breathing]: the gas exchange of the engine's cylinders through its valves, converged over cycles at each
+    condition, motored or fired (the Wiebe heat release of [crank.cycle], its fuel the trapped air's).
+
+    ``compression_ratio`` defaults to [crank]'s; ``wall_temperature_C`` is the conditions' default;
+    ``heat_transfer``: Woschni (1967) or none; ``cell_mm`` the runners' longest cell; the cycles repeat when the
+    trapped mass, the delivered mass and the pressure at the intake valve's closing change by less than
+    ``cycle_tolerance`` (at most ``max_cycles``)."""
+
+    mode: Literal["motored", "fired"] = "motored"
+    compression_ratio: Optional[_bounded(1.0, 60.0)] = None
+    wall_temperature_C: Optional[_bounded(-60.0, 1000.0, "degC", low_open=False)] = None
+    heat_transfer: Literal["woschni", "adiabatic"] = "woschni"
+    fuel: Literal["isooctane", "n-heptane", "methane", "propane", "ethanol"] = "isooctane"
+    equivalence_ratio: _bounded(0.1, 1.0, low_open=False) = 1.0
+    combustion_efficiency: _bounded(0.1, 1.0, low_open=False) = 1.0
+    cell_mm: _bounded(2.0, 500.0, "mm", low_open=False) = 40.0
+    cycle_tolerance: _bounded(1e-6, 0.1, low_open=False) = 1e-3
+    max_cycles: Annotated[int, Field(ge=2, le=1000)] = 60
+    intake: BreathingSide = BreathingSide()
+    exhaust: BreathingSide = BreathingSide()
+    conditions: list[BreathingCondition] = []
+    curve: Optional[BreathingCurve] = None
+
+    @model_validator(mode="after")
+    def _something_to_run(self):
+        if not self.conditions and self.curve is None:
+            raise ValueError("give at least one [[breathing.conditions]] or a [breathing.curve]")
+        if self.curve is not None and self.curve.speed_range_rpm[0] >= self.curve.speed_range_rpm[1]:
+            raise ValueError(f"curve.speed_range_rpm = {list(self.curve.speed_range_rpm)}: must be [low, high] with "
+                             "low < high")
+        return self
+
+
 class Output(_Model):
     """[output]: tables and exports."""
 
@@ -660,13 +800,22 @@ _TEXT = Annotated[str, Field(max_length=200)]
 
 
 class Document(_Model):
-    """[document]: the title block of the calculation note (report.html); every key optional, printed as given."""
+    """[document]: the title page of the calculation note (report.html, GOST 7.32 / 2.105); every key optional,
+    printed as given, a key left out a blank line to fill in by hand: the organisation and its department, the course
+    (discipline) the note is written for, the document's title and number, who performed it (``author``, with the
+    student's ``group``), who supervised and who checked it, the city and year (and a date)."""
 
     number: Optional[_TEXT] = None
     title: Optional[_TEXT] = None
     organisation: Optional[_TEXT] = None
+    department: Optional[_TEXT] = None
+    discipline: Optional[_TEXT] = None
     author: Optional[_TEXT] = None
+    group: Optional[_TEXT] = None
+    supervisor: Optional[_TEXT] = None
     checker: Optional[_TEXT] = None
+    city: Optional[_TEXT] = None
+    year: Optional[Annotated[int, Field(ge=1900, le=2100)]] = None
     date: Optional[_TEXT] = None
 
 
@@ -737,6 +886,7 @@ class Spec(_Model):
     crank: Optional[CrankSpec] = None
     camshaft: Optional[Camshaft] = None
     two_stroke: Optional[TwoStroke] = None
+    breathing: Optional[Breathing] = None
     output: Output = Output()
     document: Document = Document()
     accepted: list[Acceptance] = []
@@ -747,10 +897,10 @@ class Spec(_Model):
     @field_validator("valves")
     @classmethod
     def _valve_names(cls, valves):
-        bad = [shown(n, 40) for n in valves if not _NAME.match(n) or n in ("crank", "two_stroke")]
+        bad = [shown(n, 40) for n in valves if not _NAME.match(n) or n in ("crank", "two_stroke", "breathing")]
         if bad:
             raise ValueError(f"valve names {', '.join(bad)}: allowed a letter, then up to 31 letters, digits, '_' and "
-                             "'-' (and not 'crank' or 'two_stroke', the names of the engine's chapters)")
+                             "'-' (and not 'crank', 'two_stroke' or 'breathing', the names of the engine's chapters)")
         return valves
 
     def replace(self, values) -> "Spec":
@@ -783,8 +933,9 @@ class Spec(_Model):
 
     @model_validator(mode="after")
     def _something_to_design(self):
-        if not self.valves and self.crank is None and self.two_stroke is None:
-            raise ValueError("nothing to design: give at least one [valves.NAME], [crank] or [two_stroke] section")
+        if not self.valves and self.crank is None and self.two_stroke is None and self.breathing is None:
+            raise ValueError("nothing to design: give at least one [valves.NAME], [crank], [two_stroke] or [breathing] "
+                             "section")
         return self
 
 

@@ -33,6 +33,10 @@ def _valve_problems(name, v, engine):
     if v.throat_diameter_mm >= engine.bore_mm:
         out.append(Problem(f"{at}.throat_diameter_mm", f"must be smaller than engine.bore_mm = {engine.bore_mm:g}",
                            f"{v.throat_diameter_mm:g}", " "))
+    stem = v.parts.stem_diameter_mm
+    if stem is not None and stem >= v.throat_diameter_mm:
+        out.append(Problem(f"{at}.parts.stem_diameter_mm", f"must be smaller than throat_diameter_mm = "
+                           f"{v.throat_diameter_mm:g}", f"{stem:g}", " "))
     if v.cam.base_radius_mm <= v.clearance_mm:
         out.append(Problem(f"{at}.cam.base_radius_mm", f"must exceed clearance_mm = {v.clearance_mm:g}",
                            f"{v.cam.base_radius_mm:g}", " "))
@@ -163,6 +167,43 @@ def _two_stroke_problems(spec):
     return out
 
 
+def _breathing_problems(spec):
+    """[breathing] against the engine, [crank] and the valves: a four-stroke, a rod length and a compression ratio,
+    each side's lift (a file or designed valves of its kind) and, with a measured lift, its C_D table; a wall
+    temperature for every condition; firing needs [crank.cycle]."""
+    b = spec.breathing
+    if b is None:
+        return []
+    out = []
+    if spec.engine.strokes != 4:
+        out.append(Problem("engine.strokes", "allowed 4 with a [breathing] section (a four-stroke's gas exchange)",
+                           f"{spec.engine.strokes}"))
+    if crank_geometry(spec)[2] is None:
+        out.append(Problem("engine.rod_length_mm", "(or crank.rod_length_mm) is required for the breathing's piston "
+                           "motion", joiner=" "))
+    if b.compression_ratio is None and (spec.crank is None or spec.crank.compression_ratio is None):
+        out.append(Problem("breathing.compression_ratio", "is required (or crank.compression_ratio)", joiner=" "))
+    if b.mode == "fired" and (spec.crank is None or spec.crank.cycle is None):
+        out.append(Problem("breathing.mode", "'fired' burns on the Wiebe schedule of [crank.cycle]: give [crank] with "
+                           "[crank.cycle], or mode = 'motored'", "'fired'"))
+    kinds = {v.kind for v in spec.valves.values()}
+    for side in ("intake", "exhaust"):
+        s = getattr(b, side)
+        if s.lift_file is None and side not in kinds:
+            out.append(Problem(f"breathing.{side}.lift_file", f"is required: no [valves.NAME] of kind '{side}' to "
+                               "take the lift from", joiner=" "))
+        if s.lift_file is not None and s.cd_file is None:
+            out.append(Problem(f"breathing.{side}.cd_file", "is required with lift_file (the default C_D needs a "
+                               "designed valve's flow section)", joiner=" "))
+    walls = [("curve", b.curve)] if b.curve is not None else []
+    walls += [(f"conditions.{i}", c) for i, c in enumerate(b.conditions)]
+    for where, c in walls:
+        if c.wall_temperature_C is None and b.wall_temperature_C is None:
+            out.append(Problem(f"breathing.{where}.wall_temperature_C", "is required (or breathing.wall_temperature_C)",
+                               joiner=" "))
+    return out
+
+
 def _acceptance_problems(spec):
     """An [[accepted]] table naming a valve the specification does not have."""
     names = ", ".join(repr(n) for n in spec.valves) or "none: the specification has no valves"
@@ -199,6 +240,7 @@ def problems(spec) -> list[Problem]:
     none): angles that must add up, a throat smaller than the bore, files and keys that must agree, ...."""
     out = [p for name, v in spec.valves.items() for p in _valve_problems(name, v, spec.engine)]
     out += _crank_problems(spec) + _two_stroke_problems(spec) + _camshaft_problems(spec) + _acceptance_problems(spec)
+    out += _breathing_problems(spec)
     if spec.engine.strokes != 4 and spec.valves:
         out.insert(0, Problem("engine.strokes", "the valve timing (opens_deg/closes_deg before and after TDC/BDC of "
                               "the gas-exchange strokes) is defined for four-stroke engines; allowed 4 with "

@@ -18,8 +18,9 @@ Conical (beehive) and progressive-rate springs are not designed: the sources giv
 from .candidates import (INSTALLED_TO_LIFT_MAX, RESONANCE_RATIO_MIN, Candidates, SpringDesign, SpringMaterial,
                          evaluate_spring, evaluate_springs)
 from .diagnosis import Conflict, Diagnosis, Remedy, StressWindow, diagnose, stress_window
-from .formulas import (SHAPE_FACTOR_TABLE, active_coils, fatigue_safety, fatigue_stress_limit, natural_frequency,
-                       resonance_stress, shape_factor_table, shear_stress, spring_lengths, spring_rate, wahl_factor)
+from .formulas import (SHAPE_FACTOR_TABLE, active_coils, fatigue_safety, fatigue_stress_limit, length_at_pitch,
+                       natural_frequency, resonance_stress, shape_factor_table, shear_stress, spring_lengths,
+                       spring_rate, wahl_factor)
 from .requirement import (DEFLECTION_RATIO_RANGE, DEFLECTION_RATIO_STEP, INNER_SHARE_RANGE, SEAT_ACCELERATION,
                           SPRING_RESERVE_RANGE, Characteristic, Requirement, deflection_ratios, enveloping_line,
                           enveloping_lines, gas_opening_force, required_spring_force, seat_load)
@@ -30,8 +31,9 @@ from .search import (INNER_DIAMETER_RATIO_LOW, MEAN_DIAMETER_RANGE, MEAN_DIAMETE
 __all__ = [
     "INSTALLED_TO_LIFT_MAX", "RESONANCE_RATIO_MIN", "Candidates", "SpringDesign", "SpringMaterial", "evaluate_spring",
     "evaluate_springs", "Conflict", "Diagnosis", "Remedy", "StressWindow", "diagnose", "stress_window",
-    "SHAPE_FACTOR_TABLE", "active_coils", "fatigue_safety", "fatigue_stress_limit", "natural_frequency",
-    "resonance_stress", "shape_factor_table", "shear_stress", "spring_lengths", "spring_rate", "wahl_factor",
+    "SHAPE_FACTOR_TABLE", "active_coils", "fatigue_safety", "fatigue_stress_limit", "length_at_pitch",
+    "natural_frequency", "resonance_stress", "shape_factor_table", "shear_stress", "spring_lengths", "spring_rate",
+    "wahl_factor",
     "DEFLECTION_RATIO_RANGE", "DEFLECTION_RATIO_STEP", "INNER_SHARE_RANGE", "SEAT_ACCELERATION",
     "SPRING_RESERVE_RANGE", "Characteristic", "Requirement", "deflection_ratios", "enveloping_line",
     "enveloping_lines", "gas_opening_force", "required_spring_force", "seat_load", "INNER_DIAMETER_RATIO_LOW",

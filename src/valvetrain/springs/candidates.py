@@ -300,7 +300,10 @@ def evaluate_springs(preload, rate, lift, mean_diameter, wire_diameter, material
         "resonance_ratio": _ArrayCheck("spring.resonance_ratio", omega / camshaft_speed,
                                        low=_minimum(material.min_resonance_ratio),
                                        source="Valve-train practical works (n.d.), eq. (6.14): >= 10 (hard to meet at high speed, corrections note 27)"),
-        "working_coils": _ArrayCheck("spring.working_coils", exact, low=2.0, source="Valve-train practical works (n.d.), eq. (6.2)"),
+        # the coils of the spring as made (rounded down): the number its table shows; the rounding keeps the
+        # verdict, floor(2 n) / 2 >= 2 exactly where n >= 2
+        "working_coils": _ArrayCheck("spring.working_coils", coils, low=2.0,
+                                     source="Valve-train practical works (n.d.), eq. (6.2), rounded down to half coils"),
         "deflection_ratio": _ArrayCheck("spring.deflection_ratio", (p0 + actual * lift) / p0, *ratio_range,
                                         source="Valve-train practical works (n.d.), work 5 (with the rounded coils)"),
     }

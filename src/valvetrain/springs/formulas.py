@@ -87,6 +87,17 @@ def fatigue_safety(tau_max, tau_min, endurance, mean_stress_factor) -> np.ndarra
     return endurance / (tau_a + mean_stress_factor * tau_m)
 
 
+def length_at_pitch(pitch, wire_diameter, coils, end_coils=2) -> np.ndarray:
+    """Length of a valve spring whose coils lie at the pitch t, l = t (i_p + 2) + d (i_0 - 1) [m] (Valve-train
+    practical works (n.d.), eq. 6.4, as read in corrections note 46); at t = d it is the solid length, at which the
+    active coils close.
+
+    >>> round(float(length_at_pitch(5.1e-3, 5.1e-3, 3.0)) * 1e3, 9)
+    30.6
+    """
+    return pitch * (coils + 2.0) + wire_diameter * (end_coils - 1.0)
+
+
 def spring_lengths(wire_diameter, coils, lift, preload_deflection, gap_factor, end_coils=2, installed_length=None) -> dict[str, np.ndarray]:
     """Pitches and lengths of a valve spring (Valve-train practical works (n.d.), eqs. 6.3-6.8).
 
@@ -108,7 +119,7 @@ def spring_lengths(wire_diameter, coils, lift, preload_deflection, gap_factor, e
     d = wire_diameter
     if installed_length is None:
         t_min = d * (1.0 + gap_factor)
-        l_min = t_min * (coils + 2.0) + d * (end_coils - 1.0)
+        l_min = length_at_pitch(t_min, d, coils, end_coils)
     else:
         l_min = installed_length - lift
         t_min = (l_min - d * (end_coils - 1.0)) / (coils + 2.0)

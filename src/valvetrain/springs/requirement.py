@@ -27,6 +27,11 @@ m_v x 100 g.  A stated default of this package, not from the sources (they ask o
 eqs. 5.4-5.5): without it a slow engine gets a spring of a few newtons.  A valve that leaves its seat at
 0.5 m/s is returned by it within v^2 / (2 a) = 0.13 mm, less than the usual clearance at the valve."""
 
+RATIO_ROUNDOFF = 1e-12
+"""Relative difference within which two deflection ratios are one (:meth:`Requirement.lines`): far above the round-off
+of a ratio recomputed from a line's preload and rate (a few units in the last place), far below the step."""
+
+
 def deflection_ratios(ratio_range=DEFLECTION_RATIO_RANGE, step=DEFLECTION_RATIO_STEP) -> np.ndarray:
     """The deflection ratios f_max / f_min the search tries: ``ratio_range`` every ``step`` and its upper end.
 
@@ -138,12 +143,16 @@ def enveloping_line(lift, required, ratio_range=DEFLECTION_RATIO_RANGE, min_prel
     u = y / h
     r1, r2 = ratio_range
     gas = max(min_preload, 0.0)
-    p_max = max(float(np.max(r1 * p / (1.0 + (r1 - 1.0) * u))), r1 * gas)
+    own = r1 * p / (1.0 + (r1 - 1.0) * u)      # each point's P_max at the ratio r1
+    p_max = max(float(np.max(own)), r1 * gas)
     if p_max <= 0.0:
         return 0.0, 0.0
     excess = p - p_max * u
-    bounds = [r2, *(p_max * (1.0 - u[excess > 0.0]) / excess[excess > 0.0])] + ([p_max / gas] if gas > 0.0 else [])
-    ratio = max(min(bounds), r1)
+    # each point's bound P*(1 - u_i) / (P_i - P* u_i), written r1 + (1 + (r1 - 1) u_i)(P* - P*_i) / (P_i - P* u_i):
+    # the point that sets P* bounds the ratio at r1 exactly, not at r1 plus the round-off of the difference
+    up = excess > 0.0
+    bounds = [r2, *(r1 + (1.0 + (r1 - 1.0) * u[up]) * (p_max - own[up]) / excess[up])]
+    ratio = min(bounds + ([r1 + (p_max - r1 * gas) / gas] if gas > 0.0 else []))
     preload = p_max / ratio
     return float(preload), float((ratio - 1.0) * preload / h)
 
@@ -280,8 +289,13 @@ class Requirement:
         """(preloads, rates) of the lines of the deflection ratios ``ratio_range`` every ``step``, its upper end
         and the ratio of the required line ``line`` (:meth:`line` when not given)."""
         required = self.line(ratio_range) if line is None else line
-        ratios = np.append(deflection_ratios(ratio_range, step), required.max_force / required.preload)
-        return enveloping_lines(self.lift, self.force, np.unique(np.clip(ratios, *ratio_range)), self.min_preload)
+        ratios = deflection_ratios(ratio_range, step)
+        own = np.clip(required.max_force / required.preload, *ratio_range)
+        # the required line's ratio, recomputed from its preload and rate, carries their round-off: within a few
+        # units in the last place of a ratio of the grid it is that ratio, and its line that ratio's line
+        if not np.any(np.abs(ratios - own) <= RATIO_ROUNDOFF * ratios):
+            ratios = np.unique(np.append(ratios, own))
+        return enveloping_lines(self.lift, self.force, ratios, self.min_preload)
 
     def scaled(self, factor) -> "Requirement":
         """The requirement with every required force times ``factor`` (the preload minimum kept)."""

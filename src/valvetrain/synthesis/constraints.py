@@ -18,6 +18,7 @@ import numpy as np
 
 from .. import strength
 from ..checks import Check, check
+from ..design.dynamics import CHECK_SOURCE
 from ..design.valve import follower_accelerations
 from ..layouts import finger_inertia_force
 from ..numerics import extremum
@@ -60,11 +61,13 @@ class Limits:
     seating_velocity : tuple
         Band of the valve's seating (and opening) velocity at the rated speed [m/s] (a configurable default
         of at most 0.5 m/s; no primary source states it).
-    min_piston_gap : float
-        Smallest valve-piston gap over the open event [m].
     no_jump_factor : float
         No follower separation up to this multiple of the rated speed (needs the valve's ``[dynamics]`` sweep to
-        reach it).
+        reach it), a failure as the design grades a separation.
+
+    The design's own failure checks (the valve-to-piston clearance among them) are not limits of this class: they are
+    checked on the full design as ``valvetrain run`` grades them (:func:`valvetrain.synthesis.optimize.final_checks`),
+    so that an optimum passes what ``run`` passes.
     """
 
     max_pressure_angle: float = 30.0 * DEG
@@ -79,7 +82,6 @@ class Limits:
     min_rho: float = 2.0 * MM
     ramp_velocity: tuple = (0.008 * MM / DEG, 0.022 * MM / DEG)
     seating_velocity: tuple = (0.0, 0.5)
-    min_piston_gap: float = 0.0
     no_jump_factor: float = None
 
     @classmethod
@@ -285,19 +287,6 @@ def seating_velocity(design, band) -> Check:
                  source="a configurable default (no primary source)")
 
 
-def piston_gap(design, low) -> Check | None:
-    """Smallest valve-piston gap over the open event against ``low`` [m]; None without ``piston_gap_tdc_mm``.
-
-    References
-    ----------
-    Shang Hanji (1988), eqs. (2.13)-(2.14).
-    """
-    if design.clearance is None:
-        return None
-    return check("piston.clearance", design.clearance.min_gap, low=low, unit="mm",
-                 source="Shang Hanji (1988), eqs. (2.13)-(2.14)", severity="failure", strict_low=True)
-
-
 def no_jump(design, factor) -> Check | None:
     """No follower separation up to ``factor`` x the rated speed, from the design's ``[dynamics]`` speed sweep.
 
@@ -319,8 +308,8 @@ def no_jump(design, factor) -> Check | None:
     rated = d.at_rated_speed.speed
     jumps = np.isfinite(d.jump_speed)
     value = (d.jump_speed if jumps else d.speed_range[1]) / rated
-    return check("dynamics.jump_speed", value, low=factor,
-                 source="Shang Hanji (1988), chapter 3",
+    return check("dynamics.jump_speed", value, low=factor, severity="failure",
+                 source=f"{CHECK_SOURCE}: no separation below {factor:g} x the rated speed",
                  note="" if jumps else "no separation in the swept range: its top speed")
 
 
@@ -352,5 +341,5 @@ def worst_margin(checks) -> float:
 
 SINGLE_LIMITS = (("max_pressure_angle", pressure_angle), ("grinding_wheel_radius", concave_radius),
                  ("min_spring_reserve", spring_reserve), ("min_rho", rho_min), ("ramp_velocity", ramp_velocity),
-                 ("seating_velocity", seating_velocity), ("min_piston_gap", piston_gap), ("no_jump_factor", no_jump))
+                 ("seating_velocity", seating_velocity), ("no_jump_factor", no_jump))
 """The limits of :class:`Limits` that one constraint function checks alone: (field, function)."""

@@ -33,6 +33,7 @@ meets every limit.  Where no point does, the result says so (:attr:`Result.feasi
 
 import copy
 from dataclasses import dataclass, field, replace
+import difflib
 import math
 import time
 import tomllib
@@ -243,6 +244,36 @@ def unique_variables(variables) -> list[Variable]:
     return list(variables)
 
 
+def numeric_keys(section) -> list[str]:
+    """The dotted paths of the numbers of a valve's section (``cam.phi1_deg``, ``drive.spring_reserve``), given or
+    defaults, list entries by their 1-based position: what ``--vary`` may name."""
+    out = []
+
+    def walk(node, prefix):
+        if isinstance(node, BaseModel):
+            node = {k: getattr(node, k) for k in type(node).model_fields}
+        if isinstance(node, dict):
+            for k, v in node.items():
+                walk(v, f"{prefix}{k}.")
+        elif isinstance(node, list):
+            for i, v in enumerate(node, start=1):
+                walk(v, f"{prefix}{i}.")
+        elif isinstance(node, (int, float)) and not isinstance(node, bool):
+            out.append(prefix[:-1])
+
+    walk(section, "")
+    return out
+
+
+def unknown_key(path, name, section) -> str:
+    """The message of a ``--vary`` key that the valve's section does not have, with the nearest of its numbers."""
+    keys = numeric_keys(section)
+    near = difflib.get_close_matches(path, keys, n=2, cutoff=0.6) or [k for k in keys if k.endswith(f".{path}")][:2]
+    return (f"--vary {path}: valves.{name}.{path} is no key of the valve (unknown key)"
+            + (f"; did you mean {' or '.join(near)}?" if near else "; name a number under [valves.NAME], such as "
+               "cam.phi1_deg or drive.spring_reserve"))
+
+
 def check_bounds(section, name, variables) -> None:
     """Refuse bounds of a variable outside the allowed range of its key.
 
@@ -271,6 +302,8 @@ def check_bounds(section, name, variables) -> None:
             except ValidationError as exc:
                 for e in exc.errors():
                     at = ".".join(str(part + 1) if isinstance(part, int) else str(part) for part in e["loc"])
+                    if at == v.path and e["type"] == "extra_forbidden":
+                        raise ValueError(unknown_key(v.path, name, section)) from None
                     if at == v.path:
                         written = v.written or (f"{v.low:g}", f"{v.high:g}")
                         reason = e["msg"].removeprefix("Value error, ")
@@ -860,7 +893,11 @@ def final_checks(design, spec, limits, scale=1.0, search_spring=None) -> list[Ch
     list of Check
         With ``no_jump_factor``, the follower separation from a dynamics sweep of the design with its own spring
         from 10 % of the rated speed up to the limit or 125 % of it, whichever is higher (the ``[dynamics]``
-        section's train and range, the range raised to that top where it ends below).
+        section's train and range, the range raised to that top where it ends below).  Then every failure check of
+        the design that the specification does not accept, as ``valvetrain run`` grades it (one place for the
+        limits: the valve-to-piston clearance of :data:`~valvetrain.design.valve.PISTON_CLEARANCE_MIN`, the
+        separation below ``[engine] over_speed_ratio``), but where a constraint above is the same check with the
+        same bounds: an optimum passes what ``run`` passes.
     """
     if limits.no_jump_factor is not None:
         section = spec.valves[design.name]
@@ -877,8 +914,9 @@ def final_checks(design, spec, limits, scale=1.0, search_spring=None) -> list[Ch
         out.append(replace(spring_reserve(design, limits.min_spring_reserve * scale, search_spring.preload * scale,
                                           search_spring.rate * scale),
                            note=START_SPRING + (f" x {scale:.4g}" if scale != 1.0 else "")))
-    codes = {c.code for c in out}
-    own = [c for c in design.checks if c.severity == "failure" and c.code not in codes]
+    same = {(c.code, c.params, c.low, c.high) for c in out}
+    own = [c for c in design.checks if c.severity == "failure" and not c.accepted
+           and (c.code, c.params, c.low, c.high) not in same]
     return out + own
 
 

@@ -257,15 +257,13 @@ def handles(document, spec, name, series) -> list[Handle]:
                 + [Handle(f"acceleration.{k}", "acceleration", float(x[k]),
                           _interp(series, "valve_acceleration_m_s2", x[k]), (float(x[k]), float(x[k])))
                    for k in range(1, len(x) - 1) if lifts[k] > 0.0])
-    if cam.get("law") == "table":
-        return []
+    v = spec.valves[name]
+    if not v.cam.needs_timing:
+        return []   # a measured table from its file: its own lift and timing, nothing to drag
     out = []
     if valve.get("max_lift_mm") is not None:
         low, high = _key_range(Valve, "max_lift_mm")
         out.append(Handle("nose", "lift", 0.0, _interp(series, "valve_lift_mm", 0.0), (0.0, 0.0), (low, high)))
-    v = spec.valves[name]
-    if v.opens_deg is None or v.closes_deg is None:
-        return out
     half = main_half_angle_deg(v, spec.engine.strokes)
     for key, x, x_limits, y_limits in _shape_points(cam, half, series):
         y = _interp(series, "valve_acceleration_m_s2", x)
