@@ -1,45 +1,15 @@
-"""The Russian report's citations: Russian works cited in Russian, the locators (work, eq., section) and the notes
-of the sources in Russian, and the Russian works' references in the list of sources in Russian.
+"""The Russian report's citations and typography: the locators of the numbered citations (work, eq., section) and
+the notes of the sources in Russian, the decimal comma and «» quotes.
 
-The English report cites every work by :mod:`valvetrain.bibliography`'s short form; a Russian engineer cites a
-Russian work by its Russian name.  :func:`russian_citations` turns the rendered Russian report's citations into
-Russian; works in other languages keep their authors and titles (proper names).
+The report cites every work by its number in its list of sources (:func:`valvetrain.report.html.numbered_citations`),
+each work described in its own language (:meth:`valvetrain.bibliography.Work.reference`);
+:func:`russian_citations` turns the locators and the notes of the rendered Russian report's citations into Russian.
 """
 
 from html import escape, unescape
 import re
 
-SHORT = {
-    "Valve-train practical works (n.d.)": "Практические работы по расчёту ГРМ (б. г.)",
-    "Power units manual (n.d.)": "Методические указания «Силовые агрегаты» (б. г.)",
-    "Valve-train dynamics article (n.d.)": "Исследование динамики МГР (б. г.)",
-    "Kolchin and Demidov (1980)": "Колчин, Демидов (1980)",
-}
-"""The in-text form of each Russian work in Russian (б. г.: без года, no year)."""
-
-REFERENCES = {
-    "Valve-train practical works (n.d.)":
-        "Практические работы № 1-8 по расчёту газораспределительного механизма двигателя внутреннего сгорания "
-        "(описательное заглавие: в использованном экземпляре нет титульного листа). Учебное пособие вуза: "
-        "практические работы 1-8 с приложением (безударный кулачок Курца для газораспределительного механизма "
-        "бензинового двигателя, таблица П1). Авторы и организация в использованном экземпляре не указаны; "
-        "издательство и год не указаны. На русском языке. Работы: (1) проходные сечения клапана, (2) безударный "
-        "кулачок Курца, (3) полидинамический кулачок, (4) время-сечение, (5) характеристика пружины, (6) расчёт "
-        "пружины, (7) прочность деталей привода, (8) окна двухтактного двигателя.",
-    "Power units manual (n.d.)":
-        "Методические указания к расчётно-графической работе по дисциплине «Силовые агрегаты»: кинематика поршня "
-        "и динамика кривошипно-шатунного механизма (описательное заглавие: в использованном экземпляре нет "
-        "титульного листа). Учебное пособие вуза. Авторы и организация не указаны; издательство и год не указаны. "
-        "На русском языке. Пример расчёта (раздел 2.6) в использованном экземпляре отсутствует.",
-    "Valve-train dynamics article (n.d.)":
-        "Исследование динамики МГР с кулачками различного профиля (заглавие раздела; в использованном экземпляре "
-        "нет титульного листа). Статья в журнале. Авторы и организация не указаны; издательство и год не указаны. "
-        "На русском языке.",
-    "Kolchin and Demidov (1980)":
-        "Колчин А. И., Демидов В. П. Расчёт автомобильных и тракторных двигателей. 2-е изд. М.: Высшая школа, "
-        "1980. На русском языке.",
-}
-"""The full reference of each Russian work in Russian, as a Russian list of sources gives it."""
+from .typography import map_text
 
 LOCATORS = (
     (r"corrections notes? (\d+)", r"поправка \1"), (r"\bworks (\d)", r"работы \1"), (r"\bwork (\d)", r"работа \1"),
@@ -47,6 +17,8 @@ LOCATORS = (
     (r"\bsection (\d)", r"раздел \1"), (r"\bchapter (\d)", r"глава \1"), (r"\bch\. (\d)", r"гл. \1"),
     (r"\bTable (\S)", r"таблица \1"),
     (r"\bappendix\b", "приложение"), (r"\bp\. (\d)", r"с. \1"),
+    (r"the follower's force at the adjuster's push ([\d.]+) N at the valve, where its check valve opens \(",
+     r"сила толкателя у гидрокомпенсатора \1 Н, приведённая к клапану, при которой открывается его обратный клапан ("),
 )
 """Locators of a citation in Russian (regular expression, replacement)."""
 
@@ -61,6 +33,7 @@ NOTES = {
     "1.5-2.0; supercharged 3.0-4.0": "1,5-2,0; с наддувом 3,0-4,0",
     "automotive engines": "автомобильные двигатели",
     "with the rounded coils": "с округлённым числом витков",
+    "rounded down to half coils": "с округлением вниз до половины витка",
     "hard to meet at high speed": "трудно выполнимо при высокой частоте вращения",
     "the two ratios must differ": "два отношения должны различаться",
     "central mechanism": "центральный механизм",
@@ -80,6 +53,58 @@ NOTES = {
     "one-mass and multi-mass trains, jump, seating, bounce":
         "одномассовая и многомассовая модели привода, отрыв, посадка, отскок",
     "resonant harmonic and distortion": "резонансная гармоника и искажение",
+    "(side_valve chamber)": "(нижнее расположение клапанов)", "(overhead chamber)": "(верхнее расположение клапанов)",
+    "(prechamber_diesel chamber)": "(вихрекамерные и предкамерные дизели)",
+    "(direct_injection_diesel chamber)": "(дизели с непосредственным впрыском)",
+    "(wedge chamber)": "(клиновидная и плоскоовальная камеры сгорания)",
+    "(hemispherical chamber)": "(полусферическая камера сгорания)",
+    "the chosen springs' rounded coils can move it off the required line's ratio":
+        "округлённое число витков выбранной пружины может сместить его от отношения необходимой характеристики",
+    " with [tau] of ": " с [τ] стали ", "tau_-1 and psi_tau of ": "τ₋₁ и ψ_τ стали ", "Tables ": "таблицы ",
+    "table A-9": "таблица A-9", "(R_m of ASTM A401)": "(R_m по ASTM A401)", "(psi_tau: literature, ": "(ψ_τ: по литературе, ",
+    "installed_length_mm of the specification, or 6 x lift (a stated default)":
+        "установочная длина из исходных данных или 6 × подъём (принято по умолчанию)",
+    "0.3-0.5 m/s usual, graded at every speed swept up to the rated one":
+        "обычно 0,3-0,5 м/с; оценивается на всех частотах расчёта до номинальной",
+    "0.3-0.5 m/s usual": "обычно 0,3-0,5 м/с", "ch. 3 and ch. 7": "гл. 3 и 7",
+    ": no separation below [engine] over_speed_ratio x the rated speed":
+        ": без отрыва толкателя до наибольшей частоты вращения (over_speed_ratio × номинальная)",
+    "(flat-faced follower face width)": "(ширина торца плоского толкателя)",
+    "a factor of 3 beyond ": "пределы, расширенные в 3 раза относительно: ",
+    ": an engine delivers work; a cycle whose pressures give a negative mean torque absorbs it (a motored engine), "
+    "and its non-uniformity is undefined": ": двигатель совершает работу; цикл, давления которого дают отрицательный "
+    "средний момент, её поглощает (двигатель прокручивается извне), и его неравномерность не определена",
+    "(pressure angle: side load F_n sin(alpha)); no source gives an allowable":
+        "(угол давления: боковая сила F_n sin α); допускаемого значения источники не дают",
+    "(hydraulic valve actuation)": "(гидравлический привод клапана)",
+    "(wave speed, method of characteristics)": "(скорость волны, метод характеристик)",
+    "5 % of the rigid lift, the level of the delays (this package's)":
+        "5 % подъёма при жёстком приводе, уровень отсчёта запаздываний (принято в этой программе)",
+    ": accuracy_mm, met by N <= 9 harmonics (N by the residual against the accuracy, 0.002-0.01 mm)":
+        ": accuracy_mm, достигается при N ≤ 9 гармониках (N по отклонению относительно точности, 0,002-0,01 мм)",
+    ": <= 150 MPa, the bending allowable of the rocker gear's steels 20Kh, 40Kh, 45, taken for the finger; "
+    "sigma = 6 M / (b h^2) of its rectangular section, ": ": ≤ 150 МПа, допускаемое напряжение изгиба сталей "
+    "коромысла 20Х, 40Х, 45, принятое для рычага; σ = 6 M / (b h²) его прямоугольного сечения, ",
+    ": boundary lubrication below lambda = 1; ": ": граничное трение при λ < 1; ",
+    ": scuffing at a critical temperature of the oil; ": ": задир при критической температуре масла; ",
+    ": annular leakage and the check valve's orifice flow; ":
+        ": утечки через кольцевой зазор и расход через отверстие обратного клапана; ",
+    ": the plunger's extension simulated with the train up to [engine] over_speed_ratio x the rated speed; ":
+        ": выдвижение плунжера рассчитано вместе с приводом до наибольшей частоты вращения (over_speed_ratio × "
+        "номинальная); ",
+    "), while the cam lifts the open valve: no float below [engine] over_speed_ratio x the rated speed; ":
+        "), пока кулачок поднимает открытый клапан: без отрыва до наибольшей частоты вращения (over_speed_ratio × "
+        "номинальная); ",
+    ": the valve's lift on the base circle simulated with the plunger's extension; ":
+        ": подъём клапана на тыльной части кулачка рассчитан с выдвижением плунжера; ",
+    " (torsion); ": " (кручение); ", " (an engineering assumption)": " (инженерное допущение)",
+    "(the maker's allowable of the chain": "(допускаемое значение изготовителя цепи",
+    "(the maker's allowable of the belt": "(допускаемое значение изготовителя ремня",
+    "(the maker's allowable of the gears": "(допускаемое значение изготовителя шестерён",
+    " applied to the master and its roller": " применительно к копиру и его ролику",
+    " (the wheel radius must not exceed the concave radius of the cam); ":
+        " (радиус круга не должен превышать радиус вогнутого участка кулачка); ",
+    ": exponent ranges from the authors' search studies": ": диапазоны показателей степени по поисковым расчётам авторов",
     "of the specification: the smaller margin of the fatigue safety and the resonance ratio above their minima":
         "задания: меньший из запасов по усталости и по отношению частот сверх их наименьших значений",
 }
@@ -89,19 +114,16 @@ UNITS = ((r"(\d) kg/m2\b", r"\1 кг/м²"), (r"(\d) MPa\b", r"\1 МПа"), (r"(
 """Units inside a citation's note."""
 
 _CITE = re.compile(r'(<span class="cite">)(.*?)(</span>)', re.S)
-_ITEM = re.compile(r'<li class="cite"><b>(.*?)</b>: (.*?)</li>', re.S)
 
 
 def citation(text) -> str:
-    """One citation in Russian: the Russian works' short forms, the locators, the notes and their units.
+    """One citation in Russian: its locators, the notes of its source and their units.
 
-    >>> citation("Valve-train practical works (n.d.), work 1, eq. (1.1)")
-    'Практические работы по расчёту ГРМ (б. г.), работа 1, формула (1.1)'
-    >>> citation("Shang Hanji (1988), section 2.1, eqs. (2.13)-(2.14)")
-    'Shang Hanji (1988), раздел 2.1, формулы (2.13)-(2.14)'
+    >>> citation("[2, work 1, eq. (1.1)]")
+    '[2, работа 1, формула (1.1)]'
+    >>> citation("[1, section 2.1, eqs. (2.13)-(2.14)] (usually 30 deg inlet, 45 deg exhaust)")
+    '[1, раздел 2.1, формулы (2.13)-(2.14)] (обычно 30° у впускного, 45° у выпускного клапана)'
     """
-    for en, ru in SHORT.items():
-        text = text.replace(en, ru)
     for en, ru in NOTES.items():
         text = text.replace(en, ru)
     for pattern, ru in LOCATORS + UNITS:
@@ -110,24 +132,10 @@ def citation(text) -> str:
 
 
 def russian_citations(page) -> str:
-    """The rendered Russian report with its citations in Russian (:func:`citation` on every ``span.cite``) and the
-    Russian works' entries of the list of sources in Russian (other works keep their reference, marked as English
-    text with ``lang="en"``)."""
-    def item(m):
-        short, text = m.group(1), m.group(2)
-        if short in REFERENCES:
-            return f'<li class="cite"><b>{SHORT[short]}</b>: {REFERENCES[short]}</li>'
-        return f'<li class="cite" lang="en"><b>{short}</b>: {text}</li>'
-
-    page = _ITEM.sub(item, page)
+    """The rendered Russian report with its citations in Russian (:func:`citation` on every ``span.cite``)."""
     return _CITE.sub(lambda m: m.group(1) + escape(citation(unescape(m.group(2))), quote=False) + m.group(3), page)
 
 
-_TAG = re.compile(r"(<[^>]+>)")
-_OPEN = re.compile(r"<(\w+)([^>]*)>")
-_KEPT = re.compile(r'class="name"|lang="en"')
-"""Elements whose text is kept as it is: names given by the designer, file names, works in other languages."""
-_KEPT_TAGS = ("a", "style", "title", "script")
 _DECIMAL = re.compile(r"(?<![\d,])(?<!\d\.)(?<!\()(?<!ф\. )(?<!рис\. )(?<!раздел )(?<!разделы )(?<!гл\. )"
                       r"(?<!глава )(?<!формула )(?<!формулы )(?<!таблица )(\d+)\.(\d+)(?!\.?\d)")
 """A decimal point between digits, not in a locator of a source (``(7.4)``, ``раздел 2.1``, ``ф. 2.5``) nor in a
@@ -144,24 +152,4 @@ def russian_typography(page) -> str:
     >>> russian_typography('<span class="name">v1.5</span> 0.5...0.75 <a href="x">tables/a.0.5.csv</a>')
     '<span class="name">v1.5</span> 0,5...0,75 <a href="x">tables/a.0.5.csv</a>'
     """
-    out, kept = [], []
-    for part in _TAG.split(page):
-        if part.startswith("<"):
-            if part.startswith("</"):
-                if kept and part[2:-1].strip() == kept[-1][0]:
-                    kept[-1][1] -= 1
-                    if kept[-1][1] == 0:
-                        kept.pop()
-            else:
-                m = _OPEN.match(part)
-                if m and not part.endswith("/>") and m[1] not in ("br", "img", "meta", "hr", "input", "link"):
-                    if kept and m[1] == kept[-1][0]:
-                        kept[-1][1] += 1
-                    elif m[1] in _KEPT_TAGS or _KEPT.search(m[2]):
-                        kept.append([m[1], 1])
-            out.append(part)
-        elif kept or not part.strip():
-            out.append(part)
-        else:
-            out.append(_QUOTED.sub(r"«\1»", _DECIMAL.sub(r"\1,\2", part)))
-    return "".join(out)
+    return map_text(page, lambda text: _QUOTED.sub(r"«\1»", _DECIMAL.sub(r"\1,\2", text)), "ru")
