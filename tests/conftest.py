@@ -68,4 +68,9 @@ def browser_type_launch_args(browser_type_launch_args):
         if os.environ.get("CI") == "true":
             pytest.fail("no chromium on this machine: .ci/run installs the Debian package `chromium`")
         pytest.skip("no chromium on this machine (apt-get install -y chromium)")
-    return {**browser_type_launch_args, "executable_path": BROWSER, "args": ["--no-sandbox"]}
+    return {**browser_type_launch_args, "executable_path": BROWSER, "args": BROWSER_ARGS}
+
+
+BROWSER_ARGS = ["--no-sandbox", "--disable-gpu", "--disable-background-networking", "--disable-component-update",
+                "--disable-sync", "--no-first-run"]
+"""The browser's switches: headless on a machine without a sandbox or a GPU, nothing fetched from the network."""

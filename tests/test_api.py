@@ -142,6 +142,12 @@ def test_sweep_gives_the_numbers_of_valvetrain_sweep(tmp_path):
         assert series["speed_rpm"] == pytest.approx(rec["per_speed"]["speed_rpm"], rel=1e-12)
         assert series["min_contact_force_N"] == pytest.approx(rec["per_speed"]["min_contact_force_N"], rel=1e-12)
         assert len(series["map_lift_error_mm"]) == len(series["speed_rpm"])
+        # the contact force and the valve's acceleration over the same angles and speeds; a cam pushes, never pulls:
+        # its contact force is nowhere negative, and positive somewhere at every speed
+        shape = np.shape(series["map_lift_error_mm"])
+        assert np.shape(series["map_contact_force_N"]) == np.shape(series["map_valve_acceleration_m_s2"]) == shape
+        force = np.array(series["map_contact_force_N"], dtype=float)
+        assert np.nanmin(force) >= 0.0 and np.all(np.nanmax(force, axis=1) > 0.0)
 
 
 def test_a_sweep_is_stopped_by_its_progress_callback():

@@ -155,6 +155,17 @@ def test_dxf_is_reproducible(tmp_path):
     assert all(w == written[0] for w in written[1:])
 
 
+def test_dxf_bytes_are_the_file_written(tmp_path):
+    """The designer's download of the contour (:func:`dxf_bytes`, written nowhere) is the file `valvetrain run`
+    writes, byte for byte."""
+    from valvetrain.export import dxf_bytes, write_dxf
+    from valvetrain.specification import example_spec
+
+    valve = run(example_spec()).valves["intake"]
+    write_dxf(tmp_path / "intake.dxf", valve)
+    assert dxf_bytes(valve) == (tmp_path / "intake.dxf").read_bytes()
+
+
 def test_the_specification_is_saved_with_the_results(written):
     """spec.toml beside results.json reads back to the same specification and so to the same design (Valve-train practical works (n.d.)
     appendix: time-area 2.8564 mm2 s)."""

@@ -3,6 +3,7 @@
 from contextlib import nullcontext
 import csv
 from functools import partial
+import io
 import json
 import math
 from pathlib import Path
@@ -71,9 +72,18 @@ def write_dxf(path, valve) -> None:
     _save_dxf(lambda: _dxf_document(valve), path)
 
 
+def dxf_bytes(valve) -> bytes:
+    """The cam contour as DXF: the bytes :func:`write_dxf` writes, written nowhere (the designer's download)."""
+    stream = io.StringIO()
+    _save_dxf(lambda: _dxf_document(valve), stream)
+    return stream.getvalue().encode("utf-8")
+
+
 def _save_dxf(build, path):
     """Build a DXF document (``build()``) and save it with ezdxf's fixed metadata (creation date, GUIDs) in place
     from its creation on, so the same design writes the same bytes.
+
+    ``path`` is a file's path or a text stream.
 
     ezdxf registers the CLASS entries of the entity types in use when it saves, in the order of a set, which
     follows the interpreter's string hashing (PYTHONHASHSEED): registered here first, the required classes in
@@ -87,7 +97,10 @@ def _save_dxf(build, path):
         doc = build()
         for name in (*REQUIRED_CLASSES.get(doc.dxfversion, REQ_R2004), *sorted(doc.entitydb.dxf_types_in_use())):
             doc.classes.add_class(name)
-        doc.saveas(path)
+        if isinstance(path, io.TextIOBase):
+            doc.write(path)
+        else:
+            doc.saveas(path)
     finally:
         ezdxf.options.write_fixed_meta_data_for_testing = fixed
 

@@ -1,6 +1,10 @@
-"""The designer's page (web/app.py) without a browser: its handlers on a Bokeh document, the check table's colours, the
-sweeps it starts, and `valvetrain serve` refusing a specification that does not validate."""
+"""The designer's page (web/app.py) without a browser: its handlers on a Bokeh document, the checks table's words and
+colours, the pictures, the units, the downloads, the sweeps it starts, and `valvetrain serve` refusing a specification
+that does not validate."""
 
+import base64
+import copy
+from pathlib import Path
 import re
 import tomllib
 
@@ -11,40 +15,56 @@ pytest.importorskip("bokeh")
 
 from bokeh.document import Document  # noqa: E402
 
-from valvetrain.web.app import SEVERITY_COLOURS, Designer, _now, kept_range, thinned  # noqa: E402
+from valvetrain.web.app import (INCH, SEVERITY_COLOURS, WORDS, Designer, _now, kept_range,  # noqa: E402
+                                thinned)
 from valvetrain.web.session import Session, form  # noqa: E402
 
 from appendix import appendix_text  # noqa: E402
 
+EXAMPLES = Path(__file__).parents[2] / "examples"
 
-def _colour(designer, quantity):
+
+def _row(designer, quantity, column):
     data = designer.checks.data
-    return data["colour"][data["key"].index(quantity)]
+    return data[column][data["key"].index(quantity)]
+
+
+def _field(d, path):
+    return next(f for _, group in form(d.session.document, d.valve) for f in group if f.path == path)
+
+
+def _request(d, kind, name="", x=0.0, y=0.0, plot="lift", text="", seq=1):
+    """What page.js sends: a handle moved, released or nudged, undo, redo, restore."""
+    d.on_request("data", {}, {"kind": [kind], "seq": [seq], "plot": [plot], "name": [name], "x": [x], "y": [y],
+                              "text": [text]})
+
+
+def _designer(text=None, folder=None):
+    return Designer(Document(), Session.start(text, folder))
+
+
+def _swept(d):
+    d.draw_sweep(d.generation, Session.settle(d.session.document), _now())
+    return d
 
 
 def test_page_callbacks():
-    doc = Document()
-    d = Designer(doc, Session.start(appendix_text()))
+    d = _designer(appendix_text())
     quantity = "intake: V' (throat velocity)"
     # the appendix example: V' = 85.07 m/s at 7000 rpm, above 80; 72.9 m/s at 6000 rpm (c_p S n / 30 scaled by 6/7)
-    assert _colour(d, quantity) != SEVERITY_COLOURS["pass"]
-    f = next(f for _, group in form(d.session.document) for f in group if f.path == "engine.rated_speed_rpm")
-    d.on_field(f, "value", 7000, 6000)
-    assert _colour(d, quantity) == SEVERITY_COLOURS["pass"]
+    assert _row(d, quantity, "colour") != SEVERITY_COLOURS["pass"]
+    d.on_field(_field(d, "engine.rated_speed_rpm"), "value", 7000, 6000)
+    assert _row(d, quantity, "colour") == SEVERITY_COLOURS["pass"]
+    assert _row(d, quantity, "status") == "passes"
     d.on_pin()
-    assert d.checks.data["baseline"][d.checks.data["key"].index(quantity)].startswith("72.9")
-    bore = next(f for _, group in form(d.session.document) for f in group if f.path == "engine.bore_mm")
-    d.on_field(bore, "value", 80, 3)
-    assert d.errors["engine.bore_mm"].text == "allowed [5, 2000] mm"
-    assert _colour(d, quantity) == SEVERITY_COLOURS["pass"]       # the last good design stays
-    d.on_field(bore, "value", 3, 80)
-    assert d.errors["engine.bore_mm"].text == ""
-    lift = dict(d.handles["lift"].data)
-    d.on_handles("lift", "data", lift, {**lift, "y": [10.5]})
+    assert _row(d, quantity, "baseline").startswith("72.9")
+    _request(d, "end", "nose", 0.0, 10.5)
     assert d.session.document["valves"]["intake"]["max_lift_mm"] == 10.5
-    assert d.fields["valves.intake.max_lift_mm"].value == 10.5
+    assert d.widgets["valves.intake.max_lift_mm"].value == 10.5
     d.on_language("value", "en", "ru")
-    assert d.check_columns[0].title == "Величина"
+    assert d.check_columns[1].title == "Величина"
+    assert d.widgets["engine.bore_mm"].title == "диаметр цилиндра D, мм (5 … 2000)"
+    d.derivative_select.value = "deg"
     d.on_units("value", "rated", "deg")
     # per cam degree: the velocity is the slope of the valve lift in mm/deg; central differences of the lift series
     # (0.5 cam deg apart) agree to 1 % of the peak where the valve is off its seat
@@ -54,11 +74,65 @@ def test_page_callbacks():
     off = lift > 0.5
     assert np.max(np.abs(v[off] - slope[off])) < 0.01 * np.max(np.abs(slope))
     d.on_report()
-    assert d.report_text.text.startswith("<!DOCTYPE html>") and 'lang="ru"' in d.report_text.text
+    report = d.downloaded["report"].text
+    assert report.startswith("<!DOCTYPE html>") and 'lang="ru"' in report
     # the figures of `valvetrain run --figures main` (README: the cam contour among them) embedded, drawn in memory
-    assert re.search(r'<img src="data:image/png;base64,[^"]+" alt="профиль кулачка">', d.report_text.text)
+    assert re.search(r'<img src="data:image/png;base64,[^"]+" alt="профиль кулачка">', report)
     d.on_toml()
-    assert tomllib.loads(d.toml_text.text)["valves"]["intake"]["max_lift_mm"] == 10.5
+    assert tomllib.loads(d.downloaded["toml"].text)["valves"]["intake"]["max_lift_mm"] == 10.5
+
+
+def test_a_refused_value_goes_back_to_the_design_drawn_and_says_why():
+    # issue 40: the panel showed the refused value while the plots showed the last good design
+    d = _designer()
+    d.widgets["engine.bore_mm"].value = 3.0                 # as the page sends a typed value
+    assert d.session.document["engine"]["bore_mm"] == 80.0
+    assert d.widgets["engine.bore_mm"].value == 80.0        # the input shows the design drawn again
+    assert d.widgets["engine.bore_mm"].css_classes == ["vt-refused"]
+    assert d.status.text == "bore D, mm: 3 refused: allowed [5, 2000] mm; the design drawn keeps 80"
+    d.widgets["engine.bore_mm"].value = 81.0
+    assert d.status.text == "" and d.widgets["engine.bore_mm"].css_classes == []
+    assert d.session.document["engine"]["bore_mm"] == 81.0
+
+
+def test_a_drag_moves_the_curves_while_the_pointer_moves_and_keeps_the_design_at_the_release():
+    d = _designer()
+    top = lambda: float(np.nanmax(d.curves.data["lift"]))        # noqa: E731
+    _request(d, "move", "nose", 0.0, 9.6, seq=1)
+    # the curves follow (a preview), the design kept and the panel stay until the release
+    assert top() == pytest.approx(9.6, abs=1e-5)
+    assert d.session.document["valves"]["intake"]["max_lift_mm"] == 9.0
+    assert d.widgets["valves.intake.max_lift_mm"].value == 9.0
+    _request(d, "move", "nose", 0.0, 9.8, seq=2)
+    _request(d, "end", "nose", 0.0, 9.7, seq=3)
+    assert top() == pytest.approx(9.7, abs=1e-5)
+    assert d.session.document["valves"]["intake"]["max_lift_mm"] == 9.7
+    assert d.widgets["valves.intake.max_lift_mm"].value == 9.7
+    assert d.kinematic_stamp.data["seq"] == [3]            # the page's probe: the redraw of the release
+    assert len(d.session.undone) == 1                       # one edit, not one per move
+    _request(d, "undo", seq=4)
+    assert top() == pytest.approx(9.0, abs=1e-5) and d.widgets["valves.intake.max_lift_mm"].value == 9.0
+    _request(d, "redo", seq=5)
+    assert d.widgets["valves.intake.max_lift_mm"].value == 9.7
+
+
+def test_edits_the_page_kept_come_back_after_a_reload():
+    import json
+
+    d = _designer()
+    _request(d, "end", "nose", 0.0, 10.0)
+    kept = d.saved.data["document"][0]                       # what the page keeps in its session storage
+    again = _designer()
+    _request(again, "restore", text=kept)
+    assert again.session.document["valves"]["intake"]["max_lift_mm"] == 10.0
+    assert again.status.text == WORDS["en"]["restored"]
+    assert again.session.undo() and again.session.document["valves"]["intake"]["max_lift_mm"] == 9.0
+    # a kept document that no longer designs leaves the file's design, and says so
+    bad = json.loads(kept)
+    bad["engine"]["bore_mm"] = 3.0
+    third = _designer()
+    _request(third, "restore", text=json.dumps(bad))
+    assert third.session.document["engine"]["bore_mm"] == 80.0 and "allowed [5, 2000] mm" in third.status.text
 
 
 def test_serve_refuses_a_specification_that_does_not_validate(refused):
@@ -66,15 +140,6 @@ def test_serve_refuses_a_specification_that_does_not_validate(refused):
 
     text = example_text().replace("bore_mm = 80.0", "bore_mm = 3.0")
     assert "error: engine.bore_mm = 3.0: allowed [5, 2000] mm" in refused(text, "serve")
-
-
-def test_serve_refuses_a_specification_without_valves(refused):
-    """Issue 36's fuzzer: `valvetrain serve examples/v8-crank.toml` (an engine without valves) started, then answered
-    its page with HTTP 500 (a KeyError: the designer edits valves); refused at the start, exit status 2."""
-    from pathlib import Path
-
-    text = (Path(__file__).parents[2] / "examples" / "v8-crank.toml").read_text(encoding="utf-8")
-    assert "error: valves: the designer edits the valves' cams; the file defines none" in refused(text, "serve")
 
 
 def test_serve_on_a_port_in_use_is_one_line():
@@ -97,7 +162,7 @@ def test_serve_on_a_port_in_use_is_one_line():
 
 
 def test_sweep_starts_when_the_page_has_drawn_the_newest_kinematics():
-    d = Designer(Document(), Session.start())
+    d = _designer()
     started = []
     d.start_sweep = lambda: started.append(d.kinematic_stamp.data["n"][0])
     d.redraw()
@@ -110,28 +175,201 @@ def test_sweep_starts_when_the_page_has_drawn_the_newest_kinematics():
     d.redraw(sweep=False)                                 # a language or unit switch: no new sweep
     d.on_drawn("data", None, {"n": [newest + 1]})
     assert started == [newest]
+    # the first design's sweep is due before any edit (the page says when it has drawn it: the panel is not empty
+    # until the first edit)
+    first = _designer()
+    first.start_sweep = lambda: started.append("first")
+    first.on_drawn("data", None, {"n": [first.kinematic_stamp.data["n"][0]]})
+    assert started[-1] == "first"
 
 
 def test_checks_of_the_sweeps_are_pending_until_the_whole_design_comes():
+    d = _designer()
 
-    d = Designer(Document(), Session.start())
     # the built-in example: both valves with a [dynamics] section, two checks each (seating velocity, jump speed)
     def dynamic():
         return [k for k in d.checks.data["key"] if "dynamic seating velocity" in k or "(jump)" in k]
 
     assert dynamic() == []
-    d.draw_sweep(d.generation, Session.settle(d.session.good_document), _now())
+    _swept(d)
     found = dynamic()
     assert len(found) == 4
-    f = next(f for _, group in form(d.session.document) for f in group if f.path == "engine.rated_speed_rpm")
-    d.on_field(f, "value", 7000, 6500)
+    d.on_field(_field(d, "engine.rated_speed_rpm"), "value", 7000, 6500)
     data = d.checks.data
     rows = [i for i, k in enumerate(data["key"]) if k in found]
     assert len(rows) == 4
     assert {data["value"][i] for i in rows} == {"…"}
     assert {data["colour"][i] for i in rows} == {SEVERITY_COLOURS["pending"]}
-    d.draw_sweep(d.generation, Session.settle(d.session.good_document), _now())
+    assert {data["status"][i] for i in rows} == {"pending"}
+    _swept(d)
     assert "…" not in d.checks.data["value"]
+
+
+def test_the_sweep_panel_comes_from_the_valve_alone_before_the_whole_design():
+    d = _swept(_designer())
+    d.on_field(_field(d, "engine.rated_speed_rpm"), "value", 7000, 6500)
+    # the valve's sweep alone is the whole design's sweep of it (the same series from the two designs)
+    alone = Session.sweep_one(d.session.document, "intake")
+    whole = Session.settle(d.session.document)
+    assert alone == whole["sweeps"]["intake"]
+    # drawn first, with the page's probe stamped for the release that asked for it; the checks of the dynamics
+    # still pending until the whole design comes, which stamps nothing the probe counts
+    d.draw_sweep_of(d.generation, "intake", alone, _now(), 7)
+    assert d.sweep_stamp.data["seq"] == [7]
+    assert len(d.sweep_sources["force"].data["y"]) == len(alone["speed_rpm"])
+    assert "pending" in d.checks.data["status"]
+    # the other valve shown before the whole design comes: its sweep is to come, not the intake's in its place
+    d.on_valve("value", "intake", "exhaust")
+    assert d.sweep_status.text == WORDS["en"]["sweeping"]
+    d.draw_sweep(d.generation, whole, _now(), 0)
+    assert d.sweep_stamp.data["seq"] == [0] and "pending" not in d.checks.data["status"]
+    assert list(d.sweep_sources["force"].data["y"]) == whole["sweeps"]["exhaust"]["min_contact_force_N"]
+    # a valve the whole design does not sweep: without a [dynamics] section beside one with it
+    mixed = copy.deepcopy(d.session.document)
+    del mixed["valves"]["exhaust"]["dynamics"]
+    assert Session.sweep_one(mixed, "exhaust") is None
+
+
+def test_accepted_failures_say_so_in_words():
+    # issue 40: accepted failures showed green with negative margins; the built-in example accepts six
+    d = _designer()
+    data = d.checks.data
+    accepted = [i for i, k in enumerate(data["key"]) if k in {c["quantity"] for c in d.session.good["results"]["checks"]
+                                                              if c["accepted"] and not c["pass"]}]
+    assert len(accepted) == 6
+    assert {data["status"][i] for i in accepted} == {"accepted (fails)"}
+    assert {data["colour"][i] for i in accepted} == {SEVERITY_COLOURS["accepted"]} != {SEVERITY_COLOURS["pass"]}
+    assert all(data["margin"][i].startswith("-") for i in accepted)
+    passing = [i for i, m in enumerate(data["margin"]) if m.startswith("+")]
+    assert {data["status"][i] for i in passing} == {"passes"}
+
+
+def test_the_sweep_plots_have_their_own_axes_and_the_map_its_colour_bar():
+    # issue 40: the seating velocity plot took the force plot's axis (0-800 N) through the shared marks of the jump
+    # and bounce speeds, and showed a flat line; the lift-error map had no colour bar
+    d = _swept(_designer())
+    seating = np.abs(np.array(d.sweep_sources["seating"].data["y"], dtype=float))
+    seating = seating[np.isfinite(seating)]
+    rng = d.figures["sweep_seating"].y_range
+    assert rng.start <= seating.min() and seating.max() <= rng.end < 2.0 * seating.max()
+    marks = d.sweep_marks["seating"].data
+    assert len(marks["x"]) and max(marks["y1"]) == pytest.approx(seating.max())
+    force = d.sweep_sources["force"].data["y"]
+    assert d.figures["sweep_force"].y_range.end >= np.nanmax(force)
+    assert d.colour_bar in d.figures["sweep_map"].right and d.colour_bar.color_mapper is d.mapper
+    assert d.mapper.high == pytest.approx(np.nanmax(np.abs(d.map_source.data["image"][0])))
+
+
+def test_the_dynamics_against_the_angle_at_a_chosen_speed():
+    d = _swept(_designer())
+    sweep = d.sweeps["intake"]
+    # at first the swept speed nearest the rated one (7000 rpm)
+    speeds = np.array(sweep["speed_rpm"])
+    i = int(np.argmin(np.abs(speeds - 7000.0)))
+    assert d.speed.value == pytest.approx(speeds[i])
+    d.speed.value = float(speeds[5])
+    d.on_speed("value_throttled", None, float(speeds[5]))
+    force = np.array(d.at_speed.data["force"], dtype=float)
+    # the speed's row of the sweep's maps
+    assert np.array_equal(force, np.array(sweep["map_contact_force_N"][5], dtype=float), equal_nan=True)
+    # the cam contact force against the angle: its least where the valve is well open is not below the sweep's
+    # smallest contact force while the cam lifts at that speed (the per-speed table, over every angle of the sweep)
+    series = d.session.good["series"]["intake"]
+    open_ = np.interp(d.at_speed.data["x"], series["cam_deg"], series["valve_lift_mm"]) > 0.5
+    assert np.min(force[open_]) >= sweep["min_contact_force_N"][5] - 1e-6
+    assert d.figures["at_speed"].title.text == f"at {speeds[5]:.0f} rpm"
+    # the rigid train's acceleration at that speed is the rated speed's scaled by the square of the speed ratio
+    rigid = np.array(d.at_speed.data["rigid"], dtype=float)
+    assert np.nanmax(rigid) == pytest.approx(np.interp(d.at_speed.data["x"], series["cam_deg"],
+                                                       series["valve_acceleration_m_s2"]).max()
+                                             * (speeds[5] / 7000.0) ** 2, rel=1e-9)
+
+
+@pytest.mark.parametrize("example", ["ukrsurt2019-diesel.toml", "modern-dohc-roller-finger.toml"])
+def test_the_spring_plot_shows_the_chosen_springs_line(example):
+    # issue 40: the spring plot's range hid the chosen spring's line (diesel) or cut it (finger)
+    path = EXAMPLES / example
+    d = _designer(path.read_text(encoding="utf-8"), path.parent)
+    curves = d.curves.data
+    x, y = d.figures["spring"].x_range, d.figures["spring"].y_range
+    for column, rng in (("spring_line_x", x), ("spring_x", x), ("spring_line_y", y), ("spring_y", y)):
+        values = np.asarray(curves[column], dtype=float)
+        values = values[np.isfinite(values)]
+        assert rng.start <= values.min() and values.max() <= rng.end, column
+
+
+def test_the_curvature_plot_is_one_over_rho_with_its_limit():
+    # issue 40: the roller finger's radius of curvature passes through infinity at the flanks' inflections (-21,000 mm
+    # spikes flattened the plot); 1/rho passes through zero there
+    path = EXAMPLES / "modern-dohc-roller-finger.toml"
+    d = _designer(path.read_text(encoding="utf-8"), path.parent)
+    series = d.session.good["series"]["intake"]
+    rho = np.array(series["rho_mm"], dtype=float)
+    assert np.nanmin(rho) < -10000.0
+    kappa = np.asarray(d.curves.data["curvature"], dtype=float)[:len(rho)]
+    assert kappa == pytest.approx(1.0 / rho, rel=1e-6)
+    # the check of the smallest convex radius: rho_min >= 2 mm, drawn as 1/rho = 0.5 1/mm
+    assert np.nanmax(d.curves.data["curvature_limit"]) == pytest.approx(0.5)
+    rng = d.figures["curvature"].y_range
+    assert rng.end >= 0.5 and rng.end - rng.start < 1.0
+
+
+def test_units_lengths_in_inches_angles_in_crank_degrees():
+    d = _designer()
+    series = d.session.good["series"]["intake"]
+    d.length_select.value, d.angle_select.value = "in", "crank"
+    curves = d.curves.data
+    n = len(series["cam_deg"])
+    assert np.nanmax(curves["lift"]) == pytest.approx(max(series["valve_lift_mm"]) / INCH, rel=1e-6)
+    # crank deg from the gas-exchange TDC: the nose of the intake at 116 crank deg (the cam card's lobe centre)
+    assert np.asarray(curves["x"][:n]) == pytest.approx(np.asarray(series["crank_deg"]), rel=1e-6)
+    assert d.handles["lift"].data["x"][0] == pytest.approx(116.0)
+    assert d.handles["lift"].data["y"][0] == pytest.approx(9.0 / INCH)
+    assert d.figures["lift"].yaxis.axis_label == "lift, in"
+    # per crank degree: half the slope per cam degree; in inches
+    d.derivative_select.value = "deg"
+    v = np.asarray(d.curves.data["velocity"][:n], dtype=float)
+    slope = np.gradient(np.asarray(series["valve_lift_mm"]) / INCH, np.asarray(series["crank_deg"]))
+    off = np.asarray(series["valve_lift_mm"]) > 0.5
+    assert np.max(np.abs(v[off] - slope[off])) < 0.01 * np.max(np.abs(slope))
+    # a handle dragged in these units: the nose to 0.4 in = 10.16 mm
+    _request(d, "end", "nose", 116.0, 0.4)
+    assert d.session.document["valves"]["intake"]["max_lift_mm"] == pytest.approx(10.16)
+
+
+def test_overlay_of_a_file_and_the_dxf_of_the_contour():
+    from valvetrain.design import run
+    from valvetrain.export import dxf_bytes
+    from valvetrain.specification import example_spec
+
+    d = _designer()
+    other = (EXAMPLES / "pushrod-dynamics.toml").read_text(encoding="utf-8")
+    d.overlay.set_from_json("filename", "pushrod-dynamics.toml")          # as the page sets it
+    d.on_overlay("value", None, base64.b64encode(other.encode()).decode())
+    theirs = d.session.baseline["series"]["intake"]
+    assert np.nanmax(d.base_curves.data["lift"]) == pytest.approx(max(theirs["valve_lift_mm"]), rel=1e-6)
+    d.on_overlay("value", None, base64.b64encode(b"engine = 3").decode())
+    assert d.status.text.startswith("pushrod-dynamics.toml: not designed")
+    d.on_dxf()
+    data = base64.b64decode(d.downloaded["dxf"].text)
+    # the bytes of `valvetrain run`'s contour/intake.dxf, with a comment (group 999) that makes each download new
+    assert data.startswith(dxf_bytes(run(example_spec()).valves["intake"])) and data.endswith(b"999\ndownload 1\n")
+
+
+def test_the_cam_card_gives_the_events_the_lobe_separation_and_the_overlap():
+    d = _designer()
+    card = {q: (i, e) for q, i, e in zip(d.card.data["quantity"], d.card.data["intake"], d.card.data["exhaust"],
+                                         strict=True)}
+    # the built-in example's keys: the intake opens 26 crank deg before TDC and closes 78 after BDC (258 from the
+    # gas-exchange TDC), the exhaust opens 70 before BDC (-250) and closes 34 after TDC: the seat-to-seat events;
+    # the noses halfway, 116 and -108 crank deg; the lobe separation half their difference, (116 + 108) / 2 = 112
+    # cam deg; the overlap seat to seat 34 + 26 = 60 crank deg
+    assert card["seat to seat: opens, crank deg"] == ("-26", "-250")
+    assert card["seat to seat: closes, crank deg"] == ("258", "34")
+    assert card["lobe centre, crank deg"] == ("116", "-108")
+    assert card["lobe separation angle, cam deg"][0] == "112"
+    assert card["overlap seat to seat, crank deg"][0] == "60"
+    assert "at 1 mm valve lift: opens, crank deg" in card and "at 0.050 in (1.27 mm) tappet lift: opens, crank deg" in card
 
 
 def test_plot_ranges_are_kept_while_the_curves_keep_half_their_room():
@@ -144,12 +382,11 @@ def test_plot_ranges_are_kept_while_the_curves_keep_half_their_room():
     assert kept_range(-2.5, 12.5, 0.0, 12.0, 0.25) == (-3.0, 15.0)
     assert kept_range(-3.0, 15.0, 0.0, 2.0, 0.25) == (-0.5, 2.5)
     # the redraws of a drag change a range only when it moves: the nose 0.1 mm higher leaves the lift plot's
-    d = Designer(Document(), Session.start())
+    d = _designer()
     lift = d.figures["lift"].y_range
     before = (lift.start, lift.end)
-    handles = dict(d.handles["lift"].data)
-    d.on_handles("lift", "data", handles, {**handles, "y": [handles["y"][0] + 0.1]})
-    assert d.session.document["valves"]["intake"]["max_lift_mm"] == pytest.approx(handles["y"][0] + 0.1, abs=1e-3)
+    _request(d, "end", "nose", 0.0, 9.1)
+    assert d.session.document["valves"]["intake"]["max_lift_mm"] == pytest.approx(9.1)
     assert (lift.start, lift.end) == before
 
 
@@ -157,20 +394,17 @@ def test_a_drag_sends_only_the_sources_that_change():
     # the page gets a message per changed source (and paints its plots again): after the sweep panel is drawn, a drag
     # of the nose changes the curves and the handles, never the sweep panel of the last whole design (its new sweep
     # comes later) nor the heel circle (the same base circle); counted on the document's change events
-    d = Designer(Document(), Session.start())
-    d.draw_sweep(d.generation, Session.settle(d.session.good_document), _now())
+    d = _swept(_designer())
     changed = []
     d.doc.on_change(lambda event: changed.append(getattr(event, "model", None)))
-    lift = dict(d.handles["lift"].data)
-    d.on_handles("lift", "data", lift, {**lift, "y": [lift["y"][0] - 0.1]})
+    _request(d, "end", "nose", 0.0, 8.9)
     assert d.curves in changed
-    unchanged = [d.heel, d.map_source, d.sweep_marks, *d.sweep_sources.values()]
+    unchanged = [d.heel, d.map_source, *d.sweep_marks.values(), *d.sweep_sources.values()]
     assert [s for s in unchanged if s in changed] == []
     # a pinned baseline's curves (NaN-padded to one length) are the same at the next drag: not sent again
     d.on_pin()
     changed.clear()
-    lift = dict(d.handles["lift"].data)
-    d.on_handles("lift", "data", lift, {**lift, "y": [lift["y"][0] - 0.1]})
+    _request(d, "end", "nose", 0.0, 8.8)
     assert d.curves in changed and d.base_curves not in changed
 
 
@@ -203,7 +437,7 @@ def test_thinned_curve_keeps_what_a_plot_shows():
 
 
 def test_curves_sent_to_the_page_are_thinned_to_what_the_plots_show():
-    d = Designer(Document(), Session.start())
+    d = _designer()
     series = d.session.good["series"]["intake"]
     curves = d.curves.data
     # the spring's required force: about 2000 points against the lift, sent with at most 402; its largest force
@@ -221,3 +455,11 @@ def test_curves_sent_to_the_page_are_thinned_to_what_the_plots_show():
     assert (cx[0], cy[0]) == (cx[-1], cy[-1])
     assert set(zip(cx, cy, strict=True)) <= set(zip(np.float32(series["contour_x_mm"]), np.float32(series["contour_y_mm"]),
                                                     strict=True))
+
+
+def test_a_specification_without_valves_opens_with_its_engine_and_checks():
+    path = EXAMPLES / "v8-crank.toml"
+    d = _designer(path.read_text(encoding="utf-8"), path.parent)
+    assert d.valve is None and [p.title for p in d.spec_tabs.tabs] == ["Engine"]
+    assert any(k.startswith("crank") or "torque" in k for k in d.checks.data["key"])
+    assert d.status.text == WORDS["en"]["no_valves"]

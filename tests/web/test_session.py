@@ -1,5 +1,7 @@
 """The designer's session without a browser (web/session.py): edits, drags, baseline, TOML."""
 
+import copy
+from pathlib import Path
 import tomllib
 
 import numpy as np
@@ -8,30 +10,110 @@ import pytest
 pytest.importorskip("bokeh")
 
 from valvetrain.specification import parse_spec  # noqa: E402
-from valvetrain.web.session import Session, form, parse_value  # noqa: E402
+from valvetrain.web.session import Session, document_key, form, parse_value, value_text  # noqa: E402
 
 from appendix import appendix_text  # noqa: E402
 
 
 def test_panel_fields_carry_the_models_bounds():
-    fields = {f.path: f for _, group in form(Session.start().document) for f in group}
+    groups = form(Session.start().document, "intake")
+    # the groups a designer thinks in, in that order
+    assert [g for g, _ in groups] == ["engine", "valve", "cam", "spring", "drive", "dynamics"]
+    fields = {f.path: f for _, group in groups for f in group}
     # declared in specification/models.py: bore 5...2000 mm, cylinders 1...64, strokes 2 or 4
     assert (fields["engine.bore_mm"].low, fields["engine.bore_mm"].high) == (5.0, 2000.0)
     assert (fields["engine.cylinders"].kind, fields["engine.cylinders"].low, fields["engine.cylinders"].high) == \
         ("int", 1, 64)
     assert fields["engine.strokes"].options == (2, 4)
     assert fields["valves.intake.cam.phi1_deg"].value == 27.0      # the example's value
+    assert fields["valves.intake.drive.masses.valve_kg"].name == "drive.masses.valve_kg"
     assert parse_value(fields["engine.strokes"], "4") == 4
-    assert parse_value(fields["valves.intake.spring.wire_diameter_range_mm"], "[2.0, 6.0]") == [2.0, 6.0]
+    # lists and texts without TOML's brackets and quotes (with them too)
+    wire = fields["valves.intake.spring.wire_diameter_range_mm"]
+    assert parse_value(wire, "2.0, 6.0") == parse_value(wire, "[2.0, 6.0]") == [2.0, 6.0]
+    assert value_text(wire.value) == "2.0, 7.0"
+    material = fields["valves.intake.spring.material"]
+    assert value_text(material.value) == "VDSiCr"
+    assert parse_value(material, "60S2A") == parse_value(material, '"60S2A"') == "60S2A"
+    assert parse_value(material, "VDSiCr, 60S2A") == ["VDSiCr", "60S2A"]
+    assert "valves.intake.cam" not in fields                       # the cam's table is its own group
+
+
+def test_every_field_of_the_panel_has_a_name_in_both_languages():
+    # the panel shows the report's names of the keys (report/names.py), never the keys themselves: every key of
+    # every section of the panel, the cam's of every law
+    from valvetrain.report.names import has_name
+    from valvetrain.specification import REGISTRY
+    from valvetrain.web.session import GROUPS, _section_fields
+
+    sections = [(path, model) for _, group in GROUPS for path, model in group if model is not None]
+    sections += [("valves.{}.cam", model) for model in REGISTRY.values()]
+    nameless = {f.name for path, model in sections for f in _section_fields({}, path.format("v"), model)
+                if not has_name(f.name)}
+    assert nameless == set()
+
+
+EXAMPLES = sorted((Path(__file__).parents[2] / "examples").rglob("*.toml"))
+"""Every example shipped."""
 
 
 def test_bad_value_keeps_the_last_good_design():
     s = Session.start()
     good = s.good
     assert not s.edit({"engine.bore_mm": 3.0})
-    assert s.good is good
-    assert [p["path"] for p in s.problems] == ["engine.bore_mm"]
-    assert s.edit({"engine.bore_mm": 80.0}) and s.problems == []
+    assert s.good is good and s.document["engine"]["bore_mm"] == 80.0
+    assert [p["path"] for p in s.problems] == ["engine.bore_mm"] and s.refused == {"engine.bore_mm": 3.0}
+    assert s.edit({"engine.bore_mm": 81.0}) and s.problems == [] and s.refused == {}
+
+
+def test_refused_edits_leave_nothing_behind():
+    # issue 40: after three refused edits no drag designed again (each edit applied to the refused document), and
+    # when one did, the design drawn carried the refused values the panel no longer showed
+    s = Session.start()
+    before = document_key(s.document)
+    assert not s.edit({"valves.intake.max_lift_mm": 0.001})             # allowed [0.3, 500] mm
+    # phi1 + phi2 = 80 + 6 > phi_p0 = 71 cam deg: no room for phi3
+    assert not s.edit({"valves.intake.cam.phi1_deg": 80.0})
+    assert not s.edit({"valves.intake.cam.phi3_deg": 60.0})            # the angles no longer add up to phi_p0
+    assert s.problems and document_key(s.document) == before and s.undone == []
+    assert s.drag("intake", "nose", 0.0, 10.0)
+    # the design drawn is the last good one with the drag: 10 mm, and the example's phi1, phi2, phi3
+    cam = s.document["valves"]["intake"]["cam"]
+    assert (s.document["valves"]["intake"]["max_lift_mm"], cam["phi1_deg"], cam["phi2_deg"], cam["phi3_deg"]) == \
+        (10.0, 27.0, 6.0, 38.0)
+    assert max(s.good["series"]["intake"]["valve_lift_mm"]) == pytest.approx(10.0, rel=1e-9)
+    assert s.problems == [] and len(s.undone) == 1
+
+
+def test_undo_and_redo_every_edit():
+    s = Session.start()
+    first = document_key(s.document)
+    assert s.edit({"engine.rated_speed_rpm": 6500.0})
+    assert s.drag("intake", "nose", 0.0, 9.5)
+    third = document_key(s.document)
+    assert not s.edit({"engine.bore_mm": 3.0})                        # refused: nothing to undo
+    assert s.undo() and s.document["valves"]["intake"]["max_lift_mm"] == 9.0
+    assert s.document["engine"]["rated_speed_rpm"] == 6500.0
+    assert s.undo() and document_key(s.document) == first
+    assert not s.undo()
+    # the design undone is the one designed before (kept by its document), not designed again
+    assert s.good is s.designs[first]
+    assert s.redo() and s.redo() and document_key(s.document) == third and not s.redo()
+    assert s.undo() and s.edit({"engine.bore_mm": 81.0})             # a new edit: nothing left to redo
+    assert not s.redo()
+
+
+def test_every_example_opens_with_handles_inside_their_limits():
+    # issue 40: examples/measured-lobe.toml (a lift table in a file) answered HTTP 500 (its handles needed opens_deg)
+    from bokeh.document import Document
+    from valvetrain.web.app import Designer
+
+    for path in EXAMPLES:
+        d = Designer(Document(), Session.start(path.read_text(encoding="utf-8"), path.parent))
+        for valve in d.session.document.get("valves", {}):
+            for h in d.session.handles(valve):
+                assert h.x_limits[0] <= h.x <= h.x_limits[1] and h.y_limits[0] <= h.y <= h.y_limits[1], (path, h)
+    assert {p.name for p in EXAMPLES} >= {"measured-lobe.toml", "two-stroke-ports.toml", "v8-crank.toml"}
 
 
 def test_drag_of_a_segment_boundary_keeps_the_others():
@@ -107,7 +189,7 @@ def test_power_polynomial_handles_follow_its_keys():
 
 def test_combined_cam_segment_ends_set_lengths_and_ratios():
     s = Session.start(appendix_text())
-    doc = s.document
+    doc = copy.deepcopy(s.document)
     doc["valves"]["intake"]["cam"] = {"law": "combined", "base_radius_mm": 20.0, "ramp_end_velocity_mm_per_deg": 0.02,
                                       "segments": [{"shape": "half_sine", "length_deg": 25.0},
                                                    {"shape": "quarter_sine", "length_deg": 8.0},
@@ -162,18 +244,29 @@ def test_points_of_an_inline_table_are_handles_moved_added_and_removed():
     assert again["series"]["intake"]["valve_lift_mm"] == s.good["series"]["intake"]["valve_lift_mm"]
 
 
-def test_kurz_peak_and_shape_factor_handles():
+def test_kurz_boundaries_move_one_to_one_and_set_the_shape_factor():
     s = Session.start()
     h = {x.name: x for x in s.handles("intake")}
-    # the Kurz law's positive acceleration is a half sine over phi1 (Valve-train practical works (n.d.), work 2):
-    # its peak at -phi_p0 + phi1 / 2 = -71 + 27 / 2 = -57.5 cam deg
-    assert h["peak"].x == pytest.approx(-57.5)
-    assert s.drag("intake", "peak", -58.5, h["peak"].y)
+    # the Kurz law's positive acceleration is a half sine over phi1 (Valve-train practical works (n.d.), work 2): its
+    # peak, in the middle of phi1, moves half as far as the phi1 boundary, so it has no handle of its own (a 3 deg
+    # drag of one took phi2 from 6 deg to its 0.1 deg least)
+    assert sorted(h) == ["nose", "phi1", "phi2"]
+    # phi_p0 = 71 cam deg: phi1 may end 0.1 deg after the ramp's end (-71) and 0.1 deg before phi2's end (-38); phi2
+    # may end 0.1 deg after phi1's (-44) and 0.1 deg before the nose (phi3 = 38 is given: -38 + 38 = 0)
+    assert h["phi1"].x_limits == (pytest.approx(-70.9), pytest.approx(-38.1))
+    assert h["phi2"].x_limits == (pytest.approx(-43.9), pytest.approx(-0.1))
+    assert h["phi1"].y_limits[0] == h["phi1"].y_limits[1]               # a boundary of phi1 moves sideways only
+    assert s.drag("intake", "phi1", -47.0, h["phi1"].y)
     cam = s.document["valves"]["intake"]["cam"]
-    # phi1 = 2 x (71 - 58.5) = 25 cam deg; phi2 = 27 + 6 - 25 = 8 (the phi2/phi3 boundary at -38 stays)
-    assert (cam["phi1_deg"], cam["phi2_deg"], cam["phi3_deg"]) == (25.0, 8.0, 38.0)
+    # one to one: the boundary 3 deg earlier, phi1 = 71 - 47 = 24, phi2 = 27 + 6 - 24 = 9 (the phi2/phi3 boundary
+    # at -38 stays)
+    assert (cam["phi1_deg"], cam["phi2_deg"], cam["phi3_deg"]) == (24.0, 9.0, 38.0)
+    assert next(x for x in s.handles("intake") if x.name == "phi1").x == pytest.approx(-47.0)
     series = s.good["series"]["intake"]
     nose = float(np.interp(0.0, series["cam_deg"], series["valve_acceleration_m_s2"]))
+    # Z = 0.05 ... 0.99 of the nose's acceleration: the handle's height range
+    phi2 = next(x for x in s.handles("intake") if x.name == "phi2")
+    assert phi2.y_limits == (pytest.approx(0.99 * nose), pytest.approx(0.05 * nose))
     assert s.drag("intake", "phi2", -38.0, 0.5 * nose)
     assert s.document["valves"]["intake"]["cam"]["shape_factor"] == 0.5
     # Z = j_T2K / j_T3K, the accelerations at the phi2/phi3 junction and at the nose (the law's definition, work 2)

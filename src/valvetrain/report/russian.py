@@ -33,6 +33,7 @@ NOTES = {
     "1.5-2.0; supercharged 3.0-4.0": "1,5-2,0; с наддувом 3,0-4,0",
     "automotive engines": "автомобильные двигатели",
     "with the rounded coils": "с округлённым числом витков",
+    "rounded down to half coils": "с округлением вниз до половины витка",
     "hard to meet at high speed": "трудно выполнимо при высокой частоте вращения",
     "the two ratios must differ": "два отношения должны различаться",
     "central mechanism": "центральный механизм",

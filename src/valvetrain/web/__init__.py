@@ -14,12 +14,12 @@ LOOPBACK = "127.0.0.1"
 
 def make_document(text, source_dir) -> Callable[[Any], None]:
     """The function that builds the page of one tab: a :class:`~valvetrain.web.app.Designer` on a new session."""
-    from .app import Designer
+    from .app import Designer, page_key
     from .session import Session
 
     def build(doc):
         doc.title = "valvetrain designer"
-        Designer(doc, Session.start(text, source_dir))
+        Designer(doc, Session.start(text, source_dir), page_key(text))
 
     return build
 

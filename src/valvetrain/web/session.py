@@ -5,8 +5,10 @@ browser: an edit of a field, a drag of a handle, the pinning of a baseline, the 
 written to disk.
 """
 
+from collections import OrderedDict
 import copy
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
+import json
 import tomllib
 import typing
 from typing import Any
@@ -18,7 +20,7 @@ import tomli_w
 from .. import api
 from ..specification import REGISTRY, SpecError, example_text, set_keys
 from ..laws import PolydyneLaw
-from ..specification.cams import main_half_angle_deg
+from ..specification.cams import Ratio, main_half_angle_deg
 from ..specification.fields import Range
 from ..specification.models import Drive, Dynamics, Engine, Masses, Spec, Spring, Valve
 from ..units import MM
@@ -32,20 +34,29 @@ MIN_SEGMENT_DEG = 0.1
 
 @dataclass(frozen=True)
 class Field:
-    """One input of the specification panel: the dotted key, the kind of input and its bounds or options."""
+    """One input of the specification panel: the dotted key, the kind of input, its value and its bounds or
+    options.  Kinds: ``"float"``, ``"int"``, ``"choice"`` (an option), ``"string"`` (a text), ``"list"`` (numbers
+    or texts, comma-separated), ``"text"`` (any other TOML value: a table, a text or a list of texts)."""
 
     path: str
-    kind: str                  # "float", "int", "choice", "text" (a TOML value: a string, a list, a table)
+    kind: str
     value: object
     low: float = None
     high: float = None
     unit: str = ""
     options: tuple = ()
     optional: bool = False
+    default: object = None
+
+    @property
+    def name(self) -> str:
+        """The key within its valve or the engine (``cam.phi1_deg``, ``bore_mm``): what its label is looked up by."""
+        parts = self.path.split(".")
+        return ".".join(parts[2:] if parts[0] == "valves" else parts[1:])
 
     @property
     def bounds_text(self) -> str:
-        """``[5, 2000] mm``, ``1 ... 64`` or an empty text."""
+        """``5 ... 2000 mm``, ``1 ... 64`` or an empty text."""
         if self.low is None and self.high is None:
             return ""
         return f"{self.low:g} ... {self.high:g}{' ' + self.unit if self.unit else ''}"
@@ -58,6 +69,12 @@ def _unwrapped(annotation):
         if len(args) == 1:
             return args[0], True
     return annotation, False
+
+
+def _is_table(annotation) -> bool:
+    """Whether a field holds a table (a model, or a choice of models: the cam's law)."""
+    args = typing.get_args(annotation) if typing.get_origin(annotation) is typing.Union else (annotation,)
+    return any(isinstance(a, type) and issubclass(a, BaseModel) for a in args)
 
 
 def field_of(path, info, value) -> Field:
@@ -76,15 +93,23 @@ def field_of(path, info, value) -> Field:
         return Field(path, annotation.__name__, value, low, high, rng.unit if rng else "", optional=optional)
     if annotation is bool:
         return Field(path, "choice", value, options=(True, False), optional=optional)
+    if annotation is str:
+        return Field(path, "string", value, optional=optional)
+    if typing.get_origin(annotation) in (list, tuple):
+        return Field(path, "list", value, optional=optional)
     return Field(path, "text", value, optional=optional)
 
 
-SECTIONS = (("engine", Engine), ("valves.{}", Valve), ("valves.{}.cam", None), ("valves.{}.drive", Drive),
-            ("valves.{}.drive.masses", Masses), ("valves.{}.spring", Spring), ("valves.{}.dynamics", Dynamics))
-"""The sections of the specification panel and their models (the cam's is the registry's model of its law)."""
+GROUPS = (("engine", (("engine", Engine),)), ("valve", (("valves.{}", Valve),)), ("cam", (("valves.{}.cam", None),)),
+          ("spring", (("valves.{}.spring", Spring),)),
+          ("drive", (("valves.{}.drive", Drive), ("valves.{}.drive.masses", Masses))),
+          ("dynamics", (("valves.{}.dynamics", Dynamics),)))
+"""The groups of the specification panel as a designer thinks of them, each with its sections and their models
+(the cam's is the registry's model of its law)."""
 
 
-def _get(document, path):
+def value_at(document, path) -> Any:
+    """The value at a dotted key of a document, None where it has none."""
     node = document
     for part in path.split("."):
         if not isinstance(node, dict) or part not in node:
@@ -94,32 +119,45 @@ def _get(document, path):
 
 
 def _section_fields(document, path, model):
-    section = _get(document, path) or {}
+    section = value_at(document, path) or {}
     out = []
     for key, info in model.model_fields.items():
-        sub, _ = _unwrapped(info.annotation)
-        if key == "closing" or (isinstance(sub, type) and issubclass(sub, BaseModel)):
+        if key == "closing" or _is_table(_unwrapped(info.annotation)[0]):
             continue
-        out.append(field_of(f"{path}.{key}", info, section.get(key, None if info.is_required() else info.default)))
+        default = None if info.is_required() else info.default
+        out.append(replace(field_of(f"{path}.{key}", info, section.get(key, default)), default=default))
     return out
 
 
-def form(document) -> list[tuple[str, list[Field]]]:
-    """The specification panel of a document: ``[(section path, [Field, ...]), ...]``, every scalar key of the
-    engine and of each valve's sections, with the document's values (a key it lacks shows the model's default)."""
+def value_of(document, f) -> Any:
+    """The value a document gives a :class:`Field` of the panel (the model's default where it lacks the key)."""
+    parent, key = f.path.rsplit(".", 1)
+    section = value_at(document, parent)
+    return section.get(key, f.default) if isinstance(section, dict) else f.default
+
+
+def form(document, valve=None) -> list[tuple[str, list[Field]]]:
+    """The specification panel of a document for valve ``valve``: ``[(group, [Field, ...]), ...]`` (:data:`GROUPS`),
+    every scalar key of the engine and of the valve's sections, with the document's values (a key it lacks shows
+    the model's default); the engine's alone without a valve."""
     out = []
-    for pattern, model in SECTIONS:
-        for name in (document.get("valves") or {}) if "{}" in pattern else [None]:
-            path = pattern.format(name)
-            section_model = model or REGISTRY.get(_get(document, path + ".law"))
+    for group, sections in GROUPS:
+        if valve is None and group != "engine":
+            continue
+        fields = []
+        for pattern, model in sections:
+            path = pattern.format(valve)
+            section_model = model or REGISTRY.get(value_at(document, path + ".law"))
             if section_model is not None:
-                out.append((path, _section_fields(document, path, section_model)))
+                fields += _section_fields(document, path, section_model)
+        out.append((group, fields))
     return out
 
 
 def parse_value(f, text) -> Any:
-    """The value of a :class:`Field` from what the page sent: a number, an option, or TOML value text; an empty
-    input of an optional key is ``None`` (the key removed)."""
+    """The value of a :class:`Field` from what the page sent: a number, an option, a text as typed, a list without
+    its brackets (``2.0, 7.0``; texts need no quotes: ``VDSiCr, 60S2A``), or TOML value text; an empty input of an
+    optional key is ``None`` (the key removed)."""
     if f.kind in ("float", "int"):
         if text is None or text == "":
             return None
@@ -128,17 +166,32 @@ def parse_value(f, text) -> Any:
         return next((o for o in f.options if str(o) == str(text)), text)
     if text is None or str(text).strip() == "":
         return None
-    try:
-        return tomllib.loads(f"v = {text}")["v"]
-    except tomllib.TOMLDecodeError:
-        return str(text)
+    text = str(text).strip()
+    if f.kind == "string":
+        return text
+    for wrapped in (f"[{text}]", text) if f.kind == "list" and not text.startswith("[") else (text, f"[{text}]"):
+        try:
+            return tomllib.loads(f"v = {wrapped}")["v"]
+        except tomllib.TOMLDecodeError:
+            continue
+    return [part.strip() for part in text.split(",")] if "," in text else text
 
 
 def value_text(value) -> str:
-    """A value as the text of an input: a TOML value (``"VDSiCr"``, ``[2.0, 7.0]``), empty for None."""
+    """A value as the text of an input: a text as it is (``VDSiCr``), a list without brackets (``2.0, 7.0``), a
+    table as TOML (``{ a = 1 }``), empty for None."""
     if value is None:
         return ""
-    return tomli_w.dumps({"v": value}).removeprefix("v = ").strip()
+    if isinstance(value, str):
+        return value
+    if isinstance(value, (list, tuple)):
+        words = all(isinstance(v, str) and "," not in v and v.strip() == v for v in value)
+        return ", ".join(v if words else _toml_value(v) for v in value)
+    return _toml_value(value)
+
+
+def _toml_value(value):
+    return " ".join(tomli_w.dumps({"v": value}).removeprefix("v = ").split())
 
 
 def without_nones(node) -> Any:
@@ -150,24 +203,36 @@ def without_nones(node) -> Any:
 
 @dataclass(frozen=True)
 class Handle:
-    """A point on a plot that the user drags: its plot (``"lift"`` or ``"acceleration"``) and where it is."""
+    """A point on a plot that the user drags: its plot (``"lift"`` or ``"acceleration"``), where it is and the
+    ranges it is dragged in (``x_limits`` [cam deg from the nose], ``y_limits`` [mm] on the lift plot, [m/s²] on the
+    acceleration plot; a range of one value holds that coordinate: the handle moves along the other only)."""
 
     name: str
     plot: str
     x: float
     y: float
+    x_limits: tuple = (-np.inf, np.inf)
+    y_limits: tuple = (-np.inf, np.inf)
 
 
 def _interp(series, key, x):
     return float(np.interp(x, series["cam_deg"], series[key]))
 
 
+def _ordered(a, b):
+    return (min(a, b), max(a, b))
+
+
 def handles(document, spec, name, series) -> list[Handle]:
     """The handles of valve ``name``: the nose lift (on the lift plot, at the nose) and, on the acceleration plot,
-    the points of its law's shape on the opening flank (the closing flank of a symmetric cam follows by the law):
+    the points of its law's shape on the opening flank (the closing flank of a symmetric cam follows by the law),
+    each with the ranges it is dragged in (:class:`Handle`), which keep every segment at least
+    :data:`MIN_SEGMENT_DEG` and every key within its range:
 
     - a cam of segment angles (``phi1_deg``, ``phi2_deg``: Kurz, constant acceleration): the two boundaries between
-      its segments, ``phi1`` and ``phi2``, and of a Kurz cam the positive peak (``peak``, in the middle of phi1);
+      its segments, ``phi1`` and ``phi2`` (of a Kurz cam ``phi2``'s height sets the shape factor; the peak of the
+      positive acceleration, in the middle of phi1, moves with ``phi1``: a handle of its own would move the
+      boundary twice as far as the pointer);
     - a polydyne cam: its positive peak (``peak``, where the exponents put it: :func:`polydyne_peak`);
     - a power-polynomial cam: the start of the ramp (``ramp``), the positive peak (``peak``, where
       ``peak_position`` puts it and as high as ``peak_acceleration_mm_per_rad2`` makes it), the end of the positive
@@ -176,27 +241,40 @@ def handles(document, spec, name, series) -> list[Handle]:
       a ratio that names that segment.
 
     A lift table given by its points inline (:func:`has_points`) has a handle on the lift plot at each point
-    (``point.K``, K counted from 0) and one on the acceleration plot at each point off the base circle but the first
-    and the last (``acceleration.K``, :func:`acceleration_step`), and no other.
+    (``point.K``, K counted from 0, kept between its neighbours) and one on the acceleration plot at each point off
+    the base circle but the first and the last (``acceleration.K``, :func:`acceleration_step`, moved up and down),
+    and no other; a table in a file has none (its points are the file's).
     """
     valve = document["valves"][name]
     cam = valve.get("cam", {})
     if has_points(cam):
         x, lifts = TablePoints(cam, series).plot_x(cam["table_angles_deg"]), cam["table_lifts_mm"]
-        return ([Handle(f"point.{k}", "lift", float(xk), float(yk))
+        step = HANDLE_STEP["deg"] * TablePoints(cam, series).scale
+        bounds = np.concatenate([[-np.inf], x[:-1] + step]), np.concatenate([x[1:] - step, [np.inf]])
+        return ([Handle(f"point.{k}", "lift", float(xk), float(yk), (float(bounds[0][k]), float(bounds[1][k])),
+                        (0.0, np.inf))
                  for k, (xk, yk) in enumerate(zip(x, lifts, strict=True))]
                 + [Handle(f"acceleration.{k}", "acceleration", float(x[k]),
-                          _interp(series, "valve_acceleration_m_s2", x[k]))
+                          _interp(series, "valve_acceleration_m_s2", x[k]), (float(x[k]), float(x[k])))
                    for k in range(1, len(x) - 1) if lifts[k] > 0.0])
+    v = spec.valves[name]
+    if not v.cam.needs_timing:
+        return []   # a measured table from its file: its own lift and timing, nothing to drag
     out = []
     if valve.get("max_lift_mm") is not None:
-        out.append(Handle("nose", "lift", 0.0, _interp(series, "valve_lift_mm", 0.0)))
-    if not spec.valves[name].cam.needs_timing:
-        return out   # a measured table from its file: its own lift and timing, no shape to drag
-    half = main_half_angle_deg(spec.valves[name], spec.engine.strokes)
-    for key, x in _shape_points(cam, half, series["segments_cam_deg"]):
-        out.append(Handle(key, "acceleration", x, _interp(series, "valve_acceleration_m_s2", x)))
+        low, high = _key_range(Valve, "max_lift_mm")
+        out.append(Handle("nose", "lift", 0.0, _interp(series, "valve_lift_mm", 0.0), (0.0, 0.0), (low, high)))
+    half = main_half_angle_deg(v, spec.engine.strokes)
+    for key, x, x_limits, y_limits in _shape_points(cam, half, series):
+        y = _interp(series, "valve_acceleration_m_s2", x)
+        out.append(Handle(key, "acceleration", x, y, x_limits, (y, y) if y_limits is None else y_limits))
     return out
+
+
+def _key_range(model, key):
+    """The bounds of a bounded key of a specification model (its :class:`Range`): ``(low, high)``."""
+    f = field_of(key, model.model_fields[key], None)
+    return f.low, f.high
 
 
 def has_points(cam) -> bool:
@@ -283,22 +361,45 @@ def acceleration_step(x, k, change, omega, ratio=1.0) -> float:
     return float(-change / (ratio * omega**2) * d1 * d2 / 2.0 / MM)
 
 
-def _shape_points(cam, half, edges):
-    """``[(handle name, cam deg from the nose), ...]`` of a cam's shape on the opening flank (:func:`handles`);
-    ``edges`` are the law's piece boundaries [cam deg] (the design's ``segments_cam_deg``)."""
+def _shape_points(cam, half, series):
+    """``[(handle name, cam deg from the nose, x limits, y limits or None: held), ...]`` of a cam's shape on the
+    opening flank (:func:`handles`); the law's piece boundaries are the design's ``segments_cam_deg``."""
     law = cam.get("law")
+    edges = series["segments_cam_deg"]
+    m = MIN_SEGMENT_DEG
+    nose = _interp(series, "valve_acceleration_m_s2", 0.0)
     if law == "power_polynomial":
         # the pieces: ramp a-b, positive part b-d-e (peak d), negative part e-g-h (trough g), dwell
-        return list(zip(("ramp", "peak", "phi1", "trough"), (edges[0], edges[2], edges[3], edges[4]), strict=True))
+        positive, negative = (edges[1], edges[3]), (edges[3], edges[5])
+        model = REGISTRY["power_polynomial"]
+        low_a, high_a = _key_range(model, "peak_acceleration_mm_per_rad2")
+        # the valve's acceleration per mm/rad² of a_qd (the peak scales with it)
+        scale = _interp(series, "valve_acceleration_m_s2", edges[2]) / cam["peak_acceleration_mm_per_rad2"]
+        return [("ramp", edges[0], (-half - _key_range(model, "ramp_angle_deg")[1], -half - m), None),
+                ("peak", edges[2], tuple(positive[0] + f * (positive[1] - positive[0]) for f in POSITION_RANGE),
+                 _ordered(scale * low_a, scale * high_a)),
+                ("phi1", edges[3], (edges[1] + m, edges[1] + half - m), None),
+                ("trough", edges[4], tuple(negative[0] + f * (negative[1] - negative[0]) for f in POSITION_RANGE),
+                 None)]
     if law == "combined":
-        ends = -half + np.cumsum([seg["length_deg"] for seg in cam["segments"]])
-        return [(f"end.{k}", float(x)) for k, x in enumerate(ends[:-1], 1)]
+        lengths = [seg["length_deg"] for seg in cam["segments"]]
+        ends = -half + np.cumsum(lengths)
+        named = {r["segment"] for r in cam.get("ratios", [])}
+        low_r, high_r = _key_range(Ratio, "value")
+        return [(f"end.{k}", float(x), (float(x - lengths[k - 1] + m), float(x + lengths[k] - m)),
+                 _ordered(low_r * nose, high_r * nose) if k in named else None)
+                for k, x in enumerate(ends[:-1], 1)]
     if law == "polydyne":
-        return [("peak", -half * polydyne_peak(*_exponents(cam)))]
+        _, q, r, s = _exponents(cam)
+        top = min(200.0, q - 0.01) if q is not None else 200.0
+        return [("peak", -half * polydyne_peak(*_exponents(cam)),
+                 (-half * polydyne_peak(top, q, r, s), -half * polydyne_peak(3.0, q, r, s)), None)]
     if {"phi1_deg", "phi2_deg"} <= set(cam):
-        out = [("phi1", -half + cam["phi1_deg"]), ("phi2", -half + cam["phi1_deg"] + cam["phi2_deg"])]
-        # the Kurz law's positive acceleration is a half sine over phi1: its peak in the middle
-        return out + ([("peak", -half + 0.5 * cam["phi1_deg"])] if law == "kurz" else [])
+        phi1, phi2 = cam["phi1_deg"], cam["phi2_deg"]
+        phi3 = cam.get("phi3_deg", half - phi1 - phi2)
+        shape = (_ordered(SHAPE_FACTOR_RANGE[0] * nose, SHAPE_FACTOR_RANGE[1] * nose) if law == "kurz" else None)
+        return [("phi1", -half + phi1, (-half + m, -half + phi1 + phi2 - m), None),
+                ("phi2", -half + phi1 + phi2, (-half + phi1 + m, -half + phi1 + phi2 + phi3 - m), shape)]
     return []
 
 
@@ -387,7 +488,7 @@ def moved(document, spec, name, handle, x, y, series, valve=None) -> dict[str, A
     """
     at = f"valves.{name}"
     if handle == "nose":
-        return {f"{at}.max_lift_mm": round(max(y, HANDLE_STEP["mm"]), 3)}
+        return {f"{at}.max_lift_mm": round(float(np.clip(y, *_key_range(Valve, "max_lift_mm"))), 3)}
     cam = document["valves"][name]["cam"]
     if has_points(cam):
         k = int(handle.split(".")[1])
@@ -434,8 +535,8 @@ def moved(document, spec, name, handle, x, y, series, valve=None) -> dict[str, A
         return {f"{at}.cam.p": polydyne_p(min(max(-x / half, 0.0), 1.0), q, r, s)}
     phi1, phi2 = cam["phi1_deg"], cam["phi2_deg"]
     phi3 = cam.get("phi3_deg")
-    if handle in ("phi1", "peak"):
-        new1, new2 = _split(-half, phi1, phi2, x if handle == "phi1" else -half + 2.0 * (x + half))
+    if handle == "phi1":
+        new1, new2 = _split(-half, phi1, phi2, x)
         return {f"{at}.cam.phi1_deg": new1, f"{at}.cam.phi2_deg": new2}
     new2, new3 = _split(-half + phi1, phi2, half - phi1 - phi2 if phi3 is None else phi3, x)
     out = {f"{at}.cam.phi2_deg": new2}
@@ -448,24 +549,43 @@ def moved(document, spec, name, handle, x, y, series, valve=None) -> dict[str, A
     return out
 
 
+DESIGNS_KEPT = 32
+"""How many designs a tab keeps by their document (:meth:`Session.design`): a drag's last position designed
+while the pointer moved, an undo or a redo, is answered without designing again."""
+
+
+def document_key(document) -> str:
+    """A document as the text that keys its design: JSON with sorted keys (TOML's values are JSON's)."""
+    return json.dumps(document, sort_keys=True, default=str)
+
+
 @dataclass
 class Session:
-    """The state of one tab: the document (a dict of TOML tables) edited, the result of its last good design,
-    the problems of the last edit (key -> message), the baseline pinned.
+    """The state of one tab: the good design (its document, a dict of TOML tables, and its result), the problems of
+    the last edit refused (records of :func:`valvetrain.api.design`) and the values it tried, the documents to undo
+    and to redo, the baseline pinned.
+
+    Every edit applies to the good design (:meth:`edit`): one that designs becomes the good design (and can be
+    undone), one that does not leaves the good design, the undo and the redo as they were.
 
     An edit is answered in two steps: :meth:`apply` designs without the speed sweeps of the ``[dynamics]``
     sections and without the diagnosis of springs that do not pass (``good``: the kinematics, springs and checks in
-    tens of ms; a valve the edit left as it was is not designed again: ``memo``); :meth:`settle` adds them (``full``:
-    the checks of the whole design and the sweeps), in the background, and :meth:`settled` keeps it."""
+    tens of ms; a valve the edit left as it was is not designed again: ``memo``; a document designed before is not
+    designed again: :meth:`design`); :meth:`settle` adds them (``full``: the checks of the whole design and the
+    sweeps), in the background, and :meth:`settled` keeps it."""
 
-    document: dict
+    good_document: dict
     good: dict = None
-    good_document: dict = None
     problems: list = field(default_factory=list)
+    refused: dict = field(default_factory=dict)
+    undone: list = field(default_factory=list)
+    redone: list = field(default_factory=list)
     baseline: dict = None
     full: dict = None
     last_full: dict = None
     memo: dict = field(default_factory=dict)
+    designs: OrderedDict = field(default_factory=OrderedDict)
+    specs: OrderedDict = field(default_factory=OrderedDict)
 
     @classmethod
     def start(cls, text=None, source_dir=None) -> "Session":
@@ -474,33 +594,91 @@ class Session:
         Raises
         ------
         SpecError
-            The text is no specification, one without valves, or one that does not design.
+            The text is no specification, or one that does not design.
         """
         try:
             document = tomllib.loads(text if text is not None else example_text())
         except tomllib.TOMLDecodeError as exc:
             raise SpecError([f"not valid TOML: {exc}"]) from None
-        if not document.get("valves"):
-            raise SpecError(["valves: the designer edits the valves' cams; the file defines none (add a "
-                             "[valves.NAME] section)"])
         if source_dir is not None:
             document["source_dir"] = str(source_dir)
-        s = cls(document)
-        if not s.apply(document):
-            raise SpecError([p["text"] for p in s.problems])
+        s = cls(copy.deepcopy(document))
+        s.good = s.design(document)
+        if not s.good["ok"]:
+            raise SpecError([p["text"] for p in s.good["errors"]])
         return s
 
-    def apply(self, document) -> bool:
-        """Design ``document`` without its speed sweeps and spring diagnosis (:func:`valvetrain.api.design`,
-        ``dynamics=False``, ``diagnose=False``; it is validated whole); keep it as the good design if it designs, else
-        keep the last good one and the problems.  Returns True when it designed."""
-        result = api.design(without_nones(document), dynamics=False, diagnose=False, memo=self.memo)
-        self.document = document
-        self.problems = result["errors"]
-        if result["ok"]:
-            self.good, self.good_document = result, copy.deepcopy(document)
-            self.last_full, self.full = self.full or self.last_full, None
-        return result["ok"]
+    @property
+    def document(self) -> dict:
+        """The document of the good design (the one drawn)."""
+        return self.good_document
+
+    def design(self, document) -> dict:
+        """:func:`valvetrain.api.design` of ``document`` without its speed sweeps and spring diagnosis
+        (``dynamics=False``, ``diagnose=False``; it is validated whole), or the same design kept from before (the
+        last :data:`DESIGNS_KEPT`)."""
+        key = document_key(document)
+        result = self.designs.get(key)
+        if result is None:
+            result = api.design(without_nones(document), dynamics=False, diagnose=False, memo=self.memo)
+            self.designs[key] = result
+            if len(self.designs) > DESIGNS_KEPT:
+                self.designs.popitem(last=False)
+        else:
+            self.designs.move_to_end(key)
+        return result
+
+    def apply(self, document, values=None) -> bool:
+        """Design ``document`` (:meth:`design`) and keep it as the good design if it designs (the good design before
+        it can be undone; nothing to redo), else keep the good design and record the problems and the ``values``
+        tried (dotted key -> value).  Returns True when it designed."""
+        result = self.design(document)
+        if not result["ok"]:
+            self.problems, self.refused = result["errors"], dict(values or {})
+            return False
+        self.problems, self.refused = [], {}
+        if document_key(document) != document_key(self.good_document):
+            self.undone.append(self.good_document)
+            self.redone.clear()
+            self._keep(document, result)
+        return True
+
+    def _keep(self, document, result):
+        self.good, self.good_document = result, copy.deepcopy(document)
+        self.last_full, self.full = self.full or self.last_full, None
+
+    def edit(self, values) -> bool:
+        """Set dotted keys (``{"engine.rated_speed_rpm": 7500}``) on the good design and design; see :meth:`apply`."""
+        try:
+            document = set_keys(self.good_document, values)
+        except ValueError as exc:
+            self.problems, self.refused = api.error_records(SpecError([exc.args[0]])), dict(values)
+            return False
+        return self.apply(document, values)
+
+    def preview(self, values) -> tuple[dict, dict]:
+        """The document of the good design with dotted keys set and its design (:meth:`design`), kept as neither:
+        what a drag shows while the pointer moves."""
+        document = set_keys(self.good_document, values)
+        return document, self.design(document)
+
+    def undo(self) -> bool:
+        """Go back to the good design before the last edit kept (the current one can be redone); False when there
+        is none."""
+        return self._step(self.undone, self.redone)
+
+    def redo(self) -> bool:
+        """Bring back the design the last :meth:`undo` left; False when there is none."""
+        return self._step(self.redone, self.undone)
+
+    def _step(self, source, target):
+        if not source:
+            return False
+        document = source.pop()
+        target.append(self.good_document)
+        self._keep(document, self.design(document))
+        self.problems, self.refused = [], {}
+        return True
 
     @staticmethod
     def settle(document, progress=None) -> dict:
@@ -509,9 +687,22 @@ class Session:
         with the default one (:func:`valvetrain.api.sweep`) and its design is the good one (``results`` None).
         ``progress`` as there.  Pure: called in a worker thread, kept by :meth:`settled`."""
         plain = without_nones(document)
-        if any("dynamics" in v for v in plain["valves"].values()):
+        if any("dynamics" in v for v in plain.get("valves", {}).values()):
             return api.design(plain, sweeps=True, progress=progress)
         return {**api.sweep(plain, progress=progress), "results": None}
+
+    @staticmethod
+    def sweep_one(document, name, progress=None) -> dict | None:
+        """The speed-sweep series of valve ``name`` of a good document alone (:func:`valvetrain.api.sweep` of that
+        valve): the whole design's (:meth:`settle`) sweep of it in a fraction of the time.  None where the whole
+        design sweeps no such valve (another valve has a ``[dynamics]`` section and this one none) or the sweep does
+        not come (the whole design says why).  ``progress`` as for :meth:`settle`."""
+        plain = without_nones(document)
+        valves = plain.get("valves", {})
+        if name not in ([n for n, v in valves.items() if "dynamics" in v] or list(valves)):
+            return None
+        result = api.sweep(plain, progress=progress, names=[name])
+        return result["sweeps"][name] if result["ok"] else None
 
     def settled(self, result) -> None:
         """Keep the whole design (:meth:`settle`) of the good document."""
@@ -531,34 +722,58 @@ class Session:
         have = {c["quantity"] for c in self.good["results"]["checks"]}
         return [c for c in self.last_full["results"]["checks"] if c["quantity"] not in have]
 
-    def edit(self, values) -> bool:
-        """Set dotted keys (``{"engine.rated_speed_rpm": 7500}``) and design; see :meth:`apply`."""
-        return self.apply(set_keys(self.document, values))
+    def spec_of(self, document) -> Spec:
+        """The validated specification of a document that designed (kept with its design: the handles of a drag's
+        preview ask for it at every move)."""
+        from ..specification import validate
+
+        key = document_key(document)
+        if key not in self.specs:
+            self.specs[key] = validate(without_nones(document))
+            while len(self.specs) > DESIGNS_KEPT:
+                self.specs.popitem(last=False)
+        return self.specs[key]
 
     @property
     def spec(self) -> Spec:
         """The validated specification of the good design."""
-        from ..specification import validate
+        return self.spec_of(self.good_document)
 
-        return validate(without_nones(self.good_document))
+    def handles(self, name, document=None, result=None) -> list[Handle]:
+        """The handles of valve ``name`` on the good design (:func:`handles`), or on ``document`` and its
+        ``result`` (a drag's preview)."""
+        document, result = (self.good_document, self.good) if document is None else (document, result)
+        return handles(document, self.spec_of(document), name, result["series"][name])
 
-    def handles(self, name) -> list[Handle]:
-        """The handles of valve ``name`` on the good design (:func:`handles`)."""
-        return handles(self.good_document, self.spec, name, self.good["series"][name])
+    def moved(self, name, handle, x, y) -> dict:
+        """The keys a drag of a handle of valve ``name`` to (x, y) sets on the good design (:func:`moved`)."""
+        return moved(self.good_document, self.spec, name, handle, x, y, self.good["series"][name],
+                     self.good["results"]["valves"][name])
 
     def drag(self, name, handle, x, y) -> dict:
-        """Move a handle of valve ``name`` to (x, y) and design (:func:`moved`, :meth:`edit`).  Returns the keys set
+        """Move a handle of valve ``name`` to (x, y) and design (:meth:`moved`, :meth:`edit`).  Returns the keys set
         (``{dotted key: value}``) when it designed, else an empty dict."""
-        values = moved(self.good_document, self.spec, name, handle, x, y, self.good["series"][name],
-                       self.good["results"]["valves"][name])
+        values = self.moved(name, handle, x, y)
         return values if self.edit(values) else {}
 
-    def set_points(self, name, x, y) -> dict:
-        """Put the points of valve ``name``'s inline lift table at ``x`` [cam deg from the nose], ``y`` [mm] (points
-        added or removed on the lift plot) and design; see :meth:`drag`."""
+    def points(self, name, x, y) -> dict:
+        """The keys that put the points of valve ``name``'s inline lift table at ``x`` [cam deg from the nose],
+        ``y`` [mm] (points added or removed on the lift plot)."""
         cam = self.good_document["valves"][name]["cam"]
-        values = _points_moved(f"valves.{name}", cam, self.good["series"][name], x, y)
+        return _points_moved(f"valves.{name}", cam, self.good["series"][name], x, y)
+
+    def set_points(self, name, x, y) -> dict:
+        """Put the points of an inline lift table (:meth:`points`) and design; see :meth:`drag`."""
+        values = self.points(name, x, y)
         return values if self.edit(values) else {}
+
+    def restore(self, document) -> bool:
+        """Design a whole document the page kept across a reload (an edit that can be undone; its source folder is
+        this session's, whatever the page sent)."""
+        document = {k: v for k, v in document.items() if k != "source_dir"}
+        if "source_dir" in self.good_document:
+            document["source_dir"] = self.good_document["source_dir"]
+        return self.apply(document)
 
     def pin(self) -> None:
         """Pin the good design as the baseline that the plots and the checks table compare with (with the checks of
@@ -572,3 +787,13 @@ class Session:
     def toml(self) -> str:
         """The specification of the good design as TOML text (every default written out)."""
         return api.toml_text(without_nones(self.good_document))
+
+    def dxf(self, name) -> bytes | None:
+        """The contour of valve ``name`` of the good design as DXF, the bytes of ``valvetrain run``'s
+        ``contour/NAME.dxf``; None for an undercut profile (which has no contour to make)."""
+        from ..design import run
+        from ..export import dxf_bytes
+
+        plain = without_nones(self.good_document)
+        valve = run(api.without_dynamics(plain, self.spec), diagnose=False, memo=self.memo).valves[name]
+        return None if valve.profile.undercut else dxf_bytes(valve)
