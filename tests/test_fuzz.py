@@ -92,8 +92,12 @@ def test_the_fuzzer_reaches_the_finger_the_adjuster_the_camshaft_the_tolerances_
     {"base": "example", "ops": [["section", "add_camshaft"],
                                 ["set", ["camshaft", "section_bores_mm"], [24.999, 31.999]]]},
     {"base": "examples/measured-lobe.toml", "ops": [], "session": [["drag", "intake", 0, 10.0, 5.0], ["toml"]]},
+    # the fuzzer's session dragged a handle by its Handle, not its name: a three-arc cam's nose fell through to the
+    # keys of a cam of segment angles (KeyError 'phi1_deg')
+    {"base": "law:three_arc+roller", "ops": [["stage", "intake", "hydraulic"]],
+     "session": [["drag", "intake", 2, -10.0, -0.5], ["edit", "valves.intake.dynamics.damping_ratio", 0.5]]},
 ], ids=["finger on a table, out of reach", "adjuster without refill", "finger pad off the tip", "camshaft wall 0.5 um",
-        "designer on a measured table"])
+        "designer on a measured table", "designer drags a three-arc nose"])
 def test_the_findings_of_issue_36_run_or_are_refused(case):
     rec = fuzz.run_case(case, BASES, timeout=120.0)
     assert rec["outcome"] in ("ok", "refused"), rec

@@ -1644,7 +1644,7 @@ def _session_step(session, action, tmp):
         if kind == "drag":
             handles = session.handles(name)
             if handles:
-                session.drag(name, handles[action[2] % len(handles)], action[3], action[4])
+                session.drag(name, handles[action[2] % len(handles)].name, action[3], action[4])
         elif has_points(session.good_document["valves"][name]["cam"]):
             session.set_points(name, action[2], action[3])
     elif kind == "pin":
