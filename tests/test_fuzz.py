@@ -99,8 +99,11 @@ def test_the_fuzzer_reaches_the_finger_the_adjuster_the_camshaft_the_tolerances_
     # nan_output before: a lash adjuster on a valve without [dynamics] has no simulated plunger motion, its per-speed
     # pumped_up_um, revolutions and settled null as their labels say
     {"base": "examples/measured-lobe.toml", "ops": [["stage", "intake", "lash_adjuster"]]},
+    # bad_message before: a lift table with a row off the spline fit was refused in more than 300 characters
+    {"base": "law:table", "ops": [["lift_file", "intake", "short_event_10_deg", "valve", "spline"]]},
 ], ids=["finger on a table, out of reach", "adjuster without refill", "finger pad off the tip", "camshaft wall 0.5 um",
-        "designer on a measured table", "designer drags a three-arc nose", "adjuster without dynamics"])
+        "designer on a measured table", "designer drags a three-arc nose", "adjuster without dynamics",
+        "a row off the fit"])
 def test_the_findings_of_issue_36_run_or_are_refused(case):
     rec = fuzz.run_case(case, BASES, timeout=120.0)
     assert rec["outcome"] in ("ok", "refused"), rec
