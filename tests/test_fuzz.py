@@ -109,6 +109,25 @@ def test_the_findings_of_issue_36_run_or_are_refused(case):
     assert rec["outcome"] in ("ok", "refused"), rec
 
 
+def test_serve_refuses_a_file_that_is_not_toml_as_run_does(tmp_path):
+    """Issue 36 (fuzz): `valvetrain serve` on a file with a duplicate key prints what `valvetrain run` prints, the file
+    and the line ("<file>: not valid TOML: Cannot overwrite a value (at line 4, column 15)"); the fuzzer compared
+    the message, its temporary folder written <tmp>, with the file's real path and counted it a bad message."""
+    from click.testing import CliRunner
+    from valvetrain.cli import main
+
+    case = {"base": "examples/measured-lobe.toml", "ops": [["text", "duplicate_key"]],
+            "serve": {"mode": "ok", "requests": []}}
+    rec = fuzz.run_case(case, BASES, timeout=120.0)
+    assert rec["outcome"] == "refused", rec
+    text, _, _ = fuzz.materialize(case, BASES)
+    (tmp_path / "spec.toml").write_bytes(text)
+    ran = CliRunner().invoke(main, ["run", str(tmp_path / "spec.toml"), "--out", str(tmp_path / "out")])
+    assert ran.exit_code == 2
+    assert rec["detail"] == [m.replace(str(tmp_path), "<tmp>") for m in fuzz._command_messages(ran.output)]
+    assert rec["detail"][0].startswith("<tmp>/spec.toml: not valid TOML: Cannot overwrite a value (at line ")
+
+
 def test_a_null_documented_by_its_path_is_not_excused_elsewhere():
     """The lash adjuster's per-speed revolutions and settled are null at a speed without a simulated motion (their
     labels); a null of a key of the same name in another section (the dynamics' revolutions) stays a finding."""

@@ -1792,7 +1792,7 @@ def run_serve_case(case, bases, timeout=60.0):
                     outcome, signature, detail = found
                 elif proc.returncode == 2:
                     messages = _command_messages(stderr)
-                    bad = [(m, message_problem(m, spec_file)) for m in messages]
+                    bad = [(m, message_problem(m, str(spec_file).replace(tmp, "<tmp>"))) for m in messages]
                     bad = [(m, why) for m, why in bad if why and not (why == "no key path" and OPTION.search(m))]
                     outcome = "bad_message" if bad or not messages else "refused"
                     signature = (f"serve: {bad[0][1]}: {_message_key(bad[0][0])}" if bad else
