@@ -92,14 +92,53 @@ def test_the_fuzzer_reaches_the_finger_the_adjuster_the_camshaft_the_tolerances_
     {"base": "example", "ops": [["section", "add_camshaft"],
                                 ["set", ["camshaft", "section_bores_mm"], [24.999, 31.999]]]},
     {"base": "examples/measured-lobe.toml", "ops": [], "session": [["drag", "intake", 0, 10.0, 5.0], ["toml"]]},
+    # the fuzzer's session dragged a handle by its Handle, not its name: a three-arc cam's nose fell through to the
+    # keys of a cam of segment angles (KeyError 'phi1_deg')
+    {"base": "law:three_arc+roller", "ops": [["stage", "intake", "hydraulic"]],
+     "session": [["drag", "intake", 2, -10.0, -0.5], ["edit", "valves.intake.dynamics.damping_ratio", 0.5]]},
+    # nan_output before: a lash adjuster on a valve without [dynamics] has no simulated plunger motion, its per-speed
+    # pumped_up_um, revolutions and settled null as their labels say
+    {"base": "examples/measured-lobe.toml", "ops": [["stage", "intake", "lash_adjuster"]]},
+    # bad_message before: a lift table with a row off the spline fit was refused in more than 300 characters
+    {"base": "law:table", "ops": [["lift_file", "intake", "short_event_10_deg", "valve", "spline"]]},
 ], ids=["finger on a table, out of reach", "adjuster without refill", "finger pad off the tip", "camshaft wall 0.5 um",
-        "designer on a measured table"])
+        "designer on a measured table", "designer drags a three-arc nose", "adjuster without dynamics",
+        "a row off the fit"])
 def test_the_findings_of_issue_36_run_or_are_refused(case):
     rec = fuzz.run_case(case, BASES, timeout=120.0)
     assert rec["outcome"] in ("ok", "refused"), rec
 
 
-def test_a_tolerance_case_with_damaged_records_designs_them_again():
+def test_serve_refuses_a_file_that_is_not_toml_as_run_does(tmp_path):
+    """Issue 36 (fuzz): `valvetrain serve` on a file with a duplicate key prints what `valvetrain run` prints, the file
+    and the line ("<file>: not valid TOML: Cannot overwrite a value (at line 4, column 15)"); the fuzzer compared
+    the message, its temporary folder written <tmp>, with the file's real path and counted it a bad message."""
+    from click.testing import CliRunner
+    from valvetrain.cli import main
+
+    case = {"base": "examples/measured-lobe.toml", "ops": [["text", "duplicate_key"]],
+            "serve": {"mode": "ok", "requests": []}}
+    rec = fuzz.run_case(case, BASES, timeout=120.0)
+    assert rec["outcome"] == "refused", rec
+    text, _, _ = fuzz.materialize(case, BASES)
+    (tmp_path / "spec.toml").write_bytes(text)
+    ran = CliRunner().invoke(main, ["run", str(tmp_path / "spec.toml"), "--out", str(tmp_path / "out")])
+    assert ran.exit_code == 2
+    assert rec["detail"] == [m.replace(str(tmp_path), "<tmp>") for m in fuzz._command_messages(ran.output)]
+    assert rec["detail"][0].startswith("<tmp>/spec.toml: not valid TOML: Cannot overwrite a value (at line ")
+
+
+def test_a_null_documented_by_its_path_is_not_excused_elsewhere():
+    """The lash adjuster's per-speed revolutions and settled are null at a speed without a simulated motion (their
+    labels); a null of a key of the same name in another section (the dynamics' revolutions) stays a finding."""
+    data = {"valves": {"intake": {"lash_adjuster": {"per_speed": {"revolutions": [None, 3], "settled": [None, True],
+                                                                  "pumped_up_um": [None, 1.5]}},
+                                  "dynamics": {"revolutions": None}}}}
+    assert fuzz.null_problems(data, ["intake"]) == [("valves.NAME.dynamics.revolutions",
+                                                     "valves.intake.dynamics.revolutions = None")]
+
+
+
     """A tolerance case whose records.jsonl is damaged (a passing check made an unevaluated failure) after its first
     run: the run again designs that sample again and gives the first run's results (else: nonsense)."""
     case = {"base": "example", "ops": [["tolerances", [{"key": "valves.intake.throat_diameter_mm",

@@ -1208,7 +1208,8 @@ def _frame(tb_entries):
 
 
 DOCUMENTED_NULLS = {
-    # key (last part of the path) -> when a null (None or a non-finite number) is documented
+    # key (last part of the path, or the whole path made generic by _generic without its list indices, for a key
+    # whose name other sections share) -> when a null (None or a non-finite number) is documented
     "rho_max_mm": "straight flanks", "rho_max_cam_deg": "straight flanks",
     "min_concave_radius_mm": "no concave stretch",
     "duration_deg": "a checking height the measured lift never reaches",
@@ -1216,7 +1217,9 @@ DOCUMENTED_NULLS = {
     "nonuniformity": "a mean torque that is not positive", "torque_work_balance": "no indicated work",
     "low": "a check open below", "high": "a check open above",
     "valve": "a check of the engine or of a chapter",
-    **dict.fromkeys(("pump_up_um", "held_open_um"), "a speed without a simulated force (no [dynamics])"),
+    **dict.fromkeys(("pump_up_um", "held_open_um", "pumped_up_um", "valves.NAME.lash_adjuster.per_speed.revolutions",
+                     "valves.NAME.lash_adjuster.per_speed.settled"),
+                    "a speed without a simulated motion of the plunger (no [dynamics] on the valve)"),
     "min_contact_force_N": "the valve never leaves its seat (a drive too soft to overcome the preload)",
     **dict.fromkeys(("max_seating_velocity_m_s", "max_seating_velocity_speed_rpm"), "the valve seats at no speed"),
     "jump_speed_rpm": "no follower separation in the speed range", "bounce_speed_rpm": "no bounce in the range",
@@ -1286,7 +1289,8 @@ def null_problems(data, valve_names):
         if v is None or (isinstance(v, (float, np.floating)) and not math.isfinite(v)):
             # the key of a list's item is the list's own (its entries share its documentation)
             key = next((str(p) for p in reversed(path) if not isinstance(p, int)), "")
-            if key in DOCUMENTED_NULLS and (v is None or v != v):
+            documented = key in DOCUMENTED_NULLS or _generic(path, valve_names).replace("[]", "") in DOCUMENTED_NULLS
+            if documented and (v is None or v != v):
                 continue
             margin = key.endswith("margin") or (len(path) > 1 and path[-2] == "margins")
             if margin and v == math.inf:
@@ -1644,7 +1648,7 @@ def _session_step(session, action, tmp):
         if kind == "drag":
             handles = session.handles(name)
             if handles:
-                session.drag(name, handles[action[2] % len(handles)], action[3], action[4])
+                session.drag(name, handles[action[2] % len(handles)].name, action[3], action[4])
         elif has_points(session.good_document["valves"][name]["cam"]):
             session.set_points(name, action[2], action[3])
     elif kind == "pin":
@@ -1788,7 +1792,7 @@ def run_serve_case(case, bases, timeout=60.0):
                     outcome, signature, detail = found
                 elif proc.returncode == 2:
                     messages = _command_messages(stderr)
-                    bad = [(m, message_problem(m, spec_file)) for m in messages]
+                    bad = [(m, message_problem(m, str(spec_file).replace(tmp, "<tmp>"))) for m in messages]
                     bad = [(m, why) for m, why in bad if why and not (why == "no key path" and OPTION.search(m))]
                     outcome = "bad_message" if bad or not messages else "refused"
                     signature = (f"serve: {bad[0][1]}: {_message_key(bad[0][0])}" if bad else

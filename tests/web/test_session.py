@@ -6,6 +6,7 @@ import tomllib
 
 import numpy as np
 import pytest
+import tomli_w
 
 pytest.importorskip("bokeh")
 
@@ -126,6 +127,29 @@ def test_drag_of_a_segment_boundary_keeps_the_others():
     cam = s.document["valves"]["intake"]["cam"]
     # phi1 = 71 - 46 = 25, phi2 = 27 + 6 - 25 = 8 (the second boundary stays), phi3 = 38 as given
     assert (cam["phi1_deg"], cam["phi2_deg"], cam["phi3_deg"]) == (25.0, 8.0, 38.0)
+
+
+def test_a_handle_the_valve_does_not_have_is_refused_by_its_name():
+    """Issue 36 (fuzz): a three-arc cam has the nose alone; a drag of another handle (a Handle passed for its name, a
+    page drawn before the law changed) raised KeyError 'phi1_deg', the keys of a cam of segment angles; now a
+    ValueError naming the handle and the valve's handles, and the page's request redraws the good design."""
+    from bokeh.document import Document
+    from valvetrain.web.app import Designer
+
+    doc = tomllib.loads(appendix_text())
+    cam = doc["valves"]["intake"]["cam"]
+    doc["valves"]["intake"]["cam"] = {"law": "three_arc", "flank_angle_deg": 25.0, "follower": "flat",
+                                      "base_radius_mm": cam["base_radius_mm"]}
+    s = Session.start(tomli_w.dumps(doc))
+    assert [h.name for h in s.handles("intake")] == ["nose"]
+    with pytest.raises(ValueError, match=r"valves.intake has no handle 'phi1' \(its handles: nose\)"):
+        s.drag("intake", "phi1", -40.0, 0.0)
+    before = copy.deepcopy(s.document)
+    d = Designer(Document(), s)
+    d.on_request("data", {}, {"kind": ["end"], "seq": [1], "plot": ["acceleration"], "name": ["phi1"], "x": [-40.0],
+                              "y": [0.0], "text": [""]})
+    assert d.session.document == before
+    assert s.drag("intake", "nose", 0.0, 9.0)
 
 
 def test_drag_of_the_nose_sets_the_valve_lift():

@@ -900,7 +900,8 @@ def unsettled_note(result, speeds, network, revolutions, adjuster=False) -> Opti
         slowest vibration of the train between the lifts (:func:`~valvetrain.dynamics.models.slowest_decay`, the
         clearance open, the valve on its seat): its decay exp(-sigma T) a revolution of T seconds at the highest of
         those speeds (where it decays least) and the revolutions ln(:data:`SETTLE_FROM` / tolerance) / (sigma T) it
-        takes there from a millimetre to the repetition's tolerance.
+        takes there from a millimetre to the repetition's tolerance; or, where no damping acts on it (sigma = 0: an
+        undamped seat, ``seat_damping_ratio = 0``, with the clearance open), that it does not decay.
     """
     bad = ~result.converged
     if not bad.any():
@@ -921,10 +922,15 @@ def unsettled_note(result, speeds, network, revolutions, adjuster=False) -> Opti
     elif rest.any():
         omega, sigma = slowest_decay(network, opened=("cam contact",) if network.lash > 0.0 else ())
         decay = sigma * 2.0 * np.pi / result.cam_speeds[rest].max()
-        parts.append(f"at {np.count_nonzero(rest)} the slowest vibration of the train, {omega / (2 * np.pi):.0f} Hz, "
-                     f"decays by a factor {np.exp(-decay):.2g} a revolution at {rpm[rest].max():.0f} rpm: about "
-                     f"{np.log(SETTLE_FROM / STATE_TOLERANCE) / decay:.0f} revolutions from {SETTLE_FROM / MM:g} mm "
-                     f"to the repetition's {STATE_TOLERANCE * 1e9:g} nm")
+        if sigma <= 1e-9 * omega:       # a damping ratio below the eigenvalues' rounding: no damper acts on it
+            parts.append(f"at {np.count_nonzero(rest)} the slowest vibration of the train, {omega / (2 * np.pi):.0f} "
+                         "Hz, is undamped between the lifts (no damping acts on it with the valve on its seat): it "
+                         "does not decay")
+        else:
+            parts.append(f"at {np.count_nonzero(rest)} the slowest vibration of the train, {omega / (2 * np.pi):.0f} "
+                         f"Hz, decays by a factor {np.exp(-decay):.2g} a revolution at {rpm[rest].max():.0f} rpm: "
+                         f"about {np.log(SETTLE_FROM / STATE_TOLERANCE) / decay:.0f} revolutions from "
+                         f"{SETTLE_FROM / MM:g} mm to the repetition's {STATE_TOLERANCE * 1e9:g} nm")
     return "; ".join(parts)
 
 

@@ -70,9 +70,8 @@ MESSAGES = {
         {"low": "mm", "high": "mm", "top": "mm", "below": "mm", "above": "mm"}),
     "row_off_fit": (
         "the row of {lift:.4g} mm follower lift at {angle:.4g} cam deg (crank deg from the gas-exchange TDC / 2) lies "
-        "{off:.3g} mm off the {fit} fit of the rows; allowed up to {most:.3g} mm ({times:g} x the larger of "
-        "accuracy_mm and the rows' scatter, at least {share:g} % of the other rows' largest lift): a wrong row (a "
-        "typing error, a spike of the gauge)?",
+        "{off:.3g} mm off the {fit} fit; allowed up to {most:.3g} mm ({times:g} x max(accuracy_mm, scatter), at least "
+        "{share:g} % of the lift): a wrong row?",
         {"lift": "mm", "angle": "deg", "off": "mm", "most": "mm", "share": "%"}),
     "valve_never_opens": (
         "the fitted lift never exceeds the clearance taken up by the ramp, {ramp:.4g} mm: the valve does not open",

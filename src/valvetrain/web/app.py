@@ -1078,7 +1078,12 @@ class Designer:
             self._points(kind, name, x, y, began, seq)
             return
         x, y = self._to_session(plot, x, y)
-        values = self.session.moved(self.valve, name, x, y)
+        try:
+            values = self.session.moved(self.valve, name, x, y)
+        except ValueError:      # a handle the valve no longer has (the page drawn before its law changed)
+            self.shown = None
+            self.redraw(sweep=False, began=began, seq=seq)
+            return
         if kind == "move":
             try:
                 document, result = self.session.preview(values)

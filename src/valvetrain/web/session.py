@@ -484,8 +484,12 @@ def moved(document, spec, name, handle, x, y, series, valve=None) -> dict[str, A
     sets p so that the peak lies at x (:func:`polydyne_p`; its height follows from the lift).  A point ``point.K`` of an inline
     lift table sets its angle (kept between its neighbours) and its lift (at least zero); a point
     ``acceleration.K`` sets the lift of point K so that the table's acceleration there changes by the drag's height
-    (:func:`acceleration_step`, at the camshaft speed and rocker ratio of ``valve``; its angle stays).
+    (:func:`acceleration_step`, at the camshaft speed and rocker ratio of ``valve``; its angle stays).  A handle the
+    valve does not have (:func:`handles`: a request of a page drawn before its law changed) is a ValueError.
     """
+    known = [h.name for h in handles(document, spec, name, series)]
+    if handle not in known:
+        raise ValueError(f"valves.{name} has no handle {handle!r} (its handles: {', '.join(known) or 'none'})")
     at = f"valves.{name}"
     if handle == "nose":
         return {f"{at}.max_lift_mm": round(float(np.clip(y, *_key_range(Valve, "max_lift_mm"))), 3)}
