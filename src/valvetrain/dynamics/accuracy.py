@@ -58,7 +58,7 @@ MAX_HALVINGS = 4
 """Most halvings of the step (0.1 cam deg: to 0.00625); a headline that has not settled by then keeps its last
 change as its error (the time step then costs 16 times the base step's at those speeds)."""
 
-GRID_CHECKS = 3
+GRID_CHECKS = 6
 """Most speeds simulated to check the interpolation of a crossing between the speeds swept."""
 
 MAX_WORK = 8.0
