@@ -1221,13 +1221,16 @@ DOCUMENTED_NULLS = {
                      "valves.NAME.lash_adjuster.per_speed.settled"),
                     "a speed without a simulated motion of the plunger (no [dynamics] on the valve)"),
     "min_contact_force_N": "the valve never leaves its seat (a drive too soft to overcome the preload)",
-    **dict.fromkeys(("max_seating_velocity_m_s", "max_seating_velocity_speed_rpm"), "the valve seats at no speed"),
+    **dict.fromkeys(("max_seating_velocity_m_s", "max_seating_velocity_speed_rpm"), "the valve seats at no speed "
+                    "(of its error also: the refinement's work limit reached first)"),
     "jump_speed_rpm": "no follower separation in the speed range", "bounce_speed_rpm": "no bounce in the range",
     **dict.fromkeys(("jump_speed_step_rpm", "jump_speed_grid_rpm"), "the jump speed's error: no separation, or the "
                     "refinement's work limit reached first"),
     **dict.fromkeys(("bounce_speed_step_rpm", "bounce_speed_grid_rpm"), "the bounce onset's error: no bounce, or the "
                     "refinement's work limit reached first"),
-    "rated_seating_velocity_m_s": "the valve does not seat at the rated speed (its seating velocity's error)",
+    "rated_seating_velocity_m_s": "the valve does not seat at the rated speed (its seating velocity's error), or the "
+                                  "refinement's work limit reached first",
+    "rated_bounce_mm": "the refinement's work limit reached first (the rated speed's bounce height's error)",
     "coil_clash_speed_rpm": "no coil clash in the range",
     "cam_min_concave_radius_mm": "no concave stretch", "master_flat_lift_max_mm": "a master that is not convex",
     **dict.fromkeys(("max_wear_lift_error_mm", "max_wear_lift_error_cam_deg", "max_wear_lift_error_first_order_mm",

@@ -233,10 +233,13 @@ class AccuracyRecord:
     bounce_speed_grid: float = quantity("bounce_speed_grid_rpm", "rpm", "speed grid: its change by a speed simulated "
                                         "where it is interpolated (null as bounce_speed_rpm)")
     max_seating_velocity: float = quantity("max_seating_velocity_m_s", "m/s", "of the largest |seating velocity|: its "
-                                           "change at the last halving of the step")
+                                           "change at the last halving of the step (null: no seating, or not "
+                                           "estimated: the refinement's work limit reached first)")
     rated_seating_velocity: float = quantity("rated_seating_velocity_m_s", "m/s", "of the seating velocity at the rated "
-                                             "speed (null: the valve does not seat there)")
-    rated_bounce: float = quantity("rated_bounce_mm", "mm", "of the bounce height at the rated speed")
+                                             "speed (null: the valve does not seat there, or not "
+                                             "estimated: the refinement's work limit reached first)")
+    rated_bounce: float = quantity("rated_bounce_mm", "mm", "of the bounce height at the rated speed (null: not "
+                                   "estimated, the refinement's work limit reached first)")
     step: float = quantity("finest_step_cam_deg", "cam deg", "the finest step a headline was refined to (the sweep's "
                            "step halved at most " + str(MAX_HALVINGS) + " times)")
 
