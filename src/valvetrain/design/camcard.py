@@ -15,12 +15,18 @@ class CamCardValve:
     opens: float = quantity("seat_opens_crank_deg", "crank deg", "valve leaves its seat")
     closes: float = quantity("seat_closes_crank_deg", "crank deg", "valve meets its seat")
     duration: float = quantity("seat_duration_crank_deg", "crank deg", "duration seat to seat")
-    opens_1mm: float = quantity("opens_at_1mm_crank_deg", "crank deg", "opening at 1 mm valve lift")
-    closes_1mm: float = quantity("closes_at_1mm_crank_deg", "crank deg", "closing at 1 mm valve lift")
-    duration_1mm: float = quantity("duration_at_1mm_crank_deg", "crank deg", "duration at 1 mm valve lift")
-    opens_050: float = quantity("opens_at_0_050in_crank_deg", "crank deg", "opening at 0.050 in tappet lift")
-    closes_050: float = quantity("closes_at_0_050in_crank_deg", "crank deg", "closing at 0.050 in tappet lift")
-    duration_050: float = quantity("duration_at_0_050in_crank_deg", "crank deg", "duration at 0.050 in tappet lift")
+    opens_1mm: float = quantity("opens_at_1mm_crank_deg", "crank deg", "opening at 1 mm valve lift (null: the "
+                                "valve lift never reaches 1 mm)")
+    closes_1mm: float = quantity("closes_at_1mm_crank_deg", "crank deg", "closing at 1 mm valve lift (null: the "
+                                 "valve lift never reaches 1 mm)")
+    duration_1mm: float = quantity("duration_at_1mm_crank_deg", "crank deg", "duration at 1 mm valve lift (null: the "
+                                   "valve lift never reaches 1 mm)")
+    opens_050: float = quantity("opens_at_0_050in_crank_deg", "crank deg", "opening at 0.050 in tappet lift (null: "
+                                "the tappet lift never reaches 0.050 in)")
+    closes_050: float = quantity("closes_at_0_050in_crank_deg", "crank deg", "closing at 0.050 in tappet lift "
+                                 "(null: the tappet lift never reaches 0.050 in)")
+    duration_050: float = quantity("duration_at_0_050in_crank_deg", "crank deg", "duration at 0.050 in tappet lift "
+                                   "(null: the tappet lift never reaches 0.050 in)")
     centre: float = quantity("lobe_centre_crank_deg", "crank deg", "lobe centre (the nose)")
     lift_at_tdc: float = quantity("lift_at_tdc_mm", "mm", "valve lift at the gas-exchange TDC")
 
@@ -36,7 +42,8 @@ class CamCard:
     overlap: Optional[float] = quantity("overlap_crank_deg", "crank deg", "overlap seat to seat (negative: none)",
                               default=None, omit_none=True)
     overlap_050: Optional[float] = quantity("overlap_at_0_050in_crank_deg", "crank deg",
-                                  "overlap at 0.050 in tappet lift (negative: none)", default=None, omit_none=True)
+                                  "overlap at 0.050 in tappet lift (negative: none; null: a valve's tappet lift never reaches "
+                                  "0.050 in)", default=None, omit_none=True)
     overlap_area: Optional[float] = quantity("overlap_area_mm_crank_deg", "mm crank deg",
                                    "area under the lower valve lift over the overlap", default=None, omit_none=True)
 
