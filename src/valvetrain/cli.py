@@ -17,6 +17,7 @@ import time
 import click
 
 from . import __version__
+from .errors import ValvetrainError
 from .interruption import Interruption, interrupted_while_starting
 from .outfolder import OutFolderError, check_out
 from .specification import SpecError, example_spec, example_text, input_files, load_spec
@@ -130,7 +131,9 @@ class _Progress:
 
 
 class _Main(click.Group):
-    """The command group; Ctrl-C ends any command with exit status 130 and one line, not a traceback.
+    """The command group; Ctrl-C ends any command with exit status 130 and one line, not a traceback, and an error
+    valvetrain raised on purpose that the command did not handle (:class:`valvetrain.errors.ValvetrainError`) with
+    exit status 1 and its one line, led by its key where it has one.
 
     The SIGINT handler (:class:`valvetrain.interruption.Interruption`) remembers the SIGINT, so that an error a library
     made of the KeyboardInterrupt is the interruption too."""
@@ -151,6 +154,14 @@ class _Main(click.Group):
     def invoke(self, ctx):
         try:
             return super().invoke(ctx)
+        except ValvetrainError as err:
+            if isinstance(err, SpecError) and not Interruption.seen:
+                _fail_spec(err)
+            if not Interruption.seen:
+                click.echo(f"error: {err.key + ': ' if err.key else ''}{err}", err=True)
+                sys.exit(1)
+            click.echo("error: interrupted", err=True)
+            sys.exit(130)
         except Exception:
             if not Interruption.seen:
                 raise

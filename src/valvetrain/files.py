@@ -14,6 +14,7 @@ import re
 import numpy as np
 
 from .crank.pressure import MIN_PRESSURE_MPA, PressureFileError
+from .errors import InputError
 
 ECHO_CHARS = 40
 """Longest text of a file echoed in a message (a longer row or header is cut)."""
@@ -171,7 +172,7 @@ MAX_TABLE_ROWS = 1_000_000
 """Most rows of a lift table (10^6: a row every 0.0007 crank deg over a whole revolution)."""
 
 
-class TableFileError(ValueError):
+class TableFileError(InputError):
     """A lift-table file that cannot be used; the message names the file and the line."""
 
 
@@ -266,13 +267,12 @@ def read_indicator(path, strokes) -> IndicatorTable:
     return IndicatorTable(kind, np.asarray(x), np.array(ps) * 1e6, where)
 
 
-class BreathingFileError(ValueError):
+class BreathingFileError(InputError):
     """A valve-lift or discharge-coefficient file of ``[breathing]`` that cannot be used; ``key`` is the key that
     names it (``lift_file``, ``cd_file``), the message names the file and the line."""
 
     def __init__(self, key, message):
-        super().__init__(message)
-        self.key = key
+        super().__init__(message, key=key)
 
 
 VALVE_LIFT_RANGES = {

@@ -26,6 +26,7 @@ import shutil
 import signal
 
 from . import __version__
+from .errors import InputError
 
 MARKER = ".valvetrain-output"
 """File in every output folder: a comment line, then the path of every file the run wrote, one a line."""
@@ -40,7 +41,7 @@ _AT_FDCWD = -100
 """``renameat2`` directory argument: paths relative to the current folder (linux/fcntl.h)."""
 
 
-class OutFolderError(ValueError):
+class OutFolderError(InputError):
     """An output folder that a run may not write; the message is one line naming the folder."""
 
 

@@ -35,6 +35,7 @@ import pydantic
 import tomli_w
 
 from .design import run
+from .errors import InputError, ValvetrainError
 from .interruption import Interruption
 from .specification import LAWS, SpecError, set_keys, validate
 from .specification.messages import location, message
@@ -69,7 +70,7 @@ CONNECT_SECONDS = 20
 """How long :func:`evaluate` tries to reach a Dask scheduler."""
 
 
-class GridError(ValueError):
+class GridError(InputError):
     """A grid that cannot be studied; the message is one line naming the key or the value."""
 
 
@@ -271,7 +272,7 @@ def failure_text(exc) -> str:
             f"{str(exc)[:200]}); please report it with the file")
 
 
-class StudyStopped(RuntimeError):
+class StudyStopped(ValvetrainError, RuntimeError):
     """A study that could not design every point (a worker process died); ``records`` holds the points designed
     before (None for the others), ``lost`` the indices of the points that were in progress."""
 

@@ -26,6 +26,7 @@ from scipy.stats import qmc
 
 from .checks import SEVERITIES
 from .design import run
+from .errors import InputError
 from .specification import SpecError, validate
 from .specification.messages import shown
 from .specification.validate import spec_document
@@ -42,7 +43,7 @@ HISTOGRAM_BINS = 20
 """Bins of the histogram of a margin or a headline."""
 
 
-class ToleranceError(ValueError):
+class ToleranceError(InputError):
     """A tolerance that cannot be sampled; the message is one line naming the key."""
 
 

@@ -17,6 +17,7 @@ import numpy as np
 
 from ..crank.kinematics import velocity
 from ..crank.pressure import cylinder_volume, wiebe_fraction
+from ..errors import InputError
 from ..results import quantity
 from . import gas as gases
 from . import kernel as kn
@@ -286,7 +287,7 @@ def _events(flow, theta):
     return closes, opens
 
 
-class BreathingError(ValueError):
+class BreathingError(InputError):
     """Inputs the breathing cannot integrate; the message names what and why."""
 
 

@@ -11,6 +11,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..errors import InputError
 from ..flow import circle_area, curtain_area
 
 DEFAULT_CD = 0.7
@@ -23,7 +24,7 @@ REFERENCES = ("port", "curtain")
 """Reference areas of a C_D table: the port area pi D^2 / 4, or the curtain area pi D L."""
 
 
-class CdTableError(ValueError):
+class CdTableError(InputError):
     """A discharge-coefficient table that cannot be used; the message names what is wrong."""
 
 

@@ -10,6 +10,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..errors import InputError
 from ..numerics import cumulative_integral
 from .kinematics import brix_crank_angle, crank_angle_at, displacement, piston_stroke
 
@@ -17,7 +18,7 @@ MIN_PRESSURE_MPA = 0.001
 """Least absolute pressure of an indicator diagram [MPa] (1 kPa, far below any cylinder's)."""
 
 
-class PressureFileError(ValueError):
+class PressureFileError(InputError):
     """An indicator-diagram file that cannot be used; the message names the file and the line."""
 
 

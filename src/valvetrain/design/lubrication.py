@@ -9,6 +9,7 @@ import numpy as np
 from .. import tribology
 from ..bibliography import cite
 from ..checks import Check, check
+from ..errors import InputError
 from ..specification.messages import Problem, SpecError
 from ..strength import hertz_half_width
 from ..units import to_display
@@ -78,7 +79,7 @@ class LubricationResult:
     per_speed: LubricationPerSpeed = quantity("per_speed", label="the cam contact at each speed")
 
 
-class UndercutError(ValueError):
+class UndercutError(InputError):
     """The cam profile has no line contact with its follower somewhere."""
 
 

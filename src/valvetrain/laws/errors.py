@@ -7,6 +7,7 @@ display unit of each value.  The message is what the user reads (wrapped in a
 that words them otherwise.
 """
 
+from ..errors import InputError
 from ..units import to_display
 
 MESSAGES = {
@@ -81,7 +82,7 @@ MESSAGES = {
 ``"%"``: a fraction in per cent; a value without a unit is shown as it is)."""
 
 
-class LawError(ValueError):
+class LawError(InputError):
     """Inputs a lift law cannot be built from: ``code`` (a key of :data:`MESSAGES`) and ``values`` (SI)."""
 
     def __init__(self, code, **values):

@@ -2,6 +2,8 @@
 
 from typing import Optional
 
+from ..errors import ValvetrainError
+
 
 class Problem(str):
     """One problem of a specification: the line printed (the string itself) and its parts, made where the problem is
@@ -37,7 +39,7 @@ class Problem(str):
         return Problem, (self.path, self.message, self.value, "", str(self))
 
 
-class SpecError(Exception):
+class SpecError(ValvetrainError):
     """A specification that cannot be used; ``problems`` holds one :class:`Problem` per problem (a line given as
     plain text is a problem that names no key)."""
 

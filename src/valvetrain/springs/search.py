@@ -15,6 +15,7 @@ from functools import lru_cache
 
 import numpy as np
 
+from ..errors import InputError
 from .candidates import INSTALLED_TO_LIFT_MAX, SpringDesign, SpringMaterial, evaluate_spring, evaluate_springs
 from .formulas import SHAPE_FACTOR_TABLE, natural_frequency, shape_factor_table
 from .requirement import DEFLECTION_RATIO_RANGE, Characteristic
@@ -35,7 +36,7 @@ INNER_DIAMETER_RATIO_LOW = 0.3
 """Smallest mean diameter of the inner spring of a pair / throat diameter (it must fit inside the outer one)."""
 
 
-class NoSpringFits(ValueError):
+class NoSpringFits(InputError):
     """No spring of the wire range can be wound within the given diameters.
 
     Parameters

@@ -36,6 +36,7 @@ from bokeh.models import (Button, ColorBar, ColumnDataSource, CustomJS, DataTabl
 from bokeh.plotting import figure
 import numpy as np
 
+from ..errors import ValvetrainError
 from ..languages import LANGS
 from ..locale import catalogue
 from ..report.html import check_range
@@ -315,7 +316,7 @@ def _hold(hold):
     hold.data = {"n": [hold.data["n"][0] + 1]}
 
 
-class Stale(Exception):
+class Stale(ValvetrainError):
     """Raised into a speed sweep that a newer change made stale."""
 
 
