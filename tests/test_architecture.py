@@ -40,3 +40,9 @@ def test_every_module_has_its_test_file():
              and not re.search(r"^\s*def test_", _test_file(m).read_text(encoding="utf-8"), flags=re.M)]
     assert not empty, f"test files without a test: {empty}"
 
+
+
+def test_the_map_is_a_page():
+    """Issue 41: the architecture map is a page a newcomer reads in five minutes (at most 1,200 words); the detail is
+    in each package's docstring."""
+    assert len(TEXT.split()) <= 1200

@@ -5,11 +5,28 @@ rpm) are converted to SI for the physics functions.  Stages:
 
 * per valve (:mod:`.valve`, :mod:`.drive`): flow sections and conditional velocities
   (Valve-train practical works (n.d.) work 1), the lift law (works 2-3), time-area and fullness (work 4, Shang Hanji (1988)),
-  the cam contour (Shang Hanji (1988) section 2.1), masses and springs (works 5-6), strength (work 7);
+  the cam contour (Shang Hanji (1988) section 2.1), masses and springs (works 5-6), strength (work 7):
+  ``law_stage``, ``flow_stage``, ``profile_stage``, ``clearance_stage``, ``drive_stage`` (masses, springs),
+  ``dynamics_stage``, ``strength_stage`` (the drive parts over the speed range, on the dynamics stage's contact force
+  where it ran), ``lubrication_stage`` (the cam contact's film and friction on the same load maps),
+  ``lash_adjuster_stage`` (leak-down, refill, stiffness, pump-up; its oil column joins the dynamics' drive stiffness
+  and its plunger the train), ``valve_checks``, composed by ``design_valve``;
 * the crank mechanism (:mod:`.crank`): kinematics, forces and torque, multi-cylinder torque (Power units manual (n.d.));
 * two-stroke ports (:mod:`.twostroke`): timing, areas, time-area (Valve-train practical works (n.d.) work 8);
+* the whole camshaft (:mod:`.camshaft`, after the valves), the cam card (:mod:`.camcard`), the breathing
+  (:mod:`.breathing`: the valves' effective areas from the designed lifts or a measured table, the engine as
+  ``breathing.Engine``, the records per condition);
+* a valve with a ``[hydraulic]`` section (:mod:`.hydraulic_actuation`) opens against the cylinder pressure of the
+  engine's cycle: ``run`` designs the valve without it, runs the crank stage (whose Wiebe cycle needs every valve's
+  timing) and adds the hydraulic stage after it (``with_hydraulic``);
 * recommended-range checks of every stage (warnings, never exceptions), ranked by severity and margin, with
   the acceptances of the specification (``[[accepted]]``) applied.
+
+Every result is frozen and typed (``DesignResults``, ``ValveDesign`` and the chapters; the acceptances are applied
+by ``replace``); results.json's dictionary is made once (``DesignResults.projection``).  The report, its figures and
+the tables read the typed results by attribute, never a ``record()`` dictionary: ``results.shown(result, *fields)``
+gives a result's rows as results.json shows them (key and display value from the field metadata).  Per-angle arrays
+are typed records too (``CrankColumns``, ``PortCurves``, ``SpringLines``).
 """
 
 from dataclasses import dataclass, replace

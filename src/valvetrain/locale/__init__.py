@@ -13,6 +13,19 @@ in this folder, loaded once:
 
 ``{name}`` in a text stands for the parameter ``name``.  ``tests/locale/test_catalogue.py`` fails when a code lacks a
 text in a language or a text names no code the package uses; docs/checks.md lists every code.
+
+A check's code (dotted snake_case) is stable: never renamed once shipped.  ``[[accepted]]`` takes the code (every
+check of the code) or the printed text, which :func:`code_of` maps to the code and its parameters.  To add a check:
+make it with ``checks.check("domain.quantity", value, low, high, source=..., unit=..., params={...})`` and give the
+code its texts with ``PYTHONPATH=src python tools/check_codes.py add CODE "record text" "English name" "Russian
+name"`` (or edit the files by hand and run ``tools/check_codes.py``, which rewrites docs/checks.md).  A text made with
+numbers (a check's note) is translated by its skeleton: its Russian goes into ``ru.toml`` ``[texts]`` (the English
+with ``{}`` for each number).  :mod:`.wording` words the data the physics returns (the spring diagnosis, a measured
+table's fit reason) in every language.
+
+To add a language: a ``LANG.toml`` with every section, the language in :data:`valvetrain.languages.LANGS`, its symbol
+column in :data:`valvetrain.units.UNITS` and its texts in :mod:`valvetrain.report.i18n` and
+:mod:`valvetrain.report.names`.  To add a unit: one row of :data:`valvetrain.units.UNITS`.
 """
 
 from functools import cache
