@@ -24,6 +24,16 @@ def seed000_law():
     return KurzLaw(6.25e-3, 0.25e-3, 0.02e-3 * 180 / np.pi, *np.deg2rad([27.0, 6.0, 38.0]), 0.625)
 
 
+def sampled_kurz(shift_deg=0.0, noise=0.0, step_deg=1.0):
+    """The lift of :func:`seed000_law` sampled every ``step_deg`` cam deg over +-92 deg, its origin moved by
+    ``shift_deg``, with normal noise of ``noise`` [m] (seed 7): ``(law, theta [rad], lift [m])``, a measured table's
+    stand-in."""
+    law = seed000_law()
+    theta = np.radians(np.arange(-92.0, 92.01, step_deg))
+    lift = law.lift(theta) + np.random.default_rng(7).normal(0.0, noise, theta.size)
+    return law, theta + np.radians(shift_deg), lift
+
+
 @pytest.fixture
 def kurz_appendix():
     return seed000_law()

@@ -49,7 +49,7 @@ FIT_WORDS = {
     },
 }
 """The fit a measured table uses (``fit_used``), why (``fit_reasons``, by the code of
-:func:`valvetrain.laws.measured.choose_fit`) and how a spline is smoothed (``smoothings``), per language."""
+:func:`valvetrain.laws.fits.choose_fit`) and how a spline is smoothed (``smoothings``), per language."""
 
 DIAGNOSIS_WORDS = {
     "en": {
@@ -149,11 +149,11 @@ def fit_reason(fit, harmonics, code, ratio, smoothing, lang="en") -> str:
     harmonics : int
         Its harmonic order N.
     code : str
-        Why (a code of :func:`valvetrain.laws.measured.choose_fit`).
+        Why (a code of :func:`valvetrain.laws.fits.choose_fit`).
     ratio : float
         The generalised cross-validation score of the fit used / the other's (NaN where not compared).
     smoothing : {"accuracy", "gcv"}
-        How the spline's smoothing was chosen (:func:`valvetrain.laws.measured.smoothing_spline`).
+        How the spline's smoothing was chosen (:func:`valvetrain.laws.fits.smoothing_spline`).
     """
     t = FIT_WORDS[lang]
     text = t["fit_used"][fit].format(n=harmonics) + ": " + t["fit_reasons"][code].format(fit=fit, ratio=ratio)
