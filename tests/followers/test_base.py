@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from valvetrain.followers import FLAT, REGISTRY, FlatFollower, Follower, PivotedFollower, RollerFollower, follower_of
-from valvetrain.specification.cams import _CamBase
+from valvetrain.specification.cam_base import _CamBase
 
 from conftest import seed000_law
 

@@ -1,34 +1,17 @@
-"""The cam sections (specification/cams.py): the main event's half angle and the nose's crank angle from the
-valve's timing, the registry of the laws' models, and the Kurz cam of the appendix of Valve-train practical works
+"""The cam sections (specification/cams.py): the registry of the laws' models, and the Kurz cam of the appendix of Valve-train practical works
 (n.d.) built from its keys (timing 26 deg before TDC and 78 deg after BDC, 10 mm valve lift, rocker ratio 1.6,
 clearance 0.25 mm taken up by a cosine ramp ending at 0.02 mm/deg; Phi = 27 + 6 + 38 = 71 cam deg)."""
 
 import math
-from types import SimpleNamespace
 
 import numpy as np
 import pytest
 
 from valvetrain.laws.kurz import KurzLaw
 from valvetrain.specification import si
-from valvetrain.specification.cams import REGISTRY, main_half_angle, main_half_angle_deg, symmetric_nose
+from valvetrain.specification.cams import REGISTRY
 
 from appendix import appendix_spec
-
-
-def test_the_half_angle_and_the_nose_by_hand():
-    """phi_p0 = (opens + 180 + closes) / 2 crank deg, on the camshaft half that for a four-stroke (work 2, corrected
-    formula, corrections note 1): (26 + 180 + 78) / 2 / 2 = 71 cam deg; a two-stroke's camshaft turns with the crank:
-    142 deg.  The intake nose lies midway between opening (-26) and closing (180 + 78): 116 crank deg after TDC; an
-    exhaust opening 40 deg before BDC and closing 10 deg after TDC: midway between -220 and 10, -105 deg."""
-    valve = SimpleNamespace(opens_deg=26.0, closes_deg=78.0, opens=math.radians(26.0), closes=math.radians(78.0),
-                            kind="intake")
-    assert main_half_angle_deg(valve, 4) == pytest.approx(71.0)
-    assert main_half_angle_deg(valve, 2) == pytest.approx(142.0)
-    assert math.degrees(main_half_angle(valve, 4)) == pytest.approx(71.0, rel=1e-12)
-    assert math.degrees(symmetric_nose(valve)) == pytest.approx(116.0, rel=1e-12)
-    exhaust = SimpleNamespace(opens=math.radians(40.0), closes=math.radians(10.0), kind="exhaust")
-    assert math.degrees(symmetric_nose(exhaust)) == pytest.approx(-105.0, rel=1e-12)
 
 
 def test_each_law_s_model_is_registered_under_its_law():

@@ -4,7 +4,7 @@ A ramp lifts the follower through the valve clearance h0 at a small, controlled
 velocity so that the valve opens and seats softly.  On a valve with a hydraulic lash adjuster
 (no clearance) the same ramp, of the small height ``[lash_adjuster] ramp_height_mm``, is a
 quieting ramp: it lifts the valve itself at that velocity
-(:func:`valvetrain.specification.cams.ramp_height`).
+(:func:`valvetrain.specification.cam_base.ramp_height`).
 """
 
 import numpy as np

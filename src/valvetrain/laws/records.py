@@ -1,6 +1,6 @@
 """What a lift law adds to the cam's results: typed, frozen records (SI inside) that the report reads by attribute.
 
-:class:`LawRecord` holds the records a cam section gives (:meth:`valvetrain.specification.cams._CamBase.records`):
+:class:`LawRecord` holds the records a cam section gives (:meth:`valvetrain.specification.cam_base._CamBase.records`):
 the appendix formulas and junction residuals of a Kurz cam, the responses of a power-polynomial synthesis, the
 analysis of a measured lift table.  Their fields are declared with :func:`valvetrain.results.quantity`, so that
 results.json shows them under the cam's record with the keys and units it always had.

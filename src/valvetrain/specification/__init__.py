@@ -4,7 +4,8 @@ Units are in the key names (``_mm``, ``_deg``, ``_rpm``, ``_MPa``); :func:`si` c
 the design never does.  Timing angles are crank degrees, cam segment angles camshaft degrees.
 """
 
-from .cams import LAWS, REGISTRY, Cam, main_half_angle_deg
+from .cam_base import main_half_angle_deg
+from .cams import LAWS, REGISTRY, Cam
 from .messages import SpecError
 from .models import Engine, Spec, Valve, resolve_path, validate
 from .reading import example_spec, example_text, input_files, load_spec, parse_spec, spec_toml

@@ -14,7 +14,7 @@ from ..followers import REGISTRY as FOLLOWERS
 from ..layouts import LAYOUTS
 from ..springs import feasible_mean_diameters
 from ..units import MM
-from .cams import main_half_angle_deg
+from .cam_base import main_half_angle_deg
 from .messages import Problem, shown
 from .si import si
 

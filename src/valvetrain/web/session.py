@@ -20,7 +20,8 @@ import tomli_w
 from .. import api
 from ..specification import REGISTRY, SpecError, example_text, set_keys
 from ..laws import PolydyneLaw
-from ..specification.cams import Ratio, main_half_angle_deg
+from ..specification.cam_base import main_half_angle_deg
+from ..specification.cams import Ratio
 from ..specification.fields import Range
 from ..specification.models import Drive, Dynamics, Engine, Masses, Spec, Spring, Valve
 from ..units import MM
