@@ -4,6 +4,7 @@ the breathing chapter's own, the best phase against an independent fine scan, th
 the camshaft's drive torque, the gap at the range's ends by hand, bad input refused naming the key."""
 
 from dataclasses import replace
+from types import SimpleNamespace
 
 import numpy as np
 import pytest
@@ -11,7 +12,7 @@ import pytest
 from valvetrain.breathing import ValveFlow, breathe
 from valvetrain.design import breathing_view, run
 from valvetrain.design.breathing import GRID, breathing_conditions
-from valvetrain.design.phaser import phased_flow
+from valvetrain.design.phaser import advances, phased_flow
 from valvetrain.specification import SpecError, example_spec, spec_document, validate
 
 PHASER = {"advance_range_crank_deg": [-10.0, 40.0], "step_crank_deg": 10.0, "tolerance_crank_deg": 0.5}
@@ -62,6 +63,14 @@ def test_the_events_move_by_the_phase_exactly(fired):
         assert e.opens == pytest.approx(cam.valve_opens - e.advance, abs=1e-15)
         assert e.closes == pytest.approx(cam.valve_closes - e.advance, abs=1e-15)
     assert [np.degrees(e.advance) for e in fired.phasers["intake"].figures.events] == pytest.approx([-10, 0, 40])
+
+
+def test_the_map_holds_phase_zero_once():
+    """[-60, 5] crank deg at 5 deg: np.linspace's 13th point is -2.2e-16 rad, which was a second phase beside 0 (a
+    map column of its own, the best phase's gain referred to either); the grid's phases are at most the step apart."""
+    phases = advances(SimpleNamespace(advance_range=(np.radians(-60.0), np.radians(5.0)), step=np.radians(5.0)))
+    assert np.degrees(phases) == pytest.approx(np.arange(-60.0, 5.1, 5.0), abs=1e-12)
+    assert np.count_nonzero(np.abs(phases) < 1e-9) == 1 and 0.0 in phases
 
 
 def test_phase_zero_is_the_breathing_chapter(fired):

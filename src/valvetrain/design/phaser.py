@@ -47,10 +47,12 @@ def phased_flow(flow, advance) -> ValveFlow:
 
 
 def advances(phaser) -> np.ndarray:
-    """The map's phases [crank rad]: evenly from the range's low to its high end at most ``step`` apart, and 0."""
+    """The map's phases [crank rad]: evenly from the range's low to its high end at most ``step`` apart, and 0 (a
+    phase of the grid within round-off of 0 is 0, not a second point beside it)."""
     low, high = phaser.advance_range
     n = int(np.ceil((high - low) / phaser.step * (1.0 - 1e-12))) + 1
-    return np.unique(np.concatenate([np.linspace(low, high, n), [0.0]]))
+    grid = np.linspace(low, high, n)
+    return np.unique(np.concatenate([np.where(np.abs(grid) <= 1e-9 * (high - low), 0.0, grid), [0.0]]))
 
 
 @dataclass(frozen=True)
