@@ -148,6 +148,15 @@ def test_bad_phaser_keys_are_refused_naming_them(change, message):
         validate(_document(**change))
 
 
+def test_a_map_that_asks_too_much_work_is_refused_before_it_runs():
+    """81 phases 1 deg apart at 3 conditions ask for more cell-steps than the breathing allows (about half a
+    minute): refused naming the step, before a cycle of the map runs."""
+    doc = _document(camshaft=False, advance_range_crank_deg=[-40.0, 40.0], step_crank_deg=1.0)
+    with pytest.raises(SpecError, match=r"valves.intake.phaser.step_crank_deg = 1: 81 phases of 3 conditions and the "
+                                        r"search of the best phase at each ask for .* cell-steps; allowed at most 1e\+08"):
+        run(validate(doc))
+
+
 def test_a_camshaft_with_a_phased_and_an_unphased_valve_is_refused():
     doc = _document()
     doc["camshaft"]["valves"] = ["intake", "exhaust"]
