@@ -4,14 +4,17 @@ the breathing chapter's own, the best phase against an independent fine scan, th
 the camshaft's drive torque, the gap at the range's ends by hand, bad input refused naming the key."""
 
 from dataclasses import replace
+import json
 from types import SimpleNamespace
 
+import jsonschema
 import numpy as np
 import pytest
 
 from valvetrain.breathing import ValveFlow, breathe
-from valvetrain.design import breathing_view, run
-from valvetrain.design.breathing import GRID, breathing_conditions
+from valvetrain.design import breathing_view, results_schema, run
+from valvetrain.export import results_json
+from valvetrain.design.breathing import GRID, breathing_conditions, gas_opening_load
 from valvetrain.design.phaser import advances, phased_flow
 from valvetrain.specification import SpecError, example_spec, spec_document, validate
 
@@ -133,6 +136,29 @@ def test_the_gap_at_the_range_ends_by_hand(fired):
     assert e.min_gap < fired.phasers["intake"].figures.events[0].min_gap      # advanced: nearer the rising piston
     checks = [c for c in fired.checks if c.code == "phaser.piston_clearance"]
     assert [dict(c.params)["advance"] for c in checks] == ["-10", "40"]
+
+
+def test_the_spring_holds_the_largest_gas_load_over_the_map(fired):
+    """The gas force on the shut intake valve over the map is at least the breathing chapter's (phase 0, whose load
+    the spring was designed for; here 0: without a runner the port stays below the cylinder while the valve is
+    shut) and is checked against the spring's preload."""
+    f, v = fired.phasers["intake"].figures, fired.valves["intake"]
+    at_zero = gas_opening_load(fired.breathing, "intake", 0.038)[0]
+    assert f.gas_load >= at_zero
+    (c,) = [c for c in fired.checks if c.code == "phaser.gas_load"]
+    assert (c.value, c.high) == (f.gas_load, v.drive.spring.preload)
+
+
+def test_without_breathing_the_events_gap_and_torque_alone():
+    """Without [breathing]: the events, the gap at the range's ends and the held torque; no map, no best phase, no
+    gas load; results.json keeps to its schema."""
+    doc = _document(camshaft=False)
+    del doc["breathing"]
+    results = run(validate(doc))
+    record = results.to_dict()["phasers"]["intake"]
+    assert [e["advance_crank_deg"] for e in record["events"]] == [-10.0, 0.0, 40.0]
+    assert record["map"] == [] and record["best"] == [] and "objective" not in record and "gas_load_max_N" not in record
+    jsonschema.validate(json.loads(results_json(results)), results_schema())
 
 
 @pytest.mark.parametrize("change, message", [

@@ -23,7 +23,8 @@ from ..breathing.cycle import MAX_WORK, work
 from ..checks import Check, check
 from ..specification.messages import Problem, SpecError
 from ..units import to_display
-from .breathing import breathe_conditions, breathing_conditions, breathing_records
+from .breathing import (BreathingResults, breathe_conditions, breathing_conditions, breathing_records,
+                        gas_opening_load)
 from .camshaft import ANGLES, camshaft_torque, lobe_set
 from .crank import firing_angles
 from .results import quantity, record
@@ -127,9 +128,15 @@ class PhaserRecord:
                                     "shaft, the phaser holds it the other way)")
     torque_mean: float = quantity("holding_torque_mean_Nm", "N m", "mean drive torque, the steady torque the phaser "
                                   "holds against its drift")
+    gas_load: Optional[float] = quantity("gas_load_max_N", "N", "largest gas force that tends to open the shut valve "
+                                         "over the map (with [breathing]): the spring's preload must hold it",
+                                         omit_none=True, default=None)
+    gas_load_advance: Optional[float] = quantity("gas_load_max_advance_crank_deg", "crank deg", "at which phase",
+                                                 omit_none=True, default=None)
     objective: Optional[str] = quantity("objective", label="the figure the best phase maximises: the indicated torque "
-                                        "(fired) or the volumetric efficiency (motored)", omit_none=True)
-    search: Optional[str] = quantity("search", label="how the best phase is found", omit_none=True)
+                                        "(fired) or the volumetric efficiency (motored)", omit_none=True,
+                                        default=None)
+    search: Optional[str] = quantity("search", label="how the best phase is found", omit_none=True, default=None)
     map: tuple[PhaserPoint, ...] = quantity("map", label="the breathing at every phase and condition of [breathing]",
                                             default=())
     best: tuple[BestPhase, ...] = quantity("best", label="the best phase at each condition", default=())
@@ -276,8 +283,7 @@ def phaser_stage(name, phaser, valve, engine, design, breathing=None, b=None, ca
                                                      is not None else ""))
     cam_range = tuple(a / 2.0 for a in phaser.advance_range)
     if breathing is None:
-        figures = PhaserRecord(name, phaser.advance_range, cam_range, events, dynamics, source, peak, lowest, mean,
-                               None)
+        figures = PhaserRecord(name, phaser.advance_range, cam_range, events, dynamics, source, peak, lowest, mean)
         return PhaserResults(figures, np.zeros(0), tuple(checks))
     phases = advances(phaser)
     given, swept = breathing_conditions(b)
@@ -293,27 +299,40 @@ def phaser_stage(name, phaser, valve, engine, design, breathing=None, b=None, ca
                                  f"{asked:.3g} cell-steps; allowed at most "
                                  f"{MAX_WORK:.3g} (about half a minute): a larger step or fewer conditions",
                                  f"{to_display(phaser.step, 'crank deg'):g}")])
-    rows = tuple(_breathe(name, a, lambda e=e: sum(breathe_conditions(e, b, given, swept), ()))
-                 for a, e in zip(phases, engines, strict=True))
+    pairs = [_breathe(name, a, lambda e=e: breathe_conditions(e, b, given, swept))
+             for a, e in zip(phases, engines, strict=True)]
+    rows = tuple(sum(pair, ()) for pair in pairs)
+    loads = [gas_opening_load(BreathingResults(e, *pair, breathing.figures, ()), design.kind, valve.throat_diameter)
+             for e, pair in zip(engines, pairs, strict=True)]
+    k = int(np.argmax([force for force, _ in loads]))
+    gas = (float(loads[k][0]), float(phases[k]))
+    spring = design.drive.spring
+    checks.append(check("phaser.gas_load", gas[0], high=spring.preload, unit="N", severity="failure",
+                        source="the spring's preload holds the shut valve against the gas force (Valve-train "
+                               "practical works (n.d.), eqs. (5.4), (5.5))",
+                        note=f"the largest over the map at an advance of {to_display(gas[1], 'crank deg'):g} crank "
+                             f"deg: {loads[k][1]}").of_valve(name))
     objective = OBJECTIVES[b.mode]
     zero = int(np.flatnonzero(phases == 0.0)[0])
-    best = []
+    best, searched_results = [], []
     for j, c in enumerate(conditions):
         values = np.array([getattr(row[j].figures, objective) for row in rows])
         i = int(np.argmax(values))
         bracket = (phases[max(i - 1, 0)], phases[min(i + 1, phases.size - 1)], phaser.tolerance)
         a, r, n = best_phase(name, objective, breathing.engine, design.kind, c, b, bracket, (phases[i], rows[i][j]))
         f = r.figures
+        searched_results.append((a, r))
         best.append(BestPhase(f.speed, f.intake_pressure, a, f.volumetric_efficiency, f.residual_gas_fraction, f.pmep,
                               f.torque, (getattr(f, objective) - values[zero]) / abs(values[zero]), n))
     found = [check("phaser.cycle_change", r.figures.cycle_change, high=b.cycle_tolerance,
                    source="the cycles repeat (Heywood (1988), chapter 14: a cycle simulation runs until its state "
                           "repeats)", params={"speed": f"{to_display(r.figures.speed, 'rpm'):.5g}",
                                               "advance": f"{to_display(a, 'crank deg'):g}"}).of_valve(name)
-             for a, row in zip(phases, rows, strict=True) for r in row if not r.converged]
+             for a, r in [(a, r) for a, row in zip(phases, rows, strict=True) for r in row] + searched_results
+             if not r.converged]
     search = (f"the map's best phase refined by a bounded Brent search (scipy.optimize.minimize_scalar) between its "
               f"neighbours of the map, to {to_display(phaser.tolerance, 'crank deg'):g} crank deg")
     figures = PhaserRecord(name, phaser.advance_range, cam_range, events, dynamics, source, peak, lowest, mean,
-                           objective, search, tuple(_point(a, r) for a, row in zip(phases, rows, strict=True)
+                           *gas, objective, search, tuple(_point(a, r) for a, row in zip(phases, rows, strict=True)
                                                     for r in row), tuple(best))
     return PhaserResults(figures, phases, tuple(checks + found))

@@ -483,7 +483,8 @@ def _camshaft(results, spec, plots):
             "table": figures.response.table, "plots": plots.get("camshaft", {})}
 
 
-PHASER_ROWS = ("advance_range", "cam_range", "torque_peak", "torque_lowest", "torque_mean")
+PHASER_ROWS = ("advance_range", "cam_range", "torque_peak", "torque_lowest", "torque_mean", "gas_load",
+               "gas_load_advance")
 """The rows of the report's table of a phaser's figures (fields of :class:`~valvetrain.design.phaser.PhaserRecord`)."""
 
 PHASER_EVENTS = ("advance", "opens", "closes", "min_gap", "min_gap_angle")
@@ -505,7 +506,8 @@ def _phasers(results, spec, plots, checks):
         best = [b for b in PHASER_BEST if f.best and getattr(f.best[0], b) is not None]
         n = len(f.best)
         values = [shown_value(point, f.objective) for point in f.map] if f.map else []
-        out.append({"name": name, "rows": shown(f, *PHASER_ROWS), "objective": f.objective,
+        out.append({"name": name, "rows": shown(f, *(k for k in PHASER_ROWS if getattr(f, k) is not None)),
+                    "objective": f.objective,
                     "on_camshaft": results.camshaft is not None and name in results.camshaft.figures.valves,
                     "tolerance": spec["valves"][name]["phaser"]["tolerance_crank_deg"],
                     "event_columns": [k for k, _ in shown(f.events[0], *events)],

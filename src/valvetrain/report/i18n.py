@@ -1229,7 +1229,8 @@ TEXT["en"].update({
                  "four-stroke); phase 0 is the designed timing",
     "ph_dynamics": "The lift law about the camshaft and the camshaft's speed do not change with the phase, so neither "
                    "does the valve train's dynamics at a given speed: its chapter holds over the whole range; the "
-                   "valve-to-piston gap does change, and is checked at both ends of the range",
+                   "valve-to-piston gap does change, and is checked at both ends of the range, and so do the gas "
+                   "pressures on the shut valve, whose largest force over the map the spring's preload must hold",
     "ph_torque_camshaft": "The phaser holds the drive torque of the camshaft of the camshaft chapter (the torque at each "
                           "camshaft angle does not change with the phase): its peak and lowest over a revolution and "
                           "its mean",
@@ -1255,6 +1256,8 @@ TEXT["en"].update({
         "holding_torque_peak_Nm": "torque the phaser holds: peak, N·m",
         "holding_torque_lowest_Nm": "torque the phaser holds: lowest, N·m",
         "holding_torque_mean_Nm": "torque the phaser holds: mean, N·m",
+        "gas_load_max_N": "largest gas force on the shut valve over the map, N",
+        "gas_load_max_advance_crank_deg": "at the phase, crank deg",
         "advance_crank_deg": "phase (advance), crank deg",
         "valve_opens_crank_deg": "valve opens, crank deg from the gas-exchange TDC",
         "valve_closes_crank_deg": "valve closes, crank deg from the gas-exchange TDC",
@@ -1276,7 +1279,8 @@ TEXT["ru"].update({
     "ph_dynamics": "Закон подъёма по углу распределительного вала и его частота вращения от угла фазирования не "
                    "зависят, поэтому не зависит и динамика привода клапана при данной частоте вращения: её расчёт "
                    "справедлив во всём диапазоне; зазор клапан-поршень меняется и проверяется на обоих концах "
-                   "диапазона",
+                   "диапазона, меняются и давления газов на закрытый клапан, наибольшую силу которых по карте должна "
+                   "удерживать предварительная сила пружины",
     "ph_torque_camshaft": "Фазовращатель удерживает момент привода распределительного вала из его главы (момент при "
                           "каждом угле поворота вала от угла фазирования не зависит): наибольший и наименьший за "
                           "оборот и средний",
@@ -1303,6 +1307,8 @@ TEXT["ru"].update({
         "holding_torque_peak_Nm": "момент, удерживаемый фазовращателем: наибольший, Н·м",
         "holding_torque_lowest_Nm": "момент, удерживаемый фазовращателем: наименьший, Н·м",
         "holding_torque_mean_Nm": "момент, удерживаемый фазовращателем: средний, Н·м",
+        "gas_load_max_N": "наибольшая сила давления газов на закрытый клапан по карте, Н",
+        "gas_load_max_advance_crank_deg": "при угле фазирования, град ПКВ",
         "advance_crank_deg": "угол фазирования (опережение), град ПКВ",
         "valve_opens_crank_deg": "открытие клапана, град ПКВ от ВМТ газообмена",
         "valve_closes_crank_deg": "закрытие клапана, град ПКВ от ВМТ газообмена",
