@@ -242,7 +242,8 @@ def write_outputs(results, out, lang="en", inputs=(), force=False, figures="main
                   NAME_hydraulic.png, NAME_hydraulic_sweep.png (all) (a [hydraulic] section),
                   crank_forces.png (all), crank_torque.png, crank_pin_polar.png (all),
                   two_stroke_ports.png, two_stroke_time_area.png (all), valve_timing.png,
-                  breathing_pv.png, breathing_speed.png (two speeds or more)
+                  breathing_pv.png, breathing_speed.png (two speeds or more),
+                  NAME_phaser.png (a [phaser] section with [breathing])
         out/report.html
         out/.valvetrain-output (the files the run wrote)
     """

@@ -16,6 +16,10 @@ rpm) are converted to SI for the physics functions.  Stages:
 * the whole camshaft (:mod:`.camshaft`, after the valves), the cam card (:mod:`.camcard`), the breathing
   (:mod:`.breathing`: the valves' effective areas from the designed lifts or a measured table, the engine as
   ``breathing.Engine``, the records per condition);
+* a cam phaser (:mod:`.phaser`, ``[valves.NAME.phaser]``, after the camshaft and the breathing): the events moved by
+  the phase, the valve-to-piston gap at the range's ends, the breathing at every phase of the map with the phased
+  side's effective areas shifted, the best phase per speed, the torque the phaser holds from the camshaft's drive
+  torque;
 * a valve with a ``[hydraulic]`` section (:mod:`.hydraulic_actuation`) opens against the cylinder pressure of the
   engine's cycle: ``run`` designs the valve without it, runs the crank stage (whose Wiebe cycle needs every valve's
   timing) and adds the hydraulic stage after it (``with_hydraulic``);
@@ -29,7 +33,7 @@ gives a result's rows as results.json shows them (key and display value from the
 are typed records too (``CrankColumns``, ``PortCurves``, ``SpringLines``).
 """
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 import difflib
 from functools import cached_property
 from typing import Any, Optional
@@ -58,6 +62,7 @@ from .grinding import GrindingResult
 from .hydraulic_actuation import CylinderPressure, HydraulicResult, speed_plan
 from .lash_adjuster import LashAdjusterResult
 from .lubrication import LubricationResult
+from .phaser import PhaserRecord, PhaserResults, phaser_stage
 from .results import json_schema, quantity, record, shown_value
 from .twostroke import TwoStrokeResults, TwoStrokeSummary, two_stroke_stage
 from .valve import (THROAT_AREA_SHARE_RANGE, CamResult, ClearanceResult, FlowResult, ProfileResult, ValveDesign,
@@ -97,6 +102,7 @@ class DesignResults:
     cam_card: Optional[CamCard] = None         # a four-stroke's (valvetrain.camcard)
     camshaft: Optional[CamshaftResults] = None  # with a [camshaft] section
     breathing: Optional[BreathingResults] = None  # with a [breathing] section
+    phasers: dict[str, PhaserResults] = field(default_factory=dict)   # the valves with a [phaser] section
 
     @property
     def warnings(self) -> list[Check]:
@@ -173,6 +179,8 @@ class DesignResults:
             out["camshaft"] = self.camshaft.summary
         if self.breathing is not None:
             out["breathing"] = self.breathing.summary
+        if self.phasers:
+            out["phasers"] = {name: p.summary for name, p in self.phasers.items()}
         out["warnings"] = [w.warning() for w in self.warnings]
         out["accepted"] = [w.warning() for w in self.accepted]
         out["checks"] = [c.as_dict() for c in self.checks]
@@ -278,9 +286,15 @@ def run(spec, laws=None, progress=None, headlines_only=False, diagnose=True, mem
     for stage, tag in ((crank, "crank"), (ports, "two-stroke"), (shaft, "camshaft"), (breathing, "breathing")):
         if stage is not None:
             found += [c.named(tag) for c in stage.checks]
+    phased = [name for name, v in views.items() if v.phaser is not None]
+    b = breathing_view(spec) if phased and breathing is not None else None
+    phasers = {name: phaser_stage(name, views[name].phaser, views[name], engine, valves[name], breathing, b, shaft)
+               for name in phased}
+    found += [c for p in phasers.values() for c in p.checks]
     found, valves = accept(found, spec.accepted, valves)
     card = cam_card_stage(valves) if valves and engine.strokes == 4 else None
-    return DesignResults(spec, engine_record(engine), valves, tuple(found), crank, ports, card, shaft, breathing)
+    return DesignResults(spec, engine_record(engine), valves, tuple(found), crank, ports, card, shaft, breathing,
+                         phasers)
 
 
 def breathing_view(spec) -> Any:
@@ -498,6 +512,8 @@ def results_schema() -> dict[str, Any]:
             "crank": json_schema(CrankSummary), "two_stroke": json_schema(TwoStrokeSummary),
             "breathing": json_schema(BreathingSummary),
             "camshaft": json_schema(CamshaftRecord),
+            "phasers": {"type": "object", "additionalProperties": json_schema(PhaserRecord),
+                        "description": "each phased valve's cam phaser ([valves.NAME.phaser])"},
             "cam_card": json_schema(CamCard) | {"properties": json_schema(CamCard)["properties"] | {
                 "valves": {"type": "object", "additionalProperties": json_schema(CamCardValve)}}},
             "warnings": {"type": "array", "items": check_record,

@@ -572,8 +572,9 @@ def profile_stage(cam, valve, output) -> ProfileResult:
                          None if straight else x_max, straight, contact, follower.undercut(rho_min), finger)
 
 
-def clearance_stage(cam, valve, engine) -> Optional[ClearanceResult]:
-    """The smallest valve-to-piston gap over the open event, or None without ``piston_gap_tdc_mm``.
+def clearance_stage(cam, valve, engine, advance=0.0) -> Optional[ClearanceResult]:
+    """The smallest valve-to-piston gap over the open event, or None without ``piston_gap_tdc_mm``; with ``advance``
+    [crank rad] the events that much earlier (a cam phaser's, :mod:`valvetrain.design.phaser`).
 
     Raises
     ------
@@ -587,9 +588,9 @@ def clearance_stage(cam, valve, engine) -> Optional[ClearanceResult]:
     if valve.piston_gap_tdc is None:
         return None
     law, radius = cam.law, engine.stroke / 2.0
-    crank = cam.nose + 2.0 * np.linspace(law.valve_opens, law.valve_closes, 2001)
+    crank = cam.nose - advance + 2.0 * np.linspace(law.valve_opens, law.valve_closes, 2001)
     s = displacement(crank, radius, radius / engine.rod_length)
-    gap = geometry.valve_piston_clearance(s, cam.valve_lift((crank - cam.nose) / 2.0), valve.piston_gap_tdc)
+    gap = geometry.valve_piston_clearance(s, cam.valve_lift((crank + advance - cam.nose) / 2.0), valve.piston_gap_tdc)
     i = int(np.argmin(gap))
     angle = float(wrap_crank(crank[i]))
     if gap[i] <= 0.0:

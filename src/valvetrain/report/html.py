@@ -266,6 +266,7 @@ CHECK_CHAPTERS = {
     "drive.specific_mass": "springs", "gas_force": "springs", "strength": "strength", "dynamics": "dynamics",
     "grinding": "grinding", "hydraulic": "hydraulic", "lubrication": "lubrication", "lash_adjuster": "lash_adjuster",
     "engine": "engine", "crank": "crank", "camshaft": "camshaft", "ports": "ports", "breathing": "breathing",
+    "phaser": "phaser",
 }
 """The chapter of the report that shows the checks of a code: the entry of the code's longest dotted prefix
 (:func:`check_chapter`)."""
@@ -297,7 +298,7 @@ def chapter_checks(results) -> dict:
     for name, v in results.valves.items():
         present[name] = {"flow", "law", "time_area", "geometry", "springs", "strength", "other",
                          *(k for k in ("dynamics", "grinding", "hydraulic", "lubrication", "lash_adjuster")
-                           if getattr(v, k) is not None)}
+                           if getattr(v, k) is not None), "phaser" if name in results.phasers else ""}
     found = {key: {} for key in present}
     for c in results.checks:
         chapter = check_chapter(c.code)
@@ -480,6 +481,43 @@ def _camshaft(results, spec, plots):
             if figures.response.resonances else [],
             "resonances": [[v for _, v in shown(r, *CAMSHAFT_RESONANCES)] for r in figures.response.resonances],
             "table": figures.response.table, "plots": plots.get("camshaft", {})}
+
+
+PHASER_ROWS = ("advance_range", "cam_range", "torque_peak", "torque_lowest", "torque_mean", "gas_load",
+               "gas_load_advance")
+"""The rows of the report's table of a phaser's figures (fields of :class:`~valvetrain.design.phaser.PhaserRecord`)."""
+
+PHASER_EVENTS = ("advance", "opens", "closes", "min_gap", "min_gap_angle")
+"""The columns of the report's table of the events at the phaser's range ends and at phase 0 (fields of
+:class:`~valvetrain.design.phaser.PhasedEvents`)."""
+
+PHASER_BEST = ("speed", "intake_pressure", "advance", "volumetric_efficiency", "residual_gas_fraction", "pmep",
+               "torque", "gain", "evaluations")
+"""The columns of the report's table of the best phases (fields of :class:`~valvetrain.design.phaser.BestPhase`)."""
+
+
+def _phasers(results, spec, plots, checks):
+    """The phaser chapters: each phased valve's figures, events at its range's ends, best phases, the objective's
+    map (one row a phase, one column a condition), its figure and its checks."""
+    out = []
+    for name, p in results.phasers.items():
+        f = p.figures
+        events = [e for e in PHASER_EVENTS if getattr(f.events[0], e) is not None]
+        best = [b for b in PHASER_BEST if f.best and getattr(f.best[0], b) is not None]
+        n = len(f.best)
+        values = [shown_value(point, f.objective) for point in f.map] if f.map else []
+        out.append({"name": name, "rows": shown(f, *(k for k in PHASER_ROWS if getattr(f, k) is not None)),
+                    "objective": f.objective,
+                    "on_camshaft": results.camshaft is not None and name in results.camshaft.figures.valves,
+                    "tolerance": spec["valves"][name]["phaser"]["tolerance_crank_deg"],
+                    "event_columns": [k for k, _ in shown(f.events[0], *events)],
+                    "events": [[v for _, v in shown(e, *events)] for e in f.events],
+                    "best_columns": [k for k, _ in shown(f.best[0], *best)] if f.best else [],
+                    "best": [[v for _, v in shown(b, *best)] for b in f.best],
+                    "conditions": [(shown_value(b, "speed"), shown_value(b, "intake_pressure")) for b in f.best],
+                    "map": [(shown_value(f.map[i], "advance"), values[i:i + n]) for i in range(0, len(values), n)],
+                    "plot": plots.get(name, {}).get("phaser"), "checks": checks[name].get("phaser", [])})
+    return out
 
 
 ADJUSTER_COLUMNS = ("speed", "leak_down", "valve_lash", "refill_share", "stiffness_at_valve", "pump_up", "pumped_up",
@@ -668,6 +706,7 @@ def render_report(results, plots, lang="en", folder=None) -> str:
         adjuster_sources=ADJUSTER_SOURCES,
         step=REPORT_STEP_DEG, output=_flatten(spec["output"]), crank=crank, ports=ports,
         camshaft=_camshaft(results, spec, plots), camshaft_sources=CAMSHAFT_SOURCES, breathing=breathing,
+        phasers=_phasers(results, spec, plots, checks),
     )
     template = env.get_template("report.html")
     # the corrections notes the report cites, found in a first rendering

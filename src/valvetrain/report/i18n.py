@@ -1222,6 +1222,105 @@ TEXT["ru"].update({
     "br_torque": "индикаторный крутящий момент, Н·м", "br_condition": "{speed} мин⁻¹, {pressure} кПа",
 })
 
+TEXT["en"].update({
+    "ph_chapter": "Cam phaser of the valve",
+    "ph_method": "The phaser turns the valve's camshaft against its drive: every event of the valve moves by the phase, "
+                 "an advance positive (the events earlier), in crank degrees (half as many camshaft degrees of a "
+                 "four-stroke); phase 0 is the designed timing",
+    "ph_dynamics": "The lift law about the camshaft and the camshaft's speed do not change with the phase, so neither "
+                   "does the valve train's dynamics at a given speed: its chapter holds over the whole range; the "
+                   "valve-to-piston gap does change, and is checked at both ends of the range, and so do the gas "
+                   "pressures on the shut valve, whose largest force over the map the spring's preload must hold",
+    "ph_torque_camshaft": "The phaser holds the drive torque of the camshaft of the camshaft chapter (the torque at each "
+                          "camshaft angle does not change with the phase): its peak and lowest over a revolution and "
+                          "its mean",
+    "ph_torque_valve": "The phaser holds the drive torque of a camshaft carrying the valve's lobes on every cylinder in "
+                       "firing order, computed as in the camshaft chapter (the torque at each camshaft angle does not "
+                       "change with the phase): its peak and lowest over a revolution and its mean",
+    "ph_table": "The phaser's range and the torque it holds", "ph_checks": "the cam phaser",
+    "ph_events": "The valve's events at the ends of the phaser's range and at phase 0",
+    "ph_map_method": "The breathing chapter's model at every phase of the map and every condition of the breathing "
+                     "(at phase 0 the breathing chapter's own result); the best phase maximises the",
+    "ph_objective": {"torque": "indicated torque", "volumetric_efficiency": "volumetric efficiency"},
+    "ph_search": "the map's best phase refined by a bounded Brent search (scipy.optimize.minimize_scalar) between its "
+                 "neighbours of the map, to {tolerance} crank deg",
+    "ph_map": "The objective over the map: phase (rows) and condition (columns)",
+    "ph_best_table": "The best phase at each condition",
+    "ph_figure": "phaser map and best phase against the speed",
+    "ph_title": "cam phaser of the valve {valve}", "ph_map_title": "the objective against the phase",
+    "ph_best_title": "the best phase against the speed", "ph_advance": "phase (advance), crank deg",
+    "ph_best": "best phase (advance), crank deg", "ph_pressure": "intake plenum {pressure} kPa",
+    "ph_names": {
+        "advance_range_crank_deg": "phaser's range, advance positive, crank deg",
+        "advance_range_cam_deg": "the same in camshaft degrees",
+        "holding_torque_peak_Nm": "torque the phaser holds: peak, N·m",
+        "holding_torque_lowest_Nm": "torque the phaser holds: lowest, N·m",
+        "holding_torque_mean_Nm": "torque the phaser holds: mean, N·m",
+        "gas_load_max_N": "largest gas force on the shut valve over the map, N",
+        "gas_load_max_advance_crank_deg": "at the phase, crank deg",
+        "advance_crank_deg": "phase (advance), crank deg",
+        "valve_opens_crank_deg": "valve opens, crank deg from the gas-exchange TDC",
+        "valve_closes_crank_deg": "valve closes, crank deg from the gas-exchange TDC",
+        "min_piston_clearance_mm": "smallest valve-to-piston gap, mm",
+        "min_piston_clearance_crank_deg": "where, crank deg",
+        "speed_rpm": "speed, rpm", "intake_pressure_kPa": "intake plenum pressure, kPa",
+        "volumetric_efficiency": "volumetric efficiency", "residual_gas_fraction": "residual gas fraction",
+        "pmep_kPa": "PMEP, kPa", "torque_Nm": "indicated torque, N·m", "gain_percent": "gain over phase 0, %",
+        "evaluations": "cycles of the search",
+    },
+})
+
+TEXT["ru"].update({
+    "ph_chapter": "Фазовращатель распределительного вала клапана",
+    "ph_method": "Фазовращатель поворачивает распределительный вал клапана относительно его привода: все фазы клапана "
+                 "смещаются на угол фазирования, опережение положительно (фазы раньше), в градусах поворота "
+                 "коленчатого вала (вдвое меньше градусов поворота распределительного вала четырёхтактного двигателя); "
+                 "нулевой угол — расчётные фазы",
+    "ph_dynamics": "Закон подъёма по углу распределительного вала и его частота вращения от угла фазирования не "
+                   "зависят, поэтому не зависит и динамика привода клапана при данной частоте вращения: её расчёт "
+                   "справедлив во всём диапазоне; зазор клапан-поршень меняется и проверяется на обоих концах "
+                   "диапазона, меняются и давления газов на закрытый клапан, наибольшую силу которых по карте должна "
+                   "удерживать предварительная сила пружины",
+    "ph_torque_camshaft": "Фазовращатель удерживает момент привода распределительного вала из его главы (момент при "
+                          "каждом угле поворота вала от угла фазирования не зависит): наибольший и наименьший за "
+                          "оборот и средний",
+    "ph_torque_valve": "Фазовращатель удерживает момент привода распределительного вала с кулачками клапана на всех "
+                       "цилиндрах в порядке работы, рассчитанный как в главе распределительного вала (момент при "
+                       "каждом угле поворота вала от угла фазирования не зависит): наибольший и наименьший за оборот "
+                       "и средний",
+    "ph_table": "Диапазон фазовращателя и удерживаемый им момент", "ph_checks": "фазовращатель",
+    "ph_events": "Фазы клапана на концах диапазона фазовращателя и при нулевом угле",
+    "ph_map_method": "Модель главы газообмена при каждом угле фазирования карты и на каждом режиме газообмена (при "
+                     "нулевом угле — результат самой главы газообмена); наилучший угол даёт наибольший",
+    "ph_objective": {"torque": "индикаторный крутящий момент", "volumetric_efficiency": "коэффициент наполнения"},
+    "ph_search": "наилучшая точка карты уточняется методом Брента на отрезке между соседними углами карты с "
+                 "точностью {tolerance} град ПКВ",
+    "ph_map": "Целевой показатель по карте: угол фазирования (строки) и режим (столбцы)",
+    "ph_best_table": "Наилучший угол фазирования на каждом режиме",
+    "ph_figure": "карта фазовращателя и наилучший угол по частоте вращения",
+    "ph_title": "фазовращатель клапана {valve}", "ph_map_title": "целевой показатель по углу фазирования",
+    "ph_best_title": "наилучший угол по частоте вращения", "ph_advance": "угол фазирования (опережение), град ПКВ",
+    "ph_best": "наилучший угол (опережение), град ПКВ", "ph_pressure": "во впускном ресивере {pressure} кПа",
+    "ph_names": {
+        "advance_range_crank_deg": "диапазон фазовращателя, опережение положительно, град ПКВ",
+        "advance_range_cam_deg": "то же в градусах поворота распределительного вала",
+        "holding_torque_peak_Nm": "момент, удерживаемый фазовращателем: наибольший, Н·м",
+        "holding_torque_lowest_Nm": "момент, удерживаемый фазовращателем: наименьший, Н·м",
+        "holding_torque_mean_Nm": "момент, удерживаемый фазовращателем: средний, Н·м",
+        "gas_load_max_N": "наибольшая сила давления газов на закрытый клапан по карте, Н",
+        "gas_load_max_advance_crank_deg": "при угле фазирования, град ПКВ",
+        "advance_crank_deg": "угол фазирования (опережение), град ПКВ",
+        "valve_opens_crank_deg": "открытие клапана, град ПКВ от ВМТ газообмена",
+        "valve_closes_crank_deg": "закрытие клапана, град ПКВ от ВМТ газообмена",
+        "min_piston_clearance_mm": "наименьший зазор клапан-поршень, мм",
+        "min_piston_clearance_crank_deg": "где, град ПКВ",
+        "speed_rpm": "частота вращения, мин⁻¹", "intake_pressure_kPa": "давление во впускном ресивере, кПа",
+        "volumetric_efficiency": "коэффициент наполнения", "residual_gas_fraction": "коэффициент остаточных газов",
+        "pmep_kPa": "давление насосных потерь, кПа", "torque_Nm": "индикаторный крутящий момент, Н·м",
+        "gain_percent": "прирост к нулевому углу, %", "evaluations": "циклов поиска",
+    },
+})
+
 NOTE_TEXT = {
     "en": {
         "checks": "Checks", "limit": "Limit", "verdict": "Verdict", "margin": "Margin",

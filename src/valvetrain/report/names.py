@@ -673,6 +673,13 @@ NAMES.update({
 })
 
 NAMES.update({
+    "phaser.advance_range": ("range of the cam phaser, an advance positive (the events earlier)",
+                             "диапазон фазовращателя, опережение положительно (фазы раньше)"),
+    "phaser.step": ("step of the phaser's map", "шаг карты фазовращателя"),
+    "phaser.tolerance": ("tolerance of the best phase", "точность наилучшего угла фазирования"),
+})
+
+NAMES.update({
     "camshaft.cylinders": ("cylinders of the camshaft", "цилиндры распределительного вала"),
     "camshaft.cylinder_positions": ("cylinder positions from the drive end", "положения цилиндров от приводного конца"),
     "camshaft.section_lengths": ("shaft section lengths", "длины участков вала"),

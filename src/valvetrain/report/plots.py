@@ -1086,6 +1086,59 @@ def breathing_speed_figure(breathing, t) -> Figure:
     return draw_breathing_speed(breathing_speed_data(breathing), t)
 
 
+def phaser_data(phaser) -> dict[str, Any]:
+    """The series of :func:`draw_phaser`: the map's phases [crank deg, an advance positive], each condition's
+    objective over them (the indicated torque [N m] of a fired engine, else the volumetric efficiency), its speed
+    [rpm] and intake pressure [kPa], and the best phase and its objective at each condition."""
+    f = phaser.figures
+    key = f.objective
+    n = len(f.best)
+    values = [shown_value(p, key) for p in f.map]
+    return {"advance_deg": [shown_value(p, "advance") for p in f.map[::n]],
+            "values": [values[j::n] for j in range(n)],
+            "speed_rpm": [shown_value(b, "speed") for b in f.best],
+            "pressure_kPa": [shown_value(b, "intake_pressure") for b in f.best],
+            "best_deg": [shown_value(b, "advance") for b in f.best],
+            "best_values": [shown_value(b, key) for b in f.best], "objective": key, "valve": f.valve}
+
+
+def draw_phaser(d, t) -> Figure:
+    """The phaser's map, the objective against the phase at each condition with its best phase marked, and the best
+    phase against the speed, a line for each intake plenum pressure."""
+    fig = Figure(figsize=(11, 5))
+    left, right = fig.subplots(1, 2)
+    label = t["br_torque"] if d["objective"] == "torque" else t["br_efficiency"]
+    for j, values in enumerate(d["values"]):
+        color = f"C{j % 10}"
+        left.plot(d["advance_deg"], values, color=color, marker="o", ms=3, lw=1.0,
+                  label=t["br_condition"].format(speed=number(d["speed_rpm"][j], t["lang"]),
+                                                 pressure=number(d["pressure_kPa"][j], t["lang"])))
+        left.plot(d["best_deg"][j], d["best_values"][j], color=color, marker="*", ms=11, ls="none")
+    left.set_xlabel(t["ph_advance"])
+    left.set_ylabel(label)
+    left.grid(alpha=0.3)
+    left.legend(loc="best", fontsize=7)
+    left.set_title(t["ph_map_title"])
+    for pressure in sorted(set(d["pressure_kPa"]), reverse=True):
+        points = sorted((n, a) for n, a, p in zip(d["speed_rpm"], d["best_deg"], d["pressure_kPa"], strict=True)
+                        if p == pressure)
+        right.plot(*zip(*points, strict=True), marker="*", ms=9, lw=1.2,
+                   label=t["ph_pressure"].format(pressure=number(pressure, t["lang"])))
+    right.legend(loc="best", fontsize=7)
+    right.set_xlabel(t["speed"])
+    right.set_ylabel(t["ph_best"])
+    right.grid(alpha=0.3)
+    right.set_title(t["ph_best_title"])
+    fig.suptitle(t["ph_title"].format(valve=d["valve"]))
+    fig.subplots_adjust(left=0.07, right=0.98, bottom=0.12, top=0.86, wspace=0.25)
+    return _localised(fig, t)
+
+
+def phaser_figure(phaser, t) -> Figure:
+    """:func:`draw_phaser` of :func:`phaser_data`."""
+    return draw_phaser(phaser_data(phaser), t)
+
+
 ENGINE_FIGURES = {"crank": {"crank_forces": crank_forces_figure, "crank_torque": crank_torque_figure,
                             "crank_pin_polar": crank_pin_figure},
                   "two_stroke": {"two_stroke_ports": two_stroke_ports_figure,
@@ -1103,13 +1156,14 @@ FIGURE_SETS = ("main", "all", "none")
 
 MAIN_FIGURES = frozenset({"kinematics", "contour", "dynamics_speed", "grinding", "hydraulic", "timing",
                           "crank_torque", "two_stroke_ports", "camshaft_torque", "camshaft_torsion", "breathing_pv",
-                          "breathing_speed"})
+                          "breathing_speed", "phaser"})
 """The figures drawn by default (``figures="main"``): the valve's lift law and its cam, one figure of each further
 stage that a section asks for (the dynamics' seating velocity, bounce and contact force against the speed; the
 grinding; the hydraulic drive over a revolution; the crank and camshaft torques; the ports) and the timing diagram.
 The others are drawn on request (``figures="all"``): the time-area, the radius of curvature, the spring
 characteristic, the stresses against the speed, the dynamics' maps over angle and speed, the hydraulic drive
 against the speed, the crank forces and pin load, the ports' time-area, whose extremes the report's tables give.
+A phased valve's map and best phase (``phaser``) is drawn by default where the breathing made its map.
 A figure costs 0.1-0.4 s of processor time, the design of a valve's numbers a few milliseconds to a few tenths of
 a second."""
 
@@ -1148,6 +1202,10 @@ def write_plots(results, folder, lang="en", figures="main", claim=None) -> dict[
             if wanted("hydraulic_sweep"):
                 written[name]["hydraulic_sweep"] = save(lambda: hydraulic_sweep_figure(valve, t),
                                                         f"{name}_hydraulic_sweep.png")
+    for name, phaser in results.phasers.items():
+        if phaser.figures.map and wanted("phaser"):
+            written.setdefault(name, {})["phaser"] = save(lambda phaser=phaser: phaser_figure(phaser, t),
+                                                          f"{name}_phaser.png")
     if results.valves and wanted("timing"):
         written["(timing)"] = save(lambda: timing_figure(results.valves, t), "valve_timing.png")
     for stage, figures_of_stage in ENGINE_FIGURES.items():

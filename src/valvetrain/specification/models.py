@@ -472,6 +472,32 @@ class LashAdjuster(_Model):
         return self
 
 
+class Phaser(_Model):
+    """[valves.NAME.phaser]: a cam phaser on the camshaft that drives the valve: it turns the camshaft against its
+    drive, so every event of the valve moves by the same crank angle.
+
+    ``advance_range_crank_deg``: the phaser's range ``[low, high]`` in crank degrees, an advance positive (the events
+    earlier: the valve opens and closes ``advance`` crank degrees sooner), a retard negative; 0 is the designed timing
+    (``opens_deg``, ``closes_deg``, or the measured table's), which the range must hold (a phaser's locked home
+    position is usually one end of it).  Each allowed [-90, 90] crank deg (45 camshaft degrees of a four-stroke:
+    an engineering bound of this package, no published one).  ``step_crank_deg``:
+    the map's step, the phases from ``low`` to ``high`` at most this far apart (0 among them).
+    ``tolerance_crank_deg``: how closely the best phase at each speed is found (a bounded one-dimensional search
+    between the map's neighbours of its best point)."""
+
+    advance_range_crank_deg: Pair(-90.0, 90.0, "crank deg")
+    step_crank_deg: _bounded(0.5, 180.0, "crank deg", low_open=False) = 10.0
+    tolerance_crank_deg: _bounded(0.01, 5.0, "crank deg", low_open=False) = 0.5
+
+    @model_validator(mode="after")
+    def _holds_the_designed_timing(self):
+        low, high = self.advance_range_crank_deg
+        if not low <= 0.0 <= high or low == high:
+            raise ValueError(f"advance_range_crank_deg = [{low:g}, {high:g}]: allowed low <= 0 <= high, low < high "
+                             "(0 is the designed timing)")
+        return self
+
+
 class Valve(_Model):
     """[valves.NAME]: one valve (or a set of same-name valves) of a cylinder."""
 
@@ -494,6 +520,7 @@ class Valve(_Model):
     hydraulic: Optional[Hydraulic] = None
     lubrication: Optional[Lubrication] = None
     lash_adjuster: Optional[LashAdjuster] = None
+    phaser: Optional[Phaser] = None
 
     @property
     def layout(self) -> str:

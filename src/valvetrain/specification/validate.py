@@ -232,6 +232,24 @@ def _camshaft_problems(spec):
     elif c.cylinders is None and len(c.cylinder_positions_mm) != n:
         out.append(Problem("camshaft.cylinder_positions_mm", f"has {len(c.cylinder_positions_mm)} entries: one per "
                            f"cylinder (engine.cylinders = {n}) is needed", joiner=" "))
+    carried = [name for name in (c.valves or spec.valves) if name in spec.valves]
+    if len({spec.valves[name].phaser for name in carried}) > 1:
+        phased = [name for name in carried if spec.valves[name].phaser is not None]
+        out.append(Problem("camshaft.valves", f"a phaser turns the whole camshaft: every valve it carries has the same "
+                           f"[valves.NAME.phaser] (phased: {', '.join(phased)}), or name only the phased ones",
+                           f"{carried}"))
+    return out
+
+
+def _phaser_problems(spec):
+    """A valve's [phaser] against the breathing: the phased valve's designed lift is what breathes."""
+    out = []
+    for name, v in spec.valves.items():
+        side = None if spec.breathing is None else getattr(spec.breathing, v.kind)
+        if v.phaser is not None and side is not None and side.lift_file is not None:
+            out.append(Problem(f"valves.{name}.phaser", f"the breathing's {v.kind} lift is measured "
+                               f"(breathing.{v.kind}.lift_file), not the designed valve's the phaser turns; allowed "
+                               "without that lift_file"))
     return out
 
 
@@ -240,7 +258,7 @@ def problems(spec) -> list[Problem]:
     none): angles that must add up, a throat smaller than the bore, files and keys that must agree, ...."""
     out = [p for name, v in spec.valves.items() for p in _valve_problems(name, v, spec.engine)]
     out += _crank_problems(spec) + _two_stroke_problems(spec) + _camshaft_problems(spec) + _acceptance_problems(spec)
-    out += _breathing_problems(spec)
+    out += _breathing_problems(spec) + _phaser_problems(spec)
     if spec.engine.strokes != 4 and spec.valves:
         out.insert(0, Problem("engine.strokes", "the valve timing (opens_deg/closes_deg before and after TDC/BDC of "
                               "the gas-exchange strokes) is defined for four-stroke engines; allowed 4 with "
