@@ -2,6 +2,7 @@
 designed valves: the records results.json promises, the valves' effective areas from the measured lift and C_D table
 (by hand), the bad inputs refused naming their keys."""
 
+import json
 from pathlib import Path
 import shutil
 
@@ -271,3 +272,30 @@ def test_a_dynamic_lift_is_refused_without_its_train():
     doc = _tcc3_document(breathing__intake__lift="dynamics")
     with pytest.raises(SpecError, match=r"breathing.intake.lift = 'dynamics': allowed 'designed' with lift_file"):
         validate(doc)
+
+
+@pytest.mark.parametrize("load, redone", [(72.7, False), (900.0, True)])
+def test_a_gas_load_redoes_only_what_it_changes(monkeypatch, load, redone):
+    """The breathing's gas load on the spring (the built-in example's exhaust valve, 20 speeds of [dynamics]): with
+    the springs it leaves as they are (72.7 N, the throttled breathing's, below the line the inertia asks for) only the
+    spring's record changes, and nothing after the drive stage runs again; with springs it changes (900 N, above
+    that line) the dynamics and the strength run again, not the cam, flow and profile stages.  Either way the design is
+    the one the whole valve designed with that load gives (results.json's record and every check equal)."""
+    from valvetrain.design import valve as stages
+    from valvetrain.specification import si
+    doc = spec_document(example_spec())
+    doc["valves"]["exhaust"]["dynamics"]["speeds"] = 20
+    spec = validate(doc)
+    view, engine, gas, output = (si(spec.valves["exhaust"], spec), si(spec.engine), si(spec.gas), si(spec.output))
+    first = stages.design_valve("exhaust", view, engine, gas, output)
+    calls = []
+    for name in ("law_stage", "profile_stage", "dynamics_stage", "strength_stage"):
+        monkeypatch.setattr(stages, name, lambda *a, _f=getattr(stages, name), _n=name, **k: calls.append(_n) or
+                            _f(*a, **k))
+    gas_load = (load, "the breathing's")
+    ours = stages.with_gas_load(first, view, engine, gas, output, gas_load)
+    assert sorted(calls) == (["dynamics_stage", "strength_stage"] if redone else [])
+    whole = stages.design_valve("exhaust", view, engine, gas, output, gas_load=gas_load)
+    assert json.dumps(ours.summary, default=str) == json.dumps(whole.summary, default=str)      # NaN as NaN
+    assert json.dumps([c.as_dict() for c in ours.checks]) == json.dumps([c.as_dict() for c in whole.checks])
+    assert ours.drive.spring.gas_force == load and (ours.drive.spring.preload != first.drive.spring.preload) == redone
