@@ -244,7 +244,8 @@ def run(spec, laws=None, progress=None, headlines_only=False, diagnose=True, mem
         breathed = cylinder_pressure(breathing, crank_geometry_of(crank_view, engine)[3])
     crank = crank_stage(crank_view, engine, valve_timing(valves), breathed) if crank_view is not None else None
     for name, valve in waiting.items():     # a hydraulic valve opens against the cylinder pressure
-        cylinder = (cylinder_pressure(breathing, speed_plan(valve.hydraulic, engine)[0]) if breathing is not None
+        cylinder = (cylinder_pressure(breathing, speed_plan(valve.hydraulic, engine)[0], valve.kind)
+                    if breathing is not None
                     else CylinderPressure(crank.phi, crank.columns.p_abs, crank.pressure_source))
         valves[name] = with_hydraulic(valves[name], valve, engine, gas, cylinder)
     found = [c for v in valves.values() for c in v.checks] + overlap_clearance_checks(valves) + engine_checks(spec)

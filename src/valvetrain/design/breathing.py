@@ -270,15 +270,23 @@ def breathing_stage(b, engine, crank, valves, views) -> BreathingResults:
     return BreathingResults(engines, conditions, curve, figures, tuple(found))
 
 
-def cylinder_pressure(results, speed) -> CylinderPressure:
+def _ports(columns, kind) -> np.ndarray:
+    """The pressure at the ``kind`` side's valves over the converged cycle [Pa]: the runner's last cell (the plenum's
+    without a runner)."""
+    return columns.intake_port if kind == "intake" else columns.exhaust_port
+
+
+def cylinder_pressure(results, speed, kind=None) -> CylinderPressure:
     """The cylinder pressure of the breathing's converged cycle whose speed is nearest ``speed`` [rad/s] (the
     conditions first, then the curve), for the chapters that read the cylinder pressure (the crank's torque, the
-    hydraulic valve's gas force), with the words of its source."""
+    hydraulic valve's gas force), with the words of its source; with ``kind`` ("intake" or "exhaust") also the
+    pressure at that side's valves (the port behind the valve head)."""
     chosen = min((*results.conditions, *results.curve), key=lambda r: abs(r.figures.speed - speed))
-    f = chosen.figures
-    return CylinderPressure(chosen.columns.angle, chosen.columns.pressure,
+    f, c = chosen.figures, chosen.columns
+    return CylinderPressure(c.angle, c.pressure,
                             f"the breathing's converged {results.figures.mode} cycle at {to_display(f.speed, 'rpm'):.5g} "
-                            f"rpm, intake plenum {f.intake_pressure / 1e3:.5g} kPa")
+                            f"rpm, intake plenum {f.intake_pressure / 1e3:.5g} kPa",
+                            None if kind is None else _ports(c, kind))
 
 
 def gas_opening_load(results, kind, diameter) -> tuple[float, str]:
@@ -312,14 +320,14 @@ def gas_opening_load(results, kind, diameter) -> tuple[float, str]:
     for engine, r in zip(results.engines, (*results.conditions, *results.curve), strict=True):
         c = r.columns
         forward, reverse = getattr(engine, kind).areas(c.angle)
-        port = c.intake_port if kind == "intake" else c.exhaust_port
+        port = _ports(c, kind)
         difference = np.where((forward == 0.0) & (reverse == 0.0), port - c.pressure, -np.inf)
         i = int(np.argmax(difference))
         if best is None or difference[i] > best[0]:
             best = (difference[i], r, i)
     _, r, i = best
     c = r.columns
-    port = (c.intake_port if kind == "intake" else c.exhaust_port)[i]
+    port = _ports(c, kind)[i]
     force = gas_opening_force(diameter, port, c.pressure[i])
     return force, (f"the breathing's converged {results.figures.mode} cycles: the largest (p_port - p_cyl) on the shut "
                    f"valve, {port / 1e3:.4g} - {c.pressure[i] / 1e3:.4g} kPa at {to_display(r.figures.speed, 'rpm'):.5g} "

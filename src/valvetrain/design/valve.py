@@ -912,8 +912,8 @@ def with_gas_load(design, valve, engine, gas, output, gas_load, headlines_only=F
     """The design with the spring's closed-valve gas load ``gas_load`` ((N, source), the breathing's): the drive
     stage anew and, where its springs, lines or masses change, what depends on them (the dynamics, the strength, the
     lubrication, the lash adjuster: :func:`driven_design`); the cam, the flow, the profile, the clearance and the
-    law's records (:attr:`ValveDesign.geometry`, :func:`valve_geometry`) as they are.  Where the springs stay (the gas load below the
-    seat load, or a spring that holds both), only the spring's record of its gas load changes.  The valve's
+    law's records (:attr:`ValveDesign.geometry`, :func:`valve_geometry`) as they are.  Where the springs stay (the
+    gas load below the line the inertia asks for), only the spring's record of its gas load changes.  The valve's
     ``[hydraulic]`` stage is not run (``valve`` without it: the caller adds it with its cylinder pressure).
 
     Raises

@@ -695,7 +695,7 @@ class BreathingSide(_Model):
     """[breathing.intake], [breathing.exhaust]: one side's valves, their discharge coefficients and runner.
 
     The lift is the designed valves' of the kind (every ``[valves.NAME]`` of ``kind``): their cam's
-    (``lift = "designed"``) or, with ``lift = "dynamics"``, the valve motion of each one's ``[dynamics]`` train at each
+    (``lift = "designed"``, the default) or, with ``lift = "dynamics"``, the valve motion of each one's ``[dynamics]`` train at each
     condition's speed (the steady revolution, with its deflection, separation and bounce); or a measured one
     (``lift_file``: ``crank_deg,lift_mm``, crank degrees from the gas-exchange TDC, the valve shut outside the rows;
     ``valves`` of them).  The effective area is C_D(L/D) of ``cd_file`` (``l_over_d,cd_forward,cd_reverse``, forward
@@ -704,7 +704,7 @@ class BreathingSide(_Model):
     flow section.  ``runner_length_mm`` and ``runner_diameter_mm``: the runner with its port from the plenum to the
     valve (none: the valve opens straight into the plenum)."""
 
-    lift: Literal["designed", "dynamics"] = "designed"
+    lift: Optional[Literal["designed", "dynamics"]] = None
     lift_file: Optional[str] = None
     valves: Annotated[int, Field(ge=1, le=8)] = 1
     cd_file: Optional[str] = None

@@ -192,9 +192,10 @@ def _breathing_problems(spec):
         if s.lift_file is None and side not in kinds:
             out.append(Problem(f"breathing.{side}.lift_file", f"is required: no [valves.NAME] of kind '{side}' to "
                                "take the lift from", joiner=" "))
-        if s.lift == "dynamics" and s.lift_file is not None:
-            out.append(Problem(f"breathing.{side}.lift", "allowed 'designed' with lift_file (a measured lift has no "
-                               "train to move it): give lift_file or lift = 'dynamics', not both", "'dynamics'"))
+        if s.lift is not None and s.lift_file is not None:
+            out.append(Problem(f"breathing.{side}.lift", "allowed only without lift_file (the measured lift is the "
+                               "lift; a measured lift has no train to move it): give lift_file or lift, not both",
+                               f"'{s.lift}'"))
         elif s.lift == "dynamics":
             bare = [name for name, v in spec.valves.items() if v.kind == side and v.dynamics is None]
             if bare:
