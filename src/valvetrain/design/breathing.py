@@ -96,6 +96,12 @@ def dynamic_lift(name, design, view, engine, speeds, kind) -> np.ndarray:
     Returns
     -------
     ndarray (len(speeds), GRID.size)
+
+    Notes
+    -----
+    The train is the valve's as designed before the breathing: its spring that of ``[gas]``'s closed-valve gas
+    load.  ``run`` then gives the spring the breathing's gas load (:func:`gas_opening_load`); the lift and that load
+    are not iterated (one pass), which changes the lift only where the breathing's load changes the spring.
     """
     motion = valve_motion(view.dynamics, view, engine, design.law, design.drive, speeds, f"valves.{name}",
                           f"breathing.{kind}.lift")
