@@ -56,7 +56,7 @@ def main():
     spec = load_spec(EXAMPLE)
     tcc = run(spec).breathing
     view = si(spec.breathing, spec)
-    engine, condition = tcc.engine, condition_of(view.conditions[1], view.conditions[1].speed, view)
+    engine, condition = tcc.engines[1], condition_of(view.conditions[1], view.conditions[1].speed, view)
     one = tcc.conditions[1]
     steps = one.columns.angle.size - 1
     t_one, c_one = best_time(lambda: breathe(engine, condition), REPEATS), _cpu(lambda: breathe(engine, condition))
@@ -68,12 +68,13 @@ def main():
     view = si(spec.breathing, spec)
     curve = [condition_of(view.curve, n, view) for n in np.linspace(1000.0, 7000.0, 20) * np.pi / 30]
     at3000 = condition_of(view.curve, 3000 * np.pi / 30, view)
-    r3 = breathe(fired.engine, at3000)
-    t3, c3 = best_time(lambda: breathe(fired.engine, at3000), REPEATS), _cpu(lambda: breathe(fired.engine, at3000))
+    r3 = breathe(fired.engines[0], at3000)
+    engine = fired.engines[0]
+    t3, c3 = best_time(lambda: breathe(engine, at3000), REPEATS), _cpu(lambda: breathe(engine, at3000))
     print(f"built-in, fired, 3000 rpm: converged in {r3.figures.cycles} cycles of {r3.columns.angle.size - 1} steps: "
           f"wall {t3 * 1e3:.1f} ms, CPU {c3 * 1e3:.1f} ms")
-    tc = best_time(lambda: breathing_records(fired.engine, curve, 1e-3, 60, curve=True), 3)
-    cc = _cpu(lambda: breathing_records(fired.engine, curve, 1e-3, 60, curve=True), 3)
+    tc = best_time(lambda: breathing_records(fired.engines[0], curve, 1e-3, 60, curve=True), 3)
+    cc = _cpu(lambda: breathing_records(fired.engines[0], curve, 1e-3, 60, curve=True), 3)
     print(f"built-in, fired, 20 speeds 1000-7000 rpm: wall {tc:.3f} s, CPU {cc:.3f} s ({tc / 20 * 1e3:.1f} ms a "
           f"speed, {tc / t_cyc:.0f} TCC-III cycles)")
     print(f"load average {os.getloadavg()[0]:.2f}")

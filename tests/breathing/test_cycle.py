@@ -73,3 +73,19 @@ def test_events_the_cycle_cannot_hold():
     late = C.Firing("isooctane", 1.0, np.radians(60.0), np.radians(90.0))
     with pytest.raises(C.BreathingError, match="combustion from 420 to 510 crank deg"):
         C.breathe(C.Engine(CYLINDER, INTAKE, EXHAUST, firing=late), _condition(2000))
+
+
+def test_a_valve_that_bounces_off_its_seat():
+    """An intake valve that opens again after its closing (a bounce, 250-260 deg) closes the cycle at its last
+    closing: the trapped mass is the cylinder's there.  The same bounce during combustion (370-380 deg) is refused
+    for a fired cycle (both valves shut from the intake's closing to the exhaust's opening), motored it only flows."""
+    bounce = _flow(250.0, 260.0, lift=20e-6)
+    twice = C.ValveFlow(INTAKE.angle, INTAKE.forward + bounce.forward, INTAKE.reverse + bounce.reverse)
+    r = C.breathe(C.Engine(CYLINDER, twice, EXHAUST), _condition(3000))
+    closing = np.argmin(np.abs(np.degrees(r.columns.angle) - 260.0))
+    assert r.figures.trapped_mass == pytest.approx(r.columns.mass[closing], rel=1e-9)
+    late = _flow(370.0, 380.0, lift=20e-6)
+    during = C.ValveFlow(INTAKE.angle, INTAKE.forward + late.forward, INTAKE.reverse + late.reverse)
+    assert C.breathe(C.Engine(CYLINDER, during, EXHAUST), _condition(3000)).converged
+    with pytest.raises(C.BreathingError, match="both valves shut between them"):
+        C.breathe(C.Engine(CYLINDER, during, EXHAUST, firing=FIRING), _condition(3000))

@@ -299,3 +299,40 @@ def test_a_symbols_index_is_a_subscript_in_every_figure(results):
     texts = [text.get_text() for fig in figures for text in fig.findobj(Text)]
     assert [text for text in texts if re.search(r"[^\\{\s$]_[^{]", text)] == []
     assert any("$h_{T}$" in text for text in texts) and any("$p_{N}$" in text for text in texts)
+
+
+def test_the_breathing_figures_in_both_languages():
+    """Issue 37: the breathing chapter's figures, English and Russian: the p-V and the log p - log V indicator
+    diagrams (one line per condition, the cycle's volumes and pressures, the second axes logarithmic on both) and
+    the volumetric efficiency with the indicated torque of a fired engine against the curve's speeds; every text on
+    the figure, its titles in the report's language."""
+    from valvetrain.specification import example_spec, spec_document, validate
+    doc = spec_document(example_spec())
+    for valve in doc["valves"].values():
+        valve["dynamics"]["speeds"] = 20
+    doc["breathing"] = {"mode": "fired", "wall_temperature_C": 150.0,
+                        "conditions": [{"speed_rpm": 3000.0, "intake_pressure_kPa": 100.0, "intake_temperature_C": 25.0,
+                                        "exhaust_pressure_kPa": 105.0}],
+                        "curve": {"speed_range_rpm": [2000.0, 6000.0], "points": 3, "intake_pressure_kPa": 100.0,
+                                  "intake_temperature_C": 25.0, "exhaust_pressure_kPa": 105.0}}
+    breathing = run(validate(doc)).breathing
+    figures = [(kind, lambda t, make=make: make(breathing, t))
+               for kind, make in plots.ENGINE_FIGURES["breathing"].items()]
+    _all_texts_on_the_figures(figures)
+    cycle = breathing.conditions[0].columns
+    for lang in ("en", "ru"):
+        t = TEXT[lang]
+        linear, logs = plots.breathing_pv_figure(breathing, t).axes
+        assert (logs.get_xscale(), logs.get_yscale(), linear.get_xscale()) == ("log", "log", "linear")
+        for ax, title in ((linear, t["br_pv"]), (logs, t["br_log_pv"])):
+            (line,) = ax.get_lines()
+            assert np.array_equal(line.get_xdata(), cycle.volume * 1e6)
+            assert np.array_equal(line.get_ydata(), cycle.pressure * 1e-3) and ax.get_title() == title
+        efficiency, torque = plots.breathing_speed_figure(breathing, t).axes
+        assert list(efficiency.get_lines()[0].get_xdata()) == pytest.approx([2000.0, 4000.0, 6000.0])
+        assert list(efficiency.get_lines()[0].get_ydata()) == [r.figures.volumetric_efficiency
+                                                                for r in breathing.curve]
+        assert list(torque.get_lines()[0].get_ydata()) == pytest.approx([r.figures.torque for r in breathing.curve])
+        assert efficiency.get_ylabel().startswith(t["br_efficiency"].split(" η")[0]) and "η_{v}" in efficiency.get_ylabel()
+        assert torque.get_ylabel() == t["br_torque"]
+    assert re.search("[а-я]", TEXT["ru"]["br_log_pv"] + TEXT["ru"]["br_torque"])

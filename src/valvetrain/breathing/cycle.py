@@ -287,6 +287,27 @@ def _events(flow, theta):
     return closes, opens
 
 
+def _closed_cycle(engine, theta, steps) -> tuple[int, int]:
+    """The node indices of the intake valve's closing and the exhaust valve's opening about the firing TDC (node
+    ``steps // 2``): the intake's last closing before it and the exhaust's first opening after it (a valve that
+    bounces off its seat closes or opens more than once a cycle).
+
+    Raises
+    ------
+    BreathingError
+        A valve open at the firing TDC, or one that never closes or opens.
+    """
+    tdc = steps // 2
+    closes, opens = _events(engine.intake, theta)[0], _events(engine.exhaust, theta)[1]
+    before, after = closes[closes < tdc], opens[opens > tdc]
+    shut = all(sum(flow.areas(theta[tdc])) == 0.0 for flow in (engine.intake, engine.exhaust))
+    if not (before.size and after.size and shut):
+        said, done = (", ".join(f"{np.degrees(theta[i]):.4g}" for i in events) or "never" for events in (closes, opens))
+        raise BreathingError(f"the intake valve closes at {said} and the exhaust valve opens at {done} crank deg: "
+                             "the closed cycle must hold the firing TDC (360)")
+    return int(before[-1]), int(after[0])
+
+
 class BreathingError(InputError):
     """Inputs the breathing cannot integrate; the message names what and why."""
 
@@ -313,24 +334,16 @@ def _schedule(engine, condition, steps, fuel_air, heat_per_fuel):
     sched[kn.EXHAUST_OUT], sched[kn.EXHAUST_IN] = engine.exhaust.areas(theta)
     exchange = sched[kn.INTAKE_IN:kn.EXHAUST_IN + 1].sum(axis=0) > 0.0
     sched[kn.C1] = np.where(exchange, WOSCHNI_C1["gas_exchange"], WOSCHNI_C1["compression"])
-    ivc = _events(engine.intake, theta)[0]
-    evo = _events(engine.exhaust, theta)[1]
-    if ivc.size != 1 or evo.size != 1:
-        raise BreathingError(f"the intake valve closes {ivc.size} and the exhaust valve opens {evo.size} times a "
-                             "cycle; once each is needed")
-    ivc, evo = int(ivc[0]), int(evo[0])
-    if not ivc < steps // 2 < evo:
-        raise BreathingError(f"the intake valve closes at {np.degrees(theta[ivc]):.4g} and the exhaust valve opens at "
-                             f"{np.degrees(theta[evo]):.4g} crank deg: the closed cycle must hold the firing TDC (360)")
+    ivc, evo = _closed_cycle(engine, theta, steps)
     firing = engine.firing
     if firing is None:
         sched[kn.BURN] = (theta >= np.pi * 2.0 - 1e-12).astype(float)
     else:
         start, end = 2.0 * np.pi + firing.start, 2.0 * np.pi + firing.start + firing.duration
-        if not (theta[ivc] < start and end < theta[evo]):
+        if not (theta[ivc] < start and end < theta[evo]) or exchange[ivc:evo].any():
             raise BreathingError(f"combustion from {np.degrees(start):.4g} to {np.degrees(end):.4g} crank deg must lie "
                                  f"between the intake valve's closing ({np.degrees(theta[ivc]):.4g}) and the exhaust "
-                                 f"valve's opening ({np.degrees(theta[evo]):.4g})")
+                                 f"valve's opening ({np.degrees(theta[evo]):.4g}), both valves shut between them")
         x = wiebe_fraction(theta, firing, 2.0 * np.pi)
         sched[kn.BURN] = np.minimum(x / x[evo], 1.0)
         sched[kn.C2] = np.where((theta >= start) & (theta < theta[evo]), WOSCHNI_C2, 0.0)

@@ -10,19 +10,26 @@ rpm) are converted to SI for the physics functions.  Stages:
   ``dynamics_stage``, ``strength_stage`` (the drive parts over the speed range, on the dynamics stage's contact force
   where it ran), ``lubrication_stage`` (the cam contact's film and friction on the same load maps),
   ``lash_adjuster_stage`` (leak-down, refill, stiffness, pump-up; its oil column joins the dynamics' drive stiffness
-  and its plunger the train), ``valve_checks``, composed by ``design_valve``;
+  and its plunger the train), ``valve_checks``, composed by ``design_valve`` in two parts: ``valve_geometry`` (the
+  law, flow, profile and clearance stages, which no load on the drive changes, kept on ``ValveDesign.geometry``)
+  and ``driven_design`` (the drive and what follows it);
 * the crank mechanism (:mod:`.crank`): kinematics, forces and torque, multi-cylinder torque (Power units manual (n.d.));
 * two-stroke ports (:mod:`.twostroke`): timing, areas, time-area (Valve-train practical works (n.d.) work 8);
 * the whole camshaft (:mod:`.camshaft`, after the valves), the cam card (:mod:`.camcard`), the breathing
-  (:mod:`.breathing`: the valves' effective areas from the designed lifts or a measured table, the engine as
-  ``breathing.Engine``, the records per condition);
+  (:mod:`.breathing`: the valves' effective areas from the designed lifts, a measured table or, with
+  ``lift = "dynamics"``, each valve's ``[dynamics]`` train at each condition's speed; the engine as
+  ``breathing.Engine``, the records per condition); with ``[breathing]``, ``run`` gives each spring the breathing's
+  closed-valve gas load (``with_gas_load``: the drive stage again, and ``driven_design`` from the kept geometry only
+  where the springs change);
 * a cam phaser (:mod:`.phaser`, ``[valves.NAME.phaser]``, after the camshaft and the breathing): the events moved by
   the phase, the valve-to-piston gap at the range's ends, the breathing at every phase of the map with the phased
   side's effective areas shifted, the best phase per speed, the torque the phaser holds from the camshaft's drive
   torque;
 * a valve with a ``[hydraulic]`` section (:mod:`.hydraulic_actuation`) opens against the cylinder pressure of the
-  engine's cycle: ``run`` designs the valve without it, runs the crank stage (whose Wiebe cycle needs every valve's
-  timing) and adds the hydraulic stage after it (``with_hydraulic``);
+  engine's cycle: ``run`` designs the valve without it, runs the breathing and the crank stage (whose Wiebe cycle
+  needs every valve's timing) and adds the hydraulic stage after them (``with_hydraulic``: the breathing's cylinder
+  pressure at the hydraulic stage's speed with the port's pressure behind the valve head where it runs, else the
+  crank's);
 * recommended-range checks of every stage (warnings, never exceptions), ranked by severity and margin, with
   the acceptances of the specification (``[[accepted]]``) applied.
 
@@ -67,7 +74,7 @@ from .results import json_schema, quantity, record, shown_value
 from .twostroke import TwoStrokeResults, TwoStrokeSummary, two_stroke_stage
 from .valve import (THROAT_AREA_SHARE_RANGE, CamResult, ClearanceResult, FlowResult, ProfileResult, ValveDesign,
                     clearance_stage, design_valve, flow_stage, law_stage, overlap_clearance_checks, profile_stage,
-                    valve_checks, with_hydraulic)
+                    valve_checks, with_gas_load, with_hydraulic)
 
 __all__ = ["DesignResults", "ValveDesign", "breathing_view", "clearance_stage", "design_valve", "flow_stage", "law_stage",
            "profile_stage", "run", "sweep_designs", "valve_checks"]
@@ -235,8 +242,8 @@ def run(spec, laws=None, progress=None, headlines_only=False, diagnose=True, mem
         except SpecError as err:
             problems += err.problems
             continue
-        if spec.crank is not None and valve.hydraulic is not None:
-            waiting[name], valve = valve, replace(valve, hydraulic=None)   # opens against the cycle: after the crank
+        if (spec.crank is not None or spec.breathing is not None) and valve.hydraulic is not None:
+            waiting[name], valve = valve, replace(valve, hydraulic=None)   # opens against the cycle: after it
         try:
             tick = None if progress is None else (lambda done, total, name=name: progress(name, done, total))
             inputs = (valve, engine, gas, output, (laws or {}).get(name), headlines_only, diagnose)
@@ -260,22 +267,19 @@ def run(spec, laws=None, progress=None, headlines_only=False, diagnose=True, mem
             raise SpecError([Problem("crank.pressure_file", str(exc))]) from None
     breathing = (_breathing(spec, engine, crank_view, valves, views) if spec.breathing is not None else None)
     if breathing is not None:
-        for name, valve in views.items():   # the spring's gas load from the breathing's pressures: the drive anew
-            load = gas_opening_load(breathing, valve.kind, valve.throat_diameter)
-            # a hydraulic valve opens against the breathing's cylinder pressure (the crank's, which reads it, after)
-            cylinder = (cylinder_pressure(breathing, speed_plan(valve.hydraulic, engine)[0])
-                        if valve.hydraulic is not None and name not in waiting else None)
-            valves[name] = design_valve(name, replace(valve, hydraulic=None) if name in waiting else valve, engine,
-                                        gas, output, (laws or {}).get(name), cylinder=cylinder,
-                                        headlines_only=headlines_only, diagnose=diagnose, gas_load=load)
+        for name, valve in views.items():   # the spring's gas load from the breathing's pressures: what it changes
+            valves[name] = with_gas_load(valves[name], replace(valve, hydraulic=None), engine, gas, output,
+                                         gas_opening_load(breathing, valve.kind, valve.throat_diameter),
+                                         headlines_only, diagnose)
     breathed = None
     if breathing is not None and crank_view is not None and engine.strokes == 4:
         breathed = cylinder_pressure(breathing, crank_geometry_of(crank_view, engine)[3])
     crank = crank_stage(crank_view, engine, valve_timing(valves), breathed) if crank_view is not None else None
-    if waiting:
-        cylinder = CylinderPressure(crank.phi, crank.columns.p_abs, crank.pressure_source)
-        for name, valve in waiting.items():
-            valves[name] = with_hydraulic(valves[name], valve, engine, gas, cylinder)
+    for name, valve in waiting.items():     # a hydraulic valve opens against the cylinder pressure
+        cylinder = (cylinder_pressure(breathing, speed_plan(valve.hydraulic, engine)[0], valve.kind)
+                    if breathing is not None
+                    else CylinderPressure(crank.phi, crank.columns.p_abs, crank.pressure_source))
+        valves[name] = with_hydraulic(valves[name], valve, engine, gas, cylinder)
     found = [c for v in valves.values() for c in v.checks] + overlap_clearance_checks(valves) + engine_checks(spec)
     if {v.kind for v in valves.values()} == {"intake", "exhaust"}:
         share = sum(v.count * v.flow.throat_area for v in valves.values())

@@ -1,7 +1,7 @@
 """Breathing stage: the gas exchange of the engine's cylinders through the designed (or measured) valves, converged
 over cycles at each condition of ``[breathing]`` (:mod:`valvetrain.breathing`)."""
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import cached_property
 from typing import Any
 
@@ -9,12 +9,13 @@ import numpy as np
 
 from ..breathing import (BreathingError, CdTable, Condition, Cylinder, Engine, Firing, Plenum, Runner, ValveFlow,
                          breathe)
-from ..breathing.cycle import MAX_WORK, BreathingRecord, BreathingResult, work
+from ..breathing.cycle import CYCLE, MAX_WORK, BreathingRecord, BreathingResult, work
 from ..breathing.valves import DEFAULT_CD, default_areas, effective_areas
 from ..springs import gas_opening_force
 from ..checks import Check, check
 from ..units import MM, to_display
-from .hydraulic_actuation import CylinderPressure
+from .dynamics import valve_motion
+from .hydraulic_actuation import CylinderPressure, cycle_angle
 from .results import quantity, record
 from .valve import CYCLE_CRANK
 
@@ -42,7 +43,7 @@ class BreathingSummary:
 class BreathingResults:
     """The breathing chapter: the engine as the physics sees it, each condition's and each curve point's result."""
 
-    engine: Engine
+    engines: tuple[Engine, ...]     # one a condition, then one a curve speed (:func:`breathing_engine`)
     conditions: tuple[BreathingResult, ...]
     curve: tuple[BreathingResult, ...]
     figures: BreathingSummary
@@ -74,7 +75,42 @@ def _designed_lift(valve):
     return np.interp(GRID, angle[keep], valve.cycle_lift[order][keep], period=4.0 * np.pi)
 
 
-def valve_flow(side, kind, valves, views) -> tuple[ValveFlow, str, str]:
+def dynamic_lift(name, design, view, engine, speeds, kind) -> np.ndarray:
+    """The lift [m] on :data:`GRID` of the valve ``name`` moved by its ``[dynamics]`` train at each engine speed of
+    ``speeds`` [rad/s] (one row a speed): :func:`~valvetrain.design.dynamics.valve_motion`'s steady revolution, the
+    camshaft angle theta from the nose at the crank angle nose + theta / (camshaft revolutions per crank revolution),
+    a valve pressed into its seat shut (lift 0).
+
+    Parameters
+    ----------
+    name : str
+    design : ValveDesign
+        The designed valve (its cam, nose and drive).
+    view : SI view of ``[valves.NAME]`` with its ``dynamics`` section
+    engine : SI view of ``[engine]``
+    speeds : array_like
+        Engine speeds [rad/s].
+    kind : {"intake", "exhaust"}
+        Its side (``breathing.KIND.lift`` is named where the sweep is too large).
+
+    Returns
+    -------
+    ndarray (len(speeds), GRID.size)
+
+    Notes
+    -----
+    The train is the valve's as designed before the breathing: its spring that of ``[gas]``'s closed-valve gas
+    load.  ``run`` then gives the spring the breathing's gas load (:func:`gas_opening_load`); the lift and that load
+    are not iterated (one pass), which changes the lift only where the breathing's load changes the spring.
+    """
+    motion = valve_motion(view.dynamics, view, engine, design.law, design.drive, speeds, f"valves.{name}",
+                          f"breathing.{kind}.lift")
+    crank = cycle_angle(design.nose_crank, motion.theta, engine.strokes)
+    order = np.argsort(crank, kind="stable")
+    return np.array([np.interp(GRID, crank[order], np.clip(y[order], 0.0, None), period=CYCLE) for y in motion.lift])
+
+
+def valve_flow(side, kind, valves, views, engine=None, speeds=()) -> tuple[tuple[ValveFlow, ...], str, str]:
     """One side's effective areas over the cycle and the words of where its lift and discharge come from.
 
     Parameters
@@ -84,11 +120,17 @@ def valve_flow(side, kind, valves, views) -> tuple[ValveFlow, str, str]:
     valves : dict
         The designed valves (``name -> ValveDesign``).
     views : dict
-        Their SI views (``name -> view``: the throat and the seat of the flow section).
+        Their SI views (``name -> view``: the throat and the seat of the flow section, the ``[dynamics]``).
+    engine : SI view of [engine], optional
+        Needed with ``lift = "dynamics"``.
+    speeds : sequence of float
+        The engine speeds [rad/s] of the conditions, in order (``lift = "dynamics"``: a flow at each).
 
     Returns
     -------
-    (ValveFlow, str, str)
+    (tuple of ValveFlow, str, str)
+        One flow, the same at every speed (a designed or measured lift), or one at each of ``speeds``
+        (``lift = "dynamics"``).
     """
     table = None
     if side.cd is not None:
@@ -98,39 +140,51 @@ def valve_flow(side, kind, valves, views) -> tuple[ValveFlow, str, str]:
                      f"{side.cd_diameter / MM:g} mm")
     else:
         discharge = f"C_D = {DEFAULT_CD:g} on the flow section, at most the throat (assumed, no measured table)"
-    if side.lift is not None:
-        lifts = [(_on_grid(*side.lift), side.valves, None)]
+
+    def counted(v):
+        return f"{v.count} valve{'s' if v.count > 1 else ''}"
+
+    these = [(name, v) for name, v in valves.items() if v.kind == kind]
+    if side.measured_lift is not None:
+        lifts = [(_on_grid(*side.measured_lift), side.valves, None)]
         source = f"measured, {side.section.lift_file}, {side.valves} valve{'s' if side.valves > 1 else ''}"
+    elif side.lift == "dynamics":
+        lifts = [(dynamic_lift(name, v, views[name], engine, speeds, kind), v.count, views[name]) for name, v in these]
+        source = "dynamic: " + ", ".join(f"{name} ({v.law.name}, {counted(v)}), the valve's motion of its [dynamics] "
+                                         f"{views[name].dynamics.model} train at each speed" for name, v in these)
     else:
-        these = [(name, v) for name, v in valves.items() if v.kind == kind]
         lifts = [(_designed_lift(v), v.count, views[name]) for name, v in these]
-        source = "designed: " + ", ".join(f"{name} ({v.law.name}, {v.count} valve{'s' if v.count > 1 else ''})"
-                                          for name, v in these)
-    forward, reverse = np.zeros_like(GRID), np.zeros_like(GRID)
+        source = "designed: " + ", ".join(f"{name} ({v.law.name}, {counted(v)})" for name, v in these)
+    forward = reverse = 0.0
     for lift, count, valve in lifts:
         if table is not None:
             f, r = effective_areas(lift, table)
         else:
             f = r = default_areas(lift, valve.throat_diameter, valve.seat_angle)
-        forward += count * f
-        reverse += count * r
-    return ValveFlow(GRID, forward, reverse), source, discharge
+        forward, reverse = forward + count * f, reverse + count * r
+    forward, reverse = np.atleast_2d(forward), np.atleast_2d(reverse)
+    return tuple(ValveFlow(GRID, f, r) for f, r in zip(forward, reverse, strict=True)), source, discharge
 
 
-def breathing_engine(b, engine, crank, valves, views) -> tuple[Engine, tuple[str, str, str, str]]:
-    """The engine as the breathing sees it, from the SI views of [breathing], [engine] and [crank] (None) and the
-    designed valves with their SI views; and the words of each side's lift and discharge.
+def breathing_engine(b, engine, crank, valves, views, conditions
+                     ) -> tuple[tuple[Engine, ...], tuple[str, str, str, str]]:
+    """The engine as the breathing sees it at each of ``conditions`` (the physics' conditions of [breathing] and the
+    speeds of its curve, in order: :func:`breathing_conditions`), from the SI views of [breathing], [engine] and
+    [crank] (None) and the designed valves with their SI views; and the words of each side's lift and discharge.
 
     Returns
     -------
-    (valvetrain.breathing.Engine, tuple of str)
+    (tuple of valvetrain.breathing.Engine, tuple of str)
+        The engines differ only in a side whose lift is dynamic (``lift = "dynamics"``: its valves' motion at the
+        condition's speed).
     """
     rod = crank.rod_length if crank is not None and crank.rod_length is not None else engine.rod_length
     ratio = b.compression_ratio if b.compression_ratio is not None else crank.compression_ratio
     offset = crank.offset if crank is not None else 0.0
     cylinder = Cylinder(engine.bore, engine.stroke, rod, ratio, offset)
-    (intake, in_lift, in_cd), (exhaust, ex_lift, ex_cd) = (valve_flow(getattr(b, kind), kind, valves, views)
-                                                           for kind in ("intake", "exhaust"))
+    speeds = [c.speed for c in conditions]
+    (intake, in_lift, in_cd), (exhaust, ex_lift, ex_cd) = (
+        valve_flow(getattr(b, kind), kind, valves, views, engine, speeds) for kind in ("intake", "exhaust"))
     runners = [None if s.runner_length is None else Runner(s.runner_length, s.runner_diameter, b.cell)
                for s in (b.intake, b.exhaust)]
     firing = None
@@ -138,8 +192,11 @@ def breathing_engine(b, engine, crank, valves, views) -> tuple[Engine, tuple[str
         cy = crank.cycle
         firing = Firing(b.fuel, b.equivalence_ratio, cy.combustion_start, cy.combustion_duration, cy.wiebe_a,
                         cy.wiebe_m, b.combustion_efficiency)
-    described = Engine(cylinder, intake, exhaust, *runners, b.heat_transfer == "woschni", firing, engine.cylinders)
-    return described, (in_lift, ex_lift, in_cd, ex_cd)
+    described = Engine(cylinder, intake[0], exhaust[0], *runners, b.heat_transfer == "woschni", firing,
+                       engine.cylinders)
+    engines = tuple(replace(described, intake=intake[i % len(intake)], exhaust=exhaust[i % len(exhaust)])
+                    for i in range(len(speeds)))
+    return engines, (in_lift, ex_lift, in_cd, ex_cd)
 
 
 def condition_of(state, speed, b) -> Condition:
@@ -155,12 +212,15 @@ def curve_speeds(curve) -> np.ndarray:
     return np.linspace(curve.speed_range[0], curve.speed_range[1], curve.points)
 
 
-def breathing_records(engine, conditions, tolerance, max_cycles, curve=False) -> tuple[BreathingResult, ...]:
-    """The breathing of ``engine`` at each condition (:func:`valvetrain.breathing.breathe`), in order: the pure
-    function from a design's engine to its per-speed results (the designer redraws its curve with it).  A ``curve``
-    (one plenum state at increasing speeds) starts each speed from the previous one's converged state."""
+def breathing_records(engines, conditions, tolerance, max_cycles, curve=False) -> tuple[BreathingResult, ...]:
+    """The breathing of ``engines`` (one :class:`~valvetrain.breathing.Engine`, or one a condition) at each condition
+    (:func:`valvetrain.breathing.breathe`), in order: the pure function from a design's engine to its per-speed
+    results (the designer redraws its curve with it).  A ``curve`` (one plenum state at increasing speeds) starts each
+    speed from the previous one's converged state."""
+    if isinstance(engines, Engine):
+        engines = [engines] * len(conditions)
     out, state = [], None
-    for c in conditions:
+    for engine, c in zip(engines, conditions, strict=True):
         out.append(breathe(engine, c, tolerance, max_cycles, state))
         state = out[-1].state if curve else None
     return tuple(out)
@@ -174,24 +234,25 @@ def breathing_conditions(b) -> tuple[list[Condition], list[Condition]]:
     return given, swept
 
 
-def breathe_conditions(described, b, given, swept) -> tuple[tuple[BreathingResult, ...], tuple[BreathingResult, ...]]:
-    """The breathing of ``described`` at the conditions ``given`` (each from the plenums' state) and along the curve
-    ``swept`` (each speed from the previous one's converged state) with the tolerance and the cycles of [breathing]
-    ``b``: what the chapter and a cam synthesis by the breathing compute alike.
+def breathe_conditions(engines, b, given, swept) -> tuple[tuple[BreathingResult, ...], tuple[BreathingResult, ...]]:
+    """The breathing of ``engines`` (:func:`breathing_engine`: one a condition of ``given``, then one a speed of
+    ``swept``) at the conditions ``given`` (each from the plenums' state) and along the curve ``swept`` (each speed
+    from the previous one's converged state) with the tolerance and the cycles of [breathing] ``b``: what the chapter
+    and a cam synthesis by the breathing compute alike.
 
     Raises
     ------
     BreathingError
         More work than :data:`~valvetrain.breathing.cycle.MAX_WORK` asked for (refused before it runs).
     """
-    asked = sum(work(described, c, b.max_cycles) for c in given + swept)
+    asked = sum(work(e, c, b.max_cycles) for e, c in zip(engines, given + swept, strict=True))
     if asked > MAX_WORK:
         raise BreathingError(f"{len(given)} conditions and {len(swept)} curve speeds at up to {b.max_cycles} cycles "
                              f"of the runners' cells (cell_mm = {b.cell / MM:g}) ask for {asked:.3g} cell-steps; "
                              f"allowed at most {MAX_WORK:.3g} (about half a minute): fewer conditions or curve points, "
                              "a coarser cell_mm, fewer max_cycles or higher speeds")
-    return (breathing_records(described, given, b.cycle_tolerance, b.max_cycles),
-            breathing_records(described, swept, b.cycle_tolerance, b.max_cycles, curve=True))
+    return (breathing_records(engines[:len(given)], given, b.cycle_tolerance, b.max_cycles),
+            breathing_records(engines[len(given):], swept, b.cycle_tolerance, b.max_cycles, curve=True))
 
 
 def speed_mean(results, name) -> float:
@@ -204,25 +265,34 @@ def breathing_stage(b, engine, crank, valves, views) -> BreathingResults:
     """Run the breathing chapter: ``b``, ``engine`` and ``crank`` are the SI views of [breathing], [engine] and
     [crank] (or None), ``valves`` the designed valves and ``views`` their SI views; returns
     :class:`BreathingResults`."""
-    described, words = breathing_engine(b, engine, crank, valves, views)
-    conditions, curve = breathe_conditions(described, b, *breathing_conditions(b))
+    given, swept = breathing_conditions(b)
+    engines, words = breathing_engine(b, engine, crank, valves, views, given + swept)
+    conditions, curve = breathe_conditions(engines, b, given, swept)
     found = [check("breathing.cycle_change", r.figures.cycle_change, high=b.cycle_tolerance,
                    source="the cycles repeat (Heywood (1988), chapter 14: a cycle simulation runs until its state "
                           "repeats)", params={"speed": f"{to_display(r.figures.speed, 'rpm'):.5g}"})
              for r in conditions + curve if not r.converged]
     figures = BreathingSummary(b.mode, *words, tuple(r.figures for r in conditions), tuple(r.figures for r in curve))
-    return BreathingResults(described, conditions, curve, figures, tuple(found))
+    return BreathingResults(engines, conditions, curve, figures, tuple(found))
 
 
-def cylinder_pressure(results, speed) -> CylinderPressure:
+def _ports(columns, kind) -> np.ndarray:
+    """The pressure at the ``kind`` side's valves over the converged cycle [Pa]: the runner's last cell (the plenum's
+    without a runner)."""
+    return columns.intake_port if kind == "intake" else columns.exhaust_port
+
+
+def cylinder_pressure(results, speed, kind=None) -> CylinderPressure:
     """The cylinder pressure of the breathing's converged cycle whose speed is nearest ``speed`` [rad/s] (the
     conditions first, then the curve), for the chapters that read the cylinder pressure (the crank's torque, the
-    hydraulic valve's gas force), with the words of its source."""
+    hydraulic valve's gas force), with the words of its source; with ``kind`` ("intake" or "exhaust") also the
+    pressure at that side's valves (the port behind the valve head)."""
     chosen = min((*results.conditions, *results.curve), key=lambda r: abs(r.figures.speed - speed))
-    f = chosen.figures
-    return CylinderPressure(chosen.columns.angle, chosen.columns.pressure,
+    f, c = chosen.figures, chosen.columns
+    return CylinderPressure(c.angle, c.pressure,
                             f"the breathing's converged {results.figures.mode} cycle at {to_display(f.speed, 'rpm'):.5g} "
-                            f"rpm, intake plenum {f.intake_pressure / 1e3:.5g} kPa")
+                            f"rpm, intake plenum {f.intake_pressure / 1e3:.5g} kPa",
+                            None if kind is None else _ports(c, kind))
 
 
 def gas_opening_load(results, kind, diameter) -> tuple[float, str]:
@@ -253,17 +323,17 @@ def gas_opening_load(results, kind, diameter) -> tuple[float, str]:
     Valve-train practical works (n.d.), work 5, eqs. (5.4), (5.5).
     """
     best = None
-    for r in (*results.conditions, *results.curve):
+    for engine, r in zip(results.engines, (*results.conditions, *results.curve), strict=True):
         c = r.columns
-        forward, reverse = getattr(results.engine, kind).areas(c.angle)
-        port = c.intake_port if kind == "intake" else c.exhaust_port
+        forward, reverse = getattr(engine, kind).areas(c.angle)
+        port = _ports(c, kind)
         difference = np.where((forward == 0.0) & (reverse == 0.0), port - c.pressure, -np.inf)
         i = int(np.argmax(difference))
         if best is None or difference[i] > best[0]:
             best = (difference[i], r, i)
     _, r, i = best
     c = r.columns
-    port = (c.intake_port if kind == "intake" else c.exhaust_port)[i]
+    port = _ports(c, kind)[i]
     force = gas_opening_force(diameter, port, c.pressure[i])
     return force, (f"the breathing's converged {results.figures.mode} cycles: the largest (p_port - p_cyl) on the shut "
                    f"valve, {port / 1e3:.4g} - {c.pressure[i] / 1e3:.4g} kPa at {to_display(r.figures.speed, 'rpm'):.5g} "

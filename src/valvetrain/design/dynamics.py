@@ -761,6 +761,52 @@ def swept_range(dyn, engine) -> tuple[float, float]:
     return tuple(dyn.speed_range)
 
 
+def refuse_large_sweep(dyn, train, cam_speeds, revs, key, asked) -> None:
+    """Refuse a sweep of ``train`` at ``cam_speeds`` [rad/s] for ``revs`` revolutions at the step of ``[dynamics]``
+    ``dyn`` estimated above :data:`MAX_SWEEP_WORK` or :data:`MAX_SWEEP_BYTES` without ``allow_large_sweep``: a
+    :class:`SpecError` under ``key`` that says what ``asked`` for it (``"speeds = 200"``)."""
+    step_deg = dyn.step / DEG
+    work, size = sweep_size(train.network(), cam_speeds, revs, step_deg)
+    if not dyn.allow_large_sweep and (work > MAX_SWEEP_WORK or size > MAX_SWEEP_BYTES):
+        raise SpecError([Problem(key, f"{asked} x revolutions = {revs} at step_cam_deg = {step_deg:g} is about "
+                                 f"{work:.3g} integrator steps x elements (allowed {MAX_SWEEP_WORK:.3g}) and "
+                                 f"{size / 1e6:.0f} MB of recorded revolutions (allowed "
+                                 f"{MAX_SWEEP_BYTES / 1e6:.0f} MB); fewer speeds or revolutions or a larger step, or "
+                                 "allow_large_sweep = true to run it")])
+
+
+def valve_motion(dyn, valve, engine, law, drive, speeds, at, key) -> SweepResult:
+    """The motion of a valve's ``[dynamics]`` train at each engine speed of ``speeds`` [rad/s], the train built as
+    :func:`dynamics_stage` builds it: one :func:`~valvetrain.dynamics.sweep.sweep`, each speed integrated until its
+    revolution repeats (its last revolution recorded), with the drive's deflection, the follower's separation and the
+    valve's bounce.
+
+    Parameters
+    ----------
+    dyn, valve, engine : SI views of ``[valves.NAME.dynamics]``, the valve and the engine.
+    law : LiftLaw
+        The valve's cam.
+    drive : DriveResults
+        The drive stage (reduced mass, designed spring).
+    speeds : array_like
+        Engine speeds [rad/s].
+    at : str
+        The valve's key (``valves.NAME``: a train that cannot be built).
+    key : str
+        The key that asks for the speeds, named where the sweep is too large (:func:`refuse_large_sweep`).
+
+    Returns
+    -------
+    SweepResult
+        Camshaft speeds and angles [rad from the nose]; ``lift`` per speed [m].
+    """
+    to_cam = cam_per_crank(engine.strokes)
+    train, params = build_train(dyn, valve, law, drive, at, engine.rated_speed * to_cam)
+    cam_speeds = np.asarray(speeds, dtype=float) * to_cam
+    refuse_large_sweep(dyn, train, cam_speeds, params.revolutions, key, f"{cam_speeds.size} speeds")
+    return sweep(law, train, cam_speeds, params.revolutions, dyn.step / DEG)
+
+
 def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, cam=None,
                    load_range=None) -> tuple[DynamicsResult, list[Check]]:
     """Sweep the elastic train of a valve over its speed range and simulate the rated speed.
@@ -812,13 +858,7 @@ def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, 
     speeds = np.linspace(low, high, dyn.speeds)
     step_deg = dyn.step / DEG
     revs = params.revolutions
-    work, size = sweep_size(train.network(), speeds * to_cam, revs, step_deg)
-    if not dyn.allow_large_sweep and (work > MAX_SWEEP_WORK or size > MAX_SWEEP_BYTES):
-        raise SpecError([Problem(f"{at}.dynamics", f"speeds = {dyn.speeds} x revolutions = {revs} at "
-                                 f"step_cam_deg = {step_deg:g} is about {work:.3g} integrator steps x elements (allowed "
-                                 f"{MAX_SWEEP_WORK:.3g}) and {size / 1e6:.0f} MB of recorded revolutions (allowed "
-                                 f"{MAX_SWEEP_BYTES / 1e6:.0f} MB); fewer speeds or revolutions or a larger step, or "
-                                 "allow_large_sweep = true to run it")])
+    refuse_large_sweep(dyn, train, speeds * to_cam, revs, f"{at}.dynamics", f"speeds = {dyn.speeds}")
     if load_range is not None and dyn.model == "1dof":
         result = headline_sweep(law, train, speeds * to_cam, revs, step_deg,
                                 load_range=tuple(s * to_cam for s in load_range),
@@ -1085,6 +1125,6 @@ def sweep_columns(d) -> dict[str, list]:
 
 __all__ = ["CHECK_CODES", "DynamicsParameters", "DynamicsResult", "Mode", "PerSpeed", "ResonanceRecord", "SWEEP_COLUMNS",
            "SpeedRecord", "SpeedRecords", "build_train", "drive_links", "dynamics_checks", "dynamics_stage",
-           "finite_or_none", "rated_contact",
+           "finite_or_none", "rated_contact", "refuse_large_sweep",
            "speed_record", "speed_records", "swept_range",
-           "sweep_columns"]
+           "sweep_columns", "valve_motion"]

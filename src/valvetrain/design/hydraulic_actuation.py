@@ -93,12 +93,26 @@ class CylinderPressure:
     pressure : ndarray
         Absolute cylinder pressure [Pa].
     source : str
-        Where the pressure comes from (an indicator diagram, the Wiebe model).
+        Where the pressure comes from (an indicator diagram, the Wiebe model, the breathing).
+    port : ndarray, optional
+        Absolute pressure behind the valve head over the same angles [Pa] (the breathing's port at the valve); None:
+        ``[gas]``'s constant port pressure (:func:`head_load`).
     """
 
     angle: np.ndarray
     pressure: np.ndarray
     source: str
+    port: Optional[np.ndarray] = None
+
+    def head_force(self, phi, diameter, port, strokes) -> np.ndarray:
+        """The gas force on a valve head of ``diameter`` [m] towards its seat at cycle angles ``phi`` [rad]: (p_cyl -
+        p_port) pi d^2 / 4 [N], p_port this cycle's :attr:`port` or else the constant ``port`` [Pa]."""
+        return (on_grid(self.angle, self.pressure, phi, strokes) - self.port_pressure(phi, port, strokes)) * \
+            circle_area(diameter)
+
+    def port_pressure(self, phi, port, strokes) -> np.ndarray:
+        """The pressure behind the valve head at cycle angles ``phi`` [rad]: :attr:`port` there, else ``port`` [Pa]."""
+        return port if self.port is None else on_grid(self.angle, self.port, phi, strokes)
 
 
 @dataclass(frozen=True)
@@ -268,12 +282,13 @@ def hydraulic_stage(valve, law, engine, gas, name, nose, cylinder=None) -> tuple
     Notes
     -----
     The gas force on the valve head is F = (p_cyl(phi) - p_port) pi d^2 / 4 at the cycle angle phi = nose + 2 theta
-    (four-stroke), towards the seat; the pressure of an open valve's head is taken as that of the cylinder (no
-    flow forces).  The stop lies at the rigid drive's largest lift plus ``stop_margin_mm`` (default
-    :data:`STOP_MARGIN` of that lift).  Failures, at the simulated speed and every swept speed up to the over-speed:
-    the valve's largest lift below :data:`DELAY_LEVEL` of the rigid drive's (it does not open); the valve reaches its
-    stop; the valve is more than the bounce tolerance (1 um) above its seat at the end of the
-    revolution, where the plunger is about to lift again; a fill pressure above :func:`lift_off_pressure`.
+    (four-stroke), towards the seat, p_port the port's of ``[gas]`` or, where the breathing gives the cycle, the
+    breathing's at the valve at that angle (:meth:`CylinderPressure.head_force`); the pressure of an open valve's head
+    is taken as that of the cylinder (no flow forces).  The stop lies at the rigid drive's largest lift plus
+    ``stop_margin_mm`` (default :data:`STOP_MARGIN` of that lift).  Failures, at the simulated speed and every swept
+    speed up to the over-speed: the valve's largest lift below :data:`DELAY_LEVEL` of the rigid drive's (it does not
+    open); the valve reaches its stop; the valve is more than the bounce tolerance (1 um) above its seat at the end
+    of the revolution, where the plunger is about to lift again; a fill pressure above :func:`lift_off_pressure`.
 
     References
     ----------
@@ -303,8 +318,7 @@ def hydraulic_stage(valve, law, engine, gas, name, nose, cylinder=None) -> tuple
                      "pressure_file or [crank.cycle])")
     else:
         def force(theta):
-            phi = cycle_angle(nose, theta, engine.strokes)
-            return (on_grid(cylinder.angle, cylinder.pressure, phi, engine.strokes) - port) * circle_area(diameter)
+            return cylinder.head_force(cycle_angle(nose, theta, engine.strokes), diameter, port, engine.strokes)
     r = simulate(law, drive, speed * to_cam, gas_force=force)
     sw = speed_sweep(law, drive, speeds * to_cam, DELAY_LEVEL, gas_force=force)
     opening, closing = r.delays(DELAY_LEVEL)
@@ -345,6 +359,8 @@ def _gas_record(r, free, drive, cylinder, diameter, port, nose, strokes):
     opened = i < r.angle.size
     phi = float(cycle_angle(nose, r.angle[i], strokes)) if opened else None
     force = float(r.gas_force[i]) if opened else None
+    if cylinder.port is not None:       # the breathing's port: at the lift-off (its cycle's mean if none)
+        port = float(np.mean(cylinder.port) if phi is None else cylinder.port_pressure(phi, port, strokes))
     return GasForceRecord(
         cylinder.source, diameter, port, phi,
         None if phi is None else float(on_grid(cylinder.angle, cylinder.pressure, phi, strokes)), force,

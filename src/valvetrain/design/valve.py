@@ -721,6 +721,7 @@ class ValveDesign:
     hydraulic: Optional[HydraulicResult] = None     # with a [hydraulic] section
     lubrication: Optional[LubricationResult] = None        # with a [lubrication] section
     lash_adjuster: Optional[LashAdjusterResult] = None     # with a [lash_adjuster] section
+    geometry: Optional["ValveGeometry"] = field(default=None, repr=False, compare=False)  # before the drive
 
     @property
     def warnings(self) -> list[Check]:
@@ -812,6 +813,35 @@ def design_valve(name, valve, engine, gas, output, law=None, progress=None, cyli
     SpecError
         Inputs that admit no design, each message naming the valve's keys.
     """
+    geometry = valve_geometry(name, valve, engine, output, law)
+    try:
+        drive = drive_stage(valve, gas, geometry.cam, diagnose, gas_load)
+    except NoSpringFits as exc:
+        raise SpecError([Problem(f"valves.{name}.spring", str(exc))]) from None
+    return driven_design(name, valve, engine, gas, output, geometry, drive, progress, cylinder, headlines_only)
+
+
+@dataclass(frozen=True, repr=False)
+class ValveGeometry:
+    """What a valve's design computes before its drive, which no load on the drive changes: the law stage, the flow,
+    the profile, the piston clearance, the law's own records and the checks of the law's section."""
+
+    cam: CamResult
+    flow: FlowResult
+    profile: ProfileResult
+    clearance: Optional[ClearanceResult]
+    records: LawRecord
+    checks: tuple[Check, ...]
+
+
+def valve_geometry(name, valve, engine, output, law=None) -> ValveGeometry:
+    """The stages of one valve before its drive: :func:`design_valve`'s first part (parameters as there).
+
+    Raises
+    ------
+    SpecError
+        A cam the law cannot make or a piston clearance that cannot be computed, naming the valve's keys.
+    """
     at = f"valves.{name}"
     try:
         cam = law_stage(valve, engine, law)
@@ -823,13 +853,27 @@ def design_valve(name, valve, engine, gas, output, law=None, progress=None, cyli
         clearance = clearance_stage(cam, valve, engine)
     except ValueError as exc:
         raise SpecError([Problem(at, str(exc))]) from None
-    section = valve.cam.section
-    records, found = section.records(cam.law, valve, engine, cam.nose)
-    try:
-        drive = drive_stage(valve, gas, cam, diagnose, gas_load)
-    except NoSpringFits as exc:
-        raise SpecError([Problem(f"{at}.spring", str(exc))]) from None
-    found += valve_checks(cam, flow_result, profile, valve, engine, section.timing(valve, records)) + list(drive.checks)
+    records, found = valve.cam.section.records(cam.law, valve, engine, cam.nose)
+    return ValveGeometry(cam, flow_result, profile, clearance, records, tuple(found))
+
+
+def driven_design(name, valve, engine, gas, output, geometry, drive, progress=None, cylinder=None,
+                  headlines_only=False) -> ValveDesign:
+    """A valve's design from its geometry (:func:`valve_geometry`) and its drive stage (:func:`drive_stage`): the
+    checks, the dynamics, the strength, the lubrication, the lash adjuster, the grinding and the hydraulic drive,
+    :func:`design_valve`'s second part (parameters as there).
+
+    Raises
+    ------
+    SpecError
+        Inputs that admit no design, each message naming the valve's keys.
+    """
+    at = f"valves.{name}"
+    cam, flow_result, profile, clearance, records = (geometry.cam, geometry.flow, geometry.profile, geometry.clearance,
+                                                     geometry.records)
+    found = list(geometry.checks)
+    found += valve_checks(cam, flow_result, profile, valve, engine, valve.cam.section.timing(valve, records))
+    found += list(drive.checks)
     found += mass_checks(valve, drive.masses.at_valve, flow_result.throat_area)
     if clearance is not None:
         found.append(clearance_check(valve.kind, clearance.min_gap, clearance.angle))
@@ -859,8 +903,41 @@ def design_valve(name, valve, engine, gas, output, law=None, progress=None, cyli
         found += grinding_found
     design = ValveDesign(name, valve.kind, valve.count, cam, flow_result, profile, clearance, records, drive,
                          tuple(c.of_valve(name) for c in found), dynamics, grinding, lubrication=lubrication,
-                         lash_adjuster=adjuster)
+                         lash_adjuster=adjuster, geometry=geometry)
     return with_hydraulic(design, valve, engine, gas, cylinder)
+
+
+
+
+def with_gas_load(design, valve, engine, gas, output, gas_load, headlines_only=False, diagnose=True) -> ValveDesign:
+    """The design with the spring's closed-valve gas load ``gas_load`` ((N, source), the breathing's): the drive
+    stage anew and, where its springs, lines or masses change, what depends on them (the dynamics, the strength, the
+    lubrication, the lash adjuster: :func:`driven_design`); the cam, the flow, the profile, the clearance and the
+    law's records (:attr:`ValveDesign.geometry`, :func:`valve_geometry`) as they are.  Where the springs stay (the
+    gas load below the line the inertia asks for), only the spring's record of its gas load changes.  The valve's
+    ``[hydraulic]`` stage is not run (``valve`` without it: the caller adds it with its cylinder pressure).
+
+    Raises
+    ------
+    SpecError
+        No spring fits the new load; inputs that admit no design, each message naming the valve's keys.
+    """
+    geometry = design.geometry
+    try:
+        drive = drive_stage(valve, gas, geometry.cam, diagnose, gas_load)
+    except NoSpringFits as exc:
+        raise SpecError([Problem(f"valves.{design.name}.spring", str(exc))]) from None
+    old = design.drive
+    if (drive.lines, drive.masses, drive.checks) == (old.lines, old.masses, old.checks[:len(drive.checks)]) and \
+            _same_springs(drive.spring, old.spring):
+        return replace(design, drive=replace(old, spring=drive.spring))
+    return driven_design(design.name, valve, engine, gas, output, geometry, drive, headlines_only=headlines_only)
+
+
+def _same_springs(a, b) -> bool:
+    """Two :class:`SpringResult` of the same springs: equal but for the gas load and where it comes from."""
+    gas = ("preload_set_by_gas_force", "gas_force", "gas_force_source", "preload_set_by_seat_load")
+    return replace(a, **{k: getattr(b, k) for k in gas}) == b
 
 
 def _stage_problem(exc, prefix) -> Problem:
@@ -895,5 +972,6 @@ def with_hydraulic(design, valve, engine, gas, cylinder=None) -> ValveDesign:
 
 
 __all__ = ["CamResult", "ClearanceResult", "FingerKinematics", "FlowResult", "LiftTable", "ProfileResult", "StepRecord", "ValveDesign",
-           "clearance_check", "clearance_stage", "design_valve", "finger_kinematics", "flow_stage", "follower_accelerations", "follower_travel_acceleration", "law_stage", "layout_check", "mass_checks",
-           "overlap_clearance_checks", "profile_stage", "step_records", "valve_checks", "with_hydraulic", "wrap_crank"]
+           "ValveGeometry", "clearance_check", "clearance_stage", "design_valve", "driven_design", "finger_kinematics", "flow_stage", "follower_accelerations", "follower_travel_acceleration", "law_stage", "layout_check", "mass_checks",
+           "overlap_clearance_checks", "profile_stage", "step_records", "valve_checks", "valve_geometry", "with_gas_load", "with_hydraulic",
+           "wrap_crank"]

@@ -408,6 +408,10 @@ NAMES = {
     "breathing.cell": ("longest cell of the runners", "наибольшая ячейка трубопроводов"),
     "breathing.cycle_tolerance": ("relative change at which the cycles repeat", "относительное изменение, при котором циклы повторяются"),
     "breathing.max_cycles": ("most cycles", "наибольшее число циклов"),
+    "intake.lift": ("intake valves' lift: designed or by the dynamics",
+                    "подъём впускных клапанов: расчётный или по динамике привода"),
+    "exhaust.lift": ("exhaust valves' lift: designed or by the dynamics",
+                     "подъём выпускных клапанов: расчётный или по динамике привода"),
     "intake.lift_file": ("file of the intake valve's lift", "файл подъёма впускного клапана"),
     "exhaust.lift_file": ("file of the exhaust valve's lift", "файл подъёма выпускного клапана"),
     "intake.valves": ("intake valves", "число впускных клапанов"), "exhaust.valves": ("exhaust valves", "число выпускных клапанов"),
@@ -472,6 +476,8 @@ VALUES = {
     "motored": "прокрутка", "fired": "рабочий цикл", "woschni": "по Вошни", "adiabatic": "нет (адиабатные стенки)",
     "port": "площадь канала π D²/4", "curtain": "площадь цилиндрической щели π D L", "isooctane": "изооктан",
     "n-heptane": "н-гептан", "methane": "метан", "propane": "пропан", "ethanol": "этанол",
+    "designed": "расчётный, по закону кулачка",
+    "dynamics": "по динамической модели привода при каждой частоте",
 }
 """Russian of the text values of the specification and the records (their English is the value itself)."""
 

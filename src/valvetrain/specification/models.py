@@ -721,7 +721,9 @@ class TwoStroke(_Model):
 class BreathingSide(_Model):
     """[breathing.intake], [breathing.exhaust]: one side's valves, their discharge coefficients and runner.
 
-    The lift is the designed valves' of the kind (every ``[valves.NAME]`` of ``kind``), or a measured one
+    The lift is the designed valves' of the kind (every ``[valves.NAME]`` of ``kind``): their cam's
+    (``lift = "designed"``, the default) or, with ``lift = "dynamics"``, the valve motion of each one's ``[dynamics]`` train at each
+    condition's speed (the steady revolution, with its deflection, separation and bounce); or a measured one
     (``lift_file``: ``crank_deg,lift_mm``, crank degrees from the gas-exchange TDC, the valve shut outside the rows;
     ``valves`` of them).  The effective area is C_D(L/D) of ``cd_file`` (``l_over_d,cd_forward,cd_reverse``, forward
     into the cylinder for the intake, out of it for the exhaust) on the reference area of ``cd_reference`` (the port,
@@ -729,6 +731,7 @@ class BreathingSide(_Model):
     flow section.  ``runner_length_mm`` and ``runner_diameter_mm``: the runner with its port from the plenum to the
     valve (none: the valve opens straight into the plenum)."""
 
+    lift: Optional[Literal["designed", "dynamics"]] = None
     lift_file: Optional[str] = None
     valves: Annotated[int, Field(ge=1, le=8)] = 1
     cd_file: Optional[str] = None
@@ -737,12 +740,13 @@ class BreathingSide(_Model):
     runner_length_mm: Optional[Length(0.0, 20000.0)] = None
     runner_diameter_mm: Optional[Length(1.0, 1000.0)] = None
 
-    si_extras: ClassVar[tuple] = ("lift", "cd")
+    si_extras: ClassVar[tuple] = ("measured_lift", "cd")
 
     def read_extras(self, root) -> dict:
         """The measured lift (crank deg, mm) and the C_D table (L/D, forward, reverse) as read
         (:func:`valvetrain.files.read_valve_lift`, :func:`valvetrain.files.read_cd_table`), or None."""
-        return {"lift": None if self.lift_file is None else read_valve_lift(resolve_path(root, self.lift_file)),
+        return {"measured_lift": (None if self.lift_file is None
+                                  else read_valve_lift(resolve_path(root, self.lift_file))),
                 "cd": None if self.cd_file is None else read_cd_table(resolve_path(root, self.cd_file))}
 
     @model_validator(mode="after")

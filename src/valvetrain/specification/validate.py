@@ -192,6 +192,16 @@ def _breathing_problems(spec):
         if s.lift_file is None and side not in kinds:
             out.append(Problem(f"breathing.{side}.lift_file", f"is required: no [valves.NAME] of kind '{side}' to "
                                "take the lift from", joiner=" "))
+        if s.lift is not None and s.lift_file is not None:
+            out.append(Problem(f"breathing.{side}.lift", "allowed only without lift_file (the measured lift is the "
+                               "lift; a measured lift has no train to move it): give lift_file or lift, not both",
+                               f"'{s.lift}'"))
+        elif s.lift == "dynamics":
+            bare = [name for name, v in spec.valves.items() if v.kind == side and v.dynamics is None]
+            if bare:
+                out.append(Problem(f"breathing.{side}.lift", f"'dynamics' needs the [dynamics] of every {side} valve "
+                                   f"(the train that moves it): none in {', '.join(f'[valves.{n}]' for n in bare)}; "
+                                   "allowed 'designed'", "'dynamics'"))
         if s.lift_file is not None and s.cd_file is None:
             out.append(Problem(f"breathing.{side}.cd_file", "is required with lift_file (the default C_D needs a "
                                "designed valve's flow section)", joiner=" "))

@@ -108,10 +108,10 @@ class BreathingObjective:
         start = self.valves[name]
         cam = replace(start.cam, law=law, nose=valve.cam.section.nose_crank(valve, law),
                       rocker_ratio=valve.rocker_ratio)
-        described = breathing_engine(self.view, self.engine, self.crank, {**self.valves, name: replace(start, cam=cam)},
-                                     {**self.views, name: valve})[0]
+        engines = breathing_engine(self.view, self.engine, self.crank, {**self.valves, name: replace(start, cam=cam)},
+                                   {**self.views, name: valve}, [c for part in self.conditions for c in part])[0]
         try:
-            conditions, curve = breathe_conditions(described, self.view, *self.conditions)
+            conditions, curve = breathe_conditions(engines, self.view, *self.conditions)
         except BreathingError:
             return 0.0
         return speed_mean(conditions + curve, figure)
