@@ -243,7 +243,7 @@ def phaser_stage(name, phaser, valve, engine, design, breathing=None, b=None, ca
     phaser, valve, engine : SI views of [valves.NAME.phaser], the valve and [engine].
     design : ValveDesign
     breathing : BreathingResults, optional
-        The breathing chapter (its engine): with it the map of phase x condition and the best phases.
+        The breathing chapter (its engines, one a condition): with it the map of phase x condition and the best phases.
     b : SI view of [breathing], optional
     camshaft : CamshaftResults, optional
 
@@ -288,11 +288,11 @@ def phaser_stage(name, phaser, valve, engine, design, breathing=None, b=None, ca
     phases = advances(phaser)
     given, swept = breathing_conditions(b)
     conditions = given + swept
-    side = getattr(breathing.engine, design.kind)
-    engines = [_engine_with(breathing.engine, design.kind, phased_flow(side, a)) for a in phases]
+    engines = [tuple(_engine_with(e, design.kind, phased_flow(getattr(e, design.kind), a)) for e in breathing.engines)
+               for a in phases]
     searched = SEARCH_EVALUATIONS + int(np.ceil(np.log(2.0 * phaser.step / phaser.tolerance) / np.log(GOLDEN)))
-    asked = sum(work(e, c, b.max_cycles) for e in engines for c in conditions) + searched * sum(
-        work(engines[0], c, b.max_cycles) for c in conditions)
+    asked = (sum(work(e, c, b.max_cycles) for each in engines for e, c in zip(each, conditions, strict=True))
+             + searched * sum(work(e, c, b.max_cycles) for e, c in zip(breathing.engines, conditions, strict=True)))
     if asked > MAX_WORK:
         raise SpecError([Problem(_key(name, "step_crank_deg"), f"{len(phases)} phases of "
                                  f"{len(conditions)} conditions and the search of the best phase at each ask for "
@@ -319,7 +319,8 @@ def phaser_stage(name, phaser, valve, engine, design, breathing=None, b=None, ca
         values = np.array([getattr(row[j].figures, objective) for row in rows])
         i = int(np.argmax(values))
         bracket = (phases[max(i - 1, 0)], phases[min(i + 1, phases.size - 1)], phaser.tolerance)
-        a, r, n = best_phase(name, objective, breathing.engine, design.kind, c, b, bracket, (phases[i], rows[i][j]))
+        a, r, n = best_phase(name, objective, breathing.engines[j], design.kind, c, b, bracket,
+                             (phases[i], rows[i][j]))
         f = r.figures
         searched_results.append((a, r))
         best.append(BestPhase(f.speed, f.intake_pressure, a, f.volumetric_efficiency, f.residual_gas_fraction, f.pmep,
