@@ -331,9 +331,10 @@ def test_a_folder_with_user_files_is_refused(spec_file, tmp_path):
 
 
 def test_ten_million_samples_are_refused_with_an_estimate(tmp_path, monkeypatch):
-    """Issue 36: --samples 10000000 started weeks of work without a word; as study above 10,000 points, it is refused
-    with exit 2, an estimate from two timed designs of the file (none drawn: the samples are not drawn before) and the
-    option that allows it; --max-samples allows a study above the default limit."""
+    """Issue 36: --samples 10000000 started weeks of work without a word; issue 38: a study whose estimated time is
+    over an hour (as study's grids) is refused with exit 2, the estimate from timed designs of the file (none drawn:
+    the samples are not drawn before) and the option that allows it; --max-samples allows a study up to its value,
+    and refuses more."""
     from valvetrain import tolerance as tolerance_module
 
     path = tmp_path / "engine.toml"
@@ -343,9 +344,11 @@ def test_ten_million_samples_are_refused_with_an_estimate(tmp_path, monkeypatch)
     result = tolerance(path, tmp_path / "out", "--samples", "10000000", code=2)
     (line,) = result.output.splitlines()
     assert line.startswith("error: --samples: 10,000,000 samples: about ") and " in 1 process at the " in line
-    assert line.endswith("allowed at most 10,000 samples unless --max-samples 10000000 is given")
+    assert line.endswith(", over the 60 minutes a study may take unless --max-samples 10000000 is given")
     assert drawn == [] and not (tmp_path / "out").exists()
-    assert "3 samples" in tolerance(path, tmp_path / "out", "--samples", "3", "--max-samples", "2", code=2).output
+    (line,) = tolerance(path, tmp_path / "out", "--samples", "3", "--max-samples", "2", code=2).output.splitlines()
+    assert line.startswith("error: --samples: 3 samples: about ")
+    assert line.endswith("; --max-samples 2 allows at most 2 samples; give --max-samples 3")
     monkeypatch.undo()
     tolerance(path, tmp_path / "out", "--samples", "3", "--max-samples", "3")
 

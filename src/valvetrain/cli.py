@@ -414,8 +414,8 @@ def optimize(file, out, valve, objective, vary, no_jump, cam_width, seating_velo
               help="Evaluate the points on the Dask distributed cluster of this scheduler (tcp://host:8786); "
                    "needs pip install 'valvetrain[dask]'.")
 @click.option("--max-points", "max_points", default=None, type=click.IntRange(1), metavar="N",
-              help="Allow a grid of up to N points (default 10,000; a larger grid is refused with an estimate of "
-                   "its time).")
+              help="Allow a grid of up to N points, however long it takes (default: a grid whose estimated time, "
+                   "from a timed design of FILE, is over an hour is refused with the estimate).")
 @click.option("--force", is_flag=True, help=FORCE_HELP)
 def study(file, grid_items, out, workers, scheduler, max_points, force) -> None:
     """Design every point of a grid of FILE's keys and write one table of results to --out.
@@ -427,7 +427,7 @@ def study(file, grid_items, out, workers, scheduler, max_points, force) -> None:
     stopped by a worker process that died writes the points designed before it and exits 1."""
     from .export import json_text, write_csv
     from .outfolder import atomic_folder
-    from .study import (MAX_POINTS, POINT_COLUMNS, VALVE_COLUMNS, GridError, StudyStopped, check_grid,
+    from .study import (POINT_COLUMNS, VALVE_COLUMNS, GridError, StudyStopped, check_grid,
                         count_points, evaluate, parse_grid, point_text, points, read_document, table, too_large,
                         with_values)
 
@@ -436,8 +436,8 @@ def study(file, grid_items, out, workers, scheduler, max_points, force) -> None:
         grid = parse_grid(grid_items)
         document = read_document(file)
         total = count_points(grid)
-        large = too_large(total, max_points or MAX_POINTS, document, workers if scheduler is None else 1,
-                          "design points", "--max-points")
+        large = too_large(total, max_points, document, workers if scheduler is None else 1, "design points",
+                          "--max-points")
         if large:
             raise GridError(f"--grid: {large}")
         check_grid(document, grid)
@@ -503,7 +503,8 @@ def study(file, grid_items, out, workers, scheduler, max_points, force) -> None:
               help="Evaluate the samples on the Dask distributed cluster of this scheduler (tcp://host:8786); "
                    "needs pip install 'valvetrain[dask]'.")
 @click.option("--max-samples", "max_samples", default=None, type=click.IntRange(1), metavar="N",
-              help="Allow up to N samples (default 10,000; more are refused with an estimate of their time).")
+              help="Allow up to N samples, however long they take (default: samples whose estimated time, from a "
+                   "timed design of FILE, is over an hour are refused with the estimate).")
 @click.option("--lang", type=click.Choice(["en", "ru"]), default="en", show_default=True,
               help="Language of the report.")
 def tolerance(file, samples, method, seed, out, workers, scheduler, max_samples, lang) -> None:
@@ -518,7 +519,7 @@ def tolerance(file, samples, method, seed, out, workers, scheduler, max_samples,
 
     from .export import json_text
     from .report.tolerance import report_html
-    from .study import MAX_POINTS, StudyStopped, evaluate, read_document, too_large, with_values
+    from .study import StudyStopped, evaluate, read_document, too_large, with_values
     from .tolerance import (RECORDS, RecordFile, ToleranceError, check_tolerances, draw, evaluate_sample,
                             fingerprint, summary)
 
@@ -535,8 +536,8 @@ def tolerance(file, samples, method, seed, out, workers, scheduler, max_samples,
     try:
         document = read_document(file)
         centres = check_tolerances(document, spec)
-        large = too_large(samples, max_samples or MAX_POINTS, document, workers if scheduler is None else 1,
-                          "samples", "--max-samples", evaluate_sample)
+        large = too_large(samples, max_samples, document, workers if scheduler is None else 1, "samples",
+                          "--max-samples", evaluate_sample)
         if large:
             raise ToleranceError(f"--samples: {large}")
         values = draw(spec, centres, samples, method, seed)
