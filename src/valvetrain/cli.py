@@ -506,8 +506,9 @@ def study(file, grid_items, out, workers, scheduler, max_points, force) -> None:
               help="Evaluate the samples on the Dask distributed cluster of this scheduler (tcp://host:8786); "
                    "needs pip install 'valvetrain[dask]'.")
 @click.option("--max-samples", "max_samples", default=None, type=click.IntRange(1), metavar="N",
-              help="Allow up to N samples, however long they take (default: samples whose estimated time, from a "
-                   "timed design of FILE, is over an hour are refused with the estimate).")
+              help="Allow up to N samples designed (with --method sobol N (D + 2) for --samples N), however long "
+                   "they take (default: samples whose estimated time, from a timed design of FILE, is over an hour "
+                   "are refused with the estimate).")
 @click.option("--lang", type=click.Choice(["en", "ru"]), default="en", show_default=True,
               help="Language of the report.")
 def tolerance(file, samples, method, seed, out, workers, scheduler, max_samples, lang) -> None:
