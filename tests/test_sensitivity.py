@@ -68,14 +68,17 @@ def test_the_scheme_is_the_same_for_the_same_seed():
 
 
 def test_a_constant_output_or_too_few_blocks_has_no_indices_and_no_warning():
-    """An output that does not vary (to rounding) has no variance to share: no indices, the reason said, no NaN and
-    no warning (SALib warns per index); a block with a missing value is left out, and fewer than two complete blocks
+    """An output that does not vary (to rounding) over f(A) and f(B) has no variance to share: no indices, the reason
+    said, no NaN and no warning (SALib warns per index); a block with a missing value is left out, and fewer than two complete blocks
     give no indices either."""
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         s = sobol_indices(np.full(saltelli_size(4, 2), 0.25) + 1e-12 * np.arange(16), 2, seed=0)
         assert s == {"blocks": 4, "reason": "constant", "first": [None, None], "first_95": [None, None],
                      "total": [None, None], "total_95": [None, None]}
+        y = np.zeros(saltelli_size(4, 2))
+        y[1::4] = 1.0                                # varies only where x1 is B's: f(A), f(B) have no variance
+        assert sobol_indices(y, 2, seed=0)["reason"] == "constant"
         y = saltelli_points(4, 2, seed=0)[:, 0]
         y[[1, 6, 11]] = np.nan                       # one sample in each of the first three blocks
         assert sobol_indices(y, 2, seed=0)["reason"] == "too_few_samples"

@@ -96,7 +96,7 @@ def sobol_indices(values, dimensions, seed) -> dict[str, Any]:
     dict
         ``blocks`` (the base points whose every evaluation has a value: the indices are of these, the others
         left out), ``reason`` (None, or why there are no indices: ``"constant"``, the output does not vary over
-        those blocks to rounding (:func:`constant`); ``"too_few_samples"``, fewer than :data:`MIN_BLOCKS` blocks),
+        those blocks' f(A) and f(B) to rounding (:func:`constant`), so there is no variance to share out; ``"too_few_samples"``, fewer than :data:`MIN_BLOCKS` blocks),
         and per input (lists, None where there are no indices) ``first`` (S_i), ``first_95``, ``total`` (S_Ti),
         ``total_95`` (the half-widths of the intervals).  An estimate may fall a little outside [0, 1] (its
         sampling error), as computed.
@@ -114,8 +114,9 @@ def sobol_indices(values, dimensions, seed) -> dict[str, Any]:
     """
     y = np.asarray(values, dtype=float).reshape(-1, dimensions + 2)
     blocks = y[np.all(np.isfinite(y), axis=1)]
+    ends = blocks[:, [0, -1]]   # f(A) and f(B), whose variance the indices share out
     reason = ("too_few_samples" if len(blocks) < MIN_BLOCKS else
-              "constant" if constant(blocks.min(), blocks.max()) else None)
+              "constant" if constant(ends.min(), ends.max()) else None)
     if reason:
         return {"blocks": len(blocks), "reason": reason,
                 **{name: [None] * dimensions for name in ("first", "first_95", "total", "total_95")}}
