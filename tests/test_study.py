@@ -199,8 +199,9 @@ def test_grid_values_split_outside_arrays_tables_and_strings():
 
 
 def test_a_huge_grid_is_refused_before_any_point_is_built(tmp_path, monkeypatch):
-    """Issue 21 traceback 6: 1000 x 1000 points are counted, not made: refused with exit 2, the count and an estimate,
-    in about the time of two designs; --max-points allows a grid above the default limit."""
+    """Issue 21 traceback 6: 1000 x 1000 points are counted, not made: refused with exit 2, the count and an estimate
+    over an hour (issue 38), in about the time of two designs; --max-points allows a grid up to its value and refuses
+    more."""
     f = tmp_path / "engine.toml"
     f.write_text(appendix_text(), encoding="utf-8")
     made = []
@@ -212,14 +213,52 @@ def test_a_huge_grid_is_refused_before_any_point_is_built(tmp_path, monkeypatch)
     assert result.exit_code == 2
     (line,) = result.output.splitlines()
     assert line.startswith("error: --grid: 1,000,000 design points: about ") and " in 1 process at the " in line
-    assert line.endswith("allowed at most 10,000 points unless --max-points 1000000 is given")
+    assert line.endswith(", over the 60 minutes a study may take unless --max-points 1000000 is given")
     assert made == [] and not (tmp_path / "o").exists()
     result = CliRunner().invoke(main, ["study", str(f), "--grid", "valves.intake.cam.shape_factor=0.55,0.6,0.65",
                                        "--max-points", "2", "--out", str(tmp_path / "o")])
     assert result.exit_code == 2 and "3 design points" in result.output
+    assert result.output.rstrip().endswith("--max-points 2 allows at most 2 points; give --max-points 3")
     result = CliRunner().invoke(main, ["study", str(f), "--grid", "valves.intake.cam.shape_factor=0.55,0.6,0.65",
                                        "--max-points", "3", "--out", str(tmp_path / "o")])
     assert result.exit_code == 0, result.output
+
+
+class Clock:
+    """A clock for too_large that a design moves on: ``first`` seconds for the first design, ``each`` after."""
+
+    def __init__(self, first, each):
+        self.now, self.first, self.each, self.designs = 0.0, first, each, 0
+
+    def monotonic(self):
+        return self.now
+
+    def design(self, document):
+        self.now += self.first if self.designs == 0 else self.each
+        self.designs += 1
+
+
+@pytest.mark.parametrize("total, processes, allowed, first, refused, designs", [
+    (20_000, 1, None, 0.1, False, 1),      # 2000 s: under the hour, though over the 10,000 points refused before
+    (1_000, 1, None, 5.0, False, 2),       # the first design (5 s) gives 5000 s; the second (0.1 s) 100 s
+    (40_000, 1, None, 0.1, True, 2),       # 4000 s
+    (40_000, 2, None, 0.1, False, 1),      # 2000 s in two processes
+    (40_000, 1, 50_000, 0.1, False, 0),    # allowed by the option: not timed
+    (40_000, 1, 30_000, 0.1, True, 2),     # more than the option allows
+])
+def test_a_study_is_refused_by_its_estimated_time(monkeypatch, total, processes, allowed, first, refused, designs):
+    """Issue 38: a study is refused where its estimate, the count times a design's time over the processes, is over
+    an hour (3600 s); the first design of a process loads what designs need, so where its time gives more than an
+    hour a second design is timed and gives the estimate; --max-points N allows up to N points however long."""
+    clock = Clock(first, 0.1)
+    monkeypatch.setattr(study_module, "time", clock)
+    why = study_module.too_large(total, allowed, {}, processes, "design points", "--max-points", clock.design)
+    assert (why is not None) is refused and clock.designs == designs
+    if refused and allowed is None:
+        assert why == ("40,000 design points: about 66.7 minutes in 1 process at the 0.1 s that a design of the file "
+                       "takes, over the 60 minutes a study may take unless --max-points 40000 is given")
+    elif refused:
+        assert why.endswith("; --max-points 30000 allows at most 30,000 points; give --max-points 40000")
 
 
 def test_dask_tasks_hold_several_points():

@@ -2,6 +2,7 @@
 
 import json
 from pathlib import Path
+from types import SimpleNamespace
 
 from click.testing import CliRunner
 import numpy as np
@@ -12,6 +13,7 @@ from valvetrain import study as study_module
 from valvetrain.cli import main
 from valvetrain.tolerance import draw, unit_samples, wilson
 from valvetrain.specification import load_spec
+from valvetrain.specification.models import Tolerance
 
 from appendix import appendix_text
 from visible_text import Visible, english_words
@@ -331,9 +333,10 @@ def test_a_folder_with_user_files_is_refused(spec_file, tmp_path):
 
 
 def test_ten_million_samples_are_refused_with_an_estimate(tmp_path, monkeypatch):
-    """Issue 36: --samples 10000000 started weeks of work without a word; as study above 10,000 points, it is refused
-    with exit 2, an estimate from two timed designs of the file (none drawn: the samples are not drawn before) and the
-    option that allows it; --max-samples allows a study above the default limit."""
+    """Issue 36: --samples 10000000 started weeks of work without a word; issue 38: a study whose estimated time is
+    over an hour (as study's grids) is refused with exit 2, the estimate from timed designs of the file (none drawn:
+    the samples are not drawn before) and the option that allows it; --max-samples allows a study up to its value,
+    and refuses more."""
     from valvetrain import tolerance as tolerance_module
 
     path = tmp_path / "engine.toml"
@@ -343,9 +346,11 @@ def test_ten_million_samples_are_refused_with_an_estimate(tmp_path, monkeypatch)
     result = tolerance(path, tmp_path / "out", "--samples", "10000000", code=2)
     (line,) = result.output.splitlines()
     assert line.startswith("error: --samples: 10,000,000 samples: about ") and " in 1 process at the " in line
-    assert line.endswith("allowed at most 10,000 samples unless --max-samples 10000000 is given")
+    assert line.endswith(", over the 60 minutes a study may take unless --max-samples 10000000 is given")
     assert drawn == [] and not (tmp_path / "out").exists()
-    assert "3 samples" in tolerance(path, tmp_path / "out", "--samples", "3", "--max-samples", "2", code=2).output
+    (line,) = tolerance(path, tmp_path / "out", "--samples", "3", "--max-samples", "2", code=2).output.splitlines()
+    assert line.startswith("error: --samples: 3 samples: about ")
+    assert line.endswith("; --max-samples 2 allows at most 2 samples; give --max-samples 3")
     monkeypatch.undo()
     tolerance(path, tmp_path / "out", "--samples", "3", "--max-samples", "3")
 
@@ -444,3 +449,104 @@ def test_multi_mass_trains_are_swept_in_full():
         valve["dynamics"].update(model="multi", speeds=60)
     part = run(document, headlines_only=True)
     assert [len(v.dynamics.per_speed.speed) for v in part.valves.values()] == [60, 60]
+
+
+BORE = """
+[[tolerances]]
+key = "engine.bore_mm"
+distribution = "uniform"
+half_range = 0.5
+"""
+
+
+@pytest.fixture(scope="module")
+def sobol_study(tmp_path_factory):
+    """The appendix engine (no dynamics: a sample designs in about 0.1 s) with the throat and the bore toleranced,
+    by Saltelli's scheme of 8 base points: 8 x (2 + 2) = 32 samples."""
+    folder = tmp_path_factory.mktemp("sobol")
+    path = folder / "engine.toml"
+    path.write_text(appendix_text().replace("throat_diameter_mm = 36.8", "throat_diameter_mm = 37.0") + THROAT + BORE,
+                    encoding="utf-8")
+    result = tolerance(path, folder / "out", "--samples", "8", "--method", "sobol", "--seed", "5")
+    return path, folder / "out", result
+
+
+def test_sobol_study_end_to_end(sobol_study):
+    """Issue 38: `--method sobol --samples 8` designs the 8 (D + 2) = 32 samples of Saltelli's scheme and gives every
+    check's Sobol' indices.  Exact properties of the estimators: a margin that does not depend on a tolerance (the
+    lift / throat and the specific mass of the drive do not depend on the bore, the stroke / bore not on the throat)
+    has A = A_B^(j) for it, so both its indices are 0 exactly, and the tolerance it depends on alone takes all the
+    variance: its total index is 1 within its interval; a margin that neither changes has no indices, the reason
+    said ('constant'), nothing NaN.  The command run again designs nothing: the same samples, the same records file
+    (its fingerprint), the same results."""
+    path, out, result = sobol_study
+    records, results = outputs(out)
+    assert [r["index"] for r in records] == list(range(32)) and results["samples"] == 32
+    assert "32 samples designed (0 kept from before)" in result.output
+    checks, throat, bore = results["checks"], "valves.intake.throat_diameter_mm", "engine.bore_mm"
+    for cid, alone, other in (("intake:flow.lift_to_throat", throat, bore), ("intake:drive.specific_mass", throat, bore),
+                              ("engine.stroke_to_bore", bore, throat)):
+        s = checks[cid]["sobol"]
+        assert s["blocks"] == 8 and s["reason"] is None
+        assert s["indices"][other] == {"first": 0.0, "first_95": 0.0, "total": 0.0, "total_95": 0.0}, cid
+        e = s["indices"][alone]
+        assert abs(e["total"] - 1.0) <= e["total_95"], cid
+    assert checks["intake:valve.seat_angle"]["sobol"] == {"blocks": 8, "reason": "constant", "indices": None}
+    assert results["headline_sobol"] == {}
+    text = (out / "tolerance.json").read_text(encoding="utf-8")
+    assert "NaN" not in text and "Infinity" not in text
+    again = tolerance(path, out, "--samples", "8", "--method", "sobol", "--seed", "5")
+    assert "0 samples designed (32 kept from before)" in again.output
+    assert outputs(out) == (records, results)
+
+
+@pytest.mark.parametrize("lang, title", [("en", "Sobol' sensitivity indices"), ("ru", "Индексы чувствительности Соболя")])
+def test_sobol_report(sobol_study, lang, title):
+    """The report of a Sobol' study: a row per tolerance of each check that fails in some sample, its indices +- the
+    half-widths of their intervals and their bars; the Russian report without English words."""
+    from valvetrain.report.tolerance import report_html
+
+    results = outputs(sobol_study[1])[1]
+    html = report_html(results, lang)
+    failing = [c for c in results["checks"].values() if c["failures"]]
+    e = results["checks"]["intake:flow.throat_to_bore"]["sobol"]["indices"]["engine.bore_mm"]
+    assert title in html and f"<td>{e['first']:.3f} ± {e['first_95']:.3f}</td>" in html
+    assert html.count('<svg width="200"') == 2 * sum(c["sobol"]["indices"] is not None for c in failing)
+    if lang == "ru":
+        parser = Visible()
+        parser.feed(html)
+        assert english_words(parser.texts) == []
+
+
+@pytest.mark.parametrize("samples", ["6", "12", "1000"])
+def test_sobol_needs_a_power_of_two(tmp_path, samples):
+    """Saltelli's scheme takes a power of two base points (the Sobol' sequence's balance): another --samples is
+    refused before any design, naming the option and the values allowed."""
+    path = tmp_path / "engine.toml"
+    path.write_text(appendix_text() + THROAT, encoding="utf-8")
+    (line,) = tolerance(path, tmp_path / "out", "--samples", samples, "--method", "sobol", code=2).output.splitlines()
+    assert line.startswith(f"error: --samples: {samples} with --method sobol: ") and "a power of two" in line
+    assert not (tmp_path / "out").exists()
+
+
+def test_sobol_summary_of_headlines_with_a_refused_sample():
+    """summary's Sobol' indices of the dynamics headlines, on records written here: 4 base points of 2 tolerances
+    (16 samples), the jump speed 6000 + 1000 x1 rpm (x1 the first tolerance's value), the seating velocity constant,
+    one sample refused: its block is left out (3 blocks), the second tolerance's indices 0 exactly, the first's
+    total index 1 within its interval; the seating velocity has no indices ('constant')."""
+    from valvetrain.tolerance import summary
+
+    spec = SimpleNamespace(tolerances=[Tolerance(key="a.x_mm", distribution="uniform", half_range=0.5),
+                                       Tolerance(key="a.y_mm", distribution="uniform", half_range=0.5)])
+    x = draw(spec, [0.0, 0.0], 4, "sobol", seed=1)
+    records = [{"status": "ok", "message": "", "checks": {"c": [1.0 + v[0], True, "q", "warning", False]},
+                "headlines": {"intake": {"jump_speed_rpm": 6000.0 + 1000.0 * v[0], "max_seating_velocity_m_s": 0.3}}}
+               for v in x]
+    records[5] = {"status": "refused", "message": "no", "checks": {}, "headlines": {}}
+    result = summary(spec, [0.0, 0.0], x, records, "sobol", 1)
+    jump = result["headline_sobol"]["intake"]["jump_speed_rpm"]
+    assert jump["blocks"] == 3 and jump["indices"]["a.y_mm"]["total"] == 0.0
+    assert abs(jump["indices"]["a.x_mm"]["total"] - 1.0) <= jump["indices"]["a.x_mm"]["total_95"]
+    assert result["headline_sobol"]["intake"]["max_seating_velocity_m_s"] == {"blocks": 3, "reason": "constant",
+                                                                              "indices": None}
+    assert result["checks"]["c"]["sobol"]["blocks"] == 3 and result["samples"] == 16

@@ -920,7 +920,8 @@ RECORD_DAMAGE = [None, None, "margin_text", "margin_nan", "short_entry", "checks
                  "headlines_text", "status_other", "index_text", "folder", "header_other", "cut_short"]
 """How a tolerance case damages its records.jsonl before it runs the command again (None: it runs once)."""
 
-TOLERANCE_OPTIONS = [[], [], ["--method", "lhs"], ["--seed", "3"], ["--samples", "10000000"], ["--max-samples", "1"]]
+TOLERANCE_OPTIONS = [[], [], ["--method", "lhs"], ["--method", "sobol"], ["--seed", "3"], ["--samples", "10000000"],
+                     ["--max-samples", "1"]]
 
 
 def draw_tolerances(pick, doc):

@@ -288,6 +288,23 @@ WORKS = {
         authors="Devroye, L.",
         title="Non-Uniform Random Variate Generation", kind="book", publisher="Springer", place="New York",
         year="1986"),
+    "sobol2001": Work(
+        short="Sobol' (2001)",
+        authors="Sobol', I. M.",
+        title="Global sensitivity indices for nonlinear mathematical models and their Monte Carlo estimates",
+        kind="article", journal="Mathematics and Computers in Simulation", volume="Vol. 55, no. 1–3",
+        pages="P. 271–280", year="2001"),
+    "saltelli2002": Work(
+        short="Saltelli (2002)",
+        authors="Saltelli, A.",
+        title="Making best use of model evaluations to compute sensitivity indices", kind="article",
+        journal="Computer Physics Communications", volume="Vol. 145, no. 2", pages="P. 280–297", year="2002"),
+    "saltelli2010": Work(
+        short="Saltelli et al. (2010)",
+        authors="Saltelli, A.; Annoni, P.; Azzini, I.; Campolongo, F.; Ratto, M.; Tarantola, S.",
+        title="Variance based sensitivity analysis of model output. Design and estimator for the total sensitivity "
+              "index", kind="article", journal="Computer Physics Communications", volume="Vol. 181, no. 2",
+        pages="P. 259–270", year="2010"),
     "mckay1979": Work(
         short="McKay, Beckman and Conover (1979)",
         authors="McKay, M. D.; Beckman, R. J.; Conover, W. J.",

@@ -425,8 +425,8 @@ def optimize(file, out, valve, objective, vary, no_jump, cam_width, seating_velo
               help="Evaluate the points on the Dask distributed cluster of this scheduler (tcp://host:8786); "
                    "needs pip install 'valvetrain[dask]'.")
 @click.option("--max-points", "max_points", default=None, type=click.IntRange(1), metavar="N",
-              help="Allow a grid of up to N points (default 10,000; a larger grid is refused with an estimate of "
-                   "its time).")
+              help="Allow a grid of up to N points, however long it takes (default: a grid whose estimated time, "
+                   "from a timed design of FILE, is over an hour is refused with the estimate).")
 @click.option("--force", is_flag=True, help=FORCE_HELP)
 def study(file, grid_items, out, workers, scheduler, max_points, force) -> None:
     """Design every point of a grid of FILE's keys and write one table of results to --out.
@@ -438,7 +438,7 @@ def study(file, grid_items, out, workers, scheduler, max_points, force) -> None:
     stopped by a worker process that died writes the points designed before it and exits 1."""
     from .export import json_text, write_csv
     from .outfolder import atomic_folder
-    from .study import (MAX_POINTS, POINT_COLUMNS, VALVE_COLUMNS, GridError, StudyStopped, check_grid,
+    from .study import (POINT_COLUMNS, VALVE_COLUMNS, GridError, StudyStopped, check_grid,
                         count_points, evaluate, parse_grid, point_text, points, read_document, table, too_large,
                         with_values)
 
@@ -447,8 +447,8 @@ def study(file, grid_items, out, workers, scheduler, max_points, force) -> None:
         grid = parse_grid(grid_items)
         document = read_document(file)
         total = count_points(grid)
-        large = too_large(total, max_points or MAX_POINTS, document, workers if scheduler is None else 1,
-                          "design points", "--max-points")
+        large = too_large(total, max_points, document, workers if scheduler is None else 1, "design points",
+                          "--max-points")
         if large:
             raise GridError(f"--grid: {large}")
         check_grid(document, grid)
@@ -501,9 +501,12 @@ def study(file, grid_items, out, workers, scheduler, max_points, force) -> None:
 
 @main.command()
 @click.argument("file", type=click.Path(dir_okay=False))
-@click.option("--samples", required=True, type=click.IntRange(2, 10_000_000), help="Number of samples.")
-@click.option("--method", type=click.Choice(["mc", "lhs"]), default="mc", show_default=True,
-              help="Monte Carlo (mc) or Latin hypercube (lhs) sampling.")
+@click.option("--samples", required=True, type=click.IntRange(2, 10_000_000),
+              help="Number of samples; with --method sobol the base points N of Saltelli's scheme, a power of two "
+                   "(2, 4, 8, ...): N (D + 2) samples are designed for D tolerances.")
+@click.option("--method", type=click.Choice(["mc", "lhs", "sobol"]), default="mc", show_default=True,
+              help="Monte Carlo (mc), Latin hypercube (lhs), or Saltelli's scheme on a Sobol' sequence (sobol: "
+                   "also the first-order and total Sobol' indices of every margin and dynamics headline).")
 @click.option("--seed", default=0, show_default=True, type=click.IntRange(0), help="Seed of the samples.")
 @click.option("--out", "out", default="tolerance", show_default=True, type=click.Path(file_okay=False),
               help="Folder of the study: new or empty, or the folder of an interrupted run of the same study, "
@@ -514,7 +517,9 @@ def study(file, grid_items, out, workers, scheduler, max_points, force) -> None:
               help="Evaluate the samples on the Dask distributed cluster of this scheduler (tcp://host:8786); "
                    "needs pip install 'valvetrain[dask]'.")
 @click.option("--max-samples", "max_samples", default=None, type=click.IntRange(1), metavar="N",
-              help="Allow up to N samples (default 10,000; more are refused with an estimate of their time).")
+              help="Allow up to N samples designed (with --method sobol N (D + 2) for --samples N), however long "
+                   "they take (default: samples whose estimated time, from a timed design of FILE, is over an hour "
+                   "are refused with the estimate).")
 @click.option("--lang", type=click.Choice(["en", "ru"]), default="en", show_default=True,
               help="Language of the report.")
 def tolerance(file, samples, method, seed, out, workers, scheduler, max_samples, lang) -> None:
@@ -524,14 +529,15 @@ def tolerance(file, samples, method, seed, out, workers, scheduler, max_samples,
     The samples are the same for the same FILE, --samples, --method and --seed, whatever --workers or --scheduler.
     The records are written to --out/records.jsonl as they arrive: run the same command again after an
     interruption and only the samples missing are designed. Writes tolerance.json and the report tolerance.html
-    (tables and histograms) when every sample is designed."""
+    (tables and histograms) when every sample is designed; with --method sobol also the first-order and total Sobol'
+    indices of every check's margin and dynamics headline with their 95 % intervals."""
     from pathlib import Path
 
     from .export import json_text
     from .report.tolerance import report_html
-    from .study import MAX_POINTS, StudyStopped, evaluate, read_document, too_large, with_values
+    from .study import StudyStopped, evaluate, read_document, too_large, with_values
     from .tolerance import (RECORDS, RecordFile, ToleranceError, check_tolerances, draw, evaluate_sample,
-                            fingerprint, summary)
+                            fingerprint, sample_count, summary)
 
     spec = _load(file)
     if scheduler is not None and workers > 1:
@@ -546,13 +552,14 @@ def tolerance(file, samples, method, seed, out, workers, scheduler, max_samples,
     try:
         document = read_document(file)
         centres = check_tolerances(document, spec)
-        large = too_large(samples, max_samples or MAX_POINTS, document, workers if scheduler is None else 1,
-                          "samples", "--max-samples", evaluate_sample)
+        total = sample_count(samples, len(centres), method)
+        large = too_large(total, max_samples, document, workers if scheduler is None else 1, "samples",
+                          "--max-samples", evaluate_sample)
         if large:
             raise ToleranceError(f"--samples: {large}")
         values = draw(spec, centres, samples, method, seed)
         records_file = RecordFile(folder, fingerprint(document, method, seed, values))
-        done = records_file.read(samples)
+        done = records_file.read(total)
     except ToleranceError as err:
         click.echo(f"error: {err}", err=True)
         sys.exit(2)
@@ -561,7 +568,7 @@ def tolerance(file, samples, method, seed, out, workers, scheduler, max_samples,
     if len(records_file.damaged) > 5:
         click.echo(f"note: {len(records_file.damaged) - 5} more lines of {RECORDS} designed again", err=True)
     keys = [t.key for t in spec.tolerances]
-    todo = [i for i in range(samples) if i not in done]
+    todo = [i for i in range(total) if i not in done]
     progress = _Progress("samples")
     start = time.monotonic()
     records_file.open(done)
@@ -580,7 +587,7 @@ def tolerance(file, samples, method, seed, out, workers, scheduler, max_samples,
         progress.close()
         records_file.close()
     done.update(zip(todo, records, strict=True))
-    result = summary(spec, centres, values, [done[i] for i in range(samples)], method, seed)
+    result = summary(spec, centres, values, [done[i] for i in range(total)], method, seed)
     for name, text in (("tolerance.json", json_text({"file": file, **result}) + "\n"),
                        ("tolerance.html", report_html(result, lang))):
         tmp = folder / f"{name}.tmp"
@@ -588,7 +595,7 @@ def tolerance(file, samples, method, seed, out, workers, scheduler, max_samples,
         tmp.replace(folder / name)
     backend = f"on {scheduler}" if scheduler else f"in {workers} processes" if workers > 1 else "in this process"
     failed = result["failed"]["samples"]
-    click.echo(f"{len(todo)} samples designed ({samples - len(todo)} kept from before) {backend}, "
+    click.echo(f"{len(todo)} samples designed ({total - len(todo)} kept from before) {backend}, "
                f"{time.monotonic() - start:.1f} s; {result['refused']['samples']} refused"
                + (f" ({failed} of them failed with an error of valvetrain: {result['failed']['messages'][0]})"
                   if failed else ""))

@@ -281,10 +281,9 @@ class StudyStopped(ValvetrainError, RuntimeError):
         self.records, self.lost = records, lost
 
 
-MAX_POINTS = 10_000
-"""Most design points a study takes without ``--max-points`` (and samples a tolerance study without
-``--max-samples``): at the 0.05-0.5 s a point of the shipped examples (more with a [dynamics] section) about 10
-minutes to an hour and a half in one process."""
+MAX_SECONDS = 3600.0
+"""Longest estimated time of a study (or a tolerance study) that runs without ``--max-points`` (``--max-samples``):
+an hour."""
 
 
 def duration(seconds) -> str:
@@ -299,21 +298,37 @@ def duration(seconds) -> str:
     return f"{seconds:.2g} s"
 
 
-def too_large(total, allowed, document, processes, what, option, point=None) -> str | None:
-    """Why a study of ``total`` designs is refused, or None where ``total`` is at most ``allowed``: the count, an
-    estimate of its time from a timed design of ``document`` by ``point`` (default :func:`evaluate_point`; the first
-    design loads what a design needs, the second is timed) in ``processes`` processes, and the option (``option``,
-    ``--max-points`` or ``--max-samples``) that allows it; ``what`` names the designs (``design points``)."""
-    if total <= allowed:
-        return None
-    point = point or evaluate_point
-    point(document)
+def _timed(point, document) -> float:
+    """Seconds of one design of ``document`` by ``point``."""
     start = time.monotonic()
     point(document)
-    each = time.monotonic() - start
-    return (f"{total:,} {what}: about {duration(each * total / processes)} in {processes} "
-            f"process{'es' if processes > 1 else ''} at the {each:.2g} s that a design of the file takes; allowed at "
-            f"most {allowed:,} {what.split()[-1]} unless {option} {total} is given")
+    return time.monotonic() - start
+
+
+def too_large(total, allowed, document, processes, what, option, point=None) -> str | None:
+    """Why a study of ``total`` designs in ``processes`` processes is refused, or None: with ``allowed`` (the value of
+    ``option``, ``--max-points`` or ``--max-samples``) where ``total`` is more; without it where the estimate of its
+    time is over :data:`MAX_SECONDS`.  ``what`` names the designs (``design points``).
+
+    The estimate is ``total`` times the time of a design of ``document`` by ``point`` (default
+    :func:`evaluate_point`) over ``processes``.  The first design of a process also loads what designs need (the
+    imports, the compiled kernels) and takes longer: where its time gives more than the limit, or the count is over
+    ``allowed``, a second design is timed and gives the estimate.  A count within ``allowed`` is not timed."""
+    if allowed is not None and total <= allowed:
+        return None
+    point = point or evaluate_point
+    if _timed(point, document) * total / processes <= MAX_SECONDS and allowed is None:
+        return None
+    each = _timed(point, document)
+    seconds = each * total / processes
+    if allowed is None and seconds <= MAX_SECONDS:
+        return None
+    estimate = (f"{total:,} {what}: about {duration(seconds)} in {processes} process{'es' if processes > 1 else ''} "
+                f"at the {each:.2g} s that a design of the file takes")
+    if allowed is None:
+        return f"{estimate}, over the {duration(MAX_SECONDS)} a study may take unless {option} {total} is given"
+    return f"{estimate}; {option} {allowed} allows at most {allowed:,} {what.split()[-1]}; give {option} {total}"
+
 
 DASK_TASKS_PER_THREAD = 8
 """Tasks of a Dask study per worker thread: enough to even out the load, few enough that the scheduler's own

@@ -2,7 +2,8 @@
 check the distribution of its margin, its probability of failure and the tolerances that drive it.
 
 The samples are drawn in this process before any design (Monte Carlo: independent uniform numbers; Latin
-hypercube: :class:`scipy.stats.qmc.LatinHypercube`), from one seed, and mapped to each tolerance's distribution by
+hypercube: :class:`scipy.stats.qmc.LatinHypercube`; Saltelli's scheme on a Sobol' sequence, whose outputs give the
+Sobol' indices, :mod:`valvetrain.sensitivity`), from one seed, and mapped to each tolerance's distribution by
 its inverse distribution function; each sample is the file's TOML document with its keys replaced, designed by
 :func:`evaluate_sample` (a pure function, document in, record out) through :func:`valvetrain.study.evaluate`, so the
 records are the same serially, in local processes and on a Dask cluster.  The records are written one a line as they
@@ -27,6 +28,7 @@ from scipy.stats import qmc
 from .checks import SEVERITIES
 from .design import run
 from .errors import InputError
+from .sensitivity import constant, is_power_of_two, saltelli_points, saltelli_size, sobol_indices
 from .specification import SpecError, validate
 from .specification.messages import shown
 from .specification.validate import spec_document
@@ -113,10 +115,30 @@ def check_tolerances(document, spec) -> list[float]:
     return centres
 
 
+def sample_count(n, dimensions, method) -> int:
+    """The samples of a study of ``--samples n``: ``n``, or with ``"sobol"`` the ``n (dimensions + 2)`` points of
+    Saltelli's scheme of ``n`` base points (:func:`valvetrain.sensitivity.saltelli_size`).
+
+    Raises
+    ------
+    ToleranceError
+        ``"sobol"`` with an ``n`` that is not a power of two."""
+    if method != "sobol":
+        return n
+    if not is_power_of_two(n):
+        below = 2 ** max(1, n.bit_length() - 1)
+        raise ToleranceError(f"--samples: {n} with --method sobol: the base points of Saltelli's scheme must be a "
+                             f"power of two (2, 4, 8, ..., 1024, ...), e.g. {below} or {2 * below}")
+    return saltelli_size(n, dimensions)
+
+
 def unit_samples(n, dimensions, method, seed) -> np.ndarray:
-    """``n`` points of the unit hypercube, ``(n, dimensions)``: independent uniform numbers (``"mc"``) or a Latin
-    hypercube (``"lhs"``, McKay, Beckman and Conover (1979)), from :class:`numpy.random.Generator` seeded with
-    ``seed``."""
+    """Points of the unit hypercube, ``(samples, dimensions)``: ``n`` independent uniform numbers (``"mc"``), a Latin
+    hypercube of ``n`` points (``"lhs"``, McKay, Beckman and Conover (1979)), both from
+    :class:`numpy.random.Generator` seeded with ``seed``, or Saltelli's scheme of ``n`` base points (``"sobol"``,
+    ``n (dimensions + 2)`` points, :func:`valvetrain.sensitivity.saltelli_points`)."""
+    if method == "sobol":
+        return saltelli_points(n, dimensions, seed)
     rng = np.random.default_rng(seed)
     if method == "lhs":
         return qmc.LatinHypercube(dimensions, seed=rng).random(n)
@@ -150,7 +172,8 @@ def inverse_cdf(u, tolerance, centre) -> np.ndarray:
 
 
 def draw(spec, centres, n, method, seed) -> np.ndarray:
-    """The samples of a study, ``(n, tolerances)`` in the keys' units, the same for the same arguments."""
+    """The samples of a study, ``(samples, tolerances)`` in the keys' units (:func:`unit_samples` mapped by
+    :func:`inverse_cdf`), the same for the same arguments."""
     u = unit_samples(n, len(centres), method, seed)
     return np.column_stack([inverse_cdf(u[:, j], t, c)
                             for j, (t, c) in enumerate(zip(spec.tolerances, centres, strict=True))])
@@ -417,7 +440,7 @@ def distribution(values) -> Optional[dict[str, Any]]:
     if x.size == 0:
         return None
     low, high = x.min(), x.max()
-    if high - low <= 1e-9 * max(1.0, abs(high)):   # one value (to rounding): one bin about it
+    if constant(low, high):   # one value (to rounding): one bin about it
         low, high = low - 1e-6 * max(1.0, abs(low)), high + 1e-6 * max(1.0, abs(high))
     counts, edges = np.histogram(x, bins=HISTOGRAM_BINS, range=(low, high))
     q = np.quantile(x, [0.0, 0.01, 0.05, 0.5, 0.95, 0.99, 1.0])
@@ -439,13 +462,28 @@ def sensitivities(samples, values, keys) -> dict[str, Optional[float]]:
     return out
 
 
+def sobol_entry(values, keys, seed) -> dict[str, Any]:
+    """The Sobol' indices of an output over the samples of Saltelli's scheme (:func:`valvetrain.sensitivity.
+    sobol_indices`; ``values`` in the samples' order, None where a sample has none): ``blocks`` (the base points
+    used), ``reason`` (None, ``"constant"`` or ``"too_few_samples"``) and ``indices`` (None with a reason, else per
+    tolerance ``first``, ``first_95``, ``total``, ``total_95``: the indices and the half-widths of their 95 %
+    intervals)."""
+    s = sobol_indices([math.nan if v is None else v for v in values], len(keys), seed)
+    return {"blocks": s["blocks"], "reason": s["reason"],
+            "indices": None if s["reason"] else {
+                key: {name: s[name][j] for name in ("first", "first_95", "total", "total_95")}
+                for j, key in enumerate(keys)}}
+
+
 def summary(spec, centres, samples, records, method, seed) -> dict[str, Any]:
     """The results of a study (``tolerance.json``): the tolerances, per check its margin's distribution, its
     failures, probability of failure (of its limit: a check the file accepts, ``accepted``, fails it all the same,
     as ``run`` lists it among the accepted) with the Wilson 95 % interval and the rank correlations of the tolerances
     with its margin; per valve with dynamics the distribution of the headlines; the samples not designed (``refused``:
     refused by the specification's checks or the design, or ``failed``: stopped by an error of valvetrain, counted
-    among them and apart)."""
+    among them and apart).  With ``"sobol"`` also the Sobol' indices (:func:`sobol_entry`) of every check's margin
+    (``sobol`` of each check) and of each headline (``headline_sobol``: valve -> headline -> indices); every sample
+    of Saltelli's scheme has the tolerances' distribution, so the probabilities are over all of them."""
     keys = [t.key for t in spec.tolerances]
     n = len(records)
     ok = [r for r in records if r["status"] == "ok"]
@@ -463,9 +501,14 @@ def summary(spec, centres, samples, records, method, seed) -> dict[str, Any]:
                        "failures": failures, "probability": failures / len(ok),
                        "confidence_95": list(wilson(failures, len(ok))), "margin": distribution(margins),
                        "sensitivities": sensitivities(okx, margins, keys)}
+        if method == "sobol":
+            checks[cid]["sobol"] = sobol_entry([r["checks"].get(cid, [None])[0] if r["status"] == "ok" else None
+                                                for r in records], keys, seed)
     valves = list(dict.fromkeys(v for r in ok for v in r["headlines"]))
-    headlines = {v: {h: distribution([r["headlines"].get(v, {}).get(h) for r in ok])
-                     for h in ("jump_speed_rpm", "max_seating_velocity_m_s")} for v in valves}
+    names = ("jump_speed_rpm", "max_seating_velocity_m_s")
+    headlines = {v: {h: distribution([r["headlines"].get(v, {}).get(h) for r in ok]) for h in names} for v in valves}
+    more = {"headline_sobol": {v: {h: sobol_entry([r["headlines"].get(v, {}).get(h) for r in records], keys, seed)
+                                   for h in names} for v in valves}} if method == "sobol" else {}
     refused = n - len(ok)
     failed = [r for r in records if r["status"] == "failed"]
     return {"method": method, "seed": seed, "samples": n,
@@ -475,4 +518,4 @@ def summary(spec, centres, samples, records, method, seed) -> dict[str, Any]:
                         "confidence_95": list(wilson(refused, n)),
                         "messages": sorted({r["message"] for r in records if r["status"] != "ok"})[:10]},
             "failed": {"samples": len(failed), "messages": sorted({r["message"] for r in failed})[:10]},
-            "checks": checks, "headlines": headlines}
+            "checks": checks, "headlines": headlines, **more}

@@ -63,3 +63,17 @@ def test_no_failing_check_says_so():
     page = report_html(_study({"c": _check(0.0, 0, {"engine.bore_mm": 0.9})}))
     assert "<p>No check fails in any sample.</p>" in page and "<th>check</th>" not in page
     assert 'lang="ru"' in report_html(_study({}), "ru")
+
+
+def test_sobol_bars_by_hand():
+    """S_i = 0.25 +- 0.05 and S_Ti = 0.5 +- 0.6 on 200 px for the index 1: bars 50 and 100 px wide (rows at y = 2 and
+    13 px, 9 px high), error bars 40...60 px and, clipped to 0 ... 1, 0...200 px (-0.1 ... 1.1) at the rows' middles
+    6.5 and 17.5 px."""
+    from valvetrain.report.tolerance import INDEX_WIDTH, indices_svg
+
+    assert INDEX_WIDTH == 200
+    svg = indices_svg({"first": 0.25, "first_95": 0.05, "total": 0.5, "total_95": 0.6})
+    bars = re.findall(r'<rect x="0" y="(\d+)" width="([\d.]+)" height="9"', svg)
+    assert [tuple(map(float, b)) for b in bars] == [(2.0, 50.0), (13.0, 100.0)]
+    assert '<line x1="40.0" x2="60.0" y1="6.5" y2="6.5"' in svg
+    assert '<line x1="0.0" x2="200.0" y1="17.5" y2="17.5"' in svg

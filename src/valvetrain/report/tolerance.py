@@ -1,6 +1,7 @@
 """The report of a tolerance study (``valvetrain tolerance``, ``tolerance.html``): the tolerances, a table of the
 checks that fail in some sample (probability of failure, its 95 % interval, the tolerance that drives it most) and
-the histograms of their margins and of the dynamics headlines, drawn as inline SVG."""
+the histograms of their margins and of the dynamics headlines, drawn as inline SVG; of a study by Saltelli's scheme
+(``--method sobol``) also the Sobol' indices of those checks and headlines with their intervals, a table with bars."""
 
 from html import escape
 
@@ -10,7 +11,8 @@ from .i18n import TOLERANCE_TEXT
 from .names import has_name, label
 
 CITES = {name: f'<span class="cite">{escape(cite(key))}</span>'
-         for name, key in (("devroye", "devroye1986"), ("wilson", "wilson1927"))}
+         for name, key in (("devroye", "devroye1986"), ("wilson", "wilson1927"), ("sobol", "sobol2001"),
+                           ("saltelli", "saltelli2010"))}
 """The works the method's text cites, as the bibliography names them (not translated)."""
 
 WIDTH, HEIGHT = 320, 120
@@ -35,6 +37,58 @@ def histogram_svg(histogram, mark=None) -> str:
     labels = (f'<text x="0" y="10" font-size="10">{low:.4g}</text>'
               f'<text x="{WIDTH}" y="10" font-size="10" text-anchor="end">{high:.4g}</text>')
     return f'<svg width="{WIDTH}" height="{HEIGHT}" viewBox="0 0 {WIDTH} {HEIGHT}">{bars}{line}{labels}</svg>'
+
+
+INDEX_WIDTH, INDEX_HEIGHT = 200, 24
+"""Size of the bars of a tolerance's Sobol' indices, SVG pixels: the index 1 spans the width."""
+
+INDEX_COLOURS = {"first": "#4878a8", "total": "#d08030"}
+"""Colours of the bars of the first-order and the total index."""
+
+
+def indices_svg(entry) -> str:
+    """An SVG bar chart of one tolerance's Sobol' indices (``first``, ``total`` and the half-widths of their 95 %
+    intervals ``first_95``, ``total_95``): a bar from 0 to each index (the first-order one above) on a scale 0 to 1
+    (:data:`INDEX_WIDTH` px), its interval as an error bar; what lies outside [0, 1] is drawn at the edge."""
+
+    def x(v):
+        return min(max(v, 0.0), 1.0) * INDEX_WIDTH
+
+    parts = []
+    for k, name in enumerate(("first", "total")):
+        v, half = entry[name], entry[f"{name}_95"]
+        y, mid = 2 + 11 * k, 2 + 11 * k + 4.5
+        parts.append(f'<rect x="0" y="{y}" width="{x(v):.1f}" height="9" fill="{INDEX_COLOURS[name]}"/>'
+                     f'<line x1="{x(v - half):.1f}" x2="{x(v + half):.1f}" y1="{mid}" y2="{mid}" stroke="#000"/>'
+                     + "".join(f'<line x1="{x(e):.1f}" x2="{x(e):.1f}" y1="{mid - 3}" y2="{mid + 3}" stroke="#000"/>'
+                               for e in (v - half, v + half)))
+    return (f'<svg width="{INDEX_WIDTH}" height="{INDEX_HEIGHT}" viewBox="0 0 {INDEX_WIDTH} {INDEX_HEIGHT}">'
+            f'<rect x="0" y="0" width="{INDEX_WIDTH}" height="{INDEX_HEIGHT}" fill="none" stroke="#bbb"/>'
+            f'{"".join(parts)}</svg>')
+
+
+def sobol_section(result, failing, lang) -> str:
+    """The Sobol' indices of the checks that fail in some sample (``failing``: their ids) and of the dynamics
+    headlines (HTML): a row per tolerance with its first-order and total index, each +- the half-width of its 95 %
+    interval, and their bars (:func:`indices_svg`); an output without indices says why."""
+    t = TOLERANCE_TEXT[lang]
+    keys = [x["key"] for x in result["tolerances"]]
+    outputs = [(check_name(result["checks"][cid], lang), result["checks"][cid]["sobol"]) for cid in failing]
+    outputs += [(f"{valve_name(valve)}: {t['headlines'][h]}", entry)
+                for valve, hs in result["headline_sobol"].items() for h, entry in hs.items()]
+    rows = []
+    for name, entry in outputs:
+        if entry["indices"] is None:
+            rows.append(f'<tr><td>{name}</td><td colspan="4">{t["sobol_reasons"][entry["reason"]]}</td></tr>')
+            continue
+        for j, key in enumerate(keys):
+            e = entry["indices"][key]
+            head = f'<td rowspan="{len(keys)}">{name}</td>' if j == 0 else ""
+            rows.append(f"<tr>{head}<td>{key_name(key, lang)}</td><td>{e['first']:.3f} ± {e['first_95']:.3f}</td>"
+                        f"<td>{e['total']:.3f} ± {e['total_95']:.3f}</td><td>{indices_svg(e)}</td></tr>")
+    table = (f"<table><tr><th>{t['output']}</th><th>{t['key']}</th><th>{t['first']}</th><th>{t['total']}</th>"
+             f"<th>{t['bars']}</th></tr>{''.join(rows)}</table>" if rows else "")
+    return f"<h2>{t['sobol_title']}</h2><p>{t['sobol_text'].format(**CITES)}</p>{table}"
 
 
 def valve_name(valve) -> str:
@@ -96,4 +150,6 @@ def report_html(result, lang="en") -> str:
             "<style>body{font-family:sans-serif;max-width:60em;margin:auto}table{border-collapse:collapse}"
             "td,th{border:1px solid #bbb;padding:2px 6px}figure{display:inline-block;margin:6px}</style></head>"
             f"<body><h1>{t['title']}</h1><p>{summary}</p><p>{t['method_text'].format(**CITES)}</p>{tolerances}{checks}"
-            + (f"<h2>{t['dynamics']}</h2>{heads}" if heads else "") + "</body></html>\n")
+            + (f"<h2>{t['dynamics']}</h2>{heads}" if heads else "")
+            + (sobol_section(result, [cid for _, cid in failing], lang) if result["method"] == "sobol" else "")
+            + "</body></html>\n")
