@@ -28,6 +28,7 @@ from dataclasses import dataclass, replace
 from functools import cached_property
 import sys
 from typing import Optional
+import weakref
 
 import numpy as np
 from numba import get_num_threads
@@ -72,15 +73,31 @@ def substeps(highest_frequency, cam_speeds, step) -> np.ndarray:
 def cam_excitation(law, rocker_ratio, steps_per_rev, per_step, start=-np.pi) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Cam displacement and its slope at the valve on one camshaft revolution.
 
+    They do not depend on the speed (the time step of a speed is the angle step over its speed), so the samples of
+    a law are made once for its grid and kept while the law lives (:data:`_EXCITATIONS`): the sweeps of a design (the
+    coarse and the fine speeds, the rated speed, the refinement's halved steps) and the repeated sweeps of a study
+    share them.  The arrays are shared: read them, don't change them.
+
     Returns
     -------
     theta, u, du : ndarray
         Camshaft angle [rad from the nose] every 2 pi / (steps_per_rev per_step) from ``start``; k h [m];
         k dh/dtheta [m/rad].
     """
-    theta = start + 2.0 * np.pi * np.arange(steps_per_rev * per_step) / (steps_per_rev * per_step)
-    d = law.derivatives(theta)
-    return theta, rocker_ratio * d[0], rocker_ratio * d[1]
+    key = (float(rocker_ratio), int(steps_per_rev), int(per_step), float(start))
+    try:
+        kept = _EXCITATIONS.setdefault(law, {})
+    except TypeError:         # a law that is not hashable or cannot be referred to weakly: made every time
+        kept = {}
+    if key not in kept:
+        theta = start + 2.0 * np.pi * np.arange(steps_per_rev * per_step) / (steps_per_rev * per_step)
+        d = law.derivatives(theta)
+        kept[key] = theta, rocker_ratio * d[0], rocker_ratio * d[1]
+    return kept[key]
+
+
+_EXCITATIONS = weakref.WeakKeyDictionary()
+"""The excitation samples of each live law (:func:`cam_excitation`), law -> {(k, steps, per step, start): arrays}."""
 
 
 @dataclass(frozen=True)
