@@ -1,25 +1,35 @@
-"""Benchmark: a tolerance study of the built-in example with its dynamics (issue 27 item 2), serially, with
-``--workers 2`` and on a local Dask cluster.
+"""Benchmark: a tolerance study of the built-in example with its dynamics (issues 27 and 38), serially, with
+``--workers 2`` and on a local Dask cluster, beside a baseline tree in the same run.
 
-Run on demand: ``python benchmarks/bench_tolerance.py [--samples N]``.  The built-in example (two valves, each with
-a [dynamics] sweep of 200 speeds) gets four tolerances (both clearances, uniform +-0.03 mm; both valve masses, normal
-sigma 1 g).  Printed:
+Run on demand: ``python benchmarks/bench_tolerance.py [--samples N] [--baseline SRC]``, e.g. ``--baseline
+/work/wt/base/src`` (the ``src`` folder of another checkout: the last landed tree).  The built-in example (two valves,
+each with a [dynamics] sweep of 200 speeds) gets four tolerances (both clearances, uniform +-0.03 mm; both valve
+masses, normal sigma 1 g).  Each tree is measured in a process of its own (``PYTHONPATH`` its ``src``), this tree
+first, then the baseline; printed for each:
 
-* the processor time of one sample (all threads of this process, the median of 15; the other jobs of a shared machine
-  change it less than the wall time), :func:`valvetrain.tolerance.evaluate_sample`, beside its baseline measured in
-  the same run: the same design with the full sweep (:func:`valvetrain.design.run` as ``valvetrain run`` designs, the
-  samples' design before the headline sweep, measured first, before a sample keeps the heap), and the time 10^4
-  samples take at it on two idle cores;
+* the processor time of one sample (all threads of the process, the median of 15; the other jobs of a shared machine
+  change it less than the wall time), :func:`valvetrain.tolerance.evaluate_sample`, beside the full design of the
+  same document (:func:`valvetrain.design.run` as ``valvetrain run`` designs, every speed of the sweeps), and the
+  time 10^4 samples take at it on two idle cores;
 * ``valvetrain tolerance`` of N Latin-hypercube samples as a whole command (start-up, validation, the samples, the
-  writing) serially, with ``--workers 2`` and on a Dask ``LocalCluster`` of two one-thread worker processes: samples
-  per second of each, the load average of the machine beside them, and whether the three give the same results;
+  writing) serially, with ``--workers 2`` and on a Dask ``LocalCluster`` of two one-thread worker processes: the
+  wall time and samples per second of each, the processor time of the command and its worker processes (serial and
+  ``--workers 2``: the Dask workers are the cluster's, not the command's) with the samples per processor second,
+  the load average of the machine when it ended, and whether the three give the same results;
+* the ratios of this tree to the baseline: samples per second (the wall rate, which the load of other jobs moves)
+  and samples per processor second (which it moves less);
 * what a Dask cluster of K machines like this one would do: the tasks are independent, so the rate is K times the
   local cluster's (less the scheduler's 3-6 ms a task of up to 32 samples), and K times two cores over the processor
   time of a sample on idle machines.
+
+On a machine shared with other jobs the wall rates follow the load: compare the trees by the processor-time figures
+and re-measure the wall rates idle.
 """
 
 import argparse
+import json
 import os
+import resource
 import statistics
 import subprocess
 import sys
@@ -49,15 +59,27 @@ distribution = "normal"
 sigma = 0.001
 """
 
+SOURCE = Path(__file__).resolve().parent.parent / "src"
+"""This tree's package folder."""
 
-def tolerance(spec, out, *backend):
-    """Wall time [s] of ``valvetrain tolerance`` with ``backend`` options, its tolerance.json without the folder's
-    name, and the load average over the last minute when it ended."""
-    t0 = time.perf_counter()
-    subprocess.run([sys.executable, "-m", "valvetrain", "tolerance", str(spec), "--samples", str(ARGS.samples),
+
+def children_cpu():
+    """Processor time [s] of the waited child processes of this one (and theirs) so far."""
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return usage.ru_utime + usage.ru_stime
+
+
+def tolerance(spec, out, samples, *backend):
+    """``valvetrain tolerance`` with ``backend`` options: its wall time [s], its processor time with its worker
+    processes [s], its tolerance.json without the folder's name, and the load average over the last minute when it
+    ended."""
+    c0, t0 = children_cpu(), time.perf_counter()
+    subprocess.run([sys.executable, "-m", "valvetrain", "tolerance", str(spec), "--samples", str(samples),
                     "--method", "lhs", "--out", str(out), *backend], check=True, stdout=subprocess.DEVNULL)
-    wall = time.perf_counter() - t0
-    return wall, (out / "tolerance.json").read_text(encoding="utf-8").replace(out.name, "X"), os.getloadavg()[0]
+    wall, cpu = time.perf_counter() - t0, children_cpu() - c0
+    result = json.loads((out / "tolerance.json").read_text(encoding="utf-8").replace(out.name, "X"))
+    return {"wall": wall, "cpu": cpu, "load": os.getloadavg()[0],
+            "result": {k: result[k] for k in ("checks", "headlines", "refused", "failed")}}
 
 
 def cpu_per_call(function, document, repeat):
@@ -72,44 +94,88 @@ def cpu_per_call(function, document, repeat):
     return statistics.median(times)
 
 
-def main():
+def measure(samples):
+    """Every figure of the tree on ``sys.path`` (run in a process of its own), a dict."""
     from distributed import LocalCluster
 
+    import valvetrain
     from valvetrain.design import run
     from valvetrain.specification import example_text, validate
     from valvetrain.study import read_document
     from valvetrain.tolerance import evaluate_sample
 
+    out = {"tree": str(Path(valvetrain.__file__).parent.parent)}
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)
         spec = tmp / "engine.toml"
         spec.write_text(example_text() + TOLERANCES, encoding="utf-8")
         document = read_document(spec)
-        load0 = os.getloadavg()[0]
-        full = cpu_per_call(lambda d: run(validate(d)), document, 5)   # first: evaluate_sample keeps the heap
-        cpu = cpu_per_call(evaluate_sample, document, 15)
-        serial, result1, load1 = tolerance(spec, tmp / "serial")
-        workers, result2, load2 = tolerance(spec, tmp / "workers", "--workers", "2")
+        out["load"] = os.getloadavg()[0]
+        out["full"] = cpu_per_call(lambda d: run(validate(d)), document, 5)   # first: evaluate_sample keeps the heap
+        out["sample"] = cpu_per_call(evaluate_sample, document, 15)
+        out["serial"] = tolerance(spec, tmp / "serial", samples)
+        out["workers"] = tolerance(spec, tmp / "workers", samples, "--workers", "2")
         with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster:
-            dask, result3, load3 = tolerance(spec, tmp / "dask", "--scheduler", cluster.scheduler_address)
-    n = ARGS.samples
-    print(f"CPU time of one sample: {cpu:.3f} s (baseline, the full sweep of 200 speeds a valve: {full:.3f} s, "
-          f"{full / cpu:.1f} times as much); load average {load0:.1f}")
-    print(f"10^4 samples on an otherwise idle 2-core machine: {1e4 * cpu / 2 / 60:.1f} min "
-          f"(baseline {1e4 * full / 2 / 60:.1f} min)")
-    for name, wall, load in (("serial", serial, load1), ("--workers 2", workers, load2),
-                             ("Dask LocalCluster, 2 workers x 1 thread", dask, load3)):
-        print(f"tolerance, {n} samples, {name}: {wall:.1f} s, {n / wall:.2f} samples/s "
-              f"(10^4 samples: {1e4 / (n / wall) / 60:.1f} min); load average {load:.1f}")
-    print(f"same results serial, --workers 2 and Dask: {result1 == result2 == result3}")
+            out["dask"] = tolerance(spec, tmp / "dask", samples, "--scheduler", cluster.scheduler_address)
+    return out
+
+
+def measured(source, samples):
+    """:func:`measure` of the tree whose package folder is ``source``, in a child process."""
+    env = dict(os.environ, PYTHONPATH=str(source))
+    res = subprocess.run([sys.executable, __file__, "--child", "--samples", str(samples)], env=env, check=True,
+                         capture_output=True, text=True)
+    return json.loads(res.stdout.splitlines()[-1])
+
+
+def show(name, m, samples):
+    """Print the figures of one tree."""
+    print(f"\n{name} ({m['tree']}): CPU time of one sample {m['sample']:.3f} s (the full design, every speed of "
+          f"the sweeps: {m['full']:.3f} s, {m['full'] / m['sample']:.1f} times as much); load average {m['load']:.1f}")
+    print(f"  10^4 samples on an otherwise idle 2-core machine at that CPU time: {1e4 * m['sample'] / 2 / 60:.1f} min")
+    for key, label in (("serial", "serial"), ("workers", "--workers 2"),
+                       ("dask", "Dask LocalCluster, 2 workers x 1 thread")):
+        r = m[key]
+        cpu = (f", {r['cpu']:.1f} s processor time ({samples / r['cpu']:.2f} samples per processor second)"
+               if key != "dask" else "")
+        print(f"  tolerance, {samples} samples, {label}: {r['wall']:.1f} s, {samples / r['wall']:.2f} samples/s "
+              f"(10^4 samples: {1e4 * r['wall'] / samples / 60:.1f} min){cpu}; load average {r['load']:.1f}")
+    same = m["serial"]["result"] == m["workers"]["result"] == m["dask"]["result"]
+    print(f"  same results serial, --workers 2 and Dask: {same}")
+
+
+def main():
+    samples = ARGS.samples
+    print(f"tolerance benchmark: the built-in example with four tolerances, {samples} samples, {os.cpu_count()} "
+          f"cores, load average {os.getloadavg()[0]:.1f} at the start")
+    new = measured(SOURCE, samples)
+    show("this tree", new, samples)
+    if ARGS.baseline:
+        base = measured(Path(ARGS.baseline).resolve(), samples)
+        show("baseline", base, samples)
+        print("\nthis tree / baseline:")
+        print(f"  processor time of a sample: {new['sample'] / base['sample']:.2f} (baseline / this: "
+              f"{base['sample'] / new['sample']:.2f} x the samples per processor second)")
+        for key, label in (("serial", "serial"), ("workers", "--workers 2"), ("dask", "Dask")):
+            wall = base[key]["wall"] / new[key]["wall"]
+            cpu = (f", samples per processor second x {base[key]['cpu'] / new[key]['cpu']:.2f}"
+                   if key != "dask" else "")
+            print(f"  {label}: samples/s x {wall:.2f}{cpu}")
+        print(f"  same results as the baseline (serial): {new['serial']['result'] == base['serial']['result']}")
     for k in (4, 16, 64):
-        print(f"a Dask cluster of {k} machines like this one: {k * n / dask:.1f} samples/s at the Dask rate measured "
-              f"here, {k * 2 / cpu:.0f} samples/s on idle machines; 10^4 samples in "
-              f"{1e4 / (k * n / dask) / 60:.2f} min and {1e4 / (k * 2 / cpu) / 60:.2f} min")
+        rate = k * samples / new["dask"]["wall"]
+        print(f"a Dask cluster of {k} machines like this one: {rate:.1f} samples/s at the Dask rate measured here, "
+              f"{k * 2 / new['sample']:.0f} samples/s on idle machines; 10^4 samples in {1e4 / rate / 60:.2f} min "
+              f"and {1e4 / (k * 2 / new['sample']) / 60:.2f} min")
 
 
 if __name__ == "__main__":
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--samples", type=int, default=100)
+    parser.add_argument("--baseline", help="the src folder of the baseline tree (e.g. /work/wt/base/src)")
+    parser.add_argument("--child", action="store_true", help=argparse.SUPPRESS)
     ARGS = parser.parse_args()
-    main()
+    if ARGS.child:
+        print(json.dumps(measure(ARGS.samples)))
+    else:
+        main()

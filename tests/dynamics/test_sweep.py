@@ -337,3 +337,20 @@ def test_a_halving_halves_the_time_step_where_a_halved_step_alone_would_not():
     assert np.array_equal(half.theta[::2], base.theta) and np.array_equal(half.theta, plain.theta)
     assert np.array_equal(plain.lift[0, ::2], base.lift[0]) and not np.array_equal(half.lift[0], plain.lift[0])
     assert np.array_equal(half.lift[1], plain.lift[1])
+
+
+def test_the_excitation_kept_is_each_laws_own():
+    """The cam's samples are kept per law and grid (sweep.cam_excitation): a second law's sweep of the same grid, and
+    a second grid of the same law, get their own samples (the law's derivatives on their own angles, the independent
+    reference), not those kept first."""
+    from valvetrain.dynamics.sweep import cam_excitation
+
+    law, train = spec12()
+    other = harmonic_cam(8e-3, np.radians(50.0))   # unhashable (a SimpleNamespace): made every time
+    for f in (law, other):
+        for steps, per_step in ((360, 2), (720, 4)):
+            theta, u, du = cam_excitation(f, 1.5, steps, per_step)
+            assert theta.size == steps * per_step
+            d = f.derivatives(theta)
+            np.testing.assert_array_equal(u, 1.5 * d[0])
+            np.testing.assert_array_equal(du, 1.5 * d[1])

@@ -28,6 +28,7 @@ from dataclasses import dataclass, replace
 from functools import cached_property
 import sys
 from typing import Optional
+import weakref
 
 import numpy as np
 from numba import get_num_threads
@@ -72,15 +73,31 @@ def substeps(highest_frequency, cam_speeds, step) -> np.ndarray:
 def cam_excitation(law, rocker_ratio, steps_per_rev, per_step, start=-np.pi) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Cam displacement and its slope at the valve on one camshaft revolution.
 
+    They do not depend on the speed (the time step of a speed is the angle step over its speed), so the samples of
+    a law are made once for its grid and kept while the law lives (:data:`_EXCITATIONS`): the sweeps of a design (the
+    coarse and the fine speeds, the rated speed, the refinement's halved steps) and the repeated sweeps of a study
+    share them.  The arrays are shared: read them, don't change them.
+
     Returns
     -------
     theta, u, du : ndarray
         Camshaft angle [rad from the nose] every 2 pi / (steps_per_rev per_step) from ``start``; k h [m];
         k dh/dtheta [m/rad].
     """
-    theta = start + 2.0 * np.pi * np.arange(steps_per_rev * per_step) / (steps_per_rev * per_step)
-    d = law.derivatives(theta)
-    return theta, rocker_ratio * d[0], rocker_ratio * d[1]
+    key = (float(rocker_ratio), int(steps_per_rev), int(per_step), float(start))
+    try:
+        kept = _EXCITATIONS.setdefault(law, {})
+    except TypeError:         # a law that is not hashable or cannot be referred to weakly: made every time
+        kept = {}
+    if key not in kept:
+        theta = start + 2.0 * np.pi * np.arange(steps_per_rev * per_step) / (steps_per_rev * per_step)
+        d = law.derivatives(theta)
+        kept[key] = theta, rocker_ratio * d[0], rocker_ratio * d[1]
+    return kept[key]
+
+
+_EXCITATIONS = weakref.WeakKeyDictionary()
+"""The excitation samples of each live law (:func:`cam_excitation`), law -> {(k, steps, per step, start): arrays}."""
 
 
 @dataclass(frozen=True)
@@ -375,16 +392,36 @@ def lift_event(kinematic, lift, follower=None, tolerance=BOUNCE_TOLERANCE) -> np
     n = lift.shape[-1]
     index = np.arange(n)
     peak = np.expand_dims(np.argmax(lift, axis=-1), -1)
-    after_peak = np.min(np.where(lift <= 0.0, (index - peak) % n, n), axis=-1, keepdims=True)
-    returned = (after_peak < n) & (np.max(lift, axis=-1, keepdims=True) > 0.0)
+    after_peak = samples_to(lift <= 0.0, peak)
+    returned = (after_peak < n) & (np.take_along_axis(lift, peak, -1) > 0.0)
     seat = (peak + after_peak) % n
-    bottom = (seat + np.min(np.where(kinematic <= kinematic.min(), (index - seat) % n, n), axis=-1, keepdims=True)) % n
+    bottom = (seat + samples_to(np.broadcast_to(kinematic <= kinematic.min(), lift.shape), seat)) % n
     caught = (kinematic > 0.0) & (lift > tolerance) & (follower < kinematic)
-    after = np.min(np.where(caught, (index - bottom) % n, n), axis=-1, keepdims=True)
+    after = samples_to(caught, bottom)
     rising = np.flatnonzero(kinematic > 0.0)
     start = np.where(after < n, (bottom + after) % n, rising[0] if rising.size else seat)
-    inside = (index - start) % n < (seat - start) % n
+    shifted = index - start
+    inside = np.where(shifted < 0, shifted + n, shifted) < (seat - start) % n
     return np.where(returned, inside, rising.size > 0)
+
+
+def samples_to(mask, origin) -> np.ndarray:
+    """Samples from ``origin`` forward, round the record, to the first True of ``mask`` in each row of (S, n) (or one
+    (n,) record), origin (S, 1) (or (1,)); n where the row has none.
+
+    Two first-True searches (at or after the origin, else from the start), not the distance (index - origin) mod n of
+    every sample: the integer division of that took most of the time of :func:`lift_event`, which every sweep's events
+    run.
+
+    >>> samples_to(np.array([[1, 0, 0, 1, 0], [0, 0, 0, 0, 0]], dtype=bool), np.array([[4], [1]])).tolist()
+    [[1], [5]]
+    """
+    n = mask.shape[-1]
+    ahead = mask & (np.arange(n) >= origin)
+    later = np.expand_dims(np.argmax(ahead, axis=-1), -1)
+    first = np.expand_dims(np.argmax(mask, axis=-1), -1)
+    return np.where(np.take_along_axis(ahead, later, -1), later - origin,
+                    np.where(np.take_along_axis(mask, first, -1), first + n - origin, n))
 
 
 def separation_mask(contact, kinematic, lift, event=None, follower=None, tolerance=BOUNCE_TOLERANCE) -> np.ndarray:
