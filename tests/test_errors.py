@@ -1,9 +1,12 @@
 """Every error valvetrain raises on purpose derives from one base (issue 41)."""
 
+import builtins
 import importlib
 import inspect
+from pathlib import Path
 import pickle
 import pkgutil
+import re
 
 import pytest
 
@@ -51,3 +54,20 @@ def test_an_error_no_command_handles_is_one_line_not_a_traceback(monkeypatch, tm
     monkeypatch.setattr(valvetrain.design, "run", refuse)
     result = CliRunner().invoke(main, ["run", "--out", str(tmp_path / "design"), "--figures", "none"])
     assert (result.exit_code, result.stderr) == (1, "error: valves.intake.lift_mm: must be below 50 mm (got 80.0)\n")
+
+
+def test_no_builtin_error_is_raised_on_purpose():
+    """The source raises no bare ValueError, RuntimeError, KeyError or Exception: each error made on purpose is a
+    ValvetrainError (an InputError for a value refused).  Allowed, where a protocol asks for them: the
+    NotImplementedError of an interface's abstract method, the TypeError of json's default encoder, the
+    AttributeError of a module's lazy ``__getattr__``, the KeyboardInterrupt of Ctrl-C, the ImportError of a missing
+    optional extra and an OSError (or its kind) that mirrors the system's."""
+    protocol = {"NotImplementedError", "TypeError", "AttributeError", "KeyboardInterrupt", "ImportError"}
+    builtin = {name for name in dir(builtins) if isinstance(getattr(builtins, name), type)
+               and issubclass(getattr(builtins, name), BaseException)
+               and not issubclass(getattr(builtins, name), OSError)} - protocol
+    root = Path(valvetrain.__file__).parent
+    found = [f"{p.relative_to(root)}:{i}: {line.strip()}" for p in sorted(root.rglob("*.py"))
+             for i, line in enumerate(p.read_text(encoding="utf-8").splitlines(), 1)
+             if (m := re.search(r"\braise (\w+)\b", line)) and m.group(1) in builtin]
+    assert found == [], found

@@ -11,6 +11,7 @@ position 0.
 import numpy as np
 from scipy.linalg import eigh
 
+from .errors import InputError
 from .strength import camshaft_deflection
 
 
@@ -116,7 +117,7 @@ def order_phasors(values, orders) -> np.ndarray:
     t = np.asarray(values, dtype=float)
     n = t.shape[-1]
     if not 0 <= orders < n / 2:
-        raise ValueError(f"orders = {orders}: allowed 0 ... {(n - 1) // 2} for {n} samples")
+        raise InputError(f"orders = {orders}: allowed 0 ... {(n - 1) // 2} for {n} samples")
     c = np.fft.rfft(t, axis=-1)[..., : orders + 1] / n
     c[..., 1:] *= 2.0
     return c
@@ -133,7 +134,7 @@ def order_series(phasors, n) -> np.ndarray:
     """
     c = np.asarray(phasors, dtype=complex)
     if n <= 2 * (c.shape[-1] - 1):
-        raise ValueError(f"n = {n}: more than {2 * (c.shape[-1] - 1)} samples are needed for {c.shape[-1] - 1} orders")
+        raise InputError(f"n = {n}: more than {2 * (c.shape[-1] - 1)} samples are needed for {c.shape[-1] - 1} orders")
     spectrum = np.zeros(c.shape[:-1] + (n // 2 + 1,), dtype=complex)
     spectrum[..., : c.shape[-1]] = c * n / 2.0
     spectrum[..., 0] = c[..., 0] * n

@@ -39,6 +39,7 @@ from decimal import Decimal
 import math
 from typing import Any
 
+from .errors import InputError
 from .locale import catalogue, code_of, record_text
 from .units import displayed, to_display
 
@@ -265,7 +266,7 @@ def check(code, value, low=None, high=None, *, source, unit="", severity="warnin
     ('failure', False, 'largest dynamic seating velocity up to the rated speed cannot be evaluated: the valve has not reseated')
     """
     if severity not in SEVERITIES:
-        raise ValueError(f"severity = {severity!r}: allowed {SEVERITIES}")
+        raise InputError(f"severity = {severity!r}: allowed {SEVERITIES}")
     value = float("nan") if value is None else float(value)
     if math.isfinite(value):
         unevaluated = ""

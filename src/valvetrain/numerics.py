@@ -7,6 +7,8 @@ import math
 
 import numpy as np
 
+from .errors import InputError
+
 _GAUSS_ORDER = 16
 _NODES, _WEIGHTS = np.polynomial.legendre.leggauss(_GAUSS_ORDER)
 
@@ -48,7 +50,7 @@ def _gauss_pieces(grid, breakpoints):
     """(grid, edges, half widths, nodes shape (pieces, order)) of :func:`cumulative_integral`'s pieces."""
     grid = np.asarray(grid, dtype=float)
     if grid.ndim != 1 or grid.size < 2 or np.any(np.diff(grid) <= 0):
-        raise ValueError("grid must be a strictly increasing 1-D array of at least two points")
+        raise InputError("grid must be a strictly increasing 1-D array of at least two points")
     bp = np.asarray(breakpoints, dtype=float)
     bp = bp[(bp > grid[0]) & (bp < grid[-1])]
     edges = np.unique(np.concatenate([grid, bp]))

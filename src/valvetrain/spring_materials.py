@@ -46,6 +46,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .errors import InputError
 from .units import MPA
 
 ALLOWABLE_SHARE = 0.50
@@ -160,11 +161,11 @@ def grade(name) -> WireGrade:
 
     Raises
     ------
-    KeyError
+    InputError
         With the names allowed.
     """
     key = name.replace("-", "").replace(" ", "").lower()
     for grade_name, found in GRADES.items():
         if grade_name.lower() == key:
             return found
-    raise KeyError(f"material = {name!r}: allowed {', '.join(repr(n) for n in GRADES)}")
+    raise InputError(f"material = {name!r}: allowed {', '.join(repr(n) for n in GRADES)}")

@@ -346,7 +346,7 @@ HEADLINE_KEYS = {"jump_speed_rpm", "max_seating_velocity_m_s"}
 
 
 def _no_constant(name):
-    raise ValueError(f"{name} is no number of a record")
+    raise InputError(f"{name} is no number of a record")
 
 
 def _number(x, finite=True):

@@ -8,6 +8,7 @@ time-area in m^2 s, crank speeds omega in rad/s.
 import numpy as np
 
 from .crank.kinematics import crank_angle_at, displacement
+from .errors import InputError
 
 PORT_SIZE_RANGES = {"exhaust": ((0.26, 0.28), (0.20, 0.24)), "transfer": ((0.18, 0.22), (0.24, 0.28)),
                     "inlet": ((0.18, 0.32), (0.22, 0.30))}
@@ -57,7 +58,7 @@ def port_angle(sigma, lam, exact=True) -> float:
     if not exact:
         return port_angle_series(sigma, lam)
     if not 0.0 < sigma < 1.0:
-        raise ValueError(f"relative port height {sigma!r}: allowed (0, 1)")
+        raise InputError(f"relative port height {sigma!r}: allowed (0, 1)")
     # piston travel from TDC reaches S - h at alpha = pi - phi (unit stroke)
     return np.pi - float(crank_angle_at(1.0 - sigma, 0.5, lam))
 

@@ -14,6 +14,7 @@ import math
 
 import numpy as np
 
+from .errors import InputError
 from .languages import LANGS
 
 MM = 1e-3
@@ -40,7 +41,7 @@ def rpm_to_rad_s(n) -> float | np.ndarray:
 def cam_per_crank(strokes) -> float:
     """Camshaft revolutions per crank revolution: 1/2 for a four-stroke, 1 for a two-stroke."""
     if strokes not in (2, 4):
-        raise ValueError(f"strokes = {strokes!r}: allowed values are 2 and 4")
+        raise InputError(f"strokes = {strokes!r}: allowed values are 2 and 4")
     return 2.0 / strokes
 
 
@@ -116,7 +117,7 @@ def to_display(value, unit) -> float | np.ndarray:
     try:
         return value / UNITS[unit][0]
     except KeyError:
-        raise ValueError(f"unit {unit!r}: allowed {sorted(UNITS)}") from None
+        raise InputError(f"unit {unit!r}: allowed {sorted(UNITS)}") from None
 
 
 def per_cam_degree(value, order, omega) -> float | np.ndarray:

@@ -17,6 +17,8 @@ from functools import cache
 import numpy as np
 from numba import njit
 
+from ..errors import InputError
+
 SPECIES_FILE = "nasa_gas.yaml"
 """Cantera's file of the NASA Glenn thermodynamic data (McBride, Zehe and Gordon (2002)), 200-6000 K."""
 
@@ -50,7 +52,7 @@ def _species(names) -> dict:
         s = found[name]
         data = s.thermo.input_data
         if data["model"] != "NASA7":
-            raise ValueError(f"{name} in {SPECIES_FILE}: NASA7 polynomials expected, not {data['model']}")
+            raise InputError(f"{name} in {SPECIES_FILE}: NASA7 polynomials expected, not {data['model']}")
         weight = sum(ct.Element(e).weight * n for e, n in s.composition.items()) / 1000.0
         rows = np.array(data["data"], dtype=float)
         ranges = data["temperature-ranges"]
@@ -143,7 +145,7 @@ class Gas:
         data = species(moles)
         mids = {data[s][2] for s in moles} - {0.0} or {1000.0}
         if len(mids) != 1:
-            raise ValueError(f"{name}: the species' polynomials change range at different temperatures {sorted(mids)}")
+            raise InputError(f"{name}: the species' polynomials change range at different temperatures {sorted(mids)}")
         masses = {s: n * data[s][0] for s, n in moles.items()}
         total = sum(masses.values())
         fractions = {s: m / total for s, m in masses.items()}
@@ -297,7 +299,7 @@ def mixture(a, b, fraction) -> np.ndarray:
     :math:`c = c_a + x (c_b - c_a)`, :math:`R = R_a + x (R_b - R_a)`.
     """
     if a.t_mid != b.t_mid:
-        raise ValueError(f"{a.name} and {b.name} change range at {a.t_mid:g} and {b.t_mid:g} K")
+        raise InputError(f"{a.name} and {b.name} change range at {a.t_mid:g} and {b.t_mid:g} K")
     return a.coefficients + fraction * (b.coefficients - a.coefficients)
 
 
@@ -326,7 +328,7 @@ def _air():
 def _fuel(fuel):
     """The species name of ``fuel`` and its atoms of C, H and O per molecule."""
     if fuel not in FUELS:
-        raise ValueError(f"fuel = {fuel!r}: allowed {', '.join(FUELS)}")
+        raise InputError(f"fuel = {fuel!r}: allowed {', '.join(FUELS)}")
     name = FUELS[fuel]
     atoms = species([name])[name][3]
     return name, {e: atoms.get(e, 0.0) for e in ("C", "H", "O")}
@@ -397,7 +399,7 @@ def burned_gas(fuel, equivalence_ratio) -> Gas:
     mixtures below about 2000 K, Heywood (1988), chapter 4).
     """
     if not 0.0 < equivalence_ratio <= 1.0:
-        raise ValueError(f"equivalence_ratio = {equivalence_ratio:g}: allowed 0 < phi <= 1 (complete combustion)")
+        raise InputError(f"equivalence_ratio = {equivalence_ratio:g}: allowed 0 < phi <= 1 (complete combustion)")
     _, products = _burned_moles(fuel, equivalence_ratio)
     return Gas.of(f"burned {fuel}, phi {equivalence_ratio:g}", products)
 

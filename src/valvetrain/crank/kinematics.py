@@ -13,6 +13,7 @@ manual (``exact=False``).
 
 import numpy as np
 
+from ..errors import InputError
 from ..numerics import extremum
 
 
@@ -237,7 +238,7 @@ def crank_angle_at(travel, radius, lam, k=0.0, exact=True, upstroke=False) -> fl
     s = np.asarray(travel, dtype=float)
     full = piston_stroke(radius, lam, k) if exact else 2.0 * radius
     if np.any(s < 0.0) or np.any(s > full):
-        raise ValueError(f"piston travel from TDC: allowed 0 ... {full:g} m (the stroke)")
+        raise InputError(f"piston travel from TDC: allowed 0 ... {full:g} m (the stroke)")
     if exact:
         rod, a = radius / lam, k * radius
         top, bottom = np.sqrt((rod + radius) ** 2 - a**2), np.sqrt((rod - radius) ** 2 - a**2)
@@ -249,7 +250,7 @@ def crank_angle_at(travel, radius, lam, k=0.0, exact=True, upstroke=False) -> fl
         delta = np.arctan2(a, x)
     else:
         if k != 0.0:
-            raise ValueError("the series (1.3) of an offset mechanism is measured from the phi = 0 position, not "
+            raise InputError("the series (1.3) of an offset mechanism is measured from the phi = 0 position, not "
                              "from TDC, and is a quartic in cos phi: use the exact kinematics")
         u = s / radius
         w = 2.0 - u
@@ -320,6 +321,6 @@ def brix_crank_angle(travel, radius, lam, upstroke=False) -> float | np.ndarray:
     """
     s = np.asarray(travel, dtype=float)
     if np.any(s < 0.0) or np.any(s > 2.0 * radius):
-        raise ValueError(f"piston travel from TDC: allowed 0 ... {2.0 * radius:g} m (the stroke)")
+        raise InputError(f"piston travel from TDC: allowed 0 ... {2.0 * radius:g} m (the stroke)")
     phi = np.arctan2(np.sqrt(s * (2.0 * radius - s)), radius + radius * lam / 2.0 - s)
     return 2.0 * np.pi - phi if upstroke else phi

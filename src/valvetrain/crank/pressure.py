@@ -340,10 +340,10 @@ def check_timing(cycle) -> None:
     end = evo + np.degrees(cycle.blowdown)
     ivo, evc = np.degrees(cycle.intake_opens) + 720.0, np.degrees(cycle.exhaust_closes) + 720.0
     if not 0.0 < ivc < 360.0 + np.degrees(cycle.start):
-        raise ValueError(f"the intake valve closes at {ivc:.4g} crank deg; the Wiebe model needs it after the "
+        raise InputError(f"the intake valve closes at {ivc:.4g} crank deg; the Wiebe model needs it after the "
                          f"gas-exchange TDC and before the start of combustion, 0...{360.0 + np.degrees(cycle.start):.4g}")
     if not (360.0 < evo and end <= ivo and evc - 720.0 < ivc and evc >= ivo):
-        raise ValueError(f"the exhaust valve opens at {evo:.4g} crank deg (blowdown to {end:.4g}) and the overlap "
+        raise InputError(f"the exhaust valve opens at {evo:.4g} crank deg (blowdown to {end:.4g}) and the overlap "
                          f"runs {ivo - 720.0:.4g}...{evc - 720.0:.4g}; the Wiebe model needs the opening after the "
                          "firing TDC (360), the blowdown ended before the intake valve opens, and the exhaust valve "
                          "closed before the intake valve closes")

@@ -16,6 +16,7 @@ import numpy as np
 
 from .. import cam_grinding
 from ..checks import Check, check
+from ..errors import InputError
 from ..specification.messages import Problem
 from ..units import MM
 from .results import quantity
@@ -131,7 +132,7 @@ def grinding_stage(grinding, cam, name, export_step) -> tuple[GrindingResult, li
     if base is None:
         base = cam_grinding.default_master_base_radius(heel, r_w, i, r_m)
         if base <= 0.0:
-            raise ValueError(Problem(
+            raise InputError(Problem(
                 "master_follower_radius_mm", f"the master's heel radius bar_ratio x (cam heel radius + "
                 f"wheel_radius_mm) - master_follower_radius_mm = {base / MM:.4g} mm is not positive; allowed "
                 f"master_follower_radius_mm < {i * (heel + r_w) / MM:.4g} mm, or give master_base_radius_mm",

@@ -26,6 +26,7 @@ import numpy as np
 from ..checks import Check, check
 from ..crank.pressure import on_grid
 from ..dynamics.sweep import BOUNCE_TOLERANCE
+from ..errors import InputError
 from ..flow import circle_area
 from ..hydraulic_actuation import (Actuator, DriveResult, Fluid, HydraulicDrive, Pipe, Pump, SpeedSweep, Valve, simulate,
                          speed_sweep)
@@ -307,7 +308,7 @@ def hydraulic_stage(valve, law, engine, gas, name, nose, cylinder=None) -> tuple
     revolutions = np.concatenate([speeds, [speed] * (1 if cylinder is None else 2)]) * to_cam
     work = float(np.sum(2.0 * math.pi / revolutions)) / drive.time_step * (drive.pipe.reaches + 1)
     if work > MAX_NODE_STEPS:
-        raise ValueError(Problem(
+        raise InputError(Problem(
             "reaches", f"the simulation and the {speeds.size} speeds of the sweep take {work:.3g} node updates of the "
             f"pipe grid (time step {drive.time_step * 1e6:.3g} us); allowed <= {MAX_NODE_STEPS:.0e}: use fewer "
             "reaches, a longer pipe, fewer speeds or higher ones", f"{drive.pipe.reaches}"))

@@ -18,6 +18,7 @@ import numpy as np
 from .. import flow, geometry
 from ..checks import Check, check, failed, ranked, tally
 from ..crank.kinematics import displacement
+from ..errors import InputError
 from ..followers import follower_of
 from ..laws import LiftLaw
 from ..laws.base import Extremes
@@ -430,16 +431,16 @@ def law_stage(valve, engine, law=None) -> CamResult:
     try:
         law = cam.section.build(valve, engine) if law is None else law
     except ValueError as exc:
-        raise ValueError(Problem("cam", str(exc))) from None
+        raise InputError(Problem("cam", str(exc))) from None
     nose_lift = law.lift_max + law.ramp_height
     low, high = (extremum(law.lift, law.breakpoints, kind)[1] for kind in ("min", "max"))
     if high > nose_lift * (1.0 + 1e-6) or low < -1e-6 * nose_lift:
-        raise ValueError(Problem("cam", f"the lift runs from {low / MM:.4g} to {high / MM:.4g} mm; allowed 0 to the nose "
+        raise InputError(Problem("cam", f"the lift runs from {low / MM:.4g} to {high / MM:.4g} mm; allowed 0 to the nose "
                                  f"lift {nose_lift / MM:.4g} mm (the law's angles and ramp velocity do not fit together)"))
     event = law.end - law.start
     if not event < 2.0 * np.pi:
         ramp = math.degrees(law.ramp_angle)
-        raise ValueError(Problem("cam", f"the cam event lasts {math.degrees(event):.4g} cam deg; allowed < 360" + (
+        raise InputError(Problem("cam", f"the cam event lasts {math.degrees(event):.4g} cam deg; allowed < 360" + (
             f" (a ramp of {ramp:.4g} cam deg on each flank: raise ramp_end_velocity_mm_per_deg or lower "
             "clearance_mm)" if ramp > 0.0 else "")))
     lift = law.lift_max * valve.rocker_ratio
@@ -449,14 +450,14 @@ def law_stage(valve, engine, law=None) -> CamResult:
                    "throat area at a quarter of the diameter)")
         if cam.law == "table":
             key = "cam.table_file" if cam.table_file is not None else "cam.table_lifts_mm"
-            raise ValueError(Problem(key, f"the measured valve lift = {lift / MM:.4g} mm: {allowed}"))
-        raise ValueError(Problem("max_lift_mm", allowed, f"{lift / MM:.4g} mm"))
+            raise InputError(Problem(key, f"the measured valve lift = {lift / MM:.4g} mm: {allowed}"))
+        raise InputError(Problem("max_lift_mm", allowed, f"{lift / MM:.4g} mm"))
     follower = follower_of(cam)
     if follower.law_at_valve:   # a finger on a measured table (or a caller's law): its lift known only now
         problem = follower.geometry_problem(cam.base_radius - law.ramp_height, law.lift_max + law.ramp_height)
         if problem:
             key, value, message, joiner = problem
-            raise ValueError(Problem(f"cam.{key}", message, value, joiner))
+            raise InputError(Problem(f"cam.{key}", message, value, joiner))
     omega = engine.rated_speed / 2.0
     ext = law.extremes(omega)
     seat = valve.rocker_ratio * omega * np.abs(law.derivatives(np.array([law.valve_opens, law.valve_closes]))[1])
@@ -594,7 +595,7 @@ def clearance_stage(cam, valve, engine, advance=0.0) -> Optional[ClearanceResult
     i = int(np.argmin(gap))
     angle = float(wrap_crank(crank[i]))
     if gap[i] <= 0.0:
-        raise ValueError(f"the valve hits the piston: the valve-piston gap falls to {gap[i] / MM:.4g} mm at "
+        raise InputError(f"the valve hits the piston: the valve-piston gap falls to {gap[i] / MM:.4g} mm at "
                          f"{math.degrees(angle):.4g} crank deg (Shang Hanji (1988), eqs. 2.13-2.14, with piston_gap_tdc_mm = "
                          f"{valve.piston_gap_tdc / MM:g}); allowed a gap > 0: lower the lift near TDC or deepen the "
                          "valve pocket")

@@ -16,6 +16,7 @@ from typing import Optional
 
 import numpy as np
 
+from ..errors import InputError
 from ..masses import spring_mass
 from ..springs import length_at_pitch, spring_rate
 from ..strength import STEEL_MODULUS, camshaft_deflection
@@ -528,14 +529,14 @@ def static_equilibrium(network, cam=0.0) -> np.ndarray:
         try:
             x = np.linalg.solve(k, r)
         except np.linalg.LinAlgError:
-            raise ValueError("no rest position: a node of the train is held by no element") from None
+            raise InputError("no rest position: a node of the train is held by no element") from None
         xa = np.where(network.a >= 0, x[np.maximum(network.a, 0)], ua)
         xb = np.where(network.b >= 0, x[np.maximum(network.b, 0)], ub)
         now = ~network.unilateral | (xa - xb - network.gap > 0.0)
         if np.array_equal(now, closed):
             return x
         closed = now
-    raise ValueError("no rest position: the contacts of the train do not settle")
+    raise InputError("no rest position: the contacts of the train do not settle")
 
 
 @dataclass(frozen=True)

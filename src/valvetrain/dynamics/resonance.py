@@ -14,6 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..errors import InputError
 from ..springs import required_spring_force
 
 DAMPING_FACTOR = 0.107
@@ -228,7 +229,7 @@ def resonance(law, cam_speed, mass, spring_rate, drive_stiffness, rocker_ratio, 
     elif period == "event":
         theta = law.start + (law.end - law.start) * np.arange(samples) / samples
     else:
-        raise ValueError(f"period must be 'revolution' or 'event', not {period!r}")
+        raise InputError(f"period must be 'revolution' or 'event', not {period!r}")
     lift = law.lift(theta)
     orders = np.arange(max(k - span, 1), k + span + 1)
     force = harmonic_force(lift, drive_stiffness, rocker_ratio, orders)[2]

@@ -33,6 +33,7 @@ import weakref
 import numpy as np
 from numba import get_num_threads
 
+from ..errors import InputError
 from .kernels import blocks, integrate_block, rows
 
 STEP_LIMIT = 1.0
@@ -809,9 +810,9 @@ def sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, progress=None, bo
     speeds = np.atleast_1d(np.asarray(cam_speeds, dtype=float))
     steps = int(round(360.0 / step_deg))
     if not np.isclose(steps * step_deg, 360.0, rtol=0, atol=1e-9):
-        raise ValueError(f"the step {step_deg} deg does not divide the camshaft revolution")
+        raise InputError(f"the step {step_deg} deg does not divide the camshaft revolution")
     if revolutions < 1 or np.any(speeds <= 0.0) or halvings < 0:
-        raise ValueError("sweep: at least one revolution, positive camshaft speeds and no negative halvings are needed")
+        raise InputError("sweep: at least one revolution, positive camshaft speeds and no negative halvings are needed")
     rate = net.highest_frequency()
     n_sub = substeps(rate, speeds, 2.0 * np.pi / steps)
     steps *= 2**halvings

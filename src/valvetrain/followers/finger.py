@@ -53,6 +53,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..errors import InputError
 from ..numerics import bracketed_roots
 from .base import register
 from .roller import RollerFollower
@@ -206,7 +207,7 @@ class PivotedFollower(RollerFollower):
         g0 = heel + self.radius
         k = (g0 ** 2 - p ** 2 - self.roller_arm ** 2) / (2.0 * self.roller_arm * p)
         if abs(k) > 1.0:
-            raise ValueError(f"the finger's roller arm {self.roller_arm:g} m from the pivot at {p:g} m from the cam "
+            raise InputError(f"the finger's roller arm {self.roller_arm:g} m from the pivot at {p:g} m from the cam "
                              f"centre cannot reach the heel circle of the roller centre, radius {g0:g} m")
         roots = np.arctan2(self.pivot_y, self.pivot_x) + np.array([1.0, -1.0]) * np.arccos(k)
         return float(roots[np.argmax(self.pivot_y + self.roller_arm * np.sin(roots))])
@@ -226,7 +227,7 @@ class PivotedFollower(RollerFollower):
         chi0 = self._chi0(heel)
         s = np.sin(chi0) + np.asarray(v, dtype=float) / lb
         if np.any(np.abs(s) > 1.0):
-            raise ValueError(f"the valve pad at {lb:g} m from the pivot cannot give a valve lift of "
+            raise InputError(f"the valve pad at {lb:g} m from the pivot cannot give a valve lift of "
                              f"{float(np.max(v)):g} m")
         chi = np.arcsin(s)
         return np.where(np.cos(chi0) >= 0.0, chi, np.pi - chi) - self.valve_angle - beta

@@ -16,6 +16,8 @@ the method of characteristics of Wylie and Streeter (1978).
 import numpy as np
 from numba import njit
 
+from ..errors import InputError
+
 PRESSURE = 0
 """Boundary kind: the pressure at the pipe end is prescribed."""
 
@@ -141,7 +143,7 @@ def pipe_transient(pressure, velocity, density, wave_speed, diameter, friction_f
     left = np.asarray(left, dtype=float)
     right = np.asarray(right, dtype=float)
     if left.shape != right.shape:
-        raise ValueError("the left and right end conditions need one value per time step each")
+        raise InputError("the left and right end conditions need one value per time step each")
     impedance = density * wave_speed
     friction = impedance * time_step * friction_factor / (2.0 * diameter)
     ends = _pipe_kernel(p, u, impedance, friction, float(vapour_pressure), int(left_kind), left,

@@ -9,6 +9,7 @@ at the nose, which :attr:`AsymmetricLaw.nose_acceleration_jump` reports.
 import numpy as np
 
 from ..checks import check
+from ..errors import InputError
 from .base import LiftLaw
 from .errors import LawError
 
@@ -26,7 +27,7 @@ class AsymmetricLaw(LiftLaw):
         if not np.isclose(opening.lift_max, closing.lift_max, rtol=1e-9, atol=0.0):
             raise LawError("flanks_lift_differ", opening=opening.lift_max, closing=closing.lift_max)
         if not np.isclose(opening.ramp_height, closing.ramp_height, rtol=1e-9, atol=1e-15):
-            raise ValueError("asymmetric cam: the flanks have different ramp heights")
+            raise InputError("asymmetric cam: the flanks have different ramp heights")
         self.opening, self.closing = opening, closing
         self.name = opening.name if opening.name == closing.name else f"{opening.name}/{closing.name}"
         flanks = (opening.source if opening.source == closing.source

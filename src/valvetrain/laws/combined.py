@@ -16,6 +16,7 @@ by exact integration from the ramp's end (h0, v0, zero acceleration).  The unkno
 
 import numpy as np
 
+from ..errors import InputError
 from .base import RampedLaw, SymmetricLaw, segment_index
 from .ramps import make_ramp
 
@@ -49,7 +50,7 @@ def _basis(shape, x, length):
         u = 1 - t
         return np.array([[one, x, x * x / 2, 0 * x],
                          [u**2, L * (1 - u**3) / 3, L * L * (u**4 - 1 + 4 * t) / 12, -2 * u / L]])
-    raise ValueError(f"segment shape {shape!r}: allowed {', '.join(SHAPES)}")
+    raise InputError(f"segment shape {shape!r}: allowed {', '.join(SHAPES)}")
 
 
 class CombinedLaw(RampedLaw, SymmetricLaw):
@@ -101,7 +102,7 @@ class CombinedLaw(RampedLaw, SymmetricLaw):
         self.shapes = [s for s, _ in segments]
         self.lengths = np.array([float(L) for _, L in segments])
         if np.any(self.lengths <= 0):
-            raise ValueError("combined law: every segment length must be positive")
+            raise InputError("combined law: every segment length must be positive")
         self._edges = np.concatenate([[0.0, self.ramp.length], self.ramp.length + np.cumsum(self.lengths)])
         self._amplitudes = self._solve(list(ratios))
 
@@ -146,12 +147,12 @@ class CombinedLaw(RampedLaw, SymmetricLaw):
         needed = np.any(np.abs(a) > 1e-14 * np.abs(a).max(), axis=1)   # shapes meet some junctions by themselves
         a, b = a[needed], b[needed]
         if a.shape[0] != n:
-            raise ValueError(f"combined law: {n} unknown amplitudes but {a.shape[0]} conditions (junctions, closure, "
+            raise InputError(f"combined law: {n} unknown amplitudes but {a.shape[0]} conditions (junctions, closure, "
                              "ratios); add or remove segment freedom or ratios")
         try:
             x = np.linalg.solve(a, b)
         except np.linalg.LinAlgError:
-            raise ValueError("combined law: the conditions do not fix the amplitudes (singular system)") from None
+            raise InputError("combined law: the conditions do not fix the amplitudes (singular system)") from None
         self._offsets = offsets
         return x
 

@@ -9,6 +9,7 @@ are not available to this package: this is the general classical form.
 
 import numpy as np
 
+from ..errors import InputError
 from .base import RampedLaw, SymmetricLaw, segment_index
 from .ramps import make_ramp
 
@@ -72,7 +73,7 @@ class ConstantAccelerationLaw(RampedLaw, SymmetricLaw):
     def __init__(self, lift, ramp_height, ramp_velocity, phi1, phi2, phi3=0.0, kappa=1.0, ramp_kind="cosine",
                  ramp_fraction=0.5):
         if not (lift > 0 and phi1 > 0 and phi2 > 0 and phi3 >= 0 and kappa > 0):
-            raise ValueError("constant-acceleration law: lift, Phi1, Phi2 and kappa must be positive, Phi3 >= 0")
+            raise InputError("constant-acceleration law: lift, Phi1, Phi2 and kappa must be positive, Phi3 >= 0")
         self._lift = float(lift)
         self.ramp = make_ramp(ramp_kind, ramp_height, ramp_velocity, ramp_fraction)
         self.phi = (float(phi1), float(phi2), float(phi3))
@@ -80,7 +81,7 @@ class ConstantAccelerationLaw(RampedLaw, SymmetricLaw):
         h0, v0 = self.ramp.height, self.ramp.end_velocity
         self.a1, self.a2 = constant_acceleration_levels(self._lift + h0, h0, v0, *self.phi, kappa=self.kappa)
         if not (self.a1 > 0 and self.a2 > 0):
-            raise ValueError(f"constant-acceleration law: the angles give A1 = {self.a1:.4g}, A2 = {self.a2:.4g} "
+            raise InputError(f"constant-acceleration law: the angles give A1 = {self.a1:.4g}, A2 = {self.a2:.4g} "
                              "mm/rad^2; both must be positive (lengthen the event or lower the lift)")
         self._edges = np.cumsum([0.0, self.ramp.length, *self.phi])
         acc = [self.a1, -self.a2, -self.kappa * self.a2]

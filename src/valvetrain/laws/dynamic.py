@@ -7,6 +7,7 @@ formulas of the multi-term cam are derived in this package).
 import numpy as np
 
 from ..checks import check
+from ..errors import InputError
 
 from .base import RampedLaw, SymmetricLaw
 from .errors import LawError
@@ -70,9 +71,9 @@ class DynamicLaw(RampedLaw, SymmetricLaw):
         self.K, self.F0, self.omega = float(spring_rate), float(preload), float(cam_speed)
         self.ratio, self.x0 = float(rocker_ratio), float(lash)
         if not (self.y_max > 0 and self.phi_p0 > 0 and self.v_y > 0 and self.c > 0 and self.m > 0):
-            raise ValueError("dynamic law: lift, angle, opening velocity, stiffness and mass must be positive")
+            raise InputError("dynamic law: lift, angle, opening velocity, stiffness and mass must be positive")
         if len(self.k) != 5:
-            raise ValueError("dynamic law: five exponents are needed (y, y', y'', y''', y'''' fixed at the junction)")
+            raise InputError("dynamic law: five exponents are needed (y, y', y'', y''', y'''' fixed at the junction)")
         self.coef = polynomial_junction_coefficients(self.k, self.y_max, 0.0, -self.v_y * self.phi_p0)
         self.ramp = make_ramp(ramp_kind, (self.x0 + self.F0 / self.c) / self.ratio,
                               (1.0 + self.K / self.c) * self.v_y / self.ratio, ramp_fraction)

@@ -9,6 +9,7 @@ from collections.abc import Callable
 
 import numpy as np
 
+from ..errors import InputError
 from ..numerics import extremum
 
 HARMONIC_RCOND = 1e-8
@@ -162,7 +163,7 @@ def _spline_rms(x, y, lam):
     try:
         spline = make_smoothing_spline(x, y, lam=lam)
     except (ValueError, np.linalg.LinAlgError):
-        raise ValueError(f"the smoothing spline cannot be fitted to the {x.size} points of the lobe") from None
+        raise InputError(f"the smoothing spline cannot be fitted to the {x.size} points of the lobe") from None
     return spline, float(np.sqrt(np.mean((spline(x) - y) ** 2)))
 
 
@@ -210,7 +211,7 @@ def smoothing_spline(x, y, accuracy, stated=True) -> tuple[Callable[[np.ndarray]
     try:
         gcv = make_smoothing_spline(x, y)
     except (ValueError, np.linalg.LinAlgError):
-        raise ValueError(f"the smoothing spline cannot be fitted to the {x.size} points of the lobe (generalised "
+        raise InputError(f"the smoothing spline cannot be fitted to the {x.size} points of the lobe (generalised "
                          "cross-validation finds no smoothing for them)") from None
     gcv_rms = float(np.sqrt(np.mean((gcv(x) - y) ** 2)))
     how, target = ("gcv", gcv_rms) if stated and gcv_rms >= accuracy else ("accuracy", accuracy)

@@ -12,6 +12,7 @@ rules for N and the end conditions are not available to this package.
 import numpy as np
 
 from ..checks import check
+from ..errors import InputError
 from ..numerics import level_span
 from .base import LiftLaw, Segment
 from .errors import LawError
@@ -109,7 +110,7 @@ class HarmonicLaw(LiftLaw):
     def __init__(self, target, harmonics, junction_order=1, samples=2001):
         n, m = int(harmonics), int(junction_order)
         if n < m + 2:
-            raise ValueError(f"harmonic law: N = {n} harmonics cannot meet {m + 2} conditions; allowed N >= {m + 2}")
+            raise InputError(f"harmonic law: N = {n} harmonics cannot meet {m + 2} conditions; allowed N >= {m + 2}")
         self.target = target
         self.alpha = float(target.end)
         self.harmonics, self.junction_order = n, m

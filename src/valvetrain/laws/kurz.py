@@ -12,6 +12,7 @@ import numpy as np
 from numba import njit
 
 from ..checks import check
+from ..errors import InputError
 from .base import RampedLaw, SymmetricLaw, mirror
 from .ramps import make_ramp, ramp_at
 
@@ -142,9 +143,9 @@ class KurzLaw(RampedLaw, SymmetricLaw):
     def __init__(self, lift, clearance, ramp_velocity, phi1, phi2, phi3, shape_factor=0.625, ramp_kind="cosine",
                  ramp_fraction=0.5):
         if not (lift > 0 and clearance > 0 and ramp_velocity > 0 and phi1 > 0 and phi2 > 0 and phi3 > 0):
-            raise ValueError("Kurz law: lift, clearance, ramp velocity and Phi1..Phi3 must be positive")
+            raise InputError("Kurz law: lift, clearance, ramp velocity and Phi1..Phi3 must be positive")
         if not 0.0 < shape_factor < 1.0:
-            raise ValueError(f"Kurz law: shape factor Z = {shape_factor!r}: allowed 0 < Z < 1")
+            raise InputError(f"Kurz law: shape factor Z = {shape_factor!r}: allowed 0 < Z < 1")
         self._lift = float(lift)
         self.clearance = float(clearance)
         self.ramp_velocity = float(ramp_velocity)

@@ -12,6 +12,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..checks import check
+from ..errors import InputError
 from ..numerics import extremum, level_span
 from ..units import DEG, MM
 from .base import RampedLaw, Segment
@@ -242,7 +243,7 @@ def lobe_table(angle_deg, lift_mm, angle="crank", zero="gas_exchange_tdc", accur
     unit = f"{angle} deg"
     a, h = np.asarray(angle_deg, dtype=float), np.asarray(lift_mm, dtype=float)
     if a[-1] - a[0] > revolution:
-        raise ValueError(f"angle_deg runs from {a[0]:g} to {a[-1]:g} {unit} ({a[-1] - a[0]:g}); a table covers "
+        raise InputError(f"angle_deg runs from {a[0]:g} to {a[-1]:g} {unit} ({a[-1] - a[0]:g}); a table covers "
                          f"at most one camshaft revolution, {revolution:g} {unit}")
     band = BASE_CIRCLE_ACCURACIES * accuracy_mm
     low, top = int(np.argmin(h)), int(np.argmax(h))
@@ -415,7 +416,7 @@ class TableLaw(RampedLaw):
     def __init__(self, angles, lift, fit="auto", accuracy=5e-6, max_harmonics=60, ramp_height=0.0,
                  rows_per_point=1.0, accuracy_stated=True):
         if fit not in FITS:
-            raise ValueError(f"fit = {fit!r}: allowed {', '.join(repr(f) for f in FITS)}")
+            raise InputError(f"fit = {fit!r}: allowed {', '.join(repr(f) for f in FITS)}")
         x, y = np.asarray(angles, dtype=float), np.asarray(lift, dtype=float)
         scatter = noise_level(y)
         if scatter > MOST_SCATTER * y.max():

@@ -14,6 +14,7 @@ import numpy as np
 from numba import njit
 
 from ..checks import check
+from ..errors import InputError
 from .base import RampedLaw, SymmetricLaw, mirror
 from .ramps import make_ramp, ramp_at
 
@@ -156,10 +157,10 @@ class PolynomialLaw(RampedLaw, SymmetricLaw):
                  ramp_fraction=0.5):
         k = tuple(float(e) for e in exponents)
         if len(k) < 2 or any(b <= a for a, b in zip(k, k[1:], strict=False)) or any(e < 3 and e != 2 for e in k):
-            raise ValueError(f"polynomial exponents {k}: allowed an increasing set of at least two, each 2 or >= 3 "
+            raise InputError(f"polynomial exponents {k}: allowed an increasing set of at least two, each 2 or >= 3 "
                              "(below 3 the jerk is infinite at the nose)")
         if not (lift > 0 and main_half_angle > 0):
-            raise ValueError("polynomial law: lift and main half angle must be positive")
+            raise InputError("polynomial law: lift and main half angle must be positive")
         self._lift = float(lift)
         self.phi_p0 = float(main_half_angle)
         self.ramp = make_ramp(ramp_kind, ramp_height, ramp_velocity, ramp_fraction) if ramp_height > 0 else None
@@ -243,7 +244,7 @@ class PolydyneLaw(PolynomialLaw):
         dp, dq, dr, ds = default_exponents(p)
         exps = (float(p), float(dq if q is None else q), float(dr if r is None else r), float(ds if s is None else s))
         if not 3 <= exps[0] < exps[1] < exps[2] < exps[3]:
-            raise ValueError(f"polydyne exponents {exps}: allowed 3 <= p < q < r < s "
+            raise InputError(f"polydyne exponents {exps}: allowed 3 <= p < q < r < s "
                              "(p < 3 makes the jerk infinite at the nose)")
         super().__init__(lift, main_half_angle, (2.0,) + exps, ramp_height, ramp_velocity, ramp_kind, ramp_fraction)
 

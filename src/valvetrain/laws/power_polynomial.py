@@ -29,6 +29,7 @@ from functools import cached_property, lru_cache
 import numpy as np
 
 from ..checks import check
+from ..errors import InputError
 from .base import SymmetricLaw, member_values
 from .errors import LawError
 
@@ -237,17 +238,17 @@ class PowerPolynomialLaw(SymmetricLaw):
     def __init__(self, lift, main_half_angle, ramp_height, ramp_angle, ramp_velocity, peak_acceleration, phi1,
                  peak_position=0.2, trough_position=0.8, exponents=None, reconstruction="R2", sharpness=10.0):
         if reconstruction not in RECONSTRUCTIONS:
-            raise ValueError(f"power_polynomial reconstruction {reconstruction!r}: allowed {RECONSTRUCTIONS}")
+            raise InputError(f"power_polynomial reconstruction {reconstruction!r}: allowed {RECONSTRUCTIONS}")
         if not (lift > 0 and main_half_angle > 0 and ramp_height > 0 and ramp_angle > 0 and ramp_velocity > 0
                 and peak_acceleration > 0 and phi1 > 0):
-            raise ValueError("power_polynomial law: lift, angles, ramp height and velocity and the peak acceleration "
+            raise InputError("power_polynomial law: lift, angles, ramp height and velocity and the peak acceleration "
                              "must be positive")
         if not (0.0 < peak_position < 1.0 and 0.0 < trough_position < 1.0):
-            raise ValueError("power_polynomial law: peak_position and trough_position must lie in (0, 1)")
+            raise InputError("power_polynomial law: peak_position and trough_position must lie in (0, 1)")
         e = {**ARTICLE_EXPONENTS, **(exponents or {})}
         for a, b in (("n", "m"), ("p", "q"), ("r", "s"), ("t", "u")):
             if not (e[a] > 0 and e[b] > 0 and e[a] != e[b]):
-                raise ValueError(f"power_polynomial exponents {a} = {e[a]:g}, {b} = {e[b]:g}: both positive and "
+                raise InputError(f"power_polynomial exponents {a} = {e[a]:g}, {b} = {e[b]:g}: both positive and "
                                  "different")
         self._lift, self.phi_p0 = float(lift), float(main_half_angle)
         self._h0, self._phi0, self.v_qb = float(ramp_height), float(ramp_angle), float(ramp_velocity)
@@ -293,7 +294,7 @@ class PowerPolynomialLaw(SymmetricLaw):
         self.phi2 = need / (self.v_e * gain)
         self.dwell = 2.0 * (self.phi_p0 - self.phi1 - self.phi2)
         if self.dwell < -1e-12:
-            raise ValueError(f"power_polynomial law: phi1 + phi2 = {np.degrees(self.phi1 + self.phi2):.4g} deg exceeds "
+            raise InputError(f"power_polynomial law: phi1 + phi2 = {np.degrees(self.phi1 + self.phi2):.4g} deg exceeds "
                              f"the main half angle {np.degrees(self.phi_p0):.4g} deg (phi2 from the lift); raise "
                              "peak_acceleration or phi1")
         self.dwell = max(self.dwell, 0.0)

@@ -10,6 +10,8 @@ quieting ramp: it lifts the valve itself at that velocity
 import numpy as np
 from numba import njit
 
+from ..errors import InputError
+
 
 def cosine_ramp_length(height, end_velocity) -> float:
     """Length of a cosine ramp, Phi_0 = pi h0 / (2 w') [rad].
@@ -136,7 +138,7 @@ class Ramp:
 
     def __init__(self, height, end_velocity):
         if not (height > 0 and end_velocity > 0):
-            raise ValueError(f"{self.kind} ramp: height and end velocity must be positive")
+            raise InputError(f"{self.kind} ramp: height and end velocity must be positive")
         self.height = float(height)
         self.end_velocity = float(end_velocity)
 
@@ -209,7 +211,7 @@ class ConstantAccelerationRamp(Ramp):
     def __init__(self, height, end_velocity, fraction=0.5):
         super().__init__(height, end_velocity)
         if not 0.0 < fraction <= 1.0:
-            raise ValueError(f"constant-acceleration ramp: fraction f = {fraction!r}: allowed (0, 1]")
+            raise InputError(f"constant-acceleration ramp: fraction f = {fraction!r}: allowed (0, 1]")
         self.fraction = float(fraction)
 
     @property

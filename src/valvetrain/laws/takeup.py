@@ -11,6 +11,7 @@ guidance for the seating velocity is about 0.3-0.5 m/s at rated speed).
 
 import numpy as np
 
+from ..errors import InputError
 from ..numerics import level_span
 from .base import LiftLaw, Segment
 from .errors import LawError
@@ -49,7 +50,7 @@ class ClearanceTakeUp(LiftLaw):
 
     def __init__(self, law, clearance):
         if law.ramp_height > 0.0:
-            raise ValueError(f"{law.name} law: it has a ramp, which takes up the clearance itself")
+            raise InputError(f"{law.name} law: it has a ramp, which takes up the clearance itself")
         if not 0.0 < clearance < law.lift_max:
             raise LawError("clearance_exceeds_lift", law=law.name, clearance=clearance, lift=law.lift_max)
         self.law, self.clearance = law, float(clearance)

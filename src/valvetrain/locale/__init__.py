@@ -35,6 +35,7 @@ import string
 import tomllib
 from typing import Any
 
+from ..errors import InputError
 from ..languages import LANGS
 
 
@@ -42,7 +43,7 @@ from ..languages import LANGS
 def catalogue(lang) -> dict[str, Any]:
     """The catalogue of ``lang`` as read from ``LANG.toml``."""
     if lang not in LANGS:
-        raise ValueError(f"language {lang!r}: allowed {LANGS}")
+        raise InputError(f"language {lang!r}: allowed {LANGS}")
     return tomllib.loads(files("valvetrain.locale").joinpath(f"{lang}.toml").read_text(encoding="utf-8"))
 
 
@@ -55,7 +56,7 @@ def _template(section, code, lang="en"):
     try:
         return catalogue(lang)[section][code]
     except KeyError:
-        raise ValueError(f"check code {code!r} has no text in src/valvetrain/locale/{lang}.toml [{section}]: "
+        raise InputError(f"check code {code!r} has no text in src/valvetrain/locale/{lang}.toml [{section}]: "
                          "add it (docs/architecture.md, Checks)") from None
 
 

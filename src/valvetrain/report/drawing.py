@@ -33,6 +33,12 @@ import sys
 import threading
 
 from ..design import DesignResults
+from ..errors import ValvetrainError
+
+
+class DrawingError(ValvetrainError, RuntimeError):
+    """A process drawing the figures that ended without them, or an error of its drawing that could not be sent."""
+
 
 PROCESSES = 2
 """Drawing processes: the figures and the first process's writing share two cores (this machine's, and a laptop's
@@ -107,7 +113,7 @@ class FigureProcess:
         try:
             ok, value = self._conn.recv()
         except EOFError:
-            raise RuntimeError("a process drawing the figures ended without them") from None
+            raise DrawingError("a process drawing the figures ended without them") from None
         if not ok:
             raise value
         return value
@@ -226,7 +232,7 @@ def _serve(conns, others, imports):
         try:
             answers.append(mine.recv())
         except EOFError:
-            answers.append((False, RuntimeError("a process drawing the figures ended without them")))
+            answers.append((False, DrawingError("a process drawing the figures ended without them")))
         os.waitpid(pid, 0)
     _send(conn, next((a for a in answers if not a[0]), answers[0]))
 
@@ -255,7 +261,7 @@ def _receive(conn):
 
 
 def _send(conn, answer) -> bool:
-    """Send an answer of :func:`_draw`; an exception that cannot be pickled as a RuntimeError that names it.  False
+    """Send an answer of :func:`_draw`; an exception that cannot be pickled as a DrawingError that names it.  False
     where no one reads it any more (the first process ended, killed even: a SIGKILL runs no cleanup), True else."""
     try:
         try:
@@ -263,7 +269,7 @@ def _send(conn, answer) -> bool:
         except (BrokenPipeError, ConnectionResetError):
             raise
         except Exception:  # noqa: BLE001 - an exception that cannot be pickled
-            conn.send((False, RuntimeError(f"drawing the figures: {answer[1]!r}")))
+            conn.send((False, DrawingError(f"drawing the figures: {answer[1]!r}")))
     except (BrokenPipeError, ConnectionResetError):
         return False
     return True

@@ -25,6 +25,7 @@ from PIL import Image
 from ..design.dynamics import event_window
 from ..design.valve import CYCLE_CRANK, RHO_MIN
 from ..design.results import shown_value
+from ..errors import InputError
 from ..units import MM, per_cam_degree, rad_to_deg, to_display
 from .i18n import TEXT
 from .names import value_text
@@ -1181,7 +1182,7 @@ def write_plots(results, folder, lang="en", figures="main", claim=None) -> dict[
     ``claim`` shares the figures among several drawers (:func:`_saver`): each draws those it claims and returns the
     whole dict."""
     if figures not in FIGURE_SETS:
-        raise ValueError(f"figures = {figures!r}; allowed: {', '.join(FIGURE_SETS)}")
+        raise InputError(f"figures = {figures!r}; allowed: {', '.join(FIGURE_SETS)}")
     t = TEXT[lang]
     written = {}
     save = _saver(folder, claim)

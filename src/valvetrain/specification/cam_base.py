@@ -13,6 +13,7 @@ from typing import ClassVar, Literal, Optional
 import numpy as np
 from pydantic import ValidationError, model_validator
 
+from ..errors import InputError
 from ..followers import REGISTRY as FOLLOWERS
 from ..laws import AsymmetricLaw
 from ..laws.records import LawRecord
@@ -79,7 +80,7 @@ class _CamBase(_Model):
     def _follower_keys(self):
         missing = FOLLOWERS[self.follower].missing_key(self)
         if missing:
-            raise ValueError(missing)
+            raise InputError(missing)
         return self
 
     needs_timing: ClassVar[bool] = True

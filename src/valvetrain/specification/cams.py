@@ -18,6 +18,7 @@ import numpy as np
 from pydantic import Field, model_validator
 
 from ..checks import check
+from ..errors import InputError
 from ..files import LIFT_TABLE_RANGES, read_lift_table, shown_path
 from ..followers import REGISTRY as FOLLOWERS
 from ..laws import (CombinedLaw, ConstantAccelerationLaw, DynamicLaw, HarmonicLaw, KurzLaw, LiftLaw,
@@ -89,10 +90,10 @@ class PolydyneCam(_CamBase, _RampKeys):
         r = self.r if self.r is not None else 3 * p - 4
         s = self.s if self.s is not None else 4 * p - 6
         if not p < q < r < s:
-            raise ValueError(f"exponents p, q, r, s = {p:g}, {q:g}, {r:g}, {s:g} must increase strictly "
+            raise InputError(f"exponents p, q, r, s = {p:g}, {q:g}, {r:g}, {s:g} must increase strictly "
                              "(3 <= p < q < r < s)")
         if self.ramp and self.ramp_end_velocity_mm_per_deg is None:
-            raise ValueError("ramp = true needs ramp_end_velocity_mm_per_deg (allowed [0.001, 1] mm/deg)")
+            raise InputError("ramp = true needs ramp_end_velocity_mm_per_deg (allowed [0.001, 1] mm/deg)")
         return self
 
     def search_variables(self, valve, engine) -> list[tuple[str, float, float]]:
@@ -137,10 +138,10 @@ class PolynomialCam(_CamBase, _RampKeys):
     def _exponents_and_ramp(self):
         k = self.exponents
         if any(b <= a for a, b in zip(k, k[1:], strict=False)) or any(e < 3 and e != 2 for e in k):
-            raise ValueError(f"exponents = {k}: allowed an increasing list, each 2 or >= 3 (below 3 the jerk is "
+            raise InputError(f"exponents = {k}: allowed an increasing list, each 2 or >= 3 (below 3 the jerk is "
                              "infinite at the nose)")
         if self.ramp and self.ramp_end_velocity_mm_per_deg is None:
-            raise ValueError("ramp = true needs ramp_end_velocity_mm_per_deg (allowed [0.001, 1] mm/deg)")
+            raise InputError("ramp = true needs ramp_end_velocity_mm_per_deg (allowed [0.001, 1] mm/deg)")
         return self
 
     def law_of(self, cam, lift, half, r0, **ramp) -> PolynomialLaw:
@@ -201,7 +202,7 @@ class CombinedCam(_ClosingSide, _CamBase, _RampKeys):
     def _ratio_segments_exist(self):
         bad = sorted({r.segment for r in self.ratios if r.segment > len(self.segments)})
         if bad:
-            raise ValueError(f"ratios name segments {shown(bad)}; allowed 1...{len(self.segments)}")
+            raise InputError(f"ratios name segments {shown(bad)}; allowed 1...{len(self.segments)}")
         return self
 
     def flank_angle_deg(self) -> float:
@@ -210,7 +211,7 @@ class CombinedCam(_ClosingSide, _CamBase, _RampKeys):
     def search_variables(self, valve, engine) -> list[tuple[str, float, float]]:
         """The ratios' values, each within five times its size plus one either side."""
         if not self.ratios:
-            raise ValueError("optimize: the combined cam has no [[cam.ratios]]; name the variables with --vary")
+            raise InputError("optimize: the combined cam has no [[cam.ratios]]; name the variables with --vary")
         return [(f"cam.ratios.{i}.value", -5.0 * abs(r.value) - 1.0, 5.0 * abs(r.value) + 1.0)
                 for i, r in enumerate(self.ratios, 1)]
 
@@ -300,7 +301,7 @@ class PowerPolynomialCam(_CamBase):
     def _distinct_pairs(self):
         for a, b in (("n", "m"), ("p", "q"), ("r", "s"), ("t", "u")):
             if getattr(self, a) == getattr(self, b):
-                raise ValueError(f"exponents {a} = {b} = {getattr(self, a):g}: the two powers of a piece must differ "
+                raise InputError(f"exponents {a} = {b} = {getattr(self, a):g}: the two powers of a piece must differ "
                                  "(allowed (0.05, 50] each)")
         return self
 
@@ -313,7 +314,7 @@ class PowerPolynomialCam(_CamBase):
                                       c.phi1, c.peak_position, c.trough_position, exponents, c.reconstruction,
                                       c.sharpness)
         except ValueError as exc:
-            raise ValueError(f"{exc} (keys peak_acceleration_mm_per_rad2, phi1_deg, max_lift_mm, opens_deg, "
+            raise InputError(f"{exc} (keys peak_acceleration_mm_per_rad2, phi1_deg, max_lift_mm, opens_deg, "
                              "closes_deg)") from None
 
     def problems(self, at, valve, engine) -> list[Problem]:
@@ -354,9 +355,9 @@ class HarmonicCam(_CamBase):
     @model_validator(mode="after")
     def _target_law(self):
         if self.target.law == "harmonic":
-            raise ValueError("target.law = \"harmonic\": the target must be another law")
+            raise InputError("target.law = \"harmonic\": the target must be another law")
         if self.harmonics < self.junction_order + 2:
-            raise ValueError(f"harmonics = {self.harmonics} cannot meet junction_order + 2 = {self.junction_order + 2} "
+            raise InputError(f"harmonics = {self.harmonics} cannot meet junction_order + 2 = {self.junction_order + 2} "
                              "conditions")
         return self
 
@@ -384,7 +385,7 @@ class ThreeArcCam(_CamBase):
     def _one_parameter(self):
         given = [k for k in ("nose_radius_mm", "flank_radius_mm", "flank_angle_deg") if getattr(self, k) is not None]
         if len(given) != 1:
-            raise ValueError(f"give exactly one of nose_radius_mm, flank_radius_mm, flank_angle_deg (got {given or 'none'})")
+            raise InputError(f"give exactly one of nose_radius_mm, flank_radius_mm, flank_angle_deg (got {given or 'none'})")
         return self
 
     def law_of(self, cam, lift, half, r0) -> ThreeArcLaw:
@@ -408,7 +409,7 @@ class TangentCam(_CamBase):
     def _roller(self):
         follower = FOLLOWERS[self.follower]
         if not follower.rolling or follower.law_at_valve:
-            raise ValueError("law = \"tangent\" needs follower = \"roller\" (a flat follower on straight flanks is "
+            raise InputError("law = \"tangent\" needs follower = \"roller\" (a flat follower on straight flanks is "
                              "degenerate; a finger's law is the valve's, not the cam's) and roller_radius_mm")
         return self
 
@@ -462,16 +463,16 @@ class TableCam(_CamBase):
     def _one_table(self):
         inline = (self.table_angles_deg, self.table_lifts_mm)
         if (self.table_file is None) == all(v is None for v in inline):
-            raise ValueError("give the table as table_file or as table_angles_deg and table_lifts_mm, one of the two")
+            raise InputError("give the table as table_file or as table_angles_deg and table_lifts_mm, one of the two")
         if self.table_file is None:
             if None in inline or len(inline[0]) != len(inline[1]):
                 sizes = [None if v is None else len(v) for v in inline]
-                raise ValueError(f"table_angles_deg and table_lifts_mm need as many points each (got {sizes[0]} and "
+                raise InputError(f"table_angles_deg and table_lifts_mm need as many points each (got {sizes[0]} and "
                                  f"{sizes[1]})")
             back = np.flatnonzero(np.diff(inline[0]) <= 0.0)
             if back.size:
                 i = int(back[0]) + 1
-                raise ValueError(f"table_angles_deg[{i}] = {inline[0][i]:g} must be larger than the previous "
+                raise InputError(f"table_angles_deg[{i}] = {inline[0][i]:g} must be larger than the previous "
                                  f"{inline[0][i - 1]:g}")
         return self
 
@@ -488,7 +489,7 @@ class TableCam(_CamBase):
             return self._checked_law(valve, engine)
         except ValueError as exc:
             where = "table_angles_deg, table_lifts_mm" if self.table_file is None else shown_path(self.table_file)
-            raise ValueError(f"{where}: {exc}") from None
+            raise InputError(f"{where}: {exc}") from None
 
     def _checked_law(self, valve, engine):
         cam, i_k = valve.cam, valve.rocker_ratio
@@ -503,14 +504,14 @@ class TableCam(_CamBase):
                        per_point, accuracy_stated=cam.accuracy is not None)
         table_lift = law.lift_max * i_k
         if valve.max_lift is not None and abs(valve.max_lift - table_lift) > 0.01 * table_lift:
-            raise ValueError(f"max_lift_mm = {valve.max_lift / MM:g} disagrees with the table's valve lift "
+            raise InputError(f"max_lift_mm = {valve.max_lift / MM:g} disagrees with the table's valve lift "
                              f"{table_lift / MM:.4g} mm; allowed {0.99 * table_lift / MM:.4g}...{1.01 * table_lift / MM:.4g}"
                              " mm (+-1 %), or leave it out: the table sets the lift")
         nose = 2.0 * law.centre
         lo, hi = (0.0, 180.0) if valve.kind == "intake" else (-180.0, 0.0)
         opens, closes = (rad_to_deg(nose + 2.0 * t) for t in (law.valve_opens, law.valve_closes))
         if closes <= lo or opens >= hi:
-            raise ValueError(f"the lobe opens the valve from {opens:.4g} to {closes:.4g} crank deg after the "
+            raise InputError(f"the lobe opens the valve from {opens:.4g} to {closes:.4g} crank deg after the "
                              f"gas-exchange TDC and misses the {valve.kind} stroke, {lo:g}...{hi:g} crank deg; check "
                              "table_angle and table_zero (a table from the firing TDC needs table_zero = \"firing_tdc\")")
         return law

@@ -10,6 +10,8 @@ from typing import Annotated, Any
 from pydantic import AfterValidator, BaseModel, ConfigDict, Field
 from pydantic_core import core_schema
 
+from ..errors import InputError
+
 
 @dataclass(frozen=True)
 class Range:
@@ -32,11 +34,11 @@ class Range:
     def check(self, v) -> float:
         """``v`` if finite and within the bounds, else a ValueError stating the allowed range."""
         if not math.isfinite(v):
-            raise ValueError(f"must be a finite number; {self.text}")
+            raise InputError(f"must be a finite number; {self.text}")
         below = v <= self.low if self.low_open else v < self.low
         above = v >= self.high if self.high_open else v > self.high
         if below or above:
-            raise ValueError(self.text)
+            raise InputError(self.text)
         return v
 
     def __get_pydantic_core_schema__(self, source, handler) -> core_schema.CoreSchema:
@@ -61,7 +63,7 @@ def _zero_or(low, high, unit="", zero="none"):
 
     def check(v):
         if not (v == 0.0 or low <= v <= high):
-            raise ValueError(f"allowed 0 ({zero}) or [{low:g}, {high:g}]{suffix}")
+            raise InputError(f"allowed 0 ({zero}) or [{low:g}, {high:g}]{suffix}")
         return v
 
     return Annotated[float, AfterValidator(check)]

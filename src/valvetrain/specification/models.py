@@ -12,6 +12,7 @@ from typing import Annotated, ClassVar, Literal, Optional, Union
 
 from pydantic import Field, ValidationError, field_validator, model_validator
 
+from ..errors import InputError
 from ..files import read_cd_table, read_indicator, read_valve_lift
 from ..layouts import LAYOUTS, layout
 from ..spring_materials import GRADES, grade
@@ -68,7 +69,7 @@ class Engine(_Model):
         if self.firing_angles_deg is not None and self.crank_throws_deg is not None:
             problems.append("engine: give firing_angles_deg or crank_throws_deg, not both")
         if problems:
-            raise ValueError("; ".join(problems))
+            raise InputError("; ".join(problems))
         return self
 
 
@@ -97,7 +98,7 @@ class Drive(_Model):
     @model_validator(mode="after")
     def _one_mass_model(self):
         if self.masses is not None and self.specific_mass_kg_m2 is not None:
-            raise ValueError("give either specific_mass_kg_m2 or a [masses] table, not both")
+            raise InputError("give either specific_mass_kg_m2 or a [masses] table, not both")
         return self
 
 
@@ -142,18 +143,18 @@ class Spring(_Model):
                              ("wire_diameter_range_mm", "[2.0, 7.0]")):
             low, high = getattr(self, key)
             if low >= high:
-                raise ValueError(f"{key} = {[low, high]} must be [low, high] with low < high (default: {default})")
+                raise InputError(f"{key} = {[low, high]} must be [low, high] with low < high (default: {default})")
         if self.installed_length_mm is not None and self.installed_length_mm[0] > self.installed_length_mm[1]:
-            raise ValueError(f"installed_length_mm = {list(self.installed_length_mm)} must be [low, high] with "
+            raise InputError(f"installed_length_mm = {list(self.installed_length_mm)} must be [low, high] with "
                              "low <= high")
         names = [self.material] if isinstance(self.material, str) else self.material
         if not names:
-            raise ValueError(f"material = []: name at least one of {', '.join(repr(n) for n in GRADES)}")
+            raise InputError(f"material = []: name at least one of {', '.join(repr(n) for n in GRADES)}")
         for name in names:
             try:
                 grade(name)
-            except KeyError:
-                raise ValueError(f"material = {shown(name)}: allowed {', '.join(repr(n) for n in GRADES)}") from None
+            except InputError:
+                raise InputError(f"material = {shown(name)}: allowed {', '.join(repr(n) for n in GRADES)}") from None
         return self
 
 
@@ -206,7 +207,7 @@ class Parts(_Model):
             problems.append(f"socket_radius_mm = {self.socket_radius_mm:g} must exceed ball_radius_mm = "
                             f"{self.ball_radius_mm:g}")
         if problems:
-            raise ValueError("; ".join(problems))
+            raise InputError("; ".join(problems))
         return self
 
 
@@ -261,7 +262,7 @@ class Dynamics(_Model):
             problems.append("spring_rate_N_per_mm = 0 and spring_preload_N = 0: no valve spring, nothing returns the "
                             "valve to its cam or its seat; give a rate or a preload above 0")
         if problems:
-            raise ValueError("; ".join(problems))
+            raise InputError("; ".join(problems))
         return self
 
 
@@ -285,7 +286,7 @@ class Grinding(_Model):
     @model_validator(mode="after")
     def _wear_below_radius(self):
         if self.wheel_wear_mm >= self.wheel_radius_mm:
-            raise ValueError(f"wheel_wear_mm = {self.wheel_wear_mm:g} must be less than wheel_radius_mm = "
+            raise InputError(f"wheel_wear_mm = {self.wheel_wear_mm:g} must be less than wheel_radius_mm = "
                              f"{self.wheel_radius_mm:g}: allowed [0, wheel radius) mm")
         return self
 
@@ -357,7 +358,7 @@ class Hydraulic(_Model):
             problems.append(f"relief_pressure_MPa = {self.relief_pressure_MPa:g} must be above fill_pressure_MPa = "
                             f"{self.fill_pressure_MPa:g}")
         if problems:
-            raise ValueError("; ".join(problems))
+            raise InputError("; ".join(problems))
         return self
 
 
@@ -402,7 +403,7 @@ class Lubrication(_Model):
             problems.append(f"max_contact_temperature_C = {self.max_contact_temperature_C:g} must exceed "
                             f"oil_temperature_C = {self.oil_temperature_C:g}")
         if problems:
-            raise ValueError("; ".join(problems))
+            raise InputError("; ".join(problems))
         return self
 
 
@@ -466,7 +467,7 @@ class LashAdjuster(_Model):
     @model_validator(mode="after")
     def _refills(self):
         if self.supply_pressure_MPa == 0.0 and self.plunger_spring_N == 0.0:
-            raise ValueError("supply_pressure_MPa = 0 and plunger_spring_N = 0: nothing drives oil through the check "
+            raise InputError("supply_pressure_MPa = 0 and plunger_spring_N = 0: nothing drives oil through the check "
                              "valve (the supply plus the spring's pull on the chamber is 0), the leak-down is never "
                              "refilled; allowed either above 0")
         return self
@@ -493,7 +494,7 @@ class Phaser(_Model):
     def _holds_the_designed_timing(self):
         low, high = self.advance_range_crank_deg
         if not low <= 0.0 <= high or low == high:
-            raise ValueError(f"advance_range_crank_deg = [{low:g}, {high:g}]: allowed low <= 0 <= high, low < high "
+            raise InputError(f"advance_range_crank_deg = [{low:g}, {high:g}]: allowed low <= 0 <= high, low < high "
                              "(0 is the designed timing)")
         return self
 
@@ -610,7 +611,7 @@ class Camshaft(_Model):
             problems.append(f"cylinder_positions_mm has {len(positions)} entries: one per cylinder of "
                             f"cylinders ({len(self.cylinders)}) is needed")
         if problems:
-            raise ValueError("; ".join(problems))
+            raise InputError("; ".join(problems))
         return self
 
 
@@ -683,7 +684,7 @@ class CrankSpec(_Model):
         if self.cycle is not None and self.compression_ratio is None:
             problems.append("[crank.cycle] needs compression_ratio")
         if problems:
-            raise ValueError("; ".join(problems))
+            raise InputError("; ".join(problems))
         return self
 
 
@@ -700,10 +701,10 @@ class Port(_Model):
     def _geometry(self):
         if self.kind == "inlet":
             if self.lower_edge_mm is None or self.height_mm is None:
-                raise ValueError("an inlet port needs lower_edge_mm (below the crown at TDC) and height_mm "
+                raise InputError("an inlet port needs lower_edge_mm (below the crown at TDC) and height_mm "
                                  "(Valve-train practical works (n.d.), eq. 8.4)")
         elif (self.height_mm is None) == (self.opens_before_bdc_deg is None):
-            raise ValueError("give height_mm or opens_before_bdc_deg (one of them) for an exhaust or transfer port")
+            raise InputError("give height_mm or opens_before_bdc_deg (one of them) for an exhaust or transfer port")
         return self
 
 
@@ -757,7 +758,7 @@ class BreathingSide(_Model):
         if self.cd_file is not None and self.cd_diameter_mm is None:
             problems.append("cd_file needs cd_diameter_mm, the reference diameter D of its L/D")
         if problems:
-            raise ValueError("; ".join(problems))
+            raise InputError("; ".join(problems))
         return self
 
 
@@ -812,9 +813,9 @@ class Breathing(_Model):
     @model_validator(mode="after")
     def _something_to_run(self):
         if not self.conditions and self.curve is None:
-            raise ValueError("give at least one [[breathing.conditions]] or a [breathing.curve]")
+            raise InputError("give at least one [[breathing.conditions]] or a [breathing.curve]")
         if self.curve is not None and self.curve.speed_range_rpm[0] >= self.curve.speed_range_rpm[1]:
-            raise ValueError(f"curve.speed_range_rpm = {list(self.curve.speed_range_rpm)}: must be [low, high] with "
+            raise InputError(f"curve.speed_range_rpm = {list(self.curve.speed_range_rpm)}: must be [low, high] with "
                              "low < high")
         return self
 
@@ -869,7 +870,7 @@ class Acceptance(_Model):
     @classmethod
     def _not_blank(cls, text):
         if not text.strip():
-            raise ValueError("must not be blank: name the check and say why it is accepted")
+            raise InputError("must not be blank: name the check and say why it is accepted")
         return text
 
 
@@ -895,16 +896,16 @@ class Tolerance(_Model):
         bounds = self.low is not None, self.high is not None
         if self.distribution == "uniform":
             if self.sigma is not None:
-                raise ValueError(f"{self.key}: sigma is for a normal distribution; a uniform one takes half_range "
+                raise InputError(f"{self.key}: sigma is for a normal distribution; a uniform one takes half_range "
                                  "or low and high")
             if not ((self.half_range is None and all(bounds)) or (self.half_range is not None and not any(bounds))):
-                raise ValueError(f"{self.key}: a uniform distribution takes half_range, or low and high")
+                raise InputError(f"{self.key}: a uniform distribution takes half_range, or low and high")
         else:
             if self.sigma is None or self.half_range is not None:
-                raise ValueError(f"{self.key}: a normal distribution takes sigma (and optionally low, high to "
+                raise InputError(f"{self.key}: a normal distribution takes sigma (and optionally low, high to "
                                  "truncate it), not half_range")
         if all(bounds) and self.low >= self.high:
-            raise ValueError(f"{self.key}: low = {self.low:g} must be below high = {self.high:g}")
+            raise InputError(f"{self.key}: low = {self.low:g} must be below high = {self.high:g}")
         return self
 
 
@@ -930,7 +931,7 @@ class Spec(_Model):
     def _valve_names(cls, valves):
         bad = [shown(n, 40) for n in valves if not _NAME.match(n) or n in ("crank", "two_stroke", "breathing")]
         if bad:
-            raise ValueError(f"valve names {', '.join(bad)}: allowed a letter, then up to 31 letters, digits, '_' and "
+            raise InputError(f"valve names {', '.join(bad)}: allowed a letter, then up to 31 letters, digits, '_' and "
                              "'-' (and not 'crank', 'two_stroke' or 'breathing', the names of the engine's chapters)")
         return valves
 
@@ -965,7 +966,7 @@ class Spec(_Model):
     @model_validator(mode="after")
     def _something_to_design(self):
         if not self.valves and self.crank is None and self.two_stroke is None and self.breathing is None:
-            raise ValueError("nothing to design: give at least one [valves.NAME], [crank], [two_stroke] or [breathing] "
+            raise InputError("nothing to design: give at least one [valves.NAME], [crank], [two_stroke] or [breathing] "
                              "section")
         return self
 

@@ -10,6 +10,7 @@ are the dotted keys that :meth:`Spec.replace` and ``study --grid`` change.
 import copy
 from typing import Any, Optional
 
+from ..errors import InputError
 from ..followers import REGISTRY as FOLLOWERS
 from ..layouts import LAYOUTS
 from ..springs import feasible_mean_diameters
@@ -302,19 +303,19 @@ def set_keys(document, values) -> dict[str, Any]:
     for key, value in values.items():
         parts = key.split(".")
         if not all(parts):
-            raise ValueError(Problem(key, "an empty name in the dotted key"))
+            raise InputError(Problem(key, "an empty name in the dotted key"))
         node = out
         for i, part in enumerate(parts[:-1]):
             if part not in node:
                 if i == 1 and parts[0] == "valves":
-                    raise ValueError(Problem(key, f"the specification has no valve {part!r} (valves: "
+                    raise InputError(Problem(key, f"the specification has no valve {part!r} (valves: "
                                              f"{', '.join(node) or 'none'})"))
                 node[part] = {}
             node = node[part]
             if not isinstance(node, dict):
-                raise ValueError(Problem(key, f"{'.'.join(parts[:i + 1])} is a value, not a table"))
+                raise InputError(Problem(key, f"{'.'.join(parts[:i + 1])} is a value, not a table"))
         if isinstance(node.get(parts[-1]), dict):
-            raise ValueError(Problem(key, "a table, not a value; give one of its keys"))
+            raise InputError(Problem(key, "a table, not a value; give one of its keys"))
         node[parts[-1]] = value
     return out
 

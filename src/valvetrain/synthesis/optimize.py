@@ -52,6 +52,7 @@ from ..design.dynamics import SPEED_RANGE, build_train, dynamics_stage
 from ..design.valve import MAX_LIFT_TO_THROAT, follower_travel_acceleration
 from ..dynamics.models import one_mass_train
 from ..dynamics.sweep import sweep
+from ..errors import InputError
 from ..locale import record_text
 from ..laws import PolydyneLaw
 from ..laws.base import batch_derivatives, member_values, valve_lift_of
@@ -127,14 +128,14 @@ def check_breathing_objective(spec, valve, objective) -> None:
         ``lift_file`` (the cam would not move the breathing): the message names the key.
     """
     if spec.breathing is None:
-        raise ValueError(f"optimize: --objective {objective} needs a [breathing] section (its conditions or curve "
+        raise InputError(f"optimize: --objective {objective} needs a [breathing] section (its conditions or curve "
                          "give the speeds); allowed without it: fullness, time_area")
     if objective == "torque" and spec.breathing.mode != "fired":
-        raise ValueError(f"optimize: --objective torque needs breathing.mode = 'fired' (the file's is "
+        raise InputError(f"optimize: --objective torque needs breathing.mode = 'fired' (the file's is "
                          f"{spec.breathing.mode!r}: a motored engine gives no torque); allowed volumetric_efficiency")
     kind = spec.valves[valve].kind
     if getattr(spec.breathing, kind).lift_file is not None:
-        raise ValueError(f"optimize: --objective {objective}: breathing.{kind}.lift_file lifts the {kind} valves by a "
+        raise InputError(f"optimize: --objective {objective}: breathing.{kind}.lift_file lifts the {kind} valves by a "
                          f"measured table, so valve {valve!r}'s cam does not move the breathing; allowed without "
                          "lift_file (the designed valves' lift)")
 
@@ -276,10 +277,10 @@ def default_variables(valve, engine) -> list[Variable]:
     """
     cam = valve.cam
     if getattr(cam, "closing", None) is not None:
-        raise ValueError("optimize: the cam has a [cam.closing] flank of its own; name the variables with --vary")
+        raise InputError("optimize: the cam has a [cam.closing] flank of its own; name the variables with --vary")
     own = cam.search_variables(valve, engine)
     if own is None:
-        raise ValueError(f"optimize: law = {cam.law!r} has no default variables; name them with --vary KEY=LOW,HIGH "
+        raise InputError(f"optimize: law = {cam.law!r} has no default variables; name them with --vary KEY=LOW,HIGH "
                          "(e.g. --vary cam.nose_radius_mm=5,12)")
     out = [Variable(*v) for v in own]
     return out + _ramp_and_spring(cam) if cam.varies_ramp_and_spring else out
@@ -302,7 +303,7 @@ def parse_variables(items) -> list[Variable]:
         except ValueError:
             low = high = None
         if not key.strip() or low is None or not (math.isfinite(low) and math.isfinite(high) and low < high):
-            raise ValueError(f"--vary {item[:80]!r}: allowed KEY=LOW,HIGH with finite LOW < HIGH, KEY a path under "
+            raise InputError(f"--vary {item[:80]!r}: allowed KEY=LOW,HIGH with finite LOW < HIGH, KEY a path under "
                              "[valves.NAME] such as cam.phi1_deg")
         out.append(Variable(key.strip(), low, high, tuple(p.strip() for p in parts)))
     return unique_variables(out)
@@ -319,7 +320,7 @@ def unique_variables(variables) -> list[Variable]:
     seen = set()
     for v in variables:
         if v.path in seen:
-            raise ValueError(f"--vary {v.path}: the key is named twice; allowed once, with one LOW,HIGH")
+            raise InputError(f"--vary {v.path}: the key is named twice; allowed once, with one LOW,HIGH")
         seen.add(v.path)
     return list(variables)
 
@@ -383,11 +384,11 @@ def check_bounds(section, name, variables) -> None:
                 for e in exc.errors():
                     at = ".".join(str(part + 1) if isinstance(part, int) else str(part) for part in e["loc"])
                     if at == v.path and e["type"] == "extra_forbidden":
-                        raise ValueError(unknown_key(v.path, name, section)) from None
+                        raise InputError(unknown_key(v.path, name, section)) from None
                     if at == v.path:
                         written = v.written or (f"{v.low:g}", f"{v.high:g}")
                         reason = e["msg"].removeprefix("Value error, ")
-                        raise ValueError(f"--vary {v.path}={','.join(written)}: {which} = {written[i]} is outside "
+                        raise InputError(f"--vary {v.path}={','.join(written)}: {which} = {written[i]} is outside "
                                          f"the range of valves.{name}.{v.path}: {reason}") from None
 
 
@@ -525,7 +526,7 @@ class Problem:
         except (AttributeError, IndexError, ValueError):
             node = None
         if isinstance(node, bool) or not isinstance(node, (int, float)):
-            raise ValueError(f"optimize: valves.{self.name}.{v.path} is not a numeric key of the valve; allowed the "
+            raise InputError(f"optimize: valves.{self.name}.{v.path} is not a numeric key of the valve; allowed the "
                              "numbers of [valves.NAME] and its sections (cam.phi1_deg, drive.spring_reserve, ...)")
         return float(node)
 
@@ -1088,14 +1089,14 @@ def optimize_valve(spec, valve=None, variables=None, objective="fullness", wheel
         not a key of the valve, a key named twice, bounds outside the key's allowed range.
     """
     if objective not in OBJECTIVES:
-        raise ValueError(f"optimize: objective = {objective!r}; allowed {', '.join(OBJECTIVES)}")
+        raise InputError(f"optimize: objective = {objective!r}; allowed {', '.join(OBJECTIVES)}")
     if not spec.valves:
-        raise ValueError("optimize: the specification has no [valves.NAME] section: no cam to optimise; allowed a "
+        raise InputError("optimize: the specification has no [valves.NAME] section: no cam to optimise; allowed a "
                          "file with at least one valve")
     if valve is None:
         valve = next(iter(spec.valves))
     if valve not in spec.valves:
-        raise ValueError(f"optimize: --valve {valve!r}; allowed {', '.join(spec.valves)}")
+        raise InputError(f"optimize: --valve {valve!r}; allowed {', '.join(spec.valves)}")
     if objective in BREATHING:
         check_breathing_objective(spec, valve, objective)
     section = spec.valves[valve]

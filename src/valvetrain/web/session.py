@@ -18,6 +18,7 @@ from pydantic import BaseModel
 import tomli_w
 
 from .. import api
+from ..errors import InputError
 from ..specification import REGISTRY, SpecError, example_text, set_keys
 from ..laws import PolydyneLaw
 from ..specification.cam_base import main_half_angle_deg
@@ -490,7 +491,7 @@ def moved(document, spec, name, handle, x, y, series, valve=None) -> dict[str, A
     """
     known = [h.name for h in handles(document, spec, name, series)]
     if handle not in known:
-        raise ValueError(f"valves.{name} has no handle {handle!r} (its handles: {', '.join(known) or 'none'})")
+        raise InputError(f"valves.{name} has no handle {handle!r} (its handles: {', '.join(known) or 'none'})")
     at = f"valves.{name}"
     if handle == "nose":
         return {f"{at}.max_lift_mm": round(float(np.clip(y, *_key_range(Valve, "max_lift_mm"))), 3)}
