@@ -5,6 +5,7 @@ import numpy as np
 import pytest
 
 from valvetrain import springs
+from valvetrain.errors import InputError
 
 from conftest import SEED000_OMEGA_EXACT
 
@@ -50,5 +51,5 @@ def test_a_property_given_replaces_the_grade_s():
     assert material.grade == "VDSiCr" and material.shear_modulus == 8.1e10
     allowable, endurance, _ = material.limits(np.array([3e-3, 5e-3]))
     assert np.all(allowable == 600e6) and endurance[0] < endurance[1]
-    with pytest.raises(KeyError, match="allowed '60S2A', 'VDSiCr', 'VDCrV'"):
+    with pytest.raises(InputError, match="allowed '60S2A', 'VDSiCr', 'VDCrV'"):
         springs.SpringMaterial("65G")
