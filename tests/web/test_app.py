@@ -33,10 +33,13 @@ def _field(d, path):
     return next(f for _, group in form(d.session.document, d.valve) for f in group if f.path == path)
 
 
-def _request(d, kind, name="", x=0.0, y=0.0, plot="lift", text="", seq=1):
-    """What page.js sends: a handle moved, released or nudged, undo, redo, restore."""
+def _request(d, kind, name="", x=0.0, y=0.0, plot="lift", text="", seq=1, finish=True):
+    """What page.js sends: a handle moved, released or nudged, undo, redo, restore; a release's design (in the worker
+    thread) waited for and kept unless not ``finish``."""
     d.on_request("data", {}, {"kind": [kind], "seq": [seq], "plot": [plot], "name": [name], "x": [x], "y": [y],
                               "text": [text]})
+    if finish:
+        d.finish_edit()
 
 
 def _designer(text=None, folder=None):
@@ -104,11 +107,19 @@ def test_a_drag_moves_the_curves_while_the_pointer_moves_and_keeps_the_design_at
     assert d.session.document["valves"]["intake"]["max_lift_mm"] == 9.0
     assert d.widgets["valves.intake.max_lift_mm"].value == 9.0
     _request(d, "move", "nose", 0.0, 9.8, seq=2)
-    _request(d, "end", "nose", 0.0, 9.7, seq=3)
+    checks = dict(d.checks.data)
+    _request(d, "end", "nose", 0.0, 9.7, seq=3, finish=False)
+    # at once: the valve's kinematics drawn (the page's probe: the curves' redraw of the release); its design, checks
+    # and panel to come from the worker thread
+    assert top() == pytest.approx(9.7, abs=1e-5)
+    assert d.kinematic_stamp.data["seq"] == [3] and d.checks_stamp.data["seq"] != [3]
+    assert d.checks.data == checks and d.widgets["valves.intake.max_lift_mm"].value == 9.0
+    d.finish_edit()
     assert top() == pytest.approx(9.7, abs=1e-5)
     assert d.session.document["valves"]["intake"]["max_lift_mm"] == 9.7
     assert d.widgets["valves.intake.max_lift_mm"].value == 9.7
-    assert d.kinematic_stamp.data["seq"] == [3]            # the page's probe: the redraw of the release
+    assert d.checks_stamp.data["seq"] == [3]               # the page's probe: the checks' redraw of the release
+    assert d.checks.data != checks
     assert len(d.session.undone) == 1                       # one edit, not one per move
     _request(d, "undo", seq=4)
     assert top() == pytest.approx(9.0, abs=1e-5) and d.widgets["valves.intake.max_lift_mm"].value == 9.0

@@ -141,9 +141,10 @@ def wait_redrawn(page, done):
     """Wait for the redraw that answers the last release (a drag, a key, an undo): the page's probe counts it."""
     page.wait_for_function(f"() => (window.vtTimesDone || 0) > {done} && window.vtTimes && "
                            "window.vtTimes.length > 0 && window.vt.inflight === 0", timeout=WAIT_MS)
-    page.wait_for_function("() => { const s = Bokeh.documents[0].get_model_by_name('kinematic-stamp').data;"
-                           " const seq = (s instanceof Map ? s.get('seq') : s.seq)[0]; return seq >= window.vt.release; }",
-                           timeout=WAIT_MS)
+    for stamp in ("kinematic-stamp", "checks-stamp"):      # a drag's curves come first, its checks and panel after
+        page.wait_for_function(f"() => {{ const s = Bokeh.documents[0].get_model_by_name('{stamp}').data;"
+                               " const seq = (s instanceof Map ? s.get('seq') : s.seq)[0];"
+                               " return seq >= window.vt.release; }", timeout=WAIT_MS)
 
 
 def drag(page, plot, start, end, steps=4, wait=True):

@@ -660,11 +660,33 @@ class Session:
             return False
         return self.apply(document, values)
 
-    def preview(self, values) -> tuple[dict, dict]:
-        """The document of the good design with dotted keys set and its design (:meth:`design`), kept as neither:
-        what a drag shows while the pointer moves."""
+    def preview(self, values, name) -> tuple[dict, dict]:
+        """The document of the good design with dotted keys set and the sketch of its valve ``name``
+        (:meth:`sketch`), kept as neither: what a drag shows while the pointer moves, and at once on its release.
+
+        Raises
+        ------
+        ValueError
+            A key that cannot be set (:func:`~valvetrain.specification.set_keys`).
+        """
         document = set_keys(self.good_document, values)
-        return document, self.design(document)
+        return document, self.sketch(document, name)
+
+    def sketch(self, document, name) -> dict:
+        """The good design with valve ``name``'s curves and contour, its camshaft speed and flow figures those of
+        ``document`` (:func:`valvetrain.api.kinematics`: its kinematic stages alone, a fraction of :meth:`design`'s
+        time), its spring's curves, checks and the other valves the good design's; ``{"ok": False, "errors"}``
+        where the kinematics do not design."""
+        found = api.kinematics(without_nones(document), name)
+        if not found["ok"]:
+            return found
+        good = self.good
+        valve = good["results"]["valves"][name]
+        mine = found["results"]["valves"][name]
+        spring = {k: v for k, v in good["series"][name].items() if k.startswith(("spring_", "required_"))}
+        return {**good, "series": {**good["series"], name: {**spring, **found["series"][name]}},
+                "results": {**good["results"], "valves": {**good["results"]["valves"], name: {
+                    **valve, "cam": {**valve["cam"], **mine["cam"]}, "flow": {**valve["flow"], **mine["flow"]}}}}}
 
     def undo(self) -> bool:
         """Go back to the good design before the last edit kept (the current one can be redone); False when there
@@ -685,27 +707,29 @@ class Session:
         return True
 
     @staticmethod
-    def settle(document, progress=None) -> dict:
+    def settle(document, progress=None, memo=None) -> dict:
         """The whole design of a good document, with its speed sweeps (and the diagnosis of springs that do not
         pass): :func:`valvetrain.api.design` with ``sweeps``; a document without a ``[dynamics]`` section is swept
         with the default one (:func:`valvetrain.api.sweep`) and its design is the good one (``results`` None).
-        ``progress`` as there.  Pure: called in a worker thread, kept by :meth:`settled`."""
+        ``progress`` as there; ``memo`` the valves swept before (:meth:`sweep_one`'s): not swept again.  Pure but
+        for the memo: called in a worker thread, kept by :meth:`settled`."""
         plain = without_nones(document)
         if any("dynamics" in v for v in plain.get("valves", {}).values()):
-            return api.design(plain, sweeps=True, progress=progress)
-        return {**api.sweep(plain, progress=progress), "results": None}
+            return api.design(plain, sweeps=True, progress=progress, memo=memo)
+        return {**api.sweep(plain, progress=progress, memo=memo), "results": None}
 
     @staticmethod
-    def sweep_one(document, name, progress=None) -> dict | None:
+    def sweep_one(document, name, progress=None, memo=None) -> dict | None:
         """The speed-sweep series of valve ``name`` of a good document alone (:func:`valvetrain.api.sweep` of that
-        valve): the whole design's (:meth:`settle`) sweep of it in a fraction of the time.  None where the whole
-        design sweeps no such valve (another valve has a ``[dynamics]`` section and this one none) or the sweep does
-        not come (the whole design says why).  ``progress`` as for :meth:`settle`."""
+        valve): the whole design's (:meth:`settle`) sweep of it in a fraction of the time; with a ``memo``, kept
+        there for :meth:`settle`, which then does not sweep it again.  None where the whole design sweeps no such
+        valve (another valve has a ``[dynamics]`` section and this one none) or the sweep does not come (the whole
+        design says why).  ``progress`` as for :meth:`settle`."""
         plain = without_nones(document)
         valves = plain.get("valves", {})
         if name not in ([n for n, v in valves.items() if "dynamics" in v] or list(valves)):
             return None
-        result = api.sweep(plain, progress=progress, names=[name])
+        result = api.sweep(plain, progress=progress, names=[name], memo=memo)
         return result["sweeps"][name] if result["ok"] else None
 
     def settled(self, result) -> None:
