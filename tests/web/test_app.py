@@ -20,6 +20,7 @@ from valvetrain.web.app import (INCH, SEVERITY_COLOURS, WORDS, Designer, _now, k
 from valvetrain.web.session import Session, form  # noqa: E402
 
 from appendix import appendix_text  # noqa: E402
+from breathing_example import breathing_text  # noqa: E402
 
 EXAMPLES = Path(__file__).parents[2] / "examples"
 
@@ -474,3 +475,46 @@ def test_a_specification_without_valves_opens_with_its_engine_and_checks():
     assert d.valve is None and [p.title for p in d.spec_tabs.tabs] == ["Engine"]
     assert any(k.startswith("crank") or "torque" in k for k in d.checks.data["key"])
     assert d.status.text == WORDS["en"]["no_valves"]
+
+
+def test_the_breathing_panel_follows_an_edit_of_the_intake_closing():
+    # issue 40: "once the breathing exists, its VE curve redrawn after an edit"
+    d = _designer(breathing_text())
+    curve = d.breathing["curve"].data
+    before = list(curve["ve"])
+    assert list(curve["speed"]) == [2000.0, 4000.0, 6000.0] and d.breathing_status.text == ""
+    assert before == [r["volumetric_efficiency"] for r in d.session.good["results"]["breathing"]["curve"]]
+    d.on_field(_field(d, "valves.intake.closes_deg"), "value", 78.0, 50.0)
+    assert d.session.document["valves"]["intake"]["closes_deg"] == 50.0
+    after = list(d.breathing["curve"].data["ve"])
+    # the intake closing 28 crank deg earlier: less of the charge pushed back into the intake at low speed, a higher
+    # volumetric efficiency at 2000 rpm (Heywood (1988), chapter 6: backflow with a late closing at low speed)
+    assert after[0] > before[0]
+    assert not d.torque_axis.visible                      # motored: no torque
+    # without [breathing] the panel says so
+    assert _designer().breathing_status.text == WORDS["en"]["no_breathing"]
+
+
+def test_an_edit_sweeps_each_valve_once(monkeypatch):
+    # issue 40: the sweep of the valve shown (drawn first, alone) was swept again by the whole design after it
+    import tomli_w
+
+    import valvetrain.design.valve as stages
+    from valvetrain.specification import example_text
+    from valvetrain.web.app import SWEEP_WORKERS
+
+    document = tomllib.loads(example_text())
+    for valve in document["valves"].values():
+        valve["dynamics"]["speeds"] = 12                  # a short sweep: what is counted is the same
+    d = _designer(tomli_w.dumps(document))
+    swept, real = [], stages.dynamics_stage
+    monkeypatch.setattr(stages, "dynamics_stage", lambda *a, **k: swept.append(a[5]) or real(*a, **k))
+    _request(d, "end", "nose", 0.0, 9.5, seq=3)
+    assert swept == []                                    # the design of the edit: without the sweeps
+    d.on_drawn("data", None, {"n": [d.kinematic_stamp.data["n"][0]]})
+    SWEEP_WORKERS.submit(lambda: None).result()           # the sweep's thread done
+    assert swept == ["intake", "exhaust"]                 # the valve shown first, alone; the other by the whole design
+    for callback in list(d.doc.session_callbacks):        # what the server's loop would run: the panel, the checks
+        callback.callback()
+    assert d.sweep_stamp.data["n"] == [2] and "pending" not in d.checks.data["status"]   # the valve's, the whole
+    assert len(d.sweep_sources["force"].data["y"]) == 12
