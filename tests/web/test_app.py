@@ -495,13 +495,21 @@ def test_the_breathing_panel_follows_an_edit_of_the_intake_closing():
     assert _designer().breathing_status.text == WORDS["en"]["no_breathing"]
 
 
+def _run_callbacks(d):
+    """Run the callbacks the worker threads left for the server's loop (none runs without a server), each once."""
+    while d.doc.session_callbacks:
+        callback = d.doc.session_callbacks[0]
+        d.doc.remove_next_tick_callback(callback)
+        callback.callback()
+
+
 def test_an_edit_sweeps_each_valve_once(monkeypatch):
     # issue 40: the sweep of the valve shown (drawn first, alone) was swept again by the whole design after it
     import tomli_w
 
     import valvetrain.design.valve as stages
     from valvetrain.specification import example_text
-    from valvetrain.web.app import SWEEP_WORKERS
+    from valvetrain.web.app import DESIGN_WORKERS, SWEEP_WORKERS
 
     document = tomllib.loads(example_text())
     for valve in document["valves"].values():
@@ -509,12 +517,20 @@ def test_an_edit_sweeps_each_valve_once(monkeypatch):
     d = _designer(tomli_w.dumps(document))
     swept, real = [], stages.dynamics_stage
     monkeypatch.setattr(stages, "dynamics_stage", lambda *a, **k: swept.append(a[5]) or real(*a, **k))
-    _request(d, "end", "nose", 0.0, 9.5, seq=3)
-    assert swept == []                                    # the design of the edit: without the sweeps
-    d.on_drawn("data", None, {"n": [d.kinematic_stamp.data["n"][0]]})
-    SWEEP_WORKERS.submit(lambda: None).result()           # the sweep's thread done
+    # a drag released: its kinematics at once; then its design and, beside it, the valve's sweep (not waiting for
+    # the design), then the whole design's sweeps (waiting for it)
+    _request(d, "end", "nose", 0.0, 9.5, seq=3, finish=False)
+    assert d.kinematic_stamp.data["seq"] == [3] and swept == []
+    _run_callbacks(d)
+    for workers in (DESIGN_WORKERS, SWEEP_WORKERS):
+        workers.submit(lambda: None).result()             # the threads done
     assert swept == ["intake", "exhaust"]                 # the valve shown first, alone; the other by the whole design
-    for callback in list(d.doc.session_callbacks):        # what the server's loop would run: the panel, the checks
-        callback.callback()
+    _run_callbacks(d)
+    assert d.session.document["valves"]["intake"]["max_lift_mm"] == 9.5 and d.checks_stamp.data["seq"] == [3]
     assert d.sweep_stamp.data["n"] == [2] and "pending" not in d.checks.data["status"]   # the valve's, the whole
     assert len(d.sweep_sources["force"].data["y"]) == 12
+    # an edit in the panel: its sweep when the page has drawn it, each valve once again
+    d.on_field(_field(d, "engine.rated_speed_rpm"), "value", 7000, 6500)
+    d.on_drawn("data", None, {"n": [d.kinematic_stamp.data["n"][0]]})
+    SWEEP_WORKERS.submit(lambda: None).result()
+    assert swept == ["intake", "exhaust"] * 2

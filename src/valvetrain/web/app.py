@@ -42,7 +42,7 @@ from ..report.html import check_range
 from ..report.i18n import TEXT
 from ..report.names import label, record_quantity_text, translate
 from ..units import per_cam_degree
-from .session import GROUPS, form, has_points, parse_value, value_at, value_of, value_text
+from .session import GROUPS, document_key, form, has_points, parse_value, value_at, value_of, value_text
 
 WORDS = {lang: catalogue(lang)["designer"] for lang in LANGS}
 """The designer's own words in each language, from the catalogue's ``[designer]`` (the plots' and the checks' come from
@@ -377,6 +377,7 @@ class Designer:
         self.sweeps, self.base_sweeps = {}, None        # the valves' sweep series drawn, the baseline's
         self.sweep_due = False
         self.sweep_seq = 0
+        self.sweep_key = None            # the document whose sweep was started last (document_key)
         self.shown = None                # a drag's preview drawn: (document, result), else the good design
         self.pending = None              # the design of a drag released, in the worker: (future, keys set, seq)
         self.fields, self.widgets = {}, {}
@@ -778,6 +779,8 @@ class Designer:
         if live:
             return
         _count(self.checks_stamp, began, seq)
+        if sweep and self.sweep_key == document_key(self.session.document):
+            sweep = False                                 # its sweep started at the release (_launch)
         if sweep:
             self.sweeps = {}                              # the sweeps of the design before: drawn no more
         self.sweep_due = self.sweep_due or sweep          # a switch of language before the page drew keeps it due
@@ -965,16 +968,19 @@ class Designer:
             self.sweep_due = False
             self.start_sweep()
 
-    def start_sweep(self) -> None:
+    def start_sweep(self, document=None, job=None) -> None:
         """In the worker thread: the speed sweep of the valve shown alone, drawn as soon as it comes
         (:meth:`~valvetrain.web.session.Session.sweep_one`: a fraction of the whole design's time), then the whole
         design of the good document with every valve's sweep (:meth:`~valvetrain.web.session.Session.settle`; the
         valve shown is not swept again: the first's design is kept for it), its checks to the table; a newer change
-        stops both at their next speed."""
+        stops both at their next speed.  ``document``: a drag's released (default the good one), whose design
+        ``job`` (a future of :meth:`~valvetrain.web.session.Session.design`) the whole design waits for: nothing
+        more of it is swept when it does not design."""
         self.generation += 1
         generation, seq, valve = self.generation, self.sweep_seq, self.valve
         self.sweep_status.text = WORDS[self.lang]["sweeping"]
-        document = self.session.document
+        document = self.session.document if document is None else document
+        self.sweep_key = document_key(document)
 
         def progress(name, done, total):
             if generation != self.generation:
@@ -986,6 +992,8 @@ class Designer:
                 first = self.session.sweep_one(document, valve, progress=progress, memo=memo)
                 if first is not None:
                     self.doc.add_next_tick_callback(partial(self.draw_sweep_of, generation, valve, first, began, seq))
+                if job is not None and not job.result()["ok"]:
+                    return
                 result = self.session.settle(document, progress=progress, memo=memo)
             except Stale:
                 return
@@ -1015,6 +1023,9 @@ class Designer:
         """Keep the whole design of redraw ``generation`` if it is the newest: its checks to the table, its sweeps
         to the sweep panel; ``began`` as for :meth:`redraw`, when the worker took it up; ``seq`` the page's request
         of the design (0: its panel drawn already, from the valve's own sweep)."""
+        if generation != self.generation:
+            return
+        self.finish_edit()                                # the document swept is the good one (its design came)
         if generation != self.generation:
             return
         self.session.settled(result)
@@ -1127,12 +1138,25 @@ class Designer:
         self.generation += 1                              # the sweep of the design before: stale, stopped
         self.shown = (document, sketch)
         self.redraw(began=began, seq=seq, live=True)
-        job = DESIGN_WORKERS.submit(self.session.design, document)
-        self.pending = (job, values, seq)
+        self.pending = [None, values, seq, document]
+        # after this answer has gone: the two threads would hold up its sending
+        self.doc.add_next_tick_callback(partial(self._launch, self.pending))
+
+    def _launch(self, pending) -> None:
+        """The design of a drag released (:meth:`_release`) in its worker thread and, beside it, the sweep of the
+        valve shown (:meth:`start_sweep`: its document's sweep does not wait for its design; the whole design's
+        sweeps do), unless an edit kept it before."""
+        if self.pending is not pending:
+            return
+        document = pending[3]
+        self.sweeps = {}                                  # the sweeps of the design before: drawn no more
+        job = pending[0] = DESIGN_WORKERS.submit(self.session.design, document)
         job.add_done_callback(lambda _: self.doc.add_next_tick_callback(partial(self._designed, job)))
+        self.sweep_seq = pending[2]
+        self.start_sweep(document, job)
 
     def _designed(self, job) -> None:
-        """The design of a drag released has come (:meth:`_release`): kept, unless an edit kept it before."""
+        """The design of a drag released has come (:meth:`_launch`): kept, unless an edit kept it before."""
         if self.pending is not None and self.pending[0] is job:
             self.finish_edit()
 
@@ -1142,10 +1166,15 @@ class Designer:
         good design before it drawn again with the reason.  Nothing when no drag's design is pending."""
         if self.pending is None:
             return
-        job, values, seq = self.pending
+        job, values, seq, document = self.pending
         self.pending = None
-        job.result()                                      # kept by the session: the edit below designs nothing
-        self._answer(self.session.edit(values), _now(), "drag", seq, curves_seq=0)
+        if job is not None:
+            job.result()                                  # kept by the session: the edit below designs nothing
+        designed = self.session.edit(values)
+        if not designed and self.sweep_key == document_key(document):
+            self.sweep_key = None                         # the refused design's sweep: the good design's again
+            designed = True
+        self._answer(designed, _now(), "drag", seq, curves_seq=0)
 
     def on_request(self, attr, old, new) -> None:
         """A request of the page (page.js): a handle moved (``move``: designed and drawn, not kept), released
