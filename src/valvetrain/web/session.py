@@ -590,6 +590,7 @@ class Session:
     memo: dict = field(default_factory=dict)
     designs: OrderedDict = field(default_factory=OrderedDict)
     specs: OrderedDict = field(default_factory=OrderedDict)
+    sketches: OrderedDict = field(default_factory=OrderedDict)
 
     @classmethod
     def start(cls, text=None, source_dir=None) -> "Session":
@@ -662,7 +663,8 @@ class Session:
 
     def preview(self, values, name) -> tuple[dict, dict]:
         """The document of the good design with dotted keys set and the sketch of its valve ``name``
-        (:meth:`sketch`), kept as neither: what a drag shows while the pointer moves, and at once on its release.
+        (:meth:`sketch`), kept as neither: what a drag shows while the pointer moves, and at once on its release
+        (the last move's, kept: :meth:`sketch`).
 
         Raises
         ------
@@ -676,8 +678,14 @@ class Session:
         """The good design with valve ``name``'s curves and contour, its camshaft speed and flow figures those of
         ``document`` (:func:`valvetrain.api.kinematics`: its kinematic stages alone, a fraction of :meth:`design`'s
         time), its spring's curves, checks and the other valves the good design's; ``{"ok": False, "errors"}``
-        where the kinematics do not design."""
-        found = api.kinematics(without_nones(document), name)
+        where the kinematics do not design.  The kinematics of the last :data:`DESIGNS_KEPT` documents are kept:
+        a release where the pointer last moved is not sketched again."""
+        key = (document_key(document), name)
+        found = self.sketches.get(key)
+        if found is None:
+            found = self.sketches[key] = api.kinematics(without_nones(document), name)
+            while len(self.sketches) > DESIGNS_KEPT:
+                self.sketches.popitem(last=False)
         if not found["ok"]:
             return found
         good = self.good
