@@ -572,11 +572,12 @@ class Session:
     Every edit applies to the good design (:meth:`edit`): one that designs becomes the good design (and can be
     undone), one that does not leaves the good design, the undo and the redo as they were.
 
-    An edit is answered in two steps: :meth:`apply` designs without the speed sweeps of the ``[dynamics]``
-    sections and without the diagnosis of springs that do not pass (``good``: the kinematics, springs and checks in
-    tens of ms; a valve the edit left as it was is not designed again: ``memo``; a document designed before is not
-    designed again: :meth:`design`); :meth:`settle` adds them (``full``: the checks of the whole design and the
-    sweeps), in the background, and :meth:`settled` keeps it."""
+    An edit is answered in steps: a drag's sketch first (:meth:`preview`: the valve's kinematics alone, kept as
+    neither); :meth:`apply` designs without the speed sweeps of the ``[dynamics]`` sections and without the
+    diagnosis of springs that do not pass (``good``: the kinematics, springs and checks in tens of ms; a valve the
+    edit left as it was is not designed again: ``memo``; a document designed before is not designed again:
+    :meth:`design`); :meth:`settle` adds them (``full``: the checks of the whole design and the sweeps), in the
+    background, and :meth:`settled` keeps it."""
 
     good_document: dict
     good: dict = None
