@@ -4,16 +4,18 @@ The page fits 1400 x 900 px: a bar of commands on top; on the left the specifica
 specification's models (:func:`valvetrain.web.session.form`) and grouped as a designer thinks (engine, valve, cam,
 spring, drive, dynamics), each input with its name, unit and range; on the right the lift and the acceleration with
 their handles, below them the other plots in tabs (velocity and jerk; contour and curvature; time-area and spring;
-the dynamics at speed), and at the bottom the checks and the cam card.
+the dynamics at speed; the breathing's volumetric efficiency against the speed), and at the bottom the checks and
+the cam card.
 
 The handles are dragged by the page's own script (``page.js``): one to one with the pointer within their limits,
-which the selected handle shows; while the pointer moves, the server designs the handle's newest position
-(one request at a time) and the curves follow; the release keeps the design (an edit that can be undone), arrow keys
-nudge the selected handle, Ctrl-Z and Ctrl-Y undo and redo.  The speed sweep of a design kept runs in a worker
-thread and only the newest one is drawn (an older one is stopped at its next speed).
+which the selected handle shows; while the pointer moves, the server works out the kinematics of the handle's
+valve at its newest position (one request at a time) and the curves follow; the release draws them at once and
+keeps the design when its worker thread has designed it (springs, checks, breathing: an edit that can be undone),
+arrow keys nudge the selected handle, Ctrl-Z and Ctrl-Y undo and redo.  The speed sweep of a design kept runs in a
+worker thread and only the newest one is drawn (an older one is stopped at its next speed).
 
 The page keeps its timings: ``window.vtTimes`` (the release of a drag, a key or an undo to the painted frame of its
-redraw, ms), ``window.vtSweepTimes`` (to the painted frame of the sweep panel), ``window.vtTimesArrived`` (to the
+curves, ms), ``window.vtChecksTimes`` (to the painted frame of its checks, card and panel), ``window.vtSweepTimes`` (to the painted frame of the sweep panel), ``window.vtTimesArrived`` (to the
 arrival of the redraw), ``window.vtMoveTimes`` (a move of the pointer sent to the painted frame of the curves it
 brought); ``window.vtTimesDone``, ``window.vtSweepTimesDone`` count the redraws painted.
 """
