@@ -1,6 +1,8 @@
 """The designer's speed in the browser (issues 25 and 40), measured by the page itself: the release of a drag
-(pointerup) to the painted frame of the redrawn curves, checks and panel (``window.vtTimes``), and to the painted
-frame of the redrawn sweep panel (``window.vtSweepTimes``); while the pointer moves, a move sent to the painted frame
+(pointerup) to the painted frame of the redrawn curves (``window.vtTimes``; a tree before the two answers of a
+release drew its checks and panel with them), to the painted frame of the redrawn checks, card and panel
+(``window.vtChecksTimes``, the design's second answer) and to the painted frame of the redrawn sweep panel
+(``window.vtSweepTimes``); while the pointer moves, a move sent to the painted frame
 of the curves it brought (``window.vtMoveTimes``).  "Painted" is the second animation frame after the update arrived
 (the frame that shows it).
 
@@ -52,13 +54,15 @@ COUNTS = "() => [(window.vtTimes || []).length, (window.vtSweepTimes || []).leng
 
 
 def server_share(repeats=10):
-    """The server's part of each redraw [ms, median]: the design without the speed sweeps (the kinematics and the
-    checks) of a drag of the nose (the lift 9.5 or 9.6 mm in turn, the exhaust kept in the memo as the session keeps
+    """The server's part of each redraw [ms, median]: the kinematics of the valve dragged alone (the first answer
+    to a release and the answer to a move), the design without the speed sweeps (the kinematics and the checks) of
+    a drag of the nose (the lift 9.5 or 9.6 mm in turn, the exhaust kept in the memo as the session keeps
     it) and the whole design with them (the sweep panel and the checks of the dynamics)."""
     documents = [set_keys(tomllib.loads(example_text()), {"valves.intake.max_lift_mm": lift}) for lift in (9.5, 9.6)]
     Session.settle(documents[0])
     out = []
-    for call in (partial(api.design, dynamics=False, diagnose=False, memo={}), Session.settle):
+    for call in (partial(api.kinematics, name="intake"), partial(api.design, dynamics=False, diagnose=False,
+                                                                  memo={}), Session.settle):
         times = []
         for i in range(repeats):
             t = time.perf_counter()
@@ -114,14 +118,16 @@ def median(values, unit="ms"):
 
 def summary(name, times):
     """The medians of one tree's redraws: release -> redrawn, the arrival, the split, the sweep panel, the moves."""
-    kinematic, sweep, arrived, server, moves = times
+    kinematic, sweep, arrived, server, moves, checks = times
     up, callback, down, *processor = (statistics.median(s) for s in zip(*server))
     drawing = statistics.median(k - a for k, a in zip(kinematic, arrived))
     return (f"{name}:\n"
-            f"  release -> curves, checks and panel painted: {median(kinematic)} (target <= 100 ms); the update "
+            f"  release -> curves painted: {median(kinematic)} (target <= 100 ms); the update "
             f"arrived after {statistics.median(arrived):.0f}; way up / server's callback / way down / drawing: "
             f"{up:.0f} / {callback:.0f} / {down:.0f} / {drawing:.0f} ms; the server's processor time "
             f"{' '.join(f'{v:.0f} ms' for v in processor) or 'not sent'}\n"
+            f"  release -> checks, card and panel painted: "
+            f"{median(checks) if checks else 'with the curves (one answer)'}\n"
             f"  release -> sweep panel painted: {median(sweep)} (target <= 500 ms)\n"
             f"  while the pointer moves, a move -> its curves painted: {median(moves or [])} "
             f"({len(moves or [])} moves drawn)")
@@ -139,18 +145,18 @@ def main(drags=20, baseline=None):
                 for page, live in pages.values():          # alternating: each tree's drags in the same minutes
                     drag(page, live, number + 1)
             times = {name: page.evaluate("() => [window.vtTimes, window.vtSweepTimes, window.vtTimesArrived, "
-                                         "window.vtTimesServer, window.vtMoveTimes]")
+                                         "window.vtTimesServer, window.vtMoveTimes, window.vtChecksTimes]")
                      for name, (page, _) in pages.items()}
             browser.close()
     finally:
         for proc, _ in servers.values():
             proc.terminate()
             proc.wait(timeout=20)
-    design_ms, sweep_ms = server_share()
+    kinematics_ms, design_ms, sweep_ms = server_share()
     print(f"drags: {drags} per tree, in a 1400 x 900 window")
     for name, t in times.items():
         print(summary(name, t))
-    print(f"in this process: the design without the sweeps {design_ms:.0f} ms, the whole design with the sweeps "
+    print(f"in this process: the valve's kinematics {kinematics_ms:.0f} ms, the design without the sweeps {design_ms:.0f} ms, the whole design with the sweeps "
           f"{sweep_ms:.0f} ms")
     print("load average (1, 5, 15 min) before: " + ", ".join(f"{v:.1f}" for v in load_before)
           + "; after: " + ", ".join(f"{v:.1f}" for v in os.getloadavg()) + f" ({os.cpu_count()} cores)")

@@ -219,3 +219,23 @@ def test_design_without_the_sweeps_of_a_file_with_no_valves(name):
     quick = api.design(document, dynamics=False)
     assert quick["ok"], quick["errors"]
     _close(quick["results"], api.design(document)["results"])
+
+
+def test_kinematics_of_one_valve_are_the_designs_curves():
+    # the designer's answer to a drag (api.kinematics: the law, flow and profile stages of the valve alone) draws
+    # what the whole design of the same specification draws: every series but the spring's, the flow's figures
+    from valvetrain.specification import example_text
+
+    document = tomllib.loads(example_text())
+    alone = api.kinematics(document, "intake")
+    whole = api.design(document, dynamics=False, diagnose=False)
+    assert alone["ok"] and alone["series"]["intake"] == {
+        k: v for k, v in whole["series"]["intake"].items() if not k.startswith(("spring_", "required_"))}
+    assert alone["results"]["valves"]["intake"]["flow"] == whole["results"]["valves"]["intake"]["flow"]
+    assert alone["results"]["valves"]["intake"]["cam"]["camshaft_speed_rad_s"] == \
+        whole["results"]["valves"]["intake"]["cam"]["camshaft_speed_rad_s"]
+    # a cam the law cannot make is refused as the design refuses it; a valve the specification lacks by its name
+    low = {**document, "valves": {**document["valves"], "intake": {**document["valves"]["intake"], "max_lift_mm": 0.31}}}
+    assert [e["text"] for e in api.kinematics(low, "intake")["errors"]] == \
+        [e["text"] for e in api.design(low, dynamics=False)["errors"]]
+    assert api.kinematics(document, "inlet")["errors"][0]["text"] == "no valve 'inlet'; allowed: intake, exhaust"

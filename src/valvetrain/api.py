@@ -71,32 +71,68 @@ def valve_series(v) -> dict[str, Any]:
     contour (cam frame, nose on +y) with its heel circle, and the spring's required force and chosen line against
     the valve lift.
     """
-    tab, drive = v.table, v.drive
-    i = v.rocker_ratio
+    drive = v.drive
     order = np.argsort(drive.lift)
     lift = np.asarray(drive.lift)[order]
     top = np.array([0.0, float(lift.max())])
     chosen = drive.lines.chosen
     return {
-        "cam_deg": rad_to_deg(tab.cam_angle),
-        "crank_deg": rad_to_deg(v.nose_crank + 2.0 * tab.cam_angle),
-        "tappet_lift_mm": _column(tab.lift) / MM,
-        "valve_lift_mm": _column(tab.valve_lift) / MM,
-        "valve_velocity_m_s": i * _column(tab.velocity),
-        "valve_acceleration_m_s2": i * _column(tab.acceleration),
-        "valve_jerk_m_s3": i * _column(tab.jerk),
-        "segments_cam_deg": rad_to_deg(np.asarray(v.law.breakpoints)),
-        "rho_mm": _column(tab.rho) / MM,
-        "curtain_area_mm2": _column(tab.curtain_area) / MM**2,
-        "time_area_mm2_s": _column(tab.time_area) / MM**2,
-        "contour_x_mm": _column(v.contour[0]) / MM,
-        "contour_y_mm": _column(v.contour[1]) / MM,
-        "heel_radius_mm": v.heel_radius / MM,
+        **kinematic_series(v.cam, v.profile),
         "spring_lift_mm": lift / MM,
         "required_force_N": _column(drive.required_force)[order],
         "spring_line_lift_mm": top / MM,
         "spring_line_force_N": _column(chosen.force(top)),
     }
+
+
+def kinematic_series(cam, profile) -> dict[str, Any]:
+    """The series of :func:`valve_series` that the kinematic stages give (a valve's
+    :class:`~valvetrain.design.valve.CamResult` and :class:`~valvetrain.design.valve.ProfileResult`): all but the
+    spring's."""
+    tab, i = profile.table, cam.rocker_ratio
+    return {
+        "cam_deg": rad_to_deg(tab.cam_angle),
+        "crank_deg": rad_to_deg(cam.nose + 2.0 * tab.cam_angle),
+        "tappet_lift_mm": _column(tab.lift) / MM,
+        "valve_lift_mm": _column(tab.valve_lift) / MM,
+        "valve_velocity_m_s": i * _column(tab.velocity),
+        "valve_acceleration_m_s2": i * _column(tab.acceleration),
+        "valve_jerk_m_s3": i * _column(tab.jerk),
+        "segments_cam_deg": rad_to_deg(np.asarray(cam.law.breakpoints)),
+        "rho_mm": _column(tab.rho) / MM,
+        "curtain_area_mm2": _column(tab.curtain_area) / MM**2,
+        "time_area_mm2_s": _column(tab.time_area) / MM**2,
+        "contour_x_mm": _column(profile.contour[0]) / MM,
+        "contour_y_mm": _column(profile.contour[1]) / MM,
+        "heel_radius_mm": cam.heel_radius / MM,
+    }
+
+
+def kinematics(spec, name) -> dict[str, Any]:
+    """The lift curves and contour of valve ``name`` alone, a fraction of :func:`design`'s time: its law, flow and
+    profile stages (:func:`valvetrain.design.valve_kinematics`), validated whole, without its drive, springs and
+    checks and without the other valves (the designer's answer while a handle is dragged; :func:`design` may
+    still refuse the specification for what these stages do not reach, a spring that does not fit).
+
+    Returns
+    -------
+    dict
+        ``ok``, ``errors`` as for :func:`design`; ``series``: ``{name: series}``, the series of :func:`valve_series`
+        but the spring's (:func:`kinematic_series`); ``results``: ``{"valves": {name: {"cam": ..., "flow": ...}}}``,
+        the records of the valve's cam and flow in results.json (None when not ok).
+    """
+    from .design import valve_kinematics
+    from .design.results import record
+
+    parsed, errors = _parsed(spec)
+    if parsed is None:
+        return {"ok": False, "errors": errors, "results": None, "series": None}
+    try:
+        cam, flow, profile = valve_kinematics(parsed, name)
+    except SpecError as err:
+        return {"ok": False, "errors": error_records(err), "results": None, "series": None}
+    return {"ok": True, "errors": [], "series": plain({name: kinematic_series(cam, profile)}),
+            "results": plain({"valves": {name: {"cam": record(cam), "flow": record(flow)}}})}
 
 
 def _parsed(spec):
@@ -205,7 +241,7 @@ def sweep_series(d) -> dict[str, Any]:
     }
 
 
-def sweep(spec, progress=None, names=None) -> dict[str, Any]:
+def sweep(spec, progress=None, names=None, memo=None) -> dict[str, Any]:
     """The speed sweep of a specification given as a dict: what ``valvetrain sweep`` computes, as plain data.
 
     Parameters
@@ -218,6 +254,9 @@ def sweep(spec, progress=None, names=None) -> dict[str, Any]:
         designer's way of dropping a sweep that a newer change made stale).
     names : sequence of str, optional
         Sweep these valves only (``valvetrain sweep --valve``), each with its section or the default one.
+    memo : dict, optional
+        The valves' designs kept between calls (:func:`valvetrain.design.sweep_designs`): a valve swept before with
+        the same inputs is not swept again; a :func:`design` with ``sweeps`` and this memo takes the valves swept.
 
     Returns
     -------
@@ -230,7 +269,7 @@ def sweep(spec, progress=None, names=None) -> dict[str, Any]:
     if parsed is None:
         return {"ok": False, "errors": errors, "sweeps": None}
     try:
-        valves = sweep_designs(parsed, names, progress=progress)
+        valves = sweep_designs(parsed, names, progress=progress, memo=memo)
     except SpecError as err:
         return {"ok": False, "errors": error_records(err), "sweeps": None}
     return {"ok": True, "errors": [], "sweeps": plain({n: sweep_series(v.dynamics) for n, v in valves.items()})}

@@ -20,6 +20,7 @@ from valvetrain.web.app import (INCH, SEVERITY_COLOURS, WORDS, Designer, _now, k
 from valvetrain.web.session import Session, form  # noqa: E402
 
 from appendix import appendix_text  # noqa: E402
+from breathing_example import breathing_text  # noqa: E402
 
 EXAMPLES = Path(__file__).parents[2] / "examples"
 
@@ -33,10 +34,13 @@ def _field(d, path):
     return next(f for _, group in form(d.session.document, d.valve) for f in group if f.path == path)
 
 
-def _request(d, kind, name="", x=0.0, y=0.0, plot="lift", text="", seq=1):
-    """What page.js sends: a handle moved, released or nudged, undo, redo, restore."""
+def _request(d, kind, name="", x=0.0, y=0.0, plot="lift", text="", seq=1, finish=True):
+    """What page.js sends: a handle moved, released or nudged, undo, redo, restore; a release's design (in the worker
+    thread) waited for and kept unless not ``finish``."""
     d.on_request("data", {}, {"kind": [kind], "seq": [seq], "plot": [plot], "name": [name], "x": [x], "y": [y],
                               "text": [text]})
+    if finish:
+        d.finish_edit()
 
 
 def _designer(text=None, folder=None):
@@ -104,11 +108,19 @@ def test_a_drag_moves_the_curves_while_the_pointer_moves_and_keeps_the_design_at
     assert d.session.document["valves"]["intake"]["max_lift_mm"] == 9.0
     assert d.widgets["valves.intake.max_lift_mm"].value == 9.0
     _request(d, "move", "nose", 0.0, 9.8, seq=2)
-    _request(d, "end", "nose", 0.0, 9.7, seq=3)
+    checks = dict(d.checks.data)
+    _request(d, "end", "nose", 0.0, 9.7, seq=3, finish=False)
+    # at once: the valve's kinematics drawn (the page's probe: the curves' redraw of the release); its design, checks
+    # and panel to come from the worker thread
+    assert top() == pytest.approx(9.7, abs=1e-5)
+    assert d.kinematic_stamp.data["seq"] == [3] and d.checks_stamp.data["seq"] != [3]
+    assert d.checks.data == checks and d.widgets["valves.intake.max_lift_mm"].value == 9.0
+    d.finish_edit()
     assert top() == pytest.approx(9.7, abs=1e-5)
     assert d.session.document["valves"]["intake"]["max_lift_mm"] == 9.7
     assert d.widgets["valves.intake.max_lift_mm"].value == 9.7
-    assert d.kinematic_stamp.data["seq"] == [3]            # the page's probe: the redraw of the release
+    assert d.checks_stamp.data["seq"] == [3]               # the page's probe: the checks' redraw of the release
+    assert d.checks.data != checks
     assert len(d.session.undone) == 1                       # one edit, not one per move
     _request(d, "undo", seq=4)
     assert top() == pytest.approx(9.0, abs=1e-5) and d.widgets["valves.intake.max_lift_mm"].value == 9.0
@@ -463,3 +475,62 @@ def test_a_specification_without_valves_opens_with_its_engine_and_checks():
     assert d.valve is None and [p.title for p in d.spec_tabs.tabs] == ["Engine"]
     assert any(k.startswith("crank") or "torque" in k for k in d.checks.data["key"])
     assert d.status.text == WORDS["en"]["no_valves"]
+
+
+def test_the_breathing_panel_follows_an_edit_of_the_intake_closing():
+    # issue 40: "once the breathing exists, its VE curve redrawn after an edit"
+    d = _designer(breathing_text())
+    curve = d.breathing["curve"].data
+    before = list(curve["ve"])
+    assert list(curve["speed"]) == [2000.0, 4000.0, 6000.0] and d.breathing_status.text == ""
+    assert before == [r["volumetric_efficiency"] for r in d.session.good["results"]["breathing"]["curve"]]
+    d.on_field(_field(d, "valves.intake.closes_deg"), "value", 78.0, 50.0)
+    assert d.session.document["valves"]["intake"]["closes_deg"] == 50.0
+    after = list(d.breathing["curve"].data["ve"])
+    # the intake closing 28 crank deg earlier: less of the charge pushed back into the intake at low speed, a higher
+    # volumetric efficiency at 2000 rpm (Heywood (1988), chapter 6: backflow with a late closing at low speed)
+    assert after[0] > before[0]
+    assert not d.torque_axis.visible                      # motored: no torque
+    # without [breathing] the panel says so
+    assert _designer().breathing_status.text == WORDS["en"]["no_breathing"]
+
+
+def _run_callbacks(d):
+    """Run the callbacks the worker threads left for the server's loop (none runs without a server), each once."""
+    while d.doc.session_callbacks:
+        callback = d.doc.session_callbacks[0]
+        d.doc.remove_next_tick_callback(callback)
+        callback.callback()
+
+
+def test_an_edit_sweeps_each_valve_once(monkeypatch):
+    # issue 40: the sweep of the valve shown (drawn first, alone) was swept again by the whole design after it
+    import tomli_w
+
+    import valvetrain.design.valve as stages
+    from valvetrain.specification import example_text
+    from valvetrain.web.app import DESIGN_WORKERS, SWEEP_WORKERS
+
+    document = tomllib.loads(example_text())
+    for valve in document["valves"].values():
+        valve["dynamics"]["speeds"] = 12                  # a short sweep: what is counted is the same
+    d = _designer(tomli_w.dumps(document))
+    swept, real = [], stages.dynamics_stage
+    monkeypatch.setattr(stages, "dynamics_stage", lambda *a, **k: swept.append(a[5]) or real(*a, **k))
+    # a drag released: its kinematics at once; then its design and, beside it, the valve's sweep (not waiting for
+    # the design), then the whole design's sweeps (waiting for it)
+    _request(d, "end", "nose", 0.0, 9.5, seq=3, finish=False)
+    assert d.kinematic_stamp.data["seq"] == [3] and swept == []
+    _run_callbacks(d)
+    for workers in (DESIGN_WORKERS, SWEEP_WORKERS):
+        workers.submit(lambda: None).result()             # the threads done
+    assert swept == ["intake", "exhaust"]                 # the valve shown first, alone; the other by the whole design
+    _run_callbacks(d)
+    assert d.session.document["valves"]["intake"]["max_lift_mm"] == 9.5 and d.checks_stamp.data["seq"] == [3]
+    assert d.sweep_stamp.data["n"] == [2] and "pending" not in d.checks.data["status"]   # the valve's, the whole
+    assert len(d.sweep_sources["force"].data["y"]) == 12
+    # an edit in the panel: its sweep when the page has drawn it, each valve once again
+    d.on_field(_field(d, "engine.rated_speed_rpm"), "value", 7000, 6500)
+    d.on_drawn("data", None, {"n": [d.kinematic_stamp.data["n"][0]]})
+    SWEEP_WORKERS.submit(lambda: None).result()
+    assert swept == ["intake", "exhaust"] * 2

@@ -383,3 +383,22 @@ def test_acceleration_points_of_an_inline_table_move_the_lift_of_their_point():
     # the law's fit follows the moved point: the design's acceleration there rises by about the drag
     after = {x.name: x for x in s.handles("intake")}[a.name]
     assert 0.5 * rise < after.y - a.y < 2.0 * rise
+
+
+def test_a_drags_sketch_is_the_kinematics_of_its_valve_kept_for_the_release(monkeypatch):
+    from valvetrain import api
+
+    s = Session.start()
+    calls, real = [], api.kinematics
+    monkeypatch.setattr(api, "kinematics", lambda spec, name: calls.append(name) or real(spec, name))
+    document, sketch = s.preview({"valves.intake.max_lift_mm": 9.5}, "intake")
+    # the valve's curves are the edited document's, the spring's and the other valve's the good design's
+    assert max(sketch["series"]["intake"]["valve_lift_mm"]) == pytest.approx(9.5)
+    assert sketch["series"]["intake"]["required_force_N"] == s.good["series"]["intake"]["required_force_N"]
+    assert sketch["series"]["exhaust"] is s.good["series"]["exhaust"]
+    assert s.document["valves"]["intake"]["max_lift_mm"] == 9.0          # kept as neither
+    # released where the pointer last moved: not sketched again
+    assert s.preview({"valves.intake.max_lift_mm": 9.5}, "intake")[1] == sketch and calls == ["intake"]
+    # a cam the law cannot make: not ok, with why
+    refused = s.preview({"valves.intake.max_lift_mm": 0.31}, "intake")[1]
+    assert not refused["ok"] and refused["errors"][0]["path"].startswith("valves.intake")

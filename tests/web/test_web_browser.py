@@ -141,9 +141,10 @@ def wait_redrawn(page, done):
     """Wait for the redraw that answers the last release (a drag, a key, an undo): the page's probe counts it."""
     page.wait_for_function(f"() => (window.vtTimesDone || 0) > {done} && window.vtTimes && "
                            "window.vtTimes.length > 0 && window.vt.inflight === 0", timeout=WAIT_MS)
-    page.wait_for_function("() => { const s = Bokeh.documents[0].get_model_by_name('kinematic-stamp').data;"
-                           " const seq = (s instanceof Map ? s.get('seq') : s.seq)[0]; return seq >= window.vt.release; }",
-                           timeout=WAIT_MS)
+    # a drag's curves come first (counted above), its checks and panel after them
+    page.wait_for_function("() => { const s = Bokeh.documents[0].get_model_by_name('checks-stamp').data;"
+                           " const seq = (s instanceof Map ? s.get('seq') : s.seq)[0];"
+                           " return seq >= window.vt.release; }", timeout=WAIT_MS)
 
 
 def drag(page, plot, start, end, steps=4, wait=True):
@@ -507,3 +508,36 @@ def test_points_of_a_table_dragged_added_and_removed(page, table_url):
     page.keyboard.press("Delete")
     wait_redrawn(page, done)
     assert len(model_data(page, "handles-lift")["x"]) == points
+
+
+@pytest.fixture(scope="module")
+def breathing_url(tmp_path_factory):
+    """The designer on the built-in example with a [breathing] section through its designed valves."""
+    from breathing_example import breathing_text
+
+    path = tmp_path_factory.mktemp("breathing") / "breathing.toml"
+    path.write_text(breathing_text(), encoding="utf-8")
+    yield from _served(str(path))
+
+
+def test_the_breathing_panel_is_redrawn_after_an_edit_of_the_intake_closing(page, breathing_url):
+    # issue 40: "once the breathing exists, its VE curve redrawn after an edit"
+    designer = opened(page, breathing_url)
+    designer.locator(".bk-tab", has_text=re.compile("^Breathing$")).click()
+    expect(designer.locator(".bk-tab.bk-active", has_text=re.compile("^Breathing$"))).to_be_visible()
+    before = model_data(designer, "breathing-curve")
+    assert before["speed"] == [2000.0, 4000.0, 6000.0] and all(0.5 < v < 1.2 for v in before["ve"])
+    assert designer.evaluate("() => { const v = Bokeh.index.find_one(Bokeh.documents[0]"
+                             ".get_model_by_name('plot-breathing')); return v != null && v.bbox.width > 0; }")
+    designer.locator(".bk-tab", has_text=re.compile("^Valve$")).click()
+    box = designer.locator('input[name="valves.intake.closes_deg"]')      # the intake's closing lag, crank deg
+    box.fill("50")
+    box.press("Enter")
+    designer.wait_for_function("""ve => {
+        const c = Bokeh.documents[0].get_model_by_name('breathing-curve').data;
+        return Array.from(c instanceof Map ? c.get('ve') : c.ve)[0] !== ve;
+    }""", arg=before["ve"][0], timeout=WAIT_MS)
+    assert value(designer, "valves.intake.closes_deg") == 50.0
+    # the intake closing earlier: less charge pushed back at low speed (Heywood (1988), chapter 6)
+    assert model_data(designer, "breathing-curve")["ve"][0] > before["ve"][0]
+    assert designer.errors == []

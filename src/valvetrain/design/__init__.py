@@ -73,11 +73,11 @@ from .phaser import PhaserRecord, PhaserResults, phaser_stage
 from .results import json_schema, quantity, record, shown_value
 from .twostroke import TwoStrokeResults, TwoStrokeSummary, two_stroke_stage
 from .valve import (THROAT_AREA_SHARE_RANGE, CamResult, ClearanceResult, FlowResult, ProfileResult, ValveDesign,
-                    clearance_stage, design_valve, flow_stage, law_stage, overlap_clearance_checks, profile_stage,
-                    valve_checks, with_gas_load, with_hydraulic)
+                    clearance_stage, design_valve, flow_stage, kinematic_stages, law_stage, overlap_clearance_checks,
+                    profile_stage, valve_checks, with_gas_load, with_hydraulic)
 
 __all__ = ["DesignResults", "ValveDesign", "breathing_view", "clearance_stage", "design_valve", "flow_stage", "law_stage",
-           "profile_stage", "run", "sweep_designs", "valve_checks"]
+           "profile_stage", "run", "sweep_designs", "valve_checks", "valve_kinematics"]
 
 
 @dataclass(frozen=True)
@@ -246,15 +246,8 @@ def run(spec, laws=None, progress=None, headlines_only=False, diagnose=True, mem
             waiting[name], valve = valve, replace(valve, hydraulic=None)   # opens against the cycle: after it
         try:
             tick = None if progress is None else (lambda done, total, name=name: progress(name, done, total))
-            inputs = (valve, engine, gas, output, (laws or {}).get(name), headlines_only, diagnose)
-            kept = (memo or {}).get(name)
-            if kept is not None and progress is None and _same(kept[0], inputs):
-                valves[name] = kept[1]
-            else:
-                valves[name] = design_valve(name, *inputs[:5], tick, headlines_only=headlines_only,
-                                            diagnose=diagnose)
-                if memo is not None:
-                    memo[name] = (inputs, valves[name])
+            valves[name] = _remembered(memo, name, (valve, engine, gas, output, (laws or {}).get(name),
+                                                    headlines_only, diagnose), tick)
         except SpecError as err:
             problems += err.problems
     if problems:
@@ -408,6 +401,19 @@ def engine_checks(spec) -> list[Check]:
     return found
 
 
+def _remembered(memo, name, inputs, tick) -> ValveDesign:
+    """:func:`~valvetrain.design.valve.design_valve` of ``inputs`` (the valve's, the engine's, ``[gas]``'s and
+    ``[output]``'s SI views, the law, ``headlines_only``, ``diagnose``), or the design ``memo`` keeps under ``name``
+    for equal inputs (a speed sweep's too: a valve swept once is not swept again); the design made is kept there."""
+    kept = (memo or {}).get(name)
+    if kept is not None and _same(kept[0], inputs):
+        return kept[1]
+    designed = design_valve(name, *inputs[:5], tick, headlines_only=inputs[5], diagnose=inputs[6])
+    if memo is not None:
+        memo[name] = (inputs, designed)
+    return designed
+
+
 def _same(a, b):
     """Whether two tuples of SI views are equal (views holding arrays, a lift table's, are not compared: False)."""
     try:
@@ -425,7 +431,22 @@ def _valve_view(name, valve, spec):
         raise SpecError([Problem(f"valves.{name}.cam.table_file", str(exc))]) from None
 
 
-def sweep_designs(spec, names=None, progress=None) -> dict[str, ValveDesign]:
+def valve_kinematics(spec, name) -> tuple[CamResult, FlowResult, ProfileResult]:
+    """The kinematic stages of valve ``name`` of a validated specification alone
+    (:func:`~valvetrain.design.valve.kinematic_stages`): its lift curves and contour, without its drive, springs
+    and checks and without the other valves (the designer's answer while a handle is dragged).
+
+    Raises
+    ------
+    SpecError
+        No such valve; a lift table that cannot be read or a cam the law cannot make, naming the key.
+    """
+    if name not in spec.valves:
+        raise SpecError([f"no valve {name!r}; allowed: {', '.join(spec.valves)}"])
+    return kinematic_stages(name, _valve_view(name, spec.valves[name], spec), si(spec.engine), si(spec.output))
+
+
+def sweep_designs(spec, names=None, progress=None, memo=None) -> dict[str, ValveDesign]:
     """The speed sweep alone: the named valves of a specification (default: those with a ``[dynamics]`` section, or
     every valve if none has one) designed with their section, or the default one where they have none.
 
@@ -435,6 +456,9 @@ def sweep_designs(spec, names=None, progress=None) -> dict[str, ValveDesign]:
     names : sequence of str, optional
     progress : callable, optional
         ``progress(valve name, done, total)``.
+    memo : dict, optional
+        As for :func:`run`: a valve swept with equal inputs before is not swept again, and the valves swept here
+        are kept (a :func:`run` of the same specification with this memo takes them).
 
     Returns
     -------
@@ -459,7 +483,8 @@ def sweep_designs(spec, names=None, progress=None) -> dict[str, ValveDesign]:
             v = v.model_copy(update={"dynamics": Dynamics()})
         tick = None if progress is None else (lambda done, total, name=name: progress(name, done, total))
         try:
-            out[name] = design_valve(name, _valve_view(name, v, spec), engine, gas, output, progress=tick)
+            out[name] = _remembered(memo, name, (_valve_view(name, v, spec), engine, gas, output, None, False, True),
+                                    tick)
         except SpecError as err:
             problems += err.problems
     if problems:

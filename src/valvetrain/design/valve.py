@@ -783,6 +783,35 @@ class ValveDesign:
                 "open failures {failure}, warnings {warning}, info {info} of {checks} checks)".format(**tally(self.checks)))
 
 
+def kinematic_stages(name, valve, engine, output, law=None) -> tuple[CamResult, FlowResult, ProfileResult]:
+    """The first stages of one valve, all that its lift curves and contour need: the law, the flow and the profile
+    (:func:`law_stage`, :func:`flow_stage`, :func:`profile_stage`; no drive, no spring, no checks).  The designer's
+    answer while a handle is dragged, and the start of :func:`design_valve`.
+
+    Parameters
+    ----------
+    name : str
+        The valve's name in the specification (the key path of a problem).
+    valve, engine, output : SI views of the valve, the engine and ``[output]``.
+    law : LiftLaw, optional
+        As for :func:`design_valve`.
+
+    Returns
+    -------
+    (CamResult, FlowResult, ProfileResult)
+
+    Raises
+    ------
+    SpecError
+        A cam the law cannot make, its message naming the valve's keys.
+    """
+    try:
+        cam = law_stage(valve, engine, law)
+    except ValueError as exc:
+        raise SpecError([_stage_problem(exc, f"valves.{name}")]) from None
+    return cam, flow_stage(cam, valve, engine), profile_stage(cam, valve, output)
+
+
 def design_valve(name, valve, engine, gas, output, law=None, progress=None, cylinder=None,
                  headlines_only=False, diagnose=True, gas_load=None) -> ValveDesign:
     """All stages of one valve and its drive (masses, springs, strength).
@@ -844,12 +873,7 @@ def valve_geometry(name, valve, engine, output, law=None) -> ValveGeometry:
         A cam the law cannot make or a piston clearance that cannot be computed, naming the valve's keys.
     """
     at = f"valves.{name}"
-    try:
-        cam = law_stage(valve, engine, law)
-    except ValueError as exc:
-        raise SpecError([_stage_problem(exc, at)]) from None
-    flow_result = flow_stage(cam, valve, engine)
-    profile = profile_stage(cam, valve, output)
+    cam, flow_result, profile = kinematic_stages(name, valve, engine, output, law)
     try:
         clearance = clearance_stage(cam, valve, engine)
     except ValueError as exc:
@@ -973,6 +997,7 @@ def with_hydraulic(design, valve, engine, gas, cylinder=None) -> ValveDesign:
 
 
 __all__ = ["CamResult", "ClearanceResult", "FingerKinematics", "FlowResult", "LiftTable", "ProfileResult", "StepRecord", "ValveDesign",
-           "ValveGeometry", "clearance_check", "clearance_stage", "design_valve", "driven_design", "finger_kinematics", "flow_stage", "follower_accelerations", "follower_travel_acceleration", "law_stage", "layout_check", "mass_checks",
-           "overlap_clearance_checks", "profile_stage", "step_records", "valve_checks", "valve_geometry", "with_gas_load", "with_hydraulic",
-           "wrap_crank"]
+           "ValveGeometry", "clearance_check", "clearance_stage", "design_valve", "driven_design", "finger_kinematics",
+           "flow_stage", "follower_accelerations", "follower_travel_acceleration", "kinematic_stages", "law_stage",
+           "layout_check", "mass_checks", "overlap_clearance_checks", "profile_stage", "step_records", "valve_checks",
+           "valve_geometry", "with_gas_load", "with_hydraulic", "wrap_crank"]

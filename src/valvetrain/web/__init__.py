@@ -5,9 +5,10 @@ A Bokeh server in this process serves one page; every browser tab is a session o
 scripts and styles come from the installed Bokeh package (no CDN, no web fonts): the designer works offline.
 Nothing is written to disk except what the user downloads.
 
-The page designs through :mod:`valvetrain.api` only, in two steps: the kinematics and checks without the sweeps and
-the springs' diagnosis, then the whole design in a worker thread; a valve the edit left as it was is not designed
-again (``design.run``'s memo).  A redraw's changes go in one message, the curves thinned to what the plots show.
+The page designs through :mod:`valvetrain.api` only, in steps: a drag's moves and its release answered with the
+valve's kinematics alone (``api.kinematics``), then in worker threads the design without the sweeps and the springs'
+diagnosis (springs, checks, breathing) and, beside it, the sweep of the valve shown, then the whole design (the shown
+valve's sweep kept in ``design.run``'s memo, not swept again; a valve the edit left as it was is not designed again).  A redraw's changes go in one message, the curves thinned to what the plots show.
 :mod:`.session` is one tab's state and callbacks without Bokeh, its handles read from the specification's models;
 :mod:`.app` the Bokeh page, its words from the catalogue's ``[designer]``.  Bokeh is imported only there.
 """

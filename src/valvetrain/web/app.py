@@ -4,16 +4,18 @@ The page fits 1400 x 900 px: a bar of commands on top; on the left the specifica
 specification's models (:func:`valvetrain.web.session.form`) and grouped as a designer thinks (engine, valve, cam,
 spring, drive, dynamics), each input with its name, unit and range; on the right the lift and the acceleration with
 their handles, below them the other plots in tabs (velocity and jerk; contour and curvature; time-area and spring;
-the dynamics at speed), and at the bottom the checks and the cam card.
+the dynamics at speed; the breathing's volumetric efficiency against the speed), and at the bottom the checks and
+the cam card.
 
 The handles are dragged by the page's own script (``page.js``): one to one with the pointer within their limits,
-which the selected handle shows; while the pointer moves, the server designs the handle's newest position
-(one request at a time) and the curves follow; the release keeps the design (an edit that can be undone), arrow keys
-nudge the selected handle, Ctrl-Z and Ctrl-Y undo and redo.  The speed sweep of a design kept runs in a worker
-thread and only the newest one is drawn (an older one is stopped at its next speed).
+which the selected handle shows; while the pointer moves, the server works out the kinematics of the handle's
+valve at its newest position (one request at a time) and the curves follow; the release draws them at once and
+keeps the design when its worker thread has designed it (springs, checks, breathing: an edit that can be undone),
+arrow keys nudge the selected handle, Ctrl-Z and Ctrl-Y undo and redo.  The speed sweep of a design kept runs in a
+worker thread and only the newest one is drawn (an older one is stopped at its next speed).
 
 The page keeps its timings: ``window.vtTimes`` (the release of a drag, a key or an undo to the painted frame of its
-redraw, ms), ``window.vtSweepTimes`` (to the painted frame of the sweep panel), ``window.vtTimesArrived`` (to the
+curves, ms), ``window.vtChecksTimes`` (to the painted frame of its checks, card and panel), ``window.vtSweepTimes`` (to the painted frame of the sweep panel), ``window.vtTimesArrived`` (to the
 arrival of the redraw), ``window.vtMoveTimes`` (a move of the pointer sent to the painted frame of the curves it
 brought); ``window.vtTimesDone``, ``window.vtSweepTimesDone`` count the redraws painted.
 """
@@ -43,7 +45,7 @@ from ..report.html import check_range
 from ..report.i18n import TEXT
 from ..report.names import label, record_quantity_text, translate
 from ..units import per_cam_degree
-from .session import GROUPS, form, has_points, parse_value, value_at, value_of, value_text
+from .session import GROUPS, document_key, form, has_points, parse_value, value_at, value_of, value_text
 
 WORDS = {lang: catalogue(lang)["designer"] for lang in LANGS}
 """The designer's own words in each language, from the catalogue's ``[designer]`` (the plots' and the checks' come from
@@ -211,6 +213,10 @@ a.remove();
 SWEEP_WORKERS = ThreadPoolExecutor(max_workers=1, thread_name_prefix="valvetrain-sweep")
 """One thread for the speed sweeps of every tab (2 cores: the kinematics keep the other)."""
 
+DESIGN_WORKERS = ThreadPoolExecutor(max_workers=1, thread_name_prefix="valvetrain-design")
+"""One thread for the designs of the drags released (their springs, checks and breathing), beside the sweeps': the
+page's answer to the release (the valve's kinematics) and to the next move does not wait for them."""
+
 
 def kept_range(start, end, low, high, room) -> tuple[float, float]:
     """The range [start, end] of a plot after a redraw whose curves span [low, high]: kept while the curves lie
@@ -374,7 +380,9 @@ class Designer:
         self.sweeps, self.base_sweeps = {}, None        # the valves' sweep series drawn, the baseline's
         self.sweep_due = False
         self.sweep_seq = 0
+        self.sweep_key = None            # the document whose sweep was started last (document_key)
         self.shown = None                # a drag's preview drawn: (document, result), else the good design
+        self.pending = None              # the design of a drag released, in the worker: (future, keys set, seq)
         self.fields, self.widgets = {}, {}
         self.refused_paths = set()
         self.key = key
@@ -582,6 +590,23 @@ class Designer:
         self.acceleration_axis = LinearAxis(y_range_name="acceleration", axis_label_text_color="#ff7f0e")
         p.add_layout(self.acceleration_axis, "right")
         self.figures["at_speed"] = p
+        # the breathing: the volumetric efficiency (and the torque, fired) against the speed, redrawn with the checks
+        self.breathing = {k: ColumnDataSource({"speed": [], "ve": [], "torque": []}, name=f"breathing-{k}")
+                          for k in ("curve", "conditions")}
+        p = figure(tools=tools, name="plot-breathing", height=230, width=PLOT_WIDTH, x_range=Range1d(0, 1),
+                   y_range=Range1d(0, 1))
+        p.extra_y_ranges = {"torque": Range1d(0, 1)}
+        p.line("speed", "ve", source=self.breathing["curve"], color="#1f77b4", line_width=2)
+        p.scatter("speed", "ve", source=self.breathing["conditions"], color="#1f77b4", size=8)
+        p.line("speed", "torque", source=self.breathing["curve"], color="#ff7f0e", y_range_name="torque")
+        p.scatter("speed", "torque", source=self.breathing["conditions"], color="#ff7f0e", size=8, marker="square",
+                  y_range_name="torque")
+        self.torque_axis = LinearAxis(y_range_name="torque", axis_label_text_color="#ff7f0e")
+        p.add_layout(self.torque_axis, "right")
+        self.breathing_status = Label(x=6, y=6, x_units="screen", y_units="screen", text="", name="breathing-status",
+                                      text_font_size="11px", background_fill_color="white", background_fill_alpha=0.8)
+        p.add_layout(self.breathing_status)
+        self.figures["breathing"] = p
         self.speed = Slider(start=0, end=1, value=0, step=1, width=1020, name="speed", visible=False)
         self.speed.on_change("value_throttled", self.on_speed)
 
@@ -594,6 +619,9 @@ class Designer:
         self.drawn.on_change("data", self.on_drawn)
         self.kinematic_stamp.js_on_change("data", CustomJS(args={"stamp": self.kinematic_stamp, "drawn": self.drawn},
                                                            code=DRAWN_JS))
+        # the checks, card and panel of a design kept: with the curves, or after them (a drag released)
+        self.checks_stamp = _stamp("checks-stamp")
+        self.checks_stamp.js_on_change("data", CustomJS(args={"key": "vtChecksTimes"}, code=STAMP_JS))
         self.sweep_stamp = _stamp("sweep-stamp")
         self.sweep_hold = _held([self.figures[k] for k in ("sweep_force", "sweep_seating", "sweep_map", "at_speed")],
                                 self.sweep_stamp, "vtPausedSweep")
@@ -605,7 +633,8 @@ class Designer:
             TabPanel(title="", child=row(f["contour"], f["curvature"])),
             TabPanel(title="", child=row(f["time_area"], f["spring"])),
             TabPanel(title="", child=column(self.speed, row(f["sweep_force"], f["sweep_seating"], f["sweep_map"],
-                                                            f["at_speed"])))])
+                                                            f["at_speed"]))),
+            TabPanel(title="", child=row(f["breathing"]))])
         bar = row(self.valve_select, self.length_select, self.angle_select, self.derivative_select,
                   *self.buttons.values(), self.overlay, self.download, self.language, width=WIDTH, height=34)
         main = column(row(f["lift"], f["acceleration"]), self.plot_tabs, row(self.table, self.card_table))
@@ -626,7 +655,7 @@ class Designer:
             args={"plots": {k: f[k] for k in self.handles}, "sources": self.handles, "limits": self.limits,
                   "options": self.options, "request": self.request, "saved": self.saved, "key": self.key},
             code=PAGE_JS))
-        for model in (*self.downloaded.values(), self.kinematic_stamp, self.sweep_stamp, self.drawn, self.kinematic_hold,
+        for model in (*self.downloaded.values(), self.kinematic_stamp, self.checks_stamp, self.sweep_stamp, self.drawn, self.kinematic_hold,
                       self.sweep_hold, self.request, self.options, self.saved):
             self.doc.add_root(model)
 
@@ -670,7 +699,11 @@ class Designer:
         self.figures["at_speed"].yaxis.axis_label = w["contact_force"]
         self.acceleration_axis.axis_label = w["acceleration_valve"]
         self.speed.title = w["speed"]
-        for panel, key in zip(self.plot_tabs.tabs, ("tab_derivatives", "tab_cam", "tab_flow", "tab_speed"), strict=True):
+        self.figures["breathing"].xaxis.axis_label = t["speed"]
+        self.figures["breathing"].yaxis.axis_label = w["volumetric_efficiency"]
+        self.torque_axis.axis_label = w["torque"]
+        for panel, key in zip(self.plot_tabs.tabs, ("tab_derivatives", "tab_cam", "tab_flow", "tab_speed",
+                                                    "tab_breathing"), strict=True):
             panel.title = w[key]
         for c, key in zip(self.check_columns, ("status", "quantity", "value", "baseline", "allowed", "margin", "source"),
                           strict=True):
@@ -727,10 +760,12 @@ class Designer:
             _fit(self.ranges[key], [source.data[name] for source in (self.curves, self.base_curves)[:1 + with_base]
                                     for name in names], room)
 
-    def redraw(self, sweep=True, began=None, seq=0, live=False) -> None:
+    def redraw(self, sweep=True, began=None, seq=0, live=False, curves_seq=None) -> None:
         """Draw the design shown (and the baseline), its handles and, unless ``live`` (a drag's preview), its checks,
-        card and panel; start its speed sweep (``sweep``) or draw the last one again.  ``began``: :func:`_now` when
-        the change came (default now); ``seq`` the page's request it answers."""
+        card, panel and breathing; start its speed sweep (``sweep``) or draw the last one again.  ``began``:
+        :func:`_now` when the change came (default now); ``seq`` the page's request it answers (the stamp of the
+        curves and, unless ``live``, that of the checks); ``curves_seq`` the curves' stamp's instead (0: the curves
+        of the request drawn before, :meth:`_release`)."""
         began = _now() if began is None else began
         _hold(self.kinematic_hold)
         try:
@@ -739,12 +774,16 @@ class Designer:
             if not live:
                 self._checks()
                 self._card()
+                self._breathing()
                 self._sync_fields()
                 _send(self.saved, {"document": [json.dumps(self.session.document)]})
         finally:
-            _count(self.kinematic_stamp, began, seq)
+            _count(self.kinematic_stamp, began, seq if curves_seq is None else curves_seq)
         if live:
             return
+        _count(self.checks_stamp, began, seq)
+        if sweep and self.sweep_key == document_key(self.session.document):
+            sweep = False                                 # its sweep started at the release (_launch)
         if sweep:
             self.sweeps = {}                              # the sweeps of the design before: drawn no more
         self.sweep_due = self.sweep_due or sweep          # a switch of language before the page drew keeps it due
@@ -862,6 +901,25 @@ class Designer:
             add(label(key, self.lang), {n: results["valves"][n].get(group, {}).get(leaf) for n in self.names})
         _send(self.card, rows)
 
+    def _breathing(self):
+        """The breathing of the good design: the volumetric efficiency against the speed along [breathing.curve]
+        (a line) and at each [[breathing.conditions]] (points), the indicated torque on the right axis where the
+        engine is fired; without [breathing], a line that says so."""
+        chapter = self.session.good["results"].get("breathing")
+        t = WORDS[self.lang]
+        self.breathing_status.text = "" if chapter else t["no_breathing"]
+        fired = bool(chapter) and chapter["mode"] == "fired"
+        for key, source in self.breathing.items():
+            records = (chapter or {}).get(key) or []
+            _send(source, {"speed": _array([r["speed_rpm"] for r in records]),
+                           "ve": _array([r["volumetric_efficiency"] for r in records]),
+                           "torque": _array([r.get("torque_Nm") if fired else None for r in records])})
+        self.torque_axis.visible = fired
+        p = self.figures["breathing"]
+        for rng, name, room in ((p.x_range, "speed", PLOT_ROOM), (p.y_range, "ve", PLOT_ROOM),
+                                (p.extra_y_ranges["torque"], "torque", PLOT_ROOM)):
+            _fit(rng, [source.data[name] for source in self.breathing.values()], room)
+
     def _sync_fields(self):
         """The panel's inputs show the good design's values (those an edit refused, a drag or an undo changed); the
         cam's group of a valve whose law changed is built again (its keys are the law's)."""
@@ -913,27 +971,33 @@ class Designer:
             self.sweep_due = False
             self.start_sweep()
 
-    def start_sweep(self) -> None:
+    def start_sweep(self, document=None, job=None) -> None:
         """In the worker thread: the speed sweep of the valve shown alone, drawn as soon as it comes
         (:meth:`~valvetrain.web.session.Session.sweep_one`: a fraction of the whole design's time), then the whole
-        design of the good document with every valve's sweep (:meth:`~valvetrain.web.session.Session.settle`), its
-        checks to the table; a newer change stops both at their next speed."""
+        design of the good document with every valve's sweep (:meth:`~valvetrain.web.session.Session.settle`; the
+        valve shown is not swept again: the first's design is kept for it), its checks to the table; a newer change
+        stops both at their next speed.  ``document``: a drag's released (default the good one), whose design
+        ``job`` (a future of :meth:`~valvetrain.web.session.Session.design`) the whole design waits for: nothing
+        more of it is swept when it does not design."""
         self.generation += 1
         generation, seq, valve = self.generation, self.sweep_seq, self.valve
         self.sweep_status.text = WORDS[self.lang]["sweeping"]
-        document = self.session.document
+        document = self.session.document if document is None else document
+        self.sweep_key = document_key(document)
 
         def progress(name, done, total):
             if generation != self.generation:
                 raise Stale
 
         def work():
-            began = _now()
+            began, memo = _now(), {}
             try:
-                first = self.session.sweep_one(document, valve, progress=progress)
+                first = self.session.sweep_one(document, valve, progress=progress, memo=memo)
                 if first is not None:
                     self.doc.add_next_tick_callback(partial(self.draw_sweep_of, generation, valve, first, began, seq))
-                result = self.session.settle(document, progress=progress)
+                if job is not None and not job.result()["ok"]:
+                    return
+                result = self.session.settle(document, progress=progress, memo=memo)
             except Stale:
                 return
             self.doc.add_next_tick_callback(partial(self.draw_sweep, generation, result, began,
@@ -962,6 +1026,9 @@ class Designer:
         """Keep the whole design of redraw ``generation`` if it is the newest: its checks to the table, its sweeps
         to the sweep panel; ``began`` as for :meth:`redraw`, when the worker took it up; ``seq`` the page's request
         of the design (0: its panel drawn already, from the valve's own sweep)."""
+        if generation != self.generation:
+            return
+        self.finish_edit()                                # the document swept is the good one (its design came)
         if generation != self.generation:
             return
         self.session.settled(result)
@@ -1042,6 +1109,7 @@ class Designer:
         began = _now()
         if self._syncing:
             return
+        self.finish_edit()
         try:
             value = parse_value(f, new)
         except ValueError as exc:
@@ -1051,12 +1119,65 @@ class Designer:
             return
         self._answer(self.session.edit({f.path: value}), began, "field")
 
-    def _answer(self, designed, began, kind, seq=0):
+    def _answer(self, designed, began, kind, seq=0, curves_seq=None):
         """After an edit (``designed`` or refused): the good design drawn (the panel shows it: a refused value's
-        input goes back to the good design's, its message says why) and its sweep started."""
+        input goes back to the good design's, its message says why) and its sweep started; ``curves_seq`` as for
+        :meth:`redraw`."""
         self.shown = None
-        self.redraw(sweep=designed, began=began, seq=seq)
+        self.redraw(sweep=designed, began=began, seq=seq, curves_seq=curves_seq)
         self.show_problems(kind)
+
+    def _release(self, values, began, seq):
+        """A handle released or nudged (the keys it sets): its valve's kinematics drawn at once
+        (:meth:`~valvetrain.web.session.Session.preview`, the page's probe times them), its design in the worker
+        thread, kept when it comes (:meth:`finish_edit`); a sketch that does not design is answered as an edit."""
+        try:
+            document, sketch = self.session.preview(values, self.valve)
+        except ValueError:
+            sketch = {"ok": False}
+        if not sketch["ok"]:
+            self._answer(self.session.edit(values), began, "drag", seq)
+            return
+        self.generation += 1                              # the sweep of the design before: stale, stopped
+        self.shown = (document, sketch)
+        self.redraw(began=began, seq=seq, live=True)
+        self.pending = [None, values, seq, document]
+        # after this answer has gone: the two threads would hold up its sending
+        self.doc.add_next_tick_callback(partial(self._launch, self.pending))
+
+    def _launch(self, pending) -> None:
+        """The design of a drag released (:meth:`_release`) in its worker thread and, beside it, the sweep of the
+        valve shown (:meth:`start_sweep`: its document's sweep does not wait for its design; the whole design's
+        sweeps do), unless an edit kept it before."""
+        if self.pending is not pending:
+            return
+        document = pending[3]
+        self.sweeps = {}                                  # the sweeps of the design before: drawn no more
+        job = pending[0] = DESIGN_WORKERS.submit(self.session.design, document)
+        job.add_done_callback(lambda _: self.doc.add_next_tick_callback(partial(self._designed, job)))
+        self.sweep_seq = pending[2]
+        self.start_sweep(document, job)
+
+    def _designed(self, job) -> None:
+        """The design of a drag released has come (:meth:`_launch`): kept, unless an edit kept it before."""
+        if self.pending is not None and self.pending[0] is job:
+            self.finish_edit()
+
+    def finish_edit(self) -> None:
+        """Keep the design of the drag released last (waited for when it has not come: every other edit applies to
+        it): the good design, drawn with its checks, card, panel and breathing, its sweep started; or, refused, the
+        good design before it drawn again with the reason.  Nothing when no drag's design is pending."""
+        if self.pending is None:
+            return
+        job, values, seq, document = self.pending
+        self.pending = None
+        if job is not None:
+            job.result()                                  # kept by the session: the edit below designs nothing
+        designed = self.session.edit(values)
+        if not designed and self.sweep_key == document_key(document):
+            self.sweep_key = None                         # the refused design's sweep: the good design's again
+            designed = True
+        self._answer(designed, _now(), "drag", seq, curves_seq=0)
 
     def on_request(self, attr, old, new) -> None:
         """A request of the page (page.js): a handle moved (``move``: designed and drawn, not kept), released
@@ -1066,6 +1187,7 @@ class Designer:
         if not new.get("kind"):
             return
         kind, seq, plot, name, x, y, text = (new[k][0] for k in ("kind", "seq", "plot", "name", "x", "y", "text"))
+        self.finish_edit()
         if kind in ("undo", "redo"):
             done = self.session.undo() if kind == "undo" else self.session.redo()
             self._answer(done, began, "field", seq)
@@ -1087,7 +1209,7 @@ class Designer:
             return
         if kind == "move":
             try:
-                document, result = self.session.preview(values)
+                document, result = self.session.preview(values, self.valve)
             except ValueError:
                 return
             if result["ok"]:
@@ -1096,7 +1218,7 @@ class Designer:
             else:
                 _count(self.kinematic_stamp, began, seq)
             return
-        self._answer(self.session.edit(values), began, "drag", seq)
+        self._release(values, began, seq)
 
     def _to_session(self, plot, x, y):
         """A point of a handle's plot in the session's units (cam deg from the nose; mm or m/s²)."""
@@ -1135,10 +1257,12 @@ class Designer:
 
     def on_undo(self) -> None:
         began = _now()
+        self.finish_edit()
         self._answer(self.session.undo(), began, "field")
 
     def on_redo(self) -> None:
         began = _now()
+        self.finish_edit()
         self._answer(self.session.redo(), began, "field")
 
     def on_language(self, attr, old, new) -> None:
@@ -1154,6 +1278,7 @@ class Designer:
         self.redraw(sweep=False)
 
     def on_valve(self, attr, old, new) -> None:
+        self.finish_edit()
         self.valve = new
         for (group, valve), box in self.group_columns.items():
             box.visible = valve in (None, new)
@@ -1175,6 +1300,7 @@ class Designer:
         except (ValueError, UnicodeDecodeError) as exc:
             self.status.text = WORDS[self.lang]["overlay_refused"].format(name=name, message=exc)
             return
+        self.finish_edit()
         if "source_dir" in self.session.document:
             document["source_dir"] = self.session.document["source_dir"]
         result = self.session.design(document)
@@ -1188,6 +1314,7 @@ class Designer:
         self.redraw(sweep=False)
 
     def on_download(self, event) -> None:
+        self.finish_edit()
         {"toml": self.on_toml, "dxf": self.on_dxf, "report": self.on_report}[event.item]()
 
     def on_report(self) -> None:
@@ -1210,6 +1337,7 @@ class Designer:
         self.downloaded["dxf"].text = base64.b64encode(data + f"999\ndownload {self.downloads}\n".encode()).decode()
 
     def on_pin(self) -> None:
+        self.finish_edit()
         self.session.pin()
         self.base_sweeps = dict(self.sweeps)
         self.redraw(sweep=False)

@@ -574,11 +574,12 @@ class Session:
     Every edit applies to the good design (:meth:`edit`): one that designs becomes the good design (and can be
     undone), one that does not leaves the good design, the undo and the redo as they were.
 
-    An edit is answered in two steps: :meth:`apply` designs without the speed sweeps of the ``[dynamics]``
-    sections and without the diagnosis of springs that do not pass (``good``: the kinematics, springs and checks in
-    tens of ms; a valve the edit left as it was is not designed again: ``memo``; a document designed before is not
-    designed again: :meth:`design`); :meth:`settle` adds them (``full``: the checks of the whole design and the
-    sweeps), in the background, and :meth:`settled` keeps it."""
+    An edit is answered in steps: a drag's sketch first (:meth:`preview`: the valve's kinematics alone, kept as
+    neither); :meth:`apply` designs without the speed sweeps of the ``[dynamics]`` sections and without the
+    diagnosis of springs that do not pass (``good``: the kinematics, springs and checks in tens of ms; a valve the
+    edit left as it was is not designed again: ``memo``; a document designed before is not designed again:
+    :meth:`design`); :meth:`settle` adds them (``full``: the checks of the whole design and the sweeps), in the
+    background, and :meth:`settled` keeps it."""
 
     good_document: dict
     good: dict = None
@@ -592,6 +593,7 @@ class Session:
     memo: dict = field(default_factory=dict)
     designs: OrderedDict = field(default_factory=OrderedDict)
     specs: OrderedDict = field(default_factory=OrderedDict)
+    sketches: OrderedDict = field(default_factory=OrderedDict)
 
     @classmethod
     def start(cls, text=None, source_dir=None) -> "Session":
@@ -662,11 +664,40 @@ class Session:
             return False
         return self.apply(document, values)
 
-    def preview(self, values) -> tuple[dict, dict]:
-        """The document of the good design with dotted keys set and its design (:meth:`design`), kept as neither:
-        what a drag shows while the pointer moves."""
+    def preview(self, values, name) -> tuple[dict, dict]:
+        """The document of the good design with dotted keys set and the sketch of its valve ``name``
+        (:meth:`sketch`), kept as neither: what a drag shows while the pointer moves, and at once on its release
+        (the last move's, kept: :meth:`sketch`).
+
+        Raises
+        ------
+        ValueError
+            A key that cannot be set (:func:`~valvetrain.specification.set_keys`).
+        """
         document = set_keys(self.good_document, values)
-        return document, self.design(document)
+        return document, self.sketch(document, name)
+
+    def sketch(self, document, name) -> dict:
+        """The good design with valve ``name``'s curves and contour, its camshaft speed and flow figures those of
+        ``document`` (:func:`valvetrain.api.kinematics`: its kinematic stages alone, a fraction of :meth:`design`'s
+        time), its spring's curves, checks and the other valves the good design's; ``{"ok": False, "errors"}``
+        where the kinematics do not design.  The kinematics of the last :data:`DESIGNS_KEPT` documents are kept:
+        a release where the pointer last moved is not sketched again."""
+        key = (document_key(document), name)
+        found = self.sketches.get(key)
+        if found is None:
+            found = self.sketches[key] = api.kinematics(without_nones(document), name)
+            while len(self.sketches) > DESIGNS_KEPT:
+                self.sketches.popitem(last=False)
+        if not found["ok"]:
+            return found
+        good = self.good
+        valve = good["results"]["valves"][name]
+        mine = found["results"]["valves"][name]
+        spring = {k: v for k, v in good["series"][name].items() if k.startswith(("spring_", "required_"))}
+        return {**good, "series": {**good["series"], name: {**spring, **found["series"][name]}},
+                "results": {**good["results"], "valves": {**good["results"]["valves"], name: {
+                    **valve, "cam": {**valve["cam"], **mine["cam"]}, "flow": {**valve["flow"], **mine["flow"]}}}}}
 
     def undo(self) -> bool:
         """Go back to the good design before the last edit kept (the current one can be redone); False when there
@@ -687,27 +718,29 @@ class Session:
         return True
 
     @staticmethod
-    def settle(document, progress=None) -> dict:
+    def settle(document, progress=None, memo=None) -> dict:
         """The whole design of a good document, with its speed sweeps (and the diagnosis of springs that do not
         pass): :func:`valvetrain.api.design` with ``sweeps``; a document without a ``[dynamics]`` section is swept
         with the default one (:func:`valvetrain.api.sweep`) and its design is the good one (``results`` None).
-        ``progress`` as there.  Pure: called in a worker thread, kept by :meth:`settled`."""
+        ``progress`` as there; ``memo`` the valves swept before (:meth:`sweep_one`'s): not swept again.  Pure but
+        for the memo: called in a worker thread, kept by :meth:`settled`."""
         plain = without_nones(document)
         if any("dynamics" in v for v in plain.get("valves", {}).values()):
-            return api.design(plain, sweeps=True, progress=progress)
-        return {**api.sweep(plain, progress=progress), "results": None}
+            return api.design(plain, sweeps=True, progress=progress, memo=memo)
+        return {**api.sweep(plain, progress=progress, memo=memo), "results": None}
 
     @staticmethod
-    def sweep_one(document, name, progress=None) -> dict | None:
+    def sweep_one(document, name, progress=None, memo=None) -> dict | None:
         """The speed-sweep series of valve ``name`` of a good document alone (:func:`valvetrain.api.sweep` of that
-        valve): the whole design's (:meth:`settle`) sweep of it in a fraction of the time.  None where the whole
-        design sweeps no such valve (another valve has a ``[dynamics]`` section and this one none) or the sweep does
-        not come (the whole design says why).  ``progress`` as for :meth:`settle`."""
+        valve): the whole design's (:meth:`settle`) sweep of it in a fraction of the time; with a ``memo``, kept
+        there for :meth:`settle`, which then does not sweep it again.  None where the whole design sweeps no such
+        valve (another valve has a ``[dynamics]`` section and this one none) or the sweep does not come (the whole
+        design says why).  ``progress`` as for :meth:`settle`."""
         plain = without_nones(document)
         valves = plain.get("valves", {})
         if name not in ([n for n, v in valves.items() if "dynamics" in v] or list(valves)):
             return None
-        result = api.sweep(plain, progress=progress, names=[name])
+        result = api.sweep(plain, progress=progress, names=[name], memo=memo)
         return result["sweeps"][name] if result["ok"] else None
 
     def settled(self, result) -> None:
