@@ -4,6 +4,7 @@ second published line-contact formula (Pan and Hamrock), the one-dimensional con
 the friction moment about the camshaft axis."""
 
 import math
+import warnings
 
 import numpy as np
 import pytest
@@ -110,3 +111,14 @@ def test_flat_follower_friction_torque_is_the_friction_moment_about_the_camshaft
     u_cam, u_f = tribology.flat_follower_velocities(OMEGA, base, h, -0.002)
     torque = tribology.friction_torque(force, mu, u_cam - u_f, 0.0, 0.0, OMEGA)
     assert torque == pytest.approx(mu * force * (base + h), rel=1e-12)
+
+
+def test_on_a_straight_flank_the_roller_s_contact_runs_at_the_pitch_curve_s_speed():
+    """A tangent cam's flank is straight (rho infinite): the contact point and the roller's centre move alike,
+    u_cam = omega sqrt(g^2 + h'^2) (the limit rho / (rho + R_r) -> 1); the former rho / (rho + R_r) gave inf / inf,
+    NaN with a RuntimeWarning (the fuzzer's tangent cam on examples/phaser.toml's roller)."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        u_cam, _ = tribology.roller_follower_velocities(OMEGA, 0.02, 0.008, np.array([0.003]), np.array([0.01]),
+                                                         np.array([np.inf]))
+    assert u_cam[0] == pytest.approx(OMEGA * np.hypot(0.02 + 0.008 + 0.003, 0.01), rel=1e-15)

@@ -112,7 +112,7 @@ def roller_follower_velocities(omega, base_radius, roller_radius, h, dh, rho,
     Shang Hanji (1988), eq. (2.7) (pitch curve, rho_p = rho + R_r).
     """
     g = base_radius + roller_radius + h
-    u_cam = omega * np.hypot(g, dh) * rho / (rho + roller_radius)
+    u_cam = omega * np.hypot(g, dh) / (1.0 + roller_radius / rho)    # rho / (rho + R_r), 1 on a straight flank
     return u_cam, (1.0 - slip) * u_cam
 
 
