@@ -10,6 +10,7 @@ from .. import tribology
 from ..bibliography import cite
 from ..checks import Check, check
 from ..errors import InputError
+from ..numerics import first_largest
 from ..specification.messages import Problem, SpecError
 from ..strength import hertz_half_width
 from ..units import to_display
@@ -201,7 +202,7 @@ def lubrication_stage(lub, valve, engine, cam, drive, dynamics=None,
             lam = c["lam"][i]
             if not np.any(np.isfinite(lam)):
                 continue
-            j = int(np.nanargmin(lam))
+            j = int(first_largest(np.where(np.isfinite(lam), -lam, np.nan)))   # a symmetric cam's tie: the first
             band = tribology.regime(np.where(np.isfinite(lam), lam, -1.0))
             shares = [float(weights[np.isfinite(lam) & (band == k)].sum()) for k in range(3)]
             mean_t = float(np.sum(c["friction_torque"][i] * weights) / (2.0 * np.pi))
