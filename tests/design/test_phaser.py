@@ -14,7 +14,7 @@ import pytest
 from valvetrain.breathing import ValveFlow, breathe
 from valvetrain.design import breathing_view, results_schema, run
 from valvetrain.export import results_json
-from valvetrain.design.breathing import GRID, breathing_conditions, gas_opening_load
+from valvetrain.design.breathing import GRID, breathe_conditions, breathing_conditions, gas_opening_load
 from valvetrain.design.phaser import advances, phased_flow
 from valvetrain.specification import SpecError, example_spec, spec_document, validate
 
@@ -77,11 +77,18 @@ def test_the_map_holds_phase_zero_once():
 
 
 def test_phase_zero_is_the_breathing_chapter(fired):
-    """The map's points at phase 0 are the breathing chapter's results, exactly (the same model, the same areas)."""
+    """The map's points at phase 0 are the breathing chapter's results, exactly (the same model, the same areas): the
+    map takes them from the chapter, and the phased engines at an advance of 0, breathed again here, give them too."""
     f = fired.phasers["intake"].figures
     zero = [p for p in f.map if p.advance == 0.0]
     chapter = [r.figures for r in (*fired.breathing.conditions, *fired.breathing.curve)]
     assert len(zero) == len(chapter) == 3
+    b = breathing_view(fired.spec)
+    given, swept = breathing_conditions(b)
+    engines = [replace(e, intake=phased_flow(e.intake, 0.0)) for e in fired.breathing.engines]
+    again = [r.figures for part in breathe_conditions(engines, b, given, swept) for r in part]
+    assert [(r.speed, r.volumetric_efficiency, r.torque) for r in again] == [
+        (r.speed, r.volumetric_efficiency, r.torque) for r in chapter]
     for p, r in zip(zero, chapter, strict=True):
         assert (p.speed, p.volumetric_efficiency, p.residual_gas_fraction, p.pmep, p.torque) == (
             r.speed, r.volumetric_efficiency, r.residual_gas_fraction, r.pmep, r.torque)

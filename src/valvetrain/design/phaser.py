@@ -299,7 +299,8 @@ def phaser_stage(name, phaser, valve, engine, design, breathing=None, b=None, ca
                                  f"{asked:.3g} cell-steps; allowed at most "
                                  f"{MAX_WORK:.3g} (about half a minute): a larger step or fewer conditions",
                                  f"{to_display(phaser.step, 'crank deg'):g}")])
-    pairs = [_breathe(name, a, lambda e=e: breathe_conditions(e, b, given, swept))
+    pairs = [(breathing.conditions, breathing.curve) if a == 0.0   # phase 0: the breathing chapter's own result
+             else _breathe(name, a, lambda e=e: breathe_conditions(e, b, given, swept))
              for a, e in zip(phases, engines, strict=True)]
     rows = tuple(sum(pair, ()) for pair in pairs)
     loads = [gas_opening_load(BreathingResults(e, *pair, breathing.figures, ()), design.kind, valve.throat_diameter)
