@@ -262,6 +262,13 @@ WORKS = {
         authors="Wang, Y.",
         title="Introduction to Engine Valvetrains", kind="book", publisher="SAE International", place="Warrendale, PA",
         year="2007"),
+    "hendriksma2007": Work(
+        short="Hendriksma, Kunz, Greene (2007)",
+        authors="Hendriksma, N.; Kunz, T.; Greene, C.",
+        title="Design and Development of a 2-Step Rocker Arm", kind="conference paper",
+        journal="SAE Technical Paper 2007-01-1285", publisher="SAE International", place="Warrendale, PA",
+        year="2007", doi="10.4271/2007-01-1285",
+        note="The switching roller finger follower: its inner arm, lost-motion spring and latch."),
     "johnson1985": Work(
         short="Johnson (1985)",
         authors="Johnson, K. L.",

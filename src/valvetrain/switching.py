@@ -1,0 +1,269 @@
+"""The switching roller finger follower: a finger (the outer body, on the lash adjuster and the valve) with an inner
+arm that carries the roller, pivoted in the body and held against the cam by a lost-motion spring; a latch locks
+the inner arm to the body.
+
+Latched, the finger is the rigid :class:`~valvetrain.followers.PivotedFollower`: the cam lifts the valve.  Unlatched
+(deactivation), the body stays on its lash adjuster and the shut valve, and the inner arm turns about its pivot O_i
+in the body, following the cam against the lost-motion spring: the valve stays shut, and the cam's motion is lost in
+the arm.
+
+Model and its approximation.  The roller centre's travel along its arc is the same in both modes to first order:
+latched it turns about the finger's pivot P (travel u = L_r (psi - psi_0)), unlatched about the inner arm's pivot O_i
+(u = L_i phi); both arcs leave the heel circle square to the same pivot-to-roller line where O_i lies on the line
+from P through the roller centre (the usual layout, the inner arm's pivot at the valve end of the body), so the
+unlatched arm turns by phi = u / L_i with u the latched finger's travel (:meth:`PivotedFollower.travel_acceleration`).
+The arcs differ by their curvature: the error is of the second order in the swing.
+
+SI units: m, rad, s, N, N m, kg m^2, Pa.  Pure functions over numpy arrays.
+
+References
+----------
+Hendriksma, Kunz, Greene (2007) (the 2-step roller finger follower: the inner arm, its lost-motion spring and latch,
+the lost-motion spring sized to keep the arm on its cam up to the over-speed); Norton (2009), the chapter on the
+dynamics of follower trains (the follower spring's requirement, F >= m (-a) with a margin, and the jump speed);
+Wahl (1944) (the helical torsion spring: its rate and the curvature factor of its bending stress); Johnson (1985),
+ch. 4 and Hertz (1882) (the latch's line contact).  The literature found gives no allowable for the latch's contact
+and no range for the lost-motion spring's force ratio: this package's choices are stated where they are used.
+"""
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .dynamics.models import OneMassTrain, one_mass_train
+from .strength import hertz_line_stress
+
+
+@dataclass(frozen=True, eq=False)
+class ArmTravel:
+    """The unlatched inner arm's motion on the cam as a lift law of the dynamics' sweep: the roller centre's travel
+    u(theta) [m] along its arc with the body at rest (:func:`roller_travel`), from the finger ``follower`` (a
+    :class:`~valvetrain.followers.PivotedFollower`) on the valve law ``law`` with the heel radius ``heel`` [m].
+
+    Only :meth:`derivatives` is a law's (the sweep's :func:`~valvetrain.dynamics.sweep.cam_excitation` reads it);
+    compared by identity, so that the sweep keeps its samples while it lives.
+    """
+
+    law: object
+    follower: object
+    heel: float
+
+    def derivatives(self, theta) -> np.ndarray:
+        """u, u' [m/rad], u'' [m/rad^2] and 0 in place of u''' at camshaft angles ``theta`` [rad from the nose],
+        shape (4, n)."""
+        d = self.law.derivatives(theta)
+        u, du, d2u = roller_travel(self.follower, self.heel, d[0], d[1], d[2])
+        return np.stack([u, du, d2u, np.zeros_like(u)])
+
+
+def roller_travel(follower, heel, h, dh, d2h) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The roller centre's travel along its arc u [m] and its derivatives u' [m/rad], u'' [m/rad^2] by the camshaft
+    angle, from the valve law's lift h [m], h' [m/rad], h'' [m/rad^2] through the finger ``follower`` on the heel
+    radius ``heel`` [m]: u = L_r (psi - psi_0), u' = L_r psi', u'' = L_r psi''
+    (:meth:`~valvetrain.followers.PivotedFollower.angle_derivatives`).
+
+    Examples
+    --------
+    A finger whose pad is square to the valve at rest, G_0 = L_b = 36 mm, roller arm 22.5 mm: a small valve lift v is
+    the travel times G_0 / L_r, so u = v L_r / G_0.
+
+    >>> from valvetrain.followers import PivotedFollower
+    >>> f = PivotedFollower(0.00875, -0.022, 0.027, 0.0225, 0.036, 0.0, 0.012, 0.0, 0.0)
+    >>> heel = 0.017
+    >>> f = PivotedFollower(0.00875, -0.022, 0.027, 0.0225, 0.036, 0.0, 0.012, -f.base_angle(heel), 0.0)
+    >>> u = roller_travel(f, heel, np.array([1e-6]), np.zeros(1), np.zeros(1))[0]
+    >>> round(float(u[0]) / 1e-6, 4), round(0.0225 / 0.036, 4)
+    (0.625, 0.625)
+    """
+    psi, d1, d2 = follower.angle_derivatives(heel, h, dh, d2h)
+    arm = follower.roller_arm
+    return arm * (psi - follower.base_angle(heel)), arm * d1, arm * d2
+
+
+def required_torque(inertia, arm_acceleration, cam_speed, reserve) -> np.ndarray:
+    """The lost-motion spring's torque that keeps the unlatched arm on its cam, T = K J omega^2 max(0, -phi'') [N m].
+
+    Parameters
+    ----------
+    inertia : float
+        J_i, the inner arm's moment of inertia about its pivot, its roller included [kg m^2].
+    arm_acceleration : ndarray
+        phi'' = u'' / L_i, the arm's angular acceleration per camshaft angle squared [rad/rad^2].
+    cam_speed : float
+        omega, the camshaft speed the arm must follow at (the over-speed) [rad/s].
+    reserve : float
+        K, the margin over the inertia torque.
+
+    Notes
+    -----
+    Where the cam decelerates the arm (phi'' < 0) only the spring pushes it on: the contact holds while
+    :math:`T(\\phi) \\ge -J\\ddot\\phi`, and the spring is drawn with a margin K over it, as a valve spring over its
+    train's inertia force (Norton (2009), the chapter on the dynamics of follower trains; Hendriksma, Kunz, Greene
+    (2007), the lost-motion spring of the inner arm).
+
+    >>> float(required_torque(2e-6, np.array([-1.0]), 300.0, 1.5)[0])
+    0.27
+    """
+    return reserve * inertia * cam_speed ** 2 * np.clip(-np.asarray(arm_acceleration, dtype=float), 0.0, None)
+
+
+def curvature_factor(index) -> float | np.ndarray:
+    """K_b = (4C^2 - C - 1) / (4C (C - 1)): the inner fibre's bending stress of a helical torsion spring over the
+    straight wire's, C = D / d the spring index (Wahl (1944)).
+
+    >>> round(curvature_factor(8.0), 4)
+    1.1027
+    """
+    c = np.asarray(index, dtype=float)
+    out = (4.0 * c ** 2 - c - 1.0) / (4.0 * c * (c - 1.0))
+    return out if out.ndim else float(out)
+
+
+def torsion_rate(modulus, wire_diameter, mean_diameter, coils) -> float | np.ndarray:
+    """Rate of a helical torsion spring, k = E d^4 / (64 D N) [N m/rad] (Wahl (1944); the arms' own bending
+    neglected).
+
+    >>> round(torsion_rate(2.06e11, 1.5e-3, 12e-3, 4.0), 4)
+    0.3395
+    """
+    return modulus * wire_diameter ** 4 / (64.0 * mean_diameter * coils)
+
+
+def torsion_coils(modulus, wire_diameter, mean_diameter, rate) -> float | np.ndarray:
+    """The active coils N = E d^4 / (64 D k) of a helical torsion spring of rate ``rate`` [N m/rad]
+    (:func:`torsion_rate` solved for N)."""
+    return modulus * wire_diameter ** 4 / (64.0 * mean_diameter * rate)
+
+
+def torsion_stress(torque, wire_diameter, mean_diameter) -> float | np.ndarray:
+    """Bending stress of a helical torsion spring's wire at its inner fibre, sigma = K_b 32 T / (pi d^3) [Pa]
+    (:func:`curvature_factor`; Wahl (1944))."""
+    return curvature_factor(mean_diameter / wire_diameter) * 32.0 * np.asarray(torque) / (np.pi * wire_diameter ** 3)
+
+
+def arm_frequency(rate, inertia) -> float:
+    """The inner arm's natural frequency on its lost-motion spring, off the cam, f = sqrt(k / J) / (2 pi) [Hz].
+
+    Parameters
+    ----------
+    rate : float
+        k, the lost-motion spring's torsional rate about the arm's pivot [N m/rad].
+    inertia : float
+        J_i, the arm's moment of inertia about its pivot [kg m^2].
+
+    Notes
+    -----
+    :math:`J\\ddot\\phi + k\\phi = 0` gives :math:`f = \\frac{1}{2\\pi}\\sqrt{k / J}`.
+
+    >>> round(arm_frequency(0.5, 2e-6), 2)
+    79.58
+    """
+    return float(np.sqrt(rate / inertia) / (2.0 * np.pi))
+
+
+def arm_train(inertia, inner_arm, rate, preload, stiffness) -> OneMassTrain:
+    """The unlatched inner arm as a one-mass train at the roller's travel (:class:`~valvetrain.dynamics.models.
+    OneMassTrain`): mass J / L_i^2 [kg], the lost-motion spring's rate k / L_i^2 [N/m] and preload T_0 / L_i [N], the
+    contact stiffness c [N/m] between cam and arm; the arm's rest on its stop in the body is the train's seat.
+
+    Parameters
+    ----------
+    inertia : float
+        J_i [kg m^2].
+    inner_arm : float
+        L_i, the arm's pivot to its roller centre [m].
+    rate, preload : float
+        k [N m/rad] and T_0 [N m] of the lost-motion spring about the arm's pivot.
+    stiffness : float
+        c [N/m] of the arm at its roller: the cam contact and the arm's bending in series.
+    """
+    return one_mass_train(inertia / inner_arm ** 2, stiffness, rate / inner_arm ** 2, preload / inner_arm)
+
+
+def quasi_static_jump_speed(mass, preload, rate, travel, acceleration) -> float:
+    """The camshaft speed at which a rigid follower leaves its cam, min sqrt((F_0 + K u) / (m (-u''))) over the
+    angles where u'' < 0 [rad/s] (inf where the cam never decelerates it).
+
+    Parameters
+    ----------
+    mass : float
+        m [kg] at the travel u.
+    preload, rate : float
+        F_0 [N], K [N/m] of the spring that holds it on.
+    travel, acceleration : ndarray
+        u [m] and u'' [m/rad^2] over the cam.
+
+    Notes
+    -----
+    The contact force of a rigid train is :math:`F = F_0 + K u + m\\omega^2 u''`; it first reaches zero where
+    :math:`\\omega^2 = (F_0 + K u) / (m(-u''))` is smallest (Norton (2009), the chapter on the dynamics of follower
+    trains: the follower jump of a force-closed cam).
+
+    >>> round(quasi_static_jump_speed(0.01, 10.0, 0.0, np.zeros(2), np.array([1.0, -0.001])), 3)
+    1000.0
+    """
+    u = np.asarray(travel, dtype=float)
+    a = np.asarray(acceleration, dtype=float)
+    down = a < 0.0
+    if not down.any():
+        return float("inf")
+    return float(np.sqrt(np.min((preload + rate * u[down]) / (mass * -a[down]))))
+
+
+def latch_force(cam_force, inner_arm, latch_arm) -> float | np.ndarray:
+    """The force the latch carries in the latched mode, P = N L_i / L_l [N]: the cam's force ``cam_force`` N [N] at
+    the roller, ``inner_arm`` L_i [m] from the arm's pivot, held by the latch ``latch_arm`` L_l [m] from it.
+
+    Notes
+    -----
+    The inner arm's moments about its pivot O_i: the cam's force at the roller against the latch's; the arm is taken
+    square to the cam's force (its moment arm L_i, the largest) and the lost-motion spring's torque, which helps the
+    latch, is left out: both make P an upper bound.
+
+    >>> latch_force(1500.0, 0.02, 0.01)
+    3000.0
+    """
+    return cam_force * inner_arm / latch_arm
+
+
+def latch_curvature(pin_diameter, seat_radius=None) -> float:
+    """The curvature sum of the latch pin on its seat, 2 / d - 1 / R [1/m]: a pin of diameter d in a concave seat of
+    radius R > d / 2 (None: a flat seat)."""
+    return 2.0 / pin_diameter - (0.0 if seat_radius is None else 1.0 / seat_radius)
+
+
+def latch_stress(force, width, pin_diameter, modulus, seat_radius=None) -> float | np.ndarray:
+    """Hertz stress of the latch pin on its seat, a line contact [Pa] (:func:`valvetrain.strength.hertz_line_stress`
+    with :func:`latch_curvature`; Hertz (1882), Johnson (1985), ch. 4).
+
+    Parameters
+    ----------
+    force : float or ndarray
+        P [N] (:func:`latch_force`).
+    width : float
+        b, the contact's length along the pin [m].
+    pin_diameter : float
+        d [m].
+    modulus : float
+        E_m of the pair [Pa] (equal steels: E).
+    seat_radius : float, optional
+        R [m] of a concave seat; None: flat.
+    """
+    return hertz_line_stress(force, width, latch_curvature(pin_diameter, seat_radius), modulus)
+
+
+def valve_force_of_arm(arm_force, roller_arm, rest_arm) -> float | np.ndarray:
+    """The force at the shut valve that the unlatched arm's contact force ``arm_force`` N [N] makes through the body,
+    N L_r / G_0 [N] (``roller_arm`` L_r, ``rest_arm`` G_0 = dv/dpsi at rest [m]).
+
+    Notes
+    -----
+    The lost-motion spring acts between arm and body: on the body the pair is the cam's force at the roller, as if
+    latched; the virtual work of the body about its pivot P, :math:`N L_r\\cos\\beta = F G_0`, gives the force at
+    the valve, here with cos beta = 1 (an upper bound).  The valve stays shut while F stays below the valve spring's
+    installed force (Hendriksma, Kunz, Greene (2007): the lost-motion spring must not open the deactivated valve).
+
+    >>> valve_force_of_arm(60.0, 0.0225, 0.036)
+    37.5
+    """
+    return arm_force * roller_arm / rest_arm
