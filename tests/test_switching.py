@@ -83,28 +83,24 @@ def test_the_arms_turn_against_its_exact_turn_about_its_own_pivot():
     inner = 13.5e-3
     c0 = FINGER.centre(np.array(psi0))
     pivot = c0 + inner * np.array([np.cos(psi0), np.sin(psi0)])     # beyond the roller, away from the body's pivot
-    grid = np.linspace(-1.2, 1.2, 24001)
-    d = law.derivatives(grid)
-    q, _ = FINGER.pitch_points(grid, HEEL, d[0], d[1], d[2])        # the pitch curve in the cam frame
+    grid = np.linspace(-1.2, 1.2, 24001)                            # the pitch curve's parameter, cam angle
     exact, approx = [], []
-    for theta in (-0.5, -0.3, 0.0, 0.2, 0.45):
-        c, sn = np.cos(theta), np.sin(theta)
-        fixed = np.stack([c * q[0] - sn * q[1], sn * q[0] + c * q[1]])   # R(theta) q: the curve in the fixed frame
-        miss = np.hypot(*(fixed - pivot[:, None])) - inner
-        near = np.argmin(np.where(np.sign(miss[:-1]) != np.sign(miss[1:]),
-                                  np.hypot(*(fixed[:, :-1] - c0[:, None])), np.inf))
 
-        def f(t, theta=theta):
-            dd = law.derivatives(np.array([t]))
-            p, _ = FINGER.pitch_points(np.array([t]), HEEL, dd[0], dd[1], dd[2])
-            x = np.array([np.cos(theta) * p[0, 0] - np.sin(theta) * p[1, 0],
-                          np.sin(theta) * p[0, 0] + np.cos(theta) * p[1, 0]])
-            return np.hypot(*(x - pivot)) - inner
-        t = brentq(f, grid[near], grid[near + 1], xtol=1e-13)
-        dd = law.derivatives(np.array([t]))
-        p, _ = FINGER.pitch_points(np.array([t]), HEEL, dd[0], dd[1], dd[2])
-        x = np.array([np.cos(theta) * p[0, 0] - np.sin(theta) * p[1, 0], np.sin(theta) * p[0, 0] + np.cos(theta) * p[1, 0]])
-        arm0, arm = c0 - pivot, x - pivot
+    def fixed(theta, t):
+        """The pitch curve's point of parameter t in the fixed frame at the cam angle theta, R(theta) q(t)."""
+        dd = law.derivatives(np.atleast_1d(t))
+        p, _ = FINGER.pitch_points(np.atleast_1d(t), HEEL, dd[0], dd[1], dd[2])
+        c, sn = np.cos(theta), np.sin(theta)
+        return np.stack([c * p[0] - sn * p[1], sn * p[0] + c * p[1]])
+
+    for theta in (-0.5, -0.3, 0.0, 0.2, 0.45):
+        curve = fixed(theta, grid)
+        miss = np.hypot(*(curve - pivot[:, None])) - inner
+        near = np.argmin(np.where(np.sign(miss[:-1]) != np.sign(miss[1:]),
+                                  np.hypot(*(curve[:, :-1] - c0[:, None])), np.inf))
+        t = brentq(lambda t, theta=theta: float(np.hypot(*(fixed(theta, t)[:, 0] - pivot)) - inner),
+                   grid[near], grid[near + 1], xtol=1e-13)
+        arm0, arm = c0 - pivot, fixed(theta, t)[:, 0] - pivot
         exact.append(abs(np.arctan2(arm0[0] * arm[1] - arm0[1] * arm[0], arm0 @ arm)))
         dt = law.derivatives(np.array([theta]))
         approx.append(float(sw.roller_travel(FINGER, HEEL, *dt[:3])[0][0]) / inner)
@@ -127,7 +123,8 @@ class HarmonicBump:
         w = np.pi / self.half
         on = np.abs(theta) < self.half
         a = self.height / 2.0
-        return np.stack([np.where(on, a * (1.0 + np.cos(w * theta)), 0.0), np.where(on, -a * w * np.sin(w * theta), 0.0),
+        return np.stack([np.where(on, a * (1.0 + np.cos(w * theta)), 0.0),
+                         np.where(on, -a * w * np.sin(w * theta), 0.0),
                          np.where(on, -a * w ** 2 * np.cos(w * theta), 0.0), np.zeros_like(theta)])
 
 

@@ -70,6 +70,7 @@ from .hydraulic_actuation import CylinderPressure, HydraulicResult, speed_plan
 from .lash_adjuster import LashAdjusterResult
 from .lubrication import LubricationResult
 from .phaser import PhaserRecord, PhaserResults, phaser_stage
+from .switching import SwitchingRecord, SwitchingResult, switching_stage
 from .results import json_schema, quantity, record, shown_value
 from .twostroke import TwoStrokeResults, TwoStrokeSummary, two_stroke_stage
 from .valve import (THROAT_AREA_SHARE_RANGE, CamResult, ClearanceResult, FlowResult, ProfileResult, ValveDesign,
@@ -110,6 +111,7 @@ class DesignResults:
     camshaft: Optional[CamshaftResults] = None  # with a [camshaft] section
     breathing: Optional[BreathingResults] = None  # with a [breathing] section
     phasers: dict[str, PhaserResults] = field(default_factory=dict)   # the valves with a [phaser] section
+    switching: dict[str, SwitchingResult] = field(default_factory=dict)  # the valves with a [switching] section
 
     @property
     def warnings(self) -> list[Check]:
@@ -188,6 +190,8 @@ class DesignResults:
             out["breathing"] = self.breathing.summary
         if self.phasers:
             out["phasers"] = {name: p.summary for name, p in self.phasers.items()}
+        if self.switching:
+            out["switching"] = {name: s.summary for name, s in self.switching.items()}
         out["warnings"] = [w.warning() for w in self.warnings]
         out["accepted"] = [w.warning() for w in self.accepted]
         out["checks"] = [c.as_dict() for c in self.checks]
@@ -288,10 +292,13 @@ def run(spec, laws=None, progress=None, headlines_only=False, diagnose=True, mem
     phasers = {name: phaser_stage(name, views[name].phaser, views[name], engine, valves[name], breathing, b, shaft)
                for name in phased}
     found += [c for p in phasers.values() for c in p.checks]
+    switching = {name: switching_stage(name, v.switching, v, engine, valves[name])
+                 for name, v in views.items() if v.switching is not None}
+    found += [c for s in switching.values() for c in s.checks]
     found, valves = accept(found, spec.accepted, valves)
     card = cam_card_stage(valves) if valves and engine.strokes == 4 else None
     return DesignResults(spec, engine_record(engine), valves, tuple(found), crank, ports, card, shaft, breathing,
-                         phasers)
+                         phasers, switching)
 
 
 def breathing_view(spec) -> Any:
@@ -543,6 +550,8 @@ def results_schema() -> dict[str, Any]:
             "camshaft": json_schema(CamshaftRecord),
             "phasers": {"type": "object", "additionalProperties": json_schema(PhaserRecord),
                         "description": "each phased valve's cam phaser ([valves.NAME.phaser])"},
+            "switching": {"type": "object", "additionalProperties": json_schema(SwitchingRecord),
+                          "description": "each valve's switching roller finger follower ([valves.NAME.switching])"},
             "cam_card": json_schema(CamCard) | {"properties": json_schema(CamCard)["properties"] | {
                 "valves": {"type": "object", "additionalProperties": json_schema(CamCardValve)}}},
             "warnings": {"type": "array", "items": check_record,

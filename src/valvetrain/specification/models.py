@@ -19,6 +19,7 @@ from ..spring_materials import GRADES, grade
 from .cams import LAWS, Cam
 from .fields import Length, Pair, _bounded, _Model, _zero_or
 from .messages import SpecError, message, shown
+from .switching import Switching
 from .validate import problems, set_keys, spec_document
 
 
@@ -522,6 +523,7 @@ class Valve(_Model):
     lubrication: Optional[Lubrication] = None
     lash_adjuster: Optional[LashAdjuster] = None
     phaser: Optional[Phaser] = None
+    switching: Optional[Switching] = None
 
     @property
     def layout(self) -> str:

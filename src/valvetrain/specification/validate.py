@@ -50,6 +50,10 @@ def _valve_problems(name, v, engine):
                            "geometry (location = \"pivot\", cam.follower = \"finger\"): a tappet's adjuster moves "
                            "along the tappet, a rocker's of a given rocker_ratio along the straight lever's normal",
                            f"{axis:g}", " "))
+    if v.switching is not None and not FOLLOWERS[v.cam.follower].law_at_valve:
+        out.append(Problem(f"{at}.switching", "allowed on a finger given by its geometry (cam.follower = \"finger\"): "
+                           "the switching finger's inner arm carries the finger's roller",
+                           f"cam.follower = {v.cam.follower!r}", " with "))
     ratio = v.spring.mean_diameter_ratio
     wires = v.spring.wire_diameter_range_mm
     low, high = (x / MM for x in feasible_mean_diameters(wires))

@@ -1,0 +1,62 @@
+"""[valves.NAME.switching]: the valve's finger is a switching roller finger follower (its inner arm, lost-motion
+spring and latch); the physics is :mod:`valvetrain.switching`, the stage :mod:`valvetrain.design.switching`."""
+
+from typing import Literal, Optional
+
+from pydantic import model_validator
+
+from ..errors import InputError
+from ..spring_materials import GRADES
+from .fields import Length, _bounded, _Model
+
+
+class Switching(_Model):
+    """[valves.NAME.switching]: a switching roller finger follower on a valve whose cam has ``follower = "finger"``:
+    the finger's body rests on the pivot (lash adjuster) and the valve, and an inner arm carrying the roller is
+    pivoted in it, held on the cam by a lost-motion spring (a helical torsion spring about the arm's pivot); a latch
+    pin locks the arm to the body.
+
+    ``mode``: ``"deactivation"``, the unlatched valve stays shut (cylinder deactivation) and the arm follows its cam
+    against the lost-motion spring.  ``inner_arm_mm``: the arm's pivot to its roller centre, L_i;
+    ``inner_arm_inertia_kg_mm2``: its moment of inertia about that pivot, the roller's included, J_i;
+    ``contact_stiffness_N_per_mm``: the arm's stiffness at the roller, cam contact and the arm's bending in series
+    (the unlatched arm's dynamics).  ``reserve``: the lost-motion spring's margin over the arm's inertia torque at
+    the over-speed (as the valve spring's ``drive.spring_reserve``; default: that key's value).
+    ``spring_wire_diameter_mm``, ``spring_mean_diameter_mm``, ``spring_material``: the torsion spring, its active
+    coils found from the rate it needs.  ``latch_arm_mm``: the arm's pivot to the latch's contact, L_l;
+    ``latch_pin_diameter_mm``, ``latch_width_mm``: the pin and the length of its line contact on its seat;
+    ``latch_seat_radius_mm``: the seat's concave radius (larger than the pin's), absent: a flat seat.
+    ``speeds``: the speeds of the unlatched arm's dynamic sweep, up to twice the over-speed."""
+
+    mode: Literal["deactivation"] = "deactivation"
+    inner_arm_mm: Length(2.0, 200.0, low_open=False)
+    inner_arm_inertia_kg_mm2: _bounded(0.01, 1e5, "kg mm2", low_open=False)
+    contact_stiffness_N_per_mm: _bounded(100.0, 1e7, "N/mm", low_open=False)
+    reserve: Optional[_bounded(1.0, 5.0, low_open=False)] = None
+    spring_wire_diameter_mm: Length(0.2, 10.0, low_open=False)
+    spring_mean_diameter_mm: Length(1.0, 60.0, low_open=False)
+    spring_material: str = "VDSiCr"
+    latch_arm_mm: Length(1.0, 200.0, low_open=False)
+    latch_pin_diameter_mm: Length(0.5, 30.0, low_open=False)
+    latch_width_mm: Length(0.2, 50.0, low_open=False)
+    latch_seat_radius_mm: Optional[Length(0.25, 1000.0, low_open=False)] = None
+    speeds: int = 16
+
+    @model_validator(mode="after")
+    def _consistent(self):
+        problems = []
+        if self.spring_mean_diameter_mm <= 2.0 * self.spring_wire_diameter_mm:
+            problems.append(f"spring_mean_diameter_mm = {self.spring_mean_diameter_mm:g}: allowed above twice "
+                            f"spring_wire_diameter_mm = {2.0 * self.spring_wire_diameter_mm:g} (a spring index > 2)")
+        if self.latch_seat_radius_mm is not None and self.latch_seat_radius_mm <= self.latch_pin_diameter_mm / 2.0:
+            problems.append(f"latch_seat_radius_mm = {self.latch_seat_radius_mm:g}: allowed above the pin's radius, "
+                            f"latch_pin_diameter_mm / 2 = {self.latch_pin_diameter_mm / 2.0:g} (a concave seat)")
+        strong = [name for name, g in GRADES.items() if g.tensile is not None]
+        if self.spring_material not in strong:
+            problems.append(f"spring_material = {self.spring_material!r}: allowed {', '.join(strong)} (a grade with "
+                            "its tensile strength, the torsion spring's bending limit)")
+        if not 4 <= self.speeds <= 200:
+            problems.append(f"speeds = {self.speeds}: allowed 4...200")
+        if problems:
+            raise InputError("; ".join(problems))
+        return self

@@ -1,0 +1,38 @@
+"""[valves.NAME.switching] (valvetrain.specification.switching): bad input refused naming the key, its value and the
+range."""
+
+from pathlib import Path
+
+import pytest
+
+from valvetrain.specification import SpecError, example_spec, load_spec, spec_document, validate
+
+EXAMPLE = Path(__file__).parents[2] / "examples" / "switching-finger.toml"
+
+
+def _doc(**switching):
+    doc = spec_document(load_spec(EXAMPLE))
+    doc["valves"]["intake"]["switching"].update(switching)
+    return doc
+
+
+@pytest.mark.parametrize("keys, words", [
+    ({"latch_seat_radius_mm": 1.5}, "latch_seat_radius_mm = 1.5: allowed above the pin's radius"),
+    ({"spring_mean_diameter_mm": 4.0}, "spring_mean_diameter_mm = 4: allowed above twice spring_wire_diameter_mm"),
+    ({"spring_material": "60S2A"}, "spring_material = '60S2A'"),
+    ({"mode": "two_step"}, "mode"),
+    ({"inner_arm_mm": 0.5}, "inner_arm_mm"),
+    ({"speeds": 2}, "speeds = 2: allowed 4...200"),
+])
+def test_bad_switching_input_is_refused_naming_the_key(keys, words):
+    with pytest.raises(SpecError, match="switching") as err:
+        validate(_doc(**keys))
+    assert words in str(err.value)
+
+
+def test_switching_needs_a_finger():
+    doc = spec_document(example_spec())
+    doc["valves"]["intake"]["switching"] = spec_document(load_spec(EXAMPLE))["valves"]["intake"]["switching"]
+    with pytest.raises(SpecError, match=r"valves\.intake\.switching.*cam\.follower = \"finger\"") as err:
+        validate(doc)
+    assert "cam.follower = 'flat'" in str(err.value) or "cam.follower =" in str(err.value)
