@@ -31,6 +31,7 @@ from .numbers import number, percent
 from .russian import russian_citations, russian_typography
 from .typography import typography
 from .worked import crank_lines, flow_lines, law_lines, spring_lines, strength_lines, time_area_lines
+from .switching import switching_chapters
 from .names import has_name, label, link_names, quantity_text, translate, unevaluated_text, unit_text, value_text
 from ..locale.wording import diagnosis_text, fit_reason
 
@@ -266,7 +267,7 @@ CHECK_CHAPTERS = {
     "drive.specific_mass": "springs", "gas_force": "springs", "strength": "strength", "dynamics": "dynamics",
     "grinding": "grinding", "hydraulic": "hydraulic", "lubrication": "lubrication", "lash_adjuster": "lash_adjuster",
     "engine": "engine", "crank": "crank", "camshaft": "camshaft", "ports": "ports", "breathing": "breathing",
-    "phaser": "phaser",
+    "phaser": "phaser", "switching": "switching",
 }
 """The chapter of the report that shows the checks of a code: the entry of the code's longest dotted prefix
 (:func:`check_chapter`)."""
@@ -298,7 +299,8 @@ def chapter_checks(results) -> dict:
     for name, v in results.valves.items():
         present[name] = {"flow", "law", "time_area", "geometry", "springs", "strength", "other",
                          *(k for k in ("dynamics", "grinding", "hydraulic", "lubrication", "lash_adjuster")
-                           if getattr(v, k) is not None), "phaser" if name in results.phasers else ""}
+                           if getattr(v, k) is not None), "phaser" if name in results.phasers else "",
+                         "switching" if name in results.switching else ""}
     found = {key: {} for key in present}
     for c in results.checks:
         chapter = check_chapter(c.code)
@@ -706,7 +708,7 @@ def render_report(results, plots, lang="en", folder=None) -> str:
         adjuster_sources=ADJUSTER_SOURCES,
         step=REPORT_STEP_DEG, output=_flatten(spec["output"]), crank=crank, ports=ports,
         camshaft=_camshaft(results, spec, plots), camshaft_sources=CAMSHAFT_SOURCES, breathing=breathing,
-        phasers=_phasers(results, spec, plots, checks),
+        phasers=_phasers(results, spec, plots, checks), switching=switching_chapters(results, checks, lang),
     )
     template = env.get_template("report.html")
     # the corrections notes the report cites, found in a first rendering

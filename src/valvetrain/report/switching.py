@@ -1,0 +1,30 @@
+"""The report's chapter of a switching roller finger follower (:mod:`valvetrain.design.switching`): its figures, the
+unlatched arm's smallest force on its cam against the speed and its checks, in the words of the catalogue's
+``[switching]`` section (:mod:`valvetrain.locale`)."""
+
+from ..design.results import shown
+from ..locale import catalogue
+
+ROWS = ("mode", "latched_lift", "unlatched_lift", "arm_swing", "over_speed", "reserve", "required_torque", "preload",
+        "rate", "max_torque", "coils", "stress", "stress_share", "frequency", "frequency_orders", "jump_speed",
+        "jump_speed_static", "sweep_top", "arm_force", "valve_force", "valve_preload", "cam_force", "latch_force",
+        "latch_stress")
+"""The rows of the chapter's table (fields of :class:`~valvetrain.design.switching.SwitchingRecord`)."""
+
+SOURCES = ("Hendriksma, Kunz, Greene (2007)", "Norton (2009)", "Wahl (1944)", "Johnson (1985)")
+"""The works the chapter's method cites."""
+
+
+def switching_chapters(results, checks, lang) -> list[dict]:
+    """One chapter a valve with a [switching] section: ``name``, the catalogue's words ``words``, the table's
+    ``rows`` (key, display value), the sweep's ``speeds`` (rows of speed and smallest force) and ``checks``."""
+    words = catalogue(lang)["switching"]
+    out = []
+    for name, s in results.switching.items():
+        f = s.figures
+        rows = shown(f, *(k for k in ROWS if getattr(f, k) is not None))
+        speeds = list(zip(dict(shown(f, "speeds"))["sweep_speeds_rpm"], dict(shown(f, "min_force"))[
+            "arm_contact_force_min_N"], strict=True))
+        out.append({"name": name, "words": words, "rows": rows, "speeds": speeds, "sources": SOURCES,
+                    "checks": checks[name].get("switching", [])})
+    return out
