@@ -143,3 +143,27 @@ def test_the_arms_jump_speed_against_the_closed_form_of_a_harmonic_cam():
     assert sw.quasi_static_jump_speed(m, f0, k, d[0], d[2]) == pytest.approx(closed, rel=1e-9)
     result = sweep(bump, train, closed * np.linspace(0.8, 1.2, 9), revolutions=3, step_deg=0.5)
     assert result.headline()["jump_speed"] == pytest.approx(closed, rel=1e-3)
+
+
+def test_deactivated_cylinder_adiabatic_air_spring_returns_its_work():
+    """Adiabatic, the trapped charge follows p V^gamma = const both ways (closed form): its peak at TDC is
+    p_BDC epsilon^gamma, T_BDC epsilon^(gamma - 1), and the net work over a revolution is 0."""
+    eps, gamma, r, t0, mass = 10.0, 1.4, 287.0, 300.0, 5.8e-4
+    swept = np.pi * 0.086 ** 2 / 4.0 * 0.086
+    s = sw.air_spring(0.086, 0.086, 0.145, eps, mass, t0, 400.0, 300.0, r, gamma, heat_transfer=False)
+    p0 = mass * r * t0 / (swept * eps / (eps - 1.0))
+    assert s.pressure.max() == pytest.approx(p0 * eps ** gamma, rel=1e-6)
+    assert s.temperature.max() == pytest.approx(t0 * eps ** (gamma - 1.0), rel=1e-6)
+    compression = np.sum(np.abs(np.diff(s.crank)) * s.pressure[:-1]) * swept     # a scale of the works, order 1e3 J
+    assert abs(s.work) < 1e-9 * compression and s.heat == 0.0
+
+
+def test_deactivated_cylinder_with_its_walls_loses_work_as_heat():
+    """With Woschni's heat transfer the repeating revolution's work on the piston is the heat taken from the walls
+    (the first law over a closed cycle, two integrals of the solution), negative: the loss of the air spring; the
+    charge's temperature at BDC repeats."""
+    s = sw.air_spring(0.086, 0.086, 0.145, 10.0, 5.8e-4, 300.0, 400.0, 300.0, 287.0, 1.4)
+    assert s.work < 0.0
+    assert s.work == pytest.approx(s.heat, rel=1e-6)
+    assert s.temperature[-1] == pytest.approx(s.temperature[0], rel=1e-6)
+    assert s.pressure.max() < 0.95 * 5.8e-4 * 287.0 * 300.0 / (np.pi * 0.086 ** 3 / 4 / 9.0) * 10.0 ** 0.4

@@ -22,7 +22,8 @@ Hendriksma, Kunz, Greene (2007) (the 2-step roller finger follower: the inner ar
 the lost-motion spring sized to keep the arm on its cam up to the over-speed); Norton (2009), the chapter on the
 dynamics of follower trains (the follower spring's requirement, F >= m (-a) with a margin, and the jump speed);
 Wahl (1944) (the helical torsion spring: its rate and the curvature factor of its bending stress); Johnson (1985),
-ch. 4 and Hertz (1882) (the latch's line contact).  The literature found gives no allowable for the latch's contact
+ch. 4 and Hertz (1882) (the latch's line contact); Heywood (1988), section 12.4 and Woschni (1967) (the deactivated
+cylinder's trapped charge and its heat transfer).  The literature found gives no allowable for the latch's contact
 and no range for the lost-motion spring's force ratio: this package's choices are stated where they are used.
 """
 
@@ -30,7 +31,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from scipy.integrate import solve_ivp
+from scipy.optimize import root_scalar
+
+from .breathing.heat_transfer import WOSCHNI_C1, wall_area, woschni_coefficient
+from .crank.kinematics import displacement, velocity as piston_velocity
 from .dynamics.models import OneMassTrain, one_mass_train
+from .errors import InputError
 from .strength import hertz_line_stress
 
 
@@ -267,3 +274,124 @@ def valve_force_of_arm(arm_force, roller_arm, rest_arm) -> float | np.ndarray:
     37.5
     """
     return arm_force * roller_arm / rest_arm
+
+
+@dataclass(frozen=True)
+class AirSpring:
+    """The steady cycle of a deactivated cylinder's trapped charge (:func:`air_spring`).
+
+    Attributes (SI)
+    ---------------
+    crank : ndarray
+        Crank angles of the last revolution [rad from TDC].
+    pressure, temperature : ndarray
+        The charge's pressure [Pa] and temperature [K] there.
+    work : float
+        Its work on the piston over a revolution, the integral of p dV [J] (negative: the crank works on it).
+    heat : float
+        The heat it takes from the walls over the revolution [J].
+    revolutions : int
+        Revolutions integrated: the secant steps to the temperature at the bottom dead centre that repeats, and the
+        last.
+    """
+
+    crank: np.ndarray
+    pressure: np.ndarray
+    temperature: np.ndarray
+    work: float
+    heat: float
+    revolutions: int
+
+
+def air_spring(bore, stroke, rod_length, compression_ratio, mass, temperature, wall_temperature, speed, gas_constant,
+               gamma, heat_transfer=True, tolerance=1e-6, most=40) -> AirSpring:
+    """The trapped charge of a deactivated cylinder (both valves shut all cycle) compressed and expanded by its piston,
+    with the heat it exchanges with the walls, in the revolution that repeats (its temperature at the bottom dead
+    centre found by the secant method, each step a revolution).
+
+    Parameters
+    ----------
+    bore, stroke, rod_length : float
+        [m].
+    compression_ratio : float
+        epsilon = V_max / V_min.
+    mass : float
+        The trapped charge [kg] (leakage past the rings is left out).
+    temperature : float
+        Its temperature at the bottom dead centre, the first guess of the repeating revolution's [K].
+    wall_temperature : float
+        [K].
+    speed : float
+        Crank speed [rad/s].
+    gas_constant, gamma : float
+        R [J/(kg K)] and c_p / c_v of the charge, taken constant.
+    heat_transfer : bool
+        False: adiabatic (the reference: no net work).
+    tolerance : float
+        Largest relative change of the temperature at the bottom dead centre over a revolution at which it repeats.
+    most : int
+        Most secant steps to the repeating revolution's temperature at the bottom dead centre (each one revolution).
+
+    Notes
+    -----
+    The first law of the closed charge, c_v constant, by the crank angle theta:
+
+    .. math:: m c_v \\frac{dT}{d\\theta} = -p\\frac{dV}{d\\theta} + \\frac{h A (T_w - T)}{\\omega},
+              \\qquad p = \\frac{m R T}{V}
+
+    with Woschni's coefficient h of the closed period (C_1 = 2.28, no combustion term) and the pancake chamber's wall
+    area A (:mod:`valvetrain.breathing.heat_transfer`).  The work over a repeating revolution is the heat taken in,
+    :math:`\\oint p\\,dV = \\oint \\delta Q` (the test of the integration); adiabatic, the charge follows
+    :math:`TV^{\\gamma - 1}` = const both ways and :math:`\\oint p\\,dV = 0`: the air spring returns its work, and
+    with the walls the loss is the heat's irreversibility (Heywood (1988), section 12.4; Woschni (1967)).
+
+    Examples
+    --------
+    Adiabatic: the pressure at TDC is p_BDC epsilon^gamma.
+
+    >>> s = air_spring(0.086, 0.086, 0.145, 10.0, 5.8e-4, 300.0, 400.0, 300.0, 287.0, 1.4, heat_transfer=False)
+    >>> p0 = 5.8e-4 * 287.0 * 300.0 / (np.pi * 0.086**2 / 4 * 0.086 * 10.0 / 9.0)
+    >>> round(float(s.pressure.max() / (p0 * 10.0 ** 1.4)), 4)
+    1.0
+    """
+    area = np.pi * bore ** 2 / 4.0
+    swept = area * stroke
+    clearance = swept / (compression_ratio - 1.0)
+    radius, lam = stroke / 2.0, stroke / (2.0 * rod_length)
+    cv = gas_constant / (gamma - 1.0)
+    piston_speed = 2.0 * stroke * speed / (2.0 * np.pi)
+    coefficient = WOSCHNI_C1["compression"] * piston_speed if heat_transfer else 0.0
+
+    def volume(theta):
+        """V [m^3] and dV/dtheta [m^3/rad] of the exact slider-crank."""
+        return (clearance + area * displacement(theta, radius, lam),
+                area * piston_velocity(theta, radius, lam, 1.0))
+
+    def rates(theta, y):
+        v, dv = volume(theta)
+        t = y[0]
+        p = mass * gas_constant * t / v
+        h = woschni_coefficient(bore, p, t, coefficient) if heat_transfer else 0.0
+        q = h * wall_area(v, bore) * (wall_temperature - t) / speed
+        return [(q - p * dv) / (mass * cv), p * dv, q]
+
+    start = np.pi
+    grid = start + np.linspace(0.0, 2.0 * np.pi, 721)
+
+    def revolution(t0):
+        return solve_ivp(rates, (start, start + 2.0 * np.pi), [t0, 0.0, 0.0], method="DOP853", t_eval=grid,
+                         rtol=1e-10, atol=[1e-9, 1e-12, 1e-12])
+
+    if heat_transfer:    # adiabatic, every revolution repeats: the one from ``temperature``
+        found = root_scalar(lambda t0: float(revolution(t0).y[0, -1]) - t0, x0=temperature,
+                            x1=0.5 * (temperature + wall_temperature), method="secant", xtol=tolerance * temperature,
+                            maxiter=most)
+        if not found.converged:
+            raise InputError(f"the deactivated cylinder's charge did not repeat within {most} revolutions")
+        temperature, n = found.root, found.function_calls + 1
+    else:
+        n = 1
+    sol = revolution(temperature)
+    v, _ = volume(sol.t)
+    return AirSpring(sol.t - 2.0 * np.pi, mass * gas_constant * sol.y[0] / v, sol.y[0], float(sol.y[1, -1]),
+                     float(sol.y[2, -1]), n)
