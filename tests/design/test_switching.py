@@ -81,3 +81,13 @@ def test_a_too_weak_spring_wire_fails_its_check():
     doc["valves"]["intake"]["switching"]["spring_mean_diameter_mm"] = 10.0
     stress = [c for c in run(validate(doc)).checks if c.code == "switching.spring_stress"][0]
     assert not stress.passed and stress.severity == "failure"
+
+
+def test_deactivated_cylinders_loss(designs):
+    """The trapped charge (100 kPa, 60 degC at BDC, epsilon = 10.5, walls at 120 degC) loses work to its walls: a
+    positive loss per cycle, twice a revolution's; its peak below the adiabatic p epsilon^1.4 (the walls cool it)."""
+    rec = designs[0].to_dict()["switching"]["intake"]
+    assert rec["deactivated_loss_kPa"] > 0.0
+    swept = np.pi * 0.086 ** 3 / 4.0
+    assert rec["deactivated_work_J"] == pytest.approx(-rec["deactivated_loss_kPa"] * 1e3 * swept)
+    assert rec["deactivated_peak_pressure_kPa"] < 100.0 * 10.5 ** 1.4

@@ -28,7 +28,7 @@ def test_every_row_has_its_words(results, lang):
     names = catalogue(lang)["switching"]["names"]
     assert set(names) == set(catalogue("en")["switching"]["names"])
     assert all(key in names for key, _ in chapter["rows"])
-    assert len(chapter["rows"]) == 24                        # jump_speed found: every row of ROWS
+    assert len(chapter["rows"]) == 28                        # jump speed found, the air spring given: every row
     record = results.to_dict()["switching"]["intake"]
     assert chapter["speeds"] == list(zip(record["sweep_speeds_rpm"], record["arm_contact_force_min_N"]))
     assert {c.code for c in chapter["checks"]} == {"switching.jump_speed", "switching.valve_held",

@@ -23,6 +23,7 @@ def _doc(**switching):
     ({"mode": "two_step"}, "mode"),
     ({"inner_arm_mm": 0.5}, "inner_arm_mm"),
     ({"speeds": 2}, "speeds = 2: allowed 4...200"),
+    ({"wall_temperature_C": None}, "the deactivated cylinder's breathing needs wall_temperature_C too"),
 ])
 def test_bad_switching_input_is_refused_naming_the_key(keys, words):
     with pytest.raises(SpecError, match="switching") as err:
@@ -36,3 +37,10 @@ def test_switching_needs_a_finger():
     with pytest.raises(SpecError, match=r"valves\.intake\.switching.*cam\.follower = \"finger\"") as err:
         validate(doc)
     assert "cam.follower = 'flat'" in str(err.value) or "cam.follower =" in str(err.value)
+
+
+def test_the_deactivated_cylinders_breathing_needs_the_rod():
+    doc = _doc()
+    doc["engine"]["rod_length_mm"] = None
+    with pytest.raises(SpecError, match=r"valves\.intake\.switching\.compression_ratio.*engine\.rod_length_mm"):
+        validate(doc)

@@ -28,6 +28,10 @@ SPEEDS_OVER = 2.0
 SWEEP_STEP_DEG = 0.5
 """The arm's sweep's angle step [cam deg]: the arm on its cam is a smooth, lightly loaded one-mass train."""
 
+AIR = (287.0, 1.4)
+"""R [J/(kg K)] and gamma of the deactivated cylinder's trapped charge: dry air's near room temperature, taken constant
+over the cycle (an exhaust charge's gamma is lower: this package's choice, one gas for every trapped charge)."""
+
 LATCH_LIMIT = LIMITS["rocker_pad_stress"][0]
 """The latch pin's allowable Hertz stress [Pa]: the rocker's hardened pad on the valve tip's, taken for the latch."""
 
@@ -75,6 +79,15 @@ class SwitchingRecord:
     cam_force: float = quantity("cam_force_max_N", "N", "largest cam force latched (the strength chapter's)")
     latch_force: float = quantity("latch_force_max_N", "N", "the latch's load, N L_i / L_l")
     latch_stress: float = quantity("latch_stress_max_MPa", "MPa", "Hertz stress of the latch pin on its seat")
+    air_work: Optional[float] = quantity("deactivated_work_J", "J", "the deactivated cylinder's trapped charge: its "
+                                         "work on the piston per cycle at the rated speed (negative: a loss)",
+                                         omit_none=True, default=None)
+    air_loss: Optional[float] = quantity("deactivated_loss_kPa", "kPa", "that loss per cycle over the swept volume, "
+                                         "a mean effective pressure", omit_none=True, default=None)
+    air_peak: Optional[float] = quantity("deactivated_peak_pressure_kPa", "kPa", "the trapped charge's peak "
+                                         "pressure", omit_none=True, default=None)
+    air_revolutions: Optional[int] = quantity("deactivated_revolutions", label="revolutions integrated to the "
+                                              "repeating one", omit_none=True, default=None)
     speeds: tuple[float, ...] = quantity("sweep_speeds_rpm", "rpm", "engine speeds of the arm's sweep", default=())
     min_force: tuple[float, ...] = quantity("arm_contact_force_min_N", "N", "the arm's smallest force on its cam while "
                                             "the cam lifts it, at each speed (0: it has left the cam)", default=())
@@ -149,7 +162,8 @@ def switching_stage(name, switching, valve, engine, design) -> SwitchingResult:
         preload, rate, top, float(sw.torsion_coils(STEEL_MODULUS, wire, mean, rate)), stress, stress / strength,
         frequency, frequency * 2.0 * np.pi / omega, None if not np.isfinite(jump) else crank * jump, crank * static,
         crank * float(speeds[-1]), arm_force, valve_force, design.drive.spring.preload, cam_force, latch, latch_stress,
-        tuple(crank * speeds), tuple(float(f) for f in result.events.min_contact_force))
+        *_air_spring(switching, engine), tuple(crank * speeds),
+        tuple(float(f) for f in result.events.min_contact_force))
     checks = (
         check("switching.jump_speed", (jump if np.isfinite(jump) else speeds[-1]) / omega, low=1.0,
               source=cite("norton2009", "the chapter on the dynamics of follower trains"), severity="failure",
@@ -162,3 +176,20 @@ def switching_stage(name, switching, valve, engine, design) -> SwitchingResult:
               severity="failure"),
     )
     return SwitchingResult(figures, tuple(c.of_valve(name) for c in checks))
+
+
+def _air_spring(switching, engine) -> tuple:
+    """The deactivated cylinder's breathing at the rated speed (:func:`valvetrain.switching.air_spring`): work per
+    cycle [J], its loss over the swept volume [Pa], the peak pressure [Pa], the revolutions; Nones without
+    ``compression_ratio``."""
+    if switching.compression_ratio is None:
+        return None, None, None, None
+    r, gamma = AIR
+    eps = switching.compression_ratio
+    swept = np.pi * engine.bore ** 2 / 4.0 * engine.stroke
+    temperature = switching.trapped_temperature_C + 273.15
+    mass = switching.trapped_pressure * swept * eps / (eps - 1.0) / (r * temperature)
+    spring = sw.air_spring(engine.bore, engine.stroke, engine.rod_length, eps, mass, temperature,
+                           switching.wall_temperature_C + 273.15, engine.rated_speed, r, gamma)
+    work = spring.work * engine.strokes / 2.0        # revolutions per cycle
+    return work, -work / swept, float(spring.pressure.max()), spring.revolutions

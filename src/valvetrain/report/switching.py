@@ -8,10 +8,10 @@ from ..locale import catalogue
 ROWS = ("mode", "latched_lift", "unlatched_lift", "arm_swing", "over_speed", "reserve", "required_torque", "preload",
         "rate", "max_torque", "coils", "stress", "stress_share", "frequency", "frequency_orders", "jump_speed",
         "jump_speed_static", "sweep_top", "arm_force", "valve_force", "valve_preload", "cam_force", "latch_force",
-        "latch_stress")
+        "latch_stress", "air_work", "air_loss", "air_peak", "air_revolutions")
 """The rows of the chapter's table (fields of :class:`~valvetrain.design.switching.SwitchingRecord`)."""
 
-SOURCES = ("Hendriksma, Kunz, Greene (2007)", "Norton (2009)", "Wahl (1944)", "Johnson (1985)")
+SOURCES = ("Hendriksma, Kunz, Greene (2007)", "Norton (2009)", "Wahl (1944)", "Johnson (1985)", "Woschni (1967)")
 """The works the chapter's method cites."""
 
 

@@ -26,7 +26,12 @@ class Switching(_Model):
     coils found from the rate it needs.  ``latch_arm_mm``: the arm's pivot to the latch's contact, L_l;
     ``latch_pin_diameter_mm``, ``latch_width_mm``: the pin and the length of its line contact on its seat;
     ``latch_seat_radius_mm``: the seat's concave radius (larger than the pin's), absent: a flat seat.
-    ``speeds``: the speeds of the unlatched arm's dynamic sweep, up to twice the over-speed."""
+    ``speeds``: the speeds of the unlatched arm's dynamic sweep, up to twice the over-speed.
+
+    The breathing of the deactivated cylinder (its valves shut all cycle), with ``compression_ratio``: its trapped
+    charge at ``trapped_pressure_kPa`` and ``trapped_temperature_C`` at the bottom dead centre (what the deactivation
+    traps: fresh charge or exhaust, as the engine's strategy makes it), the walls at ``wall_temperature_C``; needs
+    ``engine.rod_length_mm``."""
 
     mode: Literal["deactivation"] = "deactivation"
     inner_arm_mm: Length(2.0, 200.0, low_open=False)
@@ -41,6 +46,10 @@ class Switching(_Model):
     latch_width_mm: Length(0.2, 50.0, low_open=False)
     latch_seat_radius_mm: Optional[Length(0.25, 1000.0, low_open=False)] = None
     speeds: int = 16
+    compression_ratio: Optional[_bounded(1.5, 60.0)] = None
+    trapped_pressure_kPa: Optional[_bounded(1.0, 10000.0, "kPa")] = None
+    trapped_temperature_C: Optional[_bounded(-50.0, 1500.0, "degC")] = None
+    wall_temperature_C: Optional[_bounded(-50.0, 1500.0, "degC")] = None
 
     @model_validator(mode="after")
     def _consistent(self):
@@ -57,6 +66,11 @@ class Switching(_Model):
                             "its tensile strength, the torsion spring's bending limit)")
         if not 4 <= self.speeds <= 200:
             problems.append(f"speeds = {self.speeds}: allowed 4...200")
+        trapped = ("compression_ratio", "trapped_pressure_kPa", "trapped_temperature_C", "wall_temperature_C")
+        given = [k for k in trapped if getattr(self, k) is not None]
+        if given and len(given) < len(trapped):
+            problems.append(f"{', '.join(given)} given: the deactivated cylinder's breathing needs "
+                            f"{', '.join(k for k in trapped if k not in given)} too (or none of them)")
         if problems:
             raise InputError("; ".join(problems))
         return self

@@ -54,6 +54,9 @@ def _valve_problems(name, v, engine):
         out.append(Problem(f"{at}.switching", "allowed on a finger given by its geometry (cam.follower = \"finger\"): "
                            "the switching finger's inner arm carries the finger's roller",
                            f"cam.follower = {v.cam.follower!r}", " with "))
+    if v.switching is not None and v.switching.compression_ratio is not None and engine.rod_length_mm is None:
+        out.append(Problem(f"{at}.switching.compression_ratio", "needs engine.rod_length_mm: the deactivated "
+                           "cylinder's volume follows the slider-crank", f"{v.switching.compression_ratio:g}", " "))
     ratio = v.spring.mean_diameter_ratio
     wires = v.spring.wire_diameter_range_mm
     low, high = (x / MM for x in feasible_mean_diameters(wires))
