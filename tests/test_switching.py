@@ -167,3 +167,10 @@ def test_deactivated_cylinder_with_its_walls_loses_work_as_heat():
     assert s.work == pytest.approx(s.heat, rel=1e-6)
     assert s.temperature[-1] == pytest.approx(s.temperature[0], rel=1e-6)
     assert s.pressure.max() < 0.95 * 5.8e-4 * 287.0 * 300.0 / (np.pi * 0.086 ** 3 / 4 / 9.0) * 10.0 ** 0.4
+
+
+def test_deactivated_cylinder_starting_at_the_wall_temperature():
+    """The charge trapped at the walls' temperature: the secant's second guess is not its first (the guesses were the
+    temperature and its mean with the walls', equal here: scipy refused the secant, x0 == x1)."""
+    s = sw.air_spring(0.086, 0.086, 0.145, 10.0, 5.8e-4, 400.0, 400.0, 300.0, 287.0, 1.4)
+    assert s.work < 0.0 and s.work == pytest.approx(s.heat, rel=1e-6)

@@ -384,7 +384,7 @@ def air_spring(bore, stroke, rod_length, compression_ratio, mass, temperature, w
 
     if heat_transfer:    # adiabatic, every revolution repeats: the one from ``temperature``
         found = root_scalar(lambda t0: float(revolution(t0).y[0, -1]) - t0, x0=temperature,
-                            x1=0.5 * (temperature + wall_temperature), method="secant", xtol=tolerance * temperature,
+                            x1=0.95 * temperature, method="secant", xtol=tolerance * temperature,
                             maxiter=most)
         if not found.converged:
             raise InputError(f"the deactivated cylinder's charge did not repeat within {most} revolutions")

@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 from valvetrain.design import run
-from valvetrain.specification import load_spec, spec_document, validate
+from valvetrain.specification import SpecError, load_spec, spec_document, validate
 
 EXAMPLE = Path(__file__).parents[2] / "examples" / "switching-finger.toml"
 
@@ -91,3 +91,14 @@ def test_deactivated_cylinders_loss(designs):
     swept = np.pi * 0.086 ** 3 / 4.0
     assert rec["deactivated_work_J"] == pytest.approx(-rec["deactivated_loss_kPa"] * 1e3 * swept)
     assert rec["deactivated_peak_pressure_kPa"] < 100.0 * 10.5 ** 1.4
+
+
+def test_a_sweep_too_large_is_refused_naming_the_stiffness():
+    """A contact of 1e7 N/mm on an arm of 0.01 kg mm^2 at 200 mm (0.25 mg at the roller) rings at 2e8 rad/s: its 200
+    speeds would take about 1e10 integrator steps x elements, hours; refused before it runs."""
+    doc = _document()
+    doc["valves"]["intake"]["switching"].update(contact_stiffness_N_per_mm=1e7, inner_arm_inertia_kg_mm2=0.01,
+                                                inner_arm_mm=200.0, speeds=200)
+    with pytest.raises(SpecError, match=r"valves\.intake\.switching\.contact_stiffness_N_per_mm = 1e\+07: with "
+                                        r"speeds = 200 the unlatched arm's sweep is about"):
+        run(validate(doc))

@@ -36,7 +36,7 @@ def test_switching_needs_a_finger():
     doc["valves"]["intake"]["switching"] = spec_document(load_spec(EXAMPLE))["valves"]["intake"]["switching"]
     with pytest.raises(SpecError, match=r"valves\.intake\.switching.*cam\.follower = \"finger\"") as err:
         validate(doc)
-    assert "cam.follower = 'flat'" in str(err.value) or "cam.follower =" in str(err.value)
+    assert "not with cam.follower = 'flat'" in str(err.value)
 
 
 def test_the_deactivated_cylinders_breathing_needs_the_rod():

@@ -16,10 +16,12 @@ import numpy as np
 from .. import switching as sw
 from ..bibliography import cite
 from ..checks import Check, check
-from ..dynamics.sweep import sweep
+from ..dynamics.sweep import sweep, sweep_size
 from ..spring_materials import grade
+from ..specification.messages import Problem, SpecError
 from ..springs import DEFLECTION_RATIO_RANGE, enveloping_line
 from ..strength import LIMITS, STEEL_MODULUS
+from .dynamics import MAX_SWEEP_BYTES, MAX_SWEEP_WORK
 from .results import quantity, record
 
 SPEEDS_OVER = 2.0
@@ -118,6 +120,12 @@ def switching_stage(name, switching, valve, engine, design) -> SwitchingResult:
     design : ValveDesign
         The valve, designed latched (its finger, law, valve spring and strength).
 
+    Raises
+    ------
+    SpecError
+        An arm's sweep larger than the dynamics chapter allows (:data:`~valvetrain.design.dynamics.MAX_SWEEP_WORK`,
+        :data:`~valvetrain.design.dynamics.MAX_SWEEP_BYTES`), naming ``contact_stiffness_N_per_mm``.
+
     Notes
     -----
     Over-speed omega_os = omega_cam(rated) x ``engine.over_speed_ratio``.  The arm turns by phi = u / L_i with u the
@@ -145,6 +153,13 @@ def switching_stage(name, switching, valve, engine, design) -> SwitchingResult:
     frequency = sw.arm_frequency(rate, inertia)
     train = sw.arm_train(inertia, inner, rate, preload, switching.contact_stiffness)
     speeds = omega * np.unique(np.concatenate([np.linspace(0.25, SPEEDS_OVER, switching.speeds), [1.0]]))
+    work, size = sweep_size(train.network(), speeds, 3, SWEEP_STEP_DEG)
+    if work > MAX_SWEEP_WORK or size > MAX_SWEEP_BYTES:
+        raise SpecError([Problem(f"valves.{name}.switching.contact_stiffness_N_per_mm", f"with speeds = "
+                                 f"{switching.speeds} the unlatched arm's sweep is about {work:.3g} integrator steps x "
+                                 f"elements (allowed {MAX_SWEEP_WORK:.3g}) and {size / 1e6:.0f} MB (allowed "
+                                 f"{MAX_SWEEP_BYTES / 1e6:.0f} MB): a softer contact, a heavier arm or fewer speeds",
+                                 f"{switching.contact_stiffness * 1e-3:g}")])
     result = sweep(sw.ArmTravel(law, follower, heel), train, speeds, revolutions=3, step_deg=SWEEP_STEP_DEG)
     jump = result.headline()["jump_speed"]
     at = int(np.flatnonzero(speeds == omega)[0])

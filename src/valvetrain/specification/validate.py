@@ -51,9 +51,9 @@ def _valve_problems(name, v, engine):
                            "along the tappet, a rocker's of a given rocker_ratio along the straight lever's normal",
                            f"{axis:g}", " "))
     if v.switching is not None and not FOLLOWERS[v.cam.follower].law_at_valve:
-        out.append(Problem(f"{at}.switching", "allowed on a finger given by its geometry (cam.follower = \"finger\"): "
-                           "the switching finger's inner arm carries the finger's roller",
-                           f"cam.follower = {v.cam.follower!r}", " with "))
+        out.append(Problem(f"{at}.switching", "allowed only on a finger given by its geometry (cam.follower = "
+                           f"\"finger\"), not with cam.follower = {v.cam.follower!r}: the switching finger's inner arm "
+                           "carries the finger's roller"))
     if v.switching is not None and v.switching.compression_ratio is not None and engine.rod_length_mm is None:
         out.append(Problem(f"{at}.switching.compression_ratio", "needs engine.rod_length_mm: the deactivated "
                            "cylinder's volume follows the slider-crank", f"{v.switching.compression_ratio:g}", " "))
