@@ -53,7 +53,8 @@ class SwitchingRecord:
 
     mode: str = quantity("mode", label="the unlatched mode: deactivation (the valve stays shut)")
     latched_lift: float = quantity("latched_valve_lift_mm", "mm", "valve lift latched (the finger's)")
-    unlatched_lift: float = quantity("unlatched_valve_lift_mm", "mm", "valve lift unlatched")
+    unlatched_lift: float = quantity("unlatched_valve_lift_mm", "mm", "valve lift unlatched: the finger's at its rest "
+                                     "angle, where the body stays")
     arm_swing: float = quantity("arm_swing_deg", "deg", "the unlatched inner arm's turn from the heel to the nose")
     over_speed: float = quantity("over_speed_rpm", "rpm", "engine speed the arm must follow its cam at")
     reserve: float = quantity("reserve", label="margin of the lost-motion spring over the arm's inertia torque")
@@ -164,7 +165,9 @@ def switching_stage(name, switching, valve, engine, design) -> SwitchingResult:
     jump = result.headline()["jump_speed"]
     at = int(np.flatnonzero(speeds == omega)[0])
     arm_force = float(result.contact_force[at].max())
-    rest_arm = float(follower.valve_arm(np.array(follower.base_angle(heel))))
+    rest = np.array(follower.base_angle(heel))      # unlatched, the body stays where the heel circle holds it
+    rest_arm = float(follower.valve_arm(rest))
+    unlatched = float(follower.valve_lift_of(rest, heel))
     valve_force = float(sw.valve_force_of_arm(arm_force, follower.roller_arm, rest_arm))
     cam_force = design.drive.strength.cam_force_max
     latch = float(sw.latch_force(cam_force, inner, switching.latch_arm))
@@ -173,7 +176,7 @@ def switching_stage(name, switching, valve, engine, design) -> SwitchingResult:
     static = sw.quasi_static_jump_speed(train.mass, train.preload, train.spring_rate, u, d2u)
     crank = engine.strokes / 2.0     # the engine's speed over the camshaft's
     figures = SwitchingRecord(
-        switching.mode, float(design.flow.valve_lift), 0.0, swing, crank * omega, reserve, float(required.max()),
+        switching.mode, float(design.flow.valve_lift), unlatched, swing, crank * omega, reserve, float(required.max()),
         preload, rate, top, float(sw.torsion_coils(STEEL_MODULUS, wire, mean, rate)), stress, stress / strength,
         frequency, frequency * 2.0 * np.pi / omega, None if not np.isfinite(jump) else crank * jump, crank * static,
         crank * float(speeds[-1]), arm_force, valve_force, design.drive.spring.preload, cam_force, latch, latch_stress,
