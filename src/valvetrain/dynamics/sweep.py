@@ -749,8 +749,9 @@ def sweep_size(network, cam_speeds, revolutions, step_deg) -> tuple[int, int]:
     """Work and memory of a sweep before it runs: (integrator steps x elements, bytes of the recorded maps).
 
     The work counts every sub-step of every speed for ``revolutions`` (the cap: a speed that repeats stops
-    earlier) times the elements of the network; the memory is the recorded revolution of every speed (position,
-    velocity, acceleration and the forces of the contact, the seat and the springs, 8 bytes each).
+    earlier) times the elements of the network; the memory is the recorded revolution of every speed (the valve's
+    position, velocity and acceleration, the follower's position where it is another node, the forces of the
+    contact, the seat and the springs, 8 bytes each).
 
     >>> from .models import one_mass_train
     >>> sweep_size(one_mass_train(0.25, 15e6, 67.5e3, 400.0).network(), [300.0, 400.0], 3, 0.1)
@@ -759,7 +760,7 @@ def sweep_size(network, cam_speeds, revolutions, step_deg) -> tuple[int, int]:
     steps = int(round(360.0 / step_deg))
     n_sub = substeps(network.highest_frequency(), np.atleast_1d(np.asarray(cam_speeds, dtype=float)),
                      np.radians(step_deg))
-    recorded = 3 * len(recorded_nodes(network)) + 2 + len(network.spring_elements)
+    recorded = 5 + len(recorded_nodes(network))
     return (int(n_sub.sum()) * steps * int(revolutions) * network.a.size,
             n_sub.size * steps * recorded * 8)
 
