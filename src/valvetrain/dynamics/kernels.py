@@ -67,23 +67,21 @@ def _forces(x, v, inv_mass, ra, rb, k, d, gap, pre, uni, vnode, vtab, acc, force
         ia, ib = ra[e], rb[e]
         ke, de, ge = k[e], d[e], gap[e]
         ma, mb = inv_mass[ia], inv_mass[ib]
-        xa, va, xb, vb = x[ia], v[ia], x[ib], v[ib]
-        fa, fb, fe = acc[ia], acc[ib], force[e]
         if uni[e]:
             for s in range(bsize):
-                delta = xa[s] - xb[s] - ge
-                f = ke * delta + de * (va[s] - vb[s])
+                delta = x[ia, s] - x[ib, s] - ge
+                f = ke * delta + de * (v[ia, s] - v[ib, s])
                 f = f if (delta > 0.0) & (f > 0.0) else 0.0
-                fe[s] = f
-                fb[s] += f * mb
-                fa[s] -= f * ma
+                force[e, s] = f
+                acc[ib, s] += f * mb
+                acc[ia, s] -= f * ma
         else:
             pe = pre[e]
             for s in range(bsize):
-                f = pe + ke * (xa[s] - xb[s] - ge) + de * (va[s] - vb[s])
-                fe[s] = f
-                fb[s] += f * mb
-                fa[s] -= f * ma
+                f = pe + ke * (x[ia, s] - x[ib, s] - ge) + de * (v[ia, s] - v[ib, s])
+                force[e, s] = f
+                acc[ib, s] += f * mb
+                acc[ia, s] -= f * ma
     if vnode >= 0:
         _variable_mass(x[vnode], v[vnode], acc[vnode], vtab)
 
@@ -135,19 +133,21 @@ def _rk4(x, v, xn, vn, h, cam_x, cam_v, off, im, ra, rb, k, d, gap, pre, uni, vn
     cam = n + 1
     for q in range(1, 4):
         c = 0.5 if q < 3 else 1.0
-        kp, ap = (v if q == 1 else kx[q - 1]), acc[q - 1]
         for i in range(n):
+            if q == 1:
+                for s in range(bsize):
+                    xs[i, s] = x[i, s] + c * h[s] * v[i, s]
+            else:
+                for s in range(bsize):
+                    xs[i, s] = x[i, s] + c * h[s] * kx[q - 1, i, s]
             for s in range(bsize):
-                hs = c * h[s]
-                xs[i, s] = x[i, s] + hs * kp[i, s]
-                vs[i, s] = v[i, s] + hs * ap[i, s]
+                vs[i, s] = v[i, s] + c * h[s] * acc[q - 1, i, s]
         for s in range(bsize):
             xs[cam, s] = cam_x[q] + off[s]
             vs[cam, s] = cam_v[q, s]
-        kq = kx[q]
         for i in range(n):
             for s in range(bsize):
-                kq[i, s] = vs[i, s]
+                kx[q, i, s] = vs[i, s]
         _forces(xs, vs, im, ra, rb, k, d, gap, pre, uni, vnode, vtab, acc[q], scratch)
     for i in range(n):
         for s in range(bsize):
@@ -260,6 +260,7 @@ def integrate_block(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_p
     om, dt = np.empty(bsize), np.empty(bsize)
     z, z0, off = np.zeros(bsize), np.zeros(bsize), np.zeros(bsize)
     tile = np.empty((TILE, 8, bsize))
+    outs = (out_lift, out_vel, out_acc, out_contact, out_seat, out_spring)
     ratio = adjuster[0]
     k_open, d_open, closed = k.copy(), d.copy(), uni.copy()          # the seat open and closed (_split_step)
     if closing >= 0:
@@ -320,8 +321,8 @@ def integrate_block(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_p
                         rocker_ratio, ratio > 0.0)
                 if r % TILE == TILE - 1 or r == steps_per_rev - 1:
                     r0, count = r - r % TILE, r % TILE + 1
-                    for q, out in enumerate((out_lift, out_vel, out_acc, out_contact, out_seat, out_spring)):
-                        _flush(tile, q, out, idx, r0, count)
+                    for q in range(6):
+                        _flush(tile, q, outs[q], idx, r0, count)
                     if follower >= 0:
                         _flush(tile, 6, out_follower, idx, r0, count)
                     if ratio > 0.0:
