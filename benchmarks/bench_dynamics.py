@@ -1,6 +1,9 @@
 """Benchmark: speed sweeps of the elastic valve train (issue 11, item 6).
 
-Run on demand: ``python benchmarks/bench_dynamics.py``.  Measures, in one run:
+Run on demand: ``python benchmarks/bench_dynamics.py`` (``--one-mass``: the first item only).  Measures, in one run:
+
+* the 1-DOF sweep (200 speeds) on one thread and on all, alternately with the sweep of SWEEP_BASELINE (its kernels
+  and sweep modules read with git), and the largest difference of their records;
 
 * the numba kernels' first-call compile time (processor time of a fresh process with an empty
   cache, all threads; wall time beside it) beside the baseline kernels' (the kernels module of
@@ -241,7 +244,12 @@ print(c1 - c0 - (c2 - c1), t1 - t0 - (t2 - t1))
 OLD_KERNELS = """
 sys.path.insert(0, {folder!r})
 import baseline_kernels
-module.integrate_block = lambda *a: baseline_kernels.integrate_block(*a[:26], *a[30:-1])  # no adjuster, variable mass
+def old(*a):   # the baseline's arguments: no adjuster, no variable mass, its records (S, values, steps) made here
+    nodes = np.array([a[25]] + ([a[21]] if a[21] >= 0 else []), dtype=np.int64)
+    elems = np.concatenate([[a[28], a[20]], a[22]]).astype(np.int64)
+    rec = [np.empty((a[31].shape[0], m, a[31].shape[1])) for m in (nodes.size,) * 3 + (elems.size,)]
+    baseline_kernels.integrate_block(*a[:21], nodes, elems, *a[24:27], *rec, *a[38:41])
+module.integrate_block = old
 module.integrate_block.signatures = baseline_kernels.integrate_block.signatures  # read by the compile notice
 """
 
@@ -277,6 +285,60 @@ def compile_times():
         cached = float(subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True,
                                       check=True).stdout.split()[-1])
     return new, base, cached
+
+
+SWEEP_BASELINE = "c7a6d7e"
+"""The commit whose sweep (its kernels and sweep modules, every revolution written speed by speed into the output
+rows) is the baseline of the one-mass sweep's time (issue 38)."""
+
+
+def baseline_sweep(folder):
+    """:func:`valvetrain.dynamics.sweep.sweep` of SWEEP_BASELINE, its modules read with git into the package
+    ``baseline_dynamics`` in ``folder`` (its numba kernels compiled there)."""
+    root = Path(__file__).parent.parent
+    package = Path(folder) / "baseline_dynamics"
+    package.mkdir()
+    (package / "__init__.py").write_text("")
+    for name in ("kernels", "sweep"):
+        text = subprocess.run(["git", "show", f"{SWEEP_BASELINE}:src/valvetrain/dynamics/{name}.py"], cwd=root,
+                              capture_output=True, text=True, check=True).stdout
+        (package / f"{name}.py").write_text(text.replace("from ..errors import", "from valvetrain.errors import"))
+    sys.path.insert(0, str(folder))
+    from baseline_dynamics.sweep import sweep as old
+    return old
+
+
+def one_mass_against_baseline(law, folder, repeats=7):
+    """The 1-DOF sweep on one thread and on every thread, and the baseline sweep's (:func:`baseline_sweep`), timed
+    alternately (best of ``repeats`` each): {(name, threads): seconds}, and the largest difference of their records."""
+    train, old = one_mass(), baseline_sweep(folder)
+    threads = numba.config.NUMBA_NUM_THREADS
+    calls = {"new": sweep, "baseline": old}
+    for call in calls.values():
+        call(law, train, SPEEDS[:2])                                       # warm up
+    a, b = sweep(law, train, SPEEDS), old(law, train, SPEEDS)
+    fields = ("lift", "velocity", "acceleration", "contact_force", "seat_force", "spring_force", "revolutions")
+    differ = max(float(np.abs(getattr(a, f) - getattr(b, f)).max()) for f in fields)
+    times = {}
+    for count in (1, threads):
+        numba.set_num_threads(count)
+        runs = {name: [] for name in calls}
+        for _ in range(repeats):
+            for name, call in calls.items():
+                runs[name].append(best_time(lambda: call(law, train, SPEEDS), 1))   # noqa: B023 (called at once)
+        times.update({(name, count): min(t) for name, t in runs.items()})
+    numba.set_num_threads(threads)
+    return times, differ
+
+
+def print_one_mass(law, folder):
+    times, differ = one_mass_against_baseline(law, folder)
+    print(f"1-DOF sweep against the sweep of {SWEEP_BASELINE} (alternately in the same run, best of 7, load average "
+          f"{os.getloadavg()[0]:.1f}; records differ by {differ:.1e}):")
+    for count in sorted({c for _, c in times}):
+        new, old = times["new", count], times["baseline", count]
+        print(f"  {count} thread{'s' if count > 1 else ''}: {new * 1e3:6.1f} ms, baseline {old * 1e3:6.1f} ms, new / "
+              f"baseline {new / old:4.2f} (target <= 15 ms: {'met' if new <= 0.015 else 'MISSED'})")
 
 
 def c_library(tmp):
@@ -403,6 +465,10 @@ def main():
     print(f"valve-train dynamics benchmark: {SPEEDS.size} speeds x {REVOLUTIONS} revolutions at {STEP_DEG} cam deg, "
           f"{os.cpu_count()} cores, numba {numba.__version__} ({threads} threads), load average "
           f"{os.getloadavg()[0]:.1f} (other processes share the cores: the times are best of 5)")
+    with tempfile.TemporaryDirectory() as folder:
+        print_one_mass(law, folder)
+    if "--one-mass" in sys.argv:
+        return
     new, base, cached = compile_times()
     cpu, wall = min(c for c, _ in new), min(w for _, w in new)
     print(f"numba compile, first sweep with an empty cache: {cpu:.2f} s processor time (runs "

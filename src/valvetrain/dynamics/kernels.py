@@ -67,23 +67,21 @@ def _forces(x, v, inv_mass, ra, rb, k, d, gap, pre, uni, vnode, vtab, acc, force
         ia, ib = ra[e], rb[e]
         ke, de, ge = k[e], d[e], gap[e]
         ma, mb = inv_mass[ia], inv_mass[ib]
-        xa, va, xb, vb = x[ia], v[ia], x[ib], v[ib]
-        fa, fb, fe = acc[ia], acc[ib], force[e]
         if uni[e]:
             for s in range(bsize):
-                delta = xa[s] - xb[s] - ge
-                f = ke * delta + de * (va[s] - vb[s])
+                delta = x[ia, s] - x[ib, s] - ge
+                f = ke * delta + de * (v[ia, s] - v[ib, s])
                 f = f if (delta > 0.0) & (f > 0.0) else 0.0
-                fe[s] = f
-                fb[s] += f * mb
-                fa[s] -= f * ma
+                force[e, s] = f
+                acc[ib, s] += f * mb
+                acc[ia, s] -= f * ma
         else:
             pe = pre[e]
             for s in range(bsize):
-                f = pe + ke * (xa[s] - xb[s] - ge) + de * (va[s] - vb[s])
-                fe[s] = f
-                fb[s] += f * mb
-                fa[s] -= f * ma
+                f = pe + ke * (x[ia, s] - x[ib, s] - ge) + de * (v[ia, s] - v[ib, s])
+                force[e, s] = f
+                acc[ib, s] += f * mb
+                acc[ia, s] -= f * ma
     if vnode >= 0:
         _variable_mass(x[vnode], v[vnode], acc[vnode], vtab)
 
@@ -119,8 +117,9 @@ def _variable_mass(x, v, acc, table):
 
 
 @njit(cache=True, nogil=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
-def _rk4(x, v, h, cam_x, cam_v, off, im, ra, rb, k, d, gap, pre, uni, vnode, vtab, xs, vs, kx, acc, scratch):
-    """One classical RK4 step of every column of a block's state ``x``, ``v`` (rows, B), updated in place.
+def _rk4(x, v, xn, vn, h, cam_x, cam_v, off, im, ra, rb, k, d, gap, pre, uni, vnode, vtab, xs, vs, kx, acc, scratch):
+    """One classical RK4 step of every column of a block's state ``x``, ``v`` (rows, B) into the node rows of ``xn``,
+    ``vn`` (the same arrays for a step in place).
 
     Column s advances by ``h[s]`` [s]; at stage q (0-3: start, middle twice, end) the cam row is ``cam_x[q]`` [m]
     and ``cam_v[q, s]`` [m/s], shifted by the lash adjuster's extension ``off[s]`` [m].  ``acc[0]`` holds the
@@ -134,36 +133,42 @@ def _rk4(x, v, h, cam_x, cam_v, off, im, ra, rb, k, d, gap, pre, uni, vnode, vta
     cam = n + 1
     for q in range(1, 4):
         c = 0.5 if q < 3 else 1.0
-        kp, ap = (v if q == 1 else kx[q - 1]), acc[q - 1]
         for i in range(n):
+            if q == 1:
+                for s in range(bsize):
+                    xs[i, s] = x[i, s] + c * h[s] * v[i, s]
+            else:
+                for s in range(bsize):
+                    xs[i, s] = x[i, s] + c * h[s] * kx[q - 1, i, s]
             for s in range(bsize):
-                hs = c * h[s]
-                xs[i, s] = x[i, s] + hs * kp[i, s]
-                vs[i, s] = v[i, s] + hs * ap[i, s]
+                vs[i, s] = v[i, s] + c * h[s] * acc[q - 1, i, s]
         for s in range(bsize):
             xs[cam, s] = cam_x[q] + off[s]
             vs[cam, s] = cam_v[q, s]
-        kq = kx[q]
         for i in range(n):
             for s in range(bsize):
-                kq[i, s] = vs[i, s]
+                kx[q, i, s] = vs[i, s]
         _forces(xs, vs, im, ra, rb, k, d, gap, pre, uni, vnode, vtab, acc[q], scratch)
     for i in range(n):
         for s in range(bsize):
-            x[i, s] += h[s] / 6.0 * (v[i, s] + 2.0 * kx[1, i, s] + 2.0 * kx[2, i, s] + kx[3, i, s])
-            v[i, s] += h[s] / 6.0 * (acc[0, i, s] + 2.0 * acc[1, i, s] + 2.0 * acc[2, i, s] + acc[3, i, s])
+            xn[i, s] = x[i, s] + h[s] / 6.0 * (v[i, s] + 2.0 * kx[1, i, s] + 2.0 * kx[2, i, s] + kx[3, i, s])
+            vn[i, s] = v[i, s] + h[s] / 6.0 * (acc[0, i, s] + 2.0 * acc[1, i, s] + 2.0 * acc[2, i, s] + acc[3, i, s])
 
 
 @njit(cache=True, nogil=True)
 def integrate_block(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_per_rev, max_revolutions, tolerance,
-                    rate, inv_mass, x_init, ra, rb, k, d, gap, pre, uni, closing, rec_nodes, rec_elems, clash_gap,
-                    surge_ref, surge_w, adjuster, contact, vnode, vtab, out_x, out_v, out_a, out_f, out_clash,
-                    out_surge, out_revs, out_z) -> None:
+                    rate, inv_mass, x_init, ra, rb, k, d, gap, pre, uni, closing, follower, springs, rocker_ratio,
+                    clash_gap, surge_ref, surge_w, adjuster, contact, vnode, vtab, out_lift, out_vel, out_acc,
+                    out_contact, out_seat, out_spring, out_follower, out_clash, out_surge, out_revs, out_z) -> None:
     """Integrate the speeds ``idx`` of one block (all with ``n_sub`` sub-steps) in lockstep until each repeats.
 
     Every revolution is recorded over the previous one; after each revolution the state of every speed is compared
     with its state at the start of that revolution, and the block stops once every speed repeats within
-    ``tolerance`` (or after ``max_revolutions``).  The record is then the last revolution integrated.
+    ``tolerance`` (or after ``max_revolutions``).  The record is then the last revolution integrated.  The recorded
+    values of the block's speeds are gathered, speed by speed in lockstep, in a tile of :data:`TILE` recorded steps
+    and written out a tile at a time (:func:`_flush`): a row of the outputs is a speed, so a value written at every
+    step, speed after speed, would touch as many memory pages as the block has speeds (these scattered writes took a
+    third of a one-mass sweep).
 
     Parameters
     ----------
@@ -198,16 +203,24 @@ def integrate_block(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_p
     uni : ndarray (E,) of bool
         Unilateral flag.
     closing : int
-        A unilateral element whose closing is located inside the step (the valve seat; -1: none): a speed whose
-        element closes during a step redoes that step in two, to the closing and from it (:func:`_split_step`).
-    rec_nodes, rec_elems : ndarray of int64
-        Nodes whose position, velocity and acceleration, and elements whose force, are recorded.
+        The valve seat element, whose force is recorded and whose closing is located inside the step: a speed whose
+        seat closes during a step redoes that step in two, to the closing and from it (:func:`_split_step`).
+    follower : int
+        The node on the cam whose position is recorded where it is not the valve (-1: the valve is on the cam).
+    springs : ndarray of int64
+        The spring elements on the valve; minus the sum of their forces is the recorded spring force.
+    rocker_ratio : float
+        k: the cam contact's recorded force is k times its force at the valve (the force at the cam).
     clash_gap : ndarray (E,)
         Closing distance of a coil element to coil contact [m] (0: not monitored).
     surge_ref : int
         Node of the valve; ``surge_w`` (n,) the quasi-static share of its motion for each coil node (0: none).
-    out_x, out_v, out_a : ndarray (S, len(rec_nodes), steps_per_rev)
-    out_f : ndarray (S, len(rec_elems), steps_per_rev)
+    out_lift, out_vel, out_acc : ndarray (S, steps_per_rev)
+        The valve's position [m], velocity [m/s] and acceleration [m/s^2] over the recorded revolution.
+    out_contact, out_seat, out_spring : ndarray (S, steps_per_rev)
+        The cam contact's force at the cam, the seat's force and the springs' force on the valve [N].
+    out_follower : ndarray (S, steps_per_rev)
+        The position of the node ``follower`` [m] (untouched without one: it may then have no rows).
     out_clash : ndarray (S, E)
         Smallest coil-contact margin [m] over the recorded revolution (inf where not monitored).
     out_surge : ndarray (S, n)
@@ -239,14 +252,21 @@ def integrate_block(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_p
     x = np.zeros((rows, bsize))
     v = np.zeros((rows, bsize))
     x0, v0 = np.zeros((n, bsize)), np.zeros((n, bsize))
-    xb, vb = np.zeros((rows, bsize)), np.zeros((rows, bsize))
+    xn, vn = np.zeros((rows, bsize)), np.zeros((rows, bsize))
     xs, vs = np.zeros((rows, bsize)), np.zeros((rows, bsize))
     kx, acc = np.zeros((4, rows, bsize)), np.zeros((4, rows, bsize))
     force, scratch = np.zeros((ne, bsize)), np.zeros((ne, bsize))
     cam_x, cam_v = np.zeros(4), np.zeros((4, bsize))
     om, dt = np.empty(bsize), np.empty(bsize)
     z, z0, off = np.zeros(bsize), np.zeros(bsize), np.zeros(bsize)
+    tile = np.empty((TILE, 8, bsize))
+    outs = (out_lift, out_vel, out_acc, out_contact, out_seat, out_spring)
     ratio = adjuster[0]
+    k_open, d_open, closed = k.copy(), d.copy(), uni.copy()          # the seat open and closed (_split_step)
+    if closing >= 0:
+        k_open[closing], d_open[closing], closed[closing] = 0.0, 0.0, False
+    one, k_one, f_one = np.zeros((4, rows, 1)), np.zeros((2, 4, rows, 1)), np.zeros((2, ne, 1))
+    h_one, cam_x_one, cam_v_one, off_one = np.zeros(1), np.zeros(4), np.zeros((4, 1)), np.zeros(1)
     monitored = False
     for e in range(ne):
         monitored |= clash_gap[e] > 0.0
@@ -295,24 +315,30 @@ def integrate_block(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_p
                 for s in range(bsize):
                     x[cam, s] = u0 + off[s]
                 _forces(x, v, im, ra, rb, k, d, gap, pre, uni, vnode, vtab, acc[0], force)
-            if closing >= 0:
-                for i in range(rows):
-                    for s in range(bsize):
-                        xb[i, s] = x[i, s]
-                        vb[i, s] = v[i, s]
             if step % n_sub == 0:
-                _record(step // n_sub, idx, x, v, acc[0], force, ra, rb, rec_nodes, rec_elems, clash_gap, surge_ref,
-                        surge_w, monitored, out_x, out_v, out_a, out_f, out_clash, out_surge)
-                if ratio > 0.0:
-                    for s in range(bsize):
-                        out_z[idx[s], step // n_sub] = z[s]
-            _rk4(x, v, dt, cam_x, cam_v, off, im, ra, rb, k, d, gap, pre, uni, vnode, vtab, xs, vs, kx, acc, scratch)
+                r = step // n_sub
+                _record(tile[r % TILE], x, v, acc[0], force, z, surge_ref, follower, contact, closing, springs,
+                        rocker_ratio, ratio > 0.0)
+                if r % TILE == TILE - 1 or r == steps_per_rev - 1:
+                    r0, count = r - r % TILE, r % TILE + 1
+                    for q in range(6):
+                        _flush(tile, q, outs[q], idx, r0, count)
+                    if follower >= 0:
+                        _flush(tile, 6, out_follower, idx, r0, count)
+                    if ratio > 0.0:
+                        _flush(tile, 7, out_z, idx, r0, count)
+                if monitored:
+                    _monitor(idx, x, ra, rb, clash_gap, surge_ref, surge_w, out_clash, out_surge)
+            _rk4(x, v, xn, vn, dt, cam_x, cam_v, off, im, ra, rb, k, d, gap, pre, uni, vnode, vtab, xs, vs, kx, acc,
+                 scratch)
+            x, v, xn, vn = xn, vn, x, v             # the step's start stays in xn, vn for a split step
             if closing >= 0:
                 ia, ib, ge = ra[closing], rb[closing], gap[closing]
                 for s in range(bsize):
-                    if xb[ia, s] - xb[ib, s] - ge <= 0.0 and x[ia, s] - x[ib, s] - ge > 0.0:
-                        _split_step(s, xb, vb, acc[0], x, v, dt[s], om[s], dtheta / n_sub, u0, d0, u2, d2, off[s],
-                                    closing, im, ra, rb, k, d, gap, pre, uni, vnode, vtab)
+                    if xn[ia, s] - xn[ib, s] - ge <= 0.0 and x[ia, s] - x[ib, s] - ge > 0.0:
+                        _split_step(s, xn, vn, acc[0], x, v, dt[s], om[s], dtheta / n_sub, u0, d0, u2, d2, off[s],
+                                    closing, im, ra, rb, k_open, d_open, k, d, gap, pre, uni, closed, vnode, vtab, one,
+                                    k_one, f_one, h_one, cam_x_one, cam_v_one, off_one)
             j0 = j2
         done = True
         for s in range(bsize):
@@ -330,8 +356,8 @@ def integrate_block(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_p
 
 
 @njit(cache=True, nogil=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
-def _split_step(s, xb, vb, acc, x, v, dt, om, step_angle, u0, d0, u2, d2, shift, e, im, ra, rb, k, d, gap, pre, uni,
-                vnode, vtab):
+def _split_step(s, xb, vb, acc, x, v, dt, om, step_angle, u0, d0, u2, d2, shift, e, im, ra, rb, k_open, d_open, k, d,
+                gap, pre, uni, closed, vnode, vtab, one, k_one, f_one, h, cam_x, cam_v, off):
     """Redo the step of speed ``s`` in which element ``e`` closed: RK4 from the start (``xb``, ``vb``, acceleration
     ``acc``) to the closing, located by the Taylor series of the element's gap, then RK4 from it to the step's end;
     the result replaces column ``s`` of ``x``, ``v``.  A contact law that switches inside a step (the seat's damping
@@ -342,7 +368,10 @@ def _split_step(s, xb, vb, acc, x, v, dt, om, step_angle, u0, d0, u2, d2, shift,
     stage alone, an error of h C v / (6 M) in the velocity (the built-in example's valve rebounded from its seat 2 %
     slow and bounced 7-11 % low).  The cam runs on the cubic Hermite of its samples ``u0``, ``u2`` [m] and slopes
     ``d0``, ``d2`` [m/rad] at both ends of the step (``step_angle`` [rad]), shifted by the lash adjuster's extension
-    ``shift`` [m]; both parts are :func:`_rk4` steps of a block of one speed."""
+    ``shift`` [m]; both parts are :func:`_rk4` steps of a block of one speed.  ``k_open``, ``d_open`` are the element
+    stiffnesses and dampings with element ``e``'s 0 and ``closed`` the unilateral flags with ``e``'s False; ``one``
+    (4, rows, 1), ``k_one`` (2, 4, rows, 1), ``f_one`` (2, E, 1), ``h`` (1,), ``cam_x`` (4,), ``cam_v`` (4, 1) and
+    ``off`` (1,) are work arrays (the block's, made once), the ground row of ``one`` zero."""
     rows = xb.shape[0]
     ia, ib = ra[e], rb[e]
     g0 = xb[ia, s] - xb[ib, s] - gap[e]
@@ -354,16 +383,12 @@ def _split_step(s, xb, vb, acc, x, v, dt, om, step_angle, u0, d0, u2, d2, shift,
         root = -2.0 * g0 / (g1 + np.sqrt(disc))          # g0 + g1 t + g2 t^2 / 2 = 0, the root nearest -g0 / g1
         if 0.0 < root < dt:
             tau = root
-    ne = ra.size
-    xl, vl, xs, vs = np.zeros((rows, 1)), np.zeros((rows, 1)), np.zeros((rows, 1)), np.zeros((rows, 1))
-    kx, kv = np.zeros((4, rows, 1)), np.zeros((4, rows, 1))
-    force, scratch = np.zeros((ne, 1)), np.zeros((ne, 1))
-    h, cam_x, cam_v, off = np.zeros(1), np.zeros(4), np.zeros((4, 1)), np.full(1, shift)
+    xl, vl, xs, vs = one[0], one[1], one[2], one[3]
+    kx, kv, force, scratch = k_one[0], k_one[1], f_one[0], f_one[1]
+    off[0] = shift
     for i in range(rows):
         xl[i, 0] = xb[i, s]
         vl[i, 0] = vb[i, s]
-    k_open, d_open, closed = k.copy(), d.copy(), uni.copy()
-    k_open[e], d_open[e], closed[e] = 0.0, 0.0, False
     for part in range(2):
         ke, de, law = (k_open, d_open, uni) if part == 0 else (k, d, closed)
         fa, fb = (0.0, tau / dt) if part == 0 else (tau / dt, 1.0)
@@ -379,7 +404,8 @@ def _split_step(s, xb, vb, acc, x, v, dt, om, step_angle, u0, d0, u2, d2, shift,
         xl[rows - 1, 0] = cam_x[0] + shift
         vl[rows - 1, 0] = cam_v[0, 0]
         _forces(xl, vl, im, ra, rb, ke, de, gap, pre, law, vnode, vtab, kv[0], force)
-        _rk4(xl, vl, h, cam_x, cam_v, off, im, ra, rb, ke, de, gap, pre, law, vnode, vtab, xs, vs, kx, kv, scratch)
+        _rk4(xl, vl, xl, vl, h, cam_x, cam_v, off, im, ra, rb, ke, de, gap, pre, law, vnode, vtab, xs, vs, kx, kv,
+             scratch)
     for i in range(rows - 2):
         x[i, s] = xl[i, 0]
         v[i, s] = vl[i, 0]
@@ -423,23 +449,52 @@ def _adjust(z, off, x, force, cam, b, stiffness, gap, adjuster, dt):
         off[s] = ratio * z[s]
 
 
+TILE = 8
+"""Recorded steps gathered before they are written out (:func:`integrate_block`): eight values of a speed fill a
+64-byte cache line of its output row."""
+
+
 @njit(cache=True, nogil=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
-def _record(r, idx, x, v, acc, force, ra, rb, rec_nodes, rec_elems, clash_gap, surge_ref, surge_w, monitored,
-            out_x, out_v, out_a, out_f, out_clash, out_surge):
-    """Write the recorded angle r of every speed of a block; update its coil clash and surge extremes where the
-    train has coils (``monitored``: a clash gap or a surge weight; the loops that find none cost a tenth of a one-mass
-    sweep)."""
-    bsize = idx.size
+def _record(row, x, v, acc, force, z, valve, follower, contact, seat, springs, rocker_ratio, adjusted):
+    """Gather the recorded values of every speed of a block at one angle into ``row`` (8, B): the valve's position,
+    velocity and acceleration, the contact's force times ``rocker_ratio``, the seat's force, minus the sum of the
+    ``springs``' forces, the ``follower``'s position (where it is a node) and the plunger extension ``z`` (where
+    ``adjusted``)."""
+    bsize = x.shape[1]
     for s in range(bsize):
+        row[0, s] = x[valve, s]
+        row[1, s] = v[valve, s]
+        row[2, s] = acc[valve, s]
+        row[3, s] = rocker_ratio * force[contact, s]
+        row[4, s] = force[seat, s]
+    for s in range(bsize):
+        total = force[springs[0], s]
+        for j in range(1, springs.size):
+            total += force[springs[j], s]
+        row[5, s] = -total
+    if follower >= 0:
+        for s in range(bsize):
+            row[6, s] = x[follower, s]
+    if adjusted:
+        for s in range(bsize):
+            row[7, s] = z[s]
+
+
+@njit(cache=True, nogil=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+def _flush(tile, q, out, idx, r0, count):
+    """Write the value ``q`` of the first ``count`` recorded angles of a ``tile`` (TILE, 8, B) into the rows ``idx``
+    of ``out`` (S, steps), from the angle ``r0`` on."""
+    for s in range(idx.size):
         g = idx[s]
-        for q in range(rec_nodes.size):
-            out_x[g, q, r] = x[rec_nodes[q], s]
-            out_v[g, q, r] = v[rec_nodes[q], s]
-            out_a[g, q, r] = acc[rec_nodes[q], s]
-        for q in range(rec_elems.size):
-            out_f[g, q, r] = force[rec_elems[q], s]
-    if not monitored:
-        return
+        for t in range(count):
+            out[g, r0 + t] = tile[t, q, s]
+
+
+@njit(cache=True, nogil=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+def _monitor(idx, x, ra, rb, clash_gap, surge_ref, surge_w, out_clash, out_surge):
+    """Update the coil clash and surge extremes of every speed of a block at a recorded angle (only where the train
+    has coils: the loops that find none cost a tenth of a one-mass sweep)."""
+    bsize = idx.size
     for e in range(ra.size):
         if clash_gap[e] > 0.0:
             xa, xb = x[ra[e]], x[rb[e]]

@@ -749,8 +749,9 @@ def sweep_size(network, cam_speeds, revolutions, step_deg) -> tuple[int, int]:
     """Work and memory of a sweep before it runs: (integrator steps x elements, bytes of the recorded maps).
 
     The work counts every sub-step of every speed for ``revolutions`` (the cap: a speed that repeats stops
-    earlier) times the elements of the network; the memory is the recorded revolution of every speed (position,
-    velocity, acceleration and the forces of the contact, the seat and the springs, 8 bytes each).
+    earlier) times the elements of the network; the memory is the recorded revolution of every speed (the valve's
+    position, velocity and acceleration, the follower's position where it is another node, the forces of the
+    contact, the seat and the springs, 8 bytes each).
 
     >>> from .models import one_mass_train
     >>> sweep_size(one_mass_train(0.25, 15e6, 67.5e3, 400.0).network(), [300.0, 400.0], 3, 0.1)
@@ -759,7 +760,7 @@ def sweep_size(network, cam_speeds, revolutions, step_deg) -> tuple[int, int]:
     steps = int(round(360.0 / step_deg))
     n_sub = substeps(network.highest_frequency(), np.atleast_1d(np.asarray(cam_speeds, dtype=float)),
                      np.radians(step_deg))
-    recorded = 3 * len(recorded_nodes(network)) + 2 + len(network.spring_elements)
+    recorded = 5 + len(recorded_nodes(network))
     return (int(n_sub.sum()) * steps * int(revolutions) * network.a.size,
             n_sub.size * steps * recorded * 8)
 
@@ -820,10 +821,10 @@ def sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, progress=None, bo
     per_step = 2 * int(n_sub.max())
     theta, u, du = cam_excitation(law, net.rocker_ratio, steps, per_step)
     rec_nodes = recorded_nodes(net)
-    rec_elems = np.concatenate([[net.cam_element, net.seat_element], net.spring_elements]).astype(np.int64)
+    springs = np.asarray(net.spring_elements, dtype=np.int64)
     s_count, n_nodes, n_elems = speeds.size, net.mass.size, net.a.size
-    out_x, out_v, out_a = (np.empty((s_count, rec_nodes.size, steps)) for _ in range(3))
-    out_f = np.empty((s_count, rec_elems.size, steps))
+    lift, velocity, acceleration, contact, seat, spring = (np.empty((s_count, steps)) for _ in range(6))
+    follower = np.empty((s_count if rec_nodes.size > 1 else 0, steps))
     out_clash = np.empty((s_count, n_elems))
     out_surge = np.empty((s_count, n_nodes))
     out_revs = np.zeros(s_count, dtype=np.int64)
@@ -837,10 +838,11 @@ def sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, progress=None, bo
         idx = order[start[j]:start[j + 1]]
         integrate_block(idx, speeds, int(n_sub[idx[0]]), dtheta, u, du, per_step, steps, int(revolutions),
                         float(tolerance), float(rate), inv_mass, net.x_init, ra, rb, net.stiffness, net.damping,
-                        net.gap, net.preload, net.unilateral, int(net.seat_element), rec_nodes, rec_elems,
-                        net.clash_gap, int(net.valve), net.surge_weight, net.adjuster, int(net.cam_element),
-                        int(net.variable_node), net.variable_mass, out_x, out_v, out_a, out_f, out_clash, out_surge,
-                        out_revs, out_z)
+                        net.gap, net.preload, net.unilateral, int(net.seat_element), int(rec_nodes[-1]) if
+                        rec_nodes.size > 1 else -1, springs, float(net.rocker_ratio), net.clash_gap, int(net.valve),
+                        net.surge_weight, net.adjuster, int(net.cam_element), int(net.variable_node),
+                        net.variable_mass, lift, velocity, acceleration, contact, seat, spring, follower, out_clash,
+                        out_surge, out_revs, out_z)
         return idx.size
 
     _notify_compile()
@@ -858,11 +860,10 @@ def sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, progress=None, bo
                 if progress is not None:
                     progress(done, s_count)
     coils = net.surge_weight > 0.0
-    return SweepResult(speeds, theta[::per_step], u[::per_step] - net.lash, out_x[:, 0], out_v[:, 0], out_a[:, 0],
-                       net.rocker_ratio * out_f[:, 0], out_f[:, 1], -out_f[:, 2:].sum(axis=1),
-                       du[::per_step] / net.rocker_ratio, out_surge[:, coils], out_clash.min(axis=1), n_sub,
+    return SweepResult(speeds, theta[::per_step], u[::per_step] - net.lash, lift, velocity, acceleration, contact, seat,
+                       spring, du[::per_step] / net.rocker_ratio, out_surge[:, coils], out_clash.min(axis=1), n_sub,
                        np.where(out_revs > 0, out_revs, int(revolutions)), out_revs > 0, bounce_tolerance, out_z,
-                       out_x[:, 1] if rec_nodes.size > 1 else None)
+                       follower if rec_nodes.size > 1 else None)
 
 
 HEADLINE_STRIDE = 10
