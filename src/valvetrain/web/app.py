@@ -160,9 +160,27 @@ requestAnimationFrame(() => requestAnimationFrame(() => {
 """The page's probe: on the change of a stamp (the last change of a redraw), the time from the release that asked for
 it to the second animation frame after it came (the frame that shows it painted)."""
 
-PAUSE_JS = """
+VIEW_JS = """
+const view = (model) => {
+  const kept = window.vtViews || (window.vtViews = new Map());
+  let found = kept.get(model.id);
+  if (found == null || found.is_destroyed) {
+    found = Bokeh.index.find_one(model);
+    if (found != null) {
+      kept.set(model.id, found);
+    }
+  }
+  return found;
+};
+"""
+"""The start of the page's scripts that look up a model's view: ``view(model)``, kept once found.  Bokeh's
+``Bokeh.index.find_one`` walks every view of the page (some 700: the panel's inputs, the tables, the plots' renderers
+and tools) and was called about 20 times per redraw (the holds' plots, the handles' plots): 30 to 40 ms of the page's
+drawing of a release at a load of 7, a third of it idle."""
+
+PAUSE_JS = VIEW_JS + """
 if (!window[key]) {
-  window[key] = plots.map((p) => Bokeh.index.find_one(p)).filter((v) => v != null);
+  window[key] = plots.map(view).filter((v) => v != null);
   window[key].forEach((v) => v.pause());
 }
 """
@@ -195,7 +213,21 @@ the same text mostly, and the browser takes each setting for a change of the sty
 in them (each renderer reads its colours from the styles) works all the page's styles out again, one to three times
 per renderer, about 60 times in a redraw (two thirds of the page's drawing of a redraw)."""
 
-PAGE_JS = (Path(__file__).parent / "page.js").read_text(encoding="utf-8")
+TABS_JS = """
+plots.forEach((shown, i) => shown.forEach((p) => {
+  const held = i !== tabs.active;
+  if (p.hold_render !== held) {
+    p.setv({hold_render: held}, {sync: false});
+  }
+}));
+"""
+"""Run when the page is ready and when another tab of plots is chosen: the plots of the tabs not shown hold their
+painting (``hold_render``, set in the page alone), those of the tab shown paint their newest data.  Bokeh paints
+every plot of the tabs at each change of its data, shown or not (a tab hides its panel by its visibility, its plots
+stay laid out): the six plots of the curves' other three tabs were painted with the lift and the acceleration at
+every redraw of a drag.  (Not by pausing their views: Bokeh resumes a paused plot at each layout of it.)"""
+
+PAGE_JS = VIEW_JS + (Path(__file__).parent / "page.js").read_text(encoding="utf-8")
 """The page's handling of the handles, the keys and the edits kept across a reload (page.js)."""
 
 DOWNLOAD_JS = """
@@ -655,6 +687,10 @@ class Designer:
             args={"plots": {k: f[k] for k in self.handles}, "sources": self.handles, "limits": self.limits,
                   "options": self.options, "request": self.request, "saved": self.saved, "key": self.key},
             code=PAGE_JS))
+        tabs = CustomJS(args={"tabs": self.plot_tabs, "plots": [[p for p in panel.select({"type": figure})]
+                                                                 for panel in self.plot_tabs.tabs]}, code=TABS_JS)
+        self.doc.js_on_event("document_ready", tabs)
+        self.plot_tabs.js_on_change("active", tabs)
         for model in (*self.downloaded.values(), self.kinematic_stamp, self.checks_stamp, self.sweep_stamp, self.drawn, self.kinematic_hold,
                       self.sweep_hold, self.request, self.options, self.saved):
             self.doc.add_root(model)
