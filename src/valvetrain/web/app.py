@@ -10,9 +10,11 @@ the cam card.
 The handles are dragged by the page's own script (``page.js``): one to one with the pointer within their limits,
 which the selected handle shows; while the pointer moves, the server works out the kinematics of the handle's
 valve at its newest position (one request at a time) and the curves follow; the release draws them at once and
-keeps the design when its worker thread has designed it (springs, checks, breathing: an edit that can be undone),
-arrow keys nudge the selected handle, Ctrl-Z and Ctrl-Y undo and redo.  The speed sweep of a design kept runs in a
-worker thread and only the newest one is drawn (an older one is stopped at its next speed).
+keeps the design when its worker thread has designed it (springs, checks, breathing: an edit that can be undone;
+the spring plot is empty until then, the spring being the design's), arrow keys nudge the selected handle, Ctrl-Z
+and Ctrl-Y undo and redo.  The plots of the tabs not shown hold their painting until their tab is chosen.  The
+speed sweep of a design kept runs in a worker thread and only the newest one is drawn (an older one is stopped at
+its next speed).
 
 The page keeps its timings: ``window.vtTimes`` (the release of a drag, a key or an undo to the painted frame of its
 curves, ms), ``window.vtChecksTimes`` (to the painted frame of its checks, card and panel), ``window.vtSweepTimes`` (to the painted frame of the sweep panel), ``window.vtTimesArrived`` (to the
@@ -174,9 +176,9 @@ const view = (model) => {
 };
 """
 """The start of the page's scripts that look up a model's view: ``view(model)``, kept once found.  Bokeh's
-``Bokeh.index.find_one`` walks every view of the page (some 700: the panel's inputs, the tables, the plots' renderers
-and tools) and was called about 20 times per redraw (the holds' plots, the handles' plots): 30 to 40 ms of the page's
-drawing of a release at a load of 7, a third of it idle."""
+``Bokeh.index.find_one`` walks every view of the page (977 on the built-in example: the panel's inputs, the tables,
+the plots' renderers and tools) and was called about 20 times per redraw (the holds' plots, the handles' plots): 30
+to 40 ms of the page's drawing of a release at a load of 7."""
 
 PAUSE_JS = VIEW_JS + """
 if (!window[key]) {
