@@ -626,7 +626,7 @@ class Designer:
         self.figures["at_speed"] = p
         # the breathing: the volumetric efficiency (and the torque, fired) against the speed, redrawn with the checks
         self.breathing = {k: ColumnDataSource({"speed": [], "ve": [], "torque": []}, name=f"breathing-{k}")
-                          for k in ("curve", "conditions")}
+                          for k in ("curve", "conditions", "phased")}
         p = figure(tools=tools, name="plot-breathing", height=230, width=PLOT_WIDTH, x_range=Range1d(0, 1),
                    y_range=Range1d(0, 1))
         p.extra_y_ranges = {"torque": Range1d(0, 1)}
@@ -635,6 +635,11 @@ class Designer:
         p.line("speed", "torque", source=self.breathing["curve"], color="#ff7f0e", y_range_name="torque")
         p.scatter("speed", "torque", source=self.breathing["conditions"], color="#ff7f0e", size=8, marker="square",
                   y_range_name="torque")
+        # a cam phaser's best phase at each condition: the breathing there, hollow marks over the phase-0 points
+        p.scatter("speed", "ve", source=self.breathing["phased"], line_color="#1f77b4", fill_color=None, size=14,
+                  marker="diamond", line_width=2)
+        p.scatter("speed", "torque", source=self.breathing["phased"], line_color="#ff7f0e", fill_color=None, size=14,
+                  marker="diamond", line_width=2, y_range_name="torque")
         self.torque_axis = LinearAxis(y_range_name="torque", axis_label_text_color="#ff7f0e")
         p.add_layout(self.torque_axis, "right")
         self.breathing_status = Label(x=6, y=6, x_units="screen", y_units="screen", text="", name="breathing-status",
@@ -942,13 +947,22 @@ class Designer:
     def _breathing(self):
         """The breathing of the good design: the volumetric efficiency against the speed along [breathing.curve]
         (a line) and at each [[breathing.conditions]] (points), the indicated torque on the right axis where the
-        engine is fired; without [breathing], a line that says so."""
-        chapter = self.session.good["results"].get("breathing")
+        engine is fired; a cam phaser's (of the valve shown, else the first valve's) best phase at each condition
+        (hollow diamonds: the breathing there) and its advance in the label; without [breathing], a line that says
+        so."""
+        results = self.session.good["results"]
+        chapter = results.get("breathing")
+        phasers = results.get("phasers") or {}
+        phaser = phasers.get(self.valve) or next(iter(phasers.values()), None)
         t = WORDS[self.lang]
         self.breathing_status.text = "" if chapter else t["no_breathing"]
+        if chapter and phaser and phaser["best"]:
+            self.breathing_status.text = t["phased"].format(valve=phaser["valve"], best=", ".join(
+                t["phased_at"].format(advance=f"{b['advance_crank_deg']:.3g}", speed=f"{b['speed_rpm']:.0f}")
+                for b in phaser["best"]))
         fired = bool(chapter) and chapter["mode"] == "fired"
         for key, source in self.breathing.items():
-            records = (chapter or {}).get(key) or []
+            records = (((chapter or {}).get(key) if key != "phased" else (phaser or {}).get("best")) or [])
             _send(source, {"speed": _array([r["speed_rpm"] for r in records]),
                            "ve": _array([r["volumetric_efficiency"] for r in records]),
                            "torque": _array([r.get("torque_Nm") if fired else None for r in records])})
