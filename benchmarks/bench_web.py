@@ -17,11 +17,15 @@ machine's figures mean little: measure it idle).
 
 ``--baseline SRC`` serves the package from another tree too (e.g. ``/work/main/src``, the tree before a change) and
 drags its page and this tree's in turn, so that both are measured in the same minutes (a page without the live
-drag, issue 25's, is dragged as it was: one release, its probe from Bokeh's pan end).
+drag, issue 25's, is dragged as it was: one release, its probe from Bokeh's pan end).  Then each tree's page is
+dragged 3 more times with chromium's timeline recording the release: the processor time of the page's main thread
+from the release to the curves painted, the page's own work whatever the load (on a loaded machine the wall times
+are mostly the wait for a core).
 """
 
 from functools import partial
 import argparse
+import json
 import os
 import re
 import shutil
@@ -51,6 +55,23 @@ PIXELS = """() => {
 }"""
 
 COUNTS = "() => [(window.vtTimes || []).length, (window.vtSweepTimes || []).length]"
+
+TRACED = 3
+"""Drags per tree traced after the timed ones (chromium's timeline): the page's processor time of a release."""
+
+
+def renderer_cpu(trace, wall):
+    """The processor time [ms] of the page's main thread (its tasks' thread time in chromium's timeline ``trace``,
+    JSON bytes) from the pointerup to ``wall`` ms after it (the painted curves): what the page's drawing of a
+    release costs, loaded or not (its wall time on a loaded machine is mostly the wait for a core)."""
+    events = json.loads(trace)["traceEvents"]
+    names = {(e["pid"], e["tid"]): e["args"]["name"] for e in events
+             if e.get("ph") == "M" and e.get("name") == "thread_name"}
+    main = next(k for k, v in names.items() if v == "CrRendererMain")
+    start = next(e["ts"] for e in events if e.get("name") == "EventDispatch"
+                 and e.get("args", {}).get("data", {}).get("type") == "pointerup" and (e["pid"], e["tid"]) == main)
+    return sum(e.get("tdur", 0) for e in events if e.get("ph") == "X" and (e["pid"], e["tid"]) == main
+               and e["name"] == "ThreadControllerImpl::RunTask" and start <= e["ts"] <= start + 1e3 * wall) / 1e3
 
 
 def server_share(repeats=10):
@@ -93,8 +114,10 @@ def opened(browser, url):
     return page, live
 
 
-def drag(page, live, number):
-    """Drag the nose handle by about 1 mm towards 9.5 mm and wait for the redraw of the release and the sweep panel."""
+def drag(page, live, number, browser=None):
+    """Drag the nose handle by about 1 mm towards 9.5 mm and wait for the redraw of the release and the sweep panel;
+    with the ``browser``, the release traced (after the moves' redraws) and the page's processor time of it
+    returned (:func:`renderer_cpu`)."""
     x, y, lift, per_mm = page.evaluate(PIXELS)
     done = page.evaluate(COUNTS)
     step = (1 if lift < 9.5 else -1) * per_mm
@@ -103,13 +126,20 @@ def drag(page, live, number):
     if not live:                              # issue 25's page: 300 ms within 5 px was a press to Bokeh
         page.mouse.move(x, y - 6.0 * (1 if step > 0 else -1))
     page.mouse.move(x, y - step, steps=8 if live else 4)
+    if browser is not None:
+        page.wait_for_timeout(500)
+        browser.start_tracing(page=page, categories=["devtools.timeline", "toplevel"])
     page.mouse.up()
+    if browser is not None:
+        page.wait_for_function(f"() => (window.vtTimes || []).length > {done[0]}", timeout=60_000)
+        cpu = renderer_cpu(browser.stop_tracing(), page.evaluate("() => window.vtTimes.at(-1)"))
     try:
         page.wait_for_function(f"() => (window.vtTimes || []).length > {done[0]} && "
                                f"(window.vtSweepTimes || []).length > {done[1]}", timeout=60_000)
     except PlaywrightTimeout:
         sys.exit(f"no redraw within 60 s of drag {number}: (releases, sweeps) redrawn {done} before, "
                  f"{page.evaluate(COUNTS)} after; the nose at {lift:.3f} mm, {per_mm:.1f} px/mm")
+    return cpu if browser is not None else None
 
 
 def median(values, unit="ms"):
@@ -147,6 +177,8 @@ def main(drags=20, baseline=None):
             times = {name: page.evaluate("() => [window.vtTimes, window.vtSweepTimes, window.vtTimesArrived, "
                                          "window.vtTimesServer, window.vtMoveTimes, window.vtChecksTimes]")
                      for name, (page, _) in pages.items()}
+            cpu = {name: [drag(page, live, drags + k + 1, browser) for k in range(TRACED)]
+                   for name, (page, live) in pages.items()}
             browser.close()
     finally:
         for proc, _ in servers.values():
@@ -156,6 +188,8 @@ def main(drags=20, baseline=None):
     print(f"drags: {drags} per tree, in a 1400 x 900 window")
     for name, t in times.items():
         print(summary(name, t))
+        print(f"  the page's processor time from the release to the curves painted (main thread, {TRACED} traced "
+              f"drags): {median(cpu[name])}")
     print(f"in this process: the valve's kinematics {kinematics_ms:.0f} ms, the design without the sweeps {design_ms:.0f} ms, the whole design with the sweeps "
           f"{sweep_ms:.0f} ms")
     print("load average (1, 5, 15 min) before: " + ", ".join(f"{v:.1f}" for v in load_before)

@@ -10,6 +10,7 @@ import tomllib
 
 import numpy as np
 import pytest
+import tomli_w
 
 pytest.importorskip("bokeh")
 
@@ -495,6 +496,23 @@ def test_the_breathing_panel_follows_an_edit_of_the_intake_closing():
     assert _designer().breathing_status.text == WORDS["en"]["no_breathing"]
 
 
+def test_the_breathing_panel_shows_a_cam_phasers_best_phase():
+    # issue 40: each variable-valve-actuation feature in the designer where it applies; a phaser on the intake over
+    # 0...20 crank deg (its map at 0 and 20, the best refined to 2 deg) of the motored example at 2000 and 6000 rpm
+    document = tomllib.loads(breathing_text(2))
+    document["valves"]["intake"]["phaser"] = {"advance_range_crank_deg": [0.0, 20.0], "step_crank_deg": 20.0,
+                                              "tolerance_crank_deg": 2.0}
+    d = _designer(tomli_w.dumps(document))
+    best = d.session.good["results"]["phasers"]["intake"]["best"]
+    phased, curve = d.breathing["phased"].data, d.breathing["curve"].data
+    assert list(phased["speed"]) == [2000.0, 6000.0] == [b["speed_rpm"] for b in best]
+    # the best phase maximises the volumetric efficiency (motored): at least phase 0's, the curve's at each speed
+    assert all(p >= c for p, c in zip(phased["ve"], curve["ve"], strict=True))
+    assert np.isnan(phased["torque"]).all()
+    assert d.breathing_status.text == WORDS["en"]["phased"].format(valve="intake", best=", ".join(
+        f"{b['advance_crank_deg']:.3g} at {b['speed_rpm']:.0f} rpm" for b in best))
+
+
 def _run_callbacks(d):
     """Run the callbacks the worker threads left for the server's loop (none runs without a server), each once."""
     while d.doc.session_callbacks:
@@ -505,8 +523,6 @@ def _run_callbacks(d):
 
 def test_an_edit_sweeps_each_valve_once(monkeypatch):
     # issue 40: the sweep of the valve shown (drawn first, alone) was swept again by the whole design after it
-    import tomli_w
-
     import valvetrain.design.valve as stages
     from valvetrain.specification import example_text
     from valvetrain.web.app import DESIGN_WORKERS, SWEEP_WORKERS

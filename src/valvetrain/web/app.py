@@ -10,9 +10,11 @@ the cam card.
 The handles are dragged by the page's own script (``page.js``): one to one with the pointer within their limits,
 which the selected handle shows; while the pointer moves, the server works out the kinematics of the handle's
 valve at its newest position (one request at a time) and the curves follow; the release draws them at once and
-keeps the design when its worker thread has designed it (springs, checks, breathing: an edit that can be undone),
-arrow keys nudge the selected handle, Ctrl-Z and Ctrl-Y undo and redo.  The speed sweep of a design kept runs in a
-worker thread and only the newest one is drawn (an older one is stopped at its next speed).
+keeps the design when its worker thread has designed it (springs, checks, breathing: an edit that can be undone;
+the spring plot is empty until then, the spring being the design's), arrow keys nudge the selected handle, Ctrl-Z
+and Ctrl-Y undo and redo.  The plots of the tabs not shown hold their painting until their tab is chosen.  The
+speed sweep of a design kept runs in a worker thread and only the newest one is drawn (an older one is stopped at
+its next speed).
 
 The page keeps its timings: ``window.vtTimes`` (the release of a drag, a key or an undo to the painted frame of its
 curves, ms), ``window.vtChecksTimes`` (to the painted frame of its checks, card and panel), ``window.vtSweepTimes`` (to the painted frame of the sweep panel), ``window.vtTimesArrived`` (to the
@@ -160,9 +162,27 @@ requestAnimationFrame(() => requestAnimationFrame(() => {
 """The page's probe: on the change of a stamp (the last change of a redraw), the time from the release that asked for
 it to the second animation frame after it came (the frame that shows it painted)."""
 
-PAUSE_JS = """
+VIEW_JS = """
+const view = (model) => {
+  const kept = window.vtViews || (window.vtViews = new Map());
+  let found = kept.get(model.id);
+  if (found == null || found.is_destroyed) {
+    found = Bokeh.index.find_one(model);
+    if (found != null) {
+      kept.set(model.id, found);
+    }
+  }
+  return found;
+};
+"""
+"""The start of the page's scripts that look up a model's view: ``view(model)``, kept once found.  Bokeh's
+``Bokeh.index.find_one`` walks every view of the page (977 on the built-in example: the panel's inputs, the tables,
+the plots' renderers and tools) and was called about 20 times per redraw (the holds' plots, the handles' plots): 30
+to 40 ms of the page's drawing of a release at a load of 7."""
+
+PAUSE_JS = VIEW_JS + """
 if (!window[key]) {
-  window[key] = plots.map((p) => Bokeh.index.find_one(p)).filter((v) => v != null);
+  window[key] = plots.map(view).filter((v) => v != null);
   window[key].forEach((v) => v.pause());
 }
 """
@@ -195,7 +215,21 @@ the same text mostly, and the browser takes each setting for a change of the sty
 in them (each renderer reads its colours from the styles) works all the page's styles out again, one to three times
 per renderer, about 60 times in a redraw (two thirds of the page's drawing of a redraw)."""
 
-PAGE_JS = (Path(__file__).parent / "page.js").read_text(encoding="utf-8")
+TABS_JS = """
+plots.forEach((shown, i) => shown.forEach((p) => {
+  const held = i !== tabs.active;
+  if (p.hold_render !== held) {
+    p.setv({hold_render: held}, {sync: false});
+  }
+}));
+"""
+"""Run when the page is ready and when another tab of plots is chosen: the plots of the tabs not shown hold their
+painting (``hold_render``, set in the page alone), those of the tab shown paint their newest data.  Bokeh paints
+every plot of the tabs at each change of its data, shown or not (a tab hides its panel by its visibility, its plots
+stay laid out): the six plots of the curves' other three tabs were painted with the lift and the acceleration at
+every redraw of a drag.  (Not by pausing their views: Bokeh resumes a paused plot at each layout of it.)"""
+
+PAGE_JS = VIEW_JS + (Path(__file__).parent / "page.js").read_text(encoding="utf-8")
 """The page's handling of the handles, the keys and the edits kept across a reload (page.js)."""
 
 DOWNLOAD_JS = """
@@ -592,7 +626,7 @@ class Designer:
         self.figures["at_speed"] = p
         # the breathing: the volumetric efficiency (and the torque, fired) against the speed, redrawn with the checks
         self.breathing = {k: ColumnDataSource({"speed": [], "ve": [], "torque": []}, name=f"breathing-{k}")
-                          for k in ("curve", "conditions")}
+                          for k in ("curve", "conditions", "phased")}
         p = figure(tools=tools, name="plot-breathing", height=230, width=PLOT_WIDTH, x_range=Range1d(0, 1),
                    y_range=Range1d(0, 1))
         p.extra_y_ranges = {"torque": Range1d(0, 1)}
@@ -601,6 +635,11 @@ class Designer:
         p.line("speed", "torque", source=self.breathing["curve"], color="#ff7f0e", y_range_name="torque")
         p.scatter("speed", "torque", source=self.breathing["conditions"], color="#ff7f0e", size=8, marker="square",
                   y_range_name="torque")
+        # a cam phaser's best phase at each condition: the breathing there, hollow marks over the phase-0 points
+        p.scatter("speed", "ve", source=self.breathing["phased"], line_color="#1f77b4", fill_color=None, size=14,
+                  marker="diamond", line_width=2)
+        p.scatter("speed", "torque", source=self.breathing["phased"], line_color="#ff7f0e", fill_color=None, size=14,
+                  marker="diamond", line_width=2, y_range_name="torque")
         self.torque_axis = LinearAxis(y_range_name="torque", axis_label_text_color="#ff7f0e")
         p.add_layout(self.torque_axis, "right")
         self.breathing_status = Label(x=6, y=6, x_units="screen", y_units="screen", text="", name="breathing-status",
@@ -655,6 +694,10 @@ class Designer:
             args={"plots": {k: f[k] for k in self.handles}, "sources": self.handles, "limits": self.limits,
                   "options": self.options, "request": self.request, "saved": self.saved, "key": self.key},
             code=PAGE_JS))
+        tabs = CustomJS(args={"tabs": self.plot_tabs, "plots": [[p for p in panel.select({"type": figure})]
+                                                                 for panel in self.plot_tabs.tabs]}, code=TABS_JS)
+        self.doc.js_on_event("document_ready", tabs)
+        self.plot_tabs.js_on_change("active", tabs)
         for model in (*self.downloaded.values(), self.kinematic_stamp, self.checks_stamp, self.sweep_stamp, self.drawn, self.kinematic_hold,
                       self.sweep_hold, self.request, self.options, self.saved):
             self.doc.add_root(model)
@@ -904,13 +947,22 @@ class Designer:
     def _breathing(self):
         """The breathing of the good design: the volumetric efficiency against the speed along [breathing.curve]
         (a line) and at each [[breathing.conditions]] (points), the indicated torque on the right axis where the
-        engine is fired; without [breathing], a line that says so."""
-        chapter = self.session.good["results"].get("breathing")
+        engine is fired; a cam phaser's (of the valve shown, else the first valve's) best phase at each condition
+        (hollow diamonds: the breathing there) and its advance in the label; without [breathing], a line that says
+        so."""
+        results = self.session.good["results"]
+        chapter = results.get("breathing")
+        phasers = results.get("phasers") or {}
+        phaser = phasers.get(self.valve) or next(iter(phasers.values()), None)
         t = WORDS[self.lang]
         self.breathing_status.text = "" if chapter else t["no_breathing"]
+        if chapter and phaser and phaser["best"]:
+            self.breathing_status.text = t["phased"].format(valve=phaser["valve"], best=", ".join(
+                t["phased_at"].format(advance=f"{b['advance_crank_deg']:.3g}", speed=f"{b['speed_rpm']:.0f}")
+                for b in phaser["best"]))
         fired = bool(chapter) and chapter["mode"] == "fired"
         for key, source in self.breathing.items():
-            records = (chapter or {}).get(key) or []
+            records = (((chapter or {}).get(key) if key != "phased" else (phaser or {}).get("best")) or [])
             _send(source, {"speed": _array([r["speed_rpm"] for r in records]),
                            "ve": _array([r["volumetric_efficiency"] for r in records]),
                            "torque": _array([r.get("torque_Nm") if fired else None for r in records])})

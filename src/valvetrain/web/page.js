@@ -1,6 +1,6 @@
 // The designer's page: the handles dragged one to one with the pointer within their limits, the arrow keys, undo and
 // redo, the probe of the redraw times and the edits kept across a reload.  Run once when the document is ready
-// (valvetrain.web.app.Designer: a CustomJS with the args named below).
+// (valvetrain.web.app.Designer: a CustomJS with the args named below, after app.VIEW_JS: view(model)).
 if (window.vt !== undefined) {
   return;
 }
@@ -15,11 +15,12 @@ const clamp = (v, lo, hi) => Math.min(Math.max(v, lo), hi);
 
 function frame(plot) {
   // the plot's view, its canvas's place on the page and its scales
-  const view = Bokeh.index.find_one(vt.plots[plot]);
-  if (view == null) {
+  const found = view(vt.plots[plot]);
+  if (found == null) {
     return null;
   }
-  return {view, rect: view.canvas_view.el.getBoundingClientRect(), xs: view.frame.x_scale, ys: view.frame.y_scale};
+  return {view: found, rect: found.canvas_view.el.getBoundingClientRect(), xs: found.frame.x_scale,
+          ys: found.frame.y_scale};
 }
 
 function pressed(event) {

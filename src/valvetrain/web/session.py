@@ -680,9 +680,11 @@ class Session:
     def sketch(self, document, name) -> dict:
         """The good design with valve ``name``'s curves and contour, its camshaft speed and flow figures those of
         ``document`` (:func:`valvetrain.api.kinematics`: its kinematic stages alone, a fraction of :meth:`design`'s
-        time), its spring's curves, checks and the other valves the good design's; ``{"ok": False, "errors"}``
-        where the kinematics do not design.  The kinematics of the last :data:`DESIGNS_KEPT` documents are kept:
-        a release where the pointer last moved is not sketched again."""
+        time), its checks and the other valves the good design's; ``{"ok": False, "errors"}`` where the kinematics
+        do not design.  The spring's series (its required force and chosen line, which the drive stage designs)
+        are those of ``document``'s design where it is kept (:meth:`design`), else empty: never another design's.
+        The kinematics of the last :data:`DESIGNS_KEPT` documents are kept: a release where the pointer last moved
+        is not sketched again."""
         key = (document_key(document), name)
         found = self.sketches.get(key)
         if found is None:
@@ -694,7 +696,9 @@ class Session:
         good = self.good
         valve = good["results"]["valves"][name]
         mine = found["results"]["valves"][name]
-        spring = {k: v for k, v in good["series"][name].items() if k.startswith(("spring_", "required_"))}
+        designed = self.designs.get(key[0])
+        own = designed["series"][name] if designed is not None and designed["ok"] else {}
+        spring = {k: own.get(k, []) for k in good["series"][name] if k.startswith(("spring_", "required_"))}
         return {**good, "series": {**good["series"], name: {**spring, **found["series"][name]}},
                 "results": {**good["results"], "valves": {**good["results"]["valves"], name: {
                     **valve, "cam": {**valve["cam"], **mine["cam"]}, "flow": {**valve["flow"], **mine["flow"]}}}}}
