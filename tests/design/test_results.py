@@ -97,7 +97,7 @@ def test_figure_data_are_plain_series(results):
     """The data of each separated figure are numbers and arrays, and its drawing takes them alone."""
     from matplotlib.figure import Figure
 
-    from valvetrain.report import plots
+    from valvetrain.report import engine_plots, plots
     from valvetrain.report.i18n import TEXT
 
     v = results.valves["intake"]
@@ -105,9 +105,9 @@ def test_figure_data_are_plain_series(results):
             (plots.spring_data(v), plots.draw_spring), (plots.strength_speed_data(v), plots.draw_strength_speed),
             (plots.timing_data(results.valves), plots.draw_timing), (plots.contour_data(v), plots.draw_contour),
             (plots.curvature_data(v), plots.draw_curvature),
-            (plots.crank_forces_data(results.crank), plots.draw_crank_forces),
-            (plots.crank_torque_data(results.crank), plots.draw_crank_torque),
-            (plots.crank_pin_data(results.crank), plots.draw_crank_pin)]
+            (engine_plots.crank_forces_data(results.crank), engine_plots.draw_crank_forces),
+            (engine_plots.crank_torque_data(results.crank), engine_plots.draw_crank_torque),
+            (engine_plots.crank_pin_data(results.crank), engine_plots.draw_crank_pin)]
     for data, draw in made:
         assert plain(data), draw.__name__
         assert isinstance(draw(data, TEXT["en"]), Figure)

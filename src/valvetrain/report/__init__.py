@@ -4,8 +4,8 @@ The plots import matplotlib (a third of a second): :func:`write_plots` is import
 no figure does without it.
 
 * :mod:`.plots`: a figure is its data and its drawing (``X_data``, ``draw_X``) on ``matplotlib.figure.Figure``, the
-  Russian ones with a decimal comma on their ticks; the main ones by default (``MAIN_FIGURES``: one a stage), every
-  one on request;
+  Russian ones with a decimal comma on their ticks (:mod:`.figure`, what every figure shares); the main ones by
+  default (``MAIN_FIGURES``: one a stage), every one on request; the engine chapters' figures in :mod:`.engine_plots`;
 * :mod:`.drawing`: a run's figures drawn in two processes (Linux) forked before the design, importing matplotlib and
   ezdxf meanwhile, each reading the results from its own pipe and taking the figures one at a time from a shared
   counter, while :mod:`valvetrain.export` writes the rest and renders the report;
