@@ -26,11 +26,12 @@ from ..tables import lift_table_columns
 from ..bibliography import WORKS, corrections_notes
 from ..units import to_display
 from ..locale import catalogue, verdict
-from .i18n import SYMBOLS, TEXT
+from .i18n import TEXT
 from .numbers import number, percent
 from .russian import russian_citations, russian_typography
 from .typography import typography
 from .worked import crank_lines, flow_lines, law_lines, spring_lines, strength_lines, time_area_lines
+from .symbols import SYMBOLS
 from .names import has_name, label, link_names, quantity_text, translate, unevaluated_text, unit_text, value_text
 from ..locale.wording import diagnosis_text, fit_reason
 
