@@ -2,7 +2,7 @@
 
 import re
 
-from valvetrain.report.symbols import SYMBOLS
+from valvetrain.report.symbols import SYMBOLS, symbol_legend
 
 
 def test_every_symbol_has_its_meaning_in_english_and_russian():
@@ -12,3 +12,13 @@ def test_every_symbol_has_its_meaning_in_english_and_russian():
     for key, (_, en, ru) in SYMBOLS.items():
         assert en and ru, key
         assert ru == en or re.search("[а-яА-Я]", ru), key       # the same formula in both (lambda: R/L) or Russian
+
+
+def test_the_legend_explains_each_symbol_once():
+    """Every symbol is explained where it is first used: a second legend of it says nothing."""
+    legend = symbol_legend("ru")
+    first = legend("D", "S")
+    assert first.startswith('<p class="legend">') and SYMBOLS["D"][2] in first and SYMBOLS["S"][2] in first
+    assert legend("D") == ""
+    second = legend("D", "n")
+    assert SYMBOLS["n"][2] in second and SYMBOLS["D"][2] not in second

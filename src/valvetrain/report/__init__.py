@@ -10,9 +10,9 @@ no figure does without it.
   ezdxf meanwhile, each reading the results from its own pipe and taking the figures one at a time from a shared
   counter, while :mod:`valvetrain.export` writes the rest and renders the report;
 * :mod:`.html`: the report; it numbers the citations in the order of their first use (``numbered_citations``) and
-  puts every check in its chapter (``chapter_checks``); :mod:`.i18n` its texts (the further stages' chapters
-  in :mod:`.stage_text`, the symbols in :mod:`.symbols`), :mod:`.names` the names of keys and
-  values (the checks' names come from :mod:`valvetrain.locale`);
+  puts every check in its chapter (:mod:`.check_rows`: ``chapter_checks``, a check's row); :mod:`.i18n` its texts
+  (the further stages' chapters in :mod:`.stage_text`, the symbols in :mod:`.symbols`), :mod:`.names` the names of
+  keys and values (the checks' names come from :mod:`valvetrain.locale`);
 * :mod:`.typography` (a symbol's index as a subscript, <= >=, powers of ten), :mod:`.russian` (the Russian report's
   locators, decimal comma, quotes), :mod:`.worked` (the worked substitution of the main formulas, each line
   re-evaluated from its printed numbers by the tests), :mod:`.numbers` (the one rule of printed numbers),

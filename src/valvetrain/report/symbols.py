@@ -1,4 +1,11 @@
-"""The symbols of the report and their meanings in English and Russian."""
+"""The symbols of the report and their meanings in English and Russian, and the legend that explains each where it
+is first used."""
+
+from collections.abc import Callable
+
+from markupsafe import Markup
+
+from .i18n import TEXT
 
 SYMBOLS = {
     "D": ("D", "bore, mm", "диаметр цилиндра, мм"), "S": ("S", "piston stroke, mm", "ход поршня, мм"),
@@ -97,3 +104,35 @@ SYMBOLS = {
     "Z": ("Z", "time-area of a port, mm²·s", "время-сечение окна, мм²·с"),
 }
 """Every symbol of the report: ``key: (HTML, English, Russian)`` -- explained where it is first used."""
+
+
+def symbol_legend(lang) -> Callable[..., str]:
+    """A Jinja function ``legend(*symbols)``: the symbols not yet explained in this report, each with its meaning
+    and unit (every symbol is explained where it is first used)."""
+    seen = set()
+
+    def legend(*keys):
+        new = [k for k in keys if k not in seen]
+        seen.update(new)
+        if not new:
+            return ""
+        items = Markup("; ").join(Markup("{} — {}").format(Markup(SYMBOLS[k][0]), Markup(SYMBOLS[k][1 if lang == "en" else 2]))
+                                  for k in new)
+        return Markup('<p class="legend">{}: {}.</p>').format(TEXT[lang]["where"], items)
+    return legend
+
+
+INPUT_SYMBOLS = ("i", "dg", "phi_seat", "hv", "h0", "ik", "r0", "w1", "Phi123", "Kz")
+"""Symbols of the valve's input table."""
+
+WARNING_SYMBOLS = {
+    "V1": ("flow.throat_velocity",), "V2": ("flow.curtain_velocity",), "V3": ("flow.time_area_velocity",),
+    "vvp": ("flow.charge_velocity",), "aT": ("tappet_acceleration.max", "tappet_acceleration.min"),
+    "dg": ("flow.throat_to_bore", "flow.equivalent_throat_to_bore", "flow.lift_to_throat"),
+    "hv": ("flow.lift_to_throat", "cam.base_radius_to_lift", "hydraulic.max_lift", "hydraulic.residual_lift"),
+    "h0": ("valve.clearance",), "ik": ("drive.rocker_ratio",), "r0": ("cam.base_radius_to_lift",),
+    "rho": ("profile.undercut_flat", "profile.rho_min"), "Kz": ("spring.reserve",),
+    "Phi123": ("law.kurz.phi2_to_phi3", "law.kurz.negative_to_positive"), "w1": ("ramp.end_velocity",),
+    "lambda": ("engine.rod_ratio", "crank.rod_ratio"),
+}
+"""Symbols of the legend that the checks of these codes use."""
