@@ -23,7 +23,7 @@ from ..numerics import first_largest
 from ..units import to_display
 from ..layouts import finger_mass_change
 from .crank import firing_angles
-from .drive import contact_loads, event_load_maps
+from .drive_strength import contact_loads, event_load_maps
 from .lubrication import contact_map
 from .results import quantity, record
 
@@ -195,9 +195,9 @@ def lobe_set(name, valve, engine, design, firing) -> LobeSet:
     Notes
     -----
     T(theta) = P_T(theta) dh/dtheta (+ T_f): the cam force at the rated speed from the strength stage's load maps
-    (:func:`valvetrain.design.drive.event_load_maps`: the dynamics' simulated force where it ran), the friction torque
+    (:func:`valvetrain.design.drive_strength.event_load_maps`: the dynamics' simulated force where it ran), the friction torque
     from :func:`valvetrain.design.lubrication.contact_map` under the cam's normal force
-    (:func:`valvetrain.design.drive.contact_loads`) where the valve has a lubrication section.  For a finger the law
+    (:func:`valvetrain.design.drive_strength.contact_loads`) where the valve has a lubrication section.  For a finger the law
     is the valve's and P_T the force at the valve: P_T dv/dtheta is the torque of the cam's normal force N =
     P_T G / (L_r cos beta) about the cam centre (the virtual work of the linkage; Norton (2009)).  The train's inertia
     reduced to the camshaft J = (1/2 pi) int m_t(theta) h'^2 dtheta (its kinetic energy m_t (omega h')^2 / 2 averaged
@@ -227,7 +227,7 @@ def lobe_set(name, valve, engine, design, firing) -> LobeSet:
 def map_torque(valve, cam, friction, m, rated_speed) -> np.ndarray:
     """One lobe's drive torque at every speed of the load map ``m`` [N m], (S, n): P_T dh/dtheta, with the friction
     torque of :func:`valvetrain.design.lubrication.contact_map` where ``friction`` (the valve has a lubrication
-    section) under the cam's normal force (:func:`valvetrain.design.drive.contact_loads`); ``rated_speed`` [rad/s]
+    section) under the cam's normal force (:func:`valvetrain.design.drive_strength.contact_loads`); ``rated_speed`` [rad/s]
     turns the map's engine speeds into camshaft speeds (``cam.cam_speed`` at it)."""
     if friction:
         normal = contact_loads(cam, [m])[0].force

@@ -13,7 +13,7 @@ from ..bibliography import cite
 from ..checks import Check, check
 from ..dynamics.sweep import lift_event, sweep, sweep_size, zero_crossing
 from ..units import DEG, to_display
-from .drive import event_load_maps
+from .drive_strength import event_load_maps
 from .dynamics import MAX_SWEEP_WORK, adjuster_element, adjuster_load, build_train
 from .results import quantity
 

@@ -14,7 +14,7 @@ from ..numerics import first_largest
 from ..specification.messages import Problem, SpecError
 from ..strength import hertz_half_width
 from ..units import to_display
-from .drive import contact_loads, event_load_maps
+from .drive_strength import contact_loads, event_load_maps
 from .results import quantity
 
 STEEL_EFFUSIVITY = float(np.sqrt(46.6 * 7850.0 * 460.0))

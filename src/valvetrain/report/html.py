@@ -200,7 +200,7 @@ def _fit_reason(rec, lang):
 
 
 def _strength(st):
-    """The strength chapter of a valve from its :class:`~valvetrain.design.drive.StrengthResult`: the rows and the
+    """The strength chapter of a valve from its :class:`~valvetrain.design.drive_strength.StrengthResult`: the rows and the
     checks whose parts are not given (its checks are the chapter's, :func:`chapter_checks`)."""
     return {"rows": shown(st, nested=False), "not_checked": st.not_checked}
 
