@@ -10,7 +10,8 @@ import numpy as np
 
 from ..bibliography import WORKS, cited_in
 from ..laws.power_polynomial import ARTICLE_FULLNESS
-from ..synthesis.optimize import BINDING, START_SPRING, shown_objective
+from ..synthesis.objectives import shown_objective
+from ..synthesis.optimize import BINDING, START_SPRING
 from ..locale import check_text
 from .names import quantity_text, unevaluated_text, unit_text
 
