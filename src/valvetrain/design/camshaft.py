@@ -19,6 +19,7 @@ from scipy.interpolate import interp1d
 from .. import camshaft as shaft
 from ..bibliography import cite
 from ..checks import Check, check
+from ..locale import note
 from ..numerics import first_largest
 from ..units import to_display
 from ..layouts import finger_mass_change
@@ -381,7 +382,7 @@ def camshaft_checks(r, c, engine) -> list[Check]:
     most 1/6 of its tensile strength (Diamond Chain (n.d.)).
     """
     over = to_display(engine.over_speed_ratio * engine.rated_speed, "rpm")
-    held = "the drive end held" if c.drive_stiffness is None else "through the timing drive's stiffness"
+    held = "camshaft.twist_held" if c.drive_stiffness is None else "camshaft.twist_through_drive"
     t = r.response
     damping = (f"modal damping ratio {t.damping_ratio:g} ([camshaft] torsional_damping_ratio, an engineering "
                "assumption)")
@@ -391,19 +392,18 @@ def camshaft_checks(r, c, engine) -> list[Check]:
               severity="failure" if r.twist_max > TWIST_FAILURE else "warning",
               source=f"{cite('shigley2011', 'chapter 3 (torsion)')}; camshaft.max_twist_cam_deg (an engineering "
                      f"assumption; beyond {np.degrees(TWIST_FAILURE):g} cam deg a failure)",
-              note=f"{to_display(r.twist_crank, 'crank deg'):.3g} crank deg; quasi-static, {held}"),
+              note=note(held, twist_crank_deg=to_display(r.twist_crank, 'crank deg'))),
         check("camshaft.torsional_resonance", r.frequency_ratio, low=c.min_frequency_ratio, severity="info",
               source=f"{cite('denhartog1956')}; camshaft.min_frequency_ratio (an engineering assumption)",
-              note=f"first natural frequency {r.natural_frequencies[0]:.4g} Hz against order {max(r.significant_orders)} "
-                   f"at the over-speed {over:.0f} rpm; a resonance in the running range is graded by its response "
-                   "(camshaft.dynamic_timing_error, camshaft.dynamic_drive_force)"),
+              note=note("camshaft.first_resonance", frequency_Hz=r.natural_frequencies[0],
+                        order=max(r.significant_orders), speed_rpm=over)),
         check("camshaft.bending_deflection", r.deflection_max, high=c.max_deflection, unit="mm", severity="failure",
               source=f"{cite('vt_works', 'eq. (7.3)')}: 0.02-0.05 mm; {cite('shigley2011', 'table A-9')}",
-              note="each lobe alone on a simply supported span between its journals"),
+              note=note("camshaft.lobe_span")),
         check("camshaft.timing_drive_force", r.drive_force, high=c.drive_allowable_force_N, unit="N",
               severity="failure", source="camshaft.drive_allowable_force_N (the maker's allowable of the "
                                          f"{c.drive}{chain_source})",
-              note=f"peak torque {r.peak:.4g} N m at the pitch radius {to_display(c.drive_pitch_radius, 'mm'):g} mm"),
+              note=note("camshaft.peak_torque", torque_Nm=r.peak, radius_mm=to_display(c.drive_pitch_radius, 'mm'))),
         check("camshaft.dynamic_timing_error", t.fluctuation, high=t.allowable, unit="cam deg", severity="failure",
               source=f"{cite('chrysler2002')}: the cam sprocket's movement against the crankshaft accepted in service, "
                      f"camshaft.max_timing_play_mm = {to_display(c.max_timing_play, 'mm'):g} mm along the pitch "
@@ -415,7 +415,8 @@ def camshaft_checks(r, c, engine) -> list[Check]:
         check("camshaft.dynamic_drive_force", t.drive_force, high=c.drive_allowable_force_N, unit="N",
               severity="failure", source="camshaft.drive_allowable_force_N (the maker's allowable of the "
                                          f"{c.drive}{chain_source}); {cite('denhartog1956')}",
-              note=f"at {to_display(t.drive_force_speed, 'rpm'):.0f} rpm, steady response, {damping}"),
+              note=note("camshaft.steady_drive_force", speed_rpm=to_display(t.drive_force_speed, 'rpm'),
+                        damping=t.damping_ratio)),
     ]
 
 

@@ -9,10 +9,10 @@ import numpy as np
 
 from ..bibliography import WORKS
 from ..checks import describe_range
-from ..locale import catalogue
+from ..locale import catalogue, note_text
 from ..units import to_display
 from .i18n import TEXT
-from .names import label, quantity_text, unit_text
+from .names import label, quantity_text, translate, unit_text
 from .numbers import percent
 
 
@@ -114,6 +114,12 @@ def check_class(c) -> str:
         return "pass"
     level = {"failure": "fail", "warning": "warn"}.get(c.severity, "info")
     return f"{level} accepted" if c.accepted else level
+
+
+def check_note(c, lang) -> str:
+    """A check's note in ``lang``: rendered from its codes (:attr:`~valvetrain.checks.Check.note_parts`), else its
+    English text translated by its skeleton (:func:`~valvetrain.report.names.translate`)."""
+    return note_text(c.note_parts, lang) if c.note_parts else translate(c.note, lang)
 
 
 SHORT_FORMS = re.compile("|".join(re.escape(w.short) for w in WORKS.values()))

@@ -25,8 +25,8 @@ from ..tables import lift_table_columns
 from ..bibliography import WORKS, corrections_notes
 from ..units import to_display
 from ..locale import verdict
-from .check_rows import (chapter_checks, check_class, check_margin, check_name, check_range, check_verdict,
-                         marked_citations, not_checked)
+from .check_rows import (chapter_checks, check_class, check_margin, check_name, check_note, check_range,
+                         check_verdict, marked_citations, not_checked)
 from .i18n import TEXT
 from .numbers import number, percent
 from .russian import russian_citations, russian_typography
@@ -464,6 +464,7 @@ def render_report(results, plots, lang="en", folder=None) -> str:
     env.filters["margin"] = lambda c: check_margin(c, lang)
     env.filters["check_class"] = check_class
     env.filters["check_name"] = lambda c: check_name(c, lang)
+    env.filters["check_note"] = lambda c: check_note(c, lang)
     env.filters["cited"] = marked_citations
     env.globals["cell"] = lambda key, value: cell(key, value, lang)
     env.globals["legend"] = symbol_legend(lang)
