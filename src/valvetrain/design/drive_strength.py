@@ -16,6 +16,7 @@ import numpy as np
 
 from .. import flow, strength
 from ..checks import Check, check
+from ..locale import note
 from ..layouts import chain, finger_inertia
 from ..numerics import TIE_RTOL, first_largest
 from ..specification.si import si_name
@@ -306,10 +307,18 @@ def strength_stage(valve, gas, engine, cam, drive, dynamics=None) -> tuple[Stren
     return result, list(result.checks) + found + checks
 
 
-def _where(w):
-    """Where a worst value occurs, for a check's note."""
-    return (f"at {to_display(w.speed, 'rpm'):.0f} rpm, {to_display(w.angle, 'cam deg'):.4g} cam deg from the nose "
-            f"({w.kind} force)")
+WHERE = {"quasi-static": ("strength.where_quasi_static", "strength.side_quasi_static",
+                          "strength.edge_quasi_static_hertz", "strength.edge_quasi_static_no_width"),
+         "dynamic": ("strength.where_dynamic", "strength.side_dynamic", "strength.edge_dynamic_hertz",
+                     "strength.edge_dynamic_no_width")}
+"""The notes of a worst value's place by the kind of its force (:class:`LoadMap`): where it is, where with the pressure
+angle, the flat follower's contact offset there with and without the Hertz half-width (:mod:`valvetrain.locale`)."""
+
+
+def _where(w, which=0, **params):
+    """Where a worst value occurs, for a check's note (:data:`WHERE`'s note ``which`` of its force, with ``params``)."""
+    return note(WHERE[w.kind][which], speed_rpm=to_display(w.speed, "rpm"), cam_deg=to_display(w.angle, "cam deg"),
+                **params)
 
 
 def finger_loads(cam, maps) -> tuple[FingerLoads, Worst]:
@@ -335,9 +344,9 @@ def finger_bending(parts, loads, moment) -> tuple[FingerLoads, tuple[tuple[Check
         return loads, ((), (f"finger_bending: not checked, parts.{', parts.'.join(missing)} not given",))
     stress = strength.rectangle_bending_stress(moment.value, parts.finger_section_width, parts.finger_section_height)
     width, height = (to_display(x, "mm") for x in (parts.finger_section_width, parts.finger_section_height))
-    note = f"{_where(moment)}; M = {moment.value:.4g} N m, b x h = {width:g} x {height:g} mm"
+    said = _where(moment) + note("strength.finger_section", moment_Nm=moment.value, width_mm=width, height_mm=height)
     return (replace(loads, bending_stress_max=float(stress)),
-            ((strength.verdict("finger_bending", float(stress), note),), ()))
+            ((strength.verdict("finger_bending", float(stress), said),), ()))
 
 
 def _strength(valve, cam, theta, maps, p_open, valve_load):
@@ -357,9 +366,6 @@ def _strength(valve, cam, theta, maps, p_open, valve_load):
             notes.append(f"{name}: not checked, parts.{', parts.'.join(missing)} not given")
         return not missing
 
-    def joined(*texts):
-        return "; ".join(t for t in texts if t)
-
     e_contact = parts.contact_modulus
     width = stress = stresses = None
     if need(["camshaft_diameter_mm", "camshaft_span_mm", "cam_to_bearing_mm"], "camshaft_deflection"):
@@ -367,8 +373,8 @@ def _strength(valve, cam, theta, maps, p_open, valve_load):
         f = strength.camshaft_deflection(p_max, l1, parts.camshaft_span - l1, parts.camshaft_diameter,
                                          parts.camshaft_bore, parts.camshaft_modulus,
                                          parts.camshaft_deflection_coefficient)
-        verdicts.append(strength.verdict("camshaft_deflection", f, joined(
-            at_load, f"coefficient {parts.camshaft_deflection_coefficient:.4g} (corrections note 20: not 0.8)")))
+        verdicts.append(strength.verdict("camshaft_deflection", f, at_load + note(
+            "strength.deflection_coefficient", coefficient=parts.camshaft_deflection_coefficient)))
     if need(["cam_width_mm"], "cam_contact_stress"):
         # Shang Hanji (1988), eqs. (2.6)-(2.7): the profile's radius of curvature along the open event
         if not np.all(follower.line_contact(cam.law.curvature(theta, cam.heel_radius, follower))):
@@ -378,22 +384,20 @@ def _strength(valve, cam, theta, maps, p_open, valve_load):
             stresses = [follower.contact_stress(m.force, cam.law.curvature(m.theta, cam.heel_radius, follower), width,
                                                 e_contact) for m in maps]
             stress = _worst(maps, stresses)
-            verdicts.append(strength.verdict("cam_contact_stress", stress.value, joined(
-                _where(stress), "along the profile with the instantaneous force and radius (Shang Hanji (1988), "
-                "eq. 2.5)")))
+            verdicts.append(strength.verdict("cam_contact_stress", stress.value,
+                                             _where(stress) + note("strength.along_profile")))
     if drive.tappet and not follower.rolling and \
             need(["tappet_diameter_mm", "tappet_guide_length_mm"], "tappet_side_pressure"):
         b = float(np.max(np.abs(cam.law.derivatives(theta)[1])))
         q = strength.tappet_side_pressure(p_max, b, parts.tappet_diameter, parts.tappet_guide_length)
-        verdicts.append(strength.verdict("tappet_side_pressure", q, joined(
-            at_load, f"offset b = {to_display(b, 'mm'):.4g} mm = max dh/dphi (7.7)")))
+        verdicts.append(strength.verdict("tappet_side_pressure", q, at_load + note(
+            "strength.tappet_offset", offset_mm=to_display(b, "mm"))))
     if drive.pushrod:
         if need(["pushrod_length_mm", "pushrod_diameter_mm"], "pushrod_buckling_margin"):
             inertia = strength.second_moment(parts.pushrod_diameter, parts.pushrod_bore)
             p_cr = strength.euler_load(parts.pushrod_modulus, inertia, parts.pushrod_length)
-            verdicts.append(strength.verdict("pushrod_buckling_margin", p_cr / p_max, joined(
-                at_load, f"Euler load {p_cr:.5g} N; E = {to_display(parts.pushrod_modulus, 'MPa'):g} MPa "
-                "(corrections note 21)")))
+            verdicts.append(strength.verdict("pushrod_buckling_margin", p_cr / p_max, at_load + note(
+                "strength.euler_load", load_N=p_cr, modulus_MPa=to_display(parts.pushrod_modulus, "MPa"))))
         if need(["ball_radius_mm", "socket_radius_mm"], "ball_socket_stress"):
             verdicts.append(strength.verdict("ball_socket_stress", strength.sphere_socket_stress(
                 p_max, e_contact, parts.ball_radius, parts.socket_radius), at_load))
@@ -406,9 +410,8 @@ def _strength(valve, cam, theta, maps, p_open, valve_load):
         if need(["rocker_shaft_span_mm", "rocker_shaft_diameter_mm", "rocker_width_mm"], "rocker_shaft"):
             st = strength.rocker_shaft_stresses(p_max, parts.rocker_shaft_span, parts.rocker_width,
                                                 parts.rocker_shaft_diameter, parts.rocker_shaft_bore)
-            verdicts.append(strength.verdict("rocker_shaft_bending", st["bending"], joined(
-                at_load, f"built-in beam (7.15, corrections note 48); simply supported: "
-                f"{to_display(st['bending_simply_supported'], 'MPa'):.4g} MPa; load P_T max (corrections note 25)")))
+            verdicts.append(strength.verdict("rocker_shaft_bending", st["bending"], at_load + note(
+                "strength.rocker_shaft_beam", simply_supported_MPa=to_display(st["bending_simply_supported"], "MPa"))))
             verdicts.append(strength.verdict("rocker_shaft_shear", st["shear"], at_load))
             verdicts.append(strength.verdict("rocker_shaft_bearing", st["bearing"], at_load))
     side, found = None, []
@@ -455,11 +458,10 @@ def _exhaust_gas_force(valve, gas):
     head = valve.parts.head_diameter
     diameter = valve.throat_diameter if head is None else head
     force = float(flow.circle_area(diameter)) * max(gas.exhaust_opening_pressure - gas.exhaust_back_pressure, 0.0)
-    note = (f"on the head diameter d_n = {to_display(head, 'mm'):g} mm" if head is not None else
-            "parts.head_diameter_mm not given: computed on the throat diameter "
-            f"{to_display(diameter, 'mm'):g} mm, a lower bound (the head is larger than the throat)")
+    said = (note("strength.head_diameter", head_mm=to_display(head, "mm")) if head is not None else
+            note("strength.throat_for_head", throat_mm=to_display(diameter, "mm")))
     return force, check("gas_force.exhaust_opening", force, unit="N", severity="info",
-                        source=WORKS_7_1, note=note)
+                        source=WORKS_7_1, note=said)
 
 
 def _edge_loading(parts, drive, cam, follower, maps, width, notes):
@@ -471,9 +473,9 @@ def _edge_loading(parts, drive, cam, follower, maps, width, notes):
     ``tappet_diameter_mm`` (a bucket tappet's face is its diameter).
     """
     if parts.tappet_face_diameter is not None:
-        face, key = parts.tappet_face_diameter, "tappet_face_diameter_mm"
+        face, key = parts.tappet_face_diameter, "strength.face_given"
     elif drive.tappet and parts.tappet_diameter is not None:
-        face, key = parts.tappet_diameter, "tappet_diameter_mm (no tappet_face_diameter_mm: a bucket tappet)"
+        face, key = parts.tappet_diameter, "strength.face_of_bucket"
     else:
         notes.append("flat_follower_edge_loading: not checked, parts.tappet_face_diameter_mm not given")
         return []
@@ -489,12 +491,11 @@ def _edge_loading(parts, drive, cam, follower, maps, width, notes):
 
     w = _worst(maps, [reach(m) for m in maps])
     offset = abs(float(cam.law.derivatives(np.array([w.angle]))[1, 0]))
-    band = ("with the Hertz half-width " f"{to_display(w.value - offset, 'mm'):.3g} mm" if width is not None
-            else "without the Hertz half-width (parts.cam_width_mm not given)")
+    band = (_where(w, 2, offset_mm=to_display(offset, "mm"), half_width_mm=to_display(w.value - offset, "mm"))
+            if width is not None else _where(w, 3, offset_mm=to_display(offset, "mm")))
     return [check("follower.edge_loading", w.value, high=face / 2.0, unit="mm",
                   severity="failure", source=f"{SHANG_2_1}, eq. (2.15); {NORTON} (flat-faced follower face width)",
-                  note=f"contact offset |dh/dphi| {to_display(offset, 'mm'):.4g} mm {_where(w)} {band}; face radius "
-                       f"from parts.{key}")]
+                  note=band + note(key))]
 
 
 def _roller_side_force(cam, follower, maps, drive):
@@ -507,11 +508,11 @@ def _roller_side_force(cam, follower, maps, drive):
     w = _worst(maps, [side(m) for m in maps])
     h, dh = cam.law.derivatives(np.array([w.angle]))[:2]
     beta = abs(float(follower.pressure_angle(cam.heel_radius, h, dh)[0]))
-    carrier = "the tappet guide" if drive.tappet else "the rocker and its shaft"
+    carrier = "strength.carried_by_guide" if drive.tappet else "strength.carried_by_rocker"
     return w, check(
         "follower.roller_side_force", w.value, unit="N", severity="info",
         source=f"{NORTON} (pressure angle: side load F_n sin(alpha)); no source gives an allowable",
-        note=f"{_where(w)}, pressure angle {to_display(beta, 'deg'):.3g} deg; carried by {carrier}")
+        note=_where(w, 1, pressure_deg=to_display(beta, "deg")) + note(carrier))
 
 
 def strength_limit(c) -> tuple[str, float]:
