@@ -15,7 +15,7 @@ from valvetrain import checks, locale, strength
 from valvetrain.checks import apply_acceptances, check
 from valvetrain.design import run
 from valvetrain.design.valve import LAYOUT_BANDS
-from valvetrain.locale import LANGS, catalogue, code_of, codes, parameters
+from valvetrain.locale import LANGS, catalogue, code_of, codes, note, parameters
 from valvetrain.report.html import WARNING_SYMBOLS
 from valvetrain.report.names import quantity_text
 from valvetrain.specification import SpecError
@@ -234,7 +234,7 @@ def test_a_note_renders_its_numbers_by_the_rule_of_its_language():
     """The note of a check is its English text in the records, and the report renders its code in Russian with a
     decimal comma in each number (the same digits): the lubrication's worst film parameter at 7000 rpm and
     -12.345 cam deg (4 significant figures: -12.35)."""
-    from valvetrain.locale import note, note_text
+    from valvetrain.locale import note_text
     from valvetrain.report.check_rows import check_note
 
     parts = note("lubrication.worst_at", speed_rpm=7000.0, cam_deg=-12.345) + note("lubrication.zero_entrainment")
@@ -246,3 +246,17 @@ def test_a_note_renders_its_numbers_by_the_rule_of_its_language():
     assert check_note(replace(c, note_parts=()), "en") == c.note
     with pytest.raises(ValueError, match=r"'lubrication\.unknown' has no text in src/valvetrain/locale/en\.toml \[notes\]"):
         note("lubrication.unknown")
+
+
+def test_a_number_in_brackets_of_a_russian_note_has_its_decimal_comma():
+    """The Russian report's page-wide decimal comma leaves a number right after "(" as it is (a locator of a source:
+    "(7.4)"), so a note's frequency printed "(326.8 Гц)" (pushrod-dynamics' camshaft resonances); a note rendered
+    from its code formats its numbers in Russian itself: "(326,8 Гц)"."""
+    from valvetrain.locale import note_text
+    from valvetrain.report.russian import russian_typography
+
+    parts = note("camshaft.first_resonance_met", order=8, mode=1, frequency_Hz=326.8, speed_rpm=4903.2, cam_deg=0.36,
+                 force_N=328.2)
+    assert russian_typography(f"<td>{note_text(parts, 'ru')}</td>") == (
+        "<td>резонансы: гармоника порядка 8 совпадает с формой 1 (326,8 Гц) при 4903 мин⁻¹: 0,36 град ПРВ, 328,2 Н</td>")
+    assert "(326.8 Hz)" in note_text(parts)

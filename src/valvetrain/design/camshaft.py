@@ -384,8 +384,6 @@ def camshaft_checks(r, c, engine) -> list[Check]:
     over = to_display(engine.over_speed_ratio * engine.rated_speed, "rpm")
     held = "camshaft.twist_held" if c.drive_stiffness is None else "camshaft.twist_through_drive"
     t = r.response
-    damping = (f"modal damping ratio {t.damping_ratio:g} ([camshaft] torsional_damping_ratio, an engineering "
-               "assumption)")
     chain_source = f"; {cite('diamondchain')}" if c.drive == "chain" else ""
     return [
         check("camshaft.twist_timing_error", r.twist_max, high=c.max_twist, unit="cam deg",
@@ -408,10 +406,9 @@ def camshaft_checks(r, c, engine) -> list[Check]:
               source=f"{cite('chrysler2002')}: the cam sprocket's movement against the crankshaft accepted in service, "
                      f"camshaft.max_timing_play_mm = {to_display(c.max_timing_play, 'mm'):g} mm along the pitch "
                      f"circle of radius {to_display(c.drive_pitch_radius, 'mm'):g} mm; {cite('denhartog1956')}",
-              note=f"largest less smallest lag of cylinder {t.fluctuation_cylinder}'s lobes over a revolution, at "
-                   f"{to_display(t.fluctuation_speed, 'rpm'):.0f} rpm, steady response over "
-                   f"{to_display(t.speed_range[0], 'rpm'):.0f}-{to_display(t.speed_range[1], 'rpm'):.0f} rpm, "
-                   f"{damping}; {resonance_note(t)}"),
+              note=note("camshaft.lag", cylinder=t.fluctuation_cylinder,
+                        speed_rpm=to_display(t.fluctuation_speed, "rpm"), low_rpm=to_display(t.speed_range[0], "rpm"), high_rpm=to_display(t.speed_range[1], "rpm"),
+                        damping=t.damping_ratio) + resonance_note(t)),
         check("camshaft.dynamic_drive_force", t.drive_force, high=c.drive_allowable_force_N, unit="N",
               severity="failure", source="camshaft.drive_allowable_force_N (the maker's allowable of the "
                                          f"{c.drive}{chain_source}); {cite('denhartog1956')}",
@@ -420,13 +417,14 @@ def camshaft_checks(r, c, engine) -> list[Check]:
     ]
 
 
-def resonance_note(t) -> str:
+def resonance_note(t) -> tuple:
     """The resonances of the running range with their figures, the largest timing fluctuations first (at most
     :data:`LISTED_RESONANCES`), or that there is none."""
     if not t.resonances:
-        return "no significant order meets a natural frequency in the running range"
-    listed = "; ".join(f"order {r.order} meets mode {r.mode} ({r.frequency:.4g} Hz) at {to_display(r.speed, 'rpm'):.0f} "
-                       f"rpm: {to_display(r.fluctuation, 'cam deg'):.3g} cam deg, {r.drive_force:.4g} N"
-                       for r in t.resonances[:LISTED_RESONANCES])
+        return note("camshaft.no_resonance")
+    listed = sum((note("camshaft.resonance" if k else "camshaft.first_resonance_met", order=r.order, mode=r.mode,
+                       frequency_Hz=r.frequency, speed_rpm=to_display(r.speed, "rpm"),
+                       cam_deg=to_display(r.fluctuation, "cam deg"), force_N=r.drive_force)
+                  for k, r in enumerate(t.resonances[:LISTED_RESONANCES])), ())
     more = len(t.resonances) - LISTED_RESONANCES
-    return f"resonances: {listed}" + (f"; {more} more in the results" if more > 0 else "")
+    return listed + (note("camshaft.more_resonances", count=more) if more > 0 else ())
