@@ -11,8 +11,9 @@ import numpy as np
 from ..bibliography import WORKS, cited_in
 from ..laws.power_polynomial import ARTICLE_FULLNESS
 from ..synthesis.objectives import shown_objective
-from ..synthesis.optimize import BINDING, START_SPRING
+from ..synthesis.optimize import BINDING
 from ..locale import check_text
+from .check_rows import check_note
 from .names import quantity_text, unevaluated_text, unit_text
 
 
@@ -46,7 +47,7 @@ OPTIMIZE_TEXT = {
         "polydyne": "polydyne (2, 10, 18, 26, 34), same lift, ramp and angle (Valve-train practical works (n.d.))",
         "gain": "The optimum is {gain:.1f} % fuller than the polydyne.",
         "cost": "{n} evaluations, {s:.1f} s in all, {e:.1f} s of them in the evaluations.",
-        "references": "References", "rows": {}, "start_spring": "with the starting design's spring",
+        "references": "References", "rows": {},
     },
     "ru": {
         "title": "Синтез профиля кулачка оптимизацией", "key": "параметр", "start": "исходный",
@@ -58,7 +59,6 @@ OPTIMIZE_TEXT = {
                    "разд. 4.3). При поиске привод и пружина исходные; оптимум рассчитывается полностью, со своей "
                    "пружиной, и все ограничения проверяются на нём заново, отрыв толкателя по динамическому расчёту "
                    "в диапазоне частот (Shang Hanji (1988), гл. 3)."),
-        "start_spring": "с исходной пружиной",
         "objective_fullness": "коэффициент полноты диаграммы подъёма клапана",
         "objective_time_area": "время-сечение всего открытия, мм²·с",
         "objective_volumetric_efficiency": "коэффициент наполнения, среднее по частотам вращения газообмена",
@@ -188,7 +188,7 @@ def report_html(result, lang="en") -> str:
     for c in result.checks:
         s = start.get(c.quantity)
         state = t["fails"] if not c.passed else t["binds"] if c.margin < BINDING else t["holds"]
-        note = c.note if lang == "en" else t["start_spring"] if c.note.startswith(START_SPRING) else ""
+        note = check_note(c, lang)
         shown_range = c.range.replace(c.unit, unit_text(c.unit, lang)) if c.unit else c.range
         rows.append((quantity_text(c, lang) + (f" ({note})" if note else ""),
                      _checked(s, lang) if s else "", _checked(c, lang), shown_range, f"{c.margin:.4f}", state))

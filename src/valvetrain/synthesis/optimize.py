@@ -43,7 +43,7 @@ from ..checks import Check
 from ..design import run as run_design
 from ..design.dynamics import SPEED_RANGE, dynamics_stage
 from ..errors import InputError
-from ..locale import record_text
+from ..locale import note, note_text, record_text
 from ..specification import SpecError
 from ..specification.models import Dynamics
 from ..specification.si import si
@@ -72,9 +72,6 @@ a narrow cam, so that the stress is not understated (a configurable default; no 
 
 FINAL_SPEEDS = 60
 """Speeds of the final check's dynamics sweep."""
-
-START_SPRING = "with the starting design's spring"
-"""The note of the spring reserve checked with the spring the search held."""
 
 POLISH_ITERATIONS = 60
 """Iterations of the SLSQP polish at most (from a feasible point it converges in about 20)."""
@@ -237,9 +234,9 @@ def final_checks(design, spec, limits, scale=1.0, search_spring=None) -> list[Ch
         design = replace(design, dynamics=result)
     out = constraints(design, limits, si(spec.valves[design.name], spec))
     if search_spring is not None:
+        held = note("synthesis.start_spring_scaled", scale=scale) if scale != 1.0 else note("synthesis.start_spring")
         out.append(replace(spring_reserve(design, limits.min_spring_reserve * scale, search_spring.preload * scale,
-                                          search_spring.rate * scale),
-                           note=START_SPRING + (f" x {scale:.4g}" if scale != 1.0 else "")))
+                                          search_spring.rate * scale), note=note_text(held), note_parts=held))
     same = {(c.code, c.params, c.low, c.high) for c in out}
     own = [c for c in design.checks if c.severity == "failure" and not c.accepted
            and (c.code, c.params, c.low, c.high) not in same]
