@@ -37,7 +37,7 @@ from valvetrain.design import run
 from valvetrain.specification import example_text
 from valvetrain.specification.reading import load_spec
 from valvetrain.synthesis import optimize
-from valvetrain.synthesis.optimize import GRID
+from valvetrain.synthesis.problem import GRID
 
 UKRSURT = Path(__file__).parents[1] / "examples" / "ukrsurt2019-diesel.toml"
 PASSES = 3

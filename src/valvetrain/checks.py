@@ -40,7 +40,7 @@ import math
 from typing import Any
 
 from .errors import InputError
-from .locale import catalogue, code_of, record_text
+from .locale import catalogue, code_of, note_text, record_text
 from .units import displayed, to_display
 
 SEVERITIES = ("info", "warning", "failure")
@@ -76,7 +76,10 @@ class Check:
     strict_low : bool
         The lower bound itself fails (``value > low`` required).
     note : str
-        How the value was obtained, where that needs saying.
+        How the value was obtained, where that needs saying, in English (``results.json``, the console).
+    note_parts : tuple
+        The note as codes of the catalogue with their parameters (:func:`valvetrain.locale.note`), from which
+        :attr:`note` is rendered and the report renders it in its language; empty for a note given as text.
     accepted : bool
         The user accepted this check in the specification (``[[accepted]]``); meaningful for a failed check.
     reason : str
@@ -107,6 +110,7 @@ class Check:
     code: str = ""
     params: tuple = ()
     valve: str = None
+    note_parts: tuple = ()
 
     @property
     def passed(self) -> bool:
@@ -247,7 +251,8 @@ def check(code, value, low=None, high=None, *, source, unit="", severity="warnin
     """A :class:`Check` of ``value`` (SI) against ``low``/``high`` (SI); see :class:`Check` for the fields.
 
     ``code`` is the check's code in the catalogue (:mod:`valvetrain.locale`; a code without texts is refused),
-    ``params`` the values of its parameters (a dict), from which the quantity's text is made.
+    ``params`` the values of its parameters (a dict), from which the quantity's text is made.  ``note`` is a text or
+    the parts of :func:`valvetrain.locale.note` (kept as :attr:`Check.note_parts`, rendered in English as the note).
 
     A ``value`` that is None or not a finite number makes a check that cannot be evaluated: a failure, whatever
     ``severity`` says, with ``unevaluated`` (why the value cannot be had; :data:`UNEVALUATED` if empty) in words.
@@ -273,9 +278,11 @@ def check(code, value, low=None, high=None, *, source, unit="", severity="warnin
     else:
         severity, unevaluated = "failure", unevaluated or UNEVALUATED
     params = tuple((params or {}).items())
+    parts = () if isinstance(note, str) else tuple(note)
     return Check(record_text(code, params), value, None if low is None else float(low),
-                 None if high is None else float(high), unit, source, severity, strict_low, note,
-                 unevaluated=unevaluated, code=code, params=params)
+                 None if high is None else float(high), unit, source, severity, strict_low,
+                 note_text(parts) if parts else note, unevaluated=unevaluated, code=code, params=params,
+                 note_parts=parts)
 
 
 def failed(checks) -> list[Check]:

@@ -341,7 +341,9 @@ def optimize(file, out, valve, objective, vary, no_jump, cam_width, seating_velo
     from .outfolder import atomic_folder
     from .report.optimization import (HISTORY_COMMENTS, comparison_columns, history_columns, history_figure,
                                       report_html)
-    from .synthesis.optimize import optimize_valve, parse_variables, shown_objective
+    from .synthesis.objectives import shown_objective
+    from .synthesis.optimize import optimize_valve
+    from .synthesis.variables import parse_variables
     from .units import MM
 
     spec = _load(file)

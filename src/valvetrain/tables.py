@@ -56,7 +56,7 @@ columns only where the cam width is given and the profile is not undercut)."""
 
 
 def strength_speed_columns(strength) -> dict[str, list[str]|np.ndarray]:
-    """The per-speed table of a :class:`~valvetrain.design.drive.StrengthResult` in the units of
+    """The per-speed table of a :class:`~valvetrain.design.drive_strength.StrengthResult` in the units of
     :data:`STRENGTH_COLUMNS`."""
     p = strength.per_speed
     out = {"speed_rpm": to_display(np.asarray(p.speed), "rpm"), "load": list(p.load),

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from valvetrain.design import run
-from valvetrain.design.drive import LoadMap, contact_loads
+from valvetrain.design.drive_strength import LoadMap, contact_loads
 from valvetrain.design.dynamics import FINGER_MASS_BELOW, adjuster_ratio, finger_mass
 from valvetrain.followers import PivotedFollower
 from valvetrain.specification import SpecError, parse_spec, si

@@ -19,7 +19,8 @@ from valvetrain.design.camcard import CamCardValve
 
 from appendix import appendix_spec
 
-DESIGN_MODULES = ["valvetrain.design", "valvetrain.design.valve", "valvetrain.design.drive", "valvetrain.design.crank",
+DESIGN_MODULES = ["valvetrain.design", "valvetrain.design.valve", "valvetrain.design.drive",
+                  "valvetrain.design.drive_strength", "valvetrain.design.crank",
                   "valvetrain.design.twostroke", "valvetrain.design.dynamics", "valvetrain.design.grinding",
                   "valvetrain.design.hydraulic_actuation", "valvetrain.design.results",
                   "valvetrain.design.lubrication", "valvetrain.design.lash_adjuster",
@@ -97,7 +98,7 @@ def test_figure_data_are_plain_series(results):
     """The data of each separated figure are numbers and arrays, and its drawing takes them alone."""
     from matplotlib.figure import Figure
 
-    from valvetrain.report import plots
+    from valvetrain.report import engine_plots, plots
     from valvetrain.report.i18n import TEXT
 
     v = results.valves["intake"]
@@ -105,9 +106,9 @@ def test_figure_data_are_plain_series(results):
             (plots.spring_data(v), plots.draw_spring), (plots.strength_speed_data(v), plots.draw_strength_speed),
             (plots.timing_data(results.valves), plots.draw_timing), (plots.contour_data(v), plots.draw_contour),
             (plots.curvature_data(v), plots.draw_curvature),
-            (plots.crank_forces_data(results.crank), plots.draw_crank_forces),
-            (plots.crank_torque_data(results.crank), plots.draw_crank_torque),
-            (plots.crank_pin_data(results.crank), plots.draw_crank_pin)]
+            (engine_plots.crank_forces_data(results.crank), engine_plots.draw_crank_forces),
+            (engine_plots.crank_torque_data(results.crank), engine_plots.draw_crank_torque),
+            (engine_plots.crank_pin_data(results.crank), engine_plots.draw_crank_pin)]
     for data, draw in made:
         assert plain(data), draw.__name__
         assert isinstance(draw(data, TEXT["en"]), Figure)

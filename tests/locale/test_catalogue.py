@@ -4,6 +4,7 @@ their code, valve and parameters."""
 
 import ast
 import copy
+from dataclasses import replace
 import importlib.util
 from pathlib import Path
 import string
@@ -14,7 +15,7 @@ from valvetrain import checks, locale, strength
 from valvetrain.checks import apply_acceptances, check
 from valvetrain.design import run
 from valvetrain.design.valve import LAYOUT_BANDS
-from valvetrain.locale import LANGS, catalogue, code_of, codes, parameters
+from valvetrain.locale import LANGS, catalogue, code_of, codes, note, parameters
 from valvetrain.report.html import WARNING_SYMBOLS
 from valvetrain.report.names import quantity_text
 from valvetrain.specification import SpecError
@@ -210,3 +211,52 @@ def test_every_text_made_with_numbers_takes_its_numbers():
     assert translate("even firing, order 1-5-3-6-2-4", "ru") == "равномерное чередование вспышек, порядок работы 1-5-3-6-2-4"
     assert translate("speed range 700-7700 rpm: 10% to 110% of the rated speed", "ru") == \
         "диапазон частот 700-7700 мин⁻¹: от 10% до 110% номинальной"
+
+
+def _note_fields(template):
+    return sorted((name, spec) for _, name, spec, _ in string.Formatter().parse(template) if name)
+
+
+def test_every_note_is_in_every_language_with_the_same_numbers_and_is_made():
+    """Issue 41: a check's note is a code of ``[notes]`` with parameters: each code has a text in every language that
+    takes the same parameters in the same format (the number's digits the same in the report of either language),
+    and each is made by a ``note("code", ...)`` of the package (a code no stage makes is dead text)."""
+    for lang in LANGS:
+        assert catalogue(lang)["notes"].keys() == catalogue("en")["notes"].keys(), lang
+        for code, template in catalogue(lang)["notes"].items():
+            assert _note_fields(template) == _note_fields(catalogue("en")["notes"][code]), (lang, code)
+    strings = {node.value for path in PACKAGE.rglob("*.py") for node in ast.walk(ast.parse(path.read_text("utf-8")))
+               if isinstance(node, ast.Constant) and isinstance(node.value, str)}
+    assert sorted(set(catalogue("en")["notes"]) - strings) == []
+
+
+def test_a_note_renders_its_numbers_by_the_rule_of_its_language():
+    """The note of a check is its English text in the records, and the report renders its code in Russian with a
+    decimal comma in each number (the same digits): the lubrication's worst film parameter at 7000 rpm and
+    -12.345 cam deg (4 significant figures: -12.35)."""
+    from valvetrain.locale import note_text
+    from valvetrain.report.check_rows import check_note
+
+    parts = note("lubrication.worst_at", speed_rpm=7000.0, cam_deg=-12.345) + note("lubrication.zero_entrainment")
+    c = check("lubrication.film_parameter", 0.8, low=1.0, source="s", note=parts)
+    assert c.note == ("at 7000 rpm, -12.35 cam deg from the nose; the film vanishes where the entraining velocity "
+                      "changes sign (squeeze film not modelled)") == note_text(parts)
+    assert c.note_parts == parts and c.as_dict()["note"] == c.note
+    assert check_note(c, "ru").startswith("при 7000 мин⁻¹, -12,35 град ПРВ от вершины кулачка; плёнка исчезает")
+    assert check_note(replace(c, note_parts=()), "en") == c.note
+    with pytest.raises(ValueError, match=r"'lubrication\.unknown' has no text in src/valvetrain/locale/en\.toml \[notes\]"):
+        note("lubrication.unknown")
+
+
+def test_a_number_in_brackets_of_a_russian_note_has_its_decimal_comma():
+    """The Russian report's page-wide decimal comma leaves a number right after "(" as it is (a locator of a source:
+    "(7.4)"), so a note's frequency printed "(326.8 Гц)" (pushrod-dynamics' camshaft resonances); a note rendered
+    from its code formats its numbers in Russian itself: "(326,8 Гц)"."""
+    from valvetrain.locale import note_text
+    from valvetrain.report.russian import russian_typography
+
+    parts = note("camshaft.first_resonance_met", order=8, mode=1, frequency_Hz=326.8, speed_rpm=4903.2, cam_deg=0.36,
+                 force_N=328.2)
+    assert russian_typography(f"<td>{note_text(parts, 'ru')}</td>") == (
+        "<td>резонансы: гармоника порядка 8 совпадает с формой 1 (326,8 Гц) при 4903 мин⁻¹: 0,36 град ПРВ, 328,2 Н</td>")
+    assert "(326.8 Hz)" in note_text(parts)

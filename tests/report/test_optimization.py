@@ -72,3 +72,22 @@ def test_the_report_states_which_limits_hold_bind_and_fail():
     listed = re.findall(r"<li>(.*?)</li>", page.split("<h2>References</h2>")[1])
     assert sorted(listed) == sorted(escape(WORKS[k].reference()) for k in ("ukrsurt2019", "shang1988"))
     assert 'lang="ru"' in report_html(_result(), "ru")
+
+
+def test_the_notes_of_the_limits_are_in_the_reports_language():
+    """A limit's note is rendered from its code in the report's language: the spring reserve checked with the
+    search's spring scaled by 1.05 ("с исходной пружиной × 1,05"), the Hertz stress's cam width (the Russian report
+    printed only the first, without its scale, and dropped every other note)."""
+    from dataclasses import replace
+
+    from valvetrain.locale import note, note_text
+
+    result = _result()
+    held = note("synthesis.start_spring_scaled", scale=1.05)
+    width = note("synthesis.cam_width", width_mm=12.5, top=1.1)
+    result.checks = [replace(c, note=note_text(parts), note_parts=parts)
+                     for c, parts in zip(result.checks[:2], (held, width), strict=True)]
+    assert escape("(with the starting design's spring x 1.05)") in report_html(result)
+    russian = report_html(result, "ru")
+    assert "(с исходной пружиной × 1,05)" in russian
+    assert "(ширина кулачка 12,5 мм, от неподвижного вала до 1,1 номинальной частоты вращения)" in russian

@@ -4,17 +4,14 @@ closes 78 deg after the BDC, Phi = 27 + 6 + 38 = 71 cam deg from the end of the 
 impulses.  The dynamics, grinding and hydraulic-actuation figures are their data and their drawing: the data are plain
 numbers and arrays, the same as results.json's, and the drawing takes them alone."""
 
-import io
 import itertools
 from pathlib import Path
 import re
 
-from matplotlib import rc_context
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 from matplotlib.text import Text
 import numpy as np
-from PIL import Image
 import pytest
 
 from valvetrain.design import run
@@ -25,6 +22,7 @@ from valvetrain.report.plots import jerk_impulses
 from valvetrain.specification import load_spec
 
 from appendix import appendix_spec
+from figure_checks import all_texts_on_the_figures
 from conftest import plain
 
 EXAMPLES = Path(__file__).parents[2] / "examples"
@@ -84,31 +82,6 @@ def test_the_timing_diagram_writes_the_events(results):
     assert "-26°" in texts and "258°" in texts
 
 
-def _tick_texts(fig):
-    """The tick labels and offsets of a drawn figure, as the PNG shows them (the secondary axes' too)."""
-    FigureCanvasAgg(fig).draw()
-    return [text for ax in plots.every_axes(fig)
-            for axis in (ax.xaxis, ax.yaxis)
-            for text in [label.get_text() for label in axis.get_ticklabels()] + [axis.get_offset_text().get_text()]]
-
-
-def test_the_russian_figures_number_their_ticks_with_a_decimal_comma(results):
-    """Russian writes decimals with a comma (0,5), English with a point (0.5): the time-area figure's ticks (steps of
-    0.5) in each language, and the comma set by the drawing, not by the process's locale."""
-    v = results.valves["intake"]
-    russian, english = (_tick_texts(plots.time_area_figure(v, TEXT[lang])) for lang in ("ru", "en"))
-    assert any("," in text for text in russian) and not any("." in text for text in russian), russian
-    assert any("." in text for text in english) and not any("," in text for text in english), english
-    for make in plots.FIGURES.values():                      # no Russian figure shows a decimal point
-        fig = make(v, TEXT["ru"])
-        assert not any("." in text for text in _tick_texts(fig)), make
-        ticks = {id(label) for ax in plots.every_axes(fig)
-                 for axis in (ax.xaxis, ax.yaxis)
-                 for tick in axis.get_major_ticks() + axis.get_minor_ticks() for label in (tick.label1, tick.label2)}
-        texts = [text.get_text() for text in fig.findobj(Text) if id(text) not in ticks]  # titles, legends, notes
-        assert not [text for text in texts if re.search(r"\d\.\d", text)], make
-
-
 def test_the_jerk_impulses_are_written_with_a_decimal_comma_in_russian(results):
     """The kinematics figure writes each acceleration step of the Kurz law beside its arrow (the appendix's law has
     steps): '+1234,5'-like in Russian, '+1234.5'-like in English."""
@@ -160,47 +133,13 @@ def test_a_drawer_draws_the_figures_it_claims(results):
     assert sorted([*odd, *even]) == sorted(order)
 
 
-def test_the_figures_pngs_have_the_pixels_of_matplotlibs_own(results):
-    """write_png writes a figure without the opacity of its pixels (RGB), its text without hinting: figures of the
-    appendix, read back (Pillow's PNG decoder), have the colours of the same figures written by matplotlib's own
-    ``savefig`` with the text unhinted (``text.hinting = no_hinting``; RGBA, the reference), whose every pixel is
-    opaque, so that nothing is lost; at the same resolution.  With matplotlib's default hinting they differ."""
-    for name, draw in [("kinematics", lambda t: plots.kinematics_figure(results.valves["intake"], t)),
-                       ("contour", lambda t: plots.contour_figure(results.valves["intake"], t)),
-                       ("timing", lambda t: plots.timing_figure(results.valves, t))]:
-        for lang in ("en", "ru"):
-            ours, theirs = io.BytesIO(), io.BytesIO()
-            plots.write_png(draw(TEXT[lang]), ours)
-            with rc_context({"text.hinting": "no_hinting"}):
-                draw(TEXT[lang]).savefig(theirs, format="png", dpi=plots.DPI)
-            hinted = io.BytesIO()
-            draw(TEXT[lang]).savefig(hinted, format="png", dpi=plots.DPI)
-            ours, theirs = Image.open(ours), Image.open(theirs)
-            assert (ours.mode, theirs.mode) == ("RGB", "RGBA"), name
-            assert ours.info["dpi"] == pytest.approx(theirs.info["dpi"]), name
-            rgba = np.asarray(theirs)
-            assert (rgba[..., 3] == 255).all(), name
-            assert np.array_equal(np.asarray(ours), rgba[..., :3]), (name, lang)
-            assert not np.array_equal(np.asarray(Image.open(hinted))[..., :3], rgba[..., :3]), (name, lang)
-
-
 def test_every_text_of_a_figure_lies_on_it(results):
     """Every text a figure draws (tick labels, axis labels, titles, legends, of the secondary axes too: matplotlib's
     tight bounding box of the drawn figure) lies inside the figure, in English and Russian: the fixed margins leave
     room for the widest labels.  (The kinematics figure's per-degree axes on the right were cut off by the figure's
     edge, their label drawn outside it.)"""
     figures = [(kind, lambda t, make=make: make(results.valves["intake"], t)) for kind, make in plots.FIGURES.items()]
-    _all_texts_on_the_figures([*figures, ("timing", lambda t: plots.timing_figure(results.valves, t))])
-
-
-def _all_texts_on_the_figures(figures):
-    for kind, draw in figures:
-        for lang in ("en", "ru"):
-            fig = draw(TEXT[lang])
-            fig.set_dpi(plots.DPI)
-            box = fig.get_tightbbox(FigureCanvasAgg(fig).get_renderer())
-            width, height = fig.get_size_inches()
-            assert box.x0 >= 0.0 and box.y0 >= 0.0 and box.x1 <= width and box.y1 <= height, (kind, lang, box)
+    all_texts_on_the_figures([*figures, ("timing", lambda t: plots.timing_figure(results.valves, t))])
 
 
 def test_jerk_plot_marks_each_impulse():
@@ -263,31 +202,12 @@ def test_every_text_of_the_stages_figures_lies_on_them(designs):
     dynamics = designs["pushrod-dynamics.toml"].valves["intake"]
     ground = designs["seed000-polydyne.toml"].valves["intake"]
     hydraulic = designs["marine-hydraulic-exhaust.toml"].valves["exhaust"]
-    _all_texts_on_the_figures(
+    all_texts_on_the_figures(
         [*((kind, lambda t, make=make: make(dynamics.name, dynamics.dynamics, t))
            for kind, make in plots.DYNAMICS_FIGURES.items()),
          ("grinding", lambda t: plots.grinding_figure(ground, t)),
          ("hydraulic", lambda t: plots.hydraulic_figure(hydraulic, t)),
          ("hydraulic_sweep", lambda t: plots.hydraulic_sweep_figure(hydraulic, t))])
-
-
-def test_the_crank_figures_legends_cover_no_curve(results):
-    """Issue 39: the crank torque figure's legend covered the curves (upper right of the axes, over the cylinders'
-    torque).  Every legend of the crank figures lies beside its axes (their window extents do not meet), every text
-    on the figure, the cycle's angle from 0 to 720 deg with a tick at 720 (it stopped at 630), in both languages."""
-    crank = results.crank
-    figures = [(kind, lambda t, make=make: make(crank, t)) for kind, make in plots.ENGINE_FIGURES["crank"].items()]
-    _all_texts_on_the_figures(figures)
-    for kind, draw in figures:
-        for lang in ("en", "ru"):
-            fig = draw(TEXT[lang])
-            renderer = FigureCanvasAgg(fig).get_renderer()
-            for ax in fig.axes:
-                legend = ax.get_legend()
-                if legend is not None:
-                    assert not legend.get_window_extent(renderer).overlaps(ax.get_window_extent(renderer)), kind
-                if kind != "crank_pin_polar":
-                    assert ax.get_xlim() == pytest.approx((0.0, 720.0)) and 720.0 in ax.get_xticks(), kind
 
 
 def test_a_symbols_index_is_a_subscript_in_every_figure(results):
@@ -299,40 +219,3 @@ def test_a_symbols_index_is_a_subscript_in_every_figure(results):
     texts = [text.get_text() for fig in figures for text in fig.findobj(Text)]
     assert [text for text in texts if re.search(r"[^\\{\s$]_[^{]", text)] == []
     assert any("$h_{T}$" in text for text in texts) and any("$p_{N}$" in text for text in texts)
-
-
-def test_the_breathing_figures_in_both_languages():
-    """Issue 37: the breathing chapter's figures, English and Russian: the p-V and the log p - log V indicator
-    diagrams (one line per condition, the cycle's volumes and pressures, the second axes logarithmic on both) and
-    the volumetric efficiency with the indicated torque of a fired engine against the curve's speeds; every text on
-    the figure, its titles in the report's language."""
-    from valvetrain.specification import example_spec, spec_document, validate
-    doc = spec_document(example_spec())
-    for valve in doc["valves"].values():
-        valve["dynamics"]["speeds"] = 20
-    doc["breathing"] = {"mode": "fired", "wall_temperature_C": 150.0,
-                        "conditions": [{"speed_rpm": 3000.0, "intake_pressure_kPa": 100.0, "intake_temperature_C": 25.0,
-                                        "exhaust_pressure_kPa": 105.0}],
-                        "curve": {"speed_range_rpm": [2000.0, 6000.0], "points": 3, "intake_pressure_kPa": 100.0,
-                                  "intake_temperature_C": 25.0, "exhaust_pressure_kPa": 105.0}}
-    breathing = run(validate(doc)).breathing
-    figures = [(kind, lambda t, make=make: make(breathing, t))
-               for kind, make in plots.ENGINE_FIGURES["breathing"].items()]
-    _all_texts_on_the_figures(figures)
-    cycle = breathing.conditions[0].columns
-    for lang in ("en", "ru"):
-        t = TEXT[lang]
-        linear, logs = plots.breathing_pv_figure(breathing, t).axes
-        assert (logs.get_xscale(), logs.get_yscale(), linear.get_xscale()) == ("log", "log", "linear")
-        for ax, title in ((linear, t["br_pv"]), (logs, t["br_log_pv"])):
-            (line,) = ax.get_lines()
-            assert np.array_equal(line.get_xdata(), cycle.volume * 1e6)
-            assert np.array_equal(line.get_ydata(), cycle.pressure * 1e-3) and ax.get_title() == title
-        efficiency, torque = plots.breathing_speed_figure(breathing, t).axes
-        assert list(efficiency.get_lines()[0].get_xdata()) == pytest.approx([2000.0, 4000.0, 6000.0])
-        assert list(efficiency.get_lines()[0].get_ydata()) == [r.figures.volumetric_efficiency
-                                                                for r in breathing.curve]
-        assert list(torque.get_lines()[0].get_ydata()) == pytest.approx([r.figures.torque for r in breathing.curve])
-        assert efficiency.get_ylabel().startswith(t["br_efficiency"].split(" η")[0]) and "η_{v}" in efficiency.get_ylabel()
-        assert torque.get_ylabel() == t["br_torque"]
-    assert re.search("[а-я]", TEXT["ru"]["br_log_pv"] + TEXT["ru"]["br_torque"])

@@ -7,7 +7,7 @@ import pytest
 
 from valvetrain.design import run
 from valvetrain.locale import catalogue
-from valvetrain.report.html import chapter_checks, check_chapter
+from valvetrain.report.check_rows import chapter_checks, check_chapter
 from valvetrain.report.switching import switching_chapters
 from valvetrain.specification import load_spec, spec_document, validate
 

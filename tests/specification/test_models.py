@@ -2,13 +2,9 @@
 that cannot give a physically meaningful design are refused (exit 2, one message naming the key, the value and what is
 allowed), never a traceback or a result that cannot be true (issue 9)."""
 
-import numpy as np
 from pydantic import ValidationError
 import pytest
-from click.testing import CliRunner
 
-from valvetrain.cli import main
-from valvetrain.crank import pressure
 from valvetrain.specification import SpecError, parse_spec
 
 from appendix import appendix_spec, appendix_text, appendix_with
@@ -43,52 +39,6 @@ def test_a_cam_event_over_a_revolution_is_refused(refused):
 def test_a_lift_beyond_half_the_throat_is_refused(refused):
     assert "valves.intake.max_lift_mm = 400 mm: allowed at most 0.5 x throat_diameter_mm = 18.4 mm" in \
         refused(appendix_with(("max_lift_mm = 10.0", "max_lift_mm = 400.0")))
-
-
-def _indicator(tmp_path, phi_deg, p):
-    """The example with its Wiebe cycle replaced by an indicator file of p(phi_deg) [Pa]."""
-    (tmp_path / "ind.csv").write_text("crank_deg,pressure_MPa\n" + "".join(f"{a:.6f},{b / 1e6:.9f}\n"
-                                                                           for a, b in zip(phi_deg, p)))
-    text = appendix_text()
-    text = text.replace(text[text.index("# Without a pressure_file"):text.index("[output]")], "")
-    return text.replace('# pressure_file = "indicator.csv"', 'pressure_file = "ind.csv"')
-
-
-def _wiebe(phi_deg):
-    return pressure.wiebe_pressure(np.radians(phi_deg), pressure.WiebeCycle(10.0, 950.0), 0.080, 0.0385714, 0.2857, 4)
-
-
-def test_a_whole_cycle_file_runs(tmp_path):
-    phi = np.arange(0.0, 720.0, 1.0)
-    f = tmp_path / "spec.toml"
-    f.write_text(_indicator(tmp_path, phi, _wiebe(phi)))
-    assert CliRunner().invoke(main, ["validate", str(f)]).exit_code == 0
-
-
-def test_a_pressure_file_over_half_the_cycle_is_refused(tmp_path, refused):
-    """A four-stroke file of 0-360 deg only: interpolating across 360-720 gave -816 J of indicated work."""
-    phi = np.arange(0.0, 361.0, 1.0)
-    out = refused(_indicator(tmp_path, phi, _wiebe(phi)), "run")
-    assert "crank.pressure_file:" in out and "a gap of 360 deg; allowed at most 60 deg" in out
-
-
-def test_a_pressure_file_from_firing_tdc_is_refused(tmp_path, refused):
-    """The same cycle counted from the firing TDC peaks near 0 instead of 360 deg."""
-    phi = np.arange(0.0, 720.0, 1.0)
-    out = refused(_indicator(tmp_path, phi, _wiebe(phi + 360.0)))
-    assert "the pressure peaks at crank_deg = " in out and "shift the angles" in out
-
-
-@pytest.mark.parametrize("volumes,message", [
-    (np.full(40, 300.0), "the volume changes direction 0 times; a 4-stroke cycle needs 4 monotone branches"),
-    (np.concatenate([np.linspace(45, 430, 20), np.linspace(430, 45, 20)]), "changes direction 1 times"),
-    (np.concatenate([np.linspace(45, 900, 10), np.linspace(900, 45, 10)] * 2), "is outside the cylinder volume"),
-])
-def test_bad_p_v_files_are_refused(tmp_path, refused, volumes, message):
-    (tmp_path / "pv.csv").write_text("volume_cm3,pressure_MPa\n" + "".join(f"{v:g},0.5\n" for v in volumes))
-    text = _indicator(tmp_path, [0.0], [1e5]).replace('pressure_file = "ind.csv"', 'pressure_file = "pv.csv"')
-    out = refused(text)
-    assert "crank.pressure_file:" in out and message in out
 
 
 # issue 21, "The Python API validates"

@@ -19,8 +19,10 @@ from valvetrain.cli import main
 from valvetrain.design import run
 from valvetrain.specification import example_spec, spec_document, validate
 from valvetrain.specification.reading import parse_spec
-from valvetrain.synthesis.optimize import (Problem, breathing_objective, design_limits, objective_value,
-                                           optimize_valve, parse_variables)
+from valvetrain.synthesis.objectives import breathing_objective, objective_value
+from valvetrain.synthesis.optimize import design_limits, optimize_valve
+from valvetrain.synthesis.problem import Problem
+from valvetrain.synthesis.variables import parse_variables
 
 CLOSING = parse_variables(["closes_deg=60,90"])
 """The intake valve's closing [crank deg after BDC], the example's 78."""

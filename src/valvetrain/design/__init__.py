@@ -3,7 +3,7 @@
 This package is the one place where the specification's engineering units (mm, deg,
 rpm) are converted to SI for the physics functions.  Stages:
 
-* per valve (:mod:`.valve`, :mod:`.drive`): flow sections and conditional velocities
+* per valve (:mod:`.valve`, :mod:`.drive`, :mod:`.drive_strength`): flow sections and conditional velocities
   (Valve-train practical works (n.d.) work 1), the lift law (works 2-3), time-area and fullness (work 4, Shang Hanji (1988)),
   the cam contour (Shang Hanji (1988) section 2.1), masses and springs (works 5-6), strength (work 7):
   ``law_stage``, ``flow_stage``, ``profile_stage``, ``clearance_stage``, ``drive_stage`` (masses, springs),
@@ -63,7 +63,8 @@ from .camcard import CamCard, CamCardValve, cam_card_stage
 from .camshaft import CamshaftRecord, CamshaftResults, camshaft_stage
 from .crank import (LAMBDA_RANGE, CrankResults, CrankSummary, crank_geometry as crank_geometry_of, crank_stage,
                     valve_timing)
-from .drive import MassResult, SpringResult, StrengthResult
+from .drive import MassResult, SpringResult
+from .drive_strength import StrengthResult
 from .dynamics import DynamicsResult
 from .grinding import GrindingResult
 from .hydraulic_actuation import CylinderPressure, HydraulicResult, speed_plan

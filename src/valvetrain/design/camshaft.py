@@ -19,11 +19,12 @@ from scipy.interpolate import interp1d
 from .. import camshaft as shaft
 from ..bibliography import cite
 from ..checks import Check, check
+from ..locale import note
 from ..numerics import first_largest
 from ..units import to_display
 from ..layouts import finger_mass_change
 from .crank import firing_angles
-from .drive import contact_loads, event_load_maps
+from .drive_strength import contact_loads, event_load_maps
 from .lubrication import contact_map
 from .results import quantity, record
 
@@ -195,9 +196,9 @@ def lobe_set(name, valve, engine, design, firing) -> LobeSet:
     Notes
     -----
     T(theta) = P_T(theta) dh/dtheta (+ T_f): the cam force at the rated speed from the strength stage's load maps
-    (:func:`valvetrain.design.drive.event_load_maps`: the dynamics' simulated force where it ran), the friction torque
+    (:func:`valvetrain.design.drive_strength.event_load_maps`: the dynamics' simulated force where it ran), the friction torque
     from :func:`valvetrain.design.lubrication.contact_map` under the cam's normal force
-    (:func:`valvetrain.design.drive.contact_loads`) where the valve has a lubrication section.  For a finger the law
+    (:func:`valvetrain.design.drive_strength.contact_loads`) where the valve has a lubrication section.  For a finger the law
     is the valve's and P_T the force at the valve: P_T dv/dtheta is the torque of the cam's normal force N =
     P_T G / (L_r cos beta) about the cam centre (the virtual work of the linkage; Norton (2009)).  The train's inertia
     reduced to the camshaft J = (1/2 pi) int m_t(theta) h'^2 dtheta (its kinetic energy m_t (omega h')^2 / 2 averaged
@@ -227,7 +228,7 @@ def lobe_set(name, valve, engine, design, firing) -> LobeSet:
 def map_torque(valve, cam, friction, m, rated_speed) -> np.ndarray:
     """One lobe's drive torque at every speed of the load map ``m`` [N m], (S, n): P_T dh/dtheta, with the friction
     torque of :func:`valvetrain.design.lubrication.contact_map` where ``friction`` (the valve has a lubrication
-    section) under the cam's normal force (:func:`valvetrain.design.drive.contact_loads`); ``rated_speed`` [rad/s]
+    section) under the cam's normal force (:func:`valvetrain.design.drive_strength.contact_loads`); ``rated_speed`` [rad/s]
     turns the map's engine speeds into camshaft speeds (``cam.cam_speed`` at it)."""
     if friction:
         normal = contact_loads(cam, [m])[0].force
@@ -381,51 +382,49 @@ def camshaft_checks(r, c, engine) -> list[Check]:
     most 1/6 of its tensile strength (Diamond Chain (n.d.)).
     """
     over = to_display(engine.over_speed_ratio * engine.rated_speed, "rpm")
-    held = "the drive end held" if c.drive_stiffness is None else "through the timing drive's stiffness"
+    held = "camshaft.twist_held" if c.drive_stiffness is None else "camshaft.twist_through_drive"
     t = r.response
-    damping = (f"modal damping ratio {t.damping_ratio:g} ([camshaft] torsional_damping_ratio, an engineering "
-               "assumption)")
     chain_source = f"; {cite('diamondchain')}" if c.drive == "chain" else ""
     return [
         check("camshaft.twist_timing_error", r.twist_max, high=c.max_twist, unit="cam deg",
               severity="failure" if r.twist_max > TWIST_FAILURE else "warning",
               source=f"{cite('shigley2011', 'chapter 3 (torsion)')}; camshaft.max_twist_cam_deg (an engineering "
                      f"assumption; beyond {np.degrees(TWIST_FAILURE):g} cam deg a failure)",
-              note=f"{to_display(r.twist_crank, 'crank deg'):.3g} crank deg; quasi-static, {held}"),
+              note=note(held, twist_crank_deg=to_display(r.twist_crank, 'crank deg'))),
         check("camshaft.torsional_resonance", r.frequency_ratio, low=c.min_frequency_ratio, severity="info",
               source=f"{cite('denhartog1956')}; camshaft.min_frequency_ratio (an engineering assumption)",
-              note=f"first natural frequency {r.natural_frequencies[0]:.4g} Hz against order {max(r.significant_orders)} "
-                   f"at the over-speed {over:.0f} rpm; a resonance in the running range is graded by its response "
-                   "(camshaft.dynamic_timing_error, camshaft.dynamic_drive_force)"),
+              note=note("camshaft.first_resonance", frequency_Hz=r.natural_frequencies[0],
+                        order=max(r.significant_orders), speed_rpm=over)),
         check("camshaft.bending_deflection", r.deflection_max, high=c.max_deflection, unit="mm", severity="failure",
               source=f"{cite('vt_works', 'eq. (7.3)')}: 0.02-0.05 mm; {cite('shigley2011', 'table A-9')}",
-              note="each lobe alone on a simply supported span between its journals"),
+              note=note("camshaft.lobe_span")),
         check("camshaft.timing_drive_force", r.drive_force, high=c.drive_allowable_force_N, unit="N",
               severity="failure", source="camshaft.drive_allowable_force_N (the maker's allowable of the "
                                          f"{c.drive}{chain_source})",
-              note=f"peak torque {r.peak:.4g} N m at the pitch radius {to_display(c.drive_pitch_radius, 'mm'):g} mm"),
+              note=note("camshaft.peak_torque", torque_Nm=r.peak, radius_mm=to_display(c.drive_pitch_radius, 'mm'))),
         check("camshaft.dynamic_timing_error", t.fluctuation, high=t.allowable, unit="cam deg", severity="failure",
               source=f"{cite('chrysler2002')}: the cam sprocket's movement against the crankshaft accepted in service, "
                      f"camshaft.max_timing_play_mm = {to_display(c.max_timing_play, 'mm'):g} mm along the pitch "
                      f"circle of radius {to_display(c.drive_pitch_radius, 'mm'):g} mm; {cite('denhartog1956')}",
-              note=f"largest less smallest lag of cylinder {t.fluctuation_cylinder}'s lobes over a revolution, at "
-                   f"{to_display(t.fluctuation_speed, 'rpm'):.0f} rpm, steady response over "
-                   f"{to_display(t.speed_range[0], 'rpm'):.0f}-{to_display(t.speed_range[1], 'rpm'):.0f} rpm, "
-                   f"{damping}; {resonance_note(t)}"),
+              note=note("camshaft.lag", cylinder=t.fluctuation_cylinder,
+                        speed_rpm=to_display(t.fluctuation_speed, "rpm"), low_rpm=to_display(t.speed_range[0], "rpm"), high_rpm=to_display(t.speed_range[1], "rpm"),
+                        damping=t.damping_ratio) + resonance_note(t)),
         check("camshaft.dynamic_drive_force", t.drive_force, high=c.drive_allowable_force_N, unit="N",
               severity="failure", source="camshaft.drive_allowable_force_N (the maker's allowable of the "
                                          f"{c.drive}{chain_source}); {cite('denhartog1956')}",
-              note=f"at {to_display(t.drive_force_speed, 'rpm'):.0f} rpm, steady response, {damping}"),
+              note=note("camshaft.steady_drive_force", speed_rpm=to_display(t.drive_force_speed, 'rpm'),
+                        damping=t.damping_ratio)),
     ]
 
 
-def resonance_note(t) -> str:
+def resonance_note(t) -> tuple:
     """The resonances of the running range with their figures, the largest timing fluctuations first (at most
     :data:`LISTED_RESONANCES`), or that there is none."""
     if not t.resonances:
-        return "no significant order meets a natural frequency in the running range"
-    listed = "; ".join(f"order {r.order} meets mode {r.mode} ({r.frequency:.4g} Hz) at {to_display(r.speed, 'rpm'):.0f} "
-                       f"rpm: {to_display(r.fluctuation, 'cam deg'):.3g} cam deg, {r.drive_force:.4g} N"
-                       for r in t.resonances[:LISTED_RESONANCES])
+        return note("camshaft.no_resonance")
+    listed = sum((note("camshaft.resonance" if k else "camshaft.first_resonance_met", order=r.order, mode=r.mode,
+                       frequency_Hz=r.frequency, speed_rpm=to_display(r.speed, "rpm"),
+                       cam_deg=to_display(r.fluctuation, "cam deg"), force_N=r.drive_force)
+                  for k, r in enumerate(t.resonances[:LISTED_RESONANCES])), ())
     more = len(t.resonances) - LISTED_RESONANCES
-    return f"resonances: {listed}" + (f"; {more} more in the results" if more > 0 else "")
+    return listed + (note("camshaft.more_resonances", count=more) if more > 0 else ())

@@ -16,6 +16,7 @@ import numpy as np
 
 from .. import cam_grinding
 from ..checks import Check, check
+from ..locale import note
 from ..errors import InputError
 from ..specification.messages import Problem
 from ..units import MM
@@ -148,7 +149,7 @@ def grinding_stage(grinding, cam, name, export_step) -> tuple[GrindingResult, li
     if concave_radius is not None:
         found.append(check("grinding.concave_radius", -concave_radius, low=r_w,
                            strict_low=True, source=CONCAVE_SOURCE, unit="mm", severity="failure",
-                           note=f"a wheel of radius {r_w / MM:g} mm cannot grind a concave stretch of smaller radius"))
+                           note=note("grinding.wheel_radius", radius_mm=r_w / MM)))
     path, length, _ = cam_grinding.wheel_centre_path(derivs, theta, heel, r_w, follower)
     l_min, l_max = heel + r_w, float(np.max(length))
     args = (heel, r_w, i, base, r_m, follower)
@@ -160,7 +161,7 @@ def grinding_stage(grinding, cam, name, export_step) -> tuple[GrindingResult, li
         master_ok = master_rho > 0.0
         found.append(check("grinding.master_undercut", master_rho, low=0.0,
                            strict_low=True, source=MASTER_SOURCE, unit="mm", severity="failure",
-                           note=f"master roller r_m = {r_m / MM:g} mm, bar ratio {i:g}"))
+                           note=note("grinding.master_roller", roller_mm=r_m / MM, ratio=i)))
     result = dict(wheel_radius=r_w, master_follower_radius=r_m, bar_ratio=i, master_base_radius=base,
                   wheel_centre_min=l_min, wheel_centre_max=l_max, master_lift=i * (l_max - l_min),
                   path_factor=factor, concave_radius=concave_radius, grindable=bool(ok), master_rho_min=master_rho,

@@ -24,6 +24,7 @@ from typing import Any, Optional
 import numpy as np
 
 from ..checks import Check, check
+from ..locale import note
 from ..crank.pressure import on_grid
 from ..dynamics.sweep import BOUNCE_TOLERANCE
 from ..errors import InputError
@@ -346,7 +347,7 @@ def hydraulic_stage(valve, law, engine, gas, name, nose, cylinder=None) -> tuple
         sweep_table=f"tables/{name}_hydraulic_sweep.csv", response=r, sweep=sw, nose=nose, strokes=engine.strokes)
     found = [check("hydraulic.min_pressure", result.min_pressure,
                    low=hydraulic.vapour_pressure, strict_low=True, source=SOURCES, unit="MPa",
-                   note="the liquid column separates (cavitation) where the pressure falls to the vapour pressure")]
+                   note=note("hydraulic.cavitation"))]
     found += _failure_checks(r, sw, speed, speeds, engine, drive, hydraulic)
     if result.seating_velocity is not None:
         found.append(check("hydraulic.seating_velocity", abs(result.seating_velocity), high=SEATING_VELOCITY_MAX, unit="m/s",
@@ -387,24 +388,20 @@ def _failure_checks(r, sw, speed, speeds, engine, drive, hydraulic):
         check("hydraulic.opening", lift[n], low=opening, unit="mm", severity="failure",
               source=f"{FAILURE_SOURCE}; {DELAY_LEVEL * 100:g} % of the rigid lift, the level of the delays "
                      "(this package's)",
-              note=(f"at {at[n] / rpm:.0f} rpm the drive does not open the valve: it lifts {lift[n] / MM:.4g} mm "
-                    f"of the rigid drive's {opening / DELAY_LEVEL / MM:.4g} mm (the liquid column gives way); the "
-                    "opening delay is not defined" if lift[n] < opening else f"least at {at[n] / rpm:.0f} rpm")),
+              note=(note("hydraulic.not_opened", speed_rpm=at[n] / rpm, lift_mm=lift[n] / MM,
+                         rigid_mm=opening / DELAY_LEVEL / MM)
+                    if lift[n] < opening else note("hydraulic.least_at", speed_rpm=at[n] / rpm))),
         check("hydraulic.max_lift", lift[k], high=stop, unit="mm",
               severity="failure", source=FAILURE_SOURCE,
-              note=(f"the valve reaches its stop at {at[k] / rpm:.0f} rpm: it travels further than its stroke"
-                    if reached else f"largest at {at[k] / rpm:.0f} rpm")),
+              note=note("hydraulic.stop_reached" if reached else "hydraulic.largest_at", speed_rpm=at[k] / rpm)),
         check("hydraulic.residual_lift", left[m], high=BOUNCE_TOLERANCE, unit="mm",
               severity="failure", source=FAILURE_SOURCE,
-              note=(f"at {at[m] / rpm:.0f} rpm the valve is not back on its seat when the plunger is about to lift "
-                    "again: it has not closed before its next opening"
-                    if left[m] > BOUNCE_TOLERANCE else ""))]
+              note=note("hydraulic.not_reseated", speed_rpm=at[m] / rpm) if left[m] > BOUNCE_TOLERANCE else "")]
     if hydraulic.fill_pressure is not None:
         found.append(check("hydraulic.fill_pressure",
                            hydraulic.fill_pressure, high=lift_off_pressure(drive), unit="MPa", severity="failure",
                            source=FAILURE_SOURCE,
-                           note="above it the supply alone lifts the valve off its seat (F_0 / A_a above the back "
-                                "pressure)"))
+                           note=note("hydraulic.lift_off")))
     return found
 
 

@@ -11,9 +11,10 @@ import numpy as np
 from .. import lash_adjuster as hla
 from ..bibliography import cite
 from ..checks import Check, check
+from ..locale import note
 from ..dynamics.sweep import lift_event, sweep, sweep_size, zero_crossing
 from ..units import DEG, to_display
-from .drive import event_load_maps
+from .drive_strength import event_load_maps
 from .dynamics import MAX_SWEEP_WORK, adjuster_element, adjuster_load, build_train
 from .results import quantity
 
@@ -282,16 +283,15 @@ def lash_adjuster_stage(la, valve, engine, cam, drive, dynamics=None,
     where = f"{at}.lash_adjuster"
     found = [check("lash_adjuster.refill", result.max_refill_share,
                    high=1.0, source=f"{cite('merritt1967')}: annular leakage and the check valve's orifice flow; "
-                   f"{where}", note="largest over the speeds up to the over-speed")]
+                   f"{where}", note=note("lash_adjuster.largest_over_speeds"))]
     if pumps:
         found.append(check("lash_adjuster.pump_up", result.max_pump_up, high=PUMP_UP_TOLERANCE, unit="um",
                            severity="failure", source=f"{cite('merritt1967')}: the plunger's extension simulated with "
                            f"the train up to [engine] over_speed_ratio x the rated speed; {where}"))
         top = dynamics.speed_range[1]
-        note = "" if np.isfinite(floats) else (f"no float up to the top of the range swept, "
-                                              f"{to_display(top, 'rpm'):.0f} rpm")
+        said = "" if np.isfinite(floats) else note("lash_adjuster.no_float", speed_rpm=to_display(top, "rpm"))
         found.append(check("lash_adjuster.float", (floats if np.isfinite(floats) else top) / engine.rated_speed,
-                           low=engine.over_speed_ratio, severity="failure", note=note,
+                           low=engine.over_speed_ratio, severity="failure", note=said,
                            source=f"the follower's force at the adjuster's push {push:.4g} N at the valve, where its "
                            f"check valve opens ({cite('merritt1967')}), while the cam lifts the open valve: no float "
                            f"below [engine] over_speed_ratio x the rated speed; {where}"))
@@ -305,19 +305,21 @@ def lash_adjuster_stage(la, valve, engine, cam, drive, dynamics=None,
     return result, found
 
 
-def held_note(per, worst, travel) -> str:
+HELD_NOTES = {(True, False): "lash_adjuster.held_settled", (True, True): "lash_adjuster.held_settled_at_stop",
+              (False, False): "lash_adjuster.held_unsettled", (False, True): "lash_adjuster.held_unsettled_at_stop"}
+"""The note of a valve held open by whether its motion settled and whether the plunger reached its stop."""
+
+
+def held_note(per, worst, travel) -> tuple | str:
     """The note of the check of the valve held open: where the largest held lift settles, the plunger's extension
     there and whether it reached its stop, after how many revolutions (or that it had not settled); empty where the
     valve seats at every simulated speed."""
     if per.held_open[worst] <= 0.0:
         return ""
     extension = per.pumped_up[worst]
-    stop = ", at its stop" if extension >= travel * (1.0 - 1e-9) else ""
-    settled = (f"settled after {per.revolutions[worst]} revolutions" if per.settled[worst] else
-               f"not settled within {per.revolutions[worst]} revolutions")
-    return (f"the valve settles {to_display(per.held_open[worst], 'um'):.4g} um off its seat at "
-            f"{to_display(per.speed[worst], 'rpm'):.0f} rpm, the plunger pumped up "
-            f"{to_display(extension, 'um'):.4g} um{stop} ({settled})")
+    code = HELD_NOTES[bool(per.settled[worst]), bool(extension >= travel * (1.0 - 1e-9))]
+    return note(code, held_um=to_display(per.held_open[worst], "um"), speed_rpm=to_display(per.speed[worst], "rpm"),
+                extension_um=to_display(extension, "um"), revolutions=per.revolutions[worst])
 
 
 def _settled(motions, valve, law, drive, cam_speed, at) -> list:

@@ -9,12 +9,13 @@ import numpy as np
 from .. import tribology
 from ..bibliography import cite
 from ..checks import Check, check
+from ..locale import note
 from ..errors import InputError
 from ..numerics import first_largest
 from ..specification.messages import Problem, SpecError
 from ..strength import hertz_half_width
 from ..units import to_display
-from .drive import contact_loads, event_load_maps
+from .drive_strength import contact_loads, event_load_maps
 from .results import quantity
 
 STEEL_EFFUSIVITY = float(np.sqrt(46.6 * 7850.0 * 460.0))
@@ -227,9 +228,9 @@ def lubrication_stage(lub, valve, engine, cam, drive, dynamics=None,
         per.max_contact_temperature[hot], per.speed[hot], per.friction_power[rated], per.mean_friction_torque[rated],
         per.max_drive_torque[rated],
         _zero_entrainment(cam, maps[0].theta), per)
-    where = (f"at {to_display(worst[1], 'rpm'):.0f} rpm, {to_display(worst[2], 'cam deg'):.4g} cam deg from the nose"
-             + ("; the film vanishes where the entraining velocity changes sign (squeeze film not modelled)"
-                if result.zero_entrainment else ""))
+    where = (note("lubrication.worst_at", speed_rpm=to_display(worst[1], "rpm"),
+                  cam_deg=to_display(worst[2], "cam deg"))
+             + (note("lubrication.zero_entrainment") if result.zero_entrainment else ()))
     found = [check("lubrication.film_parameter", worst[0],
                    low=lub.min_film_parameter,
                    source=f"{cite('hamrock2004', 'ch. 1')}: boundary lubrication below lambda = 1; "
@@ -238,5 +239,5 @@ def lubrication_stage(lub, valve, engine, cam, drive, dynamics=None,
                      result.max_contact_temperature, high=lub.max_contact_temperature_C, unit="degC",
                      source=f"{cite('blok1937')}: scuffing at a critical temperature of the oil; "
                             f"{at}.lubrication.max_contact_temperature_C", severity="failure",
-                     note=f"at {to_display(per.speed[hot], 'rpm'):.0f} rpm")]
+                     note=note("lubrication.hottest_at", speed_rpm=to_display(per.speed[hot], 'rpm')))]
     return result, found

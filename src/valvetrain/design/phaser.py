@@ -21,6 +21,7 @@ from .. import camshaft as shaft
 from ..breathing import BreathingError, ValveFlow
 from ..breathing.cycle import MAX_WORK, work
 from ..checks import Check, check
+from ..locale import note
 from ..specification.messages import Problem, SpecError
 from ..units import to_display
 from .breathing import (BreathingResults, breathe_conditions, breathing_conditions, breathing_records,
@@ -274,8 +275,8 @@ def phaser_stage(name, phaser, valve, engine, design, breathing=None, b=None, ca
     checks = [check("phaser.piston_clearance", e.min_gap, low=PISTON_CLEARANCE_MIN[design.kind], unit="mm",
                     source=PISTON_CLEARANCE_SOURCE, severity="failure",
                     params={"advance": f"{to_display(e.advance, 'crank deg'):g}"},
-                    note=f"smallest at {to_display(e.min_gap_angle, 'crank deg'):.4g} crank deg from the gas-exchange "
-                         "TDC").of_valve(name)
+                    note=note("phaser.smallest_gap_at", crank_deg=to_display(e.min_gap_angle, 'crank deg'))
+                    ).of_valve(name)
               for e in (events[0], events[-1]) if e.min_gap is not None]
     peak, lowest, mean, source = holding_torque(name, valve, engine, design, camshaft)
     dynamics = ("unchanged over the range: the phase turns the whole camshaft, its lift law about the camshaft and "

@@ -17,6 +17,7 @@ from .. import switching as sw
 from ..bibliography import cite
 from ..checks import Check, check
 from ..dynamics.sweep import sweep, sweep_size
+from ..locale import note
 from ..spring_materials import grade
 from ..specification.messages import Problem, SpecError
 from ..springs import DEFLECTION_RATIO_RANGE, enveloping_line
@@ -185,7 +186,7 @@ def switching_stage(name, switching, valve, engine, design) -> SwitchingResult:
     checks = (
         check("switching.jump_speed", (jump if np.isfinite(jump) else speeds[-1]) / omega, low=1.0,
               source=cite("norton2009", "the chapter on the dynamics of follower trains"), severity="failure",
-              note="" if np.isfinite(jump) else f"no jump up to {SPEEDS_OVER:g} x the over-speed"),
+              note="" if np.isfinite(jump) else note("switching.no_jump", factor=SPEEDS_OVER)),
         check("switching.valve_held", valve_force / design.drive.spring.preload, high=1.0,
               source=cite("hendriksma2007"), severity="failure"),
         check("switching.spring_stress", stress, high=strength, unit="MPa", severity="failure",

@@ -9,7 +9,10 @@ in this folder, loaded once:
 * ``LANG.toml`` ``[checks]``: the check as the report in ``LANG`` names it;
 * ``LANG.toml`` ``[springs]``: the springs whose own checks are named after them;
 * ``LANG.toml`` ``[verdict]``: the verdict of a design, the same on the command line, in the report and in ``repr``;
-* ``LANG.toml`` ``[designer]``: the words of the designer in the browser (``valvetrain serve``, :mod:`valvetrain.web`).
+* ``LANG.toml`` ``[designer]``: the words of the designer in the browser (``valvetrain serve``, :mod:`valvetrain.web`);
+* ``LANG.toml`` ``[notes]``: the notes of the checks (how a value was obtained: where, at which speed), each a code
+  with parameters (:func:`note`), rendered by :func:`note_text` in every language, its numbers by
+  :func:`number_text`.
 
 ``{name}`` in a text stands for the parameter ``name``.  ``tests/locale/test_catalogue.py`` fails when a code lacks a
 text in a language or a text names no code the package uses; docs/checks.md lists every code.
@@ -19,8 +22,9 @@ check of the code) or the printed text, which :func:`code_of` maps to the code a
 make it with ``checks.check("domain.quantity", value, low, high, source=..., unit=..., params={...})`` and give the
 code its texts with ``PYTHONPATH=src python tools/check_codes.py add CODE "record text" "English name" "Russian
 name"`` (or edit the files by hand and run ``tools/check_codes.py``, which rewrites docs/checks.md).  A text made with
-numbers (a check's note) is translated by its skeleton: its Russian goes into ``ru.toml`` ``[texts]`` (the English
-with ``{}`` for each number).  :mod:`.wording` words the data the physics returns (the spring diagnosis, a measured
+numbers is a code of ``[notes]`` with its numbers as parameters (``{speed_rpm:.0f}``: the format of the number,
+the same in every language); the texts of the stages not yet made so are translated by their skeleton (``ru.toml``
+``[texts]``, the English with ``{}`` for each number).  :mod:`.wording` words the data the physics returns (the spring diagnosis, a measured
 table's fit reason) in every language.
 
 To add a language: a ``LANG.toml`` with every section, the language in :data:`valvetrain.languages.LANGS`, its symbol
@@ -30,6 +34,7 @@ column in :data:`valvetrain.units.UNITS` and its texts in :mod:`valvetrain.repor
 
 from functools import cache
 from importlib.resources import files
+import numbers
 import re
 import string
 import tomllib
@@ -125,6 +130,50 @@ def code_table() -> str:
     lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
     lines += ["| " + " | ".join(cell.replace("|", "\\|") for cell in row) + " |" for row in rows]
     return "\n".join(lines)
+
+
+def number_text(x, spec, lang="en") -> str:
+    """A number of a text in ``lang``, formatted by ``spec`` (:func:`format`'s), with a decimal comma in Russian: the
+    one rule of the numbers of the catalogue's texts.
+
+    >>> number_text(1.25, ".3g"), number_text(1.25, ".3g", "ru"), number_text(-7200.4, ".0f", "ru")
+    ('1.25', '1,25', '-7200')
+    """
+    text = format(x, spec)
+    return text.replace(".", ",") if lang == "ru" else text
+
+
+class _Numbers(string.Formatter):
+    """The catalogue's formatter in one language: a number by :func:`number_text`, any other value as it is."""
+
+    def __init__(self, lang):
+        self.lang = lang
+
+    def format_field(self, value, format_spec):
+        if isinstance(value, numbers.Real) and not isinstance(value, bool):
+            return number_text(value, format_spec, self.lang)
+        return format(value, format_spec)
+
+
+def note(code, **params) -> tuple[tuple[str, tuple], ...]:
+    """A check's note as data: one part, the code of ``[notes]`` and its parameters (numbers in SI or display units
+    as the text says, never preformatted); parts add up (``note(a) + note(b)``: joined by ``"; "``).
+
+    >>> note("hydraulic.largest_at", speed_rpm=7000.0)
+    (('hydraulic.largest_at', (('speed_rpm', 7000.0),)),)
+    """
+    _template("notes", code)
+    return ((code, tuple(params.items())),)
+
+
+def note_text(parts, lang="en") -> str:
+    """A check's note (:func:`note`'s parts) in ``lang``, the parts joined by ``"; "``.
+
+    >>> note_text(note("hydraulic.largest_at", speed_rpm=7012.4), "ru")
+    'наибольший при 7012 мин⁻¹'
+    """
+    formatter = _Numbers(lang)
+    return "; ".join(formatter.format(_template("notes", code, lang), **dict(params)) for code, params in parts)
 
 
 def verdict(counts, lang="en") -> tuple[str, str]:

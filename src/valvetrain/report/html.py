@@ -1,7 +1,6 @@
 """The HTML design report (Jinja2 template ``templates/report.html``): one file, its figures embedded."""
 
 import base64
-from collections.abc import Callable
 from dataclasses import fields, is_dataclass
 from html import unescape
 
@@ -12,7 +11,7 @@ from markupsafe import Markup
 import numpy as np
 
 from .. import __version__
-from ..checks import describe_range, tally
+from ..checks import tally
 from ..design.dynamics import SOURCES as DYNAMICS_SOURCES
 from ..design.grinding import SOURCES as GRINDING_SOURCES
 from ..design.hydraulic_actuation import SOURCES as HYDRAULIC_SOURCES
@@ -25,13 +24,16 @@ from ..specification.si import si
 from ..tables import lift_table_columns
 from ..bibliography import WORKS, corrections_notes
 from ..units import to_display
-from ..locale import catalogue, verdict
-from .i18n import SYMBOLS, TEXT
+from ..locale import verdict
+from .check_rows import (chapter_checks, check_class, check_margin, check_name, check_note, check_range,
+                         check_verdict, marked_citations, not_checked)
+from .i18n import TEXT
 from .numbers import number, percent
 from .russian import russian_citations, russian_typography
 from .typography import typography
 from .worked import crank_lines, flow_lines, law_lines, spring_lines, strength_lines, time_area_lines
 from .switching import switching_chapters
+from .symbols import INPUT_SYMBOLS, WARNING_SYMBOLS, symbol_legend
 from .names import has_name, label, link_names, quantity_text, translate, unevaluated_text, unit_text, value_text
 from ..locale.wording import diagnosis_text, fit_reason
 
@@ -88,35 +90,12 @@ def cell(key, value, lang) -> str:
     return fmt(value, lang)
 
 
-def check_range(c, lang) -> str:
-    """The allowed range of a check record or :class:`~valvetrain.checks.Check` with its unit in ``lang``."""
-    get = c.get if isinstance(c, dict) else lambda k: getattr(c, k)
-    unit = get("unit")
-    low, high = get("low"), get("high")
-    if not isinstance(c, dict):
-        low, high = (None if x is None else to_display(x, unit) for x in (low, high))
-    text = describe_range(low, high, unit_text(unit, lang), bool(get("strict_low") or False))
-    return TEXT[lang]["any"] if text == "any" else text
-
-
 def check_value(c, lang) -> str:
     """The value of a :class:`~valvetrain.checks.Check` with its unit in ``lang``, or that it cannot be evaluated
     and why (:func:`~valvetrain.report.names.unevaluated_text`)."""
     if not c.evaluated:
         return unevaluated_text(c, lang)
     return f"{fmt(c.shown_value, lang)} {unit_text(c.unit, lang)}".rstrip()
-
-
-NOT_CHECKED = re.compile(r"(\w+): not checked, (.*) not given")
-
-
-def not_checked(note, lang) -> str:
-    """``"camshaft_deflection: not checked, parts.cam_width_mm not given"`` in ``lang``."""
-    m = NOT_CHECKED.fullmatch(note)
-    if not m:
-        return note
-    parts = ", ".join(label(k.strip(), lang) for k in m[2].split(","))
-    return TEXT[lang]["not_checked_note"].format(check=label(m[1], lang), parts=parts)
 
 
 def _quantity(check, lang, parts):
@@ -126,38 +105,6 @@ def _quantity(check, lang, parts):
     if sep and head in parts:
         return Markup('<span class="name">{}</span>: {}').format(head, rest)
     return text
-
-
-def symbol_legend(lang) -> Callable[..., str]:
-    """A Jinja function ``legend(*symbols)``: the symbols not yet explained in this report, each with its meaning
-    and unit (every symbol is explained where it is first used)."""
-    seen = set()
-
-    def legend(*keys):
-        new = [k for k in keys if k not in seen]
-        seen.update(new)
-        if not new:
-            return ""
-        items = Markup("; ").join(Markup("{} — {}").format(Markup(SYMBOLS[k][0]), Markup(SYMBOLS[k][1 if lang == "en" else 2]))
-                                  for k in new)
-        return Markup('<p class="legend">{}: {}.</p>').format(TEXT[lang]["where"], items)
-    return legend
-
-
-INPUT_SYMBOLS = ("i", "dg", "phi_seat", "hv", "h0", "ik", "r0", "w1", "Phi123", "Kz")
-"""Symbols of the valve's input table."""
-
-WARNING_SYMBOLS = {
-    "V1": ("flow.throat_velocity",), "V2": ("flow.curtain_velocity",), "V3": ("flow.time_area_velocity",),
-    "vvp": ("flow.charge_velocity",), "aT": ("tappet_acceleration.max", "tappet_acceleration.min"),
-    "dg": ("flow.throat_to_bore", "flow.equivalent_throat_to_bore", "flow.lift_to_throat"),
-    "hv": ("flow.lift_to_throat", "cam.base_radius_to_lift", "hydraulic.max_lift", "hydraulic.residual_lift"),
-    "h0": ("valve.clearance",), "ik": ("drive.rocker_ratio",), "r0": ("cam.base_radius_to_lift",),
-    "rho": ("profile.undercut_flat", "profile.rho_min"), "Kz": ("spring.reserve",),
-    "Phi123": ("law.kurz.phi2_to_phi3", "law.kurz.negative_to_positive"), "w1": ("ramp.end_velocity",),
-    "lambda": ("engine.rod_ratio", "crank.rod_ratio"),
-}
-"""Symbols of the legend that the checks of these codes use."""
 
 
 def _coefficient_symbols(coefficients):
@@ -254,115 +201,9 @@ def _fit_reason(rec, lang):
 
 
 def _strength(st):
-    """The strength chapter of a valve from its :class:`~valvetrain.design.drive.StrengthResult`: the rows and the
+    """The strength chapter of a valve from its :class:`~valvetrain.design.drive_strength.StrengthResult`: the rows and the
     checks whose parts are not given (its checks are the chapter's, :func:`chapter_checks`)."""
     return {"rows": shown(st, nested=False), "not_checked": st.not_checked}
-
-
-CHECK_CHAPTERS = {
-    "flow": "flow", "valve.seat_angle": "flow", "flow.time_area_velocity": "time_area",
-    "flow.charge_velocity": "time_area", "law": "law", "ramp": "law", "tappet_acceleration": "law", "timing": "law",
-    "seating_velocity": "law", "valve.clearance": "law", "drive.rocker_ratio": "law", "synthesis": "law",
-    "cam": "geometry", "profile": "geometry", "piston": "geometry", "follower": "geometry", "spring": "springs",
-    "drive.specific_mass": "springs", "gas_force": "springs", "strength": "strength", "dynamics": "dynamics",
-    "grinding": "grinding", "hydraulic": "hydraulic", "lubrication": "lubrication", "lash_adjuster": "lash_adjuster",
-    "engine": "engine", "crank": "crank", "camshaft": "camshaft", "ports": "ports", "breathing": "breathing",
-    "phaser": "phaser", "switching": "switching",
-}
-"""The chapter of the report that shows the checks of a code: the entry of the code's longest dotted prefix
-(:func:`check_chapter`)."""
-
-
-def check_chapter(code) -> str:
-    """The chapter of the report that shows a check of ``code`` (:data:`CHECK_CHAPTERS`), ``"other"`` for a code
-    of no chapter.
-
-    >>> check_chapter("flow.throat_velocity"), check_chapter("flow.charge_velocity"), check_chapter("new.code")
-    ('flow', 'time_area', 'other')
-    """
-    parts = code.split(".")
-    for n in range(len(parts), 0, -1):
-        if ".".join(parts[:n]) in CHECK_CHAPTERS:
-            return CHECK_CHAPTERS[".".join(parts[:n])]
-    return "other"
-
-
-def chapter_checks(results) -> dict:
-    """Every check of a design in the chapter of the report that shows it: ``{valve name or None: {chapter:
-    [checks]}}`` (None: the engine's chapters).  A valve's check whose chapter the report does not have (a chapter
-    of a stage that did not run, a code of no chapter) is in the valve's ``"other"``, an engine's in
-    ``"engine"``: every check is shown once, with its limit."""
-    present = {None: {"engine", "crank" if results.crank is not None else "",
-                      "camshaft" if results.camshaft is not None else "",
-                      "ports" if results.two_stroke is not None else "",
-                      "breathing" if results.breathing is not None else ""}}
-    for name, v in results.valves.items():
-        present[name] = {"flow", "law", "time_area", "geometry", "springs", "strength", "other",
-                         *(k for k in ("dynamics", "grinding", "hydraulic", "lubrication", "lash_adjuster")
-                           if getattr(v, k) is not None), "phaser" if name in results.phasers else "",
-                         "switching" if name in results.switching else ""}
-    found = {key: {} for key in present}
-    for c in results.checks:
-        chapter = check_chapter(c.code)
-        if chapter not in present[c.valve]:
-            chapter = "engine" if c.valve is None else "other"
-        found[c.valve].setdefault(chapter, []).append(c)
-    return found
-
-
-def check_verdict(c, lang) -> str:
-    """A check's verdict in words (the colour of its row says the same): within or outside its range, which says
-    the kind of the range (an allowable limit, a recommended range, a remark's), accepted in the specification,
-    or not evaluated."""
-    t = TEXT[lang]
-    if not c.evaluated:
-        return t["verdict_unevaluated"]
-    text = t[("verdict_in_" if c.passed else "verdict_out_") + c.severity]
-    return f"{text}; {t['verdict_accepted']}" if c.accepted and not c.passed else text
-
-
-def check_margin(c, lang) -> str:
-    """The margin of a check in per cent (:attr:`~valvetrain.checks.Check.shown_margin`), "-" where the check has
-    no bound or no value."""
-    margin = c.shown_margin
-    return percent(margin, lang) if np.isfinite(margin) else "-"
-
-
-def check_class(c) -> str:
-    """The class of a check's row: ``pass``, or the severity of a check outside its range (``fail``, ``warn``,
-    ``info``), ``accepted`` added for an accepted one."""
-    if c.passed:
-        return "pass"
-    level = {"failure": "fail", "warning": "warn"}.get(c.severity, "info")
-    return f"{level} accepted" if c.accepted else level
-
-
-SHORT_FORMS = re.compile("|".join(re.escape(w.short) for w in WORKS.values()))
-"""The in-text form of every work of the bibliography."""
-
-
-def marked_citations(text) -> Markup:
-    """``text`` (a check's note, in the report's language) with the citations of the bibliography in it marked as
-    citations (``span.cite``)."""
-    parts = SHORT_FORMS.split(text)
-    cites = [Markup('<span class="cite">{}</span>').format(m) for m in SHORT_FORMS.findall(text)]
-    return Markup("").join(Markup.escape(p) + (cites[i] if i < len(cites) else "") for i, p in enumerate(parts))
-
-
-PART_PARAMS = ("port",)
-"""Parameters of a check's code that name a part the designer named (shown as names, in every language)."""
-
-
-def check_name(c, lang) -> str:
-    """A check's quantity in ``lang`` without its valve's or chapter's name (the chapter of the report that shows
-    it names it), a part the designer named marked as a name."""
-    text = quantity_text(c, lang)
-    head, sep, rest = text.partition(": ")
-    if sep and (head == c.valve or head in catalogue(lang)["chapters"].values()):
-        text = rest
-    names = [str(v) for k, v in c.params if k in PART_PARAMS]
-    return Markup("").join(Markup('<span class="name">{}</span>').format(part) if part in names else part
-                           for part in re.split(f"({'|'.join(map(re.escape, names))})", text)) if names else text
 
 
 DYNAMICS_HEADLINE = ("speed_range", "speeds", "jump_speed", "bounce_speed", "max_seating_velocity",
@@ -624,6 +465,7 @@ def render_report(results, plots, lang="en", folder=None) -> str:
     env.filters["margin"] = lambda c: check_margin(c, lang)
     env.filters["check_class"] = check_class
     env.filters["check_name"] = lambda c: check_name(c, lang)
+    env.filters["check_note"] = lambda c: check_note(c, lang)
     env.filters["cited"] = marked_citations
     env.globals["cell"] = lambda key, value: cell(key, value, lang)
     env.globals["legend"] = symbol_legend(lang)

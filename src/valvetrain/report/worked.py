@@ -274,7 +274,7 @@ def strength_lines(parts, result, lift_table, follower, lang="en", roller_radius
     parts : valvetrain.specification.models.Parts
         The valve's ``[parts]`` inputs as given (cam width [mm], contact modulus [MPa], pushrod diameter, bore and length
         [mm] and modulus [MPa]).
-    result : valvetrain.design.drive.StrengthResult
+    result : valvetrain.design.drive_strength.StrengthResult
         The strength stage's result (its checks, the angle of the largest contact stress and the cam force there,
         the largest cam force), read in the units results.json shows them (cam deg, N).
     lift_table : dict

@@ -7,7 +7,8 @@ the design never does.  Timing angles are crank degrees, cam segment angles cams
 from .cam_base import main_half_angle_deg
 from .cams import LAWS, REGISTRY, Cam
 from .messages import SpecError
-from .models import Engine, Spec, Valve, resolve_path, validate
+from .engine_sections import resolve_path
+from .models import Engine, Spec, Valve, validate
 from .reading import example_spec, example_text, input_files, load_spec, parse_spec, spec_toml
 from .si import si
 from .validate import crank_geometry, set_keys, spec_document

@@ -12,7 +12,8 @@ import tomli_w
 
 from ..files import shown_path
 from .messages import Problem, SpecError
-from .models import Spec, resolve_path, validate
+from .engine_sections import resolve_path
+from .models import Spec, validate
 
 
 def input_files(spec) -> list[Path]:

@@ -1,5 +1,6 @@
 """Cam synthesis: design constraints as functions of a computed design (:mod:`.constraints`) and the optimiser
-(:mod:`.optimize`).
+(:mod:`.optimize`): its variables (:mod:`.variables`), objectives (:mod:`.objectives`) and one evaluation of a point
+or a population (:mod:`.problem`).
 
 The optimiser takes its design variables as specification keys and evaluates a point fast: it samples the law on a
 grid and around its extremes (the objective by the flow module's quadrature, the margins on the refined contour, the

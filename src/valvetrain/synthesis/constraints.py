@@ -18,6 +18,7 @@ import numpy as np
 
 from .. import strength
 from ..checks import Check, check
+from ..locale import note
 from ..design.dynamics import CHECK_SOURCE
 from ..design.valve import follower_accelerations
 from ..layouts import finger_inertia_force
@@ -131,7 +132,7 @@ def concave_radius(design, wheel_radius) -> Check | None:
     radius = design.profile.contact.min_concave_radius
     ratio = 0.0 if radius is None else wheel_radius / abs(radius)
     return check("synthesis.concave_radius", ratio, high=1.0, source=SOURCE_SYNTHESIS,
-                 severity="failure", note="no concave stretch" if radius is None else "")
+                 severity="failure", note=note("synthesis.no_concave_stretch") if radius is None else "")
 
 
 def spring_reserve_value(design, preload=None, rate=None) -> float:
@@ -254,7 +255,7 @@ def contact_stress(design, high, width, modulus=strength.STEEL_MODULUS, top=1.0,
     return check("synthesis.contact_stress", contact_stress_value(design, width, modulus, top, valve), high=high,
                  unit="MPa",
                  source=SOURCE_MANUAL + ", eqs. (7.4)-(7.5)", severity="failure",
-                 note=f"cam width {width / MM:.4g} mm, from standstill to {top:.4g} x the rated speed")
+                 note=note("synthesis.cam_width", width_mm=width / MM, top=top))
 
 
 def rho_min(design, low) -> Check:
@@ -310,7 +311,7 @@ def no_jump(design, factor) -> Check | None:
     value = (d.jump_speed if jumps else d.speed_range[1]) / rated
     return check("dynamics.jump_speed", value, low=factor, severity="failure",
                  source=f"{CHECK_SOURCE}: no separation below {factor:g} x the rated speed",
-                 note="" if jumps else "no separation in the swept range: its top speed")
+                 note="" if jumps else note("synthesis.swept_top"))
 
 
 def constraints(design, limits=Limits(), valve=None) -> list[Check]:
