@@ -830,8 +830,8 @@ def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, 
         The engine speeds [rad/s] whose cam force loads the parts (the strength stage's range).  Given, a one-mass
         train simulates only the speeds of its range that decide the jump speed, the largest seating velocity (of
         the range and up to the rated speed) and the largest cam force in ``load_range``
-        (:func:`~valvetrain.dynamics.sweep.headline_sweep`; a tolerance study's samples): the per-speed table and
-        the maps then have those speeds alone, and ``progress`` is not called.  A multi-mass train is swept in
+        (:func:`~valvetrain.dynamics.sweep.headline_sweep`, the rated speed in its first sweep; a tolerance study's
+        samples): the per-speed table and the maps then have those speeds alone, and ``progress`` is not called.  A multi-mass train is swept in
         full: with coil surge its separations and forces come and go from one speed to the next (the built-in
         example's, 200 speeds: a first separation 20 % below the one the coarse grid finds, a cam stress 7 % above
         the largest it finds).
@@ -860,15 +860,16 @@ def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, 
     revs = params.revolutions
     refuse_large_sweep(dyn, train, speeds * to_cam, revs, f"{at}.dynamics", f"speeds = {dyn.speeds}")
     if load_range is not None and dyn.model == "1dof":
-        result = headline_sweep(law, train, speeds * to_cam, revs, step_deg,
-                                load_range=tuple(s * to_cam for s in load_range),
-                                seating_top=engine.rated_speed * to_cam)
+        result, rated_sweep = headline_sweep(law, train, speeds * to_cam, revs, step_deg,
+                                             load_range=tuple(s * to_cam for s in load_range),
+                                             seating_top=engine.rated_speed * to_cam,
+                                             extra=[engine.rated_speed * to_cam])
         speeds = result.cam_speeds / to_cam
     else:
         if progress is not None:
             progress(0, dyn.speeds)
         result = sweep(law, train, speeds * to_cam, revs, step_deg, progress=progress)
-    rated_sweep = sweep(law, train, [engine.rated_speed * to_cam], revs, step_deg)
+        rated_sweep = sweep(law, train, [engine.rated_speed * to_cam], revs, step_deg)
     rated = rated_sweep.speed(0)
     refined = refine(law, train, result, revs, step_deg, seating_top=engine.rated_speed * to_cam, extra=rated_sweep)
     m, c, kk = params.mass, params.drive_stiffness, params.spring_rate
