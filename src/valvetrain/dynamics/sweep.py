@@ -925,7 +925,8 @@ by :func:`headline_sweep`."""
 
 
 def headline_sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, bounce_tolerance=BOUNCE_TOLERANCE,
-                   load_range=(0.0, np.inf), stride=HEADLINE_STRIDE, seating_top=np.inf, extra=None):
+                   load_range=(0.0, np.inf), stride=HEADLINE_STRIDE, seating_top=np.inf,
+                   extra=None) -> SweepResult | tuple[SweepResult, SweepResult]:
     """The speeds of a sweep that decide its jump speed, its largest seating velocity and its largest loads, without
     the others.
 
