@@ -7,10 +7,10 @@ each with a [dynamics] sweep of 200 speeds) gets four tolerances (both clearance
 masses, normal sigma 1 g).  Each tree is measured in a process of its own (``PYTHONPATH`` its ``src``), this tree
 first, then the baseline; printed for each:
 
-* the processor time of one sample (all threads of the process, the median of 15; the other jobs of a shared machine
-  change it less than the wall time), :func:`valvetrain.tolerance.evaluate_sample`, beside the full design of the
-  same document (:func:`valvetrain.design.run` as ``valvetrain run`` designs, every speed of the sweeps), and the
-  time 10^4 samples take at it on two idle cores;
+* the processor time of one sample (all threads of the process, the median over 16 distinct samples of the study;
+  the other jobs of a shared machine change it less than the wall time), :func:`valvetrain.tolerance.evaluate_sample`,
+  beside the full design of the same documents (:func:`valvetrain.design.run` as ``valvetrain run`` designs, every
+  speed of the sweeps; the median of 6), and the time 10^4 samples take at it on two idle cores;
 * ``valvetrain tolerance`` of N Latin-hypercube samples as a whole command (start-up, validation, the samples, the
   writing) serially, with ``--workers 2`` and on a Dask ``LocalCluster`` of two one-thread worker processes: the
   wall time and samples per second of each, the processor time of the command and its worker processes (serial and
@@ -82,16 +82,30 @@ def tolerance(spec, out, samples, *backend):
             "result": {k: result[k] for k in ("checks", "headlines", "refused", "failed")}}
 
 
-def cpu_per_call(function, document, repeat):
-    """Processor time of one call [s]: the median of ``repeat`` calls after a warm-up call (the median, as the other
-    jobs of a shared machine slow some calls down)."""
-    function(document)
+def cpu_per_call(function, documents):
+    """Processor time of one call [s]: the median of the calls on ``documents`` after a warm-up call on the first
+    (the median, as the other jobs of a shared machine slow some calls down)."""
+    function(documents[0])
     times = []
-    for _ in range(repeat):
+    for document in documents:
         c0 = time.process_time()
         function(document)
         times.append(time.process_time() - c0)
     return statistics.median(times)
+
+
+def distinct_samples(path, count):
+    """``count`` samples of the study of the file ``path`` (Latin hypercube, seed 1), the documents a study designs:
+    a process designing one document again would take the designs it keeps of the last
+    (:data:`valvetrain.tolerance.DESIGNS`)."""
+    from valvetrain.specification import load_spec
+    from valvetrain.study import read_document, with_values
+    from valvetrain.tolerance import check_tolerances, draw
+
+    document, spec = read_document(path), load_spec(path)
+    keys = [t.key for t in spec.tolerances]
+    values = draw(spec, check_tolerances(document, spec), count, "lhs", 1)
+    return [with_values(document, dict(zip(keys, map(float, row), strict=True))) for row in values]
 
 
 def measure(samples):
@@ -101,7 +115,6 @@ def measure(samples):
     import valvetrain
     from valvetrain.design import run
     from valvetrain.specification import example_text, validate
-    from valvetrain.study import read_document
     from valvetrain.tolerance import evaluate_sample
 
     out = {"tree": str(Path(valvetrain.__file__).parent.parent)}
@@ -109,10 +122,10 @@ def measure(samples):
         tmp = Path(tmp)
         spec = tmp / "engine.toml"
         spec.write_text(example_text() + TOLERANCES, encoding="utf-8")
-        document = read_document(spec)
+        documents = distinct_samples(spec, 16)
         out["load"] = os.getloadavg()[0]
-        out["full"] = cpu_per_call(lambda d: run(validate(d)), document, 5)   # first: evaluate_sample keeps the heap
-        out["sample"] = cpu_per_call(evaluate_sample, document, 15)
+        out["full"] = cpu_per_call(lambda d: run(validate(d)), documents[:6])   # first: evaluate_sample keeps the heap
+        out["sample"] = cpu_per_call(evaluate_sample, documents)
         out["serial"] = tolerance(spec, tmp / "serial", samples)
         out["workers"] = tolerance(spec, tmp / "workers", samples, "--workers", "2")
         with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster:

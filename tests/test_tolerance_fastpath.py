@@ -81,3 +81,26 @@ def test_a_sample_gives_the_full_designs_answers(index):
             assert not np.isfinite(c.margin), cid
         else:
             assert margin == pytest.approx(c.margin, rel=MARGIN_RTOL, abs=1e-12), cid
+
+
+def test_a_valve_a_sample_leaves_as_it_was_is_not_designed_again(monkeypatch):
+    """Two samples that differ in the intake's clearance alone, designed in turn in one process: the second designs
+    its intake only, its exhaust is the first's design (tolerance.DESIGNS), and its record is the one a process that
+    has designed nothing gives (the valves without their [dynamics], for the test's time)."""
+    import valvetrain.design as design
+    import valvetrain.tolerance as tolerance
+
+    first = samples(1, 38)[0]
+    for valve in first["valves"].values():
+        del valve["dynamics"]
+    second = with_values(first, {"valves.intake.clearance_mm": first["valves"]["intake"]["clearance_mm"] + 0.01})
+    monkeypatch.setattr(tolerance, "DESIGNS", {})
+    evaluate_sample(first)
+    designed, real = [], design.design_valve
+    monkeypatch.setattr(design, "design_valve", lambda name, *args, **kw: designed.append(name) or real(name, *args,
+                                                                                                          **kw))
+    record = evaluate_sample(second)
+    assert designed == ["intake"]
+    monkeypatch.setattr(tolerance, "DESIGNS", {})
+    assert evaluate_sample(second) == record
+    assert designed == ["intake", "intake", "exhaust"]

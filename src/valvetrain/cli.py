@@ -539,7 +539,7 @@ def tolerance(file, samples, method, seed, out, workers, scheduler, max_samples,
     from .report.tolerance import report_html
     from .study import StudyStopped, evaluate, read_document, too_large, with_values
     from .tolerance import (RECORDS, RecordFile, ToleranceError, check_tolerances, draw, evaluate_sample,
-                            fingerprint, sample_count, summary)
+                            fingerprint, fresh_sample, sample_count, summary)
 
     spec = _load(file)
     if scheduler is not None and workers > 1:
@@ -556,7 +556,7 @@ def tolerance(file, samples, method, seed, out, workers, scheduler, max_samples,
         centres = check_tolerances(document, spec)
         total = sample_count(samples, len(centres), method)
         large = too_large(total, max_samples, document, workers if scheduler is None else 1, "samples",
-                          "--max-samples", evaluate_sample)
+                          "--max-samples", fresh_sample)
         if large:
             raise ToleranceError(f"--samples: {large}")
         values = draw(spec, centres, samples, method, seed)

@@ -10,7 +10,7 @@ import pytest
 
 from valvetrain.dynamics.models import one_mass_train
 from valvetrain.dynamics.perturbation import kinetostatic_force, perturbation_parameter, quasi_static_lift
-from valvetrain.dynamics.sweep import bounces, headline_sweep, runs, seating, simulate, sweep
+from valvetrain.dynamics.sweep import bounces, headline_sweep, runs, seating, simulate, sweep, sweep_events
 from valvetrain.laws import KurzLaw
 
 from reference_dynamics import RPM, appendix_train, harmonic_cam, reference_events, seat_crossings, spec12
@@ -242,8 +242,18 @@ def test_headline_sweep_has_the_full_sweeps_headlines():
     speeds = np.linspace(0.5, 1.2, 141) * exact * 1.0013
     load_range = (speeds[0], 0.9 * exact)
     full = sweep(harmonic_cam(lift, phi), train, speeds)
-    part = headline_sweep(harmonic_cam(lift, phi), train, speeds, load_range=load_range)
+    extra = [0.8 * exact]
+    part, alone = headline_sweep(harmonic_cam(lift, phi), train, speeds, load_range=load_range, extra=extra)
     assert part.cam_speeds.size < speeds.size / 2 and np.all(np.diff(part.cam_speeds) > 0)
+    # the events joined from the two sweeps' are those found afresh from the joined rows; the extra speed, simulated
+    # with the coarse grid, has the rows and the events of its own sweep
+    for got, rows, own in ((part.events, part, None), (alone.events, alone, sweep(harmonic_cam(lift, phi), train,
+                                                                                        extra))):
+        for name, value in vars(sweep_events(rows)).items():
+            np.testing.assert_array_equal(getattr(got, name), value, err_msg=name)
+        if own is not None:
+            np.testing.assert_array_equal(rows.lift, own.lift)
+            np.testing.assert_array_equal(rows.contact_force, own.contact_force)
     head, expected = part.headline(), full.headline()
     assert abs(head["jump_speed"] / exact - 1) < 1e-3
     assert head["jump_speed"] == expected["jump_speed"]

@@ -830,11 +830,12 @@ def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, 
         The engine speeds [rad/s] whose cam force loads the parts (the strength stage's range).  Given, a one-mass
         train simulates only the speeds of its range that decide the jump speed, the largest seating velocity (of
         the range and up to the rated speed) and the largest cam force in ``load_range``
-        (:func:`~valvetrain.dynamics.sweep.headline_sweep`; a tolerance study's samples): the per-speed table and
-        the maps then have those speeds alone, and ``progress`` is not called.  A multi-mass train is swept in
-        full: with coil surge its separations and forces come and go from one speed to the next (the built-in
-        example's, 200 speeds: a first separation 20 % below the one the coarse grid finds, a cam stress 7 % above
-        the largest it finds).
+        (:func:`~valvetrain.dynamics.sweep.headline_sweep`, the rated speed in its first sweep; a tolerance study's
+        samples): the per-speed table and the maps then have those speeds alone, the bounce onset speed is theirs,
+        not refined (no check reads it), and ``progress`` is not called.  A multi-mass train is swept in full:
+        with coil surge its separations and forces come and go from one speed to the next (the built-in example's,
+        200 speeds: a first separation 20 % below the one the coarse grid finds, a cam stress 7 % above the largest
+        it finds).
 
     Returns
     -------
@@ -859,18 +860,21 @@ def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, 
     step_deg = dyn.step / DEG
     revs = params.revolutions
     refuse_large_sweep(dyn, train, speeds * to_cam, revs, f"{at}.dynamics", f"speeds = {dyn.speeds}")
-    if load_range is not None and dyn.model == "1dof":
-        result = headline_sweep(law, train, speeds * to_cam, revs, step_deg,
-                                load_range=tuple(s * to_cam for s in load_range),
-                                seating_top=engine.rated_speed * to_cam)
+    few = load_range is not None and dyn.model == "1dof"
+    if few:
+        result, rated_sweep = headline_sweep(law, train, speeds * to_cam, revs, step_deg,
+                                             load_range=tuple(s * to_cam for s in load_range),
+                                             seating_top=engine.rated_speed * to_cam,
+                                             extra=[engine.rated_speed * to_cam])
         speeds = result.cam_speeds / to_cam
     else:
         if progress is not None:
             progress(0, dyn.speeds)
         result = sweep(law, train, speeds * to_cam, revs, step_deg, progress=progress)
-    rated_sweep = sweep(law, train, [engine.rated_speed * to_cam], revs, step_deg)
+        rated_sweep = sweep(law, train, [engine.rated_speed * to_cam], revs, step_deg)
     rated = rated_sweep.speed(0)
-    refined = refine(law, train, result, revs, step_deg, seating_top=engine.rated_speed * to_cam, extra=rated_sweep)
+    refined = refine(law, train, result, revs, step_deg, seating_top=engine.rated_speed * to_cam, extra=rated_sweep,
+                     onset=not few)
     m, c, kk = params.mass, params.drive_stiffness, params.spring_rate
     eps = perturbation_parameter(m, c, kk, speeds * to_cam)
     per = speed_records(result, speeds, eps, refined.events)

@@ -24,7 +24,7 @@ Events (Shang Hanji (1988), sections 3.1-3.2):
 """
 
 from concurrent.futures import ThreadPoolExecutor
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, fields, replace
 from functools import cached_property
 import sys
 from typing import Optional
@@ -876,7 +876,9 @@ PER_SPEED_FIELDS = ("cam_speeds", "lift", "velocity", "acceleration", "contact_f
 
 
 def merged(parts) -> SweepResult:
-    """One :class:`SweepResult` of the speeds of several sweeps of the same train on the same law, by ascending speed.
+    """One :class:`SweepResult` of the speeds of several sweeps of the same train on the same law, by ascending speed,
+    with the parts' :attr:`~SweepResult.events` joined where every part has found its own (the events of a speed are
+    found from its rows alone, :func:`sweep_events`).
 
     Each speed of a sweep is an independent problem integrated on the same excitation samples (:mod:`.kernels`), so a
     speed's rows do not depend on the sweep it was simulated in, but for the revolutions it runs: a block of speeds
@@ -886,14 +888,28 @@ def merged(parts) -> SweepResult:
     rank = np.argsort(np.argsort(np.concatenate([p.cam_speeds for p in parts]), kind="stable"))
     at = np.split(rank, np.cumsum([p.cam_speeds.size for p in parts])[:-1])
 
-    def joined(name):
-        first = getattr(parts[0], name)
+    def joined(rows):
+        first = rows[0]
         out = np.empty((rank.size, *first.shape[1:]), dtype=first.dtype)
-        for p, where in zip(parts, at, strict=True):
-            out[where] = getattr(p, name)
+        for part, where in zip(rows, at, strict=True):
+            out[where] = part
         return out
 
-    return replace(parts[0], **{f: joined(f) for f in PER_SPEED_FIELDS if getattr(parts[0], f) is not None})
+    out = replace(parts[0], **{f: joined([getattr(p, f) for p in parts]) for f in PER_SPEED_FIELDS
+                               if getattr(parts[0], f) is not None})
+    if all("events" in vars(p) for p in parts):
+        vars(out)["events"] = SweepEvents(*(joined([getattr(p.events, f.name) for p in parts])
+                                            for f in fields(SweepEvents)))
+    return out
+
+
+def speeds_of(result, index) -> SweepResult:
+    """The :class:`SweepResult` of the speeds ``index`` (an integer array) of ``result``, with their events where
+    ``result`` has found its own."""
+    out = replace(result, **{f: getattr(result, f)[index] for f in PER_SPEED_FIELDS if getattr(result, f) is not None})
+    if "events" in vars(result):
+        vars(out)["events"] = SweepEvents(*(getattr(result.events, f.name)[index] for f in fields(SweepEvents)))
+    return out
 
 
 def seating_events(result) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -910,14 +926,21 @@ by :func:`headline_sweep`."""
 
 
 def headline_sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, bounce_tolerance=BOUNCE_TOLERANCE,
-                   load_range=(0.0, np.inf), stride=HEADLINE_STRIDE, seating_top=np.inf) -> SweepResult:
+                   load_range=(0.0, np.inf), stride=HEADLINE_STRIDE, seating_top=np.inf,
+                   extra=None) -> SweepResult | tuple[SweepResult, SweepResult]:
     """The speeds of a sweep that decide its jump speed, its largest seating velocity and its largest loads, without
     the others.
 
     Parameters are those of :func:`sweep`; ``load_range`` is the speed range [rad/s camshaft] whose cam force loads
     the parts (the strength stage's), ``stride`` spaces the coarse grid, ``seating_top`` is the highest speed
-    [rad/s camshaft] of the seating velocity graded (the rated speed).  The result holds the speeds simulated, a
-    subset of ``cam_speeds``, by ascending speed.
+    [rad/s camshaft] of the seating velocity graded (the rated speed), ``extra`` more camshaft speeds [rad/s] to
+    simulate with the coarse grid (the rated speed: one kernel call fewer), returned apart.
+
+    Returns
+    -------
+    SweepResult, or (SweepResult, SweepResult) with ``extra``
+        The speeds simulated, a subset of ``cam_speeds``, by ascending speed (and those of ``extra``, in their
+        order), each with its :attr:`~SweepResult.events` found.
 
     Notes
     -----
@@ -932,7 +955,8 @@ def headline_sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, bounce_t
        largest seating velocity, of those up to ``seating_top`` whose seating velocity is within
        :data:`SEATING_NEAR` of their largest (the seating velocity has a peak at each harmonic of the cam the train
        meets: the built-in example's exhaust peaks at 6161 rpm between two coarse speeds lower than one 600 rpm
-       above), and of the coarse speed inside ``load_range`` with the largest contact force.
+       above; of these speeds only those up to ``seating_top``), and of the coarse speed inside ``load_range`` with
+       the largest contact force (only those inside ``load_range``).
 
     So :meth:`SweepResult.headline` gives the full sweep's jump speed unless a separation starts and ends between two
     coarse speeds below the first coarse speed that separates or loses its contact force; the largest seating
@@ -946,30 +970,38 @@ def headline_sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, bounce_t
     done = np.zeros(n, dtype=bool)
     parts = []
     inside = (speeds >= load_range[0] * (1.0 - 1e-12)) & (speeds <= load_range[1] * (1.0 + 1e-12))
+    more_speeds = np.zeros(0) if extra is None else np.atleast_1d(np.asarray(extra, dtype=float))
 
-    def simulated(indices):
+    def simulated(indices, also=np.zeros(0)):
         idx = np.unique(np.clip(np.asarray(indices, dtype=np.int64), 0, n - 1))
         idx = idx[~done[idx]]
-        if idx.size:
-            parts.append(sweep(law, train, speeds[idx], revolutions, step_deg, bounce_tolerance=bounce_tolerance))
+        if idx.size or also.size:
+            both = sweep(law, train, np.concatenate([speeds[idx], also]), revolutions, step_deg,
+                         bounce_tolerance=bounce_tolerance)
+            both.events     # noqa: B018 - found once here; merged() joins the parts' events
+            parts.append(speeds_of(both, np.arange(idx.size)) if also.size else both)
             done[idx] = True
-        return np.flatnonzero(done), merged(parts)
+            return np.flatnonzero(done), merged(parts), speeds_of(both, idx.size + np.arange(also.size))
+        return np.flatnonzero(done), merged(parts), None
 
     ends = np.flatnonzero(inside)[[0, -1]] if inside.any() else []
     graded = speeds <= seating_top * (1.0 + 1e-12)
-    index, result = simulated(np.concatenate([np.arange(0, n, stride), [n - 1], ends,
-                                              np.flatnonzero(graded)[-1:]]))
+    index, result, extra_result = simulated(np.concatenate([np.arange(0, n, stride), [n - 1], ends,
+                                                            np.flatnonzero(graded)[-1:]]), more_speeds)
     jumped, force, seat = seating_events(result)
     below = np.where(graded[index], seat, np.nan)
     near = index[below >= SEATING_NEAR * np.nanmax(below)] if np.isfinite(below).any() else []
-    more = [np.arange(c - stride + 1, c + stride) for c in (
-        index[np.nanargmax(seat)] if np.isfinite(seat).any() else None, *near,
-        index[inside[index]][np.argmax(result.contact_force[inside[index]].max(axis=1))] if inside.any() else None)
-        if c is not None]
+    window = np.arange(1 - stride, stride)
+    more = [c + window for c in ([index[np.nanargmax(seat)]] if np.isfinite(seat).any() else [])]
+    more += [c + window[graded[np.clip(c + window, 0, n - 1)]] for c in near]
+    if inside.any():
+        c = index[inside[index]][np.argmax(result.contact_force[inside[index]].max(axis=1))]
+        more.append(c + window[inside[np.clip(c + window, 0, n - 1)]])
     for hit in (jumped, jumped | (force <= 0.0)):
         if hit.any() and hit.argmax() > 0:
             more.append(np.arange(index[hit.argmax() - 1] - 2, index[hit.argmax()]))
-    return simulated(np.concatenate(more or [[]]))[1]
+    result = simulated(np.concatenate(more or [[]]))[1]
+    return result if extra is None else (result, extra_result)
 
 
 def simulate(law, train, cam_speed, revolutions=3, step_deg=0.1, bounce_tolerance=BOUNCE_TOLERANCE) -> SpeedResult:
