@@ -67,6 +67,7 @@ from .drive import MassResult, SpringResult, StrengthResult
 from .dynamics import DynamicsResult
 from .grinding import GrindingResult
 from .hydraulic_actuation import CylinderPressure, HydraulicResult, speed_plan
+from .lost_motion import LostMotionResult
 from .lash_adjuster import LashAdjusterResult
 from .lubrication import LubricationResult
 from .phaser import PhaserRecord, PhaserResults, phaser_stage
@@ -529,6 +530,7 @@ def results_schema() -> dict[str, Any]:
         "masses": json_schema(MassResult), "spring": json_schema(SpringResult),
         "strength": strength, "dynamics": json_schema(DynamicsResult),
         "grinding": json_schema(GrindingResult), "hydraulic": json_schema(HydraulicResult),
+        "lost_motion": json_schema(LostMotionResult),
         "lubrication": json_schema(LubricationResult), "lash_adjuster": json_schema(LashAdjusterResult)}}
     return {
         "$schema": "https://json-schema.org/draft/2020-12/schema",
