@@ -25,8 +25,8 @@ from .dynamics import SEATING_VELOCITY_MAX, finite_or_none
 from .hydraulic_actuation import MAX_NODE_STEPS, SEATING_SOURCE, cycle_angle, gas_force, hydraulic_drive
 from .results import quantity
 
-SOURCES = (f"{cite('bernard2009')} (the lost-motion drive); {cite('merritt1967')} (the orifice equation of the "
-           f"solenoid valve and the brake); {cite('wylie1978')} (method of characteristics)")
+SOURCES = (f"{cite('bernard2009')} (the lost-motion drive); {cite('merritt1967')} (the orifice equation); "
+           f"{cite('wylie1978')} (wave speed, method of characteristics)")
 """The works the lost-motion stage follows, as the report cites them."""
 
 KEY = "solenoid_opens_crank_deg"
@@ -194,7 +194,7 @@ def _checks(closings, vapour) -> list[Check]:
         params = {"opens": f"{to_display(c.solenoid_opens, 'crank deg'):g}"}
         if c.seating_velocity is not None:
             found.append(check("lost_motion.seating_velocity", abs(c.seating_velocity), high=SEATING_VELOCITY_MAX,
-                               unit="m/s", source=f"{SEATING_SOURCE}; {cite('bernard2009')}: the brake lands the valve",
+                               unit="m/s", source=f"{SEATING_SOURCE}; {cite('bernard2009')}",
                                params=params))
         found.append(check("lost_motion.residual_lift", c.residual_lift, high=BOUNCE_TOLERANCE, unit="mm",
                            severity="failure", source=cite("bernard2009"), params=params,
@@ -202,7 +202,7 @@ def _checks(closings, vapour) -> list[Check]:
                            if c.residual_lift > BOUNCE_TOLERANCE else ""))
         found.append(check("lost_motion.min_pressure", c.min_pressure, low=vapour, strict_low=True, unit="MPa",
                            source=cite("wylie1978"), params=params,
-                           note="the oil column separates (cavitation) where the pressure falls to the vapour pressure"))
+                           note="the liquid column separates (cavitation) where the pressure falls to the vapour pressure"))
     return found
 
 

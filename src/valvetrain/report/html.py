@@ -17,6 +17,7 @@ from ..design.dynamics import SOURCES as DYNAMICS_SOURCES
 from ..design.grinding import SOURCES as GRINDING_SOURCES
 from ..design.hydraulic_actuation import SOURCES as HYDRAULIC_SOURCES
 from ..design.lash_adjuster import SOURCES as ADJUSTER_SOURCES
+from ..design.lost_motion import SOURCES as LOST_MOTION_SOURCES
 from ..design.camshaft import WORKS as CAMSHAFT_SOURCES
 from ..design.lubrication import SOURCES as LUBRICATION_SOURCES
 from ..design.results import NamedValues, shown, shown_value
@@ -266,7 +267,7 @@ CHECK_CHAPTERS = {
     "drive.specific_mass": "springs", "gas_force": "springs", "strength": "strength", "dynamics": "dynamics",
     "grinding": "grinding", "hydraulic": "hydraulic", "lubrication": "lubrication", "lash_adjuster": "lash_adjuster",
     "engine": "engine", "crank": "crank", "camshaft": "camshaft", "ports": "ports", "breathing": "breathing",
-    "phaser": "phaser",
+    "phaser": "phaser", "lost_motion": "lost_motion",
 }
 """The chapter of the report that shows the checks of a code: the entry of the code's longest dotted prefix
 (:func:`check_chapter`)."""
@@ -297,7 +298,8 @@ def chapter_checks(results) -> dict:
                       "breathing" if results.breathing is not None else ""}}
     for name, v in results.valves.items():
         present[name] = {"flow", "law", "time_area", "geometry", "springs", "strength", "other",
-                         *(k for k in ("dynamics", "grinding", "hydraulic", "lubrication", "lash_adjuster")
+                         *(k for k in ("dynamics", "grinding", "hydraulic", "lubrication", "lash_adjuster",
+                                       "lost_motion")
                            if getattr(v, k) is not None), "phaser" if name in results.phasers else ""}
     found = {key: {} for key in present}
     for c in results.checks:
@@ -421,6 +423,16 @@ def _hydraulic(v):
             "gas_rows": [] if gas is None else [(f"gas_force.{k}", val) for k, val in _present(gas, *_except(gas, "source"))],
             "gas_source": None if gas is None else gas.source,
             "notes": h.notes, "table": h.table_file, "sweep_table": h.sweep_table}
+
+
+def _lost_motion(v):
+    """The lost-motion chapter of a valve: the full lift's rows, the table of the solenoid timings, the table's file."""
+    lm = v.lost_motion
+    if lm is None:
+        return None
+    return {"rows": [(k, val) for k, val in shown(lm) if k not in ("closings", "table") and val is not None],
+            "columns": [k for k, _ in shown(lm.closings[0])],
+            "table": [[val for _, val in shown(c)] for c in lm.closings], "file": lm.table_file}
 
 
 LUBRICATION_COLUMNS = ("speed", "min_film", "min_lambda", "boundary", "mixed", "full", "mean_friction_torque",
@@ -674,6 +686,7 @@ def render_report(results, plots, lang="en", folder=None) -> str:
             "dynamics": _dynamics(v.dynamics),
             "grinding": _grinding(name, v),
             "hydraulic": _hydraulic(v),
+            "lost_motion": _lost_motion(v),
             "lubrication": _lubrication(v),
             "lash_adjuster": _lash_adjuster(v),
             "checks": checks[name],
@@ -702,7 +715,7 @@ def render_report(results, plots, lang="en", folder=None) -> str:
         cam_card=results.cam_card,
         conclusions=_conclusions(results, TEXT[lang]), document=spec.get("document", {}), checks=checks[None],
         dynamics_sources=DYNAMICS_SOURCES, grinding_sources=GRINDING_SOURCES,
-        hydraulic_sources=HYDRAULIC_SOURCES, lubrication_sources=LUBRICATION_SOURCES,
+        hydraulic_sources=HYDRAULIC_SOURCES, lost_motion_sources=LOST_MOTION_SOURCES, lubrication_sources=LUBRICATION_SOURCES,
         adjuster_sources=ADJUSTER_SOURCES,
         step=REPORT_STEP_DEG, output=_flatten(spec["output"]), crank=crank, ports=ports,
         camshaft=_camshaft(results, spec, plots), camshaft_sources=CAMSHAFT_SOURCES, breathing=breathing,

@@ -1,4 +1,7 @@
-"""Texts of the report and the plots in English and Russian."""
+"""Texts of the report and the plots in English and Russian (and the chapters' words kept in the message catalogues,
+:mod:`valvetrain.locale`)."""
+
+from ..locale import catalogue
 
 TEXT = {
     "en": {
@@ -1406,3 +1409,6 @@ NOTE_TEXT = {
 
 for _lang, _texts in NOTE_TEXT.items():
     TEXT[_lang].update(_texts)
+
+for _lang in TEXT:      # the words kept in the message catalogues (src/valvetrain/locale/LANG.toml [report])
+    TEXT[_lang].update(catalogue(_lang)["report"])
