@@ -5,33 +5,19 @@ in results.json against its schema, bad input refused naming the key, the value 
 import json
 import math
 from dataclasses import replace
-from pathlib import Path
 
 import jsonschema
 import numpy as np
 import pytest
 
 from valvetrain.design import results_schema, run
-from valvetrain.design.hydraulic_actuation import cycle_angle, hydraulic_drive
+from valvetrain.design.breathing import cylinder_pressure
+from valvetrain.design.hydraulic_actuation import cycle_angle, gas_force, hydraulic_drive
 from valvetrain.design.lost_motion import cam_angle, table_columns
 from valvetrain.export import json_text
 from valvetrain.hydraulic_actuation import simulate
 from valvetrain.specification import SpecError, spec_document, validate
-from valvetrain.specification.reading import load_spec
 from valvetrain.specification.si import si
-
-EXAMPLE = Path(__file__).parents[2] / "examples" / "lost-motion-intake.toml"
-
-
-@pytest.fixture(scope="module")
-def spec():
-    return load_spec(EXAMPLE)
-
-
-@pytest.fixture(scope="module")
-def design(spec):
-    return run(spec)
-
 
 def test_the_earlier_the_solenoid_opens_the_earlier_and_lower_the_valve_closes(design):
     """Each timing closes the valve before the full lift (the solenoid valve shut) does, the earlier the earlier it
@@ -48,8 +34,9 @@ def test_the_earlier_the_solenoid_opens_the_earlier_and_lower_the_valve_closes(d
 
 def test_each_timing_is_the_simulation_with_the_solenoid_opening_there(design, spec):
     """Independent of the stage's bookkeeping: the drive of the section's keys simulated with the solenoid valve
-    opening at the camshaft angle of the timing's crank angle, (phi - phi_nose) / 2, gives the same closing; the full
-    lift is the hydraulic chapter's own revolution (the solenoid valve shut)."""
+    opening at the camshaft angle of the timing's crank angle, (phi - phi_nose) / 2, against the breathing's cylinder
+    pressure on the valve head, gives the same closing; the full lift is the hydraulic chapter's own revolution (the
+    solenoid valve shut)."""
     v = design.valves["intake"]
     lm, h = v.lost_motion, v.hydraulic
     view = si(spec.valves["intake"])
@@ -58,7 +45,10 @@ def test_each_timing_is_the_simulation_with_the_solenoid_opening_there(design, s
     phi = view.hydraulic.lost_motion.solenoid_opens[1]
     theta = math.remainder((phi - v.cam.nose) / 2.0, 2.0 * math.pi)
     assert cam_angle(phi, v.cam.nose, 4) == pytest.approx(theta, abs=1e-12)
-    r = simulate(v.cam.law, replace(drive, solenoid=replace(drive.solenoid, opens=theta)), h.speed / 2.0)
+    cylinder = cylinder_pressure(design.breathing, h.speed, "intake")      # the breathing's cycle on the valve head
+    force = gas_force(view, si(spec.gas), si(spec.engine), v.cam.nose, cylinder)
+    r = simulate(v.cam.law, replace(drive, solenoid=replace(drive.solenoid, opens=theta)), h.speed / 2.0,
+                 gas_force=force)
     angle, velocity, _ = r.seating()
     assert lm.closings[1].valve_closes == pytest.approx(float(cycle_angle(v.cam.nose, angle, 4)), abs=1e-12)
     assert lm.closings[1].seating_velocity == velocity
@@ -91,3 +81,4 @@ def test_bad_lost_motion_keys_are_refused_naming_them(spec, change, message):
     doc["valves"]["intake"]["hydraulic"]["lost_motion"].update(change)
     with pytest.raises(SpecError, match=message):
         run(validate(doc))
+

@@ -59,6 +59,27 @@ class Closing:
 
 
 @dataclass(frozen=True)
+class ClosingBreath:
+    """The breathing at one condition of ``[[breathing.conditions]]`` with the valve's lift of one solenoid timing
+    (or of the full lift)."""
+
+    solenoid_opens: Optional[float] = quantity("solenoid_opens_crank_deg", "crank deg", "where the solenoid valve "
+                                               "opens (null: the full lift, the solenoid valve shut)")
+    valve_closes: Optional[float] = quantity("valve_closes_crank_deg", "crank deg", "where the valve meets its seat")
+    speed: float = quantity("speed_rpm", "rpm", "crank speed of the condition")
+    intake_pressure: float = quantity("intake_pressure_kPa", "kPa", "intake plenum pressure")
+    trapped_mass: float = quantity("trapped_mass_mg", "mg", "mass in the cylinder at the intake valve's closing")
+    volumetric_efficiency: float = quantity("volumetric_efficiency", label="air delivered per cycle over the swept "
+                                            "volume's mass at the intake plenum's density")
+    residual_gas_fraction: float = quantity("residual_gas_fraction", label="share of the trapped mass that was not "
+                                            "fresh charge")
+    pmep: float = quantity("pmep_kPa", "kPa", "pumping mean effective pressure: work on the gas over the exhaust and "
+                           "intake strokes per swept volume")
+    imep: float = quantity("imep_kPa", "kPa", "net indicated mean effective pressure")
+    converged: bool = quantity("converged", label="the cycles repeat within the breathing's tolerance")
+
+
+@dataclass(frozen=True)
 class LostMotionResult:
     """The lost-motion stage: the full lift (the solenoid valve shut, the hydraulic chapter's) and each solenoid
     timing (SI)."""
@@ -77,6 +98,8 @@ class LostMotionResult:
     closings: tuple[Closing, ...] = quantity("closings", label="one entry per solenoid timing, in the order given")
     table_file: str = quantity("table", label="the valve lifts and pressures against camshaft angle in the output "
                                "folder")
+    breathing: tuple[ClosingBreath, ...] = quantity("breathing", label="with [breathing]: the full lift and each "
+                                                    "timing breathed at each of its conditions", default=())
     responses: tuple[DriveResult, ...] = field(default=(), repr=False)
     full: Optional[DriveResult] = field(default=None, repr=False)
     nose: float = field(default=0.0, repr=False)      # crank angle of the cam nose from the gas-exchange TDC [rad]
@@ -182,7 +205,8 @@ def lost_motion_stage(valve, law, engine, gas, name, nose, hydraulic, cylinder=N
         hydraulic.speed, drive.solenoid.accumulator_pressure, lm.solenoid_closes, lm.brake_travel,
         float(full.valve_lift.max()), None if math.isnan(full_angle) else float(cycle_angle(nose, full_angle,
                                                                                              engine.strokes)),
-        hydraulic.seating_velocity, closings, f"tables/{name}_lost_motion.csv", responses, full, nose, engine.strokes)
+        hydraulic.seating_velocity, closings, f"tables/{name}_lost_motion.csv", responses=responses, full=full,
+        nose=nose, strokes=engine.strokes)
     return result, _checks(closings, valve.hydraulic.vapour_pressure)
 
 
@@ -233,5 +257,5 @@ def table_columns(result, step=0.5 * DEG) -> dict[str, Any]:
     return out
 
 
-__all__ = ["Closing", "LostMotionResult", "SOURCES", "TABLE_COLUMNS", "cam_angle", "lost_motion_stage",
-           "table_columns"]
+__all__ = ["Closing", "ClosingBreath", "KEY", "LostMotionResult", "SOURCES", "TABLE_COLUMNS", "cam_angle",
+           "lost_motion_stage", "table_columns"]

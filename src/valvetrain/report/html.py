@@ -430,9 +430,12 @@ def _lost_motion(v):
     lm = v.lost_motion
     if lm is None:
         return None
-    return {"rows": [(k, val) for k, val in shown(lm) if k not in ("closings", "table") and val is not None],
+    return {"rows": [(k, val) for k, val in shown(lm) if k not in ("closings", "table", "breathing")
+                     and val is not None],
             "columns": [k for k, _ in shown(lm.closings[0])],
-            "table": [[val for _, val in shown(c)] for c in lm.closings], "file": lm.table_file}
+            "table": [[val for _, val in shown(c)] for c in lm.closings], "file": lm.table_file,
+            "breathing_columns": [k for k, _ in shown(lm.breathing[0])] if lm.breathing else [],
+            "breathing": [[val for _, val in shown(b)] for b in lm.breathing]}
 
 
 LUBRICATION_COLUMNS = ("speed", "min_film", "min_lambda", "boundary", "mixed", "full", "mean_friction_torque",
