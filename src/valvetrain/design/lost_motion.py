@@ -18,6 +18,7 @@ import numpy as np
 from ..bibliography import cite
 from ..checks import Check, check
 from ..dynamics.sweep import BOUNCE_TOLERANCE
+from ..errors import InputError
 from ..hydraulic_actuation import DriveResult, simulate
 from ..specification.messages import Problem
 from ..units import DEG, MM, cam_per_crank, to_display
@@ -150,7 +151,7 @@ def lost_motion_stage(valve, law, engine, gas, name, nose, hydraulic, cylinder=N
 
     Raises
     ------
-    ValueError
+    InputError
         A solenoid timing outside the cam's lift or simulations that ask for more than
         :data:`~valvetrain.design.hydraulic_actuation.MAX_NODE_STEPS` node updates (its
         :class:`~valvetrain.specification.messages.Problem` names the key).
@@ -174,14 +175,14 @@ def lost_motion_stage(valve, law, engine, gas, name, nose, hydraulic, cylinder=N
     for phi in lm.solenoid_opens:
         theta = cam_angle(phi, nose, engine.strokes)
         if not law.start < theta < law.end:
-            raise ValueError(Problem(key, f"the solenoid valve opens at {to_display(phi, 'crank deg'):g} crank deg, "
+            raise InputError(Problem(key, f"the solenoid valve opens at {to_display(phi, 'crank deg'):g} crank deg, "
                                      f"outside the cam's lift: allowed within ({to_display(low, 'crank deg'):.4g}, "
                                      f"{to_display(high, 'crank deg'):.4g}) crank deg from the gas-exchange TDC",
                                      f"{to_display(phi, 'crank deg'):g}"))
         thetas.append(theta)
     closes = -math.inf if lm.solenoid_closes is None else cam_angle(lm.solenoid_closes, nose, engine.strokes)
     if lm.solenoid_closes is not None and not (law.start - 0.1 < closes < min(thetas)):
-        raise ValueError(Problem("lost_motion.solenoid_closes_crank_deg", "the solenoid valve shuts at "
+        raise InputError(Problem("lost_motion.solenoid_closes_crank_deg", "the solenoid valve shuts at "
                                  f"{to_display(lm.solenoid_closes, 'crank deg'):g} crank deg: allowed after "
                                  f"{to_display(float(cycle_angle(nose, law.start - 0.1, engine.strokes)), 'crank deg'):.4g} "
                                  "crank deg (the start of the simulated revolution) and before the earliest opening",
@@ -192,7 +193,7 @@ def lost_motion_stage(valve, law, engine, gas, name, nose, hydraulic, cylinder=N
     omega = hydraulic.speed * cam_per_crank(engine.strokes)
     work = len(thetas) * 2.0 * math.pi / omega / drive.time_step * (drive.pipe.reaches + 1)
     if work > MAX_NODE_STEPS:
-        raise ValueError(Problem(key, f"{len(thetas)} timings take {work:.3g} node updates of the passage's grid; "
+        raise InputError(Problem(key, f"{len(thetas)} timings take {work:.3g} node updates of the passage's grid; "
                                  f"allowed <= {MAX_NODE_STEPS:.0e}: fewer timings or fewer reaches", f"{len(thetas)}"))
     force = gas_force(valve, gas, engine, nose, cylinder)
     responses = tuple(simulate(law, replace(drive, solenoid=replace(drive.solenoid, opens=theta)), omega,
