@@ -118,3 +118,17 @@ def test_the_brake_and_the_early_release_close_the_valve_early_and_softly(law):
                       omega)
     assert abs(braked.seating()[1]) < 0.2 * abs(free.seating()[1])
     assert braked.brake_pressure.max() > braked.actuator_pressure.max()
+
+
+def test_a_solenoid_shut_late_opens_the_valve_late_and_lower(law):
+    """Late opening: the solenoid valve open while the cam starts its lift lets the pump's oil out, so the valve stays
+    on its seat; shut later, it lifts later and less, the lift lost the plunger's travel before the shutting (at the
+    slow cam, quasi-statically: the valve's largest lift is the full lift less A_p / A_a times the plunger's lift where
+    the solenoid valve has shut, to 2 % of that loss)."""
+    omega = 2 * math.pi * 100 / 60
+    full = simulate(law, drive(Solenoid(20e-6, 0.5e6)), omega)
+    shut = -0.5
+    late = simulate(law, drive(Solenoid(20e-6, 0.5e6, closes=shut)), omega)
+    assert late.lift_off() > full.lift_off() and late.angle[late.lift_off()] > shut
+    lost = law.lift(np.array([shut]))[0]                               # A_p / A_a = 1
+    assert full.valve_lift.max() - late.valve_lift.max() == pytest.approx(lost, rel=0.02)
