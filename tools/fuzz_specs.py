@@ -1250,6 +1250,10 @@ DOCUMENTED_NULLS = {
                     "a hydraulic valve that stays shut (or, closing, does not return) within the revolution"),
     **dict.fromkeys(("lift_off_crank_deg", "cylinder_pressure_at_lift_off_MPa", "gas_force_at_lift_off_N",
                      "lift_off_pressure_MPa"), "a hydraulic valve that never leaves its seat against the gas force"),
+    "solenoid_closes_crank_deg": "a lost-motion solenoid valve shut before the cam lifts (the key left out)",
+    "valves.NAME.lost_motion.breathing.solenoid_opens_crank_deg": "the full lift's breathing (the solenoid valve shut)",
+    **dict.fromkeys(("valve_closes_crank_deg", "full_lift_valve_closes_crank_deg", "full_lift_seating_velocity_m_s"),
+                    "a lost-motion valve that does not return to its seat within the revolution"),
 }
 """In memory a documented null may be NaN (numpy's "none"), which results.json writes as null."""
 

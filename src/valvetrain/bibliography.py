@@ -396,6 +396,14 @@ WORKS = {
         title="Hydraulic Control Systems", kind="book", publisher="John Wiley & Sons", place="New York", year="1967",
         note="The leakage of an annular clearance, the orifice equation, the effective bulk modulus of a liquid with "
              "entrained air."),
+    "bernard2009": Work(
+        short="Bernard et al. (2009)",
+        authors="Bernard, L.; Ferrari, A.; Micelli, D.; Perotto, A.; Rinolfi, R.; Vattaneo, F.",
+        title="Electro-hydraulic valve control with MultiAir technology", kind="journal article",
+        journal="MTZ worldwide", volume="Vol. 70, no. 12", pages="P. 4–10", year="2009",
+        note="The MultiAir lost-motion intake: a cam-driven pump piston, a normally open solenoid valve to an "
+             "accumulator that closes the intake valve early or opens it late, and the hydraulic brake of its "
+             "landing."),
     "sae_j300": Work(
         short="SAE J300 (2015)",
         authors="SAE International",

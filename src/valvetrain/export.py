@@ -13,6 +13,7 @@ import numpy as np
 from .design.dynamics import sweep_columns
 from .design.grinding import master_cartesian_columns, master_polar_columns, wear_columns
 from .design.hydraulic_actuation import sweep_columns as hydraulic_sweep_columns, table_columns as hydraulic_columns
+from .design.lost_motion import table_columns as lost_motion_columns
 from .outfolder import atomic_folder
 from .specification import spec_toml
 from .tables import (breathing_columns, breathing_record_columns, camshaft_torsion_columns, cartesian_contour_columns,
@@ -230,7 +231,9 @@ def write_outputs(results, out, lang="en", inputs=(), force=False, figures="main
                    NAME_dynamics.csv (a [dynamics] section: one row per speed),
                    NAME_wear_error.csv (a [grinding] section: the lift error of the worn wheel)
                    NAME_hydraulic.csv (a [hydraulic] section: pressures and lifts against camshaft angle),
-                   NAME_hydraulic_sweep.csv (a [hydraulic] section: one row per engine speed)
+                   NAME_hydraulic_sweep.csv (a [hydraulic] section: one row per engine speed),
+                   NAME_lost_motion.csv (a [hydraulic.lost_motion] section: the valve lift and the pressures of
+                   each solenoid timing against camshaft angle)
         out/contour/NAME.csv, NAME_polar.csv, NAME_cartesian.csv, NAME_lift.csv, NAME.dxf
                     (not for a valve whose cam profile is undercut: it cannot be made)
                     NAME_master.csv, NAME_master_cartesian.csv, NAME_master.dxf (a [grinding] section whose
@@ -268,6 +271,8 @@ def write_outputs(results, out, lang="en", inputs=(), force=False, figures="main
             if v.hydraulic is not None:
                 write_csv(tmp / v.hydraulic.table_file, hydraulic_columns(v.hydraulic))
                 write_csv(tmp / v.hydraulic.sweep_table, hydraulic_sweep_columns(v.hydraulic))
+            if v.lost_motion is not None:
+                write_csv(tmp / v.lost_motion.table_file, lost_motion_columns(v.lost_motion))
             if v.profile.undercut:
                 continue  # no follower can trace an undercut profile: nothing is written for its manufacture
             g = v.grinding

@@ -7,6 +7,8 @@ SI units: m, s, N, Pa (gauge pressures unless said absolute), Pa s, m^3.  Pure f
 
 import numpy as np
 
+from .hydraulic_actuation.components import orifice_flow
+
 ATMOSPHERE = 1.013e5
 """Absolute pressure of the atmosphere [Pa]: the reference of the entrained air's volume and the floor of a chamber
 pressure (vacuum, -1 atm gauge)."""
@@ -151,8 +153,7 @@ def check_valve_flow(pressure_drop, diameter: float) -> np.ndarray:
     ----------
     Merritt (1967), the orifice equation; :data:`DISCHARGE_COEFFICIENT`, :data:`OIL_DENSITY`.
     """
-    return DISCHARGE_COEFFICIENT * plunger_area(diameter) * np.sqrt(2.0 * np.clip(pressure_drop, 0.0, None)
-                                                                     / OIL_DENSITY)
+    return orifice_flow(plunger_area(diameter), np.clip(pressure_drop, 0.0, None), OIL_DENSITY, DISCHARGE_COEFFICIENT)
 
 
 def refill_pressure(supply: float, plunger_spring: float, area: float) -> float:

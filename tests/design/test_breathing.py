@@ -216,13 +216,13 @@ def test_the_dynamic_lift_at_a_low_speed(dynamic_and_designed):
     assert dynamic.breathing.figures.intake_lift.startswith("dynamic: intake (kurz, 1 valve), the valve's motion")
     assert dynamic.to_dict()["breathing"]["intake_lift"] == dynamic.breathing.figures.intake_lift
     assert designed.breathing.figures.intake_lift.startswith("designed: intake")
-    from valvetrain.design.breathing import GRID, _designed_lift, dynamic_lift
+    from valvetrain.design.breathing import GRID, designed_lift, dynamic_lift
     from valvetrain.specification import si
     spec, valve = dynamic.spec, dynamic.valves["intake"]
     p = valve.dynamics.parameters
     omega = 1000.0 * np.pi / 30.0
     y = dynamic_lift("intake", valve, si(spec.valves["intake"], spec), si(spec.engine), [omega], "intake")[0]
-    kinematic = _designed_lift(valve)
+    kinematic = designed_lift(valve)
     quasi_static = np.clip((p.drive_stiffness * kinematic - p.preload) / (p.drive_stiffness + p.spring_rate), 0, None)
     step = GRID[1] - GRID[0]
     acceleration = np.diff(kinematic, 2) / step**2 * omega**2

@@ -68,6 +68,8 @@ from .drive_strength import StrengthResult
 from .dynamics import DynamicsResult
 from .grinding import GrindingResult
 from .hydraulic_actuation import CylinderPressure, HydraulicResult, speed_plan
+from .lost_motion import LostMotionResult
+from .lost_motion_breathing import with_breathing
 from .lash_adjuster import LashAdjusterResult
 from .lubrication import LubricationResult
 from .phaser import PhaserRecord, PhaserResults, phaser_stage
@@ -278,6 +280,11 @@ def run(spec, laws=None, progress=None, headlines_only=False, diagnose=True, mem
                     if breathing is not None
                     else CylinderPressure(crank.phi, crank.columns.p_abs, crank.pressure_source))
         valves[name] = with_hydraulic(valves[name], valve, engine, gas, cylinder)
+        lost = valves[name].lost_motion
+        if lost is not None and breathing is not None and views[name].kind == "intake":
+            lost, more = with_breathing(lost, name, valves[name], views[name], breathing, breathing_view(spec))
+            valves[name] = replace(valves[name], lost_motion=lost,
+                                   checks=valves[name].checks + tuple(c.of_valve(name) for c in more))
     found = [c for v in valves.values() for c in v.checks] + overlap_clearance_checks(valves) + engine_checks(spec)
     if {v.kind for v in valves.values()} == {"intake", "exhaust"}:
         share = sum(v.count * v.flow.throat_area for v in valves.values())
@@ -537,6 +544,7 @@ def results_schema() -> dict[str, Any]:
         "masses": json_schema(MassResult), "spring": json_schema(SpringResult),
         "strength": strength, "dynamics": json_schema(DynamicsResult),
         "grinding": json_schema(GrindingResult), "hydraulic": json_schema(HydraulicResult),
+        "lost_motion": json_schema(LostMotionResult),
         "lubrication": json_schema(LubricationResult), "lash_adjuster": json_schema(LashAdjusterResult)}}
     return {
         "$schema": "https://json-schema.org/draft/2020-12/schema",

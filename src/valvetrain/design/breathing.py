@@ -3,7 +3,7 @@ over cycles at each condition of ``[breathing]`` (:mod:`valvetrain.breathing`)."
 
 from dataclasses import dataclass, replace
 from functools import cached_property
-from typing import Any
+from typing import Any, Optional
 
 import numpy as np
 
@@ -67,7 +67,7 @@ def _on_grid(angles_deg, lift_mm):
     return np.where(inside, np.interp(start + rel, angles_deg, lift_mm), 0.0) * MM
 
 
-def _designed_lift(valve):
+def designed_lift(valve) -> np.ndarray:
     """A designed valve's lift on :data:`GRID` [m] (its timing diagram's, :attr:`ValveDesign.cycle_lift`)."""
     order = np.argsort(np.mod(CYCLE_CRANK, 4.0 * np.pi), kind="stable")
     angle = np.mod(CYCLE_CRANK, 4.0 * np.pi)[order]
@@ -110,6 +110,24 @@ def dynamic_lift(name, design, view, engine, speeds, kind) -> np.ndarray:
     return np.array([np.interp(GRID, crank[order], np.clip(y[order], 0.0, None), period=CYCLE) for y in motion.lift])
 
 
+def cd_table(side) -> Optional[CdTable]:
+    """The measured C_D(L/D) table of a side of [breathing] (its SI view), None without one."""
+    if side.cd is None:
+        return None
+    x, fwd, rev = side.cd
+    return CdTable(x, fwd, rev, side.cd_diameter, side.cd_reference, side.section.cd_file)
+
+
+def lift_areas(lift, table, valve) -> tuple[np.ndarray, np.ndarray]:
+    """The forward and reverse effective areas [m^2] of one valve at the lifts ``lift`` [m]: the side's measured
+    ``table`` (:func:`~valvetrain.breathing.valves.effective_areas`), else the default discharge on the flow section of
+    the valve's SI view (:func:`~valvetrain.breathing.valves.default_areas`)."""
+    if table is not None:
+        return effective_areas(lift, table)
+    f = default_areas(lift, valve.throat_diameter, valve.seat_angle)
+    return f, f
+
+
 def valve_flow(side, kind, valves, views, engine=None, speeds=()) -> tuple[tuple[ValveFlow, ...], str, str]:
     """One side's effective areas over the cycle and the words of where its lift and discharge come from.
 
@@ -132,10 +150,8 @@ def valve_flow(side, kind, valves, views, engine=None, speeds=()) -> tuple[tuple
         One flow, the same at every speed (a designed or measured lift), or one at each of ``speeds``
         (``lift = "dynamics"``).
     """
-    table = None
-    if side.cd is not None:
-        x, fwd, rev = side.cd
-        table = CdTable(x, fwd, rev, side.cd_diameter, side.cd_reference, side.section.cd_file)
+    table = cd_table(side)
+    if table is not None:
         discharge = (f"C_D(L/D) of {side.section.cd_file}, referred to the {side.cd_reference} area of D = "
                      f"{side.cd_diameter / MM:g} mm")
     else:
@@ -153,14 +169,11 @@ def valve_flow(side, kind, valves, views, engine=None, speeds=()) -> tuple[tuple
         source = "dynamic: " + ", ".join(f"{name} ({v.law.name}, {counted(v)}), the valve's motion of its [dynamics] "
                                          f"{views[name].dynamics.model} train at each speed" for name, v in these)
     else:
-        lifts = [(_designed_lift(v), v.count, views[name]) for name, v in these]
+        lifts = [(designed_lift(v), v.count, views[name]) for name, v in these]
         source = "designed: " + ", ".join(f"{name} ({v.law.name}, {counted(v)})" for name, v in these)
     forward = reverse = 0.0
     for lift, count, valve in lifts:
-        if table is not None:
-            f, r = effective_areas(lift, table)
-        else:
-            f = r = default_areas(lift, valve.throat_diameter, valve.seat_angle)
+        f, r = lift_areas(lift, table, valve)
         forward, reverse = forward + count * f, reverse + count * r
     forward, reverse = np.atleast_2d(forward), np.atleast_2d(reverse)
     return tuple(ValveFlow(GRID, f, r) for f, r in zip(forward, reverse, strict=True)), source, discharge

@@ -19,7 +19,7 @@ over-speed, as is a fill (supply) pressure that lifts the valve off its seat.
 
 from dataclasses import dataclass, field, replace
 import math
-from typing import Any, Optional
+from typing import Any, Callable, Optional
 
 import numpy as np
 
@@ -29,8 +29,8 @@ from ..crank.pressure import on_grid
 from ..dynamics.sweep import BOUNCE_TOLERANCE
 from ..errors import InputError
 from ..flow import circle_area
-from ..hydraulic_actuation import (Actuator, DriveResult, Fluid, HydraulicDrive, Pipe, Pump, SpeedSweep, Valve, simulate,
-                         speed_sweep)
+from ..hydraulic_actuation import (Actuator, Brake, DriveResult, Fluid, HydraulicDrive, Pipe, Pump, Solenoid, SpeedSweep,
+                                   Valve, simulate, speed_sweep)
 from ..specification.messages import Problem
 from ..units import DEG, MM, cam_per_crank, rpm_to_rad_s, to_display
 from .dynamics import SEATING_VELOCITY_MAX, finite_or_none
@@ -183,9 +183,10 @@ class HydraulicResult:
     strokes: int = field(default=4, repr=False)
 
 
-def _drive(h):
+def hydraulic_drive(h) -> HydraulicDrive:
     """The :class:`~valvetrain.hydraulic_actuation.HydraulicDrive` of the SI view of a hydraulic section (the valve's stop not yet
-    placed)."""
+    placed); with a ``lost_motion`` section its brake and its solenoid valve, shut the whole revolution (the valve
+    follows the whole cam)."""
     area = lambda d: math.pi * d**2 / 4.0  # noqa: E731
     wall = math.inf if h.pipe_wall is None else h.pipe_wall
     fill = (h.fill_pressure, h.fill_conductance) if h.fill_pressure is not None else (0.0, 0.0)
@@ -196,7 +197,18 @@ def _drive(h):
         Pump(area(h.plunger_diameter), h.pump_volume, h.leakage, *fill, *relief),
         Actuator(area(h.actuator_diameter), h.actuator_volume, h.leakage),
         Valve(h.valve_mass_kg, h.spring_rate, h.spring_preload_N, h.damping_N_s_per_m, math.inf, h.stop_stiffness),
-        h.initial_pressure, h.back_pressure)
+        h.initial_pressure, h.back_pressure, *_lost_motion_parts(h))
+
+
+def _lost_motion_parts(h):
+    """The solenoid valve (shut) and the brake of a hydraulic section's ``lost_motion`` (None, None without one)."""
+    lm = h.lost_motion
+    if lm is None:
+        return None, None
+    accumulator = h.initial_pressure if lm.accumulator_pressure is None else lm.accumulator_pressure
+    brake = None if lm.brake_travel == 0.0 else Brake(lm.brake_travel, lm.brake_end_area, lm.brake_open_area,
+                                                      lm.discharge_coefficient)
+    return Solenoid(lm.solenoid_area, accumulator, lm.discharge_coefficient, stroke_time=lm.solenoid_stroke), brake
 
 
 def lift_off_pressure(drive, gas_force=0.0) -> float:
@@ -297,7 +309,7 @@ def hydraulic_stage(valve, law, engine, gas, name, nose, cylinder=None) -> tuple
     Shang Hanji (1988), ch. 7 (the drive) and ch. 3 (seating velocity and bounce); :mod:`valvetrain.hydraulic_actuation`.
     """
     hydraulic = valve.hydraulic
-    drive = _drive(hydraulic)
+    drive = hydraulic_drive(hydraulic)
     speed, speeds, notes = speed_plan(hydraulic, engine)
     rigid = float(np.max(law.lift(np.linspace(law.start, law.end, 2001)))) * drive.area_ratio
     margin = STOP_MARGIN * rigid if hydraulic.stop_margin is None else hydraulic.stop_margin
@@ -314,13 +326,10 @@ def hydraulic_stage(valve, law, engine, gas, name, nose, cylinder=None) -> tuple
             f"pipe grid (time step {drive.time_step * 1e6:.3g} us); allowed <= {MAX_NODE_STEPS:.0e}: use fewer "
             "reaches, a longer pipe, fewer speeds or higher ones", f"{drive.pipe.reaches}"))
     diameter, port = head_load(valve, gas)
+    force = gas_force(valve, gas, engine, nose, cylinder)
     if cylinder is None:
-        force = None
         notes.append("no gas force on the valve head: the specification gives no engine cycle ([crank] with its "
                      "pressure_file or [crank.cycle])")
-    else:
-        def force(theta):
-            return cylinder.head_force(cycle_angle(nose, theta, engine.strokes), diameter, port, engine.strokes)
     r = simulate(law, drive, speed * to_cam, gas_force=force)
     sw = speed_sweep(law, drive, speeds * to_cam, DELAY_LEVEL, gas_force=force)
     opening, closing = r.delays(DELAY_LEVEL)
@@ -353,6 +362,19 @@ def hydraulic_stage(valve, law, engine, gas, name, nose, cylinder=None) -> tuple
         found.append(check("hydraulic.seating_velocity", abs(result.seating_velocity), high=SEATING_VELOCITY_MAX, unit="m/s",
                            source=SEATING_SOURCE))
     return result, found
+
+
+def gas_force(valve, gas, engine, nose, cylinder=None) -> Optional[Callable[[np.ndarray], np.ndarray]]:
+    """The force of the cylinder pressure on the valve head towards its seat [N] as a function of camshaft angles
+    [rad from the nose] (:meth:`CylinderPressure.head_force` at the cycle angle :func:`cycle_angle`, on the head of
+    :func:`head_load`); None without the engine's cycle ``cylinder``."""
+    if cylinder is None:
+        return None
+    diameter, port = head_load(valve, gas)
+
+    def force(theta):
+        return cylinder.head_force(cycle_angle(nose, theta, engine.strokes), diameter, port, engine.strokes)
+    return force
 
 
 def _gas_record(r, free, drive, cylinder, diameter, port, nose, strokes):
@@ -464,5 +486,5 @@ def sweep_columns(result) -> dict[str, Any]:
 
 
 __all__ = ["CylinderPressure", "GasForceRecord", "HydraulicResult", "HydraulicSweep", "SWEEP_COLUMNS", "TABLE_COLUMNS",
-           "cycle_angle", "head_load", "hydraulic_stage", "lift_off_pressure", "speed_plan", "sweep_columns",
+           "cycle_angle", "gas_force", "head_load", "hydraulic_drive", "hydraulic_stage", "lift_off_pressure", "speed_plan", "sweep_columns",
            "table_columns"]

@@ -33,6 +33,7 @@ from .drive import DriveResult, drive_record, drive_stage, strength_speed_range,
 from .dynamics import DynamicsResult, dynamics_stage, swept_range
 from .grinding import GrindingResult, grinding_stage
 from .hydraulic_actuation import HydraulicResult, hydraulic_stage
+from .lost_motion import LostMotionResult, lost_motion_stage
 from .lash_adjuster import LashAdjusterResult, lash_adjuster_stage
 from .lubrication import LubricationResult, lubrication_stage
 from .results import NamedValues, quantity, record
@@ -722,6 +723,7 @@ class ValveDesign:
     hydraulic: Optional[HydraulicResult] = None     # with a [hydraulic] section
     lubrication: Optional[LubricationResult] = None        # with a [lubrication] section
     lash_adjuster: Optional[LashAdjusterResult] = None     # with a [lash_adjuster] section
+    lost_motion: Optional[LostMotionResult] = None          # with a [hydraulic.lost_motion] section
     geometry: Optional["ValveGeometry"] = field(default=None, repr=False, compare=False)  # before the drive
 
     @property
@@ -774,6 +776,8 @@ class ValveDesign:
             out["lubrication"] = record(self.lubrication)
         if self.lash_adjuster is not None:
             out["lash_adjuster"] = record(self.lash_adjuster)
+        if self.lost_motion is not None:
+            out["lost_motion"] = record(self.lost_motion)
         return out
 
     def __repr__(self):
@@ -973,7 +977,8 @@ def _stage_problem(exc, prefix) -> Problem:
 
 
 def with_hydraulic(design, valve, engine, gas, cylinder=None) -> ValveDesign:
-    """The design with the hydraulic stage of the valve's ``[hydraulic]`` section (as it is without one).
+    """The design with the hydraulic stage of the valve's ``[hydraulic]`` section (as it is without one) and, with its
+    ``lost_motion`` section, the lost-motion stage (:func:`~valvetrain.design.lost_motion.lost_motion_stage`).
 
     Parameters
     ----------
@@ -991,9 +996,15 @@ def with_hydraulic(design, valve, engine, gas, cylinder=None) -> ValveDesign:
         return design
     try:
         hydraulic, found = hydraulic_stage(valve, design.cam.law, engine, gas, design.name, design.cam.nose, cylinder)
+        lost = None
+        if valve.hydraulic.lost_motion is not None:
+            lost, more = lost_motion_stage(valve, design.cam.law, engine, gas, design.name, design.cam.nose, hydraulic,
+                                           cylinder)
+            found = found + more
     except ValueError as exc:
         raise SpecError([_stage_problem(exc, f"valves.{design.name}.hydraulic")]) from None
-    return replace(design, checks=design.checks + tuple(c.of_valve(design.name) for c in found), hydraulic=hydraulic)
+    return replace(design, checks=design.checks + tuple(c.of_valve(design.name) for c in found), hydraulic=hydraulic,
+                   lost_motion=lost)
 
 
 __all__ = ["CamResult", "ClearanceResult", "FingerKinematics", "FlowResult", "LiftTable", "ProfileResult", "StepRecord", "ValveDesign",

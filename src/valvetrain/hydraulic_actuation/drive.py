@@ -5,14 +5,22 @@ Wylie and Streeter (1978) (:mod:`valvetrain.hydraulic_actuation.moc`) and the tw
 implicit (backward Euler) boundary conditions of it, solved with the end characteristic in one linear
 step, so that a stiff (nearly incompressible) liquid is stable.
 
-Pump chamber at x = 0, with fill and relief valves and leakage:
+Pump chamber at x = 0, with fill and relief valves, leakage and a lost-motion drive's solenoid valve to its
+accumulator (an orifice, open outside the solenoid's shut window, :class:`~.components.Solenoid`):
 
-    (V_p / K) dp_0/dt = A_p dx_p/dt - A u(0) - Q_leak,p + Q_fill - Q_relief
+    (V_p / K) dp_0/dt = A_p dx_p/dt - A u(0) - Q_leak,p + Q_fill - Q_relief - Q_s
+    Q_s = C_d A_s sign(p_0 - p_acc) sqrt(2 |p_0 - p_acc| / rho)
 
-Actuator chamber at x = L and the valve (one degree of freedom between a rigid seat and a stiff stop):
+Actuator chamber at x = L and the valve (one degree of freedom between a rigid seat and a stiff stop), with the
+hydraulic brake's force B(y) v^2 on a closing valve (:func:`~.components.brake_coefficient`, 0 without a brake):
 
     (V_a / K) dp_a/dt = A u(L) - A_a dy/dt - Q_leak,a
     M d2y/dt2 = (p_a - p_back) A_a - F_0 - K_s y - C dy/dt - F_gas(t) - K_stop max(y - y_stop, 0) + F_seat
+                + B(y) (dy/dt)^2 [dy/dt < 0]
+
+The solenoid's orifice makes the pump chamber's backward-Euler equation quadratic in sqrt|p_0 - p_acc|, the brake
+the valve's quadratic in its new velocity: both are solved in closed form, so a large orifice or a strong brake stays
+stable.
 
 F_gas is a given force that pushes the valve towards its seat (the cylinder pressure on the valve head, less the
 port's).  The seat holds y >= 0: a valve that would move into it stops there (an inelastic impact), and F_seat is
@@ -25,11 +33,13 @@ compressibility).  Pressures below the vapour pressure are clamped to it (see
 
 from dataclasses import dataclass
 import math
+from typing import Optional
 
 import numpy as np
 from numba import njit
 
 from ..dynamics.sweep import BOUNCE_TOLERANCE, bounce, seating
+from .components import brake_coefficient
 from .moc import characteristics, interior
 
 
@@ -45,34 +55,77 @@ def _chamber(capacity, old, source, conductances, references):
 
 
 @njit(cache=True)
-def _valve_step(act_capacity, p_old, g, ref, act_area, vapour, stiffness, numerator):
+def _orifice_chamber(capacity, old, source, conductances, references, orifice, p_r):
+    """Backward-Euler pressure P of a chamber with an orifice to a reservoir at ``p_r`` besides the conductances:
+    capacity (P - old) = source + sum g_j (p_j - P) - orifice sign(P - p_r) sqrt|P - p_r| [Pa].
+
+    With den = capacity + sum g_j and D = capacity old + source + sum g_j p_j - den p_r, P = p_r + sign(D) x^2 where
+    den x^2 + orifice x = |D|, x = 2 |D| / (orifice + sqrt(orifice^2 + 4 den |D|)) (the root without cancellation)."""
+    linear = _chamber(capacity, old, source, conductances, references)
+    if orifice == 0.0:
+        return linear
+    den = capacity
+    for j in range(conductances.size):
+        den += conductances[j]
+    excess = den * (linear - p_r)
+    x = 2.0 * abs(excess) / (orifice + math.sqrt(orifice * orifice + 4.0 * den * abs(excess)))
+    return p_r + math.copysign(x * x, excess)
+
+
+@njit(cache=True)
+def _braked(stiffness, rest, brake):
+    """The new velocity v of the valve's backward-Euler equation stiffness v = rest + brake v^2 [v < 0] [m/s]: the
+    brake acts only on a closing valve, and the root taken is the closing one, w = -v = 2 |rest| / (stiffness +
+    sqrt(stiffness^2 + 4 brake |rest|))."""
+    if rest >= 0.0 or brake == 0.0:
+        return rest / stiffness
+    return -2.0 * -rest / (stiffness + math.sqrt(stiffness * stiffness - 4.0 * brake * rest))
+
+
+@njit(cache=True)
+def _valve_step(act_capacity, p_old, g, ref, act_area, vapour, stiffness, numerator, brake):
     """Backward-Euler actuator pressure and valve velocity of one step, the valve's equation written as
-    v = alpha + beta p_a with alpha = numerator / stiffness, beta = A_a / stiffness: (p_a, v, clamped)."""
+    v = alpha + beta p_a with alpha = numerator / stiffness, beta = A_a / stiffness, and with the brake's force
+    brake v^2 on a closing valve: (p_a, v, clamped)."""
     alpha = numerator / stiffness
     g[2] = act_area * act_area / stiffness
     pa = _chamber(act_capacity, p_old, -act_area * alpha, g, ref)
     clamped = pa < vapour
     if clamped:      # the valve is pushed by the vapour pressure, not by a tension of the liquid
         pa = vapour
-    return pa, alpha + act_area / stiffness * pa, clamped
+    v = alpha + act_area / stiffness * pa
+    if brake > 0.0 and v < 0.0:     # braked closing: the chamber's pressure P = (n0 - A_a v) / d0 into the valve's
+        g[2] = 0.0
+        d0 = act_capacity + g[0] + g[1]
+        n0 = act_capacity * p_old + g[0] * ref[0] + g[1] * ref[1]
+        v = _braked(stiffness + act_area * act_area / d0, numerator + act_area * n0 / d0, brake)
+        pa = (n0 - act_area * v) / d0
+        clamped = pa < vapour
+        if clamped:
+            pa = vapour
+            v = _braked(stiffness, numerator + act_area * vapour, brake)
+    return pa, v, clamped
 
 
 @njit(cache=True)
 def _drive_kernel(plunger, gas, dt, n_reaches, impedance, friction, area, vapour, p_init, p_back,
                   pump_area, pump_capacity, pump_leak, p_fill, g_fill, p_relief, g_relief,
-                  act_area, act_capacity, act_leak, mass, rate, preload, damping, stop, stop_rate):
+                  act_area, act_capacity, act_leak, mass, rate, preload, damping, stop, stop_rate,
+                  bypass, p_acc, brake_travel, brake_end, brake_open, brake_cd, density):
     steps = plunger.size
     p = np.full(n_reaches + 1, p_init)
     u = np.zeros(n_reaches + 1)
-    out = np.zeros((steps, 6))
+    out = np.zeros((steps, 8))
     flags = np.zeros((steps, 3), dtype=np.bool_)
     y = 0.0
     v = 0.0
     leaked = 0.0
+    bypassed = 0.0
     g = np.empty(3)
     ref = np.empty(3)
     out[0, 0] = p_init
     out[0, 1] = p_init
+    out[0, 7] = p_init
     n = n_reaches
     for k in range(1, steps):
         cp, cm = characteristics(p, u, impedance, friction)
@@ -85,16 +138,17 @@ def _drive_kernel(plunger, gas, dt, n_reaches, impedance, friction, area, vapour
         ref[1] = p_back
         g[2] = 0.0
         ref[2] = 0.0
-        p0 = _chamber(pump_capacity, p[0], source, g, ref)
+        p0 = _orifice_chamber(pump_capacity, p[0], source, g, ref, bypass[k], p_acc)
         if g_fill > 0.0 and p0 < p_fill:
             g[2] = g_fill
             ref[2] = p_fill
-            p0 = _chamber(pump_capacity, p[0], source, g, ref)
+            p0 = _orifice_chamber(pump_capacity, p[0], source, g, ref, bypass[k], p_acc)
         elif g_relief > 0.0 and p0 > p_relief:
             g[2] = g_relief
             ref[2] = p_relief
-            p0 = _chamber(pump_capacity, p[0], source, g, ref)
+            p0 = _orifice_chamber(pump_capacity, p[0], source, g, ref, bypass[k], p_acc)
         leaked += dt * (pump_leak * (p0 - p_back) - g[2] * (ref[2] - p0))
+        bypassed += dt * bypass[k] * math.copysign(math.sqrt(abs(p0 - p_acc)), p0 - p_acc)
         if p0 < vapour:
             p0 = vapour
             flags[k, 0] = True
@@ -108,10 +162,11 @@ def _drive_kernel(plunger, gas, dt, n_reaches, impedance, friction, area, vapour
         ref[2] = 0.0
         stiffness = mass / dt + rate * dt + damping
         numerator = mass * v / dt - p_back * act_area - preload - rate * y - gas[k]
-        pa, v_new, clamped = _valve_step(act_capacity, p[n], g, ref, act_area, vapour, stiffness, numerator)
+        brake = brake_coefficient(y, brake_travel, brake_end, brake_open, act_area, density, brake_cd)
+        pa, v_new, clamped = _valve_step(act_capacity, p[n], g, ref, act_area, vapour, stiffness, numerator, brake)
         if y + dt * v_new > stop:   # on the stop: its spring acts on the new position y + dt v
             pa, v_new, clamped = _valve_step(act_capacity, p[n], g, ref, act_area, vapour,
-                                             stiffness + stop_rate * dt, numerator - stop_rate * (y - stop))
+                                             stiffness + stop_rate * dt, numerator - stop_rate * (y - stop), brake)
         if y + dt * v_new < 0.0:
             v_new = -y / dt
             g[2] = 0.0
@@ -134,6 +189,8 @@ def _drive_kernel(plunger, gas, dt, n_reaches, impedance, friction, area, vapour
         out[k, 3] = v
         out[k, 4] = leaked
         out[k, 5] = stored
+        out[k, 6] = bypassed
+        out[k, 7] = pa + (brake * v * v / act_area if v < 0.0 else 0.0)
     return out, flags
 
 
@@ -167,6 +224,13 @@ class DriveResult:
         a [m/s] and dt [s].
     stop : float
         Lift at which the valve meets its stop [m] (inf: none).
+    bypassed_volume : ndarray or None
+        Net volume the solenoid valve has let out of the pump chamber to the accumulator [m^3] (None: no solenoid).
+    solenoid_share : ndarray or None
+        The open share of the solenoid valve's flow area, 0 (shut) to 1 (None: no solenoid).
+    brake_pressure : ndarray
+        Absolute pressure under the actuator piston [Pa]: the actuator chamber's plus the brake's B v^2 / A_a on a
+        closing valve (the actuator's pressure without a brake).
     """
 
     angle: np.ndarray
@@ -186,6 +250,9 @@ class DriveResult:
     wave_speed: float
     time_step: float
     stop: float = math.inf
+    bypassed_volume: Optional[np.ndarray] = None
+    solenoid_share: Optional[np.ndarray] = None
+    brake_pressure: Optional[np.ndarray] = None
 
     @property
     def cavitation(self) -> np.ndarray:
@@ -331,20 +398,28 @@ def simulate(law, drive, cam_speed, start=None, span=2.0 * math.pi, gas_force=No
     impedance = fluid.density * a
     friction = impedance * dt * pipe.friction_factor / (2.0 * pipe.diameter)
     K = fluid.bulk_modulus
+    solenoid, brake = drive.solenoid, drive.brake
+    share = None if solenoid is None else solenoid.share(angle, cam_speed)
+    bypass = np.zeros(steps) if solenoid is None else share * solenoid.orifice(fluid.density)
+    p_acc = drive.initial_pressure if solenoid is None else solenoid.accumulator_pressure
+    brake_args = (0.0, 0.0, 1.0, 1.0) if brake is None else (brake.travel, brake.end_area, brake.open_area,
+                                                             brake.discharge_coefficient)
     out, flags = _drive_kernel(
         lift, gas, dt, int(pipe.reaches), impedance, friction, pipe.area, fluid.vapour_pressure,
         drive.initial_pressure, drive.back_pressure,
         pump.plunger_area, pump.volume / (K * dt), pump.leakage, pump.fill_pressure, pump.fill_conductance,
         pump.relief_pressure, pump.relief_conductance,
         actuator.piston_area, actuator.volume / (K * dt), actuator.leakage,
-        valve.mass, valve.spring_rate, valve.preload, valve.damping, valve.stop, valve.stop_rate)
+        valve.mass, valve.spring_rate, valve.preload, valve.damping, valve.stop, valve.stop_rate,
+        bypass, p_acc, *brake_args, fluid.density)
     reach = pipe.length / pipe.reaches
     return DriveResult(
         angle=angle, time=time, plunger_lift=lift, pump_pressure=out[:, 0], actuator_pressure=out[:, 1],
         valve_lift=out[:, 2], valve_velocity=out[:, 3], rigid_lift=lift * drive.area_ratio, gas_force=gas,
         leaked_volume=out[:, 4], pipe_stored_volume=out[:, 5] * pipe.area * reach / (impedance * a),
         cavitation_pump=flags[:, 0], cavitation_pipe=flags[:, 1], cavitation_actuator=flags[:, 2],
-        wave_speed=a, time_step=dt, stop=valve.stop)
+        wave_speed=a, time_step=dt, stop=valve.stop, bypassed_volume=None if solenoid is None else out[:, 6],
+        solenoid_share=share, brake_pressure=out[:, 7])
 
 
 @dataclass(frozen=True)

@@ -47,7 +47,7 @@ CHECK_CHAPTERS = {
     "drive.specific_mass": "springs", "gas_force": "springs", "strength": "strength", "dynamics": "dynamics",
     "grinding": "grinding", "hydraulic": "hydraulic", "lubrication": "lubrication", "lash_adjuster": "lash_adjuster",
     "engine": "engine", "crank": "crank", "camshaft": "camshaft", "ports": "ports", "breathing": "breathing",
-    "phaser": "phaser", "switching": "switching",
+    "phaser": "phaser", "switching": "switching", "lost_motion": "lost_motion",
 }
 """The chapter of the report that shows the checks of a code: the entry of the code's longest dotted prefix
 (:func:`check_chapter`)."""
@@ -78,7 +78,8 @@ def chapter_checks(results) -> dict:
                       "breathing" if results.breathing is not None else ""}}
     for name, v in results.valves.items():
         present[name] = {"flow", "law", "time_area", "geometry", "springs", "strength", "other",
-                         *(k for k in ("dynamics", "grinding", "hydraulic", "lubrication", "lash_adjuster")
+                         *(k for k in ("dynamics", "grinding", "hydraulic", "lubrication", "lash_adjuster",
+                                       "lost_motion")
                            if getattr(v, k) is not None), "phaser" if name in results.phasers else "",
                          "switching" if name in results.switching else ""}
     found = {key: {} for key in present}

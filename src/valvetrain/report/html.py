@@ -16,6 +16,7 @@ from ..design.dynamics import SOURCES as DYNAMICS_SOURCES
 from ..design.grinding import SOURCES as GRINDING_SOURCES
 from ..design.hydraulic_actuation import SOURCES as HYDRAULIC_SOURCES
 from ..design.lash_adjuster import SOURCES as ADJUSTER_SOURCES
+from ..design.lost_motion import SOURCES as LOST_MOTION_SOURCES
 from ..design.camshaft import WORKS as CAMSHAFT_SOURCES
 from ..design.lubrication import SOURCES as LUBRICATION_SOURCES
 from ..design.results import NamedValues, shown, shown_value
@@ -264,6 +265,19 @@ def _hydraulic(v):
             "gas_rows": [] if gas is None else [(f"gas_force.{k}", val) for k, val in _present(gas, *_except(gas, "source"))],
             "gas_source": None if gas is None else gas.source,
             "notes": h.notes, "table": h.table_file, "sweep_table": h.sweep_table}
+
+
+def _lost_motion(v):
+    """The lost-motion chapter of a valve: the full lift's rows, the table of the solenoid timings, the table's file."""
+    lm = v.lost_motion
+    if lm is None:
+        return None
+    return {"rows": [(k, val) for k, val in shown(lm) if k not in ("closings", "table", "breathing")
+                     and val is not None],
+            "columns": [k for k, _ in shown(lm.closings[0])],
+            "table": [[val for _, val in shown(c)] for c in lm.closings], "file": lm.table_file,
+            "breathing_columns": [k for k, _ in shown(lm.breathing[0])] if lm.breathing else [],
+            "breathing": [[val for _, val in shown(b)] for b in lm.breathing]}
 
 
 LUBRICATION_COLUMNS = ("speed", "min_film", "min_lambda", "boundary", "mixed", "full", "mean_friction_torque",
@@ -518,6 +532,7 @@ def render_report(results, plots, lang="en", folder=None) -> str:
             "dynamics": _dynamics(v.dynamics),
             "grinding": _grinding(name, v),
             "hydraulic": _hydraulic(v),
+            "lost_motion": _lost_motion(v),
             "lubrication": _lubrication(v),
             "lash_adjuster": _lash_adjuster(v),
             "checks": checks[name],
@@ -546,7 +561,8 @@ def render_report(results, plots, lang="en", folder=None) -> str:
         cam_card=results.cam_card,
         conclusions=_conclusions(results, TEXT[lang]), document=spec.get("document", {}), checks=checks[None],
         dynamics_sources=DYNAMICS_SOURCES, grinding_sources=GRINDING_SOURCES,
-        hydraulic_sources=HYDRAULIC_SOURCES, lubrication_sources=LUBRICATION_SOURCES,
+        hydraulic_sources=HYDRAULIC_SOURCES, lost_motion_sources=LOST_MOTION_SOURCES,
+        lubrication_sources=LUBRICATION_SOURCES,
         adjuster_sources=ADJUSTER_SOURCES,
         step=REPORT_STEP_DEG, output=_flatten(spec["output"]), crank=crank, ports=ports,
         camshaft=_camshaft(results, spec, plots), camshaft_sources=CAMSHAFT_SOURCES, breathing=breathing,

@@ -1,7 +1,10 @@
 """Texts of the report and the plots in English and Russian: the chapters of the valve's design, the checks and the
 calculation note here, those of the further stages in :mod:`.stage_text`; the symbols in :mod:`.symbols`, the
-words of the optimisation's and the tolerance study's reports beside them (:mod:`.optimization`, :mod:`.tolerance`)."""
+words of the optimisation's and the tolerance study's reports beside them (:mod:`.optimization`, :mod:`.tolerance`).
+The words of the chapters kept in the message catalogues (:mod:`valvetrain.locale`, ``[report]``) are added to
+them."""
 
+from ..locale import catalogue
 from .stage_text import STAGE_TEXT
 
 TEXT = {
@@ -597,3 +600,6 @@ NOTE_TEXT = {
 
 for _lang, _texts in NOTE_TEXT.items():
     TEXT[_lang].update(_texts)
+
+for _lang in TEXT:      # the words kept in the message catalogues (src/valvetrain/locale/LANG.toml [report])
+    TEXT[_lang].update(catalogue(_lang)["report"])

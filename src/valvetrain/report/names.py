@@ -452,6 +452,7 @@ NAMES = {
 """Names of the keys without their unit suffix (or a whole key where the suffix is no unit): ``(en, ru)``."""
 
 VALUES = {
+    "deactivation": "отключение клапана",
     "pivot": "опора рычага", "chain": "цепь", "belt": "зубчатый ремень", "gears": "шестерни",
     "intake": "впускной", "exhaust": "выпускной", "inlet": "впускное", "transfer": "продувочное",
     "flat": "плоский", "roller": "роликовый", "finger": "роликовый рычаг", "direct": "непосредственный",
@@ -679,6 +680,28 @@ NAMES.update({
 })
 
 NAMES.update({
+    "switching.mode": ("mode of the unlatched finger", "режим рычага без фиксатора"),
+    "switching.inner_arm": ("inner arm, pivot to roller centre L_i", "внутренний рычаг от оси до центра ролика L_i"),
+    "switching.inner_arm_inertia": ("moment of inertia of the inner arm about its pivot J",
+                                    "момент инерции внутреннего рычага относительно оси J"),
+    "switching.contact_stiffness": ("stiffness of the arm's cam contact", "жёсткость контакта рычага с кулачком"),
+    "switching.spring_wire_diameter": ("wire diameter of the lost-motion spring d",
+                                       "диаметр проволоки пружины холостого хода d"),
+    "switching.spring_mean_diameter": ("mean coil diameter of the lost-motion spring D",
+                                       "средний диаметр витка пружины холостого хода D"),
+    "switching.spring_material": ("material of the lost-motion spring", "материал пружины холостого хода"),
+    "switching.latch_arm": ("inner arm's pivot to the latch L_l", "расстояние от оси внутреннего рычага до фиксатора L_l"),
+    "switching.latch_pin_diameter": ("diameter of the latch pin", "диаметр пальца фиксатора"),
+    "switching.latch_width": ("width of the latch's contact", "ширина контакта фиксатора"),
+    "switching.speeds": ("speeds of the unlatched arm's sweep", "число частот вращения в расчёте отключённого рычага"),
+    "switching.compression_ratio": ("compression ratio of the deactivated cylinder",
+                                    "степень сжатия отключённого цилиндра"),
+    "switching.trapped_pressure": ("pressure of the trapped charge", "давление запертого заряда"),
+    "switching.trapped_temperature": ("temperature of the trapped charge", "температура запертого заряда"),
+    "switching.wall_temperature": ("wall temperature of the deactivated cylinder", "температура стенок отключённого цилиндра"),
+})
+
+NAMES.update({
     "phaser.advance_range": ("range of the cam phaser, an advance positive (the events earlier)",
                              "диапазон фазовращателя, опережение положительно (фазы раньше)"),
     "phaser.step": ("step of the phaser's map", "шаг карты фазовращателя"),
@@ -763,6 +786,15 @@ NAMES.update({
     "hydraulic.relief_conductance": ("relief valve conductance", "проводимость предохранительного клапана"),
     "hydraulic.stop_margin": ("stop above the rigid drive's largest lift", "упор выше наибольшего подъёма жёсткого привода"),
     "hydraulic.stop_stiffness": ("stiffness of the valve's stop", "жёсткость упора клапана"),
+    "lost_motion.solenoid_opens": ("solenoid valve opens (each timing)", "открытие электромагнитного клапана (каждый момент)"),
+    "lost_motion.solenoid_closes": ("solenoid valve shuts", "закрытие электромагнитного клапана"),
+    "lost_motion.solenoid_area": ("flow area of the open solenoid valve", "проходное сечение открытого электромагнитного клапана"),
+    "lost_motion.solenoid_stroke": ("opening time of the solenoid valve", "время открытия электромагнитного клапана"),
+    "lost_motion.discharge_coefficient": ("discharge coefficient of the orifices C_d", "коэффициент расхода дросселей C_d"),
+    "lost_motion.accumulator_pressure": ("accumulator pressure", "давление в аккумуляторе"),
+    "lost_motion.brake_travel": ("brake travel before the seat", "ход тормоза до седла"),
+    "lost_motion.brake_end_area": ("brake orifice area at the seat", "сечение дросселя тормоза у седла"),
+    "lost_motion.brake_open_area": ("brake orifice area above its travel", "сечение дросселя тормоза выше его хода"),
     "grinding.wheel_radius": ("grinding wheel radius R_w", "радиус шлифовального круга R_w"),
     "grinding.master_follower_radius": ("master roller radius r_m", "радиус ролика копира r_m"),
     "grinding.bar_ratio": ("bar ratio of the grinder i", "передаточное отношение качающейся планки i"),

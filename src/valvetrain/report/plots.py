@@ -615,6 +615,48 @@ def hydraulic_figure(valve, t) -> Figure:
     return draw_hydraulic(hydraulic_data(valve), t)
 
 
+def lost_motion_data(valve) -> dict[str, Any]:
+    """The series of :func:`draw_lost_motion` against the cycle crank angle [deg from the gas-exchange TDC]: the valve
+    lift [mm] and the pressure under the brake piston [MPa] of the full lift and of each solenoid timing (labelled by
+    its crank angle), the pump piston's lift [mm]; the valve's name."""
+    lm = valve.lost_motion
+    full = lm.full
+    lifted = np.flatnonzero(full.plunger_lift > 0.0)
+    margin = (lifted[-1] - lifted[0]) // 5
+    rows = slice(max(lifted[0] - margin, 0), lifted[-1] + margin)         # the cam's lift and a fifth of it each side
+    x = rad_to_deg(full.angle[rows]) * lm.strokes / 2.0 + rad_to_deg(lm.nose)   # unwrapped about the nose
+    runs = [(None, full)] + [(rad_to_deg(c.solenoid_opens), r) for c, r in zip(lm.closings, lm.responses, strict=True)]
+    return {"name": valve.name, "crank_deg": x, "pump_lift_mm": full.plunger_lift[rows] / MM,
+            "runs": [(at, r.valve_lift[rows] / MM, r.brake_pressure[rows] / 1e6) for at, r in runs]}
+
+
+def draw_lost_motion(d, t) -> Figure:
+    """The valve lift and the pressure under the brake piston of the full lift and of each solenoid timing, against
+    the cycle crank angle."""
+    fig = Figure(figsize=(10, 7))
+    top, bottom = fig.subplots(2, 1, sharex=True)
+    x = d["crank_deg"]
+    top.plot(x, d["pump_lift_mm"], color="k", ls="--", lw=0.8, label=t["lm_pump"])
+    for i, (at, lift, pressure) in enumerate(d["runs"]):
+        label = t["lm_full"] if at is None else t["lm_at"].format(at=number(at, t["lang"]))
+        top.plot(x, lift, color=f"C{i}", lw=1.0, label=label)
+        bottom.plot(x, pressure, color=f"C{i}", lw=0.8, label=label)
+    top.set_ylabel(t["hy_lift"])
+    bottom.set_ylabel(t["lm_pressure"])
+    bottom.set_xlabel(t["lm_crank"])
+    for ax in (top, bottom):
+        ax.grid(alpha=0.3)
+        ax.legend(loc="upper right", fontsize=8)
+    fig.suptitle(f"{d['name']}: {t['lm_title']}")
+    fig.subplots_adjust(left=0.07, right=0.98, bottom=0.09, top=0.92, hspace=0.08)
+    return _localised(fig, t)
+
+
+def lost_motion_figure(valve, t) -> Figure:
+    """:func:`draw_lost_motion` of :func:`lost_motion_data`."""
+    return draw_lost_motion(lost_motion_data(valve), t)
+
+
 def hydraulic_sweep_data(valve) -> dict[str, Any]:
     """The series of :func:`draw_hydraulic_sweep` against the engine speed [rpm]: the largest pressure [MPa], the
     lift loss [mm], the opening and closing delays [cam deg] (NaN: not defined), where the liquid cavitates; the
@@ -707,7 +749,7 @@ FIGURE_SETS = ("main", "all", "none")
 
 MAIN_FIGURES = frozenset({"kinematics", "contour", "dynamics_speed", "grinding", "hydraulic", "timing",
                           "crank_torque", "two_stroke_ports", "camshaft_torque", "camshaft_torsion", "breathing_pv",
-                          "breathing_speed", "phaser"})
+                          "breathing_speed", "phaser", "lost_motion"})
 """The figures drawn by default (``figures="main"``): the valve's lift law and its cam, one figure of each further
 stage that a section asks for (the dynamics' seating velocity, bounce and contact force against the speed; the
 grinding; the hydraulic drive over a revolution; the crank and camshaft torques; the ports) and the timing diagram.
@@ -753,6 +795,8 @@ def write_plots(results, folder, lang="en", figures="main", claim=None) -> dict[
             if wanted("hydraulic_sweep"):
                 written[name]["hydraulic_sweep"] = save(lambda: hydraulic_sweep_figure(valve, t),
                                                         f"{name}_hydraulic_sweep.png")
+        if valve.lost_motion is not None and wanted("lost_motion"):
+            written[name]["lost_motion"] = save(lambda: lost_motion_figure(valve, t), f"{name}_lost_motion.png")
     for name, phaser in results.phasers.items():
         if phaser.figures.map and wanted("phaser"):
             written.setdefault(name, {})["phaser"] = save(lambda phaser=phaser: phaser_figure(phaser, t),

@@ -78,6 +78,7 @@ NOTES = {
         "(угол давления: боковая сила F_n sin α); допускаемого значения источники не дают",
     "(hydraulic valve actuation)": "(гидравлический привод клапана)",
     "(wave speed, method of characteristics)": "(скорость волны, метод характеристик)",
+    "(the lost-motion drive)": "(привод с потерянным ходом)", "(the orifice equation)": "(уравнение истечения)",
     "5 % of the rigid lift, the level of the delays (this package's)":
         "5 % подъёма при жёстком приводе, уровень отсчёта запаздываний (принято в этой программе)",
     ": accuracy_mm, met by N <= 9 harmonics (N by the residual against the accuracy, 0.002-0.01 mm)":

@@ -293,6 +293,40 @@ class Grinding(_Model):
         return self
 
 
+class LostMotion(_Model):
+    """[valves.NAME.hydraulic.lost_motion]: a lost-motion drive (the MultiAir/UniAir intake, Bernard et al. (2009)): a
+    solenoid valve from the pump chamber to an accumulator and a hydraulic brake on the actuator piston.
+
+    ``solenoid_opens_crank_deg``: the timings to simulate, each where the solenoid valve opens and lets the pump's oil
+    out to the accumulator, a cycle crank angle from the gas-exchange TDC (0...720) within the cam's lift: the valve
+    then closes on its spring, before the cam does (an early closing); 1 to 12 timings.  ``solenoid_closes_crank_deg``:
+    where the solenoid valve shuts (left out: before the cam lifts, the valve opens with the cam; later: the valve
+    opens late).  ``solenoid_area_mm2``: the open valve's flow area, ``solenoid_stroke_us`` the time it takes to open
+    or shut, ``discharge_coefficient`` that of its orifice and of the brake's.  ``accumulator_pressure_MPa``: the
+    accumulator's absolute pressure (left out: the drive's ``initial_pressure_MPa``); at most the pressure that lifts
+    the valve at rest.  ``brake_travel_mm``: the valve's last travel before its seat over which the brake's orifice
+    closes down from ``brake_open_area_mm2`` to ``brake_end_area_mm2`` at the seat (0: no brake).  The [hydraulic]
+    chapter is the drive with the solenoid valve shut (the valve follows the whole cam) and the brake."""
+
+    solenoid_opens_crank_deg: Annotated[list[_bounded(0.0, 720.0, "crank deg", low_open=False, high_open=True)],
+                                        Field(min_length=1, max_length=12)]
+    solenoid_closes_crank_deg: Optional[_bounded(0.0, 720.0, "crank deg", low_open=False, high_open=True)] = None
+    solenoid_area_mm2: _bounded(0.01, 1000.0, "mm2", low_open=False)
+    solenoid_stroke_us: _bounded(0.0, 10000.0, "us", low_open=False) = 500.0
+    discharge_coefficient: _bounded(0.1, 1.0, low_open=False) = 0.7
+    accumulator_pressure_MPa: Optional[_bounded(0.0, 100.0, "MPa")] = None
+    brake_travel_mm: _zero_or(0.01, 50.0, "mm", zero="no brake") = 0.0
+    brake_end_area_mm2: _bounded(0.001, 1000.0, "mm2", low_open=False) = 1.0
+    brake_open_area_mm2: _bounded(0.001, 1000.0, "mm2", low_open=False) = 20.0
+
+    @model_validator(mode="after")
+    def _brake_closes_down(self):
+        if self.brake_travel_mm > 0.0 and self.brake_end_area_mm2 > self.brake_open_area_mm2:
+            raise InputError(f"brake_end_area_mm2 = {self.brake_end_area_mm2:g}: allowed at most brake_open_area_mm2 "
+                             f"= {self.brake_open_area_mm2:g} (the brake's orifice closes down towards the seat)")
+        return self
+
+
 class Hydraulic(_Model):
     """[valves.NAME.hydraulic]: hydraulic valve actuation (Shang Hanji (1988), ch. 7): the valve's cam drives a
     plunger that feeds a pipe to an actuator piston on the valve (one mass on a spring and a seat).
@@ -305,7 +339,7 @@ class Hydraulic(_Model):
     at that pressure, ``relief_pressure_MPa`` a relief valve opening at it.  The valve's mass, spring and damping are
     the ones of the hydraulic drive and stand apart from the mechanical spring design.  The valve's travel ends at
     a stop ``stop_margin_mm`` above the rigid drive's largest lift (10 % of that lift if left out), of rate
-    ``stop_stiffness_N_per_mm``."""
+    ``stop_stiffness_N_per_mm``.  A ``lost_motion`` section makes it a lost-motion drive (:class:`LostMotion`)."""
 
     speed_rpm: Optional[_bounded(1.0, 30000.0, "rpm", low_open=False)] = None
     speed_range_rpm: Optional[Pair(1.0, 30000.0, "rpm")] = None
@@ -336,6 +370,7 @@ class Hydraulic(_Model):
     relief_conductance_cm3_per_s_MPa: _bounded(0.0, 1e9, "cm3/(s MPa)") = 1000.0
     stop_margin_mm: Optional[Length(0.0, 500.0, low_open=False)] = None
     stop_stiffness_N_per_mm: _bounded(1.0, 1e8, "N/mm", low_open=False) = 1e5
+    lost_motion: Optional[LostMotion] = None
 
     @model_validator(mode="after")
     def _pressures_in_order(self):
@@ -355,6 +390,11 @@ class Hydraulic(_Model):
         if self.relief_pressure_MPa is not None and self.relief_pressure_MPa <= self.initial_pressure_MPa:
             problems.append(f"relief_pressure_MPa = {self.relief_pressure_MPa:g} must be above initial_pressure_MPa = "
                             f"{self.initial_pressure_MPa:g}")
+        accumulator = None if self.lost_motion is None else self.lost_motion.accumulator_pressure_MPa
+        if accumulator is not None and not self.vapour_pressure_MPa < accumulator <= self.back_pressure_MPa + held:
+            problems.append(f"lost_motion.accumulator_pressure_MPa = {accumulator:g}: allowed above vapour_pressure_MPa "
+                            f"= {self.vapour_pressure_MPa:g} and at most back_pressure_MPa + F_0 / A_a = "
+                            f"{self.back_pressure_MPa + held:.4g} MPa (above it the accumulator lifts the valve at rest)")
         if (self.relief_pressure_MPa is not None and self.fill_pressure_MPa is not None
                 and self.relief_pressure_MPa <= self.fill_pressure_MPa):
             problems.append(f"relief_pressure_MPa = {self.relief_pressure_MPa:g} must be above fill_pressure_MPa = "

@@ -1,0 +1,84 @@
+"""The lost-motion stage (valvetrain.design.lost_motion, issue 42) on examples/lost-motion-intake.toml: the early
+closings against the full lift, each run the library's simulation with the solenoid valve at the timing, the record
+in results.json against its schema, bad input refused naming the key, the value and the range."""
+
+import json
+import math
+from dataclasses import replace
+
+import jsonschema
+import numpy as np
+import pytest
+
+from valvetrain.design import results_schema, run
+from valvetrain.design.breathing import cylinder_pressure
+from valvetrain.design.hydraulic_actuation import cycle_angle, gas_force, hydraulic_drive
+from valvetrain.design.lost_motion import cam_angle, table_columns
+from valvetrain.export import json_text
+from valvetrain.hydraulic_actuation import simulate
+from valvetrain.specification import SpecError, spec_document, validate
+from valvetrain.specification.si import si
+
+def test_the_earlier_the_solenoid_opens_the_earlier_and_lower_the_valve_closes(design):
+    """Each timing closes the valve before the full lift (the solenoid valve shut) does, the earlier the earlier it
+    opens, with no more lift than the full lift's; the brake lands each below the seating limit (0.5 m/s)."""
+    lm = design.valves["intake"].lost_motion
+    closes = [c.valve_closes for c in lm.closings]
+    lifts = [c.valve_lift for c in lm.closings]
+    assert len(closes) == 4 and np.all(np.diff(closes) > 0) and closes[-1] < lm.full_lift_closes
+    assert closes[2] < math.pi                                      # at least three before BDC
+    assert np.all(np.diff(lifts) >= 0) and max(lifts) <= lm.full_lift * (1 + 1e-12)
+    assert all(0 < -c.seating_velocity < 0.5 for c in lm.closings)
+    assert all(c.bypassed > 0 and not c.cavitation for c in lm.closings)
+
+
+def test_each_timing_is_the_simulation_with_the_solenoid_opening_there(design, spec):
+    """Independent of the stage's bookkeeping: the drive of the section's keys simulated with the solenoid valve
+    opening at the camshaft angle of the timing's crank angle, (phi - phi_nose) / 2, against the breathing's cylinder
+    pressure on the valve head, gives the same closing; the full lift is the hydraulic chapter's own revolution (the
+    solenoid valve shut)."""
+    v = design.valves["intake"]
+    lm, h = v.lost_motion, v.hydraulic
+    view = si(spec.valves["intake"])
+    drive = hydraulic_drive(view.hydraulic)
+    drive = replace(drive, valve=replace(drive.valve, stop=h.stop))
+    phi = view.hydraulic.lost_motion.solenoid_opens[1]
+    theta = math.remainder((phi - v.cam.nose) / 2.0, 2.0 * math.pi)
+    assert cam_angle(phi, v.cam.nose, 4) == pytest.approx(theta, abs=1e-12)
+    cylinder = cylinder_pressure(design.breathing, h.speed, "intake")      # the breathing's cycle on the valve head
+    force = gas_force(view, si(spec.gas), si(spec.engine), v.cam.nose, cylinder)
+    r = simulate(v.cam.law, replace(drive, solenoid=replace(drive.solenoid, opens=theta)), h.speed / 2.0,
+                 gas_force=force)
+    angle, velocity, _ = r.seating()
+    assert lm.closings[1].valve_closes == pytest.approx(float(cycle_angle(v.cam.nose, angle, 4)), abs=1e-12)
+    assert lm.closings[1].seating_velocity == velocity
+    assert lm.full is h.response and lm.full_lift == h.valve_lift
+    table = table_columns(lm)
+    assert set(table) >= {"cam_deg", "crank_deg", "valve_lift_mm_90", "brake_pressure_MPa_90"}
+
+
+def test_the_record_follows_the_schema(design):
+    record = json.loads(json_text(design.valves["intake"].summary))["lost_motion"]
+    assert [c["solenoid_opens_crank_deg"] for c in record["closings"]] == [60.0, 90.0, 120.0, 150.0]
+    jsonschema.validate(record, results_schema()["properties"]["valves"]["additionalProperties"]["properties"]
+                        ["lost_motion"])
+
+
+@pytest.mark.parametrize("change, message", [
+    ({"solenoid_opens_crank_deg": [60.0, 300.0]},
+     r"valves.intake.hydraulic.lost_motion.solenoid_opens_crank_deg = 300: the solenoid valve opens at 300 crank deg, "
+     r"outside the cam's lift: allowed within \(-?\d.*, \d.*\) crank deg"),
+    ({"solenoid_opens_crank_deg": [60.0, 720.0]},
+     r"valves.intake.hydraulic.lost_motion.solenoid_opens_crank_deg.1 = 720.0: allowed \[0, 720\) crank deg"),
+    ({"solenoid_opens_crank_deg": []}, r"valves.intake.hydraulic.lost_motion.solenoid_opens_crank_deg"),
+    ({"solenoid_area_mm2": 0.0}, r"valves.intake.hydraulic.lost_motion.solenoid_area_mm2 = 0.0: allowed \[0.01, 1000\]"),
+    ({"brake_end_area_mm2": 30.0}, r"brake_end_area_mm2 = 30: allowed at most brake_open_area_mm2 = 20"),
+    ({"accumulator_pressure_MPa": 3.0}, r"lost_motion.accumulator_pressure_MPa = 3: allowed above vapour_pressure_MPa "
+                                        r"= 0.002 and at most back_pressure_MPa \+ F_0 / A_a = 2.049 MPa"),
+])
+def test_bad_lost_motion_keys_are_refused_naming_them(spec, change, message):
+    doc = spec_document(spec)
+    doc["valves"]["intake"]["hydraulic"]["lost_motion"].update(change)
+    with pytest.raises(SpecError, match=message):
+        run(validate(doc))
+
