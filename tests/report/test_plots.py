@@ -16,7 +16,7 @@ import pytest
 
 from valvetrain.design import run
 from valvetrain.laws.convex import ThreeArcLaw
-from valvetrain.report import plots
+from valvetrain.report import hydraulic_plots, plots
 from valvetrain.report.i18n import TEXT
 from valvetrain.report.plots import jerk_impulses
 from valvetrain.specification import load_spec
@@ -188,10 +188,10 @@ def test_grinding_figure(designs):
 def test_hydraulic_figures(designs):
     v = designs["marine-hydraulic-exhaust.toml"].valves["exhaust"]
     record = v.summary["hydraulic"]
-    data = plots.hydraulic_data(v)
-    _drawn(data, plots.draw_hydraulic)
-    sweep = plots.hydraulic_sweep_data(v)
-    _drawn(sweep, plots.draw_hydraulic_sweep)
+    data = hydraulic_plots.hydraulic_data(v)
+    _drawn(data, hydraulic_plots.draw_hydraulic)
+    sweep = hydraulic_plots.hydraulic_sweep_data(v)
+    _drawn(sweep, hydraulic_plots.draw_hydraulic_sweep)
     assert data["stop_mm"] == pytest.approx(record["stop_mm"], rel=1e-12)
     assert sweep["simulated_rpm"] == pytest.approx(record["speed_rpm"], rel=1e-12)
 
@@ -206,8 +206,8 @@ def test_every_text_of_the_stages_figures_lies_on_them(designs):
         [*((kind, lambda t, make=make: make(dynamics.name, dynamics.dynamics, t))
            for kind, make in plots.DYNAMICS_FIGURES.items()),
          ("grinding", lambda t: plots.grinding_figure(ground, t)),
-         ("hydraulic", lambda t: plots.hydraulic_figure(hydraulic, t)),
-         ("hydraulic_sweep", lambda t: plots.hydraulic_sweep_figure(hydraulic, t))])
+         ("hydraulic", lambda t: hydraulic_plots.hydraulic_figure(hydraulic, t)),
+         ("hydraulic_sweep", lambda t: hydraulic_plots.hydraulic_sweep_figure(hydraulic, t))])
 
 
 def test_a_symbols_index_is_a_subscript_in_every_figure(results):
