@@ -38,7 +38,8 @@ from scipy.integrate import solve_ivp
 import numba
 
 from valvetrain.dynamics.kernels import blocks
-from valvetrain.dynamics.models import CoilSpring, one_mass_train, pushrod_train
+from valvetrain.dynamics.coils import CoilSpring
+from valvetrain.dynamics.models import one_mass_train, pushrod_train
 from valvetrain.dynamics.sweep import cam_excitation, substeps, sweep
 from valvetrain.laws import DynamicLaw
 

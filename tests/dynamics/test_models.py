@@ -6,8 +6,8 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from valvetrain.dynamics.models import (CoilSpring, OneMassTrain, coil_spring_from_geometry, direct_train,
-                                        natural_frequencies, pushrod_train, rocker_train)
+from valvetrain.dynamics.coils import CoilSpring, coil_spring_from_geometry
+from valvetrain.dynamics.models import OneMassTrain, direct_train, natural_frequencies, pushrod_train, rocker_train
 from valvetrain.dynamics.sweep import simulate, sweep
 from valvetrain.masses import reduced_mass_at_valve
 from valvetrain.springs import natural_frequency

@@ -4,7 +4,8 @@ its equations written out in tests/reference_multi.py, and the closed forms of t
 import numpy as np
 import pytest
 
-from valvetrain.dynamics.models import coil_spring, natural_modes, pushrod_train
+from valvetrain.dynamics.coils import coil_spring
+from valvetrain.dynamics.models import natural_modes, pushrod_train
 from valvetrain.dynamics.sweep import runs, sweep
 
 from conftest import seed000_law

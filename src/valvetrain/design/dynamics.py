@@ -19,9 +19,10 @@ import numpy as np
 
 from .. import lash_adjuster as hla
 from ..checks import Check, check
-from ..dynamics.models import (Adjuster, CoilSpring, MultiMassTrain, OneMassTrain, VariableMass, camshaft_stiffness,
-                               coil_spring, direct_train, natural_modes, one_mass_train, pushrod_stiffness,
-                               pushrod_train, rocker_train, series, slowest_decay)
+from ..dynamics.coils import CoilSpring, coil_spring
+from ..dynamics.models import (Adjuster, MultiMassTrain, OneMassTrain, VariableMass, camshaft_stiffness, direct_train,
+                               natural_modes, one_mass_train, pushrod_stiffness, pushrod_train, rocker_train, series,
+                               slowest_decay)
 from ..dynamics.accuracy import MAX_HALVINGS, Refinement, refine
 from ..dynamics.perturbation import perturbation_parameter
 from ..dynamics.resonance import resonance
@@ -343,7 +344,7 @@ def drive_links(dyn, valve, k, at) -> tuple[tuple[Optional[float], ...], tuple[s
 
 
 def _coil_springs(spring_record, coils):
-    """The designed spring(s) as :class:`CoilSpring` (:func:`~valvetrain.dynamics.models.coil_spring`: the active
+    """The designed spring(s) as :class:`CoilSpring` (:func:`~valvetrain.dynamics.coils.coil_spring`: the active
     coils' mass in the coil masses, the end coils' with the retainer and the head, the closing gap from the installed
     and the solid length)."""
     recs = [spring_record.design] if spring_record.count == 1 else [spring_record.outer, spring_record.inner]
@@ -412,7 +413,7 @@ and leaks the extension back under load over several revolutions, its periodic s
 0.1-0.3 a revolution (the modern example: 3 to 8 revolutions between 0.84 and 1.19 x the rated speed, 14 of its 40
 speeds unsettled at 3; above its float speed, 1.2 x, the plunger pumps up at every revolution and the speed stays
 unsettled).  The surge a lift leaves in the coils decays by exp(-zeta_1 omega_1 T) a revolution of T seconds (the first
-surge mode's damping ratio zeta_1 = :data:`~valvetrain.dynamics.models.COIL_DAMPING_RATIO` at omega_1): 0.37 at
+surge mode's damping ratio zeta_1 = :data:`~valvetrain.dynamics.coils.COIL_DAMPING_RATIO` at omega_1): 0.37 at
 8750 rpm for the pushrod example's 580 Hz, some 14 revolutions from a millimetre to the 1 nm the repetition asks.  20 is
 the key's largest value."""
 

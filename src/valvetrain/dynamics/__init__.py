@@ -1,6 +1,7 @@
 """Elastic valve-train dynamics: one-mass and multi-mass models, speed sweeps, Valve-train dynamics article (n.d.) resonance,
 the perturbation parameter and the outer solution (Shang Hanji (1988), chapter 3).
 
+* :mod:`.coils`: a valve spring as a chain of coil masses (the multi-mass trains');
 * :mod:`.models`: the trains (one-mass; multi-mass with coil masses; ``VariableMass``, a node whose mass changes
   with its lift, a finger's J / G^2 with the velocity-squared force of Lagrange's equation; ``Adjuster``, a hydraulic
   lash adjuster's plunger carried from revolution to revolution) and ``build_train``;
