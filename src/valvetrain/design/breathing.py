@@ -274,6 +274,15 @@ def speed_mean(results, name) -> float:
     return float(np.mean([getattr(r.figures, name) for r in results]))
 
 
+def cycle_check(figures, tolerance, code="breathing.cycle_change", **params) -> Check:
+    """The check that a condition's cycles repeat: its last cycle's relative change (``figures``, a
+    :class:`~valvetrain.breathing.cycle.BreathingRecord`) within ``tolerance``, its speed and ``params`` (display
+    texts) the check's parameters; the breathing chapter's, or another stage's ``code`` that breathes again."""
+    return check(code, figures.cycle_change, high=tolerance,
+                 source="the cycles repeat (Heywood (1988), chapter 14: a cycle simulation runs until its state "
+                        "repeats)", params={"speed": f"{to_display(figures.speed, 'rpm'):.5g}", **params})
+
+
 def breathing_stage(b, engine, crank, valves, views) -> BreathingResults:
     """Run the breathing chapter: ``b``, ``engine`` and ``crank`` are the SI views of [breathing], [engine] and
     [crank] (or None), ``valves`` the designed valves and ``views`` their SI views; returns
@@ -281,10 +290,7 @@ def breathing_stage(b, engine, crank, valves, views) -> BreathingResults:
     given, swept = breathing_conditions(b)
     engines, words = breathing_engine(b, engine, crank, valves, views, given + swept)
     conditions, curve = breathe_conditions(engines, b, given, swept)
-    found = [check("breathing.cycle_change", r.figures.cycle_change, high=b.cycle_tolerance,
-                   source="the cycles repeat (Heywood (1988), chapter 14: a cycle simulation runs until its state "
-                          "repeats)", params={"speed": f"{to_display(r.figures.speed, 'rpm'):.5g}"})
-             for r in conditions + curve if not r.converged]
+    found = [cycle_check(r.figures, b.cycle_tolerance) for r in conditions + curve if not r.converged]
     figures = BreathingSummary(b.mode, *words, tuple(r.figures for r in conditions), tuple(r.figures for r in curve))
     return BreathingResults(engines, conditions, curve, figures, tuple(found))
 

@@ -8,10 +8,10 @@ import numpy as np
 
 from ..breathing import ValveFlow
 from ..breathing.cycle import CYCLE, MAX_WORK, work
-from ..checks import Check, check
+from ..checks import Check
 from ..specification.messages import Problem, SpecError
 from ..units import to_display
-from .breathing import GRID, breathing_conditions, breathing_records, cd_table, designed_lift, lift_areas
+from .breathing import GRID, breathing_conditions, breathing_records, cd_table, cycle_check, designed_lift, lift_areas
 from .hydraulic_actuation import cycle_angle
 from .lost_motion import KEY, ClosingBreath, LostMotionResult
 
@@ -78,10 +78,7 @@ def with_breathing(result, name, design, view, breathing, b) -> tuple[LostMotion
             rows.append(ClosingBreath(opens, closes, g.speed, g.intake_pressure, g.trapped_mass,
                                       g.volumetric_efficiency, g.residual_gas_fraction, g.pmep, g.imep, out.converged))
             if not out.converged:
-                found.append(check("breathing.cycle_change", g.cycle_change, high=b.cycle_tolerance,
-                                   source="the cycles repeat (Heywood (1988), chapter 14: a cycle simulation runs "
-                                          "until its state repeats)",
-                                   params={"speed": f"{to_display(g.speed, 'rpm'):.5g}"}))
+                found.append(cycle_check(g, b.cycle_tolerance))
     return replace(result, breathing=tuple(rows)), found
 
 

@@ -24,7 +24,7 @@ from ..checks import Check, check
 from ..locale import note
 from ..specification.messages import Problem, SpecError
 from ..units import to_display
-from .breathing import (BreathingResults, breathe_conditions, breathing_conditions, breathing_records,
+from .breathing import (BreathingResults, breathe_conditions, breathing_conditions, breathing_records, cycle_check,
                         gas_opening_load)
 from .camshaft import ANGLES, camshaft_torque, lobe_set
 from .crank import firing_angles
@@ -327,10 +327,8 @@ def phaser_stage(name, phaser, valve, engine, design, breathing=None, b=None, ca
         searched_results.append((a, r))
         best.append(BestPhase(f.speed, f.intake_pressure, a, f.volumetric_efficiency, f.residual_gas_fraction, f.pmep,
                               f.torque, (getattr(f, objective) - values[zero]) / abs(values[zero]), n))
-    found = [check("phaser.cycle_change", r.figures.cycle_change, high=b.cycle_tolerance,
-                   source="the cycles repeat (Heywood (1988), chapter 14: a cycle simulation runs until its state "
-                          "repeats)", params={"speed": f"{to_display(r.figures.speed, 'rpm'):.5g}",
-                                              "advance": f"{to_display(a, 'crank deg'):g}"}).of_valve(name)
+    found = [cycle_check(r.figures, b.cycle_tolerance, "phaser.cycle_change",
+                         advance=f"{to_display(a, 'crank deg'):g}").of_valve(name)
              for a, r in [(a, r) for a, row in zip(phases, rows, strict=True) for r in row] + searched_results
              if not r.converged]
     search = (f"the map's best phase refined by a bounded Brent search (scipy.optimize.minimize_scalar) between its "
