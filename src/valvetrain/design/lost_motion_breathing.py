@@ -58,7 +58,7 @@ def with_breathing(result, name, design, view, breathing, b) -> tuple[LostMotion
     table = cd_table(side)
     given, _ = breathing_conditions(b)
     engines = breathing.engines[:len(given)]
-    own = [count_areas(designed_lift(design), table, view, design.count)]
+    own_forward, own_reverse = count_areas(designed_lift(design), table, view, design.count)
     runs = [(None, result.full_lift_closes, result.full)] + [
         (c.solenoid_opens, c.valve_closes, r) for c, r in zip(result.closings, result.responses, strict=True)]
     asked = len(runs) * sum(work(e, c, b.max_cycles) for e, c in zip(engines, given, strict=True))
@@ -71,7 +71,8 @@ def with_breathing(result, name, design, view, breathing, b) -> tuple[LostMotion
     for opens, closes, r in runs:
         f, rev = count_areas(lift_on_grid(r, result.nose, result.strokes), table, view, design.count)
         flows = [getattr(e, kind) for e in engines]
-        lifted = [replace(e, **{kind: ValveFlow(GRID, flow.forward - own[0][0] + f, flow.reverse - own[0][1] + rev)})
+        lifted = [replace(e, **{kind: ValveFlow(GRID, flow.forward - own_forward + f,
+                                                flow.reverse - own_reverse + rev)})
                   for e, flow in zip(engines, flows, strict=True)]
         for c, out in zip(given, breathing_records(lifted, given, b.cycle_tolerance, b.max_cycles), strict=True):
             g = out.figures
