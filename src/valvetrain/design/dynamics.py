@@ -165,7 +165,7 @@ class SpeedRecords:
 def speed_records(result, speeds, epsilon, events=None) -> SpeedRecords:
     """The :class:`SpeedRecords` of a :class:`~valvetrain.dynamics.sweep.SweepResult` at engine speeds [rad/s] (S,)
     with the perturbation parameters (S,): :func:`speed_record` of every speed, over the speeds at once; its events
-    ``events`` (:class:`~valvetrain.dynamics.sweep.SweepEvents`, those refined at the speeds that decide the headlines,
+    ``events`` (:class:`~valvetrain.dynamics.events.SweepEvents`, those refined at the speeds that decide the headlines,
     :class:`~valvetrain.dynamics.accuracy.Refinement`), else the sweep's own."""
     events = result.events if events is None else events
     surge = result.surge_amplitude.max(axis=1) if result.surge_amplitude.shape[1] else None
@@ -1051,7 +1051,7 @@ def opening_check(d, adjuster_ratio=0.0) -> list[Check]:
     -------
     list of Check
         ``dynamics.valve_opens``: the smallest over the speeds swept of the valve's largest lift in the revolution
-        [m], a failure not above :data:`~valvetrain.dynamics.sweep.BOUNCE_TOLERANCE` (below it the valve rocks on the
+        [m], a failure not above :data:`~valvetrain.dynamics.events.BOUNCE_TOLERANCE` (below it the valve rocks on the
         seat's elasticity: it has not opened); its note names the speed and the reasons found: the drive's deflection
         under the spring preload F0 / c no less than the cam's lift at the valve (quasi-statically the cam cannot lift
         the valve off its seat), else with a lash adjuster its plunger giving way: a shut valve carries no more than

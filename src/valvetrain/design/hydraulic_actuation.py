@@ -26,7 +26,7 @@ import numpy as np
 from ..checks import Check, check
 from ..locale import note
 from ..crank.pressure import on_grid
-from ..dynamics.sweep import BOUNCE_TOLERANCE
+from ..dynamics.events import BOUNCE_TOLERANCE
 from ..errors import InputError
 from ..flow import circle_area
 from ..hydraulic_actuation import (Actuator, Brake, DriveResult, Fluid, HydraulicDrive, Pipe, Pump, Solenoid, SpeedSweep,

@@ -17,7 +17,7 @@ import numpy as np
 
 from ..bibliography import cite
 from ..checks import Check, check
-from ..dynamics.sweep import BOUNCE_TOLERANCE
+from ..dynamics.events import BOUNCE_TOLERANCE
 from ..errors import InputError
 from ..hydraulic_actuation import DriveResult, simulate
 from ..locale import note
