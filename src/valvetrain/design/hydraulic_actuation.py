@@ -33,7 +33,8 @@ from ..hydraulic_actuation import (Actuator, Brake, DriveResult, Fluid, Hydrauli
                                    Valve, simulate, speed_sweep)
 from ..specification.messages import Problem
 from ..units import DEG, MM, cam_per_crank, rpm_to_rad_s, to_display
-from .dynamics import SEATING_VELOCITY_MAX, finite_or_none
+from .dynamics_checks import SEATING_VELOCITY_MAX
+from .dynamics_records import finite_or_none
 from .results import quantity, shown, shown_value
 
 SOURCES = ("Shang Hanji (1988), ch. 7 (hydraulic valve actuation); Wylie and Streeter (1978) (wave speed, "
