@@ -12,8 +12,8 @@ did before its screen), which must choose the same spring.  Best and median of t
 
 Last, the dynamics stage's per-speed records of the built-in example's intake valve (a sweep of 200 speeds): its
 events and records over the speeds at once (:attr:`~valvetrain.dynamics.sweep.SweepResult.events`,
-:func:`~valvetrain.design.dynamics.speed_records`, the headline) against the baseline of a
-:class:`~valvetrain.dynamics.sweep.SpeedResult` and a :class:`~valvetrain.design.dynamics.SpeedRecord` made speed by
+:func:`~valvetrain.design.dynamics_records.speed_records`, the headline) against the baseline of a
+:class:`~valvetrain.dynamics.sweep.SpeedResult` and a :class:`~valvetrain.design.dynamics_records.SpeedRecord` made speed by
 speed, as the stage did before; both must give the same minimum contact forces, seating velocities and bounces.
 """
 
@@ -25,7 +25,7 @@ import numpy as np
 
 from valvetrain import springs
 from valvetrain.design import run
-from valvetrain.design.dynamics import speed_record, speed_records
+from valvetrain.design.dynamics_records import speed_record, speed_records
 from valvetrain.dynamics.perturbation import perturbation_parameter
 from valvetrain.design.drive import drive_stage, spring_options
 from valvetrain.design.drive_strength import strength_stage

@@ -165,7 +165,7 @@ def test_design_without_the_sweeps_and_with_them():
     """Issue 25: the designer's two steps.  Without the sweeps the kinematics are those of the whole design (the
     dynamics stage reads the law, never changes it) and no check of the dynamics is made; with ``sweeps`` the sweeps
     are api.sweep's, the independent route (the sweep alone, design.sweep_designs)."""
-    from valvetrain.design.dynamics import CHECK_CODES
+    from valvetrain.design.dynamics_checks import CHECK_CODES
     from valvetrain.specification import example_text
 
     document = tomllib.loads(example_text())

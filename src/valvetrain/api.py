@@ -150,7 +150,7 @@ def without_dynamics(spec, parsed) -> dict[str, Any]:
     """A specification dict without its valves' ``[dynamics]`` sections and without the acceptances of the dynamics
     checks (which would name no check of it); ``parsed`` is its validated :class:`~valvetrain.specification.Spec`."""
     from .checks import resolve
-    from .design.dynamics import CHECK_CODES
+    from .design.dynamics_checks import CHECK_CODES
 
     kept = [a for a, p in zip(spec.get("accepted", []), parsed.accepted, strict=True)
             if (resolve(p, parsed.valves) or (None, None, None))[1] not in CHECK_CODES]
@@ -216,12 +216,12 @@ MAP_COLUMNS = 400
 
 
 def sweep_series(d) -> dict[str, Any]:
-    """The speed-sweep series of one valve's :class:`~valvetrain.design.dynamics.DynamicsResult`: per speed the
+    """The speed-sweep series of one valve's :class:`~valvetrain.design.dynamics_records.DynamicsResult`: per speed the
     smallest contact force, the seating velocity (None where the valve did not seat), the bounce; the headline
     speeds; the maps of the valve-lift error (valve lift minus the rigid lift, mm), the cam contact force (N) and
     the valve's acceleration (m/s²) over the camshaft angles of the event (every speed's open stretch and 10 cam
     deg either side, thinned to about :data:`MAP_COLUMNS`) and the speeds."""
-    from .design.dynamics import event_window
+    from .design.dynamics_records import event_window
 
     sw, keep = d.sweep, event_window(d)
     step = max(1, int(np.count_nonzero(keep)) // MAP_COLUMNS)

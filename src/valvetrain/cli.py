@@ -243,7 +243,7 @@ def sweep(file, out, valves, force, lang) -> None:
     multi-mass train, every speed of the range, jump, bounce and seating. Writes dynamics.json,
     tables/NAME_dynamics.csv and plots/NAME_dynamics_map.png, NAME_dynamics_speed.png."""
     from .design import sweep_designs
-    from .design.dynamics import CHECK_CODES
+    from .design.dynamics_checks import CHECK_CODES
     from .export import write_sweep
 
     spec = _load(file)

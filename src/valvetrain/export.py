@@ -10,7 +10,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .design.dynamics import sweep_columns
+from .design.dynamics_records import sweep_columns
 from .design.grinding import master_cartesian_columns, master_polar_columns, wear_columns
 from .design.hydraulic_actuation import sweep_columns as hydraulic_sweep_columns, table_columns as hydraulic_columns
 from .design.lost_motion import table_columns as lost_motion_columns

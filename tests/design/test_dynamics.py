@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 from valvetrain.design import results_schema, run
-from valvetrain.design.dynamics import dynamics_checks
+from valvetrain.design.dynamics_checks import dynamics_checks
 from valvetrain.export import results_json, write_outputs
 from valvetrain.specification import SpecError, load_spec, parse_spec, si
 from valvetrain.units import MM
@@ -365,30 +365,6 @@ def test_a_speed_whose_motion_does_not_repeat_says_why():
     assert run(spec(FEW)).valves["intake"].dynamics.unsettled_note is None
 
 
-def test_a_speed_that_does_not_repeat_over_an_undamped_seat_says_so():
-    """Issue 36 (fuzz: the dynamic law with seat_damping_ratio = 0): one mass with its clearance open between the lifts
-    rests on an undamped seat, sqrt((c_s + K) / M) / 2 pi = 5987 Hz for the fuzz case's M = 0.1414 kg, K = 72.4 kN/m,
-    c_s = 200 kN/mm (closed form), no damper acting on it; the note says it does not decay (a RuntimeWarning of a
-    division by a decay of zero before), in English and in Russian."""
-    from types import SimpleNamespace
-
-    from valvetrain.design.dynamics import unsettled_note
-    from valvetrain.dynamics.models import one_mass_train
-    from valvetrain.report.names import translate
-
-    mass, spring, seat = 0.14138065, 7.23848447e4, 2e8
-    net = one_mass_train(mass, 1.29315348e7, spring, 400.0, lash=0.4 * MM, damping_ratio=0.05, seat_stiffness=seat,
-                         seat_damping_ratio=0.0).network()
-    events = SimpleNamespace(jumped=np.array([False, False]), bounce_count=np.array([0, 0]))
-    result = SimpleNamespace(converged=np.array([True, False]), events=events, cam_speeds=np.array([100.0, 400.0]))
-    speeds = 2.0 * result.cam_speeds
-    note = unsettled_note(result, speeds, net, 3, adjuster=False)
-    hz = np.sqrt((seat + spring) / mass) / (2 * np.pi)
-    assert round(hz) == 5987
-    assert note == (f"1 of 2 speeds, {speeds[1] * 30 / np.pi:.0f} rpm, did not repeat within 3 revolutions; at 1 the "
-                    "slowest vibration of the train, 5987 Hz, is undamped between the lifts (no damping acts on it "
-                    "with the valve on its seat): it does not decay")
-    assert "не затухает" in translate(note, "ru")
 
 
 def test_one_mass_natural_frequency_and_jump_failure():
@@ -431,35 +407,6 @@ def test_a_valve_the_cam_cannot_lift_off_its_seat_fails_naming_the_reason():
     assert "dynamics.valve_opens" not in {c.code for c in run(spec(FEW)).valves["intake"].checks}
 
 
-@pytest.mark.parametrize("dynamics", ["speeds = 12\nrevolutions = 2\nstep_cam_deg = 0.5\n",
-                                      "model = \"multi\"\ncoils_per_spring = 4\nspeeds = 6\nrevolutions = 2\n"
-                                      "step_cam_deg = 0.5\n"])
-def test_the_per_speed_records_at_once_are_each_speeds_own(dynamics):
-    """The stage's per-speed records, made over the speeds at once (speed_records, SweepResult.events), are those
-    speed_record makes of each speed's own SpeedResult (SweepResult.speed): every field, one-mass and multi-mass (coil
-    surge and clash margin), bit for bit (nan where a speed has no separation, no seating or no monitored clash); but
-    the events of the speeds that decide the headlines, which are those of their refined step (the refinement's)."""
-    from valvetrain.design.dynamics import speed_record
-
-    d = run(spec(dynamics)).valves["intake"].dynamics
-    r = d.records
-    each = [speed_record(d.sweep.speed(i), s, e) for i, (s, e) in enumerate(zip(r.speed, r.epsilon, strict=True))]
-    fine, events = d.refinement.halvings > 0, d.refinement.events
-    assert fine.any() and not fine.all()
-    each = [x if not f else replace(x, min_contact_force=events.min_contact_force[i],
-                                    seating_velocity=events.seating_velocity[i], bounce=events.bounce_height[i],
-                                    bounce_count=events.bounce_count[i], jump_intervals=(
-                                        ((events.jump_from[i], events.jump_to[i]),) if events.jumped[i] else ()))
-            for i, (x, f) in enumerate(zip(each, fine, strict=True))]
-    for name in ("min_contact_force", "max_contact_force", "seating_velocity", "bounce", "bounce_count",
-                 "max_lift_error", "revolutions"):
-        np.testing.assert_array_equal(getattr(r, name), [getattr(x, name) for x in each], err_msg=name)
-    np.testing.assert_array_equal(r.jump, [bool(x.jump_intervals) for x in each])
-    np.testing.assert_array_equal(r.jump_from, [x.jump_intervals[0][0] if x.jump_intervals else np.nan for x in each])
-    np.testing.assert_array_equal(r.jump_to, [x.jump_intervals[-1][1] if x.jump_intervals else np.nan for x in each])
-    surge = [np.nan if x.max_surge is None else x.max_surge for x in each]
-    np.testing.assert_array_equal(np.full(len(each), np.nan) if r.max_surge is None else r.max_surge, surge)
-    np.testing.assert_array_equal(r.clash_margin, [np.nan if x.clash_margin is None else x.clash_margin for x in each])
 
 
 @pytest.mark.parametrize("model, node", [("1dof", "valve"), ("multi", "rocker")])

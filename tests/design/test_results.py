@@ -21,7 +21,8 @@ from appendix import appendix_spec
 
 DESIGN_MODULES = ["valvetrain.design", "valvetrain.design.valve", "valvetrain.design.drive",
                   "valvetrain.design.drive_strength", "valvetrain.design.crank",
-                  "valvetrain.design.twostroke", "valvetrain.design.dynamics", "valvetrain.design.grinding",
+                  "valvetrain.design.twostroke", "valvetrain.design.dynamics", "valvetrain.design.dynamics_records",
+                  "valvetrain.design.dynamics_checks", "valvetrain.design.grinding",
                   "valvetrain.design.hydraulic_actuation", "valvetrain.design.results",
                   "valvetrain.design.lubrication", "valvetrain.design.lash_adjuster",
                   "valvetrain.design.camcard", "valvetrain.results", "valvetrain.laws.records"]

@@ -13,7 +13,8 @@ import pytest
 from reference_dynamics import RPM, spec12
 from valvetrain.design.lash_adjuster import float_speed, plunger_motion
 from valvetrain.dynamics.models import Adjuster, one_mass_train
-from valvetrain.dynamics.sweep import lift_event, sweep
+from valvetrain.dynamics.events import lift_event
+from valvetrain.dynamics.sweep import sweep
 
 RATIO = 0.6
 """Motion ratio of an end-pivot finger of lever ratio 1.6 (valve motion per plunger motion i - 1)."""

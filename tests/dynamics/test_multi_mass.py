@@ -6,7 +6,8 @@ import pytest
 
 from valvetrain.dynamics.coils import coil_spring
 from valvetrain.dynamics.models import natural_modes, pushrod_train
-from valvetrain.dynamics.sweep import runs, sweep
+from valvetrain.dynamics.events import runs
+from valvetrain.dynamics.sweep import sweep
 
 from conftest import seed000_law
 from reference_dynamics import RPM

@@ -65,7 +65,7 @@ from .crank import (LAMBDA_RANGE, CrankResults, CrankSummary, crank_geometry as 
                     valve_timing)
 from .drive import MassResult, SpringResult
 from .drive_strength import StrengthResult
-from .dynamics import DynamicsResult
+from .dynamics_records import DynamicsResult
 from .grinding import GrindingResult
 from .hydraulic_actuation import CylinderPressure, HydraulicResult, speed_plan
 from .lost_motion import LostMotionResult

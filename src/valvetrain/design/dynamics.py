@@ -11,37 +11,34 @@ specification leaves out is estimated and the estimate stated in ``parameters.es
 Speeds in the results are engine (crank) speeds; the camshaft of a four-stroke turns at half.
 """
 
-from dataclasses import dataclass, field, replace
+from dataclasses import replace
 import math
 from typing import Optional, Union
 
 import numpy as np
 
 from .. import lash_adjuster as hla
-from ..checks import Check, check
+from ..checks import Check
 from ..dynamics.coils import CoilSpring, coil_spring
 from ..dynamics.models import (Adjuster, MultiMassTrain, OneMassTrain, VariableMass, camshaft_stiffness, direct_train,
-                               natural_modes, one_mass_train, pushrod_stiffness, pushrod_train, rocker_train, series,
-                               slowest_decay)
-from ..dynamics.accuracy import MAX_HALVINGS, Refinement, refine
+                               natural_modes, one_mass_train, pushrod_stiffness, pushrod_train, rocker_train, series)
+from ..dynamics.accuracy import refine
 from ..dynamics.perturbation import perturbation_parameter
 from ..dynamics.resonance import resonance
-from ..dynamics.sweep import (BOUNCE_TOLERANCE, STATE_TOLERANCE, SpeedResult, SweepResult, headline_sweep, sweep,
-                              sweep_size)
+from ..dynamics.sweep import SweepResult, headline_sweep, sweep, sweep_size
 from ..followers import follower_of
 from ..layouts import chain, finger_inertia, layout, valve_arm
 from ..specification import SpecError
 from ..specification.messages import Problem
 from ..strength import cam_force
-from ..units import DEG, MM, cam_per_crank, rpm_to_rad_s, to_display
-from .results import quantity, shown
+from ..units import DEG, MM, cam_per_crank, rpm_to_rad_s
+from .dynamics_checks import dynamics_checks, unsettled_note
+from .dynamics_records import (AccuracyRecord, DynamicsParameters, DynamicsResult, Mode, PerSpeed, ResonanceRecord,
+                               finite_or_none, speed_record, speed_records)
 
 SOURCES = ("Shang Hanji (1988), ch. 3 (one-mass and multi-mass trains, jump, seating, bounce); Valve-train dynamics "
            "article (n.d.) (resonant harmonic and distortion)")
 """The works the dynamics stage follows, as the report cites them."""
-
-CHECK_SOURCE = "Shang Hanji (1988), ch. 3"
-"""Short citation of the dynamics checks."""
 
 LINK_STIFFNESS = 45e6
 """Stiffness assumed for a drive link whose geometry the specification does not give, at the valve [N/m]:
@@ -57,239 +54,6 @@ this package's reference machine at 6.5e7 a second; the revolutions counted at t
 
 MAX_SWEEP_BYTES = 1e9
 """Most bytes of the recorded revolutions of a sweep without ``allow_large_sweep`` (1 GB)."""
-
-SEATING_VELOCITY_MAX = 0.5
-"""Working limit of the seating velocity [m/s] (0.3-0.5 m/s in the valve-train literature)."""
-
-
-@dataclass(frozen=True)
-class DynamicsParameters:
-    """The train that was simulated, every value at the valve (SI), and how each was obtained."""
-
-    model: str = quantity("model", label="1dof: one mass; multi: drive masses and coil masses")
-    drive_layout: str = quantity("layout", label="drive layout")
-    mass: float = quantity("mass_kg", "kg", "M, the train's mass reduced to the valve")
-    drive_stiffness: float = quantity("drive_stiffness_N_per_mm", "N/mm", "c, drive stiffness from cam to valve, at "
-                                      "the valve (the links in series)")
-    damping_ratio: float = quantity("damping_ratio", label="zeta of the drive, C = 2 zeta sqrt(c M)")
-    spring_rate: float = quantity("spring_rate_N_per_mm", "N/mm", "K, valve spring(s) rate")
-    preload: float = quantity("spring_preload_N", "N", "F0, installed spring force")
-    rocker_ratio: float = quantity("rocker_ratio", label="k, valve arm / tappet arm")
-    lash: float = quantity("lash_mm", "mm", "valve clearance at the valve, k h0")
-    seat_stiffness: float = quantity("seat_stiffness_N_per_mm", "N/mm", "c_s, valve seat contact")
-    seat_damping_ratio: float = quantity("seat_damping_ratio", label="zeta_s of the seat, C_s = 2 zeta_s sqrt(c_s M)")
-    revolutions: int = quantity("revolutions", label="most camshaft revolutions per speed (a speed stops once its "
-                                "motion repeats), the last one recorded")
-    step: float = quantity("step_cam_deg", "cam deg", "recording and base integration step")
-    coils_per_spring: int = quantity("coils_per_spring", label="coil masses per spring (multi)")
-    links: tuple[float, ...] = quantity("link_stiffnesses_N_per_mm", "N/mm", "drive links from the cam to the valve, "
-                                        "at the valve")
-    link_names: tuple[str, ...] = quantity("link_names", label="what each link is")
-    node_masses: Optional[dict[str, float]] = quantity("node_masses_kg", "kg", "multi: masses of the nodes at the valve",
-                                           omit_none=True)
-    estimates: tuple[str, ...] = quantity("estimates", label="how each value the specification does not give was "
-                                          "obtained")
-
-
-@dataclass(frozen=True)
-class SpeedRecord:
-    """The train at one engine speed (SI)."""
-
-    speed: float = quantity("speed_rpm", "rpm", "engine speed")
-    epsilon: float = quantity("epsilon", label="perturbation parameter M omega_cam^2 / (c + K)")
-    min_contact_force: float = quantity("min_contact_force_N", "N", "smallest cam contact force while the cam lifts "
-                                        "the open valve, before it seats (at the cam; 0: separation; null: the valve "
-                                        "never leaves its seat)")
-    max_contact_force: float = quantity("max_contact_force_N", "N", "largest cam contact force (at the cam)")
-    seating_velocity: float = quantity("seating_velocity_m_s", "m/s", "valve velocity at the first seating "
-                                       "(negative: closing; null: no seating)")
-    bounce: float = quantity("bounce_mm", "mm", "largest valve lift after the first seating")
-    bounce_count: int = quantity("bounce_count", label="returns above 1 um after the first seating")
-    max_lift_error: float = quantity("max_lift_error_mm", "mm", "largest |valve lift - rigid lift|")
-    jump_intervals: tuple[tuple[float, ...], ...] = quantity("jump_intervals_cam_deg", "cam deg",
-                                                              "follower separation, from and to (from the nose)")
-    max_surge: Optional[float] = quantity("max_surge_mm", "mm", "multi: largest coil deviation from its share of "
-                                          "the valve motion", omit_none=True)
-    clash_margin: Optional[float] = quantity("coil_clash_margin_mm", "mm", "multi: smallest gap between coils "
-                                             "(negative: clash)", omit_none=True)
-    revolutions: int = quantity("revolutions", label="camshaft revolutions integrated until the motion repeated "
-                                "(the cap where it did not)", default=1)
-    max_contact_stress: Optional[float] = quantity("max_contact_stress_MPa", "MPa", "rated speed: largest Hertz "
-                                                   "stress of the cam contact under the simulated force (needs "
-                                                   "parts.cam_width_mm)", default=None, omit_none=True)
-    max_contact_stress_angle: Optional[float] = quantity("max_contact_stress_angle_cam_deg", "cam deg", "where it "
-                                                         "occurs, from the nose", default=None, omit_none=True)
-    lubrication_gamma_nose: Optional[float] = quantity("lubrication_gamma_nose", label="rated speed, flat follower: "
-                                                       "gamma = rho / (R0 + h) at the nose (0.15-0.25 recommended)",
-                                                       default=None, omit_none=True)
-    lubrication_gamma_at_max_stress: Optional[float] = quantity("lubrication_gamma_at_max_stress", label="gamma "
-                                                                "where the dynamic stress is largest", default=None, omit_none=True)
-    lubrication_near_half: Optional[float] = quantity("lubrication_poor_film_cam_deg", "cam deg", "cam angle over "
-                                                      "which the loaded contact has 0.4 <= gamma <= 0.6 (poor film "
-                                                      "near gamma = 0.5; keep it short)", default=None, omit_none=True)
-    max_drive_torque: Optional[float] = quantity("max_drive_torque_N_m", "N m", "rated speed: largest camshaft "
-                                                 "drive torque of this cam, F dh/dtheta", default=None, omit_none=True)
-    min_drive_torque: Optional[float] = quantity("min_drive_torque_N_m", "N m", "smallest (negative: the closing "
-                                                 "flank drives the camshaft)", default=None, omit_none=True)
-    mean_drive_torque: Optional[float] = quantity("mean_drive_torque_N_m", "N m", "mean over the revolution (the "
-                                                  "damping losses)", default=None, omit_none=True)
-
-
-def _like(name):
-    """A field of :class:`SpeedRecord`'s key, unit and label."""
-    return field(metadata=SpeedRecord.__dataclass_fields__[name].metadata)
-
-
-@dataclass(frozen=True)
-class SpeedRecords:
-    """Every speed of the sweep at once: the fields of :class:`SpeedRecord`, arrays (S,) (SI), as the CSV table
-    shows them; a speed without a separation has nan where the first separation starts and the last one ends, and a
-    spring whose closing is not monitored a nan clash margin."""
-
-    speed: np.ndarray = _like("speed")
-    epsilon: np.ndarray = _like("epsilon")
-    min_contact_force: np.ndarray = _like("min_contact_force")
-    max_contact_force: np.ndarray = _like("max_contact_force")
-    seating_velocity: np.ndarray = _like("seating_velocity")
-    bounce: np.ndarray = _like("bounce")
-    bounce_count: np.ndarray = _like("bounce_count")
-    jump: np.ndarray = quantity("jump", label="follower separation")
-    jump_from: np.ndarray = quantity("jump_from_cam_deg", "cam deg", "first separation starts (from the nose)")
-    jump_to: np.ndarray = quantity("jump_to_cam_deg", "cam deg", "last separation ends (from the nose)")
-    max_lift_error: np.ndarray = _like("max_lift_error")
-    max_surge: Optional[np.ndarray] = _like("max_surge")      # None: no coil masses
-    clash_margin: np.ndarray = _like("clash_margin")
-    revolutions: np.ndarray = _like("revolutions")
-
-
-def speed_records(result, speeds, epsilon, events=None) -> SpeedRecords:
-    """The :class:`SpeedRecords` of a :class:`~valvetrain.dynamics.sweep.SweepResult` at engine speeds [rad/s] (S,)
-    with the perturbation parameters (S,): :func:`speed_record` of every speed, over the speeds at once; its events
-    ``events`` (:class:`~valvetrain.dynamics.sweep.SweepEvents`, those refined at the speeds that decide the headlines,
-    :class:`~valvetrain.dynamics.accuracy.Refinement`), else the sweep's own."""
-    events = result.events if events is None else events
-    surge = result.surge_amplitude.max(axis=1) if result.surge_amplitude.shape[1] else None
-    error = result.lift_error
-    np.abs(error, out=error)     # in place: a map of speeds x angles
-    return SpeedRecords(np.asarray(speeds, dtype=float), np.asarray(epsilon, dtype=float), events.min_contact_force,
-                        result.contact_force.max(axis=1), events.seating_velocity, events.bounce_height,
-                        events.bounce_count, events.jumped, events.jump_from, events.jump_to,
-                        error.max(axis=1), surge,
-                        np.where(np.isfinite(result.clash_margin), result.clash_margin, np.nan), result.revolutions)
-
-
-@dataclass(frozen=True)
-class ResonanceRecord:
-    """Resonant harmonic of the cam excitation at the rated speed and the distortion of the valve motion."""
-
-    natural_frequency: float = quantity("natural_frequency_Hz", "Hz", "f0 = sqrt((K + c)/M) / 2 pi")
-    order: int = quantity("harmonic_k", label="k = int(omega0 / omega_cam), the resonant harmonic")
-    force: float = quantity("harmonic_force_N", "N", "amplitude of harmonic k of c k h")
-    amplitude: float = quantity("amplitude_mm", "mm", "elastic amplitude Delta = F / (xi omega0)")
-    distortion: float = quantity("distortion_percent", label="delta = Delta / (sqrt 2 h_rms), %")
-    orders: tuple[int, ...] = quantity("spectrum_k", label="harmonics k - 2 ... k + 2")
-    spectrum: tuple[float, ...] = quantity("spectrum_distortion_percent", label="delta at those harmonics, % (one "
-                                           "harmonic alone is fragile: a piecewise profile can have exact zeros)")
-
-
-@dataclass(frozen=True)
-class PerSpeed:
-    """One entry per speed of the sweep (SI), as in the CSV table."""
-
-    speed: tuple[float, ...] = quantity("speed_rpm", "rpm", "engine speed")
-    min_contact_force: tuple[float, ...] = quantity("min_contact_force_N", "N", "smallest cam contact force")
-    seating_velocity: tuple[Optional[float], ...] = quantity("seating_velocity_m_s", "m/s",
-                                                             "valve velocity at seating (null: no seating)")
-    bounce: tuple[float, ...] = quantity("bounce_mm", "mm", "bounce height")
-    bounce_count: tuple[int, ...] = quantity("bounce_count", label="bounces")
-    jump: tuple[bool, ...] = quantity("jump", label="follower separation")
-    max_lift_error: tuple[float, ...] = quantity("max_lift_error_mm", "mm", "largest |valve lift - rigid lift|")
-    revolutions: tuple[int, ...] = quantity("revolutions", label="camshaft revolutions until the motion repeated")
-
-
-@dataclass(frozen=True)
-class Mode:
-    """One natural mode of the train with every contact closed (undamped)."""
-
-    frequency: float = quantity("frequency_Hz", "Hz", "natural frequency")
-    shape: dict[str, float] = quantity("shape", label="displacement of each node at the valve, the largest 1 (sign: same or "
-                           "opposite direction)")
-
-
-@dataclass(frozen=True)
-class AccuracyRecord:
-    """Estimated discretisation errors of the headline numbers: the speeds that decide each simulated again at halved
-    steps until it settles (:func:`~valvetrain.dynamics.accuracy.refine`)."""
-
-    jump_speed: float = quantity("jump_speed_rpm", "rpm", "of the jump speed, its two parts together (null: no "
-                                 "separation, or not estimated: the refinement's work limit reached first)")
-    jump_speed_step: float = quantity("jump_speed_step_rpm", "rpm", "time step: the jump speed's change at the last "
-                                      "halving of the step (null as jump_speed_rpm)")
-    jump_speed_grid: float = quantity("jump_speed_grid_rpm", "rpm", "speed grid: its change by a speed simulated where "
-                                      "it is interpolated between the speeds swept (null as jump_speed_rpm)")
-    bounce_speed: float = quantity("bounce_speed_rpm", "rpm", "of the bounce onset speed, its two parts together "
-                                   "(null: no bounce, or not estimated: the refinement's work limit reached first)")
-    bounce_speed_step: float = quantity("bounce_speed_step_rpm", "rpm", "time step: its change at the last halving "
-                                        "(null as bounce_speed_rpm)")
-    bounce_speed_grid: float = quantity("bounce_speed_grid_rpm", "rpm", "speed grid: its change by a speed simulated "
-                                        "where it is interpolated (null as bounce_speed_rpm)")
-    max_seating_velocity: float = quantity("max_seating_velocity_m_s", "m/s", "of the largest |seating velocity|: its "
-                                           "change at the last halving of the step (null: no seating, or not "
-                                           "estimated: the refinement's work limit reached first)")
-    rated_seating_velocity: float = quantity("rated_seating_velocity_m_s", "m/s", "of the seating velocity at the rated "
-                                             "speed (null: the valve does not seat there, or not "
-                                             "estimated: the refinement's work limit reached first)")
-    rated_bounce: float = quantity("rated_bounce_mm", "mm", "of the bounce height at the rated speed (null: not "
-                                   "estimated, the refinement's work limit reached first)")
-    step: float = quantity("finest_step_cam_deg", "cam deg", "the finest step a headline was refined to (the sweep's "
-                           "step halved at most " + str(MAX_HALVINGS) + " times)")
-
-
-@dataclass(frozen=True)
-class DynamicsResult:
-    """The dynamics stage: the train, the headline numbers of the sweep, the rated speed and the resonance."""
-
-    model: str = quantity("model", label="1dof or multi")
-    parameters: DynamicsParameters = quantity("parameters")
-    speed_range: tuple[float, ...] = quantity("speed_range_rpm", "rpm", "engine speeds swept, from and to")
-    speeds: int = quantity("speeds", label="speeds swept")
-    jump_speed: float = quantity("jump_speed_rpm", "rpm", "engine speed where the smallest contact force while the "
-                                 "cam lifts reaches 0, interpolated between the speeds swept and checked by one "
-                                 "simulated between, the speeds about it at a halved step until it settles (its "
-                                 "estimated error: accuracy; null: no follower separation in the range)")
-    bounce_speed: float = quantity("bounce_speed_rpm", "rpm", "engine speed where the bounce height first exceeds "
-                                   "1 um, interpolated between the speeds swept and refined as the jump speed (null: "
-                                   "none)")
-    max_seating_velocity: float = quantity("max_seating_velocity_m_s", "m/s", "largest |seating velocity| of the "
-                                           "sweep, the speeds near it at a halved step until it settles (null: the "
-                                           "valve seats at no speed)")
-    max_seating_velocity_speed: float = quantity("max_seating_velocity_speed_rpm", "rpm", "where it occurs (null: "
-                                                 "the same)")
-    coil_clash_speed: Optional[float] = quantity("coil_clash_speed_rpm", "rpm", "multi: lowest speed whose coils "
-                                                 "meet (null: none)", omit_none=True)
-    epsilon: float = quantity("epsilon", label="perturbation parameter at the rated speed")
-    natural_frequency: float = quantity("natural_frequency_Hz", "Hz", "lowest natural frequency of the simulated "
-                                        "train, the first of natural_frequencies_Hz (one mass: sqrt((K + c)/M) / 2 pi)")
-    natural_frequencies: tuple[float, ...] = quantity("natural_frequencies_Hz", "Hz", "natural frequencies of the "
-                                                      "simulated train with the valve off its seat (every other "
-                                                      "contact closed), ascending")
-    modes: tuple[Mode, ...] = quantity("modes", label="the natural modes: frequency and shape")
-    max_revolutions: int = quantity("max_revolutions", label="most camshaft revolutions a speed took to repeat")
-    unsettled_speeds: int = quantity("unsettled_speeds", label="speeds whose motion did not repeat within the "
-                                     "revolutions key (the last revolution recorded)")
-    unsettled_note: Optional[str] = quantity("unsettled_note", label="why those speeds did not repeat (null: every "
-                                             "speed repeated)", omit_none=True)
-    accuracy: AccuracyRecord = quantity("accuracy", label="estimated discretisation errors of the headline numbers "
-                                        "and of the rated speed's seating")
-    at_rated_speed: SpeedRecord = quantity("at_rated_speed")
-    resonance: ResonanceRecord = quantity("resonance")
-    per_speed: PerSpeed = quantity("per_speed", label="one entry per speed swept; the speeds that decide the headline "
-                                   "numbers have the events of their finest step")
-    sweep_table: str = quantity("sweep_table", label="CSV with one row per speed, relative to the output folder")
-    sweep: Optional[SweepResult] = field(default=None, repr=False, compare=False)
-    records: Optional[SpeedRecords] = field(default=None, repr=False, compare=False)    # every speed
-    rated: Optional[SpeedResult] = field(default=None, repr=False, compare=False)      # at the rated speed
-    refinement: Optional[Refinement] = field(default=None, repr=False, compare=False)  # the headlines refined
 
 
 def _link_estimates(valve, k):
@@ -683,22 +447,6 @@ def _multi_train(valve, links, springs, lash, kw, at, arm):
     return direct_train(m.tappet_kg, valve_mass, links[0], links[1], springs, lash, **kw)
 
 
-def finite_or_none(x) -> Optional[float]:
-    """``x``, or None where it is not finite (a speed whose recorded revolution has no seating)."""
-    return float(x) if np.isfinite(x) else None
-
-
-def speed_record(r, speed, epsilon) -> SpeedRecord:
-    """A :class:`SpeedRecord` of a :class:`~valvetrain.dynamics.sweep.SpeedResult` at engine speed [rad/s]."""
-    surge = float(r.surge_amplitude.max()) if r.surge_amplitude.size else None
-    clash = float(r.clash_margin) if np.isfinite(r.clash_margin) else None
-    return SpeedRecord(float(speed), float(epsilon), float(r.min_contact_force), float(r.contact_force.max()),
-                       float(r.seating_velocity), float(r.bounce_height), int(r.bounce_count),
-                       float(np.abs(r.lift_error).max()),
-                       tuple(tuple(float(a) for a in pair) for pair in r.jump_intervals), surge, clash,
-                       int(r.revolutions))
-
-
 POOR_FILM_BAND = (0.4, 0.6)
 """Band of the lubrication characteristic gamma around 0.5 where (2.12) gives no film (Shang Hanji (1988), eq. (2.12):
 h_min vanishes at gamma = 0.5); the width of the band is this package's choice."""
@@ -919,217 +667,5 @@ def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, 
     return out, dynamics_checks(out, engine, 0.0 if train.adjuster is None else train.adjuster.motion_ratio)
 
 
-SETTLE_FROM = 1e-3
-"""The amplitude [m] from which :func:`unsettled_note` counts the revolutions a vibration takes to fall to the
-repetition's tolerance (:data:`~valvetrain.dynamics.sweep.STATE_TOLERANCE`)."""
-
-
-def unsettled_note(result, speeds, network, revolutions, adjuster=False) -> Optional[str]:
-    """Why the speeds of a sweep whose motion did not repeat within ``revolutions`` did not; None where every speed
-    repeated.
-
-    Parameters
-    ----------
-    result : valvetrain.dynamics.sweep.SweepResult
-    speeds : ndarray (S,)
-        Its engine speeds [rad/s].
-    network : valvetrain.dynamics.models.Network
-        The train simulated.
-    revolutions : int
-        The most camshaft revolutions a speed ran.
-    adjuster : bool
-        The train has a hydraulic lash adjuster.
-
-    Returns
-    -------
-    str or None
-        How many speeds and their range, and the reasons: at the speeds whose follower separates or whose valve
-        bounces, a motion that need not repeat; at the others the lash adjuster's plunger (a slow state), or the
-        slowest vibration of the train between the lifts (:func:`~valvetrain.dynamics.models.slowest_decay`, the
-        clearance open, the valve on its seat): its decay exp(-sigma T) a revolution of T seconds at the highest of
-        those speeds (where it decays least) and the revolutions ln(:data:`SETTLE_FROM` / tolerance) / (sigma T) it
-        takes there from a millimetre to the repetition's tolerance; or, where no damping acts on it (sigma = 0: an
-        undamped seat, ``seat_damping_ratio = 0``, with the clearance open), that it does not decay.
-    """
-    bad = ~result.converged
-    if not bad.any():
-        return None
-    rpm = speeds / rpm_to_rad_s(1.0)
-    events = result.events
-    moving = bad & (events.jumped | (events.bounce_count > 0))
-    rest = bad & ~moving
-    span = f"{rpm[bad].min():.0f}" + (f" to {rpm[bad].max():.0f}" if np.ptp(rpm[bad]) > 0.0 else "")
-    parts = [f"{np.count_nonzero(bad)} of {bad.size} speeds, {span} rpm, did not repeat within {revolutions} "
-             "revolutions"]
-    if moving.any():
-        parts.append(f"at {np.count_nonzero(moving)} of them the follower separates or the valve bounces (a motion "
-                     "that need not repeat)")
-    if rest.any() and adjuster:
-        parts.append(f"at {np.count_nonzero(rest)} the lash adjuster's plunger still moves from one revolution to the "
-                     "next")
-    elif rest.any():
-        omega, sigma = slowest_decay(network, opened=("cam contact",) if network.lash > 0.0 else ())
-        decay = sigma * 2.0 * np.pi / result.cam_speeds[rest].max()
-        if sigma <= 1e-9 * omega:       # a damping ratio below the eigenvalues' rounding: no damper acts on it
-            parts.append(f"at {np.count_nonzero(rest)} the slowest vibration of the train, {omega / (2 * np.pi):.0f} "
-                         "Hz, is undamped between the lifts (no damping acts on it with the valve on its seat): it "
-                         "does not decay")
-        else:
-            parts.append(f"at {np.count_nonzero(rest)} the slowest vibration of the train, {omega / (2 * np.pi):.0f} "
-                         f"Hz, decays by a factor {np.exp(-decay):.2g} a revolution at {rpm[rest].max():.0f} rpm: "
-                         f"about {np.log(SETTLE_FROM / STATE_TOLERANCE) / decay:.0f} revolutions from "
-                         f"{SETTLE_FROM / MM:g} mm to the repetition's {STATE_TOLERANCE * 1e9:g} nm")
-    return "; ".join(parts)
-
-
-CHECK_CODES = ("dynamics.seating_velocity", "dynamics.jump_speed", "dynamics.valve_opens")
-"""The codes of the dynamics checks."""
-
-CLOSED = "the valve does not leave its seat at the rated speed"
-"""Why the seating velocity of a valve that stays on its seat cannot be had."""
-
-SEATING_NOTE = "the largest of the rated speed and the speeds swept below it: "
-"""What the seating velocity check grades, before the speed where it is largest (its note)."""
-
-
-def worst_seating(d, engine) -> tuple[float, float]:
-    """The largest |seating velocity| [m/s] of the rated speed and of the speeds swept up to it, and its engine speed
-    [rad/s]; (NaN, NaN) where the valve does not seat at the rated speed (the check is then unevaluated, a failure).
-
-    Notes
-    -----
-    The band of the sources (0.3-0.5 m/s) is stated at the rated speed; the motion of an elastic train is not
-    monotonic in speed (a harmonic of the cam meeting the train's natural frequency raises the seating velocity at
-    a lower speed), so every speed of the running range up to the rated one is graded by it.  The speeds above the
-    rated one (to ``[engine] over_speed_ratio`` x it) are transient and graded by the separation check instead.
-    """
-    if not np.isfinite(d.at_rated_speed.seating_velocity):
-        return np.nan, np.nan
-    speeds = np.append(d.records.speed, engine.rated_speed)
-    velocity = np.abs(np.append(d.records.seating_velocity, d.at_rated_speed.seating_velocity))
-    velocity[speeds > engine.rated_speed * (1 + 1e-9)] = np.nan
-    worst = int(np.nanargmax(velocity))
-    return float(velocity[worst]), float(speeds[worst])
-
-
-def dynamics_checks(d, engine, adjuster_ratio=0.0) -> list[Check]:
-    """The largest seating velocity up to the rated speed (:func:`worst_seating`; a warning above its band) and
-    the follower separation: a failure
-    below ``[engine] over_speed_ratio`` x the rated speed; a valve that stays on its seat at a speed swept, a failure
-    (:func:`opening_check`; ``adjuster_ratio`` the lash adjuster's motion ratio, 0 without one).
-
-    Without a separation in the range the check takes the top of the range: a range that stops below the over-speed
-    has not shown the valve keeps its cam there, and fails.
-    """
-    top = d.speed_range[1]
-    jump = d.jump_speed if np.isfinite(d.jump_speed) else top
-    note = "" if np.isfinite(d.jump_speed) else (f"no separation up to the top of the range swept, "
-                                                  f"{to_display(top, 'rpm'):.0f} rpm")
-    opened = float(d.rated.lift.max()) > BOUNCE_TOLERANCE
-    seating, where = worst_seating(d, engine)
-    at = "" if not np.isfinite(where) else SEATING_NOTE + (
-        f"at {to_display(where, 'rpm'):.0f} rpm; {abs(d.at_rated_speed.seating_velocity):.3g} m/s at the rated speed"
-        if where < engine.rated_speed * (1 - 1e-9) else "at the rated speed")
-    return [check(CHECK_CODES[0], seating, high=SEATING_VELOCITY_MAX, unit="m/s", note=at,
-                  source=CHECK_SOURCE + "; 0.3-0.5 m/s usual, graded at every speed swept up to the rated one",
-                  unevaluated="" if opened else CLOSED),
-            check(CHECK_CODES[1], jump / engine.rated_speed, low=engine.over_speed_ratio, severity="failure",
-                  note=note, source=CHECK_SOURCE + ": no separation below [engine] over_speed_ratio x the rated "
-                  "speed")] + opening_check(d, adjuster_ratio)
-
-
-def opening_check(d, adjuster_ratio=0.0) -> list[Check]:
-    """The check of a valve that stays on its seat at a speed swept (none where it opens at every speed).
-
-    Parameters
-    ----------
-    d : DynamicsResult
-    adjuster_ratio : float
-        The lash adjuster's motion ratio i_a (valve motion per plunger motion; 0: none).
-
-    Returns
-    -------
-    list of Check
-        ``dynamics.valve_opens``: the smallest over the speeds swept of the valve's largest lift in the revolution
-        [m], a failure not above :data:`~valvetrain.dynamics.sweep.BOUNCE_TOLERANCE` (below it the valve rocks on the
-        seat's elasticity: it has not opened); its note names the speed and the reasons found: the drive's deflection
-        under the spring preload F0 / c no less than the cam's lift at the valve (quasi-statically the cam cannot lift
-        the valve off its seat), else with a lash adjuster its plunger giving way: a shut valve carries no more than
-        its preload, so the drive deflects no more than F0 / c and the plunger's sink takes the rest of the cam's
-        lift (the leak-down sinks it as fast as the cam lifts); its travel over the revolution at the valve,
-        i_a (z_max - z_min), is said.
-    """
-    lifts = d.sweep.lift.max(axis=1)
-    worst = int(np.argmin(lifts))
-    if lifts[worst] > BOUNCE_TOLERANCE:
-        return []
-    p = d.parameters
-    rigid = float(d.sweep.kinematic_lift.max())
-    reasons = [f"at {to_display(d.per_speed.speed[worst], 'rpm'):.0f} rpm the cam lifts the valve by {rigid / MM:.4g} "
-               f"mm without its drive's compliance"]
-    if p.preload / p.drive_stiffness >= rigid:
-        reasons.append(f"the drive deflects F0 / c = {p.preload / p.drive_stiffness / MM:.4g} mm under the spring "
-                       f"preload {p.preload:.4g} N")
-    elif adjuster_ratio > 0.0:
-        travel = adjuster_ratio * float(np.ptp(d.sweep.adjuster_extension[worst]))
-        reasons.append(f"the drive deflects F0 / c = {p.preload / p.drive_stiffness / MM:.4g} mm under the spring "
-                       f"preload at most, the rest is the lash adjuster's plunger giving way (its leak-down; it "
-                       f"travels {travel / MM:.4g} mm at the valve over the revolution)")
-    return [check(CHECK_CODES[2], float(lifts[worst]), low=BOUNCE_TOLERANCE, unit="mm", severity="failure",
-                  note="; ".join(reasons), source=CHECK_SOURCE + ": a valve that leaves its seat by less than 0.001 mm "
-                  "rocks on the seat's elasticity")]
-
-
-SWEEP_COLUMNS = [
-    ("speed_rpm", "engine speed [rpm]"), ("camshaft_rpm", "camshaft speed [rpm]"),
-    ("epsilon", "perturbation parameter M omega_cam^2 / (c + K)"),
-    ("min_contact_force_N", "smallest cam contact force where the cam lifts the valve [N]"),
-    ("max_contact_force_N", "largest cam contact force [N]"),
-    ("seating_velocity_m_s", "valve velocity at the first seating [m/s]"),
-    ("bounce_mm", "largest lift after the first seating [mm]"), ("bounce_count", "bounces"),
-    ("jump", "follower separation: 1, else 0"), ("jump_from_cam_deg", "first separation starts [cam deg]"),
-    ("jump_to_cam_deg", "last separation ends [cam deg]"), ("max_lift_error_mm", "largest |lift - rigid lift| [mm]"),
-    ("revolutions", "camshaft revolutions until the motion repeated"),
-]
-"""Columns of ``tables/NAME_dynamics.csv`` (multi: also ``max_surge_mm`` with coil masses, and
-``coil_clash_margin_mm`` where the spring's closing is monitored: a massless spring, coils_per_spring = 0, has no
-surge but still goes solid)."""
-
-
-def event_window(d, margin_deg: float = 10.0) -> np.ndarray:
-    """Camshaft angles of the sweep around the event (where any speed or the rigid lift is off the seat)."""
-    sw = d.sweep
-    open_ = (sw.kinematic_lift > 0.0) | np.any(sw.lift > 1e-6, axis=0)
-    idx = np.flatnonzero(open_)
-    if idx.size == 0:
-        return np.ones(sw.theta.size, dtype=bool)
-    lo, hi = sw.theta[idx[0]] - np.radians(margin_deg), sw.theta[idx[-1]] + np.radians(margin_deg)
-    return (sw.theta >= lo) & (sw.theta <= hi)
-
-
-def sweep_columns(d) -> dict[str, list]:
-    """The per-speed table of a :class:`DynamicsResult` as named columns (engineering units)."""
-    records = d.records
-
-    def column(name):
-        """``(key, values)``: one field of the records as results.json shows it."""
-        return shown(records, name)[0]
-
-    to_cam = d.sweep.cam_speeds[0] / d.per_speed.speed[0]
-    out = dict([column("speed"), ("camshaft_rpm", [s * to_cam / rpm_to_rad_s(1.0) for s in d.per_speed.speed])])
-    out.update(column(name) for name in ("epsilon", "min_contact_force", "max_contact_force", "seating_velocity",
-                                         "bounce", "bounce_count"))
-    out["jump"] = [int(j) for j in records.jump.tolist()]
-    out.update(column(name) for name in ("jump_from", "jump_to", "max_lift_error", "revolutions"))
-    if d.model == "multi" and d.parameters.coils_per_spring > 0:
-        out.update([column("max_surge")])
-    if np.isfinite(records.clash_margin).any():
-        out.update([column("clash_margin")])
-    return out
-
-
-__all__ = ["CHECK_CODES", "DynamicsParameters", "DynamicsResult", "Mode", "PerSpeed", "ResonanceRecord", "SWEEP_COLUMNS",
-           "SpeedRecord", "SpeedRecords", "build_train", "drive_links", "dynamics_checks", "dynamics_stage",
-           "finite_or_none", "rated_contact", "refuse_large_sweep",
-           "speed_record", "speed_records", "swept_range",
-           "sweep_columns", "valve_motion"]
+__all__ = ["build_train", "drive_links", "dynamics_stage", "rated_contact", "refuse_large_sweep", "swept_range",
+           "valve_motion"]

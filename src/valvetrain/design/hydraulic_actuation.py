@@ -26,14 +26,15 @@ import numpy as np
 from ..checks import Check, check
 from ..locale import note
 from ..crank.pressure import on_grid
-from ..dynamics.sweep import BOUNCE_TOLERANCE
+from ..dynamics.events import BOUNCE_TOLERANCE
 from ..errors import InputError
 from ..flow import circle_area
 from ..hydraulic_actuation import (Actuator, Brake, DriveResult, Fluid, HydraulicDrive, Pipe, Pump, Solenoid, SpeedSweep,
                                    Valve, simulate, speed_sweep)
 from ..specification.messages import Problem
 from ..units import DEG, MM, cam_per_crank, rpm_to_rad_s, to_display
-from .dynamics import SEATING_VELOCITY_MAX, finite_or_none
+from .dynamics_checks import SEATING_VELOCITY_MAX
+from .dynamics_records import finite_or_none
 from .results import quantity, shown, shown_value
 
 SOURCES = ("Shang Hanji (1988), ch. 7 (hydraulic valve actuation); Wylie and Streeter (1978) (wave speed, "

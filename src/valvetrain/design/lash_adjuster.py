@@ -12,7 +12,8 @@ from .. import lash_adjuster as hla
 from ..bibliography import cite
 from ..checks import Check, check
 from ..locale import note
-from ..dynamics.sweep import lift_event, sweep, sweep_size, zero_crossing
+from ..dynamics.events import lift_event, zero_crossing
+from ..dynamics.sweep import sweep, sweep_size
 from ..units import DEG, to_display
 from .drive_strength import event_load_maps
 from .dynamics import MAX_SWEEP_WORK, adjuster_element, adjuster_load, build_train
@@ -127,19 +128,19 @@ def float_speed(speeds, lifting_force, push) -> float:
         Ascending speeds (any unit; the result is in it).
     lifting_force : ndarray (S,)
         Smallest contact force at the valve while the cam lifts the open valve in its lift event [N]
-        (:func:`valvetrain.dynamics.sweep.lowest_lifting_force`; nan: the valve does not open).
+        (:func:`valvetrain.dynamics.events.lowest_lifting_force`; nan: the valve does not open).
     push : float
         The adjuster's own push at the valve, (F_s + p_s A) / i_a [N].
 
     Returns
     -------
     float
-        :func:`valvetrain.dynamics.sweep.zero_crossing` of the force less the push (nan: no float).
+        :func:`valvetrain.dynamics.events.zero_crossing` of the force less the push (nan: no float).
 
     Notes
     -----
     A mechanical train separates where its contact force falls to 0 while the cam lifts the open valve
-    (:func:`valvetrain.dynamics.sweep.separation_mask`).  With a hydraulic lash adjuster the contact need not open:
+    (:func:`valvetrain.dynamics.events.separation_mask`).  With a hydraulic lash adjuster the contact need not open:
     where the follower's force falls to the adjuster's push (F_s + p_s A) / i_a the chamber pressure falls to the
     supply, the check valve opens and the plunger extends after the follower (:func:`valvetrain.dynamics.kernels`'
     ``_adjust``), holding the contact at that push, and the valve leaves the cam law by the plunger's extension.  The
@@ -169,7 +170,7 @@ def plunger_motion(extension, lift, event, base) -> tuple[float, float, float]:
         Valve lift at the same instants [m] (> 0: off its seat).
     event : ndarray (n,) of bool
         The cam's lift event up to the valve's first return to its seat
-        (:func:`valvetrain.dynamics.sweep.lift_event`).
+        (:func:`valvetrain.dynamics.events.lift_event`).
     base : ndarray (n,) of bool
         The cam's base circle (no cam lift).
 

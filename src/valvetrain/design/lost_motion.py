@@ -17,13 +17,14 @@ import numpy as np
 
 from ..bibliography import cite
 from ..checks import Check, check
-from ..dynamics.sweep import BOUNCE_TOLERANCE
+from ..dynamics.events import BOUNCE_TOLERANCE
 from ..errors import InputError
 from ..hydraulic_actuation import DriveResult, simulate
 from ..locale import note
 from ..specification.messages import Problem
 from ..units import DEG, MM, cam_per_crank, to_display
-from .dynamics import SEATING_VELOCITY_MAX, finite_or_none
+from .dynamics_checks import SEATING_VELOCITY_MAX
+from .dynamics_records import finite_or_none
 from .hydraulic_actuation import MAX_NODE_STEPS, SEATING_SOURCE, cycle_angle, gas_force, hydraulic_drive
 from .results import quantity
 

@@ -36,8 +36,8 @@ from typing import Optional
 import numpy as np
 
 from .kernels import BLOCK_SPEEDS
-from .sweep import (STATE_TOLERANCE, SweepEvents, force_reached_zero, level_crossing, substeps, sweep,
-                    zero_crossing)
+from .events import SweepEvents, force_reached_zero, level_crossing, zero_crossing
+from .sweep import STATE_TOLERANCE, substeps, sweep
 
 JUMP_ACCURACY = 5e-4
 """Relative error of the jump speed the refinement aims at (0.05 %: its time-step and speed-grid parts at most half
@@ -227,9 +227,9 @@ def _change(new, old) -> np.ndarray:
 
 
 class _Crossing:
-    """The jump speed (``kind`` "jump": the zero of the smallest contact force, :func:`.sweep.zero_crossing`, fitted
+    """The jump speed (``kind`` "jump": the zero of the smallest contact force, :func:`.events.zero_crossing`, fitted
     through up to 3 speeds below the first whose force reaches zero) or the bounce onset ("onset": where the bounce
-    height crosses the bounce tolerance, :func:`.sweep.level_crossing`, linear between 2 speeds) of the grid
+    height crosses the bounce tolerance, :func:`.events.level_crossing`, linear between 2 speeds) of the grid
     ``speeds``, refined to the relative ``accuracy`` in rounds (:meth:`wanted`, then :meth:`advance`): a halving of the
     step at the speeds it is found from, until it changes by no more than half the accuracy, then a speed simulated
     where it is found (:meth:`probe`), until that moves it by no more than half the accuracy; a probe that changes

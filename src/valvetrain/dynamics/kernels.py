@@ -30,7 +30,11 @@ blocking).  The blocks run on threads of the caller (the kernels release the int
 cached on disk (``cache=True``) so a second process pays no compile time.  The first compile is kept short: one
 RK4 body (:func:`_rk4`) serves the lockstep step and the split step, the helpers are compiled without the wrappers
 a call from Python would need, and arrays are copied and cleared by explicit loops (numba's slice assignment
-compiles a generic broadcasting routine, a third of the former compile time).
+compiles a generic broadcasting routine, a third of the former compile time).  The helpers a step calls (:func:`_rk4`,
+:func:`_forces`, :func:`_record`) are inlined into the kernel by numba (``inline='always'``): called, they cost a
+block of one speed 0.69 us a step of the 0.83 it took on the one-mass train (a block of 64 speeds about the same
+3.8 us either way), 0.29 inlined; the refinement's and a tolerance sample's sweeps of one or two speeds run twice as
+fast, and the first compile takes about 13 instead of 10.5 s of processor time (measured under load).
 
 A speed is integrated until it repeats: after each camshaft revolution its state is compared with
 the state at the start of that revolution, and a block stops once all its speeds repeat (most
@@ -48,13 +52,14 @@ CAM = -2
 """Node index of the cam excitation: displacement u = k h(theta), velocity omega k h'(theta)."""
 
 
-@njit(cache=True, nogil=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
-def _forces(x, v, inv_mass, ra, rb, k, d, gap, pre, uni, vnode, vtab, acc, force):
+@njit(cache=True, nogil=True, no_cpython_wrapper=True, no_cfunc_wrapper=True, inline='always')
+def _forces(x, v, inv_mass, ra, rb, k, d, gap, pre, uni, vnode, vtab, acc, q, force):
     """Element forces (compression positive, +f on row rb, -f on row ra) and row accelerations of a block.
 
-    ``x``, ``v`` and ``acc`` are (rows, B): one column per speed of the block, the node rows first, then a
+    ``x``, ``v`` and ``acc[q]`` are (rows, B): one column per speed of the block, the node rows first, then a
     row of the ground (always 0) and a row of the cam excitation; ``inv_mass`` is 0 on those two rows, so
-    their accelerations stay 0.  The element's case (contact or spring) is decided once per element, and the
+    their accelerations stay 0.  The accelerations go to ``acc[q]`` of the stages' array ``acc`` (4, rows, B), indexed
+    in place: a row view made at every stage of every step cost the kernel a reference count each (numba's NRT).  The element's case (contact or spring) is decided once per element, and the
     loop over the block's speeds has no branch the compiler cannot turn into a select: it runs in SIMD lanes.
     The node ``vnode`` (-1: none) has the mass of the table ``vtab`` (its ``inv_mass`` 1, so that its row sums
     the force; :func:`_variable_mass`).
@@ -62,7 +67,7 @@ def _forces(x, v, inv_mass, ra, rb, k, d, gap, pre, uni, vnode, vtab, acc, force
     rows, bsize = x.shape
     for i in range(rows):
         for s in range(bsize):
-            acc[i, s] = 0.0
+            acc[q, i, s] = 0.0
     for e in range(ra.size):
         ia, ib = ra[e], rb[e]
         ke, de, ge = k[e], d[e], gap[e]
@@ -73,17 +78,17 @@ def _forces(x, v, inv_mass, ra, rb, k, d, gap, pre, uni, vnode, vtab, acc, force
                 f = ke * delta + de * (v[ia, s] - v[ib, s])
                 f = f if (delta > 0.0) & (f > 0.0) else 0.0
                 force[e, s] = f
-                acc[ib, s] += f * mb
-                acc[ia, s] -= f * ma
+                acc[q, ib, s] += f * mb
+                acc[q, ia, s] -= f * ma
         else:
             pe = pre[e]
             for s in range(bsize):
                 f = pe + ke * (x[ia, s] - x[ib, s] - ge) + de * (v[ia, s] - v[ib, s])
                 force[e, s] = f
-                acc[ib, s] += f * mb
-                acc[ia, s] -= f * ma
+                acc[q, ib, s] += f * mb
+                acc[q, ia, s] -= f * ma
     if vnode >= 0:
-        _variable_mass(x[vnode], v[vnode], acc[vnode], vtab)
+        _variable_mass(x[vnode], v[vnode], acc[q, vnode], vtab)
 
 
 @njit(cache=True, nogil=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
@@ -116,7 +121,7 @@ def _variable_mass(x, v, acc, table):
         acc[s] = (acc[s] - 0.5 * dm * v[s] * v[s]) / m
 
 
-@njit(cache=True, nogil=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, nogil=True, no_cpython_wrapper=True, no_cfunc_wrapper=True, inline='always')
 def _rk4(x, v, xn, vn, h, cam_x, cam_v, off, im, ra, rb, k, d, gap, pre, uni, vnode, vtab, xs, vs, kx, acc, scratch):
     """One classical RK4 step of every column of a block's state ``x``, ``v`` (rows, B) into the node rows of ``xn``,
     ``vn`` (the same arrays for a step in place).
@@ -148,7 +153,7 @@ def _rk4(x, v, xn, vn, h, cam_x, cam_v, off, im, ra, rb, k, d, gap, pre, uni, vn
         for i in range(n):
             for s in range(bsize):
                 kx[q, i, s] = vs[i, s]
-        _forces(xs, vs, im, ra, rb, k, d, gap, pre, uni, vnode, vtab, acc[q], scratch)
+        _forces(xs, vs, im, ra, rb, k, d, gap, pre, uni, vnode, vtab, acc, q, scratch)
     for i in range(n):
         for s in range(bsize):
             xn[i, s] = x[i, s] + h[s] / 6.0 * (v[i, s] + 2.0 * kx[1, i, s] + 2.0 * kx[2, i, s] + kx[3, i, s])
@@ -309,15 +314,15 @@ def integrate_block(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_p
                 cam_v[3, s] = om[s] * d2
                 x[cam, s] = u0 + off[s]
                 v[cam, s] = cam_v[0, s]
-            _forces(x, v, im, ra, rb, k, d, gap, pre, uni, vnode, vtab, acc[0], force)
+            _forces(x, v, im, ra, rb, k, d, gap, pre, uni, vnode, vtab, acc, 0, force)
             if ratio > 0.0:
-                _adjust(z, off, x, force[contact], cam, rb[contact], k[contact], gap[contact], adjuster, dt)
+                _adjust(z, off, x, force, contact, cam, rb[contact], k[contact], gap[contact], adjuster, dt)
                 for s in range(bsize):
                     x[cam, s] = u0 + off[s]
-                _forces(x, v, im, ra, rb, k, d, gap, pre, uni, vnode, vtab, acc[0], force)
+                _forces(x, v, im, ra, rb, k, d, gap, pre, uni, vnode, vtab, acc, 0, force)
             if step % n_sub == 0:
                 r = step // n_sub
-                _record(tile[r % TILE], x, v, acc[0], force, z, surge_ref, follower, contact, closing, springs,
+                _record(tile, r % TILE, x, v, acc, force, z, surge_ref, follower, contact, closing, springs,
                         rocker_ratio, ratio > 0.0)
                 if r % TILE == TILE - 1 or r == steps_per_rev - 1:
                     r0, count = r - r % TILE, r % TILE + 1
@@ -403,7 +408,7 @@ def _split_step(s, xb, vb, acc, x, v, dt, om, step_angle, u0, d0, u2, d2, shift,
                                 + (-6 * f2 + 6 * f) * u2 / step_angle + (3 * f2 - 2 * f) * d2)
         xl[rows - 1, 0] = cam_x[0] + shift
         vl[rows - 1, 0] = cam_v[0, 0]
-        _forces(xl, vl, im, ra, rb, ke, de, gap, pre, law, vnode, vtab, kv[0], force)
+        _forces(xl, vl, im, ra, rb, ke, de, gap, pre, law, vnode, vtab, kv, 0, force)
         _rk4(xl, vl, xl, vl, h, cam_x, cam_v, off, im, ra, rb, ke, de, gap, pre, law, vnode, vtab, xs, vs, kx, kv,
              scratch)
     for i in range(rows - 2):
@@ -412,11 +417,11 @@ def _split_step(s, xb, vb, acc, x, v, dt, om, step_angle, u0, d0, u2, d2, shift,
 
 
 @njit(cache=True, nogil=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
-def _adjust(z, off, x, force, cam, b, stiffness, gap, adjuster, dt):
+def _adjust(z, off, x, force, contact, cam, b, stiffness, gap, adjuster, dt):
     """Advance the plunger extension ``z`` [m, at the adjuster] of every speed of a block over its step ``dt`` [s]
     and set the cam row's shift ``off`` = i_a z [m, at the valve] (i_a the adjuster's motion ratio).
 
-    ``force`` (B,) is the cam contact's force at the valve [N] at the step's start, ``x`` the block's positions,
+    ``force[contact]`` (B,) is the cam contact's force at the valve [N] at the step's start, ``x`` the block's positions,
     ``cam``, ``b`` the contact's rows, ``stiffness`` [N/m] and ``gap`` [m] its own; ``adjuster`` as in
     :func:`integrate_block`.
 
@@ -437,7 +442,7 @@ def _adjust(z, off, x, force, cam, b, stiffness, gap, adjuster, dt):
                                                        adjuster[5], adjuster[6])
     push = (spring + supply * area) / ratio
     for s in range(z.size):
-        f = force[s]
+        f = force[contact, s]
         pressure = (ratio * f - spring) / area
         if pressure > supply:
             dz = -leak * (pressure - supply) / area * dt[s]
@@ -449,35 +454,39 @@ def _adjust(z, off, x, force, cam, b, stiffness, gap, adjuster, dt):
         off[s] = ratio * z[s]
 
 
-TILE = 8
-"""Recorded steps gathered before they are written out (:func:`integrate_block`): eight values of a speed fill a
-64-byte cache line of its output row."""
+TILE = 64
+"""Recorded steps gathered before they are written out (:func:`integrate_block`): 64 values of a speed, eight 64-byte
+cache lines of its output row on one memory page.  Each row of the outputs lies on pages of its own (a revolution of
+3600 steps is 28.8 kB), so a flush writes to as many pages as the block has speeds times the values recorded; with
+eight steps a flush (one cache line a row) the 200-speed one-mass sweep took 39-42 ms on one thread, with 64 steps
+33-35 ms (measured alternately under load; 23 ms recording nothing), the writes' page look-ups shared by eight times
+the values.  The tile of a block of 64 speeds is 256 kB."""
 
 
-@njit(cache=True, nogil=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
-def _record(row, x, v, acc, force, z, valve, follower, contact, seat, springs, rocker_ratio, adjusted):
-    """Gather the recorded values of every speed of a block at one angle into ``row`` (8, B): the valve's position,
-    velocity and acceleration, the contact's force times ``rocker_ratio``, the seat's force, minus the sum of the
-    ``springs``' forces, the ``follower``'s position (where it is a node) and the plunger extension ``z`` (where
-    ``adjusted``)."""
+@njit(cache=True, nogil=True, no_cpython_wrapper=True, no_cfunc_wrapper=True, inline='always')
+def _record(tile, t, x, v, acc, force, z, valve, follower, contact, seat, springs, rocker_ratio, adjusted):
+    """Gather the recorded values of every speed of a block at one angle into the row ``t`` of ``tile`` (TILE, 8, B):
+    the valve's position, velocity and acceleration (stage 0 of ``acc``, :func:`_rk4`), the contact's force times
+    ``rocker_ratio``, the seat's force, minus the sum of the ``springs``' forces, the ``follower``'s position (where it
+    is a node) and the plunger extension ``z`` (where ``adjusted``); indexed in place, as :func:`_forces`."""
     bsize = x.shape[1]
     for s in range(bsize):
-        row[0, s] = x[valve, s]
-        row[1, s] = v[valve, s]
-        row[2, s] = acc[valve, s]
-        row[3, s] = rocker_ratio * force[contact, s]
-        row[4, s] = force[seat, s]
+        tile[t, 0, s] = x[valve, s]
+        tile[t, 1, s] = v[valve, s]
+        tile[t, 2, s] = acc[0, valve, s]
+        tile[t, 3, s] = rocker_ratio * force[contact, s]
+        tile[t, 4, s] = force[seat, s]
     for s in range(bsize):
         total = force[springs[0], s]
         for j in range(1, springs.size):
             total += force[springs[j], s]
-        row[5, s] = -total
+        tile[t, 5, s] = -total
     if follower >= 0:
         for s in range(bsize):
-            row[6, s] = x[follower, s]
+            tile[t, 6, s] = x[follower, s]
     if adjusted:
         for s in range(bsize):
-            row[7, s] = z[s]
+            tile[t, 7, s] = z[s]
 
 
 @njit(cache=True, nogil=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)

@@ -38,7 +38,7 @@ from typing import Optional
 import numpy as np
 from numba import njit
 
-from ..dynamics.sweep import BOUNCE_TOLERANCE, bounce, seating
+from ..dynamics.events import BOUNCE_TOLERANCE, bounce, seating
 from .components import brake_coefficient
 from .moc import characteristics, interior
 

@@ -210,7 +210,7 @@ def _strength(st):
 DYNAMICS_HEADLINE = ("speed_range", "speeds", "jump_speed", "bounce_speed", "max_seating_velocity",
                      "max_seating_velocity_speed", "coil_clash_speed", "epsilon", "natural_frequency",
                      "natural_frequencies", "max_revolutions", "unsettled_speeds", "unsettled_note")
-"""The fields of :class:`~valvetrain.design.dynamics.DynamicsResult` in the head of the report's dynamics chapter."""
+"""The fields of :class:`~valvetrain.design.dynamics_records.DynamicsResult` in the head of the report's dynamics chapter."""
 
 
 def _present(result, *names):
@@ -227,7 +227,7 @@ def _except(result, *names):
 
 
 def _dynamics(d):
-    """The dynamics chapter of a valve from its :class:`~valvetrain.design.dynamics.DynamicsResult`: headline rows,
+    """The dynamics chapter of a valve from its :class:`~valvetrain.design.dynamics_records.DynamicsResult`: headline rows,
     their estimated errors, the train, the estimates, the rated speed, resonance."""
     if d is None:
         return None

@@ -18,7 +18,7 @@ import itertools
 from matplotlib.figure import Figure
 import numpy as np
 
-from ..design.dynamics import event_window
+from ..design.dynamics_records import event_window
 from ..design.valve import CYCLE_CRANK, RHO_MIN
 from ..design.results import shown_value
 from ..errors import InputError

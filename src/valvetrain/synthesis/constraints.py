@@ -19,7 +19,7 @@ import numpy as np
 from .. import strength
 from ..checks import Check, check
 from ..locale import note
-from ..design.dynamics import CHECK_SOURCE
+from ..design.dynamics_checks import CHECK_SOURCE
 from ..design.valve import follower_accelerations
 from ..layouts import finger_inertia_force
 from ..numerics import extremum

@@ -1,0 +1,183 @@
+"""The checks of a valve's dynamics stage (:mod:`valvetrain.design.dynamics`): the largest seating velocity up to the
+rated speed, the follower separation (jump speed), a valve that stays on its seat; and the note on speeds whose motion
+did not repeat.
+"""
+
+from typing import Optional
+
+import numpy as np
+
+from ..checks import Check, check
+from ..dynamics.events import BOUNCE_TOLERANCE
+from ..dynamics.models import slowest_decay
+from ..dynamics.sweep import STATE_TOLERANCE
+from ..units import MM, rpm_to_rad_s, to_display
+
+CHECK_SOURCE = "Shang Hanji (1988), ch. 3"
+"""Short citation of the dynamics checks."""
+
+SEATING_VELOCITY_MAX = 0.5
+"""Working limit of the seating velocity [m/s] (0.3-0.5 m/s in the valve-train literature)."""
+
+SETTLE_FROM = 1e-3
+"""The amplitude [m] from which :func:`unsettled_note` counts the revolutions a vibration takes to fall to the
+repetition's tolerance (:data:`~valvetrain.dynamics.sweep.STATE_TOLERANCE`)."""
+
+
+def unsettled_note(result, speeds, network, revolutions, adjuster=False) -> Optional[str]:
+    """Why the speeds of a sweep whose motion did not repeat within ``revolutions`` did not; None where every speed
+    repeated.
+
+    Parameters
+    ----------
+    result : valvetrain.dynamics.sweep.SweepResult
+    speeds : ndarray (S,)
+        Its engine speeds [rad/s].
+    network : valvetrain.dynamics.models.Network
+        The train simulated.
+    revolutions : int
+        The most camshaft revolutions a speed ran.
+    adjuster : bool
+        The train has a hydraulic lash adjuster.
+
+    Returns
+    -------
+    str or None
+        How many speeds and their range, and the reasons: at the speeds whose follower separates or whose valve
+        bounces, a motion that need not repeat; at the others the lash adjuster's plunger (a slow state), or the
+        slowest vibration of the train between the lifts (:func:`~valvetrain.dynamics.models.slowest_decay`, the
+        clearance open, the valve on its seat): its decay exp(-sigma T) a revolution of T seconds at the highest of
+        those speeds (where it decays least) and the revolutions ln(:data:`SETTLE_FROM` / tolerance) / (sigma T) it
+        takes there from a millimetre to the repetition's tolerance; or, where no damping acts on it (sigma = 0: an
+        undamped seat, ``seat_damping_ratio = 0``, with the clearance open), that it does not decay.
+    """
+    bad = ~result.converged
+    if not bad.any():
+        return None
+    rpm = speeds / rpm_to_rad_s(1.0)
+    events = result.events
+    moving = bad & (events.jumped | (events.bounce_count > 0))
+    rest = bad & ~moving
+    span = f"{rpm[bad].min():.0f}" + (f" to {rpm[bad].max():.0f}" if np.ptp(rpm[bad]) > 0.0 else "")
+    parts = [f"{np.count_nonzero(bad)} of {bad.size} speeds, {span} rpm, did not repeat within {revolutions} "
+             "revolutions"]
+    if moving.any():
+        parts.append(f"at {np.count_nonzero(moving)} of them the follower separates or the valve bounces (a motion "
+                     "that need not repeat)")
+    if rest.any() and adjuster:
+        parts.append(f"at {np.count_nonzero(rest)} the lash adjuster's plunger still moves from one revolution to the "
+                     "next")
+    elif rest.any():
+        omega, sigma = slowest_decay(network, opened=("cam contact",) if network.lash > 0.0 else ())
+        decay = sigma * 2.0 * np.pi / result.cam_speeds[rest].max()
+        if sigma <= 1e-9 * omega:       # a damping ratio below the eigenvalues' rounding: no damper acts on it
+            parts.append(f"at {np.count_nonzero(rest)} the slowest vibration of the train, {omega / (2 * np.pi):.0f} "
+                         "Hz, is undamped between the lifts (no damping acts on it with the valve on its seat): it "
+                         "does not decay")
+        else:
+            parts.append(f"at {np.count_nonzero(rest)} the slowest vibration of the train, {omega / (2 * np.pi):.0f} "
+                         f"Hz, decays by a factor {np.exp(-decay):.2g} a revolution at {rpm[rest].max():.0f} rpm: "
+                         f"about {np.log(SETTLE_FROM / STATE_TOLERANCE) / decay:.0f} revolutions from "
+                         f"{SETTLE_FROM / MM:g} mm to the repetition's {STATE_TOLERANCE * 1e9:g} nm")
+    return "; ".join(parts)
+
+
+CHECK_CODES = ("dynamics.seating_velocity", "dynamics.jump_speed", "dynamics.valve_opens")
+"""The codes of the dynamics checks."""
+
+CLOSED = "the valve does not leave its seat at the rated speed"
+"""Why the seating velocity of a valve that stays on its seat cannot be had."""
+
+SEATING_NOTE = "the largest of the rated speed and the speeds swept below it: "
+"""What the seating velocity check grades, before the speed where it is largest (its note)."""
+
+
+def worst_seating(d, engine) -> tuple[float, float]:
+    """The largest |seating velocity| [m/s] of the rated speed and of the speeds swept up to it, and its engine speed
+    [rad/s]; (NaN, NaN) where the valve does not seat at the rated speed (the check is then unevaluated, a failure).
+
+    Notes
+    -----
+    The band of the sources (0.3-0.5 m/s) is stated at the rated speed; the motion of an elastic train is not
+    monotonic in speed (a harmonic of the cam meeting the train's natural frequency raises the seating velocity at
+    a lower speed), so every speed of the running range up to the rated one is graded by it.  The speeds above the
+    rated one (to ``[engine] over_speed_ratio`` x it) are transient and graded by the separation check instead.
+    """
+    if not np.isfinite(d.at_rated_speed.seating_velocity):
+        return np.nan, np.nan
+    speeds = np.append(d.records.speed, engine.rated_speed)
+    velocity = np.abs(np.append(d.records.seating_velocity, d.at_rated_speed.seating_velocity))
+    velocity[speeds > engine.rated_speed * (1 + 1e-9)] = np.nan
+    worst = int(np.nanargmax(velocity))
+    return float(velocity[worst]), float(speeds[worst])
+
+
+def dynamics_checks(d, engine, adjuster_ratio=0.0) -> list[Check]:
+    """The largest seating velocity up to the rated speed (:func:`worst_seating`; a warning above its band) and
+    the follower separation: a failure
+    below ``[engine] over_speed_ratio`` x the rated speed; a valve that stays on its seat at a speed swept, a failure
+    (:func:`opening_check`; ``adjuster_ratio`` the lash adjuster's motion ratio, 0 without one).
+
+    Without a separation in the range the check takes the top of the range: a range that stops below the over-speed
+    has not shown the valve keeps its cam there, and fails.
+    """
+    top = d.speed_range[1]
+    jump = d.jump_speed if np.isfinite(d.jump_speed) else top
+    note = "" if np.isfinite(d.jump_speed) else (f"no separation up to the top of the range swept, "
+                                                  f"{to_display(top, 'rpm'):.0f} rpm")
+    opened = float(d.rated.lift.max()) > BOUNCE_TOLERANCE
+    seating, where = worst_seating(d, engine)
+    at = "" if not np.isfinite(where) else SEATING_NOTE + (
+        f"at {to_display(where, 'rpm'):.0f} rpm; {abs(d.at_rated_speed.seating_velocity):.3g} m/s at the rated speed"
+        if where < engine.rated_speed * (1 - 1e-9) else "at the rated speed")
+    return [check(CHECK_CODES[0], seating, high=SEATING_VELOCITY_MAX, unit="m/s", note=at,
+                  source=CHECK_SOURCE + "; 0.3-0.5 m/s usual, graded at every speed swept up to the rated one",
+                  unevaluated="" if opened else CLOSED),
+            check(CHECK_CODES[1], jump / engine.rated_speed, low=engine.over_speed_ratio, severity="failure",
+                  note=note, source=CHECK_SOURCE + ": no separation below [engine] over_speed_ratio x the rated "
+                  "speed")] + opening_check(d, adjuster_ratio)
+
+
+def opening_check(d, adjuster_ratio=0.0) -> list[Check]:
+    """The check of a valve that stays on its seat at a speed swept (none where it opens at every speed).
+
+    Parameters
+    ----------
+    d : DynamicsResult
+    adjuster_ratio : float
+        The lash adjuster's motion ratio i_a (valve motion per plunger motion; 0: none).
+
+    Returns
+    -------
+    list of Check
+        ``dynamics.valve_opens``: the smallest over the speeds swept of the valve's largest lift in the revolution
+        [m], a failure not above :data:`~valvetrain.dynamics.events.BOUNCE_TOLERANCE` (below it the valve rocks on the
+        seat's elasticity: it has not opened); its note names the speed and the reasons found: the drive's deflection
+        under the spring preload F0 / c no less than the cam's lift at the valve (quasi-statically the cam cannot lift
+        the valve off its seat), else with a lash adjuster its plunger giving way: a shut valve carries no more than
+        its preload, so the drive deflects no more than F0 / c and the plunger's sink takes the rest of the cam's
+        lift (the leak-down sinks it as fast as the cam lifts); its travel over the revolution at the valve,
+        i_a (z_max - z_min), is said.
+    """
+    lifts = d.sweep.lift.max(axis=1)
+    worst = int(np.argmin(lifts))
+    if lifts[worst] > BOUNCE_TOLERANCE:
+        return []
+    p = d.parameters
+    rigid = float(d.sweep.kinematic_lift.max())
+    reasons = [f"at {to_display(d.per_speed.speed[worst], 'rpm'):.0f} rpm the cam lifts the valve by {rigid / MM:.4g} "
+               f"mm without its drive's compliance"]
+    if p.preload / p.drive_stiffness >= rigid:
+        reasons.append(f"the drive deflects F0 / c = {p.preload / p.drive_stiffness / MM:.4g} mm under the spring "
+                       f"preload {p.preload:.4g} N")
+    elif adjuster_ratio > 0.0:
+        travel = adjuster_ratio * float(np.ptp(d.sweep.adjuster_extension[worst]))
+        reasons.append(f"the drive deflects F0 / c = {p.preload / p.drive_stiffness / MM:.4g} mm under the spring "
+                       f"preload at most, the rest is the lash adjuster's plunger giving way (its leak-down; it "
+                       f"travels {travel / MM:.4g} mm at the valve over the revolution)")
+    return [check(CHECK_CODES[2], float(lifts[worst]), low=BOUNCE_TOLERANCE, unit="mm", severity="failure",
+                  note="; ".join(reasons), source=CHECK_SOURCE + ": a valve that leaves its seat by less than 0.001 mm "
+                  "rocks on the seat's elasticity")]
+
+
+__all__ = ["CHECK_CODES", "dynamics_checks", "opening_check", "unsettled_note", "worst_seating"]

@@ -1,0 +1,438 @@
+"""The events of a valve's motion over a recorded revolution (Shang Hanji (1988), sections 3.1-3.2): the first
+seating and its velocity, the bounces after it, the follower's separation (jump) and the smallest contact force while
+the cam lifts, of one speed or of every speed of a sweep at once (:class:`SweepEvents`), and the speeds where a sweep's
+events start (:func:`zero_crossing`, :func:`level_crossing`).  The definitions are in :mod:`.sweep`'s docstring; the
+simulation that records the revolutions is :func:`.sweep.sweep`.
+"""
+
+from dataclasses import dataclass
+
+import numpy as np
+
+BOUNCE_TOLERANCE = 1e-6
+"""Lift above the seat that counts as a bounce [m] (1 um: below it the valve rocks on the seat's elasticity)."""
+
+
+def lift_error(lift, kinematic_lift) -> np.ndarray:
+    """Valve lift y minus the rigid lift max(k h - x0, 0) where either is open, else 0 [m].
+
+    >>> (lift_error(np.array([-1e-6, 2e-3, 0.0]), np.array([-1e-4, 2.1e-3, 1e-5])) * 1e6).round(6).tolist()
+    [0.0, -100.0, -10.0]
+    """
+    rigid = np.maximum(kinematic_lift, 0.0)
+    return np.where((lift > 0) | (rigid > 0), lift - rigid, 0.0)
+
+
+def runs(mask) -> np.ndarray:
+    """Start and end (exclusive) indices of the runs of True in a boolean array, shape (m, 2).
+
+    >>> runs(np.array([0, 1, 1, 0, 1], dtype=bool)).tolist()
+    [[1, 3], [4, 5]]
+    """
+    edges = np.diff(np.concatenate([[0], mask.astype(np.int8), [0]]))
+    return np.column_stack([np.flatnonzero(edges == 1), np.flatnonzero(edges == -1)])
+
+
+def seating(theta, lift, velocity, acceleration=None, step_time=None) -> tuple[int, float, float]:
+    """First downward crossing of y = 0 after the largest lift: (index, angle [rad], velocity [m/s]).
+
+    ``index`` is the first sample at or below the seat.  With ``acceleration`` [m/s^2] and ``step_time`` (the time
+    between samples [s]) the last free state (the sample before, off the seat) is carried to y = 0 by its Taylor
+    series y + v t + a t^2/2 + j t^3/6, the jerk j from the two free samples before the crossing; the sample inside
+    the stiff seat, already slowed by it, is not used.  Without them the angle and velocity are interpolated
+    linearly between the samples.  (n, nan, nan) if the valve does not open or does not return within the record.
+    One record of :func:`seatings`.
+
+    Examples
+    --------
+    A valve closing at a steady 0.3 m/s, sampled every 10 us; the sample inside the seat is already slowed to
+    0.1 m/s, which a linear interpolation would mix in:
+
+    >>> y, v = np.array([1e-3, 5e-6, 2e-6, -1e-6]), np.array([0.0, -0.3, -0.3, -0.1])
+    >>> i, angle, vel = seating(1e-5 * np.arange(4), y, v, np.zeros(4), 1e-5)
+    >>> i, round(angle * 1e5, 9), round(vel, 12)
+    (3, 2.666666667, -0.3)
+    >>> round(seating(1e-5 * np.arange(4), y, v)[2], 12)
+    -0.166666666667
+    """
+    index, angle, vel = seatings(theta, lift[None], velocity[None], None if acceleration is None else
+                                 acceleration[None], step_time)
+    return int(index[0]), float(angle[0]), float(vel[0])
+
+
+def seatings(theta, lift, velocity, acceleration=None, step_time=None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """:func:`seating` of every row of (S, n) records (one a speed) at once: (index, angle [rad], velocity [m/s]),
+    arrays (S,); ``step_time`` [s] a scalar or one per row (the Taylor series' roots of :func:`_seat_times`)."""
+    n = lift.shape[-1]
+    every = np.arange(lift.shape[0])
+    top = np.argmax(lift, axis=-1)
+    down = (lift <= 0.0) & (np.arange(n) >= top[:, None])
+    seated = (lift[every, top] > 0.0) & down.any(axis=-1)
+    i = np.where(seated, np.argmax(down, axis=-1), n)
+    k = np.flatnonzero(seated)
+    index, angle, vel = i, np.full(i.shape, np.nan), np.full(i.shape, np.nan)
+    if not k.size:
+        return index, angle, vel
+    i = i[k]
+    y0, y1 = lift[k, i - 1], lift[k, i]
+    w = y0 / (y0 - y1)
+    t0, t1 = theta[i - 1], theta[i]
+    if acceleration is None:
+        v0 = velocity[k, i - 1]
+        angle[k], vel[k] = t0 + w * (t1 - t0), v0 + w * (velocity[k, i] - v0)
+        return index, angle, vel
+    h = np.broadcast_to(np.asarray(step_time, dtype=float), index.shape)[k]
+    v, a = velocity[k, i - 1], acceleration[k, i - 1]
+    free = (i >= 2) & (lift[k, np.maximum(i - 2, 0)] > 0.0)
+    jerk = np.where(free, (a - acceleration[k, np.maximum(i - 2, 0)]) / h, 0.0)
+    t = _seat_times(y0, v, a, jerk, h, w * h)
+    angle[k], vel[k] = t0 + t / h * (t1 - t0), v + a * t + 0.5 * jerk * t * t
+    return index, angle, vel
+
+
+def _seat_times(y, v, a, jerk, h, fallback) -> np.ndarray:
+    """For each row the first time in (0, 2 h] [s] at which y + v t + a t^2/2 + jerk t^3/6 [m] reaches 0, else
+    ``fallback`` (arrays (K,)): the real roots of the cubic (of the quadratic where jerk = 0) as numpy's ``roots``
+    finds them, the eigenvalues of its companion matrix, of every row's matrix in one call."""
+    out = np.array(fallback, dtype=float)
+    cubic = jerk != 0.0
+    for members, p in ((np.flatnonzero(cubic), np.stack([jerk / 6.0, a / 2.0, v, y], axis=1)),
+                       (np.flatnonzero(~cubic), np.stack([a / 2.0, v, y], axis=1))):
+        p = p[members]
+        whole = (p[:, 0] != 0.0) & (p[:, -1] != 0.0) & np.isfinite(p).all(axis=1)   # roots() would trim the others
+        for i in members[~whole]:
+            out[i] = _first_root(np.roots(p[members == i][0]), h[i], out[i])
+        members, p = members[whole], p[whole]
+        if not members.size:
+            continue
+        companion = np.zeros((members.size, p.shape[1] - 1, p.shape[1] - 1))
+        companion[:, 0, :] = -p[:, 1:] / p[:, :1]
+        companion[:, np.arange(1, p.shape[1] - 1), np.arange(p.shape[1] - 2)] = 1.0
+        roots = np.linalg.eigvals(companion)
+        inside = (np.imag(roots) == 0.0) & (roots.real > 0.0) & (roots.real <= 2.0 * h[members, None])
+        first = np.min(roots.real, axis=1, where=inside, initial=np.inf)
+        out[members] = np.where(inside.any(axis=1), first, out[members])
+    return out
+
+
+def _first_root(roots, h, fallback) -> float:
+    """The smallest real one of ``roots`` in (0, 2 h], else ``fallback``."""
+    real = np.sort(roots[np.isreal(roots)].real)
+    real = real[(real > 0.0) & (real <= 2.0 * h)]
+    return real[0] if real.size else fallback
+
+
+def bounce(lift, first_seating, tolerance=BOUNCE_TOLERANCE) -> tuple[float, int]:
+    """The bounce after the first seating: (largest lift after it [m], returns above ``tolerance``); (0, 0) without one.
+
+    ``first_seating`` is the index :func:`seating` returns (the record's length: no seating, no bounce).  One record
+    of :func:`bounces`.
+
+    >>> bounce(np.array([0.0, 2e-3, 0.0, 5e-6, 0.0, 3e-6, 0.0]), 2)
+    (5e-06, 2)
+    """
+    height, count = bounces(lift[None], np.array([first_seating]), tolerance)
+    return float(height[0]) if count[0] else 0.0, int(count[0])
+
+
+def bounces(lift, first_seating, tolerance=BOUNCE_TOLERANCE, velocity=None, step_time=None
+            ) -> tuple[np.ndarray, np.ndarray]:
+    """Of every row of (S, n) records after its first seating (index, (S,)): the largest lift, not below 0 (0 where
+    the valve does not seat) [m], and the returns above ``tolerance`` (runs of samples above it).
+
+    With the ``velocity`` [m/s] records and ``step_time`` (the time between samples [s], a scalar or one per row) the
+    largest lift is the peak between the samples (:func:`peak_between`), else the largest sample."""
+    after = np.arange(lift.shape[-1]) >= first_seating[:, None]
+    above = (lift > tolerance) & after
+    count = np.count_nonzero(above[:, :1], axis=-1) + np.count_nonzero(above[:, 1:] & ~above[:, :-1], axis=-1)
+    largest = np.max(lift, axis=-1, where=after, initial=-np.inf)
+    if velocity is not None:
+        top = np.argmax(np.where(after, lift, -np.inf), axis=-1)
+        largest = np.maximum(largest, peak_between(lift, velocity, top, step_time, after))
+    return np.where(after.any(axis=-1) & ~(0.0 > largest), largest, 0.0), count
+
+
+def peak_between(lift, velocity, top, step_time, valid=None) -> np.ndarray:
+    """The largest lift next to the sample ``top`` (S,) of each row of (S, n) records [m]: the maximum of the cubic
+    Hermite of the lift and the velocity over the sample interval on either side of it where the velocity turns
+    from rising to falling (``step_time``: the time between the samples [s], a scalar or one per row); -inf where
+    neither does (a largest sample at an end of the record, or at a kink) or an interval's sample is not ``valid``.
+
+    Notes
+    -----
+    On an interval of length h from y0, v0 to y1, v1 the Hermite p(s) = y0 H00 + h v0 H10 + y1 H01 + h v1 H11,
+    s in [0, 1], interpolates a smooth motion with an error of order h^4; its slope is the quadratic
+    (6 y0 + 3 m0 - 6 y1 + 3 m1) s^2 + (6 y1 - 6 y0 - 4 m0 - 2 m1) s + m0 (m = h v), whose root in [0, 1] is its
+    maximum when m0 >= 0 >= m1 (the velocity's sign change brackets it).  A bounce of a few micrometres spans a few
+    tens of samples: the largest sample misses the peak by up to a v^2 / 8 of the step.
+
+    Examples
+    --------
+    A free flight y = 1 - (t - 0.35)^2 sampled every 0.1: the samples' largest 0.9975, the peak 1.
+
+    >>> t = 0.1 * np.arange(8)
+    >>> float(peak_between((1 - (t - 0.35) ** 2)[None], (-2 * (t - 0.35))[None], np.array([3]), 0.1)[0])
+    1.0
+    """
+    rows, n = lift.shape
+    every = np.arange(rows)
+    h = np.broadcast_to(np.asarray(step_time, dtype=float), (rows,))
+    best = np.full(rows, -np.inf)
+    for j in (top - 1, top):                                    # the interval [j, j + 1]
+        inside = (j >= 0) & (j + 1 < n)
+        j0, j1 = np.clip(j, 0, n - 1), np.clip(j + 1, 0, n - 1)
+        y0, y1 = lift[every, j0], lift[every, j1]
+        m0, m1 = h * velocity[every, j0], h * velocity[every, j1]
+        ok = inside & (m0 >= 0.0) & (m1 <= 0.0) & (m0 > m1)
+        if valid is not None:
+            ok &= valid[every, j0] & valid[every, j1]
+        a, b = 6.0 * (y0 - y1) + 3.0 * (m0 + m1), 6.0 * (y1 - y0) - 4.0 * m0 - 2.0 * m1
+        disc = np.sqrt(np.maximum(b * b - 4.0 * a * m0, 0.0))
+        # the root in [0, 1] of a s^2 + b s + m0, in the form without cancellation
+        q = -0.5 * (b + np.where(b >= 0.0, disc, -disc))
+        with np.errstate(divide="ignore", invalid="ignore"):
+            roots = np.stack([np.where(a != 0.0, q / a, np.inf), np.where(q != 0.0, m0 / q, -m0 / b)])
+        roots = np.where((roots >= 0.0) & (roots <= 1.0), roots, np.nan)
+        s = np.where(np.isnan(roots[0]), roots[1], roots[0])
+        ok &= np.isfinite(s)
+        s = np.where(ok, s, 0.0)
+        s2, s3 = s * s, s * s * s
+        p = (2 * s3 - 3 * s2 + 1) * y0 + (s3 - 2 * s2 + s) * m0 + (3 * s2 - 2 * s3) * y1 + (s3 - s2) * m1
+        best = np.where(ok, np.maximum(best, p), best)
+    return best
+
+
+def lift_event(kinematic, lift, follower=None, tolerance=BOUNCE_TOLERANCE) -> np.ndarray:
+    """Mask of the cam's lift event as the valve lives it: from the cam's catching the valve (the cam's lift positive,
+    the valve off its seat by more than ``tolerance`` [m], the seat's elastic rocking, :data:`BOUNCE_TOLERANCE`, and
+    the follower on the cam) to the valve's first return to its seat after its largest
+    lift (the first sample at or below the seat), the catching the first after that return and after the cam's
+    lowest point, round the revolution.
+
+    The record is one period of the motion, so the event may run over its end: a cam without a base circle (an
+    eccentric) lifts again as soon as it has lowered the valve.  A valve that rebounds from its seat bounces, and the
+    cam that goes on lowering may touch it, until the cam lifts it again; from that catching to the return, the cam
+    should be carrying the valve.  Without a return (a valve that never seats) every sample; without a catching (a
+    valve that floats over the cam) from the first sample where the cam's lift is positive to the return.  ``lift`` (and ``follower``, the node on the
+    cam where it is not the valve, :func:`separation_mask`) may hold a record per row (S, n), of one rigid lift
+    ``kinematic`` (n,).
+
+    >>> lift_event(np.array([-1.0, 1.0, 2.0, 1.0, 0.5, -1.0]), np.array([0.0, 0.5, 1.5, 0.2, -0.1, 0.3])).tolist()
+    [False, True, True, True, False, False]
+
+    An eccentric: the valve returns to its seat at sample 3 and rebounds over the end of the record, above the rising
+    cam at samples 4 and 0; the cam catches it at sample 1, so the event runs from 1 to 3:
+
+    >>> lift_event(np.array([0.1, 1.0, 2.0, 1.0, 0.2]), np.array([0.4, 0.8, 1.9, -0.1, 0.3])).tolist()
+    [False, True, True, False, False]
+    """
+    lift = np.asarray(lift)
+    follower = lift if follower is None else follower
+    n = lift.shape[-1]
+    index = np.arange(n)
+    peak = np.expand_dims(np.argmax(lift, axis=-1), -1)
+    after_peak = samples_to(lift <= 0.0, peak)
+    returned = (after_peak < n) & (np.take_along_axis(lift, peak, -1) > 0.0)
+    seat = (peak + after_peak) % n
+    bottom = (seat + samples_to(np.broadcast_to(kinematic <= kinematic.min(), lift.shape), seat)) % n
+    caught = (kinematic > 0.0) & (lift > tolerance) & (follower < kinematic)
+    after = samples_to(caught, bottom)
+    rising = np.flatnonzero(kinematic > 0.0)
+    start = np.where(after < n, (bottom + after) % n, rising[0] if rising.size else seat)
+    shifted = index - start
+    inside = np.where(shifted < 0, shifted + n, shifted) < (seat - start) % n
+    return np.where(returned, inside, rising.size > 0)
+
+
+def samples_to(mask, origin) -> np.ndarray:
+    """Samples from ``origin`` forward, round the record, to the first True of ``mask`` in each row of (S, n) (or one
+    (n,) record), origin (S, 1) (or (1,)); n where the row has none.
+
+    Two first-True searches (at or after the origin, else from the start), not the distance (index - origin) mod n of
+    every sample: the integer division of that took most of the time of :func:`lift_event`, which every sweep's events
+    run.
+
+    >>> samples_to(np.array([[1, 0, 0, 1, 0], [0, 0, 0, 0, 0]], dtype=bool), np.array([[4], [1]])).tolist()
+    [[1], [5]]
+    """
+    n = mask.shape[-1]
+    ahead = mask & (np.arange(n) >= origin)
+    later = np.expand_dims(np.argmax(ahead, axis=-1), -1)
+    first = np.expand_dims(np.argmax(mask, axis=-1), -1)
+    return np.where(np.take_along_axis(ahead, later, -1), later - origin,
+                    np.where(np.take_along_axis(mask, first, -1), first + n - origin, n))
+
+
+def separation_mask(contact, kinematic, lift, event=None, follower=None, tolerance=BOUNCE_TOLERANCE) -> np.ndarray:
+    """Follower separation (jump): no contact force, the follower at or above the cam and the valve off its seat (by
+    more than ``tolerance`` [m]: below it the valve rocks on the seat's elasticity, :data:`BOUNCE_TOLERANCE`), while
+    the cam's lift is positive during the lift event (:func:`lift_event`).
+
+    Only the cam's lift decides whether the cam should be carrying the valve: a valve thrown above the cam, or one
+    that never comes down to it while the cam lifts, has jumped; a valve that rebounds from its seat after the event
+    has returned it there bounces, it does not jump.  The follower must be at or above the cam's rigid lift (the
+    contact's gap open): a contact whose damping releases it an instant before the gap opens has not separated.
+    ``follower`` is the position of the node on the cam [m at the valve] where it is not the valve (the first drive
+    part of a multi-mass train: the valve behind an elastic drive lags it).  ``contact``, ``lift`` and ``follower`` may
+    hold a record per row (S, n); ``event``: their :func:`lift_event`, if
+    found.
+
+    >>> separation_mask(np.array([0.0, 0.0, 5.0, 0.0, 0.0]), np.array([-1e-4, 1e-3, 1e-3, 3e-6, 2e-6]),
+    ...                 np.array([1e-4, 2e-3, 1e-3, -1e-7, 4e-6])).tolist()
+    [False, True, False, False, False]
+
+    An elastic drive: the valve 0.1 mm below the cam's rigid lift, its follower on the cam (no force: the contact's
+    damping releases it) or 1 um above it (separated):
+
+    >>> separation_mask(np.zeros(2), np.full(2, 1e-3), np.full(2, 0.9e-3),
+    ...                 follower=np.array([0.999e-3, 1.001e-3])).tolist()
+    [False, True]
+    """
+    event = lift_event(kinematic, lift, follower, tolerance) if event is None else event
+    follower = lift if follower is None else follower
+    return (contact <= 0.0) & (kinematic > 0.0) & (follower >= kinematic) & (lift > tolerance) & event
+
+
+def lowest_lifting_force(contact, kinematic, lift, separated, event=None, tolerance=BOUNCE_TOLERANCE) -> np.ndarray:
+    """Smallest cam contact force while the cam carries the open valve [N]: 0 with a separation, else the least where
+    the cam's lift is positive and the valve is off its seat (by more than ``tolerance`` [m], as
+    :func:`separation_mask` has it) during the lift event (:func:`lift_event`; after it
+    the cam lowers the seated valve to its base circle and the force falls to 0 without a separation); nan if the
+    valve never leaves its seat while the cam lifts.  ``contact`` and ``lift`` may hold a record per row (S, n),
+    ``separated`` one flag per row (and ``event``, :func:`lift_event`, if found): one force per row.
+
+    >>> float(lowest_lifting_force(np.array([300.0, 50.0, 80.0, 2.0, 1.0]), np.array([-1e-4, 1e-3, 2e-3, 2e-6, 1e-6]),
+    ...                            np.array([0.0, 1e-3, 2e-3, -1e-7, 1e-7]), False))
+    50.0
+    """
+    lifting = (kinematic > 0.0) & (lift > tolerance) & (lift_event(kinematic, lift, tolerance=tolerance) if event
+                                                          is None else event)
+    least = np.min(contact, axis=-1, where=lifting, initial=np.inf)
+    return np.where(separated, 0.0, np.where(lifting.any(axis=-1), least, np.nan))
+
+
+@dataclass(frozen=True)
+class SweepEvents:
+    """The events of every speed of a :class:`SweepResult` at once, arrays (S,) (:func:`speed_result`'s of each
+    speed; angles camshaft rad from the nose).
+
+    Attributes
+    ----------
+    seating_index : ndarray of int
+        First sample at or below the seat after the largest lift (n: no seating).
+    seating_angle, seating_velocity : ndarray
+        At the first seating [rad], [m/s] (nan: no seating).
+    bounce_height : ndarray
+        Largest lift after the first seating [m].
+    bounce_count : ndarray of int
+        Returns above the bounce tolerance after it.
+    jumped : ndarray of bool
+        Follower separation.
+    jump_from, jump_to : ndarray
+        Where the first separation starts and the last one ends [rad] (nan: none).
+    min_contact_force : ndarray
+        :func:`lowest_lifting_force` [N].
+    """
+
+    seating_index: np.ndarray
+    seating_angle: np.ndarray
+    seating_velocity: np.ndarray
+    bounce_height: np.ndarray
+    bounce_count: np.ndarray
+    jumped: np.ndarray
+    jump_from: np.ndarray
+    jump_to: np.ndarray
+    min_contact_force: np.ndarray
+
+
+def sweep_events(result) -> SweepEvents:
+    """The :class:`SweepEvents` of a :class:`SweepResult`: :func:`speed_result`'s events over the speeds at once."""
+    theta, kinematic, lift = result.theta, result.kinematic_lift, result.lift
+    step_time = float(theta[1] - theta[0]) / result.cam_speeds
+    index, angle, velocity = seatings(theta, lift, result.velocity, result.acceleration, step_time)
+    event = lift_event(kinematic, lift, result.follower_lift, result.bounce_tolerance)
+    separation = separation_mask(result.contact_force, kinematic, lift, event, result.follower_lift,
+                                 result.bounce_tolerance)
+    jumped = separation.any(axis=-1)
+    last = lift.shape[-1] - 1 - np.argmax(separation[:, ::-1], axis=-1)
+    height, count = bounces(lift, index, result.bounce_tolerance, result.velocity, step_time)
+    return SweepEvents(index, angle, velocity, height, count, jumped,
+                       np.where(jumped, theta[np.argmax(separation, axis=-1)], np.nan),
+                       np.where(jumped, theta[last], np.nan),
+                       lowest_lifting_force(result.contact_force, kinematic, lift, jumped, event, result.bounce_tolerance))
+
+
+def force_reached_zero(events) -> np.ndarray:
+    """Of every speed of :class:`SweepEvents`: whether the smallest contact force while the cam lifts has reached
+    zero, with a separation or without (a force that touches zero, which the contact law clamps there, an instant
+    before the valve would rise above the cam: the speeds above separate).
+
+    >>> e = SweepEvents(*([np.zeros(3)] * 5), np.array([False, False, True]), *([np.zeros(3)] * 2),
+    ...                 np.array([26.7, 0.0, 0.0]))
+    >>> force_reached_zero(e).tolist()
+    [False, True, True]
+    """
+    return events.jumped | (events.min_contact_force <= 0.0)
+
+
+def zero_crossing(speeds, values, hit) -> float:
+    """The speed where a quantity reaches its limit, interpolated between the speeds of a sweep.
+
+    Parameters
+    ----------
+    speeds : ndarray (S,)
+        Ascending speeds.
+    values : ndarray (S,)
+        The quantity less its limit: positive where the limit is not reached.
+    hit : ndarray (S,) of bool
+        Where the limit is reached (the event happens).
+
+    Returns
+    -------
+    float
+        nan if no speed has the event; the lowest speed if the first has it; else the zero of the smooth trend of
+        ``values`` through the last speeds without the event (a parabola through three, a line through two), kept
+        between the last speed without the event and the first with it (the trend of the speeds above is not
+        smooth: an event clamps the quantity, e.g. a contact force at 0).
+
+    Examples
+    --------
+    A force 400 - 0.01 w^2 [N] (zero at w = 200) sampled every 15 rad/s:
+
+    >>> w = np.arange(140.0, 260.0, 15.0)
+    >>> f = 400.0 - 0.01 * w**2
+    >>> round(zero_crossing(w, np.maximum(f, 0.0), f <= 0.0), 9)
+    200.0
+    """
+    first = np.flatnonzero(hit)
+    if first.size == 0:
+        return np.nan
+    i = int(first[0])
+    if i == 0:
+        return float(speeds[0])
+    fit = np.arange(max(0, i - 3), i)
+    fit = fit[np.isfinite(values[fit])]
+    if fit.size < 2 or fit[-1] != i - 1:
+        return float(speeds[i])
+    x0 = speeds[i - 1]
+    roots = np.roots(np.polyfit(speeds[fit] - x0, values[fit], fit.size - 1))
+    real = roots[np.isreal(roots)].real + x0
+    inside = real[(real >= x0) & (real <= speeds[i])]
+    return float(inside.min()) if inside.size else float(speeds[i])
+
+
+def level_crossing(speeds, values, level) -> float:
+    """The lowest speed where ``values`` rises above ``level``, linear between the two speeds around it (nan: none;
+    the lowest speed if it is already above).
+
+    >>> level_crossing(np.array([10.0, 20.0, 30.0]), np.array([0.0, 1e-6, 3e-6]), 2e-6)
+    25.0
+    """
+    above = np.flatnonzero(values > level)
+    if above.size == 0:
+        return np.nan
+    i = int(above[0])
+    if i == 0:
+        return float(speeds[0])
+    w = (level - values[i - 1]) / (values[i] - values[i - 1])
+    return float(speeds[i - 1] + w * (speeds[i] - speeds[i - 1]))

@@ -1,0 +1,54 @@
+"""The events of a recorded revolution (valvetrain.dynamics.events): runs of a mask, a sweep's events at once against
+each speed's own, the bounce height between the samples against a second integrator (DOP853)."""
+
+import numpy as np
+import pytest
+
+from valvetrain.dynamics.events import bounces, runs
+from valvetrain.dynamics.models import one_mass_train
+from valvetrain.dynamics.sweep import sweep
+
+from reference_dynamics import appendix_train, harmonic_cam, reference_events
+
+
+def test_runs():
+    """Runs of a mask: none, one at each end, the whole array."""
+    assert runs(np.zeros(4, dtype=bool)).shape == (0, 2)
+    assert runs(np.array([1, 0, 0, 1], dtype=bool)).tolist() == [[0, 1], [3, 4]]
+    assert runs(np.ones(3, dtype=bool)).tolist() == [[0, 3]]
+
+
+def test_the_events_of_a_sweep_at_once_are_each_speeds_own():
+    """SweepResult.events finds every speed's events over the speeds at once (numpy over the rows, as the design's
+    per-speed table reads them): the same numbers, bit for bit, as speed_result's of each speed alone (the record
+    of one speed, SweepResult.speed), over speeds that separate, bounce on an undamped seat and neither (the harmonic
+    cam above, 0.6-1.2 x its jump speed)."""
+    lift, phi, mass, rate, preload = 8e-3, 1.0, 0.2, 50e3, 300.0
+    exact = np.sqrt(2 * (preload + rate * lift) / (mass * lift * (np.pi / phi) ** 2))
+    train = one_mass_train(mass, 3e8, rate, preload, damping_ratio=0.1, seat_damping_ratio=0.0)
+    r = sweep(harmonic_cam(lift, phi), train, np.linspace(0.6, 1.2, 25) * exact)
+    each = r.per_speed()
+    e = r.events
+    assert e.jumped.any() and not e.jumped.all() and (e.bounce_count > 0).any() and np.isfinite(e.seating_angle).all()
+    pairs = {"seating_angle": [s.seating_angle for s in each], "seating_velocity": [s.seating_velocity for s in each],
+             "bounce_height": [s.bounce_height for s in each], "bounce_count": [s.bounce_count for s in each],
+             "min_contact_force": [s.min_contact_force for s in each],
+             "jumped": [s.jump_intervals.size > 0 for s in each],
+             "jump_from": [s.jump_intervals[0, 0] if s.jump_intervals.size else np.nan for s in each],
+             "jump_to": [s.jump_intervals[-1, 1] if s.jump_intervals.size else np.nan for s in each]}
+    for name, expected in pairs.items():
+        np.testing.assert_array_equal(getattr(e, name), expected, err_msg=name)
+
+
+def test_the_bounce_height_is_the_peak_between_the_samples():
+    """The appendix train of tests/reference_dynamics.py at 5554 engine rpm, recorded every 1 cam deg (integrated as at
+    0.5: the sub-steps keep the time step): its bounce of 1.58 um is within 3 % of DOP853's (its largest lift after
+    the first seating, located by the event finder, reference_dynamics.reference_events) as the peak of the cubic
+    Hermite of the lift and the velocity between the samples; the largest sample, the former bounce height, misses
+    it by 39 %."""
+    law, train = appendix_train()
+    omega = 5554 * np.pi / 60
+    reference = reference_events(law, train, omega)["bounce_height"]
+    r = sweep(law, train, [omega], step_deg=1.0)
+    assert r.events.bounce_height[0] == pytest.approx(reference, rel=0.03)
+    assert bounces(r.lift, r.events.seating_index, r.bounce_tolerance)[0][0] < 0.7 * reference
