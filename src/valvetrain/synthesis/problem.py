@@ -12,7 +12,7 @@ from pydantic import BaseModel, ValidationError
 from .. import flow, springs
 from ..design.drive import spring_options
 from ..design.dynamics import build_train
-from ..design.valve import MAX_LIFT_TO_THROAT, follower_travel_acceleration
+from ..design.valve_checks import MAX_LIFT_TO_THROAT, follower_travel_acceleration
 from ..dynamics.models import one_mass_train
 from ..dynamics.sweep import sweep
 from ..errors import InputError
