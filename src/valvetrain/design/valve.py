@@ -20,6 +20,9 @@ from ..checks import Check, check, failed, ranked, tally
 from ..crank.kinematics import displacement
 from ..errors import InputError
 from ..followers import follower_of
+from ..followers.finger import FingerKinematics
+from ..followers.flat import FlatContact
+from ..followers.roller import RollerContact
 from ..laws import LiftLaw
 from ..laws.base import Extremes
 from ..laws.records import LawRecord
@@ -141,58 +144,6 @@ class LiftTable:
 
 
 @dataclass(frozen=True)
-class FlatContact:
-    """Where a flat follower touches the cam."""
-
-    max_contact_offset: float = quantity("max_contact_offset_mm", "mm", "largest contact offset from the axis, h'")
-
-
-@dataclass(frozen=True)
-class RollerContact:
-    """How a roller follower meets the cam."""
-
-    roller_radius: float = quantity("roller_radius_mm", "mm", "roller radius")
-    max_pressure_angle: float = quantity("max_pressure_angle_deg", "deg", "largest pressure angle")
-    min_concave_radius: float = quantity("min_concave_radius_mm", "mm",
-                                         "concave radius closest to zero (null: no concave stretch)")
-
-
-@dataclass(frozen=True)
-class FingerKinematics:
-    """The linkage of a finger follower over the valve's lift (:mod:`valvetrain.followers.finger`; Norton (2009),
-    Wang (2007)).  The ratio is the valve lift per unit travel of the roller centre on its arc about the pivot."""
-
-    rest_ratio: float = quantity("ratio_at_rest", label="lever ratio on the heel circle")
-    min_ratio: float = quantity("ratio_min", label="smallest instantaneous lever ratio over the lift")
-    max_ratio: float = quantity("ratio_max", label="largest instantaneous lever ratio over the lift")
-    nose_ratio: float = quantity("ratio_at_full_lift", label="lever ratio at the full valve lift")
-    swing: float = quantity("swing_deg", "deg", "the finger's turn from the heel circle to the full lift")
-    roller_lift: float = quantity("roller_lift_mm", "mm",
-                                  "lift of the roller centre from the cam centre (the synthesised cam's lift)")
-    tip_contact: tuple[float, float] = quantity("tip_contact_mm", "mm",
-                                                "where the pad touches the valve tip across its axis: shut, full lift")
-    scrub: float = quantity("tip_scrub_mm", "mm", "travel of the contact point across the valve tip over the lift")
-    tip_reach: float = quantity("tip_contact_max_mm", "mm",
-                                "largest distance of the contact point from the valve axis over the lift")
-    rest_pressure_angle: float = quantity("pressure_angle_at_rest_deg", "deg",
-                                          "pressure angle on the heel circle (the pivot's offset)")
-
-
-def finger_kinematics(follower, heel, lift, samples=2001) -> FingerKinematics:
-    """The :class:`FingerKinematics` of a finger (:class:`~valvetrain.followers.PivotedFollower`) on the heel circle
-    ``heel`` [m] up to the valve lift ``lift`` [m]: its ratio, contact and roller centre are functions of the finger's
-    angle alone, sampled at ``samples`` angles from psi_0 to the full lift's."""
-    psi0, top = follower.base_angle(heel), float(follower.angle_of(np.array(lift), heel))
-    psi = np.linspace(psi0, top, samples)
-    ratio, tip = follower.lever_ratio(psi), follower.tip_contact(psi, heel)
-    zero = np.zeros(1)
-    return FingerKinematics(follower.rest_ratio(heel), float(ratio.min()), float(ratio.max()), float(ratio[-1]),
-                            abs(top - psi0), float(np.hypot(*follower.centre(psi)).max() - heel - follower.radius),
-                            (float(tip[0]), float(tip[-1])), float(tip.max() - tip.min()), float(np.abs(tip).max()),
-                            float(follower.pressure_angle(heel, zero, zero)[0]))
-
-
-@dataclass(frozen=True)
 class ProfileResult:
     """The profile stage: lift table, contour, curvature and contact of the cam (Shang Hanji (1988), section 2.1)."""
 
@@ -280,11 +231,11 @@ def law_stage(valve, engine, law=None) -> CamResult:
             raise InputError(Problem(key, f"the measured valve lift = {lift / MM:.4g} mm: {allowed}"))
         raise InputError(Problem("max_lift_mm", allowed, f"{lift / MM:.4g} mm"))
     follower = follower_of(cam)
-    if follower.law_at_valve:   # a finger on a measured table (or a caller's law): its lift known only now
-        problem = follower.geometry_problem(cam.base_radius - law.ramp_height, law.lift_max + law.ramp_height)
-        if problem:
-            key, value, message, joiner = problem
-            raise InputError(Problem(f"cam.{key}", message, value, joiner))
+    # a finger on a measured table (or a caller's law): its lift known only now
+    problem = follower.geometry_problem(cam.base_radius - law.ramp_height, law.lift_max + law.ramp_height)
+    if problem:
+        key, value, message, joiner = problem
+        raise InputError(Problem(f"cam.{key}", message, value, joiner))
     omega = engine.rated_speed / 2.0
     ext = law.extremes(omega)
     seat = valve.rocker_ratio * omega * np.abs(law.derivatives(np.array([law.valve_opens, law.valve_closes]))[1])
@@ -386,18 +337,10 @@ def profile_stage(cam, valve, output) -> ProfileResult:
 
     x_max, rho_max = _first_best([extremum(convex_or_low, bp, "max"), (np.pi, heel)], 1.0)
     straight = bool(np.any(np.isposinf(rho)))   # straight flanks (tangent cam): the largest radius is infinite
-    if follower.rolling:
-        beta_max = extremum(lambda t: np.abs(law.profile(t, heel, follower)[2]), bp, "max")[1]
-        # the concave radius closest to zero is the most negative curvature (the radius itself passes through
-        # -inf at the inflections, where its minimum would be found)
-        curvature = extremum(lambda t: 1.0 / law.curvature(t, heel, follower), bp, "min")[1]
-        concave = 1.0 / curvature if curvature < 0.0 else 0.0
-        contact = RollerContact(follower.radius, beta_max, concave if concave + follower.radius < 0.0 else None)
-    else:
-        contact = FlatContact(cam.max_velocity / omega)
-    finger = finger_kinematics(follower, heel, law.lift_max + law.ramp_height) if follower.law_at_valve else None
     return ProfileResult(table, contour, ctheta, rho_min, None if straight else rho_max, x_min,
-                         None if straight else x_max, straight, contact, follower.undercut(rho_min), finger)
+                         None if straight else x_max, straight,
+                         follower.profile_contact(law, heel, cam.max_velocity / omega), follower.undercut(rho_min),
+                         follower.kinematics(heel, law.lift_max + law.ramp_height))
 
 
 def clearance_stage(cam, valve, engine, advance=0.0) -> Optional[ClearanceResult]:
@@ -732,8 +675,7 @@ def with_hydraulic(design, valve, engine, gas, cylinder=None) -> ValveDesign:
                    lost_motion=lost)
 
 
-__all__ = ["CamResult", "ClearanceResult", "FingerKinematics", "FlowResult", "LiftTable", "ProfileResult", "StepRecord", "ValveDesign",
-           "ValveGeometry", "clearance_check", "clearance_stage", "design_valve", "driven_design", "finger_kinematics",
-           "flow_stage", "follower_accelerations", "follower_travel_acceleration", "kinematic_stages", "law_stage",
-           "layout_check", "mass_checks", "overlap_clearance_checks", "profile_stage", "step_records", "valve_checks",
-           "valve_geometry", "with_gas_load", "with_hydraulic", "wrap_crank"]
+__all__ = ["CamResult", "ClearanceResult", "FlowResult", "LiftTable", "ProfileResult", "StepRecord", "ValveDesign",
+           "ValveGeometry", "clearance_stage", "design_valve", "driven_design", "flow_stage", "kinematic_stages",
+           "law_stage", "profile_stage", "step_records", "valve_geometry", "with_gas_load", "with_hydraulic",
+           "wrap_crank"]

@@ -9,7 +9,6 @@ from dataclasses import dataclass, replace
 import math
 from typing import Optional
 
-import numpy as np
 
 from .. import flow
 from ..checks import Check, check
@@ -117,9 +116,6 @@ BASE_RADIUS_TO_LIFT_RANGE = (1.5, 4.0)
 RHO_MIN = 2.0 * MM
 """Smallest recommended radius of curvature of the cam profile [m] (Shang Hanji (1988), section 2.1)."""
 
-PRESSURE_ANGLE_MAX = 30.0 * DEG
-"""Largest recommended pressure angle of a roller follower [rad] (UkrSURT Proceedings (2019))."""
-
 SEATING_VELOCITY_MAX = 0.5
 """Working limit of the valve's seating velocity at rated speed [m/s] (no primary source;
 0.3-0.5 m/s is working guidance)."""
@@ -155,7 +151,7 @@ half-width (an engineering limit of this package; no published limit of the cont
 
 def tip_contact_check(finger, valve) -> Check:
     """The finger's pad on the valve tip (a failure): the largest distance of its contact point from the valve axis
-    over the lift (:class:`~valvetrain.design.valve.FingerKinematics` ``tip_reach``, which bounds its travel, the scrub) against the tip's
+    over the lift (:class:`~valvetrain.followers.finger.FingerKinematics` ``tip_reach``, which bounds its travel, the scrub) against the tip's
     radius, half the stem's diameter, less :data:`TIP_EDGE_MARGIN`.
 
     Parameters
@@ -211,26 +207,6 @@ def overlap_clearance_checks(valves) -> list[Check]:
     return out
 
 
-def follower_travel_acceleration(follower, heel, h, dh, d2h) -> np.ndarray:
-    """The follower's acceleration on the cam per camshaft angle squared [m/rad^2]: the law's h'' (a tappet), or for
-    a law at the valve (a finger) the roller centre's on its arc,
-    :meth:`~valvetrain.followers.PivotedFollower.travel_acceleration`; ``heel`` [m], h [m], dh [m/rad], d2h
-    [m/rad^2] of the law."""
-    return follower.travel_acceleration(heel, h, dh, d2h) if follower.law_at_valve else d2h
-
-
-def follower_accelerations(cam, samples=4001) -> tuple[float, float]:
-    """The smallest and largest acceleration of the follower on the cam at the rated speed [m/s^2]: the law's
-    extremes (:class:`~valvetrain.design.valve.CamResult`), or for a law at the valve (a finger) omega^2
-    :func:`follower_travel_acceleration` over ``samples`` angles of the event."""
-    follower, law = cam.follower_model, cam.law
-    if not follower.law_at_valve:
-        return cam.min_acceleration, cam.max_acceleration
-    theta = np.unique(np.concatenate([np.linspace(law.start, law.end, samples), law.breakpoints]))
-    acc = cam.cam_speed ** 2 * follower_travel_acceleration(follower, cam.heel_radius, *law.derivatives(theta)[:3])
-    return float(acc.min()), float(acc.max())
-
-
 def valve_checks(cam, flow_result, profile, valve, engine, timing) -> list[Check]:
     """The recommended-range checks of the law, the flow, the timing and the profile (every check, passed or not).
 
@@ -245,7 +221,7 @@ def valve_checks(cam, flow_result, profile, valve, engine, timing) -> list[Check
                            charge_velocity=flow_result.charge_velocity, engine_type=engine.type,
                            chamber=engine.chamber, count=valve.count)
     drive, follower = layout(valve), cam.follower_model
-    low, high = follower_accelerations(cam)
+    low, high = follower.acceleration_range(cam)
     out.append(layout_check("tappet_acceleration.max", high, drive, unit="m/s2"))
     out.append(layout_check("tappet_acceleration.min", low, drive, unit="m/s2"))
     if valve.kind in TIMING_RANGES:
@@ -270,9 +246,7 @@ def valve_checks(cam, flow_result, profile, valve, engine, timing) -> list[Check
     if profile.undercut:
         out.append(check(follower.undercut_code, profile.rho_min, low=0.0, strict_low=True,
                          source=follower.undercut_source, unit="mm", severity="failure"))
-    if follower.rolling:
-        out.append(check("profile.pressure_angle.max", profile.contact.max_pressure_angle, high=PRESSURE_ANGLE_MAX,
-                         source="UkrSURT Proceedings (2019)", unit="deg"))
+    out += follower.profile_checks(profile.contact)
     if not profile.undercut:
         out.append(check("profile.rho_min", profile.rho_min, low=RHO_MIN, source="Shang Hanji (1988), section 2.1",
                          unit="mm"))

@@ -41,6 +41,13 @@ Write one module in this package with a subclass of :class:`Follower` decorated 
   :meth:`ratio`                 the follower's own lever ratio as a function of the lift [-]
   :meth:`rest_ratio`            its lever ratio on the heel circle [-] (a lash adjuster's motion ratio)
   :meth:`force_ratio`           the cam's force per unit force along the law's lift [-]
+  :meth:`travel_acceleration`   the follower's acceleration on the cam per camshaft angle squared [m/rad^2]
+  :meth:`acceleration_range`    its extremes at the rated speed [m/s^2] (the tappet-acceleration checks)
+  :meth:`profile_contact`       the profile stage's contact record (flat: contact offset; roller: pressure angle)
+  :meth:`profile_checks`        the checks of that record (a roller's largest pressure angle)
+  :meth:`kinematics`            the record of a linkage over the lift (a finger's), or None
+  :meth:`geometry_problem`      what makes a linkage unworkable for a lift, or None
+  :meth:`rolling_losses`        a roller's slip and rolling resistance in the friction torque
   ============================  =======================================================================
 
   A follower whose lever ratio varies with the lift may return it from :meth:`ratio`; ``LiftLaw.valve_lift``
@@ -58,10 +65,9 @@ Write one module in this package with a subclass of :class:`Follower` decorated 
   ``_multi_train``), reading its mass from ``[drive.masses]``; a reduced inertia that changes with the lift is
   that node's :class:`~valvetrain.dynamics.models.VariableMass` (``design/dynamics.py``, ``finger_mass``).
 
-- ``rolling`` selects, beside the geometry, what the stages report: a rolling follower's profile record (roller
-  radius, largest pressure angle, concave radius) and its side-force record and the pressure-angle checks; a
-  sliding one's contact-offset record, its face's edge loading and the tappet's side pressure.  A tangent cam
-  admits only a rolling follower.
+- the stages never read ``rolling`` or ``law_at_valve``: what differs between a rolling and a sliding follower
+  (its profile record and checks, its rolling losses, its side load) is a method here.  A tangent cam admits only
+  a rolling follower (the specification's check).
 
 Methods return numpy arrays (floats where the argument is a scalar); none of them mutates its arguments or
 the follower, and they hold no state beyond the follower's dimensions.  Each follower's module has its tests,
@@ -241,6 +247,37 @@ class Follower:
         """The force the cam carries per unit force along the law's lift [-] (1 for a translating follower, whose law
         is its own lift; a finger's law is the valve's, and its cam carries G / (L_r cos beta) of the valve force)."""
         return np.ones_like(np.asarray(h, dtype=float))
+
+    def geometry_problem(self, heel, lift) -> tuple[str, str, str, str] | None:
+        """What makes the follower's geometry unworkable on the heel circle ``heel`` [m] up to the lift ``lift`` [m]
+        (the key within the cam section, its value, the message and its joiner), or None: a translating follower
+        has no linkage to fail."""
+        return None
+
+    def travel_acceleration(self, heel, h, dh, d2h) -> np.ndarray:
+        """The follower's acceleration on the cam per camshaft angle squared [m/rad^2]: the law's h'' for a follower
+        whose law is its own lift."""
+        return d2h
+
+    def acceleration_range(self, cam, samples=4001) -> tuple[float, float]:
+        """The smallest and largest acceleration of the follower on the cam at the rated speed [m/s^2]: the law's own
+        extremes (``cam`` is the law stage's ``CamResult``: ``min_acceleration``, ``max_acceleration``)."""
+        return cam.min_acceleration, cam.max_acceleration
+
+    def kinematics(self, heel, lift):
+        """The record of the follower's linkage over the lift (heel circle ``heel``, lift ``lift`` [m]), or None for a
+        follower without one (a finger's: :meth:`~valvetrain.followers.PivotedFollower.kinematics`)."""
+        return None
+
+    def profile_checks(self, contact) -> list:
+        """The checks of the follower's contact record (:meth:`profile_contact`): none for a sliding face."""
+        return []
+
+    def rolling_losses(self, u_follower, slip, resistance) -> tuple:
+        """The follower surface's velocity [m/s], its rolling-resistance coefficient and its rolling velocity in the
+        friction torque (:func:`valvetrain.tribology.friction_torque`): a sliding face has no rolling, so its
+        velocity as it is and no rolling terms (``slip``, ``resistance``: a roller's, unused)."""
+        return u_follower, 0.0, 0.0
 
     def ratio(self, h) -> np.ndarray:
         """The follower's own lever ratio (valve-side motion / cam lift) at the lifts ``h`` [m]: 1 for a
