@@ -418,7 +418,7 @@ def _strength(valve, cam, theta, maps, p_open, valve_load):
     if follower.rolling and not follower.law_at_valve:   # a finger has no guide: its pivot carries the side load
         side, side_check = _roller_side_force(cam, follower, maps, drive)
         found.append(side_check)
-    else:
+    elif not follower.rolling:   # a roller has no face whose edge the contact could reach
         found += _edge_loading(parts, drive, cam, follower, maps, width, notes)
     return StrengthResult(
         (0.0, 0.0), "", load.value, load.angle, load.speed, valve_load.value / i_k, p_open,
