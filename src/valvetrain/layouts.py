@@ -17,19 +17,21 @@ import numpy as np
 
 from . import flow, masses
 from .followers import follower_of
+from .links import REGISTRY as LINKS
 
 
 @dataclass(frozen=True)
 class Layout:
-    """A drive layout: its name and the chain of parts from the cam to the valve.
+    """A drive layout: its name and the chain of links from the contact to the valve.
 
     Attributes
     ----------
     name : str
         The ``[valves.NAME.drive] layout`` value.
     parts : tuple of str
-        The moving parts between cam and valve in order from the cam: ``"tappet"`` (in a guide, under the cam),
-        ``"pushrod"``, ``"rocker"`` (on its shaft, the valve arm at the valve).
+        The names of the links between cam and valve in order from the cam (:data:`valvetrain.links.REGISTRY`):
+        ``"tappet"`` (in a guide, under the cam), ``"pushrod"``, ``"rocker"`` (on its shaft, the valve arm at the
+        valve).
     """
 
     name: str
@@ -40,10 +42,14 @@ class Layout:
     rocker = property(lambda self: "rocker" in self.parts)
 
     @property
+    def links(self) -> tuple:
+        """The :class:`~valvetrain.links.Link` objects of the chain, from the cam."""
+        return tuple(LINKS[p] for p in self.parts)
+
+    @property
     def train_masses(self) -> tuple[str, ...]:
-        """The ``[drive.masses]`` keys of the parts a multi-mass train of this layout needs, from the cam."""
-        return tuple({"tappet": "tappet_kg", "pushrod": "pushrod_kg", "rocker": "rocker_inertia_kg_mm2"}[p]
-                     for p in self.parts)
+        """The ``[drive.masses]`` keys of the links a multi-mass train of this layout needs, from the cam."""
+        return tuple(link.mass_key for link in self.links)
 
 
 LAYOUTS = {"direct": Layout("direct", ("tappet",)), "rocker": Layout("rocker", ("rocker",)),

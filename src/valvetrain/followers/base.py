@@ -248,6 +248,23 @@ class Follower:
         is its own lift; a finger's law is the valve's, and its cam carries G / (L_r cos beta) of the valve force)."""
         return np.ones_like(np.asarray(h, dtype=float))
 
+    def face_offset(self, dh) -> np.ndarray | None:
+        """The distance of the contact from the axis of a face sliding on the cam [m] at the law's ``dh`` [m/rad]
+        (a flat face's edge loading and its tappet's side pressure), or None where no face slides on the cam."""
+        return None
+
+    def side_force(self, force, heel, h, dh) -> np.ndarray | None:
+        """The side force on the follower's carrier under the cam force ``force`` [N] at the law's ``h`` [m],
+        ``dh`` [m/rad] on the heel circle ``heel`` [m], or None where none is reported (a flat face: its offset
+        loads its guide, :meth:`face_offset`)."""
+        return None
+
+    def loads(self, force, heel, h, dh) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
+        """The loads of a follower that is a lever (its bearing's, its pivot's, its bending moment) under the force
+        ``force`` [N] at the valve, or None: a translating follower is no lever
+        (:meth:`~valvetrain.followers.PivotedFollower.loads`)."""
+        return None
+
     def geometry_problem(self, heel, lift) -> tuple[str, str, str, str] | None:
         """What makes the follower's geometry unworkable on the heel circle ``heel`` [m] up to the lift ``lift`` [m]
         (the key within the cam section, its value, the message and its joiner), or None: a translating follower
@@ -264,7 +281,7 @@ class Follower:
         extremes (``cam`` is the law stage's ``CamResult``: ``min_acceleration``, ``max_acceleration``)."""
         return cam.min_acceleration, cam.max_acceleration
 
-    def kinematics(self, heel, lift):
+    def kinematics(self, heel, lift) -> None:
         """The record of the follower's linkage over the lift (heel circle ``heel``, lift ``lift`` [m]), or None for a
         follower without one (a finger's: :meth:`~valvetrain.followers.PivotedFollower.kinematics`)."""
         return None

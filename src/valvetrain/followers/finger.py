@@ -331,6 +331,10 @@ class PivotedFollower(RollerFollower):
         """L_r psi'' [m/rad^2]: the roller centre's acceleration along its arc per camshaft angle squared."""
         return self.roller_arm * self.angle_derivatives(heel, h, dh, d2h)[2]
 
+    def side_force(self, force, heel, h, dh) -> None:
+        """None: a finger has no guide, its pivot carries the side load."""
+        return None
+
     def acceleration_range(self, cam, samples=4001) -> tuple[float, float]:
         """The smallest and largest acceleration of the roller centre on its arc at the rated speed [m/s^2]: omega^2
         :meth:`travel_acceleration` over ``samples`` angles of the event of the law stage's ``CamResult`` ``cam``

@@ -53,6 +53,10 @@ class FlatFollower(Follower):
         per radian, Shang Hanji (1988), eq. 2.15)."""
         return FlatContact(max_offset)
 
+    def face_offset(self, dh) -> np.ndarray:
+        """|h'| [m]: the contact point's distance from the face's axis (Shang Hanji (1988), eq. 2.15)."""
+        return np.abs(dh)
+
     def contact_offset(self, dh) -> float | np.ndarray:
         """h' [m]: the contact point's distance from the axis (Shang Hanji (1988), eq. 2.15)."""
         return dh

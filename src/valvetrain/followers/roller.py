@@ -10,7 +10,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .. import geometry, tribology
+from .. import geometry, strength, tribology
 from ..checks import Check, check
 from ..numerics import extremum, invert_angle
 from ..results import quantity
@@ -90,6 +90,10 @@ class RollerFollower(Follower):
         """The largest pressure angle of the contact record against :data:`PRESSURE_ANGLE_MAX`."""
         return [check("profile.pressure_angle.max", contact.max_pressure_angle, high=PRESSURE_ANGLE_MAX,
                       source="UkrSURT Proceedings (2019)", unit="deg")]
+
+    def side_force(self, force, heel, h, dh) -> np.ndarray:
+        """P_T tan(beta) [N] at the pressure angle beta (:func:`valvetrain.strength.roller_side_force`)."""
+        return strength.roller_side_force(force, self.pressure_angle(heel, h, dh))
 
     def rolling_losses(self, u_follower, slip, resistance) -> tuple[np.ndarray, float, np.ndarray]:
         """The roller's surface lags the cam's by the share ``slip``; it rolls at that velocity with the rolling
