@@ -48,6 +48,12 @@ Write one module in this package with a subclass of :class:`Follower` decorated 
   :meth:`kinematics`            the record of a linkage over the lift (a finger's), or None
   :meth:`geometry_problem`      what makes a linkage unworkable for a lift, or None
   :meth:`rolling_losses`        a roller's slip and rolling resistance in the friction torque
+  :meth:`face_offset`           a sliding face's contact offset (edge loading, the tappet's side pressure), or None
+  :meth:`side_force`            a roller's side force on its carrier, or None
+  :meth:`loads`                 a lever's loads (bearing, pivot, bending moment), or None
+  :meth:`heel_valve_arm`        a lever's own valve arm on the heel circle (and :meth:`valve_arms` over the lift)
+  :meth:`variable_mass`         what its inertia adds by a varying ratio (and :meth:`variable_inertia_force`)
+  :meth:`pivot_linkage`         the linkage of a lash adjuster at its own pivot, or None
   ============================  =======================================================================
 
   A follower whose lever ratio varies with the lift may return it from :meth:`ratio`; ``LiftLaw.valve_lift``
@@ -263,6 +269,33 @@ class Follower:
         """The loads of a follower that is a lever (its bearing's, its pivot's, its bending moment) under the force
         ``force`` [N] at the valve, or None: a translating follower is no lever
         (:meth:`~valvetrain.followers.PivotedFollower.loads`)."""
+        return None
+
+    def heel_valve_arm(self, heel) -> float | None:
+        """The valve-side arm of the follower's own lever on the heel circle ``heel`` [m] (a finger's G(psi_0)), or
+        None: a translating follower has none (the layout's ``[drive] valve_arm_mm`` is the rocker's)."""
+        return None
+
+    def valve_arms(self, lift, heel) -> np.ndarray | None:
+        """That arm at the valve lifts ``lift`` [m] on the heel circle ``heel`` [m], or None (no lever of its own)."""
+        return None
+
+    def variable_inertia_force(self, inertia, arm0, heel, h, dh, d2h) -> np.ndarray:
+        """What the follower's own inertia ``inertia`` [kg m^2] adds by a lever ratio that varies with the lift to the
+        train's m_v h'' at its ratio on the heel circle (arm ``arm0`` [m]), per camshaft speed squared [N s^2/rad^2]:
+        zero for a follower of constant ratio (the law's lifts ``h`` [m], ``dh`` [m/rad], ``d2h`` [m/rad^2] on the
+        heel circle ``heel`` [m])."""
+        return np.zeros_like(d2h)
+
+    def variable_mass(self, inertia, arm0, heel, h) -> np.ndarray:
+        """What that inertia adds to the train's mass at the valve by its varying ratio [kg] at the lifts ``h`` [m]:
+        zero for a follower of constant ratio."""
+        return np.zeros_like(h)
+
+    def pivot_linkage(self, heel, axis_angle=None) -> tuple | None:
+        """The arguments of :func:`valvetrain.lash_adjuster.pivot_motion_ratio` for a lash adjuster at the follower's
+        own pivot on the heel circle ``heel`` [m], its axis at ``axis_angle`` [rad] (None: the valve's), or None: a
+        follower without a pivot of its own (the lever ratio decides, :func:`valvetrain.lash_adjuster.motion_ratio`)."""
         return None
 
     def geometry_problem(self, heel, lift) -> tuple[str, str, str, str] | None:

@@ -331,6 +331,30 @@ class PivotedFollower(RollerFollower):
         """L_r psi'' [m/rad^2]: the roller centre's acceleration along its arc per camshaft angle squared."""
         return self.roller_arm * self.angle_derivatives(heel, h, dh, d2h)[2]
 
+    def heel_valve_arm(self, heel) -> float:
+        """G(psi_0) [m]: :meth:`valve_arm` with the roller on the heel circle ``heel`` [m]."""
+        return float(self.valve_arm(np.array(self.base_angle(heel))))
+
+    def valve_arms(self, lift, heel) -> np.ndarray:
+        """G(psi) [m] at the valve lifts ``lift`` [m] on the heel circle ``heel`` [m]."""
+        return self.valve_arm(self.angle_of(lift, heel))
+
+    def variable_inertia_force(self, inertia, arm0, heel, h, dh, d2h) -> np.ndarray:
+        """J psi'' / G - J h'' / G_0^2 (:meth:`inertia_force`; the train counts J / G_0^2, ``arm0`` = G_0 [m])."""
+        return self.inertia_force(inertia, heel, h, dh, d2h) - inertia / arm0 ** 2 * d2h
+
+    def variable_mass(self, inertia, arm0, heel, h) -> np.ndarray:
+        """J / G(psi)^2 - J / G_0^2 [kg] (:meth:`reduced_inertia`; ``arm0`` = G_0 [m])."""
+        return self.reduced_inertia(inertia, heel, h) - inertia / arm0 ** 2
+
+    def pivot_linkage(self, heel, axis_angle=None) -> tuple:
+        """(pivot, roller centre, G(psi_0), L_r, valve angle, adjuster axis) on the heel circle ``heel`` [m], the axis
+        ``axis_angle`` [rad] or else the valve's."""
+        psi = self.base_angle(heel)
+        axis = self.valve_angle if axis_angle is None else axis_angle
+        return (np.array([self.pivot_x, self.pivot_y]), self.centre(psi), float(self.valve_arm(psi)), self.roller_arm,
+                self.valve_angle, axis)
+
     def side_force(self, force, heel, h, dh) -> None:
         """None: a finger has no guide, its pivot carries the side load."""
         return None
