@@ -4,7 +4,7 @@ not given collected as the strength stage collects them."""
 from valvetrain.links import Loads
 
 
-def loads(parts=None, guide_offset=None, cam_force=1000.0, valve_force=600.0, modulus=2.1e11):
+def loads(parts=None, guide_offset=None, cam_force=1000.0, valve_force=600.0, modulus=2.1e11, rocker_ratio=1.6):
     """Loads on ``parts`` (keys as attributes, SI), and the notes of the keys not given, collected as the strength
     stage does."""
     notes = []
@@ -15,4 +15,4 @@ def loads(parts=None, guide_offset=None, cam_force=1000.0, valve_force=600.0, mo
             notes.append(f"{name}: not checked")
         return not missing
 
-    return Loads(parts, cam_force, valve_force, modulus, (), guide_offset, need), notes
+    return Loads(parts, cam_force, valve_force, modulus, rocker_ratio, (), guide_offset, need), notes

@@ -31,7 +31,7 @@ class Layout:
     parts : tuple of str
         The names of the links between cam and valve in order from the cam (:data:`valvetrain.links.REGISTRY`):
         ``"tappet"`` (in a guide, under the cam), ``"pushrod"``, ``"rocker"`` (on its shaft, the valve arm at the
-        valve).
+        valve), ``"rocker_pivot"`` (the pivot ball of a stud-mounted rocker, where its keys are given).
     """
 
     name: str
@@ -49,11 +49,11 @@ class Layout:
     @property
     def train_masses(self) -> tuple[str, ...]:
         """The ``[drive.masses]`` keys of the links a multi-mass train of this layout needs, from the cam."""
-        return tuple(link.mass_key for link in self.links)
+        return tuple(link.mass_key for link in self.links if link.mass_key is not None)
 
 
 LAYOUTS = {"direct": Layout("direct", ("tappet",)), "rocker": Layout("rocker", ("rocker",)),
-           "pushrod": Layout("pushrod", ("tappet", "pushrod", "rocker"))}
+           "pushrod": Layout("pushrod", ("tappet", "pushrod", "rocker", "rocker_pivot"))}
 """Drive layouts by name (``[valves.NAME.drive] layout``), see the module's text."""
 
 

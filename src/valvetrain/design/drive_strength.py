@@ -392,7 +392,7 @@ def _strength(valve, cam, theta, maps, p_open, valve_load):
             verdicts.append(strength.verdict("cam_contact_stress", stress.value,
                                              _where(stress) + note("strength.along_profile")))
     face = follower.face_offset(cam.law.derivatives(theta)[1])
-    loads = Loads(parts, p_max, valve_load.value / i_k, e_contact, at_load,
+    loads = Loads(parts, p_max, valve_load.value / i_k, e_contact, i_k, at_load,
                   None if face is None else float(np.max(face)), need)
     for link in drive.links:
         verdicts += link.checks(loads)

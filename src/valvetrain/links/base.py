@@ -43,6 +43,8 @@ class Loads:
         The largest force at the valve [N].
     modulus : float
         The contact modulus of the parts [Pa].
+    rocker_ratio : float
+        The rocker ratio i_k = l_v / l_t (1 without a rocker).
     where : tuple
         The note (:func:`valvetrain.locale.note`) of where (camshaft angle) and at which speed the cam force is
         largest, which each check's note starts with.
@@ -58,6 +60,7 @@ class Loads:
     cam_force: float
     valve_force: float
     modulus: float
+    rocker_ratio: float
     where: tuple
     guide_offset: Optional[float]
     need: Callable[[list[str], str], bool]
@@ -70,15 +73,16 @@ class Link:
     ----------------
     name : str
         Its name in a layout's chain (:data:`valvetrain.layouts.LAYOUTS`).
-    mass_key : str
-        The ``[drive.masses]`` key of its mass (or inertia) in a multi-mass train.
+    mass_key : str or None
+        The ``[drive.masses]`` key of its mass (or inertia) in a multi-mass train; None for a link that does not
+        move (a rocker's pivot).
     carrier : str
         The note code (:mod:`valvetrain.locale`) of the link as the carrier of a roller's side force, where it is
         the first link from the cam.
     """
 
     name: ClassVar[str]
-    mass_key: ClassVar[str]
+    mass_key: ClassVar[Optional[str]] = None
     carrier: ClassVar[str] = ""
 
     def checks(self, loads) -> list:
