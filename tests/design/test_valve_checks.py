@@ -8,6 +8,7 @@ import pytest
 
 from valvetrain.design import run
 from valvetrain.design.valve_checks import LAYOUT_BANDS, LAYOUTS
+from valvetrain.locale import note_text
 from valvetrain.specification import load_spec, validate
 
 from appendix import appendix_data, appendix_design as design
@@ -20,7 +21,8 @@ def test_every_layout_band_names_its_source_and_covers_the_layouts():
         assert set(bands) <= set(LAYOUTS), quantity
         for layout, band in bands.items():
             assert band.source and "SPEC" not in band.source, (quantity, layout)
-            assert "seed" not in band.note, (quantity, layout)     # notes are shown as they are
+            for lang in ("en", "ru"):     # notes are shown as the catalogue words them
+                assert "seed" not in note_text(band.note, lang), (quantity, layout)
 
 
 def test_a_rocker_layout_checks_the_rocker_ratio_even_at_one():
@@ -95,3 +97,21 @@ def test_a_valve_piston_gap_below_its_minimum_is_a_failure():
     for name in ("intake", "exhaust"):
         assert levels[f"{name}: valve-piston clearance"] == "failure"
         assert levels[f"{name}: valve-piston clearance over the overlap"] == "failure"
+
+
+def test_the_finger_tip_note_is_worded_with_the_report_s_numbers():
+    """The finger's pad check notes its stem (a default share of the throat, 0.2) and the pad's travel as codes: the
+    Russian report words them with decimal commas (before, the note was an English text translated by its skeleton,
+    which kept "0.2 диаметра горловины")."""
+    from types import SimpleNamespace
+
+    from valvetrain.design.valve_checks import tip_contact_check
+    from valvetrain.report.check_rows import check_note
+
+    finger = SimpleNamespace(tip_reach=0.4e-3, scrub=0.288e-3, tip_contact=(0.0, -0.0311e-3))
+    valve = SimpleNamespace(parts=SimpleNamespace(stem_diameter=None), throat_diameter=30e-3)
+    c = tip_contact_check(finger, valve)
+    assert c.note == ("stem 6 mm (0.2 x throat_diameter_mm, a default); the contact travels 0.288 mm across the tip "
+                      "(scrub), 0 mm off the axis shut, -0.0311 mm at full lift")
+    assert check_note(c, "ru").startswith("стержень 6 мм (0,2 диаметра горловины, по умолчанию); точка контакта "
+                                          "перемещается по торцу стержня на 0,288 мм")

@@ -13,6 +13,7 @@ from typing import Optional
 from .. import flow
 from ..checks import Check, check
 from ..layouts import LAYOUTS, layout
+from ..locale import note, note_text
 from ..units import DEG, MM
 
 
@@ -24,26 +25,27 @@ acceleration [m/s^2] (Valve-train practical works (n.d.), work 2)."""
 @dataclass(frozen=True)
 class Band:
     """A recommended range of one layout: bounds (SI, None open), its source and, where the source states it for
-    another layout, the note that says so."""
+    another layout, the note that says so (:func:`valvetrain.locale.note`'s parts)."""
 
     low: float = None
     high: float = None
     source: str = ""
-    note: str = ""
+    note: tuple = ()
 
 
-_FOR_DIRECT = ("the source states this band in work 2 for the shock-free cam, whose Kurz law it uses for direct drive "
-               "from an overhead camshaft; work 3 (the polydyne cam of a tappet, pushrod and rocker train) gives no band "
-               "of its own, so the same band is applied to the {layout} drive")
+_FOR_DIRECT = {"rocker": "band.acceleration_for_direct_rocker", "pushrod": "band.acceleration_for_direct_pushrod"}
+"""The note of the acceleration band of each layout but direct drive, for which the source states it."""
 _ACCELERATION_SOURCE = "Valve-train practical works (n.d.), work 2 ({sign} {band} m/s2)"
 
 LAYOUT_BANDS = {
     "tappet_acceleration.max": {
         layout: Band(high=ACCELERATION_LIMITS[0], source=_ACCELERATION_SOURCE.format(sign="positive", band="1500...3500"),
-                     note="" if layout == "direct" else _FOR_DIRECT.format(layout=layout)) for layout in LAYOUTS},
+                     note=() if layout == "direct" else note(_FOR_DIRECT[layout]))
+        for layout in LAYOUTS},
     "tappet_acceleration.min": {
         layout: Band(low=ACCELERATION_LIMITS[1], source=_ACCELERATION_SOURCE.format(sign="negative", band="500...1500"),
-                     note="" if layout == "direct" else _FOR_DIRECT.format(layout=layout)) for layout in LAYOUTS},
+                     note=() if layout == "direct" else note(_FOR_DIRECT[layout]))
+        for layout in LAYOUTS},
     "drive.rocker_ratio": {
         "rocker": Band(1.4, 1.75, "Valve-train practical works (n.d.), work 2 (i_k = 1 for direct drive, 1.4-1.75 with a rocker or lever)"),
         "pushrod": Band(1.4, 1.75, "Valve-train practical works (n.d.), work 2 (i_k = 1 for direct drive, 1.4-1.75 with a rocker or lever)"),
@@ -51,9 +53,7 @@ LAYOUT_BANDS = {
     "drive.specific_mass": {
         "direct": Band(200.0, 300.0, "Valve-train practical works (n.d.), work 5 (direct drive 200-300 kg/m2)"),
         "rocker": Band(200.0, 300.0, "Valve-train practical works (n.d.), work 5 (direct drive 200-300 kg/m2)",
-                       "the source gives 200-300 kg/m2 for direct drive and 400-500 kg/m2 for a tappet, pushrod and "
-                       "rocker train; an overhead-cam rocker train has no pushrod or tappet and is compared with the "
-                       "direct drive's band"),
+                       note("band.specific_mass_rocker")),
         "pushrod": Band(400.0, 500.0, "Valve-train practical works (n.d.), work 5 (tappet, pushrod and rocker 400-500 kg/m2)"),
     },
 }
@@ -70,15 +70,16 @@ def layout_check(code, value, layout, **kw) -> Optional[Check]:
     band = LAYOUT_BANDS[code].get(layout)
     if band is None:
         return None
-    return check(code, value, band.low, band.high, source=band.source, note=band.note, **kw)
+    return check(code, value, band.low, band.high, source=band.source, note=band.note or "", **kw)
 
 PETROL_BANDS = ("timing.opening_advance", "timing.closing_lag", "valve.seat_angle", "valve.clearance",
                 "drive.rocker_ratio")
 """The checks whose recommended bands are those of a petrol engine (Valve-train practical works (n.d.), works 1 and 2:
 the manual designs a petrol engine's valve train, its appendix a Kurz cam for one)."""
 
-OTHER_CLASS_NOTE = ("the band is a petrol engine's (Valve-train practical works (n.d.)) and the cited works give none "
-                    "for this engine class ({engine_class}): a remark, not a warning")
+PETROL_ONLY = {"automotive_diesel": "band.petrol_only_automotive_diesel", "heavy_duty": "band.petrol_only_heavy_duty"}
+"""The note of a petrol engine's band for an engine of another class (``[engine] engine_class``): the cited works
+give none for it, the check a remark."""
 
 
 def engine_class(engine) -> str:
@@ -92,12 +93,12 @@ def engine_class(engine) -> str:
 def for_engine_class(checks, engine) -> list[Check]:
     """The checks with the petrol engine's bands (:data:`PETROL_BANDS`) made remarks (info) with a note where the
     engine is of another class: a rocker ratio of 1 or a 40 crank deg advance of a locomotive diesel is no warning
-    against a petrol engine's band."""
+    against a petrol engine's band.  (These checks' own notes are codes or empty: the remark joins their parts.)"""
     cls = engine_class(engine)
     if cls == "automotive_petrol":
         return checks
-    note = OTHER_CLASS_NOTE.format(engine_class=cls.replace("_", " "))
-    return [replace(c, severity="info", note="; ".join(filter(None, (c.note, note))))
+    remark = note(PETROL_ONLY[cls])
+    return [replace(c, severity="info", note=note_text(c.note_parts + remark), note_parts=c.note_parts + remark)
             if c.code in PETROL_BANDS and c.severity == "warning" else c for c in checks]
 
 
@@ -168,24 +169,25 @@ def tip_contact_check(finger, valve) -> Check:
     """
     given = valve.parts.stem_diameter
     stem = given if given is not None else STEM_TO_THROAT * valve.throat_diameter
-    where = "parts.stem_diameter_mm" if given is not None else f"{STEM_TO_THROAT:g} x throat_diameter_mm, a default"
+    where = (note("finger.stem_given", stem_mm=stem / MM) if given is not None else
+             note("finger.stem_default", stem_mm=stem / MM, share=STEM_TO_THROAT))
     return check("finger.tip_contact", finger.tip_reach, high=max(stem / 2.0 - TIP_EDGE_MARGIN, 0.0), unit="mm",
                  severity="failure", source="the valve tip's radius (half the stem) less 0.5 mm: an engineering limit; "
                  "the contact's travel: Wang (2007)",
-                 note=f"stem {stem / MM:.4g} mm ({where}); the contact travels {finger.scrub / MM:.3g} mm across the "
-                 f"tip (scrub), {finger.tip_contact[0] / MM:.3g} mm off the axis shut, "
-                 f"{finger.tip_contact[1] / MM:.3g} mm at full lift")
+                 note=where + note("finger.tip_travel", scrub_mm=finger.scrub / MM, shut_mm=finger.tip_contact[0] / MM,
+                                   open_mm=finger.tip_contact[1] / MM))
 
 
 def clearance_check(kind, gap, angle, window=None) -> Check:
     """The check of a valve-to-piston gap [m] at a crank angle [rad] against :data:`PISTON_CLEARANCE_MIN`, over the
     open event or, with ``window`` (crank rad from the gas-exchange TDC), over the valve overlap.  A gap below the
     minimum is a failure: the valve may touch the piston at over-speed, with lash or with valve float."""
-    where = "" if window is None else (f" over the overlap from {math.degrees(window[0]):.4g} to "
-                                       f"{math.degrees(window[1]):.4g} crank deg")
+    said = (note("piston.smallest_at", crank_deg=math.degrees(angle)) if window is None else
+            note("piston.smallest_at_overlap", crank_deg=math.degrees(angle), from_deg=math.degrees(window[0]),
+                 to_deg=math.degrees(window[1])))
     return check("piston.clearance" if window is None else "piston.clearance_overlap", gap,
                  low=PISTON_CLEARANCE_MIN[kind], unit="mm", source=PISTON_CLEARANCE_SOURCE, severity="failure",
-                 note=f"smallest at {math.degrees(angle):.4g} crank deg from the gas-exchange TDC{where}")
+                 note=said)
 
 
 def overlap_clearance_checks(valves) -> list[Check]:
@@ -232,7 +234,7 @@ def valve_checks(cam, flow_result, profile, valve, engine, timing) -> list[Check
     if law.clearance_on_flank:
         out.append(check("seating_velocity.without_ramp", cam.seating_velocity,
                          high=SEATING_VELOCITY_MAX, source=SEATING_VELOCITY_SOURCE, unit="m/s",
-                         note=f"no ramp takes up clearance_mm = {valve.clearance / MM:g}: the flank does"))
+                         note=note("valve.ramp_not_clearance", clearance_mm=valve.clearance / MM)))
     out.append(check("valve.seat_angle", valve.seat_angle, *SEAT_ANGLE_USUAL[valve.kind],
                      source="Valve-train practical works (n.d.), work 1 (usually 30 deg inlet, 45 deg exhaust)", unit="deg", severity="info"))
     if valve.lash_adjuster is None:  # a hydraulic lash adjuster leaves no clearance (validated: clearance_mm = 0)
