@@ -29,7 +29,8 @@ from valvetrain.design.dynamics_records import speed_record, speed_records
 from valvetrain.dynamics.perturbation import perturbation_parameter
 from valvetrain.design.drive import drive_stage, spring_options
 from valvetrain.design.drive_strength import strength_stage
-from valvetrain.design.valve import design_valve, flow_stage, law_stage, profile_stage, valve_checks
+from valvetrain.design.valve import design_valve, flow_stage, law_stage, profile_stage
+from valvetrain.design.valve_checks import valve_checks
 from valvetrain.layouts import train_mass
 from valvetrain.specification import example_spec, load_spec, si
 

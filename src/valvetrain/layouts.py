@@ -17,19 +17,21 @@ import numpy as np
 
 from . import flow, masses
 from .followers import follower_of
+from .links import REGISTRY as LINKS
 
 
 @dataclass(frozen=True)
 class Layout:
-    """A drive layout: its name and the chain of parts from the cam to the valve.
+    """A drive layout: its name and the chain of links from the contact to the valve.
 
     Attributes
     ----------
     name : str
         The ``[valves.NAME.drive] layout`` value.
     parts : tuple of str
-        The moving parts between cam and valve in order from the cam: ``"tappet"`` (in a guide, under the cam),
-        ``"pushrod"``, ``"rocker"`` (on its shaft, the valve arm at the valve).
+        The names of the links between cam and valve in order from the cam (:data:`valvetrain.links.REGISTRY`):
+        ``"tappet"`` (in a guide, under the cam), ``"pushrod"``, ``"rocker"`` (on its shaft, the valve arm at the
+        valve), ``"rocker_pivot"`` (the pivot ball of a stud-mounted rocker, where its keys are given).
     """
 
     name: str
@@ -40,14 +42,18 @@ class Layout:
     rocker = property(lambda self: "rocker" in self.parts)
 
     @property
+    def links(self) -> tuple:
+        """The :class:`~valvetrain.links.Link` objects of the chain, from the cam."""
+        return tuple(LINKS[p] for p in self.parts)
+
+    @property
     def train_masses(self) -> tuple[str, ...]:
-        """The ``[drive.masses]`` keys of the parts a multi-mass train of this layout needs, from the cam."""
-        return tuple({"tappet": "tappet_kg", "pushrod": "pushrod_kg", "rocker": "rocker_inertia_kg_mm2"}[p]
-                     for p in self.parts)
+        """The ``[drive.masses]`` keys of the links a multi-mass train of this layout needs, from the cam."""
+        return tuple(link.mass_key for link in self.links if link.mass_key is not None)
 
 
 LAYOUTS = {"direct": Layout("direct", ("tappet",)), "rocker": Layout("rocker", ("rocker",)),
-           "pushrod": Layout("pushrod", ("tappet", "pushrod", "rocker"))}
+           "pushrod": Layout("pushrod", ("tappet", "pushrod", "rocker", "rocker_pivot"))}
 """Drive layouts by name (``[valves.NAME.drive] layout``), see the module's text."""
 
 
@@ -67,10 +73,8 @@ def valve_arm(valve) -> Optional[float]:
     """The valve-side arm that reduces the rocker's inertia to the valve [m] (SI view): ``[drive] valve_arm_mm``, or
     a finger's effective arm G(psi_0) = dv/dpsi with its roller on the heel circle r0 - clearance, from its geometry
     (:meth:`~valvetrain.followers.PivotedFollower.valve_arm`; None where neither applies)."""
-    follower = follower_of(valve.cam)
-    if follower.law_at_valve:
-        return float(follower.valve_arm(np.array(follower.base_angle(valve.cam.base_radius - valve.clearance))))
-    return valve.drive.valve_arm
+    arm = follower_of(valve.cam).heel_valve_arm(valve.cam.base_radius - valve.clearance)
+    return valve.drive.valve_arm if arm is None else arm
 
 
 def train_mass(valve, spring_mass) -> tuple[float, str]:
@@ -83,13 +87,10 @@ def train_mass(valve, spring_mass) -> tuple[float, str]:
                                spring_mass=spring_mass)
 
 
-def _finger(valve):
-    """(follower, J [kg m^2]) of a valve's finger of given inertia (SI view), or None for another follower or without
-    the finger's inertia."""
-    follower, parts = follower_of(valve.cam), valve.drive.masses
-    if not follower.law_at_valve or parts is None or parts.rocker_inertia == 0.0:
-        return None
-    return follower, parts.rocker_inertia
+def _inertia(valve) -> float:
+    """J [kg m^2] of the valve's rocker or finger (SI view): ``[drive.masses] rocker_inertia_kg_mm2``, 0 not given."""
+    parts = valve.drive.masses
+    return 0.0 if parts is None else parts.rocker_inertia
 
 
 def finger_inertia(valve, law, theta) -> np.ndarray:
@@ -104,11 +105,10 @@ def finger_inertia_force(valve, heel, h, dh, d2h) -> np.ndarray:
     """:func:`finger_inertia` at the valve lifts ``h`` [m], ``dh`` [m/rad], ``d2h`` [m/rad^2] of a law on the heel
     circle ``heel`` [m]: J psi'' / G - J h'' / G_0^2 (:meth:`~valvetrain.followers.PivotedFollower.inertia_force`;
     Norton (2009)); zero for another follower or without the finger's inertia."""
-    found = _finger(valve)
-    if found is None:
+    inertia = _inertia(valve)
+    if inertia == 0.0:
         return np.zeros_like(d2h)
-    follower, inertia = found
-    return follower.inertia_force(inertia, heel, h, dh, d2h) - inertia / valve_arm(valve) ** 2 * d2h
+    return follower_of(valve.cam).variable_inertia_force(inertia, valve_arm(valve), heel, h, dh, d2h)
 
 
 def finger_mass_change(valve, law, theta) -> np.ndarray:
@@ -116,10 +116,7 @@ def finger_mass_change(valve, law, theta) -> np.ndarray:
     ``theta`` [rad from the nose] of the lift law ``law`` (SI view of the valve): J / G(psi)^2 - J / G_0^2
     (:meth:`~valvetrain.followers.PivotedFollower.reduced_inertia`; :func:`train_mass` counts J / G_0^2; Norton
     (2009)), on the heel circle r0 - the ramp height; zero for another follower or without the finger's inertia."""
-    h = law.lift(theta)
-    found = _finger(valve)
-    if found is None:
+    h, inertia = law.lift(theta), _inertia(valve)
+    if inertia == 0.0:
         return np.zeros_like(h)
-    follower, inertia = found
-    heel = valve.cam.base_radius - law.ramp_height
-    return follower.reduced_inertia(inertia, heel, h) - inertia / valve_arm(valve) ** 2
+    return follower_of(valve.cam).variable_mass(inertia, valve_arm(valve), valve.cam.base_radius - law.ramp_height, h)

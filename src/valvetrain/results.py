@@ -107,7 +107,7 @@ def shown(result: Any, *names: str, nested: bool = True) -> list[tuple[str, Any]
     :func:`record`).  ``nested`` False leaves out the fields whose value is a record of its own (a nested result,
     named values, a mapping), which results.json shows as an object: the rows of a table of numbers.
 
-    >>> from valvetrain.design.valve import FlatContact
+    >>> from valvetrain.followers.flat import FlatContact
     >>> shown(FlatContact(0.0125), "max_contact_offset")
     [('max_contact_offset_mm', 12.5)]
     """

@@ -22,6 +22,8 @@ LIMITS = {
     "ball_socket_stress": (2000e6, "max", "MPa", "Valve-train practical works (n.d.), eqs. (7.11), (7.14): <= 2000 MPa"),
     "pushrod_head_pressure": (100e6, "max", "MPa", "Valve-train practical works (n.d.), eq. (7.12): <= 80-100 MPa"),
     "rocker_pad_stress": (2000e6, "max", "MPa", "Valve-train practical works (n.d.), eq. (7.13): <= 2000 MPa"),
+    "rocker_pivot_stress": (2000e6, "max", "MPa", "Valve-train practical works (n.d.), eqs. (7.11), (7.14): <= 2000 MPa "
+                            "for a convex sphere in a concave socket, taken for the pivot ball of a stud-mounted rocker"),
     "rocker_shaft_bending": (150e6, "max", "MPa", "Valve-train practical works (n.d.), eq. (7.15): <= 150 MPa"),
     "rocker_shaft_shear": (90e6, "max", "MPa", "Valve-train practical works (n.d.), eq. (7.17): <= 90 MPa"),
     "rocker_shaft_bearing": (80e6, "max", "MPa", "Valve-train practical works (n.d.), eq. (7.18): <= 80 MPa"),

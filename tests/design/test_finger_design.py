@@ -294,3 +294,11 @@ def test_the_finger_s_bending_stress_by_hand(design):
     bare = run(parse_spec(text)).valves["intake"].drive.strength
     assert bare.finger.bending_stress_max is None
     assert "finger_bending: not checked, parts.finger_section_height_mm not given" in bare.not_checked
+
+
+def test_a_finger_has_no_flat_face_to_edge_load(design):
+    """A finger touches the cam with its roller: no note asks for a flat follower's face diameter (before, the
+    strength stage sent every follower but a tappet's roller to the flat face's edge loading, and the finger's
+    record said flat_follower_edge_loading was not checked for want of parts.tappet_face_diameter_mm)."""
+    notes = design.to_dict()["valves"]["intake"]["strength"]["not_checked"]
+    assert notes and not any(n.startswith("flat_follower_edge_loading") for n in notes)

@@ -19,8 +19,8 @@ from valvetrain.design.camcard import CamCardValve
 
 from appendix import appendix_spec
 
-DESIGN_MODULES = ["valvetrain.design", "valvetrain.design.valve", "valvetrain.design.drive",
-                  "valvetrain.design.drive_strength", "valvetrain.design.crank",
+DESIGN_MODULES = ["valvetrain.design", "valvetrain.design.valve", "valvetrain.design.valve_checks",
+                  "valvetrain.design.drive", "valvetrain.design.drive_strength", "valvetrain.design.crank",
                   "valvetrain.design.twostroke", "valvetrain.design.dynamics", "valvetrain.design.dynamics_records",
                   "valvetrain.design.dynamics_checks", "valvetrain.design.grinding",
                   "valvetrain.design.hydraulic_actuation", "valvetrain.design.results",

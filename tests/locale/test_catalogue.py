@@ -14,7 +14,7 @@ import pytest
 from valvetrain import checks, locale, strength
 from valvetrain.checks import apply_acceptances, check
 from valvetrain.design import run
-from valvetrain.design.valve import LAYOUT_BANDS
+from valvetrain.design.valve_checks import LAYOUT_BANDS
 from valvetrain.locale import LANGS, catalogue, code_of, codes, note, parameters
 from valvetrain.report.html import WARNING_SYMBOLS
 from valvetrain.report.names import quantity_text

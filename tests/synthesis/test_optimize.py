@@ -156,7 +156,7 @@ def test_the_final_checks_are_run_s_limits():
     with its intake 1 mm from the piston at the closest (its gap at TDC lowered from 15 to 10.324 mm; 5.676 mm at 15 mm
     by its own design): the final checks hold run's own clearance check, failed, once; the separation constraint is
     a failure as run's."""
-    from valvetrain.design.valve import PISTON_CLEARANCE_MIN
+    from valvetrain.design.valve_checks import PISTON_CLEARANCE_MIN
     from valvetrain.synthesis.constraints import no_jump
     from valvetrain.synthesis.optimize import final_checks
 

@@ -76,9 +76,9 @@ from .phaser import PhaserRecord, PhaserResults, phaser_stage
 from .switching import SwitchingRecord, SwitchingResult, switching_stage
 from .results import json_schema, quantity, record, shown_value
 from .twostroke import TwoStrokeResults, TwoStrokeSummary, two_stroke_stage
-from .valve import (THROAT_AREA_SHARE_RANGE, CamResult, ClearanceResult, FlowResult, ProfileResult, ValveDesign,
-                    clearance_stage, design_valve, flow_stage, kinematic_stages, law_stage, overlap_clearance_checks,
-                    profile_stage, valve_checks, with_gas_load, with_hydraulic)
+from .valve import (CamResult, ClearanceResult, FlowResult, ProfileResult, ValveDesign, clearance_stage, design_valve,
+                    flow_stage, kinematic_stages, law_stage, profile_stage, with_gas_load, with_hydraulic)
+from .valve_checks import THROAT_AREA_SHARE_RANGE, overlap_clearance_checks, valve_checks
 
 __all__ = ["DesignResults", "ValveDesign", "breathing_view", "clearance_stage", "design_valve", "flow_stage", "law_stage",
            "profile_stage", "run", "sweep_designs", "valve_checks", "valve_kinematics"]

@@ -22,7 +22,6 @@ from ..locale.wording import diagnosis_text
 from ..spring_materials import grade
 from ..units import to_display
 from .drive_strength import StrengthResult, strength_record
-from .drive_strength import strength_speed_range, strength_stage  # noqa: F401 (design/valve.py imports them from here)
 from .results import quantity, record
 
 

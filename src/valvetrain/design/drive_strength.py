@@ -18,6 +18,7 @@ from .. import flow, strength
 from ..checks import Check, check
 from ..locale import note
 from ..layouts import chain, finger_inertia
+from ..links import Loads
 from ..numerics import TIE_RTOL, first_largest
 from ..specification.si import si_name
 from ..units import to_display
@@ -298,8 +299,9 @@ def strength_stage(valve, gas, engine, cam, drive, dynamics=None) -> tuple[Stren
             m.force[:, first_largest(-np.abs(m.theta - law.valve_opens), atol=TIE_RTOL * np.pi)] += \
                 cam.rocker_ratio * p_open
     result, checks = _strength(valve, cam, theta, contact_loads(cam, maps), p_open, _worst(maps, [m.force for m in maps]))
-    if cam.follower_model.law_at_valve:
-        finger, bending = finger_bending(valve.parts, *finger_loads(cam, maps))
+    lever = finger_loads(cam, maps)
+    if lever is not None:
+        finger, bending = finger_bending(valve.parts, *lever)
         result = replace(result, finger=finger, checks=result.checks + bending[0], not_checked=result.not_checked
                          + bending[1])
     result = replace(result, speed_range=(float(low), float(high)), lowest_speed_source=source,
@@ -321,14 +323,17 @@ def _where(w, which=0, **params):
                 **params)
 
 
-def finger_loads(cam, maps) -> tuple[FingerLoads, Worst]:
+def finger_loads(cam, maps) -> Optional[tuple[FingerLoads, Worst]]:
     """The :class:`FingerLoads` of a finger under the force at the valve of the load maps (before
-    :func:`contact_loads`), at their worst, and where its bending moment is largest (:class:`Worst`)."""
+    :func:`contact_loads`), at their worst, and where its bending moment is largest (:class:`Worst`); None for a
+    follower that is no lever (:meth:`~valvetrain.followers.Follower.loads`)."""
     follower, heel = cam.follower_model, cam.heel_radius
     found = []
     for m in maps:
         h, dh = cam.law.derivatives(m.theta)[:2]
         found.append(follower.loads(m.force, heel, h, dh))
+    if found[0] is None:
+        return None
     return (FingerLoads(*(max(float(np.max(f[k])) for f in found) for k in range(3))),
             _worst(maps, [f[2] for f in found]))
 
@@ -386,39 +391,13 @@ def _strength(valve, cam, theta, maps, p_open, valve_load):
             stress = _worst(maps, stresses)
             verdicts.append(strength.verdict("cam_contact_stress", stress.value,
                                              _where(stress) + note("strength.along_profile")))
-    if drive.tappet and not follower.rolling and \
-            need(["tappet_diameter_mm", "tappet_guide_length_mm"], "tappet_side_pressure"):
-        b = float(np.max(np.abs(cam.law.derivatives(theta)[1])))
-        q = strength.tappet_side_pressure(p_max, b, parts.tappet_diameter, parts.tappet_guide_length)
-        verdicts.append(strength.verdict("tappet_side_pressure", q, at_load + note(
-            "strength.tappet_offset", offset_mm=to_display(b, "mm"))))
-    if drive.pushrod:
-        if need(["pushrod_length_mm", "pushrod_diameter_mm"], "pushrod_buckling_margin"):
-            inertia = strength.second_moment(parts.pushrod_diameter, parts.pushrod_bore)
-            p_cr = strength.euler_load(parts.pushrod_modulus, inertia, parts.pushrod_length)
-            verdicts.append(strength.verdict("pushrod_buckling_margin", p_cr / p_max, at_load + note(
-                "strength.euler_load", load_N=p_cr, modulus_MPa=to_display(parts.pushrod_modulus, "MPa"))))
-        if need(["ball_radius_mm", "socket_radius_mm"], "ball_socket_stress"):
-            verdicts.append(strength.verdict("ball_socket_stress", strength.sphere_socket_stress(
-                p_max, e_contact, parts.ball_radius, parts.socket_radius), at_load))
-        if need(["pushrod_head_area_mm2"], "pushrod_head_pressure"):
-            verdicts.append(strength.verdict("pushrod_head_pressure", p_max / parts.pushrod_head_area, at_load))
-    if drive.rocker:
-        if need(["rocker_pad_width_mm", "rocker_pad_radius_mm"], "rocker_pad_stress"):
-            verdicts.append(strength.verdict("rocker_pad_stress", strength.rocker_pad_stress(
-                valve_load.value / i_k, e_contact, parts.rocker_pad_width, parts.rocker_pad_radius), at_load))
-        if need(["rocker_shaft_span_mm", "rocker_shaft_diameter_mm", "rocker_width_mm"], "rocker_shaft"):
-            st = strength.rocker_shaft_stresses(p_max, parts.rocker_shaft_span, parts.rocker_width,
-                                                parts.rocker_shaft_diameter, parts.rocker_shaft_bore)
-            verdicts.append(strength.verdict("rocker_shaft_bending", st["bending"], at_load + note(
-                "strength.rocker_shaft_beam", simply_supported_MPa=to_display(st["bending_simply_supported"], "MPa"))))
-            verdicts.append(strength.verdict("rocker_shaft_shear", st["shear"], at_load))
-            verdicts.append(strength.verdict("rocker_shaft_bearing", st["bearing"], at_load))
-    side, found = None, []
-    if follower.rolling and not follower.law_at_valve:   # a finger has no guide: its pivot carries the side load
-        side, side_check = _roller_side_force(cam, follower, maps, drive)
-        found.append(side_check)
-    else:
+    face = follower.face_offset(cam.law.derivatives(theta)[1])
+    loads = Loads(parts, p_max, valve_load.value / i_k, e_contact, i_k, at_load,
+                  None if face is None else float(np.max(face)), need)
+    for link in drive.links:
+        verdicts += link.checks(loads)
+    side, found = _roller_side_force(cam, follower, maps, drive)
+    if face is not None:
         found += _edge_loading(parts, drive, cam, follower, maps, width, notes)
     return StrengthResult(
         (0.0, 0.0), "", load.value, load.angle, load.speed, valve_load.value / i_k, p_open,
@@ -474,14 +453,14 @@ def _edge_loading(parts, drive, cam, follower, maps, width, notes):
     """
     if parts.tappet_face_diameter is not None:
         face, key = parts.tappet_face_diameter, "strength.face_given"
-    elif drive.tappet and parts.tappet_diameter is not None:
-        face, key = parts.tappet_diameter, "strength.face_of_bucket"
+    elif drive.links[0].face_diameter(parts) is not None:
+        face, key = drive.links[0].face_diameter(parts), "strength.face_of_bucket"
     else:
         notes.append("flat_follower_edge_loading: not checked, parts.tappet_face_diameter_mm not given")
         return []
 
     def reach(m):
-        offset = np.abs(cam.law.derivatives(m.theta)[1])
+        offset = follower.face_offset(cam.law.derivatives(m.theta)[1])
         if width is None:
             return np.broadcast_to(offset, m.force.shape)
         curvature = follower.contact_curvature(cam.law.curvature(m.theta, cam.heel_radius, follower))
@@ -499,20 +478,19 @@ def _edge_loading(parts, drive, cam, follower, maps, width, notes):
 
 
 def _roller_side_force(cam, follower, maps, drive):
-    """The largest side force of a roller follower over the speeds, P_T tan(alpha): a :class:`Worst` and its (info)
-    record."""
-    def side(m):
-        h, dh = cam.law.derivatives(m.theta)[:2]
-        return strength.roller_side_force(m.force, follower.pressure_angle(cam.heel_radius, h, dh))
-
-    w = _worst(maps, [side(m) for m in maps])
+    """The largest side force of a roller follower over the speeds, P_T tan(alpha)
+    (:meth:`~valvetrain.followers.Follower.side_force`), carried by the layout's first link: a :class:`Worst` and
+    [its (info) record]; None and [] for a follower without one (a flat face, a finger on its pivot)."""
+    sides = [follower.side_force(m.force, cam.heel_radius, *cam.law.derivatives(m.theta)[:2]) for m in maps]
+    if sides[0] is None:
+        return None, []
+    w = _worst(maps, sides)
     h, dh = cam.law.derivatives(np.array([w.angle]))[:2]
     beta = abs(float(follower.pressure_angle(cam.heel_radius, h, dh)[0]))
-    carrier = "strength.carried_by_guide" if drive.tappet else "strength.carried_by_rocker"
-    return w, check(
+    return w, [check(
         "follower.roller_side_force", w.value, unit="N", severity="info",
         source=f"{NORTON} (pressure angle: side load F_n sin(alpha)); no source gives an allowable",
-        note=_where(w, 1, pressure_deg=to_display(beta, "deg")) + note(carrier))
+        note=_where(w, 1, pressure_deg=to_display(beta, "deg")) + note(drive.links[0].carrier))]
 
 
 def strength_limit(c) -> tuple[str, float]:

@@ -211,13 +211,12 @@ def adjuster_ratio(valve, law) -> float:
     """The lash adjuster's motion ratio: at the pivot of a finger given by its geometry, its linkage on the heel circle
     with the adjuster's axis (``axis_angle_deg``, default the valve's; :func:`valvetrain.lash_adjuster.pivot_motion_ratio`);
     else :func:`valvetrain.lash_adjuster.motion_ratio` with the :func:`lever_ratio`."""
-    la, follower = valve.lash_adjuster, follower_of(valve.cam)
-    if la.location != "pivot" or not follower.law_at_valve:
+    la = valve.lash_adjuster
+    linkage = None if la.location != "pivot" else follower_of(valve.cam).pivot_linkage(
+        valve.cam.base_radius - law.ramp_height, la.axis_angle)
+    if linkage is None:
         return hla.motion_ratio(la.location, lever_ratio(valve, law))
-    psi = follower.base_angle(valve.cam.base_radius - law.ramp_height)
-    axis = follower.valve_angle if la.axis_angle is None else la.axis_angle
-    return hla.pivot_motion_ratio(np.array([follower.pivot_x, follower.pivot_y]), follower.centre(psi),
-                                  float(follower.valve_arm(psi)), follower.roller_arm, follower.valve_angle, axis)
+    return hla.pivot_motion_ratio(*linkage)
 
 
 def adjuster_load(valve, law, drive, cam_speed: float, at: str) -> tuple[float, float]:
@@ -227,7 +226,7 @@ def adjuster_load(valve, law, drive, cam_speed: float, at: str) -> tuple[float, 
     F_s + p_s A, which would hold the valve open and leave the oil column uncompressed (no finite stiffness)."""
     la = valve.lash_adjuster
     ratio = adjuster_ratio(valve, law)
-    if ratio <= 0.0 and not follower_of(valve.cam).law_at_valve:
+    if ratio <= 0.0 and follower_of(valve.cam).pivot_linkage(valve.cam.base_radius - law.ramp_height) is None:
         raise SpecError([Problem(f"{at}.lash_adjuster.location", "needs a lever ratio > 1 (an end-pivot finger): "
                                  f"rocker_ratio x the follower's own = {lever_ratio(valve, law):.4g}", '"pivot"', " ")])
     if ratio <= 0.0:   # a finger's linkage along the adjuster's axis: its lever ratio alone does not decide
@@ -285,11 +284,10 @@ def inertia_arm(valve, law, drive) -> tuple[Optional[float], Optional[str]]:
     perturbation parameter); the integration takes its change over the lift (:func:`finger_mass`); the note gives
     its range.
     """
-    follower, parts = follower_of(valve.cam), valve.drive.masses
-    if not follower.law_at_valve:
+    parts = valve.drive.masses
+    arm = follower_of(valve.cam).valve_arms(drive.lift, valve.cam.base_radius - law.ramp_height)
+    if arm is None:
         return valve.drive.valve_arm, None
-    heel = valve.cam.base_radius - law.ramp_height
-    arm = follower.valve_arm(follower.angle_of(drive.lift, heel))
     at = int(np.argmax(drive.required_force))
     if parts is None or parts.rocker_inertia == 0.0:
         return float(arm[at]), None

@@ -136,10 +136,8 @@ def contact_map(lub, cam, width, modulus, theta, force, omega) -> dict[str, np.n
     if not np.all(follower.line_contact(rho)):
         raise UndercutError("the cam profile is undercut (no line contact)")
     u_cam, u_follower = follower.surface_velocities(omega, heel, h, dh, d2h, rho)
-    rolling_friction, rolling = 0.0, 0.0
-    if follower.rolling:
-        u_follower = (1.0 - lub.roller_slip) * u_follower
-        rolling_friction, rolling = lub.roller_rolling_friction, u_follower
+    u_follower, rolling_friction, rolling = follower.rolling_losses(u_follower, lub.roller_slip,
+                                                                    lub.roller_rolling_friction)
     curvature = follower.contact_curvature(rho)
     loaded = force > 0.0
     load = np.where(loaded, force, 1.0)

@@ -29,7 +29,8 @@ from .breathing import (BreathingResults, breathe_conditions, breathing_conditio
 from .camshaft import ANGLES, camshaft_torque, lobe_set
 from .crank import firing_angles
 from .results import quantity, record
-from .valve import PISTON_CLEARANCE_MIN, PISTON_CLEARANCE_SOURCE, clearance_stage
+from .valve import clearance_stage
+from .valve_checks import PISTON_CLEARANCE_MIN, PISTON_CLEARANCE_SOURCE
 
 OBJECTIVES = {"fired": "torque", "motored": "volumetric_efficiency"}
 """The figure the best phase maximises, by [breathing] mode: the indicated torque of a fired engine, the volumetric

@@ -20,16 +20,19 @@ from ..checks import Check, check, failed, ranked, tally
 from ..crank.kinematics import displacement
 from ..errors import InputError
 from ..followers import follower_of
+from ..followers.finger import FingerKinematics
+from ..followers.flat import FlatContact
+from ..followers.roller import RollerContact
 from ..laws import LiftLaw
 from ..laws.base import Extremes
 from ..laws.records import LawRecord
-from ..layouts import LAYOUTS, layout
 from ..numerics import extremum, first_largest
 from ..specification import SpecError
 from ..specification.messages import Problem
 from ..springs import NoSpringFits
-from ..units import DEG, MM, to_display
-from .drive import DriveResult, drive_record, drive_stage, strength_speed_range, strength_stage
+from ..units import MM, to_display
+from .drive import DriveResult, drive_record, drive_stage
+from .drive_strength import strength_speed_range, strength_stage
 from .dynamics import DynamicsResult, dynamics_stage, swept_range
 from .grinding import GrindingResult, grinding_stage
 from .hydraulic_actuation import HydraulicResult, hydraulic_stage
@@ -37,136 +40,11 @@ from .lost_motion import LostMotionResult, lost_motion_stage
 from .lash_adjuster import LashAdjusterResult, lash_adjuster_stage
 from .lubrication import LubricationResult, lubrication_stage
 from .results import NamedValues, quantity, record
+from .valve_checks import MAX_LIFT_TO_THROAT, clearance_check, mass_checks, valve_checks
 
 CYCLE_CRANK = np.radians(np.linspace(-360.0, 360.0, 2881))
 """Crank angles of :attr:`ValveDesign.cycle_lift` [rad from the gas-exchange TDC]: the four-stroke cycle, a quarter
 degree apart (the timing diagram's)."""
-
-ACCELERATION_LIMITS = (3500.0, -1500.0)
-"""Upper ends of the recommended bands of positive (1500-3500) and negative (500-1500) tappet
-acceleration [m/s^2] (Valve-train practical works (n.d.), work 2)."""
-
-
-@dataclass(frozen=True)
-class Band:
-    """A recommended range of one layout: bounds (SI, None open), its source and, where the source states it for
-    another layout, the note that says so."""
-
-    low: float = None
-    high: float = None
-    source: str = ""
-    note: str = ""
-
-
-_FOR_DIRECT = ("the source states this band in work 2 for the shock-free cam, whose Kurz law it uses for direct drive "
-               "from an overhead camshaft; work 3 (the polydyne cam of a tappet, pushrod and rocker train) gives no band "
-               "of its own, so the same band is applied to the {layout} drive")
-_ACCELERATION_SOURCE = "Valve-train practical works (n.d.), work 2 ({sign} {band} m/s2)"
-
-LAYOUT_BANDS = {
-    "tappet_acceleration.max": {
-        layout: Band(high=ACCELERATION_LIMITS[0], source=_ACCELERATION_SOURCE.format(sign="positive", band="1500...3500"),
-                     note="" if layout == "direct" else _FOR_DIRECT.format(layout=layout)) for layout in LAYOUTS},
-    "tappet_acceleration.min": {
-        layout: Band(low=ACCELERATION_LIMITS[1], source=_ACCELERATION_SOURCE.format(sign="negative", band="500...1500"),
-                     note="" if layout == "direct" else _FOR_DIRECT.format(layout=layout)) for layout in LAYOUTS},
-    "drive.rocker_ratio": {
-        "rocker": Band(1.4, 1.75, "Valve-train practical works (n.d.), work 2 (i_k = 1 for direct drive, 1.4-1.75 with a rocker or lever)"),
-        "pushrod": Band(1.4, 1.75, "Valve-train practical works (n.d.), work 2 (i_k = 1 for direct drive, 1.4-1.75 with a rocker or lever)"),
-    },
-    "drive.specific_mass": {
-        "direct": Band(200.0, 300.0, "Valve-train practical works (n.d.), work 5 (direct drive 200-300 kg/m2)"),
-        "rocker": Band(200.0, 300.0, "Valve-train practical works (n.d.), work 5 (direct drive 200-300 kg/m2)",
-                       "the source gives 200-300 kg/m2 for direct drive and 400-500 kg/m2 for a tappet, pushrod and "
-                       "rocker train; an overhead-cam rocker train has no pushrod or tappet and is compared with the "
-                       "direct drive's band"),
-        "pushrod": Band(400.0, 500.0, "Valve-train practical works (n.d.), work 5 (tappet, pushrod and rocker 400-500 kg/m2)"),
-    },
-}
-"""The recommended ranges that depend on the drive layout, ``check code -> {layout: Band}``; a layout missing from a
-code's table has no such check (direct drive has no rocker: its ratio 1 is refused otherwise at validation).
-The valve arrangement of Valve-train practical works (n.d.), work 1 (throat diameter / bore "при нижнем/верхнем расположении клапанов",
-side valves or overhead valves) is the combustion chamber's, ``[engine] chamber``
-(:data:`valvetrain.flow.THROAT_TO_BORE_RANGES`)."""
-
-
-def layout_check(code, value, layout, **kw) -> Optional[Check]:
-    """The check ``code`` against the band of ``layout`` (:data:`LAYOUT_BANDS`), or None where the layout has
-    no such band; the band's note, if any, becomes the check's note."""
-    band = LAYOUT_BANDS[code].get(layout)
-    if band is None:
-        return None
-    return check(code, value, band.low, band.high, source=band.source, note=band.note, **kw)
-
-PETROL_BANDS = ("timing.opening_advance", "timing.closing_lag", "valve.seat_angle", "valve.clearance",
-                "drive.rocker_ratio")
-"""The checks whose recommended bands are those of a petrol engine (Valve-train practical works (n.d.), works 1 and 2:
-the manual designs a petrol engine's valve train, its appendix a Kurz cam for one)."""
-
-OTHER_CLASS_NOTE = ("the band is a petrol engine's (Valve-train practical works (n.d.)) and the cited works give none "
-                    "for this engine class ({engine_class}): a remark, not a warning")
-
-
-def engine_class(engine) -> str:
-    """The engine class whose recommended bands apply: ``[engine] engine_class``, else an automotive diesel for
-    ``type = "diesel"`` and an automotive petrol engine otherwise."""
-    if engine.engine_class is not None:
-        return engine.engine_class
-    return "automotive_diesel" if engine.type == "diesel" else "automotive_petrol"
-
-
-def for_engine_class(checks, engine) -> list[Check]:
-    """The checks with the petrol engine's bands (:data:`PETROL_BANDS`) made remarks (info) with a note where the
-    engine is of another class: a rocker ratio of 1 or a 40 crank deg advance of a locomotive diesel is no warning
-    against a petrol engine's band."""
-    cls = engine_class(engine)
-    if cls == "automotive_petrol":
-        return checks
-    note = OTHER_CLASS_NOTE.format(engine_class=cls.replace("_", " "))
-    return [replace(c, severity="info", note="; ".join(filter(None, (c.note, note))))
-            if c.code in PETROL_BANDS and c.severity == "warning" else c for c in checks]
-
-
-TIMING_RANGES = {"intake": ((20.0 * DEG, 30.0 * DEG), (40.0 * DEG, 60.0 * DEG))}
-"""Recommended inlet opening advance and closing lag [crank rad] (Valve-train practical works (n.d.), work 2: 20-30 and 40-60 crank deg)."""
-
-CLEARANCE_RANGES = {"intake": (0.25 * MM, 0.35 * MM), "exhaust": (0.35 * MM, 0.50 * MM)}
-"""Recommended valve clearance h0 [m] (Valve-train practical works (n.d.), work 2)."""
-
-SEAT_ANGLE_USUAL = {"intake": (30.0 * DEG, 30.0 * DEG), "exhaust": (45.0 * DEG, 45.0 * DEG)}
-"""Usual seat angles [rad] (Valve-train practical works (n.d.), work 1: 30 deg inlet, 45 deg exhaust)."""
-
-BASE_RADIUS_TO_LIFT_RANGE = (1.5, 4.0)
-"""r0 / valve lift: 1.5-2.0 naturally aspirated, up to 3.0-4.0 supercharged (Valve-train practical works (n.d.), work 2)."""
-
-RHO_MIN = 2.0 * MM
-"""Smallest recommended radius of curvature of the cam profile [m] (Shang Hanji (1988), section 2.1)."""
-
-PRESSURE_ANGLE_MAX = 30.0 * DEG
-"""Largest recommended pressure angle of a roller follower [rad] (UkrSURT Proceedings (2019))."""
-
-SEATING_VELOCITY_MAX = 0.5
-"""Working limit of the valve's seating velocity at rated speed [m/s] (no primary source;
-0.3-0.5 m/s is working guidance)."""
-
-SEATING_VELOCITY_SOURCE = "working guidance 0.3-0.5 m/s (Valve-train practical works (n.d.), work 2: the ramp limits it)"
-
-THROAT_AREA_SHARE_RANGE = (0.25, 0.40)
-"""Inlet plus exhaust throat areas as a share of the piston area (Valve-train practical works (n.d.), work 1)."""
-
-PISTON_CLEARANCE_MIN = {"intake": 0.080 * 25.4 * MM, "exhaust": 0.100 * 25.4 * MM}
-"""Smallest recommended valve-to-piston gap [m]: 0.080 in intake, 0.100 in exhaust (the exhaust valve is hotter and
-chased by the rising piston); Shang's (2.13) only demands a gap > 0."""
-
-PISTON_CLEARANCE_SOURCE = ("engine builders' rule of at least 0.080 in intake, 0.100 in exhaust (HP Academy, "
-                           "'Measuring piston to valve clearance'); gap D_s = s + y0 - y: Shang Hanji (1988), "
-                           "section 2.1, eqs. (2.13)-(2.14)")
-
-MAX_LIFT_TO_THROAT = 0.5
-"""Largest valve lift / throat diameter a design may have.  The curtain area pi d y equals the throat area at
-y = d/4 (Valve-train practical works (n.d.), eq. 1.3 with the seat cone neglected), the recommended lift is 0.18-0.30 d (Valve-train practical works (n.d.), work 2); a
-lift of more than half the throat is no valve design."""
-
 
 @dataclass(frozen=True)
 class StepRecord:
@@ -266,96 +144,6 @@ class LiftTable:
 
 
 @dataclass(frozen=True)
-class FlatContact:
-    """Where a flat follower touches the cam."""
-
-    max_contact_offset: float = quantity("max_contact_offset_mm", "mm", "largest contact offset from the axis, h'")
-
-
-@dataclass(frozen=True)
-class RollerContact:
-    """How a roller follower meets the cam."""
-
-    roller_radius: float = quantity("roller_radius_mm", "mm", "roller radius")
-    max_pressure_angle: float = quantity("max_pressure_angle_deg", "deg", "largest pressure angle")
-    min_concave_radius: float = quantity("min_concave_radius_mm", "mm",
-                                         "concave radius closest to zero (null: no concave stretch)")
-
-
-@dataclass(frozen=True)
-class FingerKinematics:
-    """The linkage of a finger follower over the valve's lift (:mod:`valvetrain.followers.finger`; Norton (2009),
-    Wang (2007)).  The ratio is the valve lift per unit travel of the roller centre on its arc about the pivot."""
-
-    rest_ratio: float = quantity("ratio_at_rest", label="lever ratio on the heel circle")
-    min_ratio: float = quantity("ratio_min", label="smallest instantaneous lever ratio over the lift")
-    max_ratio: float = quantity("ratio_max", label="largest instantaneous lever ratio over the lift")
-    nose_ratio: float = quantity("ratio_at_full_lift", label="lever ratio at the full valve lift")
-    swing: float = quantity("swing_deg", "deg", "the finger's turn from the heel circle to the full lift")
-    roller_lift: float = quantity("roller_lift_mm", "mm",
-                                  "lift of the roller centre from the cam centre (the synthesised cam's lift)")
-    tip_contact: tuple[float, float] = quantity("tip_contact_mm", "mm",
-                                                "where the pad touches the valve tip across its axis: shut, full lift")
-    scrub: float = quantity("tip_scrub_mm", "mm", "travel of the contact point across the valve tip over the lift")
-    tip_reach: float = quantity("tip_contact_max_mm", "mm",
-                                "largest distance of the contact point from the valve axis over the lift")
-    rest_pressure_angle: float = quantity("pressure_angle_at_rest_deg", "deg",
-                                          "pressure angle on the heel circle (the pivot's offset)")
-
-
-STEM_TO_THROAT = 0.2
-"""The valve stem's diameter over the throat's where ``parts.stem_diameter_mm`` is not given: a stated default, not a
-source's (5.5-6 mm stems of 28-30 mm car throats, 10-11 mm of 45-50 mm truck throats; the smaller share, so that the
-tip is not overstated)."""
-
-TIP_EDGE_MARGIN = 0.5e-3
-"""How far inside the valve tip's edge the pad's contact must stay [m]: the tip's chamfer and the contact's own
-half-width (an engineering limit of this package; no published limit of the contact's place was found)."""
-
-
-def tip_contact_check(finger, valve) -> Check:
-    """The finger's pad on the valve tip (a failure): the largest distance of its contact point from the valve axis
-    over the lift (:class:`FingerKinematics` ``tip_reach``, which bounds its travel, the scrub) against the tip's
-    radius, half the stem's diameter, less :data:`TIP_EDGE_MARGIN`.
-
-    Parameters
-    ----------
-    finger : FingerKinematics
-    valve : SI view of the valve (its ``parts.stem_diameter`` [m], else :data:`STEM_TO_THROAT` x the throat).
-
-    Notes
-    -----
-    The contact point is :math:`L_b(\\cos\\chi - \\cos\\chi_0) + x_0` across the valve axis
-    (:meth:`~valvetrain.followers.PivotedFollower.tip_contact`; Wang (2007), the contact travel on the valve tip);
-    a pad that pushes beyond the tip's flat face presses on its chamfer or beside the valve: no working finger.  The
-    limit is an engineering one, stated: the tip's radius less 0.5 mm.
-    """
-    given = valve.parts.stem_diameter
-    stem = given if given is not None else STEM_TO_THROAT * valve.throat_diameter
-    where = "parts.stem_diameter_mm" if given is not None else f"{STEM_TO_THROAT:g} x throat_diameter_mm, a default"
-    return check("finger.tip_contact", finger.tip_reach, high=max(stem / 2.0 - TIP_EDGE_MARGIN, 0.0), unit="mm",
-                 severity="failure", source="the valve tip's radius (half the stem) less 0.5 mm: an engineering limit; "
-                 "the contact's travel: Wang (2007)",
-                 note=f"stem {stem / MM:.4g} mm ({where}); the contact travels {finger.scrub / MM:.3g} mm across the "
-                 f"tip (scrub), {finger.tip_contact[0] / MM:.3g} mm off the axis shut, "
-                 f"{finger.tip_contact[1] / MM:.3g} mm at full lift")
-
-
-def finger_kinematics(follower, heel, lift, samples=2001) -> FingerKinematics:
-    """The :class:`FingerKinematics` of a finger (:class:`~valvetrain.followers.PivotedFollower`) on the heel circle
-    ``heel`` [m] up to the valve lift ``lift`` [m]: its ratio, contact and roller centre are functions of the finger's
-    angle alone, sampled at ``samples`` angles from psi_0 to the full lift's."""
-    psi0, top = follower.base_angle(heel), float(follower.angle_of(np.array(lift), heel))
-    psi = np.linspace(psi0, top, samples)
-    ratio, tip = follower.lever_ratio(psi), follower.tip_contact(psi, heel)
-    zero = np.zeros(1)
-    return FingerKinematics(follower.rest_ratio(heel), float(ratio.min()), float(ratio.max()), float(ratio[-1]),
-                            abs(top - psi0), float(np.hypot(*follower.centre(psi)).max() - heel - follower.radius),
-                            (float(tip[0]), float(tip[-1])), float(tip.max() - tip.min()), float(np.abs(tip).max()),
-                            float(follower.pressure_angle(heel, zero, zero)[0]))
-
-
-@dataclass(frozen=True)
 class ProfileResult:
     """The profile stage: lift table, contour, curvature and contact of the cam (Shang Hanji (1988), section 2.1)."""
 
@@ -389,17 +177,6 @@ class ClearanceResult:
             return None
         i = int(np.argmin(np.where(inside, self.gap, np.inf)))
         return float(self.gap[i]), float(self.crank[i])
-
-
-def clearance_check(kind, gap, angle, window=None) -> Check:
-    """The check of a valve-to-piston gap [m] at a crank angle [rad] against :data:`PISTON_CLEARANCE_MIN`, over the
-    open event or, with ``window`` (crank rad from the gas-exchange TDC), over the valve overlap.  A gap below the
-    minimum is a failure: the valve may touch the piston at over-speed, with lash or with valve float."""
-    where = "" if window is None else (f" over the overlap from {math.degrees(window[0]):.4g} to "
-                                       f"{math.degrees(window[1]):.4g} crank deg")
-    return check("piston.clearance" if window is None else "piston.clearance_overlap", gap,
-                 low=PISTON_CLEARANCE_MIN[kind], unit="mm", source=PISTON_CLEARANCE_SOURCE, severity="failure",
-                 note=f"smallest at {math.degrees(angle):.4g} crank deg from the gas-exchange TDC{where}")
 
 
 def wrap_crank(a) -> np.ndarray:
@@ -454,11 +231,11 @@ def law_stage(valve, engine, law=None) -> CamResult:
             raise InputError(Problem(key, f"the measured valve lift = {lift / MM:.4g} mm: {allowed}"))
         raise InputError(Problem("max_lift_mm", allowed, f"{lift / MM:.4g} mm"))
     follower = follower_of(cam)
-    if follower.law_at_valve:   # a finger on a measured table (or a caller's law): its lift known only now
-        problem = follower.geometry_problem(cam.base_radius - law.ramp_height, law.lift_max + law.ramp_height)
-        if problem:
-            key, value, message, joiner = problem
-            raise InputError(Problem(f"cam.{key}", message, value, joiner))
+    # a finger on a measured table (or a caller's law): its lift known only now
+    problem = follower.geometry_problem(cam.base_radius - law.ramp_height, law.lift_max + law.ramp_height)
+    if problem:
+        key, value, message, joiner = problem
+        raise InputError(Problem(f"cam.{key}", message, value, joiner))
     omega = engine.rated_speed / 2.0
     ext = law.extremes(omega)
     seat = valve.rocker_ratio * omega * np.abs(law.derivatives(np.array([law.valve_opens, law.valve_closes]))[1])
@@ -560,18 +337,10 @@ def profile_stage(cam, valve, output) -> ProfileResult:
 
     x_max, rho_max = _first_best([extremum(convex_or_low, bp, "max"), (np.pi, heel)], 1.0)
     straight = bool(np.any(np.isposinf(rho)))   # straight flanks (tangent cam): the largest radius is infinite
-    if follower.rolling:
-        beta_max = extremum(lambda t: np.abs(law.profile(t, heel, follower)[2]), bp, "max")[1]
-        # the concave radius closest to zero is the most negative curvature (the radius itself passes through
-        # -inf at the inflections, where its minimum would be found)
-        curvature = extremum(lambda t: 1.0 / law.curvature(t, heel, follower), bp, "min")[1]
-        concave = 1.0 / curvature if curvature < 0.0 else 0.0
-        contact = RollerContact(follower.radius, beta_max, concave if concave + follower.radius < 0.0 else None)
-    else:
-        contact = FlatContact(cam.max_velocity / omega)
-    finger = finger_kinematics(follower, heel, law.lift_max + law.ramp_height) if follower.law_at_valve else None
     return ProfileResult(table, contour, ctheta, rho_min, None if straight else rho_max, x_min,
-                         None if straight else x_max, straight, contact, follower.undercut(rho_min), finger)
+                         None if straight else x_max, straight,
+                         follower.profile_contact(law, heel, cam.max_velocity / omega), follower.undercut(rho_min),
+                         follower.kinematics(heel, law.lift_max + law.ramp_height))
 
 
 def clearance_stage(cam, valve, engine, advance=0.0) -> Optional[ClearanceResult]:
@@ -601,107 +370,6 @@ def clearance_stage(cam, valve, engine, advance=0.0) -> Optional[ClearanceResult
                          f"{valve.piston_gap_tdc / MM:g}); allowed a gap > 0: lower the lift near TDC or deepen the "
                          "valve pocket")
     return ClearanceResult(float(gap[i]), angle, wrap_crank(crank), gap)
-
-
-def overlap_clearance_checks(valves) -> list[Check]:
-    """The valve-to-piston gap of each valve over the overlap, from the first intake opening to the last exhaust
-    closing (crank angles from the gas-exchange TDC), where the piston is nearest the open valves.
-
-    ``valves`` maps names to :class:`ValveDesign`; no check without an intake and an exhaust valve that overlap.
-    """
-    opens = [v.cam.valve_opens for v in valves.values() if v.kind == "intake"]
-    closes = [v.cam.valve_closes for v in valves.values() if v.kind == "exhaust"]
-    if not opens or not closes or min(opens) >= max(closes):
-        return []
-    window = (min(opens), max(closes))
-    out = []
-    for name, v in valves.items():
-        found = None if v.clearance is None else v.clearance.within(*window)
-        if found is not None:
-            out.append(clearance_check(v.kind, *found, window).of_valve(name))
-    return out
-
-
-def follower_travel_acceleration(follower, heel, h, dh, d2h) -> np.ndarray:
-    """The follower's acceleration on the cam per camshaft angle squared [m/rad^2]: the law's h'' (a tappet), or for
-    a law at the valve (a finger) the roller centre's on its arc,
-    :meth:`~valvetrain.followers.PivotedFollower.travel_acceleration`; ``heel`` [m], h [m], dh [m/rad], d2h
-    [m/rad^2] of the law."""
-    return follower.travel_acceleration(heel, h, dh, d2h) if follower.law_at_valve else d2h
-
-
-def follower_accelerations(cam, samples=4001) -> tuple[float, float]:
-    """The smallest and largest acceleration of the follower on the cam at the rated speed [m/s^2]: the law's
-    extremes (:class:`CamResult`), or for a law at the valve (a finger) omega^2
-    :func:`follower_travel_acceleration` over ``samples`` angles of the event."""
-    follower, law = cam.follower_model, cam.law
-    if not follower.law_at_valve:
-        return cam.min_acceleration, cam.max_acceleration
-    theta = np.unique(np.concatenate([np.linspace(law.start, law.end, samples), law.breakpoints]))
-    acc = cam.cam_speed ** 2 * follower_travel_acceleration(follower, cam.heel_radius, *law.derivatives(theta)[:3])
-    return float(acc.min()), float(acc.max())
-
-
-def valve_checks(cam, flow_result, profile, valve, engine, timing) -> list[Check]:
-    """The recommended-range checks of the law, the flow, the timing and the profile (every check, passed or not).
-
-    ``timing`` is the opening advance and closing lag [crank rad] of the main lift (None where not defined).  The
-    acceleration and rocker-ratio bands are those of the valve's drive layout (:data:`LAYOUT_BANDS`); the petrol
-    engine's bands are remarks for an engine of another class (:func:`for_engine_class`).
-    """
-    law, i_k = cam.law, cam.rocker_ratio
-    out = law.checks()
-    out += flow.check_flow(valve.kind, bore=engine.bore, throat_diameter=valve.throat_diameter,
-                           max_lift=flow_result.valve_lift, v1=flow_result.v1, v2=flow_result.v2, v3=flow_result.v3,
-                           charge_velocity=flow_result.charge_velocity, engine_type=engine.type,
-                           chamber=engine.chamber, count=valve.count)
-    drive, follower = layout(valve), cam.follower_model
-    low, high = follower_accelerations(cam)
-    out.append(layout_check("tappet_acceleration.max", high, drive, unit="m/s2"))
-    out.append(layout_check("tappet_acceleration.min", low, drive, unit="m/s2"))
-    if valve.kind in TIMING_RANGES:
-        for label, angle, (lo, hi) in zip(("timing.opening_advance", "timing.closing_lag"), timing, TIMING_RANGES[valve.kind],
-                                          strict=True):
-            if angle is not None:
-                out.append(check(label, angle, lo, hi, source="Valve-train practical works (n.d.), work 2", unit="crank deg"))
-    if law.clearance_on_flank:
-        out.append(check("seating_velocity.without_ramp", cam.seating_velocity,
-                         high=SEATING_VELOCITY_MAX, source=SEATING_VELOCITY_SOURCE, unit="m/s",
-                         note=f"no ramp takes up clearance_mm = {valve.clearance / MM:g}: the flank does"))
-    out.append(check("valve.seat_angle", valve.seat_angle, *SEAT_ANGLE_USUAL[valve.kind],
-                     source="Valve-train practical works (n.d.), work 1 (usually 30 deg inlet, 45 deg exhaust)", unit="deg", severity="info"))
-    if valve.lash_adjuster is None:  # a hydraulic lash adjuster leaves no clearance (validated: clearance_mm = 0)
-        out.append(check("valve.clearance", valve.clearance, *CLEARANCE_RANGES[valve.kind],
-                         source="Valve-train practical works (n.d.), work 2", unit="mm"))
-    ratio = layout_check("drive.rocker_ratio", i_k * follower.rest_ratio(cam.heel_radius), drive)
-    if ratio is not None:
-        out.append(ratio)
-    out.append(check("cam.base_radius_to_lift", cam.base_radius / flow_result.valve_lift, *BASE_RADIUS_TO_LIFT_RANGE,
-                     source="Valve-train practical works (n.d.), work 2 (1.5-2.0; supercharged 3.0-4.0)"))
-    if profile.undercut:
-        out.append(check(follower.undercut_code, profile.rho_min, low=0.0, strict_low=True,
-                         source=follower.undercut_source, unit="mm", severity="failure"))
-    if follower.rolling:
-        out.append(check("profile.pressure_angle.max", profile.contact.max_pressure_angle, high=PRESSURE_ANGLE_MAX,
-                         source="UkrSURT Proceedings (2019)", unit="deg"))
-    if not profile.undercut:
-        out.append(check("profile.rho_min", profile.rho_min, low=RHO_MIN, source="Shang Hanji (1988), section 2.1",
-                         unit="mm"))
-    if profile.finger is not None:
-        out.append(tip_contact_check(profile.finger, valve))
-    return for_engine_class(out, engine)
-
-
-def mass_checks(valve, mass, throat_area) -> list[Check]:
-    """The specific mass of the drive m' = m_v / f_g [kg/m2] against the band of the valve's layout (Valve-train practical works (n.d.), work 5),
-    an ``info`` check: only where the masses or m' are given (the default m' is this project's, not the source's,
-    whose bands are 1.6-3.7 times the masses of the example's parts)."""
-    d = valve.drive
-    if d.masses is None and d.specific_mass_kg_m2 is None:
-        return []
-    c = layout_check("drive.specific_mass", mass / throat_area, layout(valve), unit="kg/m2",
-                     severity="info")
-    return [] if c is None else [c]
 
 
 @dataclass(frozen=True, repr=False)
@@ -1007,8 +675,7 @@ def with_hydraulic(design, valve, engine, gas, cylinder=None) -> ValveDesign:
                    lost_motion=lost)
 
 
-__all__ = ["CamResult", "ClearanceResult", "FingerKinematics", "FlowResult", "LiftTable", "ProfileResult", "StepRecord", "ValveDesign",
-           "ValveGeometry", "clearance_check", "clearance_stage", "design_valve", "driven_design", "finger_kinematics",
-           "flow_stage", "follower_accelerations", "follower_travel_acceleration", "kinematic_stages", "law_stage",
-           "layout_check", "mass_checks", "overlap_clearance_checks", "profile_stage", "step_records", "valve_checks",
-           "valve_geometry", "with_gas_load", "with_hydraulic", "wrap_crank"]
+__all__ = ["CamResult", "ClearanceResult", "FlowResult", "LiftTable", "ProfileResult", "StepRecord", "ValveDesign",
+           "ValveGeometry", "clearance_stage", "design_valve", "driven_design", "flow_stage", "kinematic_stages",
+           "law_stage", "profile_stage", "step_records", "valve_geometry", "with_gas_load", "with_hydraulic",
+           "wrap_crank"]

@@ -41,6 +41,19 @@ Write one module in this package with a subclass of :class:`Follower` decorated 
   :meth:`ratio`                 the follower's own lever ratio as a function of the lift [-]
   :meth:`rest_ratio`            its lever ratio on the heel circle [-] (a lash adjuster's motion ratio)
   :meth:`force_ratio`           the cam's force per unit force along the law's lift [-]
+  :meth:`travel_acceleration`   the follower's acceleration on the cam per camshaft angle squared [m/rad^2]
+  :meth:`acceleration_range`    its extremes at the rated speed [m/s^2] (the tappet-acceleration checks)
+  :meth:`profile_contact`       the profile stage's contact record (flat: contact offset; roller: pressure angle)
+  :meth:`profile_checks`        the checks of that record (a roller's largest pressure angle)
+  :meth:`kinematics`            the record of a linkage over the lift (a finger's), or None
+  :meth:`geometry_problem`      what makes a linkage unworkable for a lift, or None
+  :meth:`rolling_losses`        a roller's slip and rolling resistance in the friction torque
+  :meth:`face_offset`           a sliding face's contact offset (edge loading, the tappet's side pressure), or None
+  :meth:`side_force`            a roller's side force on its carrier, or None
+  :meth:`loads`                 a lever's loads (bearing, pivot, bending moment), or None
+  :meth:`heel_valve_arm`        a lever's own valve arm on the heel circle (and :meth:`valve_arms` over the lift)
+  :meth:`variable_mass`         what its inertia adds by a varying ratio (and :meth:`variable_inertia_force`)
+  :meth:`pivot_linkage`         the linkage of a lash adjuster at its own pivot, or None
   ============================  =======================================================================
 
   A follower whose lever ratio varies with the lift may return it from :meth:`ratio`; ``LiftLaw.valve_lift``
@@ -58,10 +71,9 @@ Write one module in this package with a subclass of :class:`Follower` decorated 
   ``_multi_train``), reading its mass from ``[drive.masses]``; a reduced inertia that changes with the lift is
   that node's :class:`~valvetrain.dynamics.models.VariableMass` (``design/dynamics.py``, ``finger_mass``).
 
-- ``rolling`` selects, beside the geometry, what the stages report: a rolling follower's profile record (roller
-  radius, largest pressure angle, concave radius) and its side-force record and the pressure-angle checks; a
-  sliding one's contact-offset record, its face's edge loading and the tappet's side pressure.  A tangent cam
-  admits only a rolling follower.
+- the stages never read ``rolling`` or ``law_at_valve``: what differs between a rolling and a sliding follower
+  (its profile record and checks, its rolling losses, its side load) is a method here.  A tangent cam admits only
+  a rolling follower (the specification's check).
 
 Methods return numpy arrays (floats where the argument is a scalar); none of them mutates its arguments or
 the follower, and they hold no state beyond the follower's dimensions.  Each follower's module has its tests,
@@ -241,6 +253,81 @@ class Follower:
         """The force the cam carries per unit force along the law's lift [-] (1 for a translating follower, whose law
         is its own lift; a finger's law is the valve's, and its cam carries G / (L_r cos beta) of the valve force)."""
         return np.ones_like(np.asarray(h, dtype=float))
+
+    def face_offset(self, dh) -> np.ndarray | None:
+        """The distance of the contact from the axis of a face sliding on the cam [m] at the law's ``dh`` [m/rad]
+        (a flat face's edge loading and its tappet's side pressure), or None where no face slides on the cam."""
+        return None
+
+    def side_force(self, force, heel, h, dh) -> np.ndarray | None:
+        """The side force on the follower's carrier under the cam force ``force`` [N] at the law's ``h`` [m],
+        ``dh`` [m/rad] on the heel circle ``heel`` [m], or None where none is reported (a flat face: its offset
+        loads its guide, :meth:`face_offset`)."""
+        return None
+
+    def loads(self, force, heel, h, dh) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
+        """The loads of a follower that is a lever (its bearing's, its pivot's, its bending moment) under the force
+        ``force`` [N] at the valve, or None: a translating follower is no lever
+        (:meth:`~valvetrain.followers.PivotedFollower.loads`)."""
+        return None
+
+    def heel_valve_arm(self, heel) -> float | None:
+        """The valve-side arm of the follower's own lever on the heel circle ``heel`` [m] (a finger's G(psi_0)), or
+        None: a translating follower has none (the layout's ``[drive] valve_arm_mm`` is the rocker's)."""
+        return None
+
+    def valve_arms(self, lift, heel) -> np.ndarray | None:
+        """That arm at the valve lifts ``lift`` [m] on the heel circle ``heel`` [m], or None (no lever of its own)."""
+        return None
+
+    def variable_inertia_force(self, inertia, arm0, heel, h, dh, d2h) -> np.ndarray:
+        """What the follower's own inertia ``inertia`` [kg m^2] adds by a lever ratio that varies with the lift to the
+        train's m_v h'' at its ratio on the heel circle (arm ``arm0`` [m]), per camshaft speed squared [N s^2/rad^2]:
+        zero for a follower of constant ratio (the law's lifts ``h`` [m], ``dh`` [m/rad], ``d2h`` [m/rad^2] on the
+        heel circle ``heel`` [m])."""
+        return np.zeros_like(d2h)
+
+    def variable_mass(self, inertia, arm0, heel, h) -> np.ndarray:
+        """What that inertia adds to the train's mass at the valve by its varying ratio [kg] at the lifts ``h`` [m]:
+        zero for a follower of constant ratio."""
+        return np.zeros_like(h)
+
+    def pivot_linkage(self, heel, axis_angle=None) -> tuple | None:
+        """The arguments of :func:`valvetrain.lash_adjuster.pivot_motion_ratio` for a lash adjuster at the follower's
+        own pivot on the heel circle ``heel`` [m], its axis at ``axis_angle`` [rad] (None: the valve's), or None: a
+        follower without a pivot of its own (the lever ratio decides, :func:`valvetrain.lash_adjuster.motion_ratio`)."""
+        return None
+
+    def geometry_problem(self, heel, lift) -> tuple[str, str, str, str] | None:
+        """What makes the follower's geometry unworkable on the heel circle ``heel`` [m] up to the lift ``lift`` [m]
+        (the key within the cam section, its value, the message and its joiner), or None: a translating follower
+        has no linkage to fail."""
+        return None
+
+    def travel_acceleration(self, heel, h, dh, d2h) -> np.ndarray:
+        """The follower's acceleration on the cam per camshaft angle squared [m/rad^2]: the law's h'' for a follower
+        whose law is its own lift."""
+        return d2h
+
+    def acceleration_range(self, cam, samples=4001) -> tuple[float, float]:
+        """The smallest and largest acceleration of the follower on the cam at the rated speed [m/s^2]: the law's own
+        extremes (``cam`` is the law stage's ``CamResult``: ``min_acceleration``, ``max_acceleration``)."""
+        return cam.min_acceleration, cam.max_acceleration
+
+    def kinematics(self, heel, lift) -> None:
+        """The record of the follower's linkage over the lift (heel circle ``heel``, lift ``lift`` [m]), or None for a
+        follower without one (a finger's: :meth:`~valvetrain.followers.PivotedFollower.kinematics`)."""
+        return None
+
+    def profile_checks(self, contact) -> list:
+        """The checks of the follower's contact record (:meth:`profile_contact`): none for a sliding face."""
+        return []
+
+    def rolling_losses(self, u_follower, slip, resistance) -> tuple:
+        """The follower surface's velocity [m/s], its rolling-resistance coefficient and its rolling velocity in the
+        friction torque (:func:`valvetrain.tribology.friction_torque`): a sliding face has no rolling, so its
+        velocity as it is and no rolling terms (``slip``, ``resistance``: a roller's, unused)."""
+        return u_follower, 0.0, 0.0
 
     def ratio(self, h) -> np.ndarray:
         """The follower's own lever ratio (valve-side motion / cam lift) at the lifts ``h`` [m]: 1 for a

@@ -55,12 +55,35 @@ import numpy as np
 
 from ..errors import InputError
 from ..numerics import bracketed_roots
+from ..results import quantity
 from .base import register
 from .roller import RollerFollower
 
 KEYS = ("finger_pivot_x_mm", "finger_pivot_y_mm", "finger_roller_arm_mm", "finger_pad_arm_mm", "finger_pad_radius_mm")
 """The cam section's keys a finger needs beside ``roller_radius_mm`` (``finger_pad_drop_mm``,
 ``finger_valve_angle_deg`` and ``finger_tip_offset_mm`` are 0 where not given)."""
+
+
+
+@dataclass(frozen=True)
+class FingerKinematics:
+    """The linkage of a finger follower over the valve's lift (:mod:`valvetrain.followers.finger`; Norton (2009),
+    Wang (2007)).  The ratio is the valve lift per unit travel of the roller centre on its arc about the pivot."""
+
+    rest_ratio: float = quantity("ratio_at_rest", label="lever ratio on the heel circle")
+    min_ratio: float = quantity("ratio_min", label="smallest instantaneous lever ratio over the lift")
+    max_ratio: float = quantity("ratio_max", label="largest instantaneous lever ratio over the lift")
+    nose_ratio: float = quantity("ratio_at_full_lift", label="lever ratio at the full valve lift")
+    swing: float = quantity("swing_deg", "deg", "the finger's turn from the heel circle to the full lift")
+    roller_lift: float = quantity("roller_lift_mm", "mm",
+                                  "lift of the roller centre from the cam centre (the synthesised cam's lift)")
+    tip_contact: tuple[float, float] = quantity("tip_contact_mm", "mm",
+                                                "where the pad touches the valve tip across its axis: shut, full lift")
+    scrub: float = quantity("tip_scrub_mm", "mm", "travel of the contact point across the valve tip over the lift")
+    tip_reach: float = quantity("tip_contact_max_mm", "mm",
+                                "largest distance of the contact point from the valve axis over the lift")
+    rest_pressure_angle: float = quantity("pressure_angle_at_rest_deg", "deg",
+                                          "pressure angle on the heel circle (the pivot's offset)")
 
 
 def _e(psi):
@@ -307,6 +330,56 @@ class PivotedFollower(RollerFollower):
     def travel_acceleration(self, heel, h, dh, d2h) -> float | np.ndarray:
         """L_r psi'' [m/rad^2]: the roller centre's acceleration along its arc per camshaft angle squared."""
         return self.roller_arm * self.angle_derivatives(heel, h, dh, d2h)[2]
+
+    def heel_valve_arm(self, heel) -> float:
+        """G(psi_0) [m]: :meth:`valve_arm` with the roller on the heel circle ``heel`` [m]."""
+        return float(self.valve_arm(np.array(self.base_angle(heel))))
+
+    def valve_arms(self, lift, heel) -> np.ndarray:
+        """G(psi) [m] at the valve lifts ``lift`` [m] on the heel circle ``heel`` [m]."""
+        return self.valve_arm(self.angle_of(lift, heel))
+
+    def variable_inertia_force(self, inertia, arm0, heel, h, dh, d2h) -> np.ndarray:
+        """J psi'' / G - J h'' / G_0^2 (:meth:`inertia_force`; the train counts J / G_0^2, ``arm0`` = G_0 [m])."""
+        return self.inertia_force(inertia, heel, h, dh, d2h) - inertia / arm0 ** 2 * d2h
+
+    def variable_mass(self, inertia, arm0, heel, h) -> np.ndarray:
+        """J / G(psi)^2 - J / G_0^2 [kg] (:meth:`reduced_inertia`; ``arm0`` = G_0 [m])."""
+        return self.reduced_inertia(inertia, heel, h) - inertia / arm0 ** 2
+
+    def pivot_linkage(self, heel, axis_angle=None) -> tuple:
+        """(pivot, roller centre, G(psi_0), L_r, valve angle, adjuster axis) on the heel circle ``heel`` [m], the axis
+        ``axis_angle`` [rad] or else the valve's."""
+        psi = self.base_angle(heel)
+        axis = self.valve_angle if axis_angle is None else axis_angle
+        return (np.array([self.pivot_x, self.pivot_y]), self.centre(psi), float(self.valve_arm(psi)), self.roller_arm,
+                self.valve_angle, axis)
+
+    def side_force(self, force, heel, h, dh) -> None:
+        """None: a finger has no guide, its pivot carries the side load."""
+        return None
+
+    def acceleration_range(self, cam, samples=4001) -> tuple[float, float]:
+        """The smallest and largest acceleration of the roller centre on its arc at the rated speed [m/s^2]: omega^2
+        :meth:`travel_acceleration` over ``samples`` angles of the event of the law stage's ``CamResult`` ``cam``
+        (its law is the valve's, not the roller's)."""
+        law = cam.law
+        theta = np.unique(np.concatenate([np.linspace(law.start, law.end, samples), law.breakpoints]))
+        acc = cam.cam_speed ** 2 * self.travel_acceleration(cam.heel_radius, *law.derivatives(theta)[:3])
+        return float(acc.min()), float(acc.max())
+
+    def kinematics(self, heel, lift, samples=2001) -> FingerKinematics:
+        """The :class:`FingerKinematics` on the heel circle ``heel`` [m] up to the valve lift ``lift`` [m]: its ratio,
+        contact and roller centre are functions of the finger's angle alone, sampled at ``samples`` angles from
+        psi_0 to the full lift's."""
+        psi0, top = self.base_angle(heel), float(self.angle_of(np.array(lift), heel))
+        psi = np.linspace(psi0, top, samples)
+        ratio, tip = self.lever_ratio(psi), self.tip_contact(psi, heel)
+        zero = np.zeros(1)
+        return FingerKinematics(self.rest_ratio(heel), float(ratio.min()), float(ratio.max()), float(ratio[-1]),
+                                abs(top - psi0), float(np.hypot(*self.centre(psi)).max() - heel - self.radius),
+                                (float(tip[0]), float(tip[-1])), float(tip.max() - tip.min()),
+                                float(np.abs(tip).max()), float(self.pressure_angle(heel, zero, zero)[0]))
 
     def centre(self, psi) -> np.ndarray:
         """The roller centre C(psi) in the fixed frame (2, n) [m]."""

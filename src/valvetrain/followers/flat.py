@@ -5,11 +5,21 @@ References
 Shang Hanji (1988), section 2.1, eqs. (2.6), (2.12), (2.15); Valve-train practical works (n.d.), eq. (2.38).
 """
 
+from dataclasses import dataclass
+
 import numpy as np
 
 from .. import geometry, tribology
 from ..numerics import invert_angle
+from ..results import quantity
 from .base import Follower, register
+
+
+@dataclass(frozen=True)
+class FlatContact:
+    """Where a flat follower touches the cam."""
+
+    max_contact_offset: float = quantity("max_contact_offset_mm", "mm", "largest contact offset from the axis, h'")
 
 
 @register
@@ -37,6 +47,15 @@ class FlatFollower(Follower):
     def pressure_angle(self, heel, h, dh) -> np.ndarray:
         """Zero: the contact normal is the face's normal, the line of action."""
         return np.zeros_like(np.asarray(h, dtype=float))
+
+    def profile_contact(self, law, heel, max_offset) -> FlatContact:
+        """The profile stage's contact record: the largest contact offset ``max_offset`` [m] (the law's largest h'
+        per radian, Shang Hanji (1988), eq. 2.15)."""
+        return FlatContact(max_offset)
+
+    def face_offset(self, dh) -> np.ndarray:
+        """|h'| [m]: the contact point's distance from the face's axis (Shang Hanji (1988), eq. 2.15)."""
+        return np.abs(dh)
 
     def contact_offset(self, dh) -> float | np.ndarray:
         """h' [m]: the contact point's distance from the axis (Shang Hanji (1988), eq. 2.15)."""

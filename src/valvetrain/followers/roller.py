@@ -10,9 +10,25 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .. import geometry, tribology
-from ..numerics import invert_angle
+from .. import geometry, strength, tribology
+from ..checks import Check, check
+from ..numerics import extremum, invert_angle
+from ..results import quantity
+from ..units import DEG
 from .base import Follower, register
+
+PRESSURE_ANGLE_MAX = 30.0 * DEG
+"""Largest recommended pressure angle of a roller follower [rad] (UkrSURT Proceedings (2019))."""
+
+
+@dataclass(frozen=True)
+class RollerContact:
+    """How a roller follower meets the cam."""
+
+    roller_radius: float = quantity("roller_radius_mm", "mm", "roller radius")
+    max_pressure_angle: float = quantity("max_pressure_angle_deg", "deg", "largest pressure angle")
+    min_concave_radius: float = quantity("min_concave_radius_mm", "mm",
+                                         "concave radius closest to zero (null: no concave stretch)")
 
 
 @register
@@ -57,6 +73,33 @@ class RollerFollower(Follower):
     def pressure_angle(self, heel, h, dh) -> float | np.ndarray:
         """tan beta = h' / g (:func:`valvetrain.geometry.roller_pressure_angle`)."""
         return geometry.roller_pressure_angle(heel, self.radius, h, dh)
+
+    def profile_contact(self, law, heel, max_offset) -> RollerContact:
+        """The profile stage's contact record of the lift law ``law`` on the heel circle ``heel`` [m]: the roller's
+        radius, the largest pressure angle and the concave radius closest to zero (None: no concave stretch the
+        roller follows), each refined between the law's breakpoints (``max_offset``, a flat face's, unused)."""
+        bp = law.breakpoints
+        beta_max = extremum(lambda t: np.abs(law.profile(t, heel, self)[2]), bp, "max")[1]
+        # the concave radius closest to zero is the most negative curvature (the radius itself passes through
+        # -inf at the inflections, where its minimum would be found)
+        curvature = extremum(lambda t: 1.0 / law.curvature(t, heel, self), bp, "min")[1]
+        concave = 1.0 / curvature if curvature < 0.0 else 0.0
+        return RollerContact(self.radius, beta_max, concave if concave + self.radius < 0.0 else None)
+
+    def profile_checks(self, contact) -> list[Check]:
+        """The largest pressure angle of the contact record against :data:`PRESSURE_ANGLE_MAX`."""
+        return [check("profile.pressure_angle.max", contact.max_pressure_angle, high=PRESSURE_ANGLE_MAX,
+                      source="UkrSURT Proceedings (2019)", unit="deg")]
+
+    def side_force(self, force, heel, h, dh) -> np.ndarray:
+        """P_T tan(beta) [N] at the pressure angle beta (:func:`valvetrain.strength.roller_side_force`)."""
+        return strength.roller_side_force(force, self.pressure_angle(heel, h, dh))
+
+    def rolling_losses(self, u_follower, slip, resistance) -> tuple[np.ndarray, float, np.ndarray]:
+        """The roller's surface lags the cam's by the share ``slip``; it rolls at that velocity with the rolling
+        resistance coefficient ``resistance`` (:func:`valvetrain.tribology.friction_torque`)."""
+        u_follower = (1.0 - slip) * u_follower
+        return u_follower, resistance, u_follower
 
     def contact_offset(self, dh) -> np.ndarray:
         """Zero: the roller touches on its centre's normal, reported as no offset from the axis."""

@@ -19,7 +19,8 @@ from matplotlib.figure import Figure
 import numpy as np
 
 from ..design.dynamics_records import event_window
-from ..design.valve import CYCLE_CRANK, RHO_MIN
+from ..design.valve import CYCLE_CRANK
+from ..design.valve_checks import RHO_MIN
 from ..design.results import shown_value
 from ..errors import InputError
 from ..units import MM, per_cam_degree, rad_to_deg, to_display

@@ -189,6 +189,8 @@ class Parts(_Model):
     rocker_shaft_diameter_mm: Optional[Length(1.0, 200.0, low_open=False)] = None
     rocker_shaft_bore_mm: Length(0.0, 200.0, low_open=False) = 0.0
     rocker_width_mm: Optional[Length(0.5, 200.0, low_open=False)] = None
+    rocker_pivot_ball_radius_mm: Optional[Length(0.5, 100.0, low_open=False)] = None
+    rocker_pivot_seat_radius_mm: Optional[Length(0.5, 100.0, low_open=False)] = None
     finger_section_width_mm: Optional[Length(0.5, 100.0, low_open=False)] = None
     finger_section_height_mm: Optional[Length(0.5, 100.0, low_open=False)] = None
 
@@ -204,10 +206,11 @@ class Parts(_Model):
             o, i = getattr(self, outer), getattr(self, inner)
             if o is not None and i >= o:
                 problems.append(f"{inner} = {i:g} must be smaller than {outer} = {o:g}")
-        if self.ball_radius_mm is not None and self.socket_radius_mm is not None \
-                and self.socket_radius_mm <= self.ball_radius_mm:
-            problems.append(f"socket_radius_mm = {self.socket_radius_mm:g} must exceed ball_radius_mm = "
-                            f"{self.ball_radius_mm:g}")
+        for ball, socket in (("ball_radius_mm", "socket_radius_mm"),
+                             ("rocker_pivot_ball_radius_mm", "rocker_pivot_seat_radius_mm")):
+            b, s = getattr(self, ball), getattr(self, socket)
+            if b is not None and s is not None and s <= b:
+                problems.append(f"{socket} = {s:g} must exceed {ball} = {b:g}")
         if problems:
             raise InputError("; ".join(problems))
         return self

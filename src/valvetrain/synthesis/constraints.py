@@ -20,7 +20,6 @@ from .. import strength
 from ..checks import Check, check
 from ..locale import note
 from ..design.dynamics_checks import CHECK_SOURCE
-from ..design.valve import follower_accelerations
 from ..layouts import finger_inertia_force
 from ..numerics import extremum
 from ..units import DEG, MM
@@ -172,8 +171,8 @@ def spring_reserve(design, low, preload=None, rate=None) -> Check:
 
 def acceleration_band(design, low=None, high=None) -> list[Check]:
     """Largest and smallest tappet acceleration at the rated speed against a band [m/s^2]: two checks (a finger's:
-    its roller's, :func:`~valvetrain.design.valve.follower_accelerations`, as the design grades it)."""
-    smallest, largest = follower_accelerations(design.cam)
+    its roller's, :meth:`~valvetrain.followers.Follower.acceleration_range`, as the design grades it)."""
+    smallest, largest = design.cam.follower_model.acceleration_range(design.cam)
     out = []
     if high is not None:
         out.append(check("tappet_acceleration.max", largest, high=high, unit="m/s2", source=SOURCE_MANUAL))

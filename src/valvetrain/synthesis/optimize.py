@@ -218,7 +218,7 @@ def final_checks(design, spec, limits, scale=1.0, search_spring=None) -> list[Ch
         from 10 % of the rated speed up to the limit or 125 % of it, whichever is higher (the ``[dynamics]``
         section's train and range, the range raised to that top where it ends below).  Then every failure check of
         the design that the specification does not accept, as ``valvetrain run`` grades it (one place for the
-        limits: the valve-to-piston clearance of :data:`~valvetrain.design.valve.PISTON_CLEARANCE_MIN`, the
+        limits: the valve-to-piston clearance of :data:`~valvetrain.design.valve_checks.PISTON_CLEARANCE_MIN`, the
         separation below ``[engine] over_speed_ratio``), but where a constraint above is the same check with the
         same bounds: an optimum passes what ``run`` passes.
     """

@@ -12,7 +12,7 @@ from pydantic import BaseModel, ValidationError
 from .. import flow, springs
 from ..design.drive import spring_options
 from ..design.dynamics import build_train
-from ..design.valve import MAX_LIFT_TO_THROAT, follower_travel_acceleration
+from ..design.valve_checks import MAX_LIFT_TO_THROAT
 from ..dynamics.models import one_mass_train
 from ..dynamics.sweep import sweep
 from ..errors import InputError
@@ -223,7 +223,7 @@ class Problem:
         inertia = np.clip(-(self.mass * self.i_k * self.omega**2 * d2h + self.omega**2 * finger), 0.0, None)
         loaded = (inertia > 0.0) & (y > 0.0)
         nose = member_values([law.lift_max + law.ramp_height for law in laws], member)
-        acc = follower_travel_acceleration(self.follower, self.heel, h, dh, d2h)
+        acc = self.follower.travel_acceleration(self.heel, h, dh, d2h)
         q = {"spring reserve": np.where(loaded, spring / np.where(loaded, inertia, 1.0), np.inf),
              "lift": h / nose, "overshoot": -h / nose,
              "max acceleration": -acc, "min acceleration": acc}

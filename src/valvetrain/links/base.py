@@ -1,0 +1,95 @@
+"""The link interface: what a part of the train between the contact and the valve is to the rest of the package.
+
+A drive layout (:mod:`valvetrain.layouts`) is a contact, the follower that touches the cam (:mod:`valvetrain.followers`),
+and a chain of links from the cam to the valve: a tappet in its guide, a pushrod, a rocker on its shaft.  The stages
+loop over the links instead of asking which layout they are in: the strength stage collects each link's checks
+(:meth:`Link.checks`), the multi-mass train reads each link's mass key (:attr:`Link.mass_key`), the side force of a
+roller is carried by the first link (:attr:`Link.carrier`), a flat follower's face is the first link's
+(:meth:`Link.face_diameter`).
+
+For the author of a new link
+----------------------------
+Write one module in this package with a subclass of :class:`Link` decorated ``@register``, import it in
+``links/__init__.py``, and name it in a layout's chain (:data:`valvetrain.layouts.LAYOUTS`).  Its dimensions are keys
+of ``[valves.NAME.parts]`` (a new pydantic field of ``specification/models.py`` with its README row and report name),
+its mass a key of ``[drive.masses]``; its checks are :func:`valvetrain.strength.verdict` of a new
+:data:`valvetrain.strength.LIMITS` row (and its code's texts, ``tools/check_codes.py add``).  Links hold no state;
+their methods are pure functions of the loads (:class:`Loads`, SI) and return checks, never sentences.
+"""
+
+from dataclasses import dataclass
+from typing import Any, Callable, ClassVar, Optional
+
+REGISTRY = {}
+"""Link name -> its :class:`Link` instance, in the order of registration."""
+
+
+def register(cls) -> type:
+    """Class decorator: add an instance of a link class to :data:`REGISTRY` under its ``name``."""
+    REGISTRY[cls.name] = cls()
+    return cls
+
+
+@dataclass(frozen=True)
+class Loads:
+    """The loads and dimensions the links' checks take (SI), from the strength stage.
+
+    Attributes
+    ----------
+    parts : SI view of ``[valves.NAME.parts]``
+    cam_force : float
+        The largest force between cam and follower along the law's lift, P_T max [N].
+    valve_force : float
+        The largest force at the valve [N].
+    modulus : float
+        The contact modulus of the parts [Pa].
+    rocker_ratio : float
+        The rocker ratio i_k = l_v / l_t (1 without a rocker).
+    where : tuple
+        The note (:func:`valvetrain.locale.note`) of where (camshaft angle) and at which speed the cam force is
+        largest, which each check's note starts with.
+    guide_offset : float or None
+        The largest distance of the contact from the axis of a face sliding on the cam [m] (a flat follower's
+        max dh/dphi); None for a roller.
+    need : callable
+        ``need(keys, name)``: whether the ``[valves.NAME.parts]`` keys (their names in the file) are given; the
+        stage records those missing as the check ``name`` not checked.
+    """
+
+    parts: Any
+    cam_force: float
+    valve_force: float
+    modulus: float
+    rocker_ratio: float
+    where: tuple
+    guide_offset: Optional[float]
+    need: Callable[[list[str], str], bool]
+
+
+class Link:
+    """A link of the train between the contact and the valve (SI throughout).
+
+    Class attributes
+    ----------------
+    name : str
+        Its name in a layout's chain (:data:`valvetrain.layouts.LAYOUTS`).
+    mass_key : str or None
+        The ``[drive.masses]`` key of its mass (or inertia) in a multi-mass train; None for a link that does not
+        move (a rocker's pivot).
+    carrier : str
+        The note code (:mod:`valvetrain.locale`) of the link as the carrier of a roller's side force, where it is
+        the first link from the cam.
+    """
+
+    name: ClassVar[str]
+    mass_key: ClassVar[Optional[str]] = None
+    carrier: ClassVar[str] = ""
+
+    def checks(self, loads) -> list:
+        """The strength checks of the link under ``loads`` (:class:`Loads`), those whose keys are given: none."""
+        return []
+
+    def face_diameter(self, parts) -> Optional[float]:
+        """The diameter of the face the link offers a flat follower [m] (``parts``: SI view of
+        ``[valves.NAME.parts]``), or None where its face is not known."""
+        return None

@@ -1,0 +1,29 @@
+"""The pushrod (valvetrain.links.pushrod): its buckling margin against Euler's load computed by hand (Valve-train
+practical works (n.d.), eq. (7.8)), its head pressure, and the notes of the keys not given."""
+
+import math
+from types import SimpleNamespace
+
+import pytest
+
+from valvetrain.links import Pushrod
+
+from link_loads import loads
+
+
+def parts(**kw):
+    return SimpleNamespace(**{"pushrod_length": 0.250, "pushrod_diameter": 0.008, "pushrod_bore": 0.0,
+                              "pushrod_modulus": 2.1e11, "ball_radius": None, "socket_radius": None,
+                              "pushrod_head_area": 20e-6, **kw})
+
+
+def test_the_buckling_margin_and_head_pressure_by_hand():
+    """J = pi d^4 / 64 = 201.06 mm^4 for 8 mm; P_cr = pi^2 E J / l^2 = 6668 N at E = 2.1e5 MPa, l = 250 mm: a margin of
+    6.668 under 1000 N; the head's pressure 1000 N / 20 mm^2 = 50 MPa (hand calculation)."""
+    made, notes = loads(parts())
+    margin, head = Pushrod().checks(made)
+    p_cr = math.pi**2 * 2.1e11 * (math.pi * 0.008**4 / 64.0) / 0.250**2
+    assert p_cr == pytest.approx(6668.0, rel=1e-3)
+    assert margin.code == "strength.pushrod_buckling_margin" and margin.value == pytest.approx(p_cr / 1000.0)
+    assert head.code == "strength.pushrod_head_pressure" and head.value == pytest.approx(50e6)
+    assert notes == ["ball_socket_stress: not checked"]

@@ -1,0 +1,53 @@
+"""The pivot ball of a stud-mounted rocker (valvetrain.links.rocker_pivot): the fulcrum load of a lever of the first
+kind and the ball's contact stress in its seat against a hand calculation of Valve-train practical works (n.d.),
+eqs. (7.11)/(7.14), silent for a rocker on a shaft; in a design of the appendix example (a pushrod layout)."""
+
+from types import SimpleNamespace
+
+import pytest
+
+from valvetrain.links import RockerPivot
+from valvetrain.links.rocker_pivot import fulcrum_load
+from valvetrain.specification import SpecError
+
+from appendix import appendix_design
+from link_loads import loads
+
+
+def parts(ball=0.008, seat=0.0085):
+    return SimpleNamespace(rocker_pivot_ball_radius=ball, rocker_pivot_seat_radius=seat)
+
+
+def test_the_fulcrum_carries_both_arms_forces():
+    """R = P_T + P_v with P_v = P_T / i_k (the moments about the fulcrum balance): 1000 + 625 N at i_k = 1.6."""
+    assert fulcrum_load(1000.0, 1.6) == pytest.approx(1000.0 + 1000.0 * 1.0 / 1.6, rel=1e-15)
+
+
+def test_the_ball_s_contact_stress_by_hand():
+    """sigma = 0.388 (R E^2 (1/r_1 - 1/r_2)^2)^(1/3) with R = 1625 N, E = 2.1e5 MPa, r_1 = 8 mm, r_2 = 8.5 mm:
+    (1/8 - 1/8.5) mm^-1 = 7.353 m^-1, so sigma = 609.4 MPa (hand calculation), within 2000 MPa."""
+    made, notes = loads(parts(), cam_force=1000.0, rocker_ratio=1.6)
+    (c,) = RockerPivot().checks(made)
+    assert c.code == "strength.rocker_pivot_stress" and c.value == pytest.approx(609.40e6, rel=1e-4)
+    assert c.high == 2000e6 and c.passed and notes == []
+
+
+def test_a_rocker_on_a_shaft_has_no_pivot_ball_and_half_a_pivot_is_named():
+    assert RockerPivot().checks(loads(parts(None, None))[0]) == []
+    made, notes = loads(parts(seat=None))
+    assert RockerPivot().checks(made) == [] and notes == ["rocker_pivot_stress: not checked"]
+
+
+def test_the_pushrod_train_checks_its_pivot_ball_and_refuses_a_seat_no_larger():
+    """The appendix example (tappet, pushrod, rocker) with a pivot ball: the check in the design's strength record
+    under the largest cam force (its own record) and the rocker ratio 1.6 of the example; a seat no larger than the
+    ball is refused naming both keys."""
+    design = appendix_design(valves__intake__parts__rocker_pivot_ball_radius_mm=8.0,
+                             valves__intake__parts__rocker_pivot_seat_radius_mm=8.5)
+    strength = design.valves["intake"].drive.strength
+    (c,) = [c for c in strength.checks if c.code == "strength.rocker_pivot_stress"]
+    expected = 0.388 * (fulcrum_load(strength.cam_force_max, 1.6) * 2.1e11**2 * (1 / 0.008 - 1 / 0.0085)**2)**(1 / 3)
+    assert c.value == pytest.approx(expected, rel=1e-9)
+    with pytest.raises(SpecError, match="rocker_pivot_seat_radius_mm = 8 must exceed rocker_pivot_ball_radius_mm = 8"):
+        appendix_design(valves__intake__parts__rocker_pivot_ball_radius_mm=8.0,
+                        valves__intake__parts__rocker_pivot_seat_radius_mm=8.0)
