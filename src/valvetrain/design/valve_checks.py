@@ -13,7 +13,7 @@ from typing import Optional
 from .. import flow
 from ..checks import Check, check
 from ..layouts import LAYOUTS, layout
-from ..locale import note, note_text
+from ..locale import Note, note, note_text
 from ..units import DEG, MM
 
 
@@ -30,7 +30,7 @@ class Band:
     low: float = None
     high: float = None
     source: str = ""
-    note: tuple = ()
+    note: Note = ()
 
 
 _FOR_DIRECT = {"rocker": "band.acceleration_for_direct_rocker", "pushrod": "band.acceleration_for_direct_pushrod"}

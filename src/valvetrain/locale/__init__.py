@@ -155,7 +155,11 @@ class _Numbers(string.Formatter):
         return format(value, format_spec)
 
 
-def note(code, **params) -> tuple[tuple[str, tuple], ...]:
+Note = tuple[tuple[str, tuple[tuple[str, float | str], ...]], ...]
+"""A check's note as data (:func:`note`'s parts): each part a ``[notes]`` code and its parameters."""
+
+
+def note(code, **params) -> Note:
     """A check's note as data: one part, the code of ``[notes]`` and its parameters (numbers in SI or display units
     as the text says, never preformatted); parts add up (``note(a) + note(b)``: joined by ``"; "``).
 
