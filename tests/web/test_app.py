@@ -18,7 +18,8 @@ from bokeh.document import Document  # noqa: E402
 
 from valvetrain.web.app import (INCH, SEVERITY_COLOURS, WORDS, Designer, _now, kept_range,  # noqa: E402
                                 thinned)
-from valvetrain.web.session import Session, form  # noqa: E402
+from valvetrain.web.form import form  # noqa: E402
+from valvetrain.web.session import Session  # noqa: E402
 
 from appendix import appendix_text  # noqa: E402
 from breathing_example import breathing_text  # noqa: E402

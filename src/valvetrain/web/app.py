@@ -1,7 +1,7 @@
 """The page of the designer: a Bokeh document per browser tab, on a :class:`~valvetrain.web.session.Session`.
 
 The page fits 1400 x 900 px: a bar of commands on top; on the left the specification panel, generated from the
-specification's models (:func:`valvetrain.web.session.form`) and grouped as a designer thinks (engine, valve, cam,
+specification's models (:func:`valvetrain.web.form.form`) and grouped as a designer thinks (engine, valve, cam,
 spring, drive, dynamics), each input with its name, unit and range; on the right the lift and the acceleration with
 their handles, below them the other plots in tabs (velocity and jerk; contour and curvature; time-area and spring;
 the dynamics at speed; the breathing's volumetric efficiency against the speed), and at the bottom the checks and
@@ -47,7 +47,8 @@ from ..report.html import check_range
 from ..report.i18n import TEXT
 from ..report.names import label, record_quantity_text, translate
 from ..units import per_cam_degree
-from .session import GROUPS, document_key, form, has_points, parse_value, value_at, value_of, value_text
+from .form import GROUPS, form, parse_value, value_at, value_of, value_text
+from .session import document_key, has_points
 
 WORDS = {lang: catalogue(lang)["designer"] for lang in LANGS}
 """The designer's own words in each language, from the catalogue's ``[designer]`` (the plots' and the checks' come from
@@ -445,7 +446,7 @@ class Designer:
 
     def _panel(self) -> Tabs:
         """The specification panel in the page's language: a tab per group
-        (:data:`~valvetrain.web.session.GROUPS`), in each the inputs of every valve, those of the valve shown
+        (:data:`~valvetrain.web.form.GROUPS`), in each the inputs of every valve, those of the valve shown
         visible.  Built again for another language (each input's new name would lay the page out once more)."""
         document = self.session.document
         self.group_columns, self.fields, self.widgets = {}, {}, {}
