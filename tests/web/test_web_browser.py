@@ -425,7 +425,7 @@ def test_the_measured_lobe_example_opens(page):
 def test_a_specification_without_valves_is_served(page):
     # issue 36's fuzzer: `valvetrain serve examples/v8-crank.toml` (an engine without valves) answered its page with
     # HTTP 500 (a KeyError); issue 40: every shipped example opens, this one with its engine's keys and checks
-    from valvetrain.web.app import WORDS
+    from valvetrain.web.draw import WORDS
 
     for url in _served(str(EXAMPLES / "v8-crank.toml")):
         response = page.goto(url, wait_until="commit")
