@@ -1,4 +1,4 @@
-"""The specification panel's fields without a browser (web/form.py): the models' bounds, the names, the values parsed."""
+"""The specification panel's fields without a browser (web/form.py): the bounds, the names, the values parsed."""
 
 import pytest
 

@@ -85,9 +85,9 @@ class SweepPanel:
         (:meth:`~valvetrain.web.session.Session.sweep_one`: a fraction of the whole design's time), then the whole
         design of the good document with every valve's sweep (:meth:`~valvetrain.web.session.Session.settle`; the
         valve shown is not swept again: the first's design is kept for it), its checks to the table; a newer change
-        stops both where they are (:meth:`stop_sweep`).  ``document``: a drag's released (default the good one), whose design
-        ``job`` (a future of :meth:`~valvetrain.web.session.Session.design`) the whole design waits for: nothing
-        more of it is swept when it does not design."""
+        stops both where they are (:meth:`stop_sweep`).  ``document``: a drag's released (default the good one),
+        whose design ``job`` (a future of :meth:`~valvetrain.web.session.Session.design`) the whole design waits
+        for: nothing more of it is swept when it does not design."""
         self.generation += 1
         self.stop_sweep()
         generation, seq, valve = self.generation, self.sweep_seq, self.valve
