@@ -22,7 +22,8 @@ arrival of the redraw), ``window.vtMoveTimes`` (a move of the pointer sent to th
 brought); ``window.vtTimesDone``, ``window.vtSweepTimesDone`` count the redraws painted.
 
 The page is built by :mod:`valvetrain.web.layout`, drawn with the pieces of :mod:`valvetrain.web.draw` (words,
-columns, ranges, scripts, units); its sweep panel is :mod:`valvetrain.web.sweep`'s.
+columns, ranges, scripts, units); its sweep panel is :mod:`valvetrain.web.sweep`'s, its panel of variable valve
+actuation (a lost-motion drive, a switching finger: where the specification has them) :mod:`valvetrain.web.vva`'s.
 """
 
 import base64
@@ -45,13 +46,14 @@ from .form import form, parse_value, value_at, value_of, value_text
 from .layout import Layout
 from .session import document_key, has_points
 from .sweep import SweepPanel
+from .vva import VvaPanel
 
 DESIGN_WORKERS = ThreadPoolExecutor(max_workers=1, thread_name_prefix="valvetrain-design")
 """One thread for the designs of the drags released (their springs, checks and breathing), beside the sweeps': the
 page's answer to the release (the valve's kinematics) and to the next move does not wait for them."""
 
 
-class Designer(Layout, SweepPanel):
+class Designer(Layout, SweepPanel, VvaPanel):
     """The widgets, plots and callbacks of one browser tab."""
 
     def __init__(self, doc, session, key=""):
@@ -133,6 +135,7 @@ class Designer(Layout, SweepPanel):
                 self._checks()
                 self._card()
                 self._breathing()
+                self._vva()
                 self._sync_fields()
                 _send(self.saved, {"document": [json.dumps(self.session.document)]})
         finally:
@@ -296,8 +299,8 @@ class Designer(Layout, SweepPanel):
                 self.laws[valve] = value_at(document, f"valves.{valve}.cam.law")
                 for path in [p for p in self.widgets if p.startswith(f"valves.{valve}.cam.")]:
                     del self.widgets[path], self.fields[path]
-                self.group_columns[("cam", valve)].children = [self._widget(f) for f in dict(form(document,
-                                                                                                  valve))["cam"]]
+                fields = dict(form(document, valve)).get("cam", [])
+                self.group_columns[("cam", valve)].children = [self._widget(f) for f in fields]
         self._syncing = True
         try:
             for path, w in self.widgets.items():

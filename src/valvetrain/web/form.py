@@ -14,7 +14,8 @@ import tomli_w
 
 from ..specification import REGISTRY
 from ..specification.fields import Range
-from ..specification.models import Drive, Dynamics, Engine, Masses, Spring, Valve
+from ..specification.models import Drive, Dynamics, Engine, LostMotion, Masses, Spring, Valve
+from ..specification.switching import Switching
 
 
 @dataclass(frozen=True)
@@ -88,9 +89,14 @@ def field_of(path, info, value) -> Field:
 GROUPS = (("engine", (("engine", Engine),)), ("valve", (("valves.{}", Valve),)), ("cam", (("valves.{}.cam", None),)),
           ("spring", (("valves.{}.spring", Spring),)),
           ("drive", (("valves.{}.drive", Drive), ("valves.{}.drive.masses", Masses))),
-          ("dynamics", (("valves.{}.dynamics", Dynamics),)))
+          ("dynamics", (("valves.{}.dynamics", Dynamics),)),
+          ("vva", (("valves.{}.hydraulic.lost_motion", LostMotion), ("valves.{}.switching", Switching))))
 """The groups of the specification panel as a designer thinks of them, each with its sections and their models
 (the cam's is the registry's model of its law)."""
+
+WHERE_PRESENT = ("valves.{}.hydraulic.lost_motion", "valves.{}.switching")
+"""The sections of the panel shown only where the document has them (variable valve actuation: a lost-motion
+hydraulic drive, a switching finger)."""
 
 
 def value_at(document, path) -> Any:
@@ -124,7 +130,7 @@ def value_of(document, f) -> Any:
 def form(document, valve=None) -> list[tuple[str, list[Field]]]:
     """The specification panel of a document for valve ``valve``: ``[(group, [Field, ...]), ...]`` (:data:`GROUPS`),
     every scalar key of the engine and of the valve's sections, with the document's values (a key it lacks shows
-    the model's default); the engine's alone without a valve."""
+    the model's default); the engine's alone without a valve; a group without fields left out."""
     out = []
     for group, sections in GROUPS:
         if valve is None and group != "engine":
@@ -132,10 +138,13 @@ def form(document, valve=None) -> list[tuple[str, list[Field]]]:
         fields = []
         for pattern, model in sections:
             path = pattern.format(valve)
+            if pattern in WHERE_PRESENT and not isinstance(value_at(document, path), dict):
+                continue
             section_model = model or REGISTRY.get(value_at(document, path + ".law"))
             if section_model is not None:
                 fields += _section_fields(document, path, section_model)
-        out.append((group, fields))
+        if fields:                                  # none: sections only where present (WHERE_PRESENT), absent
+            out.append((group, fields))
     return out
 
 

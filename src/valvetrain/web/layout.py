@@ -52,8 +52,12 @@ class Layout:
             if group != "engine" and not self.names:
                 continue
             parts = []
-            for valve in [None] if group == "engine" else self.names:
-                fields = dict(form(document, valve))[group]
+            valves = [None] if group == "engine" else self.names
+            shown = {valve: dict(form(document, valve)).get(group, []) for valve in valves}
+            if not any(shown.values()):            # a group of sections where present (form.WHERE_PRESENT): none
+                continue
+            for valve in valves:
+                fields = shown[valve]
                 box = column(*[self._widget(f) for f in fields], visible=valve in (None, self.valve),
                              width=PANEL_WIDTH - 30)
                 self.group_columns[(group, valve)] = box
@@ -243,6 +247,7 @@ class Layout:
                                       text_font_size="11px", background_fill_color="white", background_fill_alpha=0.8)
         p.add_layout(self.breathing_status)
         self.figures["breathing"] = p
+        vva = self._vva_build(tools)
         self.speed = Slider(start=0, end=1, value=0, step=1, width=1020, name="speed", visible=False)
         self.speed.on_change("value_throttled", self.on_speed)
 
@@ -270,7 +275,8 @@ class Layout:
             TabPanel(title="", child=row(f["time_area"], f["spring"])),
             TabPanel(title="", child=column(self.speed, row(f["sweep_force"], f["sweep_seating"], f["sweep_map"],
                                                             f["at_speed"]))),
-            TabPanel(title="", child=row(f["breathing"]))])
+            TabPanel(title="", child=row(f["breathing"])),
+            *([TabPanel(title="", child=row(*vva))] if vva is not None else [])])
         bar = row(self.valve_select, self.length_select, self.angle_select, self.derivative_select,
                   *self.buttons.values(), self.overlay, self.download, self.language, width=WIDTH, height=34)
         main = column(row(f["lift"], f["acceleration"]), self.plot_tabs, row(self.table, self.card_table))
@@ -342,7 +348,8 @@ class Layout:
         self.figures["breathing"].yaxis.axis_label = w["volumetric_efficiency"]
         self.torque_axis.axis_label = w["torque"]
         for panel, key in zip(self.plot_tabs.tabs, ("tab_derivatives", "tab_cam", "tab_flow", "tab_speed",
-                                                    "tab_breathing"), strict=True):
+                                                    "tab_breathing", "tab_vva")[:len(self.plot_tabs.tabs)],
+                              strict=True):
             panel.title = w[key]
         for c, key in zip(self.check_columns, ("status", "quantity", "value", "baseline", "allowed", "margin", "source"),
                           strict=True):
