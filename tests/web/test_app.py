@@ -295,3 +295,16 @@ def test_the_breathing_panel_shows_a_cam_phasers_best_phase():
         f"{b['advance_crank_deg']:.3g} at {b['speed_rpm']:.0f} rpm" for b in best))
 
 
+
+
+def test_a_release_where_the_pointer_last_moved_paints_nothing_again():
+    # the release's answer to a drag whose last move drew its curves changed nothing, yet the page painted its plots
+    # again (most of its work of a release): the stamp says whether the redraw changed anything (fails before: no
+    # such column)
+    d = _designer()
+    _request(d, "move", "nose", 0.0, 9.4, seq=1, finish=False)
+    assert d.kinematic_stamp.data["changed"] == [1]
+    _request(d, "end", "nose", 0.0, 9.4, seq=2, finish=False)
+    assert d.kinematic_stamp.data["seq"] == [2] and d.kinematic_stamp.data["changed"] == [0]
+    d.finish_edit()                                       # the design kept: its checks, its spring drawn
+    assert d.kinematic_stamp.data["changed"] == [1]

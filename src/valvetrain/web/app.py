@@ -74,12 +74,17 @@ class Designer(Layout, SweepPanel, VvaPanel):
         self.fields, self.widgets = {}, {}
         self.refused_paths = set()
         self.key = key
+        self.changes = 0                 # the document's changes made (a redraw's: did it change anything?)
         self._build()
+        doc.on_change(self._changed)
         self._texts()
         self.redraw(sweep=bool(self.names))
         self.show_problems()
 
     # --- drawing ---------------------------------------------------------------------------------------------------
+    def _changed(self, event) -> None:
+        self.changes += 1
+
     def _shown(self):
         """The document and the design drawn: a drag's preview while the pointer moves, else the good design."""
         return self.shown or (self.session.document, self.session.good)
@@ -128,6 +133,7 @@ class Designer(Layout, SweepPanel, VvaPanel):
         of the request drawn before, :meth:`_release`)."""
         began = _now() if began is None else began
         _hold(self.kinematic_hold)
+        before = self.changes
         try:
             if self.valve is not None:
                 self._draw_valve()
@@ -139,7 +145,8 @@ class Designer(Layout, SweepPanel, VvaPanel):
                 self._sync_fields()
                 _send(self.saved, {"document": [json.dumps(self.session.document)]})
         finally:
-            _count(self.kinematic_stamp, began, seq if curves_seq is None else curves_seq)
+            _count(self.kinematic_stamp, began, seq if curves_seq is None else curves_seq,
+                   changed=self.changes > before)
         if live:
             return
         _count(self.checks_stamp, began, seq)
@@ -446,7 +453,7 @@ class Designer(Layout, SweepPanel, VvaPanel):
                 self.shown = (document, result)
                 self.redraw(began=began, seq=seq, live=True)
             else:
-                _count(self.kinematic_stamp, began, seq)
+                _count(self.kinematic_stamp, began, seq, changed=False)
             return
         self._release(values, began, seq)
 

@@ -155,8 +155,13 @@ if (!window[key]) {
 UNPAUSE_JS = """
 const views = window[key] || [];
 window[key] = null;
-views.forEach((v) => v.unpause());
+const data = cb_obj.data instanceof Map ? Object.fromEntries(cb_obj.data) : cb_obj.data;
+const changed = data.changed === undefined || data.changed[0] !== 0;
+views.forEach((v) => v.unpause(!changed));
 """
+"""Resume the plots a :func:`_held` source paused, painted again only when the redraw changed something (the
+stamp's ``changed``, :func:`_count`): a release where the pointer last moved changes nothing the last move's answer
+did not draw, and painting the plots again was most of the page's work of it."""
 
 DRAWN_JS = """
 requestAnimationFrame(() => requestAnimationFrame(() => { drawn.data = {n: [stamp.data.n[0]]}; }));
@@ -340,17 +345,19 @@ def _now():
     return time.time(), time.process_time()
 
 
-def _count(stamp, began, seq=0):
+def _count(stamp, began, seq=0, changed=True):
     """One more redraw on a stamp's source (its change in the page stamps the time), with the server's times
     ``began`` (:func:`_now` when the change came) and now, as ms since the epoch: the page, on the same clock,
     parts its wait into the way up, the server and the way down; the processor time the server's process spent
-    in between [ms] (what the server costs on a loaded machine); ``seq`` the page's request it answers."""
+    in between [ms] (what the server costs on a loaded machine); ``seq`` the page's request it answers;
+    ``changed`` whether the redraw changed anything of the plots its stamp holds (:data:`UNPAUSE_JS`)."""
     stamp.data = {"n": [stamp.data["n"][0] + 1], "began": [1e3 * began[0]], "ended": [1e3 * time.time()],
-                  "cpu": [1e3 * (time.process_time() - began[1])], "seq": [seq]}
+                  "cpu": [1e3 * (time.process_time() - began[1])], "seq": [seq], "changed": [int(changed)]}
 
 
 def _stamp(name):
-    return ColumnDataSource({"n": [0], "began": [0.0], "ended": [0.0], "cpu": [0.0], "seq": [0]}, name=name)
+    return ColumnDataSource({"n": [0], "began": [0.0], "ended": [0.0], "cpu": [0.0], "seq": [0], "changed": [1]},
+                            name=name)
 
 
 def _fit(rng, columns, room):
