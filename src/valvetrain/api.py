@@ -69,7 +69,8 @@ def valve_series(v) -> dict[str, Any]:
     seat, on a ramp the motion that closes the clearance), the law's segment boundaries, the radius of
     curvature, the curtain area and the running time-area against the crank angle from the gas-exchange TDC, the
     contour (cam frame, nose on +y) with its heel circle, and the spring's required force and chosen line against
-    the valve lift.
+    the valve lift; a lost-motion drive's valve lift of the full lift and of each solenoid timing against the cycle
+    crank angle (:func:`lost_motion_series`).
     """
     drive = v.drive
     order = np.argsort(drive.lift)
@@ -82,7 +83,20 @@ def valve_series(v) -> dict[str, Any]:
         "required_force_N": _column(drive.required_force)[order],
         "spring_line_lift_mm": top / MM,
         "spring_line_force_N": _column(chosen.force(top)),
+        **(lost_motion_series(v) if v.lost_motion is not None else {}),
     }
+
+
+def lost_motion_series(v) -> dict[str, Any]:
+    """The series of a lost-motion drive (the report's figure's, :func:`~valvetrain.report.hydraulic_plots.
+    lost_motion_data`): ``lost_motion_crank_deg`` the cycle crank angle, ``lost_motion_valve_lift_mm`` the valve
+    lift of each run (rows: the full lift, then each solenoid timing), ``lost_motion_opens_crank_deg`` each run's
+    solenoid opening (None: the full lift)."""
+    from .report.hydraulic_plots import lost_motion_data
+
+    d = lost_motion_data(v)
+    return {"lost_motion_crank_deg": d["crank_deg"], "lost_motion_opens_crank_deg": [at for at, _, _ in d["runs"]],
+            "lost_motion_valve_lift_mm": [lift for _, lift, _ in d["runs"]]}
 
 
 def kinematic_series(cam, profile) -> dict[str, Any]:

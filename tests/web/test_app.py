@@ -3,7 +3,6 @@ colours, the pictures, the units, the downloads, the sweeps it starts, and `valv
 that does not validate."""
 
 import base64
-import copy
 from pathlib import Path
 import re
 import tomllib
@@ -14,43 +13,13 @@ import tomli_w
 
 pytest.importorskip("bokeh")
 
-from bokeh.document import Document  # noqa: E402
-
-from valvetrain.web.app import (INCH, SEVERITY_COLOURS, WORDS, Designer, _now, kept_range,  # noqa: E402
-                                thinned)
-from valvetrain.web.session import Session, form  # noqa: E402
+from valvetrain.web.draw import SEVERITY_COLOURS, WORDS  # noqa: E402
 
 from appendix import appendix_text  # noqa: E402
 from breathing_example import breathing_text  # noqa: E402
+from designer_page import _designer, _field, _request, _row, _swept  # noqa: E402
 
 EXAMPLES = Path(__file__).parents[2] / "examples"
-
-
-def _row(designer, quantity, column):
-    data = designer.checks.data
-    return data[column][data["key"].index(quantity)]
-
-
-def _field(d, path):
-    return next(f for _, group in form(d.session.document, d.valve) for f in group if f.path == path)
-
-
-def _request(d, kind, name="", x=0.0, y=0.0, plot="lift", text="", seq=1, finish=True):
-    """What page.js sends: a handle moved, released or nudged, undo, redo, restore; a release's design (in the worker
-    thread) waited for and kept unless not ``finish``."""
-    d.on_request("data", {}, {"kind": [kind], "seq": [seq], "plot": [plot], "name": [name], "x": [x], "y": [y],
-                              "text": [text]})
-    if finish:
-        d.finish_edit()
-
-
-def _designer(text=None, folder=None):
-    return Designer(Document(), Session.start(text, folder))
-
-
-def _swept(d):
-    d.draw_sweep(d.generation, Session.settle(d.session.document), _now())
-    return d
 
 
 def test_page_callbacks():
@@ -174,75 +143,6 @@ def test_serve_on_a_port_in_use_is_one_line():
                                           "in use); give another --port (0: any free port) or --host"]
 
 
-def test_sweep_starts_when_the_page_has_drawn_the_newest_kinematics():
-    d = _designer()
-    started = []
-    d.start_sweep = lambda: started.append(d.kinematic_stamp.data["n"][0])
-    d.redraw()
-    newest = d.kinematic_stamp.data["n"][0]
-    d.on_drawn("data", None, {"n": [newest - 1]})         # an older redraw drawn: its sweep would be stale
-    assert started == []
-    d.on_drawn("data", None, {"n": [newest]})
-    d.on_drawn("data", None, {"n": [newest]})             # once per redraw
-    assert started == [newest]
-    d.redraw(sweep=False)                                 # a language or unit switch: no new sweep
-    d.on_drawn("data", None, {"n": [newest + 1]})
-    assert started == [newest]
-    # the first design's sweep is due before any edit (the page says when it has drawn it: the panel is not empty
-    # until the first edit)
-    first = _designer()
-    first.start_sweep = lambda: started.append("first")
-    first.on_drawn("data", None, {"n": [first.kinematic_stamp.data["n"][0]]})
-    assert started[-1] == "first"
-
-
-def test_checks_of_the_sweeps_are_pending_until_the_whole_design_comes():
-    d = _designer()
-
-    # the built-in example: both valves with a [dynamics] section, two checks each (seating velocity, jump speed)
-    def dynamic():
-        return [k for k in d.checks.data["key"] if "dynamic seating velocity" in k or "(jump)" in k]
-
-    assert dynamic() == []
-    _swept(d)
-    found = dynamic()
-    assert len(found) == 4
-    d.on_field(_field(d, "engine.rated_speed_rpm"), "value", 7000, 6500)
-    data = d.checks.data
-    rows = [i for i, k in enumerate(data["key"]) if k in found]
-    assert len(rows) == 4
-    assert {data["value"][i] for i in rows} == {"…"}
-    assert {data["colour"][i] for i in rows} == {SEVERITY_COLOURS["pending"]}
-    assert {data["status"][i] for i in rows} == {"pending"}
-    _swept(d)
-    assert "…" not in d.checks.data["value"]
-
-
-def test_the_sweep_panel_comes_from_the_valve_alone_before_the_whole_design():
-    d = _swept(_designer())
-    d.on_field(_field(d, "engine.rated_speed_rpm"), "value", 7000, 6500)
-    # the valve's sweep alone is the whole design's sweep of it (the same series from the two designs)
-    alone = Session.sweep_one(d.session.document, "intake")
-    whole = Session.settle(d.session.document)
-    assert alone == whole["sweeps"]["intake"]
-    # drawn first, with the page's probe stamped for the release that asked for it; the checks of the dynamics
-    # still pending until the whole design comes, which stamps nothing the probe counts
-    d.draw_sweep_of(d.generation, "intake", alone, _now(), 7)
-    assert d.sweep_stamp.data["seq"] == [7]
-    assert len(d.sweep_sources["force"].data["y"]) == len(alone["speed_rpm"])
-    assert "pending" in d.checks.data["status"]
-    # the other valve shown before the whole design comes: its sweep is to come, not the intake's in its place
-    d.on_valve("value", "intake", "exhaust")
-    assert d.sweep_status.text == WORDS["en"]["sweeping"]
-    d.draw_sweep(d.generation, whole, _now(), 0)
-    assert d.sweep_stamp.data["seq"] == [0] and "pending" not in d.checks.data["status"]
-    assert list(d.sweep_sources["force"].data["y"]) == whole["sweeps"]["exhaust"]["min_contact_force_N"]
-    # a valve the whole design does not sweep: without a [dynamics] section beside one with it
-    mixed = copy.deepcopy(d.session.document)
-    del mixed["valves"]["exhaust"]["dynamics"]
-    assert Session.sweep_one(mixed, "exhaust") is None
-
-
 def test_accepted_failures_say_so_in_words():
     # issue 40: accepted failures showed green with negative margins; the built-in example accepts six
     d = _designer()
@@ -255,47 +155,6 @@ def test_accepted_failures_say_so_in_words():
     assert all(data["margin"][i].startswith("-") for i in accepted)
     passing = [i for i, m in enumerate(data["margin"]) if m.startswith("+")]
     assert {data["status"][i] for i in passing} == {"passes"}
-
-
-def test_the_sweep_plots_have_their_own_axes_and_the_map_its_colour_bar():
-    # issue 40: the seating velocity plot took the force plot's axis (0-800 N) through the shared marks of the jump
-    # and bounce speeds, and showed a flat line; the lift-error map had no colour bar
-    d = _swept(_designer())
-    seating = np.abs(np.array(d.sweep_sources["seating"].data["y"], dtype=float))
-    seating = seating[np.isfinite(seating)]
-    rng = d.figures["sweep_seating"].y_range
-    assert rng.start <= seating.min() and seating.max() <= rng.end < 2.0 * seating.max()
-    marks = d.sweep_marks["seating"].data
-    assert len(marks["x"]) and max(marks["y1"]) == pytest.approx(seating.max())
-    force = d.sweep_sources["force"].data["y"]
-    assert d.figures["sweep_force"].y_range.end >= np.nanmax(force)
-    assert d.colour_bar in d.figures["sweep_map"].right and d.colour_bar.color_mapper is d.mapper
-    assert d.mapper.high == pytest.approx(np.nanmax(np.abs(d.map_source.data["image"][0])))
-
-
-def test_the_dynamics_against_the_angle_at_a_chosen_speed():
-    d = _swept(_designer())
-    sweep = d.sweeps["intake"]
-    # at first the swept speed nearest the rated one (7000 rpm)
-    speeds = np.array(sweep["speed_rpm"])
-    i = int(np.argmin(np.abs(speeds - 7000.0)))
-    assert d.speed.value == pytest.approx(speeds[i])
-    d.speed.value = float(speeds[5])
-    d.on_speed("value_throttled", None, float(speeds[5]))
-    force = np.array(d.at_speed.data["force"], dtype=float)
-    # the speed's row of the sweep's maps
-    assert np.array_equal(force, np.array(sweep["map_contact_force_N"][5], dtype=float), equal_nan=True)
-    # the cam contact force against the angle: its least where the valve is well open is not below the sweep's
-    # smallest contact force while the cam lifts at that speed (the per-speed table, over every angle of the sweep)
-    series = d.session.good["series"]["intake"]
-    open_ = np.interp(d.at_speed.data["x"], series["cam_deg"], series["valve_lift_mm"]) > 0.5
-    assert np.min(force[open_]) >= sweep["min_contact_force_N"][5] - 1e-6
-    assert d.figures["at_speed"].title.text == f"at {speeds[5]:.0f} rpm"
-    # the rigid train's acceleration at that speed is the rated speed's scaled by the square of the speed ratio
-    rigid = np.array(d.at_speed.data["rigid"], dtype=float)
-    assert np.nanmax(rigid) == pytest.approx(np.interp(d.at_speed.data["x"], series["cam_deg"],
-                                                       series["valve_acceleration_m_s2"]).max()
-                                             * (speeds[5] / 7000.0) ** 2, rel=1e-9)
 
 
 @pytest.mark.parametrize("example", ["ukrsurt2019-diesel.toml", "modern-dohc-roller-finger.toml"])
@@ -325,29 +184,6 @@ def test_the_curvature_plot_is_one_over_rho_with_its_limit():
     assert np.nanmax(d.curves.data["curvature_limit"]) == pytest.approx(0.5)
     rng = d.figures["curvature"].y_range
     assert rng.end >= 0.5 and rng.end - rng.start < 1.0
-
-
-def test_units_lengths_in_inches_angles_in_crank_degrees():
-    d = _designer()
-    series = d.session.good["series"]["intake"]
-    d.length_select.value, d.angle_select.value = "in", "crank"
-    curves = d.curves.data
-    n = len(series["cam_deg"])
-    assert np.nanmax(curves["lift"]) == pytest.approx(max(series["valve_lift_mm"]) / INCH, rel=1e-6)
-    # crank deg from the gas-exchange TDC: the nose of the intake at 116 crank deg (the cam card's lobe centre)
-    assert np.asarray(curves["x"][:n]) == pytest.approx(np.asarray(series["crank_deg"]), rel=1e-6)
-    assert d.handles["lift"].data["x"][0] == pytest.approx(116.0)
-    assert d.handles["lift"].data["y"][0] == pytest.approx(9.0 / INCH)
-    assert d.figures["lift"].yaxis.axis_label == "lift, in"
-    # per crank degree: half the slope per cam degree; in inches
-    d.derivative_select.value = "deg"
-    v = np.asarray(d.curves.data["velocity"][:n], dtype=float)
-    slope = np.gradient(np.asarray(series["valve_lift_mm"]) / INCH, np.asarray(series["crank_deg"]))
-    off = np.asarray(series["valve_lift_mm"]) > 0.5
-    assert np.max(np.abs(v[off] - slope[off])) < 0.01 * np.max(np.abs(slope))
-    # a handle dragged in these units: the nose to 0.4 in = 10.16 mm
-    _request(d, "end", "nose", 116.0, 0.4)
-    assert d.session.document["valves"]["intake"]["max_lift_mm"] == pytest.approx(10.16)
 
 
 def test_overlay_of_a_file_and_the_dxf_of_the_contour():
@@ -385,24 +221,6 @@ def test_the_cam_card_gives_the_events_the_lobe_separation_and_the_overlap():
     assert "at 1 mm valve lift: opens, crank deg" in card and "at 0.050 in (1.27 mm) tappet lift: opens, crank deg" in card
 
 
-def test_plot_ranges_are_kept_while_the_curves_keep_half_their_room():
-    # a lift from 0 to 10 mm with a quarter of its span as room: (-2.5, 12.5) mm.  Raised to 11 mm it still has
-    # 12.5 - 11 = 1.5 mm >= 2.75 / 2 above it: kept (no new ticks, no new layout).  Raised to 12 mm, 0.5 mm < 3 / 2:
-    # refitted to (-3, 15).  Cut to 2 mm the range 18 mm wide is more than twice the 2 + 2 x 0.5 = 3 mm it wants:
-    # refitted to (-0.5, 2.5)
-    assert kept_range(0.0, 1.0, 0.0, 10.0, 0.25) == (-2.5, 12.5)
-    assert kept_range(-2.5, 12.5, 0.0, 11.0, 0.25) == (-2.5, 12.5)
-    assert kept_range(-2.5, 12.5, 0.0, 12.0, 0.25) == (-3.0, 15.0)
-    assert kept_range(-3.0, 15.0, 0.0, 2.0, 0.25) == (-0.5, 2.5)
-    # the redraws of a drag change a range only when it moves: the nose 0.1 mm higher leaves the lift plot's
-    d = _designer()
-    lift = d.figures["lift"].y_range
-    before = (lift.start, lift.end)
-    _request(d, "end", "nose", 0.0, 9.1)
-    assert d.session.document["valves"]["intake"]["max_lift_mm"] == pytest.approx(9.1)
-    assert (lift.start, lift.end) == before
-
-
 def test_a_drag_sends_only_the_sources_that_change():
     # the page gets a message per changed source (and paints its plots again): after the sweep panel is drawn, a drag
     # of the nose changes the curves and the handles, never the sweep panel of the last whole design (its new sweep
@@ -419,34 +237,6 @@ def test_a_drag_sends_only_the_sources_that_change():
     changed.clear()
     _request(d, "end", "nose", 0.0, 8.8)
     assert d.curves in changed and d.base_curves not in changed
-
-
-def test_thinned_curve_keeps_what_a_plot_shows():
-    # sin x on [0, 2 pi] in 2001 samples with one sample raised by 5 (a spike a plot must show): every-k-th sampling
-    # drops it; the thinned curve keeps it, the ends, and the extremes of sin x (1 at pi/2, -1 at 3 pi/2, samples
-    # pi/1000 apart: within 1 - cos(pi/2000) = 1.2e-6 of the closed form's)
-    x = np.linspace(0.0, 2.0 * np.pi, 2001)
-    y = np.sin(x)
-    y[777] += 5.0
-    tx, ty = thinned(x, y, buckets=100)
-    assert len(tx) <= 202 and np.all(np.diff(tx) > 0.0)
-    assert (tx[0], ty[0], tx[-1], ty[-1]) == (x[0], y[0], x[-1], y[-1])
-    assert (x[777], y[777]) in set(zip(tx, ty, strict=True))
-    spikeless = np.delete(np.arange(len(tx)), np.flatnonzero(tx == x[777]))
-    assert ty[spikeless].max() == pytest.approx(1.0, abs=1.3e-6)
-    assert ty.min() == pytest.approx(-1.0, abs=1.3e-6)
-    # every sample between two kept points lies within their span of a bucket: no sample above the kept maximum or
-    # below the kept minimum of its bucket (the line covers the pixels the whole curve covers)
-    bucket = np.minimum((x / (2.0 * np.pi) * 100).astype(int), 99)
-    kept_bucket = np.minimum((tx / (2.0 * np.pi) * 100).astype(int), 99)
-    for b in range(100):
-        assert y[bucket == b].max() == ty[kept_bucket == b].max()
-        assert y[bucket == b].min() == ty[kept_bucket == b].min()
-    # a short curve and one with a gap as they are
-    assert thinned(x[:150], y[:150], buckets=100)[0].size == 150
-    gap = y.copy()
-    gap[10] = np.nan
-    assert thinned(x, gap, buckets=100)[1].size == 2001
 
 
 def test_curves_sent_to_the_page_are_thinned_to_what_the_plots_show():
@@ -468,14 +258,6 @@ def test_curves_sent_to_the_page_are_thinned_to_what_the_plots_show():
     assert (cx[0], cy[0]) == (cx[-1], cy[-1])
     assert set(zip(cx, cy, strict=True)) <= set(zip(np.float32(series["contour_x_mm"]), np.float32(series["contour_y_mm"]),
                                                     strict=True))
-
-
-def test_a_specification_without_valves_opens_with_its_engine_and_checks():
-    path = EXAMPLES / "v8-crank.toml"
-    d = _designer(path.read_text(encoding="utf-8"), path.parent)
-    assert d.valve is None and [p.title for p in d.spec_tabs.tabs] == ["Engine"]
-    assert any(k.startswith("crank") or "torque" in k for k in d.checks.data["key"])
-    assert d.status.text == WORDS["en"]["no_valves"]
 
 
 def test_the_breathing_panel_follows_an_edit_of_the_intake_closing():
@@ -513,40 +295,16 @@ def test_the_breathing_panel_shows_a_cam_phasers_best_phase():
         f"{b['advance_crank_deg']:.3g} at {b['speed_rpm']:.0f} rpm" for b in best))
 
 
-def _run_callbacks(d):
-    """Run the callbacks the worker threads left for the server's loop (none runs without a server), each once."""
-    while d.doc.session_callbacks:
-        callback = d.doc.session_callbacks[0]
-        d.doc.remove_next_tick_callback(callback)
-        callback.callback()
 
 
-def test_an_edit_sweeps_each_valve_once(monkeypatch):
-    # issue 40: the sweep of the valve shown (drawn first, alone) was swept again by the whole design after it
-    import valvetrain.design.valve as stages
-    from valvetrain.specification import example_text
-    from valvetrain.web.app import DESIGN_WORKERS, SWEEP_WORKERS
-
-    document = tomllib.loads(example_text())
-    for valve in document["valves"].values():
-        valve["dynamics"]["speeds"] = 12                  # a short sweep: what is counted is the same
-    d = _designer(tomli_w.dumps(document))
-    swept, real = [], stages.dynamics_stage
-    monkeypatch.setattr(stages, "dynamics_stage", lambda *a, **k: swept.append(a[5]) or real(*a, **k))
-    # a drag released: its kinematics at once; then its design and, beside it, the valve's sweep (not waiting for
-    # the design), then the whole design's sweeps (waiting for it)
-    _request(d, "end", "nose", 0.0, 9.5, seq=3, finish=False)
-    assert d.kinematic_stamp.data["seq"] == [3] and swept == []
-    _run_callbacks(d)
-    for workers in (DESIGN_WORKERS, SWEEP_WORKERS):
-        workers.submit(lambda: None).result()             # the threads done
-    assert swept == ["intake", "exhaust"]                 # the valve shown first, alone; the other by the whole design
-    _run_callbacks(d)
-    assert d.session.document["valves"]["intake"]["max_lift_mm"] == 9.5 and d.checks_stamp.data["seq"] == [3]
-    assert d.sweep_stamp.data["n"] == [2] and "pending" not in d.checks.data["status"]   # the valve's, the whole
-    assert len(d.sweep_sources["force"].data["y"]) == 12
-    # an edit in the panel: its sweep when the page has drawn it, each valve once again
-    d.on_field(_field(d, "engine.rated_speed_rpm"), "value", 7000, 6500)
-    d.on_drawn("data", None, {"n": [d.kinematic_stamp.data["n"][0]]})
-    SWEEP_WORKERS.submit(lambda: None).result()
-    assert swept == ["intake", "exhaust"] * 2
+def test_a_release_where_the_pointer_last_moved_paints_nothing_again():
+    # the release's answer to a drag whose last move drew its curves changed nothing, yet the page painted its plots
+    # again (most of its work of a release): the stamp says whether the redraw changed anything (fails before: no
+    # such column)
+    d = _designer()
+    _request(d, "move", "nose", 0.0, 9.4, seq=1, finish=False)
+    assert d.kinematic_stamp.data["changed"] == [1]
+    _request(d, "end", "nose", 0.0, 9.4, seq=2, finish=False)
+    assert d.kinematic_stamp.data["seq"] == [2] and d.kinematic_stamp.data["changed"] == [0]
+    d.finish_edit()                                       # the design kept: its checks, its spring drawn
+    assert d.kinematic_stamp.data["changed"] == [1]

@@ -422,10 +422,21 @@ def test_the_measured_lobe_example_opens(page):
         assert value(page, "valves.intake.cam.table_file") == "data/measured-intake-lobe.csv"
 
 
+@pytest.mark.parametrize("example", ["lost-motion-intake.toml", "switching-finger.toml"])
+def test_the_variable_valve_actuation_examples_open(page, example):
+    # issue 42: the lost-motion intake and the switching finger in the designer, their tab drawn
+    for url in _served(str(EXAMPLES / example)):
+        opened(page, url)
+        page.locator(".bk-tab", has_text=re.compile("^Lost motion, switching$")).click()
+        expect(page.locator(".bk-tab.bk-active", has_text=re.compile("^Lost motion, switching$"))).to_be_visible()
+        assert len(model_data(page, "vva-rows")["item"]) > 0 and len(model_data(page, "vva")["label"]) >= 2
+        assert page.errors == []
+
+
 def test_a_specification_without_valves_is_served(page):
     # issue 36's fuzzer: `valvetrain serve examples/v8-crank.toml` (an engine without valves) answered its page with
     # HTTP 500 (a KeyError); issue 40: every shipped example opens, this one with its engine's keys and checks
-    from valvetrain.web.app import WORDS
+    from valvetrain.web.draw import WORDS
 
     for url in _served(str(EXAMPLES / "v8-crank.toml")):
         response = page.goto(url, wait_until="commit")

@@ -1,0 +1,228 @@
+"""The designer's speed-sweep panel: the sweep of the valve shown and the whole design's, in a worker thread, the
+newest drawn (the smallest contact force and the seating velocity against the speed, the map of the lift error,
+the dynamics against the angle at a chosen speed).
+"""
+
+from concurrent.futures import ThreadPoolExecutor
+import ctypes
+from functools import partial
+import threading
+
+import numpy as np
+
+from ..errors import ValvetrainError
+from .draw import PLOT_ROOM, WORDS, _array, _array_2d, _count, _fit, _hold, _now, _send
+from .session import document_key
+
+SWEEP_WORKERS = ThreadPoolExecutor(max_workers=1, thread_name_prefix="valvetrain-sweep")
+"""One thread for the speed sweeps of every tab (2 cores: the kinematics keep the other)."""
+
+LOCK = threading.Lock()
+"""Held while a :class:`Computing` opens, closes or is interrupted."""
+
+
+class Stale(ValvetrainError):
+    """Raised into a speed sweep that a newer change made stale."""
+
+
+def _raise_in(thread, exc):
+    """Raise exception class ``exc`` in thread ``thread`` at its next Python instruction, or (``exc`` None) drop the
+    one set there and not yet raised: CPython's ``PyThreadState_SetAsyncExc``."""
+    ctypes.pythonapi.PyThreadState_SetAsyncExc(ctypes.c_ulong(thread), None if exc is None else ctypes.py_object(exc))
+
+
+class Computing:
+    """A stretch of a sweep's computing in the worker thread (``with``) that a newer change stops at once
+    (:meth:`interrupt`: :class:`Stale` raised in it), not at the sweep's next speed: the whole design's stages after
+    its last speed (the sweep's refinement, the strength, the results' records) ran 0.3 to 0.4 s without one, and the
+    release of the next drag waited for them (its sweep in the same worker, its answer for the processor).
+
+    ``stale()`` says whether the sweep is stale: then the stretch does not open.  At most one :class:`Stale` is
+    raised into a stretch, and only while it is open (its thread runs the computing, none of Bokeh's); one set and
+    not yet raised when it closes is dropped."""
+
+    def __init__(self, stale):
+        self.stale, self.thread, self.open, self.interrupted = stale, None, False, False
+
+    def __enter__(self):
+        with LOCK:
+            if self.stale():
+                raise Stale
+            self.thread, self.open = threading.get_ident(), True
+        return self
+
+    def __exit__(self, kind, value, traceback):
+        while True:
+            try:
+                with LOCK:
+                    self.open = False
+                    if self.interrupted:
+                        _raise_in(self.thread, None)
+                return False
+            except Stale:                       # the interruption raised here, after the computing: closed again
+                continue
+
+    def interrupt(self) -> None:
+        """Stop the computing of a stale sweep where it is (nothing when it is not open)."""
+        with LOCK:
+            if self.open and not self.interrupted:
+                self.interrupted = True
+                _raise_in(self.thread, Stale)
+
+
+class SweepPanel:
+    """The speed sweep of a :class:`~valvetrain.web.app.Designer`: started, drawn, and its speed chosen."""
+
+    def on_drawn(self, attr, old, new) -> None:
+        """The page has drawn the kinematics of redraw ``new["n"]``: the sweep of the newest one starts (its thread
+        would have held up the sending of the kinematics, and the page's drawing of them)."""
+        if self.sweep_due and new["n"][0] == self.kinematic_stamp.data["n"][0]:
+            self.sweep_due = False
+            self.start_sweep()
+
+    def start_sweep(self, document=None, job=None) -> None:
+        """In the worker thread: the speed sweep of the valve shown alone, drawn as soon as it comes
+        (:meth:`~valvetrain.web.session.Session.sweep_one`: a fraction of the whole design's time), then the whole
+        design of the good document with every valve's sweep (:meth:`~valvetrain.web.session.Session.settle`; the
+        valve shown is not swept again: the first's design is kept for it), its checks to the table; a newer change
+        stops both where they are (:meth:`stop_sweep`).  ``document``: a drag's released (default the good one),
+        whose design ``job`` (a future of :meth:`~valvetrain.web.session.Session.design`) the whole design waits
+        for: nothing more of it is swept when it does not design."""
+        self.generation += 1
+        self.stop_sweep()
+        generation, seq, valve = self.generation, self.sweep_seq, self.valve
+        self.sweep_status.text = WORDS[self.lang]["sweeping"]
+        document = self.session.document if document is None else document
+        self.sweep_key = document_key(document)
+
+        def progress(name, done, total):
+            if generation != self.generation:
+                raise Stale
+
+        computing = self.computing = Computing(lambda: generation != self.generation)
+
+        def work():
+            began, memo = _now(), {}
+            try:
+                with computing:
+                    first = self.session.sweep_one(document, valve, progress=progress, memo=memo)
+                if first is not None:
+                    self.doc.add_next_tick_callback(partial(self.draw_sweep_of, generation, valve, first, began, seq))
+                if job is not None and not job.result()["ok"]:
+                    return
+                with computing:
+                    result = self.session.settle(document, progress=progress, memo=memo)
+            except Stale:
+                return
+            self.doc.add_next_tick_callback(partial(self.draw_sweep, generation, result, began,
+                                                    0 if first is not None else seq))
+
+        SWEEP_WORKERS.submit(work)
+
+    def stop_sweep(self) -> None:
+        """Stop the computing of the sweep started before (:class:`Computing`) if a newer change made it stale."""
+        if self.computing is not None:
+            self.computing.interrupt()
+
+    def _sweep_curves(self, sw, sources):
+        _send(sources["force"], {"x": _array(sw["speed_rpm"]), "y": _array(sw["min_contact_force_N"])})
+        _send(sources["seating"], {"x": _array(sw["speed_rpm"]),
+                                   "y": np.abs(_array(sw["seating_velocity_m_s"]))})
+
+    def draw_sweep_of(self, generation, valve, sweep, began, seq=0) -> None:
+        """Draw the sweep of one valve (:meth:`start_sweep`'s first answer) if it is the newest redraw's; ``began``
+        as for :meth:`redraw`, when the worker took it up; ``seq`` the page's request of the design."""
+        if generation != self.generation:
+            return
+        self.sweeps[valve] = sweep
+        _hold(self.sweep_hold)
+        try:
+            self._sweep_panel()
+        finally:
+            _count(self.sweep_stamp, began, seq)
+
+    def draw_sweep(self, generation, result, began, seq=0) -> None:
+        """Keep the whole design of redraw ``generation`` if it is the newest: its checks to the table, its sweeps
+        to the sweep panel; ``began`` as for :meth:`redraw`, when the worker took it up; ``seq`` the page's request
+        of the design (0: its panel drawn already, from the valve's own sweep)."""
+        if generation != self.generation:
+            return
+        self.finish_edit()                                # the document swept is the good one (its design came)
+        if generation != self.generation:
+            return
+        self.session.settled(result)
+        self.sweeps = dict(result.get("sweeps") or {}) if result["ok"] else {}
+        if seq:
+            _hold(self.sweep_hold)
+        try:
+            if result["ok"] and result["results"] is not None:
+                self._checks()
+            self._sweep_panel()
+        finally:
+            _count(self.sweep_stamp, began, seq)
+
+    def _sweep_panel(self):
+        """The sweep panel of the valve shown; without its sweep, its label says that the whole design is to come,
+        the problems of the whole design when it did not design, or a dash (the whole design swept no such valve)."""
+        sw = self.sweeps.get(self.valve)
+        if sw is None:
+            full = self.session.full
+            self.sweep_status.text = (WORDS[self.lang]["sweeping"] if full is None
+                                      else "; ".join(p["text"] for p in full["errors"]) or "-")
+            return
+        self._sweep_curves(sw, self.sweep_sources)
+        base = (self.base_sweeps or {}).get(self.valve)
+        if base is not None:
+            self._sweep_curves(base, self.base_sweep_sources)
+        for key in ("force", "seating"):
+            p = self.figures["sweep_" + key]
+            for rng, column_name, room in ((p.x_range, "x", 0.0), (p.y_range, "y", PLOT_ROOM)):
+                _fit(rng, [s[key].data[column_name] for s in (self.sweep_sources, self.base_sweep_sources)], room)
+        marks = [v for v in (sw["jump_speed_rpm"], sw["bounce_speed_rpm"]) if v is not None]
+        for key, values in (("force", sw["min_contact_force_N"]), ("seating", sw["seating_velocity_m_s"])):
+            found = np.abs(_array(values))
+            found = found[np.isfinite(found)]
+            low, high = (float(found.min()), float(found.max())) if found.size else (0.0, 1.0)
+            _send(self.sweep_marks[key], {"x": _array(marks), "y0": _array([low] * len(marks)),
+                                          "y1": _array([high] * len(marks))})
+        err = _array_2d(sw["map_lift_error_mm"]) * self.units.mm
+        bound = float(np.nanmax(np.abs(err))) if np.isfinite(err).any() else 1.0
+        self.mapper.update(low=-(bound or 1.0), high=bound or 1.0)
+        x, n = sw["map_cam_deg"], sw["speed_rpm"]
+        _send(self.map_source, {"image": [err], "x": [x[0]], "y": [n[0]], "dw": [x[-1] - x[0]], "dh": [n[-1] - n[0]]})
+        p = self.figures["sweep_map"]
+        _fit(p.x_range, [[x[0], x[-1]]], 0.0)
+        _fit(p.y_range, [[n[0], n[-1]]], 0.0)
+        speeds = sw["speed_rpm"]
+        step = (speeds[-1] - speeds[0]) / max(1, len(speeds) - 1)
+        value = self.speed.value if self.speed.visible and speeds[0] <= self.speed.value <= speeds[-1] \
+            else sw["rated_speed_rpm"]
+        self.speed.update(start=speeds[0], end=speeds[-1], step=step or 1.0, visible=True,
+                          value=float(speeds[int(np.argmin(np.abs(np.asarray(speeds) - value)))]))
+        self._at_speed(sw)
+        t = WORDS[self.lang]
+        self.sweep_status.text = ", ".join(f"{t[k]} {v:.5g} rpm" for k, v in (("jump", sw["jump_speed_rpm"]),
+                                                                               ("bounce", sw["bounce_speed_rpm"]))
+                                           if v is not None) or "-"
+
+    def _at_speed(self, sw):
+        """The dynamics against the camshaft angle at the speed chosen (the slider, a speed of the sweep): the cam
+        contact force, the valve's acceleration of the elastic train and the rigid one (the kinematic acceleration at
+        the rated speed scaled by the square of the speed ratio)."""
+        i = int(np.argmin(np.abs(np.asarray(sw["speed_rpm"]) - self.speed.value)))
+        series = self.session.good["series"][self.valve]
+        x = _array(sw["map_cam_deg"])
+        rated = self.session.good["results"]["engine"]["rated_speed_rpm"]
+        rigid = np.interp(x, series["cam_deg"], _array(series["valve_acceleration_m_s2"])) \
+            * (sw["speed_rpm"][i] / rated) ** 2
+        force, acceleration = (_array_2d(sw[k])[i] for k in ("map_contact_force_N", "map_valve_acceleration_m_s2"))
+        _send(self.at_speed, {"x": x, "force": force, "acceleration": acceleration, "rigid": rigid})
+        p = self.figures["at_speed"]
+        _fit(p.x_range, [x], 0.0)
+        _fit(p.y_range, [force], PLOT_ROOM)
+        _fit(p.extra_y_ranges["acceleration"], [acceleration, rigid], PLOT_ROOM)
+        p.title.text = WORDS[self.lang]["at_speed"].format(speed=f"{sw['speed_rpm'][i]:.0f}")
+
+    def on_speed(self, attr, old, new) -> None:
+        if self.sweeps.get(self.valve) is not None:
+            self._at_speed(self.sweeps[self.valve])
