@@ -30,7 +30,7 @@ class Band:
     low: float = None
     high: float = None
     source: str = ""
-    note: tuple = ()
+    note: tuple[tuple[str, tuple[tuple[str, str | float], ...]], ...] = ()
 
 
 _FOR_DIRECT = {"rocker": "band.acceleration_for_direct_rocker", "pushrod": "band.acceleration_for_direct_pushrod"}
