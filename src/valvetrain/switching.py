@@ -188,33 +188,45 @@ def arm_train(inertia, inner_arm, rate, preload, stiffness) -> OneMassTrain:
 
 
 def quasi_static_jump_speed(mass, preload, rate, travel, acceleration) -> float:
-    """The camshaft speed at which a rigid follower leaves its cam, min sqrt((F_0 + K u) / (m (-u''))) over the
-    angles where u'' < 0 [rad/s] (inf where the cam never decelerates it).
+    """The camshaft speed at which a rigid follower leaves its cam, min sqrt((F_0 + K u) / (m (-a))) over the
+    angles where a < 0 [rad/s] (inf where the cam never decelerates it, 0 where the spring's force F_0 + K u is
+    nowhere positive enough to hold it even at rest).
 
     Parameters
     ----------
     mass : float
         m [kg] at the travel u.
-    preload, rate : float
-        F_0 [N], K [N/m] of the spring that holds it on.
-    travel, acceleration : ndarray
-        u [m] and u'' [m/rad^2] over the cam.
+    preload : float or ndarray
+        F_0 [N] of the spring that holds it on (an array: a force of its own at each angle, another spring's load
+        subtracted).
+    rate : float
+        K [N/m] of that spring.
+    travel : ndarray
+        u [m], the spring's deflection from F_0 over the cam.
+    acceleration : ndarray
+        a [m/rad^2], the follower's acceleration by the camshaft angle over the cam: u'' where the spring's seat is
+        fixed; the follower's own where the seat moves (the two-step finger's arm, its spring on the moving body).
 
     Notes
     -----
-    The contact force of a rigid train is :math:`F = F_0 + K u + m\\omega^2 u''`; it first reaches zero where
-    :math:`\\omega^2 = (F_0 + K u) / (m(-u''))` is smallest (Norton (2009), the chapter on the dynamics of follower
-    trains: the follower jump of a force-closed cam).
+    The contact force of a rigid train is :math:`F = F_0 + K u + m\\omega^2 a`; it first reaches zero where
+    :math:`\\omega^2 = (F_0 + K u) / (m(-a))` is smallest, or at rest where :math:`F_0 + K u \\le 0` (Norton (2009),
+    the chapter on the dynamics of follower trains: the follower jump of a force-closed cam).
 
     >>> round(quasi_static_jump_speed(0.01, 10.0, 0.0, np.zeros(2), np.array([1.0, -0.001])), 3)
     1000.0
+    >>> quasi_static_jump_speed(0.01, np.array([10.0, -1.0]), 0.0, np.zeros(2), np.array([-0.001, 0.0]))
+    0.0
     """
     u = np.asarray(travel, dtype=float)
     a = np.asarray(acceleration, dtype=float)
+    static = np.broadcast_to(preload + rate * u, u.shape)
+    if static.min() <= 0.0:
+        return 0.0
     down = a < 0.0
     if not down.any():
         return float("inf")
-    return float(np.sqrt(np.min((preload + rate * u[down]) / (mass * -a[down]))))
+    return float(np.sqrt(np.min(static[down] / (mass * -a[down]))))
 
 
 def latch_force(cam_force, inner_arm, latch_arm) -> float | np.ndarray:

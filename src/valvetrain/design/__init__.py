@@ -296,12 +296,13 @@ def run(spec, laws=None, progress=None, headlines_only=False, diagnose=True, mem
         if stage is not None:
             found += [c.named(tag) for c in stage.checks]
     phased = [name for name, v in views.items() if v.phaser is not None]
-    b = breathing_view(spec) if phased and breathing is not None else None
+    switched = {name: v for name, v in views.items() if v.switching is not None}
+    b = breathing_view(spec) if (phased or switched) and breathing is not None else None
     phasers = {name: phaser_stage(name, views[name].phaser, views[name], engine, valves[name], breathing, b, shaft)
                for name in phased}
     found += [c for p in phasers.values() for c in p.checks]
-    switching = {name: switching_stage(name, v.switching, v, engine, valves[name])
-                 for name, v in views.items() if v.switching is not None}
+    switching = {name: switching_stage(name, v.switching, v, engine, valves[name], output, breathing, b)
+                 for name, v in switched.items()}
     found += [c for s in switching.values() for c in s.checks]
     found, valves = accept(found, spec.accepted, valves)
     card = cam_card_stage(valves) if valves and engine.strokes == 4 else None

@@ -10,6 +10,25 @@ from ..spring_materials import GRADES
 from .fields import Length, _bounded, _Model
 
 
+class LowLobe(_Model):
+    """[valves.NAME.switching.low_lobe]: the second, low-lift lobe of a two-step switching finger, a lift law like the
+    valve's own: the cam section's law and coefficients with its own largest valve lift ``max_lift_mm`` and events
+    ``opens_deg`` and ``closes_deg`` (crank deg, counted as the valve's own ``opens_deg`` and ``closes_deg``: before the
+    dead centre where the stroke starts, after the one where it ends; negative: after it, before it), on the same
+    base circle and seen through the same finger; the finger's body follows it unlatched."""
+
+    max_lift_mm: Length(0.3, 500.0, low_open=False)
+    opens_deg: _bounded(-180.0, 180.0, "deg")
+    closes_deg: _bounded(-180.0, 180.0, "deg")
+
+    @model_validator(mode="after")
+    def _an_event(self):
+        if self.opens_deg + self.closes_deg + 180.0 <= 0.0:
+            raise InputError(f"opens_deg = {self.opens_deg:g}, closes_deg = {self.closes_deg:g}: allowed "
+                             "opens_deg + 180 + closes_deg > 0 (the lobe's event, crank deg)")
+        return self
+
+
 class Switching(_Model):
     """[valves.NAME.switching]: a switching roller finger follower on a valve whose cam has ``follower = "finger"``:
     the finger's body rests on the pivot (lash adjuster) and the valve, and an inner arm carrying the roller is
@@ -17,7 +36,9 @@ class Switching(_Model):
     pin locks the arm to the body.
 
     ``mode``: ``"deactivation"``, the unlatched valve stays shut (cylinder deactivation) and the arm follows its cam
-    against the lost-motion spring.  ``inner_arm_mm``: the arm's pivot to its roller centre, L_i;
+    against the lost-motion spring; ``"two_step"``, the unlatched body follows a second, low-lift lobe
+    (``[valves.NAME.switching.low_lobe]``, :class:`LowLobe`) and lifts the valve by it while the arm follows the main
+    lobe against the lost-motion spring (two-step lift).  ``inner_arm_mm``: the arm's pivot to its roller centre, L_i;
     ``inner_arm_inertia_kg_mm2``: its moment of inertia about that pivot, the roller's included, J_i;
     ``contact_stiffness_N_per_mm``: the arm's stiffness at the roller, cam contact and the arm's bending in series
     (the unlatched arm's dynamics).  ``reserve``: the lost-motion spring's margin over the arm's inertia torque at
@@ -31,9 +52,9 @@ class Switching(_Model):
     The breathing of the deactivated cylinder (its valves shut all cycle), with ``compression_ratio``: its trapped
     charge at ``trapped_pressure_kPa`` and ``trapped_temperature_C`` at the bottom dead centre (what the deactivation
     traps: fresh charge or exhaust, as the engine's strategy makes it), the walls at ``wall_temperature_C``; needs
-    ``engine.rod_length_mm``."""
+    ``engine.rod_length_mm``; a deactivation's only."""
 
-    mode: Literal["deactivation"] = "deactivation"
+    mode: Literal["deactivation", "two_step"] = "deactivation"
     inner_arm_mm: Length(2.0, 200.0, low_open=False)
     inner_arm_inertia_kg_mm2: _bounded(0.01, 1e5, "kg mm2", low_open=False)
     contact_stiffness_N_per_mm: _bounded(100.0, 1e7, "N/mm", low_open=False)
@@ -50,6 +71,7 @@ class Switching(_Model):
     trapped_pressure_kPa: Optional[_bounded(1.0, 10000.0, "kPa")] = None
     trapped_temperature_C: Optional[_bounded(-50.0, 1500.0, "degC")] = None
     wall_temperature_C: Optional[_bounded(-50.0, 1500.0, "degC")] = None
+    low_lobe: Optional[LowLobe] = None
 
     @model_validator(mode="after")
     def _consistent(self):
@@ -71,6 +93,13 @@ class Switching(_Model):
         if given and len(given) < len(trapped):
             problems.append(f"{', '.join(given)} given: the deactivated cylinder's breathing needs "
                             f"{', '.join(k for k in trapped if k not in given)} too (or none of them)")
+        if (self.mode == "two_step") != (self.low_lobe is not None):
+            problems.append(f"mode = {self.mode!r}" + (": needs a low_lobe section (the second lobe's max_lift_mm, "
+                            "opens_deg, closes_deg)" if self.low_lobe is None else ": allowed a low_lobe section only "
+                            "with mode = 'two_step'"))
+        if self.mode == "two_step" and given:
+            problems.append(f"{', '.join(given)} given with mode = 'two_step': allowed only with mode = "
+                            "'deactivation' (the deactivated cylinder's trapped charge)")
         if problems:
             raise InputError("; ".join(problems))
         return self
