@@ -25,6 +25,9 @@ rpm) are converted to SI for the physics functions.  Stages:
   the phase, the valve-to-piston gap at the range's ends, the breathing at every phase of the map with the phased
   side's effective areas shifted, the best phase per speed, the torque the phaser holds from the camshaft's drive
   torque;
+* a switching roller finger (:mod:`.switching`, ``[valves.NAME.switching]``, after the phasers): the lost-motion
+  spring, the unlatched arm's dynamics and the latch; a two-step finger's low lobe, both modes' events and time-area
+  and, with ``[breathing]``, each mode's breathing (:mod:`.two_step`);
 * a valve with a ``[hydraulic]`` section (:mod:`.hydraulic_actuation`) opens against the cylinder pressure of the
   engine's cycle: ``run`` designs the valve without it, runs the breathing and the crank stage (whose Wiebe cycle
   needs every valve's timing) and adds the hydraulic stage after them (``with_hydraulic``: the breathing's cylinder
