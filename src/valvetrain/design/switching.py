@@ -73,6 +73,20 @@ class TwoStepRecord:
 
 
 @dataclass(frozen=True)
+class LatchSwitching:
+    """The latch's switching: the window in which it may move (both arms on their base circles) and the pin's travel
+    times under the oil and back on its spring."""
+
+    window: float = quantity("switching_window_cam_deg", "cam deg", "the switching window: the camshaft's turn with "
+                             "both arms on their base circles, 360 less the lobes' event")
+    window_time: float = quantity("switching_window_ms", "ms", "that window's time at the rated speed")
+    engage: float = quantity("latch_engage_time_ms", "ms", "the pin's travel under the oil against its spring")
+    back: float = quantity("latch_return_time_ms", "ms", "its travel back on the spring, its oil drained through "
+                           "the passage")
+    share: float = quantity("latch_time_share", label="the longer travel over the window's time at the rated speed")
+
+
+@dataclass(frozen=True)
 class SwitchingRecord:
     """A valve's switching roller finger follower: the two modes, the lost-motion spring, the arm's dynamics and the
     latch."""
@@ -127,6 +141,8 @@ class SwitchingRecord:
                                   default=SPRING_SOURCE)
     two_step: Optional[TwoStepRecord] = quantity("two_step", label="two-step: both modes' events, time-area and "
                                                  "breathing", omit_none=True, default=None)
+    latch: Optional[LatchSwitching] = quantity("latch_switching", label="with the latch's oil and spring: its "
+                                               "switching window and travel times", omit_none=True, default=None)
 
 
 @dataclass(frozen=True)
@@ -232,6 +248,7 @@ def switching_stage(name, switching, valve, engine, design, output=None, breathi
     latch = float(sw.latch_force(cam_force, inner, switching.latch_arm))
     latch_stress = float(sw.latch_stress(latch, switching.latch_width, switching.latch_pin_diameter, STEEL_MODULUS,
                                          switching.latch_seat_radius))
+    latching = _latching(switching, cam, 2.0 * np.pi - (theta[-1] - theta[0]))
     figures = SwitchingRecord(
         switching.mode, float(design.flow.valve_lift), unlatched, swing, crank * omega, reserve, float(required.max()),
         preload, rate, top, float(sw.torsion_coils(STEEL_MODULUS, wire, mean, rate)), stress, stress / strength,
@@ -239,7 +256,7 @@ def switching_stage(name, switching, valve, engine, design, output=None, breathi
         None if two_step or not np.isfinite(jump) else crank * jump, crank * static,
         None if speeds is None else crank * float(speeds[-1]), arm_force, valve_force, valve_preload, cam_force, latch,
         latch_stress, *_air_spring(switching, engine), () if speeds is None else tuple(crank * speeds), min_force,
-        two_step=modes.record)
+        two_step=modes.record, latch=latching)
     checks = (
         check("switching.jump_speed", (jump if np.isfinite(jump) else speeds[-1]) / omega, low=1.0,
               source=cite("norton2009", "the chapter on the dynamics of follower trains"), severity="failure",
@@ -253,8 +270,27 @@ def switching_stage(name, switching, valve, engine, design, output=None, breathi
         check("switching.latch_stress", latch_stress, high=LATCH_LIMIT, unit="MPa", source=LATCH_SOURCE,
               severity="failure"),
         *modes.checks,
+        *(() if latching is None else (
+            check("switching.latch_time", latching.share, high=1.0, severity="failure",
+                  source=f"{cite('merritt1967')}: the orifice equation of the pin's passage; "
+                         f"{cite('hendriksma2007')}: the latch moves only on the base circle"),)),
     )
     return SwitchingResult(figures, tuple(c.of_valve(name) for c in checks))
+
+
+def _latching(switching, cam, window) -> Optional[LatchSwitching]:
+    """The latch's switching window ``window`` [camshaft rad] and its time at the rated speed, the pin's travel times
+    both ways (:func:`valvetrain.switching.latch_travel_time`); None without the latch's oil and spring."""
+    if switching.latch_stroke is None:
+        return None
+    area = np.pi * switching.latch_pin_diameter ** 2 / 4.0
+    times = [sw.latch_travel_time(switching.latch_pin_mass_kg, area, switching.latch_stroke,
+                                  switching.latch_spring_preload_N, switching.latch_spring_rate,
+                                  switching.oil_pressure, np.pi * switching.oil_passage_diameter ** 2 / 4.0,
+                                  switching.oil_density_kg_m3, switching.passage_discharge_coefficient, engage)
+             for engage in (True, False)]
+    window_time = window / cam.cam_speed
+    return LatchSwitching(window, window_time, *times, max(times) / window_time)
 
 
 def _arm_sweep(name, switching, travel, train, speeds):

@@ -16,6 +16,9 @@ TWO_STEP_ROWS = ("latched_opens", "latched_closes", "unlatched_opens", "unlatche
                  "time_area_unlatched", "low_rho_min", "valve_jump")
 """The rows of a two-step finger's table of modes (fields of :class:`~valvetrain.design.switching.TwoStepRecord`)."""
 
+LATCH_ROWS = ("window", "window_time", "engage", "back", "share")
+"""The rows of the latch's switching table (fields of :class:`~valvetrain.design.switching.LatchSwitching`)."""
+
 BREATH_COLUMNS = ("speed", "trapped_mass", "volumetric_efficiency", "residual_gas_fraction", "pmep", "imep")
 """The columns of a two-step finger's breathing table after the mode (fields of
 :class:`~valvetrain.design.two_step.ModeBreath`)."""
@@ -28,7 +31,8 @@ def switching_chapters(results, checks, lang) -> list[dict]:
     """One chapter a valve with a [switching] section: ``name``, the catalogue's words ``words``, the table's
     ``rows`` (key, display value), the sweep's ``speeds`` (rows of speed and smallest force; none two-step), a
     two-step finger's ``two_step`` rows (key, display value; None deactivated), its ``breathing`` (the columns' keys
-    and rows of the mode's word and the values; None without [breathing]) and ``checks``."""
+    and rows of the mode's word and the values; None without [breathing]), the latch's switching ``latch`` (key,
+    display value; None without the latch's oil and spring) and ``checks``."""
     words = catalogue(lang)["switching"]
     out = []
     for name, s in results.switching.items():
@@ -44,5 +48,6 @@ def switching_chapters(results, checks, lang) -> list[dict]:
                                                 for b in modes.breathing]}
         out.append({"name": name, "words": words, "rows": rows, "speeds": speeds, "sources": SOURCES,
                     "two_step": None if modes is None else shown(modes, *TWO_STEP_ROWS), "breathing": breath,
+                    "latch": None if f.latch is None else shown(f.latch, *LATCH_ROWS),
                     "checks": checks[name].get("switching", [])})
     return out
