@@ -301,8 +301,8 @@ def run(spec, laws=None, progress=None, headlines_only=False, diagnose=True, mem
     phased = [name for name, v in views.items() if v.phaser is not None]
     switched = {name: v for name, v in views.items() if v.switching is not None}
     b = breathing_view(spec) if (phased or switched) and breathing is not None else None
-    phasers = {name: phaser_stage(name, views[name].phaser, views[name], engine, valves[name], breathing, b, shaft)
-               for name in phased}
+    phasers = {name: phaser_stage(name, views[name].phaser, views[name], engine, valves[name], breathing, b, shaft,
+                                  gas) for name in phased}
     found += [c for p in phasers.values() for c in p.checks]
     switching = {name: switching_stage(name, v.switching, v, engine, valves[name], output, breathing, b)
                  for name, v in switched.items()}
