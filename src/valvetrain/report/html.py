@@ -272,12 +272,20 @@ def _lost_motion(v):
     lm = v.lost_motion
     if lm is None:
         return None
-    return {"rows": [(k, val) for k, val in shown(lm) if k not in ("closings", "table", "breathing")
+    return {"rows": [(k, val) for k, val in shown(lm) if k not in ("closings", "table", "breathing", "sweep")
                      and val is not None],
             "columns": [k for k, _ in shown(lm.closings[0])],
             "table": [[val for _, val in shown(c)] for c in lm.closings], "file": lm.table_file,
             "breathing_columns": [k for k, _ in shown(lm.breathing[0])] if lm.breathing else [],
-            "breathing": [[val for _, val in shown(b)] for b in lm.breathing]}
+            "breathing": [[val for _, val in shown(b)] for b in lm.breathing],
+            "sweep_columns": [k for k, _ in shown(lm.sweep[0].closing, *LOST_MOTION_SWEEP)] if lm.sweep else [],
+            "sweep": [[shown_value(c, "speed"), *(val for _, val in shown(c.closing, *LOST_MOTION_SWEEP))]
+                      for c in lm.sweep or ()]}
+
+
+LOST_MOTION_SWEEP = ("solenoid_opens", "valve_closes", "seating_velocity", "residual_lift")
+"""The columns of the report's table of the lost-motion timings over the speed sweep after the speed (fields of
+:class:`~valvetrain.design.lost_motion.Closing`)."""
 
 
 LUBRICATION_COLUMNS = ("speed", "min_film", "min_lambda", "boundary", "mixed", "full", "mean_friction_torque",

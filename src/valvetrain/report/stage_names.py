@@ -134,6 +134,8 @@ STAGE_NAMES = {
     "hydraulic.stop_stiffness": ("stiffness of the valve's stop", "жёсткость упора клапана"),
     "lost_motion.solenoid_opens": ("solenoid valve opens (each timing)", "открытие электромагнитного клапана (каждый момент)"),
     "lost_motion.solenoid_closes": ("solenoid valve shuts", "закрытие электромагнитного клапана"),
+    "lost_motion.sweep": ("each timing also at the speeds of the hydraulic sweep",
+                          "каждый момент также при частотах вращения расчёта гидропривода"),
     "lost_motion.solenoid_area": ("flow area of the open solenoid valve", "проходное сечение открытого электромагнитного клапана"),
     "lost_motion.solenoid_stroke": ("opening time of the solenoid valve", "время открытия электромагнитного клапана"),
     "lost_motion.discharge_coefficient": ("discharge coefficient of the orifices C_d", "коэффициент расхода дросселей C_d"),
