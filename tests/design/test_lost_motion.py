@@ -61,8 +61,9 @@ def test_the_speed_sweep_is_the_simulation_at_each_speed_and_closes_in_about_the
     """With sweep = true each timing runs at the hydraulic chapter's 12 swept speeds: one point against the drive
     simulated here at that speed with the solenoid opening at the timing's camshaft angle (as above); and the physics
     of a spring-closed valve: it closes a nearly constant time after the solenoid valve opens, (closes - opens) / (6 n)
-    within 10 % of its mean over the speeds at every timing (measured: 2.9-3.3 ms), and lands on the brake below the
-    seating limit of 0.5 m/s."""
+    within 10 % of its mean over the speeds at every timing (measured: 2.9-3.3 ms), and lands on the brake at nearly
+    the same velocity, 0.2-0.35 m/s (two points read 0.02-0.03 m/s before DriveResult.seating took a sample within
+    SEATED of the seat as on it: the impact step's round-off above the seat)."""
     v = design.valves["intake"]
     lm, h = v.lost_motion, v.hydraulic
     assert len(lm.sweep) == 4 * 12 and [s.speed for s in lm.sweep[:12]] == pytest.approx(
@@ -83,7 +84,7 @@ def test_the_speed_sweep_is_the_simulation_at_each_speed_and_closes_in_about_the
         rows = lm.sweep[12 * k:12 * (k + 1)]
         times = np.array([(s.closing.valve_closes - s.closing.solenoid_opens) / s.speed for s in rows])
         assert np.all(np.abs(times / times.mean() - 1.0) < 0.10)
-        assert all(-0.5 < s.closing.seating_velocity < 0.0 and s.closing.residual_lift == 0.0 for s in rows)
+        assert all(0.2 < -s.closing.seating_velocity < 0.35 and s.closing.residual_lift == 0.0 for s in rows)
 
 
 def test_the_record_follows_the_schema(design):
