@@ -174,3 +174,27 @@ def test_deactivated_cylinder_starting_at_the_wall_temperature():
     temperature and its mean with the walls', equal here: scipy refused the secant, x0 == x1)."""
     s = sw.air_spring(0.086, 0.086, 0.145, 10.0, 5.8e-4, 400.0, 400.0, 300.0, 287.0, 1.4)
     assert s.work < 0.0 and s.work == pytest.approx(s.heat, rel=1e-6)
+
+
+def test_latch_travel_time_against_its_two_closed_forms():
+    """The pin's travel (valvetrain.switching.latch_travel_time) in its two limits, integrated by hand: without mass
+    its speed is the passage's orifice flow over its face, v = (C_d A_o / A) sqrt(2 P(x) / rho) with P(x) the
+    pressure drop that balances the spring, p_s - (F_0 + k x) / A filling, (F_0 + k x) / A draining, so that
+    t = (A / (C_d A_o)) sqrt(rho / 2) (2 A / k) |sqrt(P(0)) - sqrt(P(s))| (Merritt (1967)); without the passage's
+    drop and without a rate, a constant force: t = sqrt(2 s m / F)."""
+    area, passage, rho, cd, stroke, f0, k, ps = np.pi * 4e-3 ** 2 / 4, np.pi * 1e-3 ** 2 / 4, 870.0, 0.7, 1.5e-3, 1.5, \
+        500.0, 0.3e6
+    c = area / (cd * passage) * np.sqrt(rho / 2.0) * 2.0 * area / k
+    filling = c * (np.sqrt(ps - f0 / area) - np.sqrt(ps - (f0 + k * stroke) / area))
+    draining = c * (np.sqrt((f0 + k * stroke) / area) - np.sqrt(f0 / area))
+    # a 1 ug pin: its inertia's transient lasts about m v / F = 1e-9 s of the 2 ms, 1e-7 of the time
+    assert sw.latch_travel_time(1e-9, area, stroke, f0, k, ps, passage, rho, cd) == pytest.approx(filling, rel=1e-6)
+    assert sw.latch_travel_time(1e-9, area, stroke, f0, k, ps, passage, rho, cd, engage=False) == pytest.approx(
+        draining, rel=1e-6)
+    wide = 1.0       # a passage of 1 m^2: no drop
+    assert sw.latch_travel_time(0.002, area, stroke, f0, 0.0, ps, wide, rho, cd) == pytest.approx(
+        np.sqrt(2.0 * stroke * 0.002 / (ps * area - f0)), rel=1e-8)
+    assert sw.latch_travel_time(0.002, area, stroke, f0, 0.0, ps, wide, rho, cd, engage=False) == pytest.approx(
+        np.sqrt(2.0 * stroke * 0.002 / f0), rel=1e-8)
+    # the oil too weak for the spring at the stroke's end: the pin never gets there
+    assert sw.latch_travel_time(0.002, area, stroke, f0, k, 1e5, passage, rho, cd) == float("inf")

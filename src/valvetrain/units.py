@@ -84,6 +84,7 @@ UNITS = {
     "rpm": (np.pi / 30.0, ("_rpm",), "rpm", "мин⁻¹"),
     "Hz": (1.0, ("_Hz",), "Hz", "Гц"),
     "us": (1e-6, ("_us",), "µs", "мкс"),
+    "ms": (1e-3, ("_ms",), "ms", "мс"),
     "mm/rad2": (MM, ("_mm_per_rad2", "_mm_rad2"), "mm/rad²", "мм/рад²"),
     "mm/rad": (MM, ("_mm_per_rad", "_mm_rad"), "mm/rad", "мм/рад"),
     "mm/deg": (MM / DEG, ("_mm_per_deg",), "mm/deg", "мм/град"),

@@ -206,3 +206,34 @@ def test_a_phase_at_which_the_valve_meets_the_piston_is_refused_naming_the_range
     with pytest.raises(SpecError, match=r"valves.intake.phaser.advance_range_crank_deg: at an advance of 40 crank deg "
                                         r"the valve hits the piston"):
         run(validate(doc))
+
+
+def test_an_exhaust_phaser_opens_against_the_cylinders_pressure_at_each_phase():
+    """An exhaust phaser of -20...20 crank deg at full load, fired: at each end of the range and at 0 the cylinder's
+    and the port's pressure where the valve leaves its seat equal those of the cycle breathed here with the exhaust
+    areas moved by hand, A(theta + advance), read at the phased opening; the gas force on the 37 mm head is
+    pi/4 d^2 (p_c - p_p) (eq. (7.1)) and is what the strength chapter's load takes; an earlier opening meets a higher
+    pressure of the expansion."""
+    doc = _document(camshaft=False)
+    doc["valves"]["intake"]["phaser"] = None
+    doc["valves"]["exhaust"]["phaser"] = {"advance_range_crank_deg": [-20.0, 20.0], "step_crank_deg": 20.0,
+                                          "tolerance_crank_deg": 5.0}
+    doc["breathing"]["curve"] = None
+    doc["breathing"]["conditions"][0]["intake_pressure_kPa"] = 100.0
+    spec = validate(doc)
+    results = run(spec)
+    rows = results.phasers["exhaust"].figures.opening
+    b = breathing_view(spec)
+    engine, condition = results.breathing.engines[0], breathing_conditions(b)[0][0]
+    side, cycle = engine.exhaust, 4.0 * np.pi
+    for o in rows:
+        out = breathe(replace(engine, exhaust=ValveFlow(side.angle - o.advance, side.forward, side.reverse)),
+                      condition, b.cycle_tolerance, b.max_cycles).columns
+        at = np.mod(results.valves["exhaust"].cam.valve_opens - o.advance, cycle)
+        p, port = (np.interp(at, out.angle, x, period=cycle) for x in (out.pressure, out.exhaust_port))
+        assert (o.cylinder_pressure, o.port_pressure) == pytest.approx((p, port), rel=1e-9)
+        assert o.gas_force == pytest.approx(np.pi / 4 * 0.037 ** 2 * (p - port), rel=1e-9)
+    assert [o.advance for o in rows] == pytest.approx(np.radians([-20.0, 0.0, 20.0]))
+    assert rows[0].cylinder_pressure < rows[1].cylinder_pressure < rows[2].cylinder_pressure
+    stress = [c for c in results.checks if c.code == "phaser.opening_contact_stress"]
+    assert len(stress) == 2 and all(c.passed for c in stress)

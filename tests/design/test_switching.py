@@ -72,7 +72,7 @@ def test_record_by_hand(designs):
     assert rec["valve_force_unlatched_N"] == pytest.approx(rec["arm_contact_force_max_N"] * 0.0225 / g0)
     codes = {c.code: c.passed for c in designs[0].checks if c.code.startswith("switching.")}
     assert codes == {"switching.jump_speed": True, "switching.valve_held": True, "switching.spring_stress": True,
-                     "switching.latch_stress": True}
+                     "switching.latch_stress": True, "switching.latch_time": True}
 
 
 def test_a_too_weak_spring_wire_fails_its_check():
@@ -102,3 +102,24 @@ def test_a_sweep_too_large_is_refused_naming_the_stiffness():
     with pytest.raises(SpecError, match=r"valves\.intake\.switching\.contact_stiffness_N_per_mm = 1e\+07: with "
                                         r"speeds = 200 the unlatched arm's sweep is about"):
         run(validate(doc))
+
+
+def test_the_latchs_switching_window_by_hand(designs):
+    """The window is the camshaft's turn outside the lobe's event: the intake's 8 + 180 + 50 = 238 crank deg is
+    119 camshaft deg, so 241 deg, at 6500 / 2 rpm (19500 camshaft deg/s) 12.359 ms; the pin's two travels (its
+    physics: tests/test_switching.py) over it."""
+    latch = designs[0].to_dict()["switching"]["intake"]["latch_switching"]
+    assert latch["switching_window_cam_deg"] == pytest.approx(241.0)
+    assert latch["switching_window_ms"] == pytest.approx(241.0 / 19500.0 * 1e3)
+    assert latch["latch_time_share"] == pytest.approx(max(latch["latch_engage_time_ms"], latch["latch_return_time_ms"])
+                                                      / latch["switching_window_ms"])
+    check = [c for c in designs[0].checks if c.code == "switching.latch_time"][0]
+    assert check.passed and check.value == pytest.approx(latch["latch_time_share"])
+
+
+def test_a_latch_too_slow_for_its_window_fails_its_check():
+    """A 0.1 mm passage lets a hundredth of the oil through: the pin takes about 0.2 s, longer than the window."""
+    doc = _document()
+    doc["valves"]["intake"]["switching"]["oil_passage_diameter_mm"] = 0.1
+    latch = [c for c in run(validate(doc)).checks if c.code == "switching.latch_time"][0]
+    assert not latch.passed and latch.severity == "failure" and latch.value > 10.0

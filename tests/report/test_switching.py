@@ -32,7 +32,8 @@ def test_every_row_has_its_words(results, lang):
     record = results.to_dict()["switching"]["intake"]
     assert chapter["speeds"] == list(zip(record["sweep_speeds_rpm"], record["arm_contact_force_min_N"]))
     assert {c.code for c in chapter["checks"]} == {"switching.jump_speed", "switching.valve_held",
-                                                   "switching.spring_stress", "switching.latch_stress"}
+                                                   "switching.spring_stress", "switching.latch_stress",
+                                                   "switching.latch_time"}
 
 
 def test_switching_checks_have_their_chapter():

@@ -24,6 +24,9 @@ def _doc(**switching):
     ({"inner_arm_mm": 0.5}, "inner_arm_mm"),
     ({"speeds": 2}, "speeds = 2: allowed 4...200"),
     ({"wall_temperature_C": None}, "the deactivated cylinder's breathing needs wall_temperature_C too"),
+    ({"oil_passage_diameter_mm": None}, "the latch's switching needs oil_passage_diameter_mm too"),
+    ({"oil_pressure_MPa": 0.15}, "oil_pressure_MPa = 0.15: its force on the latch pin, 1.885 N, must exceed the "
+                                 "return spring's at the stroke's end"),
 ])
 def test_bad_switching_input_is_refused_naming_the_key(keys, words):
     with pytest.raises(SpecError, match="switching") as err:

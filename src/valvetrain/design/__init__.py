@@ -25,6 +25,9 @@ rpm) are converted to SI for the physics functions.  Stages:
   the phase, the valve-to-piston gap at the range's ends, the breathing at every phase of the map with the phased
   side's effective areas shifted, the best phase per speed, the torque the phaser holds from the camshaft's drive
   torque;
+* a switching roller finger (:mod:`.switching`, ``[valves.NAME.switching]``, after the phasers): the lost-motion
+  spring, the unlatched arm's dynamics and the latch; a two-step finger's low lobe, both modes' events and time-area
+  and, with ``[breathing]``, each mode's breathing (:mod:`.two_step`);
 * a valve with a ``[hydraulic]`` section (:mod:`.hydraulic_actuation`) opens against the cylinder pressure of the
   engine's cycle: ``run`` designs the valve without it, runs the breathing and the crank stage (whose Wiebe cycle
   needs every valve's timing) and adds the hydraulic stage after them (``with_hydraulic``: the breathing's cylinder
@@ -296,12 +299,13 @@ def run(spec, laws=None, progress=None, headlines_only=False, diagnose=True, mem
         if stage is not None:
             found += [c.named(tag) for c in stage.checks]
     phased = [name for name, v in views.items() if v.phaser is not None]
-    b = breathing_view(spec) if phased and breathing is not None else None
-    phasers = {name: phaser_stage(name, views[name].phaser, views[name], engine, valves[name], breathing, b, shaft)
-               for name in phased}
+    switched = {name: v for name, v in views.items() if v.switching is not None}
+    b = breathing_view(spec) if (phased or switched) and breathing is not None else None
+    phasers = {name: phaser_stage(name, views[name].phaser, views[name], engine, valves[name], breathing, b, shaft,
+                                  gas) for name in phased}
     found += [c for p in phasers.values() for c in p.checks]
-    switching = {name: switching_stage(name, v.switching, v, engine, valves[name])
-                 for name, v in views.items() if v.switching is not None}
+    switching = {name: switching_stage(name, v.switching, v, engine, valves[name], output, breathing, b)
+                 for name, v in switched.items()}
     found += [c for s in switching.values() for c in s.checks]
     found, valves = accept(found, spec.accepted, valves)
     card = cam_card_stage(valves) if valves and engine.strokes == 4 else None

@@ -25,7 +25,7 @@ from ..specification.messages import Problem
 from ..units import DEG, MM, cam_per_crank, to_display
 from .dynamics_checks import SEATING_VELOCITY_MAX
 from .dynamics_records import finite_or_none
-from .hydraulic_actuation import MAX_NODE_STEPS, SEATING_SOURCE, cycle_angle, gas_force, hydraulic_drive
+from .hydraulic_actuation import MAX_NODE_STEPS, SEATING_SOURCE, cycle_angle, gas_force, hydraulic_drive, speed_plan
 from .results import quantity
 
 SOURCES = (f"{cite('bernard2009')} (the lost-motion drive); {cite('merritt1967')} (the orifice equation); "
@@ -59,6 +59,14 @@ class Closing:
     cavitation: bool = quantity("cavitation", label="the pressure fell to the vapour pressure somewhere")
     residual_lift: float = quantity("residual_lift_mm", "mm", "valve lift left when the pump piston is about to lift "
                                     "again (above 0: not closed before the next opening)")
+
+
+@dataclass(frozen=True)
+class SweptClosing:
+    """One solenoid timing at one engine speed of the [hydraulic] chapter's sweep (``sweep = true``)."""
+
+    speed: float = quantity("speed_rpm", "rpm", "engine speed")
+    closing: Closing = quantity("closing", flatten=True)
 
 
 @dataclass(frozen=True)
@@ -103,6 +111,9 @@ class LostMotionResult:
                                "folder")
     breathing: tuple[ClosingBreath, ...] = quantity("breathing", label="with [breathing]: the full lift and each "
                                                     "timing breathed at each of its conditions", default=())
+    sweep: Optional[tuple[SweptClosing, ...]] = quantity(
+        "sweep", label="with sweep = true: each timing at each speed of the [hydraulic] chapter's sweep, timing by "
+        "timing", omit_none=True, default=None)
     responses: tuple[DriveResult, ...] = field(default=(), repr=False)
     full: Optional[DriveResult] = field(default=None, repr=False)
     nose: float = field(default=0.0, repr=False)      # crank angle of the cam nose from the gas-exchange TDC [rad]
@@ -192,25 +203,36 @@ def lost_motion_stage(valve, law, engine, gas, name, nose, hydraulic, cylinder=N
     drive = hydraulic_drive(valve.hydraulic)
     drive = replace(drive, valve=replace(drive.valve, stop=hydraulic.stop),
                     solenoid=replace(drive.solenoid, closes=closes))
-    omega = hydraulic.speed * cam_per_crank(engine.strokes)
-    work = len(thetas) * 2.0 * math.pi / omega / drive.time_step * (drive.pipe.reaches + 1)
+    to_cam = cam_per_crank(engine.strokes)
+    omega = hydraulic.speed * to_cam
+    swept = speed_plan(valve.hydraulic, engine)[1] if lm.sweep else np.zeros(0)
+    revolutions = 1.0 / omega + np.sum(1.0 / (swept * to_cam))     # [s/rad] of one timing
+    work = len(thetas) * 2.0 * math.pi * revolutions / drive.time_step * (drive.pipe.reaches + 1)
     if work > MAX_NODE_STEPS:
-        raise InputError(Problem(key, f"{len(thetas)} timings take {work:.3g} node updates of the passage's grid; "
-                                 f"allowed <= {MAX_NODE_STEPS:.0e}: fewer timings or fewer reaches", f"{len(thetas)}"))
+        raise InputError(Problem(key, f"{len(thetas)} timings" + (f" at the simulated speed and the {swept.size} of "
+                                 "the sweep" if lm.sweep else "") + f" take {work:.3g} node updates of the passage's "
+                                 f"grid; allowed <= {MAX_NODE_STEPS:.0e}: fewer timings or fewer reaches"
+                                 + (" (or sweep = false)" if lm.sweep else ""), f"{len(thetas)}"))
     force = gas_force(valve, gas, engine, nose, cylinder)
     responses = tuple(simulate(law, replace(drive, solenoid=replace(drive.solenoid, opens=theta)), omega,
                                gas_force=force) for theta in thetas)
     closings = tuple(_closing(r, phi, theta, nose, engine.strokes)
                      for r, phi, theta in zip(responses, lm.solenoid_opens, thetas, strict=True))
+    sweep = None
+    if lm.sweep:
+        sweep = tuple(SweptClosing(float(n), _closing(simulate(law, replace(drive, solenoid=replace(
+            drive.solenoid, opens=theta)), n * to_cam, gas_force=force), phi, theta, nose, engine.strokes))
+                      for phi, theta in zip(lm.solenoid_opens, thetas, strict=True) for n in swept)
     full = hydraulic.response
     full_angle = full.seating()[0]
     result = LostMotionResult(
         hydraulic.speed, drive.solenoid.accumulator_pressure, lm.solenoid_closes, lm.brake_travel,
         float(full.valve_lift.max()), None if math.isnan(full_angle) else float(cycle_angle(nose, full_angle,
                                                                                              engine.strokes)),
-        hydraulic.seating_velocity, closings, f"tables/{name}_lost_motion.csv", responses=responses, full=full,
-        nose=nose, strokes=engine.strokes)
-    return result, _checks(closings, valve.hydraulic.vapour_pressure)
+        hydraulic.seating_velocity, closings, f"tables/{name}_lost_motion.csv", sweep=sweep, responses=responses,
+        full=full, nose=nose, strokes=engine.strokes)
+    return result, _checks(closings, valve.hydraulic.vapour_pressure) + _sweep_checks(
+        sweep or (), engine.over_speed_ratio * engine.rated_speed)
 
 
 def _checks(closings, vapour) -> list[Check]:
@@ -229,6 +251,29 @@ def _checks(closings, vapour) -> list[Check]:
         found.append(check("lost_motion.min_pressure", c.min_pressure, low=vapour, strict_low=True, unit="MPa",
                            source=cite("wylie1978"), params=params,
                            note=note("hydraulic.cavitation")))
+    return found
+
+
+def _sweep_checks(sweep, top) -> list[Check]:
+    """Per timing over the sweep's speeds up to ``top`` [rad/s] (the over-speed): the largest landing velocity (a
+    warning above the dynamics' limit) and the largest lift left before the next opening (a failure), each with the
+    speed where it is."""
+    found = []
+    for opens in dict.fromkeys(s.closing.solenoid_opens for s in sweep):
+        rows = [s for s in sweep if s.closing.solenoid_opens == opens and s.speed <= top * (1.0 + 1e-9)]
+        params = {"opens": f"{to_display(opens, 'crank deg'):g}"}
+        landed = [s for s in rows if s.closing.seating_velocity is not None]
+        if landed:
+            w = max(landed, key=lambda s: abs(s.closing.seating_velocity))
+            found.append(check("lost_motion.sweep_seating_velocity", abs(w.closing.seating_velocity),
+                               high=SEATING_VELOCITY_MAX, unit="m/s", source=f"{SEATING_SOURCE}; {cite('bernard2009')}",
+                               params=params, note=note("hydraulic.largest_at", speed_rpm=to_display(w.speed, "rpm"))))
+        if rows:
+            w = max(rows, key=lambda s: s.closing.residual_lift)
+            found.append(check("lost_motion.sweep_residual_lift", w.closing.residual_lift, high=BOUNCE_TOLERANCE,
+                               unit="mm", severity="failure", source=cite("bernard2009"), params=params,
+                               note=note("hydraulic.not_reseated", speed_rpm=to_display(w.speed, "rpm"))
+                               if w.closing.residual_lift > BOUNCE_TOLERANCE else ""))
     return found
 
 
@@ -259,5 +304,5 @@ def table_columns(result, step=0.5 * DEG) -> dict[str, Any]:
     return out
 
 
-__all__ = ["Closing", "ClosingBreath", "KEY", "LostMotionResult", "SOURCES", "TABLE_COLUMNS", "cam_angle",
+__all__ = ["Closing", "ClosingBreath", "SweptClosing", "KEY", "LostMotionResult", "SOURCES", "TABLE_COLUMNS", "cam_angle",
            "lost_motion_stage", "table_columns"]

@@ -28,6 +28,7 @@ from .breathing import (BreathingResults, breathe_conditions, breathing_conditio
                         gas_opening_load)
 from .camshaft import ANGLES, camshaft_torque, lobe_set
 from .crank import firing_angles
+from .drive_strength import strength_stage
 from .results import quantity, record
 from .valve import clearance_stage
 from .valve_checks import PISTON_CLEARANCE_MIN, PISTON_CLEARANCE_SOURCE
@@ -78,6 +79,25 @@ class PhasedEvents:
                                         "event (with piston_gap_tdc_mm)", omit_none=True)
     min_gap_angle: Optional[float] = quantity("min_piston_clearance_crank_deg", "crank deg", "where",
                                               omit_none=True)
+
+
+@dataclass(frozen=True)
+class OpeningLoad:
+    """An exhaust valve's opening at one phase of the range (its ends and 0): the cylinder and port pressures as it
+    leaves its seat (the breathing's cycles at that phase, the condition where their difference is largest), the gas
+    force on its head, and the strength chapter's largest cam force and cam contact stress with that force."""
+
+    advance: float = quantity("advance_crank_deg", "crank deg", "the phase, an advance positive")
+    speed: float = quantity("speed_rpm", "rpm", "the condition's speed where the pressure difference is largest")
+    cylinder_pressure: float = quantity("cylinder_pressure_at_opening_MPa", "MPa", "the cylinder's pressure where the "
+                                        "valve leaves its seat")
+    port_pressure: float = quantity("port_pressure_at_opening_MPa", "MPa", "the exhaust port's there")
+    gas_force: float = quantity("gas_force_at_opening_N", "N", "the gas force on the valve head as it opens "
+                                "(eq. 7.1)")
+    cam_force: float = quantity("cam_force_max_N", "N", "the largest cam force with that gas force (the strength "
+                                "chapter's method)")
+    contact_stress: Optional[float] = quantity("cam_contact_stress_max_MPa", "MPa", "the largest cam contact stress "
+                                               "with it (with parts.cam_width_mm)", omit_none=True, default=None)
 
 
 @dataclass(frozen=True)
@@ -142,6 +162,9 @@ class PhaserRecord:
     map: tuple[PhaserPoint, ...] = quantity("map", label="the breathing at every phase and condition of [breathing]",
                                             default=())
     best: tuple[BestPhase, ...] = quantity("best", label="the best phase at each condition", default=())
+    opening: Optional[tuple[OpeningLoad, ...]] = quantity(
+        "opening", label="an exhaust valve with [breathing]: its opening's gas force and the cam's strength at the "
+        "range's ends and at 0", omit_none=True, default=None)
 
 
 @dataclass(frozen=True, repr=False)
@@ -193,6 +216,46 @@ def holding_torque(name, valve, engine, design, camshaft) -> tuple[float, float,
     return t["peak"], t["lowest"], t["mean"], f"the lobes of {name} on every cylinder in firing order"
 
 
+CONTACT_STRESS = "strength.cam_contact_stress"
+"""The strength chapter's check of the cam contact stress, whose allowable the phases' stress is checked against."""
+
+
+def opening_loads(name, design, valve, gas, engine, phases, rows, ends
+                  ) -> tuple[tuple[OpeningLoad, ...], list[Check]]:
+    """The exhaust valve's opening at each phase of ``ends`` (:class:`PhasedEvents`): the cylinder pressure p_c and
+    the port's p_p where it leaves its seat, from the converged cycles ``rows`` of the map's ``phases`` (one tuple of
+    results a phase, one result a condition), the condition where p_c - p_p is largest; the strength chapter again
+    (:func:`~valvetrain.design.drive_strength.strength_stage`) with ``[gas]``'s opening pressures replaced by those;
+    and the checks of the cam contact stress at the range's ends against the strength chapter's allowable.
+
+    Notes
+    -----
+    The exhaust valve opens against the cylinder's pressure, F = A_head (p_c - p_p) (Valve-train practical works
+    (n.d.), eq. (7.1)); an advance opens it earlier in the expansion, where p_c is higher.  The lift law about the
+    camshaft, and so its inertia force, is that of phase 0 (the phaser turns the whole camshaft): the gas force at the
+    opening is what the phase changes in the cam's load.
+    """
+    out, found = [], []
+    for e in ends:
+        at = np.mod(e.opens, 4.0 * np.pi)
+        row = rows[int(np.flatnonzero(phases == e.advance)[0])]
+        pressures = [(float(np.interp(at, r.columns.angle, r.columns.pressure, period=4.0 * np.pi)),
+                      float(np.interp(at, r.columns.angle, r.columns.exhaust_port, period=4.0 * np.pi)), r)
+                     for r in row]
+        cylinder, port, r = max(pressures, key=lambda x: x[0] - x[1])
+        strength, checks = strength_stage(replace(valve, hydraulic=None), replace(
+            gas, exhaust_opening_pressure=cylinder, exhaust_back_pressure=port), engine, design.cam, design.drive,
+            design.dynamics)
+        stress = next((c for c in checks if c.code == CONTACT_STRESS), None)
+        out.append(OpeningLoad(e.advance, r.figures.speed, cylinder, port, strength.gas_force_at_opening,
+                               strength.cam_force_max, None if stress is None else stress.value))
+        if stress is not None and e.advance != 0.0:
+            found.append(check("phaser.opening_contact_stress", stress.value, high=stress.high, unit="MPa",
+                               source=stress.source, severity=stress.severity,
+                               params={"advance": f"{to_display(e.advance, 'crank deg'):g}"}).of_valve(name))
+    return tuple(out), found
+
+
 def _point(advance, r) -> PhaserPoint:
     f = r.figures
     return PhaserPoint(advance, f.speed, f.intake_pressure, f.volumetric_efficiency, f.residual_gas_fraction, f.pmep,
@@ -236,7 +299,8 @@ def _engine_with(engine, kind, flow):
     return replace(engine, **{kind: flow})
 
 
-def phaser_stage(name, phaser, valve, engine, design, breathing=None, b=None, camshaft=None) -> PhaserResults:
+def phaser_stage(name, phaser, valve, engine, design, breathing=None, b=None, camshaft=None, gas=None
+                 ) -> PhaserResults:
     """The phaser chapter of the valve ``name``.
 
     Parameters
@@ -248,6 +312,9 @@ def phaser_stage(name, phaser, valve, engine, design, breathing=None, b=None, ca
         The breathing chapter (its engines, one a condition): with it the map of phase x condition and the best phases.
     b : SI view of [breathing], optional
     camshaft : CamshaftResults, optional
+    gas : SI view of [gas], optional
+        An exhaust valve's with ``breathing``: the strength at each end of the range with the cylinder's pressure at
+        that phase's opening (:func:`opening_loads`).
 
     Returns
     -------
@@ -268,7 +335,8 @@ def phaser_stage(name, phaser, valve, engine, design, breathing=None, b=None, ca
     map's best point refined by a bounded Brent search (:func:`scipy.optimize.minimize_scalar`) between its
     neighbouring phases of the map, to ``tolerance_crank_deg``.  The drive torque of the camshaft is a function of the
     camshaft's angle at the rated speed, unchanged by the phase (the phaser turns the whole camshaft), so the phaser
-    holds its peak, lowest and mean over the range.
+    holds its peak, lowest and mean over the range.  An exhaust valve opens against the cylinder's pressure at its
+    phased opening, from the map's cycles at each end of the range (:func:`opening_loads`).
     """
     cam = design.cam
     low, high = phaser.advance_range
@@ -308,13 +376,17 @@ def phaser_stage(name, phaser, valve, engine, design, breathing=None, b=None, ca
     loads = [gas_opening_load(BreathingResults(e, *pair, breathing.figures, ()), design.kind, valve.throat_diameter)
              for e, pair in zip(engines, pairs, strict=True)]
     k = int(np.argmax([force for force, _ in loads]))
-    gas = (float(loads[k][0]), float(phases[k]))
+    closed = (float(loads[k][0]), float(phases[k]))
     spring = design.drive.spring
-    checks.append(check("phaser.gas_load", gas[0], high=spring.preload, unit="N", severity="failure",
+    checks.append(check("phaser.gas_load", closed[0], high=spring.preload, unit="N", severity="failure",
                         source="the spring's preload holds the shut valve against the gas force (Valve-train "
                                "practical works (n.d.), eqs. (5.4), (5.5))",
-                        note=f"the largest over the map at an advance of {to_display(gas[1], 'crank deg'):g} crank "
+                        note=f"the largest over the map at an advance of {to_display(closed[1], 'crank deg'):g} crank "
                              f"deg: {loads[k][1]}").of_valve(name))
+    opening = None
+    if design.kind == "exhaust" and gas is not None:
+        opening, more = opening_loads(name, design, valve, gas, engine, phases, rows, events)
+        checks += more
     objective = OBJECTIVES[b.mode]
     zero = int(np.flatnonzero(phases == 0.0)[0])
     best, searched_results = [], []
@@ -335,6 +407,6 @@ def phaser_stage(name, phaser, valve, engine, design, breathing=None, b=None, ca
     search = (f"the map's best phase refined by a bounded Brent search (scipy.optimize.minimize_scalar) between its "
               f"neighbours of the map, to {to_display(phaser.tolerance, 'crank deg'):g} crank deg")
     figures = PhaserRecord(name, phaser.advance_range, cam_range, events, dynamics, source, peak, lowest, mean,
-                           *gas, objective, search, tuple(_point(a, r) for a, row in zip(phases, rows, strict=True)
-                                                    for r in row), tuple(best))
+                           *closed, objective, search, tuple(_point(a, r) for a, row in zip(phases, rows, strict=True)
+                                                    for r in row), tuple(best), opening)
     return PhaserResults(figures, phases, tuple(checks + found))

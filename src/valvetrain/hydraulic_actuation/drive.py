@@ -42,6 +42,10 @@ from ..dynamics.events import BOUNCE_TOLERANCE, bounce, seating
 from .components import brake_coefficient
 from .moc import characteristics, interior
 
+SEATED = 1e-9
+"""A valve lift below which the valve is on its seat [m] (:meth:`DriveResult.seating`): far below a time step's
+travel at any landing velocity, far above the round-off the impact step leaves."""
+
 
 @njit(cache=True)
 def _chamber(capacity, old, source, conductances, references):
@@ -322,13 +326,17 @@ class DriveResult:
         Notes
         -----
         The seat stops the valve within a time step (an inelastic impact on a rigid seat), so the velocity at
-        seating is that of the last step before it, a time step L / (N a) earlier.
+        seating is that of the last step before it, a time step L / (N a) earlier.  A sample within
+        :data:`SEATED` of the seat is on it: the impact step can leave the valve a round-off above the seat, whose
+        velocity, already slowed by the seat, is not the landing's (a speed one unit in the last place different
+        read 0.03 instead of 0.25 m/s).
 
         References
         ----------
         Shang Hanji (1988), ch. 3 (seating velocity and bounce) and ch. 7.
         """
-        i, angle, _ = seating(self.angle, self.valve_lift, self.valve_velocity)
+        i, angle, _ = seating(self.angle, np.where(self.valve_lift < SEATED, 0.0, self.valve_lift),
+                              self.valve_velocity)
         if i == self.angle.size:
             return math.nan, math.nan, 0.0
         return angle, float(self.valve_velocity[i - 1]), bounce(self.valve_lift, i, tolerance)[0]

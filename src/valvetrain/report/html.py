@@ -272,12 +272,20 @@ def _lost_motion(v):
     lm = v.lost_motion
     if lm is None:
         return None
-    return {"rows": [(k, val) for k, val in shown(lm) if k not in ("closings", "table", "breathing")
+    return {"rows": [(k, val) for k, val in shown(lm) if k not in ("closings", "table", "breathing", "sweep")
                      and val is not None],
             "columns": [k for k, _ in shown(lm.closings[0])],
             "table": [[val for _, val in shown(c)] for c in lm.closings], "file": lm.table_file,
             "breathing_columns": [k for k, _ in shown(lm.breathing[0])] if lm.breathing else [],
-            "breathing": [[val for _, val in shown(b)] for b in lm.breathing]}
+            "breathing": [[val for _, val in shown(b)] for b in lm.breathing],
+            "sweep_columns": [k for k, _ in shown(lm.sweep[0].closing, *LOST_MOTION_SWEEP)] if lm.sweep else [],
+            "sweep": [[shown_value(c, "speed"), *(val for _, val in shown(c.closing, *LOST_MOTION_SWEEP))]
+                      for c in lm.sweep or ()]}
+
+
+LOST_MOTION_SWEEP = ("solenoid_opens", "valve_closes", "seating_velocity", "residual_lift")
+"""The columns of the report's table of the lost-motion timings over the speed sweep after the speed (fields of
+:class:`~valvetrain.design.lost_motion.Closing`)."""
 
 
 LUBRICATION_COLUMNS = ("speed", "min_film", "min_lambda", "boundary", "mixed", "full", "mean_friction_torque",
@@ -352,6 +360,10 @@ PHASER_BEST = ("speed", "intake_pressure", "advance", "volumetric_efficiency", "
                "torque", "gain", "evaluations")
 """The columns of the report's table of the best phases (fields of :class:`~valvetrain.design.phaser.BestPhase`)."""
 
+PHASER_OPENING = ("advance", "speed", "cylinder_pressure", "port_pressure", "gas_force", "cam_force", "contact_stress")
+"""The columns of the report's table of an exhaust valve's opening at the phaser's range ends and at phase 0 (fields
+of :class:`~valvetrain.design.phaser.OpeningLoad`)."""
+
 
 def _phasers(results, spec, plots, checks):
     """The phaser chapters: each phased valve's figures, events at its range's ends, best phases, the objective's
@@ -361,6 +373,7 @@ def _phasers(results, spec, plots, checks):
         f = p.figures
         events = [e for e in PHASER_EVENTS if getattr(f.events[0], e) is not None]
         best = [b for b in PHASER_BEST if f.best and getattr(f.best[0], b) is not None]
+        opening = [o for o in PHASER_OPENING if f.opening and getattr(f.opening[0], o) is not None]
         n = len(f.best)
         values = [shown_value(point, f.objective) for point in f.map] if f.map else []
         out.append({"name": name, "rows": shown(f, *(k for k in PHASER_ROWS if getattr(f, k) is not None)),
@@ -369,6 +382,8 @@ def _phasers(results, spec, plots, checks):
                     "tolerance": spec["valves"][name]["phaser"]["tolerance_crank_deg"],
                     "event_columns": [k for k, _ in shown(f.events[0], *events)],
                     "events": [[v for _, v in shown(e, *events)] for e in f.events],
+                    "opening_columns": [k for k, _ in shown(f.opening[0], *opening)] if f.opening else [],
+                    "opening": [[v for _, v in shown(o, *opening)] for o in f.opening or ()],
                     "best_columns": [k for k, _ in shown(f.best[0], *best)] if f.best else [],
                     "best": [[v for _, v in shown(b, *best)] for b in f.best],
                     "conditions": [(shown_value(b, "speed"), shown_value(b, "intake_pressure")) for b in f.best],

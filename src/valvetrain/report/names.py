@@ -458,7 +458,7 @@ NAMES = {
 """Names of the keys without their unit suffix (or a whole key where the suffix is no unit): ``(en, ru)``."""
 
 VALUES = {
-    "deactivation": "отключение клапана",
+    "deactivation": "отключение клапана", "two_step": "двухступенчатый подъём",
     "pivot": "опора рычага", "chain": "цепь", "belt": "зубчатый ремень", "gears": "шестерни",
     "intake": "впускной", "exhaust": "выпускной", "inlet": "впускное", "transfer": "продувочное",
     "flat": "плоский", "roller": "роликовый", "finger": "роликовый рычаг", "direct": "непосредственный",

@@ -489,6 +489,12 @@ STAGE_TEXT["en"].update({
     "ph_title": "cam phaser of the valve {valve}", "ph_map_title": "the objective against the phase",
     "ph_best_title": "the best phase against the speed", "ph_advance": "phase (advance), crank deg",
     "ph_best": "best phase (advance), crank deg", "ph_pressure": "intake plenum {pressure} kPa",
+    "ph_opening_method": "An exhaust valve opens against the cylinder's pressure, which the phase moves: at each end of "
+                         "the range and at phase 0, the cylinder's and the port's pressure where the valve leaves its "
+                         "seat are read from the breathing's cycles at that phase (the condition where they differ "
+                         "most), and the strength chapter's cam load is found again with the gas force on the head "
+                         "F = A (p_c - p_p) they give in place of the one of [gas]",
+    "ph_opening": "The exhaust valve's opening and the cam's load at the ends of the range",
     "ph_names": {
         "advance_range_crank_deg": "phaser's range, advance positive, crank deg",
         "advance_range_cam_deg": "the same in camshaft degrees",
@@ -506,6 +512,10 @@ STAGE_TEXT["en"].update({
         "volumetric_efficiency": "volumetric efficiency", "residual_gas_fraction": "residual gas fraction",
         "pmep_kPa": "PMEP, kPa", "torque_Nm": "indicated torque, N·m", "gain_percent": "gain over phase 0, %",
         "evaluations": "cycles of the search",
+        "cylinder_pressure_at_opening_MPa": "cylinder pressure at the opening, MPa",
+        "port_pressure_at_opening_MPa": "exhaust port pressure there, MPa",
+        "gas_force_at_opening_N": "gas force on the valve head as it opens, N",
+        "cam_force_max_N": "largest cam force, N", "cam_contact_stress_max_MPa": "largest cam contact stress, MPa",
     },
 })
 
@@ -540,6 +550,13 @@ STAGE_TEXT["ru"].update({
     "ph_title": "фазовращатель клапана {valve}", "ph_map_title": "целевой показатель по углу фазирования",
     "ph_best_title": "наилучший угол по частоте вращения", "ph_advance": "угол фазирования (опережение), град ПКВ",
     "ph_best": "наилучший угол (опережение), град ПКВ", "ph_pressure": "во впускном ресивере {pressure} кПа",
+    "ph_opening_method": "Выпускной клапан открывается против давления в цилиндре, которое зависит от угла "
+                         "фазирования: на концах диапазона и при нулевом угле давление в цилиндре и в выпускном "
+                         "канале в момент отрыва клапана от седла берётся из циклов газообмена при этом угле (на "
+                         "режиме с наибольшей разностью), и нагрузка кулачка по методу главы прочности определяется "
+                         "заново с силой давления газов на тарелку F = A (p_c - p_p) вместо заданной в разделе "
+                         "исходных давлений",
+    "ph_opening": "Открытие выпускного клапана и нагрузка кулачка на концах диапазона",
     "ph_names": {
         "advance_range_crank_deg": "диапазон фазовращателя, опережение положительно, град ПКВ",
         "advance_range_cam_deg": "то же в градусах поворота распределительного вала",
@@ -557,5 +574,10 @@ STAGE_TEXT["ru"].update({
         "volumetric_efficiency": "коэффициент наполнения", "residual_gas_fraction": "коэффициент остаточных газов",
         "pmep_kPa": "давление насосных потерь, кПа", "torque_Nm": "индикаторный крутящий момент, Н·м",
         "gain_percent": "прирост к нулевому углу, %", "evaluations": "циклов поиска",
+        "cylinder_pressure_at_opening_MPa": "давление в цилиндре при открытии, МПа",
+        "port_pressure_at_opening_MPa": "давление в выпускном канале при этом, МПа",
+        "gas_force_at_opening_N": "сила давления газов на тарелку при открытии, Н",
+        "cam_force_max_N": "наибольшая сила на кулачке, Н",
+        "cam_contact_stress_max_MPa": "наибольшее контактное напряжение кулачка, МПа",
     },
 })

@@ -308,8 +308,10 @@ class LostMotion(_Model):
     or shut, ``discharge_coefficient`` that of its orifice and of the brake's.  ``accumulator_pressure_MPa``: the
     accumulator's absolute pressure (left out: the drive's ``initial_pressure_MPa``); at most the pressure that lifts
     the valve at rest.  ``brake_travel_mm``: the valve's last travel before its seat over which the brake's orifice
-    closes down from ``brake_open_area_mm2`` to ``brake_end_area_mm2`` at the seat (0: no brake).  The [hydraulic]
-    chapter is the drive with the solenoid valve shut (the valve follows the whole cam) and the brake."""
+    closes down from ``brake_open_area_mm2`` to ``brake_end_area_mm2`` at the seat (0: no brake).  ``sweep``: each
+    timing also at every speed of the [hydraulic] chapter's sweep (its landing velocity and closing against the
+    speed).  The [hydraulic] chapter is the drive with the solenoid valve shut (the valve follows the whole cam) and
+    the brake."""
 
     solenoid_opens_crank_deg: Annotated[list[_bounded(0.0, 720.0, "crank deg", low_open=False, high_open=True)],
                                         Field(min_length=1, max_length=12)]
@@ -321,6 +323,7 @@ class LostMotion(_Model):
     brake_travel_mm: _zero_or(0.01, 50.0, "mm", zero="no brake") = 0.0
     brake_end_area_mm2: _bounded(0.001, 1000.0, "mm2", low_open=False) = 1.0
     brake_open_area_mm2: _bounded(0.001, 1000.0, "mm2", low_open=False) = 20.0
+    sweep: bool = False
 
     @model_validator(mode="after")
     def _brake_closes_down(self):

@@ -1,6 +1,7 @@
 """[valves.NAME.switching]: the valve's finger is a switching roller finger follower (its inner arm, lost-motion
 spring and latch); the physics is :mod:`valvetrain.switching`, the stage :mod:`valvetrain.design.switching`."""
 
+import math
 from typing import Literal, Optional
 
 from pydantic import model_validator
@@ -10,6 +11,25 @@ from ..spring_materials import GRADES
 from .fields import Length, _bounded, _Model
 
 
+class LowLobe(_Model):
+    """[valves.NAME.switching.low_lobe]: the second, low-lift lobe of a two-step switching finger, a lift law like the
+    valve's own: the cam section's law and coefficients with its own largest valve lift ``max_lift_mm`` and events
+    ``opens_deg`` and ``closes_deg`` (crank deg, counted as the valve's own ``opens_deg`` and ``closes_deg``: before the
+    dead centre where the stroke starts, after the one where it ends; negative: after it, before it), on the same
+    base circle and seen through the same finger; the finger's body follows it unlatched."""
+
+    max_lift_mm: Length(0.3, 500.0, low_open=False)
+    opens_deg: _bounded(-180.0, 180.0, "deg")
+    closes_deg: _bounded(-180.0, 180.0, "deg")
+
+    @model_validator(mode="after")
+    def _an_event(self):
+        if self.opens_deg + self.closes_deg + 180.0 <= 0.0:
+            raise InputError(f"opens_deg = {self.opens_deg:g}, closes_deg = {self.closes_deg:g}: allowed "
+                             "opens_deg + 180 + closes_deg > 0 (the lobe's event, crank deg)")
+        return self
+
+
 class Switching(_Model):
     """[valves.NAME.switching]: a switching roller finger follower on a valve whose cam has ``follower = "finger"``:
     the finger's body rests on the pivot (lash adjuster) and the valve, and an inner arm carrying the roller is
@@ -17,7 +37,9 @@ class Switching(_Model):
     pin locks the arm to the body.
 
     ``mode``: ``"deactivation"``, the unlatched valve stays shut (cylinder deactivation) and the arm follows its cam
-    against the lost-motion spring.  ``inner_arm_mm``: the arm's pivot to its roller centre, L_i;
+    against the lost-motion spring; ``"two_step"``, the unlatched body follows a second, low-lift lobe
+    (``[valves.NAME.switching.low_lobe]``, :class:`LowLobe`) and lifts the valve by it while the arm follows the main
+    lobe against the lost-motion spring (two-step lift).  ``inner_arm_mm``: the arm's pivot to its roller centre, L_i;
     ``inner_arm_inertia_kg_mm2``: its moment of inertia about that pivot, the roller's included, J_i;
     ``contact_stiffness_N_per_mm``: the arm's stiffness at the roller, cam contact and the arm's bending in series
     (the unlatched arm's dynamics).  ``reserve``: the lost-motion spring's margin over the arm's inertia torque at
@@ -31,9 +53,15 @@ class Switching(_Model):
     The breathing of the deactivated cylinder (its valves shut all cycle), with ``compression_ratio``: its trapped
     charge at ``trapped_pressure_kPa`` and ``trapped_temperature_C`` at the bottom dead centre (what the deactivation
     traps: fresh charge or exhaust, as the engine's strategy makes it), the walls at ``wall_temperature_C``; needs
-    ``engine.rod_length_mm``."""
+    ``engine.rod_length_mm``; a deactivation's only.
 
-    mode: Literal["deactivation"] = "deactivation"
+    The latch's switching (all six or none): the pin of ``latch_pin_diameter_mm`` and ``latch_pin_mass_kg`` moves
+    over ``latch_stroke_mm`` under the oil's ``oil_pressure_MPa`` (gauge, at the passage) against its return spring
+    (``latch_spring_preload_N`` at home, ``latch_spring_rate_N_per_mm``), its oil through a passage of
+    ``oil_passage_diameter_mm`` (``passage_discharge_coefficient``, ``oil_density_kg_m3``), and back on the spring;
+    it may move only while both arms rest on their base circles, the switching window."""
+
+    mode: Literal["deactivation", "two_step"] = "deactivation"
     inner_arm_mm: Length(2.0, 200.0, low_open=False)
     inner_arm_inertia_kg_mm2: _bounded(0.01, 1e5, "kg mm2", low_open=False)
     contact_stiffness_N_per_mm: _bounded(100.0, 1e7, "N/mm", low_open=False)
@@ -50,6 +78,15 @@ class Switching(_Model):
     trapped_pressure_kPa: Optional[_bounded(1.0, 10000.0, "kPa")] = None
     trapped_temperature_C: Optional[_bounded(-50.0, 1500.0, "degC")] = None
     wall_temperature_C: Optional[_bounded(-50.0, 1500.0, "degC")] = None
+    low_lobe: Optional[LowLobe] = None
+    latch_stroke_mm: Optional[Length(0.05, 20.0, low_open=False)] = None
+    latch_pin_mass_kg: Optional[_bounded(1e-5, 0.5, "kg", low_open=False)] = None
+    latch_spring_preload_N: Optional[_bounded(0.0, 1000.0, "N")] = None
+    latch_spring_rate_N_per_mm: Optional[_bounded(0.0, 1000.0, "N/mm", low_open=False)] = None
+    oil_pressure_MPa: Optional[_bounded(0.0, 20.0, "MPa")] = None
+    oil_passage_diameter_mm: Optional[Length(0.05, 20.0, low_open=False)] = None
+    oil_density_kg_m3: _bounded(600.0, 1200.0, "kg/m3", low_open=False) = 870.0
+    passage_discharge_coefficient: _bounded(0.1, 1.0) = 0.7
 
     @model_validator(mode="after")
     def _consistent(self):
@@ -71,6 +108,27 @@ class Switching(_Model):
         if given and len(given) < len(trapped):
             problems.append(f"{', '.join(given)} given: the deactivated cylinder's breathing needs "
                             f"{', '.join(k for k in trapped if k not in given)} too (or none of them)")
+        latch = ("latch_stroke_mm", "latch_pin_mass_kg", "latch_spring_preload_N", "latch_spring_rate_N_per_mm",
+                 "oil_pressure_MPa", "oil_passage_diameter_mm")
+        moving = [k for k in latch if getattr(self, k) is not None]
+        if moving and len(moving) < len(latch):
+            problems.append(f"{', '.join(moving)} given: the latch's switching needs "
+                            f"{', '.join(k for k in latch if k not in moving)} too (or none of them)")
+        if len(moving) == len(latch):
+            push = self.oil_pressure_MPa * math.pi * self.latch_pin_diameter_mm ** 2 / 4.0
+            hold = self.latch_spring_preload_N + self.latch_spring_rate_N_per_mm * self.latch_stroke_mm
+            if push <= hold:
+                problems.append(f"oil_pressure_MPa = {self.oil_pressure_MPa:g}: its force on the latch pin, "
+                                f"{push:.4g} N, must exceed the return spring's at the stroke's end, "
+                                f"latch_spring_preload_N + latch_spring_rate_N_per_mm x latch_stroke_mm = {hold:.4g} N "
+                                "(else the pin never reaches its end)")
+        if (self.mode == "two_step") != (self.low_lobe is not None):
+            problems.append(f"mode = {self.mode!r}" + (": needs a low_lobe section (the second lobe's max_lift_mm, "
+                            "opens_deg, closes_deg)" if self.low_lobe is None else ": allowed a low_lobe section only "
+                            "with mode = 'two_step'"))
+        if self.mode == "two_step" and given:
+            problems.append(f"{', '.join(given)} given with mode = 'two_step': allowed only with mode = "
+                            "'deactivation' (the deactivated cylinder's trapped charge)")
         if problems:
             raise InputError("; ".join(problems))
         return self

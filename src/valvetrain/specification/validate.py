@@ -54,6 +54,10 @@ def _valve_problems(name, v, engine):
         out.append(Problem(f"{at}.switching", "allowed only on a finger given by its geometry (cam.follower = "
                            f"\"finger\"), not with cam.follower = {v.cam.follower!r}: the switching finger's inner arm "
                            "carries the finger's roller"))
+    low = None if v.switching is None else v.switching.low_lobe
+    if low is not None and v.max_lift_mm is not None and low.max_lift_mm >= v.max_lift_mm:
+        out.append(Problem(f"{at}.switching.low_lobe.max_lift_mm", f"allowed below the valve's max_lift_mm = "
+                           f"{v.max_lift_mm:g} (the second lobe is the low lift)", f"{low.max_lift_mm:g}"))
     if v.switching is not None and v.switching.compression_ratio is not None and engine.rod_length_mm is None:
         out.append(Problem(f"{at}.switching.compression_ratio", "needs engine.rod_length_mm: the deactivated "
                            "cylinder's volume follows the slider-crank", f"{v.switching.compression_ratio:g}", " "))
