@@ -508,18 +508,26 @@ def swept_range(dyn, engine) -> tuple[float, float]:
     return tuple(dyn.speed_range)
 
 
+def sweep_excess(network, cam_speeds, revs, step_deg) -> str | None:
+    """``None`` where a sweep of ``network`` at ``cam_speeds`` [rad/s] for ``revs`` revolutions at ``step_deg``
+    [cam deg] is within :data:`MAX_SWEEP_WORK` and :data:`MAX_SWEEP_BYTES`, else what it would take against them
+    (``"about 1e+10 integrator steps x elements (allowed 2e+09) and ..."``), the words of every refusal of a sweep."""
+    work, size = sweep_size(network, cam_speeds, revs, step_deg)
+    if work <= MAX_SWEEP_WORK and size <= MAX_SWEEP_BYTES:
+        return None
+    return (f"about {work:.3g} integrator steps x elements (allowed {MAX_SWEEP_WORK:.3g}) and {size / 1e6:.0f} MB of "
+            f"recorded revolutions (allowed {MAX_SWEEP_BYTES / 1e6:.0f} MB)")
+
+
 def refuse_large_sweep(dyn, train, cam_speeds, revs, key, asked) -> None:
     """Refuse a sweep of ``train`` at ``cam_speeds`` [rad/s] for ``revs`` revolutions at the step of ``[dynamics]``
-    ``dyn`` estimated above :data:`MAX_SWEEP_WORK` or :data:`MAX_SWEEP_BYTES` without ``allow_large_sweep``: a
-    :class:`SpecError` under ``key`` that says what ``asked`` for it (``"speeds = 200"``)."""
+    ``dyn`` estimated above :data:`MAX_SWEEP_WORK` or :data:`MAX_SWEEP_BYTES` (:func:`sweep_excess`) without
+    ``allow_large_sweep``: a :class:`SpecError` under ``key`` that says what ``asked`` for it (``"speeds = 200"``)."""
     step_deg = dyn.step / DEG
-    work, size = sweep_size(train.network(), cam_speeds, revs, step_deg)
-    if not dyn.allow_large_sweep and (work > MAX_SWEEP_WORK or size > MAX_SWEEP_BYTES):
-        raise SpecError([Problem(key, f"{asked} x revolutions = {revs} at step_cam_deg = {step_deg:g} is about "
-                                 f"{work:.3g} integrator steps x elements (allowed {MAX_SWEEP_WORK:.3g}) and "
-                                 f"{size / 1e6:.0f} MB of recorded revolutions (allowed "
-                                 f"{MAX_SWEEP_BYTES / 1e6:.0f} MB); fewer speeds or revolutions or a larger step, or "
-                                 "allow_large_sweep = true to run it")])
+    excess = None if dyn.allow_large_sweep else sweep_excess(train.network(), cam_speeds, revs, step_deg)
+    if excess:
+        raise SpecError([Problem(key, f"{asked} x revolutions = {revs} at step_cam_deg = {step_deg:g} is {excess}; "
+                                 "fewer speeds or revolutions or a larger step, or allow_large_sweep = true to run it")])
 
 
 def valve_motion(dyn, valve, engine, law, drive, speeds, at, key) -> SweepResult:
@@ -665,5 +673,5 @@ def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, 
     return out, dynamics_checks(out, engine, 0.0 if train.adjuster is None else train.adjuster.motion_ratio)
 
 
-__all__ = ["build_train", "drive_links", "dynamics_stage", "rated_contact", "refuse_large_sweep", "swept_range",
-           "valve_motion"]
+__all__ = ["build_train", "drive_links", "dynamics_stage", "rated_contact", "refuse_large_sweep", "sweep_excess",
+           "swept_range", "valve_motion"]

@@ -17,13 +17,13 @@ from .. import switching as sw
 from . import two_step as ts
 from ..bibliography import cite
 from ..checks import Check, check
-from ..dynamics.sweep import sweep, sweep_size
+from ..dynamics.sweep import sweep
 from ..locale import note
 from ..spring_materials import grade
 from ..specification.messages import Problem, SpecError
 from ..springs import DEFLECTION_RATIO_RANGE, enveloping_line
 from ..strength import LIMITS, STEEL_MODULUS
-from .dynamics import MAX_SWEEP_BYTES, MAX_SWEEP_WORK
+from .dynamics import sweep_excess
 from .results import quantity, record
 
 SPEEDS_OVER = 2.0
@@ -296,13 +296,11 @@ def _latching(switching, cam, window) -> Optional[LatchSwitching]:
 def _arm_sweep(name, switching, travel, train, speeds):
     """The deactivated arm's dynamic sweep (:func:`valvetrain.dynamics.sweep.sweep`), refused where larger than the
     dynamics chapter allows."""
-    work, size = sweep_size(train.network(), speeds, 3, SWEEP_STEP_DEG)
-    if work > MAX_SWEEP_WORK or size > MAX_SWEEP_BYTES:
+    excess = sweep_excess(train.network(), speeds, 3, SWEEP_STEP_DEG)
+    if excess:
         raise SpecError([Problem(f"valves.{name}.switching.contact_stiffness_N_per_mm", f"with speeds = "
-                                 f"{switching.speeds} the unlatched arm's sweep is about {work:.3g} integrator steps x "
-                                 f"elements (allowed {MAX_SWEEP_WORK:.3g}) and {size / 1e6:.0f} MB (allowed "
-                                 f"{MAX_SWEEP_BYTES / 1e6:.0f} MB): a softer contact, a heavier arm or fewer speeds",
-                                 f"{switching.contact_stiffness * 1e-3:g}")])
+                                 f"{switching.speeds} the unlatched arm's sweep is {excess}: a softer contact, a "
+                                 "heavier arm or fewer speeds", f"{switching.contact_stiffness * 1e-3:g}")])
     return sweep(travel, train, speeds, revolutions=3, step_deg=SWEEP_STEP_DEG)
 
 
