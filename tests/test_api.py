@@ -114,6 +114,18 @@ def test_a_changed_key_that_is_no_table_is_a_record_of_the_key():
     assert problem["message"] == "engine.bore_mm is a value, not a table"
 
 
+def test_a_changed_key_inside_an_array_is_a_record_of_the_array():
+    """A dotted key through an array of tables (study --grid breathing.conditions.0.speed_rpm) names the array as
+    one (fuzz6: it was called 'a value'; fails before)."""
+    text = (Path(__file__).parent.parent / "examples" / "tcc3-motored.toml").read_text(encoding="utf-8")
+    with pytest.raises(SpecError) as err:
+        parse_spec(text).replace({"breathing.conditions.0.speed_rpm": 900.0})
+    (problem,) = api.error_records(err.value)
+    assert problem["path"] == "breathing.conditions.0.speed_rpm"
+    assert problem["message"] == ("breathing.conditions is an array, not a table: a dotted key does not reach into "
+                                  "it; set the whole array")
+
+
 def test_not_a_dict_is_an_error_record():
     out = api.design("bore = 80")
     assert not out["ok"] and "not a str" in out["errors"][0]["message"]

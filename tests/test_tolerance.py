@@ -332,6 +332,16 @@ def test_a_folder_with_user_files_is_refused(spec_file, tmp_path):
     assert sorted(p.name for p in out.iterdir()) == ["notes.txt"]
 
 
+@pytest.mark.parametrize("place, said", [("spec", "is a file; allowed: a path whose every parent is a folder"),
+                                         ("/proc/x", "lies in /proc, a kernel file system")])
+def test_a_folder_that_cannot_be_made_is_refused(spec_file, place, said):
+    """--out under a file or in /proc is refused as run refuses it, before anything is designed (fuzz6: a
+    NotADirectoryError or FileNotFoundError traceback from the records' mkdir; fails before)."""
+    out = spec_file / "out" if place == "spec" else Path(place)
+    result = tolerance(spec_file, out, *ARGS, code=2)
+    assert f"error: --out {out}: " in result.output and said in result.output
+
+
 def test_ten_million_samples_are_refused_with_an_estimate(tmp_path, monkeypatch):
     """Issue 36: --samples 10000000 started weeks of work without a word; issue 38: a study whose estimated time is
     over an hour (as study's grids) is refused with exit 2, the estimate from timed designs of the file (none drawn:

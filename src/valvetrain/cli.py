@@ -19,7 +19,7 @@ import click
 from . import __version__
 from .errors import ValvetrainError
 from .interruption import Interruption, interrupted_while_starting
-from .outfolder import OutFolderError, check_out
+from .outfolder import OutFolderError, check_out, location_problem
 from .specification import SpecError, example_spec, example_text, input_files, load_spec
 
 OUT_HELP = ("Folder for the results: new, empty, or a previous valvetrain output, which is replaced "
@@ -551,6 +551,8 @@ def tolerance(file, samples, method, seed, out, workers, scheduler, max_samples,
                                                        and not p.is_file() for p in folder.iterdir())):
         _fail_out(OutFolderError(f"{out}: holds files that valvetrain tolerance did not write; give a new or empty "
                                  "folder"))
+    if not folder.exists() and (problem := location_problem(folder.resolve())):
+        _fail_out(OutFolderError(f"{out}: {problem}"))
     try:
         document = read_document(file)
         centres = check_tolerances(document, spec)

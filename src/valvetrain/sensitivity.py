@@ -78,6 +78,11 @@ def constant(low, high) -> bool:
     return high - low <= 1e-9 * max(1.0, abs(low), abs(high))
 
 
+def _no_indices(blocks, reason, dimensions) -> dict[str, Any]:
+    return {"blocks": blocks, "reason": reason,
+            **{name: [None] * dimensions for name in ("first", "first_95", "total", "total_95")}}
+
+
 def sobol_indices(values, dimensions, seed) -> dict[str, Any]:
     """First-order and total Sobol' indices of an output at the points of :func:`saltelli_points`, with the
     half-widths of their 95 % bootstrap intervals.
@@ -96,10 +101,11 @@ def sobol_indices(values, dimensions, seed) -> dict[str, Any]:
     dict
         ``blocks`` (the base points whose every evaluation has a value: the indices are of these, the others
         left out), ``reason`` (None, or why there are no indices: ``"constant"``, the output does not vary over
-        those blocks' f(A) and f(B) to rounding (:func:`constant`), so there is no variance to share out; ``"too_few_samples"``, fewer than :data:`MIN_BLOCKS` blocks),
-        and per input (lists, None where there are no indices) ``first`` (S_i), ``first_95``, ``total`` (S_Ti),
+        those blocks' f(A) and f(B) to rounding (:func:`constant`), so there is no variance to share out; ``"too_few_samples"``, fewer than :data:`MIN_BLOCKS` blocks,
+        or an index whose 95 % interval lies wholly outside [0, 1], where no index can be: too few blocks to resolve
+        it), and per input (lists, None where there are no indices) ``first`` (S_i), ``first_95``, ``total`` (S_Ti),
         ``total_95`` (the half-widths of the intervals).  An estimate may fall a little outside [0, 1] (its
-        sampling error), as computed.
+        sampling error, within its interval), as computed.
 
     Notes
     -----
@@ -118,12 +124,13 @@ def sobol_indices(values, dimensions, seed) -> dict[str, Any]:
     reason = ("too_few_samples" if len(blocks) < MIN_BLOCKS else
               "constant" if constant(ends.min(), ends.max()) else None)
     if reason:
-        return {"blocks": len(blocks), "reason": reason,
-                **{name: [None] * dimensions for name in ("first", "first_95", "total", "total_95")}}
+        return _no_indices(len(blocks), reason, dimensions)
     from SALib.analyze import sobol
 
     s = sobol.analyze(_problem(dimensions), blocks.ravel(), calc_second_order=False, num_resamples=RESAMPLES,
                       conf_level=CONFIDENCE, seed=np.random.default_rng(seed))
+    if any(np.any((s[key] - s[f"{key}_conf"] > 1.0) | (s[key] + s[f"{key}_conf"] < 0.0)) for key in ("S1", "ST")):
+        return _no_indices(len(blocks), "too_few_samples", dimensions)
     return {"blocks": len(blocks), "reason": None,
             **{name: [float(v) for v in s[key]]
                for name, key in (("first", "S1"), ("first_95", "S1_conf"), ("total", "ST"), ("total_95", "ST_conf"))}}

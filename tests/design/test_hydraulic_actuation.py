@@ -128,6 +128,19 @@ def test_a_grid_too_fine_for_the_runs_is_refused(extra):
         parse_spec(text).valves["intake"].hydraulic.reaches)
 
 
+def test_a_revolution_of_too_many_time_steps_is_refused_naming_the_speed():
+    """One reach of a 100 mm pipe at 1 rpm: few node updates (two nodes), but 1.5e6 time steps of one revolution, each
+    kept in the result (fuzz6: the lost-motion example at speed_rpm = 1 ran out of memory, a MemoryError traceback;
+    fails before: it is simulated)."""
+    text = with_section(SECTION.replace("speed_rpm = 1500.0", "speed_rpm = 1.0").replace(
+        "pipe_length_mm = 500.0", "pipe_length_mm = 100.0\nreaches = 1"))
+    with pytest.raises(SpecError) as err:
+        run(parse_spec(text))
+    (problem,) = err.value.problems
+    assert problem.path == "valves.intake.hydraulic.speed_rpm" and problem.value == "1"
+    assert re.search(r"a revolution at 1 rpm takes 1\.\d+e\+06 time steps .* allowed <= 5e\+05", problem)
+
+
 def test_the_sweep_is_the_single_runs_at_its_speeds(tmp_path):
     """The sweep's entry at the simulated speed (the middle of [1000, 2000] rpm) is the simulation itself; the table
     holds the same numbers as results.json, every column naming its unit."""

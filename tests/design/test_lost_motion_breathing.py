@@ -9,8 +9,9 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
+from valvetrain.design import run
+from valvetrain.specification import SpecError, spec_document, validate
 from valvetrain.specification.si import si
-
 
 
 def test_early_closings_trap_less_air_the_earlier_they_close(design):
@@ -54,3 +55,14 @@ def test_each_closing_breathes_as_the_physics_with_its_lift(design, spec):
     out = breathe(replace(engine, intake=ValveFlow(GRID, side.forward + change, side.reverse + change)), condition,
                   b.cycle_tolerance, b.max_cycles)
     assert lm.breathing[1].trapped_mass == pytest.approx(out.figures.trapped_mass, rel=1e-12)
+
+
+def test_a_drive_that_never_opens_the_valve_is_refused_naming_it(spec):
+    """A leak so large (1000 cm3/(s MPa), a legal value) that the drive never lifts the valve leaves the breathing
+    no intake closing: refused naming the drive, not an error naming no key (fuzz6: the breathing's error raised
+    bare out of the design, exit status 1; fails before)."""
+    doc = spec_document(spec)
+    doc["valves"]["intake"]["hydraulic"]["leakage_cm3_per_s_MPa"] = 1000.0
+    with pytest.raises(SpecError, match=r"valves.intake.hydraulic: the breathing of the full lift cannot run, the "
+                                         r"drive lifting the valve 0 mm: the intake valve closes at never"):
+        run(validate(doc))

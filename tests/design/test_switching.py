@@ -75,6 +75,13 @@ def test_record_by_hand(designs):
                      "switching.latch_stress": True, "switching.latch_time": True}
 
 
+def test_the_spring_source_names_its_range(designs):
+    """The record's source of the lost-motion spring: the valve spring's force ratio 1.6 ... 3.2 as every range is
+    written (fuzz6: '1.6....3.2', four dots; fails before)."""
+    source = designs[0].to_dict()["switching"]["intake"]["spring_source"]
+    assert "the force ratio's range 1.6...3.2 the valve spring's" in source and "...." not in source
+
+
 def test_a_too_weak_spring_wire_fails_its_check():
     doc = _document()
     doc["valves"]["intake"]["switching"]["spring_wire_diameter_mm"] = 1.6

@@ -181,3 +181,16 @@ def test_a_table_that_begins_at_its_opening_has_its_lift_integral():
     assert [line["symbol"] for line in lines] == ["V‴", "v_vp", "ξ"]
     for line in lines:
         assert evaluate(line) == pytest.approx(_value(line["result"]), rel=3e-3), line
+
+
+def test_an_asymmetric_kurz_cam_has_no_law_lines():
+    """Two Kurz flanks make a law named "kurz" without the symmetric law's w' and Phi: its coefficients are each
+    flank's, so the worked example writes none (fuzz6: tools/fuzz_specs.py's asymmetric Kurz base, the report of
+    every run an AttributeError traceback; fails before)."""
+    from valvetrain.specification import spec_document, validate
+    doc = spec_document(appendix_spec())
+    doc["valves"]["intake"]["cam"].update(     # tests/laws/test_asymmetric.py's flanks, adding up to 142 cam deg
+        phi1_deg=21.0, phi2_deg=5.0, phi3_deg=30.0,
+        closing={"phi1_deg": 30.0, "phi2_deg": 7.0, "phi3_deg": 49.0, "ramp_end_velocity_mm_per_deg": 0.015})
+    v = run(validate(doc)).valves["intake"]
+    assert v.cam.law.name == "kurz" and law_lines(v.cam.law, v.cam) == []

@@ -291,6 +291,10 @@ def breathing_stage(b, engine, crank, valves, views) -> BreathingResults:
     engines, words = breathing_engine(b, engine, crank, valves, views, given + swept)
     conditions, curve = breathe_conditions(engines, b, given, swept)
     found = [cycle_check(r.figures, b.cycle_tolerance) for r in conditions + curve if not r.converged]
+    found += [check("breathing.air_flow", r.figures.air_mass_flow, low=0.0, unit="g/s",
+                    source="Heywood (1988), section 6.2 (the air delivered from the intake plenum)",
+                    params={"speed": f"{to_display(r.figures.speed, 'rpm'):.5g}"})
+              for r in conditions + curve if r.figures.air_mass_flow < 0.0]
     figures = BreathingSummary(b.mode, *words, tuple(r.figures for r in conditions), tuple(r.figures for r in curve))
     return BreathingResults(engines, conditions, curve, figures, tuple(found))
 

@@ -45,6 +45,10 @@ MAX_NODE_STEPS = 2e8
 """Largest number of node updates (time steps x grid nodes) the stage runs, the simulated speed and the sweep
 together (about two seconds)."""
 
+MAX_REVOLUTION_STEPS = 5e5
+"""Most time steps of one simulated revolution, each of whose about 25 values the result keeps (100 MB a
+revolution; a lost-motion stage keeps up to 13 of them): a hundred times the examples' (about 6000)."""
+
 DELAY_LEVEL = 0.05
 """Lift level of the delays, a fraction of the largest rigid lift."""
 
@@ -292,7 +296,8 @@ def hydraulic_stage(valve, law, engine, gas, name, nose, cylinder=None) -> tuple
     ------
     ValueError
         The grid and the speeds ask for more than :data:`MAX_NODE_STEPS` node updates (its
-        :class:`~valvetrain.specification.messages.Problem` names the key ``reaches``).
+        :class:`~valvetrain.specification.messages.Problem` names the key ``reaches``), or a revolution for more than
+        :data:`MAX_REVOLUTION_STEPS` time steps (naming ``speed_rpm`` or ``speed_range_rpm``).
 
     Notes
     -----
@@ -326,6 +331,14 @@ def hydraulic_stage(valve, law, engine, gas, name, nose, cylinder=None) -> tuple
             "reaches", f"the simulation and the {speeds.size} speeds of the sweep take {work:.3g} node updates of the "
             f"pipe grid (time step {drive.time_step * 1e6:.3g} us); allowed <= {MAX_NODE_STEPS:.0e}: use fewer "
             "reaches, a longer pipe, fewer speeds or higher ones", f"{drive.pipe.reaches}"))
+    slowest = float(revolutions.min())
+    if 2.0 * math.pi / slowest / drive.time_step > MAX_REVOLUTION_STEPS:
+        key = "speed_rpm" if slowest == speed * to_cam else "speed_range_rpm"
+        raise InputError(Problem(
+            key, f"a revolution at {to_display(slowest / to_cam, 'rpm'):.4g} rpm takes "
+            f"{2.0 * math.pi / slowest / drive.time_step:.3g} time steps of {drive.time_step * 1e6:.3g} us; allowed <= "
+            f"{MAX_REVOLUTION_STEPS:.0e} (each step's values are kept): a higher speed or fewer reaches",
+            f"{to_display(slowest / to_cam, 'rpm'):.4g}"))
     diameter, port = head_load(valve, gas)
     force = gas_force(valve, gas, engine, nose, cylinder)
     if cylinder is None:

@@ -7,7 +7,7 @@ from dataclasses import replace
 import numpy as np
 
 from ..breathing import ValveFlow
-from ..breathing.cycle import CYCLE, MAX_WORK, work
+from ..breathing.cycle import CYCLE, MAX_WORK, BreathingError, work
 from ..checks import Check
 from ..specification.messages import Problem, SpecError
 from ..units import to_display
@@ -44,7 +44,9 @@ def with_breathing(result, name, design, view, breathing, b) -> tuple[LostMotion
     Raises
     ------
     SpecError
-        More work than :data:`~valvetrain.breathing.cycle.MAX_WORK` asked for, naming the timings' key.
+        More work than :data:`~valvetrain.breathing.cycle.MAX_WORK` asked for, naming the timings' key; a lift
+        the breathing cannot run (a drive that never opens the valve or never lets it close), naming the drive or the
+        timings.
 
     Notes
     -----
@@ -74,7 +76,14 @@ def with_breathing(result, name, design, view, breathing, b) -> tuple[LostMotion
         lifted = [replace(e, **{kind: ValveFlow(GRID, flow.forward - own_forward + f,
                                                 flow.reverse - own_reverse + rev)})
                   for e, flow in zip(engines, flows, strict=True)]
-        for c, out in zip(given, breathing_records(lifted, given, b.cycle_tolerance, b.max_cycles), strict=True):
+        try:
+            records = breathing_records(lifted, given, b.cycle_tolerance, b.max_cycles)
+        except BreathingError as exc:
+            which = "the full lift" if opens is None else f"{to_display(opens, 'crank deg'):g} crank deg"
+            raise SpecError([Problem(f"valves.{name}.hydraulic" + ("" if opens is None else f".lost_motion.{KEY}"),
+                                     f"the breathing of {which} cannot run, the drive lifting the valve "
+                                     f"{to_display(float(r.valve_lift.max()), 'mm'):.3g} mm: {exc}")]) from None
+        for c, out in zip(given, records, strict=True):
             g = out.figures
             rows.append(ClosingBreath(opens, closes, g.speed, g.intake_pressure, g.trapped_mass,
                                       g.volumetric_efficiency, g.residual_gas_fraction, g.pmep, g.imep, out.converged))

@@ -43,7 +43,7 @@ LATCH_SOURCE = (cite("vt_works", "eq. (7.13): <= 2000 MPa, the hardened rocker p
                      "on its seat (no published allowable of the latch was found)"))
 
 SPRING_SOURCE = (f"{cite('norton2009', 'the chapter on the dynamics of follower trains')}; "
-                 f"{cite('hendriksma2007')}; the force ratio's range {DEFLECTION_RATIO_RANGE[0]:g}...."
+                 f"{cite('hendriksma2007')}; the force ratio's range {DEFLECTION_RATIO_RANGE[0]:g}..."
                  f"{DEFLECTION_RATIO_RANGE[1]:g} the valve spring's ({cite('vt_works', 'work 5')}), taken for "
                  "the lost-motion spring (none published for it)")
 

@@ -32,7 +32,8 @@ TOLERANCE_TEXT = {
         "first": "first-order index S<sub>i</sub> ± 95 %", "total": "total index S<sub>T,i</sub> ± 95 %",
         "bars": "0 ... 1: S<sub>i</sub> (blue), S<sub>T,i</sub> (orange), 95 % interval",
         "sobol_reasons": {"constant": "does not vary over the samples: no indices",
-                          "too_few_samples": "fewer than two base points whose every sample has a value: no indices"},
+                          "too_few_samples": "too few base points whose every sample has a value (under two, or an "
+                                             "index's 95 % interval wholly outside 0 ... 1): no indices"},
         "sobol_text": ("The first-order index S<sub>i</sub> of a tolerance is the share of the variance of an output "
                        "that the tolerance causes alone, the total index S<sub>T,i</sub> the share it causes alone "
                        "and with the others ({sobol}); a tolerance with S<sub>T,i</sub> near 0 can be left out. "
@@ -72,8 +73,8 @@ TOLERANCE_TEXT = {
         "first": "индекс первого порядка S<sub>i</sub> ± 95 %", "total": "полный индекс S<sub>T,i</sub> ± 95 %",
         "bars": "0 ... 1: S<sub>i</sub> (синий), S<sub>T,i</sub> (оранжевый), 95 % интервал",
         "sobol_reasons": {"constant": "не меняется в вариантах: индексов нет",
-                          "too_few_samples": "менее двух базовых точек, все варианты которых имеют значение: "
-                                             "индексов нет"},
+                          "too_few_samples": "мало базовых точек, все варианты которых имеют значение (менее двух или "
+                                             "95 % интервал индекса целиком вне 0 ... 1): индексов нет"},
         "sobol_text": ("Индекс первого порядка S<sub>i</sub> допуска — доля дисперсии результата, вызванная этим "
                        "допуском самим по себе, полный индекс S<sub>T,i</sub> — доля, вызванная им самим и вместе с "
                        "другими ({sobol}); допуск с S<sub>T,i</sub> около 0 можно не учитывать. Индексы оценены по "

@@ -13,6 +13,7 @@ import numpy as np
 
 from .. import strength
 from ..design.results import shown_value
+from ..laws.asymmetric import AsymmetricLaw
 from ..units import to_display
 from .numbers import SUPERSCRIPTS, number
 from .names import unit_text
@@ -120,7 +121,7 @@ def law_lines(law, cam, lang="en") -> list[dict[str, Any]]:
     """The coefficients of the valve's law with its numbers: a Kurz law's from its segments (Valve-train practical
     works (n.d.), work 2, eqs. (2.23)-(2.34)), a polydyne's from its exponents (work 3, eqs. (3.4)-(3.8)), a
     power-polynomial law's ramp and negative amplitude (UkrSURT Proceedings (2019), reconstructed); no lines for
-    another law (its coefficients are the table's).
+    another law (its coefficients are the table's) nor for an asymmetric cam (its two flanks' laws, each its own).
 
     Parameters
     ----------
@@ -130,7 +131,7 @@ def law_lines(law, cam, lang="en") -> list[dict[str, Any]]:
     cam : valvetrain.design.valve.CamResult
         The law stage (tappet lift h_T max [mm], the coefficients [mm, rad, deg; dimensionless C of a polydyne]).
     """
-    name = getattr(law, "name", None)
+    name = None if isinstance(law, AsymmetricLaw) else getattr(law, "name", None)
     if name == "polydyne":
         return _polydyne_lines(law, cam, lang)
     if name == "power_polynomial":

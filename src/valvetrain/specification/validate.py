@@ -323,6 +323,9 @@ def set_keys(document, values) -> dict[str, Any]:
                                              f"{', '.join(node) or 'none'})"))
                 node[part] = {}
             node = node[part]
+            if isinstance(node, list):
+                raise InputError(Problem(key, f"{'.'.join(parts[:i + 1])} is an array, not a table: a dotted key "
+                                         "does not reach into it; set the whole array"))
             if not isinstance(node, dict):
                 raise InputError(Problem(key, f"{'.'.join(parts[:i + 1])} is a value, not a table"))
         if isinstance(node.get(parts[-1]), dict):
