@@ -51,6 +51,11 @@ class Layout:
         """The ``[drive.masses]`` keys of the links a multi-mass train of this layout needs, from the cam."""
         return tuple(link.mass_key for link in self.links if link.mass_key is not None)
 
+    @property
+    def valve_joint(self) -> str:
+        """The name of the joint between the last moving link and the valve (:attr:`~valvetrain.links.Link.joint`)."""
+        return [link.joint for link in self.links if link.joint][-1]
+
 
 LAYOUTS = {"direct": Layout("direct", ("tappet",)), "rocker": Layout("rocker", ("rocker",)),
            "pushrod": Layout("pushrod", ("tappet", "pushrod", "rocker", "rocker_pivot"))}
