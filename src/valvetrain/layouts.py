@@ -37,8 +37,6 @@ class Layout:
     name: str
     parts: tuple
 
-    tappet = property(lambda self: "tappet" in self.parts)
-    pushrod = property(lambda self: "pushrod" in self.parts)
     rocker = property(lambda self: "rocker" in self.parts)
 
     @property
