@@ -33,11 +33,12 @@ def test_each_layout_s_chain_of_parts_from_the_cam():
     assert layouts.LAYOUTS["rocker"].parts == ("rocker",)
     pushrod = layouts.chain(_intake())
     assert pushrod.parts == ("tappet", "pushrod", "rocker", "rocker_pivot")
-    assert pushrod.tappet and pushrod.pushrod and pushrod.rocker
+    assert pushrod.rocker and pushrod.valve_joint == "rocker and valve joint"
     # the pivot ball of a stud rocker does not move: no mass of its own in the train
     assert pushrod.train_masses == ("tappet_kg", "pushrod_kg", "rocker_inertia_kg_mm2")
     rocker = layouts.LAYOUTS["rocker"]
-    assert not rocker.tappet and not rocker.pushrod and rocker.train_masses == ("rocker_inertia_kg_mm2",)
+    assert rocker.rocker and rocker.train_masses == ("rocker_inertia_kg_mm2",)
+    assert layouts.LAYOUTS["direct"].valve_joint == "valve stem and tappet" and not layouts.LAYOUTS["direct"].rocker
 
 
 def test_the_example_s_train_mass_by_hand():

@@ -37,8 +37,6 @@ class Layout:
     name: str
     parts: tuple
 
-    tappet = property(lambda self: "tappet" in self.parts)
-    pushrod = property(lambda self: "pushrod" in self.parts)
     rocker = property(lambda self: "rocker" in self.parts)
 
     @property
@@ -50,6 +48,11 @@ class Layout:
     def train_masses(self) -> tuple[str, ...]:
         """The ``[drive.masses]`` keys of the links a multi-mass train of this layout needs, from the cam."""
         return tuple(link.mass_key for link in self.links if link.mass_key is not None)
+
+    @property
+    def valve_joint(self) -> str:
+        """The name of the joint between the last moving link and the valve (:attr:`~valvetrain.links.Link.joint`)."""
+        return [link.joint for link in self.links if link.joint][-1]
 
 
 LAYOUTS = {"direct": Layout("direct", ("tappet",)), "rocker": Layout("rocker", ("rocker",)),

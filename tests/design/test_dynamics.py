@@ -150,6 +150,35 @@ def test_multi_with_massless_coils_has_the_reduced_mass():
     assert list(d.parameters.node_masses) == ["tappet", "pushrod", "rocker", "valve"]
 
 
+@pytest.mark.parametrize("name", ["pushrod", "rocker", "direct"])
+def test_the_train_built_from_the_links_is_the_hand_written_train(name):
+    """The multi-mass train the stage builds from a layout's links (each link's node and stiffness) has the nodes and
+    the elements, bit for bit, of the trains written out by hand for each layout in dynamics/models.py
+    (pushrod_train, rocker_train, direct_train: Shang Hanji (1988), section 3.2)."""
+    from types import SimpleNamespace
+
+    from valvetrain.design.dynamics import _multi_train
+    from valvetrain.dynamics.coils import CoilSpring
+    from valvetrain.dynamics.models import direct_train, pushrod_train, rocker_train
+
+    k = 1.0 if name == "direct" else 1.6
+    masses = SimpleNamespace(valve_kg=0.06, retainer_kg=0.01, cotters_kg=0.004, tappet_kg=0.03, pushrod_kg=0.035,
+                             rocker_inertia=40e-6)
+    valve = SimpleNamespace(drive=SimpleNamespace(layout=name, masses=masses), rocker_ratio=k)
+    springs, lash, kw, arm, m = [CoilSpring(4e4, 300.0, 0.03, 0.0, 4)], 2e-4, {"damping_ratio": 0.05}, 0.04, 0.074
+    links = {"pushrod": (3.6e8, 3.8e7, 4.5e7), "rocker": (3.6e8, 4.5e7), "direct": (3.6e8, 4.5e7)}[name]
+    by_hand = {"pushrod": lambda: pushrod_train(0.03, 0.035, 40e-6, m, arm, k, links[0] * k**2, links[1] * k**2,
+                                                links[2], np.inf, springs, lash, **kw),
+               "rocker": lambda: rocker_train(40e-6, m, arm, k, links[0] * k**2, links[1], np.inf, springs, lash, **kw),
+               "direct": lambda: direct_train(0.03, m, links[0], links[1], springs, lash, **kw)}[name]()
+    built = _multi_train(valve, links, springs, lash, kw, "valves.intake", arm)
+    assert built.layout == by_hand.layout and built.rocker_ratio == by_hand.rocker_ratio
+    assert [n for n, _ in built.drive] == [n for n, _ in by_hand.drive]
+    np.testing.assert_allclose([x for _, x in built.drive], [x for _, x in by_hand.drive], rtol=1e-15)
+    np.testing.assert_allclose(built.links, by_hand.links, rtol=1e-15)
+    assert built.network().elements == by_hand.network().elements
+
+
 def test_multi_needs_the_part_masses():
     text = appendix_text().replace("[valves.intake.drive.masses]", "[valves.intake.unused]")
     text = text[:text.index("[valves.intake.unused]")] + text[text.index("[valves.intake.spring]"):]

@@ -27,3 +27,15 @@ def test_the_buckling_margin_and_head_pressure_by_hand():
     assert margin.code == "strength.pushrod_buckling_margin" and margin.value == pytest.approx(p_cr / 1000.0)
     assert head.code == "strength.pushrod_head_pressure" and head.value == pytest.approx(50e6)
     assert notes == ["ball_socket_stress: not checked"]
+
+
+def test_its_stiffness_and_node_by_hand():
+    """E A / L = 2.1e11 Pa x pi (8 mm)^2 / 4 / 250 mm = 42.22 N/um; no stiffness without its length; its node on the cam
+    side of a rocker of ratio 1.6 is m / k^2 = 0.035 kg / 2.56 = 13.67 g (Valve-train practical works (n.d.), eq. 5.2;
+    hand calculation), and a mass of 0 is named as missing."""
+    assert Pushrod.elastic and Pushrod().stiffness(parts()) == pytest.approx(42.22e6, rel=1e-4)
+    assert Pushrod().stiffness(parts(pushrod_length=None)) is None
+    masses = SimpleNamespace(pushrod_kg=0.035)
+    assert Pushrod().node(masses, 1.6, None) == ("pushrod", pytest.approx(0.013671875))
+    assert Pushrod().missing(masses, None) == [] and Pushrod().missing(SimpleNamespace(pushrod_kg=0.0), 0.04) == [
+        "pushrod_kg"]

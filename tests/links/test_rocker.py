@@ -21,3 +21,13 @@ def test_the_pad_stress_is_that_of_the_valve_force_by_hand():
     assert pad.value == pytest.approx(0.418 * math.sqrt(600.0 * 2.1e11 / (0.010 * 0.020)), rel=1e-12)
     assert pad.value == pytest.approx(331.8e6, rel=1e-3)
     assert notes == ["rocker_shaft: not checked"]
+
+
+def test_its_node_is_its_inertia_on_the_valve_arm():
+    """J / l_v^2 = 40 kg mm^2 / (40 mm)^2 = 25 g whatever the ratio (Valve-train practical works (n.d.), eq. 5.2; hand
+    calculation); it needs its inertia and the valve arm, and is the last link's joint to the valve."""
+    masses = SimpleNamespace(rocker_inertia=40e-6)
+    assert Rocker().node(masses, 1.6, 0.040) == ("rocker", pytest.approx(0.025))
+    assert Rocker().missing(masses, 0.040) == [] and Rocker().joint == "rocker and valve joint"
+    assert Rocker().missing(SimpleNamespace(rocker_inertia=0.0), None) == ["rocker_inertia_kg_mm2",
+                                                                          "valve_arm_mm (in [drive])"]

@@ -205,6 +205,23 @@ def test_bad_variables_are_refused_before_the_search(tmp_path, args, message):
     assert not (tmp_path / "o").exists()
 
 
+@pytest.mark.parametrize("example, args, message", [
+    ("switching-finger", ["--vary", "switching.speeds=4,8"], "--vary switching.speeds=4,8: valves.intake.switching."
+     "speeds is an integer (16) and cannot be varied continuously; --vary takes a real-valued key under [valves.NAME]"),
+    ("lost-motion-intake", ["--vary", "hydraulic.lost_motion.solenoid_opens_crank_deg=60,90"],
+     "valves.intake.hydraulic.lost_motion.solenoid_opens_crank_deg is a list ([60.0, 90.0, 120.0, 150.0]) and cannot "
+     "be varied continuously as a whole; vary one of its numbers by its 1-based position, such as "
+     "hydraulic.lost_motion.solenoid_opens_crank_deg.1"),
+])
+def test_an_integer_or_a_list_key_is_named_as_such(tmp_path, example, args, message):
+    """A fuzz run: --vary on an integer key (a count of speeds) or on a whole list was refused as 'LOW = 4 is outside
+    the range ...: Input should be a valid integer' (or 'a valid list'), as though another LOW would do; the refusal
+    says what the key is, its value and what can be varied: exit 2, nothing written."""
+    r = CliRunner().invoke(main, ["optimize", str(EXAMPLES / f"{example}.toml"), "--out", str(tmp_path / "o"), *args])
+    assert r.exit_code == 2 and message in " ".join(r.output.split()), r.output
+    assert "outside the range" not in r.output and not (tmp_path / "o").exists()
+
+
 def test_a_file_without_valves_is_refused(tmp_path):
     r = CliRunner().invoke(main, ["optimize", str(EXAMPLES / "v8-crank.toml"), "--out", str(tmp_path / "o")])
     assert r.exit_code == 2 and "no [valves.NAME] section" in r.output, r.output

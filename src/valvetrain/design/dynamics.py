@@ -20,8 +20,8 @@ import numpy as np
 from .. import lash_adjuster as hla
 from ..checks import Check
 from ..dynamics.coils import CoilSpring, coil_spring
-from ..dynamics.models import (Adjuster, MultiMassTrain, OneMassTrain, VariableMass, camshaft_stiffness, direct_train,
-                               natural_modes, one_mass_train, pushrod_stiffness, pushrod_train, rocker_train, series)
+from ..dynamics.models import (Adjuster, MultiMassTrain, OneMassTrain, VariableMass, camshaft_stiffness, natural_modes,
+                               one_mass_train, series)
 from ..dynamics.accuracy import refine
 from ..dynamics.perturbation import perturbation_parameter
 from ..dynamics.resonance import resonance
@@ -63,15 +63,13 @@ def _link_estimates(valve, k):
     if None not in (parts.camshaft_diameter, parts.camshaft_span, parts.cam_to_bearing):
         cam = camshaft_stiffness(parts.cam_to_bearing, parts.camshaft_span - parts.cam_to_bearing,
                                  parts.camshaft_diameter, parts.camshaft_bore, parts.camshaft_modulus) / k**2
-    links = [("camshaft and cam contact", cam)]
     drive = chain(valve)
-    if drive.pushrod:
-        rod = None
-        if None not in (parts.pushrod_length, parts.pushrod_diameter):
-            rod = pushrod_stiffness(parts.pushrod_length, parts.pushrod_diameter, parts.pushrod_bore,
-                                    parts.pushrod_modulus) / k**2
-        links.append(("pushrod", rod))
-    links.append(("rocker and valve joint" if drive.rocker else "valve stem and tappet", None))
+    links = [("camshaft and cam contact", cam)]
+    for link in drive.links:
+        if link.elastic:
+            own = link.stiffness(parts)
+            links.append((link.name, None if own is None else own / k**2))
+    links.append((drive.valve_joint, None))
     return links
 
 
@@ -419,30 +417,33 @@ def _finger_node(valve, law, node, rest=0.0, offset=0.0) -> VariableMass:
 
 
 def _multi_train(valve, links, springs, lash, kw, at, arm):
-    """A pushrod, rocker or direct multi-mass train from the part masses of [drive.masses], the rocker's inertia on the
-    valve arm ``arm`` [m] (:func:`inertia_arm`)."""
+    """The multi-mass train of the valve's layout from its links, from the cam: each link's node (:meth:`Link.node
+    <valvetrain.links.Link.node>`, the part masses of [drive.masses] reduced to the valve, a rocker's inertia on the
+    valve arm ``arm`` [m] of :func:`inertia_arm`), then the valve's; between them the drive's stiffnesses ``links`` at the
+    valve (:func:`drive_links`: the camshaft, each elastic link's, the last link's joint to the valve) in series, an
+    elastic link's as two halves of twice its stiffness on either side of its node."""
     m, drive = valve.drive.masses, chain(valve)
     need = drive.train_masses
     if m is None:
         raise SpecError([Problem(f"{at}.dynamics.model", f"needs [{at}.drive.masses] with valve_kg, "
                                  f"{', '.join(need)} (the masses of the drive parts)", '"multi"', " ")])
-    si_keys = {"tappet_kg": "tappet_kg", "pushrod_kg": "pushrod_kg", "rocker_inertia_kg_mm2": "rocker_inertia"}
-    missing = [key for key in need if getattr(m, si_keys[key]) <= 0.0]
-    if drive.rocker and arm is None:
-        missing.append("valve_arm_mm (in [drive])")
+    missing = [key for link in drive.links for key in link.missing(m, arm)]
     if missing:
         raise SpecError([Problem(f"{at}.dynamics.model", f"with layout \"{drive.name}\" needs positive "
                                  f"drive.masses.{', '.join(missing)}", '"multi"', " ")])
     k = valve.rocker_ratio
-    valve_mass = m.valve_kg + m.retainer_kg + m.cotters_kg
-    inf = math.inf
-    if drive.pushrod:
-        return pushrod_train(m.tappet_kg, m.pushrod_kg, m.rocker_inertia, valve_mass, arm, k,
-                             links[0] * k**2, links[1] * k**2, links[2], inf, springs, lash, **kw)
-    if drive.rocker:
-        return rocker_train(m.rocker_inertia, valve_mass, arm, k, links[0] * k**2, links[1], inf,
-                            springs, lash, **kw)
-    return direct_train(m.tappet_kg, valve_mass, links[0], links[1], springs, lash, **kw)
+    nodes, stiffness, between = [], [], [links[0]]   # between: the stiffnesses since the last node [N/m at the valve]
+    elastic = iter(links[1:-1])
+    for link in drive.links:
+        node = link.node(m, k, arm)
+        if node is not None:   # an elastic link's mass at its middle between two halves of twice its stiffness
+            half = [2.0 * next(elastic)] if link.elastic else []
+            nodes.append(node)
+            stiffness.append(series(*between, *half))
+            between = half
+    nodes.append(("valve", m.valve_kg + m.retainer_kg + m.cotters_kg))
+    stiffness.append(series(*between, links[-1]))
+    return MultiMassTrain(drive.name, tuple(nodes), tuple(stiffness), tuple(springs), float(k), float(lash), **kw)
 
 
 POOR_FILM_BAND = (0.4, 0.6)

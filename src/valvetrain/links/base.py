@@ -3,7 +3,8 @@
 A drive layout (:mod:`valvetrain.layouts`) is a contact, the follower that touches the cam (:mod:`valvetrain.followers`),
 and a chain of links from the cam to the valve: a tappet in its guide, a pushrod, a rocker on its shaft.  The stages
 loop over the links instead of asking which layout they are in: the strength stage collects each link's checks
-(:meth:`Link.checks`), the multi-mass train reads each link's mass key (:attr:`Link.mass_key`), the side force of a
+(:meth:`Link.checks`), the dynamics builds the elastic train from each link's node (:meth:`Link.node`), its own
+stiffness (:meth:`Link.stiffness`) and the joint of the last one to the valve (:attr:`Link.joint`), the side force of a
 roller is carried by the first link (:attr:`Link.carrier`), a flat follower's face is the first link's
 (:meth:`Link.face_diameter`).
 
@@ -12,7 +13,8 @@ For the author of a new link
 Write one module in this package with a subclass of :class:`Link` decorated ``@register``, import it in
 ``links/__init__.py``, and name it in a layout's chain (:data:`valvetrain.layouts.LAYOUTS`).  Its dimensions are keys
 of ``[valves.NAME.parts]`` (a new pydantic field of ``specification/models.py`` with its README row and report name),
-its mass a key of ``[drive.masses]``; its checks are :func:`valvetrain.strength.verdict` of a new
+its mass a key of ``[drive.masses]`` (its node in the elastic train, :meth:`Link.node`; an elastic member's
+stiffness, :meth:`Link.stiffness`); its checks are :func:`valvetrain.strength.verdict` of a new
 :data:`valvetrain.strength.LIMITS` row (and its code's texts, ``tools/check_codes.py add``).  Links hold no state;
 their methods are pure functions of the loads (:class:`Loads`, SI) and return checks, never sentences.
 """
@@ -76,14 +78,25 @@ class Link:
     mass_key : str or None
         The ``[drive.masses]`` key of its mass (or inertia) in a multi-mass train; None for a link that does not
         move (a rocker's pivot).
+    mass_attr : str
+        The attribute of the SI view of ``[drive.masses]`` that holds the mass (or inertia) of ``mass_key``.
     carrier : str
         The note code (:mod:`valvetrain.locale`) of the link as the carrier of a roller's side force, where it is
         the first link from the cam.
+    elastic : bool
+        Whether the link is an elastic member of the drive (a pushrod): its mass sits at its middle between two
+        halves of twice its stiffness (:meth:`stiffness`); the other links are rigid bodies between the joints.
+    joint : str
+        The name of the joint between the link and the valve in the drive's stiffness, where it is the last moving
+        link of the chain ("" for a link that never is).
     """
 
     name: ClassVar[str]
     mass_key: ClassVar[Optional[str]] = None
+    mass_attr: ClassVar[str] = ""
     carrier: ClassVar[str] = ""
+    elastic: ClassVar[bool] = False
+    joint: ClassVar[str] = ""
 
     def checks(self, loads) -> list:
         """The strength checks of the link under ``loads`` (:class:`Loads`), those whose keys are given: none."""
@@ -93,3 +106,32 @@ class Link:
         """The diameter of the face the link offers a flat follower [m] (``parts``: SI view of
         ``[valves.NAME.parts]``), or None where its face is not known."""
         return None
+
+    def stiffness(self, parts) -> Optional[float]:
+        """The link's own stiffness along the train [N/m] (at the link, not reduced to the valve) from ``parts`` (SI
+        view of ``[valves.NAME.parts]``), None where its geometry is not given; only an :attr:`elastic` link has
+        one."""
+        return None
+
+    def node(self, masses, ratio, arm) -> Optional[tuple[str, float]]:
+        """The link's node in a multi-mass train: its name and its mass reduced to the valve [kg], m / i_k^2 (Valve-train
+        practical works (n.d.), eq. 5.2); None for a link without a mass (:attr:`mass_key` None).
+
+        Parameters
+        ----------
+        masses : SI view of ``[drive.masses]``
+        ratio : float
+            The valve's travel per the link's, i_k = l_v / l_t for a link on the cam side of a rocker (1 without one).
+        arm : float or None
+            The valve arm that reduces a rocker's inertia to the valve [m].
+        """
+        if self.mass_key is None:
+            return None
+        return self.name, getattr(masses, self.mass_attr) / ratio**2
+
+    def missing(self, masses, arm) -> list[str]:
+        """The keys a multi-mass train needs of the link and the specification does not give (``[drive.masses]``
+        keys whose value is not positive), for the refusal that names them."""
+        if self.mass_key is None or getattr(masses, self.mass_attr) > 0.0:
+            return []
+        return [self.mass_key]

@@ -7,6 +7,7 @@ Valve-train practical works (n.d.), work 7, eqs. (7.8)-(7.12), (7.14) (correctio
 """
 
 from .. import strength
+from ..dynamics.models import pushrod_stiffness
 from ..locale import note
 from ..units import to_display
 from .base import Link, register
@@ -17,7 +18,16 @@ class Pushrod(Link):
     """A pushrod, a slender column under the cam force."""
 
     name = "pushrod"
-    mass_key = "pushrod_kg"
+    mass_key = mass_attr = "pushrod_kg"
+    elastic = True
+
+    def stiffness(self, parts) -> float | None:
+        """Its axial stiffness E A / L (:func:`valvetrain.dynamics.models.pushrod_stiffness`) where its length and
+        diameter are given."""
+        if None in (parts.pushrod_length, parts.pushrod_diameter):
+            return None
+        return pushrod_stiffness(parts.pushrod_length, parts.pushrod_diameter, parts.pushrod_bore,
+                                 parts.pushrod_modulus)
 
     def checks(self, loads) -> list:
         """The buckling margin P_cr / P_T (Euler's load of a tube pinned at both ends), the contact stress of its

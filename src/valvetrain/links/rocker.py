@@ -18,7 +18,18 @@ class Rocker(Link):
 
     name = "rocker"
     mass_key = "rocker_inertia_kg_mm2"
+    mass_attr = "rocker_inertia"
     carrier = "strength.carried_by_rocker"
+    joint = "rocker and valve joint"
+
+    def node(self, masses, ratio, arm) -> tuple[str, float]:
+        """The rocker's inertia about its shaft on the valve arm, J / l_v^2 [kg] (Valve-train practical works (n.d.),
+        eq. 5.2)."""
+        return self.name, masses.rocker_inertia / arm**2
+
+    def missing(self, masses, arm) -> list[str]:
+        """Its inertia where not positive, and the valve arm where not known."""
+        return super().missing(masses, arm) + ([] if arm is not None else ["valve_arm_mm (in [drive])"])
 
     def checks(self, loads) -> list:
         """The pad's contact stress on the valve tip under the valve force, and the shaft's bending (a built-in

@@ -17,8 +17,9 @@ class Tappet(Link):
     """A tappet in its guide: its side pressure where a flat face slides on the cam, its face for the edge loading."""
 
     name = "tappet"
-    mass_key = "tappet_kg"
+    mass_key = mass_attr = "tappet_kg"
     carrier = "strength.carried_by_guide"
+    joint = "valve stem and tappet"
 
     def checks(self, loads) -> list:
         """The side pressure on the guide, q = 6 P_T b / (d l^2) (:func:`valvetrain.strength.tappet_side_pressure`),

@@ -40,6 +40,18 @@ class Variable:
         else:
             node[last] = value
 
+    def get(self, data):
+        """The variable's value in a valve section's data (dict), None where the section has no such key."""
+        node = data
+        for part in self.path.split("."):
+            if isinstance(node, list) and part.isdigit() and 0 < int(part) <= len(node):
+                node = node[int(part) - 1]
+            elif isinstance(node, dict) and part in node:
+                node = node[part]
+            else:
+                return None
+        return node
+
 
 def _ramp_and_spring(cam):
     """The ramp end velocity within its band (Valve-train practical works (n.d.), eq. 2.1) and the spring reserve
@@ -154,8 +166,25 @@ def unknown_key(path, name, section) -> str:
                "cam.phi1_deg or drive.spring_reserve"))
 
 
+def not_continuous(v, name, section, value) -> str | None:
+    """The message of a ``--vary`` key whose value (``value``, as in the section) cannot be varied continuously: an
+    integer (a count) or a list as a whole; None for any other value."""
+    head = f"--vary {v.path}={','.join(v.written or (f'{v.low:g}', f'{v.high:g}'))}: valves.{name}.{v.path}"
+    if isinstance(value, list):
+        entries = [k for k in numeric_keys(section) if k.startswith(f"{v.path}.")][:2]
+        return (f"{head} is a list ({value}) and cannot be varied continuously as a whole; vary one of its numbers by "
+                f"its 1-based position, such as {' or '.join(entries)}" if entries else
+                f"{head} is a list ({value}) and cannot be varied continuously; --vary takes a real-valued key under "
+                "[valves.NAME], such as cam.phi1_deg or drive.spring_reserve")
+    if isinstance(value, int) and not isinstance(value, bool):
+        return (f"{head} is an integer ({value}) and cannot be varied continuously; --vary takes a real-valued key "
+                "under [valves.NAME], such as cam.phi1_deg or drive.spring_reserve")
+    return None
+
+
 def check_bounds(section, name, variables) -> None:
-    """Refuse bounds of a variable outside the allowed range of its key.
+    """Refuse a variable whose key cannot be varied continuously (an integer, a list), and bounds outside the allowed
+    range of its key.
 
     Parameters
     ----------
@@ -168,10 +197,15 @@ def check_bounds(section, name, variables) -> None:
     Raises
     ------
     ValueError
-        A bound that the key's own validation refuses, naming the bound as written and the key's allowed range.
+        A key whose value is an integer or a list (:func:`not_continuous`); a bound that the key's own validation
+        refuses, naming the bound as written and the key's allowed range.
     """
     data = section.model_dump(mode="json", exclude_unset=True, exclude_none=True)
+    given = section.model_dump(mode="json")
     for v in variables:
+        message = not_continuous(v, name, section, v.get(given))
+        if message is not None:
+            raise InputError(message)
         for i, (which, value) in enumerate((("LOW", v.low), ("HIGH", v.high))):
             trial = copy.deepcopy(data)
             try:
