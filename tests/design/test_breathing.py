@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 
 from valvetrain.design import run
+from valvetrain.locale import note
 from valvetrain.specification import SpecError, example_spec, load_spec, spec_document, validate
 from valvetrain.tables import breathing_columns
 
@@ -292,7 +293,8 @@ def test_a_gas_load_redoes_only_what_it_changes(monkeypatch, load, redone):
     for name in ("law_stage", "profile_stage", "dynamics_stage", "strength_stage"):
         monkeypatch.setattr(stages, name, lambda *a, _f=getattr(stages, name), _n=name, **k: calls.append(_n) or
                             _f(*a, **k))
-    gas_load = (load, "the breathing's")
+    gas_load = (load, note("breathing.gas_load_motored", port_kPa=101.3, cylinder_kPa=40.0, speed_rpm=2000.0,
+                           crank_deg=-100.0, equation="5.4"))
     ours = stages.with_gas_load(first, view, engine, gas, output, gas_load)
     assert sorted(calls) == (["dynamics_stage", "strength_stage"] if redone else [])
     whole = stages.design_valve("exhaust", view, engine, gas, output, gas_load=gas_load)

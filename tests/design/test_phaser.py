@@ -5,6 +5,7 @@ the camshaft's drive torque, the gap at the range's ends by hand, bad input refu
 
 from dataclasses import replace
 import json
+import re
 from types import SimpleNamespace
 
 import jsonschema
@@ -16,6 +17,7 @@ from valvetrain.design import breathing_view, results_schema, run
 from valvetrain.export import results_json
 from valvetrain.design.breathing import GRID, breathe_conditions, breathing_conditions, gas_opening_load
 from valvetrain.design.phaser import advances, phased_flow
+from valvetrain.locale import note_text
 from valvetrain.specification import SpecError, example_spec, spec_document, validate
 
 PHASER = {"advance_range_crank_deg": [-10.0, 40.0], "step_crank_deg": 10.0, "tolerance_crank_deg": 0.5}
@@ -154,6 +156,12 @@ def test_the_spring_holds_the_largest_gas_load_over_the_map(fired):
     assert f.gas_load >= at_zero
     (c,) = [c for c in fired.checks if c.code == "phaser.gas_load"]
     assert (c.value, c.high) == (f.gas_load, v.drive.spring.preload)
+    # its note is a code of the catalogue with its numbers: the English as the record says it, the Russian with the
+    # decimal comma of every Russian number (locale.number_text) but the source's equation number; the
+    # English numbers translated by skeleton had points
+    assert c.note.startswith("the largest over the map at an advance of ") and c.note == note_text(c.note_parts)
+    ru = note_text(c.note_parts, "ru")
+    assert ru.startswith("наибольшая по карте, при опережении ") and re.search(r"\d\.\d", ru.partition("ф. (")[0]) is None, ru
 
 
 def test_without_breathing_the_events_gap_and_torque_alone():

@@ -13,6 +13,7 @@ from ..breathing.cycle import CYCLE, MAX_WORK, BreathingRecord, BreathingResult,
 from ..breathing.valves import DEFAULT_CD, default_areas, effective_areas
 from ..springs import gas_opening_force
 from ..checks import Check, check
+from ..locale import note
 from ..units import MM, to_display
 from .dynamics import valve_motion
 from .hydraulic_actuation import CylinderPressure, cycle_angle
@@ -318,6 +319,10 @@ def cylinder_pressure(results, speed, kind=None) -> CylinderPressure:
                             None if kind is None else _ports(c, kind))
 
 
+GAS_LOAD_NOTES = {"motored": "breathing.gas_load_motored", "fired": "breathing.gas_load_fired"}
+"""The ``[notes]`` code of the closed-valve gas load of :func:`gas_opening_load`, by the breathing's mode."""
+
+
 def gas_opening_load(results, kind, diameter) -> tuple[float, str]:
     """The largest gas force that tends to open the closed valve of ``kind`` over the breathing's converged cycles,
     and the words of where it comes from.
@@ -331,10 +336,11 @@ def gas_opening_load(results, kind, diameter) -> tuple[float, str]:
 
     Returns
     -------
-    (float, str)
+    (float, Note)
         f_g max(p_port - p_cyl, 0) [N] over every condition and curve speed and every crank angle at which the
         side's valves are shut (their effective areas zero), p_port the pressure at that side's valves (the runner's
-        last cell, the plenum's without a runner), and the speed and crank angle where it is largest.
+        last cell, the plenum's without a runner), and the speed and crank angle where it is largest
+        (:func:`valvetrain.locale.note`, a code of :data:`GAS_LOAD_NOTES`).
 
     Notes
     -----
@@ -358,7 +364,6 @@ def gas_opening_load(results, kind, diameter) -> tuple[float, str]:
     c = r.columns
     port = _ports(c, kind)[i]
     force = gas_opening_force(diameter, port, c.pressure[i])
-    return force, (f"the breathing's converged {results.figures.mode} cycles: the largest (p_port - p_cyl) on the shut "
-                   f"valve, {port / 1e3:.4g} - {c.pressure[i] / 1e3:.4g} kPa at {to_display(r.figures.speed, 'rpm'):.5g} "
-                   f"rpm, {np.degrees(c.angle[i]):.4g} crank deg from the gas-exchange TDC (Valve-train practical works "
-                   f"(n.d.), eq. ({'5.5' if kind == 'intake' else '5.4'}))")
+    return force, note(GAS_LOAD_NOTES[results.figures.mode], port_kPa=float(port / 1e3),
+                       cylinder_kPa=float(c.pressure[i] / 1e3), speed_rpm=float(to_display(r.figures.speed, "rpm")),
+                       crank_deg=float(np.degrees(c.angle[i])), equation="5.5" if kind == "intake" else "5.4")

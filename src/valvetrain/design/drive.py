@@ -17,7 +17,7 @@ import numpy as np
 from .. import masses, springs, strength
 from ..checks import Check, check
 from ..layouts import finger_inertia, layout, train_mass
-from ..locale import record_text
+from ..locale import note_text, record_text
 from ..locale.wording import diagnosis_text
 from ..spring_materials import grade
 from ..units import to_display
@@ -290,8 +290,9 @@ def drive_stage(valve, gas, cam, diagnose=True, gas_load=None) -> DriveResult:
     diagnose : bool
         Where no spring passes, say why and what would make one pass (:func:`valvetrain.springs.diagnose`, a new
         search per remedy: about a second); False leaves the diagnosis out (the designer's first answer to an edit).
-    gas_load : (float, str), optional
-        The gas force that tends to open the closed valve [N] and its source, where the breathing gives it
+    gas_load : (float, Note), optional
+        The gas force that tends to open the closed valve [N] and its source (:func:`valvetrain.locale.note`), where
+        the breathing gives it
         (:func:`valvetrain.design.breathing.gas_opening_load`); default the sources' from ``[gas]``.
 
     Returns
@@ -325,7 +326,7 @@ def drive_stage(valve, gas, cam, diagnose=True, gas_load=None) -> DriveResult:
     lift = law.lift_max * i_k
 
     if gas_load is not None:
-        p_gas, gas_source = gas_load
+        p_gas, gas_source = gas_load[0], note_text(gas_load[1])
     elif valve.kind == "exhaust":
         p_gas = springs.gas_opening_force(d_g, gas.exhaust_back_pressure, gas.cylinder_intake_pressure)
         gas_source = "Valve-train practical works (n.d.), eq. (5.4)"

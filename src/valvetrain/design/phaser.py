@@ -37,6 +37,10 @@ OBJECTIVES = {"fired": "torque", "motored": "volumetric_efficiency"}
 """The figure the best phase maximises, by [breathing] mode: the indicated torque of a fired engine, the volumetric
 efficiency of a motored one (no torque)."""
 
+GAS_LOAD_OVER_MAP = {"motored": "phaser.gas_load_over_map_motored", "fired": "phaser.gas_load_over_map_fired"}
+"""The ``[notes]`` code of the largest closed-valve gas load over the phaser's map, by the breathing's mode: the
+phase's advance and the numbers of the breathing's own note (:func:`.breathing.gas_opening_load`)."""
+
 
 GOLDEN = (1.0 + np.sqrt(5.0)) / 2.0
 """The golden ratio: a bounded Brent search's golden-section steps narrow its interval by this factor each."""
@@ -381,8 +385,9 @@ def phaser_stage(name, phaser, valve, engine, design, breathing=None, b=None, ca
     checks.append(check("phaser.gas_load", closed[0], high=spring.preload, unit="N", severity="failure",
                         source="the spring's preload holds the shut valve against the gas force (Valve-train "
                                "practical works (n.d.), eqs. (5.4), (5.5))",
-                        note=f"the largest over the map at an advance of {to_display(closed[1], 'crank deg'):g} crank "
-                             f"deg: {loads[k][1]}").of_valve(name))
+                        note=note(GAS_LOAD_OVER_MAP[breathing.figures.mode],
+                                  advance_crank_deg=float(to_display(closed[1], "crank deg")),
+                                  **dict(loads[k][1][0][1]))).of_valve(name))
     opening = None
     if design.kind == "exhaust" and gas is not None:
         opening, more = opening_loads(name, design, valve, gas, engine, phases, rows, events)

@@ -10,6 +10,9 @@ in this folder, loaded once:
 * ``LANG.toml`` ``[springs]``: the springs whose own checks are named after them;
 * ``LANG.toml`` ``[verdict]``: the verdict of a design, the same on the command line, in the report and in ``repr``;
 * ``LANG.toml`` ``[designer]``: the words of the designer in the browser (``valvetrain serve``, :mod:`valvetrain.web`);
+* ``LANG.toml`` ``[words]``, ``[check_words]``, ``[stage_words]``, ``[note_words]``, ``[report]``: the words of the
+  report (:data:`valvetrain.report.i18n.TEXT`), ``[optimize_words]`` and ``[tolerance_words]`` those of the
+  optimisation's and the tolerance study's reports;
 * ``LANG.toml`` ``[notes]``: the notes of the checks (how a value was obtained: where, at which speed), each a code
   with parameters (:func:`note`), rendered by :func:`note_text` in every language, its numbers by
   :func:`number_text`.
@@ -28,8 +31,7 @@ the same in every language); the texts of the stages not yet made so are transla
 table's fit reason) in every language.
 
 To add a language: a ``LANG.toml`` with every section, the language in :data:`valvetrain.languages.LANGS`, its symbol
-column in :data:`valvetrain.units.UNITS` and its texts in :mod:`valvetrain.report.i18n` and
-:mod:`valvetrain.report.names`.  To add a unit: one row of :data:`valvetrain.units.UNITS`.
+column in :data:`valvetrain.units.UNITS` and its names of keys in :mod:`valvetrain.report.names`.  To add a unit: one row of :data:`valvetrain.units.UNITS`.
 """
 
 from functools import cache

@@ -11,7 +11,7 @@ no figure does without it.
   counter, while :mod:`valvetrain.export` writes the rest and renders the report;
 * :mod:`.html`: the report; it numbers the citations in the order of their first use (``numbered_citations``) and
   puts every check in its chapter (:mod:`.check_rows`: ``chapter_checks``, a check's row); :mod:`.i18n` its texts
-  (the further stages' chapters in :mod:`.stage_text`, the symbols in :mod:`.symbols`), :mod:`.names` the names of
+  (read from the catalogues of :mod:`valvetrain.locale`; the symbols in :mod:`.symbols`), :mod:`.names` the names of
   keys and values (the checks' names come from :mod:`valvetrain.locale`);
 * :mod:`.typography` (a symbol's index as a subscript, <= >=, powers of ten), :mod:`.russian` (the Russian report's
   locators, decimal comma, quotes), :mod:`.worked` (the worked substitution of the main formulas, each line

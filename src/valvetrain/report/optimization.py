@@ -12,88 +12,13 @@ from ..bibliography import WORKS, cited_in
 from ..laws.power_polynomial import ARTICLE_FULLNESS
 from ..synthesis.objectives import shown_objective
 from ..synthesis.optimize import BINDING
-from ..locale import check_text
+from ..locale import catalogue, check_text
 from .check_rows import check_note
 from .names import quantity_text, unevaluated_text, unit_text
 
 
 _MARGINS = ("spring reserve", "pressure angle", "concave radius", "rho_min", "contact stress", "max acceleration",
             "min acceleration", "seating velocity", "no jump", "spring design")
-
-OPTIMIZE_TEXT = {
-    "en": {
-        "title": "Cam synthesis by optimisation", "key": "key", "start": "start", "optimum": "optimum",
-        "bounds": "bounds", "quantity": "quantity", "unit": "unit", "range": "allowed", "margin": "relative margin",
-        "state": "state", "fails": "fails", "binds": "binds", "holds": "holds", "none": "none",
-        "method": ("The {objective} is maximised over the variables below by a differential evolution with the "
-                   "limits as an exact penalty, then polished by SLSQP (UkrSURT Proceedings (2019); Shang Hanji "
-                   "(1988), section 4.3). During the search the train and its spring are the starting design's; the "
-                   "optimum is designed in full with its own spring and every limit is checked again on it, the "
-                   "follower separation over a dynamics sweep (Shang Hanji (1988), chapter 3)."),
-        "objective_fullness": "fullness of the valve lift diagram",
-        "objective_time_area": "time-area of the whole opening, mm2 s",
-        "objective_volumetric_efficiency": "volumetric efficiency, the mean over the breathing's speeds",
-        "objective_torque": "indicated torque, the mean over the breathing's speeds, N m",
-        "variables": "Variables", "comparison": "Starting design and optimum", "constraints": "Limits",
-        "binding": "Limits that bind at the optimum", "history": "History of the search",
-        "feasible": "within the limits", "infeasible": "outside the limits", "best": "best within the limits",
-        "margins": {m: m for m in _MARGINS}, "evaluations": "evaluations",
-        "relaxed": ("{quantity}: the starting design has {value:.4g} {unit} outside {range}; the limit is kept at the "
-                    "start's value (no worse than the start)"),
-        "article": "Comparison with UkrSURT Proceedings (2019)", "cam": "cam",
-        "tappet_fullness": "fullness of the tappet lift over the valve-open part",
-        "ours": "this optimum", "article_optimum": "the article's optimum (as printed)",
-        "article_serial": "the serial cam (as printed)",
-        "polydyne": "polydyne (2, 10, 18, 26, 34), same lift, ramp and angle (Valve-train practical works (n.d.))",
-        "gain": "The optimum is {gain:.1f} % fuller than the polydyne.",
-        "cost": "{n} evaluations, {s:.1f} s in all, {e:.1f} s of them in the evaluations.",
-        "references": "References", "rows": {},
-    },
-    "ru": {
-        "title": "Синтез профиля кулачка оптимизацией", "key": "параметр", "start": "исходный",
-        "optimum": "оптимум", "bounds": "пределы", "quantity": "величина", "unit": "ед.", "range": "допустимо",
-        "margin": "относительный запас", "state": "состояние", "fails": "не выполнено", "binds": "на границе",
-        "holds": "выполнено", "none": "нет",
-        "method": ("{objective} максимизируется по параметрам ниже дифференциальной эволюцией с ограничениями в виде "
-                   "точного штрафа и уточняется методом SLSQP (UkrSURT Proceedings (2019); Shang Hanji (1988), "
-                   "разд. 4.3). При поиске привод и пружина исходные; оптимум рассчитывается полностью, со своей "
-                   "пружиной, и все ограничения проверяются на нём заново, отрыв толкателя по динамическому расчёту "
-                   "в диапазоне частот (Shang Hanji (1988), гл. 3)."),
-        "objective_fullness": "коэффициент полноты диаграммы подъёма клапана",
-        "objective_time_area": "время-сечение всего открытия, мм²·с",
-        "objective_volumetric_efficiency": "коэффициент наполнения, среднее по частотам вращения газообмена",
-        "objective_torque": "индикаторный крутящий момент, среднее по частотам вращения газообмена, Н·м",
-        "variables": "Параметры", "comparison": "Исходный вариант и оптимум", "constraints": "Ограничения",
-        "binding": "Ограничения, определяющие оптимум", "history": "Ход поиска",
-        "feasible": "в пределах ограничений", "infeasible": "вне ограничений", "best": "лучший в пределах",
-        "margins": {"spring reserve": "запас пружины", "pressure angle": "угол давления",
-                    "concave radius": "вогнутый радиус", "rho_min": "ρ_min",
-                    "contact stress": "контактное напряжение", "max acceleration": "ускорение max",
-                    "min acceleration": "ускорение min", "seating velocity": "скорость посадки",
-                    "no jump": "отрыв толкателя", "spring design": "подбор пружины"},
-        "evaluations": "число расчётов",
-        "relaxed": ("{quantity}: у исходного варианта {value:.4g} {unit} вне пределов {range}; ограничение взято по "
-                    "исходному значению (не хуже исходного)"),
-        "article": "Сравнение с UkrSURT Proceedings (2019)", "cam": "кулачок",
-        "tappet_fullness": "коэффициент полноты подъёма толкателя за время открытия клапана",
-        "ours": "данный оптимум", "article_optimum": "оптимум статьи (по тексту)",
-        "article_serial": "серийный кулачок (по тексту)",
-        "polydyne": "полидинамический (2, 10, 18, 26, 34) того же подъёма, сбега и угла (Valve-train practical "
-                    "works (n.d.))",
-        "gain": "Полнота оптимума на {gain:.1f} % выше, чем у полидинамического кулачка.",
-        "cost": "{n} расчётов, всего {s:.1f} с, из них {e:.1f} с в расчётах вариантов.",
-        "references": "Литература",
-        "rows": {"fullness": "коэффициент полноты", "time-area of the whole opening": "время-сечение всего открытия",
-                 "time-area over the valve's stroke": "время-сечение за такт",
-                 "tappet fullness (UkrSURT Proceedings (2019))": "полнота подъёма толкателя (UkrSURT Proceedings "
-                 "(2019))", "max tappet acceleration": "наибольшее ускорение толкателя",
-                 "min tappet acceleration": "наименьшее ускорение толкателя",
-                 "max tappet velocity": "наибольшая скорость толкателя", "spring preload": "усилие пружины при "
-                 "посадке", "spring rate": "жёсткость пружины", "spring reserve K_z": "коэффициент запаса K_з",
-                 "rho_min": "ρ_min"},
-    },
-}
-"""Texts of the optimisation's report (``valvetrain optimize``) and its history plot."""
 
 
 def history_columns(result) -> dict[str, np.ndarray]:
@@ -126,7 +51,7 @@ def comparison_columns(result) -> dict[str, list[Any]]:
 
 def history_figure(result, lang="en") -> Figure:
     """Objective (every evaluation, and the best feasible so far) and the constraints' margins against evaluations."""
-    t = OPTIMIZE_TEXT[lang]
+    t = catalogue(lang)["optimize_words"]
     cols = history_columns(result)
     n = cols["evaluation"]
     fig = Figure(figsize=(8, 7))
@@ -171,7 +96,7 @@ def _checked(c, lang):
 
 def report_html(result, lang="en") -> str:
     """The optimisation's report in ``lang`` (HTML text): method, variables, comparison, constraints, history."""
-    t = OPTIMIZE_TEXT[lang]
+    t = catalogue(lang)["optimize_words"]
     start = {c.quantity: c for c in result.checks_start}
     parts = [f"<h1>{escape(t['title'])}: {escape(result.valve)}</h1>",
              f"<p>{escape(t['method'].format(objective=t[f'objective_{result.objective}']))}</p>"]

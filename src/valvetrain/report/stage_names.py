@@ -1,6 +1,6 @@
 """The names of the keys of the further stages' records and sections (the lash adjuster, the grinding, the hydraulic
 actuation and its lost motion, the phaser, the switching finger, the camshaft, ...) in English and Russian, joined to
-:data:`.names.NAMES` (kept apart as the stages' words of :mod:`.stage_text` are)."""
+:data:`.names.NAMES` (kept apart as the stages' words are, ``[stage_words]`` of the catalogues)."""
 
 STAGE_NAMES = {
     "lash_adjuster.location": ("location of the lash adjuster", "расположение гидрокомпенсатора"),

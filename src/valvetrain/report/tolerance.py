@@ -6,7 +6,7 @@ the histograms of their margins and of the dynamics headlines, drawn as inline S
 from html import escape
 
 from ..bibliography import cite
-from ..locale import check_text
+from ..locale import catalogue, check_text
 from .names import has_name, label
 
 CITES = {name: f'<span class="cite">{escape(cite(key))}</span>'
@@ -16,89 +16,6 @@ CITES = {name: f'<span class="cite">{escape(cite(key))}</span>'
 
 WIDTH, HEIGHT = 320, 120
 """Size of a histogram, SVG pixels."""
-
-
-TOLERANCE_TEXT = {
-    "en": {
-        "title": "Tolerance study", "tolerances": "Tolerances", "key": "key", "distribution": "distribution",
-        "uniform": "uniform", "normal": "normal", "nominal": "nominal", "spread": "half-range or sigma",
-        "range": "truncated to", "failures": "Checks that fail in some sample", "check": "check",
-        "severity": "severity", "failed": "failed samples", "probability": "probability of failure",
-        "confidence": "95 % interval (Wilson)", "driver": "drives it most (rank correlation with the margin)",
-        "none": "none", "no_failures": "No check fails in any sample.", "margin": "relative margin (0: the bound)",
-        "dynamics": "Dynamics", "mc": "Monte Carlo", "lhs": "Latin hypercube",
-        "sobol": "Saltelli's scheme on a scrambled Sobol' sequence",
-        "sobol_title": "Sobol' sensitivity indices", "output": "output",
-        "first": "first-order index S<sub>i</sub> ± 95 %", "total": "total index S<sub>T,i</sub> ± 95 %",
-        "bars": "0 ... 1: S<sub>i</sub> (blue), S<sub>T,i</sub> (orange), 95 % interval",
-        "sobol_reasons": {"constant": "does not vary over the samples: no indices",
-                          "too_few_samples": "too few base points whose every sample has a value (under two, or an "
-                                             "index's 95 % interval wholly outside 0 ... 1): no indices"},
-        "sobol_text": ("The first-order index S<sub>i</sub> of a tolerance is the share of the variance of an output "
-                       "that the tolerance causes alone, the total index S<sub>T,i</sub> the share it causes alone "
-                       "and with the others ({sobol}); a tolerance with S<sub>T,i</sub> near 0 can be left out. "
-                       "They are estimated from the base points of Saltelli's scheme whose every sample has a value "
-                       "({saltelli}, estimators b and f of table 2), with 95 % intervals from 100 bootstrap "
-                       "resamples of the base points; an estimate may fall a little outside 0 ... 1. Below the "
-                       "checks that fail in some sample and the dynamics headlines; the results file "
-                       "<code class=\"name\">tolerance.json</code> holds the indices of every check. The samples of "
-                       "a base point share values, so the Wilson interval of a probability of failure above, which "
-                       "takes the samples as independent, is approximate here."),
-        "severities": {"failure": "failure", "warning": "warning", "info": "remark"},
-        "accepted": "accepted in the specification",
-        "headlines": {"jump_speed_rpm": "jump speed, engine rpm",
-                      "max_seating_velocity_m_s": "largest seating velocity, m/s"},
-        "summary": "{n} samples ({method}, random seed = {seed}); {refused} refused (probability {p:.4g}).",
-        "method_text": ("Each sample is the specification with the tolerances drawn from their distributions "
-                        "(inverse distribution function, {devroye}), designed in full; its dynamics simulate the "
-                        "speeds of the range that decide the jump speed, the largest seating velocity and the "
-                        "largest cam force (every tenth speed, then the speeds about those). The probability of "
-                        "failure of a check is the share of the designed samples that fail it, with the Wilson "
-                        "score interval ({wilson}); a tolerance drives a check by Spearman's rank correlation "
-                        "of its values with the check's margin."),
-    },
-    "ru": {
-        "title": "Расчёт влияния допусков", "tolerances": "Допуски", "key": "параметр",
-        "distribution": "распределение", "uniform": "равномерное", "normal": "нормальное",
-        "nominal": "номинал", "spread": "полуширина или σ", "range": "усечено до",
-        "failures": "Проверки, не выполненные хотя бы в одном варианте", "check": "проверка",
-        "severity": "значимость", "failed": "не выполнено в вариантах", "probability": "вероятность отказа",
-        "confidence": "95 % интервал (Уилсон)",
-        "driver": "наибольшее влияние (ранговая корреляция с запасом)", "none": "нет",
-        "no_failures": "Все проверки выполнены во всех вариантах.",
-        "margin": "относительный запас (0 — граница)", "dynamics": "Динамика", "mc": "Монте-Карло",
-        "lhs": "латинский гиперкуб",
-        "sobol": "схема Сальтелли на перемешанной последовательности Соболя",
-        "sobol_title": "Индексы чувствительности Соболя", "output": "результат",
-        "first": "индекс первого порядка S<sub>i</sub> ± 95 %", "total": "полный индекс S<sub>T,i</sub> ± 95 %",
-        "bars": "0 ... 1: S<sub>i</sub> (синий), S<sub>T,i</sub> (оранжевый), 95 % интервал",
-        "sobol_reasons": {"constant": "не меняется в вариантах: индексов нет",
-                          "too_few_samples": "мало базовых точек, все варианты которых имеют значение (менее двух или "
-                                             "95 % интервал индекса целиком вне 0 ... 1): индексов нет"},
-        "sobol_text": ("Индекс первого порядка S<sub>i</sub> допуска — доля дисперсии результата, вызванная этим "
-                       "допуском самим по себе, полный индекс S<sub>T,i</sub> — доля, вызванная им самим и вместе с "
-                       "другими ({sobol}); допуск с S<sub>T,i</sub> около 0 можно не учитывать. Индексы оценены по "
-                       "базовым точкам схемы Сальтелли, все варианты которых имеют значение ({saltelli}, оценки b и "
-                       "f таблицы 2), с 95 % интервалами по 100 бутстреп-выборкам базовых точек; оценка может немного "
-                       "выходить за 0 ... 1. Ниже — проверки, не выполненные хотя бы в одном варианте, и показатели "
-                       "динамики; файл результатов <code class=\"name\">tolerance.json</code> содержит индексы всех "
-                       "проверок. Варианты одной базовой точки имеют общие значения, поэтому интервал Уилсона "
-                       "вероятности отказа выше, в котором варианты считаются независимыми, здесь приближённый."),
-        "severities": {"failure": "отказ", "warning": "предупреждение", "info": "замечание"},
-        "accepted": "принято в исходных данных",
-        "headlines": {"jump_speed_rpm": "частота отрыва, мин⁻¹ коленчатого вала",
-                      "max_seating_velocity_m_s": "наибольшая скорость посадки, м/с"},
-        "summary": "{n} вариантов ({method}, начальное число = {seed}); отклонено {refused} (вероятность {p:.4g}).",
-        "method_text": ("Каждый вариант — спецификация с параметрами, взятыми из их распределений (метод обратной "
-                        "функции распределения, {devroye}), рассчитанная полностью; динамика рассчитывается на "
-                        "частотах вращения, определяющих частоту отрыва, наибольшую скорость посадки и наибольшую "
-                        "силу на кулачке (каждая десятая частота, затем частоты около них). Вероятность отказа "
-                        "проверки — доля рассчитанных вариантов, в которых она не выполнена, с интервалом Уилсона "
-                        "({wilson}); влияние допуска — ранговая корреляция Спирмена его значений с запасом "
-                        "проверки."),
-    },
-}
-"""Words of the report of a tolerance study (:mod:`valvetrain.report.tolerance`)."""
 
 
 def histogram_svg(histogram, mark=None) -> str:
@@ -153,7 +70,7 @@ def sobol_section(result, failing, lang) -> str:
     """The Sobol' indices of the checks that fail in some sample (``failing``: their ids) and of the dynamics
     headlines (HTML): a row per tolerance with its first-order and total index, each +- the half-width of its 95 %
     interval, and their bars (:func:`indices_svg`); an output without indices says why."""
-    t = TOLERANCE_TEXT[lang]
+    t = catalogue(lang)["tolerance_words"]
     keys = [x["key"] for x in result["tolerances"]]
     outputs = [(check_name(result["checks"][cid], lang), result["checks"][cid]["sobol"]) for cid in failing]
     outputs += [(f"{valve_name(valve)}: {t['headlines'][h]}", entry)
@@ -196,7 +113,7 @@ def key_name(key, lang) -> str:
 
 def report_html(result, lang="en") -> str:
     """The HTML text of the report of a tolerance study's ``result`` (:func:`valvetrain.tolerance.summary`)."""
-    t = TOLERANCE_TEXT[lang]
+    t = catalogue(lang)["tolerance_words"]
     rows = [f"<tr><td>{key_name(x['key'], lang)} <code class=\"name\">{escape(x['key'])}</code></td>"
             f"<td>{t[x['distribution']]}</td><td>{x['nominal']:.6g}</td>"
             f"<td>{x.get('half_range', x.get('sigma', ''))}</td><td>{x.get('low', '')}...{x.get('high', '')}</td></tr>"
