@@ -6,6 +6,7 @@ import copy
 from dataclasses import dataclass, field
 import difflib
 import math
+from typing import Any
 
 from pydantic import BaseModel, ValidationError
 
@@ -40,7 +41,7 @@ class Variable:
         else:
             node[last] = value
 
-    def get(self, data):
+    def get(self, data) -> Any:
         """The variable's value in a valve section's data (dict), None where the section has no such key."""
         node = data
         for part in self.path.split("."):
