@@ -68,7 +68,6 @@ class Designer(Layout, SweepPanel, VvaPanel):
         self.sweep_due = False
         self.sweep_seq = 0
         self.sweep_key = None            # the document whose sweep was started last (document_key)
-        self.computing = None            # the computing of the sweep started last (sweep.Computing)
         self.shown = None                # a drag's preview drawn: (document, result), else the good design
         self.pending = None              # the design of a drag released, in the worker: (future, keys set, seq)
         self.fields, self.widgets = {}, {}
@@ -375,7 +374,6 @@ class Designer(Layout, SweepPanel, VvaPanel):
             self._answer(self.session.edit(values), began, "drag", seq)
             return
         self.generation += 1                              # the sweep of the design before: stale, stopped
-        self.stop_sweep()
         self.shown = (document, sketch)
         self.redraw(began=began, seq=seq, live=True)
         self.pending = [None, values, seq, document]

@@ -4,9 +4,7 @@ the dynamics against the angle at a chosen speed).
 """
 
 from concurrent.futures import ThreadPoolExecutor
-import ctypes
 from functools import partial
-import threading
 
 import numpy as np
 
@@ -17,57 +15,8 @@ from .session import document_key
 SWEEP_WORKERS = ThreadPoolExecutor(max_workers=1, thread_name_prefix="valvetrain-sweep")
 """One thread for the speed sweeps of every tab (2 cores: the kinematics keep the other)."""
 
-LOCK = threading.Lock()
-"""Held while a :class:`Computing` opens, closes or is interrupted."""
-
-
 class Stale(ValvetrainError):
     """Raised into a speed sweep that a newer change made stale."""
-
-
-def _raise_in(thread, exc):
-    """Raise exception class ``exc`` in thread ``thread`` at its next Python instruction, or (``exc`` None) drop the
-    one set there and not yet raised: CPython's ``PyThreadState_SetAsyncExc``."""
-    ctypes.pythonapi.PyThreadState_SetAsyncExc(ctypes.c_ulong(thread), None if exc is None else ctypes.py_object(exc))
-
-
-class Computing:
-    """A stretch of a sweep's computing in the worker thread (``with``) that a newer change stops at once
-    (:meth:`interrupt`: :class:`Stale` raised in it), not at the sweep's next speed: the whole design's stages after
-    its last speed (the sweep's refinement, the strength, the results' records) ran 0.3 to 0.4 s without one, and the
-    release of the next drag waited for them (its sweep in the same worker, its answer for the processor).
-
-    ``stale()`` says whether the sweep is stale: then the stretch does not open.  At most one :class:`Stale` is
-    raised into a stretch, and only while it is open (its thread runs the computing, none of Bokeh's); one set and
-    not yet raised when it closes is dropped."""
-
-    def __init__(self, stale):
-        self.stale, self.thread, self.open, self.interrupted = stale, None, False, False
-
-    def __enter__(self):
-        with LOCK:
-            if self.stale():
-                raise Stale
-            self.thread, self.open = threading.get_ident(), True
-        return self
-
-    def __exit__(self, kind, value, traceback):
-        while True:
-            try:
-                with LOCK:
-                    self.open = False
-                    if self.interrupted:
-                        _raise_in(self.thread, None)
-                return False
-            except Stale:                       # the interruption raised here, after the computing: closed again
-                continue
-
-    def interrupt(self) -> None:
-        """Stop the computing of a stale sweep where it is (nothing when it is not open)."""
-        with LOCK:
-            if self.open and not self.interrupted:
-                self.interrupted = True
-                _raise_in(self.thread, Stale)
 
 
 class SweepPanel:
@@ -85,11 +34,10 @@ class SweepPanel:
         (:meth:`~valvetrain.web.session.Session.sweep_one`: a fraction of the whole design's time), then the whole
         design of the good document with every valve's sweep (:meth:`~valvetrain.web.session.Session.settle`; the
         valve shown is not swept again: the first's design is kept for it), its checks to the table; a newer change
-        stops both where they are (:meth:`stop_sweep`).  ``document``: a drag's released (default the good one),
-        whose design ``job`` (a future of :meth:`~valvetrain.web.session.Session.design`) the whole design waits
-        for: nothing more of it is swept when it does not design."""
+        stops both at their next speed.  ``document``: a drag's released (default the good one), whose design
+        ``job`` (a future of :meth:`~valvetrain.web.session.Session.design`) the whole design waits for: nothing
+        more of it is swept when it does not design."""
         self.generation += 1
-        self.stop_sweep()
         generation, seq, valve = self.generation, self.sweep_seq, self.valve
         self.sweep_status.text = WORDS[self.lang]["sweeping"]
         document = self.session.document if document is None else document
@@ -99,30 +47,21 @@ class SweepPanel:
             if generation != self.generation:
                 raise Stale
 
-        computing = self.computing = Computing(lambda: generation != self.generation)
-
         def work():
             began, memo = _now(), {}
             try:
-                with computing:
-                    first = self.session.sweep_one(document, valve, progress=progress, memo=memo)
+                first = self.session.sweep_one(document, valve, progress=progress, memo=memo)
                 if first is not None:
                     self.doc.add_next_tick_callback(partial(self.draw_sweep_of, generation, valve, first, began, seq))
                 if job is not None and not job.result()["ok"]:
                     return
-                with computing:
-                    result = self.session.settle(document, progress=progress, memo=memo)
+                result = self.session.settle(document, progress=progress, memo=memo)
             except Stale:
                 return
             self.doc.add_next_tick_callback(partial(self.draw_sweep, generation, result, began,
                                                     0 if first is not None else seq))
 
         SWEEP_WORKERS.submit(work)
-
-    def stop_sweep(self) -> None:
-        """Stop the computing of the sweep started before (:class:`Computing`) if a newer change made it stale."""
-        if self.computing is not None:
-            self.computing.interrupt()
 
     def _sweep_curves(self, sw, sources):
         _send(sources["force"], {"x": _array(sw["speed_rpm"]), "y": _array(sw["min_contact_force_N"])})
