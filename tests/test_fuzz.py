@@ -5,7 +5,8 @@ output, or a message without its key.
 
 The cases come from the generator of tools/fuzz_specs.py (one copy of the mutations and of the checks), drawn by
 hypothesis; the runs are derandomized and keep no example database, so CI sees the same cases every time.
-``python tools/fuzz_specs.py`` runs many more cases and groups the failures.
+``python tools/fuzz_specs.py`` runs many more cases and groups the failures: this file is the regression guard
+(360 fixed cases; a fuzz campaign runs thousands), sized to the CI's time.
 """
 
 from hypothesis import given, settings, strategies as st
@@ -21,13 +22,13 @@ def _assert_contract(case):
     assert_contract(case, timeout=60.0)
 
 
-@settings(FUZZ, max_examples=500)
+@settings(FUZZ, max_examples=300)
 @given(st.data())
 def test_mutated_specification_runs_or_is_refused(data):
     _assert_contract(fuzz.draw_case(lambda seq: data.draw(st.sampled_from(seq)), BASES))
 
 
-@settings(FUZZ, max_examples=100)
+@settings(FUZZ, max_examples=60)
 @given(st.sampled_from(FILE_CASES))
 def test_malformed_file_runs_or_is_refused(case):
     _assert_contract(case)
