@@ -21,6 +21,9 @@ import json
 import math
 from pathlib import Path
 
+from importlib.resources import files
+
+import jsonschema
 import pytest
 
 ROOT = Path(__file__).parents[1]
@@ -30,11 +33,22 @@ _spec = importlib.util.spec_from_file_location("compare_outputs", ROOT / "tools"
 compare_outputs = importlib.util.module_from_spec(_spec)
 _spec.loader.exec_module(compare_outputs)
 
+SCHEMA = json.loads(files("valvetrain").joinpath("data/results.schema.json").read_text(encoding="utf-8"))
+"""The schema of results.json the package ships."""
+
 
 @pytest.fixture(scope="module")
-def made():
-    """The fingerprints of this tree's outputs, every example run once."""
-    return compare_outputs.fingerprints()
+def written(tmp_path_factory):
+    """Every example run once, its outputs (but the figures) written into a folder of its name."""
+    out = tmp_path_factory.mktemp("outputs")
+    compare_outputs.write(out, report=True)
+    return out
+
+
+@pytest.fixture(scope="module")
+def made(written):
+    """The fingerprints of this tree's outputs."""
+    return {d.name: compare_outputs.fingerprint(d) for d in sorted(written.iterdir())}
 
 
 def test_every_example_has_expected_outputs(made):
@@ -46,6 +60,13 @@ def test_outputs_unchanged(made, name):
     want = json.loads((EXPECTED / f"{name}.json").read_text(encoding="utf-8"))
     differences = compare_outputs.compare(want, made[name], name)
     assert not differences, "\n".join(differences[:40])
+
+
+@pytest.mark.parametrize("name", sorted(p.stem for p in EXPECTED.glob("*.json")))
+def test_every_example_s_results_json_validates_against_the_schema(written, name):
+    """The results.json each example writes is an instance of the shipped schema (tests/specification/test_schema.py
+    holds the schema to the generated one and shows that it refuses a wrong record)."""
+    jsonschema.validate(json.loads((written / name / "results.json").read_text(encoding="utf-8")), SCHEMA)
 
 
 def test_compare_sees_a_change_in_the_tenth_digit():
