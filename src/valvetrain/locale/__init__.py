@@ -13,6 +13,10 @@ in this folder, loaded once:
 * ``LANG.toml`` ``[words]``, ``[check_words]``, ``[stage_words]``, ``[note_words]``, ``[report]``: the words of the
   report (:data:`valvetrain.report.i18n.TEXT`), ``[optimize_words]`` and ``[tolerance_words]`` those of the
   optimisation's and the tolerance study's reports;
+* ``LANG.toml`` ``[names]``, ``[stage_names]``, ``[symbols]``, ``[name_words]``: the names of the keys of the records,
+  the meanings of the report's symbols (:mod:`valvetrain.report.names`, :mod:`valvetrain.report.symbols`);
+  ``[values]``, ``[segments]``, ``[links]`` (not in ``en.toml``: their English is the key itself) the text values of
+  the records, the lift law's segments and the drive links;
 * ``LANG.toml`` ``[notes]``: the notes of the checks (how a value was obtained: where, at which speed), each a code
   with parameters (:func:`note`), rendered by :func:`note_text` in every language, its numbers by
   :func:`number_text`.
@@ -31,7 +35,7 @@ the same in every language); the texts of the stages not yet made so are transla
 table's fit reason) in every language.
 
 To add a language: a ``LANG.toml`` with every section, the language in :data:`valvetrain.languages.LANGS`, its symbol
-column in :data:`valvetrain.units.UNITS` and its names of keys in :mod:`valvetrain.report.names`.  To add a unit: one row of :data:`valvetrain.units.UNITS`.
+column in :data:`valvetrain.units.UNITS`.  To add a unit: one row of :data:`valvetrain.units.UNITS`.
 """
 
 from functools import cache
