@@ -48,6 +48,7 @@ from typing import Any
 
 from ..errors import InputError
 from ..languages import LANGS
+from ..units import symbol as unit_symbol
 
 
 @cache
@@ -150,19 +151,30 @@ def number_text(x, spec, lang="en") -> str:
 
 
 class _Numbers(string.Formatter):
-    """The catalogue's formatter in one language: a number by :func:`number_text`, any other value as it is."""
+    """The catalogue's formatter in one language: a number by :func:`number_text`; a note (a parameter that is
+    :func:`note`'s parts) rendered in the language, its parts joined by what follows ``|`` in the field's format
+    (``{remedies:|; or }``; by ``"; "`` without one); a word by reference (``{check:@checks}``: the text of the value in the language's
+    section ``[checks]``, the value itself where the language has none; ``{unit:@units}``: a unit's symbol,
+    :func:`valvetrain.units.symbol`); any other value as it is."""
 
     def __init__(self, lang):
         self.lang = lang
 
     def format_field(self, value, format_spec):
+        if isinstance(value, tuple):
+            return note_text(value, self.lang, format_spec.removeprefix("|") if format_spec else "; ")
+        if isinstance(value, str) and format_spec == "@units":
+            return unit_symbol(value, self.lang)
+        if isinstance(value, str) and format_spec.startswith("@"):
+            return catalogue(self.lang).get(format_spec[1:], {}).get(value, value)
         if isinstance(value, numbers.Real) and not isinstance(value, bool):
             return number_text(value, format_spec, self.lang)
         return format(value, format_spec)
 
 
-Note = tuple[tuple[str, tuple[tuple[str, float | str], ...]], ...]
-"""A check's note as data (:func:`note`'s parts): each part a ``[notes]`` code and its parameters."""
+Note = tuple[tuple[str, tuple[tuple[str, "float | str | Note"], ...]], ...]
+"""A check's note as data (:func:`note`'s parts): each part a ``[notes]`` code and its parameters (a number, a text,
+or a note of its own: a list said inside the part)."""
 
 
 def note(code, **params) -> Note:
@@ -176,14 +188,16 @@ def note(code, **params) -> Note:
     return ((code, tuple(params.items())),)
 
 
-def note_text(parts, lang="en") -> str:
-    """A check's note (:func:`note`'s parts) in ``lang``, the parts joined by ``"; "``.
+def note_text(parts, lang="en", join="; ") -> str:
+    """A check's note (:func:`note`'s parts) in ``lang``, the parts joined by ``join``; a part whose text is empty
+    in ``lang`` is not said there.
 
     >>> note_text(note("hydraulic.largest_at", speed_rpm=7012.4), "ru")
     'наибольший при 7012 мин⁻¹'
     """
     formatter = _Numbers(lang)
-    return "; ".join(formatter.format(_template("notes", code, lang), **dict(params)) for code, params in parts)
+    said = (formatter.format(_template("notes", code, lang), **dict(params)) for code, params in parts)
+    return join.join(text for text in said if text)
 
 
 def verdict(counts, lang="en") -> tuple[str, str]:
