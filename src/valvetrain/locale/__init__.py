@@ -21,7 +21,9 @@ in this folder, loaded once:
   with parameters (:func:`note`), rendered by :func:`note_text` in every language, its numbers by
   :func:`number_text`.
 
-``{name}`` in a text stands for the parameter ``name``.  ``tests/locale/test_catalogue.py`` fails when a code lacks a
+``{name}`` in a text stands for the parameter ``name``; in a note, a parameter may be a note of its own (a list
+said inside the part, joined by what follows ``|`` in its field: ``{remedies:|; or }``), and ``{name:@section}``
+says the word of the value in that section of the language (``@units``: a unit's symbol).  ``tests/locale/test_catalogue.py`` fails when a code lacks a
 text in a language or a text names no code the package uses; docs/checks.md lists every code.
 
 A check's code (dotted snake_case) is stable: never renamed once shipped.  ``[[accepted]]`` takes the code (every
