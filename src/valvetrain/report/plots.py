@@ -176,9 +176,10 @@ def contour_data(valve) -> dict[str, Any]:
     of the nose, the valve's opening and closing and the gas-exchange TDC: ``(name, camshaft angle [deg from the
     nose], crank angle [deg from the gas-exchange TDC])``."""
     x, y = valve.contour / MM
-    h, dh, d2h = valve.law.derivatives(valve.contour_angle)[:3]
-    points, *_, depth = valve.follower_model.pitch_curve(valve.contour_angle, valve.heel_radius, h, dh, d2h)
-    pitch = points / MM if depth else None      # a roller's centre path, apart from the contour by its radius
+    pitch = None
+    if np.isfinite(valve.follower_model.radius):    # the path of the centre of the follower's own curvature
+        h, dh, d2h = valve.law.derivatives(valve.contour_angle)[:3]
+        pitch = valve.follower_model.pitch_curve(valve.contour_angle, valve.heel_radius, h, dh, d2h)[0] / MM
     nose = shown_value(valve.cam, "nose")
     rays = [(key, (crank - nose) / 2.0, crank) for key, crank in (
         ("nose", nose), ("opens", shown_value(valve.cam, "valve_opens")),
