@@ -33,12 +33,15 @@ def test_each_layout_s_chain_of_parts_from_the_cam():
     assert layouts.LAYOUTS["rocker"].parts == ("rocker",)
     pushrod = layouts.chain(_intake())
     assert pushrod.parts == ("tappet", "pushrod", "rocker", "rocker_pivot")
-    assert pushrod.rocker and pushrod.valve_joint == "rocker and valve joint"
+    assert pushrod.valve_joint == "rocker and valve joint"
     # the pivot ball of a stud rocker does not move: no mass of its own in the train
     assert pushrod.train_masses == ("tappet_kg", "pushrod_kg", "rocker_inertia_kg_mm2")
     rocker = layouts.LAYOUTS["rocker"]
-    assert rocker.rocker and rocker.train_masses == ("rocker_inertia_kg_mm2",)
-    assert layouts.LAYOUTS["direct"].valve_joint == "valve stem and tappet" and not layouts.LAYOUTS["direct"].rocker
+    assert rocker.train_masses == ("rocker_inertia_kg_mm2",)
+    assert layouts.LAYOUTS["direct"].valve_joint == "valve stem and tappet"
+    # the rocker is the one lever: the layouts with it set a rocker ratio, the direct drive has i_k = 1
+    assert [name for name, chain in layouts.LAYOUTS.items() if any(link.lever for link in chain.links)] == [
+        "rocker", "pushrod"]
 
 
 def test_the_example_s_train_mass_by_hand():

@@ -40,7 +40,7 @@ import math
 from typing import Any
 
 from .errors import InputError
-from .locale import catalogue, code_of, note_text, record_text
+from .locale import Note, catalogue, code_of, note_text, record_text
 from .units import displayed, to_display
 
 SEVERITIES = ("info", "warning", "failure")
@@ -110,7 +110,7 @@ class Check:
     code: str = ""
     params: tuple = ()
     valve: str = None
-    note_parts: tuple = ()
+    note_parts: Note = ()
 
     @property
     def passed(self) -> bool:

@@ -37,8 +37,6 @@ class Layout:
     name: str
     parts: tuple
 
-    rocker = property(lambda self: "rocker" in self.parts)
-
     @property
     def links(self) -> tuple:
         """The :class:`~valvetrain.links.Link` objects of the chain, from the cam."""

@@ -71,3 +71,19 @@ def test_the_interface_leaves_nothing_silently_flat():
         bare.curvature(0.02, 0.0, 0.0, 0.0)
     with pytest.raises(NotImplementedError):
         bare.line_contact(0.02)
+
+
+def test_what_a_synthesis_limits_and_the_laws_admitted_are_asked_of_the_follower():
+    """Issue 41: the synthesis, the report and the cam sections ask the follower, not its ``rolling`` and
+    ``law_at_valve`` flags: a roller's contact record gives its pressure angle and concave radius to limit, a flat
+    face's nothing; the tangent cam (drawn for a roller on its line, Kolchin and Demidov (1980)) drives the roller
+    alone, every other law each follower."""
+    from valvetrain.followers.flat import FlatContact
+    from valvetrain.followers.roller import RollerContact
+
+    roller = RollerFollower(0.012)
+    assert roller.limited_contact(RollerContact(0.012, 0.4, -0.2)) == (0.4, -0.2)
+    assert roller.limited_contact(RollerContact(0.012, 0.4, None)) == (0.4, None)
+    assert FLAT.limited_contact(FlatContact(0.01)) is None
+    assert [name for name, cls in REGISTRY.items() if cls.admits("tangent")] == ["roller"]
+    assert all(cls.admits("kurz") and cls.admits("polydyne") for cls in REGISTRY.values())

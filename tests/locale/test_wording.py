@@ -41,14 +41,17 @@ def test_the_diagnosis_in_english_from_its_data():
 
 
 def test_the_diagnosis_in_russian_from_its_data():
-    """The Russian report states the conflicts, the stress window (720 and 752 MPa) and where the remedies are."""
+    """The Russian report states the conflicts of each spring of the pair, the stress the pair's frequencies need
+    (792 MPa) against the 752 MPa allowed, and the remedies, with decimal commas."""
     text = diagnosis_text(PAIR, "ru")
-    assert text.startswith("Ни одна пружина не проходит все проверки; лучший вариант: наружная пружина ")
-    assert "600 МПа при допустимом 500 МПа (не хватает 20.0%)" in text
+    assert text.startswith("Ни одна пара пружин не проходит все проверки; лучшая пара: наружная пружина: τ_max ")
+    assert "600 МПа при допустимом 500 МПа (не хватает 20,0%); внутренняя пружина: " in text
     assert "36 мм при допустимом 30 мм" in text
-    assert ("Для отношения частот нужно касательное напряжение τ_max не менее 720 МПа, а сталь допускает не более "
-            "752 МПа.") in text
-    assert text.endswith("перечислены в results.json (spring.diagnosis.remedies).")
+    assert "требуют τ_max до 792 МПа даже при D/d = 12 и f_max/f_min = 3,2 (f_max = 14,5 мм), а сталь VDSiCr " \
+        "допускает там не более 752 МПа" in text
+    assert text.endswith("Пружина проходит, если задать: номинальную частоту вращения, сниженную до 80,0% (5600 мин⁻¹). "
+                         "Ни одна пружина не проходит, если задать: material = «60S2A», длину в установленном положении "
+                         "без ограничения, приведённую массу до 10 %.")
 
 
 def test_the_diagnosis_record_of_results_json():

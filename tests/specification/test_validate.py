@@ -64,3 +64,16 @@ def test_a_rocker_inertia_without_its_valve_arm_is_refused(refused):
     assert text.count("valve_arm_mm = 40.0") == 2
     out = refused("\n".join(line for line in text.split("\n") if not line.startswith("valve_arm_mm")))
     assert "valves.intake.drive.masses.rocker_inertia_kg_mm2 = 25: needs drive.valve_arm_mm" in out
+
+
+def test_a_layout_without_a_lever_needs_rocker_ratio_1(refused):
+    """The rocker ratio i_k = l_v / l_t is a lever's (the rocker link's, asked of the layout's links): the example's
+    intake (rocker_ratio 1.6) with the direct layout, whose chain is a tappet alone, is refused naming the layout; with
+    the rocker layout it is valid."""
+    from valvetrain.specification.reading import parse_spec
+
+    text = example_text()
+    direct = text.replace('layout = "pushrod"           # "direct"', 'layout = "direct"           # "direct"', 1)
+    assert direct != text
+    assert 'valves.intake.drive.layout = "direct" needs rocker_ratio = 1 (got 1.6)' in refused(direct)
+    assert parse_spec(text.replace('layout = "pushrod"           # "direct"', 'layout = "rocker"           # "direct"', 1))

@@ -18,7 +18,7 @@ from .. import masses, springs, strength
 from ..checks import Check, check
 from ..layouts import finger_inertia, layout, train_mass
 from ..locale import note_text, record_text
-from ..locale.wording import diagnosis_text
+from ..locale.wording import diagnosis_note, diagnosis_text
 from ..spring_materials import grade
 from ..units import to_display
 from .drive_strength import StrengthResult, strength_record
@@ -271,10 +271,11 @@ def spring_options(sp) -> springs.SpringOptions:
         min_frequency_difference=sp.min_frequency_difference)
 
 
-def _spring_checks(tag, s, note=""):
+def _spring_checks(tag, s, note=()):
     """A designed spring's own checks, named after the spring (``spring``, ``outer``, ``inner``); a failed one
-    carries ``note`` (the diagnosis)."""
-    return [replace(c.of_spring(tag), note=c.note if c.passed else note) for key, c in s.checks.items()
+    carries ``note`` (the diagnosis, :func:`valvetrain.locale.wording.diagnosis_note`)."""
+    return [c.of_spring(tag) if c.passed else replace(c.of_spring(tag), note=note_text(note), note_parts=note)
+            for key, c in s.checks.items()
             if key in ("tau_max", "fatigue_safety", "resonance_ratio", "working_coils", "installed_length",
                        "free_length", "coil_gap_at_full_lift")]
 
@@ -365,7 +366,7 @@ def drive_stage(valve, gas, cam, diagnose=True, gas_load=None) -> DriveResult:
     if sp.count == 2:
         found.append(check("spring.inner_share", sp.inner_share, *springs.INNER_SHARE_RANGE, source="Valve-train practical works (n.d.), work 5"))
     for tag, d in designs.items():
-        found += _spring_checks(tag, d, diagnosis_text(diagnosis, "en") if diagnosis else "")
+        found += _spring_checks(tag, d, diagnosis_note(diagnosis) if diagnosis else ())
         found.append(check("spring.design_margin", d.design_margin, low=sp.min_margin, unit="%",
                            source="min_margin_percent of the specification: the smaller margin of the fatigue safety "
                                   "and the resonance ratio above their minima (eqs. 6.12, 6.14)").of_spring(tag))

@@ -381,7 +381,7 @@ def build_train(dyn, valve, law, drive, at, cam_speed=None) -> tuple[Union[OneMa
     if arm_note:
         notes.insert(1, arm_note)
         if dyn.model == "multi":
-            variable = _finger_node(valve, law, "rocker")
+            variable = _finger_node(valve, law, next(link.name for link in chain(valve).links if link.lever))
         if variable is not None:
             lightest, heaviest = variable.mass.min() * 1e3, variable.mass.max() * 1e3
             notes.insert(2, f"the mass of the node that carries the finger changes with its lift, {lightest:.5g}..."

@@ -657,6 +657,10 @@ def pushrod_train(tappet_mass, pushrod_mass, rocker_inertia, valve_mass, valve_a
                   pushrod_stiffness, rocker_stiffness, valve_stiffness, springs, lash=0.0, **kw) -> MultiMassTrain:
     """A pushrod (cam-in-block) :class:`MultiMassTrain`: cam - tappet - pushrod - rocker - valve.
 
+    Used by the tests alone, as the independent reference for the pushrod layout (tests/dynamics/test_models.py,
+    tests/design/test_dynamics.py): the package builds its trains from the layout's links
+    (:func:`valvetrain.design.dynamics.build_train`).
+
     Parameters
     ----------
     tappet_mass, pushrod_mass : float
@@ -701,6 +705,10 @@ def rocker_train(rocker_inertia, valve_mass, valve_arm, rocker_ratio, cam_stiffn
                  valve_stiffness, springs, lash=0.0, **kw) -> MultiMassTrain:
     """An overhead-cam rocker (finger follower) :class:`MultiMassTrain`: cam - rocker - valve.
 
+    Used by the tests alone, as the independent reference for the rocker layout (tests/dynamics/test_models.py,
+    tests/design/test_dynamics.py): the package builds its trains from the layout's links
+    (:func:`valvetrain.design.dynamics.build_train`).
+
     The rocker inertia about its pivot gives J / l_v^2 at the valve; the cam stiffness (camshaft and contact,
     cam side) counts c / k^2.
     """
@@ -712,6 +720,10 @@ def rocker_train(rocker_inertia, valve_mass, valve_arm, rocker_ratio, cam_stiffn
 
 def direct_train(tappet_mass, valve_mass, cam_stiffness, valve_stiffness, springs, lash=0.0, **kw) -> MultiMassTrain:
     """A direct-acting overhead-cam :class:`MultiMassTrain`: cam - bucket tappet - valve (k = 1).
+
+    Used by the tests alone, as the independent reference for the direct layout (tests/dynamics/test_models.py,
+    tests/design/test_dynamics.py): the package builds its trains from the layout's links
+    (:func:`valvetrain.design.dynamics.build_train`).
 
     The clearance is between the cam and the bucket (shim).
     """

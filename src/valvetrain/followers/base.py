@@ -45,6 +45,8 @@ Write one module in this package with a subclass of :class:`Follower` decorated 
   :meth:`acceleration_range`    its extremes at the rated speed [m/s^2] (the tappet-acceleration checks)
   :meth:`profile_contact`       the profile stage's contact record (flat: contact offset; roller: pressure angle)
   :meth:`profile_checks`        the checks of that record (a roller's largest pressure angle)
+  :meth:`limited_contact`       what a cam synthesis limits in it (a roller's pressure angle, concave radius), or None
+  :meth:`admits`                whether a cam of a lift law can drive the follower (the tangent cam: a roller's)
   :meth:`kinematics`            the record of a linkage over the lift (a finger's), or None
   :meth:`geometry_problem`      what makes a linkage unworkable for a lift, or None
   :meth:`rolling_losses`        a roller's slip and rolling resistance in the friction torque
@@ -71,9 +73,9 @@ Write one module in this package with a subclass of :class:`Follower` decorated 
   ``_multi_train``), reading its mass from ``[drive.masses]``; a reduced inertia that changes with the lift is
   that node's :class:`~valvetrain.dynamics.models.VariableMass` (``design/dynamics.py``, ``finger_mass``).
 
-- the stages never read ``rolling`` or ``law_at_valve``: what differs between a rolling and a sliding follower
-  (its profile record and checks, its rolling losses, its side load) is a method here.  A tangent cam admits only
-  a rolling follower (the specification's check).
+- the stages, the synthesis, the report and the cam sections of the specification never read ``rolling`` or
+  ``law_at_valve``: what differs between a rolling and a sliding follower (its profile record and checks, what a
+  synthesis limits, its rolling losses, its side load, the laws it admits) is a method here.
 
 Methods return numpy arrays (floats where the argument is a scalar); none of them mutates its arguments or
 the follower, and they hold no state beyond the follower's dimensions.  Each follower's module has its tests,
@@ -89,6 +91,11 @@ from .. import strength
 
 REGISTRY = {}
 """``follower`` name -> its :class:`Follower` subclass, in the order of registration."""
+
+
+ROLLER_LAWS = ("tangent",)
+"""The lift laws whose cam is drawn for a roller translating on its line: the tangent cam's straight flanks and nose
+arc (Kolchin and Demidov (1980)); a flat face on them is degenerate."""
 
 
 def register(cls) -> type:
@@ -322,6 +329,19 @@ class Follower:
     def profile_checks(self, contact) -> list:
         """The checks of the follower's contact record (:meth:`profile_contact`): none for a sliding face."""
         return []
+
+    def limited_contact(self, contact) -> tuple[float, float | None] | None:
+        """What a cam synthesis limits in the follower's contact record (:meth:`profile_contact`) beyond the profile's
+        radius: its largest pressure angle [rad] and its concave radius closest to zero [m] (None: no concave
+        stretch), or None where the follower has neither (a sliding face: its contact normal is its line of action,
+        and a concave stretch under it is an undercut)."""
+        return None
+
+    @classmethod
+    def admits(cls, law) -> bool:
+        """Whether a cam of the lift law ``law`` (the specification's ``law``) can drive the follower: every law but
+        those drawn for a roller translating on its line (:data:`ROLLER_LAWS`)."""
+        return law not in ROLLER_LAWS
 
     def rolling_losses(self, u_follower, slip, resistance) -> tuple:
         """The follower surface's velocity [m/s], its rolling-resistance coefficient and its rolling velocity in the

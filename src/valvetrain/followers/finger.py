@@ -56,7 +56,7 @@ import numpy as np
 from ..errors import InputError
 from ..numerics import bracketed_roots
 from ..results import quantity
-from .base import register
+from .base import ROLLER_LAWS, register
 from .roller import RollerFollower
 
 KEYS = ("finger_pivot_x_mm", "finger_pivot_y_mm", "finger_roller_arm_mm", "finger_pad_arm_mm", "finger_pad_radius_mm")
@@ -143,6 +143,12 @@ class PivotedFollower(RollerFollower):
     name = "finger"
     law_at_valve = True
     undercut_source = "Shang Hanji (1988), eq. (2.7); Norton (2009)"
+
+    @classmethod
+    def admits(cls, law) -> bool:
+        """Every law but those drawn for a translating roller (:data:`~valvetrain.followers.base.ROLLER_LAWS`): a
+        finger's law is the valve's, not the cam's."""
+        return law not in ROLLER_LAWS
 
     @classmethod
     def from_cam(cls, cam) -> "PivotedFollower":

@@ -86,6 +86,15 @@ class RollerFollower(Follower):
         concave = 1.0 / curvature if curvature < 0.0 else 0.0
         return RollerContact(self.radius, beta_max, concave if concave + self.radius < 0.0 else None)
 
+    def limited_contact(self, contact) -> tuple[float, float | None]:
+        """The contact record's largest pressure angle [rad] and concave radius closest to zero [m] (or None)."""
+        return contact.max_pressure_angle, contact.min_concave_radius
+
+    @classmethod
+    def admits(cls, law) -> bool:
+        """Every law, those drawn for a translating roller (:data:`~valvetrain.followers.base.ROLLER_LAWS`) too."""
+        return True
+
     def profile_checks(self, contact) -> list[Check]:
         """The largest pressure angle of the contact record against :data:`PRESSURE_ANGLE_MAX`."""
         return [check("profile.pressure_angle.max", contact.max_pressure_angle, high=PRESSURE_ANGLE_MAX,

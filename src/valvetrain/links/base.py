@@ -89,6 +89,9 @@ class Link:
     joint : str
         The name of the joint between the link and the valve in the drive's stiffness, where it is the last moving
         link of the chain ("" for a link that never is).
+    lever : bool
+        Whether the link is a lever whose arms set the rocker ratio i_k = l_v / l_t: a chain without one moves the
+        valve as the cam lifts it (i_k = 1).
     """
 
     name: ClassVar[str]
@@ -97,6 +100,7 @@ class Link:
     carrier: ClassVar[str] = ""
     elastic: ClassVar[bool] = False
     joint: ClassVar[str] = ""
+    lever: ClassVar[bool] = False
 
     def checks(self, loads) -> list:
         """The strength checks of the link under ``loads`` (:class:`Loads`), those whose keys are given: none."""

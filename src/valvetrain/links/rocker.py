@@ -21,6 +21,7 @@ class Rocker(Link):
     mass_attr = "rocker_inertia"
     carrier = "strength.carried_by_rocker"
     joint = "rocker and valve joint"
+    lever = True
 
     def node(self, masses, ratio, arm) -> tuple[str, float]:
         """The rocker's inertia about its shaft on the valve arm, J / l_v^2 [kg] (Valve-train practical works (n.d.),

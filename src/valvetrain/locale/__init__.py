@@ -13,11 +13,17 @@ in this folder, loaded once:
 * ``LANG.toml`` ``[words]``, ``[check_words]``, ``[stage_words]``, ``[note_words]``, ``[report]``: the words of the
   report (:data:`valvetrain.report.i18n.TEXT`), ``[optimize_words]`` and ``[tolerance_words]`` those of the
   optimisation's and the tolerance study's reports;
+* ``LANG.toml`` ``[names]``, ``[stage_names]``, ``[symbols]``, ``[name_words]``: the names of the keys of the records,
+  the meanings of the report's symbols (:mod:`valvetrain.report.names`, :mod:`valvetrain.report.symbols`);
+  ``[values]``, ``[segments]``, ``[links]`` (not in ``en.toml``: their English is the key itself) the text values of
+  the records, the lift law's segments and the drive links;
 * ``LANG.toml`` ``[notes]``: the notes of the checks (how a value was obtained: where, at which speed), each a code
   with parameters (:func:`note`), rendered by :func:`note_text` in every language, its numbers by
   :func:`number_text`.
 
-``{name}`` in a text stands for the parameter ``name``.  ``tests/locale/test_catalogue.py`` fails when a code lacks a
+``{name}`` in a text stands for the parameter ``name``; in a note, a parameter may be a note of its own (a list
+said inside the part, joined by what follows ``|`` in its field: ``{remedies:|; or }``), and ``{name:@section}``
+says the word of the value in that section of the language (``@units``: a unit's symbol).  ``tests/locale/test_catalogue.py`` fails when a code lacks a
 text in a language or a text names no code the package uses; docs/checks.md lists every code.
 
 A check's code (dotted snake_case) is stable: never renamed once shipped.  ``[[accepted]]`` takes the code (every
@@ -31,7 +37,7 @@ the same in every language); the texts of the stages not yet made so are transla
 table's fit reason) in every language.
 
 To add a language: a ``LANG.toml`` with every section, the language in :data:`valvetrain.languages.LANGS`, its symbol
-column in :data:`valvetrain.units.UNITS` and its names of keys in :mod:`valvetrain.report.names`.  To add a unit: one row of :data:`valvetrain.units.UNITS`.
+column in :data:`valvetrain.units.UNITS`.  To add a unit: one row of :data:`valvetrain.units.UNITS`.
 """
 
 from functools import cache
@@ -44,6 +50,7 @@ from typing import Any
 
 from ..errors import InputError
 from ..languages import LANGS
+from ..units import symbol as unit_symbol
 
 
 @cache
@@ -146,19 +153,30 @@ def number_text(x, spec, lang="en") -> str:
 
 
 class _Numbers(string.Formatter):
-    """The catalogue's formatter in one language: a number by :func:`number_text`, any other value as it is."""
+    """The catalogue's formatter in one language: a number by :func:`number_text`; a note (a parameter that is
+    :func:`note`'s parts) rendered in the language, its parts joined by what follows ``|`` in the field's format
+    (``{remedies:|; or }``; by ``"; "`` without one); a word by reference (``{check:@checks}``: the text of the value in the language's
+    section ``[checks]``, the value itself where the language has none; ``{unit:@units}``: a unit's symbol,
+    :func:`valvetrain.units.symbol`); any other value as it is."""
 
     def __init__(self, lang):
         self.lang = lang
 
     def format_field(self, value, format_spec):
+        if isinstance(value, tuple):
+            return note_text(value, self.lang, format_spec.removeprefix("|") if format_spec else "; ")
+        if isinstance(value, str) and format_spec == "@units":
+            return unit_symbol(value, self.lang)
+        if isinstance(value, str) and format_spec.startswith("@"):
+            return catalogue(self.lang).get(format_spec[1:], {}).get(value, value)
         if isinstance(value, numbers.Real) and not isinstance(value, bool):
             return number_text(value, format_spec, self.lang)
         return format(value, format_spec)
 
 
-Note = tuple[tuple[str, tuple[tuple[str, float | str], ...]], ...]
-"""A check's note as data (:func:`note`'s parts): each part a ``[notes]`` code and its parameters."""
+Note = tuple[tuple[str, tuple[tuple[str, "float | str | Note"], ...]], ...]
+"""A check's note as data (:func:`note`'s parts): each part a ``[notes]`` code and its parameters (a number, a text,
+or a note of its own: a list said inside the part)."""
 
 
 def note(code, **params) -> Note:
@@ -172,14 +190,16 @@ def note(code, **params) -> Note:
     return ((code, tuple(params.items())),)
 
 
-def note_text(parts, lang="en") -> str:
-    """A check's note (:func:`note`'s parts) in ``lang``, the parts joined by ``"; "``.
+def note_text(parts, lang="en", join="; ") -> str:
+    """A check's note (:func:`note`'s parts) in ``lang``, the parts joined by ``join``; a part whose text is empty
+    in ``lang`` is not said there.
 
     >>> note_text(note("hydraulic.largest_at", speed_rpm=7012.4), "ru")
     'наибольший при 7012 мин⁻¹'
     """
     formatter = _Numbers(lang)
-    return "; ".join(formatter.format(_template("notes", code, lang), **dict(params)) for code, params in parts)
+    said = (formatter.format(_template("notes", code, lang), **dict(params)) for code, params in parts)
+    return join.join(text for text in said if text)
 
 
 def verdict(counts, lang="en") -> tuple[str, str]:

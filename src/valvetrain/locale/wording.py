@@ -2,64 +2,79 @@
 (:class:`valvetrain.springs.Diagnosis`) and the fit a measured table uses and why
 (:class:`valvetrain.laws.measured.TableLaw`).
 
-The physics returns codes and values in SI; this module alone turns them into sentences (of the words of the
-catalogues ``LANG.toml`` ``[diagnosis_words]`` and ``[fit_words]``), into the units a reader reads and into the
+The physics returns codes and values in SI; this module alone turns them into notes of the catalogues' ``[notes]``
+(the diagnosis: :func:`diagnosis_note`) and sentences (``[fit_words]``), in the units a reader reads and with the
 specification's key names.  results.json and the CLI take the English (``lang="en"``), the
 report its own language.
 """
 
-from ..units import symbol as unit_text, to_display
-from . import catalogue, check_text
+from ..units import to_display
+from . import Note, catalogue, note, note_text
 
-def _window_record(w):
-    """The stress window of results.json (MPa, mm)."""
-    return {"material": w.material, "deflection_ratio": w.deflection_ratio,
-            "max_deflection_mm": to_display(w.max_deflection, "mm"), "stress_needed_MPa": to_display(w.needed, "MPa"),
-            "stress_allowed_MPa": to_display(w.allowed, "MPa")}
+CODES = {"count": {1: "spring.remedy.count_1", 2: "spring.remedy.count_2"},
+         "tried": {"rated_speed_factor": "spring.remedy.rated_speed_tried",
+                   "reduced_mass_factor": "spring.remedy.reduced_mass_tried"},
+         "kind": {"resonance_stress": "spring.resonance_stress", "pair_frequencies": "spring.pair_frequencies"}}
+"""The ``[notes]`` codes of a nested pair's or a single spring's count, of a factor tried in vain and of the kind of
+conflict (:data:`valvetrain.springs.diagnosis.RESONANCE_STRESS`, ``PAIR_FREQUENCIES``)."""
 
 
-def _remedy_text(r, words):
-    """One remedy in English words."""
-    grams = words["grams"].format(grams=r.spring_mass * 1e3) if r.passes and r.spring_mass is not None else ""
+def _remedy(r) -> Note:
+    """One remedy as a note's part."""
+    grams = note("spring.remedy.grams", grams=r.spring_mass * 1e3) if r.passes and r.spring_mass is not None else ()
     if r.change == "material":
-        return words["material"].format(key=r.key, value=r.value, grams=grams)
+        return note("spring.remedy.material", key=r.key, value=r.value, grams=grams)
     if r.change == "count":
-        return words["count"][str(r.value)].format(key=r.key, grams=grams)
-    helped, tried = words[r.change]
+        return note(CODES["count"][r.value], key=r.key, grams=grams)
+    if r.change == "max_installed_length":
+        return (note("spring.remedy.installed_length", mm=to_display(r.value, "mm")) if r.passes and r.value is not None
+                else note("spring.remedy.no_installed_length_limit"))
     if not r.passes:
-        return tried.format(percent=None if r.value is None else r.value * 100.0)
-    rpm = "" if r.rated_speed is None else words["rpm"].format(rpm=to_display(r.rated_speed, "rpm"))
-    mm = None if r.value is None else to_display(r.value, "mm")
-    return helped.format(value=r.value, mm=mm, rpm=rpm, saved=1.0 - r.value)
+        return note(CODES["tried"][r.change], percent=r.value * 100.0)
+    if r.change == "rated_speed_factor":
+        rpm = () if r.rated_speed is None else note("spring.remedy.rpm", rpm=to_display(r.rated_speed, "rpm"))
+        return note("spring.remedy.rated_speed", value=r.value, rpm=rpm)
+    return note("spring.remedy.reduced_mass", saved=1.0 - r.value)
+
+
+def _conflict(x, pair) -> Note:
+    """A failing check of the best candidate as a note's part: the check by its code, its value and bound in their
+    display unit, the spring of a pair named."""
+    values = {"check": f"spring.{x.check}", "value": to_display(x.value, x.unit),
+              "limit": to_display(x.limit, x.unit), "shortfall": x.shortfall}
+    part = note("spring.conflict_in", unit=x.unit, **values) if x.unit else note("spring.conflict", **values)
+    return note("spring.conflict_of", spring=x.spring, conflict=part) if pair else part
+
+
+def diagnosis_note(d) -> Note:
+    """The spring diagnosis (:class:`valvetrain.springs.Diagnosis`) as a note of the catalogue's ``[notes]``: the
+    conflicts of the best candidate, what the stress window proves, the remedies that help and those tried in vain
+    (the note of a failed spring check, rendered in the report's language)."""
+    said = note("spring.no_pair_passes" if d.pair else "spring.no_spring_passes",
+                conflicts=sum((_conflict(x, d.pair) for x in d.conflicts), ()))
+    if d.window is not None:
+        w = d.window
+        where = note("spring.stress_where", deflection_ratio=w.deflection_ratio,
+                     max_deflection_mm=to_display(w.max_deflection, "mm"), material=w.material,
+                     stress_allowed_MPa=to_display(w.allowed, "MPa"))
+        needed = to_display(w.needed, "MPa")
+        if d.kind is None:
+            said += note("spring.stress_window", stress_needed_MPa=needed,
+                         stress_allowed_MPa=to_display(w.allowed, "MPa"))
+        else:
+            said += note(CODES["kind"][d.kind], resonance_ratio=w.resonance_ratio, stress_needed_MPa=needed, where=where,
+                         frequency_difference=d.frequency_difference,
+                         stress_pair_MPa=to_display(w.needed * (1.0 + d.frequency_difference), "MPa"))
+    for code, remedies in (("spring.helped", d.helped), ("spring.tried", d.tried)):
+        if remedies:
+            said += note(code, remedies=sum((_remedy(r) for r in remedies), ()))
+    return note("spring.diagnosis", sentences=said)
 
 
 def diagnosis_text(d, lang) -> str:
-    """The spring diagnosis (:class:`valvetrain.springs.Diagnosis`) in words of ``lang``: the conflicts, what the
-    stress window proves, the remedies."""
-    words, springs = catalogue(lang)["diagnosis_words"], catalogue(lang)["springs"]
-    said = []
-    for x in d.conflicts:
-        unit = unit_text(x.unit, lang) if lang != "en" else x.unit
-        said.append(words["conflict"].format(
-            tag=f"{x.spring} " if d.pair else "", spring=springs[x.spring] if x.spring in ("outer", "inner") else "",
-            quantity=x.quantity if lang == "en" else check_text(f"spring.{x.check}", {}, lang),
-            value=to_display(x.value, x.unit), limit=to_display(x.limit, x.unit), unit=unit,
-            spaced_unit=f" {unit}" if unit else "", shortfall=x.shortfall))
-    text = [words["head_pair" if d.pair else "head"] + "; ".join(said) + "."]
-    if d.window is not None:
-        w = d.window
-        values = {**_window_record(w), "resonance_ratio": w.resonance_ratio,
-                  "frequency_difference": d.frequency_difference,
-                  "stress_pair_MPa": to_display(w.needed * (1.0 + d.frequency_difference), "MPa")}
-        values["where"] = words.get("where", "").format(**values)
-        text += [words[key].format(**values) for key in ("window", d.kind) if key and words[key]]
-    if d.helped and words["helped"]:
-        text.append(words["helped"].format(words["helped_join"].join(_remedy_text(r, words) for r in d.helped)))
-    if d.tried and words["tried"]:
-        text.append(words["tried"].format(words["tried_join"].join(_remedy_text(r, words) for r in d.tried)))
-    if words["remedies"]:
-        text.append(words["remedies"])
-    return " ".join(text)
+    """The spring diagnosis (:class:`valvetrain.springs.Diagnosis`) in words of ``lang``: :func:`diagnosis_note`
+    rendered."""
+    return note_text(diagnosis_note(d), lang)
 
 
 def fit_reason(fit, harmonics, code, ratio, smoothing, lang="en") -> str:

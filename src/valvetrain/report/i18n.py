@@ -1,8 +1,9 @@
 """Texts of the report and the plots in English and Russian, read from the message catalogues
 (:mod:`valvetrain.locale`, ``LANG.toml``): the chapters of the valve's design (``[words]``), the check levels
 (``[check_words]``), the chapters of the further stages (``[stage_words]``), the calculation note (``[note_words]``)
-and the lost-motion chapter (``[report]``); the symbols in :mod:`.symbols`, the words of the optimisation's and the
-tolerance study's reports in ``[optimize_words]`` and ``[tolerance_words]`` (:mod:`.optimization`, :mod:`.tolerance`)."""
+and the lost-motion chapter (``[report]``); the names of keys and values in ``[names]``... (:mod:`.names`), the
+symbols' meanings in ``[symbols]`` (:mod:`.symbols`), the words of the optimisation's and the tolerance study's
+reports in ``[optimize_words]`` and ``[tolerance_words]`` (:mod:`.optimization`, :mod:`.tolerance`)."""
 
 from ..languages import LANGS
 from ..locale import catalogue

@@ -177,7 +177,7 @@ def contour_data(valve) -> dict[str, Any]:
     nose], crank angle [deg from the gas-exchange TDC])``."""
     x, y = valve.contour / MM
     pitch = None
-    if valve.follower_model.rolling:
+    if np.isfinite(valve.follower_model.radius):    # the path of the centre of the follower's own curvature
         h, dh, d2h = valve.law.derivatives(valve.contour_angle)[:3]
         pitch = valve.follower_model.pitch_curve(valve.contour_angle, valve.heel_radius, h, dh, d2h)[0] / MM
     nose = shown_value(valve.cam, "nose")
@@ -279,7 +279,8 @@ def curvature_data(valve) -> dict[str, Any]:
     cannot follow it, a roller's pitch curve is then no wider than the roller), and the smallest radius (angle [deg],
     radius [mm])."""
     tab = valve.table
-    beta = rad_to_deg(tab.pressure_angle) if valve.follower_model.rolling else None
+    limited = valve.follower_model.limited_contact(valve.profile.contact) is not None
+    beta = rad_to_deg(tab.pressure_angle) if limited else None
     return {"name": valve.name, "cam_deg": rad_to_deg(tab.cam_angle), "rho_mm": tab.rho / MM, "pressure_deg": beta,
             "boundaries_deg": segment_boundaries(valve.law), "rho_min_limit_mm": RHO_MIN / MM,
             "undercut_mm": 0.0, "rho_min": (shown_value(valve.profile, "rho_min_angle"),

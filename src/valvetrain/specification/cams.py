@@ -407,8 +407,7 @@ class TangentCam(_CamBase):
 
     @model_validator(mode="after")
     def _roller(self):
-        follower = FOLLOWERS[self.follower]
-        if not follower.rolling or follower.law_at_valve:
+        if not FOLLOWERS[self.follower].admits(self.law):
             raise InputError("law = \"tangent\" needs follower = \"roller\" (a flat follower on straight flanks is "
                              "degenerate; a finger's law is the valve's, not the cam's) and roller_radius_mm")
         return self

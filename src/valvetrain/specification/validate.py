@@ -75,7 +75,8 @@ def _valve_problems(name, v, engine):
         out.append(Problem(f"{at}.spring.installed_length_mm", f"the spring must be longer than the valve lift "
                            f"max_lift_mm = {v.max_lift_mm:g} (it is compressed by it, Valve-train practical works "
                            "(n.d.), eq. 6.5)", f"{list(installed)}"))
-    if v.drive.layout is not None and not LAYOUTS[v.drive.layout].rocker and v.rocker_ratio != 1.0:
+    if (v.drive.layout is not None and not any(link.lever for link in LAYOUTS[v.drive.layout].links)
+            and v.rocker_ratio != 1.0):
         out.append(Problem(f"{at}.drive.layout", f"needs rocker_ratio = 1 (got {v.rocker_ratio:g})",
                            f"\"{v.drive.layout}\"", " "))
     if FOLLOWERS[v.cam.follower].law_at_valve:

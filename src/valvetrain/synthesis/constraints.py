@@ -101,9 +101,10 @@ def pressure_angle(design, limit) -> Check | None:
     ----------
     Shang Hanji (1988), section 2.1; UkrSURT Proceedings (2019) (beta_max <= 30 deg).
     """
-    if not design.follower_model.rolling:
+    limited = design.follower_model.limited_contact(design.profile.contact)
+    if limited is None:
         return None
-    return check("profile.pressure_angle.max", design.profile.contact.max_pressure_angle, high=limit, unit="deg",
+    return check("profile.pressure_angle.max", limited[0], high=limit, unit="deg",
                  source=SOURCE_SYNTHESIS, severity="failure")
 
 
@@ -126,9 +127,10 @@ def concave_radius(design, wheel_radius) -> Check | None:
     R_min is the concave profile radius closest to zero (Shang Hanji (1988), eq. 2.7); the wheel fits into the
     concave stretch when |R_min| >= its radius, UkrSURT Proceedings (2019) (R_min <= -170 mm).
     """
-    if not design.follower_model.rolling:
+    limited = design.follower_model.limited_contact(design.profile.contact)
+    if limited is None:
         return None
-    radius = design.profile.contact.min_concave_radius
+    radius = limited[1]
     ratio = 0.0 if radius is None else wheel_radius / abs(radius)
     return check("synthesis.concave_radius", ratio, high=1.0, source=SOURCE_SYNTHESIS,
                  severity="failure", note=note("synthesis.no_concave_stretch") if radius is None else "")

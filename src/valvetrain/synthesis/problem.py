@@ -97,6 +97,8 @@ class Problem:
         self.bounds = [(v.low, v.high) for v in self.variables]
         self.reserve0 = self.section.drive.spring_reserve
         self.follower = design.cam.follower_model
+        # a roller's pressure angle and concave radius are margins of the search too, a sliding face has neither
+        self.limited = self.follower.limited_contact(design.profile.contact) is not None
         self.heel, self.i_k, self.omega = design.cam.heel_radius, design.cam.rocker_ratio, design.cam.cam_speed
         self.whole_event = getattr(self.section.cam, "closing", None) is not None
         self.mass = design.drive.masses.at_valve
@@ -149,7 +151,7 @@ class Problem:
         """Names of the entries of :meth:`evaluate`'s margins."""
         L = self.limits
         names = ["spring reserve"]
-        if self.follower.rolling:
+        if self.limited:
             names += ["pressure angle"] + (["concave radius"] if L.grinding_wheel_radius else [])
         names += [n for n, lim in (("rho_min", L.min_rho), ("contact stress", L.cam_width),
                                    ("max acceleration", L.max_acceleration), ("min acceleration", L.min_acceleration),
@@ -228,7 +230,7 @@ class Problem:
              "lift": h / nose, "overshoot": -h / nose,
              "max acceleration": -acc, "min acceleration": acc}
         rho = self.follower.curvature(self.heel, h, dh, d2h)
-        if self.follower.rolling:
+        if self.limited:
             q["pressure angle"] = -np.abs(self.follower.pressure_angle(self.heel, h, dh))
             q["concave radius"] = np.where(rho < 0.0, 1.0 / np.where(rho < 0.0, rho, -1.0), 0.0)
         q["rho_min"] = self.follower.convex_radius(rho)
@@ -358,7 +360,7 @@ class Problem:
         reserve = least["spring reserve"] if np.isfinite(least["spring reserve"]) else 10.0
         target = L.min_spring_reserve * scale
         out = [(reserve - target) / target]
-        if self.follower.rolling:
+        if self.limited:
             out.append((L.max_pressure_angle + least["pressure angle"]) / L.max_pressure_angle)
             if L.grinding_wheel_radius:
                 out.append(1.0 - L.grinding_wheel_radius * max(-least["concave radius"], 0.0))
