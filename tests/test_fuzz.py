@@ -8,6 +8,8 @@ hypothesis; the runs are derandomized and keep no example database, so CI sees t
 ``python tools/fuzz_specs.py`` runs many more cases and groups the failures.
 """
 
+import math
+
 from hypothesis import given, settings, strategies as st
 import pytest
 
@@ -129,6 +131,17 @@ def test_serve_refuses_a_file_that_is_not_toml_as_run_does(tmp_path):
     assert ran.exit_code == 2
     assert rec["detail"] == [m.replace(str(tmp_path), "<tmp>") for m in fuzz._command_messages(ran.output)]
     assert rec["detail"][0].startswith("<tmp>/spec.toml: not valid TOML: Cannot overwrite a value (at line ")
+
+
+def test_a_check_without_bounds_has_no_margin_and_one_with_a_bound_has_one():
+    """A check without bounds (range 'any') has no margin: +inf in memory, null in results.json, as the schema says;
+    a null or infinite margin of a check with a bound stays a finding.  The fuzzer flagged every null margin of a
+    written results.json before (the gas force at the exhaust's opening of every example with an exhaust valve)."""
+    boundless = {"code": "gas_force.exhaust_opening", "value": 423.6, "low": None, "high": None}
+    bounded = {"code": "flow.throat_velocity", "value": 85.0, "low": 50.0, "high": 80.0}
+    for margin in (None, math.inf):
+        data = {"checks": [{**boundless, "margin": margin}, {**bounded, "margin": margin}]}
+        assert fuzz.null_problems(data, []) == [("checks[].margin", f"checks[1].margin = {margin!r}")]
 
 
 def test_a_null_documented_by_its_path_is_not_excused_elsewhere():

@@ -1296,21 +1296,32 @@ def _unevaluated_check(data, path):
     return bool(data[path[0]][path[1]].get("unevaluated"))
 
 
+def _boundless_check(data, path):
+    """Whether ``path`` is the margin of a full check record (``checks``) without bounds (range 'any'): it has no
+    distance to a bound, its margin +inf in memory and null in results.json (the schema's rule)."""
+    if len(path) != 3 or path[0] != "checks" or path[2] != "margin":
+        return False
+    record = data["checks"][path[1]]
+    return "low" in record and "high" in record and record["low"] is None and record["high"] is None
+
+
 def null_problems(data, valve_names):
-    """Non-finite numbers and nulls of ``results.to_dict()`` that are not documented: ``[(generic path, text)]``."""
+    """Non-finite numbers and nulls of ``results.to_dict()`` (or of results.json) that are not documented:
+    ``[(generic path, text)]``."""
     out = []
     for path, v in _walk(data):
         if _unevaluated_check(data, path):
             continue          # a check whose value cannot be had: null with its reason, margin -inf, a failure
+        if _boundless_check(data, path) and (v is None or v == math.inf):
+            continue          # a check without bounds: no margin
         if v is None or (isinstance(v, (float, np.floating)) and not math.isfinite(v)):
             # the key of a list's item is the list's own (its entries share its documentation)
             key = next((str(p) for p in reversed(path) if not isinstance(p, int)), "")
             documented = key in DOCUMENTED_NULLS or _generic(path, valve_names).replace("[]", "") in DOCUMENTED_NULLS
             if documented and (v is None or v != v):
                 continue
-            margin = key.endswith("margin") or (len(path) > 1 and path[-2] == "margins")
-            if margin and v == math.inf:
-                continue      # a check switched off (or without bounds) passes with an infinite margin
+            if len(path) > 1 and path[-2] == "margins" and v == math.inf:
+                continue      # a spring's check switched off passes with an infinite margin
             out.append((_generic(path, valve_names), f"{dotted(path)} = {v!r}"))
     return out
 
