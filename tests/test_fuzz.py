@@ -154,7 +154,7 @@ def test_a_null_documented_by_its_path_is_not_excused_elsewhere():
                                                      "valves.intake.dynamics.revolutions = None")]
 
 
-
+def test_a_tolerance_case_with_damaged_records_designs_them_again():
     """A tolerance case whose records.jsonl is damaged (a passing check made an unevaluated failure) after its first
     run: the run again designs that sample again and gives the first run's results (else: nonsense)."""
     case = {"base": "example", "ops": [["tolerances", [{"key": "valves.intake.throat_diameter_mm",
