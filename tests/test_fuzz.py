@@ -163,3 +163,14 @@ def test_a_tolerance_case_with_damaged_records_designs_them_again():
             "command": ["tolerance", "--samples", "3", "<damage:passed_flipped>"]}
     rec = fuzz.run_case(case, BASES, timeout=120.0)
     assert rec["outcome"] == "ok", rec
+
+
+def test_the_hard_deadline_of_a_case_is_the_time_its_own_rules_allow():
+    """A case's worker ends at the case's own allowance + 30 s: 41 valve sections (copy_many) may take 41/8 x the
+    timeout, an optimisation 4 x (COMMAND_TIMEOUT).  fuzz7's campaign (seed fuzz7a) counted three copy_many cases as
+    hangs in C code: the worker was ended at timeout + 30 s, before run_case's own 41/8 x timeout had passed."""
+    many = {"base": "example", "ops": [["valve", "intake", "copy_many", "x"]]}
+    assert fuzz.allowed_seconds(many, BASES, 60.0) == 60.0 * 42 / fuzz.VALVES_PER_TIMEOUT
+    assert fuzz.allowed_seconds({"base": "example", "ops": []}, BASES, 60.0) == 60.0
+    optimize = {"base": "example", "ops": [], "command": ["optimize", "--maxiter", "1"]}
+    assert fuzz.allowed_seconds(optimize, BASES, 60.0) == 240.0
