@@ -485,7 +485,7 @@ class Designer(Layout, SweepPanel, VvaPanel):
         file's design kept with a message."""
         try:
             document = json.loads(text)
-        except ValueError:
+        except (ValueError, RecursionError):       # not JSON, or nested deeper than the parser's recursion
             return
         if not isinstance(document, dict):
             return
