@@ -9,6 +9,8 @@ hypothesis; the runs are derandomized and keep no example database, so CI sees t
 (360 fixed cases; a fuzz campaign runs thousands), sized to the CI's time.
 """
 
+import math
+
 from hypothesis import given, settings, strategies as st
 import pytest
 
@@ -132,6 +134,17 @@ def test_serve_refuses_a_file_that_is_not_toml_as_run_does(tmp_path):
     assert rec["detail"][0].startswith("<tmp>/spec.toml: not valid TOML: Cannot overwrite a value (at line ")
 
 
+def test_a_check_without_bounds_has_no_margin_and_one_with_a_bound_has_one():
+    """A check without bounds (range 'any') has no margin: +inf in memory, null in results.json, as the schema says;
+    a null or infinite margin of a check with a bound stays a finding.  The fuzzer flagged every null margin of a
+    written results.json before (the gas force at the exhaust's opening of every example with an exhaust valve)."""
+    boundless = {"code": "gas_force.exhaust_opening", "value": 423.6, "low": None, "high": None}
+    bounded = {"code": "flow.throat_velocity", "value": 85.0, "low": 50.0, "high": 80.0}
+    for margin in (None, math.inf):
+        data = {"checks": [{**boundless, "margin": margin}, {**bounded, "margin": margin}]}
+        assert fuzz.null_problems(data, []) == [("checks[].margin", f"checks[1].margin = {margin!r}")]
+
+
 def test_a_null_documented_by_its_path_is_not_excused_elsewhere():
     """The lash adjuster's per-speed revolutions and settled are null at a speed without a simulated motion (their
     labels); a null of a key of the same name in another section (the dynamics' revolutions) stays a finding."""
@@ -142,7 +155,7 @@ def test_a_null_documented_by_its_path_is_not_excused_elsewhere():
                                                      "valves.intake.dynamics.revolutions = None")]
 
 
-
+def test_a_tolerance_case_with_damaged_records_designs_them_again():
     """A tolerance case whose records.jsonl is damaged (a passing check made an unevaluated failure) after its first
     run: the run again designs that sample again and gives the first run's results (else: nonsense)."""
     case = {"base": "example", "ops": [["tolerances", [{"key": "valves.intake.throat_diameter_mm",
@@ -151,3 +164,14 @@ def test_a_null_documented_by_its_path_is_not_excused_elsewhere():
             "command": ["tolerance", "--samples", "3", "<damage:passed_flipped>"]}
     rec = fuzz.run_case(case, BASES, timeout=120.0)
     assert rec["outcome"] == "ok", rec
+
+
+def test_the_hard_deadline_of_a_case_is_the_time_its_own_rules_allow():
+    """A case's worker ends at the case's own allowance + 30 s: 41 valve sections (copy_many) may take 41/8 x the
+    timeout, an optimisation 4 x (COMMAND_TIMEOUT).  fuzz7's campaign (seed fuzz7a) counted three copy_many cases as
+    hangs in C code: the worker was ended at timeout + 30 s, before run_case's own 41/8 x timeout had passed."""
+    many = {"base": "example", "ops": [["valve", "intake", "copy_many", "x"]]}
+    assert fuzz.allowed_seconds(many, BASES, 60.0) == 60.0 * 42 / fuzz.VALVES_PER_TIMEOUT
+    assert fuzz.allowed_seconds({"base": "example", "ops": []}, BASES, 60.0) == 60.0
+    optimize = {"base": "example", "ops": [], "command": ["optimize", "--maxiter", "1"]}
+    assert fuzz.allowed_seconds(optimize, BASES, 60.0) == 240.0

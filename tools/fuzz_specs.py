@@ -1296,21 +1296,32 @@ def _unevaluated_check(data, path):
     return bool(data[path[0]][path[1]].get("unevaluated"))
 
 
+def _boundless_check(data, path):
+    """Whether ``path`` is the margin of a full check record (``checks``) without bounds (range 'any'): it has no
+    distance to a bound, its margin +inf in memory and null in results.json (the schema's rule)."""
+    if len(path) != 3 or path[0] != "checks" or path[2] != "margin":
+        return False
+    record = data["checks"][path[1]]
+    return "low" in record and "high" in record and record["low"] is None and record["high"] is None
+
+
 def null_problems(data, valve_names):
-    """Non-finite numbers and nulls of ``results.to_dict()`` that are not documented: ``[(generic path, text)]``."""
+    """Non-finite numbers and nulls of ``results.to_dict()`` (or of results.json) that are not documented:
+    ``[(generic path, text)]``."""
     out = []
     for path, v in _walk(data):
         if _unevaluated_check(data, path):
             continue          # a check whose value cannot be had: null with its reason, margin -inf, a failure
+        if _boundless_check(data, path) and (v is None or v == math.inf):
+            continue          # a check without bounds: no margin
         if v is None or (isinstance(v, (float, np.floating)) and not math.isfinite(v)):
             # the key of a list's item is the list's own (its entries share its documentation)
             key = next((str(p) for p in reversed(path) if not isinstance(p, int)), "")
             documented = key in DOCUMENTED_NULLS or _generic(path, valve_names).replace("[]", "") in DOCUMENTED_NULLS
             if documented and (v is None or v != v):
                 continue
-            margin = key.endswith("margin") or (len(path) > 1 and path[-2] == "margins")
-            if margin and v == math.inf:
-                continue      # a check switched off (or without bounds) passes with an infinite margin
+            if len(path) > 1 and path[-2] == "margins" and v == math.inf:
+                continue      # a spring's check switched off passes with an infinite margin
             out.append((_generic(path, valve_names), f"{dotted(path)} = {v!r}"))
     return out
 
@@ -2001,11 +2012,30 @@ def _init_worker(hang_dir):
         pass
 
 
+def allowed_seconds(case, bases, timeout):
+    """The seconds :func:`run_case` allows ``case`` before it counts as a hang: ``timeout`` times the command's
+    :data:`COMMAND_TIMEOUT`, twice for a session, once per function for an api case, the start, each request and
+    Ctrl-C for a serve case, and x max(1, valve sections / :data:`VALVES_PER_TIMEOUT`) for a run."""
+    if case.get("command"):
+        return timeout * COMMAND_TIMEOUT[case["command"][0]]
+    if case.get("session"):
+        return timeout * 2.0
+    if case.get("api"):
+        return timeout * len(API_FUNCTIONS)
+    if case.get("serve"):
+        return timeout * (1 + len(case["serve"]["requests"])) + 30.0
+    doc = copy.deepcopy(bases[case["base"]][0])
+    for op in case["ops"]:
+        _apply(doc, {}, op)
+    valves = doc.get("valves")
+    return timeout * max(1.0, (len(valves) if isinstance(valves, dict) else 0) / VALVES_PER_TIMEOUT)
+
+
 def _worker(case, timeout, write):
-    # the hard deadline: a case stuck in C code, where the SIGALRM of run_case cannot interrupt it, ends the
-    # worker process after writing where it was stuck
+    # the hard deadline, 30 s after the case's own: a case stuck in C code, where the SIGALRM of run_case cannot
+    # interrupt it, ends the worker process after writing where it was stuck
     with open(Path(_HANG_DIR) / f"{os.getpid()}.txt", "w") as fh:
-        faulthandler.dump_traceback_later(timeout + 30.0, exit=True, file=fh)
+        faulthandler.dump_traceback_later(allowed_seconds(case, _BASES, timeout) + 30.0, exit=True, file=fh)
         try:
             return run_case(case, _BASES, timeout, write)
         finally:
@@ -2018,11 +2048,13 @@ def _dead_worker_record(case, seconds, timeout, hang_dir):
     frames = [f for f in frames if "/tools/" not in f[0]]
     where = f"{frames[0][0][frames[0][0].rfind('/valvetrain/') + 1:]}:{frames[0][1]} ({frames[0][2]})" if frames \
         else "(no valvetrain frame)"
-    hung = seconds >= timeout
+    bases = base_specs()
+    allowed = allowed_seconds(case, bases, timeout)
+    hung = seconds >= allowed
     sig = f"hard timeout (C code) at {where}" if hung else f"worker process died at {where}"
-    return {"base": case["base"], "ops": case["ops"], **_command_of(case), "mutation": materialize(case, base_specs())[2],
+    return {"base": case["base"], "ops": case["ops"], **_command_of(case), "mutation": materialize(case, bases)[2],
             "outcome": "hang" if hung else "traceback", "signature": sig, "signatures": [sig],
-            "detail": [f"the worker did not return within {timeout:g} s + 30 s" if hung else
+            "detail": [f"the worker did not return within {allowed:g} s + 30 s" if hung else
                        "the worker process died (crash or killed)"], "seconds": round(seconds, 3)}
 
 

@@ -39,12 +39,13 @@ HERTZ_LINE = 0.418
 """The factor of Hertz's line-contact stress, sqrt(1 / (2 pi (1 - mu^2))) with Poisson's ratio mu = 0.3."""
 
 
-def verdict(check_name, value, note="") -> Check:
+def verdict(check_name, value, note="", unevaluated="") -> Check:
     """The :class:`~valvetrain.checks.Check` of one of the checks of :data:`LIMITS` (severity ``failure``: the
-    part cannot carry the load), its value SI."""
+    part cannot carry the load), its value SI (NaN with ``unevaluated``, why it cannot be had)."""
     limit, kind, unit, source = LIMITS[check_name]
     bounds = {"high": limit} if kind == "max" else {"low": limit}
-    return check(f"strength.{check_name}", value, **bounds, unit=unit, source=source, severity="failure", note=note)
+    return check(f"strength.{check_name}", value, **bounds, unit=unit, source=source, severity="failure", note=note,
+                 unevaluated=unevaluated)
 
 
 def cam_force(spring_force, valve_inertia_force, rocker_ratio) -> np.ndarray:
@@ -259,6 +260,38 @@ def euler_load(modulus, second_moment_area, length) -> float:
 def sphere_socket_stress(force, modulus, ball_radius, socket_radius) -> float:
     """Contact stress of a ball in a concave socket, 0.388 (P E^2 (1/r1 - 1/r2)^2)^(1/3) [Pa] (Valve-train practical works (n.d.), 7.11/7.14)."""
     return 0.388 * np.cbrt(force * modulus**2 * (1.0 / ball_radius - 1.0 / socket_radius) ** 2)
+
+
+CONFORMING = ("the socket conforms to the ball: Hertz's contact circle of {:.3g} mm radius would be wider than the "
+              "ball of {:.3g} mm radius")
+"""Why the ball-in-socket stress cannot be had where its formula's contact does not fit on the ball."""
+
+
+def sphere_socket_verdict(check_name, force, modulus, ball_radius, socket_radius, note="") -> Check:
+    """The :func:`verdict` of :func:`sphere_socket_stress` (``check_name`` of :data:`LIMITS`), unevaluated where the
+    Hertz contact it assumes would be wider than the ball: a socket so close to the ball's radius that the formula's
+    stress (towards 0 as r2 -> r1) cannot be the contact's.
+
+    Notes
+    -----
+    Hertz's contact of spheres has the mean pressure P / (pi a^2) = 2/3 of its peak sigma, so its radius is
+    a = sqrt(3 P / (2 pi sigma)) (Johnson (1985), section 4.2); a circle of a >= r1 does not fit on the ball.
+
+    Examples
+    --------
+    2000 N on a 5 mm ball in a 6 mm socket: sigma = 1789 MPa, a = 0.73 mm, evaluated; in a 5.000001 mm socket the
+    formula's 0.2 MPa would need a contact of 69 mm radius.
+
+    >>> round(sphere_socket_verdict("ball_socket_stress", 2000.0, 2.1e11, 0.005, 0.006).value / 1e6)
+    1789
+    >>> sphere_socket_verdict("ball_socket_stress", 2000.0, 2.1e11, 0.005, 0.005000001).unevaluated
+    "the socket conforms to the ball: Hertz's contact circle of 68.8 mm radius would be wider than the ball of 5 mm radius"
+    """
+    stress = sphere_socket_stress(force, modulus, ball_radius, socket_radius)
+    contact = np.sqrt(3.0 * force / (2.0 * np.pi * stress))
+    if contact < ball_radius:
+        return verdict(check_name, stress, note)
+    return verdict(check_name, float("nan"), note, CONFORMING.format(contact * 1e3, ball_radius * 1e3))
 
 
 def rocker_pad_stress(force, modulus, width, radius) -> float:

@@ -39,3 +39,13 @@ def test_its_stiffness_and_node_by_hand():
     assert Pushrod().node(masses, 1.6, None) == ("pushrod", pytest.approx(0.013671875))
     assert Pushrod().missing(masses, None) == [] and Pushrod().missing(SimpleNamespace(pushrod_kg=0.0), 0.04) == [
         "pushrod_kg"]
+
+
+def test_a_socket_that_conforms_to_the_ball_has_no_stress_from_the_formula():
+    """The pushrod's ball of 4 mm in a socket of 4.0001 mm under 1000 N: the formula's 4.65 MPa needs Hertz's contact
+    circle a = sqrt(3 P / (2 pi sigma)) = 10.1 mm (hand calculation), wider than the ball: not evaluated (a failure)
+    instead of a pass (before: 4.65 MPa against 2000 MPa, passed)."""
+    made, _ = loads(parts(ball_radius=0.004, socket_radius=0.0040001))
+    ball = next(c for c in Pushrod().checks(made) if c.code == "strength.ball_socket_stress")
+    assert not ball.evaluated and not ball.passed and ball.severity == "failure"
+    assert "contact circle of 10.1 mm radius would be wider than the ball of 4 mm radius" in ball.unevaluated

@@ -51,3 +51,15 @@ def test_the_pushrod_train_checks_its_pivot_ball_and_refuses_a_seat_no_larger():
     with pytest.raises(SpecError, match="rocker_pivot_seat_radius_mm = 8 must exceed rocker_pivot_ball_radius_mm = 8"):
         appendix_design(valves__intake__parts__rocker_pivot_ball_radius_mm=8.0,
                         valves__intake__parts__rocker_pivot_seat_radius_mm=8.0)
+
+
+def test_a_seat_that_conforms_to_the_ball_has_no_stress_from_the_formula():
+    """A seat of 8.0001 mm on the 8 mm ball: the formula gives 2.17 MPa under R = 1625 N, which Hertz's contact could
+    carry only over a circle of radius a = sqrt(3 R / (2 pi sigma)) = 18.9 mm (its mean pressure R / (pi a^2) is 2/3
+    of the peak; hand calculation), wider than the ball: the stress cannot be evaluated (a failure, the reason named)
+    instead of a pass (before: 2.17 MPa against 2000 MPa, passed)."""
+    made, _ = loads(parts(seat=0.0080001), cam_force=1000.0, rocker_ratio=1.6)
+    (c,) = RockerPivot().checks(made)
+    assert not c.evaluated and not c.passed and c.severity == "failure"
+    assert c.unevaluated == ("the socket conforms to the ball: Hertz's contact circle of 18.9 mm radius would be "
+                             "wider than the ball of 8 mm radius")

@@ -117,6 +117,26 @@ def test_edits_the_page_kept_come_back_after_a_reload():
     assert third.session.document["engine"]["bore_mm"] == 80.0 and "allowed [5, 2000] mm" in third.status.text
 
 
+def test_a_kept_document_nested_beyond_the_parser_is_ignored_as_text_that_is_not_json():
+    """fuzz7: a 'restore' whose text nests 5000 arrays raised RecursionError out of json.loads in the server's
+    callback (only ValueError was caught); it is ignored as a text that is not JSON is."""
+    d = _designer()
+    before = d.session.document
+    _request(d, "restore", text="[" * 5000 + "]" * 5000)
+    assert d.session.document is before and d.session.good["ok"]
+
+
+def test_a_point_sent_for_a_valve_without_a_lift_table_changes_nothing():
+    """fuzz7: a table point added or removed (page.js's add, remove) on a valve whose cam is a law, not an inline lift
+    table (a page drawn before the law changed), raised KeyError 'table_angle' in the server's callback; now the good
+    design is drawn again, unchanged."""
+    d = _designer()
+    before = d.session.document
+    _request(d, "add", "", 0.0, 5.0)
+    _request(d, "remove", "nose")
+    assert d.session.document is before and d.session.good["ok"]
+
+
 def test_serve_refuses_a_specification_that_does_not_validate(refused):
     from valvetrain.specification import example_text
 

@@ -531,12 +531,22 @@ def results_schema() -> dict[str, Any]:
                                                                 ("source", "string"), ("unit", "string"),
                                                                 ("accepted", "boolean"), ("reason", "string"),
                                                                 ("unevaluated", "string"))}
-                    | {"value": {"type": ["number", "null"]}, "margin": {"type": ["number", "null"]},
+                    | {"value": {"type": ["number", "null"]},
+                       "margin": {"type": ["number", "null"], "description": "relative distance of the value to the "
+                                  "nearest bound (>= 0 passes); null where there is none: a value that cannot be "
+                                  "evaluated (unevaluated says why), a check without bounds (range 'any')"},
                        "severity": {"enum": list(SEVERITIES)}}}
+    # a margin is null exactly where there is no distance to a bound: no value, or no bound (a failed check has one)
+    no_value = {"required": ["unevaluated"]}
+    no_bound = {"properties": {"low": {"type": "null"}, "high": {"type": "null"}}}
+    null_margin = {"properties": {"margin": {"type": "null"}}}
     full_record = {**check_record, "required": [*check_record["required"], "low", "high", "pass", "accepted"],
                    "properties": check_record["properties"] | {
                        "low": {"type": ["number", "null"]}, "high": {"type": ["number", "null"]},
-                       "pass": {"type": "boolean"}, "note": {"type": "string"}}}
+                       "pass": {"type": "boolean"}, "note": {"type": "string"}},
+                   "allOf": [{"if": null_margin, "then": {"anyOf": [no_value, no_bound]}},
+                             {"if": {"anyOf": [no_value, no_bound]}, "then": null_margin}]}
+    check_record["allOf"] = [{"if": null_margin, "then": no_value}, {"if": no_value, "then": null_margin}]
     strength = merged(json_schema(StrengthResult), checks="one record per strength check: value, allowed, limit, "
                       "unit, pass, source (and a note)")
     strength["properties"]["not_checked"] = {"type": "array", "items": {"type": "string"},

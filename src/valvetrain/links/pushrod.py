@@ -39,8 +39,8 @@ class Pushrod(Link):
             out.append(strength.verdict("pushrod_buckling_margin", p_cr / p_max, loads.where + note(
                 "strength.euler_load", load_N=p_cr, modulus_MPa=to_display(parts.pushrod_modulus, "MPa"))))
         if loads.need(["ball_radius_mm", "socket_radius_mm"], "ball_socket_stress"):
-            out.append(strength.verdict("ball_socket_stress", strength.sphere_socket_stress(
-                p_max, loads.modulus, parts.ball_radius, parts.socket_radius), loads.where))
+            out.append(strength.sphere_socket_verdict("ball_socket_stress", p_max, loads.modulus, parts.ball_radius,
+                                                      parts.socket_radius, loads.where))
         if loads.need(["pushrod_head_area_mm2"], "pushrod_head_pressure"):
             out.append(strength.verdict("pushrod_head_pressure", p_max / parts.pushrod_head_area, loads.where))
         return out

@@ -38,7 +38,7 @@ class RockerPivot(Link):
 
     def checks(self, loads) -> list:
         """The contact stress of the pivot ball (``rocker_pivot_ball_radius_mm``) in the rocker's seat
-        (``rocker_pivot_seat_radius_mm``) under :func:`fulcrum_load` (:func:`valvetrain.strength.sphere_socket_stress`),
+        (``rocker_pivot_seat_radius_mm``) under :func:`fulcrum_load` (:func:`valvetrain.strength.sphere_socket_verdict`),
         where the keys are given; a note names the other where only one is."""
         parts = loads.parts
         if parts.rocker_pivot_ball_radius is None and parts.rocker_pivot_seat_radius is None:
@@ -46,5 +46,6 @@ class RockerPivot(Link):
         if not loads.need(["rocker_pivot_ball_radius_mm", "rocker_pivot_seat_radius_mm"], "rocker_pivot_stress"):
             return []
         load = fulcrum_load(loads.cam_force, loads.rocker_ratio)
-        return [strength.verdict("rocker_pivot_stress", strength.sphere_socket_stress(
-            load, loads.modulus, parts.rocker_pivot_ball_radius, parts.rocker_pivot_seat_radius), loads.where)]
+        return [strength.sphere_socket_verdict("rocker_pivot_stress", load, loads.modulus,
+                                               parts.rocker_pivot_ball_radius, parts.rocker_pivot_seat_radius,
+                                               loads.where)]

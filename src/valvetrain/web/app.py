@@ -464,7 +464,12 @@ class Designer(Layout, SweepPanel, VvaPanel):
         return (x - x0) / xs, y / ys
 
     def _points(self, kind, name, x, y, began, seq):
-        """A point added to an inline lift table at (x, y) of the lift plot, or point ``name`` removed."""
+        """A point added to an inline lift table at (x, y) of the lift plot, or point ``name`` removed; nothing but
+        the good design drawn again for a valve without such a table (a page drawn before its law changed)."""
+        if not has_points(self.session.good_document["valves"][self.valve]["cam"]):
+            self.shown = None
+            self.redraw(sweep=False, began=began, seq=seq)
+            return
         handles = [h for h in self.session.handles(self.valve) if h.plot == "lift"]
         xs, ys = [h.x for h in handles], [h.y for h in handles]
         if kind == "add":
@@ -480,7 +485,7 @@ class Designer(Layout, SweepPanel, VvaPanel):
         file's design kept with a message."""
         try:
             document = json.loads(text)
-        except ValueError:
+        except (ValueError, RecursionError):       # not JSON, or nested deeper than the parser's recursion
             return
         if not isinstance(document, dict):
             return
