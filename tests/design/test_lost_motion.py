@@ -13,7 +13,7 @@ import pytest
 from valvetrain.design import results_schema, run
 from valvetrain.design.breathing import cylinder_pressure
 from valvetrain.design.hydraulic_actuation import cycle_angle, gas_force, hydraulic_drive
-from valvetrain.design.lost_motion import cam_angle, table_columns
+from valvetrain.design.lost_motion import _sweep_checks, cam_angle, table_columns
 from valvetrain.export import json_text
 from valvetrain.hydraulic_actuation import simulate
 from valvetrain.specification import SpecError, spec_document, validate
@@ -85,6 +85,19 @@ def test_the_speed_sweep_is_the_simulation_at_each_speed_and_closes_in_about_the
         times = np.array([(s.closing.valve_closes - s.closing.solenoid_opens) / s.speed for s in rows])
         assert np.all(np.abs(times / times.mean() - 1.0) < 0.10)
         assert all(0.2 < -s.closing.seating_velocity < 0.35 and s.closing.residual_lift == 0.0 for s in rows)
+
+
+def test_a_sweep_wholly_above_the_over_speed_says_so(design):
+    """The sweep's lowest speed over the over-speed is a check: the example's sweep from 50 % of the rated speed,
+    over-speed 1.1 x rated (the default), gives 0.5 / 1.1; the same rows graded against an over-speed below all of
+    them grade no timing and the check fails (before it, such a sweep checked nothing and said nothing: fuzz)."""
+    found = [c for c in design.checks if c.code == "lost_motion.sweep_range"]
+    assert len(found) == 1 and found[0].value == pytest.approx(0.5 / 1.1, rel=1e-12) and found[0].passed
+    sweep = design.valves["intake"].lost_motion.sweep
+    top = 0.9 * min(s.speed for s in sweep)
+    checks = _sweep_checks(sweep, top)
+    assert [c.code for c in checks] == ["lost_motion.sweep_range"] and not checks[0].passed
+    assert checks[0].value == pytest.approx(1.0 / 0.9, rel=1e-12)
 
 
 def test_the_record_follows_the_schema(design):

@@ -257,8 +257,10 @@ def _checks(closings, vapour) -> list[Check]:
 def _sweep_checks(sweep, top) -> list[Check]:
     """Per timing over the sweep's speeds up to ``top`` [rad/s] (the over-speed): the largest landing velocity (a
     warning above the dynamics' limit) and the largest lift left before the next opening (a failure), each with the
-    speed where it is."""
-    found = []
+    speed where it is; and, once for the sweep, its lowest speed over ``top`` (a warning above 1: a sweep wholly above
+    the over-speed grades no timing)."""
+    found = [check("lost_motion.sweep_range", min(s.speed for s in sweep) / top, high=1.0,
+                   source=cite("norton2009", "the chapter on the dynamics of follower trains"))] if sweep else []
     for opens in dict.fromkeys(s.closing.solenoid_opens for s in sweep):
         rows = [s for s in sweep if s.closing.solenoid_opens == opens and s.speed <= top * (1.0 + 1e-9)]
         params = {"opens": f"{to_display(opens, 'crank deg'):g}"}
