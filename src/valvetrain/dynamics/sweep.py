@@ -76,7 +76,10 @@ def cam_excitation(law, rocker_ratio, steps_per_rev, per_step, start=-np.pi) -> 
     They do not depend on the speed (the time step of a speed is the angle step over its speed), so the samples of
     a law are made once for its grid and kept while the law lives (:data:`_EXCITATIONS`): the sweeps of a design (the
     coarse and the fine speeds, the rated speed, the refinement's halved steps) and the repeated sweeps of a study
-    share them.  The arrays are shared: read them, don't change them.
+    share them.  A grid is kept by its samples a revolution: the samples of a coarser one are every 2^j-th of a finer
+    one kept (the same angles to the bit, and the law's derivatives are those of each angle alone), so the
+    one-mass design's grids (the sub-stepped first sweep's, the second's and the refinement's halved step) are made
+    once.  The arrays are shared: read them, don't change them.
 
     Returns
     -------
@@ -84,20 +87,26 @@ def cam_excitation(law, rocker_ratio, steps_per_rev, per_step, start=-np.pi) -> 
         Camshaft angle [rad from the nose] every 2 pi / (steps_per_rev per_step) from ``start``; k h [m];
         k dh/dtheta [m/rad].
     """
-    key = (float(rocker_ratio), int(steps_per_rev), int(per_step), float(start))
+    count = int(steps_per_rev) * int(per_step)
     try:
-        kept = _EXCITATIONS.setdefault(law, {})
+        kept = _EXCITATIONS.setdefault(law, {}).setdefault((float(rocker_ratio), float(start)), {})
     except TypeError:         # a law that is not hashable or cannot be referred to weakly: made every time
         kept = {}
-    if key not in kept:
-        theta = start + 2.0 * np.pi * np.arange(steps_per_rev * per_step) / (steps_per_rev * per_step)
-        d = law.derivatives(theta)
-        kept[key] = theta, rocker_ratio * d[0], rocker_ratio * d[1]
-    return kept[key]
+    if count not in kept:
+        finer = [n for n in kept if n % count == 0 and (n // count) & (n // count - 1) == 0]
+        if finer:             # every 2^j-th sample of a finer grid: the same angles, to the bit
+            m = min(finer) // count
+            kept[count] = tuple(np.ascontiguousarray(a[::m]) for a in kept[min(finer)])
+        else:
+            theta = start + 2.0 * np.pi * np.arange(count) / count
+            d = law.derivatives(theta)
+            kept[count] = theta, rocker_ratio * d[0], rocker_ratio * d[1]
+    return kept[count]
 
 
 _EXCITATIONS = weakref.WeakKeyDictionary()
-"""The excitation samples of each live law (:func:`cam_excitation`), law -> {(k, steps, per step, start): arrays}."""
+"""The excitation samples of each live law (:func:`cam_excitation`), law -> {(k, start): {samples a revolution:
+arrays}}."""
 
 
 @dataclass(frozen=True)
