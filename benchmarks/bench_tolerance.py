@@ -17,7 +17,10 @@ first, then the baseline; printed for each:
   ``--workers 2``: the Dask workers are the cluster's, not the command's) with the samples per processor second,
   the load average of the machine when it ended, and whether the three give the same results;
 * the ratios of this tree to the baseline: samples per second (the wall rate, which the load of other jobs moves)
-  and samples per processor second (which it moves less);
+  and samples per processor second (which it moves less), and the processor time of a sample of the two trees
+  measured in turn, three times each (the trees' own figures above are minutes apart: on 2026-12-02 under a load
+  of 6-10 they gave 0.217 against 0.214 s where the trees in turn gave 0.8 times the baseline's); ``--alternate
+  --baseline SRC`` measures this alone (about a minute);
 * what a Dask cluster of K machines like this one would do: the tasks are independent, so the rate is K times the
   local cluster's (less the scheduler's 3-6 ms a task of up to 32 samples), and K times two cores over the processor
   time of a sample on idle machines.
@@ -141,6 +144,31 @@ def measured(source, samples):
     return json.loads(res.stdout.splitlines()[-1])
 
 
+def sample_cpu():
+    """The processor time of one sample [s] (:func:`cpu_per_call` of :func:`valvetrain.tolerance.evaluate_sample` on
+    the 16 distinct samples) of the tree on ``sys.path``, run in a process of its own."""
+    from valvetrain.specification import example_text
+    from valvetrain.tolerance import evaluate_sample
+
+    with tempfile.TemporaryDirectory() as tmp:
+        spec = Path(tmp) / "engine.toml"
+        spec.write_text(example_text() + TOLERANCES, encoding="utf-8")
+        return cpu_per_call(evaluate_sample, distinct_samples(spec, 16))
+
+
+def alternate(baseline, rounds=3):
+    """:func:`sample_cpu` of this tree and of the baseline in child processes taken in turn, ``rounds`` times each
+    (the load of other jobs then weighs on both alike): the lists of seconds, (this, baseline)."""
+    times = ([], [])
+    for _ in range(rounds):
+        for source, into in zip((SOURCE, Path(baseline).resolve()), times, strict=True):
+            env = dict(os.environ, PYTHONPATH=str(source))
+            res = subprocess.run([sys.executable, __file__, "--child-sample"], env=env, check=True,
+                                 capture_output=True, text=True)
+            into.append(float(res.stdout.split()[-1]))
+    return times
+
+
 def show(name, m, samples):
     """Print the figures of one tree."""
     print(f"\n{name} ({m['tree']}): CPU time of one sample {m['sample']:.3f} s (the full design, every speed of "
@@ -175,6 +203,10 @@ def main():
                    if key != "dask" else "")
             print(f"  {label}: samples/s x {wall:.2f}{cpu}")
         print(f"  same results as the baseline (serial): {new['serial']['result'] == base['serial']['result']}")
+        mine, theirs = alternate(ARGS.baseline)
+        print(f"  processor time of a sample, the trees taken in turn 3 times (load average {os.getloadavg()[0]:.1f}): "
+              f"{', '.join(f'{t:.3f}' for t in mine)} s against {', '.join(f'{t:.3f}' for t in theirs)} s, this / "
+              f"baseline {statistics.median(mine) / statistics.median(theirs):.2f} (of the medians)")
     for k in (4, 16, 64):
         rate = k * samples / new["dask"]["wall"]
         print(f"a Dask cluster of {k} machines like this one: {rate:.1f} samples/s at the Dask rate measured here, "
@@ -187,8 +219,19 @@ if __name__ == "__main__":
     parser.add_argument("--samples", type=int, default=100)
     parser.add_argument("--baseline", help="the src folder of the baseline tree (e.g. /work/wt/base/src)")
     parser.add_argument("--child", action="store_true", help=argparse.SUPPRESS)
+    parser.add_argument("--child-sample", action="store_true", help=argparse.SUPPRESS)
+    parser.add_argument("--alternate", action="store_true",
+                        help="only the processor time of a sample of this tree and the baseline's, taken in turn")
     ARGS = parser.parse_args()
-    if ARGS.child:
+    if ARGS.child_sample:
+        print(sample_cpu())
+    elif ARGS.alternate:
+        mine, theirs = alternate(ARGS.baseline)
+        print(f"processor time of a sample, this tree and the baseline in turn (load average "
+              f"{os.getloadavg()[0]:.1f}): {', '.join(f'{t:.3f}' for t in mine)} s against "
+              f"{', '.join(f'{t:.3f}' for t in theirs)} s; this / baseline "
+              f"{statistics.median(mine) / statistics.median(theirs):.2f} (of the medians)")
+    elif ARGS.child:
         print(json.dumps(measure(ARGS.samples)))
     else:
         main()

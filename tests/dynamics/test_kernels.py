@@ -58,3 +58,26 @@ def test_a_large_group_splits_into_blocks_of_at_most_block_speeds():
     _, start, _ = blocks(np.full(200, 7), workers=2)
     assert np.diff(start).tolist() == [56, 56, 56, 32]
 
+
+
+def test_one_mass_speed_by_speed_gives_the_lockstep_records(monkeypatch):
+    """A one-mass train's small blocks run speed by speed (kernels.integrate_node, sweep.NODE_SPEEDS): the appendix
+    train at a slow speed that takes sub-steps, two speeds whose valve bounces after seating (its seat closings
+    split, kernels._split_step) and one whose follower jumps, each until it repeats and each for two revolutions
+    (the state carried from one to the next), recorded as the lockstep kernel (kernels.integrate_block) records
+    them: equal to the bit, the revolutions too (the DOP853 tests above check the integration itself)."""
+    import valvetrain.dynamics.sweep as module
+
+    law, train = appendix_train()
+    speeds = np.array([700.0, 5554.0, 6200.0, 9500.0]) * np.pi / 60
+    fields = ("lift", "velocity", "acceleration", "contact_force", "seat_force", "spring_force", "clash_margin",
+              "revolutions", "converged", "substeps")
+    for tolerance in (module.STATE_TOLERANCE, -1.0):
+        monkeypatch.setattr(module, "NODE_SPEEDS", 16)
+        by_speed = sweep(law, train, speeds, revolutions=2, tolerance=tolerance)
+        monkeypatch.setattr(module, "NODE_SPEEDS", 0)
+        lockstep = sweep(law, train, speeds, revolutions=2, tolerance=tolerance)
+        assert by_speed.substeps.max() > 1 and by_speed.events.bounce_height[1] > 1e-6
+        assert by_speed.events.jumped[-1] and not by_speed.events.jumped[0]
+        for name in fields:
+            assert np.array_equal(getattr(by_speed, name), getattr(lockstep, name)), (tolerance, name)

@@ -145,3 +145,16 @@ def test_geometry_estimates():
     inertia = np.pi * 0.025**4 / 64
     assert camshaft_stiffness(0.03, 0.05, 0.025) == pytest.approx(3 * e * inertia * 0.08 / (0.03**2 * 0.05**2))
     assert rocker_arm_inertia(0.09, 0.04, 0.04) == pytest.approx(0.09 * 0.04**2 / 3)
+
+
+def test_a_trains_network_is_built_once():
+    """A train keeps its network and the network its highest frequency (models._kept: every sweep of a design asks
+    for them); a train replaced (dataclasses.replace) builds its own: the lash changed is the cam contact's gap."""
+    from valvetrain.dynamics.models import one_mass_train
+
+    train = one_mass_train(0.25, 15e6, 67.5e3, 400.0, lash=3e-4)
+    net = train.network()
+    assert train.network() is net and net.highest_frequency() == net.highest_frequency()
+    other = replace(train, lash=2e-4).network()
+    assert other.gap[net.cam_element] == 2e-4 and net.gap[net.cam_element] == 3e-4
+    assert other.highest_frequency() == pytest.approx(net.highest_frequency(), rel=1e-12)

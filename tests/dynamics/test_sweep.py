@@ -316,13 +316,13 @@ def test_a_halving_halves_the_time_step_where_a_halved_step_alone_would_not():
 def test_the_excitation_kept_is_each_laws_own():
     """The cam's samples are kept per law and grid (sweep.cam_excitation): a second law's sweep of the same grid, and
     a second grid of the same law, get their own samples (the law's derivatives on their own angles, the independent
-    reference), not those kept first."""
+    reference), not those kept first; a coarser grid after a finer one (every second or fourth of its samples) too."""
     from valvetrain.dynamics.sweep import cam_excitation
 
     law, train = spec12()
     other = harmonic_cam(8e-3, np.radians(50.0))   # unhashable (a SimpleNamespace): made every time
     for f in (law, other):
-        for steps, per_step in ((360, 2), (720, 4)):
+        for steps, per_step in ((360, 2), (720, 4), (360, 4), (720, 2), (360, 1), (180, 2)):
             theta, u, du = cam_excitation(f, 1.5, steps, per_step)
             assert theta.size == steps * per_step
             d = f.derivatives(theta)

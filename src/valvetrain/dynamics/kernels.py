@@ -360,6 +360,149 @@ def integrate_block(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_p
             break
 
 
+@njit(cache=True, nogil=True, no_cpython_wrapper=True, no_cfunc_wrapper=True, inline='always')
+def _node_acceleration(x, v, cam_x, cam_v, im0, ra, rb, k, d, gap, pre, uni, force):
+    """The acceleration of the one node of a train (row 0; row 1 the ground, row 2 the cam) at its position ``x``
+    [m] and velocity ``v`` [m/s] with the cam at ``cam_x`` [m], ``cam_v`` [m/s]; the element forces into ``force``
+    (E,).  The arithmetic of :func:`_forces` on one speed, in its order: the same numbers to the bit."""
+    acc = 0.0
+    for e in range(ra.size):
+        ia, ib = ra[e], rb[e]
+        xa = x if ia == 0 else (0.0 if ia == 1 else cam_x)
+        va = v if ia == 0 else (0.0 if ia == 1 else cam_v)
+        xb = x if ib == 0 else (0.0 if ib == 1 else cam_x)
+        vb = v if ib == 0 else (0.0 if ib == 1 else cam_v)
+        if uni[e]:
+            delta = xa - xb - gap[e]
+            f = k[e] * delta + d[e] * (va - vb)
+            f = f if (delta > 0.0) & (f > 0.0) else 0.0
+        else:
+            f = pre[e] + k[e] * (xa - xb - gap[e]) + d[e] * (va - vb)
+        force[e] = f
+        if ib == 0:
+            acc += f * im0
+        if ia == 0:
+            acc -= f * im0
+    return acc
+
+
+@njit(cache=True, nogil=True)
+def integrate_node(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_per_rev, max_revolutions, tolerance,
+                   rate, inv_mass, x_init, ra, rb, k, d, gap, pre, uni, closing, springs, rocker_ratio, contact,
+                   vnode, vtab, out_lift, out_vel, out_acc, out_contact, out_seat, out_spring, out_clash, out_surge,
+                   out_revs) -> None:
+    """:func:`integrate_block` of a train of one node without a lash adjuster, a node of variable mass or coils
+    (the one-mass train), speed by speed: the same steps, revolutions and records, to the bit.
+
+    The lockstep block pays, at every step, a fixed cost for each element and stage that a few speeds do not share
+    out, and the compiler keeps its state in memory; here each speed's state is a few numbers in registers and its
+    records go along its own output rows.  The speeds ``idx`` of a block (all with ``n_sub`` sub-steps) still run
+    revolution by revolution until every one of them repeats, so that each records the revolution the block would
+    have; a seat closing inside a step is split there (:func:`_split_step`).  The arguments are those of
+    :func:`integrate_block` (``closing`` the seat element, ``contact`` the cam contact, ``vnode`` -1 and ``vtab``
+    the empty table of a train without a node of variable mass: passed on to :func:`_split_step`, whose compiled code
+    the two kernels then share), less those of the parts this kernel has not.
+    """
+    ne = ra.size
+    bsize = idx.size
+    rows = 3
+    im0 = inv_mass[0]
+    x, v = np.empty(bsize), np.empty(bsize)
+    force = np.zeros(ne)
+    k_open, d_open, closed = k.copy(), d.copy(), uni.copy()          # the seat open and closed (_split_step)
+    if closing >= 0:
+        k_open[closing], d_open[closing], closed[closing] = 0.0, 0.0, False
+    im = np.zeros(rows)
+    im[0] = im0
+    xb, vb, ab = np.zeros((rows, 1)), np.zeros((rows, 1)), np.zeros((rows, 1))
+    xe, ve = np.zeros((rows, 1)), np.zeros((rows, 1))
+    one, k_one, f_one = np.zeros((4, rows, 1)), np.zeros((2, 4, rows, 1)), np.zeros((2, ne, 1))
+    h_one, cam_x_one, cam_v_one, off_one = np.zeros(1), np.zeros(4), np.zeros((4, 1)), np.zeros(1)
+    first = np.int64(0)
+    for s in range(bsize):
+        out_revs[idx[s]] = 0
+        x[s], v[s] = x_init[0], 0.0
+    half = per_step // (2 * n_sub)          # half-grid indices per half step
+    period = cam_u.size
+    n_springs = springs.size
+    for rev in range(1, max_revolutions + 1):
+        done = True
+        for s in range(bsize):
+            g = idx[s]
+            for e in range(ne):
+                out_clash[g, e] = np.inf
+            out_surge[g, 0] = 0.0
+            om = omegas[g]
+            h = dtheta / (n_sub * om)
+            xs, vs = x[s], v[s]
+            x0, v0 = xs, vs
+            j0 = 0
+            for step in range(steps_per_rev * n_sub):
+                j1 = j0 + half
+                j2 = j1 + half
+                if j2 == period:
+                    j2 = 0
+                u0, u1, u2, d0, d2 = cam_u[j0], cam_u[j1], cam_u[j2], cam_du[j0], cam_du[j2]
+                c0, c1, c3 = om * d0, om * cam_du[j1], om * d2
+                c = 0.5 * h
+                a0 = a1 = a2 = a3 = k1 = k2 = k3 = 0.0
+                for q in range(4):     # RK4's stages, one call of the forces (compiled once)
+                    if q == 0:
+                        xq, vq, cx, cv = xs, vs, u0, c0
+                    elif q == 1:
+                        xq, vq, cx, cv = xs + c * vs, k1, u1, c1
+                    elif q == 2:
+                        xq, vq, cx, cv = xs + c * k1, k2, u1, c1
+                    else:
+                        xq, vq, cx, cv = xs + 1.0 * h * k2, k3, u2, c3
+                    a = _node_acceleration(xq, vq, cx + 0.0, cv, im0, ra, rb, k, d, gap, pre, uni, force)
+                    if q == 0:
+                        a0 = a
+                        k1 = vs + c * a0
+                        if step % n_sub == 0:
+                            r = step // n_sub
+                            out_lift[g, r] = xs
+                            out_vel[g, r] = vs
+                            out_acc[g, r] = a0
+                            out_contact[g, r] = rocker_ratio * force[contact]
+                            out_seat[g, r] = force[closing]
+                            total = force[springs[0]]
+                            for j in range(1, n_springs):
+                                total += force[springs[j]]
+                            out_spring[g, r] = -total
+                    elif q == 1:
+                        a1 = a
+                        k2 = vs + c * a1
+                    elif q == 2:
+                        a2 = a
+                        k3 = vs + 1.0 * h * a2
+                    else:
+                        a3 = a
+                xn = xs + h / 6.0 * (vs + 2.0 * k1 + 2.0 * k2 + k3)
+                vn = vs + h / 6.0 * (a0 + 2.0 * a1 + 2.0 * a2 + a3)
+                if closing >= 0:
+                    ia, ib, ge = ra[closing], rb[closing], gap[closing]
+                    if (xs if ia == 0 else 0.0) - (xs if ib == 0 else 0.0) - ge <= 0.0 and \
+                            (xn if ia == 0 else 0.0) - (xn if ib == 0 else 0.0) - ge > 0.0:
+                        xb[0, 0], vb[0, 0], ab[0, 0] = xs, vs, a0
+                        xb[2, 0], vb[2, 0] = u0 + 0.0, c0
+                        xe[0, 0], ve[0, 0] = xn, vn
+                        _split_step(first, xb, vb, ab, xe, ve, h, om, dtheta / n_sub, u0, d0, u2, d2, 0.0, closing,
+                                    im, ra, rb, k_open, d_open, k, d, gap, pre, uni, closed, vnode, vtab, one, k_one,
+                                    f_one, h_one, cam_x_one, cam_v_one, off_one)
+                        xn, vn = xe[0, 0], ve[0, 0]
+                xs, vs = xn, vn
+                j0 = j2
+            x[s], v[s] = xs, vs
+            if out_revs[g] == 0:
+                if max(0.0, abs(xs - x0), abs(vs - v0) / rate) <= tolerance:
+                    out_revs[g] = rev
+                else:
+                    done = False
+        if done:
+            break
+
+
 @njit(cache=True, nogil=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _split_step(s, xb, vb, acc, x, v, dt, om, step_angle, u0, d0, u2, d2, shift, e, im, ra, rb, k_open, d_open, k, d,
                 gap, pre, uni, closed, vnode, vtab, one, k_one, f_one, h, cam_x, cam_v, off):
