@@ -11,6 +11,7 @@ from ..checks import Check, check
 from ..dynamics.events import BOUNCE_TOLERANCE
 from ..dynamics.models import slowest_decay
 from ..dynamics.sweep import STATE_TOLERANCE
+from ..locale import note
 from ..units import MM, rpm_to_rad_s, to_display
 
 CHECK_SOURCE = "Shang Hanji (1988), ch. 3"
@@ -88,10 +89,6 @@ CHECK_CODES = ("dynamics.seating_velocity", "dynamics.jump_speed", "dynamics.val
 CLOSED = "the valve does not leave its seat at the rated speed"
 """Why the seating velocity of a valve that stays on its seat cannot be had."""
 
-SEATING_NOTE = "the largest of the rated speed and the speeds swept below it: "
-"""What the seating velocity check grades, before the speed where it is largest (its note)."""
-
-
 def worst_seating(d, engine) -> tuple[float, float]:
     """The largest |seating velocity| [m/s] of the rated speed and of the speeds swept up to it, and its engine speed
     [rad/s]; (NaN, NaN) where the valve does not seat at the rated speed (the check is then unevaluated, a failure).
@@ -123,18 +120,21 @@ def dynamics_checks(d, engine, adjuster_ratio=0.0) -> list[Check]:
     """
     top = d.speed_range[1]
     jump = d.jump_speed if np.isfinite(d.jump_speed) else top
-    note = "" if np.isfinite(d.jump_speed) else (f"no separation up to the top of the range swept, "
-                                                  f"{to_display(top, 'rpm'):.0f} rpm")
+    no_jump = "" if np.isfinite(d.jump_speed) else note("dynamics.no_separation", speed_rpm=to_display(top, "rpm"))
     opened = float(d.rated.lift.max()) > BOUNCE_TOLERANCE
     seating, where = worst_seating(d, engine)
-    at = "" if not np.isfinite(where) else SEATING_NOTE + (
-        f"at {to_display(where, 'rpm'):.0f} rpm; {abs(d.at_rated_speed.seating_velocity):.3g} m/s at the rated speed"
-        if where < engine.rated_speed * (1 - 1e-9) else "at the rated speed")
+    if not np.isfinite(where):
+        at = ""
+    elif where < engine.rated_speed * (1 - 1e-9):
+        at = note("dynamics.seating_largest_at", speed_rpm=to_display(where, "rpm")) + note(
+            "dynamics.seating_at_rated", velocity_m_s=abs(d.at_rated_speed.seating_velocity))
+    else:
+        at = note("dynamics.seating_largest_at_rated")
     return [check(CHECK_CODES[0], seating, high=SEATING_VELOCITY_MAX, unit="m/s", note=at,
                   source=CHECK_SOURCE + "; 0.3-0.5 m/s usual, graded at every speed swept up to the rated one",
                   unevaluated="" if opened else CLOSED),
             check(CHECK_CODES[1], jump / engine.rated_speed, low=engine.over_speed_ratio, severity="failure",
-                  note=note, source=CHECK_SOURCE + ": no separation below [engine] over_speed_ratio x the rated "
+                  note=no_jump, source=CHECK_SOURCE + ": no separation below [engine] over_speed_ratio x the rated "
                   "speed")] + opening_check(d, adjuster_ratio)
 
 
@@ -165,18 +165,15 @@ def opening_check(d, adjuster_ratio=0.0) -> list[Check]:
         return []
     p = d.parameters
     rigid = float(d.sweep.kinematic_lift.max())
-    reasons = [f"at {to_display(d.per_speed.speed[worst], 'rpm'):.0f} rpm the cam lifts the valve by {rigid / MM:.4g} "
-               f"mm without its drive's compliance"]
+    reasons = note("dynamics.rigid_lift", speed_rpm=to_display(d.per_speed.speed[worst], "rpm"), lift_mm=rigid / MM)
+    deflection_mm = p.preload / p.drive_stiffness / MM
     if p.preload / p.drive_stiffness >= rigid:
-        reasons.append(f"the drive deflects F0 / c = {p.preload / p.drive_stiffness / MM:.4g} mm under the spring "
-                       f"preload {p.preload:.4g} N")
+        reasons += note("dynamics.preload_deflection", deflection_mm=deflection_mm, preload_N=p.preload)
     elif adjuster_ratio > 0.0:
         travel = adjuster_ratio * float(np.ptp(d.sweep.adjuster_extension[worst]))
-        reasons.append(f"the drive deflects F0 / c = {p.preload / p.drive_stiffness / MM:.4g} mm under the spring "
-                       f"preload at most, the rest is the lash adjuster's plunger giving way (its leak-down; it "
-                       f"travels {travel / MM:.4g} mm at the valve over the revolution)")
+        reasons += note("dynamics.adjuster_gives_way", deflection_mm=deflection_mm, travel_mm=travel / MM)
     return [check(CHECK_CODES[2], float(lifts[worst]), low=BOUNCE_TOLERANCE, unit="mm", severity="failure",
-                  note="; ".join(reasons), source=CHECK_SOURCE + ": a valve that leaves its seat by less than 0.001 mm "
+                  note=reasons, source=CHECK_SOURCE + ": a valve that leaves its seat by less than 0.001 mm "
                   "rocks on the seat's elasticity")]
 
 
