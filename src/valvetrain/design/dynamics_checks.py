@@ -11,7 +11,7 @@ from ..checks import Check, check
 from ..dynamics.events import BOUNCE_TOLERANCE
 from ..dynamics.models import slowest_decay
 from ..dynamics.sweep import STATE_TOLERANCE
-from ..locale import note
+from ..locale import NoteText, note
 from ..units import MM, rpm_to_rad_s, to_display
 
 CHECK_SOURCE = "Shang Hanji (1988), ch. 3"
@@ -25,7 +25,7 @@ SETTLE_FROM = 1e-3
 repetition's tolerance (:data:`~valvetrain.dynamics.sweep.STATE_TOLERANCE`)."""
 
 
-def unsettled_note(result, speeds, network, revolutions, adjuster=False) -> Optional[str]:
+def unsettled_note(result, speeds, network, revolutions, adjuster=False) -> Optional[NoteText]:
     """Why the speeds of a sweep whose motion did not repeat within ``revolutions`` did not; None where every speed
     repeated.
 
@@ -43,8 +43,8 @@ def unsettled_note(result, speeds, network, revolutions, adjuster=False) -> Opti
 
     Returns
     -------
-    str or None
-        How many speeds and their range, and the reasons: at the speeds whose follower separates or whose valve
+    NoteText or None
+        How many speeds and their range, and the reasons (codes of ``[notes]``, its English the record's text): at the speeds whose follower separates or whose valve
         bounces, a motion that need not repeat; at the others the lash adjuster's plunger (a slow state), or the
         slowest vibration of the train between the lifts (:func:`~valvetrain.dynamics.models.slowest_decay`, the
         clearance open, the valve on its seat): its decay exp(-sigma T) a revolution of T seconds at the highest of
@@ -59,28 +59,27 @@ def unsettled_note(result, speeds, network, revolutions, adjuster=False) -> Opti
     events = result.events
     moving = bad & (events.jumped | (events.bounce_count > 0))
     rest = bad & ~moving
-    span = f"{rpm[bad].min():.0f}" + (f" to {rpm[bad].max():.0f}" if np.ptp(rpm[bad]) > 0.0 else "")
-    parts = [f"{np.count_nonzero(bad)} of {bad.size} speeds, {span} rpm, did not repeat within {revolutions} "
-             "revolutions"]
+    counts = {"count": np.count_nonzero(bad), "speeds": bad.size, "revolutions": revolutions}
+    if np.ptp(rpm[bad]) > 0.0:
+        parts = note("dynamics.unsettled_range", low_rpm=rpm[bad].min(), high_rpm=rpm[bad].max(), **counts)
+    else:
+        parts = note("dynamics.unsettled_at", speed_rpm=rpm[bad].min(), **counts)
     if moving.any():
-        parts.append(f"at {np.count_nonzero(moving)} of them the follower separates or the valve bounces (a motion "
-                     "that need not repeat)")
+        parts += note("dynamics.unsettled_moving", count=np.count_nonzero(moving))
     if rest.any() and adjuster:
-        parts.append(f"at {np.count_nonzero(rest)} the lash adjuster's plunger still moves from one revolution to the "
-                     "next")
+        parts += note("dynamics.unsettled_adjuster", count=np.count_nonzero(rest))
     elif rest.any():
         omega, sigma = slowest_decay(network, opened=("cam contact",) if network.lash > 0.0 else ())
         decay = sigma * 2.0 * np.pi / result.cam_speeds[rest].max()
         if sigma <= 1e-9 * omega:       # a damping ratio below the eigenvalues' rounding: no damper acts on it
-            parts.append(f"at {np.count_nonzero(rest)} the slowest vibration of the train, {omega / (2 * np.pi):.0f} "
-                         "Hz, is undamped between the lifts (no damping acts on it with the valve on its seat): it "
-                         "does not decay")
+            parts += note("dynamics.unsettled_undamped", count=np.count_nonzero(rest),
+                          frequency_Hz=omega / (2 * np.pi))
         else:
-            parts.append(f"at {np.count_nonzero(rest)} the slowest vibration of the train, {omega / (2 * np.pi):.0f} "
-                         f"Hz, decays by a factor {np.exp(-decay):.2g} a revolution at {rpm[rest].max():.0f} rpm: "
-                         f"about {np.log(SETTLE_FROM / STATE_TOLERANCE) / decay:.0f} revolutions from "
-                         f"{SETTLE_FROM / MM:g} mm to the repetition's {STATE_TOLERANCE * 1e9:g} nm")
-    return "; ".join(parts)
+            parts += note("dynamics.unsettled_decay", count=np.count_nonzero(rest), frequency_Hz=omega / (2 * np.pi),
+                          factor=np.exp(-decay), speed_rpm=rpm[rest].max(),
+                          settle_revolutions=np.log(SETTLE_FROM / STATE_TOLERANCE) / decay, from_mm=SETTLE_FROM / MM,
+                          tolerance_nm=STATE_TOLERANCE * 1e9)
+    return NoteText(parts)
 
 
 CHECK_CODES = ("dynamics.seating_velocity", "dynamics.jump_speed", "dynamics.valve_opens")
