@@ -203,7 +203,8 @@ def test_a_spring_checks_key_is_its_code():
 
 def test_every_text_made_with_numbers_takes_its_numbers():
     """Each Russian skeleton of ``ru.toml [texts]`` is filled by as many numbers as its English has ``{}``; the
-    reason of a check that cannot be evaluated is one of them."""
+    reason of a check that cannot be evaluated is one of them.  A record's note (``NoteText``: the firing order, the
+    hydraulic speed plan) is rendered from its code in either language, its list joined by the language's words."""
     texts = catalogue("ru")["texts"]
     for en, ru in texts.items():
         numbers = [str(i) for i in range(en.count("{}"))]
@@ -219,8 +220,9 @@ def test_every_text_made_with_numbers_takes_its_numbers():
     assert note_text(timing) == "intake valve -12.5...228 and exhaust valve 491...10 crank deg from the gas-exchange TDC"
     assert note_text(timing, "ru") == ("впускной клапан -12,5...228 и выпускной клапан 491...10 град ПКВ от ВМТ "
                                        "газообмена")
-    assert translate("speed range 700-7700 rpm: 10% to 110% of the rated speed", "ru") == \
-        "диапазон частот 700-7700 мин⁻¹: от 10% до 110% номинальной"
+    plan = NoteText(note("hydraulic.speed_range", low_rpm=700.0, high_rpm=7700.0, low_share=0.1, high_share=1.1))
+    assert plan == "speed range 700-7700 rpm: 10% to 110% of the rated speed"
+    assert translate(plan, "ru") == "диапазон частот 700-7700 мин⁻¹: от 10% до 110% номинальной"
 
 
 def _note_fields(template):
