@@ -14,6 +14,7 @@ from valvetrain.design import results_schema, run
 from valvetrain.design.dynamics_checks import dynamics_checks
 from valvetrain.export import results_json, write_outputs
 from valvetrain.report.check_rows import check_note
+from valvetrain.report.names import translate
 from valvetrain.specification import SpecError, load_spec, parse_spec, si
 from valvetrain.units import MM
 
@@ -436,6 +437,9 @@ def test_a_valve_the_cam_cannot_lift_off_its_seat_fails_naming_the_reason():
     assert check_note(opens, "ru") == ("на 700 мин⁻¹ кулачок без учёта податливости привода поднимает клапан на 10 мм; "
                                        "привод деформируется на F0 / c = 15 мм под силой предварительной затяжки "
                                        "пружины 1500 Н")      # issue 41: the note's codes rendered in Russian
+    estimates = valve.valves["intake"].dynamics.parameters.estimates
+    assert translate(next(e for e in estimates if e.startswith("K = ")), "ru") == \
+        "K = 30 Н/мм и F0 = 1500 Н заданы в исходных данных динамики"        # a record's note (locale.NoteText)
     assert checks["dynamics.seating_velocity"].unevaluated == "the valve does not leave its seat at the rated speed"
     assert "dynamics.valve_opens" not in {c.code for c in run(spec(FEW)).valves["intake"].checks}
 

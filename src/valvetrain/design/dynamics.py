@@ -28,6 +28,7 @@ from ..dynamics.resonance import resonance
 from ..dynamics.sweep import SweepResult, headline_sweep, sweep, sweep_size
 from ..followers import follower_of
 from ..layouts import chain, finger_inertia, layout, valve_arm
+from ..locale import NoteText, note
 from ..specification import SpecError
 from ..specification.messages import Problem
 from ..strength import cam_force
@@ -81,26 +82,25 @@ def drive_links(dyn, valve, k, at) -> tuple[tuple[Optional[float], ...], tuple[s
     the rest of the compliance equally.  Without a total, a link without geometry is :data:`LINK_STIFFNESS`.
     """
     links = _link_estimates(valve, k)
-    notes = [f"{name}: {c * MM:.5g} N/mm at the valve from the part geometry in [parts]" for name, c in links
+    notes = [NoteText(note("dynamics.link_from_parts", link=name, stiffness_N_mm=c * MM)) for name, c in links
              if c is not None]
     total, key = dyn.drive_stiffness, "dynamics.drive_stiffness_N_per_mm"
     if total is None and valve.drive.stiffness is not None:
         total, key = valve.drive.stiffness, "drive.stiffness_N_per_mm"
-        notes.append(f"drive stiffness c = {total * MM:.5g} N/mm from [drive] stiffness_N_per_mm")
+        notes.append(NoteText(note("dynamics.drive_stiffness_given", stiffness_N_mm=total * MM)))
     unknown = [i for i, (_, c) in enumerate(links) if c is None]
     known = sum(1.0 / c for _, c in links if c is not None)
+    named = sum((note("dynamics.link", link=links[i][0]) for i in unknown), ())
     if total is not None:
         rest = 1.0 / total - known
         if rest <= 0.0:
             raise SpecError([Problem(f"{at}.{key}", f"stiffer than the links estimated from [parts] alone "
                                      f"({1.0 / known * MM:.5g} N/mm in series); allowed below that", f"{total * MM:g}")])
         share = len(unknown) / rest
-        notes.append(", ".join(links[i][0] for i in unknown) + f": {share * MM:.5g} N/mm each at the valve, the "
-                     f"rest of c = {total * MM:.5g} N/mm")
+        notes.append(NoteText(note("dynamics.links_share", links=named, share_N_mm=share * MM, total_N_mm=total * MM)))
     else:
         share = LINK_STIFFNESS
-        notes.append(", ".join(links[i][0] for i in unknown) + f": {share * MM:.5g} N/mm each at the valve "
-                     "(assumed; give drive_stiffness_N_per_mm or the part geometry)")
+        notes.append(NoteText(note("dynamics.links_assumed", links=named, share_N_mm=share * MM)))
     values = tuple(share if c is None else float(c) for _, c in links)
     return values, tuple(name for name, _ in links), notes
 
@@ -121,9 +121,7 @@ def multi_springs(dyn, spring_record, rate, preload) -> tuple[list[CoilSpring], 
     designed = _coil_springs(spring_record, dyn.coils_per_spring)
     given = (dyn.spring_rate, dyn.spring_preload_N, dyn.spring_mass_kg)
     if all(v is None for v in given):
-        return designed, [f"coil masses: the designed spring's active coils in {dyn.coils_per_spring} masses per "
-                          "spring, half a segment on the valve; its closed end coils at the retainer on the valve, "
-                          "those at the head on the head; the active coils meet at the spring's solid length"]
+        return designed, [NoteText(note("dynamics.coil_masses", coils=dyn.coils_per_spring))]
     mass = sum(sp.mass for sp in designed) if dyn.spring_mass_kg is None else float(dyn.spring_mass_kg)
     told = "the designed springs' active coils" if dyn.spring_mass_kg is None else "given ([dynamics] spring_mass_kg)"
     return [CoilSpring(rate, preload, mass, 0.0, int(dyn.coils_per_spring))], [
@@ -149,21 +147,20 @@ def train_spring(dyn, valve, law, line, mass, cam_speed, at) -> tuple[float, flo
     from ..dynamics.resonance import spring_rate
 
     if dyn.spring_rate is None and dyn.spring_preload_N is None:
-        return line.rate, line.preload, (f"K = {line.rate * MM:.5g} N/mm and F0 = {line.preload:.5g} N: the "
-                                         "designed spring(s)")
+        return line.rate, line.preload, NoteText(note("dynamics.spring_designed", rate_N_mm=line.rate * MM,
+                                                      preload_N=line.preload))
     preload = line.preload if dyn.spring_preload_N is None else float(dyn.spring_preload_N)
-    told = "given" if dyn.spring_preload_N is not None else "the designed spring's"
+    told = "dynamics.spring_given" if dyn.spring_preload_N is not None else "dynamics.spring_rate_given"
     if dyn.spring_rate is not None:
-        return float(dyn.spring_rate), preload, (f"K = {dyn.spring_rate * MM:.5g} N/mm given and F0 = {preload:.5g} "
-                                                 f"N {told} ([dynamics])")
+        return float(dyn.spring_rate), preload, NoteText(note(told, rate_N_mm=dyn.spring_rate * MM, preload_N=preload))
     reserve = valve.drive.spring_reserve
     lift = valve.rocker_ratio * law.lift_max
     rate = spring_rate(mass, nose_acceleration(law, cam_speed, valve.rocker_ratio), reserve, preload, lift)
     if rate <= 0.0:
         raise SpecError([Problem(f"{at}.dynamics.spring_preload_N", "above the spring force K_3 M |j_min| the rated "
                                  "speed needs, so no positive rate follows; give spring_rate_N_per_mm", f"{preload:g}")])
-    return rate, preload, (f"K = {rate * MM:.5g} N/mm = (K_3 M |j_min| - F0) / h_max with K_3 = {reserve:g}, F0 = "
-                           f"{preload:.5g} N given (Valve-train dynamics article (n.d.), step 4a)")
+    return rate, preload, NoteText(note("dynamics.spring_rate_sized", rate_N_mm=rate * MM, reserve=reserve,
+                                        preload_N=preload))
 
 
 REVOLUTIONS = {False: 3, True: 20}
@@ -268,8 +265,8 @@ def adjuster_link(valve, law, drive, cam_speed: float, at: str) -> tuple[float, 
     stiffness = hla.secant_stiffness(force, la.plunger_spring_N, hla.plunger_area(la.plunger_diameter),
                                      la.supply_pressure, la.chamber_volume, la.bulk_modulus, la.air_content)[0]
     at_valve = stiffness / ratio**2
-    return at_valve, (f"lash adjuster: {at_valve / 1e3:.5g} N/mm at the valve in series with the cam contact (the oil "
-                      f"column's secant stiffness under {force:.4g} N)"), adjuster_element(la, ratio)
+    return at_valve, NoteText(note("dynamics.adjuster_link", stiffness_N_mm=at_valve / 1e3, force_N=force)), \
+        adjuster_element(la, ratio)
 
 
 def inertia_arm(valve, law, drive) -> tuple[Optional[float], Optional[str]]:
