@@ -287,10 +287,9 @@ def inertia_arm(valve, law, drive) -> tuple[Optional[float], Optional[str]]:
     if parts is None or parts.rocker_inertia == 0.0:
         return float(arm[at]), None
     reduced, heel_circle = parts.rocker_inertia / arm**2, parts.rocker_inertia / valve_arm(valve)**2
-    return float(arm[at]), (f"finger: J / G^2 = {reduced[at] * 1e3:.5g} g at the valve lift {drive.lift[at] / MM:.4g} "
-                            f"mm of the largest required spring force; {heel_circle * 1e3:.5g} g on the heel circle, "
-                            f"{reduced.min() * 1e3:.5g}...{reduced.max() * 1e3:.5g} g over the lift; the value at that "
-                            "lift is the reference mass of the modes and the dampings")
+    return float(arm[at]), NoteText(note("dynamics.finger_reference", reduced_g=reduced[at] * 1e3,
+                                         lift_mm=drive.lift[at] / MM, heel_g=heel_circle * 1e3,
+                                         lightest_g=reduced.min() * 1e3, heaviest_g=reduced.max() * 1e3))
 
 
 FINGER_MASS_POINTS = 257
@@ -357,9 +356,9 @@ def build_train(dyn, valve, law, drive, at, cam_speed=None) -> tuple[Union[OneMa
     links, names, notes = drive_links(dyn, valve, lever_ratio(valve, law), at)
     element = None
     if valve.lash_adjuster is not None:
-        adjuster, note, element = adjuster_link(valve, law, drive, cam_speed, at)
+        adjuster, adjuster_note, element = adjuster_link(valve, law, drive, cam_speed, at)
         links = (float(series(links[0], adjuster)),) + links[1:]
-        notes.append(note)
+        notes.append(adjuster_note)
     c = float(series(*links))
     arm, arm_note = inertia_arm(valve, law, drive)
     variable = None
@@ -370,23 +369,21 @@ def build_train(dyn, valve, law, drive, at, cam_speed=None) -> tuple[Union[OneMa
             mass += inertia / arm**2 - inertia / valve_arm(valve)**2
             if dyn.model == "1dof":
                 variable = _finger_node(valve, law, "valve", mass - inertia / arm**2, lash)
-        notes.insert(0, f"M = {mass:.5g} kg: the reduced mass at the valve of the spring design (masses.at_valve_kg)"
-                     + (", the finger's at the lift below" if arm_note else ""))
+        notes.insert(0, NoteText(note("dynamics.mass_of_spring_design_finger" if arm_note else
+                                      "dynamics.mass_of_spring_design", mass_kg=mass)))
     else:
         mass = float(dyn.mass_kg)
-        notes.insert(0, f"M = {mass:.5g} kg given ([dynamics] mass_kg)")
+        notes.insert(0, NoteText(note("dynamics.mass_given", mass_kg=mass)))
     if arm_note:
         notes.insert(1, arm_note)
         if dyn.model == "multi":
             variable = _finger_node(valve, law, next(link.name for link in chain(valve).links if link.lever))
         if variable is not None:
             lightest, heaviest = variable.mass.min() * 1e3, variable.mass.max() * 1e3
-            notes.insert(2, f"the mass of the node that carries the finger changes with its lift, {lightest:.5g}..."
-                         f"{heaviest:.5g} g over the table, with the velocity-squared force (1/2) dm/dv v_dot^2 of the "
-                         "variable ratio (Lagrange's equation, Norton (2009))")
+            notes.insert(2, NoteText(note("dynamics.finger_node_mass", lightest_g=lightest, heaviest_g=heaviest)))
     rate, preload, spring_note = train_spring(dyn, valve, law, line, mass, cam_speed, at)
     notes.append(spring_note)
-    notes.append(f"lash {lash / MM:.4g} mm at the valve: the clearance the ramp takes up times the rocker ratio"
+    notes.append(NoteText(note("dynamics.lash", lash_mm=lash / MM))
                  if valve.lash_adjuster is None or law.ramp_height == 0.0 else
                  f"no lash: the lash adjuster's quieting ramp of {law.ramp_height / MM:.4g} mm lifts the valve")
     kw = dict(damping_ratio=dyn.damping_ratio, seat_stiffness=dyn.seat_stiffness,
@@ -606,8 +603,9 @@ def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, 
     notes = list(params.estimates)
     low, high = swept_range(dyn, engine)
     if dyn.speed_range is None:
-        notes.append(f"speed range {low / rpm_to_rad_s(1.0):.0f}-{high / rpm_to_rad_s(1.0):.0f} rpm: "
-                     f"{SPEED_RANGE[0]:.0%} to {SPEED_RANGE[1]:.0%} of the rated speed (idle to over-speed)")
+        notes.append(NoteText(note("dynamics.speed_range", low_rpm=low / rpm_to_rad_s(1.0),
+                                   high_rpm=high / rpm_to_rad_s(1.0), low_share=SPEED_RANGE[0],
+                                   high_share=SPEED_RANGE[1])))
     params = replace(params, estimates=tuple(notes))
     speeds = np.linspace(low, high, dyn.speeds)
     step_deg = dyn.step / DEG
