@@ -14,7 +14,7 @@ from valvetrain.design import results_schema, run
 from valvetrain.design.dynamics_checks import dynamics_checks
 from valvetrain.export import results_json, write_outputs
 from valvetrain.report.check_rows import check_note
-from valvetrain.report.names import translate
+from valvetrain.report.names import translate, unevaluated_text
 from valvetrain.specification import SpecError, load_spec, parse_spec, si
 from valvetrain.units import MM
 
@@ -441,6 +441,8 @@ def test_a_valve_the_cam_cannot_lift_off_its_seat_fails_naming_the_reason():
     assert translate(next(e for e in estimates if e.startswith("K = ")), "ru") == \
         "K = 30 Н/мм и F0 = 1500 Н заданы в исходных данных динамики"        # a record's note (locale.NoteText)
     assert checks["dynamics.seating_velocity"].unevaluated == "the valve does not leave its seat at the rated speed"
+    assert unevaluated_text(checks["dynamics.seating_velocity"], "ru") == \
+        "не может быть вычислено: клапан не отходит от седла на номинальной частоте"
     assert "dynamics.valve_opens" not in {c.code for c in run(spec(FEW)).valves["intake"].checks}
 
 

@@ -85,7 +85,7 @@ def unsettled_note(result, speeds, network, revolutions, adjuster=False) -> Opti
 CHECK_CODES = ("dynamics.seating_velocity", "dynamics.jump_speed", "dynamics.valve_opens")
 """The codes of the dynamics checks."""
 
-CLOSED = "the valve does not leave its seat at the rated speed"
+CLOSED = NoteText(note("dynamics.closed"))
 """Why the seating velocity of a valve that stays on its seat cannot be had."""
 
 def worst_seating(d, engine) -> tuple[float, float]:
