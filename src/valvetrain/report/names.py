@@ -10,7 +10,7 @@ symbol from the one unit table :data:`valvetrain.units.UNITS`.  The names of the
 renderings of their codes from the catalogue :mod:`valvetrain.locale`.
 
 A note of a record (:class:`~valvetrain.locale.NoteText`) is rendered in the language from its codes; the other
-texts made with numbers (the cylinder-pressure model) are translated by their skeleton: the numbers are taken out, the Russian skeleton is looked up in the catalogue (``ru.toml`` ``[texts]``
+texts made with numbers (the sources of the engine's checks) are translated by their skeleton: the numbers are taken out, the Russian skeleton is looked up in the catalogue (``ru.toml`` ``[texts]``
 of :mod:`valvetrain.locale`) and the numbers put back (:func:`translate`).  A key, a value or a text without a Russian entry is shown as it is (in English):
 ``tests/report/test_i18n.py`` finds them.
 
