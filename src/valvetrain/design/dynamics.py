@@ -123,10 +123,9 @@ def multi_springs(dyn, spring_record, rate, preload) -> tuple[list[CoilSpring], 
     if all(v is None for v in given):
         return designed, [NoteText(note("dynamics.coil_masses", coils=dyn.coils_per_spring))]
     mass = sum(sp.mass for sp in designed) if dyn.spring_mass_kg is None else float(dyn.spring_mass_kg)
-    told = "the designed springs' active coils" if dyn.spring_mass_kg is None else "given ([dynamics] spring_mass_kg)"
+    told = "dynamics.one_spring_designed_coils" if dyn.spring_mass_kg is None else "dynamics.one_spring_given_coils"
     return [CoilSpring(rate, preload, mass, 0.0, int(dyn.coils_per_spring))], [
-        f"one spring of K = {rate * MM:.5g} N/mm and F0 = {preload:.5g} N, coil mass {mass:.5g} kg {told}, in "
-        f"{dyn.coils_per_spring} masses, half a segment on the valve; its coil clash is not monitored"]
+        NoteText(note(told, rate_N_mm=rate * MM, preload_N=preload, mass_kg=mass, coils=dyn.coils_per_spring))]
 
 
 def nose_acceleration(law, cam_speed, rocker_ratio, points=3601) -> float:
@@ -385,7 +384,7 @@ def build_train(dyn, valve, law, drive, at, cam_speed=None) -> tuple[Union[OneMa
     notes.append(spring_note)
     notes.append(NoteText(note("dynamics.lash", lash_mm=lash / MM))
                  if valve.lash_adjuster is None or law.ramp_height == 0.0 else
-                 f"no lash: the lash adjuster's quieting ramp of {law.ramp_height / MM:.4g} mm lifts the valve")
+                 NoteText(note("dynamics.no_lash", ramp_mm=law.ramp_height / MM)))
     kw = dict(damping_ratio=dyn.damping_ratio, seat_stiffness=dyn.seat_stiffness,
               seat_damping_ratio=dyn.seat_damping_ratio)
     nodes = None
