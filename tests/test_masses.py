@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 
 from valvetrain import masses
+from valvetrain.locale import note_text
 
 
 def test_spring_mass_and_reduced_masses():
@@ -28,6 +29,10 @@ def test_specific_mass_of_each_layout():
         assert mass == pytest.approx(expected, abs=5e-6) and f"default for a {layout} drive" in how
     mass, how = masses.reduced_mass(area, "pushrod", 1.6, specific_mass=450.0)
     assert mass == pytest.approx(0.47862, abs=5e-6) and "450 kg/m2 (given)" in how
+    # the source is a note of the catalogue (issue 41): the report says it in Russian from its code, the work cited
+    # in its bibliography form (the report numbers it)
+    assert note_text(masses.reduced_mass(area, "rocker", 1.6)[1].parts, "ru") == (
+        "удельная масса 105 кг/м² (по умолчанию для привода с коромыслом), Valve-train practical works (n.d.), работа 5")
 
 
 def test_part_masses_take_the_designed_spring_when_none_is_given():

@@ -40,15 +40,16 @@ import math
 from typing import Any
 
 from .errors import InputError
-from .locale import Note, catalogue, code_of, note_text, record_text
+from .locale import Note, NoteText, catalogue, code_of, note, note_text, record_text
 from .units import displayed, to_display
 
 SEVERITIES = ("info", "warning", "failure")
 """What a failed check means: ``info`` a remark, ``warning`` a value outside a recommended range,
 ``failure`` a limit a part cannot pass (a stress above its allowable, an impossible geometry)."""
 
-UNEVALUATED = "its value could not be computed"
-"""The reason of a check that cannot be evaluated where the stage that made it gave none."""
+UNEVALUATED = NoteText(note("checks.unevaluated"))
+"""The reason of a check that cannot be evaluated where the stage that made it gave none (its English, rendered by the
+report in its language)."""
 
 _TOL = 1e-9
 """Relative tolerance at a bound, so that a value printed as the bound (0.46 = 36.8/80) is inside."""

@@ -5,6 +5,8 @@ SI units: kg, m, kg*m^2.  ``rocker_ratio`` i_k = l_v / l_t (valve arm over tappe
 
 import numpy as np
 
+from .locale import NoteText, note
+
 SPECIFIC_MASS_DEFAULT = {"direct": 125.0, "rocker": 105.0, "pushrod": 135.0}
 """Default reduced mass at the valve per inlet throat area m' [kg/m^2], used where no part masses are given.
 
@@ -22,6 +24,11 @@ these, so that the same engine needed 861 N of spring force from its parts and 2
 (issue 10).  The source does not say which parts or masses its figures stand for; a design with its
 own part masses gives them in ``[valves.NAME.drive.masses]``, and ``specific_mass_kg_m2`` sets any other
 figure."""
+
+
+SPECIFIC_MASS_NOTES = {"direct": "masses.specific_default_direct", "rocker": "masses.specific_default_rocker",
+                       "pushrod": "masses.specific_default_pushrod"}
+"""The ``[notes]`` code of the source of a default specific mass, by the layout."""
 
 
 def reduced_mass_at_valve(valve, retainer, cotters, spring, pushrod=0.0, tappet=0.0, rocker_inertia=0.0,
@@ -117,8 +124,8 @@ def reduced_mass(throat_area, layout, rocker_ratio, parts=None, specific_mass=No
 
     Returns
     -------
-    (float, str)
-        The mass and its source.
+    (float, NoteText)
+        The mass and its source (a note, :class:`valvetrain.locale.NoteText`).
 
     References
     ----------
@@ -128,8 +135,8 @@ def reduced_mass(throat_area, layout, rocker_ratio, parts=None, specific_mass=No
         spring = parts.spring_kg if parts.spring_kg is not None else spring_mass
         value = reduced_mass_at_valve(parts.valve_kg, parts.retainer_kg, parts.cotters_kg, spring, parts.pushrod_kg,
                                       parts.tappet_kg, parts.rocker_inertia, valve_arm or 1.0, rocker_ratio)
-        return value, "part masses, Valve-train practical works (n.d.), eq. (5.2)" + ("" if parts.spring_kg is not None
-                                                            else "; spring mass of the design")
+        return value, NoteText(note("masses.parts") + (() if parts.spring_kg is not None else
+                                                       note("masses.spring_of_design")))
     specific = specific_mass or SPECIFIC_MASS_DEFAULT[layout]
-    given = "given" if specific_mass else f"default for a {layout} drive"
-    return mass_from_specific(specific, throat_area), f"specific mass {specific:g} kg/m2 ({given}), Valve-train practical works (n.d.), work 5"
+    given = "masses.specific_given" if specific_mass else SPECIFIC_MASS_NOTES[layout]
+    return mass_from_specific(specific, throat_area), NoteText(note(given, specific_kg_m2=specific))

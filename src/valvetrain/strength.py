@@ -7,6 +7,7 @@ SI units: N, m, Pa.  Each check is a pure function; :func:`verdict` makes its va
 import numpy as np
 
 from .checks import Check, check
+from .locale import NoteText, note as locale_note
 
 DEFLECTION_COEFFICIENT = 64.0 / (3.0 * np.pi)
 """Camshaft deflection coefficient of (7.3): 64/(3 pi) = 6.79 from beam theory; the printed 0.8 is wrong (corrections note 20)."""
@@ -262,11 +263,6 @@ def sphere_socket_stress(force, modulus, ball_radius, socket_radius) -> float:
     return 0.388 * np.cbrt(force * modulus**2 * (1.0 / ball_radius - 1.0 / socket_radius) ** 2)
 
 
-CONFORMING = ("the socket conforms to the ball: Hertz's contact circle of {:.3g} mm radius would be wider than the "
-              "ball of {:.3g} mm radius")
-"""Why the ball-in-socket stress cannot be had where its formula's contact does not fit on the ball."""
-
-
 def sphere_socket_verdict(check_name, force, modulus, ball_radius, socket_radius, note="") -> Check:
     """The :func:`verdict` of :func:`sphere_socket_stress` (``check_name`` of :data:`LIMITS`), unevaluated where the
     Hertz contact it assumes would be wider than the ball: a socket so close to the ball's radius that the formula's
@@ -291,7 +287,8 @@ def sphere_socket_verdict(check_name, force, modulus, ball_radius, socket_radius
     contact = np.sqrt(3.0 * force / (2.0 * np.pi * stress))
     if contact < ball_radius:
         return verdict(check_name, stress, note)
-    return verdict(check_name, float("nan"), note, CONFORMING.format(contact * 1e3, ball_radius * 1e3))
+    why = locale_note("strength.socket_conforms", contact_mm=contact * 1e3, ball_mm=ball_radius * 1e3)
+    return verdict(check_name, float("nan"), note, NoteText(why))
 
 
 def rocker_pad_stress(force, modulus, width, radius) -> float:

@@ -13,6 +13,8 @@ import pytest
 from valvetrain.design import results_schema, run
 from valvetrain.design.dynamics_checks import dynamics_checks
 from valvetrain.export import results_json, write_outputs
+from valvetrain.report.check_rows import check_note
+from valvetrain.report.names import translate, unevaluated_text
 from valvetrain.specification import SpecError, load_spec, parse_spec, si
 from valvetrain.units import MM
 
@@ -432,7 +434,15 @@ def test_a_valve_the_cam_cannot_lift_off_its_seat_fails_naming_the_reason():
     assert opens.severity == "failure" and not opens.passed and opens.value < 1e-6
     assert opens.note == ("at 700 rpm the cam lifts the valve by 10 mm without its drive's compliance; the drive "
                           "deflects F0 / c = 15 mm under the spring preload 1500 N")
+    assert check_note(opens, "ru") == ("на 700 мин⁻¹ кулачок без учёта податливости привода поднимает клапан на 10 мм; "
+                                       "привод деформируется на F0 / c = 15 мм под силой предварительной затяжки "
+                                       "пружины 1500 Н")      # issue 41: the note's codes rendered in Russian
+    estimates = valve.valves["intake"].dynamics.parameters.estimates
+    assert translate(next(e for e in estimates if e.startswith("K = ")), "ru") == \
+        "K = 30 Н/мм и F0 = 1500 Н заданы в исходных данных динамики"        # a record's note (locale.NoteText)
     assert checks["dynamics.seating_velocity"].unevaluated == "the valve does not leave its seat at the rated speed"
+    assert unevaluated_text(checks["dynamics.seating_velocity"], "ru") == \
+        "не может быть вычислено: клапан не отходит от седла на номинальной частоте"
     assert "dynamics.valve_opens" not in {c.code for c in run(spec(FEW)).valves["intake"].checks}
 
 

@@ -8,6 +8,7 @@ import pytest
 
 from valvetrain.links import RockerPivot
 from valvetrain.links.rocker_pivot import fulcrum_load
+from valvetrain.report.names import translate
 from valvetrain.specification import SpecError
 
 from appendix import appendix_design
@@ -63,3 +64,5 @@ def test_a_seat_that_conforms_to_the_ball_has_no_stress_from_the_formula():
     assert not c.evaluated and not c.passed and c.severity == "failure"
     assert c.unevaluated == ("the socket conforms to the ball: Hertz's contact circle of 18.9 mm radius would be "
                              "wider than the ball of 8 mm radius")
+    assert translate(c.unevaluated, "ru") == ("опора прилегает к шару: круг контакта по Герцу радиусом 18,9 мм был бы "
+                                              "шире шара радиусом 8 мм")

@@ -6,7 +6,9 @@ import ast
 import copy
 from dataclasses import replace
 import importlib.util
+import json
 from pathlib import Path
+import pickle
 import string
 
 import pytest
@@ -15,7 +17,7 @@ from valvetrain import checks, locale, strength
 from valvetrain.checks import apply_acceptances, check
 from valvetrain.design import run
 from valvetrain.design.valve_checks import LAYOUT_BANDS
-from valvetrain.locale import LANGS, catalogue, code_of, codes, note, parameters
+from valvetrain.locale import LANGS, NoteText, catalogue, code_of, codes, note, note_text, parameters
 from valvetrain.report.html import WARNING_SYMBOLS
 from valvetrain.report.names import quantity_text
 from valvetrain.specification import SpecError
@@ -201,16 +203,26 @@ def test_a_spring_checks_key_is_its_code():
 
 def test_every_text_made_with_numbers_takes_its_numbers():
     """Each Russian skeleton of ``ru.toml [texts]`` is filled by as many numbers as its English has ``{}``; the
-    reason of a check that cannot be evaluated is one of them."""
+    reason of a check that cannot be evaluated is said in Russian.  A record's note (``NoteText``: the firing order, the
+    hydraulic speed plan) is rendered from its code in either language, its list joined by the language's words."""
     texts = catalogue("ru")["texts"]
     for en, ru in texts.items():
         numbers = [str(i) for i in range(en.count("{}"))]
         assert ru.format(*numbers) and en.format(*numbers), en
-    assert checks.UNEVALUATED in texts
     from valvetrain.report.names import translate
-    assert translate("even firing, order 1-5-3-6-2-4", "ru") == "равномерное чередование вспышек, порядок работы 1-5-3-6-2-4"
-    assert translate("speed range 700-7700 rpm: 10% to 110% of the rated speed", "ru") == \
-        "диапазон частот 700-7700 мин⁻¹: от 10% до 110% номинальной"
+    assert translate(checks.UNEVALUATED, "ru") == "значение не удалось вычислить"
+    firing = NoteText(note("crank.firing_even", order="1-5-3-6-2-4"))      # a record's note: rendered from its code
+    assert firing == "even firing, order 1-5-3-6-2-4" and translate(firing, "en") == firing
+    assert translate(firing, "ru") == "равномерное чередование вспышек, порядок работы 1-5-3-6-2-4"
+    assert pickle.loads(pickle.dumps(firing)).parts == firing.parts and json.dumps(firing) == json.dumps(str(firing))
+    timing = note("crank.valve_timing", valves=note("crank.intake_valve", opens_deg=-12.5, closes_deg=228.0)
+                  + note("crank.exhaust_valve", opens_deg=491.0, closes_deg=10.0))
+    assert note_text(timing) == "intake valve -12.5...228 and exhaust valve 491...10 crank deg from the gas-exchange TDC"
+    assert note_text(timing, "ru") == ("впускной клапан -12,5...228 и выпускной клапан 491...10 град ПКВ от ВМТ "
+                                       "газообмена")
+    plan = NoteText(note("hydraulic.speed_range", low_rpm=700.0, high_rpm=7700.0, low_share=0.1, high_share=1.1))
+    assert plan == "speed range 700-7700 rpm: 10% to 110% of the rated speed"
+    assert translate(plan, "ru") == "диапазон частот 700-7700 мин⁻¹: от 10% до 110% номинальной"
 
 
 def _note_fields(template):

@@ -13,7 +13,7 @@ from ..breathing.cycle import CYCLE, MAX_WORK, BreathingRecord, BreathingResult,
 from ..breathing.valves import DEFAULT_CD, default_areas, effective_areas
 from ..springs import gas_opening_force
 from ..checks import Check, check
-from ..locale import note
+from ..locale import NoteText, note
 from ..units import MM, to_display
 from .dynamics import valve_motion
 from .hydraulic_actuation import CylinderPressure, cycle_angle
@@ -306,6 +306,10 @@ def _ports(columns, kind) -> np.ndarray:
     return columns.intake_port if kind == "intake" else columns.exhaust_port
 
 
+CYCLE_SOURCE_NOTES = {"motored": "breathing.cycle_source_motored", "fired": "breathing.cycle_source_fired"}
+"""The ``[notes]`` code of the cylinder pressure's source of :func:`cylinder_pressure`, by the breathing's mode."""
+
+
 def cylinder_pressure(results, speed, kind=None) -> CylinderPressure:
     """The cylinder pressure of the breathing's converged cycle whose speed is nearest ``speed`` [rad/s] (the
     conditions first, then the curve), for the chapters that read the cylinder pressure (the crank's torque, the
@@ -313,9 +317,9 @@ def cylinder_pressure(results, speed, kind=None) -> CylinderPressure:
     pressure at that side's valves (the port behind the valve head)."""
     chosen = min((*results.conditions, *results.curve), key=lambda r: abs(r.figures.speed - speed))
     f, c = chosen.figures, chosen.columns
-    return CylinderPressure(c.angle, c.pressure,
-                            f"the breathing's converged {results.figures.mode} cycle at {to_display(f.speed, 'rpm'):.5g} "
-                            f"rpm, intake plenum {f.intake_pressure / 1e3:.5g} kPa",
+    said = note(CYCLE_SOURCE_NOTES[results.figures.mode], speed_rpm=to_display(f.speed, "rpm"),
+                plenum_kPa=f.intake_pressure / 1e3)
+    return CylinderPressure(c.angle, c.pressure, NoteText(said),
                             None if kind is None else _ports(c, kind))
 
 

@@ -9,6 +9,7 @@ import numpy as np
 
 from ..checks import Check, check, tally
 from ..crank import dynamics, kinematics, pressure, torque
+from ..locale import NoteText, note
 from ..specification import SpecError
 from ..specification.messages import Problem
 from ..units import MPA
@@ -196,30 +197,30 @@ def valve_timing(valves) -> dict[str, float]:
     return out
 
 
-def wiebe_timing(timing) -> tuple[dict[str, float], str]:
+def wiebe_timing(timing) -> tuple[dict[str, float], tuple]:
     """Keyword arguments of :class:`~valvetrain.crank.pressure.WiebeCycle` from :func:`valve_timing` (angles
     moved to the model's frames: the closed cycle's from the firing TDC, the overlap's from the gas-exchange TDC),
-    and the words of the pressure source naming them."""
+    and the words of the pressure source naming them (a note, :func:`valvetrain.locale.note`; empty without them)."""
     two_pi, four_pi = 2.0 * np.pi, 4.0 * np.pi
-    kw, said = {}, []
+    kw, said = {}, ()
     if "intake_closes" in timing:
         kw["intake_closes"] = np.mod(timing["intake_closes"], four_pi) - two_pi
         kw["intake_opens"] = np.mod(timing["intake_opens"] + two_pi, four_pi) - two_pi
-        said.append(f"intake valve {np.degrees(timing['intake_opens']):.4g}...{np.degrees(timing['intake_closes']):.4g}")
+        said += note("crank.intake_valve", opens_deg=np.degrees(timing["intake_opens"]),
+                     closes_deg=np.degrees(timing["intake_closes"]))
     if "exhaust_opens" in timing:
         kw["exhaust_opens"] = np.mod(timing["exhaust_opens"], four_pi) - two_pi
         kw["exhaust_closes"] = np.mod(timing["exhaust_closes"] + two_pi, four_pi) - two_pi
-        said.append(f"exhaust valve {np.degrees(np.mod(timing['exhaust_opens'], four_pi)):.4g}..."
-                    f"{np.degrees(timing['exhaust_closes']):.4g}")
-    where = (" and ".join(said) + " crank deg from the gas-exchange TDC") if said else ""
-    return kw, where
+        said += note("crank.exhaust_valve", opens_deg=np.degrees(np.mod(timing["exhaust_opens"], four_pi)),
+                     closes_deg=np.degrees(timing["exhaust_closes"]))
+    return kw, note("crank.valve_timing", valves=said) if said else ()
 
 
 def _gas_pressure(c, strokes, phi, bore, radius, lam, k, timing=None):
     """Cylinder pressure on the grid from the indicator diagram or the Wiebe model, and its description."""
     if c.indicator is None:
         cy = c.cycle
-        kw, where = wiebe_timing(timing or {}) if strokes == 4 else ({}, "")
+        kw, where = wiebe_timing(timing or {}) if strokes == 4 else ({}, ())
         model = pressure.WiebeCycle(c.compression_ratio, cy.heat_input_J, cy.intake_pressure, cy.exhaust_pressure,
                                     cy.combustion_start, cy.combustion_duration, cy.wiebe_a, cy.wiebe_m, cy.gamma,
                                     **kw)
@@ -228,15 +229,15 @@ def _gas_pressure(c, strokes, phi, bore, radius, lam, k, timing=None):
                 pressure.check_timing(model)
             except ValueError as exc:
                 raise SpecError([Problem("crank.cycle", str(exc))]) from None
-            valves = (f"compression from the intake valve's closing, a blowdown of {pressure.BLOWDOWN_DEG:g} deg "
-                      f"from the exhaust valve's opening ({where or 'valves at the dead centres'})")
+            valves = note("crank.wiebe_valves", blowdown_deg=pressure.BLOWDOWN_DEG,
+                          where=where or note("crank.valves_at_dead_centres"))
         else:
-            valves = "the ports at the dead centres"
-        source = (f"Wiebe cycle model: compression ratio {c.compression_ratio:g}, heat input {cy.heat_input_J:g} J, "
-                  f"start {np.degrees(cy.combustion_start):g} deg from firing TDC, duration "
-                  f"{np.degrees(cy.combustion_duration):g} deg, a = {cy.wiebe_a:g}, m = {cy.wiebe_m:g}, gamma = "
-                  f"{cy.gamma:g}, no wall heat loss, gas exchange at {cy.intake_pressure / MPA:g}/"
-                  f"{cy.exhaust_pressure / MPA:g} MPa, {valves} (Heywood (1988))")
+            valves = note("crank.ports_at_dead_centres")
+        source = NoteText(note("crank.wiebe", compression_ratio=c.compression_ratio, heat_J=cy.heat_input_J,
+                               start_deg=np.degrees(cy.combustion_start),
+                               duration_deg=np.degrees(cy.combustion_duration), a=cy.wiebe_a, m=cy.wiebe_m,
+                               gamma=cy.gamma, intake_MPa=cy.intake_pressure / MPA,
+                               exhaust_MPa=cy.exhaust_pressure / MPA, valves=valves))
         return pressure.wiebe_pressure(phi, model, bore, radius, lam, strokes, k), source
     table = c.indicator
     if table.kind == "angle":
@@ -262,8 +263,9 @@ def firing_angles(eng) -> tuple[np.ndarray, str]:
         banks = eng.banks or [0] * (eng.cylinders // 2) + [1] * (eng.cylinders - eng.cylinders // 2)
         axes = [b * eng.bank_angle if eng.layout == "v" else 0.0 for b in banks]
         return torque.layout_firing(list(order), np.asarray(eng.crank_throws), axes, eng.strokes), \
-            "from the crank throws and cylinder axes"
-    return torque.even_firing(list(order), eng.strokes), f"even firing, order {'-'.join(map(str, order))}"
+            NoteText(note("crank.firing_from_throws"))
+    return torque.even_firing(list(order), eng.strokes), NoteText(note("crank.firing_even",
+                                                                        order="-".join(map(str, order))))
 
 
 def crank_stage(c, eng, timing=None, cylinder=None) -> CrankResults:

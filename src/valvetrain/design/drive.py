@@ -17,7 +17,7 @@ import numpy as np
 from .. import masses, springs, strength
 from ..checks import Check, check
 from ..layouts import finger_inertia, layout, train_mass
-from ..locale import note_text, record_text
+from ..locale import NoteText, note, note_text, record_text
 from ..locale.wording import diagnosis_note, diagnosis_text
 from ..spring_materials import grade
 from ..units import to_display
@@ -327,7 +327,7 @@ def drive_stage(valve, gas, cam, diagnose=True, gas_load=None) -> DriveResult:
     lift = law.lift_max * i_k
 
     if gas_load is not None:
-        p_gas, gas_source = gas_load[0], note_text(gas_load[1])
+        p_gas, gas_source = gas_load[0], NoteText(gas_load[1])
     elif valve.kind == "exhaust":
         p_gas = springs.gas_opening_force(d_g, gas.exhaust_back_pressure, gas.cylinder_intake_pressure)
         gas_source = "Valve-train practical works (n.d.), eq. (5.4)"
@@ -386,8 +386,8 @@ def drive_stage(valve, gas, cam, diagnose=True, gas_load=None) -> DriveResult:
         sp.count, sp.material, chosen_line.preload, chosen_line.max_force, chosen_line.rate, line.preload, line.rate,
         line.max_force, line.max_deflection / line.preload_deflection, bool(raised and p_gas >= seat), p_gas,
         gas_source, bool(raised and seat > p_gas), seat,
-        "min_preload_N of the specification" if sp.min_preload_N is not None else
-        f"m_v x {springs.SEAT_ACCELERATION:.5g} m/s2 (100 g, a stated default)",
+        NoteText(note("spring.seat_load_given") if sp.min_preload_N is not None else
+                 note("spring.seat_load_default", acceleration_m_s2=springs.SEAT_ACCELERATION)),
         ratio, drive.spring_reserve, sp.min_margin, n_pass, search.tried, None if diagnosis is None else diagnosis_record(diagnosis),
         design, **pair)
 

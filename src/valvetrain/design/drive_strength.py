@@ -16,7 +16,7 @@ import numpy as np
 
 from .. import flow, strength
 from ..checks import Check, check
-from ..locale import note
+from ..locale import NoteText, note
 from ..layouts import chain, finger_inertia
 from ..links import Loads
 from ..numerics import TIE_RTOL, first_largest
@@ -41,8 +41,8 @@ STRENGTH_SPEEDS = 41
 quasi-static force is linear in the square of the speed, so its extremes at every angle lie at the ends of the
 range; the speeds between give the per-speed table."""
 
-LOWEST_SPEED_SOURCES = ("engine.idle_speed_rpm", "the low end of the dynamics speed range",
-                        f"{IDLE_SPEED_RATIO:g} x the rated speed (the default idle)")
+LOWEST_SPEED_SOURCES = (NoteText(note("strength.lowest_idle_given")), NoteText(note("strength.lowest_swept")),
+                        NoteText(note("strength.lowest_default_idle", ratio=IDLE_SPEED_RATIO)))
 """Where the lowest speed of the strength checks comes from (:func:`strength_speed_range`)."""
 
 

@@ -28,6 +28,7 @@ from ..dynamics.resonance import resonance
 from ..dynamics.sweep import SweepResult, headline_sweep, sweep, sweep_size
 from ..followers import follower_of
 from ..layouts import chain, finger_inertia, layout, valve_arm
+from ..locale import NoteText, note
 from ..specification import SpecError
 from ..specification.messages import Problem
 from ..strength import cam_force
@@ -81,26 +82,25 @@ def drive_links(dyn, valve, k, at) -> tuple[tuple[Optional[float], ...], tuple[s
     the rest of the compliance equally.  Without a total, a link without geometry is :data:`LINK_STIFFNESS`.
     """
     links = _link_estimates(valve, k)
-    notes = [f"{name}: {c * MM:.5g} N/mm at the valve from the part geometry in [parts]" for name, c in links
+    notes = [NoteText(note("dynamics.link_from_parts", link=name, stiffness_N_mm=c * MM)) for name, c in links
              if c is not None]
     total, key = dyn.drive_stiffness, "dynamics.drive_stiffness_N_per_mm"
     if total is None and valve.drive.stiffness is not None:
         total, key = valve.drive.stiffness, "drive.stiffness_N_per_mm"
-        notes.append(f"drive stiffness c = {total * MM:.5g} N/mm from [drive] stiffness_N_per_mm")
+        notes.append(NoteText(note("dynamics.drive_stiffness_given", stiffness_N_mm=total * MM)))
     unknown = [i for i, (_, c) in enumerate(links) if c is None]
     known = sum(1.0 / c for _, c in links if c is not None)
+    named = sum((note("dynamics.link", link=links[i][0]) for i in unknown), ())
     if total is not None:
         rest = 1.0 / total - known
         if rest <= 0.0:
             raise SpecError([Problem(f"{at}.{key}", f"stiffer than the links estimated from [parts] alone "
                                      f"({1.0 / known * MM:.5g} N/mm in series); allowed below that", f"{total * MM:g}")])
         share = len(unknown) / rest
-        notes.append(", ".join(links[i][0] for i in unknown) + f": {share * MM:.5g} N/mm each at the valve, the "
-                     f"rest of c = {total * MM:.5g} N/mm")
+        notes.append(NoteText(note("dynamics.links_share", links=named, share_N_mm=share * MM, total_N_mm=total * MM)))
     else:
         share = LINK_STIFFNESS
-        notes.append(", ".join(links[i][0] for i in unknown) + f": {share * MM:.5g} N/mm each at the valve "
-                     "(assumed; give drive_stiffness_N_per_mm or the part geometry)")
+        notes.append(NoteText(note("dynamics.links_assumed", links=named, share_N_mm=share * MM)))
     values = tuple(share if c is None else float(c) for _, c in links)
     return values, tuple(name for name, _ in links), notes
 
@@ -121,14 +121,11 @@ def multi_springs(dyn, spring_record, rate, preload) -> tuple[list[CoilSpring], 
     designed = _coil_springs(spring_record, dyn.coils_per_spring)
     given = (dyn.spring_rate, dyn.spring_preload_N, dyn.spring_mass_kg)
     if all(v is None for v in given):
-        return designed, [f"coil masses: the designed spring's active coils in {dyn.coils_per_spring} masses per "
-                          "spring, half a segment on the valve; its closed end coils at the retainer on the valve, "
-                          "those at the head on the head; the active coils meet at the spring's solid length"]
+        return designed, [NoteText(note("dynamics.coil_masses", coils=dyn.coils_per_spring))]
     mass = sum(sp.mass for sp in designed) if dyn.spring_mass_kg is None else float(dyn.spring_mass_kg)
-    told = "the designed springs' active coils" if dyn.spring_mass_kg is None else "given ([dynamics] spring_mass_kg)"
+    told = "dynamics.one_spring_designed_coils" if dyn.spring_mass_kg is None else "dynamics.one_spring_given_coils"
     return [CoilSpring(rate, preload, mass, 0.0, int(dyn.coils_per_spring))], [
-        f"one spring of K = {rate * MM:.5g} N/mm and F0 = {preload:.5g} N, coil mass {mass:.5g} kg {told}, in "
-        f"{dyn.coils_per_spring} masses, half a segment on the valve; its coil clash is not monitored"]
+        NoteText(note(told, rate_N_mm=rate * MM, preload_N=preload, mass_kg=mass, coils=dyn.coils_per_spring))]
 
 
 def nose_acceleration(law, cam_speed, rocker_ratio, points=3601) -> float:
@@ -149,21 +146,20 @@ def train_spring(dyn, valve, law, line, mass, cam_speed, at) -> tuple[float, flo
     from ..dynamics.resonance import spring_rate
 
     if dyn.spring_rate is None and dyn.spring_preload_N is None:
-        return line.rate, line.preload, (f"K = {line.rate * MM:.5g} N/mm and F0 = {line.preload:.5g} N: the "
-                                         "designed spring(s)")
+        return line.rate, line.preload, NoteText(note("dynamics.spring_designed", rate_N_mm=line.rate * MM,
+                                                      preload_N=line.preload))
     preload = line.preload if dyn.spring_preload_N is None else float(dyn.spring_preload_N)
-    told = "given" if dyn.spring_preload_N is not None else "the designed spring's"
+    told = "dynamics.spring_given" if dyn.spring_preload_N is not None else "dynamics.spring_rate_given"
     if dyn.spring_rate is not None:
-        return float(dyn.spring_rate), preload, (f"K = {dyn.spring_rate * MM:.5g} N/mm given and F0 = {preload:.5g} "
-                                                 f"N {told} ([dynamics])")
+        return float(dyn.spring_rate), preload, NoteText(note(told, rate_N_mm=dyn.spring_rate * MM, preload_N=preload))
     reserve = valve.drive.spring_reserve
     lift = valve.rocker_ratio * law.lift_max
     rate = spring_rate(mass, nose_acceleration(law, cam_speed, valve.rocker_ratio), reserve, preload, lift)
     if rate <= 0.0:
         raise SpecError([Problem(f"{at}.dynamics.spring_preload_N", "above the spring force K_3 M |j_min| the rated "
                                  "speed needs, so no positive rate follows; give spring_rate_N_per_mm", f"{preload:g}")])
-    return rate, preload, (f"K = {rate * MM:.5g} N/mm = (K_3 M |j_min| - F0) / h_max with K_3 = {reserve:g}, F0 = "
-                           f"{preload:.5g} N given (Valve-train dynamics article (n.d.), step 4a)")
+    return rate, preload, NoteText(note("dynamics.spring_rate_sized", rate_N_mm=rate * MM, reserve=reserve,
+                                        preload_N=preload))
 
 
 REVOLUTIONS = {False: 3, True: 20}
@@ -268,8 +264,8 @@ def adjuster_link(valve, law, drive, cam_speed: float, at: str) -> tuple[float, 
     stiffness = hla.secant_stiffness(force, la.plunger_spring_N, hla.plunger_area(la.plunger_diameter),
                                      la.supply_pressure, la.chamber_volume, la.bulk_modulus, la.air_content)[0]
     at_valve = stiffness / ratio**2
-    return at_valve, (f"lash adjuster: {at_valve / 1e3:.5g} N/mm at the valve in series with the cam contact (the oil "
-                      f"column's secant stiffness under {force:.4g} N)"), adjuster_element(la, ratio)
+    return at_valve, NoteText(note("dynamics.adjuster_link", stiffness_N_mm=at_valve / 1e3, force_N=force)), \
+        adjuster_element(la, ratio)
 
 
 def inertia_arm(valve, law, drive) -> tuple[Optional[float], Optional[str]]:
@@ -290,10 +286,9 @@ def inertia_arm(valve, law, drive) -> tuple[Optional[float], Optional[str]]:
     if parts is None or parts.rocker_inertia == 0.0:
         return float(arm[at]), None
     reduced, heel_circle = parts.rocker_inertia / arm**2, parts.rocker_inertia / valve_arm(valve)**2
-    return float(arm[at]), (f"finger: J / G^2 = {reduced[at] * 1e3:.5g} g at the valve lift {drive.lift[at] / MM:.4g} "
-                            f"mm of the largest required spring force; {heel_circle * 1e3:.5g} g on the heel circle, "
-                            f"{reduced.min() * 1e3:.5g}...{reduced.max() * 1e3:.5g} g over the lift; the value at that "
-                            "lift is the reference mass of the modes and the dampings")
+    return float(arm[at]), NoteText(note("dynamics.finger_reference", reduced_g=reduced[at] * 1e3,
+                                         lift_mm=drive.lift[at] / MM, heel_g=heel_circle * 1e3,
+                                         lightest_g=reduced.min() * 1e3, heaviest_g=reduced.max() * 1e3))
 
 
 FINGER_MASS_POINTS = 257
@@ -360,9 +355,9 @@ def build_train(dyn, valve, law, drive, at, cam_speed=None) -> tuple[Union[OneMa
     links, names, notes = drive_links(dyn, valve, lever_ratio(valve, law), at)
     element = None
     if valve.lash_adjuster is not None:
-        adjuster, note, element = adjuster_link(valve, law, drive, cam_speed, at)
+        adjuster, adjuster_note, element = adjuster_link(valve, law, drive, cam_speed, at)
         links = (float(series(links[0], adjuster)),) + links[1:]
-        notes.append(note)
+        notes.append(adjuster_note)
     c = float(series(*links))
     arm, arm_note = inertia_arm(valve, law, drive)
     variable = None
@@ -373,25 +368,23 @@ def build_train(dyn, valve, law, drive, at, cam_speed=None) -> tuple[Union[OneMa
             mass += inertia / arm**2 - inertia / valve_arm(valve)**2
             if dyn.model == "1dof":
                 variable = _finger_node(valve, law, "valve", mass - inertia / arm**2, lash)
-        notes.insert(0, f"M = {mass:.5g} kg: the reduced mass at the valve of the spring design (masses.at_valve_kg)"
-                     + (", the finger's at the lift below" if arm_note else ""))
+        notes.insert(0, NoteText(note("dynamics.mass_of_spring_design_finger" if arm_note else
+                                      "dynamics.mass_of_spring_design", mass_kg=mass)))
     else:
         mass = float(dyn.mass_kg)
-        notes.insert(0, f"M = {mass:.5g} kg given ([dynamics] mass_kg)")
+        notes.insert(0, NoteText(note("dynamics.mass_given", mass_kg=mass)))
     if arm_note:
         notes.insert(1, arm_note)
         if dyn.model == "multi":
             variable = _finger_node(valve, law, next(link.name for link in chain(valve).links if link.lever))
         if variable is not None:
             lightest, heaviest = variable.mass.min() * 1e3, variable.mass.max() * 1e3
-            notes.insert(2, f"the mass of the node that carries the finger changes with its lift, {lightest:.5g}..."
-                         f"{heaviest:.5g} g over the table, with the velocity-squared force (1/2) dm/dv v_dot^2 of the "
-                         "variable ratio (Lagrange's equation, Norton (2009))")
+            notes.insert(2, NoteText(note("dynamics.finger_node_mass", lightest_g=lightest, heaviest_g=heaviest)))
     rate, preload, spring_note = train_spring(dyn, valve, law, line, mass, cam_speed, at)
     notes.append(spring_note)
-    notes.append(f"lash {lash / MM:.4g} mm at the valve: the clearance the ramp takes up times the rocker ratio"
+    notes.append(NoteText(note("dynamics.lash", lash_mm=lash / MM))
                  if valve.lash_adjuster is None or law.ramp_height == 0.0 else
-                 f"no lash: the lash adjuster's quieting ramp of {law.ramp_height / MM:.4g} mm lifts the valve")
+                 NoteText(note("dynamics.no_lash", ramp_mm=law.ramp_height / MM)))
     kw = dict(damping_ratio=dyn.damping_ratio, seat_stiffness=dyn.seat_stiffness,
               seat_damping_ratio=dyn.seat_damping_ratio)
     nodes = None
@@ -609,8 +602,9 @@ def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, 
     notes = list(params.estimates)
     low, high = swept_range(dyn, engine)
     if dyn.speed_range is None:
-        notes.append(f"speed range {low / rpm_to_rad_s(1.0):.0f}-{high / rpm_to_rad_s(1.0):.0f} rpm: "
-                     f"{SPEED_RANGE[0]:.0%} to {SPEED_RANGE[1]:.0%} of the rated speed (idle to over-speed)")
+        notes.append(NoteText(note("dynamics.speed_range", low_rpm=low / rpm_to_rad_s(1.0),
+                                   high_rpm=high / rpm_to_rad_s(1.0), low_share=SPEED_RANGE[0],
+                                   high_share=SPEED_RANGE[1])))
     params = replace(params, estimates=tuple(notes))
     speeds = np.linspace(low, high, dyn.speeds)
     step_deg = dyn.step / DEG

@@ -11,6 +11,7 @@ from ..checks import Check, check
 from ..dynamics.events import BOUNCE_TOLERANCE
 from ..dynamics.models import slowest_decay
 from ..dynamics.sweep import STATE_TOLERANCE
+from ..locale import NoteText, note
 from ..units import MM, rpm_to_rad_s, to_display
 
 CHECK_SOURCE = "Shang Hanji (1988), ch. 3"
@@ -24,7 +25,7 @@ SETTLE_FROM = 1e-3
 repetition's tolerance (:data:`~valvetrain.dynamics.sweep.STATE_TOLERANCE`)."""
 
 
-def unsettled_note(result, speeds, network, revolutions, adjuster=False) -> Optional[str]:
+def unsettled_note(result, speeds, network, revolutions, adjuster=False) -> Optional[NoteText]:
     """Why the speeds of a sweep whose motion did not repeat within ``revolutions`` did not; None where every speed
     repeated.
 
@@ -42,8 +43,8 @@ def unsettled_note(result, speeds, network, revolutions, adjuster=False) -> Opti
 
     Returns
     -------
-    str or None
-        How many speeds and their range, and the reasons: at the speeds whose follower separates or whose valve
+    NoteText or None
+        How many speeds and their range, and the reasons (codes of ``[notes]``, its English the record's text): at the speeds whose follower separates or whose valve
         bounces, a motion that need not repeat; at the others the lash adjuster's plunger (a slow state), or the
         slowest vibration of the train between the lifts (:func:`~valvetrain.dynamics.models.slowest_decay`, the
         clearance open, the valve on its seat): its decay exp(-sigma T) a revolution of T seconds at the highest of
@@ -58,39 +59,34 @@ def unsettled_note(result, speeds, network, revolutions, adjuster=False) -> Opti
     events = result.events
     moving = bad & (events.jumped | (events.bounce_count > 0))
     rest = bad & ~moving
-    span = f"{rpm[bad].min():.0f}" + (f" to {rpm[bad].max():.0f}" if np.ptp(rpm[bad]) > 0.0 else "")
-    parts = [f"{np.count_nonzero(bad)} of {bad.size} speeds, {span} rpm, did not repeat within {revolutions} "
-             "revolutions"]
+    counts = {"count": np.count_nonzero(bad), "speeds": bad.size, "revolutions": revolutions}
+    if np.ptp(rpm[bad]) > 0.0:
+        parts = note("dynamics.unsettled_range", low_rpm=rpm[bad].min(), high_rpm=rpm[bad].max(), **counts)
+    else:
+        parts = note("dynamics.unsettled_at", speed_rpm=rpm[bad].min(), **counts)
     if moving.any():
-        parts.append(f"at {np.count_nonzero(moving)} of them the follower separates or the valve bounces (a motion "
-                     "that need not repeat)")
+        parts += note("dynamics.unsettled_moving", count=np.count_nonzero(moving))
     if rest.any() and adjuster:
-        parts.append(f"at {np.count_nonzero(rest)} the lash adjuster's plunger still moves from one revolution to the "
-                     "next")
+        parts += note("dynamics.unsettled_adjuster", count=np.count_nonzero(rest))
     elif rest.any():
         omega, sigma = slowest_decay(network, opened=("cam contact",) if network.lash > 0.0 else ())
         decay = sigma * 2.0 * np.pi / result.cam_speeds[rest].max()
         if sigma <= 1e-9 * omega:       # a damping ratio below the eigenvalues' rounding: no damper acts on it
-            parts.append(f"at {np.count_nonzero(rest)} the slowest vibration of the train, {omega / (2 * np.pi):.0f} "
-                         "Hz, is undamped between the lifts (no damping acts on it with the valve on its seat): it "
-                         "does not decay")
+            parts += note("dynamics.unsettled_undamped", count=np.count_nonzero(rest),
+                          frequency_Hz=omega / (2 * np.pi))
         else:
-            parts.append(f"at {np.count_nonzero(rest)} the slowest vibration of the train, {omega / (2 * np.pi):.0f} "
-                         f"Hz, decays by a factor {np.exp(-decay):.2g} a revolution at {rpm[rest].max():.0f} rpm: "
-                         f"about {np.log(SETTLE_FROM / STATE_TOLERANCE) / decay:.0f} revolutions from "
-                         f"{SETTLE_FROM / MM:g} mm to the repetition's {STATE_TOLERANCE * 1e9:g} nm")
-    return "; ".join(parts)
+            parts += note("dynamics.unsettled_decay", count=np.count_nonzero(rest), frequency_Hz=omega / (2 * np.pi),
+                          factor=np.exp(-decay), speed_rpm=rpm[rest].max(),
+                          settle_revolutions=np.log(SETTLE_FROM / STATE_TOLERANCE) / decay, from_mm=SETTLE_FROM / MM,
+                          tolerance_nm=STATE_TOLERANCE * 1e9)
+    return NoteText(parts)
 
 
 CHECK_CODES = ("dynamics.seating_velocity", "dynamics.jump_speed", "dynamics.valve_opens")
 """The codes of the dynamics checks."""
 
-CLOSED = "the valve does not leave its seat at the rated speed"
+CLOSED = NoteText(note("dynamics.closed"))
 """Why the seating velocity of a valve that stays on its seat cannot be had."""
-
-SEATING_NOTE = "the largest of the rated speed and the speeds swept below it: "
-"""What the seating velocity check grades, before the speed where it is largest (its note)."""
-
 
 def worst_seating(d, engine) -> tuple[float, float]:
     """The largest |seating velocity| [m/s] of the rated speed and of the speeds swept up to it, and its engine speed
@@ -123,18 +119,21 @@ def dynamics_checks(d, engine, adjuster_ratio=0.0) -> list[Check]:
     """
     top = d.speed_range[1]
     jump = d.jump_speed if np.isfinite(d.jump_speed) else top
-    note = "" if np.isfinite(d.jump_speed) else (f"no separation up to the top of the range swept, "
-                                                  f"{to_display(top, 'rpm'):.0f} rpm")
+    no_jump = "" if np.isfinite(d.jump_speed) else note("dynamics.no_separation", speed_rpm=to_display(top, "rpm"))
     opened = float(d.rated.lift.max()) > BOUNCE_TOLERANCE
     seating, where = worst_seating(d, engine)
-    at = "" if not np.isfinite(where) else SEATING_NOTE + (
-        f"at {to_display(where, 'rpm'):.0f} rpm; {abs(d.at_rated_speed.seating_velocity):.3g} m/s at the rated speed"
-        if where < engine.rated_speed * (1 - 1e-9) else "at the rated speed")
+    if not np.isfinite(where):
+        at = ""
+    elif where < engine.rated_speed * (1 - 1e-9):
+        at = note("dynamics.seating_largest_at", speed_rpm=to_display(where, "rpm")) + note(
+            "dynamics.seating_at_rated", velocity_m_s=abs(d.at_rated_speed.seating_velocity))
+    else:
+        at = note("dynamics.seating_largest_at_rated")
     return [check(CHECK_CODES[0], seating, high=SEATING_VELOCITY_MAX, unit="m/s", note=at,
                   source=CHECK_SOURCE + "; 0.3-0.5 m/s usual, graded at every speed swept up to the rated one",
                   unevaluated="" if opened else CLOSED),
             check(CHECK_CODES[1], jump / engine.rated_speed, low=engine.over_speed_ratio, severity="failure",
-                  note=note, source=CHECK_SOURCE + ": no separation below [engine] over_speed_ratio x the rated "
+                  note=no_jump, source=CHECK_SOURCE + ": no separation below [engine] over_speed_ratio x the rated "
                   "speed")] + opening_check(d, adjuster_ratio)
 
 
@@ -165,18 +164,15 @@ def opening_check(d, adjuster_ratio=0.0) -> list[Check]:
         return []
     p = d.parameters
     rigid = float(d.sweep.kinematic_lift.max())
-    reasons = [f"at {to_display(d.per_speed.speed[worst], 'rpm'):.0f} rpm the cam lifts the valve by {rigid / MM:.4g} "
-               f"mm without its drive's compliance"]
+    reasons = note("dynamics.rigid_lift", speed_rpm=to_display(d.per_speed.speed[worst], "rpm"), lift_mm=rigid / MM)
+    deflection_mm = p.preload / p.drive_stiffness / MM
     if p.preload / p.drive_stiffness >= rigid:
-        reasons.append(f"the drive deflects F0 / c = {p.preload / p.drive_stiffness / MM:.4g} mm under the spring "
-                       f"preload {p.preload:.4g} N")
+        reasons += note("dynamics.preload_deflection", deflection_mm=deflection_mm, preload_N=p.preload)
     elif adjuster_ratio > 0.0:
         travel = adjuster_ratio * float(np.ptp(d.sweep.adjuster_extension[worst]))
-        reasons.append(f"the drive deflects F0 / c = {p.preload / p.drive_stiffness / MM:.4g} mm under the spring "
-                       f"preload at most, the rest is the lash adjuster's plunger giving way (its leak-down; it "
-                       f"travels {travel / MM:.4g} mm at the valve over the revolution)")
+        reasons += note("dynamics.adjuster_gives_way", deflection_mm=deflection_mm, travel_mm=travel / MM)
     return [check(CHECK_CODES[2], float(lifts[worst]), low=BOUNCE_TOLERANCE, unit="mm", severity="failure",
-                  note="; ".join(reasons), source=CHECK_SOURCE + ": a valve that leaves its seat by less than 0.001 mm "
+                  note=reasons, source=CHECK_SOURCE + ": a valve that leaves its seat by less than 0.001 mm "
                   "rocks on the seat's elasticity")]
 
 

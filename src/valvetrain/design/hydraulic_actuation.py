@@ -24,7 +24,7 @@ from typing import Any, Callable, Optional
 import numpy as np
 
 from ..checks import Check, check
-from ..locale import note
+from ..locale import NoteText, note
 from ..crank.pressure import on_grid
 from ..dynamics.events import BOUNCE_TOLERANCE
 from ..errors import InputError
@@ -253,17 +253,18 @@ def head_load(valve, gas) -> tuple[float, float]:
 
 
 def speed_plan(hydraulic, engine) -> tuple[float, np.ndarray, list[str]]:
-    """The engine speeds of the stage [rad/s]: (simulated speed, swept speeds, notes on the defaults taken)."""
+    """The engine speeds of the stage [rad/s]: (simulated speed, swept speeds, notes on the defaults taken, each a
+    :class:`~valvetrain.locale.NoteText`)."""
     rpm = rpm_to_rad_s(1.0)
     notes = []
     speed = engine.rated_speed if hydraulic.speed is None else hydraulic.speed
     if hydraulic.speed is None:
-        notes.append(f"engine speed of the simulation {speed / rpm:.0f} rpm: the rated speed")
+        notes.append(NoteText(note("hydraulic.rated_speed", speed_rpm=speed / rpm)))
     if hydraulic.speed_range is None:
         top = engine.over_speed_ratio
         low, high = LOWEST_SPEED * engine.rated_speed, top * engine.rated_speed
-        notes.append(f"speed range {low / rpm:.0f}-{high / rpm:.0f} rpm: {LOWEST_SPEED:.0%} to {top:.0%} of the rated "
-                     "speed")
+        notes.append(NoteText(note("hydraulic.speed_range", low_rpm=low / rpm, high_rpm=high / rpm,
+                                   low_share=LOWEST_SPEED, high_share=top)))
     else:
         low, high = hydraulic.speed_range
     return speed, np.linspace(low, high, hydraulic.speeds), notes
@@ -320,8 +321,8 @@ def hydraulic_stage(valve, law, engine, gas, name, nose, cylinder=None) -> tuple
     rigid = float(np.max(law.lift(np.linspace(law.start, law.end, 2001)))) * drive.area_ratio
     margin = STOP_MARGIN * rigid if hydraulic.stop_margin is None else hydraulic.stop_margin
     if hydraulic.stop_margin is None:
-        notes.append(f"valve stop {to_display(rigid + margin, 'mm'):.4g} mm: {STOP_MARGIN:.0%} above the rigid "
-                     "drive's largest lift")
+        notes.append(NoteText(note("hydraulic.valve_stop", stop_mm=to_display(rigid + margin, "mm"),
+                                   margin=STOP_MARGIN)))
     drive = replace(drive, valve=replace(drive.valve, stop=rigid + margin))
     to_cam = cam_per_crank(engine.strokes)
     revolutions = np.concatenate([speeds, [speed] * (1 if cylinder is None else 2)]) * to_cam
@@ -342,8 +343,7 @@ def hydraulic_stage(valve, law, engine, gas, name, nose, cylinder=None) -> tuple
     diameter, port = head_load(valve, gas)
     force = gas_force(valve, gas, engine, nose, cylinder)
     if cylinder is None:
-        notes.append("no gas force on the valve head: the specification gives no engine cycle ([crank] with its "
-                     "pressure_file or [crank.cycle])")
+        notes.append(NoteText(note("hydraulic.no_gas_force")))
     r = simulate(law, drive, speed * to_cam, gas_force=force)
     sw = speed_sweep(law, drive, speeds * to_cam, DELAY_LEVEL, gas_force=force)
     opening, closing = r.delays(DELAY_LEVEL)

@@ -32,7 +32,8 @@ make it with ``checks.check("domain.quantity", value, low, high, source=..., uni
 code its texts with ``PYTHONPATH=src python tools/check_codes.py add CODE "record text" "English name" "Russian
 name"`` (or edit the files by hand and run ``tools/check_codes.py``, which rewrites docs/checks.md).  A text made with
 numbers is a code of ``[notes]`` with its numbers as parameters (``{speed_rpm:.0f}``: the format of the number,
-the same in every language); the texts of the stages not yet made so are translated by their skeleton (``ru.toml``
+the same in every language); a record's text made so is a :class:`NoteText` (its English,
+keeping its parts); the texts of the stages not yet made so are translated by their skeleton (``ru.toml``
 ``[texts]``, the English with ``{}`` for each number).  :mod:`.wording` words the data the physics returns (the spring diagnosis, a measured
 table's fit reason) in every language.
 
@@ -200,6 +201,27 @@ def note_text(parts, lang="en", join="; ") -> str:
     formatter = _Numbers(lang)
     said = (formatter.format(_template("notes", code, lang), **dict(params)) for code, params in parts)
     return join.join(text for text in said if text)
+
+
+class NoteText(str):
+    """A note as the text of a result record: its English (what ``results.json`` and the console write, a plain text
+    to them) that keeps its parts (:func:`note`), from which the report renders it in its language
+    (:func:`valvetrain.report.names.translate`).
+
+    >>> said = NoteText(note("hydraulic.largest_at", speed_rpm=7012.4))
+    >>> said, note_text(said.parts, "ru")
+    ('largest at 7012 rpm', 'наибольший при 7012 мин⁻¹')
+    """
+
+    parts: Note
+
+    def __new__(cls, parts):
+        text = super().__new__(cls, note_text(parts))
+        text.parts = tuple(parts)
+        return text
+
+    def __reduce__(self):
+        return NoteText, (self.parts,)
 
 
 def verdict(counts, lang="en") -> tuple[str, str]:

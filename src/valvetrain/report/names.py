@@ -9,8 +9,8 @@ The records of a design (``results.json``, the specification, the CSV headers) k
 symbol from the one unit table :data:`valvetrain.units.UNITS`.  The names of the checks are not here: they are
 renderings of their codes from the catalogue :mod:`valvetrain.locale`.
 
-Texts made with numbers (the notes of the checks, the cylinder-pressure model) are translated by their
-skeleton: the numbers are taken out, the Russian skeleton is looked up in the catalogue (``ru.toml`` ``[texts]``
+A note of a record (:class:`~valvetrain.locale.NoteText`) is rendered in the language from its codes; the other
+texts made with numbers (the sources of the engine's checks) are translated by their skeleton: the numbers are taken out, the Russian skeleton is looked up in the catalogue (``ru.toml`` ``[texts]``
 of :mod:`valvetrain.locale`) and the numbers put back (:func:`translate`).  A key, a value or a text without a Russian entry is shown as it is (in English):
 ``tests/report/test_i18n.py`` finds them.
 
@@ -20,7 +20,7 @@ Symbols: one symbol for one quantity throughout the report and the plots: ``h`` 
 
 import re
 
-from ..locale import LANGS, catalogue, check_text, record_text, spring_text
+from ..locale import LANGS, NoteText, catalogue, check_text, note_text, record_text, spring_text
 from ..units import SUFFIXES, symbol as unit_text
 
 NAMES = {key: tuple({**catalogue(lang)["names"], **catalogue(lang)["stage_names"]}[key] for lang in LANGS)
@@ -122,9 +122,12 @@ def link_names(names, lang) -> str:
 def translate(text, lang) -> str:
     """A text made with numbers in ``lang`` by its skeleton (the catalogue's ``[texts]``); as it is without one.  A text that
     starts with drive links (``"pushrod: ..."``, :func:`link_names`) has them translated and the rest by its skeleton; a
-    text of parts joined by ``"; "`` without a skeleton of its own, part by part (the longest head with one first)."""
+    text of parts joined by ``"; "`` without a skeleton of its own, part by part (the longest head with one first).  A
+    note of a record (:class:`~valvetrain.locale.NoteText`) is rendered from its parts."""
     if lang == "en" or not text:
         return text
+    if isinstance(text, NoteText):
+        return note_text(text.parts, lang)
     head, sep, rest = text.partition(": ")
     if sep and all(name in catalogue(lang).get("links", {}) for name in head.split(", ")):
         return f"{link_names(head.split(', '), lang)}: {translate(rest, lang)}"
