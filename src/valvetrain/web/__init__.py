@@ -32,9 +32,9 @@ def make_document(text, source_dir) -> Callable[[Any], None]:
 
 
 def one_message(connection, event) -> Any:
-    """Bokeh's ``ServerConnection.send_patch_document`` sending the changes of a callback to the page in one message:
-    each change is queued and the first of the writes that the server awaits after the callback sends all that
-    are queued (the rest find the queue empty).
+    """Bokeh's ``ServerConnection.send_patch_document`` sending the changes of a callback to the page in one message
+    of three web-socket frames: each change is queued and the first of the writes that the server awaits after the
+    callback sends all that are queued (the rest find the queue empty), their arrays within the message's text.
 
     Notes
     -----
@@ -42,17 +42,50 @@ def one_message(connection, event) -> Any:
     the checks, the card, the stamp ...), each as four or more frames of the web socket, each waking the page; the
     page applies one message's changes in order, as it did the messages'.  The values are those the models hold
     when the message is made, after the callback: its last, as the last message would have brought.
+
+    Bokeh sends each array of a message as two frames of its own (its reference, then its bytes): a redraw of the
+    curves was 61 frames, each written and awaited in turn by the server's event loop (61 turns of the loop, each
+    a wait for the interpreter's lock while the design's and the sweep's threads run) and received as a task of
+    its own by the page.  Here the arrays are base64 text within the message (a third more bytes: 26 kB of curves
+    become 35 kB), as Bokeh sends a standalone document's, and the message is its three frames, handed to the
+    socket together (Bokeh awaits each before the next: the next tick's callbacks ran between them).
     """
+    from tornado.websocket import WebSocketClosedError, WebSocketHandler
+
     queue = connection.__dict__.setdefault("_queued_changes", [])
     queue.append(event)
 
     async def send():
-        if queue:
-            events = list(queue)
-            queue.clear()
-            await connection._socket.send_message(connection.protocol.create("PATCH-DOC", events))
+        if not queue:
+            return
+        events = list(queue)
+        queue.clear()
+        message, socket = _patch(events), connection._socket
+        try:
+            async with socket.write_lock:             # Bokeh's lock of the socket's messages
+                # the frames handed to the socket in this turn of the loop, then awaited: a callback of the next
+                # tick (a drag's design, whose threads take the interpreter's lock) starts after they have gone
+                written = [WebSocketHandler.write_message(socket, text)
+                           for text in (message.header_json, message.metadata_json, message.content_json)]
+                for done in written:
+                    await done
+        except WebSocketClosedError:
+            return                                    # the page has gone: its session closes
 
     return send()
+
+
+def _patch(events) -> Any:
+    """A ``PATCH-DOC`` message of ``events`` (of one document) with its arrays inline, no buffers: Bokeh's
+    ``patch_doc.create`` with a serializer that does not defer its bytes."""
+    from bokeh.core.serialization import Serializer
+    from bokeh.protocol.messages.patch_doc import PatchJson, patch_doc
+
+    doc = events[0].document
+    serializer = Serializer(references=doc.models.synced_references, deferred=False)
+    content = PatchJson(events=serializer.encode(events))
+    doc.models.flush_synced(lambda model: not serializer.has_ref(model))
+    return patch_doc(patch_doc.create_header(), {}, content)
 
 
 def server(text=None, source_dir=None, host=LOOPBACK, port=5006) -> Any:
