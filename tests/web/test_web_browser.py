@@ -524,6 +524,13 @@ def test_overlay_units_speed_and_reload(designer):
 
 def test_drag_of_a_peak_raises_the_acceleration_and_changes_the_checks(page, diesel_url):
     page = opened(page, diesel_url)
+    # issue 40: the spring plot's range hid the diesel's chosen spring's line; the page's ranges hold it
+    curves = model_data(page, "curves")
+    for axis, column in (("x", "spring_line_x"), ("y", "spring_line_y")):
+        line = [v for v in curves[column] if v == v]
+        start, end = page.evaluate(f"() => {{ const r = Bokeh.documents[0].get_model_by_name('plot-spring')"
+                                   f".{axis}_range; return [r.start, r.end]; }}")
+        assert line and start <= min(line) and max(line) <= end, column
     before = model_data(page, "checks")["value"]
     handles = model_data(page, "handles-acceleration")
     i = handles["name"].index("peak")
