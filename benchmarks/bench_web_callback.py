@@ -12,7 +12,6 @@ is (the wall time of the whole redraw is ``bench_web.py``'s).
 """
 
 import argparse
-from functools import partial
 import statistics
 import time
 
@@ -33,8 +32,6 @@ def main(drags=20):
     # the changes Bokeh's server sends (not the callbacks added to the document, e.g. the release's next tick)
     designer.doc.on_change(lambda e: events.append(e) if isinstance(e, DocumentPatchedEvent) else None)
     batched = hasattr(web, "one_message")
-    # the message as the tree makes it: its arrays inline where it sends them so (web._patch), else as buffers
-    make = getattr(web, "_patch", partial(protocol.create, "PATCH-DOC"))
 
     live = hasattr(designer, "on_request")
 
@@ -51,7 +48,7 @@ def main(drags=20):
         start = time.process_time()
         call(kind, y, number)
         for batch in [events] if batched else [[e] for e in events]:
-            make(batch)
+            protocol.create("PATCH-DOC", batch)
         return 1e3 * (time.process_time() - start)
 
     def drag(number):

@@ -244,13 +244,11 @@ def test_a_style_sheet_set_to_the_text_it_holds_is_left_as_it_is(designer):
 
 def test_a_redraw_comes_to_the_page_in_one_message(page, url):
     # Bokeh's server sent a message per changed model, four or more frames of the web socket each: the curves (the
-    # velocity at the rated speed), the checks and the stamp of a redraw come in one (the stamp is its last change),
-    # of three frames.
+    # velocity at the rated speed), the checks and the stamp of a redraw come in one (the stamp is its last change).
     # An edit of the rated speed changes all three (a drag's release changes no curve when its last move drew them)
     contents = []
     page.on("websocket", lambda ws: ws.on("framereceived", lambda frame: contents.append(frame)))
     opened(page, url)
-    contents.clear()
     ids = page.evaluate("""() => ['curves', 'checks', 'kinematic-stamp'].map((name) => {
         const m = Bokeh.documents[0].get_model_by_name(name);
         return (m.source || m).id;
@@ -261,9 +259,6 @@ def test_a_redraw_comes_to_the_page_in_one_message(page, url):
                            f" return (s instanceof Map ? s.get('n') : s.n)[0] > {n}; }}", timeout=WAIT_MS)
     stamped = [c for c in contents if isinstance(c, str) and f'"id":"{ids[-1]}"' in c and '"events"' in c]
     assert stamped and all(f'"id":"{i}"' in stamped[-1] for i in ids)
-    # its arrays within the message's text: three frames, none binary (Bokeh sent each array as two frames of its
-    # own, 61 frames for a redraw of the curves, each a turn of the server's loop and a task of the page)
-    assert [c for c in contents if not isinstance(c, str)] == []
 
 
 def test_rated_speed_flips_a_check(page, appendix_url):
