@@ -49,8 +49,9 @@ def one_message(connection, event) -> Any:
     curves is 61.  Bokeh writes each and awaits it before the next (``Message.send``), a turn of the event loop
     each, and the callbacks of the next tick ran between them: a drag's release started its design's and its
     sweep's threads after the first frame.  Here the frames are written at once, then awaited: those callbacks
-    run after the message has gone.  (Its arrays as base64 within the text, three frames in all, cost the server
-    30 ms to make the sweep panel's message of 0.7 MB, against 1 ms.)
+    run after the message has gone.  Its small arrays go within its text (:func:`_inline`): a release's redraw is
+    three frames, not 61, which the page received as 61 tasks over up to 70 ms at a load of 5-7 (a frame's arrival
+    in the page logged against the server's write).
     """
     from tornado.websocket import WebSocketClosedError, WebSocketHandler
 
@@ -62,7 +63,7 @@ def one_message(connection, event) -> Any:
             return
         events = list(queue)
         queue.clear()
-        message, socket = connection.protocol.create("PATCH-DOC", events), connection._socket
+        message, socket = _inline(connection.protocol.create("PATCH-DOC", events)), connection._socket
         frames = [(message.header_json, False), (message.metadata_json, False), (message.content_json, False)]
         for buffer in message.buffers:
             frames += [(json.dumps(buffer.ref), False), (buffer.to_bytes(), True)]
@@ -75,6 +76,38 @@ def one_message(connection, event) -> Any:
             return                                    # the page has gone: its session closes
 
     return send()
+
+
+INLINE_BYTES = 16384
+"""The largest array sent within a message's text (base64, a third more bytes), not as frames of its own: a curve of
+the designer is 1-2 kB, the sweep panel's lift-error map 331 kB (base64 of it cost the server 15-30 ms)."""
+
+
+def _inline(message) -> Any:
+    """``message`` (a ``PATCH-DOC`` message as Bokeh makes it) with its buffers of at most :data:`INLINE_BYTES` in its
+    content as base64 text (as Bokeh's serializer writes them when it does not defer its bytes), the larger ones kept
+    as buffers."""
+    from bokeh.core.serialization import Buffer
+    from bokeh.protocol.messages.patch_doc import patch_doc
+
+    small = {id(b) for b in message.buffers if len(b.to_bytes()) <= INLINE_BYTES}
+    if not small:
+        return message
+
+    def inlined(value):
+        if isinstance(value, Buffer):
+            return value.to_base64() if id(value) in small else value
+        if isinstance(value, dict):
+            return {k: inlined(v) for k, v in value.items()}
+        if isinstance(value, (list, tuple)):
+            return [inlined(v) for v in value]
+        return value
+
+    out = patch_doc(patch_doc.create_header(), message.metadata, inlined(message.content))
+    large = [b for b in message.buffers if id(b) not in small]
+    if large:
+        out.add_buffers(*large)
+    return out
 
 
 def server(text=None, source_dir=None, host=LOOPBACK, port=5006) -> Any:
