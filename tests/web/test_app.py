@@ -325,6 +325,8 @@ def test_a_message_goes_to_the_socket_in_one_turn_of_the_loop():
 
     from valvetrain.web import one_message
 
+    nodelay = []
+
     async def sent():
         loop, written = asyncio.get_running_loop(), []
 
@@ -333,7 +335,8 @@ def test_a_message_goes_to_the_socket_in_one_turn_of_the_loop():
             return written[-1][2]
 
         socket = SimpleNamespace(write_lock=Lock(), ws_connection=SimpleNamespace(is_closing=lambda: False,
-                                                                                  write_message=write))
+                                                                                  write_message=write),
+                                 set_nodelay=nodelay.append)
         doc, source, events = Document(), ColumnDataSource({"x": np.zeros(3), "y": np.zeros(3), "z": np.zeros(3)}), []
         doc.add_root(source)
         doc.on_change(events.append)
@@ -350,3 +353,5 @@ def test_a_message_goes_to_the_socket_in_one_turn_of_the_loop():
     first_turn, binary, content = asyncio.run(sent())
     assert binary == [False] * 3 + [False, True] * 2 and first_turn == len(binary)
     assert content.count('"data":{"id"') == 2 and content.count('"data":"H4sI') == 1   # gzip, base64
+    # sent at once (TCP_NODELAY): Nagle's algorithm held a frame after a small one for the page's delayed ACK
+    assert set(nodelay) == {True}

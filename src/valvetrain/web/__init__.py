@@ -51,7 +51,10 @@ def one_message(connection, event) -> Any:
     sweep's threads after the first frame.  Here the frames are written at once, then awaited: those callbacks
     run after the message has gone.  Its small arrays go within its text (:func:`_inline`): a release's redraw is
     three frames, not 61, which the page received as 61 tasks over up to 70 ms at a load of 5-7 (a frame's arrival
-    in the page logged against the server's write).
+    in the page logged against the server's write).  The socket sends at once (TCP_NODELAY): Bokeh and Tornado leave
+    Nagle's algorithm on, which held a frame written after a small one (Bokeh's OK to the page's request) until the
+    page's TCP stack acknowledged that one, a delayed ACK of up to 40 ms: the page had a release's redraw 50-75 ms
+    after the server wrote it at a load of 2-4, idle or not.
     """
     from tornado.websocket import WebSocketClosedError, WebSocketHandler
 
@@ -68,7 +71,8 @@ def one_message(connection, event) -> Any:
         for buffer in message.buffers:
             frames += [(json.dumps(buffer.ref), False), (buffer.to_bytes(), True)]
         try:
-            async with socket.write_lock:             # Bokeh's lock of the socket's messages
+            socket.set_nodelay(True)                  # each frame sent at once: Nagle's algorithm held it for the
+            async with socket.write_lock:             # page's delayed ACK (40 ms); Bokeh's lock of the messages
                 written = [WebSocketHandler.write_message(socket, frame, binary) for frame, binary in frames]
                 for done in written:
                     await done
