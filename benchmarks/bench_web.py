@@ -3,8 +3,10 @@
 release drew its checks and panel with them), to the painted frame of the redrawn checks, card and panel
 (``window.vtChecksTimes``, the design's second answer) and to the painted frame of the redrawn sweep panel
 (``window.vtSweepTimes``); while the pointer moves, a move sent to the painted frame
-of the curves it brought (``window.vtMoveTimes``).  "Painted" is the second animation frame after the update arrived
-(the frame that shows it).
+of the curves it brought (``window.vtMoveTimes``).  "Painted" is the end of the frame that shows the update (the page's
+probe, ``valvetrain.web.draw.STAMP_JS``: the first frame after the update arrived in which the plots it changed were
+painted, its main thread's work done); the script also times, in every tree's page alike, the second animation frame
+after the curves' stamp came (the probe of the trees before 2026-12-02, a frame later than the one that shows it).
 
 Run on demand: ``python benchmarks/bench_web.py [drags]`` (default 20) with `valvetrain serve` started by the script
 on a free port of 127.0.0.1 and Debian's chromium (headless) driven by Playwright in a 1400 x 900 window, both on this
@@ -55,6 +57,21 @@ PIXELS = """() => {
 }"""
 
 COUNTS = "() => [(window.vtTimes || []).length, (window.vtSweepTimes || []).length]"
+
+TWO_FRAMES = """() => {
+    const stamp = Bokeh.documents[0].get_model_by_name('kinematic-stamp');
+    window.benchTwoFrames = [];
+    stamp.connect(stamp.properties.data.change, () => {
+        const data = stamp.data instanceof Map ? Object.fromEntries(stamp.data) : stamp.data;
+        if (window.vt && window.vtRelease !== undefined && data.seq[0] === window.vt.release) {
+            const release = window.vtRelease;
+            requestAnimationFrame(() => requestAnimationFrame(() => {
+                window.benchTwoFrames.push(performance.now() - release);
+            }));
+        }
+    });
+}"""
+"""The same measure in every tree's page: the release to the second animation frame after the curves' stamp came."""
 
 TRACED = 3
 """Drags per tree traced after the timed ones (chromium's timeline): the page's processor time of a release."""
@@ -111,6 +128,7 @@ def opened(browser, url):
     live = page.evaluate("() => window.vt !== undefined")
     if live:
         page.wait_for_function("() => (window.vtSweepTimesDone || 0) > 0", timeout=120_000)
+    page.evaluate(TWO_FRAMES)
     return page, live
 
 
@@ -148,7 +166,7 @@ def median(values, unit="ms"):
 
 def summary(name, times):
     """The medians of one tree's redraws: release -> redrawn, the arrival, the split, the sweep panel, the moves."""
-    kinematic, sweep, arrived, server, moves, checks = times
+    kinematic, sweep, arrived, server, moves, checks, two_frames = times
     up, callback, down, *processor = (statistics.median(s) for s in zip(*server))
     drawing = statistics.median(k - a for k, a in zip(kinematic, arrived))
     return (f"{name}:\n"
@@ -156,6 +174,7 @@ def summary(name, times):
             f"arrived after {statistics.median(arrived):.0f}; way up / server's callback / way down / drawing: "
             f"{up:.0f} / {callback:.0f} / {down:.0f} / {drawing:.0f} ms; the server's processor time "
             f"{' '.join(f'{v:.0f} ms' for v in processor) or 'not sent'}\n"
+            f"  release -> the second animation frame after the curves came (every tree alike): {median(two_frames)}\n"
             f"  release -> checks, card and panel painted: "
             f"{median(checks) if checks else 'with the curves (one answer)'}\n"
             f"  release -> sweep panel painted: {median(sweep)} (target <= 500 ms)\n"
@@ -175,7 +194,8 @@ def main(drags=20, baseline=None):
                 for page, live in pages.values():          # alternating: each tree's drags in the same minutes
                     drag(page, live, number + 1)
             times = {name: page.evaluate("() => [window.vtTimes, window.vtSweepTimes, window.vtTimesArrived, "
-                                         "window.vtTimesServer, window.vtMoveTimes, window.vtChecksTimes]")
+                                         "window.vtTimesServer, window.vtMoveTimes, window.vtChecksTimes, "
+                                         "window.benchTwoFrames]")
                      for name, (page, _) in pages.items()}
             cpu = {name: [drag(page, live, drags + k + 1, browser) for k in range(TRACED)]
                    for name, (page, live) in pages.items()}

@@ -16,6 +16,7 @@ import statistics
 import time
 
 from bokeh.document import Document
+from bokeh.document.events import DocumentPatchedEvent
 from bokeh.protocol import Protocol
 
 import valvetrain
@@ -28,7 +29,8 @@ def main(drags=20):
     designer = Designer(Document(), Session.start())
     designer.start_sweep = lambda: None          # the sweep: in a worker thread, after the page has drawn
     protocol, events = Protocol(), []
-    designer.doc.on_change(events.append)
+    # the changes Bokeh's server sends (not the callbacks added to the document, e.g. the release's next tick)
+    designer.doc.on_change(lambda e: events.append(e) if isinstance(e, DocumentPatchedEvent) else None)
     batched = hasattr(web, "one_message")
 
     live = hasattr(designer, "on_request")

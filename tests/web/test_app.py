@@ -328,3 +328,50 @@ def test_a_release_where_the_pointer_last_moved_paints_nothing_again():
     assert d.kinematic_stamp.data["seq"] == [2] and d.kinematic_stamp.data["changed"] == [0]
     d.finish_edit()                                       # the design kept: its checks, its spring drawn
     assert d.kinematic_stamp.data["changed"] == [1]
+
+
+def test_a_message_goes_to_the_socket_in_one_turn_of_the_loop():
+    # Bokeh's Message.send wrote each frame of a message and awaited it before the next, a turn of the event loop
+    # each: the next tick's callbacks (a release's design and sweep threads) ran between the 61 frames of its redraw.
+    # Every frame of the message is handed to the socket before the first turn: three, and two for each array larger
+    # than INLINE_BYTES (a small one goes within the text: 61 frames were 61 tasks of the page)
+    import asyncio
+    from types import SimpleNamespace
+
+    from bokeh.document import Document
+    from bokeh.models import ColumnDataSource
+    from bokeh.protocol import Protocol
+    from tornado.locks import Lock
+
+    from valvetrain.web import one_message
+
+    nodelay = []
+
+    async def sent():
+        loop, written = asyncio.get_running_loop(), []
+
+        def write(message, binary=False):
+            written.append((message, binary, loop.create_future()))
+            return written[-1][2]
+
+        socket = SimpleNamespace(write_lock=Lock(), ws_connection=SimpleNamespace(is_closing=lambda: False,
+                                                                                  write_message=write),
+                                 set_nodelay=nodelay.append)
+        doc, source, events = Document(), ColumnDataSource({"x": np.zeros(3), "y": np.zeros(3), "z": np.zeros(3)}), []
+        doc.add_root(source)
+        doc.on_change(events.append)
+        source.data = {"x": np.arange(3000.0), "y": np.arange(3000.0) % 7.0,    # 24 kB each: frames of their own
+                       "z": np.arange(3000.0).astype(np.float32)}         # 12 kB: within the text
+        send = asyncio.ensure_future(one_message(SimpleNamespace(protocol=Protocol(), _socket=socket), events[0]))
+        await asyncio.sleep(0)                       # one turn of the loop
+        first_turn = len(written)
+        for *_, done in written:
+            done.set_result(None)
+        await send
+        return first_turn, [binary for _, binary, _ in written], written[2][0]
+
+    first_turn, binary, content = asyncio.run(sent())
+    assert binary == [False] * 3 + [False, True] * 2 and first_turn == len(binary)
+    assert content.count('"data":{"id"') == 2 and content.count('"data":"H4sI') == 1   # gzip, base64
+    # sent at once (TCP_NODELAY): Nagle's algorithm held a frame after a small one for the page's delayed ACK
+    assert set(nodelay) == {True}

@@ -14,6 +14,7 @@ valve's sweep kept in ``design.run``'s memo, not swept again; a valve the edit l
 """
 
 from collections.abc import Callable
+import json
 from typing import Any
 
 LOOPBACK = "127.0.0.1"
@@ -34,7 +35,8 @@ def make_document(text, source_dir) -> Callable[[Any], None]:
 def one_message(connection, event) -> Any:
     """Bokeh's ``ServerConnection.send_patch_document`` sending the changes of a callback to the page in one message:
     each change is queued and the first of the writes that the server awaits after the callback sends all that
-    are queued (the rest find the queue empty).
+    are queued (the rest find the queue empty), every frame of the message handed to the socket in one turn of the
+    server's event loop.
 
     Notes
     -----
@@ -42,17 +44,74 @@ def one_message(connection, event) -> Any:
     the checks, the card, the stamp ...), each as four or more frames of the web socket, each waking the page; the
     page applies one message's changes in order, as it did the messages'.  The values are those the models hold
     when the message is made, after the callback: its last, as the last message would have brought.
+
+    A message is three frames and two more per array (its reference, then its bytes): a release's redraw of the
+    curves is 61.  Bokeh writes each and awaits it before the next (``Message.send``), a turn of the event loop
+    each, and the callbacks of the next tick ran between them: a drag's release started its design's and its
+    sweep's threads after the first frame.  Here the frames are written at once, then awaited: those callbacks
+    run after the message has gone.  Its small arrays go within its text (:func:`_inline`): a release's redraw is
+    three frames, not 61, which the page received as 61 tasks over up to 70 ms at a load of 5-7 (a frame's arrival
+    in the page logged against the server's write).  The socket sends at once (TCP_NODELAY): Bokeh and Tornado leave
+    Nagle's algorithm on, which held a frame written after a small one (Bokeh's OK to the page's request) until the
+    page's TCP stack acknowledged that one, a delayed ACK of up to 40 ms: the page had a release's redraw 50-75 ms
+    after the server wrote it at a load of 2-4, idle or not.
     """
+    from tornado.websocket import WebSocketClosedError, WebSocketHandler
+
     queue = connection.__dict__.setdefault("_queued_changes", [])
     queue.append(event)
 
     async def send():
-        if queue:
-            events = list(queue)
-            queue.clear()
-            await connection._socket.send_message(connection.protocol.create("PATCH-DOC", events))
+        if not queue:
+            return
+        events = list(queue)
+        queue.clear()
+        message, socket = _inline(connection.protocol.create("PATCH-DOC", events)), connection._socket
+        frames = [(message.header_json, False), (message.metadata_json, False), (message.content_json, False)]
+        for buffer in message.buffers:
+            frames += [(json.dumps(buffer.ref), False), (buffer.to_bytes(), True)]
+        try:
+            socket.set_nodelay(True)                  # each frame sent at once: Nagle's algorithm held it for the
+            async with socket.write_lock:             # page's delayed ACK (40 ms); Bokeh's lock of the messages
+                written = [WebSocketHandler.write_message(socket, frame, binary) for frame, binary in frames]
+                for done in written:
+                    await done
+        except WebSocketClosedError:
+            return                                    # the page has gone: its session closes
 
     return send()
+
+
+INLINE_BYTES = 16384
+"""The largest array sent within a message's text (base64, a third more bytes), not as frames of its own: a curve of
+the designer is 1-2 kB, the sweep panel's lift-error map 331 kB (base64 of it cost the server 15-30 ms)."""
+
+
+def _inline(message) -> Any:
+    """``message`` (a ``PATCH-DOC`` message as Bokeh makes it) with its buffers of at most :data:`INLINE_BYTES` in its
+    content as base64 text (as Bokeh's serializer writes them when it does not defer its bytes), the larger ones kept
+    as buffers."""
+    from bokeh.core.serialization import Buffer
+    from bokeh.protocol.messages.patch_doc import patch_doc
+
+    small = {id(b) for b in message.buffers if len(b.to_bytes()) <= INLINE_BYTES}
+    if not small:
+        return message
+
+    def inlined(value):
+        if isinstance(value, Buffer):
+            return value.to_base64() if id(value) in small else value
+        if isinstance(value, dict):
+            return {k: inlined(v) for k, v in value.items()}
+        if isinstance(value, (list, tuple)):
+            return [inlined(v) for v in value]
+        return value
+
+    out = patch_doc(patch_doc.create_header(), message.metadata, inlined(message.content))
+    large = [b for b in message.buffers if id(b) not in small]
+    if large:
+        out.add_buffers(*large)
+    return out
 
 
 def server(text=None, source_dir=None, host=LOOPBACK, port=5006) -> Any:

@@ -16,10 +16,12 @@ and Ctrl-Y undo and redo.  The plots of the tabs not shown hold their painting u
 speed sweep of a design kept runs in a worker thread and only the newest one is drawn (an older one is stopped at
 its next speed).
 
-The page keeps its timings: ``window.vtTimes`` (the release of a drag, a key or an undo to the painted frame of its
-curves, ms), ``window.vtChecksTimes`` (to the painted frame of its checks, card and panel), ``window.vtSweepTimes`` (to the painted frame of the sweep panel), ``window.vtTimesArrived`` (to the
-arrival of the redraw), ``window.vtMoveTimes`` (a move of the pointer sent to the painted frame of the curves it
-brought); ``window.vtTimesDone``, ``window.vtSweepTimesDone`` count the redraws painted.
+The page keeps its timings: ``window.vtTimes`` (the release of a drag, a key or an undo to the end of the frame that
+painted its curves, ms: :data:`~valvetrain.web.draw.STAMP_JS`), ``window.vtChecksTimes`` (to the frame that shows
+its checks, card and panel), ``window.vtSweepTimes`` (to the frame that painted the sweep panel),
+``window.vtTimesArrived`` (to the arrival of the redraw), ``window.vtTimesFrames`` (the frames the probe waited for
+the paint), ``window.vtMoveTimes`` (a move of the pointer sent to the frame that painted the curves it brought);
+``window.vtTimesDone``, ``window.vtSweepTimesDone`` count the redraws painted.
 
 The page is built by :mod:`valvetrain.web.layout`, drawn with the pieces of :mod:`valvetrain.web.draw` (words,
 columns, ranges, scripts, units); its sweep panel is :mod:`valvetrain.web.sweep`'s, its panel of variable valve

@@ -93,39 +93,19 @@ BAR_CSS = """
 """
 """The command bar's selects with their titles beside them."""
 
-STAMP_JS = """
-// a redraw painted: its time from the release (a drag, a key, an undo) that asked for it, and from the move it answered
-const arrived = performance.now();
-const data = cb_obj.data instanceof Map ? Object.fromEntries(cb_obj.data) : cb_obj.data;
-const seq = data.seq[0];
-const vt = window.vt || {};
-if (key === 'vtTimes' && vt.inflight && seq >= vt.inflight) {
-  vt.inflight = 0;
-  if (vt.pending && vt.drag) {
-    vt.pending = false;
-    vt.send_move();
-  }
+PAINTED_JS = """
+const PlotView = Bokeh.require("models/plots/plot_canvas").PlotView;
+const paint = PlotView.prototype._actual_paint;
+if (!paint.vtMarked) {
+  PlotView.prototype._actual_paint = function () {
+    paint.call(this);
+    this.vtPainted = performance.now();
+  };
+  PlotView.prototype._actual_paint.vtMarked = true;
 }
-const sent = key === 'vtTimes' && vt.sent ? vt.sent[seq] : undefined;
-requestAnimationFrame(() => requestAnimationFrame(() => {
-  const t = performance.now();
-  for (const k of [key, key + 'Arrived', key + 'Server', 'vtMoveTimes']) {
-    window[k] = window[k] || [];
-  }
-  if (window.vtRelease !== undefined && vt.release && seq === vt.release) {
-    window[key].push(t - window.vtRelease);
-    window[key + 'Arrived'].push(arrived - window.vtRelease);
-    const release = performance.timeOrigin + window.vtRelease;
-    window[key + 'Server'].push([data.began[0] - release, data.ended[0] - data.began[0],
-                                 performance.timeOrigin + arrived - data.ended[0], data.cpu[0]]);
-  } else if (sent !== undefined && seq !== vt.release) {
-    window.vtMoveTimes.push(t - sent);
-  }
-  window[key + 'Done'] = (window[key + 'Done'] || 0) + 1;
-}));
 """
-"""The page's probe: on the change of a stamp (the last change of a redraw), the time from the release that asked for
-it to the second animation frame after it came (the frame that shows it painted)."""
+"""Run once when the page is ready: each plot's view marks when it last painted (``vtPainted``, for the probe,
+:data:`STAMP_JS`)."""
 
 VIEW_JS = """
 const view = (model) => {
@@ -144,6 +124,62 @@ const view = (model) => {
 ``Bokeh.index.find_one`` walks every view of the page (977 on the built-in example: the panel's inputs, the tables,
 the plots' renderers and tools) and was called about 20 times per redraw (the holds' plots, the handles' plots): 30
 to 40 ms of the page's drawing of a release at a load of 7."""
+
+STAMP_JS = VIEW_JS + """
+// a redraw painted: its time from the release (a drag, a key, an undo) that asked for it, and from the move it answered
+const arrived = performance.now();
+const data = cb_obj.data instanceof Map ? Object.fromEntries(cb_obj.data) : cb_obj.data;
+const seq = data.seq[0];
+const vt = window.vt || {};
+if (key === 'vtTimes' && vt.inflight && seq >= vt.inflight) {
+  vt.inflight = 0;
+  if (vt.pending && vt.drag) {
+    vt.pending = false;
+    vt.send_move();
+  }
+}
+const sent = key === 'vtTimes' && vt.sent ? vt.sent[seq] : undefined;
+// the plots this stamp resumes, when the redraw changed them: the frame that shows it is the one they were painted in
+const changed = data.changed === undefined || data.changed[0] !== 0;
+const views = changed ? plots.map(view).filter((v) => v != null) : [];
+const record = (t, frames) => {
+  for (const k of [key, key + 'Arrived', key + 'Server', key + 'Frames', 'vtMoveTimes']) {
+    window[k] = window[k] || [];
+  }
+  if (window.vtRelease !== undefined && vt.release && seq === vt.release) {
+    window[key].push(t - window.vtRelease);
+    window[key + 'Arrived'].push(arrived - window.vtRelease);
+    window[key + 'Frames'].push(frames);
+    const release = performance.timeOrigin + window.vtRelease;
+    window[key + 'Server'].push([data.began[0] - release, data.ended[0] - data.began[0],
+                                 performance.timeOrigin + arrived - data.ended[0], data.cpu[0]]);
+  } else if (sent !== undefined && seq !== vt.release) {
+    window.vtMoveTimes.push(t - sent);
+  }
+  window[key + 'Done'] = (window[key + 'Done'] || 0) + 1;
+};
+let frames = 0;
+const frame_end = () => requestAnimationFrame(() => {
+  // a task posted from a frame's animation callbacks runs when the frame's own work (its paint) is done
+  const channel = new MessageChannel();
+  channel.port1.onmessage = () => {
+    frames += 1;
+    if (frames < 10 && views.length && !views.some((v) => v.vtPainted > arrived)) {
+      frame_end();            // Bokeh put the paint off (at most one a frame): the next frame
+    } else {
+      record(performance.now(), frames);
+    }
+  };
+  channel.port2.postMessage(null);
+});
+frame_end();
+"""
+"""The page's probe: on the change of a stamp (the last change of a redraw), the time from the release that asked for
+it to the end of the frame that shows it: the first frame after it came whose animation callbacks (where Bokeh
+paints) painted one of the ``plots`` the stamp resumes, if the redraw changed them (:data:`PAINTED_JS` marks a
+plot's paint), else the first frame after it came; its end is when the page's main thread has done the frame's
+work (a task posted from the frame's animation callback), the compositor's drawing of it after.  (The probe waited
+for the second animation frame after the update, a frame later than the one that shows it: up to 17 ms more.)"""
 
 PAUSE_JS = VIEW_JS + """
 if (!window[key]) {

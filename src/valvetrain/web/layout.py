@@ -14,8 +14,8 @@ import numpy as np
 
 from ..report.i18n import TEXT
 from ..report.names import label
-from .draw import (BAR_CSS, CURVES, DOWNLOAD_JS, DRAWN_JS, INPUT_CSS, KINEMATIC_PLOTS, PAGE_JS, PANEL_WIDTH, PLOT_WIDTH,
-                   PLOTS, SAME_STYLE_JS, STAMP_JS, TABS_JS, WIDTH, WORDS, _held, _rows_follow, _stamp)
+from .draw import (BAR_CSS, CURVES, DOWNLOAD_JS, DRAWN_JS, INPUT_CSS, KINEMATIC_PLOTS, PAGE_JS, PAINTED_JS, PANEL_WIDTH,
+                   PLOT_WIDTH, PLOTS, SAME_STYLE_JS, STAMP_JS, TABS_JS, WIDTH, WORDS, _held, _rows_follow, _stamp)
 from .form import GROUPS, form, value_at, value_text
 
 
@@ -254,7 +254,8 @@ class Layout:
         # the stamps are data sources, not widgets: a widget's change lays the whole page out again (~100 ms)
         self.kinematic_stamp = _stamp("kinematic-stamp")
         self.kinematic_hold = _held([self.figures[k] for k in PLOTS], self.kinematic_stamp, "vtPausedKinematics")
-        self.kinematic_stamp.js_on_change("data", CustomJS(args={"key": "vtTimes"}, code=STAMP_JS))
+        self.kinematic_stamp.js_on_change("data", CustomJS(args={"key": "vtTimes", "plots": [
+            self.figures[k] for k in ("lift", "acceleration")]}, code=STAMP_JS))
         # the page says when it has drawn the kinematics of a design kept: its sweep starts then
         self.drawn = ColumnDataSource({"n": [0]}, name="drawn")
         self.drawn.on_change("data", self.on_drawn)
@@ -262,11 +263,12 @@ class Layout:
                                                            code=DRAWN_JS))
         # the checks, card and panel of a design kept: with the curves, or after them (a drag released)
         self.checks_stamp = _stamp("checks-stamp")
-        self.checks_stamp.js_on_change("data", CustomJS(args={"key": "vtChecksTimes"}, code=STAMP_JS))
+        self.checks_stamp.js_on_change("data", CustomJS(args={"key": "vtChecksTimes", "plots": []}, code=STAMP_JS))
         self.sweep_stamp = _stamp("sweep-stamp")
         self.sweep_hold = _held([self.figures[k] for k in ("sweep_force", "sweep_seating", "sweep_map", "at_speed")],
                                 self.sweep_stamp, "vtPausedSweep")
-        self.sweep_stamp.js_on_change("data", CustomJS(args={"key": "vtSweepTimes"}, code=STAMP_JS))
+        self.sweep_stamp.js_on_change("data", CustomJS(args={"key": "vtSweepTimes", "plots": [
+            self.figures[k] for k in ("sweep_force", "sweep_seating", "sweep_map", "at_speed")]}, code=STAMP_JS))
 
         f = self.figures
         self.plot_tabs = Tabs(name="plots", width=WIDTH - PANEL_WIDTH - 10, active=3, tabs=[
@@ -290,6 +292,7 @@ class Layout:
         self.doc.add_root(bar)
         self.doc.add_root(row(self.panel_box, main, name="page"))
         self.doc.js_on_event("document_ready", CustomJS(code=SAME_STYLE_JS))
+        self.doc.js_on_event("document_ready", CustomJS(code=PAINTED_JS))
         # the first design drawn: its sweep starts
         self.doc.js_on_event("document_ready", CustomJS(args={"stamp": self.kinematic_stamp, "drawn": self.drawn},
                                                         code=DRAWN_JS))
