@@ -404,13 +404,6 @@ WORKS = {
         note="The MultiAir lost-motion intake: a cam-driven pump piston, a normally open solenoid valve to an "
              "accumulator that closes the intake valve early or opens it late, and the hydraulic brake of its "
              "landing."),
-    "sae_j300": Work(
-        short="SAE J300 (2015)",
-        authors="SAE International",
-        title="SAE J300. Engine Oil Viscosity Classification", kind="standard", publisher="SAE International",
-        place="Warrendale, PA", year="2015",
-        note="The viscosity grades of engine oils: SAE 30 (and xW-30) has a kinematic viscosity at 100 degC from 9.3 "
-             "to below 12.5 mm^2/s."),
     "dowson1986": Work(
         short="Dowson, Harrison and Taylor (1986)",
         authors="Dowson, D.; Harrison, P.; Taylor, C. M.",

@@ -426,7 +426,6 @@ def breathe(engine, condition, tolerance=TOLERANCE, max_cycles=MAX_CYCLES, start
         heat_per_fuel = gases.lower_heating_value(firing.fuel) * firing.efficiency
     coef = np.stack([fresh.coefficients, burned.coefficients])
     rgas = np.array([fresh.gas_constant, burned.gas_constant])
-    t_mid = fresh.t_mid
     p_i, t_i = condition.intake.pressure, condition.intake.temperature
     p_e = condition.exhaust.pressure
     given_te = condition.exhaust.temperature

@@ -14,7 +14,7 @@ from typing import Any, Optional, Union
 
 import numpy as np
 
-from .. import masses, springs, strength
+from .. import masses, springs
 from ..checks import Check, check
 from ..layouts import finger_inertia, layout, train_mass
 from ..locale import NoteText, note, note_text, record_text

@@ -16,7 +16,7 @@ from typing import Any, Optional, Union
 import numpy as np
 
 from .. import flow, geometry
-from ..checks import Check, check, failed, ranked, tally
+from ..checks import Check, failed, ranked, tally
 from ..crank.kinematics import displacement
 from ..errors import InputError
 from ..followers import follower_of

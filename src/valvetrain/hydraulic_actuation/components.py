@@ -11,7 +11,7 @@ pump chamber's oil to an accumulator, so that the valve closes before the cam do
 hydraulic brake that slows the valve in its last travel before the seat; both are orifices (Merritt (1967)).
 """
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 import math
 from typing import Optional
 

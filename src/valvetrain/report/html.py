@@ -631,8 +631,8 @@ def numbered_floats(page, lang) -> str:
     parts = _SECTION.split(FLOATS.sub(number, page))
     for i in range(1, len(parts), 2):
         found = {"table": [], "figure": []}
-        for kind, label in _FLOAT_ID.findall(parts[i + 1]):
-            found[kind].append(label)
+        for kind, number_id in _FLOAT_ID.findall(parts[i + 1]):
+            found[kind].append(number_id)
         refs = [_refs(kind, found[kind], t) for kind in ("table", "figure") if found[kind]]
         if refs:
             parts[i] += '<p class="refs">' + t["see"].format(f" {t['and']} ".join(refs)) + "</p>"

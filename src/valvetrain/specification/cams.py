@@ -32,7 +32,6 @@ from ..locale.wording import fit_reason
 from ..units import DEG, MM, rad_to_deg
 from .fields import RAMP_VELOCITY, SEGMENT_ANGLE, Length, _bounded, _Model
 from .messages import Problem, shown
-from .si import si
 
 from .cam_base import (REGISTRY, register, main_half_angle, main_half_angle_deg, _finite, _CamBase, _tappet_lift, _ramp, ramp_height, _clearance_problem, _RampKeys, _ClosingSide, _with_cam, _SegmentAngles)
 
