@@ -340,6 +340,7 @@ class Solenoid:
         >>> valve = Solenoid(1e-6, 0.3e6, closes=-1.0, opens=0.5, stroke_time=0.01)
         >>> valve.share(np.array([-2.0, -0.95, 0.0, 0.55, 1.0]), 10.0).round(12).tolist()
         [1.0, 0.5, 0.0, 0.5, 1.0]
+        >>> from dataclasses import replace
         >>> replace(valve, stroke_time=0.0).share(np.array([-2.0, 0.0, 0.5]), 10.0).tolist()
         [1.0, 0.0, 1.0]
         """
