@@ -50,7 +50,7 @@ def _console_script():
 
 
 def test_ctrl_c_while_importing_is_one_line_and_status_130():
-    """Ctrl-C at 20 moments (seeded) spread over the start-up of ``valvetrain --version`` (measured first: Python is
+    """Ctrl-C at 12 moments (seeded) spread over the start-up of ``valvetrain --version`` (measured first: Python is
     up, then the command line is imported, then it prints the version): every one ends with ``error: interrupted``
     and status 130, or, after the command finished, with the version; never a traceback.  Most moments fall in the
     imports, so some are interrupted (the issue's traceback came 2 times in 20)."""
@@ -65,14 +65,14 @@ def test_ctrl_c_while_importing_is_one_line_and_status_130():
     startup = time.monotonic() - t0
     assert (proc.returncode, out, err) == (0, "valvetrain, version 0.1.0\n", "")
     outcomes = []
-    for moment in random.Random(21).sample(range(int(startup * 900)), 20):
+    for moment in random.Random(21).sample(range(int(startup * 900)), 12):
         proc, t0 = start()
         time.sleep(max(moment / 1000 - (time.monotonic() - t0), 0.0))
         proc.send_signal(signal.SIGINT)
         out, err = proc.communicate(timeout=120)
         outcomes.append((proc.returncode, out, err))
         assert (proc.returncode, err) in ((130, "error: interrupted\n"), (0, "")), (moment, err)
-    assert sum(rc == 130 for rc, _, _ in outcomes) >= 5
+    assert sum(rc == 130 for rc, _, _ in outcomes) >= 3
 
 
 BLAS_THREADS = """

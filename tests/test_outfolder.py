@@ -287,7 +287,7 @@ def test_compare_replaces_a_previous_comparison(tmp_path):
 
 @pytest.mark.parametrize("sig", [signal.SIGKILL, signal.SIGINT], ids=["SIGKILL", "SIGINT"])
 def test_an_interrupted_run_keeps_a_whole_output(tmp_path, previous_run, sig):
-    """Five runs over a previous output, each sent ``sig`` at a random moment (seeded) between 0.1 s (after Python's
+    """Three runs over a previous output, each sent ``sig`` at a random moment (seeded) between 0.1 s (after Python's
     own start) and the run's duration: ``--out`` holds the previous or the whole new output after each; a SIGINT
     ends the command with one line and its temporary folder removed; the next run leaves no temporary folder.
 
@@ -297,7 +297,7 @@ def test_an_interrupted_run_keeps_a_whole_output(tmp_path, previous_run, sig):
     previous, seconds = previous_run
     out = tmp_path / "design"
     shutil.copytree(previous, out)
-    moments = random.Random(9).sample(range(100, int(seconds * 1000)), 5)
+    moments = random.Random(9).sample(range(100, int(seconds * 1000)), 3)
     for ms in moments:
         proc = command(tmp_path, "run", str(APPENDIX), "--out", "design", "--lang", "ru")
         time.sleep(ms / 1000)
