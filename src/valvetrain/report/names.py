@@ -23,8 +23,8 @@ import re
 from ..locale import LANGS, NoteText, catalogue, check_text, note_text, record_text, spring_text
 from ..units import SUFFIXES, symbol as unit_text
 
-NAMES = {key: tuple({**catalogue(lang)["names"], **catalogue(lang)["stage_names"]}[key] for lang in LANGS)
-         for key in {**catalogue("en")["names"], **catalogue("en")["stage_names"]}}
+_NAMED = [{**catalogue(lang)["names"], **catalogue(lang)["stage_names"]} for lang in LANGS]
+NAMES = {key: tuple(named[key] for named in _NAMED) for key in _NAMED[0]}
 """Names of the keys without their unit suffix (or a whole key where the suffix is no unit), one a language in the
 order of :data:`~valvetrain.languages.LANGS`: ``[names]`` and ``[stage_names]`` of the catalogues."""
 
