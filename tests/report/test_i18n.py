@@ -5,11 +5,11 @@ from collections import defaultdict
 from pathlib import Path
 import re
 
-from matplotlib.text import Text
 import pytest
 
 from valvetrain.design import run
 from valvetrain.report import plots as report_plots
+from valvetrain.report.figure import figure_texts
 from valvetrain.report.html import render_report
 from valvetrain.report.i18n import TEXT
 from valvetrain.report.names import label, quantity_text
@@ -75,11 +75,11 @@ def test_every_check_of_the_examples_has_a_russian_name(designs):
             assert text != c.quantity and not re.search(r"\b(?:the|of|at|and)\b", text), (c.code, text)
 
 
-FIGURE_TEXT = (Text,)
-
-
 def _figure_texts(fig):
-    texts = [t.get_text() for t in fig.findobj(Text)]
+    """The figure's texts but its ticks' (numbers, labelled when drawn; matplotlib's findobj would make them: a
+    quarter of this file's time): test_plots.py's test_a_symbols_index_is_a_subscript_in_every_figure holds
+    figure_texts to findobj's texts."""
+    texts = [t.get_text() for t in figure_texts(fig)]
     return [t for t in texts if t and not re.fullmatch(r"[−\-+0-9.,e ]*", t)]
 
 

@@ -4,6 +4,7 @@ figures' ticks and a symbol's index as a subscript in every text (:func:`localis
 from typing import Any
 
 from matplotlib import rc_context
+from matplotlib.axis import Axis
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 from matplotlib.text import Text
@@ -64,11 +65,32 @@ def localised(fig, t) -> Figure:
             for axis in (ax.xaxis, ax.yaxis):
                 if type(axis.get_major_formatter()) is ScalarFormatter:
                     axis.set_major_formatter(DecimalComma())
-    for text in fig.findobj(Text):
+    for text in figure_texts(fig):
         label = text.get_text()
         if "_" in label and "$" not in label:
             text.set_text(math_symbols(label))
     return fig
+
+
+def figure_texts(artist) -> list[Text]:
+    """Every text of ``artist`` (a figure) and of its children but its axes' ticks: titles, axis labels, legends,
+    notes.
+
+    Matplotlib's ``findobj(Text)`` asks every axis for its ticks, which makes them (a tick is a line, a marker and two
+    texts: half of the time the report's figures took before they were drawn) with empty labels that the axis'
+    formatter fills in when the figure is drawn; the figures' ticks are numbers, so nothing is lost by not making
+    them here.
+
+    >>> from matplotlib.figure import Figure
+    >>> ax = Figure().subplots()
+    >>> _ = ax.set(title="lift", xlabel="phi_p, deg"), ax.plot([0, 1], label="h_v"), ax.legend()
+    >>> [t.get_text() for t in figure_texts(ax.figure) if t.get_text()]
+    ['phi_p, deg', 'lift', 'h_v']
+    """
+    texts = [artist] if isinstance(artist, Text) else []
+    for child in (artist.label, artist.offsetText) if isinstance(artist, Axis) else artist.get_children():
+        texts += figure_texts(child)
+    return texts
 
 
 def math_symbols(label) -> str:
