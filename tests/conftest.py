@@ -2,7 +2,10 @@
 command line; the system's chromium for the browser tests (pytest-playwright)."""
 
 import os
+from pathlib import Path
 import shutil
+import subprocess
+import sys
 
 from click.testing import CliRunner
 import numpy as np
@@ -10,7 +13,26 @@ import pytest
 
 from valvetrain.cli import main
 
+from valvetrain.dynamics.sweep import kernels_cached
 from valvetrain.laws import KurzLaw
+
+
+@pytest.hookimpl(tryfirst=True)
+def pytest_sessionstart(session):
+    """With two or more pytest-xdist workers and the kernels not in numba's cache (a fresh install), compile them
+    once, in two processes side by side, before the workers start (``compile_kernels.py``): otherwise each worker
+    compiles them again."""
+    config = session.config
+    if hasattr(config, "workerinput") or len(getattr(config.option, "tx", None) or []) < 2 or kernels_cached():
+        return
+    script = Path(__file__).with_name("compile_kernels.py")
+    jobs = [subprocess.Popen([sys.executable, str(script), part], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+                             text=True) for part in ("dynamics", "stages")]
+    for job in jobs:
+        _, err = job.communicate()
+        if job.returncode != 0:
+            raise pytest.UsageError(f"compiling the kernels before the tests failed:\n{err}")
+
 
 SEED000_OMEGA_EXACT = np.pi * 3500 / 30
 """Camshaft speed of the appendix of Valve-train practical works (n.d.), pi n_cam / 30 [rad/s]."""

@@ -311,17 +311,22 @@ class SweepResult:
                 "coil_clash_speed": float(clash.min()) if clash.size else np.nan}
 
 
+def kernels_cached() -> bool:
+    """Whether numba's cache holds the sweep's kernel compiled from this source (its index names the source's
+    modification time and size: a kernel of an older source is not counted)."""
+    try:
+        return bool(integrate_block._cache._cache_file._load_index())   # numba's cache index of this kernel
+    except (AttributeError, OSError):
+        return False
+
+
 def _notify_compile():
     """Say once on stderr that the kernels are being compiled, when no compiled or cached kernel is at hand."""
     global _COMPILE_NOTIFIED
     if _COMPILE_NOTIFIED or integrate_block.signatures:
         return
     _COMPILE_NOTIFIED = True
-    try:
-        cached = bool(integrate_block._cache._cache_file._load_index())   # numba's cache index of this kernel
-    except (AttributeError, OSError):
-        cached = False
-    if not cached:
+    if not kernels_cached():
         print("compiling the dynamics kernels (once; later runs load them from the cache) ...", file=sys.stderr,
               flush=True)
 
