@@ -45,12 +45,12 @@ def _valve_problems(name, v, engine):
         out.append(Problem(f"{at}.clearance_mm", "allowed 0 with a lash_adjuster section (it leaves no lash on the "
                            "base circle for a ramp to take up)", f"{v.clearance_mm:g}"))
     axis = None if v.lash_adjuster is None else v.lash_adjuster.axis_angle_deg
-    if axis is not None and (v.lash_adjuster.location != "pivot" or not FOLLOWERS[v.cam.follower].law_at_valve):
+    if axis is not None and (v.lash_adjuster.location != "pivot" or not FOLLOWERS[v.cam.follower].pivot_axis):
         out.append(Problem(f"{at}.lash_adjuster.axis_angle_deg", "allowed only at the pivot of a finger given by its "
                            "geometry (location = \"pivot\", cam.follower = \"finger\"): a tappet's adjuster moves "
                            "along the tappet, a rocker's of a given rocker_ratio along the straight lever's normal",
                            f"{axis:g}", " "))
-    if v.switching is not None and not FOLLOWERS[v.cam.follower].law_at_valve:
+    if v.switching is not None and not FOLLOWERS[v.cam.follower].switchable:
         out.append(Problem(f"{at}.switching", "allowed only on a finger given by its geometry (cam.follower = "
                            f"\"finger\"), not with cam.follower = {v.cam.follower!r}: the switching finger's inner arm "
                            "carries the finger's roller"))
@@ -79,7 +79,7 @@ def _valve_problems(name, v, engine):
             and v.rocker_ratio != 1.0):
         out.append(Problem(f"{at}.drive.layout", f"needs rocker_ratio = 1 (got {v.rocker_ratio:g})",
                            f"\"{v.drive.layout}\"", " "))
-    if FOLLOWERS[v.cam.follower].law_at_valve:
+    if FOLLOWERS[v.cam.follower].geometric_lever:
         if v.rocker_ratio != 1.0:
             out.append(Problem(f"{at}.rocker_ratio", f"allowed 1 with cam.follower = \"{v.cam.follower}\" (the law is "
                                "the valve's; the finger's ratio follows from its geometry)", f"{v.rocker_ratio:g}"))
