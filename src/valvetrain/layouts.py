@@ -16,8 +16,10 @@ from typing import Optional
 import numpy as np
 
 from . import flow, masses
-from .followers import follower_of
+from .checks import Check, check
+from .followers import REGISTRY as FOLLOWERS, follower_of
 from .links import REGISTRY as LINKS
+from .locale import note
 
 
 @dataclass(frozen=True)
@@ -68,6 +70,40 @@ def layout(valve) -> str:
 def chain(valve) -> Layout:
     """The :class:`Layout` of a valve (SI view or section), by :func:`layout`."""
     return LAYOUTS[layout(valve)]
+
+
+def unused_part_keys(valve) -> list[str]:
+    """The ``[valves.NAME.parts]`` keys a valve's section gives (other than their defaults) that only parts it does
+    not have read: a link's outside its layout's chain (:attr:`~valvetrain.links.Link.part_keys`) or another
+    follower's (:attr:`~valvetrain.followers.Follower.part_keys`), in the section's order (SI view of the valve).
+
+    Examples
+    --------
+    The built-in example's intake (a pushrod layout, a flat follower) given a finger's section:
+
+    >>> from valvetrain.specification import example_spec
+    >>> from valvetrain.specification.si import si
+    >>> spec = example_spec().replace({"valves.intake.parts.finger_section_width_mm": 6.0})
+    >>> unused_part_keys(si(spec.valves["intake"]))
+    ['finger_section_width_mm']
+    """
+    section = valve.parts.section
+    fields = type(section).model_fields
+    own = [part.part_keys for part in (*chain(valve).links, FOLLOWERS[valve.cam.follower])]
+    owned = {key for part in (*LINKS.values(), *FOLLOWERS.values()) for key in part.part_keys}
+    unread = owned.difference(*own)
+    return [key for key in fields if key in unread and getattr(section, key) != fields[key].default]
+
+
+def unused_part_checks(valve) -> list[Check]:
+    """A warning for every key of :func:`unused_part_keys`: the number of the valve's parts that read it, 0, against
+    at least 1 (legal input, but a dimension of a part the train does not have is doubtful: a wrong layout or a key
+    left from another design)."""
+    layout_name, follower = chain(valve).name, valve.cam.follower
+    return [check("parts.unused_key", 0, low=1, params={"key": key, "layout": layout_name},
+                  source="Valve-train practical works (n.d.), work 7",
+                  note=note("parts.unused_key", layout=layout_name, follower=follower))
+            for key in unused_part_keys(valve)]
 
 
 def valve_arm(valve) -> Optional[float]:

@@ -42,9 +42,15 @@ def test_a_rocker_on_a_shaft_has_no_pivot_ball_and_half_a_pivot_is_named():
 def test_the_pushrod_train_checks_its_pivot_ball_and_refuses_a_seat_no_larger():
     """The appendix example (tappet, pushrod, rocker) with a pivot ball: the check in the design's strength record
     under the largest cam force (its own record) and the rocker ratio 1.6 of the example; a seat no larger than the
-    ball is refused naming both keys."""
+    ball is refused naming both keys.  A finger's section given to its flat follower is a warning of the results
+    naming the key and the layout (no part reads it: it was ignored without a word)."""
     design = appendix_design(valves__intake__parts__rocker_pivot_ball_radius_mm=8.0,
-                             valves__intake__parts__rocker_pivot_seat_radius_mm=8.5)
+                             valves__intake__parts__rocker_pivot_seat_radius_mm=8.5,
+                             valves__intake__parts__finger_section_width_mm=6.0)
+    (unused,) = [w for w in design.to_dict()["warnings"] if w["code"] == "parts.unused_key"]
+    assert unused["params"] == {"key": "finger_section_width_mm", "layout": "pushrod"}
+    assert unused["severity"] == "warning" and unused["quantity"] == ("intake: parts of the pushrod layout that read "
+                                                                      "[parts] finger_section_width_mm")
     strength = design.valves["intake"].drive.strength
     (c,) = [c for c in strength.checks if c.code == "strength.rocker_pivot_stress"]
     expected = 0.388 * (fulcrum_load(strength.cam_force_max, 1.6) * 2.1e11**2 * (1 / 0.008 - 1 / 0.0085)**2)**(1 / 3)

@@ -139,6 +139,9 @@ class Follower:
     switchable : bool
         True where the follower can be the outer body of a switching follower (``[valves.NAME.switching]``): an
         inner arm of its own carries its roller (a finger).
+    part_keys : tuple of str
+        The ``[valves.NAME.parts]`` keys the follower reads (a flat face's diameter, a finger's section): given with
+        another follower, they are a warning of the design (:func:`valvetrain.layouts.unused_part_keys`).
     """
 
     name: ClassVar[str]
@@ -149,6 +152,7 @@ class Follower:
     geometric_lever: ClassVar[bool] = False
     pivot_axis: ClassVar[bool] = False
     switchable: ClassVar[bool] = False
+    part_keys: ClassVar[tuple[str, ...]] = ()
 
     @classmethod
     def from_cam(cls, cam) -> "Follower":

@@ -142,6 +142,7 @@ class PivotedFollower(RollerFollower):
     tip_offset: float = 0.0
     name = "finger"
     geometric_lever = pivot_axis = switchable = True
+    part_keys = ("finger_section_width_mm", "finger_section_height_mm")
     undercut_source = "Shang Hanji (1988), eq. (2.7); Norton (2009)"
 
     @classmethod

@@ -13,7 +13,7 @@ For the author of a new link
 Write one module in this package with a subclass of :class:`Link` decorated ``@register``, import it in
 ``links/__init__.py``, and name it in a layout's chain (:data:`valvetrain.layouts.LAYOUTS`).  Its dimensions are keys
 of ``[valves.NAME.parts]`` (a new pydantic field of ``specification/models.py`` with its README row and report name),
-its mass a key of ``[drive.masses]`` (its node in the elastic train, :meth:`Link.node`; an elastic member's
+named in its ``part_keys``, its mass a key of ``[drive.masses]`` (its node in the elastic train, :meth:`Link.node`; an elastic member's
 stiffness, :meth:`Link.stiffness`); its checks are :func:`valvetrain.strength.verdict` of a new
 :data:`valvetrain.strength.LIMITS` row (and its code's texts, ``tools/check_codes.py add``).  Links hold no state;
 their methods are pure functions of the loads (:class:`Loads`, SI) and return checks, never sentences.
@@ -92,6 +92,9 @@ class Link:
     lever : bool
         Whether the link is a lever whose arms set the rocker ratio i_k = l_v / l_t: a chain without one moves the
         valve as the cam lifts it (i_k = 1).
+    part_keys : tuple of str
+        The ``[valves.NAME.parts]`` keys the link reads (its dimensions): given for a layout without the link, they
+        are a warning of the design (:func:`valvetrain.layouts.unused_part_keys`).
     """
 
     name: ClassVar[str]
@@ -101,6 +104,7 @@ class Link:
     elastic: ClassVar[bool] = False
     joint: ClassVar[str] = ""
     lever: ClassVar[bool] = False
+    part_keys: ClassVar[tuple[str, ...]] = ()
 
     def checks(self, loads) -> list:
         """The strength checks of the link under ``loads`` (:class:`Loads`), those whose keys are given: none."""
