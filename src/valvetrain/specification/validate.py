@@ -99,6 +99,11 @@ def _valve_problems(name, v, engine):
     elif v.drive.masses is not None and v.drive.masses.rocker_inertia_kg_mm2 > 0 and v.drive.valve_arm_mm is None:
         out.append(Problem(f"{at}.drive.masses.rocker_inertia_kg_mm2", "needs drive.valve_arm_mm (the valve-side "
                            "rocker arm)", f"{v.drive.masses.rocker_inertia_kg_mm2:g}"))
+    if v.drive.masses is not None and v.drive.masses.bridge_kg is not None and v.dynamics is not None \
+            and v.dynamics.model == "multi":
+        out.append(Problem(f"{at}.drive.masses.bridge_kg", "not allowed with dynamics.model = \"multi\": the "
+                           "multi-mass train has no node of a valve bridge; allowed with the one-mass train (\"1dof\"), "
+                           "whose reduced mass carries it", f"{v.drive.masses.bridge_kg:g}"))
     if v.piston_gap_tdc_mm is not None and engine.rod_length_mm is None:
         out.append(Problem(f"{at}.piston_gap_tdc_mm", "needs engine.rod_length_mm for the piston kinematics",
                            joiner=" "))
