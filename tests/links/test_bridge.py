@@ -3,13 +3,17 @@ stiffness against a hand calculation of a simply supported beam loaded at mid-sp
 Design, 9th ed. (2011), Table A-9), the chains it joins and its mass at the valve (its design: in
 tests/links/test_rocker_pivot.py, which designs the appendix example once)."""
 
+import re
 from types import SimpleNamespace
 
 import pytest
 
+from valvetrain import strength
 from valvetrain.layouts import chain, train_mass, unused_part_keys
 from valvetrain.links import ValveBridge
 from valvetrain.locale import note_text
+from valvetrain.report.html import numbered_citations
+from valvetrain.report.russian import russian_citations
 from valvetrain.specification import SpecError, example_spec
 from valvetrain.specification.reading import parse_spec
 from valvetrain.specification.si import si
@@ -33,6 +37,10 @@ def test_its_bending_stress_and_stiffness_by_hand():
     assert "жёсткость на один клапан 24 E I / l^3 = 158760 Н/мм" in note_text(c.note_parts, "ru")
     made, notes = loads(SimpleNamespace(bridge_span=0.040, bridge_width=None, bridge_height=0.012))
     assert ValveBridge().checks(made) == [] and notes == ["bridge_bending: not checked"]
+    # the Russian report says its source's note in Russian (ru.toml [citation_notes]), as numbered in the report
+    page = russian_citations(numbered_citations(f'<span class="cite">{c.source}</span>', "ru"))
+    assert "траверсы клапанов; σ = M / W, M = F l / 4 в среднем сечении, [2, таблица A-9]" in page
+    assert not re.search("taken|bridge|mid-span", page)
 
 
 def test_it_joins_a_chain_with_a_lever_and_adds_its_mass_at_the_valve():
