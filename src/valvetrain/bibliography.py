@@ -8,7 +8,7 @@ script transliterated, with its translation in brackets).  The design report cit
 
 Four of the Russian and Ukrainian documents the package was built from have no title page in the copies used:
 they are described under a descriptive title in the original language, and what the document does not give (its
-authors, place, publisher, year, pages) is said so in words (:data:`NOT_GIVEN`).  The authors and the journal of the
+authors, place, publisher, year, pages) is said so in words (the catalogue's ``[reference_words]``, :mod:`valvetrain.locale`).  The authors and the journal of the
 Ukrainian article are those of its catalogue record (DOI 10.18664/1994-7852.184.2019.171481); the extent of Shang's
 book is its imprint's.  Nothing here is guessed.
 
@@ -25,21 +25,13 @@ from dataclasses import dataclass
 from importlib import resources
 import re
 
+from .locale import catalogue
+
 UNKNOWN = "year not given in the document"
 """The year of a work whose document gives none."""
 
 NO_AUTHORS = "authors not given in the document"
 """The authors of a work whose document names none."""
-
-NOT_GIVEN = {
-    "en": {"authors": "authors", "place": "place", "publisher": "publisher", "year": "year", "pages": "pages",
-           "and": "and", "phrase": "{} not given in the document", "language": "In {}", "note": "Note: {}",
-           "languages": {"Russian": "Russian", "Ukrainian": "Ukrainian", "Chinese": "Chinese", "German": "German"}},
-    "ru": {"authors": "авторы", "place": "место издания", "publisher": "издательство", "year": "год", "pages": "объём",
-           "and": "и", "phrase": "в документе не указано: {}", "language": "На {} языке", "note": "Примечание: {}",
-           "languages": {"Ukrainian": "украинском", "Chinese": "китайском", "German": "немецком"}},
-}
-"""The words of a reference in the report's language: what the document does not give, its language, a note."""
 
 PLAIN_KINDS = ("book", "textbook", "journal article", "article", "conference paper", "standard", "web page")
 """Kinds of work a reference does not name (its form says it); another kind (a teaching manual) follows the title."""
@@ -110,7 +102,7 @@ class Work:
         >>> print(WORKS["shang1988"].reference())
         Shang Hanji. Neiranji peiqi tulun jigou — sheji yu jisuan [Valve cam mechanisms of internal-combustion engines: design and calculation]. – Shanghai : Fudan University Press, 1988. – 236 p. – ISBN 7-309-00035-8. – In Chinese. – Note: Chapter 1 and section 2.1 (design criteria) are used; further sections named by the book's contents are reconstructed by this package, as their docstrings say.
         """
-        words = NOT_GIVEN[lang]
+        words = catalogue(lang)["reference_words"]
         translation = self.translation_ru if lang == "ru" and self.translation_ru else \
             self.translation if lang == "en" or self.translation_ru else ""
         title = self.title + (f" [{translation}]" if translation else "")

@@ -10,14 +10,17 @@ References
 Valve-train practical works (n.d.), works 5 and 7.
 """
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Optional
 
 import numpy as np
 
 from . import flow, masses
-from .followers import follower_of
+from .checks import Check, check
+from .followers import REGISTRY as FOLLOWERS, follower_of
 from .links import REGISTRY as LINKS
+from .links.base import given_keys
+from .locale import note
 
 
 @dataclass(frozen=True)
@@ -66,8 +69,43 @@ def layout(valve) -> str:
 
 
 def chain(valve) -> Layout:
-    """The :class:`Layout` of a valve (SI view or section), by :func:`layout`."""
-    return LAYOUTS[layout(valve)]
+    """The :class:`Layout` of a valve (SI view), by :func:`layout`: its chain, and after it every link that joins it
+    for the valve (:meth:`~valvetrain.links.Link.joins`: a valve bridge where its keys are given)."""
+    own = LAYOUTS[layout(valve)]
+    joined = tuple(name for name, link in LINKS.items() if link.joins(own.links, valve))
+    return replace(own, parts=own.parts + joined) if joined else own
+
+
+def unused_part_keys(valve) -> list[str]:
+    """The ``[valves.NAME.parts]`` keys a valve's section gives (other than their defaults) that only parts it does
+    not have read: a link's outside its layout's chain (:attr:`~valvetrain.links.Link.part_keys`) or another
+    follower's (:attr:`~valvetrain.followers.Follower.part_keys`), in the section's order (SI view of the valve).
+
+    Examples
+    --------
+    The built-in example's intake (a pushrod layout, a flat follower) given a finger's section:
+
+    >>> from valvetrain.specification import example_spec
+    >>> from valvetrain.specification.si import si
+    >>> spec = example_spec().replace({"valves.intake.parts.finger_section_width_mm": 6.0})
+    >>> unused_part_keys(si(spec.valves["intake"]))
+    ['finger_section_width_mm']
+    """
+    section = valve.parts.section
+    own = [part.part_keys for part in (*chain(valve).links, FOLLOWERS[valve.cam.follower])]
+    owned = {key for part in (*LINKS.values(), *FOLLOWERS.values()) for key in part.part_keys}
+    return [key for key in given_keys(section, type(section).model_fields) if key in owned.difference(*own)]
+
+
+def unused_part_checks(valve) -> list[Check]:
+    """A warning for every key of :func:`unused_part_keys`: the number of the valve's parts that read it, 0, against
+    at least 1 (legal input, but a dimension of a part the train does not have is doubtful: a wrong layout or a key
+    left from another design)."""
+    layout_name, follower = chain(valve).name, valve.cam.follower
+    return [check("parts.unused_key", 0, low=1, params={"key": key, "layout": layout_name},
+                  source="Valve-train practical works (n.d.), work 7",
+                  note=note("parts.unused_key", layout=layout_name, follower=follower))
+            for key in unused_part_keys(valve)]
 
 
 def valve_arm(valve) -> Optional[float]:
@@ -81,11 +119,15 @@ def valve_arm(valve) -> Optional[float]:
 def train_mass(valve, spring_mass) -> tuple[float, str]:
     """Reduced mass of a valve's train at the valve [kg] and how it was obtained (SI view; Valve-train practical works (n.d.), eq. 5.2 or the
     specific mass of work 5); ``spring_mass`` [kg] where the part masses leave it to the designed spring.  A finger's
-    inertia counts J / G(psi_0)^2, its value on the heel circle (:func:`valve_arm`)."""
+    inertia counts J / G(psi_0)^2, its value on the heel circle (:func:`valve_arm`); a link that joins the chain adds
+    its mass at the valve (:meth:`~valvetrain.links.Link.valve_mass`: a valve bridge's share)."""
     d = valve.drive
-    return masses.reduced_mass(float(flow.circle_area(valve.throat_diameter)), layout(valve), valve.rocker_ratio,
-                               parts=d.masses, specific_mass=d.specific_mass_kg_m2, valve_arm=valve_arm(valve),
-                               spring_mass=spring_mass)
+    mass, source = masses.reduced_mass(float(flow.circle_area(valve.throat_diameter)), layout(valve),
+                                       valve.rocker_ratio, parts=d.masses, specific_mass=d.specific_mass_kg_m2,
+                                       valve_arm=valve_arm(valve), spring_mass=spring_mass)
+    if d.masses is not None:
+        mass += sum(link.valve_mass(d.masses) for link in chain(valve).links)
+    return mass, source
 
 
 def _inertia(valve) -> float:

@@ -31,6 +31,9 @@ LIMITS = {
     "finger_bending": (150e6, "max", "MPa", "Valve-train practical works (n.d.), eq. (7.15): <= 150 MPa, the bending "
                        "allowable of the rocker gear's steels 20Kh, 40Kh, 45, taken for the finger; sigma = 6 M / (b h^2) "
                        "of its rectangular section, Shigley's Mechanical Engineering Design, 9th ed. (2011)"),
+    "bridge_bending": (150e6, "max", "MPa", "Valve-train practical works (n.d.), eq. (7.15): <= 150 MPa, the bending "
+                       "allowable of the rocker gear's steels, taken for the valve bridge; sigma = M / W, M = F l / 4 "
+                       "at mid-span, Shigley's Mechanical Engineering Design, 9th ed. (2011), Table A-9"),
 }
 """Allowable values: the limit SI (the less strict end of the source's range), its kind, the unit it is shown in
 and its source."""

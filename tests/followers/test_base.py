@@ -74,8 +74,7 @@ def test_the_interface_leaves_nothing_silently_flat():
 
 
 def test_what_a_synthesis_limits_and_the_laws_admitted_are_asked_of_the_follower():
-    """Issue 41: the synthesis, the report and the cam sections ask the follower, not its ``rolling`` and
-    ``law_at_valve`` flags: a roller's contact record gives its pressure angle and concave radius to limit, a flat
+    """Issue 41: the synthesis, the report and the cam sections ask the follower, not its ``rolling`` flag: a roller's contact record gives its pressure angle and concave radius to limit, a flat
     face's nothing; the tangent cam (drawn for a roller on its line, Kolchin and Demidov (1980)) drives the roller
     alone, every other law each follower."""
     from valvetrain.followers.flat import FlatContact
@@ -87,3 +86,6 @@ def test_what_a_synthesis_limits_and_the_laws_admitted_are_asked_of_the_follower
     assert FLAT.limited_contact(FlatContact(0.01)) is None
     assert [name for name, cls in REGISTRY.items() if cls.admits("tangent")] == ["roller"]
     assert all(cls.admits("kurz") and cls.admits("polydyne") for cls in REGISTRY.values())
+    # the specification's rules ask each its own question (specification/validate.py): the finger alone answers yes
+    for question in ("geometric_lever", "pivot_axis", "switchable"):
+        assert [name for name, cls in REGISTRY.items() if getattr(cls, question)] == ["finger"], question

@@ -42,10 +42,23 @@ def test_a_rocker_on_a_shaft_has_no_pivot_ball_and_half_a_pivot_is_named():
 def test_the_pushrod_train_checks_its_pivot_ball_and_refuses_a_seat_no_larger():
     """The appendix example (tappet, pushrod, rocker) with a pivot ball: the check in the design's strength record
     under the largest cam force (its own record) and the rocker ratio 1.6 of the example; a seat no larger than the
-    ball is refused naming both keys."""
+    ball is refused naming both keys.  A finger's section given to its flat follower is a warning of the results
+    naming the key and the layout (no part reads it: it was ignored without a word).  A valve bridge (its span and
+    section given) joins the chain: its bending check under twice the valve force at mid-span, M = 2 F_v l / 4 on
+    W = b h^2 / 6 (Shigley (2011), Table A-9; valvetrain.links.bridge)."""
     design = appendix_design(valves__intake__parts__rocker_pivot_ball_radius_mm=8.0,
-                             valves__intake__parts__rocker_pivot_seat_radius_mm=8.5)
+                             valves__intake__parts__rocker_pivot_seat_radius_mm=8.5,
+                             valves__intake__parts__finger_section_width_mm=6.0,
+                             valves__intake__parts__bridge_span_mm=40.0, valves__intake__parts__bridge_width_mm=14.0,
+                             valves__intake__parts__bridge_height_mm=12.0)
+    (unused,) = [w for w in design.to_dict()["warnings"] if w["code"] == "parts.unused_key"]
+    assert unused["params"] == {"key": "finger_section_width_mm", "layout": "pushrod"}
+    assert unused["severity"] == "warning" and unused["quantity"] == ("intake: parts of the pushrod layout that read "
+                                                                      "[parts] finger_section_width_mm")
     strength = design.valves["intake"].drive.strength
+    (bridge,) = [c for c in strength.checks if c.code == "strength.bridge_bending"]
+    assert bridge.value == pytest.approx(2.0 * strength.valve_force_max * 0.040 / 4.0 / (0.014 * 0.012**2 / 6.0),
+                                         rel=1e-9)
     (c,) = [c for c in strength.checks if c.code == "strength.rocker_pivot_stress"]
     expected = 0.388 * (fulcrum_load(strength.cam_force_max, 1.6) * 2.1e11**2 * (1 / 0.008 - 1 / 0.0085)**2)**(1 / 3)
     assert c.value == pytest.approx(expected, rel=1e-9)

@@ -11,7 +11,7 @@ from valvetrain.report.names import NAMES, label, link_names, value_text
 from valvetrain.report.symbols import NOTATION
 
 TRANSLATED = ("check_words", "stage_words", "note_words", "tolerance_words", "report", "names", "stage_names",
-              "symbols", "name_words")
+              "symbols", "name_words", "worked_symbols")
 """The sections whose every English word has its Russian (``[words]`` has Russian-only forms, ``[optimize_words]``
 names the English quantities the Russian translates in its ``rows``)."""
 

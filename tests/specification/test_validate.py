@@ -77,3 +77,17 @@ def test_a_layout_without_a_lever_needs_rocker_ratio_1(refused):
     assert direct != text
     assert 'valves.intake.drive.layout = "direct" needs rocker_ratio = 1 (got 1.6)' in refused(direct)
     assert parse_spec(text.replace('layout = "pushrod"           # "direct"', 'layout = "rocker"           # "direct"', 1))
+
+
+def test_an_adjuster_axis_at_the_pivot_of_a_follower_without_one_is_refused():
+    """A lash adjuster's axis needs a pivot the follower's geometry places (the follower's ``pivot_axis``): at the
+    pivot of the example's flat follower it is refused, naming the key (no other rule refuses it: fails without)."""
+    from valvetrain.specification import SpecError
+    from valvetrain.specification.reading import parse_spec
+
+    text = example_text().replace("[valves.intake.spring]", '[valves.intake.lash_adjuster]\nlocation = "pivot"\n'
+                                  "axis_angle_deg = 10\n\n[valves.intake.spring]", 1)
+    with pytest.raises(SpecError) as err:
+        parse_spec(text)
+    assert any(p.startswith("valves.intake.lash_adjuster.axis_angle_deg = 10 allowed only at the pivot of a finger")
+               for p in err.value.problems)

@@ -17,7 +17,7 @@ import numpy as np
 from .. import flow, strength
 from ..checks import Check, check
 from ..locale import NoteText, note
-from ..layouts import chain, finger_inertia
+from ..layouts import chain, finger_inertia, unused_part_checks
 from ..links import Loads
 from ..numerics import TIE_RTOL, first_largest
 from ..specification.si import si_name
@@ -272,7 +272,8 @@ def strength_stage(valve, gas, engine, cam, drive, dynamics=None) -> tuple[Stren
     Returns
     -------
     (StrengthResult, list of Check)
-        The strength checks (quantity with spaces) and the follower checks.
+        The strength checks (quantity with spaces), the follower checks and a warning for every key of the parts
+        that no part of the valve's layout reads (:func:`valvetrain.layouts.unused_part_checks`).
 
     Notes
     -----
@@ -306,7 +307,7 @@ def strength_stage(valve, gas, engine, cam, drive, dynamics=None) -> tuple[Stren
                          + bending[1])
     result = replace(result, speed_range=(float(low), float(high)), lowest_speed_source=source,
                      rated_speed=engine.rated_speed)
-    return result, list(result.checks) + found + checks
+    return result, list(result.checks) + found + checks + unused_part_checks(valve)
 
 
 WHERE = {"quasi-static": ("strength.where_quasi_static", "strength.side_quasi_static",

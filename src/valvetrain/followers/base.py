@@ -60,7 +60,7 @@ Write one module in this package with a subclass of :class:`Follower` decorated 
 
   A follower whose lever ratio varies with the lift may return it from :meth:`ratio`; ``LiftLaw.valve_lift``
   multiplies the valve's rocker ratio by it.  The finger (:mod:`.finger`) takes the other way: its law is the
-  valve's (``law_at_valve``, rocker ratio 1), its geometry methods synthesise the cam through its linkage, and it
+  valve's (``geometric_lever``, rocker ratio 1), its geometry methods synthesise the cam through its linkage, and it
   brings the stages its ratio where they reduce through the drive: :meth:`force_ratio` (the cam's normal force per
   unit force at the valve, for the strength and lubrication loads) and :meth:`rest_ratio` (the lash adjuster's motion
   ratio, the dynamics' camshaft link, the rocker-ratio band).  Today's other followers translate on their line of
@@ -73,9 +73,10 @@ Write one module in this package with a subclass of :class:`Follower` decorated 
   ``_multi_train``), reading its mass from ``[drive.masses]``; a reduced inertia that changes with the lift is
   that node's :class:`~valvetrain.dynamics.models.VariableMass` (``design/dynamics.py``, ``finger_mass``).
 
-- the stages, the synthesis, the report and the cam sections of the specification never read ``rolling`` or
-  ``law_at_valve``: what differs between a rolling and a sliding follower (its profile record and checks, what a
-  synthesis limits, its rolling losses, its side load, the laws it admits) is a method here.
+- the stages, the synthesis, the report and the specification never read ``rolling``: what differs between a
+  rolling and a sliding follower (its profile record and checks, what a synthesis limits, its rolling losses, its
+  side load, the laws it admits) is a method here; what the specification's rules need of a follower is a class
+  attribute named by the rule's question (``geometric_lever``, ``pivot_axis``, ``switchable``).
 
 Methods return numpy arrays (floats where the argument is a scalar); none of them mutates its arguments or
 the follower, and they hold no state beyond the follower's dimensions.  Each follower's module has its tests,
@@ -127,10 +128,20 @@ class Follower:
     undercut_code, undercut_source : str
         The code (:mod:`valvetrain.locale`) and the source of the undercut check of the profile (a failure where
         :meth:`undercut`).
-    law_at_valve : bool
-        True where the law is the valve's lift and the cam is synthesised through the follower's linkage (a
-        finger: ``rocker_ratio`` 1, the drive layout ``rocker`` for its inertia); False where the law is the
-        follower's own lift.
+    geometric_lever : bool
+        True where the follower's own geometry is the lever between cam and valve (a finger): its law is the valve's
+        lift and the cam is synthesised through its linkage, so the specification's ``rocker_ratio`` is 1, its valve
+        arm is its geometry's (no ``[drive] valve_arm_mm``) and its inertia about its pivot is the ``rocker``
+        layout's; False where the law is the follower's own lift and the drive's rocker ratio takes it to the valve.
+    pivot_axis : bool
+        True where the follower turns about a pivot its geometry places (a finger), so that a lash adjuster at that
+        pivot may be given an axis of its own (``[lash_adjuster] axis_angle_deg``, :meth:`pivot_linkage`).
+    switchable : bool
+        True where the follower can be the outer body of a switching follower (``[valves.NAME.switching]``): an
+        inner arm of its own carries its roller (a finger).
+    part_keys : tuple of str
+        The ``[valves.NAME.parts]`` keys the follower reads (a flat face's diameter, a finger's section): given with
+        another follower, they are a warning of the design (:func:`valvetrain.layouts.unused_part_keys`).
     """
 
     name: ClassVar[str]
@@ -138,7 +149,10 @@ class Follower:
     radius: float = np.inf
     undercut_code: ClassVar[str]
     undercut_source: ClassVar[str]
-    law_at_valve: ClassVar[bool] = False
+    geometric_lever: ClassVar[bool] = False
+    pivot_axis: ClassVar[bool] = False
+    switchable: ClassVar[bool] = False
+    part_keys: ClassVar[tuple[str, ...]] = ()
 
     @classmethod
     def from_cam(cls, cam) -> "Follower":

@@ -141,7 +141,8 @@ class PivotedFollower(RollerFollower):
     valve_angle: float = 0.0
     tip_offset: float = 0.0
     name = "finger"
-    law_at_valve = True
+    geometric_lever = pivot_axis = switchable = True
+    part_keys = ("finger_section_width_mm", "finger_section_height_mm")
     undercut_source = "Shang Hanji (1988), eq. (2.7); Norton (2009)"
 
     @classmethod

@@ -27,6 +27,7 @@ class FlatFollower(Follower):
     """A flat face square to its line of action, touching the cam h' off the axis (SI)."""
 
     name = "flat"
+    part_keys = ("tappet_face_diameter_mm",)
     undercut_code = "profile.undercut_flat"
     undercut_source = "Shang Hanji (1988), eq. (2.6); Valve-train practical works (n.d.), corrections note 26"
 

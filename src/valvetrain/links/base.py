@@ -11,9 +11,10 @@ roller is carried by the first link (:attr:`Link.carrier`), a flat follower's fa
 For the author of a new link
 ----------------------------
 Write one module in this package with a subclass of :class:`Link` decorated ``@register``, import it in
-``links/__init__.py``, and name it in a layout's chain (:data:`valvetrain.layouts.LAYOUTS`).  Its dimensions are keys
+``links/__init__.py``, and name it in a layout's chain (:data:`valvetrain.layouts.LAYOUTS`), or let it join a chain
+where the valve gives its keys (:meth:`Link.joins`, the valve bridge of :mod:`.bridge`).  Its dimensions are keys
 of ``[valves.NAME.parts]`` (a new pydantic field of ``specification/models.py`` with its README row and report name),
-its mass a key of ``[drive.masses]`` (its node in the elastic train, :meth:`Link.node`; an elastic member's
+named in its ``part_keys``, its mass a key of ``[drive.masses]`` (its node in the elastic train, :meth:`Link.node`; an elastic member's
 stiffness, :meth:`Link.stiffness`); its checks are :func:`valvetrain.strength.verdict` of a new
 :data:`valvetrain.strength.LIMITS` row (and its code's texts, ``tools/check_codes.py add``).  Links hold no state;
 their methods are pure functions of the loads (:class:`Loads`, SI) and return checks, never sentences.
@@ -30,6 +31,13 @@ def register(cls) -> type:
     """Class decorator: add an instance of a link class to :data:`REGISTRY` under its ``name``."""
     REGISTRY[cls.name] = cls()
     return cls
+
+
+def given_keys(section, keys) -> list[str]:
+    """The ``keys`` a section of the specification (the model, its keys in their units) gives other than their
+    defaults, in the order of ``keys``."""
+    fields = type(section).model_fields
+    return [key for key in keys if getattr(section, key) != fields[key].default]
 
 
 @dataclass(frozen=True)
@@ -92,6 +100,9 @@ class Link:
     lever : bool
         Whether the link is a lever whose arms set the rocker ratio i_k = l_v / l_t: a chain without one moves the
         valve as the cam lifts it (i_k = 1).
+    part_keys : tuple of str
+        The ``[valves.NAME.parts]`` keys the link reads (its dimensions): given for a layout without the link, they
+        are a warning of the design (:func:`valvetrain.layouts.unused_part_keys`).
     """
 
     name: ClassVar[str]
@@ -101,6 +112,23 @@ class Link:
     elastic: ClassVar[bool] = False
     joint: ClassVar[str] = ""
     lever: ClassVar[bool] = False
+    part_keys: ClassVar[tuple[str, ...]] = ()
+
+    def given(self, section) -> bool:
+        """Whether a ``[valves.NAME.parts]`` section (the model, its keys in their units) gives one of the link's
+        :attr:`part_keys` (:func:`given_keys`)."""
+        return bool(given_keys(section, self.part_keys))
+
+    def joins(self, links, valve) -> bool:
+        """Whether the link joins a layout's chain ``links`` (:class:`Link` objects) for the valve (SI view) beyond
+        it, after its last link (a valve bridge where its keys are given): no link of the layouts' own chains
+        does."""
+        return False
+
+    def valve_mass(self, masses) -> float:
+        """The mass a link that joins a chain (:meth:`joins`) adds to the train's mass reduced to the valve [kg]
+        (``masses``: SI view of ``[drive.masses]``; :func:`valvetrain.layouts.train_mass`): none."""
+        return 0.0
 
     def checks(self, loads) -> list:
         """The strength checks of the link under ``loads`` (:class:`Loads`), those whose keys are given: none."""

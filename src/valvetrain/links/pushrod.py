@@ -20,6 +20,8 @@ class Pushrod(Link):
     name = "pushrod"
     mass_key = mass_attr = "pushrod_kg"
     elastic = True
+    part_keys = ("pushrod_length_mm", "pushrod_diameter_mm", "pushrod_bore_mm", "pushrod_modulus_MPa", "ball_radius_mm",
+                 "socket_radius_mm", "pushrod_head_area_mm2")
 
     def stiffness(self, parts) -> float | None:
         """Its axial stiffness E A / L (:func:`valvetrain.dynamics.models.pushrod_stiffness`) where its length and

@@ -22,6 +22,8 @@ class Rocker(Link):
     carrier = "strength.carried_by_rocker"
     joint = "rocker and valve joint"
     lever = True
+    part_keys = ("rocker_pad_width_mm", "rocker_pad_radius_mm", "rocker_shaft_span_mm", "rocker_shaft_diameter_mm",
+                 "rocker_shaft_bore_mm", "rocker_width_mm")
 
     def node(self, masses, ratio, arm) -> tuple[str, float]:
         """The rocker's inertia about its shaft on the valve arm, J / l_v^2 [kg] (Valve-train practical works (n.d.),

@@ -35,6 +35,7 @@ class RockerPivot(Link):
     no note)."""
 
     name = "rocker_pivot"
+    part_keys = ("rocker_pivot_ball_radius_mm", "rocker_pivot_seat_radius_mm")
 
     def checks(self, loads) -> list:
         """The contact stress of the pivot ball (``rocker_pivot_ball_radius_mm``) in the rocker's seat

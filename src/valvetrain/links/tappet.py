@@ -20,6 +20,7 @@ class Tappet(Link):
     mass_key = mass_attr = "tappet_kg"
     carrier = "strength.carried_by_guide"
     joint = "valve stem and tappet"
+    part_keys = ("tappet_diameter_mm", "tappet_guide_length_mm")
 
     def checks(self, loads) -> list:
         """The side pressure on the guide, q = 6 P_T b / (d l^2) (:func:`valvetrain.strength.tappet_side_pressure`),

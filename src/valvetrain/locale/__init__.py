@@ -17,6 +17,10 @@ in this folder, loaded once:
   the meanings of the report's symbols (:mod:`valvetrain.report.names`, :mod:`valvetrain.report.symbols`);
   ``[values]``, ``[segments]``, ``[links]`` (not in ``en.toml``: their English is the key itself) the text values of
   the records, the lift law's segments and the drive links;
+* ``LANG.toml`` ``[reference_words]``: the words of a reference in the list of sources (:mod:`valvetrain.bibliography`);
+  ``[worked_symbols]``: the worked examples' symbols whose index is a word; ``ru.toml`` ``[citation_notes]``,
+  ``[citation_locators]``, ``[citation_units]`` (keyed by the English): the Russian of the report's citations
+  (:mod:`valvetrain.report.russian`);
 * ``LANG.toml`` ``[notes]``: the notes of the checks (how a value was obtained: where, at which speed), each a code
   with parameters (:func:`note`), rendered by :func:`note_text` in every language, its numbers by
   :func:`number_text`.

@@ -14,12 +14,19 @@ import numpy as np
 from .. import strength
 from ..design.results import shown_value
 from ..laws.asymmetric import AsymmetricLaw
+from ..locale import catalogue
 from ..units import to_display
 from .numbers import SUPERSCRIPTS, number
 from .names import unit_text
 
 LARGE = 1e6
 """A substituted number of this size or more prints as a power of ten (a modulus in Pa), not in whole units."""
+
+
+def _symbol(key, lang) -> str:
+    """A symbol of a worked example whose index is a word of the language (``v_vp``, ``v_вп``): ``LANG.toml``
+    ``[worked_symbols]``."""
+    return catalogue(lang)["worked_symbols"][key]
 
 
 def _number(x, lang):
@@ -109,7 +116,7 @@ def time_area_lines(flow, cam, engine, count, lift_table, lang="en") -> list[dic
     event = (shown_value(cam, "valve_closes") - shown_value(cam, "valve_opens")) / 2.0
     return [
         _line("V‴", "V_h / (i ∫f dt)", ("{} / ({} × {})", [(vh, "cm3"), (count, ""), (ta, "mm2 s")]), v3, "m/s", lang),
-        _line("v_вп" if lang == "ru" else "v_vp", "V_h / ∫f dt", ("{} / {}", [(vh, "cm3"), (ta, "mm2 s")]), vvp, "m/s",
+        _line(_symbol("v_vp", lang), "V_h / ∫f dt", ("{} / {}", [(vh, "cm3"), (ta, "mm2 s")]), vvp, "m/s",
               lang),
         _line("ξ", "∫h_v dφ / (h_v max Φ)", ("{} / ({} × {})", [(area, "mm cam deg"), (lift, "mm"),
                                                                (event, "cam deg")]),
@@ -261,7 +268,7 @@ def spring_lines(spring, material=None, cam_speed=None, lang="en") -> list[dict[
                                                     (material.density, "kg/m3")]), omega, "rad/s", lang),
     ]
     if cam_speed is not None:
-        lines.append(_line("ω_c1 / ω_" + ("р" if lang == "ru" else "cam"), "",
+        lines.append(_line(_symbol("cam_speed_ratio", lang), "",
                            ("{} / {}", [(omega, "rad/s"), (cam_speed, "rad/s")]), ratio, "", lang))
     return lines
 
@@ -294,15 +301,14 @@ def strength_lines(parts, result, lift_table, follower, lang="en", roller_radius
     contact, force = checks.get("strength.cam_contact_stress"), shown_value(result, "contact_force")
     if contact is not None and force is not None:
         rho = float(np.interp(shown_value(result, "contact_stress_angle"), lift_table["cam_deg"], lift_table["rho_mm"]))
-        factor, symbol = strength.HERTZ_LINE, "σ_к" if lang == "ru" else "σ_c"
+        factor, symbol = strength.HERTZ_LINE, _symbol("contact_stress", lang)
         if follower == "flat":
             lines.append(_line(symbol, f"{number(factor, lang)} √(P E / (b ρ))", (
                 "{} × √({} × {} / ({} × {}))",
                 [(factor, ""), (force, "N"), (parts.contact_modulus_MPa, "MPa"), (parts.cam_width_mm, "mm"),
                  (rho, "mm")]), contact.shown_value, "MPa", lang))
         elif follower in ("roller", "finger") and roller_radius:
-            lines.append(_line(symbol, f"{number(factor, lang)} √(P E (1/ρ + 1/r_рол) / b)" if lang == "ru" else
-                               f"{number(factor, lang)} √(P E (1/ρ + 1/r_r) / b)", (
+            lines.append(_line(symbol, f"{number(factor, lang)} {_symbol('roller_hertz', lang)}", (
                 "{} × √({} × {} × (1/{} + 1/{}) / {})",
                 [(factor, ""), (force, "N"), (parts.contact_modulus_MPa, "MPa"), (rho, "mm"),
                  (roller_radius, "mm"), (parts.cam_width_mm, "mm")]), contact.shown_value, "MPa", lang))
@@ -342,9 +348,9 @@ def crank_lines(figures, lang="en") -> list[dict[str, Any]]:
         "stroke", "speed", "lam", "offset", "max_acceleration", "centrifugal_force"))
     r, omega = stroke / 2e3, np.pi * n / 30.0
     lines = [
-        _line("m_j", "m_п + m_ш.п" if lang == "ru" else "m_p + m_rod,p", ("{} + {}", [(mp, "kg"), (mrp, "kg")]), mj,
+        _line("m_j", _symbol("reciprocating_mass", lang), ("{} + {}", [(mp, "kg"), (mrp, "kg")]), mj,
               "kg", lang),
-        _line("m_r", "m_к + m_ш.к" if lang == "ru" else "m_c + m_rod,c", ("{} + {}", [(mc, "kg"), (mrc, "kg")]), mr,
+        _line("m_r", _symbol("rotating_mass", lang), ("{} + {}", [(mc, "kg"), (mrc, "kg")]), mr,
               "kg", lang),
         _line("ω", "π n / 30", ("π × {} / 30", [(n, "rpm")]), omega, "rad/s", lang),
     ]

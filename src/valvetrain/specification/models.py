@@ -85,6 +85,7 @@ class Masses(_Model):
     pushrod_kg: _bounded(0.0, 20.0, low_open=False) = 0.0
     tappet_kg: _bounded(0.0, 20.0, low_open=False) = 0.0
     rocker_inertia_kg_mm2: _bounded(0.0, 1e7, "kg mm2", low_open=False) = 0.0
+    bridge_kg: Optional[_bounded(0.0, 20.0, "kg")] = None
 
 
 class Drive(_Model):
@@ -193,6 +194,9 @@ class Parts(_Model):
     rocker_pivot_seat_radius_mm: Optional[Length(0.5, 100.0, low_open=False)] = None
     finger_section_width_mm: Optional[Length(0.5, 100.0, low_open=False)] = None
     finger_section_height_mm: Optional[Length(0.5, 100.0, low_open=False)] = None
+    bridge_span_mm: Optional[Length(5.0, 500.0, low_open=False)] = None
+    bridge_width_mm: Optional[Length(1.0, 200.0, low_open=False)] = None
+    bridge_height_mm: Optional[Length(1.0, 200.0, low_open=False)] = None
 
     @model_validator(mode="after")
     def _consistent(self):

@@ -45,12 +45,12 @@ def _valve_problems(name, v, engine):
         out.append(Problem(f"{at}.clearance_mm", "allowed 0 with a lash_adjuster section (it leaves no lash on the "
                            "base circle for a ramp to take up)", f"{v.clearance_mm:g}"))
     axis = None if v.lash_adjuster is None else v.lash_adjuster.axis_angle_deg
-    if axis is not None and (v.lash_adjuster.location != "pivot" or not FOLLOWERS[v.cam.follower].law_at_valve):
+    if axis is not None and (v.lash_adjuster.location != "pivot" or not FOLLOWERS[v.cam.follower].pivot_axis):
         out.append(Problem(f"{at}.lash_adjuster.axis_angle_deg", "allowed only at the pivot of a finger given by its "
                            "geometry (location = \"pivot\", cam.follower = \"finger\"): a tappet's adjuster moves "
                            "along the tappet, a rocker's of a given rocker_ratio along the straight lever's normal",
                            f"{axis:g}", " "))
-    if v.switching is not None and not FOLLOWERS[v.cam.follower].law_at_valve:
+    if v.switching is not None and not FOLLOWERS[v.cam.follower].switchable:
         out.append(Problem(f"{at}.switching", "allowed only on a finger given by its geometry (cam.follower = "
                            f"\"finger\"), not with cam.follower = {v.cam.follower!r}: the switching finger's inner arm "
                            "carries the finger's roller"))
@@ -79,7 +79,7 @@ def _valve_problems(name, v, engine):
             and v.rocker_ratio != 1.0):
         out.append(Problem(f"{at}.drive.layout", f"needs rocker_ratio = 1 (got {v.rocker_ratio:g})",
                            f"\"{v.drive.layout}\"", " "))
-    if FOLLOWERS[v.cam.follower].law_at_valve:
+    if FOLLOWERS[v.cam.follower].geometric_lever:
         if v.rocker_ratio != 1.0:
             out.append(Problem(f"{at}.rocker_ratio", f"allowed 1 with cam.follower = \"{v.cam.follower}\" (the law is "
                                "the valve's; the finger's ratio follows from its geometry)", f"{v.rocker_ratio:g}"))
@@ -99,6 +99,11 @@ def _valve_problems(name, v, engine):
     elif v.drive.masses is not None and v.drive.masses.rocker_inertia_kg_mm2 > 0 and v.drive.valve_arm_mm is None:
         out.append(Problem(f"{at}.drive.masses.rocker_inertia_kg_mm2", "needs drive.valve_arm_mm (the valve-side "
                            "rocker arm)", f"{v.drive.masses.rocker_inertia_kg_mm2:g}"))
+    if v.drive.masses is not None and v.drive.masses.bridge_kg is not None and v.dynamics is not None \
+            and v.dynamics.model == "multi":
+        out.append(Problem(f"{at}.drive.masses.bridge_kg", "not allowed with dynamics.model = \"multi\": the "
+                           "multi-mass train has no node of a valve bridge; allowed with the one-mass train (\"1dof\"), "
+                           "whose reduced mass carries it", f"{v.drive.masses.bridge_kg:g}"))
     if v.piston_gap_tdc_mm is not None and engine.rod_length_mm is None:
         out.append(Problem(f"{at}.piston_gap_tdc_mm", "needs engine.rod_length_mm for the piston kinematics",
                            joiner=" "))
