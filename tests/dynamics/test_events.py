@@ -1,10 +1,12 @@
 """The events of a recorded revolution (valvetrain.dynamics.events): runs of a mask, a sweep's events at once against
 each speed's own, the bounce height between the samples against a second integrator (DOP853)."""
 
+import itertools
+
 import numpy as np
 import pytest
 
-from valvetrain.dynamics.events import bounces, runs
+from valvetrain.dynamics.events import bounces, runs, seatings
 from valvetrain.dynamics.models import one_mass_train
 from valvetrain.dynamics.sweep import sweep
 
@@ -16,6 +18,26 @@ def test_runs():
     assert runs(np.zeros(4, dtype=bool)).shape == (0, 2)
     assert runs(np.array([1, 0, 0, 1], dtype=bool)).tolist() == [[0, 1], [3, 4]]
     assert runs(np.ones(3, dtype=bool)).tolist() == [[0, 3]]
+
+
+def test_the_compiled_scans_of_bounces_and_seatings_against_their_definitions():
+    """bounces' largest lift and returns after the first seating, and seatings' first sample at or below the seat
+    after the largest lift (compiled scans over each row) against their definitions in plain Python, over random rows
+    with nan samples, rows that never rise above the seat, and first seatings before, inside and beyond the row."""
+    rng = np.random.default_rng(7)
+    lift = rng.normal(size=(60, 12))
+    lift[rng.random(lift.shape) < 0.05] = np.nan
+    lift[:3] = [[-1.0], [0.0], [2.0]]
+    first = rng.integers(-2, 15, lift.shape[0])
+    height, count = bounces(lift, first, 0.3)
+    index = seatings(np.arange(12.0), lift, np.zeros_like(lift))[0]
+    for y, f, h, c, i in zip(lift, first, height, count, index, strict=True):
+        after = y[max(f, 0):]
+        largest = np.nan if np.isnan(after).any() else max(after, default=0.0)
+        assert h == pytest.approx(max(largest, 0.0), nan_ok=True)
+        assert c == sum(up for up, _ in itertools.groupby(after > 0.3))
+        top = int(np.flatnonzero(np.isnan(y))[0]) if np.isnan(y).any() else int(np.flatnonzero(y == y.max())[0])
+        assert i == (next((j for j in range(top, 12) if y[j] <= 0.0), 12) if y[top] > 0.0 else 12)
 
 
 def test_the_events_of_a_sweep_at_once_are_each_speeds_own():

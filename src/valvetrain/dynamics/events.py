@@ -64,13 +64,8 @@ def seating(theta, lift, velocity, acceleration=None, step_time=None) -> tuple[i
 def seatings(theta, lift, velocity, acceleration=None, step_time=None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """:func:`seating` of every row of (S, n) records (one a speed) at once: (index, angle [rad], velocity [m/s]),
     arrays (S,); ``step_time`` [s] a scalar or one per row (the Taylor series' roots of :func:`_seat_times`)."""
-    n = lift.shape[-1]
-    every = np.arange(lift.shape[0])
-    top = np.argmax(lift, axis=-1)
-    down = (lift <= 0.0) & (np.arange(n) >= top[:, None])
-    seated = (lift[every, top] > 0.0) & down.any(axis=-1)
-    i = np.where(seated, np.argmax(down, axis=-1), n)
-    k = np.flatnonzero(seated)
+    i = _seat_indices(np.ascontiguousarray(lift, dtype=float))
+    k = np.flatnonzero(i < lift.shape[-1])
     index, angle, vel = i, np.full(i.shape, np.nan), np.full(i.shape, np.nan)
     if not k.size:
         return index, angle, vel
@@ -89,6 +84,29 @@ def seatings(theta, lift, velocity, acceleration=None, step_time=None) -> tuple[
     t = _seat_times(y0, v, a, jerk, h, w * h)
     angle[k], vel[k] = t0 + t / h * (t1 - t0), v + a * t + 0.5 * jerk * t * t
     return index, angle, vel
+
+
+@njit(cache=True, nogil=True)
+def _seat_indices(lift) -> np.ndarray:
+    """The first sample at or below the seat from the largest lift on (the first of equal ones, the first nan) of each
+    row of ``lift`` (S, n) [m], where that lift is positive; else n.  Compiled: the whole-array version (the masks of
+    every sample, two first-True searches) took a sixth of a sweep's events."""
+    count, n = lift.shape
+    out = np.full(count, n, dtype=np.int64)
+    for r in range(count):
+        y = lift[r]
+        top = 0
+        for j in range(1, n):
+            if y[top] != y[top]:
+                break
+            if y[j] > y[top] or y[j] != y[j]:
+                top = j
+        if y[top] > 0.0:
+            for j in range(top, n):
+                if y[j] <= 0.0:
+                    out[r] = j
+                    break
+    return out
 
 
 def _seat_times(y, v, a, jerk, h, fallback) -> np.ndarray:
@@ -143,14 +161,32 @@ def bounces(lift, first_seating, tolerance=BOUNCE_TOLERANCE, velocity=None, step
 
     With the ``velocity`` [m/s] records and ``step_time`` (the time between samples [s], a scalar or one per row) the
     largest lift is the peak between the samples (:func:`peak_between`), else the largest sample."""
-    after = np.arange(lift.shape[-1]) >= first_seating[:, None]
-    above = (lift > tolerance) & after
-    count = np.count_nonzero(above[:, :1], axis=-1) + np.count_nonzero(above[:, 1:] & ~above[:, :-1], axis=-1)
-    largest = np.max(lift, axis=-1, where=after, initial=-np.inf)
+    first_seating = np.asarray(first_seating, dtype=np.int64)
+    largest, top, count = _after_seating(np.ascontiguousarray(lift, dtype=float), first_seating, float(tolerance))
     if velocity is not None:
-        top = np.argmax(np.where(after, lift, -np.inf), axis=-1)
+        after = np.arange(lift.shape[-1]) >= first_seating[:, None]
         largest = np.maximum(largest, peak_between(lift, velocity, top, step_time, after))
-    return np.where(after.any(axis=-1) & ~(0.0 > largest), largest, 0.0), count
+    return np.where((first_seating < lift.shape[-1]) & ~(0.0 > largest), largest, 0.0), count
+
+
+@njit(cache=True, nogil=True)
+def _after_seating(lift, first_seating, tolerance) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Of each row of ``lift`` (S, n) [m] from its sample ``first_seating`` (S,) on: the largest lift (nan if one is
+    nan, -inf if none), its sample (the first of equal ones, the first nan; 0 if none) and the runs of samples above
+    ``tolerance``, compiled (:func:`bounces`: the whole-array masks took a third of a sweep's events)."""
+    count, n = lift.shape
+    largest, top, runs = np.full(count, -np.inf), np.zeros(count, dtype=np.int64), np.zeros(count, dtype=np.int64)
+    for r in range(count):
+        y = lift[r]
+        above = False
+        for j in range(max(first_seating[r], 0), n):
+            v = y[j]
+            if largest[r] == largest[r] and (v > largest[r] or v != v):
+                largest[r], top[r] = v, j
+            if v > tolerance and not above:
+                runs[r] += 1
+            above = v > tolerance
+    return largest, top, runs
 
 
 def peak_between(lift, velocity, top, step_time, valid=None) -> np.ndarray:

@@ -512,8 +512,8 @@ def merged(parts) -> SweepResult:
 
 
 def speeds_of(result, index) -> SweepResult:
-    """The :class:`SweepResult` of the speeds ``index`` (an integer array) of ``result``, with their events where
-    ``result`` has found its own."""
+    """The :class:`SweepResult` of the speeds ``index`` (an integer array, or a slice: views of ``result``'s rows, no
+    copy) of ``result``, with their events where ``result`` has found its own."""
     out = replace(result, **{f: getattr(result, f)[index] for f in PER_SPEED_FIELDS if getattr(result, f) is not None})
     if "events" in vars(result):
         vars(out)["events"] = SweepEvents(*(getattr(result.events, f.name)[index] for f in fields(SweepEvents)))
@@ -587,9 +587,9 @@ def headline_sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, bounce_t
             both = sweep(law, train, np.concatenate([speeds[idx], also]), revolutions, step_deg,
                          bounce_tolerance=bounce_tolerance)
             both.events     # noqa: B018 - found once here; merged() joins the parts' events
-            parts.append(speeds_of(both, np.arange(idx.size)) if also.size else both)
+            parts.append(speeds_of(both, slice(0, idx.size)) if also.size else both)
             done[idx] = True
-            return np.flatnonzero(done), merged(parts), speeds_of(both, idx.size + np.arange(also.size))
+            return np.flatnonzero(done), merged(parts), speeds_of(both, slice(idx.size, None))
         return np.flatnonzero(done), merged(parts), None
 
     ends = np.flatnonzero(inside)[[0, -1]] if inside.any() else []
