@@ -164,9 +164,12 @@ def test_the_train_built_from_the_links_is_the_hand_written_train(name):
     from valvetrain.dynamics.models import direct_train, pushrod_train, rocker_train
 
     k = 1.0 if name == "direct" else 1.6
+    from valvetrain.specification.models import Parts
+
     masses = SimpleNamespace(valve_kg=0.06, retainer_kg=0.01, cotters_kg=0.004, tappet_kg=0.03, pushrod_kg=0.035,
-                             rocker_inertia=40e-6)
-    valve = SimpleNamespace(drive=SimpleNamespace(layout=name, masses=masses), rocker_ratio=k)
+                             rocker_inertia=40e-6, bridge_kg=None)
+    valve = SimpleNamespace(drive=SimpleNamespace(layout=name, masses=masses), rocker_ratio=k,
+                            parts=SimpleNamespace(section=Parts()))
     springs, lash, kw, arm, m = [CoilSpring(4e4, 300.0, 0.03, 0.0, 4)], 2e-4, {"damping_ratio": 0.05}, 0.04, 0.074
     links = {"pushrod": (3.6e8, 3.8e7, 4.5e7), "rocker": (3.6e8, 4.5e7), "direct": (3.6e8, 4.5e7)}[name]
     by_hand = {"pushrod": lambda: pushrod_train(0.03, 0.035, 40e-6, m, arm, k, links[0] * k**2, links[1] * k**2,
