@@ -103,6 +103,17 @@ def test_the_variable_valve_actuation_examples_open(page, servers, example):
     page.locator(".bk-tab", has_text=re.compile("^Lost motion, switching$")).click()
     expect(page.locator(".bk-tab.bk-active", has_text=re.compile("^Lost motion, switching$"))).to_be_visible()
     assert len(model_data(page, "vva-rows")["item"]) > 0 and len(model_data(page, "vva")["label"]) >= 2
+    # issue 40's pictures of a finger in the page: the spring plot's ranges hold the chosen spring's line (a finger's
+    # was cut), the curvature is drawn as 1/rho with the limit of the smallest convex radius, 1/(2 mm) (the switching
+    # finger's rho passes through -21,500 mm at the flanks' inflections: drawn as rho, the spikes flattened the plot)
+    curves = model_data(page, "curves")
+    for plot, axis, column in (("spring", "x", "spring_line_x"), ("spring", "y", "spring_line_y"),
+                               ("curvature", "y", "curvature"), ("curvature", "y", "curvature_limit")):
+        drawn = [v for v in curves[column] if v == v]
+        start, end = page.evaluate(f"() => {{ const r = Bokeh.documents[0].get_model_by_name('plot-{plot}')"
+                                   f".{axis}_range; return [r.start, r.end]; }}")
+        assert drawn and start <= min(drawn) and max(drawn) <= end, column
+    assert max(v for v in curves["curvature_limit"] if v == v) == pytest.approx(0.5) and end - start < 1.0
     assert page.errors == []
 
 
