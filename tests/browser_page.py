@@ -1,12 +1,19 @@
-"""The designer's page in Debian's chromium driven by Playwright, for the browser tests of web/: its servers (``valvetrain
-serve`` in a process of its own, or :func:`valvetrain.web.server` in this one), a tab opened on one and the page's
-state read and waited for (every wait is on the page's state, none a fixed sleep)."""
+"""The designer's page in Debian's chromium driven by Playwright, for the browser tests of web/: its servers
+(``valvetrain serve`` in a process of its own, or :func:`valvetrain.web.server` in this one), a tab opened on one and
+the page's state read and waited for (every wait is on the page's state, none a fixed sleep)."""
 
 import asyncio
 import re
 import subprocess
 import sys
 import threading
+
+import pytest
+
+pytest.importorskip("bokeh")
+pytest.importorskip("playwright")       # the test files importing this module skipped without them
+
+from playwright.sync_api import expect  # noqa: E402,F401  (the tests' assertions on the page)
 
 
 def served(*files):
@@ -82,6 +89,21 @@ def opened(page, url):
                            " && window.vt !== undefined"
                            " && Bokeh.documents[0].get_model_by_name('checks').source.get_length() > 0", timeout=WAIT_MS)
     return page
+
+
+def answered(page, url):
+    """``page`` opened on ``url`` (:func:`opened`) after checking that the server answered it (HTTP 200: a page that
+    fails to build answers 500) and that the page logged no error."""
+    assert page.goto(url, wait_until="commit").status == 200
+    opened(page, url)
+    assert page.errors == []
+    return page
+
+
+def plot_range(page, plot, axis):
+    """``[start, end]`` of the ``axis`` ("x", "y") range of plot ``plot`` as the page holds it."""
+    return page.evaluate(f"() => {{ const r = Bokeh.documents[0].get_model_by_name('plot-{plot}').{axis}_range;"
+                         " return [r.start, r.end]; }")
 
 
 def model_data(page, name):

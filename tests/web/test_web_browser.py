@@ -14,12 +14,7 @@ import sys
 
 import pytest
 
-pytest.importorskip("bokeh")
-pytest.importorskip("playwright")
-
-from playwright.sync_api import expect  # noqa: E402
-
-from browser_page import (VIEWPORT, WAIT_MS, at_pixels, choose, drag, fill, model_data, opened, pixels,  # noqa: E402
+from browser_page import (VIEWPORT, WAIT_MS, at_pixels, choose, drag, expect, fill, model_data, opened, pixels,
                           redrawn_count, served, value, wait_checks, wait_redrawn)
 
 EXAMPLES = Path(__file__).parents[2] / "examples"

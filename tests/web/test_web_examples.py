@@ -12,14 +12,9 @@ import tomllib
 
 import pytest
 
-pytest.importorskip("bokeh")
-pytest.importorskip("playwright")
-
-from playwright.sync_api import expect  # noqa: E402
-
-from appendix import PATH as APPENDIX  # noqa: E402
-from browser_page import (WAIT_MS, Servers, at_pixels, drag, fill, model_data, opened, pixels,  # noqa: E402
-                          redrawn_count, value, wait_checks, wait_redrawn)
+from appendix import PATH as APPENDIX
+from browser_page import (WAIT_MS, Servers, answered, at_pixels, drag, expect, fill, model_data, opened, pixels,
+                          plot_range, redrawn_count, value, wait_checks, wait_redrawn)
 
 EXAMPLES = Path(__file__).parents[2] / "examples"
 
@@ -86,11 +81,7 @@ def test_rated_speed_flips_a_check(page, appendix_url):
 
 def test_the_measured_lobe_example_opens(page, servers):
     # issue 40: examples/measured-lobe.toml (a lift table in a file) answered HTTP 500 on every load
-    url = servers.url(EXAMPLES / "measured-lobe.toml")
-    response = page.goto(url, wait_until="commit")
-    assert response.status == 200
-    opened(page, url)
-    assert page.errors == []
+    answered(page, servers.url(EXAMPLES / "measured-lobe.toml"))
     assert model_data(page, "handles-lift")["name"] == []         # the file's points are the file's
     assert value(page, "valves.intake.cam.table_file") == "data/measured-intake-lobe.csv"
 
@@ -110,8 +101,7 @@ def test_the_variable_valve_actuation_examples_open(page, servers, example):
     for plot, axis, column in (("spring", "x", "spring_line_x"), ("spring", "y", "spring_line_y"),
                                ("curvature", "y", "curvature"), ("curvature", "y", "curvature_limit")):
         drawn = [v for v in curves[column] if v == v]
-        start, end = page.evaluate(f"() => {{ const r = Bokeh.documents[0].get_model_by_name('plot-{plot}')"
-                                   f".{axis}_range; return [r.start, r.end]; }}")
+        start, end = plot_range(page, plot, axis)
         assert drawn and start <= min(drawn) and max(drawn) <= end, column
     assert max(v for v in curves["curvature_limit"] if v == v) == pytest.approx(0.5) and end - start < 1.0
     assert page.errors == []
@@ -122,11 +112,7 @@ def test_a_specification_without_valves_is_served(page, servers):
     # HTTP 500 (a KeyError); issue 40: every shipped example opens, this one with its engine's keys and checks
     from valvetrain.web.draw import WORDS
 
-    url = servers.url(EXAMPLES / "v8-crank.toml")
-    response = page.goto(url, wait_until="commit")
-    assert response.status == 200
-    opened(page, url)
-    assert page.errors == []
+    answered(page, servers.url(EXAMPLES / "v8-crank.toml"))
     expect(page.get_by_text(WORDS["en"]["no_valves"])).to_be_visible()
 
 
@@ -136,8 +122,7 @@ def test_drag_of_a_peak_raises_the_acceleration_and_changes_the_checks(page, die
     curves = model_data(page, "curves")
     for axis, column in (("x", "spring_line_x"), ("y", "spring_line_y")):
         line = [v for v in curves[column] if v == v]
-        start, end = page.evaluate(f"() => {{ const r = Bokeh.documents[0].get_model_by_name('plot-spring')"
-                                   f".{axis}_range; return [r.start, r.end]; }}")
+        start, end = plot_range(page, "spring", axis)
         assert line and start <= min(line) and max(line) <= end, column
     before = model_data(page, "checks")["value"]
     handles = model_data(page, "handles-acceleration")
