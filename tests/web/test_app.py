@@ -22,6 +22,21 @@ from designer_page import _designer, _field, _request, _row, _swept  # noqa: E40
 EXAMPLES = Path(__file__).parents[2] / "examples"
 
 
+@pytest.fixture(scope="module")
+def shown():
+    """A designer per example made once for the tests that only read it (a designer's page is 1.5-3.5 s of Bokeh
+    models): ``shown()`` on the built-in example, ``shown(name)`` on examples/name."""
+    made = {}
+
+    def get(name=None):
+        if name not in made:
+            path = None if name is None else EXAMPLES / name
+            made[name] = _designer() if path is None else _designer(path.read_text(encoding="utf-8"), path.parent)
+        return made[name]
+
+    return get
+
+
 def test_page_callbacks():
     d = _designer(appendix_text())
     quantity = "intake: V' (throat velocity)"
@@ -110,27 +125,27 @@ def test_edits_the_page_kept_come_back_after_a_reload():
     assert again.status.text == WORDS["en"]["restored"]
     assert again.session.undo() and again.session.document["valves"]["intake"]["max_lift_mm"] == 9.0
     # a kept document that no longer designs leaves the file's design, and says so
+    # (the page after its undo: the file's design)
     bad = json.loads(kept)
     bad["engine"]["bore_mm"] = 3.0
-    third = _designer()
-    _request(third, "restore", text=json.dumps(bad))
-    assert third.session.document["engine"]["bore_mm"] == 80.0 and "allowed [5, 2000] mm" in third.status.text
+    _request(again, "restore", text=json.dumps(bad))
+    assert again.session.document["engine"]["bore_mm"] == 80.0 and "allowed [5, 2000] mm" in again.status.text
 
 
-def test_a_kept_document_nested_beyond_the_parser_is_ignored_as_text_that_is_not_json():
+def test_a_kept_document_nested_beyond_the_parser_is_ignored_as_text_that_is_not_json(shown):
     """fuzz7: a 'restore' whose text nests 5000 arrays raised RecursionError out of json.loads in the server's
     callback (only ValueError was caught); it is ignored as a text that is not JSON is."""
-    d = _designer()
+    d = shown()
     before = d.session.document
     _request(d, "restore", text="[" * 5000 + "]" * 5000)
     assert d.session.document is before and d.session.good["ok"]
 
 
-def test_a_point_sent_for_a_valve_without_a_lift_table_changes_nothing():
+def test_a_point_sent_for_a_valve_without_a_lift_table_changes_nothing(shown):
     """fuzz7: a table point added or removed (page.js's add, remove) on a valve whose cam is a law, not an inline lift
     table (a page drawn before the law changed), raised KeyError 'table_angle' in the server's callback; now the good
     design is drawn again, unchanged."""
-    d = _designer()
+    d = shown()
     before = d.session.document
     _request(d, "add", "", 0.0, 5.0)
     _request(d, "remove", "nose")
@@ -163,9 +178,9 @@ def test_serve_on_a_port_in_use_is_one_line():
                                           "in use); give another --port (0: any free port) or --host"]
 
 
-def test_accepted_failures_say_so_in_words():
+def test_accepted_failures_say_so_in_words(shown):
     # issue 40: accepted failures showed green with negative margins; the built-in example accepts six
-    d = _designer()
+    d = shown()
     data = d.checks.data
     accepted = [i for i, k in enumerate(data["key"]) if k in {c["quantity"] for c in d.session.good["results"]["checks"]
                                                               if c["accepted"] and not c["pass"]}]
@@ -178,10 +193,9 @@ def test_accepted_failures_say_so_in_words():
 
 
 @pytest.mark.parametrize("example", ["ukrsurt2019-diesel.toml", "modern-dohc-roller-finger.toml"])
-def test_the_spring_plot_shows_the_chosen_springs_line(example):
+def test_the_spring_plot_shows_the_chosen_springs_line(shown, example):
     # issue 40: the spring plot's range hid the chosen spring's line (diesel) or cut it (finger)
-    path = EXAMPLES / example
-    d = _designer(path.read_text(encoding="utf-8"), path.parent)
+    d = shown(example)
     curves = d.curves.data
     x, y = d.figures["spring"].x_range, d.figures["spring"].y_range
     for column, rng in (("spring_line_x", x), ("spring_x", x), ("spring_line_y", y), ("spring_y", y)):
@@ -190,11 +204,10 @@ def test_the_spring_plot_shows_the_chosen_springs_line(example):
         assert rng.start <= values.min() and values.max() <= rng.end, column
 
 
-def test_the_curvature_plot_is_one_over_rho_with_its_limit():
+def test_the_curvature_plot_is_one_over_rho_with_its_limit(shown):
     # issue 40: the roller finger's radius of curvature passes through infinity at the flanks' inflections (-21,000 mm
     # spikes flattened the plot); 1/rho passes through zero there
-    path = EXAMPLES / "modern-dohc-roller-finger.toml"
-    d = _designer(path.read_text(encoding="utf-8"), path.parent)
+    d = shown("modern-dohc-roller-finger.toml")
     series = d.session.good["series"]["intake"]
     rho = np.array(series["rho_mm"], dtype=float)
     assert np.nanmin(rho) < -10000.0
@@ -225,8 +238,8 @@ def test_overlay_of_a_file_and_the_dxf_of_the_contour():
     assert data.startswith(dxf_bytes(run(example_spec()).valves["intake"])) and data.endswith(b"999\ndownload 1\n")
 
 
-def test_the_cam_card_gives_the_events_the_lobe_separation_and_the_overlap():
-    d = _designer()
+def test_the_cam_card_gives_the_events_the_lobe_separation_and_the_overlap(shown):
+    d = shown()
     card = {q: (i, e) for q, i, e in zip(d.card.data["quantity"], d.card.data["intake"], d.card.data["exhaust"],
                                          strict=True)}
     # the built-in example's keys: the intake opens 26 crank deg before TDC and closes 78 after BDC (258 from the
@@ -259,8 +272,8 @@ def test_a_drag_sends_only_the_sources_that_change():
     assert d.curves in changed and d.base_curves not in changed
 
 
-def test_curves_sent_to_the_page_are_thinned_to_what_the_plots_show():
-    d = _designer()
+def test_curves_sent_to_the_page_are_thinned_to_what_the_plots_show(shown):
+    d = shown()
     series = d.session.good["series"]["intake"]
     curves = d.curves.data
     # the spring's required force: about 2000 points against the lift, sent with at most 402; its largest force
@@ -280,7 +293,7 @@ def test_curves_sent_to_the_page_are_thinned_to_what_the_plots_show():
                                                     strict=True))
 
 
-def test_the_breathing_panel_follows_an_edit_of_the_intake_closing():
+def test_the_breathing_panel_follows_an_edit_of_the_intake_closing(shown):
     # issue 40: "once the breathing exists, its VE curve redrawn after an edit"
     d = _designer(breathing_text())
     curve = d.breathing["curve"].data
@@ -295,7 +308,7 @@ def test_the_breathing_panel_follows_an_edit_of_the_intake_closing():
     assert after[0] > before[0]
     assert not d.torque_axis.visible                      # motored: no torque
     # without [breathing] the panel says so
-    assert _designer().breathing_status.text == WORDS["en"]["no_breathing"]
+    assert shown().breathing_status.text == WORDS["en"]["no_breathing"]
 
 
 def test_the_breathing_panel_shows_a_cam_phasers_best_phase():
@@ -313,8 +326,6 @@ def test_the_breathing_panel_shows_a_cam_phasers_best_phase():
     assert np.isnan(phased["torque"]).all()
     assert d.breathing_status.text == WORDS["en"]["phased"].format(valve="intake", best=", ".join(
         f"{b['advance_crank_deg']:.3g} at {b['speed_rpm']:.0f} rpm" for b in best))
-
-
 
 
 def test_a_release_where_the_pointer_last_moved_paints_nothing_again():

@@ -16,6 +16,14 @@ from valvetrain.web.session import Session  # noqa: E402
 from designer_page import _designer, _field, _request, _run_callbacks, _swept  # noqa: E402
 
 
+@pytest.fixture(scope="module")
+def swept():
+    """The built-in example's designer with its sweep drawn, made once (a designer and a whole design with its sweeps
+    are seconds) for the tests below in their order: the panel read, the speed of the dynamics at speed chosen, then
+    an edit and the other valve shown."""
+    return _swept(_designer())
+
+
 def test_sweep_starts_when_the_page_has_drawn_the_newest_kinematics():
     d = _designer()
     started = []
@@ -60,35 +68,10 @@ def test_checks_of_the_sweeps_are_pending_until_the_whole_design_comes():
     assert "…" not in d.checks.data["value"]
 
 
-def test_the_sweep_panel_comes_from_the_valve_alone_before_the_whole_design():
-    d = _swept(_designer())
-    d.on_field(_field(d, "engine.rated_speed_rpm"), "value", 7000, 6500)
-    # the valve's sweep alone is the whole design's sweep of it (the same series from the two designs)
-    alone = Session.sweep_one(d.session.document, "intake")
-    whole = Session.settle(d.session.document)
-    assert alone == whole["sweeps"]["intake"]
-    # drawn first, with the page's probe stamped for the release that asked for it; the checks of the dynamics
-    # still pending until the whole design comes, which stamps nothing the probe counts
-    d.draw_sweep_of(d.generation, "intake", alone, _now(), 7)
-    assert d.sweep_stamp.data["seq"] == [7]
-    assert len(d.sweep_sources["force"].data["y"]) == len(alone["speed_rpm"])
-    assert "pending" in d.checks.data["status"]
-    # the other valve shown before the whole design comes: its sweep is to come, not the intake's in its place
-    d.on_valve("value", "intake", "exhaust")
-    assert d.sweep_status.text == WORDS["en"]["sweeping"]
-    d.draw_sweep(d.generation, whole, _now(), 0)
-    assert d.sweep_stamp.data["seq"] == [0] and "pending" not in d.checks.data["status"]
-    assert list(d.sweep_sources["force"].data["y"]) == whole["sweeps"]["exhaust"]["min_contact_force_N"]
-    # a valve the whole design does not sweep: without a [dynamics] section beside one with it
-    mixed = copy.deepcopy(d.session.document)
-    del mixed["valves"]["exhaust"]["dynamics"]
-    assert Session.sweep_one(mixed, "exhaust") is None
-
-
-def test_the_sweep_plots_have_their_own_axes_and_the_map_its_colour_bar():
+def test_the_sweep_plots_have_their_own_axes_and_the_map_its_colour_bar(swept):
     # issue 40: the seating velocity plot took the force plot's axis (0-800 N) through the shared marks of the jump
     # and bounce speeds, and showed a flat line; the lift-error map had no colour bar
-    d = _swept(_designer())
+    d = swept
     seating = np.abs(np.array(d.sweep_sources["seating"].data["y"], dtype=float))
     seating = seating[np.isfinite(seating)]
     rng = d.figures["sweep_seating"].y_range
@@ -101,8 +84,8 @@ def test_the_sweep_plots_have_their_own_axes_and_the_map_its_colour_bar():
     assert d.mapper.high == pytest.approx(np.nanmax(np.abs(d.map_source.data["image"][0])))
 
 
-def test_the_dynamics_against_the_angle_at_a_chosen_speed():
-    d = _swept(_designer())
+def test_the_dynamics_against_the_angle_at_a_chosen_speed(swept):
+    d = swept
     sweep = d.sweeps["intake"]
     # at first the swept speed nearest the rated one (7000 rpm)
     speeds = np.array(sweep["speed_rpm"])
@@ -124,6 +107,31 @@ def test_the_dynamics_against_the_angle_at_a_chosen_speed():
     assert np.nanmax(rigid) == pytest.approx(np.interp(d.at_speed.data["x"], series["cam_deg"],
                                                        series["valve_acceleration_m_s2"]).max()
                                              * (speeds[5] / 7000.0) ** 2, rel=1e-9)
+
+
+def test_the_sweep_panel_comes_from_the_valve_alone_before_the_whole_design(swept):
+    d = swept
+    d.on_field(_field(d, "engine.rated_speed_rpm"), "value", 7000, 6500)
+    # the valve's sweep alone is the whole design's sweep of it (the same series from the two designs)
+    alone = Session.sweep_one(d.session.document, "intake")
+    whole = Session.settle(d.session.document)
+    assert alone == whole["sweeps"]["intake"]
+    # drawn first, with the page's probe stamped for the release that asked for it; the checks of the dynamics
+    # still pending until the whole design comes, which stamps nothing the probe counts
+    d.draw_sweep_of(d.generation, "intake", alone, _now(), 7)
+    assert d.sweep_stamp.data["seq"] == [7]
+    assert len(d.sweep_sources["force"].data["y"]) == len(alone["speed_rpm"])
+    assert "pending" in d.checks.data["status"]
+    # the other valve shown before the whole design comes: its sweep is to come, not the intake's in its place
+    d.on_valve("value", "intake", "exhaust")
+    assert d.sweep_status.text == WORDS["en"]["sweeping"]
+    d.draw_sweep(d.generation, whole, _now(), 0)
+    assert d.sweep_stamp.data["seq"] == [0] and "pending" not in d.checks.data["status"]
+    assert list(d.sweep_sources["force"].data["y"]) == whole["sweeps"]["exhaust"]["min_contact_force_N"]
+    # a valve the whole design does not sweep: without a [dynamics] section beside one with it
+    mixed = copy.deepcopy(d.session.document)
+    del mixed["valves"]["exhaust"]["dynamics"]
+    assert Session.sweep_one(mixed, "exhaust") is None
 
 
 def test_an_edit_sweeps_each_valve_once(monkeypatch):
