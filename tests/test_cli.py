@@ -291,3 +291,26 @@ def test_the_report_is_one_file(example_run):
     html = (out / "report.html").read_text(encoding="utf-8")
     assert html.count('src="data:image/png;base64,') == len(list((out / "plots").glob("*.png")))
     assert 'src="plots/' not in html
+
+
+def test_a_progress_bar_is_drawn_on_a_terminal_and_erased_at_its_end(monkeypatch):
+    """A long step's bar goes to a terminal's standard error and is erased when the step ends (the line cleared, no
+    newline left), so that an error printed next stands alone; a pipe gets nothing."""
+    import io
+
+    from valvetrain import cli
+
+    class Terminal(io.StringIO):
+        def isatty(self):
+            return True
+
+    monkeypatch.setattr(cli._Progress, "AFTER", 0.0)
+    for stream, drawn in ((Terminal(), True), (io.StringIO(), False)):
+        monkeypatch.setattr(sys, "stderr", stream)
+        progress = cli._Progress()
+        progress("intake", 0, 4)
+        progress("intake", 2, 4)
+        assert ("intake: speed sweep" in stream.getvalue()) is drawn
+        progress("intake", 4, 4)
+        assert stream.getvalue().endswith("\r\x1b[K") if drawn else stream.getvalue() == ""
+        assert "\n" not in stream.getvalue()

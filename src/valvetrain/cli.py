@@ -101,8 +101,10 @@ STRICT_HELP = ("Exit with status 1 when a failure is open (a failed limit not ac
 
 
 class _Progress:
-    """``progress(name, done, total)`` of a speed sweep: a bar on standard error once a sweep promises to take more
-    than :attr:`AFTER` seconds (a short sweep prints nothing)."""
+    """``progress(name, done, total)`` of a long step (a speed sweep, the points of a study, the generations of an
+    optimisation): a bar on standard error once the step promises to take more than :attr:`AFTER` seconds, on a
+    terminal only, erased when the step ends.  A short step, a pipe or a file get nothing, and a command that then
+    refuses its input prints its error lines alone."""
 
     AFTER = 1.0
 
@@ -115,7 +117,8 @@ class _Progress:
             self.close()
             self.start, self.shown = now, 0
             return
-        if self.bar is None and (now - self.start) * total / done > self.AFTER and done < total:
+        if (self.bar is None and (now - self.start) * total / done > self.AFTER and done < total
+                and sys.stderr.isatty()):
             self.bar = click.progressbar(length=total, label=f"{name}: {self.what}", file=sys.stderr)
             self.bar.__enter__()
         if self.bar is not None:
@@ -125,8 +128,10 @@ class _Progress:
                 self.close()
 
     def close(self):
+        """Erase the bar (the line it was drawn on)."""
         if self.bar is not None:
-            self.bar.__exit__(None, None, None)
+            self.bar.file.write("\r\x1b[K")
+            self.bar.file.flush()
             self.bar = None
 
 
@@ -354,18 +359,22 @@ def optimize(file, out, valve, objective, vary, no_jump, cam_width, seating_velo
         click.echo(f"error: {err}", err=True)
         sys.exit(2)
     no_jump = spec.engine.over_speed_ratio if no_jump is None else no_jump
-    with click.progressbar(length=maxiter, label="optimize", file=sys.stderr) as bar:
-        try:
-            result = optimize_valve(spec, valve, variables, objective,
-                                    None if wheel_radius is None else wheel_radius * MM, no_jump or None,
-                                    seed=seed, maxiter=maxiter, progress=lambda generation, best: bar.update(1),
-                                    cam_width=None if cam_width is None else cam_width * MM,
-                                    seating_velocity=seating_velocity)
-        except SpecError as err:
-            _fail_spec(err)
-        except ValueError as err:
-            click.echo(f"error: {err}", err=True)
-            sys.exit(2)
+    progress = _Progress("generations")
+    progress("optimize", 0, maxiter)
+    try:
+        result = optimize_valve(spec, valve, variables, objective,
+                                None if wheel_radius is None else wheel_radius * MM, no_jump or None,
+                                seed=seed, maxiter=maxiter,
+                                progress=lambda generation, best: progress("optimize", generation, maxiter),
+                                cam_width=None if cam_width is None else cam_width * MM,
+                                seating_velocity=seating_velocity)
+    except SpecError as err:
+        _fail_spec(err)
+    except ValueError as err:
+        click.echo(f"error: {err}", err=True)
+        sys.exit(2)
+    finally:
+        progress.close()
     if not result.feasible:
         click.echo(f"error: no point of the search meets every limit ({result.evaluations} evaluations, start "
                    "included); nothing written. The limits that fail:", err=True)

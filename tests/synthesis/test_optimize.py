@@ -203,6 +203,8 @@ def test_bad_variables_are_refused_before_the_search(tmp_path, args, message):
     r = CliRunner().invoke(main, ["optimize", str(UKRSURT), "--out", str(tmp_path / "o"), *args])
     assert r.exit_code == 2 and message in r.output, r.output
     assert not (tmp_path / "o").exists()
+    # the error alone: the progress bar's label 'optimize' was printed before it
+    assert all(line.startswith("error: ") for line in r.output.splitlines()), r.output
 
 
 @pytest.mark.parametrize("example, args, message", [
