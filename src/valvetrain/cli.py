@@ -100,6 +100,17 @@ STRICT_HELP = ("Exit with status 1 when a failure is open (a failed limit not ac
                "use in CI; the outputs are written all the same.")
 
 
+class _Range(click.FloatRange):
+    """A bounded real option that refuses NaN too (click's own range lets NaN through: no comparison with it is
+    true)."""
+
+    def convert(self, value, param, ctx):
+        number = super().convert(value, param, ctx)
+        if number != number:
+            self.fail(f"{number} is not in the range {self._describe_range()}.", param, ctx)
+        return number
+
+
 class _Progress:
     """``progress(name, done, total)`` of a long step (a speed sweep, the points of a study, the generations of an
     optimisation): a bar on standard error once the step promises to take more than :attr:`AFTER` seconds, on a
@@ -305,17 +316,17 @@ def _headline(d):
 @click.option("--vary", "vary", multiple=True, metavar="KEY=LOW,HIGH",
               help="A numeric key under [valves.NAME] and its bounds (repeatable), e.g. cam.phi1_deg=20,35 or "
                    "drive.spring_reserve=1.5,2.25; default: the law's own variables.")
-@click.option("--no-jump", "no_jump", default=None, type=click.FloatRange(0.0, 3.0),
+@click.option("--no-jump", "no_jump", default=None, type=_Range(0.0, 3.0),
               help="No follower separation up to this multiple of the rated speed (one-mass train of the valve's "
                    "[dynamics] section or its estimates); 0 leaves the dynamics out. Default: [engine] "
                    "over_speed_ratio (1.1 unless given).")
-@click.option("--cam-width", "cam_width", default=None, type=click.FloatRange(1.0, 200.0), metavar="MM",
+@click.option("--cam-width", "cam_width", default=None, type=_Range(1.0, 200.0), metavar="MM",
               help="Cam width [mm] of the Hertz contact stress; default: the valve's parts.cam_width_mm, else half "
                    "the base radius (a narrow cam, so the stress is not understated).")
-@click.option("--seating-velocity", "seating_velocity", default=None, type=click.FloatRange(0.01, 10.0),
+@click.option("--seating-velocity", "seating_velocity", default=None, type=_Range(0.01, 10.0),
               metavar="M_S", help="Largest valve seating velocity [m/s] (kinematic in the search, the dynamics "
                                   "sweep's too at the end); default: no such limit.")
-@click.option("--wheel-radius", "wheel_radius", default=None, type=click.FloatRange(5.0, 1000.0),
+@click.option("--wheel-radius", "wheel_radius", default=None, type=_Range(5.0, 1000.0),
               metavar="MM", help="Grinding wheel radius [mm] that a roller follower cam's concave stretches must "
                                  "take; default: the valve's [grinding] section's, else no such limit.")
 @click.option("--seed", default=1, show_default=True, type=int, help="Seed of the differential evolution.")

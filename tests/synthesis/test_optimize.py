@@ -228,3 +228,12 @@ def test_a_file_without_valves_is_refused(tmp_path):
     r = CliRunner().invoke(main, ["optimize", str(EXAMPLES / "v8-crank.toml"), "--out", str(tmp_path / "o")])
     assert r.exit_code == 2 and "no [valves.NAME] section" in r.output, r.output
     assert isinstance(r.exception, SystemExit)
+
+
+@pytest.mark.parametrize("option", ["--no-jump", "--cam-width", "--seating-velocity", "--wheel-radius"])
+def test_a_nan_limit_is_refused_by_its_option(tmp_path, option):
+    """A fuzz run (fuzz8): click's FloatRange let 'nan' through (no comparison with NaN is true); --seating-velocity
+    nan ran a search to 'allowed 0...nan m/s', --no-jump nan a sweep with a RuntimeWarning and wrote an optimum."""
+    r = CliRunner().invoke(main, ["optimize", str(UKRSURT), "--out", str(tmp_path / "o"), option, "nan"])
+    assert r.exit_code == 2 and f"Invalid value for '{option}': nan is not in the range" in r.output, r.output
+    assert not (tmp_path / "o").exists()
