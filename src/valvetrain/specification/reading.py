@@ -10,7 +10,7 @@ import tomllib
 
 import tomli_w
 
-from ..files import shown_path
+from ..files import read_text, shown_path
 from .messages import Problem, SpecError
 from .engine_sections import resolve_path
 from .models import Spec, validate
@@ -62,7 +62,7 @@ def parse_spec(text, source="<string>", source_dir=None) -> Spec:
 def load_spec(path) -> Spec:
     """Read and validate a specification file."""
     try:
-        text = Path(path).read_text(encoding="utf-8")
+        text = read_text(path)
     except OSError as exc:
         raise SpecError([Problem(shown_path(path), f"cannot read the file: {exc.strerror or exc}")]) from None
     except UnicodeDecodeError as exc:
