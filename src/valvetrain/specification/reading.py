@@ -11,7 +11,7 @@ import tomllib
 import tomli_w
 
 from ..files import read_text, shown_path
-from .messages import Problem, SpecError
+from .messages import WHOLE_FILE, Problem, SpecError
 from .engine_sections import resolve_path
 from .models import Spec, validate
 
@@ -56,7 +56,11 @@ def parse_spec(text, source="<string>", source_dir=None) -> Spec:
         raise SpecError([Problem(source, "arrays or tables nested too deeply to be a specification")]) from None
     if source_dir is not None and isinstance(data, dict):
         data["source_dir"] = str(source_dir)
-    return validate(data)
+    try:
+        return validate(data)
+    except SpecError as err:
+        raise SpecError([Problem(source, p.message, p.value) if p.path == WHOLE_FILE else p
+                         for p in err.problems]) from None
 
 
 def load_spec(path) -> Spec:
