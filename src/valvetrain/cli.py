@@ -329,7 +329,8 @@ def _headline(d):
 @click.option("--wheel-radius", "wheel_radius", default=None, type=_Range(5.0, 1000.0),
               metavar="MM", help="Grinding wheel radius [mm] that a roller follower cam's concave stretches must "
                                  "take; default: the valve's [grinding] section's, else no such limit.")
-@click.option("--seed", default=1, show_default=True, type=int, help="Seed of the differential evolution.")
+@click.option("--seed", default=1, show_default=True, type=click.IntRange(0, 2 ** 32 - 1),
+              help="Seed of the differential evolution.")
 @click.option("--maxiter", default=60, show_default=True, type=click.IntRange(1, 10000),
               help="Generations of the differential evolution.")
 @click.option("--lang", type=click.Choice(["en", "ru"]), default="en", show_default=True,
