@@ -79,7 +79,9 @@ def test_validate_accepts_the_example(tmp_path):
 
 BAD = [
     ("bore_mm = 80.0", "", ["engine.bore_mm: required key is missing"]),
-    ("bore_mm = 80.0", 'bore_mm = "80"', ["engine.bore_mm = '80': Input should be a valid number"]),
+    # a unit string was 'Input should be a valid number', without the range (fuzz8)
+    ("bore_mm = 80.0", 'bore_mm = "80"',
+     ["engine.bore_mm = '80': must be a number, without quotes or a unit; allowed [5, 2000] mm"]),
     ("bore_mm = 80.0", "bore_mm = -80.0", ["engine.bore_mm = -80.0: allowed [5, 2000] mm"]),
     ("phi2_deg = 6.0", "phi2_deg = 7.0", ["valves.intake.cam: phi1_deg + phi2_deg + phi3_deg = 72 cam deg must "
                                           "equal the half-angle phi_p0"]),
