@@ -466,6 +466,10 @@ def study(file, grid_items, out, workers, scheduler, max_points, force) -> None:
                         with_values)
 
     _load(file)
+    if scheduler is not None and workers > 1:
+        click.echo("error: --workers and --scheduler: give one (the cluster's workers evaluate the points)", err=True)
+        sys.exit(2)
+    inputs = _check_out(out, [file], [], force)
     try:
         grid = parse_grid(grid_items)
         document = read_document(file)
@@ -478,10 +482,6 @@ def study(file, grid_items, out, workers, scheduler, max_points, force) -> None:
     except GridError as err:
         click.echo(f"error: {err}", err=True)
         sys.exit(2)
-    if scheduler is not None and workers > 1:
-        click.echo("error: --workers and --scheduler: give one (the cluster's workers evaluate the points)", err=True)
-        sys.exit(2)
-    inputs = _check_out(out, [file], [], force)
     progress = _Progress("design points")
     start = time.monotonic()
     stopped = None
