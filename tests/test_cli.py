@@ -79,7 +79,9 @@ def test_validate_accepts_the_example(tmp_path):
 
 BAD = [
     ("bore_mm = 80.0", "", ["engine.bore_mm: required key is missing"]),
-    ("bore_mm = 80.0", 'bore_mm = "80"', ["engine.bore_mm = '80': Input should be a valid number"]),
+    # a unit string was 'Input should be a valid number', without the range (fuzz8)
+    ("bore_mm = 80.0", 'bore_mm = "80"',
+     ["engine.bore_mm = '80': must be a number, without quotes or a unit; allowed [5, 2000] mm"]),
     ("bore_mm = 80.0", "bore_mm = -80.0", ["engine.bore_mm = -80.0: allowed [5, 2000] mm"]),
     ("phi2_deg = 6.0", "phi2_deg = 7.0", ["valves.intake.cam: phi1_deg + phi2_deg + phi3_deg = 72 cam deg must "
                                           "equal the half-angle phi_p0"]),
@@ -291,3 +293,26 @@ def test_the_report_is_one_file(example_run):
     html = (out / "report.html").read_text(encoding="utf-8")
     assert html.count('src="data:image/png;base64,') == len(list((out / "plots").glob("*.png")))
     assert 'src="plots/' not in html
+
+
+def test_a_progress_bar_is_drawn_on_a_terminal_and_erased_at_its_end(monkeypatch):
+    """A long step's bar goes to a terminal's standard error and is erased when the step ends (the line cleared, no
+    newline left), so that an error printed next stands alone; a pipe gets nothing."""
+    import io
+
+    from valvetrain import cli
+
+    class Terminal(io.StringIO):
+        def isatty(self):
+            return True
+
+    monkeypatch.setattr(cli._Progress, "AFTER", 0.0)
+    for stream, drawn in ((Terminal(), True), (io.StringIO(), False)):
+        monkeypatch.setattr(sys, "stderr", stream)
+        progress = cli._Progress()
+        progress("intake", 0, 4)
+        progress("intake", 2, 4)
+        assert ("intake: speed sweep" in stream.getvalue()) is drawn
+        progress("intake", 4, 4)
+        assert stream.getvalue().endswith("\r\x1b[K") if drawn else stream.getvalue() == ""
+        assert "\n" not in stream.getvalue()

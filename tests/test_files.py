@@ -112,3 +112,19 @@ def test_valve_lift_and_cd_files(tmp_path):
         with pytest.raises(BreathingFileError, match=message) as caught:
             (read_valve_lift if key == "lift_file" else read_cd_table)(path)
         assert caught.value.key == key
+
+
+def test_a_file_that_never_ends_is_refused(monkeypatch):
+    """A fuzz run (fuzz8): cam.table_file = "/dev/zero" (or FILE /dev/zero) read until the machine's memory ran out,
+    a MemoryError traceback; reading stops after MAX_FILE_CHARACTERS (made small here) and names the file."""
+    from valvetrain import files
+    from valvetrain.specification import SpecError, load_spec
+
+    monkeypatch.setattr(files, "MAX_FILE_CHARACTERS", 1000)
+    with pytest.raises(TableFileError, match=r"^/dev/zero: cannot read the file: over 1,000 characters, more than a "
+                                             r"specification or a table holds$"):
+        read_lift_table("/dev/zero")
+    with pytest.raises(SpecError) as err:
+        load_spec("/dev/zero")
+    assert err.value.problems == ["/dev/zero: cannot read the file: over 1,000 characters, more than a specification "
+                                  "or a table holds"]

@@ -71,6 +71,22 @@ def test_dask_cluster_gives_the_same_table(spec_file, serial, tmp_path, monkeypa
         assert study(spec_file, tmp_path / "out", "--scheduler", cluster.scheduler_address) == serial
 
 
+def test_the_options_and_the_out_folder_are_refused_before_a_design_is_timed(spec_file, tmp_path, monkeypatch):
+    """A fuzz run (fuzz8): --workers with --scheduler, and an --out holding a user's file, were refused after the
+    design of FILE timed for the estimate of the study's time (seconds for a file with dynamics)."""
+    def timed(point, document):
+        raise AssertionError("a design timed before the options were checked")
+
+    monkeypatch.setattr(study_module, "_timed", timed)
+    (tmp_path / "mine").mkdir()
+    (tmp_path / "mine" / "notes.txt").write_text("mine\n", encoding="utf-8")
+    for options, said in ((["--workers", "2", "--scheduler", "tcp://127.0.0.1:1"], "error: --workers and --scheduler"),
+                          (["--out", str(tmp_path / "mine")], "holds notes.txt, which valvetrain did not write")):
+        result = CliRunner().invoke(main, ["study", str(spec_file), *GRID, "--out", str(tmp_path / "o"), *options])
+        assert result.exit_code == 2 and said in result.output, result.output
+    assert not (tmp_path / "o").exists() and (tmp_path / "mine" / "notes.txt").read_text(encoding="utf-8") == "mine\n"
+
+
 def test_scheduler_without_dask_is_an_error(spec_file, tmp_path, monkeypatch):
     import sys
 

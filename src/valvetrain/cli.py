@@ -100,9 +100,22 @@ STRICT_HELP = ("Exit with status 1 when a failure is open (a failed limit not ac
                "use in CI; the outputs are written all the same.")
 
 
+class _Range(click.FloatRange):
+    """A bounded real option that refuses NaN too (click's own range lets NaN through: no comparison with it is
+    true)."""
+
+    def convert(self, value, param, ctx):
+        number = super().convert(value, param, ctx)
+        if number != number:
+            self.fail(f"{number} is not in the range {self._describe_range()}.", param, ctx)
+        return number
+
+
 class _Progress:
-    """``progress(name, done, total)`` of a speed sweep: a bar on standard error once a sweep promises to take more
-    than :attr:`AFTER` seconds (a short sweep prints nothing)."""
+    """``progress(name, done, total)`` of a long step (a speed sweep, the points of a study, the generations of an
+    optimisation): a bar on standard error once the step promises to take more than :attr:`AFTER` seconds, on a
+    terminal only, erased when the step ends.  A short step, a pipe or a file get nothing, and a command that then
+    refuses its input prints its error lines alone."""
 
     AFTER = 1.0
 
@@ -115,7 +128,8 @@ class _Progress:
             self.close()
             self.start, self.shown = now, 0
             return
-        if self.bar is None and (now - self.start) * total / done > self.AFTER and done < total:
+        if (self.bar is None and (now - self.start) * total / done > self.AFTER and done < total
+                and sys.stderr.isatty()):
             self.bar = click.progressbar(length=total, label=f"{name}: {self.what}", file=sys.stderr)
             self.bar.__enter__()
         if self.bar is not None:
@@ -125,8 +139,10 @@ class _Progress:
                 self.close()
 
     def close(self):
+        """Erase the bar (the line it was drawn on)."""
         if self.bar is not None:
-            self.bar.__exit__(None, None, None)
+            self.bar.file.write("\r\x1b[K")
+            self.bar.file.flush()
             self.bar = None
 
 
@@ -300,20 +316,21 @@ def _headline(d):
 @click.option("--vary", "vary", multiple=True, metavar="KEY=LOW,HIGH",
               help="A numeric key under [valves.NAME] and its bounds (repeatable), e.g. cam.phi1_deg=20,35 or "
                    "drive.spring_reserve=1.5,2.25; default: the law's own variables.")
-@click.option("--no-jump", "no_jump", default=None, type=click.FloatRange(0.0, 3.0),
+@click.option("--no-jump", "no_jump", default=None, type=_Range(0.0, 3.0),
               help="No follower separation up to this multiple of the rated speed (one-mass train of the valve's "
                    "[dynamics] section or its estimates); 0 leaves the dynamics out. Default: [engine] "
                    "over_speed_ratio (1.1 unless given).")
-@click.option("--cam-width", "cam_width", default=None, type=click.FloatRange(1.0, 200.0), metavar="MM",
+@click.option("--cam-width", "cam_width", default=None, type=_Range(1.0, 200.0), metavar="MM",
               help="Cam width [mm] of the Hertz contact stress; default: the valve's parts.cam_width_mm, else half "
                    "the base radius (a narrow cam, so the stress is not understated).")
-@click.option("--seating-velocity", "seating_velocity", default=None, type=click.FloatRange(0.01, 10.0),
+@click.option("--seating-velocity", "seating_velocity", default=None, type=_Range(0.01, 10.0),
               metavar="M_S", help="Largest valve seating velocity [m/s] (kinematic in the search, the dynamics "
                                   "sweep's too at the end); default: no such limit.")
-@click.option("--wheel-radius", "wheel_radius", default=None, type=click.FloatRange(5.0, 1000.0),
+@click.option("--wheel-radius", "wheel_radius", default=None, type=_Range(5.0, 1000.0),
               metavar="MM", help="Grinding wheel radius [mm] that a roller follower cam's concave stretches must "
                                  "take; default: the valve's [grinding] section's, else no such limit.")
-@click.option("--seed", default=1, show_default=True, type=int, help="Seed of the differential evolution.")
+@click.option("--seed", default=1, show_default=True, type=click.IntRange(0, 2 ** 32 - 1),
+              help="Seed of the differential evolution.")
 @click.option("--maxiter", default=60, show_default=True, type=click.IntRange(1, 10000),
               help="Generations of the differential evolution.")
 @click.option("--lang", type=click.Choice(["en", "ru"]), default="en", show_default=True,
@@ -354,18 +371,22 @@ def optimize(file, out, valve, objective, vary, no_jump, cam_width, seating_velo
         click.echo(f"error: {err}", err=True)
         sys.exit(2)
     no_jump = spec.engine.over_speed_ratio if no_jump is None else no_jump
-    with click.progressbar(length=maxiter, label="optimize", file=sys.stderr) as bar:
-        try:
-            result = optimize_valve(spec, valve, variables, objective,
-                                    None if wheel_radius is None else wheel_radius * MM, no_jump or None,
-                                    seed=seed, maxiter=maxiter, progress=lambda generation, best: bar.update(1),
-                                    cam_width=None if cam_width is None else cam_width * MM,
-                                    seating_velocity=seating_velocity)
-        except SpecError as err:
-            _fail_spec(err)
-        except ValueError as err:
-            click.echo(f"error: {err}", err=True)
-            sys.exit(2)
+    progress = _Progress("generations")
+    progress("optimize", 0, maxiter)
+    try:
+        result = optimize_valve(spec, valve, variables, objective,
+                                None if wheel_radius is None else wheel_radius * MM, no_jump or None,
+                                seed=seed, maxiter=maxiter,
+                                progress=lambda generation, best: progress("optimize", generation, maxiter),
+                                cam_width=None if cam_width is None else cam_width * MM,
+                                seating_velocity=seating_velocity)
+    except SpecError as err:
+        _fail_spec(err)
+    except ValueError as err:
+        click.echo(f"error: {err}", err=True)
+        sys.exit(2)
+    finally:
+        progress.close()
     if not result.feasible:
         click.echo(f"error: no point of the search meets every limit ({result.evaluations} evaluations, start "
                    "included); nothing written. The limits that fail:", err=True)
@@ -445,6 +466,10 @@ def study(file, grid_items, out, workers, scheduler, max_points, force) -> None:
                         with_values)
 
     _load(file)
+    if scheduler is not None and workers > 1:
+        click.echo("error: --workers and --scheduler: give one (the cluster's workers evaluate the points)", err=True)
+        sys.exit(2)
+    inputs = _check_out(out, [file], [], force)
     try:
         grid = parse_grid(grid_items)
         document = read_document(file)
@@ -457,10 +482,6 @@ def study(file, grid_items, out, workers, scheduler, max_points, force) -> None:
     except GridError as err:
         click.echo(f"error: {err}", err=True)
         sys.exit(2)
-    if scheduler is not None and workers > 1:
-        click.echo("error: --workers and --scheduler: give one (the cluster's workers evaluate the points)", err=True)
-        sys.exit(2)
-    inputs = _check_out(out, [file], [], force)
     progress = _Progress("design points")
     start = time.monotonic()
     stopped = None

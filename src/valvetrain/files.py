@@ -7,6 +7,7 @@ specification's SI view converts them, the physics takes arrays.
 
 import csv
 from dataclasses import dataclass
+import errno
 import io
 from pathlib import Path
 import re
@@ -31,9 +32,32 @@ def shown_path(path, limit=120) -> str:
     return text if len(text) <= limit else f"{text[:40]}...{text[-(limit - 43):]}"
 
 
+MAX_FILE_CHARACTERS = 50_000_000
+"""Most characters read from a file (about 50 MB): a measured lift table of a million rows has about 20 million; a
+device that never ends (/dev/zero) or a file of another kind is refused instead of taking the machine's memory."""
+
+
+def read_text(path) -> str:
+    """The UTF-8 text of ``path`` (newlines as text mode reads them), of at most :data:`MAX_FILE_CHARACTERS`.
+
+    Raises
+    ------
+    OSError
+        The file cannot be read, or is longer (``strerror`` says so).
+    UnicodeDecodeError
+        The file is not UTF-8 text.
+    """
+    with open(path, encoding="utf-8") as f:
+        text = f.read(MAX_FILE_CHARACTERS + 1)
+    if len(text) > MAX_FILE_CHARACTERS:
+        raise OSError(errno.EFBIG, f"over {MAX_FILE_CHARACTERS:,} characters, more than a specification or a table "
+                                   "holds")
+    return text
+
+
 def _text(path, error):
     try:
-        return Path(path).read_text(encoding="utf-8")
+        return read_text(path)
     except OSError as exc:
         raise error(f"{shown_path(path)}: cannot read the file: {exc.strerror or exc}") from None
     except UnicodeDecodeError as exc:

@@ -221,9 +221,10 @@ def write_spec(tmp_path, dynamics):
 
 
 def test_sweep_command(tmp_path, monkeypatch):
-    """`valvetrain sweep` writes dynamics.json, the CSV and the plots; a progress bar goes to standard error only
-    (forced here: this sweep is faster than the second after which it appears; the bar updates after each chunk
-    of 25 speeds)."""
+    """`valvetrain sweep` writes dynamics.json, the CSV and the plots; a progress bar goes to a terminal's standard
+    error only (forced here: this sweep is faster than the second after which it appears; the bar updates after each
+    chunk of 25 speeds), and is erased when the sweep ends; a pipe gets none.  Input refused after a sweep (a
+    [lubrication] section without the cam's width) prints its error alone: the bar's label was printed before it."""
     from click.testing import CliRunner
 
     from valvetrain import cli
@@ -234,7 +235,7 @@ def test_sweep_command(tmp_path, monkeypatch):
     result = CliRunner().invoke(cli.main, ["sweep", str(f), "--out", str(out)])
     assert result.exit_code == 0, result.output
     assert "intake: jump" in result.stdout and "speed sweep" not in result.stdout
-    assert "intake: speed sweep" in result.stderr
+    assert not [line for line in result.stderr.splitlines() if not line.startswith("compiling the dynamics kernels")]
     data = json.loads((out / "dynamics.json").read_text(encoding="utf-8"))
     assert len(data["valves"]["intake"]["per_speed"]["speed_rpm"]) == 30
     assert len((out / "tables" / "intake_dynamics.csv").read_text(encoding="utf-8").splitlines()) == 31
@@ -247,6 +248,12 @@ def test_sweep_command(tmp_path, monkeypatch):
     assert refused.exit_code == 2 and "notes.txt" in refused.stderr
     bad = CliRunner().invoke(cli.main, ["sweep", str(f), "--out", str(tmp_path / "x"), "--valve", "exhaust"])
     assert bad.exit_code == 2 and "--valve exhaust: no such valve; allowed: intake" in bad.stderr
+    f.write_text(f.read_text(encoding="utf-8").replace("cam_width_mm = 16.0", "")
+                 + "\n[valves.intake.lubrication]\n", encoding="utf-8")
+    late = CliRunner().invoke(cli.main, ["sweep", str(f), "--out", str(tmp_path / "y")])
+    assert late.exit_code == 2 and late.stdout == ""
+    assert late.stderr == "error: valves.intake.lubrication needs valves.intake.parts.cam_width_mm (the load per unit " \
+                          "width of the contact)\n"
 
 
 @pytest.mark.parametrize("text, expected", [

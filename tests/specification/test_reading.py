@@ -30,7 +30,7 @@ def test_a_huge_specification_is_refused_before_parsing(refused):
 
 
 def test_a_file_reading_error_names_the_file_as_its_path(tmp_path):
-    """The problem of a file that cannot be read or parsed carries the file name as its key path (records of the
+    """The problem of a file that cannot be read, parsed or designed at all carries the file name as its key path (records of the
     JSON entry point); the refactoring to structured problems had left it empty.  The printed line is the one
     written by hand here."""
     from valvetrain.api import error_records
@@ -39,8 +39,13 @@ def test_a_file_reading_error_names_the_file_as_its_path(tmp_path):
     missing, latin, broken = tmp_path / "missing.toml", tmp_path / "latin.toml", tmp_path / "broken.toml"
     latin.write_bytes("# \xe9\n".encode("latin-1"))
     broken.write_text("[engine\n", encoding="utf-8")
+    # a fuzz run (fuzz8): a document of an engine alone was 'error: (file): nothing to design: ...'
+    engine = tmp_path / "engine.toml"
+    engine.write_text(appendix_text().split("[valves")[0], encoding="utf-8")
     for path, line in [(missing, f"{missing}: cannot read the file: No such file or directory"),
                        (latin, f"{latin}: cannot read the file: not UTF-8 text (invalid continuation byte)"),
+                       (engine, f"{engine}: nothing to design: give at least one [valves.NAME], [crank], [two_stroke] "
+                                "or [breathing] section"),
                        (broken, None)]:
         with pytest.raises(SpecError) as err:
             load_spec(path)

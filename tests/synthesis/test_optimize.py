@@ -203,6 +203,8 @@ def test_bad_variables_are_refused_before_the_search(tmp_path, args, message):
     r = CliRunner().invoke(main, ["optimize", str(UKRSURT), "--out", str(tmp_path / "o"), *args])
     assert r.exit_code == 2 and message in r.output, r.output
     assert not (tmp_path / "o").exists()
+    # the error alone: the progress bar's label 'optimize' was printed before it
+    assert all(line.startswith("error: ") for line in r.output.splitlines()), r.output
 
 
 @pytest.mark.parametrize("example, args, message", [
@@ -226,3 +228,14 @@ def test_a_file_without_valves_is_refused(tmp_path):
     r = CliRunner().invoke(main, ["optimize", str(EXAMPLES / "v8-crank.toml"), "--out", str(tmp_path / "o")])
     assert r.exit_code == 2 and "no [valves.NAME] section" in r.output, r.output
     assert isinstance(r.exception, SystemExit)
+
+
+@pytest.mark.parametrize("option, value", [("--no-jump", "nan"), ("--cam-width", "nan"),
+                                           ("--seating-velocity", "nan"), ("--wheel-radius", "nan"), ("--seed", "-1")])
+def test_a_nan_limit_is_refused_by_its_option(tmp_path, option, value):
+    """A fuzz run (fuzz8): click's FloatRange let 'nan' through (no comparison with NaN is true); --seating-velocity
+    nan ran a search to 'allowed 0...nan m/s', --no-jump nan a sweep with a RuntimeWarning and wrote an optimum; a
+    --seed outside numpy's range was 'error: Seed must be between 0 and 2**32 - 1' after the start's design."""
+    r = CliRunner().invoke(main, ["optimize", str(UKRSURT), "--out", str(tmp_path / "o"), option, value])
+    assert r.exit_code == 2 and f"Invalid value for '{option}': {value} is not in the range" in r.output, r.output
+    assert not (tmp_path / "o").exists()

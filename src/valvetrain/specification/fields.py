@@ -41,10 +41,19 @@ class Range:
             raise InputError(self.text)
         return v
 
+    def number(self, v) -> float:
+        """``v`` if a number (not a bool), else a ValueError stating the allowed range: a unit string (``"10 mm"``)
+        was 'Input should be a valid number', the range and the unit left out."""
+        if isinstance(v, bool) or not isinstance(v, (int, float)):
+            raise InputError(f"must be a number, without quotes or a unit; {self.text}")
+        return v
+
     def __get_pydantic_core_schema__(self, source, handler) -> core_schema.CoreSchema:
-        """The float's schema followed by :meth:`check` (the schema an ``AfterValidator`` makes, built directly: a
-        tenth of a millisecond less a field, at every start of the program)."""
-        return core_schema.no_info_after_validator_function(self.check, handler(source))
+        """:meth:`number`, the float's schema, then :meth:`check` (the schemas ``BeforeValidator`` and
+        ``AfterValidator`` make, built directly: a tenth of a millisecond less a field, at every start of the
+        program)."""
+        return core_schema.no_info_after_validator_function(
+            self.check, core_schema.no_info_before_validator_function(self.number, handler(source)))
 
 
 def _bounded(low, high, unit="", low_open=True, high_open=False):

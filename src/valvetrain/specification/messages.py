@@ -54,13 +54,18 @@ def shown(value, limit=60) -> str:
     return text if len(text) <= limit else f"{text[:limit - 5]}...{text[-2:]}"
 
 
+WHOLE_FILE = "(file)"
+"""The key of a problem of the whole document (no section to design); :func:`~.reading.parse_spec` writes the file's
+name there."""
+
+
 def location(err, laws=()) -> str:
     """The key path of a pydantic error without the law tags pydantic inserts after a cam (``cam.kurz.phi1_deg``);
     long keys are cut, an empty key is written as TOML writes it (``""``)."""
     loc = err["loc"]
     parts = [(str(p) or '""') if len(str(p)) <= 40 else f"{str(p)[:35]}..." for i, p in enumerate(loc)
              if not (p in laws and i > 0 and loc[i - 1] in ("cam", "target"))]
-    return ".".join(parts) if parts else "(file)"
+    return ".".join(parts) if parts else WHOLE_FILE
 
 
 def message(err, laws=()) -> Problem:

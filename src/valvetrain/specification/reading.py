@@ -10,8 +10,8 @@ import tomllib
 
 import tomli_w
 
-from ..files import shown_path
-from .messages import Problem, SpecError
+from ..files import read_text, shown_path
+from .messages import WHOLE_FILE, Problem, SpecError
 from .engine_sections import resolve_path
 from .models import Spec, validate
 
@@ -56,13 +56,17 @@ def parse_spec(text, source="<string>", source_dir=None) -> Spec:
         raise SpecError([Problem(source, "arrays or tables nested too deeply to be a specification")]) from None
     if source_dir is not None and isinstance(data, dict):
         data["source_dir"] = str(source_dir)
-    return validate(data)
+    try:
+        return validate(data)
+    except SpecError as err:
+        raise SpecError([Problem(source, p.message, p.value) if p.path == WHOLE_FILE else p
+                         for p in err.problems]) from None
 
 
 def load_spec(path) -> Spec:
     """Read and validate a specification file."""
     try:
-        text = Path(path).read_text(encoding="utf-8")
+        text = read_text(path)
     except OSError as exc:
         raise SpecError([Problem(shown_path(path), f"cannot read the file: {exc.strerror or exc}")]) from None
     except UnicodeDecodeError as exc:
