@@ -93,6 +93,13 @@ def test_refusals_name_the_key(lubrication, parts, words):
         run(example(lubrication, parts))
 
 
+def test_a_section_without_the_cam_width_is_refused_with_the_specification():
+    """Refused by the specification's validation (``valvetrain validate``), before any stage runs: it was refused by
+    the lubrication stage, after the valve's dynamics sweep (a fuzz finding; fails before: parse_spec passed it)."""
+    with pytest.raises(SpecError, match=r"valves\.intake\.lubrication needs valves\.intake\.parts\.cam_width_mm"):
+        example(parts=False)
+
+
 def test_an_undercut_cam_is_a_failure_not_a_refusal_of_its_lubrication():
     """A polydyne exponent p = 3 on the shipped finger undercuts the intake cam.  The profile stage grades that a
     failure (profile.undercut_roller; nothing for its manufacture is written): the cam has no line contact, so the

@@ -182,12 +182,10 @@ def lubrication_stage(lub, valve, engine, cam, drive, dynamics=None,
     Raises
     ------
     SpecError
-        Without ``parts.cam_width_mm`` (the load per unit width), or on an undercut profile (no line contact).
+        On an undercut profile (no line contact); ``parts.cam_width_mm`` (the load per unit width), which the
+        specification's validation requires with the section, is taken as given.
     """
     at = f"valves.{name}"
-    if valve.parts.cam_width is None:
-        raise SpecError([Problem(f"{at}.lubrication", f"needs {at}.parts.cam_width_mm (the load per unit width of the "
-                                 "contact)", joiner=" ")])
     maps = contact_loads(cam, event_load_maps(valve, engine, cam, drive, dynamics)[1])
     to_cam = cam.cam_speed / engine.rated_speed
     rows, worst = [], None

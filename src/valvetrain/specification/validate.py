@@ -104,6 +104,9 @@ def _valve_problems(name, v, engine):
         out.append(Problem(f"{at}.drive.masses.bridge_kg", "not allowed with dynamics.model = \"multi\": the "
                            "multi-mass train has no node of a valve bridge; allowed with the one-mass train (\"1dof\"), "
                            "whose reduced mass carries it", f"{v.drive.masses.bridge_kg:g}"))
+    if v.lubrication is not None and v.parts.cam_width_mm is None:
+        out.append(Problem(f"{at}.lubrication", f"needs {at}.parts.cam_width_mm (the load per unit width of the "
+                           "contact)", joiner=" "))
     if v.piston_gap_tdc_mm is not None and engine.rod_length_mm is None:
         out.append(Problem(f"{at}.piston_gap_tdc_mm", "needs engine.rod_length_mm for the piston kinematics",
                            joiner=" "))
