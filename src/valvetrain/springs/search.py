@@ -145,6 +145,7 @@ class _Grid:
 
     mean_diameter: np.ndarray
     wire_diameter: np.ndarray
+    shape_factor: np.ndarray       # chi of D/d
     one_coil: np.ndarray           # G d^4 / (8 D^3), the rate of one working coil [N/m]
     allowable: np.ndarray          # [tau] [Pa]
     endurance: np.ndarray          # tau_-1 [Pa]
@@ -155,8 +156,8 @@ class _Grid:
     @classmethod
     def of(cls, big_d, d, material):
         g, rho = material.shear_modulus, material.density
-        return cls(big_d, d, g * d**4 / (8.0 * big_d**3), *material.limits(d),
-                   8.0 * shape_factor_table(big_d / d) * big_d / (np.pi * d**3),
+        chi = shape_factor_table(big_d / d)
+        return cls(big_d, d, chi, g * d**4 / (8.0 * big_d**3), *material.limits(d), 8.0 * chi * big_d / (np.pi * d**3),
                    natural_frequency(d, big_d, 1.0, g, rho))
 
 
@@ -259,22 +260,23 @@ def _search(preloads, rates, lift, throat_diameter, camshaft_speed, options, *, 
     preloads, rates = np.asarray(preloads, dtype=float), np.asarray(rates, dtype=float)
     lines = np.arange(len(preloads))
 
-    def designed(material, line, grid):
+    def designed(material, line, grid, of):
         found = evaluate_springs(
             preloads[line], rates[line], lift, big_d[grid], d[grid], material, camshaft_speed,
             ratio_range=options.ratio_range, installed_length=installed_length,
             min_installed_length=low if installed_length is None else None, max_installed_length=high,
             max_free_length=None if free_lengths else options.max_free_length, partner_frequency=partner_frequency,
-            min_frequency_difference=options.min_frequency_difference)
+            min_frequency_difference=options.min_frequency_difference, shape_factor=of.shape_factor[grid],
+            limits=(of.allowable[grid], of.endurance[grid], of.psi[grid]))
         found.line = line
         return found
 
     found = [designed(m, *divmod(np.flatnonzero(_screen(preloads, rates, lift, grid, m, camshaft_speed,
-                                                       high if installed_length is None else None)), len(d)))
+                                                       high if installed_length is None else None)), len(d)), grid)
              for m, grid in zip(options.materials, grids, strict=True)]
     if not any(c.passed.any() for c in found):
         line, grid = (a.ravel() for a in np.meshgrid(lines, np.arange(len(d)), indexing="ij"))
-        found = [designed(m, line, grid) for m in options.materials]
+        found = [designed(m, line, grid, of) for m, of in zip(options.materials, grids, strict=True)]
     return found, len(options.materials) * len(lines) * len(d)
 
 
