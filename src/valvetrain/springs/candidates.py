@@ -152,7 +152,7 @@ class _ArrayCheck:
     def at(self, i):
         """The :class:`valvetrain.checks.Check` of candidate ``i``."""
         def pick(x):
-            return None if x is None else float(np.broadcast_to(x, self.value.shape)[i])
+            return None if x is None else float(x[i] if np.ndim(x) else x)
 
         return check(self.code, float(self.value[i]), pick(self.low), pick(self.high), unit=self.unit,
                      source=self.source, severity=self.severity)
@@ -283,8 +283,8 @@ def evaluate_springs(preload, rate, lift, mean_diameter, wire_diameter, material
     omega = natural_frequency(d, big_d, coils, g, rho)
     shape = np.broadcast_shapes(np.shape(p0), np.shape(c0), np.shape(big_d), np.shape(d))
 
-    def flat(x):
-        return np.broadcast_to(x, shape).ravel()
+    def flat(x):   # the search's candidates come flat already: broadcast only what is not
+        return np.ravel(x) if np.shape(x) == shape else np.broadcast_to(x, shape).ravel()
 
     p0, c0, big_d, d, chi, allowable, endurance, psi, exact, coils, actual, tau_max, tau_min, safety, omega = map(
         flat, (p0, c0, big_d, d, chi, allowable, endurance, psi, exact, coils, actual, tau_max, tau_min, safety, omega))
