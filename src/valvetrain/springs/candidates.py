@@ -152,7 +152,7 @@ class _ArrayCheck:
     def at(self, i):
         """The :class:`valvetrain.checks.Check` of candidate ``i``."""
         def pick(x):
-            return None if x is None else float(np.broadcast_to(x, self.value.shape)[i])
+            return None if x is None else float(x[i] if np.ndim(x) else x)
 
         return check(self.code, float(self.value[i]), pick(self.low), pick(self.high), unit=self.unit,
                      source=self.source, severity=self.severity)
@@ -228,7 +228,7 @@ class Candidates:
 def evaluate_springs(preload, rate, lift, mean_diameter, wire_diameter, material, camshaft_speed, *,
                      ratio_range=DEFLECTION_RATIO_RANGE, installed_length=None, min_installed_length=None,
                      max_installed_length=None, max_free_length=None, partner_frequency=None,
-                     min_frequency_difference=0.0) -> Candidates:
+                     min_frequency_difference=0.0, shape_factor=None, limits=None) -> Candidates:
     """Design many springs at once, each for its own straight characteristic (Valve-train practical works (n.d.), work 6).
 
     Parameters
@@ -254,6 +254,11 @@ def evaluate_springs(preload, rate, lift, mean_diameter, wire_diameter, material
     partner_frequency : ndarray, optional
         omega_c1 of the outer spring, for the inner spring of a pair: the two must differ by
         ``min_frequency_difference`` (eq. 6.14).
+    shape_factor : ndarray, optional
+        chi of the candidates (:func:`~valvetrain.springs.formulas.shape_factor_table` of D/d), where the caller
+        holds it already (the search's grid); computed when not given.
+    limits : (ndarray, ndarray, ndarray), optional
+        ([tau], tau_-1, psi_tau) of the candidates' wires (:meth:`SpringMaterial.limits`), likewise.
 
     Returns
     -------
@@ -266,8 +271,8 @@ def evaluate_springs(preload, rate, lift, mean_diameter, wire_diameter, material
     p0, c0 = np.asarray(preload, dtype=float), np.asarray(rate, dtype=float)
     big_d, d = np.asarray(mean_diameter, dtype=float), np.asarray(wire_diameter, dtype=float)
     g, rho = material.shear_modulus, material.density
-    chi = shape_factor_table(big_d / d)
-    allowable, endurance, psi = material.limits(d)
+    chi = shape_factor_table(big_d / d) if shape_factor is None else shape_factor
+    allowable, endurance, psi = material.limits(d) if limits is None else limits
     p_max = p0 + c0 * lift
     exact = active_coils(g, d, p_max / c0, p_max, big_d)
     coils = np.maximum(np.floor(exact * 2.0) / 2.0, 1.0)
@@ -278,8 +283,8 @@ def evaluate_springs(preload, rate, lift, mean_diameter, wire_diameter, material
     omega = natural_frequency(d, big_d, coils, g, rho)
     shape = np.broadcast_shapes(np.shape(p0), np.shape(c0), np.shape(big_d), np.shape(d))
 
-    def flat(x):
-        return np.broadcast_to(x, shape).ravel()
+    def flat(x):   # the search's candidates come flat already: broadcast only what is not
+        return np.ravel(x) if np.shape(x) == shape else np.broadcast_to(x, shape).ravel()
 
     p0, c0, big_d, d, chi, allowable, endurance, psi, exact, coils, actual, tau_max, tau_min, safety, omega = map(
         flat, (p0, c0, big_d, d, chi, allowable, endurance, psi, exact, coils, actual, tau_max, tau_min, safety, omega))

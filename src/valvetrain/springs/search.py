@@ -138,13 +138,14 @@ class Search:
         return sum(s.mass for s in self.designs.values())
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class _Grid:
     """The candidates' diameters of a search (:func:`_grid`) and what the screen's bounds (:func:`_may_pass`) need of
     each grid point alone, for one grade (SI; read-only arrays where :func:`_grid_of` shares them between searches)."""
 
     mean_diameter: np.ndarray
     wire_diameter: np.ndarray
+    shape_factor: np.ndarray       # chi of D/d
     one_coil: np.ndarray           # G d^4 / (8 D^3), the rate of one working coil [N/m]
     allowable: np.ndarray          # [tau] [Pa]
     endurance: np.ndarray          # tau_-1 [Pa]
@@ -155,8 +156,8 @@ class _Grid:
     @classmethod
     def of(cls, big_d, d, material):
         g, rho = material.shear_modulus, material.density
-        return cls(big_d, d, g * d**4 / (8.0 * big_d**3), *material.limits(d),
-                   8.0 * shape_factor_table(big_d / d) * big_d / (np.pi * d**3),
+        chi = shape_factor_table(big_d / d)
+        return cls(big_d, d, chi, g * d**4 / (8.0 * big_d**3), *material.limits(d), 8.0 * chi * big_d / (np.pi * d**3),
                    natural_frequency(d, big_d, 1.0, g, rho))
 
 
@@ -208,27 +209,53 @@ def _may_pass(preloads, rates, lift, big_d, d, material, camshaft_speed, max_ins
                    max_installed_length)
 
 
-def _screen(preloads, rates, lift, grid, material, camshaft_speed, max_installed_length):
-    """:func:`_may_pass` on a :class:`_Grid`."""
+@dataclass(frozen=True)
+class _Caps:
+    """The screen's bounds (:func:`_may_pass`) of each grid point alone for a lift, a camshaft speed and a longest
+    installed length (SI): the same for every search of one design, whose lines alone change."""
+
+    force_cap: np.ndarray      # largest P_max of tau_max <= [tau] [N]
+    max_rate: np.ndarray       # largest C of two working coils [N/m]
+    min_rate: np.ndarray       # smallest C of the coils the resonance ratio and the length allow [N/m]
+    fatigue_cap: np.ndarray    # largest C h + psi_tau (2 P_min + C h) of the fatigue safety [N], None where it is off
+
+    @classmethod
+    def of(cls, grid, material, lift, camshaft_speed, max_installed_length):
+        d = grid.wire_diameter
+        force_cap = grid.allowable * (1.0 + SCREEN_SLACK) / grid.stress_per_force
+        max_rate = grid.one_coil / (2.0 * (1.0 - SCREEN_SLACK))
+        coil_cap = np.full(d.shape, np.inf)
+        if material.min_resonance_ratio > 0.0:
+            coil_cap = grid.surge_per_coil / (material.min_resonance_ratio * camshaft_speed)
+        if max_installed_length is not None:
+            fit = (max_installed_length * (1.0 + SCREEN_SLACK) - lift - d * (material.end_coils - 1.0)) / (
+                d * (1.0 + material.gap_factor)) - 2.0
+            coil_cap = np.minimum(coil_cap, fit)
+        coil_cap = coil_cap + SCREEN_SLACK * (np.abs(coil_cap) + 1.0) + 0.5
+        min_rate = np.where(coil_cap > 0.0, grid.one_coil / np.where(coil_cap > 0.0, coil_cap, 1.0), np.inf)
+        fatigue_cap = None
+        if material.min_safety > 0.0:
+            fatigue_cap = np.where(grid.psi >= 0.0, 2.0 * grid.endurance / (
+                grid.stress_per_force * material.min_safety * (1.0 - SCREEN_SLACK)), np.inf)
+        return cls(force_cap, max_rate, min_rate, fatigue_cap)
+
+
+@lru_cache(maxsize=32)
+def _caps_of(grid, material, lift, camshaft_speed, max_installed_length) -> _Caps:
+    """:meth:`_Caps.of` made once for a grid of :func:`_grid_of` (held by identity) and the rest: the searches of
+    one design's spring-mass fixed point (:func:`valvetrain.design.drive.drive_stage`) share it."""
+    return _Caps.of(grid, material, lift, camshaft_speed, max_installed_length)
+
+
+def _screen(preloads, rates, lift, grid, material, camshaft_speed, max_installed_length, caps=None):
+    """:func:`_may_pass` on a :class:`_Grid`, with its :class:`_Caps` where the caller holds them."""
     d = grid.wire_diameter
     p = np.asarray(preloads, dtype=float)
     c = np.asarray(rates, dtype=float)
     p_max, travel = p + c * lift, c * lift
-    force_cap = grid.allowable * (1.0 + SCREEN_SLACK) / grid.stress_per_force
-    max_rate = grid.one_coil / (2.0 * (1.0 - SCREEN_SLACK))
-    coil_cap = np.full(d.shape, np.inf)
-    if material.min_resonance_ratio > 0.0:
-        coil_cap = grid.surge_per_coil / (material.min_resonance_ratio * camshaft_speed)
-    if max_installed_length is not None:
-        fit = (max_installed_length * (1.0 + SCREEN_SLACK) - lift - d * (material.end_coils - 1.0)) / (
-            d * (1.0 + material.gap_factor)) - 2.0
-        coil_cap = np.minimum(coil_cap, fit)
-    coil_cap = coil_cap + SCREEN_SLACK * (np.abs(coil_cap) + 1.0) + 0.5
-    min_rate = np.where(coil_cap > 0.0, grid.one_coil / np.where(coil_cap > 0.0, coil_cap, 1.0), np.inf)
-    fatigue_cap = None
-    if material.min_safety > 0.0:
-        fatigue_cap = np.where(grid.psi >= 0.0, 2.0 * grid.endurance / (grid.stress_per_force * material.min_safety
-                                                                         * (1.0 - SCREEN_SLACK)), np.inf)
+    if caps is None:
+        caps = _Caps.of(grid, material, lift, camshaft_speed, max_installed_length)
+    force_cap, max_rate, min_rate, fatigue_cap = caps.force_cap, caps.max_rate, caps.min_rate, caps.fatigue_cap
     mean = 2.0 * p + travel
     columns = (p_max.min() <= force_cap) & (c.min() <= max_rate) & (c.max() >= min_rate)
     if fatigue_cap is not None:   # psi >= 0 wherever the cap is finite
@@ -259,22 +286,25 @@ def _search(preloads, rates, lift, throat_diameter, camshaft_speed, options, *, 
     preloads, rates = np.asarray(preloads, dtype=float), np.asarray(rates, dtype=float)
     lines = np.arange(len(preloads))
 
-    def designed(material, line, grid):
+    def designed(material, line, grid, of):
         found = evaluate_springs(
             preloads[line], rates[line], lift, big_d[grid], d[grid], material, camshaft_speed,
             ratio_range=options.ratio_range, installed_length=installed_length,
             min_installed_length=low if installed_length is None else None, max_installed_length=high,
             max_free_length=None if free_lengths else options.max_free_length, partner_frequency=partner_frequency,
-            min_frequency_difference=options.min_frequency_difference)
+            min_frequency_difference=options.min_frequency_difference, shape_factor=of.shape_factor[grid],
+            limits=(of.allowable[grid], of.endurance[grid], of.psi[grid]))
         found.line = line
         return found
 
-    found = [designed(m, *divmod(np.flatnonzero(_screen(preloads, rates, lift, grid, m, camshaft_speed,
-                                                       high if installed_length is None else None)), len(d)))
+    longest = high if installed_length is None else None
+    found = [designed(m, *divmod(np.flatnonzero(_screen(preloads, rates, lift, grid, m, camshaft_speed, longest,
+                                                       _caps_of(grid, m, lift, camshaft_speed, longest))), len(d)),
+                      grid)
              for m, grid in zip(options.materials, grids, strict=True)]
     if not any(c.passed.any() for c in found):
         line, grid = (a.ravel() for a in np.meshgrid(lines, np.arange(len(d)), indexing="ij"))
-        found = [designed(m, line, grid) for m in options.materials]
+        found = [designed(m, line, grid, of) for m, of in zip(options.materials, grids, strict=True)]
     return found, len(options.materials) * len(lines) * len(d)
 
 
