@@ -178,6 +178,18 @@ def test_an_unusable_out_is_refused_before_computing(tmp_path, monkeypatch, no_d
     assert (tmp_path / "file").read_text() == "not a folder"
 
 
+@pytest.mark.parametrize("cmd", ["run", "compare", "tolerance"])
+def test_an_empty_out_is_refused_as_empty(tmp_path, monkeypatch, no_design, cmd):
+    """``--out ''`` (a shell variable left empty) is named as empty; it was refused as ``error: --out : is the current
+    folder or contains it`` (tolerance: ``error: --out : holds files ...``), which names nothing (a fuzz finding)."""
+    monkeypatch.chdir(tmp_path)
+    spec = tmp_path / "spec.toml"
+    spec.write_text(example_text())
+    result = CliRunner().invoke(main, [cmd, str(spec), "--out", ""] + (["--samples", "4"] if cmd == "tolerance" else []))
+    assert (result.exit_code, result.output) == (2, "error: --out '': is empty; allowed: the path of a folder\n")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["spec.toml"]
+
+
 def test_a_folder_where_one_cannot_write_is_refused(tmp_path, monkeypatch):
     """The tests may run as root, for whom every folder is writable: os.access is made to deny it."""
     monkeypatch.setattr(os, "access", lambda path, mode: Path(path) != tmp_path)

@@ -19,7 +19,7 @@ import click
 from . import __version__
 from .errors import ValvetrainError
 from .interruption import Interruption, interrupted_while_starting
-from .outfolder import OutFolderError, check_out, location_problem
+from .outfolder import OutFolderError, check_out, location_problem, out_path
 from .specification import SpecError, example_spec, example_text, input_files, load_spec
 
 OUT_HELP = ("Folder for the results: new, empty, or a previous valvetrain output, which is replaced "
@@ -554,8 +554,6 @@ def tolerance(file, samples, method, seed, out, workers, scheduler, max_samples,
     interruption and only the samples missing are designed. Writes tolerance.json and the report tolerance.html
     (tables and histograms) when every sample is designed; with --method sobol also the first-order and total Sobol'
     indices of every check's margin and dynamics headline with their 95 % intervals."""
-    from pathlib import Path
-
     from .export import json_text
     from .report.tolerance import report_html
     from .study import StudyStopped, evaluate, read_document, too_large, with_values
@@ -566,7 +564,10 @@ def tolerance(file, samples, method, seed, out, workers, scheduler, max_samples,
     if scheduler is not None and workers > 1:
         click.echo("error: --workers and --scheduler: give one (the cluster's workers evaluate the samples)", err=True)
         sys.exit(2)
-    folder = Path(out)
+    try:
+        folder = out_path(out)
+    except OutFolderError as err:
+        _fail_out(err)
     ours = {"records.tmp", *(f"tolerance.{x}{t}" for x in ("json", "html") for t in ("", ".tmp"))}
     if folder.exists() and (not folder.is_dir() or any(p.name not in ours | {RECORDS} or p.name in ours
                                                        and not p.is_file() for p in folder.iterdir())):

@@ -66,14 +66,23 @@ def check_out(out, inputs=(), force=False) -> Path:
     Raises
     ------
     OutFolderError
-        The message names ``out``, what is wrong and what is allowed.
+        The message names ``out``, what is wrong and what is allowed (an empty ``out``, which would be the current
+        folder, is named as empty).
     """
-    path = Path(out).resolve()
+    path = out_path(out).resolve()
     problem = (location_problem(path) or kind_problem(path) or input_problem(path, inputs)
                or (None if force else foreign_problem(path)))
     if problem:
         raise OutFolderError(f"{out}: {problem}")
     return path
+
+
+def out_path(out) -> Path:
+    """``out`` as a path; an empty one (a shell variable left empty), which would name the current folder, is refused
+    as empty (:class:`OutFolderError`)."""
+    if not str(out).strip():
+        raise OutFolderError(f"{str(out)!r}: is empty; allowed: the path of a folder")
+    return Path(out)
 
 
 def location_problem(path) -> str | None:
