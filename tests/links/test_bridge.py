@@ -8,13 +8,14 @@ from types import SimpleNamespace
 
 import pytest
 
-from valvetrain import strength
+from valvetrain.design.dynamics import _multi_train
+from valvetrain.dynamics.coils import CoilSpring
 from valvetrain.layouts import chain, train_mass, unused_part_keys
 from valvetrain.links import ValveBridge
 from valvetrain.locale import note_text
 from valvetrain.report.html import numbered_citations
 from valvetrain.report.russian import russian_citations
-from valvetrain.specification import SpecError, example_spec
+from valvetrain.specification import example_spec
 from valvetrain.specification.reading import parse_spec
 from valvetrain.specification.si import si
 from valvetrain.specification import example_text
@@ -46,8 +47,8 @@ def test_its_bending_stress_and_stiffness_by_hand():
 def test_it_joins_a_chain_with_a_lever_and_adds_its_mass_at_the_valve():
     """The built-in example's intake (pushrod layout) given a bridge: the bridge joins its chain after the rocker, and
     the reduced mass at the valve grows by bridge_kg (ratio 1: it moves with the valve); made direct (no lever) it
-    joins nothing and its keys are named unused.  A bridge's mass in a multi-mass train, which has no node for it, is
-    refused naming the key."""
+    joins nothing and its keys are named unused.  In a multi-mass train the bridge is rigid, as in the one-mass train:
+    its mass is the valve node's, every other node and stiffness the same."""
     spec = example_spec()
     plain = si(spec.valves["intake"])
     bridged = si(spec.replace({"valves.intake.parts.bridge_span_mm": 40.0,
@@ -60,9 +61,11 @@ def test_it_joins_a_chain_with_a_lever_and_adds_its_mass_at_the_valve():
     assert "valve_bridge" not in chain(direct).parts and "bridge_span_mm" in unused_part_keys(direct)
     text = example_text()
     assert 'model = "1dof"' in text and "rocker_inertia_kg_mm2 = 25.0" in text
-    text = text.replace('model = "1dof"', 'model = "multi"', 1).replace("rocker_inertia_kg_mm2 = 25.0",
-                                                                    "rocker_inertia_kg_mm2 = 25.0\nbridge_kg = 0.03", 1)
-    with pytest.raises(SpecError) as err:
-        parse_spec(text)
-    assert any(p.startswith("valves.intake.drive.masses.bridge_kg = 0.03: not allowed with dynamics.model = \"multi\"")
-               for p in err.value.problems)
+    multi = text.replace('model = "1dof"', 'model = "multi"', 1)
+    args = ((3.6e8, 3.8e7, 4.5e7), [CoilSpring(4e4, 300.0, 0.03, 0.0, 4)], 2e-4, {"damping_ratio": 0.05},
+            "valves.intake", 0.04)
+    without, with_bridge = (_multi_train(si(parse_spec(t).valves["intake"]), *args) for t in (
+        multi, multi.replace("rocker_inertia_kg_mm2 = 25.0", "rocker_inertia_kg_mm2 = 25.0\nbridge_kg = 0.03", 1)))
+    assert [name for name, _ in with_bridge.drive] == ["tappet", "pushrod", "rocker", "valve"]
+    assert with_bridge.drive[-1][1] - without.drive[-1][1] == pytest.approx(0.03, rel=1e-12)
+    assert with_bridge.drive[:-1] == without.drive[:-1] and with_bridge.links == without.links

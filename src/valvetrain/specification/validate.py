@@ -99,11 +99,6 @@ def _valve_problems(name, v, engine):
     elif v.drive.masses is not None and v.drive.masses.rocker_inertia_kg_mm2 > 0 and v.drive.valve_arm_mm is None:
         out.append(Problem(f"{at}.drive.masses.rocker_inertia_kg_mm2", "needs drive.valve_arm_mm (the valve-side "
                            "rocker arm)", f"{v.drive.masses.rocker_inertia_kg_mm2:g}"))
-    if v.drive.masses is not None and v.drive.masses.bridge_kg is not None and v.dynamics is not None \
-            and v.dynamics.model == "multi":
-        out.append(Problem(f"{at}.drive.masses.bridge_kg", "not allowed with dynamics.model = \"multi\": the "
-                           "multi-mass train has no node of a valve bridge; allowed with the one-mass train (\"1dof\"), "
-                           "whose reduced mass carries it", f"{v.drive.masses.bridge_kg:g}"))
     if v.lubrication is not None and v.parts.cam_width_mm is None:
         out.append(Problem(f"{at}.lubrication", f"needs {at}.parts.cam_width_mm (the load per unit width of the "
                            "contact)", joiner=" "))
