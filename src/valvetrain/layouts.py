@@ -50,6 +50,12 @@ class Layout:
         """The ``[drive.masses]`` keys of the links a multi-mass train of this layout needs, from the cam."""
         return tuple(link.mass_key for link in self.links if link.mass_key is not None)
 
+    def valve_mass(self, masses) -> float:
+        """What the chain's links add to the mass reduced to the valve [kg] (``masses``: SI view of
+        ``[drive.masses]``): a link that joins the chain its share (:meth:`~valvetrain.links.Link.valve_mass`, a valve
+        bridge's), the others nothing."""
+        return sum(link.valve_mass(masses) for link in self.links)
+
     @property
     def valve_joint(self) -> str:
         """The name of the joint between the last moving link and the valve (:attr:`~valvetrain.links.Link.joint`)."""
@@ -126,7 +132,7 @@ def train_mass(valve, spring_mass) -> tuple[float, str]:
                                        valve.rocker_ratio, parts=d.masses, specific_mass=d.specific_mass_kg_m2,
                                        valve_arm=valve_arm(valve), spring_mass=spring_mass)
     if d.masses is not None:
-        mass += sum(link.valve_mass(d.masses) for link in chain(valve).links)
+        mass += chain(valve).valve_mass(d.masses)
     return mass, source
 
 

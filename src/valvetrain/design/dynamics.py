@@ -413,7 +413,7 @@ def _multi_train(valve, links, springs, lash, kw, at, arm):
     """The multi-mass train of the valve's layout from its links, from the cam: each link's node (:meth:`Link.node
     <valvetrain.links.Link.node>`, the part masses of [drive.masses] reduced to the valve, a rocker's inertia on the
     valve arm ``arm`` [m] of :func:`inertia_arm`), then the valve's with what a link that joins the chain adds at the
-    valve (:meth:`Link.valve_mass <valvetrain.links.Link.valve_mass>`: a valve bridge's share, rigid here as in the
+    valve (:meth:`Layout.valve_mass <valvetrain.layouts.Layout.valve_mass>`: a valve bridge's share, rigid here as in the
     one-mass train); between them the drive's stiffnesses ``links`` at the valve (:func:`drive_links`: the camshaft,
     each elastic link's, the last link's joint to the valve) in series, an elastic link's as two halves of twice its
     stiffness on either side of its node."""
@@ -436,8 +436,7 @@ def _multi_train(valve, links, springs, lash, kw, at, arm):
             nodes.append(node)
             stiffness.append(series(*between, *half))
             between = half
-    joined = sum(link.valve_mass(m) for link in drive.links)
-    nodes.append(("valve", m.valve_kg + m.retainer_kg + m.cotters_kg + joined))
+    nodes.append(("valve", m.valve_kg + m.retainer_kg + m.cotters_kg + drive.valve_mass(m)))
     stiffness.append(series(*between, links[-1]))
     return MultiMassTrain(drive.name, tuple(nodes), tuple(stiffness), tuple(springs), float(k), float(lash), **kw)
 
