@@ -43,6 +43,10 @@ def test_plot_ranges_are_kept_while_the_curves_keep_half_their_room():
     assert kept_range(-2.5, 12.5, 0.0, 11.0, 0.25) == (-2.5, 12.5)
     assert kept_range(-2.5, 12.5, 0.0, 12.0, 0.25) == (-3.0, 15.0)
     assert kept_range(-3.0, 15.0, 0.0, 2.0, 0.25) == (-0.5, 2.5)
+    # while a handle is dragged the range is kept as long as the curves lie inside it: 12 mm is inside (-2.5, 12.5);
+    # 13 mm is not: refitted to (-3.25, 16.25)
+    assert kept_range(-2.5, 12.5, 0.0, 12.0, 0.25, dragged=True) == (-2.5, 12.5)
+    assert kept_range(-2.5, 12.5, 0.0, 13.0, 0.25, dragged=True) == (-3.25, 16.25)
     # the redraws of a drag change a range only when it moves: the nose 0.1 mm higher leaves the lift plot's
     d = _designer()
     lift = d.figures["lift"].y_range
@@ -50,6 +54,14 @@ def test_plot_ranges_are_kept_while_the_curves_keep_half_their_room():
     _request(d, "end", "nose", 0.0, 9.1)
     assert d.session.document["valves"]["intake"]["max_lift_mm"] == pytest.approx(9.1)
     assert (lift.start, lift.end) == before
+    # the moves of a drag keep it while the lift stays inside it (the handle under the pointer: a CI run's drag to
+    # 10.0025 mm refitted the 9 mm lift's (-2.25, 11.25) mm under the pointer, 10.0025 x 1.125 > 11.25); the release
+    # refits it: 10.2 mm with a quarter of its span of room, (-2.55, 12.75)
+    _request(d, "move", "nose", 0.0, 10.2, seq=2, finish=False)
+    assert np.nanmax(d.curves.data["lift"]) == pytest.approx(10.2, abs=1e-3)
+    assert (lift.start, lift.end) == before
+    _request(d, "end", "nose", 0.0, 10.2, seq=3)
+    assert (lift.start, lift.end) == pytest.approx((-2.55, 12.75), abs=1e-3)
 
 
 def test_thinned_curve_keeps_what_a_plot_shows():

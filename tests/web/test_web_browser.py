@@ -275,7 +275,7 @@ def test_handles_move_one_to_one_with_the_pointer_and_the_curves_follow(designer
     start = designer.evaluate("() => performance.now()")
     designer.wait_for_function(f"() => performance.now() > {start} + 400", timeout=WAIT_MS)
     designer.mouse.move(x, y - 3.0)
-    target = at_pixels(designer, "lift", x, y - 3.0)[1]          # on the scale of the drag (a redraw may refit it)
+    target = at_pixels(designer, "lift", x, y - 3.0)[1]          # the range is kept while the handle is dragged
     designer.mouse.up()
     wait_redrawn(designer, done)
     # the first drag's whole design (its sweeps) may be the redraw counted while the press was held: the second
@@ -284,7 +284,8 @@ def test_handles_move_one_to_one_with_the_pointer_and_the_curves_follow(designer
         const d = Bokeh.documents[0].get_model_by_name('handles-lift').data;
         return Math.abs((d instanceof Map ? d.get('y') : d.y)[0] - top) < 1e-3;
     }""", arg=target, timeout=WAIT_MS)
-    # the selected handle shows its limits: the valve lift's range 0.3 ... 500 mm, clipped to the plot
+    # the selected handle shows its limits: the valve lift's range 0.3 ... 500 mm, clipped to the plot (to its range
+    # refitted by the release's design: 10 mm leaves less than half the room of (-2.25, 11.25) mm)
     limits = model_data(designer, "limits-lift")
     y_range = designer.evaluate("() => { const r = Bokeh.documents[0].get_model_by_name('plot-lift').y_range;"
                                 " return [r.start, r.end]; }")

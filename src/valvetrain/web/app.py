@@ -119,12 +119,13 @@ class Designer(Layout, SweepPanel, VvaPanel):
         n = max(len(v) for v in out.values())
         return {k: np.pad(v, (0, n - len(v)), constant_values=np.nan).astype(np.float32) for k, v in out.items()}
 
-    def _ranges(self, with_base):
+    def _ranges(self, with_base, live):
         """Each fixed range of the plots kept or fitted to the curves of the design and the baseline
-        (:func:`kept_range`); a range changed only when it moves (a change lays its plot out again)."""
+        (:func:`kept_range`; ``live``: a drag's preview, the handle kept under the pointer); a range changed only
+        when it moves (a change lays its plot out again)."""
         for key, (names, room) in RANGES.items():
             _fit(self.ranges[key], [source.data[name] for source in (self.curves, self.base_curves)[:1 + with_base]
-                                    for name in names], room)
+                                    for name in names], room, live)
 
     def redraw(self, sweep=True, began=None, seq=0, live=False, curves_seq=None) -> None:
         """Draw the design shown (and the baseline), its handles and, unless ``live`` (a drag's preview), its checks,
@@ -137,7 +138,7 @@ class Designer(Layout, SweepPanel, VvaPanel):
         before = self.changes
         try:
             if self.valve is not None:
-                self._draw_valve()
+                self._draw_valve(live)
             if not live:
                 self._checks()
                 self._card()
@@ -160,7 +161,7 @@ class Designer(Layout, SweepPanel, VvaPanel):
         if self.sweeps or self.session.full is not None:
             self._sweep_panel()
 
-    def _draw_valve(self):
+    def _draw_valve(self, live):
         s = self.session
         document, result = self._shown()
         series = result["series"][self.valve]
@@ -173,7 +174,7 @@ class Designer(Layout, SweepPanel, VvaPanel):
             _send(self.base_curves, self._curves(s.baseline))
         elif len(self.base_curves.data["x"]):
             self.base_curves.data = {k: [] for k in self.base_curves.data}
-        self._ranges(base is not None)
+        self._ranges(base is not None, live)
         xs, x0 = self.units.of(series, self._omega(result))
         edges = xs * np.asarray(series["segments_cam_deg"]) + x0
         acc = self.ranges["acceleration"]

@@ -250,10 +250,12 @@ a.click();
 a.remove();
 """
 
-def kept_range(start, end, low, high, room) -> tuple[float, float]:
+def kept_range(start, end, low, high, room, dragged=False) -> tuple[float, float]:
     """The range [start, end] of a plot after a redraw whose curves span [low, high]: kept while the curves lie
     inside it with at least half the ``room`` (a fraction of their span) on either side and it is less than twice
-    as wide as they want, else their span with the whole room on either side.
+    as wide as they want, else their span with the whole room on either side.  While a handle is ``dragged`` (the
+    redraws of the moves before the release) it is kept as long as the curves lie inside it at all: a range refitted
+    under the pointer would take the handle away from it (the handle stays at its value, its pixel moves).
 
     Notes
     -----
@@ -263,6 +265,8 @@ def kept_range(start, end, low, high, room) -> tuple[float, float]:
     """
     span = high - low or abs(high) or 1.0
     pad = room * span
+    if dragged and start <= low and end >= high:
+        return start, end
     if start <= low - 0.5 * pad and end >= high + 0.5 * pad and end - start <= 2.0 * (span + 2.0 * pad):
         return start, end
     return low - pad, high + pad
@@ -396,13 +400,13 @@ def _stamp(name):
                             name=name)
 
 
-def _fit(rng, columns, room):
-    """A fixed range kept or fitted to the finite values of ``columns`` (:func:`kept_range`), changed only when it
-    moves."""
+def _fit(rng, columns, room, dragged=False):
+    """A fixed range kept or fitted to the finite values of ``columns`` (:func:`kept_range`, ``dragged`` its rule
+    while a handle is dragged), changed only when it moves."""
     values = np.concatenate([np.asarray(c, dtype=float) for c in columns]) if columns else np.array([])
     values = values[np.isfinite(values)]
     if values.size:
-        start, end = kept_range(rng.start, rng.end, float(values.min()), float(values.max()), room)
+        start, end = kept_range(rng.start, rng.end, float(values.min()), float(values.max()), room, dragged)
         if (start, end) != (rng.start, rng.end):
             rng.update(start=start, end=end)
 

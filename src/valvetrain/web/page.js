@@ -249,6 +249,13 @@ window.addEventListener("keydown", (event) => {
   send("key", sel);
 }, true);
 
+for (const plot of Object.keys(vt.plots)) {
+  // a range refitted by a redraw (the release's, after the drag's kept it): the limits clipped to it again
+  for (const range of [vt.plots[plot].x_range, vt.plots[plot].y_range]) {
+    range.connect(range.change, show_limits);
+  }
+}
+
 for (const plot of Object.keys(vt.sources)) {
   // new handles from the server: the one dragged stays under the pointer, the selection follows its handle
   vt.sources[plot].connect(vt.sources[plot].properties.data.change, () => {
