@@ -50,9 +50,18 @@ def test_page_callbacks():
     _request(d, "end", "nose", 0.0, 10.5)
     assert d.session.document["valves"]["intake"]["max_lift_mm"] == 10.5
     assert d.widgets["valves.intake.max_lift_mm"].value == 10.5
+    # issue 40: the panel's words change in place (a panel built again stayed in the page beside the new one, BokehJS
+    # dropping a model that left the document 30 s later: two inputs of one name); the same inputs, Russian names
+    inputs = dict(d.widgets)
     d.on_language("value", "en", "ru")
     assert d.check_columns[1].title == "Величина"
-    assert d.widgets["engine.bore_mm"].title == "диаметр цилиндра D, мм (5 … 2000)"
+    assert d.widgets == inputs and d.widgets["engine.bore_mm"].title == "диаметр цилиндра D, мм (5 … 2000)"
+    assert d.spec_tabs.tabs[0].title == "Двигатель"
+    # a valve's law changed (an undo, a file restored): its cam group built again keeps the inputs of the keys whose
+    # values it takes as before (here every key: the law said changed, the document's the same)
+    d.laws[d.valve] = "polydyne"
+    d._sync_fields()
+    assert d.widgets == inputs and d.laws[d.valve] == "kurz"
     d.derivative_select.value = "deg"
     d.on_units("value", "rated", "deg")
     # per cam degree: the velocity is the slope of the valve lift in mm/deg; central differences of the lift series

@@ -306,10 +306,10 @@ class Designer(Layout, SweepPanel, VvaPanel):
         for valve in self.names:
             if value_at(document, f"valves.{valve}.cam.law") != self.laws[valve]:
                 self.laws[valve] = value_at(document, f"valves.{valve}.cam.law")
-                for path in [p for p in self.widgets if p.startswith(f"valves.{valve}.cam.")]:
-                    del self.widgets[path], self.fields[path]
+                before = {path: (self.fields.pop(path), self.widgets.pop(path))
+                          for path in [p for p in self.widgets if p.startswith(f"valves.{valve}.cam.")]}
                 fields = dict(form(document, valve)).get("cam", [])
-                self.group_columns[("cam", valve)].children = [self._widget(f) for f in fields]
+                self.group_columns[("cam", valve)].children = [self._widget(f, before.get(f.path)) for f in fields]
         self._syncing = True
         try:
             for path, w in self.widgets.items():
@@ -510,7 +510,7 @@ class Designer(Layout, SweepPanel, VvaPanel):
 
     def on_language(self, attr, old, new) -> None:
         self.lang = new
-        self.panel_box.children = [self.status, self._panel()]
+        self._retitle()
         self._texts()
         self.redraw(sweep=False)
         self.show_problems()

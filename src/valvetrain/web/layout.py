@@ -20,14 +20,28 @@ from .form import GROUPS, form, value_at, value_text
 
 
 class Layout:
-    """The widgets and plots of a :class:`~valvetrain.web.app.Designer`, built once (the panel again for another
-    language) and their words."""
+    """The widgets and plots of a :class:`~valvetrain.web.app.Designer`, built once, and their words.
 
-    def _widget(self, f):
-        """The input of a field of the panel: its name with its unit and range in the page's language, the key in
-        its description (a hover on its mark)."""
+    Notes
+    -----
+    An input or a plot is changed in place, never built again while it shows the same thing: BokehJS drops the models
+    that left the document only 30 s after the last new one came, so a panel built again (for another language) left
+    its old inputs in the page beside the new ones, and a look-up of an input by its name found two.
+    """
+
+    def _title(self, f):
+        """The name of a field's input with its unit and range, in the page's language."""
         bounds = f" ({f.low:g} … {f.high:g})" if f.low is not None and f.high is not None else ""
-        common = {"title": label(f.name, self.lang) + bounds, "stylesheets": [self.input_css], "description": f.path,
+        return label(f.name, self.lang) + bounds
+
+    def _widget(self, f, kept=None):
+        """The input of a field of the panel: its name with its unit and range in the page's language, the key in
+        its description (a hover on its mark); ``kept``, the field and input the key had before (a law changed),
+        kept when they take the same values."""
+        if kept is not None and _same_input(kept[0], f):
+            self.fields[f.path], self.widgets[f.path] = kept
+            return kept[1]
+        common = {"title": self._title(f), "stylesheets": [self.input_css], "description": f.path,
                   "width": PANEL_WIDTH - 40, "name": f.path}
         if f.kind in ("float", "int"):
             w = NumericInput(value=f.value, mode=f.kind, **common)
@@ -43,11 +57,11 @@ class Layout:
     def _panel(self) -> Tabs:
         """The specification panel in the page's language: a tab per group
         (:data:`~valvetrain.web.form.GROUPS`), in each the inputs of every valve, those of the valve shown
-        visible.  Built again for another language (each input's new name would lay the page out once more)."""
+        visible; its words set again for another language (:meth:`_retitle`)."""
         document = self.session.document
         self.group_columns, self.fields, self.widgets = {}, {}, {}
         self.laws = {valve: value_at(document, f"valves.{valve}.cam.law") for valve in self.names}
-        tabs = []
+        tabs, self.tab_groups = [], []
         for group, _ in GROUPS:
             if group != "engine" and not self.names:
                 continue
@@ -62,12 +76,19 @@ class Layout:
                              width=PANEL_WIDTH - 30)
                 self.group_columns[(group, valve)] = box
                 parts.append(box)
+            self.tab_groups.append(group)
             tabs.append(TabPanel(title=WORDS[self.lang][f"group_{group}"],
                                  child=column(*parts, height=740, width=PANEL_WIDTH - 10,
                                               styles={"overflow-y": "auto", "overflow-x": "hidden"})))
-        active = self.spec_tabs.active if getattr(self, "spec_tabs", None) is not None else 0
-        self.spec_tabs = Tabs(tabs=tabs, width=PANEL_WIDTH, name="panel", active=active)
+        self.spec_tabs = Tabs(tabs=tabs, width=PANEL_WIDTH, name="panel")
         return self.spec_tabs
+
+    def _retitle(self):
+        """The panel's words in the page's language: each input's name and each tab's, set in place."""
+        for path, w in self.widgets.items():
+            w.title = self._title(self.fields[path])
+        for tab, group in zip(self.spec_tabs.tabs, self.tab_groups, strict=True):
+            tab.title = WORDS[self.lang][f"group_{group}"]
 
     def _build(self):
         t = WORDS["en"]
@@ -368,3 +389,10 @@ class Layout:
         self.download.label = w["download"]
         self.download.menu = [(w[k], k) for k in ("toml", "dxf", "report")]
         self.overlay.title = w["overlay"]
+
+
+def _same_input(old, new) -> bool:
+    """Whether an input made for field ``old`` takes the values of field ``new`` (the same key, kind, bounds, unit
+    and options): its value alone may differ."""
+    keys = ("path", "kind", "low", "high", "unit", "options", "optional")
+    return all(getattr(old, k) == getattr(new, k) for k in keys)
