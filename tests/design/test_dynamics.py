@@ -53,9 +53,12 @@ def test_no_section_no_dynamics():
 
 
 @pytest.mark.parametrize("text, expected", [
-    ("speeds = 1", "valves.intake.dynamics.speeds = 1: Input should be greater than or equal to 2"),
+    ("speeds = 1", "valves.intake.dynamics.speeds = 1: allowed [2, 2000]"),
+    # a count given as a decimal was pydantic's 'Input should be a valid integer', without the range
+    ("speeds = 200.0", "valves.intake.dynamics.speeds = 200.0: must be a whole number, without quotes, a unit or a "
+                       "decimal point; allowed [2, 2000]"),
     ("damping_ratio = 0.7", "valves.intake.dynamics.damping_ratio = 0.7: allowed [0, 0.5]"),
-    ("model = \"2dof\"", "valves.intake.dynamics.model = '2dof': Input should be '1dof' or 'multi'"),
+    ("model = \"2dof\"", "valves.intake.dynamics.model = '2dof': allowed '1dof' or 'multi'"),
     ("speed_range_rpm = [5000.0, 1000.0]", "valves.intake.dynamics: speed_range_rpm = [5000.0, 1000.0] must be [low, "
                                            "high] engine rpm with low < high"),
     ("step_cam_deg = 0.7", "valves.intake.dynamics: step_cam_deg = 0.7 must divide the 360 deg camshaft revolution"),

@@ -30,7 +30,7 @@ from ..laws.takeup import ClearanceTakeUp
 from ..layouts import train_mass
 from ..locale.wording import fit_reason
 from ..units import DEG, MM, rad_to_deg
-from .fields import RAMP_VELOCITY, SEGMENT_ANGLE, Length, _bounded, _Model
+from .fields import RAMP_VELOCITY, SEGMENT_ANGLE, Length, _bounded, Whole, _Model
 from .messages import Problem, shown
 
 from .cam_base import (REGISTRY, register, main_half_angle, main_half_angle_deg, _finite, _CamBase, _tappet_lift, _ramp, ramp_height, _clearance_problem, _RampKeys, _ClosingSide, _with_cam, _SegmentAngles)
@@ -184,7 +184,7 @@ class Segment(_Model):
 class Ratio(_Model):
     """a(end of segment) = value x a(nose), e.g. Kurz's Z."""
 
-    segment: Annotated[int, Field(ge=1, le=50)]
+    segment: Whole(1, 50)
     value: _bounded(-100.0, 100.0)
 
 
@@ -336,8 +336,8 @@ class HarmonicCam(_CamBase):
     [valves.NAME.cam.target] (Shang Hanji (1988), section 4.2, reconstructed); the target inherits base_radius_mm, follower and roller_radius_mm."""
 
     law: Literal["harmonic"]
-    harmonics: Annotated[int, Field(ge=2, le=400)]
-    junction_order: Annotated[int, Field(ge=0, le=10)] = 1
+    harmonics: Whole(2, 400)
+    junction_order: Whole(0, 10) = 1
     target: "Cam"
 
     @model_validator(mode="before")
@@ -452,7 +452,7 @@ class TableCam(_CamBase):
     table_zero: Literal["gas_exchange_tdc", "firing_tdc"] = "gas_exchange_tdc"
     fit: Literal["auto", "spline", "harmonic"] = "auto"
     accuracy_mm: Optional[_bounded(1e-4, 0.1, "mm", low_open=False)] = None
-    max_harmonics: Annotated[int, Field(ge=4, le=400)] = 60
+    max_harmonics: Whole(4, 400) = 60
 
     needs_timing: ClassVar[bool] = False
     si_extras: ClassVar[tuple] = ("table",)

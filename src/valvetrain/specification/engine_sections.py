@@ -13,7 +13,7 @@ from pydantic import Field, model_validator
 
 from ..errors import InputError
 from ..files import read_cd_table, read_indicator, read_valve_lift
-from .fields import Length, Pair, _bounded, _Model
+from .fields import Length, Pair, _bounded, Whole, _Model
 
 
 CAMSHAFT_MIN_WALL = 0.05
@@ -39,7 +39,7 @@ class Camshaft(_Model):
     radius."""
 
     valves: Optional[list[str]] = None
-    cylinders: Optional[list[Annotated[int, Field(ge=1, le=64)]]] = None
+    cylinders: Optional[list[Whole(1, 64)]] = None
     cylinder_positions_mm: list[Length(0.0, 10000.0)]
     section_lengths_mm: list[Length(0.5, 10000.0, low_open=False)]
     section_diameters_mm: list[Length(2.0, 500.0, low_open=False)]
@@ -221,7 +221,7 @@ class BreathingSide(_Model):
 
     lift: Optional[Literal["designed", "dynamics"]] = None
     lift_file: Optional[str] = None
-    valves: Annotated[int, Field(ge=1, le=8)] = 1
+    valves: Whole(1, 8) = 1
     cd_file: Optional[str] = None
     cd_diameter_mm: Optional[Length(1.0, 1000.0)] = None
     cd_reference: Literal["port", "curtain"] = "port"
@@ -270,7 +270,7 @@ class BreathingCurve(PlenumState):
     """[breathing.curve]: the breathing at ``points`` speeds evenly over ``speed_range_rpm``, one plenum state."""
 
     speed_range_rpm: Pair(10.0, 30000.0, "rpm")
-    points: Annotated[int, Field(ge=2, le=200)] = 20
+    points: Whole(2, 200) = 20
 
 
 class Breathing(_Model):
@@ -291,7 +291,7 @@ class Breathing(_Model):
     combustion_efficiency: _bounded(0.1, 1.0, low_open=False) = 1.0
     cell_mm: _bounded(2.0, 500.0, "mm", low_open=False) = 40.0
     cycle_tolerance: _bounded(1e-6, 0.1, low_open=False) = 1e-3
-    max_cycles: Annotated[int, Field(ge=2, le=1000)] = 60
+    max_cycles: Whole(2, 1000) = 60
     intake: BreathingSide = BreathingSide()
     exhaust: BreathingSide = BreathingSide()
     conditions: list[BreathingCondition] = []

@@ -24,6 +24,7 @@ class Range:
     unit: str = ""
     low_open: bool = True
     high_open: bool = False
+    whole: bool = False
 
     @property
     def text(self) -> str:
@@ -42,8 +43,11 @@ class Range:
         return v
 
     def number(self, v) -> float:
-        """``v`` if a number (not a bool), else a ValueError stating the allowed range: a unit string (``"10 mm"``)
-        was 'Input should be a valid number', the range and the unit left out."""
+        """``v`` if a number (not a bool; an integer if ``whole``), else a ValueError stating the allowed range: a
+        unit string (``"10 mm"``) was 'Input should be a valid number', ``4.5`` for a count 'Input should be a valid
+        integer', the range and the unit left out."""
+        if self.whole and (isinstance(v, bool) or not isinstance(v, int)):
+            raise InputError(f"must be a whole number, without quotes, a unit or a decimal point; {self.text}")
         if isinstance(v, bool) or not isinstance(v, (int, float)):
             raise InputError(f"must be a number, without quotes or a unit; {self.text}")
         return v
@@ -59,6 +63,11 @@ class Range:
 def _bounded(low, high, unit="", low_open=True, high_open=False):
     """A float constrained to a physical range, with a message that states the whole range."""
     return Annotated[float, Range(low, high, unit, low_open, high_open)]
+
+
+def Whole(low, high) -> Any:  # noqa: N802 (a type factory)
+    """An integer (a count) within [low, high], with a message that states the whole range."""
+    return Annotated[int, Range(low, high, low_open=False, whole=True)]
 
 
 def Length(low, high, **kw) -> Any:  # noqa: N802 (a type factory)

@@ -78,6 +78,8 @@ def message(err, laws=()) -> Problem:
         return Problem(loc, f"unknown key (value {shown(err['input'])}); check the spelling against `valvetrain example`")
     if kind == "union_tag_invalid":
         return Problem(f"{loc}.law", f"allowed {err['ctx']['expected_tags']}", shown(err['ctx']['tag']))
+    if kind == "literal_error":
+        return Problem(loc, f"allowed {err['ctx']['expected']}", shown(err["input"]))
     if kind == "union_tag_not_found":
         return Problem(f"{loc}.law", f"required key is missing; allowed {', '.join(repr(law) for law in laws)}")
     msg = err["msg"].removeprefix("Value error, ")

@@ -18,7 +18,7 @@ from ..layouts import LAYOUTS, layout
 from ..spring_materials import GRADES, grade
 from .cams import LAWS, Cam
 from .engine_sections import Breathing, Camshaft, CrankSpec, Gas, TwoStroke, resolve_path
-from .fields import Length, Pair, _bounded, _Model, _zero_or
+from .fields import Length, Pair, _bounded, _Model, Whole, _zero_or
 from .messages import SpecError, message, shown
 from .switching import Switching
 from .validate import problems, set_keys, spec_document
@@ -31,7 +31,7 @@ class Engine(_Model):
     bore_mm: Length(5.0, 2000.0, low_open=False)
     stroke_mm: Length(5.0, 4000.0, low_open=False)
     rated_speed_rpm: _bounded(10.0, 30000.0, "rpm", low_open=False)
-    cylinders: Annotated[int, Field(ge=1, le=64)]
+    cylinders: Whole(1, 64)
     strokes: Literal[2, 4]
     type: Literal["si", "si_injected", "diesel"] = "si"
     engine_class: Optional[Literal["automotive_petrol", "automotive_diesel", "heavy_duty"]] = None
@@ -241,9 +241,9 @@ class Dynamics(_Model):
     seat_stiffness_N_per_mm: _bounded(1e3, 1e7, "N/mm", low_open=False) = 2e5
     seat_damping_ratio: _bounded(0.0, 1.0, low_open=False, high_open=True) = 0.4
     speed_range_rpm: Optional[Pair(10.0, 30000.0, "rpm")] = None
-    speeds: Annotated[int, Field(ge=2, le=2000)] = 200
-    revolutions: Optional[Annotated[int, Field(ge=1, le=20)]] = None
-    coils_per_spring: Annotated[int, Field(ge=0, le=64)] = 8
+    speeds: Whole(2, 2000) = 200
+    revolutions: Optional[Whole(1, 20)] = None
+    coils_per_spring: Whole(0, 64) = 8
     step_cam_deg: _bounded(0.01, 2.0, "deg", low_open=False) = 0.1
     mass_kg: Optional[_bounded(0.001, 50.0, "kg", low_open=False)] = None
     spring_rate_N_per_mm: Optional[_bounded(0.0, 1e6, "N/mm", low_open=False)] = None
@@ -353,7 +353,7 @@ class Hydraulic(_Model):
 
     speed_rpm: Optional[_bounded(1.0, 30000.0, "rpm", low_open=False)] = None
     speed_range_rpm: Optional[Pair(1.0, 30000.0, "rpm")] = None
-    speeds: Annotated[int, Field(ge=2, le=200)] = 12
+    speeds: Whole(2, 200) = 12
     plunger_diameter_mm: Length(1.0, 1000.0, low_open=False)
     pump_volume_cm3: _bounded(0.001, 1e6, "cm3", low_open=False)
     pipe_length_mm: Length(1.0, 100000.0, low_open=False)
@@ -361,7 +361,7 @@ class Hydraulic(_Model):
     pipe_wall_mm: Optional[Length(0.1, 200.0, low_open=False)] = None
     pipe_wall_modulus_GPa: _bounded(1.0, 1000.0, "GPa", low_open=False) = 210.0
     friction_factor: _bounded(0.0, 1.0, low_open=False) = 0.03
-    reaches: Annotated[int, Field(ge=1, le=400)] = 20
+    reaches: Whole(1, 400) = 20
     actuator_diameter_mm: Length(1.0, 1000.0, low_open=False)
     actuator_volume_cm3: _bounded(0.001, 1e6, "cm3", low_open=False)
     valve_mass_kg: _bounded(0.001, 1000.0, "kg", low_open=False)
@@ -555,7 +555,7 @@ class Valve(_Model):
     """[valves.NAME]: one valve (or a set of same-name valves) of a cylinder."""
 
     kind: Literal["intake", "exhaust"]
-    count: Annotated[int, Field(ge=1, le=8)] = 1
+    count: Whole(1, 8) = 1
     throat_diameter_mm: Length(2.0, 1000.0, low_open=False)
     seat_angle_deg: _bounded(0.0, 75.0, "deg", low_open=False)
     max_lift_mm: Optional[Length(0.3, 500.0, low_open=False)] = None
@@ -586,7 +586,7 @@ class Output(_Model):
     """[output]: tables and exports."""
 
     table_step_cam_deg: _bounded(0.05, 10.0, "deg", low_open=False) = 0.5
-    contour_points: Annotated[int, Field(ge=36, le=100000)] = 721
+    contour_points: Whole(36, 100000) = 721
     export_step_deg: _bounded(0.1, 10.0, "deg", low_open=False) = 0.25
 
 
@@ -609,7 +609,7 @@ class Document(_Model):
     supervisor: Optional[_TEXT] = None
     checker: Optional[_TEXT] = None
     city: Optional[_TEXT] = None
-    year: Optional[Annotated[int, Field(ge=1900, le=2100)]] = None
+    year: Optional[Whole(1900, 2100)] = None
     date: Optional[_TEXT] = None
 
 

@@ -73,10 +73,8 @@ def field_of(path, info, value) -> Field:
     if typing.get_origin(annotation) is typing.Literal:
         return Field(path, "choice", value, options=typing.get_args(annotation), optional=optional)
     if annotation in (float, int):
-        rng = next((m for m in metadata if isinstance(m, Range)), None)
-        low = rng.low if rng else next((m.ge for m in metadata if hasattr(m, "ge")), None)
-        high = rng.high if rng else next((m.le for m in metadata if hasattr(m, "le")), None)
-        return Field(path, annotation.__name__, value, low, high, rng.unit if rng else "", optional=optional)
+        rng = next((m for m in metadata if isinstance(m, Range)), Range(None, None))
+        return Field(path, annotation.__name__, value, rng.low, rng.high, rng.unit, optional=optional)
     if annotation is bool:
         return Field(path, "choice", value, options=(True, False), optional=optional)
     if annotation is str:
