@@ -117,6 +117,19 @@ def test_invalid_grid_is_refused(tmp_path, grid, said):
     assert not (tmp_path / "o").exists()
 
 
+def test_a_bad_grid_value_is_refused_before_a_design_is_timed(tmp_path, monkeypatch):
+    """fuzz8: a grid of 1000 points with a value its key refuses timed a design of the file for the estimate of its
+    time (seconds) before it said so."""
+    f = tmp_path / "engine.toml"
+    f.write_text(appendix_text(), encoding="utf-8")
+    monkeypatch.setattr(study_module, "_timed", lambda *args: pytest.fail("a design was timed"))
+    values = ",".join(f"{0.5 + i * 1e-4:.4f}" for i in range(999)) + ",7"
+    result = CliRunner().invoke(main, ["study", str(f), "--grid", f"valves.intake.cam.shape_factor={values}",
+                                       "--out", str(tmp_path / "o")])
+    assert result.exit_code == 2 and "valves.intake.cam.shape_factor = 7: allowed" in result.output, result.output
+    assert not (tmp_path / "o").exists()
+
+
 def test_invalid_point_is_a_row(tmp_path):
     f = tmp_path / "engine.toml"
     f.write_text(appendix_text(), encoding="utf-8")
@@ -230,7 +243,8 @@ def test_a_huge_grid_is_refused_before_any_point_is_built(tmp_path, monkeypatch)
     (line,) = result.output.splitlines()
     assert line.startswith("error: --grid: 1,000,000 design points: about ") and " in 1 process at the " in line
     assert line.endswith(", over the 60 minutes a study may take unless --max-points 1000000 is given")
-    assert made == [] and not (tmp_path / "o").exists()
+    # each value was validated alone (check_grid: one key each), no point (both keys) made
+    assert [v for v in made if len(v) == 2] == [] and not (tmp_path / "o").exists()
     result = CliRunner().invoke(main, ["study", str(f), "--grid", "valves.intake.cam.shape_factor=0.55,0.6,0.65",
                                        "--max-points", "2", "--out", str(tmp_path / "o")])
     assert result.exit_code == 2 and "3 design points" in result.output

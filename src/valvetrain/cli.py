@@ -473,12 +473,12 @@ def study(file, grid_items, out, workers, scheduler, max_points, force) -> None:
     try:
         grid = parse_grid(grid_items)
         document = read_document(file)
+        check_grid(document, grid)                        # before the timed design of too_large's estimate
         total = count_points(grid)
         large = too_large(total, max_points, document, workers if scheduler is None else 1, "design points",
                           "--max-points")
         if large:
             raise GridError(f"--grid: {large}")
-        check_grid(document, grid)
     except GridError as err:
         click.echo(f"error: {err}", err=True)
         sys.exit(2)
