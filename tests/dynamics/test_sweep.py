@@ -3,6 +3,7 @@ quasi-static limit, a free vibration, the energy balance), its jumps, the sweep 
 headline numbers, the seating and the events."""
 
 from dataclasses import replace
+import sys
 from types import SimpleNamespace
 
 import numpy as np
@@ -328,3 +329,19 @@ def test_the_excitation_kept_is_each_laws_own():
             d = f.derivatives(theta)
             np.testing.assert_array_equal(u, 1.5 * d[0])
             np.testing.assert_array_equal(du, 1.5 * d[1])
+
+
+def test_the_compile_notice_is_for_a_terminal_only(monkeypatch, capsys):
+    """fuzz8: on a first run (no kernel compiled or cached) "compiling the dynamics kernels ..." went to stderr
+    before a refusal found after the first sweep; like the commands' progress it is said on a terminal only."""
+    from valvetrain.dynamics import sweep as sweep_module
+
+    monkeypatch.setattr(sweep_module, "integrate_block", SimpleNamespace(signatures=[]))
+    monkeypatch.setattr(sweep_module, "kernels_cached", lambda: False)
+    said = []
+    for tty in (False, True):
+        monkeypatch.setattr(sweep_module, "_COMPILE_NOTIFIED", False)
+        monkeypatch.setattr(sys.stderr, "isatty", lambda tty=tty: tty)
+        sweep_module._notify_compile()
+        said.append(capsys.readouterr().err)
+    assert said[0] == "" and said[1].startswith("compiling the dynamics kernels")

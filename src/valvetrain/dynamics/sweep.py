@@ -321,9 +321,11 @@ def kernels_cached() -> bool:
 
 
 def _notify_compile():
-    """Say once on stderr that the kernels are being compiled, when no compiled or cached kernel is at hand."""
+    """Say once on stderr that the kernels are being compiled, when no compiled or cached kernel is at hand and
+    stderr is a terminal (like the commands' progress: a command whose output is read says only its results and
+    errors, and a refusal found after the first sweep came after this line)."""
     global _COMPILE_NOTIFIED
-    if _COMPILE_NOTIFIED or integrate_block.signatures:
+    if _COMPILE_NOTIFIED or integrate_block.signatures or not sys.stderr.isatty():
         return
     _COMPILE_NOTIFIED = True
     if not kernels_cached():
