@@ -328,8 +328,12 @@ def test_a_folder_with_user_files_is_refused(spec_file, tmp_path):
     out.mkdir()
     (out / "notes.txt").write_text("mine", encoding="utf-8")
     result = tolerance(spec_file, out, *ARGS, code=2)
-    assert "did not write" in result.output
+    assert "did not write" in result.output and "--force to write beside them" in result.output
     assert sorted(p.name for p in out.iterdir()) == ["notes.txt"]
+    # fuzz8: tolerance had no --force as run, sweep, optimize, study and compare have; it writes beside the user's
+    # files and leaves them as they are (it never replaces the folder)
+    tolerance(spec_file, out, *ARGS, "--force")
+    assert (out / "notes.txt").read_text(encoding="utf-8") == "mine" and (out / "tolerance.json").is_file()
 
 
 @pytest.mark.parametrize("place, said", [("spec", "is a file; allowed: a path whose every parent is a folder"),

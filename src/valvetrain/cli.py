@@ -545,7 +545,10 @@ def study(file, grid_items, out, workers, scheduler, max_points, force) -> None:
                    "are refused with the estimate).")
 @click.option("--lang", type=click.Choice(["en", "ru"]), default="en", show_default=True,
               help="Language of the report.")
-def tolerance(file, samples, method, seed, out, workers, scheduler, max_samples, lang) -> None:
+@click.option("--force", is_flag=True,
+              help="Write into --out even if it holds files that valvetrain tolerance did not write: they are left "
+                   "as they are.")
+def tolerance(file, samples, method, seed, out, workers, scheduler, max_samples, lang, force) -> None:
     """Sample FILE's [[tolerances]] and design every sample; per check the distribution of its margin, its
     probability of failure and the tolerances that drive it.
 
@@ -569,10 +572,10 @@ def tolerance(file, samples, method, seed, out, workers, scheduler, max_samples,
     except OutFolderError as err:
         _fail_out(err)
     ours = {"records.tmp", *(f"tolerance.{x}{t}" for x in ("json", "html") for t in ("", ".tmp"))}
-    if folder.exists() and (not folder.is_dir() or any(p.name not in ours | {RECORDS} or p.name in ours
-                                                       and not p.is_file() for p in folder.iterdir())):
+    if folder.exists() and (not folder.is_dir() or any(p.name in ours and not p.is_file() or not force
+                                                       and p.name not in ours | {RECORDS} for p in folder.iterdir())):
         _fail_out(OutFolderError(f"{out}: holds files that valvetrain tolerance did not write; give a new or empty "
-                                 "folder"))
+                                 "folder, or --force to write beside them"))
     if not folder.exists() and (problem := location_problem(folder.resolve())):
         _fail_out(OutFolderError(f"{out}: {problem}"))
     try:
