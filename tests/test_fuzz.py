@@ -175,3 +175,22 @@ def test_the_hard_deadline_of_a_case_is_the_time_its_own_rules_allow():
     assert fuzz.allowed_seconds({"base": "example", "ops": []}, BASES, 60.0) == 60.0
     optimize = {"base": "example", "ops": [], "command": ["optimize", "--maxiter", "1"]}
     assert fuzz.allowed_seconds(optimize, BASES, 60.0) == 240.0
+
+
+def test_toml_nested_deeper_than_the_parser_goes_is_refused_or_taken_as_text():
+    """A fuzz run (fuzz9): the designer's session on a specification with an array nested 2000 deep raised
+    RecursionError out of tomllib (the command line's parse_spec refused it already). The session, the overlaid file
+    and the specification's text refuse it as too deeply nested; a grid value and a panel input so nested are their
+    text (refused then as a value of the wrong type)."""
+    pytest.importorskip("bokeh")
+    from valvetrain.specification import SpecError, toml_tables
+    from valvetrain.study import parse_value as grid_value
+    from valvetrain.web.form import Field, parse_value as panel_value
+    from valvetrain.web.session import Session
+
+    deep = "[" * 2000 + "]" * 2000
+    for read in (toml_tables, Session.start):
+        with pytest.raises(SpecError, match="nested too deeply"):
+            read(f"x = {deep}\n")
+    assert grid_value(deep) == deep
+    assert panel_value(Field("engine.cylinder_offsets_mm", "list", None), deep) == deep

@@ -115,7 +115,7 @@ def parse_value(text) -> Any:
     """A grid value: a TOML value (``6000``, ``0.5``, ``true``, ``"kurz"``), or else the text itself as a string."""
     try:
         return tomllib.loads(f"v = {text}")["v"]
-    except tomllib.TOMLDecodeError:
+    except (tomllib.TOMLDecodeError, RecursionError):    # the text (nested deeper than the parser goes)
         return text
 
 

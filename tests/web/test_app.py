@@ -241,6 +241,9 @@ def test_overlay_of_a_file_and_the_dxf_of_the_contour():
     assert np.nanmax(d.base_curves.data["lift"]) == pytest.approx(max(theirs["valve_lift_mm"]), rel=1e-6)
     d.on_overlay("value", None, base64.b64encode(b"engine = 3").decode())
     assert d.status.text.startswith("pushrod-dynamics.toml: not designed")
+    # fuzz9: a file nested deeper than the TOML parser goes raised RecursionError in the server's callback
+    d.on_overlay("value", None, base64.b64encode(b"x = " + b"[" * 2000 + b"]" * 2000).decode())
+    assert "nested too deeply" in d.status.text
     d.on_dxf()
     data = base64.b64decode(d.downloaded["dxf"].text)
     # the bytes of `valvetrain run`'s contour/intake.dxf, with a comment (group 999) that makes each download new

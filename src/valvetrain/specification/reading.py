@@ -37,6 +37,26 @@ MAX_SPEC_CHARACTERS = 1_000_000
 indicator diagram belongs in a file of its own)."""
 
 
+def toml_tables(text, source="<string>") -> dict:
+    """The tables of the TOML text of a specification (:func:`tomllib.loads`, a leading byte-order mark dropped).
+
+    Raises
+    ------
+    SpecError
+        Text longer than :data:`MAX_SPEC_CHARACTERS`, not TOML, or nested deeper than the parser's recursion, named
+        by ``source``.
+    """
+    if len(text) > MAX_SPEC_CHARACTERS:
+        raise SpecError([Problem(source, f"{len(text):,} characters; allowed at most {MAX_SPEC_CHARACTERS:,} for a "
+                                 "specification (put long tables in a CSV file: cam.table_file, crank.pressure_file)")])
+    try:
+        return tomllib.loads(text.removeprefix("\ufeff"))
+    except tomllib.TOMLDecodeError as exc:
+        raise SpecError([Problem(source, f"not valid TOML: {exc}")]) from None
+    except RecursionError:
+        raise SpecError([Problem(source, "arrays or tables nested too deeply to be a specification")]) from None
+
+
 def parse_spec(text, source="<string>", source_dir=None) -> Spec:
     """Parse and validate a specification: TOML text, or a document already parsed (a dict of its tables, as
     :func:`tomllib.loads` gives it); relative file names in it are read from ``source_dir``."""
@@ -45,15 +65,7 @@ def parse_spec(text, source="<string>", source_dir=None) -> Spec:
     if not isinstance(text, str):
         raise SpecError([Problem(source, "a specification is TOML text or a dict of its tables, not a "
                                  f"{type(text).__name__}")])
-    if len(text) > MAX_SPEC_CHARACTERS:
-        raise SpecError([Problem(source, f"{len(text):,} characters; allowed at most {MAX_SPEC_CHARACTERS:,} for a "
-                                 "specification (put long tables in a CSV file: cam.table_file, crank.pressure_file)")])
-    try:
-        data = tomllib.loads(text.removeprefix("\ufeff"))
-    except tomllib.TOMLDecodeError as exc:
-        raise SpecError([Problem(source, f"not valid TOML: {exc}")]) from None
-    except RecursionError:
-        raise SpecError([Problem(source, "arrays or tables nested too deeply to be a specification")]) from None
+    data = toml_tables(text, source)
     if source_dir is not None and isinstance(data, dict):
         data["source_dir"] = str(source_dir)
     try:

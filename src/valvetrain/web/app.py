@@ -33,7 +33,6 @@ from concurrent.futures import ThreadPoolExecutor
 from functools import partial
 import hashlib
 import json
-import tomllib
 
 from bokeh.core.property.descriptors import UnsetValueError
 from bokeh.models import NumericInput, Select
@@ -42,6 +41,7 @@ import numpy as np
 from ..report.html import check_range
 from ..report.i18n import TEXT
 from ..report.names import label, record_quantity_text, translate
+from ..specification import SpecError, toml_tables
 from .draw import (CURVES, EVENTS, KINEMATIC_PLOTS, PLOT_BUCKETS, PLOT_ROOM, RANGES, SEVERITY_COLOURS, STATUS_WORDS,
                    VALVE_CARD, WORDS, Units, _array, _count, _fit, _hold, _now, _send, thinned)
 from .form import form, parse_value, value_at, value_of, value_text
@@ -535,7 +535,11 @@ class Designer(Layout, SweepPanel, VvaPanel):
         except UnsetValueError:
             name = "overlay.toml"
         try:
-            document = tomllib.loads(base64.b64decode(new).decode("utf-8"))
+            document = toml_tables(base64.b64decode(new).decode("utf-8"), name)
+        except SpecError as err:
+            self.status.text = WORDS[self.lang]["overlay_refused"].format(name=name, message="; ".join(
+                p.message for p in err.problems))
+            return
         except (ValueError, UnicodeDecodeError) as exc:
             self.status.text = WORDS[self.lang]["overlay_refused"].format(name=name, message=exc)
             return

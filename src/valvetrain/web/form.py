@@ -164,7 +164,7 @@ def parse_value(f, text) -> Any:
     for wrapped in (f"[{text}]", text) if f.kind == "list" and not text.startswith("[") else (text, f"[{text}]"):
         try:
             return tomllib.loads(f"v = {wrapped}")["v"]
-        except tomllib.TOMLDecodeError:
+        except (tomllib.TOMLDecodeError, RecursionError):    # nested deeper than the parser goes: as text
             continue
     return [part.strip() for part in text.split(",")] if "," in text else text
 

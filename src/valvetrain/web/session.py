@@ -9,14 +9,13 @@ from collections import OrderedDict
 import copy
 from dataclasses import dataclass, field
 import json
-import tomllib
 from typing import Any
 
 import numpy as np
 
 from .. import api
 from ..errors import InputError
-from ..specification import REGISTRY, SpecError, example_text, set_keys
+from ..specification import REGISTRY, SpecError, example_text, set_keys, toml_tables
 from ..laws import PolydyneLaw
 from ..specification.cam_base import main_half_angle_deg
 from ..specification.cams import Ratio
@@ -432,10 +431,7 @@ class Session:
         SpecError
             The text is no specification, or one that does not design.
         """
-        try:
-            document = tomllib.loads(text if text is not None else example_text())
-        except tomllib.TOMLDecodeError as exc:
-            raise SpecError([f"not valid TOML: {exc}"]) from None
+        document = toml_tables(text if text is not None else example_text())
         if source_dir is not None:
             document["source_dir"] = str(source_dir)
         s = cls(copy.deepcopy(document))
