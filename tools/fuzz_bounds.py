@@ -63,22 +63,11 @@ def _unwrap(tp):
 
 
 def _bounds(meta, field_info=None):
-    """``(low, high, low_open, high_open)`` of a field's metadata, or None."""
+    """``(low, high, low_open, high_open)`` of a field's metadata (its :class:`Range`), or None."""
     for m in meta + list(getattr(field_info, "metadata", []) or []):
         if isinstance(m, Range):
             return m.low, m.high, m.low_open, m.high_open
-    low = high = None
-    low_open = high_open = False
-    for m in meta + list(getattr(field_info, "metadata", []) or []):
-        for attr, is_low, is_open in (("ge", True, False), ("gt", True, True), ("le", False, False),
-                                      ("lt", False, True)):
-            v = getattr(m, attr, None)
-            if v is not None:
-                if is_low:
-                    low, low_open = v, is_open
-                else:
-                    high, high_open = v, is_open
-    return None if low is None and high is None else (low, high, low_open, high_open)
+    return None
 
 
 def _model_of(tp, node):
