@@ -1,5 +1,7 @@
 """Polydyne cam: closed forms of Valve-train practical works (n.d.), work 3, end conditions, the ramp junction."""
 
+from fractions import Fraction
+
 import numpy as np
 import pytest
 
@@ -62,6 +64,35 @@ def test_junction_solver_reduces_to_closed_form():
     exps = default_exponents(10)
     a = polynomial_junction_coefficients((2.0,) + exps, 7.0, 0.0, 0.0)
     assert np.allclose(a, 7.0 * np.array(polydyne_coefficients(*exps)), rtol=1e-10, atol=1e-12)
+
+
+def _exact_solution(matrix, rhs):
+    """The solution of ``matrix x = rhs`` (floats, read as the exact binary fractions they are) by Gauss-Jordan
+    elimination in rational arithmetic, each x the fraction it is exactly."""
+    a = [[Fraction(v) for v in row] + [Fraction(b)] for row, b in zip(matrix, rhs, strict=True)]
+    n = len(a)
+    for i in range(n):
+        pivot = next(r for r in range(i, n) if a[r][i] != 0)
+        a[i], a[pivot] = a[pivot], a[i]
+        for r in range(n):
+            if r != i:
+                f = a[r][i] / a[i][i]
+                a[r] = [x - f * y for x, y in zip(a[r], a[i], strict=True)]
+    return [a[i][n] / a[i][i] for i in range(n)]
+
+
+@pytest.mark.parametrize("exponents", [(2.0, 8.0, 14.0, 20.0, 26.0), (2.0, 10.0, 18.0, 26.0, 34.0),
+                                       (2.0, 6.5, 11.0, 15.5, 20.0, 24.5)])
+def test_junction_coefficients_are_the_exact_solution_rounded(exponents):
+    """The junction system solved exactly (Fractions, an independent method) and rounded to the nearest floats gives
+    the package's coefficients bit for bit: LAPACK in double precision differed in the 14th digit, and by the BLAS
+    kernel of the processor (OPENBLAS_CORETYPE=Haswell against an AVX-512 machine's own), which moved the breathing
+    results of examples/phaser.toml in the 5th digit."""
+    k = np.array(exponents)
+    matrix = [_falling(k, j).tolist() for j in range(k.size)]
+    rhs = [0.3 - 9.0, -0.5] + [0.0] * (k.size - 2)
+    want = [float(x) for x in _exact_solution(matrix, rhs)]
+    assert polynomial_junction_coefficients(exponents, 9.0, 0.3, -0.5).tolist() == want
 
 
 def test_ramp_junction_worked_example():
