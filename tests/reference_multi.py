@@ -1,7 +1,7 @@
 """An independent reference for the multi-mass pushrod train: its equations of motion written out here from the
 model's definition (Shang Hanji (1988), section 3.2; valvetrain.dynamics.models.MultiMassTrain's docstring) and
-integrated by scipy's DOP853, each contact state a smooth segment ended by its events, not by the package's kernel
-nor from its assembled network.
+integrated by scipy's DOP853, each contact state a smooth segment ended by its events (switched with a hysteresis of
+:data:`SWITCH_FORCE`), not by the package's kernel nor from its assembled network.
 
 The train (every value at the valve, positive opening): tappet m_t / k^2, pushrod m_p / k^2, rocker J / l_v^2 and
 valve m_v with the retainer's end coils m_e and half a coil mass; N coil masses m_s / (N + 1).  The cam pushes the
@@ -18,6 +18,15 @@ from dataclasses import dataclass
 
 import numpy as np
 from scipy.integrate import solve_ivp
+
+SWITCH_FORCE = 1e-6
+"""The force [N] past zero at which a contact's state switches (a closed contact opens at -SWITCH_FORCE, an open one
+closes at +SWITCH_FORCE): a segment starts strictly on its own side of its events.  Switched at zero, a segment began
+at its event function's root as the root finder left it, within about 1e-10 N of zero on either side; where the
+contact opened at the crest of its force (the cam's at 7000 rpm) an open segment that began a hair above zero saw no
+rising crossing and let the tappet sink 8 mm into the cam, with one BLAS kernel of the processor and not another
+(AVX-512's against OPENBLAS_CORETYPE=Haswell).  1e-6 N moves a switch by about 1e-13 s at the 1e7 N/s the forces
+change there."""
 
 
 @dataclass(frozen=True)
@@ -123,8 +132,8 @@ class PushrodReference:
         while t0 < t_end:
             events = []
             for j in range(2):
-                def event(t, s, *args, j=j):
-                    return self.contacts(t, s, omega)[1][j]
+                def event(t, s, *args, j=j, side=1.0 if closed[j] else -1.0):
+                    return self.contacts(t, s, omega)[1][j] + side * SWITCH_FORCE
                 event.terminal = True
                 event.direction = -1.0 if closed[j] else 1.0
                 events.append(event)
