@@ -8,7 +8,7 @@ from types import SimpleNamespace
 
 import pytest
 
-from valvetrain.design.dynamics import _multi_train
+from valvetrain.design.dynamics import _link_estimates, _multi_train
 from valvetrain.dynamics.coils import CoilSpring
 from valvetrain.layouts import chain, train_mass, unused_part_keys
 from valvetrain.links import ValveBridge
@@ -16,6 +16,7 @@ from valvetrain.locale import note_text
 from valvetrain.report.html import numbered_citations
 from valvetrain.report.russian import russian_citations
 from valvetrain.specification import example_spec
+from valvetrain.specification.messages import SpecError
 from valvetrain.specification.reading import parse_spec
 from valvetrain.specification.si import si
 from valvetrain.specification import example_text
@@ -47,8 +48,7 @@ def test_its_bending_stress_and_stiffness_by_hand():
 def test_it_joins_a_chain_with_a_lever_and_adds_its_mass_at_the_valve():
     """The built-in example's intake (pushrod layout) given a bridge: the bridge joins its chain after the rocker, and
     the reduced mass at the valve grows by bridge_kg (ratio 1: it moves with the valve); made direct (no lever) it
-    joins nothing and its keys are named unused.  In a multi-mass train the bridge is rigid, as in the one-mass train:
-    its mass is the valve node's, every other node and stiffness the same."""
+    joins nothing and its keys are named unused."""
     spec = example_spec()
     plain = si(spec.valves["intake"])
     bridged = si(spec.replace({"valves.intake.parts.bridge_span_mm": 40.0,
@@ -59,13 +59,41 @@ def test_it_joins_a_chain_with_a_lever_and_adds_its_mass_at_the_valve():
     direct = si(spec.replace({"valves.intake.parts.bridge_span_mm": 40.0, "valves.intake.drive.layout": "direct",
                               "valves.intake.rocker_ratio": 1.0}).valves["intake"])
     assert "valve_bridge" not in chain(direct).parts and "bridge_span_mm" in unused_part_keys(direct)
-    text = example_text()
-    assert 'model = "1dof"' in text and "rocker_inertia_kg_mm2 = 25.0" in text
-    multi = text.replace('model = "1dof"', 'model = "multi"', 1)
-    args = ((3.6e8, 3.8e7, 4.5e7), [CoilSpring(4e4, 300.0, 0.03, 0.0, 4)], 2e-4, {"damping_ratio": 0.05},
-            "valves.intake", 0.04)
-    without, with_bridge = (_multi_train(si(parse_spec(t).valves["intake"]), *args) for t in (
-        multi, multi.replace("rocker_inertia_kg_mm2 = 25.0", "rocker_inertia_kg_mm2 = 25.0\nbridge_kg = 0.03", 1)))
-    assert [name for name, _ in with_bridge.drive] == ["tappet", "pushrod", "rocker", "valve"]
-    assert with_bridge.drive[-1][1] - without.drive[-1][1] == pytest.approx(0.03, rel=1e-12)
-    assert with_bridge.drive[:-1] == without.drive[:-1] and with_bridge.links == without.links
+
+
+def test_it_is_an_elastic_link_at_the_valve():
+    """The example's intake given the bridge of the hand calculation (40 mm span, 14 x 12 mm): the drive's links from
+    the cam are the camshaft, the pushrod (E A / L over k^2), the rocker's joint to the valve and the bridge at its
+    158760 N/mm per valve (not divided by k^2: it moves with the valve).  Its multi-mass train has the bridge's
+    node, 0.03 kg, between the rocker and the valve, joined to the rocker by the joint in series with half the bridge
+    (twice its stiffness) and to the valve by the other half; the valve node and the nodes before are those without
+    the bridge, and the compliances of the links add up to those given (the identity of springs in series)."""
+    keys = {"valves.intake.parts.bridge_span_mm": 40.0, "valves.intake.parts.bridge_width_mm": 14.0,
+            "valves.intake.parts.bridge_height_mm": 12.0}
+    valve = si(example_spec().replace(keys).valves["intake"])
+    k = valve.rocker_ratio
+    estimates = _link_estimates(valve, k)
+    plain = _link_estimates(si(example_spec().valves["intake"]), k)
+    assert [name for name, _ in estimates] == [name for name, _ in plain] + ["valve bridge"]
+    assert estimates[:-1] == plain and estimates[-1][1] == pytest.approx(158760e3, rel=1e-12)
+    text = example_text().replace('model = "1dof"', 'model = "multi"', 1)
+    args = ([CoilSpring(4e4, 300.0, 0.03, 0.0, 4)], 2e-4, {"damping_ratio": 0.05}, "valves.intake", 0.04)
+    without = _multi_train(si(parse_spec(text).valves["intake"]), (3.6e8, 3.8e7, 4.5e7), *args)
+    bridged = parse_spec(text.replace("rocker_inertia_kg_mm2 = 25.0", "rocker_inertia_kg_mm2 = 25.0\nbridge_kg = 0.03", 1))
+    with_bridge = _multi_train(si(bridged.replace(keys).valves["intake"]), (3.6e8, 3.8e7, 4.5e7, 1.5876e8), *args)
+    assert [name for name, _ in with_bridge.drive] == ["tappet", "pushrod", "rocker", "valve_bridge", "valve"]
+    assert with_bridge.drive[3] == ("valve_bridge", 0.03)
+    assert with_bridge.drive[:3] == without.drive[:3] and with_bridge.drive[4] == without.drive[3]
+    assert with_bridge.links[:3] == without.links[:3]
+    assert with_bridge.links[3:] == pytest.approx([1.0 / (1.0 / 4.5e7 + 1.0 / 3.1752e8), 3.1752e8], rel=1e-15)
+    assert sum(1.0 / c for c in with_bridge.links) == pytest.approx(
+        sum(1.0 / c for c in (3.6e8, 3.8e7, 4.5e7, 1.5876e8)), rel=1e-14)
+
+
+def test_a_multi_mass_train_needs_its_mass():
+    """Its geometry given without bridge_kg, a multi-mass train is refused naming the key (the bridge is a node)."""
+    text = example_text().replace('model = "1dof"', 'model = "multi"', 1)
+    valve = si(parse_spec(text).replace({"valves.intake.parts.bridge_span_mm": 40.0}).valves["intake"])
+    with pytest.raises(SpecError, match="needs positive drive.masses.bridge_kg"):
+        _multi_train(valve, (3.6e8, 3.8e7, 4.5e7, 1e8), [CoilSpring(4e4, 300.0, 0.03, 0.0, 4)], 2e-4, {},
+                     "valves.intake", 0.04)

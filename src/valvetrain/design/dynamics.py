@@ -58,20 +58,24 @@ MAX_SWEEP_BYTES = 1e9
 
 
 def _link_estimates(valve, k):
-    """The drive links of the layout (name, stiffness at the valve [N/m] or None) from the part geometry."""
+    """The drive links of the layout from the cam (name, stiffness at the valve [N/m] or None) from the part geometry:
+    the camshaft, each elastic link on the cam side of the valve's joint (its stiffness over k^2), the joint of the
+    last lever to the valve, each elastic link at the valve (a valve bridge: ratio 1)."""
     parts = valve.parts
     cam = None
     if None not in (parts.camshaft_diameter, parts.camshaft_span, parts.cam_to_bearing):
         cam = camshaft_stiffness(parts.cam_to_bearing, parts.camshaft_span - parts.cam_to_bearing,
                                  parts.camshaft_diameter, parts.camshaft_bore, parts.camshaft_modulus) / k**2
     drive = chain(valve)
+
+    def own(link):
+        c = link.stiffness(parts)
+        return link.label, None if c is None else c / (1.0 if link.at_valve else k**2)
+
     links = [("camshaft and cam contact", cam)]
-    for link in drive.links:
-        if link.elastic:
-            own = link.stiffness(parts)
-            links.append((link.name, None if own is None else own / k**2))
+    links += [own(link) for link in drive.links if link.elastic and not link.at_valve]
     links.append((drive.valve_joint, None))
-    return links
+    return links + [own(link) for link in drive.links if link.elastic and link.at_valve]
 
 
 def drive_links(dyn, valve, k, at) -> tuple[tuple[Optional[float], ...], tuple[str, ...], list[str]]:
@@ -412,11 +416,10 @@ def _finger_node(valve, law, node, rest=0.0, offset=0.0) -> VariableMass:
 def _multi_train(valve, links, springs, lash, kw, at, arm):
     """The multi-mass train of the valve's layout from its links, from the cam: each link's node (:meth:`Link.node
     <valvetrain.links.Link.node>`, the part masses of [drive.masses] reduced to the valve, a rocker's inertia on the
-    valve arm ``arm`` [m] of :func:`inertia_arm`), then the valve's with what a link that joins the chain adds at the
-    valve (:meth:`Layout.valve_mass <valvetrain.layouts.Layout.valve_mass>`: a valve bridge's share, rigid here as in the
-    one-mass train); between them the drive's stiffnesses ``links`` at the valve (:func:`drive_links`: the camshaft,
-    each elastic link's, the last link's joint to the valve) in series, an elastic link's as two halves of twice its
-    stiffness on either side of its node."""
+    valve arm ``arm`` [m] of :func:`inertia_arm`, a valve bridge's mass per valve), then the valve's; between them the
+    drive's stiffnesses ``links`` at the valve in the order of :func:`drive_links` (the camshaft, each elastic link's
+    on the cam side, the last lever's joint to the valve, each elastic link's at the valve) in series, an elastic
+    link's as two halves of twice its stiffness on either side of its node."""
     m, drive = valve.drive.masses, chain(valve)
     need = drive.train_masses
     if m is None:
@@ -427,17 +430,26 @@ def _multi_train(valve, links, springs, lash, kw, at, arm):
         raise SpecError([Problem(f"{at}.dynamics.model", f"with layout \"{drive.name}\" needs positive "
                                  f"drive.masses.{', '.join(missing)}", '"multi"', " ")])
     k = valve.rocker_ratio
-    nodes, stiffness, between = [], [], [links[0]]   # between: the stiffnesses since the last node [N/m at the valve]
-    elastic = iter(links[1:-1])
+    values = iter(links)
+    nodes, stiffness, between = [], [], [next(values)]   # between: the stiffnesses since the last node [N/m at the valve]
+    joined = False                                        # the last lever's joint to the valve taken
     for link in drive.links:
+        if link.at_valve and not joined:
+            between.append(next(values))
+            joined = True
         node = link.node(m, k, arm)
-        if node is not None:   # an elastic link's mass at its middle between two halves of twice its stiffness
-            half = [2.0 * next(elastic)] if link.elastic else []
-            nodes.append(node)
-            stiffness.append(series(*between, *half))
-            between = half
-    nodes.append(("valve", m.valve_kg + m.retainer_kg + m.cotters_kg + drive.valve_mass(m)))
-    stiffness.append(series(*between, links[-1]))
+        own = [next(values)] if link.elastic else []
+        if node is None:
+            between += own
+            continue
+        half = [2.0 * c for c in own]   # an elastic link's mass at its middle between two halves of twice its stiffness
+        nodes.append(node)
+        stiffness.append(series(*between, *half))
+        between = half
+    if not joined:
+        between.append(next(values))
+    nodes.append(("valve", m.valve_kg + m.retainer_kg + m.cotters_kg))
+    stiffness.append(series(*between))
     return MultiMassTrain(drive.name, tuple(nodes), tuple(stiffness), tuple(springs), float(k), float(lash), **kw)
 
 

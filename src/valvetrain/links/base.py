@@ -97,6 +97,10 @@ class Link:
     joint : str
         The name of the joint between the link and the valve in the drive's stiffness, where it is the last moving
         link of the chain ("" for a link that never is).
+    at_valve : bool
+        Whether the link moves with the valve, beyond the joint of the last lever (a valve bridge): its mass and
+        stiffness are already at the valve (ratio 1), and the chain's joint to the valve (:attr:`joint`) lies between
+        the cam side and it.
     lever : bool
         Whether the link is a lever whose arms set the rocker ratio i_k = l_v / l_t: a chain without one moves the
         valve as the cam lifts it (i_k = 1).
@@ -111,8 +115,15 @@ class Link:
     carrier: ClassVar[str] = ""
     elastic: ClassVar[bool] = False
     joint: ClassVar[str] = ""
+    at_valve: ClassVar[bool] = False
     lever: ClassVar[bool] = False
     part_keys: ClassVar[tuple[str, ...]] = ()
+
+    @property
+    def label(self) -> str:
+        """The link's name in the drive's stiffnesses (the notes, the records): its :attr:`name` in words, the key of
+        its name in the catalogues' ``[links]``."""
+        return self.name.replace("_", " ")
 
     def given(self, section) -> bool:
         """Whether a ``[valves.NAME.parts]`` section (the model, its keys in their units) gives one of the link's

@@ -4,14 +4,17 @@ one of its keys (``[parts] bridge_span_mm``, ``bridge_width_mm``, ``bridge_heigh
 bridge_kg``); a ``[valves.NAME]`` section is one valve of the pair.
 
 The bridge moves with the valves (ratio 1): its mass per valve, ``bridge_kg`` (half the bridge), adds to the train's
-mass reduced to the valve (:func:`valvetrain.layouts.train_mass`).  It is a beam simply supported on the two valve tips
+mass reduced to the valve (:func:`valvetrain.layouts.train_mass`) and is a node of its own in a multi-mass train,
+between the rocker's joint and the valve; its stiffness per valve (below) is a link of the drive in series with the
+others (an elastic link: its mass between two halves of twice its stiffness).  It is a beam simply supported on the two valve tips
 ``l`` apart and loaded at mid-span by the rocker, which pushes both valves, F = 2 F_v; at its middle section (width b,
 height h in the plane of bending)
 
 .. math:: \\sigma = \\frac{M}{W}, \\qquad M = \\frac{F l}{4} = \\frac{F_v l}{2}, \\qquad W = \\frac{b h^2}{6}
 
 and its mid-span deflection y = F l^3 / (48 E I), I = b h^3 / 12, makes its stiffness per valve (the force at one
-valve per unit deflection) F_v / y = 24 E I / l^3, said in the check's note.
+valve per unit deflection) F_v / y = 24 E I / l^3, said in the check's note; without the three dimensions the
+drive's stiffness gives it a share, as any link whose geometry is not given (:func:`valvetrain.design.dynamics.drive_links`).
 
 References
 ----------
@@ -44,9 +47,12 @@ def bridge_stiffness(span, width, height, modulus=strength.STEEL_MODULUS) -> flo
 
 @register
 class ValveBridge(Link):
-    """A valve bridge between the rocker and a pair of valves: rigid in the train, its mass at the valve."""
+    """A valve bridge between the rocker and a pair of valves: an elastic link of the train at the valve."""
 
     name = "valve_bridge"
+    mass_key = "bridge_kg"
+    elastic = True
+    at_valve = True
     part_keys = ("bridge_span_mm", "bridge_width_mm", "bridge_height_mm")
 
     def joins(self, links, valve) -> bool:
@@ -59,6 +65,20 @@ class ValveBridge(Link):
     def valve_mass(self, masses) -> float:
         """Its mass per valve [kg] (``[drive.masses] bridge_kg``, 0 not given): it moves with the valve, ratio 1."""
         return masses.bridge_kg or 0.0
+
+    def stiffness(self, parts) -> float | None:
+        """Its stiffness per valve, 24 E I / l^3 (:func:`bridge_stiffness`), where its span and section are given."""
+        if None in (parts.bridge_span, parts.bridge_width, parts.bridge_height):
+            return None
+        return bridge_stiffness(parts.bridge_span, parts.bridge_width, parts.bridge_height)
+
+    def node(self, masses, ratio, arm) -> tuple[str, float] | None:
+        """Its node in a multi-mass train: its mass per valve at the valve (ratio 1, whatever the rocker's)."""
+        return (self.name, masses.bridge_kg) if masses.bridge_kg else None
+
+    def missing(self, masses, arm) -> list[str]:
+        """``bridge_kg`` where a multi-mass train has no positive mass per valve for it."""
+        return [] if (masses.bridge_kg or 0.0) > 0.0 else [self.mass_key]
 
     def checks(self, loads) -> list:
         """Its bending stress at mid-span under the rocker's force on both valves, 2 x the valve force, where its span
