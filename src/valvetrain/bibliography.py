@@ -477,6 +477,12 @@ WORKS = {
               "processes", kind="software, version 3.2", publisher="The Cantera Developers", year="2025",
         url="https://cantera.org", note="Its species data (the NASA Glenn polynomials) are read through its species "
         "interface."),
+    "mpmath2023": Work(
+        short="mpmath development team (2023)",
+        authors="The mpmath development team",
+        title="mpmath: a Python library for arbitrary-precision floating-point arithmetic", kind="software, version 1.3",
+        publisher="The mpmath development team", year="2023", url="https://mpmath.org",
+        note="Its LU solver in 50-digit arithmetic solves the polydyne cam's junction conditions."),
     "toro2009": Work(
         short="Toro (2009)",
         authors="Toro, E. F.",

@@ -127,8 +127,7 @@ def polynomial_junction_coefficients(exponents, nose_lift, end_lift, end_slope) 
 
     References
     ----------
-    The mpmath development team (2023), mpmath: a Python library for arbitrary-precision
-    floating-point arithmetic, version 1.3.0, https://mpmath.org/ (``lu_solve``).
+    mpmath development team (2023) (its ``lu_solve``).
     """
     return np.array(_junction(tuple(float(k) for k in exponents), float(end_lift - nose_lift), float(end_slope)))
 
