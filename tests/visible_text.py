@@ -78,12 +78,12 @@ works' in-text forms (a citation names a work as the bibliography does)."""
 
 def latin_words(page):
     """The Latin words of three letters or more in an HTML page or a text that are not a symbol (a word joined to a
-    subscript by "_", :data:`SYMBOLS`), a proper name (:data:`PROPER`, a name the designer gave, a title quoted «»)
+    subscript by "_", :data:`SYMBOLS`), a key of the specification (its dotted path), a proper name (:data:`PROPER`, a name the designer gave, a title quoted «»)
     or in a work's entry in another language (``<li lang="en">``)."""
     page = re.sub(r"<style.*?</style>", "", page, flags=re.S)
     page = re.sub(r'<li [^>]*lang="(?!ru")[^"]*">.*?</li>', "", page, flags=re.S)
     page = re.sub(r'<(span|a) class="name"[^>]*>.*?</\1>', "", page, flags=re.S)
     text = html.unescape(re.sub(r"<[^>]+>", " ", page))
-    text = re.sub(r"\w*_\w*", " ", text)                     # symbols with a subscript: phi_p0, a_T
+    text = re.sub(r"[\w.]*_[\w.]*", " ", text)    # symbols with a subscript (phi_p0, a_T), keys (valves.intake.lash_adjuster)
     text = re.sub(r"«[A-Za-z0-9 ,.:'-]+»", " ", text)          # a title in another language, quoted: a proper name
     return [w for w in re.findall(r"[A-Za-z]{3,}", text) if w not in SYMBOLS | PROPER]
