@@ -123,3 +123,40 @@ def test_the_list_of_sources_and_the_decimal_comma():
     assert '<span class="cite">[2, формула (2.5)]</span> 0,5' in out
     typed = russian_typography('<p>таблица 2.3: 0.25 мм <span class="name">v<span>1.5</span> 2.5</span> 3.75</p>')
     assert typed == '<p>таблица 2.3: 0,25 мм <span class="name">v<span>1.5</span> 2.5</span> 3,75</p>'
+
+
+def test_the_engine_checks_sources_in_russian_with_their_factor(monkeypatch):
+    """Issue 41: the sources of the engine's checks, made with the factor beyond the works' ranges
+    (design/__init__.py UNIT_SLIP_FACTOR), are said in the catalogue's words with that factor: 2.5 here (the
+    report's typography writes 2,5).  Before, ru.toml [citation_notes] knew "a factor of 3 beyond " only: another
+    factor left the source English."""
+    import valvetrain.design as design
+    from valvetrain.specification import example_spec
+
+    monkeypatch.setattr(design, "UNIT_SLIP_FACTOR", 2.5)
+    beyond = "пределы, расширенные в 2.5 раза относительно: "
+    assert [citation(c.source) for c in design.engine_checks(example_spec())] == [
+        beyond + "Heywood (1988), раздел 2.2", beyond + "Heywood (1988), раздел 2.2",
+        beyond + "Power units manual (n.d.), формула (1.1)"]
+
+
+def test_a_source_made_with_numbers_in_russian_whatever_its_numbers(monkeypatch):
+    """Issue 41: a source whose English is made with a number of the design (the measured lobe's harmonic order, the
+    hydraulic drive's delay level) is said in Russian with that number: N <= 12 harmonics, 10 % of the rigid lift.
+    Before, ru.toml [citation_notes] knew "N <= 9" and "5 %" only (the measured-lobe example's, DELAY_LEVEL's)."""
+    from types import SimpleNamespace
+
+    import valvetrain.design.hydraulic_actuation as hydraulic
+    from valvetrain.design import run
+    from valvetrain.laws.measured import TableLaw
+    from valvetrain.specification import load_spec
+
+    law = SimpleNamespace(accuracy_stated=True, fit="harmonic", harmonic_rms=1e-6, accuracy=2e-6, harmonics=12)
+    (residual,) = TableLaw.checks(law)
+    assert citation(residual.source) == ("Shang Hanji (1988), раздел 5.2: accuracy_mm, достигается при N ≤ 12 "
+                                         "гармониках (N по отклонению относительно точности, 0,002-0,01 мм)")
+    monkeypatch.setattr(hydraulic, "DELAY_LEVEL", 0.1)
+    checks = run(load_spec(EXAMPLES / "marine-hydraulic-exhaust.toml"), headlines_only=True).checks
+    (opening,) = [c for c in checks if c.code == "hydraulic.opening"]
+    assert citation(opening.source) == ("Shang Hanji (1988), гл. 7; 10 % подъёма при жёстком приводе, уровень "
+                                        "отсчёта запаздываний (принято в этой программе)")
