@@ -201,14 +201,10 @@ def test_a_spring_checks_key_is_its_code():
     assert len(pairs) >= 9 and all(code == f"spring.{key}" for key, code in pairs), pairs
 
 
-def test_every_text_made_with_numbers_takes_its_numbers():
-    """Each Russian skeleton of ``ru.toml [texts]`` is filled by as many numbers as its English has ``{}``; the
-    reason of a check that cannot be evaluated is said in Russian.  A record's note (``NoteText``: the firing order, the
-    hydraulic speed plan) is rendered from its code in either language, its list joined by the language's words."""
-    texts = catalogue("ru")["texts"]
-    for en, ru in texts.items():
-        numbers = [str(i) for i in range(en.count("{}"))]
-        assert ru.format(*numbers) and en.format(*numbers), en
+def test_every_text_made_with_numbers_is_rendered_from_its_code():
+    """The reason of a check that cannot be evaluated is said in Russian.  A record's note (``NoteText``: the firing
+    order, the hydraulic speed plan) is rendered from its code in either language, its list joined by the language's
+    words."""
     from valvetrain.report.names import translate
     assert translate(checks.UNEVALUATED, "ru") == "значение не удалось вычислить"
     firing = NoteText(note("crank.firing_even", order="1-5-3-6-2-4"))      # a record's note: rendered from its code

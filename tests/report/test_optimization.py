@@ -91,3 +91,15 @@ def test_the_notes_of_the_limits_are_in_the_reports_language():
     russian = report_html(result, "ru")
     assert "(с исходной пружиной × 1,05)" in russian
     assert "(ширина кулачка 12,5 мм, от неподвижного вала до 1,1 номинальной частоты вращения)" in russian
+
+
+def test_a_limits_range_is_written_as_the_design_report_writes_it():
+    """Issue 41: the range of a limit in the report's language and units, as the design report's checks table writes
+    it (report/check_rows.py check_range): "<= 4000 m/s²" and a limit without bounds "any" / "любое" (before, the
+    English range with its unit's symbol replaced: "any" in the Russian report)."""
+    result = _result()
+    result.checks = [check("tappet_acceleration.max", 3400.0, high=4000.0, source=SOURCE, unit="m/s2"),
+                     check("flow.throat_velocity", 60.0, source=SOURCE, unit="m/s")]
+    for lang, ranges in (("en", ["&lt;= 4000 m/s²", "any"]), ("ru", ["&lt;= 4000 м/с²", "любое"])):
+        rows = report_html(result, lang).split("</h2>")[3].split("</table>")[0].split("<tr>")[2:]
+        assert [r.split("<td>")[4].removesuffix("</td>") for r in rows] == ranges, lang

@@ -12,35 +12,43 @@ import re
 from click.testing import CliRunner
 import pytest
 
-from valvetrain.bibliography import WORKS
 from valvetrain.cli import main
 from valvetrain.report.russian import citation, russian_citations, russian_typography
-from valvetrain.spring_materials import GRADES
+
+from visible_text import latin_words
 
 EXAMPLES = Path(__file__).parents[2] / "examples"
 
-SYMBOLS = {"max", "min", "cos", "sin", "tan", "arccos", "zap"}
-PROPER = ({"valvetrain", "HP", "Academy", "ASTM"} | {w for grade in GRADES for w in re.findall(r"[A-Za-z]+", grade)}
-          | {w for work in WORKS.values() for w in re.findall(r"[A-Za-z]+", work.short)})
+
+RUSSIAN_EXAMPLES = ("seed000-polydyne.toml", "ukrsurt2019-diesel.toml", "lost-motion-intake.toml", "measured-lobe.toml",
+                    "modern-dohc-roller-finger.toml", "phaser.toml", "pushrod-dynamics.toml", "switching-finger.toml",
+                    "two-step-finger.toml")
+"""The examples whose Russian reports are read for Latin words besides the built-in one."""
 
 
-def latin_words(page):
-    page = re.sub(r"<style.*?</style>", "", page, flags=re.S)
-    page = re.sub(r'<li [^>]*lang="(?!ru")[^"]*">.*?</li>', "", page, flags=re.S)
-    page = re.sub(r'<(span|a) class="name"[^>]*>.*?</\1>', "", page, flags=re.S)
-    text = html.unescape(re.sub(r"<[^>]+>", " ", page))
-    text = re.sub(r"\w*_\w*", " ", text)                     # symbols with a subscript: phi_p0, a_T
-    text = re.sub(r"«[A-Za-z0-9 ,.:'-]+»", " ", text)          # a title in another language, quoted: a proper name
-    return [w for w in re.findall(r"[A-Za-z]{3,}", text) if w not in SYMBOLS | PROPER]
-
-
-@pytest.mark.parametrize("spec", [None, "seed000-polydyne.toml"], ids=["built-in", "polydyne"])
+@pytest.mark.parametrize("spec", [None, *RUSSIAN_EXAMPLES], ids=["built-in", *(s[:-5] for s in RUSSIAN_EXAMPLES)])
 def test_the_russian_report_has_no_latin_words(tmp_path, spec):
+    """Issue 41: before, the sources of the checks and laws of all but the built-in, polydyne and the others without
+    a Latin word were English where their text had changed since its words were written in ru.toml
+    [citation_notes] or had none ("[5]: piecewise power-polynomial acceleration (ramp, positive, negative, half
+    dwell)...", "[6], the chapter on the dynamics of follower trains", "(an engineering assumption; beyond 10 cam deg
+    a failure)", "the follower's force at the adjuster's push 54.96 N at the valve, where its check valve opens [13],
+    while the cam lifts the open valve" whose Russian expected the work's name in brackets, not its number)."""
     out = tmp_path / "ru"
     args = ["run", *([str(EXAMPLES / spec)] if spec else []), "--out", str(out), "--lang", "ru", "--figures", "none"]
     assert CliRunner().invoke(main, args).exit_code == 0
     page = (out / "report.html").read_text(encoding="utf-8")
     assert latin_words(page) == []
+    # the engine's checks' sources (a factor of UNIT_SLIP_FACTOR = 3 beyond the works' ranges) in the catalogue's
+    # words, the ones the designer says (tests/web/test_app.py)
+    rows = re.findall(r'<tr class="[^"]*"><td>(.*?)</td>.*?<span class="cite">(.*?)</span></td>', page)
+    sources = {re.sub("<[^>]+>", "", name): source for name, source in rows}
+    beyond = "пределы, расширенные в 3 раза относительно: "
+    assert re.fullmatch(rf"{beyond}\[\d+, раздел 2\.2\]", sources["отношение хода поршня к диаметру цилиндра S/D"])
+    assert re.fullmatch(rf"{beyond}\[\d+, раздел 2\.2\]", sources["средняя скорость поршня cp = S n / 30"])
+    rod = sources.get("λ = R/L = S / (2 L)")          # none where the engine has no rod_length_mm: measured-lobe's
+    assert (rod is None) == (spec == "measured-lobe.toml")
+    assert rod is None or re.fullmatch(rf"{beyond}\[\d+, формула \(1\.1\)\]", rod)
     # the manual is cited by its number in the list of sources, its locators in Russian
     assert re.search(r"\[\d+, работа 4, формула \(4\.1\)\]", page)
     assert "Valve-train practical works" not in page
@@ -115,3 +123,40 @@ def test_the_list_of_sources_and_the_decimal_comma():
     assert '<span class="cite">[2, формула (2.5)]</span> 0,5' in out
     typed = russian_typography('<p>таблица 2.3: 0.25 мм <span class="name">v<span>1.5</span> 2.5</span> 3.75</p>')
     assert typed == '<p>таблица 2.3: 0,25 мм <span class="name">v<span>1.5</span> 2.5</span> 3,75</p>'
+
+
+def test_the_engine_checks_sources_in_russian_with_their_factor(monkeypatch):
+    """Issue 41: the sources of the engine's checks, made with the factor beyond the works' ranges
+    (design/__init__.py UNIT_SLIP_FACTOR), are said in the catalogue's words with that factor: 2.5 here (the
+    report's typography writes 2,5).  Before, ru.toml [citation_notes] knew "a factor of 3 beyond " only: another
+    factor left the source English."""
+    import valvetrain.design as design
+    from valvetrain.specification import example_spec
+
+    monkeypatch.setattr(design, "UNIT_SLIP_FACTOR", 2.5)
+    beyond = "пределы, расширенные в 2.5 раза относительно: "
+    assert [citation(c.source) for c in design.engine_checks(example_spec())] == [
+        beyond + "Heywood (1988), раздел 2.2", beyond + "Heywood (1988), раздел 2.2",
+        beyond + "Power units manual (n.d.), формула (1.1)"]
+
+
+def test_a_source_made_with_numbers_in_russian_whatever_its_numbers(monkeypatch):
+    """Issue 41: a source whose English is made with a number of the design (the measured lobe's harmonic order, the
+    hydraulic drive's delay level) is said in Russian with that number: N <= 12 harmonics, 10 % of the rigid lift.
+    Before, ru.toml [citation_notes] knew "N <= 9" and "5 %" only (the measured-lobe example's, DELAY_LEVEL's)."""
+    from types import SimpleNamespace
+
+    import valvetrain.design.hydraulic_actuation as hydraulic
+    from valvetrain.design import run
+    from valvetrain.laws.measured import TableLaw
+    from valvetrain.specification import load_spec
+
+    law = SimpleNamespace(accuracy_stated=True, fit="harmonic", harmonic_rms=1e-6, accuracy=2e-6, harmonics=12)
+    (residual,) = TableLaw.checks(law)
+    assert citation(residual.source) == ("Shang Hanji (1988), раздел 5.2: accuracy_mm, достигается при N ≤ 12 "
+                                         "гармониках (N по отклонению относительно точности, 0,002-0,01 мм)")
+    monkeypatch.setattr(hydraulic, "DELAY_LEVEL", 0.1)
+    checks = run(load_spec(EXAMPLES / "marine-hydraulic-exhaust.toml"), headlines_only=True).checks
+    (opening,) = [c for c in checks if c.code == "hydraulic.opening"]
+    assert citation(opening.source) == ("Shang Hanji (1988), гл. 7; 10 % подъёма при жёстком приводе, уровень "
+                                        "отсчёта запаздываний (принято в этой программе)")

@@ -18,6 +18,7 @@ from valvetrain.web.draw import SEVERITY_COLOURS, WORDS  # noqa: E402
 from appendix import appendix_text  # noqa: E402
 from breathing_example import breathing_text  # noqa: E402
 from designer_page import _designer, _field, _request, _row, _swept  # noqa: E402
+from visible_text import latin_words  # noqa: E402
 
 EXAMPLES = Path(__file__).parents[2] / "examples"
 
@@ -78,6 +79,29 @@ def test_page_callbacks():
     assert re.search(r'<img src="data:image/png;base64,[^"]+" alt="профиль кулачка">', report)
     d.on_toml()
     assert tomllib.loads(d.downloaded["toml"].text)["valves"]["intake"]["max_lift_mm"] == 10.5
+
+
+@pytest.mark.parametrize("name", [None, "ukrsurt2019-diesel.toml"], ids=["built-in", "ukrsurt2019-diesel"])
+def test_the_russian_designer_says_a_checks_source_in_the_words_of_the_report(name):
+    """Issue 41: the source of a check in the Russian designer has the report's words for its citations' notes and
+    locators (ru.toml [citation_notes], [citation_locators], [citation_units]), its works named by their in-text
+    forms.  Before, the engine's checks' sources had two Russian skeletons of their own (ru.toml [texts]: "в 3 раза
+    шире диапазона Heywood (1988), раздел 2.2", "ф. (1.1)") and every other source was English: 68 of the built-in
+    example's sources had English words ("work 1, eq. (1.1)", "(usually 30 deg inlet, 45 deg exhaust)"), 33 of the
+    diesel's."""
+    path = None if name is None else EXAMPLES / name
+    d = _designer() if path is None else _designer(path.read_text(encoding="utf-8"), path.parent)
+    d.on_language("value", "en", "ru")
+    sources = dict(zip(d.checks.data["key"], d.checks.data["source"]))
+    assert [(s, latin_words(s)) for s in sources.values() if latin_words(s)] == []
+    # the engine's checks (design/__init__.py engine_checks, a factor of UNIT_SLIP_FACTOR = 3 beyond its sources'
+    # ranges): the words of the Russian report's citation, "[1, раздел 2.2]" there
+    beyond = "пределы, расширенные в 3 раза относительно: "
+    assert sources["engine: stroke / bore (stroke_mm / bore_mm)"] == beyond + "Heywood (1988), раздел 2.2"
+    assert sources["engine: mean piston speed (stroke_mm x rated_speed_rpm / 30000)"] == \
+        beyond + "Heywood (1988), раздел 2.2"
+    assert sources["engine: lambda = R / L (stroke_mm / 2 / rod_length_mm)"] == \
+        beyond + "Power units manual (n.d.), формула (1.1)"
 
 
 def test_a_refused_value_goes_back_to_the_design_drawn_and_says_why():

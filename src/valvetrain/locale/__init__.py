@@ -37,8 +37,8 @@ code its texts with ``PYTHONPATH=src python tools/check_codes.py add CODE "recor
 name"`` (or edit the files by hand and run ``tools/check_codes.py``, which rewrites docs/checks.md).  A text made with
 numbers is a code of ``[notes]`` with its numbers as parameters (``{speed_rpm:.0f}``: the format of the number,
 the same in every language); a record's text made so is a :class:`NoteText` (its English,
-keeping its parts); the texts of the stages not yet made so are translated by their skeleton (``ru.toml``
-``[texts]``, the English with ``{}`` for each number).  :mod:`.wording` words the data the physics returns (the spring diagnosis, a measured
+keeping its parts).  A check's source is its citations and their notes, said in Russian by ``[citation_notes]``,
+``[citation_locators]`` and ``[citation_units]`` in the report and the designer alike.  :mod:`.wording` words the data the physics returns (the spring diagnosis, a measured
 table's fit reason) in every language.
 
 To add a language: a ``LANG.toml`` with every section, the language in :data:`valvetrain.languages.LANGS`, its symbol

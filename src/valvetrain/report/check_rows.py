@@ -120,7 +120,7 @@ def check_class(c) -> str:
 
 def check_note(c, lang) -> str:
     """A check's note in ``lang``: rendered from its codes (:attr:`~valvetrain.checks.Check.note_parts`), else its
-    English text translated by its skeleton (:func:`~valvetrain.report.names.translate`)."""
+    text (:func:`~valvetrain.report.names.translate`)."""
     return note_text(c.note_parts, lang) if c.note_parts else translate(c.note, lang)
 
 

@@ -9,16 +9,15 @@ The records of a design (``results.json``, the specification, the CSV headers) k
 symbol from the one unit table :data:`valvetrain.units.UNITS`.  The names of the checks are not here: they are
 renderings of their codes from the catalogue :mod:`valvetrain.locale`.
 
-A note of a record (:class:`~valvetrain.locale.NoteText`) is rendered in the language from its codes; the other
-texts made with numbers (the sources of the engine's checks) are translated by their skeleton: the numbers are taken out, the Russian skeleton is looked up in the catalogue (``ru.toml`` ``[texts]``
-of :mod:`valvetrain.locale`) and the numbers put back (:func:`translate`).  A key, a value or a text without a Russian entry is shown as it is (in English):
-``tests/report/test_i18n.py`` finds them.
+A note of a record (:class:`~valvetrain.locale.NoteText`) is rendered in the language from its codes
+(:func:`translate`); a source is said in Russian by the words of its citations (:func:`valvetrain.report.russian.citation`).
+A key, a value or a text without a Russian entry is shown as it is (in English): ``tests/report/test_i18n.py`` finds
+them.
 
 Symbols: one symbol for one quantity throughout the report and the plots: ``h`` lift, ``v`` velocity,
 ``a`` acceleration, ``j`` jerk (index ``T`` tappet side, ``v`` valve side).
 """
 
-import re
 
 from ..locale import LANGS, NoteText, catalogue, check_text, note_text, record_text, spring_text
 from ..units import SUFFIXES, symbol as unit_text
@@ -27,11 +26,6 @@ _NAMED = [{**catalogue(lang)["names"], **catalogue(lang)["stage_names"]} for lan
 NAMES = {key: tuple(named[key] for named in _NAMED) for key in _NAMED[0]}
 """Names of the keys without their unit suffix (or a whole key where the suffix is no unit), one a language in the
 order of :data:`~valvetrain.languages.LANGS`: ``[names]`` and ``[stage_names]`` of the catalogues."""
-
-NUMBER = re.compile(r"(?:[-+]?\d+(?:\.\d+)?(?:e[-+]?\d+)?)+")
-"""A number, or a run of numbers without a blank between them (``1-5-3-6-2-4``, ``700-7700``): one ``{}`` of a
-skeleton."""
-
 
 def _candidates(path):
     """``(name path, unit)`` to look up for a key: the whole key, then without each unit suffix it ends with,
@@ -120,33 +114,17 @@ def link_names(names, lang) -> str:
 
 
 def translate(text, lang) -> str:
-    """A text made with numbers in ``lang`` by its skeleton (the catalogue's ``[texts]``); as it is without one.  A text that
-    starts with drive links (``"pushrod: ..."``, :func:`link_names`) has them translated and the rest by its skeleton; a
-    text of parts joined by ``"; "`` without a skeleton of its own, part by part (the longest head with one first).  A
-    note of a record (:class:`~valvetrain.locale.NoteText`) is rendered from its parts."""
+    """A text of a record in ``lang``: a note (:class:`~valvetrain.locale.NoteText`) rendered from its parts, a text
+    that starts with drive links (``"pushrod: ..."``) with them named in ``lang`` (:func:`link_names`); another text as
+    it is."""
     if lang == "en" or not text:
         return text
     if isinstance(text, NoteText):
         return note_text(text.parts, lang)
     head, sep, rest = text.partition(": ")
     if sep and all(name in catalogue(lang).get("links", {}) for name in head.split(", ")):
-        return f"{link_names(head.split(', '), lang)}: {translate(rest, lang)}"
-    found = _by_skeleton(text)
-    if found is not None:
-        return found
-    parts = text.split("; ")
-    for k in range(len(parts) - 1, 0, -1):
-        head = _by_skeleton("; ".join(parts[:k]))
-        if head is not None:
-            return f"{head}; {translate('; '.join(parts[k:]), lang)}"
+        return f"{link_names(head.split(', '), lang)}: {rest}"
     return text
-
-
-def _by_skeleton(text):
-    """The Russian of a text made with numbers by its skeleton (``ru.toml`` ``[texts]`` of the catalogue
-    :mod:`valvetrain.locale`), or None."""
-    ru = catalogue("ru")["texts"].get(NUMBER.sub("{}", text))
-    return None if ru is None else ru.format(*NUMBER.findall(text))
 
 
 def quantity_text(check, lang) -> str:

@@ -13,7 +13,7 @@ from ..laws.power_polynomial import ARTICLE_FULLNESS
 from ..synthesis.objectives import shown_objective
 from ..synthesis.optimize import BINDING
 from ..locale import catalogue, check_text
-from .check_rows import check_note
+from .check_rows import check_note, check_range
 from .names import quantity_text, unevaluated_text, unit_text
 
 
@@ -114,9 +114,8 @@ def report_html(result, lang="en") -> str:
         s = start.get(c.quantity)
         state = t["fails"] if not c.passed else t["binds"] if c.margin < BINDING else t["holds"]
         note = check_note(c, lang)
-        shown_range = c.range.replace(c.unit, unit_text(c.unit, lang)) if c.unit else c.range
         rows.append((quantity_text(c, lang) + (f" ({note})" if note else ""),
-                     _checked(s, lang) if s else "", _checked(c, lang), shown_range, f"{c.margin:.4f}", state))
+                     _checked(s, lang) if s else "", _checked(c, lang), check_range(c, lang), f"{c.margin:.4f}", state))
     parts.append(_table([t["quantity"], t["start"], t["optimum"], t["range"], t["margin"], t["state"]], rows))
     binding = [quantity_text(c, lang) for c in result.binding]
     parts.append(f"<p>{escape(t['binding'])}: {escape(', '.join(binding) if binding else t['none'])}.</p>")
