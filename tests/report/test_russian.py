@@ -63,9 +63,9 @@ def test_a_russian_valve_heading_names_the_valve_in_russian(tmp_path):
 
 
 LOCATOR = re.compile(r"\(\d+\.\d+[^)]*\)|(?:ф\.|рис\.|раздел|разделы|гл\.|глава|формула|формулы|таблица) \d+\.\d+"
-                     r"|valvetrain \d+\.\d+\.\d+")
-"""Numbers that are not quantities: equation numbers in brackets "(7.4)", "(7.15, поправка 48)", sections, figures,
-the program's version."""
+                     r"(?:(?:, |-)\d+\.\d+)*|valvetrain \d+\.\d+\.\d+")
+"""Numbers that are not quantities: equation numbers in brackets "(7.4)", "(7.15, поправка 48)", sections, figures
+and their lists ("формулы 6.12, 6.14"), the program's version."""
 
 
 def report_text(page):
@@ -123,6 +123,13 @@ def test_the_list_of_sources_and_the_decimal_comma():
     assert '<span class="cite">[2, формула (2.5)]</span> 0,5' in out
     typed = russian_typography('<p>таблица 2.3: 0.25 мм <span class="name">v<span>1.5</span> 2.5</span> 3.75</p>')
     assert typed == '<p>таблица 2.3: 0,25 мм <span class="name">v<span>1.5</span> 2.5</span> 3,75</p>'
+
+
+def test_a_list_or_a_range_of_locators_keeps_its_points():
+    """Every number of a locator's list or range is a locator (the built-in example's spring sources cite 'formulas
+    6.12, 6.14', which the report wrote '6.12, 6,14'); a number after the locator's list is a decimal."""
+    typed = russian_typography("<p>(формулы 6.12, 6.14); разделы 5.1-5.3 при 0.25 мм; ф. 2.5 при 1.5 мм</p>")
+    assert typed == "<p>(формулы 6.12, 6.14); разделы 5.1-5.3 при 0,25 мм; ф. 2.5 при 1,5 мм</p>"
 
 
 def test_the_engine_checks_sources_in_russian_with_their_factor(monkeypatch):

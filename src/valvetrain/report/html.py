@@ -32,7 +32,7 @@ from .check_rows import (chapter_checks, check_class, check_margin, check_name, 
 from .i18n import TEXT
 from .numbers import number, percent
 from .russian import russian_citations, russian_typography
-from .typography import typography
+from .typography import LOCATORS, typography
 from .worked import crank_lines, flow_lines, law_lines, spring_lines, strength_lines, time_area_lines
 from .switching import switching_chapters
 from .symbols import INPUT_SYMBOLS, WARNING_SYMBOLS, symbol_legend
@@ -502,17 +502,10 @@ def render_report(results, plots, lang="en", folder=None) -> str:
     return page if folder is None else embedded(page, folder)
 
 
-LOCATOR = (r"(?:works?|eqs?\.|sections?|ch\.|chapters?|[Tt]ables?|Fig\.|pp?\.|appendix|step|ф\.|формул[аы]|разделы?"
-           r"|гл\.|глава|рис\.|табл\.|таблица|работ[аы]|этап)")
-"""The words of a locator in a citation: ``work 2``, ``eqs. (2.23)-(2.34)``, ``section 2.1``, ``Fig. 2.6``..."""
-
-_NUMBER = r"(?:[A-Z]-?)?\d+(?:[.\-–]\d+)*[a-zа-я]?"
-_NUMBER = rf"(?:\({_NUMBER}\)|{_NUMBER})"
-_LOCATORS = rf"{LOCATOR}(?: {_NUMBER}(?:(?:-|–|, | and | и ){_NUMBER})*)?"
 _SHORTS = {alternative: key for key, work in WORKS.items()
            for alternative in (work.short, str(Markup.escape(work.short)))}
 CITATION = re.compile("(" + "|".join(re.escape(s) for s in sorted(_SHORTS, key=len, reverse=True)) + ")"
-                      rf"((?:, {_LOCATORS}(?:(?:, | and | и ){_LOCATORS})*)?)")
+                      rf"((?:, {LOCATORS}(?:(?:, | and | и ){LOCATORS})*)?)")
 """A citation of a work by its in-text form (raw or HTML-escaped) and its locators."""
 
 LANGUAGE_CODES = {"English": "en", "Russian": "ru", "Ukrainian": "uk", "Chinese": "zh-Latn", "German": "de"}

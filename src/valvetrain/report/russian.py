@@ -11,7 +11,7 @@ from html import escape, unescape
 import re
 
 from ..locale import catalogue
-from .typography import map_text
+from .typography import LOCATORS, map_text
 
 
 @cache
@@ -48,10 +48,11 @@ def russian_citations(page) -> str:
     return _CITE.sub(lambda m: m.group(1) + escape(citation(unescape(m.group(2))), quote=False) + m.group(3), page)
 
 
-_DECIMAL = re.compile(r"(?<![\d,])(?<!\d\.)(?<!\()(?<!ф\. )(?<!рис\. )(?<!раздел )(?<!разделы )(?<!гл\. )"
-                      r"(?<!глава )(?<!формула )(?<!формулы )(?<!таблица )(\d+)\.(\d+)(?!\.?\d)")
-"""A decimal point between digits, not in a locator of a source (``(7.4)``, ``раздел 2.1``, ``ф. 2.5``) nor in a
-version (``0.1.0``)."""
+_DECIMAL = re.compile(r"(?<![\d,])(?<!\d\.)(?<!\()(\d+)\.(\d+)(?!\.?\d)")
+"""A decimal point between digits, not in an equation's number in brackets (``(7.4)``) nor in a version
+(``0.1.0``)."""
+_LOCATED = re.compile(LOCATORS)
+"""A locator of a source with its numbers (:data:`~.typography.LOCATORS`): their points are not decimal."""
 _QUOTED = re.compile(r'"([^"<>]*)"')
 
 
@@ -64,4 +65,18 @@ def russian_typography(page) -> str:
     >>> russian_typography('<span class="name">v1.5</span> 0.5...0.75 <a href="x">tables/a.0.5.csv</a>')
     '<span class="name">v1.5</span> 0,5...0,75 <a href="x">tables/a.0.5.csv</a>'
     """
-    return map_text(page, lambda text: _QUOTED.sub(r"«\1»", _DECIMAL.sub(r"\1,\2", text)), "ru")
+    return map_text(page, lambda text: _QUOTED.sub(r"«\1»", _decimal_commas(text)), "ru")
+
+
+def _decimal_commas(text) -> str:
+    """``text`` with a decimal comma for each decimal point of :data:`_DECIMAL` outside the locators of sources
+    (:data:`_LOCATED`).
+
+    >>> _decimal_commas("формулы 6.12, 6.14; разделы 5.1-5.3 при 0.25 мм; ф. 2.5 при 1.5 мм")
+    'формулы 6.12, 6.14; разделы 5.1-5.3 при 0,25 мм; ф. 2.5 при 1,5 мм'
+    """
+    parts, end = [], 0
+    for m in _LOCATED.finditer(text):
+        parts += [_DECIMAL.sub(r"\1,\2", text[end:m.start()]), m.group()]
+        end = m.end()
+    return "".join(parts) + _DECIMAL.sub(r"\1,\2", text[end:])

@@ -6,6 +6,16 @@ designer gave, a link or a work in another language's entry (:func:`map_text`).
 
 import re
 
+LOCATOR = (r"(?:works?|eqs?\.|sections?|ch\.|chapters?|[Tt]ables?|Fig\.|pp?\.|appendix|step|ф\.|формул[аы]|разделы?"
+           r"|гл\.|глава|рис\.|табл\.|таблица|работ[аы]|этап)")
+"""The words of a locator in a citation: ``work 2``, ``eqs. (2.23)-(2.34)``, ``section 2.1``, ``Fig. 2.6``..."""
+
+_NUMBER = r"(?:[A-Z]-?)?\d+(?:[.\-–]\d+)*[a-zа-я]?"
+_NUMBER = rf"(?:\({_NUMBER}\)|{_NUMBER})"
+LOCATORS = rf"{LOCATOR}(?: {_NUMBER}(?:(?:-|–|, | and | и ){_NUMBER})*)?"
+"""A locator with its numbers, a list or a range of them (``eqs. (2.23)-(2.34)``, ``формулы 6.12, 6.14``,
+``разделы 5.1-5.3``)."""
+
 _TAG = re.compile(r"(<[^>]+>)")
 _OPEN = re.compile(r"<(\w+)([^>]*)>")
 _NAME = re.compile(r'class="name"')
