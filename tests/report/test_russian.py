@@ -14,6 +14,8 @@ import pytest
 
 from valvetrain.cli import main
 from valvetrain.report.russian import citation, russian_citations, russian_typography
+from valvetrain.locale import NoteText, note
+from valvetrain.report.check_rows import not_checked
 
 from visible_text import latin_words
 
@@ -167,3 +169,15 @@ def test_a_source_made_with_numbers_in_russian_whatever_its_numbers(monkeypatch)
     (opening,) = [c for c in checks if c.code == "hydraulic.opening"]
     assert citation(opening.source) == ("Shang Hanji (1988), гл. 7; 10 % подъёма при жёстком приводе, уровень "
                                         "отсчёта запаздываний (принято в этой программе)")
+
+
+def test_an_undercut_profiles_contact_stress_not_checked_in_either_language():
+    """The strength stage's note where the profile is undercut along the open event (no line contact): the record
+    keeps its English text, the report says it in its language (the Russian report said it in English: only the
+    notes of missing parts were translated)."""
+    said = NoteText(note("strength.undercut_not_checked"))
+    assert said == "cam_contact_stress: not checked, the profile is undercut (no line contact)"
+    assert not_checked(said, "en") == said
+    assert not_checked(said, "ru") == "контактное напряжение кулачка: не проверено, профиль подрезан (нет линейного контакта)"
+    assert not_checked("camshaft_deflection: not checked, parts.cam_width_mm not given", "ru").startswith(
+        "стрела прогиба распределительного вала: не проверено")

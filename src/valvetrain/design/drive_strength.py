@@ -384,7 +384,7 @@ def _strength(valve, cam, theta, maps, p_open, valve_load):
     if need(["cam_width_mm"], "cam_contact_stress"):
         # Shang Hanji (1988), eqs. (2.6)-(2.7): the profile's radius of curvature along the open event
         if not np.all(follower.line_contact(cam.law.curvature(theta, cam.heel_radius, follower))):
-            notes.append("cam_contact_stress: not checked, the profile is undercut (no line contact)")
+            notes.append(NoteText(note("strength.undercut_not_checked")))
         else:
             width = parts.cam_width
             stresses = [follower.contact_stress(m.force, cam.law.curvature(m.theta, cam.heel_radius, follower), width,

@@ -9,7 +9,7 @@ import numpy as np
 
 from ..bibliography import WORKS
 from ..checks import describe_range
-from ..locale import catalogue, note_text
+from ..locale import NoteText, catalogue, note_text
 from ..units import to_display
 from .i18n import TEXT
 from .names import label, quantity_text, translate, unit_text
@@ -31,7 +31,10 @@ NOT_CHECKED = re.compile(r"(\w+): not checked, (.*) not given")
 
 
 def not_checked(note, lang) -> str:
-    """``"camshaft_deflection: not checked, parts.cam_width_mm not given"`` in ``lang``."""
+    """``"camshaft_deflection: not checked, parts.cam_width_mm not given"`` in ``lang``; a note with its codes
+    (:class:`~valvetrain.locale.NoteText`: the undercut profile's) rendered from them."""
+    if isinstance(note, NoteText):
+        return translate(note, lang)
     m = NOT_CHECKED.fullmatch(note)
     if not m:
         return note
