@@ -55,6 +55,30 @@ def test_a_file_reading_error_names_the_file_as_its_path(tmp_path):
     assert record["message"].startswith("not valid TOML: ")
 
 
+@pytest.mark.parametrize("head, valves", [("", "[valves]\n"), ("valves = {}\n", "")])
+def test_an_empty_valves_table_is_refused(refused, head, valves):
+    """A hand test of the fuzz10 campaign: a file whose [valves] table names no valve (a student's valve tables
+    left out under it) ran as a design of the crank alone and said "every allowable and physical limit is met"; it
+    is refused, naming the table (a file without [valves] still designs its other sections)."""
+    text = appendix_text()
+    text = head + text[:text.index("[valves.intake]")] + valves + text[text.index("[gas]"):]
+    assert refused(text, "run") == ("error: valves: an empty table: give each valve a [valves.NAME] table, or leave "
+                                    "[valves] out for a design without valves\n")
+
+
+def test_the_saved_specification_of_a_design_without_valves_reads_back():
+    """spec.toml of a design without valves (examples/v8-crank.toml) is refused by no rule of the file it repeats:
+    it leaves out the empty [valves] table, and reads back to the same specification."""
+    from pathlib import Path
+
+    from valvetrain.specification import load_spec, parse_spec, spec_toml
+
+    spec = load_spec(Path(__file__).parents[2] / "examples" / "v8-crank.toml")
+    text = spec_toml(spec)
+    assert "[valves]" not in text
+    assert parse_spec(text, source_dir=spec.source_dir) == spec
+
+
 def test_parse_spec_takes_a_parsed_document():
     """parse_spec of the example's tables (as tomllib gives them) is the example; something else is a SpecError."""
     import tomllib

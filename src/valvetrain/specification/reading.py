@@ -44,17 +44,22 @@ def toml_tables(text, source="<string>") -> dict:
     ------
     SpecError
         Text longer than :data:`MAX_SPEC_CHARACTERS`, not TOML, or nested deeper than the parser's recursion, named
-        by ``source``.
+        by ``source``; a ``[valves]`` table naming no valve (the valves' tables left out under it: a file without
+        valves leaves out ``[valves]``).
     """
     if len(text) > MAX_SPEC_CHARACTERS:
         raise SpecError([Problem(source, f"{len(text):,} characters; allowed at most {MAX_SPEC_CHARACTERS:,} for a "
                                  "specification (put long tables in a CSV file: cam.table_file, crank.pressure_file)")])
     try:
-        return tomllib.loads(text.removeprefix("\ufeff"))
+        tables = tomllib.loads(text.removeprefix("\ufeff"))
     except tomllib.TOMLDecodeError as exc:
         raise SpecError([Problem(source, f"not valid TOML: {exc}")]) from None
     except RecursionError:
         raise SpecError([Problem(source, "arrays or tables nested too deeply to be a specification")]) from None
+    if tables.get("valves") == {}:
+        raise SpecError([Problem("valves", "an empty table: give each valve a [valves.NAME] table, or leave [valves] "
+                                 "out for a design without valves")])
+    return tables
 
 
 def parse_spec(text, source="<string>", source_dir=None) -> Spec:
@@ -111,4 +116,5 @@ def spec_toml(spec) -> str:
 
     header = (f"# The specification of a valvetrain {__version__} run, every default written out and every file "
               "named by its\n# absolute path: `valvetrain run spec.toml` repeats the run.\n\n")
-    return header + tomli_w.dumps(absolute(spec.model_dump(exclude_none=True, exclude={"source_dir"})))
+    empty = set() if spec.valves else {"valves"}  # a design without valves: no [valves] table (toml_tables)
+    return header + tomli_w.dumps(absolute(spec.model_dump(exclude_none=True, exclude={"source_dir"} | empty)))
