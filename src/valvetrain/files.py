@@ -96,7 +96,8 @@ def read_columns(path, headers, error) -> tuple[tuple[str, ...], list[tuple[int,
     out = []
     for n, r in rows[1:]:
         if len(r) != len(key):
-            raise error(f"{shown_path(path)}:{n}: expected {len(key)} values, found {len(r)}")
+            raise error(f"{shown_path(path)}:{n}: {_short(','.join(r))!r} has {len(r)} values; allowed {len(key)} "
+                        f"({_short(','.join(key))}), separated by commas, with a point as the decimal separator")
         try:
             values = tuple(float(v) for v in r)
         except ValueError:
