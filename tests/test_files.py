@@ -103,6 +103,25 @@ def test_a_decimal_comma_is_named_as_such(tmp_path, row, values):
                               "commas, with a point as the decimal separator")
 
 
+def test_a_byte_order_mark_is_dropped(tmp_path):
+    """A hand test of the fuzz10 campaign: a lift table saved as a spreadsheet's "CSV UTF-8" (a UTF-8 byte-order
+    mark first) was refused as "header '\\ufeffangle_deg,lift_mm'"; it reads as the same file without the mark, a
+    lift table (numpy's reader) and an indicator diagram (the line-by-line one) alike."""
+    lift = "angle_deg,lift_mm\n" + "".join(f"{a},{10.0 * np.sin(np.pi * i / 12) ** 2:.6f}\n"
+                                           for i, a in enumerate(range(-60, 70, 10)))
+    indicator = "crank_deg,pressure_MPa\n" + "".join(f"{a},{p}\n" for a, p in INDICATOR_ROWS)
+
+    def columns(read, f):
+        table = read(f)
+        return [np.asarray(c).tolist() for c in (table if isinstance(table, tuple) else (table.x, table.pressure))]
+
+    for text, read in [(lift, read_lift_table), (indicator, lambda f: read_indicator(f, 4))]:
+        plain, marked = tmp_path / "plain.csv", tmp_path / "marked.csv"
+        plain.write_text(text, encoding="utf-8")
+        marked.write_bytes(b"\xef\xbb\xbf" + text.encode("utf-8"))
+        assert columns(read, marked) == columns(read, plain)
+
+
 def test_valve_lift_and_cd_files(tmp_path):
     """The breathing's files: a lift in crank deg from the gas-exchange TDC and a C_D table of one or two columns;
     what cannot be used is refused naming the line and the key that names the file."""

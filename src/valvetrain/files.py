@@ -38,7 +38,8 @@ device that never ends (/dev/zero) or a file of another kind is refused instead 
 
 
 def read_text(path) -> str:
-    """The UTF-8 text of ``path`` (newlines as text mode reads them), of at most :data:`MAX_FILE_CHARACTERS`.
+    """The UTF-8 text of ``path`` (newlines as text mode reads them, a leading byte-order mark dropped: a
+    spreadsheet's "CSV UTF-8" starts with one), of at most :data:`MAX_FILE_CHARACTERS`.
 
     Raises
     ------
@@ -47,7 +48,7 @@ def read_text(path) -> str:
     UnicodeDecodeError
         The file is not UTF-8 text.
     """
-    with open(path, encoding="utf-8") as f:
+    with open(path, encoding="utf-8-sig") as f:
         text = f.read(MAX_FILE_CHARACTERS + 1)
     if len(text) > MAX_FILE_CHARACTERS:
         raise OSError(errno.EFBIG, f"over {MAX_FILE_CHARACTERS:,} characters, more than a specification or a table "
