@@ -75,6 +75,15 @@ def _valve_problems(name, v, engine):
         out.append(Problem(f"{at}.spring.installed_length_mm", f"the spring must be longer than the valve lift "
                            f"max_lift_mm = {v.max_lift_mm:g} (it is compressed by it, Valve-train practical works "
                            "(n.d.), eq. 6.5)", f"{list(installed)}"))
+    free = v.spring.max_free_length_mm
+    below = {key: value for key, value in (("the valve lift max_lift_mm", v.max_lift_mm),
+                                           ("the shortest installed_length_mm", installed and installed[0]))
+             if value is not None}
+    if free is not None and below and free <= max(below.values()):
+        out.append(Problem(f"{at}.spring.max_free_length_mm", "allowed above " + " and ".join(
+            f"{key} = {value:g}" for key, value in below.items()) + " (the spring is installed compressed from its "
+            "free length, and the lift compresses it further, Valve-train practical works (n.d.), eq. 6.5)",
+            f"{free:g}"))
     if (v.drive.layout is not None and not any(link.lever for link in LAYOUTS[v.drive.layout].links)
             and v.rocker_ratio != 1.0):
         out.append(Problem(f"{at}.drive.layout", f"needs rocker_ratio = 1 (got {v.rocker_ratio:g})",
