@@ -71,3 +71,13 @@ def test_an_inlet_port_the_skirt_never_passes_is_refused(refused, change, edge):
         f"error: two_stroke.ports.inlet.lower_edge_mm = {edge}: allowed between piston_height_mm = {height} and "
         f"piston_height_mm + stroke = {int(height) + 60} mm, where the piston's skirt passes: else the port is never "
         "uncovered or never covered (Valve-train practical works (n.d.), eq. 8.4)\n")
+
+
+def test_a_port_wider_than_the_cylinder_wall_is_refused(refused):
+    """A fuzz10 hand test on examples/two-stroke-ports.toml: an exhaust port 200 mm wide in a 56 mm bore (whose wall
+    is pi x 56 = 175.9 mm round) ran with a warning on width / bore."""
+    text = (Path(__file__).parents[2] / "examples" / "two-stroke-ports.toml").read_text(encoding="utf-8")
+    assert "width_mm = 12.3 " in text
+    assert refused(text.replace("width_mm = 12.3 ", "width_mm = 200.0 "), "run") == (
+        "error: two_stroke.ports.exhaust.width_mm = 200: allowed below the cylinder's circumference pi x bore = 175.9 "
+        "mm (the port, or its group's summed width, is cut in the cylinder wall)\n")

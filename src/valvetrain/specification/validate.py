@@ -8,6 +8,7 @@ are the dotted keys that :meth:`Spec.replace` and ``study --grid`` change.
 """
 
 import copy
+import math
 from typing import Any, Optional
 
 from ..errors import InputError
@@ -179,8 +180,12 @@ def _two_stroke_problems(spec):
     if not ts.ports:
         out.append(Problem("two_stroke.ports", "needs at least one [two_stroke.ports.NAME]",
                            text="[two_stroke] needs at least one [two_stroke.ports.NAME]"))
-    stroke = crank_geometry(spec)[1]
+    bore, stroke = crank_geometry(spec)[:2]
     for name, port in ts.ports.items():
+        if port.width_mm >= math.pi * bore:
+            out.append(Problem(f"two_stroke.ports.{name}.width_mm", f"allowed below the cylinder's circumference pi x "
+                               f"bore = {math.pi * bore:.4g} mm (the port, or its group's summed width, is cut in the "
+                               "cylinder wall)", f"{port.width_mm:g}"))
         if port.height_mm is not None and port.kind != "inlet" and port.height_mm >= stroke:
             out.append(Problem(f"two_stroke.ports.{name}.height_mm", f"must be smaller than the stroke {stroke:g} mm",
                                f"{port.height_mm:g}", " "))
