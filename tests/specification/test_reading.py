@@ -1,6 +1,8 @@
 """Reading a specification (specification/reading.py): TOML text, a parsed document or a file; what cannot be read
 or parsed is refused with the file or key it concerns."""
 
+import re
+
 from click.testing import CliRunner
 import pytest
 
@@ -77,6 +79,19 @@ def test_the_saved_specification_of_a_design_without_valves_reads_back():
     text = spec_toml(spec)
     assert "[valves]" not in text
     assert parse_spec(text, source_dir=spec.source_dir) == spec
+
+
+@pytest.mark.parametrize("old, new, line", [
+    ("max_lift_mm = 10.0", "max_lift_mm = 10,5", "'max_lift_mm = 10,5'; a number's decimals follow a point, not a comma"),
+    ("phi2_deg = 6.0\n", "phi2_deg = 6.0\nphi1_deg = 2.0\n", "'phi1_deg = 2.0'")])
+def test_text_that_is_not_toml_is_refused_with_its_line(refused, old, new, line):
+    """A fuzz10 hand test: a value with a decimal comma (max_lift_mm = 10,5) was refused as 'not valid TOML: Expected
+    newline or end of document after a statement (at line 31, column 17)', the key and the value left to be found;
+    the line is quoted, and a decimal comma named."""
+    out = refused(appendix_with((old, new)))
+    at = re.search(r"\(at line (\d+), column \d+\)", out)
+    assert out.endswith(f"{at.group()}: {line}\n")
+    assert appendix_with((old, new)).split("\n")[int(at.group(1)) - 1] == line.split("'")[1]
 
 
 def test_parse_spec_takes_a_parsed_document():
