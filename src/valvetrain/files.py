@@ -38,8 +38,7 @@ device that never ends (/dev/zero) or a file of another kind is refused instead 
 
 
 def read_text(path) -> str:
-    """The UTF-8 text of ``path`` (newlines as text mode reads them, a leading byte-order mark dropped: a
-    spreadsheet's "CSV UTF-8" starts with one), of at most :data:`MAX_FILE_CHARACTERS`.
+    """The UTF-8 text of ``path`` (newlines as text mode reads them), of at most :data:`MAX_FILE_CHARACTERS`.
 
     Raises
     ------
@@ -48,7 +47,7 @@ def read_text(path) -> str:
     UnicodeDecodeError
         The file is not UTF-8 text.
     """
-    with open(path, encoding="utf-8-sig") as f:
+    with open(path, encoding="utf-8") as f:
         text = f.read(MAX_FILE_CHARACTERS + 1)
     if len(text) > MAX_FILE_CHARACTERS:
         raise OSError(errno.EFBIG, f"over {MAX_FILE_CHARACTERS:,} characters, more than a specification or a table "
@@ -57,8 +56,10 @@ def read_text(path) -> str:
 
 
 def _text(path, error):
+    """The text of a data file (:func:`read_text`) without a leading byte-order mark (a spreadsheet's "CSV UTF-8"
+    starts with one), or ``error`` naming the file."""
     try:
-        return read_text(path)
+        return read_text(path).removeprefix("\ufeff")
     except OSError as exc:
         raise error(f"{shown_path(path)}: cannot read the file: {exc.strerror or exc}") from None
     except UnicodeDecodeError as exc:
