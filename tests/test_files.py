@@ -138,7 +138,8 @@ def test_valve_lift_and_cd_files(tmp_path):
              "larger than the previous 10"),
             (lift, "crank_deg,lift_mm\n0,0\n10,-1\n20,2\n30,0\n", "lift_file", r"lift.csv:3: lift_mm = -1: allowed"),
             (lift, "crank_deg,lift_mm\n0,0\n300,1\n600,2\n720,0\n", "lift_file", r"span 720 crank deg"),
-            (cd, "l_over_d,cd_forward,cd_reverse\n0,0,0\n0.1,0.4\n", "cd_file", r"cd.csv:3: '0.1,0.4' has 2 values; allowed 3"),
+            (cd, "l_over_d,cd_forward,cd_reverse\n0,0,0\n0.1,0.4\n", "cd_file",
+             r"cd.csv:3: '0.1,0.4' has 2 values; allowed 3"),
             (cd, "l_over_d,cd\n0,0\n0.1,1.2\n", "cd_file", r"row 2: forward C_D = 1.2; allowed 0 to 1")]:
         path.write_text(text, encoding="utf-8")
         with pytest.raises(BreathingFileError, match=message) as caught:

@@ -99,7 +99,8 @@ def test_the_saved_specification_of_a_design_without_valves_reads_back():
 
 
 @pytest.mark.parametrize("old, new, line", [
-    ("max_lift_mm = 10.0", "max_lift_mm = 10,5", "'max_lift_mm = 10,5'; a number's decimals follow a point, not a comma"),
+    ("max_lift_mm = 10.0", "max_lift_mm = 10,5",
+     "'max_lift_mm = 10,5'; a number's decimals follow a point, not a comma"),
     ("phi2_deg = 6.0\n", "phi2_deg = 6.0\nphi1_deg = 2.0\n", "'phi1_deg = 2.0'")])
 def test_text_that_is_not_toml_is_refused_with_its_line(refused, old, new, line):
     """A fuzz10 hand test: a value with a decimal comma (max_lift_mm = 10,5) was refused as 'not valid TOML: Expected

@@ -194,8 +194,8 @@ def _two_stroke_problems(spec):
         elif port.kind == "inlet" and not ts.piston_height_mm < port.lower_edge_mm < ts.piston_height_mm + stroke:
             out.append(Problem(f"two_stroke.ports.{name}.lower_edge_mm", f"allowed between piston_height_mm = "
                                f"{ts.piston_height_mm:g} and piston_height_mm + stroke = "
-                               f"{ts.piston_height_mm + stroke:g} mm, where the piston's skirt passes: else the port is "
-                               "never uncovered or never covered (Valve-train practical works (n.d.), eq. 8.4)",
+                               f"{ts.piston_height_mm + stroke:g} mm, where the piston's skirt passes: else the port "
+                               "is never uncovered or never covered (Valve-train practical works (n.d.), eq. 8.4)",
                                f"{port.lower_edge_mm:g}"))
     if ts.speed_range_rpm is not None and ts.speed_range_rpm[0] >= ts.speed_range_rpm[1]:
         out.append(Problem("two_stroke.speed_range_rpm", "must be [low, high] with low < high",
