@@ -28,7 +28,7 @@ BAD = [
     ("crank_deg,pressure_MPa\n0,0.1\n10,0.2\n5,0.3\n20,0.1\n", "ind.csv:4: crank_deg = 5 must be larger"),
     ("crank_deg,pressure_MPa\n0,0.1\n800,0.2\n", "ind.csv:3: crank_deg = 800: allowed [0, 720]"),
     ("crank_deg,pressure_MPa\n0,0.1\n10,-0.2\n", "ind.csv:3: pressure_MPa = -0.2"),
-    ("crank_deg,pressure_MPa\n0,0.1\n10,0.2,3\n", "ind.csv:3: expected 2 values"),
+    ("crank_deg,pressure_MPa\n0,0.1\n10,0.2,3\n", "ind.csv:3: '10,0.2,3' has 3 values; allowed 2"),
     ("crank_deg,pressure_MPa\n0,0.1\n", "at least 4 data rows"),
 ]
 
@@ -90,6 +90,38 @@ def test_lift_table_values_outside_any_valve_are_refused(tmp_path, column, facto
         read_lift_table(f)
 
 
+@pytest.mark.parametrize("row, values", [("-70,0;0,0000", 3), ("-70,0\t0,0000", 3), ("-70,5,1,25", 4)])
+def test_a_decimal_comma_is_named_as_such(tmp_path, row, values):
+    """A hand test of the fuzz10 campaign: a lift table written with commas as decimal separators (a spreadsheet's
+    export in a language that writes 1,5) was refused as 'expected 2 values, found 3', naming neither the row nor
+    what the file should hold; the message echoes the row and says the separators."""
+    f = tmp_path / "lift.csv"
+    f.write_text(f"angle_deg,lift_mm\n{row}\n", encoding="utf-8")
+    with pytest.raises(TableFileError) as err:
+        read_lift_table(f)
+    assert str(err.value) == (f"{f}:2: {row!r} has {values} values; allowed 2 (angle_deg,lift_mm), separated by "
+                              "commas, with a point as the decimal separator")
+
+
+def test_a_byte_order_mark_is_dropped(tmp_path):
+    """A hand test of the fuzz10 campaign: a lift table saved as a spreadsheet's "CSV UTF-8" (a UTF-8 byte-order
+    mark first) was refused as "header '\\ufeffangle_deg,lift_mm'"; it reads as the same file without the mark, a
+    lift table (numpy's reader) and an indicator diagram (the line-by-line one) alike."""
+    lift = "angle_deg,lift_mm\n" + "".join(f"{a},{10.0 * np.sin(np.pi * i / 12) ** 2:.6f}\n"
+                                           for i, a in enumerate(range(-60, 70, 10)))
+    indicator = "crank_deg,pressure_MPa\n" + "".join(f"{a},{p}\n" for a, p in INDICATOR_ROWS)
+
+    def columns(read, f):
+        table = read(f)
+        return [np.asarray(c).tolist() for c in (table if isinstance(table, tuple) else (table.x, table.pressure))]
+
+    for text, read in [(lift, read_lift_table), (indicator, lambda f: read_indicator(f, 4))]:
+        plain, marked = tmp_path / "plain.csv", tmp_path / "marked.csv"
+        plain.write_text(text, encoding="utf-8")
+        marked.write_bytes(b"\xef\xbb\xbf" + text.encode("utf-8"))
+        assert columns(read, marked) == columns(read, plain)
+
+
 def test_valve_lift_and_cd_files(tmp_path):
     """The breathing's files: a lift in crank deg from the gas-exchange TDC and a C_D table of one or two columns;
     what cannot be used is refused naming the line and the key that names the file."""
@@ -106,7 +138,8 @@ def test_valve_lift_and_cd_files(tmp_path):
              "larger than the previous 10"),
             (lift, "crank_deg,lift_mm\n0,0\n10,-1\n20,2\n30,0\n", "lift_file", r"lift.csv:3: lift_mm = -1: allowed"),
             (lift, "crank_deg,lift_mm\n0,0\n300,1\n600,2\n720,0\n", "lift_file", r"span 720 crank deg"),
-            (cd, "l_over_d,cd_forward,cd_reverse\n0,0,0\n0.1,0.4\n", "cd_file", r"cd.csv:3: expected 3 values, found 2"),
+            (cd, "l_over_d,cd_forward,cd_reverse\n0,0,0\n0.1,0.4\n", "cd_file",
+             r"cd.csv:3: '0.1,0.4' has 2 values; allowed 3"),
             (cd, "l_over_d,cd\n0,0\n0.1,1.2\n", "cd_file", r"row 2: forward C_D = 1.2; allowed 0 to 1")]:
         path.write_text(text, encoding="utf-8")
         with pytest.raises(BreathingFileError, match=message) as caught:

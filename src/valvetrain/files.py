@@ -56,8 +56,10 @@ def read_text(path) -> str:
 
 
 def _text(path, error):
+    """The text of a data file (:func:`read_text`) without a leading byte-order mark (a spreadsheet's "CSV UTF-8"
+    starts with one), or ``error`` naming the file."""
     try:
-        return read_text(path)
+        return read_text(path).removeprefix("\ufeff")
     except OSError as exc:
         raise error(f"{shown_path(path)}: cannot read the file: {exc.strerror or exc}") from None
     except UnicodeDecodeError as exc:
@@ -96,7 +98,8 @@ def read_columns(path, headers, error) -> tuple[tuple[str, ...], list[tuple[int,
     out = []
     for n, r in rows[1:]:
         if len(r) != len(key):
-            raise error(f"{shown_path(path)}:{n}: expected {len(key)} values, found {len(r)}")
+            raise error(f"{shown_path(path)}:{n}: {_short(','.join(r))!r} has {len(r)} values; allowed {len(key)} "
+                        f"({_short(','.join(key))}), separated by commas, with a point as the decimal separator")
         try:
             values = tuple(float(v) for v in r)
         except ValueError:

@@ -36,8 +36,9 @@ import tomli_w
 
 from .design import run
 from .errors import InputError, ValvetrainError
+from .files import read_text, shown_path
 from .interruption import Interruption
-from .specification import LAWS, SpecError, set_keys, validate
+from .specification import LAWS, SpecError, set_keys, toml_tables, validate
 from .specification.messages import location, message
 from .specification.models import Spec
 from .units import rpm_to_rad_s
@@ -154,10 +155,9 @@ def parse_grid(items) -> list[tuple[str, list[Any]]]:
 
 
 def read_document(path) -> dict[str, Any]:
-    """The TOML document of a specification file (already validated by
-    :func:`valvetrain.specification.load_spec`), with ``source_dir`` set to its folder for the files it names."""
-    text = Path(path).read_text(encoding="utf-8").removeprefix("\ufeff")
-    return {**tomllib.loads(text), "source_dir": str(Path(path).resolve().parent)}
+    """The TOML document of a specification file as :func:`valvetrain.specification.load_spec` reads it (which has
+    validated it), with ``source_dir`` set to its folder for the files it names."""
+    return {**toml_tables(read_text(path), shown_path(path)), "source_dir": str(Path(path).resolve().parent)}
 
 
 def with_values(document, values) -> dict[str, Any]:

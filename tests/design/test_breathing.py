@@ -90,7 +90,14 @@ def _tcc3_document(**change):
 @pytest.mark.parametrize("change, message", [
     ({"breathing__conditions__0__intake_pressure_kPa": 0.0},
      r"breathing.conditions.0.intake_pressure_kPa = 0.0: allowed \[1, 10000\] kPa"),
-    ({"breathing__intake__runner_length_mm": 0.0}, r"breathing.intake.runner_length_mm = 0.0: allowed \(0, 20000\] mm"),
+    ({"breathing__intake__runner_length_mm": 0.0},
+     r"breathing.intake.runner_length_mm = 0.0: allowed \[10, 20000\] mm"),
+    # fuzz10 (tools/fuzz_specs.py --seed fuzz10b --write): a runner of 5e-324 mm (1e-300 alike) was accepted, and
+    # `valvetrain run` ended in OverflowError: its cells of no length left the time step 0
+    ({"breathing__exhaust__runner_length_mm": 5e-324},
+     r"breathing.exhaust.runner_length_mm = 5e-324: allowed \[10, 20000\] mm"),
+    ({"breathing__exhaust__runner_length_mm": 1e-300},
+     r"breathing.exhaust.runner_length_mm = 1e-300: allowed \[10, 20000\] mm"),
     ({"breathing__exhaust__cd_diameter_mm": None}, r"breathing.exhaust: cd_file needs cd_diameter_mm"),
     ({"breathing__mode": "fired"}, r"breathing.mode = 'fired': 'fired' burns on the Wiebe schedule of \[crank.cycle\]"),
 ])

@@ -54,3 +54,30 @@ def test_two_stroke_example(tmp_path):
     for f in ("two_stroke_ports.csv", "two_stroke_time_area.csv"):
         assert (out / "tables" / f).is_file()
     assert "valves" in data and data["valves"] == {}
+
+
+@pytest.mark.parametrize("change, edge", [(("lower_edge_mm = 73.0", "lower_edge_mm = 500.0"), "500"),
+                                          (("lower_edge_mm = 73.0", "lower_edge_mm = 40.0"), "40"),
+                                          (("piston_height_mm = 50.0", "piston_height_mm = 5.0"), "73")])
+def test_an_inlet_port_the_skirt_never_passes_is_refused(refused, change, edge):
+    """fuzz10 hand tests on examples/two-stroke-ports.toml: an inlet port whose lower edge the skirt never reaches
+    (500 mm deep, or a piston of 5 mm) was open the whole revolution, one above the skirt at TDC (40 mm, the piston
+    50 mm high) never opened: both ran without a failure.  The skirt's edge travels from piston_height_mm below the
+    crown's TDC position to that plus the stroke (eq. 8.4: F = (h_in - S_p - h_p) b)."""
+    text = (Path(__file__).parents[2] / "examples" / "two-stroke-ports.toml").read_text(encoding="utf-8")
+    assert change[0] in text
+    height = "5" if "5.0" in change[1] else "50"
+    assert refused(text.replace(*change), "run") == (
+        f"error: two_stroke.ports.inlet.lower_edge_mm = {edge}: allowed between piston_height_mm = {height} and "
+        f"piston_height_mm + stroke = {int(height) + 60} mm, where the piston's skirt passes: else the port is never "
+        "uncovered or never covered (Valve-train practical works (n.d.), eq. 8.4)\n")
+
+
+def test_a_port_wider_than_the_cylinder_wall_is_refused(refused):
+    """A fuzz10 hand test on examples/two-stroke-ports.toml: an exhaust port 200 mm wide in a 56 mm bore (whose wall
+    is pi x 56 = 175.9 mm round) ran with a warning on width / bore."""
+    text = (Path(__file__).parents[2] / "examples" / "two-stroke-ports.toml").read_text(encoding="utf-8")
+    assert "width_mm = 12.3 " in text
+    assert refused(text.replace("width_mm = 12.3 ", "width_mm = 200.0 "), "run") == (
+        "error: two_stroke.ports.exhaust.width_mm = 200: allowed below the cylinder's circumference pi x bore = 175.9 "
+        "mm (the port, or its group's summed width, is cut in the cylinder wall)\n")

@@ -20,6 +20,15 @@ def test_the_over_speed_ratio_key_as_the_readme_states_it():
             appendix_spec().replace({"engine.over_speed_ratio": value})
 
 
+def test_the_engine_s_cross_checks_name_each_key_once(refused):
+    """A hand test of the fuzz10 campaign: a firing order of three cylinders for four was refused as
+    "engine: engine.firing_order = ...", the section named twice; each line names it once, as the other sections'."""
+    out = refused(appendix_with(("firing_order = [1, 3, 4, 2]", "firing_order = [1, 2, 3]"),
+                                ("rated_speed_rpm = 7000", "rated_speed_rpm = 7000\nidle_speed_rpm = 8000")), "run")
+    assert out == ("error: engine: idle_speed_rpm = 8000: allowed below rated_speed_rpm = 7000; "
+                   "firing_order = [1, 2, 3]: must list each cylinder 1...4 once\n")
+
+
 def test_an_unknown_key_is_refused_by_its_name_and_a_section_is_frozen():
     """A misspelt key is no silent default: it is refused by its path; a validated section cannot be changed."""
     with pytest.raises(SpecError, match=r"engine.rated_speed_rmp: unknown key"):

@@ -209,6 +209,14 @@ def test_spring_keys_of_the_specification():
     with pytest.raises(SpecError, match=r"installed_length_mm = \[5.0, 9.0\]: the spring must be longer than the "
                                         r"valve lift max_lift_mm = 10"):
         _with_spring('material = "VDSiCr"\ninstalled_length_mm = [5.0, 9.0]')
+    # fuzz10 hand tests: a free length of at most 5 mm under a lift of 10 mm, or below the installed length, ran
+    # (a warning on the nearest spring, 27.6 mm free)
+    with pytest.raises(SpecError, match=r"^valves.intake.spring.max_free_length_mm = 5: allowed above the valve lift "
+                                        r"max_lift_mm = 10 \(the spring is installed compressed"):
+        _with_spring('material = "VDSiCr"\nmax_free_length_mm = 5.0')
+    with pytest.raises(SpecError, match=r"^valves.intake.spring.max_free_length_mm = 30: allowed above the valve lift "
+                                        r"max_lift_mm = 10 and the shortest installed_length_mm = 35 \("):
+        _with_spring('material = "VDSiCr"\nmax_free_length_mm = 30.0\ninstalled_length_mm = [35.0, 50.0]')
 
 
 def _check(results, valve):

@@ -217,7 +217,10 @@ class BreathingSide(_Model):
     into the cylinder for the intake, out of it for the exhaust) on the reference area of ``cd_reference`` (the port,
     pi D^2 / 4, or the curtain, pi D L; D = ``cd_diameter_mm``), or without a file the default C_D on the valves'
     flow section.  ``runner_length_mm`` and ``runner_diameter_mm``: the runner with its port from the plenum to the
-    valve (none: the valve opens straight into the plenum)."""
+    valve (none: the valve opens straight into the plenum); at least 10 mm, the port of a small engine's valve
+    alone being longer, and its grid's four cells setting the time step (a runner of 10 mm asks about as many
+    cell-steps as :data:`~valvetrain.breathing.cycle.MAX_WORK` allows for examples/tcc3-motored.toml's three
+    conditions)."""
 
     lift: Optional[Literal["designed", "dynamics"]] = None
     lift_file: Optional[str] = None
@@ -225,7 +228,7 @@ class BreathingSide(_Model):
     cd_file: Optional[str] = None
     cd_diameter_mm: Optional[Length(1.0, 1000.0)] = None
     cd_reference: Literal["port", "curtain"] = "port"
-    runner_length_mm: Optional[Length(0.0, 20000.0)] = None
+    runner_length_mm: Optional[Length(10.0, 20000.0, low_open=False)] = None
     runner_diameter_mm: Optional[Length(1.0, 1000.0)] = None
 
     si_extras: ClassVar[tuple] = ("measured_lift", "cd")

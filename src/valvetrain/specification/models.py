@@ -51,25 +51,25 @@ class Engine(_Model):
     def _engine_consistency(self):
         problems = []
         if self.rod_length_mm is not None and self.rod_length_mm <= self.stroke_mm / 2.0:
-            problems.append(f"engine.rod_length_mm = {self.rod_length_mm:g} must exceed the crank radius "
+            problems.append(f"rod_length_mm = {self.rod_length_mm:g} must exceed the crank radius "
                             f"stroke_mm/2 = {self.stroke_mm / 2.0:g} mm")
         if self.idle_speed_rpm is not None and self.idle_speed_rpm >= self.rated_speed_rpm:
-            problems.append(f"engine.idle_speed_rpm = {self.idle_speed_rpm:g}: allowed below rated_speed_rpm = "
+            problems.append(f"idle_speed_rpm = {self.idle_speed_rpm:g}: allowed below rated_speed_rpm = "
                             f"{self.rated_speed_rpm:g}")
         n = self.cylinders
         if self.firing_order is not None and sorted(self.firing_order) != list(range(1, n + 1)):
-            problems.append(f"engine.firing_order = {shown(self.firing_order)}: must list each cylinder 1...{n} once")
+            problems.append(f"firing_order = {shown(self.firing_order)}: must list each cylinder 1...{n} once")
         for key in ("crank_throws_deg", "banks", "firing_angles_deg"):
             value = getattr(self, key)
             if value is not None and len(value) != n:
-                problems.append(f"engine.{key} has {len(value)} entries: one per cylinder ({n}) is needed")
+                problems.append(f"{key} has {len(value)} entries: one per cylinder ({n}) is needed")
         if self.firing_angles_deg is not None and len(self.firing_angles_deg) == n:
             cycle = 180.0 * self.strokes
             if self.firing_angles_deg[0] != 0.0 or not all(0.0 <= a < cycle for a in self.firing_angles_deg):
-                problems.append(f"engine.firing_angles_deg = {self.firing_angles_deg}: cylinder 1 fires at 0 and "
+                problems.append(f"firing_angles_deg = {self.firing_angles_deg}: cylinder 1 fires at 0 and "
                                 f"every angle lies in [0, {cycle:g}) crank deg")
         if self.firing_angles_deg is not None and self.crank_throws_deg is not None:
-            problems.append("engine: give firing_angles_deg or crank_throws_deg, not both")
+            problems.append("give firing_angles_deg or crank_throws_deg, not both")
         if problems:
             raise InputError("; ".join(problems))
         return self

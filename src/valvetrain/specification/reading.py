@@ -6,12 +6,13 @@ Every problem in a file becomes one message naming the key, the value and what i
 
 from importlib.resources import files
 from pathlib import Path
+import re
 import tomllib
 
 import tomli_w
 
 from ..files import read_text, shown_path
-from .messages import WHOLE_FILE, Problem, SpecError
+from .messages import WHOLE_FILE, Problem, SpecError, shown
 from .engine_sections import resolve_path
 from .models import Spec, validate
 
@@ -37,6 +38,25 @@ MAX_SPEC_CHARACTERS = 1_000_000
 indicator diagram belongs in a file of its own)."""
 
 
+_AT_LINE = re.compile(r"\(at line (\d+), column \d+\)$")
+"""Where :mod:`tomllib` says its error is, at the end of its message."""
+
+_DECIMAL_COMMA = re.compile(r"=\s*[-+]?\d+,\d+\s*(#.*)?$")
+"""A value written with a decimal comma (``max_lift_mm = 10,5``)."""
+
+
+def _quoted_line(text, error) -> str:
+    """The line of ``text`` that :mod:`tomllib`'s ``error`` names, as appended to its message (``: 'the line'``, and
+    what a decimal comma should be), or ``""`` where it names none."""
+    found = _AT_LINE.search(str(error))
+    lines = text.removeprefix("\ufeff").split("\n")  # tomllib counts the newlines
+    if found is None or not 0 < int(found.group(1)) <= len(lines):
+        return ""
+    line = lines[int(found.group(1)) - 1].strip()
+    hint = "; a number's decimals follow a point, not a comma" if _DECIMAL_COMMA.search(line) else ""
+    return f": {shown(line)}{hint}"
+
+
 def toml_tables(text, source="<string>") -> dict:
     """The tables of the TOML text of a specification (:func:`tomllib.loads`, a leading byte-order mark dropped).
 
@@ -44,17 +64,22 @@ def toml_tables(text, source="<string>") -> dict:
     ------
     SpecError
         Text longer than :data:`MAX_SPEC_CHARACTERS`, not TOML, or nested deeper than the parser's recursion, named
-        by ``source``.
+        by ``source``; a ``[valves]`` table naming no valve (the valves' tables left out under it: a file without
+        valves leaves out ``[valves]``).
     """
     if len(text) > MAX_SPEC_CHARACTERS:
         raise SpecError([Problem(source, f"{len(text):,} characters; allowed at most {MAX_SPEC_CHARACTERS:,} for a "
                                  "specification (put long tables in a CSV file: cam.table_file, crank.pressure_file)")])
     try:
-        return tomllib.loads(text.removeprefix("\ufeff"))
+        tables = tomllib.loads(text.removeprefix("\ufeff"))
     except tomllib.TOMLDecodeError as exc:
-        raise SpecError([Problem(source, f"not valid TOML: {exc}")]) from None
+        raise SpecError([Problem(source, f"not valid TOML: {exc}{_quoted_line(text, exc)}")]) from None
     except RecursionError:
         raise SpecError([Problem(source, "arrays or tables nested too deeply to be a specification")]) from None
+    if tables.get("valves") == {}:
+        raise SpecError([Problem("valves", "an empty table: give each valve a [valves.NAME] table, or leave [valves] "
+                                 "out for a design without valves")])
+    return tables
 
 
 def parse_spec(text, source="<string>", source_dir=None) -> Spec:
@@ -111,4 +136,5 @@ def spec_toml(spec) -> str:
 
     header = (f"# The specification of a valvetrain {__version__} run, every default written out and every file "
               "named by its\n# absolute path: `valvetrain run spec.toml` repeats the run.\n\n")
-    return header + tomli_w.dumps(absolute(spec.model_dump(exclude_none=True, exclude={"source_dir"})))
+    empty = set() if spec.valves else {"valves"}  # a design without valves: no [valves] table (toml_tables)
+    return header + tomli_w.dumps(absolute(spec.model_dump(exclude_none=True, exclude={"source_dir"} | empty)))

@@ -8,6 +8,7 @@ are the dotted keys that :meth:`Spec.replace` and ``study --grid`` change.
 """
 
 import copy
+import math
 from typing import Any, Optional
 
 from ..errors import InputError
@@ -75,6 +76,15 @@ def _valve_problems(name, v, engine):
         out.append(Problem(f"{at}.spring.installed_length_mm", f"the spring must be longer than the valve lift "
                            f"max_lift_mm = {v.max_lift_mm:g} (it is compressed by it, Valve-train practical works "
                            "(n.d.), eq. 6.5)", f"{list(installed)}"))
+    free = v.spring.max_free_length_mm
+    below = {key: value for key, value in (("the valve lift max_lift_mm", v.max_lift_mm),
+                                           ("the shortest installed_length_mm", installed and installed[0]))
+             if value is not None}
+    if free is not None and below and free <= max(below.values()):
+        out.append(Problem(f"{at}.spring.max_free_length_mm", "allowed above " + " and ".join(
+            f"{key} = {value:g}" for key, value in below.items()) + " (the spring is installed compressed from its "
+            "free length, and the lift compresses it further, Valve-train practical works (n.d.), eq. 6.5)",
+            f"{free:g}"))
     if (v.drive.layout is not None and not any(link.lever for link in LAYOUTS[v.drive.layout].links)
             and v.rocker_ratio != 1.0):
         out.append(Problem(f"{at}.drive.layout", f"needs rocker_ratio = 1 (got {v.rocker_ratio:g})",
@@ -170,13 +180,23 @@ def _two_stroke_problems(spec):
     if not ts.ports:
         out.append(Problem("two_stroke.ports", "needs at least one [two_stroke.ports.NAME]",
                            text="[two_stroke] needs at least one [two_stroke.ports.NAME]"))
-    stroke = crank_geometry(spec)[1]
+    bore, stroke = crank_geometry(spec)[:2]
     for name, port in ts.ports.items():
+        if port.width_mm >= math.pi * bore:
+            out.append(Problem(f"two_stroke.ports.{name}.width_mm", f"allowed below the cylinder's circumference pi x "
+                               f"bore = {math.pi * bore:.4g} mm (the port, or its group's summed width, is cut in the "
+                               "cylinder wall)", f"{port.width_mm:g}"))
         if port.height_mm is not None and port.kind != "inlet" and port.height_mm >= stroke:
             out.append(Problem(f"two_stroke.ports.{name}.height_mm", f"must be smaller than the stroke {stroke:g} mm",
                                f"{port.height_mm:g}", " "))
         if port.kind == "inlet" and ts.piston_height_mm is None:
             out.append(Problem(f"two_stroke.ports.{name}", "an inlet port needs two_stroke.piston_height_mm"))
+        elif port.kind == "inlet" and not ts.piston_height_mm < port.lower_edge_mm < ts.piston_height_mm + stroke:
+            out.append(Problem(f"two_stroke.ports.{name}.lower_edge_mm", f"allowed between piston_height_mm = "
+                               f"{ts.piston_height_mm:g} and piston_height_mm + stroke = "
+                               f"{ts.piston_height_mm + stroke:g} mm, where the piston's skirt passes: else the port "
+                               "is never uncovered or never covered (Valve-train practical works (n.d.), eq. 8.4)",
+                               f"{port.lower_edge_mm:g}"))
     if ts.speed_range_rpm is not None and ts.speed_range_rpm[0] >= ts.speed_range_rpm[1]:
         out.append(Problem("two_stroke.speed_range_rpm", "must be [low, high] with low < high",
                            f"{list(ts.speed_range_rpm)}", " "))
