@@ -174,7 +174,7 @@ class Link:
 
     def missing(self, masses, arm) -> list[str]:
         """The keys a multi-mass train needs of the link and the specification does not give (``[drive.masses]``
-        keys whose value is not positive), for the refusal that names them."""
-        if self.mass_key is None or getattr(masses, self.mass_attr) > 0.0:
+        keys whose value is not given or not positive), for the refusal that names them."""
+        if self.mass_key is None or (getattr(masses, self.mass_attr) or 0.0) > 0.0:
             return []
         return [self.mass_key]

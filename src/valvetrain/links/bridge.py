@@ -50,7 +50,7 @@ class ValveBridge(Link):
     """A valve bridge between the rocker and a pair of valves: an elastic link of the train at the valve."""
 
     name = "valve_bridge"
-    mass_key = "bridge_kg"
+    mass_key = mass_attr = "bridge_kg"
     elastic = True
     at_valve = True
     part_keys = ("bridge_span_mm", "bridge_width_mm", "bridge_height_mm")
@@ -75,10 +75,6 @@ class ValveBridge(Link):
     def node(self, masses, ratio, arm) -> tuple[str, float] | None:
         """Its node in a multi-mass train: its mass per valve at the valve (ratio 1, whatever the rocker's)."""
         return (self.name, masses.bridge_kg) if masses.bridge_kg else None
-
-    def missing(self, masses, arm) -> list[str]:
-        """``bridge_kg`` where a multi-mass train has no positive mass per valve for it."""
-        return [] if (masses.bridge_kg or 0.0) > 0.0 else [self.mass_key]
 
     def checks(self, loads) -> list:
         """Its bending stress at mid-span under the rocker's force on both valves, 2 x the valve force, where its span

@@ -18,7 +18,6 @@ Symbols: one symbol for one quantity throughout the report and the plots: ``h`` 
 ``a`` acceleration, ``j`` jerk (index ``T`` tappet side, ``v`` valve side).
 """
 
-
 from ..locale import LANGS, NoteText, catalogue, check_text, note_text, record_text, spring_text
 from ..units import SUFFIXES, symbol as unit_text
 
