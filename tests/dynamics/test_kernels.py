@@ -60,24 +60,25 @@ def test_a_large_group_splits_into_blocks_of_at_most_block_speeds():
 
 
 
-def test_one_mass_speed_by_speed_gives_the_lockstep_records(monkeypatch):
-    """A one-mass train's small blocks run speed by speed (kernels.integrate_node, sweep.NODE_SPEEDS): the appendix
-    train at a slow speed that takes sub-steps, two speeds whose valve bounces after seating (its seat closings
-    split, kernels._split_step) and one whose follower jumps, each until it repeats and each for two revolutions
-    (the state carried from one to the next), recorded as the lockstep kernel (kernels.integrate_block) records
-    them: equal to the bit, the revolutions too (the DOP853 tests above check the integration itself)."""
+def test_the_one_node_kernel_gives_the_general_kernels_records(monkeypatch):
+    """A one-mass train runs on its own kernel (kernels.integrate_node, sweep.one_node): the appendix train at a slow
+    speed that takes sub-steps, two speeds whose valve bounces after seating (its seat closings split,
+    kernels._split_step) and one whose follower jumps, each until it repeats and each for two revolutions (the state
+    carried from one to the next), recorded as the general kernel (kernels.integrate_block) records them: equal to the
+    bit, every record and the revolutions too (the DOP853 tests above check the integration itself)."""
     import valvetrain.dynamics.sweep as module
 
     law, train = appendix_train()
     speeds = np.array([700.0, 5554.0, 6200.0, 9500.0]) * np.pi / 60
     fields = ("lift", "velocity", "acceleration", "contact_force", "seat_force", "spring_force", "clash_margin",
               "revolutions", "converged", "substeps")
+    assert module.one_node(train.network())
     for tolerance in (module.STATE_TOLERANCE, -1.0):
-        monkeypatch.setattr(module, "NODE_SPEEDS", 16)
-        by_speed = sweep(law, train, speeds, revolutions=2, tolerance=tolerance)
-        monkeypatch.setattr(module, "NODE_SPEEDS", 0)
-        lockstep = sweep(law, train, speeds, revolutions=2, tolerance=tolerance)
-        assert by_speed.substeps.max() > 1 and by_speed.events.bounce_height[1] > 1e-6
-        assert by_speed.events.jumped[-1] and not by_speed.events.jumped[0]
+        one = sweep(law, train, speeds, revolutions=2, tolerance=tolerance)
+        monkeypatch.setattr(module, "one_node", lambda net: False)
+        general = sweep(law, train, speeds, revolutions=2, tolerance=tolerance)
+        monkeypatch.undo()
+        assert one.substeps.max() > 1 and one.events.bounce_height[1] > 1e-6
+        assert one.events.jumped[-1] and not one.events.jumped[0]
         for name in fields:
-            assert np.array_equal(getattr(by_speed, name), getattr(lockstep, name)), (tolerance, name)
+            assert np.array_equal(getattr(one, name), getattr(general, name)), (tolerance, name)

@@ -363,13 +363,12 @@ def recorded_nodes(network) -> np.ndarray:
     return np.array([network.valve] + ([follower] if follower != network.valve else []), dtype=np.int64)
 
 
-NODE_SPEEDS = 16
-"""Most speeds of a block of a one-mass train integrated speed by speed (:func:`.kernels.integrate_node`, the same
-records to the bit) rather than in lockstep (:func:`.kernels.integrate_block`).  Measured alternately on one thread
-(processor time, best of 15, the machine under load): a block of 1 speed at half the step 0.40 against 3.4 ms,
-8 speeds 2.8 against 4.4 ms, 16 speeds 5.3 against 6.2 ms; from 24 to 64 speeds the two were within 15 % either way.
-The small blocks are those of a tolerance sample (the refinement's halved steps, the rated speed, the slow speeds
-of the headline sweep that take sub-steps)."""
+def one_node(net) -> bool:
+    """Whether a train's network is integrated by :func:`.kernels.integrate_node` (one node without a lash adjuster, a
+    node of variable mass or coils: the one-mass train; the same records as :func:`.kernels.integrate_block`, to the
+    bit, faster) rather than by the general block kernel."""
+    return (net.mass.size == 1 and net.adjuster[0] == 0.0 and net.variable_node < 0 and not np.any(net.clash_gap > 0.0)
+            and not np.any(net.surge_weight > 0.0))
 
 
 def sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, progress=None, bounce_tolerance=BOUNCE_TOLERANCE,
@@ -434,12 +433,11 @@ def sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, progress=None, bo
     order, start, seq = blocks(n_sub, workers)
     inv_mass = 1.0 / net.mass
 
-    single = (n_nodes == 1 and net.adjuster[0] == 0.0 and net.variable_node < 0 and not np.any(net.clash_gap > 0.0)
-              and not np.any(net.surge_weight > 0.0))
+    single = one_node(net)
 
     def run(j):
         idx = order[start[j]:start[j + 1]]
-        if single and idx.size <= NODE_SPEEDS:
+        if single:
             integrate_node(idx, speeds, int(n_sub[idx[0]]), dtheta, u, du, per_step, steps, int(revolutions),
                            float(tolerance), float(rate), inv_mass, net.x_init, ra, rb, net.stiffness, net.damping,
                            net.gap, net.preload, net.unilateral, int(net.seat_element), springs,
