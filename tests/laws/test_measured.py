@@ -339,6 +339,21 @@ def test_the_shortest_lobe_allowed(tmp_path, refused):
         assert ("the lobe (lift above 0.015 mm) spans" in result.output) == is_refused, result.output
 
 
+@pytest.mark.parametrize("spring", ["installed_length_mm = [5.0, 17.9]", "max_free_length_mm = 17.9"])
+def test_a_spring_shorter_than_the_table_s_lift_allows_is_refused(refused, spring):
+    """Fuzz (fuzz11): beside a table, which sets the lift, a spring installed at most 5 mm long under its 10 mm lift
+    was designed and graded (an installed_length check failing) instead of refused.  Now the spring's lengths are
+    held to the table's valve lift once the law is built, as they are to max_lift_mm at validation: above the lift
+    (10 mm within the fit's 0.01 mm, test_max_lift_must_agree_with_the_table) plus the solid length of the shortest
+    spring, 4 x the thinnest wire 2 mm = 8 mm (tests/springs/test_search.py)."""
+    out = refused(_spec_text(EXAMPLE_TABLE) + spring + "\n")
+    key = spring.split(" = ")[0]
+    found = re.search(rf"error: valves.intake.spring.{key} = [^:]+: allowed (\[low, high\] with high )?above the "
+                      r"measured valve lift \+ 4 x the thinnest wire_diameter_range_mm = (\S+) \+ 4 x 2 = (\S+)( mm|\b)", out)
+    assert found, out
+    assert float(found[2]) == pytest.approx(10.0, abs=0.01) and float(found[3]) == pytest.approx(18.0, abs=0.01)
+
+
 def test_max_lift_must_agree_with_the_table(tmp_path, refused):
     """Issue 9: the table sets the lift.  max_lift_mm = 0.4 beside a table that peaks at 0.578 mm (the example x
     0.0578), or 10.5 beside the example's 10.0 (5 %), is refused; 10.05 (0.5 %) passes and the design uses the
