@@ -81,3 +81,12 @@ def test_a_margin_outside_its_range_is_refused(value):
     text = appendix_text().replace("min_margin_percent = 0.0 ", f"min_margin_percent = {value} ")
     with pytest.raises(SpecError, match=r"min_margin_percent = .*: allowed \[0, 50\] %"):
         parse_spec(text)
+
+
+@pytest.mark.parametrize("value", [5e-324, 1e-300, 9.9e-5])
+def test_a_film_parameter_limit_of_almost_nothing_is_refused(refused, value):
+    """Fuzz (fuzz11): [lubrication] min_film_parameter, then (0, 10], took 5e-324, and the check's margin, the film
+    parameter over it, was inf in results.json; now at least 1e-4 (Lubrication's docstring: a film of a tenth of an
+    atom for the default finishes), which tests/design/test_lubrication.py runs with."""
+    out = refused(appendix_text() + f"\n[valves.intake.lubrication]\nmin_film_parameter = {value!r}\n", "run")
+    assert out == f"error: valves.intake.lubrication.min_film_parameter = {value!r}: allowed [0.0001, 10]\n"

@@ -430,7 +430,8 @@ class Lubrication(_Model):
     ``pressure_viscosity_per_GPa`` = 20 (a mineral oil), the roughnesses of a ground cam (0.2 um) and a polished
     follower (0.1 um), ``boundary_friction`` = 0.12, ``full_film_friction`` = 0.04, ``roller_rolling_friction`` =
     0.005 and the limits ``min_film_parameter`` = 1 (where Hamrock, Schmid and Jacobson (2004) put the start of
-    boundary lubrication) and ``max_contact_temperature_C`` = 150 (the critical temperature of Blok (1937) is a property
+    boundary lubrication; at least 1e-4: a ten-thousandth of the roughness, 0.02 nm for the default finishes, a
+    tenth of an atom, asks for no film, and a value near zero overflows the check's margin) and ``max_contact_temperature_C`` = 150 (the critical temperature of Blok (1937) is a property
     of each oil; 150 is a typical value)."""
 
     oil_viscosity_mPa_s: _bounded(0.1, 2000.0, "mPa s") = 10.0
@@ -442,7 +443,7 @@ class Lubrication(_Model):
     full_film_friction: _bounded(0.001, 0.3) = 0.04
     roller_rolling_friction: _bounded(0.0, 0.1, low_open=False) = 0.005
     roller_slip: _bounded(0.0, 1.0, low_open=False) = 0.0
-    min_film_parameter: _bounded(0.0, 10.0) = 1.0
+    min_film_parameter: _bounded(1e-4, 10.0, low_open=False) = 1.0
     max_contact_temperature_C: _bounded(0.0, 1000.0, "degC") = 150.0
 
     @model_validator(mode="after")
