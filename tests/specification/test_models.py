@@ -2,10 +2,12 @@
 that cannot give a physically meaningful design are refused (exit 2, one message naming the key, the value and what is
 allowed), never a traceback or a result that cannot be true (issue 9)."""
 
+import re
+
 from pydantic import ValidationError
 import pytest
 
-from valvetrain.specification import SpecError, parse_spec
+from valvetrain.specification import SpecError, example_spec, parse_spec
 
 from appendix import appendix_spec, appendix_text, appendix_with
 
@@ -90,3 +92,23 @@ def test_a_film_parameter_limit_of_almost_nothing_is_refused(refused, value):
     atom for the default finishes), which tests/design/test_lubrication.py runs with."""
     out = refused(appendix_text() + f"\n[valves.intake.lubrication]\nmin_film_parameter = {value!r}\n", "run")
     assert out == f"error: valves.intake.lubrication.min_film_parameter = {value!r}: allowed [0.0001, 10]\n"
+
+
+@pytest.mark.parametrize("key,value,allowed", [
+    ("tappet_kg", 5e-324, "allowed 0 (none) or [0.0001, 20] kg"),
+    ("pushrod_kg", 1e-300, "allowed 0 (none) or [0.0001, 20] kg"),
+    ("cotters_kg", 9e-5, "allowed 0 (none) or [0.0001, 5] kg"),
+    ("rocker_inertia_kg_mm2", 1e-300, "allowed 0 (none) or [0.01, 1e+07] kg mm2"),
+    ("bridge_kg", 5e-324, "allowed [0.0001, 20] kg"),
+])
+def test_a_part_mass_of_almost_nothing_is_refused(key, value, allowed):
+    """Fuzz (fuzz11): the built-in example's multi-mass train with a tappet or pushrod of 5e-324 kg, a rocker of
+    1e-300 kg mm2 or a valve bridge of 5e-324 kg (its bound then (0, 20]) overflowed the highest natural frequency,
+    a traceback; a part's mass is now 0 (no such part) or at least LEAST_PART_MASS_KG = 1e-4 kg, a rocker's inertia
+    at least 0.01 kg mm2 (models.py), and the bounds themselves are taken."""
+    spec = example_spec()
+    with pytest.raises(SpecError, match=rf"^valves.intake.drive.masses.{key} = {value!r}: {re.escape(allowed)}$"):
+        spec.replace({f"valves.intake.drive.masses.{key}": value})
+    least = 0.01 if key == "rocker_inertia_kg_mm2" else 1e-4
+    assert getattr(spec.replace({f"valves.intake.drive.masses.{key}": least}).valves["intake"].drive.masses,
+                   key) == least

@@ -75,17 +75,25 @@ class Engine(_Model):
         return self
 
 
+LEAST_PART_MASS_KG = 1e-4
+"""Least mass of a part of the train that has one [kg], a tenth of a gram: below the lightest part of a valve train
+(a pair of cotters, 2 g in the examples).  A part's mass is 0 (no such part) or at least this: a node of the
+multi-mass train of a few nanograms (5e-324 kg given) overflowed its natural frequency, a traceback."""
+
+
 class Masses(_Model):
-    """[valves.NAME.drive.masses]: part masses for the reduced mass (Valve-train practical works (n.d.), eq. 5.2)."""
+    """[valves.NAME.drive.masses]: part masses for the reduced mass (Valve-train practical works (n.d.), eq. 5.2);
+    a part the layout has not is 0, a part it has at least :data:`LEAST_PART_MASS_KG` (a rocker's inertia at least
+    0.01 kg mm2, that mass 10 mm from its pivot)."""
 
     valve_kg: _bounded(0.001, 50.0, "kg", low_open=False)
-    retainer_kg: _bounded(0.0, 20.0, low_open=False) = 0.0
-    cotters_kg: _bounded(0.0, 5.0, low_open=False) = 0.0
+    retainer_kg: _zero_or(LEAST_PART_MASS_KG, 20.0, "kg") = 0.0
+    cotters_kg: _zero_or(LEAST_PART_MASS_KG, 5.0, "kg") = 0.0
     spring_kg: Optional[_bounded(0.001, 20.0, "kg", low_open=False)] = None
-    pushrod_kg: _bounded(0.0, 20.0, low_open=False) = 0.0
-    tappet_kg: _bounded(0.0, 20.0, low_open=False) = 0.0
-    rocker_inertia_kg_mm2: _bounded(0.0, 1e7, "kg mm2", low_open=False) = 0.0
-    bridge_kg: Optional[_bounded(0.0, 20.0, "kg")] = None
+    pushrod_kg: _zero_or(LEAST_PART_MASS_KG, 20.0, "kg") = 0.0
+    tappet_kg: _zero_or(LEAST_PART_MASS_KG, 20.0, "kg") = 0.0
+    rocker_inertia_kg_mm2: _zero_or(LEAST_PART_MASS_KG * 100.0, 1e7, "kg mm2") = 0.0
+    bridge_kg: Optional[_bounded(LEAST_PART_MASS_KG, 20.0, "kg", low_open=False)] = None
 
 
 class Drive(_Model):
