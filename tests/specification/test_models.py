@@ -7,9 +7,9 @@ import re
 from pydantic import ValidationError
 import pytest
 
-from valvetrain.specification import SpecError, example_spec, parse_spec
+from valvetrain.specification import SpecError, example_spec, load_spec, parse_spec
 
-from appendix import appendix_spec, appendix_text, appendix_with
+from appendix import PATH as APPENDIX, appendix_spec, appendix_text, appendix_with
 
 
 def test_the_over_speed_ratio_key_as_the_readme_states_it():
@@ -112,3 +112,23 @@ def test_a_part_mass_of_almost_nothing_is_refused(key, value, allowed):
     least = 0.01 if key == "rocker_inertia_kg_mm2" else 1e-4
     assert getattr(spec.replace({f"valves.intake.drive.masses.{key}": least}).valves["intake"].drive.masses,
                    key) == least
+
+
+MARINE = APPENDIX.parent / "marine-hydraulic-exhaust.toml"
+
+
+@pytest.mark.parametrize("key,value,allowed", [
+    ("valves.intake.dynamics.spring_mass_kg", 0.0, "allowed [0.0001, 5] kg"),
+    ("valves.intake.dynamics.spring_mass_kg", 5e-324, "allowed [0.0001, 5] kg"),
+    ("valves.intake.spring.min_frequency_difference", 5e-324, "allowed 0 (the check switched off) or [0.01, 1]"),
+    ("valves.exhaust.hydraulic.vapour_pressure_MPa", 5e-324,
+     "allowed 0 (cavitation at absolute zero) or [1e-06, 1] MPa"),
+])
+def test_a_limit_or_coil_mass_of_almost_nothing_is_refused(key, value, allowed):
+    """Fuzz (fuzz11), keys with a closed lower bound of zero: a coil mass of 0 kg in the built-in example's multi-mass
+    train divided by zero (a traceback) and one of 5e-324 kg overflowed; a nested pair's min_frequency_difference or a
+    vapour pressure of 5e-324 put their check's margin, relative to it, at inf in results.json.  Now a coil mass is
+    at least LEAST_PART_MASS_KG, the two limits 0 (their meaning kept) or at least 0.01 and 1e-6 MPa (models.py)."""
+    spec = load_spec(MARINE) if "hydraulic" in key else example_spec()
+    with pytest.raises(SpecError, match=rf"^{re.escape(key)} = {value!r}: {re.escape(allowed)}$"):
+        spec.replace({key: value})

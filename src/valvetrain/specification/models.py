@@ -77,8 +77,9 @@ class Engine(_Model):
 
 LEAST_PART_MASS_KG = 1e-4
 """Least mass of a part of the train that has one [kg], a tenth of a gram: below the lightest part of a valve train
-(a pair of cotters, 2 g in the examples).  A part's mass is 0 (no such part) or at least this: a node of the
-multi-mass train of a few nanograms (5e-324 kg given) overflowed its natural frequency, a traceback."""
+(a pair of cotters, 2 g in the examples).  A part's mass is 0 (no such part) or at least this, a spring's coil mass
+at least this: a node of the multi-mass train of 5e-324 kg overflowed its natural frequency (a traceback), one of
+0 kg divided by zero."""
 
 
 class Masses(_Model):
@@ -118,7 +119,9 @@ class Spring(_Model):
 
     ``material`` names a wire grade of :data:`valvetrain.spring_materials.GRADES` (or a list of
     them, all searched); the property keys left out come from the grade, a key given replaces
-    the grade's value for every wire."""
+    the grade's value for every wire.  ``min_frequency_difference`` (a nested pair's) is 0 (the check switched off)
+    or at least 0.01: a smaller requirement is finer than a wound spring's frequency is known (its rate and mass
+    vary by per cents), and one near zero overflowed the check's margin."""
 
     count: Literal[1, 2] = 1
     inner_share: _bounded(0.05, 0.95, low_open=False) = 0.4
@@ -136,7 +139,7 @@ class Spring(_Model):
     wire_diameter_range_mm: Pair(0.1, 30.0, "mm") = (2.0, 7.0)
     wire_step_mm: _bounded(0.01, 1.0, "mm", low_open=False) = 0.1
     deflection_ratio_range: Pair(1.0, 20.0) = (1.6, 3.2)
-    min_frequency_difference: _bounded(0.0, 1.0, low_open=False) = 0.1
+    min_frequency_difference: _zero_or(0.01, 1.0, zero="the check switched off") = 0.1
     radial_gap_mm: Length(0.0, 20.0, low_open=False) = 1.0
     min_preload_N: Optional[_bounded(0.0, 1e6, "N", low_open=False)] = None
     installed_length_mm: Optional[Pair(1.0, 5000.0, "mm")] = None
@@ -256,7 +259,7 @@ class Dynamics(_Model):
     mass_kg: Optional[_bounded(0.001, 50.0, "kg", low_open=False)] = None
     spring_rate_N_per_mm: Optional[_bounded(0.0, 1e6, "N/mm", low_open=False)] = None
     spring_preload_N: Optional[_bounded(0.0, 1e6, "N", low_open=False)] = None
-    spring_mass_kg: Optional[_bounded(0.0, 5.0, "kg", low_open=False)] = None
+    spring_mass_kg: Optional[_bounded(LEAST_PART_MASS_KG, 5.0, "kg", low_open=False)] = None
     allow_large_sweep: bool = False
 
     @model_validator(mode="after")
@@ -357,7 +360,10 @@ class Hydraulic(_Model):
     at that pressure, ``relief_pressure_MPa`` a relief valve opening at it.  The valve's mass, spring and damping are
     the ones of the hydraulic drive and stand apart from the mechanical spring design.  The valve's travel ends at
     a stop ``stop_margin_mm`` above the rigid drive's largest lift (10 % of that lift if left out), of rate
-    ``stop_stiffness_N_per_mm``.  A ``lost_motion`` section makes it a lost-motion drive (:class:`LostMotion`)."""
+    ``stop_stiffness_N_per_mm``.  A ``lost_motion`` section makes it a lost-motion drive (:class:`LostMotion`).
+    ``vapour_pressure_MPa`` is 0 (cavitation at absolute zero) or at least 1e-6 MPa, 1 Pa: the cavitation check's
+    margin is the smallest pressure's distance from it relative to it, which a smaller vapour pressure puts beyond
+    1e5 and one near zero overflowed."""
 
     speed_rpm: Optional[_bounded(1.0, 30000.0, "rpm", low_open=False)] = None
     speed_range_rpm: Optional[Pair(1.0, 30000.0, "rpm")] = None
@@ -378,7 +384,7 @@ class Hydraulic(_Model):
     damping_N_s_per_m: _bounded(0.0, 1e7, "N s/m", low_open=False) = 0.0
     density_kg_m3: _bounded(100.0, 20000.0, "kg/m3", low_open=False) = 870.0
     bulk_modulus_GPa: _bounded(0.01, 100.0, "GPa", low_open=False) = 1.5
-    vapour_pressure_MPa: _bounded(0.0, 1.0, "MPa", low_open=False) = 0.002
+    vapour_pressure_MPa: _zero_or(1e-6, 1.0, "MPa", zero="cavitation at absolute zero") = 0.002
     initial_pressure_MPa: _bounded(0.0, 100.0, "MPa", low_open=False) = 0.3
     back_pressure_MPa: _bounded(0.0, 100.0, "MPa", low_open=False) = 0.1
     leakage_cm3_per_s_MPa: _bounded(0.0, 1e6, "cm3/(s MPa)", low_open=False) = 0.0
