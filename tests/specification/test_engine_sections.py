@@ -1,6 +1,8 @@
 """The sections of the engine's further stages (specification/engine_sections.py): the crank's cylinder pressure file
 is refused where it cannot be a cycle (a gap over half of it, counted from the firing TDC, p-V files that are no
-cycle of the cylinder), a whole cycle runs."""
+cycle of the cylinder), a whole cycle runs; the camshaft's torsional damping is bounded away from zero."""
+
+from pathlib import Path
 
 from click.testing import CliRunner
 import numpy as np
@@ -8,6 +10,7 @@ import pytest
 
 from valvetrain.cli import main
 from valvetrain.crank import pressure
+from valvetrain.specification import SpecError, load_spec
 
 from appendix import appendix_text
 
@@ -56,3 +59,18 @@ def test_bad_p_v_files_are_refused(tmp_path, refused, volumes, message):
     text = _indicator(tmp_path, [0.0], [1e5]).replace('pressure_file = "ind.csv"', 'pressure_file = "pv.csv"')
     out = refused(text)
     assert "crank.pressure_file:" in out and message in out
+
+
+PUSHROD = Path(__file__).parents[2] / "examples" / "pushrod-dynamics.toml"
+
+
+@pytest.mark.parametrize("value", [5e-324, 1e-300, 0.00099])
+def test_a_torsional_damping_of_almost_nothing_is_refused(value):
+    """Fuzz (fuzz11): [camshaft] torsional_damping_ratio, then (0, 0.5], took 5e-324 and overflowed the forced
+    response (a traceback), and 1e-300 gave a timing fluctuation of 1.5e298 cam deg; now at least 0.001 (at which
+    the pushrod example's chain resonance, amplified 1 / (2 x 0.001) = 500 times, moves its timing by 15 cam deg:
+    Camshaft's docstring), and 0.001 itself is taken."""
+    spec = load_spec(PUSHROD)
+    with pytest.raises(SpecError, match=rf"^camshaft.torsional_damping_ratio = {value!r}: allowed \[0.001, 0.5\]$"):
+        spec.replace({"camshaft.torsional_damping_ratio": value})
+    assert spec.replace({"camshaft.torsional_damping_ratio": 0.001}).camshaft.torsional_damping_ratio == 0.001

@@ -2,12 +2,14 @@
 that cannot give a physically meaningful design are refused (exit 2, one message naming the key, the value and what is
 allowed), never a traceback or a result that cannot be true (issue 9)."""
 
+import re
+
 from pydantic import ValidationError
 import pytest
 
-from valvetrain.specification import SpecError, parse_spec
+from valvetrain.specification import SpecError, example_spec, load_spec, parse_spec
 
-from appendix import appendix_spec, appendix_text, appendix_with
+from appendix import PATH as APPENDIX, appendix_spec, appendix_text, appendix_with
 
 
 def test_the_over_speed_ratio_key_as_the_readme_states_it():
@@ -81,3 +83,52 @@ def test_a_margin_outside_its_range_is_refused(value):
     text = appendix_text().replace("min_margin_percent = 0.0 ", f"min_margin_percent = {value} ")
     with pytest.raises(SpecError, match=r"min_margin_percent = .*: allowed \[0, 50\] %"):
         parse_spec(text)
+
+
+@pytest.mark.parametrize("value", [5e-324, 1e-300, 9.9e-5])
+def test_a_film_parameter_limit_of_almost_nothing_is_refused(refused, value):
+    """Fuzz (fuzz11): [lubrication] min_film_parameter, then (0, 10], took 5e-324, and the check's margin, the film
+    parameter over it, was inf in results.json; now at least 1e-4 (Lubrication's docstring: a film of a tenth of an
+    atom for the default finishes), which tests/design/test_lubrication.py runs with."""
+    out = refused(appendix_text() + f"\n[valves.intake.lubrication]\nmin_film_parameter = {value!r}\n", "run")
+    assert out == f"error: valves.intake.lubrication.min_film_parameter = {value!r}: allowed [0.0001, 10]\n"
+
+
+@pytest.mark.parametrize("key,value,allowed", [
+    ("tappet_kg", 5e-324, "allowed 0 (none) or [0.0001, 20] kg"),
+    ("pushrod_kg", 1e-300, "allowed 0 (none) or [0.0001, 20] kg"),
+    ("cotters_kg", 9e-5, "allowed 0 (none) or [0.0001, 5] kg"),
+    ("rocker_inertia_kg_mm2", 1e-300, "allowed 0 (none) or [0.01, 1e+07] kg mm2"),
+    ("bridge_kg", 5e-324, "allowed [0.0001, 20] kg"),
+])
+def test_a_part_mass_of_almost_nothing_is_refused(key, value, allowed):
+    """Fuzz (fuzz11): the built-in example's multi-mass train with a tappet or pushrod of 5e-324 kg, a rocker of
+    1e-300 kg mm2 or a valve bridge of 5e-324 kg (its bound then (0, 20]) overflowed the highest natural frequency,
+    a traceback; a part's mass is now 0 (no such part) or at least LEAST_PART_MASS_KG = 1e-4 kg, a rocker's inertia
+    at least 0.01 kg mm2 (models.py), and the bounds themselves are taken."""
+    spec = example_spec()
+    with pytest.raises(SpecError, match=rf"^valves.intake.drive.masses.{key} = {value!r}: {re.escape(allowed)}$"):
+        spec.replace({f"valves.intake.drive.masses.{key}": value})
+    least = 0.01 if key == "rocker_inertia_kg_mm2" else 1e-4
+    assert getattr(spec.replace({f"valves.intake.drive.masses.{key}": least}).valves["intake"].drive.masses,
+                   key) == least
+
+
+MARINE = APPENDIX.parent / "marine-hydraulic-exhaust.toml"
+
+
+@pytest.mark.parametrize("key,value,allowed", [
+    ("valves.intake.dynamics.spring_mass_kg", 0.0, "allowed [0.0001, 5] kg"),
+    ("valves.intake.dynamics.spring_mass_kg", 5e-324, "allowed [0.0001, 5] kg"),
+    ("valves.intake.spring.min_frequency_difference", 5e-324, "allowed 0 (the check switched off) or [0.01, 1]"),
+    ("valves.exhaust.hydraulic.vapour_pressure_MPa", 5e-324,
+     "allowed 0 (cavitation at absolute zero) or [1e-06, 1] MPa"),
+])
+def test_a_limit_or_coil_mass_of_almost_nothing_is_refused(key, value, allowed):
+    """Fuzz (fuzz11), keys with a closed lower bound of zero: a coil mass of 0 kg in the built-in example's multi-mass
+    train divided by zero (a traceback) and one of 5e-324 kg overflowed; a nested pair's min_frequency_difference or a
+    vapour pressure of 5e-324 put their check's margin, relative to it, at inf in results.json.  Now a coil mass is
+    at least LEAST_PART_MASS_KG, the two limits 0 (their meaning kept) or at least 0.01 and 1e-6 MPa (models.py)."""
+    spec = load_spec(MARINE) if "hydraulic" in key else example_spec()
+    with pytest.raises(SpecError, match=rf"^{re.escape(key)} = {value!r}: {re.escape(allowed)}$"):
+        spec.replace({key: value})

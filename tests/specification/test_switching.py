@@ -34,6 +34,17 @@ def test_bad_switching_input_is_refused_naming_the_key(keys, words):
     assert words in str(err.value)
 
 
+@pytest.mark.parametrize("value", [5e-324, 1e-300, 0.0099])
+def test_a_latch_spring_preload_of_almost_nothing_is_refused(value):
+    """Fuzz (fuzz11): latch_spring_preload_N, then (0, 1000] N, took the smallest subnormal 5e-324 N and ended in a
+    traceback (a division by zero bounding the pin's return time); now at least 0.01 N, the weight of a gram
+    (switching.py's docstring), and 0.01 itself is taken."""
+    with pytest.raises(SpecError) as err:
+        validate(_doc(latch_spring_preload_N=value))
+    assert f"valves.intake.switching.latch_spring_preload_N = {value!r}: allowed [0.01, 1000] N" in str(err.value)
+    assert validate(_doc(latch_spring_preload_N=0.01)).valves["intake"].switching.latch_spring_preload_N == 0.01
+
+
 def test_switching_needs_a_finger():
     doc = spec_document(example_spec())
     doc["valves"]["intake"]["switching"] = spec_document(load_spec(EXAMPLE))["valves"]["intake"]["switching"]

@@ -206,17 +206,47 @@ def test_spring_keys_of_the_specification():
     assert spring["margins"]["tau_max"] == pytest.approx(1.0 - spring["tau_max_MPa"] / 700.0)
     with pytest.raises(SpecError, match=r"material = '65G': allowed '60S2A', 'VDSiCr', 'VDCrV'"):
         _with_spring('material = "65G"')
-    with pytest.raises(SpecError, match=r"installed_length_mm = \[5.0, 9.0\]: the spring must be longer than the "
-                                        r"valve lift max_lift_mm = 10"):
+    with pytest.raises(SpecError, match=r"installed_length_mm = \[5.0, 9.0\]: allowed \[low, high\] with high above "
+                                        r"max_lift_mm \+ 4 x the thinnest wire_diameter_range_mm = 10 \+ 4 x 2 = 18 mm"):
         _with_spring('material = "VDSiCr"\ninstalled_length_mm = [5.0, 9.0]')
     # fuzz10 hand tests: a free length of at most 5 mm under a lift of 10 mm, or below the installed length, ran
     # (a warning on the nearest spring, 27.6 mm free)
-    with pytest.raises(SpecError, match=r"^valves.intake.spring.max_free_length_mm = 5: allowed above the valve lift "
-                                        r"max_lift_mm = 10 \(the spring is installed compressed"):
+    with pytest.raises(SpecError, match=r"^valves.intake.spring.max_free_length_mm = 5: allowed above max_lift_mm \+ "
+                                        r"4 x the thinnest wire_diameter_range_mm = 10 \+ 4 x 2 = 18 mm \(installing "
+                                        r"and lifting the spring compress it"):
         _with_spring('material = "VDSiCr"\nmax_free_length_mm = 5.0')
-    with pytest.raises(SpecError, match=r"^valves.intake.spring.max_free_length_mm = 30: allowed above the valve lift "
-                                        r"max_lift_mm = 10 and the shortest installed_length_mm = 35 \("):
+    with pytest.raises(SpecError, match=r"^valves.intake.spring.max_free_length_mm = 30: allowed above max_lift_mm \+ "
+                                        r"4 x the thinnest wire_diameter_range_mm = 10 \+ 4 x 2 = 18 and the shortest "
+                                        r"installed_length_mm = 35 mm \("):
         _with_spring('material = "VDSiCr"\nmax_free_length_mm = 30.0\ninstalled_length_mm = [35.0, 50.0]')
+
+
+# fuzz11: an installed length above the lift but short of the lift plus any spring's solid length, or a free length
+# so, was designed (the springs' installed_length and coil-gap checks failed) instead of refused.  The bound of the
+# appendix's valve: its lift 10 mm (appendix_text) plus the solid length (6.4) at the pitch t = d of one working coil
+# and two end coils, t (i_p + 2) + d (i_0 - 1) = 4 d, of the thinnest wire of wire_diameter_range_mm.
+@pytest.mark.parametrize("section,message", [
+    ('installed_length_mm = [12.0, 17.9]', r"installed_length_mm = \[12.0, 17.9\]: allowed \[low, high\] with high "
+     r"above max_lift_mm \+ 4 x the thinnest wire_diameter_range_mm = 10 \+ 4 x 2 = 18 mm: below, every spring goes "
+     r"solid before full lift \(one working and two end coils, eq. 6.4\)$"),
+    ('installed_length_mm = [20.0, 21.9]\nwire_diameter_range_mm = [3.0, 7.0]', r"installed_length_mm = \[20.0, "
+     r"21.9\]: allowed \[low, high\] with high above max_lift_mm \+ 4 x the thinnest wire_diameter_range_mm = 10 \+ "
+     r"4 x 3 = 22 mm: below"),
+    ('max_free_length_mm = 17.5', r"max_free_length_mm = 17.5: allowed above max_lift_mm \+ 4 x the thinnest "
+     r"wire_diameter_range_mm = 10 \+ 4 x 2 = 18 mm"),
+])
+def test_a_spring_that_goes_solid_before_full_lift_is_refused(section, message):
+    with pytest.raises(SpecError, match=r"^valves.intake.spring." + message):
+        _with_spring('material = "VDSiCr"\n' + section)
+
+
+def test_a_spring_just_longer_than_solid_at_full_lift_is_designed_and_checked():
+    """An installed length of at most 18.1 mm, 0.1 mm above the lift plus the shortest spring's solid length (the
+    test above), is no impossibility: the design runs and grades it, its spring's installed_length check failing
+    (no spring of the search is that short with the coil gap it asks for, coil_gap_factor = 0.12 wire diameters)."""
+    result = run(_with_spring('material = "VDSiCr"\ninstalled_length_mm = [12.0, 18.1]')).to_dict()
+    spring = result["valves"]["intake"]["spring"]
+    assert spring["margins"]["installed_length"] < 0.0
 
 
 def _check(results, valve):

@@ -29,6 +29,7 @@ from ..laws.records import LawRecord
 from ..numerics import extremum, first_largest
 from ..specification import SpecError
 from ..specification.messages import Problem
+from ..specification.validate import spring_length_problems
 from ..springs import NoSpringFits
 from ..units import MM, to_display
 from .drive import DriveResult, drive_record, drive_stage
@@ -201,9 +202,10 @@ def law_stage(valve, engine, law=None) -> CamResult:
     ------
     ValueError
         The inputs admit no law that can be made: the law's own rules, a lift that overshoots the nose or dips
-        below the base circle, an event of a whole revolution or more, a valve lift beyond half the throat; the
-        argument is a :class:`~valvetrain.specification.messages.Problem` naming the key within the valve (``cam``,
-        ``max_lift_mm``).
+        below the base circle, an event of a whole revolution or more, a valve lift beyond half the throat, a
+        measured table's lift that the spring's lengths do not admit; the argument is a
+        :class:`~valvetrain.specification.messages.Problem` naming the key within the valve (``cam``, ``max_lift_mm``,
+        ``spring.installed_length_mm``).
     """
     cam = valve.cam
     try:
@@ -230,6 +232,10 @@ def law_stage(valve, engine, law=None) -> CamResult:
             key = "cam.table_file" if cam.table_file is not None else "cam.table_lifts_mm"
             raise InputError(Problem(key, f"the measured valve lift = {lift / MM:.4g} mm: {allowed}"))
         raise InputError(Problem("max_lift_mm", allowed, f"{lift / MM:.4g} mm"))
+    if cam.law == "table":     # the spring's lengths against the lift, checked at validation where it is given
+        found = spring_length_problems(valve.spring.section, lift / MM, "the measured valve lift")
+        if found:
+            raise InputError(found[0])
     follower = follower_of(cam)
     # a finger on a measured table (or a caller's law): its lift known only now
     problem = follower.geometry_problem(cam.base_radius - law.ramp_height, law.lift_max + law.ramp_height)

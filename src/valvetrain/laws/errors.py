@@ -51,6 +51,10 @@ MESSAGES = {
         "a second lift region, angle_deg = {start:g} to {end:g} (up to {lift:g} mm), besides the lobe at "
         "{lobe_start:g} to {lobe_end:g}, separated by base-circle rows; a table holds one lobe",
         {"start": "deg", "end": "deg", "lift": "mm", "lobe_start": "deg", "lobe_end": "deg"}),
+    "lobe_too_short": (
+        "the lobe (lift above {band:g} mm) spans angle_deg = {start:g} to {end:g}, {span:.4g} {unit}; allowed at "
+        "least {least:g} {unit} ({cam_least:g} cam deg: no cam lobe is shorter); are the angles in radians?",
+        {"band": "mm", "start": "deg", "end": "deg", "span": "deg", "least": "deg"}),
     "too_few_rows": (
         "the lobe (lift above {band:g} mm from angle_deg = {start:g} to {end:g}) has {rows} rows with its margin of "
         "base circle; at least {least} are needed to fit it",

@@ -59,6 +59,19 @@ LOBE_MARGIN = 0.1
 """Base circle kept on either side of the lobe for the fits, as a fraction of the lobe's angle: the rows
 further out do not change the analysis."""
 
+MIN_LOBE_CAM_DEG = 10.0
+"""Shortest lobe a table may hold [camshaft deg], from its first to its last row above the base-circle band.
+
+A table of radians read as degrees spans at most one camshaft revolution, 2 pi = 6.3 cam deg (4 pi = 12.6 "crank
+deg"), its lobe less: the bound refuses every one.  No cam lobe comes near it.  Its ramps alone take up the
+clearance, 0.25-0.35 mm at the valve (0.16 mm or more at the tappet with a rocker ratio up to 1.6), ending at
+0.008-0.022 mm per cam deg (Valve-train practical works (n.d.), work 2): over 7 cam deg each; the main event of the
+recommended timing, an inlet opened 20-30 crank deg before the TDC and closed 40-60 after the BDC (ibid.), lasts
+120-135 cam deg.  A lobe without ramps (zero lash) is no shorter: rising a lift h within 5 cam deg (half the bound)
+takes a peak acceleration of at least 4 h / (5 deg)^2 = 525 h per rad^2 (constant acceleration, the least peak of
+any rise), 5800 m/s^2 for h = 1 mm at 1000 camshaft rpm, above the 1500-3500 m/s^2 recommended (ibid.), and at the
+nose a flat follower needs a base radius above 524 h against undercut (the radius of curvature R0 + h + h'' > 0)."""
+
 MIN_LOBE_POINTS = 20
 """Fewest rows of a lobe with its margin (the N-harmonic fit takes at least N = 4, nine coefficients)."""
 
@@ -203,8 +216,8 @@ def lobe_table(angle_deg, lift_mm, angle="crank", zero="gas_exchange_tdc", accur
 
     The table must cover at most one camshaft revolution, rise from the base circle (within
     ``BASE_CIRCLE_ACCURACIES`` x ``accuracy_mm`` of zero) to at least ``min_lift_mm`` and hold one lobe: one
-    region of lift; rows at the base circle separate regions (a single such row between lifted rows is
-    noise).  A table of a whole revolution may cut the lobe at its ends; it is turned to start in the middle of
+    region of lift, of at least :data:`MIN_LOBE_CAM_DEG`; rows at the base circle separate regions (a single such
+    row between lifted rows is noise).  A table of a whole revolution may cut the lobe at its ends; it is turned to start in the middle of
     its base circle.  The angles are moved into the engine's cam frame (firing TDC = gas-exchange TDC + 360
     crank deg; the highest row within (-180, 180] cam deg), the rows are trimmed to the lobe and
     ``LOBE_MARGIN`` of its angle of base circle on either side (the analysis does not depend on how much base
@@ -256,6 +269,10 @@ def lobe_table(angle_deg, lift_mm, angle="crank", zero="gas_exchange_tdc", accur
         raise LawError("lift_too_large", lift=h[top] * MM, angle=a[top] * DEG, most=MAX_LIFT_MM * MM)
     a, h = _whole_lobe(a, h, band, revolution, unit)
     first, last = _one_lobe(a, h, band)
+    least = MIN_LOBE_CAM_DEG * revolution / 360.0
+    if a[last] - a[first] < least:
+        raise LawError("lobe_too_short", band=band * MM, start=a[first] * DEG, end=a[last] * DEG,
+                       span=(a[last] - a[first]) * DEG, least=least * DEG, cam_least=MIN_LOBE_CAM_DEG, unit=unit)
     cam = (a + (0.5 * revolution if zero == "firing_tdc" else 0.0)) * (360.0 / revolution)
     cam -= 360.0 * np.ceil((cam[np.argmax(h)] - 180.0) / 360.0)
     margin = LOBE_MARGIN * (cam[last] - cam[first])

@@ -75,17 +75,26 @@ class Engine(_Model):
         return self
 
 
+LEAST_PART_MASS_KG = 1e-4
+"""Least mass of a part of the train that has one [kg], a tenth of a gram: below the lightest part of a valve train
+(a pair of cotters, 2 g in the examples).  A part's mass is 0 (no such part) or at least this, a spring's coil mass
+at least this: a node of the multi-mass train of 5e-324 kg overflowed its natural frequency (a traceback), one of
+0 kg divided by zero."""
+
+
 class Masses(_Model):
-    """[valves.NAME.drive.masses]: part masses for the reduced mass (Valve-train practical works (n.d.), eq. 5.2)."""
+    """[valves.NAME.drive.masses]: part masses for the reduced mass (Valve-train practical works (n.d.), eq. 5.2);
+    a part the layout has not is 0, a part it has at least :data:`LEAST_PART_MASS_KG` (a rocker's inertia at least
+    0.01 kg mm2, that mass 10 mm from its pivot)."""
 
     valve_kg: _bounded(0.001, 50.0, "kg", low_open=False)
-    retainer_kg: _bounded(0.0, 20.0, low_open=False) = 0.0
-    cotters_kg: _bounded(0.0, 5.0, low_open=False) = 0.0
+    retainer_kg: _zero_or(LEAST_PART_MASS_KG, 20.0, "kg") = 0.0
+    cotters_kg: _zero_or(LEAST_PART_MASS_KG, 5.0, "kg") = 0.0
     spring_kg: Optional[_bounded(0.001, 20.0, "kg", low_open=False)] = None
-    pushrod_kg: _bounded(0.0, 20.0, low_open=False) = 0.0
-    tappet_kg: _bounded(0.0, 20.0, low_open=False) = 0.0
-    rocker_inertia_kg_mm2: _bounded(0.0, 1e7, "kg mm2", low_open=False) = 0.0
-    bridge_kg: Optional[_bounded(0.0, 20.0, "kg")] = None
+    pushrod_kg: _zero_or(LEAST_PART_MASS_KG, 20.0, "kg") = 0.0
+    tappet_kg: _zero_or(LEAST_PART_MASS_KG, 20.0, "kg") = 0.0
+    rocker_inertia_kg_mm2: _zero_or(LEAST_PART_MASS_KG * 100.0, 1e7, "kg mm2") = 0.0
+    bridge_kg: Optional[_bounded(LEAST_PART_MASS_KG, 20.0, "kg", low_open=False)] = None
 
 
 class Drive(_Model):
@@ -110,7 +119,9 @@ class Spring(_Model):
 
     ``material`` names a wire grade of :data:`valvetrain.spring_materials.GRADES` (or a list of
     them, all searched); the property keys left out come from the grade, a key given replaces
-    the grade's value for every wire."""
+    the grade's value for every wire.  ``min_frequency_difference`` (a nested pair's) is 0 (the check switched off)
+    or at least 0.01: a smaller requirement is finer than a wound spring's frequency is known (its rate and mass
+    vary by per cents), and one near zero overflowed the check's margin."""
 
     count: Literal[1, 2] = 1
     inner_share: _bounded(0.05, 0.95, low_open=False) = 0.4
@@ -128,7 +139,7 @@ class Spring(_Model):
     wire_diameter_range_mm: Pair(0.1, 30.0, "mm") = (2.0, 7.0)
     wire_step_mm: _bounded(0.01, 1.0, "mm", low_open=False) = 0.1
     deflection_ratio_range: Pair(1.0, 20.0) = (1.6, 3.2)
-    min_frequency_difference: _bounded(0.0, 1.0, low_open=False) = 0.1
+    min_frequency_difference: _zero_or(0.01, 1.0, zero="the check switched off") = 0.1
     radial_gap_mm: Length(0.0, 20.0, low_open=False) = 1.0
     min_preload_N: Optional[_bounded(0.0, 1e6, "N", low_open=False)] = None
     installed_length_mm: Optional[Pair(1.0, 5000.0, "mm")] = None
@@ -248,7 +259,7 @@ class Dynamics(_Model):
     mass_kg: Optional[_bounded(0.001, 50.0, "kg", low_open=False)] = None
     spring_rate_N_per_mm: Optional[_bounded(0.0, 1e6, "N/mm", low_open=False)] = None
     spring_preload_N: Optional[_bounded(0.0, 1e6, "N", low_open=False)] = None
-    spring_mass_kg: Optional[_bounded(0.0, 5.0, "kg", low_open=False)] = None
+    spring_mass_kg: Optional[_bounded(LEAST_PART_MASS_KG, 5.0, "kg", low_open=False)] = None
     allow_large_sweep: bool = False
 
     @model_validator(mode="after")
@@ -349,7 +360,10 @@ class Hydraulic(_Model):
     at that pressure, ``relief_pressure_MPa`` a relief valve opening at it.  The valve's mass, spring and damping are
     the ones of the hydraulic drive and stand apart from the mechanical spring design.  The valve's travel ends at
     a stop ``stop_margin_mm`` above the rigid drive's largest lift (10 % of that lift if left out), of rate
-    ``stop_stiffness_N_per_mm``.  A ``lost_motion`` section makes it a lost-motion drive (:class:`LostMotion`)."""
+    ``stop_stiffness_N_per_mm``.  A ``lost_motion`` section makes it a lost-motion drive (:class:`LostMotion`).
+    ``vapour_pressure_MPa`` is 0 (cavitation at absolute zero) or at least 1e-6 MPa, 1 Pa: the cavitation check's
+    margin is the smallest pressure's distance from it relative to it, which a smaller vapour pressure puts beyond
+    1e5 and one near zero overflowed."""
 
     speed_rpm: Optional[_bounded(1.0, 30000.0, "rpm", low_open=False)] = None
     speed_range_rpm: Optional[Pair(1.0, 30000.0, "rpm")] = None
@@ -370,7 +384,7 @@ class Hydraulic(_Model):
     damping_N_s_per_m: _bounded(0.0, 1e7, "N s/m", low_open=False) = 0.0
     density_kg_m3: _bounded(100.0, 20000.0, "kg/m3", low_open=False) = 870.0
     bulk_modulus_GPa: _bounded(0.01, 100.0, "GPa", low_open=False) = 1.5
-    vapour_pressure_MPa: _bounded(0.0, 1.0, "MPa", low_open=False) = 0.002
+    vapour_pressure_MPa: _zero_or(1e-6, 1.0, "MPa", zero="cavitation at absolute zero") = 0.002
     initial_pressure_MPa: _bounded(0.0, 100.0, "MPa", low_open=False) = 0.3
     back_pressure_MPa: _bounded(0.0, 100.0, "MPa", low_open=False) = 0.1
     leakage_cm3_per_s_MPa: _bounded(0.0, 1e6, "cm3/(s MPa)", low_open=False) = 0.0
@@ -430,7 +444,8 @@ class Lubrication(_Model):
     ``pressure_viscosity_per_GPa`` = 20 (a mineral oil), the roughnesses of a ground cam (0.2 um) and a polished
     follower (0.1 um), ``boundary_friction`` = 0.12, ``full_film_friction`` = 0.04, ``roller_rolling_friction`` =
     0.005 and the limits ``min_film_parameter`` = 1 (where Hamrock, Schmid and Jacobson (2004) put the start of
-    boundary lubrication) and ``max_contact_temperature_C`` = 150 (the critical temperature of Blok (1937) is a property
+    boundary lubrication; at least 1e-4: a ten-thousandth of the roughness, 0.02 nm for the default finishes, a
+    tenth of an atom, asks for no film, and a value near zero overflows the check's margin) and ``max_contact_temperature_C`` = 150 (the critical temperature of Blok (1937) is a property
     of each oil; 150 is a typical value)."""
 
     oil_viscosity_mPa_s: _bounded(0.1, 2000.0, "mPa s") = 10.0
@@ -442,7 +457,7 @@ class Lubrication(_Model):
     full_film_friction: _bounded(0.001, 0.3) = 0.04
     roller_rolling_friction: _bounded(0.0, 0.1, low_open=False) = 0.005
     roller_slip: _bounded(0.0, 1.0, low_open=False) = 0.0
-    min_film_parameter: _bounded(0.0, 10.0) = 1.0
+    min_film_parameter: _bounded(1e-4, 10.0, low_open=False) = 1.0
     max_contact_temperature_C: _bounded(0.0, 1000.0, "degC") = 150.0
 
     @model_validator(mode="after")

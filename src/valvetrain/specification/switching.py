@@ -57,7 +57,8 @@ class Switching(_Model):
 
     The latch's switching (all six or none): the pin of ``latch_pin_diameter_mm`` and ``latch_pin_mass_kg`` moves
     over ``latch_stroke_mm`` under the oil's ``oil_pressure_MPa`` (gauge, at the passage) against its return spring
-    (``latch_spring_preload_N`` at home, ``latch_spring_rate_N_per_mm``), its oil through a passage of
+    (``latch_spring_preload_N`` at home, at least 0.01 N, the weight of a gram: a spring that holds less holds no
+    pin, and a preload near zero overflowed the return's time bound; ``latch_spring_rate_N_per_mm``), its oil through a passage of
     ``oil_passage_diameter_mm`` (``passage_discharge_coefficient``, ``oil_density_kg_m3``), and back on the spring;
     it may move only while both arms rest on their base circles, the switching window."""
 
@@ -81,7 +82,7 @@ class Switching(_Model):
     low_lobe: Optional[LowLobe] = None
     latch_stroke_mm: Optional[Length(0.05, 20.0, low_open=False)] = None
     latch_pin_mass_kg: Optional[_bounded(1e-5, 0.5, "kg", low_open=False)] = None
-    latch_spring_preload_N: Optional[_bounded(0.0, 1000.0, "N")] = None
+    latch_spring_preload_N: Optional[_bounded(0.01, 1000.0, "N", low_open=False)] = None
     latch_spring_rate_N_per_mm: Optional[_bounded(0.0, 1000.0, "N/mm", low_open=False)] = None
     oil_pressure_MPa: Optional[_bounded(0.0, 20.0, "MPa")] = None
     oil_passage_diameter_mm: Optional[Length(0.05, 20.0, low_open=False)] = None

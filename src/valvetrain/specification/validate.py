@@ -14,7 +14,7 @@ from typing import Any, Optional
 from ..errors import InputError
 from ..followers import REGISTRY as FOLLOWERS
 from ..layouts import LAYOUTS
-from ..springs import feasible_mean_diameters
+from ..springs import feasible_mean_diameters, shortest_solid_length
 from ..units import MM
 from .cam_base import main_half_angle_deg
 from .messages import Problem, shown
@@ -71,20 +71,7 @@ def _valve_problems(name, v, engine):
                    f"{ratio[1] * v.throat_diameter_mm:g} mm; wire of {wires[0]:g}...{wires[1]:g} mm makes "
                    f"{low:g}...{high:g} mm (index D/d = 3...12, Valve-train practical works (n.d.), work 6)",
                            f"{list(ratio)}", " "))
-    installed = v.spring.installed_length_mm
-    if installed is not None and v.max_lift_mm is not None and installed[1] <= v.max_lift_mm:
-        out.append(Problem(f"{at}.spring.installed_length_mm", f"the spring must be longer than the valve lift "
-                           f"max_lift_mm = {v.max_lift_mm:g} (it is compressed by it, Valve-train practical works "
-                           "(n.d.), eq. 6.5)", f"{list(installed)}"))
-    free = v.spring.max_free_length_mm
-    below = {key: value for key, value in (("the valve lift max_lift_mm", v.max_lift_mm),
-                                           ("the shortest installed_length_mm", installed and installed[0]))
-             if value is not None}
-    if free is not None and below and free <= max(below.values()):
-        out.append(Problem(f"{at}.spring.max_free_length_mm", "allowed above " + " and ".join(
-            f"{key} = {value:g}" for key, value in below.items()) + " (the spring is installed compressed from its "
-            "free length, and the lift compresses it further, Valve-train practical works (n.d.), eq. 6.5)",
-            f"{free:g}"))
+    out += [p.within(at) for p in spring_length_problems(v.spring, v.max_lift_mm)]
     if (v.drive.layout is not None and not any(link.lever for link in LAYOUTS[v.drive.layout].links)
             and v.rocker_ratio != 1.0):
         out.append(Problem(f"{at}.drive.layout", f"needs rocker_ratio = 1 (got {v.rocker_ratio:g})",
@@ -123,6 +110,41 @@ def _valve_problems(name, v, engine):
                                text=f"{at}.opens_deg + closes_deg = {v.opens_deg + v.closes_deg:g}: the valve event "
                                "opens_deg + 180 + closes_deg must lie in (0, 360) crank deg"))
         out += v.cam.problems(at, v, engine)
+    return out
+
+
+def spring_length_problems(spring, lift_mm, lift_key="max_lift_mm") -> list[Problem]:
+    """The lengths a spring section allows against the valve lift (keys under ``spring.``): the longest installed
+    length must exceed the lift plus the solid length of the shortest spring of the wire range, 4 x its thinnest wire
+    (:func:`valvetrain.springs.shortest_solid_length`), else every spring goes solid before full lift; the longest
+    free length must exceed that too, and the shortest installed length.  A spring between that bound and the coil
+    gap the design asks for is its ``coil_gap_at_full_lift`` and ``installed_length`` checks.
+
+    Parameters
+    ----------
+    spring : Spring
+        The spring section, its keys in mm.
+    lift_mm : float or None
+        The valve lift [mm]; None where not known yet (a measured table's, known once its law is built).
+    lift_key : str
+        What the lift is called in the messages.
+    """
+    installed, free, out = spring.installed_length_mm, spring.max_free_length_mm, []
+    below = {}
+    if lift_mm is not None:
+        wire, per_wire = spring.wire_diameter_range_mm[0], shortest_solid_length(1.0)
+        least = f"{lift_key} + {per_wire:g} x the thinnest wire_diameter_range_mm = {lift_mm:g} + {per_wire:g} x {wire:g}"
+        below[least] = lift_mm + per_wire * wire
+        if installed is not None and installed[1] <= below[least]:
+            out.append(Problem("spring.installed_length_mm", f"allowed [low, high] with high above {least} = "
+                               f"{below[least]:g} mm: below, every spring goes solid before full lift (one working "
+                               "and two end coils, eq. 6.4)", f"{list(installed)}"))
+    if installed is not None:
+        below["the shortest installed_length_mm"] = installed[0]
+    if free is not None and below and free <= max(below.values()):
+        out.append(Problem("spring.max_free_length_mm", "allowed above " + " and ".join(
+            f"{key} = {value:g}" for key, value in below.items()) + " mm (installing and lifting the spring "
+            "compress it, Valve-train practical works (n.d.), eq. 6.5)", f"{free:g}"))
     return out
 
 

@@ -15,8 +15,8 @@ SI units inside: N, m, Pa, kg, rad/s.  One module per job:
 Conical (beehive) and progressive-rate springs are not designed: the sources give no formulas for them.
 """
 
-from .candidates import (INSTALLED_TO_LIFT_MAX, RESONANCE_RATIO_MIN, Candidates, SpringDesign, SpringMaterial,
-                         evaluate_spring, evaluate_springs)
+from .candidates import (INSTALLED_TO_LIFT_MAX, MIN_WORKING_COILS, RESONANCE_RATIO_MIN, Candidates, SpringDesign,
+                         SpringMaterial, evaluate_spring, evaluate_springs, shortest_solid_length)
 from .diagnosis import Conflict, Diagnosis, Remedy, StressWindow, diagnose, stress_window
 from .formulas import (SHAPE_FACTOR_TABLE, active_coils, fatigue_safety, fatigue_stress_limit, length_at_pitch,
                        natural_frequency, resonance_stress, shape_factor_table, shear_stress, spring_lengths,
@@ -29,8 +29,8 @@ from .search import (INNER_DIAMETER_RATIO_LOW, MEAN_DIAMETER_RANGE, MEAN_DIAMETE
                      feasible_mean_diameters, wire_series)
 
 __all__ = [
-    "INSTALLED_TO_LIFT_MAX", "RESONANCE_RATIO_MIN", "Candidates", "SpringDesign", "SpringMaterial", "evaluate_spring",
-    "evaluate_springs", "Conflict", "Diagnosis", "Remedy", "StressWindow", "diagnose", "stress_window",
+    "INSTALLED_TO_LIFT_MAX", "MIN_WORKING_COILS", "RESONANCE_RATIO_MIN", "Candidates", "SpringDesign",
+    "SpringMaterial", "evaluate_spring", "evaluate_springs", "shortest_solid_length", "Conflict", "Diagnosis", "Remedy", "StressWindow", "diagnose", "stress_window",
     "SHAPE_FACTOR_TABLE", "active_coils", "fatigue_safety", "fatigue_stress_limit", "length_at_pitch",
     "natural_frequency", "resonance_stress", "shape_factor_table", "shear_stress", "spring_lengths", "spring_rate",
     "wahl_factor",

@@ -13,8 +13,8 @@ import numpy as np
 from ..checks import _TOL, check
 from ..masses import spring_mass
 from ..spring_materials import GRADES, grade
-from .formulas import (active_coils, fatigue_safety, natural_frequency, shape_factor_table, shear_stress,
-                       spring_lengths, spring_rate, wahl_factor)
+from .formulas import (active_coils, fatigue_safety, length_at_pitch, natural_frequency, shape_factor_table,
+                       shear_stress, spring_lengths, spring_rate, wahl_factor)
 from .requirement import DEFLECTION_RATIO_RANGE, Characteristic
 
 RESONANCE_RATIO_MIN = 10.0
@@ -26,6 +26,10 @@ given.  A stated default of this package, not from the sources, which set no len
 to springs that fit a cylinder head and leaves out, for example, the 120 mm long outer spring (l_0 = 10 h)
 that the search without a limit proposed for the nested pair of the polydyne example; the springs
 chosen for the shipped examples stand at 4.3-4.8 h."""
+
+MIN_WORKING_COILS = 1.0
+"""Fewest working coils i_p of a designed spring: those of (6.2) rounded down to half coils, at least one (the
+``working_coils`` check asks for two)."""
 
 @dataclass(frozen=True)
 class SpringMaterial:
@@ -71,6 +75,17 @@ class SpringMaterial:
     def source(self) -> str:
         """Where the grade's figures come from."""
         return GRADES[self.grade].source
+
+
+def shortest_solid_length(wire_diameter) -> float:
+    """Solid length of the shortest spring a search makes of wire ``d`` [m]: :data:`MIN_WORKING_COILS` and the end
+    coils i_0 of :class:`SpringMaterial` closed, (6.4) at the pitch t = d (:func:`~.formulas.length_at_pitch`).
+    A spring of that wire installed shorter than the valve lift plus this length goes solid before full lift.
+
+    >>> round(shortest_solid_length(2e-3) * 1e3, 9)        # one working coil, two end coils: 3 d + d
+    8.0
+    """
+    return float(length_at_pitch(wire_diameter, wire_diameter, MIN_WORKING_COILS, SpringMaterial.end_coils))
 
 
 @dataclass
@@ -275,7 +290,7 @@ def evaluate_springs(preload, rate, lift, mean_diameter, wire_diameter, material
     allowable, endurance, psi = material.limits(d) if limits is None else limits
     p_max = p0 + c0 * lift
     exact = active_coils(g, d, p_max / c0, p_max, big_d)
-    coils = np.maximum(np.floor(exact * 2.0) / 2.0, 1.0)
+    coils = np.maximum(np.floor(exact * 2.0) / 2.0, MIN_WORKING_COILS)
     actual = spring_rate(g, d, big_d, coils)
     tau_max = shear_stress(p0 + actual * lift, big_d, d, chi)
     tau_min = shear_stress(p0, big_d, d, chi)
