@@ -38,7 +38,8 @@ name"`` (or edit the files by hand and run ``tools/check_codes.py``, which rewri
 numbers is a code of ``[notes]`` with its numbers as parameters (``{speed_rpm:.0f}``: the format of the number,
 the same in every language); a record's text made so is a :class:`NoteText` (its English,
 keeping its parts).  A check's source is its citations and their notes, said in Russian by ``[citation_notes]``,
-``[citation_locators]`` and ``[citation_units]`` in the report and the designer alike.  :mod:`.wording` words the data the physics returns (the spring diagnosis, a measured
+``[citation_locators]`` and ``[citation_units]`` in the report and the designer alike; ``[locators]`` holds the words
+by which each language's locators are found in a citation (:mod:`valvetrain.report.typography`).  :mod:`.wording` words the data the physics returns (the spring diagnosis, a measured
 table's fit reason) in every language.
 
 To add a language: a ``LANG.toml`` with every section, the language in :data:`valvetrain.languages.LANGS`, its symbol

@@ -32,7 +32,7 @@ from .check_rows import (chapter_checks, check_class, check_margin, check_name, 
 from .i18n import TEXT
 from .numbers import number, percent
 from .russian import russian_citations, russian_typography
-from .typography import LOCATORS, typography
+from .typography import AND, CORRECTIONS, LOCATORS, typography
 from .worked import crank_lines, flow_lines, law_lines, spring_lines, strength_lines, time_area_lines
 from .switching import switching_chapters
 from .symbols import INPUT_SYMBOLS, WARNING_SYMBOLS, symbol_legend
@@ -505,7 +505,7 @@ def render_report(results, plots, lang="en", folder=None) -> str:
 _SHORTS = {alternative: key for key, work in WORKS.items()
            for alternative in (work.short, str(Markup.escape(work.short)))}
 CITATION = re.compile("(" + "|".join(re.escape(s) for s in sorted(_SHORTS, key=len, reverse=True)) + ")"
-                      rf"((?:, {LOCATORS}(?:(?:, | and | и ){LOCATORS})*)?)")
+                      rf"((?:, {LOCATORS}(?:(?:, |{AND}){LOCATORS})*)?)")
 """A citation of a work by its in-text form (raw or HTML-escaped) and its locators."""
 
 LANGUAGE_CODES = {"English": "en", "Russian": "ru", "Ukrainian": "uk", "Chinese": "zh-Latn", "German": "de"}
@@ -542,7 +542,7 @@ def numbered_citations(page, lang) -> str:
     return "".join(parts).replace("<!--sources-->", f'<ol class="bibliography">{items}</ol>', 1)
 
 
-CORRECTIONS_CITED = re.compile(r"(?:corrections notes?|поправк[аи]) (\d+)(?:-(\d+))?")
+CORRECTIONS_CITED = re.compile(rf"{CORRECTIONS} (\d+)(?:-(\d+))?")
 
 
 def cited_corrections(text, lang) -> list[tuple[int, str, str]]:

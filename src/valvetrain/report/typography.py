@@ -6,13 +6,25 @@ designer gave, a link or a work in another language's entry (:func:`map_text`).
 
 import re
 
-LOCATOR = (r"(?:works?|eqs?\.|sections?|ch\.|chapters?|[Tt]ables?|Fig\.|pp?\.|appendix|step|ф\.|формул[аы]|разделы?"
-           r"|гл\.|глава|рис\.|табл\.|таблица|работ[аы]|этап)")
-"""The words of a locator in a citation: ``work 2``, ``eqs. (2.23)-(2.34)``, ``section 2.1``, ``Fig. 2.6``..."""
+from ..languages import LANGS
+from ..locale import catalogue
+
+_WORDS = [catalogue(lang)["locators"] for lang in LANGS]
+AND = "|".join(f" {words['and']} " for words in _WORDS)
+"""The words joining two numbers of a locator or two locators, in every language (``[locators]`` of the catalogues):
+`` and | и ``."""
+
+LOCATOR = "(?:" + "|".join(word for words in _WORDS for word in words["words"]) + ")"
+"""The words of a locator in a citation in every language (``[locators]`` of the catalogues): ``work 2``,
+``eqs. (2.23)-(2.34)``, ``section 2.1``, ``Fig. 2.6``, ``формулы 6.12``..."""
+
+CORRECTIONS = "(?:" + "|".join(words["corrections"] for words in _WORDS) + ")"
+"""A citation of the corrections notes in every language (``corrections note 20``, ``поправка 20``), without its
+number."""
 
 _NUMBER = r"(?:[A-Z]-?)?\d+(?:[.\-–]\d+)*[a-zа-я]?"
 _NUMBER = rf"(?:\({_NUMBER}\)|{_NUMBER})"
-LOCATORS = rf"{LOCATOR}(?: {_NUMBER}(?:(?:-|–|, | and | и ){_NUMBER})*)?"
+LOCATORS = rf"{LOCATOR}(?: {_NUMBER}(?:(?:-|–|, |{AND}){_NUMBER})*)?"
 """A locator with its numbers, a list or a range of them (``eqs. (2.23)-(2.34)``, ``формулы 6.12, 6.14``,
 ``разделы 5.1-5.3``)."""
 
