@@ -1,6 +1,8 @@
 """The compiled integrator of the dynamics (valvetrain.dynamics.kernels): its RK4 against scipy's DOP853 on the same
 equations, and the split of the speeds into blocks for the threads."""
 
+from dataclasses import replace
+
 import numpy as np
 import pytest
 from scipy.integrate import solve_ivp
@@ -72,7 +74,10 @@ def test_the_one_node_kernel_gives_the_general_kernels_records(monkeypatch):
     speeds = np.array([700.0, 5554.0, 6200.0, 9500.0]) * np.pi / 60
     fields = ("lift", "velocity", "acceleration", "contact_force", "seat_force", "spring_force", "clash_margin",
               "revolutions", "converged", "substeps")
-    assert module.one_node(train.network())
+    net = train.network()
+    assert module.one_node(net)
+    # an element of another kind (the spring made unilateral) is left to the general kernel, which has every kind
+    assert not module.one_node(replace(net, unilateral=np.ones_like(net.unilateral)))
     for tolerance in (module.STATE_TOLERANCE, -1.0):
         one = sweep(law, train, speeds, revolutions=2, tolerance=tolerance)
         monkeypatch.setattr(module, "one_node", lambda net: False)
