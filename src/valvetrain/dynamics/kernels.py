@@ -162,6 +162,15 @@ def _rk4(x, v, xn, vn, h, cam_x, cam_v, off, im, ra, rb, k, d, gap, pre, uni, vn
             vn[i, s] = v[i, s] + h[s] / 6.0 * (acc[0, i, s] + 2.0 * acc[1, i, s] + 2.0 * acc[2, i, s] + acc[3, i, s])
 
 
+@njit(cache=True, nogil=True, no_cpython_wrapper=True, no_cfunc_wrapper=True, inline='always')
+def _half_steps(j0, half, period):
+    """The excitation samples half a step and a whole step after sample ``j0`` (``half`` samples a half step), the
+    whole step's wrapped round the revolution of ``period`` samples."""
+    j1 = j0 + half
+    j2 = j1 + half
+    return j1, 0 if j2 == period else j2
+
+
 @njit(cache=True, nogil=True)
 def integrate_block(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_per_rev, max_revolutions, tolerance,
                     rate, inv_mass, x_init, ra, rb, k, d, gap, pre, uni, closing, follower, springs, rocker_ratio,
@@ -303,10 +312,7 @@ def integrate_block(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_p
             z0[s] = z[s]
         j0 = 0
         for step in range(steps_per_rev * n_sub):
-            j1 = j0 + half
-            j2 = j1 + half
-            if j2 == period:
-                j2 = 0
+            j1, j2 = _half_steps(j0, half, period)
             u0, u2, d0, d2 = cam_u[j0], cam_u[j2], cam_du[j0], cam_du[j2]
             cam_x[0], cam_x[1], cam_x[2], cam_x[3] = u0, cam_u[j1], cam_u[j1], u2
             for s in range(bsize):
@@ -462,10 +468,7 @@ def integrate_node(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_pe
             x0[s], v0[s] = x[s], v[s]
         j0 = 0
         for step in range(steps_per_rev * n_sub):
-            j1 = j0 + half
-            j2 = j1 + half
-            if j2 == period:
-                j2 = 0
+            j1, j2 = _half_steps(j0, half, period)
             u0, u1, u2, d0, d1, d2 = cam_u[j0], cam_u[j1], cam_u[j2], cam_du[j0], cam_du[j1], cam_du[j2]
             for s in range(bsize):          # RK4's stages, each for every speed
                 cv[s] = om[s] * d0
