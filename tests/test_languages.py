@@ -22,3 +22,4 @@ def test_the_unit_symbols_have_a_column_per_language_in_its_order():
     """English first, then Russian: the millimetre is "mm", then "мм"; every unit has exactly one symbol a language."""
     assert all(len(row) == 2 + len(LANGS) for row in UNITS.values())
     assert [symbol("mm", lang) for lang in LANGS] == ["mm", "мм"]
+

@@ -104,6 +104,12 @@ def test_the_russian_designer_says_a_checks_source_in_the_words_of_the_report(na
         beyond + "Power units manual (n.d.), формула (1.1)"
 
 
+def test_the_language_menu_names_each_language_in_itself(shown):
+    """The designer's language menu lists valvetrain.languages.LANGS, each by its own name from its catalogue
+    ([designer] language: "English", "Русский", the languages' own names), no word of it in the code."""
+    assert shown().language.options == [("en", "English"), ("ru", "Русский")]
+
+
 def test_a_refused_value_goes_back_to_the_design_drawn_and_says_why():
     # issue 40: the panel showed the refused value while the plots showed the last good design
     d = _designer()

@@ -12,6 +12,7 @@ from bokeh.models import (Button, ColorBar, ColumnDataSource, CustomJS, DataTabl
 from bokeh.plotting import figure
 import numpy as np
 
+from ..languages import LANGS
 from ..report.i18n import TEXT
 from ..report.names import label
 from .draw import (BAR_CSS, CURVES, DOWNLOAD_JS, DRAWN_JS, INPUT_CSS, KINEMATIC_PLOTS, PAGE_JS, PAINTED_JS, PANEL_WIDTH,
@@ -94,8 +95,8 @@ class Layout:
         t = WORDS["en"]
         # one style sheet for every input of the panel, one for the bar's (a model of this document)
         self.input_css, self.bar_css = InlineStyleSheet(css=INPUT_CSS), InlineStyleSheet(css=BAR_CSS)
-        self.language = Select(value="en", options=[("en", "English"), ("ru", "Русский")], name="language",
-                               width=95, stylesheets=[self.bar_css])
+        self.language = Select(value="en", options=[(lang, WORDS[lang]["language"]) for lang in LANGS],
+                               name="language", width=95, stylesheets=[self.bar_css])
         self.language.on_change("value", self.on_language)
         self.valve_select = Select(value=self.valve or "", options=self.names, width=140, name="valve",
                                    stylesheets=[self.bar_css], visible=bool(self.names))
