@@ -11,7 +11,7 @@ import pytest
 
 from valvetrain.dynamics.models import one_mass_train
 from valvetrain.dynamics.perturbation import kinetostatic_force, perturbation_parameter, quasi_static_lift
-from valvetrain.dynamics.events import seating, sweep_events
+from valvetrain.dynamics.events import seating, sweep_events, zero_crossing
 from valvetrain.dynamics.sweep import headline_sweep, simulate, sweep
 from valvetrain.laws import KurzLaw
 
@@ -243,6 +243,31 @@ def test_headline_sweep_has_the_full_sweeps_headlines():
     assert largest_force(part) == largest_force(full)
     top = np.flatnonzero(speeds <= load_range[1])[-1]
     assert top % 10 != 0 and speeds[top] in part.cam_speeds        # the range's last speed, not a coarse one
+
+
+def test_headline_sweep_finds_a_force_levels_first_speed_as_the_full_sweep():
+    """A contact force level (a lash adjuster's push, whose crossing is its float speed) crossed between two coarse
+    speeds well below the jump: the headline sweep given the level simulates the speeds the crossing is interpolated
+    from, so the crossing equals the full sweep's (the same speeds, the same zero_crossing); without the level it
+    does not simulate them."""
+    lift, phi, mass, rate, preload = 8e-3, 1.0, 0.2, 50e3, 300.0
+    exact = np.sqrt(2 * (preload + rate * lift) / (mass * lift * (np.pi / phi) ** 2))
+    train = one_mass_train(mass, 3e8, rate, preload, damping_ratio=0.1, seat_damping_ratio=0.0)
+    speeds = np.linspace(0.5, 1.2, 141) * exact * 1.0013
+    full = sweep(harmonic_cam(lift, phi), train, speeds)
+    level = 0.6 * full.events.min_contact_force[0]
+
+    def crossing(r):
+        force = r.events.min_contact_force
+        return zero_crossing(r.cam_speeds, force - level, force <= level)
+
+    first = int(np.argmax(full.events.min_contact_force <= level))
+    assert first % 10 > 3 and crossing(full) < 0.9 * exact    # between two coarse speeds, below the jump's window
+    part = headline_sweep(harmonic_cam(lift, phi), train, speeds, levels=[level])
+    assert crossing(part) == crossing(full)
+    assert set(speeds[first - 3:first + 1]) <= set(part.cam_speeds)
+    without = headline_sweep(harmonic_cam(lift, phi), train, speeds)
+    assert not set(speeds[first - 3:first + 1]) <= set(without.cam_speeds)
 
 
 def test_seating_velocity_against_a_second_integrator():

@@ -629,7 +629,9 @@ def dynamics_stage(dyn, valve, engine, law, drive, name="valve", progress=None, 
         result, rated_sweep = headline_sweep(law, train, speeds * to_cam, revs, step_deg,
                                              load_range=tuple(s * to_cam for s in load_range),
                                              seating_top=engine.rated_speed * to_cam,
-                                             extra=[engine.rated_speed * to_cam])
+                                             extra=[engine.rated_speed * to_cam],
+                                             levels=() if train.adjuster is None else
+                                             (train.adjuster.push * valve.rocker_ratio,))
         speeds = result.cam_speeds / to_cam
     else:
         if progress is not None:

@@ -270,7 +270,7 @@ def lash_adjuster_stage(la, valve, engine, cam, drive, dynamics=None,
     pumps = [p for p in per.pump_up if p is not None]
     helds = [(h, i) for i, h in enumerate(per.held_open) if h is not None]
     worst = max(helds)[1] if helds else None
-    push = (la.plunger_spring_N + la.supply_pressure * area) / ratio
+    push = element.push
     floats = np.nan
     if dynamics is not None:
         floats = float_speed(dynamics.per_speed.speed, np.asarray(dynamics.per_speed.min_contact_force) / k, push)

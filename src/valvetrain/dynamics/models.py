@@ -87,6 +87,12 @@ class Adjuster:
     refill: float
     stop: float = np.inf
 
+    @property
+    def push(self) -> float:
+        """The contact force at the valve at which the check valve opens, (F_s + p_s A) / i_a [N]: at or below it
+        the plunger extends after the follower (:func:`~valvetrain.dynamics.kernels.integrate_block`)."""
+        return (self.plunger_spring + self.supply * self.area) / self.motion_ratio
+
     def array(self) -> np.ndarray:
         """The kernel's parameter array (7,)."""
         return np.array([self.motion_ratio, self.plunger_spring, self.area, self.supply, self.leak, self.refill,

@@ -539,16 +539,36 @@ SEATING_NEAR = 0.95
 by :func:`headline_sweep`."""
 
 
+def _window(centre, stride, n, keep, every) -> np.ndarray:
+    """The indices of a grid of ``n`` speeds less than ``stride`` from ``centre``, every ``every``-th from it, those
+    of the mask ``keep`` (None: all)."""
+    offsets = np.arange(1 - stride, stride)
+    out = np.clip(centre + offsets[offsets % every == 0], 0, n - 1)
+    return np.unique(out if keep is None else out[keep[out]])
+
+
+def _peak_neighbours(index, values, window) -> np.ndarray:
+    """The speeds of ``window`` (indices) next to a local maximum of ``values`` (of the speeds ``index`` simulated)
+    among its speeds simulated (nan: the lowest)."""
+    at = np.searchsorted(index, window)
+    done = window[(at < index.size) & (index[np.minimum(at, index.size - 1)] == window)]
+    v = np.nan_to_num(values[np.searchsorted(index, done)], nan=-np.inf)
+    top = (v >= np.append(-np.inf, v[:-1])) & (v >= np.append(v[1:], -np.inf))
+    return window[np.isin(window, np.concatenate([done[top] - 1, done[top] + 1]))]
+
+
 def headline_sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, bounce_tolerance=BOUNCE_TOLERANCE,
                    load_range=(0.0, np.inf), stride=HEADLINE_STRIDE, seating_top=np.inf,
-                   extra=None) -> SweepResult | tuple[SweepResult, SweepResult]:
+                   extra=None, levels=()) -> SweepResult | tuple[SweepResult, SweepResult]:
     """The speeds of a sweep that decide its jump speed, its largest seating velocity and its largest loads, without
     the others.
 
     Parameters are those of :func:`sweep`; ``load_range`` is the speed range [rad/s camshaft] whose cam force loads
     the parts (the strength stage's), ``stride`` spaces the coarse grid, ``seating_top`` is the highest speed
     [rad/s camshaft] of the seating velocity graded (the rated speed), ``extra`` more camshaft speeds [rad/s] to
-    simulate with the coarse grid (the rated speed: one kernel call fewer), returned apart.
+    simulate with the coarse grid (the rated speed: one kernel call fewer), returned apart; ``levels`` contact forces
+    [N] whose first speed with the smallest contact force while the cam lifts at or below them is found as the jump
+    speed's (a lash adjuster's push, :attr:`.models.Adjuster.push`: where its follower floats).
 
     Returns
     -------
@@ -558,25 +578,28 @@ def headline_sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, bounce_t
 
     Notes
     -----
-    Simulated, in two sweeps:
+    Simulated, in three sweeps:
 
     1. the coarse grid: every ``stride``-th speed, the lowest and the highest, the first and the last speed
        inside ``load_range``, and the last speed up to ``seating_top``;
     2. the speeds between the last coarse speed without a separation and the first with one, and the two below
        them: the first speed of the full grid with a separation and the speeds :func:`zero_crossing` fits below it;
        the same below the first coarse speed whose contact force falls to zero while the cam lifts (a separation
-       that comes and goes with the speed starts near it); the speeds within ``stride`` of the coarse speed with the
-       largest seating velocity, of those up to ``seating_top`` whose seating velocity is within
-       :data:`SEATING_NEAR` of their largest (the seating velocity has a peak at each harmonic of the cam the train
-       meets: the built-in example's exhaust peaks at 6161 rpm between two coarse speeds lower than one 600 rpm
-       above; of these speeds only those up to ``seating_top``), and of the coarse speed inside ``load_range`` with
-       the largest contact force (only those inside ``load_range``).
+       that comes and goes with the speed starts near it) and to each of ``levels``; every other speed within
+       ``stride`` of the coarse speed with the largest seating velocity, of those up to ``seating_top`` whose
+       seating velocity is within :data:`SEATING_NEAR` of their largest (the seating velocity has a peak at each
+       harmonic of the cam the train meets: the built-in example's exhaust peaks at 6161 rpm between two coarse
+       speeds lower than one 600 rpm above; of these speeds only those up to ``seating_top``), and of the coarse
+       speed inside ``load_range`` with the largest contact force (only those inside ``load_range``);
+    3. in each of those windows, the two neighbours of every speed simulated whose value (the seating velocity, the
+       largest contact force) is at least that of the speeds simulated on either side of it
+       (:func:`_peak_neighbours`): where the value has one peak between two speeds two apart, its largest speed.
 
     So :meth:`SweepResult.headline` gives the full sweep's jump speed unless a separation starts and ends between two
     coarse speeds below the first coarse speed that separates or loses its contact force; the largest seating
     velocity (of all the speeds, and of those up to ``seating_top``) and the largest contact force (in
     ``load_range``) are the full sweep's where they lie within ``stride`` speeds of the coarse grid's largest (or at
-    an end of ``load_range``).  The sweep's other headlines (the bounce
+    an end of ``load_range``) and no two peaks of the value lie within two speeds.  The sweep's other headlines (the bounce
     onset, the coil clash) and its maps have the simulated speeds only.
     """
     speeds = np.atleast_1d(np.asarray(cam_speeds, dtype=float))
@@ -605,16 +628,19 @@ def headline_sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, bounce_t
     jumped, force, seat = seating_events(result)
     below = np.where(graded[index], seat, np.nan)
     near = index[below >= SEATING_NEAR * np.nanmax(below)] if np.isfinite(below).any() else []
-    window = np.arange(1 - stride, stride)
-    more = [c + window for c in ([index[np.nanargmax(seat)]] if np.isfinite(seat).any() else [])]
-    more += [c + window[graded[np.clip(c + window, 0, n - 1)]] for c in near]
+    windows = [(c, None, "seat") for c in ([index[np.nanargmax(seat)]] if np.isfinite(seat).any() else [])]
+    windows += [(c, graded, "seat") for c in near]
     if inside.any():
         c = index[inside[index]][np.argmax(result.contact_force[inside[index]].max(axis=1))]
-        more.append(c + window[inside[np.clip(c + window, 0, n - 1)]])
-    for hit in (jumped, jumped | (force <= 0.0)):
+        windows.append((c, inside, "force"))
+    more = [_window(c, stride, n, keep, 2) for c, keep, _ in windows]
+    for hit in (jumped, jumped | (force <= 0.0), *(force <= level for level in levels)):
         if hit.any() and hit.argmax() > 0:
             more.append(np.arange(index[hit.argmax() - 1] - 2, index[hit.argmax()]))
-    result = simulated(np.concatenate(more or [[]]))[1]
+    index, result, _ = simulated(np.concatenate(more or [[]]))
+    values = {"seat": seating_events(result)[2], "force": result.contact_force.max(axis=1)}
+    last = [_peak_neighbours(index, values[kind], _window(c, stride, n, keep, 1)) for c, keep, kind in windows]
+    result = simulated(np.concatenate(last or [[]]))[1]
     return result if extra is None else (result, extra_result)
 
 
