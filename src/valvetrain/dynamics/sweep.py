@@ -618,13 +618,14 @@ def headline_sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, bounce_t
             both.events     # noqa: B018 - found once here; merged() joins the parts' events
             parts.append(speeds_of(both, slice(0, idx.size)) if also.size else both)
             done[idx] = True
-            return np.flatnonzero(done), merged(parts), speeds_of(both, slice(idx.size, None))
-        return np.flatnonzero(done), merged(parts), None
+            return np.flatnonzero(done), speeds_of(both, slice(idx.size, None))
+        return np.flatnonzero(done), None
 
     ends = np.flatnonzero(inside)[[0, -1]] if inside.any() else []
     graded = speeds <= seating_top * (1.0 + 1e-12)
-    index, result, extra_result = simulated(np.concatenate([np.arange(0, n, stride), [n - 1], ends,
-                                                            np.flatnonzero(graded)[-1:]]), more_speeds)
+    index, extra_result = simulated(np.concatenate([np.arange(0, n, stride), [n - 1], ends,
+                                                    np.flatnonzero(graded)[-1:]]), more_speeds)
+    result = parts[0]
     jumped, force, seat = seating_events(result)
     below = np.where(graded[index], seat, np.nan)
     near = index[below >= SEATING_NEAR * np.nanmax(below)] if np.isfinite(below).any() else []
@@ -637,10 +638,13 @@ def headline_sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, bounce_t
     for hit in (jumped, jumped | (force <= 0.0), *(force <= level for level in levels)):
         if hit.any() and hit.argmax() > 0:
             more.append(np.arange(index[hit.argmax() - 1] - 2, index[hit.argmax()]))
-    index, result, _ = simulated(np.concatenate(more or [[]]))
-    values = {"seat": seating_events(result)[2], "force": result.contact_force.max(axis=1)}
+    index = simulated(np.concatenate(more or [[]]))[0]
+    order = np.argsort(np.concatenate([part.cam_speeds for part in parts]))   # the speeds' rows, not joined
+    values = {"seat": np.concatenate([seating_events(part)[2] for part in parts])[order],
+              "force": np.concatenate([part.contact_force.max(axis=1) for part in parts])[order]}
     last = [_peak_neighbours(index, values[kind], _window(c, stride, n, keep, 1)) for c, keep, kind in windows]
-    result = simulated(np.concatenate(last or [[]]))[1]
+    simulated(np.concatenate(last or [[]]))
+    result = merged(parts)
     return result if extra is None else (result, extra_result)
 
 
