@@ -3,6 +3,7 @@
 from dataclasses import replace
 
 from valvetrain.checks import check
+from valvetrain.design.drive_strength import not_given
 from valvetrain.report.check_rows import check_class, check_margin, check_range, check_verdict, not_checked
 
 
@@ -21,6 +22,12 @@ def test_a_checks_row_says_its_kind_of_range_and_its_acceptance():
 
 
 def test_a_check_whose_parts_are_not_given_is_said_in_words():
-    note = "pushrod_buckling_margin: not checked, parts.pushrod_length_mm not given"
-    assert not_checked(note, "en") != note and "pushrod" in not_checked(note, "en")
+    """The note keeps its record's English (results.json) and its codes, from which the report names the check and
+    the keys in its language (the catalogues' [names]); a text without codes is shown as it is."""
+    note = not_given("pushrod_buckling_margin", ["pushrod_length_mm", "pushrod_diameter_mm"])
+    assert note == "pushrod_buckling_margin: not checked, parts.pushrod_length_mm, parts.pushrod_diameter_mm not given"
+    assert not_checked(note, "en") == ("buckling safety factor of the pushrod: not checked, not given: pushrod length, "
+                                       "mm, pushrod diameter, mm")
+    assert not_checked(note, "ru") == ("запас устойчивости штанги: не проверено, не задано: длина штанги, мм, диаметр "
+                                       "штанги, мм")
     assert not_checked("something else", "ru") == "something else"

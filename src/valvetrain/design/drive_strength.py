@@ -339,6 +339,14 @@ def finger_loads(cam, maps) -> Optional[tuple[FingerLoads, Worst]]:
             _worst(maps, [f[2] for f in found]))
 
 
+def not_given(check, keys) -> NoteText:
+    """The note of a ``check`` not made because the ``[parts]`` ``keys`` (their names in the specification) are not
+    given: ``"camshaft_deflection: not checked, parts.cam_width_mm not given"``, kept as its codes
+    (``strength.not_checked``) for the report to name the check and the keys in its language."""
+    return NoteText(note("strength.not_checked", check=check,
+                         keys=sum((note("strength.part_key", key=key) for key in keys), ())))
+
+
 def finger_bending(parts, loads, moment) -> tuple[FingerLoads, tuple[tuple[Check, ...], tuple[str, ...]]]:
     """The finger's bending stress at its critical section under its largest bending moment ``moment``
     (:class:`Worst`, :meth:`~valvetrain.followers.PivotedFollower.loads`) on the rectangular section of
@@ -347,7 +355,7 @@ def finger_bending(parts, loads, moment) -> tuple[FingerLoads, tuple[tuple[Check
     keys = ("finger_section_width_mm", "finger_section_height_mm")
     missing = [key for key in keys if getattr(parts, si_name(key)[0]) is None]
     if missing:
-        return loads, ((), (f"finger_bending: not checked, parts.{', parts.'.join(missing)} not given",))
+        return loads, ((), (not_given("finger_bending", missing),))
     stress = strength.rectangle_bending_stress(moment.value, parts.finger_section_width, parts.finger_section_height)
     width, height = (to_display(x, "mm") for x in (parts.finger_section_width, parts.finger_section_height))
     said = _where(moment) + note("strength.finger_section", moment_Nm=moment.value, width_mm=width, height_mm=height)
@@ -369,7 +377,7 @@ def _strength(valve, cam, theta, maps, p_open, valve_load):
         """Whether the parts' keys (spec names) are given; a note names those missing."""
         missing = [key for key in keys if getattr(parts, si_name(key)[0]) is None]
         if missing:
-            notes.append(f"{name}: not checked, parts.{', parts.'.join(missing)} not given")
+            notes.append(not_given(name, missing))
         return not missing
 
     e_contact = parts.contact_modulus
@@ -457,7 +465,7 @@ def _edge_loading(parts, drive, cam, follower, maps, width, notes):
     elif drive.links[0].face_diameter(parts) is not None:
         face, key = drive.links[0].face_diameter(parts), "strength.face_of_bucket"
     else:
-        notes.append("flat_follower_edge_loading: not checked, parts.tappet_face_diameter_mm not given")
+        notes.append(not_given("flat_follower_edge_loading", ["tappet_face_diameter_mm"]))
         return []
 
     def reach(m):

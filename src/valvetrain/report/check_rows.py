@@ -27,19 +27,18 @@ def check_range(c, lang) -> str:
     return TEXT[lang]["any"] if text == "any" else text
 
 
-NOT_CHECKED = re.compile(r"(\w+): not checked, (.*) not given")
-
-
 def not_checked(note, lang) -> str:
-    """``"camshaft_deflection: not checked, parts.cam_width_mm not given"`` in ``lang``; a note with its codes
-    (:class:`~valvetrain.locale.NoteText`: the undercut profile's) rendered from them."""
-    if isinstance(note, NoteText):
-        return translate(note, lang)
-    m = NOT_CHECKED.fullmatch(note)
-    if not m:
+    """A check whose parts are not given in words of ``lang``: a note of
+    :func:`~valvetrain.design.drive_strength.not_given` with the names of the check and of the keys missing
+    (:func:`label`), another note with codes (the undercut profile's) rendered from them, a text as it is."""
+    if not isinstance(note, NoteText):
         return note
-    parts = ", ".join(label(k.strip(), lang) for k in m[2].split(","))
-    return TEXT[lang]["not_checked_note"].format(check=label(m[1], lang), parts=parts)
+    (code, params), = note.parts
+    if code != "strength.not_checked":
+        return translate(note, lang)
+    params = dict(params)
+    keys = ", ".join(label(dict(key)["key"], lang) for _, key in params["keys"])
+    return TEXT[lang]["not_checked_note"].format(check=label(params["check"], lang), parts=keys)
 
 
 CHECK_CHAPTERS = {
