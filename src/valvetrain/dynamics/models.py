@@ -90,7 +90,9 @@ class Adjuster:
     @property
     def push(self) -> float:
         """The contact force at the valve at which the check valve opens, (F_s + p_s A) / i_a [N]: at or below it
-        the plunger extends after the follower (:func:`~valvetrain.dynamics.kernels.integrate_block`)."""
+        the plunger extends after the follower (:func:`~valvetrain.dynamics.kernels.integrate_block`): the chamber
+        pressure (i_a F - F_s) / A of a massless plunger down to the supply p_s, the check valve's opening condition
+        (Merritt (1967), the valve's pressure balance)."""
         return (self.plunger_spring + self.supply * self.area) / self.motion_ratio
 
     def array(self) -> np.ndarray:

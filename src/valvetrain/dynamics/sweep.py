@@ -599,8 +599,8 @@ def headline_sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, bounce_t
     coarse speeds below the first coarse speed that separates or loses its contact force; the largest seating
     velocity (of all the speeds, and of those up to ``seating_top``) and the largest contact force (in
     ``load_range``) are the full sweep's where they lie within ``stride`` speeds of the coarse grid's largest (or at
-    an end of ``load_range``) and no two peaks of the value lie within two speeds.  The sweep's other headlines (the bounce
-    onset, the coil clash) and its maps have the simulated speeds only.
+    an end of ``load_range``) and no two peaks of the value lie within two speeds.  The sweep's other headlines (the
+    bounce onset, the coil clash) and its maps have the simulated speeds only.
     """
     speeds = np.atleast_1d(np.asarray(cam_speeds, dtype=float))
     n = speeds.size

@@ -33,8 +33,8 @@ def not_checked(note, lang) -> str:
     (:func:`label`), another note with codes (the undercut profile's) rendered from them, a text as it is."""
     if not isinstance(note, NoteText):
         return note
-    (code, params), = note.parts
-    if code != "strength.not_checked":
+    code, params = note.parts[0]
+    if code != "strength.not_checked" or len(note.parts) > 1:
         return translate(note, lang)
     params = dict(params)
     keys = ", ".join(label(dict(key)["key"], lang) for _, key in params["keys"])
