@@ -67,7 +67,7 @@ def english_words(texts):
     return found
 
 
-SYMBOLS = {"max", "min", "cos", "sin", "tan", "arccos", "zap"}
+SYMBOLS = {"max", "min", "cos", "sin", "tan", "arccos", "zap", "MFB"}
 """Symbols of the sources spelt in Latin letters."""
 
 PROPER = ({"valvetrain", "HP", "Academy", "ASTM"} | {w for grade in GRADES for w in re.findall(r"[A-Za-z]+", grade)}

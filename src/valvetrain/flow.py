@@ -7,6 +7,7 @@ lengths in m, areas in m^2, time-area in m^2*s, velocities in m/s, angles in rad
 import numpy as np
 
 from .checks import Check, check
+from .locale import cited, note
 from .numerics import cumulative_integral, integrals
 
 THROAT_TO_BORE_RANGES = {
@@ -345,10 +346,10 @@ def check_flow(kind, *, bore, throat_diameter, max_lift, v1, v2, v3, charge_velo
     if kind == "intake":
         code = "flow.throat_to_bore" if count == 1 else "flow.equivalent_throat_to_bore"
         out.append(check(code, np.sqrt(count) * throat_diameter / bore, *THROAT_TO_BORE_RANGES[chamber],
-                         source=f"Valve-train practical works (n.d.), work 1 ({chamber} chamber)",
+                         source=cited(note("source.chamber", work="Valve-train practical works (n.d.), work 1", chamber=chamber)),
                          params={} if count == 1 else {"count": count}))
     out.append(check("flow.lift_to_throat", max_lift / throat_diameter, *LIFT_TO_THROAT_RANGE,
-                     source="Valve-train practical works (n.d.), work 2 (automotive engines)"))
+                     source=cited(note("source.automotive", work="Valve-train practical works (n.d.), work 2"))))
     out.append(check("flow.throat_velocity", v1, *THROAT_VELOCITY_RANGE[kind], source="Valve-train practical works (n.d.), work 1, eq. (1.1)",
                      unit="m/s"))
     if kind == "intake":

@@ -47,6 +47,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .errors import InputError
+from .locale import NoteText, cited, note
 from .units import MPA
 
 ALLOWABLE_SHARE = 0.50
@@ -110,7 +111,7 @@ class WireGrade:
     description: str
     shear_modulus: float                 # G [Pa]
     density: float                       # rho [kg/m^3]
-    source: str
+    source: NoteText                     # where the figures come from (:func:`~valvetrain.locale.cited`)
     tensile: tuple = None                # (A [MPa mm^m], m) of R_m = A / d^m; None: the constants below
     allowable: float = None              # [tau] [Pa], the same for every wire
     endurance: float = None              # tau_-1 [Pa]
@@ -146,12 +147,14 @@ _SHIGLEY = "Shigley's Mechanical Engineering Design, 9th ed. (2011), Tables 10-4
 
 GRADES = {
     "60S2A": WireGrade("60S2A", "silicon spring steel of the manual (60G, 65G, 60S2A, 60S2G, 50KhGA, 50KhFA)",
-                       8.0e10, 7850.0, "Valve-train practical works (n.d.), work 6 (psi_tau: literature, corrections note 24)",
+                       8.0e10, 7850.0, cited(note("source.psi_literature", work="Valve-train practical works (n.d.), work 6")),
                        allowable=500e6, endurance=370e6, mean_stress_factor=0.2),
     "VDSiCr": WireGrade("VDSiCr", "oil-hardened and tempered chrome-silicon valve-spring wire (EN 10270-2)",
-                        79.5e9, 7850.0, f"{_SHIGLEY} (R_m of ASTM A401)", tensile=(1974.0, 0.108)),
+                        79.5e9, 7850.0, cited(note("source.standard_strength", work=_SHIGLEY, standard="ASTM A401")),
+                        tensile=(1974.0, 0.108)),
     "VDCrV": WireGrade("VDCrV", "oil-hardened and tempered chrome-vanadium valve-spring wire (EN 10270-2)",
-                       79.5e9, 7850.0, f"{_SHIGLEY} (R_m of ASTM A232)", tensile=(2005.0, 0.168)),
+                       79.5e9, 7850.0, cited(note("source.standard_strength", work=_SHIGLEY, standard="ASTM A232")),
+                       tensile=(2005.0, 0.168)),
 }
 """The wire grades a specification can name, by name."""
 

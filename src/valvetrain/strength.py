@@ -7,7 +7,7 @@ SI units: N, m, Pa.  Each check is a pure function; :func:`verdict` makes its va
 import numpy as np
 
 from .checks import Check, check
-from .locale import NoteText, note as locale_note
+from .locale import NoteText, cited, note as locale_note
 
 DEFLECTION_COEFFICIENT = 64.0 / (3.0 * np.pi)
 """Camshaft deflection coefficient of (7.3): 64/(3 pi) = 6.79 from beam theory; the printed 0.8 is wrong (corrections note 20)."""
@@ -23,17 +23,17 @@ LIMITS = {
     "ball_socket_stress": (2000e6, "max", "MPa", "Valve-train practical works (n.d.), eqs. (7.11), (7.14): <= 2000 MPa"),
     "pushrod_head_pressure": (100e6, "max", "MPa", "Valve-train practical works (n.d.), eq. (7.12): <= 80-100 MPa"),
     "rocker_pad_stress": (2000e6, "max", "MPa", "Valve-train practical works (n.d.), eq. (7.13): <= 2000 MPa"),
-    "rocker_pivot_stress": (2000e6, "max", "MPa", "Valve-train practical works (n.d.), eqs. (7.11), (7.14): <= 2000 MPa "
-                            "for a convex sphere in a concave socket, taken for the pivot ball of a stud-mounted rocker"),
+    "rocker_pivot_stress": (2000e6, "max", "MPa", cited(locale_note(
+        "source.pivot_ball", work="Valve-train practical works (n.d.), eqs. (7.11), (7.14)"))),
     "rocker_shaft_bending": (150e6, "max", "MPa", "Valve-train practical works (n.d.), eq. (7.15): <= 150 MPa"),
     "rocker_shaft_shear": (90e6, "max", "MPa", "Valve-train practical works (n.d.), eq. (7.17): <= 90 MPa"),
     "rocker_shaft_bearing": (80e6, "max", "MPa", "Valve-train practical works (n.d.), eq. (7.18): <= 80 MPa"),
-    "finger_bending": (150e6, "max", "MPa", "Valve-train practical works (n.d.), eq. (7.15): <= 150 MPa, the bending "
-                       "allowable of the rocker gear's steels 20Kh, 40Kh, 45, taken for the finger; sigma = 6 M / (b h^2) "
-                       "of its rectangular section, Shigley's Mechanical Engineering Design, 9th ed. (2011)"),
-    "bridge_bending": (150e6, "max", "MPa", "Valve-train practical works (n.d.), eq. (7.15): <= 150 MPa, the bending "
-                       "allowable of the rocker gear's steels, taken for the valve bridge; sigma = M / W, M = F l / 4 "
-                       "at mid-span, Shigley's Mechanical Engineering Design, 9th ed. (2011), Table A-9"),
+    "finger_bending": (150e6, "max", "MPa", cited(locale_note(
+        "source.finger_bending", work="Valve-train practical works (n.d.), eq. (7.15)",
+        book="Shigley's Mechanical Engineering Design, 9th ed. (2011)"))),
+    "bridge_bending": (150e6, "max", "MPa", cited(locale_note(
+        "source.bridge_bending", work="Valve-train practical works (n.d.), eq. (7.15)",
+        book="Shigley's Mechanical Engineering Design, 9th ed. (2011), Table A-9"))),
 }
 """Allowable values: the limit SI (the less strict end of the source's range), its kind, the unit it is shown in
 and its source."""

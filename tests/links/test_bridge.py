@@ -14,6 +14,7 @@ from valvetrain.layouts import chain, train_mass, unused_part_keys
 from valvetrain.links import ValveBridge
 from valvetrain.locale import note_text
 from valvetrain.report.html import numbered_citations
+from valvetrain.report.names import translate
 from valvetrain.report.russian import russian_citations
 from valvetrain.specification import example_spec
 from valvetrain.specification.messages import SpecError
@@ -39,8 +40,8 @@ def test_its_bending_stress_and_stiffness_by_hand():
     assert "жёсткость на один клапан 24 E I / l^3 = 158760 Н/мм" in note_text(c.note_parts, "ru")
     made, notes = loads(SimpleNamespace(bridge_span=0.040, bridge_width=None, bridge_height=0.012))
     assert ValveBridge().checks(made) == [] and notes == ["bridge_bending: not checked"]
-    # the Russian report says its source's note in Russian (ru.toml [citation_notes]), as numbered in the report
-    page = russian_citations(numbered_citations(f'<span class="cite">{c.source}</span>', "ru"))
+    # the Russian report says its source's words in Russian (ru.toml source.bridge_bending), as numbered in the report
+    page = russian_citations(numbered_citations(f'<span class="cite">{translate(c.source, "ru")}</span>', "ru"))
     assert "траверсы клапанов; σ = M / W, M = F l / 4 в среднем сечении, [2, таблица A-9]" in page
     assert not re.search("taken|bridge|mid-span", page)
 

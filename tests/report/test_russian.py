@@ -14,7 +14,8 @@ import pytest
 
 from valvetrain.cli import main
 from valvetrain.report.russian import citation, russian_citations, russian_typography
-from valvetrain.locale import NoteText, note
+from valvetrain.locale import NoteText, cited, note
+from valvetrain.report.names import translate
 from valvetrain.design.drive_strength import not_given
 from valvetrain.report.check_rows import not_checked
 
@@ -106,12 +107,19 @@ def test_no_russian_label_ends_in_a_dangling_preposition():
     assert [t for t in texts if re.search(r"\s(по|из|от|для|с)$", t.strip())] == []
 
 
+def said(source) -> str:
+    """A check's source as the Russian report says it before its works are numbered: its words from the catalogue
+    (:func:`valvetrain.locale.cited`), its locators by :func:`citation`."""
+    return citation(translate(source, "ru"))
+
+
 def test_a_citation_in_russian_word_by_word():
     """The locators, a note and its units of one numbered citation, translated by hand: "corrections note 27" ->
-    "поправка 27", "work 6" -> "работа 6", "eq." -> "формула", "Table 10-4" -> "таблица 10-4", 80 MPa -> 80 МПа."""
+    "поправка 27", "work 6" -> "работа 6", "eq." -> "формула", "Table 10-4" -> "таблица 10-4", 80 MPa -> 80 МПа;
+    the words of a source from the catalogue (ru.toml source.usual_seat_angles) with its work's locator."""
     assert citation("[2, work 6, eq. (6.14), corrections note 27]") == "[2, работа 6, формула (6.14), поправка 27]"
-    assert citation("[5] (usually 30 deg inlet, 45 deg exhaust)") == \
-        "[5] (обычно 30° у впускного, 45° у выпускного клапана)"
+    assert said(cited(note("source.usual_seat_angles", work="[5, work 1]"))) == \
+        "[5, работа 1] (обычно 30° у впускного, 45° у выпускного клапана)"
     assert citation("[3, Table 10-4]: 80 MPa") == "[3, таблица 10-4]: 80 МПа"
 
 
@@ -137,15 +145,15 @@ def test_a_list_or_a_range_of_locators_keeps_its_points():
 
 def test_the_engine_checks_sources_in_russian_with_their_factor(monkeypatch):
     """Issue 41: the sources of the engine's checks, made with the factor beyond the works' ranges
-    (design/__init__.py UNIT_SLIP_FACTOR), are said in the catalogue's words with that factor: 2.5 here (the
-    report's typography writes 2,5).  Before, ru.toml [citation_notes] knew "a factor of 3 beyond " only: another
-    factor left the source English."""
+    (design/__init__.py UNIT_SLIP_FACTOR), are said in the catalogue's words with that factor: 2.5 here, with a
+    decimal comma (ru.toml source.factor_beyond).  Before, ru.toml [citation_notes] knew "a factor of 3 beyond " only:
+    another factor left the source English."""
     import valvetrain.design as design
     from valvetrain.specification import example_spec
 
     monkeypatch.setattr(design, "UNIT_SLIP_FACTOR", 2.5)
-    beyond = "пределы, расширенные в 2.5 раза относительно: "
-    assert [citation(c.source) for c in design.engine_checks(example_spec())] == [
+    beyond = "пределы, расширенные в 2,5 раза относительно: "
+    assert [said(c.source) for c in design.engine_checks(example_spec())] == [
         beyond + "Heywood (1988), раздел 2.2", beyond + "Heywood (1988), раздел 2.2",
         beyond + "Power units manual (n.d.), формула (1.1)"]
 
@@ -163,12 +171,12 @@ def test_a_source_made_with_numbers_in_russian_whatever_its_numbers(monkeypatch)
 
     law = SimpleNamespace(accuracy_stated=True, fit="harmonic", harmonic_rms=1e-6, accuracy=2e-6, harmonics=12)
     (residual,) = TableLaw.checks(law)
-    assert citation(residual.source) == ("Shang Hanji (1988), раздел 5.2: accuracy_mm, достигается при N ≤ 12 "
+    assert said(residual.source) == ("Shang Hanji (1988), раздел 5.2: accuracy_mm, достигается при N ≤ 12 "
                                          "гармониках (N по отклонению относительно точности, 0,002-0,01 мм)")
     monkeypatch.setattr(hydraulic, "DELAY_LEVEL", 0.1)
     checks = run(load_spec(EXAMPLES / "marine-hydraulic-exhaust.toml"), headlines_only=True).checks
     (opening,) = [c for c in checks if c.code == "hydraulic.opening"]
-    assert citation(opening.source) == ("Shang Hanji (1988), гл. 7; 10 % подъёма при жёстком приводе, уровень "
+    assert said(opening.source) == ("Shang Hanji (1988), гл. 7; 10 % подъёма при жёстком приводе, уровень "
                                         "отсчёта запаздываний (принято в этой программе)")
 
 
@@ -182,3 +190,29 @@ def test_an_undercut_profiles_contact_stress_not_checked_in_either_language():
     assert not_checked(said, "ru") == "контактное напряжение кулачка: не проверено, профиль подрезан (нет линейного контакта)"
     assert not_checked(not_given("camshaft_deflection", ["cam_width_mm"]), "ru").startswith(
         "стрела прогиба распределительного вала: не проверено")
+
+
+def test_every_lift_laws_source_is_said_in_russian():
+    """Issue 41: a lift law's source is said in Russian from the catalogue (its ``source.*`` note), its works by
+    their in-text forms.  Before, only the sources of the examples' laws were (ru.toml [citation_notes] knew their
+    English): the combined, constant-acceleration, three-arc, tangent, dynamic and harmonic laws' sources, and what an
+    asymmetric law and a clearance take-up add to their flanks', were English in a Russian report."""
+    import numpy as np
+
+    from valvetrain.laws import AsymmetricLaw, KurzLaw
+    from valvetrain.laws.base import LiftLaw
+    from valvetrain.laws.convex import ThreeArcLaw
+    from valvetrain.laws.takeup import ClearanceTakeUp
+
+    def subclasses(cls):
+        return {cls} | {s for c in cls.__subclasses__() for s in subclasses(c)}
+
+    sources = {cls.__name__: cls.source for cls in subclasses(LiftLaw) if "source" in vars(cls)}
+    assert {"CombinedLaw", "ConstantAccelerationLaw", "ThreeArcLaw", "TangentLaw", "DynamicLaw", "HarmonicLaw",
+            "KurzLaw", "TableLaw", "PolynomialLaw", "PolydyneLaw", "PowerPolynomialLaw"} <= sources.keys()
+    kurz = KurzLaw(6.25e-3, 0.25e-3, 0.02e-3 * 180 / np.pi, *np.radians([27, 6, 38]))
+    sources["asymmetric"] = AsymmetricLaw(kurz, kurz).source
+    sources["take-up"] = ClearanceTakeUp(ThreeArcLaw(0.01975, 0.0065, np.radians(71.0), 0.004), 0.00025).source
+    assert {name: latin_words(said(source)) for name, source in sources.items() if latin_words(said(source))} == {}
+    assert said(sources["take-up"]).endswith("замкнутые формулы выведены в этой программе; зазор выбирается на "
+                                             "ветвях профиля (без рампы)")

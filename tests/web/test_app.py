@@ -84,7 +84,7 @@ def test_page_callbacks():
 @pytest.mark.parametrize("name", [None, "ukrsurt2019-diesel.toml"], ids=["built-in", "ukrsurt2019-diesel"])
 def test_the_russian_designer_says_a_checks_source_in_the_words_of_the_report(name):
     """Issue 41: the source of a check in the Russian designer has the report's words for its citations' notes and
-    locators (ru.toml [citation_notes], [citation_locators], [citation_units]), its works named by their in-text
+    locators (ru.toml source.* notes, [citation_locators], [citation_units]), its works named by their in-text
     forms.  Before, the engine's checks' sources had two Russian skeletons of their own (ru.toml [texts]: "в 3 раза
     шире диапазона Heywood (1988), раздел 2.2", "ф. (1.1)") and every other source was English: 68 of the built-in
     example's sources had English words ("work 1, eq. (1.1)", "(usually 30 deg inlet, 45 deg exhaust)"), 33 of the

@@ -55,7 +55,7 @@ from ..checks import SEVERITIES, Check, apply_acceptances, check, failed, ranked
 from ..crank.pressure import PressureFileError
 from ..files import BreathingFileError, TableFileError
 from ..laws.records import LawRecord
-from ..locale import verdict
+from ..locale import cited, note, verdict
 from ..specification import Spec, SpecError, crank_geometry, si, spec_document, validate
 from ..specification.messages import Problem
 from ..specification.models import Dynamics
@@ -407,16 +407,17 @@ def engine_checks(spec) -> list[Check]:
     bore, stroke, rod, speed = crank_geometry(spec)
     k = UNIT_SLIP_FACTOR
     found = [check("engine.stroke_to_bore", stroke / bore, STROKE_BORE_RANGE[0] / k,
-                   STROKE_BORE_RANGE[1] * k, source=f"a factor of {k:g} beyond Heywood (1988), section 2.2",
+                   STROKE_BORE_RANGE[1] * k, source=cited(note("source.factor_beyond", factor=k, work="Heywood (1988), section 2.2")),
                    severity="failure").named("engine"),
              check("engine.mean_piston_speed",
                    flow.mean_piston_speed(stroke * MM, speed), MEAN_PISTON_SPEED_RANGE[0] / k,
                    MEAN_PISTON_SPEED_RANGE[1] * k, unit="m/s",
-                   source=f"a factor of {k:g} beyond Heywood (1988), section 2.2", severity="failure").named("engine")]
+                   source=cited(note("source.factor_beyond", factor=k, work="Heywood (1988), section 2.2")),
+                   severity="failure").named("engine")]
     if rod is not None:
         found.append(check("engine.rod_ratio", stroke / 2.0 / rod, LAMBDA_RANGE[0] / k,
-                           min(LAMBDA_RANGE[1] * k, 1.0), source=f"a factor of {k:g} beyond Power units manual (n.d.), "
-                           "eq. (1.1)", severity="failure").named("engine"))
+                           min(LAMBDA_RANGE[1] * k, 1.0), source=cited(note("source.factor_beyond", factor=k, work="Power units manual (n.d.), eq. (1.1)")),
+                           severity="failure").named("engine"))
     return found
 
 

@@ -13,7 +13,7 @@ from ..breathing.cycle import CYCLE, MAX_WORK, BreathingRecord, BreathingResult,
 from ..breathing.valves import DEFAULT_CD, default_areas, effective_areas
 from ..springs import gas_opening_force
 from ..checks import Check, check
-from ..locale import NoteText, note
+from ..locale import NoteText, cited, note
 from ..units import MM, to_display
 from .dynamics import valve_motion
 from .hydraulic_actuation import CylinderPressure, cycle_angle
@@ -280,8 +280,7 @@ def cycle_check(figures, tolerance, code="breathing.cycle_change", **params) -> 
     :class:`~valvetrain.breathing.cycle.BreathingRecord`) within ``tolerance``, its speed and ``params`` (display
     texts) the check's parameters; the breathing chapter's, or another stage's ``code`` that breathes again."""
     return check(code, figures.cycle_change, high=tolerance,
-                 source="the cycles repeat (Heywood (1988), chapter 14: a cycle simulation runs until its state "
-                        "repeats)", params={"speed": f"{to_display(figures.speed, 'rpm'):.5g}", **params})
+                 source=cited(note("source.cycles_repeat", work="Heywood (1988), chapter 14")), params={"speed": f"{to_display(figures.speed, 'rpm'):.5g}", **params})
 
 
 def breathing_stage(b, engine, crank, valves, views) -> BreathingResults:
@@ -293,7 +292,7 @@ def breathing_stage(b, engine, crank, valves, views) -> BreathingResults:
     conditions, curve = breathe_conditions(engines, b, given, swept)
     found = [cycle_check(r.figures, b.cycle_tolerance) for r in conditions + curve if not r.converged]
     found += [check("breathing.air_flow", r.figures.air_mass_flow, low=0.0, unit="g/s",
-                    source="Heywood (1988), section 6.2 (the air delivered from the intake plenum)",
+                    source=cited(note("source.air_delivered", work="Heywood (1988), section 6.2")),
                     params={"speed": f"{to_display(r.figures.speed, 'rpm'):.5g}"})
               for r in conditions + curve if r.figures.air_mass_flow < 0.0]
     figures = BreathingSummary(b.mode, *words, tuple(r.figures for r in conditions), tuple(r.figures for r in curve))

@@ -19,7 +19,7 @@ from scipy.interpolate import interp1d
 from .. import camshaft as shaft
 from ..bibliography import cite
 from ..checks import Check, check
-from ..locale import note
+from ..locale import cited, note
 from ..numerics import first_largest
 from ..units import to_display
 from ..layouts import finger_mass_change
@@ -51,9 +51,12 @@ deg, more than twice :data:`ORDERS`)."""
 LISTED_RESONANCES = 4
 """Resonances of the running range a check's note names (the largest timing fluctuations first)."""
 
-WORKS = (f"{cite('shigley2011', 'chapter 3 (torsion), table A-9')}; {cite('denhartog1956')}; "
-         f"{cite('vt_works', 'eq. (7.3)')}; {cite('chrysler2002')}")
+WORKS = cited(note("source.torsion_table", work=cite("shigley2011", "chapter 3"), table="A-9"), cite("denhartog1956"),
+              cite("vt_works", "eq. (7.3)"), cite("chrysler2002"))
 """The works of the chapter, for the report."""
+
+DRIVE_ALLOWABLES = {"chain": "source.chain_allowable", "belt": "source.belt_allowable", "gears": "source.gears_allowable"}
+"""The source of a timing drive's allowable force by the drive's kind (``camshaft.drive``): the maker's."""
 
 
 @dataclass(frozen=True)
@@ -384,34 +387,32 @@ def camshaft_checks(r, c, engine) -> list[Check]:
     over = to_display(engine.over_speed_ratio * engine.rated_speed, "rpm")
     held = "camshaft.twist_held" if c.drive_stiffness is None else "camshaft.twist_through_drive"
     t = r.response
-    chain_source = f"; {cite('diamondchain')}" if c.drive == "chain" else ""
+    allowable = note(DRIVE_ALLOWABLES[c.drive], more=f"; {cite('diamondchain')}" if c.drive == "chain" else "")
     return [
         check("camshaft.twist_timing_error", r.twist_max, high=c.max_twist, unit="cam deg",
               severity="failure" if r.twist_max > TWIST_FAILURE else "warning",
-              source=f"{cite('shigley2011', 'chapter 3 (torsion)')}; camshaft.max_twist_cam_deg (an engineering "
-                     f"assumption; beyond {np.degrees(TWIST_FAILURE):g} cam deg a failure)",
+              source=cited(note("source.torsion", work=cite("shigley2011", "chapter 3")),
+                           note("source.twist_assumption", limit_cam_deg=np.degrees(TWIST_FAILURE))),
               note=note(held, twist_crank_deg=to_display(r.twist_crank, 'crank deg'))),
         check("camshaft.torsional_resonance", r.frequency_ratio, low=c.min_frequency_ratio, severity="info",
-              source=f"{cite('denhartog1956')}; camshaft.min_frequency_ratio (an engineering assumption)",
+              source=cited(cite("denhartog1956"), note("source.assumption", key="camshaft.min_frequency_ratio")),
               note=note("camshaft.first_resonance", frequency_Hz=r.natural_frequencies[0],
                         order=max(r.significant_orders), speed_rpm=over)),
         check("camshaft.bending_deflection", r.deflection_max, high=c.max_deflection, unit="mm", severity="failure",
-              source=f"{cite('vt_works', 'eq. (7.3)')}: 0.02-0.05 mm; {cite('shigley2011', 'table A-9')}",
+              source=cited(note("source.usual_deflection", work=cite("vt_works", "eq. (7.3)")),
+                           cite("shigley2011", "table A-9")),
               note=note("camshaft.lobe_span")),
         check("camshaft.timing_drive_force", r.drive_force, high=c.drive_allowable_force_N, unit="N",
-              severity="failure", source="camshaft.drive_allowable_force_N (the maker's allowable of the "
-                                         f"{c.drive}{chain_source})",
+              severity="failure", source=cited(allowable),
               note=note("camshaft.peak_torque", torque_Nm=r.peak, radius_mm=to_display(c.drive_pitch_radius, 'mm'))),
         check("camshaft.dynamic_timing_error", t.fluctuation, high=t.allowable, unit="cam deg", severity="failure",
-              source=f"{cite('chrysler2002')}: the cam sprocket's movement against the crankshaft accepted in service, "
-                     f"camshaft.max_timing_play_mm = {to_display(c.max_timing_play, 'mm'):g} mm along the pitch "
-                     f"circle of radius {to_display(c.drive_pitch_radius, 'mm'):g} mm; {cite('denhartog1956')}",
+              source=cited(note("source.timing_play", work=cite("chrysler2002"), play_mm=to_display(c.max_timing_play, "mm"),
+                                radius_mm=to_display(c.drive_pitch_radius, "mm")), cite("denhartog1956")),
               note=note("camshaft.lag", cylinder=t.fluctuation_cylinder,
                         speed_rpm=to_display(t.fluctuation_speed, "rpm"), low_rpm=to_display(t.speed_range[0], "rpm"), high_rpm=to_display(t.speed_range[1], "rpm"),
                         damping=t.damping_ratio) + resonance_note(t)),
         check("camshaft.dynamic_drive_force", t.drive_force, high=c.drive_allowable_force_N, unit="N",
-              severity="failure", source="camshaft.drive_allowable_force_N (the maker's allowable of the "
-                                         f"{c.drive}{chain_source}); {cite('denhartog1956')}",
+              severity="failure", source=cited(allowable, cite("denhartog1956")),
               note=note("camshaft.steady_drive_force", speed_rpm=to_display(t.drive_force_speed, 'rpm'),
                         damping=t.damping_ratio)),
     ]

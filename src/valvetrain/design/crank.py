@@ -9,7 +9,7 @@ import numpy as np
 
 from ..checks import Check, check, tally
 from ..crank import dynamics, kinematics, pressure, torque
-from ..locale import NoteText, note
+from ..locale import NoteText, cited, note
 from ..specification import SpecError
 from ..specification.messages import Problem
 from ..units import MPA
@@ -318,7 +318,8 @@ def crank_stage(c, eng, timing=None, cylinder=None) -> CrankResults:
         bore, stroke, rod, c.offset, omega, lam, c.kinematics, ext["v_max"], ext["v_max_angle"], ext["j_max"],
         ext["j_max_angle"], ext["j_min"], ext["j_min_angle"],
         TextbookExtremes(book["v_max"], book["j_max"], book["j_min"], book["j_min_angle"],
-                         "Power units manual (n.d.), eqs. (1.7), (1.10), (1.11) (central mechanism)"),
+                         cited(note("source.central_mechanism",
+                                    work="Power units manual (n.d.), eqs. (1.7), (1.10), (1.11)"))),
         float(np.max(np.abs(beta))), tdc, bdc,
         MassRecord(masses.piston, masses.rod, masses.crank, masses.rod_pin, masses.rod_crank, masses.reciprocating,
                    masses.rotating),
@@ -330,6 +331,5 @@ def crank_stage(c, eng, timing=None, cylinder=None) -> CrankResults:
              check("crank.rod_pin_share", c.rod_pin_fraction, *ROD_PIN_FRACTION_RANGE,
                    source="Power units manual (n.d.), eq. (2.7)"),
              check("crank.mean_torque", stats["mean_share"], low=0.0, strict_low=True,
-                   source="Kolchin and Demidov (1980): an engine delivers work; a cycle whose pressures give a "
-                   "negative mean torque absorbs it (a motored engine), and its non-uniformity is undefined")]
+                   source=cited(note("source.motored", work="Kolchin and Demidov (1980)")))]
     return CrankResults(phi, columns, phi, each, total, firing, figures, tuple(found), source)

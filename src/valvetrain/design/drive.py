@@ -17,7 +17,7 @@ import numpy as np
 from .. import masses, springs
 from ..checks import Check, check
 from ..layouts import finger_inertia, layout, train_mass
-from ..locale import NoteText, note, note_text, record_text
+from ..locale import NoteText, cited, note, note_text, record_text
 from ..locale.wording import diagnosis_note, diagnosis_text
 from ..spring_materials import grade
 from ..units import to_display
@@ -361,15 +361,13 @@ def drive_stage(valve, gas, cam, diagnose=True, gas_load=None) -> DriveResult:
     ratio = chosen_line.max_deflection / chosen_line.preload_deflection
     found.append(check("spring.reserve", drive.spring_reserve, *springs.SPRING_RESERVE_RANGE,
                        source="Valve-train practical works (n.d.), eq. (5.3)"))
-    found.append(check("spring.chosen_deflection_ratio", ratio, *springs.DEFLECTION_RATIO_RANGE, source="Valve-train practical works (n.d.), work 5 "
-                       "(the chosen springs' rounded coils can move it off the required line's ratio)"))
+    found.append(check("spring.chosen_deflection_ratio", ratio, *springs.DEFLECTION_RATIO_RANGE, source=cited(note("source.chosen_ratio", work="Valve-train practical works (n.d.), work 5"))))
     if sp.count == 2:
         found.append(check("spring.inner_share", sp.inner_share, *springs.INNER_SHARE_RANGE, source="Valve-train practical works (n.d.), work 5"))
     for tag, d in designs.items():
         found += _spring_checks(tag, d, diagnosis_note(diagnosis) if diagnosis else ())
         found.append(check("spring.design_margin", d.design_margin, low=sp.min_margin, unit="%",
-                           source="min_margin_percent of the specification: the smaller margin of the fatigue safety "
-                                  "and the resonance ratio above their minima (eqs. 6.12, 6.14)").of_spring(tag))
+                           source=cited(note("source.design_margin"))).of_spring(tag))
     if sp.count == 2:
         difference = designs["inner"].checks["frequency_difference"]
         found.append(replace(difference, quantity=record_text("spring.pair_frequency_difference"),

@@ -16,7 +16,7 @@ import numpy as np
 
 from .. import flow, strength
 from ..checks import Check, check
-from ..locale import NoteText, note
+from ..locale import NoteText, cited, note
 from ..layouts import chain, finger_inertia, unused_part_checks
 from ..links import Loads
 from ..numerics import TIE_RTOL, first_largest
@@ -482,7 +482,7 @@ def _edge_loading(parts, drive, cam, follower, maps, width, notes):
     band = (_where(w, 2, offset_mm=to_display(offset, "mm"), half_width_mm=to_display(w.value - offset, "mm"))
             if width is not None else _where(w, 3, offset_mm=to_display(offset, "mm")))
     return [check("follower.edge_loading", w.value, high=face / 2.0, unit="mm",
-                  severity="failure", source=f"{SHANG_2_1}, eq. (2.15); {NORTON} (flat-faced follower face width)",
+                  severity="failure", source=cited(f"{SHANG_2_1}, eq. (2.15)", note("source.face_width", work=NORTON)),
                   note=band + note(key))]
 
 
@@ -498,7 +498,7 @@ def _roller_side_force(cam, follower, maps, drive):
     beta = abs(float(follower.pressure_angle(cam.heel_radius, h, dh)[0]))
     return w, [check(
         "follower.roller_side_force", w.value, unit="N", severity="info",
-        source=f"{NORTON} (pressure angle: side load F_n sin(alpha)); no source gives an allowable",
+        source=cited(note("source.side_load", work=NORTON)),
         note=_where(w, 1, pressure_deg=to_display(beta, "deg")) + note(drive.links[0].carrier))]
 
 

@@ -28,7 +28,7 @@ from ..dynamics.resonance import resonance
 from ..dynamics.sweep import SweepResult, headline_sweep, sweep, sweep_size
 from ..followers import follower_of
 from ..layouts import chain, finger_inertia, layout, valve_arm
-from ..locale import NoteText, note
+from ..locale import NoteText, cited, note
 from ..specification import SpecError
 from ..specification.messages import Problem
 from ..strength import cam_force
@@ -37,8 +37,8 @@ from .dynamics_checks import dynamics_checks, unsettled_note
 from .dynamics_records import (AccuracyRecord, DynamicsParameters, DynamicsResult, Mode, PerSpeed, ResonanceRecord,
                                finite_or_none, speed_record, speed_records)
 
-SOURCES = ("Shang Hanji (1988), ch. 3 (one-mass and multi-mass trains, jump, seating, bounce); Valve-train dynamics "
-           "article (n.d.) (resonant harmonic and distortion)")
+SOURCES = cited(note("source.train_models", work="Shang Hanji (1988), ch. 3"),
+                note("source.resonant_harmonic", work="Valve-train dynamics article (n.d.)"))
 """The works the dynamics stage follows, as the report cites them."""
 
 LINK_STIFFNESS = 45e6

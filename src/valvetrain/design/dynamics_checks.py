@@ -11,7 +11,7 @@ from ..checks import Check, check
 from ..dynamics.events import BOUNCE_TOLERANCE
 from ..dynamics.models import slowest_decay
 from ..dynamics.sweep import STATE_TOLERANCE
-from ..locale import NoteText, note
+from ..locale import NoteText, cited, note
 from ..units import MM, rpm_to_rad_s, to_display
 
 CHECK_SOURCE = "Shang Hanji (1988), ch. 3"
@@ -130,11 +130,10 @@ def dynamics_checks(d, engine, adjuster_ratio=0.0) -> list[Check]:
     else:
         at = note("dynamics.seating_largest_at_rated")
     return [check(CHECK_CODES[0], seating, high=SEATING_VELOCITY_MAX, unit="m/s", note=at,
-                  source=CHECK_SOURCE + "; 0.3-0.5 m/s usual, graded at every speed swept up to the rated one",
+                  source=cited(CHECK_SOURCE, note("source.usual_seating_graded")),
                   unevaluated="" if opened else CLOSED),
             check(CHECK_CODES[1], jump / engine.rated_speed, low=engine.over_speed_ratio, severity="failure",
-                  note=no_jump, source=CHECK_SOURCE + ": no separation below [engine] over_speed_ratio x the rated "
-                  "speed")] + opening_check(d, adjuster_ratio)
+                  note=no_jump, source=cited(note("source.no_separation", work=CHECK_SOURCE)))] + opening_check(d, adjuster_ratio)
 
 
 def opening_check(d, adjuster_ratio=0.0) -> list[Check]:
@@ -172,8 +171,8 @@ def opening_check(d, adjuster_ratio=0.0) -> list[Check]:
         travel = adjuster_ratio * float(np.ptp(d.sweep.adjuster_extension[worst]))
         reasons += note("dynamics.adjuster_gives_way", deflection_mm=deflection_mm, travel_mm=travel / MM)
     return [check(CHECK_CODES[2], float(lifts[worst]), low=BOUNCE_TOLERANCE, unit="mm", severity="failure",
-                  note=reasons, source=CHECK_SOURCE + ": a valve that leaves its seat by less than 0.001 mm "
-                  "rocks on the seat's elasticity")]
+                  note=reasons, source=cited(note("source.seat_rocking", work=CHECK_SOURCE,
+                                                       tolerance_mm=BOUNCE_TOLERANCE / MM)))]
 
 
 __all__ = ["CHECK_CODES", "dynamics_checks", "opening_check", "unsettled_note", "worst_seating"]

@@ -16,19 +16,17 @@ import numpy as np
 
 from .. import cam_grinding
 from ..checks import Check, check
-from ..locale import note
+from ..locale import cited, note
 from ..errors import InputError
 from ..specification.messages import Problem
 from ..units import MM
 from .results import quantity
 
-SOURCES = ("Shang Hanji (1988), ch. 6 (the master cam of a cam grinder and the effect of the wheel radius on the "
-           "cam profile; the formulas are derived in this package from the contour geometry of section 2.1)")
+SOURCES = cited(note("source.master_cam", work="Shang Hanji (1988), ch. 6"))
 """The works the grinding stage follows, as the report cites them."""
 
-CONCAVE_SOURCE = ("UkrSURT Proceedings (2019) (the wheel radius must not exceed the concave radius of the cam); "
-                  "Shang Hanji (1988), ch. 6")
-MASTER_SOURCE = "Shang Hanji (1988), eq. (2.7) applied to the master and its roller"
+CONCAVE_SOURCE = cited(note("source.wheel_radius", work="UkrSURT Proceedings (2019)"), "Shang Hanji (1988), ch. 6")
+MASTER_SOURCE = cited(note("source.master_roller", work="Shang Hanji (1988), eq. (2.7)"))
 
 DENSE = 8192
 """Cam angles over a revolution on which the master contour, its curvature and its flat-follower lift are

@@ -24,7 +24,7 @@ from typing import Any, Callable, Optional
 import numpy as np
 
 from ..checks import Check, check
-from ..locale import NoteText, note
+from ..locale import NoteText, cited, note
 from ..crank.pressure import on_grid
 from ..dynamics.events import BOUNCE_TOLERANCE
 from ..errors import InputError
@@ -37,8 +37,8 @@ from .dynamics_checks import SEATING_VELOCITY_MAX
 from .dynamics_records import finite_or_none
 from .results import quantity, shown, shown_value
 
-SOURCES = ("Shang Hanji (1988), ch. 7 (hydraulic valve actuation); Wylie and Streeter (1978) (wave speed, "
-           "method of characteristics)")
+SOURCES = cited(note("source.hydraulic_actuation", work="Shang Hanji (1988), ch. 7"),
+                note("source.wave_speed", work="Wylie and Streeter (1978)"))
 """The works the hydraulic stage follows, as the report cites them."""
 
 MAX_NODE_STEPS = 2e8
@@ -62,7 +62,7 @@ STOP_MARGIN = 0.1
 FAILURE_SOURCE = "Shang Hanji (1988), ch. 7"
 """Source of the failure checks of the drive (the valve's stroke, its closing and its rest)."""
 
-SEATING_SOURCE = "Shang Hanji (1988), ch. 3 and ch. 7; 0.3-0.5 m/s usual"
+SEATING_SOURCE = cited("Shang Hanji (1988), ch. 3 and ch. 7", note("source.usual_seating"))
 """Source of the seating-velocity check (the dynamics stage's limit)."""
 
 
@@ -422,8 +422,7 @@ def _failure_checks(r, sw, speed, speeds, engine, drive, hydraulic):
     opening = DELAY_LEVEL * float(r.rigid_lift.max())
     found = [
         check("hydraulic.opening", lift[n], low=opening, unit="mm", severity="failure",
-              source=f"{FAILURE_SOURCE}; {DELAY_LEVEL * 100:g} % of the rigid lift, the level of the delays "
-                     "(this package's)",
+              source=cited(FAILURE_SOURCE, note("source.delay_level", percent=DELAY_LEVEL * 100)),
               note=(note("hydraulic.not_opened", speed_rpm=at[n] / rpm, lift_mm=lift[n] / MM,
                          rigid_mm=opening / DELAY_LEVEL / MM)
                     if lift[n] < opening else note("hydraulic.least_at", speed_rpm=at[n] / rpm))),

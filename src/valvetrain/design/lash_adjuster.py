@@ -11,7 +11,7 @@ import numpy as np
 from .. import lash_adjuster as hla
 from ..bibliography import cite
 from ..checks import Check, check
-from ..locale import note
+from ..locale import cited, note
 from ..dynamics.events import lift_event, zero_crossing
 from ..dynamics.sweep import sweep, sweep_size
 from ..units import DEG, to_display
@@ -283,26 +283,20 @@ def lash_adjuster_stage(la, valve, engine, cam, drive, dynamics=None,
         None if worst is None else per.speed[worst], push, floats if np.isfinite(floats) else None, per)
     where = f"{at}.lash_adjuster"
     found = [check("lash_adjuster.refill", result.max_refill_share,
-                   high=1.0, source=f"{cite('merritt1967')}: annular leakage and the check valve's orifice flow; "
-                   f"{where}", note=note("lash_adjuster.largest_over_speeds"))]
+                   high=1.0, source=cited(note("source.refill", work=cite("merritt1967")), where), note=note("lash_adjuster.largest_over_speeds"))]
     if pumps:
         found.append(check("lash_adjuster.pump_up", result.max_pump_up, high=PUMP_UP_TOLERANCE, unit="um",
-                           severity="failure", source=f"{cite('merritt1967')}: the plunger's extension simulated with "
-                           f"the train up to [engine] over_speed_ratio x the rated speed; {where}"))
+                           severity="failure", source=cited(note("source.pump_up", work=cite("merritt1967")), where)))
         top = dynamics.speed_range[1]
         said = "" if np.isfinite(floats) else note("lash_adjuster.no_float", speed_rpm=to_display(top, "rpm"))
         found.append(check("lash_adjuster.float", (floats if np.isfinite(floats) else top) / engine.rated_speed,
                            low=engine.over_speed_ratio, severity="failure", note=said,
-                           source=f"the follower's force at the adjuster's push {push:.4g} N at the valve, where its "
-                           f"check valve opens ({cite('merritt1967')}), while the cam lifts the open valve: no float "
-                           f"below [engine] over_speed_ratio x the rated speed; {where}"))
+                           source=cited(note("source.adjuster_float", push_N=push, work=cite("merritt1967")), where)))
         found.append(check("lash_adjuster.held_open",
                            result.max_held_open, high=0.0, unit="um", severity="failure",
                            note=held_note(per, worst, la.plunger_travel),
-                           source=f"{cite('merritt1967')}: the valve's lift on the base circle simulated with the "
-                                  f"plunger's extension, revolution by revolution to where it settles, its travel "
-                                  f"to the stop [lash_adjuster] plunger_travel_mm ({cite('enginebuilder2011')}); "
-                                  f"{where}"))
+                           source=cited(note("source.held_open", work=cite("merritt1967"),
+                                             stop=cite("enginebuilder2011")), where)))
     return result, found
 
 

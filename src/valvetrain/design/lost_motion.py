@@ -20,7 +20,7 @@ from ..checks import Check, check
 from ..dynamics.events import BOUNCE_TOLERANCE
 from ..errors import InputError
 from ..hydraulic_actuation import DriveResult, simulate
-from ..locale import note
+from ..locale import cited, note
 from ..specification.messages import Problem
 from ..units import DEG, MM, cam_per_crank, to_display
 from .dynamics_checks import SEATING_VELOCITY_MAX
@@ -28,8 +28,9 @@ from .dynamics_records import finite_or_none
 from .hydraulic_actuation import MAX_NODE_STEPS, SEATING_SOURCE, cycle_angle, gas_force, hydraulic_drive, speed_plan
 from .results import quantity
 
-SOURCES = (f"{cite('bernard2009')} (the lost-motion drive); {cite('merritt1967')} (the orifice equation); "
-           f"{cite('wylie1978')} (wave speed, method of characteristics)")
+SOURCES = cited(note("source.lost_motion_drive", work=cite("bernard2009")),
+                note("source.orifice_equation", work=cite("merritt1967")),
+                note("source.wave_speed", work=cite("wylie1978")))
 """The works the lost-motion stage follows, as the report cites them."""
 
 KEY = "solenoid_opens_crank_deg"
@@ -243,7 +244,7 @@ def _checks(closings, vapour) -> list[Check]:
         params = {"opens": f"{to_display(c.solenoid_opens, 'crank deg'):g}"}
         if c.seating_velocity is not None:
             found.append(check("lost_motion.seating_velocity", abs(c.seating_velocity), high=SEATING_VELOCITY_MAX,
-                               unit="m/s", source=f"{SEATING_SOURCE}; {cite('bernard2009')}",
+                               unit="m/s", source=cited(SEATING_SOURCE, cite("bernard2009")),
                                params=params))
         found.append(check("lost_motion.residual_lift", c.residual_lift, high=BOUNCE_TOLERANCE, unit="mm",
                            severity="failure", source=cite("bernard2009"), params=params,
@@ -260,7 +261,7 @@ def _sweep_checks(sweep, top) -> list[Check]:
     speed where it is; and, once for the sweep, its lowest speed over ``top`` (a warning above 1: a sweep wholly above
     the over-speed grades no timing)."""
     found = [check("lost_motion.sweep_range", min(s.speed for s in sweep) / top, high=1.0,
-                   source=cite("norton2009", "the chapter on the dynamics of follower trains"))] if sweep else []
+                   source=cited(note("source.follower_dynamics", work=cite("norton2009"))))] if sweep else []
     for opens in dict.fromkeys(s.closing.solenoid_opens for s in sweep):
         rows = [s for s in sweep if s.closing.solenoid_opens == opens and s.speed <= top * (1.0 + 1e-9)]
         params = {"opens": f"{to_display(opens, 'crank deg'):g}"}
@@ -268,7 +269,7 @@ def _sweep_checks(sweep, top) -> list[Check]:
         if landed:
             w = max(landed, key=lambda s: abs(s.closing.seating_velocity))
             found.append(check("lost_motion.sweep_seating_velocity", abs(w.closing.seating_velocity),
-                               high=SEATING_VELOCITY_MAX, unit="m/s", source=f"{SEATING_SOURCE}; {cite('bernard2009')}",
+                               high=SEATING_VELOCITY_MAX, unit="m/s", source=cited(SEATING_SOURCE, cite("bernard2009")),
                                params=params, note=note("hydraulic.largest_at", speed_rpm=to_display(w.speed, "rpm"))))
         if rows:
             w = max(rows, key=lambda s: s.closing.residual_lift)

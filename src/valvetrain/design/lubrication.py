@@ -9,7 +9,7 @@ import numpy as np
 from .. import tribology
 from ..bibliography import cite
 from ..checks import Check, check
-from ..locale import note
+from ..locale import cited, note
 from ..errors import InputError
 from ..numerics import first_largest
 from ..specification.messages import Problem, SpecError
@@ -229,11 +229,11 @@ def lubrication_stage(lub, valve, engine, cam, drive, dynamics=None,
              + (note("lubrication.zero_entrainment") if result.zero_entrainment else ()))
     found = [check("lubrication.film_parameter", worst[0],
                    low=lub.min_film_parameter,
-                   source=f"{cite('hamrock2004', 'ch. 1')}: boundary lubrication below lambda = 1; "
-                          f"{at}.lubrication.min_film_parameter", severity="warning", note=where),
+                   source=cited(note("source.boundary_lubrication", work=cite("hamrock2004", "ch. 1")),
+                                f"{at}.lubrication.min_film_parameter"), severity="warning", note=where),
                check("lubrication.contact_temperature",
                      result.max_contact_temperature, high=lub.max_contact_temperature_C, unit="degC",
-                     source=f"{cite('blok1937')}: scuffing at a critical temperature of the oil; "
-                            f"{at}.lubrication.max_contact_temperature_C", severity="failure",
+                     source=cited(note("source.scuffing", work=cite("blok1937")),
+                                  f"{at}.lubrication.max_contact_temperature_C"), severity="failure",
                      note=note("lubrication.hottest_at", speed_rpm=to_display(per.speed[hot], 'rpm')))]
     return result, found

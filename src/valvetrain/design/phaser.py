@@ -21,7 +21,7 @@ from .. import camshaft as shaft
 from ..breathing import BreathingError, ValveFlow
 from ..breathing.cycle import MAX_WORK, work
 from ..checks import Check, check
-from ..locale import note
+from ..locale import cited, note
 from ..specification.messages import Problem, SpecError
 from ..units import to_display
 from .breathing import (BreathingResults, breathe_conditions, breathing_conditions, breathing_records, cycle_check,
@@ -383,8 +383,7 @@ def phaser_stage(name, phaser, valve, engine, design, breathing=None, b=None, ca
     closed = (float(loads[k][0]), float(phases[k]))
     spring = design.drive.spring
     checks.append(check("phaser.gas_load", closed[0], high=spring.preload, unit="N", severity="failure",
-                        source="the spring's preload holds the shut valve against the gas force (Valve-train "
-                               "practical works (n.d.), eqs. (5.4), (5.5))",
+                        source=cited(note("source.preload_holds", work="Valve-train practical works (n.d.), eqs. (5.4), (5.5)")),
                         note=note(GAS_LOAD_OVER_MAP[breathing.figures.mode],
                                   advance_crank_deg=float(to_display(closed[1], "crank deg")),
                                   **dict(loads[k][1][0][1]))).of_valve(name))

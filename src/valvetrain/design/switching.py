@@ -18,7 +18,7 @@ from . import two_step as ts
 from ..bibliography import cite
 from ..checks import Check, check
 from ..dynamics.sweep import sweep
-from ..locale import note
+from ..locale import cited, note
 from ..spring_materials import grade
 from ..specification.messages import Problem, SpecError
 from ..springs import DEFLECTION_RATIO_RANGE, enveloping_line
@@ -39,13 +39,11 @@ over the cycle (an exhaust charge's gamma is lower: this package's choice, one g
 LATCH_LIMIT = LIMITS["rocker_pad_stress"][0]
 """The latch pin's allowable Hertz stress [Pa]: the rocker's hardened pad on the valve tip's, taken for the latch."""
 
-LATCH_SOURCE = (cite("vt_works", "eq. (7.13): <= 2000 MPa, the hardened rocker pad's, taken for the latch pin "
-                     "on its seat (no published allowable of the latch was found)"))
+LATCH_SOURCE = cited(note("source.latch_allowable", work=cite("vt_works", "eq. (7.13)")))
 
-SPRING_SOURCE = (f"{cite('norton2009', 'the chapter on the dynamics of follower trains')}; "
-                 f"{cite('hendriksma2007')}; the force ratio's range {DEFLECTION_RATIO_RANGE[0]:g}..."
-                 f"{DEFLECTION_RATIO_RANGE[1]:g} the valve spring's ({cite('vt_works', 'work 5')}), taken for "
-                 "the lost-motion spring (none published for it)")
+SPRING_SOURCE = cited(note("source.follower_dynamics", work=cite("norton2009")), cite("hendriksma2007"),
+                      note("source.lost_motion_spring", low=DEFLECTION_RATIO_RANGE[0], high=DEFLECTION_RATIO_RANGE[1],
+                           work=cite("vt_works", "work 5")))
 
 
 @dataclass(frozen=True)
@@ -259,21 +257,21 @@ def switching_stage(name, switching, valve, engine, design, output=None, breathi
         two_step=modes.record, latch=latching)
     checks = (
         check("switching.jump_speed", (jump if np.isfinite(jump) else speeds[-1]) / omega, low=1.0,
-              source=cite("norton2009", "the chapter on the dynamics of follower trains"), severity="failure",
+              source=cited(note("source.follower_dynamics", work=cite("norton2009"))), severity="failure",
               note="" if np.isfinite(jump) else note("switching.no_jump", factor=SPEEDS_OVER)),
         *((check("switching.low_lift_jump", valve_jump / omega, low=1.0, severity="failure",
-                 source=cite("norton2009", "the chapter on the dynamics of follower trains")),) if two_step else
+                 source=cited(note("source.follower_dynamics", work=cite("norton2009")))),) if two_step else
           (check("switching.valve_held", valve_force / valve_preload, high=1.0, source=cite("hendriksma2007"),
                  severity="failure"),)),
         check("switching.spring_stress", stress, high=strength, unit="MPa", severity="failure",
-              source=f"{cite('shigley2011', 'Table 10-4')}: the wire's tensile strength R_m, the most it can carry"),
+              source=cited(note("source.wire_strength", work=cite("shigley2011", "Table 10-4")))),
         check("switching.latch_stress", latch_stress, high=LATCH_LIMIT, unit="MPa", source=LATCH_SOURCE,
               severity="failure"),
         *modes.checks,
         *(() if latching is None else (
             check("switching.latch_time", latching.share, high=1.0, severity="failure",
-                  source=f"{cite('merritt1967')}: the orifice equation of the pin's passage; "
-                         f"{cite('hendriksma2007')}: the latch moves only on the base circle"),)),
+                  source=cited(note("source.pin_orifice", work=cite("merritt1967")),
+                               note("source.latch_on_base_circle", work=cite("hendriksma2007")))),)),
     )
     return SwitchingResult(figures, tuple(c.of_valve(name) for c in checks))
 

@@ -13,7 +13,7 @@ from typing import Optional
 from .. import flow
 from ..checks import Check, check
 from ..layouts import LAYOUTS, layout
-from ..locale import Note, note, note_text
+from ..locale import Note, cited, note, note_text
 from ..units import DEG, MM
 
 
@@ -35,26 +35,26 @@ class Band:
 
 _FOR_DIRECT = {"rocker": "band.acceleration_for_direct_rocker", "pushrod": "band.acceleration_for_direct_pushrod"}
 """The note of the acceleration band of each layout but direct drive, for which the source states it."""
-_ACCELERATION_SOURCE = "Valve-train practical works (n.d.), work 2 ({sign} {band} m/s2)"
+_WORK_2 = "Valve-train practical works (n.d.), work 2"
+_WORK_5 = "Valve-train practical works (n.d.), work 5"
 
 LAYOUT_BANDS = {
     "tappet_acceleration.max": {
-        layout: Band(high=ACCELERATION_LIMITS[0], source=_ACCELERATION_SOURCE.format(sign="positive", band="1500...3500"),
+        layout: Band(high=ACCELERATION_LIMITS[0], source=cited(note("source.positive_acceleration", work=_WORK_2)),
                      note=() if layout == "direct" else note(_FOR_DIRECT[layout]))
         for layout in LAYOUTS},
     "tappet_acceleration.min": {
-        layout: Band(low=ACCELERATION_LIMITS[1], source=_ACCELERATION_SOURCE.format(sign="negative", band="500...1500"),
+        layout: Band(low=ACCELERATION_LIMITS[1], source=cited(note("source.negative_acceleration", work=_WORK_2)),
                      note=() if layout == "direct" else note(_FOR_DIRECT[layout]))
         for layout in LAYOUTS},
     "drive.rocker_ratio": {
-        "rocker": Band(1.4, 1.75, "Valve-train practical works (n.d.), work 2 (i_k = 1 for direct drive, 1.4-1.75 with a rocker or lever)"),
-        "pushrod": Band(1.4, 1.75, "Valve-train practical works (n.d.), work 2 (i_k = 1 for direct drive, 1.4-1.75 with a rocker or lever)"),
+        layout: Band(1.4, 1.75, cited(note("source.rocker_ratio", work=_WORK_2))) for layout in ("rocker", "pushrod")
     },
     "drive.specific_mass": {
-        "direct": Band(200.0, 300.0, "Valve-train practical works (n.d.), work 5 (direct drive 200-300 kg/m2)"),
-        "rocker": Band(200.0, 300.0, "Valve-train practical works (n.d.), work 5 (direct drive 200-300 kg/m2)",
+        "direct": Band(200.0, 300.0, cited(note("source.direct_specific_mass", work=_WORK_5))),
+        "rocker": Band(200.0, 300.0, cited(note("source.direct_specific_mass", work=_WORK_5)),
                        note("band.specific_mass_rocker")),
-        "pushrod": Band(400.0, 500.0, "Valve-train practical works (n.d.), work 5 (tappet, pushrod and rocker 400-500 kg/m2)"),
+        "pushrod": Band(400.0, 500.0, cited(note("source.pushrod_specific_mass", work=_WORK_5))),
     },
 }
 """The recommended ranges that depend on the drive layout, ``check code -> {layout: Band}``; a layout missing from a
@@ -121,7 +121,7 @@ SEATING_VELOCITY_MAX = 0.5
 """Working limit of the valve's seating velocity at rated speed [m/s] (no primary source;
 0.3-0.5 m/s is working guidance)."""
 
-SEATING_VELOCITY_SOURCE = "working guidance 0.3-0.5 m/s (Valve-train practical works (n.d.), work 2: the ramp limits it)"
+SEATING_VELOCITY_SOURCE = cited(note("source.seating_guidance", work=_WORK_2))
 
 THROAT_AREA_SHARE_RANGE = (0.25, 0.40)
 """Inlet plus exhaust throat areas as a share of the piston area (Valve-train practical works (n.d.), work 1)."""
@@ -130,9 +130,8 @@ PISTON_CLEARANCE_MIN = {"intake": 0.080 * 25.4 * MM, "exhaust": 0.100 * 25.4 * M
 """Smallest recommended valve-to-piston gap [m]: 0.080 in intake, 0.100 in exhaust (the exhaust valve is hotter and
 chased by the rising piston); Shang's (2.13) only demands a gap > 0."""
 
-PISTON_CLEARANCE_SOURCE = ("engine builders' rule of at least 0.080 in intake, 0.100 in exhaust (HP Academy, "
-                           "'Measuring piston to valve clearance'); gap D_s = s + y0 - y: Shang Hanji (1988), "
-                           "section 2.1, eqs. (2.13)-(2.14)")
+PISTON_CLEARANCE_SOURCE = cited(note("source.piston_clearance_rule"),
+                                note("source.piston_gap", work="Shang Hanji (1988), section 2.1, eqs. (2.13)-(2.14)"))
 
 MAX_LIFT_TO_THROAT = 0.5
 """Largest valve lift / throat diameter a design may have.  The curtain area pi d y equals the throat area at
@@ -172,8 +171,8 @@ def tip_contact_check(finger, valve) -> Check:
     where = (note("finger.stem_given", stem_mm=stem / MM) if given is not None else
              note("finger.stem_default", stem_mm=stem / MM, share=STEM_TO_THROAT))
     return check("finger.tip_contact", finger.tip_reach, high=max(stem / 2.0 - TIP_EDGE_MARGIN, 0.0), unit="mm",
-                 severity="failure", source="the valve tip's radius (half the stem) less 0.5 mm: an engineering limit; "
-                 "the contact's travel: Wang (2007)",
+                 severity="failure", source=cited(note("source.tip_edge", margin_mm=TIP_EDGE_MARGIN / MM),
+                              note("source.contact_travel", work="Wang (2007)")),
                  note=where + note("finger.tip_travel", scrub_mm=finger.scrub / MM, shut_mm=finger.tip_contact[0] / MM,
                                    open_mm=finger.tip_contact[1] / MM))
 
@@ -236,7 +235,7 @@ def valve_checks(cam, flow_result, profile, valve, engine, timing) -> list[Check
                          high=SEATING_VELOCITY_MAX, source=SEATING_VELOCITY_SOURCE, unit="m/s",
                          note=note("valve.ramp_not_clearance", clearance_mm=valve.clearance / MM)))
     out.append(check("valve.seat_angle", valve.seat_angle, *SEAT_ANGLE_USUAL[valve.kind],
-                     source="Valve-train practical works (n.d.), work 1 (usually 30 deg inlet, 45 deg exhaust)", unit="deg", severity="info"))
+                     source=cited(note("source.usual_seat_angles", work="Valve-train practical works (n.d.), work 1")), unit="deg", severity="info"))
     if valve.lash_adjuster is None:  # a hydraulic lash adjuster leaves no clearance (validated: clearance_mm = 0)
         out.append(check("valve.clearance", valve.clearance, *CLEARANCE_RANGES[valve.kind],
                          source="Valve-train practical works (n.d.), work 2", unit="mm"))
@@ -244,7 +243,7 @@ def valve_checks(cam, flow_result, profile, valve, engine, timing) -> list[Check
     if ratio is not None:
         out.append(ratio)
     out.append(check("cam.base_radius_to_lift", cam.base_radius / flow_result.valve_lift, *BASE_RADIUS_TO_LIFT_RANGE,
-                     source="Valve-train practical works (n.d.), work 2 (1.5-2.0; supercharged 3.0-4.0)"))
+                     source=cited(note("source.base_radius_to_lift", work=_WORK_2))))
     if profile.undercut:
         out.append(check(follower.undercut_code, profile.rho_min, low=0.0, strict_low=True,
                          source=follower.undercut_source, unit="mm", severity="failure"))

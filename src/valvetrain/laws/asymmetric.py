@@ -12,6 +12,7 @@ from ..checks import check
 from ..errors import InputError
 from .base import LiftLaw
 from .errors import LawError
+from ..locale import cited, note
 
 
 class AsymmetricLaw(LiftLaw):
@@ -31,8 +32,8 @@ class AsymmetricLaw(LiftLaw):
         self.opening, self.closing = opening, closing
         self.name = opening.name if opening.name == closing.name else f"{opening.name}/{closing.name}"
         flanks = (opening.source if opening.source == closing.source
-                  else f"opening: {opening.source}; closing: {closing.source}")
-        self.source = f"{flanks}; asymmetric flanks joined at the nose (lift and velocity continuous)"
+                  else note("source.flanks", opening=cited(opening.source).parts, closing=cited(closing.source).parts))
+        self.source = cited(flanks, note("source.asymmetric"))
         self.nose_acceleration_jump = float(closing.derivatives(np.zeros(1))[2, 0]
                                             - opening.derivatives(np.zeros(1))[2, 0])
         self.continuity = min(opening.continuity, closing.continuity)
@@ -78,6 +79,6 @@ class AsymmetricLaw(LiftLaw):
     def checks(self) -> list:
         """Both flanks' checks, and the acceleration jump at the nose (a jerk impulse on the train)."""
         jump = [check("law.asymmetric.nose_jump", self.nose_acceleration_jump, 0.0, 0.0,
-                      source="continuous acceleration of a shock-free cam (Valve-train practical works (n.d.), work 2)",
+                      source=cited(note("source.shock_free", work="Valve-train practical works (n.d.), work 2")),
                       unit="mm/rad2")] if self.continuity < 2 else []
         return self.opening.checks() + self.closing.checks() + jump

@@ -19,6 +19,7 @@ import numpy as np
 from ..errors import InputError
 from .base import RampedLaw, SymmetricLaw, segment_index
 from .ramps import make_ramp
+from ..locale import cited, note
 
 # shape name -> list of basis functions of the local coordinate t = x / L in [0, 1]:
 # (acceleration, its first integral, its second integral, its derivative), each scaled to the segment length L.
@@ -93,8 +94,7 @@ class CombinedLaw(RampedLaw, SymmetricLaw):
     """
 
     name = "combined"
-    source = ('Shang Hanji (1988), section 2.5; segments with continuous acceleration, closure as a linear system '
-              '(general mechanism, derived in this package; FB2/MFB2 are not defined in any available source)')
+    source = cited("Shang Hanji (1988), section 2.5", note("source.combined"))
 
     def __init__(self, lift, ramp_height, ramp_velocity, segments, ratios=(), ramp_kind="cosine", ramp_fraction=0.5):
         self._lift = float(lift)

@@ -12,6 +12,7 @@ import numpy as np
 from ..errors import InputError
 from .base import RampedLaw, SymmetricLaw, segment_index
 from .ramps import make_ramp
+from ..locale import cited, note
 
 
 def constant_acceleration_levels(nose_lift, ramp_height, ramp_velocity, phi1, phi2, phi3=0.0, kappa=1.0) -> tuple[float, float]:
@@ -66,8 +67,7 @@ class ConstantAccelerationLaw(RampedLaw, SymmetricLaw):
     """
 
     name = "constant_acceleration"
-    source = ('Shang Hanji (1988), section 2.4; +A1, -A2, -kappa A2 after a ramp, closure as a 2 x 2 system '
-              '(reconstructed in this package)')
+    source = cited("Shang Hanji (1988), section 2.4", note("source.constant_acceleration"))
     continuity = 1
 
     def __init__(self, lift, ramp_height, ramp_velocity, phi1, phi2, phi3=0.0, kappa=1.0, ramp_kind="cosine",

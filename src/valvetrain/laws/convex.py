@@ -8,6 +8,7 @@ import numpy as np
 
 from ..errors import InputError
 from .base import RampedLaw, SymmetricLaw
+from ..locale import cited, note
 
 
 def three_arc_geometry(base_radius, lift, half_angle, nose_radius) -> tuple[float, float, float]:
@@ -119,8 +120,7 @@ class ThreeArcLaw(_ArcCam):
     """
 
     name = "three_arc"
-    source = ('three-arc convex cam for a flat follower (Kolchin and Demidov (1980); Valve-train dynamics article (n.d.)),'
-              ' closed forms derived in this package')
+    source = cited(note("source.three_arc", works="Kolchin and Demidov (1980); Valve-train dynamics article (n.d.)"))
 
     def __init__(self, base_radius, lift, half_angle, nose_radius):
         self.r0, self._lift, self.phi_p0, self.r2 = map(float, (base_radius, lift, half_angle, nose_radius))
@@ -196,8 +196,7 @@ class TangentLaw(_ArcCam):
     """
 
     name = "tangent"
-    source = ('tangent cam for a roller follower (Kolchin and Demidov (1980)), '
-              'closed forms derived in this package')
+    source = cited(note("source.tangent", works="Kolchin and Demidov (1980)"))
 
     def __init__(self, base_radius, lift, half_angle, roller_radius):
         self.r0, self._lift, self.phi_p0, self.rr = map(float, (base_radius, lift, half_angle, roller_radius))

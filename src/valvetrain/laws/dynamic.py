@@ -13,6 +13,7 @@ from .base import RampedLaw, SymmetricLaw
 from .errors import LawError
 from .polydyne import _falling, polynomial_junction_coefficients
 from .ramps import make_ramp
+from ..locale import cited, note
 
 
 class DynamicLaw(RampedLaw, SymmetricLaw):
@@ -60,8 +61,8 @@ class DynamicLaw(RampedLaw, SymmetricLaw):
     """
 
     name = "dynamic"
-    source = ("Shang Hanji (1988), section 4.1; Dudley-Stoddart polydyne k h = x0 + y + (M omega^2 y'' + K y + F0)/c "
-              "(Dudley (1948); Stoddart (1953); Rothbart (2004), section 13.7; derived in this package)")
+    source = cited("Shang Hanji (1988), section 4.1",
+                   note("source.dynamic", works="Dudley (1948); Stoddart (1953); Rothbart (2004), section 13.7"))
 
     def __init__(self, valve_lift, main_half_angle, exponents, opening_velocity, stiffness, mass, spring_rate,
                  preload, cam_speed, rocker_ratio=1.0, lash=0.0, ramp_kind="cosine", ramp_fraction=0.5):
@@ -136,7 +137,7 @@ class DynamicLaw(RampedLaw, SymmetricLaw):
     def checks(self) -> list:
         """The cam lift must rise monotonically to the nose (a dip means the drive is too compliant)."""
         return [check("law.dynamic.fall_before_nose", self.fall_before_nose(), high=0.0,
-                      source="Rothbart (2004), section 13.7: the cam lift rises to the nose", unit="mm")]
+                      source=cited(note("source.rises_to_nose", work="Rothbart (2004), section 13.7")), unit="mm")]
 
     def coefficients(self) -> dict:
         """Valve-motion coefficients C_k = a_k / y_max, exponents, and the drive data used."""

@@ -16,6 +16,7 @@ from ..errors import InputError
 from ..numerics import level_span
 from .base import LiftLaw, Segment
 from .errors import LawError
+from ..locale import cited, note
 
 
 def harmonic_limit(half_angle, natural_frequency, cam_speed) -> float:
@@ -104,8 +105,7 @@ class HarmonicLaw(LiftLaw):
     """
 
     name = "harmonic"
-    source = ('Shang Hanji (1988), section 4.2; h = sum a_k cos(k pi theta / alpha_W) with junction conditions, fitted to a '
-              'target law (reconstructed in this package)')
+    source = cited("Shang Hanji (1988), section 4.2", note("source.harmonic"))
 
     def __init__(self, target, harmonics, junction_order=1, samples=2001):
         n, m = int(harmonics), int(junction_order)
@@ -172,7 +172,7 @@ class HarmonicLaw(LiftLaw):
         """The harmonic order against the train: N < alpha_W omega_n / (pi omega) (:func:`harmonic_limit`)."""
         return [check("law.harmonic.order", self.harmonics,
                       high=harmonic_limit(self.alpha, natural_frequency, cam_speed),
-                      source="Shang Hanji (1988), section 4.2 (reconstructed): N < alpha_W omega_n/(pi omega)")]
+                      source=cited(note("source.harmonic_order", work="Shang Hanji (1988), section 4.2")))]
 
     def coefficients(self) -> dict:
         """a_0 ... a_N [mm], N, m and the largest deviation from the target [mm]."""

@@ -15,6 +15,7 @@ from ..checks import check
 from ..errors import InputError
 from .base import RampedLaw, SymmetricLaw, mirror
 from .ramps import make_ramp, ramp_at
+from ..locale import cited, note
 
 RAMP_VELOCITY_RANGE_MM_PER_DEG = (0.008, 0.022)
 """Recommended tappet velocity at the end of the ramp [mm/deg cam] (Valve-train practical works (n.d.), eq. 2.1)."""
@@ -137,8 +138,7 @@ class KurzLaw(RampedLaw, SymmetricLaw):
     """
 
     name = "kurz"
-    source = ('Valve-train practical works (n.d.), work 2: ramp (2.1), (2.5); segments (2.6)-(2.8); coefficients (2.23)-(2.34); extremes '
-              '(2.35)-(2.39); phi_p0 = (phi_op + 180 + phi_zap)/4 (corrected: corrections note 1)')
+    source = cited(note("source.kurz", work="Valve-train practical works (n.d.), work 2"))
 
     def __init__(self, lift, clearance, ramp_velocity, phi1, phi2, phi3, shape_factor=0.625, ramp_kind="cosine",
                  ramp_fraction=0.5):

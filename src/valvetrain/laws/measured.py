@@ -18,6 +18,7 @@ from ..units import DEG, MM
 from .base import RampedLaw, Segment
 from .errors import LawError
 from .fits import binned, choose_fit, gcv_score, harmonic_order, smoothing_spline, spline_dof, symmetry_shift
+from ..locale import cited, note
 
 CHECKING_HEIGHTS_MM = (0.1, 0.5, 1.0, 1.27)
 """Standard checking heights [mm]: 0.1, 0.5, 1.0 mm and 0.050 in = 1.27 mm."""
@@ -426,9 +427,8 @@ class TableLaw(RampedLaw):
     """
 
     name = "table"
-    source = ('Shang Hanji (1988), sections 5.1-5.3; smoothing spline to the measurement accuracy (Reinsch (1967)) or N-harmonic '
-              'fit, chosen by generalised cross-validation (Craven and Wahba (1979)); nose finding and false asymmetry '
-              '(reconstructed in this package)')
+    source = cited("Shang Hanji (1988), sections 5.1-5.3",
+                   note("source.measured", spline="Reinsch (1967)", validation="Craven and Wahba (1979)"))
 
     def __init__(self, angles, lift, fit="auto", accuracy=5e-6, max_harmonics=60, ramp_height=0.0,
                  rows_per_point=1.0, accuracy_stated=True):
@@ -565,8 +565,8 @@ class TableLaw(RampedLaw):
         if not (self.accuracy_stated or self.fit == "harmonic"):
             return []
         return [check("law.measured.residual", self.harmonic_rms, high=self.accuracy,
-                      unit="mm", source=f"Shang Hanji (1988), section 5.2: accuracy_mm, met by N <= {self.harmonics} harmonics "
-                                        "(N by the residual against the accuracy, 0.002-0.01 mm)")]
+                      unit="mm", source=cited(note("source.harmonics_needed", work="Shang Hanji (1988), section 5.2",
+                                                    harmonics=self.harmonics)))]
 
     def coefficients(self) -> dict:
         """The fit used, the harmonic order, the remaining (true) asymmetry, the lobe centre and the points fitted

@@ -20,6 +20,7 @@ from ..checks import check
 from ..errors import InputError
 from .base import RampedLaw, SymmetricLaw, mirror
 from .ramps import make_ramp, ramp_at
+from ..locale import cited, note
 
 JUNCTION_DIGITS = 50
 """Decimal digits of the arithmetic that solves :func:`polynomial_junction_coefficients` (the floats of its matrix
@@ -178,8 +179,7 @@ class PolynomialLaw(RampedLaw, SymmetricLaw):
     """
 
     name = "polynomial"
-    source = ('Shang Hanji (1988), section 2.6: h = h_nose (1 + sum C_k x^k); junction with the ramp '
-              'derived in this package')
+    source = cited(note("source.polynomial", work="Shang Hanji (1988), section 2.6"))
 
     def __init__(self, lift, main_half_angle, exponents, ramp_height=0.0, ramp_velocity=0.0, ramp_kind="cosine",
                  ramp_fraction=0.5):
@@ -264,8 +264,7 @@ class PolydyneLaw(PolynomialLaw):
     """
 
     name = "polydyne"
-    source = ('Valve-train practical works (n.d.), work 3: h = h_max (1 + C2 x^2 + Cp x^p + Cq x^q + Cr x^r + Cs x^s), (3.1)-(3.8); with a ramp'
-              ' derived in this package')
+    source = cited(note("source.polydyne", work="Valve-train practical works (n.d.), work 3"))
 
     def __init__(self, lift, main_half_angle, p, q=None, r=None, s=None, ramp_height=0.0, ramp_velocity=0.0,
                  ramp_kind="cosine", ramp_fraction=0.5):

@@ -32,6 +32,7 @@ from ..checks import check
 from ..errors import InputError
 from .base import SymmetricLaw, member_values
 from .errors import LawError
+from ..locale import cited, note
 
 ARTICLE_EXPONENTS = dict(n=1.0, m=4.0, p=0.5, q=4.5, r=0.3, s=2.5, t=4.0, u=7.0)
 """Exponents of the article's optimum.  n, m, p, q are printed (UkrSURT Proceedings (2019), 'n=1; m=4;
@@ -232,8 +233,7 @@ class PowerPolynomialLaw(SymmetricLaw):
     """
 
     name = "power_polynomial"
-    source = ("UkrSURT Proceedings (2019): piecewise power-polynomial acceleration (ramp, positive, negative, "
-              "half dwell); the article's formulas are not available, the pieces are reconstructed in this package")
+    source = cited(note("source.power_polynomial", work="UkrSURT Proceedings (2019)"))
 
     def __init__(self, lift, main_half_angle, ramp_height, ramp_angle, ramp_velocity, peak_acceleration, phi1,
                  peak_position=0.2, trough_position=0.8, exponents=None, reconstruction="R2", sharpness=10.0):
@@ -402,7 +402,7 @@ class PowerPolynomialLaw(SymmetricLaw):
     def checks(self) -> list:
         if self.reconstruction != "R2":
             return []
-        src = "UkrSURT Proceedings (2019): exponent ranges from the authors' search studies"
+        src = cited(note("source.exponent_ranges", work="UkrSURT Proceedings (2019)"))
         return [check("law.power_polynomial.exponent", self.exponents[k], lo, hi, source=src, severity="info",
                       params={"exponent": k})
                 for k, (lo, hi) in EXPONENT_RANGES.items()]

@@ -15,6 +15,7 @@ from ..errors import InputError
 from ..numerics import level_span
 from .base import LiftLaw, Segment
 from .errors import LawError
+from ..locale import cited, note
 
 
 class ClearanceTakeUp(LiftLaw):
@@ -56,7 +57,7 @@ class ClearanceTakeUp(LiftLaw):
         self.law, self.clearance = law, float(clearance)
         self._opens, self._closes = level_span(law.lift, law.start, law.end, self.clearance)
         self.name, self.continuity = law.name, law.continuity
-        self.source = f"{law.source}; the valve clearance is taken up on the flanks (no ramp)"
+        self.source = cited(law.source, note("source.takeup"))
 
     @property
     def segments(self) -> list[Segment]:

@@ -18,9 +18,9 @@ in this folder, loaded once:
   ``[values]``, ``[segments]``, ``[links]`` (not in ``en.toml``: their English is the key itself) the text values of
   the records, the lift law's segments and the drive links;
 * ``LANG.toml`` ``[reference_words]``: the words of a reference in the list of sources (:mod:`valvetrain.bibliography`);
-  ``[worked_symbols]``: the worked examples' symbols whose index is a word; ``ru.toml`` ``[citation_notes]``,
-  ``[citation_locators]``, ``[citation_units]`` (keyed by the English): the Russian of the report's citations
-  (:mod:`valvetrain.report.russian`);
+  ``[worked_symbols]``: the worked examples' symbols whose index is a word; ``ru.toml`` ``[citation_locators]``,
+  ``[citation_units]`` (regular expressions of the English): the Russian of the locators and units of the report's
+  citations (:mod:`valvetrain.report.russian`);
 * ``LANG.toml`` ``[notes]``: the notes of the checks (how a value was obtained: where, at which speed), each a code
   with parameters (:func:`note`), rendered by :func:`note_text` in every language, its numbers by
   :func:`number_text`.
@@ -37,8 +37,9 @@ code its texts with ``PYTHONPATH=src python tools/check_codes.py add CODE "recor
 name"`` (or edit the files by hand and run ``tools/check_codes.py``, which rewrites docs/checks.md).  A text made with
 numbers is a code of ``[notes]`` with its numbers as parameters (``{speed_rpm:.0f}``: the format of the number,
 the same in every language); a record's text made so is a :class:`NoteText` (its English,
-keeping its parts).  A check's source is its citations and their notes, said in Russian by ``[citation_notes]``,
-``[citation_locators]`` and ``[citation_units]`` in the report and the designer alike; ``[locators]`` holds the words
+keeping its parts).  A check's source is its citations and their words (:func:`cited`: each work as written, its
+words a ``source.*`` code of ``[notes]``), said in each language in the report and the designer alike, their
+locators in Russian by ``[citation_locators]`` and ``[citation_units]``; ``[locators]`` holds the words
 by which each language's locators are found in a citation (:mod:`valvetrain.report.typography`).  :mod:`.wording` words the data the physics returns (the spring diagnosis, a measured
 table's fit reason) in every language.
 
@@ -227,6 +228,27 @@ class NoteText(str):
 
     def __reduce__(self):
         return NoteText, (self.parts,)
+
+
+def cited(*pieces) -> NoteText:
+    """A source said in every language (a :class:`NoteText`): its pieces joined by ``"; "``, each a citation as
+    written (a work and its locators, :func:`valvetrain.bibliography.cite`: the same in every language, its locators
+    put in the report's language by the report), the words of a source (:func:`note` of a ``source.*`` code, the
+    citation they qualify its parameter ``work``) or a source of its own.
+
+    >>> said = cited("Shang Hanji (1988), ch. 3 and ch. 7", note("source.usual_seating"))
+    >>> said, note_text(said.parts, "ru")
+    ('Shang Hanji (1988), ch. 3 and ch. 7; 0.3-0.5 m/s usual', 'Shang Hanji (1988), ch. 3 and ch. 7; обычно 0,3-0,5 м/с')
+    """
+    parts = []
+    for piece in pieces:
+        if isinstance(piece, NoteText):
+            parts += piece.parts
+        elif isinstance(piece, str):
+            parts += note("source.work", work=piece)
+        else:
+            parts += piece
+    return NoteText(parts)
 
 
 def verdict(counts, lang="en") -> tuple[str, str]:

@@ -1,9 +1,10 @@
-"""The Russian report's citations and typography: the locators of the numbered citations (work, eq., section) and
-the notes of the sources in Russian (their words in the catalogue, ``ru.toml``), the decimal comma and «» quotes.
+"""The Russian report's citations and typography: the locators of the numbered citations (work, eq., section) in
+Russian (their words in the catalogue, ``ru.toml``), the decimal comma and «» quotes.
 
 The report cites every work by its number in its list of sources (:func:`valvetrain.report.html.numbered_citations`),
 each work described in its own language (:meth:`valvetrain.bibliography.Work.reference`);
-:func:`russian_citations` turns the locators and the notes of the rendered Russian report's citations into Russian.
+:func:`russian_citations` turns the locators of the rendered Russian report's citations into Russian; the words of
+the sources come from the catalogue already (``source.*`` notes, :func:`valvetrain.locale.cited`).
 """
 
 from functools import cache
@@ -16,29 +17,25 @@ from .typography import LOCATORS, map_text
 
 @cache
 def _citation_words():
-    """The Russian of the citations from the catalogue (``ru.toml`` ``[citation_notes]``, ``[citation_locators]``,
-    ``[citation_units]``): the notes replaced as written, then the locators, the notes made with numbers (a source's
-    f-string: ``a factor of 3 beyond``) and the units as regular expressions, each in the catalogue's order."""
+    """The Russian of the citations' locators and units from the catalogue (``ru.toml`` ``[citation_locators]``,
+    ``[citation_units]``): regular expressions and their replacements, in the catalogue's order."""
     words = catalogue("ru")
-    return (tuple(words["citation_notes"].items()),
-            tuple(words["citation_locators"].items()) + tuple(words["citation_units"].items()))
+    return tuple(words["citation_locators"].items()) + tuple(words["citation_units"].items())
 
 
 _CITE = re.compile(r'(<span class="cite">)(.*?)(</span>)', re.S)
 
 
 def citation(text) -> str:
-    """One citation in Russian: its locators, the notes of its source and their units.
+    """One citation in Russian: its locators and units (its words are said in Russian before, from the catalogue's
+    ``source.*`` notes: :func:`valvetrain.report.names.translate`).
 
     >>> citation("[2, work 1, eq. (1.1)]")
     '[2, работа 1, формула (1.1)]'
-    >>> citation("[1, section 2.1, eqs. (2.13)-(2.14)] (usually 30 deg inlet, 45 deg exhaust)")
-    '[1, раздел 2.1, формулы (2.13)-(2.14)] (обычно 30° у впускного, 45° у выпускного клапана)'
+    >>> citation("[1, section 2.1, eqs. (2.13)-(2.14)]; [6, Tables 10-4, 10-6]: 0.5 mm")
+    '[1, раздел 2.1, формулы (2.13)-(2.14)]; [6, таблицы 10-4, 10-6]: 0.5 мм'
     """
-    notes, patterns = _citation_words()
-    for en, ru in notes:
-        text = text.replace(en, ru)
-    for pattern, ru in patterns:
+    for pattern, ru in _citation_words():
         text = re.sub(pattern, ru, text)
     return text
 

@@ -27,6 +27,7 @@ from ..laws.power_polynomial import ARTICLE_EXPONENTS
 from ..laws.measured import CHECKING_HEIGHTS_MM, MIN_VALVE_LIFT_MM, TableLaw, lobe_table, table_accuracy
 from ..laws.records import Duration, FitQuality, LawRecord, MeasuredRecord, PowerPolynomialRecord, SeedFormulas
 from ..laws.takeup import ClearanceTakeUp
+from ..locale import cited, note
 from ..layouts import train_mass
 from ..locale.wording import fit_reason
 from ..units import DEG, MM, rad_to_deg
@@ -544,7 +545,7 @@ class TableCam(_CamBase):
             if given is not None and np.isfinite(derived):
                 found.append(check(code, given, derived - 2.0 * DEG,
                                    derived + 2.0 * DEG, unit="crank deg",
-                                   source="the table's timing at 0.1 mm valve lift (+-2 crank deg)"))
+                                   source=cited(note("source.table_timing"))))
         return LawRecord(measured=rec), found
 
     def timing(self, valve, record) -> tuple[Optional[float], Optional[float]]:

@@ -11,11 +11,15 @@ from functools import cached_property
 import numpy as np
 
 from ..checks import _TOL, check
+from ..locale import cited, note
 from ..masses import spring_mass
 from ..spring_materials import GRADES, grade
 from .formulas import (active_coils, fatigue_safety, length_at_pitch, natural_frequency, shape_factor_table,
                        shear_stress, spring_lengths, spring_rate, wahl_factor)
 from .requirement import DEFLECTION_RATIO_RANGE, Characteristic
+
+_WORKS = "Valve-train practical works (n.d.)"
+"""The work whose chapter 6 the spring design follows, as cited."""
 
 RESONANCE_RATIO_MIN = 10.0
 """omega_c1 / omega_cam (Valve-train practical works (n.d.), eq. 6.14)."""
@@ -310,31 +314,30 @@ def evaluate_springs(preload, rate, lift, mean_diameter, wire_diameter, material
     if imposed is not None:
         lengths = spring_lengths(d, coils, lift, p0 / actual, material.gap_factor, material.end_coils, imposed)
     mass = spring_mass(big_d, d, coils + material.end_coils, rho)
-    grade_note = f"{material.grade}: {material.source}"
+    grade = {"grade": material.grade, "material": material.source.parts}
     checks = {
         "tau_max": _ArrayCheck("spring.tau_max", tau_max, high=allowable, unit="MPa", severity="failure",
-                               source=f"Valve-train practical works (n.d.), eq. (6.1) with [tau] of {grade_note}"),
+                               source=cited(note("source.spring_allowable", work=f"{_WORKS}, eq. (6.1)", **grade))),
         "fatigue_safety": _ArrayCheck("spring.fatigue_safety", safety, low=_minimum(material.min_safety),
-                                      severity="failure", source=f"Valve-train practical works (n.d.), eq. (6.12): n >= 1.2-1.4; tau_-1 "
-                                                                 f"and psi_tau of {grade_note}"),
+                                      severity="failure", source=cited(note("source.spring_fatigue", work=f"{_WORKS}, eq. (6.12)",
+                                                                         **grade))),
         "resonance_ratio": _ArrayCheck("spring.resonance_ratio", omega / camshaft_speed,
                                        low=_minimum(material.min_resonance_ratio),
-                                       source="Valve-train practical works (n.d.), eq. (6.14): >= 10 (hard to meet at high speed, corrections note 27)"),
+                                       source=cited(note("source.spring_resonance", work=f"{_WORKS}, eq. (6.14)"))),
         # the coils of the spring as made (rounded down): the number its table shows; the rounding keeps the
         # verdict, floor(2 n) / 2 >= 2 exactly where n >= 2
         "working_coils": _ArrayCheck("spring.working_coils", coils, low=2.0,
-                                     source="Valve-train practical works (n.d.), eq. (6.2), rounded down to half coils"),
+                                     source=cited(note("source.half_coils", work=f"{_WORKS}, eq. (6.2)"))),
         "deflection_ratio": _ArrayCheck("spring.deflection_ratio", (p0 + actual * lift) / p0, *ratio_range,
-                                        source="Valve-train practical works (n.d.), work 5 (with the rounded coils)"),
+                                        source=cited(note("source.rounded_coils", work=f"{_WORKS}, work 5"))),
     }
     if max_installed_length is not None:
         checks["installed_length"] = _ArrayCheck("spring.installed_length", lengths["installed_length"],
                                                  high=max_installed_length, unit="mm",
-                                                 source="installed_length_mm of the specification, or "
-                                                        f"{INSTALLED_TO_LIFT_MAX:g} x lift (a stated default)")
+                                                 source=cited(note("source.installed_length", factor=INSTALLED_TO_LIFT_MAX)))
     if max_free_length is not None:
         checks["free_length"] = _ArrayCheck("spring.free_length", lengths["free_length"], high=max_free_length, unit="mm",
-                                            source="max_free_length_mm of the specification")
+                                            source=cited(note("source.free_length")))
     if imposed is not None:
         checks["coil_gap_at_full_lift"] = _ArrayCheck("spring.coil_gap_at_full_lift",
                                                       lengths["min_pitch"] / d - 1.0, low=material.gap_factor,
@@ -343,8 +346,8 @@ def evaluate_springs(preload, rate, lift, mean_diameter, wire_diameter, material
         difference = np.abs(omega - partner_frequency) / partner_frequency
         checks["frequency_difference"] = _ArrayCheck("spring.frequency_difference", difference,
                                                      low=_minimum(min_frequency_difference),
-                                                     source="Valve-train practical works (n.d.), eq. (6.14): the two ratios must differ "
-                                                            f"({min_frequency_difference:.0%} assumed)")
+                                                     source=cited(note("source.ratios_differ", work=f"{_WORKS}, eq. (6.14)",
+                                                                         difference=min_frequency_difference)))
     target = (p0 + c0 * lift) / p0
     return Candidates(material, big_d, d, coils, p0, actual, lift, target, chi, tau_max, tau_min, safety,
                       omega, omega / camshaft_speed, lengths, mass, checks)

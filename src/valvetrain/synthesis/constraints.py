@@ -18,7 +18,7 @@ import numpy as np
 
 from .. import strength
 from ..checks import Check, check
-from ..locale import note
+from ..locale import cited, note
 from ..design.dynamics_checks import CHECK_SOURCE
 from ..layouts import finger_inertia_force
 from ..numerics import extremum
@@ -286,7 +286,7 @@ def ramp_velocity(design, band) -> Check | None:
 def seating_velocity(design, band) -> Check:
     """The valve's seating velocity at the rated speed against ``band`` [m/s] (a configurable default)."""
     return check("synthesis.seating_velocity", design.cam.seating_velocity, *band, unit="m/s",
-                 source="a configurable default (no primary source)")
+                 source=cited(note("source.configurable_default")))
 
 
 def no_jump(design, factor) -> Check | None:
@@ -311,7 +311,7 @@ def no_jump(design, factor) -> Check | None:
     jumps = np.isfinite(d.jump_speed)
     value = (d.jump_speed if jumps else d.speed_range[1]) / rated
     return check("dynamics.jump_speed", value, low=factor, severity="failure",
-                 source=f"{CHECK_SOURCE}: no separation below {factor:g} x the rated speed",
+                 source=cited(note("source.no_separation_factor", work=CHECK_SOURCE, factor=factor)),
                  note="" if jumps else note("synthesis.swept_top"))
 
 

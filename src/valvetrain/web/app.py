@@ -223,7 +223,7 @@ class Designer(Layout, SweepPanel, VvaPanel):
 
     def _check_row(self, out, c, base, status):
         """The columns of a check's row that do not wait for its value: its status, name, baseline, range and
-        source (in Russian its notes and locators in the words of the report's citations)."""
+        source (in Russian its words from the catalogue, its locators in the words of the report's citations)."""
         out["key"].append(c["quantity"])
         out["status"].append(WORDS[self.lang][STATUS_WORDS[status]])
         out["colour"].append(SEVERITY_COLOURS[status])
@@ -232,7 +232,7 @@ class Designer(Layout, SweepPanel, VvaPanel):
         out["baseline"].append("" if b is None or b["value"] is None else f"{b['value']:.5g}"
                                + ("" if b["pass"] else " ✗"))
         out["allowed"].append(check_range(c, self.lang))
-        out["source"].append(citation(c["source"]) if self.lang == "ru" else c["source"])
+        out["source"].append(citation(translate(c["source"], "ru")) if self.lang == "ru" else c["source"])
 
     def _card(self):
         """The cam card of the good design: each valve's events at the checking heights (crank deg from the
