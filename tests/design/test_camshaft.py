@@ -99,7 +99,7 @@ def test_results_json_has_the_chapter_and_its_checks(pushrod):
     ("cylinders = [1, 5]", "camshaft.cylinders = [1, 5]: allowed distinct cylinders 1...4"),
     ("section_diameters_mm = [25.0]", "camshaft: section_diameters_mm has 1 entries"),
     ("drive_stiffness_N_per_mm = 5.0", "camshaft.drive_stiffness_N_per_mm = 5.0: allowed [10, 1e+07] N/mm"),
-    ("sprocket_inertia_kg_mm2 = -1.0", "camshaft.sprocket_inertia_kg_mm2 = -1.0: allowed [0, 1e+07] kg mm2"),
+    ("sprocket_inertia_kg_mm2 = -1.0", "camshaft.sprocket_inertia_kg_mm2 = -1.0: allowed [0, 1e+07] kg·mm²"),
     # issue 36: a wall of 0.5 um made a twist of 282 cam deg, graded a warning
     ("section_bores_mm = [24.999, 31.999]", "camshaft: section_bores_mm[0] = 24.999: allowed at most 22.5, 0.9 x "
                                             "section_diameters_mm[0] (a wall of at least 0.05 x the diameter); 1 more"),

@@ -98,7 +98,7 @@ def test_a_film_parameter_limit_of_almost_nothing_is_refused(refused, value):
     ("tappet_kg", 5e-324, "allowed 0 (none) or [0.0001, 20] kg"),
     ("pushrod_kg", 1e-300, "allowed 0 (none) or [0.0001, 20] kg"),
     ("cotters_kg", 9e-5, "allowed 0 (none) or [0.0001, 5] kg"),
-    ("rocker_inertia_kg_mm2", 1e-300, "allowed 0 (none) or [0.01, 1e+07] kg mm2"),
+    ("rocker_inertia_kg_mm2", 1e-300, "allowed 0 (none) or [0.01, 1e+07] kg·mm²"),
     ("bridge_kg", 5e-324, "allowed [0.0001, 20] kg"),
 ])
 def test_a_part_mass_of_almost_nothing_is_refused(key, value, allowed):

@@ -123,6 +123,21 @@ def test_a_refused_value_goes_back_to_the_design_drawn_and_says_why():
     assert d.session.document["engine"]["bore_mm"] == 81.0
 
 
+def test_the_russian_designer_refuses_a_value_in_russian():
+    """Issue 41: a value out of its key's range is refused in the designer's language, its range in that language's
+    numbers and units (ru.toml field.allowed: "допускается [5; 2000] мм", the field's bounds of
+    specification/models.py); a value out of a range that admits 0 says what 0 means (field.zero_or).  Before, the
+    Russian designer said "allowed [5, 2000] mm" in English."""
+    d = _designer()
+    d.on_language("value", "en", "ru")
+    d.widgets["engine.bore_mm"].value = 3.0
+    assert d.status.text.endswith(": 3 не принято: допускается [5; 2000] мм; на экране остаётся 80")
+    assert latin_words(d.status.text) == []
+    d.widgets["engine.bore_mm"].value = 80.0
+    d.widgets["valves.intake.spring.min_resonance_ratio"].value = 0.5
+    assert "допускается 0 (проверка отключена) или [1; 100]; на экране остаётся 10" in d.status.text
+
+
 def test_a_drag_moves_the_curves_while_the_pointer_moves_and_keeps_the_design_at_the_release():
     d = _designer()
     top = lambda: float(np.nanmax(d.curves.data["lift"]))        # noqa: E731

@@ -11,6 +11,7 @@ from pydantic import AfterValidator, BaseModel, ConfigDict, Field
 from pydantic_core import core_schema
 
 from ..errors import InputError
+from ..locale import Note, NoteText, note, note_text
 
 
 @dataclass(frozen=True)
@@ -27,15 +28,24 @@ class Range:
     whole: bool = False
 
     @property
-    def text(self) -> str:
-        """The allowed range as the messages state it, ``allowed (0, 5] mm``."""
-        return (f"allowed {'(' if self.low_open else '['}{self.low:g}, {self.high:g}{')' if self.high_open else ']'}"
-                f"{' ' + self.unit if self.unit else ''}")
+    def allowed(self) -> Note:
+        """The allowed range as the messages state it (a note: ``allowed (0, 5] mm`` in English).
+
+        >>> Range(0.0, 5.0, "mm").text, note_text(Range(0.5, 20.0, "kg", low_open=False).allowed, "ru")
+        ('allowed (0, 5] mm', 'допускается [0,5; 20] кг')
+        """
+        return note("field.allowed", open="(" if self.low_open else "[", low=self.low, high=self.high,
+                    close=")" if self.high_open else "]", unit=_unit(self.unit))
+
+    @property
+    def text(self) -> NoteText:
+        """:attr:`allowed` as a text: its English, keeping its parts."""
+        return NoteText(self.allowed)
 
     def check(self, v) -> float:
         """``v`` if finite and within the bounds, else a ValueError stating the allowed range."""
         if not math.isfinite(v):
-            raise InputError(f"must be a finite number; {self.text}")
+            raise InputError(NoteText(note("field.not_finite", allowed=self.allowed)))
         below = v <= self.low if self.low_open else v < self.low
         above = v >= self.high if self.high_open else v > self.high
         if below or above:
@@ -47,9 +57,9 @@ class Range:
         unit string (``"10 mm"``) was 'Input should be a valid number', ``4.5`` for a count 'Input should be a valid
         integer', the range and the unit left out."""
         if self.whole and (isinstance(v, bool) or not isinstance(v, int)):
-            raise InputError(f"must be a whole number, without quotes, a unit or a decimal point; {self.text}")
+            raise InputError(NoteText(note("field.not_whole", allowed=self.allowed)))
         if isinstance(v, bool) or not isinstance(v, (int, float)):
-            raise InputError(f"must be a number, without quotes or a unit; {self.text}")
+            raise InputError(NoteText(note("field.not_number", allowed=self.allowed)))
         return v
 
     def __get_pydantic_core_schema__(self, source, handler) -> core_schema.CoreSchema:
@@ -75,13 +85,19 @@ def Length(low, high, **kw) -> Any:  # noqa: N802 (a type factory)
     return _bounded(low, high, "mm", **kw)
 
 
-def _zero_or(low, high, unit="", zero="none"):
-    """A float that is either 0 (meaning ``zero``) or within [low, high]: a tiny positive value is no quantity."""
-    suffix = f" {unit}" if unit else ""
+def _unit(unit) -> Note:
+    """The unit of a range said after it (a note; none without a unit)."""
+    return note("field.unit", unit=unit) if unit else ()
+
+
+def _zero_or(low, high, unit="", zero="field.zero_none"):
+    """A float that is either 0 (meaning ``zero``, a code of ``[notes]``) or within [low, high]: a tiny positive value
+    is no quantity."""
+    said = NoteText(note("field.zero_or", zero=note(zero), low=low, high=high, unit=_unit(unit)))
 
     def check(v):
         if not (v == 0.0 or low <= v <= high):
-            raise InputError(f"allowed 0 ({zero}) or [{low:g}, {high:g}]{suffix}")
+            raise InputError(said)
         return v
 
     return Annotated[float, AfterValidator(check)]

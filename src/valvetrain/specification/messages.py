@@ -3,6 +3,7 @@
 from typing import Optional
 
 from ..errors import ValvetrainError
+from ..locale import NoteText
 
 
 class Problem(str):
@@ -69,7 +70,8 @@ def location(err, laws=()) -> str:
 
 
 def message(err, laws=()) -> Problem:
-    """One problem for one pydantic error: the key path, the value given and what is allowed."""
+    """One problem for one pydantic error: the key path, the value given and what is allowed (the note the
+    validator raised, :class:`~valvetrain.locale.NoteText`, where it raised one: said in every language)."""
     loc = location(err, laws)
     kind = err["type"]
     if kind == "missing":
@@ -82,7 +84,8 @@ def message(err, laws=()) -> Problem:
         return Problem(loc, f"allowed {err['ctx']['expected']}", shown(err["input"]))
     if kind == "union_tag_not_found":
         return Problem(f"{loc}.law", f"required key is missing; allowed {', '.join(repr(law) for law in laws)}")
-    msg = err["msg"].removeprefix("Value error, ")
+    said = getattr(err.get("ctx", {}).get("error"), "args", ("",))[:1]
+    msg = said[0] if said and isinstance(said[0], NoteText) else err["msg"].removeprefix("Value error, ")
     if isinstance(err["input"], dict):
         return Problem(loc, msg)
     return Problem(loc, msg, shown(err["input"]))

@@ -132,14 +132,14 @@ class Spring(_Model):
     endurance_limit_MPa: Optional[_bounded(50.0, 3000.0, "MPa", low_open=False)] = None
     mean_stress_factor: Optional[_bounded(0.0, 1.0, low_open=False)] = None
     min_safety_factor: _bounded(0.1, 10.0, low_open=False) = 1.3
-    min_resonance_ratio: _zero_or(1.0, 100.0, zero="the check switched off") = 10.0
+    min_resonance_ratio: _zero_or(1.0, 100.0, zero="field.zero_off") = 10.0
     min_margin_percent: _bounded(0.0, 50.0, "%", low_open=False) = 5.0
     coil_gap_factor: _bounded(0.01, 1.0, low_open=False) = 0.12
     mean_diameter_ratio: Pair(0.0, 5.0) = (0.7, 0.9)
     wire_diameter_range_mm: Pair(0.1, 30.0, "mm") = (2.0, 7.0)
     wire_step_mm: _bounded(0.01, 1.0, "mm", low_open=False) = 0.1
     deflection_ratio_range: Pair(1.0, 20.0) = (1.6, 3.2)
-    min_frequency_difference: _zero_or(0.01, 1.0, zero="the check switched off") = 0.1
+    min_frequency_difference: _zero_or(0.01, 1.0, zero="field.zero_off") = 0.1
     radial_gap_mm: Length(0.0, 20.0, low_open=False) = 1.0
     min_preload_N: Optional[_bounded(0.0, 1e6, "N", low_open=False)] = None
     installed_length_mm: Optional[Pair(1.0, 5000.0, "mm")] = None
@@ -335,7 +335,7 @@ class LostMotion(_Model):
     solenoid_stroke_us: _bounded(0.0, 10000.0, "us", low_open=False) = 500.0
     discharge_coefficient: _bounded(0.1, 1.0, low_open=False) = 0.7
     accumulator_pressure_MPa: Optional[_bounded(0.0, 100.0, "MPa")] = None
-    brake_travel_mm: _zero_or(0.01, 50.0, "mm", zero="no brake") = 0.0
+    brake_travel_mm: _zero_or(0.01, 50.0, "mm", zero="field.zero_no_brake") = 0.0
     brake_end_area_mm2: _bounded(0.001, 1000.0, "mm2", low_open=False) = 1.0
     brake_open_area_mm2: _bounded(0.001, 1000.0, "mm2", low_open=False) = 20.0
     sweep: bool = False
@@ -384,7 +384,7 @@ class Hydraulic(_Model):
     damping_N_s_per_m: _bounded(0.0, 1e7, "N s/m", low_open=False) = 0.0
     density_kg_m3: _bounded(100.0, 20000.0, "kg/m3", low_open=False) = 870.0
     bulk_modulus_GPa: _bounded(0.01, 100.0, "GPa", low_open=False) = 1.5
-    vapour_pressure_MPa: _zero_or(1e-6, 1.0, "MPa", zero="cavitation at absolute zero") = 0.002
+    vapour_pressure_MPa: _zero_or(1e-6, 1.0, "MPa", zero="field.zero_cavitation") = 0.002
     initial_pressure_MPa: _bounded(0.0, 100.0, "MPa", low_open=False) = 0.3
     back_pressure_MPa: _bounded(0.0, 100.0, "MPa", low_open=False) = 0.1
     leakage_cm3_per_s_MPa: _bounded(0.0, 1e6, "cm3/(s MPa)", low_open=False) = 0.0
@@ -574,7 +574,7 @@ class Valve(_Model):
     throat_diameter_mm: Length(2.0, 1000.0, low_open=False)
     seat_angle_deg: _bounded(0.0, 75.0, "deg", low_open=False)
     max_lift_mm: Optional[Length(0.3, 500.0, low_open=False)] = None
-    clearance_mm: _zero_or(0.01, 5.0, "mm", zero="no clearance: a hydraulic lash adjuster")
+    clearance_mm: _zero_or(0.01, 5.0, "mm", zero="field.zero_no_clearance")
     opens_deg: Optional[_bounded(-180.0, 180.0, "deg")] = None
     closes_deg: Optional[_bounded(-180.0, 180.0, "deg")] = None
     rocker_ratio: _bounded(0.2, 5.0, low_open=False) = 1.0

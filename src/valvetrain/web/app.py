@@ -44,7 +44,7 @@ from ..report.names import label, record_quantity_text, translate
 from ..report.russian import citation
 from ..specification import SpecError, toml_tables
 from .draw import (CURVES, EVENTS, KINEMATIC_PLOTS, PLOT_BUCKETS, PLOT_ROOM, RANGES, SEVERITY_COLOURS, STATUS_WORDS,
-                   VALVE_CARD, WORDS, Units, _array, _count, _fit, _hold, _now, _send, thinned)
+                   VALVE_CARD, WORDS, Units, _array, _count, _fit, _hold, _now, _send, problem_text, thinned)
 from .form import form, parse_value, value_at, value_of, value_text
 from .layout import Layout
 from .session import document_key, has_points
@@ -332,7 +332,7 @@ class Designer(Layout, SweepPanel, VvaPanel):
         self.refused_paths = marked
         lines = []
         for p in s.problems:
-            message = translate(p["message"] if p["path"] in s.refused else p["text"], self.lang)
+            message = translate(p["message"], self.lang) if p["path"] in s.refused else problem_text(p, self.lang)
             if kind == "field" and p["path"] in self.fields:
                 f = self.fields[p["path"]]
                 lines.append(w["refused"].format(what=label(f.name, self.lang),
@@ -340,7 +340,7 @@ class Designer(Layout, SweepPanel, VvaPanel):
                                                  message=message, kept=_shown(f.value)))
             else:
                 lines.append(w["refused_point" if kind == "point" else "refused_drag" if kind == "drag"
-                               else "refused_edit"].format(message=translate(p["text"], self.lang)))
+                               else "refused_edit"].format(message=problem_text(p, self.lang)))
         self.status.text = "<br>".join(lines) or ("" if self.names else w["no_valves"])
 
     # --- callbacks -------------------------------------------------------------------------------------------------
@@ -497,7 +497,8 @@ class Designer(Layout, SweepPanel, VvaPanel):
         self._answer(designed, began, "field", seq)
         w = WORDS[self.lang]
         self.status.text = (w["restored"] if designed else
-                            w["restore_refused"].format(message="; ".join(p["text"] for p in self.session.problems)))
+                            w["restore_refused"].format(message="; ".join(problem_text(p, self.lang)
+                                                                          for p in self.session.problems)))
 
     def on_undo(self) -> None:
         began = _now()
@@ -550,7 +551,7 @@ class Designer(Layout, SweepPanel, VvaPanel):
         result = self.session.design(document)
         if not result["ok"]:
             self.status.text = WORDS[self.lang]["overlay_refused"].format(
-                name=name, message="; ".join(p["text"] for p in result["errors"]))
+                name=name, message="; ".join(problem_text(p, self.lang) for p in result["errors"]))
             return
         self.session.baseline = result
         self.base_sweeps = None

@@ -11,7 +11,8 @@ from bokeh.models import ColumnDataSource, CustomJS
 import numpy as np
 
 from ..languages import LANGS
-from ..locale import catalogue
+from ..locale import NoteText, catalogue
+from ..report.names import translate
 from ..units import per_cam_degree
 
 WORDS = {lang: catalogue(lang)["designer"] for lang in LANGS}
@@ -378,6 +379,16 @@ def _rows_follow(table):
     change; new data of as many rows leaves them, and the old rows on screen: the view's change signal makes it
     take the new ones."""
     table.source.js_on_change("data", CustomJS(args={"table": table}, code="table.view.change.emit();"))
+
+
+def problem_text(p, lang) -> str:
+    """A problem's line (an :func:`~valvetrain.api.error_records` record) in ``lang``: its key, the value given and
+    its message in the language where the message is a note (:class:`~valvetrain.locale.NoteText`: a range refused),
+    else as :func:`~valvetrain.report.names.translate` says the line."""
+    if lang == "en" or not isinstance(p["message"], NoteText):
+        return translate(p["text"], lang)
+    head = p["path"] if p["value"] is None else f"{p['path']} = {p['value']}"
+    return f"{head}: {translate(p['message'], lang)}" if head else translate(p["message"], lang)
 
 
 def _now():

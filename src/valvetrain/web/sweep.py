@@ -9,7 +9,7 @@ from functools import partial
 import numpy as np
 
 from ..errors import ValvetrainError
-from .draw import PLOT_ROOM, WORDS, _array, _array_2d, _count, _fit, _hold, _now, _send
+from .draw import PLOT_ROOM, WORDS, problem_text, _array, _array_2d, _count, _fit, _hold, _now, _send
 from .session import document_key
 
 SWEEP_WORKERS = ThreadPoolExecutor(max_workers=1, thread_name_prefix="valvetrain-sweep")
@@ -107,7 +107,7 @@ class SweepPanel:
         if sw is None:
             full = self.session.full
             self.sweep_status.text = (WORDS[self.lang]["sweeping"] if full is None
-                                      else "; ".join(p["text"] for p in full["errors"]) or "-")
+                                      else "; ".join(problem_text(p, self.lang) for p in full["errors"]) or "-")
             return
         self._sweep_curves(sw, self.sweep_sources)
         base = (self.base_sweeps or {}).get(self.valve)
