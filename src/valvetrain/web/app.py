@@ -38,11 +38,13 @@ from bokeh.core.property.descriptors import UnsetValueError
 from bokeh.models import NumericInput, Select
 import numpy as np
 
+from ..locale import number_text
 from ..report.html import check_range
 from ..report.i18n import TEXT
 from ..report.names import label, record_quantity_text, translate
 from ..report.russian import citation
 from ..specification import SpecError, toml_tables
+from ..units import symbol as unit_symbol
 from .draw import (CURVES, EVENTS, KINEMATIC_PLOTS, PLOT_BUCKETS, PLOT_ROOM, RANGES, SEVERITY_COLOURS, STATUS_WORDS,
                    VALVE_CARD, WORDS, Units, _array, _count, _fit, _hold, _now, _send, problem_text, thinned)
 from .form import form, parse_value, value_at, value_of, value_text
@@ -213,8 +215,9 @@ class Designer(Layout, SweepPanel, VvaPanel):
                                                             c["margin"] if c["margin"] is not None else 1e300)):
             status = "pass" if c["pass"] else "accepted" if c["accepted"] else c["severity"]
             self._check_row(out, c, base, status)
-            out["value"].append("-" if c["value"] is None else f"{c['value']:.5g} {c['unit']}".rstrip())
-            out["margin"].append("" if c["margin"] is None else f"{c['margin']:+.3g}")
+            out["value"].append("-" if c["value"] is None else
+                                f"{number_text(c['value'], '.5g', self.lang)} {unit_symbol(c['unit'], self.lang)}".rstrip())
+            out["margin"].append("" if c["margin"] is None else number_text(c["margin"], "+.3g", self.lang))
         for c in s.pending:
             self._check_row(out, c, base, "pending")
             out["value"].append("…")
@@ -229,7 +232,7 @@ class Designer(Layout, SweepPanel, VvaPanel):
         out["colour"].append(SEVERITY_COLOURS[status])
         out["quantity"].append(record_quantity_text(c, self.lang))
         b = base.get(c["quantity"])
-        out["baseline"].append("" if b is None or b["value"] is None else f"{b['value']:.5g}"
+        out["baseline"].append("" if b is None or b["value"] is None else number_text(b["value"], ".5g", self.lang)
                                + ("" if b["pass"] else " ✗"))
         out["allowed"].append(check_range(c, self.lang))
         out["source"].append(citation(translate(c["source"], "ru")) if self.lang == "ru" else c["source"])
