@@ -449,3 +449,20 @@ def test_a_message_goes_to_the_socket_in_one_turn_of_the_loop():
     assert content.count('"data":{"id"') == 2 and content.count('"data":"H4sI') == 1   # gzip, base64
     # sent at once (TCP_NODELAY): Nagle's algorithm held a frame after a small one for the page's delayed ACK
     assert set(nodelay) == {True}
+
+
+def test_the_russian_designer_names_the_options_of_a_choice_in_russian():
+    """Issue 41: a choice key's options are shown by their names in the designer's language (ru.toml [values]:
+    "pushrod" -> "со штангой и коромыслом", True -> "да"), their values in the file unchanged.  Before, the Russian
+    designer listed the file's values: "direct", "rocker", "pushrod", "hemispherical", "True", "False"."""
+    from bokeh.models import Select
+
+    d = _designer()
+    d.on_language("value", "en", "ru")
+    choices = [m for root in d.doc.roots for m in root.references()
+               if isinstance(m, Select) and m.name not in ("valve", "language")]
+    assert len(choices) > 10 and [(m.name, o) for m in choices for o in m.options if latin_words(o[1])] == []
+    layout = d.widgets["valves.intake.drive.layout"]
+    assert ("pushrod", "со штангой и коромыслом") in layout.options and layout.value == "pushrod"
+    d.on_language("value", "ru", "en")
+    assert ("pushrod", "pushrod") in layout.options

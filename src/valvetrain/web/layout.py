@@ -14,7 +14,7 @@ import numpy as np
 
 from ..languages import LANGS
 from ..report.i18n import TEXT
-from ..report.names import label
+from ..report.names import label, value_text as value_name
 from .draw import (BAR_CSS, CURVES, DOWNLOAD_JS, DRAWN_JS, INPUT_CSS, KINEMATIC_PLOTS, PAGE_JS, PAINTED_JS, PANEL_WIDTH,
                    PLOT_WIDTH, PLOTS, SAME_STYLE_JS, STAMP_JS, TABS_JS, WIDTH, WORDS, _held, _rows_follow, _stamp)
 from .form import GROUPS, form, value_at, value_text
@@ -47,8 +47,7 @@ class Layout:
         if f.kind in ("float", "int"):
             w = NumericInput(value=f.value, mode=f.kind, **common)
         elif f.kind == "choice":
-            options = ([""] if f.optional else []) + [str(o) for o in f.options]
-            w = Select(value="" if f.value is None else str(f.value), options=options, **common)
+            w = Select(value="" if f.value is None else str(f.value), options=self._options(f), **common)
         else:
             w = TextInput(value=value_text(f.value), **common)
         w.on_change("value", partial(self.on_field, f))
@@ -84,10 +83,18 @@ class Layout:
         self.spec_tabs = Tabs(tabs=tabs, width=PANEL_WIDTH, name="panel")
         return self.spec_tabs
 
+    def _options(self, f) -> list[tuple[str, str]]:
+        """The options of a choice field, each its value in the file and its name in the page's language (the
+        catalogue's ``[values]``: ``("pushrod", "со штангой и коромыслом")``); an optional key's first, empty."""
+        return ([("", "")] if f.optional else []) + [(str(o), value_name(str(o), self.lang)) for o in f.options]
+
     def _retitle(self):
-        """The panel's words in the page's language: each input's name and each tab's, set in place."""
+        """The panel's words in the page's language: each input's name, a choice's options and each tab's name, set
+        in place."""
         for path, w in self.widgets.items():
             w.title = self._title(self.fields[path])
+            if self.fields[path].kind == "choice":
+                w.options = self._options(self.fields[path])
         for tab, group in zip(self.spec_tabs.tabs, self.tab_groups, strict=True):
             tab.title = WORDS[self.lang][f"group_{group}"]
 
