@@ -132,8 +132,9 @@ def test_a_refused_value_goes_back_to_the_design_drawn_and_says_why():
 def test_the_russian_designer_refuses_a_value_in_russian():
     """Issue 41: a value out of its key's range is refused in the designer's language, its range in that language's
     numbers and units (ru.toml field.allowed: "допускается [5; 2000] мм", the field's bounds of
-    specification/models.py); a value out of a range that admits 0 says what 0 means (field.zero_or).  Before, the
-    Russian designer said "allowed [5, 2000] mm" in English."""
+    specification/models.py); a value out of a range that admits 0 says what 0 means (field.zero_or); a problem
+    across keys is said in Russian too (ru.toml spec.*).  Before, the Russian designer said "allowed [5, 2000] mm",
+    "must be smaller than engine.bore_mm = 80" in English."""
     d = _designer()
     d.on_language("value", "en", "ru")
     d.widgets["engine.bore_mm"].value = 3.0
@@ -142,6 +143,16 @@ def test_the_russian_designer_refuses_a_value_in_russian():
     d.widgets["engine.bore_mm"].value = 80.0
     d.widgets["valves.intake.spring.min_resonance_ratio"].value = 0.5
     assert "допускается 0 (проверка отключена) или [1; 100]; на экране остаётся 10" in d.status.text
+    # a problem across keys (specification/validate.py, cam_base.py): the built-in's Kurz angles 27 + 6 + 38 = 71 cam
+    # deg, half its event (opens_deg 26 + 180 + closes_deg 78 = 284 crank deg = 142 cam deg); phi1_deg 70 makes 114
+    d.widgets["valves.intake.cam.phi1_deg"].value = 70.0
+    assert d.status.text == ("изменение не принято: valves.intake.cam: phi1_deg + phi2_deg + phi3_deg = 114 град ПРВ "
+                             "должна быть равна половине угла действия phi_p0 = (opens_deg + 180 + closes_deg)/2 град "
+                             "ПКВ = 71 град ПРВ (Valve-train practical works (n.d.), формула 2.2); на экране остаётся "
+                             "прежний вариант")
+    d.widgets["valves.intake.cam.phi1_deg"].value = 27.0
+    d.widgets["valves.intake.throat_diameter_mm"].value = 85.0
+    assert d.status.text.endswith(": 85 не принято: должен быть меньше engine.bore_mm = 80; на экране остаётся 38")
 
 
 def test_a_drag_moves_the_curves_while_the_pointer_moves_and_keeps_the_design_at_the_release():

@@ -14,6 +14,7 @@ import numpy as np
 from pydantic import ValidationError, model_validator
 
 from ..errors import InputError
+from ..locale import NoteText, note
 from ..followers import REGISTRY as FOLLOWERS
 from ..laws import AsymmetricLaw
 from ..laws.records import LawRecord
@@ -155,9 +156,7 @@ def _closing_problem(at, problem):
                    text=f"{at}.cam.closing: {problem}")
 
 
-HYDRAULIC_NO_RAMP = ("its ramp takes up a clearance, which a lash_adjuster leaves none of: allowed with it a cam "
-                     "without a ramp (polydyne, polynomial with ramp = false, harmonic, three_arc, tangent, table) or "
-                     "lash_adjuster.ramp_height_mm")
+HYDRAULIC_NO_RAMP = NoteText(note("spec.hydraulic_no_ramp"))
 """Why a cam with a ramp is refused on a valve with a hydraulic lash adjuster without ``ramp_height_mm``: the ramps of
 this package take up a mechanical clearance (their height is ``clearance_mm``), and a hydraulic train has none to take
 up; its quieting ramp is given by ``[lash_adjuster] ramp_height_mm`` (:func:`ramp_height`)."""
@@ -173,7 +172,7 @@ def ramp_height(valve) -> float:
     return 0.0 if la.ramp_height is None else la.ramp_height
 
 
-def _clearance_problem(at, valve, what="the cam's ramp takes up the clearance", key="law"):
+def _clearance_problem(at, valve, what="spec.ramp_takes_clearance", key="law"):
     """The problem of a cam whose ramp takes up the clearance ([] if none): a clearance not in [0.01, 5] mm, or a ramp
     on a valve with a lash adjuster that gives no quieting ramp height ``ramp_height_mm`` (named by the cam's ``key``:
     ``law`` where the law always has a ramp, ``ramp`` where it is chosen)."""
@@ -182,7 +181,8 @@ def _clearance_problem(at, valve, what="the cam's ramp takes up the clearance", 
             return []
         value = f'"{valve.cam.law}"' if key == "law" else "true"
         return [Problem(f"{at}.cam.{key}", HYDRAULIC_NO_RAMP, value)]
-    return [Problem(f"{at}.clearance_mm", f"{what}, allowed [0.01, 5] mm", f"{valve.clearance_mm:g}")] \
+    return [Problem(f"{at}.clearance_mm", NoteText(note("spec.clearance_range", what=note(what))),
+                    f"{valve.clearance_mm:g}")] \
         if valve.clearance_mm <= 0.0 else []
 
 
@@ -227,8 +227,7 @@ class _ClosingSide(_Model):
         total = self.flank_angle_deg() + closing.flank_angle_deg()
         event = 2.0 * main_half_angle_deg(valve, engine.strokes)
         if abs(total - event) > 1e-6:
-            out.append(Problem(f"{at}.cam", f"the opening and closing flanks add up to {total:g} cam deg; they must "
-                               f"equal the main event (opens_deg + 180 + closes_deg)/2 = {event:g} cam deg"))
+            out.append(Problem(f"{at}.cam", NoteText(note("spec.flanks_event", total=total, event=event))))
         return out + self.asymmetric_problems(at, closing)
 
     def asymmetric_problems(self, at, closing):
@@ -278,11 +277,8 @@ class _SegmentAngles(_ClosingSide):
         total = self.phi1_deg + self.phi2_deg + phi3
         empty = phi3 < 0.0 or (self.law == "kurz" and phi3 == 0.0)
         if self.phi3_deg is None and empty:
-            out.append(Problem(f"{at}.cam", f"phi1_deg + phi2_deg = {self.phi1_deg + self.phi2_deg:g} leaves no room "
-                               f"for phi3 in the half-angle phi_p0 = {half:g} cam deg; allowed phi1_deg + phi2_deg < "
-                               f"{half:g}"))
+            out.append(Problem(f"{at}.cam", NoteText(note("spec.no_phi3", sum=self.phi1_deg + self.phi2_deg,
+                                                          half=half))))
         elif abs(total - half) > 1e-6:
-            out.append(Problem(f"{at}.cam", f"phi1_deg + phi2_deg + phi3_deg = {total:g} cam deg must equal the "
-                               f"half-angle phi_p0 = (opens_deg + 180 + closes_deg)/2 crank deg = {half:g} cam deg "
-                               "(Valve-train practical works (n.d.), eq. 2.2)"))
+            out.append(Problem(f"{at}.cam", NoteText(note("spec.phi_sum", total=total, half=half))))
         return out

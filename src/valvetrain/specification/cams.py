@@ -27,7 +27,7 @@ from ..laws.power_polynomial import ARTICLE_EXPONENTS
 from ..laws.measured import CHECKING_HEIGHTS_MM, MIN_VALVE_LIFT_MM, TableLaw, lobe_table, table_accuracy
 from ..laws.records import Duration, FitQuality, LawRecord, MeasuredRecord, PowerPolynomialRecord, SeedFormulas
 from ..laws.takeup import ClearanceTakeUp
-from ..locale import cited, note
+from ..locale import NoteText, cited, note
 from ..layouts import train_mass
 from ..locale.wording import fit_reason
 from ..units import DEG, MM, rad_to_deg
@@ -59,7 +59,7 @@ class KurzCam(_SegmentAngles, _CamBase, _RampKeys):
 
     def asymmetric_problems(self, at, closing) -> list[Problem]:
         if self.phi3_deg is None or closing.phi3_deg is None:
-            return [Problem(f"{at}.cam", "an asymmetric Kurz cam needs phi3_deg on both flanks")]
+            return [Problem(f"{at}.cam", NoteText(note("spec.asymmetric_phi3")))]
         return []
 
     def records(self, law, valve, engine, nose) -> tuple[LawRecord, list]:
@@ -107,7 +107,7 @@ class PolydyneCam(_CamBase, _RampKeys):
         return _rampless_or_ramped(self, valve, engine, self.ramp)
 
     def problems(self, at, valve, engine) -> list[Problem]:
-        return _clearance_problem(at, valve, "a ramp needs a clearance to take up", "ramp") if self.ramp else []
+        return _clearance_problem(at, valve, "spec.ramp_needs_clearance", "ramp") if self.ramp else []
 
 
 def _rampless_or_ramped(model, valve, engine, ramped=False):
@@ -151,7 +151,7 @@ class PolynomialCam(_CamBase, _RampKeys):
         return _rampless_or_ramped(self, valve, engine, self.ramp)
 
     def problems(self, at, valve, engine) -> list[Problem]:
-        return _clearance_problem(at, valve, "a ramp needs a clearance to take up", "ramp") if self.ramp else []
+        return _clearance_problem(at, valve, "spec.ramp_needs_clearance", "ramp") if self.ramp else []
 
 
 @register
@@ -225,8 +225,7 @@ class CombinedCam(_ClosingSide, _CamBase, _RampKeys):
         out = []
         total, half = self.flank_angle_deg(), main_half_angle_deg(valve, engine.strokes)
         if abs(total - half) > 1e-6:
-            out.append(Problem(f"{at}.cam.segments", f"the lengths add up to {total:g} cam deg; they must equal the "
-                               f"half-angle phi_p0 = {half:g} cam deg"))
+            out.append(Problem(f"{at}.cam.segments", NoteText(note("spec.segments_sum", total=total, half=half))))
         return out + _clearance_problem(at, valve)
 
 
@@ -321,8 +320,8 @@ class PowerPolynomialCam(_CamBase):
         out = _clearance_problem(at, valve)
         half = main_half_angle_deg(valve, engine.strokes)
         if self.phi1_deg >= half:
-            out.append(Problem(f"{at}.cam.phi1_deg", f"leaves no room for the negative part in the half-angle phi_p0 = "
-                               f"{half:g} cam deg; allowed phi1_deg < {half:g}", f"{self.phi1_deg:g}", " "))
+            out.append(Problem(f"{at}.cam.phi1_deg", NoteText(note("spec.no_negative_part", half=half)),
+                               f"{self.phi1_deg:g}", " "))
         return out
 
     def records(self, law, valve, engine, nose) -> tuple[LawRecord, list]:

@@ -382,13 +382,13 @@ def _rows_follow(table):
 
 
 def problem_text(p, lang) -> str:
-    """A problem's line (an :func:`~valvetrain.api.error_records` record) in ``lang``: its key, the value given and
-    its message in the language where the message is a note (:class:`~valvetrain.locale.NoteText`: a range refused),
-    else as :func:`~valvetrain.report.names.translate` says the line."""
-    if lang == "en" or not isinstance(p["message"], NoteText):
-        return translate(p["text"], lang)
-    head = p["path"] if p["value"] is None else f"{p['path']} = {p['value']}"
-    return f"{head}: {translate(p['message'], lang)}" if head else translate(p["message"], lang)
+    """A problem's line (an :func:`~valvetrain.api.error_records` record) in ``lang``: its key and the value given as
+    the line has them, its message in the language where the message is a note (:class:`~valvetrain.locale.NoteText`:
+    a range refused, a key that needs another), else as :func:`~valvetrain.report.names.translate` says the line."""
+    message, text = p["message"], p["text"]
+    if lang == "en" or not isinstance(message, NoteText) or not text.endswith(message):
+        return translate(text, lang)
+    return text[:len(text) - len(message)] + translate(message, lang)
 
 
 def _now():
