@@ -8,6 +8,7 @@ from valvetrain.laws.errors import LawError
 from valvetrain.laws.measured import lobe_table
 from valvetrain.design.drive import diagnosis_record
 from valvetrain.design.results import record as json_record
+from valvetrain.locale import note_text
 from valvetrain.locale.wording import diagnosis_text
 from valvetrain.springs import Conflict, Diagnosis, Remedy, StressWindow
 from valvetrain.springs.diagnosis import PAIR_FREQUENCIES
@@ -84,3 +85,7 @@ def test_a_law_refuses_with_its_data_and_one_message():
     assert err.value.values["angle"] == pytest.approx(np.radians(10.0))
     assert str(err.value) == ("lift_mm = -0.05 at angle_deg = 10 lies below the base circle; allowed >= -0.015 mm (3 x "
                               "accuracy_mm of measurement noise)")
+    # issue 41: its words are the catalogue's (law_error.below_base_circle), said in Russian with a decimal comma
+    assert note_text(err.value.args[0].parts, "ru") == (
+        "lift_mm = -0,05 при angle_deg = 10 лежит ниже окружности затылка; допускается ≥ -0,015 мм (3 × accuracy_mm "
+        "шума измерения)")

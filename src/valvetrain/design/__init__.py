@@ -57,7 +57,7 @@ from ..files import BreathingFileError, TableFileError
 from ..laws.records import LawRecord
 from ..locale import cited, note, verdict
 from ..specification import Spec, SpecError, crank_geometry, si, spec_document, validate
-from ..specification.messages import Problem
+from ..specification.messages import Problem, said
 from ..specification.models import Dynamics
 from ..units import MM, to_display
 from .breathing import (BreathingResults, BreathingSummary, breathing_stage, cylinder_pressure,
@@ -267,7 +267,7 @@ def run(spec, laws=None, progress=None, headlines_only=False, diagnose=True, mem
         try:
             crank_view = si(spec.crank, spec)
         except PressureFileError as exc:
-            raise SpecError([Problem("crank.pressure_file", str(exc))]) from None
+            raise SpecError([Problem("crank.pressure_file", said(exc))]) from None
     breathing = (_breathing(spec, engine, crank_view, valves, views) if spec.breathing is not None else None)
     if breathing is not None:
         for name, valve in views.items():   # the spring's gas load from the breathing's pressures: what it changes
@@ -321,7 +321,7 @@ def breathing_view(spec) -> Any:
         try:
             sides[side] = si(getattr(spec.breathing, side), spec)
         except BreathingFileError as exc:
-            raise SpecError([Problem(f"breathing.{side}.{exc.key}", str(exc))]) from None
+            raise SpecError([Problem(f"breathing.{side}.{exc.key}", said(exc))]) from None
     return replace(si(spec.breathing.model_copy(update={"intake": None, "exhaust": None}), spec), **sides)
 
 
@@ -331,7 +331,7 @@ def _breathing(spec, engine, crank_view, valves, views):
     try:
         return breathing_stage(breathing_view(spec), engine, crank_view, valves, views)
     except BreathingError as exc:
-        raise SpecError([Problem("breathing", str(exc))]) from None
+        raise SpecError([Problem("breathing", said(exc))]) from None
 
 
 def accept(found: list[Check], acceptances: list, valves: dict[str, ValveDesign]
@@ -448,7 +448,7 @@ def _valve_view(name, valve, spec):
     try:
         return si(valve, spec)
     except (TableFileError, PressureFileError) as exc:
-        raise SpecError([Problem(f"valves.{name}.cam.table_file", str(exc))]) from None
+        raise SpecError([Problem(f"valves.{name}.cam.table_file", said(exc))]) from None
 
 
 def valve_kinematics(spec, name) -> tuple[CamResult, FlowResult, ProfileResult]:

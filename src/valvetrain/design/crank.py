@@ -11,7 +11,7 @@ from ..checks import Check, check, tally
 from ..crank import dynamics, kinematics, pressure, torque
 from ..locale import NoteText, cited, note
 from ..specification import SpecError
-from ..specification.messages import Problem
+from ..specification.messages import Problem, said
 from ..units import MPA
 from .results import quantity, record
 
@@ -202,18 +202,18 @@ def wiebe_timing(timing) -> tuple[dict[str, float], tuple]:
     moved to the model's frames: the closed cycle's from the firing TDC, the overlap's from the gas-exchange TDC),
     and the words of the pressure source naming them (a note, :func:`valvetrain.locale.note`; empty without them)."""
     two_pi, four_pi = 2.0 * np.pi, 4.0 * np.pi
-    kw, said = {}, ()
+    kw, valves = {}, ()
     if "intake_closes" in timing:
         kw["intake_closes"] = np.mod(timing["intake_closes"], four_pi) - two_pi
         kw["intake_opens"] = np.mod(timing["intake_opens"] + two_pi, four_pi) - two_pi
-        said += note("crank.intake_valve", opens_deg=np.degrees(timing["intake_opens"]),
+        valves += note("crank.intake_valve", opens_deg=np.degrees(timing["intake_opens"]),
                      closes_deg=np.degrees(timing["intake_closes"]))
     if "exhaust_opens" in timing:
         kw["exhaust_opens"] = np.mod(timing["exhaust_opens"], four_pi) - two_pi
         kw["exhaust_closes"] = np.mod(timing["exhaust_closes"] + two_pi, four_pi) - two_pi
-        said += note("crank.exhaust_valve", opens_deg=np.degrees(np.mod(timing["exhaust_opens"], four_pi)),
+        valves += note("crank.exhaust_valve", opens_deg=np.degrees(np.mod(timing["exhaust_opens"], four_pi)),
                      closes_deg=np.degrees(timing["exhaust_closes"]))
-    return kw, note("crank.valve_timing", valves=said) if said else ()
+    return kw, note("crank.valve_timing", valves=valves) if valves else ()
 
 
 def _gas_pressure(c, strokes, phi, bore, radius, lam, k, timing=None):
@@ -228,7 +228,7 @@ def _gas_pressure(c, strokes, phi, bore, radius, lam, k, timing=None):
             try:
                 pressure.check_timing(model)
             except ValueError as exc:
-                raise SpecError([Problem("crank.cycle", str(exc))]) from None
+                raise SpecError([Problem("crank.cycle", said(exc))]) from None
             valves = note("crank.wiebe_valves", blowdown_deg=pressure.BLOWDOWN_DEG,
                           where=where or note("crank.valves_at_dead_centres"))
         else:
@@ -289,7 +289,7 @@ def crank_stage(c, eng, timing=None, cylinder=None) -> CrankResults:
         try:
             p_abs, source = _gas_pressure(c, strokes, phi, bore, radius, lam, k, timing)
         except pressure.PressureFileError as exc:
-            raise SpecError([Problem("crank.pressure_file", str(exc))]) from None
+            raise SpecError([Problem("crank.pressure_file", said(exc))]) from None
     masses = _masses(c, area, 2 if eng.layout == "v" else 1)
     forces = dynamics.cylinder_dynamics(phi, p_abs, c.ambient_pressure, bore, radius, lam, omega, masses, k, exact)
     beta = kinematics.rod_angle(phi, lam, k)

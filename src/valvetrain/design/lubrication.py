@@ -12,7 +12,7 @@ from ..checks import Check, check
 from ..locale import cited, note
 from ..errors import InputError
 from ..numerics import first_largest
-from ..specification.messages import Problem, SpecError
+from ..specification.messages import Problem, SpecError, said
 from ..strength import hertz_half_width
 from ..units import to_display
 from .drive_strength import contact_loads, event_load_maps
@@ -194,7 +194,7 @@ def lubrication_stage(lub, valve, engine, cam, drive, dynamics=None,
         try:
             c = contact_map(lub, cam, valve.parts.cam_width, valve.parts.contact_modulus, theta, m.force, omega)
         except UndercutError as exc:
-            raise SpecError([Problem(f"{at}.lubrication", str(exc))]) from None
+            raise SpecError([Problem(f"{at}.lubrication", said(exc))]) from None
         for i, speed in enumerate(m.speeds):
             lam = c["lam"][i]
             if not np.any(np.isfinite(lam)):

@@ -14,7 +14,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from ..breathing import ValveFlow
-from ..specification.messages import Problem, SpecError
+from ..specification.messages import Problem, SpecError, said
 from .breathing import GRID, breathing_conditions, breathing_records, cd_table, cycle_check, designed_lift
 from .lost_motion_breathing import count_areas
 from .results import quantity
@@ -83,7 +83,7 @@ def low_lobe(name, lobe, valve, engine, output, main) -> LowLobe:
     try:
         cam = law_stage(view, engine)
     except ValueError as exc:
-        problem = exc.args[0] if exc.args and isinstance(exc.args[0], Problem) else Problem("", str(exc))
+        problem = exc.args[0] if exc.args and isinstance(exc.args[0], Problem) else Problem("", said(exc))
         raise SpecError([Problem(at, f"the second lobe (the cam's law with its max_lift_mm, opens_deg and "
                                  f"closes_deg): {problem}")]) from None
     profile = profile_stage(cam, view, output)

@@ -28,7 +28,7 @@ from ..laws.base import Extremes
 from ..laws.records import LawRecord
 from ..numerics import extremum, first_largest
 from ..specification import SpecError
-from ..specification.messages import Problem
+from ..specification.messages import Problem, said
 from ..specification.validate import spring_length_problems
 from ..springs import NoSpringFits
 from ..units import MM, to_display
@@ -211,7 +211,7 @@ def law_stage(valve, engine, law=None) -> CamResult:
     try:
         law = cam.section.build(valve, engine) if law is None else law
     except ValueError as exc:
-        raise InputError(Problem("cam", str(exc))) from None
+        raise InputError(Problem("cam", said(exc))) from None
     nose_lift = law.lift_max + law.ramp_height
     low, high = (extremum(law.lift, law.breakpoints, kind)[1] for kind in ("min", "max"))
     if high > nose_lift * (1.0 + 1e-6) or low < -1e-6 * nose_lift:
@@ -525,7 +525,7 @@ def design_valve(name, valve, engine, gas, output, law=None, progress=None, cyli
     try:
         drive = drive_stage(valve, gas, geometry.cam, diagnose, gas_load)
     except NoSpringFits as exc:
-        raise SpecError([Problem(f"valves.{name}.spring", str(exc))]) from None
+        raise SpecError([Problem(f"valves.{name}.spring", said(exc))]) from None
     return driven_design(name, valve, engine, gas, output, geometry, drive, progress, cylinder, headlines_only)
 
 
@@ -555,7 +555,7 @@ def valve_geometry(name, valve, engine, output, law=None) -> ValveGeometry:
     try:
         clearance = clearance_stage(cam, valve, engine)
     except ValueError as exc:
-        raise SpecError([Problem(at, str(exc))]) from None
+        raise SpecError([Problem(at, said(exc))]) from None
     records, found = valve.cam.section.records(cam.law, valve, engine, cam.nose)
     return ValveGeometry(cam, flow_result, profile, clearance, records, tuple(found))
 
@@ -629,7 +629,7 @@ def with_gas_load(design, valve, engine, gas, output, gas_load, headlines_only=F
     try:
         drive = drive_stage(valve, gas, geometry.cam, diagnose, gas_load)
     except NoSpringFits as exc:
-        raise SpecError([Problem(f"valves.{design.name}.spring", str(exc))]) from None
+        raise SpecError([Problem(f"valves.{design.name}.spring", said(exc))]) from None
     old = design.drive
     if (drive.lines, drive.masses, drive.checks) == (old.lines, old.masses, old.checks[:len(drive.checks)]) and \
             _same_springs(drive.spring, old.spring):
@@ -646,7 +646,7 @@ def _same_springs(a, b) -> bool:
 def _stage_problem(exc, prefix) -> Problem:
     """The :class:`Problem` of a stage's ``ValueError`` under the key ``prefix`` (``valves.NAME`` or a section of
     it): the stage's own :class:`Problem` (its key, value and message) where it raised one, else its text."""
-    found = exc.args[0] if exc.args and isinstance(exc.args[0], Problem) else Problem("", str(exc))
+    found = exc.args[0] if exc.args and isinstance(exc.args[0], Problem) else Problem("", said(exc))
     return found.within(prefix)
 
 

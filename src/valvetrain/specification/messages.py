@@ -49,6 +49,12 @@ class SpecError(ValvetrainError):
         super().__init__("\n".join(self.problems))
 
 
+def said(exc) -> str:
+    """An error's message as raised: the note it was raised with (:class:`~valvetrain.locale.NoteText`, said in every
+    language), else its text."""
+    return exc.args[0] if exc.args and isinstance(exc.args[0], NoteText) else str(exc)
+
+
 def shown(value, limit=60) -> str:
     """A value as echoed in a message: its repr, cut to ``limit`` characters."""
     text = repr(value)
@@ -84,8 +90,8 @@ def message(err, laws=()) -> Problem:
         return Problem(loc, f"allowed {err['ctx']['expected']}", shown(err["input"]))
     if kind == "union_tag_not_found":
         return Problem(f"{loc}.law", f"required key is missing; allowed {', '.join(repr(law) for law in laws)}")
-    said = getattr(err.get("ctx", {}).get("error"), "args", ("",))[:1]
-    msg = said[0] if said and isinstance(said[0], NoteText) else err["msg"].removeprefix("Value error, ")
+    error = err.get("ctx", {}).get("error")
+    msg = said(error) if isinstance(error, Exception) else err["msg"].removeprefix("Value error, ")
     if isinstance(err["input"], dict):
         return Problem(loc, msg)
     return Problem(loc, msg, shown(err["input"]))
