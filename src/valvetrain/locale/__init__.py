@@ -23,7 +23,8 @@ in this folder, loaded once:
   citations (:mod:`valvetrain.report.russian`);
 * ``LANG.toml`` ``[notes]``: the notes of the checks (how a value was obtained: where, at which speed), each a code
   with parameters (:func:`note`), rendered by :func:`note_text` in every language, its numbers by
-  :func:`number_text`.
+  :func:`number_text`; so are the words of the sources (``source.*``, :func:`cited`), the refusals of a key's value
+  (``field.*``: its range; ``spec.*``: a problem across keys) and of a lift law (``law_error.*``).
 
 ``{name}`` in a text stands for the parameter ``name``; in a note, a parameter may be a note of its own (a list
 said inside the part, joined by what follows ``|`` in its field: ``{remedies:|; or }``), and ``{name:@section}``
