@@ -132,3 +132,22 @@ def test_a_limit_or_coil_mass_of_almost_nothing_is_refused(key, value, allowed):
     spec = load_spec(MARINE) if "hydraulic" in key else example_spec()
     with pytest.raises(SpecError, match=rf"^{re.escape(key)} = {value!r}: {re.escape(allowed)}$"):
         spec.replace({key: value})
+
+
+def test_a_problem_of_a_section_is_said_in_every_language():
+    """Issue 41: a section's problems (specification/models.py validators) are notes of the catalogue (spec.*), its
+    English the line the file's reader and the command line print, its Russian the designer's: idle_speed_rpm 9000
+    above the built-in's rated 7000 rpm, both problems of [engine] in one line."""
+    from valvetrain.locale import note_text
+    from valvetrain.specification import example_text
+
+    text = example_text().replace("rated_speed_rpm = 7000", "rated_speed_rpm = 7000\nidle_speed_rpm = 9000", 1)
+    text = text.replace("firing_order = [1, 3, 4, 2]", "firing_order = [1, 1, 3, 4]", 1)
+    with pytest.raises(SpecError) as err:
+        parse_spec(text)
+    (problem,) = err.value.problems
+    assert problem.message == ("idle_speed_rpm = 9000: allowed below rated_speed_rpm = 7000; firing_order = [1, 1, 3, "
+                               "4]: must list each cylinder 1...4 once")
+    assert note_text(problem.message.parts, "ru") == (
+        "idle_speed_rpm = 9000: допускается ниже rated_speed_rpm = 7000; firing_order = [1, 1, 3, 4]: каждый цилиндр "
+        "1...4 должен быть назван один раз")

@@ -3,7 +3,7 @@
 from typing import Optional
 
 from ..errors import ValvetrainError
-from ..locale import NoteText
+from ..locale import NoteText, note
 
 
 class Problem(str):
@@ -81,15 +81,16 @@ def message(err, laws=()) -> Problem:
     loc = location(err, laws)
     kind = err["type"]
     if kind == "missing":
-        return Problem(loc, "required key is missing")
+        return Problem(loc, NoteText(note("spec.missing")))
     if kind == "extra_forbidden":
-        return Problem(loc, f"unknown key (value {shown(err['input'])}); check the spelling against `valvetrain example`")
+        return Problem(loc, NoteText(note("spec.unknown_key", value=shown(err["input"]))))
     if kind == "union_tag_invalid":
-        return Problem(f"{loc}.law", f"allowed {err['ctx']['expected_tags']}", shown(err['ctx']['tag']))
+        return Problem(f"{loc}.law", NoteText(note("spec.allowed_names", names=err["ctx"]["expected_tags"])),
+                       shown(err["ctx"]["tag"]))
     if kind == "literal_error":
-        return Problem(loc, f"allowed {err['ctx']['expected']}", shown(err["input"]))
+        return Problem(loc, NoteText(note("spec.allowed_names", names=err["ctx"]["expected"])), shown(err["input"]))
     if kind == "union_tag_not_found":
-        return Problem(f"{loc}.law", f"required key is missing; allowed {', '.join(repr(law) for law in laws)}")
+        return Problem(f"{loc}.law", NoteText(note("spec.missing_law", laws=", ".join(repr(law) for law in laws))))
     error = err.get("ctx", {}).get("error")
     msg = said(error) if isinstance(error, Exception) else err["msg"].removeprefix("Value error, ")
     if isinstance(err["input"], dict):

@@ -15,6 +15,7 @@ from pydantic import Field, ValidationError, field_validator, model_validator
 
 from ..errors import InputError
 from ..layouts import LAYOUTS, layout
+from ..locale import NoteText, note
 from ..spring_materials import GRADES, grade
 from .cams import LAWS, Cam
 from .engine_sections import Breathing, Camshaft, CrankSpec, Gas, TwoStroke, resolve_path
@@ -51,27 +52,24 @@ class Engine(_Model):
     def _engine_consistency(self):
         problems = []
         if self.rod_length_mm is not None and self.rod_length_mm <= self.stroke_mm / 2.0:
-            problems.append(f"rod_length_mm = {self.rod_length_mm:g} must exceed the crank radius "
-                            f"stroke_mm/2 = {self.stroke_mm / 2.0:g} mm")
+            problems.append(note("spec.rod_exceeds", rod=self.rod_length_mm, radius=self.stroke_mm / 2.0))
         if self.idle_speed_rpm is not None and self.idle_speed_rpm >= self.rated_speed_rpm:
-            problems.append(f"idle_speed_rpm = {self.idle_speed_rpm:g}: allowed below rated_speed_rpm = "
-                            f"{self.rated_speed_rpm:g}")
+            problems.append(note("spec.idle", idle=self.idle_speed_rpm, rated=self.rated_speed_rpm))
         n = self.cylinders
         if self.firing_order is not None and sorted(self.firing_order) != list(range(1, n + 1)):
-            problems.append(f"firing_order = {shown(self.firing_order)}: must list each cylinder 1...{n} once")
+            problems.append(note("spec.firing_order", order=shown(self.firing_order), count=n))
         for key in ("crank_throws_deg", "banks", "firing_angles_deg"):
             value = getattr(self, key)
             if value is not None and len(value) != n:
-                problems.append(f"{key} has {len(value)} entries: one per cylinder ({n}) is needed")
+                problems.append(note("spec.per_cylinder", key=key, entries=len(value), count=n))
         if self.firing_angles_deg is not None and len(self.firing_angles_deg) == n:
             cycle = 180.0 * self.strokes
             if self.firing_angles_deg[0] != 0.0 or not all(0.0 <= a < cycle for a in self.firing_angles_deg):
-                problems.append(f"firing_angles_deg = {self.firing_angles_deg}: cylinder 1 fires at 0 and "
-                                f"every angle lies in [0, {cycle:g}) crank deg")
+                problems.append(note("spec.firing_angles", angles=f"{self.firing_angles_deg}", cycle=cycle))
         if self.firing_angles_deg is not None and self.crank_throws_deg is not None:
-            problems.append("give firing_angles_deg or crank_throws_deg, not both")
+            problems.append(note("spec.angles_or_throws"))
         if problems:
-            raise InputError("; ".join(problems))
+            raise InputError(NoteText(sum(problems, ())))
         return self
 
 
@@ -110,7 +108,7 @@ class Drive(_Model):
     @model_validator(mode="after")
     def _one_mass_model(self):
         if self.masses is not None and self.specific_mass_kg_m2 is not None:
-            raise InputError("give either specific_mass_kg_m2 or a [masses] table, not both")
+            raise InputError(NoteText(note("spec.mass_or_masses")))
         return self
 
 
@@ -157,18 +155,19 @@ class Spring(_Model):
                              ("wire_diameter_range_mm", "[2.0, 7.0]")):
             low, high = getattr(self, key)
             if low >= high:
-                raise InputError(f"{key} = {[low, high]} must be [low, high] with low < high (default: {default})")
+                raise InputError(NoteText(note("spec.ordered_default", key=key, pair=f"{[low, high]}",
+                                               default=default)))
         if self.installed_length_mm is not None and self.installed_length_mm[0] > self.installed_length_mm[1]:
-            raise InputError(f"installed_length_mm = {list(self.installed_length_mm)} must be [low, high] with "
-                             "low <= high")
+            raise InputError(NoteText(note("spec.installed_order", pair=f"{list(self.installed_length_mm)}")))
         names = [self.material] if isinstance(self.material, str) else self.material
         if not names:
-            raise InputError(f"material = []: name at least one of {', '.join(repr(n) for n in GRADES)}")
+            raise InputError(NoteText(note("spec.no_material", names=", ".join(repr(n) for n in GRADES))))
         for name in names:
             try:
                 grade(name)
             except InputError:
-                raise InputError(f"material = {shown(name)}: allowed {', '.join(repr(n) for n in GRADES)}") from None
+                raise InputError(NoteText(note("spec.material", name=shown(name),
+                                               names=", ".join(repr(n) for n in GRADES)))) from None
         return self
 
 
@@ -214,20 +213,20 @@ class Parts(_Model):
         problems = []
         if self.camshaft_span_mm is not None and self.cam_to_bearing_mm is not None \
                 and self.cam_to_bearing_mm >= self.camshaft_span_mm:
-            problems.append(f"cam_to_bearing_mm = {self.cam_to_bearing_mm:g} must be smaller than camshaft_span_mm = "
-                            f"{self.camshaft_span_mm:g}")
+            problems.append(note("spec.must_be_smaller", key="cam_to_bearing_mm", value=self.cam_to_bearing_mm,
+                                                         other="camshaft_span_mm", limit=self.camshaft_span_mm))
         for outer, inner in (("camshaft_diameter_mm", "camshaft_bore_mm"), ("pushrod_diameter_mm", "pushrod_bore_mm"),
                              ("rocker_shaft_diameter_mm", "rocker_shaft_bore_mm")):
             o, i = getattr(self, outer), getattr(self, inner)
             if o is not None and i >= o:
-                problems.append(f"{inner} = {i:g} must be smaller than {outer} = {o:g}")
+                problems.append(note("spec.must_be_smaller", key=inner, value=i, other=outer, limit=o))
         for ball, socket in (("ball_radius_mm", "socket_radius_mm"),
                              ("rocker_pivot_ball_radius_mm", "rocker_pivot_seat_radius_mm")):
             b, s = getattr(self, ball), getattr(self, socket)
             if b is not None and s is not None and s <= b:
-                problems.append(f"{socket} = {s:g} must exceed {ball} = {b:g}")
+                problems.append(note("spec.must_exceed", key=socket, value=s, other=ball, limit=b))
         if problems:
-            raise InputError("; ".join(problems))
+            raise InputError(NoteText(sum(problems, ())))
         return self
 
 
@@ -266,23 +265,18 @@ class Dynamics(_Model):
     def _range_and_step(self):
         problems = []
         if self.speed_range_rpm is not None and self.speed_range_rpm[0] >= self.speed_range_rpm[1]:
-            problems.append(f"speed_range_rpm = {list(self.speed_range_rpm)} must be [low, high] engine rpm with "
-                            "low < high")
+            problems.append(note("spec.speed_range", pair=f"{list(self.speed_range_rpm)}"))
         n = 360.0 / self.step_cam_deg
         if abs(n - round(n)) > 1e-6:
-            problems.append(f"step_cam_deg = {self.step_cam_deg:g} must divide the 360 deg camshaft revolution into "
-                            "whole steps (0.05, 0.1, 0.2, 0.25, 0.5, 1, ...)")
+            problems.append(note("spec.step_cam", step=self.step_cam_deg))
         if self.mass_kg is not None and self.model == "multi":
-            problems.append("mass_kg: a one-mass train's (model = \"1dof\"); the multi-mass train takes its masses "
-                            "from [drive.masses] and spring_mass_kg")
+            problems.append(note("spec.one_mass_only"))
         if self.spring_mass_kg is not None and self.model == "1dof":
-            problems.append("spring_mass_kg: the multi-mass train's coil mass (model = \"multi\"); a one-mass train "
-                            "takes the spring's share in mass_kg")
+            problems.append(note("spec.multi_mass_only"))
         if self.spring_rate_N_per_mm == 0.0 and self.spring_preload_N == 0.0:
-            problems.append("spring_rate_N_per_mm = 0 and spring_preload_N = 0: no valve spring, nothing returns the "
-                            "valve to its cam or its seat; give a rate or a preload above 0")
+            problems.append(note("spec.no_spring"))
         if problems:
-            raise InputError("; ".join(problems))
+            raise InputError(NoteText(sum(problems, ())))
         return self
 
 
@@ -306,8 +300,7 @@ class Grinding(_Model):
     @model_validator(mode="after")
     def _wear_below_radius(self):
         if self.wheel_wear_mm >= self.wheel_radius_mm:
-            raise InputError(f"wheel_wear_mm = {self.wheel_wear_mm:g} must be less than wheel_radius_mm = "
-                             f"{self.wheel_radius_mm:g}: allowed [0, wheel radius) mm")
+            raise InputError(NoteText(note("spec.wheel_wear", wear=self.wheel_wear_mm, radius=self.wheel_radius_mm)))
         return self
 
 
@@ -343,8 +336,7 @@ class LostMotion(_Model):
     @model_validator(mode="after")
     def _brake_closes_down(self):
         if self.brake_travel_mm > 0.0 and self.brake_end_area_mm2 > self.brake_open_area_mm2:
-            raise InputError(f"brake_end_area_mm2 = {self.brake_end_area_mm2:g}: allowed at most brake_open_area_mm2 "
-                             f"= {self.brake_open_area_mm2:g} (the brake's orifice closes down towards the seat)")
+            raise InputError(NoteText(note("spec.brake_area", end=self.brake_end_area_mm2, most=self.brake_open_area_mm2)))
         return self
 
 
@@ -401,30 +393,26 @@ class Hydraulic(_Model):
         problems = []
         held = self.spring_preload_N / (math.pi * (self.actuator_diameter_mm * 1e-3) ** 2 / 4.0) / 1e6
         if self.initial_pressure_MPa > self.back_pressure_MPa + held:
-            problems.append(f"initial_pressure_MPa = {self.initial_pressure_MPa:g} lifts the valve off its seat at "
-                            f"rest (its preload {self.spring_preload_N:g} N holds it up to back_pressure_MPa + F_0 / "
-                            f"A_a = {self.back_pressure_MPa + held:.4g} MPa): the drive at rest must hold the valve "
-                            "on its seat; allowed <= that pressure")
+            problems.append(note("spec.initial_lifts", initial=self.initial_pressure_MPa, preload=self.spring_preload_N,
+                                                       held=self.back_pressure_MPa + held))
         if self.speed_range_rpm is not None and self.speed_range_rpm[0] >= self.speed_range_rpm[1]:
-            problems.append(f"speed_range_rpm = {list(self.speed_range_rpm)} must be [low, high] engine rpm with "
-                            "low < high")
+            problems.append(note("spec.speed_range", pair=f"{list(self.speed_range_rpm)}"))
         if self.vapour_pressure_MPa >= self.initial_pressure_MPa:
-            problems.append(f"vapour_pressure_MPa = {self.vapour_pressure_MPa:g} must be below initial_pressure_MPa = "
-                            f"{self.initial_pressure_MPa:g}")
+            problems.append(note("spec.must_be_below", key="vapour_pressure_MPa", value=self.vapour_pressure_MPa,
+                                                       other="initial_pressure_MPa", limit=self.initial_pressure_MPa))
         if self.relief_pressure_MPa is not None and self.relief_pressure_MPa <= self.initial_pressure_MPa:
-            problems.append(f"relief_pressure_MPa = {self.relief_pressure_MPa:g} must be above initial_pressure_MPa = "
-                            f"{self.initial_pressure_MPa:g}")
+            problems.append(note("spec.must_be_above", key="relief_pressure_MPa", value=self.relief_pressure_MPa,
+                                                       other="initial_pressure_MPa", limit=self.initial_pressure_MPa))
         accumulator = None if self.lost_motion is None else self.lost_motion.accumulator_pressure_MPa
         if accumulator is not None and not self.vapour_pressure_MPa < accumulator <= self.back_pressure_MPa + held:
-            problems.append(f"lost_motion.accumulator_pressure_MPa = {accumulator:g}: allowed above vapour_pressure_MPa "
-                            f"= {self.vapour_pressure_MPa:g} and at most back_pressure_MPa + F_0 / A_a = "
-                            f"{self.back_pressure_MPa + held:.4g} MPa (above it the accumulator lifts the valve at rest)")
+            problems.append(note("spec.accumulator", accumulator=accumulator, vapour=self.vapour_pressure_MPa,
+                                                     held=self.back_pressure_MPa + held))
         if (self.relief_pressure_MPa is not None and self.fill_pressure_MPa is not None
                 and self.relief_pressure_MPa <= self.fill_pressure_MPa):
-            problems.append(f"relief_pressure_MPa = {self.relief_pressure_MPa:g} must be above fill_pressure_MPa = "
-                            f"{self.fill_pressure_MPa:g}")
+            problems.append(note("spec.must_be_above", key="relief_pressure_MPa", value=self.relief_pressure_MPa,
+                                                       other="fill_pressure_MPa", limit=self.fill_pressure_MPa))
         if problems:
-            raise InputError("; ".join(problems))
+            raise InputError(NoteText(sum(problems, ())))
         return self
 
 
@@ -464,13 +452,14 @@ class Lubrication(_Model):
     def _consistent(self):
         problems = []
         if self.full_film_friction > self.boundary_friction:
-            problems.append(f"full_film_friction = {self.full_film_friction:g} must not exceed boundary_friction = "
-                            f"{self.boundary_friction:g}")
+            problems.append(note("spec.must_not_exceed", key="full_film_friction", value=self.full_film_friction,
+                                                         other="boundary_friction", limit=self.boundary_friction))
         if self.max_contact_temperature_C <= self.oil_temperature_C:
-            problems.append(f"max_contact_temperature_C = {self.max_contact_temperature_C:g} must exceed "
-                            f"oil_temperature_C = {self.oil_temperature_C:g}")
+            problems.append(note("spec.must_exceed", key="max_contact_temperature_C",
+                                                     value=self.max_contact_temperature_C, other="oil_temperature_C",
+                                                     limit=self.oil_temperature_C))
         if problems:
-            raise InputError("; ".join(problems))
+            raise InputError(NoteText(sum(problems, ())))
         return self
 
 
@@ -534,9 +523,7 @@ class LashAdjuster(_Model):
     @model_validator(mode="after")
     def _refills(self):
         if self.supply_pressure_MPa == 0.0 and self.plunger_spring_N == 0.0:
-            raise InputError("supply_pressure_MPa = 0 and plunger_spring_N = 0: nothing drives oil through the check "
-                             "valve (the supply plus the spring's pull on the chamber is 0), the leak-down is never "
-                             "refilled; allowed either above 0")
+            raise InputError(NoteText(note("spec.nothing_refills")))
         return self
 
 
@@ -561,8 +548,7 @@ class Phaser(_Model):
     def _holds_the_designed_timing(self):
         low, high = self.advance_range_crank_deg
         if not low <= 0.0 <= high or low == high:
-            raise InputError(f"advance_range_crank_deg = [{low:g}, {high:g}]: allowed low <= 0 <= high, low < high "
-                             "(0 is the designed timing)")
+            raise InputError(NoteText(note("spec.advance_range", low=low, high=high)))
         return self
 
 
@@ -647,7 +633,7 @@ class Acceptance(_Model):
     @classmethod
     def _not_blank(cls, text):
         if not text.strip():
-            raise InputError("must not be blank: name the check and say why it is accepted")
+            raise InputError(NoteText(note("spec.blank_reason")))
         return text
 
 
@@ -673,16 +659,14 @@ class Tolerance(_Model):
         bounds = self.low is not None, self.high is not None
         if self.distribution == "uniform":
             if self.sigma is not None:
-                raise InputError(f"{self.key}: sigma is for a normal distribution; a uniform one takes half_range "
-                                 "or low and high")
+                raise InputError(NoteText(note("spec.sigma_uniform", key=self.key)))
             if not ((self.half_range is None and all(bounds)) or (self.half_range is not None and not any(bounds))):
-                raise InputError(f"{self.key}: a uniform distribution takes half_range, or low and high")
+                raise InputError(NoteText(note("spec.uniform_bounds", key=self.key)))
         else:
             if self.sigma is None or self.half_range is not None:
-                raise InputError(f"{self.key}: a normal distribution takes sigma (and optionally low, high to "
-                                 "truncate it), not half_range")
+                raise InputError(NoteText(note("spec.normal_sigma", key=self.key)))
         if all(bounds) and self.low >= self.high:
-            raise InputError(f"{self.key}: low = {self.low:g} must be below high = {self.high:g}")
+            raise InputError(NoteText(note("spec.low_below_high", key=self.key, low=self.low, high=self.high)))
         return self
 
 
@@ -708,8 +692,7 @@ class Spec(_Model):
     def _valve_names(cls, valves):
         bad = [shown(n, 40) for n in valves if not _NAME.match(n) or n in ("crank", "two_stroke", "breathing")]
         if bad:
-            raise InputError(f"valve names {', '.join(bad)}: allowed a letter, then up to 31 letters, digits, '_' and "
-                             "'-' (and not 'crank', 'two_stroke' or 'breathing', the names of the engine's chapters)")
+            raise InputError(NoteText(note("spec.valve_names", names=", ".join(bad))))
         return valves
 
     def replace(self, values) -> "Spec":
@@ -743,8 +726,7 @@ class Spec(_Model):
     @model_validator(mode="after")
     def _something_to_design(self):
         if not self.valves and self.crank is None and self.two_stroke is None and self.breathing is None:
-            raise InputError("nothing to design: give at least one [valves.NAME], [crank], [two_stroke] or [breathing] "
-                             "section")
+            raise InputError(NoteText(note("spec.nothing_to_design")))
         return self
 
 
