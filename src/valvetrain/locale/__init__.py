@@ -231,6 +231,16 @@ class NoteText(str):
         return NoteText, (self.parts,)
 
 
+def note_of(text) -> Note:
+    """The parts of a text said in every language: a :class:`NoteText`'s own, else the text as it is in every
+    language (a message of a library, a file's name).
+
+    >>> note_of(NoteText(note("field.zero_none"))), note_of("x")
+    ((('field.zero_none', ()),), (('plain', (('text', 'x'),)),))
+    """
+    return text.parts if isinstance(text, NoteText) else note("plain", text=str(text))
+
+
 def cited(*pieces) -> NoteText:
     """A source said in every language (a :class:`NoteText`): its pieces joined by ``"; "``, each a citation as
     written (a work and its locators, :func:`valvetrain.bibliography.cite`: the same in every language, its locators

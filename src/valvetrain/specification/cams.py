@@ -27,12 +27,12 @@ from ..laws.power_polynomial import ARTICLE_EXPONENTS
 from ..laws.measured import CHECKING_HEIGHTS_MM, MIN_VALVE_LIFT_MM, TableLaw, lobe_table, table_accuracy
 from ..laws.records import Duration, FitQuality, LawRecord, MeasuredRecord, PowerPolynomialRecord, SeedFormulas
 from ..laws.takeup import ClearanceTakeUp
-from ..locale import NoteText, cited, note
+from ..locale import NoteText, cited, note, note_of
 from ..layouts import train_mass
 from ..locale.wording import fit_reason
 from ..units import DEG, MM, rad_to_deg
 from .fields import RAMP_VELOCITY, SEGMENT_ANGLE, Length, _bounded, Whole, _Model
-from .messages import Problem, shown
+from .messages import Problem, said, shown
 
 from .cam_base import (REGISTRY, register, main_half_angle, main_half_angle_deg, _finite, _CamBase, _tappet_lift, _ramp, ramp_height, _clearance_problem, _RampKeys, _ClosingSide, _with_cam, _SegmentAngles)
 
@@ -90,10 +90,9 @@ class PolydyneCam(_CamBase, _RampKeys):
         r = self.r if self.r is not None else 3 * p - 4
         s = self.s if self.s is not None else 4 * p - 6
         if not p < q < r < s:
-            raise InputError(f"exponents p, q, r, s = {p:g}, {q:g}, {r:g}, {s:g} must increase strictly "
-                             "(3 <= p < q < r < s)")
+            raise InputError(NoteText(note("spec.exponents_increase", p=p, q=q, r=r, s=s)))
         if self.ramp and self.ramp_end_velocity_mm_per_deg is None:
-            raise InputError("ramp = true needs ramp_end_velocity_mm_per_deg (allowed [0.001, 1] mm/deg)")
+            raise InputError(NoteText(note("spec.ramp_velocity")))
         return self
 
     def search_variables(self, valve, engine) -> list[tuple[str, float, float]]:
@@ -138,10 +137,9 @@ class PolynomialCam(_CamBase, _RampKeys):
     def _exponents_and_ramp(self):
         k = self.exponents
         if any(b <= a for a, b in zip(k, k[1:], strict=False)) or any(e < 3 and e != 2 for e in k):
-            raise InputError(f"exponents = {k}: allowed an increasing list, each 2 or >= 3 (below 3 the jerk is "
-                             "infinite at the nose)")
+            raise InputError(NoteText(note("spec.exponent_list", exponents=f"{k}")))
         if self.ramp and self.ramp_end_velocity_mm_per_deg is None:
-            raise InputError("ramp = true needs ramp_end_velocity_mm_per_deg (allowed [0.001, 1] mm/deg)")
+            raise InputError(NoteText(note("spec.ramp_velocity")))
         return self
 
     def law_of(self, cam, lift, half, r0, **ramp) -> PolynomialLaw:
@@ -202,7 +200,7 @@ class CombinedCam(_ClosingSide, _CamBase, _RampKeys):
     def _ratio_segments_exist(self):
         bad = sorted({r.segment for r in self.ratios if r.segment > len(self.segments)})
         if bad:
-            raise InputError(f"ratios name segments {shown(bad)}; allowed 1...{len(self.segments)}")
+            raise InputError(NoteText(note("spec.ratio_segments", segments=shown(bad), count=len(self.segments))))
         return self
 
     def flank_angle_deg(self) -> float:
@@ -211,7 +209,7 @@ class CombinedCam(_ClosingSide, _CamBase, _RampKeys):
     def search_variables(self, valve, engine) -> list[tuple[str, float, float]]:
         """The ratios' values, each within five times its size plus one either side."""
         if not self.ratios:
-            raise InputError("optimize: the combined cam has no [[cam.ratios]]; name the variables with --vary")
+            raise InputError(NoteText(note("spec.no_ratios")))
         return [(f"cam.ratios.{i}.value", -5.0 * abs(r.value) - 1.0, 5.0 * abs(r.value) + 1.0)
                 for i, r in enumerate(self.ratios, 1)]
 
@@ -300,8 +298,7 @@ class PowerPolynomialCam(_CamBase):
     def _distinct_pairs(self):
         for a, b in (("n", "m"), ("p", "q"), ("r", "s"), ("t", "u")):
             if getattr(self, a) == getattr(self, b):
-                raise InputError(f"exponents {a} = {b} = {getattr(self, a):g}: the two powers of a piece must differ "
-                                 "(allowed (0.05, 50] each)")
+                raise InputError(NoteText(note("spec.distinct_powers", a=a, b=b, value=getattr(self, a))))
         return self
 
     def build(self, valve, engine) -> PowerPolynomialLaw:
@@ -313,8 +310,7 @@ class PowerPolynomialCam(_CamBase):
                                       c.phi1, c.peak_position, c.trough_position, exponents, c.reconstruction,
                                       c.sharpness)
         except ValueError as exc:
-            raise InputError(f"{exc} (keys peak_acceleration_mm_per_rad2, phi1_deg, max_lift_mm, opens_deg, "
-                             "closes_deg)") from None
+            raise InputError(NoteText(note("spec.power_keys", error=note_of(said(exc))))) from None
 
     def problems(self, at, valve, engine) -> list[Problem]:
         out = _clearance_problem(at, valve)
@@ -354,10 +350,10 @@ class HarmonicCam(_CamBase):
     @model_validator(mode="after")
     def _target_law(self):
         if self.target.law == "harmonic":
-            raise InputError("target.law = \"harmonic\": the target must be another law")
+            raise InputError(NoteText(note("spec.harmonic_target")))
         if self.harmonics < self.junction_order + 2:
-            raise InputError(f"harmonics = {self.harmonics} cannot meet junction_order + 2 = {self.junction_order + 2} "
-                             "conditions")
+            raise InputError(NoteText(note("spec.harmonic_conditions", harmonics=self.harmonics,
+                                           conditions=self.junction_order + 2)))
         return self
 
     def build(self, valve, engine) -> HarmonicLaw:
@@ -384,7 +380,7 @@ class ThreeArcCam(_CamBase):
     def _one_parameter(self):
         given = [k for k in ("nose_radius_mm", "flank_radius_mm", "flank_angle_deg") if getattr(self, k) is not None]
         if len(given) != 1:
-            raise InputError(f"give exactly one of nose_radius_mm, flank_radius_mm, flank_angle_deg (got {given or 'none'})")
+            raise InputError(NoteText(note("spec.one_arc_parameter", given=f"{given or 'none'}")))
         return self
 
     def law_of(self, cam, lift, half, r0) -> ThreeArcLaw:
@@ -407,8 +403,7 @@ class TangentCam(_CamBase):
     @model_validator(mode="after")
     def _roller(self):
         if not FOLLOWERS[self.follower].admits(self.law):
-            raise InputError("law = \"tangent\" needs follower = \"roller\" (a flat follower on straight flanks is "
-                             "degenerate; a finger's law is the valve's, not the cam's) and roller_radius_mm")
+            raise InputError(NoteText(note("spec.tangent_roller")))
         return self
 
     def law_of(self, cam, lift, half, r0) -> TangentLaw:
@@ -461,17 +456,15 @@ class TableCam(_CamBase):
     def _one_table(self):
         inline = (self.table_angles_deg, self.table_lifts_mm)
         if (self.table_file is None) == all(v is None for v in inline):
-            raise InputError("give the table as table_file or as table_angles_deg and table_lifts_mm, one of the two")
+            raise InputError(NoteText(note("spec.one_table")))
         if self.table_file is None:
             if None in inline or len(inline[0]) != len(inline[1]):
                 sizes = [None if v is None else len(v) for v in inline]
-                raise InputError(f"table_angles_deg and table_lifts_mm need as many points each (got {sizes[0]} and "
-                                 f"{sizes[1]})")
+                raise InputError(NoteText(note("spec.table_sizes", angles=sizes[0], lifts=sizes[1])))
             back = np.flatnonzero(np.diff(inline[0]) <= 0.0)
             if back.size:
                 i = int(back[0]) + 1
-                raise InputError(f"table_angles_deg[{i}] = {inline[0][i]:g} must be larger than the previous "
-                                 f"{inline[0][i - 1]:g}")
+                raise InputError(NoteText(note("spec.table_order", i=i, angle=inline[0][i], previous=inline[0][i - 1])))
         return self
 
     def read_extras(self, root) -> dict:
@@ -487,7 +480,7 @@ class TableCam(_CamBase):
             return self._checked_law(valve, engine)
         except ValueError as exc:
             where = "table_angles_deg, table_lifts_mm" if self.table_file is None else shown_path(self.table_file)
-            raise InputError(f"{where}: {exc}") from None
+            raise InputError(NoteText(note("spec.in_table", where=where, error=note_of(said(exc))))) from None
 
     def _checked_law(self, valve, engine):
         cam, i_k = valve.cam, valve.rocker_ratio
@@ -502,16 +495,14 @@ class TableCam(_CamBase):
                        per_point, accuracy_stated=cam.accuracy is not None)
         table_lift = law.lift_max * i_k
         if valve.max_lift is not None and abs(valve.max_lift - table_lift) > 0.01 * table_lift:
-            raise InputError(f"max_lift_mm = {valve.max_lift / MM:g} disagrees with the table's valve lift "
-                             f"{table_lift / MM:.4g} mm; allowed {0.99 * table_lift / MM:.4g}...{1.01 * table_lift / MM:.4g}"
-                             " mm (+-1 %), or leave it out: the table sets the lift")
+            raise InputError(NoteText(note("spec.table_lift", lift=valve.max_lift / MM, table=table_lift / MM,
+                                           low=0.99 * table_lift / MM, high=1.01 * table_lift / MM)))
         nose = 2.0 * law.centre
         lo, hi = (0.0, 180.0) if valve.kind == "intake" else (-180.0, 0.0)
         opens, closes = (rad_to_deg(nose + 2.0 * t) for t in (law.valve_opens, law.valve_closes))
         if closes <= lo or opens >= hi:
-            raise InputError(f"the lobe opens the valve from {opens:.4g} to {closes:.4g} crank deg after the "
-                             f"gas-exchange TDC and misses the {valve.kind} stroke, {lo:g}...{hi:g} crank deg; check "
-                             "table_angle and table_zero (a table from the firing TDC needs table_zero = \"firing_tdc\")")
+            raise InputError(NoteText(note("spec.lobe_misses", opens=opens, closes=closes, kind=valve.kind, lo=lo,
+                                           hi=hi)))
         return law
 
     def nose_crank(self, valve, law) -> float:

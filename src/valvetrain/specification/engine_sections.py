@@ -12,6 +12,7 @@ from typing import Annotated, ClassVar, Literal, Optional
 from pydantic import Field, model_validator
 
 from ..errors import InputError
+from ..locale import NoteText, note
 from ..files import read_cd_table, read_indicator, read_valve_lift
 from .fields import Length, Pair, _bounded, Whole, _Model
 
@@ -70,37 +71,30 @@ class Camshaft(_Model):
         for key in ("section_diameters_mm", "section_bores_mm"):
             value = getattr(self, key)
             if value is not None and len(value) != n:
-                problems.append(f"{key} has {len(value)} entries: one per section of section_lengths_mm "
-                                f"({n}) is needed")
+                problems.append(note("spec.per_section", key=key, entries=len(value), count=n))
         if self.section_bores_mm is not None and len(self.section_bores_mm) == n:
             share = 1.0 - 2.0 * CAMSHAFT_MIN_WALL
             thin = [(i, b, d) for i, (b, d) in enumerate(zip(self.section_bores_mm, self.section_diameters_mm))
                     if b > share * d * (1.0 + 1e-12)]
             if thin:
                 i, b, d = thin[0]
-                problems.append(f"section_bores_mm[{i}] = {b:g}: allowed at most {share * d:g}, {share:g} x "
-                                f"section_diameters_mm[{i}] (a wall of at least {CAMSHAFT_MIN_WALL:g} x the diameter)"
-                                + (f"; {len(thin) - 1} more section(s) as thin" if len(thin) > 1 else ""))
+                problems.append(note("spec.thin_bore", i=i, bore=b, most=share * d, share=share, wall=CAMSHAFT_MIN_WALL)
+                                + (note("spec.more_thin", count=len(thin) - 1) if len(thin) > 1 else ()))
         length = sum(self.section_lengths_mm)
         positions = self.cylinder_positions_mm
         if sorted(positions) != positions or len(set(positions)) != len(positions):
-            problems.append(f"cylinder_positions_mm = {positions}: allowed increasing positions from the "
-                            "drive end")
+            problems.append(note("spec.positions_increase", positions=f"{positions}"))
         journals = self.journal_positions_mm
         if len(journals) < 2 or sorted(journals) != journals or len(set(journals)) != len(journals):
-            problems.append(f"journal_positions_mm = {journals}: at least two journals, increasing from the "
-                            "drive end")
+            problems.append(note("spec.journals", journals=f"{journals}"))
         elif positions and (positions[0] <= journals[0] or positions[-1] >= journals[-1]):
-            problems.append(f"cylinder_positions_mm = {positions}: every lobe lies between the first and the "
-                            f"last journal ({journals[0]:g} ... {journals[-1]:g} mm)")
+            problems.append(note("spec.lobes_between", positions=f"{positions}", first=journals[0], last=journals[-1]))
         if max(positions + journals, default=0.0) > length:
-            problems.append(f"a lobe or journal lies beyond the shaft's length sum(section_lengths_mm) = "
-                            f"{length:g} mm")
+            problems.append(note("spec.beyond_shaft", length=length))
         if self.cylinders is not None and len(self.cylinders) != len(positions):
-            problems.append(f"cylinder_positions_mm has {len(positions)} entries: one per cylinder of "
-                            f"cylinders ({len(self.cylinders)}) is needed")
+            problems.append(note("spec.positions_cylinders", entries=len(positions), count=len(self.cylinders)))
         if problems:
-            raise InputError("; ".join(problems))
+            raise InputError(NoteText(sum(problems, ())))
         return self
 
 
@@ -164,16 +158,15 @@ class CrankSpec(_Model):
         for part in ("piston", "rod", "crank"):
             given = getattr(self, f"{part}_kg") is not None, getattr(self, f"specific_{part}_kg_m2") is not None
             if all(given):
-                problems.append(f"give {part}_kg or specific_{part}_kg_m2, not both")
+                problems.append(note("spec.mass_not_both", part=part))
             elif not any(given):
-                problems.append(f"{part}_kg or specific_{part}_kg_m2 is required (Power units manual (n.d.), eq. 2.6 and Table 2.1)")
+                problems.append(note("spec.mass_required", part=part))
         if self.pressure_file is None and self.cycle is None:
-            problems.append("the cylinder pressure is needed: give pressure_file (crank_deg,pressure_MPa or "
-                            "volume_cm3,pressure_MPa) or a [crank.cycle] table with heat_input_J")
+            problems.append(note("spec.pressure_needed"))
         if self.cycle is not None and self.compression_ratio is None:
-            problems.append("[crank.cycle] needs compression_ratio")
+            problems.append(note("spec.cycle_ratio"))
         if problems:
-            raise InputError("; ".join(problems))
+            raise InputError(NoteText(sum(problems, ())))
         return self
 
 
@@ -190,10 +183,9 @@ class Port(_Model):
     def _geometry(self):
         if self.kind == "inlet":
             if self.lower_edge_mm is None or self.height_mm is None:
-                raise InputError("an inlet port needs lower_edge_mm (below the crown at TDC) and height_mm "
-                                 "(Valve-train practical works (n.d.), eq. 8.4)")
+                raise InputError(NoteText(note("spec.inlet_port")))
         elif (self.height_mm is None) == (self.opens_before_bdc_deg is None):
-            raise InputError("give height_mm or opens_before_bdc_deg (one of them) for an exhaust or transfer port")
+            raise InputError(NoteText(note("spec.port_height_or_timing")))
         return self
 
 
@@ -246,11 +238,11 @@ class BreathingSide(_Model):
     def _pairs(self):
         problems = []
         if (self.runner_length_mm is None) != (self.runner_diameter_mm is None):
-            problems.append("give runner_length_mm and runner_diameter_mm together (or neither: no runner)")
+            problems.append(note("spec.runner_pair"))
         if self.cd_file is not None and self.cd_diameter_mm is None:
-            problems.append("cd_file needs cd_diameter_mm, the reference diameter D of its L/D")
+            problems.append(note("spec.cd_diameter"))
         if problems:
-            raise InputError("; ".join(problems))
+            raise InputError(NoteText(sum(problems, ())))
         return self
 
 
@@ -305,10 +297,9 @@ class Breathing(_Model):
     @model_validator(mode="after")
     def _something_to_run(self):
         if not self.conditions and self.curve is None:
-            raise InputError("give at least one [[breathing.conditions]] or a [breathing.curve]")
+            raise InputError(NoteText(note("spec.no_conditions")))
         if self.curve is not None and self.curve.speed_range_rpm[0] >= self.curve.speed_range_rpm[1]:
-            raise InputError(f"curve.speed_range_rpm = {list(self.curve.speed_range_rpm)}: must be [low, high] with "
-                             "low < high")
+            raise InputError(NoteText(note("spec.curve_range", pair=f"{list(self.curve.speed_range_rpm)}")))
         return self
 
 
