@@ -19,6 +19,7 @@ from .. import flow, geometry
 from ..checks import Check, failed, ranked, tally
 from ..crank.kinematics import displacement
 from ..errors import InputError
+from ..locale import NoteText, note
 from ..followers import follower_of
 from ..followers.finger import FingerKinematics
 from ..followers.flat import FlatContact
@@ -215,25 +216,23 @@ def law_stage(valve, engine, law=None) -> CamResult:
     nose_lift = law.lift_max + law.ramp_height
     low, high = (extremum(law.lift, law.breakpoints, kind)[1] for kind in ("min", "max"))
     if high > nose_lift * (1.0 + 1e-6) or low < -1e-6 * nose_lift:
-        raise InputError(Problem("cam", f"the lift runs from {low / MM:.4g} to {high / MM:.4g} mm; allowed 0 to the nose "
-                                 f"lift {nose_lift / MM:.4g} mm (the law's angles and ramp velocity do not fit together)"))
+        raise InputError(Problem("cam", NoteText(note("spec.lift_range", low=low / MM, high=high / MM,
+                                                      nose=nose_lift / MM))))
     event = law.end - law.start
     if not event < 2.0 * np.pi:
         ramp = math.degrees(law.ramp_angle)
-        raise InputError(Problem("cam", f"the cam event lasts {math.degrees(event):.4g} cam deg; allowed < 360" + (
-            f" (a ramp of {ramp:.4g} cam deg on each flank: raise ramp_end_velocity_mm_per_deg or lower "
-            "clearance_mm)" if ramp > 0.0 else "")))
+        raise InputError(Problem("cam", NoteText(note("spec.event_over_revolution", event=math.degrees(event),
+                                                      ramps=note("spec.long_ramps", ramp=ramp) if ramp > 0.0 else ()))))
     lift = law.lift_max * valve.rocker_ratio
     if lift > MAX_LIFT_TO_THROAT * valve.throat_diameter:
-        allowed = (f"allowed at most {MAX_LIFT_TO_THROAT:g} x throat_diameter_mm = "
-                   f"{MAX_LIFT_TO_THROAT * valve.throat_diameter / MM:.4g} mm (the curtain area already equals the "
-                   "throat area at a quarter of the diameter)")
+        allowed = note("spec.lift_to_throat", share=MAX_LIFT_TO_THROAT,
+                       most=MAX_LIFT_TO_THROAT * valve.throat_diameter / MM)
         if cam.law == "table":
             key = "cam.table_file" if cam.table_file is not None else "cam.table_lifts_mm"
-            raise InputError(Problem(key, f"the measured valve lift = {lift / MM:.4g} mm: {allowed}"))
-        raise InputError(Problem("max_lift_mm", allowed, f"{lift / MM:.4g} mm"))
+            raise InputError(Problem(key, NoteText(note("spec.measured_lift", lift=lift / MM, allowed=allowed))))
+        raise InputError(Problem("max_lift_mm", NoteText(allowed), f"{lift / MM:.4g} mm"))
     if cam.law == "table":     # the spring's lengths against the lift, checked at validation where it is given
-        found = spring_length_problems(valve.spring.section, lift / MM, "the measured valve lift")
+        found = spring_length_problems(valve.spring.section, lift / MM, note("spec.measured_valve_lift"))
         if found:
             raise InputError(found[0])
     follower = follower_of(cam)
@@ -371,10 +370,8 @@ def clearance_stage(cam, valve, engine, advance=0.0) -> Optional[ClearanceResult
     i = int(np.argmin(gap))
     angle = float(wrap_crank(crank[i]))
     if gap[i] <= 0.0:
-        raise InputError(f"the valve hits the piston: the valve-piston gap falls to {gap[i] / MM:.4g} mm at "
-                         f"{math.degrees(angle):.4g} crank deg (Shang Hanji (1988), eqs. 2.13-2.14, with piston_gap_tdc_mm = "
-                         f"{valve.piston_gap_tdc / MM:g}); allowed a gap > 0: lower the lift near TDC or deepen the "
-                         "valve pocket")
+        raise InputError(NoteText(note("spec.valve_hits_piston", gap=gap[i] / MM, angle=math.degrees(angle),
+                                       tdc_gap=valve.piston_gap_tdc / MM)))
     return ClearanceResult(float(gap[i]), angle, wrap_crank(crank), gap)
 
 

@@ -119,8 +119,8 @@ def spring_length_problems(spring, lift_mm, lift_key="max_lift_mm") -> list[Prob
         The spring section, its keys in mm.
     lift_mm : float or None
         The valve lift [mm]; None where not known yet (a measured table's, known once its law is built).
-    lift_key : str
-        What the lift is called in the messages.
+    lift_key : str or tuple
+        What the lift is called in the messages: a key, or a note (:func:`valvetrain.locale.note`).
     """
     installed, free, out = spring.installed_length_mm, spring.max_free_length_mm, []
     below = []
