@@ -98,8 +98,8 @@ def drive_links(dyn, valve, k, at) -> tuple[tuple[Optional[float], ...], tuple[s
     if total is not None:
         rest = 1.0 / total - known
         if rest <= 0.0:
-            raise SpecError([Problem(f"{at}.{key}", f"stiffer than the links estimated from [parts] alone "
-                                     f"({1.0 / known * MM:.5g} N/mm in series); allowed below that", f"{total * MM:g}")])
+            raise SpecError([Problem(f"{at}.{key}", NoteText(note("spec.stiffer_than_links", series=1.0 / known * MM)),
+                                     f"{total * MM:g}")])
         share = len(unknown) / rest
         notes.append(NoteText(note("dynamics.links_share", links=named, share_N_mm=share * MM, total_N_mm=total * MM)))
     else:
@@ -160,8 +160,8 @@ def train_spring(dyn, valve, law, line, mass, cam_speed, at) -> tuple[float, flo
     lift = valve.rocker_ratio * law.lift_max
     rate = spring_rate(mass, nose_acceleration(law, cam_speed, valve.rocker_ratio), reserve, preload, lift)
     if rate <= 0.0:
-        raise SpecError([Problem(f"{at}.dynamics.spring_preload_N", "above the spring force K_3 M |j_min| the rated "
-                                 "speed needs, so no positive rate follows; give spring_rate_N_per_mm", f"{preload:g}")])
+        raise SpecError([Problem(f"{at}.dynamics.spring_preload_N", NoteText(note("spec.preload_above_need")),
+                                 f"{preload:g}")])
     return rate, preload, NoteText(note("dynamics.spring_rate_sized", rate_N_mm=rate * MM, reserve=reserve,
                                         preload_N=preload))
 
@@ -225,22 +225,21 @@ def adjuster_load(valve, law, drive, cam_speed: float, at: str) -> tuple[float, 
     la = valve.lash_adjuster
     ratio = adjuster_ratio(valve, law)
     if ratio <= 0.0 and follower_of(valve.cam).pivot_linkage(valve.cam.base_radius - law.ramp_height) is None:
-        raise SpecError([Problem(f"{at}.lash_adjuster.location", "needs a lever ratio > 1 (an end-pivot finger): "
-                                 f"rocker_ratio x the follower's own = {lever_ratio(valve, law):.4g}", '"pivot"', " ")])
+        raise SpecError([Problem(f"{at}.lash_adjuster.location",
+                                 NoteText(note("spec.pivot_lever", ratio=lever_ratio(valve, law))), '"pivot"', " ")])
     if ratio <= 0.0:   # a finger's linkage along the adjuster's axis: its lever ratio alone does not decide
-        linkage = (f"the finger's linkage on the heel circle moves the valve by {ratio:.4g} x the plunger's extension "
-                   f"along the adjuster's axis (lever ratio {lever_ratio(valve, law):.4g}); allowed a motion ratio > 0")
+        linkage = note("spec.pivot_linkage", ratio=ratio, lever=lever_ratio(valve, law))
         if la.axis_angle is None:
-            raise SpecError([Problem(f"{at}.lash_adjuster.location", f"{linkage} (the axis is the valve's: "
-                                     "axis_angle_deg not given)", '"pivot"')])
-        raise SpecError([Problem(f"{at}.lash_adjuster.axis_angle_deg", linkage, f"{math.degrees(la.axis_angle):g}")])
+            raise SpecError([Problem(f"{at}.lash_adjuster.location",
+                                     NoteText(note("spec.valve_axis", linkage=linkage)), '"pivot"')])
+        raise SpecError([Problem(f"{at}.lash_adjuster.axis_angle_deg", NoteText(linkage),
+                                 f"{math.degrees(la.axis_angle):g}")])
     force = adjuster_reference_force(valve, law, drive, cam_speed, ratio)
     supply = la.supply_pressure * hla.plunger_area(la.plunger_diameter)
     if force <= la.plunger_spring_N + supply:
         raise SpecError([Problem(f"{at}.lash_adjuster.plunger_spring_N",
-                                 f"with the supply's {supply:.4g} N the adjuster pushes harder than the largest force on "
-                                 f"it, {force:.4g} N (motion ratio {ratio:.4g}): it would hold the valve open; allowed "
-                                 f"below {max(force - supply, 0.0):.4g} N", f"{la.plunger_spring_N:g}")])
+                                 NoteText(note("spec.adjuster_pushes", supply=supply, force=force, ratio=ratio,
+                                               most=max(force - supply, 0.0))), f"{la.plunger_spring_N:g}")])
     return ratio, force
 
 
@@ -423,12 +422,12 @@ def _multi_train(valve, links, springs, lash, kw, at, arm):
     m, drive = valve.drive.masses, chain(valve)
     need = drive.train_masses
     if m is None:
-        raise SpecError([Problem(f"{at}.dynamics.model", f"needs [{at}.drive.masses] with valve_kg, "
-                                 f"{', '.join(need)} (the masses of the drive parts)", '"multi"', " ")])
+        raise SpecError([Problem(f"{at}.dynamics.model",
+                                 NoteText(note("spec.multi_masses", at=at, keys=", ".join(need))), '"multi"', " ")])
     missing = [key for link in drive.links for key in link.missing(m, arm)]
     if missing:
-        raise SpecError([Problem(f"{at}.dynamics.model", f"with layout \"{drive.name}\" needs positive "
-                                 f"drive.masses.{', '.join(missing)}", '"multi"', " ")])
+        raise SpecError([Problem(f"{at}.dynamics.model", NoteText(note("spec.multi_missing", layout=drive.name,
+                                                                       keys=", ".join(missing))), '"multi"', " ")])
     k = valve.rocker_ratio
     values = iter(links)
     nodes, stiffness, between = [], [], [next(values)]   # between: the stiffnesses since the last node [N/m at the valve]
@@ -516,15 +515,16 @@ def swept_range(dyn, engine) -> tuple[float, float]:
     return tuple(dyn.speed_range)
 
 
-def sweep_excess(network, cam_speeds, revs, step_deg) -> str | None:
+def sweep_excess(network, cam_speeds, revs, step_deg) -> tuple | None:
     """``None`` where a sweep of ``network`` at ``cam_speeds`` [rad/s] for ``revs`` revolutions at ``step_deg``
     [cam deg] is within :data:`MAX_SWEEP_WORK` and :data:`MAX_SWEEP_BYTES`, else what it would take against them
-    (``"about 1e+10 integrator steps x elements (allowed 2e+09) and ..."``), the words of every refusal of a sweep."""
+    (a note: ``"about 1e+10 integrator steps x elements (allowed 2e+09) and ..."``), said in every refusal of a
+    sweep."""
     work, size = sweep_size(network, cam_speeds, revs, step_deg)
     if work <= MAX_SWEEP_WORK and size <= MAX_SWEEP_BYTES:
         return None
-    return (f"about {work:.3g} integrator steps x elements (allowed {MAX_SWEEP_WORK:.3g}) and {size / 1e6:.0f} MB of "
-            f"recorded revolutions (allowed {MAX_SWEEP_BYTES / 1e6:.0f} MB)")
+    return note("spec.sweep_size", work=work, most_work=MAX_SWEEP_WORK, megabytes=size / 1e6,
+                most_megabytes=MAX_SWEEP_BYTES / 1e6)
 
 
 def refuse_large_sweep(dyn, train, cam_speeds, revs, key, asked) -> None:
@@ -534,8 +534,8 @@ def refuse_large_sweep(dyn, train, cam_speeds, revs, key, asked) -> None:
     step_deg = dyn.step / DEG
     excess = None if dyn.allow_large_sweep else sweep_excess(train.network(), cam_speeds, revs, step_deg)
     if excess:
-        raise SpecError([Problem(key, f"{asked} x revolutions = {revs} at step_cam_deg = {step_deg:g} is {excess}; "
-                                 "fewer speeds or revolutions or a larger step, or allow_large_sweep = true to run it")])
+        raise SpecError([Problem(key, NoteText(note("spec.large_sweep", asked=asked, revolutions=revs, step=step_deg,
+                                                    excess=excess)))])
 
 
 def valve_motion(dyn, valve, engine, law, drive, speeds, at, key) -> SweepResult:

@@ -18,7 +18,7 @@ from . import two_step as ts
 from ..bibliography import cite
 from ..checks import Check, check
 from ..dynamics.sweep import sweep
-from ..locale import cited, note
+from ..locale import NoteText, cited, note
 from ..spring_materials import grade
 from ..specification.messages import Problem, SpecError
 from ..springs import DEFLECTION_RATIO_RANGE, enveloping_line
@@ -296,9 +296,9 @@ def _arm_sweep(name, switching, travel, train, speeds):
     dynamics chapter allows."""
     excess = sweep_excess(train.network(), speeds, 3, SWEEP_STEP_DEG)
     if excess:
-        raise SpecError([Problem(f"valves.{name}.switching.contact_stiffness_N_per_mm", f"with speeds = "
-                                 f"{switching.speeds} the unlatched arm's sweep is {excess}: a softer contact, a "
-                                 "heavier arm or fewer speeds", f"{switching.contact_stiffness * 1e-3:g}")])
+        raise SpecError([Problem(f"valves.{name}.switching.contact_stiffness_N_per_mm",
+                                 NoteText(note("spec.arm_sweep", speeds=switching.speeds, excess=excess)),
+                                 f"{switching.contact_stiffness * 1e-3:g}")])
     return sweep(travel, train, speeds, revolutions=3, step_deg=SWEEP_STEP_DEG)
 
 
