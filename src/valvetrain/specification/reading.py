@@ -12,6 +12,7 @@ import tomllib
 import tomli_w
 
 from ..files import read_text, shown_path
+from ..locale import NoteText, note
 from .messages import WHOLE_FILE, Problem, SpecError, shown
 from .engine_sections import resolve_path
 from .models import Spec, validate
@@ -73,12 +74,12 @@ def toml_tables(text, source="<string>") -> dict:
     try:
         tables = tomllib.loads(text.removeprefix("\ufeff"))
     except tomllib.TOMLDecodeError as exc:
-        raise SpecError([Problem(source, f"not valid TOML: {exc}{_quoted_line(text, exc)}")]) from None
+        raise SpecError([Problem(source, NoteText(note("spec.not_toml", error=f"{exc}{_quoted_line(text, exc)}")))]) \
+            from None
     except RecursionError:
-        raise SpecError([Problem(source, "arrays or tables nested too deeply to be a specification")]) from None
+        raise SpecError([Problem(source, NoteText(note("spec.nested_too_deeply")))]) from None
     if tables.get("valves") == {}:
-        raise SpecError([Problem("valves", "an empty table: give each valve a [valves.NAME] table, or leave [valves] "
-                                 "out for a design without valves")])
+        raise SpecError([Problem("valves", NoteText(note("spec.empty_valves")))])
     return tables
 
 
@@ -105,9 +106,10 @@ def load_spec(path) -> Spec:
     try:
         text = read_text(path)
     except OSError as exc:
-        raise SpecError([Problem(shown_path(path), f"cannot read the file: {exc.strerror or exc}")]) from None
+        said = NoteText(note("spec.unreadable", error=f"{exc.strerror or exc}"))
+        raise SpecError([Problem(shown_path(path), said)]) from None
     except UnicodeDecodeError as exc:
-        raise SpecError([Problem(shown_path(path), f"cannot read the file: not UTF-8 text ({exc.reason})")]) from None
+        raise SpecError([Problem(shown_path(path), NoteText(note("spec.not_utf8", reason=exc.reason)))]) from None
     return parse_spec(text, shown_path(path), Path(path).resolve().parent)
 
 
