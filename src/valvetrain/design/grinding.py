@@ -16,7 +16,7 @@ import numpy as np
 
 from .. import cam_grinding
 from ..checks import Check, check
-from ..locale import cited, note
+from ..locale import NoteText, cited, note
 from ..errors import InputError
 from ..specification.messages import Problem
 from ..units import MM
@@ -131,11 +131,8 @@ def grinding_stage(grinding, cam, name, export_step) -> tuple[GrindingResult, li
     if base is None:
         base = cam_grinding.default_master_base_radius(heel, r_w, i, r_m)
         if base <= 0.0:
-            raise InputError(Problem(
-                "master_follower_radius_mm", f"the master's heel radius bar_ratio x (cam heel radius + "
-                f"wheel_radius_mm) - master_follower_radius_mm = {base / MM:.4g} mm is not positive; allowed "
-                f"master_follower_radius_mm < {i * (heel + r_w) / MM:.4g} mm, or give master_base_radius_mm",
-                f"{r_m / MM:g}"))
+            raise InputError(Problem("master_follower_radius_mm", NoteText(note(
+                "spec.master_heel", heel=base / MM, most=i * (heel + r_w) / MM)), f"{r_m / MM:g}"))
     theta = np.unique(np.concatenate([np.linspace(-np.pi, np.pi, DENSE, endpoint=False), law.breakpoints]))
     ok, factor = cam_grinding.grindable(derivs, theta, heel, r_w, follower)
     cam_contour, rho = law.profile(theta, heel, follower)[:2]

@@ -328,17 +328,15 @@ def hydraulic_stage(valve, law, engine, gas, name, nose, cylinder=None) -> tuple
     revolutions = np.concatenate([speeds, [speed] * (1 if cylinder is None else 2)]) * to_cam
     work = float(np.sum(2.0 * math.pi / revolutions)) / drive.time_step * (drive.pipe.reaches + 1)
     if work > MAX_NODE_STEPS:
-        raise InputError(Problem(
-            "reaches", f"the simulation and the {speeds.size} speeds of the sweep take {work:.3g} node updates of the "
-            f"pipe grid (time step {drive.time_step * 1e6:.3g} us); allowed <= {MAX_NODE_STEPS:.0e}: use fewer "
-            "reaches, a longer pipe, fewer speeds or higher ones", f"{drive.pipe.reaches}"))
+        raise InputError(Problem("reaches", NoteText(note(
+            "spec.pipe_work", speeds=speeds.size, work=work, step_us=drive.time_step * 1e6, most=MAX_NODE_STEPS)),
+            f"{drive.pipe.reaches}"))
     slowest = float(revolutions.min())
     if 2.0 * math.pi / slowest / drive.time_step > MAX_REVOLUTION_STEPS:
         key = "speed_rpm" if slowest == speed * to_cam else "speed_range_rpm"
-        raise InputError(Problem(
-            key, f"a revolution at {to_display(slowest / to_cam, 'rpm'):.4g} rpm takes "
-            f"{2.0 * math.pi / slowest / drive.time_step:.3g} time steps of {drive.time_step * 1e6:.3g} us; allowed <= "
-            f"{MAX_REVOLUTION_STEPS:.0e} (each step's values are kept): a higher speed or fewer reaches",
+        raise InputError(Problem(key, NoteText(note(
+            "spec.revolution_steps", speed_rpm=to_display(slowest / to_cam, "rpm"),
+            steps=2.0 * math.pi / slowest / drive.time_step, step_us=drive.time_step * 1e6, most=MAX_REVOLUTION_STEPS)),
             f"{to_display(slowest / to_cam, 'rpm'):.4g}"))
     diameter, port = head_load(valve, gas)
     force = gas_force(valve, gas, engine, nose, cylinder)

@@ -20,7 +20,7 @@ from ..checks import Check, check
 from ..dynamics.events import BOUNCE_TOLERANCE
 from ..errors import InputError
 from ..hydraulic_actuation import DriveResult, simulate
-from ..locale import cited, note
+from ..locale import NoteText, cited, note
 from ..specification.messages import Problem
 from ..units import DEG, MM, cam_per_crank, to_display
 from .dynamics_checks import SEATING_VELOCITY_MAX
@@ -189,17 +189,15 @@ def lost_motion_stage(valve, law, engine, gas, name, nose, hydraulic, cylinder=N
     for phi in lm.solenoid_opens:
         theta = cam_angle(phi, nose, engine.strokes)
         if not law.start < theta < law.end:
-            raise InputError(Problem(key, f"the solenoid valve opens at {to_display(phi, 'crank deg'):g} crank deg, "
-                                     f"outside the cam's lift: allowed within ({to_display(low, 'crank deg'):.4g}, "
-                                     f"{to_display(high, 'crank deg'):.4g}) crank deg from the gas-exchange TDC",
-                                     f"{to_display(phi, 'crank deg'):g}"))
+            raise InputError(Problem(key, NoteText(note(
+                "spec.solenoid_opens", opens=to_display(phi, "crank deg"), low=to_display(low, "crank deg"),
+                high=to_display(high, "crank deg"))), f"{to_display(phi, 'crank deg'):g}"))
         thetas.append(theta)
     closes = -math.inf if lm.solenoid_closes is None else cam_angle(lm.solenoid_closes, nose, engine.strokes)
     if lm.solenoid_closes is not None and not (law.start - 0.1 < closes < min(thetas)):
-        raise InputError(Problem("lost_motion.solenoid_closes_crank_deg", "the solenoid valve shuts at "
-                                 f"{to_display(lm.solenoid_closes, 'crank deg'):g} crank deg: allowed after "
-                                 f"{to_display(float(cycle_angle(nose, law.start - 0.1, engine.strokes)), 'crank deg'):.4g} "
-                                 "crank deg (the start of the simulated revolution) and before the earliest opening",
+        raise InputError(Problem("lost_motion.solenoid_closes_crank_deg", NoteText(note(
+            "spec.solenoid_shuts", shuts=to_display(lm.solenoid_closes, "crank deg"),
+            first=to_display(float(cycle_angle(nose, law.start - 0.1, engine.strokes)), "crank deg"))),
                                  f"{to_display(lm.solenoid_closes, 'crank deg'):g}"))
     drive = hydraulic_drive(valve.hydraulic)
     drive = replace(drive, valve=replace(drive.valve, stop=hydraulic.stop),
