@@ -9,7 +9,8 @@ import numpy as np
 from ..breathing import ValveFlow
 from ..breathing.cycle import CYCLE, MAX_WORK, BreathingError, work
 from ..checks import Check
-from ..specification.messages import Problem, SpecError
+from ..locale import NoteText, note, note_of
+from ..specification.messages import Problem, SpecError, said
 from ..units import to_display
 from .breathing import GRID, breathing_conditions, breathing_records, cd_table, cycle_check, designed_lift, lift_areas
 from .hydraulic_actuation import cycle_angle
@@ -65,9 +66,8 @@ def with_breathing(result, name, design, view, breathing, b) -> tuple[LostMotion
         (c.solenoid_opens, c.valve_closes, r) for c, r in zip(result.closings, result.responses, strict=True)]
     asked = len(runs) * sum(work(e, c, b.max_cycles) for e, c in zip(engines, given, strict=True))
     if asked > MAX_WORK:
-        raise SpecError([Problem(f"valves.{name}.hydraulic.lost_motion.{KEY}", f"{len(runs) - 1} timings and the full "
-                                 f"lift at {len(given)} conditions of [breathing] ask for {asked:.3g} cell-steps; "
-                                 f"allowed at most {MAX_WORK:.3g}: fewer timings or conditions",
+        raise SpecError([Problem(f"valves.{name}.hydraulic.lost_motion.{KEY}", NoteText(note(
+            "spec.timings_work", timings=len(runs) - 1, conditions=len(given), asked=asked, most=MAX_WORK)),
                                  f"{[to_display(a, 'crank deg') for a in view.hydraulic.lost_motion.solenoid_opens]}")])
     rows, found = [], []
     for opens, closes, r in runs:
@@ -79,10 +79,12 @@ def with_breathing(result, name, design, view, breathing, b) -> tuple[LostMotion
         try:
             records = breathing_records(lifted, given, b.cycle_tolerance, b.max_cycles)
         except BreathingError as exc:
-            which = "the full lift" if opens is None else f"{to_display(opens, 'crank deg'):g} crank deg"
+            which = (note("spec.full_lift") if opens is None else
+                     note("spec.solenoid_timing", opens=to_display(opens, "crank deg")))
             raise SpecError([Problem(f"valves.{name}.hydraulic" + ("" if opens is None else f".lost_motion.{KEY}"),
-                                     f"the breathing of {which} cannot run, the drive lifting the valve "
-                                     f"{to_display(float(r.valve_lift.max()), 'mm'):.3g} mm: {exc}")]) from None
+                                     NoteText(note("spec.breathing_of", which=which,
+                                                   lift=to_display(float(r.valve_lift.max()), "mm"),
+                                                   error=note_of(said(exc)))))]) from None
         for c, out in zip(given, records, strict=True):
             g = out.figures
             rows.append(ClosingBreath(opens, closes, g.speed, g.intake_pressure, g.trapped_mass,

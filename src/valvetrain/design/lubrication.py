@@ -9,7 +9,7 @@ import numpy as np
 from .. import tribology
 from ..bibliography import cite
 from ..checks import Check, check
-from ..locale import cited, note
+from ..locale import NoteText, cited, note
 from ..errors import InputError
 from ..numerics import first_largest
 from ..specification.messages import Problem, SpecError, said
@@ -212,8 +212,7 @@ def lubrication_stage(lub, valve, engine, cam, drive, dynamics=None,
             if worst is None or lam[j] < worst[0]:
                 worst = (float(lam[j]), float(speed), float(theta[j]))
     if worst is None:
-        raise SpecError([Problem(f"{at}.lubrication", "the follower never touches the cam under load over the speed "
-                                 "range")])
+        raise SpecError([Problem(f"{at}.lubrication", NoteText(note("spec.never_touches")))])
     rows.sort(key=lambda row: row[0])
     per = LubricationPerSpeed(*(tuple(col) for col in zip(*rows, strict=True)))
     hot = int(np.argmax(per.max_contact_temperature))

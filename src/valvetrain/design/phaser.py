@@ -21,8 +21,8 @@ from .. import camshaft as shaft
 from ..breathing import BreathingError, ValveFlow
 from ..breathing.cycle import MAX_WORK, work
 from ..checks import Check, check
-from ..locale import cited, note
-from ..specification.messages import Problem, SpecError
+from ..locale import NoteText, cited, note, note_of
+from ..specification.messages import Problem, SpecError, said
 from ..units import to_display
 from .breathing import (BreathingResults, breathe_conditions, breathing_conditions, breathing_records, cycle_check,
                         gas_opening_load)
@@ -201,8 +201,8 @@ def phased_events(name, cam, valve, engine, advance) -> PhasedEvents:
     try:
         gap = clearance_stage(cam, valve, engine, advance)
     except ValueError as exc:
-        raise SpecError([Problem(_key(name), f"at an advance of {to_display(advance, 'crank deg'):g} crank deg "
-                                 f"{exc}")]) from None
+        raise SpecError([Problem(_key(name), NoteText(note("spec.at_advance", advance=to_display(advance, "crank deg"),
+                                                           error=note_of(said(exc)))))]) from None
     return PhasedEvents(advance, cam.valve_opens - advance, cam.valve_closes - advance,
                         None if gap is None else gap.min_gap, None if gap is None else gap.angle)
 
@@ -270,8 +270,8 @@ def _breathe(name, at, run):
     try:
         return run()
     except BreathingError as exc:
-        raise SpecError([Problem(_key(name), f"at an advance of {to_display(at, 'crank deg'):g} crank deg the "
-                                 f"breathing cannot run: {exc}")]) from None
+        raise SpecError([Problem(_key(name), NoteText(note(
+            "spec.advance_breathing", advance=to_display(at, "crank deg"), error=note_of(said(exc)))))]) from None
 
 
 def best_phase(name, objective, engine, kind, condition, b, bracket, start) -> tuple[float, Any, int]:
@@ -368,10 +368,8 @@ def phaser_stage(name, phaser, valve, engine, design, breathing=None, b=None, ca
     asked = (sum(work(e, c, b.max_cycles) for each in engines for e, c in zip(each, conditions, strict=True))
              + searched * sum(work(e, c, b.max_cycles) for e, c in zip(breathing.engines, conditions, strict=True)))
     if asked > MAX_WORK:
-        raise SpecError([Problem(_key(name, "step_crank_deg"), f"{len(phases)} phases of "
-                                 f"{len(conditions)} conditions and the search of the best phase at each ask for "
-                                 f"{asked:.3g} cell-steps; allowed at most "
-                                 f"{MAX_WORK:.3g} (about half a minute): a larger step or fewer conditions",
+        raise SpecError([Problem(_key(name, "step_crank_deg"), NoteText(note(
+            "spec.phases_work", phases=len(phases), conditions=len(conditions), asked=asked, most=MAX_WORK)),
                                  f"{to_display(phaser.step, 'crank deg'):g}")])
     pairs = [(breathing.conditions, breathing.curve) if a == 0.0   # phase 0: the breathing chapter's own result
              else _breathe(name, a, lambda e=e: breathe_conditions(e, b, given, swept))
