@@ -14,6 +14,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from ..breathing import ValveFlow
+from ..locale import NoteText, note
 from ..specification.messages import Problem, SpecError, said
 from .breathing import GRID, breathing_conditions, breathing_records, cd_table, cycle_check, designed_lift
 from .lost_motion_breathing import count_areas
@@ -84,12 +85,10 @@ def low_lobe(name, lobe, valve, engine, output, main) -> LowLobe:
         cam = law_stage(view, engine)
     except ValueError as exc:
         problem = exc.args[0] if exc.args and isinstance(exc.args[0], Problem) else Problem("", said(exc))
-        raise SpecError([Problem(at, f"the second lobe (the cam's law with its max_lift_mm, opens_deg and "
-                                 f"closes_deg): {problem}")]) from None
+        raise SpecError([Problem(at, NoteText(note("spec.second_lobe", problem=problem.note())))]) from None
     profile = profile_stage(cam, view, output)
     if profile.undercut:
-        raise SpecError([Problem(at, "the second lobe's profile is undercut (it cannot be made): a longer event "
-                                 "(opens_deg, closes_deg) or a lower max_lift_mm")])
+        raise SpecError([Problem(at, NoteText(note("spec.second_lobe_undercut")))])
     return LowLobe(cam, flow_stage(cam, view, engine), profile, (main.nose - cam.nose) / 2.0)
 
 
@@ -107,10 +106,8 @@ def below_main(name, theta, u_main, u_low) -> None:
     over = u_low - u_main
     if over.max() > ABOVE:
         at = int(np.argmax(over))
-        raise SpecError([Problem(f"valves.{name}.{KEY}", f"the second lobe lifts the roller {over[at] * 1e3:.3g} mm "
-                                 f"above the main lobe at {np.degrees(theta[at]):.4g} camshaft deg from the main "
-                                 "lobe's nose: allowed at most the main lobe's lift everywhere (its events within the "
-                                 "valve's, its max_lift_mm lower)")])
+        raise SpecError([Problem(f"valves.{name}.{KEY}", NoteText(note(
+            "spec.second_lobe_above", above=over[at] * 1e3, angle=np.degrees(theta[at]))))])
 
 
 def lift_on_grid(cam) -> np.ndarray:
@@ -150,9 +147,7 @@ def mode_breathing(name, design, view, lobe, breathing, b) -> tuple[tuple[ModeBr
     kind = design.kind
     side = getattr(b, kind)
     if side.measured_lift is not None or side.lift == "dynamics":
-        raise SpecError([Problem(f"valves.{name}.{KEY}", f"the unlatched mode's breathing replaces the valve's "
-                                 f"designed lift: allowed with the designed lift of breathing.{kind} (not a "
-                                 "measured or dynamic one)")])
+        raise SpecError([Problem(f"valves.{name}.{KEY}", NoteText(note("spec.unlatched_breathing", kind=kind)))])
     table = cd_table(side)
     given, _ = breathing_conditions(b)
     engines = breathing.engines[:len(given)]

@@ -36,6 +36,14 @@ class Problem(str):
         return Problem(f"{prefix}.{self.path}" if self.path else prefix, self.message, self.value,
                        text=f"{prefix}.{self}")
 
+    def note(self) -> tuple:
+        """The line as a note (:func:`valvetrain.locale.note`): its key and value as written, its message in every
+        language where it is a :class:`~valvetrain.locale.NoteText`; parts joined by ``""``."""
+        text = str(self)
+        if isinstance(self.message, NoteText) and text.endswith(self.message):
+            return note("plain", text=text[:len(text) - len(self.message)]) + self.message.parts
+        return note("plain", text=text)
+
     def __reduce__(self):
         return Problem, (self.path, self.message, self.value, "", str(self))
 
