@@ -292,3 +292,18 @@ def test_a_note_says_a_list_and_a_word_in_its_language():
                           + note("spring.remedy.reduced_mass_tried", percent=10.0))) == \
         "None passes with no installed length limit, a reduced mass down to 10 %."
     assert note_text(note("spring.stress_window", stress_needed_MPa=720.0, stress_allowed_MPa=752.0)) == ""
+
+
+def test_every_problem_of_a_specification_is_said_in_every_language():
+    """Issue 41: a problem the package finds in a specification (a :class:`~valvetrain.specification.messages.Problem`)
+    says what is wrong by a note of the catalogue (``spec.*``, ``field.*``, a law's ``law_error.*``), the designer
+    says it in its language: no problem is made with a message written in the code as English text.  The two left
+    are the programmatic API's (a specification that is not text) and a count with thousands separators."""
+    english = []
+    for path in PACKAGE.rglob("*.py"):
+        for node in ast.walk(ast.parse(path.read_text("utf-8"))):
+            if isinstance(node, ast.Call) and getattr(node.func, "id", None) == "Problem" and len(node.args) > 1:
+                if isinstance(node.args[1], (ast.Constant, ast.JoinedStr, ast.BinOp)):
+                    english.append((path.name, ast.unparse(node.args[1])[:40]))
+    assert sorted(english) == [("reading.py", "f'a specification is TOML text or a dict"),
+                               ("reading.py", "f'{len(text):,} characters; allowed at m")]

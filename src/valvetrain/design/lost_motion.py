@@ -208,10 +208,9 @@ def lost_motion_stage(valve, law, engine, gas, name, nose, hydraulic, cylinder=N
     revolutions = 1.0 / omega + np.sum(1.0 / (swept * to_cam))     # [s/rad] of one timing
     work = len(thetas) * 2.0 * math.pi * revolutions / drive.time_step * (drive.pipe.reaches + 1)
     if work > MAX_NODE_STEPS:
-        raise InputError(Problem(key, f"{len(thetas)} timings" + (f" at the simulated speed and the {swept.size} of "
-                                 "the sweep" if lm.sweep else "") + f" take {work:.3g} node updates of the passage's "
-                                 f"grid; allowed <= {MAX_NODE_STEPS:.0e}: fewer timings or fewer reaches"
-                                 + (" (or sweep = false)" if lm.sweep else ""), f"{len(thetas)}"))
+        code = "spec.swept_timings_work" if lm.sweep else "spec.timings_node_work"
+        raise InputError(Problem(key, NoteText(note(code, timings=len(thetas), speeds=swept.size, work=work,
+                                                    most=MAX_NODE_STEPS)), f"{len(thetas)}"))
     force = gas_force(valve, gas, engine, nose, cylinder)
     responses = tuple(simulate(law, replace(drive, solenoid=replace(drive.solenoid, opens=theta)), omega,
                                gas_force=force) for theta in thetas)

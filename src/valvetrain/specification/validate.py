@@ -329,22 +329,21 @@ def set_keys(document, values) -> dict[str, Any]:
     for key, value in values.items():
         parts = key.split(".")
         if not all(parts):
-            raise InputError(Problem(key, "an empty name in the dotted key"))
+            raise InputError(Problem(key, _said("spec.empty_name")))
         node = out
         for i, part in enumerate(parts[:-1]):
             if part not in node:
                 if i == 1 and parts[0] == "valves":
-                    raise InputError(Problem(key, f"the specification has no valve {part!r} (valves: "
-                                             f"{', '.join(node) or 'none'})"))
+                    raise InputError(Problem(key, _said("spec.no_such_valve", valve=repr(part),
+                                                        valves=", ".join(node) or "none")))
                 node[part] = {}
             node = node[part]
             if isinstance(node, list):
-                raise InputError(Problem(key, f"{'.'.join(parts[:i + 1])} is an array, not a table: a dotted key "
-                                         "does not reach into it; set the whole array"))
+                raise InputError(Problem(key, _said("spec.key_in_array", table=".".join(parts[:i + 1]))))
             if not isinstance(node, dict):
-                raise InputError(Problem(key, f"{'.'.join(parts[:i + 1])} is a value, not a table"))
+                raise InputError(Problem(key, _said("spec.key_in_value", table=".".join(parts[:i + 1]))))
         if isinstance(node.get(parts[-1]), dict):
-            raise InputError(Problem(key, "a table, not a value; give one of its keys"))
+            raise InputError(Problem(key, _said("spec.table_not_value")))
         node[parts[-1]] = value
     return out
 
