@@ -54,6 +54,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError
+from ..locale import NoteText, note
 from ..numerics import bracketed_roots
 from ..results import quantity
 from .base import ROLLER_LAWS, register
@@ -169,34 +170,27 @@ class PivotedFollower(RollerFollower):
 
     def geometry_problem(self, heel, lift) -> tuple[str, str, str, str] | None:
         """Where the finger cannot sit on the heel circle of radius ``heel`` [m] or cannot give the valve lift ``lift``
-        [m]: ``(key of the cam section, its value as given, what is wrong (lengths in mm), joiner)`` for a
+        [m]: ``(key of the cam section, its value as given, what is wrong (a note, lengths in mm), joiner)`` for a
         :class:`~valvetrain.specification.messages.Problem`; else None."""
         p = np.hypot(self.pivot_x, self.pivot_y)
         g0 = heel + self.radius
         if not abs(p - self.roller_arm) <= g0 <= p + self.roller_arm:
             return ("finger_roller_arm_mm", f"{self.roller_arm * 1e3:g}",
-                    f"from the pivot (finger_pivot_x_mm, finger_pivot_y_mm) {p * 1e3:g} mm from the cam centre "
-                    f"cannot reach the roller centre's heel circle, base_radius_mm + roller_radius_mm = "
-                    f"{g0 * 1e3:g} mm", " ")
+                    NoteText(note("spec.finger_reach", pivot=p * 1e3, heel=g0 * 1e3)), " ")
         lb = self._pad[0]
         reach = self.reach(heel)
         if lift >= reach:
             return ("finger_valve_angle_deg", f"{np.degrees(self.valve_angle):g}",
-                    f"the valve pad {lb * 1e3:g} mm from the pivot (finger_pad_arm_mm, finger_pad_drop_mm) reaches a "
-                    f"valve lift of {reach * 1e3:.4g} mm at most; max_lift_mm + clearance_mm = {lift * 1e3:g}", ": ")
+                    NoteText(note("spec.finger_pad", pad=lb * 1e3, reach=reach * 1e3, lift=lift * 1e3)), ": ")
         psi = np.linspace(self.base_angle(heel), float(self.angle_of(lift, heel)), 201)
         radius = np.hypot(*self.centre(psi))
         if not np.all(np.diff(radius) > 0.0):
             return ("finger_valve_angle_deg", f"{np.degrees(self.valve_angle):g}",
-                    "the finger's geometry (its pivot, arms, pad and valve angle) opens the valve only if the roller "
-                    f"centre moves from {radius[0] * 1e3:.4g} to {radius[-1] * 1e3:.4g} mm from the cam centre, not "
-                    "steadily outwards: no cam can push it open", ": ")
+                    NoteText(note("spec.finger_inwards", start=radius[0] * 1e3, end=radius[-1] * 1e3)), ": ")
         ratio = self.lever_ratio(psi)
         if not np.all(ratio > 0.0):
             return ("finger_pivot_x_mm", f"{self.pivot_x * 1e3:g}",
-                    "with the finger's geometry the finger turns clockwise as the cam lifts it (lever ratio G / L_r "
-                    f"from {ratio[0]:.4g} to {ratio[-1]:.4g} over the lift); allowed: a finger whose angle grows as the "
-                    "cam lifts its roller (lever ratio > 0)", ": ")
+                    NoteText(note("spec.finger_clockwise", start=ratio[0], end=ratio[-1])), ": ")
         return None
 
     def reach(self, heel) -> float:
