@@ -10,9 +10,9 @@ import numpy as np
 
 from ..checks import check
 from ..errors import InputError
+from ..locale import cited, note
 from .base import LiftLaw
 from .errors import LawError
-from ..locale import cited, note
 
 
 class AsymmetricLaw(LiftLaw):

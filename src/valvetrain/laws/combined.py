@@ -17,9 +17,10 @@ by exact integration from the ramp's end (h0, v0, zero acceleration).  The unkno
 import numpy as np
 
 from ..errors import InputError
-from .base import RampedLaw, SymmetricLaw, segment_index
-from .ramps import make_ramp
 from ..locale import cited, note
+from .base import RampedLaw, SymmetricLaw, segment_index
+from .errors import LawError
+from .ramps import make_ramp
 
 # shape name -> list of basis functions of the local coordinate t = x / L in [0, 1]:
 # (acceleration, its first integral, its second integral, its derivative), each scaled to the segment length L.
@@ -147,12 +148,11 @@ class CombinedLaw(RampedLaw, SymmetricLaw):
         needed = np.any(np.abs(a) > 1e-14 * np.abs(a).max(), axis=1)   # shapes meet some junctions by themselves
         a, b = a[needed], b[needed]
         if a.shape[0] != n:
-            raise InputError(f"combined law: {n} unknown amplitudes but {a.shape[0]} conditions (junctions, closure, "
-                             "ratios); add or remove segment freedom or ratios")
+            raise LawError("combined_conditions", unknowns=n, conditions=a.shape[0])
         try:
             x = np.linalg.solve(a, b)
         except np.linalg.LinAlgError:
-            raise InputError("combined law: the conditions do not fix the amplitudes (singular system)") from None
+            raise LawError("combined_singular") from None
         self._offsets = offsets
         return x
 

@@ -10,9 +10,9 @@ are not available to this package: this is the general classical form.
 import numpy as np
 
 from ..errors import InputError
+from ..locale import cited, note
 from .base import RampedLaw, SymmetricLaw, segment_index
 from .ramps import make_ramp
-from ..locale import cited, note
 
 
 def constant_acceleration_levels(nose_lift, ramp_height, ramp_velocity, phi1, phi2, phi3=0.0, kappa=1.0) -> tuple[float, float]:

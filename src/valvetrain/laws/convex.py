@@ -7,8 +7,9 @@ The classical arc cams have no ramp: the lift starts on the base circle of radiu
 import numpy as np
 
 from ..errors import InputError
-from .base import RampedLaw, SymmetricLaw
 from ..locale import cited, note
+from .base import RampedLaw, SymmetricLaw
+from .errors import LawError
 
 
 def three_arc_geometry(base_radius, lift, half_angle, nose_radius) -> tuple[float, float, float]:
@@ -46,12 +47,11 @@ def three_arc_geometry(base_radius, lift, half_angle, nose_radius) -> tuple[floa
     a = base_radius + lift - nose_radius
     den = base_radius - nose_radius - a * np.cos(half_angle)
     if not (0.0 < nose_radius < base_radius and den > 0.0):
-        raise InputError(f"three-arc cam: nose radius {nose_radius:.6g} does not fit (allowed 0 < r2 < r0 and "
-                         "r0 - r2 - a cos(phi_p0) > 0)")
+        raise LawError("three_arc_nose", nose=nose_radius)
     r1 = (base_radius**2 + a**2 - nose_radius**2 - 2.0 * base_radius * a * np.cos(half_angle)) / (2.0 * den)
     s1 = a * np.sin(half_angle) / (r1 - nose_radius)
     if not (r1 > base_radius and 0.0 < s1 < 1.0):
-        raise InputError("three-arc cam: the radii give no tangent flank-nose junction (r1 > r0, 0 < sin phi1 < 1)")
+        raise LawError("three_arc_junction")
     phi1 = float(np.arcsin(s1))
     return float(r1), phi1, float(half_angle - phi1)
 
@@ -70,7 +70,7 @@ def _solve_nose_radius(base_radius, lift, half_angle, target):
     vals = np.array(vals)
     ok = np.flatnonzero(np.isfinite(vals[:-1]) & np.isfinite(vals[1:]) & (np.sign(vals[:-1]) != np.sign(vals[1:])))
     if ok.size == 0:
-        raise InputError("three-arc cam: no nose radius gives the requested flank radius or angle")
+        raise LawError("three_arc_no_nose")
     i = ok[0]
     return brentq(lambda r2: target(*three_arc_geometry(base_radius, lift, half_angle, r2)[:2]), grid[i], grid[i + 1],
                   xtol=1e-14)
@@ -205,8 +205,7 @@ class TangentLaw(_ArcCam):
             raise InputError("tangent cam: the half action angle must lie in (0, 90) deg")
         self.r2 = float(self.r0 - self._lift * c / (1.0 - c))
         if not 0.0 < self.r2 < self.r0:
-            raise InputError(f"tangent cam: nose radius {self.r2:.6g} outside (0, r0): lengthen the event or "
-                             "lower the lift")
+            raise LawError("tangent_nose", nose=self.r2)
         self.a = self.r0 + self._lift - self.r2
         centre = np.array([0.0, self.a]) + (self.r2 + self.rr) * np.array([np.sin(self.phi_p0), c])
         self.theta_t = float(np.arctan2(centre[0], centre[1]))

@@ -8,12 +8,12 @@ import numpy as np
 
 from ..checks import check
 from ..errors import InputError
+from ..locale import cited, note
 
 from .base import RampedLaw, SymmetricLaw
 from .errors import LawError
 from .polydyne import _falling, polynomial_junction_coefficients
 from .ramps import make_ramp
-from ..locale import cited, note
 
 
 class DynamicLaw(RampedLaw, SymmetricLaw):

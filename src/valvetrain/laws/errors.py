@@ -30,6 +30,13 @@ DISPLAY_UNITS = {
     "law_error.fit_leaves_table": {"low": "mm", "high": "mm", "top": "mm", "below": "mm", "above": "mm"},
     "law_error.row_off_fit": {"lift": "mm", "angle": "deg", "off": "mm", "most": "mm", "share": "%"},
     "law_error.valve_never_opens": {"ramp": "mm"},
+    "law_error.three_arc_nose": {},
+    "law_error.three_arc_junction": {},
+    "law_error.three_arc_no_nose": {},
+    "law_error.tangent_nose": {},
+    "law_error.combined_conditions": {},
+    "law_error.combined_singular": {},
+    "law_error.phases_exceed_half": {"phases": "deg", "half": "deg"},
 }
 """The display unit of each value of a reason's message, by the message's code in the catalogue's ``[notes]``
 (:data:`valvetrain.units.UNITS`; ``"%"``: a fraction in per cent; a value without a unit is shown as it is)."""

@@ -13,10 +13,10 @@ import numpy as np
 
 from ..checks import check
 from ..errors import InputError
+from ..locale import cited, note
 from ..numerics import level_span
 from .base import LiftLaw, Segment
 from .errors import LawError
-from ..locale import cited, note
 
 
 def harmonic_limit(half_angle, natural_frequency, cam_speed) -> float:

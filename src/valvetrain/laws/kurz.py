@@ -13,9 +13,9 @@ from numba import njit
 
 from ..checks import check
 from ..errors import InputError
+from ..locale import cited, note
 from .base import RampedLaw, SymmetricLaw, mirror
 from .ramps import make_ramp, ramp_at
-from ..locale import cited, note
 
 RAMP_VELOCITY_RANGE_MM_PER_DEG = (0.008, 0.022)
 """Recommended tappet velocity at the end of the ramp [mm/deg cam] (Valve-train practical works (n.d.), eq. 2.1)."""

@@ -13,12 +13,12 @@ import numpy as np
 
 from ..checks import check
 from ..errors import InputError
+from ..locale import cited, note
 from ..numerics import extremum, level_span
 from ..units import DEG, MM
 from .base import RampedLaw, Segment
 from .errors import LawError
 from .fits import binned, choose_fit, gcv_score, harmonic_order, smoothing_spline, spline_dof, symmetry_shift
-from ..locale import cited, note
 
 CHECKING_HEIGHTS_MM = (0.1, 0.5, 1.0, 1.27)
 """Standard checking heights [mm]: 0.1, 0.5, 1.0 mm and 0.050 in = 1.27 mm."""

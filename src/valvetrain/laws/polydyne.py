@@ -18,9 +18,9 @@ from numba import njit
 
 from ..checks import check
 from ..errors import InputError
+from ..locale import cited, note
 from .base import RampedLaw, SymmetricLaw, mirror
 from .ramps import make_ramp, ramp_at
-from ..locale import cited, note
 
 JUNCTION_DIGITS = 50
 """Decimal digits of the arithmetic that solves :func:`polynomial_junction_coefficients` (the floats of its matrix

@@ -30,9 +30,9 @@ import numpy as np
 
 from ..checks import check
 from ..errors import InputError
+from ..locale import cited, note
 from .base import SymmetricLaw, member_values
 from .errors import LawError
-from ..locale import cited, note
 
 ARTICLE_EXPONENTS = dict(n=1.0, m=4.0, p=0.5, q=4.5, r=0.3, s=2.5, t=4.0, u=7.0)
 """Exponents of the article's optimum.  n, m, p, q are printed (UkrSURT Proceedings (2019), 'n=1; m=4;
@@ -294,9 +294,7 @@ class PowerPolynomialLaw(SymmetricLaw):
         self.phi2 = need / (self.v_e * gain)
         self.dwell = 2.0 * (self.phi_p0 - self.phi1 - self.phi2)
         if self.dwell < -1e-12:
-            raise InputError(f"power_polynomial law: phi1 + phi2 = {np.degrees(self.phi1 + self.phi2):.4g} deg exceeds "
-                             f"the main half angle {np.degrees(self.phi_p0):.4g} deg (phi2 from the lift); raise "
-                             "peak_acceleration or phi1")
+            raise LawError("phases_exceed_half", phases=self.phi1 + self.phi2, half=self.phi_p0)
         self.dwell = max(self.dwell, 0.0)
         self.a_g = -self.v_e / (self.phi2 * sumF)
         pieces += [(name, frac * self.phi2, self.a_g, shape) for name, (frac, shape) in zip(("e-g", "g-h"), neg)]

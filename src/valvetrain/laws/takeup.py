@@ -12,10 +12,10 @@ guidance for the seating velocity is about 0.3-0.5 m/s at rated speed).
 import numpy as np
 
 from ..errors import InputError
+from ..locale import cited, note
 from ..numerics import level_span
 from .base import LiftLaw, Segment
 from .errors import LawError
-from ..locale import cited, note
 
 
 class ClearanceTakeUp(LiftLaw):
