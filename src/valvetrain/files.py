@@ -16,9 +16,15 @@ import numpy as np
 
 from .crank.pressure import MIN_PRESSURE_MPA, PressureFileError
 from .errors import InputError
+from .locale import NoteText, note
 
 ECHO_CHARS = 40
 """Longest text of a file echoed in a message (a longer row or header is cut)."""
+
+
+def _said(code, **params) -> NoteText:
+    """A file's refusal said in every language: the code of ``[notes]`` and its parameters."""
+    return NoteText(note(code, **params))
 
 
 def _short(text):
@@ -61,9 +67,9 @@ def _text(path, error):
     try:
         return read_text(path).removeprefix("\ufeff")
     except OSError as exc:
-        raise error(f"{shown_path(path)}: cannot read the file: {exc.strerror or exc}") from None
+        raise error(_said("file.unreadable", where=shown_path(path), error=f"{exc.strerror or exc}")) from None
     except UnicodeDecodeError as exc:
-        raise error(f"{shown_path(path)}: cannot read the file: not UTF-8 text ({exc.reason})") from None
+        raise error(_said("file.not_utf8", where=shown_path(path), reason=exc.reason)) from None
 
 
 def read_columns(path, headers, error) -> tuple[tuple[str, ...], list[tuple[int, ...]]]:
@@ -89,24 +95,26 @@ def read_columns(path, headers, error) -> tuple[tuple[str, ...], list[tuple[int,
     rows = [(n, r) for n, r in enumerate(csv.reader(text.splitlines()), start=1)
             if r and not r[0].lstrip().startswith("#")]
     if not rows:
-        raise error(f"{shown_path(path)}: the file is empty")
+        raise error(_said("file.empty", where=shown_path(path)))
     n0, header = rows[0]
     key = tuple(h.strip() for h in header)
     if key not in headers:
         allowed = " or ".join(repr(",".join(h)) for h in headers)
-        raise error(f"{shown_path(path)}:{n0}: header {_short(','.join(key))!r}: allowed {allowed}")
+        raise error(_said("file.header", where=shown_path(path), line=n0, header=repr(_short(",".join(key))),
+                          allowed=allowed))
     out = []
     for n, r in rows[1:]:
         if len(r) != len(key):
-            raise error(f"{shown_path(path)}:{n}: {_short(','.join(r))!r} has {len(r)} values; allowed {len(key)} "
-                        f"({_short(','.join(key))}), separated by commas, with a point as the decimal separator")
+            raise error(_said("file.row_values", where=shown_path(path), line=n, row=repr(_short(",".join(r))),
+                              count=len(r), expected=len(key), header=_short(",".join(key))))
         try:
             values = tuple(float(v) for v in r)
         except ValueError:
             count = {2: "two", 3: "three"}.get(len(key), str(len(key)))
-            raise error(f"{shown_path(path)}:{n}: {_short(','.join(r))!r} is not {count} numbers") from None
+            raise error(_said("file.not_numbers", where=shown_path(path), line=n, row=repr(_short(",".join(r))),
+                              count=count)) from None
         if not all(np.isfinite(values)):
-            raise error(f"{shown_path(path)}:{n}: values must be finite")
+            raise error(_said("file.not_finite", where=shown_path(path), line=n))
         out.append((n, *values))
     return key, out
 
@@ -170,7 +178,7 @@ def check_ranges(path, columns, ranges, line_of, error) -> None:
     columns : dict
         Column name -> array of its values, in the file's order.
     ranges : dict
-        Column name -> ``(low, high, why)``: the closed range of the values and what it is.
+        Column name -> ``(low, high, why)``: the closed range of the values and what it is (a code of ``[notes]``).
     line_of : callable
         ``line_of(i)``: the line of the file of the i-th value.
     error : type
@@ -181,15 +189,13 @@ def check_ranges(path, columns, ranges, line_of, error) -> None:
         bad = np.flatnonzero((values < low) | (values > high))
         if bad.size:
             i = int(bad[0])
-            raise error(f"{shown_path(path)}:{line_of(i)}: {name} = {values[i]:g}: allowed [{low:g}, {high:g}] "
-                        f"({why})")
+            raise error(_said("file.out_of_range", where=shown_path(path), line=line_of(i), name=name,
+                              value=values[i], low=low, high=high, why=note(why)))
 
 
 LIFT_TABLE_RANGES = {
-    "angle_deg": (-3600.0, 3600.0, "crank or camshaft degrees: five four-stroke cycles either way of the TDC; the "
-                                   "lobe's own checks take the table to one revolution"),
-    "lift_mm": (-500.0, 500.0, "a lift in mm: at most the largest max_lift_mm, 500 mm, either way; the lobe's own "
-                               "checks take the rows below the base circle to the noise"),
+    "angle_deg": (-3600.0, 3600.0, "file.table_angles"),
+    "lift_mm": (-500.0, 500.0, "file.table_lifts"),
 }
 """The values a lift table may hold at all: beyond them a value is a unit slip or a corrupt file, refused before
 any fit.  The fit's checks (:func:`valvetrain.laws.measured.lobe_table`) then hold the table to one camshaft
@@ -223,12 +229,12 @@ def read_lift_table(path) -> tuple[np.ndarray, np.ndarray]:
     if back.size:
         i = int(back[0]) + 1
         line = read_two_columns(path, [("angle_deg", "lift_mm")], TableFileError)[1][i][0]
-        raise TableFileError(f"{shown_path(path)}:{line}: angle_deg = {angles[i]:g} must be larger than the previous "
-                             f"{angles[i - 1]:g}")
+        raise TableFileError(_said("file.increasing", where=shown_path(path), line=line, name="angle_deg",
+                                   value=angles[i], previous=angles[i - 1]))
     if angles.size < 10:
-        raise TableFileError(f"{shown_path(path)}: at least 10 rows are needed to fit a lift curve, found {angles.size}")
+        raise TableFileError(_said("file.few_lift_rows", where=shown_path(path), rows=angles.size))
     if angles.size > MAX_TABLE_ROWS:
-        raise TableFileError(f"{shown_path(path)}: {angles.size} rows; allowed at most {MAX_TABLE_ROWS}: thin the table")
+        raise TableFileError(_said("file.many_rows", where=shown_path(path), rows=angles.size, most=MAX_TABLE_ROWS))
     return angles, lifts
 
 
@@ -275,21 +281,21 @@ def read_indicator(path, strokes) -> IndicatorTable:
     for n, x, p in rows:
         if kind == "angle":
             if not 0.0 <= x <= 180.0 * strokes:
-                raise PressureFileError(f"{where}:{n}: crank_deg = {x:g}: allowed [0, {180 * strokes}] for a "
-                                        f"{strokes}-stroke cycle")
+                raise PressureFileError(_said("file.cycle_angle", where=where, line=n, value=x, most=180 * strokes,
+                                              strokes=strokes))
             if xs and x <= xs[-1]:
-                raise PressureFileError(f"{where}:{n}: crank_deg = {x:g} must be larger than the previous "
-                                        f"{xs[-1]:g}")
+                raise PressureFileError(_said("file.increasing", where=where, line=n, name="crank_deg", value=x,
+                                              previous=xs[-1]))
         elif x <= 0.0:
-            raise PressureFileError(f"{where}:{n}: volume_cm3 = {x:g} must be > 0")
+            raise PressureFileError(_said("file.volume", where=where, line=n, value=x))
         xs.append(x)
         ps.append(p)
     check_ranges(path, {"pressure_MPa": np.array(ps), "volume_cm3": np.array(xs)},
-                 {"pressure_MPa": (MIN_PRESSURE_MPA, MAX_PRESSURE_MPA, "an absolute cylinder pressure"),
-                  **({"volume_cm3": (0.0, MAX_VOLUME_CM3, "a cylinder volume")} if kind == "volume" else {})},
+                 {"pressure_MPa": (MIN_PRESSURE_MPA, MAX_PRESSURE_MPA, "file.absolute_pressure"),
+                  **({"volume_cm3": (0.0, MAX_VOLUME_CM3, "file.cylinder_volume")} if kind == "volume" else {})},
                  lambda i: rows[i][0], PressureFileError)
     if len(xs) < 4:
-        raise PressureFileError(f"{where}: at least 4 data rows are needed, found {len(xs)}")
+        raise PressureFileError(_said("file.few_data_rows", where=where, rows=len(xs)))
     x = np.radians(xs) if kind == "angle" else np.array(xs) * 1e-6
     return IndicatorTable(kind, np.asarray(x), np.array(ps) * 1e6, where)
 
@@ -303,8 +309,8 @@ class BreathingFileError(InputError):
 
 
 VALVE_LIFT_RANGES = {
-    "crank_deg": (-1440.0, 1440.0, "crank degrees from the gas-exchange TDC, within two cycles either way"),
-    "lift_mm": (0.0, 200.0, "a valve lift in mm, zero or more"),
+    "crank_deg": (-1440.0, 1440.0, "file.lift_angles"),
+    "lift_mm": (0.0, 200.0, "file.valve_lifts"),
 }
 """The values a measured valve lift may hold."""
 
@@ -333,13 +339,12 @@ def read_valve_lift(path) -> tuple[np.ndarray, np.ndarray]:
     back = np.flatnonzero(np.diff(angles) <= 0.0)
     if back.size:
         i = int(back[0]) + 1
-        raise error(f"{shown_path(path)}:{lines[i]}: crank_deg = {angles[i]:g} must be larger than the previous "
-                    f"{angles[i - 1]:g}")
+        raise error(_said("file.increasing", where=shown_path(path), line=lines[i], name="crank_deg", value=angles[i],
+                          previous=angles[i - 1]))
     if angles.size < 4:
-        raise error(f"{shown_path(path)}: at least 4 rows are needed, found {angles.size}")
+        raise error(_said("file.few_rows", where=shown_path(path), rows=angles.size))
     if angles[-1] - angles[0] >= 720.0:
-        raise error(f"{shown_path(path)}: the rows span {angles[-1] - angles[0]:g} crank deg; allowed less than the "
-                    "720 of a cycle")
+        raise error(_said("file.span", where=shown_path(path), span=angles[-1] - angles[0]))
     return angles, lifts
 
 
@@ -370,5 +375,5 @@ def read_cd_table(path) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     try:
         check_table(x, forward, reverse, "port", shown_path(path))
     except CdTableError as exc:
-        raise error(str(exc)) from None
+        raise error(exc.args[0]) from None
     return x, forward, reverse

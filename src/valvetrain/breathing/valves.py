@@ -13,6 +13,7 @@ import numpy as np
 
 from ..errors import InputError
 from ..flow import circle_area, curtain_area
+from ..locale import NoteText, note
 
 DEFAULT_CD = 0.7
 """Discharge coefficient on the flow section (the curtain area, at most the throat area) used where no measured table
@@ -26,6 +27,11 @@ REFERENCES = ("port", "curtain")
 
 class CdTableError(InputError):
     """A discharge-coefficient table that cannot be used; the message names what is wrong."""
+
+
+def _said(code, **params) -> NoteText:
+    """A table's refusal said in every language: the code of ``[notes]`` and its parameters."""
+    return NoteText(note(code, **params))
 
 
 @dataclass(frozen=True)
@@ -67,24 +73,23 @@ def check_table(l_over_d, forward, reverse, reference, source="discharge-coeffic
     """
     x = np.asarray(l_over_d, dtype=float)
     if reference not in REFERENCES:
-        raise CdTableError(f"{source}: reference = {reference!r}: allowed {', '.join(REFERENCES)}")
+        raise CdTableError(_said("cd.reference", where=source, reference=repr(reference),
+                                 allowed=", ".join(REFERENCES)))
     if x.ndim != 1 or x.size < 2:
-        raise CdTableError(f"{source}: at least two rows of L/D are needed")
+        raise CdTableError(_said("cd.two_rows", where=source))
     for name, cd in (("forward", forward), ("reverse", reverse)):
         cd = np.asarray(cd, dtype=float)
         if cd.shape != x.shape:
-            raise CdTableError(f"{source}: {cd.size} {name} coefficients for {x.size} values of L/D")
+            raise CdTableError(_said("cd.sizes", where=source, count=cd.size, direction=name, values=x.size))
         bad = np.flatnonzero(~((cd >= 0.0) & (cd <= 1.0)))
         if bad.size:
-            raise CdTableError(f"{source}: row {bad[0] + 1}: {name} C_D = {cd[bad[0]]:g}; allowed 0 to 1 (an effective "
-                               "area larger than its reference is a wrong reference)")
+            raise CdTableError(_said("cd.range", where=source, row=bad[0] + 1, direction=name, value=cd[bad[0]]))
     if x[0] < 0.0:
-        raise CdTableError(f"{source}: row 1: L/D = {x[0]:g}; allowed 0 or more")
+        raise CdTableError(_said("cd.negative", where=source, value=x[0]))
     steps = np.flatnonzero(np.diff(x) <= 0.0)
     if steps.size:
         i = steps[0] + 1
-        raise CdTableError(f"{source}: row {i + 1}: L/D = {x[i]:g} after {x[i - 1]:g}: C_D must be a function of "
-                           "L/D, the values of L/D strictly increasing")
+        raise CdTableError(_said("cd.increasing", where=source, row=i + 1, value=x[i], previous=x[i - 1]))
 
 
 def effective_areas(lift, table) -> tuple[np.ndarray, np.ndarray]:
