@@ -11,6 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError
+from ..locale import NoteText, note
 from ..numerics import cumulative_integral
 from .kinematics import brix_crank_angle, crank_angle_at, displacement, piston_stroke
 
@@ -20,6 +21,11 @@ MIN_PRESSURE_MPA = 0.001
 
 class PressureFileError(InputError):
     """An indicator-diagram file that cannot be used; the message names the file and the line."""
+
+
+def _said(code, **params) -> NoteText:
+    """A pressure's refusal said in every language: the code of ``[notes]`` and its parameters."""
+    return NoteText(note(code, **params))
 
 
 def cycle_length(strokes) -> float:
@@ -69,26 +75,23 @@ def check_cycle(angle, pressure, strokes, source="indicator diagram") -> None:
         from the firing TDC gives a negative indicated work.
     """
     if pressure.max() < MIN_PEAK_RATIO * pressure.min():
-        raise PressureFileError(f"{source}: the pressure stays within {pressure.min() / 1e6:.4g}...{pressure.max() / 1e6:.4g}"
-                                f" MPa; an indicator diagram rises at least {MIN_PEAK_RATIO:g}-fold by compression")
+        raise PressureFileError(_said("pressure.flat", where=source, low=pressure.min() / 1e6,
+                                      high=pressure.max() / 1e6, ratio=MIN_PEAK_RATIO))
     length = cycle_length(strokes)
     ends = np.concatenate([angle, [angle[0] + length]])
     gaps = np.diff(ends)
     k = int(np.argmax(gaps))
     if gaps[k] > np.radians(MAX_GAP_DEG):
-        raise PressureFileError(
-            f"{source}: no point between crank_deg {np.degrees(ends[k]):.4g} and "
-            f"{np.degrees(ends[k + 1]) % (180 * strokes):.4g}, a gap of {np.degrees(gaps[k]):.4g} deg; allowed at "
-            f"most {MAX_GAP_DEG:g} deg: the diagram must cover the whole cycle 0...{180 * strokes}")
+        raise PressureFileError(_said(
+            "pressure.gap", where=source, start=np.degrees(ends[k]), end=np.degrees(ends[k + 1]) % (180 * strokes),
+            gap=np.degrees(gaps[k]), most=MAX_GAP_DEG, cycle=180 * strokes))
     firing = np.pi * (strokes - 2)
     peak = float(angle[int(np.argmax(pressure))])
     off = abs((peak - firing + length / 2.0) % length - length / 2.0)
     if off > np.radians(FIRING_WINDOW_DEG):
-        raise PressureFileError(
-            f"{source}: the pressure peaks at crank_deg = {np.degrees(peak):.4g}; the firing TDC is at "
-            f"{np.degrees(firing) % 360 if strokes == 2 else 360:g} deg (0 = TDC of the intake stroke), so the peak "
-            f"must lie within +-{FIRING_WINDOW_DEG:g} deg of it: shift the angles if the file counts from the "
-            "firing TDC")
+        raise PressureFileError(_said(
+            "pressure.peak", where=source, peak=np.degrees(peak),
+            firing=np.degrees(firing) % 360 if strokes == 2 else 360, window=FIRING_WINDOW_DEG))
 
 
 def on_grid(angle, pressure, grid, strokes) -> float | np.ndarray:
@@ -125,8 +128,7 @@ def pv_to_angle(volume, pressure, bore, radius, lam, compression_ratio, strokes,
     turns = np.flatnonzero(dv[1:] != dv[:-1]) + 1
     branches = np.split(np.arange(volume.size), turns)
     if len(branches) != strokes:
-        raise PressureFileError(f"{source}: the volume changes direction {len(turns)} times; a {strokes}-stroke "
-                                f"cycle needs {strokes} monotone branches (rows in cycle order from TDC)")
+        raise PressureFileError(_said("pressure.branches", where=source, turns=len(turns), strokes=strokes))
     area = np.pi * bore**2 / 4.0
     clearance = area * 2.0 * radius / (compression_ratio - 1.0)
     full = 2.0 * radius if method == "brix" else piston_stroke(radius, lam, k)
@@ -136,8 +138,8 @@ def pv_to_angle(volume, pressure, bore, radius, lam, compression_ratio, strokes,
         bad = (volume[rows] < lo * (1 - 1e-3)) | (volume[rows] > hi * (1 + 1e-3))
         if bad.any():
             i = rows[np.flatnonzero(bad)[0]]
-            raise PressureFileError(f"{source}: row {i + 1}: volume {volume[i] * 1e6:g} cm3 is outside the cylinder "
-                                    f"volume {lo * 1e6:.4g}...{hi * 1e6:.4g} cm3 of stroke {n + 1}")
+            raise PressureFileError(_said("pressure.volume", where=source, row=i + 1, volume=volume[i] * 1e6,
+                                          low=lo * 1e6, high=hi * 1e6, stroke=n + 1))
         travel = np.clip((volume[rows] - clearance) / area, 0.0, full)
         upstroke = n % 2 == 1
         angle = (brix_crank_angle(travel, radius, lam, upstroke) if method == "brix"
@@ -340,13 +342,9 @@ def check_timing(cycle) -> None:
     end = evo + np.degrees(cycle.blowdown)
     ivo, evc = np.degrees(cycle.intake_opens) + 720.0, np.degrees(cycle.exhaust_closes) + 720.0
     if not 0.0 < ivc < 360.0 + np.degrees(cycle.start):
-        raise InputError(f"the intake valve closes at {ivc:.4g} crank deg; the Wiebe model needs it after the "
-                         f"gas-exchange TDC and before the start of combustion, 0...{360.0 + np.degrees(cycle.start):.4g}")
+        raise InputError(_said("pressure.wiebe_ivc", closes=ivc, most=360.0 + np.degrees(cycle.start)))
     if not (360.0 < evo and end <= ivo and evc - 720.0 < ivc and evc >= ivo):
-        raise InputError(f"the exhaust valve opens at {evo:.4g} crank deg (blowdown to {end:.4g}) and the overlap "
-                         f"runs {ivo - 720.0:.4g}...{evc - 720.0:.4g}; the Wiebe model needs the opening after the "
-                         "firing TDC (360), the blowdown ended before the intake valve opens, and the exhaust valve "
-                         "closed before the intake valve closes")
+        raise InputError(_said("pressure.wiebe_evo", opens=evo, end=end, start=ivo - 720.0, closes=evc - 720.0))
 
 
 def indicated_work(phi, pressure, volume) -> float:

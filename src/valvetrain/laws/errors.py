@@ -37,6 +37,7 @@ DISPLAY_UNITS = {
     "law_error.combined_conditions": {},
     "law_error.combined_singular": {},
     "law_error.phases_exceed_half": {"phases": "deg", "half": "deg"},
+    "law_error.table_span": {"start": "deg", "end": "deg", "span": "deg", "revolution": "deg"},
 }
 """The display unit of each value of a reason's message, by the message's code in the catalogue's ``[notes]``
 (:data:`valvetrain.units.UNITS`; ``"%"``: a fraction in per cent; a value without a unit is shown as it is)."""

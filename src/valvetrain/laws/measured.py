@@ -257,8 +257,8 @@ def lobe_table(angle_deg, lift_mm, angle="crank", zero="gas_exchange_tdc", accur
     unit = f"{angle} deg"
     a, h = np.asarray(angle_deg, dtype=float), np.asarray(lift_mm, dtype=float)
     if a[-1] - a[0] > revolution:
-        raise InputError(f"angle_deg runs from {a[0]:g} to {a[-1]:g} {unit} ({a[-1] - a[0]:g}); a table covers "
-                         f"at most one camshaft revolution, {revolution:g} {unit}")
+        raise LawError("table_span", start=a[0] * DEG, end=a[-1] * DEG, span=(a[-1] - a[0]) * DEG,
+                       revolution=revolution * DEG, unit=unit)
     band = BASE_CIRCLE_ACCURACIES * accuracy_mm
     low, top = int(np.argmin(h)), int(np.argmax(h))
     if h[low] < -band:
