@@ -18,6 +18,7 @@ import numpy as np
 from ..crank.kinematics import velocity
 from ..crank.pressure import cylinder_volume, wiebe_fraction
 from ..errors import InputError
+from ..locale import NoteText, note
 from ..results import quantity
 from . import gas as gases
 from . import kernel as kn
@@ -302,9 +303,9 @@ def _closed_cycle(engine, theta, steps) -> tuple[int, int]:
     before, after = closes[closes < tdc], opens[opens > tdc]
     shut = all(sum(flow.areas(theta[tdc])) == 0.0 for flow in (engine.intake, engine.exhaust))
     if not (before.size and after.size and shut):
-        said, done = (", ".join(f"{np.degrees(theta[i]):.4g}" for i in events) or "never" for events in (closes, opens))
-        raise BreathingError(f"the intake valve closes at {said} and the exhaust valve opens at {done} crank deg: "
-                             "the closed cycle must hold the firing TDC (360)")
+        shuts, opened = (note("plain", text=", ".join(f"{np.degrees(theta[i]):.4g}" for i in events)) if events.size
+                         else note("breathing.never") for events in (closes, opens))
+        raise BreathingError(NoteText(note("breathing.tdc_open", closes=shuts, opens=opened)))
     return int(before[-1]), int(after[0])
 
 
@@ -341,9 +342,8 @@ def _schedule(engine, condition, steps, fuel_air, heat_per_fuel):
     else:
         start, end = 2.0 * np.pi + firing.start, 2.0 * np.pi + firing.start + firing.duration
         if not (theta[ivc] < start and end < theta[evo]) or exchange[ivc:evo].any():
-            raise BreathingError(f"combustion from {np.degrees(start):.4g} to {np.degrees(end):.4g} crank deg must lie "
-                                 f"between the intake valve's closing ({np.degrees(theta[ivc]):.4g}) and the exhaust "
-                                 f"valve's opening ({np.degrees(theta[evo]):.4g}), both valves shut between them")
+            raise BreathingError(NoteText(note("breathing.combustion", start=np.degrees(start), end=np.degrees(end),
+                                               closes=np.degrees(theta[ivc]), opens=np.degrees(theta[evo]))))
         x = wiebe_fraction(theta, firing, 2.0 * np.pi)
         sched[kn.BURN] = np.minimum(x / x[evo], 1.0)
         sched[kn.C2] = np.where((theta >= start) & (theta < theta[evo]), WOSCHNI_C2, 0.0)
@@ -488,8 +488,7 @@ def breathe(engine, condition, tolerance=TOLERANCE, max_cycles=MAX_CYCLES, start
         start_energy = cyl[kn.U] + _pipe_energy(qi, pipes[0]) + _pipe_energy(qe, pipes[1])
         courant = kn.run_cycle(cyl, qi, qe, s.sched, s.par, coef, rgas, plenums, pipes, gas_rows, tallies, records)
         if not np.isfinite(courant):
-            raise BreathingError(f"the cycle left the physical range at {condition.speed * 30 / np.pi:.5g} rpm (a "
-                                 "negative mass, density or pressure): check the plenum states and the valve areas")
+            raise BreathingError(NoteText(note("breathing.unphysical", speed_rpm=condition.speed * 30 / np.pi)))
         if courant > 1.0:
             cyl[:], qi[:], qe[:] = saved
             steps = int(np.ceil(steps * courant / CFL))

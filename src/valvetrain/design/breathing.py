@@ -261,10 +261,8 @@ def breathe_conditions(engines, b, given, swept) -> tuple[tuple[BreathingResult,
     """
     asked = sum(work(e, c, b.max_cycles) for e, c in zip(engines, given + swept, strict=True))
     if asked > MAX_WORK:
-        raise BreathingError(f"{len(given)} conditions and {len(swept)} curve speeds at up to {b.max_cycles} cycles "
-                             f"of the runners' cells (cell_mm = {b.cell / MM:g}) ask for {asked:.3g} cell-steps; "
-                             f"allowed at most {MAX_WORK:.3g} (about half a minute): fewer conditions or curve points, "
-                             "a coarser cell_mm, fewer max_cycles or higher speeds")
+        raise BreathingError(NoteText(note("breathing.work", conditions=len(given), speeds=len(swept),
+                                           cycles=b.max_cycles, cell_mm=b.cell / MM, asked=asked, most=MAX_WORK)))
     return (breathing_records(engines[:len(given)], given, b.cycle_tolerance, b.max_cycles),
             breathing_records(engines[len(given):], swept, b.cycle_tolerance, b.max_cycles, curve=True))
 

@@ -7,6 +7,7 @@ from typing import Literal, Optional
 from pydantic import model_validator
 
 from ..errors import InputError
+from ..locale import NoteText, note
 from ..spring_materials import GRADES
 from .fields import Length, _bounded, _Model
 
@@ -25,8 +26,7 @@ class LowLobe(_Model):
     @model_validator(mode="after")
     def _an_event(self):
         if self.opens_deg + self.closes_deg + 180.0 <= 0.0:
-            raise InputError(f"opens_deg = {self.opens_deg:g}, closes_deg = {self.closes_deg:g}: allowed "
-                             "opens_deg + 180 + closes_deg > 0 (the lobe's event, crank deg)")
+            raise InputError(NoteText(note("spec.lobe_event", opens=self.opens_deg, closes=self.closes_deg)))
         return self
 
 
@@ -93,43 +93,38 @@ class Switching(_Model):
     def _consistent(self):
         problems = []
         if self.spring_mean_diameter_mm <= 2.0 * self.spring_wire_diameter_mm:
-            problems.append(f"spring_mean_diameter_mm = {self.spring_mean_diameter_mm:g}: allowed above twice "
-                            f"spring_wire_diameter_mm = {2.0 * self.spring_wire_diameter_mm:g} (a spring index > 2)")
+            problems.append(note("spec.spring_index", diameter=self.spring_mean_diameter_mm,
+                                 least=2.0 * self.spring_wire_diameter_mm))
         if self.latch_seat_radius_mm is not None and self.latch_seat_radius_mm <= self.latch_pin_diameter_mm / 2.0:
-            problems.append(f"latch_seat_radius_mm = {self.latch_seat_radius_mm:g}: allowed above the pin's radius, "
-                            f"latch_pin_diameter_mm / 2 = {self.latch_pin_diameter_mm / 2.0:g} (a concave seat)")
+            problems.append(note("spec.latch_seat", radius=self.latch_seat_radius_mm,
+                                 pin=self.latch_pin_diameter_mm / 2.0))
         strong = [name for name, g in GRADES.items() if g.tensile is not None]
         if self.spring_material not in strong:
-            problems.append(f"spring_material = {self.spring_material!r}: allowed {', '.join(strong)} (a grade with "
-                            "its tensile strength, the torsion spring's bending limit)")
+            problems.append(note("spec.torsion_material", material=repr(self.spring_material),
+                                 allowed=", ".join(strong)))
         if not 4 <= self.speeds <= 200:
-            problems.append(f"speeds = {self.speeds}: allowed 4...200")
+            problems.append(note("spec.switching_speeds", speeds=self.speeds))
         trapped = ("compression_ratio", "trapped_pressure_kPa", "trapped_temperature_C", "wall_temperature_C")
         given = [k for k in trapped if getattr(self, k) is not None]
         if given and len(given) < len(trapped):
-            problems.append(f"{', '.join(given)} given: the deactivated cylinder's breathing needs "
-                            f"{', '.join(k for k in trapped if k not in given)} too (or none of them)")
+            problems.append(note("spec.trapped_keys", given=", ".join(given),
+                                 missing=", ".join(k for k in trapped if k not in given)))
         latch = ("latch_stroke_mm", "latch_pin_mass_kg", "latch_spring_preload_N", "latch_spring_rate_N_per_mm",
                  "oil_pressure_MPa", "oil_passage_diameter_mm")
         moving = [k for k in latch if getattr(self, k) is not None]
         if moving and len(moving) < len(latch):
-            problems.append(f"{', '.join(moving)} given: the latch's switching needs "
-                            f"{', '.join(k for k in latch if k not in moving)} too (or none of them)")
+            problems.append(note("spec.latch_keys", given=", ".join(moving),
+                                 missing=", ".join(k for k in latch if k not in moving)))
         if len(moving) == len(latch):
             push = self.oil_pressure_MPa * math.pi * self.latch_pin_diameter_mm ** 2 / 4.0
             hold = self.latch_spring_preload_N + self.latch_spring_rate_N_per_mm * self.latch_stroke_mm
             if push <= hold:
-                problems.append(f"oil_pressure_MPa = {self.oil_pressure_MPa:g}: its force on the latch pin, "
-                                f"{push:.4g} N, must exceed the return spring's at the stroke's end, "
-                                f"latch_spring_preload_N + latch_spring_rate_N_per_mm x latch_stroke_mm = {hold:.4g} N "
-                                "(else the pin never reaches its end)")
+                problems.append(note("spec.latch_push", pressure=self.oil_pressure_MPa, push=push, hold=hold))
         if (self.mode == "two_step") != (self.low_lobe is not None):
-            problems.append(f"mode = {self.mode!r}" + (": needs a low_lobe section (the second lobe's max_lift_mm, "
-                            "opens_deg, closes_deg)" if self.low_lobe is None else ": allowed a low_lobe section only "
-                            "with mode = 'two_step'"))
+            problems.append(note("spec.needs_low_lobe" if self.low_lobe is None else "spec.low_lobe_two_step",
+                                 mode=repr(self.mode)))
         if self.mode == "two_step" and given:
-            problems.append(f"{', '.join(given)} given with mode = 'two_step': allowed only with mode = "
-                            "'deactivation' (the deactivated cylinder's trapped charge)")
+            problems.append(note("spec.trapped_two_step", given=", ".join(given)))
         if problems:
-            raise InputError("; ".join(problems))
+            raise InputError(NoteText(sum(problems, ())))
         return self
