@@ -278,7 +278,8 @@ def cycle_check(figures, tolerance, code="breathing.cycle_change", **params) -> 
     :class:`~valvetrain.breathing.cycle.BreathingRecord`) within ``tolerance``, its speed and ``params`` (display
     texts) the check's parameters; the breathing chapter's, or another stage's ``code`` that breathes again."""
     return check(code, figures.cycle_change, high=tolerance,
-                 source=cited(note("source.cycles_repeat", work="Heywood (1988), chapter 14")), params={"speed": f"{to_display(figures.speed, 'rpm'):.5g}", **params})
+                 source=cited(note("source.cycles_repeat", work="Heywood (1988), chapter 14")),
+                 params={"speed": f"{to_display(figures.speed, 'rpm'):.5g}", **params})
 
 
 def breathing_stage(b, engine, crank, valves, views) -> BreathingResults:
