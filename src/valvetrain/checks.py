@@ -40,7 +40,7 @@ import math
 from typing import Any
 
 from .errors import InputError
-from .locale import Note, NoteText, catalogue, code_of, note, note_text, record_text
+from .locale import Note, NoteText, catalogue, code_of, note, note_text, number_text, record_text
 from .units import displayed, to_display
 
 SEVERITIES = ("info", "warning", "failure")
@@ -225,25 +225,25 @@ class Check:
                 **({"note": self.note} if self.note else {})}
 
 
-def _fmt(x):
-    return f"{x:g}"
-
-
-def describe_range(low=None, high=None, unit="", strict_low=False) -> str:
-    """Text of a range ``low...high`` (either side may be open) with its unit.
+def describe_range(low=None, high=None, unit="", strict_low=False, lang="en") -> str:
+    """Text of a range ``low...high`` (either side may be open) with its unit, its numbers by the rule of ``lang``
+    (:func:`~valvetrain.locale.number_text`).
 
     >>> describe_range(50, 80, "m/s"), describe_range(low=0, unit="mm", strict_low=True)
     ('50...80 m/s', '> 0 mm')
+    >>> describe_range(0.25, 0.4, lang="ru")
+    '0,25...0,4'
     """
     suffix = f" {unit}" if unit else ""
+    a, b = (None if x is None else number_text(x, "g", lang) for x in (low, high))
     if low is not None and low == high:
-        return f"{_fmt(low)}{suffix}"
+        return f"{a}{suffix}"
     if low is not None and high is not None:
-        return f"{_fmt(low)}...{_fmt(high)}{suffix}"
+        return f"{a}...{b}{suffix}"
     if low is not None:
-        return f"{'>' if strict_low else '>='} {_fmt(low)}{suffix}"
+        return f"{'>' if strict_low else '>='} {a}{suffix}"
     if high is not None:
-        return f"<= {_fmt(high)}{suffix}"
+        return f"<= {b}{suffix}"
     return "any"
 
 

@@ -94,12 +94,15 @@ def test_the_russian_designer_says_a_checks_source_in_the_words_of_the_report(na
     d.on_language("value", "en", "ru")
     sources = dict(zip(d.checks.data["key"], d.checks.data["source"]))
     assert [(s, latin_words(s)) for s in sources.values() if latin_words(s)] == []
-    # every shown word of the table in Russian, its numbers with a decimal comma: the values' units were English
-    # ("2.4145 MPa", "26 crank deg", "100 degC") before; a quantity is led by the valve's name, the designer's own
+    # every shown word of the table in Russian, its numbers (and the cam card's) with a decimal comma: the values'
+    # units were English ("2.4145 MPa", "26 crank deg", "100 degC") and the ranges and the card's numbers had decimal
+    # points ("0.25...0.4", "3.7044") before; a quantity is led by the valve's name, the designer's own
     shown = [re.sub(r"^(intake|exhaust): ", "", text) for column in ("status", "quantity", "value", "margin", "baseline",
                                                                      "allowed") for text in d.checks.data[column]]
     assert [(s, latin_words(s)) for s in shown if latin_words(s)] == []
-    assert [s for s in d.checks.data["value"] if re.search(r"\d\.\d", s)] == []
+    numbers = [*d.checks.data["value"], *d.checks.data["allowed"], *d.checks.data["margin"],
+               *(text for column, texts in d.card.data.items() if column != "quantity" for text in texts)]
+    assert [s for s in numbers if re.search(r"\d\.\d", s)] == []
     # the engine's checks (design/__init__.py engine_checks, a factor of UNIT_SLIP_FACTOR = 3 beyond its sources'
     # ranges): the words of the Russian report's citation, "[1, раздел 2.2]" there
     beyond = "пределы, расширенные в 3 раза относительно: "

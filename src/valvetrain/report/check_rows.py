@@ -23,7 +23,7 @@ def check_range(c, lang) -> str:
     low, high = get("low"), get("high")
     if not isinstance(c, dict):
         low, high = (None if x is None else to_display(x, unit) for x in (low, high))
-    text = describe_range(low, high, unit_text(unit, lang), bool(get("strict_low") or False))
+    text = describe_range(low, high, unit_text(unit, lang), bool(get("strict_low") or False), lang)
     return TEXT[lang]["any"] if text == "any" else text
 
 

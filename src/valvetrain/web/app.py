@@ -251,7 +251,7 @@ class Designer(Layout, SweepPanel, VvaPanel):
             rows["quantity"].append(name)
             for n in self.names:
                 v = values.get(n)
-                rows[n].append("" if v is None else f"{v:.5g}")
+                rows[n].append("" if v is None else number_text(v, ".5g", self.lang))
 
         crank = WORDS[self.lang]["unit_crank"]
         for group, keys in EVENTS:
