@@ -39,6 +39,7 @@ from .breathing.heat_transfer import WOSCHNI_C1, wall_area, woschni_coefficient
 from .crank.kinematics import displacement, velocity as piston_velocity
 from .dynamics.models import OneMassTrain, one_mass_train
 from .errors import InputError
+from .locale import NoteText, note
 from .strength import hertz_line_stress
 
 
@@ -470,7 +471,7 @@ def air_spring(bore, stroke, rod_length, compression_ratio, mass, temperature, w
                             x1=0.95 * temperature, method="secant", xtol=tolerance * temperature,
                             maxiter=most)
         if not found.converged:
-            raise InputError(f"the deactivated cylinder's charge did not repeat within {most} revolutions")
+            raise InputError(NoteText(note("switching.charge_unsettled", revolutions=most)))
         temperature, n = found.root, found.function_calls + 1
     else:
         n = 1

@@ -14,6 +14,7 @@ manual (``exact=False``).
 import numpy as np
 
 from ..errors import InputError
+from ..locale import NoteText, note
 from ..numerics import extremum
 
 
@@ -250,8 +251,7 @@ def crank_angle_at(travel, radius, lam, k=0.0, exact=True, upstroke=False) -> fl
         delta = np.arctan2(a, x)
     else:
         if k != 0.0:
-            raise InputError("the series (1.3) of an offset mechanism is measured from the phi = 0 position, not "
-                             "from TDC, and is a quartic in cos phi: use the exact kinematics")
+            raise InputError(NoteText(note("crank.offset_series")))
         u = s / radius
         w = 2.0 - u
         one_minus_cos = 2.0 * u / (1.0 + lam + np.sqrt((1.0 + lam) ** 2 - 2.0 * lam * u))

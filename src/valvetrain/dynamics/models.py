@@ -18,6 +18,7 @@ from typing import Callable, Optional
 import numpy as np
 
 from ..errors import InputError
+from ..locale import NoteText, note
 from ..strength import STEEL_MODULUS, camshaft_deflection
 from .kernels import CAM, GROUND
 
@@ -396,14 +397,14 @@ def static_equilibrium(network, cam=0.0) -> np.ndarray:
         try:
             x = np.linalg.solve(k, r)
         except np.linalg.LinAlgError:
-            raise InputError("no rest position: a node of the train is held by no element") from None
+            raise InputError(NoteText(note("dynamics.unheld_node"))) from None
         xa = np.where(network.a >= 0, x[np.maximum(network.a, 0)], ua)
         xb = np.where(network.b >= 0, x[np.maximum(network.b, 0)], ub)
         now = ~network.unilateral | (xa - xb - network.gap > 0.0)
         if np.array_equal(now, closed):
             return x
         closed = now
-    raise InputError("no rest position: the contacts of the train do not settle")
+    raise InputError(NoteText(note("dynamics.unsettled_contacts")))
 
 
 @dataclass(frozen=True)
