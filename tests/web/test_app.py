@@ -480,3 +480,18 @@ def test_the_russian_designer_names_the_options_of_a_choice_in_russian():
     assert ("pushrod", "со штангой и коромыслом") in layout.options and layout.value == "pushrod"
     d.on_language("value", "ru", "en")
     assert ("pushrod", "pushrod") in layout.options
+
+
+def test_the_russian_designer_writes_its_axes_numbers_with_a_decimal_comma():
+    """Issue 41: the plots' axes of the Russian designer format their ticks in Russian (the browser's number format
+    of ru.toml [designer] numbers = "ru-RU": a decimal comma; the browser test renders one), as the report's figures
+    do; back in English, Bokeh's own rule.  Before, every axis had a decimal point."""
+    from bokeh.models import BasicTickFormatter, CustomJSTickFormatter, LinearAxis
+
+    d = _designer()
+    axes = [m for root in d.doc.roots for m in root.references() if isinstance(m, LinearAxis)]
+    d.on_language("value", "en", "ru")
+    assert len(axes) > 10 and all(isinstance(a.formatter, CustomJSTickFormatter)
+                                  and a.formatter.args == {"locale": "ru-RU"} for a in axes)
+    d.on_language("value", "ru", "en")
+    assert all(isinstance(a.formatter, BasicTickFormatter) for a in axes)

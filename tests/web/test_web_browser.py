@@ -340,6 +340,14 @@ def test_switch_to_russian(designer):
     expect(designer.get_by_label("диаметр цилиндра D, мм (5 … 2000)")).to_have_value("80")
     # issue 40: the same inputs renamed, one of each name in the page
     assert value(designer, "engine.bore_mm") == 80
+    # issue 41: an axis writes its ticks with a decimal comma (ru.toml [designer] numbers), as the browser formats them
+    ticks = designer.evaluate("""() => {
+      const locale = (m) => (m.args instanceof Map ? m.args.get("locale") : m.args.locale);
+      const f = [...Bokeh.documents[0].all_models].find((m) => m.args != null && m.code !== undefined
+                                                            && locale(m) === "ru-RU");
+      return f === undefined ? null : f.doFormat([0.5, 12, -0.125], {loc: 0});
+    }""")
+    assert ticks == ["0,5", "12", "-0,125"]
 
 
 def test_overlay_units_speed_and_reload(page, url):

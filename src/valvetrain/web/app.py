@@ -35,7 +35,7 @@ import hashlib
 import json
 
 from bokeh.core.property.descriptors import UnsetValueError
-from bokeh.models import NumericInput, Select
+from bokeh.models import BasicTickFormatter, CustomJSTickFormatter, LinearAxis, NumericInput, Select
 import numpy as np
 
 from ..locale import number_text
@@ -45,8 +45,8 @@ from ..report.names import label, record_quantity_text, translate
 from ..report.russian import citation
 from ..specification import SpecError, toml_tables
 from ..units import symbol as unit_symbol
-from .draw import (CURVES, EVENTS, KINEMATIC_PLOTS, PLOT_BUCKETS, PLOT_ROOM, RANGES, SEVERITY_COLOURS, STATUS_WORDS,
-                   VALVE_CARD, WORDS, Units, _array, _count, _fit, _hold, _now, _send, problem_text, thinned)
+from .draw import (AXIS_NUMBERS_JS, CURVES, EVENTS, KINEMATIC_PLOTS, PLOT_BUCKETS, PLOT_ROOM, RANGES, SEVERITY_COLOURS,
+                   STATUS_WORDS, VALVE_CARD, WORDS, Units, _array, _count, _fit, _hold, _now, _send, problem_text, thinned)
 from .form import form, parse_value, value_at, value_of, value_text
 from .layout import Layout
 from .session import document_key, has_points
@@ -517,8 +517,19 @@ class Designer(Layout, SweepPanel, VvaPanel):
         self.lang = new
         self._retitle()
         self._texts()
+        self._axis_numbers()
         self.redraw(sweep=False)
         self.show_problems()
+
+    def _axis_numbers(self) -> None:
+        """Every plot's axes with the numbers of the page's language (``[designer] numbers``: the browser's number
+        format of that locale, a decimal comma in Russian, up to four decimals; Bokeh's own rule in English)."""
+        language = WORDS[self.lang]["numbers"]
+        formatter = BasicTickFormatter() if language == "en" else CustomJSTickFormatter(
+            args={"locale": language}, code=AXIS_NUMBERS_JS)
+        with self.doc.models.freeze():       # one recomputation of the document's models, not one per axis
+            for axis in (m for root in self.doc.roots for m in root.references() if isinstance(m, LinearAxis)):
+                axis.formatter = formatter
 
     def on_units(self, attr, old, new) -> None:
         self.units = Units(self.length_select.value, self.angle_select.value, self.derivative_select.value)

@@ -200,6 +200,12 @@ views.forEach((v) => v.unpause(!changed));
 stamp's ``changed``, :func:`_count`): a release where the pointer last moved changes nothing the last move's answer
 did not draw, and painting the plots again was most of the page's work of it."""
 
+AXIS_NUMBERS_JS = """
+return tick.toLocaleString(locale, {maximumFractionDigits: 4, useGrouping: false});
+"""
+"""An axis tick in the number format of the page's language (``[designer] numbers``, a BCP 47 locale): the decimal
+comma of the Russian page, as the report's figures have (:mod:`valvetrain.report.figure`)."""
+
 DRAWN_JS = """
 requestAnimationFrame(() => requestAnimationFrame(() => { drawn.data = {n: [stamp.data.n[0]]}; }));
 """
