@@ -486,10 +486,11 @@ def test_the_russian_designer_writes_its_axes_numbers_with_a_decimal_comma():
     """Issue 41: the plots' axes of the Russian designer format their ticks in Russian (the browser's number format
     of ru.toml [designer] numbers = "ru-RU": a decimal comma; the browser test renders one), as the report's figures
     do; back in English, Bokeh's own rule.  Before, every axis had a decimal point."""
-    from bokeh.models import BasicTickFormatter, CustomJSTickFormatter, LinearAxis
+    from bokeh.models import BasicTickFormatter, ColorBar, CustomJSTickFormatter, LinearAxis
 
     d = _designer()
-    axes = [m for root in d.doc.roots for m in root.references() if isinstance(m, LinearAxis)]
+    axes = [m for root in d.doc.roots for m in root.references() if isinstance(m, (LinearAxis, ColorBar))]
+    assert any(isinstance(a, ColorBar) for a in axes)      # the sweep map's
     d.on_language("value", "en", "ru")
     assert len(axes) > 10 and all(isinstance(a.formatter, CustomJSTickFormatter)
                                   and a.formatter.args == {"locale": "ru-RU"} for a in axes)

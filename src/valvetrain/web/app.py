@@ -35,7 +35,7 @@ import hashlib
 import json
 
 from bokeh.core.property.descriptors import UnsetValueError
-from bokeh.models import BasicTickFormatter, CustomJSTickFormatter, LinearAxis, NumericInput, Select
+from bokeh.models import BasicTickFormatter, ColorBar, CustomJSTickFormatter, LinearAxis, NumericInput, Select
 import numpy as np
 
 from ..locale import number_text
@@ -522,13 +522,14 @@ class Designer(Layout, SweepPanel, VvaPanel):
         self.show_problems()
 
     def _axis_numbers(self) -> None:
-        """Every plot's axes with the numbers of the page's language (``[designer] numbers``: the browser's number
+        """Every plot's axes and colour bars with the numbers of the page's language (``[designer] numbers``: the browser's number
         format of that locale, a decimal comma in Russian, up to four decimals; Bokeh's own rule in English)."""
         language = WORDS[self.lang]["numbers"]
         formatter = BasicTickFormatter() if language == "en" else CustomJSTickFormatter(
             args={"locale": language}, code=AXIS_NUMBERS_JS)
         with self.doc.models.freeze():       # one recomputation of the document's models, not one per axis
-            for axis in (m for root in self.doc.roots for m in root.references() if isinstance(m, LinearAxis)):
+            for axis in (m for root in self.doc.roots for m in root.references()
+                         if isinstance(m, (LinearAxis, ColorBar))):
                 axis.formatter = formatter
 
     def on_units(self, attr, old, new) -> None:
