@@ -22,11 +22,6 @@ ECHO_CHARS = 40
 """Longest text of a file echoed in a message (a longer row or header is cut)."""
 
 
-def _said(code, **params) -> NoteText:
-    """A file's refusal said in every language: the code of ``[notes]`` and its parameters."""
-    return NoteText(note(code, **params))
-
-
 def _short(text):
     """``text`` cut to :data:`ECHO_CHARS` characters (a cut marked with '...')."""
     return text if len(text) <= ECHO_CHARS else text[:ECHO_CHARS] + "..."
@@ -67,9 +62,9 @@ def _text(path, error):
     try:
         return read_text(path).removeprefix("\ufeff")
     except OSError as exc:
-        raise error(_said("file.unreadable", where=shown_path(path), error=f"{exc.strerror or exc}")) from None
+        raise error(NoteText.of("file.unreadable", where=shown_path(path), error=f"{exc.strerror or exc}")) from None
     except UnicodeDecodeError as exc:
-        raise error(_said("file.not_utf8", where=shown_path(path), reason=exc.reason)) from None
+        raise error(NoteText.of("file.not_utf8", where=shown_path(path), reason=exc.reason)) from None
 
 
 def read_columns(path, headers, error) -> tuple[tuple[str, ...], list[tuple[int, ...]]]:
@@ -95,26 +90,26 @@ def read_columns(path, headers, error) -> tuple[tuple[str, ...], list[tuple[int,
     rows = [(n, r) for n, r in enumerate(csv.reader(text.splitlines()), start=1)
             if r and not r[0].lstrip().startswith("#")]
     if not rows:
-        raise error(_said("file.empty", where=shown_path(path)))
+        raise error(NoteText.of("file.empty", where=shown_path(path)))
     n0, header = rows[0]
     key = tuple(h.strip() for h in header)
     if key not in headers:
         allowed = " or ".join(repr(",".join(h)) for h in headers)
-        raise error(_said("file.header", where=shown_path(path), line=n0, header=repr(_short(",".join(key))),
-                          allowed=allowed))
+        raise error(NoteText.of("file.header", where=shown_path(path), line=n0, header=repr(_short(",".join(key))),
+                                allowed=allowed))
     out = []
     for n, r in rows[1:]:
         if len(r) != len(key):
-            raise error(_said("file.row_values", where=shown_path(path), line=n, row=repr(_short(",".join(r))),
-                              count=len(r), expected=len(key), header=_short(",".join(key))))
+            raise error(NoteText.of("file.row_values", where=shown_path(path), line=n, row=repr(_short(",".join(r))),
+                                    count=len(r), expected=len(key), header=_short(",".join(key))))
         try:
             values = tuple(float(v) for v in r)
         except ValueError:
             count = {2: "two", 3: "three"}.get(len(key), str(len(key)))
-            raise error(_said("file.not_numbers", where=shown_path(path), line=n, row=repr(_short(",".join(r))),
-                              count=count)) from None
+            raise error(NoteText.of("file.not_numbers", where=shown_path(path), line=n, row=repr(_short(",".join(r))),
+                                    count=count)) from None
         if not all(np.isfinite(values)):
-            raise error(_said("file.not_finite", where=shown_path(path), line=n))
+            raise error(NoteText.of("file.not_finite", where=shown_path(path), line=n))
         out.append((n, *values))
     return key, out
 
@@ -189,8 +184,8 @@ def check_ranges(path, columns, ranges, line_of, error) -> None:
         bad = np.flatnonzero((values < low) | (values > high))
         if bad.size:
             i = int(bad[0])
-            raise error(_said("file.out_of_range", where=shown_path(path), line=line_of(i), name=name,
-                              value=values[i], low=low, high=high, why=note(why)))
+            raise error(NoteText.of("file.out_of_range", where=shown_path(path), line=line_of(i), name=name,
+                                    value=values[i], low=low, high=high, why=note(why)))
 
 
 LIFT_TABLE_RANGES = {
@@ -229,12 +224,13 @@ def read_lift_table(path) -> tuple[np.ndarray, np.ndarray]:
     if back.size:
         i = int(back[0]) + 1
         line = read_two_columns(path, [("angle_deg", "lift_mm")], TableFileError)[1][i][0]
-        raise TableFileError(_said("file.increasing", where=shown_path(path), line=line, name="angle_deg",
-                                   value=angles[i], previous=angles[i - 1]))
+        raise TableFileError(NoteText.of("file.increasing", where=shown_path(path), line=line, name="angle_deg",
+                                         value=angles[i], previous=angles[i - 1]))
     if angles.size < 10:
-        raise TableFileError(_said("file.few_lift_rows", where=shown_path(path), rows=angles.size))
+        raise TableFileError(NoteText.of("file.few_lift_rows", where=shown_path(path), rows=angles.size))
     if angles.size > MAX_TABLE_ROWS:
-        raise TableFileError(_said("file.many_rows", where=shown_path(path), rows=angles.size, most=MAX_TABLE_ROWS))
+        raise TableFileError(NoteText.of("file.many_rows", where=shown_path(path), rows=angles.size,
+                                         most=MAX_TABLE_ROWS))
     return angles, lifts
 
 
@@ -281,13 +277,13 @@ def read_indicator(path, strokes) -> IndicatorTable:
     for n, x, p in rows:
         if kind == "angle":
             if not 0.0 <= x <= 180.0 * strokes:
-                raise PressureFileError(_said("file.cycle_angle", where=where, line=n, value=x, most=180 * strokes,
-                                              strokes=strokes))
+                raise PressureFileError(NoteText.of("file.cycle_angle", where=where, line=n, value=x,
+                                                    most=180 * strokes, strokes=strokes))
             if xs and x <= xs[-1]:
-                raise PressureFileError(_said("file.increasing", where=where, line=n, name="crank_deg", value=x,
-                                              previous=xs[-1]))
+                raise PressureFileError(NoteText.of("file.increasing", where=where, line=n, name="crank_deg", value=x,
+                                                    previous=xs[-1]))
         elif x <= 0.0:
-            raise PressureFileError(_said("file.volume", where=where, line=n, value=x))
+            raise PressureFileError(NoteText.of("file.volume", where=where, line=n, value=x))
         xs.append(x)
         ps.append(p)
     check_ranges(path, {"pressure_MPa": np.array(ps), "volume_cm3": np.array(xs)},
@@ -295,7 +291,7 @@ def read_indicator(path, strokes) -> IndicatorTable:
                   **({"volume_cm3": (0.0, MAX_VOLUME_CM3, "file.cylinder_volume")} if kind == "volume" else {})},
                  lambda i: rows[i][0], PressureFileError)
     if len(xs) < 4:
-        raise PressureFileError(_said("file.few_data_rows", where=where, rows=len(xs)))
+        raise PressureFileError(NoteText.of("file.few_data_rows", where=where, rows=len(xs)))
     x = np.radians(xs) if kind == "angle" else np.array(xs) * 1e-6
     return IndicatorTable(kind, np.asarray(x), np.array(ps) * 1e6, where)
 
@@ -339,12 +335,12 @@ def read_valve_lift(path) -> tuple[np.ndarray, np.ndarray]:
     back = np.flatnonzero(np.diff(angles) <= 0.0)
     if back.size:
         i = int(back[0]) + 1
-        raise error(_said("file.increasing", where=shown_path(path), line=lines[i], name="crank_deg", value=angles[i],
-                          previous=angles[i - 1]))
+        raise error(NoteText.of("file.increasing", where=shown_path(path), line=lines[i], name="crank_deg",
+                                value=angles[i], previous=angles[i - 1]))
     if angles.size < 4:
-        raise error(_said("file.few_rows", where=shown_path(path), rows=angles.size))
+        raise error(NoteText.of("file.few_rows", where=shown_path(path), rows=angles.size))
     if angles[-1] - angles[0] >= 720.0:
-        raise error(_said("file.span", where=shown_path(path), span=angles[-1] - angles[0]))
+        raise error(NoteText.of("file.span", where=shown_path(path), span=angles[-1] - angles[0]))
     return angles, lifts
 
 

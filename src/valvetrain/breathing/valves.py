@@ -13,7 +13,7 @@ import numpy as np
 
 from ..errors import InputError
 from ..flow import circle_area, curtain_area
-from ..locale import NoteText, note
+from ..locale import NoteText
 
 DEFAULT_CD = 0.7
 """Discharge coefficient on the flow section (the curtain area, at most the throat area) used where no measured table
@@ -27,11 +27,6 @@ REFERENCES = ("port", "curtain")
 
 class CdTableError(InputError):
     """A discharge-coefficient table that cannot be used; the message names what is wrong."""
-
-
-def _said(code, **params) -> NoteText:
-    """A table's refusal said in every language: the code of ``[notes]`` and its parameters."""
-    return NoteText(note(code, **params))
 
 
 @dataclass(frozen=True)
@@ -73,23 +68,23 @@ def check_table(l_over_d, forward, reverse, reference, source="discharge-coeffic
     """
     x = np.asarray(l_over_d, dtype=float)
     if reference not in REFERENCES:
-        raise CdTableError(_said("cd.reference", where=source, reference=repr(reference),
-                                 allowed=", ".join(REFERENCES)))
+        raise CdTableError(NoteText.of("cd.reference", where=source, reference=repr(reference),
+                                       allowed=", ".join(REFERENCES)))
     if x.ndim != 1 or x.size < 2:
-        raise CdTableError(_said("cd.two_rows", where=source))
+        raise CdTableError(NoteText.of("cd.two_rows", where=source))
     for name, cd in (("forward", forward), ("reverse", reverse)):
         cd = np.asarray(cd, dtype=float)
         if cd.shape != x.shape:
-            raise CdTableError(_said("cd.sizes", where=source, count=cd.size, direction=name, values=x.size))
+            raise CdTableError(NoteText.of("cd.sizes", where=source, count=cd.size, direction=name, values=x.size))
         bad = np.flatnonzero(~((cd >= 0.0) & (cd <= 1.0)))
         if bad.size:
-            raise CdTableError(_said("cd.range", where=source, row=bad[0] + 1, direction=name, value=cd[bad[0]]))
+            raise CdTableError(NoteText.of("cd.range", where=source, row=bad[0] + 1, direction=name, value=cd[bad[0]]))
     if x[0] < 0.0:
-        raise CdTableError(_said("cd.negative", where=source, value=x[0]))
+        raise CdTableError(NoteText.of("cd.negative", where=source, value=x[0]))
     steps = np.flatnonzero(np.diff(x) <= 0.0)
     if steps.size:
         i = steps[0] + 1
-        raise CdTableError(_said("cd.increasing", where=source, row=i + 1, value=x[i], previous=x[i - 1]))
+        raise CdTableError(NoteText.of("cd.increasing", where=source, row=i + 1, value=x[i], previous=x[i - 1]))
 
 
 def effective_areas(lift, table) -> tuple[np.ndarray, np.ndarray]:

@@ -11,7 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError
-from ..locale import NoteText, note
+from ..locale import NoteText
 from ..numerics import cumulative_integral
 from .kinematics import brix_crank_angle, crank_angle_at, displacement, piston_stroke
 
@@ -21,11 +21,6 @@ MIN_PRESSURE_MPA = 0.001
 
 class PressureFileError(InputError):
     """An indicator-diagram file that cannot be used; the message names the file and the line."""
-
-
-def _said(code, **params) -> NoteText:
-    """A pressure's refusal said in every language: the code of ``[notes]`` and its parameters."""
-    return NoteText(note(code, **params))
 
 
 def cycle_length(strokes) -> float:
@@ -75,21 +70,21 @@ def check_cycle(angle, pressure, strokes, source="indicator diagram") -> None:
         from the firing TDC gives a negative indicated work.
     """
     if pressure.max() < MIN_PEAK_RATIO * pressure.min():
-        raise PressureFileError(_said("pressure.flat", where=source, low=pressure.min() / 1e6,
-                                      high=pressure.max() / 1e6, ratio=MIN_PEAK_RATIO))
+        raise PressureFileError(NoteText.of("pressure.flat", where=source, low=pressure.min() / 1e6,
+                                            high=pressure.max() / 1e6, ratio=MIN_PEAK_RATIO))
     length = cycle_length(strokes)
     ends = np.concatenate([angle, [angle[0] + length]])
     gaps = np.diff(ends)
     k = int(np.argmax(gaps))
     if gaps[k] > np.radians(MAX_GAP_DEG):
-        raise PressureFileError(_said(
+        raise PressureFileError(NoteText.of(
             "pressure.gap", where=source, start=np.degrees(ends[k]), end=np.degrees(ends[k + 1]) % (180 * strokes),
             gap=np.degrees(gaps[k]), most=MAX_GAP_DEG, cycle=180 * strokes))
     firing = np.pi * (strokes - 2)
     peak = float(angle[int(np.argmax(pressure))])
     off = abs((peak - firing + length / 2.0) % length - length / 2.0)
     if off > np.radians(FIRING_WINDOW_DEG):
-        raise PressureFileError(_said(
+        raise PressureFileError(NoteText.of(
             "pressure.peak", where=source, peak=np.degrees(peak),
             firing=np.degrees(firing) % 360 if strokes == 2 else 360, window=FIRING_WINDOW_DEG))
 
@@ -128,7 +123,7 @@ def pv_to_angle(volume, pressure, bore, radius, lam, compression_ratio, strokes,
     turns = np.flatnonzero(dv[1:] != dv[:-1]) + 1
     branches = np.split(np.arange(volume.size), turns)
     if len(branches) != strokes:
-        raise PressureFileError(_said("pressure.branches", where=source, turns=len(turns), strokes=strokes))
+        raise PressureFileError(NoteText.of("pressure.branches", where=source, turns=len(turns), strokes=strokes))
     area = np.pi * bore**2 / 4.0
     clearance = area * 2.0 * radius / (compression_ratio - 1.0)
     full = 2.0 * radius if method == "brix" else piston_stroke(radius, lam, k)
@@ -138,8 +133,8 @@ def pv_to_angle(volume, pressure, bore, radius, lam, compression_ratio, strokes,
         bad = (volume[rows] < lo * (1 - 1e-3)) | (volume[rows] > hi * (1 + 1e-3))
         if bad.any():
             i = rows[np.flatnonzero(bad)[0]]
-            raise PressureFileError(_said("pressure.volume", where=source, row=i + 1, volume=volume[i] * 1e6,
-                                          low=lo * 1e6, high=hi * 1e6, stroke=n + 1))
+            raise PressureFileError(NoteText.of("pressure.volume", where=source, row=i + 1, volume=volume[i] * 1e6,
+                                                low=lo * 1e6, high=hi * 1e6, stroke=n + 1))
         travel = np.clip((volume[rows] - clearance) / area, 0.0, full)
         upstroke = n % 2 == 1
         angle = (brix_crank_angle(travel, radius, lam, upstroke) if method == "brix"
@@ -342,9 +337,9 @@ def check_timing(cycle) -> None:
     end = evo + np.degrees(cycle.blowdown)
     ivo, evc = np.degrees(cycle.intake_opens) + 720.0, np.degrees(cycle.exhaust_closes) + 720.0
     if not 0.0 < ivc < 360.0 + np.degrees(cycle.start):
-        raise InputError(_said("pressure.wiebe_ivc", closes=ivc, most=360.0 + np.degrees(cycle.start)))
+        raise InputError(NoteText.of("pressure.wiebe_ivc", closes=ivc, most=360.0 + np.degrees(cycle.start)))
     if not (360.0 < evo and end <= ivo and evc - 720.0 < ivc and evc >= ivo):
-        raise InputError(_said("pressure.wiebe_evo", opens=evo, end=end, start=ivo - 720.0, closes=evc - 720.0))
+        raise InputError(NoteText.of("pressure.wiebe_evo", opens=evo, end=end, start=ivo - 720.0, closes=evc - 720.0))
 
 
 def indicated_work(phi, pressure, volume) -> float:

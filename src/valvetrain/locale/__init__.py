@@ -227,6 +227,15 @@ class NoteText(str):
         text.parts = tuple(parts)
         return text
 
+    @classmethod
+    def of(cls, code, **params) -> "NoteText":
+        """The text of one note (:func:`note`'s code and parameters): a message said in every language.
+
+        >>> NoteText.of("field.zero_none")
+        'none'
+        """
+        return cls(note(code, **params))
+
     def __reduce__(self):
         return NoteText, (self.parts,)
 
@@ -251,15 +260,7 @@ def cited(*pieces) -> NoteText:
     >>> said, note_text(said.parts, "ru")
     ('Shang Hanji (1988), ch. 3 and ch. 7; 0.3-0.5 m/s usual', 'Shang Hanji (1988), ch. 3 and ch. 7; обычно 0,3-0,5 м/с')
     """
-    parts = []
-    for piece in pieces:
-        if isinstance(piece, NoteText):
-            parts += piece.parts
-        elif isinstance(piece, str):
-            parts += note("source.work", work=piece)
-        else:
-            parts += piece
-    return NoteText(parts)
+    return NoteText(sum((note_of(piece) if isinstance(piece, str) else piece for piece in pieces), ()))
 
 
 def verdict(counts, lang="en") -> tuple[str, str]:

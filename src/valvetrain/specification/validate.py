@@ -22,60 +22,56 @@ from .messages import Problem, shown
 from .si import si
 
 
-def _said(code, **params) -> NoteText:
-    """The message of a problem said in every language: the code of ``[notes]`` and its parameters."""
-    return NoteText(note(code, **params))
-
-
 def _valve_problems(name, v, engine):
     at = f"valves.{name}"
     missing = [k for k in ("max_lift_mm", "opens_deg", "closes_deg") if getattr(v, k) is None]
     if missing and v.cam.needs_timing:
-        return [Problem(f"{at}.{k}", _said("spec.timing_missing")) for k in missing]
+        return [Problem(f"{at}.{k}", NoteText.of("spec.timing_missing")) for k in missing]
     out = []
     if len({"opens_deg", "closes_deg"} & set(missing)) == 1:
         given, other = ("opens_deg", "closes_deg") if v.closes_deg is None else ("closes_deg", "opens_deg")
-        return [Problem(f"{at}.{given}", _said("spec.timing_pair", other=other), f"{getattr(v, given):g}", " ")]
+        return [Problem(f"{at}.{given}", NoteText.of("spec.timing_pair", other=other), f"{getattr(v, given):g}", " ")]
     if v.throat_diameter_mm >= engine.bore_mm:
-        out.append(Problem(f"{at}.throat_diameter_mm", _said("spec.throat_bore", bore=engine.bore_mm),
+        out.append(Problem(f"{at}.throat_diameter_mm", NoteText.of("spec.throat_bore", bore=engine.bore_mm),
                            f"{v.throat_diameter_mm:g}", " "))
     stem = v.parts.stem_diameter_mm
     if stem is not None and stem >= v.throat_diameter_mm:
-        out.append(Problem(f"{at}.parts.stem_diameter_mm", _said("spec.stem_throat", throat=v.throat_diameter_mm),
+        out.append(Problem(f"{at}.parts.stem_diameter_mm", NoteText.of("spec.stem_throat", throat=v.throat_diameter_mm),
                            f"{stem:g}", " "))
     if v.cam.base_radius_mm <= v.clearance_mm:
-        out.append(Problem(f"{at}.cam.base_radius_mm", _said("spec.base_radius_clearance", clearance=v.clearance_mm),
+        out.append(Problem(f"{at}.cam.base_radius_mm",
+                           NoteText.of("spec.base_radius_clearance", clearance=v.clearance_mm),
                            f"{v.cam.base_radius_mm:g}", " "))
     if v.lash_adjuster is not None and v.clearance_mm != 0.0:
-        out.append(Problem(f"{at}.clearance_mm", _said("spec.adjuster_clearance"), f"{v.clearance_mm:g}"))
+        out.append(Problem(f"{at}.clearance_mm", NoteText.of("spec.adjuster_clearance"), f"{v.clearance_mm:g}"))
     axis = None if v.lash_adjuster is None else v.lash_adjuster.axis_angle_deg
     if axis is not None and (v.lash_adjuster.location != "pivot" or not FOLLOWERS[v.cam.follower].pivot_axis):
-        out.append(Problem(f"{at}.lash_adjuster.axis_angle_deg", _said("spec.adjuster_axis"), f"{axis:g}", " "))
+        out.append(Problem(f"{at}.lash_adjuster.axis_angle_deg", NoteText.of("spec.adjuster_axis"), f"{axis:g}", " "))
     if v.switching is not None and not FOLLOWERS[v.cam.follower].switchable:
-        out.append(Problem(f"{at}.switching", _said("spec.switching_finger", follower=repr(v.cam.follower))))
+        out.append(Problem(f"{at}.switching", NoteText.of("spec.switching_finger", follower=repr(v.cam.follower))))
     low = None if v.switching is None else v.switching.low_lobe
     if low is not None and v.max_lift_mm is not None and low.max_lift_mm >= v.max_lift_mm:
-        out.append(Problem(f"{at}.switching.low_lobe.max_lift_mm", _said("spec.low_lobe", lift=v.max_lift_mm),
+        out.append(Problem(f"{at}.switching.low_lobe.max_lift_mm", NoteText.of("spec.low_lobe", lift=v.max_lift_mm),
                            f"{low.max_lift_mm:g}"))
     if v.switching is not None and v.switching.compression_ratio is not None and engine.rod_length_mm is None:
-        out.append(Problem(f"{at}.switching.compression_ratio", _said("spec.deactivated_rod"),
+        out.append(Problem(f"{at}.switching.compression_ratio", NoteText.of("spec.deactivated_rod"),
                            f"{v.switching.compression_ratio:g}", " "))
     ratio = v.spring.mean_diameter_ratio
     wires = v.spring.wire_diameter_range_mm
     low, high = (x / MM for x in feasible_mean_diameters(wires))
     if ratio[1] * v.throat_diameter_mm < low or ratio[0] * v.throat_diameter_mm > high:
-        out.append(Problem(f"{at}.spring.mean_diameter_ratio", _said(
+        out.append(Problem(f"{at}.spring.mean_diameter_ratio", NoteText.of(
             "spec.spring_diameters", throat=v.throat_diameter_mm, smallest=ratio[0] * v.throat_diameter_mm,
             largest=ratio[1] * v.throat_diameter_mm, thinnest=wires[0], thickest=wires[1], low=low, high=high),
                            f"{list(ratio)}", " "))
     out += [p.within(at) for p in spring_length_problems(v.spring, v.max_lift_mm)]
     if (v.drive.layout is not None and not any(link.lever for link in LAYOUTS[v.drive.layout].links)
             and v.rocker_ratio != 1.0):
-        out.append(Problem(f"{at}.drive.layout", _said("spec.layout_ratio", ratio=v.rocker_ratio),
+        out.append(Problem(f"{at}.drive.layout", NoteText.of("spec.layout_ratio", ratio=v.rocker_ratio),
                            f"\"{v.drive.layout}\"", " "))
     if FOLLOWERS[v.cam.follower].geometric_lever:
         if v.rocker_ratio != 1.0:
-            out.append(Problem(f"{at}.rocker_ratio", _said("spec.finger_ratio", follower=v.cam.follower),
+            out.append(Problem(f"{at}.rocker_ratio", NoteText.of("spec.finger_ratio", follower=v.cam.follower),
                                f"{v.rocker_ratio:g}"))
         if v.max_lift_mm is not None:
             problem = FOLLOWERS[v.cam.follower].from_cam(si(v.cam)).geometry_problem(
@@ -84,22 +80,23 @@ def _valve_problems(name, v, engine):
                 key, value, message, joiner = problem
                 out.append(Problem(f"{at}.cam.{key}", message, value, joiner))
         if v.drive.layout != "rocker":
-            out.append(Problem(f"{at}.drive.layout", _said("spec.finger_layout", follower=v.cam.follower),
+            out.append(Problem(f"{at}.drive.layout", NoteText.of("spec.finger_layout", follower=v.cam.follower),
                                shown(v.drive.layout)))
         if v.drive.valve_arm_mm is not None:
-            out.append(Problem(f"{at}.drive.valve_arm_mm", _said("spec.finger_arm", follower=v.cam.follower),
+            out.append(Problem(f"{at}.drive.valve_arm_mm", NoteText.of("spec.finger_arm", follower=v.cam.follower),
                                f"{v.drive.valve_arm_mm:g}"))
     elif v.drive.masses is not None and v.drive.masses.rocker_inertia_kg_mm2 > 0 and v.drive.valve_arm_mm is None:
-        out.append(Problem(f"{at}.drive.masses.rocker_inertia_kg_mm2", _said("spec.rocker_arm"),
+        out.append(Problem(f"{at}.drive.masses.rocker_inertia_kg_mm2", NoteText.of("spec.rocker_arm"),
                            f"{v.drive.masses.rocker_inertia_kg_mm2:g}"))
     if v.lubrication is not None and v.parts.cam_width_mm is None:
-        out.append(Problem(f"{at}.lubrication", _said("spec.cam_width", key=f"{at}.parts.cam_width_mm"), joiner=" "))
+        out.append(Problem(f"{at}.lubrication", NoteText.of("spec.cam_width", key=f"{at}.parts.cam_width_mm"),
+                           joiner=" "))
     if v.piston_gap_tdc_mm is not None and engine.rod_length_mm is None:
-        out.append(Problem(f"{at}.piston_gap_tdc_mm", _said("spec.piston_rod"), joiner=" "))
+        out.append(Problem(f"{at}.piston_gap_tdc_mm", NoteText.of("spec.piston_rod"), joiner=" "))
     if not {"opens_deg", "closes_deg"} & set(missing):
         half = main_half_angle_deg(v, engine.strokes)
         if not 0.0 < half < 180.0:
-            event = _said("spec.event_range")
+            event = NoteText.of("spec.event_range")
             out.append(Problem(f"{at}.opens_deg", event, f"{v.opens_deg + v.closes_deg:g}",
                                text=f"{at}.opens_deg + closes_deg = {v.opens_deg + v.closes_deg:g}: {event}"))
         out += v.cam.problems(at, v, engine)
@@ -129,13 +126,13 @@ def spring_length_problems(spring, lift_mm, lift_key="max_lift_mm") -> list[Prob
         least = note("spec.solid_at_lift", lift_key=lift_key, per_wire=per_wire, lift=lift_mm, wire=wire)
         below.append((least, lift_mm + per_wire * wire))
         if installed is not None and installed[1] <= below[0][1]:
-            out.append(Problem("spring.installed_length_mm", _said("spec.installed_solid", least=least,
-                                                                   length=below[0][1]), f"{list(installed)}"))
+            out.append(Problem("spring.installed_length_mm", NoteText.of("spec.installed_solid", least=least,
+                                                                         length=below[0][1]), f"{list(installed)}"))
     if installed is not None:
         below.append((note("spec.shortest_installed"), installed[0]))
     if free is not None and below and free <= max(length for _, length in below):
         bounds = sum((note("spec.bound", name=name, length=length) for name, length in below), ())
-        out.append(Problem("spring.max_free_length_mm", _said("spec.free_length", bounds=bounds), f"{free:g}"))
+        out.append(Problem("spring.max_free_length_mm", NoteText.of("spec.free_length", bounds=bounds), f"{free:g}"))
     return out
 
 
@@ -143,7 +140,7 @@ def _same(spec, key_crank, key_engine):
     """A [crank] value that defaults to [engine]'s; a problem message when both are given and differ."""
     a, b = getattr(spec.crank, key_crank) if spec.crank else None, getattr(spec.engine, key_engine)
     if a is not None and b is not None and abs(a - b) > 1e-9 * max(abs(a), abs(b)):
-        return a, [Problem(f"crank.{key_crank}", _said("spec.differs", key=f"engine.{key_engine}", value=b),
+        return a, [Problem(f"crank.{key_crank}", NoteText.of("spec.differs", key=f"engine.{key_engine}", value=b),
                            f"{a:g}", " ")]
     return (a if a is not None else b), []
 
@@ -164,18 +161,18 @@ def _crank_problems(spec):
         out += _same(spec, kc, ke)[1]
     bore, stroke, rod, _ = crank_geometry(spec)
     if rod is None:
-        out.append(Problem("crank.rod_length_mm", _said("spec.crank_rod"), joiner=" "))
+        out.append(Problem("crank.rod_length_mm", NoteText.of("spec.crank_rod"), joiner=" "))
     elif rod <= stroke / 2.0:
-        out.append(Problem("crank.rod_length_mm", _said("spec.rod_radius", radius=stroke / 2.0), f"{rod:g}", " "))
+        out.append(Problem("crank.rod_length_mm", NoteText.of("spec.rod_radius", radius=stroke / 2.0), f"{rod:g}", " "))
     c = spec.crank
     if c is None:
         return out
     if rod is not None and rod > stroke / 2.0 and abs(c.offset_mm) >= rod - stroke / 2.0:
-        out.append(Problem("crank.offset_mm", _said("spec.offset", most=rod - stroke / 2.0), f"{c.offset_mm:g}"))
+        out.append(Problem("crank.offset_mm", NoteText.of("spec.offset", most=rod - stroke / 2.0), f"{c.offset_mm:g}"))
     cycle = 180.0 * spec.engine.strokes
     n = cycle / c.step_deg
     if abs(n - round(n)) > 1e-9:
-        out.append(Problem("crank.step_deg", _said("spec.step", cycle=cycle), f"{c.step_deg:g}", " "))
+        out.append(Problem("crank.step_deg", NoteText.of("spec.step", cycle=cycle), f"{c.step_deg:g}", " "))
     return out
 
 
@@ -185,26 +182,28 @@ def _two_stroke_problems(spec):
         return []
     out = []
     if spec.engine.strokes != 2:
-        out.append(Problem("engine.strokes", _said("spec.two_stroke_strokes", strokes=spec.engine.strokes),
-                           f"{spec.engine.strokes}", text=f"[two_stroke] {_said('spec.two_stroke_strokes', strokes=spec.engine.strokes)}"))
+        needs = NoteText.of("spec.two_stroke_strokes", strokes=spec.engine.strokes)
+        out.append(Problem("engine.strokes", needs, f"{spec.engine.strokes}", text=f"[two_stroke] {needs}"))
     if not ts.ports:
-        out.append(Problem("two_stroke.ports", _said("spec.no_ports"), text=f"[two_stroke] {_said('spec.no_ports')}"))
+        needs = NoteText.of("spec.no_ports")
+        out.append(Problem("two_stroke.ports", needs, text=f"[two_stroke] {needs}"))
     bore, stroke = crank_geometry(spec)[:2]
     for name, port in ts.ports.items():
         if port.width_mm >= math.pi * bore:
-            out.append(Problem(f"two_stroke.ports.{name}.width_mm", _said("spec.port_width", most=math.pi * bore),
+            out.append(Problem(f"two_stroke.ports.{name}.width_mm", NoteText.of("spec.port_width", most=math.pi * bore),
                                f"{port.width_mm:g}"))
         if port.height_mm is not None and port.kind != "inlet" and port.height_mm >= stroke:
-            out.append(Problem(f"two_stroke.ports.{name}.height_mm", _said("spec.port_height", stroke=stroke),
+            out.append(Problem(f"two_stroke.ports.{name}.height_mm", NoteText.of("spec.port_height", stroke=stroke),
                                f"{port.height_mm:g}", " "))
         if port.kind == "inlet" and ts.piston_height_mm is None:
-            out.append(Problem(f"two_stroke.ports.{name}", _said("spec.inlet_piston")))
+            out.append(Problem(f"two_stroke.ports.{name}", NoteText.of("spec.inlet_piston")))
         elif port.kind == "inlet" and not ts.piston_height_mm < port.lower_edge_mm < ts.piston_height_mm + stroke:
-            out.append(Problem(f"two_stroke.ports.{name}.lower_edge_mm", _said(
+            out.append(Problem(f"two_stroke.ports.{name}.lower_edge_mm", NoteText.of(
                 "spec.lower_edge", piston=ts.piston_height_mm, top=ts.piston_height_mm + stroke),
                                f"{port.lower_edge_mm:g}"))
     if ts.speed_range_rpm is not None and ts.speed_range_rpm[0] >= ts.speed_range_rpm[1]:
-        out.append(Problem("two_stroke.speed_range_rpm", _said("spec.low_high"), f"{list(ts.speed_range_rpm)}", " "))
+        out.append(Problem("two_stroke.speed_range_rpm", NoteText.of("spec.low_high"), f"{list(ts.speed_range_rpm)}",
+                           " "))
     return out
 
 
@@ -217,41 +216,41 @@ def _breathing_problems(spec):
         return []
     out = []
     if spec.engine.strokes != 4:
-        out.append(Problem("engine.strokes", _said("spec.breathing_strokes"), f"{spec.engine.strokes}"))
+        out.append(Problem("engine.strokes", NoteText.of("spec.breathing_strokes"), f"{spec.engine.strokes}"))
     if crank_geometry(spec)[2] is None:
-        out.append(Problem("engine.rod_length_mm", _said("spec.breathing_rod"), joiner=" "))
+        out.append(Problem("engine.rod_length_mm", NoteText.of("spec.breathing_rod"), joiner=" "))
     if b.compression_ratio is None and (spec.crank is None or spec.crank.compression_ratio is None):
-        out.append(Problem("breathing.compression_ratio", _said("spec.required_or", other="crank.compression_ratio"),
-                           joiner=" "))
+        out.append(Problem("breathing.compression_ratio",
+                           NoteText.of("spec.required_or", other="crank.compression_ratio"), joiner=" "))
     if b.mode == "fired" and (spec.crank is None or spec.crank.cycle is None):
-        out.append(Problem("breathing.mode", _said("spec.fired"), "'fired'"))
+        out.append(Problem("breathing.mode", NoteText.of("spec.fired"), "'fired'"))
     kinds = {v.kind for v in spec.valves.values()}
     for side in ("intake", "exhaust"):
         s = getattr(b, side)
         if s.lift_file is None and side not in kinds:
-            out.append(Problem(f"breathing.{side}.lift_file", _said("spec.lift_file", side=side), joiner=" "))
+            out.append(Problem(f"breathing.{side}.lift_file", NoteText.of("spec.lift_file", side=side), joiner=" "))
         if s.lift is not None and s.lift_file is not None:
-            out.append(Problem(f"breathing.{side}.lift", _said("spec.lift_or_file"), f"'{s.lift}'"))
+            out.append(Problem(f"breathing.{side}.lift", NoteText.of("spec.lift_or_file"), f"'{s.lift}'"))
         elif s.lift == "dynamics":
             bare = [name for name, v in spec.valves.items() if v.kind == side and v.dynamics is None]
             if bare:
-                out.append(Problem(f"breathing.{side}.lift", _said(
+                out.append(Problem(f"breathing.{side}.lift", NoteText.of(
                     "spec.lift_dynamics", side=side, bare=", ".join(f"[valves.{n}]" for n in bare)), "'dynamics'"))
         if s.lift_file is not None and s.cd_file is None:
-            out.append(Problem(f"breathing.{side}.cd_file", _said("spec.cd_file"), joiner=" "))
+            out.append(Problem(f"breathing.{side}.cd_file", NoteText.of("spec.cd_file"), joiner=" "))
     walls = [("curve", b.curve)] if b.curve is not None else []
     walls += [(f"conditions.{i}", c) for i, c in enumerate(b.conditions)]
     for where, c in walls:
         if c.wall_temperature_C is None and b.wall_temperature_C is None:
             out.append(Problem(f"breathing.{where}.wall_temperature_C",
-                               _said("spec.required_or", other="breathing.wall_temperature_C"), joiner=" "))
+                               NoteText.of("spec.required_or", other="breathing.wall_temperature_C"), joiner=" "))
     return out
 
 
 def _acceptance_problems(spec):
     """An [[accepted]] table naming a valve the specification does not have."""
-    said = (_said("spec.allowed_names", names=", ".join(repr(n) for n in spec.valves)) if spec.valves
-            else _said("spec.no_valves"))
+    said = (NoteText.of("spec.allowed_names", names=", ".join(repr(n) for n in spec.valves)) if spec.valves
+            else NoteText.of("spec.no_valves"))
     return [Problem(f"accepted.{i}.valve", said, shown(a.valve, 40))
             for i, a in enumerate(spec.accepted) if a.valve is not None and a.valve not in spec.valves]
 
@@ -264,21 +263,23 @@ def _camshaft_problems(spec):
         return []
     out = []
     if not spec.valves:
-        out.append(Problem("camshaft", _said("spec.camshaft_valves")))
+        out.append(Problem("camshaft", NoteText.of("spec.camshaft_valves")))
     missing = [n for n in (c.valves or []) if n not in spec.valves]
     if missing or c.valves == []:
-        out.append(Problem("camshaft.valves", _said("spec.valve_list", valves=f"{sorted(spec.valves)}"), f"{c.valves}"))
+        out.append(Problem("camshaft.valves", NoteText.of("spec.valve_list", valves=f"{sorted(spec.valves)}"),
+                           f"{c.valves}"))
     n = spec.engine.cylinders
     cylinders = c.cylinders if c.cylinders is not None else list(range(1, n + 1))
     if not cylinders or len(set(cylinders)) != len(cylinders) or max(cylinders) > n:
-        out.append(Problem("camshaft.cylinders", _said("spec.cylinders", count=n), f"{c.cylinders}"))
+        out.append(Problem("camshaft.cylinders", NoteText.of("spec.cylinders", count=n), f"{c.cylinders}"))
     elif c.cylinders is None and len(c.cylinder_positions_mm) != n:
-        out.append(Problem("camshaft.cylinder_positions_mm", _said("spec.positions", entries=len(c.cylinder_positions_mm),
-                                                                   count=n), joiner=" "))
+        out.append(Problem("camshaft.cylinder_positions_mm",
+                           NoteText.of("spec.positions", entries=len(c.cylinder_positions_mm), count=n), joiner=" "))
     carried = [name for name in (c.valves or spec.valves) if name in spec.valves]
     if len({spec.valves[name].phaser for name in carried}) > 1:
         phased = [name for name in carried if spec.valves[name].phaser is not None]
-        out.append(Problem("camshaft.valves", _said("spec.phased_camshaft", phased=", ".join(phased)), f"{carried}"))
+        out.append(Problem("camshaft.valves", NoteText.of("spec.phased_camshaft", phased=", ".join(phased)),
+                           f"{carried}"))
     return out
 
 
@@ -288,7 +289,7 @@ def _phaser_problems(spec):
     for name, v in spec.valves.items():
         side = None if spec.breathing is None else getattr(spec.breathing, v.kind)
         if v.phaser is not None and side is not None and side.lift_file is not None:
-            out.append(Problem(f"valves.{name}.phaser", _said("spec.phaser_measured", side=v.kind)))
+            out.append(Problem(f"valves.{name}.phaser", NoteText.of("spec.phaser_measured", side=v.kind)))
     return out
 
 
@@ -299,7 +300,7 @@ def problems(spec) -> list[Problem]:
     out += _crank_problems(spec) + _two_stroke_problems(spec) + _camshaft_problems(spec) + _acceptance_problems(spec)
     out += _breathing_problems(spec) + _phaser_problems(spec)
     if spec.engine.strokes != 4 and spec.valves:
-        out.insert(0, Problem("engine.strokes", _said("spec.valve_strokes"), f"{spec.engine.strokes}"))
+        out.insert(0, Problem("engine.strokes", NoteText.of("spec.valve_strokes"), f"{spec.engine.strokes}"))
     return out
 
 
@@ -329,21 +330,21 @@ def set_keys(document, values) -> dict[str, Any]:
     for key, value in values.items():
         parts = key.split(".")
         if not all(parts):
-            raise InputError(Problem(key, _said("spec.empty_name")))
+            raise InputError(Problem(key, NoteText.of("spec.empty_name")))
         node = out
         for i, part in enumerate(parts[:-1]):
             if part not in node:
                 if i == 1 and parts[0] == "valves":
-                    raise InputError(Problem(key, _said("spec.no_such_valve", valve=repr(part),
-                                                        valves=", ".join(node) or "none")))
+                    raise InputError(Problem(key, NoteText.of("spec.no_such_valve", valve=repr(part),
+                                                              valves=", ".join(node) or "none")))
                 node[part] = {}
             node = node[part]
             if isinstance(node, list):
-                raise InputError(Problem(key, _said("spec.key_in_array", table=".".join(parts[:i + 1]))))
+                raise InputError(Problem(key, NoteText.of("spec.key_in_array", table=".".join(parts[:i + 1]))))
             if not isinstance(node, dict):
-                raise InputError(Problem(key, _said("spec.key_in_value", table=".".join(parts[:i + 1]))))
+                raise InputError(Problem(key, NoteText.of("spec.key_in_value", table=".".join(parts[:i + 1]))))
         if isinstance(node.get(parts[-1]), dict):
-            raise InputError(Problem(key, _said("spec.table_not_value")))
+            raise InputError(Problem(key, NoteText.of("spec.table_not_value")))
         node[parts[-1]] = value
     return out
 

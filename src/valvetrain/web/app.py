@@ -522,8 +522,9 @@ class Designer(Layout, SweepPanel, VvaPanel):
         self.show_problems()
 
     def _axis_numbers(self) -> None:
-        """Every plot's axes and colour bars with the numbers of the page's language (``[designer] numbers``: the browser's number
-        format of that locale, a decimal comma in Russian, up to four decimals; Bokeh's own rule in English)."""
+        """Every plot's axes and colour bars with the numbers of the page's language (``[designer] numbers``: the
+        browser's number format of that locale, a decimal comma in Russian, up to four decimals; Bokeh's own rule in
+        English)."""
         language = WORDS[self.lang]["numbers"]
         formatter = BasicTickFormatter() if language == "en" else CustomJSTickFormatter(
             args={"locale": language}, code=AXIS_NUMBERS_JS)

@@ -11,8 +11,9 @@ from bokeh.models import ColumnDataSource, CustomJS
 import numpy as np
 
 from ..languages import LANGS
-from ..locale import NoteText, catalogue
+from ..locale import NoteText, catalogue, note_text
 from ..report.names import translate
+from ..specification.messages import Problem
 from ..units import per_cam_degree
 
 WORDS = {lang: catalogue(lang)["designer"] for lang in LANGS}
@@ -391,10 +392,9 @@ def problem_text(p, lang) -> str:
     """A problem's line (an :func:`~valvetrain.api.error_records` record) in ``lang``: its key and the value given as
     the line has them, its message in the language where the message is a note (:class:`~valvetrain.locale.NoteText`:
     a range refused, a key that needs another), else as :func:`~valvetrain.report.names.translate` says the line."""
-    message, text = p["message"], p["text"]
-    if lang == "en" or not isinstance(message, NoteText) or not text.endswith(message):
-        return translate(text, lang)
-    return text[:len(text) - len(message)] + translate(message, lang)
+    if lang == "en" or not isinstance(p["message"], NoteText):
+        return translate(p["text"], lang)
+    return note_text(Problem(p["path"], p["message"], p["value"], text=p["text"]).note(), lang, "")
 
 
 def _now():
