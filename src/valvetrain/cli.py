@@ -18,7 +18,7 @@ import click
 
 from . import __version__
 from .errors import ValvetrainError
-from .interruption import Interruption, interrupted_while_starting
+from .interruption import Interruption, end_interrupted
 from .outfolder import OutFolderError, check_out, location_problem, out_path
 from .specification import SpecError, example_spec, example_text, input_files, load_spec
 
@@ -165,7 +165,7 @@ class _Main(click.Group):
         except BaseException:
             if not Interruption.seen:
                 raise
-            interrupted_while_starting()
+            end_interrupted()
 
     def invoke(self, ctx):
         try:
@@ -176,16 +176,13 @@ class _Main(click.Group):
             if not Interruption.seen:
                 click.echo(f"error: {err.key + ': ' if err.key else ''}{err}", err=True)
                 sys.exit(1)
-            click.echo("error: interrupted", err=True)
-            sys.exit(130)
+            end_interrupted()
         except Exception:
             if not Interruption.seen:
                 raise
-            click.echo("error: interrupted", err=True)
-            sys.exit(130)
+            end_interrupted()
         except KeyboardInterrupt:
-            click.echo("error: interrupted", err=True)
-            sys.exit(130)
+            end_interrupted()
 
 
 @click.group(cls=_Main, context_settings={"help_option_names": ["-h", "--help"]})

@@ -20,7 +20,7 @@ took about 0.2 s of processor time in a run of the built-in example).
 import gc
 import os
 
-from .interruption import Interruption, interrupted_while_starting
+from .interruption import Interruption, end_interrupted
 
 BLAS_THREADS = {"OPENBLAS_NUM_THREADS": "1"}
 """The environment the program sets before numpy is imported, where not set already: OpenBLAS starts a thread a core
@@ -39,5 +39,5 @@ def program() -> None:
     gc.enable()
 
     if Interruption.seen:
-        interrupted_while_starting()
+        end_interrupted()
     command()
