@@ -221,7 +221,7 @@ def run(spec, laws=None, progress=None, headlines_only=False, diagnose=True, mem
         Each one-mass ``[dynamics]`` sweep simulates only the speeds that decide its jump speed, its largest seating
         velocity and its largest cam force (:func:`valvetrain.dynamics.sweep.headline_sweep`), for a tolerance
         study: its checks and headlines as the full sweep's (within the accuracy that function states), its
-        per-speed table sparse.
+        per-speed table sparse; no cam card (it has no checks).
     diagnose : bool
         Where no spring passes, diagnose why (:func:`valvetrain.springs.diagnose`, about a second); False leaves
         the diagnosis out of the springs' failing checks.
@@ -308,7 +308,7 @@ def run(spec, laws=None, progress=None, headlines_only=False, diagnose=True, mem
                  for name, v in switched.items()}
     found += [c for s in switching.values() for c in s.checks]
     found, valves = accept(found, spec.accepted, valves)
-    card = cam_card_stage(valves) if valves and engine.strokes == 4 else None
+    card = cam_card_stage(valves) if valves and engine.strokes == 4 and not headlines_only else None
     return DesignResults(spec, engine_record(engine), valves, tuple(found), crank, ports, card, shaft, breathing,
                          phasers, switching)
 
