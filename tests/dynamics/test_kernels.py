@@ -67,9 +67,11 @@ def test_the_one_node_kernel_gives_the_general_kernels_records(monkeypatch):
     speed that takes sub-steps, two speeds whose valve bounces after seating (its seat closings split,
     kernels._split_step) and one whose follower jumps, each until it repeats and each for two revolutions (the state
     carried from one to the next), recorded as the general kernel (kernels.integrate_block) records them: equal to the
-    bit, every record and the revolutions too (the DOP853 tests above check the integration itself)."""
+    bit, every record and the revolutions too, with only an exact rest held (REST_AMPLITUDE 0: a state an RK4 step
+    leaves as it is; the DOP853 tests above check the integration itself)."""
     import valvetrain.dynamics.sweep as module
 
+    monkeypatch.setattr(module, "REST_AMPLITUDE", 0.0)
     law, train = appendix_train()
     speeds = np.array([700.0, 5554.0, 6200.0, 9500.0]) * np.pi / 60
     fields = ("lift", "velocity", "acceleration", "contact_force", "seat_force", "spring_force", "clash_margin",
@@ -78,12 +80,46 @@ def test_the_one_node_kernel_gives_the_general_kernels_records(monkeypatch):
     assert module.one_node(net)
     # an element of another kind (the spring made unilateral) is left to the general kernel, which has every kind
     assert not module.one_node(replace(net, unilateral=np.ones_like(net.unilateral)))
+    own = module.one_node
     for tolerance in (module.STATE_TOLERANCE, -1.0):
         one = sweep(law, train, speeds, revolutions=2, tolerance=tolerance)
         monkeypatch.setattr(module, "one_node", lambda net: False)
         general = sweep(law, train, speeds, revolutions=2, tolerance=tolerance)
-        monkeypatch.undo()
+        monkeypatch.setattr(module, "one_node", own)
         assert one.substeps.max() > 1 and one.events.bounce_height[1] > 1e-6
         assert one.events.jumped[-1] and not one.events.jumped[0]
         for name in fields:
             assert np.array_equal(getattr(one, name), getattr(general, name)), (tolerance, name)
+
+
+def test_a_speed_held_at_rest_keeps_the_integrations_records(monkeypatch):
+    """The one-node kernel holds a valve at rest on its seat while the base circle passes (kernels.integrate_node,
+    sweep.REST_AMPLITUDE): the appendix train's speeds of the test above, two revolutions each, against the same
+    kernel with only an exact rest held (REST_AMPLITUDE 0, the general kernel's records to the bit, test above).
+    While held the valve's motion about its rest position is at most REST_AMPLITUDE (kernels._at_rest: the energy
+    of the seated oscillator), so the lift differs by at most twice that over the first revolution (the held state
+    and the integrated one each within it of the rest position), and the events carried by the second revolution
+    (seating velocity, bounce, smallest contact force) by what a 2 pm start moves them; the revolutions are the same.
+    And a speed's records do not depend on the speeds it runs with (held by its own state alone): swept alone, each
+    speed's records are those of the sweep of four, to the bit."""
+    import valvetrain.dynamics.sweep as module
+
+    law, train = appendix_train()
+    speeds = np.array([700.0, 5554.0, 6200.0, 9500.0]) * np.pi / 60
+    held = sweep(law, train, speeds, revolutions=2, tolerance=-1.0)
+    monkeypatch.setattr(module, "REST_AMPLITUDE", 0.0)
+    integrated = sweep(law, train, speeds, revolutions=2, tolerance=-1.0)
+    monkeypatch.undo()
+    assert module.REST_AMPLITUDE == 1e-12
+    assert np.abs(held.lift - integrated.lift).max() <= 2 * module.REST_AMPLITUDE
+    assert not np.array_equal(held.lift, integrated.lift)     # held somewhere: the records are not the integration's
+    assert np.array_equal(held.revolutions, integrated.revolutions)
+    a, b = held.events, integrated.events
+    assert np.array_equal(a.jumped, b.jumped)
+    assert np.allclose(a.seating_velocity, b.seating_velocity, rtol=1e-6)
+    assert np.allclose(a.bounce_height, b.bounce_height, rtol=1e-6, atol=1e-12)
+    assert np.allclose(a.min_contact_force, b.min_contact_force, rtol=1e-6, atol=1e-6)
+    for i, w in enumerate(speeds):
+        alone = sweep(law, train, [w], revolutions=2, tolerance=-1.0)
+        for name in ("lift", "velocity", "acceleration", "contact_force", "seat_force", "spring_force"):
+            assert np.array_equal(getattr(alone, name)[0], getattr(held, name)[i]), (w, name)
