@@ -16,7 +16,9 @@ Run on demand: ``python benchmarks/bench_dynamics.py`` (``--one-mass``: the firs
 * baseline (b): the same fixed-step RK4 arithmetic as a plain C loop, compiled here with
   gcc -O2 and loaded with ctypes (single thread), checked to give the same lifts (the numba
   kernel runs the speeds of a block in SIMD lanes, each lane doing the C loop's scalar
-  arithmetic, so the lifts agree to the bit; the C loop takes the speeds one after another);
+  arithmetic, so the lifts agree to the bit, but where the one-mass kernel holds a seated valve at rest:
+  within 2 pm there, :data:`valvetrain.dynamics.sweep.REST_AMPLITUDE`; the C loop takes the speeds one after
+  another);
 * baseline (a): the straightforward per-speed ``scipy.integrate.solve_ivp`` loop at equal
   accuracy: the fastest tolerance and largest step whose valve lift stays within 1 um of a
   tight-tolerance (rtol 1e-11) reference, timed on a sample of the speeds and scaled to the sweep.
