@@ -158,7 +158,7 @@ class SpeedResult:
     converged : bool
         The motion repeated before the cap (:data:`STATE_TOLERANCE`).
     adjuster_extension : ndarray (n,) or None
-        Plunger extension of the train's hydraulic lash adjuster [m, at the adjuster] (zeros without one).
+        Plunger extension of the train's hydraulic lash adjuster [m, at the adjuster] (None without one).
     """
 
     cam_speed: float
@@ -238,7 +238,7 @@ class SweepResult:
         The speed repeated within :data:`STATE_TOLERANCE` before the cap.
     adjuster_extension : ndarray (S, n) or None
         Plunger extension of the train's hydraulic lash adjuster over the recorded revolution [m, at the adjuster]
-        (zeros without one).
+        (None without one).
     follower_lift : ndarray (S, n) or None
         Position of the node on the cam [m at the valve] where it is not the valve (the first drive part of a
         multi-mass train); None: the valve is on the cam.
@@ -439,7 +439,7 @@ def sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, progress=None, bo
     out_clash = np.empty((s_count, n_elems))
     out_surge = np.empty((s_count, n_nodes))
     out_revs = np.zeros(s_count, dtype=np.int64)
-    out_z = np.zeros((s_count, steps))
+    out_z = np.zeros((s_count if net.adjuster[0] > 0.0 else 0, steps))
     ra, rb = rows(net.a, net.b, n_nodes)
     workers = get_num_threads()
     order, start, seq = blocks(n_sub, workers)
@@ -482,7 +482,8 @@ def sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, progress=None, bo
     coils = net.surge_weight > 0.0
     return SweepResult(speeds, theta[::per_step], u[::per_step] - net.lash, lift, velocity, acceleration, contact, seat,
                        spring, du[::per_step] / net.rocker_ratio, out_surge[:, coils], out_clash.min(axis=1), n_sub,
-                       np.where(out_revs > 0, out_revs, int(revolutions)), out_revs > 0, bounce_tolerance, out_z,
+                       np.where(out_revs > 0, out_revs, int(revolutions)), out_revs > 0, bounce_tolerance,
+                       out_z if out_z.size else None,
                        follower if rec_nodes.size > 1 else None)
 
 
