@@ -41,10 +41,11 @@ def test_the_compiled_scans_of_bounces_and_seatings_against_their_definitions():
 
 
 def test_the_events_of_a_sweep_at_once_are_each_speeds_own():
-    """SweepResult.events finds every speed's events over the speeds at once (numpy over the rows, as the design's
-    per-speed table reads them): the same numbers, bit for bit, as speed_result's of each speed alone (the record
-    of one speed, SweepResult.speed), over speeds that separate, bounce on an undamped seat and neither (the harmonic
-    cam above, 0.6-1.2 x its jump speed)."""
+    """SweepResult.events finds every speed's events over the speeds at once (compiled passes over each row's lift
+    event, events._lifting_contact, as the design's per-speed table reads them): the same numbers, bit for bit, as
+    speed_result's of each speed alone (the record of one speed, SweepResult.speed: the masks of every sample,
+    separation_mask and lowest_lifting_force), over speeds that separate, bounce on an undamped seat and neither (the
+    harmonic cam above, 0.6-1.2 x its jump speed)."""
     lift, phi, mass, rate, preload = 8e-3, 1.0, 0.2, 50e3, 300.0
     exact = np.sqrt(2 * (preload + rate * lift) / (mass * lift * (np.pi / phi) ** 2))
     train = one_mass_train(mass, 3e8, rate, preload, damping_ratio=0.1, seat_damping_ratio=0.0)

@@ -280,56 +280,98 @@ def lift_event(kinematic, lift, follower=None, tolerance=BOUNCE_TOLERANCE) -> np
     return out.reshape(lift.shape)
 
 
-@njit(cache=True, nogil=True)
-def _lift_events(kinematic, lift, follower, tolerance) -> np.ndarray:
-    """:func:`lift_event` of each row of ``lift`` and ``follower`` (S, n), compiled: a few passes over each row's
-    samples, where the whole-array version (two first-True searches round the record on every row, the masks of
-    every sample) took half the time of a sweep's events.  Its steps, each row: the largest lift (the first of equal ones); the first
-    sample at or below the seat from it on, round the record (the return); the cam's lowest point from the return
-    on; the first catching from that point on; the event from the catching (else the first sample of positive
-    cam lift, else the return) up to the return."""
-    count, n = lift.shape
-    out = np.zeros((count, n), dtype=np.bool_)
+@njit(cache=True, nogil=True, no_cpython_wrapper=True, no_cfunc_wrapper=True, inline='always')
+def _event_span(kinematic, rising, lowest, y, follower, tolerance) -> tuple[int, int]:
+    """The lift event of one record (:func:`lift_event`): its first sample and its count of samples, which run
+    round the record from it.  ``rising`` is the first sample of positive cam lift (-1: none) and ``lowest`` the cam's
+    lowest lift; ``y`` the valve's lift, ``follower`` the node on the cam (n,).  Its steps: the largest lift (the first
+    of equal ones); the first sample at or below the seat from it on, round the record (the return); the cam's lowest
+    point from the return on; the first catching from that point on; the event from the catching (else the first
+    sample of positive cam lift, else the return) up to the return."""
+    n = y.size
+    peak = 0
+    for i in range(1, n):
+        if y[i] > y[peak]:
+            peak = i
+    seat = -1
+    for j in range(n):
+        i = peak + j if peak + j < n else peak + j - n
+        if y[i] <= 0.0:
+            seat = i
+            break
+    if seat < 0 or not y[peak] > 0.0:          # never returns to its seat: every sample while the cam lifts
+        return 0, n if rising >= 0 else 0
+    bottom = seat
+    for j in range(n):
+        i = seat + j if seat + j < n else seat + j - n
+        if kinematic[i] <= lowest:
+            bottom = i
+            break
+    start = -1
+    for j in range(n):
+        i = bottom + j if bottom + j < n else bottom + j - n
+        if kinematic[i] > 0.0 and y[i] > tolerance and follower[i] < kinematic[i]:
+            start = i
+            break
+    if start < 0:
+        start = rising if rising >= 0 else seat
+    return start, seat - start if seat >= start else seat - start + n
+
+
+@njit(cache=True, nogil=True, no_cpython_wrapper=True, no_cfunc_wrapper=True, inline='always')
+def _cam_rise(kinematic) -> tuple[int, float]:
+    """The first sample of positive cam lift (-1: none) and the cam's lowest lift, of a record (n,)."""
     rising = -1
     lowest = np.inf
-    for i in range(n):
+    for i in range(kinematic.size):
         if rising < 0 and kinematic[i] > 0.0:
             rising = i
         lowest = min(lowest, kinematic[i])
+    return rising, lowest
+
+
+@njit(cache=True, nogil=True)
+def _lift_events(kinematic, lift, follower, tolerance) -> np.ndarray:
+    """:func:`lift_event` of each row of ``lift`` and ``follower`` (S, n), compiled (:func:`_event_span`): a few
+    passes over each row's samples, where the whole-array version (two first-True searches round the record on every
+    row, the masks of every sample) took half the time of a sweep's events."""
+    count, n = lift.shape
+    out = np.zeros((count, n), dtype=np.bool_)
+    rising, lowest = _cam_rise(kinematic)
     for r in range(count):
-        y = lift[r]
-        peak = 0
-        for i in range(1, n):
-            if y[i] > y[peak]:
-                peak = i
-        seat = -1
-        for j in range(n):
-            i = peak + j if peak + j < n else peak + j - n
-            if y[i] <= 0.0:
-                seat = i
-                break
-        if seat < 0 or not y[peak] > 0.0:      # never returns to its seat: every sample while the cam lifts
-            if rising >= 0:
-                out[r, :] = True
-            continue
-        bottom = seat
-        for j in range(n):
-            i = seat + j if seat + j < n else seat + j - n
-            if kinematic[i] <= lowest:
-                bottom = i
-                break
-        start = -1
-        for j in range(n):
-            i = bottom + j if bottom + j < n else bottom + j - n
-            if kinematic[i] > 0.0 and y[i] > tolerance and follower[r, i] < kinematic[i]:
-                start = i
-                break
-        if start < 0:
-            start = rising if rising >= 0 else seat
-        span = seat - start if seat >= start else seat - start + n
+        start, span = _event_span(kinematic, rising, lowest, lift[r], follower[r], tolerance)
         for j in range(span):
             out[r, start + j if start + j < n else start + j - n] = True
     return out
+
+
+@njit(cache=True, nogil=True)
+def _lifting_contact(kinematic, lift, follower, contact, tolerance):
+    """Of each row of (S, n) records, over its lift event (:func:`_event_span`) at once: whether the follower
+    separates (:func:`separation_mask`), its first and last sample separated (0 without), the smallest contact force
+    while the cam lifts the open valve (:func:`lowest_lifting_force`'s before the separation is accounted; inf where
+    none; nan where one is) and whether the cam lifts it at all, compiled: the masks of every sample, made and read
+    again, took half the time of a sweep's events."""
+    count, n = lift.shape
+    jumped, lifting = np.zeros(count, dtype=np.bool_), np.zeros(count, dtype=np.bool_)
+    first, last, least = np.zeros(count, dtype=np.int64), np.zeros(count, dtype=np.int64), np.full(count, np.inf)
+    rising, lowest = _cam_rise(kinematic)
+    for r in range(count):
+        y, f, c = lift[r], follower[r], contact[r]
+        start, span = _event_span(kinematic, rising, lowest, y, f, tolerance)
+        low, high, small = n, -1, np.inf
+        for j in range(span):
+            i = start + j if start + j < n else start + j - n
+            if kinematic[i] > 0.0 and y[i] > tolerance:
+                lifting[r] = True
+                if small == small and (c[i] < small or c[i] != c[i]):     # np.min's: a nan is kept
+                    small = c[i]
+                if c[i] <= 0.0 and f[i] >= kinematic[i]:
+                    low, high = min(low, i), max(high, i)
+        least[r] = small
+        if high >= 0:
+            jumped[r], first[r], last[r] = True, low, high
+    return jumped, first, last, least, lifting
 
 
 def separation_mask(contact, kinematic, lift, event=None, follower=None, tolerance=BOUNCE_TOLERANCE) -> np.ndarray:
@@ -419,16 +461,15 @@ def sweep_events(result) -> SweepEvents:
     theta, kinematic, lift = result.theta, result.kinematic_lift, result.lift
     step_time = float(theta[1] - theta[0]) / result.cam_speeds
     index, angle, velocity = seatings(theta, lift, result.velocity, result.acceleration, step_time)
-    event = lift_event(kinematic, lift, result.follower_lift, result.bounce_tolerance)
-    separation = separation_mask(result.contact_force, kinematic, lift, event, result.follower_lift,
-                                 result.bounce_tolerance)
-    jumped = separation.any(axis=-1)
-    last = lift.shape[-1] - 1 - np.argmax(separation[:, ::-1], axis=-1)
+    rows = np.ascontiguousarray(lift, dtype=float)
+    on_cam = rows if result.follower_lift is None else np.ascontiguousarray(result.follower_lift, dtype=float)
+    jumped, first, last, least, lifting = _lifting_contact(np.ascontiguousarray(kinematic, dtype=float), rows, on_cam,
+                                                           np.ascontiguousarray(result.contact_force, dtype=float),
+                                                           float(result.bounce_tolerance))
     height, count = bounces(lift, index, result.bounce_tolerance, result.velocity, step_time)
-    return SweepEvents(index, angle, velocity, height, count, jumped,
-                       np.where(jumped, theta[np.argmax(separation, axis=-1)], np.nan),
+    return SweepEvents(index, angle, velocity, height, count, jumped, np.where(jumped, theta[first], np.nan),
                        np.where(jumped, theta[last], np.nan),
-                       lowest_lifting_force(result.contact_force, kinematic, lift, jumped, event, result.bounce_tolerance))
+                       np.where(jumped, 0.0, np.where(lifting, least, np.nan)))
 
 
 def force_reached_zero(events) -> np.ndarray:
