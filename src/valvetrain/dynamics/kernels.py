@@ -491,12 +491,12 @@ def integrate_node(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_pe
 
     A speed at rest is held there: at a step where the cam stands still (the base circle: its displacement and slope
     the same at the step's samples, ``quiet``), a speed whose motion about its rest position stays within ``rest``
-    (:func:`_at_rest`, looked at every :data:`HOLD_EVERY` steps) keeps its state, and its records are those of that state, until the cam moves again; once
-    every speed of the block is held, the steps up to the cam's next motion are not integrated, their records
-    written.  The records then differ from the integrated ones by the motion left, at most twice ``rest`` in the lift;
-    ``rest`` = 0 holds only a state that an RK4 step leaves as it is (no velocity, no acceleration): the records of
-    the integration to the bit.  A speed is held by its own state alone, whatever block it runs in.  The valve rests
-    on its seat over 38-46 % of the built-in example's revolution.
+    (:func:`_at_rest`, looked at every :data:`HOLD_EVERY` steps) keeps its state, and its records are those of that
+    state, until the cam moves again; once every speed of the block is held, the steps up to the cam's next motion
+    are not integrated, their records written.  The records then differ from the integrated ones by the motion left,
+    at most twice ``rest`` in the lift; ``rest`` = 0 holds only a state that an RK4 step leaves as it is (no velocity,
+    no acceleration): the records of the integration to the bit.  A speed is held by its own state alone, whatever
+    block it runs in.  The valve rests on its seat over 38-46 % of the built-in example's revolution.
     """
     ne = ra.size
     bsize = idx.size
@@ -807,7 +807,7 @@ HOLD_EVERY = 8
 """Every how many steps :func:`integrate_node` looks whether its speeds are at rest while the cam stands still; a
 speed is looked at only once its velocity is within what a motion of ``rest`` allows.  Looked at so, a sweep where
 nothing is held takes the time it took without the hold (the benchmark's 200-speed sweep on one thread, alternately:
-23.2 against 23.1 ms); every speed looked at every eighth step, a third longer."""
+23.2 against 23.1 ms); every speed looked at every eighth step, 20-40 % longer."""
 
 
 BLOCK_SPEEDS = 64

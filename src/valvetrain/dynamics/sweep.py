@@ -451,8 +451,8 @@ def sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, progress=None, bo
         idx = order[start[j]:start[j + 1]]
         if single:
             integrate_node(idx, speeds, int(n_sub[idx[0]]), dtheta, u, du, per_step, steps, int(revolutions),
-                           float(tolerance), float(rate), REST_AMPLITUDE, inv_mass, net.x_init, ra, rb, net.stiffness, net.damping,
-                           net.gap, net.preload, net.unilateral, int(net.seat_element), springs,
+                           float(tolerance), float(rate), REST_AMPLITUDE, inv_mass, net.x_init, ra, rb, net.stiffness,
+                           net.damping, net.gap, net.preload, net.unilateral, int(net.seat_element), springs,
                            float(net.rocker_ratio), int(net.cam_element), int(net.variable_node), net.variable_mass,
                            lift, velocity, acceleration, contact, seat, spring, out_clash, out_surge, out_revs)
             return idx.size
