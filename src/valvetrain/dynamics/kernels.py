@@ -399,9 +399,10 @@ def _at_rest(x, v, acc, cam_x, im0, ra, rb, k, d, gap, uni, rest) -> bool:
 
     With its closed elements (the bilateral ones and the contacts compressed: stiffness K, damping C) the node is a
     damped oscillator, M a = -K (x - x_r) - C v, so x - x_r = -(M a + C v) / K, and its energy K (x - x_r)^2 / 2 +
-    M v^2 / 2 does not grow: the node stays within A = sqrt((x - x_r)^2 + M v^2 / K) of x_r, its velocity within
-    A sqrt(K / M).  It holds while no contact changes: each closed contact compressed by more than A, its force
-    K_e (delta - A) - C_e sqrt(K / M) A still positive, each open one open by more than A."""
+    M v^2 / 2 does not grow: the node stays within A = sqrt((x - x_r)^2 + M v^2 / K) of x_r, so within 2 A of where
+    it is, its velocity within A sqrt(K / M).  It holds while no contact changes: each closed contact compressed by
+    more than 2 A, its force K_e (delta - 2 A) - C_e sqrt(K / M) A still positive, each open one open by more than
+    2 A."""
     stiff, damp = 0.0, 0.0
     for e in range(ra.size):
         delta = (x if ra[e] == 0 else cam_x if ra[e] == 2 else 0.0) - \
@@ -421,9 +422,9 @@ def _at_rest(x, v, acc, cam_x, im0, ra, rb, k, d, gap, uni, rest) -> bool:
         if uni[e]:
             delta = (x if ra[e] == 0 else cam_x if ra[e] == 2 else 0.0) - \
                 (x if rb[e] == 0 else cam_x if rb[e] == 2 else 0.0) - gap[e]
-            if delta > 0.0 and not k[e] * (delta - amplitude) - d[e] * w * amplitude > 0.0:
+            if delta > 0.0 and not k[e] * (delta - 2.0 * amplitude) - d[e] * w * amplitude > 0.0:
                 return False
-            if delta <= 0.0 and not delta < -amplitude:
+            if delta <= 0.0 and not delta < -2.0 * amplitude:
                 return False
     return True
 
