@@ -67,3 +67,22 @@ def test_a_sigint_during_a_weakref_callback_still_interrupts():
     runs). Provoked deterministically here: the KeyboardInterrupt is delivered again and interrupts the work."""
     proc = subprocess.run([sys.executable, "-c", SIGINT_IN_A_CALLBACK], capture_output=True, text=True, timeout=60)
     assert (proc.returncode, proc.stdout, proc.stderr) == (0, "interrupted\n", "")
+
+
+@pytest.mark.parametrize("stdout", ["Broken", "None"])
+def test_an_interrupted_program_ends_with_130_whatever_its_stdout(stdout):
+    """end_interrupted ends the program with status 130 and its one line even where the output cannot be flushed:
+    its reader gone (the flush raises BrokenPipeError, as after Ctrl-C to a pipeline ``valvetrain ... | head``) or
+    no standard output at all; it never returns."""
+    code = f"""
+import io, sys
+from valvetrain.interruption import end_interrupted
+class Broken(io.StringIO):
+    def flush(self):
+        raise BrokenPipeError(32, "Broken pipe")
+sys.stdout = {"Broken()" if stdout == "Broken" else "None"}
+end_interrupted()
+print("returned", file=sys.stderr)
+"""
+    proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
+    assert (proc.returncode, proc.stderr) == (130, "error: interrupted\n")

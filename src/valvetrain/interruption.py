@@ -58,7 +58,10 @@ def end_interrupted() -> NoReturn:
     string in an imported library makes CPython end a normal exit by killing itself with SIGINT instead of the status,
     and the finalisation of a run interrupted in the middle of its work once ended in a SIGSEGV after the message (a
     test of the continuous integration, not reproduced in 140 interrupted runs here)."""
-    sys.stdout.flush()
-    sys.stderr.write("error: interrupted\n")
-    sys.stderr.flush()
+    for say in (lambda: sys.stdout.flush(), lambda: sys.stderr.write("error: interrupted\n"),
+                lambda: sys.stderr.flush()):
+        try:
+            say()
+        except (OSError, ValueError, AttributeError):   # a reader gone (a broken pipe), a stream closed or None
+            pass
     os._exit(130)
