@@ -439,7 +439,8 @@ def sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, progress=None, bo
     out_clash = np.empty((s_count, n_elems))
     out_surge = np.empty((s_count, n_nodes))
     out_revs = np.zeros(s_count, dtype=np.int64)
-    out_z = np.zeros((s_count if net.adjuster[0] > 0.0 else 0, steps))
+    adjusted = net.adjuster[0] > 0.0                # a hydraulic lash adjuster: its plunger's extension recorded
+    out_z = np.zeros((s_count if adjusted else 0, steps))
     ra, rb = rows(net.a, net.b, n_nodes)
     workers = get_num_threads()
     order, start, seq = blocks(n_sub, workers)
@@ -483,7 +484,7 @@ def sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, progress=None, bo
     return SweepResult(speeds, theta[::per_step], u[::per_step] - net.lash, lift, velocity, acceleration, contact, seat,
                        spring, du[::per_step] / net.rocker_ratio, out_surge[:, coils], out_clash.min(axis=1), n_sub,
                        np.where(out_revs > 0, out_revs, int(revolutions)), out_revs > 0, bounce_tolerance,
-                       out_z if out_z.size else None,
+                       out_z if adjusted else None,
                        follower if rec_nodes.size > 1 else None)
 
 
