@@ -29,7 +29,7 @@ from .checks import SEVERITIES
 from .design import run
 from .errors import InputError
 from .sensitivity import constant, is_power_of_two, saltelli_points, saltelli_size, sobol_indices
-from .specification import SpecError, validate
+from .specification import SpecError
 from .specification.messages import shown
 from .specification.validate import spec_document
 from .study import MMAP_THRESHOLD_BYTES, GridError, check_grid, failure_text, set_malloc
@@ -250,7 +250,7 @@ def evaluate_sample(document) -> dict[str, Any]:
     threads = get_num_threads()
     set_num_threads(1)   # numba's setting is the calling thread's own
     try:
-        results = run(validate(document), headlines_only=True, diagnose=False, memo=DESIGNS)
+        results = run(document, headlines_only=True, diagnose=False, memo=DESIGNS)   # validated there, once
     except SpecError as err:
         return {"status": "refused", "message": "\n".join(err.problems), "checks": {}, "headlines": {}}
     except Exception as exc:  # noqa: BLE001 - one sample that cannot be designed must not stop the study

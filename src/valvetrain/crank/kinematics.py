@@ -11,6 +11,8 @@ Every quantity has the exact slider-crank form (default) and the textbook series
 manual (``exact=False``).
 """
 
+from functools import lru_cache
+
 import numpy as np
 
 from ..errors import InputError
@@ -142,13 +144,24 @@ def extremes(radius, lam, omega, k=0.0, exact=True) -> dict[str, float]:
     dict
         ``v_max``, ``v_max_angle``, ``j_max``, ``j_max_angle``, ``j_min``, ``j_min_angle``
         (SI; angles in rad in [0, 2 pi)).
+
+    Notes
+    -----
+    Found once for each set of arguments a process meets (the last 64): the samples of a tolerance study design the
+    same crank again and again, and its six Brent searches were 4 % of a sample of the built-in example.
     """
+    return dict(_extremes(float(radius), float(lam), float(omega), float(k), bool(exact)))
+
+
+@lru_cache(maxsize=64)
+def _extremes(radius, lam, omega, k, exact) -> tuple[tuple[str, float], ...]:
+    """:func:`extremes` of plain floats, as the items of its dict."""
     edges = np.linspace(0.0, 2.0 * np.pi, 9)
     xv, v = extremum(lambda p: velocity(p, radius, lam, omega, k, exact), edges, "max")
     xa, a_max = extremum(lambda p: acceleration(p, radius, lam, omega, k, exact), edges, "max")
     xn, a_min = extremum(lambda p: acceleration(p, radius, lam, omega, k, exact), edges, "min")
-    return {"v_max": v, "v_max_angle": xv % (2 * np.pi), "j_max": a_max, "j_max_angle": xa % (2 * np.pi),
-            "j_min": a_min, "j_min_angle": xn % (2 * np.pi)}
+    return (("v_max", v), ("v_max_angle", xv % (2 * np.pi)), ("j_max", a_max), ("j_max_angle", xa % (2 * np.pi)),
+            ("j_min", a_min), ("j_min_angle", xn % (2 * np.pi)))
 
 
 def piston_stroke(radius, lam, k=0.0) -> float:
