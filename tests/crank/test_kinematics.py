@@ -74,6 +74,17 @@ def test_extremes_lambda_0_285():
     assert kinematics.textbook_extremes(1.0, 0.24, 1.0)["j_min"] == pytest.approx(-0.76)  # lambda <= 1/4: 1 - lambda
 
 
+def test_extremes_kept_for_equal_arguments_are_a_callers_own():
+    """The extremes found once for a set of arguments (a tolerance study's samples): a caller changing its dict
+    changes no later answer, and numpy scalars find the same values as floats.  Spec section 7's exact j_max of
+    lambda = 0.285 is 1 + lambda."""
+    first = kinematics.extremes(1.0, 0.285, 1.0)
+    first["j_max"] = 0.0
+    again = kinematics.extremes(np.float64(1.0), np.float64(0.285), np.float64(1.0))
+    assert again["j_max"] == pytest.approx(1.285, abs=1e-12)
+    assert again is not first
+
+
 def test_offset_mechanism():
     """Spec section 7, k = 0.1, lambda = 0.285: stroke 2R x 1.00044, TDC at 1.27 deg, BDC at 182.28 deg,
     s(phi = 0) from true TDC 0.00032 R."""
