@@ -4,7 +4,8 @@
 Run on demand: ``python benchmarks/bench_tolerance.py [--samples N] [--baseline SRC]``, e.g. ``--baseline
 /work/wt/base/src`` (the ``src`` folder of another checkout: the last landed tree).  The built-in example (two valves,
 each with a [dynamics] sweep of 200 speeds) gets four tolerances (both clearances, uniform +-0.03 mm; both valve
-masses, normal sigma 1 g).  Each tree is measured in a process of its own (``PYTHONPATH`` its ``src``), this tree
+masses, normal sigma 1 g), or with ``--tolerances 2`` the README's two (the intake's clearance and valve mass: a
+process designs the exhaust valve once, :data:`valvetrain.tolerance.DESIGNS`).  Each tree is measured in a process of its own (``PYTHONPATH`` its ``src``), this tree
 first, then the baseline; printed for each:
 
 * the processor time of one sample (all threads of the process, the median over 16 distinct samples of the study;
@@ -40,7 +41,7 @@ import tempfile
 import time
 from pathlib import Path
 
-TOLERANCES = """
+TOLERANCES = {4: """
 [[tolerances]]
 key = "valves.intake.clearance_mm"
 distribution = "uniform"
@@ -60,7 +61,19 @@ sigma = 0.001
 key = "valves.exhaust.drive.masses.valve_kg"
 distribution = "normal"
 sigma = 0.001
-"""
+""",
+    2: """
+[[tolerances]]
+key = "valves.intake.clearance_mm"
+distribution = "uniform"
+half_range = 0.03
+
+[[tolerances]]
+key = "valves.intake.drive.masses.valve_kg"
+distribution = "normal"
+sigma = 0.001
+"""}
+"""The tolerances added to the built-in example, by their count (``--tolerances``)."""
 
 SOURCE = Path(__file__).resolve().parent.parent / "src"
 """This tree's package folder."""
@@ -124,7 +137,7 @@ def measure(samples):
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)
         spec = tmp / "engine.toml"
-        spec.write_text(example_text() + TOLERANCES, encoding="utf-8")
+        spec.write_text(example_text() + TOLERANCES[ARGS.tolerances], encoding="utf-8")
         documents = distinct_samples(spec, 16)
         out["load"] = os.getloadavg()[0]
         out["full"] = cpu_per_call(lambda d: run(validate(d)), documents[:6])   # first: evaluate_sample keeps the heap
@@ -139,7 +152,8 @@ def measure(samples):
 def measured(source, samples):
     """:func:`measure` of the tree whose package folder is ``source``, in a child process."""
     env = dict(os.environ, PYTHONPATH=str(source))
-    res = subprocess.run([sys.executable, __file__, "--child", "--samples", str(samples)], env=env, check=True,
+    res = subprocess.run([sys.executable, __file__, "--child", "--samples", str(samples),
+                          "--tolerances", str(ARGS.tolerances)], env=env, check=True,
                          capture_output=True, text=True)
     return json.loads(res.stdout.splitlines()[-1])
 
@@ -152,7 +166,7 @@ def sample_cpu():
 
     with tempfile.TemporaryDirectory() as tmp:
         spec = Path(tmp) / "engine.toml"
-        spec.write_text(example_text() + TOLERANCES, encoding="utf-8")
+        spec.write_text(example_text() + TOLERANCES[ARGS.tolerances], encoding="utf-8")
         return cpu_per_call(evaluate_sample, distinct_samples(spec, 16))
 
 
@@ -163,7 +177,7 @@ def alternate(baseline, rounds=3):
     for _ in range(rounds):
         for source, into in zip((SOURCE, Path(baseline).resolve()), times, strict=True):
             env = dict(os.environ, PYTHONPATH=str(source))
-            res = subprocess.run([sys.executable, __file__, "--child-sample"], env=env, check=True,
+            res = subprocess.run([sys.executable, __file__, "--child-sample", "--tolerances", str(ARGS.tolerances)], env=env, check=True,
                                  capture_output=True, text=True)
             into.append(float(res.stdout.split()[-1]))
     return times
@@ -187,7 +201,8 @@ def show(name, m, samples):
 
 def main():
     samples = ARGS.samples
-    print(f"tolerance benchmark: the built-in example with four tolerances, {samples} samples, {os.cpu_count()} "
+    print(f"tolerance benchmark: the built-in example with {ARGS.tolerances} tolerances, {samples} samples, "
+          f"{os.cpu_count()} "
           f"cores, load average {os.getloadavg()[0]:.1f} at the start")
     new = measured(SOURCE, samples)
     show("this tree", new, samples)
@@ -217,6 +232,8 @@ def main():
 if __name__ == "__main__":
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--samples", type=int, default=100)
+    parser.add_argument("--tolerances", type=int, choices=sorted(TOLERANCES), default=4,
+                        help="4: both valves' clearances and masses; 2: the intake's (the README's example)")
     parser.add_argument("--baseline", help="the src folder of the baseline tree (e.g. /work/wt/base/src)")
     parser.add_argument("--child", action="store_true", help=argparse.SUPPRESS)
     parser.add_argument("--child-sample", action="store_true", help=argparse.SUPPRESS)
