@@ -41,38 +41,20 @@ import tempfile
 import time
 from pathlib import Path
 
-TOLERANCES = {4: """
-[[tolerances]]
-key = "valves.intake.clearance_mm"
+CLEARANCE = """[[tolerances]]
+key = "valves.{}.clearance_mm"
 distribution = "uniform"
 half_range = 0.03
+"""
 
-[[tolerances]]
-key = "valves.exhaust.clearance_mm"
-distribution = "uniform"
-half_range = 0.03
-
-[[tolerances]]
-key = "valves.intake.drive.masses.valve_kg"
+VALVE_MASS = """[[tolerances]]
+key = "valves.{}.drive.masses.valve_kg"
 distribution = "normal"
 sigma = 0.001
+"""
 
-[[tolerances]]
-key = "valves.exhaust.drive.masses.valve_kg"
-distribution = "normal"
-sigma = 0.001
-""",
-    2: """
-[[tolerances]]
-key = "valves.intake.clearance_mm"
-distribution = "uniform"
-half_range = 0.03
-
-[[tolerances]]
-key = "valves.intake.drive.masses.valve_kg"
-distribution = "normal"
-sigma = 0.001
-"""}
+TOLERANCES = {4: "".join("\n" + t.format(v) for t in (CLEARANCE, VALVE_MASS) for v in ("intake", "exhaust")),
+              2: "".join("\n" + t.format("intake") for t in (CLEARANCE, VALVE_MASS))}
 """The tolerances added to the built-in example, by their count (``--tolerances``)."""
 
 SOURCE = Path(__file__).resolve().parent.parent / "src"
