@@ -274,7 +274,8 @@ def failure_text(exc) -> str:
 
 class StudyStopped(ValvetrainError, RuntimeError):
     """A study that could not design every point (a worker process died); ``records`` holds the points designed
-    before (None for the others), ``lost`` the indices of the points that were in progress."""
+    before (None for the others), ``lost`` the indices of the points that were in progress or waiting (given to a
+    process or a task, not designed)."""
 
     def __init__(self, message, records, lost):
         super().__init__(message)
@@ -458,12 +459,13 @@ class _Records(list):
 
 
 def _stopped(records, lost, describe, why):
-    """The :class:`StudyStopped` of a study whose points ``lost`` (indices) were in progress when ``why`` happened."""
+    """The :class:`StudyStopped` of a study whose points ``lost`` (indices) were in progress or waiting when ``why``
+    happened."""
     shown = "; ".join(f"point {i + 1} ({describe(i)})" for i in lost[:3]) + (
         f" and {len(lost) - 3} more" if len(lost) > 3 else "")
     done = sum(r is not None for r in records)
-    return StudyStopped(f"{why} while designing {'one of ' if len(lost) > 1 else ''}{shown}; the study stopped "
-                        f"with {done} of {len(records)} points designed", records, lost)
+    return StudyStopped(f"{why} with {'these points' if len(lost) > 1 else 'this point'} in progress or waiting: "
+                        f"{shown}; the study stopped with {done} of {len(records)} points designed", records, lost)
 
 
 def _in_processes(numbered, workers, records, tick, describe, point):
@@ -471,17 +473,19 @@ def _in_processes(numbered, workers, records, tick, describe, point):
     or waiting are known (not designed, named in the error)."""
     # fresh interpreters: a fork of a process whose compiled kernels run OpenMP threads is unsafe
     with ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context("spawn")) as pool:
-        running, done = {}, 0
+        running, done, why = {}, 0, "a worker process died (killed, or out of memory)"
         while True:
             for i, d in itertools.islice(numbered, POINTS_PER_PROCESS * workers - len(running)):
-                running[pool.submit(point, d)] = i
+                try:
+                    running[pool.submit(point, d)] = i
+                except BrokenProcessPool:   # a process died since the last wait: this point is not designed either
+                    raise _stopped(records, sorted([*running.values(), i]), describe, why) from None
             if not running:
                 return
             finished, _ = wait(running, return_when=FIRST_COMPLETED)
             for future in sorted(finished, key=lambda f: isinstance(f.exception(), BrokenProcessPool)):
                 if isinstance(future.exception(), BrokenProcessPool):
-                    raise _stopped(records, sorted(running.values()), describe,
-                                   "a worker process died (killed, or out of memory)")
+                    raise _stopped(records, sorted(running.values()), describe, why)
                 records[running.pop(future)] = future.result()
                 done += 1
             tick(done, len(records))
