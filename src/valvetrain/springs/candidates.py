@@ -6,7 +6,7 @@ SI units: N, m, Pa, kg, rad/s.
 """
 
 from dataclasses import dataclass, field
-from functools import cached_property
+from functools import cached_property, lru_cache
 
 import numpy as np
 
@@ -174,8 +174,15 @@ class _ArrayCheck:
             return None if x is None else float(x[i] if np.ndim(x) else x)
 
         return check(self.code, float(self.value[i]), pick(self.low), pick(self.high), unit=self.unit,
-                     source=self.source if isinstance(self.source, str) else cited(self.source),
+                     source=self.source if isinstance(self.source, str) else _cited(self.source),
                      severity=self.severity)
+
+
+@lru_cache(maxsize=256)
+def _cited(source):
+    """The words of a check's source note (:func:`valvetrain.locale.cited`), said once: a spring design cites the
+    same few sources in every search of its spring-mass fixed point (five for the built-in example's intake)."""
+    return cited(source)
 
 
 def _minimum(limit):
