@@ -144,7 +144,7 @@ class _ArrayCheck:
     low: object = None
     high: object = None
     unit: str = ""
-    source: object = ""     # a text, or a note (:func:`valvetrain.locale.note`) cited when a check is made
+    source: str = ""
     severity: str = "warning"
 
     @property
@@ -174,8 +174,7 @@ class _ArrayCheck:
             return None if x is None else float(x[i] if np.ndim(x) else x)
 
         return check(self.code, float(self.value[i]), pick(self.low), pick(self.high), unit=self.unit,
-                     source=self.source if isinstance(self.source, str) else _cited(self.source),
-                     severity=self.severity)
+                     source=self.source, severity=self.severity)
 
 
 @lru_cache(maxsize=256)
@@ -325,27 +324,30 @@ def evaluate_springs(preload, rate, lift, mean_diameter, wire_diameter, material
     grade = {"grade": material.grade, "material": material.source.parts}
     checks = {
         "tau_max": _ArrayCheck("spring.tau_max", tau_max, high=allowable, unit="MPa", severity="failure",
-                               source=note("source.spring_allowable", work=f"{_WORKS}, eq. (6.1)", **grade)),
+                               source=_cited(note("source.spring_allowable", work=f"{_WORKS}, eq. (6.1)",
+                                                  **grade))),
         "fatigue_safety": _ArrayCheck("spring.fatigue_safety", safety, low=_minimum(material.min_safety),
-                                      severity="failure", source=note("source.spring_fatigue", work=f"{_WORKS}, eq. (6.12)",
-                                                                         **grade)),
+                                      severity="failure",
+                                      source=_cited(note("source.spring_fatigue", work=f"{_WORKS}, eq. (6.12)",
+                                                         **grade))),
         "resonance_ratio": _ArrayCheck("spring.resonance_ratio", omega / camshaft_speed,
                                        low=_minimum(material.min_resonance_ratio),
-                                       source=note("source.spring_resonance", work=f"{_WORKS}, eq. (6.14)")),
+                                       source=_cited(note("source.spring_resonance", work=f"{_WORKS}, eq. (6.14)"))),
         # the coils of the spring as made (rounded down): the number its table shows; the rounding keeps the
         # verdict, floor(2 n) / 2 >= 2 exactly where n >= 2
         "working_coils": _ArrayCheck("spring.working_coils", coils, low=2.0,
-                                     source=note("source.half_coils", work=f"{_WORKS}, eq. (6.2)")),
+                                     source=_cited(note("source.half_coils", work=f"{_WORKS}, eq. (6.2)"))),
         "deflection_ratio": _ArrayCheck("spring.deflection_ratio", (p0 + actual * lift) / p0, *ratio_range,
-                                        source=note("source.rounded_coils", work=f"{_WORKS}, work 5")),
+                                        source=_cited(note("source.rounded_coils", work=f"{_WORKS}, work 5"))),
     }
     if max_installed_length is not None:
         checks["installed_length"] = _ArrayCheck("spring.installed_length", lengths["installed_length"],
                                                  high=max_installed_length, unit="mm",
-                                                 source=note("source.installed_length", factor=INSTALLED_TO_LIFT_MAX))
+                                                 source=_cited(note("source.installed_length",
+                                                                    factor=INSTALLED_TO_LIFT_MAX)))
     if max_free_length is not None:
         checks["free_length"] = _ArrayCheck("spring.free_length", lengths["free_length"], high=max_free_length, unit="mm",
-                                            source=note("source.free_length"))
+                                            source=_cited(note("source.free_length")))
     if imposed is not None:
         checks["coil_gap_at_full_lift"] = _ArrayCheck("spring.coil_gap_at_full_lift",
                                                       lengths["min_pitch"] / d - 1.0, low=material.gap_factor,
@@ -354,8 +356,9 @@ def evaluate_springs(preload, rate, lift, mean_diameter, wire_diameter, material
         difference = np.abs(omega - partner_frequency) / partner_frequency
         checks["frequency_difference"] = _ArrayCheck("spring.frequency_difference", difference,
                                                      low=_minimum(min_frequency_difference),
-                                                     source=note("source.ratios_differ", work=f"{_WORKS}, eq. (6.14)",
-                                                                         difference=min_frequency_difference))
+                                                     source=_cited(note("source.ratios_differ",
+                                                                        work=f"{_WORKS}, eq. (6.14)",
+                                                                        difference=min_frequency_difference)))
     target = (p0 + c0 * lift) / p0
     return Candidates(material, big_d, d, coils, p0, actual, lift, target, chi, tau_max, tau_min, safety,
                       omega, omega / camshaft_speed, lengths, mass, checks)
