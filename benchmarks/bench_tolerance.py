@@ -5,8 +5,8 @@ Run on demand: ``python benchmarks/bench_tolerance.py [--samples N] [--baseline 
 /work/wt/base/src`` (the ``src`` folder of another checkout: the last landed tree).  The built-in example (two valves,
 each with a [dynamics] sweep of 200 speeds) gets four tolerances (both clearances, uniform +-0.03 mm; both valve
 masses, normal sigma 1 g), or with ``--tolerances 2`` the README's two (the intake's clearance and valve mass: a
-process designs the exhaust valve once, :data:`valvetrain.tolerance.DESIGNS`).  Each tree is measured in a process of its own (``PYTHONPATH`` its ``src``), this tree
-first, then the baseline; printed for each:
+process designs the exhaust valve once, :data:`valvetrain.tolerance.DESIGNS`).  Each tree is measured in a process
+of its own (``PYTHONPATH`` its ``src``), this tree first, then the baseline; printed for each:
 
 * the processor time of one sample (all threads of the process, the median over 16 distinct samples of the study;
   the other jobs of a shared machine change it less than the wall time), :func:`valvetrain.tolerance.evaluate_sample`,
@@ -159,8 +159,8 @@ def alternate(baseline, rounds=3):
     for _ in range(rounds):
         for source, into in zip((SOURCE, Path(baseline).resolve()), times, strict=True):
             env = dict(os.environ, PYTHONPATH=str(source))
-            res = subprocess.run([sys.executable, __file__, "--child-sample", "--tolerances", str(ARGS.tolerances)], env=env, check=True,
-                                 capture_output=True, text=True)
+            res = subprocess.run([sys.executable, __file__, "--child-sample", "--tolerances", str(ARGS.tolerances)],
+                                 env=env, check=True, capture_output=True, text=True)
             into.append(float(res.stdout.split()[-1]))
     return times
 
@@ -184,8 +184,7 @@ def show(name, m, samples):
 def main():
     samples = ARGS.samples
     print(f"tolerance benchmark: the built-in example with {ARGS.tolerances} tolerances, {samples} samples, "
-          f"{os.cpu_count()} "
-          f"cores, load average {os.getloadavg()[0]:.1f} at the start")
+          f"{os.cpu_count()} cores, load average {os.getloadavg()[0]:.1f} at the start")
     new = measured(SOURCE, samples)
     show("this tree", new, samples)
     if ARGS.baseline:
