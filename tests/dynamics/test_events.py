@@ -6,7 +6,7 @@ import itertools
 import numpy as np
 import pytest
 
-from valvetrain.dynamics.events import bounces, runs, seatings
+from valvetrain.dynamics.events import bounces, largest_lift_errors, lift_error, runs, seatings
 from valvetrain.dynamics.models import one_mass_train
 from valvetrain.dynamics.sweep import sweep
 
@@ -38,6 +38,23 @@ def test_the_compiled_scans_of_bounces_and_seatings_against_their_definitions():
         assert c == sum(up for up, _ in itertools.groupby(after > 0.3))
         top = int(np.flatnonzero(np.isnan(y))[0]) if np.isnan(y).any() else int(np.flatnonzero(y == y.max())[0])
         assert i == (next((j for j in range(top, 12) if y[j] <= 0.0), 12) if y[top] > 0.0 else 12)
+
+
+def test_the_compiled_largest_lift_error_is_that_of_the_map_of_errors():
+    """largest_lift_errors (a compiled scan of each row) against the map of lift_error's definition, its absolute
+    value and numpy's largest of each row, equal to the bit: random rows with nan, zero and negative zero samples in
+    the lift and in the rigid lift (numpy's maximum keeps a nan of the rigid lift, its where drops a nan lift where
+    the cam is closed)."""
+    rng = np.random.default_rng(11)
+    lift, rigid = rng.normal(size=(40, 15)) * 1e-3, rng.normal(size=15) * 1e-3
+    for values in (lift.reshape(-1), rigid):
+        draw = rng.random(values.size)
+        values[draw < 0.08] = np.nan
+        values[(draw >= 0.08) & (draw < 0.16)] = 0.0
+        values[(draw >= 0.16) & (draw < 0.2)] = -0.0
+    expected = np.abs(lift_error(lift, rigid)).max(axis=1)
+    assert np.isnan(expected).any() and not np.isnan(expected).all()
+    assert np.array_equal(largest_lift_errors(lift, rigid), expected, equal_nan=True)
 
 
 def test_the_events_of_a_sweep_at_once_are_each_speeds_own():

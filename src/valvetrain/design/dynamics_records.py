@@ -11,6 +11,7 @@ from typing import Optional
 import numpy as np
 
 from ..dynamics.accuracy import MAX_HALVINGS, Refinement
+from ..dynamics.events import largest_lift_errors
 from ..dynamics.sweep import SpeedResult, SweepResult
 from ..units import rpm_to_rad_s
 from .results import quantity, shown
@@ -122,12 +123,10 @@ def speed_records(result, speeds, epsilon, events=None) -> SpeedRecords:
     :class:`~valvetrain.dynamics.accuracy.Refinement`), else the sweep's own."""
     events = result.events if events is None else events
     surge = result.surge_amplitude.max(axis=1) if result.surge_amplitude.shape[1] else None
-    error = result.lift_error
-    np.abs(error, out=error)     # in place: a map of speeds x angles
     return SpeedRecords(np.asarray(speeds, dtype=float), np.asarray(epsilon, dtype=float), events.min_contact_force,
                         result.contact_force.max(axis=1), events.seating_velocity, events.bounce_height,
                         events.bounce_count, events.jumped, events.jump_from, events.jump_to,
-                        error.max(axis=1), surge,
+                        largest_lift_errors(result.lift, result.kinematic_lift), surge,
                         np.where(np.isfinite(result.clash_margin), result.clash_margin, np.nan), result.revolutions)
 
 

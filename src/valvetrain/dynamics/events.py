@@ -24,6 +24,38 @@ def lift_error(lift, kinematic_lift) -> np.ndarray:
     return np.where((lift > 0) | (rigid > 0), lift - rigid, 0.0)
 
 
+def largest_lift_errors(lift, kinematic_lift) -> np.ndarray:
+    """The largest |:func:`lift_error`| of each row of ``lift`` (S, n) [m] against the rigid lift (n,) [m], as
+    ``np.abs(lift_error(lift, kinematic_lift)).max(axis=1)`` (nan where one is), without the map of the errors.
+
+    >>> largest_lift_errors(np.array([[-1e-6, 2e-3, 0.0], [0.0, 2.1e-3, 3e-5]]), np.array([-1e-4, 2.1e-3, 1e-5])
+    ...                     ).round(9).tolist()
+    [0.0001, 2e-05]
+    """
+    return _largest_lift_errors(np.ascontiguousarray(lift, dtype=float).reshape(-1, np.shape(lift)[-1]),
+                                np.ascontiguousarray(kinematic_lift, dtype=float))
+
+
+@njit(cache=True, nogil=True)
+def _largest_lift_errors(lift, kinematic) -> np.ndarray:
+    """:func:`largest_lift_errors`, compiled: the arithmetic of :func:`lift_error` on each sample (numpy's maximum
+    keeps a nan of the rigid lift) and numpy's largest (a nan is kept); a map of the errors, made and read again,
+    took a fortieth of a tolerance sample."""
+    count, n = lift.shape
+    out = np.empty(count)
+    for r in range(count):
+        top = 0.0
+        for j in range(n):
+            k = kinematic[j]
+            rigid = k if (k > 0.0) | (k != k) else 0.0
+            y = lift[r, j]
+            e = abs(y - rigid) if (y > 0.0) | (rigid > 0.0) else 0.0
+            if j == 0 or (top == top and (e > top or e != e)):
+                top = e
+        out[r] = top
+    return out
+
+
 def runs(mask) -> np.ndarray:
     """Start and end (exclusive) indices of the runs of True in a boolean array, shape (m, 2).
 
