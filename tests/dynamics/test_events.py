@@ -6,7 +6,7 @@ import itertools
 import numpy as np
 import pytest
 
-from valvetrain.dynamics.events import bounces, largest_lift_errors, lift_error, runs, seatings
+from valvetrain.dynamics.events import bounces, largest_lift_errors, lift_error, runs, seatings, zero_crossing
 from valvetrain.dynamics.models import one_mass_train
 from valvetrain.dynamics.sweep import sweep
 
@@ -55,6 +55,23 @@ def test_the_compiled_largest_lift_error_is_that_of_the_map_of_errors():
     expected = np.abs(lift_error(lift, rigid)).max(axis=1)
     assert np.isnan(expected).any() and not np.isnan(expected).all()
     assert np.array_equal(largest_lift_errors(lift, rigid), expected, equal_nan=True)
+
+
+def test_the_jump_speed_fit_finds_the_root_of_its_trend():
+    """zero_crossing against the root known by construction: a force -0.004 (w - 237.5)(w + 50) [N] on speeds every
+    2.12 rad/s from 200 (its parabola through the last three speeds without the event: the root 237.5 to round-off),
+    the same force with a nan at the third-last speed (the line through the last two: its root by hand), and a trend
+    without a root between the speeds (the first speed with the event)."""
+    w = 200.0 + 2.12 * np.arange(30)
+    force = -0.004 * (w - 237.5) * (w + 50.0)
+    assert zero_crossing(w, force, force <= 0.0) == pytest.approx(237.5, rel=1e-13)
+    i = int(np.flatnonzero(force <= 0.0)[0])
+    gap = force.copy()
+    gap[i - 3] = np.nan
+    line = w[i - 1] - force[i - 1] * (w[i - 1] - w[i - 2]) / (force[i - 1] - force[i - 2])    # the secant's zero
+    assert zero_crossing(w, gap, gap <= 0.0) == pytest.approx(line, rel=1e-13)
+    rising = 1.0 + (w - 200.0) ** 2
+    assert zero_crossing(w, rising, w >= w[10]) == w[10]
 
 
 def test_the_events_of_a_sweep_at_once_are_each_speeds_own():
