@@ -74,6 +74,53 @@ def test_the_jump_speed_fit_finds_the_root_of_its_trend():
     assert zero_crossing(w, rising, w >= w[10]) == w[10]
 
 
+def test_the_seating_root_is_numpys_root_of_the_taylor_series():
+    """seatings' carried seating (its compiled root of the last free sample's Taylor series) against the series' roots
+    by numpy (the eigenvalues of the companion matrix), the smallest real one in (0, 2 h], on valves falling through
+    the seat with random velocity, acceleration and jerk; the angle to 1e-12 of a step, the velocity to 1e-12."""
+    rng = np.random.default_rng(13)
+    h = 1e-5
+    t = h * np.arange(40)
+    for _ in range(50):
+        seat = rng.uniform(10.0, 35.0, 6) * h
+        v0, a0, j0 = -rng.uniform(0.05, 1.0, 6), rng.normal(0.0, 3e3, 6), rng.normal(0.0, 1e7, 6)
+        tt = t[None, :] - seat[:, None]
+        lift = v0[:, None] * tt + a0[:, None] / 2 * tt**2 + j0[:, None] / 6 * tt**3
+        lift[:, 0] = 1e-3
+        velocity = v0[:, None] + a0[:, None] * tt + j0[:, None] / 2 * tt**2
+        acceleration = a0[:, None] + j0[:, None] * tt
+        index, angle, vel = seatings(t, lift, velocity, acceleration, h)
+        for r, i in enumerate(index):
+            y, v, a = lift[r, i - 1], velocity[r, i - 1], acceleration[r, i - 1]
+            jerk = (a - acceleration[r, i - 2]) / h if i >= 2 and lift[r, i - 2] > 0.0 else 0.0
+            roots = np.roots([jerk / 6.0, a / 2.0, v, y])
+            real = np.sort(roots[np.abs(roots.imag) <= 1e-12 * np.abs(roots)].real)
+            real = real[(real > 0.0) & (real <= 2.0 * h)]
+            root = real[0] if real.size else y / (y - lift[r, i]) * h
+            assert angle[r] == pytest.approx(t[i - 1] + root, abs=1e-12 * h)
+            assert vel[r] == pytest.approx(v + a * root + 0.5 * jerk * root**2, rel=1e-12)
+
+
+@pytest.mark.parametrize("first, second", [(0.4, 1.5), (0.05, 1.95), (0.9, 1.02)])
+def test_the_seating_is_the_first_of_two_roots_in_the_interval(first, second):
+    """A Taylor series k (t - r1)(t - r2)(t - r3) with roots r1 = first h and r2 = second h after the last free sample
+    (a valve that seats and turns back up within two steps) and r3 = -5 h: the seating is at r1, to 1e-12 of a step,
+    its velocity the series' slope there, k (r1 - r2)(r1 - r3)."""
+    h, k, i = 1e-5, 1e12, 10
+    r1, r2, r3 = first * h, second * h, -5.0 * h
+    c0, c1, c2, c3 = -k * r1 * r2 * r3, k * (r1 * r2 + r1 * r3 + r2 * r3), -k * (r1 + r2 + r3), k
+    t = h * np.arange(20)
+    lift, velocity, acceleration = np.full((1, 20), 1e-4), np.zeros((1, 20)), np.zeros((1, 20))
+    lift[0, 0], lift[0, i - 1], lift[0, i] = 1e-3, c0, c0 + c1 * h + c2 * h**2 + c3 * h**3
+    velocity[0, i - 1], acceleration[0, i - 1] = c1, 2.0 * c2
+    acceleration[0, i - 2] = 2.0 * c2 - 6.0 * c3 * h
+    assert lift[0, i] < 0.0
+    index, angle, vel = seatings(t, lift, velocity, acceleration, h)
+    assert index[0] == i
+    assert angle[0] == pytest.approx(t[i - 1] + r1, abs=1e-12 * h)
+    assert vel[0] == pytest.approx(k * (r1 - r2) * (r1 - r3), rel=1e-9)
+
+
 def test_the_events_of_a_sweep_at_once_are_each_speeds_own():
     """SweepResult.events finds every speed's events over the speeds at once (compiled passes over each row's lift
     event, events._lifting_contact, as the design's per-speed table reads them): the same numbers, bit for bit, as

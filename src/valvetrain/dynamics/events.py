@@ -96,8 +96,15 @@ def seating(theta, lift, velocity, acceleration=None, step_time=None) -> tuple[i
 
 def seatings(theta, lift, velocity, acceleration=None, step_time=None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """:func:`seating` of every row of (S, n) records (one a speed) at once: (index, angle [rad], velocity [m/s]),
-    arrays (S,); ``step_time`` [s] a scalar or one per row (the Taylor series' roots of :func:`_seat_times`)."""
-    i = _seat_indices(np.ascontiguousarray(lift, dtype=float))
+    arrays (S,); ``step_time`` [s] a scalar or one per row (the Taylor series' roots of :func:`_seat_states`)."""
+    lift = np.ascontiguousarray(lift, dtype=float)
+    i = _seat_indices(lift)
+    if acceleration is not None:
+        h = np.ascontiguousarray(np.broadcast_to(np.asarray(step_time, dtype=float), i.shape))
+        angle, vel = _seat_states(np.ascontiguousarray(theta, dtype=float), lift,
+                                  np.ascontiguousarray(velocity, dtype=float),
+                                  np.ascontiguousarray(acceleration, dtype=float), i, h)
+        return i, angle, vel
     k = np.flatnonzero(i < lift.shape[-1])
     index, angle, vel = i, np.full(i.shape, np.nan), np.full(i.shape, np.nan)
     if not k.size:
@@ -106,16 +113,8 @@ def seatings(theta, lift, velocity, acceleration=None, step_time=None) -> tuple[
     y0, y1 = lift[k, i - 1], lift[k, i]
     w = y0 / (y0 - y1)
     t0, t1 = theta[i - 1], theta[i]
-    if acceleration is None:
-        v0 = velocity[k, i - 1]
-        angle[k], vel[k] = t0 + w * (t1 - t0), v0 + w * (velocity[k, i] - v0)
-        return index, angle, vel
-    h = np.broadcast_to(np.asarray(step_time, dtype=float), index.shape)[k]
-    v, a = velocity[k, i - 1], acceleration[k, i - 1]
-    free = (i >= 2) & (lift[k, np.maximum(i - 2, 0)] > 0.0)
-    jerk = np.where(free, (a - acceleration[k, np.maximum(i - 2, 0)]) / h, 0.0)
-    t = _seat_times(y0, v, a, jerk, h, w * h)
-    angle[k], vel[k] = t0 + t / h * (t1 - t0), v + a * t + 0.5 * jerk * t * t
+    v0 = velocity[k, i - 1]
+    angle[k], vel[k] = t0 + w * (t1 - t0), v0 + w * (velocity[k, i] - v0)
     return index, angle, vel
 
 
@@ -142,36 +141,78 @@ def _seat_indices(lift) -> np.ndarray:
     return out
 
 
-def _seat_times(y, v, a, jerk, h, fallback) -> np.ndarray:
-    """For each row the first time in (0, 2 h] [s] at which y + v t + a t^2/2 + jerk t^3/6 [m] reaches 0, else
-    ``fallback`` (arrays (K,)): the real roots of the cubic (of the quadratic where jerk = 0) as numpy's ``roots``
-    finds them, the eigenvalues of its companion matrix, of every row's matrix in one call."""
-    out = np.array(fallback, dtype=float)
-    cubic = jerk != 0.0
-    for members, p in ((np.flatnonzero(cubic), np.stack([jerk / 6.0, a / 2.0, v, y], axis=1)),
-                       (np.flatnonzero(~cubic), np.stack([a / 2.0, v, y], axis=1))):
-        p = p[members]
-        whole = (p[:, 0] != 0.0) & (p[:, -1] != 0.0) & np.isfinite(p).all(axis=1)   # roots() would trim the others
-        for i in members[~whole]:
-            out[i] = _first_root(np.roots(p[members == i][0]), h[i], out[i])
-        members, p = members[whole], p[whole]
-        if not members.size:
+@njit(cache=True, nogil=True)
+def _seat_states(theta, lift, velocity, acceleration, index, h) -> tuple[np.ndarray, np.ndarray]:
+    """The angle [rad] and the velocity [m/s] of each row's first seating (:func:`seating` with the acceleration; nan
+    where ``index`` is the row's length): the last free sample's state y, v, a carried by its Taylor series
+    y + v t + a t^2/2 + j t^3/6 (the jerk j from the two free samples before the crossing, else 0) to its first root t
+    in (0, 2 h] (:func:`_first_root`), else to the linear interpolation's w h; ``h`` (S,) the time between samples
+    [s].  Compiled: the roots as the eigenvalues of each row's companion matrix, with the masks and gathers around
+    them, took a twentieth of a tolerance sample."""
+    count, n = lift.shape
+    angle, vel = np.full(count, np.nan), np.full(count, np.nan)
+    for r in range(count):
+        i = index[r]
+        if i >= n:
             continue
-        companion = np.zeros((members.size, p.shape[1] - 1, p.shape[1] - 1))
-        companion[:, 0, :] = -p[:, 1:] / p[:, :1]
-        companion[:, np.arange(1, p.shape[1] - 1), np.arange(p.shape[1] - 2)] = 1.0
-        roots = np.linalg.eigvals(companion)
-        inside = (np.imag(roots) == 0.0) & (roots.real > 0.0) & (roots.real <= 2.0 * h[members, None])
-        first = np.min(roots.real, axis=1, where=inside, initial=np.inf)
-        out[members] = np.where(inside.any(axis=1), first, out[members])
-    return out
+        y0, y1 = lift[r, i - 1], lift[r, i]
+        w = y0 / (y0 - y1)
+        v, a = velocity[r, i - 1], acceleration[r, i - 1]
+        back = max(i - 2, 0)
+        jerk = (a - acceleration[r, back]) / h[r] if (i >= 2) & (lift[r, back] > 0.0) else 0.0
+        t = _first_root(y0, v, a / 2.0, jerk / 6.0, 2.0 * h[r], w * h[r])
+        angle[r] = theta[i - 1] + t / h[r] * (theta[i] - theta[i - 1])
+        vel[r] = v + a * t + 0.5 * jerk * t * t
+    return angle, vel
 
 
-def _first_root(roots, h, fallback) -> float:
-    """The smallest real one of ``roots`` in (0, 2 h], else ``fallback``."""
-    real = np.sort(roots[np.isreal(roots)].real)
-    real = real[(real > 0.0) & (real <= 2.0 * h)]
-    return real[0] if real.size else fallback
+@njit(cache=True, nogil=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+def _first_root(c0, c1, c2, c3, top, fallback) -> float:
+    """The smallest root in (0, ``top``] of the cubic c0 + c1 t + c2 t^2 + c3 t^3 (c3 = 0: a quadratic) where it
+    changes sign or vanishes, else ``fallback``: the interval cut at the cubic's turning points (the roots of its
+    derivative in the form that does not cancel, Press et al. (2007), section 5.6), where it is monotone, and each
+    piece whose ends differ in sign bisected to adjacent floats.  The companion matrix's eigenvalues
+    (:func:`numpy.roots`) give the same roots to round-off; a root where the cubic touches zero without changing sign
+    is a pair of complex roots to them too, within round-off, and is not found either."""
+    cuts = [0.0]
+    a, b, c = 3.0 * c3, 2.0 * c2, c1                      # the derivative a t^2 + b t + c
+    turns = [np.inf, np.inf]
+    if a != 0.0:
+        disc = b * b - 4.0 * a * c
+        if disc >= 0.0:
+            q = -0.5 * (b + (np.sqrt(disc) if b >= 0.0 else -np.sqrt(disc)))
+            if q != 0.0:
+                turns[0], turns[1] = min(q / a, c / q), max(q / a, c / q)
+            else:
+                turns[0] = 0.0
+    elif b != 0.0:
+        turns[0] = -c / b
+    for t in turns:
+        if 0.0 < t < top:
+            cuts.append(t)
+    cuts.append(top)
+    for j in range(len(cuts) - 1):
+        lo, hi = cuts[j], cuts[j + 1]
+        p_lo = c0 + lo * (c1 + lo * (c2 + lo * c3))
+        p_hi = c0 + hi * (c1 + hi * (c2 + hi * c3))
+        if p_lo == 0.0 and lo > 0.0:
+            return lo
+        if p_hi == 0.0:
+            return hi
+        if not (p_lo < 0.0) != (p_hi < 0.0) or p_lo != p_lo or p_hi != p_hi:
+            continue
+        while True:
+            mid = 0.5 * (lo + hi)
+            if not lo < mid < hi:
+                return hi if abs(p_hi) < abs(p_lo) else lo
+            p_mid = c0 + mid * (c1 + mid * (c2 + mid * c3))
+            if p_mid == 0.0:
+                return mid
+            if (p_mid < 0.0) == (p_lo < 0.0):
+                lo, p_lo = mid, p_mid
+            else:
+                hi, p_hi = mid, p_mid
+    return fallback
 
 
 def bounce(lift, first_seating, tolerance=BOUNCE_TOLERANCE) -> tuple[float, int]:
