@@ -393,14 +393,14 @@ def _node_record(idx, r0, r1, x, v, acc, force, rocker_ratio, contact, closing, 
 
 @njit(cache=True, nogil=True, no_cpython_wrapper=True, no_cfunc_wrapper=True, inline='always')
 def _compression(x, cam_x, a, b, gap) -> float:
-    """The compression [m] of an element of a one-node train from row ``a`` to row ``b`` (:func:`_node_stage`'s
-    rows: 0 the node at ``x``, 1 the ground, 2 the cam at ``cam_x``) with the gap ``gap``."""
+    """The compression [m] of an element of a one-node train from row ``a`` to row ``b`` (:func:`rows` of
+    the one node: 0 the node at ``x``, 1 the ground, 2 the cam at ``cam_x``) with the gap ``gap``."""
     return (x if a == 0 else cam_x if a == 2 else 0.0) - (x if b == 0 else cam_x if b == 2 else 0.0) - gap
 
 
 @njit(cache=True, nogil=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _at_rest(x, v, acc, cam_x, im0, ra, rb, k, d, gap, uni, rest) -> bool:
-    """Whether the one node of a train (:func:`_node_stage`'s rows) at ``x`` [m], ``v`` [m/s] with the acceleration
+    """Whether the one node of a train (:func:`_compression`'s rows) at ``x`` [m], ``v`` [m/s] with the acceleration
     ``acc`` [m/s^2], the cam standing at ``cam_x`` [m], moves by no more than ``rest`` [m] about its rest position
     from now on, its contacts staying as they are.
 
@@ -434,42 +434,34 @@ def _at_rest(x, v, acc, cam_x, im0, ra, rb, k, d, gap, uni, rest) -> bool:
 
 
 @njit(cache=True, nogil=True, no_cpython_wrapper=True, no_cfunc_wrapper=True, inline='always')
-def _node_stage(x, v, cam_x, cam_v, im0, ra, rb, k, d, gap, pre, uni, acc, force):
-    """The accelerations ``acc`` (B,) of the one node of a train (row 0; row 1 the ground, row 2 the cam) of every
-    speed of a block at its positions ``x`` and velocities ``v`` (B,) [m, m/s] with the cam at ``cam_x`` [m] and
-    ``cam_v`` (B,) [m/s]; the element forces into ``force`` (E, B).  The arithmetic of :func:`_forces` on each speed,
-    in its order: the same numbers to the bit.
+def _node_stage(x, v, cam_x, cam_v, im0, k, d, gap, pre, acc, force, keep):
+    """The accelerations ``acc`` (B,) of the one node of the one-mass train of every speed of a block at its positions
+    ``x`` and velocities ``v`` (B,) [m, m/s] with the cam at ``cam_x`` [m] and ``cam_v`` (B,) [m/s]; with ``keep`` the
+    element forces into ``force`` (E, B) (the stage whose forces are recorded).  The train's elements are, in this
+    order (:func:`~.sweep.one_node` sends no other train here), a unilateral contact from the cam, a spring from the
+    node to the head and a unilateral seat from the head: the arithmetic of :func:`_forces` on each speed, in its
+    order, the same numbers to the bit.
 
-    Each element is one loop over the speeds without a branch, which the compiler turns into SIMD instructions: the
-    elements of the one-mass train, a unilateral contact from the cam (row 2) to the node, a unilateral seat from the
-    head (row 1) to it, springs from it to the head (:func:`~.sweep.one_node` sends no other train here), each with
-    its own loop (written for any ends, the selects of an element's ends kept the 200-speed sweep at 37 against 27
-    ms, and that loop, compiled into each of the four stages, took the first compile to 10.5 s of processor time
-    against 8.5-9.0)."""
+    The three elements are one loop over the speeds without a branch, which the compiler turns into SIMD instructions.
+    With a loop per element (written for any element of those kinds, in any order) and the forces of every stage
+    stored, the sweeps of a tolerance sample's blocks of 1 and 8 speeds took 0.40 and 0.75 ms against 0.29 and 0.56
+    (one thread, alternately)."""
     bsize = x.size
+    kc, dc, gc = k[0], d[0], gap[0]
+    ks, ds, gs, ps = k[1], d[1], gap[1], pre[1]
+    kz, dz, gz = k[2], d[2], gap[2]
     for s in range(bsize):
-        acc[s] = 0.0
-    for e in range(ra.size):
-        ia, ib, ke, de, ge, pe, f = ra[e], rb[e], k[e], d[e], gap[e], pre[e], force[e]
-        if uni[e] and ia == 2 and ib == 0:                 # the cam contact
-            for s in range(bsize):
-                delta = cam_x - x[s] - ge
-                fs = ke * delta + de * (cam_v[s] - v[s])
-                fs = fs if (delta > 0.0) & (fs > 0.0) else 0.0
-                f[s] = fs
-                acc[s] += fs * im0
-        elif uni[e] and ia == 1 and ib == 0:               # the seat
-            for s in range(bsize):
-                delta = 0.0 - x[s] - ge
-                fs = ke * delta + de * (0.0 - v[s])
-                fs = fs if (delta > 0.0) & (fs > 0.0) else 0.0
-                f[s] = fs
-                acc[s] += fs * im0
-        else:                                              # a spring on the head
-            for s in range(bsize):
-                fs = pe + ke * (x[s] - 0.0 - ge) + de * (v[s] - 0.0)
-                f[s] = fs
-                acc[s] -= fs * im0
+        xs, vs = x[s], v[s]
+        delta = cam_x - xs - gc
+        fc = kc * delta + dc * (cam_v[s] - vs)
+        fc = fc if (delta > 0.0) & (fc > 0.0) else 0.0
+        fp = ps + ks * (xs - 0.0 - gs) + ds * (vs - 0.0)
+        closed = 0.0 - xs - gz
+        fz = kz * closed + dz * (0.0 - vs)
+        fz = fz if (closed > 0.0) & (fz > 0.0) else 0.0
+        if keep:
+            force[0, s], force[1, s], force[2, s] = fc, fp, fz
+        acc[s] = 0.0 + fc * im0 - fp * im0 + fz * im0
 
 
 @njit(cache=True, nogil=True)
@@ -477,12 +469,12 @@ def integrate_node(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_pe
                    rate, rest, inv_mass, x_init, ra, rb, k, d, gap, pre, uni, closing, springs, rocker_ratio, contact,
                    vnode, vtab, out_lift, out_vel, out_acc, out_contact, out_seat, out_spring, out_clash, out_surge,
                    out_revs) -> None:
-    """:func:`integrate_block` of a train of one node without a lash adjuster, a node of variable mass or coils
-    (the one-mass train): the same steps, revolutions and records, to the bit, where no speed is held at rest
-    (below).
+    """:func:`integrate_block` of the one-mass train (one node without a lash adjuster, a node of variable mass or
+    coils; its elements the cam contact, a spring and the seat, in this order: :func:`~.sweep.one_node`): the same
+    steps, revolutions and records, to the bit, where no speed is held at rest (below).
 
     The general block keeps its state in (rows, B) arrays and computes every element of every row at each stage;
-    here the state of the block's speeds is one array (B,) of each quantity and each element one loop over the
+    here the state of the block's speeds is one array (B,) of each quantity and the elements one loop over the
     speeds (:func:`_node_stage`), which the compiler turns into SIMD instructions, and the records are written
     straight into the outputs' rows (gathered in a tile as the general block does, a block of 56 speeds took 4.2
     against 2.6 ms).  Measured on one thread, the 200-speed sweep of ``benchmarks/bench_dynamics.py``: 16.5 ms
@@ -513,7 +505,7 @@ def integrate_node(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_pe
     xq, cv, cv1, a0, a1, a2, a3, k1, k2, k3 = state[10], state[11], state[12], state[13], state[14], state[15], \
         state[16], state[17], state[18], state[19]
     split = np.zeros(bsize, dtype=np.bool_)
-    force, scratch = np.zeros((ne, bsize)), np.zeros((ne, bsize))
+    force = np.zeros((ne, bsize))
     k_open, d_open, closed = k.copy(), d.copy(), uni.copy()          # the seat open and closed (_split_step)
     if closing >= 0:
         k_open[closing], d_open[closing], closed[closing] = 0.0, 0.0, False
@@ -561,7 +553,7 @@ def integrate_node(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_pe
             for s in range(bsize):          # RK4's stages, each for every speed
                 cv[s] = om[s] * d0
                 cv1[s] = om[s] * d1
-            _node_stage(x, v, u0 + 0.0, cv, im0, ra, rb, k, d, gap, pre, uni, a0, force)
+            _node_stage(x, v, u0 + 0.0, cv, im0, k, d, gap, pre, a0, force, True)
             for s in range(bsize):
                 k1[s] = v[s] + c[s] * a0[s]
                 xq[s] = x[s] + c[s] * v[s]
@@ -597,16 +589,16 @@ def integrate_node(idx, omegas, n_sub, dtheta, cam_u, cam_du, per_step, steps_pe
                 _node_record(idx, (step + n_sub) // n_sub, (skip + n_sub - 1) // n_sub, x, v, a0, force, rocker_ratio,
                              contact, closing, springs, out_lift, out_vel, out_acc, out_contact, out_seat, out_spring)
                 continue
-            _node_stage(xq, k1, u1 + 0.0, cv1, im0, ra, rb, k, d, gap, pre, uni, a1, scratch)
+            _node_stage(xq, k1, u1 + 0.0, cv1, im0, k, d, gap, pre, a1, force, False)
             for s in range(bsize):
                 k2[s] = v[s] + c[s] * a1[s]
                 xq[s] = x[s] + c[s] * k1[s]
-            _node_stage(xq, k2, u1 + 0.0, cv1, im0, ra, rb, k, d, gap, pre, uni, a2, scratch)
+            _node_stage(xq, k2, u1 + 0.0, cv1, im0, k, d, gap, pre, a2, force, False)
             for s in range(bsize):
                 k3[s] = v[s] + 1.0 * h[s] * a2[s]
                 xq[s] = x[s] + 1.0 * h[s] * k2[s]
                 cv[s] = om[s] * d2
-            _node_stage(xq, k3, u2 + 0.0, cv, im0, ra, rb, k, d, gap, pre, uni, a3, scratch)
+            _node_stage(xq, k3, u2 + 0.0, cv, im0, k, d, gap, pre, a3, force, False)
             closings = False
             for s in range(bsize):
                 xs, vs = x[s], v[s]

@@ -371,13 +371,15 @@ def recorded_nodes(network) -> np.ndarray:
 
 def one_node(net) -> bool:
     """Whether a train's network is integrated by :func:`.kernels.integrate_node` (the one-mass train: one node
-    without a lash adjuster, a node of variable mass or coils, its elements a unilateral contact from the cam, springs
-    from the node to the head and a unilateral seat from the head; the same records as :func:`.kernels.integrate_block`,
-    to the bit, faster) rather than by the general block kernel."""
-    kinds = {(CAM, 0, True), (0, GROUND, False), (GROUND, 0, True)}
+    without a lash adjuster, a node of variable mass or coils, its elements a unilateral contact from the cam, a spring
+    from the node to the head and a unilateral seat from the head, in this order, :meth:`.models.OneMassTrain.network`;
+    the same records as :func:`.kernels.integrate_block`, to the bit, faster) rather than by the general block
+    kernel."""
+    layout = [(CAM, 0, True), (0, GROUND, False), (GROUND, 0, True)]
     return (net.mass.size == 1 and net.adjuster[0] == 0.0 and net.variable_node < 0 and not np.any(net.clash_gap > 0.0)
-            and not np.any(net.surge_weight > 0.0)
-            and all((int(a), int(b), bool(u)) in kinds for a, b, u in zip(net.a, net.b, net.unilateral, strict=True)))
+            and not np.any(net.surge_weight > 0.0) and net.a.size == len(layout)
+            and all((int(a), int(b), bool(u)) == kind
+                    for a, b, u, kind in zip(net.a, net.b, net.unilateral, layout, strict=True)))
 
 
 def sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, progress=None, bounce_tolerance=BOUNCE_TOLERANCE,
