@@ -37,6 +37,7 @@ from ..errors import InputError
 from .events import (BOUNCE_TOLERANCE, SweepEvents, bounces, force_reached_zero, level_crossing, lift_error, lift_event,
                      lowest_lifting_force, runs, seating, separation_mask, sweep_events, zero_crossing)
 from .kernels import CAM, GROUND, blocks, integrate_block, integrate_node, rows
+from .models import _kept
 
 STEP_LIMIT = 1.0
 """Largest |lambda| dt of the explicit integrator (|lambda|: spectral radius of the train's state matrix,
@@ -382,6 +383,16 @@ def one_node(net) -> bool:
                     for a, b, u, kind in zip(net.a, net.b, net.unilateral, layout, strict=True)))
 
 
+@_kept
+def _layout(net) -> tuple:
+    """What :func:`sweep` passes to the kernels of a network besides its arrays, found once per network (kept on it,
+    as its :meth:`~.models.Network.highest_frequency`): its element ends' rows (:func:`.kernels.rows`), its spring
+    elements, :func:`recorded_nodes`, its seat and cam elements and its lash [m].  Found again for each sweep, they
+    took a quarter of the time of a sweep of one speed outside its kernel."""
+    return (*rows(net.a, net.b, net.mass.size), np.asarray(net.spring_elements, dtype=np.int64), recorded_nodes(net),
+            int(net.seat_element), int(net.cam_element), net.lash)
+
+
 def sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, progress=None, bounce_tolerance=BOUNCE_TOLERANCE,
           tolerance=STATE_TOLERANCE, halvings=0) -> SweepResult:
     """Simulate an elastic train on a lift law at every camshaft speed of a sweep.
@@ -420,7 +431,7 @@ def sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, progress=None, bo
     net = train.network()
     speeds = np.atleast_1d(np.asarray(cam_speeds, dtype=float))
     steps = int(round(360.0 / step_deg))
-    if not np.isclose(steps * step_deg, 360.0, rtol=0, atol=1e-9):
+    if not abs(steps * step_deg - 360.0) <= 1e-9:
         raise InputError(f"the step {step_deg} deg does not divide the camshaft revolution")
     if revolutions < 1 or np.any(speeds <= 0.0) or halvings < 0:
         raise InputError("sweep: at least one revolution, positive camshaft speeds and no negative halvings are needed")
@@ -430,8 +441,7 @@ def sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, progress=None, bo
     dtheta = 2.0 * np.pi / steps
     per_step = 2 * int(n_sub.max())
     theta, u, du = cam_excitation(law, net.rocker_ratio, steps, per_step)
-    rec_nodes = recorded_nodes(net)
-    springs = np.asarray(net.spring_elements, dtype=np.int64)
+    ra, rb, springs, rec_nodes, seat_element, cam_element, lash = _layout(net)
     s_count, n_nodes, n_elems = speeds.size, net.mass.size, net.a.size
     # the six maps in one allocation: numpy asks Linux for huge pages for an array of 4 MB and more, so that the
     # kernel's writes to the maps' rows take fewer page faults and TLB misses (the 200-speed one-mass sweep on one
@@ -443,11 +453,9 @@ def sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, progress=None, bo
     out_revs = np.zeros(s_count, dtype=np.int64)
     adjusted = net.adjuster[0] > 0.0                # a hydraulic lash adjuster: its plunger's extension recorded
     out_z = np.zeros((s_count if adjusted else 0, steps))
-    ra, rb = rows(net.a, net.b, n_nodes)
     workers = get_num_threads()
     order, start, seq = blocks(n_sub, workers)
     inv_mass = 1.0 / net.mass
-
     single = one_node(net)
 
     def run(j):
@@ -455,15 +463,15 @@ def sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, progress=None, bo
         if single:
             integrate_node(idx, speeds, int(n_sub[idx[0]]), dtheta, u, du, per_step, steps, int(revolutions),
                            float(tolerance), float(rate), REST_AMPLITUDE, inv_mass, net.x_init, ra, rb, net.stiffness,
-                           net.damping, net.gap, net.preload, net.unilateral, int(net.seat_element), springs,
-                           float(net.rocker_ratio), int(net.cam_element), int(net.variable_node), net.variable_mass,
+                           net.damping, net.gap, net.preload, net.unilateral, seat_element, springs,
+                           float(net.rocker_ratio), cam_element, int(net.variable_node), net.variable_mass,
                            lift, velocity, acceleration, contact, seat, spring, out_clash, out_surge, out_revs)
             return idx.size
         integrate_block(idx, speeds, int(n_sub[idx[0]]), dtheta, u, du, per_step, steps, int(revolutions),
                         float(tolerance), float(rate), inv_mass, net.x_init, ra, rb, net.stiffness, net.damping,
-                        net.gap, net.preload, net.unilateral, int(net.seat_element), int(rec_nodes[-1]) if
+                        net.gap, net.preload, net.unilateral, seat_element, int(rec_nodes[-1]) if
                         rec_nodes.size > 1 else -1, springs, float(net.rocker_ratio), net.clash_gap, int(net.valve),
-                        net.surge_weight, net.adjuster, int(net.cam_element), int(net.variable_node),
+                        net.surge_weight, net.adjuster, cam_element, int(net.variable_node),
                         net.variable_mass, lift, velocity, acceleration, contact, seat, spring, follower, out_clash,
                         out_surge, out_revs, out_z)
         return idx.size
@@ -483,7 +491,7 @@ def sweep(law, train, cam_speeds, revolutions=3, step_deg=0.1, progress=None, bo
                 if progress is not None:
                     progress(done, s_count)
     coils = net.surge_weight > 0.0
-    return SweepResult(speeds, theta[::per_step], u[::per_step] - net.lash, lift, velocity, acceleration, contact, seat,
+    return SweepResult(speeds, theta[::per_step], u[::per_step] - lash, lift, velocity, acceleration, contact, seat,
                        spring, du[::per_step] / net.rocker_ratio, out_surge[:, coils], out_clash.min(axis=1), n_sub,
                        np.where(out_revs > 0, out_revs, int(revolutions)), out_revs > 0, bounce_tolerance,
                        out_z if adjusted else None,
