@@ -12,7 +12,7 @@ import pytest
 from valvetrain.dynamics.models import one_mass_train
 from valvetrain.dynamics.perturbation import kinetostatic_force, perturbation_parameter, quasi_static_lift
 from valvetrain.dynamics.events import seating, sweep_events, zero_crossing
-from valvetrain.dynamics.sweep import headline_sweep, simulate, sweep
+from valvetrain.dynamics.sweep import MAP_FIELDS, PER_SPEED_FIELDS, headline_sweep, merged, simulate, sweep
 from valvetrain.laws import KurzLaw
 
 from reference_dynamics import RPM, appendix_train, harmonic_cam, reference_events, seat_crossings, spec12
@@ -243,6 +243,28 @@ def test_headline_sweep_has_the_full_sweeps_headlines():
     assert largest_force(part) == largest_force(full)
     top = np.flatnonzero(speeds <= load_range[1])[-1]
     assert top % 10 != 0 and speeds[top] in part.cam_speeds        # the range's last speed, not a coarse one
+
+
+def test_merged_joins_each_map_when_it_is_read():
+    """merged's sweep of three sweeps' speeds (sweep.merged, its maps joined when first read): every per-speed field,
+    the maps among them, equal to the bit the rows of one sweep of the same speeds in ascending order (each speed an
+    independent problem on the same excitation samples), each map joined only once read, and a changed copy
+    (dataclasses.replace) with every map; a sweep of one part is that part."""
+    lift, phi, mass, rate, preload = 8e-3, 1.0, 0.2, 50e3, 300.0
+    law, train = harmonic_cam(lift, phi), one_mass_train(mass, 3e8, rate, preload, damping_ratio=0.1)
+    speeds = np.array([200.0, 250.0, 270.0, 300.0, 320.0, 330.0])
+    parts = [sweep(law, train, speeds[[1, 4]]), sweep(law, train, speeds[[0, 5]]), sweep(law, train, speeds[[2, 3]])]
+    whole = sweep(law, train, speeds)
+    joined = merged(parts)
+    assert "velocity" not in vars(joined) and vars(joined)["adjuster_extension"] is None
+    for name in PER_SPEED_FIELDS:
+        np.testing.assert_array_equal(getattr(joined, name), getattr(whole, name), err_msg=name)
+    assert "velocity" in vars(joined)
+    copy = replace(merged(parts), bounce_tolerance=2e-6)
+    for name in MAP_FIELDS:
+        assert name in vars(copy)
+        np.testing.assert_array_equal(getattr(copy, name), getattr(whole, name), err_msg=name)
+    assert merged(parts[:1]) is parts[0]
 
 
 def test_headline_sweep_finds_a_force_levels_first_speed_as_the_full_sweep():

@@ -506,11 +506,16 @@ PER_SPEED_FIELDS = ("cam_speeds", "lift", "velocity", "acceleration", "contact_f
                     "follower_lift")
 """The fields of a :class:`SweepResult` with one row per speed."""
 
+MAP_FIELDS = ("lift", "velocity", "acceleration", "contact_force", "seat_force", "spring_force", "adjuster_extension",
+              "follower_lift")
+"""The fields of a :class:`SweepResult` with a row of every recorded angle per speed (its maps)."""
+
 
 def merged(parts) -> SweepResult:
     """One :class:`SweepResult` of the speeds of several sweeps of the same train on the same law, by ascending speed,
     with the parts' :attr:`~SweepResult.events` joined where every part has found its own (the events of a speed are
-    found from its rows alone, :func:`sweep_events`).
+    found from its rows alone, :func:`sweep_events`).  Its maps (:data:`MAP_FIELDS`) are joined when they are first
+    read (:class:`_JoinedSweep`).
 
     Each speed of a sweep is an independent problem integrated on the same excitation samples (:mod:`.kernels`), so a
     speed's rows do not depend on the sweep it was simulated in, but for the revolutions it runs: a block of speeds
@@ -518,21 +523,43 @@ def merged(parts) -> SweepResult:
     if len(parts) == 1:
         return parts[0]
     rank = np.argsort(np.argsort(np.concatenate([p.cam_speeds for p in parts]), kind="stable"))
-    at = np.split(rank, np.cumsum([p.cam_speeds.size for p in parts])[:-1])
-
-    def joined(rows):
-        first = rows[0]
-        out = np.empty((rank.size, *first.shape[1:]), dtype=first.dtype)
-        for part, where in zip(rows, at, strict=True):
-            out[where] = part
-        return out
-
-    out = replace(parts[0], **{f: joined([getattr(p, f) for p in parts]) for f in PER_SPEED_FIELDS
-                               if getattr(parts[0], f) is not None})
+    at = tuple(np.split(rank, np.cumsum([p.cam_speeds.size for p in parts])[:-1]))
+    out = object.__new__(_JoinedSweep)
+    state = vars(out)
+    state.update((f.name, getattr(parts[0], f.name)) for f in fields(SweepResult))
+    state.update((f, _joined([getattr(p, f) for p in parts], at)) for f in PER_SPEED_FIELDS
+                 if f not in MAP_FIELDS and state[f] is not None)
+    for f in MAP_FIELDS:
+        if state[f] is not None:
+            del state[f]
+    state["_parts"], state["_at"] = tuple(parts), at
     if all("events" in vars(p) for p in parts):
-        vars(out)["events"] = SweepEvents(*(joined([getattr(p.events, f.name) for p in parts])
-                                            for f in fields(SweepEvents)))
+        state["events"] = SweepEvents(*(_joined([getattr(p.events, f.name) for p in parts], at)
+                                        for f in fields(SweepEvents)))
     return out
+
+
+def _joined(rows, at) -> np.ndarray:
+    """The rows of each part (``rows``, one array a part) at its places ``at`` (one index array a part) of one array."""
+    first = rows[0]
+    out = np.empty((sum(r.shape[0] for r in rows), *first.shape[1:]), dtype=first.dtype)
+    for part, where in zip(rows, at, strict=True):
+        out[where] = part
+    return out
+
+
+class _JoinedSweep(SweepResult):
+    """The :class:`SweepResult` of :func:`merged`: each map is joined from the parts' rows when it is first read, and
+    kept (a tolerance sample reads two of the six of its headline sweep, whose joining took a twentieth of the
+    sample's time).  A changed copy (:func:`dataclasses.replace`) has every map joined."""
+
+    def __getattr__(self, name):
+        """A map not joined yet (an attribute found nowhere else)."""
+        state = vars(self)
+        if name not in MAP_FIELDS or "_parts" not in state:
+            raise AttributeError(f"'{type(self).__name__}' object has no attribute '{name}'")
+        value = state[name] = _joined([getattr(p, name) for p in state["_parts"]], state["_at"])
+        return value
 
 
 def speeds_of(result, index) -> SweepResult:
