@@ -458,6 +458,23 @@ def test_samples_have_the_full_designs_checks():
         assert b.margin == pytest.approx(a.margin, rel=1e-3, abs=1e-12, nan_ok=True), a.code
 
 
+def test_a_lash_adjusters_sample_has_the_full_designs_checks():
+    """A sample of examples/modern-dohc-roller-finger.toml (hydraulic lash adjusters: their stage reads the plunger's
+    extension at each speed of the headline sweep, whose maps are joined when read, dynamics.sweep.merged): every
+    check has the full design's verdict, its margin within 0.1 % (as the built-in example's above)."""
+    import tomllib
+
+    from valvetrain.design import run
+    from valvetrain.specification import validate
+
+    spec = validate(tomllib.loads((ROOT / "examples" / "modern-dohc-roller-finger.toml").read_text(encoding="utf-8")))
+    full, part = run(spec), run(spec, headlines_only=True)
+    assert all(v.lash_adjuster is not None for v in part.valves.values())
+    assert [(c.code, c.valve, c.passed) for c in part.checks] == [(c.code, c.valve, c.passed) for c in full.checks]
+    for a, b in zip(full.checks, part.checks, strict=True):
+        assert b.margin == pytest.approx(a.margin, rel=1e-3, abs=1e-12, nan_ok=True), a.code
+
+
 def test_multi_mass_trains_are_swept_in_full():
     """A multi-mass train's separations come and go with the speed (coil surge): a sample sweeps it at every speed
     of its range, as valvetrain run does."""

@@ -3,16 +3,19 @@ quasi-static limit, a free vibration, the energy balance), its jumps, the sweep 
 headline numbers, the seating and the events."""
 
 from dataclasses import replace
+import pickle
 import sys
 from types import SimpleNamespace
 
 import numpy as np
 import pytest
 
-from valvetrain.dynamics.models import one_mass_train
+from valvetrain.dynamics.coils import CoilSpring
+from valvetrain.dynamics.models import Adjuster, one_mass_train, rocker_train
 from valvetrain.dynamics.perturbation import kinetostatic_force, perturbation_parameter, quasi_static_lift
 from valvetrain.dynamics.events import seating, sweep_events, zero_crossing
-from valvetrain.dynamics.sweep import MAP_FIELDS, PER_SPEED_FIELDS, headline_sweep, merged, simulate, sweep
+from valvetrain.dynamics.sweep import (MAP_FIELDS, PER_SPEED_FIELDS, headline_sweep, merged, one_node, simulate,
+                                      sweep)
 from valvetrain.laws import KurzLaw
 
 from reference_dynamics import RPM, appendix_train, harmonic_cam, reference_events, seat_crossings, spec12
@@ -245,26 +248,49 @@ def test_headline_sweep_has_the_full_sweeps_headlines():
     assert top % 10 != 0 and speeds[top] in part.cam_speeds        # the range's last speed, not a coarse one
 
 
-def test_merged_joins_each_map_when_it_is_read():
+@pytest.mark.parametrize("kind", ["one mass", "lash adjuster", "rocker"])
+def test_merged_joins_each_map_when_it_is_read(kind):
     """merged's sweep of three sweeps' speeds (sweep.merged, its maps joined when first read): every per-speed field,
-    the maps among them, equal to the bit the rows of one sweep of the same speeds in ascending order (each speed an
-    independent problem on the same excitation samples), each map joined only once read, and a changed copy
-    (dataclasses.replace) with every map; a sweep of one part is that part."""
-    lift, phi, mass, rate, preload = 8e-3, 1.0, 0.2, 50e3, 300.0
-    law, train = harmonic_cam(lift, phi), one_mass_train(mass, 3e8, rate, preload, damping_ratio=0.1)
+    the maps among them (the plunger's extension of a train with a lash adjuster, the follower's lift of a rocker
+    train), equal to the bit the parts' rows put in the order of their speeds, each map joined only once read; a
+    changed copy (dataclasses.replace) and a pickled one with every map; a sweep of one part is that part."""
+    law = harmonic_cam(8e-3, 1.0)
+    train = {"one mass": one_mass_train(0.2, 3e8, 50e3, 300.0, damping_ratio=0.1),
+             "lash adjuster": replace(one_mass_train(0.2, 3e8, 50e3, 300.0, damping_ratio=0.1),
+                                      adjuster=Adjuster(1.0, 20.0, 1e-4, 3e5, 1e-13, 0.05)),
+             "rocker": rocker_train(3e-5, 0.12, 0.04, 1.5, 1e8, 3e7, 2e8, [CoilSpring(45e3, 400.0, 0.05, coils=0)],
+                                    lash=0.3e-3)}[kind]
     speeds = np.array([200.0, 250.0, 270.0, 300.0, 320.0, 330.0])
     parts = [sweep(law, train, speeds[[1, 4]]), sweep(law, train, speeds[[0, 5]]), sweep(law, train, speeds[[2, 3]])]
-    whole = sweep(law, train, speeds)
+    order = np.argsort(np.concatenate([p.cam_speeds for p in parts]))
+    whole = SimpleNamespace(**{name: None if getattr(parts[0], name) is None else
+                               np.concatenate([getattr(p, name) for p in parts])[order] for name in PER_SPEED_FIELDS})
+    assert np.array_equal(whole.cam_speeds, speeds)
+    assert (whole.adjuster_extension is not None) == (kind == "lash adjuster")
+    assert (whole.follower_lift is not None) == (kind == "rocker")
     joined = merged(parts)
-    assert "velocity" not in vars(joined) and vars(joined)["adjuster_extension"] is None
+    assert not set(MAP_FIELDS) & set(vars(joined))
     for name in PER_SPEED_FIELDS:
         np.testing.assert_array_equal(getattr(joined, name), getattr(whole, name), err_msg=name)
-    assert "velocity" in vars(joined)
-    copy = replace(merged(parts), bounce_tolerance=2e-6)
-    for name in MAP_FIELDS:
-        assert name in vars(copy)
-        np.testing.assert_array_equal(getattr(copy, name), getattr(whole, name), err_msg=name)
+    assert set(MAP_FIELDS) <= set(vars(joined))
+    for copy in (replace(merged(parts), bounce_tolerance=2e-6), pickle.loads(pickle.dumps(merged(parts)))):
+        for name in MAP_FIELDS:
+            assert name in vars(copy)
+            np.testing.assert_array_equal(getattr(copy, name), getattr(whole, name), err_msg=name)
     assert merged(parts[:1]) is parts[0]
+
+
+def test_the_one_node_kernel_takes_only_the_one_mass_trains_order():
+    """sweep.one_node sends the one-mass train (cam contact, spring, seat) to its kernel, and no network of other
+    elements or another order (the springs first, as a one-node multi-mass train has them; the kernel refuses
+    it)."""
+    net = one_mass_train(0.2, 3e8, 50e3, 300.0).network()
+    assert one_node(net)
+    order = [1, 0, 2]
+    swapped = replace(net, elements=tuple(net.elements[i] for i in order),
+                      **{f: getattr(net, f)[order] for f in ("a", "b", "stiffness", "damping", "gap", "preload",
+                                                               "unilateral", "clash_gap")})
+    assert not one_node(swapped)
 
 
 def test_headline_sweep_finds_a_force_levels_first_speed_as_the_full_sweep():

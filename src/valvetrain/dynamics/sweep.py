@@ -526,12 +526,9 @@ def merged(parts) -> SweepResult:
     at = tuple(np.split(rank, np.cumsum([p.cam_speeds.size for p in parts])[:-1]))
     out = object.__new__(_JoinedSweep)
     state = vars(out)
-    state.update((f.name, getattr(parts[0], f.name)) for f in fields(SweepResult))
+    state.update((f.name, getattr(parts[0], f.name)) for f in fields(SweepResult) if f.name not in MAP_FIELDS)
     state.update((f, _joined([getattr(p, f) for p in parts], at)) for f in PER_SPEED_FIELDS
                  if f not in MAP_FIELDS and state[f] is not None)
-    for f in MAP_FIELDS:
-        if state[f] is not None:
-            del state[f]
     state["_parts"], state["_at"] = tuple(parts), at
     if all("events" in vars(p) for p in parts):
         state["events"] = SweepEvents(*(_joined([getattr(p.events, f.name) for p in parts], at)
@@ -548,18 +545,39 @@ def _joined(rows, at) -> np.ndarray:
     return out
 
 
-class _JoinedSweep(SweepResult):
-    """The :class:`SweepResult` of :func:`merged`: each map is joined from the parts' rows when it is first read, and
-    kept (a tolerance sample reads two of the six of its headline sweep, whose joining took a twentieth of the
-    sample's time).  A changed copy (:func:`dataclasses.replace`) has every map joined."""
+class _JoinedMap:
+    """A map of :class:`_JoinedSweep`, joined from the parts' rows when first read and kept on the instance (a value
+    the instance holds, one set by its ``__init__``, comes first: this descriptor has no ``__set__``)."""
 
-    def __getattr__(self, name):
-        """A map not joined yet (an attribute found nowhere else)."""
-        state = vars(self)
-        if name not in MAP_FIELDS or "_parts" not in state:
-            raise AttributeError(f"'{type(self).__name__}' object has no attribute '{name}'")
-        value = state[name] = _joined([getattr(p, name) for p in state["_parts"]], state["_at"])
+    def __set_name__(self, owner, name):
+        self.name = name
+
+    def __get__(self, result, owner=None):
+        if result is None:
+            return self
+        state = vars(result)
+        rows = [getattr(p, self.name) for p in state["_parts"]]
+        value = state[self.name] = None if rows[0] is None else _joined(rows, state["_at"])
         return value
+
+
+class _JoinedSweep(SweepResult):
+    """The :class:`SweepResult` of :func:`merged`: each map is joined from the parts' rows when it is first read
+    (:class:`_JoinedMap`), and kept (a tolerance sample reads two of the six of its headline sweep, whose joining took
+    a twentieth of the sample's time).  A changed copy (:func:`dataclasses.replace`) has every map joined; pickled (a
+    report's figures drawn in another process), it is a :class:`SweepResult` with every map joined, not its parts."""
+
+    lift = _JoinedMap()
+    velocity = _JoinedMap()
+    acceleration = _JoinedMap()
+    contact_force = _JoinedMap()
+    seat_force = _JoinedMap()
+    spring_force = _JoinedMap()
+    adjuster_extension = _JoinedMap()
+    follower_lift = _JoinedMap()
+
+    def __reduce__(self):
+        return SweepResult, tuple(getattr(self, f.name) for f in fields(SweepResult))
 
 
 def speeds_of(result, index) -> SweepResult:
