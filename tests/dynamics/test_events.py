@@ -55,6 +55,8 @@ def test_the_compiled_largest_lift_error_is_that_of_the_map_of_errors():
     expected = np.abs(lift_error(lift, rigid)).max(axis=1)
     assert np.isnan(expected).any() and not np.isnan(expected).all()
     assert np.array_equal(largest_lift_errors(lift, rigid), expected, equal_nan=True)
+    with pytest.raises(ValueError, match="rigid lift"):      # a rigid lift of other angles than the records'
+        largest_lift_errors(lift, rigid[:-1])
 
 
 def test_the_jump_speed_fit_finds_the_root_of_its_trend():
@@ -72,6 +74,9 @@ def test_the_jump_speed_fit_finds_the_root_of_its_trend():
     assert zero_crossing(w, gap, gap <= 0.0) == pytest.approx(line, rel=1e-13)
     rising = 1.0 + (w - 200.0) ** 2
     assert zero_crossing(w, rising, w >= w[10]) == w[10]
+    twice = np.insert(w, i - 1, w[i - 1])                       # a speed given twice: the last of the two counts
+    again = -0.004 * (twice - 237.5) * (twice + 50.0)
+    assert zero_crossing(twice, again, again <= 0.0) == pytest.approx(line, rel=1e-13)
 
 
 def test_the_seating_root_is_numpys_root_of_the_taylor_series():

@@ -33,8 +33,11 @@ def largest_lift_errors(lift, kinematic_lift) -> np.ndarray:
     ...                     ).round(9).tolist()
     [0.0001, 2e-05]
     """
-    return _largest_lift_errors(np.ascontiguousarray(lift, dtype=float).reshape(-1, np.shape(lift)[-1]),
-                                np.ascontiguousarray(kinematic_lift, dtype=float))
+    rows = np.ascontiguousarray(lift, dtype=float)
+    rigid = np.ascontiguousarray(kinematic_lift, dtype=float)
+    if rigid.ndim != 1 or rows.shape[-1:] != rigid.shape:
+        raise ValueError(f"largest_lift_errors: a rigid lift of {rigid.shape} samples for records of {rows.shape}")
+    return _largest_lift_errors(rows.reshape(-1, rigid.size), rigid)
 
 
 @njit(cache=True, nogil=True)
@@ -141,7 +144,7 @@ def _seat_indices(lift) -> np.ndarray:
     return out
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, nogil=True, error_model="numpy")
 def _seat_states(theta, lift, velocity, acceleration, index, h) -> tuple[np.ndarray, np.ndarray]:
     """The angle [rad] and the velocity [m/s] of each row's first seating (:func:`seating` with the acceleration; nan
     where ``index`` is the row's length): the last free sample's state y, v, a carried by its Taylor series
@@ -172,8 +175,9 @@ def _first_root(c0, c1, c2, c3, top, fallback) -> float:
     changes sign or vanishes, else ``fallback``: the interval cut at the cubic's turning points (the roots of its
     derivative in the form that does not cancel, Press et al. (2007), section 5.6), where it is monotone, and each
     piece whose ends differ in sign bisected to adjacent floats.  The companion matrix's eigenvalues
-    (:func:`numpy.roots`) give the same roots to round-off; a root where the cubic touches zero without changing sign
-    is a pair of complex roots to them too, within round-off, and is not found either."""
+    (:func:`numpy.roots`) give the same roots to round-off.  A root where the cubic touches zero without changing
+    sign (a pair of complex roots to them, within round-off) is found only where the cubic is exactly 0 at a turning
+    point."""
     cuts = [0.0]
     a, b, c = 3.0 * c3, 2.0 * c2, c1                      # the derivative a t^2 + b t + c
     turns = [np.inf, np.inf]
@@ -195,8 +199,6 @@ def _first_root(c0, c1, c2, c3, top, fallback) -> float:
         lo, hi = cuts[j], cuts[j + 1]
         p_lo = c0 + lo * (c1 + lo * (c2 + lo * c3))
         p_hi = c0 + hi * (c1 + hi * (c2 + hi * c3))
-        if p_lo == 0.0 and lo > 0.0:
-            return lo
         if p_hi == 0.0:
             return hi
         if not (p_lo < 0.0) != (p_hi < 0.0) or p_lo != p_lo or p_hi != p_hi:
@@ -596,6 +598,7 @@ def zero_crossing(speeds, values, hit) -> float:
         return float(speeds[0])
     fit = np.arange(max(0, i - 3), i)
     fit = fit[np.isfinite(values[fit])]
+    fit = fit[np.append(np.diff(speeds[fit]) > 0.0, True)]     # of equal speeds the last
     if fit.size < 2 or fit[-1] != i - 1:
         return float(speeds[i])
     x0, top = float(speeds[i - 1]), float(speeds[i])
