@@ -46,17 +46,19 @@ def _largest_lift_errors(lift, kinematic) -> np.ndarray:
     keeps a nan of the rigid lift) and numpy's largest (a nan is kept); a map of the errors, made and read again,
     took a fortieth of a tolerance sample."""
     count, n = lift.shape
+    rigid = np.empty(n)
+    for j in range(n):
+        k = kinematic[j]
+        rigid[j] = k if (k > 0.0) | (k != k) else 0.0
     out = np.empty(count)
     for r in range(count):
-        top = 0.0
+        top, nan = 0.0, False
         for j in range(n):
-            k = kinematic[j]
-            rigid = k if (k > 0.0) | (k != k) else 0.0
             y = lift[r, j]
-            e = abs(y - rigid) if (y > 0.0) | (rigid > 0.0) else 0.0
-            if j == 0 or (top == top and (e > top or e != e)):
-                top = e
-        out[r] = top
+            e = abs(y - rigid[j]) if (y > 0.0) | (rigid[j] > 0.0) else 0.0
+            nan |= e != e
+            top = e if e > top else top
+        out[r] = np.nan if nan else top
     return out
 
 
