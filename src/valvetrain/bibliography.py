@@ -334,6 +334,12 @@ WORKS = {
         authors="Hairer, E.; Nørsett, S. P.; Wanner, G.",
         title="Solving Ordinary Differential Equations I: Nonstiff Problems", edition="2nd ed.", kind="book",
         publisher="Springer", place="Berlin", year="1993"),
+    "press2007": Work(
+        short="Press et al. (2007)",
+        authors="Press, W. H.; Teukolsky, S. A.; Vetterling, W. T.; Flannery, B. P.",
+        title="Numerical Recipes: The Art of Scientific Computing", edition="3rd ed.", kind="book",
+        publisher="Cambridge University Press", place="Cambridge", year="2007",
+        note="Section 5.6: the roots of a quadratic by the form that does not cancel."),
     "dowell1971": Work(
         short="Dowell and Jarratt (1971)",
         authors="Dowell, M.; Jarratt, P.",

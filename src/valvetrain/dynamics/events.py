@@ -11,6 +11,8 @@ import math
 import numpy as np
 from numba import njit
 
+from ..errors import InputError
+
 BOUNCE_TOLERANCE = 1e-6
 """Lift above the seat that counts as a bounce [m] (1 um: below it the valve rocks on the seat's elasticity)."""
 
@@ -36,7 +38,7 @@ def largest_lift_errors(lift, kinematic_lift) -> np.ndarray:
     rows = np.ascontiguousarray(lift, dtype=float)
     rigid = np.ascontiguousarray(kinematic_lift, dtype=float)
     if rigid.ndim != 1 or rows.shape[-1:] != rigid.shape:
-        raise ValueError(f"largest_lift_errors: a rigid lift of {rigid.shape} samples for records of {rows.shape}")
+        raise InputError(f"largest_lift_errors: a rigid lift of {rigid.shape} samples for records of {rows.shape}")
     return _largest_lift_errors(rows.reshape(-1, rigid.size), rigid)
 
 
