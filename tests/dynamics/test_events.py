@@ -77,6 +77,8 @@ def test_the_jump_speed_fit_finds_the_root_of_its_trend():
     twice = np.insert(w, i - 1, w[i - 1])                       # a speed given twice: the last of the two counts
     again = -0.004 * (twice - 237.5) * (twice + 50.0)
     assert zero_crossing(twice, again, again <= 0.0) == pytest.approx(line, rel=1e-13)
+    unknown = np.where(np.arange(w.size) < i, np.nan, force)    # no finite force below the first hit: no trend
+    assert zero_crossing(w, unknown, force <= 0.0) == w[i]
 
 
 def test_the_seating_root_is_numpys_root_of_the_taylor_series():

@@ -6,7 +6,6 @@ simulation that records the revolutions is :func:`.sweep.sweep`.
 """
 
 from dataclasses import dataclass
-import math
 
 import numpy as np
 from numba import njit
@@ -177,27 +176,17 @@ def _seat_states(theta, lift, velocity, acceleration, index, h) -> tuple[np.ndar
 def _first_root(c0, c1, c2, c3, top, fallback) -> float:
     """The smallest root in (0, ``top``] of the cubic c0 + c1 t + c2 t^2 + c3 t^3 (c3 = 0: a quadratic) where it
     changes sign or vanishes, else ``fallback``: the interval cut at the cubic's turning points (the roots of its
-    derivative in the form that does not cancel, Press et al. (2007), section 5.6), where it is monotone, and each
-    piece whose ends differ in sign bisected to adjacent floats.  The companion matrix's eigenvalues
+    derivative, :func:`_quadratic_roots`), where it is monotone, and each piece whose ends differ in sign bisected to
+    adjacent floats.  The companion matrix's eigenvalues
     (:func:`numpy.roots`) give the same roots to round-off.  A root where the cubic touches zero without changing
     sign (a pair of complex roots to them, within round-off) is found only where the cubic is exactly 0 at a turning
     point."""
     cuts = [0.0]
-    a, b, c = 3.0 * c3, 2.0 * c2, c1                      # the derivative a t^2 + b t + c
-    turns = [np.inf, np.inf]
-    if a != 0.0:
-        disc = b * b - 4.0 * a * c
-        if disc >= 0.0:
-            q = -0.5 * (b + (np.sqrt(disc) if b >= 0.0 else -np.sqrt(disc)))
-            if q != 0.0:
-                turns[0], turns[1] = min(q / a, c / q), max(q / a, c / q)
-            else:
-                turns[0] = 0.0
-    elif b != 0.0:
-        turns[0] = -c / b
-    for t in turns:
-        if 0.0 < t < top:
-            cuts.append(t)
+    count, low, high = _quadratic_roots(3.0 * c3, 2.0 * c2, c1)      # the derivative's
+    if count > 0 and 0.0 < low < top:
+        cuts.append(low)
+    if count > 1 and 0.0 < high < top:
+        cuts.append(high)
     cuts.append(top)
     for j in range(len(cuts) - 1):
         lo, hi = cuts[j], cuts[j + 1]
@@ -602,7 +591,7 @@ def zero_crossing(speeds, values, hit) -> float:
         return float(speeds[0])
     fit = np.arange(max(0, i - 3), i)
     fit = fit[np.isfinite(values[fit])]
-    fit = fit[np.append(np.diff(speeds[fit]) > 0.0, True)]     # of equal speeds the last
+    fit = fit[np.diff(speeds[fit], append=np.inf) > 0.0]     # of equal speeds the last
     if fit.size < 2 or fit[-1] != i - 1:
         return float(speeds[i])
     x0, top = float(speeds[i - 1]), float(speeds[i])
@@ -614,23 +603,37 @@ def zero_crossing(speeds, values, hit) -> float:
 def _trend_roots(x, y) -> list[float]:
     """The real roots of the line through two points (``x``, ``y``: lists of two floats, the last x 0) or of the
     parabola through three (the last x 0): Newton's form about the last point, p(x) = y2 + d2 x + a x (x - x1), and
-    the quadratic's roots by the form that does not cancel, q = -(b + sign(b) sqrt(b^2 - 4 a c)) / 2, roots q / a and
-    c / q (Press et al. (2007), section 5.6).  The fit of :func:`numpy.polyfit` and the roots of :func:`numpy.roots`
+    its roots by :func:`_quadratic_roots`.  The fit of :func:`numpy.polyfit` and the roots of :func:`numpy.roots`
     (a least-squares solve, a companion matrix's eigenvalues) took 0.13 ms a call for these two or three points; the
     roots agree to round-off."""
     if len(x) == 2:
-        slope = (y[1] - y[0]) / (x[1] - x[0])
-        return [-y[1] / slope] if slope != 0.0 else []
-    d1, d2 = (y[1] - y[0]) / (x[1] - x[0]), (y[2] - y[1]) / (x[2] - x[1])
-    a = (d2 - d1) / (x[2] - x[0])
-    b, c = d2 - a * x[1], y[2]
+        a, d2 = 0.0, (y[1] - y[0]) / (x[1] - x[0])
+    else:
+        d1, d2 = (y[1] - y[0]) / (x[1] - x[0]), (y[2] - y[1]) / (x[2] - x[1])
+        a = (d2 - d1) / (x[2] - x[0])
+    count, low, high = _quadratic_roots(a, d2 - a * x[-2], y[-1])
+    return [low, high][:count]
+
+
+@njit(cache=True, nogil=True)
+def _quadratic_roots(a, b, c) -> tuple[int, float, float]:
+    """The real roots of a t^2 + b t + c: their count (0, 1 or 2; a = 0: the line's, none where b = 0 too) and the
+    smaller and the larger (nan for those not there), by the form that does not cancel, q = -(b + sgn(b)
+    sqrt(b^2 - 4 a c)) / 2 (sgn(0) = 1), roots q / a and c / q (Press et al. (2007), section 5.6); q = 0 (b = c = 0):
+    the one root 0.
+
+    >>> _quadratic_roots(1.0, -3.0, 2.0), _quadratic_roots(0.0, 2.0, -1.0), _quadratic_roots(1.0, 0.0, 1.0)[0]
+    ((2, 1.0, 2.0), (1, 0.5, 0.5), 0)
+    """
     if a == 0.0:
-        return [-c / b] if b != 0.0 else []
+        return (1, -c / b, -c / b) if b != 0.0 else (0, np.nan, np.nan)
     disc = b * b - 4.0 * a * c
-    if disc < 0.0:
-        return []
-    q = -0.5 * (b + math.copysign(math.sqrt(disc), b))
-    return [q / a, c / q] if q != 0.0 else [0.0]
+    if not disc >= 0.0:
+        return 0, np.nan, np.nan
+    q = -0.5 * (b + (np.sqrt(disc) if b >= 0.0 else -np.sqrt(disc)))
+    if q == 0.0:
+        return 1, 0.0, 0.0
+    return 2, min(q / a, c / q), max(q / a, c / q)
 
 
 def level_crossing(speeds, values, level) -> float:
