@@ -255,7 +255,7 @@ def speed_record(r, speed, epsilon) -> SpeedRecord:
     clash = float(r.clash_margin) if np.isfinite(r.clash_margin) else None
     return SpeedRecord(float(speed), float(epsilon), float(r.min_contact_force), float(r.contact_force.max()),
                        float(r.seating_velocity), float(r.bounce_height), int(r.bounce_count),
-                       float(np.abs(r.lift_error).max()),
+                       float(largest_lift_errors(r.lift, r.kinematic_lift)[0]),
                        tuple(tuple(float(a) for a in pair) for pair in r.jump_intervals), surge, clash,
                        int(r.revolutions))
 
